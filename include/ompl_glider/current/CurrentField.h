@@ -1,0 +1,124 @@
+#pragma once
+/// @file CurrentField.h
+/// @brief Interface of an ocean-current (or wind) field c(x, y, z, t). SPEC.md section 1.
+
+#include <atomic>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+
+namespace ompl_glider
+{
+/// @brief Current velocity (u eastward / along x, v northward / along y), in the field's units.
+struct Velocity
+{
+    double u{0.0};  ///< x component
+    double v{0.0};  ///< y component
+};
+
+/// @brief Spatial Jacobian of the horizontal current (needed by Zermelo's navigation law, 000 Eq. 2).
+struct Jacobian
+{
+    double ux{0.0};  ///< du/dx
+    double uy{0.0};  ///< du/dy
+    double vx{0.0};  ///< dv/dx
+    double vy{0.0};  ///< dv/dy
+};
+
+/// @brief An axis-aligned region of space and a time window; used to bound the current speed.
+struct Region
+{
+    double xMin{-std::numeric_limits<double>::infinity()};
+    double xMax{std::numeric_limits<double>::infinity()};
+    double yMin{-std::numeric_limits<double>::infinity()};
+    double yMax{std::numeric_limits<double>::infinity()};
+    double zMin{0.0};  ///< depth range (positive down)
+    double zMax{0.0};
+    double tMin{-std::numeric_limits<double>::infinity()};
+    double tMax{std::numeric_limits<double>::infinity()};
+};
+
+/// @brief A horizontal current field c(x, y, z, t) in a local Cartesian frame.
+///
+/// Coordinates are metres and seconds for real forecasts, dimensionless for analytic test flows.
+/// Every query through velocity() or jacobian() counts one current-model call (CMC, 000 Table 4);
+/// the counter is a relaxed atomic, so it is exact when several threads query the same field.
+/// Implementations override evaluate() / evaluateJacobian() and must be thread-safe for const use.
+class CurrentField
+{
+public:
+    virtual ~CurrentField() = default;
+
+    /// @brief Current at (x, y, depth z, time t). Counts one CMC.
+    Velocity velocity(double x, double y, double z, double t) const
+    {
+        calls_.fetch_add(1, std::memory_order_relaxed);
+        return evaluate(x, y, z, t);
+    }
+
+    /// @brief Spatial Jacobian at (x, y, z, t). Counts one CMC.
+    Jacobian jacobian(double x, double y, double z, double t) const
+    {
+        calls_.fetch_add(1, std::memory_order_relaxed);
+        return evaluateJacobian(x, y, z, t);
+    }
+
+    /// @brief An upper bound of |c| over the region and time window (the A*TVE heuristic, 000 Eq. 1).
+    virtual double maxSpeed(const Region &region) const = 0;
+
+    /// @brief Stream function psi with u = -dpsi/dy, v = dpsi/dx, where the field has one.
+    virtual std::optional<double> streamFunction(double /*x*/, double /*y*/, double /*z*/, double /*t*/) const
+    {
+        return std::nullopt;
+    }
+
+    /// @brief True when the field should be divergence-free (u_x + v_y = 0).
+    virtual bool divergenceFree() const
+    {
+        return false;
+    }
+
+    /// @brief False where the field has no water (land / fill cells of a forecast). Travel-time code treats such
+    /// points as forbidden and never reads a current there. Does not count as a CMC.
+    virtual bool inWater(double /*x*/, double /*y*/, double /*z*/) const
+    {
+        return true;
+    }
+
+    /// @brief Earliest time at which the field is defined (-inf for analytic fields).
+    virtual double timeBegin() const
+    {
+        return -std::numeric_limits<double>::infinity();
+    }
+    /// @brief Latest time at which the field is defined (+inf for analytic fields or a "hold last" policy).
+    /// Travel-time code treats a leg that would need the field after this time as infeasible.
+    virtual double timeEnd() const
+    {
+        return std::numeric_limits<double>::infinity();
+    }
+
+    /// @brief Short human-readable name ("meandering jet", "netcdf:file.nc", ...).
+    virtual std::string name() const = 0;
+
+    /// @brief Number of current-model calls (CMC) so far.
+    std::uint64_t callCount() const
+    {
+        return calls_.load(std::memory_order_relaxed);
+    }
+    /// @brief Reset the CMC counter to zero.
+    void resetCallCount() const
+    {
+        calls_.store(0, std::memory_order_relaxed);
+    }
+
+protected:
+    /// @brief The field itself: velocity at (x, y, z, t). Must not count calls.
+    virtual Velocity evaluate(double x, double y, double z, double t) const = 0;
+    /// @brief The field's spatial Jacobian at (x, y, z, t). Must not count calls.
+    virtual Jacobian evaluateJacobian(double x, double y, double z, double t) const = 0;
+
+private:
+    mutable std::atomic<std::uint64_t> calls_{0};
+};
+}  // namespace ompl_glider

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Install (idempotently, non-interactively) the Debian 12 packages ompl_glider needs.
+# Usage: scripts/setup.sh   (as root, or with sudo available)
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config
+  libompl-dev ompl-demos
+  libeigen3-dev
+  libboost-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
+  libboost-program-options-dev
+  libnetcdf-dev netcdf-bin
+  libgtest-dev libgmock-dev
+  libbenchmark-dev
+  libyaml-cpp-dev
+  libproj-dev
+  python3 python3-matplotlib
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done"

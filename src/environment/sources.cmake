@@ -1,0 +1,3 @@
+# environment/
+list(APPEND OMPL_GLIDER_SOURCES
+)

@@ -1,0 +1,3 @@
+# mission/
+list(APPEND OMPL_GLIDER_SOURCES
+)

@@ -1,0 +1,3 @@
+# ompl/
+list(APPEND OMPL_GLIDER_SOURCES
+)

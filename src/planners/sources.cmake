@@ -1,0 +1,3 @@
+# planners/
+list(APPEND OMPL_GLIDER_SOURCES
+)

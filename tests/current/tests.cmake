@@ -1,0 +1,1 @@
+glider_add_test(test_current ${CMAKE_CURRENT_LIST_DIR}/TestCurrentConformance.cpp)
