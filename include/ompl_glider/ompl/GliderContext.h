@@ -1,0 +1,35 @@
+#pragma once
+/// @file GliderContext.h
+/// @brief Everything a glider planning problem shares between the OMPL adapters and the planners.
+
+#include <memory>
+
+#include "ompl_glider/cost/TravelTimeCalculator.h"
+#include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/environment/Environment.h"
+
+namespace ompl_glider
+{
+/// @brief The field, the travel-time code (with the vehicle speed), the forbidden regions, the planning region
+/// and the departure time t0 of one problem. Built once (see the setup helper) and shared read-only by the
+/// motion validator, the travel-time objective and the planners (ZAStarTVE and friends).
+struct GliderContext
+{
+    std::shared_ptr<const CurrentField> field;            ///< the current field (counts CMC)
+    std::shared_ptr<const TravelTimeCalculator> travel;   ///< travel time of legs (counts CFC); holds V
+    std::shared_ptr<const Environment> environment;       ///< forbidden regions; null when there are none
+    Region region;                                        ///< x/y bounds and [t0, t0 + horizon]
+    double t0{0.0};                                       ///< departure time
+
+    /// @brief Vehicle speed through water.
+    double speed() const
+    {
+        return travel->params().speed;
+    }
+    /// @brief Upper bound of the current speed over the region and time window (000 Eq. 1).
+    double maxCurrent() const
+    {
+        return field->maxSpeed(region);
+    }
+};
+}  // namespace ompl_glider
