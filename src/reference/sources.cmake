@@ -1,0 +1,3 @@
+# reference/: optimal-control (Zermelo shooting) reference solutions
+list(APPEND OMPL_GLIDER_SOURCES
+)
