@@ -14,6 +14,7 @@ PACKAGES=(
   libbenchmark-dev
   libyaml-cpp-dev
   libproj-dev
+  libcairo2-dev
   python3 python3-matplotlib
 )
 

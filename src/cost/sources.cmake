@@ -1,4 +1,5 @@
-# cost/: travel time of a leg (adaptive step), dive-profile travel time.
+# cost/
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/TravelTimeCalculator.cpp
 )
+include(${CMAKE_CURRENT_LIST_DIR}/dive.cmake)

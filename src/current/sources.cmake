@@ -1,7 +1,8 @@
-# current/: CurrentField interface, analytic flows, gridded fields and the NetCDF reader.
+# current/: analytic flows
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/MeanderingJet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/UniformCurrent.cpp
   ${CMAKE_CURRENT_LIST_DIR}/LinearShear.cpp
   ${CMAKE_CURRENT_LIST_DIR}/DoubleGyre.cpp
 )
+include(${CMAKE_CURRENT_LIST_DIR}/gridded.cmake)

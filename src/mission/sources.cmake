@@ -1,3 +1,3 @@
-# mission/
-list(APPEND OMPL_GLIDER_SOURCES
-)
+# mission/: mission files, outputs, departure-time search, map rendering
+include(${CMAKE_CURRENT_LIST_DIR}/mission.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/map.cmake)

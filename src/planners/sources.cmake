@@ -1,3 +1,3 @@
-# planners/
-list(APPEND OMPL_GLIDER_SOURCES
-)
+# planners/: lattice search (ZAStarTVE) and path post-processing (smoothing, refinement)
+include(${CMAKE_CURRENT_LIST_DIR}/search.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/postprocess.cmake)

@@ -1,0 +1,3 @@
+# dive profiles
+list(APPEND OMPL_GLIDER_SOURCES
+)

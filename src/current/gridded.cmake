@@ -1,0 +1,3 @@
+# current/ gridded fields and NetCDF
+list(APPEND OMPL_GLIDER_SOURCES
+)

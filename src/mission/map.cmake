@@ -1,0 +1,3 @@
+# map rendering (cairo: SVG + PNG)
+list(APPEND OMPL_GLIDER_SOURCES
+)

@@ -1,0 +1,3 @@
+# planners/ post-processing: smoothing, refinement
+list(APPEND OMPL_GLIDER_SOURCES
+)

@@ -1,0 +1,3 @@
+# planners/ search: lattice, ZAStarTVE
+list(APPEND OMPL_GLIDER_SOURCES
+)

@@ -1,0 +1,1 @@
+# dive profile tests

@@ -1,0 +1,1 @@
+# gridded / NetCDF tests

@@ -1,0 +1,1 @@
+# tests of smoothing / refinement / comparison with the optimum
