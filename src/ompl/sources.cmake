@@ -1,3 +1,4 @@
 # ompl/
 list(APPEND OMPL_GLIDER_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/TimeSE2StateSpace.cpp
 )

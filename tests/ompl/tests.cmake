@@ -1,1 +1,2 @@
 # tests of ompl/
+glider_add_test(test_ompl_space ${CMAKE_CURRENT_LIST_DIR}/TestTimeSE2StateSpace.cpp)
