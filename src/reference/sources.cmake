@@ -1,3 +1,4 @@
 # reference/: optimal-control (Zermelo shooting) reference solutions
 list(APPEND OMPL_GLIDER_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/ZermeloReference.cpp
 )

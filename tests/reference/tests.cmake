@@ -1,1 +1,2 @@
 # tests of reference/
+glider_add_test(test_reference ${CMAKE_CURRENT_LIST_DIR}/TestZermeloReference.cpp)

@@ -1,0 +1,329 @@
+#include "ompl_glider/reference/ZermeloReference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kTwoPi = 6.283185307179586;
+
+// Dormand-Prince RK5(4) tableau.
+constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
+constexpr double a21 = 1.0 / 5;
+constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
+constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
+constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729;
+constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176,
+                 a65 = -5103.0 / 18656;
+constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84;
+constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
+                 e6 = 22.0 / 525, e7 = -1.0 / 40;
+}  // namespace
+
+ZermeloReference::ZermeloReference(std::shared_ptr<const CurrentField> field, ZermeloParams params)
+  : field_(std::move(field)), params_(params)
+{
+    if (!field_)
+        throw Error("ZermeloReference: no current field given");
+    if (!(params_.speed > 0.0))
+        throw Error("ZermeloReference: speed must be > 0 (got " + std::to_string(params_.speed) + ")");
+    if (!(params_.relTol > 0.0) || !(params_.absTol > 0.0) || !(params_.scanRelTol > 0.0))
+        throw Error("ZermeloReference: integrator tolerances relTol, scanRelTol and absTol must be > 0");
+    if (params_.headingSamples < 8)
+        throw Error("ZermeloReference: headingSamples must be >= 8 (got " + std::to_string(params_.headingSamples) +
+                    ")");
+    if (!(params_.goalTolerance > 0.0))
+        throw Error("ZermeloReference: goalTolerance must be > 0");
+}
+
+ZermeloReference::Y ZermeloReference::rhs(double t, const Y &s) const
+{
+    const Velocity c = field_->velocity(s.x, s.y, params_.depth, t);
+    const Jacobian J = field_->jacobian(s.x, s.y, params_.depth, t);
+    const double cs = std::cos(s.th), sn = std::sin(s.th);
+    const double V = params_.speed;
+    // 000 Eq. 10 (motion) and Eq. 2 (Zermelo's navigation law).
+    return {c.u + V * cs, c.v + V * sn, -J.uy * cs * cs + (J.ux - J.vy) * cs * sn + J.vx * sn * sn};
+}
+
+ZermeloReference::Y ZermeloReference::step(double t, const Y &s, const Y &k1, double h, double relTol,
+                                           double &err) const
+{
+    auto comb = [&](std::initializer_list<std::pair<double, const Y *>> terms) {
+        Y r = s;
+        for (const auto &[a, k] : terms)
+        {
+            r.x += h * a * k->x;
+            r.y += h * a * k->y;
+            r.th += h * a * k->th;
+        }
+        return r;
+    };
+    const Y k2 = rhs(t + c2 * h, comb({{a21, &k1}}));
+    const Y k3 = rhs(t + c3 * h, comb({{a31, &k1}, {a32, &k2}}));
+    const Y k4 = rhs(t + c4 * h, comb({{a41, &k1}, {a42, &k2}, {a43, &k3}}));
+    const Y k5 = rhs(t + c5 * h, comb({{a51, &k1}, {a52, &k2}, {a53, &k3}, {a54, &k4}}));
+    const Y k6 = rhs(t + h, comb({{a61, &k1}, {a62, &k2}, {a63, &k3}, {a64, &k4}, {a65, &k5}}));
+    const Y y5 = comb({{b1, &k1}, {b3, &k3}, {b4, &k4}, {b5, &k5}, {b6, &k6}});
+    const Y k7 = rhs(t + h, y5);
+    const double ex = h * (e1 * k1.x + e3 * k3.x + e4 * k4.x + e5 * k5.x + e6 * k6.x + e7 * k7.x);
+    const double ey = h * (e1 * k1.y + e3 * k3.y + e4 * k4.y + e5 * k5.y + e6 * k6.y + e7 * k7.y);
+    const double et = h * (e1 * k1.th + e3 * k3.th + e4 * k4.th + e5 * k5.th + e6 * k6.th + e7 * k7.th);
+    const double a = params_.absTol;
+    const double sx = a + relTol * std::max(std::abs(s.x), std::abs(y5.x));
+    const double sy = a + relTol * std::max(std::abs(s.y), std::abs(y5.y));
+    const double st = a + relTol * std::max(1.0, std::abs(y5.th));
+    err = std::max({std::abs(ex) / sx, std::abs(ey) / sy, std::abs(et) / st});
+    if (!std::isfinite(y5.x) || !std::isfinite(y5.y) || !std::isfinite(y5.th))
+        err = kInf;
+    return y5;
+}
+
+std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, double theta0, double t0, double gx,
+                                                     double gy, double maxTime, double relTol) const
+{
+    if (relTol <= 0.0)
+        relTol = params_.relTol;
+    std::vector<ClosestApproach> events;
+    const double tEndField = field_->timeEnd();
+    Y s{x1, y1, theta0};
+    double t = 0.0;
+    Y k1 = rhs(t0, s);
+    auto g = [&](const Y &st, const Y &d) { return (st.x - gx) * d.x + (st.y - gy) * d.y; };
+    double gPrev = g(s, k1);
+    double h = std::max(1e-6, 1e-3 * maxTime);
+    int steps = 0;
+    while (t < maxTime && steps < params_.maxSteps)
+    {
+        ++steps;
+        h = std::min(h, maxTime - t);
+        if (t0 + t + h > tEndField)
+            break;
+        double err = 0.0;
+        const Y sNew = step(t0 + t, s, k1, h, relTol, err);
+        if (!(err <= 1.0))
+        {
+            h *= std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -0.2)) : 0.2;
+            if (h < 1e-14 * std::max(1.0, t))
+                break;  // cannot proceed (singular field)
+            continue;
+        }
+        const Y kNew = rhs(t0 + t + h, sNew);
+        const double gNew = g(sNew, kNew);
+        if (gPrev < 0.0 && gNew >= 0.0)
+        {
+            // Closest approach inside the step: locate g = 0 by the Illinois method, each trial point reached by one
+            // Dormand-Prince step of the trial size from the step's start (5th-order accurate).
+            double a = 0.0, fa = gPrev, b = h, fb = gNew;
+            double sz = b;
+            Y sAt = sNew;
+            Y dAt = kNew;
+            for (int it = 0; it < 80 && b - a > 1e-15 * std::max(1.0, t); ++it)
+            {
+                double c = (a * fb - b * fa) / (fb - fa);
+                if (!(c > a && c < b))
+                    c = 0.5 * (a + b);
+                double dummy;
+                const Y sc = step(t0 + t, s, k1, c, relTol, dummy);
+                const Y dc = rhs(t0 + t + c, sc);
+                const double fc = g(sc, dc);
+                sz = c;
+                sAt = sc;
+                dAt = dc;
+                if (fc == 0.0)
+                    break;
+                if ((fc < 0.0) == (fb < 0.0))
+                {
+                    b = c;
+                    fb = fc;
+                    fa *= 0.5;
+                }
+                else
+                {
+                    a = b;
+                    fa = fb;
+                    b = c;
+                    fb = fc;
+                }
+                if (a > b)
+                {
+                    std::swap(a, b);
+                    std::swap(fa, fb);
+                }
+            }
+            ClosestApproach e;
+            e.t = t + sz;
+            const double sp = std::hypot(dAt.x, dAt.y);
+            const double dist = std::hypot(sAt.x - gx, sAt.y - gy);
+            if (sp > 1e-14)
+                e.miss = (dAt.x * (gy - sAt.y) - dAt.y * (gx - sAt.x)) / sp;
+            else
+                e.miss = dist;
+            e.state = {t0 + e.t, sAt.x, sAt.y, sAt.th};
+            events.push_back(e);
+        }
+        t += h;
+        s = sNew;
+        k1 = kNew;
+        gPrev = gNew;
+        h *= std::min(5.0, 0.9 * std::pow(std::max(err, 1e-10), -0.2));
+    }
+    return events;
+}
+
+std::vector<ZermeloState> ZermeloReference::trajectory(double x1, double y1, double theta0, double t0,
+                                                       double duration) const
+{
+    std::vector<ZermeloState> out;
+    Y s{x1, y1, theta0};
+    double t = 0.0;
+    out.push_back({t0, s.x, s.y, s.th});
+    Y k1 = rhs(t0, s);
+    double h = std::max(1e-6, 1e-3 * duration);
+    int steps = 0;
+    while (t < duration && steps < params_.maxSteps)
+    {
+        ++steps;
+        h = std::min(h, duration - t);
+        double err = 0.0;
+        const Y sNew = step(t0 + t, s, k1, h, params_.relTol, err);
+        if (!(err <= 1.0))
+        {
+            h *= std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -0.2)) : 0.2;
+            if (h < 1e-14 * std::max(1.0, t))
+                break;
+            continue;
+        }
+        t += h;
+        s = sNew;
+        k1 = rhs(t0 + t, s);
+        out.push_back({t0 + t, s.x, s.y, s.th});
+        h *= std::min(5.0, 0.9 * std::pow(std::max(err, 1e-10), -0.2));
+    }
+    return out;
+}
+
+ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double y2, double t0) const
+{
+    ZermeloSolution sol;
+    sol.travelTime = kInf;
+    for (double v : {x1, y1, x2, y2, t0})
+        if (!std::isfinite(v))
+            throw Error("ZermeloReference::solve: start, goal and departure time must be finite");
+    const double D = std::hypot(x2 - x1, y2 - y1);
+    if (D == 0.0)
+    {
+        sol.found = true;
+        sol.travelTime = 0.0;
+        return sol;
+    }
+    const double tMax = params_.maxTime > 0.0 ? params_.maxTime : 6.0 * D / params_.speed;
+    const int n = params_.headingSamples;
+    const double dTheta = kTwoPi / n;
+
+    // 1. Scan: closest approaches of n extremals (loose tolerance: only brackets are needed).
+    std::vector<std::vector<ClosestApproach>> shots(n);
+    for (int j = 0; j < n; ++j)
+        shots[j] = shoot(x1, y1, j * dTheta, t0, x2, y2, tMax, params_.scanRelTol);
+
+    // 2. Brackets: a closest approach whose signed miss changes sign between neighbouring headings (matched by
+    // the nearest approach time).
+    struct Bracket
+    {
+        double a, fa, b, fb, tEst;
+    };
+    std::vector<Bracket> brackets;
+    for (int j = 0; j < n; ++j)
+    {
+        const int k = (j + 1) % n;
+        for (const ClosestApproach &e : shots[j])
+        {
+            const ClosestApproach *best = nullptr;
+            for (const ClosestApproach &f : shots[k])
+                if (!best || std::abs(f.t - e.t) < std::abs(best->t - e.t))
+                    best = &f;
+            if (!best || (e.miss < 0.0) == (best->miss < 0.0))
+                continue;
+            // A sign flip far from the goal is the swap of two sides of a loop, not a crossing.
+            if (std::abs(e.miss) + std::abs(best->miss) > 0.5 * D + 10.0 * dTheta * params_.speed * e.t)
+                continue;
+            brackets.push_back({j * dTheta, e.miss, (j + 1) * dTheta, best->miss, std::min(e.t, best->t)});
+        }
+    }
+    std::sort(brackets.begin(), brackets.end(), [](const Bracket &p, const Bracket &q) { return p.tEst < q.tEst; });
+
+    // 3. Refine each bracket (Illinois on the initial heading), keep the fastest extremal through the goal.
+    for (Bracket br : brackets)
+    {
+        if (sol.found && br.tEst > 1.1 * sol.travelTime + 1e-9)
+            break;
+        const double horizon = std::min(tMax, 1.5 * br.tEst + 10.0 * dTheta * D / params_.speed) + 1e-9;
+        double tRef = br.tEst;
+        ClosestApproach last;
+        auto F = [&](double th, double &out) -> bool {
+            const std::vector<ClosestApproach> ev = shoot(x1, y1, th, t0, x2, y2, horizon);
+            const ClosestApproach *best = nullptr;
+            for (const ClosestApproach &f : ev)
+                if (!best || std::abs(f.t - tRef) < std::abs(best->t - tRef))
+                    best = &f;
+            if (!best)
+                return false;
+            last = *best;
+            out = best->miss;
+            return true;
+        };
+        double a = br.a, fa = 0.0, b = br.b, fb = 0.0;
+        if (!F(a, fa))
+            continue;
+        ClosestApproach la = last;
+        if (!F(b, fb))
+            continue;
+        ClosestApproach lb = last;
+        if ((fa < 0.0) == (fb < 0.0))
+            continue;
+        ClosestApproach cur = std::abs(fa) < std::abs(fb) ? la : lb;
+        double curTh = std::abs(fa) < std::abs(fb) ? a : b;
+        for (int it = 0; it < 200; ++it)
+        {
+            if (std::abs(cur.miss) <= 0.1 * params_.goalTolerance || std::abs(b - a) < 1e-15)
+                break;
+            double c = (a * fb - b * fa) / (fb - fa);
+            if (!(c > std::min(a, b) && c < std::max(a, b)))
+                c = 0.5 * (a + b);
+            double fc;
+            tRef = cur.t;
+            if (!F(c, fc))
+                break;
+            cur = last;
+            curTh = c;
+            if ((fc < 0.0) == (fb < 0.0))
+                fa *= 0.5;
+            else
+            {
+                a = b;
+                fa = fb;
+            }
+            b = c;
+            fb = fc;
+        }
+        if (!(std::abs(cur.miss) <= params_.goalTolerance))
+            continue;
+        ++sol.extremalsThroughGoal;
+        if (cur.t < sol.travelTime)
+        {
+            sol.found = true;
+            sol.travelTime = cur.t;
+            sol.initialHeading = std::remainder(curTh, kTwoPi);
+            sol.missDistance = std::abs(cur.miss);
+        }
+    }
+    return sol;
+}
+}  // namespace ompl_glider
