@@ -1,0 +1,97 @@
+#include "ompl_glider/cost/DiveProfilePool.h"
+
+#include <algorithm>
+
+namespace ompl_glider
+{
+DiveProfilePool::DiveProfilePool(unsigned threads)
+{
+    if (threads == 0)
+        threads = std::max(1u, std::thread::hardware_concurrency());
+    for (unsigned i = 1; i < threads; ++i)
+        workers_.emplace_back([this] { workerLoop(); });
+}
+
+DiveProfilePool::~DiveProfilePool()
+{
+    {
+        std::lock_guard<std::mutex> lock(m_);
+        stop_ = true;
+    }
+    wake_.notify_all();
+    for (auto &w : workers_)
+        w.join();
+}
+
+void DiveProfilePool::runIndices()
+{
+    for (;;)
+    {
+        const std::size_t i = next_.fetch_add(1, std::memory_order_relaxed);
+        if (i >= n_)
+            return;
+        try
+        {
+            (*job_)(i);
+        }
+        catch (...)
+        {
+            std::lock_guard<std::mutex> lock(m_);
+            if (!error_)
+                error_ = std::current_exception();
+        }
+    }
+}
+
+void DiveProfilePool::workerLoop()
+{
+    std::uint64_t seen = 0;
+    std::unique_lock<std::mutex> lock(m_);
+    for (;;)
+    {
+        wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+        if (stop_)
+            return;
+        seen = generation_;
+        if (job_ == nullptr)
+            continue;
+        ++active_;
+        lock.unlock();
+        runIndices();
+        lock.lock();
+        if (--active_ == 0)
+            done_.notify_all();
+    }
+}
+
+void DiveProfilePool::parallelFor(std::size_t n, const std::function<void(std::size_t)> &fn)
+{
+    std::unique_lock<std::mutex> callLock(callMutex_, std::try_to_lock);
+    if (n <= 1 || workers_.empty() || !callLock.owns_lock())
+    {
+        for (std::size_t i = 0; i < n; ++i)
+            fn(i);
+        return;
+    }
+    {
+        std::lock_guard<std::mutex> lock(m_);
+        job_ = &fn;
+        n_ = n;
+        next_.store(0, std::memory_order_relaxed);
+        error_ = nullptr;
+        ++generation_;
+    }
+    wake_.notify_all();
+    runIndices();
+    std::exception_ptr err;
+    {
+        std::unique_lock<std::mutex> lock(m_);
+        done_.wait(lock, [&] { return active_ == 0; });
+        job_ = nullptr;
+        err = error_;
+        error_ = nullptr;
+    }
+    if (err)
+        std::rethrow_exception(err);
+}
+}  // namespace ompl_glider
