@@ -1,4 +1,6 @@
 # ompl/
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/TimeSE2StateSpace.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/GliderStateValidityChecker.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TravelTimeMotionValidator.cpp
 )

@@ -1,2 +1,3 @@
 # tests of ompl/
 glider_add_test(test_ompl_space ${CMAKE_CURRENT_LIST_DIR}/TestTimeSE2StateSpace.cpp)
+glider_add_test(test_ompl_validator ${CMAKE_CURRENT_LIST_DIR}/TestMotionValidator.cpp)
