@@ -1,3 +1,5 @@
 # planners/ search: lattice, ZAStarTVE
 list(APPEND OMPL_GLIDER_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/Lattice.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TveSearch.cpp
 )

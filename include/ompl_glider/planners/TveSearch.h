@@ -1,0 +1,135 @@
+#pragma once
+/// @file TveSearch.h
+/// @brief The graph search of TVE / A*TVE / ZTVE / ZA*TVE on an implicit lattice, independent of OMPL types
+/// (000 Sec. 2.2, Tables 1 and 2). ZAStarTVE wraps it as an ompl::base::Planner.
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/ompl/GliderContext.h"
+#include "ompl_glider/planners/Lattice.h"
+
+namespace ompl_glider
+{
+/// @brief Switches and tunables of the search.
+struct TveOptions
+{
+    bool heuristic{true};   ///< A*: h(u) = |x_u - x_g| / (V + max|c|) (000 Eq. 1)
+    bool zermelo{true};     ///< Zermelo pruning (000 Sec. 2.2.2)
+    /// Half-width of the accepted course range around phi_opt, radians (000 Fig. 3, Table 2). The default, 22 deg,
+    /// keeps about 5 of the 31 forward successors of a 3-sector lattice, as in the paper.
+    double deltaPhiMax{22.0 * 3.14159265358979323846 / 180.0};
+    /// Midpoint (RK2) steps of CALC-OPTDIR per half edge; each step costs 2 velocity + 2 Jacobian calls (CMC).
+    unsigned zermeloSteps{1};
+    /// Extrapolation of the predicted course: the cone is centred on phi_opt + k (phi_opt - phi_edge), where
+    /// phi_edge is the direction of the predecessor edge. k = 0 is the paper's rule (000 Table 2); k = 1 continues the
+    /// turn predicted from the middle of the predecessor edge over the next half edge.
+    double courseExtrapolation{1.0};
+    /// When the pruned search (zermelo) exhausts without reaching the goal, continue without pruning, so that
+    /// "no solution" still means "no path on this lattice" (an addition to 000 Table 2, which does not say).
+    bool unprunedFallback{true};
+    /// Never prune the edge into the goal vertex (an addition to 000 Table 2: near the goal the predicted course
+    /// rarely points exactly at it, and without this a pruned search often has to fall back).
+    bool neverPruneGoal{true};
+    /// Expansions between two calls of the termination callback.
+    unsigned checkEvery{8};
+};
+
+/// @brief A path waypoint: position and arrival time.
+struct TimedWaypoint
+{
+    double x{0.0};  ///< x
+    double y{0.0};  ///< y
+    double t{0.0};  ///< arrival time (t0 at the start)
+};
+
+/// @brief How a search ended.
+enum class TveOutcome
+{
+    Exact,         ///< the goal vertex was extracted from the queue: waypoints hold the optimal lattice path
+    Exhausted,     ///< the queue ran empty: no path to the goal exists on this lattice (within the field's time)
+    Terminated,    ///< the termination callback fired: waypoints lead to the reached vertex closest to the goal
+    InvalidStart,  ///< start outside the bounds, on land or in a forbidden region at t0 (see message)
+    InvalidGoal    ///< goal outside the bounds, on land or in a forbidden region (see message)
+};
+
+/// @brief Result of one search.
+struct TveResult
+{
+    TveOutcome outcome{TveOutcome::Exhausted};  ///< how the search ended
+    std::vector<TimedWaypoint> waypoints;       ///< start ... goal (Exact) or ... closest reached vertex (Terminated)
+    double travelTime{std::numeric_limits<double>::infinity()};  ///< arrival at the goal - t0 (Exact only)
+    std::uint64_t costFunctionCalls{0};  ///< CFC of this search (000 Table 4)
+    std::uint64_t currentModelCalls{0};  ///< CMC of this search, CALC-OPTDIR included (000 Table 4)
+    std::uint64_t expansions{0};         ///< vertices extracted from the queue (reopenings counted again)
+    std::uint64_t prunedEdges{0};        ///< edges not examined because of Zermelo pruning
+    bool fallbackUsed{false};            ///< the pruned search exhausted and continued without pruning
+    std::string message;                 ///< why the start or goal is invalid
+};
+
+/// @brief One vertex of the explored tree (a vertex that received a finite arrival time).
+struct TveTreeVertex
+{
+    Lattice::VertexId id{Lattice::kNone};      ///< lattice vertex
+    Lattice::VertexId parent{Lattice::kNone};  ///< predecessor pi[v] (kNone for the start)
+    double x{0.0}, y{0.0};                     ///< position
+    double t{0.0};                             ///< arrival time d[v]
+};
+
+/// @brief Time-dependent Dijkstra / A* on an implicit lattice with the edge weights computed during the search.
+///
+/// Per 000 Table 2 (ZA*TVE; TVE, A*TVE and ZTVE switch parts off): d[s] = t0; the queue key is d[v] (+ h(v) with
+/// the A* heuristic); when u is extracted, each successor v with d[u] < d[v] is examined (edges with
+/// d[u] >= d[v] cannot improve v and are skipped without a cost-function call); the edge weight is
+/// travel->travelTime(u, v, d[u]); an improved vertex is inserted again even when it was already expanded
+/// ("discover or reopen"). With Zermelo pruning, for u != s the optimal course phi_opt at u is predicted by
+/// CALC-OPTDIR (calcOptimalCourse()) and only successors whose edge direction lies within +-deltaPhiMax of it are
+/// examined. The search stops when the goal vertex is extracted.
+///
+/// Forbidden regions: vertices with inWater() false are never entered; with an Environment, a vertex must be
+/// pointFree() at its arrival time and the edge legFree() for its times, both checked only when the edge is about
+/// to improve the vertex (lazily, after its travel time is known).
+class TveSearch
+{
+public:
+    /// @brief Search over ctx->region's x/y bounds with the given lattice spacing and sectors.
+    /// Throws ompl_glider::Error on a null context, field or travel, or bad lattice parameters.
+    TveSearch(std::shared_ptr<const GliderContext> ctx, double gridSize, unsigned sectors);
+
+    /// @brief Runs the search from (sx, sy) at ctx->t0 to (gx, gy). terminate() is called every
+    /// options.checkEvery expansions (and once before the first); when it returns true the search stops.
+    TveResult run(double sx, double sy, double gx, double gy, const TveOptions &options,
+                  const std::function<bool()> &terminate = {});
+
+    /// @brief CALC-OPTDIR (000 Sec. 2.2.2, Table 2): the optimal course over ground at u predicted by Zermelo's
+    /// law. Starts at the middle of the edge p -> u at the mid time (tp + tu) / 2 with the heading that keeps the
+    /// course along the edge (upper root of 000 Eq. 5-6), integrates Zermelo's law (000 Eq. 2, with the field's
+    /// Jacobian) together with the motion (000 Eq. 10) by `steps` midpoint steps up to tu, and returns the
+    /// direction of the velocity over ground there. Empty when the edge cannot be held at its middle or the
+    /// ground speed vanishes. Costs 4 steps + 1 CMC.
+    std::optional<double> calcOptimalCourse(double px, double py, double tp, double ux, double uy, double tu,
+                                            unsigned steps) const;
+
+    /// @brief The lattice of the last run (start/goal joined).
+    const Lattice &lattice() const
+    {
+        return lattice_;
+    }
+    /// @brief Vertices reached by the last run with their predecessor and arrival time.
+    std::vector<TveTreeVertex> tree() const;
+
+private:
+    std::vector<TimedWaypoint> pathTo(Lattice::VertexId v) const;
+
+    std::shared_ptr<const GliderContext> ctx_;
+    Lattice lattice_;
+    std::vector<double> d_;
+    std::vector<Lattice::VertexId> pi_;
+    std::vector<Lattice::VertexId> reached_;
+};
+}  // namespace ompl_glider

@@ -1,0 +1,359 @@
+#include "ompl_glider/planners/TveSearch.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <sstream>
+#include <utility>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+
+/// Angle difference wrapped to [-pi, pi].
+double angleDiff(double a, double b)
+{
+    double d = std::fmod(a - b, 2.0 * kPi);
+    if (d > kPi)
+        d -= 2.0 * kPi;
+    else if (d < -kPi)
+        d += 2.0 * kPi;
+    return d;
+}
+
+const GliderContext &checkedContext(const std::shared_ptr<const GliderContext> &ctx)
+{
+    if (!ctx)
+        throw Error("TveSearch: no GliderContext given");
+    if (!ctx->field)
+        throw Error("TveSearch: GliderContext.field is null");
+    if (!ctx->travel)
+        throw Error("TveSearch: GliderContext.travel is null");
+    return *ctx;
+}
+
+std::string formatPoint(double x, double y)
+{
+    std::ostringstream os;
+    os << "(" << x << ", " << y << ")";
+    return os.str();
+}
+
+/// Queue entry: key (d or d + h), the d it was pushed with (stale-entry test), vertex.
+struct QueueEntry
+{
+    double key;
+    double d;
+    Lattice::VertexId v;
+    bool operator>(const QueueEntry &o) const
+    {
+        return key > o.key || (key == o.key && v > o.v);
+    }
+};
+}  // namespace
+
+TveSearch::TveSearch(std::shared_ptr<const GliderContext> ctx, double gridSize, unsigned sectors)
+  : ctx_(std::move(ctx))
+  , lattice_(checkedContext(ctx_).region.xMin, ctx_->region.xMax, ctx_->region.yMin, ctx_->region.yMax, gridSize,
+             sectors)
+{
+}
+
+std::optional<double> TveSearch::calcOptimalCourse(double px, double py, double tp, double ux, double uy, double tu,
+                                                   unsigned steps) const
+{
+    const CurrentField &f = *ctx_->field;
+    const double V = ctx_->speed();
+    const double z = ctx_->travel->params().depth;
+    const double len = std::hypot(ux - px, uy - py);
+    if (!(len > 0.0) || !std::isfinite(tp) || !std::isfinite(tu))
+        return std::nullopt;
+    const double ex = (ux - px) / len, ey = (uy - py) / len;
+    double x = 0.5 * (px + ux), y = 0.5 * (py + uy), t = 0.5 * (tp + tu);
+    Velocity c = f.velocity(x, y, z, t);
+    const AlongTrackSpeeds r = alongTrackSpeeds(ex, ey, c, V);
+    if (!r.feasible)
+        return std::nullopt;
+    // Heading through water that keeps the course along the edge: V (cos th, sin th) = s e - c.
+    double th = std::atan2(r.fast * ey - c.v, r.fast * ex - c.u);
+
+    // Zermelo's law (000 Eq. 2) and the motion (000 Eq. 10): (x, y, th)' = F(x, y, th, t).
+    auto rhs = [&](const Velocity &cv, double px_, double py_, double th_, double t_, double &dx, double &dy,
+                   double &dth) {
+        const Jacobian J = f.jacobian(px_, py_, z, t_);
+        const double ct = std::cos(th_), st = std::sin(th_);
+        dx = cv.u + V * ct;
+        dy = cv.v + V * st;
+        dth = -J.uy * ct * ct + (J.ux - J.vy) * ct * st + J.vx * st * st;
+    };
+    const double T = tu - t;
+    if (T > 0.0 && steps > 0)
+    {
+        const double h = T / static_cast<double>(steps);
+        for (unsigned k = 0; k < steps; ++k)
+        {
+            if (k > 0)
+                c = f.velocity(x, y, z, t);
+            double k1x, k1y, k1t;
+            rhs(c, x, y, th, t, k1x, k1y, k1t);
+            const double xm = x + 0.5 * h * k1x, ym = y + 0.5 * h * k1y, thm = th + 0.5 * h * k1t;
+            const Velocity cm = f.velocity(xm, ym, z, t + 0.5 * h);
+            double k2x, k2y, k2t;
+            rhs(cm, xm, ym, thm, t + 0.5 * h, k2x, k2y, k2t);
+            x += h * k2x;
+            y += h * k2y;
+            th += h * k2t;
+            t += h;
+        }
+        c = f.velocity(x, y, z, t);
+    }
+    const double gx = c.u + V * std::cos(th), gy = c.v + V * std::sin(th);
+    if (!(std::hypot(gx, gy) > 1e-12 * V) || !std::isfinite(gx) || !std::isfinite(gy))
+        return std::nullopt;
+    return std::atan2(gy, gx);
+}
+
+TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOptions &options,
+                         const std::function<bool()> &terminate)
+{
+    const GliderContext &ctx = *ctx_;
+    const CurrentField &field = *ctx.field;
+    const TravelTimeCalculator &travel = *ctx.travel;
+    const Environment *env = ctx.environment.get();
+    const double z = travel.params().depth;
+    const double t0 = ctx.t0;
+
+    const std::uint64_t cfc0 = travel.costFunctionCalls();
+    const std::uint64_t cmc0 = field.callCount();
+    TveResult res;
+    auto finish = [&](TveResult &r) -> TveResult & {
+        r.costFunctionCalls = travel.costFunctionCalls() - cfc0;
+        r.currentModelCalls = field.callCount() - cmc0;
+        return r;
+    };
+
+    // Clear the previous run's labels (only the vertices it touched).
+    const std::size_t N = lattice_.numVertices();
+    if (d_.size() != N)
+    {
+        d_.assign(N, kInf);
+        pi_.assign(N, Lattice::kNone);
+    }
+    else
+        for (Lattice::VertexId v : reached_)
+        {
+            d_[v] = kInf;
+            pi_[v] = Lattice::kNone;
+        }
+    reached_.clear();
+
+    // Start and goal.
+    const Lattice::VertexId s = lattice_.setStart(sx, sy);
+    const Lattice::VertexId g = lattice_.setGoal(gx, gy);
+    if (s == Lattice::kNone)
+    {
+        res.outcome = TveOutcome::InvalidStart;
+        res.message = "start " + formatPoint(sx, sy) + " lies outside the planning region";
+        return finish(res);
+    }
+    if (!field.inWater(sx, sy, z))
+    {
+        res.outcome = TveOutcome::InvalidStart;
+        res.message = "start " + formatPoint(sx, sy) + " is not in water (land or no current data)";
+        return finish(res);
+    }
+    if (env && !env->pointFree(sx, sy, t0))
+    {
+        res.outcome = TveOutcome::InvalidStart;
+        res.message = "start " + formatPoint(sx, sy) + " is blocked at t0: " + env->whyBlocked(sx, sy, t0);
+        return finish(res);
+    }
+    if (g == Lattice::kNone)
+    {
+        res.outcome = TveOutcome::InvalidGoal;
+        res.message = "goal " + formatPoint(gx, gy) + " lies outside the planning region";
+        return finish(res);
+    }
+    if (!field.inWater(gx, gy, z))
+    {
+        res.outcome = TveOutcome::InvalidGoal;
+        res.message = "goal " + formatPoint(gx, gy) + " is not in water (land or no current data)";
+        return finish(res);
+    }
+    if (env)
+    {
+        // A goal blocked at t0 and at the end of the window (t0 when the window is open-ended) is invalid.
+        const double tLate = std::isfinite(ctx.region.tMax) ? ctx.region.tMax : t0;
+        if (!env->pointFree(gx, gy, t0) && !env->pointFree(gx, gy, tLate))
+        {
+            res.outcome = TveOutcome::InvalidGoal;
+            res.message = "goal " + formatPoint(gx, gy) + " is blocked: " + env->whyBlocked(gx, gy, t0);
+            return finish(res);
+        }
+    }
+
+    // A* heuristic (000 Eq. 1).
+    const double vmax = ctx.speed() + (options.heuristic ? ctx.maxCurrent() : 0.0);
+    auto h = [&](Lattice::VertexId v) -> double {
+        return options.heuristic ? std::hypot(lattice_.x(v) - gx, lattice_.y(v) - gy) / vmax : 0.0;
+    };
+    if (options.heuristic && !(vmax > 0.0 && std::isfinite(vmax)))
+        throw Error("TveSearch: the A* heuristic needs a finite bound of the current speed over the region");
+
+    // Land cache: 0 unknown, 1 water, 2 land.
+    std::vector<signed char> wet(N, 0);
+    auto inWater = [&](Lattice::VertexId v) {
+        if (wet[v] == 0)
+            wet[v] = field.inWater(lattice_.x(v), lattice_.y(v), z) ? 1 : 2;
+        return wet[v] == 1;
+    };
+
+    std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> Q;
+    d_[s] = t0;
+    reached_.push_back(s);
+    Q.push({t0 + h(s), t0, s});
+    std::vector<Lattice::VertexId> prunedAt;  // vertices whose expansion pruned edges (for the fallback)
+    bool pruning = options.zermelo;
+    const unsigned checkEvery = std::max(1u, options.checkEvery);
+
+    auto terminated = [&]() { return terminate && terminate(); };
+    if (terminated())
+    {
+        res.outcome = TveOutcome::Terminated;
+        return finish(res);
+    }
+
+    Lattice::VertexId found = Lattice::kNone;
+    for (;;)
+    {
+        if (Q.empty())
+        {
+            if (pruning && options.unprunedFallback && !prunedAt.empty())
+            {
+                // The pruned search could not reach the goal: continue with the full neighbourhoods.
+                pruning = false;
+                res.fallbackUsed = true;
+                for (Lattice::VertexId v : prunedAt)
+                    Q.push({d_[v] + h(v), d_[v], v});
+                prunedAt.clear();
+                continue;
+            }
+            break;
+        }
+        const QueueEntry e = Q.top();
+        Q.pop();
+        const Lattice::VertexId u = e.v;
+        if (e.d != d_[u])
+            continue;  // stale entry (u was improved after this push)
+        if (u == g)
+        {
+            found = u;
+            break;
+        }
+        ++res.expansions;
+        if (res.expansions % checkEvery == 0 && terminated())
+        {
+            res.outcome = TveOutcome::Terminated;
+            break;
+        }
+        const double du = d_[u];
+        const double ux = lattice_.x(u), uy = lattice_.y(u);
+
+        std::optional<double> phiOpt;
+        if (pruning && u != s && pi_[u] != Lattice::kNone)
+        {
+            const Lattice::VertexId p = pi_[u];
+            phiOpt = calcOptimalCourse(lattice_.x(p), lattice_.y(p), d_[p], ux, uy, du, options.zermeloSteps);
+            if (phiOpt && options.courseExtrapolation != 0.0)
+            {
+                const double edge = std::atan2(uy - lattice_.y(p), ux - lattice_.x(p));
+                *phiOpt += options.courseExtrapolation * angleDiff(*phiOpt, edge);
+            }
+        }
+        bool prunedHere = false;
+        lattice_.forEachSuccessor(u, [&](Lattice::VertexId v) {
+            if (!(du < d_[v]))
+                return;  // d[u] >= d[v]: the edge cannot improve v (000 Table 1, difference 2)
+            const double vx = lattice_.x(v), vy = lattice_.y(v);
+            if (phiOpt && !(options.neverPruneGoal && v == g) && std::abs(angleDiff(*phiOpt, std::atan2(vy - uy, vx - ux))) > options.deltaPhiMax)
+            {
+                ++res.prunedEdges;
+                prunedHere = true;
+                return;
+            }
+            if (!inWater(v))
+                return;
+            const double w = travel.travelTime(ux, uy, vx, vy, du);
+            if (!std::isfinite(w))
+                return;
+            const double dv = du + w;
+            if (!(dv < d_[v]))
+                return;
+            if (env && (!env->pointFree(vx, vy, dv) || !env->legFree(ux, uy, du, vx, vy, dv)))
+                return;
+            if (d_[v] == kInf)
+                reached_.push_back(v);
+            d_[v] = dv;
+            pi_[v] = u;
+            Q.push({dv + h(v), dv, v});
+        });
+        if (prunedHere)
+            prunedAt.push_back(u);
+    }
+
+    if (found != Lattice::kNone)
+    {
+        res.outcome = TveOutcome::Exact;
+        res.waypoints = pathTo(found);
+        res.travelTime = d_[found] - t0;
+        return finish(res);
+    }
+    if (res.outcome == TveOutcome::Terminated)
+    {
+        // Path to the reached vertex closest to the goal (when it is closer than the start).
+        Lattice::VertexId best = Lattice::kNone;
+        double bestDist = std::hypot(sx - gx, sy - gy);
+        for (Lattice::VertexId v : reached_)
+        {
+            const double dist = std::hypot(lattice_.x(v) - gx, lattice_.y(v) - gy);
+            if (dist < bestDist)
+            {
+                bestDist = dist;
+                best = v;
+            }
+        }
+        if (best != Lattice::kNone)
+            res.waypoints = pathTo(best);
+        return finish(res);
+    }
+    res.outcome = TveOutcome::Exhausted;
+    return finish(res);
+}
+
+std::vector<TimedWaypoint> TveSearch::pathTo(Lattice::VertexId v) const
+{
+    std::vector<TimedWaypoint> out;
+    for (Lattice::VertexId w = v; w != Lattice::kNone; w = pi_[w])
+    {
+        out.push_back({lattice_.x(w), lattice_.y(w), d_[w]});
+        if (out.size() > reached_.size() + 1)
+            throw Error("TveSearch: predecessor cycle (internal error)");
+    }
+    std::reverse(out.begin(), out.end());
+    return out;
+}
+
+std::vector<TveTreeVertex> TveSearch::tree() const
+{
+    std::vector<TveTreeVertex> out;
+    out.reserve(reached_.size());
+    for (Lattice::VertexId v : reached_)
+        out.push_back({v, pi_[v], lattice_.x(v), lattice_.y(v), d_[v]});
+    return out;
+}
+}  // namespace ompl_glider
