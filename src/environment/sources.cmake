@@ -1,3 +1,8 @@
 # environment/
 list(APPEND OMPL_GLIDER_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/Polygon.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/StaticRegion.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TimeWindowedZone.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/IceZone.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ForbiddenRegions.cpp
 )

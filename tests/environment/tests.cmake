@@ -1,1 +1,2 @@
 # tests of environment/
+glider_add_test(test_environment ${CMAKE_CURRENT_LIST_DIR}/TestEnvironment.cpp)

@@ -25,5 +25,12 @@ public:
 
     /// @brief Why (x, y, t) is not free ("inside island 'A'"); empty when it is free.
     virtual std::string whyBlocked(double x, double y, double t) const = 0;
+
+    /// @brief Why the leg (x1, y1, t1) -> (x2, y2, t2) is not free ("leg crosses island 'A'"); empty when it is.
+    /// The default names no region; ForbiddenRegions and its members override it.
+    virtual std::string whyLegBlocked(double x1, double y1, double t1, double x2, double y2, double t2) const
+    {
+        return legFree(x1, y1, t1, x2, y2, t2) ? std::string() : std::string("leg meets a forbidden region");
+    }
 };
 }  // namespace ompl_glider
