@@ -3,4 +3,8 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/TimeSE2StateSpace.cpp
   ${CMAKE_CURRENT_LIST_DIR}/GliderStateValidityChecker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TravelTimeMotionValidator.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TravelTimeObjective.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/PositionGoal.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/GliderSetup.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/PathResimulation.cpp
 )

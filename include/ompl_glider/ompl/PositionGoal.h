@@ -1,0 +1,61 @@
+#pragma once
+/// @file PositionGoal.h
+/// @brief Goal: be at a position (within a tolerance) at any time of the window.
+
+#include <ompl/base/goals/GoalSampleableRegion.h>
+#include <ompl/util/RandomNumbers.h>
+
+namespace ompl_glider
+{
+/// @brief Reach (x, y) within an xy tolerance at any time. distanceGoal() is the xy distance to (x, y) and the
+/// goal is satisfied when it is <= the tolerance (the GoalRegion threshold). sampleGoal() returns (x, y) exactly,
+/// yaw 0, with a time drawn uniformly in [tEarliest, tLatest]; the setup helper uses tEarliest = t0 + |start -
+/// goal| / (V + max|c|) (no arrival can be earlier) and tLatest = t0 + horizon.
+class PositionGoal : public ompl::base::GoalSampleableRegion
+{
+public:
+    /// @throws ompl_glider::Error when a value is not finite, tolerance < 0 or tEarliest > tLatest.
+    PositionGoal(const ompl::base::SpaceInformationPtr &si, double x, double y, double tolerance, double tEarliest,
+                 double tLatest);
+
+    /// @brief xy distance from the state to (x, y).
+    double distanceGoal(const ompl::base::State *st) const override;
+    /// @brief (x, y), yaw 0, time uniform in [tEarliest, tLatest].
+    void sampleGoal(ompl::base::State *st) const override;
+    /// @brief Unbounded (a continuum of goal times).
+    unsigned int maxSampleCount() const override;
+
+    /// @brief Goal x.
+    double getX() const
+    {
+        return x_;
+    }
+    /// @brief Goal y.
+    double getY() const
+    {
+        return y_;
+    }
+    /// @brief xy tolerance (= the GoalRegion threshold).
+    double getTolerance() const
+    {
+        return getThreshold();
+    }
+    /// @brief Earliest time of sampled goal states.
+    double getEarliestTime() const
+    {
+        return tEarliest_;
+    }
+    /// @brief Latest time of sampled goal states.
+    double getLatestTime() const
+    {
+        return tLatest_;
+    }
+    /// @brief Change the window of sampled goal times. @throws ompl_glider::Error when tEarliest > tLatest.
+    void setTimeWindow(double tEarliest, double tLatest);
+
+private:
+    double x_, y_;
+    double tEarliest_, tLatest_;
+    mutable ompl::RNG rng_;
+};
+}  // namespace ompl_glider

@@ -1,0 +1,122 @@
+#include "ompl_glider/ompl/GliderSetup.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/ompl/GliderStateValidityChecker.h"
+#include "ompl_glider/ompl/PositionGoal.h"
+#include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "ompl_glider/ompl/TravelTimeMotionValidator.h"
+#include "ompl_glider/ompl/TravelTimeObjective.h"
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace ompl_glider
+{
+namespace
+{
+std::string num(double v)
+{
+    std::ostringstream os;
+    os << v;
+    return os.str();
+}
+
+void checkPoint(const GliderProblem &p, const char *what, double x, double y)
+{
+    if (!std::isfinite(x) || !std::isfinite(y))
+        throw Error(std::string("GliderProblem: ") + what + " position (" + what + "X, " + what +
+                    "Y) must be set to finite values (got " + num(x) + ", " + num(y) + ")");
+    if (x < p.xMin || x > p.xMax || y < p.yMin || y > p.yMax)
+        throw Error(std::string("GliderProblem: ") + what + " (" + num(x) + ", " + num(y) +
+                    ") is outside the planning box x in [" + num(p.xMin) + ", " + num(p.xMax) + "], y in [" +
+                    num(p.yMin) + ", " + num(p.yMax) + "]");
+}
+}  // namespace
+
+std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)
+{
+    if (!p.field)
+        throw Error("GliderProblem: field is null (a current field is required)");
+    if (!std::isfinite(p.xMin) || !std::isfinite(p.xMax) || !(p.xMin < p.xMax))
+        throw Error("GliderProblem: x bounds must be finite with xMin < xMax (got [" + num(p.xMin) + ", " +
+                    num(p.xMax) + "])");
+    if (!std::isfinite(p.yMin) || !std::isfinite(p.yMax) || !(p.yMin < p.yMax))
+        throw Error("GliderProblem: y bounds must be finite with yMin < yMax (got [" + num(p.yMin) + ", " +
+                    num(p.yMax) + "])");
+    if (!std::isfinite(p.t0))
+        throw Error("GliderProblem: departure time t0 must be finite (got " + num(p.t0) + ")");
+    if (!(p.horizon > 0.0) || !std::isfinite(p.horizon))
+        throw Error("GliderProblem: horizon must be finite and > 0 (got " + num(p.horizon) + ")");
+    if (p.t0 < p.field->timeBegin() || p.t0 >= p.field->timeEnd())
+        throw Error("GliderProblem: departure time t0 = " + num(p.t0) + " is outside the time span [" +
+                    num(p.field->timeBegin()) + ", " + num(p.field->timeEnd()) + ") of the field '" +
+                    p.field->name() + "'");
+    checkPoint(p, "start", p.startX, p.startY);
+    checkPoint(p, "goal", p.goalX, p.goalY);
+    if (!(p.goalTolerance >= 0.0) || !std::isfinite(p.goalTolerance))
+        throw Error("GliderProblem: goalTolerance must be finite and >= 0 (got " + num(p.goalTolerance) + ")");
+
+    auto ctx = std::make_shared<GliderContext>();
+    ctx->field = p.field;
+    ctx->travel = std::make_shared<TravelTimeCalculator>(p.field, p.travel);  // validates the travel parameters
+    ctx->environment = p.environment;
+    ctx->region.xMin = p.xMin;
+    ctx->region.xMax = p.xMax;
+    ctx->region.yMin = p.yMin;
+    ctx->region.yMax = p.yMax;
+    ctx->region.zMin = ctx->region.zMax = p.travel.depth;
+    ctx->region.tMin = p.t0;
+    ctx->region.tMax = p.t0 + p.horizon;
+    ctx->t0 = p.t0;
+    const double cmax = ctx->maxCurrent();
+    if (!(cmax >= 0.0) || !std::isfinite(cmax))
+        throw Error("GliderProblem: the field '" + p.field->name() +
+                    "' gives no finite maximum current speed over the region (got " + num(cmax) + ")");
+    return ctx;
+}
+
+og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<GliderContext> *ctxOut)
+{
+    auto ctx = makeGliderContext(p);
+    if (ctxOut)
+        *ctxOut = ctx;
+    return makeSimpleSetup(p, ctx);
+}
+
+og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<GliderContext> ctx)
+{
+    if (!ctx)
+        throw Error("makeSimpleSetup: the GliderContext is null");
+    checkPoint(p, "start", p.startX, p.startY);
+    checkPoint(p, "goal", p.goalX, p.goalY);
+    const Region &r = ctx->region;
+    ob::RealVectorBounds b(2);
+    b.setLow(0, r.xMin);
+    b.setHigh(0, r.xMax);
+    b.setLow(1, r.yMin);
+    b.setHigh(1, r.yMax);
+    auto space = std::make_shared<TimeSE2StateSpace>(b, r.tMin, r.tMax);
+    const double vMax = ctx->speed() + ctx->maxCurrent();
+    space->setTimeWeight(vMax);
+
+    auto ss = std::make_shared<og::SimpleSetup>(space);
+    const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
+    std::shared_ptr<const GliderContext> cctx = ctx;
+    ss->setStateValidityChecker(std::make_shared<GliderStateValidityChecker>(si, cctx));
+    si->setMotionValidator(std::make_shared<TravelTimeMotionValidator>(si, cctx));
+    ss->setOptimizationObjective(std::make_shared<TravelTimeObjective>(si, cctx));
+
+    ob::ScopedState<TimeSE2StateSpace> start(space);
+    start->setXYT(p.startX, p.startY, ctx->t0);
+    start->setYaw(0.0);
+    ss->setStartState(start);
+
+    const double straight = std::hypot(p.goalX - p.startX, p.goalY - p.startY);
+    const double tEarliest = std::min(r.tMax, ctx->t0 + straight / vMax);
+    ss->setGoal(std::make_shared<PositionGoal>(si, p.goalX, p.goalY, p.goalTolerance, tEarliest, r.tMax));
+    return ss;
+}
+}  // namespace ompl_glider
