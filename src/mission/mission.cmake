@@ -1,2 +1,6 @@
+# mission/: mission files, outputs (CSV, GeoJSON, goto list, summary), departure-time search
 list(APPEND OMPL_GLIDER_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/AkimaSpline.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/DepartureTimeSearch.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/SlocumGoto.cpp
 )

@@ -1,0 +1,198 @@
+#include "ompl_glider/mission/SlocumGoto.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+std::string formatDegMin(double degrees)
+{
+    if (!std::isfinite(degrees) || std::abs(degrees) > 360.0)
+        throw Error("formatDegMin: " + std::to_string(degrees) + " is not a coordinate in degrees");
+    // Whole units of 1e-4 minutes; the sign goes on the whole number.
+    const long long units = std::llround(std::abs(degrees) * 60.0 * 1e4);
+    const long long deg = units / 600000;
+    const long long rem = units % 600000;  // minutes * 1e4, in [0, 600000)
+    const bool negative = degrees < 0.0 && units != 0;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%s%lld%02lld.%04lld", negative ? "-" : "", deg, rem / 10000, rem % 10000);
+    return buf;
+}
+
+double parseDegMin(const std::string &text)
+{
+    std::size_t pos = 0;
+    double v = 0.0;
+    try
+    {
+        v = std::stod(text, &pos);
+    }
+    catch (const std::exception &)
+    {
+        throw Error("'" + text + "' is not a [-]DDDMM.MMMM coordinate");
+    }
+    if (pos != text.size() || !std::isfinite(v))
+        throw Error("'" + text + "' is not a [-]DDDMM.MMMM coordinate");
+    const double a = std::abs(v);
+    const double deg = std::floor(a / 100.0);
+    const double minutes = a - 100.0 * deg;
+    if (minutes >= 60.0)
+        throw Error("'" + text + "': minutes must be < 60");
+    const double d = deg + minutes / 60.0;
+    return v < 0 ? -d : d;
+}
+
+std::string gotoFileName(int number)
+{
+    if (number < 0 || number > 99)
+        throw Error("goto list number must be in 0..99 (got " + std::to_string(number) + ")");
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "goto_l%02d.ma", number);
+    return buf;
+}
+
+std::string formatGotoList(const GotoList &list)
+{
+    std::ostringstream s;
+    s << "behavior_name=goto_list\n";
+    s << "# " << gotoFileName(list.number) << " written by ompl_glider";
+    if (!list.comment.empty())
+        s << ": " << list.comment;
+    s << "\n";
+    s << "<start:b_arg>\n";
+    s << "    b_arg: num_legs_to_run(nodim) " << list.numLegsToRun << "\n";
+    s << "    b_arg: start_when(enum) " << list.startWhen << "\n";
+    s << "    b_arg: list_stop_when(enum) " << list.listStopWhen << "\n";
+    s << "    b_arg: initial_wpt(enum) " << list.initialWpt << "\n";
+    s << "    b_arg: num_waypoints(nodim) " << list.waypoints.size() << "\n";
+    s << "<end:b_arg>\n";
+    s << "<start:waypoints>\n";
+    for (const GeoPoint &p : list.waypoints)
+        s << formatDegMin(p.lon) << " " << formatDegMin(p.lat) << "\n";
+    s << "<end:waypoints>\n";
+    return s.str();
+}
+
+void writeGotoFile(const std::string &path, const GotoList &list)
+{
+    const std::string text = formatGotoList(list);
+    std::ofstream out(path);
+    if (!out || !(out << text))
+        throw Error("cannot write goto list file '" + path + "'");
+}
+
+GotoList parseGotoList(const std::string &text, const std::string &source)
+{
+    GotoList list;
+    std::istringstream in(text);
+    std::string line;
+    enum class Block { None, Args, Waypoints, Done } block = Block::None;
+    int lineNo = 0;
+    long declared = -1;
+    bool sawBehavior = false;
+    auto fail = [&](const std::string &what) {
+        throw Error(source + ":" + std::to_string(lineNo) + ": " + what);
+    };
+    while (std::getline(in, line))
+    {
+        ++lineNo;
+        const auto hash = line.find('#');
+        if (hash != std::string::npos)
+            line.erase(hash);
+        std::istringstream ls(line);
+        std::string first;
+        if (!(ls >> first))
+            continue;
+        if (first.rfind("behavior_name=", 0) == 0)
+        {
+            if (first != "behavior_name=goto_list")
+                fail("expected behavior_name=goto_list, got " + first);
+            sawBehavior = true;
+            continue;
+        }
+        if (first == "<start:b_arg>")
+        {
+            block = Block::Args;
+            continue;
+        }
+        if (first == "<end:b_arg>")
+        {
+            block = Block::None;
+            continue;
+        }
+        if (first == "<start:waypoints>")
+        {
+            block = Block::Waypoints;
+            continue;
+        }
+        if (first == "<end:waypoints>")
+        {
+            block = Block::Done;
+            continue;
+        }
+        if (block == Block::Args)
+        {
+            std::string name;
+            long value;
+            if (first != "b_arg:" || !(ls >> name >> value))
+                fail("expected 'b_arg: name(unit) value'");
+            const std::string key = name.substr(0, name.find('('));
+            if (key == "num_waypoints")
+                declared = value;
+            else if (key == "num_legs_to_run")
+                list.numLegsToRun = static_cast<int>(value);
+            else if (key == "start_when")
+                list.startWhen = static_cast<int>(value);
+            else if (key == "list_stop_when")
+                list.listStopWhen = static_cast<int>(value);
+            else if (key == "initial_wpt")
+                list.initialWpt = static_cast<int>(value);
+        }
+        else if (block == Block::Waypoints)
+        {
+            std::string lat;
+            if (!(ls >> lat))
+                fail("expected 'longitude latitude' in [-]DDDMM.MMMM");
+            try
+            {
+                list.waypoints.push_back({parseDegMin(first), parseDegMin(lat)});
+            }
+            catch (const Error &e)
+            {
+                fail(e.what());
+            }
+        }
+        else
+            fail("unexpected text '" + first + "' outside the b_arg and waypoints blocks");
+    }
+    if (!sawBehavior)
+        throw Error(source + ": no behavior_name=goto_list line");
+    if (block != Block::Done)
+        throw Error(source + ": missing <end:waypoints>");
+    if (declared != static_cast<long>(list.waypoints.size()))
+        throw Error(source + ": num_waypoints is " + std::to_string(declared) + " but " +
+                    std::to_string(list.waypoints.size()) + " waypoints are listed");
+    return list;
+}
+
+GotoList readGotoFile(const std::string &path)
+{
+    std::ifstream in(path);
+    if (!in)
+        throw Error("cannot read goto list file '" + path + "'");
+    std::ostringstream s;
+    s << in.rdbuf();
+    GotoList list = parseGotoList(s.str(), path);
+    const auto slash = path.find_last_of('/');
+    const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+    int nn;
+    char tail[8] = {0};
+    if (std::sscanf(base.c_str(), "goto_l%2d.%2s", &nn, tail) == 2 && std::string(tail) == "ma")
+        list.number = nn;
+    return list;
+}
+}  // namespace ompl_glider
