@@ -1,0 +1,61 @@
+#pragma once
+/// @file CfTime.h
+/// @brief CF-convention time coordinates: "<unit> since <date>" with the CF calendars, and ISO 8601 dates.
+
+#include <string>
+
+namespace ompl_glider
+{
+/// @brief CF calendars (CF conventions 1.10, Sec. 4.4.1).
+enum class Calendar
+{
+    Standard,            ///< "standard" / "gregorian": Julian before 1582-10-15, Gregorian from then on
+    ProlepticGregorian,  ///< Gregorian rules for all dates
+    Julian,              ///< a leap year every 4 years
+    NoLeap,              ///< "noleap" / "365_day"
+    AllLeap,             ///< "all_leap" / "366_day"
+    Day360               ///< "360_day": twelve 30-day months
+};
+
+/// @brief Parses a CF calendar attribute (case-insensitive; empty means standard).
+/// @throws Error naming the value and the accepted names.
+Calendar parseCalendar(const std::string &name);
+
+/// @brief A calendar date and time of day (seconds may have a fraction). Always UTC.
+struct DateTime
+{
+    int year{1970};
+    int month{1};
+    int day{1};
+    int hour{0};
+    int minute{0};
+    double second{0.0};
+};
+
+/// @brief Parses "YYYY-MM-DD", "YYYY-MM-DDThh:mm[:ss[.fff]]" (also with a space instead of T) with an optional
+/// time zone "Z", " UTC", "+hh[:mm]" or "-hh[:mm]" (converted to UTC). Also accepts single-digit fields
+/// ("1950-1-1 0:0:0") as CF files use them. @throws Error naming the text on a syntax error.
+DateTime parseDateTime(const std::string &text);
+
+/// @brief Seconds from the calendar's epoch (0001-01-01 00:00 in that calendar) to the date; exact in the
+/// calendar's own day count. @throws Error when the day does not exist in the calendar (Feb 29 in noleap, ...).
+double secondsSinceCalendarEpoch(const DateTime &d, Calendar cal);
+/// @brief Inverse of secondsSinceCalendarEpoch().
+DateTime dateFromCalendarEpoch(double seconds, Calendar cal);
+
+/// @brief "YYYY-MM-DDThh:mm:ssZ" (seconds rounded to the nearest integer, milliseconds when not integral).
+std::string formatDateTime(const DateTime &d);
+
+/// @brief Parsed CF time units: value * secondsPerUnit + reference = seconds since the calendar epoch.
+struct CfTimeUnits
+{
+    double secondsPerUnit{1.0};  ///< 1 (seconds), 60, 3600 or 86400
+    double reference{0.0};       ///< the "since" date in seconds since the calendar epoch
+    Calendar calendar{Calendar::Standard};
+};
+
+/// @brief Parses "seconds|minutes|hours|days since <date>" (also the abbreviations s, sec, min, h, hr, d; months
+/// and years are rejected because CF defines them as fixed fractions of a year, which forecasts never mean).
+/// @throws Error naming the text and what was expected.
+CfTimeUnits parseCfTimeUnits(const std::string &units, const std::string &calendar);
+}  // namespace ompl_glider

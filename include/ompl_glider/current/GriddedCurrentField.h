@@ -1,0 +1,180 @@
+#pragma once
+/// @file GriddedCurrentField.h
+/// @brief A current field interpolated from gridded forecast data (003 Sec. II.C, 000 Sec. 3.4.2).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/current/Interpolation.h"
+
+namespace ompl_glider
+{
+/// @brief What the field does after the last forecast time.
+enum class BeyondForecast
+{
+    HoldLast,  ///< keep the last forecast field for all later times (the paper's choice); timeEnd() = +inf
+    Refuse     ///< timeEnd() = last forecast time: travel-time code reports legs that need later data infeasible
+};
+
+/// @brief Interpolation schemes and policies of a gridded field.
+struct GriddedFieldOptions
+{
+    Interp2D xy{Interp2D::Bilinear};            ///< horizontal scheme (first step of 003 Fig. 2)
+    Interp1D depth{Interp1D::Linear};           ///< depth scheme (second step)
+    Interp1D time{Interp1D::Linear};            ///< time scheme (third step)
+    BeyondForecast beyond{BeyondForecast::Refuse};  ///< policy after the last forecast time
+    std::string name{"gridded"};                ///< returned by name()
+};
+
+/// @brief Gridded current data in the local Cartesian frame, ready for GriddedCurrentField.
+///
+/// Horizontal grid: either rectilinear (axes x and y, each strictly increasing) or curvilinear (nodeX/nodeY of
+/// size ny*nx, index [j*nx + i], any quadrilateral mesh without folds). Velocities u (along x) and v (along y)
+/// are stored at index [((t * nz + k) * ny + j) * nx + i]; water (optional) marks water nodes (1) and land /
+/// fill nodes (0) at index [(k * ny + j) * nx + i].
+struct GriddedData
+{
+    std::size_t nx{0};            ///< nodes along x (i)
+    std::size_t ny{0};            ///< nodes along y (j)
+    std::vector<double> x;        ///< rectilinear x axis (size nx), empty when curvilinear
+    std::vector<double> y;        ///< rectilinear y axis (size ny), empty when curvilinear
+    std::vector<double> nodeX;    ///< curvilinear node x (size ny*nx), empty when rectilinear
+    std::vector<double> nodeY;    ///< curvilinear node y (size ny*nx), empty when rectilinear
+    std::vector<double> depth{0.0};  ///< depth layers, positive down, strictly increasing (one layer: 2-D field)
+    std::vector<double> time{0.0};   ///< forecast times, strictly increasing (one time: steady field)
+    std::vector<float> u;         ///< velocity along x at the nodes
+    std::vector<float> v;         ///< velocity along y at the nodes
+    std::vector<std::uint8_t> water;  ///< 1 = water, 0 = land/fill; empty means all water
+};
+
+/// @brief The ocean-current model of 003 Sec. II.C: horizontal interpolation on each depth layer and forecast
+/// time, then 1-D interpolation in depth, then in time, each with its own scheme (GriddedFieldOptions).
+///
+/// - Rectilinear grids interpolate in x/y directly (non-uniform axes allowed). Curvilinear grids (and
+///   geographic grids after projection) first locate the point: a bucket index gives a start cell, then a walk
+///   over cells solving the inverse bilinear map of each quadrilateral by Newton's method gives fractional
+///   indices (fi, fj); the schemes then run in index space, and the Jacobian is chained with the inverse of
+///   d(x, y)/d(fi, fj) of the cell's bilinear map.
+/// - Land: nodes marked land hold zero velocity (a no-slip coast), so velocity() never returns a fill value;
+///   next to land it interpolates between the water values and these zeros. inWater() is false outside the
+///   grid and in every cell (at the depth layers that carry weight) with a land corner: a coastal band up to
+///   one cell wide is forbidden, which keeps planners off any cell whose interpolant touches land.
+/// - Queries outside the grid, above the first / below the last layer, or before the first time are clamped
+///   to the grid (no extrapolation). After the last time: BeyondForecast.
+/// - Jacobian: analytic from the interpolants' derivative weights (piecewise: one-sided at cell edges); with
+///   an Akima depth or time scheme (nonlinear in the data) by central differences with a step of 1e-4 of the
+///   mean cell size.
+/// - maxSpeed(): largest |c| of the stored nodes in the time/depth window (plus the stencil margin) times the
+///   product of the schemes' overshoot factors (overshootFactor(): 1 for nearest/linear/bilinear, about 1.25
+///   per cubic axis, about 1.6 for Akima, which is applied per component so the node bound is then
+///   hypot(max|u|, max|v|)): a true upper bound of what velocity() can return.
+class GriddedCurrentField : public CurrentField
+{
+public:
+    /// @brief Validates the data (sizes, monotone axes, finite values at water nodes) and builds the locator.
+    /// @throws Error naming the inconsistent piece.
+    GriddedCurrentField(GriddedData data, GriddedFieldOptions options = {});
+
+    double maxSpeed(const Region &region) const override;
+    bool inWater(double x, double y, double z) const override;
+    double timeBegin() const override;
+    double timeEnd() const override;
+    std::string name() const override
+    {
+        return options_.name;
+    }
+
+    /// @brief The options in use.
+    const GriddedFieldOptions &options() const
+    {
+        return options_;
+    }
+    /// @brief True for a curvilinear (or projected geographic) grid.
+    bool curvilinear() const
+    {
+        return curvilinear_;
+    }
+    /// @brief Grid sizes.
+    std::size_t nx() const
+    {
+        return nx_;
+    }
+    std::size_t ny() const
+    {
+        return ny_;
+    }
+    std::size_t nz() const
+    {
+        return depth_.size();
+    }
+    std::size_t nt() const
+    {
+        return time_.size();
+    }
+    /// @brief Depth and time axes.
+    const Axis &depthAxis() const
+    {
+        return depth_;
+    }
+    const Axis &timeAxis() const
+    {
+        return time_;
+    }
+    /// @brief Bounding box of the grid nodes in x/y (z and t: depth and time ranges).
+    Region extent() const;
+    /// @brief Bytes held by the velocity arrays, mask and node positions.
+    std::size_t memoryBytes() const;
+    /// @brief The product of the schemes' overshoot factors used by maxSpeed().
+    double overshoot() const
+    {
+        return overshoot_;
+    }
+    /// @brief Fractional grid indices (fi, fj) of (x, y); false when the point is outside the grid (the indices
+    /// are then those of the nearest boundary point of the last cell visited).
+    bool locate(double x, double y, double &fi, double &fj) const;
+
+protected:
+    Velocity evaluate(double x, double y, double z, double t) const override;
+    Jacobian evaluateJacobian(double x, double y, double z, double t) const override;
+
+private:
+    struct Sample
+    {
+        double u{0}, v{0}, ui{0}, uj{0}, vi{0}, vj{0};
+    };
+    struct Horizontal
+    {
+        Stencil sx, sy;
+        double m[4]{1, 0, 0, 1};  ///< d(fi, fj)/d(x, y) for curvilinear grids: [dfi/dx, dfi/dy, dfj/dx, dfj/dy]
+    };
+    Horizontal horizontal(double x, double y) const;
+    template <bool Deriv>
+    Sample spatial(const Horizontal &h, std::size_t it, std::size_t iz) const;
+    template <bool Deriv>
+    Sample depthCombined(const Horizontal &h, std::size_t it, double z) const;
+    template <bool Deriv>
+    Sample full(double x, double y, double z, double t) const;
+    double clampTime(double t) const;
+    bool cellInside(std::size_t ci, std::size_t cj, double px, double py, double &a, double &b) const;
+    void buildLocator();
+
+    GriddedFieldOptions options_;
+    bool curvilinear_{false};
+    std::size_t nx_{0}, ny_{0};
+    Axis x_, y_;            // rectilinear axes, or index axes 0..n-1 when curvilinear
+    Axis depth_, time_;
+    std::vector<double> nodeX_, nodeY_;
+    std::vector<float> uv_;                 // interleaved u, v
+    std::vector<std::uint8_t> cellWater_;   // [(k * (ny-1) + j) * (nx-1) + i]
+    std::vector<double> layerMaxSpeed_, layerMaxU_, layerMaxV_;  // per (t, k)
+    double overshoot_{1.0};
+    double fdStep_{1e-6};
+    // locator for curvilinear grids
+    double bx0_{0}, by0_{0}, bInv_{1};
+    std::size_t bnx_{0}, bny_{0};
+    std::vector<std::int32_t> bucket_;      // start cell (j * (nx-1) + i) or -1
+    double xMin_{0}, xMax_{0}, yMin_{0}, yMax_{0};
+};
+}  // namespace ompl_glider

@@ -1,0 +1,111 @@
+#pragma once
+/// @file NetCdfCurrents.h
+/// @brief Loading ocean-current forecasts from NetCDF files (ROMS, HYCOM, Copernicus Marine, NEMO, POP...) into
+/// a GriddedCurrentField in local Cartesian metres and seconds (003 Sec. II.B-C, 000 Sec. 3.4).
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/current/CfTime.h"
+#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/current/LocalProjection.h"
+
+namespace ompl_glider
+{
+/// @brief How the horizontal coordinates of the file are read.
+enum class CoordinateMode
+{
+    Auto,        ///< geographic when longitude/latitude are found (degrees_east/north or standard_name), else Cartesian
+    Geographic,  ///< longitude/latitude in degrees, projected with LocalProjection about a reference point
+    Cartesian    ///< x/y axes used as they are ("no projection"; units m, km or dimensionless); a time axis without
+                 ///< "since" is then read as raw values, and velocities without units as dimensionless
+};
+
+/// @brief Options of loadNetCdfCurrents(). Every field has a usable default: only the path is required.
+struct NetCdfCurrentOptions
+{
+    // --- variables (empty: found automatically) ---
+    std::string uName;      ///< eastward velocity; default: CF standard_name eastward_sea_water_velocity and
+                            ///< variants (surface_, baroclinic_, barotropic_, ..._assuming_no_tide, eastward_current,
+                            ///< sea_water_x_velocity), then the names uo, u, water_u, uvel, vozocrtx, ucur, U
+    std::string vName;      ///< northward velocity (same rules with northward / y / v)
+    std::string lonName;    ///< longitude or x coordinate variable (1-D axis or 2-D curvilinear)
+    std::string latName;    ///< latitude or y coordinate variable
+    std::string depthName;  ///< depth coordinate variable
+    std::string timeName;   ///< time coordinate variable
+    CoordinateMode coordinates{CoordinateMode::Auto};  ///< how to read x/y
+    std::string velocityUnits;  ///< overrides the units attribute of u and v ("m/s", "cm/s", "knots")
+
+    // --- model ---
+    GriddedFieldOptions field;  ///< schemes (xy bilinear, depth linear, time linear), BeyondForecast, name
+
+    // --- what to load (003 Sec. II.B: only the region, depth layers and times the mission needs) ---
+    double lonMin{std::numeric_limits<double>::quiet_NaN()};  ///< region of interest (x in Cartesian mode);
+    double lonMax{std::numeric_limits<double>::quiet_NaN()};  ///< NaN = the whole file. lonMax < lonMin means
+    double latMin{std::numeric_limits<double>::quiet_NaN()};  ///< the region crosses the antimeridian.
+    double latMax{std::numeric_limits<double>::quiet_NaN()};
+    double margin{0.0};       ///< extra margin around the region (degrees, or x/y units in Cartesian mode)
+    int marginNodes{2};       ///< extra grid nodes on each side (2 keeps bicubic stencils inside the data)
+    double maxDepth{std::numeric_limits<double>::infinity()};  ///< deepest depth the glider reaches (m, positive
+                                                              ///< down): loads the layers down to the first at or
+                                                              ///< below it, plus 2 for cubic/Akima stencils
+    std::string departure;    ///< ISO 8601 date/time, or a number of seconds after the first forecast time; empty
+                              ///< = the first forecast time. Outside the forecast -> Error.
+    double horizon{std::numeric_limits<double>::infinity()};  ///< seconds after departure to load (plus 2 time
+                                                             ///< steps of margin); infinity = to the end
+
+    // --- projection ---
+    double refLon{std::numeric_limits<double>::quiet_NaN()};  ///< reference point of the local frame; NaN = the
+    double refLat{std::numeric_limits<double>::quiet_NaN()};  ///< centre of the region (or of the loaded grid)
+};
+
+/// @brief A loaded forecast: the field (x east / y north in metres, t in seconds since the first forecast time of
+/// the file; raw units in Cartesian mode) and what is needed to convert coordinates and times for output.
+struct NetCdfCurrents
+{
+    std::shared_ptr<GriddedCurrentField> field;       ///< ready to plan on
+    std::shared_ptr<const LocalProjection> projection;  ///< null in Cartesian mode
+    bool geographic{false};          ///< true when x/y come from longitude/latitude
+    bool dated{false};               ///< true when the time axis has CF units "<unit> since <date>"
+    Calendar calendar{Calendar::Standard};  ///< the file's calendar (dated files)
+    double originSeconds{0.0};       ///< first forecast time, seconds since the calendar epoch (dated files)
+    double departureTime{0.0};       ///< the departure in field time (0 when none was given)
+    double forecastBegin{0.0};       ///< first forecast time of the file, field time
+    double forecastEnd{0.0};         ///< last forecast time of the file, field time
+    std::string uVariable, vVariable;  ///< variables read
+    std::vector<std::size_t> loadedShape;  ///< nt, nz, ny, nx actually loaded
+    std::size_t fileValues{0};       ///< values per component in the file variable
+    std::size_t loadedValues{0};     ///< values per component loaded
+
+    /// @brief Field time (seconds after the first forecast time) of an ISO 8601 date in the file's calendar, or
+    /// of a plain number (seconds after the first forecast time). @throws Error for undated files given a date.
+    double fieldTime(const std::string &isoOrSeconds) const;
+    /// @brief ISO 8601 date of a field time (dated files; else the number).
+    std::string isoTime(double t) const;
+    /// @brief (x, y) -> (lon, lat); identity in Cartesian mode.
+    void toGeographic(double x, double y, double &lon, double &lat) const;
+    /// @brief (lon, lat) -> (x, y); identity in Cartesian mode.
+    void toLocal(double lon, double lat, double &x, double &y) const;
+};
+
+/// @brief Loads u/v from a NetCDF file into a GriddedCurrentField (see NetCdfCurrentOptions for what is found
+/// automatically and what is loaded).
+///
+/// Reads: dimensions (time, depth, lat, lon) in any order of the file, depth and time optional; 1-D axes or 2-D
+/// curvilinear latitude/longitude (from the `coordinates` attribute, standard_name or units); scale_factor /
+/// add_offset packing; _FillValue / missing_value / valid_min / valid_max / valid_range compared on the packed
+/// value (plus the netCDF default fill when _FillValue is absent, and NaN); CF time units with the standard,
+/// gregorian, proleptic_gregorian, julian, noleap/365_day, all_leap/366_day and 360_day calendars; longitudes
+/// in -180..180 or 0..360 and regions across the seam of a global grid; latitude and depth ascending or
+/// descending; depth positive="up" negated; velocities in m/s, cm/s or knots. Only the hyperslab covering the
+/// region (+ margin), the depth layers down to maxDepth and the time window is read (nc_get_vara).
+///
+/// Geographic grids (1-D or 2-D) become curvilinear grids of projected nodes (LocalProjection about the
+/// reference point) and eastward/northward velocities are rotated into x/y at each node. Nodes where u or v
+/// is a fill value at any loaded time are land.
+///
+/// @throws Error naming the file, the variable and what was expected when something is missing or wrong.
+NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &options = {});
+}  // namespace ompl_glider

@@ -1,0 +1,306 @@
+#include "ompl_glider/current/CfTime.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace
+{
+std::string lower(std::string s)
+{
+    for (char &c : s)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+std::string trim(const std::string &s)
+{
+    std::size_t a = 0, b = s.size();
+    while (a < b && std::isspace(static_cast<unsigned char>(s[a])))
+        ++a;
+    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1])))
+        --b;
+    return s.substr(a, b - a);
+}
+
+bool gregorianLeap(long y)
+{
+    return (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
+}
+bool julianLeap(long y)
+{
+    return y % 4 == 0;
+}
+
+/// Day of the date counted from 0001-01-01 = day 0 with leap rule `leap` (proleptic).
+long daysProleptic(long y, int m, int d, bool gregorian)
+{
+    static const int cum[12] = {0, 31, 59, 90, 120, 151, 181, 212, 243, 273, 304, 334};
+    const long y1 = y - 1;
+    long days = y1 * 365 + y1 / 4;
+    if (gregorian)
+        days += -y1 / 100 + y1 / 400;
+    days += cum[m - 1] + d - 1;
+    const bool leap = gregorian ? gregorianLeap(y) : julianLeap(y);
+    if (leap && m > 2)
+        days += 1;
+    return days;
+}
+
+int daysInMonth(long y, int m, Calendar cal)
+{
+    static const int dim[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    switch (cal)
+    {
+        case Calendar::Day360:
+            return 30;
+        case Calendar::NoLeap:
+            return dim[m - 1];
+        case Calendar::AllLeap:
+            return m == 2 ? 29 : dim[m - 1];
+        case Calendar::Julian:
+            return m == 2 && julianLeap(y) ? 29 : dim[m - 1];
+        case Calendar::ProlepticGregorian:
+            return m == 2 && gregorianLeap(y) ? 29 : dim[m - 1];
+        case Calendar::Standard:
+            return m == 2 && (y < 1583 ? julianLeap(y) : gregorianLeap(y)) ? 29 : dim[m - 1];
+    }
+    return 31;
+}
+
+/// Day number of a date in the calendar (0001-01-01 = 0; for Standard, 0001-01-01 Julian = 0).
+long dayNumber(long y, int m, int d, Calendar cal)
+{
+    static const int cum[12] = {0, 31, 59, 90, 120, 151, 181, 212, 243, 273, 304, 334};
+    switch (cal)
+    {
+        case Calendar::Day360:
+            return (y - 1) * 360 + (m - 1) * 30 + d - 1;
+        case Calendar::NoLeap:
+            return (y - 1) * 365 + cum[m - 1] + d - 1;
+        case Calendar::AllLeap:
+            return (y - 1) * 366 + cum[m - 1] + (m > 2 ? 1 : 0) + d - 1;
+        case Calendar::Julian:
+            return daysProleptic(y, m, d, false);
+        case Calendar::ProlepticGregorian:
+            return daysProleptic(y, m, d, true);
+        case Calendar::Standard:
+        {
+            // Julian up to 1582-10-04, Gregorian from 1582-10-15 (the next day).
+            const bool greg = y > 1582 || (y == 1582 && (m > 10 || (m == 10 && d >= 15)));
+            if (!greg)
+                return daysProleptic(y, m, d, false);
+            // Gregorian 1582-10-15 follows Julian 1582-10-04
+            const long offset = daysProleptic(1582, 10, 4, false) + 1 - daysProleptic(1582, 10, 15, true);
+            return daysProleptic(y, m, d, true) + offset;
+        }
+    }
+    return 0;
+}
+}  // namespace
+
+Calendar parseCalendar(const std::string &name)
+{
+    const std::string s = lower(trim(name));
+    if (s.empty() || s == "standard" || s == "gregorian")
+        return Calendar::Standard;
+    if (s == "proleptic_gregorian")
+        return Calendar::ProlepticGregorian;
+    if (s == "julian")
+        return Calendar::Julian;
+    if (s == "noleap" || s == "365_day")
+        return Calendar::NoLeap;
+    if (s == "all_leap" || s == "366_day")
+        return Calendar::AllLeap;
+    if (s == "360_day")
+        return Calendar::Day360;
+    throw Error("calendar '" + name +
+                "': expected standard, gregorian, proleptic_gregorian, julian, noleap, 365_day, all_leap, 366_day or "
+                "360_day");
+}
+
+DateTime parseDateTime(const std::string &text)
+{
+    const std::string s = trim(text);
+    DateTime d;
+    std::size_t pos = 0;
+    auto fail = [&](const std::string &why) -> Error {
+        return Error("date '" + text + "': " + why + " (expected YYYY-MM-DD[Thh:mm[:ss]][Z|+hh:mm])");
+    };
+    auto readInt = [&](int minDigits, int maxDigits) -> long {
+        std::size_t start = pos;
+        bool neg = false;
+        if (pos < s.size() && s[pos] == '-' && minDigits == 4)
+        {
+            neg = true;
+            ++pos;
+            ++start;
+        }
+        while (pos < s.size() && std::isdigit(static_cast<unsigned char>(s[pos])) &&
+               static_cast<int>(pos - start) < maxDigits)
+            ++pos;
+        if (static_cast<int>(pos - start) < minDigits)
+            throw fail("bad number at position " + std::to_string(start));
+        const long v = std::stol(s.substr(start, pos - start));
+        return neg ? -v : v;
+    };
+    auto expect = [&](char c) {
+        if (pos >= s.size() || s[pos] != c)
+            throw fail(std::string("expected '") + c + "' at position " + std::to_string(pos));
+        ++pos;
+    };
+    d.year = static_cast<int>(readInt(1, 6));
+    expect('-');
+    d.month = static_cast<int>(readInt(1, 2));
+    expect('-');
+    d.day = static_cast<int>(readInt(1, 2));
+    double tzOffset = 0.0;
+    if (pos < s.size() && (s[pos] == 'T' || s[pos] == 't' || s[pos] == ' '))
+    {
+        ++pos;
+        while (pos < s.size() && s[pos] == ' ')
+            ++pos;
+        if (pos < s.size() && std::isdigit(static_cast<unsigned char>(s[pos])))
+        {
+            d.hour = static_cast<int>(readInt(1, 2));
+            expect(':');
+            d.minute = static_cast<int>(readInt(1, 2));
+            if (pos < s.size() && s[pos] == ':')
+            {
+                ++pos;
+                const std::size_t start = pos;
+                while (pos < s.size() && (std::isdigit(static_cast<unsigned char>(s[pos])) || s[pos] == '.'))
+                    ++pos;
+                if (pos == start)
+                    throw fail("missing seconds");
+                d.second = std::stod(s.substr(start, pos - start));
+            }
+        }
+    }
+    while (pos < s.size() && s[pos] == ' ')
+        ++pos;
+    if (pos < s.size())
+    {
+        const std::string rest = lower(s.substr(pos));
+        if (rest == "z" || rest == "utc" || rest == "gmt")
+            pos = s.size();
+        else if (s[pos] == '+' || s[pos] == '-')
+        {
+            const double sign = s[pos] == '-' ? -1.0 : 1.0;
+            ++pos;
+            const long hh = readInt(1, 2);
+            long mm = 0;
+            if (pos < s.size() && s[pos] == ':')
+            {
+                ++pos;
+                mm = readInt(1, 2);
+            }
+            else if (pos + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[pos])))
+                mm = readInt(2, 2);
+            tzOffset = sign * (hh * 3600.0 + mm * 60.0);
+        }
+        if (pos != s.size())
+            throw fail("unexpected text '" + s.substr(pos) + "'");
+    }
+    if (d.month < 1 || d.month > 12 || d.day < 1 || d.day > 31 || d.hour > 24 || d.minute > 59 || d.second >= 61)
+        throw fail("field out of range");
+    if (tzOffset != 0.0)
+    {
+        // shift to UTC with proleptic Gregorian arithmetic (time zones only appear with real-world calendars)
+        const double t = secondsSinceCalendarEpoch(d, Calendar::ProlepticGregorian) - tzOffset;
+        d = dateFromCalendarEpoch(t, Calendar::ProlepticGregorian);
+    }
+    return d;
+}
+
+double secondsSinceCalendarEpoch(const DateTime &d, Calendar cal)
+{
+    if (d.month < 1 || d.month > 12 || d.day < 1 || d.day > daysInMonth(d.year, d.month, cal))
+        throw Error("date " + formatDateTime(d) + " does not exist in this calendar");
+    if (cal == Calendar::Standard && d.year == 1582 && d.month == 10 && d.day > 4 && d.day < 15)
+        throw Error("date " + formatDateTime(d) + " does not exist in the standard (mixed Julian/Gregorian) calendar");
+    return static_cast<double>(dayNumber(d.year, d.month, d.day, cal)) * 86400.0 + d.hour * 3600.0 + d.minute * 60.0 +
+           d.second;
+}
+
+DateTime dateFromCalendarEpoch(double seconds, Calendar cal)
+{
+    long day = static_cast<long>(std::floor(seconds / 86400.0));
+    double rem = seconds - static_cast<double>(day) * 86400.0;
+    if (rem >= 86400.0)
+    {
+        ++day;
+        rem -= 86400.0;
+    }
+    DateTime d;
+    // year estimate then correct
+    const double yearLen = cal == Calendar::Day360 ? 360.0 : cal == Calendar::NoLeap ? 365.0 : cal == Calendar::AllLeap ? 366.0 : 365.25;
+    long y = static_cast<long>(std::floor(static_cast<double>(day) / yearLen)) + 1;
+    while (dayNumber(y, 1, 1, cal) > day)
+        --y;
+    while (dayNumber(y + 1, 1, 1, cal) <= day)
+        ++y;
+    int m = 1;
+    while (m < 12 && dayNumber(y, m + 1, 1, cal) <= day)
+        ++m;
+    int dd = static_cast<int>(day - dayNumber(y, m, 1, cal)) + 1;
+    if (cal == Calendar::Standard && y == 1582 && m == 10 && dd > 4)
+        dd += 10;
+    d.year = static_cast<int>(y);
+    d.month = m;
+    d.day = dd;
+    d.hour = static_cast<int>(rem / 3600.0);
+    rem -= d.hour * 3600.0;
+    d.minute = static_cast<int>(rem / 60.0);
+    d.second = rem - d.minute * 60.0;
+    if (std::abs(d.second - std::round(d.second)) < 1e-6)
+        d.second = std::round(d.second);
+    if (d.second >= 60.0)
+    {
+        // rounding pushed us over; recompute from the rounded value
+        return dateFromCalendarEpoch(std::round(seconds), cal);
+    }
+    return d;
+}
+
+std::string formatDateTime(const DateTime &d)
+{
+    char buf[64];
+    if (d.second == std::floor(d.second))
+        std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%02dZ", d.year, d.month, d.day, d.hour, d.minute,
+                      static_cast<int>(d.second));
+    else
+        std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%06.3fZ", d.year, d.month, d.day, d.hour, d.minute,
+                      d.second);
+    return buf;
+}
+
+CfTimeUnits parseCfTimeUnits(const std::string &units, const std::string &calendar)
+{
+    const std::string s = trim(units);
+    const std::string ls = lower(s);
+    const std::size_t since = ls.find(" since ");
+    if (since == std::string::npos)
+        throw Error("time units '" + units + "': expected '<seconds|minutes|hours|days> since <date>'");
+    const std::string unit = trim(ls.substr(0, since));
+    CfTimeUnits u;
+    if (unit == "seconds" || unit == "second" || unit == "secs" || unit == "sec" || unit == "s")
+        u.secondsPerUnit = 1.0;
+    else if (unit == "minutes" || unit == "minute" || unit == "mins" || unit == "min")
+        u.secondsPerUnit = 60.0;
+    else if (unit == "hours" || unit == "hour" || unit == "hrs" || unit == "hr" || unit == "h")
+        u.secondsPerUnit = 3600.0;
+    else if (unit == "days" || unit == "day" || unit == "d")
+        u.secondsPerUnit = 86400.0;
+    else
+        throw Error("time units '" + units + "': unit '" + unit +
+                    "' not supported; expected seconds, minutes, hours or days since <date>");
+    u.calendar = parseCalendar(calendar);
+    u.reference = secondsSinceCalendarEpoch(parseDateTime(s.substr(since + 7)), u.calendar);
+    return u;
+}
+}  // namespace ompl_glider
