@@ -292,8 +292,8 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
             if (!std::isfinite(w))
                 return;
             const double dv = du + w;
-            if (!(dv < d_[v]))
-                return;
+            if (!(dv < d_[v]) || dv > ctx.region.tMax)
+                return;  // no improvement, or later than the planning window
             if (env && (!env->pointFree(vx, vy, dv) || !env->legFree(ux, uy, du, vx, vy, dv)))
                 return;
             if (d_[v] == kInf)

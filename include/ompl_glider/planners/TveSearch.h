@@ -91,6 +91,7 @@ struct TveTreeVertex
 /// CALC-OPTDIR (calcOptimalCourse()) and only successors whose edge direction lies within +-deltaPhiMax of it are
 /// examined. The search stops when the goal vertex is extracted.
 ///
+/// Arrivals after ctx->region.tMax (the end of the planning window) are dropped.
 /// Forbidden regions: vertices with inWater() false are never entered; with an Environment, a vertex must be
 /// pointFree() at its arrival time and the edge legFree() for its times, both checked only when the edge is about
 /// to improve the vertex (lazily, after its travel time is known).

@@ -1,0 +1,171 @@
+#pragma once
+/// @file ZAStarTVE.h
+/// @brief TVE, A*TVE, ZTVE and ZA*TVE (000 Sec. 2.2, Tables 1 and 2) as an ompl::base::Planner.
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ompl/base/Planner.h>
+
+#include "ompl_glider/ompl/GliderContext.h"
+#include "ompl_glider/planners/TveSearch.h"
+
+namespace ompl_glider
+{
+/// @brief Time-optimal lattice search in a time-varying current with the edge weights computed during the search.
+///
+/// The configuration picks the acceleration methods of 000 Sec. 2.2: "TVE" (time-dependent Dijkstra),
+/// "A*TVE" (+ the heuristic of 000 Eq. 1), "ZTVE" (+ Zermelo pruning, 000 Sec. 2.2.2) and "ZA*TVE" (both,
+/// 000 Table 2). The search runs on an implicit rectangular lattice over ctx->region (grid_size, sectors; see
+/// Lattice) from the exact start to the exact goal position (both joined to the lattice).
+///
+/// The space must be a TimeSE2StateSpace (or hold one as its state type). Goals: PositionGoal, or any GoalState /
+/// GoalSampleableRegion whose (sampled) state gives the goal position. The returned PathGeometric has one
+/// TimeSE2 state per waypoint: x, y, yaw = heading of the leg that reaches it (the first leg's at the start),
+/// t = arrival time; its cost under TravelTimeObjective is the arrival time minus t0.
+///
+/// Outcomes of solve(): EXACT_SOLUTION; APPROXIMATE_SOLUTION when the termination condition stopped the search (the
+/// path leads to the reached vertex closest to the goal); TIMEOUT with no path when the search exhausted the lattice
+/// without reaching the goal (OMPL 1.5 has no INFEASIBLE status; lastOutcome() says TveOutcome::Exhausted, and this
+/// is quick: at most every lattice vertex once per improvement) or when it was stopped before reaching anything
+/// closer to the goal than the start; INVALID_START / INVALID_GOAL (with an OMPL_ERROR saying why) when the start
+/// or goal is outside the region, on land or in a forbidden region; UNRECOGNIZED_GOAL_TYPE otherwise.
+///
+/// Planner progress properties (logged by ompl::tools::Benchmark): "cost function calls INTEGER",
+/// "current model calls INTEGER" (CFC / CMC of the current or last solve, 000 Table 4), "best cost REAL".
+///
+/// @par External documentation
+/// B. Eichhorn, "Optimal routing strategies for autonomous underwater vehicles in time-varying environment",
+/// Robotics and Autonomous Systems (seed 000), Sec. 2.2 and Tables 1, 2, 4.
+class ZAStarTVE : public ompl::base::Planner
+{
+public:
+    /// @brief Planner on space information si for the problem described by ctx; configuration is one of
+    /// "TVE", "A*TVE", "ZTVE", "ZA*TVE" (also the planner's name). Throws ompl_glider::Error on an unknown
+    /// configuration or a null context.
+    ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx,
+              const std::string &configuration = "ZA*TVE");
+    ~ZAStarTVE() override;
+
+    /// @brief An allocator for ompl::tools::Benchmark::addPlannerAllocator() making this configuration.
+    static ompl::base::PlannerAllocator allocator(std::shared_ptr<const GliderContext> ctx,
+                                                    const std::string &configuration);
+
+    /// @brief Runs the search (000 Table 2 with the switches of the configuration).
+    ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+    /// @brief Forgets the last search (labels, tree, counters).
+    void clear() override;
+    /// @brief Checks the space and the lattice parameters.
+    void setup() override;
+    /// @brief The explored tree of the last search: every reached vertex (x, y, yaw of its incoming leg,
+    /// arrival time) with an edge from its predecessor weighted by the leg's travel time.
+    void getPlannerData(ompl::base::PlannerData &data) const override;
+
+    /// @brief A* heuristic on/off (param "heuristic").
+    void setHeuristic(bool on)
+    {
+        options_.heuristic = on;
+    }
+    /// @brief A* heuristic on/off.
+    bool getHeuristic() const
+    {
+        return options_.heuristic;
+    }
+    /// @brief Zermelo pruning on/off (param "zermelo").
+    void setZermelo(bool on)
+    {
+        options_.zermelo = on;
+    }
+    /// @brief Zermelo pruning on/off.
+    bool getZermelo() const
+    {
+        return options_.zermelo;
+    }
+    /// @brief Half-width of the accepted course range, degrees (param "delta_phi_max", default 22).
+    void setDeltaPhiMax(double degrees);
+    /// @brief Half-width of the accepted course range, degrees.
+    double getDeltaPhiMax() const;
+    /// @brief Extrapolation k of the predicted course (param "course_extrapolation", default 1; 0 = 000 Table 2).
+    void setCourseExtrapolation(double k)
+    {
+        options_.courseExtrapolation = k;
+    }
+    /// @brief Extrapolation k of the predicted course.
+    double getCourseExtrapolation() const
+    {
+        return options_.courseExtrapolation;
+    }
+    /// @brief Lattice connectivity n in 1..5 (param "sectors", default 3).
+    void setSectors(unsigned n);
+    /// @brief Lattice connectivity.
+    unsigned getSectors() const
+    {
+        return sectors_;
+    }
+    /// @brief Lattice spacing (param "grid_size", default 0.4, the paper's).
+    void setGridSize(double g);
+    /// @brief Lattice spacing.
+    double getGridSize() const
+    {
+        return gridSize_;
+    }
+    /// @brief All search options (Zermelo steps, fallback, ...); the params above set the same fields.
+    TveOptions &options()
+    {
+        return options_;
+    }
+
+    /// @brief Cost-function calls (CFC, 000 Table 4) of the last solve.
+    std::uint64_t getCostFunctionCalls() const
+    {
+        return last_.costFunctionCalls;
+    }
+    /// @brief Current-model calls (CMC, 000 Table 4) of the last solve, CALC-OPTDIR included.
+    std::uint64_t getCurrentModelCalls() const
+    {
+        return last_.currentModelCalls;
+    }
+    /// @brief Vertices expanded (extracted from the queue) in the last solve.
+    std::uint64_t getExpandedVertices() const
+    {
+        return last_.expansions;
+    }
+    /// @brief Waypoints (x, y, arrival time) of the last solve's path (empty when none).
+    const std::vector<TimedWaypoint> &getWaypoints() const
+    {
+        return last_.waypoints;
+    }
+    /// @brief Travel time (arrival - t0) of the last exact solution; +inf otherwise.
+    double getTravelTime() const
+    {
+        return last_.travelTime;
+    }
+    /// @brief Everything the last search reported.
+    const TveResult &lastResult() const
+    {
+        return last_;
+    }
+    /// @brief How the last search ended.
+    TveOutcome lastOutcome() const
+    {
+        return last_.outcome;
+    }
+
+private:
+    std::shared_ptr<const GliderContext> ctx_;
+    TveOptions options_;
+    unsigned sectors_{3};
+    double gridSize_{0.4};
+    std::unique_ptr<TveSearch> search_;
+    TveResult last_;
+    std::vector<TveTreeVertex> tree_;
+    mutable std::vector<ompl::base::State *> dataStates_;
+    std::atomic<bool> solving_{false};
+    std::atomic<std::uint64_t> cfcBase_{0}, cmcBase_{0};
+    std::atomic<double> bestCost_{std::numeric_limits<double>::infinity()};
+    void freeDataStates() const;
+};
+}  // namespace ompl_glider

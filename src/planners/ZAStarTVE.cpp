@@ -1,0 +1,323 @@
+#include "ompl_glider/planners/ZAStarTVE.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <unordered_map>
+
+#include <ompl/base/PlannerData.h>
+#include <ompl/base/goals/GoalSampleableRegion.h>
+#include <ompl/base/goals/GoalState.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Console.h>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/ompl/PositionGoal.h"
+#include "ompl_glider/ompl/TimeSE2StateSpace.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+using TimeState = TimeSE2StateSpace::StateType;
+}  // namespace
+
+ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx,
+                     const std::string &configuration)
+  : ompl::base::Planner(si, configuration), ctx_(std::move(ctx))
+{
+    if (!ctx_ || !ctx_->field || !ctx_->travel)
+        throw Error("ZAStarTVE: a GliderContext with field and travel is required");
+    if (configuration == "TVE")
+        options_.heuristic = options_.zermelo = false;
+    else if (configuration == "A*TVE")
+    {
+        options_.heuristic = true;
+        options_.zermelo = false;
+    }
+    else if (configuration == "ZTVE")
+    {
+        options_.heuristic = false;
+        options_.zermelo = true;
+    }
+    else if (configuration == "ZA*TVE")
+        options_.heuristic = options_.zermelo = true;
+    else
+        throw Error("ZAStarTVE: unknown configuration '" + configuration +
+                    "' (expected TVE, A*TVE, ZTVE or ZA*TVE)");
+
+    specs_.approximateSolutions = true;
+    specs_.optimizingPaths = false;
+    specs_.multithreaded = false;
+    specs_.directed = true;
+
+    declareParam<bool>("heuristic", this, &ZAStarTVE::setHeuristic, &ZAStarTVE::getHeuristic, "0,1");
+    declareParam<bool>("zermelo", this, &ZAStarTVE::setZermelo, &ZAStarTVE::getZermelo, "0,1");
+    declareParam<double>("delta_phi_max", this, &ZAStarTVE::setDeltaPhiMax, &ZAStarTVE::getDeltaPhiMax,
+                         "1.:1.:180.");
+    declareParam<double>("course_extrapolation", this, &ZAStarTVE::setCourseExtrapolation,
+                         &ZAStarTVE::getCourseExtrapolation, "0.:0.25:2.");
+    declareParam<unsigned>("sectors", this, &ZAStarTVE::setSectors, &ZAStarTVE::getSectors, "1:1:5");
+    declareParam<double>("grid_size", this, &ZAStarTVE::setGridSize, &ZAStarTVE::getGridSize, "0.:0.01:1000.");
+
+    const TravelTimeCalculator *travel = ctx_->travel.get();
+    const CurrentField *field = ctx_->field.get();
+    addPlannerProgressProperty("cost function calls INTEGER", [this, travel] {
+        const std::uint64_t n = solving_ ? travel->costFunctionCalls() - cfcBase_ : last_.costFunctionCalls;
+        return std::to_string(n);
+    });
+    addPlannerProgressProperty("current model calls INTEGER", [this, field] {
+        const std::uint64_t n = solving_ ? field->callCount() - cmcBase_ : last_.currentModelCalls;
+        return std::to_string(n);
+    });
+    addPlannerProgressProperty("best cost REAL", [this] { return ompl::toString(bestCost_.load()); });
+}
+
+ZAStarTVE::~ZAStarTVE()
+{
+    freeDataStates();
+}
+
+ompl::base::PlannerAllocator ZAStarTVE::allocator(std::shared_ptr<const GliderContext> ctx,
+                                                    const std::string &configuration)
+{
+    return [ctx, configuration](const ompl::base::SpaceInformationPtr &si) {
+        return std::make_shared<ZAStarTVE>(si, ctx, configuration);
+    };
+}
+
+void ZAStarTVE::setDeltaPhiMax(double degrees)
+{
+    if (!(degrees > 0.0) || !(degrees <= 180.0))
+        throw Error("ZAStarTVE: delta_phi_max must be in (0, 180] degrees (got " + std::to_string(degrees) + ")");
+    options_.deltaPhiMax = degrees * kDeg;
+}
+
+double ZAStarTVE::getDeltaPhiMax() const
+{
+    return options_.deltaPhiMax / kDeg;
+}
+
+void ZAStarTVE::setSectors(unsigned n)
+{
+    if (n < 1 || n > 5)
+        throw Error("ZAStarTVE: sectors must be in 1..5 (got " + std::to_string(n) + ")");
+    if (n != sectors_)
+        search_.reset();
+    sectors_ = n;
+}
+
+void ZAStarTVE::setGridSize(double g)
+{
+    if (!(g > 0.0) || !std::isfinite(g))
+        throw Error("ZAStarTVE: grid_size must be a finite number > 0 (got " + std::to_string(g) + ")");
+    if (g != gridSize_)
+        search_.reset();
+    gridSize_ = g;
+}
+
+void ZAStarTVE::setup()
+{
+    Planner::setup();
+    if (!dynamic_cast<const TimeSE2StateSpace *>(si_->getStateSpace().get()))
+    {
+        OMPL_ERROR("%s: the state space must be a TimeSE2StateSpace", getName().c_str());
+        setup_ = false;
+        return;
+    }
+    if (!search_)
+        search_ = std::make_unique<TveSearch>(ctx_, gridSize_, sectors_);  // throws Error on bad lattice params
+}
+
+void ZAStarTVE::freeDataStates() const
+{
+    for (ompl::base::State *s : dataStates_)
+        si_->freeState(s);
+    dataStates_.clear();
+}
+
+void ZAStarTVE::clear()
+{
+    Planner::clear();
+    freeDataStates();
+    tree_.clear();
+    last_ = TveResult{};
+    bestCost_ = std::numeric_limits<double>::infinity();
+}
+
+ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationCondition &ptc)
+{
+    checkValidity();
+    if (!search_)
+        search_ = std::make_unique<TveSearch>(ctx_, gridSize_, sectors_);
+
+    // Start: the first start state given.
+    const ompl::base::State *startState = pis_.nextStart();
+    if (!startState)
+    {
+        OMPL_ERROR("%s: no valid start state", getName().c_str());
+        return ompl::base::PlannerStatus::INVALID_START;
+    }
+    const auto *st = startState->as<TimeState>();
+    const double sx = st->getX(), sy = st->getY();
+
+    // Goal position.
+    const ompl::base::GoalPtr &goal = pdef_->getGoal();
+    double gx = 0.0, gy = 0.0;
+    if (auto pg = std::dynamic_pointer_cast<PositionGoal>(goal))
+    {
+        gx = pg->getX();
+        gy = pg->getY();
+    }
+    else if (auto gs = std::dynamic_pointer_cast<ompl::base::GoalState>(goal))
+    {
+        gx = gs->getState()->as<TimeState>()->getX();
+        gy = gs->getState()->as<TimeState>()->getY();
+    }
+    else if (auto gr = std::dynamic_pointer_cast<ompl::base::GoalSampleableRegion>(goal))
+    {
+        if (!gr->canSample())
+        {
+            OMPL_ERROR("%s: the goal region cannot be sampled", getName().c_str());
+            return ompl::base::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
+        }
+        ompl::base::State *tmp = si_->allocState();
+        gr->sampleGoal(tmp);
+        gx = tmp->as<TimeState>()->getX();
+        gy = tmp->as<TimeState>()->getY();
+        si_->freeState(tmp);
+    }
+    else
+    {
+        OMPL_ERROR("%s: unknown goal type (need PositionGoal, GoalState or GoalSampleableRegion)",
+                   getName().c_str());
+        return ompl::base::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
+    }
+
+    freeDataStates();
+    cfcBase_ = ctx_->travel->costFunctionCalls();
+    cmcBase_ = ctx_->field->callCount();
+    solving_ = true;
+    TveResult r;
+    try
+    {
+        r = search_->run(sx, sy, gx, gy, options_, [&ptc] { return ptc(); });
+    }
+    catch (...)
+    {
+        solving_ = false;
+        throw;
+    }
+    last_ = r;
+    tree_ = search_->tree();
+    solving_ = false;
+
+    switch (r.outcome)
+    {
+        case TveOutcome::InvalidStart:
+            OMPL_ERROR("%s: invalid start: %s", getName().c_str(), r.message.c_str());
+            return ompl::base::PlannerStatus::INVALID_START;
+        case TveOutcome::InvalidGoal:
+            OMPL_ERROR("%s: invalid goal: %s", getName().c_str(), r.message.c_str());
+            return ompl::base::PlannerStatus::INVALID_GOAL;
+        case TveOutcome::Exhausted:
+            OMPL_INFORM("%s: the lattice holds no feasible path to the goal (%llu vertices expanded, %llu CFC)",
+                        getName().c_str(), static_cast<unsigned long long>(r.expansions),
+                        static_cast<unsigned long long>(r.costFunctionCalls));
+            return ompl::base::PlannerStatus::TIMEOUT;
+        default:
+            break;
+    }
+    if (r.waypoints.empty())
+        return ompl::base::PlannerStatus::TIMEOUT;  // terminated before reaching anything closer to the goal
+
+    auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
+    const auto &w = r.waypoints;
+    ompl::base::State *state = si_->allocState();
+    for (std::size_t i = 0; i < w.size(); ++i)
+    {
+        double yaw = 0.0;
+        if (w.size() > 1)
+        {
+            const std::size_t a = i == 0 ? 0 : i - 1, b = i == 0 ? 1 : i;
+            yaw = std::atan2(w[b].y - w[a].y, w[b].x - w[a].x);
+        }
+        auto *ts = state->as<TimeState>();
+        ts->setXYT(w[i].x, w[i].y, w[i].t);
+        ts->setYaw(yaw);
+        path->append(state);
+    }
+    si_->freeState(state);
+
+    const bool exact = r.outcome == TveOutcome::Exact;
+    const double cost = w.back().t - ctx_->t0;
+    if (exact)
+        bestCost_ = cost;
+    const double difference = exact ? 0.0 : std::hypot(w.back().x - gx, w.back().y - gy);
+    ompl::base::PlannerSolution sol(path);
+    sol.setPlannerName(getName());
+    if (!exact)
+        sol.setApproximate(difference);
+    if (pdef_->getOptimizationObjective())
+        sol.setOptimized(pdef_->getOptimizationObjective(), ompl::base::Cost(cost), exact);
+    pdef_->addSolutionPath(sol);
+    return exact ? ompl::base::PlannerStatus::EXACT_SOLUTION : ompl::base::PlannerStatus::APPROXIMATE_SOLUTION;
+}
+
+void ZAStarTVE::getPlannerData(ompl::base::PlannerData &data) const
+{
+    Planner::getPlannerData(data);
+    if (tree_.empty() || !search_)
+        return;
+    const Lattice &lat = search_->lattice();
+    // Map lattice vertex -> index in tree_ for the predecessor lookup.
+    std::unordered_map<Lattice::VertexId, std::size_t> index;
+    index.reserve(tree_.size());
+    for (std::size_t i = 0; i < tree_.size(); ++i)
+        index[tree_[i].id] = i;
+    // The states live until the next solve() / clear() (PlannerData keeps pointers to them).
+    const bool build = dataStates_.size() != tree_.size();
+    if (build)
+        freeDataStates();
+    std::vector<ompl::base::State *> states(tree_.size(), nullptr);
+    for (std::size_t i = 0; i < tree_.size(); ++i)
+    {
+        if (!build)
+        {
+            states[i] = dataStates_[i];
+            continue;
+        }
+        const TveTreeVertex &v = tree_[i];
+        ompl::base::State *s = si_->allocState();
+        auto *ts = s->as<TimeState>();
+        ts->setXYT(v.x, v.y, v.t);
+        double yaw = 0.0;
+        if (v.parent != Lattice::kNone)
+            yaw = std::atan2(v.y - lat.y(v.parent), v.x - lat.x(v.parent));
+        ts->setYaw(yaw);
+        states[i] = s;
+        dataStates_.push_back(s);
+    }
+    for (std::size_t i = 0; i < tree_.size(); ++i)
+    {
+        const TveTreeVertex &v = tree_[i];
+        if (v.parent == Lattice::kNone)
+            data.addStartVertex(ompl::base::PlannerDataVertex(states[i]));
+        else if (v.id == lat.goal())
+            data.addGoalVertex(ompl::base::PlannerDataVertex(states[i]));
+    }
+    for (std::size_t i = 0; i < tree_.size(); ++i)
+    {
+        const TveTreeVertex &v = tree_[i];
+        if (v.parent == Lattice::kNone)
+            continue;
+        const auto it = index.find(v.parent);
+        if (it == index.end())
+            continue;
+        const TveTreeVertex &p = tree_[it->second];
+        data.addEdge(ompl::base::PlannerDataVertex(states[it->second]), ompl::base::PlannerDataVertex(states[i]),
+                     ompl::base::PlannerDataEdge(), ompl::base::Cost(v.t - p.t));
+    }
+}
+}  // namespace ompl_glider
