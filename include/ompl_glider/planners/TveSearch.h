@@ -21,9 +21,11 @@ struct TveOptions
 {
     bool heuristic{true};   ///< A*: h(u) = |x_u - x_g| / (V + max|c|) (000 Eq. 1)
     bool zermelo{true};     ///< Zermelo pruning (000 Sec. 2.2.2)
-    /// Half-width of the accepted course range around phi_opt, radians (000 Fig. 3, Table 2). The default, 22 deg,
-    /// keeps about 5 of the 31 forward successors of a 3-sector lattice, as in the paper.
-    double deltaPhiMax{22.0 * 3.14159265358979323846 / 180.0};
+    /// Half-width of the accepted course range around phi_opt, radians (000 Fig. 3, Table 2). The default, 26 deg,
+    /// keeps 3 to 5 of the 31 forward successors of a 3-sector lattice (the paper: 5). Tuned on the meandering jet
+    /// (grid 0.4, 3 sectors) with courseExtrapolation = 1: 22 deg prunes more but misses the lattice optimum more
+    /// often; see benchmarks/table4/README.md.
+    double deltaPhiMax{26.0 * 3.14159265358979323846 / 180.0};
     /// Midpoint (RK2) steps of CALC-OPTDIR per half edge; each step costs 2 velocity + 2 Jacobian calls (CMC).
     unsigned zermeloSteps{1};
     /// Extrapolation of the predicted course: the cone is centred on phi_opt + k (phi_opt - phi_edge), where

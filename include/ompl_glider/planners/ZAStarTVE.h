@@ -84,7 +84,7 @@ public:
     {
         return options_.zermelo;
     }
-    /// @brief Half-width of the accepted course range, degrees (param "delta_phi_max", default 22).
+    /// @brief Half-width of the accepted course range, degrees (param "delta_phi_max", default 26).
     void setDeltaPhiMax(double degrees);
     /// @brief Half-width of the accepted course range, degrees.
     double getDeltaPhiMax() const;

@@ -1,0 +1,145 @@
+// Reproduces the shape of 000 Table 4: cost-function calls (CFC) and current-model calls (CMC) of TVE, A*TVE,
+// ZTVE and ZA*TVE on the meandering jet (000 Sec. 6.1; V = 0.5, 3-sector lattice, grid 0.4, x in [0, 10],
+// y in [-4, 4], t0 = 0) from five start positions at decreasing distance from one goal, with the travel times and
+// the ZA*TVE-vs-TVE reduction factors. Prints a Markdown table. Runs in about a second.
+//
+// Usage: bench_table4 [--delta-phi-max DEG] [--course-extrapolation K] [--goal X,Y]
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Console.h>
+
+#include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/ompl/GliderSetup.h"
+#include "ompl_glider/planners/ZAStarTVE.h"
+
+using namespace ompl_glider;
+
+namespace
+{
+struct Cell
+{
+    bool ok{false};
+    double time{0.0};
+    std::uint64_t cfc{0}, cmc{0}, expanded{0};
+    bool valid{false};
+};
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    double dphi = -1.0, k = -1.0;
+    double gx = 7.6, gy = 1.2;
+    for (int i = 1; i < argc; ++i)
+    {
+        const std::string a = argv[i];
+        if (a == "--delta-phi-max" && i + 1 < argc)
+            dphi = std::atof(argv[++i]);
+        else if (a == "--course-extrapolation" && i + 1 < argc)
+            k = std::atof(argv[++i]);
+        else if (a == "--goal" && i + 1 < argc && std::sscanf(argv[++i], "%lf,%lf", &gx, &gy) == 2)
+            ;
+        else
+        {
+            std::fprintf(stderr, "usage: %s [--delta-phi-max DEG] [--course-extrapolation K] [--goal X,Y]\n",
+                         argv[0]);
+            return 2;
+        }
+    }
+    // Starts on the line from the far corner (0.4, -3.2) to the goal at 100, 80, 60, 40, 20 % of the distance,
+    // snapped to the lattice (as the paper's Fig. 10: spread over the area, at decreasing distance).
+    const double starts[5][2] = {{0.4, -3.2}, {2.0, -2.4}, {3.2, -1.6}, {4.8, -0.4}, {6.0, 0.4}};
+    const char *configs[4] = {"TVE", "A*TVE", "ZTVE", "ZA*TVE"};
+    Cell cells[4][5];
+
+    auto jet = std::make_shared<MeanderingJet>();
+    for (int s = 0; s < 5; ++s)
+    {
+        GliderProblem p;
+        p.field = jet;
+        p.startX = starts[s][0];
+        p.startY = starts[s][1];
+        p.goalX = gx;
+        p.goalY = gy;
+        std::shared_ptr<GliderContext> ctx;
+        auto ss = makeSimpleSetup(p, &ctx);
+        for (int c = 0; c < 4; ++c)
+        {
+            auto planner = std::make_shared<ZAStarTVE>(ss->getSpaceInformation(), ctx, configs[c]);
+            if (dphi > 0)
+                planner->setDeltaPhiMax(dphi);
+            if (k >= 0)
+                planner->setCourseExtrapolation(k);
+            ss->clear();
+            ss->setPlanner(planner);
+            ss->setup();
+            const auto status = ss->solve(ompl::base::timedPlannerTerminationCondition(30.0));
+            Cell &cell = cells[c][s];
+            cell.ok = status == ompl::base::PlannerStatus::EXACT_SOLUTION;
+            cell.time = planner->getTravelTime();
+            cell.cfc = planner->getCostFunctionCalls();
+            cell.cmc = planner->getCurrentModelCalls();
+            cell.expanded = planner->getExpandedVertices();
+            cell.valid = cell.ok && ss->getSolutionPath().check();
+        }
+    }
+
+    std::printf("Meandering jet, V = 0.5, 3-sector lattice, grid 0.4, x in [0, 10], y in [-4, 4], t0 = 0; goal (%g, %g)\n\n",
+                gx, gy);
+    std::printf("| Method |");
+    for (int s = 0; s < 5; ++s)
+        std::printf(" SP%d (%g, %g) CFC / CMC |", s + 1, starts[s][0], starts[s][1]);
+    std::printf(" total CFC / CMC |\n|---|");
+    for (int s = 0; s < 6; ++s)
+        std::printf("---|");
+    std::printf("\n");
+    std::uint64_t tot[4][2] = {};
+    for (int c = 0; c < 4; ++c)
+    {
+        std::printf("| %s |", configs[c]);
+        for (int s = 0; s < 5; ++s)
+        {
+            std::printf(" %llu / %llu |", static_cast<unsigned long long>(cells[c][s].cfc),
+                        static_cast<unsigned long long>(cells[c][s].cmc));
+            tot[c][0] += cells[c][s].cfc;
+            tot[c][1] += cells[c][s].cmc;
+        }
+        std::printf(" %llu / %llu |\n", static_cast<unsigned long long>(tot[c][0]),
+                    static_cast<unsigned long long>(tot[c][1]));
+    }
+    std::printf("| reduction TVE / ZA*TVE |");
+    for (int s = 0; s < 5; ++s)
+        std::printf(" %.1fx / %.1fx |", double(cells[0][s].cfc) / double(cells[3][s].cfc),
+                    double(cells[0][s].cmc) / double(cells[3][s].cmc));
+    std::printf(" **%.1fx / %.1fx** |\n\n", double(tot[0][0]) / double(tot[3][0]), double(tot[0][1]) / double(tot[3][1]));
+
+    std::printf("| Method | travel time SP1 | SP2 | SP3 | SP4 | SP5 | max deviation from TVE |\n|---|---|---|---|---|---|---|\n");
+    bool allOk = true;
+    for (int c = 0; c < 4; ++c)
+    {
+        std::printf("| %s |", configs[c]);
+        double worst = 0.0;
+        for (int s = 0; s < 5; ++s)
+        {
+            const Cell &cell = cells[c][s];
+            allOk = allOk && cell.ok && cell.valid;
+            if (cell.ok)
+                std::printf(" %.6f%s |", cell.time, cell.valid ? "" : " (check failed)");
+            else
+                std::printf(" no solution |");
+            if (cell.ok && cells[0][s].ok)
+                worst = std::max(worst, cell.time / cells[0][s].time - 1.0);
+        }
+        std::printf(" %.3f %% |\n", 100.0 * worst);
+    }
+    std::printf("\nAll paths exact and passing PathGeometric::check(): %s\n", allOk ? "yes" : "NO");
+    return allOk ? 0 : 1;
+}
