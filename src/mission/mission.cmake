@@ -3,4 +3,6 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/AkimaSpline.cpp
   ${CMAKE_CURRENT_LIST_DIR}/DepartureTimeSearch.cpp
   ${CMAKE_CURRENT_LIST_DIR}/SlocumGoto.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/IsoTime.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/MissionLoader.cpp
 )

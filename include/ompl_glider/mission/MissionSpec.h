@@ -1,0 +1,218 @@
+#pragma once
+/// @file MissionSpec.h
+/// @brief A glider mission as read from a YAML mission file (003 Sec. IV: start, goal, start time, region,
+/// restricted areas and obstacles, projection, dive-profile parameters; SPEC.md 6).
+///
+/// Units: positions and times are in the current field's units: metres and seconds for NetCDF forecasts,
+/// dimensionless for the analytic flows. `units.length_m` / `units.time_s` say how many metres / seconds one
+/// unit is, so that geographic and calendar outputs are possible for analytic flows too.
+
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/cost/DiveProfile.h"
+#include "ompl_glider/cost/TravelTimeCalculator.h"
+#include "ompl_glider/current/CfTime.h"
+
+namespace ompl_glider
+{
+/// @brief Where a value came from in the mission file (for messages after loading).
+struct SourceMark
+{
+    std::string file;  ///< mission file
+    int line{0};       ///< 1-based line (0 = unknown)
+};
+
+/// @brief A point given as x/y (planning frame) or lon/lat (degrees; needs a projection).
+struct PointSpec
+{
+    bool geographic{false};  ///< lon/lat given
+    double x{0.0};           ///< x (planning units) when !geographic
+    double y{0.0};           ///< y
+    double lon{0.0};         ///< longitude, degrees east, when geographic
+    double lat{0.0};         ///< latitude, degrees north
+};
+
+/// @brief Local projection of the mission: azimuthal equidistant about (lon0, lat0) (as the NetCDF loader uses).
+struct ProjectionSpec
+{
+    bool set{false};  ///< a projection was given
+    double lon0{0.0};  ///< reference longitude (degrees)
+    double lat0{0.0};  ///< reference latitude (degrees)
+};
+
+/// @brief Source of the current: an analytic flow or a NetCDF forecast (loaded by the gridded-field reader).
+struct CurrentSpec
+{
+    /// meandering_jet | uniform | linear_shear | double_gyre | netcdf
+    std::string type{"meandering_jet"};
+    /// Analytic parameters (names per type: meandering_jet B0 epsilon omega theta k c; uniform u v;
+    /// linear_shear a; double_gyre amplitude length). Missing ones take the class defaults.
+    std::map<std::string, double> parameters;
+    std::string file;                              ///< netcdf: path (relative paths resolved against the mission)
+    std::map<std::string, std::string> variables;  ///< netcdf: role (u, v, lon, lat, x, y, depth, time) -> name
+    std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic
+    std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima
+    std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
+    std::string horizonPolicy{"refuse"};           ///< refuse (trips past the forecast are infeasible) | hold_last
+    SourceMark mark;                               ///< where the current block is
+};
+
+/// @brief The planning box (x/y or lon/lat; lon/lat boxes are projected to their x/y bounding box).
+struct RegionSpec
+{
+    bool set{false};         ///< a region was given (else: the NetCDF grid extent, or required for analytic flows)
+    bool geographic{false};  ///< given as lon/lat
+    double xMin{0}, xMax{0}, yMin{0}, yMax{0};          ///< x/y bounds
+    double lonMin{0}, lonMax{0}, latMin{0}, latMax{0};  ///< lon/lat bounds
+};
+
+/// @brief Departure: a fixed time, or a window searched for the optimal departure (000 Sec. 5).
+struct DepartureSpec
+{
+    double time{0.0};           ///< fixed departure time (field units; ISO dates are converted with the epoch)
+    bool window{false};         ///< a departure window is given
+    double begin{0.0};          ///< window start
+    double end{0.0};            ///< window end
+    double spacing{1.0};        ///< supporting-point spacing
+    double tolerance{1e-3};     ///< Brent tolerance on the departure time
+    double coarseGridSize{0.0}; ///< > 0: supporting points on a lattice of this spacing (000 Sec. 5.3)
+    int coarseSectors{0};       ///< sectors of the coarse lattice (0: same as the planner)
+    unsigned threads{0};        ///< parallel searches (0: all cores)
+};
+
+/// @brief Vehicle.
+struct VehicleSpec
+{
+    double speed{0.5};  ///< speed through water (field units)
+    double depth{0.0};  ///< depth at which the 2-D planner reads the current
+};
+
+/// @brief Dive profiles (003 Sec. III.B) and bathymetry.
+struct DiveSpec
+{
+    bool enabled{false};     ///< dive profiles evaluated on the planned legs
+    DiveProfileParams params;
+    std::string bathymetryType{"none"};  ///< none | constant | netcdf
+    double bathymetryDepth{std::numeric_limits<double>::infinity()};  ///< constant seafloor depth
+    std::string bathymetryFile;      ///< netcdf seafloor depth (positive down)
+    std::string bathymetryVariable{"depth"};
+    unsigned threads{0};             ///< pool for the profiles (0: all cores)
+};
+
+/// @brief A polygon of the mission (x/y or lon/lat vertices).
+struct PolygonSpec
+{
+    std::string name;                             ///< used in messages and outputs
+    bool geographic{false};                       ///< vertices are lon/lat
+    std::vector<std::pair<double, double>> points;  ///< outer ring
+    std::vector<std::vector<std::pair<double, double>>> holes;  ///< holes
+    SourceMark mark;                              ///< where it was given
+};
+
+/// @brief An obstacle forbidden at all times (island, land, restricted area).
+struct ObstacleSpec
+{
+    PolygonSpec polygon;
+    std::string kind{"island"};  ///< island | land | restricted area
+};
+
+/// @brief A zone forbidden during time windows.
+struct TimeWindowSpec
+{
+    PolygonSpec polygon;
+    std::vector<std::pair<double, double>> windows;  ///< closed [from, to] intervals (field time units)
+};
+
+/// @brief A drifting ice zone under which the glider may stay submerged for a limited time.
+struct IceSpec
+{
+    PolygonSpec polygon;          ///< shape at tRef
+    double tRef{0.0};             ///< time at which the shape is given
+    double vx{0.0}, vy{0.0};      ///< constant drift velocity (ignored when carried)
+    bool carried{false};          ///< drift with the current at the polygon's first vertex instead
+    double maxSubmergedTime{0.0}; ///< longest continuous stay under ice
+};
+
+/// @brief Forbidden regions: inline, or from a GeoJSON FeatureCollection.
+struct ForbiddenSpec
+{
+    std::vector<ObstacleSpec> obstacles;
+    std::vector<TimeWindowSpec> timeWindows;
+    std::vector<IceSpec> ice;
+    std::string geojson;                ///< GeoJSON file (Polygon / MultiPolygon features), resolved path
+    bool geojsonGeographic{true};       ///< GeoJSON coordinates are lon/lat (RFC 7946); false: planning x/y
+};
+
+/// @brief The planner and its parameters.
+struct PlannerSpec
+{
+    std::string name{"zastartve"};  ///< tve | astartve | ztve | zastartve
+    double gridSize{0.4};           ///< lattice spacing
+    int sectors{3};                 ///< n-sector connectivity (1..5)
+    bool smoothing{true};           ///< 000 Table 3
+    bool refinement{false};         ///< waypoint refinement after smoothing
+    double timeLimit{0.0};          ///< seconds; 0 = none
+    double horizon{0.0};            ///< planning time window length; 0 = automatic
+    double goalTolerance{-1.0};     ///< < 0: automatic (1e-6 of the box size)
+    std::map<std::string, double> parameters;  ///< extra tunables (delta_phi_max_deg, zermelo_steps, ...)
+};
+
+/// @brief What to write.
+struct OutputSpec
+{
+    std::string directory{"."};   ///< resolved against the mission file's folder
+    /// csv, geojson, goto, summary, map
+    std::vector<std::string> files{"csv", "geojson", "goto", "summary"};
+    int gotoNumber{10};           ///< goto_lNN.ma
+    bool gotoIncludeStart{false}; ///< also list the start position in the goto file
+    std::string prefix{"mission"};  ///< file name prefix (mission_waypoints.csv, ...)
+    double mapTime{std::numeric_limits<double>::quiet_NaN()};  ///< time of the map's current arrows (NaN: departure)
+};
+
+/// @brief A complete mission.
+struct MissionSpec
+{
+    std::string file;        ///< the mission file
+    std::string directory;   ///< its folder (relative paths are resolved against it)
+    std::string name{"mission"};  ///< mission name
+    double lengthUnitMetres{1.0};  ///< metres per planning length unit
+    double timeUnitSeconds{1.0};   ///< seconds per planning time unit
+    std::optional<double> epoch;   ///< calendar time (seconds since 1970, UTC) of field time 0, if any
+    /// @brief Time axis of a dated NetCDF forecast: field time 0 is its first time, in its calendar.
+    struct FileCalendar
+    {
+        Calendar calendar{Calendar::Standard};  ///< CF calendar of the file
+        double originSeconds{0.0};  ///< first forecast time, seconds since the calendar's epoch (CfTime.h)
+    };
+    std::optional<FileCalendar> fileCalendar;  ///< set for dated NetCDF forecasts
+    ProjectionSpec projection;
+    CurrentSpec current;
+    RegionSpec region;
+    PointSpec start;
+    PointSpec goal;
+    DepartureSpec departure;
+    VehicleSpec vehicle;
+    TravelTimeParams travel;       ///< integration parameters (speed and depth are copied from vehicle)
+    DiveSpec dive;
+    ForbiddenSpec forbidden;
+    PlannerSpec planner;
+    OutputSpec outputs;
+    std::vector<double> speeds;    ///< speed sweep (003 Table VI); empty = none
+};
+
+/// @brief Reads and validates a YAML mission file. Every field is checked: an unknown field, a wrong type, a
+/// missing required field or a value out of range throws ompl_glider::Error "FILE:LINE: field 'a.b.c': what was
+/// expected" (line from the YAML node, 1-based).
+MissionSpec loadMission(const std::string &path);
+
+/// @brief The same from YAML text; @p file names it in messages and @p directory resolves relative paths.
+MissionSpec parseMission(const std::string &yamlText, const std::string &file = "<mission>",
+                         const std::string &directory = ".");
+
+/// @brief The built-in Gulf Stream mission (meandering jet, 000 Sec. 6.1): the CLI's default without --mission.
+MissionSpec defaultGulfStreamMission();
+}  // namespace ompl_glider
