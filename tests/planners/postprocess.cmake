@@ -1,1 +1,3 @@
 # tests of smoothing / refinement / comparison with the optimum
+glider_add_test(test_smoothing ${CMAKE_CURRENT_LIST_DIR}/TestSmoothing.cpp)
+glider_add_test(test_refine ${CMAKE_CURRENT_LIST_DIR}/TestRefine.cpp)

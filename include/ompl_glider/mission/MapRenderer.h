@@ -1,0 +1,105 @@
+#pragma once
+/// @file MapRenderer.h
+/// @brief A map for the pilot (SPEC.md 6): the current field, forbidden regions, planned paths with time ticks,
+/// start and goal, legend and axes; written as SVG and PNG (cairo).
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/planners/TveSearch.h"
+
+namespace ompl_glider
+{
+/// @brief A colour with alpha, components in [0, 1].
+struct Rgba
+{
+    double r{0.0};
+    double g{0.0};
+    double b{0.0};
+    double a{1.0};
+};
+
+/// @brief A forbidden region (land, restricted area, ice zone ...) drawn as a filled polygon.
+struct MapPolygon
+{
+    std::string label;                                ///< shown at the polygon's centroid and in the legend
+    std::vector<std::pair<double, double>> vertices;  ///< (x, y) in field coordinates, at least 3
+    Rgba fill{0.55, 0.50, 0.45, 0.55};                ///< fill colour (default: land brown-grey, translucent)
+    Rgba stroke{0.30, 0.25, 0.20, 1.0};               ///< outline colour
+    bool hatched{false};                              ///< draw diagonal hatching (e.g. for time-windowed zones)
+};
+
+/// @brief A path drawn as a polyline through its waypoints.
+struct MapPath
+{
+    std::string label;                   ///< legend entry ("ZA*TVE raw", "smoothed", ...)
+    std::vector<TimedWaypoint> waypoints;  ///< positions and arrival times
+    Rgba colour{0.85, 0.10, 0.10, 1.0};  ///< line colour
+    double width{2.5};                   ///< line width in pixels
+    bool dashed{false};                  ///< dashed line
+    bool waypointMarkers{true};          ///< small circles at the waypoints
+    bool timeTicks{false};               ///< time ticks (and labels) along the path, see MapOptions::tickInterval
+};
+
+/// @brief Page and field-drawing options.
+struct MapOptions
+{
+    int width{1100};           ///< image width in pixels (the height follows from the region's aspect ratio)
+    int arrowColumns{26};      ///< current arrows across the region's width
+    double tickInterval{0.0};  ///< time between ticks along paths; <= 0: a round value giving about 10 ticks
+    std::string title;         ///< drawn above the map
+    std::string timeUnit;      ///< appended to times in labels ("s", "h", or empty for dimensionless fields)
+    bool speedShading{true};   ///< shade the background by current speed
+};
+
+/// @brief Renders a map of one planning problem. Coordinates are the field's (x east, y north); the map keeps
+/// the aspect ratio 1:1. Usage: set the region, the field (and the time at which it is drawn), add polygons and
+/// paths, set start and goal, then writeSvg() / writePng().
+class MapRenderer
+{
+public:
+    /// @throws Error when the region's x/y bounds are not finite or empty.
+    explicit MapRenderer(const Region &region, MapOptions options = {});
+
+    /// @brief Draw the field's current at time t (and depth) as arrows over a speed shading.
+    void setField(std::shared_ptr<const CurrentField> field, double time, double depth = 0.0);
+    /// @brief Add a forbidden region. @throws Error with fewer than 3 vertices or non-finite coordinates.
+    void addPolygon(MapPolygon polygon);
+    /// @brief Add a path (drawn in the order added, later paths on top). Paths with < 1 waypoint are ignored.
+    void addPath(MapPath path);
+    /// @brief Start and goal markers.
+    void setStartGoal(double sx, double sy, double gx, double gy);
+    /// @brief A free text line under the legend (e.g. "travel time 12.3").
+    void addNote(std::string note);
+
+    /// @brief Writes an SVG file. @throws Error when the file cannot be written.
+    void writeSvg(const std::string &filename) const;
+    /// @brief Writes a PNG file. @throws Error when the file cannot be written.
+    void writePng(const std::string &filename) const;
+
+    /// @brief Image size in pixels (width, height).
+    std::pair<int, int> size() const;
+
+    /// @brief Default styles for the usual path kinds.
+    static MapPath rawPathStyle(std::string label, std::vector<TimedWaypoint> waypoints);
+    static MapPath smoothedPathStyle(std::string label, std::vector<TimedWaypoint> waypoints);
+    static MapPath refinedPathStyle(std::string label, std::vector<TimedWaypoint> waypoints);
+
+private:
+    void draw(void *cairoContext) const;
+
+    Region region_;
+    MapOptions options_;
+    std::shared_ptr<const CurrentField> field_;
+    double fieldTime_{0.0};
+    double fieldDepth_{0.0};
+    std::vector<MapPolygon> polygons_;
+    std::vector<MapPath> paths_;
+    bool hasStartGoal_{false};
+    double sx_{0.0}, sy_{0.0}, gx_{0.0}, gy_{0.0};
+    std::vector<std::string> notes_;
+};
+}  // namespace ompl_glider

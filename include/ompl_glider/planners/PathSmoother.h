@@ -1,0 +1,88 @@
+#pragma once
+/// @file PathSmoother.h
+/// @brief Path smoothing in a time-varying field (000 Sec. 4, Table 3) and the path timing it relies on.
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <ompl/geometric/PathGeometric.h>
+
+#include "ompl_glider/ompl/GliderContext.h"
+#include "ompl_glider/planners/TveSearch.h"
+
+namespace ompl_glider
+{
+/// @brief Travel time of the straight leg (x1, y1) -> (x2, y2) leaving at tStart, with the environment check:
+/// TravelTimeCalculator::travelTime (one CFC), then +inf when ctx.environment forbids the leg at the times it is
+/// flown (Environment::legFree) or when the arrival lies after ctx.region.tMax.
+double legTravelTime(const GliderContext &ctx, double x1, double y1, double x2, double y2, double tStart);
+
+/// @brief The waypoints' positions with arrival times re-simulated from t0 (fastest pace on every leg):
+/// t[0] = t0, t[i] = t[i-1] + legTravelTime(i-1 -> i). Times are +inf from the first infeasible leg on.
+std::vector<TimedWaypoint> retimeWaypoints(const GliderContext &ctx, std::vector<TimedWaypoint> waypoints,
+                                           double t0);
+
+/// @brief Arrival time at the last waypoint re-simulated from t0 (+inf when a leg is infeasible; t0 for < 2 points).
+double arrivalTime(const GliderContext &ctx, const std::vector<TimedWaypoint> &waypoints, double t0);
+
+/// @brief Sum of the leg lengths.
+double pathLength(const std::vector<TimedWaypoint> &waypoints);
+
+/// @brief Waypoints (x, y, t) of a path on a TimeSE2StateSpace (see ompl/TimeSE2StateSpace.h).
+/// @throws Error when the path's space is not a TimeSE2StateSpace.
+std::vector<TimedWaypoint> waypointsFromPath(const ompl::geometric::PathGeometric &path);
+
+/// @brief Replaces the states of @p path (on a TimeSE2StateSpace) by the waypoints; each state's yaw is the
+/// direction of the leg that reaches it (the first state takes the first leg's direction).
+/// @throws Error when the path's space is not a TimeSE2StateSpace.
+void waypointsToPath(const std::vector<TimedWaypoint> &waypoints, ompl::geometric::PathGeometric &path);
+
+/// @brief What smoothing did.
+struct SmoothingResult
+{
+    std::vector<TimedWaypoint> waypoints;  ///< smoothed path, times re-simulated from t0
+    std::size_t waypointsBefore{0};        ///< waypoint count of the input (start and goal included)
+    std::size_t waypointsAfter{0};         ///< waypoint count of the result
+    double arrivalBefore{0.0};             ///< arrival at the goal of the input, re-simulated from t0
+    double arrivalAfter{0.0};              ///< arrival at the goal of the result (<= arrivalBefore)
+    unsigned passes{0};                    ///< passes of loop I of 000 Table 3
+    std::uint64_t costFunctionCalls{0};    ///< CFC spent by the smoothing
+};
+
+/// @brief SMOOTHING(WP, t0) of 000 Table 3 (also 001 Table II): merges consecutive legs of a waypoint path in the
+/// time-varying field. From the kept waypoint WP[i_start], the direct leg to WP[i_path] replaces the legs through
+/// WP[i_path - 1] when (III) it is feasible (finite travel time, legFree in ctx.environment), (IV) it arrives at
+/// WP[i_path] no later than the legs it replaces, and (V) the rest of the path, re-simulated from the new arrival
+/// time, reaches the goal no later than before. Otherwise WP[i_path - 1] is kept and merging restarts there (VI).
+/// Passes repeat until the waypoint count stops changing (I).
+///
+/// Guarantees: the first and last waypoints are kept; every leg of the result is feasible and free; the result
+/// never arrives later than the input (both re-simulated from t0 with the same travel-time code); a path with an
+/// infeasible leg is returned unchanged (re-timed). Usable on any planner's path (waypoint list or, through the
+/// PathGeometric overload, an OMPL path on a TimeSE2StateSpace).
+class PathSmoother
+{
+public:
+    /// @throws Error when ctx is null or lacks a field or travel-time calculator.
+    explicit PathSmoother(std::shared_ptr<const GliderContext> ctx);
+
+    /// @brief Smooths the waypoints (their input times are ignored) with departure at t0.
+    SmoothingResult smooth(const std::vector<TimedWaypoint> &waypoints, double t0) const;
+
+    /// @brief Smooths the waypoints with departure at ctx->t0.
+    SmoothingResult smooth(const std::vector<TimedWaypoint> &waypoints) const
+    {
+        return smooth(waypoints, ctx_->t0);
+    }
+
+    /// @brief Smooths an OMPL path on a TimeSE2StateSpace in place (departure at the first state's time). The path
+    /// is replaced only when the smoothed path arrives no later than the path's own last state time.
+    /// @return what smoothing did (result.waypoints is the path now held).
+    SmoothingResult smooth(ompl::geometric::PathGeometric &path) const;
+
+private:
+    std::shared_ptr<const GliderContext> ctx_;
+};
+}  // namespace ompl_glider

@@ -1,0 +1,610 @@
+#include "ompl_glider/mission/MapRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr double kLeft = 72, kRight = 270, kTop = 52, kBottom = 58;
+constexpr double kPi = 3.14159265358979323846;
+
+double niceStep(double raw)
+{
+    if (!(raw > 0.0) || !std::isfinite(raw))
+        return 1.0;
+    const double p = std::pow(10.0, std::floor(std::log10(raw)));
+    const double m = raw / p;
+    return p * (m <= 1.0 ? 1.0 : m <= 2.0 ? 2.0 : m <= 5.0 ? 5.0 : 10.0);
+}
+
+std::string fmt(double v, int prec = -1)
+{
+    char buf[64];
+    if (prec < 0)
+    {
+        const double a = std::abs(v);
+        prec = a == 0.0 || a >= 100 ? 0 : a >= 10 ? 1 : a >= 1 ? 2 : 3;
+        // Drop trailing decimals of round values.
+        if (std::abs(v - std::round(v)) < 1e-9 * std::max(1.0, a))
+            prec = 0;
+    }
+    std::snprintf(buf, sizeof buf, "%.*f", prec, v);
+    return buf;
+}
+
+void setColour(cairo_t *cr, const Rgba &c)
+{
+    cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
+}
+
+/// Text with a white halo so that it stays readable over lines and shading.
+void haloText(cairo_t *cr, double x, double y, const std::string &s, const Rgba &c, double size, bool bold = false,
+              double alignX = 0.0)
+{
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    cairo_text_extents_t ext;
+    cairo_text_extents(cr, s.c_str(), &ext);
+    const double x0 = x - alignX * ext.x_advance;
+    cairo_move_to(cr, x0, y);
+    cairo_text_path(cr, s.c_str());
+    cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
+    cairo_set_line_width(cr, 3.0);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_stroke(cr);
+    cairo_move_to(cr, x0, y);
+    setColour(cr, c);
+    cairo_show_text(cr, s.c_str());
+}
+
+void plainText(cairo_t *cr, double x, double y, const std::string &s, double size, bool bold = false,
+               double alignX = 0.0, Rgba c = {0.1, 0.1, 0.1, 1.0})
+{
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    cairo_text_extents_t ext;
+    cairo_text_extents(cr, s.c_str(), &ext);
+    cairo_move_to(cr, x - alignX * ext.x_advance, y);
+    setColour(cr, c);
+    cairo_show_text(cr, s.c_str());
+}
+
+Rgba speedColour(double f)
+{
+    f = std::clamp(f, 0.0, 1.0);
+    // very light blue -> medium blue
+    const Rgba lo{0.97, 0.98, 1.00, 1.0}, hi{0.42, 0.62, 0.88, 1.0};
+    return {lo.r + f * (hi.r - lo.r), lo.g + f * (hi.g - lo.g), lo.b + f * (hi.b - lo.b), 1.0};
+}
+
+void arrow(cairo_t *cr, double x, double y, double dx, double dy, double head)
+{
+    const double len = std::hypot(dx, dy);
+    if (len < 1e-9)
+        return;
+    const double ux = dx / len, uy = dy / len;
+    const double x2 = x + dx, y2 = y + dy;
+    cairo_move_to(cr, x, y);
+    cairo_line_to(cr, x2 - ux * head * 0.6, y2 - uy * head * 0.6);
+    cairo_stroke(cr);
+    cairo_move_to(cr, x2, y2);
+    cairo_line_to(cr, x2 - ux * head - uy * head * 0.45, y2 - uy * head + ux * head * 0.45);
+    cairo_line_to(cr, x2 - ux * head + uy * head * 0.45, y2 - uy * head - ux * head * 0.45);
+    cairo_close_path(cr);
+    cairo_fill(cr);
+}
+}  // namespace
+
+MapRenderer::MapRenderer(const Region &region, MapOptions options) : region_(region), options_(std::move(options))
+{
+    if (!std::isfinite(region_.xMin) || !std::isfinite(region_.xMax) || !std::isfinite(region_.yMin) ||
+        !std::isfinite(region_.yMax) || !(region_.xMax > region_.xMin) || !(region_.yMax > region_.yMin))
+        throw Error("MapRenderer: the region's x/y bounds must be finite with xMin < xMax and yMin < yMax");
+    if (options_.width < 400)
+        throw Error("MapRenderer: width must be >= 400 pixels (got " + std::to_string(options_.width) + ")");
+    if (options_.arrowColumns < 2)
+        options_.arrowColumns = 2;
+}
+
+void MapRenderer::setField(std::shared_ptr<const CurrentField> field, double time, double depth)
+{
+    field_ = std::move(field);
+    fieldTime_ = time;
+    fieldDepth_ = depth;
+}
+
+void MapRenderer::addPolygon(MapPolygon polygon)
+{
+    if (polygon.vertices.size() < 3)
+        throw Error("MapRenderer::addPolygon: polygon '" + polygon.label + "' needs at least 3 vertices (got " +
+                    std::to_string(polygon.vertices.size()) + ")");
+    for (const auto &v : polygon.vertices)
+        if (!std::isfinite(v.first) || !std::isfinite(v.second))
+            throw Error("MapRenderer::addPolygon: polygon '" + polygon.label + "' has a non-finite vertex");
+    polygons_.push_back(std::move(polygon));
+}
+
+void MapRenderer::addPath(MapPath path)
+{
+    if (!path.waypoints.empty())
+        paths_.push_back(std::move(path));
+}
+
+void MapRenderer::setStartGoal(double sx, double sy, double gx, double gy)
+{
+    hasStartGoal_ = true;
+    sx_ = sx;
+    sy_ = sy;
+    gx_ = gx;
+    gy_ = gy;
+}
+
+void MapRenderer::addNote(std::string note)
+{
+    notes_.push_back(std::move(note));
+}
+
+std::pair<int, int> MapRenderer::size() const
+{
+    const double plotW = options_.width - kLeft - kRight;
+    const double scale = plotW / (region_.xMax - region_.xMin);
+    const double plotH = scale * (region_.yMax - region_.yMin);
+    const int h = static_cast<int>(std::ceil(std::max(kTop + plotH + kBottom, 560.0)));
+    return {options_.width, h};
+}
+
+MapPath MapRenderer::rawPathStyle(std::string label, std::vector<TimedWaypoint> waypoints)
+{
+    MapPath p;
+    p.label = std::move(label);
+    p.waypoints = std::move(waypoints);
+    p.colour = {0.35, 0.35, 0.35, 0.9};
+    p.width = 1.4;
+    p.dashed = true;
+    p.waypointMarkers = true;
+    return p;
+}
+
+MapPath MapRenderer::smoothedPathStyle(std::string label, std::vector<TimedWaypoint> waypoints)
+{
+    MapPath p;
+    p.label = std::move(label);
+    p.waypoints = std::move(waypoints);
+    p.colour = {0.95, 0.55, 0.0, 1.0};
+    p.width = 2.2;
+    p.waypointMarkers = true;
+    return p;
+}
+
+MapPath MapRenderer::refinedPathStyle(std::string label, std::vector<TimedWaypoint> waypoints)
+{
+    MapPath p;
+    p.label = std::move(label);
+    p.waypoints = std::move(waypoints);
+    p.colour = {0.85, 0.05, 0.10, 1.0};
+    p.width = 3.0;
+    p.waypointMarkers = true;
+    p.timeTicks = true;
+    return p;
+}
+
+void MapRenderer::draw(void *context) const
+{
+    auto *cr = static_cast<cairo_t *>(context);
+    const auto [W, H] = size();
+    const double plotW = W - kLeft - kRight;
+    const double scale = plotW / (region_.xMax - region_.xMin);
+    const double plotH = scale * (region_.yMax - region_.yMin);
+    auto X = [&](double x) { return kLeft + (x - region_.xMin) * scale; };
+    auto Y = [&](double y) { return kTop + (region_.yMax - y) * scale; };
+    const std::string tu = options_.timeUnit.empty() ? "" : " " + options_.timeUnit;
+
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+
+    // --- field: speed shading and arrows, clipped to the plot area
+    cairo_save(cr);
+    cairo_rectangle(cr, kLeft, kTop, plotW, plotH);
+    cairo_clip(cr);
+    double vmax = 0.0;
+    if (field_)
+    {
+        const int cell = 6;
+        const int nx = static_cast<int>(std::ceil(plotW / cell)), ny = static_cast<int>(std::ceil(plotH / cell));
+        std::vector<double> sp(static_cast<std::size_t>(nx) * ny, 0.0);
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i)
+            {
+                const double x = region_.xMin + (i + 0.5) * cell / scale, y = region_.yMax - (j + 0.5) * cell / scale;
+                double s = 0.0;
+                if (field_->inWater(x, y, fieldDepth_))
+                {
+                    const Velocity c = field_->velocity(x, y, fieldDepth_, fieldTime_);
+                    s = std::hypot(c.u, c.v);
+                    if (!std::isfinite(s))
+                        s = 0.0;
+                }
+                else
+                    s = -1.0;  // land
+                sp[static_cast<std::size_t>(j) * nx + i] = s;
+                vmax = std::max(vmax, s);
+            }
+        if (options_.speedShading)
+            for (int j = 0; j < ny; ++j)
+                for (int i = 0; i < nx; ++i)
+                {
+                    const double s = sp[static_cast<std::size_t>(j) * nx + i];
+                    setColour(cr, s < 0 ? Rgba{0.80, 0.76, 0.68, 1.0} : speedColour(vmax > 0 ? s / vmax : 0.0));
+                    cairo_rectangle(cr, kLeft + i * cell, kTop + j * cell, cell + 0.5, cell + 0.5);
+                    cairo_fill(cr);
+                }
+        const int cols = options_.arrowColumns;
+        const double dxCell = (region_.xMax - region_.xMin) / cols;
+        const int rows = std::max(2, static_cast<int>(std::round((region_.yMax - region_.yMin) / dxCell)));
+        const double dyCell = (region_.yMax - region_.yMin) / rows;
+        const double cellPx = std::min(dxCell, dyCell) * scale;
+        cairo_set_source_rgba(cr, 0.10, 0.20, 0.40, 0.75);
+        cairo_set_line_width(cr, 1.1);
+        for (int j = 0; j < rows; ++j)
+            for (int i = 0; i < cols; ++i)
+            {
+                const double x = region_.xMin + (i + 0.5) * dxCell, y = region_.yMin + (j + 0.5) * dyCell;
+                if (!field_->inWater(x, y, fieldDepth_))
+                    continue;
+                const Velocity c = field_->velocity(x, y, fieldDepth_, fieldTime_);
+                const double s = std::hypot(c.u, c.v);
+                if (!(s > 0.0) || !std::isfinite(s) || !(vmax > 0))
+                    continue;
+                const double len = 0.9 * cellPx * s / vmax;
+                if (len < 2.0)
+                    continue;
+                const double cx = X(x) - 0.5 * len * c.u / s, cy = Y(y) + 0.5 * len * c.v / s;
+                arrow(cr, cx, cy, len * c.u / s, -len * c.v / s, std::min(6.0, 0.35 * len + 2.0));
+            }
+    }
+    // light grid
+    const double xs = niceStep((region_.xMax - region_.xMin) / 8), ys = niceStep((region_.yMax - region_.yMin) / 8);
+    cairo_set_source_rgba(cr, 0.3, 0.3, 0.3, 0.18);
+    cairo_set_line_width(cr, 0.8);
+    for (double x = std::ceil(region_.xMin / xs) * xs; x <= region_.xMax + 1e-9; x += xs)
+    {
+        cairo_move_to(cr, X(x), kTop);
+        cairo_line_to(cr, X(x), kTop + plotH);
+    }
+    for (double y = std::ceil(region_.yMin / ys) * ys; y <= region_.yMax + 1e-9; y += ys)
+    {
+        cairo_move_to(cr, kLeft, Y(y));
+        cairo_line_to(cr, kLeft + plotW, Y(y));
+    }
+    cairo_stroke(cr);
+
+    // --- forbidden regions
+    for (const MapPolygon &poly : polygons_)
+    {
+        cairo_new_path(cr);
+        for (std::size_t k = 0; k < poly.vertices.size(); ++k)
+        {
+            const double px = X(poly.vertices[k].first), py = Y(poly.vertices[k].second);
+            k == 0 ? cairo_move_to(cr, px, py) : cairo_line_to(cr, px, py);
+        }
+        cairo_close_path(cr);
+        setColour(cr, poly.fill);
+        cairo_fill_preserve(cr);
+        if (poly.hatched)
+        {
+            cairo_save(cr);
+            cairo_clip_preserve(cr);
+            cairo_set_source_rgba(cr, poly.stroke.r, poly.stroke.g, poly.stroke.b, 0.6);
+            cairo_set_line_width(cr, 1.0);
+            for (double d = -H; d < W + H; d += 9)
+            {
+                cairo_move_to(cr, d, 0);
+                cairo_line_to(cr, d + H, H);
+            }
+            cairo_stroke(cr);
+            cairo_restore(cr);
+            // restore the polygon outline path for the stroke below
+            cairo_new_path(cr);
+            for (std::size_t k = 0; k < poly.vertices.size(); ++k)
+            {
+                const double px = X(poly.vertices[k].first), py = Y(poly.vertices[k].second);
+                k == 0 ? cairo_move_to(cr, px, py) : cairo_line_to(cr, px, py);
+            }
+            cairo_close_path(cr);
+        }
+        setColour(cr, poly.stroke);
+        cairo_set_line_width(cr, 1.5);
+        cairo_stroke(cr);
+        if (!poly.label.empty())
+        {
+            double cx = 0, cy = 0;
+            for (const auto &v : poly.vertices)
+            {
+                cx += v.first;
+                cy += v.second;
+            }
+            cx /= poly.vertices.size();
+            cy /= poly.vertices.size();
+            haloText(cr, X(cx), Y(cy) + 4, poly.label, poly.stroke, 12, true, 0.5);
+        }
+    }
+
+    // --- paths
+    for (const MapPath &p : paths_)
+    {
+        cairo_new_path(cr);
+        for (std::size_t k = 0; k < p.waypoints.size(); ++k)
+        {
+            const double px = X(p.waypoints[k].x), py = Y(p.waypoints[k].y);
+            k == 0 ? cairo_move_to(cr, px, py) : cairo_line_to(cr, px, py);
+        }
+        // white casing keeps the line visible over arrows
+        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+        cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+        if (!p.dashed)
+        {
+            cairo_set_source_rgba(cr, 1, 1, 1, 0.8);
+            cairo_set_line_width(cr, p.width + 2.5);
+            cairo_stroke_preserve(cr);
+        }
+        setColour(cr, p.colour);
+        cairo_set_line_width(cr, p.width);
+        if (p.dashed)
+        {
+            const double dash[] = {6.0, 4.0};
+            cairo_set_dash(cr, dash, 2, 0);
+        }
+        cairo_stroke(cr);
+        cairo_set_dash(cr, nullptr, 0, 0);
+        if (p.waypointMarkers)
+            for (const TimedWaypoint &w : p.waypoints)
+            {
+                cairo_arc(cr, X(w.x), Y(w.y), p.width + 1.2, 0, 2 * kPi);
+                cairo_set_source_rgb(cr, 1, 1, 1);
+                cairo_fill_preserve(cr);
+                setColour(cr, p.colour);
+                cairo_set_line_width(cr, 1.3);
+                cairo_stroke(cr);
+            }
+        if (p.timeTicks && p.waypoints.size() >= 2 && std::isfinite(p.waypoints.back().t))
+        {
+            const double tA = p.waypoints.front().t, tB = p.waypoints.back().t;
+            const double step = options_.tickInterval > 0 ? options_.tickInterval : niceStep((tB - tA) / 10);
+            std::size_t leg = 1;
+            for (double T = (std::floor(tA / step) + 1) * step; T < tB - 1e-9 * step; T += step)
+            {
+                while (leg + 1 < p.waypoints.size() && p.waypoints[leg].t < T)
+                    ++leg;
+                const TimedWaypoint &a = p.waypoints[leg - 1], &b = p.waypoints[leg];
+                const double f = b.t > a.t ? std::clamp((T - a.t) / (b.t - a.t), 0.0, 1.0) : 0.0;
+                const double x = X(a.x + f * (b.x - a.x)), y = Y(a.y + f * (b.y - a.y));
+                double nx = -(Y(b.y) - Y(a.y)), ny = X(b.x) - X(a.x);
+                const double nl = std::hypot(nx, ny);
+                if (nl > 0)
+                {
+                    nx /= nl;
+                    ny /= nl;
+                }
+                setColour(cr, p.colour);
+                cairo_set_line_width(cr, 2.0);
+                cairo_move_to(cr, x - 7 * nx, y - 7 * ny);
+                cairo_line_to(cr, x + 7 * nx, y + 7 * ny);
+                cairo_stroke(cr);
+                // label on the side that points up/left, away from the track
+                const double side = ny > 0 ? -1.0 : 1.0;
+                haloText(cr, x + side * 16 * nx, y + side * 16 * ny + 4, "t=" + fmt(T) + tu, {0.1, 0.1, 0.1, 1}, 11,
+                         false, 0.5);
+            }
+        }
+    }
+
+    // --- start and goal
+    if (hasStartGoal_)
+    {
+        cairo_arc(cr, X(sx_), Y(sy_), 8, 0, 2 * kPi);
+        cairo_set_source_rgb(cr, 0.05, 0.60, 0.15);
+        cairo_fill_preserve(cr);
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_set_line_width(cr, 2);
+        cairo_stroke(cr);
+        haloText(cr, X(sx_) + 11, Y(sy_) - 9, "START", {0.05, 0.45, 0.1, 1}, 13, true);
+        const double gxp = X(gx_), gyp = Y(gy_);
+        cairo_new_path(cr);
+        for (int k = 0; k < 10; ++k)
+        {
+            const double r = k % 2 ? 4.5 : 11.0, a = -kPi / 2 + k * kPi / 5;
+            k == 0 ? cairo_move_to(cr, gxp + r * std::cos(a), gyp + r * std::sin(a))
+                   : cairo_line_to(cr, gxp + r * std::cos(a), gyp + r * std::sin(a));
+        }
+        cairo_close_path(cr);
+        cairo_set_source_rgb(cr, 0.55, 0.0, 0.55);
+        cairo_fill_preserve(cr);
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_set_line_width(cr, 1.5);
+        cairo_stroke(cr);
+        haloText(cr, gxp + 12, gyp - 10, "GOAL", {0.45, 0.0, 0.45, 1}, 13, true);
+    }
+    cairo_restore(cr);
+
+    // --- frame, axes, ticks
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    cairo_set_line_width(cr, 1.2);
+    cairo_rectangle(cr, kLeft, kTop, plotW, plotH);
+    cairo_stroke(cr);
+    for (double x = std::ceil(region_.xMin / xs) * xs; x <= region_.xMax + 1e-9; x += xs)
+    {
+        cairo_move_to(cr, X(x), kTop + plotH);
+        cairo_line_to(cr, X(x), kTop + plotH + 5);
+        cairo_stroke(cr);
+        plainText(cr, X(x), kTop + plotH + 19, fmt(std::abs(x) < 1e-12 ? 0.0 : x), 12, false, 0.5);
+    }
+    for (double y = std::ceil(region_.yMin / ys) * ys; y <= region_.yMax + 1e-9; y += ys)
+    {
+        cairo_move_to(cr, kLeft - 5, Y(y));
+        cairo_line_to(cr, kLeft, Y(y));
+        cairo_stroke(cr);
+        plainText(cr, kLeft - 8, Y(y) + 4, fmt(std::abs(y) < 1e-12 ? 0.0 : y), 12, false, 1.0);
+    }
+    plainText(cr, kLeft + plotW / 2, kTop + plotH + 42, "x (east)", 13, true, 0.5);
+    cairo_save(cr);
+    cairo_move_to(cr, 0, 0);
+    cairo_translate(cr, 22, kTop + plotH / 2);
+    cairo_rotate(cr, -kPi / 2);
+    plainText(cr, 0, 0, "y (north)", 13, true, 0.5);
+    cairo_restore(cr);
+    if (!options_.title.empty())
+        plainText(cr, kLeft, 32, options_.title, 17, true);
+
+    // --- legend
+    double lx = kLeft + plotW + 22, ly = kTop + 8;
+    plainText(cr, lx, ly + 6, "Legend", 14, true);
+    ly += 26;
+    for (const MapPath &p : paths_)
+    {
+        setColour(cr, p.colour);
+        cairo_set_line_width(cr, p.width);
+        if (p.dashed)
+        {
+            const double dash[] = {6.0, 4.0};
+            cairo_set_dash(cr, dash, 2, 0);
+        }
+        cairo_move_to(cr, lx, ly);
+        cairo_line_to(cr, lx + 30, ly);
+        cairo_stroke(cr);
+        cairo_set_dash(cr, nullptr, 0, 0);
+        if (p.waypointMarkers)
+        {
+            cairo_arc(cr, lx + 15, ly, p.width + 1.2, 0, 2 * kPi);
+            cairo_set_source_rgb(cr, 1, 1, 1);
+            cairo_fill_preserve(cr);
+            setColour(cr, p.colour);
+            cairo_set_line_width(cr, 1.3);
+            cairo_stroke(cr);
+        }
+        plainText(cr, lx + 38, ly + 4, p.label, 12);
+        ly += 22;
+    }
+    if (hasStartGoal_)
+    {
+        cairo_arc(cr, lx + 15, ly, 6, 0, 2 * kPi);
+        cairo_set_source_rgb(cr, 0.05, 0.60, 0.15);
+        cairo_fill(cr);
+        plainText(cr, lx + 38, ly + 4, "start (" + fmt(sx_) + ", " + fmt(sy_) + ")", 12);
+        ly += 22;
+        cairo_new_path(cr);
+        for (int k = 0; k < 10; ++k)
+        {
+            const double r = k % 2 ? 3.5 : 8.0, a = -kPi / 2 + k * kPi / 5;
+            k == 0 ? cairo_move_to(cr, lx + 15 + r * std::cos(a), ly + r * std::sin(a))
+                   : cairo_line_to(cr, lx + 15 + r * std::cos(a), ly + r * std::sin(a));
+        }
+        cairo_close_path(cr);
+        cairo_set_source_rgb(cr, 0.55, 0.0, 0.55);
+        cairo_fill(cr);
+        plainText(cr, lx + 38, ly + 4, "goal (" + fmt(gx_) + ", " + fmt(gy_) + ")", 12);
+        ly += 22;
+    }
+    std::set<std::string> seen;
+    for (const MapPolygon &poly : polygons_)
+    {
+        if (!seen.insert(poly.label).second)
+            continue;
+        cairo_rectangle(cr, lx + 5, ly - 7, 20, 14);
+        setColour(cr, poly.fill);
+        cairo_fill_preserve(cr);
+        setColour(cr, poly.stroke);
+        cairo_set_line_width(cr, 1.2);
+        cairo_stroke(cr);
+        plainText(cr, lx + 38, ly + 4, poly.label.empty() ? "forbidden region" : poly.label, 12);
+        ly += 22;
+    }
+    if (field_)
+    {
+        cairo_set_source_rgba(cr, 0.10, 0.20, 0.40, 0.9);
+        cairo_set_line_width(cr, 1.1);
+        arrow(cr, lx + 2, ly, 26, 0, 6);
+        plainText(cr, lx + 38, ly + 4, "current at t=" + fmt(fieldTime_) + tu, 12);
+        ly += 20;
+        plainText(cr, lx + 38, ly + 4, "(" + field_->name() + ")", 11, false, 0.0, {0.3, 0.3, 0.3, 1});
+        ly += 22;
+        if (options_.speedShading && vmax > 0)
+        {
+            plainText(cr, lx, ly + 4, "current speed", 12);
+            ly += 12;
+            const double bw = 150, bh = 12;
+            for (int k = 0; k < 60; ++k)
+            {
+                setColour(cr, speedColour(k / 59.0));
+                cairo_rectangle(cr, lx + k * bw / 60, ly, bw / 60 + 0.5, bh);
+                cairo_fill(cr);
+            }
+            cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+            cairo_set_line_width(cr, 0.8);
+            cairo_rectangle(cr, lx, ly, bw, bh);
+            cairo_stroke(cr);
+            plainText(cr, lx, ly + bh + 13, "0", 11, false, 0.5);
+            plainText(cr, lx + bw, ly + bh + 13, fmt(vmax), 11, false, 0.5);
+            ly += bh + 30;
+        }
+    }
+    bool tickNote = false;
+    for (const MapPath &p : paths_)
+        tickNote = tickNote || p.timeTicks;
+    if (tickNote)
+    {
+        plainText(cr, lx, ly + 4, "ticks: time along the path", 11, false, 0.0, {0.3, 0.3, 0.3, 1});
+        ly += 20;
+    }
+    ly += 6;
+    for (const std::string &n : notes_)
+    {
+        plainText(cr, lx, ly + 4, n, 12);
+        ly += 18;
+    }
+}
+
+void MapRenderer::writeSvg(const std::string &filename) const
+{
+    const auto [W, H] = size();
+    cairo_surface_t *surf = cairo_svg_surface_create(filename.c_str(), W, H);
+    if (cairo_surface_status(surf) != CAIRO_STATUS_SUCCESS)
+    {
+        const std::string msg = cairo_status_to_string(cairo_surface_status(surf));
+        cairo_surface_destroy(surf);
+        throw Error("MapRenderer::writeSvg: cannot create '" + filename + "': " + msg);
+    }
+    cairo_t *cr = cairo_create(surf);
+    draw(cr);
+    cairo_destroy(cr);
+    cairo_surface_finish(surf);
+    const cairo_status_t st = cairo_surface_status(surf);
+    cairo_surface_destroy(surf);
+    if (st != CAIRO_STATUS_SUCCESS)
+        throw Error("MapRenderer::writeSvg: cannot write '" + filename + "': " + cairo_status_to_string(st));
+}
+
+void MapRenderer::writePng(const std::string &filename) const
+{
+    const auto [W, H] = size();
+    cairo_surface_t *surf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, W, H);
+    cairo_t *cr = cairo_create(surf);
+    draw(cr);
+    cairo_destroy(cr);
+    cairo_surface_flush(surf);
+    const cairo_status_t st = cairo_surface_write_to_png(surf, filename.c_str());
+    cairo_surface_destroy(surf);
+    if (st != CAIRO_STATUS_SUCCESS)
+        throw Error("MapRenderer::writePng: cannot write '" + filename + "': " + cairo_status_to_string(st));
+}
+}  // namespace ompl_glider

@@ -1,0 +1,196 @@
+#include "ompl_glider/planners/PathSmoother.h"
+
+#include <cmath>
+#include <limits>
+
+#include <ompl/base/SpaceInformation.h>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/ompl/TimeSE2StateSpace.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+const TimeSE2StateSpace &timeSpace(const ompl::geometric::PathGeometric &path, const char *who)
+{
+    const auto *space = dynamic_cast<const TimeSE2StateSpace *>(path.getSpaceInformation()->getStateSpace().get());
+    if (!space)
+        throw Error(std::string(who) + ": the path's state space is not an ompl_glider::TimeSE2StateSpace");
+    return *space;
+}
+}  // namespace
+
+double legTravelTime(const GliderContext &ctx, double x1, double y1, double x2, double y2, double tStart)
+{
+    const double tt = ctx.travel->travelTime(x1, y1, x2, y2, tStart);
+    if (!std::isfinite(tt))
+        return kInf;
+    if (tStart + tt > ctx.region.tMax)
+        return kInf;
+    if (ctx.environment && !ctx.environment->legFree(x1, y1, tStart, x2, y2, tStart + tt))
+        return kInf;
+    return tt;
+}
+
+std::vector<TimedWaypoint> retimeWaypoints(const GliderContext &ctx, std::vector<TimedWaypoint> waypoints, double t0)
+{
+    if (waypoints.empty())
+        return waypoints;
+    waypoints[0].t = t0;
+    for (std::size_t i = 1; i < waypoints.size(); ++i)
+    {
+        const double tPrev = waypoints[i - 1].t;
+        waypoints[i].t = std::isfinite(tPrev) ?
+                             tPrev + legTravelTime(ctx, waypoints[i - 1].x, waypoints[i - 1].y, waypoints[i].x,
+                                                   waypoints[i].y, tPrev) :
+                             kInf;
+    }
+    return waypoints;
+}
+
+double arrivalTime(const GliderContext &ctx, const std::vector<TimedWaypoint> &waypoints, double t0)
+{
+    double t = t0;
+    for (std::size_t i = 1; i < waypoints.size() && std::isfinite(t); ++i)
+        t += legTravelTime(ctx, waypoints[i - 1].x, waypoints[i - 1].y, waypoints[i].x, waypoints[i].y, t);
+    return t;
+}
+
+double pathLength(const std::vector<TimedWaypoint> &waypoints)
+{
+    double len = 0.0;
+    for (std::size_t i = 1; i < waypoints.size(); ++i)
+        len += std::hypot(waypoints[i].x - waypoints[i - 1].x, waypoints[i].y - waypoints[i - 1].y);
+    return len;
+}
+
+std::vector<TimedWaypoint> waypointsFromPath(const ompl::geometric::PathGeometric &path)
+{
+    timeSpace(path, "waypointsFromPath");
+    std::vector<TimedWaypoint> out;
+    out.reserve(path.getStateCount());
+    for (std::size_t i = 0; i < path.getStateCount(); ++i)
+    {
+        const auto *s = path.getState(i)->as<TimeSE2StateSpace::StateType>();
+        out.push_back({s->getX(), s->getY(), s->getTime()});
+    }
+    return out;
+}
+
+void waypointsToPath(const std::vector<TimedWaypoint> &waypoints, ompl::geometric::PathGeometric &path)
+{
+    const TimeSE2StateSpace &space = timeSpace(path, "waypointsToPath");
+    const auto &si = path.getSpaceInformation();
+    path.clear();
+    ompl::base::State *st = si->allocState();
+    auto *s = st->as<TimeSE2StateSpace::StateType>();
+    for (std::size_t i = 0; i < waypoints.size(); ++i)
+    {
+        const std::size_t a = i == 0 ? 0 : i - 1, b = i == 0 ? std::min<std::size_t>(1, waypoints.size() - 1) : i;
+        const double dx = waypoints[b].x - waypoints[a].x, dy = waypoints[b].y - waypoints[a].y;
+        s->setXYT(waypoints[i].x, waypoints[i].y, waypoints[i].t);
+        s->setYaw(dx == 0.0 && dy == 0.0 ? 0.0 : std::atan2(dy, dx));
+        space.enforceBounds(st);
+        // enforceBounds may only wrap the yaw: positions and times are kept as given.
+        s->setXYT(waypoints[i].x, waypoints[i].y, waypoints[i].t);
+        path.append(st);
+    }
+    si->freeState(st);
+}
+
+PathSmoother::PathSmoother(std::shared_ptr<const GliderContext> ctx) : ctx_(std::move(ctx))
+{
+    if (!ctx_ || !ctx_->field || !ctx_->travel)
+        throw Error("PathSmoother: the GliderContext must be non-null with a field and a travel-time calculator");
+}
+
+SmoothingResult PathSmoother::smooth(const std::vector<TimedWaypoint> &input, double t0) const
+{
+    const GliderContext &ctx = *ctx_;
+    const std::uint64_t cfc0 = ctx.travel->costFunctionCalls();
+    SmoothingResult res;
+    res.waypointsBefore = input.size();
+    std::vector<TimedWaypoint> wp = retimeWaypoints(ctx, input, t0);
+    res.arrivalBefore = wp.empty() ? t0 : wp.back().t;
+    double best = res.arrivalBefore;  // arrival at the goal of the current candidate path (TT[end])
+    if (wp.size() > 2 && std::isfinite(best))
+    {
+        auto leg = [&](const TimedWaypoint &a, const TimedWaypoint &b, double t) {
+            return legTravelTime(ctx, a.x, a.y, b.x, b.y, t);
+        };
+        while (wp.size() > 2)  // loop I
+        {
+            ++res.passes;
+            const std::size_t n = wp.size();
+            std::vector<TimedWaypoint> out{wp[0]};
+            std::size_t iStart = 0;
+            double t1 = wp[1].t - wp[0].t;  // time from WP[i_start] to WP[i_path - 1] along the candidate path
+            for (std::size_t iPath = 2; iPath < n; ++iPath)  // loop II
+            {
+                const double tS = wp[iStart].t;
+                const double t2 = leg(wp[iPath - 1], wp[iPath], tS + t1);
+                const double tSum = leg(wp[iStart], wp[iPath], tS);  // III
+                bool merge = std::isfinite(tSum) && !(t1 + t2 < tSum);  // III, IV
+                if (merge)
+                {
+                    // V: the rest of the path from the merged arrival must reach the goal no later.
+                    double tEnd = tS + tSum;
+                    for (std::size_t k = iPath + 1; k < n && std::isfinite(tEnd); ++k)
+                        tEnd += leg(wp[k - 1], wp[k], tEnd);
+                    if (tEnd <= best)
+                        best = tEnd;
+                    else
+                        merge = false;
+                }
+                if (merge)
+                {
+                    t1 = tSum;
+                    wp[iPath].t = tS + tSum;
+                }
+                else
+                {
+                    wp[iPath - 1].t = tS + t1;  // VI: keep WP[i_path - 1], merging restarts there
+                    wp[iPath].t = tS + t1 + t2;
+                    iStart = iPath - 1;
+                    t1 = t2;
+                    out.push_back(wp[iStart]);
+                }
+            }
+            out.push_back(wp[n - 1]);
+            out = retimeWaypoints(ctx, out, t0);
+            const bool changed = out.size() != wp.size();
+            // Guard (cannot trigger unless the travel-time code is non-deterministic): never accept a later path.
+            if (!(out.back().t <= res.arrivalBefore))
+                break;
+            wp = std::move(out);
+            if (!changed)
+                break;
+        }
+    }
+    res.waypoints = std::move(wp);
+    res.waypointsAfter = res.waypoints.size();
+    res.arrivalAfter = res.waypoints.empty() ? t0 : res.waypoints.back().t;
+    res.costFunctionCalls = ctx.travel->costFunctionCalls() - cfc0;
+    return res;
+}
+
+SmoothingResult PathSmoother::smooth(ompl::geometric::PathGeometric &path) const
+{
+    const std::vector<TimedWaypoint> in = waypointsFromPath(path);
+    if (in.empty())
+        return {};
+    SmoothingResult res = smooth(in, in.front().t);
+    if (res.arrivalAfter <= in.back().t && std::isfinite(res.arrivalAfter))
+        waypointsToPath(res.waypoints, path);
+    else
+    {
+        res.waypoints = in;
+        res.waypointsAfter = in.size();
+        res.arrivalAfter = in.back().t;
+    }
+    return res;
+}
+}  // namespace ompl_glider

@@ -1,0 +1,214 @@
+#include "ompl_glider/planners/WaypointRefiner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// Search state shared by the phases of one refinement.
+struct Search
+{
+    const GliderContext &ctx;
+    double t0;
+    unsigned budget;
+    unsigned evaluations{0};
+    unsigned accepted{0};
+
+    bool exhausted() const
+    {
+        return evaluations >= budget;
+    }
+
+    double cost(const std::vector<TimedWaypoint> &wp)
+    {
+        ++evaluations;
+        return arrivalTime(ctx, wp, t0);
+    }
+
+    bool inBounds(double x, double y) const
+    {
+        const Region &r = ctx.region;
+        return x >= r.xMin && x <= r.xMax && y >= r.yMin && y <= r.yMax;
+    }
+
+    /// Compass search on the interior waypoints; wp and best are updated in place.
+    void pattern(std::vector<TimedWaypoint> &wp, double &best, double s0, double sMin)
+    {
+        const std::size_t n = wp.size();
+        if (n < 3)
+            return;
+        std::vector<double> step(n, s0);
+        const double sMax = 4.0 * s0;
+        while (!exhausted())
+        {
+            bool active = false;
+            for (std::size_t i = 1; i + 1 < n && !exhausted(); ++i)
+            {
+                if (step[i] < sMin)
+                    continue;
+                active = true;
+                // Local frame: along the chord of the neighbours and across it.
+                double tx = wp[i + 1].x - wp[i - 1].x, ty = wp[i + 1].y - wp[i - 1].y;
+                const double tl = std::hypot(tx, ty);
+                if (tl > 0.0)
+                {
+                    tx /= tl;
+                    ty /= tl;
+                }
+                else
+                {
+                    tx = 1.0;
+                    ty = 0.0;
+                }
+                const double dirs[4][2] = {{-ty, tx}, {ty, -tx}, {tx, ty}, {-tx, -ty}};
+                bool improved = false;
+                for (const auto &d : dirs)
+                {
+                    const double nx = wp[i].x + step[i] * d[0], ny = wp[i].y + step[i] * d[1];
+                    if (!inBounds(nx, ny))
+                        continue;
+                    const TimedWaypoint keep = wp[i];
+                    wp[i].x = nx;
+                    wp[i].y = ny;
+                    const double c = cost(wp);
+                    if (c < best)
+                    {
+                        best = c;
+                        improved = true;
+                        ++accepted;
+                        break;
+                    }
+                    wp[i] = keep;
+                    if (exhausted())
+                        break;
+                }
+                step[i] = improved ? std::min(sMax, 2.0 * step[i]) : 0.5 * step[i];
+            }
+            if (!active)
+                break;
+        }
+    }
+
+    /// Drops interior waypoints whose removal does not make the arrival later.
+    void dropRedundant(std::vector<TimedWaypoint> &wp, double &best)
+    {
+        for (std::size_t i = 1; i + 1 < wp.size() && !exhausted();)
+        {
+            std::vector<TimedWaypoint> cand = wp;
+            cand.erase(cand.begin() + static_cast<std::ptrdiff_t>(i));
+            const double c = cost(cand);
+            if (c <= best)
+            {
+                best = c;
+                wp = std::move(cand);
+                ++accepted;
+            }
+            else
+                ++i;
+        }
+    }
+};
+
+double meanLeg(const std::vector<TimedWaypoint> &wp)
+{
+    return wp.size() > 1 ? pathLength(wp) / static_cast<double>(wp.size() - 1) : 0.0;
+}
+}  // namespace
+
+WaypointRefiner::WaypointRefiner(std::shared_ptr<const GliderContext> ctx, RefinerParams params)
+  : ctx_(std::move(ctx)), params_(params)
+{
+    if (!ctx_ || !ctx_->field || !ctx_->travel)
+        throw Error("WaypointRefiner: the GliderContext must be non-null with a field and a travel-time calculator");
+    if (params_.maxEvaluations == 0)
+        throw Error("WaypointRefiner: maxEvaluations must be > 0");
+    if (!std::isfinite(params_.initialStep) || !std::isfinite(params_.minStep))
+        throw Error("WaypointRefiner: initialStep and minStep must be finite");
+    if (!(params_.minRelativeGain >= 0.0))
+        throw Error("WaypointRefiner: minRelativeGain must be >= 0");
+}
+
+RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input, double t0) const
+{
+    const GliderContext &ctx = *ctx_;
+    const std::uint64_t cfc0 = ctx.travel->costFunctionCalls();
+    RefinementResult res;
+    res.waypointsBefore = input.size();
+    std::vector<TimedWaypoint> wp = input;
+    Search s{ctx, t0, params_.maxEvaluations};
+    double best = s.cost(wp);
+    res.arrivalBefore = best;
+    if (wp.size() >= 2 && std::isfinite(best))
+    {
+        const double len = pathLength(wp);
+        const double sMin = params_.minStep > 0.0 ? params_.minStep : 1e-4 * len;
+        auto s0For = [&](const std::vector<TimedWaypoint> &w) {
+            return params_.initialStep > 0.0 ? params_.initialStep : 0.25 * meanLeg(w);
+        };
+        s.dropRedundant(wp, best);
+        s.pattern(wp, best, s0For(wp), sMin);
+        for (unsigned round = 0; round < params_.insertionRounds && !s.exhausted(); ++round)
+        {
+            if (2 * wp.size() - 1 > params_.maxWaypoints)
+                break;
+            std::vector<TimedWaypoint> cand;
+            for (std::size_t i = 0; i < wp.size(); ++i)
+            {
+                if (i > 0)
+                    cand.push_back({0.5 * (wp[i - 1].x + wp[i].x), 0.5 * (wp[i - 1].y + wp[i].y), 0.0});
+                cand.push_back(wp[i]);
+            }
+            double cBest = s.cost(cand);
+            if (!std::isfinite(cBest))
+                break;
+            s.pattern(cand, cBest, s0For(cand), sMin);
+            if (cBest < best && best - cBest >= params_.minRelativeGain * (best - t0))
+            {
+                wp = std::move(cand);
+                best = cBest;
+                ++s.accepted;
+            }
+            else
+                break;  // gain too small for twice the waypoints: keep the shorter list
+        }
+        s.dropRedundant(wp, best);
+    }
+    res.waypoints = retimeWaypoints(ctx, wp, t0);
+    res.waypointsAfter = res.waypoints.size();
+    res.arrivalAfter = res.waypoints.empty() ? t0 : res.waypoints.back().t;
+    if (!(res.arrivalAfter <= res.arrivalBefore))  // cannot happen with a deterministic travel-time code
+    {
+        res.waypoints = retimeWaypoints(ctx, input, t0);
+        res.waypointsAfter = input.size();
+        res.arrivalAfter = res.arrivalBefore;
+    }
+    res.evaluations = s.evaluations;
+    res.acceptedMoves = s.accepted;
+    res.costFunctionCalls = ctx.travel->costFunctionCalls() - cfc0;
+    return res;
+}
+
+RefinementResult WaypointRefiner::refine(ompl::geometric::PathGeometric &path) const
+{
+    const std::vector<TimedWaypoint> in = waypointsFromPath(path);
+    if (in.empty())
+        return {};
+    RefinementResult res = refine(in, in.front().t);
+    if (std::isfinite(res.arrivalAfter) && res.arrivalAfter <= in.back().t)
+        waypointsToPath(res.waypoints, path);
+    else
+    {
+        res.waypoints = in;
+        res.waypointsAfter = in.size();
+        res.arrivalAfter = in.back().t;
+    }
+    return res;
+}
+}  // namespace ompl_glider

@@ -1,0 +1,118 @@
+// Map rendering: SVG and PNG files are written and valid, the path colour is really drawn (pixel check through
+// cairo), polygons are filled, and bad input raises ompl_glider::Error.
+#include <gtest/gtest.h>
+
+#include <cairo.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <string>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/mission/MapRenderer.h"
+
+using namespace ompl_glider;
+namespace fs = std::filesystem;
+
+namespace
+{
+Region jetRegion()
+{
+    Region r;
+    r.xMin = 0;
+    r.xMax = 10;
+    r.yMin = -4;
+    r.yMax = 4;
+    return r;
+}
+
+std::string readAll(const fs::path &p)
+{
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Number of pixels of the PNG within +-tol of the colour (r, g, b) in 0..255.
+long countColour(const fs::path &png, int r, int g, int b, int tol = 3)
+{
+    cairo_surface_t *s = cairo_image_surface_create_from_png(png.c_str());
+    EXPECT_EQ(cairo_surface_status(s), CAIRO_STATUS_SUCCESS);
+    const int w = cairo_image_surface_get_width(s), h = cairo_image_surface_get_height(s);
+    const int stride = cairo_image_surface_get_stride(s);
+    const unsigned char *data = cairo_image_surface_get_data(s);
+    long n = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+        {
+            const auto px = *reinterpret_cast<const uint32_t *>(data + y * stride + 4 * x);
+            const int pr = (px >> 16) & 255, pg = (px >> 8) & 255, pb = px & 255;
+            n += std::abs(pr - r) <= tol && std::abs(pg - g) <= tol && std::abs(pb - b) <= tol;
+        }
+    cairo_surface_destroy(s);
+    return n;
+}
+
+fs::path tempDir(const std::string &name)
+{
+    const fs::path d = fs::temp_directory_path() / ("ompl_glider_map_" + name + "_" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+}
+}  // namespace
+
+TEST(MapRenderer, WritesValidSvgAndPngWithThePath)
+{
+    const fs::path dir = tempDir("ok");
+    MapRenderer map(jetRegion());
+    map.setField(std::make_shared<MeanderingJet>(), 0.0);
+    map.addPolygon({"island A", {{4, -3.5}, {5.5, -3.5}, {5, -2.5}}, {0.55, 0.50, 0.45, 1.0}, {0.3, 0.25, 0.2, 1}});
+    MapPath p = MapRenderer::refinedPathStyle("refined", {{1, -3, 0}, {3, 0, 4}, {8, 3, 12}});
+    p.colour = {1.0, 0.85, 0.0, 1.0};  // a colour used nowhere else
+    map.addPath(p);
+    map.setStartGoal(1, -3, 8, 3);
+    map.addNote("travel time 12");
+    map.writeSvg((dir / "map.svg").string());
+    map.writePng((dir / "map.png").string());
+
+    const std::string svg = readAll(dir / "map.svg");
+    ASSERT_GT(svg.size(), 1000u);
+    EXPECT_NE(svg.find("<svg"), std::string::npos);
+    EXPECT_NE(svg.find("</svg>"), std::string::npos);
+    const std::string png = readAll(dir / "map.png");
+    ASSERT_GT(png.size(), 1000u);
+    EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+
+    // Pixel checks: the path colour is drawn (a 3-px line over ~700 px of track), the island's fill at its centroid.
+    EXPECT_GT(countColour(dir / "map.png", 255, 217, 0), 500);
+    EXPECT_GT(countColour(dir / "map.png", 140, 128, 115, 2), 100);
+    cairo_surface_t *s = cairo_image_surface_create_from_png((dir / "map.png").c_str());
+    EXPECT_EQ(cairo_image_surface_get_width(s), map.size().first);
+    EXPECT_EQ(cairo_image_surface_get_height(s), map.size().second);
+    cairo_surface_destroy(s);
+    fs::remove_all(dir);
+}
+
+TEST(MapRenderer, WithoutPathNoPathColour)
+{
+    const fs::path dir = tempDir("nopath");
+    MapRenderer map(jetRegion());
+    map.setField(std::make_shared<MeanderingJet>(), 3.0);
+    map.writePng((dir / "map.png").string());
+    EXPECT_EQ(countColour(dir / "map.png", 255, 217, 0), 0);
+    fs::remove_all(dir);
+}
+
+TEST(MapRenderer, BadInputRaisesError)
+{
+    Region bad = jetRegion();
+    bad.xMax = bad.xMin;
+    EXPECT_THROW(MapRenderer{bad}, Error);
+    MapRenderer map(jetRegion());
+    EXPECT_THROW(map.addPolygon({"two points", {{0, 0}, {1, 1}}}), Error);
+    EXPECT_THROW(map.writePng("/nonexistent-dir/x/map.png"), Error);
+    EXPECT_THROW(map.writeSvg("/nonexistent-dir/x/map.svg"), Error);
+}

@@ -1,0 +1,160 @@
+// Path smoothing in a time-varying field (000 Table 3): closed forms in a uniform current, never a later arrival
+// on random paths in the meandering jet, obstacles respected, infeasible input untouched, OMPL path adapter.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include <ompl/base/SpaceInformation.h>
+
+#include "PostprocessTestUtil.h"
+#include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/current/UniformCurrent.h"
+#include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "ompl_glider/planners/PathSmoother.h"
+
+using namespace ompl_glider;
+using namespace ompl_glider::test;
+
+namespace
+{
+double uniformTime(double L, double px, double py, double cu, double cv, double V)
+{
+    const double pc = px * cu + py * cv;
+    return L / (pc + std::sqrt(pc * pc + V * V - cu * cu - cv * cv));
+}
+}  // namespace
+
+TEST(PathSmoother, StaircaseInUniformCurrentBecomesStraightLeg)
+{
+    auto ctx = makeContext(std::make_shared<UniformCurrent>(0.2, 0.1), 0.5, box(-1, 10, -1, 10));
+    std::vector<TimedWaypoint> stairs;
+    for (int i = 0; i <= 8; ++i)
+        stairs.push_back({0.5 * ((i + 1) / 2), 0.5 * (i / 2), 0.0});  // (0,0),(0.5,0),(0.5,0.5),(1,0.5),...
+    const SmoothingResult r = PathSmoother(ctx).smooth(stairs, 0.0);
+    ASSERT_EQ(r.waypointsBefore, 9u);
+    ASSERT_EQ(r.waypointsAfter, 2u);  // the straight leg is the fastest in a uniform current
+    EXPECT_EQ(r.waypoints.front().x, 0.0);
+    EXPECT_EQ(r.waypoints.back().x, 2.0);
+    EXPECT_EQ(r.waypoints.back().y, 2.0);
+    const double L = std::hypot(2.0, 2.0);
+    EXPECT_NEAR(r.arrivalAfter, uniformTime(L, 2 / L, 2 / L, 0.2, 0.1, 0.5), 1e-9);
+    EXPECT_LT(r.arrivalAfter, r.arrivalBefore);
+    EXPECT_GT(r.costFunctionCalls, 0u);
+}
+
+TEST(PathSmoother, NeverLaterOnJetLatticePaths)
+{
+    // Inputs: lattice paths (ZA*TVE core on a 0.5 grid) across the jet, as found and with random jitter of the
+    // interior waypoints, at several departure times.
+    auto jet = std::make_shared<MeanderingJet>();
+    auto ctx = makeContext(jet, 0.5, box(0, 10, -4, 4));
+    PathSmoother smoother(ctx);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> jit(-0.15, 0.15);
+    const double pairs[][4] = {{1, -3, 8, 3}, {1, 3, 9, -2.5}, {2, -3.5, 7, 3.5}, {0.5, 0, 9.5, 1}};
+    int feasible = 0, smoothedSome = 0;
+    for (const auto &pr : pairs)
+        for (double t0 : {0.0, 5.0})
+        {
+            auto c2 = std::make_shared<GliderContext>(*ctx);
+            c2->t0 = t0;
+            TveSearch s2(c2, 0.5, 2);
+            const TveResult lat = s2.run(pr[0], pr[1], pr[2], pr[3], TveOptions{});
+            ASSERT_EQ(lat.outcome, TveOutcome::Exact);
+            for (int variant = 0; variant < 4; ++variant)
+            {
+                std::vector<TimedWaypoint> wp = lat.waypoints;
+                if (variant > 0)
+                    for (std::size_t i = 1; i + 1 < wp.size(); ++i)
+                    {
+                        wp[i].x += jit(rng);
+                        wp[i].y += jit(rng);
+                    }
+                const SmoothingResult r = smoother.smooth(wp, t0);
+                if (!std::isfinite(r.arrivalBefore))
+                {
+                    EXPECT_EQ(r.waypointsAfter, r.waypointsBefore);  // infeasible input is returned unchanged
+                    continue;
+                }
+                ++feasible;
+                if (variant == 0)
+                {
+                    EXPECT_NEAR(r.arrivalBefore, lat.waypoints.back().t, 1e-9);  // same travel-time code
+                }
+                EXPECT_LE(r.arrivalAfter, r.arrivalBefore);
+                EXPECT_LE(r.waypointsAfter, r.waypointsBefore);
+                smoothedSome += r.waypointsAfter < r.waypointsBefore;
+                ASSERT_GE(r.waypoints.size(), 2u);
+                EXPECT_EQ(r.waypoints.front().x, wp.front().x);
+                EXPECT_EQ(r.waypoints.back().y, wp.back().y);
+                // The reported times are the re-simulation of the reported waypoints.
+                const auto re = retimeWaypoints(*ctx, r.waypoints, t0);
+                for (std::size_t i = 0; i < re.size(); ++i)
+                    EXPECT_EQ(re[i].t, r.waypoints[i].t);
+            }
+        }
+    EXPECT_GE(feasible, 16);
+    EXPECT_GT(smoothedSome, feasible * 3 / 4);
+}
+
+TEST(PathSmoother, DoesNotMergeAcrossObstacle)
+{
+    // A box between start and goal; the path goes round it. The direct leg would be faster but is blocked.
+    auto env = std::make_shared<BoxEnvironment>(2, 3, -1, 1);
+    auto ctx = makeContext(std::make_shared<UniformCurrent>(0.0, 0.0), 0.5, box(-1, 6, -3, 3), env);
+    const std::vector<TimedWaypoint> wp = {{0, 0, 0}, {1, 1.5, 0}, {2, 1.5, 0}, {3, 1.5, 0}, {4, 1.5, 0}, {5, 0, 0}};
+    const SmoothingResult r = PathSmoother(ctx).smooth(wp, 0.0);
+    EXPECT_LT(r.waypointsAfter, r.waypointsBefore);
+    EXPECT_GE(r.waypointsAfter, 3u);
+    EXPECT_LE(r.arrivalAfter, r.arrivalBefore);
+    for (std::size_t i = 1; i < r.waypoints.size(); ++i)
+        EXPECT_TRUE(env->legFree(r.waypoints[i - 1].x, r.waypoints[i - 1].y, r.waypoints[i - 1].t, r.waypoints[i].x,
+                                 r.waypoints[i].y, r.waypoints[i].t));
+    // In still water the result must be the straight line around the corners: (0,0)->(2,1.5)?->... at least no
+    // leg crosses the box, and the length shrank.
+    EXPECT_LT(pathLength(r.waypoints), pathLength(wp));
+}
+
+TEST(PathSmoother, InfeasiblePathUnchanged)
+{
+    // Current 1.0 eastward, V = 0.5: any leg heading west is infeasible.
+    auto ctx = makeContext(std::make_shared<UniformCurrent>(1.0, 0.0), 0.5, box(-10, 10, -10, 10));
+    const std::vector<TimedWaypoint> wp = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-3, 1, 0}};
+    const SmoothingResult r = PathSmoother(ctx).smooth(wp, 0.0);
+    EXPECT_FALSE(std::isfinite(r.arrivalBefore));
+    ASSERT_EQ(r.waypointsAfter, 4u);
+    for (std::size_t i = 0; i < wp.size(); ++i)
+    {
+        EXPECT_EQ(r.waypoints[i].x, wp[i].x);
+        EXPECT_EQ(r.waypoints[i].y, wp[i].y);
+    }
+}
+
+TEST(PathSmoother, OmplPathAdapter)
+{
+    ompl::base::RealVectorBounds b(2);
+    b.setLow(0, -1);
+    b.setHigh(0, 10);
+    b.setLow(1, -1);
+    b.setHigh(1, 10);
+    auto space = std::make_shared<TimeSE2StateSpace>(b, 0.0, 100.0);
+    auto si = std::make_shared<ompl::base::SpaceInformation>(space);
+    si->setStateValidityChecker([](const ompl::base::State *) { return true; });
+    si->setup();
+    auto ctx = makeContext(std::make_shared<UniformCurrent>(0.1, 0.0), 0.5, box(-1, 10, -1, 10));
+    std::vector<TimedWaypoint> wp = {{0, 0, 0}, {1, 0.2, 0}, {2, 0, 0}, {3, 0.2, 0}, {4, 0, 0}};
+    wp = retimeWaypoints(*ctx, wp, 0.0);
+    ompl::geometric::PathGeometric path(si);
+    waypointsToPath(wp, path);
+    ASSERT_EQ(path.getStateCount(), 5u);
+    const SmoothingResult r = PathSmoother(ctx).smooth(path);
+    ASSERT_EQ(path.getStateCount(), r.waypointsAfter);
+    EXPECT_EQ(r.waypointsAfter, 2u);
+    const auto *last = path.getState(path.getStateCount() - 1)->as<TimeSE2StateSpace::StateType>();
+    EXPECT_DOUBLE_EQ(last->getX(), 4.0);
+    EXPECT_DOUBLE_EQ(last->getTime(), r.arrivalAfter);
+    EXPECT_NEAR(r.arrivalAfter, 4.0 / 0.6, 1e-9);
+    EXPECT_NEAR(last->getYaw(), 0.0, 1e-12);
+}
