@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/ompl/GliderStateSampler.h"
 #include "ompl_glider/ompl/GliderStateValidityChecker.h"
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
@@ -101,6 +102,10 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
     auto space = std::make_shared<TimeSE2StateSpace>(b, r.tMin, r.tMax);
     const double vMax = ctx->speed() + ctx->maxCurrent();
     space->setTimeWeight(vMax);
+    const double sx = p.startX, sy = p.startY, t0 = ctx->t0;
+    space->setStateSamplerAllocator([sx, sy, t0, vMax](const ob::StateSpace *sp) {
+        return std::make_shared<GliderStateSampler>(sp, sx, sy, t0, vMax);
+    });
 
     auto ss = std::make_shared<og::SimpleSetup>(space);
     const ob::SpaceInformationPtr &si = ss->getSpaceInformation();

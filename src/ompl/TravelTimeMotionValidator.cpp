@@ -1,7 +1,10 @@
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include <ompl/base/SpaceInformation.h>
 
@@ -56,6 +59,11 @@ void TravelTimeMotionValidator::init()
                     "calculator");
     const double span = ctx_->region.tMax - ctx_->region.tMin;
     holdStep_ = (std::isfinite(span) && span > 0.0) ? span / 256.0 : 1.0;
+    vMax_ = ctx_->speed() + ctx_->maxCurrent();
+    if (!(vMax_ > 0.0))
+        vMax_ = std::numeric_limits<double>::infinity();
+    static std::atomic<std::uint64_t> nextId{1};
+    id_ = nextId.fetch_add(1, std::memory_order_relaxed);
 }
 
 void TravelTimeMotionValidator::setRelativeTolerance(double tol)
@@ -99,6 +107,28 @@ bool TravelTimeMotionValidator::canHold(double x, double y, double t1, double t2
 MotionVerdict TravelTimeMotionValidator::classify(double x1, double y1, double t1, double x2, double y2,
                                                   double t2) const
 {
+    // One-entry cache per thread: OMPL planners often ask for a motion's cost (TravelTimeObjective::motionCost,
+    // which validates it) and then check the same motion again.
+    struct Cache
+    {
+        std::uint64_t id{0};
+        double key[6];
+        MotionVerdict verdict{MotionVerdict::Valid};
+    };
+    thread_local Cache cache;
+    const double key[6] = {x1, y1, t1, x2, y2, t2};
+    if (cache.id == id_ && std::equal(key, key + 6, cache.key))
+        return cache.verdict;
+    const MotionVerdict v = classifyUncached(x1, y1, t1, x2, y2, t2);
+    cache.id = id_;
+    std::copy(key, key + 6, cache.key);
+    cache.verdict = v;
+    return v;
+}
+
+MotionVerdict TravelTimeMotionValidator::classifyUncached(double x1, double y1, double t1, double x2, double y2,
+                                                          double t2) const
+{
     const double dt = t2 - t1;
     const double len = std::hypot(x2 - x1, y2 - y1);
     if (len == 0.0)
@@ -112,6 +142,9 @@ MotionVerdict TravelTimeMotionValidator::classify(double x1, double y1, double t
     {
         if (!(dt > 0.0))
             return MotionVerdict::NotForward;
+        // No ground speed exceeds V + max|c|: reject without integrating (no CFC).
+        if (dt < len / vMax_ * (1.0 - relTol_))
+            return MotionVerdict::TooEarly;
         const ArrivalWindow w = ctx_->travel->arrivalWindow(x1, y1, x2, y2, t1);
         if (!std::isfinite(w.earliest))
             return MotionVerdict::Infeasible;

@@ -36,7 +36,8 @@ struct GliderProblem
 /// bad travel-time parameters).
 std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &problem);
 
-/// @brief A ready SimpleSetup: TimeSE2StateSpace over the box and [t0, t0 + horizon] with time weight V + max|c|,
+/// @brief A ready SimpleSetup: TimeSE2StateSpace over the box and [t0, t0 + horizon] with time weight V + max|c|
+/// and GliderStateSampler as its state sampler (no samples earlier than reachable from the start),
 /// GliderStateValidityChecker, TravelTimeMotionValidator, TravelTimeObjective, start state (startX, startY, t0,
 /// yaw 0) and a PositionGoal whose sampled times lie in [t0 + |start - goal| / (V + max|c|), t0 + horizon].
 /// No planner is set (SimpleSetup picks OMPL's default unless setPlanner() is called). A start or goal inside a

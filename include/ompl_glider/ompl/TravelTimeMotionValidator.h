@@ -2,6 +2,7 @@
 /// @file TravelTimeMotionValidator.h
 /// @brief Which time-stamped straight legs a glider can fly (issue #3, SPEC.md 2).
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -42,7 +43,8 @@ std::string toString(MotionVerdict v);
 ///   - for the State overloads also: the end state is valid (SpaceInformation::isValid, as OMPL's
 ///     DiscreteMotionValidator does, since planners like RRT* do not check sampled states separately).
 /// The start state is assumed valid (OMPL convention). Each positive-length check costs one cost-function call
-/// (CFC) of the context's TravelTimeCalculator. Thread-safe.
+/// (CFC) of the context's TravelTimeCalculator, except legs rejected early because t2 - t1 < |xy2 - xy1| / (V +
+/// max|c|) and repeats of the thread's previous query (one-entry per-thread cache). Thread-safe.
 class TravelTimeMotionValidator : public ompl::base::MotionValidator
 {
 public:
@@ -95,9 +97,12 @@ public:
 private:
     void init();
     bool record(bool ok) const;
+    MotionVerdict classifyUncached(double x1, double y1, double t1, double x2, double y2, double t2) const;
 
     std::shared_ptr<const GliderContext> ctx_;
     double relTol_{1e-6};
     double holdStep_{1.0};
+    double vMax_{0.0};     ///< V + max|c| over the context's region
+    std::uint64_t id_{0};  ///< unique id of this validator (key of the per-thread cache)
 };
 }  // namespace ompl_glider
