@@ -1,3 +1,4 @@
 # mission tests
 glider_add_test(test_mission_goto ${CMAKE_CURRENT_LIST_DIR}/TestSlocumGoto.cpp)
 glider_add_test(test_mission_departure ${CMAKE_CURRENT_LIST_DIR}/TestDepartureTime.cpp)
+glider_add_test(test_mission_file ${CMAKE_CURRENT_LIST_DIR}/TestMissionFile.cpp)
