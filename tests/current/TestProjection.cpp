@@ -1,0 +1,88 @@
+// LocalProjection (PROJ aeqd on WGS84): round trip, exact distances from the reference point, the stated bound
+// on planar-vs-geodesic distance over a 500 km region, and the east/north directions used to rotate currents.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/LocalProjection.h"
+
+using namespace ompl_glider;
+
+TEST(LocalProjection, RoundTripIsExactToAMicrometre)
+{
+    for (auto [lon0, lat0] : {std::pair{-52.0, 47.5}, {170.0, -40.0}, {0.0, 0.0}, {-179.5, 60.0}})
+    {
+        const LocalProjection p(lon0, lat0);
+        double x, y;
+        p.forward(lon0, lat0, x, y);
+        EXPECT_NEAR(x, 0.0, 1e-6);
+        EXPECT_NEAR(y, 0.0, 1e-6);
+        std::mt19937 rng(1);
+        std::uniform_real_distribution<double> U(-300e3, 300e3);
+        for (int i = 0; i < 200; ++i)
+        {
+            const double px = U(rng), py = U(rng);
+            double lon, lat, qx, qy;
+            p.inverse(px, py, lon, lat);
+            EXPECT_GE(lon, p.lon0() - 180.0);
+            EXPECT_LT(lon, p.lon0() + 180.0);
+            p.forward(lon, lat, qx, qy);
+            EXPECT_NEAR(qx, px, 1e-6);
+            EXPECT_NEAR(qy, py, 1e-6);
+            // longitudes in another 360-degree convention give the same point
+            p.forward(lon + 360.0, lat, qx, qy);
+            EXPECT_NEAR(qx, px, 1e-6);
+        }
+    }
+    EXPECT_THROW(LocalProjection(0.0, 95.0), Error);
+}
+
+TEST(LocalProjection, PlanarDistancesWithinTheStatedBoundOver500km)
+{
+    // Distances from the reference point are geodesic (equidistant); between two points within 250 km of it the
+    // planar distance differs from the geodesic by less than d^2 / (6 R^2) ~ 2.6e-4 relative (bound checked: 5e-4).
+    const LocalProjection p(-52.0, 47.5);
+    std::mt19937 rng(2);
+    std::uniform_real_distribution<double> R(0, 250e3), A(0, 2 * M_PI);
+    double worst = 0;
+    for (int i = 0; i < 2000; ++i)
+    {
+        const double r1 = R(rng), a1 = A(rng), r2 = R(rng), a2 = A(rng);
+        const double x1 = r1 * std::cos(a1), y1 = r1 * std::sin(a1), x2 = r2 * std::cos(a2), y2 = r2 * std::sin(a2);
+        double lon1, lat1, lon2, lat2;
+        p.inverse(x1, y1, lon1, lat1);
+        p.inverse(x2, y2, lon2, lat2);
+        // from the reference point: exact
+        EXPECT_NEAR(std::hypot(x1, y1), p.geodesicDistance(p.lon0(), p.lat0(), lon1, lat1), 1e-3);
+        const double planar = std::hypot(x2 - x1, y2 - y1);
+        if (planar < 1e3)
+            continue;
+        const double geo = p.geodesicDistance(lon1, lat1, lon2, lat2);
+        worst = std::max(worst, std::abs(planar - geo) / geo);
+    }
+    EXPECT_LT(worst, 5e-4);
+    EXPECT_GT(worst, 1e-5);  // the plane is an approximation: the check is not vacuous
+}
+
+TEST(LocalProjection, EastAndNorthDirections)
+{
+    const LocalProjection p(10.0, 45.0);
+    double ex, ey, nx, ny;
+    p.eastDirection(10.0, 45.0, ex, ey);
+    p.northDirection(10.0, 45.0, nx, ny);
+    EXPECT_NEAR(ex, 1.0, 1e-9);
+    EXPECT_NEAR(ey, 0.0, 1e-9);
+    EXPECT_NEAR(nx, 0.0, 1e-9);
+    EXPECT_NEAR(ny, 1.0, 1e-9);
+    // 250 km east the meridians converge: north tilts towards the reference meridian (negative x) by about
+    // dlon * sin(lat) (~2.2 degrees); east and north stay orthogonal to better than 1e-3.
+    p.eastDirection(13.2, 45.0, ex, ey);
+    p.northDirection(13.2, 45.0, nx, ny);
+    const double tilt = std::atan2(-nx, ny) * 180.0 / M_PI;
+    EXPECT_GT(tilt, 1.5);
+    EXPECT_LT(tilt, 3.0);
+    EXPECT_NEAR(ex * nx + ey * ny, 0.0, 1e-3);
+    EXPECT_NEAR(std::hypot(ex, ey), 1.0, 1e-12);
+}
