@@ -1,6 +1,7 @@
 #include "ompl_glider/planners/ZAStarTVE.h"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <unordered_map>
@@ -21,6 +22,13 @@ namespace
 {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 using TimeState = TimeSE2StateSpace::StateType;
+
+/// Heading of the leg (x1, y1) -> (x2, y2) in SO(2)'s range [-pi, pi) (atan2 may return +pi).
+double legYaw(double x1, double y1, double x2, double y2)
+{
+    const double yaw = std::atan2(y2 - y1, x2 - x1);
+    return yaw >= 3.14159265358979323846 ? yaw - 2.0 * 3.14159265358979323846 : yaw;
+}
 }  // namespace
 
 ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx,
@@ -71,7 +79,11 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
         const std::uint64_t n = solving_ ? field->callCount() - cmcBase_ : last_.currentModelCalls;
         return std::to_string(n);
     });
-    addPlannerProgressProperty("best cost REAL", [this] { return ompl::toString(bestCost_.load()); });
+    addPlannerProgressProperty("best cost REAL", [this] {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.17g", bestCost_.load());
+        return std::string(buf);
+    });
 }
 
 ZAStarTVE::~ZAStarTVE()
@@ -241,7 +253,7 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
         if (w.size() > 1)
         {
             const std::size_t a = i == 0 ? 0 : i - 1, b = i == 0 ? 1 : i;
-            yaw = std::atan2(w[b].y - w[a].y, w[b].x - w[a].x);
+            yaw = legYaw(w[a].x, w[a].y, w[b].x, w[b].y);
         }
         auto *ts = state->as<TimeState>();
         ts->setXYT(w[i].x, w[i].y, w[i].t);
@@ -294,7 +306,7 @@ void ZAStarTVE::getPlannerData(ompl::base::PlannerData &data) const
         ts->setXYT(v.x, v.y, v.t);
         double yaw = 0.0;
         if (v.parent != Lattice::kNone)
-            yaw = std::atan2(v.y - lat.y(v.parent), v.x - lat.x(v.parent));
+            yaw = legYaw(lat.x(v.parent), lat.y(v.parent), v.x, v.y);
         ts->setYaw(yaw);
         states[i] = s;
         dataStates_.push_back(s);
