@@ -61,10 +61,10 @@ std::vector<DepartureSample> evaluateAll(const TravelTimeOfDeparture &f, const s
         if (!(tt >= 0.0) || ts[i] + tt > p.horizon)
             tt = kInf;
         out[i] = {ts[i], tt, coarse};
-        const std::size_t n = ++done;
         if (p.progress)
         {
             std::lock_guard<std::mutex> lock(printMutex);
+            const std::size_t n = ++done;
             std::fprintf(stderr, "\r%s: %zu/%zu departures searched", what, n, ts.size());
             if (n == ts.size())
                 std::fprintf(stderr, "\n");

@@ -5,4 +5,6 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/SlocumGoto.cpp
   ${CMAKE_CURRENT_LIST_DIR}/IsoTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionLoader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/MissionRunner.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/MissionOutputs.cpp
 )

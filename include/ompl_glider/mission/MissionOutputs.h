@@ -1,0 +1,46 @@
+#pragma once
+/// @file MissionOutputs.h
+/// @brief What a mission writes for the pilot (SPEC.md 6, 003 Sec. IV): waypoints CSV, GeoJSON, the Slocum goto
+/// list, a JSON summary, the speed-sweep table and the map.
+
+#include <string>
+#include <vector>
+
+#include "ompl_glider/mission/MissionRunner.h"
+#include "ompl_glider/mission/SlocumGoto.h"
+
+namespace ompl_glider
+{
+/// @brief Waypoints CSV, one line per waypoint (start first), header
+/// `index,x,y,lon,lat,time,time_iso,leg_time,profile,climb_to,dive_to` (lon/lat empty without a projection,
+/// time_iso empty without a calendar, the profile columns empty without dive profiles). Numbers with 10
+/// significant digits.
+std::string waypointsCsv(const MissionResult &result);
+
+/// @brief GeoJSON FeatureCollection: one LineString of the path (properties: mission, departure, travel time,
+/// path length) and one Point per waypoint (properties: index, time, time_iso, leg_time, dive profile).
+/// Coordinates are [lon, lat] (RFC 7946) when the mission has a projection, else planning x/y (then the
+/// collection carries "coordinates": "local").
+std::string waypointsGeoJson(const MissionResult &result);
+
+/// @brief JSON summary: mission, status, departure (+ISO), travel time (2-D and with dive profiles), path length,
+/// straight-line travel time or "impassable", straight-line length, waypoints raw/smoothed, CFC, CMC, planning
+/// wall time, the departure search (counts, times, supporting points) and the speed sweep.
+std::string summaryJson(const MissionResult &result);
+
+/// @brief The Slocum goto list of the final path (without the start unless outputs.goto_include_start).
+/// @throws Error when the waypoints have no geographic coordinates.
+GotoList gotoList(const MissionResult &result);
+
+/// @brief The speed sweep as a text table (003 Table VI): speed, travel time, path length, straight-line travel
+/// time ("impassable" when infinite) and length.
+std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows);
+
+/// @brief Writes the files listed in result.spec.outputs.files into result.spec.outputs.directory (created when
+/// missing): <prefix>_waypoints.csv, <prefix>.geojson, goto_lNN.ma, <prefix>_summary.json, <prefix>_map.svg/.png.
+/// @return the paths written. @throws Error when a file cannot be written.
+std::vector<std::string> writeMissionOutputs(const MissionResult &result, const MissionProblem &problem);
+
+/// @brief Writes @p text to @p path. @throws Error naming the path on failure.
+void writeTextFile(const std::string &path, const std::string &text);
+}  // namespace ompl_glider
