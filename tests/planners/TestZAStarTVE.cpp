@@ -10,6 +10,7 @@
 #include <ompl/base/PlannerData.h>
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/geometric/PathGeometric.h>
+#include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/util/Console.h>
 
 #include "ompl_glider/Exception.h"
@@ -462,4 +463,29 @@ TEST(TveSearch, CalcOptDirMatchesAnIndependentZermeloIntegrationInShear)
     EXPECT_NEAR(*phi, ref, 1e-5);
     // And the course really turned (the test is not trivial).
     EXPECT_GT(std::abs(ref - std::atan2(ey, ex)), 0.05);
+}
+
+TEST(ZAStarTVE, BenchmarkLogsCostFunctionAndCurrentModelCalls)
+{
+    std::shared_ptr<GliderContext> ctx;
+    auto ss = makeSimpleSetup(jetProblem(4.8, -0.4, 7.6, 1.2), &ctx);
+    ompl::tools::Benchmark bench(*ss, "table4");
+    bench.addPlannerAllocator(ZAStarTVE::allocator(ctx, "TVE"));
+    bench.addPlannerAllocator(ZAStarTVE::allocator(ctx, "ZA*TVE"));
+    ompl::tools::Benchmark::Request req(10.0, 1000.0, 1, 0.05, false, false, false);
+    bench.benchmark(req);
+    const auto &exp = bench.getRecordedExperimentData();
+    ASSERT_EQ(exp.planners.size(), 2u);
+    std::uint64_t cfc[2];
+    for (int i = 0; i < 2; ++i)
+    {
+        ASSERT_EQ(exp.planners[i].runs.size(), 1u);
+        const auto &run = exp.planners[i].runs[0];
+        ASSERT_TRUE(run.count("cost function calls INTEGER"));
+        ASSERT_TRUE(run.count("current model calls INTEGER"));
+        cfc[i] = std::stoull(run.at("cost function calls INTEGER"));
+        EXPECT_GT(cfc[i], 0u);
+    }
+    EXPECT_EQ(exp.planners[0].name, "geometric_TVE");  // Benchmark prefixes the planner type
+    EXPECT_LT(cfc[1], cfc[0]);
 }
