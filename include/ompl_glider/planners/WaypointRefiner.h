@@ -21,9 +21,9 @@ struct RefinerParams
     unsigned maxEvaluations{40000};  ///< budget of path re-simulations (each costs one CFC per leg)
     double initialStep{0.0};         ///< first trial move (field length units); <= 0: 1/4 of the mean leg length
     double minStep{0.0};             ///< moves stop below this length; <= 0: 1e-4 of the path length
-    unsigned insertionRounds{3};     ///< rounds of "insert a midpoint on every leg, then optimise"
+    unsigned insertionRounds{4};     ///< rounds of "insert a midpoint on every leg, then optimise"
     std::size_t maxWaypoints{40};    ///< no insertion round makes the path longer than this
-    double minRelativeGain{2e-4};    ///< an insertion round is kept only if it shortens the travel time by this
+    double minRelativeGain{1e-3};    ///< an insertion round is kept only if it shortens the travel time by this
                                      ///< fraction (otherwise its extra waypoints are not worth it)
 };
 
