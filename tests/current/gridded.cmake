@@ -6,3 +6,5 @@ glider_add_test(test_current_netcdf
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLayouts.cpp)
 target_link_libraries(test_current_netcdf PRIVATE netCDF::netcdf)
+glider_add_test(test_current_gridded_agreement ${CMAKE_CURRENT_LIST_DIR}/TestGriddedAgreement.cpp)
+target_link_libraries(test_current_gridded_agreement PRIVATE netCDF::netcdf)
