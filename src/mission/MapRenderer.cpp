@@ -65,6 +65,7 @@ void haloText(cairo_t *cr, double x, double y, const std::string &s, const Rgba 
     cairo_move_to(cr, x0, y);
     setColour(cr, c);
     cairo_show_text(cr, s.c_str());
+    cairo_new_path(cr);  // show_text leaves a current point: do not let the next arc connect to it
 }
 
 void plainText(cairo_t *cr, double x, double y, const std::string &s, double size, bool bold = false,
@@ -78,6 +79,7 @@ void plainText(cairo_t *cr, double x, double y, const std::string &s, double siz
     cairo_move_to(cr, x - alignX * ext.x_advance, y);
     setColour(cr, c);
     cairo_show_text(cr, s.c_str());
+    cairo_new_path(cr);  // show_text leaves a current point: do not let the next arc connect to it
 }
 
 Rgba speedColour(double f)
@@ -370,6 +372,7 @@ void MapRenderer::draw(void *context) const
         if (p.waypointMarkers)
             for (const TimedWaypoint &w : p.waypoints)
             {
+                cairo_new_path(cr);
                 cairo_arc(cr, X(w.x), Y(w.y), p.width + 1.2, 0, 2 * kPi);
                 cairo_set_source_rgb(cr, 1, 1, 1);
                 cairo_fill_preserve(cr);
@@ -412,6 +415,7 @@ void MapRenderer::draw(void *context) const
     // --- start and goal
     if (hasStartGoal_)
     {
+        cairo_new_path(cr);
         cairo_arc(cr, X(sx_), Y(sy_), 8, 0, 2 * kPi);
         cairo_set_source_rgb(cr, 0.05, 0.60, 0.15);
         cairo_fill_preserve(cr);
@@ -485,6 +489,7 @@ void MapRenderer::draw(void *context) const
         cairo_set_dash(cr, nullptr, 0, 0);
         if (p.waypointMarkers)
         {
+            cairo_new_path(cr);
             cairo_arc(cr, lx + 15, ly, p.width + 1.2, 0, 2 * kPi);
             cairo_set_source_rgb(cr, 1, 1, 1);
             cairo_fill_preserve(cr);
@@ -492,11 +497,12 @@ void MapRenderer::draw(void *context) const
             cairo_set_line_width(cr, 1.3);
             cairo_stroke(cr);
         }
-        plainText(cr, lx + 38, ly + 4, p.label, 12);
+        plainText(cr, lx + 38, ly + 4, p.label, 11.5);
         ly += 22;
     }
     if (hasStartGoal_)
     {
+        cairo_new_path(cr);
         cairo_arc(cr, lx + 15, ly, 6, 0, 2 * kPi);
         cairo_set_source_rgb(cr, 0.05, 0.60, 0.15);
         cairo_fill(cr);

@@ -1,0 +1,363 @@
+#include "ompl_glider/mission/PlanRun.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <ompl/geometric/planners/prm/PRM.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/planners/WaypointRefiner.h"
+#include "ompl_glider/planners/ZAStarTVE.h"
+
+namespace ompl_glider
+{
+namespace
+{
+bool isLatticePlanner(const std::string &name)
+{
+    return name == "TVE" || name == "A*TVE" || name == "ZTVE" || name == "ZA*TVE";
+}
+
+std::string num(double v)
+{
+    if (!std::isfinite(v))
+        return "null";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
+std::string jsonString(const std::string &s)
+{
+    std::string out = "\"";
+    for (char c : s)
+    {
+        if (c == '"' || c == '\\')
+            out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20)
+        {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", c);
+            out += buf;
+            continue;
+        }
+        out += c;
+    }
+    return out + "\"";
+}
+
+double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
+{
+    return std::chrono::duration<double>(b - a).count();
+}
+
+void writeFile(const std::string &path, const std::string &text)
+{
+    std::ofstream out(path, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out)
+        throw Error("writePlanOutputs: cannot write '" + path + "'");
+}
+}  // namespace
+
+const std::vector<std::string> &plannerNames()
+{
+    static const std::vector<std::string> names = {"TVE",           "A*TVE",           "ZTVE", "ZA*TVE", "RRTstar",
+                                                   "InformedRRTstar", "PRM", "PRMstar", "RRT"};
+    return names;
+}
+
+GliderProblem gulfStreamProblem()
+{
+    GliderProblem p;
+    p.field = std::make_shared<MeanderingJet>();
+    p.travel.speed = 0.5;
+    p.xMin = 0.0;
+    p.xMax = 10.0;
+    p.yMin = -4.0;
+    p.yMax = 4.0;
+    p.t0 = 0.0;
+    p.horizon = 60.0;
+    p.startX = 1.0;
+    p.startY = -3.0;
+    p.goalX = 8.0;
+    p.goalY = 3.0;
+    return p;
+}
+
+PlanRunResult runPlan(const PlanRequest &req)
+{
+    const auto &names = plannerNames();
+    if (std::find(names.begin(), names.end(), req.planner) == names.end())
+    {
+        std::string list;
+        for (const auto &n : names)
+            list += (list.empty() ? "" : ", ") + n;
+        throw Error("unknown planner '" + req.planner + "' (expected one of " + list + ")");
+    }
+    if (!(req.timeLimit > 0.0))
+        throw Error("planner time limit must be > 0 s");
+    std::shared_ptr<GliderContext> ctx;
+    ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(req.problem, &ctx);
+    const ompl::base::SpaceInformationPtr &si = ss->getSpaceInformation();
+
+    std::shared_ptr<ZAStarTVE> lattice;
+    if (isLatticePlanner(req.planner))
+    {
+        lattice = std::make_shared<ZAStarTVE>(si, ctx, req.planner);
+        lattice->setGridSize(req.gridSize);
+        lattice->setSectors(req.sectors);
+        ss->setPlanner(lattice);
+    }
+    else if (req.planner == "RRTstar")
+        ss->setPlanner(std::make_shared<ompl::geometric::RRTstar>(si));
+    else if (req.planner == "InformedRRTstar")
+        ss->setPlanner(std::make_shared<ompl::geometric::InformedRRTstar>(si));
+    else if (req.planner == "PRM")
+        ss->setPlanner(std::make_shared<ompl::geometric::PRM>(si));
+    else if (req.planner == "PRMstar")
+        ss->setPlanner(std::make_shared<ompl::geometric::PRMstar>(si));
+    else
+        ss->setPlanner(std::make_shared<ompl::geometric::RRT>(si));
+
+    PlanRunResult res;
+    res.planner = req.planner;
+    const double t0 = ctx->t0;
+    res.straightLineTime = legTravelTime(*ctx, req.problem.startX, req.problem.startY, req.problem.goalX,
+                                         req.problem.goalY, t0);
+
+    const std::uint64_t cfc0 = ctx->travel->costFunctionCalls(), cmc0 = ctx->field->callCount();
+    const auto tA = std::chrono::steady_clock::now();
+    const ompl::base::PlannerStatus status = ss->solve(req.timeLimit);
+    const auto tB = std::chrono::steady_clock::now();
+    res.planningSeconds = seconds(tA, tB);
+    res.status = status.asString();
+    if (lattice)
+    {
+        res.costFunctionCalls = lattice->getCostFunctionCalls();
+        res.currentModelCalls = lattice->getCurrentModelCalls();
+    }
+    else
+    {
+        res.costFunctionCalls = ctx->travel->costFunctionCalls() - cfc0;
+        res.currentModelCalls = ctx->field->callCount() - cmc0;
+    }
+    if (!ss->haveSolutionPath())
+        return res;
+    ompl::geometric::PathGeometric path = ss->getSolutionPath();
+    res.feasible = ss->haveExactSolutionPath();
+    res.raw = waypointsFromPath(path);
+    res.travelTimeRaw = res.feasible ? res.raw.back().t - t0 : std::numeric_limits<double>::infinity();
+
+    const std::uint64_t cfc1 = ctx->travel->costFunctionCalls();
+    const auto tC = std::chrono::steady_clock::now();
+    if (res.feasible && req.smooth)
+        PathSmoother(ctx).smooth(path);
+    res.smoothed = waypointsFromPath(path);
+    if (res.feasible && req.refine)
+        WaypointRefiner(ctx).refine(path);
+    res.refined = waypointsFromPath(path);
+    res.postprocessSeconds = seconds(tC, std::chrono::steady_clock::now());
+    res.postprocessCostFunctionCalls = ctx->travel->costFunctionCalls() - cfc1;
+
+    res.path = res.refined;
+    if (res.feasible)
+    {
+        res.travelTimeSmoothed = res.smoothed.back().t - t0;
+        res.travelTime = res.path.back().t - t0;
+        res.pathChecked = path.check();
+    }
+    res.pathLength = pathLength(res.path);
+    return res;
+}
+
+std::string planSummaryJson(const PlanRequest &req, const PlanRunResult &r)
+{
+    std::ostringstream o;
+    o << "{\n";
+    o << "  \"feasible\": " << (r.feasible ? "true" : "false") << ",\n";
+    o << "  \"status\": " << jsonString(r.status) << ",\n";
+    o << "  \"planner\": " << jsonString(r.planner) << ",\n";
+    o << "  \"field\": " << jsonString(req.problem.field ? req.problem.field->name() : "") << ",\n";
+    o << "  \"start\": [" << num(req.problem.startX) << ", " << num(req.problem.startY) << "],\n";
+    o << "  \"goal\": [" << num(req.problem.goalX) << ", " << num(req.problem.goalY) << "],\n";
+    o << "  \"departure\": " << num(req.problem.t0) << ",\n";
+    o << "  \"speed\": " << num(req.problem.travel.speed) << ",\n";
+    o << "  \"grid_size\": " << num(req.gridSize) << ",\n";
+    o << "  \"sectors\": " << req.sectors << ",\n";
+    o << "  \"travel_time\": " << num(r.travelTime) << ",\n";
+    o << "  \"travel_time_raw\": " << num(r.travelTimeRaw) << ",\n";
+    o << "  \"travel_time_smoothed\": " << num(r.travelTimeSmoothed) << ",\n";
+    o << "  \"straight_line_time\": " << num(r.straightLineTime) << ",\n";
+    o << "  \"path_length\": " << num(r.pathLength) << ",\n";
+    o << "  \"waypoints_raw\": " << r.raw.size() << ",\n";
+    o << "  \"waypoints_smoothed\": " << r.smoothed.size() << ",\n";
+    o << "  \"waypoints_refined\": " << r.refined.size() << ",\n";
+    o << "  \"smoothing\": " << (req.smooth ? "true" : "false") << ",\n";
+    o << "  \"refinement\": " << (req.refine ? "true" : "false") << ",\n";
+    o << "  \"cost_function_calls\": " << r.costFunctionCalls << ",\n";
+    o << "  \"current_model_calls\": " << r.currentModelCalls << ",\n";
+    o << "  \"postprocess_cost_function_calls\": " << r.postprocessCostFunctionCalls << ",\n";
+    o << "  \"planning_time_s\": " << num(r.planningSeconds) << ",\n";
+    o << "  \"postprocess_time_s\": " << num(r.postprocessSeconds) << ",\n";
+    o << "  \"path_checked\": " << (r.pathChecked ? "true" : "false") << "\n";
+    o << "}\n";
+    return o.str();
+}
+
+std::string planPathCsv(const PlanRunResult &r)
+{
+    std::ostringstream o;
+    o << "t,x,y\n";
+    char buf[128];
+    for (const TimedWaypoint &w : r.path)
+    {
+        std::snprintf(buf, sizeof buf, "%.10g,%.10g,%.10g\n", w.t, w.x, w.y);
+        o << buf;
+    }
+    return o.str();
+}
+
+MapRenderer planMap(const PlanRequest &req, const PlanRunResult &r)
+{
+    const GliderProblem &p = req.problem;
+    Region box;
+    box.xMin = p.xMin;
+    box.xMax = p.xMax;
+    box.yMin = p.yMin;
+    box.yMax = p.yMax;
+    MapOptions mo;
+    mo.title = !req.title.empty() ? req.title
+                                  : std::string(p.field ? p.field->name() : "field") + " - " + r.planner +
+                                        ", V = " + num(p.travel.speed) + ", departure t = " + num(p.t0);
+    MapRenderer map(box, mo);
+    if (p.field)
+        map.setField(p.field, p.t0, p.travel.depth);
+    for (const MapPolygon &poly : req.polygons)
+        map.addPolygon(poly);
+    auto fmtT = [](double t) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.2f", t);
+        return std::string(buf);
+    };
+    if (!r.raw.empty())
+    {
+        const bool lattice = isLatticePlanner(r.planner);
+        std::string rawLabel = r.planner + (lattice ? " lattice: " : " path: ") + std::to_string(r.raw.size()) + " wp";
+        rawLabel += r.feasible ? ", T=" + fmtT(r.travelTimeRaw) : ", not at goal";
+        const bool smoothedDiffers = r.smoothed.size() != r.raw.size() || r.travelTimeSmoothed < r.travelTimeRaw;
+        const bool refinedDiffers = r.refined.size() != r.smoothed.size() || r.travelTime < r.travelTimeSmoothed;
+        MapPath raw = MapRenderer::rawPathStyle(rawLabel, r.raw);
+        if (!smoothedDiffers && !refinedDiffers)
+            raw.timeTicks = true;
+        map.addPath(raw);
+        if (req.smooth && smoothedDiffers)
+        {
+            MapPath s = MapRenderer::smoothedPathStyle(
+                "smoothed: " + std::to_string(r.smoothed.size()) + " wp, T=" + fmtT(r.travelTimeSmoothed),
+                r.smoothed);
+            s.timeTicks = !refinedDiffers || !req.refine;
+            map.addPath(s);
+        }
+        if (req.refine && refinedDiffers)
+            map.addPath(MapRenderer::refinedPathStyle(
+                "refined: " + std::to_string(r.refined.size()) + " wp, T=" + fmtT(r.travelTime), r.refined));
+    }
+    map.setStartGoal(p.startX, p.startY, p.goalX, p.goalY);
+    if (r.feasible)
+    {
+        map.addNote("travel time " + fmtT(r.travelTime));
+        map.addNote("path length " + fmtT(r.pathLength));
+        map.addNote("straight line: " +
+                    (std::isfinite(r.straightLineTime) ? "T=" + fmtT(r.straightLineTime) : std::string("impassable")));
+    }
+    else
+        map.addNote("no path found (" + r.status + ")");
+    map.addNote("field shown at departure");
+    return map;
+}
+
+std::vector<std::string> writePlanOutputs(const PlanRequest &req, const PlanRunResult &r,
+                                          const std::string &directory)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::create_directories(directory, ec);
+    if (ec || !fs::is_directory(directory))
+        throw Error("writePlanOutputs: cannot create output directory '" + directory + "'" +
+                    (ec ? ": " + ec.message() : std::string()));
+    const fs::path dir(directory);
+    std::vector<std::string> files = {(dir / "summary.json").string(), (dir / "path.csv").string(),
+                                      (dir / "map.svg").string(), (dir / "map.png").string()};
+    writeFile(files[0], planSummaryJson(req, r));
+    writeFile(files[1], planPathCsv(r));
+    const MapRenderer map = planMap(req, r);
+    map.writeSvg(files[2]);
+    map.writePng(files[3]);
+    return files;
+}
+
+void printPlanReport(std::ostream &out, const PlanRequest &req, const PlanRunResult &r)
+{
+    char buf[256];
+    const GliderProblem &p = req.problem;
+    std::snprintf(buf, sizeof buf, "Field: %s, V = %g, departure t0 = %g\n", p.field ? p.field->name().c_str() : "?",
+                  p.travel.speed, p.t0);
+    out << buf;
+    std::snprintf(buf, sizeof buf, "Start (%g, %g) -> goal (%g, %g); planner %s", p.startX, p.startY, p.goalX,
+                  p.goalY, r.planner.c_str());
+    out << buf;
+    if (isLatticePlanner(r.planner))
+    {
+        std::snprintf(buf, sizeof buf, " (grid %g, %u sectors)", req.gridSize, req.sectors);
+        out << buf;
+    }
+    out << "\n";
+    out << "Status: " << r.status << (r.feasible ? "" : " - no path to the goal") << "\n";
+    if (r.feasible)
+    {
+        std::snprintf(buf, sizeof buf, "Travel time:        %.4f (raw %.4f, smoothed %.4f)\n", r.travelTime,
+                      r.travelTimeRaw, r.travelTimeSmoothed);
+        out << buf;
+        std::snprintf(buf, sizeof buf, "Path length:        %.4f\n", r.pathLength);
+        out << buf;
+        if (std::isfinite(r.straightLineTime))
+            std::snprintf(buf, sizeof buf, "Straight line:      %.4f\n", r.straightLineTime);
+        else
+            std::snprintf(buf, sizeof buf, "Straight line:      impassable\n");
+        out << buf;
+    }
+    std::snprintf(buf, sizeof buf, "Waypoints:          raw %zu, smoothed %zu%s, refined %zu%s\n", r.raw.size(),
+                  r.smoothed.size(), req.smooth ? "" : " (off)", r.refined.size(), req.refine ? "" : " (off)");
+    out << buf;
+    std::snprintf(buf, sizeof buf, "CFC (cost function calls): %llu; CMC (current model calls): %llu\n",
+                  static_cast<unsigned long long>(r.costFunctionCalls),
+                  static_cast<unsigned long long>(r.currentModelCalls));
+    out << buf;
+    std::snprintf(buf, sizeof buf, "Planning time:      %.3f s (post-processing %.3f s, %llu CFC)\n",
+                  r.planningSeconds, r.postprocessSeconds,
+                  static_cast<unsigned long long>(r.postprocessCostFunctionCalls));
+    out << buf;
+    if (r.feasible)
+    {
+        out << "Waypoints (t, x, y):\n";
+        for (const TimedWaypoint &w : r.path)
+        {
+            std::snprintf(buf, sizeof buf, "  %9.4f  %8.4f  %8.4f\n", w.t, w.x, w.y);
+            out << buf;
+        }
+    }
+}
+}  // namespace ompl_glider
