@@ -1,6 +1,7 @@
 #include "ompl_glider/current/GriddedCurrentField.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -22,7 +23,13 @@ std::vector<double> indexAxis(std::size_t n)
 }
 }  // namespace
 
-GriddedCurrentField::GriddedCurrentField(GriddedData d, GriddedFieldOptions options) : options_(std::move(options))
+namespace
+{
+std::atomic<std::uint64_t> nextFieldId{1};
+}
+
+GriddedCurrentField::GriddedCurrentField(GriddedData d, GriddedFieldOptions options)
+  : options_(std::move(options)), id_(nextFieldId.fetch_add(1))
 {
     const std::string who = "gridded field '" + options_.name + "'";
     nx_ = d.nx;
@@ -198,7 +205,7 @@ bool GriddedCurrentField::cellInside(std::size_t ci, std::size_t cj, double px, 
     const double gy = nodeY_[n11] - nodeY_[n10] - nodeY_[n01] + y00;
     a = 0.5;
     b = 0.5;
-    for (int iter = 0; iter < 12; ++iter)
+    for (int iter = 0; iter < 16; ++iter)
     {
         const double rx = x00 + a * ex + b * fx + a * b * gx - px;
         const double ry = y00 + a * ey + b * fy + a * b * gy - py;
@@ -211,7 +218,7 @@ bool GriddedCurrentField::cellInside(std::size_t ci, std::size_t cj, double px, 
         b -= db;
         if (!std::isfinite(a) || !std::isfinite(b))
             return false;
-        if (std::abs(da) + std::abs(db) < 1e-13)
+        if (std::abs(da) + std::abs(db) < 1e-12)
             break;
     }
     return true;
@@ -232,23 +239,47 @@ bool GriddedCurrentField::locate(double x, double y, double &fi, double &fj) con
         return inside;
     }
     const std::size_t cx = nx_ - 1, cy = ny_ - 1;
-    const double qx = std::clamp((x - bx0_) * bInv_, 0.0, double(bnx_ - 1));
-    const double qy = std::clamp((y - by0_) * bInv_, 0.0, double(bny_ - 1));
-    const std::int32_t start = bucket_[static_cast<std::size_t>(qy) * bnx_ + static_cast<std::size_t>(qx)];
-    std::size_t ci = static_cast<std::size_t>(start) % cx, cj = static_cast<std::size_t>(start) / cx;
-    const std::size_t maxSteps = 2 * (nx_ + ny_) + 8;
+    // Consecutive queries of one thread are usually in the same or a neighbouring cell (the travel-time code
+    // walks along legs): start from the last cell found by this thread in this field when it is close.
+    struct Hint
+    {
+        std::uint64_t field{0};
+        std::size_t ci{0}, cj{0};
+    };
+    thread_local Hint hint;
+    constexpr double tol = 1e-10;
     double a = 0.5, b = 0.5;
+    std::size_t ci, cj;
+    if (hint.field == id_ && hint.ci < cx && hint.cj < cy && cellInside(hint.ci, hint.cj, x, y, a, b) &&
+        a > -2.0 && a < 3.0 && b > -2.0 && b < 3.0)
+    {
+        ci = hint.ci;
+        cj = hint.cj;
+    }
+    else
+    {
+        const double qx = std::clamp((x - bx0_) * bInv_, 0.0, double(bnx_ - 1));
+        const double qy = std::clamp((y - by0_) * bInv_, 0.0, double(bny_ - 1));
+        const std::int32_t start = bucket_[static_cast<std::size_t>(qy) * bnx_ + static_cast<std::size_t>(qx)];
+        ci = static_cast<std::size_t>(start) % cx;
+        cj = static_cast<std::size_t>(start) / cx;
+        if (!cellInside(ci, cj, x, y, a, b))
+            a = b = std::numeric_limits<double>::quiet_NaN();
+    }
+    const std::size_t maxSteps = 2 * (nx_ + ny_) + 8;
     for (std::size_t step = 0; step < maxSteps; ++step)
     {
-        if (!cellInside(ci, cj, x, y, a, b))
+        if (step > 0 && !cellInside(ci, cj, x, y, a, b))
             break;
-        constexpr double tol = 1e-10;
+        if (std::isnan(a))
+            break;
         const int di = a < -tol ? -1 : (a > 1 + tol ? 1 : 0);
         const int dj = b < -tol ? -1 : (b > 1 + tol ? 1 : 0);
         if (di == 0 && dj == 0)
         {
             fi = double(ci) + std::clamp(a, 0.0, 1.0);
             fj = double(cj) + std::clamp(b, 0.0, 1.0);
+            hint = {id_, ci, cj};
             return true;
         }
         const std::size_t ni = di < 0 ? (ci > 0 ? ci - 1 : ci) : (di > 0 ? std::min(ci + 1, cx - 1) : ci);

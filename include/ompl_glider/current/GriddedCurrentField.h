@@ -161,6 +161,7 @@ private:
     void buildLocator();
 
     GriddedFieldOptions options_;
+    std::uint64_t id_{0};  // unique per instance (key of the per-thread locate hint)
     bool curvilinear_{false};
     std::size_t nx_{0}, ny_{0};
     Axis x_, y_;            // rectilinear axes, or index axes 0..n-1 when curvilinear
