@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -117,6 +118,28 @@ GriddedCurrentField::GriddedCurrentField(GriddedData d, GriddedFieldOptions opti
     overshoot_ = overshootFactor(x_, hs) * overshootFactor(y_, hs) * overshootFactor(depth_, options_.depth) *
                  overshootFactor(time_, options_.time);
 
+    minCell_ = kInf;
+    if (curvilinear_)
+    {
+        for (std::size_t j = 0; j < ny_; ++j)
+            for (std::size_t i = 0; i < nx_; ++i)
+            {
+                const std::size_t n = j * nx_ + i;
+                if (i + 1 < nx_)
+                    minCell_ = std::min(minCell_, std::hypot(nodeX_[n + 1] - nodeX_[n], nodeY_[n + 1] - nodeY_[n]));
+                if (j + 1 < ny_)
+                    minCell_ = std::min(minCell_, std::hypot(nodeX_[n + nx_] - nodeX_[n], nodeY_[n + nx_] - nodeY_[n]));
+            }
+    }
+    else
+    {
+        for (std::size_t i = 0; i + 1 < nx_; ++i)
+            minCell_ = std::min(minCell_, x_[i + 1] - x_[i]);
+        for (std::size_t j = 0; j + 1 < ny_; ++j)
+            minCell_ = std::min(minCell_, y_[j + 1] - y_[j]);
+    }
+    if (!(minCell_ > 0.0))
+        throw Error(who + ": two neighbouring nodes coincide");
     if (curvilinear_)
     {
         xMin_ = *std::min_element(nodeX_.begin(), nodeX_.end());
@@ -511,6 +534,33 @@ bool GriddedCurrentField::inWater(double x, double y, double z) const
     if (frac > 0.0 && !water(k + 1))
         return false;
     return true;
+}
+
+bool GriddedCurrentField::segmentInWater(double x1, double y1, double x2, double y2, double z) const
+{
+    if (!inWater(x1, y1, z) || !inWater(x2, y2, z))
+        return false;
+    const double L = std::hypot(x2 - x1, y2 - y1);
+    const double n = std::min(1e7, std::ceil(L / (0.25 * minCell_)));
+    for (double k = 1; k < n; ++k)
+    {
+        const double s = k / n;
+        if (!inWater(x1 + s * (x2 - x1), y1 + s * (y2 - y1), z))
+            return false;
+    }
+    return true;
+}
+
+BeyondForecast parseBeyondForecast(const std::string &name)
+{
+    std::string s;
+    for (char c : name)
+        s += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (s == "hold" || s == "hold_last" || s == "hold-last" || s == "holdlast")
+        return BeyondForecast::HoldLast;
+    if (s == "refuse")
+        return BeyondForecast::Refuse;
+    throw Error("after-forecast policy '" + name + "': expected hold or refuse");
 }
 
 double GriddedCurrentField::timeBegin() const

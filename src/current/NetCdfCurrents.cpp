@@ -922,6 +922,10 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
         const int zv = coordVar[std::size_t(dimZ)];
         const std::string zn = f.varName(zv);
         std::vector<double> zs = f.readAll1D(zv);
+        const std::string zsn = stdName(f, zv);
+        if (zsn.rfind("ocean_s", 0) == 0 || zsn.rfind("ocean_sigma", 0) == 0 || zsn.rfind("ocean_double_sigma", 0) == 0)
+            throw f.error("depth '" + zn + "' is a terrain-following coordinate (standard_name " + zsn +
+                          "); expected depth in metres: interpolate the file to z levels first");
         const std::string pos = lower(f.attText(zv, "positive").value_or("down"));
         if (pos != "down" && pos != "up")
             throw f.error("depth '" + zn + "': attribute positive = '" + pos + "', expected 'down' or 'up'");

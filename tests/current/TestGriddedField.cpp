@@ -3,7 +3,10 @@
 // curvilinear grids, land cells, the after-forecast policies, Jacobians and the speed bound.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <atomic>
 #include <cmath>
+#include <thread>
 #include <functional>
 #include <memory>
 #include <random>
@@ -320,6 +323,11 @@ TEST(GriddedField, LandCellsAreDryAndNeverLeakFillValues)
     TravelTimeCalculator tt(std::make_shared<GriddedCurrentField>(d, hold), p);
     EXPECT_TRUE(std::isinf(tt.travelTime(3.5, 3.5, 2.2, 2.2, 0.0)));
     EXPECT_TRUE(std::isfinite(tt.travelTime(3.5, 3.5, 3.5, 0.5, 0.0)));
+    // whole legs: across the land node no, around it yes; a thin strip between water nodes is caught
+    EXPECT_FALSE(f.segmentInWater(0.5, 0.5, 3.5, 3.5, 0));
+    EXPECT_TRUE(f.segmentInWater(0.5, 3.5, 3.5, 3.5, 0));
+    EXPECT_TRUE(f.segmentInWater(3.5, 0.5, 3.5, 3.5, 0));
+    EXPECT_FALSE(f.segmentInWater(0.5, 0.5, 0.6, 0.6, 10));
     // non-finite data at a water node is an error
     GriddedData bad = sampleRect(x, y, {0}, {0}, fu, fv);
     bad.u[7] = std::nanf("");
@@ -412,6 +420,53 @@ TEST(GriddedField, JacobianMatchesFiniteDifferencesForEverySchemeCombination)
             }
 }
 
+TEST(GriddedField, ThreadsQueryingACurvilinearGridGetTheSameAnswers)
+{
+    // The point locator keeps a per-thread hint: concurrent queries (and several fields) must not disturb it.
+    const std::size_t nx = 40, ny = 30;
+    GriddedData d;
+    d.nx = nx;
+    d.ny = ny;
+    for (std::size_t j = 0; j < ny; ++j)
+        for (std::size_t i = 0; i < nx; ++i)
+        {
+            const double r = 1000.0 + 50.0 * j, a = 0.02 * i;
+            d.nodeX.push_back(r * std::cos(a));
+            d.nodeY.push_back(r * std::sin(a));
+            d.u.push_back(float(std::sin(0.3 * i) + 0.1 * j));
+            d.v.push_back(float(std::cos(0.2 * j)));
+        }
+    GriddedCurrentField f1(d), f2(d, schemes(Interp2D::Bicubic));
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> R(1000, 2450), A(0, 0.78);
+    std::vector<std::array<double, 2>> pts(4000);
+    for (auto &p : pts)
+    {
+        const double r = R(rng), a = A(rng);
+        p = {r * std::cos(a), r * std::sin(a)};
+    }
+    std::vector<double> ref;
+    for (const auto &p : pts)
+        ref.push_back(f1.velocity(p[0], p[1], 0, 0).u + f2.velocity(p[0], p[1], 0, 0).v);
+    f1.resetCallCount();
+    std::vector<std::thread> th;
+    std::atomic<int> mismatches{0};
+    for (int k = 0; k < 4; ++k)
+        th.emplace_back([&, k] {
+            for (std::size_t n = 0; n < pts.size(); ++n)
+            {
+                const std::size_t q = (n * (k + 1) * 7919) % pts.size();
+                const double val = f1.velocity(pts[q][0], pts[q][1], 0, 0).u + f2.velocity(pts[q][0], pts[q][1], 0, 0).v;
+                if (std::abs(val - ref[q]) > 1e-12)
+                    ++mismatches;
+            }
+        });
+    for (auto &t : th)
+        t.join();
+    EXPECT_EQ(mismatches.load(), 0);
+    EXPECT_EQ(f1.callCount(), 4 * pts.size());
+}
+
 TEST(GriddedField, CountsOneCallPerQueryAndValidatesItsData)
 {
     auto fu = [](double, double, double, double) { return 0.1; };
@@ -436,4 +491,7 @@ TEST(GriddedField, CountsOneCallPerQueryAndValidatesItsData)
     GriddedData e = sampleRect(kX, kY, {0}, {0}, fu, fu);
     e.x[3] = e.x[2];
     EXPECT_THROW(GriddedCurrentField{e}, Error);
+    EXPECT_EQ(parseBeyondForecast("Hold"), BeyondForecast::HoldLast);
+    EXPECT_EQ(parseBeyondForecast("refuse"), BeyondForecast::Refuse);
+    EXPECT_THROW(parseBeyondForecast("extrapolate"), Error);
 }

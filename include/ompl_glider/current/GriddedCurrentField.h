@@ -18,6 +18,9 @@ enum class BeyondForecast
     Refuse     ///< timeEnd() = last forecast time: travel-time code reports legs that need later data infeasible
 };
 
+/// @brief Parses "hold" / "hold_last" / "hold-last" or "refuse" (case-insensitive). @throws Error otherwise.
+BeyondForecast parseBeyondForecast(const std::string &name);
+
 /// @brief Interpolation schemes and policies of a gridded field.
 struct GriddedFieldOptions
 {
@@ -131,6 +134,16 @@ public:
     {
         return overshoot_;
     }
+    /// @brief True when the straight segment stays in water (inWater()) at depth z: both ends and points every
+    /// quarter of the smallest cell size between them, so it misses a dry cell only where the segment clips it
+    /// over less than a quarter cell. For environment/planner code that must keep whole legs off land (the
+    /// travel-time code itself checks inWater() only at its integration steps).
+    bool segmentInWater(double x1, double y1, double x2, double y2, double z) const;
+    /// @brief Smallest distance between neighbouring grid nodes (x/y units).
+    double minCellSize() const
+    {
+        return minCell_;
+    }
     /// @brief Fractional grid indices (fi, fj) of (x, y); false when the point is outside the grid (the indices
     /// are then those of the nearest boundary point of the last cell visited).
     bool locate(double x, double y, double &fi, double &fj) const;
@@ -172,6 +185,7 @@ private:
     std::vector<double> layerMaxSpeed_, layerMaxU_, layerMaxV_;  // per (t, k)
     double overshoot_{1.0};
     double fdStep_{1e-6};
+    double minCell_{1.0};
     // locator for curvilinear grids
     double bx0_{0}, by0_{0}, bInv_{1};
     std::size_t bnx_{0}, bny_{0};
