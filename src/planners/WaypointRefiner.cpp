@@ -32,6 +32,17 @@ struct Search
         return arrivalTime(ctx, wp, t0);
     }
 
+    /// Arrival at the goal when the path is flown from waypoint k, reached at time tk (the legs before k are
+    /// unchanged, so their times are reused).
+    double costFrom(const std::vector<TimedWaypoint> &wp, std::size_t k, double tk)
+    {
+        ++evaluations;
+        double t = tk;
+        for (std::size_t j = k + 1; j < wp.size() && std::isfinite(t); ++j)
+            t += legTravelTime(ctx, wp[j - 1].x, wp[j - 1].y, wp[j].x, wp[j].y, t);
+        return t;
+    }
+
     bool inBounds(double x, double y) const
     {
         const Region &r = ctx.region;
@@ -46,6 +57,7 @@ struct Search
             return;
         std::vector<double> step(n, s0);
         const double sMax = 4.0 * s0;
+        std::vector<TimedWaypoint> timed = retimeWaypoints(ctx, wp, t0);  // arrival times of the current path
         while (!exhausted())
         {
             bool active = false;
@@ -77,12 +89,16 @@ struct Search
                     const TimedWaypoint keep = wp[i];
                     wp[i].x = nx;
                     wp[i].y = ny;
-                    const double c = cost(wp);
+                    const double c = costFrom(wp, i - 1, timed[i - 1].t);
                     if (c < best)
                     {
                         best = c;
                         improved = true;
                         ++accepted;
+                        // re-time from the moved waypoint's predecessor on
+                        for (std::size_t j = i; j < n; ++j)
+                            timed[j].t = timed[j - 1].t + legTravelTime(ctx, wp[j - 1].x, wp[j - 1].y, wp[j].x,
+                                                                        wp[j].y, timed[j - 1].t);
                         break;
                     }
                     wp[i] = keep;

@@ -44,12 +44,13 @@ double resimulated(const GliderContext &ctx, const ompl::geometric::PathGeometri
 TEST(PlannerVsOptimum, MeanderingJetCrossings)
 {
     auto jet = std::make_shared<MeanderingJet>();
-    // Six pairs crossing the jet (south -> north and north -> south), plus one where the best lattice path
-    // itself is 7.4% slower than the optimum (TVE on the same lattice: 14.310 vs 13.317): smoothing cannot fix
-    // that (it only drops waypoints), refinement does. Every optimum stays inside the region (checked below).
+    // Six pairs crossing the jet (south -> north and north -> south), plus two where the best lattice path itself
+    // is more than 5% slower than the optimum (TVE on the same lattice: 14.310 vs 13.317, and 20.151 vs 18.474
+    // against the jet): smoothing cannot fix that (it only drops waypoints), refinement does. Every optimum stays
+    // inside the region (checked below).
     std::vector<Row> rows = {{1.0, -3.0, 8.0, 3.0, false},  {1.0, 3.0, 9.0, -2.5, false}, {2.0, -3.5, 7.0, 3.5, false},
                              {0.5, -2.0, 9.5, 2.0, false},  {2.0, 3.5, 8.0, -3.5, false}, {0.5, 3.0, 5.0, -3.0, false},
-                             {5.0, -3.5, 4.0, 3.5, true}};
+                             {8.0, 3.0, 2.0, -3.0, true}, {5.0, -3.5, 4.0, 3.5, true}};
     for (Row &row : rows)
     {
         SCOPED_TRACE("start (" + std::to_string(row.sx) + ", " + std::to_string(row.sy) + ") goal (" +
