@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <atomic>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -282,4 +283,39 @@ TEST(MissionRun, NetCdfForecastMission)
     const GotoList g = readGotoFile(spec.outputs.directory + "/goto_l13.ma");
     EXPECT_NEAR(g.waypoints.back().lon, -51.5, 1e-9);
     EXPECT_NEAR(g.waypoints.back().lat, 48.45, 1e-9);
+}
+
+TEST(MissionRun, MeanderingJetDepartureAgainstBruteForce)
+{
+    // 000 Sec. 5 on full lattice searches: one flow period (2 pi / 0.4 = 15.7) of departures; the scheme must come
+    // within 1 % of a brute-force sweep at spacing 0.05 with at most a fifth of its searches. (A coarser lattice than
+    // the benchmark's, to keep the test short; bench_departure runs the 0.4 lattice at spacing 0.02.)
+    MissionSpec spec = defaultGulfStreamMission();
+    spec.planner.gridSize = 0.8;
+    spec.planner.sectors = 2;
+    const MissionProblem problem(spec);
+    std::atomic<std::size_t> calls{0};
+    const TravelTimeOfDeparture search = problem.departureFunction();
+    const TravelTimeOfDeparture f = [&](double t) {
+        ++calls;
+        return search(t);
+    };
+    DepartureSearchParams p;
+    p.windowBegin = 5.0;
+    p.windowEnd = 21.0;
+    p.spacing = 0.05;
+    const DepartureSearchResult brute = bruteForceDepartureTime(f, p);
+    const std::size_t bruteCalls = calls.exchange(0);
+    ASSERT_TRUE(brute.found);
+    EXPECT_EQ(bruteCalls, 321u);
+    p.spacing = 1.0;
+    p.tolerance = 1e-3;
+    const DepartureSearchResult opt = optimalDepartureTime(f, p);
+    ASSERT_TRUE(opt.found);
+    EXPECT_EQ(calls.load(), opt.fineEvaluations);
+    EXPECT_LE(opt.fineEvaluations * 5, bruteCalls);
+    EXPECT_LE(opt.travelTime, 1.01 * brute.travelTime);
+    // Interior minimum: not at the window's ends.
+    EXPECT_GT(brute.departure, 6.0);
+    EXPECT_LT(brute.departure, 20.0);
 }
