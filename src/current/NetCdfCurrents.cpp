@@ -598,8 +598,15 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
         if (role[d] != Role::None)
             coordVar[d] = *cv;
     }
-    if (!opt.lonName.empty() && coordVar.end() != std::find(coordVar.begin(), coordVar.end(), *f.findVar(opt.lonName)))
-        (opt.coordinates == CoordinateMode::Cartesian ? cartAxes : geoAxes) = true;
+    for (std::size_t d = 0; d < nd; ++d)
+    {
+        // axes named by the user: geographic when their attributes say degrees, else Cartesian
+        const bool named = (role[d] == Role::X && !opt.lonName.empty()) || (role[d] == Role::Y && !opt.latName.empty());
+        if (!named || coordVar[d] < 0)
+            continue;
+        const bool deg = role[d] == Role::X ? isLonVar(f, coordVar[d]) : isLatVar(f, coordVar[d]);
+        (deg && opt.coordinates != CoordinateMode::Cartesian ? geoAxes : cartAxes) = true;
+    }
     auto count = [&](Role r) { return std::count(role.begin(), role.end(), r); };
     for (Role r : {Role::Time, Role::Depth, Role::X, Role::Y})
         if (count(r) > 1)

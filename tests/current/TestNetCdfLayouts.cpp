@@ -456,6 +456,18 @@ TEST(NetCdfLayouts, DepthPositiveUpAndCartesianFiles)
     NetCdfCurrentOptions o;
     o.maxDepth = 10.0;  // layers 0, 50 + 2 -> all 3 here
     EXPECT_EQ(loadNetCdfCurrents(path, o).loadedShape[1], 3u);
+    // the same with every name given: still Cartesian (the names do not make it geographic)
+    o.uName = "u";
+    o.vName = "v";
+    o.lonName = "x";
+    o.latName = "y";
+    o.depthName = "z";
+    const NetCdfCurrents named = loadNetCdfCurrents(path, o);
+    EXPECT_FALSE(named.geographic);
+    EXPECT_NEAR(named.field->velocity(1500.0, 500.0, 75.0, 0.0).u, c.u, 1e-9);
+    // asking for geographic coordinates of a Cartesian file is an error naming what was expected
+    o.coordinates = CoordinateMode::Geographic;
+    EXPECT_THROW(loadNetCdfCurrents(path, o), Error);
 }
 
 TEST(NetCdfLayouts, ErrorsNameTheFileTheVariableAndWhatWasExpected)
