@@ -265,43 +265,64 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
         const double ux = lattice_.x(u), uy = lattice_.y(u);
 
         std::optional<double> phiOpt;
+        double halfWidth = options.deltaPhiMax;
         if (pruning && u != s && pi_[u] != Lattice::kNone)
         {
             const Lattice::VertexId p = pi_[u];
             phiOpt = calcOptimalCourse(lattice_.x(p), lattice_.y(p), d_[p], ux, uy, du, options.zermeloSteps);
-            if (phiOpt && options.courseExtrapolation != 0.0)
+            if (phiOpt)
             {
                 const double edge = std::atan2(uy - lattice_.y(p), ux - lattice_.x(p));
-                *phiOpt += options.courseExtrapolation * angleDiff(*phiOpt, edge);
+                const double turn = angleDiff(*phiOpt, edge);
+                *phiOpt += options.courseExtrapolation * turn;
+                halfWidth = options.deltaPhiMax + options.turnWidening * std::abs(turn);
             }
         }
         bool prunedHere = false;
-        lattice_.forEachSuccessor(u, [&](Lattice::VertexId v) {
-            if (!(du < d_[v]))
-                return;  // d[u] >= d[v]: the edge cannot improve v (000 Table 1, difference 2)
-            const double vx = lattice_.x(v), vy = lattice_.y(v);
-            if (phiOpt && !(options.neverPruneGoal && v == g) && std::abs(angleDiff(*phiOpt, std::atan2(vy - uy, vx - ux))) > options.deltaPhiMax)
+        bool feasibleInCone = false;  // some examined edge had a finite travel time
+        // pass 0: the cone around phi_opt (everything without pruning); pass 1: the rest, only when the cone was a
+        // dead end (options.deadEndFallback).
+        for (int pass = 0; pass < 2; ++pass)
+        {
+            if (pass == 1 && (!prunedHere || feasibleInCone || !options.deadEndFallback))
+                break;
+            lattice_.forEachSuccessor(u, [&](Lattice::VertexId v) {
+                if (!(du < d_[v]))
+                    return;  // d[u] >= d[v]: the edge cannot improve v (000 Table 1, difference 2)
+                const double vx = lattice_.x(v), vy = lattice_.y(v);
+                const bool inCone = !phiOpt || (options.neverPruneGoal && v == g) ||
+                                    std::abs(angleDiff(*phiOpt, std::atan2(vy - uy, vx - ux))) <= halfWidth;
+                if (pass == 0 && !inCone)
+                {
+                    ++res.prunedEdges;
+                    prunedHere = true;
+                    return;
+                }
+                if (pass == 1 && inCone)
+                    return;  // examined in pass 0
+                if (!inWater(v))
+                    return;
+                const double w = travel.travelTime(ux, uy, vx, vy, du);
+                if (!std::isfinite(w))
+                    return;
+                feasibleInCone = true;
+                const double dv = du + w;
+                if (!(dv < d_[v]) || dv > ctx.region.tMax)
+                    return;  // no improvement, or later than the planning window
+                if (env && (!env->pointFree(vx, vy, dv) || !env->legFree(ux, uy, du, vx, vy, dv)))
+                    return;
+                if (d_[v] == kInf)
+                    reached_.push_back(v);
+                d_[v] = dv;
+                pi_[v] = u;
+                Q.push({dv + h(v), dv, v});
+            });
+            if (pass == 1)
             {
-                ++res.prunedEdges;
-                prunedHere = true;
-                return;
+                ++res.deadEnds;
+                prunedHere = false;  // everything examined now
             }
-            if (!inWater(v))
-                return;
-            const double w = travel.travelTime(ux, uy, vx, vy, du);
-            if (!std::isfinite(w))
-                return;
-            const double dv = du + w;
-            if (!(dv < d_[v]) || dv > ctx.region.tMax)
-                return;  // no improvement, or later than the planning window
-            if (env && (!env->pointFree(vx, vy, dv) || !env->legFree(ux, uy, du, vx, vy, dv)))
-                return;
-            if (d_[v] == kInf)
-                reached_.push_back(v);
-            d_[v] = dv;
-            pi_[v] = u;
-            Q.push({dv + h(v), dv, v});
-        });
+        }
         if (prunedHere)
             prunedAt.push_back(u);
     }

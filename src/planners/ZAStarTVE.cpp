@@ -66,6 +66,8 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
                          "1.:1.:180.");
     declareParam<double>("course_extrapolation", this, &ZAStarTVE::setCourseExtrapolation,
                          &ZAStarTVE::getCourseExtrapolation, "0.:0.25:2.");
+    declareParam<double>("turn_widening", this, &ZAStarTVE::setTurnWidening, &ZAStarTVE::getTurnWidening,
+                         "0.:0.25:5.");
     declareParam<unsigned>("sectors", this, &ZAStarTVE::setSectors, &ZAStarTVE::getSectors, "1:1:5");
     declareParam<double>("grid_size", this, &ZAStarTVE::setGridSize, &ZAStarTVE::getGridSize, "0.:0.01:1000.");
 
@@ -109,6 +111,13 @@ void ZAStarTVE::setDeltaPhiMax(double degrees)
 double ZAStarTVE::getDeltaPhiMax() const
 {
     return options_.deltaPhiMax / kDeg;
+}
+
+void ZAStarTVE::setTurnWidening(double w)
+{
+    if (!(w >= 0.0) || !std::isfinite(w))
+        throw Error("ZAStarTVE: turn_widening must be finite and >= 0 (got " + std::to_string(w) + ")");
+    options_.turnWidening = w;
 }
 
 void ZAStarTVE::setSectors(unsigned n)

@@ -385,6 +385,10 @@ TEST(ZAStarTVE, ConfigurationsAndParameters)
     EXPECT_TRUE(za.params().setParam("heuristic", "0"));
     EXPECT_FALSE(za.getHeuristic());
     EXPECT_TRUE(za.params().hasParam("zermelo"));
+    EXPECT_TRUE(za.params().setParam("turn_widening", "0"));
+    EXPECT_DOUBLE_EQ(za.getTurnWidening(), 0.0);
+    EXPECT_TRUE(za.params().setParam("course_extrapolation", "0"));
+    EXPECT_DOUBLE_EQ(za.getCourseExtrapolation(), 0.0);
     EXPECT_THROW(ZAStarTVE(si, ctx, "RRT"), Error);
     EXPECT_THROW(za.setSectors(0), Error);
     EXPECT_THROW(za.setGridSize(-1.0), Error);

@@ -21,23 +21,32 @@ struct TveOptions
 {
     bool heuristic{true};   ///< A*: h(u) = |x_u - x_g| / (V + max|c|) (000 Eq. 1)
     bool zermelo{true};     ///< Zermelo pruning (000 Sec. 2.2.2)
-    /// Half-width of the accepted course range around phi_opt, radians (000 Fig. 3, Table 2). The default, 26 deg,
-    /// keeps 3 to 5 of the 31 forward successors of a 3-sector lattice (the paper: 5). Tuned on the meandering jet
-    /// (grid 0.4, 3 sectors) with courseExtrapolation = 1: 22 deg prunes more but misses the lattice optimum more
-    /// often; see benchmarks/table4/README.md.
-    double deltaPhiMax{26.0 * 3.14159265358979323846 / 180.0};
+    /// Half-width of the accepted course range around phi_opt, radians (000 Fig. 3, Table 2), before the turn
+    /// widening below. Defaults (18 deg, courseExtrapolation 1, turnWidening 1.5) were tuned on the meandering jet
+    /// (grid 0.4, 3 sectors; benchmarks/table4/README.md): where the course runs straight they keep 3 of the 31
+    /// forward successors of a 3-sector lattice (the paper: 5). The paper's rule is courseExtrapolation = 0,
+    /// turnWidening = 0 with a fixed range.
+    double deltaPhiMax{18.0 * 3.14159265358979323846 / 180.0};
     /// Midpoint (RK2) steps of CALC-OPTDIR per half edge; each step costs 2 velocity + 2 Jacobian calls (CMC).
     unsigned zermeloSteps{1};
     /// Extrapolation of the predicted course: the cone is centred on phi_opt + k (phi_opt - phi_edge), where
     /// phi_edge is the direction of the predecessor edge. k = 0 is the paper's rule (000 Table 2); k = 1 continues the
     /// turn predicted from the middle of the predecessor edge over the next half edge.
     double courseExtrapolation{1.0};
+    /// Widening of the cone with the predicted turn: half-width = deltaPhiMax + w |phi_opt - phi_edge| (0 = the
+    /// paper's fixed range). Where Zermelo's law turns the course fast (jet flanks), a lattice path turns by more
+    /// than the prediction over one edge; this keeps pruning hard where the course runs straight.
+    double turnWidening{1.5};
     /// When the pruned search (zermelo) exhausts without reaching the goal, continue without pruning, so that
     /// "no solution" still means "no path on this lattice" (an addition to 000 Table 2, which does not say).
     bool unprunedFallback{true};
     /// Never prune the edge into the goal vertex (an addition to 000 Table 2: near the goal the predicted course
     /// rarely points exactly at it, and without this a pruned search often has to fall back).
     bool neverPruneGoal{true};
+    /// When no edge inside the cone of a vertex has a finite travel time (the predicted course leaves the region,
+    /// runs into land, or is infeasible against the current), examine the vertex's other edges too (an addition to
+    /// 000 Table 2; costs cost-function calls only at such dead ends).
+    bool deadEndFallback{false};
     /// Expansions between two calls of the termination callback.
     unsigned checkEvery{8};
 };
@@ -70,6 +79,7 @@ struct TveResult
     std::uint64_t currentModelCalls{0};  ///< CMC of this search, CALC-OPTDIR included (000 Table 4)
     std::uint64_t expansions{0};         ///< vertices extracted from the queue (reopenings counted again)
     std::uint64_t prunedEdges{0};        ///< edges not examined because of Zermelo pruning
+    std::uint64_t deadEnds{0};           ///< expansions whose Zermelo cone was a dead end (see deadEndFallback)
     bool fallbackUsed{false};            ///< the pruned search exhausted and continued without pruning
     std::string message;                 ///< why the start or goal is invalid
 };

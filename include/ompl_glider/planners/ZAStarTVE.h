@@ -84,7 +84,7 @@ public:
     {
         return options_.zermelo;
     }
-    /// @brief Half-width of the accepted course range, degrees (param "delta_phi_max", default 26).
+    /// @brief Half-width of the accepted course range, degrees (param "delta_phi_max", default 18).
     void setDeltaPhiMax(double degrees);
     /// @brief Half-width of the accepted course range, degrees.
     double getDeltaPhiMax() const;
@@ -97,6 +97,13 @@ public:
     double getCourseExtrapolation() const
     {
         return options_.courseExtrapolation;
+    }
+    /// @brief Cone widening w with the predicted turn (param "turn_widening", default 1.5; 0 = 000 Table 2).
+    void setTurnWidening(double w);
+    /// @brief Cone widening with the predicted turn.
+    double getTurnWidening() const
+    {
+        return options_.turnWidening;
     }
     /// @brief Lattice connectivity n in 1..5 (param "sectors", default 3).
     void setSectors(unsigned n);
