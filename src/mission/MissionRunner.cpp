@@ -19,6 +19,7 @@
 #include "ompl_glider/environment/TimeWindowedZone.h"
 #include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/mission/MissionOutputs.h"
+#include "ompl_glider/mission/NetCdfBathymetry.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
 
@@ -445,8 +446,19 @@ std::shared_ptr<const DiveProfileTravelTime> MissionProblem::diveProfiles(double
         bathymetry = std::make_shared<FunctionBathymetry>([d](double, double) { return d; });
     }
     else if (spec_.dive.bathymetryType == "netcdf")
-        throw Error(spec_.file + ": field 'dive_profile.bathymetry': NetCDF bathymetry is not supported yet "
-                                 "(use type: constant, or a Bathymetry through the library API)");
+    {
+        std::function<void(double, double, double &, double &)> geo;
+        if (projection_)
+            geo = [this](double x, double y, double &lon, double &lat) { toGeographic(x, y, lon, lat); };
+        try
+        {
+            bathymetry = std::make_shared<NetCdfBathymetry>(spec_.dive.bathymetryFile, spec_.dive.bathymetryVariable, geo);
+        }
+        catch (const Error &e)
+        {
+            throw Error(spec_.file + ": field 'dive_profile.bathymetry': " + e.what());
+        }
+    }
     TravelTimeParams t = spec_.travel;
     t.speed = speed;
     return std::make_shared<DiveProfileTravelTime>(field_, t, spec_.dive.params, bathymetry, spec_.dive.threads);

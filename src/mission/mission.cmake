@@ -7,4 +7,5 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/MissionLoader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionRunner.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionOutputs.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
 )

@@ -4,3 +4,4 @@ glider_add_test(test_mission_departure ${CMAKE_CURRENT_LIST_DIR}/TestDepartureTi
 glider_add_test(test_mission_file ${CMAKE_CURRENT_LIST_DIR}/TestMissionFile.cpp)
 glider_add_test(test_mission_run ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp)
 target_link_libraries(test_mission_run PRIVATE yaml-cpp)
+glider_add_test(test_mission_bathymetry ${CMAKE_CURRENT_LIST_DIR}/TestBathymetry.cpp)
