@@ -35,6 +35,7 @@ void usage(std::ostream &out)
            "  --no-smooth        skip path smoothing (000 Table 3)\n"
            "  --no-refine        skip waypoint refinement\n"
            "  --out DIR          write DIR/summary.json, DIR/path.csv, DIR/map.svg and DIR/map.png\n"
+           "  --optimum          also solve Zermelo's optimal-control problem (shooting) and compare\n"
            "  --verbose          show OMPL's log messages\n"
            "  --help             this text\n"
            "Exit status: 0 path found, 1 no path, 2 bad arguments or input.\n";
@@ -128,6 +129,8 @@ int main(int argc, char **argv)
                 req.refine = false;
             else if (a == "--out")
                 outDir = value();
+            else if (a == "--optimum")
+                req.optimum = true;
             else if (a == "--verbose")
                 verbose = true;
             else

@@ -19,6 +19,7 @@
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
+#include "ompl_glider/reference/ZermeloReference.h"
 
 namespace ompl_glider
 {
@@ -180,6 +181,23 @@ PlanRunResult runPlan(const PlanRequest &req)
         res.pathChecked = path.check();
     }
     res.pathLength = pathLength(res.path);
+    if (req.optimum)
+    {
+        ZermeloParams zp;
+        zp.speed = ctx->speed();
+        zp.depth = req.problem.travel.depth;
+        // Any flown path bounds the optimum; without one, the horizon does.
+        zp.maxTime = std::min(req.problem.horizon, res.feasible ? 1.2 * res.travelTime : req.problem.horizon);
+        const ZermeloReference ref(ctx->field, zp);
+        const GliderProblem &p = req.problem;
+        const ZermeloSolution sol = ref.solve(p.startX, p.startY, p.goalX, p.goalY, t0);
+        if (sol.found)
+        {
+            res.optimumTime = sol.travelTime;
+            for (const ZermeloState &z : ref.trajectory(p.startX, p.startY, sol.initialHeading, t0, sol.travelTime))
+                res.optimumPath.push_back({z.x, z.y, z.t});
+        }
+    }
     return res;
 }
 
@@ -212,6 +230,8 @@ std::string planSummaryJson(const PlanRequest &req, const PlanRunResult &r)
     o << "  \"postprocess_cost_function_calls\": " << r.postprocessCostFunctionCalls << ",\n";
     o << "  \"planning_time_s\": " << num(r.planningSeconds) << ",\n";
     o << "  \"postprocess_time_s\": " << num(r.postprocessSeconds) << ",\n";
+    if (req.optimum)
+        o << "  \"optimal_control_time\": " << num(r.optimumTime) << ",\n";
     o << "  \"path_checked\": " << (r.pathChecked ? "true" : "false") << "\n";
     o << "}\n";
     return o.str();
@@ -274,6 +294,17 @@ MapRenderer planMap(const PlanRequest &req, const PlanRunResult &r)
         if (req.refine && refinedDiffers)
             map.addPath(MapRenderer::refinedPathStyle(
                 "refined: " + std::to_string(r.refined.size()) + " wp, T=" + fmtT(r.travelTime), r.refined));
+    }
+    if (!r.optimumPath.empty())
+    {
+        MapPath opt;
+        opt.label = "optimal control: T=" + fmtT(r.optimumTime);
+        opt.waypoints = r.optimumPath;
+        opt.colour = {0.10, 0.35, 0.95, 1.0};
+        opt.width = 1.6;
+        opt.dashed = true;
+        opt.waypointMarkers = false;
+        map.addPath(opt);
     }
     map.setStartGoal(p.startX, p.startY, p.goalX, p.goalY);
     if (r.feasible)
@@ -350,6 +381,15 @@ void printPlanReport(std::ostream &out, const PlanRequest &req, const PlanRunRes
                   r.planningSeconds, r.postprocessSeconds,
                   static_cast<unsigned long long>(r.postprocessCostFunctionCalls));
     out << buf;
+    if (req.optimum)
+    {
+        if (std::isfinite(r.optimumTime))
+            std::snprintf(buf, sizeof buf, "Optimal control:    %.4f (final path %+.2f%%)\n", r.optimumTime,
+                          100.0 * (r.travelTime / r.optimumTime - 1.0));
+        else
+            std::snprintf(buf, sizeof buf, "Optimal control:    no extremal through the goal found\n");
+        out << buf;
+    }
     if (r.feasible)
     {
         out << "Waypoints (t, x, y):\n";

@@ -28,6 +28,7 @@ struct PlanRequest
     double timeLimit{10.0};          ///< seconds for the planner (sampling planners use all of it)
     std::string title;               ///< map title (default: field name and planner)
     std::vector<MapPolygon> polygons;  ///< forbidden regions to draw on the map
+    bool optimum{false};             ///< also solve Zermelo's problem (ZermeloReference) for comparison and the map
 };
 
 /// @brief Result of runPlan().
@@ -51,6 +52,8 @@ struct PlanRunResult
     double planningSeconds{0.0};            ///< planner wall time
     double postprocessSeconds{0.0};         ///< smoothing + refinement wall time
     bool pathChecked{false};                ///< the final OMPL path passed PathGeometric::check()
+    double optimumTime{std::numeric_limits<double>::infinity()};  ///< optimal-control travel time (when asked)
+    std::vector<TimedWaypoint> optimumPath;  ///< samples of the optimal trajectory (when asked and found)
 };
 
 /// @brief Planner names runPlan() accepts: "TVE", "A*TVE", "ZTVE", "ZA*TVE" (ZAStarTVE configurations) and OMPL's
@@ -69,7 +72,7 @@ PlanRunResult runPlan(const PlanRequest &request);
 /// @brief JSON summary with the keys travel_time, path_length, waypoints_raw, waypoints_smoothed,
 /// cost_function_calls, current_model_calls, planning_time_s, feasible (+ planner, start, goal, departure, speed,
 /// waypoints_refined, travel_time_raw, travel_time_smoothed, straight_line_time, postprocess_cost_function_calls,
-/// postprocess_time_s, status). Infinite times are written as null.
+/// postprocess_time_s, status, optimal_control_time when asked). Infinite times are written as null.
 std::string planSummaryJson(const PlanRequest &request, const PlanRunResult &result);
 
 /// @brief The final path as CSV with header `t,x,y`, one line per waypoint.
