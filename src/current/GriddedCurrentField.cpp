@@ -599,7 +599,10 @@ double GriddedCurrentField::maxSpeed(const Region &region) const
     if (std::isnan(thi))
         thi = kInf;
     range(time_, tlo, thi, t0, t1);
-    range(depth_, region.zMin, region.zMax, z0, z1);
+    // All loaded depth layers (the loader keeps only those the glider reaches): planners often leave the region's
+    // depth range at 0 while the travel-time code reads the current at another depth.
+    z0 = 0;
+    z1 = nz - 1;
     (void)nt;
     const bool akima = options_.depth == Interp1D::Akima || options_.time == Interp1D::Akima;
     double ms = 0, mu = 0, mv = 0;

@@ -389,6 +389,26 @@ TEST(GriddedField, SpeedBoundHoldsForEverySchemeCombination)
             }
 }
 
+TEST(GriddedField, SpeedBoundOfATimeWindowCoversItsStencil)
+{
+    // speed grows with time and with depth: the bound of [0, 2] is smaller than the global one but still holds
+    // for every query in [0, 2] at every depth (the region's depth range is ignored on purpose)
+    auto fu = [](double, double, double z, double t) { return 0.1 * (1.0 + t) * (1.0 + 0.01 * z); };
+    auto fv = [](double, double, double, double) { return 0.0; };
+    const std::vector<double> t = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+    for (Interp1D ts : {Interp1D::Linear, Interp1D::Cubic, Interp1D::Akima})
+    {
+        GriddedCurrentField f(sampleRect(kX, kY, {0, 50, 100}, t, fu, fv), schemes(Interp2D::Bilinear, Interp1D::Linear, ts));
+        Region w;
+        w.tMin = 0;
+        w.tMax = 2;  // zMin = zMax = 0
+        const double bw = f.maxSpeed(w), bg = f.maxSpeed(Region{});
+        EXPECT_LT(bw, bg);
+        for (double tt = 0; tt <= 2; tt += 0.01)
+            EXPECT_LE(f.velocity(1.0, 0.5, 100.0, tt).u, bw);
+    }
+}
+
 TEST(GriddedField, JacobianMatchesFiniteDifferencesForEverySchemeCombination)
 {
     auto fu = [](double x, double y, double z, double t) { return std::sin(x) * std::cos(y) + 0.01 * z * std::cos(t); };

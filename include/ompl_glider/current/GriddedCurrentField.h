@@ -69,7 +69,8 @@ struct GriddedData
 /// - Jacobian: analytic from the interpolants' derivative weights (piecewise: one-sided at cell edges); with
 ///   an Akima depth or time scheme (nonlinear in the data) by central differences with a step of 1e-4 of the
 ///   mean cell size.
-/// - maxSpeed(): largest |c| of the stored nodes in the time/depth window (plus the stencil margin) times the
+/// - maxSpeed(): largest |c| of the stored nodes in the region's time window (plus the stencil margin; all
+///   loaded depth layers, whatever the region's depth range; all nodes in x/y) times the
 ///   product of the schemes' overshoot factors (overshootFactor(): 1 for nearest/linear/bilinear, about 1.25
 ///   per cubic axis, about 1.6 for Akima, which is applied per component so the node bound is then
 ///   hypot(max|u|, max|v|)): a true upper bound of what velocity() can return.
