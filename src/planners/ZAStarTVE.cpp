@@ -173,13 +173,14 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
     if (!search_)
         search_ = std::make_unique<TveSearch>(ctx_, gridSize_, sectors_);
 
-    // Start: the first start state given.
-    const ompl::base::State *startState = pis_.nextStart();
-    if (!startState)
+    // Start: the first start state given, read directly (not through pis_, which would silently drop a start that
+    // fails the validity checker; the search says why a start is invalid) so that solve() can be called again.
+    if (pdef_->getStartStateCount() == 0)
     {
-        OMPL_ERROR("%s: no valid start state", getName().c_str());
+        OMPL_ERROR("%s: invalid start: no start state given", getName().c_str());
         return ompl::base::PlannerStatus::INVALID_START;
     }
+    const ompl::base::State *startState = pdef_->getStartState(0);
     const auto *st = startState->as<TimeState>();
     const double sx = st->getX(), sy = st->getY();
 
@@ -217,6 +218,7 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
     }
 
     freeDataStates();
+    bestCost_ = std::numeric_limits<double>::infinity();
     cfcBase_ = ctx_->travel->costFunctionCalls();
     cmcBase_ = ctx_->field->callCount();
     solving_ = true;

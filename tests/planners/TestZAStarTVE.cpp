@@ -290,6 +290,9 @@ TEST(ZAStarTVE, SolveClearCyclesGiveTheSameAnswer)
         EXPECT_EQ(planner->getCurrentModelCalls(), cmc0);
         EXPECT_TRUE(ss->getSolutionPath().check());
     }
+    // solve() again without clear(): same answer (the start is read from the problem definition each time).
+    ASSERT_EQ(planner->solve(ob::timedPlannerTerminationCondition(10.0)), ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_EQ(planner->getTravelTime(), t0);
 }
 
 TEST(ZAStarTVE, PathStatesCarryArrivalTimesAndLegHeadings)
@@ -332,12 +335,34 @@ TEST(ZAStarTVE, ForbiddenStartGoalAndObstacle)
     EXPECT_GT(r.time, 8.0 / 0.7 + 1e-6);  // slower than the blocked straight line
     EXPECT_TRUE(r.checked);
 
+    // Blocked start / goal: the status and an error message saying which and why.
+    struct Capture : ompl::msg::OutputHandler
+    {
+        std::string text;
+        void log(const std::string &t, ompl::msg::LogLevel, const char *, int) override
+        {
+            text += t + "\n";
+        }
+    } capture;
+    ompl::msg::useOutputHandler(&capture);
+    ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
     GliderProblem bs = p;
     bs.environment = std::make_shared<DiskEnvironment>(1.0, 0.0, 0.5);
-    EXPECT_EQ(plan(bs, "ZA*TVE").status, ob::PlannerStatus::INVALID_START);
+    const auto startStatus = plan(bs, "ZA*TVE").status;
+    const std::string startLog = capture.text;
+    capture.text.clear();
     GliderProblem bg = p;
     bg.environment = std::make_shared<DiskEnvironment>(9.0, 0.0, 0.5);
-    EXPECT_EQ(plan(bg, "TVE").status, ob::PlannerStatus::INVALID_GOAL);
+    const auto goalStatus = plan(bg, "TVE").status;
+    const std::string goalLog = capture.text;
+    ompl::msg::restorePreviousOutputHandler();
+    ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+    EXPECT_EQ(startStatus, ob::PlannerStatus::INVALID_START);
+    EXPECT_NE(startLog.find("invalid start"), std::string::npos) << startLog;
+    EXPECT_NE(startLog.find("inside test disk"), std::string::npos) << startLog;
+    EXPECT_EQ(goalStatus, ob::PlannerStatus::INVALID_GOAL);
+    EXPECT_NE(goalLog.find("invalid goal"), std::string::npos) << goalLog;
+    EXPECT_NE(goalLog.find("inside test disk"), std::string::npos) << goalLog;
 }
 
 TEST(ZAStarTVE, PlannerDataHoldsTheExploredTreeAndCounters)
