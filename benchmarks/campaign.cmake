@@ -1,1 +1,7 @@
-# benchmarks of campaign
+# benchmarks of campaign: the OMPL Benchmark campaign of issue #4 (run it with benchmarks/run_campaign.sh)
+add_executable(glider_campaign ${CMAKE_CURRENT_LIST_DIR}/campaign/Campaign.cpp)
+target_link_libraries(glider_campaign PRIVATE ompl_glider::ompl_glider)
+target_compile_options(glider_campaign PRIVATE -Wall -Wextra)
+add_executable(glider_campaign_paths ${CMAKE_CURRENT_LIST_DIR}/campaign/CampaignPaths.cpp)
+target_link_libraries(glider_campaign_paths PRIVATE ompl_glider::ompl_glider)
+target_compile_options(glider_campaign_paths PRIVATE -Wall -Wextra)

@@ -1,2 +1,3 @@
 # tests of environment/
 glider_add_test(test_environment ${CMAKE_CURRENT_LIST_DIR}/TestEnvironment.cpp)
+glider_add_test(test_environment_planning ${CMAKE_CURRENT_LIST_DIR}/TestEnvironmentPlanning.cpp)

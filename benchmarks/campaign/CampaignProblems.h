@@ -1,0 +1,107 @@
+#pragma once
+/// @file CampaignProblems.h
+/// @brief The four problems of the benchmark campaign (issue #4) on the meandering jet of 000 Sec. 6.1:
+/// region x in [0, 10], y in [-4, 4], V = 0.5, t0 = 0, from the south-west to the north-east across the jet.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/environment/ForbiddenRegions.h"
+#include "ompl_glider/environment/IceZone.h"
+#include "ompl_glider/environment/StaticRegion.h"
+#include "ompl_glider/environment/TimeWindowedZone.h"
+#include "ompl_glider/ompl/GliderSetup.h"
+
+namespace ompl_glider
+{
+/// @brief One campaign problem: the GliderProblem and its forbidden regions (null for open water).
+struct CampaignProblem
+{
+    std::string name;                               ///< "open_water", "islands", "ice", "closure"
+    std::string description;                        ///< one line
+    GliderProblem problem;                          ///< field, box, t0, horizon, start, goal, V
+    std::shared_ptr<ForbiddenRegions> environment;  ///< forbidden regions (also in problem.environment)
+};
+
+/// @brief Start, goal and common settings of every campaign problem.
+inline GliderProblem campaignBaseProblem(std::shared_ptr<const CurrentField> field)
+{
+    GliderProblem p;
+    p.field = std::move(field);
+    p.travel.speed = 0.5;
+    p.xMin = 0.0;
+    p.xMax = 10.0;
+    p.yMin = -4.0;
+    p.yMax = 4.0;
+    p.t0 = 0.0;
+    p.horizon = 40.0;
+    p.startX = 0.6;
+    p.startY = -2.6;
+    p.goalX = 9.4;
+    p.goalY = 2.6;
+    p.goalTolerance = 1e-3;
+    return p;
+}
+
+/// @brief The four problems: open water; islands on the open-water route; ice zones drifting across it; and a
+/// shipping-lane closure x in [4.6, 5.4], y in [-4, 2.2] during t in [0, 8] that the route must wait out or pass
+/// around in the north.
+inline std::vector<CampaignProblem> makeCampaignProblems(std::shared_ptr<const CurrentField> field)
+{
+    std::vector<CampaignProblem> out;
+    {
+        CampaignProblem c;
+        c.name = "open_water";
+        c.description = "meandering jet, no forbidden regions";
+        c.problem = campaignBaseProblem(field);
+        out.push_back(c);
+    }
+    {
+        CampaignProblem c;
+        c.name = "islands";
+        c.description = "three islands (a 40-gon, a concave island, a ring-shaped atoll with a lagoon)";
+        c.problem = campaignBaseProblem(field);
+        c.environment = std::make_shared<ForbiddenRegions>();
+        c.environment->add(std::make_shared<StaticRegion>("A", Polygon::regular(3.0, -1.6, 0.7, 40, 0.1, "A"), "island"));
+        c.environment->add(std::make_shared<StaticRegion>(
+            "B", Polygon({{5.2, -0.4}, {6.6, -0.2}, {6.8, 1.2}, {6.1, 0.5}, {5.4, 1.0}}, {}, "B"), "island"));
+        std::vector<Point2> outer, lagoon;
+        for (int i = 0; i < 24; ++i)
+        {
+            const double a = 2 * M_PI * i / 24;
+            outer.push_back({7.6 + 0.8 * std::cos(a), 2.0 + 0.6 * std::sin(a)});
+            lagoon.push_back({7.6 + 0.4 * std::cos(a), 2.0 + 0.3 * std::sin(a)});
+        }
+        c.environment->add(std::make_shared<StaticRegion>("C", Polygon(outer, {lagoon}, "C"), "island"));
+        c.problem.environment = c.environment;
+        out.push_back(c);
+    }
+    {
+        CampaignProblem c;
+        c.name = "ice";
+        c.description = "two ice zones drifting across the route; at most 0.5 time units under ice";
+        c.problem = campaignBaseProblem(field);
+        c.environment = std::make_shared<ForbiddenRegions>();
+        c.environment->add(
+            std::make_shared<IceZone>("I1", Polygon::rectangle(1.0, -1.6, 3.4, 0.4, "I1"), 0.0, 0.12, 0.0, 0.5));
+        c.environment->add(
+            std::make_shared<IceZone>("I2", Polygon::rectangle(5.0, 1.0, 7.0, 3.5, "I2"), 0.0, 0.0, -0.1, 0.5));
+        c.problem.environment = c.environment;
+        out.push_back(c);
+    }
+    {
+        CampaignProblem c;
+        c.name = "closure";
+        c.description = "shipping lane x in [4.6, 5.4], y <= 2.2 closed during t in [0, 8]";
+        c.problem = campaignBaseProblem(field);
+        c.environment = std::make_shared<ForbiddenRegions>();
+        c.environment->add(std::make_shared<TimeWindowedZone>(
+            "lane", Polygon::rectangle(4.6, -4.0, 5.4, 2.2, "lane"), std::vector<Interval>{{0.0, 8.0}}));
+        c.problem.environment = c.environment;
+        out.push_back(c);
+    }
+    return out;
+}
+}  // namespace ompl_glider

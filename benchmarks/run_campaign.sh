@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The OMPL Benchmark campaign of issue #4 in one command.
+#
+#   benchmarks/run_campaign.sh [--quick] OUTDIR
+#
+# Builds glider_campaign and glider_campaign_paths if needed (build dir: $GLIDER_BUILD_DIR, default
+# <repo>/build-campaign, Release), runs the four meandering-jet problems with TVE, A*TVE, ZTVE, ZA*TVE, RRT*, PRM,
+# PRM*, RRTConnect, BIT* and SST on the identical SpaceInformation (--quick: 5 runs per planner, 2.5 s budget,
+# about 6 minutes on 2 cores; default: 20 runs, 10 s), converts the logs with OMPL's ompl_benchmark_statistics
+# into OUTDIR/campaign.db (load it in Planner Arena), and writes the plots OUTDIR/travel_time.png,
+# solve_time.png, success_rate.png, maps.png and the Markdown table OUTDIR/table.md (also printed).
+# Extra arguments after OUTDIR are passed to glider_campaign (e.g. --runs 3 --time 1 --problems islands).
+set -euo pipefail
+
+QUICK=0
+OUT=""
+EXTRA=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) QUICK=1 ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    *) if [ -z "$OUT" ]; then OUT="$1"; else EXTRA+=("$1"); fi ;;
+  esac
+  shift
+done
+[ -n "$OUT" ] || { echo "usage: $0 [--quick] OUTDIR [glider_campaign options]" >&2; exit 2; }
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="${GLIDER_BUILD_DIR:-$ROOT/build-campaign}"
+PY="${PYTHON:-/usr/bin/python3}"
+STATS="${OMPL_BENCHMARK_STATISTICS:-$(command -v ompl_benchmark_statistics || echo /usr/bin/ompl_benchmark_statistics)}"
+mkdir -p "$OUT"
+OUT="$(cd "$OUT" && pwd)"
+
+if [ ! -f "$BUILD/CMakeCache.txt" ]; then
+  cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DOMPL_GLIDER_BUILD_TESTS=OFF >/dev/null
+fi
+cmake --build "$BUILD" -j2 --target glider_campaign glider_campaign_paths >/dev/null
+
+if [ "$QUICK" = 1 ]; then
+  ARGS=(--quick --runs 5 --time 2.5)
+  BUDGET=2.5
+else
+  ARGS=(--runs 20 --time 10)
+  BUDGET=10
+fi
+
+start=$(date +%s)
+rm -f "$OUT"/*.log "$OUT/campaign.db"
+"$BUILD/benchmarks/glider_campaign" "${ARGS[@]}" ${EXTRA[@]+"${EXTRA[@]}"} "$OUT"
+"$BUILD/benchmarks/glider_campaign_paths" --time "$BUDGET" "$OUT" > "$OUT/paths.txt"
+"$PY" "$STATS" "$OUT"/*.log -d "$OUT/campaign.db" >/dev/null
+"$PY" "$ROOT/benchmarks/campaign/report.py" "$OUT/campaign.db" "$OUT" "$OUT/reference.csv"
+"$PY" "$ROOT/benchmarks/campaign/plot_maps.py" "$OUT"
+cat "$OUT/paths.txt"
+echo "campaign finished in $(( $(date +%s) - start )) s"
+echo "database (Planner Arena): $OUT/campaign.db"
+echo "plots: $OUT/travel_time.png $OUT/solve_time.png $OUT/success_rate.png $OUT/maps.png; table: $OUT/table.md"
