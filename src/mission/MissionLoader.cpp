@@ -568,7 +568,8 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
                 "parameters"});
     PlannerSpec &p = m.planner;
     if (n["name"])
-        p.name = r.oneOf(n["name"], f + ".name", {"tve", "astartve", "ztve", "zastartve"});
+        p.name = r.oneOf(n["name"], f + ".name",
+                         {"tve", "astartve", "ztve", "zastartve", "RRTstar", "InformedRRTstar", "PRM", "PRMstar", "RRT"});
     if (n["grid_size"])
         p.gridSize = r.positive(n["grid_size"], f + ".grid_size");
     if (n["sectors"])

@@ -20,6 +20,7 @@
 #include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/mission/MissionOutputs.h"
 #include "ompl_glider/mission/NetCdfBathymetry.h"
+#include "ompl_glider/mission/PlanRun.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
 
@@ -347,9 +348,37 @@ PlannedPath MissionProblem::plan(double tDep, const PlanOptions &o) const
     }
     std::shared_ptr<const GliderContext> ctx = makeGliderContext(gp);
     r.straightLineTime = legTravelTime(*ctx, sx_, sy_, gx_, gy_, tDep);
+    const std::string &name = spec_.planner.name;
+    if (name != "tve" && name != "astartve" && name != "ztve" && name != "zastartve")
+    {
+        // An OMPL planner on the time-augmented space (PlanRun.h).
+        PlanRequest req;
+        req.problem = gp;
+        req.planner = name;
+        req.gridSize = grid;
+        req.sectors = static_cast<unsigned>(sectors);
+        req.smooth = smoothing;
+        req.refine = refinement;
+        req.timeLimit = spec_.planner.timeLimit > 0 ? spec_.planner.timeLimit : 10.0;
+        const PlanRunResult res = runPlan(req);
+        r.status = res.status;
+        r.solved = res.feasible && !res.path.empty() && std::isfinite(res.travelTime);
+        r.costFunctionCalls = res.costFunctionCalls + res.postprocessCostFunctionCalls;
+        r.currentModelCalls = res.currentModelCalls;
+        r.wallSeconds = seconds(start);
+        if (r.solved)
+        {
+            r.raw = res.raw;  // the planner's own times (it may hold position)
+            r.rawTravelTime = res.travelTimeRaw;
+            r.rawPathLength = pathLength(r.raw);
+            r.path = res.path;
+            r.travelTime = res.travelTime;
+            r.pathLength = pathLength(r.path);
+        }
+        return r;
+    }
 
     TveOptions to;
-    const std::string &name = spec_.planner.name;
     to.heuristic = name == "astartve" || name == "zastartve";
     to.zermelo = name == "ztve" || name == "zastartve";
     const auto &pp = spec_.planner.parameters;

@@ -74,10 +74,10 @@ TEST(MissionFile, ExamplesLoad)
     EXPECT_EQ(i.forbidden.obstacles[0].polygon.name, "North Island");
     EXPECT_EQ(i.forbidden.obstacles[0].polygon.points.size(), 5u);
     ASSERT_EQ(i.forbidden.timeWindows.size(), 1u);
-    EXPECT_EQ(i.forbidden.timeWindows[0].windows[0], std::make_pair(0.0, 4.0));
+    EXPECT_EQ(i.forbidden.timeWindows[0].windows[0], std::make_pair(0.0, 14.0));
     ASSERT_EQ(i.forbidden.ice.size(), 1u);
     EXPECT_DOUBLE_EQ(i.forbidden.ice[0].vx, 0.05);
-    EXPECT_DOUBLE_EQ(i.forbidden.ice[0].maxSubmergedTime, 1.0);
+    EXPECT_DOUBLE_EQ(i.forbidden.ice[0].maxSubmergedTime, 0.5);
     EXPECT_TRUE(i.dive.enabled);
     EXPECT_EQ(makeDiveProfiles(i.dive.params).size(), 5u);  // (5,105) (5,152.5) (5,200) (30,152.5) (30,200)
 

@@ -150,7 +150,9 @@ struct ForbiddenSpec
 /// @brief The planner and its parameters.
 struct PlannerSpec
 {
-    std::string name{"zastartve"};  ///< tve | astartve | ztve | zastartve
+    /// tve | astartve | ztve | zastartve (lattice search, TveSearch) or an OMPL planner on the time-augmented space
+    /// through runPlan(): RRTstar | InformedRRTstar | PRM | PRMstar | RRT (they use time_limit, default 10 s)
+    std::string name{"zastartve"};
     double gridSize{0.4};           ///< lattice spacing
     int sectors{3};                 ///< n-sector connectivity (1..5)
     bool smoothing{true};           ///< 000 Table 3
