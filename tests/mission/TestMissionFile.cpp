@@ -88,7 +88,7 @@ TEST(MissionFile, ExamplesLoad)
     EXPECT_EQ(l.current.timeInterpolation, "akima");
     ASSERT_TRUE(l.fileCalendar.has_value());
     EXPECT_DOUBLE_EQ(l.departure.begin, 0.0);          // the file's first time
-    EXPECT_DOUBLE_EQ(l.departure.end, 3 * 86400.0);    // ISO date in the file's calendar
+    EXPECT_DOUBLE_EQ(l.departure.end, 2 * 86400.0);    // ISO date in the file's calendar
     ASSERT_TRUE(l.epoch.has_value());
     EXPECT_DOUBLE_EQ(*l.epoch, parseIsoTime("2026-03-15T00:00:00Z"));
     EXPECT_TRUE(l.start.geographic);
