@@ -39,15 +39,41 @@ double PositionGoal::distanceGoal(const ob::State *st) const
     return std::hypot(s->getX() - x_, s->getY() - y_);
 }
 
+void PositionGoal::checkValidity() const
+{
+    std::call_once(once_, [this] {
+        ob::State *st = si_->allocState();
+        auto *s = st->as<TimeSE2StateSpace::StateType>();
+        constexpr int kGrid = 256;
+        for (int i = 0; i <= kGrid; ++i)
+        {
+            const double t = tEarliest_ + (tLatest_ - tEarliest_) * i / kGrid;
+            s->setXYT(x_, y_, t);
+            s->setYaw(0.0);
+            if (si_->isValid(st))
+                validTimes_.push_back(t);
+        }
+        si_->freeState(st);
+    });
+}
+
 void PositionGoal::sampleGoal(ob::State *st) const
 {
+    checkValidity();
     auto *s = st->as<TimeSE2StateSpace::StateType>();
-    s->setXYT(x_, y_, tEarliest_ == tLatest_ ? tEarliest_ : rng_.uniformReal(tEarliest_, tLatest_));
     s->setYaw(0.0);
+    for (int attempt = 0; attempt < 20; ++attempt)
+    {
+        s->setXYT(x_, y_, tEarliest_ == tLatest_ ? tEarliest_ : rng_.uniformReal(tEarliest_, tLatest_));
+        if (validTimes_.empty() || si_->isValid(st))
+            return;
+    }
+    s->setTime(validTimes_[rng_.uniformInt(0, static_cast<int>(validTimes_.size()) - 1)]);
 }
 
 unsigned int PositionGoal::maxSampleCount() const
 {
-    return std::numeric_limits<unsigned int>::max();
+    checkValidity();
+    return validTimes_.empty() ? 0u : std::numeric_limits<unsigned int>::max();
 }
 }  // namespace ompl_glider

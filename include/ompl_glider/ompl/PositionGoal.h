@@ -2,6 +2,9 @@
 /// @file PositionGoal.h
 /// @brief Goal: be at a position (within a tolerance) at any time of the window.
 
+#include <mutex>
+#include <vector>
+
 #include <ompl/base/goals/GoalSampleableRegion.h>
 #include <ompl/util/RandomNumbers.h>
 
@@ -11,6 +14,12 @@ namespace ompl_glider
 /// goal is satisfied when it is <= the tolerance (the GoalRegion threshold). sampleGoal() returns (x, y) exactly,
 /// yaw 0, with a time drawn uniformly in [tEarliest, tLatest]; the setup helper uses tEarliest = t0 + |start -
 /// goal| / (V + max|c|) (no arrival can be earlier) and tLatest = t0 + horizon.
+///
+/// Validity: on first use the goal point is checked with the space information's validity checker at 257 times
+/// evenly spread over the window. If it is valid at none, maxSampleCount() is 0, so OMPL planners that check
+/// GoalSampleableRegion::couldSample() (RRTConnect, PRM, ...) report INVALID_GOAL ("Insufficient states in
+/// sampleable goal region"); OMPL's RRT* does not check the goal and ends without an exact solution. Otherwise
+/// sampleGoal() redraws up to 20 times when the drawn time is invalid, then falls back to a valid grid time.
 class PositionGoal : public ompl::base::GoalSampleableRegion
 {
 public:
@@ -54,7 +63,12 @@ public:
     void setTimeWindow(double tEarliest, double tLatest);
 
 private:
+    /// Fills validTimes_ once (thread-safe).
+    void checkValidity() const;
+
     double x_, y_;
+    mutable std::once_flag once_;
+    mutable std::vector<double> validTimes_;
     double tEarliest_, tLatest_;
     mutable ompl::RNG rng_;
 };
