@@ -241,6 +241,58 @@ std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows)
     return s.str();
 }
 
+void printMissionReport(std::ostream &out, const MissionResult &r)
+{
+    const PlannedPath &p = r.plan;
+    char buf[256];
+    auto line = [&](const char *fmt, auto... args) {
+        std::snprintf(buf, sizeof buf, fmt, args...);
+        out << buf;
+    };
+    out << "mission " << r.spec.name << " (" << r.spec.file << "), current " << r.spec.current.type << ", planner "
+        << r.spec.planner.name << "\n";
+    if (r.departureSearch)
+    {
+        const DepartureSearchResult &d = *r.departureSearch;
+        line("departure search over [%g, %g]: %zu fine + %zu coarse searches in %.3f s, best departure %s\n",
+             r.spec.departure.begin, d.windowEnd, d.fineEvaluations, d.coarseEvaluations, d.wallSeconds,
+             d.found ? csvNum(d.departure).c_str() : "none");
+    }
+    const std::string dep = r.waypoints.empty() ? "" : r.waypoints.front().iso;
+    line("status: %s\n", p.status.c_str());
+    line("departure %s%s%s%s\n", csvNum(p.departure).c_str(), dep.empty() ? "" : " (", dep.c_str(),
+         dep.empty() ? "" : ")");
+    if (!p.solved)
+        return;
+    line("travel time %s (lattice path %s)", csvNum(p.travelTime).c_str(), csvNum(p.rawTravelTime).c_str());
+    if (r.diveProfiles)
+        line(", with dive profiles %s",
+             std::isfinite(r.diveTravelTime) ? csvNum(r.diveTravelTime).c_str() : "impassable");
+    out << "\n";
+    line("path length %s (lattice path %s); straight line %s, travel time %s\n", csvNum(p.pathLength).c_str(),
+         csvNum(p.rawPathLength).c_str(), csvNum(p.straightLineLength).c_str(),
+         std::isfinite(p.straightLineTime) ? csvNum(p.straightLineTime).c_str() : "impassable");
+    line("waypoints raw %zu, smoothed %zu; CFC %llu, CMC %llu; planning %.3f s, total %.3f s\n", p.raw.size(),
+         p.path.size(), static_cast<unsigned long long>(p.costFunctionCalls),
+         static_cast<unsigned long long>(p.currentModelCalls), p.wallSeconds, r.wallSeconds);
+    line("%4s %12s %12s %11s %10s %14s %22s %16s\n", "#", "x", "y", "lon", "lat", "arrival", "arrival (UTC)",
+         "dive profile");
+    for (std::size_t i = 0; i < r.waypoints.size(); ++i)
+    {
+        const MissionWaypoint &w = r.waypoints[i];
+        std::string prof;
+        if (r.diveProfiles && i > 0 && w.profile >= 0)
+            prof = csvNum(w.dive.climbTo) + "-" + csvNum(w.dive.diveTo);
+        line("%4zu %12.6g %12.6g %11s %10s %14s %22s %16s\n", i, w.x, w.y,
+             w.geographic ? csvNum(w.lon).substr(0, 11).c_str() : "", w.geographic ? csvNum(w.lat).substr(0, 10).c_str() : "",
+             csvNum(w.time).c_str(), w.iso.c_str(), prof.c_str());
+    }
+    if (!r.speedSweep.empty())
+        out << "speed sweep (003 Table VI):\n" << speedSweepTable(r.speedSweep);
+    for (const auto &f : r.files)
+        out << "wrote " << f << "\n";
+}
+
 void writeTextFile(const std::string &path, const std::string &text)
 {
     std::ofstream out(path);

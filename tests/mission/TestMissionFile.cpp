@@ -58,8 +58,8 @@ TEST(MissionFile, ExamplesLoad)
     EXPECT_EQ(g.current.type, "meandering_jet");
     EXPECT_DOUBLE_EQ(g.current.parameters.at("omega"), 0.4);
     EXPECT_TRUE(g.departure.window);
-    EXPECT_DOUBLE_EQ(g.departure.begin, 0.0);  // the ISO date of the epoch
-    EXPECT_DOUBLE_EQ(g.departure.end, 16.0);
+    EXPECT_DOUBLE_EQ(g.departure.begin, 5.0);  // an ISO date, 5 days after the epoch
+    EXPECT_DOUBLE_EQ(g.departure.end, 21.0);
     EXPECT_DOUBLE_EQ(g.departure.spacing, 1.0);
     EXPECT_DOUBLE_EQ(g.lengthUnitMetres, 50000.0);
     EXPECT_DOUBLE_EQ(g.timeUnitSeconds, 86400.0);

@@ -3,6 +3,7 @@
 /// @brief What a mission writes for the pilot (SPEC.md 6, 003 Sec. IV): waypoints CSV, GeoJSON, the Slocum goto
 /// list, a JSON summary, the speed-sweep table and the map.
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,12 @@ std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows);
 /// missing): <prefix>_waypoints.csv, <prefix>.geojson, goto_lNN.ma, <prefix>_summary.json, <prefix>_map.svg/.png.
 /// @return the paths written. @throws Error when a file cannot be written.
 std::vector<std::string> writeMissionOutputs(const MissionResult &result, const MissionProblem &problem);
+
+/// @brief Human-readable report of a mission run for the terminal: departure (and the departure search's counts),
+/// travel time (2-D and with dive profiles), path length, straight-line time or "impassable", waypoints
+/// raw/smoothed, CFC/CMC, wall times, the waypoint table with the dive profile per leg, the speed sweep and the
+/// files written.
+void printMissionReport(std::ostream &out, const MissionResult &result);
 
 /// @brief Writes @p text to @p path. @throws Error naming the path on failure.
 void writeTextFile(const std::string &path, const std::string &text);
