@@ -18,6 +18,7 @@ struct Search
     const GliderContext &ctx;
     double t0;
     unsigned budget;
+    double bumpFraction{0.0};
     unsigned evaluations{0};
     unsigned accepted{0};
 
@@ -49,6 +50,42 @@ struct Search
         return x >= r.xMin && x <= r.xMax && y >= r.yMin && y <= r.yMax;
     }
 
+    /// Moves waypoint i by (dx, dy) and its neighbours within radius (interior only) by the same vector scaled
+    /// by 1 - |j - i| / (radius + 1); keeps the move iff the arrival gets strictly earlier. timed holds the
+    /// arrival times of wp and is updated on acceptance.
+    bool tryMove(std::vector<TimedWaypoint> &wp, std::vector<TimedWaypoint> &timed, double &best, std::size_t i,
+                 std::size_t radius, double dx, double dy)
+    {
+        const std::size_t n = wp.size();
+        const std::size_t lo = i > radius ? std::max<std::size_t>(1, i - radius) : 1;
+        const std::size_t hi = std::min(n - 2, i + radius);
+        const std::vector<TimedWaypoint> keep(wp.begin() + lo, wp.begin() + hi + 1);
+        bool inside = true;
+        for (std::size_t j = lo; j <= hi; ++j)
+        {
+            const double dist = j > i ? double(j - i) : double(i - j);
+            const double w = 1.0 - dist / double(radius + 1);
+            wp[j].x += w * dx;
+            wp[j].y += w * dy;
+            inside = inside && inBounds(wp[j].x, wp[j].y);
+        }
+        if (inside)
+        {
+            const double c = costFrom(wp, lo - 1, timed[lo - 1].t);
+            if (c < best)
+            {
+                best = c;
+                ++accepted;
+                for (std::size_t j = lo; j < n; ++j)
+                    timed[j].t = timed[j - 1].t +
+                                 legTravelTime(ctx, wp[j - 1].x, wp[j - 1].y, wp[j].x, wp[j].y, timed[j - 1].t);
+                return true;
+            }
+        }
+        std::copy(keep.begin(), keep.end(), wp.begin() + lo);
+        return false;
+    }
+
     /// Compass search on the interior waypoints; wp and best are updated in place.
     void pattern(std::vector<TimedWaypoint> &wp, double &best, double s0, double sMin)
     {
@@ -57,6 +94,7 @@ struct Search
             return;
         std::vector<double> step(n, s0);
         const double sMax = 4.0 * s0;
+        const std::size_t bumpRadius = bumpFraction > 0.0 ? static_cast<std::size_t>(bumpFraction * double(n)) : 0;
         std::vector<TimedWaypoint> timed = retimeWaypoints(ctx, wp, t0);  // arrival times of the current path
         while (!exhausted())
         {
@@ -83,28 +121,19 @@ struct Search
                 bool improved = false;
                 for (const auto &d : dirs)
                 {
-                    const double nx = wp[i].x + step[i] * d[0], ny = wp[i].y + step[i] * d[1];
-                    if (!inBounds(nx, ny))
-                        continue;
-                    const TimedWaypoint keep = wp[i];
-                    wp[i].x = nx;
-                    wp[i].y = ny;
-                    const double c = costFrom(wp, i - 1, timed[i - 1].t);
-                    if (c < best)
+                    if (tryMove(wp, timed, best, i, 0, step[i] * d[0], step[i] * d[1]))
                     {
-                        best = c;
                         improved = true;
-                        ++accepted;
-                        // re-time from the moved waypoint's predecessor on
-                        for (std::size_t j = i; j < n; ++j)
-                            timed[j].t = timed[j - 1].t + legTravelTime(ctx, wp[j - 1].x, wp[j - 1].y, wp[j].x,
-                                                                        wp[j].y, timed[j - 1].t);
                         break;
                     }
-                    wp[i] = keep;
                     if (exhausted())
                         break;
                 }
+                // A single waypoint cannot move a whole stretch of path without kinks: try a bump of the
+                // neighbours too (weights falling linearly to zero at bumpRadius + 1 waypoints away).
+                for (int sgn = 1; !improved && bumpRadius > 0 && sgn >= -1 && !exhausted(); sgn -= 2)
+                    improved = tryMove(wp, timed, best, i, bumpRadius, sgn * step[i] * dirs[0][0],
+                                       sgn * step[i] * dirs[0][1]);
                 step[i] = improved ? std::min(sMax, 2.0 * step[i]) : 0.5 * step[i];
             }
             if (!active)
@@ -158,7 +187,7 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input
     RefinementResult res;
     res.waypointsBefore = input.size();
     std::vector<TimedWaypoint> wp = input;
-    Search s{ctx, t0, params_.maxEvaluations};
+    Search s{ctx, t0, params_.maxEvaluations, params_.bumpFraction};
     double best = s.cost(wp);
     res.arrivalBefore = best;
     if (wp.size() >= 2 && std::isfinite(best))

@@ -23,6 +23,8 @@ struct RefinerParams
     double minStep{0.0};             ///< moves stop below this length; <= 0: 1e-4 of the path length
     unsigned insertionRounds{4};     ///< rounds of "insert a midpoint on every leg, then optimise"
     std::size_t maxWaypoints{40};    ///< no insertion round makes the path longer than this
+    double bumpFraction{0.2};        ///< neighbours moved along with a waypoint when it cannot move alone, as a
+                                     ///< fraction of the waypoint count (0: single-waypoint moves only)
     double minRelativeGain{1e-3};    ///< an insertion round is kept only if it shortens the travel time by this
                                      ///< fraction (otherwise its extra waypoints are not worth it)
 };
