@@ -912,11 +912,9 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     if (root["outputs"])
         readOutputs(r, root["outputs"], m);
     else
-    {
         m.outputs.directory = joinPath(r.dir(), ".");
-        if (!m.projection.set)
-            m.outputs.files = {"csv", "geojson", "summary"};
-    }
+    if ((!root["outputs"] || !root["outputs"]["files"]) && !m.projection.set && m.current.type != "netcdf")
+        m.outputs.files = {"csv", "geojson", "summary"};  // no lon/lat: no goto list by default
     if (root["speeds"])
     {
         const YAML::Node &s = root["speeds"];
