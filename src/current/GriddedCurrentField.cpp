@@ -317,20 +317,22 @@ bool GriddedCurrentField::locate(double x, double y, double &fi, double &fj) con
     return false;
 }
 
-GriddedCurrentField::Horizontal GriddedCurrentField::horizontal(double x, double y) const
+GriddedCurrentField::Horizontal GriddedCurrentField::horizontal(double x, double y, bool derivative) const
 {
     Horizontal h;
     const Interp1D s = axisScheme(options_.xy);
     if (!curvilinear_)
     {
-        h.sx = makeStencil(x_, s, x);
-        h.sy = makeStencil(y_, s, y);
+        h.sx = makeStencil(x_, s, x, derivative);
+        h.sy = makeStencil(y_, s, y, derivative);
         return h;
     }
     double fi, fj;
     locate(x, y, fi, fj);
-    h.sx = makeStencil(x_, s, fi);
-    h.sy = makeStencil(y_, s, fj);
+    h.sx = makeStencil(x_, s, fi, derivative);
+    h.sy = makeStencil(y_, s, fj, derivative);
+    if (!derivative)
+        return h;
     // d(x, y)/d(fi, fj) of the cell's bilinear map at (a, b), inverted
     const std::size_t ci = std::min(static_cast<std::size_t>(fi), nx_ - 2);
     const std::size_t cj = std::min(static_cast<std::size_t>(fj), ny_ - 2);
@@ -432,12 +434,12 @@ GriddedCurrentField::Sample GriddedCurrentField::full(double x, double y, double
         y = yMin_;
     if (!std::isfinite(z))
         z = depth_.front();
-    const Horizontal h = horizontal(x, y);
+    const Horizontal h = horizontal(x, y, Deriv);
     const double tq = clampTime(t);
     const bool akimaZ = options_.depth == Interp1D::Akima, akimaT = options_.time == Interp1D::Akima;
     Stencil sz;
     if (!akimaZ)
-        sz = makeStencil(depth_, options_.depth, z);
+        sz = makeStencil(depth_, options_.depth, z, false);
     auto atTime = [&](std::size_t it) -> Sample {
         if (akimaZ)
             return akimaSample<Sample>(depth_, z, [&](std::size_t k) { return spatial<false>(h, it, k); });
@@ -465,7 +467,7 @@ GriddedCurrentField::Sample GriddedCurrentField::full(double x, double y, double
         r = akimaSample<Sample>(time_, tq, atTime);
     else
     {
-        const Stencil st = makeStencil(time_, options_.time, tq);
+        const Stencil st = makeStencil(time_, options_.time, tq, false);
         for (int c = 0; c < st.n; ++c)
         {
             const Sample s = atTime(st.first + c);

@@ -17,7 +17,7 @@ std::string lower(std::string s)
     return s;
 }
 
-/// Lagrange basis weights (and derivative weights) on nodes x[0..n-1] at q.
+/// Lagrange basis weights (and derivative weights when dw is not null) on nodes x[0..n-1] at q.
 void lagrange(const double *x, int n, double q, double *w, double *dw)
 {
     for (int i = 0; i < n; ++i)
@@ -27,6 +27,8 @@ void lagrange(const double *x, int n, double q, double *w, double *dw)
             if (j != i)
                 p *= (q - x[j]) / (x[i] - x[j]);
         w[i] = p;
+        if (!dw)
+            continue;
         double d = 0.0;
         for (int m = 0; m < n; ++m)
         {
@@ -198,7 +200,7 @@ Interp1D axisScheme(Interp2D scheme)
     return Interp1D::Linear;
 }
 
-Stencil makeStencil(const Axis &axis, Interp1D scheme, double q)
+Stencil makeStencil(const Axis &axis, Interp1D scheme, double q, bool derivative)
 {
     Stencil s;
     const std::size_t n = axis.size();
@@ -237,7 +239,7 @@ Stencil makeStencil(const Axis &axis, Interp1D scheme, double q)
             s.first = k;
             s.w[0] = 1.0 - a;
             s.w[1] = a;
-            if (!outside)
+            if (!outside && derivative)
             {
                 s.dw[0] = -1.0 / h;
                 s.dw[1] = 1.0 / h;
@@ -255,7 +257,7 @@ Stencil makeStencil(const Axis &axis, Interp1D scheme, double q)
                 x[i] = axis[first + i];
             s.first = first;
             s.n = m;
-            lagrange(x, m, q, s.w.data(), s.dw.data());
+            lagrange(x, m, q, s.w.data(), derivative ? s.dw.data() : nullptr);
             if (outside)
                 s.dw.fill(0.0);
             return s;

@@ -163,7 +163,7 @@ private:
         Stencil sx, sy;
         double m[4]{1, 0, 0, 1};  ///< d(fi, fj)/d(x, y) for curvilinear grids: [dfi/dx, dfi/dy, dfj/dx, dfj/dy]
     };
-    Horizontal horizontal(double x, double y) const;
+    Horizontal horizontal(double x, double y, bool derivative) const;
     template <bool Deriv>
     Sample spatial(const Horizontal &h, std::size_t it, std::size_t iz) const;
     template <bool Deriv>

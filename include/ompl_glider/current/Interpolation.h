@@ -97,7 +97,8 @@ struct Stencil
 
 /// @brief Stencil of nearest (n = 1), linear (n = 2) or cubic Lagrange (n = min(4, size)) interpolation at q.
 /// @param scheme Interp1D::Akima is not linear in the data and is rejected (use akimaInterpolate()).
-Stencil makeStencil(const Axis &axis, Interp1D scheme, double q);
+/// @param derivative false skips the derivative weights (dw stays 0), which saves time for cubics.
+Stencil makeStencil(const Axis &axis, Interp1D scheme, double q, bool derivative = true);
 /// @brief The 2-D scheme's 1-D factor: Nearest -> nearest, Bilinear -> linear, Bicubic -> cubic.
 Interp1D axisScheme(Interp2D scheme);
 
