@@ -12,6 +12,8 @@
 #include <random>
 #include <thread>
 
+#include <sys/resource.h>
+
 #include "ompl_glider/cost/DiveProfile.h"
 #include "ompl_glider/current/MeanderingJet.h"
 
@@ -49,6 +51,14 @@ protected:
 private:
     MeanderingJet jet_;
 };
+
+/// Process CPU time (user + system) in seconds.
+double cpu()
+{
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_utime.tv_sec + 1e-6 * u.ru_utime.tv_usec + u.ru_stime.tv_sec + 1e-6 * u.ru_stime.tv_usec;
+}
 
 double now()
 {
@@ -91,32 +101,43 @@ int main(int argc, char **argv)
     // Each configuration runs `repeats` times, interleaved, and keeps its fastest run (the machine is shared).
     const int repeats = 5;
     std::vector<DiveLegResult> reference;
-    double serialTime = 1e300;
+    double serialTime = 1e300, serialCpu = 0;
     for (int k = 0; k < repeats; ++k)
     {
         reference.clear();
-        const double t0 = now();
+        const double t0 = now(), c0 = cpu();
         for (const Leg &l : set)
             reference.push_back(serial.bestProfileSerial(l.x1, l.y1, l.x2, l.y2, l.t));
-        serialTime = std::min(serialTime, now() - t0);
+        if (now() - t0 < serialTime)
+        {
+            serialTime = now() - t0;
+            serialCpu = cpu() - c0;
+        }
     }
     int feasible = 0;
     for (const auto &r : reference)
         feasible += r.profile >= 0;
-    std::printf("threads  wall [s]  legs/s   speedup  identical   (fastest of %d runs)\n", repeats);
-    std::printf("%7u  %8.3f  %7.0f  %7.2f  %s\n", 1u, serialTime, legs / serialTime, 1.0, "reference");
+    std::printf("threads  wall [s]  legs/s   speedup  cores used  identical   (fastest of %d runs; cores used = "
+                "CPU time / wall time: below the thread count the machine had no free core)\n",
+                repeats);
+    std::printf("%7u  %8.3f  %7.0f  %7.2f  %10.2f  %s\n", 1u, serialTime, legs / serialTime, 1.0,
+                serialCpu / serialTime, "reference");
     for (unsigned n = 2; n <= maxThreads; ++n)
     {
         DiveProfileTravelTime par(field, tp, d, nullptr, n);
         std::vector<DiveLegResult> out;
-        double wall = 1e300;
+        double wall = 1e300, cpuUsed = 0;
         for (int k = 0; k < repeats; ++k)
         {
             out.clear();
-            const double t0 = now();
+            const double t0 = now(), c0 = cpu();
             for (const Leg &l : set)
                 out.push_back(par.bestProfile(l.x1, l.y1, l.x2, l.y2, l.t));
-            wall = std::min(wall, now() - t0);
+            if (now() - t0 < wall)
+            {
+                wall = now() - t0;
+                cpuUsed = cpu() - c0;
+            }
             double ts = now();
             for (int j = 0; j < 50 && j < static_cast<int>(set.size()); ++j)
                 serial.bestProfileSerial(set[j].x1, set[j].y1, set[j].x2, set[j].y2, set[j].t);
@@ -125,8 +146,17 @@ int main(int argc, char **argv)
         bool same = true;
         for (std::size_t i = 0; i < out.size(); ++i)
             same = same && out[i].profile == reference[i].profile && out[i].profileTimes == reference[i].profileTimes;
-        std::printf("%7u  %8.3f  %7.0f  %7.2f  %s\n", n, wall, legs / wall, serialTime / wall, same ? "yes" : "NO");
+        std::printf("%7u  %8.3f  %7.0f  %7.2f  %10.2f  %s\n", n, wall, legs / wall, serialTime / wall, cpuUsed / wall,
+                    same ? "yes" : "NO");
     }
-    std::printf("feasible legs: %d of %d\n", feasible, legs);
+    double load[3] = {0, 0, 0};
+    if (FILE *f = std::fopen("/proc/loadavg", "r"))
+    {
+        if (std::fscanf(f, "%lf %lf %lf", &load[0], &load[1], &load[2]) != 3)
+            load[0] = -1;
+        std::fclose(f);
+    }
+    std::printf("feasible legs: %d of %d; load average %.2f on %u hardware threads\n", feasible, legs, load[0],
+                std::thread::hardware_concurrency());
     return 0;
 }
