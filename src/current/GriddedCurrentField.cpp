@@ -241,7 +241,7 @@ bool GriddedCurrentField::cellInside(std::size_t ci, std::size_t cj, double px, 
         b -= db;
         if (!std::isfinite(a) || !std::isfinite(b))
             return false;
-        if (std::abs(da) + std::abs(db) < 1e-12)
+        if (std::abs(da) + std::abs(db) < 1e-10)
             break;
     }
     return true;
