@@ -975,9 +975,10 @@ MissionSpec defaultGulfStreamMission()
     m.region.xMax = 10;
     m.region.yMin = -4;
     m.region.yMax = 4;
-    m.start.x = 0.5;
+    // The same problem as gulfStreamProblem() of the CLI (PlanRun.h): south of the jet to north of it.
+    m.start.x = 1.0;
     m.start.y = -3.0;
-    m.goal.x = 9.5;
+    m.goal.x = 8.0;
     m.goal.y = 3.0;
     m.vehicle.speed = 0.5;
     m.travel.speed = 0.5;

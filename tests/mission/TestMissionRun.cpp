@@ -199,7 +199,7 @@ TEST(MissionRun, GulfStreamStraightLineImpassableAndJetFasterThanStill)
     EXPECT_LE(r.plan.travelTime, r.plan.rawTravelTime + 1e-12);  // smoothing never arrives later
     EXPECT_LE(r.plan.path.size(), r.plan.raw.size());
     // No path can beat the distance at V + max|c|.
-    EXPECT_GE(r.plan.travelTime, std::hypot(9.0, 6.0) / (0.5 + 1.01));
+    EXPECT_GE(r.plan.travelTime, std::hypot(spec.goal.x - spec.start.x, spec.goal.y - spec.start.y) / (0.5 + 1.01));
 }
 
 TEST(MissionRun, IslandsAndIceAreAvoided)
@@ -291,6 +291,8 @@ TEST(MissionRun, MeanderingJetDepartureAgainstBruteForce)
     // within 1 % of a brute-force sweep at spacing 0.05 with at most a fifth of its searches. (A coarser lattice than
     // the benchmark's, to keep the test short; bench_departure runs the 0.4 lattice at spacing 0.02.)
     MissionSpec spec = defaultGulfStreamMission();
+    spec.start = {false, 0.5, -3.0};  // bench_departure's default problem
+    spec.goal = {false, 9.5, 3.0};
     spec.planner.gridSize = 0.8;
     spec.planner.sectors = 2;
     const MissionProblem problem(spec);

@@ -215,6 +215,8 @@ MissionSpec loadMission(const std::string &path);
 MissionSpec parseMission(const std::string &yamlText, const std::string &file = "<mission>",
                          const std::string &directory = ".");
 
-/// @brief The built-in Gulf Stream mission (meandering jet, 000 Sec. 6.1): the CLI's default without --mission.
+/// @brief The built-in Gulf Stream mission (meandering jet, 000 Sec. 6.1, x in [0, 10], y in [-4, 4], V = 0.5,
+/// start (1, -3) south of the jet, goal (8, 3) north of it, departure 0; csv, geojson and summary outputs in the
+/// current directory): the CLI's default without --mission (the problem of gulfStreamProblem(), PlanRun.h).
 MissionSpec defaultGulfStreamMission();
 }  // namespace ompl_glider
