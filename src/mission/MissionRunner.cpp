@@ -453,8 +453,15 @@ TravelTimeOfDeparture MissionProblem::departureFunction(double gridSize, int sec
         o.sectors = sectors;
         o.smoothing = false;
         o.refinement = false;
-        const PlannedPath p = plan(tDep, o);
-        return p.solved ? p.rawTravelTime : kInf;
+        try
+        {
+            const PlannedPath p = plan(tDep, o);
+            return p.solved ? p.rawTravelTime : kInf;
+        }
+        catch (const Error &)
+        {
+            return kInf;  // e.g. a departure outside the forecast: no trip from there
+        }
     };
 }
 
