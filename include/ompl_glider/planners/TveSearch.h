@@ -23,7 +23,7 @@ struct TveOptions
     bool zermelo{true};     ///< Zermelo pruning (000 Sec. 2.2.2)
     /// Half-width of the accepted course range around phi_opt, radians (000 Fig. 3, Table 2), before the turn
     /// widening below. Defaults (18 deg, courseExtrapolation 1, turnWidening 1.5) were tuned on the meandering jet
-    /// (grid 0.4, 3 sectors; benchmarks/table4/README.md): where the course runs straight they keep 3 of the 31
+    /// (grid 0.4, 3 sectors; benchmarks/table4/README.md): where the course runs straight they keep 1 to 3 of the 31
     /// forward successors of a 3-sector lattice (the paper: 5). The paper's rule is courseExtrapolation = 0,
     /// turnWidening = 0 with a fixed range.
     double deltaPhiMax{18.0 * 3.14159265358979323846 / 180.0};
