@@ -204,12 +204,15 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input
             if (2 * wp.size() - 1 > params_.maxWaypoints)
                 break;
             std::vector<TimedWaypoint> cand;
+            const double splitAbove = params_.splitFraction * meanLeg(wp);
             for (std::size_t i = 0; i < wp.size(); ++i)
             {
-                if (i > 0)
+                if (i > 0 && std::hypot(wp[i].x - wp[i - 1].x, wp[i].y - wp[i - 1].y) > splitAbove)
                     cand.push_back({0.5 * (wp[i - 1].x + wp[i].x), 0.5 * (wp[i - 1].y + wp[i].y), 0.0});
                 cand.push_back(wp[i]);
             }
+            if (cand.size() == wp.size())
+                break;
             double cBest = s.cost(cand);
             if (!std::isfinite(cBest))
                 break;

@@ -21,7 +21,9 @@ struct RefinerParams
     unsigned maxEvaluations{40000};  ///< budget of path re-simulations (each costs one CFC per leg)
     double initialStep{0.0};         ///< first trial move (field length units); <= 0: 1/4 of the mean leg length
     double minStep{0.0};             ///< moves stop below this length; <= 0: 1e-4 of the path length
-    unsigned insertionRounds{4};     ///< rounds of "insert a midpoint on every leg, then optimise"
+    unsigned insertionRounds{4};     ///< rounds of "insert midpoints on the long legs, then optimise"
+    double splitFraction{0.75};      ///< an insertion round splits the legs longer than this fraction of the mean
+                                     ///< leg length (0: every leg), so waypoints do not bunch up
     std::size_t maxWaypoints{40};    ///< no insertion round makes the path longer than this
     double bumpFraction{0.2};        ///< neighbours moved along with a waypoint when it cannot move alone, as a
                                      ///< fraction of the waypoint count (0: single-waypoint moves only)
@@ -47,7 +49,10 @@ struct RefinementResult
 ///
 /// Method: a pattern (compass) search. Each interior waypoint has its own step length; it tries moves across and
 /// along the local path direction, accepts the first move that makes the arrival strictly earlier (the step then
-/// grows), and halves its step when none does; the search ends when every step is below minStep or the evaluation
+/// grows); when none does, it tries a "bump" that moves the waypoint across the path together with its neighbours
+/// (weights falling linearly over bumpFraction of the waypoints), since a stretch of path often cannot move one
+/// waypoint at a time without kinks; failing that it halves its step. The search ends when every step is below
+/// minStep or the evaluation
 /// budget is spent. Derivative-free on purpose: the adaptive travel-time integration makes the cost piecewise
 /// smooth, which finite-difference gradients handle badly. Waypoint count: an insertion round puts a midpoint on
 /// every leg and optimises again, kept only when it gains at least minRelativeGain; finally each interior
