@@ -62,8 +62,13 @@ void TravelTimeMotionValidator::init()
     vMax_ = ctx_->speed() + ctx_->maxCurrent();
     if (!(vMax_ > 0.0))
         vMax_ = std::numeric_limits<double>::infinity();
+    id_ = newCacheId();
+}
+
+std::uint64_t TravelTimeMotionValidator::newCacheId()
+{
     static std::atomic<std::uint64_t> nextId{1};
-    id_ = nextId.fetch_add(1, std::memory_order_relaxed);
+    return nextId.fetch_add(1, std::memory_order_relaxed);
 }
 
 void TravelTimeMotionValidator::setRelativeTolerance(double tol)
@@ -72,6 +77,7 @@ void TravelTimeMotionValidator::setRelativeTolerance(double tol)
         throw Error("TravelTimeMotionValidator::setRelativeTolerance: tolerance must be in [0, 0.1] (got " +
                     std::to_string(tol) + ")");
     relTol_ = tol;
+    id_ = newCacheId();  // invalidate cached verdicts
 }
 
 void TravelTimeMotionValidator::setHoldTimeStep(double dt)
@@ -80,6 +86,7 @@ void TravelTimeMotionValidator::setHoldTimeStep(double dt)
         throw Error("TravelTimeMotionValidator::setHoldTimeStep: step must be finite and > 0 (got " +
                     std::to_string(dt) + ")");
     holdStep_ = dt;
+    id_ = newCacheId();  // invalidate cached verdicts
 }
 
 bool TravelTimeMotionValidator::canHold(double x, double y, double t1, double t2) const

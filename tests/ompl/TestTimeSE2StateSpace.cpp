@@ -2,6 +2,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <ompl/base/ProjectionEvaluator.h>
 #include <ompl/base/ScopedState.h>
 #include <ompl/util/RandomNumbers.h>
 
@@ -30,6 +31,8 @@ TEST(TimeSE2StateSpace, SanityChecksAllFlags)
     auto space = makeSpace();
     space->setup();
     // Default flags: every check (the distance is a metric), tolerances zero = DBL_EPS and eps = FLT_EPS.
+    // No flag is relaxed: the distance is a weighted sum of metrics, interpolation is linear in x, y, t and
+    // geodesic in yaw (so the midpoint splits the distance exactly), sampling stays in bounds.
     EXPECT_NO_THROW(space->sanityChecks());
     space->setTimeWeight(1.5);
     EXPECT_NO_THROW(space->sanityChecks());
@@ -152,6 +155,24 @@ TEST(TimeSE2StateSpace, RejectsBadBounds)
     EXPECT_THROW(TimeSE2StateSpace(b3, 0.0, 1.0), ompl_glider::Error);
     b.setHigh(1, -1.0);
     EXPECT_THROW(TimeSE2StateSpace(b, 0.0, 1.0), ompl_glider::Error);
+}
+
+TEST(TimeSE2StateSpace, DefaultProjectionIsXYT)
+{
+    auto space = makeSpace();
+    space->setup();
+    auto proj = space->getDefaultProjection();
+    ASSERT_TRUE(proj);
+    EXPECT_EQ(proj->getDimension(), 3u);
+    ob::ScopedState<TimeSE2StateSpace> s(space);
+    s->setXYT(1.5, -2.5, 42.0);
+    s->setYaw(0.3);
+    Eigen::VectorXd v(3);
+    proj->project(s.get(), v);
+    EXPECT_DOUBLE_EQ(v[0], 1.5);
+    EXPECT_DOUBLE_EQ(v[1], -2.5);
+    EXPECT_DOUBLE_EQ(v[2], 42.0);
+    EXPECT_NEAR(proj->getCellSizes()[2], 3.0, 1e-12);
 }
 
 TEST(TimeSE2StateSpace, SampledStatesRespectBounds)

@@ -76,7 +76,8 @@ public:
         {
             as<ompl::base::SE2StateSpace::StateType>(0)->setXY(x, y);
         }
-        /// @brief Set the heading (not normalised; call the space's enforceBounds() to wrap it).
+        /// @brief Set the heading. Not normalised: a yaw outside [-pi, pi] fails satisfiesBounds() (so the state is
+        /// invalid) until the space's enforceBounds() wraps it; std::atan2 results are in range.
         void setYaw(double yaw)
         {
             as<ompl::base::SE2StateSpace::StateType>(0)->setYaw(yaw);

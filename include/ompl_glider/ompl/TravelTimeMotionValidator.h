@@ -96,6 +96,7 @@ public:
 
 private:
     void init();
+    static std::uint64_t newCacheId();
     bool record(bool ok) const;
     MotionVerdict classifyUncached(double x1, double y1, double t1, double x2, double y2, double t2) const;
 
