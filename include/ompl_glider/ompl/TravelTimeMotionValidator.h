@@ -42,7 +42,9 @@ std::string toString(MotionVerdict v);
 ///   - the environment (if any) allows the leg at those times: Environment::legFree(x1, y1, t1, x2, y2, t2);
 ///   - for the State overloads also: the end state is valid (SpaceInformation::isValid, as OMPL's
 ///     DiscreteMotionValidator does, since planners like RRT* do not check sampled states separately).
-/// The start state is assumed valid (OMPL convention). Each positive-length check costs one cost-function call
+/// The start state is assumed valid (OMPL convention). Caveat: the window is that of the whole leg, so a state
+/// interpolated linearly in time along a valid motion (PathGeometric::interpolate()) need not split it into two
+/// valid motions in a non-uniform field; OMPL's simplifiers re-check every motion they create and are safe. Each positive-length check costs one cost-function call
 /// (CFC) of the context's TravelTimeCalculator, except legs rejected early because t2 - t1 < |xy2 - xy1| / (V +
 /// max|c|) and repeats of the thread's previous query (one-entry per-thread cache). Thread-safe.
 class TravelTimeMotionValidator : public ompl::base::MotionValidator
