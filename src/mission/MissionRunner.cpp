@@ -250,12 +250,17 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
         {
             if (i.carried)
             {
+                // Advected over the mission's time span: from the earliest departure (or t_ref) to the latest
+                // departure plus five straight-line crossings of the box at the vehicle speed, within the field's time.
                 const Point2 ref = shape.outer().front();
-                const double t1 = std::isfinite(box_.tMax) ? box_.tMax : i.tRef + 1000.0 * (box_.xMax - box_.xMin) /
-                                                                                  std::max(1e-9, m.vehicle.speed);
-                const double t0 = std::isfinite(box_.tMin) ? std::min(box_.tMin, i.tRef) : std::min(i.tRef, m.departure.begin);
-                regions->add(std::make_shared<IceZone>(i.polygon.name, shape, i.tRef, *field_, ref, std::min(t0, i.tRef),
-                                                       std::max(t1, i.tRef), i.maxSubmergedTime));
+                const double diag = std::hypot(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
+                const double firstDep = m.departure.window ? m.departure.begin : m.departure.time;
+                const double lastDep = m.departure.window ? m.departure.end : m.departure.time;
+                double t0 = std::min(i.tRef, firstDep), t1 = std::max(i.tRef, lastDep + 5.0 * diag / m.vehicle.speed);
+                t0 = std::max(t0, field_->timeBegin());
+                t1 = std::min(t1, field_->timeEnd());
+                regions->add(std::make_shared<IceZone>(i.polygon.name, shape, i.tRef, *field_, ref, t0, std::max(t1, t0),
+                                                       i.maxSubmergedTime));
             }
             else
                 regions->add(
