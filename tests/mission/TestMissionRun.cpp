@@ -321,3 +321,42 @@ TEST(MissionRun, MeanderingJetDepartureAgainstBruteForce)
     EXPECT_GT(brute.departure, 6.0);
     EXPECT_LT(brute.departure, 20.0);
 }
+
+TEST(MissionRun, CarriedIceZone)
+{
+    MissionSpec spec = loadMission(kExamples + "islands_ice.yaml");
+    spec.forbidden.ice[0].carried = true;  // drifts with the jet instead of a constant velocity
+    RunOptions o;
+    o.writeOutputs = false;
+    const MissionResult r = runMission(spec, o);
+    ASSERT_TRUE(r.plan.solved) << r.plan.status;
+    const MissionProblem problem(spec);
+    const auto &p = r.plan.path;
+    for (std::size_t i = 1; i < p.size(); ++i)
+        EXPECT_TRUE(problem.environment()->legFree(p[i - 1].x, p[i - 1].y, p[i - 1].t, p[i].x, p[i].y, p[i].t)) << i;
+}
+
+TEST(MissionRun, ExampleMissionsRunEndToEnd)
+{
+    for (const char *name : {"gulf_stream_window", "islands_ice", "labrador_forecast"})
+    {
+        MissionSpec spec = loadMission(kExamples + name + ".yaml");
+        RunOptions o;
+        o.outputDirectory = ::testing::TempDir() + "examples_" + name;
+        const MissionResult r = runMission(spec, o);
+        EXPECT_TRUE(r.plan.solved) << name << ": " << r.plan.status;
+        EXPECT_EQ(r.files.size(), 6u) << name;  // csv, geojson, goto, summary, map svg + png
+        for (const auto &f : r.files)
+            EXPECT_TRUE(std::ifstream(f).good()) << f;
+        // The goto list is the path after the start, as flown.
+        const GotoList g = readGotoFile(o.outputDirectory.value() + "/" + gotoFileName(spec.outputs.gotoNumber));
+        ASSERT_EQ(g.waypoints.size() + 1, r.waypoints.size()) << name;
+        EXPECT_LE(std::abs(g.waypoints.back().lat - r.waypoints.back().lat) * 60, 0.5e-4 + 1e-9);
+        if (spec.departure.window)
+        {
+            ASSERT_TRUE(r.departureSearch);
+            EXPECT_GE(r.plan.departure, spec.departure.begin);
+            EXPECT_LE(r.plan.departure, spec.departure.end);
+        }
+    }
+}
