@@ -5,8 +5,8 @@
 #
 # Builds glider_campaign and glider_campaign_paths if needed (build dir: $GLIDER_BUILD_DIR, default
 # <repo>/build-campaign, Release), runs the four meandering-jet problems with TVE, A*TVE, ZTVE, ZA*TVE, RRT*, PRM,
-# PRM*, RRTConnect, BIT* and SST on the identical SpaceInformation (--quick: 5 runs per planner, 2.5 s budget,
-# about 6 minutes on 2 cores; default: 20 runs, 10 s), converts the logs with OMPL's ompl_benchmark_statistics
+# PRM*, RRTConnect, RRT#, LBTRRT and SST on the identical SpaceInformation (--quick: 5 runs per planner, 2 s budget,
+# about 7 minutes on 2 cores; default: 20 runs, 10 s), converts the logs with OMPL's ompl_benchmark_statistics
 # into OUTDIR/campaign.db (load it in Planner Arena), and writes the plots OUTDIR/travel_time.png,
 # solve_time.png, success_rate.png, maps.png and the Markdown table OUTDIR/table.md (also printed).
 # Extra arguments after OUTDIR are passed to glider_campaign (e.g. --runs 3 --time 1 --problems islands).
@@ -38,8 +38,8 @@ fi
 cmake --build "$BUILD" -j2 --target glider_campaign glider_campaign_paths >/dev/null
 
 if [ "$QUICK" = 1 ]; then
-  ARGS=(--quick --runs 5 --time 2.5)
-  BUDGET=2.5
+  ARGS=(--quick --runs 5 --time 2)
+  BUDGET=2
 else
   ARGS=(--runs 20 --time 10)
   BUDGET=10

@@ -123,7 +123,7 @@ Options parse(int argc, char **argv)
     if (o.runs == 0)
         o.runs = o.quick ? 5 : 20;
     if (!(o.time > 0))
-        o.time = o.quick ? 2.5 : 10.0;
+        o.time = o.quick ? 2.0 : 10.0;
     return o;
 }
 
