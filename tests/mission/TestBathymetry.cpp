@@ -56,7 +56,7 @@ TEST(NetCdfBathymetry, BilinearOnGeographicAxes)
 {
     for (bool elevation : {false, true})
     {
-        const std::string path = makeFile(elevation ? "elev" : "depth", elevation);
+        const std::string path = makeFile(elevation ? "mission_bathy_elev" : "mission_bathy_depth", elevation);
         const NetCdfBathymetry b(path, "depth", [](double x, double y, double &lon, double &lat) {
             lon = x;  // identity "projection" for the test
             lat = y;
@@ -75,7 +75,7 @@ TEST(NetCdfBathymetry, BilinearOnGeographicAxes)
 
 TEST(NetCdfBathymetry, ErrorsNameFileAndVariable)
 {
-    const std::string path = makeFile("depth2", false);
+    const std::string path = makeFile("mission_bathy_depth2", false);
     try
     {
         NetCdfBathymetry b(path, "elevation", {});
@@ -92,7 +92,7 @@ TEST(NetCdfBathymetry, ErrorsNameFileAndVariable)
 
 TEST(NetCdfBathymetry, LimitsTheDivesOfAMission)
 {
-    const std::string path = makeFile("depth3", false);
+    const std::string path = makeFile("mission_bathy_depth3", false);
     const std::string text = "name: b\nprojection: {lon0: -52, lat0: 48}\nunits: {length_m: 1000}\n"
                              "current: {type: uniform, parameters: {u: 0.1, v: 0}}\n"
                              "region: {x_min: -60, x_max: 60, y_min: -60, y_max: 60}\n"

@@ -189,7 +189,7 @@ TEST(MissionFile, GeoJsonForbiddenRegions)
 {
     const std::string dir = ::testing::TempDir();
     {
-        std::ofstream f(dir + "regions.geojson");
+        std::ofstream f(dir + "mission_regions.geojson");
         f << R"({"type": "FeatureCollection", "features": [
  {"type": "Feature", "properties": {"name": "Rock", "kind": "island"},
   "geometry": {"type": "Polygon", "coordinates": [[[2, 1], [3, 1], [3, 2], [2, 2], [2, 1]]]}},
@@ -199,7 +199,7 @@ TEST(MissionFile, GeoJsonForbiddenRegions)
   "geometry": {"type": "Polygon", "coordinates": [[[1, 2], [2, 2], [2, 3]]]}}
 ]})";
     }
-    const std::string mission = kBase + "forbidden:\n  geojson: regions.geojson\n  geojson_coordinates: local\n";
+    const std::string mission = kBase + "forbidden:\n  geojson: mission_regions.geojson\n  geojson_coordinates: local\n";
     const MissionSpec m = parseMission(mission, "m.yaml", dir);
     ASSERT_EQ(m.forbidden.obstacles.size(), 1u);
     EXPECT_EQ(m.forbidden.obstacles[0].polygon.name, "Rock");
@@ -211,13 +211,13 @@ TEST(MissionFile, GeoJsonForbiddenRegions)
     ASSERT_EQ(m.forbidden.ice.size(), 1u);
     EXPECT_DOUBLE_EQ(m.forbidden.ice[0].maxSubmergedTime, 2.0);
     // Geographic (default) coordinates need a projection.
-    EXPECT_HAS(errorOf(kBase + "forbidden:\n  geojson: " + dir + "regions.geojson\n"), "projection");
+    EXPECT_HAS(errorOf(kBase + "forbidden:\n  geojson: " + dir + "mission_regions.geojson\n"), "projection");
     {
-        std::ofstream f(dir + "bad.geojson");
+        std::ofstream f(dir + "mission_bad.geojson");
         f << "{\"type\": \"FeatureCollection\", \"features\": [\n {\"type\": \"Feature\", \"properties\": "
              "{\"nmae\": \"x\"},\n  \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[[0,0],[1,0],[1,1]]]}}]}\n";
     }
-    const std::string msg = errorOf(kBase + "forbidden:\n  geojson: " + dir + "bad.geojson\n  geojson_coordinates: local\n");
-    EXPECT_HAS(msg, "bad.geojson:2:");
+    const std::string msg = errorOf(kBase + "forbidden:\n  geojson: " + dir + "mission_bad.geojson\n  geojson_coordinates: local\n");
+    EXPECT_HAS(msg, "mission_bad.geojson:2:");
     EXPECT_HAS(msg, "features[0].properties.nmae");
 }

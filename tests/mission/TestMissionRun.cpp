@@ -36,7 +36,7 @@ dive_profile: {z_min: 0, z_max: 100, climb_to_max: 20, min_range: 50, climb_to_l
     else
         text += "outputs: {files: [csv, geojson, summary]}\n";
     MissionSpec m = parseMission(text, "uniform.yaml");
-    m.outputs.directory = ::testing::TempDir() + (projection ? "geo" : "local");
+    m.outputs.directory = ::testing::TempDir() + (projection ? "mission_geo" : "mission_local");
     return m;
 }
 
@@ -267,7 +267,7 @@ TEST(MissionRun, NetCdfForecastMission)
     MissionSpec spec = loadMission(kExamples + "labrador_forecast.yaml");
     spec.departure.window = false;
     spec.departure.time = 6 * 3600.0;
-    spec.outputs.directory = ::testing::TempDir() + "labrador";
+    spec.outputs.directory = ::testing::TempDir() + "mission_labrador";
     spec.outputs.files = {"csv", "goto", "summary"};
     const MissionResult r = runMission(spec);
     ASSERT_TRUE(r.plan.solved) << r.plan.status;
@@ -342,7 +342,7 @@ TEST(MissionRun, ExampleMissionsRunEndToEnd)
     {
         MissionSpec spec = loadMission(kExamples + name + ".yaml");
         RunOptions o;
-        o.outputDirectory = ::testing::TempDir() + "examples_" + name;
+        o.outputDirectory = ::testing::TempDir() + "mission_example_" + name;
         const MissionResult r = runMission(spec, o);
         EXPECT_TRUE(r.plan.solved) << name << ": " << r.plan.status;
         EXPECT_EQ(r.files.size(), 6u) << name;  // csv, geojson, goto, summary, map svg + png
