@@ -115,8 +115,11 @@ GriddedCurrentField::GriddedCurrentField(GriddedData d, GriddedFieldOptions opti
             }
 
     const Interp1D hs = axisScheme(options_.xy);
-    overshoot_ = overshootFactor(x_, hs) * overshootFactor(y_, hs) * overshootFactor(depth_, options_.depth) *
-                 overshootFactor(time_, options_.time);
+    lamXY_ = overshootFactor(x_, hs) * overshootFactor(y_, hs);
+    lamZ_ = overshootFactor(depth_, options_.depth);
+    lamT_ = overshootFactor(time_, options_.time);
+    overshoot_ = lamXY_ * lamZ_ * lamT_;
+    computeStencilDiameters();
 
     minCell_ = kInf;
     if (curvilinear_)
@@ -156,6 +159,71 @@ GriddedCurrentField::GriddedCurrentField(GriddedData d, GriddedFieldOptions opti
         yMin_ = y_.front();
         yMax_ = y_.back();
         fdStep_ = 1e-4 * std::min((xMax_ - xMin_) / double(cx), (yMax_ - yMin_) / double(cy));
+    }
+}
+
+void GriddedCurrentField::computeStencilDiameters()
+{
+    // Per-component max and min of the nodes over every stencil box (window widths: nearest 1, linear 2, cubic
+    // 4, Akima 6 nodes per axis), by separable sliding windows; then the largest Euclidean diameter bound
+    // sqrt(range_u^2 + range_v^2) of the boxes starting at each time index.
+    const std::size_t nz = depth_.size(), nt = time_.size(), nh = nx_ * ny_, n = nt * nz * nh;
+    auto width = [](Interp1D s) -> std::size_t {
+        switch (s)
+        {
+            case Interp1D::Nearest:
+                return 1;
+            case Interp1D::Linear:
+                return 2;
+            case Interp1D::Cubic:
+                return 4;
+            case Interp1D::Akima:
+                return 6;
+        }
+        return 6;
+    };
+    const std::size_t wxy = width(axisScheme(options_.xy));
+    const std::size_t w[4] = {wxy, wxy, width(options_.depth), width(options_.time)};
+    const std::size_t len[4] = {nx_, ny_, nz, nt};
+    const std::size_t stride[4] = {1, nx_, nh, nh * nz};
+    std::vector<float> hi[2], lo[2];
+    for (int c = 0; c < 2; ++c)
+    {
+        hi[c].resize(n);
+        lo[c].resize(n);
+        for (std::size_t q = 0; q < n; ++q)
+            hi[c][q] = lo[c][q] = uv_[2 * q + c];
+    }
+    std::vector<float> tmpHi, tmpLo;
+    for (int d = 0; d < 4; ++d)
+    {
+        if (w[d] <= 1 || len[d] <= 1)
+            continue;
+        for (int c = 0; c < 2; ++c)
+        {
+            tmpHi = hi[c];
+            tmpLo = lo[c];
+            for (std::size_t q = 0; q < n; ++q)
+            {
+                const std::size_t pos = (q / stride[d]) % len[d];
+                const std::size_t last = std::min(len[d] - 1, pos + w[d] - 1);
+                float mx = tmpHi[q], mn = tmpLo[q];
+                for (std::size_t k = pos + 1; k <= last; ++k)
+                {
+                    mx = std::max(mx, tmpHi[q + (k - pos) * stride[d]]);
+                    mn = std::min(mn, tmpLo[q + (k - pos) * stride[d]]);
+                }
+                hi[c][q] = mx;
+                lo[c][q] = mn;
+            }
+        }
+    }
+    boxDiameter_.assign(nt, 0.0);
+    for (std::size_t q = 0; q < n; ++q)
+    {
+        const double du = double(hi[0][q]) - double(lo[0][q]), dv = double(hi[1][q]) - double(lo[1][q]);
+        const std::size_t it = q / (nh * nz);
+        boxDiameter_[it] = std::max(boxDiameter_[it], std::hypot(du, dv));
     }
 }
 
@@ -616,8 +684,18 @@ double GriddedCurrentField::maxSpeed(const Region &region) const
             mv = std::max(mv, layerMaxV_[it * nz + k]);
         }
     const double base = akima ? std::hypot(mu, mv) : ms;
+    const double product = base * overshoot_;
+    // Data-dependent bound: each stage maps (max |input| M, max difference D of the inputs in a stencil) to
+    // M + (L - 1) / 2 * D and L * D (L: the stage's overshoot factor; for linear weights w with sum 1,
+    // sum w c = A + W- (A - B) with A, B convex combinations and W- = (L - 1) / 2; for Akima, the convex Hermite
+    // part plus at most (L - 1) / 2 * D). Smooth data have small D, so this is close to the node maximum.
+    double D = 0;
+    const std::size_t wt = options_.time == Interp1D::Akima ? 6 : 4;
+    for (std::size_t it = t0 >= wt ? t0 - wt : 0; it <= t1; ++it)
+        D = std::max(D, boxDiameter_[it]);
+    const double data = ms + D * (0.5 * (lamXY_ - 1.0) + 0.5 * (lamZ_ - 1.0) * lamXY_ + 0.5 * (lamT_ - 1.0) * lamXY_ * lamZ_);
     // tiny relative margin for float storage and rounding of the weights
-    return base * overshoot_ * (1.0 + 1e-9) + 1e-300;
+    return std::min(product, data) * (1.0 + 1e-9) + 1e-300;
 }
 
 Region GriddedCurrentField::extent() const

@@ -389,6 +389,55 @@ TEST(GriddedField, SpeedBoundHoldsForEverySchemeCombination)
             }
 }
 
+TEST(GriddedField, DataDependentSpeedBoundIsTightForSmoothDataAndStillHolds)
+{
+    // Uneven depth layers and Akima/cubic schemes inflate the product of overshoot factors; the bound from the
+    // stencil diameters stays near the node maximum for smooth data, and holds for rough data too.
+    const std::vector<double> z{0, 50, 200}, t{0, 1, 2, 3, 4, 5, 6, 7};
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> X(0, 3), Y(-1, 2), Z(0, 200), T(0, 7), U(-1, 1);
+    // smooth on the scale of the stencils (a few per cent change across a box); the rough set adds random jumps
+    auto smooth = [](double x, double y, double zz, double tt) {
+        return 0.2 + 0.5 * std::sin(0.1 * x + 0.02 * tt) * std::cos(0.1 * y) * (1.0 - zz / 4000.0);
+    };
+    auto smoothV = [](double x, double y, double, double tt) { return 0.3 * std::cos(0.1 * x - 0.05 * y + 0.02 * tt); };
+    Fn rough = [&](double x, double y, double zz, double tt) { return smooth(x, y, zz, tt) + (U(rng) > 0.7 ? 0.8 : 0.0); };
+    for (int dataset = 0; dataset < 2; ++dataset)
+    {
+        const GriddedData d = dataset == 0 ? sampleRect(kX, kY, z, t, smooth, smoothV) : sampleRect(kX, kY, z, t, rough, smoothV);
+        double nodeMax = 0;
+        for (std::size_t n = 0; n < d.u.size(); ++n)
+            nodeMax = std::max(nodeMax, std::hypot(double(d.u[n]), double(d.v[n])));
+        for (Interp2D xy : {Interp2D::Bilinear, Interp2D::Bicubic})
+            for (Interp1D zs : {Interp1D::Linear, Interp1D::Cubic, Interp1D::Akima})
+                for (Interp1D ts : {Interp1D::Linear, Interp1D::Cubic, Interp1D::Akima})
+                {
+                    GriddedCurrentField f(d, schemes(xy, zs, ts));
+                    const double bound = f.maxSpeed(Region{});
+                    double seen = 0;
+                    for (int i = 0; i < 4000; ++i)
+                    {
+                        const Velocity c = f.velocity(X(rng), Y(rng), Z(rng), T(rng));
+                        seen = std::max(seen, std::hypot(c.u, c.v));
+                    }
+                    EXPECT_LE(seen, bound) << dataset << " " << toString(xy) << "/" << toString(zs) << "/" << toString(ts);
+                    EXPECT_GE(bound, nodeMax);
+                    if (dataset == 0 && f.overshoot() > 1.5)
+                    {
+                        // tighter than the product of overshoot factors (which is loose on these uneven axes)
+                        EXPECT_LT(bound, 0.75 * f.overshoot() * nodeMax)
+                            << toString(xy) << "/" << toString(zs) << "/" << toString(ts);
+                    }
+                }
+        if (dataset == 0)
+        {
+            GriddedCurrentField f(d, schemes(Interp2D::Bicubic, Interp1D::Akima, Interp1D::Akima));
+            EXPECT_GT(f.overshoot(), 3.0);  // the product alone would be loose
+            EXPECT_LT(f.maxSpeed(Region{}), 0.5 * f.overshoot() * nodeMax);
+        }
+    }
+}
+
 TEST(GriddedField, SpeedBoundOfATimeWindowCoversItsStencil)
 {
     // speed grows with time and with depth: the bound of [0, 2] is smaller than the global one but still holds

@@ -73,7 +73,11 @@ struct GriddedData
 ///   loaded depth layers, whatever the region's depth range; all nodes in x/y) times the
 ///   product of the schemes' overshoot factors (overshootFactor(): 1 for nearest/linear/bilinear, about 1.25
 ///   per cubic axis, about 1.6 for Akima, which is applied per component so the node bound is then
-///   hypot(max|u|, max|v|)): a true upper bound of what velocity() can return.
+///   hypot(max|u|, max|v|)), or, when smaller, the data-dependent bound M + D (K_xy + K_z L_xy + K_t L_xy L_z)
+///   with M the largest node speed, D the largest diameter of the node velocities within one interpolation
+///   stencil box, L the stages' overshoot factors and K = (L - 1) / 2 (see maxSpeed() in the source for the
+///   argument): both are true upper bounds of what velocity() can return; the second is close to M for
+///   smooth data even with cubic/Akima schemes on uneven axes.
 class GriddedCurrentField : public CurrentField
 {
 public:
@@ -173,6 +177,7 @@ private:
     double clampTime(double t) const;
     bool cellInside(std::size_t ci, std::size_t cj, double px, double py, double &a, double &b) const;
     void buildLocator();
+    void computeStencilDiameters();
 
     GriddedFieldOptions options_;
     std::uint64_t id_{0};  // unique per instance (key of the per-thread locate hint)
@@ -185,6 +190,8 @@ private:
     std::vector<std::uint8_t> cellWater_;   // [(k * (ny-1) + j) * (nx-1) + i]
     std::vector<double> layerMaxSpeed_, layerMaxU_, layerMaxV_;  // per (t, k)
     double overshoot_{1.0};
+    double lamXY_{1.0}, lamZ_{1.0}, lamT_{1.0};  // overshoot factors of the three stages
+    std::vector<double> boxDiameter_;             // per time index: largest diameter of a stencil box starting there
     double fdStep_{1e-6};
     double minCell_{1.0};
     // locator for curvilinear grids
