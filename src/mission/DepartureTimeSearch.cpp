@@ -244,8 +244,9 @@ DepartureSearchResult optimalDepartureTime(const TravelTimeOfDeparture &fine, co
             y.push_back(std::isfinite(s.travelTime) ? s.travelTime : penalty);
         const AkimaSpline spline(ts, y);
         tStar = spline.minimum().first;
-        r.bracketLo = std::max(p.windowBegin, tStar - p.spacing);
-        r.bracketHi = std::min(r.windowEnd, tStar + p.spacing);
+        const double w = (p.bracketSpacings > 0 ? p.bracketSpacings : (useCoarse ? 2.0 : 1.0)) * p.spacing;
+        r.bracketLo = std::max(p.windowBegin, tStar - w);
+        r.bracketHi = std::min(r.windowEnd, tStar + w);
     }
     else
         r.bracketLo = r.bracketHi = tStar;

@@ -24,6 +24,9 @@ struct DepartureSearchParams
     double spacing{1.0};      ///< Delta t_dep between supporting points (000 Sec. 5.2: should resolve the local minima)
     double tolerance{1e-3};   ///< absolute tolerance of Brent's method on the departure time
     unsigned maxBrentEvaluations{40};  ///< at most this many refining searches
+    /// Half-width of Brent's bracket around the Akima minimum, in supporting-point spacings; <= 0: 1 with fine
+    /// supporting points, 2 with coarse ones (a coarser graph can shift the minimum by about a spacing).
+    double bracketSpacings{0.0};
     /// Forecast horizon: a departure whose arrival lies after it does not count (its travel time is +inf), and the
     /// window is cut at horizon - minTripDuration (000 Sec. 5.3). +inf: no horizon.
     double horizon{std::numeric_limits<double>::infinity()};
@@ -68,7 +71,7 @@ std::pair<double, double> brentMinimize(const std::function<double(double)> &f, 
 ///  1. Supporting points every @c spacing over [windowBegin, windowEnd'] (windowEnd' = the horizon cut), evaluated in
 ///     parallel with @p coarse when given (a coarser graph, 000 Sec. 5.3), else with @p fine.
 ///  2. Akima interpolation through them (impassable points take a value above every finite one); its global
-///     minimum t* is bracketed by [t* - spacing, t* + spacing] within the window.
+///     minimum t* is bracketed by [t* - w, t* + w] within the window, w = bracketSpacings * spacing.
 ///  3. Brent's method with @p fine inside the bracket, started at t*.
 /// The result is the best fine evaluation (supporting points included when they were fine).
 DepartureSearchResult optimalDepartureTime(const TravelTimeOfDeparture &fine, const DepartureSearchParams &params,
