@@ -2,6 +2,7 @@
 // Helpers of the gridded/NetCDF tests: a per-test temporary directory and a tiny NetCDF-C writer.
 #include <gtest/gtest.h>
 #include <netcdf.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <string>
@@ -18,6 +19,9 @@ public:
         const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
         std::string name = std::string("ompl_glider_") + (info ? info->test_suite_name() : "x") + "_" +
                            (info ? info->name() : "y");
+        // unique per process and instance: ctest runs the tests of one executable in parallel processes
+        static int counter = 0;
+        name += "_" + std::to_string(static_cast<long>(::getpid())) + "_" + std::to_string(counter++);
         for (char &c : name)
             if (c == '/')
                 c = '_';
