@@ -1,5 +1,6 @@
 #include "ompl_glider/mission/MissionOutputs.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -291,6 +292,55 @@ void printMissionReport(std::ostream &out, const MissionResult &r)
         out << "speed sweep (003 Table VI):\n" << speedSweepTable(r.speedSweep);
     for (const auto &f : r.files)
         out << "wrote " << f << "\n";
+}
+
+int runMissionFile(const std::string &path, const MissionCommandOptions &options, std::ostream &out,
+                   std::ostream &err)
+{
+    try
+    {
+        const MissionSpec spec = loadMission(path);
+        RunOptions o;
+        o.progress = options.progress;
+        o.speeds = options.speeds;
+        o.outputDirectory = options.outputDirectory;
+        const MissionResult r = runMission(spec, o);
+        printMissionReport(out, r);
+        return r.plan.solved ? 0 : 1;
+    }
+    catch (const Error &e)
+    {
+        err << "error: " << e.what() << "\n";
+        return 2;
+    }
+}
+
+std::vector<double> parseSpeedList(const std::string &text)
+{
+    std::vector<double> v;
+    std::istringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ','))
+    {
+        std::size_t pos = 0;
+        double x = 0;
+        try
+        {
+            x = std::stod(item, &pos);
+        }
+        catch (const std::exception &)
+        {
+            pos = 0;
+        }
+        while (pos < item.size() && std::isspace(static_cast<unsigned char>(item[pos])))
+            ++pos;
+        if (item.empty() || pos != item.size() || !(x > 0) || !std::isfinite(x))
+            throw Error("--speeds: '" + item + "' is not a speed > 0 (expected e.g. 0.25,0.30,0.35)");
+        v.push_back(x);
+    }
+    if (v.empty())
+        throw Error("--speeds: empty list (expected e.g. 0.25,0.30,0.35)");
+    return v;
 }
 
 void writeTextFile(const std::string &path, const std::string &text)

@@ -360,3 +360,32 @@ TEST(MissionRun, ExampleMissionsRunEndToEnd)
         }
     }
 }
+
+TEST(MissionRun, CommandEntryPointAndSpeedList)
+{
+    EXPECT_EQ(parseSpeedList("0.25,0.30, 0.35"), (std::vector<double>{0.25, 0.30, 0.35}));
+    EXPECT_THROW(parseSpeedList("0.25,fast"), Error);
+    EXPECT_THROW(parseSpeedList("0.25,-1"), Error);
+    EXPECT_THROW(parseSpeedList(""), Error);
+    // A bad mission: exit code 2 and the message names the file, line and field.
+    const std::string path = ::testing::TempDir() + "mission_bad.yaml";
+    {
+        std::ofstream f(path);
+        f << "current: {type: uniform}\nregion: {x_min: 0, x_max: 1, y_min: 0, y_max: 1}\nstart: {x: 0, y: 0}\n"
+             "goal: {x: 1, y: 1}\nplanner: {gird_size: 0.1}\n";
+    }
+    std::ostringstream out, err;
+    MissionCommandOptions o;
+    o.progress = false;
+    EXPECT_EQ(runMissionFile(path, o, out, err), 2);
+    EXPECT_NE(err.str().find(path + ":5:"), std::string::npos) << err.str();
+    EXPECT_NE(err.str().find("planner.gird_size"), std::string::npos) << err.str();
+    // A good one: exit code 0, the report and the speed sweep.
+    o.speeds = std::vector<double>{0.4, 0.5};
+    o.outputDirectory = ::testing::TempDir() + "mission_cmd";
+    std::ostringstream out2, err2;
+    EXPECT_EQ(runMissionFile(kExamples + "islands_ice.yaml", o, out2, err2), 0) << err2.str();
+    EXPECT_NE(out2.str().find("speed sweep"), std::string::npos);
+    EXPECT_NE(out2.str().find("straight line"), std::string::npos);
+    EXPECT_NE(out2.str().find("goto_l12.ma"), std::string::npos);
+}

@@ -3,6 +3,7 @@
 /// @brief What a mission writes for the pilot (SPEC.md 6, 003 Sec. IV): waypoints CSV, GeoJSON, the Slocum goto
 /// list, a JSON summary, the speed-sweep table and the map.
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -47,6 +48,23 @@ std::vector<std::string> writeMissionOutputs(const MissionResult &result, const 
 /// raw/smoothed, CFC/CMC, wall times, the waypoint table with the dive profile per leg, the speed sweep and the
 /// files written.
 void printMissionReport(std::ostream &out, const MissionResult &result);
+
+/// @brief Options of runMissionFile() (the CLI's flags).
+struct MissionCommandOptions
+{
+    std::optional<std::vector<double>> speeds;   ///< --speeds: speed sweep (overrides the mission's)
+    std::optional<std::string> outputDirectory;  ///< --out: overrides outputs.directory
+    bool progress{true};                         ///< progress lines on stderr
+};
+
+/// @brief What `glider_plan --mission FILE` does: loadMission(), runMission() (writing the outputs) and
+/// printMissionReport() on @p out; a configuration or I/O error is printed on @p err.
+/// @return 0 when a path was found, 1 when the mission has no path, 2 on a configuration or I/O error.
+int runMissionFile(const std::string &path, const MissionCommandOptions &options, std::ostream &out,
+                   std::ostream &err);
+
+/// @brief Parses a speed list "0.25,0.30,0.35" (--speeds). @throws Error naming the bad item.
+std::vector<double> parseSpeedList(const std::string &text);
 
 /// @brief Writes @p text to @p path. @throws Error naming the path on failure.
 void writeTextFile(const std::string &path, const std::string &text);
