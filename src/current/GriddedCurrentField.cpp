@@ -304,12 +304,13 @@ bool GriddedCurrentField::cellInside(std::size_t ci, std::size_t cj, double px, 
         const double det = j11 * j22 - j12 * j21;
         if (!(std::abs(det) > 0.0))
             return false;
-        const double da = (j22 * rx - j12 * ry) / det, db = (-j21 * rx + j11 * ry) / det;
+        const double inv = 1.0 / det;
+        const double da = (j22 * rx - j12 * ry) * inv, db = (-j21 * rx + j11 * ry) * inv;
         a -= da;
         b -= db;
         if (!std::isfinite(a) || !std::isfinite(b))
             return false;
-        if (std::abs(da) + std::abs(db) < 1e-10)
+        if (std::abs(da) + std::abs(db) < 1e-7)  // quadratic convergence: the error left is ~1e-14
             break;
     }
     return true;
