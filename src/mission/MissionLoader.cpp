@@ -79,9 +79,12 @@ public:
     {
         if (!node.IsMap())
             fail(node, path, "expected a mapping (key: value lines)");
+        std::set<std::string> seen;
         for (auto it = node.begin(); it != node.end(); ++it)
         {
             const std::string key = it->first.Scalar();
+            if (!seen.insert(key).second)
+                throw Error(where(it->first) + "field '" + sub(path, key) + "' is given twice");
             if (!allowed.count(key))
             {
                 std::string list;

@@ -120,6 +120,9 @@ TEST(MissionFile, UnknownFieldsAreRejectedWithTheirLine)
     msg = errorOf(kBase + "departure:\n  window: {begin: 0, end: 5, spacin: 1}\n");
     EXPECT_HAS(msg, "m.yaml:9:");
     EXPECT_HAS(msg, "departure.window.spacin");
+    msg = errorOf(kBase + "vehicle:\n  speed: 0.3\n  speed: 0.4\n");
+    EXPECT_HAS(msg, "m.yaml:10:");
+    EXPECT_HAS(msg, "'vehicle.speed' is given twice");
     msg = errorOf(std::string(kBase).replace(kBase.find("{u: 0.1"), 1, "{w: 1, "));
     EXPECT_HAS(msg, "m.yaml:4:");
     EXPECT_HAS(msg, "current.parameters.w");
