@@ -139,8 +139,11 @@ public:
     /// goal) for a departure at tDep.
     GliderProblem gliderProblem(double tDep, double speed) const;
 
-    /// @brief Plans from the start at tDep: lattice search (TveSearch, planner.name), then smoothing
-    /// (PathSmoother, 000 Table 3) and refinement (WaypointRefiner) as asked; the straight-line time for comparison.
+    /// @brief Plans from the start at tDep: lattice search (TveSearch configured as TVE / A*TVE / ZTVE / ZA*TVE by
+    /// planner.name; an OMPL planner name goes through runPlan() of PlanRun.h), then smoothing (PathSmoother,
+    /// 000 Table 3) and refinement (WaypointRefiner) as asked; the straight-line time for comparison.
+    /// Planning is 2-D at vehicle.depth; dive profiles are evaluated on the planned legs (missionWaypoints()).
+    /// No path is an outcome (solved false, status says why), not an exception.
     PlannedPath plan(double tDep, const PlanOptions &options = {}) const;
 
     /// @brief Travel time of a full lattice search against departure time (000 Sec. 5), for the departure search:

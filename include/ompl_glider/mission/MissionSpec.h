@@ -91,7 +91,8 @@ struct VehicleSpec
     double depth{0.0};  ///< depth at which the 2-D planner reads the current
 };
 
-/// @brief Dive profiles (003 Sec. III.B) and bathymetry.
+/// @brief Dive profiles (003 Sec. III.B) and bathymetry. Depths are metres (positive down) for every field; the
+/// analytic flows are depth-uniform, so there every profile flies the 2-D travel time.
 struct DiveSpec
 {
     bool enabled{false};     ///< dive profiles evaluated on the planned legs
