@@ -387,7 +387,7 @@ std::vector<std::string> writeMissionOutputs(const MissionResult &r, const Missi
             Region box = problem.box();
             MapOptions mo;
             mo.title = r.spec.name + (r.plan.solved ? "" : " (no path)");
-            mo.timeUnit = r.spec.current.type == "netcdf" ? "s" : "";
+            // (No MapOptions::timeUnit: it would also label the field time, which stays in field units.)
             MapRenderer map(box, mo);
             const double tMap = std::isnan(o.mapTime) ? r.plan.departure : o.mapTime;
             map.setField(problem.field(), tMap, r.spec.vehicle.depth);
@@ -412,9 +412,21 @@ std::vector<std::string> writeMissionOutputs(const MissionResult &r, const Missi
             }
             if (r.plan.solved)
             {
-                map.addPath(MapRenderer::rawPathStyle("lattice path", r.plan.raw));
+                // Time ticks a pilot reads: hours or days after departure when the mission has physical time units.
+                std::vector<TimedWaypoint> raw = r.plan.raw, fin = r.plan.path;
+                const bool physical = r.spec.current.type == "netcdf" || r.spec.timeUnitSeconds != 1.0;
+                if (physical)
+                {
+                    const double tripSeconds = r.plan.travelTime * r.spec.timeUnitSeconds;
+                    const double unit = tripSeconds > 4 * 86400.0 ? 86400.0 : 3600.0;
+                    for (auto *v : {&raw, &fin})
+                        for (auto &w : *v)
+                            w.t = (w.t - r.plan.departure) * r.spec.timeUnitSeconds / unit;
+                    map.addNote(std::string("ticks: ") + (unit == 86400.0 ? "days" : "hours") + " after departure");
+                }
+                map.addPath(MapRenderer::rawPathStyle("lattice path", raw));
                 MapPath smooth = MapRenderer::smoothedPathStyle(
-                    r.spec.planner.smoothing ? "smoothed path" : "final path", r.plan.path);
+                    r.spec.planner.smoothing ? "smoothed path" : "final path", fin);
                 smooth.timeTicks = true;
                 map.addPath(smooth);
                 map.addNote("departure " + csvNum(r.plan.departure) +
