@@ -82,7 +82,7 @@ bool geographic(const MissionResult &r)
 std::string waypointsCsv(const MissionResult &r)
 {
     std::ostringstream s;
-    s << "index,x,y,lon,lat,time,time_iso,leg_time,profile,climb_to,dive_to\n";
+    s << "index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to\n";
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];
@@ -91,7 +91,8 @@ std::string waypointsCsv(const MissionResult &r)
             s << csvNum(w.lon) << "," << csvNum(w.lat);
         else
             s << ",";
-        s << "," << csvNum(w.time) << "," << w.iso << "," << csvNum(w.legTime) << ",";
+        s << "," << csvNum(w.time) << "," << csvNum(w.time * r.spec.timeUnitSeconds) << "," << w.iso << ","
+          << csvNum(w.legTime) << ",";
         if (r.diveProfiles && i > 0 && w.profile >= 0)
             s << w.profile << "," << csvNum(w.dive.climbTo) << "," << csvNum(w.dive.diveTo);
         else
@@ -123,6 +124,7 @@ std::string waypointsGeoJson(const MissionResult &r)
     {
         const MissionWaypoint &w = r.waypoints[i];
         s << ",\n  {\"type\": \"Feature\", \"properties\": {\"index\": " << i << ", \"time\": " << num(w.time)
+          << ", \"time_s\": " << num(w.time * r.spec.timeUnitSeconds)
           << ", \"time_iso\": " << (w.iso.empty() ? "null" : quote(w.iso)) << ", \"leg_time\": " << num(w.legTime);
         if (r.diveProfiles && i > 0 && w.profile >= 0)
             s << ", \"profile\": " << w.profile << ", \"climb_to\": " << num(w.dive.climbTo)

@@ -99,10 +99,12 @@ TEST(MissionRun, UniformCurrentClosedFormAndOutputsRoundTrip)
         EXPECT_NEAR(std::stod(rows[i + 1][2]), r.waypoints[i].y, 1e-9);
         EXPECT_EQ(rows[i + 1][3], "");  // no lon/lat without a projection
         EXPECT_NEAR(std::stod(rows[i + 1][5]), r.waypoints[i].time, 1e-8);
+        EXPECT_NEAR(std::stod(rows[i + 1][6]), r.waypoints[i].time, 1e-8);  // time unit 1 s
     }
-    EXPECT_EQ(rows[2][8], "0");
+    EXPECT_EQ(rows[0][6], "time_s");
     EXPECT_EQ(rows[2][9], "0");
-    EXPECT_EQ(rows[2][10], "50");
+    EXPECT_EQ(rows[2][10], "0");
+    EXPECT_EQ(rows[2][11], "50");
 
     // GeoJSON (parsed as YAML, a superset of JSON): local coordinates.
     const YAML::Node g = YAML::LoadFile(spec.outputs.directory + "/mission.geojson");
@@ -162,6 +164,7 @@ TEST(MissionRun, GeographicOutputsGotoAndIsoTimes)
     EXPECT_NEAR(c[0][0].as<double>(), r.waypoints[0].lon, 1e-8);
     EXPECT_NEAR(c[0][1].as<double>(), r.waypoints[0].lat, 1e-8);
     EXPECT_EQ(g["features"][r.waypoints.size()]["properties"]["time_iso"].as<std::string>(), "2026-01-01T13:20:00Z");
+    EXPECT_NEAR(g["features"][r.waypoints.size()]["properties"]["time_s"].as<double>(), 8.0 / 0.6 * 3600.0, 1e-5);
     // Frame conversions are inverse to each other.
     const MissionProblem problem(spec);
     double x, y;

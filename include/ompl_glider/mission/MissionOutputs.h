@@ -14,13 +14,14 @@
 namespace ompl_glider
 {
 /// @brief Waypoints CSV, one line per waypoint (start first), header
-/// `index,x,y,lon,lat,time,time_iso,leg_time,profile,climb_to,dive_to` (lon/lat empty without a projection,
+/// `index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to` (time in field units, time_s in
+/// seconds = time * units.time_s; lon/lat empty without a projection,
 /// time_iso empty without a calendar, the profile columns empty without dive profiles). Numbers with 10
 /// significant digits.
 std::string waypointsCsv(const MissionResult &result);
 
 /// @brief GeoJSON FeatureCollection: one LineString of the path (properties: mission, departure, travel time,
-/// path length) and one Point per waypoint (properties: index, time, time_iso, leg_time, dive profile).
+/// path length) and one Point per waypoint (properties: index, time, time_s, time_iso, leg_time, dive profile).
 /// Coordinates are [lon, lat] (RFC 7946) when the mission has a projection, else planning x/y (then the
 /// collection carries "coordinates": "local").
 std::string waypointsGeoJson(const MissionResult &result);
