@@ -15,12 +15,14 @@ namespace
 {
 std::vector<Point2> star(int n)
 {
+    // a coastline-like star: smooth large bays plus a little noise (short edges, like a digitised coast)
     std::mt19937 rng(7);
-    std::uniform_real_distribution<double> rad(0.6, 1.0);
+    std::uniform_real_distribution<double> noise(-0.002, 0.002);
     std::vector<Point2> r;
     for (int i = 0; i < n; ++i)
     {
-        const double a = 2 * M_PI * (i + 0.5) / n, q = rad(rng);
+        const double a = 2 * M_PI * (i + 0.5) / n;
+        const double q = 0.8 + 0.12 * std::sin(7 * a) + 0.05 * std::sin(31 * a + 1) + noise(rng);
         r.push_back({q * std::cos(a), q * std::sin(a)});
     }
     return r;

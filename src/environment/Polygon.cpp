@@ -128,13 +128,7 @@ void Polygon::buildIndex()
     cellW_ = w / nx_;
     cellH_ = h / ny_;
     std::vector<std::uint32_t> count(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
-    auto forCells = [this](const Edge &e, auto &&f) {
-        const int c0 = column(std::min(e.ax, e.bx) - pad_), c1 = column(std::max(e.ax, e.bx) + pad_);
-        const int r0 = row(std::min(e.ay, e.by) - pad_), r1 = row(std::max(e.ay, e.by) + pad_);
-        for (int r = r0; r <= r1; ++r)
-            for (int c = c0; c <= c1; ++c)
-                f(static_cast<std::size_t>(r) * nx_ + c);
-    };
+    auto forCells = [this](const Edge &e, auto &&f) { forEachCell(e.ax, e.ay, e.bx, e.by, f); };
     for (const Edge &e : edges_)
         forCells(e, [&](std::size_t c) { ++count[c + 1]; });
     for (std::size_t c = 1; c < count.size(); ++c)
@@ -197,6 +191,34 @@ bool Polygon::containsUsing(double x, double y) const
     return inside;
 }
 
+template <typename F>
+void Polygon::forEachCell(double ax, double ay, double bx, double by, F &&f) const
+{
+    // Every cell that the segment, grown by pad_ in every direction, may touch: per row of the grid, the x-range of
+    // the segment within the row's (padded) slab.
+    const double yLo = std::max(std::min(ay, by), box_.yMin - pad_) - pad_;
+    const double yHi = std::min(std::max(ay, by), box_.yMax + pad_) + pad_;
+    if (yLo > yHi)
+        return;
+    const int r0 = row(yLo), r1 = row(yHi);
+    for (int r = r0; r <= r1; ++r)
+    {
+        const double s0 = std::max(std::min(ay, by), box_.yMin + r * cellH_ - pad_);
+        const double s1 = std::min(std::max(ay, by), box_.yMin + (r + 1) * cellH_ + pad_);
+        double xa = std::min(ax, bx), xb = std::max(ax, bx);
+        if (ay != by && s0 <= s1)
+        {
+            const double k = (bx - ax) / (by - ay);
+            const double x0 = ax + (s0 - ay) * k, x1 = ax + (s1 - ay) * k;
+            xa = std::max(std::min(x0, x1), xa);
+            xb = std::min(std::max(x0, x1), xb);
+        }
+        const int c0 = column(xa - pad_), c1 = column(xb + pad_);
+        for (int c = c0; c <= c1; ++c)
+            f(static_cast<std::size_t>(r) * nx_ + c);
+    }
+}
+
 void Polygon::segmentCandidates(double ax, double ay, double bx, double by, std::vector<std::uint32_t> &out) const
 {
     out.clear();
@@ -207,34 +229,9 @@ void Polygon::segmentCandidates(double ax, double ay, double bx, double by, std:
             out[i] = i;
         return;
     }
-    const double yLo = std::max(std::min(ay, by), box_.yMin - pad_);
-    const double yHi = std::min(std::max(ay, by), box_.yMax + pad_);
-    const int r0 = row(yLo), r1 = row(yHi);
-    for (int r = r0; r <= r1; ++r)
-    {
-        // x-range of the segment over this row's slab (padded)
-        const double s0 = std::max(yLo, box_.yMin + r * cellH_ - pad_);
-        const double s1 = std::min(yHi, box_.yMin + (r + 1) * cellH_ + pad_);
-        double xa, xb;
-        if (ay == by)
-        {
-            xa = std::min(ax, bx);
-            xb = std::max(ax, bx);
-        }
-        else
-        {
-            const double k = (bx - ax) / (by - ay);
-            const double x0 = ax + (s0 - ay) * k, x1 = ax + (s1 - ay) * k;
-            xa = std::max(std::min(x0, x1), std::min(ax, bx));
-            xb = std::min(std::max(x0, x1), std::max(ax, bx));
-        }
-        const int c0 = column(xa - pad_), c1 = column(xb + pad_);
-        for (int c = c0; c <= c1; ++c)
-        {
-            const std::size_t cell = static_cast<std::size_t>(r) * nx_ + c;
-            out.insert(out.end(), cellEdges_.begin() + cellStart_[cell], cellEdges_.begin() + cellStart_[cell + 1]);
-        }
-    }
+    forEachCell(ax, ay, bx, by, [&](std::size_t cell) {
+        out.insert(out.end(), cellEdges_.begin() + cellStart_[cell], cellEdges_.begin() + cellStart_[cell + 1]);
+    });
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
 }

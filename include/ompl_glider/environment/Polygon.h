@@ -40,7 +40,7 @@ struct BoundingBox
 /// split it into pieces that are wholly inside or wholly outside, classified by their midpoints
 /// (segmentInsideIntervals); segmentIntersects() only asks whether any edge is met, else whether the start is inside.
 /// Candidate edges come from a uniform grid over the bounding box (about one edge per cell; each edge is listed in
-/// the cells its bounding box covers), so a 10,000-vertex coastline costs a few dozen edge tests per query.
+/// the cells it passes through, grown by a 1e-9 relative pad), so a 10,000-vertex coastline costs a few dozen edge tests per query.
 ///
 /// Tolerance. Orientations are determinants evaluated in double precision; a determinant whose magnitude is
 /// below 8 DBL_EPSILON (|t1| + |t2|) (the rounding bound of its two products, cf. Shewchuk's orient2d filter)
@@ -108,6 +108,9 @@ private:
         double ax, ay, bx, by;
     };
     void buildIndex();
+    /// Calls f(cell) for every grid cell the segment (padded) may touch.
+    template <typename F>
+    void forEachCell(double ax, double ay, double bx, double by, F &&f) const;
     int column(double x) const;
     int row(double y) const;
     /// Candidate edges for the segment (sorted, unique).
