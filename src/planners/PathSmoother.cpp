@@ -101,6 +101,34 @@ void waypointsToPath(const std::vector<TimedWaypoint> &waypoints, ompl::geometri
     si->freeState(st);
 }
 
+std::vector<TimedWaypoint> mergeKeepingSchedule(const GliderContext &ctx, const std::vector<TimedWaypoint> &timed)
+{
+    if (timed.size() <= 2)
+        return timed;
+    auto flyable = [&](const TimedWaypoint &a, const TimedWaypoint &b) {
+        const double dur = b.t - a.t;
+        if (!(dur > 0.0) || !std::isfinite(dur) || b.t > ctx.region.tMax)
+            return false;
+        if (a.x == b.x && a.y == b.y)
+            return false;  // a hold: keep it as it is
+        const ArrivalWindow w = ctx.travel->arrivalWindow(a.x, a.y, b.x, b.y, a.t);
+        if (!(std::isfinite(w.earliest) && w.earliest * (1.0 - 1e-9) <= dur && dur <= w.latest * (1.0 + 1e-9)))
+            return false;
+        return !ctx.environment || ctx.environment->legFree(a.x, a.y, a.t, b.x, b.y, b.t);
+    };
+    std::vector<TimedWaypoint> out{timed.front()};
+    std::size_t i = 0;
+    while (i + 1 < timed.size())
+    {
+        std::size_t j = timed.size() - 1;
+        while (j > i + 1 && !flyable(timed[i], timed[j]))
+            --j;
+        out.push_back(timed[j]);
+        i = j;
+    }
+    return out;
+}
+
 PathSmoother::PathSmoother(std::shared_ptr<const GliderContext> ctx) : ctx_(std::move(ctx))
 {
     if (!ctx_ || !ctx_->field || !ctx_->travel)
@@ -182,15 +210,30 @@ SmoothingResult PathSmoother::smooth(ompl::geometric::PathGeometric &path) const
     const std::vector<TimedWaypoint> in = waypointsFromPath(path);
     if (in.empty())
         return {};
+    const std::uint64_t cfc0 = ctx_->travel->costFunctionCalls();
     SmoothingResult res = smooth(in, in.front().t);
     if (res.arrivalAfter <= in.back().t && std::isfinite(res.arrivalAfter))
+    {
         waypointsToPath(res.waypoints, path);
+        return res;
+    }
+    // The waypoints cannot be flown at full speed from the departure (the path waits or flies slow legs): merge
+    // keeping the schedule, then try full speed on the fewer waypoints.
+    const std::vector<TimedWaypoint> merged = mergeKeepingSchedule(*ctx_, in);
+    SmoothingResult fast = smooth(merged, in.front().t);
+    if (fast.arrivalAfter <= in.back().t && std::isfinite(fast.arrivalAfter))
+        res = fast;
     else
     {
-        res.waypoints = in;
-        res.waypointsAfter = in.size();
+        res.waypoints = merged;
+        res.waypointsAfter = merged.size();
         res.arrivalAfter = in.back().t;
     }
+    res.waypointsBefore = in.size();
+    res.arrivalBefore = in.back().t;
+    res.costFunctionCalls = ctx_->travel->costFunctionCalls() - cfc0;
+    if (res.waypointsAfter != in.size() || res.arrivalAfter < in.back().t)
+        waypointsToPath(res.waypoints, path);
     return res;
 }
 }  // namespace ompl_glider

@@ -12,6 +12,7 @@
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/current/UniformCurrent.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "ompl_glider/ompl/TravelTimeMotionValidator.h"
 #include "ompl_glider/planners/PathSmoother.h"
 
 using namespace ompl_glider;
@@ -19,6 +20,31 @@ using namespace ompl_glider::test;
 
 namespace
 {
+/// Still water, except an adverse current u = -1 (twice V = 0.5) east of x = 1 before t = 5: a glider must wait
+/// west of x = 1 until the current stops.
+class AdverseUntilFive : public CurrentField
+{
+public:
+    double maxSpeed(const Region &) const override
+    {
+        return 1.0;
+    }
+    std::string name() const override
+    {
+        return "adverse until t=5";
+    }
+
+protected:
+    Velocity evaluate(double x, double, double, double t) const override
+    {
+        return {x > 1.0 && t < 5.0 ? -1.0 : 0.0, 0.0};
+    }
+    Jacobian evaluateJacobian(double, double, double, double) const override
+    {
+        return {};
+    }
+};
+
 double uniformTime(double L, double px, double py, double cu, double cv, double V)
 {
     const double pc = px * cu + py * cv;
@@ -157,4 +183,39 @@ TEST(PathSmoother, OmplPathAdapter)
     EXPECT_DOUBLE_EQ(last->getTime(), r.arrivalAfter);
     EXPECT_NEAR(r.arrivalAfter, 4.0 / 0.6, 1e-9);
     EXPECT_NEAR(last->getYaw(), 0.0, 1e-12);
+}
+
+TEST(PathSmoother, WaitingPathMergedKeepingItsSchedule)
+{
+    // A path that waits (slow first leg) because flying at full speed would meet the adverse current: its
+    // waypoints cannot be flown at full speed from t0, so smoothing merges legs keeping the schedule.
+    auto ctx = makeContext(std::make_shared<AdverseUntilFive>(), 0.5, box(-1, 5, -1, 1));
+    const std::vector<TimedWaypoint> timed = {{0, 0, 0}, {1, 0, 6}, {2, 0, 8}, {3, 0, 10}};
+    EXPECT_FALSE(std::isfinite(arrivalTime(*ctx, timed, 0.0)));
+    const std::vector<TimedWaypoint> merged = mergeKeepingSchedule(*ctx, timed);
+    ASSERT_EQ(merged.size(), 3u);  // (0,0,0) -> (1,0,6) -> (3,0,10): the last two legs flown in exactly 4
+    EXPECT_EQ(merged[1].x, 1.0);
+    EXPECT_EQ(merged[1].t, 6.0);
+    EXPECT_EQ(merged[2].t, 10.0);
+
+    ompl::base::RealVectorBounds b(2);
+    b.setLow(0, -1);
+    b.setHigh(0, 5);
+    b.setLow(1, -1);
+    b.setHigh(1, 1);
+    auto space = std::make_shared<TimeSE2StateSpace>(b, 0.0, 100.0);
+    auto si = std::make_shared<ompl::base::SpaceInformation>(space);
+    si->setStateValidityChecker([](const ompl::base::State *) { return true; });
+    si->setMotionValidator(std::make_shared<TravelTimeMotionValidator>(si, ctx));
+    si->setup();
+    ompl::geometric::PathGeometric path(si);
+    waypointsToPath(timed, path);
+    ASSERT_TRUE(path.check());  // the input is a valid (waiting) plan on the time-augmented space
+    const SmoothingResult r = PathSmoother(ctx).smooth(path);
+    EXPECT_EQ(r.waypointsBefore, 4u);
+    EXPECT_EQ(r.waypointsAfter, 3u);
+    EXPECT_EQ(r.arrivalAfter, 10.0);
+    ASSERT_EQ(path.getStateCount(), 3u);
+    EXPECT_EQ(path.getState(1)->as<TimeSE2StateSpace::StateType>()->getTime(), 6.0);
+    EXPECT_TRUE(path.check());  // every merged leg is valid for the motion validator
 }

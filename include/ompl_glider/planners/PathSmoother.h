@@ -39,6 +39,14 @@ std::vector<TimedWaypoint> waypointsFromPath(const ompl::geometric::PathGeometri
 /// @throws Error when the path's space is not a TimeSE2StateSpace.
 void waypointsToPath(const std::vector<TimedWaypoint> &waypoints, ompl::geometric::PathGeometric &path);
 
+/// @brief Merges consecutive legs of a timed path while keeping its schedule: from a kept waypoint a (time t_a), the
+/// farthest later waypoint b is joined directly when the straight leg can be flown in exactly t_b - t_a (the
+/// duration lies in TravelTimeCalculator::arrivalWindow(a -> b, t_a), SPEC.md 2), stays in the region's time window
+/// and is legFree at those times. Every kept waypoint keeps its time, so the arrival is unchanged and every merged
+/// leg is valid for TravelTimeMotionValidator. Meant for paths that wait or fly slow legs (sampling planners on
+/// TimeSE2StateSpace), whose waypoints cannot all be flown at full speed from t0.
+std::vector<TimedWaypoint> mergeKeepingSchedule(const GliderContext &ctx, const std::vector<TimedWaypoint> &timed);
+
 /// @brief What smoothing did.
 struct SmoothingResult
 {
@@ -78,7 +86,10 @@ public:
     }
 
     /// @brief Smooths an OMPL path on a TimeSE2StateSpace in place (departure at the first state's time). The path
-    /// is replaced only when the smoothed path arrives no later than the path's own last state time.
+    /// is replaced only when the smoothed path arrives no later than the path's own last state time. When its
+    /// waypoints cannot be flown at full speed from the departure (paths that wait, from sampling planners), the
+    /// legs are first merged keeping the schedule (mergeKeepingSchedule()), then smoothed at full speed if that
+    /// becomes possible and arrives no later; otherwise the schedule-keeping merge is the result.
     /// @return what smoothing did (result.waypoints is the path now held).
     SmoothingResult smooth(ompl::geometric::PathGeometric &path) const;
 
