@@ -1,17 +1,21 @@
 // glider_plan: plans the built-in Gulf Stream mission (meandering jet, 000 Sec. 6.1) with ZA*TVE, smoothing
-// (000 Table 3) and waypoint refinement, prints the result and optionally writes summary.json, path.csv and a map.
-// The work is done by the library (mission/PlanRun.h); this file only parses flags.
+// (000 Table 3) and waypoint refinement, prints the result and optionally writes summary.json, path.csv and a map;
+// or runs a YAML mission file (--mission, issue 6), or plans on a NetCDF forecast (--currents, issue 5).
+// The work is done by the library (mission/PlanRun.h, mission/MissionOutputs.h); this file only parses flags.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <ompl/util/Console.h>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/mission/MissionOutputs.h"
 #include "ompl_glider/mission/PlanRun.h"
 
 namespace
@@ -20,25 +24,55 @@ constexpr int kUsageError = 2;
 
 void usage(std::ostream &out)
 {
-    out << "Usage: glider_plan [options]\n"
-           "Plans a time-optimal glider route through the built-in Gulf Stream model (meandering jet,\n"
-           "x in [0, 10], y in [-4, 4], V = 0.5) and prints travel time, path length, waypoints, CFC and CMC.\n"
+    out << "Usage: glider_plan [options]                  built-in Gulf Stream mission\n"
+           "       glider_plan --mission FILE.yaml [--out DIR] [--speeds LIST]\n"
+           "       glider_plan --currents FILE.nc --start lon,lat --goal lon,lat [options]\n"
+           "Plans a time-optimal glider route and prints travel time, path length, waypoints, CFC and CMC.\n"
+           "Without --mission / --currents: the built-in Gulf Stream model (meandering jet, x in [0, 10],\n"
+           "y in [-4, 4], V = 0.5, dimensionless units).\n"
            "\n"
-           "Options:\n"
-           "  --start x,y        start position (default 1,-3)\n"
-           "  --goal x,y         goal position (default 8,3)\n"
-           "  --departure t      departure time t0 (default 0)\n"
+           "Common options:\n"
+           "  --start x,y        start (built-in default 1,-3; with --currents lon,lat for a geographic file)\n"
+           "  --goal x,y         goal (built-in default 8,3; with --currents lon,lat for a geographic file)\n"
+           "  --departure t      departure time: built-in a number (default 0); with --currents an ISO 8601 time\n"
+           "                     (2026-03-15T06:00:00Z) or seconds after the first forecast time (default: the\n"
+           "                     first forecast time)\n"
+           "  --speed V          vehicle speed through water (built-in default 0.5; --currents: m/s, default 0.3)\n"
+           "  --speeds LIST      speed sweep, e.g. 0.25,0.30,0.35: travel time and path length per speed\n"
+           "                     (003 Table VI), also with --mission (overrides the mission's 'speeds')\n"
            "  --planner NAME     TVE | A*TVE | ZTVE | ZA*TVE (default) | RRTstar | InformedRRTstar | PRM | PRMstar | RRT\n"
-           "  --grid-size g      lattice spacing for the TVE family (default 0.4)\n"
+           "  --grid-size g      lattice spacing for the TVE family (built-in default 0.4; --currents: metres,\n"
+           "                     default half the smallest grid cell, kept within 1/200..1/25 of the start-goal\n"
+           "                     distance, two significant digits)\n"
            "  --sectors n        lattice connectivity 1..5 (default 3)\n"
            "  --time-limit s     planner time limit in seconds (default 10; sampling planners use all of it)\n"
            "  --no-smooth        skip path smoothing (000 Table 3)\n"
            "  --no-refine        skip waypoint refinement\n"
-           "  --out DIR          write DIR/summary.json, DIR/path.csv, DIR/map.svg and DIR/map.png\n"
-           "  --optimum          also solve Zermelo's optimal-control problem (shooting) and compare\n"
+           "  --out DIR          write the outputs into DIR: built-in and --currents: summary.json, path.csv,\n"
+           "                     map.svg, map.png (--currents also waypoints.csv, path.geojson, goto_l10.ma);\n"
+           "                     --mission: the mission's files (overrides outputs.directory)\n"
+           "  --optimum          built-in only: also solve Zermelo's optimal-control problem (shooting) and compare\n"
            "  --verbose          show OMPL's log messages\n"
            "  --help             this text\n"
-           "Exit status: 0 path found, 1 no path, 2 bad arguments or input.\n";
+           "\n"
+           "Mission file (issue 6; format: examples/MISSION_FORMAT.md):\n"
+           "  --mission FILE     run a YAML mission end to end; only --out, --speeds and --verbose go with it\n"
+           "\n"
+           "NetCDF forecast (issue 5):\n"
+           "  --currents FILE    plan on the u/v currents of a NetCDF file (CF names found automatically)\n"
+           "  --u-var NAME       eastward velocity variable      --v-var NAME      northward velocity variable\n"
+           "  --lon-var NAME     longitude (or x) variable       --lat-var NAME    latitude (or y) variable\n"
+           "  --depth-var NAME   depth variable                  --time-var NAME   time variable\n"
+           "  --xy-interp S      nearest | bilinear (default) | bicubic\n"
+           "  --time-interp S    nearest | linear (default) | cubic | akima\n"
+           "  --depth-interp S   nearest | linear (default) | cubic | akima\n"
+           "  --beyond P         past the last forecast time: refuse (default; such trips are infeasible) |\n"
+           "                     hold (hold the last field)\n"
+           "  --depth z          depth in metres (positive down) at which the current is read (default 0)\n"
+           "  The path.csv columns are t,x,y,lon,lat (t seconds after the first forecast time, x/y metres in the\n"
+           "  local projection).\n"
+           "\n"
+           "Exit status: 0 path found, 1 no path, 2 bad arguments or input (nothing written).\n";
 }
 
 struct UsageError
@@ -78,11 +112,28 @@ int main(int argc, char **argv)
     using namespace ompl_glider;
     PlanRequest req;
     req.problem = gulfStreamProblem();
-    std::string outDir;
+    ForecastPlanRequest fc;
+    std::string outDir, missionFile, departureText, speedText;
+    std::optional<std::vector<double>> speeds;
+    std::set<std::string> given;  // flags seen (for incompatible combinations)
     bool verbose = false;
+    double sx = req.problem.startX, sy = req.problem.startY, gx = req.problem.goalX, gy = req.problem.goalY;
     try
     {
-        std::vector<std::string> args(argv + 1, argv + argc);
+        // "--flag=value" is the same as "--flag value" (handy for values starting with '-': --start=-52.7,47.9).
+        std::vector<std::string> args;
+        for (int k = 1; k < argc; ++k)
+        {
+            const std::string a = argv[k];
+            const std::size_t eq = a.find('=');
+            if (a.rfind("--", 0) == 0 && eq != std::string::npos)
+            {
+                args.push_back(a.substr(0, eq));
+                args.push_back(a.substr(eq + 1));
+            }
+            else
+                args.push_back(a);
+        }
         for (std::size_t i = 0; i < args.size(); ++i)
         {
             const std::string &a = args[i];
@@ -91,17 +142,47 @@ int main(int argc, char **argv)
                     throw UsageError{a + " needs a value"};
                 return args[++i];
             };
+            auto scheme = [&](const std::vector<std::string> &allowed) {
+                const std::string &v = value();
+                if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
+                {
+                    std::string list;
+                    for (const auto &x : allowed)
+                        list += (list.empty() ? "" : " | ") + x;
+                    throw UsageError{a + " expects " + list + ", got '" + v + "'"};
+                }
+                return v;
+            };
+            if (a.rfind("--", 0) == 0)
+                given.insert(a);
             if (a == "--help" || a == "-h")
             {
                 usage(std::cout);
                 return 0;
             }
             else if (a == "--start")
-                parsePair(a, value(), req.problem.startX, req.problem.startY);
+                parsePair(a, value(), sx, sy);
             else if (a == "--goal")
-                parsePair(a, value(), req.problem.goalX, req.problem.goalY);
+                parsePair(a, value(), gx, gy);
             else if (a == "--departure")
-                req.problem.t0 = parseNumber(a, value());
+                departureText = value();
+            else if (a == "--speed")
+            {
+                speedText = value();
+                if (!(parseNumber(a, speedText) > 0.0))
+                    throw UsageError{"--speed must be > 0"};
+            }
+            else if (a == "--speeds")
+            {
+                try
+                {
+                    speeds = parseSpeedList(value());
+                }
+                catch (const Error &e)
+                {
+                    throw UsageError{e.what()};
+                }
+            }
             else if (a == "--planner")
                 req.planner = value();
             else if (a == "--grid-size")
@@ -133,12 +214,62 @@ int main(int argc, char **argv)
                 req.optimum = true;
             else if (a == "--verbose")
                 verbose = true;
+            else if (a == "--mission")
+                missionFile = value();
+            else if (a == "--currents")
+                fc.file = value();
+            else if (a == "--u-var" || a == "--v-var" || a == "--lon-var" || a == "--lat-var" || a == "--depth-var" ||
+                     a == "--time-var")
+            {
+                const std::string role = a.substr(2, a.size() - 6);
+                const std::string &v = value();
+                if (v.empty())
+                    throw UsageError{a + " needs a variable name"};
+                fc.variables[role] = v;
+            }
+            else if (a == "--xy-interp")
+                fc.xyInterpolation = scheme({"nearest", "bilinear", "bicubic"});
+            else if (a == "--time-interp")
+                fc.timeInterpolation = scheme({"nearest", "linear", "cubic", "akima"});
+            else if (a == "--depth-interp")
+                fc.depthInterpolation = scheme({"nearest", "linear", "cubic", "akima"});
+            else if (a == "--beyond")
+                fc.horizonPolicy = scheme({"hold", "refuse"}) == "hold" ? "hold_last" : "refuse";
+            else if (a == "--depth")
+            {
+                fc.depth = parseNumber(a, value());
+                if (fc.depth < 0.0)
+                    throw UsageError{"--depth expects metres >= 0 (positive down)"};
+            }
             else
                 throw UsageError{"unknown option '" + a + "'"};
         }
         const auto &names = plannerNames();
         if (std::find(names.begin(), names.end(), req.planner) == names.end())
             throw UsageError{"unknown planner '" + req.planner + "' (see --help)"};
+
+        // Incompatible combinations.
+        const std::vector<std::string> netcdfFlags = {"--u-var",       "--v-var",       "--lon-var", "--lat-var",
+                                                      "--depth-var",   "--time-var",    "--xy-interp",
+                                                      "--time-interp", "--depth-interp", "--beyond", "--depth"};
+        if (!missionFile.empty())
+        {
+            for (const std::string &f : given)
+                if (f != "--mission" && f != "--out" && f != "--speeds" && f != "--verbose")
+                    throw UsageError{"--mission takes its settings from the mission file: " + f +
+                                     " cannot be combined with it (only --out, --speeds and --verbose can)"};
+        }
+        else if (!fc.file.empty())
+        {
+            if (req.optimum)
+                throw UsageError{"--optimum works only for the built-in mission, not with --currents"};
+        }
+        else
+        {
+            for (const std::string &f : netcdfFlags)
+                if (given.count(f))
+                    throw UsageError{f + " needs --currents FILE"};
+        }
     }
     catch (const UsageError &e)
     {
@@ -148,9 +279,58 @@ int main(int argc, char **argv)
 
     if (!verbose)
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+
+    if (!missionFile.empty())
+    {
+        MissionCommandOptions o;
+        o.speeds = speeds;
+        if (!outDir.empty())
+            o.outputDirectory = outDir;
+        return runMissionFile(missionFile, o, std::cout, std::cerr);
+    }
+
+    if (!fc.file.empty())
+    {
+        fc.startSet = given.count("--start") > 0;
+        fc.goalSet = given.count("--goal") > 0;
+        fc.startA = sx;
+        fc.startB = sy;
+        fc.goalA = gx;
+        fc.goalB = gy;
+        fc.departure = departureText;
+        if (!speedText.empty())
+            fc.speed = std::stod(speedText);
+        fc.planner = req.planner;
+        fc.gridSize = given.count("--grid-size") ? req.gridSize : 0.0;
+        fc.sectors = req.sectors;
+        fc.smooth = req.smooth;
+        fc.refine = req.refine;
+        fc.timeLimit = req.timeLimit;
+        return runForecastCommand(fc, speeds, outDir, true, std::cout, std::cerr);
+    }
+
+    // The built-in Gulf Stream mission.
     try
     {
-        const PlanRunResult result = runPlan(req);
+        req.problem.startX = sx;
+        req.problem.startY = sy;
+        req.problem.goalX = gx;
+        req.problem.goalY = gy;
+        if (!departureText.empty())
+            req.problem.t0 = parseNumber("--departure", departureText);
+        if (!speedText.empty())
+            req.problem.travel.speed = std::stod(speedText);
+    }
+    catch (const UsageError &e)
+    {
+        std::cerr << "glider_plan: " << e.message << "\nTry 'glider_plan --help'.\n";
+        return kUsageError;
+    }
+    try
+    {
+        PlanRunResult result = runPlan(req);
+        if (speeds)
+            result.speedSweep = planSpeedSweep(req, *speeds);
         printPlanReport(std::cout, req, result);
         if (!outDir.empty())
         {

@@ -170,6 +170,11 @@ std::string summaryJson(const MissionResult &r)
     s << " \"cmc\": " << p.currentModelCalls << ",\n";
     s << " \"expansions\": " << p.expansions << ",\n";
     s << " \"planning_wall_time_s\": " << num(p.wallSeconds) << ",\n";
+    // The keys of glider_plan's summary (issue 3), so every mode of the CLI writes them.
+    s << " \"feasible\": " << (p.solved ? "true" : "false") << ",\n";
+    s << " \"cost_function_calls\": " << p.costFunctionCalls << ",\n";
+    s << " \"current_model_calls\": " << p.currentModelCalls << ",\n";
+    s << " \"planning_time_s\": " << num(p.wallSeconds) << ",\n";
     s << " \"total_wall_time_s\": " << num(r.wallSeconds);
     if (r.diveProfiles)
     {
@@ -352,6 +357,63 @@ void writeTextFile(const std::string &path, const std::string &text)
         throw Error("cannot write '" + path + "'");
 }
 
+MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
+{
+    const OutputSpec &o = r.spec.outputs;
+    Region box = problem.box();
+    MapOptions mo;
+    mo.title = r.spec.name + (r.plan.solved ? "" : " (no path)");
+    // (No MapOptions::timeUnit: it would also label the field time, which stays in field units.)
+    MapRenderer map(box, mo);
+    const double tMap = std::isnan(o.mapTime) ? r.plan.departure : o.mapTime;
+    map.setField(problem.field(), tMap, r.spec.vehicle.depth);
+    for (const MissionPolygon &p : problem.polygons())
+    {
+        MapPolygon mp;
+        mp.label = p.name;
+        mp.vertices = p.points;
+        if (p.kind == "closure")
+        {
+            mp.hatched = true;
+            mp.fill = {0.9, 0.6, 0.1, 0.35};
+            mp.stroke = {0.7, 0.4, 0.0, 1.0};
+        }
+        else if (p.kind == "ice")
+        {
+            mp.fill = {0.85, 0.93, 1.0, 0.75};
+            mp.stroke = {0.3, 0.5, 0.8, 1.0};
+            mp.label += " (ice at t_ref)";
+        }
+        map.addPolygon(mp);
+    }
+    if (r.plan.solved)
+    {
+        // Time ticks a pilot reads: hours or days after departure when the mission has physical time units.
+        std::vector<TimedWaypoint> raw = r.plan.raw, fin = r.plan.path;
+        const bool physical = r.spec.current.type == "netcdf" || r.spec.timeUnitSeconds != 1.0;
+        if (physical)
+        {
+            const double tripSeconds = r.plan.travelTime * r.spec.timeUnitSeconds;
+            const double unit = tripSeconds > 4 * 86400.0 ? 86400.0 : 3600.0;
+            for (auto *v : {&raw, &fin})
+                for (auto &w : *v)
+                    w.t = (w.t - r.plan.departure) * r.spec.timeUnitSeconds / unit;
+            map.addNote(std::string("ticks: ") + (unit == 86400.0 ? "days" : "hours") + " after departure");
+        }
+        map.addPath(MapRenderer::rawPathStyle("lattice path", raw));
+        MapPath smooth = MapRenderer::smoothedPathStyle(
+            r.spec.planner.smoothing ? "smoothed path" : "final path", fin);
+        smooth.timeTicks = true;
+        map.addPath(smooth);
+        map.addNote("departure " + csvNum(r.plan.departure) +
+                    (r.waypoints.empty() || r.waypoints.front().iso.empty() ? "" : " (" + r.waypoints.front().iso + ")"));
+        map.addNote("travel time " + csvNum(r.plan.travelTime) + ", straight line " +
+                    (std::isfinite(r.plan.straightLineTime) ? csvNum(r.plan.straightLineTime) : "impassable"));
+    }
+    map.setStartGoal(problem.startX(), problem.startY(), problem.goalX(), problem.goalY());
+    return map;
+}
+
 std::vector<std::string> writeMissionOutputs(const MissionResult &r, const MissionProblem &problem)
 {
     const OutputSpec &o = r.spec.outputs;
@@ -386,57 +448,7 @@ std::vector<std::string> writeMissionOutputs(const MissionResult &r, const Missi
         }
         else if (kind == "map")
         {
-            Region box = problem.box();
-            MapOptions mo;
-            mo.title = r.spec.name + (r.plan.solved ? "" : " (no path)");
-            // (No MapOptions::timeUnit: it would also label the field time, which stays in field units.)
-            MapRenderer map(box, mo);
-            const double tMap = std::isnan(o.mapTime) ? r.plan.departure : o.mapTime;
-            map.setField(problem.field(), tMap, r.spec.vehicle.depth);
-            for (const MissionPolygon &p : problem.polygons())
-            {
-                MapPolygon mp;
-                mp.label = p.name;
-                mp.vertices = p.points;
-                if (p.kind == "closure")
-                {
-                    mp.hatched = true;
-                    mp.fill = {0.9, 0.6, 0.1, 0.35};
-                    mp.stroke = {0.7, 0.4, 0.0, 1.0};
-                }
-                else if (p.kind == "ice")
-                {
-                    mp.fill = {0.85, 0.93, 1.0, 0.75};
-                    mp.stroke = {0.3, 0.5, 0.8, 1.0};
-                    mp.label += " (ice at t_ref)";
-                }
-                map.addPolygon(mp);
-            }
-            if (r.plan.solved)
-            {
-                // Time ticks a pilot reads: hours or days after departure when the mission has physical time units.
-                std::vector<TimedWaypoint> raw = r.plan.raw, fin = r.plan.path;
-                const bool physical = r.spec.current.type == "netcdf" || r.spec.timeUnitSeconds != 1.0;
-                if (physical)
-                {
-                    const double tripSeconds = r.plan.travelTime * r.spec.timeUnitSeconds;
-                    const double unit = tripSeconds > 4 * 86400.0 ? 86400.0 : 3600.0;
-                    for (auto *v : {&raw, &fin})
-                        for (auto &w : *v)
-                            w.t = (w.t - r.plan.departure) * r.spec.timeUnitSeconds / unit;
-                    map.addNote(std::string("ticks: ") + (unit == 86400.0 ? "days" : "hours") + " after departure");
-                }
-                map.addPath(MapRenderer::rawPathStyle("lattice path", raw));
-                MapPath smooth = MapRenderer::smoothedPathStyle(
-                    r.spec.planner.smoothing ? "smoothed path" : "final path", fin);
-                smooth.timeTicks = true;
-                map.addPath(smooth);
-                map.addNote("departure " + csvNum(r.plan.departure) +
-                            (r.waypoints.empty() || r.waypoints.front().iso.empty() ? "" : " (" + r.waypoints.front().iso + ")"));
-                map.addNote("travel time " + csvNum(r.plan.travelTime) + ", straight line " +
-                            (std::isfinite(r.plan.straightLineTime) ? csvNum(r.plan.straightLineTime) : "impassable"));
-            }
-            map.setStartGoal(problem.startX(), problem.startY(), problem.goalX(), problem.goalY());
+            const MapRenderer map = missionMap(r, problem);
             map.writeSvg(base + o.prefix + "_map.svg");
             map.writePng(base + o.prefix + "_map.png");
             written.push_back(base + o.prefix + "_map.svg");

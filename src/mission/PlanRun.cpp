@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include <ompl/geometric/planners/prm/PRM.h>
 #include <ompl/geometric/planners/prm/PRMstar.h>
@@ -15,7 +16,12 @@
 #include <ompl/geometric/planners/rrt/RRTstar.h>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/current/Interpolation.h"
 #include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/mission/MissionOutputs.h"
+#include "ompl_glider/mission/SlocumGoto.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
@@ -232,6 +238,19 @@ std::string planSummaryJson(const PlanRequest &req, const PlanRunResult &r)
     o << "  \"postprocess_time_s\": " << num(r.postprocessSeconds) << ",\n";
     if (req.optimum)
         o << "  \"optimal_control_time\": " << num(r.optimumTime) << ",\n";
+    if (!r.speedSweep.empty())
+    {
+        o << "  \"speed_sweep\": [";
+        for (std::size_t i = 0; i < r.speedSweep.size(); ++i)
+        {
+            const SpeedSweepRow &w = r.speedSweep[i];
+            o << (i ? ",\n    " : "") << "{\"speed\": " << num(w.speed) << ", \"travel_time\": " << num(w.travelTime)
+              << ", \"path_length\": " << num(w.pathLength) << ", \"straight_line_travel_time\": "
+              << (std::isfinite(w.straightLineTime) ? num(w.straightLineTime) : std::string("\"impassable\""))
+              << ", \"straight_line_length\": " << num(w.straightLineLength) << "}";
+        }
+        o << "],\n";
+    }
     o << "  \"path_checked\": " << (r.pathChecked ? "true" : "false") << "\n";
     o << "}\n";
     return o.str();
@@ -390,6 +409,8 @@ void printPlanReport(std::ostream &out, const PlanRequest &req, const PlanRunRes
             std::snprintf(buf, sizeof buf, "Optimal control:    no extremal through the goal found\n");
         out << buf;
     }
+    if (!r.speedSweep.empty())
+        out << "Speed sweep (003 Table VI):\n" << speedSweepTable(r.speedSweep);
     if (r.feasible)
     {
         out << "Waypoints (t, x, y):\n";
@@ -398,6 +419,277 @@ void printPlanReport(std::ostream &out, const PlanRequest &req, const PlanRunRes
             std::snprintf(buf, sizeof buf, "  %9.4f  %8.4f  %8.4f\n", w.t, w.x, w.y);
             out << buf;
         }
+    }
+}
+
+std::vector<SpeedSweepRow> planSpeedSweep(const PlanRequest &request, const std::vector<double> &speeds)
+{
+    std::vector<SpeedSweepRow> rows;
+    for (double v : speeds)
+    {
+        if (!(v > 0.0) || !std::isfinite(v))
+            throw Error("speed sweep: speed " + num(v) + " is not > 0");
+        PlanRequest r = request;
+        r.problem.travel.speed = v;
+        r.optimum = false;
+        const PlanRunResult res = runPlan(r);
+        SpeedSweepRow row;
+        row.speed = v;
+        row.solved = res.feasible;
+        row.travelTime = res.travelTime;
+        row.pathLength = res.pathLength;
+        row.straightLineTime = res.straightLineTime;
+        row.straightLineLength = std::hypot(r.problem.goalX - r.problem.startX, r.problem.goalY - r.problem.startY);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+double defaultForecastGridSize(double minCellSize, double distance)
+{
+    double g = 0.5 * minCellSize;
+    if (distance > 0.0)
+        g = std::clamp(g, distance / 200.0, distance / 25.0);
+    if (!(g > 0.0) || !std::isfinite(g))
+        throw Error("cannot choose a grid size (cell size " + num(minCellSize) + ", start-goal distance " +
+                    num(distance) + "): give --grid-size");
+    const double scale = std::pow(10.0, std::floor(std::log10(g)) - 1.0);  // two significant digits
+    return std::round(g / scale) * scale;
+}
+
+namespace
+{
+std::string lowerPlannerName(const std::string &name)
+{
+    if (name == "TVE")
+        return "tve";
+    if (name == "A*TVE")
+        return "astartve";
+    if (name == "ZTVE")
+        return "ztve";
+    if (name == "ZA*TVE")
+        return "zastartve";
+    return name;
+}
+
+std::string pointText(double a, double b)
+{
+    return num(a) + "," + num(b);
+}
+}  // namespace
+
+MissionSpec forecastMission(const ForecastPlanRequest &q)
+{
+    namespace fs = std::filesystem;
+    const std::string &file = q.file;
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec))
+        throw Error("--currents: cannot open '" + file + "' (no such file)");
+    if (!q.startSet || !q.goalSet)
+        throw Error(std::string("--currents needs --start and --goal (") +
+                    "lon,lat for a geographic file, x,y for a Cartesian one)");
+    if (!(q.speed > 0.0) || !std::isfinite(q.speed))
+        throw Error("--speed must be > 0 (m/s)");
+    if (!(q.depth >= 0.0))
+        throw Error("--depth must be >= 0 (metres, positive down)");
+    const auto &names = plannerNames();
+    if (std::find(names.begin(), names.end(), q.planner) == names.end())
+        throw Error("unknown planner '" + q.planner + "' (see --help)");
+
+    MissionSpec m;
+    m.file = file;
+    m.directory = ".";
+    m.name = fs::path(file).stem().string();
+    m.current.type = "netcdf";
+    m.current.file = file;
+    m.current.variables = q.variables;
+    m.current.xyInterpolation = q.xyInterpolation;
+    m.current.depthInterpolation = q.depthInterpolation;
+    m.current.timeInterpolation = q.timeInterpolation;
+    m.current.horizonPolicy = q.horizonPolicy;
+    m.current.mark.file = file;
+
+    // Load once as the mission runner will (same names, schemes, depth range, default projection) to check the
+    // request and convert the start, goal and departure.
+    NetCdfCurrentOptions o;
+    auto var = [&](const char *role) {
+        const auto it = q.variables.find(role);
+        return it == q.variables.end() ? std::string() : it->second;
+    };
+    o.uName = var("u");
+    o.vName = var("v");
+    o.lonName = var("lon");
+    o.latName = var("lat");
+    o.depthName = var("depth");
+    o.timeName = var("time");
+    o.field.xy = parseInterp2D(q.xyInterpolation);
+    o.field.depth = parseInterp1D(q.depthInterpolation);
+    o.field.time = parseInterp1D(q.timeInterpolation);
+    o.field.beyond = q.horizonPolicy == "hold_last" ? BeyondForecast::HoldLast : BeyondForecast::Refuse;
+    o.maxDepth = q.depth;
+    o.departure = q.departure;
+    NetCdfCurrents nc;
+    try
+    {
+        nc = loadNetCdfCurrents(file, o);
+    }
+    catch (const Error &e)
+    {
+        const std::string what = e.what();
+        if (!q.departure.empty() && what.find("depart") != std::string::npos)
+            throw Error("--departure " + q.departure + ": " + what);
+        throw;
+    }
+    const GriddedCurrentField &g = *nc.field;
+    const char *coords = nc.geographic ? "lon,lat" : "x,y";
+    double sx, sy, gx, gy;
+    nc.toLocal(q.startA, q.startB, sx, sy);
+    nc.toLocal(q.goalA, q.goalB, gx, gy);
+    const Region e = g.extent();
+    for (const auto &[flag, a, b, x, y] :
+         {std::tuple<const char *, double, double, double, double>{"--start", q.startA, q.startB, sx, sy},
+          std::tuple<const char *, double, double, double, double>{"--goal", q.goalA, q.goalB, gx, gy}})
+    {
+        double fi, fj;
+        if (!std::isfinite(x) || !std::isfinite(y) || !g.locate(x, y, fi, fj))
+        {
+            double lo0, la0, lo1, la1;
+            nc.toGeographic(e.xMin, e.yMin, lo0, la0);
+            nc.toGeographic(e.xMax, e.yMax, lo1, la1);
+            throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") lies outside the grid of '" +
+                        file + "' (about " + coords + " " + pointText(lo0, la0) + " to " + pointText(lo1, la1) +
+                        ")");
+        }
+        if (!g.inWater(x, y, q.depth))
+            throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") is on land in '" + file +
+                        "' (u/v are fill values there at depth " + num(q.depth) + " m)");
+    }
+    const double tDep = nc.departureTime;
+    if (tDep < nc.forecastBegin || tDep > nc.forecastEnd)
+        throw Error("--departure " + q.departure + " is outside the forecast (" + nc.isoTime(nc.forecastBegin) +
+                    " to " + nc.isoTime(nc.forecastEnd) + ")");
+    if (tDep >= nc.forecastEnd && q.horizonPolicy == "refuse")
+        throw Error("--departure " + (q.departure.empty() ? std::string("(default)") : q.departure) +
+                    " is the last forecast time: no time is left to travel (use an earlier departure or --beyond hold)");
+
+    if (nc.geographic)
+    {
+        m.start.geographic = m.goal.geographic = true;
+        m.start.lon = q.startA;
+        m.start.lat = q.startB;
+        m.goal.lon = q.goalA;
+        m.goal.lat = q.goalB;
+    }
+    else
+    {
+        m.start.x = q.startA;
+        m.start.y = q.startB;
+        m.goal.x = q.goalA;
+        m.goal.y = q.goalB;
+    }
+    if (nc.dated)
+    {
+        MissionSpec::FileCalendar fc;
+        fc.calendar = nc.calendar;
+        fc.originSeconds = nc.originSeconds;
+        m.fileCalendar = fc;
+        m.epoch = fc.originSeconds - secondsSinceCalendarEpoch(DateTime{}, fc.calendar);
+    }
+    m.departure.time = tDep;
+    m.vehicle.speed = q.speed;
+    m.vehicle.depth = q.depth;
+    m.travel.speed = q.speed;
+    m.travel.depth = q.depth;
+    m.planner.name = lowerPlannerName(q.planner);
+    m.planner.gridSize =
+        q.gridSize > 0.0 ? q.gridSize : defaultForecastGridSize(g.minCellSize(), std::hypot(gx - sx, gy - sy));
+    m.planner.sectors = static_cast<int>(q.sectors);
+    m.planner.smoothing = q.smooth;
+    m.planner.refinement = q.refine;
+    m.planner.timeLimit = q.timeLimit;
+    m.outputs.files.clear();
+    m.outputs.directory.clear();
+    m.outputs.gotoNumber = 10;
+    return m;
+}
+
+std::string forecastPathCsv(const MissionResult &r)
+{
+    std::ostringstream o;
+    o << "t,x,y,lon,lat\n";
+    char buf[200];
+    for (const MissionWaypoint &w : r.waypoints)
+    {
+        if (w.geographic)
+            std::snprintf(buf, sizeof buf, "%.10g,%.10g,%.10g,%.10g,%.10g\n", w.time, w.x, w.y, w.lon, w.lat);
+        else
+            std::snprintf(buf, sizeof buf, "%.10g,%.10g,%.10g,,\n", w.time, w.x, w.y);
+        o << buf;
+    }
+    return o.str();
+}
+
+std::vector<std::string> writeForecastOutputs(const MissionResult &r, const MissionProblem &problem,
+                                              const std::string &directory)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::create_directories(directory, ec);
+    if (ec || !fs::is_directory(directory))
+        throw Error("cannot create output directory '" + directory + "'" + (ec ? ": " + ec.message() : std::string()));
+    const fs::path dir(directory);
+    std::vector<std::string> files;
+    auto text = [&](const char *name, const std::string &content) {
+        const std::string f = (dir / name).string();
+        writeFile(f, content);
+        files.push_back(f);
+    };
+    text("summary.json", summaryJson(r));
+    if (r.plan.solved)
+    {
+        text("path.csv", forecastPathCsv(r));
+        text("waypoints.csv", waypointsCsv(r));
+        text("path.geojson", waypointsGeoJson(r));
+        if (problem.geographic())
+        {
+            const std::string f = (dir / gotoFileName(r.spec.outputs.gotoNumber)).string();
+            writeGotoFile(f, gotoList(r));
+            files.push_back(f);
+        }
+    }
+    const MapRenderer map = missionMap(r, problem);
+    map.writeSvg((dir / "map.svg").string());
+    map.writePng((dir / "map.png").string());
+    files.push_back((dir / "map.svg").string());
+    files.push_back((dir / "map.png").string());
+    return files;
+}
+
+int runForecastCommand(const ForecastPlanRequest &request, const std::optional<std::vector<double>> &speeds,
+                       const std::string &directory, bool progress, std::ostream &out, std::ostream &err)
+{
+    try
+    {
+        const MissionSpec spec = forecastMission(request);
+        const MissionProblem problem(spec);
+        RunOptions o;
+        o.writeOutputs = false;
+        o.progress = progress;
+        o.speeds = speeds;
+        MissionResult r = runMission(spec, o);
+        out << "forecast " << request.file << ": grid size " << num(spec.planner.gridSize) << " m"
+            << (request.gridSize > 0.0 ? "" : " (default: half the smallest cell, within 1/200..1/25 of the "
+                                              "start-goal distance)")
+            << "\n";
+        if (!directory.empty())
+            r.files = writeForecastOutputs(r, problem, directory);
+        printMissionReport(out, r);
+        return r.plan.solved ? 0 : 1;
+    }
+    catch (const Error &e)
+    {
+        err << "glider_plan: " << e.what() << "\n";
+        return 2;
     }
 }
 }  // namespace ompl_glider

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/mission/MapRenderer.h"
 #include "ompl_glider/mission/MissionRunner.h"
 #include "ompl_glider/mission/SlocumGoto.h"
 
@@ -38,6 +39,10 @@ GotoList gotoList(const MissionResult &result);
 /// @brief The speed sweep as a text table (003 Table VI): speed, travel time, path length, straight-line travel
 /// time ("impassable" when infinite) and length.
 std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows);
+
+/// @brief The mission's map: current arrows at outputs.map_time (default: the departure), forbidden regions, lattice
+/// and final paths with time ticks (hours or days after departure for physical units), start and goal.
+MapRenderer missionMap(const MissionResult &result, const MissionProblem &problem);
 
 /// @brief Writes the files listed in result.spec.outputs.files into result.spec.outputs.directory (created when
 /// missing): <prefix>_waypoints.csv, <prefix>.geojson, goto_lNN.ma, <prefix>_summary.json, <prefix>_map.svg/.png.

@@ -5,12 +5,15 @@
 /// core of the glider_plan CLI.
 
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <limits>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "ompl_glider/mission/MapRenderer.h"
+#include "ompl_glider/mission/MissionRunner.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/planners/TveSearch.h"
 
@@ -54,6 +57,7 @@ struct PlanRunResult
     bool pathChecked{false};                ///< the final OMPL path passed PathGeometric::check()
     double optimumTime{std::numeric_limits<double>::infinity()};  ///< optimal-control travel time (when asked)
     std::vector<TimedWaypoint> optimumPath;  ///< samples of the optimal trajectory (when asked and found)
+    std::vector<SpeedSweepRow> speedSweep;  ///< speed sweep (003 Table VI) when asked (planSpeedSweep())
 };
 
 /// @brief Planner names runPlan() accepts: "TVE", "A*TVE", "ZTVE", "ZA*TVE" (ZAStarTVE configurations) and OMPL's
@@ -89,4 +93,58 @@ std::vector<std::string> writePlanOutputs(const PlanRequest &request, const Plan
 
 /// @brief Human-readable report: travel time, path length, waypoints raw/smoothed/refined, CFC, CMC, times.
 void printPlanReport(std::ostream &out, const PlanRequest &request, const PlanRunResult &result);
+
+/// @brief The speed sweep of 003 Table VI for a PlanRequest: runPlan() at every speed (same start, goal,
+/// departure, planner and post-processing). @throws Error for a speed <= 0 or as runPlan().
+std::vector<SpeedSweepRow> planSpeedSweep(const PlanRequest &request, const std::vector<double> &speeds);
+
+/// @brief A plan on a NetCDF forecast from command-line flags (`glider_plan --currents FILE`, issue 5).
+struct ForecastPlanRequest
+{
+    std::string file;                              ///< the NetCDF forecast
+    std::map<std::string, std::string> variables;  ///< role (u, v, lon, lat, depth, time) -> variable name
+    std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic
+    std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima
+    std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
+    std::string horizonPolicy{"refuse"};           ///< refuse | hold_last (beyond the last forecast time)
+    double depth{0.0};                             ///< depth (m, positive down) at which the current is read
+    bool startSet{false}, goalSet{false};          ///< start / goal given
+    double startA{0}, startB{0};                   ///< start: lon,lat (geographic file) or x,y (Cartesian file)
+    double goalA{0}, goalB{0};                     ///< goal: lon,lat or x,y
+    double speed{0.3};                             ///< vehicle speed through water, m/s
+    std::string departure;  ///< ISO 8601 date or seconds after the first forecast time; empty: first forecast time
+    std::string planner{"ZA*TVE"};                 ///< one of plannerNames()
+    double gridSize{0.0};                          ///< lattice spacing in metres; 0: defaultForecastGridSize()
+    unsigned sectors{3};                           ///< lattice sectors 1..5
+    bool smooth{true};                             ///< smoothing (000 Table 3)
+    bool refine{true};                             ///< waypoint refinement
+    double timeLimit{10.0};                        ///< planner time limit (s)
+};
+
+/// @brief Default lattice spacing (metres) on a forecast: half the smallest grid cell, but no coarser than 1/25
+/// of the start-goal distance and no finer than 1/200 of it, rounded to two significant digits. (Half a cell
+/// resolves the interpolated field; 25 steps keep the path's shape; 200 steps bound the search on fine grids.)
+double defaultForecastGridSize(double minCellSize, double startGoalDistance);
+
+/// @brief The MissionSpec of a forecast request (one code path with `--mission`): loads the file once to check
+/// it and to convert the start, goal and departure; checks that start and goal lie on the grid and in water and
+/// that the departure lies within the forecast; picks the default grid size. Writes nothing.
+/// @throws Error with a one-line message naming the flag, file or variable at fault.
+MissionSpec forecastMission(const ForecastPlanRequest &request);
+
+/// @brief The final path as CSV with header `t,x,y,lon,lat` (t in seconds of field time, i.e. after the first
+/// forecast time; x/y metres in the local projection; lon/lat degrees, empty for a Cartesian file).
+std::string forecastPathCsv(const MissionResult &result);
+
+/// @brief Writes DIR/summary.json (summaryJson()), DIR/path.csv (forecastPathCsv()), DIR/waypoints.csv,
+/// DIR/path.geojson, DIR/goto_lNN.ma (geographic files), DIR/map.svg and DIR/map.png (missionMap()).
+/// @return the files written. @throws Error naming the file that cannot be written.
+std::vector<std::string> writeForecastOutputs(const MissionResult &result, const MissionProblem &problem,
+                                              const std::string &directory);
+
+/// @brief What `glider_plan --currents FILE` does: forecastMission(), runMission() (no files), the report on @p out
+/// and the outputs in @p directory (none when empty); errors on @p err as one line.
+/// @return 0 path found, 1 no path, 2 bad input (nothing written).
+int runForecastCommand(const ForecastPlanRequest &request, const std::optional<std::vector<double>> &speeds,
+                       const std::string &directory, bool progress, std::ostream &out, std::ostream &err);
 }  // namespace ompl_glider
