@@ -129,6 +129,16 @@ std::vector<TimedWaypoint> mergeKeepingSchedule(const GliderContext &ctx, const 
     return out;
 }
 
+namespace
+{
+/// Arrival a is no later than b up to the relative rounding tolerance kSmoothingTieTolerance (exact ties, e.g.
+/// collinear legs in a uniform current, differ by a few ulps between the merged leg and the legs it replaces).
+bool noLater(double a, double b)
+{
+    return a <= b + kSmoothingTieTolerance * std::fabs(b);
+}
+}  // namespace
+
 PathSmoother::PathSmoother(std::shared_ptr<const GliderContext> ctx) : ctx_(std::move(ctx))
 {
     if (!ctx_ || !ctx_->field || !ctx_->travel)
@@ -161,15 +171,15 @@ SmoothingResult PathSmoother::smooth(const std::vector<TimedWaypoint> &input, do
                 const double tS = wp[iStart].t;
                 const double t2 = leg(wp[iPath - 1], wp[iPath], tS + t1);
                 const double tSum = leg(wp[iStart], wp[iPath], tS);  // III
-                bool merge = std::isfinite(tSum) && !(t1 + t2 < tSum);  // III, IV
+                bool merge = std::isfinite(tSum) && noLater(tS + tSum, tS + t1 + t2);  // III, IV
                 if (merge)
                 {
                     // V: the rest of the path from the merged arrival must reach the goal no later.
                     double tEnd = tS + tSum;
                     for (std::size_t k = iPath + 1; k < n && std::isfinite(tEnd); ++k)
                         tEnd += leg(wp[k - 1], wp[k], tEnd);
-                    if (tEnd <= best)
-                        best = tEnd;
+                    if (noLater(tEnd, best))
+                        best = std::min(best, tEnd);  // the minimum: the tolerance never accumulates
                     else
                         merge = false;
                 }
@@ -191,7 +201,7 @@ SmoothingResult PathSmoother::smooth(const std::vector<TimedWaypoint> &input, do
             out = retimeWaypoints(ctx, out, t0);
             const bool changed = out.size() != wp.size();
             // Guard (cannot trigger unless the travel-time code is non-deterministic): never accept a later path.
-            if (!(out.back().t <= res.arrivalBefore))
+            if (!noLater(out.back().t, res.arrivalBefore))
                 break;
             wp = std::move(out);
             if (!changed)
@@ -212,7 +222,7 @@ SmoothingResult PathSmoother::smooth(ompl::geometric::PathGeometric &path) const
         return {};
     const std::uint64_t cfc0 = ctx_->travel->costFunctionCalls();
     SmoothingResult res = smooth(in, in.front().t);
-    if (res.arrivalAfter <= in.back().t && std::isfinite(res.arrivalAfter))
+    if (std::isfinite(res.arrivalAfter) && noLater(res.arrivalAfter, in.back().t))
     {
         waypointsToPath(res.waypoints, path);
         return res;
@@ -221,7 +231,7 @@ SmoothingResult PathSmoother::smooth(ompl::geometric::PathGeometric &path) const
     // keeping the schedule, then try full speed on the fewer waypoints.
     const std::vector<TimedWaypoint> merged = mergeKeepingSchedule(*ctx_, in);
     SmoothingResult fast = smooth(merged, in.front().t);
-    if (fast.arrivalAfter <= in.back().t && std::isfinite(fast.arrivalAfter))
+    if (std::isfinite(fast.arrivalAfter) && noLater(fast.arrivalAfter, in.back().t))
         res = fast;
     else
     {

@@ -79,7 +79,7 @@ TEST(PlannerVsOptimum, MeanderingJetCrossings)
         EXPECT_TRUE(path.check());
         row.nSmoothed = path.getStateCount();
         row.smoothed = resimulated(*ctx, path);
-        EXPECT_LE(row.smoothed, row.raw);  // smoothing never arrives later
+        EXPECT_LE(row.smoothed, row.raw * (1.0 + kSmoothingTieTolerance));  // smoothing never arrives later
         EXPECT_LE(sm.waypointsAfter, sm.waypointsBefore);
 
         const RefinementResult rf = WaypointRefiner(ctx).refine(path);

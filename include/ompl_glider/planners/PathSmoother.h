@@ -47,6 +47,12 @@ void waypointsToPath(const std::vector<TimedWaypoint> &waypoints, ompl::geometri
 /// TimeSE2StateSpace), whose waypoints cannot all be flown at full speed from t0.
 std::vector<TimedWaypoint> mergeKeepingSchedule(const GliderContext &ctx, const std::vector<TimedWaypoint> &timed);
 
+/// @brief Relative tolerance of the smoother's "no later" tests (IV, V and the final guard): an arrival a counts as
+/// no later than b when a <= b + 1e-12 |b|. It only lets exact ties that differ by rounding merge (a straight path
+/// through collinear waypoints in a uniform current); the running bound is the minimum arrival seen, so the
+/// tolerance never accumulates.
+constexpr double kSmoothingTieTolerance = 1e-12;
+
 /// @brief What smoothing did.
 struct SmoothingResult
 {
@@ -54,7 +60,7 @@ struct SmoothingResult
     std::size_t waypointsBefore{0};        ///< waypoint count of the input (start and goal included)
     std::size_t waypointsAfter{0};         ///< waypoint count of the result
     double arrivalBefore{0.0};             ///< arrival at the goal of the input, re-simulated from t0
-    double arrivalAfter{0.0};              ///< arrival at the goal of the result (<= arrivalBefore)
+    double arrivalAfter{0.0};  ///< arrival at the goal of the result (<= arrivalBefore (1 + kSmoothingTieTolerance))
     unsigned passes{0};                    ///< passes of loop I of 000 Table 3
     std::uint64_t costFunctionCalls{0};    ///< CFC spent by the smoothing
 };
@@ -67,7 +73,8 @@ struct SmoothingResult
 /// Passes repeat until the waypoint count stops changing (I).
 ///
 /// Guarantees: the first and last waypoints are kept; every leg of the result is feasible and free; the result
-/// never arrives later than the input (both re-simulated from t0 with the same travel-time code); a path with an
+/// never arrives later than the input (both re-simulated from t0 with the same travel-time code), up to the
+/// relative rounding tolerance kSmoothingTieTolerance (1e-12: exact ties merge); a path with an
 /// infeasible leg is returned unchanged (re-timed). Usable on any planner's path (waypoint list or, through the
 /// PathGeometric overload, an OMPL path on a TimeSE2StateSpace).
 class PathSmoother
