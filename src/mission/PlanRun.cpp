@@ -474,7 +474,9 @@ std::string lowerPlannerName(const std::string &name)
 
 std::string pointText(double a, double b)
 {
-    return num(a) + "," + num(b);
+    char buf[80];
+    std::snprintf(buf, sizeof buf, "%.6g,%.6g", a, b);
+    return buf;
 }
 }  // namespace
 
@@ -535,10 +537,25 @@ MissionSpec forecastMission(const ForecastPlanRequest &q)
     }
     catch (const Error &e)
     {
-        const std::string what = e.what();
-        if (!q.departure.empty() && what.find("depart") != std::string::npos)
-            throw Error("--departure " + q.departure + ": " + what);
-        throw;
+        // Name the command-line flags instead of the library's option fields.
+        std::string what = e.what();
+        for (const auto &[field, flag] : std::vector<std::pair<std::string, std::string>>{
+                 {"NetCdfCurrentOptions::timeName/depthName/lonName/latName",
+                  "--time-var/--depth-var/--lon-var/--lat-var"},
+                 {"NetCdfCurrentOptions::lonName/latName", "--lon-var/--lat-var"},
+                 {"NetCdfCurrentOptions::uName", "--u-var"},
+                 {"NetCdfCurrentOptions::vName", "--v-var"},
+                 {"NetCdfCurrentOptions::lonName", "--lon-var"},
+                 {"NetCdfCurrentOptions::latName", "--lat-var"},
+                 {"NetCdfCurrentOptions::depthName", "--depth-var"},
+                 {"NetCdfCurrentOptions::timeName", "--time-var"},
+                 {"NetCdfCurrentOptions::departure", "--departure"},
+                 {"NetCdfCurrentOptions::maxDepth", "--depth"}})
+            for (std::size_t at = what.find(field); at != std::string::npos; at = what.find(field, at))
+                what.replace(at, field.size(), flag);
+        if (!q.departure.empty() && what.find("depart") != std::string::npos && what.find("--departure") == std::string::npos)
+            what = "--departure " + q.departure + ": " + what;
+        throw Error(what);
     }
     const GriddedCurrentField &g = *nc.field;
     const char *coords = nc.geographic ? "lon,lat" : "x,y";
@@ -600,6 +617,7 @@ MissionSpec forecastMission(const ForecastPlanRequest &q)
     m.vehicle.depth = q.depth;
     m.travel.speed = q.speed;
     m.travel.depth = q.depth;
+    m.travel.eps = 1.0;  // one second per integration step on trips of hours to days (as the example mission)
     m.planner.name = lowerPlannerName(q.planner);
     m.planner.gridSize =
         q.gridSize > 0.0 ? q.gridSize : defaultForecastGridSize(g.minCellSize(), std::hypot(gx - sx, gy - sy));
