@@ -72,6 +72,39 @@ assert open(os.path.join(d, "map.png"), "rb").read()[:8] == b"\x89PNG\r\n\x1a\n"
 print("--currents OK")
 PY
 
+# 2b. a Cartesian forecast (x/y in metres, undated): uniform current 0.2 m/s east, speed 0.3 m/s, 20 km east:
+# the travel time is 20000 / 0.5 = 40000 s exactly (the integrator's tolerance is 1 s).
+cart="$dir/cart.nc"
+python3 - "$dir/cart.cdl" <<'PY'
+import sys
+vals = lambda c: ", ".join([c] * (3 * 5 * 6))
+open(sys.argv[1], "w").write(f"""netcdf cart {{ dimensions: time = 3 ; y = 5 ; x = 6 ;
+variables: double time(time) ; time:units = "seconds" ; double y(y) ; y:units = "m" ; double x(x) ; x:units = "m" ;
+ float u(time, y, x) ; u:units = "m/s" ; float v(time, y, x) ; v:units = "m/s" ;
+data: time = 0, 50000, 100000 ; y = 0, 5000, 10000, 15000, 20000 ; x = 0, 5000, 10000, 15000, 20000, 25000 ;
+ u = {vals("0.2")} ; v = {vals("0")} ; }}
+""")
+PY
+ncgen -o "$cart" "$dir/cart.cdl"
+"$exe" --currents "$cart" --start 2000,10000 --goal 22000,10000 --departure 1000 --out "$dir/cart" > /dev/null 2>&1
+python3 - "$dir/cart" <<'PY'
+import json, os, sys
+d = sys.argv[1]
+s = json.load(open(os.path.join(d, "summary.json")))
+assert abs(s["travel_time"] - 40000) < 5, s["travel_time"]
+lines = open(os.path.join(d, "path.csv")).read().strip().splitlines()
+assert lines[0] == "t,x,y,lon,lat" and lines[1] == "1000,2000,10000,,", lines[:2]
+print("Cartesian --currents OK")
+PY
+# past the last forecast time (100000 s): refused -> no path (status 1); held -> the same 40000 s
+set +e
+"$exe" --currents "$cart" --start 2000,10000 --goal 22000,10000 --departure 90000 > /dev/null 2>&1
+rc=$?
+set -e
+[ "$rc" -eq 1 ] || { echo "--beyond refuse: expected status 1, got $rc"; exit 1; }
+"$exe" --currents "$cart" --start 2000,10000 --goal 22000,10000 --departure 90000 --beyond hold 2>/dev/null \
+    | grep -q "^travel time 399" || { echo "--beyond hold: expected travel time 40000"; exit 1; }
+
 # 3. --speeds on the built-in mission: one line per speed, travel time falling with speed
 "$exe" --speeds 0.4,0.5,0.6 --grid-size 0.5 --no-refine > "$dir/sweep.txt"
 python3 - "$dir/sweep.txt" <<'PY'
