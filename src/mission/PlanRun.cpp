@@ -530,6 +530,18 @@ MissionSpec forecastMission(const ForecastPlanRequest &q)
     o.field.beyond = q.horizonPolicy == "hold_last" ? BeyondForecast::HoldLast : BeyondForecast::Refuse;
     o.maxDepth = q.depth;
     o.departure = q.departure;
+    // Load only the region of the trip (issue 5): the start-goal box plus half its larger side (at least 0.2
+    // degrees or units) on each side; the whole file when the trip crosses the antimeridian.
+    const double spanA = std::abs(q.goalA - q.startA), spanB = std::abs(q.goalB - q.startB);
+    const double pad = std::max(0.5 * std::max(spanA, spanB), 0.2);
+    const bool subset = spanA < 180.0;
+    if (subset)
+    {
+        o.lonMin = std::min(q.startA, q.goalA) - pad;
+        o.lonMax = std::max(q.startA, q.goalA) + pad;
+        o.latMin = std::max(std::min(q.startB, q.goalB) - pad, -90.0);
+        o.latMax = std::min(std::max(q.startB, q.goalB) + pad, 90.0);
+    }
     NetCdfCurrents nc;
     try
     {
@@ -591,6 +603,29 @@ MissionSpec forecastMission(const ForecastPlanRequest &q)
 
     if (nc.geographic)
     {
+        if (subset && o.latMax - o.latMin < 120.0)
+        {
+            // The same subset for the mission's load, clipped to the grid loaded here, and the same local frame.
+            double lo0, la0, lo1, la1, lo2, la2, lo3, la3;
+            nc.toGeographic(e.xMin, e.yMin, lo0, la0);
+            nc.toGeographic(e.xMax, e.yMax, lo1, la1);
+            nc.toGeographic(e.xMin, e.yMax, lo2, la2);
+            nc.toGeographic(e.xMax, e.yMin, lo3, la3);
+            (void)lo2;
+            (void)lo3;
+            m.region.set = m.region.geographic = true;
+            m.region.lonMin = std::max(o.lonMin, std::min(lo0, lo2));
+            m.region.lonMax = std::min(o.lonMax, std::max(lo1, lo3));
+            m.region.latMin = std::max(o.latMin, std::min(la0, la3));
+            m.region.latMax = std::min(o.latMax, std::max(la1, la2));
+            double lon0, lat0;
+            nc.toGeographic(0.0, 0.0, lon0, lat0);
+            m.projection.set = true;
+            m.projection.lon0 = lon0;
+            m.projection.lat0 = lat0;
+            if (!(m.region.lonMin < m.region.lonMax && m.region.latMin < m.region.latMax))
+                m.region.set = m.region.geographic = false;
+        }
         m.start.geographic = m.goal.geographic = true;
         m.start.lon = q.startA;
         m.start.lat = q.startB;
