@@ -73,8 +73,8 @@ double TravelTimeCalculator::integrate(double x1, double y1, double x2, double y
     const double len = std::hypot(dx, dy);
     if (len == 0.0)
         return 0.0;
-    if (!f.inWater(x1, y1, z) || !f.inWater(x2, y2, z))
-        return kInf;
+    if (!f.segmentInWater(x1, y1, x2, y2, z))
+        return kInf;  // the leg touches land somewhere (not only at an integration step)
     const double px = dx / len, py = dy / len;
 
     // Progress along the leg as a fraction in [0, 1] and the local time.
@@ -113,8 +113,6 @@ double TravelTimeCalculator::integrate(double x1, double y1, double x2, double y
         const double hNew = std::max(params_.hMin, std::min(params_.hMax, params_.tau * h * std::sqrt(params_.eps / err)));
         if (err < params_.eps || h <= params_.hMin)
         {
-            if (!f.inWater(xe, ye, z))
-                return kInf;
             cStart = cEnd;
             frac = fe;
             t += tImproved;

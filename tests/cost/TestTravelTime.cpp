@@ -220,3 +220,49 @@ TEST(TravelTimeParams, RejectsBadParameters)
     EXPECT_THROW(TravelTimeCalculator(f, p), std::runtime_error);
     EXPECT_THROW(TravelTimeCalculator(nullptr, {}), std::runtime_error);
 }
+
+namespace
+{
+// A uniform current with a thin north-south strip of land at |x - 5| < 0.01: narrower than any integration step.
+class ThinIslandField : public CurrentField
+{
+public:
+    double maxSpeed(const Region &) const override
+    {
+        return 0.2;
+    }
+    bool inWater(double x, double, double) const override
+    {
+        return std::abs(x - 5.0) >= 0.01;
+    }
+    bool segmentInWater(double x1, double, double x2, double, double) const override
+    {
+        return std::max(x1, x2) <= 4.99 || std::min(x1, x2) >= 5.01;
+    }
+    std::string name() const override
+    {
+        return "thin island";
+    }
+
+protected:
+    Velocity evaluate(double, double, double, double) const override
+    {
+        return {0.2, 0.0};
+    }
+    Jacobian evaluateJacobian(double, double, double, double) const override
+    {
+        return {};
+    }
+};
+}  // namespace
+
+TEST(TravelTime, NeverCrossesLandBetweenIntegrationSteps)
+{
+    TravelTimeCalculator calc(std::make_shared<ThinIslandField>());
+    // Both ends in water, steps of up to half the leg would jump over the strip: the whole-leg check catches it.
+    EXPECT_TRUE(std::isinf(calc.travelTime(0.0, 0.0, 10.0, 0.0, 0.0)));
+    EXPECT_TRUE(std::isinf(calc.travelTime(9.0, 1.0, 1.0, -1.0, 0.0)));
+    // Legs on either side are flown as in open water: L / (V + 0.2).
+    EXPECT_NEAR(calc.travelTime(0.0, 0.0, 4.9, 0.0, 0.0), 4.9 / 0.7, 1e-12);
+    EXPECT_NEAR(calc.travelTime(5.1, 0.0, 9.0, 0.0, 0.0), 3.9 / 0.7, 1e-12);
+}

@@ -50,8 +50,8 @@ struct ArrivalWindow
 /// with the mean of the start and end currents, local error = their difference, and the new step
 /// h_new = max(h_min, min(h_max, tau h sqrt(eps / err))); a step is accepted when err < eps or h = h_min.
 ///
-/// Infeasible legs (a step with disc <= 0 or a non-positive effective speed, land, or a time after the field's
-/// end) cost +infinity, never NaN. Each call to travelTime() or arrivalWindow() counts one cost-function call
+/// Infeasible legs (a step with disc <= 0 or a non-positive effective speed, a leg that touches land anywhere
+/// (CurrentField::segmentInWater), or a time after the field's end) cost +infinity, never NaN. Each call to travelTime() or arrivalWindow() counts one cost-function call
 /// (CFC, 000 Table 4); the counter is atomic and the object is safe to share between threads.
 class TravelTimeCalculator
 {

@@ -86,6 +86,14 @@ public:
         return true;
     }
 
+    /// @brief True when the whole straight segment (x1, y1) -> (x2, y2) at depth z stays in water. The travel-time
+    /// code asks this once per leg, so a leg never crosses land between its integration steps. The default checks
+    /// the two ends (exact for fields whose inWater() is true everywhere); gridded fields override it.
+    virtual bool segmentInWater(double x1, double y1, double x2, double y2, double z) const
+    {
+        return inWater(x1, y1, z) && inWater(x2, y2, z);
+    }
+
     /// @brief Earliest time at which the field is defined (-inf for analytic fields).
     virtual double timeBegin() const
     {

@@ -142,8 +142,8 @@ public:
     /// @brief True when the straight segment stays in water (inWater()) at depth z: both ends and points every
     /// quarter of the smallest cell size between them, so it misses a dry cell only where the segment clips it
     /// over less than a quarter cell. For environment/planner code that must keep whole legs off land (the
-    /// travel-time code itself checks inWater() only at its integration steps).
-    bool segmentInWater(double x1, double y1, double x2, double y2, double z) const;
+    /// travel-time code asks it once per leg).
+    bool segmentInWater(double x1, double y1, double x2, double y2, double z) const override;
     /// @brief Smallest distance between neighbouring grid nodes (x/y units).
     double minCellSize() const
     {
