@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include <ompl/util/Console.h>
+
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/GliderStateSampler.h"
 #include "ompl_glider/ompl/GliderStateValidityChecker.h"
@@ -36,6 +38,82 @@ void checkPoint(const GliderProblem &p, const char *what, double x, double y)
                     num(p.yMin) + ", " + num(p.yMax) + "]");
 }
 }  // namespace
+
+ob::PlannerStatus checkStartAndGoal(const ob::ProblemDefinition &pdef, std::string *why)
+{
+    const ob::SpaceInformationPtr &si = pdef.getSpaceInformation();
+    auto checker = std::dynamic_pointer_cast<const GliderStateValidityChecker>(si->getStateValidityChecker());
+    if (pdef.getStartStateCount() == 0)
+    {
+        if (why)
+            *why = "no start state";
+        return ob::PlannerStatus::INVALID_START;
+    }
+    for (unsigned i = 0; i < pdef.getStartStateCount(); ++i)
+    {
+        const ob::State *st = pdef.getStartState(i);
+        if (si->isValid(st))
+            continue;
+        if (why)
+        {
+            const auto *s = st->as<TimeSE2StateSpace::StateType>();
+            std::ostringstream os;
+            os << "invalid start: (" << s->getX() << ", " << s->getY() << ") at time " << s->getTime() << ": "
+               << (checker ? checker->whyInvalid(st) : std::string("rejected by the state validity checker"));
+            *why = os.str();
+        }
+        return ob::PlannerStatus::INVALID_START;
+    }
+    if (auto goal = std::dynamic_pointer_cast<const PositionGoal>(pdef.getGoal()))
+    {
+        if (goal->maxSampleCount() == 0)
+        {
+            if (why)
+            {
+                std::ostringstream os;
+                os << "invalid goal: (" << goal->getX() << ", " << goal->getY()
+                   << ") is invalid at every time of the goal window [" << goal->getEarliestTime() << ", "
+                   << goal->getLatestTime() << "]; at time " << goal->getEarliestTime() << ": "
+                   << goal->whyInvalidAt(goal->getEarliestTime());
+                *why = os.str();
+            }
+            return ob::PlannerStatus::INVALID_GOAL;
+        }
+    }
+    return ob::PlannerStatus::UNKNOWN;
+}
+
+GliderSimpleSetup::GliderSimpleSetup(const ob::StateSpacePtr &space) : og::SimpleSetup(space)
+{
+}
+
+bool GliderSimpleSetup::rejectStartOrGoal()
+{
+    setup();
+    lastCheckMessage_.clear();
+    const ob::PlannerStatus st = checkStartAndGoal(*pdef_, &lastCheckMessage_);
+    if (st == ob::PlannerStatus::UNKNOWN)
+        return false;
+    OMPL_ERROR("%s", lastCheckMessage_.c_str());
+    pdef_->clearSolutionPaths();
+    lastStatus_ = st;
+    planTime_ = 0.0;
+    return true;
+}
+
+ob::PlannerStatus GliderSimpleSetup::solve(double time)
+{
+    if (rejectStartOrGoal())
+        return lastStatus_;
+    return og::SimpleSetup::solve(time);
+}
+
+ob::PlannerStatus GliderSimpleSetup::solve(const ob::PlannerTerminationCondition &ptc)
+{
+    if (rejectStartOrGoal())
+        return lastStatus_;
+    return og::SimpleSetup::solve(ptc);
+}
 
 std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)
 {
@@ -107,7 +185,7 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
         return std::make_shared<GliderStateSampler>(sp, sx, sy, t0, vMax);
     });
 
-    auto ss = std::make_shared<og::SimpleSetup>(space);
+    auto ss = std::make_shared<GliderSimpleSetup>(space);
     const ob::SpaceInformationPtr &si = ss->getSpaceInformation();
     std::shared_ptr<const GliderContext> cctx = ctx;
     ss->setStateValidityChecker(std::make_shared<GliderStateValidityChecker>(si, cctx));

@@ -1,10 +1,10 @@
 #include "ompl_glider/ompl/PositionGoal.h"
 
 #include <cmath>
-#include <limits>
 #include <string>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/ompl/GliderStateValidityChecker.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 
 namespace ob = ompl::base;
@@ -74,6 +74,25 @@ void PositionGoal::sampleGoal(ob::State *st) const
 unsigned int PositionGoal::maxSampleCount() const
 {
     checkValidity();
-    return validTimes_.empty() ? 0u : std::numeric_limits<unsigned int>::max();
+    return static_cast<unsigned int>(validTimes_.size());
+}
+}  // namespace ompl_glider
+
+namespace ompl_glider
+{
+std::string PositionGoal::whyInvalidAt(double t) const
+{
+    auto checker = std::dynamic_pointer_cast<const GliderStateValidityChecker>(si_->getStateValidityChecker());
+    ob::State *st = si_->allocState();
+    auto *s = st->as<TimeSE2StateSpace::StateType>();
+    s->setXYT(x_, y_, t);
+    s->setYaw(0.0);
+    std::string why;
+    if (checker)
+        why = checker->whyInvalid(st);
+    else if (!si_->isValid(st))
+        why = "rejected by the state validity checker";
+    si_->freeState(st);
+    return why;
 }
 }  // namespace ompl_glider

@@ -4,6 +4,7 @@
 
 #include <limits>
 #include <memory>
+#include <string>
 
 #include <ompl/geometric/SimpleSetup.h>
 
@@ -30,6 +31,42 @@ struct GliderProblem
     double goalTolerance{1e-3};  ///< xy distance within which the goal counts as reached
 };
 
+/// @brief Checks the start and goal of a problem definition on a TimeSE2StateSpace before planning: every start
+/// state must be valid for the space information (else INVALID_START), and a PositionGoal must be valid at some
+/// time of its window (PositionGoal::maxSampleCount() > 0, else INVALID_GOAL); other goal types are not checked.
+/// @param why if non-null, receives a message naming the position, the time and the reason (e.g. "inside island
+/// 'A'", from GliderStateValidityChecker::whyInvalid()) when the status is not UNKNOWN.
+/// @return INVALID_START, INVALID_GOAL, or UNKNOWN when both are fine.
+ompl::base::PlannerStatus checkStartAndGoal(const ompl::base::ProblemDefinition &pdef, std::string *why = nullptr);
+
+/// @brief A SimpleSetup whose solve() first runs checkStartAndGoal(): a start inside a forbidden region gives
+/// INVALID_START and a goal inside one (at every time of the goal window) gives INVALID_GOAL for every planner,
+/// with the reason logged by OMPL_ERROR and kept in lastCheckMessage(), and the planner is not called. Needed
+/// because OMPL 1.5's RRT* (and others) never check the goal and would return an approximate solution.
+class GliderSimpleSetup : public ompl::geometric::SimpleSetup
+{
+public:
+    /// @brief As ompl::geometric::SimpleSetup(space).
+    explicit GliderSimpleSetup(const ompl::base::StateSpacePtr &space);
+
+    /// @brief checkStartAndGoal(), then SimpleSetup::solve(time) when both are valid.
+    ompl::base::PlannerStatus solve(double time = 1.0) override;
+    /// @brief checkStartAndGoal(), then SimpleSetup::solve(ptc) when both are valid.
+    ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+
+    /// @brief The message of the last failed start/goal check (empty when the last solve() passed it).
+    const std::string &lastCheckMessage() const
+    {
+        return lastCheckMessage_;
+    }
+
+private:
+    /// Runs the check; on failure sets lastStatus_, clears solutions and returns true.
+    bool rejectStartOrGoal();
+
+    std::string lastCheckMessage_;
+};
+
 /// @brief Checks the problem and builds its context (TravelTimeCalculator from field + travel, region = box and
 /// [t0, t0 + horizon], t0). @throws ompl_glider::Error naming the bad field (no field, bounds not finite or
 /// empty, horizon <= 0, t0 outside the field's time span, start/goal not set or outside the box, tolerance < 0,
@@ -40,8 +77,9 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &problem);
 /// and GliderStateSampler as its state sampler (no samples earlier than reachable from the start),
 /// GliderStateValidityChecker, TravelTimeMotionValidator, TravelTimeObjective, start state (startX, startY, t0,
 /// yaw 0) and a PositionGoal whose sampled times lie in [t0 + |start - goal| / (V + max|c|), t0 + horizon].
-/// No planner is set (SimpleSetup picks OMPL's default unless setPlanner() is called). A start or goal inside a
-/// forbidden region is not an error here: planners report INVALID_START / INVALID_GOAL.
+/// No planner is set (SimpleSetup picks OMPL's default unless setPlanner() is called). The returned object is a
+/// GliderSimpleSetup: a start or goal inside a forbidden region is not an error here, solve() reports
+/// INVALID_START / INVALID_GOAL with a message naming the region, whatever the planner.
 /// @param ctxOut if non-null, receives the context (shared with the validator and the objective).
 /// @throws ompl_glider::Error as makeGliderContext().
 ompl::geometric::SimpleSetupPtr makeSimpleSetup(const GliderProblem &problem,

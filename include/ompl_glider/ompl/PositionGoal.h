@@ -3,6 +3,7 @@
 /// @brief Goal: be at a position (within a tolerance) at any time of the window.
 
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include <ompl/base/goals/GoalSampleableRegion.h>
@@ -16,10 +17,12 @@ namespace ompl_glider
 /// goal| / (V + max|c|) (no arrival can be earlier) and tLatest = t0 + horizon.
 ///
 /// Validity: on first use the goal point is checked with the space information's validity checker at 257 times
-/// evenly spread over the window. If it is valid at none, maxSampleCount() is 0, so OMPL planners that check
-/// GoalSampleableRegion::couldSample() (RRTConnect, PRM, ...) report INVALID_GOAL ("Insufficient states in
-/// sampleable goal region"); OMPL's RRT* does not check the goal and ends without an exact solution. Otherwise
-/// sampleGoal() redraws up to 20 times when the drawn time is invalid, then falls back to a valid grid time.
+/// evenly spread over the window. maxSampleCount() is the number of valid ones (finite: planners that draw goal
+/// states until that count, such as BIT* in its setup, terminate). If it is valid at none, maxSampleCount() is 0,
+/// so OMPL planners that check GoalSampleableRegion::couldSample() (RRTConnect, PRM, ...) report INVALID_GOAL
+/// ("Insufficient states in sampleable goal region"); GliderSimpleSetup (GliderSetup.h) reports INVALID_GOAL for
+/// every planner, OMPL's RRT* included. Otherwise sampleGoal() redraws up to 20 times when the drawn time is
+/// invalid, then falls back to a valid grid time.
 class PositionGoal : public ompl::base::GoalSampleableRegion
 {
 public:
@@ -31,8 +34,13 @@ public:
     double distanceGoal(const ompl::base::State *st) const override;
     /// @brief (x, y), yaw 0, time uniform in [tEarliest, tLatest].
     void sampleGoal(ompl::base::State *st) const override;
-    /// @brief Unbounded (a continuum of goal times).
+    /// @brief The number of valid goal times on the 257-point grid over the window (0 when the goal point is invalid
+    /// at every time). Finite, so planners that draw goal states up to this count (BIT*) stop drawing.
     unsigned int maxSampleCount() const override;
+
+    /// @brief Why the goal point is invalid at time t ("inside island 'A'", ...); empty when it is valid there or
+    /// the validity checker is not a GliderStateValidityChecker.
+    std::string whyInvalidAt(double t) const;
 
     /// @brief Goal x.
     double getX() const
