@@ -3,7 +3,9 @@
 // y in [-4, 4], t0 = 0) from five start positions at decreasing distance from one goal, with the travel times and
 // the ZA*TVE-vs-TVE reduction factors. Prints a Markdown table. Runs in about a second.
 //
-// Usage: bench_table4 [--delta-phi-max DEG] [--course-extrapolation K] [--goal X,Y] [--random-pairs N]
+// Usage: bench_table4 [--delta-phi-max DEG] [--course-extrapolation K] [--turn-widening W] [--reliable-turn DEG]
+//                     [--goal-radius R] [--goal X,Y] [--random-pairs N]
+// Also prints TVE / ZTVE / ZA*TVE on the benchmark campaign's four problems.
 // --random-pairs N adds a robustness check: N random lattice start/goal pairs (fixed seed) over the region,
 // ZA*TVE against TVE (share within 0.5 %, median and worst deviation, total CFC / CMC reduction).
 #include <cmath>
@@ -20,6 +22,7 @@
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
 
+#include "../campaign/CampaignProblems.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/planners/TveSearch.h"
@@ -45,6 +48,7 @@ int main(int argc, char **argv)
     double gx = 7.6, gy = 1.2;
     int randomPairs = 0;
     double tw = -1.0;
+    double reliableTurnDeg = -1.0, goalRadius = -1.0, certify = -2.0;
     for (int i = 1; i < argc; ++i)
     {
         const std::string a = argv[i];
@@ -56,6 +60,12 @@ int main(int argc, char **argv)
             ;
         else if (a == "--turn-widening" && i + 1 < argc)
             tw = std::atof(argv[++i]);
+        else if (a == "--reliable-turn" && i + 1 < argc)
+            reliableTurnDeg = std::atof(argv[++i]);
+        else if (a == "--certify" && i + 1 < argc)
+            certify = std::atof(argv[++i]);
+        else if (a == "--goal-radius" && i + 1 < argc)
+            goalRadius = std::atof(argv[++i]);
         else if (a == "--random-pairs" && i + 1 < argc)
             randomPairs = std::atoi(argv[++i]);
         else
@@ -91,6 +101,12 @@ int main(int argc, char **argv)
                 planner->setCourseExtrapolation(k);
             if (tw >= 0)
                 planner->options().turnWidening = tw;
+            if (reliableTurnDeg >= 0)
+                planner->options().reliableTurn = reliableTurnDeg * 3.14159265358979323846 / 180.0;
+            if (goalRadius >= 0)
+                planner->options().goalRadius = goalRadius;
+            if (certify > -2.0)
+                planner->options().certifyTolerance = certify;
             ss->clear();
             ss->setPlanner(planner);
             ss->setup();
@@ -155,6 +171,44 @@ int main(int argc, char **argv)
     }
     std::printf("\nAll paths exact and passing PathGeometric::check(): %s\n", allOk ? "yes" : "NO");
 
+    {
+        // The benchmark campaign's problems (benchmarks/campaign/CampaignProblems.h: start (0.6, -2.6), goal
+        // (9.4, 2.6), horizon 40, grid 0.4, 3 sectors): ZTVE / ZA*TVE against TVE with the same options.
+        std::printf("\nCampaign problems (grid 0.4, 3 sectors): travel time TVE / ZTVE / ZA*TVE, deviation, CFC\n");
+        for (const CampaignProblem &cp : makeCampaignProblems(jet))
+        {
+            auto ctx = makeGliderContext(cp.problem);
+            TveSearch search(ctx, 0.4, 3);
+            TveOptions opts[3];
+            opts[0].heuristic = opts[0].zermelo = false;
+            opts[1].heuristic = false;
+            for (int c = 1; c < 3; ++c)
+            {
+                if (dphi > 0)
+                    opts[c].deltaPhiMax = dphi * 3.14159265358979323846 / 180.0;
+                if (k >= 0)
+                    opts[c].courseExtrapolation = k;
+                if (tw >= 0)
+                    opts[c].turnWidening = tw;
+                if (reliableTurnDeg >= 0)
+                    opts[c].reliableTurn = reliableTurnDeg * 3.14159265358979323846 / 180.0;
+                if (goalRadius >= 0)
+                    opts[c].goalRadius = goalRadius;
+                if (certify > -2.0)
+                    opts[c].certifyTolerance = certify;
+            }
+            TveResult r[3];
+            for (int c = 0; c < 3; ++c)
+                r[c] = search.run(cp.problem.startX, cp.problem.startY, cp.problem.goalX, cp.problem.goalY, opts[c]);
+            std::printf("  %-10s %.6f / %.6f / %.6f  (%+.2f %% / %+.2f %%)  CFC %llu / %llu / %llu\n",
+                        cp.name.c_str(), r[0].travelTime, r[1].travelTime, r[2].travelTime,
+                        100 * (r[1].travelTime / r[0].travelTime - 1), 100 * (r[2].travelTime / r[0].travelTime - 1),
+                        static_cast<unsigned long long>(r[0].costFunctionCalls),
+                        static_cast<unsigned long long>(r[1].costFunctionCalls),
+                        static_cast<unsigned long long>(r[2].costFunctionCalls));
+        }
+    }
+
     if (randomPairs > 0)
     {
         // Robustness: random lattice-aligned pairs, ZA*TVE (same options) against TVE on the same lattice.
@@ -172,6 +226,12 @@ int main(int argc, char **argv)
             za.courseExtrapolation = k;
         if (tw >= 0)
             za.turnWidening = tw;
+        if (reliableTurnDeg >= 0)
+            za.reliableTurn = reliableTurnDeg * 3.14159265358979323846 / 180.0;
+        if (goalRadius >= 0)
+            za.goalRadius = goalRadius;
+        if (certify > -2.0)
+            za.certifyTolerance = certify;
         std::mt19937 rng(1);
         std::uniform_int_distribution<int> ix(1, 24), iy(1, 19);
         std::vector<double> dev;

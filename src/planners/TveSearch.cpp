@@ -55,6 +55,17 @@ struct QueueEntry
         return key > o.key || (key == o.key && v > o.v);
     }
 };
+/// An edge (u, v) pruned by the Zermelo cone, kept for the certification phase (TveOptions::certifyTolerance).
+struct DeferredEdge
+{
+    double key;  ///< d[u] + |uv| / (V + max|c|) + |v - goal| / (V + max|c|): a lower bound of any arrival via it
+    double du;   ///< d[u] when it was pruned (stale when d[u] changed since)
+    Lattice::VertexId u, v;
+    bool operator>(const DeferredEdge &o) const
+    {
+        return key > o.key || (key == o.key && (u > o.u || (u == o.u && v > o.v)));
+    }
+};
 }  // namespace
 
 TveSearch::TveSearch(std::shared_ptr<const GliderContext> ctx, double gridSize, unsigned sectors)
@@ -219,6 +230,38 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
     Q.push({t0 + h(s), t0, s});
     std::vector<Lattice::VertexId> prunedAt;  // vertices whose expansion pruned edges (for the fallback)
     bool pruning = options.zermelo;
+
+    // Examines the edge u -> v leaving at du (one CFC): true when its travel time is finite; improves v when the
+    // arrival is earlier than d[v], inside the window and free.
+    auto relax = [&](Lattice::VertexId u, double ux, double uy, double du, Lattice::VertexId v) -> bool {
+        if (!inWater(v))
+            return false;
+        const double vx = lattice_.x(v), vy = lattice_.y(v);
+        const double w = travel.travelTime(ux, uy, vx, vy, du);
+        if (!std::isfinite(w))
+            return false;
+        const double dv = du + w;
+        if (!(dv < d_[v]) || dv > ctx.region.tMax)
+            return true;  // no improvement, or later than the planning window
+        if (env && (!env->pointFree(vx, vy, dv) || !env->legFree(ux, uy, du, vx, vy, dv)))
+            return true;
+        if (d_[v] == kInf)
+            reached_.push_back(v);
+        d_[v] = dv;
+        pi_[v] = u;
+        Q.push({dv + h(v), dv, v});
+        return true;
+    };
+
+    // Certification (TveOptions::certifyTolerance): pruned edges are deferred, not dropped. Once the goal is
+    // extracted at C = d[g], deferred edges whose lower bound (key) is below C / (1 + tol) are examined in key
+    // order, interleaved with the queue, until the goal is extracted again with no such edge left.
+    const bool certify = pruning && options.certifyTolerance >= 0.0;
+    const double vAll = ctx.speed() + ctx.maxCurrent();
+    if (certify && !(vAll > 0.0 && std::isfinite(vAll)))
+        throw Error("TveSearch: certification needs a finite bound of the current speed over the region");
+    std::priority_queue<DeferredEdge, std::vector<DeferredEdge>, std::greater<DeferredEdge>> deferred;
+    bool certifying = false;
     const unsigned checkEvery = std::max(1u, options.checkEvery);
 
     auto terminated = [&]() { return terminate && terminate(); };
@@ -245,6 +288,23 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
             }
             break;
         }
+        if (certifying && !deferred.empty() && deferred.top().key < Q.top().key)
+        {
+            const DeferredEdge de = deferred.top();
+            if (!((de.key - t0) * (1.0 + options.certifyTolerance) < d_[g] - t0))
+            {
+                deferred = {};  // no deferred edge can improve the goal by more than the tolerance
+                continue;
+            }
+            deferred.pop();
+            // stale (u improved and re-expanded since), or cannot improve v even at the bound
+            const double lenUV = std::hypot(lattice_.x(de.v) - lattice_.x(de.u), lattice_.y(de.v) - lattice_.y(de.u));
+            if (de.du != d_[de.u] || !(de.du + lenUV / vAll < d_[de.v]))
+                continue;
+            ++res.reopenedEdges;
+            relax(de.u, lattice_.x(de.u), lattice_.y(de.u), de.du, de.v);
+            continue;
+        }
         const QueueEntry e = Q.top();
         Q.pop();
         const Lattice::VertexId u = e.v;
@@ -252,6 +312,13 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
             continue;  // stale entry (u was improved after this push)
         if (u == g)
         {
+            if (certify && !deferred.empty() &&
+                (deferred.top().key - t0) * (1.0 + options.certifyTolerance) < d_[g] - t0)
+            {
+                certifying = true;
+                Q.push(e);  // extracted again once no deferred edge below the bound is left
+                continue;
+            }
             found = u;
             break;
         }
@@ -266,7 +333,8 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
 
         std::optional<double> phiOpt;
         double halfWidth = options.deltaPhiMax;
-        if (pruning && u != s && pi_[u] != Lattice::kNone)
+        if (pruning && u != s && pi_[u] != Lattice::kNone &&
+            !(options.goalRadius > 0.0 && std::hypot(ux - gx, uy - gy) <= options.goalRadius))
         {
             const Lattice::VertexId p = pi_[u];
             phiOpt = calcOptimalCourse(lattice_.x(p), lattice_.y(p), d_[p], ux, uy, du, options.zermeloSteps);
@@ -276,6 +344,8 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
                 const double turn = angleDiff(*phiOpt, edge);
                 *phiOpt += options.courseExtrapolation * turn;
                 halfWidth = options.deltaPhiMax + options.turnWidening * std::abs(turn);
+                if (std::abs(turn) > options.reliableTurn)
+                    phiOpt.reset();  // unreliable prediction: examine every successor
             }
         }
         bool prunedHere = false;
@@ -296,26 +366,15 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
                 {
                     ++res.prunedEdges;
                     prunedHere = true;
+                    if (certify)
+                        deferred.push({du + (std::hypot(vx - ux, vy - uy) + std::hypot(vx - gx, vy - gy)) / vAll,
+                                       du, u, v});
                     return;
                 }
                 if (pass == 1 && inCone)
                     return;  // examined in pass 0
-                if (!inWater(v))
-                    return;
-                const double w = travel.travelTime(ux, uy, vx, vy, du);
-                if (!std::isfinite(w))
-                    return;
-                feasibleInCone = true;
-                const double dv = du + w;
-                if (!(dv < d_[v]) || dv > ctx.region.tMax)
-                    return;  // no improvement, or later than the planning window
-                if (env && (!env->pointFree(vx, vy, dv) || !env->legFree(ux, uy, du, vx, vy, dv)))
-                    return;
-                if (d_[v] == kInf)
-                    reached_.push_back(v);
-                d_[v] = dv;
-                pi_[v] = u;
-                Q.push({dv + h(v), dv, v});
+                if (relax(u, ux, uy, du, v))
+                    feasibleInCone = true;
             });
             if (pass == 1)
             {

@@ -68,6 +68,8 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
                          &ZAStarTVE::getCourseExtrapolation, "0.:0.25:2.");
     declareParam<double>("turn_widening", this, &ZAStarTVE::setTurnWidening, &ZAStarTVE::getTurnWidening,
                          "0.:0.25:5.");
+    declareParam<double>("certify_tolerance", this, &ZAStarTVE::setCertifyTolerance,
+                         &ZAStarTVE::getCertifyTolerance, "-1.:0.05:1.");
     declareParam<unsigned>("sectors", this, &ZAStarTVE::setSectors, &ZAStarTVE::getSectors, "1:1:5");
     declareParam<double>("grid_size", this, &ZAStarTVE::setGridSize, &ZAStarTVE::getGridSize, "0.:0.01:1000.");
 
@@ -118,6 +120,14 @@ void ZAStarTVE::setTurnWidening(double w)
     if (!(w >= 0.0) || !std::isfinite(w))
         throw Error("ZAStarTVE: turn_widening must be finite and >= 0 (got " + std::to_string(w) + ")");
     options_.turnWidening = w;
+}
+
+void ZAStarTVE::setCertifyTolerance(double tol)
+{
+    if (!std::isfinite(tol))
+        throw Error("ZAStarTVE: certify_tolerance must be finite (>= 0, or < 0 for off; got " + std::to_string(tol) +
+                    ")");
+    options_.certifyTolerance = tol;
 }
 
 void ZAStarTVE::setSectors(unsigned n)

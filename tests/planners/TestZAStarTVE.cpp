@@ -518,3 +518,60 @@ TEST(ZAStarTVE, BenchmarkLogsCostFunctionAndCurrentModelCalls)
     EXPECT_EQ(exp.planners[0].name, "geometric_TVE");  // Benchmark prefixes the planner type
     EXPECT_LT(cfc[1], cfc[0]);
 }
+
+TEST(ZAStarTVE, CampaignOpenWaterWithinHalfPercentOfTve)
+{
+    // The benchmark campaign's open-water problem (benchmarks/campaign/CampaignProblems.h). Without the
+    // certification phase the Zermelo cone missed the lattice optimum here: ZTVE / ZA*TVE were 1.25 % slower.
+    GliderProblem p = jetProblem(0.6, -2.6, 9.4, 2.6);
+    p.horizon = 40.0;
+    const PlanRun tve = plan(p, "TVE");
+    ASSERT_EQ(tve.status, ob::PlannerStatus::EXACT_SOLUTION);
+    for (const char *config : {"ZTVE", "ZA*TVE"})
+    {
+        const PlanRun z = plan(p, config);
+        ASSERT_EQ(z.status, ob::PlannerStatus::EXACT_SOLUTION) << config;
+        EXPECT_GE(z.time, tve.time - 1e-9) << config;
+        EXPECT_LE(z.time, 1.005 * tve.time) << config;
+        EXPECT_LT(z.cfc, tve.cfc) << config;
+        EXPECT_TRUE(z.checked) << config;
+    }
+}
+
+TEST(TveSearch, CertificationToleranceBoundsTheDeviationFromTve)
+{
+    // Random lattice start/goal pairs on the jet: the certified pruned search (tolerance tol) is within (1 + tol)
+    // of TVE's lattice optimum, and with tol = 0 equals it; the paper's rule (off) has no such bound.
+    GliderProblem p = jetProblem(0.0, 0.0, 0.0, 0.0);
+    auto ctx = makeGliderContext(p);
+    TveSearch search(ctx, 0.4, 3);
+    TveOptions tve;
+    tve.heuristic = tve.zermelo = false;
+    TveOptions exact, loose;
+    exact.certifyTolerance = 0.0;
+    loose.certifyTolerance = 0.3;
+    std::uint64_t seed = 12345;
+    auto next = [&seed](int n) {
+        seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<int>((seed >> 33) % static_cast<std::uint64_t>(n));
+    };
+    int compared = 0;
+    for (int i = 0; i < 12; ++i)
+    {
+        const double sx = 0.4 * (1 + next(24)), sy = -4.0 + 0.4 * (1 + next(19));
+        const double gx = 0.4 * (1 + next(24)), gy = -4.0 + 0.4 * (1 + next(19));
+        const TveResult a = search.run(sx, sy, gx, gy, tve);
+        const TveResult b = search.run(sx, sy, gx, gy, exact);
+        const TveResult c = search.run(sx, sy, gx, gy, loose);
+        if (a.outcome != TveOutcome::Exact)
+            continue;
+        ++compared;
+        ASSERT_EQ(b.outcome, TveOutcome::Exact);
+        ASSERT_EQ(c.outcome, TveOutcome::Exact);
+        EXPECT_NEAR(b.travelTime, a.travelTime, 1e-9 * a.travelTime)
+            << "(" << sx << ", " << sy << ") -> (" << gx << ", " << gy << ")";
+        EXPECT_LE(c.travelTime, 1.3 * a.travelTime + 1e-9);
+        EXPECT_GE(c.travelTime, a.travelTime - 1e-9);
+    }
+    EXPECT_GE(compared, 8);
+}

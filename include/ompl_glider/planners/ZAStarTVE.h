@@ -105,6 +105,14 @@ public:
     {
         return options_.turnWidening;
     }
+    /// @brief Certification tolerance of the pruned search (param "certify_tolerance", default 0.1; < 0 = off, the
+    /// paper's rule; 0 = the lattice optimum as TVE). See TveOptions::certifyTolerance.
+    void setCertifyTolerance(double tol);
+    /// @brief Certification tolerance of the pruned search.
+    double getCertifyTolerance() const
+    {
+        return options_.certifyTolerance;
+    }
     /// @brief Lattice connectivity n in 1..5 (param "sectors", default 3).
     void setSectors(unsigned n);
     /// @brief Lattice connectivity.
