@@ -567,9 +567,16 @@ MissionSpec forecastMission(const ForecastPlanRequest &q)
                 what.replace(at, field.size(), flag);
         if (!q.departure.empty() && what.find("depart") != std::string::npos && what.find("--departure") == std::string::npos)
             what = "--departure " + q.departure + ": " + what;
+        else if (what.find("region ") != std::string::npos)
+            what = "--start " + pointText(q.startA, q.startB) + " / --goal " + pointText(q.goalA, q.goalB) +
+                   ": not on the grid: " + what;
         throw Error(what);
     }
     const GriddedCurrentField &g = *nc.field;
+    // (Above the first layer is the surface layer's value, as forecasts put their first layer just below it.)
+    if (g.nz() > 1 && q.depth > g.depthAxis().back())
+        throw Error("--depth " + num(q.depth) + " m lies below the deepest layer of '" + file + "' (" +
+                    num(g.depthAxis().back()) + " m)");
     const char *coords = nc.geographic ? "lon,lat" : "x,y";
     double sx, sy, gx, gy;
     nc.toLocal(q.startA, q.startB, sx, sy);

@@ -146,6 +146,8 @@ expect_error "nouv.nc" --currents "$dir/nouv.nc" --start=-52.7,47.9 --goal=-52.5
 expect_error "on land" --currents "$nc" --start=-51.9,48.7 --goal=-52.7,47.9
 expect_error "departure" --currents "$nc" --start=-52.7,47.9 --goal=-51.5,48.45 --departure 2026-04-01T00:00:00Z
 expect_error "outside the grid" --currents "$nc" --start=-60,47.9 --goal=-51.5,48.45
+expect_error "deepest layer" --currents "$nc" --start=-52.7,47.9 --goal=-51.5,48.45 --depth 500
+expect_error "not on the grid" --currents "$nc" --start=-70,40 --goal=-69,41
 expect_error "xy-interp" --currents "$nc" --start=-52.7,47.9 --goal=-51.5,48.45 --xy-interp spline
 expect_error "needs --currents" --u-var u
 echo "OK"
