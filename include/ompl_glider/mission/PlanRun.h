@@ -127,8 +127,11 @@ struct ForecastPlanRequest
 double defaultForecastGridSize(double minCellSize, double startGoalDistance);
 
 /// @brief The MissionSpec of a forecast request (one code path with `--mission`): loads the file once to check
-/// it and to convert the start, goal and departure; checks that start and goal lie on the grid and in water and
-/// that the departure lies within the forecast; picks the default grid size. Writes nothing.
+/// it and to convert the start, goal and departure; checks that start and goal lie on the grid and in water, that
+/// the depth is not below the deepest layer and that the departure lies within the forecast; picks the default
+/// grid size. Only the trip's region is loaded (start-goal box plus half its larger side, at least 0.2 degrees,
+/// on each side; the whole file across the antimeridian); for geographic files the mission gets that region
+/// (clipped to the grid) and its local frame, so the mission loads the same subset. Writes nothing.
 /// @throws Error with a one-line message naming the flag, file or variable at fault.
 MissionSpec forecastMission(const ForecastPlanRequest &request);
 
