@@ -731,7 +731,6 @@ int runForecastCommand(const ForecastPlanRequest &request, const std::optional<s
     try
     {
         const MissionSpec spec = forecastMission(request);
-        const MissionProblem problem(spec);
         RunOptions o;
         o.writeOutputs = false;
         o.progress = progress;
@@ -742,7 +741,10 @@ int runForecastCommand(const ForecastPlanRequest &request, const std::optional<s
                                               "start-goal distance)")
             << "\n";
         if (!directory.empty())
+        {
+            const MissionProblem problem(spec);  // for the map (the run's own problem is internal to runMission)
             r.files = writeForecastOutputs(r, problem, directory);
+        }
         printMissionReport(out, r);
         return r.plan.solved ? 0 : 1;
     }
