@@ -210,11 +210,8 @@ int main(int argc, char **argv)
         add(std::make_shared<og::RRTConnect>(si));
         add(std::make_shared<og::RRTsharp>(si));
         add(std::make_shared<og::LBTRRT>(si));
-        // BIT* is left out: its setup draws goal states until PositionGoal::maxSampleCount() (unbounded) and
-        // never returns (OMPL 1.5, ImplicitGraph::updateStartAndGoalStates); run it with --planners BITstar once
-        // the goal reports a finite count.
-        if (opt.planners.count("BITstar"))
-            add(std::make_shared<og::BITstar>(si));
+        // BIT* draws goal states up to PositionGoal::maxSampleCount() in its setup: finite (the valid goal times).
+        add(std::make_shared<og::BITstar>(si));
         add(std::make_shared<og::SST>(si));
 
         b.setPreRunEvent([ctx](const ob::PlannerPtr &) {
