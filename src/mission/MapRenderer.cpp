@@ -82,6 +82,43 @@ void plainText(cairo_t *cr, double x, double y, const std::string &s, double siz
     cairo_new_path(cr);  // show_text leaves a current point: do not let the next arc connect to it
 }
 
+/// Draws @p s left-aligned at (x, y), broken at spaces (or, for a single long word, at any character) so that no
+/// line is wider than @p maxWidth; returns the number of lines drawn.
+int wrappedText(cairo_t *cr, double x, double y, const std::string &s, double size, double maxWidth,
+                double lineHeight, Rgba c = {0.1, 0.1, 0.1, 1.0})
+{
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    auto width = [cr](const std::string &t) {
+        cairo_text_extents_t ext;
+        cairo_text_extents(cr, t.c_str(), &ext);
+        return ext.x_advance;
+    };
+    std::vector<std::string> lines;
+    std::string rest = s;
+    while (!rest.empty())
+    {
+        if (width(rest) <= maxWidth)
+        {
+            lines.push_back(rest);
+            break;
+        }
+        // longest prefix that fits, preferring to break after a space
+        std::size_t fit = 1;
+        while (fit < rest.size() && width(rest.substr(0, fit + 1)) <= maxWidth)
+            ++fit;
+        const std::size_t space = rest.rfind(' ', fit);
+        const std::size_t cut = (space != std::string::npos && space > 0) ? space : fit;
+        lines.push_back(rest.substr(0, cut));
+        rest = rest.substr(cut);
+        while (!rest.empty() && rest.front() == ' ')
+            rest.erase(0, 1);
+    }
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        plainText(cr, x, y + i * lineHeight, lines[i], size, false, 0.0, c);
+    return static_cast<int>(lines.size());
+}
+
 Rgba speedColour(double f)
 {
     f = std::clamp(f, 0.0, 1.0);
@@ -542,8 +579,8 @@ void MapRenderer::draw(void *context) const
         arrow(cr, lx + 2, ly, 26, 0, 6);
         plainText(cr, lx + 38, ly + 4, "current at t=" + fmt(fieldTime_) + tu, 12);
         ly += 20;
-        plainText(cr, lx + 38, ly + 4, "(" + field_->name() + ")", 11, false, 0.0, {0.3, 0.3, 0.3, 1});
-        ly += 22;
+        ly += 16 * wrappedText(cr, lx + 38, ly + 4, "(" + field_->name() + ")", 11, W - lx - 46, 16,
+                               {0.3, 0.3, 0.3, 1}) + 6;
         if (options_.speedShading && vmax > 0)
         {
             plainText(cr, lx, ly + 4, "current speed", 12);
@@ -574,10 +611,7 @@ void MapRenderer::draw(void *context) const
     }
     ly += 6;
     for (const std::string &n : notes_)
-    {
-        plainText(cr, lx, ly + 4, n, 12);
-        ly += 18;
-    }
+        ly += 18 * wrappedText(cr, lx, ly + 4, n, 12, W - lx - 8, 18);
 }
 
 void MapRenderer::writeSvg(const std::string &filename) const
