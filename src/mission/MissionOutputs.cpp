@@ -165,7 +165,8 @@ std::string summaryJson(const MissionResult &r)
     s << " \"straight_line_travel_time\": " << timeOrImpassable(p.straightLineTime) << ",\n";
     s << " \"straight_line_length\": " << num(p.straightLineLength) << ",\n";
     s << " \"waypoints_raw\": " << p.raw.size() << ",\n";
-    s << " \"waypoints_smoothed\": " << p.path.size() << ",\n";
+    s << " \"waypoints_smoothed\": " << p.smoothedWaypoints << ",\n";
+    s << " \"waypoints_final\": " << p.path.size() << ",\n";
     s << " \"cfc\": " << p.costFunctionCalls << ",\n";
     s << " \"cmc\": " << p.currentModelCalls << ",\n";
     s << " \"expansions\": " << p.expansions << ",\n";
@@ -280,8 +281,8 @@ void printMissionReport(std::ostream &out, const MissionResult &r)
     line("path length %s (lattice path %s); straight line %s, travel time %s\n", csvNum(p.pathLength).c_str(),
          csvNum(p.rawPathLength).c_str(), csvNum(p.straightLineLength).c_str(),
          std::isfinite(p.straightLineTime) ? csvNum(p.straightLineTime).c_str() : "impassable");
-    line("waypoints raw %zu, smoothed %zu; CFC %llu, CMC %llu; planning %.3f s, total %.3f s\n", p.raw.size(),
-         p.path.size(), static_cast<unsigned long long>(p.costFunctionCalls),
+    line("waypoints raw %zu, smoothed %zu, final %zu; CFC %llu, CMC %llu; planning %.3f s, total %.3f s\n",
+         p.raw.size(), p.smoothedWaypoints, p.path.size(), static_cast<unsigned long long>(p.costFunctionCalls),
          static_cast<unsigned long long>(p.currentModelCalls), p.wallSeconds, r.wallSeconds);
     line("%4s %12s %12s %11s %10s %14s %22s %16s\n", "#", "x", "y", "lon", "lat", "arrival", "arrival (UTC)",
          "dive profile");

@@ -377,6 +377,7 @@ PlannedPath MissionProblem::plan(double tDep, const PlanOptions &o) const
             r.rawTravelTime = res.travelTimeRaw;
             r.rawPathLength = pathLength(r.raw);
             r.path = res.path;
+            r.smoothedWaypoints = res.smoothed.empty() ? res.raw.size() : res.smoothed.size();
             r.travelTime = res.travelTime;
             r.pathLength = pathLength(r.path);
         }
@@ -436,6 +437,7 @@ PlannedPath MissionProblem::plan(double tDep, const PlanOptions &o) const
         const SmoothingResult s = PathSmoother(ctx).smooth(r.path, tDep);
         r.path = s.waypoints;
     }
+    r.smoothedWaypoints = r.path.size();
     if (refinement)
     {
         RefinerParams rp;

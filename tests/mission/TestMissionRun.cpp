@@ -131,7 +131,9 @@ TEST(MissionRun, UniformCurrentClosedFormAndOutputsRoundTrip)
     EXPECT_TRUE(s["solved"].as<bool>());
     EXPECT_NEAR(s["travel_time"].as<double>(), 8.0 / 0.6, 1e-8);
     EXPECT_NEAR(s["straight_line_travel_time"].as<double>(), 8.0 / 0.6, 1e-8);
-    EXPECT_EQ(s["waypoints_smoothed"].as<std::size_t>(), n);
+    EXPECT_EQ(s["waypoints_final"].as<std::size_t>(), n);
+    EXPECT_EQ(s["waypoints_smoothed"].as<std::size_t>(), r.plan.smoothedWaypoints);
+    EXPECT_LE(r.plan.smoothedWaypoints, r.plan.raw.size());
     EXPECT_EQ(s["waypoints_raw"].as<std::size_t>(), r.plan.raw.size());
     EXPECT_GT(s["cfc"].as<long>(), 0);
     EXPECT_GT(s["cmc"].as<long>(), 0);

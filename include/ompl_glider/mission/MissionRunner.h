@@ -50,6 +50,7 @@ struct PlannedPath
     double speed{0.0};                  ///< vehicle speed used
     std::vector<TimedWaypoint> raw;     ///< lattice path (times re-simulated)
     std::vector<TimedWaypoint> path;    ///< final path (smoothed / refined when asked), times re-simulated
+    std::size_t smoothedWaypoints{0};   ///< waypoints after smoothing, before refinement (= raw without smoothing)
     double rawTravelTime{std::numeric_limits<double>::infinity()};  ///< lattice path travel time
     double travelTime{std::numeric_limits<double>::infinity()};     ///< final path travel time
     double rawPathLength{0.0};          ///< lattice path length
