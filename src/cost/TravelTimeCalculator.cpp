@@ -45,13 +45,13 @@ TravelTimeCalculator::TravelTimeCalculator(std::shared_ptr<const CurrentField> f
 
 double TravelTimeCalculator::travelTime(double x1, double y1, double x2, double y2, double tStart) const
 {
-    calls_.fetch_add(1, std::memory_order_relaxed);
+    calls_.add();
     return integrate(x1, y1, x2, y2, tStart, false);
 }
 
 ArrivalWindow TravelTimeCalculator::arrivalWindow(double x1, double y1, double x2, double y2, double tStart) const
 {
-    calls_.fetch_add(1, std::memory_order_relaxed);
+    calls_.add();
     ArrivalWindow w{integrate(x1, y1, x2, y2, tStart, false), kInf};
     if (std::isfinite(w.earliest))
         w.latest = integrate(x1, y1, x2, y2, tStart, true);

@@ -2,10 +2,10 @@
 /// @file TravelTimeCalculator.h
 /// @brief Travel time along a straight leg through a time-varying current. SPEC.md section 2.
 
-#include <atomic>
 #include <cstdint>
 #include <memory>
 
+#include "ompl_glider/ShardedCounter.h"
 #include "ompl_glider/current/CurrentField.h"
 
 namespace ompl_glider
@@ -52,7 +52,7 @@ struct ArrivalWindow
 ///
 /// Infeasible legs (a step with disc <= 0 or a non-positive effective speed, a leg that touches land anywhere
 /// (CurrentField::segmentInWater), or a time after the field's end) cost +infinity, never NaN. Each call to travelTime() or arrivalWindow() counts one cost-function call
-/// (CFC, 000 Table 4); the counter is atomic and the object is safe to share between threads.
+/// (CFC, 000 Table 4); the counter (ShardedCounter) is exact across threads and the object is safe to share.
 class TravelTimeCalculator
 {
 public:
@@ -68,12 +68,12 @@ public:
     /// @brief Number of cost-function calls so far.
     std::uint64_t costFunctionCalls() const
     {
-        return calls_.load(std::memory_order_relaxed);
+        return calls_.load();
     }
     /// @brief Reset the CFC counter.
     void resetCostFunctionCalls() const
     {
-        calls_.store(0, std::memory_order_relaxed);
+        calls_.reset();
     }
 
     /// @brief The field in use.
@@ -99,6 +99,6 @@ private:
 
     std::shared_ptr<const CurrentField> field_;
     TravelTimeParams params_;
-    mutable std::atomic<std::uint64_t> calls_{0};
+    mutable ShardedCounter calls_;
 };
 }  // namespace ompl_glider

@@ -2,11 +2,12 @@
 /// @file CurrentField.h
 /// @brief Interface of an ocean-current (or wind) field c(x, y, z, t). SPEC.md section 1.
 
-#include <atomic>
 #include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
+
+#include "ompl_glider/ShardedCounter.h"
 
 namespace ompl_glider
 {
@@ -43,7 +44,7 @@ struct Region
 ///
 /// Coordinates are metres and seconds for real forecasts, dimensionless for analytic test flows.
 /// Every query through velocity() or jacobian() counts one current-model call (CMC, 000 Table 4);
-/// the counter is a relaxed atomic, so it is exact when several threads query the same field.
+/// the counter (ShardedCounter) is exact and cheap when several threads query the same field.
 /// Implementations override evaluate() / evaluateJacobian() and must be thread-safe for const use.
 class CurrentField
 {
@@ -53,14 +54,14 @@ public:
     /// @brief Current at (x, y, depth z, time t). Counts one CMC.
     Velocity velocity(double x, double y, double z, double t) const
     {
-        calls_.fetch_add(1, std::memory_order_relaxed);
+        calls_.add();
         return evaluate(x, y, z, t);
     }
 
     /// @brief Spatial Jacobian at (x, y, z, t). Counts one CMC.
     Jacobian jacobian(double x, double y, double z, double t) const
     {
-        calls_.fetch_add(1, std::memory_order_relaxed);
+        calls_.add();
         return evaluateJacobian(x, y, z, t);
     }
 
@@ -112,12 +113,12 @@ public:
     /// @brief Number of current-model calls (CMC) so far.
     std::uint64_t callCount() const
     {
-        return calls_.load(std::memory_order_relaxed);
+        return calls_.load();
     }
     /// @brief Reset the CMC counter to zero.
     void resetCallCount() const
     {
-        calls_.store(0, std::memory_order_relaxed);
+        calls_.reset();
     }
 
 protected:
@@ -127,6 +128,6 @@ protected:
     virtual Jacobian evaluateJacobian(double x, double y, double z, double t) const = 0;
 
 private:
-    mutable std::atomic<std::uint64_t> calls_{0};
+    mutable ShardedCounter calls_;
 };
 }  // namespace ompl_glider
