@@ -12,6 +12,7 @@
 #include "ompl_glider/environment/IceZone.h"
 #include "ompl_glider/environment/StaticRegion.h"
 #include "ompl_glider/environment/TimeWindowedZone.h"
+#include "ompl_glider/mission/PlanRun.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 
 namespace ompl_glider
@@ -28,14 +29,9 @@ struct CampaignProblem
 /// @brief Start, goal and common settings of every campaign problem.
 inline GliderProblem campaignBaseProblem(std::shared_ptr<const CurrentField> field)
 {
-    GliderProblem p;
+    // The built-in Gulf Stream problem (region, V = 0.5, t0 = 0), with the campaign's own start, goal and horizon.
+    GliderProblem p = gulfStreamProblem();
     p.field = std::move(field);
-    p.travel.speed = 0.5;
-    p.xMin = 0.0;
-    p.xMax = 10.0;
-    p.yMin = -4.0;
-    p.yMax = 4.0;
-    p.t0 = 0.0;
     p.horizon = 40.0;
     p.startX = 0.6;
     p.startY = -2.6;
