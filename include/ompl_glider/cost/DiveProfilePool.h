@@ -51,8 +51,8 @@ private:
     std::size_t n_{0};
     std::atomic<std::size_t> next_{0};
     std::size_t active_{0};
-    std::uint64_t generation_{0};
-    bool stop_{false};
+    std::atomic<std::uint64_t> generation_{0};  ///< changed under m_; read without it while spinning
+    std::atomic<bool> stop_{false};
     std::exception_ptr error_;
 };
 }  // namespace ompl_glider
