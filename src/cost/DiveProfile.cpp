@@ -81,80 +81,17 @@ std::vector<DiveProfile> makeDiveProfiles(const DiveProfileParams &p)
 DiveProfileTravelTime::DiveProfileTravelTime(std::shared_ptr<const CurrentField> field, TravelTimeParams travel,
                                              DiveProfileParams dive, std::shared_ptr<const Bathymetry> bathymetry,
                                              unsigned threads)
-  : field_(std::move(field)), travel_(travel), dive_(dive), bathymetry_(std::move(bathymetry))
+  : segments_(std::move(field), travel), dive_(dive), bathymetry_(std::move(bathymetry))
 {
-    if (!field_)
-        throw Error("DiveProfileTravelTime: no current field given");
-    // Validates the travel parameters the same way the 2-D calculator does.
-    TravelTimeCalculator check(field_, travel_);
     profiles_ = makeDiveProfiles(dive_);
     if (threads != 1)
         pool_ = std::make_unique<DiveProfilePool>(threads);
 }
 
-// CALC-TRAVELTIME (001 Table III) along one segment whose depth goes linearly from zs to ze. The arithmetic is the
-// one of TravelTimeCalculator so that a depth-uniform field gives the same numbers bit for bit.
-double DiveProfileTravelTime::segmentTime(double x1, double y1, double zs, double x2, double y2, double ze,
-                                          double tStart) const
-{
-    const CurrentField &f = *field_;
-    const double V = travel_.speed;
-    const double tEnd = f.timeEnd();
-    if (tStart < f.timeBegin() || tStart > tEnd)
-        return kInf;
-    const double dx = x2 - x1, dy = y2 - y1;
-    const double len = std::hypot(dx, dy);
-    if (len == 0.0)
-        return 0.0;
-    if (!f.inWater(x1, y1, zs) || !f.inWater(x2, y2, ze))
-        return kInf;
-    const double px = dx / len, py = dy / len;
-    double frac = 0.0, t = tStart;
-    double h = std::min(travel_.h, 1.0);
-    Velocity cStart = f.velocity(x1, y1, zs, t);
-    constexpr double kDone = 1.0 - 1e-12;
-    while (frac < kDone)
-    {
-        if (frac + h > 1.0)
-            h = 1.0 - frac;
-        const double segLen = h * len;
-        const AlongTrackSpeeds r1 = alongTrackSpeeds(px, py, cStart, V);
-        if (!r1.feasible || r1.fast <= 0.0)
-            return kInf;
-        const double tRough = segLen / r1.fast;
-        const double fe = frac + h;
-        const double xe = x1 + fe * dx, ye = y1 + fe * dy;
-        const double zEnd = zs + fe * (ze - zs);
-        if (t + tRough > tEnd)
-            return kInf;
-        const Velocity cEnd = f.velocity(xe, ye, zEnd, t + tRough);
-        const Velocity cMean{0.5 * (cStart.u + cEnd.u), 0.5 * (cStart.v + cEnd.v)};
-        const AlongTrackSpeeds r2 = alongTrackSpeeds(px, py, cMean, V);
-        if (!r2.feasible || r2.fast <= 0.0)
-            return kInf;
-        const double tImproved = segLen / r2.fast;
-        const double err = std::abs(tRough - tImproved);
-        const double hNew =
-            std::max(travel_.hMin, std::min(travel_.hMax, travel_.tau * h * std::sqrt(travel_.eps / err)));
-        if (err < travel_.eps || h <= travel_.hMin)
-        {
-            if (!f.inWater(xe, ye, zEnd))
-                return kInf;
-            cStart = cEnd;
-            frac = fe;
-            t += tImproved;
-            if (t > tEnd)
-                return kInf;
-        }
-        h = hNew;
-    }
-    return t - tStart;
-}
-
 double DiveProfileTravelTime::travelTime(const DiveProfile &profile, double x1, double y1, double x2, double y2,
                                          double tStart) const
 {
-    calls_.fetch_add(1, std::memory_order_relaxed);
+    calls_.add();
     if (!std::isfinite(tStart) || !std::isfinite(x1) || !std::isfinite(y1) || !std::isfinite(x2) ||
         !std::isfinite(y2))
         return kInf;
@@ -178,7 +115,7 @@ double DiveProfileTravelTime::travelTime(const DiveProfile &profile, double x1, 
             zd = std::min(zd, floorDepth);
             zc = std::min(zc, zd);
         }
-        const double dt = segmentTime(xs, ys, zc, xe, ye, zd, tStart + total);
+        const double dt = segments_.travelTimeThroughDepth(xs, ys, zc, xe, ye, zd, tStart + total);
         if (!std::isfinite(dt))
             return kInf;
         total += dt;

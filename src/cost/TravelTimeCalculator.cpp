@@ -46,25 +46,33 @@ TravelTimeCalculator::TravelTimeCalculator(std::shared_ptr<const CurrentField> f
 double TravelTimeCalculator::travelTime(double x1, double y1, double x2, double y2, double tStart) const
 {
     calls_.add();
-    return integrate(x1, y1, x2, y2, tStart, false);
+    return integrate(x1, y1, params_.depth, x2, y2, params_.depth, tStart, false);
+}
+
+double TravelTimeCalculator::travelTimeThroughDepth(double x1, double y1, double z1, double x2, double y2, double z2,
+                                                    double tStart) const
+{
+    calls_.add();
+    return integrate(x1, y1, z1, x2, y2, z2, tStart, false);
 }
 
 ArrivalWindow TravelTimeCalculator::arrivalWindow(double x1, double y1, double x2, double y2, double tStart) const
 {
     calls_.add();
-    ArrivalWindow w{integrate(x1, y1, x2, y2, tStart, false), kInf};
+    const double z = params_.depth;
+    ArrivalWindow w{integrate(x1, y1, z, x2, y2, z, tStart, false), kInf};
     if (std::isfinite(w.earliest))
-        w.latest = integrate(x1, y1, x2, y2, tStart, true);
+        w.latest = integrate(x1, y1, z, x2, y2, z, tStart, true);
     return w;
 }
 
-double TravelTimeCalculator::integrate(double x1, double y1, double x2, double y2, double tStart, bool slow) const
+double TravelTimeCalculator::integrate(double x1, double y1, double z1, double x2, double y2, double z2,
+                                       double tStart, bool slow) const
 {
     if (!std::isfinite(tStart) || !std::isfinite(x1) || !std::isfinite(y1) || !std::isfinite(x2) ||
-        !std::isfinite(y2))
+        !std::isfinite(y2) || !std::isfinite(z1) || !std::isfinite(z2))
         return kInf;
     const CurrentField &f = *field_;
-    const double z = params_.depth;
     const double V = params_.speed;
     const double tEnd = f.timeEnd();
     if (tStart < f.timeBegin() || tStart > tEnd)
@@ -73,14 +81,14 @@ double TravelTimeCalculator::integrate(double x1, double y1, double x2, double y
     const double len = std::hypot(dx, dy);
     if (len == 0.0)
         return 0.0;
-    if (!f.segmentInWater(x1, y1, x2, y2, z))
-        return kInf;  // the leg touches land somewhere (not only at an integration step)
+    if (!f.segmentInWater(x1, y1, x2, y2, z1) || (z2 != z1 && !f.segmentInWater(x1, y1, x2, y2, z2)))
+        return kInf;  // the leg touches land somewhere (not only at an integration step), at either end depth
     const double px = dx / len, py = dy / len;
 
     // Progress along the leg as a fraction in [0, 1] and the local time.
     double frac = 0.0, t = tStart;
     double h = std::min(params_.h, 1.0);
-    Velocity cStart = f.velocity(x1, y1, z, t);
+    Velocity cStart = f.velocity(x1, y1, z1, t);
     // Speed chosen from the roots: the fast one for the earliest arrival, the slow one for the latest.
     auto pace = [&](const Velocity &c, double &speed) -> bool {
         const AlongTrackSpeeds r = alongTrackSpeeds(px, py, c, V);
@@ -103,7 +111,8 @@ double TravelTimeCalculator::integrate(double x1, double y1, double x2, double y
         const double xe = x1 + fe * dx, ye = y1 + fe * dy;
         if (t + tRough > tEnd)
             return kInf;
-        const Velocity cEnd = f.velocity(xe, ye, z, t + tRough);
+        const double ze = z1 + fe * (z2 - z1);
+        const Velocity cEnd = f.velocity(xe, ye, ze, t + tRough);
         const Velocity cMean{0.5 * (cStart.u + cEnd.u), 0.5 * (cStart.v + cEnd.v)};
         double v2;
         if (!pace(cMean, v2) || v2 <= 0.0)

@@ -3,7 +3,6 @@
 /// @brief Glider dive profiles: travel time of a leg flown as a saw-tooth through a depth-varying current
 /// (003 Table I) and the optimal dive profile among a generated set (003 Sec. III.B).
 
-#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -12,6 +11,7 @@
 #include <vector>
 
 #include "ompl_glider/cost/DiveProfilePool.h"
+#include "ompl_glider/ShardedCounter.h"
 #include "ompl_glider/cost/TravelTimeCalculator.h"
 #include "ompl_glider/current/CurrentField.h"
 
@@ -146,7 +146,7 @@ public:
     /// @brief Travel parameters in use.
     const TravelTimeParams &travelParams() const
     {
-        return travel_;
+        return segments_.params();
     }
     /// @brief Threads used by bestProfile().
     unsigned threads() const
@@ -156,20 +156,20 @@ public:
     /// @brief Number of profile evaluations (CFC) so far.
     std::uint64_t costFunctionCalls() const
     {
-        return calls_.load(std::memory_order_relaxed);
+        return calls_.load();
     }
 
 private:
-    double segmentTime(double xs, double ys, double zs, double xe, double ye, double ze, double tStart) const;
     DiveLegResult evaluate(double x1, double y1, double x2, double y2, double tStart, bool parallel) const;
 
-    std::shared_ptr<const CurrentField> field_;
-    TravelTimeParams travel_;
+    /// CALC-TRAVELTIME of each dive segment (depth linear from climb-to to dive-to); holds the field and the travel
+    /// parameters, validates them and throws when the field is null
+    TravelTimeCalculator segments_;
     DiveProfileParams dive_;
     std::shared_ptr<const Bathymetry> bathymetry_;
     std::vector<DiveProfile> profiles_;
     std::unique_ptr<DiveProfilePool> pool_;
-    mutable std::atomic<std::uint64_t> calls_{0};
+    mutable ShardedCounter calls_;
 };
 
 /// @brief "fastest" / "deepest_under_limit" <-> DiveProfileSelection (throws Error on an unknown name).

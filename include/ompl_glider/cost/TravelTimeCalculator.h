@@ -62,6 +62,11 @@ public:
     /// @note CALC-TRAVELTIME, 001 Table III; 000 Eq. 3-6.
     double travelTime(double x1, double y1, double x2, double y2, double tStart) const;
 
+    /// @brief Fastest travel time of a leg along which the depth changes linearly from z1 to z2 (one segment of a
+    /// glider's dive, 003 Table I); the same integration as travelTime(), which is the case z1 = z2 = depth. One CFC.
+    double travelTimeThroughDepth(double x1, double y1, double z1, double x2, double y2, double z2,
+                                  double tStart) const;
+
     /// @brief Earliest and latest travel times of the leg (fast and slow roots integrated). One CFC.
     ArrivalWindow arrivalWindow(double x1, double y1, double x2, double y2, double tStart) const;
 
@@ -93,9 +98,10 @@ public:
     }
 
 private:
-    /// Integrates the leg with the fast (slow = false) or the slow root; returns +inf when infeasible or, for the
-    /// slow root, when the vehicle can hold.
-    double integrate(double x1, double y1, double x2, double y2, double tStart, bool slow) const;
+    /// Integrates the leg (depth linear from z1 to z2) with the fast (slow = false) or the slow root; returns +inf
+    /// when infeasible or, for the slow root, when the vehicle can hold.
+    double integrate(double x1, double y1, double z1, double x2, double y2, double z2, double tStart,
+                     bool slow) const;
 
     std::shared_ptr<const CurrentField> field_;
     TravelTimeParams params_;
