@@ -54,15 +54,15 @@ double speedInvariant(const MeanderingJetParams &p, double s, double th, double 
     const double g = 1.0 - th_s * th_s;
     return g * std::sqrt(1.0 / (D * D) + sx * sx);
 }
-}  // namespace
 
-MeanderingJet::MeanderingJet(MeanderingJetParams params) : p_(params)
+/// Global maximum of the speed over all (x, y, t) with a 0.5% margin (see MeanderingJet::maxSpeed).
+double globalSpeedBound(const MeanderingJetParams &p)
 {
     // The speed depends on (x, y, t) only through s = N/D, theta = k(x - ct) and B(t), so its global maximum is
     // a maximum over a compact box: s in [-6, 6] (sech^2 is < 2.5e-5 beyond), theta in [0, 2pi), B in
     // [B0 - |eps|, B0 + |eps|]. Grid search, then a local refinement by shrinking a pattern around the best point.
-    const double bLo = p_.B0 - std::abs(p_.epsilon), bHi = p_.B0 + std::abs(p_.epsilon);
-    double best = 0.0, bs = 0.0, bt = 0.0, bb = p_.B0;
+    const double bLo = p.B0 - std::abs(p.epsilon), bHi = p.B0 + std::abs(p.epsilon);
+    double best = 0.0, bs = 0.0, bt = 0.0, bb = p.B0;
     const int ns = 241, nt = 256, nb = 9;
     for (int ib = 0; ib < nb; ++ib)
     {
@@ -73,7 +73,7 @@ MeanderingJet::MeanderingJet(MeanderingJetParams params) : p_(params)
             for (int is = 0; is < ns; ++is)
             {
                 const double s = -6.0 + 12.0 * is / (ns - 1);
-                const double sp = speedInvariant(p_, s, th, B);
+                const double sp = speedInvariant(p, s, th, B);
                 if (sp > best)
                 {
                     best = sp;
@@ -93,7 +93,7 @@ MeanderingJet::MeanderingJet(MeanderingJetParams params) : p_(params)
                 for (int c = -1; c <= 1; ++c)
                 {
                     const double B = std::clamp(bb + c * db, bLo, bHi);
-                    const double sp = speedInvariant(p_, bs + a * ds, bt + b * dt, B);
+                    const double sp = speedInvariant(p, bs + a * ds, bt + b * dt, B);
                     if (sp > best)
                     {
                         best = sp;
@@ -110,13 +110,20 @@ MeanderingJet::MeanderingJet(MeanderingJetParams params) : p_(params)
             db *= 0.5;
         }
     }
-    speedBound_ = best * 1.005;
+    return best * 1.005;
+}
+}  // namespace
+
+MeanderingJet::MeanderingJet(MeanderingJetParams params) : p_(params)
+{
 }
 
 double MeanderingJet::maxSpeed(const Region & /*region*/) const
 {
+    std::call_once(boundOnce_, [this] { speedBound_ = globalSpeedBound(p_); });
     return speedBound_;
 }
+
 
 std::optional<double> MeanderingJet::streamFunction(double x, double y, double /*z*/, double t) const
 {

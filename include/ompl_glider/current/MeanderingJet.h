@@ -2,6 +2,8 @@
 /// @file MeanderingJet.h
 /// @brief The meandering-jet model of the Gulf Stream (000 Sec. 6.1, Eq. 7-9).
 
+#include <mutex>
+
 #include "ompl_glider/current/CurrentField.h"
 
 namespace ompl_glider
@@ -25,8 +27,9 @@ class MeanderingJet : public CurrentField
 public:
     explicit MeanderingJet(MeanderingJetParams params = {});
 
-    /// @brief Upper bound of the speed: the global maximum over all (x, y, t), found once on the jet's
-    /// invariant coordinates (phase, scaled cross-jet distance, amplitude), plus a 0.5% margin.
+    /// @brief Upper bound of the speed: the global maximum over all (x, y, t), found on the jet's invariant
+    /// coordinates (phase, scaled cross-jet distance, amplitude), plus a 0.5% margin. Computed on the first call
+    /// (about 25 ms), then cached.
     double maxSpeed(const Region &region) const override;
     std::optional<double> streamFunction(double x, double y, double z, double t) const override;
     bool divergenceFree() const override
@@ -49,6 +52,7 @@ protected:
 
 private:
     MeanderingJetParams p_;
-    double speedBound_;
+    mutable std::once_flag boundOnce_;
+    mutable double speedBound_{0.0};
 };
 }  // namespace ompl_glider
