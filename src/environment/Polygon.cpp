@@ -154,17 +154,14 @@ int Polygon::row(double y) const
 
 bool Polygon::contains(double x, double y) const
 {
-    return containsUsing(x, y);
-}
-
-bool Polygon::containsUsing(double x, double y) const
-{
     if (!std::isfinite(x) || !std::isfinite(y))
         return false;
     if (x < box_.xMin - pad_ || x > box_.xMax + pad_ || y < box_.yMin - pad_ || y > box_.yMax + pad_)
         return false;
     // Candidate edges: the cells of the point's row from its column to the east (those a ray to +x can meet).
-    std::vector<std::uint32_t> cand;
+    // A per-thread buffer: no allocation per query once it has grown.
+    thread_local std::vector<std::uint32_t> cand;
+    cand.clear();
     const int r = row(y);
     for (int c = column(x - pad_); c < nx_; ++c)
     {
@@ -242,8 +239,8 @@ bool Polygon::segmentIntersects(double ax, double ay, double bx, double by) cons
         std::max(ay, by) < box_.yMin - pad_ || std::min(ay, by) > box_.yMax + pad_)
         return false;
     if (ax == bx && ay == by)
-        return containsUsing(ax, ay);
-    std::vector<std::uint32_t> cand;
+        return contains(ax, ay);
+    thread_local std::vector<std::uint32_t> cand;  // per-thread buffer (segmentCandidates clears it)
     segmentCandidates(ax, ay, bx, by, cand);
     for (std::uint32_t i : cand)
     {
@@ -266,7 +263,7 @@ bool Polygon::segmentIntersects(double ax, double ay, double bx, double by) cons
         }
         return true;
     }
-    return containsUsing(ax, ay);  // no boundary met: wholly inside or wholly outside
+    return contains(ax, ay);  // no boundary met: wholly inside or wholly outside
 }
 
 std::vector<Interval> Polygon::segmentInsideIntervals(double ax, double ay, double bx, double by) const
@@ -277,7 +274,7 @@ std::vector<Interval> Polygon::segmentInsideIntervals(double ax, double ay, doub
         return result;
     if (ax == bx && ay == by)
     {
-        if (containsUsing(ax, ay))
+        if (contains(ax, ay))
             result.push_back({0.0, 1.0});
         return result;
     }
@@ -321,17 +318,17 @@ std::vector<Interval> Polygon::segmentInsideIntervals(double ax, double ay, doub
         if (isHit(s))
             return true;
         if (s == 0.0)
-            return containsUsing(ax, ay);
+            return contains(ax, ay);
         if (s == 1.0)
-            return containsUsing(bx, by);
-        return containsUsing(ax + s * dx, ay + s * dy);
+            return contains(bx, by);
+        return contains(ax + s * dx, ay + s * dy);
     };
     auto gapInside = [&](double lo, double hi) {
         for (const Interval &o : overlaps)
             if (o.lo <= lo && o.hi >= hi)
                 return true;
         const double m = 0.5 * (lo + hi);
-        return containsUsing(ax + m * dx, ay + m * dy);
+        return contains(ax + m * dx, ay + m * dy);
     };
     bool open = false;
     double start = 0.0;

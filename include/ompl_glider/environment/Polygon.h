@@ -115,7 +115,6 @@ private:
     int row(double y) const;
     /// Candidate edges for the segment (sorted, unique).
     void segmentCandidates(double ax, double ay, double bx, double by, std::vector<std::uint32_t> &out) const;
-    bool containsUsing(double x, double y) const;
 
     std::vector<Point2> outer_;
     std::vector<Edge> edges_;
