@@ -64,15 +64,6 @@ std::shared_ptr<const CurrentField> analyticField(const CurrentSpec &c)
     throw Error("current type '" + c.type + "' is not an analytic flow");
 }
 
-Interp2D interp2D(const std::string &s)
-{
-    return parseInterp2D(s);
-}
-Interp1D interp1D(const std::string &s)
-{
-    return parseInterp1D(s);
-}
-
 std::string where(const MissionSpec &m, const SourceMark &mark = {})
 {
     if (!mark.file.empty() && mark.line > 0)
@@ -80,6 +71,27 @@ std::string where(const MissionSpec &m, const SourceMark &mark = {})
     return m.file + ": ";
 }
 }  // namespace
+
+NetCdfCurrentOptions netCdfCurrentOptions(const CurrentSpec &c)
+{
+    NetCdfCurrentOptions o;
+    auto var = [&](const char *role) {
+        const auto it = c.variables.find(role);
+        return it == c.variables.end() ? std::string() : it->second;
+    };
+    o.uName = var("u");
+    o.vName = var("v");
+    o.lonName = !var("lon").empty() ? var("lon") : var("x");
+    o.latName = !var("lat").empty() ? var("lat") : var("y");
+    o.depthName = var("depth");
+    o.timeName = var("time");
+    o.field.xy = parseInterp2D(c.xyInterpolation);
+    o.field.depth = parseInterp1D(c.depthInterpolation);
+    o.field.time = parseInterp1D(c.timeInterpolation);
+    o.field.beyond = c.horizonPolicy == "hold_last" ? BeyondForecast::HoldLast : BeyondForecast::Refuse;
+    o.field.name = "netcdf:" + c.file;
+    return o;
+}
 
 MissionProblem::~MissionProblem() = default;
 
@@ -89,22 +101,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     std::shared_ptr<const LocalProjection> projection;
     if (m.current.type == "netcdf")
     {
-        NetCdfCurrentOptions o;
-        auto var = [&](const char *role) {
-            const auto it = m.current.variables.find(role);
-            return it == m.current.variables.end() ? std::string() : it->second;
-        };
-        o.uName = var("u");
-        o.vName = var("v");
-        o.lonName = !var("lon").empty() ? var("lon") : var("x");
-        o.latName = !var("lat").empty() ? var("lat") : var("y");
-        o.depthName = var("depth");
-        o.timeName = var("time");
-        o.field.xy = interp2D(m.current.xyInterpolation);
-        o.field.depth = interp1D(m.current.depthInterpolation);
-        o.field.time = interp1D(m.current.timeInterpolation);
-        o.field.beyond = m.current.horizonPolicy == "hold_last" ? BeyondForecast::HoldLast : BeyondForecast::Refuse;
-        o.field.name = "netcdf:" + m.current.file;
+        NetCdfCurrentOptions o = netCdfCurrentOptions(m.current);
         if (m.region.set && m.region.geographic)
         {
             o.lonMin = m.region.lonMin;
@@ -568,14 +565,15 @@ std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep
     return rows;
 }
 
-MissionResult runMission(const MissionSpec &spec, const RunOptions &options)
+namespace
 {
-    const auto start = std::chrono::steady_clock::now();
+MissionResult runProblem(const MissionProblem &problem, const RunOptions &options,
+                         std::chrono::steady_clock::time_point start)
+{
     MissionResult result;
-    result.spec = spec;
+    result.spec = problem.spec();
     if (options.outputDirectory)
         result.spec.outputs.directory = *options.outputDirectory;
-    const MissionProblem problem(result.spec);
     const MissionSpec &m = problem.spec();
     double tDep = m.departure.time;
     if (m.departure.window)
@@ -622,5 +620,21 @@ MissionResult runMission(const MissionSpec &spec, const RunOptions &options)
     if (options.writeOutputs)
         result.files = writeMissionOutputs(result, problem);
     return result;
+}
+}  // namespace
+
+MissionResult runMission(const MissionSpec &spec, const RunOptions &options)
+{
+    const auto start = std::chrono::steady_clock::now();
+    MissionSpec s = spec;
+    if (options.outputDirectory)
+        s.outputs.directory = *options.outputDirectory;
+    const MissionProblem problem(std::move(s));
+    return runProblem(problem, options, start);
+}
+
+MissionResult runMission(const MissionProblem &problem, const RunOptions &options)
+{
+    return runProblem(problem, options, std::chrono::steady_clock::now());
 }
 }  // namespace ompl_glider

@@ -513,21 +513,7 @@ MissionSpec forecastMission(const ForecastPlanRequest &q)
 
     // Load once as the mission runner will (same names, schemes, depth range, default projection) to check the
     // request and convert the start, goal and departure.
-    NetCdfCurrentOptions o;
-    auto var = [&](const char *role) {
-        const auto it = q.variables.find(role);
-        return it == q.variables.end() ? std::string() : it->second;
-    };
-    o.uName = var("u");
-    o.vName = var("v");
-    o.lonName = var("lon");
-    o.latName = var("lat");
-    o.depthName = var("depth");
-    o.timeName = var("time");
-    o.field.xy = parseInterp2D(q.xyInterpolation);
-    o.field.depth = parseInterp1D(q.depthInterpolation);
-    o.field.time = parseInterp1D(q.timeInterpolation);
-    o.field.beyond = q.horizonPolicy == "hold_last" ? BeyondForecast::HoldLast : BeyondForecast::Refuse;
+    NetCdfCurrentOptions o = netCdfCurrentOptions(m.current);
     o.maxDepth = q.depth;
     o.departure = q.departure;
     // Load only the region of the trip (issue 5): the start-goal box plus half its larger side (at least 0.2
@@ -735,16 +721,14 @@ int runForecastCommand(const ForecastPlanRequest &request, const std::optional<s
         o.writeOutputs = false;
         o.progress = progress;
         o.speeds = speeds;
-        MissionResult r = runMission(spec, o);
+        const MissionProblem problem(spec);  // loads the forecast once for the run and the map
+        MissionResult r = runMission(problem, o);
         out << "forecast " << request.file << ": grid size " << num(spec.planner.gridSize) << " m"
             << (request.gridSize > 0.0 ? "" : " (default: half the smallest cell, within 1/200..1/25 of the "
                                               "start-goal distance)")
             << "\n";
         if (!directory.empty())
-        {
-            const MissionProblem problem(spec);  // for the map (the run's own problem is internal to runMission)
             r.files = writeForecastOutputs(r, problem, directory);
-        }
         printMissionReport(out, r);
         return r.plan.solved ? 0 : 1;
     }

@@ -139,6 +139,25 @@ TEST(MissionRun, UniformCurrentClosedFormAndOutputsRoundTrip)
     EXPECT_GT(s["cmc"].as<long>(), 0);
     EXPECT_GE(s["planning_wall_time_s"].as<double>(), 0.0);
     EXPECT_EQ(s["dive_profiles"].size(), 3u);
+
+    // The overload on a problem built beforehand gives the same plan and applies the output-directory override to
+    // the result (no files here).
+    const MissionProblem problem(spec);
+    RunOptions quiet;
+    quiet.writeOutputs = false;
+    quiet.outputDirectory = spec.outputs.directory + "_other";
+    const MissionResult r2 = runMission(problem, quiet);
+    ASSERT_TRUE(r2.plan.solved) << r2.plan.status;
+    EXPECT_EQ(r2.plan.travelTime, r.plan.travelTime);
+    ASSERT_EQ(r2.waypoints.size(), r.waypoints.size());
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        EXPECT_EQ(r2.waypoints[i].x, r.waypoints[i].x);
+        EXPECT_EQ(r2.waypoints[i].time, r.waypoints[i].time);
+    }
+    EXPECT_EQ(r2.spec.name, spec.name);
+    EXPECT_EQ(r2.spec.outputs.directory, spec.outputs.directory + "_other");
+    EXPECT_TRUE(r2.files.empty());
 }
 
 TEST(MissionRun, GeographicOutputsGotoAndIsoTimes)

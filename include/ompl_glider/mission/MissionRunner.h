@@ -21,6 +21,7 @@
 
 namespace ompl_glider
 {
+struct NetCdfCurrentOptions;
 class LocalProjection;
 
 /// @brief A forbidden region in the planning frame (for maps and outputs).
@@ -193,10 +194,19 @@ struct MissionResult
     double wallSeconds{0.0};                ///< whole run
 };
 
+/// @brief The NetCDF load options of a `current: {type: netcdf}` block: variable names (lon/lat, else x/y),
+/// interpolation schemes, horizon policy and field name. The caller adds the region, depth range and projection.
+/// Shared by MissionProblem and the --currents CLI path so that both read the file the same way.
+/// @throws Error for an unknown interpolation scheme.
+NetCdfCurrentOptions netCdfCurrentOptions(const CurrentSpec &current);
+
 /// @brief Runs a mission: problem, departure search (window), plan, dive profiles, speed sweep, outputs.
 /// A mission without a path is an outcome (plan.solved false, summary written), not an exception.
 /// @throws Error for configuration or I/O errors.
 MissionResult runMission(const MissionSpec &spec, const RunOptions &options = {});
+/// @brief The same on a problem already built (its current field already loaded), e.g. to reuse the problem for
+/// the map afterwards. wallSeconds then excludes building the problem.
+MissionResult runMission(const MissionProblem &problem, const RunOptions &options = {});
 
 /// @brief The speed sweep (003 Table VI): plans at every speed from the departure tDep.
 std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep, const std::vector<double> &speeds,
