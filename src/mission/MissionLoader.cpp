@@ -129,8 +129,8 @@ public:
     double nonNegative(const YAML::Node &node, const std::string &field) const
     {
         const double v = number(node, field);
-        if (!(v >= 0))
-            fail(node, field, "expected a number >= 0, got " + node.Scalar());
+        if (!(v >= 0) || !std::isfinite(v))
+            fail(node, field, "expected a finite number >= 0, got " + node.Scalar());
         return v;
     }
     long integer(const YAML::Node &node, const std::string &field, long lo, long hi) const

@@ -163,6 +163,10 @@ TEST(MissionFile, WrongTypesAndValuesNameTheFieldAndLine)
     EXPECT_HAS(msg, "forbidden.obstacles[0].points");
     msg = errorOf(kBase + "forbidden:\n  ice:\n    - points: [[1, 1], [2, 1], [2, 2]]\n");
     EXPECT_HAS(msg, "forbidden.ice[0].max_submerged_time");
+    msg = errorOf(kBase + "planner: {goal_tolerance: .inf}\n");
+    EXPECT_HAS(msg, "m.yaml:8:");
+    EXPECT_HAS(msg, "planner.goal_tolerance");
+    EXPECT_HAS(msg, "finite");
 }
 
 TEST(MissionFile, MissingRequiredFieldsAndSyntaxErrors)
