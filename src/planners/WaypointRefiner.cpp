@@ -33,14 +33,22 @@ struct Search
         return arrivalTime(ctx, wp, t0);
     }
 
+    /// Arrival times at waypoints k + 1 ... computed by the last costFrom() (scratch, reused between calls).
+    std::vector<double> times{};
+
     /// Arrival at the goal when the path is flown from waypoint k, reached at time tk (the legs before k are
-    /// unchanged, so their times are reused).
+    /// unchanged, so their times are reused). Stores the arrival at each waypoint j > k in times[j] (up to the
+    /// first infinite one).
     double costFrom(const std::vector<TimedWaypoint> &wp, std::size_t k, double tk)
     {
         ++evaluations;
+        times.resize(wp.size());
         double t = tk;
         for (std::size_t j = k + 1; j < wp.size() && std::isfinite(t); ++j)
+        {
             t += legTravelTime(ctx, wp[j - 1].x, wp[j - 1].y, wp[j].x, wp[j].y, t);
+            times[j] = t;
+        }
         return t;
     }
 
@@ -76,9 +84,10 @@ struct Search
             {
                 best = c;
                 ++accepted;
+                // c is finite, so costFrom timed every leg from lo on: reuse its times instead of flying the
+                // legs again (the same operations, hence the same values, without their CFC).
                 for (std::size_t j = lo; j < n; ++j)
-                    timed[j].t = timed[j - 1].t +
-                                 legTravelTime(ctx, wp[j - 1].x, wp[j - 1].y, wp[j].x, wp[j].y, timed[j - 1].t);
+                    timed[j].t = times[j];
                 return true;
             }
         }
