@@ -15,6 +15,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "ompl_glider/planners/PathSmoother.h"
 
 namespace ompl_glider
 {
@@ -267,21 +268,7 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
 
     auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
     const auto &w = r.waypoints;
-    ompl::base::State *state = si_->allocState();
-    for (std::size_t i = 0; i < w.size(); ++i)
-    {
-        double yaw = 0.0;
-        if (w.size() > 1)
-        {
-            const std::size_t a = i == 0 ? 0 : i - 1, b = i == 0 ? 1 : i;
-            yaw = legYaw(w[a].x, w[a].y, w[b].x, w[b].y);
-        }
-        auto *ts = state->as<TimeState>();
-        ts->setXYT(w[i].x, w[i].y, w[i].t);
-        ts->setYaw(yaw);
-        path->append(state);
-    }
-    si_->freeState(state);
+    waypointsToPath(w, *path);  // yaw of each state: the leg reaching it (the first leg for the start)
 
     const bool exact = r.outcome == TveOutcome::Exact;
     const double cost = w.back().t - ctx_->t0;

@@ -302,16 +302,22 @@ TEST(ZAStarTVE, PathStatesCarryArrivalTimesAndLegHeadings)
     const auto &path = r.ss->getSolutionPath();
     const auto &w = r.planner->getWaypoints();
     ASSERT_EQ(path.getStateCount(), w.size());
+    ASSERT_GE(w.size(), 2u);
     for (std::size_t i = 0; i < w.size(); ++i)
     {
         const auto *s = path.getState(i)->as<TimeSE2StateSpace::StateType>();
-        EXPECT_DOUBLE_EQ(s->getX(), w[i].x);
-        EXPECT_DOUBLE_EQ(s->getTime(), w[i].t);
+        EXPECT_EQ(s->getX(), w[i].x);
+        EXPECT_EQ(s->getY(), w[i].y);
+        EXPECT_EQ(s->getTime(), w[i].t);
+        EXPECT_GE(s->getYaw(), -M_PI);  // SO(2)'s range [-pi, pi)
+        EXPECT_LT(s->getYaw(), M_PI);
+        // The yaw is the direction of the leg reaching the state (the first leg's for the start).
+        const std::size_t a = i == 0 ? 0 : i - 1, b = i == 0 ? 1 : i;
+        const double d = s->getYaw() - std::atan2(w[b].y - w[a].y, w[b].x - w[a].x);
+        EXPECT_NEAR(std::remainder(d, 2.0 * M_PI), 0.0, 1e-12) << "state " << i;
         if (i > 0)
         {
             EXPECT_GT(w[i].t, w[i - 1].t);
-            const double d = s->getYaw() - std::atan2(w[i].y - w[i - 1].y, w[i].x - w[i - 1].x);
-            EXPECT_NEAR(std::remainder(d, 2.0 * M_PI), 0.0, 1e-12);
         }
     }
     EXPECT_NEAR(w.back().t - w.front().t, r.time, 1e-12);
