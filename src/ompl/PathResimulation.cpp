@@ -16,15 +16,21 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 /// Empty when (x, y, t) is a valid point of the context, else why not.
 std::string pointProblem(const GliderContext &ctx, double x, double y, double t)
 {
-    std::ostringstream os;
+    // The checks first, the message only on failure: this runs at every hold step and departure sample.
     const Region &r = ctx.region;
-    if (!(x >= r.xMin && x <= r.xMax && y >= r.yMin && y <= r.yMax))
+    const bool inRegion = x >= r.xMin && x <= r.xMax && y >= r.yMin && y <= r.yMax;
+    const bool inWindow = inRegion && t >= r.tMin && t <= r.tMax;
+    const bool wet = inWindow && ctx.field->inWater(x, y, ctx.travel->params().depth);
+    if (wet && (!ctx.environment || ctx.environment->pointFree(x, y, t)))
+        return {};
+    std::ostringstream os;
+    if (!inRegion)
         os << "(" << x << ", " << y << ") outside the region";
-    else if (!(t >= r.tMin && t <= r.tMax))
+    else if (!inWindow)
         os << "time " << t << " outside the window [" << r.tMin << ", " << r.tMax << "]";
-    else if (!ctx.field->inWater(x, y, ctx.travel->params().depth))
+    else if (!wet)
         os << "(" << x << ", " << y << ") not in water";
-    else if (ctx.environment && !ctx.environment->pointFree(x, y, t))
+    else
         os << "(" << x << ", " << y << ") at time " << t << " in a forbidden region: "
            << ctx.environment->whyBlocked(x, y, t);
     return os.str();
