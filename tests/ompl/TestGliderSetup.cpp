@@ -255,7 +255,7 @@ TEST(PathResimulation, InfeasibleAndBlockedLegs)
     EXPECT_FALSE(r.valid);
     EXPECT_EQ(r.firstBadLeg, 1);
     EXPECT_FALSE(std::isfinite(r.arrivalTime));
-    EXPECT_FALSE(r.reason.empty());
+    EXPECT_NE(r.reason.find("leg 1"), std::string::npos) << r.reason;  // names the first bad leg
     // A leg through a forbidden disc.
     GliderProblem p = uniformProblem(0.0, 0.0);
     p.environment = std::make_shared<Disc>(5, 0, 1);
@@ -263,6 +263,7 @@ TEST(PathResimulation, InfeasibleAndBlockedLegs)
     const PathResimulation r2 = resimulatePath(*ctx2, {{1, 2}, {3, 2}, {7, -0.5}, {9, 0}}, 0.0);
     EXPECT_FALSE(r2.valid);
     EXPECT_EQ(r2.firstBadLeg, 1);
+    EXPECT_NE(r2.reason.find("leg 1"), std::string::npos) << r2.reason;
     const PathResimulation r3 = resimulatePath(*ctx2, {{1, 2}, {5, 2}, {9, 0}}, 0.0);
     EXPECT_TRUE(r3.valid);
     EXPECT_NEAR(r3.arrivalTime, (4.0 + std::hypot(4.0, 2.0)) / 0.5, 1e-9);
