@@ -6,4 +6,4 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/setup.sh"
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$root/build" -j"$(nproc)" --target glider_plan
-"$root/build/demos/glider_plan" "$@"
+"$root/build/apps/glider_plan" "$@"

@@ -15,6 +15,7 @@ PACKAGES=(
   libyaml-cpp-dev
   libproj-dev
   libcairo2-dev
+  libcli11-dev nlohmann-json3-dev
   python3 python3-matplotlib
 )
 

@@ -65,10 +65,9 @@ std::vector<DepartureSample> evaluateAll(const TravelTimeOfDeparture &f, const s
         {
             std::lock_guard<std::mutex> lock(printMutex);
             const std::size_t n = ++done;
-            std::fprintf(stderr, "\r%s: %zu/%zu departures searched", what, n, ts.size());
-            if (n == ts.size())
-                std::fprintf(stderr, "\n");
-            std::fflush(stderr);
+            char line[128];
+            std::snprintf(line, sizeof line, "%s: %zu/%zu departures searched", what, n, ts.size());
+            p.progress(line, n == ts.size());
         }
     });
     return out;
@@ -261,16 +260,17 @@ DepartureSearchResult optimalDepartureTime(const TravelTimeOfDeparture &fine, co
                 tt = kInf;
             if (p.progress)
             {
-                std::fprintf(stderr, "\rdeparture (Brent): %zu refining searches, t=%.6g -> %.6g   ",
-                             r.refinements.size() + 1, t, tt);
-                std::fflush(stderr);
+                char line[128];
+                std::snprintf(line, sizeof line, "departure (Brent): %zu refining searches, t=%.6g -> %.6g",
+                              r.refinements.size() + 1, t, tt);
+                p.progress(line, false);
             }
             return tt;
         };
         const auto best = brentMinimize(f, r.bracketLo, r.bracketHi, tStar, p.tolerance, p.maxBrentEvaluations,
                                         &r.refinements);
         if (p.progress)
-            std::fprintf(stderr, "\n");
+            p.progress("departure (Brent): " + std::to_string(r.refinements.size()) + " refining searches", true);
         for (auto &s : r.refinements)
             if (!(s.travelTime >= 0.0) || s.tDep + s.travelTime > p.horizon)
                 s.travelTime = kInf;

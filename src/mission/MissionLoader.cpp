@@ -8,6 +8,9 @@
 #include <sstream>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/output/OutputFormats.h"
+#include "ompl_glider/planners/PlannerRegistry.h"
 #include "ompl_glider/current/CfTime.h"
 #include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/mission/MissionSpec.h"
@@ -363,18 +366,19 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
     r.checkMap(n, f, {"type", "parameters", "file", "variables", "interpolation", "horizon"});
     CurrentSpec &c = m.current;
     c.mark = {r.file(), r.line(n)};
+    std::set<std::string> kinds;
+    for (const CurrentFieldKind &k : currentFieldKinds())
+        kinds.insert(k.name);
     if (!n["type"])
-        r.fail(n, f + ".type", "missing (meandering_jet, uniform, linear_shear, double_gyre or netcdf)");
-    c.type = r.oneOf(n["type"], f + ".type", {"meandering_jet", "uniform", "linear_shear", "double_gyre", "netcdf"});
-    static const std::map<std::string, std::set<std::string>> params = {
-        {"meandering_jet", {"B0", "epsilon", "omega", "theta", "k", "c"}},
-        {"uniform", {"u", "v"}},
-        {"linear_shear", {"a"}},
-        {"double_gyre", {"amplitude", "length"}},
-        {"netcdf", {}}};
+        r.fail(n, f + ".type", "missing (" + currentFieldKindList() + ")");
+    c.type = r.oneOf(n["type"], f + ".type", kinds);
+    const CurrentFieldKind &kind = *findCurrentFieldKind(c.type);
     if (n["parameters"])
     {
-        r.checkMap(n["parameters"], f + ".parameters", params.at(c.type));
+        std::set<std::string> names;
+        for (const auto &[key, value] : kind.parameters)
+            names.insert(key);
+        r.checkMap(n["parameters"], f + ".parameters", names);
         for (auto it = n["parameters"].begin(); it != n["parameters"].end(); ++it)
         {
             const std::string key = it->first.Scalar();
@@ -383,7 +387,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
     }
     if (c.type == "double_gyre" && c.parameters.count("length") && !(c.parameters["length"] > 0))
         r.fail(n["parameters"]["length"], f + ".parameters.length", "expected a number > 0");
-    const bool netcdf = c.type == "netcdf";
+    const bool netcdf = kind.gridded;
     for (const char *key : {"file", "variables", "interpolation", "horizon"})
         if (n[key] && !netcdf)
             r.fail(n[key], f + "." + key, "only for type netcdf");
@@ -571,8 +575,13 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
                 "parameters"});
     PlannerSpec &p = m.planner;
     if (n["name"])
-        p.name = r.oneOf(n["name"], f + ".name",
-                         {"tve", "astartve", "ztve", "zastartve", "RRTstar", "InformedRRTstar", "PRM", "PRMstar", "RRT"});
+    {
+        const std::string name = r.text(n["name"], f + ".name");
+        const PlannerEntry *entry = findPlanner(name);
+        if (!entry)
+            r.fail(n["name"], f + ".name", "unknown planner '" + name + "' (expected one of " + plannerNameList() + ")");
+        p.name = entry->name;
+    }
     if (n["grid_size"])
         p.gridSize = r.positive(n["grid_size"], f + ".grid_size");
     if (n["sectors"])
@@ -589,10 +598,21 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
         p.goalTolerance = r.nonNegative(n["goal_tolerance"], f + ".goal_tolerance");
     if (n["parameters"])
     {
-        r.checkMap(n["parameters"], f + ".parameters",
-                   {"delta_phi_max_deg", "zermelo_steps", "course_extrapolation", "refiner_max_evaluations"});
-        for (auto it = n["parameters"].begin(); it != n["parameters"].end(); ++it)
-            p.parameters[it->first.Scalar()] = r.finite(it->second, f + ".parameters." + it->first.Scalar());
+        // Names and values are checked against the planner's declared parameters before planning (Planning.cpp).
+        const YAML::Node &params = n["parameters"];
+        if (!params.IsMap())
+            r.fail(params, f + ".parameters", "expected a map of planner parameter names to values");
+        for (auto it = params.begin(); it != params.end(); ++it)
+        {
+            const std::string key = it->first.Scalar();
+            const std::string field = f + ".parameters." + key;
+            if (!it->second.IsScalar())
+                r.fail(it->second, field, "expected a value (number or boolean)");
+            if (p.parameters.count(key))
+                r.fail(it->first, field, "given twice");
+            p.parameters[key] = it->second.Scalar();
+            p.parameterMarks[key] = {r.file(), r.line(it->first)};
+        }
     }
 }
 
@@ -609,10 +629,12 @@ void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
         if (!l.IsSequence())
             r.fail(l, f + ".files", "expected a list such as [csv, geojson, goto, summary, map]");
         o.files.clear();
+        std::set<std::string> formats;
+        for (const OutputFormat &format : outputFormats())
+            formats.insert(format.name);
         for (std::size_t i = 0; i < l.size(); ++i)
         {
-            const std::string kind = r.oneOf(l[i], f + ".files[" + std::to_string(i) + "]",
-                                             {"csv", "geojson", "goto", "summary", "map"});
+            const std::string kind = r.oneOf(l[i], f + ".files[" + std::to_string(i) + "]", formats);
             if (kind == "goto" && !m.projection.set && m.current.type != "netcdf")
                 r.fail(l[i], f + ".files[" + std::to_string(i) + "]",
                        "a goto list needs longitudes and latitudes: give a 'projection' in the mission");
@@ -624,7 +646,14 @@ void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (n["goto_include_start"])
         o.gotoIncludeStart = r.boolean(n["goto_include_start"], f + ".goto_include_start");
     if (n["prefix"])
+    {
         o.prefix = r.text(n["prefix"], f + ".prefix");
+        if (o.prefix.empty() || o.prefix.find_first_of("/\\") != std::string::npos || o.prefix == "." ||
+            o.prefix == ".." || o.prefix.find_first_of(std::string("\0:*?\"<>|", 8)) != std::string::npos)
+            r.fail(n["prefix"], f + ".prefix",
+                   "expected a plain file-name part (letters, digits, '_', '-', '.'; no '/' or '..'), got '" +
+                       o.prefix + "'");
+    }
     if (n["map_time"])
         o.mapTime = r.time(n["map_time"], f + ".map_time", m);
 }
@@ -978,14 +1007,16 @@ MissionSpec defaultGulfStreamMission()
     m.region.xMax = 10;
     m.region.yMin = -4;
     m.region.yMax = 4;
-    // The same problem as gulfStreamProblem() of the CLI (PlanRun.h): south of the jet to north of it.
+    // South of the jet to north of it.
     m.start.x = 1.0;
     m.start.y = -3.0;
     m.goal.x = 8.0;
     m.goal.y = 3.0;
     m.vehicle.speed = 0.5;
     m.travel.speed = 0.5;
-    m.outputs.files = {"csv", "geojson", "summary"};
+    m.planner.horizon = 60.0;
+    m.planner.goalTolerance = 1e-3;
+    m.outputs.files = {"summary", "path", "csv", "geojson", "map"};
     return m;
 }
 }  // namespace ompl_glider

@@ -1,3 +1,11 @@
-# mission/: mission files, outputs, departure-time search, map rendering
-include(${CMAKE_CURRENT_LIST_DIR}/mission.cmake)
-include(${CMAKE_CURRENT_LIST_DIR}/map.cmake)
+# mission/: mission files, the problem, the one planning pipeline, departure-time search
+list(APPEND OMPL_GLIDER_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/AkimaSpline.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/DepartureTimeSearch.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/IsoTime.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/MissionLoader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ForecastMission.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Planning.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
+)

@@ -16,6 +16,7 @@
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/planners/WaypointRefiner.h"
 
 namespace ompl_glider
 {
@@ -73,11 +74,18 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
                          &ZAStarTVE::getCertifyTolerance, "-1.:0.05:1.");
     declareParam<unsigned>("sectors", this, &ZAStarTVE::setSectors, &ZAStarTVE::getSectors, "1:1:5");
     declareParam<double>("grid_size", this, &ZAStarTVE::setGridSize, &ZAStarTVE::getGridSize, "0.:0.01:1000.");
+    declareParam<unsigned>("zermelo_steps", this, &ZAStarTVE::setZermeloSteps, &ZAStarTVE::getZermeloSteps,
+                           "1:1:64");
+    declareParam<bool>("smooth", this, &ZAStarTVE::setSmooth, &ZAStarTVE::getSmooth, "0,1");
+    declareParam<bool>("refine", this, &ZAStarTVE::setRefine, &ZAStarTVE::getRefine, "0,1");
+    declareParam<unsigned>("refiner_max_evaluations", this, &ZAStarTVE::setRefinerMaxEvaluations,
+                           &ZAStarTVE::getRefinerMaxEvaluations, "1000:1000:100000");
 
     const TravelTimeCalculator *travel = ctx_->travel.get();
     const CurrentField *field = ctx_->field.get();
     addPlannerProgressProperty("cost function calls INTEGER", [this, travel] {
-        const std::uint64_t n = solving_ ? travel->costFunctionCalls() - cfcBase_ : last_.costFunctionCalls;
+        const std::uint64_t n = solving_ ? travel->costFunctionCalls() - cfcBase_
+                                           : last_.costFunctionCalls + postprocessCfc_;
         return std::to_string(n);
     });
     addPlannerProgressProperty("current model calls INTEGER", [this, field] {
@@ -131,6 +139,21 @@ void ZAStarTVE::setCertifyTolerance(double tol)
     options_.certifyTolerance = tol;
 }
 
+void ZAStarTVE::setZermeloSteps(unsigned n)
+{
+    if (n < 1 || n > 10000)
+        throw Error("ZAStarTVE: zermelo_steps must be an integer in 1..10000 (got " + std::to_string(n) + ")");
+    options_.zermeloSteps = n;
+}
+
+void ZAStarTVE::setRefinerMaxEvaluations(unsigned n)
+{
+    if (n < 1 || n > 100000000u)
+        throw Error("ZAStarTVE: refiner_max_evaluations must be an integer in 1..100000000 (got " +
+                    std::to_string(n) + ")");
+    refinerMaxEvaluations_ = n;
+}
+
 void ZAStarTVE::setSectors(unsigned n)
 {
     if (n < 1 || n > 5)
@@ -175,6 +198,8 @@ void ZAStarTVE::clear()
     freeDataStates();
     tree_.clear();
     last_ = TveResult{};
+    solution_.clear();
+    postprocessCfc_ = 0;
     bestCost_ = std::numeric_limits<double>::infinity();
 }
 
@@ -229,6 +254,8 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
     }
 
     freeDataStates();
+    solution_.clear();
+    postprocessCfc_ = 0;
     bestCost_ = std::numeric_limits<double>::infinity();
     cfcBase_ = ctx_->travel->costFunctionCalls();
     cmcBase_ = ctx_->field->callCount();
@@ -245,6 +272,29 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
     }
     last_ = r;
     tree_ = search_->tree();
+    solution_ = r.waypoints;
+    if (r.outcome == TveOutcome::Exact && (smooth_ || refine_))
+    {
+        // Post-processing of the exact lattice path: both never arrive later ([EichhornRAS] Table 3; refinement).
+        const std::uint64_t before = ctx_->travel->costFunctionCalls();
+        try
+        {
+            if (smooth_)
+                solution_ = PathSmoother(ctx_).smooth(solution_, ctx_->t0).waypoints;
+            if (refine_)
+            {
+                RefinerParams rp;
+                rp.maxEvaluations = refinerMaxEvaluations_;
+                solution_ = WaypointRefiner(ctx_, rp).refine(solution_, ctx_->t0).waypoints;
+            }
+        }
+        catch (...)
+        {
+            solving_ = false;
+            throw;
+        }
+        postprocessCfc_ = ctx_->travel->costFunctionCalls() - before;
+    }
     solving_ = false;
 
     switch (r.outcome)
@@ -267,7 +317,7 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
         return ompl::base::PlannerStatus::TIMEOUT;  // terminated before reaching anything closer to the goal
 
     auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
-    const auto &w = r.waypoints;
+    const auto &w = solution_;
     waypointsToPath(w, *path);  // yaw of each state: the leg reaching it (the first leg for the start)
 
     const bool exact = r.outcome == TveOutcome::Exact;

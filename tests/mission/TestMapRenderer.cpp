@@ -13,7 +13,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/MeanderingJet.h"
-#include "ompl_glider/mission/MapRenderer.h"
+#include "ompl_glider/output/MapRenderer.h"
 
 using namespace ompl_glider;
 namespace fs = std::filesystem;

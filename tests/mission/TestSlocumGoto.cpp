@@ -7,7 +7,7 @@
 #include <random>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/mission/SlocumGoto.h"
+#include "ompl_glider/output/SlocumGoto.h"
 
 using namespace ompl_glider;
 

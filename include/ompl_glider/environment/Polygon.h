@@ -6,15 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/Geometry.h"
+
 namespace ompl_glider
 {
-/// @brief A point of the plane (planning frame: metres, or dimensionless for analytic flows).
-struct Point2
-{
-    double x{0.0};
-    double y{0.0};
-};
-
 /// @brief A closed interval [lo, hi] (of a segment parameter or of time); lo == hi is a single point.
 struct Interval
 {

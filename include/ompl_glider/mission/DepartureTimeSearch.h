@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/Progress.h"
+
 namespace ompl_glider
 {
 /// @brief Travel time (arrival - departure) of a full search for a given departure time; +inf when no path exists
@@ -32,7 +34,7 @@ struct DepartureSearchParams
     double horizon{std::numeric_limits<double>::infinity()};
     double minTripDuration{0.0};  ///< lower bound of any trip's duration (e.g. distance / (V + max|c|))
     unsigned threads{0};          ///< supporting points evaluated on this many threads; 0 = all cores, 1 = serial
-    bool progress{false};         ///< progress line on stderr
+    ProgressSink progress;        ///< progress lines (none when empty)
 };
 
 /// @brief One evaluated departure.

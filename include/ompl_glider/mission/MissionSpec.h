@@ -151,28 +151,33 @@ struct ForbiddenSpec
 /// @brief The planner and its parameters.
 struct PlannerSpec
 {
-    /// tve | astartve | ztve | zastartve (lattice search, TveSearch) or an OMPL planner on the time-augmented space
-    /// through runPlan(): RRTstar | InformedRRTstar | PRM | PRMstar | RRT (they use time_limit, default 10 s)
-    std::string name{"zastartve"};
+    /// A name of the planner registry (PlannerRegistry.h; any accepted spelling is stored as the canonical name):
+    /// TVE, A*TVE, ZTVE, ZA*TVE (lattice search) or an OMPL planner on the time-augmented space (RRTstar, PRM, ...).
+    std::string name{"ZA*TVE"};
     double gridSize{0.4};           ///< lattice spacing
     int sectors{3};                 ///< n-sector connectivity (1..5)
-    bool smoothing{true};           ///< 000 Table 3
-    bool refinement{false};         ///< waypoint refinement after smoothing
-    double timeLimit{0.0};          ///< seconds; 0 = none
+    bool smoothing{true};           ///< [EichhornRAS] Table 3
+    bool refinement{true};          ///< waypoint refinement after smoothing
+    /// Seconds; 0 = no limit for the lattice planners, 10 s for the sampling planners (which use all they get).
+    double timeLimit{0.0};
     double horizon{0.0};            ///< planning time window length; 0 = automatic
     double goalTolerance{-1.0};     ///< < 0: automatic (1e-6 of the box size)
-    std::map<std::string, double> parameters;  ///< extra tunables (delta_phi_max_deg, zermelo_steps, ...)
+    /// Planner parameters by their OMPL names (declareParam: delta_phi_max, zermelo_steps, certify_tolerance, ...;
+    /// plus refiner_max_evaluations for the refinement), as text; checked against the planner before planning.
+    std::map<std::string, std::string> parameters;
+    std::map<std::string, SourceMark> parameterMarks;  ///< where each parameter was given
 };
 
 /// @brief What to write.
 struct OutputSpec
 {
     std::string directory{"."};   ///< resolved against the mission file's folder
-    /// csv, geojson, goto, summary, map
+    /// Output formats by name (output/OutputWriter.h: summary, csv, path, geojson, goto, map); summary.json is
+    /// always written.
     std::vector<std::string> files{"csv", "geojson", "goto", "summary"};
     int gotoNumber{10};           ///< goto_lNN.ma
     bool gotoIncludeStart{false}; ///< also list the start position in the goto file
-    std::string prefix{"mission"};  ///< file name prefix (mission_waypoints.csv, ...)
+    std::string prefix;           ///< non-empty: also a copy of every file named <prefix>_<file> (a plain name)
     double mapTime{std::numeric_limits<double>::quiet_NaN()};  ///< time of the map's current arrows (NaN: departure)
 };
 
@@ -216,8 +221,8 @@ MissionSpec loadMission(const std::string &path);
 MissionSpec parseMission(const std::string &yamlText, const std::string &file = "<mission>",
                          const std::string &directory = ".");
 
-/// @brief The built-in Gulf Stream mission (meandering jet, 000 Sec. 6.1, x in [0, 10], y in [-4, 4], V = 0.5,
-/// start (1, -3) south of the jet, goal (8, 3) north of it, departure 0; csv, geojson and summary outputs in the
-/// current directory): the CLI's default without --mission (the problem of gulfStreamProblem(), PlanRun.h).
+/// @brief The built-in Gulf Stream mission, defined once for the command line, the tests and the benchmarks:
+/// meandering jet ([EichhornRAS] Sec. 6.1), x in [0, 10], y in [-4, 4], V = 0.5, start (1, -3) south of the jet,
+/// goal (8, 3) north of it, departure 0, horizon 60, goal tolerance 1e-3, ZA*TVE on a 0.4 lattice with 3 sectors.
 MissionSpec defaultGulfStreamMission();
 }  // namespace ompl_glider

@@ -34,8 +34,13 @@ namespace ompl_glider
 /// closer to the goal than the start; INVALID_START / INVALID_GOAL (with an OMPL_ERROR saying why) when the start
 /// or goal is outside the region, on land or in a forbidden region; UNRECOGNIZED_GOAL_TYPE otherwise.
 ///
+/// With the parameters "smooth" and "refine" (both on by default) an exact lattice path is smoothed
+/// (PathSmoother) and its waypoints refined (WaypointRefiner) before it is returned, so that OMPL's Benchmark and any
+/// OMPL application get the best path; getWaypoints() keeps the lattice path.
+///
 /// Planner progress properties (logged by ompl::tools::Benchmark): "cost function calls INTEGER",
-/// "current model calls INTEGER" (CFC / CMC of the current or last solve, 000 Table 4), "best cost REAL".
+/// "current model calls INTEGER" (CFC / CMC of the current or last solve, 000 Table 4; CFC includes smoothing
+/// and refinement), "best cost REAL".
 ///
 /// @par External documentation
 /// B. Eichhorn, "Optimal routing strategies for autonomous underwater vehicles in time-varying environment",
@@ -127,16 +132,57 @@ public:
     {
         return gridSize_;
     }
+    /// @brief Steps of the Zermelo course integration per edge (param "zermelo_steps", 1..10000, default 1).
+    void setZermeloSteps(unsigned n);
+    /// @brief Steps of the Zermelo course integration per edge.
+    unsigned getZermeloSteps() const
+    {
+        return options_.zermeloSteps;
+    }
+    /// @brief Smooth the lattice path in the time-varying field before returning it (param "smooth", default on;
+    /// PathSmoother, [EichhornRAS] Table 3).
+    void setSmooth(bool on)
+    {
+        smooth_ = on;
+    }
+    /// @brief Smoothing on/off.
+    bool getSmooth() const
+    {
+        return smooth_;
+    }
+    /// @brief Refine the (smoothed) path's waypoints before returning it (param "refine", default on;
+    /// WaypointRefiner). With both on, OMPL's Benchmark and any OMPL application record the refined path.
+    void setRefine(bool on)
+    {
+        refine_ = on;
+    }
+    /// @brief Refinement on/off.
+    bool getRefine() const
+    {
+        return refine_;
+    }
+    /// @brief Budget of path re-simulations of the refiner (param "refiner_max_evaluations", 1..10^8).
+    void setRefinerMaxEvaluations(unsigned n);
+    /// @brief Budget of path re-simulations of the refiner.
+    unsigned getRefinerMaxEvaluations() const
+    {
+        return refinerMaxEvaluations_;
+    }
     /// @brief All search options (Zermelo steps, fallback, ...); the params above set the same fields.
     TveOptions &options()
     {
         return options_;
     }
 
-    /// @brief Cost-function calls (CFC, 000 Table 4) of the last solve.
+    /// @brief Cost-function calls (CFC, 000 Table 4) of the last solve's search (without post-processing).
     std::uint64_t getCostFunctionCalls() const
     {
         return last_.costFunctionCalls;
+    }
+    /// @brief Cost-function calls of the last solve's smoothing and refinement (0 when both are off).
+    std::uint64_t getPostprocessCostFunctionCalls() const
+    {
+        return postprocessCfc_;
     }
     /// @brief Current-model calls (CMC, 000 Table 4) of the last solve, CALC-OPTDIR included.
     std::uint64_t getCurrentModelCalls() const
@@ -148,12 +194,18 @@ public:
     {
         return last_.expansions;
     }
-    /// @brief Waypoints (x, y, arrival time) of the last solve's path (empty when none).
+    /// @brief Waypoints (x, y, arrival time) of the last solve's lattice path, before smoothing and refinement
+    /// (empty when none).
     const std::vector<TimedWaypoint> &getWaypoints() const
     {
         return last_.waypoints;
     }
-    /// @brief Travel time (arrival - t0) of the last exact solution; +inf otherwise.
+    /// @brief Waypoints of the path the last solve returned (after smoothing and refinement when they are on).
+    const std::vector<TimedWaypoint> &getSolutionWaypoints() const
+    {
+        return solution_;
+    }
+    /// @brief Travel time (arrival - t0) of the last exact lattice path (before post-processing); +inf otherwise.
     double getTravelTime() const
     {
         return last_.travelTime;
@@ -174,6 +226,11 @@ private:
     TveOptions options_;
     unsigned sectors_{3};
     double gridSize_{0.4};
+    bool smooth_{true};
+    bool refine_{true};
+    unsigned refinerMaxEvaluations_{40000};
+    std::uint64_t postprocessCfc_{0};
+    std::vector<TimedWaypoint> solution_;
     std::unique_ptr<TveSearch> search_;
     TveResult last_;
     std::vector<TveTreeVertex> tree_;

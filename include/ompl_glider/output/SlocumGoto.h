@@ -6,15 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/Geometry.h"
+
 namespace ompl_glider
 {
-/// @brief A geographic waypoint in decimal degrees.
-struct GeoPoint
-{
-    double lon{0.0};  ///< longitude, degrees east
-    double lat{0.0};  ///< latitude, degrees north
-};
-
 /// @brief Decimal degrees as the Slocum [-]DDDMM.MMMM text: degrees * 100 + minutes, minutes rounded to 1e-4.
 /// The rounding is done on whole 1e-4 minutes so that 41.99999999 gives "4200.0000", never "4160.0000".
 std::string formatDegMin(double degrees);
@@ -27,7 +22,7 @@ double parseDegMin(const std::string &text);
 struct GotoList
 {
     int number{10};  ///< NN of goto_lNN.ma (0..99)
-    std::vector<GeoPoint> waypoints;  ///< in the order the glider flies them
+    std::vector<LonLat> waypoints;  ///< in the order the glider flies them (written with longitudes in -180..180)
     int numLegsToRun{-2};    ///< b_arg num_legs_to_run: -2 = traverse the list once, -1 = loop
     int startWhen{0};        ///< b_arg start_when: 0 = immediately
     int listStopWhen{7};     ///< b_arg list_stop_when: 7 = when the waypoint distance is reached

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "ompl_glider/Geometry.h"
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/planners/TveSearch.h"
 
@@ -26,7 +27,7 @@ struct Rgba
 struct MapPolygon
 {
     std::string label;                                ///< shown at the polygon's centroid and in the legend
-    std::vector<std::pair<double, double>> vertices;  ///< (x, y) in field coordinates, at least 3
+    std::vector<Point2> vertices;       ///< (x, y) in field coordinates, at least 3
     Rgba fill{0.55, 0.50, 0.45, 0.55};                ///< fill colour (default: land brown-grey, translucent)
     Rgba stroke{0.30, 0.25, 0.20, 1.0};               ///< outline colour
     bool hatched{false};                              ///< draw diagonal hatching (e.g. for time-windowed zones)

@@ -1,4 +1,4 @@
-#include "ompl_glider/mission/SlocumGoto.h"
+#include "ompl_glider/output/SlocumGoto.h"
 
 #include <cmath>
 #include <cstdio>
@@ -71,8 +71,13 @@ std::string formatGotoList(const GotoList &list)
     s << "    b_arg: num_waypoints(nodim) " << list.waypoints.size() << "\n";
     s << "<end:b_arg>\n";
     s << "<start:waypoints>\n";
-    for (const GeoPoint &p : list.waypoints)
-        s << formatDegMin(p.lon) << " " << formatDegMin(p.lat) << "\n";
+    for (const LonLat &p : list.waypoints)
+    {
+        double lon = std::remainder(p.lon, 360.0);  // a Slocum reads -180..180 (185E is -17500.0000)
+        if (lon == 180.0)
+            lon = -180.0;
+        s << formatDegMin(lon) << " " << formatDegMin(p.lat) << "\n";
+    }
     s << "<end:waypoints>\n";
     return s.str();
 }

@@ -1,4 +1,4 @@
-#include "ompl_glider/mission/MapRenderer.h"
+#include "ompl_glider/output/MapRenderer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -169,7 +169,7 @@ void MapRenderer::addPolygon(MapPolygon polygon)
         throw Error("MapRenderer::addPolygon: polygon '" + polygon.label + "' needs at least 3 vertices (got " +
                     std::to_string(polygon.vertices.size()) + ")");
     for (const auto &v : polygon.vertices)
-        if (!std::isfinite(v.first) || !std::isfinite(v.second))
+        if (!std::isfinite(v.x) || !std::isfinite(v.y))
             throw Error("MapRenderer::addPolygon: polygon '" + polygon.label + "' has a non-finite vertex");
     polygons_.push_back(std::move(polygon));
 }
@@ -334,7 +334,7 @@ void MapRenderer::draw(void *context) const
         cairo_new_path(cr);
         for (std::size_t k = 0; k < poly.vertices.size(); ++k)
         {
-            const double px = X(poly.vertices[k].first), py = Y(poly.vertices[k].second);
+            const double px = X(poly.vertices[k].x), py = Y(poly.vertices[k].y);
             k == 0 ? cairo_move_to(cr, px, py) : cairo_line_to(cr, px, py);
         }
         cairo_close_path(cr);
@@ -357,7 +357,7 @@ void MapRenderer::draw(void *context) const
             cairo_new_path(cr);
             for (std::size_t k = 0; k < poly.vertices.size(); ++k)
             {
-                const double px = X(poly.vertices[k].first), py = Y(poly.vertices[k].second);
+                const double px = X(poly.vertices[k].x), py = Y(poly.vertices[k].y);
                 k == 0 ? cairo_move_to(cr, px, py) : cairo_line_to(cr, px, py);
             }
             cairo_close_path(cr);
@@ -370,8 +370,8 @@ void MapRenderer::draw(void *context) const
             double cx = 0, cy = 0;
             for (const auto &v : poly.vertices)
             {
-                cx += v.first;
-                cy += v.second;
+                cx += v.x;
+                cy += v.y;
             }
             cx /= poly.vertices.size();
             cy /= poly.vertices.size();

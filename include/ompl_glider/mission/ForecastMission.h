@@ -1,0 +1,45 @@
+#pragma once
+/// @file ForecastMission.h
+/// @brief A mission on a NetCDF forecast from a handful of inputs (the command line's `--currents FILE` mode):
+/// the file is read once to check the request and to convert the start, goal and departure, and the MissionSpec
+/// it gives is planned by the same pipeline as every other mission.
+
+#include <map>
+#include <string>
+
+#include "ompl_glider/Geometry.h"
+#include "ompl_glider/mission/MissionSpec.h"
+
+namespace ompl_glider
+{
+/// @brief What a forecast mission needs beyond the pipeline's settings.
+struct ForecastInput
+{
+    std::string file;                              ///< the NetCDF forecast
+    std::map<std::string, std::string> variables;  ///< role (u, v, lon, lat, depth, time) -> variable name
+    std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic
+    std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima
+    std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
+    std::string horizonPolicy{"refuse"};           ///< refuse | hold_last (beyond the last forecast time)
+    double depth{0.0};                             ///< depth (m, positive down) at which the current is read
+    Point2 start;  ///< start: lon,lat (x = lon, y = lat) for a geographic file, x,y for a Cartesian one
+    Point2 goal;   ///< goal, as start
+    std::string departure;  ///< ISO 8601 date or seconds after the first forecast time; empty: first forecast time
+    double speed{0.3};      ///< vehicle speed through water, m/s
+};
+
+/// @brief Default lattice spacing (metres) on a forecast: half the smallest grid cell, but no coarser than 1/25
+/// of the start-goal distance and no finer than 1/200 of it, rounded to two significant digits. (Half a cell
+/// resolves the interpolated field; 25 steps keep the path's shape; 200 steps bound the search on fine grids.)
+/// @throws Error when no finite size results.
+double defaultForecastGridSize(double minCellSize, double startGoalDistance);
+
+/// @brief The MissionSpec of a forecast: loads the file once to check that start and goal lie on the grid and in
+/// water, that the depth is not below the deepest layer and that the departure lies within the forecast; picks the
+/// default grid size; sets the outputs to every format. Only the trip's region is loaded (start-goal box plus half
+/// its larger side, at least 0.2 degrees, on each side; the whole file across the antimeridian); for geographic
+/// files the mission gets that region (clipped to the grid) and its local frame. The planner settings are the
+/// defaults of PlannerSpec: change them in the returned spec. Writes nothing.
+/// @throws Error with a one-line message naming the input (as its command-line flag), file or variable at fault.
+MissionSpec forecastMission(const ForecastInput &input);
+}  // namespace ompl_glider

@@ -1,0 +1,124 @@
+#pragma once
+/// @file MissionProblem.h
+/// @brief The one problem description every way in builds: a MissionSpec turned into the current field, the
+/// forbidden regions, the planning frame (and its geographic projection), start and goal. The planning pipeline
+/// (Planning.h) plans on it; the output layer (output/) writes from it.
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ompl_glider/Geometry.h"
+#include "ompl_glider/cost/DiveProfile.h"
+#include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/environment/Environment.h"
+#include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/ompl/GliderSetup.h"
+
+namespace ompl_glider
+{
+struct NetCdfCurrentOptions;
+class LocalProjection;
+
+/// @brief A forbidden region in the planning frame (for maps and outputs).
+struct MissionPolygon
+{
+    std::string name;            ///< its name
+    std::string kind;            ///< island / land / restricted area / closure / ice
+    std::vector<Point2> points;  ///< outer ring, planning frame
+};
+
+/// @brief The problem of a mission: field, forbidden regions, frame conversions. Thread-safe for const use (the
+/// departure-time search plans on it from several threads).
+class MissionProblem
+{
+public:
+    /// @brief Builds the field (analytic or NetCDF), the projection, the box, start/goal and the environment.
+    /// @throws Error naming the mission file and field when something does not fit (start outside the box, ...).
+    explicit MissionProblem(MissionSpec spec);
+    ~MissionProblem();
+
+    /// @brief The mission.
+    const MissionSpec &getSpec() const
+    {
+        return spec_;
+    }
+    /// @brief The current field.
+    const std::shared_ptr<const CurrentField> &getField() const
+    {
+        return field_;
+    }
+    /// @brief The forbidden regions (null when there are none).
+    const std::shared_ptr<const Environment> &getEnvironment() const
+    {
+        return environment_;
+    }
+    /// @brief Forbidden regions in the planning frame.
+    const std::vector<MissionPolygon> &getPolygons() const
+    {
+        return polygons_;
+    }
+    /// @brief Planning box (x/y) and the field's time span.
+    const Region &getBox() const
+    {
+        return box_;
+    }
+    /// @brief Start position (planning frame).
+    Point2 getStart() const
+    {
+        return start_;
+    }
+    /// @brief Goal position (planning frame).
+    Point2 getGoal() const
+    {
+        return goal_;
+    }
+
+    /// @brief True when lon/lat can be computed (projection given or geographic forecast).
+    bool isGeographic() const;
+    /// @brief Planning frame -> lon/lat (longitude in -180..180). @throws Error when !isGeographic().
+    LonLat toGeographic(Point2 p) const;
+    /// @brief lon/lat -> planning frame. @throws Error when !isGeographic().
+    Point2 toLocal(LonLat g) const;
+    /// @brief ISO 8601 of a field time, empty without a calendar.
+    std::string isoTime(double t) const;
+
+    /// @brief The GliderProblem (field, travel parameters with @p speed, environment, box, departure, horizon,
+    /// start, goal) for a departure at tDep.
+    GliderProblem gliderProblem(double tDep, double speed) const;
+
+    /// @brief Lower bound of the trip duration at @p speed: distance / (V + max|c|).
+    double minTripDuration(double speed) const;
+
+    /// @brief Dive-profile travel time over the mission's field (null when dive profiles are off).
+    std::shared_ptr<const DiveProfileTravelTime> diveProfiles(double speed) const;
+
+private:
+    void buildField();
+    void buildBox();
+    void buildRegions();
+    Point2 localPoint(const PointSpec &p, const std::string &what) const;
+    std::vector<Point2> ring(const std::vector<std::pair<double, double>> &pts, bool geographic,
+                             const std::string &what) const;
+
+    MissionSpec spec_;
+    std::shared_ptr<const CurrentField> field_;
+    std::shared_ptr<const Environment> environment_;
+    std::shared_ptr<const LocalProjection> projection_;
+    double projectionScale_{1.0};  // metres per planning unit
+    std::vector<MissionPolygon> polygons_;
+    Region box_;
+    Point2 start_, goal_;
+};
+
+/// @brief The GliderProblem of the built-in Gulf Stream mission (defaultGulfStreamMission()) departing at 0, for
+/// tests and benchmarks that use the OMPL layer directly.
+GliderProblem gulfStreamProblem();
+
+/// @brief The NetCDF load options of a `current: {type: netcdf}` block: variable names (lon/lat, else x/y),
+/// interpolation schemes, horizon policy and field name. The caller adds the region, depth range and projection.
+/// Shared by MissionProblem and the forecast mission of the command line so that both read the file the same way.
+/// @throws Error for an unknown interpolation scheme.
+NetCdfCurrentOptions netCdfCurrentOptions(const CurrentSpec &current);
+}  // namespace ompl_glider

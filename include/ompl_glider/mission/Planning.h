@@ -1,0 +1,162 @@
+#pragma once
+/// @file Planning.h
+/// @brief The one planning pipeline. Every way in (the built-in Gulf Stream problem, a NetCDF forecast from the
+/// command line, a mission file, the library API) builds a MissionProblem and calls runMission(), which finds the
+/// departure (a fixed time, or the optimal one in a window, [EichhornRAS] Sec. 5), calls planRoute() (the planner
+/// through OMPL's SimpleSetup, then smoothing and refinement) and evaluates the result (straight line, dive
+/// profiles per leg, the optimal-control reference, the speed sweep). The result is one MissionResult, written by
+/// the output layer (output/OutputWriter.h).
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/Progress.h"
+#include "ompl_glider/cost/DiveProfile.h"
+#include "ompl_glider/mission/DepartureTimeSearch.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/planners/TveSearch.h"
+
+namespace ompl_glider
+{
+/// @brief Overrides of the mission's planner settings for one plan (NaN / 0 / unset: the mission's value).
+struct PlanOptions
+{
+    double speed{std::numeric_limits<double>::quiet_NaN()};  ///< vehicle speed
+    double gridSize{0.0};                                    ///< lattice spacing
+    int sectors{0};                                          ///< lattice sectors
+    std::optional<bool> smoothing;                           ///< smoothing ([EichhornRAS] Table 3)
+    std::optional<bool> refinement;                          ///< waypoint refinement
+};
+
+/// @brief One planned path: what planRoute() returns.
+struct PlannedPath
+{
+    bool solved{false};       ///< an exact path to the goal was found
+    std::string status;       ///< OMPL's planner status ("Exact solution", "Timeout", "Invalid start", ...)
+    std::string reason;       ///< why there is no path (empty when solved)
+    std::string planner;      ///< canonical planner name (PlannerRegistry.h)
+    double departure{0.0};    ///< departure time (field units)
+    double speed{0.0};        ///< vehicle speed used
+    std::vector<TimedWaypoint> raw;       ///< the planner's path (its own times)
+    std::vector<TimedWaypoint> smoothed;  ///< after smoothing (== raw when smoothing is off)
+    std::vector<TimedWaypoint> path;      ///< the final path (after refinement when it is on)
+    double rawTravelTime{std::numeric_limits<double>::infinity()};       ///< raw path arrival - departure
+    double smoothedTravelTime{std::numeric_limits<double>::infinity()};  ///< smoothed path arrival - departure
+    double travelTime{std::numeric_limits<double>::infinity()};          ///< final path arrival - departure
+    double rawPathLength{0.0};  ///< raw path length
+    double pathLength{0.0};     ///< final path length
+    double straightLineTime{std::numeric_limits<double>::infinity()};  ///< direct leg (+inf: impassable)
+    double straightLineLength{0.0};                                   ///< start-goal distance
+    std::uint64_t searchCostFunctionCalls{0};       ///< CFC of the planner ([EichhornRAS] Table 4)
+    std::uint64_t postprocessCostFunctionCalls{0};  ///< CFC of smoothing and refinement
+    std::uint64_t currentModelCalls{0};             ///< CMC of the planner ([EichhornRAS] Table 4)
+    std::uint64_t expandedVertices{0};              ///< lattice vertices expanded (lattice planners)
+    double planningSeconds{0.0};     ///< planner wall time
+    double postprocessSeconds{0.0};  ///< smoothing + refinement wall time
+    bool pathChecked{false};         ///< the final OMPL path passed PathGeometric::check()
+
+    /// @brief CFC of planner and post-processing together.
+    std::uint64_t totalCostFunctionCalls() const
+    {
+        return searchCostFunctionCalls + postprocessCostFunctionCalls;
+    }
+};
+
+/// @brief A waypoint as written for the pilot.
+struct MissionWaypoint
+{
+    Point2 position;                  ///< planning frame
+    bool geographic{false};           ///< lon/lat known
+    LonLat lonLat;                    ///< degrees (longitude in -180..180)
+    double time{0.0};                 ///< arrival (field units), with the dive profiles when they are enabled
+    std::string iso;                  ///< arrival as ISO 8601 UTC when the mission has a calendar, else empty
+    int profile{-1};                  ///< dive profile index of the leg that reaches this waypoint (-1: none)
+    DiveProfile dive;                 ///< that profile (climb-to / dive-to depths)
+    double legTime{0.0};              ///< travel time of the leg that reaches it
+};
+
+/// @brief One row of the speed sweep ([GarauDive] Table VI).
+struct SpeedSweepRow
+{
+    double speed{0.0};               ///< vehicle speed
+    bool solved{false};              ///< path found
+    double travelTime{std::numeric_limits<double>::infinity()};        ///< path travel time
+    double pathLength{0.0};          ///< path length
+    double straightLineTime{std::numeric_limits<double>::infinity()};  ///< direct leg (+inf: impassable)
+    double straightLineLength{0.0};  ///< direct distance
+};
+
+/// @brief The optimal-control reference (Zermelo's problem solved by shooting, ZermeloReference): open water only,
+/// forbidden regions are ignored.
+struct OptimumReference
+{
+    bool found{false};                                           ///< an extremal through the goal was found
+    double travelTime{std::numeric_limits<double>::infinity()};  ///< its travel time
+    std::vector<TimedWaypoint> path;                             ///< samples of the optimal trajectory
+};
+
+/// @brief How runMission() runs.
+struct RunOptions
+{
+    std::optional<std::vector<double>> speeds;  ///< speed sweep (overrides the mission's `speeds`)
+    bool optimum{false};                        ///< also solve the optimal-control reference
+    ProgressSink progress;                      ///< progress lines (departure search, speed sweep)
+};
+
+/// @brief Everything a run produced: the one result type of the pipeline.
+struct MissionResult
+{
+    MissionSpec spec;                       ///< the mission
+    PlannedPath plan;                       ///< the path at the chosen departure
+    std::vector<MissionWaypoint> waypoints; ///< final path for the pilot (start first; empty without a path)
+    bool diveProfiles{false};               ///< dive profiles evaluated
+    std::vector<DiveProfile> profileSet;    ///< the generated profile set ([GarauDive] Sec. III.B)
+    double diveTravelTime{std::numeric_limits<double>::infinity()};  ///< travel time flying the chosen profiles
+    std::optional<DepartureSearchResult> departureSearch;  ///< when a window was given
+    std::optional<OptimumReference> optimum;               ///< when asked (RunOptions::optimum)
+    std::vector<SpeedSweepRow> speedSweep;  ///< speed sweep rows
+    double wallSeconds{0.0};                ///< whole run
+};
+
+/// @brief Plans from the start at @p departure: makeSimpleSetup(), the planner named by planner.name (from the
+/// registry, with the mission's planner.parameters set through OMPL's ParamSet), solve within planner.time_limit,
+/// then smoothing (PathSmoother, [EichhornRAS] Table 3) and refinement (WaypointRefiner) as asked, and the
+/// straight-line time for comparison. No path is an outcome (solved false, status and reason say why), not an
+/// exception. Thread-safe for concurrent calls on one problem.
+/// @throws Error for an unknown planner or parameter, or a bad problem (see makeGliderContext()).
+PlannedPath planRoute(const MissionProblem &problem, double departure, const PlanOptions &options = {});
+
+/// @brief Travel time of a full planner run against departure time ([EichhornRAS] Sec. 5), for the departure
+/// search: thread-safe, +inf when no path. @p gridSize / @p sectors 0: the planner's.
+TravelTimeOfDeparture departureFunction(const MissionProblem &problem, double gridSize = 0.0, int sectors = 0);
+
+/// @brief The speed sweep ([GarauDive] Table VI): planRoute() at every speed from the departure tDep.
+std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep, const std::vector<double> &speeds,
+                                      const ProgressSink &progress = {});
+
+/// @brief Waypoints for the pilot and the travel time flying them.
+struct PilotWaypoints
+{
+    std::vector<MissionWaypoint> waypoints;  ///< start first
+    /// Travel time with the chosen dive profiles (+inf when a leg is impassable with every profile); the 2-D travel
+    /// time when dive profiles are off.
+    double travelTime{std::numeric_limits<double>::infinity()};
+};
+
+/// @brief Waypoints for the pilot from a planned path: geographic coordinates, ISO times and, with dive profiles
+/// ([GarauDive] Sec. III), the profile chosen for each leg (evaluated in parallel) and the arrival times flying it.
+PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath &plan);
+
+/// @brief The optimal-control reference from the start at @p departure (shooting; no forbidden regions).
+OptimumReference optimumReference(const MissionProblem &problem, double departure, double speed,
+                                  double maxTravelTime);
+
+/// @brief The pipeline: departure (fixed or searched in the window), planRoute(), pilot waypoints with dive
+/// profiles, the optimal-control reference when asked, the speed sweep. Writes nothing (see writeOutputs()).
+/// A mission without a path is an outcome (plan.solved false), not an exception.
+/// @throws Error for configuration errors.
+MissionResult runMission(const MissionProblem &problem, const RunOptions &options = {});
+}  // namespace ompl_glider

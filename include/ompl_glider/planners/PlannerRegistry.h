@@ -1,0 +1,42 @@
+#pragma once
+/// @file PlannerRegistry.h
+/// @brief The planners known by name: one list used by the command line, mission files, the Benchmark campaign
+/// and the documentation. Adding a planner is one entry here (see docs/ARCHITECTURE.md).
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ompl/base/Planner.h>
+
+#include "ompl_glider/ompl/GliderContext.h"
+
+namespace ompl_glider
+{
+/// @brief One planner that can be asked for by name.
+struct PlannerEntry
+{
+    std::string name;                  ///< canonical name, also the OMPL planner name (e.g. "ZA*TVE", "RRTstar")
+    std::vector<std::string> aliases;  ///< other accepted spellings (matched without regard to case)
+    std::string description;           ///< one line for --help and the docs
+    bool lattice{false};               ///< a ZAStarTVE configuration (grid_size / sectors apply)
+    /// Makes the planner on the problem's space information; ctx is the problem's context.
+    std::function<ompl::base::PlannerPtr(const ompl::base::SpaceInformationPtr &,
+                                         const std::shared_ptr<const GliderContext> &)>
+        make;
+};
+
+/// @brief Every registered planner, in the order of the documentation: the ZAStarTVE configurations TVE, A*TVE,
+/// ZTVE, ZA*TVE ([EichhornRAS] Sec. 2.2), then OMPL's geometric planners on the time-augmented space.
+const std::vector<PlannerEntry> &plannerRegistry();
+
+/// @brief The entry whose name or alias equals @p name (case-insensitive); null when there is none.
+const PlannerEntry *findPlanner(const std::string &name);
+
+/// @brief As findPlanner(). @throws Error "unknown planner 'X' (expected one of ...)" when there is none.
+const PlannerEntry &plannerEntry(const std::string &name);
+
+/// @brief The canonical names joined by @p separator (for messages and --help).
+std::string plannerNameList(const std::string &separator = ", ");
+}  // namespace ompl_glider

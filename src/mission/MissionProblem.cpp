@@ -1,0 +1,351 @@
+#include "ompl_glider/mission/MissionProblem.h"
+
+#include <cmath>
+#include <tuple>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/current/Interpolation.h"
+#include "ompl_glider/current/LocalProjection.h"
+#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/environment/ForbiddenRegions.h"
+#include "ompl_glider/environment/IceZone.h"
+#include "ompl_glider/environment/StaticRegion.h"
+#include "ompl_glider/environment/TimeWindowedZone.h"
+#include "ompl_glider/mission/IsoTime.h"
+#include "ompl_glider/mission/NetCdfBathymetry.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string where(const MissionSpec &m, const SourceMark &mark = {})
+{
+    if (!mark.file.empty() && mark.line > 0)
+        return mark.file + ":" + std::to_string(mark.line) + ": ";
+    return m.file + ": ";
+}
+}  // namespace
+
+NetCdfCurrentOptions netCdfCurrentOptions(const CurrentSpec &c)
+{
+    NetCdfCurrentOptions o;
+    auto var = [&](const char *role) {
+        const auto it = c.variables.find(role);
+        return it == c.variables.end() ? std::string() : it->second;
+    };
+    o.uName = var("u");
+    o.vName = var("v");
+    o.lonName = !var("lon").empty() ? var("lon") : var("x");
+    o.latName = !var("lat").empty() ? var("lat") : var("y");
+    o.depthName = var("depth");
+    o.timeName = var("time");
+    o.field.xy = parseInterp2D(c.xyInterpolation);
+    o.field.depth = parseInterp1D(c.depthInterpolation);
+    o.field.time = parseInterp1D(c.timeInterpolation);
+    o.field.beyond = c.horizonPolicy == "hold_last" ? BeyondForecast::HoldLast : BeyondForecast::Refuse;
+    o.field.name = "netcdf:" + c.file;
+    return o;
+}
+
+GliderProblem gulfStreamProblem()
+{
+    const MissionSpec m = defaultGulfStreamMission();
+    return MissionProblem(m).gliderProblem(m.departure.time, m.vehicle.speed);
+}
+
+MissionProblem::~MissionProblem() = default;
+
+MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
+{
+    buildField();
+    start_ = localPoint(spec_.start, "start");
+    goal_ = localPoint(spec_.goal, "goal");
+    buildBox();
+    buildRegions();
+}
+
+void MissionProblem::buildField()
+{
+    const MissionSpec &m = spec_;
+    const CurrentFieldKind *kind = findCurrentFieldKind(m.current.type);
+    if (!kind)
+        throw Error(where(m, m.current.mark) + "field 'current.type': unknown '" + m.current.type +
+                    "' (expected one of " + currentFieldKindList() + ")");
+    if (!kind->gridded)
+    {
+        field_ = makeAnalyticField(m.current.type, m.current.parameters);
+        if (m.projection.set)
+            projection_ = std::make_shared<LocalProjection>(m.projection.lon0, m.projection.lat0);
+        projectionScale_ = m.lengthUnitMetres;
+        return;
+    }
+    NetCdfCurrentOptions o = netCdfCurrentOptions(m.current);
+    if (m.region.set && m.region.geographic)
+    {
+        o.lonMin = m.region.lonMin;
+        o.lonMax = m.region.lonMax;
+        o.latMin = m.region.latMin;
+        o.latMax = m.region.latMax;
+    }
+    o.maxDepth = m.dive.enabled ? m.dive.params.zMax : m.vehicle.depth;
+    if (m.projection.set)
+    {
+        o.refLon = m.projection.lon0;
+        o.refLat = m.projection.lat0;
+    }
+    NetCdfCurrents nc = loadNetCdfCurrents(m.current.file, o);
+    field_ = nc.field;
+    projection_ = nc.projection;
+    projectionScale_ = 1.0;
+}
+
+Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) const
+{
+    if (!p.geographic)
+        return {p.x, p.y};
+    if (!projection_)
+        throw Error(where(spec_) + what + ": lon/lat given but the forecast has no geographic coordinates");
+    return toLocal({p.lon, p.lat});
+}
+
+void MissionProblem::buildBox()
+{
+    const MissionSpec &m = spec_;
+    if (m.region.set && !m.region.geographic)
+    {
+        box_.xMin = m.region.xMin;
+        box_.xMax = m.region.xMax;
+        box_.yMin = m.region.yMin;
+        box_.yMax = m.region.yMax;
+    }
+    else if (m.region.set)
+    {
+        // The projected bounding box of the region's outline (sampled along its four edges).
+        box_.xMin = box_.yMin = kInf;
+        box_.xMax = box_.yMax = -kInf;
+        for (int i = 0; i <= 8; ++i)
+            for (int j = 0; j <= 8; ++j)
+            {
+                if (i != 0 && i != 8 && j != 0 && j != 8)
+                    continue;
+                const Point2 q = toLocal({m.region.lonMin + (m.region.lonMax - m.region.lonMin) * i / 8.0,
+                                          m.region.latMin + (m.region.latMax - m.region.latMin) * j / 8.0});
+                box_.xMin = std::min(box_.xMin, q.x);
+                box_.xMax = std::max(box_.xMax, q.x);
+                box_.yMin = std::min(box_.yMin, q.y);
+                box_.yMax = std::max(box_.yMax, q.y);
+            }
+    }
+    else if (auto g = std::dynamic_pointer_cast<const GriddedCurrentField>(field_))
+    {
+        const Region e = g->extent();
+        box_.xMin = e.xMin;
+        box_.xMax = e.xMax;
+        box_.yMin = e.yMin;
+        box_.yMax = e.yMax;
+    }
+    else
+        throw Error(where(m) + "field 'region': missing");
+    box_.tMin = field_->timeBegin();
+    box_.tMax = field_->timeEnd();
+    box_.zMin = 0.0;
+    box_.zMax = m.dive.enabled ? m.dive.params.zMax : m.vehicle.depth;
+    for (const auto &[name, p] : {std::pair<const char *, Point2>{"start", start_}, {"goal", goal_}})
+        if (!(p.x >= box_.xMin && p.x <= box_.xMax && p.y >= box_.yMin && p.y <= box_.yMax))
+            throw Error(where(m) + "field '" + name + "': lies outside the planning region (x " +
+                        std::to_string(box_.xMin) + ".." + std::to_string(box_.xMax) + ", y " +
+                        std::to_string(box_.yMin) + ".." + std::to_string(box_.yMax) + ")");
+}
+
+std::vector<Point2> MissionProblem::ring(const std::vector<std::pair<double, double>> &pts, bool geographic,
+                                         const std::string &what) const
+{
+    std::vector<Point2> out;
+    for (const auto &[a, b] : pts)
+    {
+        PointSpec p;
+        p.geographic = geographic;
+        p.x = p.lon = a;
+        p.y = p.lat = b;
+        out.push_back(localPoint(p, what));
+    }
+    return out;
+}
+
+void MissionProblem::buildRegions()
+{
+    const MissionSpec &m = spec_;
+    auto polygon = [&](const PolygonSpec &p, const std::string &kind) {
+        try
+        {
+            std::vector<std::vector<Point2>> holes;
+            for (const auto &h : p.holes)
+                holes.push_back(ring(h, p.geographic, p.name));
+            std::vector<Point2> outer = ring(p.points, p.geographic, p.name);
+            polygons_.push_back({p.name, kind, outer});
+            return Polygon(outer, holes, p.name);
+        }
+        catch (const Error &e)
+        {
+            throw Error(where(m, p.mark) + "forbidden region '" + p.name + "': " + e.what());
+        }
+    };
+    auto regions = std::make_shared<ForbiddenRegions>();
+    for (const auto &o : m.forbidden.obstacles)
+        regions->add(std::make_shared<StaticRegion>(o.polygon.name, polygon(o.polygon, o.kind), o.kind));
+    for (const auto &t : m.forbidden.timeWindows)
+    {
+        std::vector<Interval> w;
+        for (const auto &p : t.windows)
+            w.push_back({p.first, p.second});
+        try
+        {
+            regions->add(std::make_shared<TimeWindowedZone>(t.polygon.name, polygon(t.polygon, "closure"), w));
+        }
+        catch (const Error &e)
+        {
+            throw Error(where(m, t.polygon.mark) + e.what());
+        }
+    }
+    for (const auto &i : m.forbidden.ice)
+    {
+        Polygon shape = polygon(i.polygon, "ice");
+        try
+        {
+            if (i.carried)
+            {
+                // Advected over the mission's time span: from the earliest departure (or t_ref) to the latest
+                // departure plus five straight-line crossings of the box at the vehicle speed, within the field's time.
+                const Point2 ref = shape.outer().front();
+                const double diag = std::hypot(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
+                const double firstDep = m.departure.window ? m.departure.begin : m.departure.time;
+                const double lastDep = m.departure.window ? m.departure.end : m.departure.time;
+                double t0 = std::min(i.tRef, firstDep), t1 = std::max(i.tRef, lastDep + 5.0 * diag / m.vehicle.speed);
+                t0 = std::max(t0, field_->timeBegin());
+                t1 = std::min(t1, field_->timeEnd());
+                regions->add(std::make_shared<IceZone>(i.polygon.name, shape, i.tRef, *field_, ref, t0,
+                                                       std::max(t1, t0), i.maxSubmergedTime));
+            }
+            else
+                regions->add(
+                    std::make_shared<IceZone>(i.polygon.name, shape, i.tRef, i.vx, i.vy, i.maxSubmergedTime));
+        }
+        catch (const Error &e)
+        {
+            throw Error(where(m, i.polygon.mark) + e.what());
+        }
+    }
+    if (regions->size() > 0)
+        environment_ = regions;
+}
+
+bool MissionProblem::isGeographic() const
+{
+    return static_cast<bool>(projection_);
+}
+
+LonLat MissionProblem::toGeographic(Point2 p) const
+{
+    if (!projection_)
+        throw Error(spec_.file + ": no projection: longitudes and latitudes are unknown");
+    LonLat g;
+    projection_->inverse(p.x * projectionScale_, p.y * projectionScale_, g.lon, g.lat);
+    g.lon = std::remainder(g.lon, 360.0);  // -180..180 in every output
+    if (g.lon == 180.0)
+        g.lon = -180.0;
+    return g;
+}
+
+Point2 MissionProblem::toLocal(LonLat g) const
+{
+    if (!projection_)
+        throw Error(spec_.file + ": no projection: longitudes and latitudes cannot be used");
+    Point2 p;
+    projection_->forward(g.lon, g.lat, p.x, p.y);
+    p.x /= projectionScale_;
+    p.y /= projectionScale_;
+    return p;
+}
+
+std::string MissionProblem::isoTime(double t) const
+{
+    if (!spec_.epoch || !std::isfinite(t))
+        return "";
+    return formatIsoTime(*spec_.epoch + t * spec_.timeUnitSeconds);
+}
+
+GliderProblem MissionProblem::gliderProblem(double tDep, double speed) const
+{
+    GliderProblem p;
+    p.field = field_;
+    p.travel = spec_.travel;
+    p.travel.speed = speed;
+    p.environment = environment_;
+    p.xMin = box_.xMin;
+    p.xMax = box_.xMax;
+    p.yMin = box_.yMin;
+    p.yMax = box_.yMax;
+    p.t0 = tDep;
+    const double dist = std::hypot(goal_.x - start_.x, goal_.y - start_.y);
+    double horizon = spec_.planner.horizon;
+    if (!(horizon > 0))
+    {
+        horizon = 50.0 * (std::hypot(box_.xMax - box_.xMin, box_.yMax - box_.yMin) + dist) / speed;
+        if (std::isfinite(field_->timeEnd()))
+            horizon = std::min(horizon, field_->timeEnd() - tDep);
+    }
+    p.horizon = horizon;
+    p.startX = start_.x;
+    p.startY = start_.y;
+    p.goalX = goal_.x;
+    p.goalY = goal_.y;
+    p.goalTolerance = spec_.planner.goalTolerance >= 0
+                          ? spec_.planner.goalTolerance
+                          : 1e-6 * std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
+    return p;
+}
+
+double MissionProblem::minTripDuration(double speed) const
+{
+    Region r = box_;
+    return std::hypot(goal_.x - start_.x, goal_.y - start_.y) / (speed + field_->maxSpeed(r));
+}
+
+std::shared_ptr<const DiveProfileTravelTime> MissionProblem::diveProfiles(double speed) const
+{
+    if (!spec_.dive.enabled)
+        return nullptr;
+    std::shared_ptr<const Bathymetry> bathymetry;
+    if (spec_.dive.bathymetryType == "constant")
+    {
+        const double d = spec_.dive.bathymetryDepth;
+        bathymetry = std::make_shared<FunctionBathymetry>([d](double, double) { return d; });
+    }
+    else if (spec_.dive.bathymetryType == "netcdf")
+    {
+        std::function<void(double, double, double &, double &)> geo;
+        if (projection_)
+            geo = [this](double x, double y, double &lon, double &lat) {
+                const LonLat g = toGeographic({x, y});
+                lon = g.lon;
+                lat = g.lat;
+            };
+        try
+        {
+            bathymetry =
+                std::make_shared<NetCdfBathymetry>(spec_.dive.bathymetryFile, spec_.dive.bathymetryVariable, geo);
+        }
+        catch (const Error &e)
+        {
+            throw Error(spec_.file + ": field 'dive_profile.bathymetry': " + e.what());
+        }
+    }
+    TravelTimeParams t = spec_.travel;
+    t.speed = speed;
+    return std::make_shared<DiveProfileTravelTime>(field_, t, spec_.dive.params, bathymetry, spec_.dive.threads);
+}
+}  // namespace ompl_glider

@@ -1,0 +1,386 @@
+#include "ompl_glider/mission/Planning.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include <ompl/base/PlannerTerminationCondition.h>
+#include <ompl/geometric/PathGeometric.h>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/planners/WaypointRefiner.h"
+#include "ompl_glider/planners/ZAStarTVE.h"
+#include "ompl_glider/reference/ZermeloReference.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+/// Time limit of planners that use all the time they get (sampling planners) when the mission gives none.
+constexpr double kDefaultSamplingTimeLimit = 10.0;
+
+double secondsSince(std::chrono::steady_clock::time_point a)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
+}
+
+/// Pipeline settings that a mission gives as planner fields, not as planner parameters.
+bool pipelineParameter(const std::string &name)
+{
+    return name == "refiner_max_evaluations";
+}
+
+std::string parameterPlace(const MissionSpec &m, const std::string &name)
+{
+    const auto it = m.planner.parameterMarks.find(name);
+    const SourceMark mark = it != m.planner.parameterMarks.end() ? it->second : SourceMark{m.file, 0};
+    return (mark.line > 0 ? mark.file + ":" + std::to_string(mark.line) : mark.file) + ": field 'planner.parameters." +
+           name + "'";
+}
+
+/// Sets the mission's planner parameters through OMPL's ParamSet (the names of declareParam).
+void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
+{
+    ompl::base::ParamSet &params = planner.params();
+    for (const auto &[name, value] : m.planner.parameters)
+    {
+        if (name == "grid_size" || name == "sectors" || name == "smooth" || name == "refine")
+            throw Error(parameterPlace(m, name) + ": set it as planner." +
+                        (name == "smooth" ? std::string("smoothing") :
+                         name == "refine" ? std::string("refinement") : name) +
+                        ", which every planner of the pipeline honours");
+        if (params.hasParam(name))
+        {
+            if (!params.setParam(name, value))
+                throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " rejects the value '" +
+                            value + "' (range " + params[name].getRangeSuggestion() + ")");
+        }
+        else if (!pipelineParameter(name))
+        {
+            std::vector<std::string> names;
+            params.getParamNames(names);
+            std::string list;
+            for (const std::string &n : names)
+                if (n != "grid_size" && n != "sectors" && n != "smooth" && n != "refine")
+                    list += (list.empty() ? "" : ", ") + n;
+            throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " has no parameter '" + name +
+                        "' (it has: " + (list.empty() ? std::string("none") : list) + ")");
+        }
+    }
+}
+
+RefinerParams refinerParams(const MissionSpec &m)
+{
+    RefinerParams rp;
+    const auto it = m.planner.parameters.find("refiner_max_evaluations");
+    if (it != m.planner.parameters.end())
+    {
+        char *end = nullptr;
+        const double v = std::strtod(it->second.c_str(), &end);
+        if (end == it->second.c_str() || *end != '\0' || !(v >= 1.0 && v <= 1e8) || v != std::floor(v))
+            throw Error(parameterPlace(m, it->first) + ": expected an integer in 1..100000000, got '" + it->second +
+                        "'");
+        rp.maxEvaluations = static_cast<unsigned>(v);
+    }
+    return rp;
+}
+
+/// The configured planner of the mission on the setup's space information.
+ompl::base::PlannerPtr makePlanner(const MissionSpec &m, const ompl::base::SpaceInformationPtr &si,
+                                   const std::shared_ptr<const GliderContext> &ctx, double grid, int sectors)
+{
+    const PlannerEntry &entry = plannerEntry(m.planner.name);
+    ompl::base::PlannerPtr planner = entry.make(si, ctx);
+    if (auto z = std::dynamic_pointer_cast<ZAStarTVE>(planner))
+    {
+        z->setGridSize(grid);
+        z->setSectors(static_cast<unsigned>(sectors));
+        z->setSmooth(false);  // the pipeline smooths and refines every planner's path alike
+        z->setRefine(false);
+    }
+    applyParameters(m, *planner);
+    return planner;
+}
+
+std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::Planner &planner,
+                         const GliderSimpleSetup *setup, double timeLimit)
+{
+    if (setup && !setup->lastCheckMessage().empty())
+        return setup->lastCheckMessage();
+    if (const auto *z = dynamic_cast<const ZAStarTVE *>(&planner))
+    {
+        const TveResult &r = z->lastResult();
+        switch (r.outcome)
+        {
+            case TveOutcome::InvalidStart:
+                return "invalid start: " + r.message;
+            case TveOutcome::InvalidGoal:
+                return "invalid goal: " + r.message;
+            case TveOutcome::Exhausted:
+                return "no path exists on this lattice (" + std::to_string(r.expansions) +
+                       " vertices expanded; a finer grid, more sectors or a higher speed may find one)";
+            case TveOutcome::Terminated:
+                return "the time limit (" + std::to_string(timeLimit) + " s) ended the search: raise it";
+            default:
+                break;
+        }
+    }
+    if (status == ompl::base::PlannerStatus::APPROXIMATE_SOLUTION)
+        return "the planner reached only an approximate solution within the time limit";
+    if (status == ompl::base::PlannerStatus::TIMEOUT)
+        return "the planner found no path within the time limit";
+    return std::string("planner status: ") + status.asString();
+}
+}  // namespace
+
+PlannedPath planRoute(const MissionProblem &problem, double departure, const PlanOptions &o)
+{
+    const MissionSpec &m = problem.getSpec();
+    PlannedPath r;
+    r.departure = departure;
+    r.speed = std::isnan(o.speed) ? m.vehicle.speed : o.speed;
+    r.planner = plannerEntry(m.planner.name).name;
+    const double grid = o.gridSize > 0 ? o.gridSize : m.planner.gridSize;
+    const int sectors = o.sectors > 0 ? o.sectors : m.planner.sectors;
+    const bool smoothing = o.smoothing.value_or(m.planner.smoothing);
+    const bool refinement = o.refinement.value_or(m.planner.refinement);
+    const Point2 s = problem.getStart(), g = problem.getGoal();
+    r.straightLineLength = std::hypot(g.x - s.x, g.y - s.y);
+    const GliderProblem gp = problem.gliderProblem(departure, r.speed);
+    if (!(gp.horizon > 0))
+    {
+        r.status = "Invalid start";
+        r.reason = "departure after the end of the forecast";
+        return r;
+    }
+    std::shared_ptr<GliderContext> ctx;
+    const ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(gp, &ctx);
+    const ompl::base::PlannerPtr planner = makePlanner(m, ss->getSpaceInformation(), ctx, grid, sectors);
+    ss->setPlanner(planner);
+    r.straightLineTime = legTravelTime(*ctx, s.x, s.y, g.x, g.y, departure);
+
+    const bool lattice = plannerEntry(m.planner.name).lattice;
+    const double limit = m.planner.timeLimit > 0 ? m.planner.timeLimit : (lattice ? 0.0 : kDefaultSamplingTimeLimit);
+    const std::uint64_t cfc0 = ctx->travel->costFunctionCalls(), cmc0 = ctx->field->callCount();
+    const auto tA = std::chrono::steady_clock::now();
+    const ompl::base::PlannerStatus status =
+        ss->solve(limit > 0 ? ompl::base::timedPlannerTerminationCondition(limit)
+                            : ompl::base::plannerNonTerminatingCondition());
+    r.planningSeconds = secondsSince(tA);
+    r.status = status.asString();
+    r.searchCostFunctionCalls = ctx->travel->costFunctionCalls() - cfc0;
+    r.currentModelCalls = ctx->field->callCount() - cmc0;
+    if (auto z = std::dynamic_pointer_cast<ZAStarTVE>(planner))
+        r.expandedVertices = z->getExpandedVertices();
+    r.solved = ss->haveExactSolutionPath();
+    if (!r.solved)
+    {
+        r.reason = noPathReason(status, *planner, dynamic_cast<const GliderSimpleSetup *>(ss.get()), limit);
+        return r;
+    }
+    ompl::geometric::PathGeometric path = ss->getSolutionPath();
+    r.raw = waypointsFromPath(path);
+    r.rawTravelTime = r.raw.back().t - departure;
+    r.rawPathLength = pathLength(r.raw);
+
+    const std::uint64_t cfc1 = ctx->travel->costFunctionCalls();
+    const auto tC = std::chrono::steady_clock::now();
+    if (smoothing)
+        PathSmoother(ctx).smooth(path);
+    r.smoothed = waypointsFromPath(path);
+    if (refinement)
+        WaypointRefiner(ctx, refinerParams(m)).refine(path);
+    r.path = waypointsFromPath(path);
+    r.postprocessSeconds = secondsSince(tC);
+    r.postprocessCostFunctionCalls = ctx->travel->costFunctionCalls() - cfc1;
+    r.smoothedTravelTime = r.smoothed.back().t - departure;
+    r.travelTime = r.path.back().t - departure;
+    r.pathLength = pathLength(r.path);
+    r.pathChecked = path.check();
+    return r;
+}
+
+TravelTimeOfDeparture departureFunction(const MissionProblem &problem, double gridSize, int sectors)
+{
+    return [&problem, gridSize, sectors](double tDep) {
+        PlanOptions o;
+        o.gridSize = gridSize;
+        o.sectors = sectors;
+        o.smoothing = false;
+        o.refinement = false;
+        try
+        {
+            const PlannedPath p = planRoute(problem, tDep, o);
+            return p.solved ? p.rawTravelTime : kInf;
+        }
+        catch (const Error &)
+        {
+            return kInf;  // e.g. a departure outside the forecast: no trip from there
+        }
+    };
+}
+
+std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep, const std::vector<double> &speeds,
+                                      const ProgressSink &progress)
+{
+    std::vector<SpeedSweepRow> rows;
+    for (std::size_t i = 0; i < speeds.size(); ++i)
+    {
+        if (progress)
+        {
+            char line[96];
+            std::snprintf(line, sizeof line, "speed sweep: %zu/%zu (V = %g)", i + 1, speeds.size(), speeds[i]);
+            progress(line, i + 1 == speeds.size());
+        }
+        PlanOptions o;
+        o.speed = speeds[i];
+        const PlannedPath p = planRoute(problem, tDep, o);
+        rows.push_back({speeds[i], p.solved, p.travelTime, p.pathLength, p.straightLineTime, p.straightLineLength});
+    }
+    return rows;
+}
+
+PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath &plan)
+{
+    PilotWaypoints out;
+    const auto dive = problem.diveProfiles(plan.speed);
+    double t = plan.departure;
+    for (std::size_t i = 0; i < plan.path.size(); ++i)
+    {
+        MissionWaypoint w;
+        w.position = {plan.path[i].x, plan.path[i].y};
+        if (problem.isGeographic())
+        {
+            w.geographic = true;
+            w.lonLat = problem.toGeographic(w.position);
+        }
+        if (i == 0)
+            w.time = plan.departure;
+        else if (dive)
+        {
+            const DiveLegResult leg =
+                dive->bestProfile(plan.path[i - 1].x, plan.path[i - 1].y, w.position.x, w.position.y, t);
+            w.profile = leg.profile;
+            if (leg.profile >= 0)
+                w.dive = dive->profiles()[leg.profile];
+            w.legTime = leg.travelTime;
+            t += leg.travelTime;
+            w.time = t;
+        }
+        else
+        {
+            w.time = plan.path[i].t;
+            w.legTime = plan.path[i].t - plan.path[i - 1].t;
+        }
+        w.iso = problem.isoTime(w.time);
+        out.waypoints.push_back(w);
+    }
+    out.travelTime = out.waypoints.empty() ? kInf : out.waypoints.back().time - plan.departure;
+    return out;
+}
+
+OptimumReference optimumReference(const MissionProblem &problem, double departure, double speed,
+                                  double maxTravelTime)
+{
+    ZermeloParams zp;
+    zp.speed = speed;
+    zp.depth = problem.getSpec().vehicle.depth;
+    zp.maxTime = maxTravelTime;
+    const ZermeloReference ref(problem.getField(), zp);
+    const Point2 s = problem.getStart(), g = problem.getGoal();
+    const ZermeloSolution sol = ref.solve(s.x, s.y, g.x, g.y, departure);
+    OptimumReference out;
+    out.found = sol.found;
+    if (!sol.found)
+        return out;
+    out.travelTime = sol.travelTime;
+    for (const ZermeloState &z : ref.trajectory(s.x, s.y, sol.initialHeading, departure, sol.travelTime))
+        out.path.push_back({z.x, z.y, z.t});
+    return out;
+}
+
+namespace
+{
+/// Finds the planner and sets its parameters once before any search, so that a bad name or parameter is an
+/// error naming the mission file, not a failed search.
+void checkPlanner(const MissionProblem &problem, double departure)
+{
+    const MissionSpec &m = problem.getSpec();
+    const GliderProblem gp = problem.gliderProblem(departure, m.vehicle.speed);
+    if (!(gp.horizon > 0))
+        return;
+    std::shared_ptr<GliderContext> ctx;
+    const ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(gp, &ctx);
+    makePlanner(m, ss->getSpaceInformation(), ctx, m.planner.gridSize, m.planner.sectors);
+    refinerParams(m);
+}
+
+double chooseDeparture(const MissionProblem &problem, const RunOptions &options, MissionResult &result)
+{
+    const MissionSpec &m = problem.getSpec();
+    if (!m.departure.window)
+        return m.departure.time;
+    DepartureSearchParams p;
+    p.windowBegin = m.departure.begin;
+    p.windowEnd = m.departure.end;
+    p.spacing = m.departure.spacing;
+    p.tolerance = m.departure.tolerance;
+    p.horizon = problem.getField()->timeEnd();
+    p.minTripDuration = problem.minTripDuration(m.vehicle.speed);
+    p.threads = m.departure.threads;
+    p.progress = options.progress;
+    const TravelTimeOfDeparture fine = departureFunction(problem);
+    TravelTimeOfDeparture coarse;
+    if (m.departure.coarseGridSize > 0)
+        coarse = departureFunction(problem, m.departure.coarseGridSize, m.departure.coarseSectors);
+    result.departureSearch = optimalDepartureTime(fine, p, coarse);
+    return result.departureSearch->found ? result.departureSearch->departure : m.departure.begin;
+}
+}  // namespace
+
+MissionResult runMission(const MissionProblem &problem, const RunOptions &options)
+{
+    const auto start = std::chrono::steady_clock::now();
+    MissionResult result;
+    result.spec = problem.getSpec();
+    const MissionSpec &m = result.spec;
+    checkPlanner(problem, m.departure.window ? m.departure.begin : m.departure.time);
+    const double tDep = chooseDeparture(problem, options, result);
+    if (result.departureSearch && !result.departureSearch->found)
+    {
+        result.plan.departure = m.departure.begin;
+        result.plan.speed = m.vehicle.speed;
+        result.plan.planner = plannerEntry(m.planner.name).name;
+        result.plan.status = "Timeout";
+        result.plan.reason = "no departure in the window has a path within the forecast";
+        result.wallSeconds = secondsSince(start);
+        return result;
+    }
+    result.plan = planRoute(problem, tDep);
+    if (result.plan.solved)
+    {
+        PilotWaypoints w = missionWaypoints(problem, result.plan);
+        result.waypoints = std::move(w.waypoints);
+        result.diveProfiles = m.dive.enabled;
+        if (m.dive.enabled)
+            result.profileSet = makeDiveProfiles(m.dive.params);
+        result.diveTravelTime = w.travelTime;
+    }
+    if (options.optimum)
+    {
+        // Any flown path bounds the optimum; without one, the planning horizon does.
+        const double horizon = problem.gliderProblem(tDep, result.plan.speed).horizon;
+        result.optimum = optimumReference(problem, tDep, result.plan.speed,
+                                          result.plan.solved ? std::min(horizon, 1.2 * result.plan.travelTime)
+                                                             : horizon);
+    }
+    const std::vector<double> speeds = options.speeds ? *options.speeds : m.speeds;
+    if (!speeds.empty())
+        result.speedSweep = speedSweep(problem, tDep, speeds, options.progress);
+    result.wallSeconds = secondsSince(start);
+    return result;
+}
+}  // namespace ompl_glider

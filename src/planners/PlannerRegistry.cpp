@@ -1,0 +1,107 @@
+#include "ompl_glider/planners/PlannerRegistry.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
+#include <ompl/geometric/planners/prm/PRM.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
+#include <ompl/geometric/planners/rrt/LBTRRT.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTsharp.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+#include <ompl/geometric/planners/sst/SST.h>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/planners/ZAStarTVE.h"
+
+namespace ompl_glider
+{
+namespace
+{
+std::string lower(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+}
+
+PlannerEntry lattice(const std::string &name, std::vector<std::string> aliases, const std::string &what)
+{
+    PlannerEntry e;
+    e.name = name;
+    e.aliases = std::move(aliases);
+    e.description = what;
+    e.lattice = true;
+    e.make = [name](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &ctx) {
+        return std::make_shared<ZAStarTVE>(si, ctx, name);
+    };
+    return e;
+}
+
+template <class P>
+PlannerEntry sampling(const std::string &name, std::vector<std::string> aliases, const std::string &what)
+{
+    PlannerEntry e;
+    e.name = name;
+    e.aliases = std::move(aliases);
+    e.description = what;
+    e.make = [](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &) {
+        return std::make_shared<P>(si);
+    };
+    return e;
+}
+}  // namespace
+
+const std::vector<PlannerEntry> &plannerRegistry()
+{
+    namespace og = ompl::geometric;
+    static const std::vector<PlannerEntry> entries = {
+        lattice("TVE", {"tve"}, "time-dependent Dijkstra on the lattice"),
+        lattice("A*TVE", {"astartve", "AStarTVE"}, "TVE with the admissible A* heuristic"),
+        lattice("ZTVE", {"ztve"}, "TVE with Zermelo pruning"),
+        lattice("ZA*TVE", {"zastartve", "ZAStarTVE"}, "TVE with A* heuristic and certified Zermelo pruning (default)"),
+        sampling<og::RRTstar>("RRTstar", {"RRT*"}, "OMPL RRT*"),
+        sampling<og::InformedRRTstar>("InformedRRTstar", {"InformedRRT*"}, "OMPL Informed RRT*"),
+        sampling<og::PRM>("PRM", {}, "OMPL PRM"),
+        sampling<og::PRMstar>("PRMstar", {"PRM*"}, "OMPL PRM*"),
+        sampling<og::RRT>("RRT", {}, "OMPL RRT"),
+        sampling<og::RRTConnect>("RRTConnect", {}, "OMPL RRT-Connect"),
+        sampling<og::RRTsharp>("RRTsharp", {"RRT#"}, "OMPL RRT#"),
+        sampling<og::LBTRRT>("LBTRRT", {}, "OMPL lower-bound tree RRT"),
+        sampling<og::BITstar>("BITstar", {"BIT*"}, "OMPL BIT*"),
+        sampling<og::SST>("SST", {}, "OMPL stable sparse RRT"),
+    };
+    return entries;
+}
+
+const PlannerEntry *findPlanner(const std::string &name)
+{
+    const std::string key = lower(name);
+    for (const PlannerEntry &e : plannerRegistry())
+    {
+        if (lower(e.name) == key)
+            return &e;
+        for (const std::string &a : e.aliases)
+            if (lower(a) == key)
+                return &e;
+    }
+    return nullptr;
+}
+
+const PlannerEntry &plannerEntry(const std::string &name)
+{
+    if (const PlannerEntry *e = findPlanner(name))
+        return *e;
+    throw Error("unknown planner '" + name + "' (expected one of " + plannerNameList() + ")");
+}
+
+std::string plannerNameList(const std::string &separator)
+{
+    std::string out;
+    for (const PlannerEntry &e : plannerRegistry())
+        out += (out.empty() ? "" : separator) + e.name;
+    return out;
+}
+}  // namespace ompl_glider
