@@ -54,9 +54,18 @@ void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
                         ", which every planner of the pipeline honours");
         if (params.hasParam(name))
         {
+            const std::string range = params[name].getRangeSuggestion();
             if (!params.setParam(name, value))
                 throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " rejects the value '" +
-                            value + "' (range " + params[name].getRangeSuggestion() + ")");
+                            value + "' (range " + range + ")");
+            // OMPL converts leniently ("1e12" becomes 1 for an integer): read the value back and refuse a change.
+            const std::string stored = params[name].getValue();
+            char *endA = nullptr, *endB = nullptr;
+            const double want = std::strtod(value.c_str(), &endA), got = std::strtod(stored.c_str(), &endB);
+            if (endA != value.c_str() && *endA == '\0' && endB != stored.c_str() &&
+                !(std::abs(want - got) <= 1e-9 * std::max(1.0, std::abs(want))))
+                throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " rejects the value '" +
+                            value + "' (it would be read as " + stored + "; range " + range + ")");
         }
         else if (!pipelineParameter(name))
         {

@@ -68,7 +68,7 @@ const std::vector<PlannerEntry> &plannerRegistry()
         sampling<og::PRMstar>("PRMstar", {"PRM*"}, "OMPL PRM*"),
         sampling<og::RRT>("RRT", {}, "OMPL RRT"),
         sampling<og::RRTConnect>("RRTConnect", {}, "OMPL RRT-Connect"),
-        sampling<og::RRTsharp>("RRTsharp", {"RRT#"}, "OMPL RRT#"),
+        sampling<og::RRTsharp>("RRT#", {"RRTsharp"}, "OMPL RRT#"),
         sampling<og::LBTRRT>("LBTRRT", {}, "OMPL lower-bound tree RRT"),
         sampling<og::BITstar>("BITstar", {"BIT*"}, "OMPL BIT*"),
         sampling<og::SST>("SST", {}, "OMPL stable sparse RRT"),

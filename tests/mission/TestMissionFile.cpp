@@ -102,7 +102,7 @@ TEST(MissionFile, MinimalMissionAndDefaults)
 {
     const MissionSpec m = parseMission(kBase, "m.yaml");
     EXPECT_EQ(m.name, "t");
-    EXPECT_EQ(m.planner.name, "zastartve");
+    EXPECT_EQ(m.planner.name, "ZA*TVE");  // the canonical name of the registry
     EXPECT_FALSE(m.departure.window);
     EXPECT_FALSE(m.dive.enabled);
     EXPECT_EQ(m.outputs.files, (std::vector<std::string>{"csv", "geojson", "summary"}));  // no projection: no goto
@@ -143,7 +143,7 @@ TEST(MissionFile, WrongTypesAndValuesNameTheFieldAndLine)
     EXPECT_HAS(msg, "1..5");
     msg = errorOf(kBase + "planner: {name: dijkstra}\n");
     EXPECT_HAS(msg, "planner.name");
-    EXPECT_HAS(msg, "zastartve");
+    EXPECT_HAS(msg, "ZA*TVE");
     msg = errorOf(kBase + "outputs: {files: [csv, kml]}\n");
     EXPECT_HAS(msg, "outputs.files[1]");
     msg = errorOf(kBase + "outputs: {files: [goto]}\n");

@@ -66,6 +66,8 @@ TEST(PlannerVsOptimum, MeanderingJetCrossings)
         auto planner = std::make_shared<ZAStarTVE>(ss->getSpaceInformation(), ctx, "ZA*TVE");
         planner->setGridSize(0.4);
         planner->setSectors(3);
+        planner->setSmooth(false);  // this test measures each stage: lattice, smoothing, refinement
+        planner->setRefine(false);
         ss->setPlanner(planner);
         const ompl::base::PlannerStatus st = ss->solve(60.0);
         ASSERT_EQ(st, ompl::base::PlannerStatus::EXACT_SOLUTION);
