@@ -238,10 +238,7 @@ MissionSpec forecastMissionOf(Flags f)
     if (f.depth)
         f.forecast.depth = *f.depth;
     MissionSpec m = forecastMission(f.forecast);
-    const double autoGrid = m.planner.gridSize;
     applySettings(f, m);
-    if (!f.gridSize)
-        m.planner.gridSize = autoGrid;
     return m;
 }
 
@@ -276,9 +273,6 @@ int run(const Flags &f)
         std::cerr << "glider_plan: " << result.plan.reason << "\n";
         return kBadInput;  // bad input: nothing is written
     }
-    if (!f.currents.empty())
-        std::cout << "Forecast:           " << f.currents << ", grid size " << spec.planner.gridSize << " m"
-                  << (f.gridSize ? "" : " (automatic)") << "\n";
     printReport(std::cout, result);
     if (write)
         for (const std::string &file : writeOutputs(result, problem))

@@ -24,18 +24,6 @@ std::string num(double v)
 }
 }  // namespace
 
-double defaultForecastGridSize(double minCellSize, double distance)
-{
-    double g = 0.5 * minCellSize;
-    if (distance > 0.0)
-        g = std::clamp(g, distance / 200.0, distance / 25.0);
-    if (!(g > 0.0) || !std::isfinite(g))
-        throw Error("cannot choose a grid size (cell size " + num(minCellSize) + ", start-goal distance " +
-                    num(distance) + "): give --grid-size");
-    const double scale = std::pow(10.0, std::floor(std::log10(g)) - 1.0);  // two significant digits
-    return std::round(g / scale) * scale;
-}
-
 namespace
 {
 std::string pointText(double a, double b)
@@ -71,23 +59,17 @@ MissionSpec forecastMission(const ForecastInput &q)
     m.current.horizonPolicy = q.horizonPolicy;
     m.current.mark.file = file;
 
-    // Load once as the mission runner will (same names, schemes, depth range, default projection) to check the
-    // request and convert the start, goal and departure.
-    NetCdfCurrentOptions o = netCdfCurrentOptions(m.current);
-    o.maxDepth = q.depth;
+    // The file's coordinates are not known yet: take start and goal as lon/lat (the trip region is the same box
+    // in x/y for a Cartesian file) and switch to x/y below when the file is Cartesian.
+    m.start.geographic = m.goal.geographic = true;
+    m.start.lon = m.start.x = q.start.x;
+    m.start.lat = m.start.y = q.start.y;
+    m.goal.lon = m.goal.x = q.goal.x;
+    m.goal.lat = m.goal.y = q.goal.y;
+    m.vehicle.depth = m.travel.depth = q.depth;
+    // Load the trip's region as the mission will (netCdfLoadOptions) to check the request and convert the departure.
+    NetCdfCurrentOptions o = netCdfLoadOptions(m);
     o.departure = q.departure;
-    // Load only the region of the trip (issue 5): the start-goal box plus half its larger side (at least 0.2
-    // degrees or units) on each side; the whole file when the trip crosses the antimeridian.
-    const double spanA = std::abs(q.goal.x - q.start.x), spanB = std::abs(q.goal.y - q.start.y);
-    const double pad = std::max(0.5 * std::max(spanA, spanB), 0.2);
-    const bool subset = spanA < 180.0;
-    if (subset)
-    {
-        o.lonMin = std::min(q.start.x, q.goal.x) - pad;
-        o.lonMax = std::max(q.start.x, q.goal.x) + pad;
-        o.latMin = std::max(std::min(q.start.y, q.goal.y) - pad, -90.0);
-        o.latMax = std::min(std::max(q.start.y, q.goal.y) + pad, 90.0);
-    }
     NetCdfCurrents nc;
     try
     {
@@ -154,44 +136,7 @@ MissionSpec forecastMission(const ForecastInput &q)
         throw Error("--departure " + (q.departure.empty() ? std::string("(default)") : q.departure) +
                     " is the last forecast time: no time is left to travel (use an earlier departure or --beyond hold)");
 
-    if (nc.geographic)
-    {
-        if (subset && o.latMax - o.latMin < 120.0)
-        {
-            // The same subset for the mission's load, clipped to the grid loaded here, and the same local frame.
-            double lo0, la0, lo1, la1, lo2, la2, lo3, la3;
-            nc.toGeographic(e.xMin, e.yMin, lo0, la0);
-            nc.toGeographic(e.xMax, e.yMax, lo1, la1);
-            nc.toGeographic(e.xMin, e.yMax, lo2, la2);
-            nc.toGeographic(e.xMax, e.yMin, lo3, la3);
-            (void)lo2;
-            (void)lo3;
-            m.region.set = m.region.geographic = true;
-            m.region.lonMin = std::max(o.lonMin, std::min(lo0, lo2));
-            m.region.lonMax = std::min(o.lonMax, std::max(lo1, lo3));
-            m.region.latMin = std::max(o.latMin, std::min(la0, la3));
-            m.region.latMax = std::min(o.latMax, std::max(la1, la2));
-            double lon0, lat0;
-            nc.toGeographic(0.0, 0.0, lon0, lat0);
-            m.projection.set = true;
-            m.projection.lon0 = lon0;
-            m.projection.lat0 = lat0;
-            if (!(m.region.lonMin < m.region.lonMax && m.region.latMin < m.region.latMax))
-                m.region.set = m.region.geographic = false;
-        }
-        m.start.geographic = m.goal.geographic = true;
-        m.start.lon = q.start.x;
-        m.start.lat = q.start.y;
-        m.goal.lon = q.goal.x;
-        m.goal.lat = q.goal.y;
-    }
-    else
-    {
-        m.start.x = q.start.x;
-        m.start.y = q.start.y;
-        m.goal.x = q.goal.x;
-        m.goal.y = q.goal.y;
-    }
+    m.start.geographic = m.goal.geographic = nc.geographic;
     if (nc.dated)
     {
         MissionSpec::FileCalendar fc;
@@ -206,7 +151,6 @@ MissionSpec forecastMission(const ForecastInput &q)
     m.travel.speed = q.speed;
     m.travel.depth = q.depth;
     m.travel.eps = 1.0;  // one second per integration step on trips of hours to days (as the example mission)
-    m.planner.gridSize = defaultForecastGridSize(g.minCellSize(), std::hypot(gx - sx, gy - sy));
     m.outputs.files = {"summary", "path", "csv", "geojson", "goto", "map"};
     m.outputs.directory.clear();
     m.outputs.gotoNumber = 10;

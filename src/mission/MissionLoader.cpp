@@ -922,6 +922,9 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         if (t["tau"])
             m.travel.tau = r.positive(t["tau"], "travel_time.tau");
     }
+    // eps is absolute in the field's time unit: 1 s for forecasts in seconds, unless given.
+    if (m.current.type == "netcdf" && !(root["travel_time"] && root["travel_time"]["eps"]))
+        m.travel.eps = 1.0;
     m.travel.speed = m.vehicle.speed;
     m.travel.depth = m.vehicle.depth;
     try

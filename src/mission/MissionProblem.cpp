@@ -1,5 +1,6 @@
 #include "ompl_glider/mission/MissionProblem.h"
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -30,8 +31,9 @@ std::string where(const MissionSpec &m, const SourceMark &mark = {})
 }
 }  // namespace
 
-NetCdfCurrentOptions netCdfCurrentOptions(const CurrentSpec &c)
+NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
 {
+    const CurrentSpec &c = m.current;
     NetCdfCurrentOptions o;
     auto var = [&](const char *role) {
         const auto it = c.variables.find(role);
@@ -48,7 +50,52 @@ NetCdfCurrentOptions netCdfCurrentOptions(const CurrentSpec &c)
     o.field.time = parseInterp1D(c.timeInterpolation);
     o.field.beyond = c.horizonPolicy == "hold_last" ? BeyondForecast::HoldLast : BeyondForecast::Refuse;
     o.field.name = "netcdf:" + c.file;
+    o.maxDepth = m.dive.enabled ? m.dive.params.zMax : m.vehicle.depth;
+    if (m.projection.set)
+    {
+        o.refLon = m.projection.lon0;
+        o.refLat = m.projection.lat0;
+    }
+    if (m.region.set && m.region.geographic)
+    {
+        o.lonMin = m.region.lonMin;
+        o.lonMax = m.region.lonMax;
+        o.latMin = m.region.latMin;
+        o.latMax = m.region.latMax;
+    }
+    else if (!m.region.set && m.start.geographic == m.goal.geographic)
+    {
+        // The trip's region, in the file's coordinates (lon/lat, or x/y of a Cartesian file).
+        const double a0 = m.start.geographic ? m.start.lon : m.start.x, b0 = m.start.geographic ? m.start.lat : m.start.y;
+        const double a1 = m.goal.geographic ? m.goal.lon : m.goal.x, b1 = m.goal.geographic ? m.goal.lat : m.goal.y;
+        const double spanA = std::abs(a1 - a0), spanB = std::abs(b1 - b0);
+        const double pad = std::max(0.5 * std::max(spanA, spanB), 0.2);
+        if (spanA < 180.0)
+        {
+            o.lonMin = std::min(a0, a1) - pad;
+            o.lonMax = std::max(a0, a1) + pad;
+            o.latMin = std::min(b0, b1) - pad;
+            o.latMax = std::max(b0, b1) + pad;
+            if (m.start.geographic)
+            {
+                o.latMin = std::max(o.latMin, -90.0);
+                o.latMax = std::min(o.latMax, 90.0);
+            }
+        }
+    }
     return o;
+}
+
+double defaultForecastGridSize(double minCellSize, double distance)
+{
+    double g = 0.5 * minCellSize;
+    if (distance > 0.0)
+        g = std::clamp(g, distance / 200.0, distance / 25.0);
+    if (!(g > 0.0) || !std::isfinite(g))
+        throw Error("cannot choose a grid size (cell size " + std::to_string(minCellSize) + ", start-goal distance " +
+                    std::to_string(distance) + "): give planner.grid_size (--grid-size)");
+    const double scale = std::pow(10.0, std::floor(std::log10(g)) - 1.0);  // two significant digits
+    return std::round(g / scale) * scale;
 }
 
 GliderProblem gulfStreamProblem()
@@ -66,6 +113,12 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     goal_ = localPoint(spec_.goal, "goal");
     buildBox();
     buildRegions();
+    if (!(spec_.planner.gridSize > 0))
+    {
+        const auto g = std::dynamic_pointer_cast<const GriddedCurrentField>(field_);
+        spec_.planner.gridSize =
+            g ? defaultForecastGridSize(g->minCellSize(), std::hypot(goal_.x - start_.x, goal_.y - start_.y)) : 0.4;
+    }
 }
 
 void MissionProblem::buildField()
@@ -83,21 +136,7 @@ void MissionProblem::buildField()
         projectionScale_ = m.lengthUnitMetres;
         return;
     }
-    NetCdfCurrentOptions o = netCdfCurrentOptions(m.current);
-    if (m.region.set && m.region.geographic)
-    {
-        o.lonMin = m.region.lonMin;
-        o.lonMax = m.region.lonMax;
-        o.latMin = m.region.latMin;
-        o.latMax = m.region.latMax;
-    }
-    o.maxDepth = m.dive.enabled ? m.dive.params.zMax : m.vehicle.depth;
-    if (m.projection.set)
-    {
-        o.refLon = m.projection.lon0;
-        o.refLat = m.projection.lat0;
-    }
-    NetCdfCurrents nc = loadNetCdfCurrents(m.current.file, o);
+    NetCdfCurrents nc = loadNetCdfCurrents(m.current.file, netCdfLoadOptions(m));
     field_ = nc.field;
     projection_ = nc.projection;
     projectionScale_ = 1.0;

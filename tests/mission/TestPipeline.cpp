@@ -305,7 +305,8 @@ TEST(Output, SummaryHasOneSchemaAndNoDuplicateKeys)
             duplicate = duplicate || !open.back().insert(parsed.get<std::string>()).second;
         return true;
     };
-    nlohmann::json::parse(in, cb);
+    const nlohmann::json parsed = nlohmann::json::parse(in, cb);
+    EXPECT_TRUE(parsed.is_object());
     EXPECT_FALSE(duplicate);
     // The summary lists exactly the files written.
     std::set<std::string> listed, written;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "ompl_glider/Geometry.h"
+#include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/MissionSpec.h"
 
 namespace ompl_glider
@@ -28,18 +29,11 @@ struct ForecastInput
     double speed{0.3};      ///< vehicle speed through water, m/s
 };
 
-/// @brief Default lattice spacing (metres) on a forecast: half the smallest grid cell, but no coarser than 1/25
-/// of the start-goal distance and no finer than 1/200 of it, rounded to two significant digits. (Half a cell
-/// resolves the interpolated field; 25 steps keep the path's shape; 200 steps bound the search on fine grids.)
-/// @throws Error when no finite size results.
-double defaultForecastGridSize(double minCellSize, double startGoalDistance);
-
-/// @brief The MissionSpec of a forecast: loads the file once to check that start and goal lie on the grid and in
-/// water, that the depth is not below the deepest layer and that the departure lies within the forecast; picks the
-/// default grid size; sets the outputs to every format. Only the trip's region is loaded (start-goal box plus half
-/// its larger side, at least 0.2 degrees, on each side; the whole file across the antimeridian); for geographic
-/// files the mission gets that region (clipped to the grid) and its local frame. The planner settings are the
-/// defaults of PlannerSpec: change them in the returned spec. Writes nothing.
+/// @brief The MissionSpec of a forecast, the same as a mission file with the same current, start, goal, departure
+/// and speed: loads the trip's region (netCdfLoadOptions()) once to check that start and goal lie on the grid and
+/// in water, that the depth is not below the deepest layer and that the departure lies within the forecast, and
+/// to convert the departure; sets the outputs to every format. The planner settings are the defaults of
+/// PlannerSpec (grid size automatic): change them in the returned spec. Writes nothing.
 /// @throws Error with a one-line message naming the input (as its command-line flag), file or variable at fault.
 MissionSpec forecastMission(const ForecastInput &input);
 }  // namespace ompl_glider

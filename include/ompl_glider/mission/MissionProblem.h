@@ -39,7 +39,7 @@ public:
     explicit MissionProblem(MissionSpec spec);
     ~MissionProblem();
 
-    /// @brief The mission.
+    /// @brief The mission, with its automatic settings resolved (planner.grid_size).
     const MissionSpec &getSpec() const
     {
         return spec_;
@@ -116,9 +116,17 @@ private:
 /// tests and benchmarks that use the OMPL layer directly.
 GliderProblem gulfStreamProblem();
 
-/// @brief The NetCDF load options of a `current: {type: netcdf}` block: variable names (lon/lat, else x/y),
-/// interpolation schemes, horizon policy and field name. The caller adds the region, depth range and projection.
-/// Shared by MissionProblem and the forecast mission of the command line so that both read the file the same way.
+/// @brief How a NetCDF mission reads its forecast: variable names (lon/lat, else x/y), interpolation schemes,
+/// horizon policy, depth range, projection and the region to load: the mission's region, else the trip's (the
+/// start-goal box plus half its larger side, at least 0.2 degrees, on each side; the whole file when the trip
+/// spans 180 degrees of longitude or more). Shared by MissionProblem and forecastMission() so that a forecast from
+/// the command line and the same forecast in a mission file are the same problem.
 /// @throws Error for an unknown interpolation scheme.
-NetCdfCurrentOptions netCdfCurrentOptions(const CurrentSpec &current);
+NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &mission);
+
+/// @brief Default lattice spacing (metres) on a forecast: half the smallest grid cell, but no coarser than 1/25
+/// of the start-goal distance and no finer than 1/200 of it, rounded to two significant digits. (Half a cell
+/// resolves the interpolated field; 25 steps keep the path's shape; 200 steps bound the search on fine grids.)
+/// @throws Error when no finite size results.
+double defaultForecastGridSize(double minCellSize, double startGoalDistance);
 }  // namespace ompl_glider

@@ -154,7 +154,9 @@ struct PlannerSpec
     /// A name of the planner registry (PlannerRegistry.h; any accepted spelling is stored as the canonical name):
     /// TVE, A*TVE, ZTVE, ZA*TVE (lattice search) or an OMPL planner on the time-augmented space (RRTstar, PRM, ...).
     std::string name{"ZA*TVE"};
-    double gridSize{0.4};           ///< lattice spacing
+    /// Lattice spacing; 0 = automatic: 0.4 for the analytic flows ([EichhornRAS] Sec. 6.1), for a forecast half
+    /// the smallest grid cell kept within 1/200..1/25 of the start-goal distance (defaultForecastGridSize()).
+    double gridSize{0.0};
     int sectors{3};                 ///< n-sector connectivity (1..5)
     bool smoothing{true};           ///< [EichhornRAS] Table 3
     bool refinement{true};          ///< waypoint refinement after smoothing
