@@ -4,18 +4,21 @@
 #include <cmath>
 #include <tuple>
 
+#include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/Interpolation.h"
 #include "ompl_glider/current/LocalProjection.h"
+#if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/mission/NetCdfBathymetry.h"
+#endif
 #include "ompl_glider/environment/ForbiddenRegions.h"
 #include "ompl_glider/environment/IceZone.h"
 #include "ompl_glider/environment/StaticRegion.h"
 #include "ompl_glider/environment/TimeWindowedZone.h"
 #include "ompl_glider/mission/IsoTime.h"
-#include "ompl_glider/mission/NetCdfBathymetry.h"
 
 namespace ompl_glider
 {
@@ -31,6 +34,7 @@ std::string where(const MissionSpec &m, const SourceMark &mark = {})
 }
 }  // namespace
 
+#if OMPL_GLIDER_WITH_NETCDF
 NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
 {
     const CurrentSpec &c = m.current;
@@ -86,6 +90,8 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     return o;
 }
 
+#endif
+
 double defaultForecastGridSize(double minCellSize, double distance)
 {
     double g = 0.5 * minCellSize;
@@ -136,10 +142,15 @@ void MissionProblem::buildField()
         projectionScale_ = m.lengthUnitMetres;
         return;
     }
+#if OMPL_GLIDER_WITH_NETCDF
     NetCdfCurrents nc = loadNetCdfCurrents(m.current.file, netCdfLoadOptions(m));
     field_ = nc.field;
     projection_ = nc.projection;
     projectionScale_ = 1.0;
+#else
+    throw Error(where(m, m.current.mark) + "field 'current.type': this build of ompl_glider has no NetCDF "
+                                           "support (OMPL_GLIDER_WITH_NETCDF=OFF)");
+#endif
 }
 
 Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) const
@@ -366,6 +377,9 @@ std::shared_ptr<const DiveProfileTravelTime> MissionProblem::diveProfiles(double
     }
     else if (spec_.dive.bathymetryType == "netcdf")
     {
+#if !OMPL_GLIDER_WITH_NETCDF
+        throw Error(spec_.file + ": field 'dive_profile.bathymetry': this build has no NetCDF support");
+#else
         std::function<void(double, double, double &, double &)> geo;
         if (projection_)
             geo = [this](double x, double y, double &lon, double &lat) {
@@ -382,6 +396,7 @@ std::shared_ptr<const DiveProfileTravelTime> MissionProblem::diveProfiles(double
         {
             throw Error(spec_.file + ": field 'dive_profile.bathymetry': " + e.what());
         }
+#endif
     }
     TravelTimeParams t = spec_.travel;
     t.speed = speed;

@@ -5,7 +5,11 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/IsoTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionLoader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/ForecastMission.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Planning.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
 )
+if(OMPL_GLIDER_WITH_NETCDF)
+  list(APPEND OMPL_GLIDER_SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/ForecastMission.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
+  )
+endif()

@@ -1,5 +1,10 @@
-# find_package(ompl_glider) from an install prefix works for a downstream project.
+# find_package(ompl_glider) from an install prefix works for a downstream project: the shared library with every
+# component, and a static library without NetCDF and maps (built here, from the same sources).
 add_test(NAME package.find_package_consumer
   COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/run_consumer.sh ${PROJECT_BINARY_DIR} ${CMAKE_CURRENT_LIST_DIR}/consumer
           ${CMAKE_CURRENT_BINARY_DIR}/package_consumer)
 set_tests_properties(package.find_package_consumer PROPERTIES TIMEOUT 300)
+add_test(NAME package.static_without_netcdf_and_map
+  COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/run_consumer.sh ${CMAKE_CURRENT_BINARY_DIR}/static_build
+          ${CMAKE_CURRENT_LIST_DIR}/consumer ${CMAKE_CURRENT_BINARY_DIR}/package_static ${PROJECT_SOURCE_DIR})
+set_tests_properties(package.static_without_netcdf_and_map PROPERTIES TIMEOUT 1200)

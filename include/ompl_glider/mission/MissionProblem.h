@@ -121,7 +121,7 @@ GliderProblem gulfStreamProblem();
 /// start-goal box plus half its larger side, at least 0.2 degrees, on each side; the whole file when the trip
 /// spans 180 degrees of longitude or more). Shared by MissionProblem and forecastMission() so that a forecast from
 /// the command line and the same forecast in a mission file are the same problem.
-/// @throws Error for an unknown interpolation scheme.
+/// @throws Error for an unknown interpolation scheme. (Only with OMPL_GLIDER_WITH_NETCDF.)
 NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &mission);
 
 /// @brief Default lattice spacing (metres) on a forecast: half the smallest grid cell, but no coarser than 1/25

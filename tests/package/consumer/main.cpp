@@ -1,10 +1,15 @@
-// Uses the installed library: one leg in a uniform current, checked against the closed form.
+// Uses the installed library: one leg in a uniform current, checked against the closed form, and, when the
+// package has the mission component, the built-in Gulf Stream mission through the planning pipeline.
 #include <cmath>
 #include <cstdio>
 #include <memory>
 
+#include <ompl_glider/Config.h>
 #include <ompl_glider/cost/TravelTimeCalculator.h>
 #include <ompl_glider/current/UniformCurrent.h>
+#if OMPL_GLIDER_WITH_MISSION
+#include <ompl_glider/mission/Planning.h>
+#endif
 
 int main()
 {
@@ -14,5 +19,14 @@ int main()
     ompl_glider::TravelTimeCalculator calc(field, p);
     const double t = calc.travelTime(0.0, 0.0, 4.0, 0.0, 0.0);
     std::printf("travel time %.9f (expected %.9f)\n", t, 4.0 / 0.8);
-    return std::abs(t - 5.0) < 1e-9 ? 0 : 1;
+    if (std::abs(t - 5.0) >= 1e-9)
+        return 1;
+#if OMPL_GLIDER_WITH_MISSION
+    const ompl_glider::MissionProblem problem(ompl_glider::defaultGulfStreamMission());
+    const ompl_glider::MissionResult r = ompl_glider::runMission(problem);
+    std::printf("Gulf Stream mission: %s, travel time %.4f\n", r.plan.status.c_str(), r.plan.travelTime);
+    if (!r.plan.solved || !(r.plan.travelTime > 10.0 && r.plan.travelTime < 12.0))
+        return 1;
+#endif
+    return 0;
 }
