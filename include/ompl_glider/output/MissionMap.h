@@ -1,0 +1,13 @@
+#pragma once
+/// @file MissionMap.h
+/// @brief The map of a run: the current at departure (or outputs.map_time), forbidden regions, the planner's,
+/// smoothed and final paths with time ticks, the optimal-control reference when computed, start and goal.
+
+#include "ompl_glider/mission/Planning.h"
+#include "ompl_glider/output/MapRenderer.h"
+
+namespace ompl_glider
+{
+/// @brief Draws the map of @p result on @p problem (write it with MapRenderer::writeSvg / writePng).
+MapRenderer missionMap(const MissionResult &result, const MissionProblem &problem);
+}  // namespace ompl_glider

@@ -1,0 +1,21 @@
+#pragma once
+/// @file Report.h
+/// @brief The run as text for a terminal.
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/mission/Planning.h"
+
+namespace ompl_glider
+{
+/// @brief The speed sweep as a text table ([GarauDive] Table VI): speed, travel time, path length, straight-line
+/// travel time ("impassable" when infinite) and length.
+std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows);
+
+/// @brief Human-readable report: mission, planner, status (and why there is no path), departure (and the departure
+/// search), travel time (raw, smoothed, final; with dive profiles), path length, straight line, waypoints, CFC and
+/// CMC, wall times, the optimal-control reference, the waypoint table and the speed sweep.
+void printReport(std::ostream &out, const MissionResult &result);
+}  // namespace ompl_glider

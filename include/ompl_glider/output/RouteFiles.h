@@ -1,0 +1,31 @@
+#pragma once
+/// @file RouteFiles.h
+/// @brief The route as text files a pilot or a GIS loads: waypoints CSV, path CSV, GeoJSON, the Slocum goto list.
+
+#include <string>
+
+#include "ompl_glider/mission/Planning.h"
+#include "ompl_glider/output/SlocumGoto.h"
+
+namespace ompl_glider
+{
+/// @brief Waypoints CSV, one line per waypoint (start first), header
+/// `index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to` (time in field units, time_s in
+/// seconds = time * units.time_s; lon/lat in -180..180, empty without a projection; time_iso empty without a
+/// calendar; the profile columns empty without dive profiles). Numbers with 10 significant digits.
+std::string waypointsCsv(const MissionResult &result);
+
+/// @brief The final path as CSV with header `t,x,y,lon,lat` (t in field time units; lon/lat empty without a
+/// projection).
+std::string pathCsv(const MissionResult &result);
+
+/// @brief GeoJSON FeatureCollection: one LineString of the path (properties: mission, departure, travel time,
+/// path length) and one Point per waypoint (properties: index, time, time_s, time_iso, leg_time, dive profile).
+/// Coordinates are [lon, lat] (RFC 7946) when the mission has a projection, else planning x/y (then the
+/// collection carries "coordinates": "local").
+std::string routeGeoJson(const MissionResult &result);
+
+/// @brief The Slocum goto list of the final path (without the start unless outputs.goto_include_start).
+/// @throws Error when the waypoints have no geographic coordinates.
+GotoList gotoList(const MissionResult &result);
+}  // namespace ompl_glider

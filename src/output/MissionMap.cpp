@@ -1,0 +1,118 @@
+#include "ompl_glider/output/MissionMap.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace ompl_glider
+{
+namespace
+{
+std::string fmt(double v)
+{
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+
+MapPolygon mapPolygon(const MissionPolygon &p)
+{
+    MapPolygon mp;
+    mp.label = p.name;
+    for (const Point2 &q : p.points)
+        mp.vertices.push_back({q.x, q.y});
+    if (p.kind == "closure")
+    {
+        mp.hatched = true;
+        mp.fill = {0.9, 0.6, 0.1, 0.35};
+        mp.stroke = {0.7, 0.4, 0.0, 1.0};
+    }
+    else if (p.kind == "ice")
+    {
+        mp.fill = {0.85, 0.93, 1.0, 0.75};
+        mp.stroke = {0.3, 0.5, 0.8, 1.0};
+        mp.label += " (ice at t_ref)";
+    }
+    return mp;
+}
+
+/// Time ticks a pilot reads: hours or days after departure when the mission has physical time units; field time
+/// otherwise. Returns the unit's name ("" for field time).
+std::string tickUnit(const MissionResult &r, std::vector<std::vector<TimedWaypoint> *> paths)
+{
+    const bool physical = r.spec.current.type == "netcdf" || r.spec.timeUnitSeconds != 1.0;
+    if (!physical)
+        return "";
+    const double tripSeconds = r.plan.travelTime * r.spec.timeUnitSeconds;
+    const double unit = tripSeconds > 4 * 86400.0 ? 86400.0 : 3600.0;
+    for (auto *v : paths)
+        for (auto &w : *v)
+            w.t = (w.t - r.plan.departure) * r.spec.timeUnitSeconds / unit;
+    return unit == 86400.0 ? "days" : "hours";
+}
+
+void addPaths(MapRenderer &map, const MissionResult &r)
+{
+    const PlannedPath &p = r.plan;
+    std::vector<TimedWaypoint> raw = p.raw, smoothed = p.smoothed, fin = p.path;
+    const std::string unit = tickUnit(r, {&raw, &smoothed, &fin});
+    if (!unit.empty())
+        map.addNote("ticks: " + unit + " after departure");
+    const bool smoothedDiffers = p.smoothed.size() != p.raw.size() || p.smoothedTravelTime < p.rawTravelTime;
+    const bool finalDiffers = p.path.size() != p.smoothed.size() || p.travelTime < p.smoothedTravelTime;
+    MapPath rawPath = MapRenderer::rawPathStyle(
+        p.planner + " path: " + std::to_string(p.raw.size()) + " wp, T=" + fmt(p.rawTravelTime), raw);
+    rawPath.timeTicks = !smoothedDiffers && !finalDiffers;
+    map.addPath(rawPath);
+    if (smoothedDiffers)
+    {
+        MapPath s = MapRenderer::smoothedPathStyle(
+            "smoothed: " + std::to_string(p.smoothed.size()) + " wp, T=" + fmt(p.smoothedTravelTime), smoothed);
+        s.timeTicks = !finalDiffers;
+        map.addPath(s);
+    }
+    if (finalDiffers)
+        map.addPath(MapRenderer::refinedPathStyle(
+            "refined: " + std::to_string(p.path.size()) + " wp, T=" + fmt(p.travelTime), fin));
+}
+}  // namespace
+
+MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
+{
+    const MissionSpec &m = r.spec;
+    MapOptions mo;
+    mo.title = m.name + " - " + r.plan.planner + ", V = " + fmt(r.plan.speed) + (r.plan.solved ? "" : " (no path)");
+    MapRenderer map(problem.getBox(), mo);
+    const double tMap = std::isnan(m.outputs.mapTime) ? r.plan.departure : m.outputs.mapTime;
+    map.setField(problem.getField(), tMap, m.vehicle.depth);
+    for (const MissionPolygon &p : problem.getPolygons())
+        map.addPolygon(mapPolygon(p));
+    if (r.plan.solved)
+        addPaths(map, r);
+    if (r.optimum && r.optimum->found)
+    {
+        MapPath opt;
+        opt.label = "optimal control: T=" + fmt(r.optimum->travelTime);
+        opt.waypoints = r.optimum->path;
+        opt.colour = {0.10, 0.35, 0.95, 1.0};
+        opt.width = 1.6;
+        opt.dashed = true;
+        opt.waypointMarkers = false;
+        map.addPath(opt);
+    }
+    const Point2 s = problem.getStart(), g = problem.getGoal();
+    map.setStartGoal(s.x, s.y, g.x, g.y);
+    const std::string iso = r.waypoints.empty() ? "" : r.waypoints.front().iso;
+    map.addNote("departure " + fmt(r.plan.departure) + (iso.empty() ? "" : " (" + iso + ")"));
+    if (r.plan.solved)
+    {
+        map.addNote("travel time " + fmt(r.plan.travelTime) + ", path length " + fmt(r.plan.pathLength));
+        map.addNote("straight line: " +
+                    (std::isfinite(r.plan.straightLineTime) ? "T=" + fmt(r.plan.straightLineTime)
+                                                            : std::string("impassable")));
+    }
+    else
+        map.addNote("no path: " + r.plan.reason);
+    map.addNote(std::isnan(m.outputs.mapTime) ? "field shown at departure" : "field shown at t = " + fmt(tMap));
+    return map;
+}
+}  // namespace ompl_glider

@@ -1,0 +1,114 @@
+#include "ompl_glider/output/Report.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace ompl_glider
+{
+namespace
+{
+std::string num(double v)
+{
+    if (std::isnan(v))
+        return "";
+    if (std::isinf(v))
+        return "inf";
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
+/// printf into a string (the report's lines are short).
+template <class... A>
+std::string format(const char *fmt, A... args)
+{
+    char buf[512];
+    std::snprintf(buf, sizeof buf, fmt, args...);
+    return buf;
+}
+
+void printWaypoints(std::ostream &out, const MissionResult &r)
+{
+    out << format("%4s %12s %12s %11s %10s %14s %22s %16s\n", "#", "x", "y", "lon", "lat", "arrival",
+                  "arrival (UTC)", "dive profile");
+    for (std::size_t i = 0; i < r.waypoints.size(); ++i)
+    {
+        const MissionWaypoint &w = r.waypoints[i];
+        std::string prof;
+        if (r.diveProfiles && i > 0 && w.profile >= 0)
+            prof = num(w.dive.climbTo) + "-" + num(w.dive.diveTo);
+        out << format("%4zu %12.6g %12.6g %11s %10s %14s %22s %16s\n", i, w.position.x, w.position.y,
+                      w.geographic ? format("%.6f", w.lonLat.lon).c_str() : "",
+                      w.geographic ? format("%.6f", w.lonLat.lat).c_str() : "", num(w.time).c_str(), w.iso.c_str(),
+                      prof.c_str());
+    }
+}
+}  // namespace
+
+std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows)
+{
+    std::string s = format("%8s %14s %12s %18s %14s\n", "speed", "travel time", "path length", "straight-line time",
+                           "straight length");
+    for (const auto &r : rows)
+    {
+        const std::string tt = r.solved ? num(r.travelTime) : "no path";
+        const std::string st = std::isfinite(r.straightLineTime) ? num(r.straightLineTime) : "impassable";
+        s += format("%8.4g %14s %12.6g %18s %14.6g\n", r.speed, tt.c_str(), r.pathLength, st.c_str(),
+                    r.straightLineLength);
+    }
+    return s;
+}
+
+void printReport(std::ostream &out, const MissionResult &r)
+{
+    const PlannedPath &p = r.plan;
+    const MissionSpec &m = r.spec;
+    out << "Mission:            " << m.name << " (" << m.file << "), current " << m.current.type << "\n";
+    out << "Planner:            " << p.planner;
+    if (m.planner.gridSize > 0)
+        out << format(" (grid %g, %d sectors)", m.planner.gridSize, m.planner.sectors);
+    out << ", V = " << num(p.speed) << "\n";
+    if (r.departureSearch)
+    {
+        const DepartureSearchResult &d = *r.departureSearch;
+        out << format("Departure search:   [%g, %g], %zu fine + %zu coarse searches in %.3f s, best %s\n",
+                      m.departure.begin, d.windowEnd, d.fineEvaluations, d.coarseEvaluations, d.wallSeconds,
+                      d.found ? num(d.departure).c_str() : "none");
+    }
+    const std::string iso = r.waypoints.empty() ? "" : r.waypoints.front().iso;
+    out << "Departure:          " << num(p.departure) << (iso.empty() ? "" : " (" + iso + ")") << "\n";
+    out << "Status:             " << p.status << (p.solved ? "" : " - no path: " + p.reason) << "\n";
+    if (p.solved)
+    {
+        out << format("Travel time:        %.4f (raw %.4f, smoothed %.4f)\n", p.travelTime, p.rawTravelTime,
+                      p.smoothedTravelTime);
+        if (r.diveProfiles)
+            out << "With dive profiles: " << (std::isfinite(r.diveTravelTime) ? num(r.diveTravelTime) : "impassable")
+                << "\n";
+        out << format("Path length:        %.4f (straight %.4f)\n", p.pathLength, p.straightLineLength);
+        out << "Straight line:      "
+            << (std::isfinite(p.straightLineTime) ? format("%.4f", p.straightLineTime) : std::string("impassable"))
+            << "\n";
+        out << format("Waypoints:          raw %zu, smoothed %zu%s, refined %zu%s\n", p.raw.size(), p.smoothed.size(),
+                      m.planner.smoothing ? "" : " (off)", p.path.size(), m.planner.refinement ? "" : " (off)");
+    }
+    out << format("CFC (cost function calls): %llu (+%llu smoothing and refinement); CMC (current model calls): %llu\n",
+                  static_cast<unsigned long long>(p.searchCostFunctionCalls),
+                  static_cast<unsigned long long>(p.postprocessCostFunctionCalls),
+                  static_cast<unsigned long long>(p.currentModelCalls));
+    out << format("Planning time:      %.3f s (post-processing %.3f s; whole run %.3f s)\n", p.planningSeconds,
+                  p.postprocessSeconds, r.wallSeconds);
+    if (r.optimum)
+    {
+        if (r.optimum->found)
+            out << format("Optimal control:    %.4f (final path %+.2f%%)\n", r.optimum->travelTime,
+                          100.0 * (p.travelTime / r.optimum->travelTime - 1.0));
+        else
+            out << "Optimal control:    no extremal through the goal found\n";
+    }
+    if (p.solved)
+        printWaypoints(out, r);
+    if (!r.speedSweep.empty())
+        out << "Speed sweep:\n" << speedSweepTable(r.speedSweep);
+}
+}  // namespace ompl_glider

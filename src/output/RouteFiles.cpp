@@ -1,0 +1,125 @@
+#include "ompl_glider/output/RouteFiles.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace
+{
+std::string csvNum(double v)
+{
+    if (std::isnan(v))
+        return "";
+    if (std::isinf(v))
+        return v > 0 ? "inf" : "-inf";
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
+/// A number for JSON: null when not finite.
+nlohmann::ordered_json jnum(double v)
+{
+    return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+bool geographic(const MissionResult &r)
+{
+    return !r.waypoints.empty() && r.waypoints.front().geographic;
+}
+
+bool hasProfile(const MissionResult &r, std::size_t i)
+{
+    return r.diveProfiles && i > 0 && r.waypoints[i].profile >= 0;
+}
+}  // namespace
+
+std::string waypointsCsv(const MissionResult &r)
+{
+    std::string s = "index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to\n";
+    for (std::size_t i = 0; i < r.waypoints.size(); ++i)
+    {
+        const MissionWaypoint &w = r.waypoints[i];
+        s += std::to_string(i) + "," + csvNum(w.position.x) + "," + csvNum(w.position.y) + ",";
+        s += w.geographic ? csvNum(w.lonLat.lon) + "," + csvNum(w.lonLat.lat) : std::string(",");
+        s += "," + csvNum(w.time) + "," + csvNum(w.time * r.spec.timeUnitSeconds) + "," + w.iso + "," +
+             csvNum(w.legTime) + ",";
+        if (hasProfile(r, i))
+            s += std::to_string(w.profile) + "," + csvNum(w.dive.climbTo) + "," + csvNum(w.dive.diveTo);
+        else
+            s += ",,";
+        s += "\n";
+    }
+    return s;
+}
+
+std::string pathCsv(const MissionResult &r)
+{
+    std::string s = "t,x,y,lon,lat\n";
+    for (const MissionWaypoint &w : r.waypoints)
+    {
+        s += csvNum(w.time) + "," + csvNum(w.position.x) + "," + csvNum(w.position.y) + ",";
+        s += w.geographic ? csvNum(w.lonLat.lon) + "," + csvNum(w.lonLat.lat) : std::string(",");
+        s += "\n";
+    }
+    return s;
+}
+
+std::string routeGeoJson(const MissionResult &r)
+{
+    const bool geo = geographic(r);
+    auto coord = [&](const MissionWaypoint &w) {
+        return geo ? nlohmann::ordered_json::array({w.lonLat.lon, w.lonLat.lat})
+                   : nlohmann::ordered_json::array({w.position.x, w.position.y});
+    };
+    nlohmann::ordered_json line = nlohmann::ordered_json::array();
+    for (const MissionWaypoint &w : r.waypoints)
+        line.push_back(coord(w));
+    nlohmann::ordered_json features = nlohmann::ordered_json::array();
+    features.push_back({{"type", "Feature"},
+                        {"properties",
+                         {{"name", r.spec.name + " path"},
+                          {"departure", jnum(r.plan.departure)},
+                          {"travel_time", jnum(r.plan.travelTime)},
+                          {"path_length", jnum(r.plan.pathLength)}}},
+                        {"geometry", {{"type", "LineString"}, {"coordinates", line}}}});
+    for (std::size_t i = 0; i < r.waypoints.size(); ++i)
+    {
+        const MissionWaypoint &w = r.waypoints[i];
+        nlohmann::ordered_json props = {{"index", i},
+                                {"time", jnum(w.time)},
+                                {"time_s", jnum(w.time * r.spec.timeUnitSeconds)},
+                                {"time_iso", w.iso.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(w.iso)},
+                                {"leg_time", jnum(w.legTime)}};
+        if (hasProfile(r, i))
+        {
+            props["profile"] = w.profile;
+            props["climb_to"] = jnum(w.dive.climbTo);
+            props["dive_to"] = jnum(w.dive.diveTo);
+        }
+        features.push_back(
+            {{"type", "Feature"}, {"properties", props}, {"geometry", {{"type", "Point"}, {"coordinates", coord(w)}}}});
+    }
+    nlohmann::ordered_json doc = {{"type", "FeatureCollection"}, {"features", features}};
+    if (!geo)
+        doc["coordinates"] = "local";
+    return doc.dump(1) + "\n";
+}
+
+GotoList gotoList(const MissionResult &r)
+{
+    if (!geographic(r))
+        throw Error(r.spec.file + ": a goto list needs longitudes and latitudes (give a 'projection')");
+    GotoList g;
+    g.number = r.spec.outputs.gotoNumber;
+    g.comment = r.spec.name;
+    for (std::size_t i = r.spec.outputs.gotoIncludeStart ? 0 : 1; i < r.waypoints.size(); ++i)
+        g.waypoints.push_back({r.waypoints[i].lonLat.lon, r.waypoints[i].lonLat.lat});
+    return g;
+}
+}  // namespace ompl_glider

@@ -1,0 +1,137 @@
+#include "ompl_glider/output/SummaryJson.h"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+namespace ompl_glider
+{
+namespace
+{
+using json = nlohmann::ordered_json;
+
+json jnum(double v)
+{
+    return std::isfinite(v) ? json(v) : json(nullptr);
+}
+
+json jtext(const std::string &s)
+{
+    return s.empty() ? json(nullptr) : json(s);
+}
+
+json position(const MissionProblem &problem, Point2 p)
+{
+    json j = {{"x", p.x}, {"y", p.y}, {"lon", nullptr}, {"lat", nullptr}};
+    if (problem.isGeographic())
+    {
+        const LonLat g = problem.toGeographic(p);
+        j["lon"] = g.lon;
+        j["lat"] = g.lat;
+    }
+    return j;
+}
+
+json plannerJson(const MissionSpec &m, const PlannedPath &p)
+{
+    json params = json::object();
+    for (const auto &[k, v] : m.planner.parameters)
+        params[k] = v;
+    return {{"name", p.planner.empty() ? m.planner.name : p.planner},
+            {"grid_size", m.planner.gridSize},
+            {"sectors", m.planner.sectors},
+            {"smoothing", m.planner.smoothing},
+            {"refinement", m.planner.refinement},
+            {"time_limit_s", m.planner.timeLimit},
+            {"parameters", params}};
+}
+
+json departureSearchJson(const MissionSpec &m, const DepartureSearchResult &d)
+{
+    auto samples = [](const std::vector<DepartureSample> &v) {
+        json a = json::array();
+        for (const DepartureSample &s : v)
+            a.push_back({{"departure", s.tDep}, {"travel_time", jnum(s.travelTime)}});
+        return a;
+    };
+    return {{"found", d.found},
+            {"departure", jnum(d.departure)},
+            {"travel_time", jnum(d.travelTime)},
+            {"window", {m.departure.begin, jnum(d.windowEnd)}},
+            {"bracket", {jnum(d.bracketLo), jnum(d.bracketHi)}},
+            {"fine_searches", d.fineEvaluations},
+            {"coarse_searches", d.coarseEvaluations},
+            {"wall_time_s", d.wallSeconds},
+            {"supporting_points", samples(d.supportingPoints)},
+            {"refinements", samples(d.refinements)}};
+}
+}  // namespace
+
+std::string summaryJson(const MissionResult &r, const MissionProblem &problem, const std::vector<std::string> &files)
+{
+    const PlannedPath &p = r.plan;
+    const MissionSpec &m = r.spec;
+    json j;
+    j["schema"] = kSummarySchema;
+    j["mission"] = m.name;
+    j["source"] = m.file;
+    j["current"] = m.current.type;
+    j["solved"] = p.solved;
+    j["status"] = p.status;
+    j["reason"] = jtext(p.reason);
+    j["planner"] = plannerJson(m, p);
+    j["units"] = {{"length_m", m.lengthUnitMetres}, {"time_s", m.timeUnitSeconds}};
+    j["speed"] = p.speed;
+    j["start"] = position(problem, problem.getStart());
+    j["goal"] = position(problem, problem.getGoal());
+    j["departure"] = {{"time", p.departure},
+                      {"iso", r.waypoints.empty() ? json(nullptr) : jtext(r.waypoints.front().iso)}};
+    j["arrival"] = {{"time", r.waypoints.empty() ? json(nullptr) : jnum(r.waypoints.back().time)},
+                    {"iso", r.waypoints.empty() ? json(nullptr) : jtext(r.waypoints.back().iso)}};
+    j["travel_time"] = jnum(p.travelTime);
+    j["travel_time_raw"] = jnum(p.rawTravelTime);
+    j["travel_time_smoothed"] = jnum(p.smoothedTravelTime);
+    if (r.diveProfiles)
+        j["travel_time_dive_profiles"] = jnum(r.diveTravelTime);
+    j["path_length"] = p.solved ? json(p.pathLength) : json(nullptr);
+    j["path_length_raw"] = p.solved ? json(p.rawPathLength) : json(nullptr);
+    j["straight_line"] = {{"travel_time", jnum(p.straightLineTime)},
+                          {"passable", std::isfinite(p.straightLineTime)},
+                          {"length", p.straightLineLength}};
+    j["waypoints"] = {{"raw", p.raw.size()}, {"smoothed", p.smoothed.size()}, {"final", p.path.size()}};
+    j["cost_function_calls"] = {{"search", p.searchCostFunctionCalls},
+                                {"postprocess", p.postprocessCostFunctionCalls},
+                                {"total", p.totalCostFunctionCalls()}};
+    j["current_model_calls"] = p.currentModelCalls;
+    j["expanded_vertices"] = p.expandedVertices;
+    j["wall_time_s"] = {{"planning", p.planningSeconds}, {"postprocess", p.postprocessSeconds}, {"total", r.wallSeconds}};
+    j["path_checked"] = p.pathChecked;
+    if (r.optimum)
+        j["optimal_control"] = {{"found", r.optimum->found},
+                                {"travel_time", jnum(r.optimum->travelTime)},
+                                {"ratio", jnum(p.travelTime / r.optimum->travelTime)}};
+    if (r.diveProfiles)
+    {
+        json profiles = json::array();
+        for (const DiveProfile &d : r.profileSet)
+            profiles.push_back({{"climb_to", d.climbTo}, {"dive_to", d.diveTo}});
+        j["dive_profiles"] = {{"selection", toString(m.dive.params.selection)}, {"profiles", profiles}};
+    }
+    if (r.departureSearch)
+        j["departure_search"] = departureSearchJson(m, *r.departureSearch);
+    if (!r.speedSweep.empty())
+    {
+        json rows = json::array();
+        for (const SpeedSweepRow &w : r.speedSweep)
+            rows.push_back({{"speed", w.speed},
+                            {"solved", w.solved},
+                            {"travel_time", jnum(w.travelTime)},
+                            {"path_length", w.solved ? json(w.pathLength) : json(nullptr)},
+                            {"straight_line_travel_time", jnum(w.straightLineTime)},
+                            {"straight_line_length", w.straightLineLength}});
+        j["speed_sweep"] = rows;
+    }
+    j["files"] = files;
+    return j.dump(2) + "\n";
+}
+}  // namespace ompl_glider

@@ -1,0 +1,14 @@
+# output/: the one output layer (summary.json, route files, goto list, map; all-or-nothing writing)
+list(APPEND OMPL_GLIDER_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/SlocumGoto.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/RouteFiles.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/SummaryJson.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Report.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/OutputWriter.cpp
+)
+if(OMPL_GLIDER_WITH_MAP)
+  list(APPEND OMPL_GLIDER_SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/MapRenderer.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/MissionMap.cpp
+  )
+endif()
