@@ -129,6 +129,12 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)
         throw Error("GliderProblem: departure time t0 must be finite (got " + num(p.t0) + ")");
     if (!(p.horizon > 0.0) || !std::isfinite(p.horizon))
         throw Error("GliderProblem: horizon must be finite and > 0 (got " + num(p.horizon) + ")");
+    // A time so large that doubles cannot resolve the integration tolerance near it would give travel times of 0.
+    if (std::abs(p.t0) + p.horizon > 1e-3 * p.travel.eps / std::numeric_limits<double>::epsilon())
+        throw Error("GliderProblem: departure time t0 = " + num(p.t0) + " with horizon " + num(p.horizon) +
+                    " is too large to resolve the integration tolerance eps = " + num(p.travel.eps) +
+                    " (times must stay below " + num(1e-3 * p.travel.eps / std::numeric_limits<double>::epsilon()) +
+                    ")");
     if (p.t0 < p.field->timeBegin() || p.t0 >= p.field->timeEnd())
         throw Error("GliderProblem: departure time t0 = " + num(p.t0) + " is outside the time span [" +
                     num(p.field->timeBegin()) + ", " + num(p.field->timeEnd()) + ") of the field '" +
