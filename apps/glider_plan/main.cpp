@@ -36,7 +36,8 @@ struct UsageError
 /// Everything the flags say.
 struct Flags
 {
-    std::string mission, currents, out, start, goal, departure, speeds, planner;
+    std::string mission, currents, out, start, goal, departure, planner;
+    std::optional<std::string> speeds;  // given, even empty, is a sweep request
     std::optional<double> speed, gridSize, timeLimit, depth;
     std::optional<int> sectors;
     bool noSmooth{false}, noRefine{false}, optimum{false}, verbose{false};
@@ -261,8 +262,8 @@ int run(const Flags &f)
         checkOutputDirectory(spec.outputs.directory);
     const MissionProblem problem(spec);
     RunOptions options;
-    if (!f.speeds.empty())
-        options.speeds = speedList(f.speeds);
+    if (f.speeds)
+        options.speeds = speedList(*f.speeds);
     options.optimum = f.optimum;
     if (!f.mission.empty() || !f.currents.empty())
         options.progress = printProgress;

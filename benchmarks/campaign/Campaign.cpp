@@ -9,7 +9,14 @@
 // keeps undirected edges and may return motions that run backwards in time), the planner's own travel time, and
 // CFC / CMC counted on the shared travel-time calculator and current field during solve().
 //
-// Usage: glider_campaign [--quick] [--runs N] [--time SECONDS] [--grid G] [--seed S] [--problems a,b] OUTDIR
+// The planners come from the planner registry (planners/PlannerRegistry.h), the one list the command line and the
+// mission files use, by their canonical names; the lattice planners get the campaign's grid size and sectors
+// through OMPL's ParamSet ("grid_size", "sectors") and keep "smooth" and "refine" at their defaults (on), so the
+// campaign records the smoothed and refined ZA*TVE path (its CFC includes that post-processing; the search's own
+// CFC is recorded as "search CFC").
+//
+// Usage: glider_campaign [--quick] [--runs N] [--time SECONDS] [--grid G] [--seed S] [--problems a,b]
+//                        [--planners NAME,...] OUTDIR   (planner names and aliases of the registry)
 // Writes OUTDIR/<problem>.log (OMPL benchmark logs) and OUTDIR/reference.csv (optimal-control travel time of the
 // open-water problem, ZermeloReference).
 #include <cmath>
@@ -24,14 +31,6 @@
 #include <string>
 #include <vector>
 
-#include <ompl/geometric/planners/informedtrees/BITstar.h>
-#include <ompl/geometric/planners/prm/PRM.h>
-#include <ompl/geometric/planners/prm/PRMstar.h>
-#include <ompl/geometric/planners/rrt/LBTRRT.h>
-#include <ompl/geometric/planners/rrt/RRTConnect.h>
-#include <ompl/geometric/planners/rrt/RRTsharp.h>
-#include <ompl/geometric/planners/rrt/RRTstar.h>
-#include <ompl/geometric/planners/sst/SST.h>
 #include <ompl/tools/benchmark/Benchmark.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
@@ -44,6 +43,7 @@
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/ompl/PathResimulation.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "ompl_glider/planners/PlannerRegistry.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/reference/ZermeloReference.h"
 
@@ -56,6 +56,10 @@ using namespace ompl_glider;
 
 namespace
 {
+/// The planners of the campaign, by their registry names (PlannerRegistry.h).
+const std::vector<std::string> kCampaignPlanners = {"TVE",     "A*TVE",      "ZTVE", "ZA*TVE", "RRTstar", "PRM",
+                                                    "PRMstar", "RRTConnect", "RRT#", "LBTRRT", "BITstar", "SST"};
+
 struct Options
 {
     bool quick{false};
@@ -104,7 +108,14 @@ Options parse(int argc, char **argv)
                 std::stringstream ss(next());
                 std::string p;
                 while (std::getline(ss, p, ','))
-                    (a == "--problems" ? o.problems : o.planners).insert(p);
+                {
+                    if (a == "--problems")
+                        o.problems.insert(p);
+                    else if (const PlannerEntry *e = findPlanner(p))  // any accepted spelling: "BIT*", "zastartve"
+                        o.planners.insert(e->name);
+                    else
+                        usage("unknown planner '" + p + "' (" + plannerNameList() + ")");
+                }
             }
             else if (!a.empty() && a[0] == '-')
                 usage("unknown option " + a);
@@ -132,6 +143,17 @@ std::string str(double v)
     std::ostringstream os;
     os << std::setprecision(10) << v;
     return os.str();
+}
+
+/// Sets a declared parameter of a planner (OMPL's ParamSet); a refused value ends the campaign.
+void setParameter(ob::Planner &planner, const std::string &name, const std::string &value)
+{
+    if (!planner.params().setParam(name, value))
+    {
+        std::cerr << "glider_campaign: planner " << planner.getName() << " refuses " << name << " = " << value
+                  << "\n";
+        std::exit(2);
+    }
 }
 }  // namespace
 
@@ -190,29 +212,22 @@ int main(int argc, char **argv)
         b.addExperimentParameter("campaign_seed", "INTEGER", std::to_string(opt.seed));
 
         std::size_t nPlanners = 0;
-        auto add = [&](const ob::PlannerPtr &planner) {
-            if (opt.planners.empty() || opt.planners.count(planner->getName()))
-            {
-                b.addPlanner(planner);
-                ++nPlanners;
-            }
-        };
-        for (const char *config : {"TVE", "A*TVE", "ZTVE", "ZA*TVE"})
+        // BIT* (OMPL names it kBITstar) draws goal states up to PositionGoal::maxSampleCount() in its setup: finite
+        // (the valid goal times).
+        for (const std::string &name : kCampaignPlanners)
         {
-            auto planner = std::make_shared<ZAStarTVE>(si, ctx, config);
-            planner->setGridSize(opt.grid);
-            planner->setSectors(3);
-            add(planner);
+            if (!opt.planners.empty() && !opt.planners.count(name))
+                continue;
+            const PlannerEntry &entry = plannerEntry(name);
+            const ob::PlannerPtr planner = entry.make(si, ctx);
+            if (entry.lattice)
+            {
+                setParameter(*planner, "grid_size", str(opt.grid));
+                setParameter(*planner, "sectors", "3");
+            }
+            b.addPlanner(planner);
+            ++nPlanners;
         }
-        add(std::make_shared<og::RRTstar>(si));
-        add(std::make_shared<og::PRM>(si));
-        add(std::make_shared<og::PRMstar>(si));
-        add(std::make_shared<og::RRTConnect>(si));
-        add(std::make_shared<og::RRTsharp>(si));
-        add(std::make_shared<og::LBTRRT>(si));
-        // BIT* draws goal states up to PositionGoal::maxSampleCount() in its setup: finite (the valid goal times).
-        add(std::make_shared<og::BITstar>(si));
-        add(std::make_shared<og::SST>(si));
 
         b.setPreRunEvent([ctx](const ob::PlannerPtr &) {
             ctx->field->resetCallCount();
@@ -222,6 +237,14 @@ int main(int argc, char **argv)
             // counters first: the re-simulation below calls the travel-time code too
             run["CFC INTEGER"] = std::to_string(ctx->travel->costFunctionCalls());
             run["CMC INTEGER"] = std::to_string(ctx->field->callCount());
+            if (const auto *z = dynamic_cast<const ZAStarTVE *>(planner.get()))
+            {
+                // the lattice search alone ([EichhornRAS] Table 4) and the smoothing + refinement after it
+                run["search CFC INTEGER"] = std::to_string(z->getCostFunctionCalls());
+                run["postprocess CFC INTEGER"] = std::to_string(z->getPostprocessCostFunctionCalls());
+                if (std::isfinite(z->getTravelTime()))
+                    run["lattice travel time REAL"] = str(z->getTravelTime());
+            }
             const ob::ProblemDefinitionPtr pdef = planner->getProblemDefinition();
             if (!pdef || !pdef->hasSolution())
                 return;

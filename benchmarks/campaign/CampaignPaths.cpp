@@ -1,5 +1,7 @@
 // Map data of the campaign problems for the report figures: one ZA*TVE path and one RRT* path per problem
-// (same seed and budget as the campaign), the forbidden regions, and a few current-field samples.
+// (same seed and budget as the campaign), the forbidden regions, and a few current-field samples. Both planners come
+// from the planner registry (planners/PlannerRegistry.h) as in the campaign; ZA*TVE returns its smoothed and refined
+// path (its "smooth" and "refine" params are on by default).
 //
 // Usage: glider_campaign_paths [--time SECONDS] [--grid G] [--seed S] OUTDIR
 // Writes OUTDIR/maps.json: {problem: {regions: [...], paths: {planner: [[x, y, t], ...]}, ...}}.
@@ -11,13 +13,12 @@
 #include <sstream>
 #include <string>
 
-#include <ompl/geometric/planners/rrt/RRTstar.h>
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
 #include "ompl_glider/ompl/PathResimulation.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
-#include "ompl_glider/planners/ZAStarTVE.h"
+#include "ompl_glider/planners/PlannerRegistry.h"
 
 #include "CampaignProblems.h"
 
@@ -120,15 +121,15 @@ int main(int argc, char **argv)
         for (const std::string name : {"ZA*TVE", "RRTstar"})
         {
             ss->clear();
-            ob::PlannerPtr planner;
-            if (name == "ZA*TVE")
+            const PlannerEntry &entry = plannerEntry(name);
+            const ob::PlannerPtr planner = entry.make(ss->getSpaceInformation(), ctx);
+            std::ostringstream gridText;
+            gridText << std::setprecision(17) << grid;
+            if (entry.lattice && !planner->params().setParam("grid_size", gridText.str()))
             {
-                auto z = std::make_shared<ZAStarTVE>(ss->getSpaceInformation(), ctx, "ZA*TVE");
-                z->setGridSize(grid);
-                planner = z;
+                std::cerr << "glider_campaign_paths: " << name << " refuses grid_size " << grid << "\n";
+                return 2;
             }
-            else
-                planner = std::make_shared<og::RRTstar>(ss->getSpaceInformation());
             ss->setPlanner(planner);
             const ob::PlannerStatus st = ss->solve(budget);
             std::cout << p.name << " " << name << ": " << st.asString();

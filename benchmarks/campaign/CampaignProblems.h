@@ -1,6 +1,6 @@
 #pragma once
 /// @file CampaignProblems.h
-/// @brief The four problems of the benchmark campaign (issue #4) on the meandering jet of 000 Sec. 6.1:
+/// @brief The four problems of the benchmark campaign (issue #4) on the meandering jet of [EichhornRAS] Sec. 6.1:
 /// region x in [0, 10], y in [-4, 4], V = 0.5, t0 = 0, from the south-west to the north-east across the jet.
 
 #include <memory>
@@ -12,7 +12,7 @@
 #include "ompl_glider/environment/IceZone.h"
 #include "ompl_glider/environment/StaticRegion.h"
 #include "ompl_glider/environment/TimeWindowedZone.h"
-#include "ompl_glider/mission/PlanRun.h"
+#include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 
 namespace ompl_glider
@@ -60,7 +60,8 @@ inline std::vector<CampaignProblem> makeCampaignProblems(std::shared_ptr<const C
         c.description = "three islands (a 40-gon, a concave island, a ring-shaped atoll with a lagoon)";
         c.problem = campaignBaseProblem(field);
         c.environment = std::make_shared<ForbiddenRegions>();
-        c.environment->add(std::make_shared<StaticRegion>("A", Polygon::regular(3.0, -1.6, 0.7, 40, 0.1, "A"), "island"));
+        c.environment->add(
+            std::make_shared<StaticRegion>("A", Polygon::regular(3.0, -1.6, 0.7, 40, 0.1, "A"), "island"));
         c.environment->add(std::make_shared<StaticRegion>(
             "B", Polygon({{5.2, -0.4}, {6.6, -0.2}, {6.8, 1.2}, {6.1, 0.5}, {5.4, 1.0}}, {}, "B"), "island"));
         std::vector<Point2> outer, lagoon;

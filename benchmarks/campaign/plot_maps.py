@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Map figure of the campaign problems: current speed of the meandering jet at t0 (000 Eq. 7-9), forbidden
+"""Map figure of the campaign problems: current speed of the meandering jet at t0 ([EichhornRAS] Eq. 7-9), forbidden
 regions, and the ZA*TVE and RRT* paths written by glider_campaign_paths (OUTDIR/maps.json).
 Usage: plot_maps.py OUTDIR  ->  OUTDIR/maps.png"""
 import json
@@ -13,7 +13,7 @@ import numpy as np
 
 
 def jet_speed(x, y, t, B0=1.2, eps=0.3, om=0.4, th=math.pi / 2, k=0.84, c=0.12):
-    """|u, v| of the meandering jet by central differences of the stream function (000 Eq. 7-9)."""
+    """|u, v| of the meandering jet by central differences of the stream function ([EichhornRAS] Eq. 7-9)."""
     def phi(x, y):
         B = B0 + eps * np.cos(om * t + th)
         s = np.sin(k * (x - c * t))

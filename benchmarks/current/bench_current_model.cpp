@@ -1,5 +1,5 @@
-// Current-model calls per second (CMC/s) of the gridded ocean-current model (003 Sec. II.C) for each pair of
-// x/y scheme (nearest, bilinear, bicubic) and time scheme (nearest, linear, cubic, Akima), on a cached subset
+// Current-model calls per second (CMC/s) of the gridded ocean-current model ([EichhornOceans] Sec. II.C) for each pair
+// of x/y scheme (nearest, bilinear, bicubic) and time scheme (nearest, linear, cubic, Akima), on a cached subset
 // held in memory: a rectilinear Cartesian grid (as loaded from a Cartesian file) and a projected geographic grid
 // (curvilinear: point location by bucket + inverse bilinear map). Single-threaded.
 //   build-*/benchmarks/bench_current_model --benchmark_min_time=0.2

@@ -1,6 +1,7 @@
-// Optimal departure time (000 Sec. 5) against a brute-force sweep on the meandering jet (SPEC.md 4).
+// Optimal departure time ([EichhornRAS] Sec. 5) against a brute-force sweep on the meandering jet.
 //
-// Every evaluation is a full ZA*TVE lattice search (MissionProblem::departureFunction). The brute force searches
+// Every evaluation is a full ZA*TVE lattice search (departureFunction() of mission/Planning.h: the lattice path,
+// without smoothing or refinement). The brute force searches
 // at every departure of a fine grid over the window; the optimal-departure scheme uses supporting points every
 // `spacing`, Akima interpolation and Brent's method. Prints both counts and wall times and checks the claim of
 // issue 6: the departure found is within 1 % (travel time) of the brute-force best with at most a fifth of its
@@ -17,7 +18,7 @@
 #include <string>
 
 #include "ompl_glider/mission/DepartureTimeSearch.h"
-#include "ompl_glider/mission/MissionRunner.h"
+#include "ompl_glider/mission/Planning.h"
 
 using namespace ompl_glider;
 
@@ -68,12 +69,12 @@ int main(int argc, char **argv)
     const MissionProblem problem(spec);
 
     std::atomic<std::size_t> fineCalls{0}, coarseCalls{0};
-    const TravelTimeOfDeparture search = problem.departureFunction();
+    const TravelTimeOfDeparture search = departureFunction(problem);
     const TravelTimeOfDeparture f = [&](double t) {
         ++fineCalls;
         return search(t);
     };
-    const TravelTimeOfDeparture coarseSearch = problem.departureFunction(coarseGrid);
+    const TravelTimeOfDeparture coarseSearch = departureFunction(problem, coarseGrid);
     const TravelTimeOfDeparture c = [&](double t) {
         ++coarseCalls;
         return coarseSearch(t);
@@ -83,7 +84,10 @@ int main(int argc, char **argv)
     p.windowBegin = begin;
     p.windowEnd = end;
     p.threads = threads;
-    p.progress = true;
+    p.progress = [](const std::string &line, bool done) {  // progress lines on stderr, as glider_plan prints them
+        std::fprintf(stderr, "\r%s%s", line.c_str(), done ? "\n" : "   ");
+        std::fflush(stderr);
+    };
 
     p.spacing = fine;
     const DepartureSearchResult brute = bruteForceDepartureTime(f, p);

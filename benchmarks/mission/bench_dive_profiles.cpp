@@ -1,5 +1,5 @@
-// Parallel evaluation of the dive profiles of a leg (003 Sec. IV: the profiles of one cost-function call are
-// independent and run on a thread pool). Times DiveProfileTravelTime::bestProfile() with pools of 1..N threads
+// Parallel evaluation of the dive profiles of a leg ([EichhornOceans] Sec. IV: the profiles of one cost-function call
+// are independent and run on a thread pool). Times DiveProfileTravelTime::bestProfile() with pools of 1..N threads
 // on legs of the meandering jet made depth-varying (the jet decays with depth over a scale of 300 m and a
 // 0.15 counter-current flows below), and checks that every pool gives the serial result bit for bit.
 //

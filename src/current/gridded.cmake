@@ -4,5 +4,22 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/CfTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/LocalProjection.cpp
   ${CMAKE_CURRENT_LIST_DIR}/GriddedCurrentField.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/NetCdfCurrents.cpp
 )
+if(OMPL_GLIDER_WITH_NETCDF)
+  list(APPEND OMPL_GLIDER_SOURCES
+    # the NetCDF reader: loadNetCdfCurrents() composing the stages in netcdf/ (see netcdf/NetCdfInternal.h)
+    ${CMAKE_CURRENT_LIST_DIR}/NetCdfCurrents.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/NcFile.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/VariableDetection.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/GridLayout.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/TimeAxis.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/DepthAxis.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/RegionOfInterest.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/RectilinearSubset.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/CurvilinearSubset.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/Hyperslab.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/UnitsAndPacking.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/LandMask.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/NodeCoordinates.cpp
+  )
+endif()

@@ -55,7 +55,20 @@ void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
         if (params.hasParam(name))
         {
             const std::string range = params[name].getRangeSuggestion();
-            if (!params.setParam(name, value))
+            // OMPL reads any text other than "true"/"1" as false for a bool parameter (range "0,1")
+            if (range == "0,1" && value != "0" && value != "1" && value != "true" && value != "false")
+                throw Error(parameterPlace(m, name) + ": planner " + planner.getName() +
+                            " expects true or false, got '" + value + "'");
+            bool accepted = false;
+            try
+            {
+                accepted = params.setParam(name, value);
+            }
+            catch (const std::exception &e)  // a setter that refuses the value with its own reason
+            {
+                throw Error(parameterPlace(m, name) + ": " + e.what());
+            }
+            if (!accepted)
                 throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " rejects the value '" +
                             value + "' (range " + range + ")");
             // OMPL converts leniently ("1e12" becomes 1 for an integer): read the value back and refuse a change.
@@ -143,7 +156,21 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
         return "the planner found no path within the time limit";
     return std::string("planner status: ") + status.asString();
 }
+/// What bounds the arrival of an exhausted search: the end of the forecast or the planning horizon.
+std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp)
+{
+    const double seconds = gp.horizon * problem.getSpec().timeUnitSeconds;
+    char text[160];
+    std::snprintf(text, sizeof text, "%.6g time units (%.3g h)", gp.horizon, seconds / 3600.0);
+    const double fieldEnd = problem.getField()->timeEnd();
+    if (std::isfinite(fieldEnd) && gp.t0 + gp.horizon >= fieldEnd - 1e-9 * std::max(1.0, std::abs(fieldEnd)))
+        return std::string("; the path must arrive before the forecast ends, ") + text +
+               " after departure: depart earlier, or hold the last forecast time past its end (current.horizon: hold_last, --beyond hold)";
+    return std::string("; the path must arrive within the planning horizon, ") + text +
+           " after departure (planner.horizon)";
+}
 }  // namespace
+
 
 PlannedPath planRoute(const MissionProblem &problem, double departure, const PlanOptions &o)
 {
@@ -188,6 +215,8 @@ PlannedPath planRoute(const MissionProblem &problem, double departure, const Pla
     if (!r.solved)
     {
         r.reason = noPathReason(status, *planner, dynamic_cast<const GliderSimpleSetup *>(ss.get()), limit);
+        if (r.reason.rfind("no path exists", 0) == 0)
+            r.reason += horizonNote(problem, gp);
         return r;
     }
     ompl::geometric::PathGeometric path = ss->getSolutionPath();

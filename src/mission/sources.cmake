@@ -4,6 +4,9 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/DepartureTimeSearch.cpp
   ${CMAKE_CURRENT_LIST_DIR}/IsoTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionLoader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/MissionReader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Sections.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/ForbiddenRegions.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Planning.cpp
 )

@@ -93,7 +93,7 @@ std::optional<double> TveSearch::calcOptimalCourse(double px, double py, double 
     // Heading through water that keeps the course along the edge: V (cos th, sin th) = s e - c.
     double th = std::atan2(r.fast * ey - c.v, r.fast * ex - c.u);
 
-    // Zermelo's law (000 Eq. 2) and the motion (000 Eq. 10): (x, y, th)' = F(x, y, th, t).
+    // Zermelo's law ([EichhornRAS] Eq. 2) and the motion ([EichhornRAS] Eq. 10): (x, y, th)' = F(x, y, th, t).
     auto rhs = [&](const Velocity &cv, double px_, double py_, double th_, double t_, double &dx, double &dy,
                    double &dth) {
         const Jacobian J = f.jacobian(px_, py_, z, t_);
@@ -208,7 +208,7 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
         }
     }
 
-    // A* heuristic (000 Eq. 1).
+    // A* heuristic ([EichhornRAS] Eq. 1).
     const double vmax = ctx.speed() + (options.heuristic ? ctx.maxCurrent() : 0.0);
     auto h = [&](Lattice::VertexId v) -> double {
         return options.heuristic ? std::hypot(lattice_.x(v) - gx, lattice_.y(v) - gy) / vmax : 0.0;
@@ -358,7 +358,7 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
                 break;
             lattice_.forEachSuccessor(u, [&](Lattice::VertexId v) {
                 if (!(du < d_[v]))
-                    return;  // d[u] >= d[v]: the edge cannot improve v (000 Table 1, difference 2)
+                    return;  // d[u] >= d[v]: the edge cannot improve v ([EichhornRAS] Table 1, difference 2)
                 const double vx = lattice_.x(v), vy = lattice_.y(v);
                 const bool inCone = !phiOpt || (options.neverPruneGoal && v == g) ||
                                     std::abs(angleDiff(*phiOpt, std::atan2(vy - uy, vx - ux))) <= halfWidth;

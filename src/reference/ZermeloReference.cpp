@@ -49,7 +49,7 @@ ZermeloReference::Y ZermeloReference::rhs(double t, const Y &s) const
     const Jacobian J = field_->jacobian(s.x, s.y, params_.depth, t);
     const double cs = std::cos(s.th), sn = std::sin(s.th);
     const double V = params_.speed;
-    // 000 Eq. 10 (motion) and Eq. 2 (Zermelo's navigation law).
+    // [EichhornRAS] Eq. 10 (motion) and Eq. 2 (Zermelo's navigation law).
     return {c.u + V * cs, c.v + V * sn, -J.uy * cs * cs + (J.ux - J.vy) * cs * sn + J.vx * sn * sn};
 }
 

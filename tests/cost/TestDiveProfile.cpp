@@ -1,4 +1,5 @@
-// Tests of the glider dive-profile travel time (003 Table I) and the optimal dive profile (003 Sec. III.B).
+// Tests of the glider dive-profile travel time ([EichhornOceans] Table I) and the optimal dive profile
+// ([EichhornOceans] Sec. III.B).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -288,7 +289,8 @@ TEST(DiveProfile, BathymetryLimitsTheDive)
         EXPECT_NEAR(dive.travelTime(p, 0, 0, L, 0, 0), exact, 1e-6 * exact);
     }
     // A shoal on the way (seafloor above the clearance): impassable for every profile.
-    auto shoal = std::make_shared<FunctionBathymetry>([](double x, double) { return x > 1.9 && x < 2.1 ? 3.0 : 500.0; });
+    auto shoal =
+        std::make_shared<FunctionBathymetry>([](double x, double) { return x > 1.9 && x < 2.1 ? 3.0 : 500.0; });
     DiveProfileTravelTime blocked(f, fine(V), d, shoal, 1);
     const DiveLegResult r = blocked.bestProfile(0, 0, L, 0, 0);
     EXPECT_EQ(r.profile, -1);

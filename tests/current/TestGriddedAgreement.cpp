@@ -1,6 +1,6 @@
 // Agreement of the gridded model with the analytic field it samples (issue 5 "Proof"): the meandering jet
-// (000 Sec. 6.1) sampled to a Cartesian NetCDF grid (spacing 0.1, time step 0.25, its own dimensionless units),
-// loaded with bilinear/linear interpolation, gives travel times within 1 % of the analytic field along fixed
+// ([EichhornRAS] Sec. 6.1) sampled to a Cartesian NetCDF grid (spacing 0.1, time step 0.25, its own dimensionless
+// units), loaded with bilinear/linear interpolation, gives travel times within 1 % of the analytic field along fixed
 // multi-leg paths, and ZA*TVE (grid 0.4, 3 sectors, region x [0, 10], y [-4, 4], V = 0.5) plans routes whose
 // travel times agree within 1 % with planning on the analytic field, same start and goal.
 #include <gtest/gtest.h>
@@ -47,7 +47,8 @@ protected:
         {
             glider_test::NcWriter w(path_);
             const int dt = w.dim("time", ts.size()), dy = w.dim("y", ys.size()), dx = w.dim("x", xs.size());
-            const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("y", NC_DOUBLE, {dy}), vx = w.var("x", NC_DOUBLE, {dx});
+            const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("y", NC_DOUBLE, {dy}),
+                      vx = w.var("x", NC_DOUBLE, {dx});
             w.text(vt, "units", "1");
             w.text(vx, "units", "1");
             w.text(vy, "units", "1");
@@ -149,8 +150,9 @@ TEST_F(JetGrid, TravelTimesAlongFixedMultiLegPathsAgreeWithinOnePercent)
     {
         double sx, sy, gx, gy, t0;
     };
-    for (const Pair &q : {Pair{0.4, -3.2, 7.6, 1.2, 0.0}, Pair{2.0, -2.4, 7.6, 1.2, 5.0}, Pair{9.6, -3.2, 1.2, 2.8, 0.0},
-                          Pair{1.0, 3.1, 8.3, -2.7, 12.5}, Pair{4.8, -0.4, 7.6, 1.2, 3.0}})
+    for (const Pair &q :
+         {Pair{0.4, -3.2, 7.6, 1.2, 0.0}, Pair{2.0, -2.4, 7.6, 1.2, 5.0}, Pair{9.6, -3.2, 1.2, 2.8, 0.0},
+          Pair{1.0, 3.1, 8.3, -2.7, 12.5}, Pair{4.8, -0.4, 7.6, 1.2, 3.0}})
     {
         GliderProblem gp;
         gp.field = jet;

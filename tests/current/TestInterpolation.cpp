@@ -1,5 +1,5 @@
-// 1-D interpolation schemes (003 Sec. II.C): what each reproduces exactly, Akima's lack of overshoot at a step,
-// and the overshoot factors used for the speed bound.
+// 1-D interpolation schemes ([EichhornOceans] Sec. II.C): what each reproduces exactly, Akima's lack of overshoot at a
+// step, and the overshoot factors used for the speed bound.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -108,7 +108,7 @@ TEST(Interpolation1D, CubicWithFewNodesDegradesToLowerDegree)
 TEST(Interpolation1D, AkimaDoesNotOvershootAtAStep)
 {
     // A tide-like abrupt change: 0 0 0 0 1 1 1 1. Akima stays within [0, 1] and is flat away from the step;
-    // the 4-point cubic overshoots (the "unnatural wiggles" of 003 Sec. II.C).
+    // the 4-point cubic overshoots (the "unnatural wiggles" of [EichhornOceans] Sec. II.C).
     const Axis a({0, 1, 2, 3, 4, 5, 6, 7});
     const std::vector<double> y{0, 0, 0, 0, 1, 1, 1, 1};
     double cubicMin = 0, cubicMax = 1;

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/mission/MissionRunner.h"
+#include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/NetCdfBathymetry.h"
 
 using namespace ompl_glider;
@@ -106,12 +106,13 @@ TEST(NetCdfBathymetry, LimitsTheDivesOfAMission)
     const double t = dive->travelTime(dive->profiles()[0], -40, 0, 40, 0, 0);
     EXPECT_NEAR(t, 80.0 / 0.6, 1e-9);
     // The seafloor at the goal's longitude is about 100 + 50 * 1.54 + 200 = 377 m: a 20 m clearance still leaves water.
-    double lon, lat;
-    problem.toGeographic(40, 0, lon, lat);
+    const LonLat g = problem.toGeographic({40, 0});
     const NetCdfBathymetry b(path, "depth", [&](double x, double y, double &lo, double &la) {
-        problem.toGeographic(x, y, lo, la);
+        const LonLat q = problem.toGeographic({x, y});
+        lo = q.lon;
+        la = q.lat;
     });
-    EXPECT_NEAR(b.seafloorDepth(40, 0), plane(lon, lat), 0.5);
+    EXPECT_NEAR(b.seafloorDepth(40, 0), plane(g.lon, g.lat), 0.5);
     const std::string bad = "name: b\nprojection: {lon0: -52, lat0: 48}\n"
                             "current: {type: uniform}\nregion: {x_min: -1, x_max: 1, y_min: -1, y_max: 1}\n"
                             "start: {x: 0, y: 0}\ngoal: {x: 1, y: 0}\n"

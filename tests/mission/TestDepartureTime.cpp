@@ -1,5 +1,5 @@
-// Tests of the optimal departure time search (000 Sec. 5): Akima curve, Brent's method, the whole scheme against
-// brute force on functions with several local minima.
+// Tests of the optimal departure time search ([EichhornRAS] Sec. 5): Akima curve, Brent's method, the whole scheme
+// against brute force on functions with several local minima.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -141,5 +141,7 @@ TEST(DepartureTime, HorizonCutsTheWindow)
     const DepartureSearchResult none = optimalDepartureTime(f, p);
     EXPECT_FALSE(none.found);
     EXPECT_EQ(none.fineEvaluations, 0u);
-    EXPECT_THROW(optimalDepartureTime(f, DepartureSearchParams{0, -1}), Error);
+    DepartureSearchParams reversed;
+    reversed.windowEnd = -1.0;
+    EXPECT_THROW(optimalDepartureTime(f, reversed), Error);
 }

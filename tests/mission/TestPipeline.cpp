@@ -199,6 +199,13 @@ TEST(Pipeline, PlannerParametersByTheirOmplNames)
     EXPECT_HAS(msg, "rejects");
     msg = errorOf(kGulfStreamYaml + "  parameters: {refiner_max_evaluations: 0.5}\n");
     EXPECT_HAS(msg, "refiner_max_evaluations");
+    msg = errorOf(kGulfStreamYaml + "  parameters: {delta_phi_max: 400}\n");  // the planner's own check
+    EXPECT_HAS(msg, "m.yaml:11");
+    EXPECT_HAS(msg, "planner.parameters.delta_phi_max");
+    EXPECT_HAS(msg, "(0, 180]");
+    msg = errorOf(kGulfStreamYaml + "  parameters: {heuristic: maybe}\n");  // OMPL would read it as false
+    EXPECT_HAS(msg, "planner.parameters.heuristic");
+    EXPECT_HAS(msg, "true or false");
     msg = errorOf(kGulfStreamYaml + "  parameters: {grid_size: 0.2}\n");
     EXPECT_HAS(msg, "planner.grid_size");
     msg = errorOf(std::string(kGulfStreamYaml).replace(kGulfStreamYaml.find("zastartve"), 9, "RRTstar") +
@@ -248,6 +255,7 @@ TEST(Pipeline, NoPathIsAnOutcomeWithItsReason)
     EXPECT_FALSE(r.plan.solved);
     EXPECT_FALSE(std::isfinite(r.plan.travelTime));
     EXPECT_HAS(r.plan.reason, "no path exists on this lattice");
+    EXPECT_HAS(r.plan.reason, "within the planning horizon, 2 time units");  // what bounded the search
     EXPECT_TRUE(r.waypoints.empty());
 }
 

@@ -90,7 +90,7 @@ struct Fixture
     }
 };
 
-/// Closed forms of the along-track speeds in a uniform current (SPEC.md 2).
+/// Closed forms of the along-track speeds in a uniform current.
 void roots(double px, double py, double cu, double cv, double V, double &fast, double &slow)
 {
     const double pc = px * cu + py * cv;

@@ -1,4 +1,4 @@
-// OMPL's RRT* on the time-augmented space in the meandering jet (000 Sec. 6.1): valid, time-forward paths.
+// OMPL's RRT* on the time-augmented space in the meandering jet ([EichhornRAS] Sec. 6.1): valid, time-forward paths.
 #include <cmath>
 #include <memory>
 #include <string>

@@ -26,7 +26,7 @@ std::vector<Lattice::VertexId> successors(const Lattice &l, Lattice::VertexId u)
 
 TEST(Lattice, OffsetCountsMatchSectors)
 {
-    // 000 Fig. 1: 1-sector 8, 2-sector 16, 3-sector 32 neighbours.
+    // [EichhornRAS] Fig. 1: 1-sector 8, 2-sector 16, 3-sector 32 neighbours.
     EXPECT_EQ(Lattice::offsets(1).size(), 8u);
     EXPECT_EQ(Lattice::offsets(2).size(), 16u);
     EXPECT_EQ(Lattice::offsets(3).size(), 32u);

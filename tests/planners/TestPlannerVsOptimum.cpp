@@ -1,6 +1,6 @@
 // ZA*TVE + smoothing + refinement against the optimal-control reference (Zermelo shooting) on the meandering jet
-// (000 Sec. 6.1): grid 0.4, 3 sectors, region x in [0, 10], y in [-4, 4], t0 = 0, V = 0.5, on start/goal pairs
-// that cross the jet. Travel times are re-simulated from t0 by resimulatePath (ompl/); every returned path passes
+// ([EichhornRAS] Sec. 6.1): grid 0.4, 3 sectors, region x in [0, 10], y in [-4, 4], t0 = 0, V = 0.5, on start/goal
+// pairs that cross the jet. Travel times are re-simulated from t0 by resimulatePath (ompl/); every returned path passes
 // PathGeometric::check(). Prints the table raw / smoothed / refined / optimum.
 #include <gtest/gtest.h>
 
@@ -113,11 +113,13 @@ TEST(PlannerVsOptimum, MeanderingJetCrossings)
         EXPECT_GE(row.refined, 0.997 * row.optimum);
     }
     std::printf("\nTravel times re-simulated from t0 = 0 (meandering jet, V = 0.5, ZA*TVE grid 0.4, 3 sectors; "
-                "wp = waypoints; * = lattice-limited pair)\n| start -> goal | raw ZA*TVE (wp) | smoothed (wp) | refined (wp) | optimum | smoothed/opt | "
+                "wp = waypoints; * = lattice-limited pair)\n| start -> goal | raw ZA*TVE (wp) | smoothed (wp) | "
+                "refined (wp) | optimum | smoothed/opt | "
                 "refined/opt |\n|---|---|---|---|---|---|---|\n");
     for (const Row &r : rows)
         std::printf("| (%.1f, %.1f) -> (%.1f, %.1f)%s | %.4f (%zu) | %.4f (%zu) | %.4f (%zu) | %.4f | %+.2f%% | "
                     "%+.2f%% |\n",
-                    r.sx, r.sy, r.gx, r.gy, r.latticeLimited ? " *" : "", r.raw, r.nRaw, r.smoothed, r.nSmoothed, r.refined, r.nRefined,
-                    r.optimum, 100 * (r.smoothed / r.optimum - 1), 100 * (r.refined / r.optimum - 1));
+                    r.sx, r.sy, r.gx, r.gy, r.latticeLimited ? " *" : "", r.raw, r.nRaw, r.smoothed, r.nSmoothed,
+                    r.refined, r.nRefined, r.optimum, 100 * (r.smoothed / r.optimum - 1),
+                    100 * (r.refined / r.optimum - 1));
 }

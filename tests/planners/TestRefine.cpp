@@ -18,7 +18,7 @@ using namespace ompl_glider::test;
 
 TEST(WaypointRefiner, ApproachesZermeloOptimumInShearFlow)
 {
-    // u = -y, V = 1, (3.5, -1.8) -> (0, 0): the optimal time is 5.26493205 (Betts Ex. 10.148). Start from a poor
+    // u = -y, V = 1, (3.5, -1.8) -> (0, 0): the optimal time is 5.26493205 ([BettsOC] Ex. 10.148). Start from a poor
     // feasible polyline (about 5x slower); the refined path must come within 1% of the optimum, never below it
     // by more than the travel-time integration error.
     auto ctx = makeContext(std::make_shared<LinearShear>(-1.0), 1.0, box(-1, 6, -3, 3), nullptr, 1e-5);

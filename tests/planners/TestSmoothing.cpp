@@ -1,5 +1,5 @@
-// Path smoothing in a time-varying field (000 Table 3): closed forms in a uniform current, never a later arrival
-// on random paths in the meandering jet, obstacles respected, infeasible input untouched, OMPL path adapter.
+// Path smoothing in a time-varying field ([EichhornRAS] Table 3): closed forms in a uniform current, never a later
+// arrival on random paths in the meandering jet, obstacles respected, infeasible input untouched, OMPL path adapter.
 #include <gtest/gtest.h>
 
 #include <cmath>

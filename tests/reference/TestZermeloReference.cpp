@@ -16,7 +16,7 @@ using namespace ompl_glider;
 
 TEST(ZermeloReference, BettsShearFlow)
 {
-    // SPEC.md 1: u = a y with a = -1, V = 1, (3.5, -1.8) -> (0, 0): optimal time 5.26493205 (Betts Ex. 10.148).
+    // u = a y with a = -1, V = 1, (3.5, -1.8) -> (0, 0): optimal time 5.26493205 ([BettsOC] Ex. 10.148).
     ZermeloParams p;
     p.speed = 1.0;
     ZermeloReference ref(std::make_shared<LinearShear>(-1.0), p);

@@ -1,7 +1,7 @@
 #pragma once
 /// @file DiveProfile.h
 /// @brief Glider dive profiles: travel time of a leg flown as a saw-tooth through a depth-varying current
-/// (003 Table I) and the optimal dive profile among a generated set (003 Sec. III.B).
+/// ([EichhornOceans] Table I) and the optimal dive profile among a generated set ([EichhornOceans] Sec. III.B).
 
 #include <cstdint>
 #include <functional>
@@ -29,14 +29,14 @@ struct DiveProfile
     }
 };
 
-/// @brief How the profile of a leg is chosen (003 Sec. III.B).
+/// @brief How the profile of a leg is chosen ([EichhornOceans] Sec. III.B).
 enum class DiveProfileSelection
 {
     Fastest,           ///< the profile with the least travel time
     DeepestUnderLimit  ///< the largest amplitude whose time stays under the limit (data at all depths), else fastest
 };
 
-/// @brief Parameters that generate the profile set (003 Sec. III.B, Fig. 4) and choose among it.
+/// @brief Parameters that generate the profile set ([EichhornOceans] Sec. III.B, Fig. 4) and choose among it.
 ///
 /// Climb-to levels: climbToLevels values evenly spaced in [zMin, climbToMax]; dive-to levels: diveToLevels values
 /// evenly spaced in [zMin + minRange, zMax]; every pair with diveTo - climbTo >= minRange is a profile.
@@ -97,18 +97,18 @@ struct DiveLegResult
 
 /// @brief Travel time of legs flown with dive profiles through a depth-varying current.
 ///
-/// TRAVELTIME-GLIDER (003 Table I): the leg is split into n = ceil(1/h) equal segments; in each segment the glider
-/// goes from the climb-to depth at the segment's start to the dive-to depth at its end, its depth linear in the
-/// horizontal progress, and the segment's time is integrated with the adaptive step of CALC-TRAVELTIME
-/// (001 Table III) reading the current at the local depth. In a depth-uniform current the result is exactly the
-/// sum of TravelTimeCalculator::travelTime() over the same segments (same arithmetic), and with h = 1 exactly the
+/// TRAVELTIME-GLIDER ([EichhornOceans] Table I): the leg is split into n = ceil(1/h) equal segments; in each segment
+/// the glider goes from the climb-to depth at the segment's start to the dive-to depth at its end, its depth linear in
+/// the horizontal progress, and the segment's time is integrated with the adaptive step of CALC-TRAVELTIME
+/// ([EichhornIWK] Table III) reading the current at the local depth. In a depth-uniform current the result is exactly
+/// the sum of TravelTimeCalculator::travelTime() over the same segments (same arithmetic), and with h = 1 exactly the
 /// 2-D travel time of the leg. The vehicle speed is the horizontal speed through water.
 ///
 /// With a bathymetry, a segment's dive is limited to (shallowest seafloor at its start, middle and end) minus the
 /// clearance; the climb-to depth is limited to that too; a segment where that limit is <= 0 is impassable.
 ///
-/// bestProfile() evaluates all profiles, in parallel on the pool (003 Sec. IV), and chooses per
-/// DiveProfileParams::selection (003 Sec. III.B). Each profile evaluation counts one CFC. Thread-safe.
+/// bestProfile() evaluates all profiles, in parallel on the pool ([EichhornOceans] Sec. IV), and chooses per
+/// DiveProfileParams::selection ([EichhornOceans] Sec. III.B). Each profile evaluation counts one CFC. Thread-safe.
 class DiveProfileTravelTime
 {
 public:
@@ -121,16 +121,16 @@ public:
                           DiveProfileParams dive, std::shared_ptr<const Bathymetry> bathymetry = nullptr,
                           unsigned threads = 0);
 
-    /// @brief TRAVELTIME-GLIDER (003 Table I) of one profile; +inf when impassable. One CFC.
+    /// @brief TRAVELTIME-GLIDER ([EichhornOceans] Table I) of one profile; +inf when impassable. One CFC.
     double travelTime(const DiveProfile &profile, double x1, double y1, double x2, double y2, double tStart) const;
 
-    /// @brief All profiles evaluated (in parallel), the chosen one per 003 Sec. III.B.
+    /// @brief All profiles evaluated (in parallel), the chosen one per [EichhornOceans] Sec. III.B.
     DiveLegResult bestProfile(double x1, double y1, double x2, double y2, double tStart) const;
 
     /// @brief Same as bestProfile() on the calling thread only (the serial reference of the speedup benchmark).
     DiveLegResult bestProfileSerial(double x1, double y1, double x2, double y2, double tStart) const;
 
-    /// @brief Chooses among already computed profile times per the selection rule (003 Sec. III.B).
+    /// @brief Chooses among already computed profile times per the selection rule ([EichhornOceans] Sec. III.B).
     int choose(const std::vector<double> &times) const;
 
     /// @brief The generated profile set.

@@ -1,8 +1,8 @@
 #pragma once
 /// @file DiveProfilePool.h
 /// @brief A fixed pool of worker threads that runs independent evaluations in parallel: the dive profiles of one
-/// leg (003 Sec. IV: "a thread pool is created at the start of the mission planning system") and the independent
-/// departure-time searches (000 Sec. 5.3).
+/// leg ([EichhornOceans] Sec. IV: "a thread pool is created at the start of the mission planning system") and the
+/// independent departure-time searches ([EichhornRAS] Sec. 5.3).
 
 #include <atomic>
 #include <condition_variable>

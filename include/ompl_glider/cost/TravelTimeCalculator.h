@@ -1,6 +1,6 @@
 #pragma once
 /// @file TravelTimeCalculator.h
-/// @brief Travel time along a straight leg through a time-varying current. SPEC.md section 2.
+/// @brief Travel time along a straight leg through a time-varying current.
 
 #include <cstdint>
 #include <memory>
@@ -11,7 +11,7 @@
 namespace ompl_glider
 {
 /// @brief The two along-track speeds at which a vehicle of speed V through water stays on a leg of unit
-/// direction p in current c: the roots of |s p - c| = V (line-circle intersection, 000 Eq. 4-6).
+/// direction p in current c: the roots of |s p - c| = V (line-circle intersection, [EichhornRAS] Eq. 4-6).
 struct AlongTrackSpeeds
 {
     bool feasible{false};  ///< false when disc <= 0 or the fast root <= 0 (the current pushes the vehicle off or back)
@@ -20,10 +20,11 @@ struct AlongTrackSpeeds
 };
 
 /// @brief Roots of the line-circle intersection for unit direction (px, py), current c and speed V.
-/// disc = (p.c)^2 + V^2 - c.c (000 Eq. 5); feasible iff disc > 0 and p.c + sqrt(disc) > 0 (000 Eq. 6).
+/// disc = (p.c)^2 + V^2 - c.c ([EichhornRAS] Eq. 5); feasible iff disc > 0 and p.c + sqrt(disc) > 0 ([EichhornRAS] Eq.
+/// 6).
 AlongTrackSpeeds alongTrackSpeeds(double px, double py, const Velocity &c, double V);
 
-/// @brief Parameters of the adaptive-step travel-time integration (CALC-TRAVELTIME, 001 Table III).
+/// @brief Parameters of the adaptive-step travel-time integration (CALC-TRAVELTIME, [EichhornIWK] Table III).
 /// Step sizes are fractions of the leg length, as in the paper; eps is an absolute time tolerance, so it must be
 /// chosen in the field's time unit (1e-3 for the dimensionless jet; about 1 s for missions in metres/seconds).
 struct TravelTimeParams
@@ -33,11 +34,11 @@ struct TravelTimeParams
     double hMin{1e-3};  ///< smallest step, fraction of the leg length
     double hMax{0.5};   ///< largest step, fraction of the leg length
     double eps{1e-3};   ///< tolerance of the local error |t_rough - t_improved| per step (time units)
-    double tau{0.9};    ///< safety factor in (0, 1] of the step-size law 001 Eq. 5
+    double tau{0.9};    ///< safety factor in (0, 1] of the step-size law [EichhornIWK] Eq. 5
     double depth{0.0};  ///< depth at which the current is read (positive down)
 };
 
-/// @brief Earliest and latest durations to fly a leg (SPEC.md 2): between the two roots the vehicle chooses its
+/// @brief Earliest and latest durations to fly a leg: between the two roots the vehicle chooses its
 /// pace; where the slow root is <= 0 it can hold position and the latest arrival is unbounded.
 struct ArrivalWindow
 {
@@ -46,24 +47,26 @@ struct ArrivalWindow
 };
 
 /// @brief Travel time of straight legs in a current field, integrated with the adaptive step of CALC-TRAVELTIME
-/// (001 Table III, 000 Sec. 3.2): per step a rough time with the current at the step's start, an improved time
-/// with the mean of the start and end currents, local error = their difference, and the new step
+/// ([EichhornIWK] Table III, [EichhornRAS] Sec. 3.2): per step a rough time with the current at the step's start, an
+/// improved time with the mean of the start and end currents, local error = their difference, and the new step
 /// h_new = max(h_min, min(h_max, tau h sqrt(eps / err))); a step is accepted when err < eps or h = h_min.
 ///
 /// Infeasible legs (a step with disc <= 0 or a non-positive effective speed, a leg that touches land anywhere
-/// (CurrentField::segmentInWater), or a time after the field's end) cost +infinity, never NaN. Each call to travelTime() or arrivalWindow() counts one cost-function call
-/// (CFC, 000 Table 4); the counter (ShardedCounter) is exact across threads and the object is safe to share.
+/// (CurrentField::segmentInWater), or a time after the field's end) cost +infinity, never NaN. Each call to
+/// travelTime() or arrivalWindow() counts one cost-function call (CFC, [EichhornRAS] Table 4); the counter
+/// (ShardedCounter) is exact across threads and the object is safe to share.
 class TravelTimeCalculator
 {
 public:
     TravelTimeCalculator(std::shared_ptr<const CurrentField> field, TravelTimeParams params = {});
 
     /// @brief Fastest travel time from (x1, y1) leaving at tStart to (x2, y2); +inf if infeasible. One CFC.
-    /// @note CALC-TRAVELTIME, 001 Table III; 000 Eq. 3-6.
+    /// @note CALC-TRAVELTIME, [EichhornIWK] Table III; [EichhornRAS] Eq. 3-6.
     double travelTime(double x1, double y1, double x2, double y2, double tStart) const;
 
     /// @brief Fastest travel time of a leg along which the depth changes linearly from z1 to z2 (one segment of a
-    /// glider's dive, 003 Table I); the same integration as travelTime(), which is the case z1 = z2 = depth. One CFC.
+    /// glider's dive, [EichhornOceans] Table I); the same integration as travelTime(), which is the case z1 = z2 =
+    /// depth. One CFC.
     double travelTimeThroughDepth(double x1, double y1, double z1, double x2, double y2, double z2,
                                   double tStart) const;
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file CurrentField.h
-/// @brief Interface of an ocean-current (or wind) field c(x, y, z, t). SPEC.md section 1.
+/// @brief Interface of an ocean-current (or wind) field c(x, y, z, t).
 
 #include <cstdint>
 #include <limits>
@@ -18,7 +18,7 @@ struct Velocity
     double v{0.0};  ///< y component
 };
 
-/// @brief Spatial Jacobian of the horizontal current (needed by Zermelo's navigation law, 000 Eq. 2).
+/// @brief Spatial Jacobian of the horizontal current (needed by Zermelo's navigation law, [EichhornRAS] Eq. 2).
 struct Jacobian
 {
     double ux{0.0};  ///< du/dx
@@ -43,7 +43,7 @@ struct Region
 /// @brief A horizontal current field c(x, y, z, t) in a local Cartesian frame.
 ///
 /// Coordinates are metres and seconds for real forecasts, dimensionless for analytic test flows.
-/// Every query through velocity() or jacobian() counts one current-model call (CMC, 000 Table 4);
+/// Every query through velocity() or jacobian() counts one current-model call (CMC, [EichhornRAS] Table 4);
 /// the counter (ShardedCounter) is exact and cheap when several threads query the same field.
 /// Implementations override evaluate() / evaluateJacobian() and must be thread-safe for const use.
 class CurrentField
@@ -65,7 +65,7 @@ public:
         return evaluateJacobian(x, y, z, t);
     }
 
-    /// @brief An upper bound of |c| over the region and time window (the A*TVE heuristic, 000 Eq. 1).
+    /// @brief An upper bound of |c| over the region and time window (the A*TVE heuristic, [EichhornRAS] Eq. 1).
     virtual double maxSpeed(const Region &region) const = 0;
 
     /// @brief Stream function psi with u = -dpsi/dy, v = dpsi/dx, where the field has one.

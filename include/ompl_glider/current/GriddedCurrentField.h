@@ -1,6 +1,7 @@
 #pragma once
 /// @file GriddedCurrentField.h
-/// @brief A current field interpolated from gridded forecast data (003 Sec. II.C, 000 Sec. 3.4.2).
+/// @brief A current field interpolated from gridded forecast data ([EichhornOceans] Sec. II.C, [EichhornRAS] Sec.
+/// 3.4.2).
 
 #include <cstdint>
 #include <string>
@@ -24,7 +25,7 @@ BeyondForecast parseBeyondForecast(const std::string &name);
 /// @brief Interpolation schemes and policies of a gridded field.
 struct GriddedFieldOptions
 {
-    Interp2D xy{Interp2D::Bilinear};            ///< horizontal scheme (first step of 003 Fig. 2)
+    Interp2D xy{Interp2D::Bilinear};            ///< horizontal scheme (first step of [EichhornOceans] Fig. 2)
     Interp1D depth{Interp1D::Linear};           ///< depth scheme (second step)
     Interp1D time{Interp1D::Linear};            ///< time scheme (third step)
     BeyondForecast beyond{BeyondForecast::Refuse};  ///< policy after the last forecast time
@@ -52,8 +53,8 @@ struct GriddedData
     std::vector<std::uint8_t> water;  ///< 1 = water, 0 = land/fill; empty means all water
 };
 
-/// @brief The ocean-current model of 003 Sec. II.C: horizontal interpolation on each depth layer and forecast
-/// time, then 1-D interpolation in depth, then in time, each with its own scheme (GriddedFieldOptions).
+/// @brief The ocean-current model of [EichhornOceans] Sec. II.C: horizontal interpolation on each depth layer and
+/// forecast time, then 1-D interpolation in depth, then in time, each with its own scheme (GriddedFieldOptions).
 ///
 /// - Rectilinear grids interpolate in x/y directly (non-uniform axes allowed). Curvilinear grids (and
 ///   geographic grids after projection) first locate the point: a bucket index gives a start cell, then a walk

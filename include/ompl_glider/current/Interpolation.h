@@ -1,7 +1,7 @@
 #pragma once
 /// @file Interpolation.h
-/// @brief One- and two-dimensional interpolation schemes of the gridded ocean-current model (003 Sec. II.C,
-/// 000 Sec. 3.4.2): x/y nearest, bilinear, bicubic; depth and time nearest, linear, cubic, Akima.
+/// @brief One- and two-dimensional interpolation schemes of the gridded ocean-current model ([EichhornOceans] Sec.
+/// II.C, [EichhornRAS] Sec. 3.4.2): x/y nearest, bilinear, bicubic; depth and time nearest, linear, cubic, Akima.
 
 #include <array>
 #include <cstddef>
@@ -10,7 +10,7 @@
 
 namespace ompl_glider
 {
-/// @brief Horizontal (x/y) interpolation scheme (003 Sec. II.C, first step of Fig. 2).
+/// @brief Horizontal (x/y) interpolation scheme ([EichhornOceans] Sec. II.C, first step of Fig. 2).
 enum class Interp2D
 {
     Nearest,   ///< value of the nearest node (piecewise constant)
@@ -18,7 +18,7 @@ enum class Interp2D
     Bicubic    ///< tensor product of 4-point Lagrange cubics: reproduces every polynomial of degree <= 3 in x and in y
 };
 
-/// @brief Depth or time interpolation scheme (003 Sec. II.C, second and third steps of Fig. 2).
+/// @brief Depth or time interpolation scheme ([EichhornOceans] Sec. II.C, second and third steps of Fig. 2).
 enum class Interp1D
 {
     Nearest,  ///< nearest node

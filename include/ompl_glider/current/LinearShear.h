@@ -1,6 +1,6 @@
 #pragma once
 /// @file LinearShear.h
-/// @brief Linear shear flow u = a*y, v = 0: Zermelo's classic problem (SPEC.md 1; Betts Example 10.148).
+/// @brief Linear shear flow u = a*y, v = 0: Zermelo's classic problem ([BettsOC] Example 10.148).
 
 #include "ompl_glider/current/CurrentField.h"
 

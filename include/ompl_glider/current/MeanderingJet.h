@@ -1,6 +1,6 @@
 #pragma once
 /// @file MeanderingJet.h
-/// @brief The meandering-jet model of the Gulf Stream (000 Sec. 6.1, Eq. 7-9).
+/// @brief The meandering-jet model of the Gulf Stream ([EichhornRAS] Sec. 6.1, Eq. 7-9).
 
 #include <mutex>
 
@@ -8,7 +8,7 @@
 
 namespace ompl_glider
 {
-/// @brief Parameters of the meandering jet; defaults are the paper's set (000 Sec. 6.1).
+/// @brief Parameters of the meandering jet; defaults are the paper's set ([EichhornRAS] Sec. 6.1).
 struct MeanderingJetParams
 {
     double B0{1.2};                       ///< mean meander amplitude
@@ -21,7 +21,7 @@ struct MeanderingJetParams
 
 /// @brief Stream function phi = 1 - tanh((y - B(t) cos(k(x - ct))) / sqrt(1 + k^2 B(t)^2 sin^2(k(x - ct)))),
 /// B(t) = B0 + eps cos(omega t + theta), u = -dphi/dy, v = dphi/dx. Analytic velocity and Jacobian.
-/// @note 000 Eq. 7-9. Peak speed 1.0 on the jet axis for the paper's parameters; depth-independent.
+/// @note [EichhornRAS] Eq. 7-9. Peak speed 1.0 on the jet axis for the paper's parameters; depth-independent.
 class MeanderingJet : public CurrentField
 {
 public:

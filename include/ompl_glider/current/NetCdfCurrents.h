@@ -1,7 +1,7 @@
 #pragma once
 /// @file NetCdfCurrents.h
 /// @brief Loading ocean-current forecasts from NetCDF files (ROMS, HYCOM, Copernicus Marine, NEMO, POP...) into
-/// a GriddedCurrentField in local Cartesian metres and seconds (003 Sec. II.B-C, 000 Sec. 3.4).
+/// a GriddedCurrentField in local Cartesian metres and seconds ([EichhornOceans] Sec. II.B-C, [EichhornRAS] Sec. 3.4).
 
 #include <limits>
 #include <memory>
@@ -41,7 +41,7 @@ struct NetCdfCurrentOptions
     // --- model ---
     GriddedFieldOptions field;  ///< schemes (xy bilinear, depth linear, time linear), BeyondForecast, name
 
-    // --- what to load (003 Sec. II.B: only the region, depth layers and times the mission needs) ---
+    // --- what to load ([EichhornOceans] Sec. II.B: only the region, depth layers and times the mission needs) ---
     double lonMin{std::numeric_limits<double>::quiet_NaN()};  ///< region of interest (x in Cartesian mode);
     double lonMax{std::numeric_limits<double>::quiet_NaN()};  ///< NaN = the whole file. lonMax < lonMin means
     double latMin{std::numeric_limits<double>::quiet_NaN()};  ///< the region crosses the antimeridian.
@@ -113,4 +113,40 @@ struct NetCdfCurrents
 ///
 /// @throws Error naming the file, the variable and what was expected when something is missing or wrong.
 NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &options = {});
+
+/// @brief The time axis of a forecast file as loadNetCdfCurrents() reads it, without its velocities: what a
+/// mission needs to turn ISO dates into field times before the forecast is loaded.
+///
+/// For a dated axis, calendar and originSeconds are the values NetCdfCurrents::calendar / originSeconds of the
+/// loaded forecast take, so field time t is the date dateFromCalendarEpoch(originSeconds + t, calendar).
+struct NetCdfTimeAxis
+{
+    bool found{false};      ///< the velocities have a time dimension with a coordinate variable (else a steady field)
+    bool dated{false};      ///< CF units "<unit> since <date>" (else raw values: loadNetCdfCurrents() accepts
+                            ///< them only in Cartesian files)
+    std::string variable;   ///< the time coordinate variable
+    Calendar calendar{Calendar::Standard};  ///< its calendar attribute (dated axes)
+    double originSeconds{0.0};  ///< first time, seconds since the calendar epoch (dated axes; 0 otherwise)
+    std::size_t size{0};        ///< number of forecast times
+    double span{0.0};           ///< last minus first time: seconds (dated axes) or the file's units (raw values)
+};
+
+/// @brief Finds and reads the time axis of the forecast's velocities with the loader's own detection (the same
+/// code): the eastward velocity (NetCdfCurrentOptions::uName, else its CF standard_name or usual names), then
+/// among its dimensions the one whose 1-D coordinate variable is named by timeName, or else has units
+/// "<unit> since <date>", standard_name "time" or axis "T" (or a usual name such as time, time_counter,
+/// ocean_time), whatever the variable is called.
+///
+/// Only the names in `options` are used (uName, lonName, latName, depthName, timeName, coordinates); vName and
+/// the rest of the grid are not checked, so a file this accepts may still fail to load.
+/// @returns found = false when the velocities have no time dimension.
+/// @throws Error naming the file (and the variable) when the file is not NetCDF, a given name is missing or not
+/// on a dimension of u, no velocity variable is found, the time units or calendar are not understood, or the
+/// times are not finite and strictly increasing.
+NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const NetCdfCurrentOptions &options);
+
+/// @brief readNetCdfTimeAxis() with only the names of the time and eastward velocity variables (empty: found
+/// automatically).
+NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const std::string &timeName = "",
+                                  const std::string &uName = "");
 }  // namespace ompl_glider

@@ -20,7 +20,7 @@ struct IceAdvectionParams
 };
 
 /// @brief A polygon of ice that moves rigidly (translation only) and under which a glider may stay submerged for
-/// at most maxSubmergedTime, because it cannot surface there (ice operations: 000 ref. [1]).
+/// at most maxSubmergedTime, because it cannot surface there (ice operations: [EichhornIce]).
 ///
 /// Motion: the shape is given at time tRef; at time t it is the shape shifted by the displacement d(t), d(tRef) = 0.
 /// - Drifting form: d(t) = v (t - tRef) with a constant velocity v (exact).

@@ -11,7 +11,7 @@ namespace ompl_glider
 ///
 /// Method: exact segment-polygon intersection of Polygon::segmentIntersects (closed polygon: touching a vertex or
 /// running along an edge counts as meeting it). Tolerance: the orientation filter of Polygon (about 1e-15
-/// relative), resolved towards "blocked". Times are ignored. Obstacle avoidance near coasts: 004 Sec. II.
+/// relative), resolved towards "blocked". Times are ignored. Obstacle avoidance near coasts: [IsernObstacles] Sec. II.
 class StaticRegion : public ForbiddenRegion
 {
 public:

@@ -1,7 +1,7 @@
 #pragma once
 /// @file AkimaSpline.h
 /// @brief Akima (1970) interpolation of scattered 1-D data: a local cubic Hermite curve that does not overshoot at
-/// abrupt changes, used to approximate travel time against departure time (000 Sec. 5.2).
+/// abrupt changes, used to approximate travel time against departure time ([EichhornRAS] Sec. 5.2).
 
 #include <vector>
 

@@ -1,7 +1,8 @@
 #pragma once
 /// @file DepartureTimeSearch.h
-/// @brief Optimal departure time (000 Sec. 5, 001 Sec. 4): supporting points over the departure window, Akima
-/// interpolation to bracket the global minimum, Brent's method to refine it; every evaluation is a full search.
+/// @brief Optimal departure time ([EichhornRAS] Sec. 5, [EichhornIWK] Sec. 4): supporting points over the departure
+/// window, Akima interpolation to bracket the global minimum, Brent's method to refine it; every evaluation is a full
+/// search.
 
 #include <cstddef>
 #include <functional>
@@ -23,14 +24,15 @@ struct DepartureSearchParams
 {
     double windowBegin{0.0};  ///< earliest departure
     double windowEnd{0.0};    ///< latest departure (before the horizon cut)
-    double spacing{1.0};      ///< Delta t_dep between supporting points (000 Sec. 5.2: should resolve the local minima)
+    /// Delta t_dep between supporting points ([EichhornRAS] Sec. 5.2: should resolve the local minima)
+    double spacing{1.0};
     double tolerance{1e-3};   ///< absolute tolerance of Brent's method on the departure time
     unsigned maxBrentEvaluations{40};  ///< at most this many refining searches
     /// Half-width of Brent's bracket around the Akima minimum, in supporting-point spacings; <= 0: 1 with fine
     /// supporting points, 2 with coarse ones (a coarser graph can shift the minimum by about a spacing).
     double bracketSpacings{0.0};
     /// Forecast horizon: a departure whose arrival lies after it does not count (its travel time is +inf), and the
-    /// window is cut at horizon - minTripDuration (000 Sec. 5.3). +inf: no horizon.
+    /// window is cut at horizon - minTripDuration ([EichhornRAS] Sec. 5.3). +inf: no horizon.
     double horizon{std::numeric_limits<double>::infinity()};
     double minTripDuration{0.0};  ///< lower bound of any trip's duration (e.g. distance / (V + max|c|))
     unsigned threads{0};          ///< supporting points evaluated on this many threads; 0 = all cores, 1 = serial
@@ -69,9 +71,9 @@ std::pair<double, double> brentMinimize(const std::function<double(double)> &f, 
                                         double tol, unsigned maxEvaluations,
                                         std::vector<DepartureSample> *calls = nullptr);
 
-/// @brief Optimal departure time (000 Sec. 5.2, three steps).
+/// @brief Optimal departure time ([EichhornRAS] Sec. 5.2, three steps).
 ///  1. Supporting points every @c spacing over [windowBegin, windowEnd'] (windowEnd' = the horizon cut), evaluated in
-///     parallel with @p coarse when given (a coarser graph, 000 Sec. 5.3), else with @p fine.
+///     parallel with @p coarse when given (a coarser graph, [EichhornRAS] Sec. 5.3), else with @p fine.
 ///  2. Akima interpolation through them (impassable points take a value above every finite one); its global
 ///     minimum t* is bracketed by [t* - w, t* + w] within the window, w = bracketSpacings * spacing.
 ///  3. Brent's method with @p fine inside the bracket, started at t*.

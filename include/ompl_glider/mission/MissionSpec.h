@@ -1,7 +1,7 @@
 #pragma once
 /// @file MissionSpec.h
-/// @brief A glider mission as read from a YAML mission file (003 Sec. IV: start, goal, start time, region,
-/// restricted areas and obstacles, projection, dive-profile parameters; SPEC.md 6).
+/// @brief A glider mission as read from a YAML mission file ([EichhornOceans] Sec. IV: start, goal, start time, region,
+/// restricted areas and obstacles, projection, dive-profile parameters).
 ///
 /// Units: positions and times are in the current field's units: metres and seconds for NetCDF forecasts,
 /// dimensionless for the analytic flows. `units.length_m` / `units.time_s` say how many metres / seconds one
@@ -70,7 +70,7 @@ struct RegionSpec
     double lonMin{0}, lonMax{0}, latMin{0}, latMax{0};  ///< lon/lat bounds
 };
 
-/// @brief Departure: a fixed time, or a window searched for the optimal departure (000 Sec. 5).
+/// @brief Departure: a fixed time, or a window searched for the optimal departure ([EichhornRAS] Sec. 5).
 struct DepartureSpec
 {
     double time{0.0};           ///< fixed departure time (field units; ISO dates are converted with the epoch)
@@ -79,7 +79,7 @@ struct DepartureSpec
     double end{0.0};            ///< window end
     double spacing{1.0};        ///< supporting-point spacing
     double tolerance{1e-3};     ///< Brent tolerance on the departure time
-    double coarseGridSize{0.0}; ///< > 0: supporting points on a lattice of this spacing (000 Sec. 5.3)
+    double coarseGridSize{0.0}; ///< > 0: supporting points on a lattice of this spacing ([EichhornRAS] Sec. 5.3)
     int coarseSectors{0};       ///< sectors of the coarse lattice (0: same as the planner)
     unsigned threads{0};        ///< parallel searches (0: all cores)
 };
@@ -91,8 +91,8 @@ struct VehicleSpec
     double depth{0.0};  ///< depth at which the 2-D planner reads the current
 };
 
-/// @brief Dive profiles (003 Sec. III.B) and bathymetry. Depths are metres (positive down) for every field; the
-/// analytic flows are depth-uniform, so there every profile flies the 2-D travel time.
+/// @brief Dive profiles ([EichhornOceans] Sec. III.B) and bathymetry. Depths are metres (positive down) for every
+/// field; the analytic flows are depth-uniform, so there every profile flies the 2-D travel time.
 struct DiveSpec
 {
     bool enabled{false};     ///< dive profiles evaluated on the planned legs
@@ -211,7 +211,7 @@ struct MissionSpec
     ForbiddenSpec forbidden;
     PlannerSpec planner;
     OutputSpec outputs;
-    std::vector<double> speeds;    ///< speed sweep (003 Table VI); empty = none
+    std::vector<double> speeds;    ///< speed sweep ([EichhornOceans] Table VI); empty = none
 };
 
 /// @brief Reads and validates a YAML mission file. Every field is checked: an unknown field, a wrong type, a

@@ -1,6 +1,6 @@
 #pragma once
 /// @file NetCdfBathymetry.h
-/// @brief Seafloor depth from a NetCDF grid, limiting the glider's dives (003 Sec. III; SPEC.md 2).
+/// @brief Seafloor depth from a NetCDF grid, limiting the glider's dives ([EichhornOceans] Sec. III).
 
 #include <functional>
 #include <memory>

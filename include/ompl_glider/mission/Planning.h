@@ -78,7 +78,7 @@ struct MissionWaypoint
     double legTime{0.0};              ///< travel time of the leg that reaches it
 };
 
-/// @brief One row of the speed sweep ([GarauDive] Table VI).
+/// @brief One row of the speed sweep ([EichhornOceans] Table VI).
 struct SpeedSweepRow
 {
     double speed{0.0};               ///< vehicle speed
@@ -113,7 +113,7 @@ struct MissionResult
     PlannedPath plan;                       ///< the path at the chosen departure
     std::vector<MissionWaypoint> waypoints; ///< final path for the pilot (start first; empty without a path)
     bool diveProfiles{false};               ///< dive profiles evaluated
-    std::vector<DiveProfile> profileSet;    ///< the generated profile set ([GarauDive] Sec. III.B)
+    std::vector<DiveProfile> profileSet;    ///< the generated profile set ([EichhornOceans] Sec. III.B)
     double diveTravelTime{std::numeric_limits<double>::infinity()};  ///< travel time flying the chosen profiles
     std::optional<DepartureSearchResult> departureSearch;  ///< when a window was given
     std::optional<OptimumReference> optimum;               ///< when asked (RunOptions::optimum)
@@ -133,7 +133,7 @@ PlannedPath planRoute(const MissionProblem &problem, double departure, const Pla
 /// search: thread-safe, +inf when no path. @p gridSize / @p sectors 0: the planner's.
 TravelTimeOfDeparture departureFunction(const MissionProblem &problem, double gridSize = 0.0, int sectors = 0);
 
-/// @brief The speed sweep ([GarauDive] Table VI): planRoute() at every speed from the departure tDep.
+/// @brief The speed sweep ([EichhornOceans] Table VI): planRoute() at every speed from the departure tDep.
 std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep, const std::vector<double> &speeds,
                                       const ProgressSink &progress = {});
 
@@ -147,7 +147,8 @@ struct PilotWaypoints
 };
 
 /// @brief Waypoints for the pilot from a planned path: geographic coordinates, ISO times and, with dive profiles
-/// ([GarauDive] Sec. III), the profile chosen for each leg (evaluated in parallel) and the arrival times flying it.
+/// ([EichhornOceans] Sec. III), the profile chosen for each leg (evaluated in parallel) and the arrival times flying
+/// it.
 PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath &plan);
 
 /// @brief The optimal-control reference from the start at @p departure (shooting; no forbidden regions).

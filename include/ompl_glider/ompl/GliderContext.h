@@ -26,7 +26,7 @@ struct GliderContext
     {
         return travel->params().speed;
     }
-    /// @brief Upper bound of the current speed over the region and time window (000 Eq. 1).
+    /// @brief Upper bound of the current speed over the region and time window ([EichhornRAS] Eq. 1).
     double maxCurrent() const
     {
         return field->maxSpeed(region);

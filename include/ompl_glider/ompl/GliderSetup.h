@@ -13,7 +13,7 @@
 
 namespace ompl_glider
 {
-/// @brief A glider planning problem. Defaults: the meandering-jet region of 000 Sec. 6.1 (x in [0, 10],
+/// @brief A glider planning problem. Defaults: the meandering-jet region of [EichhornRAS] Sec. 6.1 (x in [0, 10],
 /// y in [-4, 4]), t0 = 0, horizon 60, TravelTimeParams defaults (V = 0.5), no environment, goal tolerance 1e-3
 /// (field units: set it for metric missions). field, start and goal have no default (null / NaN) and must be set.
 struct GliderProblem

@@ -7,8 +7,8 @@
 namespace ompl_glider
 {
 /// @brief Samples x, y and yaw uniformly and the time uniformly in [max(tMin, t0 + d / vMax), tMax], where d is
-/// the xy distance from the start and vMax = V + max|c| the fastest ground speed (000 Eq. 1): no state earlier
-/// than that can be reached from the start, so such samples would only be rejected by the motion validator.
+/// the xy distance from the start and vMax = V + max|c| the fastest ground speed ([EichhornRAS] Eq. 1): no state
+/// earlier than that can be reached from the start, so such samples would only be rejected by the motion validator.
 /// sampleUniformNear() and sampleGaussian() use the space's default sampler and then raise the time to that
 /// lower bound. The setup helper installs it on the space (StateSpace::setStateSamplerAllocator).
 class GliderStateSampler : public ompl::base::StateSampler

@@ -1,6 +1,6 @@
 #pragma once
 /// @file TimeSE2StateSpace.h
-/// @brief SE(2) plus time: the state space on which glider routes are planned with OMPL (SPEC.md 5, issue #3).
+/// @brief SE(2) plus time: the state space on which glider routes are planned with OMPL.
 
 #include <memory>
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file TravelTimeMotionValidator.h
-/// @brief Which time-stamped straight legs a glider can fly (issue #3, SPEC.md 2).
+/// @brief Which time-stamped straight legs a glider can fly (issue #3).
 
 #include <cstdint>
 #include <memory>
@@ -35,7 +35,7 @@ std::string toString(MotionVerdict v);
 ///     position, allowed only where the glider can hold, |c| < V, checked at times spaced at most holdTimeStep
 ///     apart over [t1, t2]);
 ///   - t2 - t1 lies in [earliest, latest] of TravelTimeCalculator::arrivalWindow(x1, y1, x2, y2, t1): between the
-///     two roots of the line-circle intersection the glider chooses its pace (SPEC.md 2; 000 Eq. 4-6), and where
+///     two roots of the line-circle intersection the glider chooses its pace ([EichhornRAS] Eq. 4-6), and where
 ///     the slow root is <= 0 it can hold, latest = +inf. The bounds are widened by a relative tolerance
 ///     (default 1e-6, setRelativeTolerance()) so that times computed with the same travel-time code and added
 ///     to t1 (rounding) are accepted: earliest * (1 - tol) <= t2 - t1 <= latest * (1 + tol);
@@ -44,9 +44,10 @@ std::string toString(MotionVerdict v);
 ///     DiscreteMotionValidator does, since planners like RRT* do not check sampled states separately).
 /// The start state is assumed valid (OMPL convention). Caveat: the window is that of the whole leg, so a state
 /// interpolated linearly in time along a valid motion (PathGeometric::interpolate()) need not split it into two
-/// valid motions in a non-uniform field; OMPL's simplifiers re-check every motion they create and are safe. Each positive-length check costs one cost-function call
-/// (CFC) of the context's TravelTimeCalculator, except legs rejected early because t2 - t1 < |xy2 - xy1| / (V +
-/// max|c|) and repeats of the thread's previous query (one-entry per-thread cache). Thread-safe.
+/// valid motions in a non-uniform field; OMPL's simplifiers re-check every motion they create and are safe. Each
+/// positive-length check costs one cost-function call (CFC) of the context's TravelTimeCalculator, except legs rejected
+/// early because t2 - t1 < |xy2 - xy1| / (V + max|c|) and repeats of the thread's previous query (one-entry per-thread
+/// cache). Thread-safe.
 class TravelTimeMotionValidator : public ompl::base::MotionValidator
 {
 public:

@@ -12,10 +12,10 @@ namespace ompl_glider
 {
 /// @brief Minimises the arrival time. The cost of a motion (x1, y1, t1) -> (x2, y2, t2) is t2 - t1 when the
 /// space information's motion validator accepts it (TravelTimeMotionValidator) and +inf otherwise; state costs are
-/// zero, so the cost of a path from the start (time t0) to a state at time t is t - t0 (000 Sec. 3: the travel
-/// time). The cost is not symmetric (isSymmetric() is false).
+/// zero, so the cost of a path from the start (time t0) to a state at time t is t - t0 ([EichhornRAS] Sec. 3: the
+/// travel time). The cost is not symmetric (isSymmetric() is false).
 ///
-/// Heuristics, with vMax = V + max|c| (the fastest possible ground speed, 000 Eq. 1; max|c| from
+/// Heuristics, with vMax = V + max|c| (the fastest possible ground speed, [EichhornRAS] Eq. 1; max|c| from
 /// CurrentField::maxSpeed over the context's region and time window, computed once here):
 ///   - motionCostHeuristic(s1, s2) = max(|xy1 - xy2| / vMax, t2 - t1): a lower bound of the motion cost, since a
 ///     valid motion costs exactly t2 - t1 and needs at least |xy1 - xy2| / vMax;

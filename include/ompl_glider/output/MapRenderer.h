@@ -1,6 +1,6 @@
 #pragma once
 /// @file MapRenderer.h
-/// @brief A map for the pilot (SPEC.md 6): the current field, forbidden regions, planned paths with time ticks,
+/// @brief A map for the pilot: the current field, forbidden regions, planned paths with time ticks,
 /// start and goal, legend and axes; written as SVG and PNG (cairo).
 
 #include <memory>

@@ -10,7 +10,7 @@
 
 namespace ompl_glider
 {
-/// @brief The speed sweep as a text table ([GarauDive] Table VI): speed, travel time, path length, straight-line
+/// @brief The speed sweep as a text table ([EichhornOceans] Table VI): speed, travel time, path length, straight-line
 /// travel time ("impassable" when infinite) and length.
 std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows);
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file SlocumGoto.h
-/// @brief The Slocum glider goto list file (goto_lNN.ma) and its [-]DDDMM.MMMM coordinates (003 Sec. IV,
-/// SPEC.md 6).
+/// @brief The Slocum glider goto list file (goto_lNN.ma) and its [-]DDDMM.MMMM coordinates ([EichhornOceans]
+/// Sec. IV).
 
 #include <string>
 #include <vector>

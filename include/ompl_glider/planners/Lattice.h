@@ -1,6 +1,6 @@
 #pragma once
 /// @file Lattice.h
-/// @brief Implicit rectangular lattice with n-sector connectivity (000 Sec. 2.1, Fig. 1; SPEC.md 3).
+/// @brief Implicit rectangular lattice with n-sector connectivity ([EichhornRAS] Sec. 2.1, Fig. 1).
 
 #include <cstddef>
 #include <cstdint>
@@ -21,7 +21,7 @@ struct LatticeOffset
 /// Grid vertex (i, j) sits at (xMin + i g, yMin + j g), i = 0..nx-1, j = 0..ny-1, with
 /// nx = floor((xMax - xMin) / g) + 1 (the last column may lie short of xMax when the width is not a multiple of g).
 /// Its successors are the grid vertices at every offset (dx, dy) with max(|dx|, |dy|) <= n and gcd(|dx|, |dy|) = 1
-/// (8, 16, 32, 48, 80 neighbours for n = 1..5; 000 Fig. 1(a)-(c)). Nothing is stored per edge: successors are
+/// (8, 16, 32, 48, 80 neighbours for n = 1..5; [EichhornRAS] Fig. 1(a)-(c)). Nothing is stored per edge: successors are
 /// generated on demand, so a lattice of 10^6 vertices costs only its few scalars until a search visits it.
 ///
 /// Exact start and goal positions are joined to the lattice as two extra vertices (ids numGridVertices() and
@@ -44,7 +44,7 @@ public:
     Lattice(double xMin, double xMax, double yMin, double yMax, double gridSize, unsigned sectors);
 
     /// @brief The offsets of n-sector connectivity: max(|dx|, |dy|) <= n, gcd(|dx|, |dy|) = 1, sorted by angle.
-    /// @note SPEC.md 3; 000 Fig. 1.
+    /// @note [EichhornRAS] Fig. 1.
     static std::vector<LatticeOffset> offsets(unsigned sectors);
 
     /// @brief Offsets in use (sorted by angle atan2(dy, dx) in (-pi, pi]).

@@ -1,6 +1,6 @@
 #pragma once
 /// @file PathSmoother.h
-/// @brief Path smoothing in a time-varying field (000 Sec. 4, Table 3) and the path timing it relies on.
+/// @brief Path smoothing in a time-varying field ([EichhornRAS] Sec. 4, Table 3) and the path timing it relies on.
 
 #include <cstddef>
 #include <cstdint>
@@ -41,7 +41,7 @@ void waypointsToPath(const std::vector<TimedWaypoint> &waypoints, ompl::geometri
 
 /// @brief Merges consecutive legs of a timed path while keeping its schedule: from a kept waypoint a (time t_a), the
 /// farthest later waypoint b is joined directly when the straight leg can be flown in exactly t_b - t_a (the
-/// duration lies in TravelTimeCalculator::arrivalWindow(a -> b, t_a), SPEC.md 2), stays in the region's time window
+/// duration lies in TravelTimeCalculator::arrivalWindow(a -> b, t_a)), stays in the region's time window
 /// and is legFree at those times. Every kept waypoint keeps its time, so the arrival is unchanged and every merged
 /// leg is valid for TravelTimeMotionValidator. Meant for paths that wait or fly slow legs (sampling planners on
 /// TimeSE2StateSpace), whose waypoints cannot all be flown at full speed from t0.
@@ -61,16 +61,16 @@ struct SmoothingResult
     std::size_t waypointsAfter{0};         ///< waypoint count of the result
     double arrivalBefore{0.0};             ///< arrival at the goal of the input, re-simulated from t0
     double arrivalAfter{0.0};  ///< arrival at the goal of the result (<= arrivalBefore (1 + kSmoothingTieTolerance))
-    unsigned passes{0};                    ///< passes of loop I of 000 Table 3
+    unsigned passes{0};                    ///< passes of loop I of [EichhornRAS] Table 3
     std::uint64_t costFunctionCalls{0};    ///< CFC spent by the smoothing
 };
 
-/// @brief SMOOTHING(WP, t0) of 000 Table 3 (also 001 Table II): merges consecutive legs of a waypoint path in the
-/// time-varying field. From the kept waypoint WP[i_start], the direct leg to WP[i_path] replaces the legs through
-/// WP[i_path - 1] when (III) it is feasible (finite travel time, legFree in ctx.environment), (IV) it arrives at
-/// WP[i_path] no later than the legs it replaces, and (V) the rest of the path, re-simulated from the new arrival
-/// time, reaches the goal no later than before. Otherwise WP[i_path - 1] is kept and merging restarts there (VI).
-/// Passes repeat until the waypoint count stops changing (I).
+/// @brief SMOOTHING(WP, t0) of [EichhornRAS] Table 3 (also [EichhornIWK] Table II): merges consecutive legs of a
+/// waypoint path in the time-varying field. From the kept waypoint WP[i_start], the direct leg to WP[i_path] replaces
+/// the legs through WP[i_path - 1] when (III) it is feasible (finite travel time, legFree in ctx.environment), (IV) it
+/// arrives at WP[i_path] no later than the legs it replaces, and (V) the rest of the path, re-simulated from the new
+/// arrival time, reaches the goal no later than before. Otherwise WP[i_path - 1] is kept and merging restarts there
+/// (VI). Passes repeat until the waypoint count stops changing (I).
 ///
 /// Guarantees: the first and last waypoints are kept; every leg of the result is feasible and free; the result
 /// never arrives later than the input (both re-simulated from t0 with the same travel-time code), up to the

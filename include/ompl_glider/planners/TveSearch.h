@@ -1,7 +1,7 @@
 #pragma once
 /// @file TveSearch.h
 /// @brief The graph search of TVE / A*TVE / ZTVE / ZA*TVE on an implicit lattice, independent of OMPL types
-/// (000 Sec. 2.2, Tables 1 and 2). ZAStarTVE wraps it as an ompl::base::Planner.
+/// ([EichhornRAS] Sec. 2.2, Tables 1 and 2). ZAStarTVE wraps it as an ompl::base::Planner.
 
 #include <cstdint>
 #include <functional>
@@ -19,9 +19,9 @@ namespace ompl_glider
 /// @brief Switches and tunables of the search.
 struct TveOptions
 {
-    bool heuristic{true};   ///< A*: h(u) = |x_u - x_g| / (V + max|c|) (000 Eq. 1)
-    bool zermelo{true};     ///< Zermelo pruning (000 Sec. 2.2.2)
-    /// Half-width of the accepted course range around phi_opt, radians (000 Fig. 3, Table 2), before the turn
+    bool heuristic{true};   ///< A*: h(u) = |x_u - x_g| / (V + max|c|) ([EichhornRAS] Eq. 1)
+    bool zermelo{true};     ///< Zermelo pruning ([EichhornRAS] Sec. 2.2.2)
+    /// Half-width of the accepted course range around phi_opt, radians ([EichhornRAS] Fig. 3, Table 2), before the turn
     /// widening below. Defaults (18 deg, courseExtrapolation 1, turnWidening 1.5) were tuned on the meandering jet
     /// (grid 0.4, 3 sectors; benchmarks/table4/README.md): where the course runs straight they keep 1 to 3 of the 31
     /// forward successors of a 3-sector lattice (the paper: 5). The paper's rule is courseExtrapolation = 0,
@@ -30,8 +30,8 @@ struct TveOptions
     /// Midpoint (RK2) steps of CALC-OPTDIR per half edge; each step costs 2 velocity + 2 Jacobian calls (CMC).
     unsigned zermeloSteps{1};
     /// Extrapolation of the predicted course: the cone is centred on phi_opt + k (phi_opt - phi_edge), where
-    /// phi_edge is the direction of the predecessor edge. k = 0 is the paper's rule (000 Table 2); k = 1 continues the
-    /// turn predicted from the middle of the predecessor edge over the next half edge.
+    /// phi_edge is the direction of the predecessor edge. k = 0 is the paper's rule ([EichhornRAS] Table 2); k = 1
+    /// continues the turn predicted from the middle of the predecessor edge over the next half edge.
     double courseExtrapolation{1.0};
     /// Widening of the cone with the predicted turn: half-width = deltaPhiMax + w |phi_opt - phi_edge| (0 = the
     /// paper's fixed range). Where Zermelo's law turns the course fast (jet flanks), a lattice path turns by more
@@ -44,26 +44,26 @@ struct TveOptions
     /// No pruning at vertices within this distance of the goal (0 = prune everywhere but the goal edge): the final
     /// approach of the lattice optimum often turns towards the goal faster than Zermelo's law predicts.
     double goalRadius{0.0};
-    /// Certification of the pruned search (an addition to 000 Table 2; default 0.1; < 0 = off, the paper's rule).
-    /// Without it the pruning misses the lattice optimum on some problems (campaign open water +1.25 %, islands
+    /// Certification of the pruned search (an addition to [EichhornRAS] Table 2; default 0.1; < 0 = off, the paper's
+    /// rule). Without it the pruning misses the lattice optimum on some problems (campaign open water +1.25 %, islands
     /// +5.1 %, random pairs up to +76 %; benchmarks/table4/README.md). Pruned edges
     /// are deferred instead of dropped, with the lower bound d[u] + (|uv| + |v - goal|) / (V + max|c|) of any arrival
-    /// through them. When the goal is first extracted at C, the deferred edges whose bound is below t0 + (C - t0) / (1 + tol)
-    /// are examined in bound order, interleaved with the queue (their improvements are expanded with pruning, their
-    /// own pruned edges deferred again), until the goal is extracted with no such edge left. With tol = 0 the
+    /// through them. When the goal is first extracted at C, the deferred edges whose bound is below t0 + (C - t0) / (1
+    /// + tol) are examined in bound order, interleaved with the queue (their improvements are expanded with pruning,
+    /// their own pruned edges deferred again), until the goal is extracted with no such edge left. With tol = 0 the
     /// result is the lattice optimum (as TVE); a larger tol bounds the travel time by (1 + tol) times the optimum on
     /// the lattice and costs fewer CFC. The bound is weak where the current is strong, so tol trades CFC for that
     /// guarantee (benchmarks/table4/README.md).
     double certifyTolerance{0.1};
     /// When the pruned search (zermelo) exhausts without reaching the goal, continue without pruning, so that
-    /// "no solution" still means "no path on this lattice" (an addition to 000 Table 2, which does not say).
+    /// "no solution" still means "no path on this lattice" (an addition to [EichhornRAS] Table 2, which does not say).
     bool unprunedFallback{true};
-    /// Never prune the edge into the goal vertex (an addition to 000 Table 2: near the goal the predicted course
-    /// rarely points exactly at it, and without this a pruned search often has to fall back).
+    /// Never prune the edge into the goal vertex (an addition to [EichhornRAS] Table 2: near the goal the predicted
+    /// course rarely points exactly at it, and without this a pruned search often has to fall back).
     bool neverPruneGoal{true};
     /// When no edge inside the cone of a vertex has a finite travel time (the predicted course leaves the region,
     /// runs into land, or is infeasible against the current), examine the vertex's other edges too (an addition to
-    /// 000 Table 2; costs cost-function calls only at such dead ends).
+    /// [EichhornRAS] Table 2; costs cost-function calls only at such dead ends).
     bool deadEndFallback{false};
     /// Expansions between two calls of the termination callback.
     unsigned checkEvery{8};
@@ -93,8 +93,8 @@ struct TveResult
     TveOutcome outcome{TveOutcome::Exhausted};  ///< how the search ended
     std::vector<TimedWaypoint> waypoints;       ///< start ... goal (Exact) or ... closest reached vertex (Terminated)
     double travelTime{std::numeric_limits<double>::infinity()};  ///< arrival at the goal - t0 (Exact only)
-    std::uint64_t costFunctionCalls{0};  ///< CFC of this search (000 Table 4)
-    std::uint64_t currentModelCalls{0};  ///< CMC of this search, CALC-OPTDIR included (000 Table 4)
+    std::uint64_t costFunctionCalls{0};  ///< CFC of this search ([EichhornRAS] Table 4)
+    std::uint64_t currentModelCalls{0};  ///< CMC of this search, CALC-OPTDIR included ([EichhornRAS] Table 4)
     std::uint64_t expansions{0};         ///< vertices extracted from the queue (reopenings counted again)
     std::uint64_t prunedEdges{0};        ///< edges not examined because of Zermelo pruning
     std::uint64_t reopenedEdges{0};      ///< deferred (pruned) edges examined by the certification phase
@@ -114,8 +114,8 @@ struct TveTreeVertex
 
 /// @brief Time-dependent Dijkstra / A* on an implicit lattice with the edge weights computed during the search.
 ///
-/// Per 000 Table 2 (ZA*TVE; TVE, A*TVE and ZTVE switch parts off): d[s] = t0; the queue key is d[v] (+ h(v) with
-/// the A* heuristic); when u is extracted, each successor v with d[u] < d[v] is examined (edges with
+/// Per [EichhornRAS] Table 2 (ZA*TVE; TVE, A*TVE and ZTVE switch parts off): d[s] = t0; the queue key is d[v] (+ h(v)
+/// with the A* heuristic); when u is extracted, each successor v with d[u] < d[v] is examined (edges with
 /// d[u] >= d[v] cannot improve v and are skipped without a cost-function call); the edge weight is
 /// travel->travelTime(u, v, d[u]); an improved vertex is inserted again even when it was already expanded
 /// ("discover or reopen"). With Zermelo pruning, for u != s the optimal course phi_opt at u is predicted by
@@ -138,12 +138,12 @@ public:
     TveResult run(double sx, double sy, double gx, double gy, const TveOptions &options,
                   const std::function<bool()> &terminate = {});
 
-    /// @brief CALC-OPTDIR (000 Sec. 2.2.2, Table 2): the optimal course over ground at u predicted by Zermelo's
-    /// law. Starts at the middle of the edge p -> u at the mid time (tp + tu) / 2 with the heading that keeps the
-    /// course along the edge (upper root of 000 Eq. 5-6), integrates Zermelo's law (000 Eq. 2, with the field's
-    /// Jacobian) together with the motion (000 Eq. 10) by `steps` midpoint steps up to tu, and returns the
-    /// direction of the velocity over ground there. Empty when the edge cannot be held at its middle or the
-    /// ground speed vanishes. Costs 4 steps + 1 CMC.
+    /// @brief CALC-OPTDIR ([EichhornRAS] Sec. 2.2.2, Table 2): the optimal course over ground at u predicted by
+    /// Zermelo's law. Starts at the middle of the edge p -> u at the mid time (tp + tu) / 2 with the heading that keeps
+    /// the course along the edge (upper root of [EichhornRAS] Eq. 5-6), integrates Zermelo's law ([EichhornRAS] Eq. 2,
+    /// with the field's Jacobian) together with the motion ([EichhornRAS] Eq. 10) by `steps` midpoint steps up to tu,
+    /// and returns the direction of the velocity over ground there. Empty when the edge cannot be held at its middle or
+    /// the ground speed vanishes. Costs 4 steps + 1 CMC.
     std::optional<double> calcOptimalCourse(double px, double py, double tp, double ux, double uy, double tu,
                                             unsigned steps) const;
 

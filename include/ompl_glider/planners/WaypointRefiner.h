@@ -1,7 +1,8 @@
 #pragma once
 /// @file WaypointRefiner.h
 /// @brief Continuous optimisation of waypoint positions against the re-simulated travel time ("beyond the paper":
-/// a graph search seeds a continuous optimisation, the idea of 004 Init-Optim, applied to 000's smoothed path).
+/// a graph search seeds a continuous optimisation, the idea of [IsernObstacles] Init-Optim, applied to the smoothed
+/// path of [EichhornRAS] Table 3).
 
 #include <cstddef>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file ZAStarTVE.h
-/// @brief TVE, A*TVE, ZTVE and ZA*TVE (000 Sec. 2.2, Tables 1 and 2) as an ompl::base::Planner.
+/// @brief TVE, A*TVE, ZTVE and ZA*TVE ([EichhornRAS] Sec. 2.2, Tables 1 and 2) as an ompl::base::Planner.
 
 #include <atomic>
 #include <cstdint>
@@ -17,10 +17,10 @@ namespace ompl_glider
 {
 /// @brief Time-optimal lattice search in a time-varying current with the edge weights computed during the search.
 ///
-/// The configuration picks the acceleration methods of 000 Sec. 2.2: "TVE" (time-dependent Dijkstra),
-/// "A*TVE" (+ the heuristic of 000 Eq. 1), "ZTVE" (+ Zermelo pruning, 000 Sec. 2.2.2) and "ZA*TVE" (both,
-/// 000 Table 2). The search runs on an implicit rectangular lattice over ctx->region (grid_size, sectors; see
-/// Lattice) from the exact start to the exact goal position (both joined to the lattice).
+/// The configuration picks the acceleration methods of [EichhornRAS] Sec. 2.2: "TVE" (time-dependent Dijkstra),
+/// "A*TVE" (+ the heuristic of [EichhornRAS] Eq. 1), "ZTVE" (+ Zermelo pruning, [EichhornRAS] Sec. 2.2.2) and "ZA*TVE"
+/// (both, [EichhornRAS] Table 2). The search runs on an implicit rectangular lattice over ctx->region (grid_size,
+/// sectors; see Lattice) from the exact start to the exact goal position (both joined to the lattice).
 ///
 /// The space must be a TimeSE2StateSpace (or hold one as its state type). Goals: PositionGoal, or any GoalState /
 /// GoalSampleableRegion whose (sampled) state gives the goal position. The returned PathGeometric has one
@@ -39,12 +39,12 @@ namespace ompl_glider
 /// OMPL application get the best path; getWaypoints() keeps the lattice path.
 ///
 /// Planner progress properties (logged by ompl::tools::Benchmark): "cost function calls INTEGER",
-/// "current model calls INTEGER" (CFC / CMC of the current or last solve, 000 Table 4; CFC includes smoothing
+/// "current model calls INTEGER" (CFC / CMC of the current or last solve, [EichhornRAS] Table 4; CFC includes smoothing
 /// and refinement), "best cost REAL".
 ///
 /// @par External documentation
 /// B. Eichhorn, "Optimal routing strategies for autonomous underwater vehicles in time-varying environment",
-/// Robotics and Autonomous Systems (seed 000), Sec. 2.2 and Tables 1, 2, 4.
+/// Robotics and Autonomous Systems ([EichhornRAS]), Sec. 2.2 and Tables 1, 2, 4.
 class ZAStarTVE : public ompl::base::Planner
 {
 public:
@@ -59,7 +59,7 @@ public:
     static ompl::base::PlannerAllocator allocator(std::shared_ptr<const GliderContext> ctx,
                                                     const std::string &configuration);
 
-    /// @brief Runs the search (000 Table 2 with the switches of the configuration).
+    /// @brief Runs the search ([EichhornRAS] Table 2 with the switches of the configuration).
     ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
     /// @brief Forgets the last search (labels, tree, counters).
     void clear() override;
@@ -93,7 +93,8 @@ public:
     void setDeltaPhiMax(double degrees);
     /// @brief Half-width of the accepted course range, degrees.
     double getDeltaPhiMax() const;
-    /// @brief Extrapolation k of the predicted course (param "course_extrapolation", default 1; 0 = 000 Table 2).
+    /// @brief Extrapolation k of the predicted course (param "course_extrapolation", default 1; 0 = [EichhornRAS] Table
+    /// 2).
     void setCourseExtrapolation(double k)
     {
         options_.courseExtrapolation = k;
@@ -103,7 +104,7 @@ public:
     {
         return options_.courseExtrapolation;
     }
-    /// @brief Cone widening w with the predicted turn (param "turn_widening", default 1.5; 0 = 000 Table 2).
+    /// @brief Cone widening w with the predicted turn (param "turn_widening", default 1.5; 0 = [EichhornRAS] Table 2).
     void setTurnWidening(double w);
     /// @brief Cone widening with the predicted turn.
     double getTurnWidening() const
@@ -174,7 +175,7 @@ public:
         return options_;
     }
 
-    /// @brief Cost-function calls (CFC, 000 Table 4) of the last solve's search (without post-processing).
+    /// @brief Cost-function calls (CFC, [EichhornRAS] Table 4) of the last solve's search (without post-processing).
     std::uint64_t getCostFunctionCalls() const
     {
         return last_.costFunctionCalls;
@@ -184,7 +185,7 @@ public:
     {
         return postprocessCfc_;
     }
-    /// @brief Current-model calls (CMC, 000 Table 4) of the last solve, CALC-OPTDIR included.
+    /// @brief Current-model calls (CMC, [EichhornRAS] Table 4) of the last solve, CALC-OPTDIR included.
     std::uint64_t getCurrentModelCalls() const
     {
         return last_.currentModelCalls;

@@ -1,7 +1,7 @@
 #pragma once
 /// @file ZermeloReference.h
 /// @brief Exact time-optimal travel time between two points in an analytic current field: Zermelo's navigation
-/// problem solved by shooting over the initial heading (000 Sec. 6.1, Eq. 2 and Eq. 10).
+/// problem solved by shooting over the initial heading ([EichhornRAS] Sec. 6.1, Eq. 2 and Eq. 10).
 
 #include <memory>
 #include <vector>
@@ -53,8 +53,8 @@ struct ZermeloSolution
 };
 
 /// @brief Zermelo's navigation problem by shooting: the state (x, y, theta) obeys the equations of motion
-/// dx/dt = u + V cos theta, dy/dt = v + V sin theta (000 Eq. 10) and Zermelo's law
-/// dtheta/dt = -u_y cos^2 theta + (u_x - v_y) cos theta sin theta + v_x sin^2 theta (000 Eq. 2).
+/// dx/dt = u + V cos theta, dy/dt = v + V sin theta ([EichhornRAS] Eq. 10) and Zermelo's law
+/// dtheta/dt = -u_y cos^2 theta + (u_x - v_y) cos theta sin theta + v_x sin^2 theta ([EichhornRAS] Eq. 2).
 ///
 /// Every time-optimal trajectory is such an extremal, so the fastest extremal through the goal is the time-optimal
 /// route. The initial heading is scanned over [0, 2 pi); for each heading the extremal is integrated with an

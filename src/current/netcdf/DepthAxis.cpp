@@ -1,0 +1,74 @@
+// The depth axis: metres, positive down (positive = "up" negated; cm and km scaled), sorted ascending, and the
+// layers down to the deepest depth the glider reaches.
+#include <algorithm>
+#include <cmath>
+
+#include "NetCdfInternal.h"
+
+namespace ompl_glider
+{
+namespace netcdf_detail
+{
+namespace
+{
+/// Depth values of zv in metres, positive down, in file order. @throws Error for terrain-following
+/// coordinates, an unknown positive attribute or units, or non-finite values.
+std::vector<double> readDepthMetres(const NcFile &f, int zv)
+{
+    const std::string zn = f.varName(zv);
+    std::vector<double> zs = f.readAll1D(zv);
+    const std::string zsn = stdName(f, zv);
+    if (zsn.rfind("ocean_s", 0) == 0 || zsn.rfind("ocean_sigma", 0) == 0 || zsn.rfind("ocean_double_sigma", 0) == 0)
+        throw f.error("depth '" + zn + "' is a terrain-following coordinate (standard_name " + zsn +
+                      "); expected depth in metres: interpolate the file to z levels first");
+    const std::string pos = lower(f.attText(zv, "positive").value_or("down"));
+    if (pos != "down" && pos != "up")
+        throw f.error("depth '" + zn + "': attribute positive = '" + pos + "', expected 'down' or 'up'");
+    const std::string zu = lower(unitsOf(f, zv));
+    double zscale = 1.0;
+    if (zu == "cm" || zu == "centimeters")
+        zscale = 0.01;
+    else if (zu == "km")
+        zscale = 1000.0;
+    else if (!(zu.empty() || inList(zu, {"m", "meter", "meters", "metre", "metres", "1", "level"})))
+        throw f.error("depth '" + zn + "': units '" + zu + "', expected m");
+    for (double &z : zs)
+    {
+        if (!std::isfinite(z))
+            throw f.error("depth '" + zn + "' has non-finite values");
+        z *= (pos == "up" ? -zscale : zscale);
+    }
+    return zs;
+}
+}  // namespace
+
+AxisSelection selectDepths(const NcFile &f, const Layout &l, double maxDepth)
+{
+    AxisSelection s;
+    if (l.dimZ < 0)
+        return s;
+    const std::vector<double> zs = readDepthMetres(f, l.coordVar[std::size_t(l.dimZ)]);
+    std::vector<std::size_t> order(zs.size());
+    for (std::size_t k = 0; k < zs.size(); ++k)
+        order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return zs[a] < zs[b]; });
+    std::size_t last = order.size() - 1;
+    if (std::isfinite(maxDepth))
+    {
+        // down to the first layer at or below maxDepth, plus 2 for cubic/Akima stencils
+        last = 0;
+        while (last + 1 < order.size() && zs[order[last]] < maxDepth)
+            ++last;
+        last = std::min(order.size() - 1, last + 2);
+    }
+    s.idx.clear();
+    s.values.clear();
+    for (std::size_t k = 0; k <= last; ++k)
+    {
+        s.idx.push_back(order[k]);
+        s.values.push_back(zs[order[k]]);
+    }
+    return s;
+}
+}  // namespace netcdf_detail
+}  // namespace ompl_glider

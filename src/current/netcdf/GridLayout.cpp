@@ -1,0 +1,140 @@
+// The grid of the velocities: 1-D longitude/latitude (or x/y) axes or a 2-D curvilinear grid, geographic or
+// Cartesian.
+#include <sstream>
+
+#include "NetCdfInternal.h"
+
+namespace ompl_glider
+{
+namespace netcdf_detail
+{
+namespace
+{
+/// u and v, with the same 2 to 4 dimensions.
+void findVelocities(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
+{
+    l.uVar = findVelocity(f, opt.uName, true, "uName");
+    l.vVar = findVelocity(f, opt.vName, false, "vName");
+    l.uName = f.varName(l.uVar);
+    l.vName = f.varName(l.vVar);
+    const std::vector<int> dims = f.varDims(l.uVar);
+    if (f.varDims(l.vVar) != dims)
+        throw f.error("velocity variables '" + l.uName + "' and '" + l.vName +
+                      "' must have the same dimensions (staggered grids are not supported)");
+    if (dims.size() < 2 || dims.size() > 4)
+        throw f.error("variable '" + l.uName + "': expected 2 to 4 dimensions ([time,] [depth,] lat, lon), got " +
+                      std::to_string(dims.size()));
+}
+
+/// Candidate 2-D coordinate variables on (j, i): those of u's `coordinates` attribute first, then all.
+std::vector<int> curvilinearCandidates(const NcFile &f, int uVar, const std::vector<int> &want)
+{
+    std::vector<int> cands;
+    auto consider = [&](int var) {
+        if (f.varDims(var) == want)
+            cands.push_back(var);
+    };
+    if (auto c = f.attText(uVar, "coordinates"))
+    {
+        std::istringstream is(*c);
+        std::string tok;
+        while (is >> tok)
+            if (auto v = f.findVar(tok))
+                consider(*v);
+    }
+    for (int var = 0; var < f.nvars(); ++var)
+        consider(var);
+    return cands;
+}
+
+/// The 2-D longitude/latitude (x/y in Cartesian mode) variables of a curvilinear grid on (j, i) = want.
+void findCurvilinearCoordinates(const NcFile &f, const NetCdfCurrentOptions &opt, const std::vector<int> &want,
+                                Layout &l)
+{
+    const bool cartesian = opt.coordinates == CoordinateMode::Cartesian;
+    if (!opt.lonName.empty())
+        l.lon2D = *f.findVar(opt.lonName);
+    if (!opt.latName.empty())
+        l.lat2D = *f.findVar(opt.latName);
+    for (int var : curvilinearCandidates(f, l.uVar, want))
+    {
+        if (l.lon2D < 0 && ((!cartesian && isLonVar(f, var)) || (cartesian && isXVar(f, var))))
+            l.lon2D = var;
+        if (l.lat2D < 0 && ((!cartesian && isLatVar(f, var)) || (cartesian && isYVar(f, var))))
+            l.lat2D = var;
+    }
+    if (l.lon2D < 0 || l.lat2D < 0)
+        throw f.error("variable '" + l.uName + "' is on dimensions (" + f.dimName(want[0]) + ", " +
+                      f.dimName(want[1]) + ") without 1-D axes; expected 2-D longitude/latitude variables on them "
+                      "(from its 'coordinates' attribute, standard_name or units degrees_east/degrees_north)");
+    if (f.varDims(l.lon2D) != want || f.varDims(l.lat2D) != want)
+        throw f.error("curvilinear coordinates '" + f.varName(l.lon2D) + "'/'" + f.varName(l.lat2D) +
+                      "': expected dimensions (" + f.dimName(want[0]) + ", " + f.dimName(want[1]) + ")");
+}
+
+/// Without 1-D x/y axes: the two remaining dimensions of length > 1 are (j, i) in file order, with 2-D
+/// coordinates. Updates the roles and geoAxes/cartAxes.
+void makeCurvilinear(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l, bool &geoAxes, bool &cartAxes)
+{
+    std::vector<int> rest;
+    for (std::size_t d = 0; d < l.dims.size(); ++d)
+        if (l.role[d] == Role::None && f.dimLen(l.dims[d]) > 1)
+            rest.push_back(int(d));
+    if (rest.size() != 2 || l.dimX >= 0 || l.dimY >= 0)
+        throw f.error("variable '" + l.uName +
+                      "': expected longitude/latitude (or x/y) axes or a 2-D curvilinear grid; found no horizontal "
+                      "coordinate variables (name them with NetCdfCurrentOptions::lonName/latName)");
+    l.dimY = rest[0];
+    l.dimX = rest[1];
+    l.role[std::size_t(l.dimY)] = Role::Y;
+    l.role[std::size_t(l.dimX)] = Role::X;
+    l.curvilinear = true;
+    findCurvilinearCoordinates(f, opt, {l.dims[std::size_t(l.dimY)], l.dims[std::size_t(l.dimX)]}, l);
+    geoAxes = opt.coordinates != CoordinateMode::Cartesian && isLonVar(f, l.lon2D) && isLatVar(f, l.lat2D);
+    cartAxes = !geoAxes;
+}
+
+/// Geographic or Cartesian, from the options and what the axes looked like.
+bool decideGeographic(const NcFile &f, const NetCdfCurrentOptions &opt, const Layout &l, bool geoAxes,
+                      bool cartAxes)
+{
+    if (opt.coordinates == CoordinateMode::Geographic)
+    {
+        if (!geoAxes)
+            throw f.error("expected longitude/latitude coordinates (units degrees_east/degrees_north or standard_name "
+                          "longitude/latitude) for variable '" + l.uName + "' (CoordinateMode::Geographic)");
+        return true;
+    }
+    if (opt.coordinates == CoordinateMode::Cartesian)
+        return false;
+    return geoAxes && !cartAxes;
+}
+}  // namespace
+
+Layout detectLayout(const NcFile &f, const NetCdfCurrentOptions &opt)
+{
+    Layout l;
+    findVelocities(f, opt, l);
+    DimensionRoles dr = classifyDimensions(f, opt, l.uVar);
+    l.dimT = dr.find(Role::Time);
+    l.dimZ = dr.find(Role::Depth);
+    l.dimX = dr.find(Role::X);
+    l.dimY = dr.find(Role::Y);
+    l.dims = std::move(dr.dims);
+    l.role = std::move(dr.role);
+    l.coordVar = std::move(dr.coordVar);
+    bool geoAxes = dr.geoAxes, cartAxes = dr.cartAxes;
+    if (l.dimX < 0 || l.dimY < 0)
+        makeCurvilinear(f, opt, l, geoAxes, cartAxes);
+    for (std::size_t d = 0; d < l.dims.size(); ++d)
+        if (l.role[d] == Role::None && f.dimLen(l.dims[d]) > 1)
+            throw f.error("variable '" + l.uName + "' has dimension '" + f.dimName(l.dims[d]) + "' (length " +
+                          std::to_string(f.dimLen(l.dims[d])) +
+                          ") that is neither time, depth, latitude nor longitude; expected (time, depth, lat, lon)");
+    l.geographic = decideGeographic(f, opt, l, geoAxes, cartAxes);
+    l.xName = l.curvilinear ? f.varName(l.lon2D) : f.varName(l.coordVar[std::size_t(l.dimX)]);
+    l.yName = l.curvilinear ? f.varName(l.lat2D) : f.varName(l.coordVar[std::size_t(l.dimY)]);
+    return l;
+}
+}  // namespace netcdf_detail
+}  // namespace ompl_glider

@@ -1,0 +1,129 @@
+// Hyperslab reads: the file indices chosen along each dimension become contiguous runs; each combination of
+// runs is one nc_get_vara read, scattered into the internal (t, z, y, x) order.
+#include <algorithm>
+
+#include "NetCdfInternal.h"
+
+namespace ompl_glider
+{
+namespace netcdf_detail
+{
+DimRead makeDimRead(const std::vector<std::size_t> &fileIdx)
+{
+    std::vector<std::pair<std::size_t, std::size_t>> order;  // (file index, internal pos)
+    for (std::size_t p = 0; p < fileIdx.size(); ++p)
+        order.emplace_back(fileIdx[p], p);
+    std::sort(order.begin(), order.end());
+    DimRead d;
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+        if (k == 0 || order[k].first != order[k - 1].first + 1)
+        {
+            d.runs.emplace_back(order[k].first, 0);
+            d.pos.emplace_back();
+        }
+        d.runs.back().second++;
+        d.pos.back().push_back(order[k].second);
+    }
+    return d;
+}
+
+namespace
+{
+/// Scatters one hyperslab (runs runIdx of each dimension, row-major values buf) into out.
+void scatterBlock(const std::vector<DimRead> &dims, const std::vector<std::size_t> &stride,
+                  const std::vector<std::size_t> &runIdx, const std::vector<std::size_t> &count,
+                  const std::vector<double> &buf, std::vector<double> &out)
+{
+    const std::size_t nd = dims.size();
+    std::vector<std::size_t> c(nd, 0);  // odometer over the hyperslab in row-major order
+    for (std::size_t e = 0; e < buf.size(); ++e)
+    {
+        std::size_t off = 0;
+        for (std::size_t d = 0; d < nd; ++d)
+            off += dims[d].pos[runIdx[d]][c[d]] * stride[d];
+        out[off] = buf[e];
+        for (std::size_t d = nd; d-- > 0;)
+        {
+            if (++c[d] < count[d])
+                break;
+            c[d] = 0;
+        }
+    }
+}
+
+/// Next combination of runs (odometer, last dimension fastest); false after the last one.
+bool nextRuns(const std::vector<DimRead> &dims, std::vector<std::size_t> &runIdx)
+{
+    for (std::size_t d = dims.size(); d-- > 0;)
+    {
+        if (++runIdx[d] < dims[d].runs.size())
+            return true;
+        runIdx[d] = 0;
+    }
+    return false;
+}
+}  // namespace
+
+void readScatter(const NcFile &f, int var, const std::vector<DimRead> &dims, const std::vector<std::size_t> &stride,
+                 std::vector<double> &out)
+{
+    const std::size_t nd = dims.size();
+    std::vector<std::size_t> runIdx(nd, 0);
+    std::vector<double> buf;
+    do
+    {
+        std::vector<std::size_t> start(nd), count(nd);
+        std::size_t n = 1;
+        for (std::size_t d = 0; d < nd; ++d)
+        {
+            start[d] = dims[d].runs[runIdx[d]].first;
+            count[d] = dims[d].runs[runIdx[d]].second;
+            n *= count[d];
+        }
+        buf.resize(n);
+        if (n > 0)
+            f.check(nc_get_vara_double(f.id(), var, start.data(), count.data(), buf.data()),
+                    "read variable '" + f.varName(var) + "'");
+        scatterBlock(dims, stride, runIdx, count, buf, out);
+    } while (nextRuns(dims, runIdx));
+}
+
+HyperslabPlan planHyperslab(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+                            const AxisSelection &t)
+{
+    const std::size_t nd = l.dims.size(), nx = h.xIdx.size(), nh = nx * h.yIdx.size(), nz = z.idx.size();
+    HyperslabPlan p;
+    p.reads.resize(nd);
+    p.stride.assign(nd, 0);
+    for (std::size_t d = 0; d < nd; ++d)
+    {
+        p.fileValues *= f.dimLen(l.dims[d]);
+        switch (l.role[d])
+        {
+            case Role::Time:
+                p.reads[d] = makeDimRead(t.idx);
+                p.stride[d] = nz * nh;
+                break;
+            case Role::Depth:
+                p.reads[d] = makeDimRead(z.idx);
+                p.stride[d] = nh;
+                break;
+            case Role::Y:
+                p.reads[d] = makeDimRead(h.yIdx);
+                p.stride[d] = nx;
+                break;
+            case Role::X:
+                p.reads[d] = makeDimRead(h.xIdx);
+                p.stride[d] = 1;
+                break;
+            case Role::None:
+                p.reads[d] = makeDimRead({0});
+                p.stride[d] = 0;
+                break;
+        }
+    }
+    return p;
+}
+}  // namespace netcdf_detail
+}  // namespace ompl_glider

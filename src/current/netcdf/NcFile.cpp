@@ -1,0 +1,166 @@
+// The open NetCDF file and its queries; string helpers of the reader.
+#include <cctype>
+
+#include "NetCdfInternal.h"
+
+namespace ompl_glider
+{
+namespace netcdf_detail
+{
+std::string lower(std::string s)
+{
+    for (char &c : s)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string trim(const std::string &s)
+{
+    std::size_t a = 0, b = s.size();
+    while (a < b && (std::isspace(static_cast<unsigned char>(s[a])) || s[a] == '\0'))
+        ++a;
+    while (b > a && (std::isspace(static_cast<unsigned char>(s[b - 1])) || s[b - 1] == '\0'))
+        --b;
+    return s.substr(a, b - a);
+}
+
+bool inList(const std::string &s, std::initializer_list<const char *> names)
+{
+    for (const char *x : names)
+        if (s == x)
+            return true;
+    return false;
+}
+
+std::string joinNames(const std::vector<std::string> &names)
+{
+    std::string s;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        s += (i ? ", " : "") + names[i];
+    return s;
+}
+
+NcFile::NcFile(const std::string &path) : path_(path)
+{
+    const int st = nc_open(path.c_str(), NC_NOWRITE, &id_);
+    if (st != NC_NOERR)
+        throw Error("NetCDF file '" + path + "': cannot open: " + nc_strerror(st));
+}
+
+NcFile::~NcFile()
+{
+    nc_close(id_);
+}
+
+Error NcFile::error(const std::string &what) const
+{
+    return Error("NetCDF file '" + path_ + "': " + what);
+}
+
+void NcFile::check(int status, const std::string &what) const
+{
+    if (status != NC_NOERR)
+        throw error(what + ": " + nc_strerror(status));
+}
+
+int NcFile::nvars() const
+{
+    int n = 0;
+    check(nc_inq_nvars(id_, &n), "inquire variables");
+    return n;
+}
+
+std::string NcFile::varName(int var) const
+{
+    char buf[NC_MAX_NAME + 1];
+    check(nc_inq_varname(id_, var, buf), "inquire variable name");
+    return buf;
+}
+
+std::string NcFile::dimName(int dim) const
+{
+    char buf[NC_MAX_NAME + 1];
+    check(nc_inq_dimname(id_, dim, buf), "inquire dimension name");
+    return buf;
+}
+
+std::size_t NcFile::dimLen(int dim) const
+{
+    std::size_t n = 0;
+    check(nc_inq_dimlen(id_, dim, &n), "inquire dimension length");
+    return n;
+}
+
+std::optional<int> NcFile::findVar(const std::string &name) const
+{
+    int v;
+    if (nc_inq_varid(id_, name.c_str(), &v) == NC_NOERR)
+        return v;
+    return std::nullopt;
+}
+
+std::vector<int> NcFile::varDims(int var) const
+{
+    int nd = 0;
+    check(nc_inq_varndims(id_, var, &nd), "inquire dimensions of '" + varName(var) + "'");
+    std::vector<int> d(static_cast<std::size_t>(nd));
+    if (nd > 0)
+        check(nc_inq_vardimid(id_, var, d.data()), "inquire dimensions of '" + varName(var) + "'");
+    return d;
+}
+
+nc_type NcFile::varType(int var) const
+{
+    nc_type t;
+    check(nc_inq_vartype(id_, var, &t), "inquire type of '" + varName(var) + "'");
+    return t;
+}
+
+std::optional<std::string> NcFile::attText(int var, const char *name) const
+{
+    nc_type t;
+    std::size_t len;
+    if (nc_inq_att(id_, var, name, &t, &len) != NC_NOERR)
+        return std::nullopt;
+    if (t == NC_CHAR)
+    {
+        std::string s(len, '\0');
+        if (len > 0)
+            check(nc_get_att_text(id_, var, name, &s[0]), std::string("read attribute ") + name);
+        return trim(s);
+    }
+    if (t == NC_STRING && len >= 1)
+    {
+        std::vector<char *> p(len, nullptr);
+        check(nc_get_att_string(id_, var, name, p.data()), std::string("read attribute ") + name);
+        std::string s = p[0] ? p[0] : "";
+        nc_free_string(len, p.data());
+        return trim(s);
+    }
+    return std::nullopt;
+}
+
+std::vector<double> NcFile::attDoubles(int var, const char *name) const
+{
+    nc_type t;
+    std::size_t len;
+    if (nc_inq_att(id_, var, name, &t, &len) != NC_NOERR || t == NC_CHAR || t == NC_STRING)
+        return {};
+    std::vector<double> v(len);
+    check(nc_get_att_double(id_, var, name, v.data()), std::string("read attribute ") + name);
+    return v;
+}
+
+std::vector<double> NcFile::readAll1D(int var) const
+{
+    const std::vector<int> d = varDims(var);
+    std::size_t n = 1;
+    for (int x : d)
+        n *= dimLen(x);
+    std::vector<double> v(n);
+    if (n > 0)
+        check(nc_get_var_double(id_, var, v.data()), "read variable '" + varName(var) + "'");
+    return v;
+}
+}  // namespace netcdf_detail
+}  // namespace ompl_glider

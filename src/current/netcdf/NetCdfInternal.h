@@ -1,0 +1,303 @@
+#pragma once
+/// @file NetCdfInternal.h
+/// @brief Internal pieces of the NetCDF reader (loadNetCdfCurrents(), readNetCdfTimeAxis()); not installed.
+///
+/// The reader runs in stages, one source file each (all in src/current/netcdf/ except the composition):
+///  - NcFile.cpp             the open file, attribute/variable queries, errors that name the file
+///  - VariableDetection.cpp  velocities and the role of each of their dimensions (CF standard_name, axis, units)
+///  - GridLayout.cpp         1-D axes or a 2-D curvilinear grid; geographic or Cartesian
+///  - TimeAxis.cpp           the CF time axis and the time window (also readNetCdfTimeAxis())
+///  - DepthAxis.cpp          depth in metres, positive down, and the layers down to maxDepth
+///  - RegionOfInterest.cpp   the region of the options, index ranges of an axis, longitude wrapping
+///  - RectilinearSubset.cpp  index ranges of 1-D axes for the region, wrapping across the seam of global grids
+///  - CurvilinearSubset.cpp  index box of a 2-D grid for the region and its node coordinates
+///  - Hyperslab.cpp          contiguous runs per dimension and the scattered nc_get_vara reads
+///  - UnitsAndPacking.cpp    velocity and axis units, scale_factor/add_offset and fill/valid-range rules
+///  - LandMask.cpp           reading u/v: unpacking, unit conversion, land where either is a fill value
+///  - NodeCoordinates.cpp    projected (and rotated) or Cartesian node coordinates
+///  - ../NetCdfCurrents.cpp  loadNetCdfCurrents(), composing the stages, and the NetCdfCurrents members
+
+#include <netcdf.h>
+
+#include <cstddef>
+#include <initializer_list>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ompl_glider/current/CfTime.h"
+#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/current/LocalProjection.h"
+#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace netcdf_detail
+{
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// ---- strings (NcFile.cpp) ----
+
+/// ASCII lower case.
+std::string lower(std::string s);
+/// Without leading/trailing white space and NUL characters.
+std::string trim(const std::string &s);
+/// True when s equals one of the names.
+bool inList(const std::string &s, std::initializer_list<const char *> names);
+/// "a, b, c".
+std::string joinNames(const std::vector<std::string> &names);
+
+// ---- the open file (NcFile.cpp) ----
+
+/// The open file, closed on scope exit; its queries throw Errors that name the file.
+class NcFile
+{
+public:
+    /// @throws Error "NetCDF file '<path>': cannot open: ..." when the file is missing or not NetCDF.
+    explicit NcFile(const std::string &path);
+    ~NcFile();
+    NcFile(const NcFile &) = delete;
+    NcFile &operator=(const NcFile &) = delete;
+
+    int id() const
+    {
+        return id_;
+    }
+    const std::string &path() const
+    {
+        return path_;
+    }
+    /// An Error "NetCDF file '<path>': <what>".
+    Error error(const std::string &what) const;
+    /// Throws error(what + ": " + nc_strerror(status)) unless status is NC_NOERR.
+    void check(int status, const std::string &what) const;
+
+    int nvars() const;
+    std::string varName(int var) const;
+    std::string dimName(int dim) const;
+    std::size_t dimLen(int dim) const;
+    std::optional<int> findVar(const std::string &name) const;
+    std::vector<int> varDims(int var) const;
+    nc_type varType(int var) const;
+    /// A text attribute (NC_CHAR or the first NC_STRING), trimmed; nullopt when absent or numeric.
+    std::optional<std::string> attText(int var, const char *name) const;
+    /// A numeric attribute's values; empty when absent or text.
+    std::vector<double> attDoubles(int var, const char *name) const;
+    /// All values of a variable (any number of dimensions), as doubles.
+    std::vector<double> readAll1D(int var) const;
+
+private:
+    std::string path_;
+    int id_{-1};
+};
+
+// ---- what a variable is (VariableDetection.cpp) ----
+
+/// The standard_name attribute, lower case ("" when absent).
+std::string stdName(const NcFile &f, int var);
+/// The units attribute as written ("" when absent).
+std::string unitsOf(const NcFile &f, int var);
+/// Longitude: units degrees_east (and variants), standard_name longitude, or a usual name (lon, nav_lon, ...).
+bool isLonVar(const NcFile &f, int var);
+/// Latitude: units degrees_north (and variants), standard_name latitude, or a usual name (lat, nav_lat, ...).
+bool isLatVar(const NcFile &f, int var);
+/// Cartesian x: standard_name projection_x_coordinate, axis = "X", or a usual name (x, xc, easting, ...).
+bool isXVar(const NcFile &f, int var);
+/// Cartesian y: standard_name projection_y_coordinate, axis = "Y", or a usual name (y, yc, northing, ...).
+bool isYVar(const NcFile &f, int var);
+/// Time: units "<unit> since <date>", standard_name time, axis = "T", or a usual name (time, time_counter, ...).
+bool isTimeVar(const NcFile &f, int var);
+/// Depth: standard_name depth, axis = "Z", a positive attribute, or a usual name (depth, deptht, lev, ...).
+bool isDepthVar(const NcFile &f, int var);
+
+/// The eastward (east = true) or northward velocity variable: the given name, else the first CF standard_name
+/// of the known list found, else the first usual name found. @throws Error listing what was looked for.
+int findVelocity(const NcFile &f, const std::string &given, bool east, const std::string &optionName);
+
+/// What a dimension of the velocity variables is.
+enum class Role
+{
+    None,
+    Time,
+    Depth,
+    X,
+    Y
+};
+
+/// The dimensions of u classified by their 1-D coordinate variables (names given in the options first, then
+/// isTimeVar / isLonVar / isLatVar / isDepthVar / isXVar / isYVar in this order). Dimensions without a 1-D
+/// coordinate variable stay Role::None (a curvilinear grid's (j, i)).
+struct DimensionRoles
+{
+    std::vector<int> dims;      ///< dimension ids of u, in file order
+    std::vector<Role> role;     ///< per dimension
+    std::vector<int> coordVar;  ///< 1-D coordinate variable per dimension, -1 if none
+    bool geoAxes{false};        ///< a horizontal axis was recognised as longitude/latitude
+    bool cartAxes{false};       ///< a horizontal axis was recognised as Cartesian x/y
+
+    /// Index (in dims) of the dimension with role r, -1 if none.
+    int find(Role r) const;
+};
+
+/// Classifies the dimensions of the variable uVar. @throws Error when a given coordinate name is missing or not
+/// on a dimension of u, a dimension named like time has no coordinate variable, or two dimensions have the
+/// same role.
+DimensionRoles classifyDimensions(const NcFile &f, const NetCdfCurrentOptions &opt, int uVar);
+
+// ---- the grid (GridLayout.cpp) ----
+
+/// The velocity variables and the grid they are on.
+struct Layout
+{
+    int uVar{-1}, vVar{-1};
+    std::string uName, vName;
+    std::vector<int> dims;      ///< dimension ids of u and v, file order
+    std::vector<Role> role;     ///< per dimension
+    std::vector<int> coordVar;  ///< 1-D coordinate variable per dimension, -1 if none
+    int dimT{-1}, dimZ{-1}, dimX{-1}, dimY{-1};  ///< index in dims, -1 if absent (x/y always present)
+    bool curvilinear{false};    ///< x/y from 2-D coordinate variables lon2D/lat2D
+    int lon2D{-1}, lat2D{-1};
+    bool geographic{false};     ///< longitude/latitude (projected), else Cartesian
+    std::string xName, yName;   ///< the horizontal coordinate variables (1-D or 2-D)
+};
+
+/// Finds u and v and the grid they are on. @throws Error naming the file, the variable and what was expected.
+Layout detectLayout(const NcFile &f, const NetCdfCurrentOptions &opt);
+
+// ---- time (TimeAxis.cpp) and depth (DepthAxis.cpp) ----
+
+/// A time axis as read: dated ("<unit> since <date>") or raw values.
+struct TimeValues
+{
+    std::string name;                       ///< the variable
+    bool dated{false};
+    Calendar calendar{Calendar::Standard};  ///< dated axes
+    double originSeconds{0.0};              ///< first time, seconds since the calendar epoch (dated axes)
+    std::vector<double> times;              ///< per file index: seconds after the first time, or raw values
+};
+
+/// Reads the time coordinate variable tv. @throws Error when the units are not "<unit> since <date>" and
+/// allowUndated is false, when the units or calendar are not understood, or the values are not finite and
+/// strictly increasing.
+TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated);
+
+/// File indices and coordinate values chosen along one dimension.
+struct AxisSelection
+{
+    std::vector<std::size_t> idx{0};
+    std::vector<double> values{0.0};
+};
+
+/// The forecast times the mission needs (departure to departure + horizon, plus 2 steps each side); sets the
+/// time fields of out (dated, calendar, origin, forecast begin/end, departure). {0}/{0} without time axis.
+AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, NetCdfCurrents &out);
+
+/// The depth layers (metres, positive down, ascending) down to the first at or below maxDepth plus 2;
+/// {0}/{0} without depth axis.
+AxisSelection selectDepths(const NcFile &f, const Layout &l, double maxDepth);
+
+// ---- horizontal subset (RegionOfInterest.cpp, RectilinearSubset.cpp, CurvilinearSubset.cpp) ----
+
+/// The region of interest of the options.
+struct RegionOfInterest
+{
+    bool given{false};
+    double lonMin{kNaN}, lonMax{kNaN};  ///< as given (for messages)
+    double lon0{kNaN}, lon1{kNaN};      ///< lon1 >= lon0: +360 across the antimeridian (geographic)
+    double latMin{kNaN}, latMax{kNaN};
+    double margin{0.0};
+    int marginNodes{2};
+};
+
+/// @throws Error when only some bounds are given, latMin > latMax, or lonMin > lonMax in Cartesian mode.
+RegionOfInterest regionOfInterest(const NetCdfCurrentOptions &opt, bool geographic);
+
+/// The horizontal nodes loaded: file index per internal i / j and their coordinates.
+struct HorizontalSubset
+{
+    std::vector<std::size_t> xIdx, yIdx;
+    std::vector<double> lon1D, lat1D;      ///< rectilinear: coordinate per internal i / j
+    std::vector<double> nodeLon, nodeLat;  ///< curvilinear: coordinates per internal j * nx + i
+    double centreLon{kNaN}, centreLat{kNaN};
+};
+
+/// Indices [a, b] (inclusive) of an axis (ascending or descending) whose values lie in [lo, hi], widened by
+/// `extra` nodes; the bracketing pair when the interval falls between two nodes; nullopt when none.
+std::optional<std::pair<std::size_t, std::size_t>> indexRange(const std::vector<double> &ax, double lo, double hi,
+                                                              int extra);
+/// lon shifted by whole turns into [centre - 180, centre + 180).
+double wrapTo(double lon, double centre);
+
+/// 1-D axes: latitude stored ascending; longitude ascending, unwrapped across the seam of a global axis.
+HorizontalSubset rectilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r);
+/// 2-D coordinates: the index box of the nodes in the region (+ margin nodes) and their coordinates.
+HorizontalSubset curvilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r);
+
+// ---- reading (Hyperslab.cpp, UnitsAndPacking.cpp, LandMask.cpp) ----
+
+/// Contiguous runs of file indices along one dimension and the internal position of each index read.
+struct DimRead
+{
+    std::vector<std::pair<std::size_t, std::size_t>> runs;  ///< (start, count) in the file
+    std::vector<std::vector<std::size_t>> pos;              ///< per run, internal position of each element
+};
+
+/// Builds the runs from the list "internal position p -> file index fileIdx[p]".
+DimRead makeDimRead(const std::vector<std::size_t> &fileIdx);
+
+/// Reads `var` restricted to the per-dimension reads, scattering into `out` at internal offsets
+/// sum_d pos * stride[d]. Values are raw (packed) doubles.
+void readScatter(const NcFile &f, int var, const std::vector<DimRead> &dims, const std::vector<std::size_t> &stride,
+                 std::vector<double> &out);
+
+/// The reads of u/v: per file dimension the runs and the internal stride (internal order t, z, y, x).
+struct HyperslabPlan
+{
+    std::vector<DimRead> reads;
+    std::vector<std::size_t> stride;
+    std::size_t fileValues{1};  ///< values per component in the file variable
+};
+
+HyperslabPlan planHyperslab(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+                            const AxisSelection &t);
+
+/// Factor of a velocity unit string to m/s (m/s, cm/s, knots and their spellings); nullopt if unknown.
+std::optional<double> velocityScale(const std::string &units);
+/// Factor to m/s of u and v (options' velocityUnits, else their units attributes; 1 for dimensionless velocities
+/// of a Cartesian file). @throws Error for units not understood or different for u and v.
+double velocityScaleOf(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt);
+/// Factor of a Cartesian axis' units to metres (1000 for km, else 1).
+double axisScale(const NcFile &f, int var);
+
+/// Packing and missing-value rules of a variable (compared on the packed value).
+struct Packing
+{
+    double scale{1.0}, offset{0.0};
+    std::vector<double> fills;
+    double validMin{-kInf}, validMax{kInf};
+    bool isFill(double raw) const;
+};
+
+/// scale_factor / add_offset, _FillValue (else the netCDF default fill of the type), missing_value,
+/// valid_range / valid_min / valid_max. @throws Error for a zero or non-finite scale or offset.
+Packing packingOf(const NcFile &f, int var);
+
+/// Reads u and v over the plan into g.u / g.v (unpacked, m/s) and g.water (land where u or v is a fill value at
+/// any time). g.nx, g.ny, g.depth and g.time must be set.
+void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, double velScale, GriddedData &g);
+
+// ---- coordinates (NodeCoordinates.cpp) ----
+
+/// Sets the node coordinates of g: geographic grids are projected about the reference point (options, else the
+/// region's centre, else the grid's) and their velocities rotated into x/y; Cartesian axes are scaled to
+/// metres. Returns the projection (null in Cartesian mode).
+std::shared_ptr<const LocalProjection> setNodeCoordinates(const NcFile &f, const Layout &l, const HorizontalSubset &h,
+                                                          const RegionOfInterest &r, const NetCdfCurrentOptions &opt,
+                                                          GriddedData &g);
+}  // namespace netcdf_detail
+}  // namespace ompl_glider

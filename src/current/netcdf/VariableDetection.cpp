@@ -1,0 +1,216 @@
+// Which variables are the velocities and what each of their dimensions is (CF standard_name, axis attribute,
+// units, then usual names).
+#include <algorithm>
+
+#include "NetCdfInternal.h"
+
+namespace ompl_glider
+{
+namespace netcdf_detail
+{
+std::string stdName(const NcFile &f, int var)
+{
+    return lower(f.attText(var, "standard_name").value_or(""));
+}
+
+std::string unitsOf(const NcFile &f, int var)
+{
+    return f.attText(var, "units").value_or("");
+}
+
+namespace
+{
+std::string axisOf(const NcFile &f, int var)
+{
+    return lower(f.attText(var, "axis").value_or(""));
+}
+}  // namespace
+
+bool isLonVar(const NcFile &f, int var)
+{
+    const std::string u = lower(unitsOf(f, var)), sn = stdName(f, var), n = lower(f.varName(var));
+    return inList(u, {"degrees_east", "degree_east", "degrees_e", "degree_e", "degreese", "degreee"}) ||
+           sn == "longitude" || inList(n, {"lon", "longitude", "nav_lon", "glamt", "tlong", "lon_rho", "longitudes"});
+}
+
+bool isLatVar(const NcFile &f, int var)
+{
+    const std::string u = lower(unitsOf(f, var)), sn = stdName(f, var), n = lower(f.varName(var));
+    return inList(u, {"degrees_north", "degree_north", "degrees_n", "degree_n", "degreesn", "degreen"}) ||
+           sn == "latitude" || inList(n, {"lat", "latitude", "nav_lat", "gphit", "tlat", "lat_rho", "latitudes"});
+}
+
+bool isXVar(const NcFile &f, int var)
+{
+    const std::string sn = stdName(f, var), n = lower(f.varName(var));
+    return sn == "projection_x_coordinate" || axisOf(f, var) == "x" || inList(n, {"x", "xc", "x_rho", "easting"});
+}
+
+bool isYVar(const NcFile &f, int var)
+{
+    const std::string sn = stdName(f, var), n = lower(f.varName(var));
+    return sn == "projection_y_coordinate" || axisOf(f, var) == "y" || inList(n, {"y", "yc", "y_rho", "northing"});
+}
+
+bool isTimeVar(const NcFile &f, int var)
+{
+    const std::string u = lower(unitsOf(f, var)), sn = stdName(f, var), n = lower(f.varName(var));
+    return u.find(" since ") != std::string::npos || sn == "time" || axisOf(f, var) == "t" ||
+           inList(n, {"time", "t", "time_counter", "ocean_time", "valid_time", "mt"});
+}
+
+bool isDepthVar(const NcFile &f, int var)
+{
+    const std::string sn = stdName(f, var), n = lower(f.varName(var));
+    return sn == "depth" || axisOf(f, var) == "z" || f.attText(var, "positive") ||
+           inList(n, {"depth", "deptht", "depthu", "depthv", "depthw", "z", "lev", "level", "zlev"});
+}
+
+int findVelocity(const NcFile &f, const std::string &given, bool east, const std::string &optionName)
+{
+    if (!given.empty())
+    {
+        auto v = f.findVar(given);
+        if (!v)
+            throw f.error("no variable '" + given + "' (given with NetCdfCurrentOptions::" + optionName + ")");
+        return *v;
+    }
+    const std::vector<std::string> stdNames =
+        east ? std::vector<std::string>{"eastward_sea_water_velocity", "surface_eastward_sea_water_velocity",
+                                        "eastward_sea_water_velocity_assuming_no_tide",
+                                        "baroclinic_eastward_sea_water_velocity",
+                                        "barotropic_eastward_sea_water_velocity",
+                                        "surface_geostrophic_eastward_sea_water_velocity", "eastward_current",
+                                        "sea_water_x_velocity"}
+             : std::vector<std::string>{"northward_sea_water_velocity", "surface_northward_sea_water_velocity",
+                                        "northward_sea_water_velocity_assuming_no_tide",
+                                        "baroclinic_northward_sea_water_velocity",
+                                        "barotropic_northward_sea_water_velocity",
+                                        "surface_geostrophic_northward_sea_water_velocity", "northward_current",
+                                        "sea_water_y_velocity"};
+    const std::vector<std::string> names =
+        east ? std::vector<std::string>{"uo", "u", "water_u", "uvel", "vozocrtx", "ucur", "U", "u_current"}
+             : std::vector<std::string>{"vo", "v", "water_v", "vvel", "vomecrty", "vcur", "V", "v_current"};
+    const int nv = f.nvars();
+    for (const std::string &sn : stdNames)
+        for (int var = 0; var < nv; ++var)
+            if (stdName(f, var) == sn)
+                return var;
+    for (const std::string &n : names)
+        if (auto v = f.findVar(n))
+            return *v;
+    throw f.error(std::string("no ") + (east ? "eastward (u)" : "northward (v)") +
+                  " velocity variable: expected a variable with standard_name one of {" + joinNames(stdNames) +
+                  "} or named one of {" + joinNames(names) + "}; give its name with NetCdfCurrentOptions::" +
+                  optionName);
+}
+
+int DimensionRoles::find(Role r) const
+{
+    for (std::size_t d = 0; d < role.size(); ++d)
+        if (role[d] == r)
+            return int(d);
+    return -1;
+}
+
+namespace
+{
+/// A coordinate variable named in the options: its dimension gets the role (2-D coordinates are left to the
+/// curvilinear grid).
+void assignGiven(const NcFile &f, const std::string &name, Role r, const std::string &uName, DimensionRoles &dr)
+{
+    if (name.empty())
+        return;
+    auto v = f.findVar(name);
+    if (!v)
+        throw f.error("no coordinate variable '" + name + "' (given in NetCdfCurrentOptions)");
+    const std::vector<int> vd = f.varDims(*v);
+    if (vd.size() != 1)
+        return;  // 2-D coordinates are handled with the curvilinear grid
+    for (std::size_t d = 0; d < dr.dims.size(); ++d)
+        if (dr.dims[d] == vd[0])
+        {
+            dr.role[d] = r;
+            dr.coordVar[d] = *v;
+            return;
+        }
+    throw f.error("coordinate variable '" + name + "' is not on a dimension of '" + uName + "'");
+}
+
+/// The role of a 1-D coordinate variable from its attributes and name (time first).
+Role roleOf(const NcFile &f, int cv, CoordinateMode mode, bool &geoAxes, bool &cartAxes)
+{
+    const bool cartesian = mode == CoordinateMode::Cartesian;
+    if (isTimeVar(f, cv))
+        return Role::Time;
+    if (!cartesian && isLonVar(f, cv))
+        return geoAxes = true, Role::X;
+    if (!cartesian && isLatVar(f, cv))
+        return geoAxes = true, Role::Y;
+    if (isDepthVar(f, cv))
+        return Role::Depth;
+    if (isXVar(f, cv) || (cartesian && isLonVar(f, cv)))
+        return cartAxes = true, Role::X;
+    if (isYVar(f, cv) || (cartesian && isLatVar(f, cv)))
+        return cartAxes = true, Role::Y;
+    return Role::None;
+}
+
+/// Dimensions not named in the options, classified by their coordinate variable (same name, 1-D on it).
+void assignDetected(const NcFile &f, CoordinateMode mode, const std::string &uName, DimensionRoles &dr)
+{
+    for (std::size_t d = 0; d < dr.dims.size(); ++d)
+    {
+        if (dr.role[d] != Role::None)
+            continue;
+        const std::string dn = f.dimName(dr.dims[d]);
+        auto cv = f.findVar(dn);
+        if (!cv || f.varDims(*cv).size() != 1 || f.varDims(*cv)[0] != dr.dims[d])
+        {
+            if (inList(lower(dn), {"time", "t", "time_counter", "ocean_time"}))
+                throw f.error("dimension '" + dn + "' of '" + uName +
+                              "' looks like time but has no coordinate variable '" + dn + "'");
+            continue;
+        }
+        dr.role[d] = roleOf(f, *cv, mode, dr.geoAxes, dr.cartAxes);
+        if (dr.role[d] != Role::None)
+            dr.coordVar[d] = *cv;
+    }
+}
+
+/// Axes named by the user: geographic when their attributes say degrees, else Cartesian.
+void markNamedAxes(const NcFile &f, const NetCdfCurrentOptions &opt, DimensionRoles &dr)
+{
+    for (std::size_t d = 0; d < dr.dims.size(); ++d)
+    {
+        const Role r = dr.role[d];
+        const bool named = (r == Role::X && !opt.lonName.empty()) || (r == Role::Y && !opt.latName.empty());
+        if (!named || dr.coordVar[d] < 0)
+            continue;
+        const bool deg = r == Role::X ? isLonVar(f, dr.coordVar[d]) : isLatVar(f, dr.coordVar[d]);
+        (deg && opt.coordinates != CoordinateMode::Cartesian ? dr.geoAxes : dr.cartAxes) = true;
+    }
+}
+}  // namespace
+
+DimensionRoles classifyDimensions(const NcFile &f, const NetCdfCurrentOptions &opt, int uVar)
+{
+    DimensionRoles dr;
+    dr.dims = f.varDims(uVar);
+    dr.role.assign(dr.dims.size(), Role::None);
+    dr.coordVar.assign(dr.dims.size(), -1);
+    const std::string uName = f.varName(uVar);
+    assignGiven(f, opt.timeName, Role::Time, uName, dr);
+    assignGiven(f, opt.depthName, Role::Depth, uName, dr);
+    assignGiven(f, opt.lonName, Role::X, uName, dr);
+    assignGiven(f, opt.latName, Role::Y, uName, dr);
+    assignDetected(f, opt.coordinates, uName, dr);
+    markNamedAxes(f, opt, dr);
+    for (Role r : {Role::Time, Role::Depth, Role::X, Role::Y})
+        if (std::count(dr.role.begin(), dr.role.end(), r) > 1)
+            throw f.error("variable '" + uName + "' has two dimensions of the same kind; name the coordinates "
+                          "with NetCdfCurrentOptions::timeName/depthName/lonName/latName");
+    return dr;
+}
+}  // namespace netcdf_detail
+}  // namespace ompl_glider

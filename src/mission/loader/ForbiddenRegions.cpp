@@ -1,0 +1,198 @@
+// Forbidden regions of a mission: static polygons, time-windowed zones and ice zones, inline or from a GeoJSON
+// FeatureCollection ([IsernObstacles] Sec. II; ice: [EichhornIce]).
+#include <cmath>
+#include <limits>
+
+#include "MissionReader.h"
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider::mission_loader
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// --- GeoJSON forbidden regions ---------------------------------------------------------------------------------
+
+void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
+{
+    const std::string &path = m.forbidden.geojson;
+    YAML::Node doc;
+    try
+    {
+        doc = YAML::LoadFile(path);
+    }
+    catch (const YAML::BadFile &)
+    {
+        r.fail(where, "forbidden.geojson", "cannot open '" + path + "'");
+    }
+    catch (const YAML::ParserException &e)
+    {
+        throw Error(path + ":" + std::to_string(e.mark.line + 1) + ": not valid GeoJSON: " + e.msg);
+    }
+    const Reader g(path, r.dir());
+    if (!doc.IsMap() || !doc["type"] || doc["type"].Scalar() != "FeatureCollection" || !doc["features"] ||
+        !doc["features"].IsSequence())
+        g.fail(doc, "type", "expected a GeoJSON FeatureCollection with a 'features' list");
+    const bool geo = m.forbidden.geojsonGeographic;
+    if (geo && !m.projection.set && m.current.type != "netcdf")
+        r.fail(where, "forbidden.geojson", "GeoJSON coordinates are lon/lat: give a 'projection' in the mission");
+    const YAML::Node &features = doc["features"];
+    for (std::size_t i = 0; i < features.size(); ++i)
+    {
+        const YAML::Node &ft = features[i];
+        const std::string fld = "features[" + std::to_string(i) + "]";
+        if (!ft.IsMap() || !ft["geometry"] || !ft["geometry"].IsMap() || !ft["geometry"]["type"])
+            g.fail(ft, fld, "expected a Feature with a geometry");
+        const YAML::Node &geom = ft["geometry"];
+        const std::string type = geom["type"].Scalar();
+        if (type != "Polygon" && type != "MultiPolygon")
+            g.fail(geom, fld + ".geometry.type",
+                   "only Polygon and MultiPolygon are forbidden regions (got " + type + ")");
+        YAML::Node props = ft["properties"];
+        std::string name = "feature " + std::to_string(i), kind = "island";
+        if (props && props.IsMap())
+        {
+            g.checkMap(props, fld + ".properties",
+                       {"name", "kind", "windows", "max_submerged_time", "drift", "t_ref", "carried"});
+            if (props["name"])
+                name = g.text(props["name"], fld + ".properties.name");
+            if (props["kind"])
+                kind = g.oneOf(props["kind"], fld + ".properties.kind",
+                               {"island", "land", "restricted area", "closure", "ice"});
+        }
+        std::vector<YAML::Node> polys;
+        if (type == "Polygon")
+            polys.push_back(geom["coordinates"]);
+        else if (geom["coordinates"].IsSequence())
+            for (std::size_t k = 0; k < geom["coordinates"].size(); ++k)
+                polys.push_back(geom["coordinates"][k]);
+        for (std::size_t k = 0; k < polys.size(); ++k)
+        {
+            const YAML::Node &rings = polys[k];
+            const std::string pf =
+                fld + ".geometry.coordinates" + (type == "Polygon" ? "" : "[" + std::to_string(k) + "]");
+            if (!rings.IsSequence() || rings.size() < 1)
+                g.fail(rings, pf, "expected a list of linear rings");
+            PolygonSpec poly;
+            poly.name = polys.size() > 1 ? name + " #" + std::to_string(k + 1) : name;
+            poly.geographic = geo;
+            poly.mark = {path, g.line(rings)};
+            poly.points = g.ring(rings[0], pf + "[0]");
+            for (std::size_t h = 1; h < rings.size(); ++h)
+                poly.holes.push_back(g.ring(rings[h], pf + "[" + std::to_string(h) + "]"));
+            if (kind == "closure")
+            {
+                TimeWindowSpec tw;
+                tw.polygon = poly;
+                if (!props["windows"] || !props["windows"].IsSequence())
+                    g.fail(ft, fld + ".properties.windows", "a closure needs windows: [[from, to], ...]");
+                for (std::size_t w = 0; w < props["windows"].size(); ++w)
+                    tw.windows.push_back(
+                        g.pair(props["windows"][w], fld + ".properties.windows[" + std::to_string(w) + "]"));
+                m.forbidden.timeWindows.push_back(tw);
+            }
+            else if (kind == "ice")
+            {
+                IceSpec ice;
+                ice.polygon = poly;
+                if (!props["max_submerged_time"])
+                    g.fail(ft, fld + ".properties.max_submerged_time", "an ice zone needs max_submerged_time");
+                ice.maxSubmergedTime =
+                    g.nonNegative(props["max_submerged_time"], fld + ".properties.max_submerged_time");
+                if (props["t_ref"])
+                    ice.tRef = g.finite(props["t_ref"], fld + ".properties.t_ref");
+                if (props["drift"])
+                    std::tie(ice.vx, ice.vy) = g.pair(props["drift"], fld + ".properties.drift");
+                if (props["carried"])
+                    ice.carried = g.boolean(props["carried"], fld + ".properties.carried");
+                m.forbidden.ice.push_back(ice);
+            }
+            else
+                m.forbidden.obstacles.push_back({poly, kind});
+        }
+    }
+}
+
+}  // namespace
+
+void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const std::string f = "forbidden";
+    r.checkMap(n, f, {"obstacles", "time_windows", "ice", "geojson", "geojson_coordinates"});
+    auto list = [&](const char *key) -> YAML::Node {
+        const YAML::Node &l = n[key];
+        if (l && !l.IsSequence())
+            r.fail(l, f + "." + key, "expected a list");
+        return l;
+    };
+    if (const YAML::Node l = list("obstacles"))
+        for (std::size_t i = 0; i < l.size(); ++i)
+        {
+            const std::string g = f + ".obstacles[" + std::to_string(i) + "]";
+            r.checkMap(l[i], g, {"name", "kind", "points", "lonlat", "holes"});
+            ObstacleSpec o;
+            readPolygon(r, l[i], g, o.polygon, m);
+            if (o.polygon.name.empty())
+                o.polygon.name = "obstacle " + std::to_string(i + 1);
+            if (l[i]["kind"])
+                o.kind = r.oneOf(l[i]["kind"], g + ".kind", {"island", "land", "restricted area"});
+            m.forbidden.obstacles.push_back(o);
+        }
+    if (const YAML::Node l = list("time_windows"))
+        for (std::size_t i = 0; i < l.size(); ++i)
+        {
+            const std::string g = f + ".time_windows[" + std::to_string(i) + "]";
+            r.checkMap(l[i], g, {"name", "points", "lonlat", "holes", "windows"});
+            TimeWindowSpec tw;
+            readPolygon(r, l[i], g, tw.polygon, m);
+            if (tw.polygon.name.empty())
+                tw.polygon.name = "closure " + std::to_string(i + 1);
+            const YAML::Node &w = l[i]["windows"];
+            if (!w || !w.IsSequence() || w.size() == 0)
+                r.fail(w ? w : l[i], g + ".windows", "expected a list of [from, to] time intervals");
+            for (std::size_t k = 0; k < w.size(); ++k)
+            {
+                const std::string wf = g + ".windows[" + std::to_string(k) + "]";
+                if (!w[k].IsSequence() || w[k].size() != 2)
+                    r.fail(w[k], wf, "expected [from, to]");
+                const double a = r.time(w[k][0], wf + "[0]", m), b = r.time(w[k][1], wf + "[1]", m);
+                if (!(b >= a))
+                    r.fail(w[k], wf, "'to' must not be before 'from'");
+                tw.windows.push_back({a, b});
+            }
+            m.forbidden.timeWindows.push_back(tw);
+        }
+    if (const YAML::Node l = list("ice"))
+        for (std::size_t i = 0; i < l.size(); ++i)
+        {
+            const std::string g = f + ".ice[" + std::to_string(i) + "]";
+            r.checkMap(l[i], g,
+                       {"name", "points", "lonlat", "holes", "t_ref", "drift", "carried", "max_submerged_time"});
+            IceSpec ice;
+            readPolygon(r, l[i], g, ice.polygon, m);
+            if (ice.polygon.name.empty())
+                ice.polygon.name = "ice " + std::to_string(i + 1);
+            if (!l[i]["max_submerged_time"])
+                r.fail(l[i], g + ".max_submerged_time", "missing: the longest continuous stay under the ice");
+            ice.maxSubmergedTime = r.nonNegative(l[i]["max_submerged_time"], g + ".max_submerged_time");
+            if (l[i]["t_ref"])
+                ice.tRef = r.time(l[i]["t_ref"], g + ".t_ref", m);
+            if (l[i]["drift"] && l[i]["carried"])
+                r.fail(l[i], g, "give either drift [vx, vy] or carried: true");
+            if (l[i]["drift"])
+                std::tie(ice.vx, ice.vy) = r.pair(l[i]["drift"], g + ".drift");
+            if (l[i]["carried"])
+                ice.carried = r.boolean(l[i]["carried"], g + ".carried");
+            m.forbidden.ice.push_back(ice);
+        }
+    if (n["geojson_coordinates"])
+        m.forbidden.geojsonGeographic =
+            r.oneOf(n["geojson_coordinates"], f + ".geojson_coordinates", {"geographic", "local"}) == "geographic";
+    if (n["geojson"])
+    {
+        m.forbidden.geojson = joinPath(r.dir(), r.text(n["geojson"], f + ".geojson"));
+        readGeoJson(r, n["geojson"], m);
+    }
+}
+}  // namespace ompl_glider::mission_loader

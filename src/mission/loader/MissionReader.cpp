@@ -1,0 +1,261 @@
+// The mission loader's YAML reader: accessors that name file:line and the dotted field in every error, and the
+// readers of points and polygons shared by the sections.
+#include <cmath>
+#include <fstream>
+
+#include "MissionReader.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/CfTime.h"
+#include "ompl_glider/mission/IsoTime.h"
+
+namespace ompl_glider::mission_loader
+{
+std::string joinPath(const std::string &dir, const std::string &p)
+{
+    if (p.empty() || p[0] == '/' || dir.empty() || dir == ".")
+        return p;
+    return dir + "/" + p;
+}
+
+bool fileExists(const std::string &p)
+{
+    std::ifstream f(p);
+    return static_cast<bool>(f);
+}
+
+void Reader::fail(const YAML::Node &node, const std::string &field, const std::string &what) const
+{
+    throw Error(where(node) + "field '" + field + "': " + what);
+}
+
+void Reader::failAt(int line, const std::string &field, const std::string &what) const
+{
+    throw Error(file_ + ":" + std::to_string(line) + ": field '" + field + "': " + what);
+}
+
+std::string Reader::where(const YAML::Node &node) const
+{
+    const YAML::Mark m = node.Mark();
+    if (m.line < 0)
+        return file_ + ": ";
+    return file_ + ":" + std::to_string(m.line + 1) + ": ";
+}
+
+void Reader::checkMap(const YAML::Node &node, const std::string &path, const std::set<std::string> &allowed) const
+{
+    if (!node.IsMap())
+        fail(node, path, "expected a mapping (key: value lines)");
+    std::set<std::string> seen;
+    for (auto it = node.begin(); it != node.end(); ++it)
+    {
+        const std::string key = it->first.Scalar();
+        if (!seen.insert(key).second)
+            throw Error(where(it->first) + "field '" + sub(path, key) + "' is given twice");
+        if (!allowed.count(key))
+        {
+            std::string list;
+            for (const auto &a : allowed)
+                list += (list.empty() ? "" : ", ") + a;
+            throw Error(where(it->first) + "unknown field '" + sub(path, key) + "' (allowed here: " + list + ")");
+        }
+    }
+}
+
+double Reader::number(const YAML::Node &node, const std::string &field) const
+{
+    if (!node.IsScalar())
+        fail(node, field, "expected a number");
+    double v;
+    try
+    {
+        v = node.as<double>();
+    }
+    catch (const YAML::Exception &)
+    {
+        fail(node, field, "expected a number, got '" + node.Scalar() + "'");
+    }
+    if (std::isnan(v))
+        fail(node, field, "expected a number, got NaN");
+    return v;
+}
+
+double Reader::finite(const YAML::Node &node, const std::string &field) const
+{
+    const double v = number(node, field);
+    if (!std::isfinite(v))
+        fail(node, field, "expected a finite number");
+    return v;
+}
+
+double Reader::positive(const YAML::Node &node, const std::string &field) const
+{
+    const double v = finite(node, field);
+    if (!(v > 0))
+        fail(node, field, "expected a number > 0, got " + node.Scalar());
+    return v;
+}
+
+double Reader::nonNegative(const YAML::Node &node, const std::string &field) const
+{
+    const double v = number(node, field);
+    if (!(v >= 0) || !std::isfinite(v))
+        fail(node, field, "expected a finite number >= 0, got " + node.Scalar());
+    return v;
+}
+
+long Reader::integer(const YAML::Node &node, const std::string &field, long lo, long hi) const
+{
+    if (!node.IsScalar())
+        fail(node, field, "expected an integer");
+    long v;
+    try
+    {
+        v = node.as<long>();
+    }
+    catch (const YAML::Exception &)
+    {
+        fail(node, field, "expected an integer, got '" + node.Scalar() + "'");
+    }
+    if (v < lo || v > hi)
+        fail(node, field, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " +
+                              std::to_string(v));
+    return v;
+}
+
+bool Reader::boolean(const YAML::Node &node, const std::string &field) const
+{
+    if (!node.IsScalar())
+        fail(node, field, "expected true or false");
+    try
+    {
+        return node.as<bool>();
+    }
+    catch (const YAML::Exception &)
+    {
+        fail(node, field, "expected true or false, got '" + node.Scalar() + "'");
+    }
+}
+
+std::string Reader::text(const YAML::Node &node, const std::string &field) const
+{
+    if (!node.IsScalar() || node.Scalar().empty())
+        fail(node, field, "expected a non-empty text");
+    return node.Scalar();
+}
+
+std::string Reader::oneOf(const YAML::Node &node, const std::string &field, const std::set<std::string> &values) const
+{
+    const std::string v = text(node, field);
+    if (!values.count(v))
+    {
+        std::string list;
+        for (const auto &a : values)
+            list += (list.empty() ? "" : ", ") + a;
+        fail(node, field, "'" + v + "' is not one of: " + list);
+    }
+    return v;
+}
+
+double Reader::time(const YAML::Node &node, const std::string &field, const MissionSpec &m) const
+{
+    if (!node.IsScalar())
+        fail(node, field, "expected a time (a number, or an ISO 8601 date when the mission has an epoch)");
+    try
+    {
+        return finite(node, field);
+    }
+    catch (const Error &)
+    {
+        if (m.fileCalendar)
+        {
+            try
+            {
+                const DateTime d = parseDateTime(node.Scalar());
+                return secondsSinceCalendarEpoch(d, m.fileCalendar->calendar) - m.fileCalendar->originSeconds;
+            }
+            catch (const Error &e)
+            {
+                fail(node, field, e.what());
+            }
+        }
+        if (!m.epoch)
+            fail(node, field, "expected a number (an ISO 8601 date needs 'epoch' at the top of the mission)");
+        try
+        {
+            return (parseIsoTime(node.Scalar()) - *m.epoch) / m.timeUnitSeconds;
+        }
+        catch (const Error &e)
+        {
+            fail(node, field, e.what());
+        }
+    }
+}
+
+std::pair<double, double> Reader::pair(const YAML::Node &node, const std::string &field) const
+{
+    if (!node.IsSequence() || node.size() != 2)
+        fail(node, field, "expected a pair [a, b]");
+    return {finite(node[0], field + "[0]"), finite(node[1], field + "[1]")};
+}
+
+std::vector<std::pair<double, double>> Reader::ring(const YAML::Node &node, const std::string &field) const
+{
+    if (!node.IsSequence() || node.size() < 3)
+        fail(node, field, "expected a list of at least 3 points [a, b]");
+    std::vector<std::pair<double, double>> out;
+    for (std::size_t i = 0; i < node.size(); ++i)
+        out.push_back(pair(node[i], field + "[" + std::to_string(i) + "]"));
+    return out;
+}
+
+void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, PointSpec &p, const MissionSpec &m)
+{
+    r.checkMap(n, field, {"x", "y", "lon", "lat"});
+    const bool xy = n["x"] || n["y"], geo = n["lon"] || n["lat"];
+    if (xy == geo)
+        r.fail(n, field, "give either x and y, or lon and lat");
+    if (xy)
+    {
+        if (!n["x"] || !n["y"])
+            r.fail(n, field, "both x and y are required");
+        p.geographic = false;
+        p.x = r.finite(n["x"], field + ".x");
+        p.y = r.finite(n["y"], field + ".y");
+    }
+    else
+    {
+        if (!n["lon"] || !n["lat"])
+            r.fail(n, field, "both lon and lat are required");
+        if (!m.projection.set && m.current.type != "netcdf")
+            r.fail(n, field, "lon/lat needs a 'projection' (lon0, lat0) in the mission");
+        p.geographic = true;
+        p.lon = r.finite(n["lon"], field + ".lon");
+        p.lat = r.finite(n["lat"], field + ".lat");
+        if (std::abs(p.lat) > 90)
+            r.fail(n["lat"], field + ".lat", "latitude must be within [-90, 90]");
+    }
+}
+
+void readPolygon(const Reader &r, const YAML::Node &n, const std::string &field, PolygonSpec &poly,
+                 const MissionSpec &m)
+{
+    poly.mark = {r.file(), r.line(n)};
+    if (n["name"])
+        poly.name = r.text(n["name"], field + ".name");
+    const bool xy = static_cast<bool>(n["points"]), geo = static_cast<bool>(n["lonlat"]);
+    if (xy == geo)
+        r.fail(n, field, "give the vertices either as 'points' ([x, y] ...) or as 'lonlat' ([lon, lat] ...)");
+    if (geo && !m.projection.set && m.current.type != "netcdf")
+        r.fail(n["lonlat"], field + ".lonlat", "lon/lat vertices need a 'projection' in the mission");
+    poly.geographic = geo;
+    poly.points = r.ring(geo ? n["lonlat"] : n["points"], field + (geo ? ".lonlat" : ".points"));
+    if (n["holes"])
+    {
+        const YAML::Node &h = n["holes"];
+        if (!h.IsSequence())
+            r.fail(h, field + ".holes", "expected a list of rings");
+        for (std::size_t i = 0; i < h.size(); ++i)
+            poly.holes.push_back(r.ring(h[i], field + ".holes[" + std::to_string(i) + "]"));
+    }
+}
+}  // namespace ompl_glider::mission_loader

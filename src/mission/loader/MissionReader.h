@@ -1,0 +1,82 @@
+#pragma once
+/// @file MissionReader.h
+/// @brief Internal to the mission loader: the YAML reader that names file:line and the dotted field in every error,
+/// and the readers of the mission's sections (one per top-level key). Not installed.
+#include <yaml-cpp/yaml.h>
+
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ompl_glider/mission/MissionSpec.h"
+
+namespace ompl_glider::mission_loader
+{
+/// @p p relative to the mission file's directory @p dir (absolute paths unchanged).
+std::string joinPath(const std::string &dir, const std::string &p);
+bool fileExists(const std::string &p);
+
+/// Reads one mission; every accessor names the file, the line and the dotted field.
+class Reader
+{
+public:
+    Reader(std::string file, std::string dir) : file_(std::move(file)), dir_(std::move(dir))
+    {
+    }
+
+    const std::string &file() const
+    {
+        return file_;
+    }
+    const std::string &dir() const
+    {
+        return dir_;
+    }
+
+    [[noreturn]] void fail(const YAML::Node &node, const std::string &field, const std::string &what) const;
+    [[noreturn]] void failAt(int line, const std::string &field, const std::string &what) const;
+    /// "file:line: " of @p node ("file: " when the node has no position).
+    std::string where(const YAML::Node &node) const;
+    int line(const YAML::Node &node) const
+    {
+        return node.Mark().line + 1;
+    }
+    static std::string sub(const std::string &path, const std::string &key)
+    {
+        return path.empty() ? key : path + "." + key;
+    }
+
+    /// The node must be a map whose keys are all in @p allowed.
+    void checkMap(const YAML::Node &node, const std::string &path, const std::set<std::string> &allowed) const;
+    double number(const YAML::Node &node, const std::string &field) const;
+    double finite(const YAML::Node &node, const std::string &field) const;
+    double positive(const YAML::Node &node, const std::string &field) const;
+    double nonNegative(const YAML::Node &node, const std::string &field) const;
+    long integer(const YAML::Node &node, const std::string &field, long lo, long hi) const;
+    bool boolean(const YAML::Node &node, const std::string &field) const;
+    std::string text(const YAML::Node &node, const std::string &field) const;
+    std::string oneOf(const YAML::Node &node, const std::string &field, const std::set<std::string> &values) const;
+    /// A time: a number in field units, or an ISO 8601 date converted with the mission's epoch or file calendar.
+    double time(const YAML::Node &node, const std::string &field, const MissionSpec &m) const;
+    /// A [a, b] pair of numbers.
+    std::pair<double, double> pair(const YAML::Node &node, const std::string &field) const;
+    /// A list of at least 3 pairs.
+    std::vector<std::pair<double, double>> ring(const YAML::Node &node, const std::string &field) const;
+
+private:
+    std::string file_, dir_;
+};
+
+// Readers of the mission's parts; each validates its node and fills its part of @p m.
+void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, PointSpec &p, const MissionSpec &m);
+void readPolygon(const Reader &r, const YAML::Node &n, const std::string &field, PolygonSpec &poly,
+                 const MissionSpec &m);
+void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m);
+void readRegion(const Reader &r, const YAML::Node &n, MissionSpec &m);
+void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m);
+void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m);
+void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m);
+void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m);
+void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m);
+}  // namespace ompl_glider::mission_loader

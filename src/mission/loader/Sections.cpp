@@ -1,0 +1,363 @@
+// Readers of the mission's sections: current (with the NetCDF file's calendar), region, departure, dive profile,
+// planner and outputs ([EichhornOceans] Sec. IV mission contents).
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "MissionReader.h"
+#include "ompl_glider/Config.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/CfTime.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/mission/IsoTime.h"
+#include "ompl_glider/output/OutputFormats.h"
+#include "ompl_glider/planners/PlannerRegistry.h"
+#if OMPL_GLIDER_WITH_NETCDF
+#include "ompl_glider/current/NetCdfCurrents.h"
+#endif
+
+namespace ompl_glider::mission_loader
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+/// Time origin of a NetCDF forecast (its first time, as the loader uses it): ISO dates of the mission are field
+/// times in the file's calendar, and the outputs get calendar dates. The time axis is found by the loader's own
+/// detection (readNetCdfTimeAxis(): variables.time, else axis "T", standard_name "time" or "<unit> since <date>").
+void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+#if !OMPL_GLIDER_WITH_NETCDF
+    (void)m;
+    r.fail(n["type"], "current.type",
+           "netcdf: this build of ompl_glider has no NetCDF support (OMPL_GLIDER_WITH_NETCDF=OFF)");
+#else
+    auto given = [&](const char *role) {
+        const auto it = m.current.variables.find(role);
+        return it == m.current.variables.end() ? std::string() : it->second;
+    };
+    const std::string timeName = given("time"), uName = given("u");
+    NetCdfTimeAxis axis;
+    try
+    {
+        axis = readNetCdfTimeAxis(m.current.file, timeName, uName);
+    }
+    catch (const Error &e)
+    {
+        // on the variable the message names when the mission gave it, else on the file
+        const std::string what = e.what();
+        if (!timeName.empty() && what.find("'" + timeName + "'") != std::string::npos)
+            r.fail(n["variables"]["time"], "current.variables.time", what);
+        if (!uName.empty() && what.find("'" + uName + "'") != std::string::npos)
+            r.fail(n["variables"]["u"], "current.variables.u", what);
+        r.fail(n["file"], "current.file", what);
+    }
+    if (!axis.found || !axis.dated)
+        return;  // a steady field, or raw times of a Cartesian file: no calendar
+    MissionSpec::FileCalendar fc;
+    fc.calendar = axis.calendar;
+    fc.originSeconds = axis.originSeconds;
+    m.fileCalendar = fc;
+    m.epoch = fc.originSeconds - secondsSinceCalendarEpoch(DateTime{}, axis.calendar);
+#endif
+}
+
+}  // namespace
+
+void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const std::string f = "current";
+    r.checkMap(n, f, {"type", "parameters", "file", "variables", "interpolation", "horizon"});
+    CurrentSpec &c = m.current;
+    c.mark = {r.file(), r.line(n)};
+    std::set<std::string> kinds;
+    for (const CurrentFieldKind &k : currentFieldKinds())
+        kinds.insert(k.name);
+    if (!n["type"])
+        r.fail(n, f + ".type", "missing (" + currentFieldKindList() + ")");
+    c.type = r.oneOf(n["type"], f + ".type", kinds);
+    const CurrentFieldKind &kind = *findCurrentFieldKind(c.type);
+    if (n["parameters"])
+    {
+        std::set<std::string> names;
+        for (const auto &[key, value] : kind.parameters)
+            names.insert(key);
+        r.checkMap(n["parameters"], f + ".parameters", names);
+        for (auto it = n["parameters"].begin(); it != n["parameters"].end(); ++it)
+        {
+            const std::string key = it->first.Scalar();
+            c.parameters[key] = r.finite(it->second, f + ".parameters." + key);
+        }
+    }
+    if (c.type == "double_gyre" && c.parameters.count("length") && !(c.parameters["length"] > 0))
+        r.fail(n["parameters"]["length"], f + ".parameters.length", "expected a number > 0");
+    const bool netcdf = kind.gridded;
+    for (const char *key : {"file", "variables", "interpolation", "horizon"})
+        if (n[key] && !netcdf)
+            r.fail(n[key], f + "." + key, "only for type netcdf");
+    if (!netcdf)
+        return;
+    if (!n["file"])
+        r.fail(n, f + ".file", "missing: the NetCDF forecast file");
+    c.file = joinPath(r.dir(), r.text(n["file"], f + ".file"));
+    if (!fileExists(c.file))
+        r.fail(n["file"], f + ".file", "cannot open '" + c.file + "'");
+    if (n["variables"])
+    {
+        r.checkMap(n["variables"], f + ".variables", {"u", "v", "x", "y", "lon", "lat", "depth", "time"});
+        for (auto it = n["variables"].begin(); it != n["variables"].end(); ++it)
+            c.variables[it->first.Scalar()] = r.text(it->second, f + ".variables." + it->first.Scalar());
+    }
+    if (n["interpolation"])
+    {
+        const YAML::Node &i = n["interpolation"];
+        r.checkMap(i, f + ".interpolation", {"xy", "depth", "time"});
+        if (i["xy"])
+            c.xyInterpolation = r.oneOf(i["xy"], f + ".interpolation.xy", {"nearest", "bilinear", "bicubic"});
+        if (i["depth"])
+            c.depthInterpolation =
+                r.oneOf(i["depth"], f + ".interpolation.depth", {"nearest", "linear", "cubic", "akima"});
+        if (i["time"])
+            c.timeInterpolation =
+                r.oneOf(i["time"], f + ".interpolation.time", {"nearest", "linear", "cubic", "akima"});
+    }
+    if (n["horizon"])
+        c.horizonPolicy = r.oneOf(n["horizon"], f + ".horizon", {"refuse", "hold_last"});
+    readFileCalendar(r, n, m);
+}
+
+void readRegion(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const std::string f = "region";
+    r.checkMap(n, f, {"x_min", "x_max", "y_min", "y_max", "lon_min", "lon_max", "lat_min", "lat_max"});
+    RegionSpec &g = m.region;
+    g.set = true;
+    const bool xy = n["x_min"] || n["x_max"] || n["y_min"] || n["y_max"];
+    const bool geo = n["lon_min"] || n["lon_max"] || n["lat_min"] || n["lat_max"];
+    if (xy == geo)
+        r.fail(n, f, "give either x_min, x_max, y_min, y_max or lon_min, lon_max, lat_min, lat_max");
+    auto need = [&](const char *key) -> double {
+        if (!n[key])
+            r.fail(n, f + "." + key, "missing");
+        return r.finite(n[key], f + "." + key);
+    };
+    g.geographic = geo;
+    if (xy)
+    {
+        g.xMin = need("x_min");
+        g.xMax = need("x_max");
+        g.yMin = need("y_min");
+        g.yMax = need("y_max");
+        if (!(g.xMax > g.xMin))
+            r.fail(n["x_max"], f + ".x_max", "must be > x_min");
+        if (!(g.yMax > g.yMin))
+            r.fail(n["y_max"], f + ".y_max", "must be > y_min");
+    }
+    else
+    {
+        if (!m.projection.set && m.current.type != "netcdf")
+            r.fail(n, f, "lon/lat bounds need a 'projection' in the mission");
+        g.lonMin = need("lon_min");
+        g.lonMax = need("lon_max");
+        g.latMin = need("lat_min");
+        g.latMax = need("lat_max");
+        if (!(g.lonMax > g.lonMin))
+            r.fail(n["lon_max"], f + ".lon_max", "must be > lon_min");
+        if (!(g.latMax > g.latMin))
+            r.fail(n["lat_max"], f + ".lat_max", "must be > lat_min");
+    }
+}
+
+void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const std::string f = "departure";
+    r.checkMap(n, f, {"time", "window"});
+    DepartureSpec &d = m.departure;
+    if (n["time"] && n["window"])
+        r.fail(n, f, "give either a departure time or a departure window, not both");
+    if (n["time"])
+        d.time = r.time(n["time"], f + ".time", m);
+    if (!n["window"])
+        return;
+    const YAML::Node &w = n["window"];
+    const std::string g = f + ".window";
+    r.checkMap(w, g, {"begin", "end", "spacing", "tolerance", "coarse_grid_size", "coarse_sectors", "threads"});
+    if (!w["begin"] || !w["end"])
+        r.fail(w, g, "begin and end are required");
+    d.window = true;
+    d.begin = r.time(w["begin"], g + ".begin", m);
+    d.end = r.time(w["end"], g + ".end", m);
+    if (!(d.end >= d.begin))
+        r.fail(w["end"], g + ".end", "must not be before begin");
+    d.time = d.begin;
+    if (w["spacing"])
+        d.spacing = r.positive(w["spacing"], g + ".spacing");
+    if (w["tolerance"])
+        d.tolerance = r.positive(w["tolerance"], g + ".tolerance");
+    if (w["coarse_grid_size"])
+        d.coarseGridSize = r.positive(w["coarse_grid_size"], g + ".coarse_grid_size");
+    if (w["coarse_sectors"])
+        d.coarseSectors = static_cast<int>(r.integer(w["coarse_sectors"], g + ".coarse_sectors", 1, 5));
+    if (w["threads"])
+        d.threads = static_cast<unsigned>(r.integer(w["threads"], g + ".threads", 0, 1024));
+}
+
+void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const std::string f = "dive_profile";
+    r.checkMap(n, f,
+               {"z_min", "z_max", "climb_to_max", "min_range", "climb_to_levels", "dive_to_levels", "step",
+                "selection", "max_time_factor", "max_time", "clearance", "threads", "bathymetry"});
+    DiveSpec &d = m.dive;
+    d.enabled = true;
+    DiveProfileParams &p = d.params;
+    for (const char *key : {"z_min", "z_max"})
+        if (!n[key])
+            r.fail(n, f + "." + key, "missing");
+    p.zMin = r.nonNegative(n["z_min"], f + ".z_min");
+    p.zMax = r.positive(n["z_max"], f + ".z_max");
+    p.climbToMax = n["climb_to_max"] ? r.nonNegative(n["climb_to_max"], f + ".climb_to_max") : p.zMin;
+    p.minRange = n["min_range"] ? r.nonNegative(n["min_range"], f + ".min_range") : 0.0;
+    if (n["climb_to_levels"])
+        p.climbToLevels = static_cast<int>(r.integer(n["climb_to_levels"], f + ".climb_to_levels", 1, 100));
+    if (n["dive_to_levels"])
+        p.diveToLevels = static_cast<int>(r.integer(n["dive_to_levels"], f + ".dive_to_levels", 1, 100));
+    if (n["step"])
+        p.step = r.positive(n["step"], f + ".step");
+    if (n["selection"])
+        p.selection = diveProfileSelectionFromString(
+            r.oneOf(n["selection"], f + ".selection", {"fastest", "deepest_under_limit"}));
+    if (n["max_time_factor"])
+        p.maxTimeFactor = r.finite(n["max_time_factor"], f + ".max_time_factor");
+    if (n["max_time"])
+        p.maxTime = r.positive(n["max_time"], f + ".max_time");
+    if (n["clearance"])
+        p.clearance = r.nonNegative(n["clearance"], f + ".clearance");
+    if (n["threads"])
+        d.threads = static_cast<unsigned>(r.integer(n["threads"], f + ".threads", 0, 1024));
+    try
+    {
+        makeDiveProfiles(p);
+    }
+    catch (const Error &e)
+    {
+        r.fail(n, f, e.what());
+    }
+    if (n["bathymetry"])
+    {
+        const YAML::Node &b = n["bathymetry"];
+        const std::string g = f + ".bathymetry";
+        r.checkMap(b, g, {"type", "depth", "file", "variable"});
+        if (!b["type"])
+            r.fail(b, g + ".type", "missing (constant or netcdf)");
+        d.bathymetryType = r.oneOf(b["type"], g + ".type", {"constant", "netcdf"});
+        if (d.bathymetryType == "constant")
+        {
+            if (!b["depth"])
+                r.fail(b, g + ".depth", "missing: the seafloor depth");
+            d.bathymetryDepth = r.positive(b["depth"], g + ".depth");
+        }
+        else
+        {
+            if (!b["file"])
+                r.fail(b, g + ".file", "missing: the NetCDF file with the seafloor depth");
+            d.bathymetryFile = joinPath(r.dir(), r.text(b["file"], g + ".file"));
+            if (!fileExists(d.bathymetryFile))
+                r.fail(b["file"], g + ".file", "cannot open '" + d.bathymetryFile + "'");
+            if (b["variable"])
+                d.bathymetryVariable = r.text(b["variable"], g + ".variable");
+        }
+    }
+}
+
+void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const std::string f = "planner";
+    r.checkMap(n, f,
+               {"name", "grid_size", "sectors", "smoothing", "refinement", "time_limit", "horizon", "goal_tolerance",
+                "parameters"});
+    PlannerSpec &p = m.planner;
+    if (n["name"])
+    {
+        const std::string name = r.text(n["name"], f + ".name");
+        const PlannerEntry *entry = findPlanner(name);
+        if (!entry)
+            r.fail(n["name"], f + ".name",
+                   "unknown planner '" + name + "' (expected one of " + plannerNameList() + ")");
+        p.name = entry->name;
+    }
+    if (n["grid_size"])
+        p.gridSize = r.positive(n["grid_size"], f + ".grid_size");
+    if (n["sectors"])
+        p.sectors = static_cast<int>(r.integer(n["sectors"], f + ".sectors", 1, 5));
+    if (n["smoothing"])
+        p.smoothing = r.boolean(n["smoothing"], f + ".smoothing");
+    if (n["refinement"])
+        p.refinement = r.boolean(n["refinement"], f + ".refinement");
+    if (n["time_limit"])
+        p.timeLimit = r.nonNegative(n["time_limit"], f + ".time_limit");
+    if (n["horizon"])
+        p.horizon = r.positive(n["horizon"], f + ".horizon");
+    if (n["goal_tolerance"])
+        p.goalTolerance = r.nonNegative(n["goal_tolerance"], f + ".goal_tolerance");
+    if (n["parameters"])
+    {
+        // Names and values are checked against the planner's declared parameters before planning (Planning.cpp).
+        const YAML::Node &params = n["parameters"];
+        if (!params.IsMap())
+            r.fail(params, f + ".parameters", "expected a map of planner parameter names to values");
+        for (auto it = params.begin(); it != params.end(); ++it)
+        {
+            const std::string key = it->first.Scalar();
+            const std::string field = f + ".parameters." + key;
+            if (!it->second.IsScalar())
+                r.fail(it->second, field, "expected a value (number or boolean)");
+            if (p.parameters.count(key))
+                r.fail(it->first, field, "given twice");
+            p.parameters[key] = it->second.Scalar();
+            p.parameterMarks[key] = {r.file(), r.line(it->first)};
+        }
+    }
+}
+
+void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const std::string f = "outputs";
+    r.checkMap(n, f, {"directory", "files", "goto_number", "goto_include_start", "prefix", "map_time"});
+    OutputSpec &o = m.outputs;
+    if (n["directory"])
+        o.directory = joinPath(r.dir(), r.text(n["directory"], f + ".directory"));
+    if (n["files"])
+    {
+        const YAML::Node &l = n["files"];
+        if (!l.IsSequence())
+            r.fail(l, f + ".files", "expected a list such as [csv, geojson, goto, summary, map]");
+        o.files.clear();
+        std::set<std::string> formats;
+        for (const OutputFormat &format : outputFormats())
+            formats.insert(format.name);
+        for (std::size_t i = 0; i < l.size(); ++i)
+        {
+            const std::string kind = r.oneOf(l[i], f + ".files[" + std::to_string(i) + "]", formats);
+            if (kind == "goto" && !m.projection.set && m.current.type != "netcdf")
+                r.fail(l[i], f + ".files[" + std::to_string(i) + "]",
+                       "a goto list needs longitudes and latitudes: give a 'projection' in the mission");
+            o.files.push_back(kind);
+        }
+    }
+    if (n["goto_number"])
+        o.gotoNumber = static_cast<int>(r.integer(n["goto_number"], f + ".goto_number", 0, 99));
+    if (n["goto_include_start"])
+        o.gotoIncludeStart = r.boolean(n["goto_include_start"], f + ".goto_include_start");
+    if (n["prefix"])
+    {
+        o.prefix = r.text(n["prefix"], f + ".prefix");
+        if (o.prefix.empty() || o.prefix.find_first_of("/\\") != std::string::npos || o.prefix == "." ||
+            o.prefix == ".." || o.prefix.find_first_of(std::string("\0:*?\"<>|", 8)) != std::string::npos)
+            r.fail(n["prefix"], f + ".prefix",
+                   "expected a plain file-name part (letters, digits, '_', '-', '.'; no '/' or '..'), got '" +
+                       o.prefix + "'");
+    }
+    if (n["map_time"])
+        o.mapTime = r.time(n["map_time"], f + ".map_time", m);
+}
+}  // namespace ompl_glider::mission_loader
