@@ -85,6 +85,25 @@ std::vector<double> speedList(const std::string &text)
     return v;
 }
 
+/// A finite number > 0 (CLI11's PositiveNumber lets "nan" and "inf" through).
+const CLI::Validator kPositiveFinite(
+    [](std::string &text) {
+        std::size_t used = 0;
+        double v = 0.0;
+        try
+        {
+            v = std::stod(text, &used);
+        }
+        catch (const std::exception &)
+        {
+            used = 0;
+        }
+        return used == text.size() && used > 0 && std::isfinite(v) && v > 0.0
+                   ? std::string()
+                   : "expected a finite number > 0, got '" + text + "'";
+    },
+    "POSITIVE");
+
 const std::vector<std::string> kSchemes2D = {"nearest", "bilinear", "bicubic"};
 const std::vector<std::string> kSchemes1D = {"nearest", "linear", "cubic", "akima"};
 
@@ -100,7 +119,7 @@ void defineFlags(CLI::App &app, Flags &f)
                    "(2026-03-15T06:00:00Z) or seconds after the first forecast time (default: the first)")
         ->group(built);
     app.add_option("--speed", f.speed, "speed through water (built-in 0.5; --currents m/s, default 0.3)")
-        ->check(CLI::PositiveNumber)
+        ->check(kPositiveFinite)
         ->group(built);
     app.add_option("--speeds", f.speeds, "speed sweep, e.g. 0.25,0.30,0.35: travel time and path length per speed")
         ->group(built);
@@ -112,7 +131,7 @@ void defineFlags(CLI::App &app, Flags &f)
     app.add_option("--grid-size", f.gridSize,
                    "lattice spacing (built-in 0.4; --currents metres, default half the smallest grid cell, within "
                    "1/200..1/25 of the start-goal distance)")
-        ->check(CLI::PositiveNumber)
+        ->check(kPositiveFinite)
         ->group(built);
     app.add_option("--sectors", f.sectors, "lattice connectivity 1..5 (default 3)")
         ->check(CLI::Range(1, 5))
@@ -192,6 +211,19 @@ void checkCombinations(const CLI::App &app, const Flags &f)
 /// The settings common to the built-in and forecast modes.
 void applySettings(const Flags &f, MissionSpec &m)
 {
+    // checks after loading name the flag that gave the value (MissionSpec::place)
+    const std::pair<bool, const char *> given[] = {
+        {!f.planner.empty(), "planner.name=--planner"}, {f.gridSize.has_value(), "planner.grid_size=--grid-size"},
+        {f.sectors.has_value(), "planner.sectors=--sectors"}, {f.timeLimit.has_value(), "planner.time_limit=--time-limit"},
+        {f.speed.has_value(), "vehicle.speed=--speed"},      {!f.departure.empty(), "departure.time=--departure"},
+        {!f.start.empty(), "start=--start"},                 {!f.goal.empty(), "goal=--goal"}};
+    for (const auto &[set, pair] : given)
+        if (set)
+        {
+            const std::string text = pair;
+            const std::size_t eq = text.find('=');
+            m.marks[text.substr(0, eq)] = SourceMark{text.substr(eq + 1), 0};
+        }
     if (!f.planner.empty())
         m.planner.name = findPlanner(f.planner)->name;
     if (f.gridSize)
@@ -268,10 +300,10 @@ int run(const Flags &f)
     if (!f.mission.empty() || !f.currents.empty())
         options.progress = printProgress;
     const MissionResult result = runMission(problem, options);
-    const std::string &status = result.plan.status;
-    if (!result.plan.solved && (status == "Invalid start" || status == "Invalid goal"))
+    if (!result.plan.solved && !result.plan.badInput.empty())
     {
-        std::cerr << "glider_plan: " << result.plan.reason << "\n";
+        std::cerr << "glider_plan: " << problem.getSpec().place(result.plan.badInput) << ": " << result.plan.reason
+                  << "\n";
         return kBadInput;  // bad input: nothing is written
     }
     printReport(std::cout, result);

@@ -254,13 +254,13 @@ int main(int argc, char **argv)
                 return;
             const auto *last = path->getStates().back()->as<TimeSE2StateSpace::StateType>();
             const bool atGoal = std::hypot(last->getX() - pr.goalX, last->getY() - pr.goalY) <= pr.goalTolerance;
-            const PathResimulation r = resimulatePath(*ctx, *path, ctx->t0);
+            const PathResimulation r = resimulatePath(*ctx, *path, pr.t0);
             const bool reached = exact && atGoal;
             run["reached goal BOOLEAN"] = reached ? "1" : "0";
             run["plan valid BOOLEAN"] = (reached && r.valid) ? "1" : "0";
             if (reached && r.finite)
                 run["travel time REAL"] = str(r.travelTime);
-            run["planner travel time REAL"] = str(last->getTime() - ctx->t0);
+            run["planner travel time REAL"] = str(last->getTime() - pr.t0);
             run["waypoints INTEGER"] = std::to_string(path->getStateCount());
             bool motions = true;
             for (std::size_t i = 0; i + 1 < path->getStateCount() && motions; ++i)

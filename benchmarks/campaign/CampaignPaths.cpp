@@ -135,7 +135,7 @@ int main(int argc, char **argv)
             std::cout << p.name << " " << name << ": " << st.asString();
             if (ss->haveExactSolutionPath())
             {
-                const PathResimulation r = resimulatePath(*ctx, ss->getSolutionPath(), ctx->t0);
+                const PathResimulation r = resimulatePath(*ctx, ss->getSolutionPath(), p.problem.t0);
                 std::cout << ", re-simulated travel time " << r.travelTime << (r.valid ? " (valid)" : " (INVALID: ")
                           << (r.valid ? "" : r.reason + ")") << ", " << ss->getSolutionPath().getStateCount()
                           << " waypoints";

@@ -17,6 +17,8 @@
 #include <fstream>
 #include <string>
 
+#include <ompl/util/Console.h>
+
 #include "ompl_glider/mission/DepartureTimeSearch.h"
 #include "ompl_glider/mission/Planning.h"
 
@@ -24,6 +26,7 @@ using namespace ompl_glider;
 
 int main(int argc, char **argv)
 {
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);  // one "Solution found" line per search would bury the table
     double begin = 5.0, end = 21.0, fine = 0.02, spacing = 1.0, tol = 1e-3, coarseGrid = 0.0, grid = 0.4;
     double sx = 0.5, sy = -3.0, gx = 9.5, gy = 3.0;
     unsigned threads = 0;

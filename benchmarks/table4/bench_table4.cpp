@@ -208,7 +208,8 @@ int main(int argc, char **argv)
             }
             TveResult r[3];
             for (int c = 0; c < 3; ++c)
-                r[c] = search.run(cp.problem.startX, cp.problem.startY, cp.problem.goalX, cp.problem.goalY, opts[c]);
+                r[c] = search.run(cp.problem.startX, cp.problem.startY, cp.problem.t0, cp.problem.goalX,
+                                  cp.problem.goalY, opts[c]);
             std::printf("  %-10s %.6f / %.6f / %.6f  (%+.2f %% / %+.2f %%)  CFC %llu / %llu / %llu\n",
                         cp.name.c_str(), r[0].travelTime, r[1].travelTime, r[2].travelTime,
                         100 * (r[1].travelTime / r[0].travelTime - 1), 100 * (r[2].travelTime / r[0].travelTime - 1),
@@ -249,8 +250,8 @@ int main(int argc, char **argv)
         for (int i = 0; i < randomPairs; ++i)
         {
             const double sx = 0.4 * ix(rng), sy = -4.0 + 0.4 * iy(rng), ex = 0.4 * ix(rng), ey = -4.0 + 0.4 * iy(rng);
-            const TveResult a = search.run(sx, sy, ex, ey, tve);
-            const TveResult b = search.run(sx, sy, ex, ey, za);
+            const TveResult a = search.run(sx, sy, p.t0, ex, ey, tve);
+            const TveResult b = search.run(sx, sy, p.t0, ex, ey, za);
             if (a.outcome != TveOutcome::Exact || b.outcome != TveOutcome::Exact)
             {
                 ++unreachable;

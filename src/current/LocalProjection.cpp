@@ -56,49 +56,45 @@ LocalProjection::~LocalProjection()
         proj_context_destroy(impl_->ctx);
 }
 
-void LocalProjection::forward(double lon, double lat, double &x, double &y) const
+Point2 LocalProjection::forward(double lon, double lat) const
 {
     std::lock_guard<std::mutex> lock(mutex_);
     PJ_COORD c = proj_coord(proj_torad(wrapLon(lon, lon0_)), proj_torad(lat), 0, 0);
     PJ_COORD r = proj_trans(impl_->pj, PJ_FWD, c);
-    x = r.xy.x;
-    y = r.xy.y;
-    if (!std::isfinite(x) || !std::isfinite(y))
+    const Point2 p{r.xy.x, r.xy.y};
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
         throw Error("LocalProjection: cannot project (" + std::to_string(lon) + ", " + std::to_string(lat) + ")");
+    return p;
 }
 
-void LocalProjection::inverse(double x, double y, double &lon, double &lat) const
+LonLat LocalProjection::inverse(double x, double y) const
 {
     std::lock_guard<std::mutex> lock(mutex_);
     PJ_COORD c = proj_coord(x, y, 0, 0);
     PJ_COORD r = proj_trans(impl_->pj, PJ_INV, c);
-    lon = proj_todeg(r.lp.lam);
-    lat = proj_todeg(r.lp.phi);
-    if (!std::isfinite(lon) || !std::isfinite(lat))
+    LonLat g{proj_todeg(r.lp.lam), proj_todeg(r.lp.phi)};
+    if (!std::isfinite(g.lon) || !std::isfinite(g.lat))
         throw Error("LocalProjection: cannot invert (" + std::to_string(x) + ", " + std::to_string(y) + ")");
-    lon = wrapLon(lon, lon0_);
+    g.lon = wrapLon(g.lon, lon0_);
+    return g;
 }
 
 void LocalProjection::eastDirection(double lon, double lat, double &ex, double &ey) const
 {
     const double d = 1e-5;  // degrees, about 1 m
-    double x1, y1, x2, y2;
-    forward(lon - d, lat, x1, y1);
-    forward(lon + d, lat, x2, y2);
-    const double n = std::hypot(x2 - x1, y2 - y1);
-    ex = (x2 - x1) / n;
-    ey = (y2 - y1) / n;
+    const Point2 a = forward(lon - d, lat), b = forward(lon + d, lat);
+    const double n = std::hypot(b.x - a.x, b.y - a.y);
+    ex = (b.x - a.x) / n;
+    ey = (b.y - a.y) / n;
 }
 
 void LocalProjection::northDirection(double lon, double lat, double &nx, double &ny) const
 {
     const double d = 1e-5;
-    double x1, y1, x2, y2;
-    forward(lon, lat - d, x1, y1);
-    forward(lon, lat + d, x2, y2);
-    const double n = std::hypot(x2 - x1, y2 - y1);
-    nx = (x2 - x1) / n;
-    ny = (y2 - y1) / n;
+    const Point2 a = forward(lon, lat - d), b = forward(lon, lat + d);
+    const double n = std::hypot(b.x - a.x, b.y - a.y);
+    nx = (b.x - a.x) / n;
+    ny = (b.y - a.y) / n;
 }
 
 double LocalProjection::geodesicDistance(double lon1, double lat1, double lon2, double lat2) const

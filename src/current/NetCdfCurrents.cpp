@@ -34,26 +34,18 @@ std::string NetCdfCurrents::isoTime(double t) const
     return formatDateTime(dateFromCalendarEpoch(originSeconds + t, calendar));
 }
 
-void NetCdfCurrents::toGeographic(double x, double y, double &lon, double &lat) const
+LonLat NetCdfCurrents::toGeographic(Point2 p) const
 {
     if (projection)
-        projection->inverse(x, y, lon, lat);
-    else
-    {
-        lon = x;
-        lat = y;
-    }
+        return projection->inverse(p.x, p.y);
+    return {p.x, p.y};
 }
 
-void NetCdfCurrents::toLocal(double lon, double lat, double &x, double &y) const
+Point2 NetCdfCurrents::toLocal(LonLat g) const
 {
     if (projection)
-        projection->forward(lon, lat, x, y);
-    else
-    {
-        x = lon;
-        y = lat;
-    }
+        return projection->forward(g.lon, g.lat);
+    return {g.lon, g.lat};
 }
 
 NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &opt)
@@ -67,11 +59,12 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
     out.vVariable = l.vName;
     out.geographic = l.geographic;
     const double velScale = velocityScaleOf(f, l, opt);
-    // what to load: region, depth layers, forecast times
+    // what to load: depth layers, forecast times, region (its memory checked before the nodes are read)
     const RegionOfInterest region = regionOfInterest(opt, l.geographic);
-    const HorizontalSubset h = l.curvilinear ? curvilinearSubset(f, l, region) : rectilinearSubset(f, l, region);
     const AxisSelection z = selectDepths(f, l, opt.maxDepth);
     const AxisSelection t = selectTimes(f, l, opt, out);
+    const HorizontalSubset h =
+        l.curvilinear ? curvilinearSubset(f, l, region, z, t) : rectilinearSubset(f, l, region, z, t);
     // read u, v and build the grid
     const HyperslabPlan plan = planHyperslab(f, l, h, z, t);
     out.fileValues = plan.fileValues;

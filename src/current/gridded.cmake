@@ -10,6 +10,8 @@ if(OMPL_GLIDER_WITH_NETCDF)
     # the NetCDF reader: loadNetCdfCurrents() composing the stages in netcdf/ (see netcdf/NetCdfInternal.h)
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfCurrents.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/NcFile.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/ClassicSize.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/AxisChecks.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/VariableDetection.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/GridLayout.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/TimeAxis.cpp

@@ -93,9 +93,10 @@ MissionSpec forecastMission(const ForecastInput &q)
                  {"NetCdfCurrentOptions::maxDepth", "--depth"}})
             for (std::size_t at = what.find(field); at != std::string::npos; at = what.find(field, at))
                 what.replace(at, field.size(), flag);
-        if (!q.departure.empty() && what.find("depart") != std::string::npos && what.find("--departure") == std::string::npos)
+        const bool departure = what.find("depart") != std::string::npos;
+        if (!q.departure.empty() && departure && what.find("--departure") == std::string::npos)
             what = "--departure " + q.departure + ": " + what;
-        else if (what.find("region ") != std::string::npos)
+        else if (what.find("region ") != std::string::npos && what.find("] is outside '") != std::string::npos)
             what = "--start " + pointText(q.start.x, q.start.y) + " / --goal " + pointText(q.goal.x, q.goal.y) +
                    ": not on the grid: " + what;
         throw Error(what);
@@ -106,23 +107,21 @@ MissionSpec forecastMission(const ForecastInput &q)
         throw Error("--depth " + num(q.depth) + " m lies below the deepest layer of '" + file + "' (" +
                     num(g.depthAxis().back()) + " m)");
     const char *coords = nc.geographic ? "lon,lat" : "x,y";
-    double sx, sy, gx, gy;
-    nc.toLocal(q.start.x, q.start.y, sx, sy);
-    nc.toLocal(q.goal.x, q.goal.y, gx, gy);
+    const Point2 start = nc.toLocal({q.start.x, q.start.y});
+    const Point2 goal = nc.toLocal({q.goal.x, q.goal.y});
     const Region e = g.extent();
     for (const auto &[flag, a, b, x, y] :
-         {std::tuple<const char *, double, double, double, double>{"--start", q.start.x, q.start.y, sx, sy},
-          std::tuple<const char *, double, double, double, double>{"--goal", q.goal.x, q.goal.y, gx, gy}})
+         {std::tuple<const char *, double, double, double, double>{"--start", q.start.x, q.start.y, start.x, start.y},
+          std::tuple<const char *, double, double, double, double>{"--goal", q.goal.x, q.goal.y, goal.x, goal.y}})
     {
         double fi, fj;
         if (!std::isfinite(x) || !std::isfinite(y) || !g.locate(x, y, fi, fj))
         {
-            double lo0, la0, lo1, la1;
-            nc.toGeographic(e.xMin, e.yMin, lo0, la0);
-            nc.toGeographic(e.xMax, e.yMax, lo1, la1);
+            const LonLat lo = nc.toGeographic({e.xMin, e.yMin});
+            const LonLat hi = nc.toGeographic({e.xMax, e.yMax});
             throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") lies outside the grid of '" +
-                        file + "' (about " + coords + " " + pointText(lo0, la0) + " to " + pointText(lo1, la1) +
-                        ")");
+                        file + "' (about " + coords + " " + pointText(lo.lon, lo.lat) + " to " +
+                        pointText(hi.lon, hi.lat) + ")");
         }
         if (!g.inWater(x, y, q.depth))
             throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") is on land in '" + file +

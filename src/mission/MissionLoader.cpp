@@ -1,6 +1,7 @@
 // loadMission(): YAML mission files, validated field by field ([EichhornOceans] Sec. IV mission contents). The
 // sections are read in loader/ (MissionReader.h).
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -165,9 +166,26 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     if ((!root["outputs"] || !root["outputs"]["files"]) && !m.projection.set && m.current.type != "netcdf")
         m.outputs.files = {"csv", "geojson", "summary"};  // no lon/lat: no goto list by default
     readSpeedsAndCheck(r, root, m);
+    m.marks = r.marks();
     return m;
 }
 }  // namespace
+
+std::string MissionSpec::place(const std::string &field) const
+{
+    auto it = marks.find(field);
+    if (it == marks.end())  // a point or a block: the first value given inside it ("start" -> "start.x")
+    {
+        it = marks.lower_bound(field + ".");
+        if (it != marks.end() && it->first.rfind(field + ".", 0) != 0)
+            it = marks.end();
+    }
+    if (it != marks.end() && it->second.file.rfind("--", 0) == 0)
+        return it->second.file;
+    if (it != marks.end() && it->second.line > 0)
+        return it->second.file + ":" + std::to_string(it->second.line) + ": field '" + field + "'";
+    return file + ": field '" + field + "'";
+}
 
 MissionSpec parseMission(const std::string &yamlText, const std::string &file, const std::string &directory)
 {
@@ -178,13 +196,16 @@ MissionSpec parseMission(const std::string &yamlText, const std::string &file, c
     }
     catch (const YAML::ParserException &e)
     {
-        throw Error(file + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+        throw Error(yamlErrorMessage(file, e, "YAML syntax error"));
     }
     return readMission(root, Reader(file, directory));
 }
 
 MissionSpec loadMission(const std::string &path)
 {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw Error("cannot read mission file '" + path + "': it is a directory, not a YAML mission file");
     std::ifstream in(path);
     if (!in)
         throw Error("cannot read mission file '" + path + "'");

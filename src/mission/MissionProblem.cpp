@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <tuple>
 
 #include "ompl_glider/Config.h"
@@ -206,9 +207,13 @@ void MissionProblem::buildBox()
     box_.zMax = m.dive.enabled ? m.dive.params.zMax : m.vehicle.depth;
     for (const auto &[name, p] : {std::pair<const char *, Point2>{"start", start_}, {"goal", goal_}})
         if (!(p.x >= box_.xMin && p.x <= box_.xMax && p.y >= box_.yMin && p.y <= box_.yMax))
-            throw Error(where(m) + "field '" + name + "': lies outside the planning region (x " +
-                        std::to_string(box_.xMin) + ".." + std::to_string(box_.xMax) + ", y " +
-                        std::to_string(box_.yMin) + ".." + std::to_string(box_.yMax) + ")");
+        {
+            char box[160];
+            std::snprintf(box, sizeof box, "x %g..%g, y %g..%g", box_.xMin, box_.xMax, box_.yMin, box_.yMax);
+            char point[80];
+            std::snprintf(point, sizeof point, "(%g, %g)", p.x, p.y);
+            throw Error(m.place(name) + ": " + point + " lies outside the planning region (" + box + ")");
+        }
 }
 
 std::vector<Point2> MissionProblem::ring(const std::vector<std::pair<double, double>> &pts, bool geographic,
@@ -302,8 +307,7 @@ LonLat MissionProblem::toGeographic(Point2 p) const
 {
     if (!projection_)
         throw Error(spec_.file + ": no projection: longitudes and latitudes are unknown");
-    LonLat g;
-    projection_->inverse(p.x * projectionScale_, p.y * projectionScale_, g.lon, g.lat);
+    LonLat g = projection_->inverse(p.x * projectionScale_, p.y * projectionScale_);
     g.lon = std::remainder(g.lon, 360.0);  // -180..180 in every output
     if (g.lon == 180.0)
         g.lon = -180.0;
@@ -314,8 +318,7 @@ Point2 MissionProblem::toLocal(LonLat g) const
 {
     if (!projection_)
         throw Error(spec_.file + ": no projection: longitudes and latitudes cannot be used");
-    Point2 p;
-    projection_->forward(g.lon, g.lat, p.x, p.y);
+    Point2 p = projection_->forward(g.lon, g.lat);
     p.x /= projectionScale_;
     p.y /= projectionScale_;
     return p;
@@ -380,13 +383,9 @@ std::shared_ptr<const DiveProfileTravelTime> MissionProblem::diveProfiles(double
 #if !OMPL_GLIDER_WITH_NETCDF
         throw Error(spec_.file + ": field 'dive_profile.bathymetry': this build has no NetCDF support");
 #else
-        std::function<void(double, double, double &, double &)> geo;
+        std::function<LonLat(double, double)> geo;
         if (projection_)
-            geo = [this](double x, double y, double &lon, double &lat) {
-                const LonLat g = toGeographic({x, y});
-                lon = g.lon;
-                lat = g.lat;
-            };
+            geo = [this](double x, double y) { return toGeographic({x, y}); };
         try
         {
             bathymetry =

@@ -54,7 +54,7 @@ void locate(const std::vector<double> &a, double q, std::size_t &k, double &f)
 }  // namespace
 
 NetCdfBathymetry::NetCdfBathymetry(const std::string &path, const std::string &variable,
-                                   std::function<void(double, double, double &, double &)> toGeographic)
+                                   std::function<LonLat(double, double)> toGeographic)
   : toGeographic_(std::move(toGeographic))
 {
     int nc;
@@ -142,8 +142,7 @@ double NetCdfBathymetry::seafloorDepth(double x, double y) const
 {
     if (!geographic_)
         return atAxes(x, y);
-    double lon, lat;
-    toGeographic_(x, y, lon, lat);
-    return atAxes(lon, lat);
+    const LonLat g = toGeographic_(x, y);
+    return atAxes(g.lon, g.lat);
 }
 }  // namespace ompl_glider

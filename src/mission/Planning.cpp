@@ -8,6 +8,8 @@
 #include <ompl/geometric/PathGeometric.h>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/ResourceLimits.h"
+#include "ompl_glider/planners/Lattice.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/planners/PlannerRegistry.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
@@ -169,6 +171,29 @@ std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp)
     return std::string("; the path must arrive within the planning horizon, ") + text +
            " after departure (planner.horizon)";
 }
+/// The problem of one departure, its departure time checked first so that the error names where it was given.
+GliderProblem checkedProblem(const MissionProblem &problem, double departure, double speed)
+{
+    GliderProblem gp = problem.gliderProblem(departure, speed);
+    if (const std::string why = departureProblem(gp); !why.empty())
+        throw Error(problem.getSpec().place("departure.time") + ": " + why);
+    return gp;
+}
+
+/// The lattice planners keep dense arrays over the whole lattice (a travel time and a predecessor per vertex,
+/// TveSearch): refuse, naming the field or flag, a spacing whose lattice would not fit in memory.
+void checkLatticeSize(const MissionSpec &m, const GliderProblem &gp, double grid, const std::string &field)
+{
+    const double nx = std::floor((gp.xMax - gp.xMin) / grid + 1e-9) + 1.0;
+    const double ny = std::floor((gp.yMax - gp.yMin) / grid + 1e-9) + 1.0;
+    char what[160];
+    std::snprintf(what, sizeof what, ": a lattice spacing of %g gives %.0f x %.0f = %.3g vertices, which", grid, nx,
+                  ny, nx * ny);
+    if (nx * ny > 2147483648.0)
+        throw Error(m.place(field) + what + " is more than the 2^31 a lattice can hold: use a larger spacing");
+    checkMemory(nx * ny * static_cast<double>(sizeof(double) + sizeof(Lattice::VertexId)), m.place(field) + what,
+                "use a larger spacing");
+}
 }  // namespace
 
 
@@ -185,11 +210,14 @@ PlannedPath planRoute(const MissionProblem &problem, double departure, const Pla
     const bool refinement = o.refinement.value_or(m.planner.refinement);
     const Point2 s = problem.getStart(), g = problem.getGoal();
     r.straightLineLength = std::hypot(g.x - s.x, g.y - s.y);
-    const GliderProblem gp = problem.gliderProblem(departure, r.speed);
+    const GliderProblem gp = checkedProblem(problem, departure, r.speed);
+    if (plannerEntry(m.planner.name).lattice && grid > 0)
+        checkLatticeSize(m, gp, grid, o.gridSize > 0 ? "departure.window.coarse_grid_size" : "planner.grid_size");
     if (!(gp.horizon > 0))
     {
         r.status = "Invalid start";
         r.reason = "departure after the end of the forecast";
+        r.badInput = "departure.time";
         return r;
     }
     std::shared_ptr<GliderContext> ctx;
@@ -215,6 +243,8 @@ PlannedPath planRoute(const MissionProblem &problem, double departure, const Pla
     if (!r.solved)
     {
         r.reason = noPathReason(status, *planner, dynamic_cast<const GliderSimpleSetup *>(ss.get()), limit);
+        if (status == ompl::base::PlannerStatus::INVALID_START || status == ompl::base::PlannerStatus::INVALID_GOAL)
+            r.badInput = status == ompl::base::PlannerStatus::INVALID_START ? "start" : "goal";
         if (r.reason.rfind("no path exists", 0) == 0)
             r.reason += horizonNote(problem, gp);
         return r;
@@ -347,7 +377,7 @@ namespace
 void checkPlanner(const MissionProblem &problem, double departure)
 {
     const MissionSpec &m = problem.getSpec();
-    const GliderProblem gp = problem.gliderProblem(departure, m.vehicle.speed);
+    const GliderProblem gp = checkedProblem(problem, departure, m.vehicle.speed);
     if (!(gp.horizon > 0))
         return;
     std::shared_ptr<GliderContext> ctx;

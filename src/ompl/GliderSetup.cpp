@@ -58,8 +58,10 @@ ob::PlannerStatus checkStartAndGoal(const ob::ProblemDefinition &pdef, std::stri
         {
             const auto *s = st->as<TimeSE2StateSpace::StateType>();
             std::ostringstream os;
-            os << "invalid start: (" << s->getX() << ", " << s->getY() << ") at time " << s->getTime() << ": "
-               << (checker ? checker->whyInvalid(st) : std::string("rejected by the state validity checker"));
+            os << "invalid start: "
+               << (checker ? checker->whyInvalid(st)
+                           : "(" + std::to_string(s->getX()) + ", " + std::to_string(s->getY()) + ") at time " +
+                                 std::to_string(s->getTime()) + " is rejected by the state validity checker");
             *why = os.str();
         }
         return ob::PlannerStatus::INVALID_START;
@@ -71,10 +73,8 @@ ob::PlannerStatus checkStartAndGoal(const ob::ProblemDefinition &pdef, std::stri
             if (why)
             {
                 std::ostringstream os;
-                os << "invalid goal: (" << goal->getX() << ", " << goal->getY()
-                   << ") is invalid at every time of the goal window [" << goal->getEarliestTime() << ", "
-                   << goal->getLatestTime() << "]; at time " << goal->getEarliestTime() << ": "
-                   << goal->whyInvalidAt(goal->getEarliestTime());
+                os << "invalid goal at every time of the goal window [" << goal->getEarliestTime() << ", "
+                   << goal->getLatestTime() << "], e.g. " << goal->whyInvalidAt(goal->getEarliestTime());
                 *why = os.str();
             }
             return ob::PlannerStatus::INVALID_GOAL;
@@ -115,6 +115,19 @@ ob::PlannerStatus GliderSimpleSetup::solve(const ob::PlannerTerminationCondition
     return og::SimpleSetup::solve(ptc);
 }
 
+std::string departureProblem(const GliderProblem &p)
+{
+    if (!std::isfinite(p.t0))
+        return "departure time t0 must be finite (got " + num(p.t0) + ")";
+    // A time so large that doubles cannot resolve the integration tolerance near it would give travel times of 0.
+    const double limit = 1e-3 * p.travel.eps / std::numeric_limits<double>::epsilon();
+    if (std::abs(p.t0) + (std::isfinite(p.horizon) ? p.horizon : 0.0) > limit)
+        return "departure time t0 = " + num(p.t0) + " with horizon " + num(p.horizon) +
+               " is too large to resolve the integration tolerance eps = " + num(p.travel.eps) +
+               " (times must stay below " + num(limit) + ")";
+    return {};
+}
+
 std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)
 {
     if (!p.field)
@@ -125,16 +138,10 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)
     if (!std::isfinite(p.yMin) || !std::isfinite(p.yMax) || !(p.yMin < p.yMax))
         throw Error("GliderProblem: y bounds must be finite with yMin < yMax (got [" + num(p.yMin) + ", " +
                     num(p.yMax) + "])");
-    if (!std::isfinite(p.t0))
-        throw Error("GliderProblem: departure time t0 must be finite (got " + num(p.t0) + ")");
     if (!(p.horizon > 0.0) || !std::isfinite(p.horizon))
         throw Error("GliderProblem: horizon must be finite and > 0 (got " + num(p.horizon) + ")");
-    // A time so large that doubles cannot resolve the integration tolerance near it would give travel times of 0.
-    if (std::abs(p.t0) + p.horizon > 1e-3 * p.travel.eps / std::numeric_limits<double>::epsilon())
-        throw Error("GliderProblem: departure time t0 = " + num(p.t0) + " with horizon " + num(p.horizon) +
-                    " is too large to resolve the integration tolerance eps = " + num(p.travel.eps) +
-                    " (times must stay below " + num(1e-3 * p.travel.eps / std::numeric_limits<double>::epsilon()) +
-                    ")");
+    if (const std::string why = departureProblem(p); !why.empty())
+        throw Error("GliderProblem: " + why);
     if (p.t0 < p.field->timeBegin() || p.t0 >= p.field->timeEnd())
         throw Error("GliderProblem: departure time t0 = " + num(p.t0) + " is outside the time span [" +
                     num(p.field->timeBegin()) + ", " + num(p.field->timeEnd()) + ") of the field '" +
@@ -155,7 +162,6 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)
     ctx->region.zMin = ctx->region.zMax = p.travel.depth;
     ctx->region.tMin = p.t0;
     ctx->region.tMax = p.t0 + p.horizon;
-    ctx->t0 = p.t0;
     const double cmax = ctx->maxCurrent();
     if (!(cmax >= 0.0) || !std::isfinite(cmax))
         throw Error("GliderProblem: the field '" + p.field->name() +
@@ -178,6 +184,9 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
     checkPoint(p, "start", p.startX, p.startY);
     checkPoint(p, "goal", p.goalX, p.goalY);
     const Region &r = ctx->region;
+    if (!(p.t0 >= r.tMin && p.t0 <= r.tMax))
+        throw Error("makeSimpleSetup: departure time t0 = " + num(p.t0) + " lies outside the context's time window [" +
+                    num(r.tMin) + ", " + num(r.tMax) + "]");
     ob::RealVectorBounds b(2);
     b.setLow(0, r.xMin);
     b.setHigh(0, r.xMax);
@@ -186,7 +195,7 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
     auto space = std::make_shared<TimeSE2StateSpace>(b, r.tMin, r.tMax);
     const double vMax = ctx->speed() + ctx->maxCurrent();
     space->setTimeWeight(vMax);
-    const double sx = p.startX, sy = p.startY, t0 = ctx->t0;
+    const double sx = p.startX, sy = p.startY, t0 = p.t0;  // the start state's time
     space->setStateSamplerAllocator([sx, sy, t0, vMax](const ob::StateSpace *sp) {
         return std::make_shared<GliderStateSampler>(sp, sx, sy, t0, vMax);
     });
@@ -199,12 +208,12 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
     ss->setOptimizationObjective(std::make_shared<TravelTimeObjective>(si, cctx));
 
     ob::ScopedState<TimeSE2StateSpace> start(space);
-    start->setXYT(p.startX, p.startY, ctx->t0);
+    start->setXYT(p.startX, p.startY, p.t0);
     start->setYaw(0.0);
     ss->setStartState(start);
 
     const double straight = std::hypot(p.goalX - p.startX, p.goalY - p.startY);
-    const double tEarliest = std::min(r.tMax, ctx->t0 + straight / vMax);
+    const double tEarliest = std::min(r.tMax, p.t0 + straight / vMax);
     ss->setGoal(std::make_shared<PositionGoal>(si, p.goalX, p.goalY, p.goalTolerance, tEarliest, r.tMax));
     return ss;
 }

@@ -179,8 +179,16 @@ void checkOutputDirectory(const std::string &directory)
         parent = parent.parent_path();
     if (!fs::is_directory(parent, ec))
         throw Error("output directory '" + directory + "': '" + parent.string() + "' is not a directory");
-    if (::access(parent.c_str(), W_OK | X_OK) != 0 || (fs::exists(target, ec) && ::access(target.c_str(), W_OK | X_OK) != 0))
+    if (::access(parent.c_str(), W_OK | X_OK) != 0 ||
+        (fs::exists(target, ec) && ::access(target.c_str(), W_OK | X_OK) != 0))
         throw Error("output directory '" + directory + "' is not writable");
+    // access() says yes to root everywhere (even in /proc): make and remove a directory where the staging
+    // directory will go.
+    const fs::path probe = parent / (".ompl_glider-probe-" + std::to_string(::getpid()));
+    if (!fs::create_directory(probe, ec))
+        throw Error("output directory '" + directory + "' cannot be created: no directory can be made in '" +
+                    parent.string() + "'" + (ec ? " (" + ec.message() + ")" : std::string()));
+    fs::remove(probe, ec);
 }
 
 std::vector<std::string> writeOutputFiles(const std::string &directory, const std::vector<OutputFile> &files)

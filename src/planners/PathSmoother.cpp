@@ -145,14 +145,17 @@ PathSmoother::PathSmoother(std::shared_ptr<const GliderContext> ctx) : ctx_(std:
         throw Error("PathSmoother: the GliderContext must be non-null with a field and a travel-time calculator");
 }
 
-SmoothingResult PathSmoother::smooth(const std::vector<TimedWaypoint> &input, double t0) const
+SmoothingResult PathSmoother::smooth(const std::vector<TimedWaypoint> &input) const
 {
+    if (input.empty())
+        return {};
+    const double t0 = input.front().t;  // the departure
     const GliderContext &ctx = *ctx_;
     const std::uint64_t cfc0 = ctx.travel->costFunctionCalls();
     SmoothingResult res;
     res.waypointsBefore = input.size();
     std::vector<TimedWaypoint> wp = retimeWaypoints(ctx, input, t0);
-    res.arrivalBefore = wp.empty() ? t0 : wp.back().t;
+    res.arrivalBefore = wp.back().t;
     double best = res.arrivalBefore;  // arrival at the goal of the current candidate path (TT[end])
     if (wp.size() > 2 && std::isfinite(best))
     {
@@ -210,7 +213,7 @@ SmoothingResult PathSmoother::smooth(const std::vector<TimedWaypoint> &input, do
     }
     res.waypoints = std::move(wp);
     res.waypointsAfter = res.waypoints.size();
-    res.arrivalAfter = res.waypoints.empty() ? t0 : res.waypoints.back().t;
+    res.arrivalAfter = res.waypoints.back().t;
     res.costFunctionCalls = ctx.travel->costFunctionCalls() - cfc0;
     return res;
 }
@@ -221,7 +224,7 @@ SmoothingResult PathSmoother::smooth(ompl::geometric::PathGeometric &path) const
     if (in.empty())
         return {};
     const std::uint64_t cfc0 = ctx_->travel->costFunctionCalls();
-    SmoothingResult res = smooth(in, in.front().t);
+    SmoothingResult res = smooth(in);
     if (std::isfinite(res.arrivalAfter) && noLater(res.arrivalAfter, in.back().t))
     {
         waypointsToPath(res.waypoints, path);
@@ -230,7 +233,7 @@ SmoothingResult PathSmoother::smooth(ompl::geometric::PathGeometric &path) const
     // The waypoints cannot be flown at full speed from the departure (the path waits or flies slow legs): merge
     // keeping the schedule, then try full speed on the fewer waypoints.
     const std::vector<TimedWaypoint> merged = mergeKeepingSchedule(*ctx_, in);
-    SmoothingResult fast = smooth(merged, in.front().t);
+    SmoothingResult fast = smooth(merged);  // merged.front() is in.front()
     if (std::isfinite(fast.arrivalAfter) && noLater(fast.arrivalAfter, in.back().t))
         res = fast;
     else

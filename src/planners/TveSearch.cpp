@@ -129,7 +129,7 @@ std::optional<double> TveSearch::calcOptimalCourse(double px, double py, double 
     return std::atan2(gy, gx);
 }
 
-TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOptions &options,
+TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
                          const std::function<bool()> &terminate)
 {
     const GliderContext &ctx = *ctx_;
@@ -137,7 +137,6 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
     const TravelTimeCalculator &travel = *ctx.travel;
     const Environment *env = ctx.environment.get();
     const double z = travel.params().depth;
-    const double t0 = ctx.t0;
 
     const std::uint64_t cfc0 = travel.costFunctionCalls();
     const std::uint64_t cmc0 = field.callCount();
@@ -176,6 +175,15 @@ TveResult TveSearch::run(double sx, double sy, double gx, double gy, const TveOp
     {
         res.outcome = TveOutcome::InvalidStart;
         res.message = "start " + formatPoint(sx, sy) + " is not in water (land or no current data)";
+        return finish(res);
+    }
+    if (!std::isfinite(t0) || !(t0 >= ctx.region.tMin && t0 <= ctx.region.tMax))
+    {
+        std::ostringstream os;
+        os << "start time t0 = " << t0 << (std::isfinite(t0) ? " lies outside" : " is not finite; it must lie in")
+           << " the planning window [" << ctx.region.tMin << ", " << ctx.region.tMax << "]";
+        res.outcome = TveOutcome::InvalidStart;
+        res.message = os.str();
         return finish(res);
     }
     if (env && !env->pointFree(sx, sy, t0))

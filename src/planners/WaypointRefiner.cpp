@@ -189,8 +189,11 @@ WaypointRefiner::WaypointRefiner(std::shared_ptr<const GliderContext> ctx, Refin
         throw Error("WaypointRefiner: minRelativeGain must be >= 0");
 }
 
-RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input, double t0) const
+RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input) const
 {
+    if (input.empty())
+        return {};
+    const double t0 = input.front().t;  // the departure
     const GliderContext &ctx = *ctx_;
     const std::uint64_t cfc0 = ctx.travel->costFunctionCalls();
     RefinementResult res;
@@ -239,7 +242,7 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input
     }
     res.waypoints = retimeWaypoints(ctx, wp, t0);
     res.waypointsAfter = res.waypoints.size();
-    res.arrivalAfter = res.waypoints.empty() ? t0 : res.waypoints.back().t;
+    res.arrivalAfter = res.waypoints.back().t;
     if (!(res.arrivalAfter <= res.arrivalBefore))  // cannot happen with a deterministic travel-time code
     {
         res.waypoints = retimeWaypoints(ctx, input, t0);
@@ -257,7 +260,7 @@ RefinementResult WaypointRefiner::refine(ompl::geometric::PathGeometric &path) c
     const std::vector<TimedWaypoint> in = waypointsFromPath(path);
     if (in.empty())
         return {};
-    RefinementResult res = refine(in, in.front().t);
+    RefinementResult res = refine(in);
     if (std::isfinite(res.arrivalAfter) && res.arrivalAfter <= in.back().t)
         waypointsToPath(res.waypoints, path);
     else

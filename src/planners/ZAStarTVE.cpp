@@ -210,7 +210,8 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
         search_ = std::make_unique<TveSearch>(ctx_, gridSize_, sectors_);
 
     // Start: the first start state given, read directly (not through pis_, which would silently drop a start that
-    // fails the validity checker; the search says why a start is invalid) so that solve() can be called again.
+    // fails the validity checker; the search says why a start is invalid) so that solve() can be called again. Its
+    // time is the departure time t0.
     if (pdef_->getStartStateCount() == 0)
     {
         OMPL_ERROR("%s: invalid start: no start state given", getName().c_str());
@@ -218,7 +219,7 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
     }
     const ompl::base::State *startState = pdef_->getStartState(0);
     const auto *st = startState->as<TimeState>();
-    const double sx = st->getX(), sy = st->getY();
+    const double sx = st->getX(), sy = st->getY(), t0 = st->getTime();
 
     // Goal position.
     const ompl::base::GoalPtr &goal = pdef_->getGoal();
@@ -263,7 +264,7 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
     TveResult r;
     try
     {
-        r = search_->run(sx, sy, gx, gy, options_, [&ptc] { return ptc(); });
+        r = search_->run(sx, sy, t0, gx, gy, options_, [&ptc] { return ptc(); });
     }
     catch (...)
     {
@@ -280,12 +281,12 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
         try
         {
             if (smooth_)
-                solution_ = PathSmoother(ctx_).smooth(solution_, ctx_->t0).waypoints;
+                solution_ = PathSmoother(ctx_).smooth(solution_).waypoints;  // departure: solution_.front().t = t0
             if (refine_)
             {
                 RefinerParams rp;
                 rp.maxEvaluations = refinerMaxEvaluations_;
-                solution_ = WaypointRefiner(ctx_, rp).refine(solution_, ctx_->t0).waypoints;
+                solution_ = WaypointRefiner(ctx_, rp).refine(solution_).waypoints;
             }
         }
         catch (...)
@@ -321,7 +322,7 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
     waypointsToPath(w, *path);  // yaw of each state: the leg reaching it (the first leg for the start)
 
     const bool exact = r.outcome == TveOutcome::Exact;
-    const double cost = w.back().t - ctx_->t0;
+    const double cost = w.back().t - t0;
     if (exact)
         bestCost_ = cost;
     const double difference = exact ? 0.0 : std::hypot(w.back().x - gx, w.back().y - gy);

@@ -161,7 +161,7 @@ TEST_F(JetGrid, TravelTimesAlongFixedMultiLegPathsAgreeWithinOnePercent)
         gp.goalX = q.gx;
         gp.goalY = q.gy;
         gp.t0 = q.t0;
-        const TveResult r = TveSearch(makeGliderContext(gp), 0.4, 3).run(q.sx, q.sy, q.gx, q.gy, TveOptions{});
+        const TveResult r = TveSearch(makeGliderContext(gp), 0.4, 3).run(q.sx, q.sy, q.t0, q.gx, q.gy, TveOptions{});
         ASSERT_EQ(r.outcome, TveOutcome::Exact);
         std::vector<Pt> path;
         for (const TimedWaypoint &w : r.waypoints)

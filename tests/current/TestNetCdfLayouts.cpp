@@ -105,10 +105,9 @@ TEST(NetCdfLayouts, PackedHycomLikeValuesAtNodesAndBetween)
             for (double z : {0.0, 30.0, 100.0})
                 for (double hour : {0.0, 9.0, 33.0})
                 {
-                    double x, y;
-                    nc.toLocal(lon, lat, x, y);
+                    const Point2 p = nc.toLocal({lon, lat});
                     const Velocity e = rotated(nc, lon, lat, hyU(lon, lat, z, hour), hyV(lon, lat, z, hour));
-                    const Velocity c = f.velocity(x, y, z, hour * 3600);
+                    const Velocity c = f.velocity(p.x, p.y, z, hour * 3600);
                     EXPECT_NEAR(c.u, e.u, 1e-6) << lon << " " << lat << " " << z << " " << hour;
                     EXPECT_NEAR(c.v, e.v, 1e-6);
                 }
@@ -118,29 +117,25 @@ TEST(NetCdfLayouts, PackedHycomLikeValuesAtNodesAndBetween)
             for (double z : {5.0, 64.0})
                 for (double hour : {1.0, 20.5})
                 {
-                    double x, y;
-                    nc.toLocal(lon, lat, x, y);
+                    const Point2 p = nc.toLocal({lon, lat});
                     const Velocity e = rotated(nc, lon, lat, hyU(lon, lat, z, hour), hyV(lon, lat, z, hour));
-                    const Velocity c = f.velocity(x, y, z, hour * 3600);
+                    const Velocity c = f.velocity(p.x, p.y, z, hour * 3600);
                     EXPECT_NEAR(c.u, e.u, 2e-4) << lon << " " << lat << " " << z << " " << hour;
                     EXPECT_NEAR(c.v, e.v, 2e-4);
                 }
     // the shelf: wet at the surface, dry at 300 m east of 283 E, wet at 300 m west of it
-    double x, y;
-    nc.toLocal(-76.5, 32.0, x, y);
-    EXPECT_TRUE(f.inWater(x, y, 0));
-    EXPECT_FALSE(f.inWater(x, y, 300));
-    nc.toLocal(-79.0, 32.0, x, y);
-    EXPECT_TRUE(f.inWater(x, y, 300));
+    Point2 p = nc.toLocal({-76.5, 32.0});
+    EXPECT_TRUE(f.inWater(p.x, p.y, 0));
+    EXPECT_FALSE(f.inWater(p.x, p.y, 300));
+    p = nc.toLocal({-79.0, 32.0});
+    EXPECT_TRUE(f.inWater(p.x, p.y, 300));
     // outside the grid
-    nc.toLocal(-70.0, 32.0, x, y);
-    EXPECT_FALSE(f.inWater(x, y, 0));
+    p = nc.toLocal({-70.0, 32.0});
+    EXPECT_FALSE(f.inWater(p.x, p.y, 0));
     // round trip of coordinates for output
-    double lon, lat;
-    nc.toLocal(-78.25, 31.75, x, y);
-    nc.toGeographic(x, y, lon, lat);
-    EXPECT_NEAR(lon, -78.25, 1e-9);
-    EXPECT_NEAR(lat, 31.75, 1e-9);
+    const LonLat g = nc.toGeographic(nc.toLocal({-78.25, 31.75}));
+    EXPECT_NEAR(g.lon, -78.25, 1e-9);
+    EXPECT_NEAR(g.lat, 31.75, 1e-9);
 }
 
 TEST(NetCdfLayouts, LoadsOnlyTheRegionDepthsAndTimesTheMissionNeeds)
@@ -172,14 +167,13 @@ TEST(NetCdfLayouts, LoadsOnlyTheRegionDepthsAndTimesTheMissionNeeds)
         for (double lat : {31.2, 31.8})
             for (double z : {0.0, 15.0})
             {
-                double x, y;
-                nc.toLocal(lon, lat, x, y);
-                const Velocity a = nc.field->velocity(x, y, z, 8 * 3600.0);
+                const Point2 p = nc.toLocal({lon, lat});
+                const Velocity a = nc.field->velocity(p.x, p.y, z, 8 * 3600.0);
                 const Velocity e = rotated(nc, lon, lat, hyU(lon + 360, lat, z, 8), hyV(lon + 360, lat, z, 8));
                 EXPECT_NEAR(a.u, e.u, 2e-4);
                 EXPECT_NEAR(a.v, e.v, 2e-4);
-                all.toLocal(lon, lat, x, y);
-                const Velocity b = all.field->velocity(x, y, z, 8 * 3600.0);
+                const Point2 q = all.toLocal({lon, lat});
+                const Velocity b = all.field->velocity(q.x, q.y, z, 8 * 3600.0);
                 EXPECT_NEAR(std::hypot(a.u, a.v), std::hypot(b.u, b.v), 2e-4);
             }
     // departure outside the forecast: a clear error
@@ -254,20 +248,18 @@ TEST(NetCdfLayouts, CmemsLikeFloatDescendingLatitudeWithFill)
     for (double la : {32.1, 32.75, 33.4})
         for (double lo : {-9.5, -8.2, -7.6})
         {
-            double x, y;
-            nc.toLocal(lo, la, x, y);
+            const Point2 p = nc.toLocal({lo, la});
             const Velocity e = rotated(nc, lo, la, 0.25 + 0.1 * (la - 32.0) + 0.025, 0.05 * (lo + 10.0));
-            const Velocity c = f.velocity(x, y, 0.494, 43200.0);
+            const Velocity c = f.velocity(p.x, p.y, 0.494, 43200.0);
             EXPECT_NEAR(c.u, e.u, 1e-4) << la << " " << lo;
             EXPECT_NEAR(c.v, e.v, 1e-4);
-            EXPECT_TRUE(f.inWater(x, y, 0.494));
+            EXPECT_TRUE(f.inWater(p.x, p.y, 0.494));
         }
     // the land corner: dry cell, zero current at the node, no 1e20 anywhere
-    double x, y;
-    nc.toLocal(-9.75, 33.75, x, y);
-    EXPECT_FALSE(f.inWater(x, y, 0.494));
-    nc.toLocal(-10.0, 34.0, x, y);
-    const Velocity c = f.velocity(x, y, 0.494, 0);
+    Point2 p = nc.toLocal({-9.75, 33.75});
+    EXPECT_FALSE(f.inWater(p.x, p.y, 0.494));
+    p = nc.toLocal({-10.0, 34.0});
+    const Velocity c = f.velocity(p.x, p.y, 0.494, 0);
     EXPECT_NEAR(std::hypot(c.u, c.v), 0.0, 1e-5);
     EXPECT_LT(f.maxSpeed(Region{}), 1.0);
 }
@@ -309,12 +301,11 @@ TEST(NetCdfLayouts, GlobalGridCutAcrossTheAntimeridian)
     EXPECT_TRUE(std::isinf(nc.field->timeEnd()));  // steady
     for (double lo : {178.0, 179.5, -180.0, -179.25, -178.0})
     {
-        double x, y;
-        nc.toLocal(lo, 0.5, x, y);
+        const Point2 p = nc.toLocal({lo, 0.5});
         const double expectMs = 0.001 * std::fmod(lo + 360.0, 360.0);  // cm/s -> m/s
-        const Velocity c = nc.field->velocity(x, y, 0, 0);
+        const Velocity c = nc.field->velocity(p.x, p.y, 0, 0);
         EXPECT_NEAR(std::hypot(c.u, c.v), expectMs, 1e-6) << lo;
-        EXPECT_TRUE(nc.field->inWater(x, y, 0));
+        EXPECT_TRUE(nc.field->inWater(p.x, p.y, 0));
     }
 }
 
@@ -384,24 +375,22 @@ TEST(NetCdfLayouts, CurvilinearNemoLikeGridWithLandAndNoleapCalendar)
         for (double j : {0.25, 1.5, 4.0, 7.75})
         {
             const double lon = nodeLon(i, j), lat = nodeLat(i, j);
-            double x, y;
-            nc.toLocal(lon, lat, x, y);
-            EXPECT_TRUE(f.inWater(x, y, 0.5)) << i << " " << j;
+            const Point2 p = nc.toLocal({lon, lat});
+            EXPECT_TRUE(f.inWater(p.x, p.y, 0.5)) << i << " " << j;
             const Velocity e = rotated(nc, lon, lat, uf(i, j, 0.125), vf(i, j, 0.125));
-            const Velocity c = f.velocity(x, y, 0.5, 10800.0);
+            const Velocity c = f.velocity(p.x, p.y, 0.5, 10800.0);
             EXPECT_NEAR(c.u, e.u, 2e-4) << i << " " << j;
             EXPECT_NEAR(c.v, e.v, 2e-4) << i << " " << j;
         }
     // land corner (i >= 9, j >= 6): dry, and no -999 read as a current
-    double x, y;
-    nc.toLocal(nodeLon(10.5, 7.5), nodeLat(10.5, 7.5), x, y);
-    EXPECT_FALSE(f.inWater(x, y, 0.5));
-    const Velocity c = f.velocity(x, y, 0.5, 0);
+    Point2 p = nc.toLocal({nodeLon(10.5, 7.5), nodeLat(10.5, 7.5)});
+    EXPECT_FALSE(f.inWater(p.x, p.y, 0.5));
+    const Velocity c = f.velocity(p.x, p.y, 0.5, 0);
     EXPECT_LT(std::hypot(c.u, c.v), 1.0);
-    nc.toLocal(nodeLon(8.5, 5.5), nodeLat(8.5, 5.5), x, y);  // cell with the land corner (9, 6)
-    EXPECT_FALSE(f.inWater(x, y, 0.5));
-    nc.toLocal(nodeLon(7.5, 5.5), nodeLat(7.5, 5.5), x, y);
-    EXPECT_TRUE(f.inWater(x, y, 0.5));
+    p = nc.toLocal({nodeLon(8.5, 5.5), nodeLat(8.5, 5.5)});  // cell with the land corner (9, 6)
+    EXPECT_FALSE(f.inWater(p.x, p.y, 0.5));
+    p = nc.toLocal({nodeLon(7.5, 5.5), nodeLat(7.5, 5.5)});
+    EXPECT_TRUE(f.inWater(p.x, p.y, 0.5));
     // region subset of a curvilinear grid
     o.lonMin = nodeLon(2, 2);
     o.lonMax = nodeLon(4, 2);
@@ -410,9 +399,9 @@ TEST(NetCdfLayouts, CurvilinearNemoLikeGridWithLandAndNoleapCalendar)
     o.marginNodes = 1;
     const NetCdfCurrents sub = loadNetCdfCurrents(path, o);
     EXPECT_LT(sub.loadedValues, nc.loadedValues);
-    sub.toLocal(nodeLon(3, 3), nodeLat(3, 3), x, y);
+    p = sub.toLocal({nodeLon(3, 3), nodeLat(3, 3)});
     const Velocity e = rotated(sub, nodeLon(3, 3), nodeLat(3, 3), uf(3, 3, 0), vf(3, 3, 0));
-    EXPECT_NEAR(sub.field->velocity(x, y, 0.5, 0).u, e.u, 2e-4);
+    EXPECT_NEAR(sub.field->velocity(p.x, p.y, 0.5, 0).u, e.u, 2e-4);
 }
 
 TEST(NetCdfLayouts, DepthPositiveUpAndCartesianFiles)

@@ -15,25 +15,22 @@ TEST(LocalProjection, RoundTripIsExactToAMicrometre)
     for (auto [lon0, lat0] : {std::pair{-52.0, 47.5}, {170.0, -40.0}, {0.0, 0.0}, {-179.5, 60.0}})
     {
         const LocalProjection p(lon0, lat0);
-        double x, y;
-        p.forward(lon0, lat0, x, y);
-        EXPECT_NEAR(x, 0.0, 1e-6);
-        EXPECT_NEAR(y, 0.0, 1e-6);
+        const Point2 o = p.forward(lon0, lat0);
+        EXPECT_NEAR(o.x, 0.0, 1e-6);
+        EXPECT_NEAR(o.y, 0.0, 1e-6);
         std::mt19937 rng(1);
         std::uniform_real_distribution<double> U(-300e3, 300e3);
         for (int i = 0; i < 200; ++i)
         {
             const double px = U(rng), py = U(rng);
-            double lon, lat, qx, qy;
-            p.inverse(px, py, lon, lat);
-            EXPECT_GE(lon, p.lon0() - 180.0);
-            EXPECT_LT(lon, p.lon0() + 180.0);
-            p.forward(lon, lat, qx, qy);
-            EXPECT_NEAR(qx, px, 1e-6);
-            EXPECT_NEAR(qy, py, 1e-6);
+            const LonLat g = p.inverse(px, py);
+            EXPECT_GE(g.lon, p.lon0() - 180.0);
+            EXPECT_LT(g.lon, p.lon0() + 180.0);
+            const Point2 q = p.forward(g.lon, g.lat);
+            EXPECT_NEAR(q.x, px, 1e-6);
+            EXPECT_NEAR(q.y, py, 1e-6);
             // longitudes in another 360-degree convention give the same point
-            p.forward(lon + 360.0, lat, qx, qy);
-            EXPECT_NEAR(qx, px, 1e-6);
+            EXPECT_NEAR(p.forward(g.lon + 360.0, g.lat).x, px, 1e-6);
         }
     }
     EXPECT_THROW(LocalProjection(0.0, 95.0), Error);
@@ -51,15 +48,13 @@ TEST(LocalProjection, PlanarDistancesWithinTheStatedBoundOver500km)
     {
         const double r1 = R(rng), a1 = A(rng), r2 = R(rng), a2 = A(rng);
         const double x1 = r1 * std::cos(a1), y1 = r1 * std::sin(a1), x2 = r2 * std::cos(a2), y2 = r2 * std::sin(a2);
-        double lon1, lat1, lon2, lat2;
-        p.inverse(x1, y1, lon1, lat1);
-        p.inverse(x2, y2, lon2, lat2);
+        const LonLat g1 = p.inverse(x1, y1), g2 = p.inverse(x2, y2);
         // from the reference point: exact
-        EXPECT_NEAR(std::hypot(x1, y1), p.geodesicDistance(p.lon0(), p.lat0(), lon1, lat1), 1e-3);
+        EXPECT_NEAR(std::hypot(x1, y1), p.geodesicDistance(p.lon0(), p.lat0(), g1.lon, g1.lat), 1e-3);
         const double planar = std::hypot(x2 - x1, y2 - y1);
         if (planar < 1e3)
             continue;
-        const double geo = p.geodesicDistance(lon1, lat1, lon2, lat2);
+        const double geo = p.geodesicDistance(g1.lon, g1.lat, g2.lon, g2.lat);
         worst = std::max(worst, std::abs(planar - geo) / geo);
     }
     EXPECT_LT(worst, 5e-4);

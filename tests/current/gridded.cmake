@@ -8,3 +8,9 @@ glider_add_test(test_current_netcdf
 target_link_libraries(test_current_netcdf PRIVATE netCDF::netcdf)
 glider_add_test(test_current_gridded_agreement ${CMAKE_CURRENT_LIST_DIR}/TestGriddedAgreement.cpp)
 target_link_libraries(test_current_gridded_agreement PRIVATE netCDF::netcdf)
+# bad forecast files refused with a clear Error; the classic-format size check (an internal of the reader)
+glider_add_test(test_current_netcdf_checks
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfBadFiles.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfClassicSize.cpp)
+target_link_libraries(test_current_netcdf_checks PRIVATE netCDF::netcdf)
+target_include_directories(test_current_netcdf_checks PRIVATE ${PROJECT_SOURCE_DIR}/src/current)

@@ -206,7 +206,7 @@ TEST(EnvironmentPlanning, LatticePathsAroundIslandsNeverCrossThem)
             EXPECT_FALSE(legTouchesBySampling(b, w[i][0], w[i][1], w[i + 1][0], w[i + 1][1])) << config << " leg " << i;
             EXPECT_TRUE(env->legFree(w[i][0], w[i][1], w[i][2], w[i + 1][0], w[i + 1][1], w[i + 1][2]));
         }
-        const PathResimulation r = resimulatePath(*ctx, ss->getSolutionPath(), ctx->t0);
+        const PathResimulation r = resimulatePath(*ctx, ss->getSolutionPath(), p.t0);
         EXPECT_TRUE(r.valid) << r.reason;
         // the islands cost time: the same problem without them is faster
         GliderProblem open = p;
@@ -280,6 +280,6 @@ TEST(EnvironmentPlanning, LatticeRespectsDriftingIceAndClosure)
             EXPECT_GT(in.lo, 8.0) << "leg " << i << " is in the lane at t = " << in.lo;
         }
     }
-    const PathResimulation r = resimulatePath(*ctx, ss->getSolutionPath(), ctx->t0);
+    const PathResimulation r = resimulatePath(*ctx, ss->getSolutionPath(), p.t0);
     EXPECT_TRUE(r.valid) << r.reason;
 }

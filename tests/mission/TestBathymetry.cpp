@@ -57,10 +57,8 @@ TEST(NetCdfBathymetry, BilinearOnGeographicAxes)
     for (bool elevation : {false, true})
     {
         const std::string path = makeFile(elevation ? "mission_bathy_elev" : "mission_bathy_depth", elevation);
-        const NetCdfBathymetry b(path, "depth", [](double x, double y, double &lon, double &lat) {
-            lon = x;  // identity "projection" for the test
-            lat = y;
-        });
+        // identity "projection" for the test
+        const NetCdfBathymetry b(path, "depth", [](double x, double y) { return LonLat{x, y}; });
         EXPECT_TRUE(b.geographic());
         for (double lon = -53.0; lon <= -51.6; lon += 0.17)
             for (double lat = 47.0; lat <= 48.5; lat += 0.13)
@@ -107,11 +105,7 @@ TEST(NetCdfBathymetry, LimitsTheDivesOfAMission)
     EXPECT_NEAR(t, 80.0 / 0.6, 1e-9);
     // The seafloor at the goal's longitude is about 100 + 50 * 1.54 + 200 = 377 m: a 20 m clearance still leaves water.
     const LonLat g = problem.toGeographic({40, 0});
-    const NetCdfBathymetry b(path, "depth", [&](double x, double y, double &lo, double &la) {
-        const LonLat q = problem.toGeographic({x, y});
-        lo = q.lon;
-        la = q.lat;
-    });
+    const NetCdfBathymetry b(path, "depth", [&](double x, double y) { return problem.toGeographic({x, y}); });
     EXPECT_NEAR(b.seafloorDepth(40, 0), plane(g.lon, g.lat), 0.5);
     const std::string bad = "name: b\nprojection: {lon0: -52, lat0: 48}\n"
                             "current: {type: uniform}\nregion: {x_min: -1, x_max: 1, y_min: -1, y_max: 1}\n"

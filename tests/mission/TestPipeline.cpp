@@ -10,6 +10,8 @@
 #include <set>
 #include <sstream>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 #include <ompl/geometric/SimpleSetup.h>
 
@@ -57,11 +59,14 @@ std::string errorOf(const std::string &yaml)
 
 #define EXPECT_HAS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << (text)
 
+/// A directory that does not exist yet, alone in a parent of its own (so that counting the parent's entries sees
+/// only what the writer left there, not other processes' files in the shared temporary directory).
 fs::path freshDirectory(const std::string &name)
 {
-    const fs::path d = fs::path(::testing::TempDir()) / ("pipeline_" + name);
-    fs::remove_all(d);
-    return d;
+    const fs::path parent = fs::path(::testing::TempDir()) / ("pipeline_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(parent);
+    fs::create_directories(parent);
+    return parent / "out";
 }
 
 /// Every file of a directory with its contents.

@@ -90,6 +90,32 @@ TEST(GliderSetup, BuildsReadySetup)
     EXPECT_DOUBLE_EQ(start->getTime(), 0.0);
 }
 
+TEST(GliderSetup, DepartureIsTheStartStateTime)
+{
+    // The context holds no departure: makeSimpleSetup() puts problem.t0 into the start state, and the goal's
+    // earliest time counts from it.
+    GliderProblem p = uniformProblem(0.3, 0.0);
+    p.t0 = 4.0;
+    p.horizon = 30.0;
+    std::shared_ptr<GliderContext> ctx;
+    auto ss = makeSimpleSetup(p, &ctx);
+    EXPECT_EQ(ctx->region.tMin, 4.0);
+    EXPECT_EQ(ctx->region.tMax, 34.0);
+    const double vMax = 0.5 + ctx->maxCurrent();
+    auto startTime = [](const og::SimpleSetupPtr &s) {
+        return s->getProblemDefinition()->getStartState(0)->as<TimeSE2StateSpace::StateType>()->getTime();
+    };
+    EXPECT_EQ(startTime(ss), 4.0);
+    EXPECT_EQ(std::dynamic_pointer_cast<PositionGoal>(ss->getGoal())->getEarliestTime(), 4.0 + 8.0 / vMax);
+    // A setup on the same context departing later inside its window, and one departing outside it.
+    p.t0 = 10.0;
+    auto later = makeSimpleSetup(p, ctx);
+    EXPECT_EQ(startTime(later), 10.0);
+    EXPECT_EQ(std::dynamic_pointer_cast<PositionGoal>(later->getGoal())->getEarliestTime(), 10.0 + 8.0 / vMax);
+    p.t0 = 40.0;
+    EXPECT_THROW(makeSimpleSetup(p, ctx), Error);
+}
+
 TEST(GliderSetup, ErrorsNameTheField)
 {
     auto expectError = [](GliderProblem p, const std::string &needle) {

@@ -53,7 +53,6 @@ inline std::shared_ptr<GliderContext> makeContext(std::shared_ptr<const CurrentF
     ctx->travel = std::make_shared<TravelTimeCalculator>(field, tp);
     ctx->environment = std::move(env);
     ctx->region = region;
-    ctx->t0 = region.tMin > -1e300 ? region.tMin : 0.0;
     return ctx;
 }
 

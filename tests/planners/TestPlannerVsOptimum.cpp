@@ -31,11 +31,11 @@ struct Row
     std::size_t nRaw{0}, nSmoothed{0}, nRefined{0};
 };
 
-double resimulated(const GliderContext &ctx, const ompl::geometric::PathGeometric &path)
+double resimulated(const GliderContext &ctx, const ompl::geometric::PathGeometric &path, double t0)
 {
     ResimulationOptions o;
     o.allowWaiting = false;  // the plain "fly the waypoints as fast as possible from t0"
-    const PathResimulation r = resimulatePath(ctx, path, ctx.t0, o);
+    const PathResimulation r = resimulatePath(ctx, path, t0, o);
     EXPECT_TRUE(r.valid) << r.reason;
     return r.travelTime;
 }
@@ -74,20 +74,20 @@ TEST(PlannerVsOptimum, MeanderingJetCrossings)
         ompl::geometric::PathGeometric path = ss->getSolutionPath();
         EXPECT_TRUE(path.check());
         row.nRaw = path.getStateCount();
-        row.raw = resimulated(*ctx, path);
+        row.raw = resimulated(*ctx, path, prob.t0);
         EXPECT_NEAR(row.raw, planner->getTravelTime(), 1e-9);
 
         const SmoothingResult sm = PathSmoother(ctx).smooth(path);
         EXPECT_TRUE(path.check());
         row.nSmoothed = path.getStateCount();
-        row.smoothed = resimulated(*ctx, path);
+        row.smoothed = resimulated(*ctx, path, prob.t0);
         EXPECT_LE(row.smoothed, row.raw * (1.0 + kSmoothingTieTolerance));  // smoothing never arrives later
         EXPECT_LE(sm.waypointsAfter, sm.waypointsBefore);
 
         const RefinementResult rf = WaypointRefiner(ctx).refine(path);
         EXPECT_TRUE(path.check());
         row.nRefined = path.getStateCount();
-        row.refined = resimulated(*ctx, path);
+        row.refined = resimulated(*ctx, path, prob.t0);
         EXPECT_LE(row.refined, row.smoothed);
         EXPECT_EQ(rf.waypointsAfter, row.nRefined);
 
@@ -95,11 +95,11 @@ TEST(PlannerVsOptimum, MeanderingJetCrossings)
         zp.speed = ctx->speed();
         zp.maxTime = 1.2 * row.refined;  // any feasible path's time bounds the optimum
         const ZermeloReference ref(jet, zp);
-        const ZermeloSolution opt = ref.solve(row.sx, row.sy, row.gx, row.gy, ctx->t0);
+        const ZermeloSolution opt = ref.solve(row.sx, row.sy, row.gx, row.gy, prob.t0);
         ASSERT_TRUE(opt.found);
         row.optimum = opt.travelTime;
         // The comparison is fair only if the optimal route stays inside the planning region.
-        for (const ZermeloState &z : ref.trajectory(row.sx, row.sy, opt.initialHeading, ctx->t0, opt.travelTime))
+        for (const ZermeloState &z : ref.trajectory(row.sx, row.sy, opt.initialHeading, prob.t0, opt.travelTime))
         {
             ASSERT_TRUE(z.x >= 0 && z.x <= 10 && z.y >= -4 && z.y <= 4) << "optimum leaves the region";
         }

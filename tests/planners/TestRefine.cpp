@@ -26,7 +26,7 @@ TEST(WaypointRefiner, ApproachesZermeloOptimumInShearFlow)
     const double before = arrivalTime(*ctx, start, 0.0);
     ASSERT_TRUE(std::isfinite(before));
     ASSERT_GT(before, 2 * 5.26493205);
-    const RefinementResult r = WaypointRefiner(ctx).refine(start, 0.0);
+    const RefinementResult r = WaypointRefiner(ctx).refine(start);
     EXPECT_EQ(r.arrivalBefore, before);
     EXPECT_LT(r.arrivalAfter, 5.26493205 * 1.01);
     EXPECT_GT(r.arrivalAfter, 5.26493205 * (1 - 1e-4));
@@ -42,10 +42,10 @@ TEST(WaypointRefiner, KeepsLegsFreeAndInsideRegion)
     auto env = std::make_shared<BoxEnvironment>(4, 5.2, -0.8, 1.5);
     auto jet = std::make_shared<MeanderingJet>();
     auto ctx = makeContext(jet, 0.5, box(0, 10, -4, 4), env);
-    const TveResult lat = TveSearch(ctx, 0.5, 2).run(1, -3, 8, 3, TveOptions{});
+    const TveResult lat = TveSearch(ctx, 0.5, 2).run(1, -3, 0.0, 8, 3, TveOptions{});
     ASSERT_EQ(lat.outcome, TveOutcome::Exact);
-    const SmoothingResult s = PathSmoother(ctx).smooth(lat.waypoints, 0.0);
-    const RefinementResult r = WaypointRefiner(ctx).refine(s.waypoints, 0.0);
+    const SmoothingResult s = PathSmoother(ctx).smooth(lat.waypoints);
+    const RefinementResult r = WaypointRefiner(ctx).refine(s.waypoints);
     EXPECT_LE(r.arrivalAfter, s.arrivalAfter);
     EXPECT_LT(r.arrivalAfter, s.arrivalAfter);  // there is room to improve on a 0.5 lattice
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
@@ -67,16 +67,16 @@ TEST(WaypointRefiner, NeverLaterThanSmoothedJetPath)
 {
     auto jet = std::make_shared<MeanderingJet>();
     auto ctx = makeContext(jet, 0.5, box(0, 10, -4, 4));
-    ctx->t0 = 1.0;
-    const TveResult lat = TveSearch(ctx, 0.5, 2).run(1, 3, 9, -2.5, TveOptions{});
+    const TveResult lat = TveSearch(ctx, 0.5, 2).run(1, 3, 1.0, 9, -2.5, TveOptions{});  // departure at t = 1
     ASSERT_EQ(lat.outcome, TveOutcome::Exact);
-    const SmoothingResult s = PathSmoother(ctx).smooth(lat.waypoints, 1.0);
+    const SmoothingResult s = PathSmoother(ctx).smooth(lat.waypoints);
     ASSERT_TRUE(std::isfinite(s.arrivalAfter));
     RefinerParams p;
     p.maxEvaluations = 3000;
-    const RefinementResult r = WaypointRefiner(ctx, p).refine(s.waypoints, 1.0);
+    const RefinementResult r = WaypointRefiner(ctx, p).refine(s.waypoints);
     EXPECT_LE(r.arrivalAfter, s.arrivalAfter);
     EXPECT_LE(r.evaluations, 3000u + 1u);
+    EXPECT_EQ(r.waypoints.front().t, 1.0);  // the departure: the first waypoint's time
     EXPECT_EQ(retimeWaypoints(*ctx, r.waypoints, 1.0).back().t, r.arrivalAfter);
 }
 
@@ -84,10 +84,11 @@ TEST(WaypointRefiner, InfeasibleInputAndBadParameters)
 {
     auto ctx = makeContext(std::make_shared<UniformCurrent>(1.0, 0.0), 0.5, box(-10, 10, -10, 10));
     const std::vector<TimedWaypoint> wp = {{0, 0, 0}, {-1, 0.5, 0}, {-3, 1, 0}};
-    const RefinementResult r = WaypointRefiner(ctx).refine(wp, 0.0);
+    const RefinementResult r = WaypointRefiner(ctx).refine(wp);
     EXPECT_FALSE(std::isfinite(r.arrivalBefore));
     ASSERT_EQ(r.waypointsAfter, 3u);
     EXPECT_EQ(r.waypoints[1].x, -1.0);
+    EXPECT_TRUE(WaypointRefiner(ctx).refine(std::vector<TimedWaypoint>{}).waypoints.empty());
     RefinerParams bad;
     bad.maxEvaluations = 0;
     EXPECT_THROW(WaypointRefiner(ctx, bad), Error);

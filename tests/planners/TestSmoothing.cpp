@@ -59,7 +59,7 @@ TEST(PathSmoother, StaircaseInUniformCurrentBecomesStraightLeg)
     for (int i = 0; i <= 8; ++i)
         stairs.push_back({0.5 * ((i + 1) / 2), 0.5 * (i / 2), 0.0});  // (0,0),(0.5,0),(0.5,0.5),(1,0.5),...
     const std::uint64_t cfc0 = ctx->travel->costFunctionCalls();
-    const SmoothingResult r = PathSmoother(ctx).smooth(stairs, 0.0);
+    const SmoothingResult r = PathSmoother(ctx).smooth(stairs);
     const std::uint64_t cfc = ctx->travel->costFunctionCalls() - cfc0;
     ASSERT_EQ(r.waypointsBefore, 9u);
     ASSERT_EQ(r.waypointsAfter, 2u);  // the straight leg is the fastest in a uniform current
@@ -87,10 +87,8 @@ TEST(PathSmoother, NeverLaterOnJetLatticePaths)
     for (const auto &pr : pairs)
         for (double t0 : {0.0, 5.0})
         {
-            auto c2 = std::make_shared<GliderContext>(*ctx);
-            c2->t0 = t0;
-            TveSearch s2(c2, 0.5, 2);
-            const TveResult lat = s2.run(pr[0], pr[1], pr[2], pr[3], TveOptions{});
+            TveSearch s2(ctx, 0.5, 2);
+            const TveResult lat = s2.run(pr[0], pr[1], t0, pr[2], pr[3], TveOptions{});
             ASSERT_EQ(lat.outcome, TveOutcome::Exact);
             for (int variant = 0; variant < 4; ++variant)
             {
@@ -101,7 +99,7 @@ TEST(PathSmoother, NeverLaterOnJetLatticePaths)
                         wp[i].x += jit(rng);
                         wp[i].y += jit(rng);
                     }
-                const SmoothingResult r = smoother.smooth(wp, t0);
+                const SmoothingResult r = smoother.smooth(wp);  // departure: wp.front().t = t0
                 if (!std::isfinite(r.arrivalBefore))
                 {
                     EXPECT_EQ(r.waypointsAfter, r.waypointsBefore);  // infeasible input is returned unchanged
@@ -134,7 +132,7 @@ TEST(PathSmoother, DoesNotMergeAcrossObstacle)
     auto env = std::make_shared<BoxEnvironment>(2, 3, -1, 1);
     auto ctx = makeContext(std::make_shared<UniformCurrent>(0.0, 0.0), 0.5, box(-1, 6, -3, 3), env);
     const std::vector<TimedWaypoint> wp = {{0, 0, 0}, {1, 1.5, 0}, {2, 1.5, 0}, {3, 1.5, 0}, {4, 1.5, 0}, {5, 0, 0}};
-    const SmoothingResult r = PathSmoother(ctx).smooth(wp, 0.0);
+    const SmoothingResult r = PathSmoother(ctx).smooth(wp);
     EXPECT_LT(r.waypointsAfter, r.waypointsBefore);
     EXPECT_GE(r.waypointsAfter, 3u);
     EXPECT_LE(r.arrivalAfter, r.arrivalBefore * (1.0 + kSmoothingTieTolerance));
@@ -151,7 +149,7 @@ TEST(PathSmoother, InfeasiblePathUnchanged)
     // Current 1.0 eastward, V = 0.5: any leg heading west is infeasible.
     auto ctx = makeContext(std::make_shared<UniformCurrent>(1.0, 0.0), 0.5, box(-10, 10, -10, 10));
     const std::vector<TimedWaypoint> wp = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-3, 1, 0}};
-    const SmoothingResult r = PathSmoother(ctx).smooth(wp, 0.0);
+    const SmoothingResult r = PathSmoother(ctx).smooth(wp);
     EXPECT_FALSE(std::isfinite(r.arrivalBefore));
     ASSERT_EQ(r.waypointsAfter, 4u);
     for (std::size_t i = 0; i < wp.size(); ++i)
@@ -223,6 +221,21 @@ TEST(PathSmoother, WaitingPathMergedKeepingItsSchedule)
     EXPECT_TRUE(path.check());  // every merged leg is valid for the motion validator
 }
 
+TEST(PathSmoother, DepartsAtTheFirstWaypointsTime)
+{
+    // The departure is the first waypoint's time; the other input times are ignored. Empty input: empty result.
+    auto ctx = makeContext(std::make_shared<UniformCurrent>(0.2, 0.0), 0.5, box(0, 10, -1, 1));
+    const std::vector<TimedWaypoint> wp{{1.0, 0.0, 3.0}, {4.0, 0.5, 99.0}, {9.0, 0.0, -1.0}};
+    const SmoothingResult r = PathSmoother(ctx).smooth(wp);
+    ASSERT_EQ(r.waypoints.size(), 2u);
+    EXPECT_EQ(r.waypoints.front().t, 3.0);
+    EXPECT_EQ(r.arrivalBefore, arrivalTime(*ctx, wp, 3.0));
+    EXPECT_NEAR(r.arrivalAfter, 3.0 + 8.0 / 0.7, 1e-9);
+    const SmoothingResult e = PathSmoother(ctx).smooth(std::vector<TimedWaypoint>{});
+    EXPECT_TRUE(e.waypoints.empty());
+    EXPECT_EQ(e.waypointsBefore, 0u);
+}
+
 TEST(PathSmoother, CollinearTieMergedDespiteRounding)
 {
     // A straight path through collinear waypoints in a uniform current: the direct leg arrives at exactly the same
@@ -230,7 +243,7 @@ TEST(PathSmoother, CollinearTieMergedDespiteRounding)
     // only start and goal remain, and the arrival is the closed form to rounding.
     auto ctx = makeContext(std::make_shared<UniformCurrent>(0.2, 0.0), 0.5, box(0, 10, -1, 1));
     const std::vector<TimedWaypoint> wp{{1.0, 0.0, 0.0}, {4.0, 0.0, 0.0}, {4.5, 0.0, 0.0}, {9.0, 0.0, 0.0}};
-    const SmoothingResult r = PathSmoother(ctx).smooth(wp, 0.0);
+    const SmoothingResult r = PathSmoother(ctx).smooth(wp);
     EXPECT_EQ(r.waypointsBefore, 4u);
     EXPECT_EQ(r.waypointsAfter, 2u);
     ASSERT_EQ(r.waypoints.size(), 2u);

@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 
 #include <ompl/base/PlannerData.h>
+#include <ompl/base/ScopedState.h>
 #include <ompl/base/PlannerTerminationCondition.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/tools/benchmark/Benchmark.h>
@@ -576,9 +578,9 @@ TEST(TveSearch, CertificationToleranceBoundsTheDeviationFromTve)
     {
         const double sx = 0.4 * (1 + next(24)), sy = -4.0 + 0.4 * (1 + next(19));
         const double gx = 0.4 * (1 + next(24)), gy = -4.0 + 0.4 * (1 + next(19));
-        const TveResult a = search.run(sx, sy, gx, gy, tve);
-        const TveResult b = search.run(sx, sy, gx, gy, exact);
-        const TveResult c = search.run(sx, sy, gx, gy, loose);
+        const TveResult a = search.run(sx, sy, p.t0, gx, gy, tve);
+        const TveResult b = search.run(sx, sy, p.t0, gx, gy, exact);
+        const TveResult c = search.run(sx, sy, p.t0, gx, gy, loose);
         if (a.outcome != TveOutcome::Exact)
             continue;
         ++compared;
@@ -590,4 +592,59 @@ TEST(TveSearch, CertificationToleranceBoundsTheDeviationFromTve)
         EXPECT_GE(c.travelTime, a.travelTime - 1e-9);
     }
     EXPECT_GE(compared, 8);
+}
+
+TEST(TveSearch, DepartsAtTheGivenTimeInsideTheWindow)
+{
+    // run() departs at its t0 (d[s] = t0); a t0 outside [region.tMin, region.tMax] or not finite is an invalid start.
+    GliderProblem p = jetProblem(3.2, -1.6, 7.6, 1.2);
+    p.t0 = 2.0;
+    auto ctx = makeGliderContext(p);  // window [2, 62]
+    TveSearch search(ctx, 0.4, 3);
+    const TveResult r = search.run(3.2, -1.6, 2.0, 7.6, 1.2, TveOptions{});
+    ASSERT_EQ(r.outcome, TveOutcome::Exact);
+    EXPECT_EQ(r.waypoints.front().t, 2.0);
+    EXPECT_EQ(r.travelTime, r.waypoints.back().t - 2.0);
+    const TveResult later = search.run(3.2, -1.6, 5.0, 7.6, 1.2, TveOptions{});
+    ASSERT_EQ(later.outcome, TveOutcome::Exact);
+    EXPECT_EQ(later.waypoints.front().t, 5.0);
+    EXPECT_NE(later.travelTime, r.travelTime);  // the jet meanders: the departure time matters
+    for (double t0 : {1.0, 62.5, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    {
+        const TveResult bad = search.run(3.2, -1.6, t0, 7.6, 1.2, TveOptions{});
+        EXPECT_EQ(bad.outcome, TveOutcome::InvalidStart) << t0;
+        EXPECT_NE(bad.message.find("start time"), std::string::npos) << bad.message;
+    }
+}
+
+TEST(ZAStarTVE, DepartsAtTheStartStateTime)
+{
+    // The departure is the start state's time: a start moved to t = 7 on a setup made for t0 = 5 gives the same
+    // search as a setup made for t0 = 7; a start time outside the window is an invalid start.
+    GliderProblem p = jetProblem(3.2, -1.6, 7.6, 1.2);
+    p.t0 = 5.0;
+    PlanRun r = plan(p, "TVE");
+    ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_EQ(r.planner->getWaypoints().front().t, 5.0);
+    EXPECT_EQ(r.planner->getSolutionWaypoints().front().t, 5.0);
+    const ob::ProblemDefinitionPtr &pdef = r.ss->getProblemDefinition();
+    EXPECT_EQ(pdef->getSolutions().front().cost_.value(), r.planner->getSolutionWaypoints().back().t - 5.0);
+
+    auto restart = [&](double t) {
+        ob::ScopedState<TimeSE2StateSpace> start(r.ss->getStateSpace());
+        start->setXYT(3.2, -1.6, t);
+        start->setYaw(0.0);
+        pdef->clearStartStates();
+        pdef->clearSolutionPaths();
+        pdef->addStartState(start);
+        r.planner->clear();
+        return r.planner->solve(ob::timedPlannerTerminationCondition(60.0));
+    };
+    ASSERT_EQ(restart(7.0), ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_EQ(r.planner->getWaypoints().front().t, 7.0);
+    p.t0 = 7.0;
+    const PlanRun at7 = plan(p, "TVE");
+    ASSERT_EQ(at7.status, ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_EQ(r.planner->getTravelTime(), at7.time);
+    EXPECT_EQ(restart(66.0), ob::PlannerStatus::INVALID_START);  // after the window [5, 65]
 }

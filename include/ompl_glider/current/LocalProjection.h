@@ -6,6 +6,8 @@
 #include <mutex>
 #include <string>
 
+#include "ompl_glider/Geometry.h"
+
 namespace ompl_glider
 {
 /// @brief Azimuthal equidistant projection on the WGS84 ellipsoid about (lon0, lat0), through PROJ
@@ -43,9 +45,11 @@ public:
     }
 
     /// @brief (lon, lat) in degrees -> (x, y) in metres. Longitude may be given in any 360-degree range.
-    void forward(double lon, double lat, double &x, double &y) const;
+    /// @throws Error if the point cannot be projected.
+    Point2 forward(double lon, double lat) const;
     /// @brief (x, y) in metres -> (lon, lat) in degrees, lon in [lon0 - 180, lon0 + 180).
-    void inverse(double x, double y, double &lon, double &lat) const;
+    /// @throws Error if the point cannot be inverted.
+    LonLat inverse(double x, double y) const;
 
     /// @brief Unit vector (ex, ey) in the plane of the local eastward direction at (lon, lat).
     void eastDirection(double lon, double lat, double &ex, double &ey) const;

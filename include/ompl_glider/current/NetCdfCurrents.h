@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/Geometry.h"
 #include "ompl_glider/current/CfTime.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/LocalProjection.h"
@@ -84,10 +85,12 @@ struct NetCdfCurrents
     double fieldTime(const std::string &isoOrSeconds) const;
     /// @brief ISO 8601 date of a field time (dated files; else the number).
     std::string isoTime(double t) const;
-    /// @brief (x, y) -> (lon, lat); identity in Cartesian mode.
-    void toGeographic(double x, double y, double &lon, double &lat) const;
-    /// @brief (lon, lat) -> (x, y); identity in Cartesian mode.
-    void toLocal(double lon, double lat, double &x, double &y) const;
+    /// @brief Planning-frame point (x, y) in metres -> (lon, lat) in degrees; identity (lon = x, lat = y) in
+    /// Cartesian mode.
+    LonLat toGeographic(Point2 p) const;
+    /// @brief (lon, lat) in degrees -> planning-frame point (x, y) in metres; identity (x = lon, y = lat) in
+    /// Cartesian mode.
+    Point2 toLocal(LonLat g) const;
 };
 
 /// @brief Loads u/v from a NetCDF file into a GriddedCurrentField (see NetCdfCurrentOptions for what is found
@@ -110,6 +113,11 @@ struct NetCdfCurrents
 /// below the forecasts' resolution. Curvilinear velocities are taken as eastward/northward (CF standard names);
 /// grid-relative components (ROMS/NEMO rotated grids with an angle variable), staggered u/v grids and
 /// terrain-following (sigma) vertical coordinates are not supported (the last two give an Error).
+///
+/// Bad files are refused rather than loaded wrong: a classic-format (CDF-1/2/5) file shorter than its
+/// header declares, a dimension of u/v of length 0, axes holding fill values, NaN or infinities, axes that are not
+/// strictly monotonic (longitudes written across one seam, 170, 180, -170 or 350, 0, 10, are allowed), folded
+/// curvilinear grids, and a trip region whose hyperslab exceeds the memory limit (checkMemory()).
 ///
 /// @throws Error naming the file, the variable and what was expected when something is missing or wrong.
 NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &options = {});

@@ -22,8 +22,8 @@ namespace ompl_glider
 /// @brief Where a value came from in the mission file (for messages after loading).
 struct SourceMark
 {
-    std::string file;  ///< mission file
-    int line{0};       ///< 1-based line (0 = unknown)
+    std::string file;  ///< mission file, or the command-line flag ("--grid-size") that gave the value
+    int line{0};       ///< 1-based line (0 = unknown, or a flag)
 };
 
 /// @brief A point given as x/y (planning frame) or lon/lat (degrees; needs a projection).
@@ -212,6 +212,13 @@ struct MissionSpec
     PlannerSpec planner;
     OutputSpec outputs;
     std::vector<double> speeds;    ///< speed sweep ([EichhornOceans] Table VI); empty = none
+    /// Where each value was given, by dotted field name ("planner.grid_size"): a line of the mission file, or the
+    /// command-line flag. Checks made after loading (those that need the field or the region) name it with place().
+    std::map<std::string, SourceMark> marks;
+
+    /// @brief "m.yaml:12: field 'planner.grid_size'", "--grid-size" for a flag, or "m.yaml: field '...'" when the
+    /// value was not given (a default).
+    std::string place(const std::string &field) const;
 };
 
 /// @brief Reads and validates a YAML mission file. Every field is checked: an unknown field, a wrong type, a

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/Geometry.h"
 #include "ompl_glider/cost/DiveProfile.h"
 
 namespace ompl_glider
@@ -16,14 +17,15 @@ namespace ompl_glider
 /// e.g. GEBCO) is negated. Fill values and depths <= 0 are land (depth 0). Outside the grid the nearest edge value
 /// is used.
 ///
-/// For geographic axes, queries in the planning frame are converted with @p toGeographic (for example
-/// MissionProblem::toGeographic); without it the axes are taken as planning x/y.
+/// For geographic axes, queries in the planning frame are converted with @p toGeographic, which returns the
+/// (lon, lat) of a planning-frame point (x, y) (for example MissionProblem::toGeographic); without it the axes
+/// are taken as planning x/y.
 class NetCdfBathymetry : public Bathymetry
 {
 public:
     /// @throws Error naming the file and variable when the file, the variable or its axes cannot be read.
     NetCdfBathymetry(const std::string &path, const std::string &variable,
-                     std::function<void(double x, double y, double &lon, double &lat)> toGeographic = {});
+                     std::function<LonLat(double x, double y)> toGeographic = {});
 
     double seafloorDepth(double x, double y) const override;
 
@@ -39,6 +41,6 @@ private:
     std::vector<double> ax_, ay_;  // ascending axes (x: lon or x, y: lat or y)
     std::vector<double> depth_;    // [j * nx + i]
     bool geographic_{false};
-    std::function<void(double, double, double &, double &)> toGeographic_;
+    std::function<LonLat(double, double)> toGeographic_;
 };
 }  // namespace ompl_glider

@@ -37,6 +37,10 @@ struct PlannedPath
     bool solved{false};       ///< an exact path to the goal was found
     std::string status;       ///< OMPL's planner status ("Exact solution", "Timeout", "Invalid start", ...)
     std::string reason;       ///< why there is no path (empty when solved)
+    /// The input at fault when the problem itself is bad (start, goal, departure): its dotted field name
+    /// ("start", "goal", "departure.time", for MissionSpec::place()); empty when there is a path or the problem is
+    /// well-formed and has none.
+    std::string badInput;
     std::string planner;      ///< canonical planner name (PlannerRegistry.h)
     double departure{0.0};    ///< departure time (field units)
     double speed{0.0};        ///< vehicle speed used

@@ -10,16 +10,17 @@
 
 namespace ompl_glider
 {
-/// @brief The field, the travel-time code (with the vehicle speed), the forbidden regions, the planning region
-/// and the departure time t0 of one problem. Built once (see the setup helper) and shared read-only by the
-/// motion validator, the travel-time objective and the planners (ZAStarTVE and friends).
+/// @brief The field, the travel-time code (with the vehicle speed), the forbidden regions and the planning region
+/// of one problem. Built once (see the setup helper) and shared read-only by the motion validator, the travel-time
+/// objective and the planners (ZAStarTVE and friends). The departure time is not part of it: it is the start state's
+/// time (GliderProblem::t0 in the setup helper), passed to the searches and read from the waypoints by the
+/// post-processing.
 struct GliderContext
 {
     std::shared_ptr<const CurrentField> field;            ///< the current field (counts CMC)
     std::shared_ptr<const TravelTimeCalculator> travel;   ///< travel time of legs (counts CFC); holds V
     std::shared_ptr<const Environment> environment;       ///< forbidden regions; null when there are none
-    Region region;                                        ///< x/y bounds and [t0, t0 + horizon]
-    double t0{0.0};                                       ///< departure time
+    Region region;                                        ///< x/y bounds, time bounds [t0, t0 + horizon]
 
     /// @brief Vehicle speed through water.
     double speed() const

@@ -67,8 +67,14 @@ private:
     std::string lastCheckMessage_;
 };
 
+/// @brief Why the departure time of @p problem cannot be planned with (not finite, or so large that doubles
+/// cannot resolve the integration tolerance over the horizon); empty when it can. makeGliderContext() refuses such
+/// a problem; callers that know where the departure came from check first to name it.
+std::string departureProblem(const GliderProblem &problem);
+
 /// @brief Checks the problem and builds its context (TravelTimeCalculator from field + travel, region = box and
-/// [t0, t0 + horizon], t0). @throws ompl_glider::Error naming the bad field (no field, bounds not finite or
+/// [t0, t0 + horizon]). The context does not hold t0 itself: the departure is the start state's time (see
+/// makeSimpleSetup()). @throws ompl_glider::Error naming the bad field (no field, bounds not finite or
 /// empty, horizon <= 0, t0 outside the field's time span, start/goal not set or outside the box, tolerance < 0,
 /// bad travel-time parameters).
 std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &problem);
@@ -85,6 +91,8 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &problem);
 ompl::geometric::SimpleSetupPtr makeSimpleSetup(const GliderProblem &problem,
                                                 std::shared_ptr<GliderContext> *ctxOut = nullptr);
 
-/// @brief The same for an existing context (e.g. one shared by several setups).
+/// @brief The same for an existing context (e.g. one shared by several setups). The start state's time is
+/// problem.t0. @throws ompl_glider::Error also when ctx is null or problem.t0 lies outside
+/// [ctx->region.tMin, ctx->region.tMax].
 ompl::geometric::SimpleSetupPtr makeSimpleSetup(const GliderProblem &problem, std::shared_ptr<GliderContext> ctx);
 }  // namespace ompl_glider

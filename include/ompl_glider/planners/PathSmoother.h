@@ -83,14 +83,9 @@ public:
     /// @throws Error when ctx is null or lacks a field or travel-time calculator.
     explicit PathSmoother(std::shared_ptr<const GliderContext> ctx);
 
-    /// @brief Smooths the waypoints (their input times are ignored) with departure at t0.
-    SmoothingResult smooth(const std::vector<TimedWaypoint> &waypoints, double t0) const;
-
-    /// @brief Smooths the waypoints with departure at ctx->t0.
-    SmoothingResult smooth(const std::vector<TimedWaypoint> &waypoints) const
-    {
-        return smooth(waypoints, ctx_->t0);
-    }
+    /// @brief Smooths the waypoints with departure at t0 = waypoints.front().t (the start's time; the other input
+    /// times are ignored). An empty input gives an empty result.
+    SmoothingResult smooth(const std::vector<TimedWaypoint> &waypoints) const;
 
     /// @brief Smooths an OMPL path on a TimeSE2StateSpace in place (departure at the first state's time). The path
     /// is replaced only when the smoothed path arrives no later than the path's own last state time. When its

@@ -83,7 +83,8 @@ enum class TveOutcome
     Exact,         ///< the goal vertex was extracted from the queue: waypoints hold the optimal lattice path
     Exhausted,     ///< the queue ran empty: no path to the goal exists on this lattice (within the field's time)
     Terminated,    ///< the termination callback fired: waypoints lead to the reached vertex closest to the goal
-    InvalidStart,  ///< start outside the bounds, on land or in a forbidden region at t0 (see message)
+    InvalidStart,  ///< start outside the bounds, on land or in a forbidden region at t0, or t0 not finite or
+                   ///< outside [region.tMin, region.tMax] (see message)
     InvalidGoal    ///< goal outside the bounds, on land or in a forbidden region (see message)
 };
 
@@ -133,9 +134,10 @@ public:
     /// Throws ompl_glider::Error on a null context, field or travel, or bad lattice parameters.
     TveSearch(std::shared_ptr<const GliderContext> ctx, double gridSize, unsigned sectors);
 
-    /// @brief Runs the search from (sx, sy) at ctx->t0 to (gx, gy). terminate() is called every
-    /// options.checkEvery expansions (and once before the first); when it returns true the search stops.
-    TveResult run(double sx, double sy, double gx, double gy, const TveOptions &options,
+    /// @brief Runs the search from (sx, sy), departing at t0 (the start state's time, d[s] = t0), to (gx, gy).
+    /// terminate() is called every options.checkEvery expansions (and once before the first); when it returns true
+    /// the search stops.
+    TveResult run(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
                   const std::function<bool()> &terminate = {});
 
     /// @brief CALC-OPTDIR ([EichhornRAS] Sec. 2.2.2, Table 2): the optimal course over ground at u predicted by

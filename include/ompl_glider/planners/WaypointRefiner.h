@@ -68,14 +68,9 @@ public:
     /// @throws Error when ctx is null or lacks a field or travel-time calculator, or a parameter is out of range.
     explicit WaypointRefiner(std::shared_ptr<const GliderContext> ctx, RefinerParams params = {});
 
-    /// @brief Refines the waypoints (input times ignored) for departure at t0.
-    RefinementResult refine(const std::vector<TimedWaypoint> &waypoints, double t0) const;
-
-    /// @brief Refines for departure at ctx->t0.
-    RefinementResult refine(const std::vector<TimedWaypoint> &waypoints) const
-    {
-        return refine(waypoints, ctx_->t0);
-    }
+    /// @brief Refines the waypoints for departure at t0 = waypoints.front().t (the start's time; the other input
+    /// times are ignored). An empty input gives an empty result.
+    RefinementResult refine(const std::vector<TimedWaypoint> &waypoints) const;
 
     /// @brief Refines an OMPL path on a TimeSE2StateSpace in place (departure at the first state's time); the path
     /// is replaced only when the result arrives no later than its own last state time.

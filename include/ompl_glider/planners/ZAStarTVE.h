@@ -20,12 +20,13 @@ namespace ompl_glider
 /// The configuration picks the acceleration methods of [EichhornRAS] Sec. 2.2: "TVE" (time-dependent Dijkstra),
 /// "A*TVE" (+ the heuristic of [EichhornRAS] Eq. 1), "ZTVE" (+ Zermelo pruning, [EichhornRAS] Sec. 2.2.2) and "ZA*TVE"
 /// (both, [EichhornRAS] Table 2). The search runs on an implicit rectangular lattice over ctx->region (grid_size,
-/// sectors; see Lattice) from the exact start to the exact goal position (both joined to the lattice).
+/// sectors; see Lattice) from the exact start to the exact goal position (both joined to the lattice), departing at
+/// the time t0 of the (first) start state, which must lie in [ctx->region.tMin, ctx->region.tMax].
 ///
 /// The space must be a TimeSE2StateSpace (or hold one as its state type). Goals: PositionGoal, or any GoalState /
 /// GoalSampleableRegion whose (sampled) state gives the goal position. The returned PathGeometric has one
 /// TimeSE2 state per waypoint: x, y, yaw = heading of the leg that reaches it (the first leg's at the start),
-/// t = arrival time; its cost under TravelTimeObjective is the arrival time minus t0.
+/// t = arrival time; its cost under TravelTimeObjective is the arrival time minus t0 (the start state's time).
 ///
 /// Outcomes of solve(): EXACT_SOLUTION; APPROXIMATE_SOLUTION when the termination condition stopped the search (the
 /// path leads to the reached vertex closest to the goal); TIMEOUT with no path when the search exhausted the lattice
@@ -206,7 +207,8 @@ public:
     {
         return solution_;
     }
-    /// @brief Travel time (arrival - t0) of the last exact lattice path (before post-processing); +inf otherwise.
+    /// @brief Travel time (arrival - start state's time) of the last exact lattice path (before post-processing);
+    /// +inf otherwise.
     double getTravelTime() const
     {
         return last_.travelTime;

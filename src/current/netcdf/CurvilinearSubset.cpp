@@ -17,6 +17,18 @@ struct IndexBox
     std::size_t j0{0}, j1{0}, i0{0}, i1{0};
 };
 
+/// @throws Error when a value of the 2-D coordinate var read as rows from j0 and columns from i0 (nx per row) is a
+/// fill value or not finite.
+void checkNodeValues(const NcFile &f, int var, const std::vector<double> &v, std::size_t nx, std::size_t j0,
+                     std::size_t i0)
+{
+    const std::size_t k = firstFillOrNonFinite(f, var, v);
+    if (k < v.size())
+        throw f.error("coordinate '" + f.varName(var) + "' holds fill values or non-finite numbers (" +
+                      numText(v[k]) + " at (j, i) = (" + std::to_string(j0 + k / nx) + ", " +
+                      std::to_string(i0 + k % nx) + ")); expected finite coordinates");
+}
+
 /// Grows box to the nodes of rows [r0, r0 + rows) (values la/lo) that lie in the region (+ margin).
 void scanRows(const NcFile &f, const Layout &l, const RegionOfInterest &r, std::size_t r0, std::size_t rows,
               std::size_t nx, IndexBox &box)
@@ -26,6 +38,8 @@ void scanRows(const NcFile &f, const Layout &l, const RegionOfInterest &r, std::
     std::size_t st[2] = {r0, 0}, ct[2] = {rows, nx};
     f.check(nc_get_vara_double(f.id(), l.lat2D, st, ct, la.data()), "read '" + l.yName + "'");
     f.check(nc_get_vara_double(f.id(), l.lon2D, st, ct, lo.data()), "read '" + l.xName + "'");
+    checkNodeValues(f, l.lat2D, la, nx, r0, 0);
+    checkNodeValues(f, l.lon2D, lo, nx, r0, 0);
     for (std::size_t k = 0; k < rows; ++k)
         for (std::size_t i = 0; i < nx; ++i)
         {
@@ -82,24 +96,26 @@ void setCentre(bool geographic, double ref, HorizontalSubset &h)
 }
 }  // namespace
 
-HorizontalSubset curvilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r)
+HorizontalSubset curvilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
+                                   const AxisSelection &t)
 {
     HorizontalSubset h;
     const IndexBox box = regionBox(f, l, r);
+    if (box.i1 - box.i0 < 1 || box.j1 - box.j0 < 1)
+        throw f.error("the region covers fewer than 2 grid nodes along a dimension of '" + l.xName + "'");
+    checkTripMemory(f, box.i1 - box.i0 + 1, box.j1 - box.j0 + 1, t.idx.size(), z.idx.size());
     for (std::size_t j = box.j0; j <= box.j1; ++j)
         h.yIdx.push_back(j);
     for (std::size_t i = box.i0; i <= box.i1; ++i)
         h.xIdx.push_back(i);
-    if (h.xIdx.size() < 2 || h.yIdx.size() < 2)
-        throw f.error("the region covers fewer than 2 grid nodes along a dimension of '" + l.xName + "'");
     std::size_t st[2] = {box.j0, box.i0}, ct[2] = {h.yIdx.size(), h.xIdx.size()};
     h.nodeLat.resize(ct[0] * ct[1]);
     h.nodeLon.resize(ct[0] * ct[1]);
     f.check(nc_get_vara_double(f.id(), l.lat2D, st, ct, h.nodeLat.data()), "read '" + l.yName + "'");
     f.check(nc_get_vara_double(f.id(), l.lon2D, st, ct, h.nodeLon.data()), "read '" + l.xName + "'");
-    for (std::size_t k = 0; k < h.nodeLat.size(); ++k)
-        if (!std::isfinite(h.nodeLat[k]) || !std::isfinite(h.nodeLon[k]))
-            throw f.error("curvilinear coordinates '" + l.xName + "'/'" + l.yName + "' have non-finite values");
+    checkNodeValues(f, l.lat2D, h.nodeLat, ct[1], box.j0, box.i0);
+    checkNodeValues(f, l.lon2D, h.nodeLon, ct[1], box.j0, box.i0);
+    checkCurvilinearNodes(f, l, h);
     const std::size_t mid = (ct[0] / 2) * ct[1] + ct[1] / 2;
     const double ref = r.given ? 0.5 * (r.lon0 + r.lon1) : h.nodeLon[mid];
     setCentre(l.geographic, ref, h);

@@ -12,11 +12,12 @@ namespace netcdf_detail
 namespace
 {
 /// Depth values of zv in metres, positive down, in file order. @throws Error for terrain-following
-/// coordinates, an unknown positive attribute or units, or non-finite values.
+/// coordinates, an unknown positive attribute or units, fill values or non-finite numbers.
 std::vector<double> readDepthMetres(const NcFile &f, int zv)
 {
     const std::string zn = f.varName(zv);
     std::vector<double> zs = f.readAll1D(zv);
+    checkAxisValues(f, zv, zs, "depth");
     const std::string zsn = stdName(f, zv);
     if (zsn.rfind("ocean_s", 0) == 0 || zsn.rfind("ocean_sigma", 0) == 0 || zsn.rfind("ocean_double_sigma", 0) == 0)
         throw f.error("depth '" + zn + "' is a terrain-following coordinate (standard_name " + zsn +
@@ -33,11 +34,7 @@ std::vector<double> readDepthMetres(const NcFile &f, int zv)
     else if (!(zu.empty() || inList(zu, {"m", "meter", "meters", "metre", "metres", "1", "level"})))
         throw f.error("depth '" + zn + "': units '" + zu + "', expected m");
     for (double &z : zs)
-    {
-        if (!std::isfinite(z))
-            throw f.error("depth '" + zn + "' has non-finite values");
         z *= (pos == "up" ? -zscale : zscale);
-    }
     return zs;
 }
 }  // namespace
@@ -52,6 +49,11 @@ AxisSelection selectDepths(const NcFile &f, const Layout &l, double maxDepth)
     for (std::size_t k = 0; k < zs.size(); ++k)
         order[k] = k;
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return zs[a] < zs[b]; });
+    for (std::size_t k = 1; k < order.size(); ++k)
+        if (zs[order[k]] == zs[order[k - 1]])
+            throw f.error("depth '" + f.varName(l.coordVar[std::size_t(l.dimZ)]) + "' has the depth " +
+                          numText(zs[order[k]]) + " m twice (indices " + std::to_string(order[k - 1]) + " and " +
+                          std::to_string(order[k]) + "); expected distinct depths");
     std::size_t last = order.size() - 1;
     if (std::isfinite(maxDepth))
     {

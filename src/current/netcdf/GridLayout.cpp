@@ -94,6 +94,22 @@ void makeCurvilinear(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l
     cartAxes = !geoAxes;
 }
 
+/// @throws Error when a dimension of the velocities has length 0 (an UNLIMITED dimension without records, say):
+/// naming its coordinate variable when it has one.
+void checkNoEmptyDimension(const NcFile &f, const Layout &l)
+{
+    for (std::size_t d = 0; d < l.dims.size(); ++d)
+    {
+        if (f.dimLen(l.dims[d]) > 0)
+            continue;
+        const std::string dim = "'" + f.dimName(l.dims[d]) + "' has length 0";
+        if (l.coordVar[d] < 0)
+            throw f.error("variable '" + l.uName + "' has no values: its dimension " + dim);
+        const std::string kind = l.role[d] == Role::Time ? "time variable '" : "coordinate '";
+        throw f.error(kind + f.varName(l.coordVar[d]) + "' has no values: its dimension " + dim);
+    }
+}
+
 /// Geographic or Cartesian, from the options and what the axes looked like.
 bool decideGeographic(const NcFile &f, const NetCdfCurrentOptions &opt, const Layout &l, bool geoAxes,
                       bool cartAxes)
@@ -124,6 +140,7 @@ Layout detectLayout(const NcFile &f, const NetCdfCurrentOptions &opt)
     l.role = std::move(dr.role);
     l.coordVar = std::move(dr.coordVar);
     bool geoAxes = dr.geoAxes, cartAxes = dr.cartAxes;
+    checkNoEmptyDimension(f, l);
     if (l.dimX < 0 || l.dimY < 0)
         makeCurvilinear(f, opt, l, geoAxes, cartAxes);
     for (std::size_t d = 0; d < l.dims.size(); ++d)

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "NetCdfInternal.h"
+#include "ompl_glider/ResourceLimits.h"
 
 namespace ompl_glider
 {
@@ -87,6 +88,27 @@ void readScatter(const NcFile &f, int var, const std::vector<DimRead> &dims, con
                     "read variable '" + f.varName(var) + "'");
         scatterBlock(dims, stride, runIdx, count, buf, out);
     } while (nextRuns(dims, runIdx));
+}
+
+double tripBytes(std::size_t ni, std::size_t nj, std::size_t nt, std::size_t nz)
+{
+    const double nodes = double(ni) * double(nj), values = nodes * double(nt) * double(nz);
+    // per value of u and of v: 4 (loaded float) + 4 (the field's copy) + 8 (stencil max/min) + 4 (their scratch
+    // copy) bytes while the field is built, more than the reading's 8 (raw double) + 4 (a read buffer of doubles
+    // for one variable at a time); per node: 4 coordinate arrays of doubles, the field's cell index (16 bytes), a
+    // land mask per depth twice (the loaded one and the field's)
+    const double perValue = 2.0 * (4.0 + 4.0 + 8.0 + 4.0);
+    const double perNode = 4.0 * sizeof(double) + 16.0 + 2.0 * double(nz);
+    return values * perValue + nodes * perNode;
+}
+
+void checkTripMemory(const NcFile &f, std::size_t ni, std::size_t nj, std::size_t nt, std::size_t nz)
+{
+    checkMemory(tripBytes(ni, nj, nt, nz),
+                "NetCDF file '" + f.path() + "': the trip's region (" + std::to_string(ni) + " x " +
+                    std::to_string(nj) + " nodes, " + std::to_string(nt) + " times, " + std::to_string(nz) +
+                    " depths)",
+                "restrict the region or the time window, or use a coarser file");
 }
 
 HyperslabPlan planHyperslab(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,

@@ -4,6 +4,8 @@
 ///
 /// The reader runs in stages, one source file each (all in src/current/netcdf/ except the composition):
 ///  - NcFile.cpp             the open file, attribute/variable queries, errors that name the file
+///  - ClassicSize.cpp        the size a classic-format file must have, from its header (refuses truncated files)
+///  - AxisChecks.cpp         coordinate values: no fill values or non-finite numbers, strictly monotonic axes
 ///  - VariableDetection.cpp  velocities and the role of each of their dimensions (CF standard_name, axis, units)
 ///  - GridLayout.cpp         1-D axes or a 2-D curvilinear grid; geographic or Cartesian
 ///  - TimeAxis.cpp           the CF time axis and the time window (also readNetCdfTimeAxis())
@@ -20,7 +22,9 @@
 #include <netcdf.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
+#include <istream>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -58,7 +62,9 @@ std::string joinNames(const std::vector<std::string> &names);
 class NcFile
 {
 public:
-    /// @throws Error "NetCDF file '<path>': cannot open: ..." when the file is missing or not NetCDF.
+    /// @throws Error "NetCDF file '<path>': cannot open: ..." when the file is missing or not NetCDF, and
+    /// "NetCDF file '<path>' is truncated: ..." when it is a classic-format file shorter than its header declares
+    /// (classicTruncation(); netCDF-4/HDF5 files are not checked).
     explicit NcFile(const std::string &path);
     ~NcFile();
     NcFile(const NcFile &) = delete;
@@ -95,6 +101,33 @@ private:
     std::string path_;
     int id_{-1};
 };
+
+// ---- classic-format files (ClassicSize.cpp) ----
+
+/// What the header of a classic-format file (CDF-1, CDF-2 or CDF-5) declares about where its data end.
+struct ClassicExtent
+{
+    int version{0};              ///< 1, 2 or 5; 0 when the bytes are not a classic header
+    bool headerCut{false};       ///< the bytes end inside the header (headerEnd and the data fields are then 0)
+    bool streaming{false};       ///< numrecs is STREAMING: the record count is unknown and the records unchecked
+    std::uint64_t fileBytes{0};  ///< bytes of the file
+    std::uint64_t headerEnd{0};  ///< first byte after the header
+    std::uint64_t dataBegin{0};  ///< first byte of the first variable's values (headerEnd without variables)
+    std::uint64_t fixedEnd{0};   ///< end of the last non-record variable's values (0 without one)
+    std::uint64_t recordEnd{0};  ///< end of the last record variable's values in the last record (0 without)
+
+    /// The byte where the declared contents end: the largest of headerEnd, fixedEnd and recordEnd.
+    std::uint64_t dataEnd() const;
+};
+
+/// Parses the classic header at the start of `in`, a file of `size` bytes. Never throws for bad bytes: version 0
+/// when they are not a classic header, headerCut when they end inside it.
+ClassicExtent classicExtent(std::istream &in, std::uint64_t size);
+
+/// Why the classic-format file at `path` is shorter than its header declares ("is truncated: its header declares
+/// N bytes of data ending at byte B, the file has S bytes (M missing)", or "is truncated: it ends inside its
+/// header, after S bytes"); nullopt when it is complete, not a classic file, or cannot be read.
+std::optional<std::string> classicTruncation(const std::string &path);
 
 // ---- what a variable is (VariableDetection.cpp) ----
 
@@ -182,8 +215,8 @@ struct TimeValues
 };
 
 /// Reads the time coordinate variable tv. @throws Error when the units are not "<unit> since <date>" and
-/// allowUndated is false, when the units or calendar are not understood, or the values are not finite and
-/// strictly increasing.
+/// allowUndated is false, when the units or calendar are not understood, or when the variable has no values,
+/// holds fill values or non-finite numbers, or is not strictly increasing.
 TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated);
 
 /// File indices and coordinate values chosen along one dimension.
@@ -233,10 +266,42 @@ std::optional<std::pair<std::size_t, std::size_t>> indexRange(const std::vector<
 /// lon shifted by whole turns into [centre - 180, centre + 180).
 double wrapTo(double lon, double centre);
 
-/// 1-D axes: latitude stored ascending; longitude ascending, unwrapped across the seam of a global axis.
-HorizontalSubset rectilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r);
-/// 2-D coordinates: the index box of the nodes in the region (+ margin nodes) and their coordinates.
-HorizontalSubset curvilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r);
+/// 1-D axes: latitude stored ascending; longitude ascending, unwrapped across the seam of a global axis (or of
+/// a regional axis written across one). The nodes x the times t and depths z must fit the memory limit
+/// (checkTripMemory()). @throws Error for axes with fill values or non-finite numbers, axes that are not strictly
+/// monotonic, a region outside the axes or a trip too large for the memory.
+HorizontalSubset rectilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
+                                   const AxisSelection &t);
+/// 2-D coordinates: the index box of the nodes in the region (+ margin nodes) and their coordinates; the memory
+/// is checked (checkTripMemory()) before they are read. @throws Error also for coordinates with fill values or
+/// non-finite numbers, and for coinciding neighbours or folded cells (checkCurvilinearNodes()).
+HorizontalSubset curvilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
+                                   const AxisSelection &t);
+
+// ---- coordinate values (AxisChecks.cpp) ----
+
+/// A number for messages: up to 10 significant digits ("47.4", "9.969209968e+36").
+std::string numText(double v);
+/// Index of the first value that is NaN, infinite or a fill value of var (packingOf(): _FillValue or the netCDF
+/// default fill, missing_value, outside valid_min/valid_max/valid_range); values.size() when there is none.
+std::size_t firstFillOrNonFinite(const NcFile &f, int var, const std::vector<double> &values);
+/// @throws Error "<kind> '<var>' holds fill values or non-finite numbers (<value> at index k); expected finite
+/// coordinates" (kind: "coordinate", "time variable", "depth").
+void checkAxisValues(const NcFile &f, int var, const std::vector<double> &values, const std::string &kind);
+/// Index k of the first value that breaks strict monotony (v[k] not beyond v[k - 1] in the direction of v[0] to
+/// v[1]); values.size() when strictly increasing or strictly decreasing.
+std::size_t monotonicBreak(const std::vector<double> &values);
+/// @throws Error "<kind> '<name>' is not strictly monotonic: <a> at index k - 1, then <b> at index k" unless values
+/// are strictly monotonic; the numbers shown are those of `shown` (the file's, when values were unwrapped).
+void checkStrictlyMonotonic(const NcFile &f, const std::vector<double> &values, const std::vector<double> &shown,
+                            const std::string &kind, const std::string &name);
+/// Longitudes that are not monotonic as written but are across one seam (170, 180, -170 or 350, 0, 10): the
+/// values after each jump of more than 180 degrees shifted by a whole turn, when that makes them strictly
+/// monotonic within less than a turn; else (and for monotonic axes) the values unchanged.
+std::vector<double> unwrapLongitudes(const std::vector<double> &lon);
+/// @throws Error "curvilinear coordinates '<lon>'/'<lat>' are not strictly monotonic: ..." when two neighbouring
+/// nodes of h coincide or a cell's orientation differs from the first cell's (a fold or a degenerate cell).
+void checkCurvilinearNodes(const NcFile &f, const Layout &l, const HorizontalSubset &h);
 
 // ---- reading (Hyperslab.cpp, UnitsAndPacking.cpp, LandMask.cpp) ----
 
@@ -262,6 +327,15 @@ struct HyperslabPlan
     std::vector<std::size_t> stride;
     std::size_t fileValues{1};  ///< values per component in the file variable
 };
+
+/// The bytes loadNetCdfCurrents() allocates at its peak for ni x nj nodes, nt times and nz depths: 20 per value of
+/// each of u and v while the GriddedCurrentField is built (the loaded float, the field's copy, its stencil maximum
+/// and minimum and their scratch copy; more than the reading's raw double and read buffer), plus per node the
+/// coordinates, the field's cell index and the land masks.
+double tripBytes(std::size_t ni, std::size_t nj, std::size_t nt, std::size_t nz);
+/// checkMemory() of tripBytes(): @throws Error "NetCDF file '<path>': the trip's region (I x J nodes, T times,
+/// K depths) needs about ..." with a hint to restrict the region or the time window, or use a coarser file.
+void checkTripMemory(const NcFile &f, std::size_t ni, std::size_t nj, std::size_t nt, std::size_t nz);
 
 HyperslabPlan planHyperslab(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                             const AxisSelection &t);

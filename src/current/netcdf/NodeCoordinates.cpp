@@ -26,7 +26,9 @@ void projectNodes(const NcFile &f, const Layout &l, const HorizontalSubset &h, c
             if (std::abs(lat) > 89.9)
                 throw f.error("grid node at latitude " + std::to_string(lat) +
                               " is too close to a pole for a local projection; restrict the region");
-            proj.forward(lon, lat, g.nodeX[n], g.nodeY[n]);
+            const Point2 p = proj.forward(lon, lat);
+            g.nodeX[n] = p.x;
+            g.nodeY[n] = p.y;
             double ex, ey, nx_, ny_;
             proj.eastDirection(lon, lat, ex, ey);
             proj.northDirection(lon, lat, nx_, ny_);

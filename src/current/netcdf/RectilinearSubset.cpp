@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "NetCdfInternal.h"
+#include "ompl_glider/ResourceLimits.h"
 
 namespace ompl_glider
 {
@@ -11,11 +12,28 @@ namespace netcdf_detail
 {
 namespace
 {
-void checkFinite(const NcFile &f, const std::vector<double> &values, const std::string &name)
+/// Reads the 1-D axis var after the memory check of both axes. @throws Error for fill values, non-finite numbers
+/// or values that are not strictly monotonic (longitudes: also across one seam, returned unwrapped).
+std::vector<double> readAxis(const NcFile &f, int var, bool longitude)
 {
-    for (double v : values)
-        if (!std::isfinite(v))
-            throw f.error("coordinate '" + name + "' has non-finite values");
+    const std::vector<double> raw = f.readAll1D(var);
+    checkAxisValues(f, var, raw, "coordinate");
+    const std::vector<double> values = longitude ? unwrapLongitudes(raw) : raw;
+    checkStrictlyMonotonic(f, values, raw, "coordinate", f.varName(var));
+    return values;
+}
+
+/// The x and y axes (the memory they need checked first: the value, a copy and an index each).
+void readAxes(const NcFile &f, const Layout &l, std::vector<double> &xs, std::vector<double> &ys)
+{
+    const int xv = l.coordVar[std::size_t(l.dimX)], yv = l.coordVar[std::size_t(l.dimY)];
+    const std::size_t nx = f.dimLen(l.dims[std::size_t(l.dimX)]), ny = f.dimLen(l.dims[std::size_t(l.dimY)]);
+    checkMemory(3.0 * 8.0 * (double(nx) + double(ny)),
+                "NetCDF file '" + f.path() + "': the axes '" + l.xName + "' and '" + l.yName + "' (" +
+                    std::to_string(nx) + " and " + std::to_string(ny) + " values)",
+                "use a coarser file");
+    ys = readAxis(f, yv, false);
+    xs = readAxis(f, xv, l.geographic);
 }
 
 /// y: the range covering the region (all without region), stored ascending.
@@ -125,13 +143,12 @@ void subsetXCyclic(const NcFile &f, const Layout &l, const RegionOfInterest &r, 
 }
 }  // namespace
 
-HorizontalSubset rectilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r)
+HorizontalSubset rectilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
+                                   const AxisSelection &t)
 {
     HorizontalSubset h;
-    const std::vector<double> xs = f.readAll1D(l.coordVar[std::size_t(l.dimX)]);
-    const std::vector<double> ys = f.readAll1D(l.coordVar[std::size_t(l.dimY)]);
-    checkFinite(f, xs, l.xName);
-    checkFinite(f, ys, l.yName);
+    std::vector<double> xs, ys;
+    readAxes(f, l, xs, ys);
     subsetY(f, l, r, ys, h);
     const AscendingX x = ascendingX(xs, l.geographic);
     if (!r.given)
@@ -148,6 +165,7 @@ HorizontalSubset rectilinearSubset(const NcFile &f, const Layout &l, const Regio
         subsetXCyclic(f, l, r, x, h);
     if (h.xIdx.size() < 2 || h.yIdx.size() < 2)
         throw f.error("the region covers fewer than 2 grid nodes along '" + l.xName + "' or '" + l.yName + "'");
+    checkTripMemory(f, h.xIdx.size(), h.yIdx.size(), t.idx.size(), z.idx.size());
     h.centreLon = 0.5 * (h.lon1D.front() + h.lon1D.back());
     h.centreLat = 0.5 * (h.lat1D.front() + h.lat1D.back());
     return h;

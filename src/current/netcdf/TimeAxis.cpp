@@ -9,12 +9,32 @@ namespace ompl_glider
 {
 namespace netcdf_detail
 {
+namespace
+{
+/// The first index k with v[k] <= v[k - 1]; v.size() when v is strictly increasing.
+std::size_t firstNotIncreasing(const std::vector<double> &v)
+{
+    for (std::size_t k = 1; k < v.size(); ++k)
+        if (!(v[k] > v[k - 1]))
+            return k;
+    return v.size();
+}
+}  // namespace
+
 TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated)
 {
     TimeValues out;
     out.name = f.varName(tv);
     const std::string &tn = out.name;
     const std::vector<double> raw = f.readAll1D(tv);
+    if (raw.empty())
+        throw f.error("time variable '" + tn + "' has no values");
+    checkAxisValues(f, tv, raw, "time variable");
+    const std::size_t bad = firstNotIncreasing(raw);
+    if (bad < raw.size())
+        throw f.error("time variable '" + tn + "' is not strictly monotonic: " + numText(raw[bad - 1]) +
+                      " at index " + std::to_string(bad - 1) + ", then " + numText(raw[bad]) + " at index " +
+                      std::to_string(bad) + "; expected increasing times");
     const std::string units = unitsOf(f, tv);
     const std::string cal = f.attText(tv, "calendar").value_or("standard");
     std::vector<double> &ts = out.times;
@@ -41,13 +61,10 @@ TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated)
     else
         throw f.error("time variable '" + tn + "': units '" + units +
                       "', expected '<seconds|minutes|hours|days> since <date>'");
-    for (std::size_t k = 0; k < ts.size(); ++k)
-    {
-        if (!std::isfinite(ts[k]))
-            throw f.error("time variable '" + tn + "' has non-finite values");
-        if (k > 0 && !(ts[k] > ts[k - 1]))
-            throw f.error("time variable '" + tn + "': expected strictly increasing values");
-    }
+    for (std::size_t j = 0; j < ts.size(); ++j)
+        if (!std::isfinite(ts[j]) || (j > 0 && !(ts[j] > ts[j - 1])))
+            throw f.error("time variable '" + tn + "': " + numText(raw[j]) + " at index " + std::to_string(j) +
+                          " does not convert to a finite time in seconds after the one before");
     return out;
 }
 

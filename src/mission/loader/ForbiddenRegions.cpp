@@ -10,7 +10,6 @@ namespace ompl_glider::mission_loader
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // --- GeoJSON forbidden regions ---------------------------------------------------------------------------------
 
@@ -28,7 +27,7 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
     }
     catch (const YAML::ParserException &e)
     {
-        throw Error(path + ":" + std::to_string(e.mark.line + 1) + ": not valid GeoJSON: " + e.msg);
+        throw Error(yamlErrorMessage(path, e, "not valid GeoJSON"));
     }
     const Reader g(path, r.dir());
     if (!doc.IsMap() || !doc["type"] || doc["type"].Scalar() != "FeatureCollection" || !doc["features"] ||

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <fstream>
 
+#include <yaml-cpp/depthguard.h>
+
 #include "MissionReader.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CfTime.h"
@@ -21,6 +23,14 @@ bool fileExists(const std::string &p)
 {
     std::ifstream f(p);
     return static_cast<bool>(f);
+}
+
+std::string yamlErrorMessage(const std::string &file, const YAML::ParserException &e, const std::string &what)
+{
+    const std::string where = file + ":" + std::to_string(e.mark.line + 1) + ": ";
+    if (dynamic_cast<const YAML::DeepRecursion *>(&e))
+        return where + what + ": lists or mappings nested more than 500 levels deep";
+    return where + what + ": " + e.msg;
 }
 
 void Reader::fail(const YAML::Node &node, const std::string &field, const std::string &what) const
@@ -63,6 +73,7 @@ void Reader::checkMap(const YAML::Node &node, const std::string &path, const std
 
 double Reader::number(const YAML::Node &node, const std::string &field) const
 {
+    remember(node, field);
     if (!node.IsScalar())
         fail(node, field, "expected a number");
     double v;
@@ -105,6 +116,7 @@ double Reader::nonNegative(const YAML::Node &node, const std::string &field) con
 
 long Reader::integer(const YAML::Node &node, const std::string &field, long lo, long hi) const
 {
+    remember(node, field);
     if (!node.IsScalar())
         fail(node, field, "expected an integer");
     long v;
@@ -124,6 +136,7 @@ long Reader::integer(const YAML::Node &node, const std::string &field, long lo, 
 
 bool Reader::boolean(const YAML::Node &node, const std::string &field) const
 {
+    remember(node, field);
     if (!node.IsScalar())
         fail(node, field, "expected true or false");
     try
@@ -138,6 +151,7 @@ bool Reader::boolean(const YAML::Node &node, const std::string &field) const
 
 std::string Reader::text(const YAML::Node &node, const std::string &field) const
 {
+    remember(node, field);
     if (!node.IsScalar() || node.Scalar().empty())
         fail(node, field, "expected a non-empty text");
     return node.Scalar();
@@ -158,6 +172,7 @@ std::string Reader::oneOf(const YAML::Node &node, const std::string &field, cons
 
 double Reader::time(const YAML::Node &node, const std::string &field, const MissionSpec &m) const
 {
+    remember(node, field);
     if (!node.IsScalar())
         fail(node, field, "expected a time (a number, or an ISO 8601 date when the mission has an epoch)");
     try

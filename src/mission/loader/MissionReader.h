@@ -4,6 +4,7 @@
 /// and the readers of the mission's sections (one per top-level key). Not installed.
 #include <yaml-cpp/yaml.h>
 
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -16,6 +17,9 @@ namespace ompl_glider::mission_loader
 /// @p p relative to the mission file's directory @p dir (absolute paths unchanged).
 std::string joinPath(const std::string &dir, const std::string &p);
 bool fileExists(const std::string &p);
+/// The message for a YAML parse failure of @p file: "file:line: <what>: <yaml-cpp's message>", or that the text is
+/// nested too deeply (yaml-cpp stops at 500 levels with a misleading "bad file").
+std::string yamlErrorMessage(const std::string &file, const YAML::ParserException &e, const std::string &what);
 
 /// Reads one mission; every accessor names the file, the line and the dotted field.
 class Reader
@@ -64,8 +68,20 @@ public:
     /// A list of at least 3 pairs.
     std::vector<std::pair<double, double>> ring(const YAML::Node &node, const std::string &field) const;
 
+    /// Where each value read so far was given (MissionSpec::marks).
+    const std::map<std::string, SourceMark> &marks() const
+    {
+        return marks_;
+    }
+
 private:
+    void remember(const YAML::Node &node, const std::string &field) const
+    {
+        marks_[field] = SourceMark{file_, line(node)};
+    }
+
     std::string file_, dir_;
+    mutable std::map<std::string, SourceMark> marks_;
 };
 
 // Readers of the mission's parts; each validates its node and fills its part of @p m.

@@ -20,7 +20,8 @@ namespace ompl_glider::mission_loader
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kMaxSupportingPoints = 10000.0;  ///< departure-window samples, each a whole search
+constexpr double kMaxTimeLimit = 1e6;             ///< seconds: beyond it OMPL's time point arithmetic overflows
 /// Time origin of a NetCDF forecast (its first time, as the loader uses it): ISO dates of the mission are field
 /// times in the file's calendar, and the outputs get calendar dates. The time axis is found by the loader's own
 /// detection (readNetCdfTimeAxis(): variables.time, else axis "T", standard_name "time" or "<unit> since <date>").
@@ -191,6 +192,13 @@ void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m)
     d.time = d.begin;
     if (w["spacing"])
         d.spacing = r.positive(w["spacing"], g + ".spacing");
+    // every supporting point is a whole search: refuse a sample set that could never finish
+    const double points = std::floor((d.end - d.begin) / d.spacing) + 1.0;
+    if (points > kMaxSupportingPoints)
+        r.fail(w["spacing"] ? w["spacing"] : w, g + ".spacing",
+               "gives " + std::to_string(static_cast<long long>(std::min(points, 1e18))) +
+                   " supporting points (one search each; at most " +
+                   std::to_string(static_cast<long>(kMaxSupportingPoints)) + "): use a larger spacing");
     if (w["tolerance"])
         d.tolerance = r.positive(w["tolerance"], g + ".tolerance");
     if (w["coarse_grid_size"])
@@ -294,7 +302,11 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (n["refinement"])
         p.refinement = r.boolean(n["refinement"], f + ".refinement");
     if (n["time_limit"])
+    {
         p.timeLimit = r.nonNegative(n["time_limit"], f + ".time_limit");
+        if (p.timeLimit > kMaxTimeLimit)
+            r.fail(n["time_limit"], f + ".time_limit", "at most 1e6 s (11.6 days), got " + n["time_limit"].Scalar());
+    }
     if (n["horizon"])
         p.horizon = r.positive(n["horizon"], f + ".horizon");
     if (n["goal_tolerance"])

@@ -1,0 +1,347 @@
+#!/usr/bin/env python3
+"""Bad and edge inputs for glider_plan, one table row each: mission YAML, NetCDF files, flags, output directories.
+
+Every row runs glider_plan in a fresh directory that holds an output directory with an earlier run's files, and
+asserts the exit status (2: bad input, 1: a well-formed problem without a path), a phrase of the message
+(case-insensitive), that no signal ended the process, that no NaN was printed, and that the output directory is
+unchanged, byte for byte. Usage: bad_inputs.py GLIDER_PLAN [-k SUBSTRING] [-v]
+"""
+import hashlib
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+# ---------------------------------------------------------------------------------------------------------------
+# Inputs the rows are built from
+
+MISSION = """name: base
+current: {type: uniform, parameters: {u: 0.1, v: 0.0}}
+region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}
+start: {x: 1, y: 0}
+goal: {x: 9, y: 0}
+vehicle: {speed: 0.5}
+planner: {name: zastartve, grid_size: 0.5}
+"""
+
+# A forecast as ocean models write it: CF attributes, float u/v with a fill value, hours since a date.
+FORECAST = """netcdf forecast {
+dimensions: time = UNLIMITED ; lat = 6 ; lon = 6 ;
+variables:
+  double time(time) ; time:units = "hours since 2026-03-15 00:00:00" ; time:standard_name = "time" ;
+  double lat(lat) ; lat:units = "degrees_north" ; lat:standard_name = "latitude" ;
+  double lon(lon) ; lon:units = "degrees_east" ; lon:standard_name = "longitude" ;
+  float u(time, lat, lon) ; u:units = "m s-1" ; u:standard_name = "eastward_sea_water_velocity" ;
+    u:_FillValue = -999.f ;
+  float v(time, lat, lon) ; v:units = "m s-1" ; v:standard_name = "northward_sea_water_velocity" ;
+    v:_FillValue = -999.f ;
+data:
+  time = 0, 24, 48 ;
+  lat = LAT ;
+  lon = LON ;
+  u = UDATA ;
+  v = VDATA ;
+}
+"""
+LAT = "47.0, 47.2, 47.4, 47.6, 47.8, 48.0"
+LON = "-53.0, -52.8, -52.6, -52.4, -52.2, -52.0"
+START, GOAL = "--start=-52.9,47.1", "--goal=-52.1,47.9"
+
+
+def forecast(lat=LAT, lon=LON, u="0.1", replace=()):
+    text = FORECAST.replace("LAT", lat).replace("LON", lon)
+    text = text.replace("UDATA", u if "," in u else ", ".join([u] * 108)).replace("VDATA", ", ".join(["0"] * 108))
+    for a, b in replace:
+        assert a in text, a
+        text = text.replace(a, b)
+    return text
+
+
+def mission(*edits, append=""):
+    """The base mission with lines replaced (key prefix -> new line) and lines appended."""
+    lines = MISSION.splitlines()
+    for new in edits:
+        key = new.split(":")[0] + ":"
+        hit = [i for i, l in enumerate(lines) if l.startswith(key)]
+        if hit:
+            lines[hit[0]] = new
+        else:
+            lines.append(new)
+    return "\n".join(lines) + "\n" + append
+
+
+def nested(depth):
+    return "name: deep\nx: " + "[" * depth + "]" * depth + "\n"
+
+
+# ---------------------------------------------------------------------------------------------------------------
+# The table: (name, files, arguments, exit status, phrase). Files: name -> text (".cdl" files are also turned into
+# ".nc" with ncgen; a value ("truncate", cdl text) writes the classic file cut in half). "{out}" in the arguments
+# is the output directory holding the earlier run; "{dir}" the case's directory.
+CASES = []
+
+
+def case(name, args, status, phrase, files=None):
+    CASES.append((name, files or {}, args, status, phrase))
+
+
+def yaml_case(name, text, phrase, status=2):
+    case(name, ["--mission", "m.yaml", "--out", "{out}"], status, phrase, {"m.yaml": text})
+
+
+def nc_case(name, cdl, phrase, args=(START, GOAL), status=2, extra=()):
+    files = {"f.cdl": cdl}
+    case(name, ["--currents", "f.nc", *args, "--out", "{out}", *extra], status, phrase, files)
+
+
+# --- mission files: structure ----------------------------------------------------------------------------------
+yaml_case("yaml-empty", "", "m.yaml: the mission file is empty")
+yaml_case("yaml-only-comment", "# nothing\n", "empty")
+yaml_case("yaml-syntax", MISSION + "planner: {name: [\n", "m.yaml:9: YAML syntax error")
+yaml_case("yaml-tab-indent", MISSION.replace("current:", "current:\n\t- x"), "m.yaml")
+yaml_case("yaml-deep-nesting", nested(100000), "nest")
+yaml_case("yaml-not-a-map", "- a\n- b\n", "expected a mapping")
+yaml_case("yaml-unknown-top-field", MISSION + "colour: red\n", "m.yaml:8: unknown field 'colour'")
+yaml_case("yaml-duplicate-key", MISSION + "vehicle: {speed: 0.4}\n", "given twice")
+yaml_case("yaml-binary-garbage", "\x00\x01\x02\xff\xfe", "m.yaml")
+case("mission-is-a-directory", ["--mission", "sub", "--out", "{out}"], 2, "is a directory", {"sub/x": "x"})
+case("mission-missing", ["--mission", "nope.yaml", "--out", "{out}"], 2, "cannot read mission file 'nope.yaml'")
+
+# --- mission files: values --------------------------------------------------------------------------------------
+yaml_case("current-type-unknown", mission("current: {type: tidal}"), "current.type")
+yaml_case("current-param-unknown", mission("current: {type: uniform, parameters: {w: 1}}"),
+          "unknown field 'current.parameters.w'")
+yaml_case("current-param-nan", mission("current: {type: uniform, parameters: {u: .nan}}"), "NaN")
+yaml_case("double-gyre-length-0", mission("current: {type: double_gyre, parameters: {length: 0}}"),
+          "current.parameters.length")
+yaml_case("netcdf-file-missing", mission("current: {type: netcdf, file: none.nc}"), "cannot open")
+yaml_case("region-reversed", mission("region: {x_min: 10, x_max: 0, y_min: -4, y_max: 4}"), "region")
+yaml_case("region-inf", mission("region: {x_min: 0, x_max: .inf, y_min: -4, y_max: 4}"), "finite")
+yaml_case("region-mixed", mission("region: {x_min: 0, x_max: 10, lat_min: 1, lat_max: 2}"), "either")
+yaml_case("start-outside-region", mission("start: {x: 11, y: 0}"), "m.yaml:4: field 'start': lies outside")
+yaml_case("start-missing", MISSION.replace("start: {x: 1, y: 0}\n", ""), "'start': missing")
+yaml_case("start-text", mission("start: {x: one, y: 0}"), "start.x")
+yaml_case("speed-zero", mission("vehicle: {speed: 0}"), "vehicle.speed")
+yaml_case("speed-negative", mission("vehicle: {speed: -0.5}"), "vehicle.speed")
+yaml_case("speed-inf", mission("vehicle: {speed: .inf}"), "vehicle.speed")
+yaml_case("depth-negative", mission("vehicle: {speed: 0.5, depth: -3}"), "vehicle.depth")
+yaml_case("units-zero", mission("units: {length_m: 0, time_s: 1}"), "units.length_m")
+yaml_case("projection-pole", mission("projection: {lon0: 0, lat0: 95}"), "projection.lat0")
+yaml_case("epoch-bad", mission("epoch: 2026-13-45T00:00:00Z"), "epoch")
+yaml_case("iso-without-epoch", mission("departure: {time: 2026-03-15T00:00:00Z}"), "epoch")
+yaml_case("departure-huge", mission("departure: {time: 1e17}"), "departure")
+yaml_case("departure-window-spacing-tiny",
+          mission("departure: {window: {begin: 0, end: 20, spacing: 1e-9}}"), "departure.window.spacing")
+yaml_case("departure-window-reversed", mission("departure: {window: {begin: 20, end: 0}}"), "departure.window")
+yaml_case("travel-eps-zero", mission("travel_time: {eps: 0}"), "travel_time.eps")
+yaml_case("travel-hmax-2", mission("travel_time: {h_max: 2}"), "travel_time")
+yaml_case("planner-unknown", mission("planner: {name: dijkstra}"), "unknown planner 'dijkstra'")
+yaml_case("planner-sectors-9", mission("planner: {name: zastartve, sectors: 9}"), "planner.sectors")
+yaml_case("planner-grid-tiny", mission("planner: {name: zastartve, grid_size: 1e-6}"), "planner.grid_size")
+yaml_case("planner-time-limit-huge", mission("planner: {name: zastartve, time_limit: 1e10}"), "planner.time_limit")
+yaml_case("planner-zermelo-steps-huge", mission("planner: {name: zastartve, parameters: {zermelo_steps: 1e12}}"),
+          "planner.parameters.zermelo_steps")
+yaml_case("planner-refiner-evals-huge",
+          mission("planner: {name: zastartve, parameters: {refiner_max_evaluations: 5e9}}"),
+          "planner.parameters.refiner_max_evaluations")
+yaml_case("planner-bool-maybe", mission("planner: {name: zastartve, parameters: {heuristic: maybe}}"),
+          "true or false")
+yaml_case("planner-horizon-negative", mission("planner: {name: zastartve, horizon: -1}"), "planner.horizon")
+yaml_case("outputs-prefix-escapes", mission("outputs: {prefix: ../../x}"), "outputs.prefix")
+yaml_case("outputs-unknown-format", mission("outputs: {files: [pdf]}"), "outputs.files")
+case("outputs-dir-is-file", ["--mission", "m.yaml"], 2, "afile", {"m.yaml": mission("outputs: {directory: afile}")})
+yaml_case("speeds-empty", mission("speeds: []"), "speeds")
+yaml_case("speeds-text", mission("speeds: [0.3, abc]"), "speeds[1]")
+yaml_case("forbidden-bowtie",
+          mission(append="forbidden:\n  obstacles:\n    - {name: bow, points: [[4, -1], [6, 1], [6, -1], [4, 1]]}\n"),
+          "bow")
+yaml_case("forbidden-two-points",
+          mission(append="forbidden:\n  obstacles:\n    - {name: line, points: [[4, -1], [6, 1]]}\n"),
+          "at least 3 points")
+yaml_case("start-in-polygon",
+          mission(append="forbidden:\n  obstacles:\n    - {name: rock, points: [[0.5, -0.5], [1.5, -0.5], [1.5, 0.5], "
+                         "[0.5, 0.5]]}\n"), "rock")
+yaml_case("goal-in-polygon",
+          mission(append="forbidden:\n  obstacles:\n    - {name: reef, points: [[8.5, -0.5], [9.5, -0.5], [9.5, 0.5], "
+                         "[8.5, 0.5]]}\n"), "reef")
+yaml_case("geojson-missing", mission(append="forbidden: {geojson: nope.geojson}\n"), "nope.geojson")
+case("geojson-not-collection", ["--mission", "m.yaml", "--out", "{out}"], 2, "FeatureCollection",
+     {"m.yaml": mission(append="forbidden: {geojson: r.geojson}\n"), "r.geojson": '{"type": "Feature"}'})
+
+# --- NetCDF forecasts -------------------------------------------------------------------------------------------
+nc_case("nc-zero-length-lat", ("nc4", forecast(replace=[("lat = 6 ;", "lat = UNLIMITED ;"),
+                                                        ("lat = " + LAT + " ;", ""),
+                                                        ("u = " + ", ".join(["0.1"] * 108) + " ;", ""),
+                                                        ("v = " + ", ".join(["0"] * 108) + " ;", "")])), "lat")
+nc_case("nc-no-time-records", forecast(replace=[("time = 0, 24, 48 ;", ""),
+                                                ("u = " + ", ".join(["0.1"] * 108) + " ;", ""),
+                                                ("v = " + ", ".join(["0"] * 108) + " ;", "")]), "time")
+nc_case("nc-lon-not-monotonic", forecast(lon="-53.0, -52.8, -52.2, -52.4, -52.6, -52.0"), "lon")
+nc_case("nc-lat-not-monotonic", forecast(lat="47.0, 47.2, 47.4, 47.4, 47.8, 48.0"), "lat")
+nc_case("nc-lat-nan", forecast(lat="47.0, 47.2, NaN, 47.6, 47.8, 48.0"), "lat")
+nc_case("nc-units-unknown", forecast(replace=[('u:units = "m s-1"', 'u:units = "furlongs per fortnight"')]),
+        "furlongs")
+nc_case("nc-time-units-bad", forecast(replace=[('"hours since 2026-03-15 00:00:00"', '"hours since whenever"')]),
+        "time")
+nc_case("nc-time-not-monotonic", forecast(replace=[("time = 0, 24, 48 ;", "time = 0, 48, 24 ;")]), "time")
+nc_case("nc-u-v-shapes", forecast(replace=[("float v(time, lat, lon)", "float v(time, lon)"),
+                                           ("v = " + ", ".join(["0"] * 108) + " ;", "")]), "v")
+nc_case("nc-truncated", ("truncate", forecast()), "truncated")
+nc_case("nc-u-var-missing", forecast(), "speed_u", extra=("--u-var", "speed_u"))
+nc_case("nc-start-on-land", forecast(u=", ".join(["-999"] * 2 + ["0.1"] * 106)), "land",
+        args=("--start=-53.0,47.0", GOAL))
+nc_case("nc-start-outside", forecast(), "outside", args=("--start=-60,47.1", GOAL))
+nc_case("nc-departure-after-forecast", forecast(), "departure", extra=("--departure", "2026-04-01T00:00:00Z"))
+nc_case("nc-departure-garbage", forecast(), "departure", extra=("--departure", "yesterday"))
+nc_case("nc-lat-all-fill", ("nc4", """netcdf huge {
+dimensions: lat = 1000 ; lon = 1000 ; time = 1 ;
+variables:
+  double time(time) ; time:units = "hours since 2026-03-15" ;
+  double lat(lat) ; lat:units = "degrees_north" ;
+  double lon(lon) ; lon:units = "degrees_east" ;
+  float u(time, lat, lon) ; u:units = "m s-1" ; u:standard_name = "eastward_sea_water_velocity" ;
+  float v(time, lat, lon) ; v:units = "m s-1" ; v:standard_name = "northward_sea_water_velocity" ;
+data: time = 0 ;
+}
+"""), "lat")
+# 100000 x 100000 nodes 1e-5 degrees apart: the trip's subset alone would need about 100 GB
+AXIS = 100000
+nc_case("nc-huge-grid", ("nc4", """netcdf huge {
+dimensions: lat = %d ; lon = %d ; time = 1 ;
+variables:
+  double time(time) ; time:units = "hours since 2026-03-15" ;
+  double lat(lat) ; lat:units = "degrees_north" ;
+  double lon(lon) ; lon:units = "degrees_east" ;
+  float u(time, lat, lon) ; u:units = "m s-1" ; u:standard_name = "eastward_sea_water_velocity" ;
+  float v(time, lat, lon) ; v:units = "m s-1" ; v:standard_name = "northward_sea_water_velocity" ;
+data: time = 0 ;
+  lat = %s ;
+  lon = %s ;
+}
+""" % (AXIS, AXIS, ", ".join("%.5f" % (47 + 1e-5 * i) for i in range(AXIS)),
+       ", ".join("%.5f" % (-53 + 1e-5 * i) for i in range(AXIS)))), "memory")
+case("nc-not-netcdf", ["--currents", "f.nc", START, GOAL, "--out", "{out}"], 2, "f.nc", {"f.nc": "hello\n"})
+
+# --- flags ------------------------------------------------------------------------------------------------------
+for name, args, phrase in [
+        ("flag-unknown", ["--colour", "red"], "colour"),
+        ("flag-speed-zero", ["--speed", "0"], "--speed"),
+        ("flag-speed-nan", ["--speed", "nan"], "--speed"),
+        ("flag-speed-text", ["--speed", "fast"], "--speed"),
+        ("flag-start-one-number", ["--start", "1"], "--start"),
+        ("flag-start-three-numbers", ["--start", "1,2,3"], "--start"),
+        ("flag-start-text", ["--start", "a,b"], "--start"),
+        ("flag-start-inf", ["--start", "inf,0"], "--start"),
+        ("flag-start-outside", ["--start", "20,0"], "start"),
+        ("flag-grid-zero", ["--grid-size", "0"], "--grid-size"),
+        ("flag-grid-tiny", ["--grid-size", "1e-4"], "--grid-size"),
+        ("flag-sectors-0", ["--sectors", "0"], "--sectors"),
+        ("flag-time-limit-huge", ["--time-limit", "1e10"], "--time-limit"),
+        ("flag-departure-huge", ["--departure", "1e16"], "departure"),
+        ("flag-departure-text", ["--departure", "noon"], "--departure"),
+        ("flag-planner-unknown", ["--planner", "Dijkstra"], "Dijkstra"),
+        ("flag-mission-and-currents", ["--mission", "m.yaml", "--currents", "f.nc"], "cannot be combined"),
+        ("flag-u-var-without-currents", ["--u-var", "u"], "--currents"),
+        ("flag-speeds-empty", ["--speeds", ""], "--speeds"),
+        ("flag-speeds-negative", ["--speeds", "0.3,-1"], "--speeds"),
+]:
+    case(name, args + ["--out", "{out}"], 2, phrase, {"m.yaml": MISSION})
+case("out-is-a-file", ["--out", "afile"], 2, "afile")
+case("out-unwritable", ["--out", "/proc/glider_out"], 2, "/proc/glider_out")
+
+# --- well-formed problems without a path: exit 1 with the reason ------------------------------------------------
+case("no-path-slow-in-jet", ["--speed", "0.05", "--out", "{out}"], 1, "no path exists")
+
+
+# ---------------------------------------------------------------------------------------------------------------
+def snapshot(root):
+    """Every file below root with its content hash (the output directory must not change)."""
+    out = {}
+    for base, _, names in os.walk(root):
+        for n in names:
+            p = os.path.join(base, n)
+            out[os.path.relpath(p, root)] = hashlib.sha256(open(p, "rb").read()).hexdigest()
+    return out
+
+
+def prepare(workdir, files):
+    for name, text in files.items():
+        path = os.path.join(workdir, name)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        how = text[0] if isinstance(text, tuple) else ""
+        truncate = how == "truncate"
+        if how:
+            text = text[1]
+        if name.endswith(".cdl"):
+            nc = path[:-4] + ".nc"
+            kind = "nc4" if how == "nc4" else "nc3"
+            subprocess.run(["ncgen", "-k", kind, "-o", nc, "-"], input=text.encode(), check=True)
+            if truncate:
+                size = os.path.getsize(nc)
+                with open(nc, "r+b") as f:
+                    f.truncate(size // 2 + 8)
+        else:
+            with open(path, "w", encoding="utf-8", errors="surrogateescape") as f:
+                f.write(text)
+    with open(os.path.join(workdir, "afile"), "w") as f:
+        f.write("a file, not a directory\n")
+
+
+def main():
+    exe = os.path.abspath(sys.argv[1])
+    only = sys.argv[sys.argv.index("-k") + 1] if "-k" in sys.argv else ""
+    verbose = "-v" in sys.argv
+    earlier = tempfile.mkdtemp()
+    try:  # an earlier run's outputs, copied into every case's output directory
+        r = subprocess.run([exe, "--grid-size", "0.8", "--no-refine", "--out", os.path.join(earlier, "out")],
+                           capture_output=True, timeout=120)
+        assert r.returncode == 0, r.stderr.decode()
+        failures, ran = [], 0
+        for name, files, args, status, phrase in CASES:
+            if only not in name:
+                continue
+            ran += 1
+            work = tempfile.mkdtemp()
+            try:
+                prepare(work, files)
+                out = os.path.join(work, "out")
+                shutil.copytree(os.path.join(earlier, "out"), out)
+                before = snapshot(out)
+                argv = [exe] + [a.replace("{out}", out).replace("{dir}", work) for a in args]
+                try:
+                    r = subprocess.run(argv, cwd=work, capture_output=True, timeout=120)
+                    text = (r.stdout + r.stderr).decode(errors="replace")
+                    rc = r.returncode
+                except subprocess.TimeoutExpired:
+                    rc, text = "timeout", ""
+                problems = []
+                if rc != status:
+                    problems.append("exit %s, expected %d" % (rc, status))
+                if phrase.lower() not in text.lower():
+                    problems.append("message lacks '%s'" % phrase)
+                if "nan" in text.lower().replace("nanos", "").split("error")[-1] and "NaN" not in phrase:
+                    if any(w in ("nan", "-nan") for w in text.lower().replace(",", " ").split()):
+                        problems.append("NaN printed")
+                if status == 2 and snapshot(out) != before:
+                    problems.append("output directory changed")
+                if len(text.strip().splitlines()) > 3 and status == 2:
+                    problems.append("message longer than 3 lines")
+                if problems or verbose:
+                    first = text.strip().splitlines()[-1] if text.strip() else ""
+                    print("%-32s %s\n    %s" % (name, "; ".join(problems) or "ok", first[:300]))
+                if problems:
+                    failures.append(name)
+            finally:
+                shutil.rmtree(work, ignore_errors=True)
+        print("%d of %d bad-input cases pass" % (ran - len(failures), ran))
+        if failures:
+            print("failing: " + ", ".join(failures))
+            return 1
+        return 0
+    finally:
+        shutil.rmtree(earlier, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
