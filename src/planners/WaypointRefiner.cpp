@@ -19,12 +19,13 @@ struct Search
     double t0;
     unsigned budget;
     double bumpFraction{0.0};
+    const std::function<bool()> *terminate{nullptr};
     unsigned evaluations{0};
     unsigned accepted{0};
 
     bool exhausted() const
     {
-        return evaluations >= budget;
+        return evaluations >= budget || (terminate && *terminate && (*terminate)());
     }
 
     double cost(const std::vector<TimedWaypoint> &wp)
@@ -199,7 +200,7 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input
     RefinementResult res;
     res.waypointsBefore = input.size();
     std::vector<TimedWaypoint> wp = input;
-    Search s{ctx, t0, params_.maxEvaluations, params_.bumpFraction};
+    Search s{ctx, t0, params_.maxEvaluations, params_.bumpFraction, &params_.terminate};
     double best = s.cost(wp);
     res.arrivalBefore = best;
     if (wp.size() >= 2 && std::isfinite(best))

@@ -286,6 +286,7 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
             {
                 RefinerParams rp;
                 rp.maxEvaluations = refinerMaxEvaluations_;
+                rp.terminate = [&ptc] { return ptc(); };  // a time limit bounds refinement too
                 solution_ = WaypointRefiner(ctx_, rp).refine(solution_).waypoints;
             }
         }

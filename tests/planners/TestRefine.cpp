@@ -80,6 +80,23 @@ TEST(WaypointRefiner, NeverLaterThanSmoothedJetPath)
     EXPECT_EQ(retimeWaypoints(*ctx, r.waypoints, 1.0).back().t, r.arrivalAfter);
 }
 
+TEST(WaypointRefiner, StopsWhenTheTerminationConditionSaysSo)
+{
+    auto jet = std::make_shared<MeanderingJet>();
+    auto ctx = makeContext(jet, 0.5, box(0, 10, -4, 4));
+    const TveResult lat = TveSearch(ctx, 0.5, 2).run(1, 3, 0.0, 9, -2.5, TveOptions{});
+    ASSERT_EQ(lat.outcome, TveOutcome::Exact);
+    RefinerParams p;
+    p.maxEvaluations = 100000000;  // the budget alone would run for minutes
+    unsigned asked = 0;
+    p.terminate = [&asked] { return ++asked > 25; };
+    const RefinementResult r = WaypointRefiner(ctx, p).refine(lat.waypoints);
+    EXPECT_LE(r.evaluations, 26u);  // at most one evaluation per question before the answer turned to true
+    EXPECT_GT(asked, 25u);
+    EXPECT_LE(r.arrivalAfter, r.arrivalBefore);  // the best path so far, never a worse one
+    EXPECT_EQ(retimeWaypoints(*ctx, r.waypoints, 0.0).back().t, r.arrivalAfter);
+}
+
 TEST(WaypointRefiner, InfeasibleInputAndBadParameters)
 {
     auto ctx = makeContext(std::make_shared<UniformCurrent>(1.0, 0.0), 0.5, box(-10, 10, -10, 10));

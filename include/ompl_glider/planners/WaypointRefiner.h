@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct RefinerParams
                                      ///< fraction of the waypoint count (0: single-waypoint moves only)
     double minRelativeGain{1e-3};    ///< an insertion round is kept only if it shortens the travel time by this
                                      ///< fraction (otherwise its extra waypoints are not worth it)
+    /// Asked before every path re-simulation: true ends the refinement with the best path found so far (a
+    /// planner's termination condition, so that a time limit also bounds refinement). Empty: only the budget.
+    std::function<bool()> terminate;
 };
 
 /// @brief What refinement did.
