@@ -5,27 +5,15 @@
 #include <cstdio>
 #include <sstream>
 
+#include "TextUtil.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
 {
 namespace
 {
-std::string lower(std::string s)
-{
-    for (char &c : s)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-std::string trim(const std::string &s)
-{
-    std::size_t a = 0, b = s.size();
-    while (a < b && std::isspace(static_cast<unsigned char>(s[a])))
-        ++a;
-    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1])))
-        --b;
-    return s.substr(a, b - a);
-}
+using text::lower;
+using text::trim;
 
 bool gregorianLeap(long y)
 {

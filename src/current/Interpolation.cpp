@@ -4,18 +4,14 @@
 #include <cctype>
 #include <cmath>
 
+#include "TextUtil.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
 {
 namespace
 {
-std::string lower(std::string s)
-{
-    for (char &c : s)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
+using text::lower;
 
 /// Lagrange basis weights (and derivative weights when dw is not null) on nodes x[0..n-1] at q.
 void lagrange(const double *x, int n, double q, double *w, double *dw)

@@ -7,23 +7,6 @@ namespace ompl_glider
 {
 namespace netcdf_detail
 {
-std::string lower(std::string s)
-{
-    for (char &c : s)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
-std::string trim(const std::string &s)
-{
-    std::size_t a = 0, b = s.size();
-    while (a < b && (std::isspace(static_cast<unsigned char>(s[a])) || s[a] == '\0'))
-        ++a;
-    while (b > a && (std::isspace(static_cast<unsigned char>(s[b - 1])) || s[b - 1] == '\0'))
-        --b;
-    return s.substr(a, b - a);
-}
-
 bool inList(const std::string &s, std::initializer_list<const char *> names)
 {
     for (const char *x : names)

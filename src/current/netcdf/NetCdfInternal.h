@@ -32,6 +32,7 @@
 #include <utility>
 #include <vector>
 
+#include "../TextUtil.h"
 #include "ompl_glider/current/CfTime.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/LocalProjection.h"
@@ -47,10 +48,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // ---- strings (NcFile.cpp) ----
 
-/// ASCII lower case.
-std::string lower(std::string s);
-/// Without leading/trailing white space and NUL characters.
-std::string trim(const std::string &s);
+using text::lower;  // TextUtil.h
+using text::trim;
 /// True when s equals one of the names.
 bool inList(const std::string &s, std::initializer_list<const char *> names);
 /// "a, b, c".

@@ -1,0 +1,27 @@
+#pragma once
+// Internal to the library: the small text helpers of the CF-attribute and calendar parsers. Not installed.
+#include <cctype>
+#include <string>
+
+namespace ompl_glider::text
+{
+/// ASCII lower case.
+inline std::string lower(std::string s)
+{
+    for (char &c : s)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+/// Without leading and trailing white space and NUL characters (NetCDF text attributes are often NUL-padded).
+inline std::string trim(const std::string &s)
+{
+    auto blank = [](char c) { return std::isspace(static_cast<unsigned char>(c)) || c == '\0'; };
+    std::size_t a = 0, b = s.size();
+    while (a < b && blank(s[a]))
+        ++a;
+    while (b > a && blank(s[b - 1]))
+        --b;
+    return s.substr(a, b - a);
+}
+}  // namespace ompl_glider::text
