@@ -270,6 +270,39 @@ TEST(Polygon, BadInputThrows)
     }
 }
 
+std::string polygonError(std::vector<Point2> outer, std::vector<std::vector<Point2>> holes = {})
+{
+    try
+    {
+        Polygon(std::move(outer), std::move(holes), "P");
+    }
+    catch (const Error &e)
+    {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(Polygon, RingsMustBeSimpleAndApart)
+{
+    // a bow tie: edges 0 and 2 cross at (5, 0)
+    std::string msg = polygonError({{4, -1}, {6, 1}, {6, -1}, {4, 1}});
+    EXPECT_NE(msg.find("outer ring edge 0 (4, -1)-(6, 1) meets outer ring edge 2"), std::string::npos) << msg;
+    // a figure eight touching itself at a vertex, and a spike doubling back along its own edge
+    EXPECT_NE(polygonError({{0, 0}, {2, 2}, {0, 2}, {2, 0}, {4, 0}, {4, 4}}).find("meets"), std::string::npos);
+    EXPECT_NE(polygonError({{0, 0}, {4, 0}, {4, 4}, {4, 2}, {0, 4}}).find("meets"), std::string::npos);
+    // a hole crossing the outer ring, and a hole touching it at a vertex
+    msg = polygonError({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{{3, 1}, {5, 1}, {5, 2}, {3, 2}}});
+    EXPECT_NE(msg.find("hole 0 edge"), std::string::npos) << msg;
+    EXPECT_NE(polygonError({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{{4, 2}, {3, 3}, {3, 1}}}).find("meets"),
+              std::string::npos);
+    // simple rings pass: a concave ring, a hole strictly inside, collinear consecutive vertices, a 10^4-vertex
+    // coastline
+    EXPECT_EQ(polygonError({{0, 0}, {4, 0}, {4, 4}, {2, 1}, {0, 4}}), "");
+    EXPECT_EQ(polygonError({{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}, {{{1, 1}, {3, 1}, {3, 3}, {1, 3}}}), "");
+    EXPECT_EQ(polygonError(makeStar(10000, 7).polygon().outer()), "");
+}
+
 TEST(StaticRegion, IslandBlocksLegsAndNamesItself)
 {
     ForbiddenRegions env;
