@@ -20,6 +20,9 @@ namespace ompl_glider
 {
 namespace
 {
+/// The status of a well-formed problem whose search ended without a path for want of one, not of time.
+const char *const kNoPathStatus = "No path";
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
 /// Time limit of planners that use all the time they get (sampling planners) when the mission gives none.
 constexpr double kDefaultSamplingTimeLimit = 10.0;
@@ -246,7 +249,10 @@ PlannedPath planRoute(const MissionProblem &problem, double departure, const Pla
         if (status == ompl::base::PlannerStatus::INVALID_START || status == ompl::base::PlannerStatus::INVALID_GOAL)
             r.badInput = status == ompl::base::PlannerStatus::INVALID_START ? "start" : "goal";
         if (r.reason.rfind("no path exists", 0) == 0)
+        {
+            r.status = kNoPathStatus;  // OMPL's ABORT or TIMEOUT would send the user after a longer time limit
             r.reason += horizonNote(problem, gp);
+        }
         return r;
     }
     ompl::geometric::PathGeometric path = ss->getSolutionPath();
@@ -422,7 +428,7 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
         result.plan.departure = m.departure.begin;
         result.plan.speed = m.vehicle.speed;
         result.plan.planner = plannerEntry(m.planner.name).name;
-        result.plan.status = "Timeout";
+        result.plan.status = kNoPathStatus;
         result.plan.reason = "no departure in the window has a path within the forecast";
         result.wallSeconds = secondsSince(start);
         return result;

@@ -77,7 +77,7 @@ void printReport(std::ostream &out, const MissionResult &r)
     }
     const std::string iso = r.waypoints.empty() ? "" : r.waypoints.front().iso;
     out << "Departure:          " << num(p.departure) << (iso.empty() ? "" : " (" + iso + ")") << "\n";
-    out << "Status:             " << p.status << (p.solved ? "" : " - no path: " + p.reason) << "\n";
+    out << "Status:             " << p.status << (p.solved ? "" : "\nReason:             " + p.reason) << "\n";
     if (p.solved)
     {
         out << format("Travel time:        %.4f (raw %.4f, smoothed %.4f)\n", p.travelTime, p.rawTravelTime,

@@ -311,7 +311,9 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
             OMPL_INFORM("%s: the lattice holds no feasible path to the goal (%llu vertices expanded, %llu CFC)",
                         getName().c_str(), static_cast<unsigned long long>(r.expansions),
                         static_cast<unsigned long long>(r.costFunctionCalls));
-            return ompl::base::PlannerStatus::TIMEOUT;
+            // not a timeout (more time would not help): OMPL 1.5 has no "infeasible" status, ABORT is "no solution
+            // for another reason"
+            return ompl::base::PlannerStatus::ABORT;
         default:
             break;
     }

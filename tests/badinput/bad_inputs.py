@@ -251,7 +251,8 @@ case("out-is-a-file", ["--out", "afile"], 2, "afile")
 case("out-unwritable", ["--out", "/proc/glider_out"], 2, "/proc/glider_out")
 
 # --- well-formed problems without a path: exit 1 with the reason ------------------------------------------------
-case("no-path-slow-in-jet", ["--speed", "0.05", "--out", "{out}"], 1, "no path exists")
+case("no-path-slow-in-jet", ["--speed", "0.05", "--out", "{out}"], 1, "Status:             No path")
+case("no-path-horizon-named", ["--speed", "0.05", "--out", "{out}"], 1, "within the planning horizon")
 
 
 # ---------------------------------------------------------------------------------------------------------------
