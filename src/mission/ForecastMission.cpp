@@ -32,6 +32,33 @@ std::string pointText(double a, double b)
     std::snprintf(buf, sizeof buf, "%.6g,%.6g", a, b);
     return buf;
 }
+/// The reader's message in the command line's words: its option fields become the flags, and a departure or
+/// region fault is prefixed with the flags that gave it.
+std::string flagMessage(std::string what, const ForecastInput &q)
+{
+    // Name the command-line flags instead of the library's option fields.
+    for (const auto &[field, flag] : std::vector<std::pair<std::string, std::string>>{
+             {"NetCdfCurrentOptions::timeName/depthName/lonName/latName",
+              "--time-var/--depth-var/--lon-var/--lat-var"},
+             {"NetCdfCurrentOptions::lonName/latName", "--lon-var/--lat-var"},
+             {"NetCdfCurrentOptions::uName", "--u-var"},
+             {"NetCdfCurrentOptions::vName", "--v-var"},
+             {"NetCdfCurrentOptions::lonName", "--lon-var"},
+             {"NetCdfCurrentOptions::latName", "--lat-var"},
+             {"NetCdfCurrentOptions::depthName", "--depth-var"},
+             {"NetCdfCurrentOptions::timeName", "--time-var"},
+             {"NetCdfCurrentOptions::departure", "--departure"},
+             {"NetCdfCurrentOptions::maxDepth", "--depth"}})
+        for (std::size_t at = what.find(field); at != std::string::npos; at = what.find(field, at))
+            what.replace(at, field.size(), flag);
+    const bool departure = what.find("depart") != std::string::npos;
+    if (!q.departure.empty() && departure && what.find("--departure") == std::string::npos)
+        what = "--departure " + q.departure + ": " + what;
+    else if (what.find("region ") != std::string::npos && what.find("] is outside '") != std::string::npos)
+        what = "--start " + pointText(q.start.x, q.start.y) + " / --goal " + pointText(q.goal.x, q.goal.y) +
+               ": not on the grid: " + what;
+    return what;
+}
 }  // namespace
 
 MissionSpec forecastMission(const ForecastInput &q)
@@ -77,29 +104,7 @@ MissionSpec forecastMission(const ForecastInput &q)
     }
     catch (const Error &e)
     {
-        // Name the command-line flags instead of the library's option fields.
-        std::string what = e.what();
-        for (const auto &[field, flag] : std::vector<std::pair<std::string, std::string>>{
-                 {"NetCdfCurrentOptions::timeName/depthName/lonName/latName",
-                  "--time-var/--depth-var/--lon-var/--lat-var"},
-                 {"NetCdfCurrentOptions::lonName/latName", "--lon-var/--lat-var"},
-                 {"NetCdfCurrentOptions::uName", "--u-var"},
-                 {"NetCdfCurrentOptions::vName", "--v-var"},
-                 {"NetCdfCurrentOptions::lonName", "--lon-var"},
-                 {"NetCdfCurrentOptions::latName", "--lat-var"},
-                 {"NetCdfCurrentOptions::depthName", "--depth-var"},
-                 {"NetCdfCurrentOptions::timeName", "--time-var"},
-                 {"NetCdfCurrentOptions::departure", "--departure"},
-                 {"NetCdfCurrentOptions::maxDepth", "--depth"}})
-            for (std::size_t at = what.find(field); at != std::string::npos; at = what.find(field, at))
-                what.replace(at, field.size(), flag);
-        const bool departure = what.find("depart") != std::string::npos;
-        if (!q.departure.empty() && departure && what.find("--departure") == std::string::npos)
-            what = "--departure " + q.departure + ": " + what;
-        else if (what.find("region ") != std::string::npos && what.find("] is outside '") != std::string::npos)
-            what = "--start " + pointText(q.start.x, q.start.y) + " / --goal " + pointText(q.goal.x, q.goal.y) +
-                   ": not on the grid: " + what;
-        throw Error(what);
+        throw Error(flagMessage(e.what(), q));
     }
     const GriddedCurrentField &g = *nc.field;
     // (Above the first layer is the surface layer's value, as forecasts put their first layer just below it.)
