@@ -82,8 +82,8 @@ def nested(depth):
 CASES = []
 
 
-def case(name, args, status, phrase, files=None):
-    CASES.append((name, files or {}, args, status, phrase))
+def case(name, args, status, phrase, files=None, env=None):
+    CASES.append((name, files or {}, args, status, phrase, env or {}))
 
 
 def yaml_case(name, text, phrase, status=2):
@@ -221,6 +221,20 @@ data: time = 0 ;
 }
 """ % (AXIS, AXIS, ", ".join("%.5f" % (47 + 1e-5 * i) for i in range(AXIS)),
        ", ".join("%.5f" % (-53 + 1e-5 * i) for i in range(AXIS)))), "memory")
+CARTESIAN = """netcdf cart {
+dimensions: time = UNLIMITED ; y = 4 ; x = 5 ;
+variables:
+  double time(time) ; time:units = "seconds" ;
+  double y(y) ; y:units = "m" ; double x(x) ; x:units = "m" ;
+  float u(time, y, x) ; u:units = "m s-1" ; float v(time, y, x) ; v:units = "m s-1" ;
+data: y = 0, 10000, 20000, 30000 ; x = 0, 10000, 20000, 30000, 40000 ;
+}
+"""
+nc_case("nc-cartesian-no-time-records", CARTESIAN, "time", args=("--start", "5000,5000", "--goal", "35000,25000"))
+case("mission-netcdf-departure-after-end", ["--mission", "m.yaml", "--out", "{out}"], 2, "departure",
+     {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: f.nc}\nstart: {lon: -52.9, lat: 47.1}\n"
+                                     "goal: {lon: -52.1, lat: 47.9}\nvehicle: {speed: 0.3}\n"
+                                     "departure: {time: 2026-04-01T00:00:00Z}\n"})
 case("nc-not-netcdf", ["--currents", "f.nc", START, GOAL, "--out", "{out}"], 2, "f.nc", {"f.nc": "hello\n"})
 
 # --- flags ------------------------------------------------------------------------------------------------------
@@ -247,6 +261,9 @@ for name, args, phrase in [
         ("flag-speeds-negative", ["--speeds", "0.3,-1"], "--speeds"),
 ]:
     case(name, args + ["--out", "{out}"], 2, phrase, {"m.yaml": MISSION})
+case("flag-grid-fine-memory-limit", ["--grid-size", "1e-3", "--out", "{out}"], 2, "--grid-size: a lattice spacing",
+     env={"OMPL_GLIDER_MEMORY_LIMIT": "500M"})
+case("memory-limit-env-bad", ["--out", "{out}"], 2, "OMPL_GLIDER_MEMORY_LIMIT", env={"OMPL_GLIDER_MEMORY_LIMIT": "lots"})
 case("out-is-a-file", ["--out", "afile"], 2, "afile")
 case("out-unwritable", ["--out", "/proc/glider_out"], 2, "/proc/glider_out")
 
@@ -299,7 +316,7 @@ def main():
                            capture_output=True, timeout=120)
         assert r.returncode == 0, r.stderr.decode()
         failures, ran = [], 0
-        for name, files, args, status, phrase in CASES:
+        for name, files, args, status, phrase, env in CASES:
             if only not in name:
                 continue
             ran += 1
@@ -311,7 +328,8 @@ def main():
                 before = snapshot(out)
                 argv = [exe] + [a.replace("{out}", out).replace("{dir}", work) for a in args]
                 try:
-                    r = subprocess.run(argv, cwd=work, capture_output=True, timeout=120)
+                    r = subprocess.run(argv, cwd=work, capture_output=True, timeout=120,
+                                       env=dict(os.environ, **env))
                     text = (r.stdout + r.stderr).decode(errors="replace")
                     rc = r.returncode
                 except subprocess.TimeoutExpired:
