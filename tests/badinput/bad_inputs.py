@@ -6,6 +6,7 @@ asserts the exit status (2: bad input, 1: a well-formed problem without a path),
 (case-insensitive), that no signal ended the process, that no NaN was printed, and that the output directory is
 unchanged, byte for byte. Usage: bad_inputs.py GLIDER_PLAN [-k SUBSTRING] [-v]
 """
+import base64
 import hashlib
 import os
 import shutil
@@ -235,6 +236,26 @@ case("mission-netcdf-departure-after-end", ["--mission", "m.yaml", "--out", "{ou
      {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: f.nc}\nstart: {lon: -52.9, lat: 47.1}\n"
                                      "goal: {lon: -52.1, lat: 47.9}\nvehicle: {speed: 0.3}\n"
                                      "departure: {time: 2026-04-01T00:00:00Z}\n"})
+# A corrupt classic header found by fuzz_netcdf: an attribute declaring more values than the file holds made
+# NetCDF-C allocate gigabytes inside nc_open; the header is now checked before NetCDF-C opens the file.
+CORRUPT_HEADER = base64.b64decode(
+    "Q0RGAQAAAAIAAAAKAAAAAwAAAAR0aW1lAAAAAAAAAANsYXQAAAAABAAAAANsb24AAAAABAAAAAAAAAAAAAAACwAAAAUAAAAEdGlt"
+    "ZQAAAAEAAAAAAAAADAAAAAIAAAAFdW5pdHMAAAAAAAACAAAAH2hvdXJzIHNpbmNlIDIwMjYtMDMtMTUgMDA6MDA6MDAAAAAADXN0"
+    "YW5kYXJkX25hbWUAAAAAAAACAAAABHRpbWUAAAAGAAAACAAAAwwAAAADbGF0AAAAAAEAAAABAAAADAAAAAIAAAAFdW5pdHMAAAAA"
+    "AAACAAAADWRlZ3JlZXNfbm9ydGgAAAAAAAANc3RhbmRhcmRfbmFtZQAAAAAAAAIAAAAIbGF0aXR1ZGUAAAAGAAAAIAAAAswAAAAD"
+    "bG9uAAAAAAEAAAACAAAADAAAANcAAAAFdW5pdHMAAAAAAAACAAAADGRlZ3JlZXNfZWFzdAAAAA1zdGFuZGFyZF9uYW1lAAAAAAAA"
+    "AgAAAAlsb25naXR1ZGUAAAAAAAAGAAAAIAAAAuwAAAABdQAAAAAAAAMAAAAAAAAAAQAAAAIAAAAMAAAAAwAAAAV1bml0cwAAAAAA"
+    "AAIAAAAFbSBzLTEAAAAAAAANc3RhbmRhcmRfbmFtZQAAAAAAAAIAAAAbZWFzdHdhcmRfc2VhX3dhdGVyX3ZlbG9jaXR5AAAAAApf"
+    "RmlsbFZhbHVlAAAAAAAFAAAAAcR5wAAAAAAFAAAAQAAAAxQAAAABdgAAAAAAAAMAAAAAAAAAAQAAAAIAAAAMAAAAAwAAAAV1bml0"
+    "cwAAAAAAAAIAAAAFbSBzLTEAAAAAAAANc3RhbmRhcmRfbmFtZQAAAAAAAAIAAAAcbm9ydGh3YXJkX3NlYV93YXRlcl92ZWxvY2l0"
+    "eQAAAApfRmlsbFZhbHVlAAAAAAAFAAAAAcR5wAAAAAAFAAAAQAAAA1RAR4AAAAAAAEBHwAAAAAAAQEgAAAAAAABASEAAAAAAAMBK"
+    "gAAAAAAAwEpAAAAAAADASgAAAAAAAMBJwAAAAAAAAAAAAAAAAADEecAAPczMzT3MzM09zMzNPczMzT5MzM0+TMzNPczMzT3MzM0+"
+    "TMzNPkzMzT3MzM09zMzNPczMzT3MzM09zMzNxHnAAAAAAAAAAAAAAAAAAAAAAAA9TMzNPUzMzQAAAAAAAAAAPUzMzT1MzM0AAAAA"
+    "AAAAAAAAAAAAAAAAAAAAAEA4AAAAAAAAxHnAAD3MzM09zMzNPczMzT3MzM0+mZmaPpmZmj3MzM09zMy6PpmZmj6ZmZo9zMzNPczM"
+    "zT3MzM09zMzNPczMzcR5wAAAAAAAAAAAAAAAAAAAAAAAvUzMzb1MzM0AAAAAAAAAAL1MzM29TMzNAAAAAAAAAAAAAAAAAAAAAAAA"
+    "AAA=")
+case("nc-corrupt-header-oom", ["--currents", "f.nc", START, GOAL, "--out", "{out}"], 2, "truncated or corrupt",
+     {"f.nc": ("bytes", CORRUPT_HEADER)})
 case("nc-not-netcdf", ["--currents", "f.nc", START, GOAL, "--out", "{out}"], 2, "f.nc", {"f.nc": "hello\n"})
 
 # --- flags ------------------------------------------------------------------------------------------------------
@@ -299,6 +320,9 @@ def prepare(workdir, files):
                 size = os.path.getsize(nc)
                 with open(nc, "r+b") as f:
                     f.truncate(size // 2 + 8)
+        elif how == "bytes":
+            with open(path, "wb") as f:
+                f.write(text)
         else:
             with open(path, "w", encoding="utf-8", errors="surrogateescape") as f:
                 f.write(text)

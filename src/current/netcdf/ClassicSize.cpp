@@ -267,7 +267,8 @@ std::optional<std::string> classicTruncation(const std::string &path)
     if (e.version == 0)
         return std::nullopt;
     if (e.headerCut)
-        return "is truncated: it ends inside its header, after " + s + " bytes";
+        return "is truncated or corrupt: it ends inside its header, after " + s +
+               " bytes (or its header declares more values than the file holds)";
     const std::uint64_t end = e.dataEnd();
     if (end <= e.fileBytes)
         return std::nullopt;

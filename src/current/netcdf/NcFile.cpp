@@ -25,23 +25,13 @@ std::string joinNames(const std::vector<std::string> &names)
 
 NcFile::NcFile(const std::string &path) : path_(path)
 {
+    // A classic file is checked against its header before NetCDF-C opens it: NetCDF-C reads a cut file as if it
+    // were complete, and allocates whatever a corrupt header declares (an attribute of 2^31 values) before reading.
+    if (auto cut = classicTruncation(path))
+        throw Error("NetCDF file '" + path + "' " + *cut);
     const int st = nc_open(path.c_str(), NC_NOWRITE, &id_);
     if (st != NC_NOERR)
-    {
-        // a classic header cut short may fail to open
-        if (auto cut = classicTruncation(path))
-            throw Error("NetCDF file '" + path + "' " + *cut);
         throw Error("NetCDF file '" + path + "': cannot open: " + nc_strerror(st));
-    }
-    int format = 0;
-    if (nc_inq_format(id_, &format) != NC_NOERR ||
-        (format != NC_FORMAT_CLASSIC && format != NC_FORMAT_64BIT_OFFSET && format != NC_FORMAT_CDF5))
-        return;
-    if (auto cut = classicTruncation(path))
-    {
-        nc_close(id_);
-        throw Error("NetCDF file '" + path + "' " + *cut);
-    }
 }
 
 NcFile::~NcFile()
