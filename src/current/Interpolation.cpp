@@ -167,9 +167,8 @@ std::size_t Axis::interval(double q) const
         const double f = (q - c_.front()) * invH_;
         if (!(f > 0.0))
             return 0;
-        std::size_t k = static_cast<std::size_t>(f);
-        if (k > n - 2)
-            k = n - 2;
+        // clamped before the conversion: f is infinite for a query far out or a spacing too small to invert
+        std::size_t k = f < static_cast<double>(n - 2) ? static_cast<std::size_t>(f) : n - 2;
         // guard against rounding at the nodes
         if (k > 0 && q < c_[k])
             --k;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "ompl_glider/Exception.h"
@@ -47,6 +48,22 @@ TEST(Axis, LocatesOnUniformAndNonUniformAxes)
     }
     EXPECT_THROW(Axis({0.0, 1.0, 1.0}), Error);
     EXPECT_THROW(Axis(std::vector<double>{}), Error);
+}
+
+// Found by fuzz_netcdf (a time axis 0, 4.4e-318 hours): a spacing too small to invert, or a query far beyond the
+// axis, made the cell index of a uniform axis infinite before its conversion to an integer (undefined behaviour).
+TEST(Axis, LocatesFarQueriesAndTinySpacingsOnUniformAxes)
+{
+    const Axis u({0.0, 0.5, 1.0, 1.5, 2.0});
+    EXPECT_EQ(u.interval(1e300), 3u);
+    EXPECT_EQ(u.interval(std::numeric_limits<double>::infinity()), 3u);
+    EXPECT_EQ(u.interval(-std::numeric_limits<double>::infinity()), 0u);
+    EXPECT_EQ(u.interval(std::nan("")), 0u);
+    const Axis tiny({0.0, 1.5e-314, 3e-314});  // subnormal spacing: 1 / spacing overflows
+    EXPECT_TRUE(tiny.uniform());
+    EXPECT_EQ(tiny.interval(3e-314), 1u);
+    EXPECT_EQ(tiny.interval(1.0), 1u);
+    EXPECT_EQ(tiny.interval(0.0), 0u);
 }
 
 TEST(Interpolation1D, NearestPicksTheClosestNode)
