@@ -17,6 +17,7 @@ PACKAGES=(
   libcairo2-dev
   libcli11-dev nlohmann-json3-dev
   python3 python3-matplotlib
+  clang-14 libfuzzer-14-dev
 )
 
 missing=()

@@ -1,0 +1,260 @@
+// glider_plan's command line: flags, their checks, and the MissionSpec of the built-in and --currents modes.
+#include "Flags.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ompl_glider/mission/ForecastMission.h"
+#include "ompl_glider/planners/PlannerRegistry.h"
+
+namespace glider_plan
+{
+using namespace ompl_glider;
+
+namespace
+{
+double number(const std::string &flag, const std::string &text)
+{
+    std::size_t used = 0;
+    double v = 0.0;
+    try
+    {
+        v = std::stod(text, &used);
+    }
+    catch (const std::exception &)
+    {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || !std::isfinite(v))
+        throw UsageError{flag + " expects a finite number, got '" + text + "'"};
+    return v;
+}
+
+Point2 pair(const std::string &flag, const std::string &text)
+{
+    const std::size_t comma = text.find(',');
+    if (comma == std::string::npos)
+        throw UsageError{flag + " expects two numbers separated by a comma (x,y or lon,lat), got '" + text + "'"};
+    return {number(flag, text.substr(0, comma)), number(flag, text.substr(comma + 1))};
+}
+
+/// A finite number > 0 (CLI11's PositiveNumber lets "nan" and "inf" through).
+const CLI::Validator kPositiveFinite(
+    [](std::string &text) {
+        std::size_t used = 0;
+        double v = 0.0;
+        try
+        {
+            v = std::stod(text, &used);
+        }
+        catch (const std::exception &)
+        {
+            used = 0;
+        }
+        return used == text.size() && used > 0 && std::isfinite(v) && v > 0.0
+                   ? std::string()
+                   : "expected a finite number > 0, got '" + text + "'";
+    },
+    "POSITIVE");
+
+const std::vector<std::string> kSchemes2D = {"nearest", "bilinear", "bicubic"};
+const std::vector<std::string> kSchemes1D = {"nearest", "linear", "cubic", "akima"};
+
+/// The settings common to the built-in and forecast modes.
+void applySettings(const Flags &f, MissionSpec &m)
+{
+    // checks after loading name the flag that gave the value (MissionSpec::place)
+    const std::pair<bool, const char *> given[] = {{!f.planner.empty(), "planner.name=--planner"},
+                                                   {f.gridSize.has_value(), "planner.grid_size=--grid-size"},
+                                                   {f.sectors.has_value(), "planner.sectors=--sectors"},
+                                                   {f.timeLimit.has_value(), "planner.time_limit=--time-limit"},
+                                                   {f.speed.has_value(), "vehicle.speed=--speed"},
+                                                   {!f.departure.empty(), "departure.time=--departure"},
+                                                   {!f.start.empty(), "start=--start"},
+                                                   {!f.goal.empty(), "goal=--goal"}};
+    for (const auto &[set, pair] : given)
+        if (set)
+        {
+            const std::string text = pair;
+            const std::size_t eq = text.find('=');
+            m.marks[text.substr(0, eq)] = SourceMark{text.substr(eq + 1), 0};
+        }
+    if (!f.planner.empty())
+        m.planner.name = findPlanner(f.planner)->name;
+    if (f.gridSize)
+        m.planner.gridSize = *f.gridSize;
+    if (f.sectors)
+        m.planner.sectors = *f.sectors;
+    if (f.timeLimit)
+        m.planner.timeLimit = *f.timeLimit;
+    m.planner.smoothing = !f.noSmooth;
+    m.planner.refinement = !f.noRefine;
+    if (f.speed)
+        m.vehicle.speed = m.travel.speed = *f.speed;
+    m.outputs.directory = f.out;
+}
+}  // namespace
+
+std::vector<double> speedList(const std::string &text)
+{
+    std::vector<double> v;
+    std::size_t at = 0;
+    while (at <= text.size())
+    {
+        const std::size_t comma = std::min(text.find(',', at), text.size());
+        const double x = number("--speeds", text.substr(at, comma - at));
+        if (!(x > 0.0))
+            throw UsageError{"--speeds: every speed must be > 0, got " + text.substr(at, comma - at)};
+        v.push_back(x);
+        at = comma + 1;
+    }
+    return v;
+}
+
+void defineFlags(CLI::App &app, Flags &f)
+{
+    auto *built = "Route and planner";
+    app.add_option("--start", f.start, "start x,y (built-in default 1,-3); lon,lat with --currents (write "
+                                       "--start=-52.7,47.9 for a negative first value)")
+        ->group(built);
+    app.add_option("--goal", f.goal, "goal x,y (built-in default 8,3); lon,lat with --currents")->group(built);
+    app.add_option("--departure", f.departure,
+                   "departure: a time (built-in, default 0); with --currents an ISO 8601 date "
+                   "(2026-03-15T06:00:00Z) or seconds after the first forecast time (default: the first)")
+        ->group(built);
+    app.add_option("--speed", f.speed, "speed through water (built-in 0.5; --currents m/s, default 0.3)")
+        ->check(kPositiveFinite)
+        ->group(built);
+    app.add_option("--speeds", f.speeds, "speed sweep, e.g. 0.25,0.30,0.35: travel time and path length per speed")
+        ->group(built);
+    app.add_option("--planner", f.planner, "planner: " + plannerNameList(" | ") + " (default ZA*TVE)")
+        ->check([](const std::string &name) {
+            return findPlanner(name) ? std::string() : "unknown planner '" + name + "' (" + plannerNameList() + ")";
+        })
+        ->group(built);
+    app.add_option("--grid-size", f.gridSize,
+                   "lattice spacing (built-in 0.4; --currents metres, default half the smallest grid cell, within "
+                   "1/200..1/25 of the start-goal distance)")
+        ->check(kPositiveFinite)
+        ->group(built);
+    app.add_option("--sectors", f.sectors, "lattice connectivity 1..5 (default 3)")
+        ->check(CLI::Range(1, 5))
+        ->group(built);
+    app.add_option("--time-limit", f.timeLimit,
+                   "planner time limit in seconds, at most 1e6 (default: none for the lattice planners, 10 s for the "
+                   "sampling planners, which use all of it)")
+        ->check(CLI::Range(1e-3, 1e6))
+        ->group(built);
+    app.add_flag("--no-smooth", f.noSmooth, "skip path smoothing")->group(built);
+    app.add_flag("--no-refine", f.noRefine, "skip waypoint refinement")->group(built);
+    app.add_flag("--optimum", f.optimum,
+                 "also solve Zermelo's optimal-control problem by shooting (open water) and compare")
+        ->group(built);
+    auto *io = "Input and output";
+    app.add_option("--mission", f.mission, "run a YAML mission file (examples/MISSION_FORMAT.md); only --out, "
+                                           "--speeds, --optimum and --verbose go with it")
+        ->group(io);
+    app.add_option("--currents", f.currents, "plan on the u/v currents of a NetCDF forecast")->group(io);
+    app.add_option("--out", f.out,
+                   "write summary.json and the route files (waypoints.csv, path.csv, path.geojson, goto_l10.ma, "
+                   "map.svg, map.png) into this directory; with --mission it replaces outputs.directory")
+        ->group(io);
+    app.add_flag("--verbose", f.verbose, "show OMPL's log messages")->group(io);
+    auto *nc = "NetCDF forecast (with --currents)";
+    ForecastInput &fc = f.forecast;
+    for (const char *role : {"u", "v", "lon", "lat", "depth", "time"})
+        app.add_option_function<std::string>(
+               std::string("--") + role + "-var", [&fc, role](const std::string &v) { fc.variables[role] = v; },
+               std::string("name of the ") + role + " variable (found automatically when not given)")
+            ->group(nc);
+    app.add_option("--xy-interp", fc.xyInterpolation, "nearest | bilinear (default) | bicubic")
+        ->check(CLI::IsMember(kSchemes2D))
+        ->group(nc);
+    app.add_option("--time-interp", fc.timeInterpolation, "nearest | linear (default) | cubic | akima")
+        ->check(CLI::IsMember(kSchemes1D))
+        ->group(nc);
+    app.add_option("--depth-interp", fc.depthInterpolation, "nearest | linear (default) | cubic | akima")
+        ->check(CLI::IsMember(kSchemes1D))
+        ->group(nc);
+    app.add_option_function<std::string>(
+           "--beyond", [&fc](const std::string &v) { fc.horizonPolicy = v == "hold" ? "hold_last" : "refuse"; },
+           "past the last forecast time: refuse (default) | hold (hold the last field)")
+        ->check(CLI::IsMember({"refuse", "hold"}))
+        ->group(nc);
+    app.add_option("--depth", f.depth, "depth in metres, positive down, at which the current is read (default 0)")
+        ->check(CLI::Range(0.0, 12000.0))
+        ->group(nc);
+    app.footer("Exit status: 0 path found, 1 no path (the reason is printed), 2 bad arguments or input (a message "
+               "says what and where; nothing is written).");
+}
+
+/// Flags that --mission does not take: the mission file holds those settings.
+void checkCombinations(const CLI::App &app, const Flags &f)
+{
+    if (!f.mission.empty())
+    {
+        for (const CLI::Option *o : app.get_options())
+        {
+            const std::string name = o->get_name();
+            if (o->count() > 0 && name != "--mission" && name != "--out" && name != "--speeds" &&
+                name != "--verbose" && name != "--optimum" && name != "--help")
+                throw UsageError{"--mission takes its settings from the mission file: " + name +
+                                 " cannot be combined with it (only --out, --speeds, --optimum and --verbose can)"};
+        }
+        return;
+    }
+    if (f.currents.empty())
+        for (const CLI::Option *o : app.get_options())
+            if (o->count() > 0 && o->get_group() == "NetCDF forecast (with --currents)")
+                throw UsageError{o->get_name() + " needs --currents FILE"};
+    if (!f.currents.empty() && (f.start.empty() || f.goal.empty()))
+        throw UsageError{"--currents needs --start and --goal (lon,lat for a geographic file, x,y for a Cartesian "
+                         "one)"};
+}
+
+void parseFlags(CLI::App &app, const Flags &f, int argc, const char *const *argv)
+{
+    app.parse(argc, argv);
+    checkCombinations(app, f);
+}
+
+MissionSpec builtInMission(const Flags &f)
+{
+    MissionSpec m = defaultGulfStreamMission();
+    if (!f.start.empty())
+    {
+        const Point2 p = pair("--start", f.start);
+        m.start.x = p.x;
+        m.start.y = p.y;
+    }
+    if (!f.goal.empty())
+    {
+        const Point2 p = pair("--goal", f.goal);
+        m.goal.x = p.x;
+        m.goal.y = p.y;
+    }
+    if (!f.departure.empty())
+        m.departure.time = number("--departure", f.departure);
+    applySettings(f, m);
+    return m;
+}
+
+MissionSpec forecastMissionOf(Flags f)
+{
+    f.forecast.file = f.currents;
+    f.forecast.start = pair("--start", f.start);
+    f.forecast.goal = pair("--goal", f.goal);
+    f.forecast.departure = f.departure;
+    if (f.speed)
+        f.forecast.speed = *f.speed;
+    if (f.depth)
+        f.forecast.depth = *f.depth;
+    MissionSpec m = forecastMission(f.forecast);
+    applySettings(f, m);
+    return m;
+}
+}  // namespace glider_plan

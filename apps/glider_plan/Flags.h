@@ -1,0 +1,55 @@
+#pragma once
+/// @file Flags.h
+/// @brief glider_plan's command line: the flags, their checks and the MissionSpec they describe for the built-in
+/// mode and the --currents mode. Running, printing and exit codes are main.cpp's; this part is also linked by the
+/// command-line fuzzer (fuzz/fuzz_cli.cpp).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "ompl_glider/mission/ForecastMission.h"
+#include "ompl_glider/mission/MissionSpec.h"
+
+namespace glider_plan
+{
+/// @brief A bad flag value: exit 2 with the message.
+struct UsageError
+{
+    std::string message;
+};
+
+/// @brief Everything the flags say.
+struct Flags
+{
+    std::string mission, currents, out, start, goal, departure, planner;
+    std::optional<std::string> speeds;  // given, even empty, is a sweep request
+    std::optional<double> speed, gridSize, timeLimit, depth;
+    std::optional<int> sectors;
+    bool noSmooth{false}, noRefine{false}, optimum{false}, verbose{false};
+    ompl_glider::ForecastInput forecast;
+};
+
+/// @brief Declares every flag on @p app, storing into @p f (which must outlive @p app).
+void defineFlags(CLI::App &app, Flags &f);
+
+/// @brief Flags that do not go together (--mission takes its settings from the file; the NetCDF flags need
+/// --currents; --currents needs --start and --goal). @throws UsageError naming the flag.
+void checkCombinations(const CLI::App &app, const Flags &f);
+
+/// @brief app.parse() then checkCombinations(). @throws CLI::ParseError (CLI::CallForHelp for --help) or
+/// UsageError.
+void parseFlags(CLI::App &app, const Flags &f, int argc, const char *const *argv);
+
+/// @brief The speed list of --speeds ("0.25,0.30,0.35"). @throws UsageError unless every item is a number > 0.
+std::vector<double> speedList(const std::string &text);
+
+/// @brief The built-in Gulf Stream mission with the flags applied. @throws UsageError for a malformed number.
+ompl_glider::MissionSpec builtInMission(const Flags &f);
+
+/// @brief The mission of a --currents forecast (reads the file's time axis and grid: forecastMission()).
+/// @throws UsageError for a malformed --start/--goal, ompl_glider::Error for the file and the request.
+ompl_glider::MissionSpec forecastMissionOf(Flags f);
+}  // namespace glider_plan

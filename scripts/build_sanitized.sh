@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Builds the one clang-14 sanitizer build in build-fuzz: the library, glider_plan and the tests with
+# AddressSanitizer + UndefinedBehaviorSanitizer (Debug with -O1, every report fatal) and the coverage hooks of
+# libFuzzer (-fsanitize=fuzzer-no-link), and the fuzz targets of fuzz/ linked with libFuzzer. The tests run on it in
+# scripts/run_sanitizers.sh, the fuzzers in scripts/run_fuzzers.sh. Usage: scripts/build_sanitized.sh
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bash "$root/scripts/setup.sh"
+build="$root/build-fuzz"
+flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=all -fno-omit-frame-pointer -O1 -g"
+CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Debug -DOMPL_GLIDER_BUILD_TESTS=ON \
+  -DOMPL_GLIDER_BUILD_BENCHMARKS=OFF -DOMPL_GLIDER_BUILD_FUZZERS=ON -DCMAKE_CXX_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
+  >/dev/null
+cmake --build "$build" -j"$(nproc)"

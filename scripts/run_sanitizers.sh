@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Runs the test suite on the clang-14 AddressSanitizer + UndefinedBehaviorSanitizer build (build-fuzz, made by
+# scripts/build_sanitized.sh and shared with the fuzzers); every report is an error. The only suppression is
+# fontconfig's font cache, which cairo's text drawing keeps for the life of the process (tests/sanitizers/lsan.supp).
+# Part of CI (.ci/run). Usage: scripts/run_sanitizers.sh [ctest arguments]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bash "$root/scripts/build_sanitized.sh"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
+cd "$root/build-fuzz"
+# The package tests build and install a second copy of the library with the system compiler flags: they run in the
+# ordinary build (scripts/run_tests.sh), not here.
+ctest --output-on-failure -j"$(nproc)" -E '^package\.' "$@"
