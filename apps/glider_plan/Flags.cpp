@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <string>
 #include <utility>
@@ -171,6 +172,16 @@ void defineFlags(CLI::App &app, Flags &f)
                std::string("--") + role + "-var", [&fc, role](const std::string &v) { fc.variables[role] = v; },
                std::string("name of the ") + role + " variable (found automatically when not given)")
             ->group(nc);
+    app.add_option_function<std::string>(
+           "--mask-var", [&fc](const std::string &v) { fc.variables["mask"] = v; },
+           "land/sea mask variable (found automatically: flag_meanings, mask_rho, tmask, lsm, KMT...; 'none' for "
+           "no mask)")
+        ->group(nc);
+    app.add_flag_function(
+           "--no-zero-land", [&fc](std::int64_t) { fc.zeroVelocityLand = false; },
+           "do not take nodes whose u and v are exactly 0 at every loaded time for land (on by default: models "
+           "such as POP store land as zero velocity)")
+        ->group(nc);
     app.add_option("--xy-interp", fc.xyInterpolation, "nearest | bilinear (default) | bicubic")
         ->check(CLI::IsMember(kSchemes2D))
         ->group(nc);

@@ -1,5 +1,7 @@
 #include "ompl_glider/current/GriddedCurrentField.h"
 
+#include "CoastEdges.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cctype>
@@ -160,6 +162,15 @@ GriddedCurrentField::GriddedCurrentField(GriddedData d, GriddedFieldOptions opti
         yMax_ = y_.back();
         fdStep_ = 1e-4 * std::min((xMax_ - xMin_) / double(cx), (yMax_ - yMin_) / double(cy));
     }
+    auto coast = std::make_shared<detail::CoastEdges>();
+    coast->build(
+        nx_, ny_, nz, cellWater_,
+        [this](std::size_t n, double &x, double &y) {
+            x = curvilinear_ ? nodeX_[n] : x_[n % nx_];
+            y = curvilinear_ ? nodeY_[n] : y_[n / nx_];
+        },
+        xMin_, xMax_, yMin_, yMax_);
+    coast_ = std::move(coast);
 }
 
 void GriddedCurrentField::computeStencilDiameters()
@@ -611,12 +622,30 @@ bool GriddedCurrentField::segmentInWater(double x1, double y1, double x2, double
 {
     if (!inWater(x1, y1, z) || !inWater(x2, y2, z))
         return false;
-    const double L = std::hypot(x2 - x1, y2 - y1);
-    const double n = std::min(1e7, std::ceil(L / (0.25 * minCell_)));
-    for (double k = 1; k < n; ++k)
+    // the layers inWater() looks at
+    std::size_t k0 = 0, k1 = 0;
+    if (depth_.size() > 1)
     {
-        const double s = k / n;
-        if (!inWater(x1 + s * (x2 - x1), y1 + s * (y2 - y1), z))
+        const double zc = std::isfinite(z) ? std::clamp(z, depth_.front(), depth_.back()) : depth_.front();
+        const std::size_t k = depth_.interval(zc);
+        const double frac = (zc - depth_[k]) / (depth_[k + 1] - depth_[k]);
+        k0 = frac < 1.0 ? k : k + 1;
+        k1 = frac > 0.0 ? k + 1 : k;
+    }
+    thread_local std::vector<double> s;
+    s.assign({0.0, 1.0});
+    for (std::size_t k = k0; k <= k1; ++k)
+        coast_->meet(k, x1, y1, x2, y2, s);
+    if (s.size() == 2)
+        return true;
+    std::sort(s.begin(), s.end());
+    // between two consecutive meeting points the segment is all in water or all on land: test each middle
+    for (std::size_t q = 0; q + 1 < s.size(); ++q)
+    {
+        if (s[q + 1] - s[q] <= 1e-12)
+            continue;
+        const double m = 0.5 * (s[q] + s[q + 1]);
+        if (!inWater(x1 + m * (x2 - x1), y1 + m * (y2 - y1), z))
             return false;
     }
     return true;
@@ -715,7 +744,7 @@ Region GriddedCurrentField::extent() const
 
 std::size_t GriddedCurrentField::memoryBytes() const
 {
-    return uv_.size() * sizeof(float) + cellWater_.size() + (nodeX_.size() + nodeY_.size()) * sizeof(double) +
+    return uv_.size() * sizeof(float) + cellWater_.size() + coast_->memoryBytes() + (nodeX_.size() + nodeY_.size()) * sizeof(double) +
            bucket_.size() * sizeof(std::int32_t) + (x_.size() + y_.size() + depth_.size() + time_.size()) * sizeof(double);
 }
 }  // namespace ompl_glider

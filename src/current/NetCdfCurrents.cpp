@@ -73,7 +73,8 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
     g.ny = h.yIdx.size();
     g.depth = z.values;
     g.time = t.values;
-    readVelocities(f, l, plan, velScale, g);
+    readVelocities(f, l, plan, t, velScale, opt, g, out);
+    applyLandMask(f, l, h, z, t, opt, g, out);
     out.projection = setNodeCoordinates(f, l, h, region, opt, g);
     GriddedFieldOptions fo = opt.field;
     if (fo.name == "gridded" || fo.name.empty())

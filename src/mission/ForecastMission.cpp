@@ -84,6 +84,7 @@ MissionSpec forecastMission(const ForecastInput &q)
     m.current.depthInterpolation = q.depthInterpolation;
     m.current.timeInterpolation = q.timeInterpolation;
     m.current.horizonPolicy = q.horizonPolicy;
+    m.current.zeroVelocityLand = q.zeroVelocityLand;
     m.current.mark.file = file;
 
     // The file's coordinates are not known yet: take start and goal as lon/lat (the trip region is the same box

@@ -50,6 +50,8 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     o.latName = !var("lat").empty() ? var("lat") : var("y");
     o.depthName = var("depth");
     o.timeName = var("time");
+    o.maskName = var("mask");
+    o.zeroVelocityIsLand = c.zeroVelocityLand;
     o.field.xy = parseInterp2D(c.xyInterpolation);
     o.field.depth = parseInterp1D(c.depthInterpolation);
     o.field.time = parseInterp1D(c.timeInterpolation);

@@ -334,6 +334,100 @@ TEST(GriddedField, LandCellsAreDryAndNeverLeakFillValues)
     EXPECT_THROW(GriddedCurrentField{bad}, Error);
 }
 
+TEST(GriddedField, LegClippingTheCornerOfALandCellIsRefusedHoweverSmallTheClip)
+{
+    // unit cells on 0..10 x 0..10; node (5, 5) is land, so the four cells around it are dry: the dry square is
+    // [4, 6] x [4, 6]
+    std::vector<double> ax(11);
+    for (int i = 0; i <= 10; ++i)
+        ax[i] = i;
+    auto zero = [](double, double, double, double) { return 0.0; };
+    GriddedData d = sampleRect(ax, ax, {0}, {0}, zero, zero);
+    d.water.assign(121, 1);
+    d.water[5 * 11 + 5] = 0;
+    const GriddedCurrentField f(d);
+    // legs along x + y = 12 - e, from (4 - e, 8) to (8, 4 - e), both ends in water: they cut a triangle with legs
+    // of length e off the square's corner (6, 6), a piece of length e * sqrt(2) (1.4e-7 for the smallest e, far
+    // below any sampling step); the same legs along x + y = 12 + e miss the square
+    for (double e : {0.1, 1e-2, 1e-4, 1e-7})
+    {
+        EXPECT_FALSE(f.segmentInWater(4.0 - e, 8.0, 8.0, 4.0 - e, 0)) << "e " << e;
+        EXPECT_TRUE(f.segmentInWater(4.0 + e, 8.0, 8.0, 4.0 + e, 0)) << "e " << e;
+    }
+    // a leg one cell above the dry square passes; one through it does not
+    EXPECT_TRUE(f.segmentInWater(0.5, 6.5, 9.5, 6.5, 0));
+    EXPECT_FALSE(f.segmentInWater(0.5, 5.5, 9.5, 5.5, 0));
+}
+
+TEST(GriddedField, ExactLegCheckAgreesWithDenseSamplingOnACurvilinearCoast)
+{
+    // a rotated, sheared curvilinear grid with a random coast (about 30 % land nodes at two depths); legs of 0.3 to
+    // 4 cells in random directions: whenever a dense sampling (every 1/2000 of the leg) finds a dry point the exact
+    // check refuses the leg, and whenever the exact check refuses a leg with both ends in water a sampling every
+    // 1e-6 of the leg finds the dry point (or the clipped piece is shorter than that)
+    const std::size_t nx = 24, ny = 18;
+    GriddedData d;
+    d.nx = nx;
+    d.ny = ny;
+    d.depth = {0.0, 20.0};
+    d.time = {0.0};
+    const double a = 0.3;
+    for (std::size_t j = 0; j < ny; ++j)
+        for (std::size_t i = 0; i < nx; ++i)
+        {
+            const double u = double(i) + 0.15 * std::sin(0.7 * double(j)), v = double(j) + 0.1 * double(i);
+            d.nodeX.push_back(std::cos(a) * u - std::sin(a) * v);
+            d.nodeY.push_back(std::sin(a) * u + std::cos(a) * v);
+        }
+    d.u.assign(2 * nx * ny, 0.1f);
+    d.v.assign(2 * nx * ny, 0.0f);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    d.water.assign(2 * nx * ny, 1);
+    for (auto &w : d.water)
+        w = U(rng) < 0.12 ? 0 : 1;
+    const GriddedCurrentField f(d);
+    int refused = 0, refusedThinClip = 0, agreedTrue = 0;
+    for (int n = 0; n < 3000; ++n)
+    {
+        const double fi = 1.0 + U(rng) * double(nx - 3), fj = 1.0 + U(rng) * double(ny - 3);
+        const std::size_t i = static_cast<std::size_t>(fi), j = static_cast<std::size_t>(fj);
+        const double x1 = d.nodeX[j * nx + i] + (fi - double(i)) * 0.9, y1 = d.nodeY[j * nx + i] + (fj - double(j)) * 0.9;
+        const double len = 0.3 + 3.7 * U(rng), th = 6.283185307179586 * U(rng);
+        const double x2 = x1 + len * std::cos(th), y2 = y1 + len * std::sin(th);
+        const double z = U(rng) < 0.5 ? 0.0 : 10.0;
+        if (!f.inWater(x1, y1, z) || !f.inWater(x2, y2, z))
+        {
+            EXPECT_FALSE(f.segmentInWater(x1, y1, x2, y2, z));
+            continue;
+        }
+        auto dryAt = [&](int samples) {
+            for (int k = 1; k < samples; ++k)
+            {
+                const double s = double(k) / samples;
+                if (!f.inWater(x1 + s * (x2 - x1), y1 + s * (y2 - y1), z))
+                    return true;
+            }
+            return false;
+        };
+        const bool exact = f.segmentInWater(x1, y1, x2, y2, z);
+        if (exact)
+        {
+            ASSERT_FALSE(dryAt(2000)) << "leg " << x1 << "," << y1 << " -> " << x2 << "," << y2 << " z " << z;
+            ++agreedTrue;
+        }
+        else
+        {
+            ++refused;
+            if (!dryAt(1000000))
+                ++refusedThinClip;
+        }
+    }
+    EXPECT_GT(agreedTrue, 300);
+    EXPECT_GT(refused, 100);
+    EXPECT_LE(refusedThinClip, refused / 1000) << "refused legs without a dry point at 1e-6 spacing";
+}
+
 TEST(GriddedField, AfterTheLastForecastHoldOrRefuse)
 {
     auto fu = [](double, double, double, double t) { return 0.1 + 0.1 * t; };

@@ -4,6 +4,7 @@
 /// 3.4.2).
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,11 @@
 
 namespace ompl_glider
 {
+namespace detail
+{
+class CoastEdges;
+}
+
 /// @brief What the field does after the last forecast time.
 enum class BeyondForecast
 {
@@ -140,10 +146,12 @@ public:
     {
         return overshoot_;
     }
-    /// @brief True when the straight segment stays in water (inWater()) at depth z: both ends and points every
-    /// quarter of the smallest cell size between them, so it misses a dry cell only where the segment clips it
-    /// over less than a quarter cell. For environment/planner code that must keep whole legs off land (the
-    /// travel-time code asks it once per leg).
+    /// @brief True when the straight segment stays in water (inWater()) at depth z, decided exactly: the segment is
+    /// cut where it meets the boundary of the water (edges between a water cell and a land cell, and the grid's
+    /// outer edges, of the depth layers that carry weight at z), and each piece is tested once at its middle. A
+    /// segment that clips a corner of a land cell is refused however small the clipped part (the only tolerance is
+    /// 1e-12 relative, in the intersection tests). For environment/planner code that must keep whole legs off land
+    /// (the travel-time code asks it once per leg).
     bool segmentInWater(double x1, double y1, double x2, double y2, double z) const override;
     /// @brief Smallest distance between neighbouring grid nodes (x/y units).
     double minCellSize() const
@@ -189,6 +197,7 @@ private:
     std::vector<double> nodeX_, nodeY_;
     std::vector<float> uv_;                 // interleaved u, v
     std::vector<std::uint8_t> cellWater_;   // [(k * (ny-1) + j) * (nx-1) + i]
+    std::shared_ptr<const detail::CoastEdges> coast_;  // boundary of the water per layer (segmentInWater)
     std::vector<double> layerMaxSpeed_, layerMaxU_, layerMaxV_;  // per (t, k)
     double overshoot_{1.0};
     double lamXY_{1.0}, lamZ_{1.0}, lamT_{1.0};  // overshoot factors of the three stages

@@ -39,6 +39,11 @@ struct NetCdfCurrentOptions
     CoordinateMode coordinates{CoordinateMode::Auto};  ///< how to read x/y
     std::string velocityUnits;  ///< overrides the units attribute of u and v ("m/s", "cm/s", "knots")
 
+    // --- land (besides fill values of u/v, which are always land) ---
+    std::string maskName;  ///< land/sea mask variable; empty: found automatically (loadNetCdfCurrents()); "none": none
+    bool zeroVelocityIsLand{true};  ///< a node whose u and v are exactly 0 in every record of the trip is land (models
+                                    ///< such as POP store land velocity points as zeros, not fill values)
+
     // --- model ---
     GriddedFieldOptions field;  ///< schemes (xy bilinear, depth linear, time linear), BeyondForecast, name
 
@@ -77,6 +82,11 @@ struct NetCdfCurrents
     double forecastEnd{0.0};         ///< last forecast time of the file, field time
     std::string uVariable, vVariable;  ///< variables read
     std::vector<std::size_t> loadedShape;  ///< nt, nz, ny, nx actually loaded
+    std::string maskVariable;        ///< the land/sea mask read ("" when none)
+    std::size_t landNodes{0};        ///< loaded nodes (x depth layers) that are land, for any of the reasons:
+    std::size_t fillLandNodes{0};    ///<   u or v a fill value in some record of the trip
+    std::size_t maskLandNodes{0};    ///<   land in the mask (in some record of the trip, for a mask with a time axis)
+    std::size_t zeroLandNodes{0};    ///<   u = v = 0 exactly in every record of the trip (zeroVelocityIsLand)
     std::size_t fileValues{0};       ///< values per component in the file variable
     std::size_t loadedValues{0};     ///< values per component loaded
 
@@ -105,10 +115,27 @@ struct NetCdfCurrents
 /// descending; depth positive="up" negated; velocities in m/s, cm/s or knots. Only the hyperslab covering the
 /// region (+ margin), the depth layers down to maxDepth and the time window is read (nc_get_vara).
 ///
+/// Land, per node and depth layer, is the union of: u or v a fill value in any of the trip's records; land in a
+/// mask variable (below), in any of the trip's records when the mask has the time axis of u; u = v = 0 exactly in
+/// all of the trip's records (NetCdfCurrentOptions::zeroVelocityIsLand, on by default). The trip's records are
+/// those from the last at or before the departure to the first at or after departure + horizon (not the stencil
+/// margin loaded around them), so a seasonal mask or missing winter data close what is closed during the trip,
+/// not all year.
+/// The mask variable is found automatically, in this order: a variable
+/// with CF flag_values/flag_meanings naming land, standard_name land_binary_mask or sea_binary_mask, then the names
+/// (case-insensitive) mask_rho, mask, tmask, landmask, land_mask, lsm, land_sea_mask, seamask, sea_mask, kmt; only
+/// one whose dimensions fit u's grid (its horizontal dimensions are u's, or have their lengths; a time or depth
+/// dimension must be u's) is taken. A given name (maskName) must fit. The values mean:
+///  - flag_values with flag_meanings: a value whose meaning has the word sea, water or ocean and none of ice, land,
+///    shelf, lake, glacier, river ("sea", "open_water"; not "sea_ice") is water, any other value land;
+///  - land_binary_mask, or a name containing "land" or "lsm" (ERA5's land fraction, WRF's LANDMASK): >= 0.5 is land;
+///  - kmt / KMT (POP's number of ocean levels): depth layer k (file index) is water when k < KMT;
+///  - sea_binary_mask and every other name (ROMS mask_rho, NEMO tmask, mask): >= 0.5 is water;
+///  - a fill value is land.
+///
 /// Geographic grids (1-D or 2-D) become curvilinear grids of projected nodes (LocalProjection about the
-/// reference point) and eastward/northward velocities are rotated into x/y at each node. Nodes where u or v
-/// is a fill value at any loaded time are land. Between nodes a point is located in the straight-edged cell of
-/// the projected nodes (GriddedCurrentField); a parallel bows away from that edge by at most L^2 tan(lat) / (8 R)
+/// reference point) and eastward/northward velocities are rotated into x/y at each node. Between nodes a point is
+/// located in the straight-edged cell of the projected nodes (GriddedCurrentField); a parallel bows away from that edge by at most L^2 tan(lat) / (8 R)
 /// for a cell of width L: 0.5 m for 6 km cells at 45 degrees, 27 m for 0.5-degree cells at 33 degrees, far
 /// below the forecasts' resolution. Curvilinear velocities are taken as eastward/northward (CF standard names);
 /// grid-relative components (ROMS/NEMO rotated grids with an angle variable), staggered u/v grids and

@@ -17,12 +17,13 @@ namespace ompl_glider
 struct ForecastInput
 {
     std::string file;                              ///< the NetCDF forecast
-    std::map<std::string, std::string> variables;  ///< role (u, v, lon, lat, depth, time) -> variable name
+    std::map<std::string, std::string> variables;  ///< role (u, v, lon, lat, depth, time, mask) -> variable name
     std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic
     std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima
     std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
     std::string horizonPolicy{"refuse"};           ///< refuse | hold_last (beyond the last forecast time)
     double depth{0.0};                             ///< depth (m, positive down) at which the current is read
+    bool zeroVelocityLand{true};                   ///< u = v = 0 at every loaded time is land (CurrentSpec)
     Point2 start;  ///< start: lon,lat (x = lon, y = lat) for a geographic file, x,y for a Cartesian one
     Point2 goal;   ///< goal, as start
     std::string departure;  ///< ISO 8601 date or seconds after the first forecast time; empty: first forecast time

@@ -53,11 +53,13 @@ struct CurrentSpec
     /// linear_shear a; double_gyre amplitude length). Missing ones take the class defaults.
     std::map<std::string, double> parameters;
     std::string file;                              ///< netcdf: path (relative paths resolved against the mission)
-    std::map<std::string, std::string> variables;  ///< netcdf: role (u, v, lon, lat, x, y, depth, time) -> name
+    std::map<std::string, std::string> variables;  ///< netcdf: role (u, v, lon, lat, x, y, depth, time, mask) -> name
+                                                   ///< (mask "none": no land/sea mask variable)
     std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic
     std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima
     std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
     std::string horizonPolicy{"refuse"};           ///< refuse (trips past the forecast are infeasible) | hold_last
+    bool zeroVelocityLand{true};  ///< netcdf: nodes with u = v = 0 exactly at every loaded time are land
     SourceMark mark;                               ///< where the current block is
 };
 

@@ -1,5 +1,12 @@
-// Reading the velocities: u and v over the hyperslab plan, unpacked to m/s; a node where u or v is a fill value
-// (or outside the valid range, or NaN) at any loaded time is land at that depth.
+// Reading the velocities and the land: u and v over the hyperslab plan, unpacked to m/s; a node (per depth layer)
+// is land where u or v is a fill value (or outside the valid range, or NaN) in a record of the trip, where a
+// land/sea mask variable says land, and (NetCdfCurrentOptions::zeroVelocityIsLand) where u = v = 0 exactly in
+// every record of the trip. The rules of the mask variable are documented at loadNetCdfCurrents() (NetCdfCurrents.h).
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
 #include "NetCdfInternal.h"
 
 namespace ompl_glider
@@ -8,38 +15,297 @@ namespace netcdf_detail
 {
 namespace
 {
-/// Unpacks raw u/v (internal order t, z, y, x) into g.u / g.v and marks land in g.water (per z, y, x). Land
-/// nodes keep velocity 0 at every time.
+/// Unpacks raw u/v (internal order t, z, y, x) into g.u / g.v and marks land in g.water (per z, y, x), deciding on
+/// the trip's records only (t.inTrip()). Fill values become velocity 0 (a fill in a margin record only reaches
+/// the field through cubic/Akima time stencils, as a zero).
 void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv, const Packing &pu,
-                   const Packing &pv, double velScale, GriddedData &g)
+                   const Packing &pv, double velScale, bool zeroIsLand, const AxisSelection &t, GriddedData &g,
+                   NetCdfCurrents &out)
 {
     const std::size_t total = ru.size(), perTime = g.depth.size() * g.nx * g.ny;
-    g.u.resize(total);
-    g.v.resize(total);
+    g.u.assign(total, 0.0f);
+    g.v.assign(total, 0.0f);
     g.water.assign(perTime, 1);
+    std::vector<std::uint8_t> allZero(perTime, 1);
     for (std::size_t it = 0; it < g.time.size(); ++it)
         for (std::size_t n = 0; n < perTime; ++n)
         {
             const std::size_t idx = it * perTime + n;
             if (pu.isFill(ru[idx]) || pv.isFill(rv[idx]))
             {
-                g.water[n] = 0;
+                if (t.inTrip(it))
+                    g.water[n] = 0;
                 continue;
             }
-            g.u[idx] = static_cast<float>((ru[idx] * pu.scale + pu.offset) * velScale);
-            g.v[idx] = static_cast<float>((rv[idx] * pv.scale + pv.offset) * velScale);
+            const double u = (ru[idx] * pu.scale + pu.offset) * velScale;
+            const double v = (rv[idx] * pv.scale + pv.offset) * velScale;
+            if ((u != 0.0 || v != 0.0) && t.inTrip(it))
+                allZero[n] = 0;
+            g.u[idx] = static_cast<float>(u);
+            g.v[idx] = static_cast<float>(v);
         }
+    for (std::size_t n = 0; n < perTime; ++n)
+    {
+        if (!g.water[n])
+            ++out.fillLandNodes;
+        else if (zeroIsLand && allZero[n])
+        {
+            g.water[n] = 0;
+            ++out.zeroLandNodes;
+        }
+    }
+}
+
+/// How the values of a mask variable are read.
+enum class MaskRule
+{
+    WaterIfHalf,  ///< >= 0.5 is water (ROMS mask_rho, NEMO tmask, CF sea_binary_mask)
+    LandIfHalf,   ///< >= 0.5 is land (CF land_binary_mask, ERA5 lsm, WRF LANDMASK)
+    Flags,        ///< CF flag_values / flag_meanings
+    LevelCount    ///< POP KMT: number of ocean levels
+};
+
+/// A mask variable, its rule, and where its dimensions sit in the loaded arrays.
+struct Mask
+{
+    int var{-1};
+    MaskRule rule{MaskRule::WaterIfHalf};
+    std::set<double> waterFlags;  ///< Flags: the values meaning water
+};
+
+std::string lowerName(const NcFile &f, int var)
+{
+    return lower(f.varName(var));
+}
+
+/// The rule of a mask variable from its attributes and name.
+Mask maskOf(const NcFile &f, int var)
+{
+    Mask m;
+    m.var = var;
+    const std::string name = lowerName(f, var), sn = stdName(f, var);
+    const auto meanings = f.attText(var, "flag_meanings");
+    const auto values = f.attDoubles(var, "flag_values");
+    if (meanings && !values.empty())
+    {
+        std::istringstream is(lower(*meanings));
+        std::string word;
+        std::size_t k = 0;
+        for (; is >> word && k < values.size(); ++k)
+        {
+            // the words of a meaning: "sea", "open_water", "sea_ice", "ice_shelf", "land"
+            bool water = false, other = false;
+            std::istringstream ws(word);
+            std::string part;
+            while (std::getline(ws, part, '_'))
+            {
+                water = water || part == "sea" || part == "water" || part == "ocean";
+                other = other || part == "ice" || part == "land" || part == "shelf" || part == "lake" ||
+                        part == "glacier" || part == "river";
+            }
+            if (water && !other)
+                m.waterFlags.insert(values[k]);
+        }
+        m.rule = MaskRule::Flags;
+        return m;
+    }
+    if (sn == "land_binary_mask" || name.find("land") != std::string::npos || name.find("lsm") != std::string::npos)
+        m.rule = MaskRule::LandIfHalf;
+    else if (name == "kmt")
+        m.rule = MaskRule::LevelCount;
+    return m;
+}
+
+/// How one dimension of the mask is read: the selection of u's dimension it stands for, and its stride in the
+/// mask's internal array (t, z, y, x with only the mask's own axes).
+struct MaskDims
+{
+    std::vector<DimRead> reads;
+    std::vector<std::size_t> stride;
+    bool hasTime{false}, hasDepth{false};
+};
+
+/// Where each dimension of the mask sits, or nullopt with the reason when it does not fit u's grid.
+std::optional<MaskDims> fitMask(const NcFile &f, const Layout &l, int var, const HorizontalSubset &h,
+                                const AxisSelection &z, const AxisSelection &t, std::string &why)
+{
+    const std::vector<int> md = f.varDims(var);
+    if (md.size() < 2)
+    {
+        why = "it has " + std::to_string(md.size()) + " dimension(s), a mask needs at least 2 (y, x)";
+        return std::nullopt;
+    }
+    const int uy = l.dims[l.dimY], ux = l.dims[l.dimX];
+    MaskDims m;
+    m.reads.resize(md.size());
+    std::vector<Role> role(md.size(), Role::None);
+    for (std::size_t d = 0; d < md.size(); ++d)
+        for (std::size_t e = 0; e < l.dims.size(); ++e)
+            if (md[d] == l.dims[e])
+                role[d] = l.role[e];
+    // the last two dimensions stand for u's y and x when their lengths agree (a mask on dimensions of its own)
+    const std::size_t a = md.size() - 2, b = md.size() - 1;
+    if (role[a] == Role::None && role[b] == Role::None && f.dimLen(md[a]) == f.dimLen(uy) &&
+        f.dimLen(md[b]) == f.dimLen(ux))
+    {
+        role[a] = Role::Y;
+        role[b] = Role::X;
+    }
+    if (std::count(role.begin(), role.end(), Role::Y) != 1 || std::count(role.begin(), role.end(), Role::X) != 1)
+    {
+        why = "its dimensions (";
+        for (std::size_t d = 0; d < md.size(); ++d)
+            why += (d ? ", " : "") + f.dimName(md[d]) + " = " + std::to_string(f.dimLen(md[d]));
+        why += ") are not the horizontal grid of '" + l.uName + "' (" + f.dimName(uy) + " = " +
+               std::to_string(f.dimLen(uy)) + ", " + f.dimName(ux) + " = " + std::to_string(f.dimLen(ux)) + ")";
+        return std::nullopt;
+    }
+    const std::size_t nx = h.xIdx.size(), nh = nx * h.yIdx.size();
+    for (std::size_t d = 0; d < md.size(); ++d)
+    {
+        m.hasTime = m.hasTime || role[d] == Role::Time;
+        m.hasDepth = m.hasDepth || role[d] == Role::Depth;
+        if (role[d] == Role::None && f.dimLen(md[d]) != 1)
+        {
+            why = "its dimension " + f.dimName(md[d]) + " (" + std::to_string(f.dimLen(md[d])) +
+                  ") is not a dimension of '" + l.uName + "'";
+            return std::nullopt;
+        }
+    }
+    const std::size_t nz = m.hasDepth ? z.idx.size() : 1;
+    m.stride.assign(md.size(), 0);
+    for (std::size_t d = 0; d < md.size(); ++d)
+        switch (role[d])
+        {
+            case Role::Time:
+                m.reads[d] = makeDimRead(t.idx);
+                m.stride[d] = nz * nh;
+                break;
+            case Role::Depth:
+                m.reads[d] = makeDimRead(z.idx);
+                m.stride[d] = nh;
+                break;
+            case Role::Y:
+                m.reads[d] = makeDimRead(h.yIdx);
+                m.stride[d] = nx;
+                break;
+            case Role::X:
+                m.reads[d] = makeDimRead(h.xIdx);
+                m.stride[d] = 1;
+                break;
+            case Role::None:
+                m.reads[d] = makeDimRead({0});
+                break;
+        }
+    return m;
+}
+
+const char *const kMaskNames[] = {"mask_rho", "mask", "tmask", "landmask", "land_mask", "lsm",
+                                  "land_sea_mask", "seamask", "sea_mask", "kmt"};
+
+/// The mask variable: the given one (which must fit), else the first candidate that fits; -1 for none.
+int findMask(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, const HorizontalSubset &h,
+             const AxisSelection &z, const AxisSelection &t, std::optional<MaskDims> &dims)
+{
+    std::string why;
+    if (lower(opt.maskName) == "none")
+        return -1;
+    if (!opt.maskName.empty())
+    {
+        const auto v = f.findVar(opt.maskName);
+        if (!v)
+            throw f.error("no mask variable '" + opt.maskName + "' (given as the land/sea mask)");
+        dims = fitMask(f, l, *v, h, z, t, why);
+        if (!dims)
+            throw f.error("mask variable '" + opt.maskName + "' does not fit the velocities: " + why);
+        return *v;
+    }
+    std::vector<int> order;
+    for (int var = 0; var < f.nvars(); ++var)
+    {
+        const std::string sn = stdName(f, var);
+        const auto meanings = f.attText(var, "flag_meanings");
+        if ((meanings && lower(*meanings).find("land") != std::string::npos) || sn == "land_binary_mask" ||
+            sn == "sea_binary_mask")
+            order.push_back(var);
+    }
+    for (const char *name : kMaskNames)
+        for (int var = 0; var < f.nvars(); ++var)
+            if (lowerName(f, var) == name)
+                order.push_back(var);
+    for (int var : order)
+        if (var != l.uVar && var != l.vVar && (dims = fitMask(f, l, var, h, z, t, why)))
+            return var;
+    return -1;
 }
 }  // namespace
 
-void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, double velScale, GriddedData &g)
+void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
+                    double velScale, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
 {
     const std::size_t total = g.time.size() * g.depth.size() * g.ny * g.nx;
     std::vector<double> ru(total), rv(total);
     readScatter(f, l.uVar, plan.reads, plan.stride, ru);
     readScatter(f, l.vVar, plan.reads, plan.stride, rv);
     const Packing pu = packingOf(f, l.uVar), pv = packingOf(f, l.vVar);
-    unpackAndMask(ru, rv, pu, pv, velScale, g);
+    unpackAndMask(ru, rv, pu, pv, velScale, opt.zeroVelocityIsLand, t, g, out);
+}
+
+void applyLandMask(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+                   const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
+{
+    std::optional<MaskDims> dims;
+    const int var = findMask(f, l, opt, h, z, t, dims);
+    if (var >= 0)
+    {
+        const Mask m = maskOf(f, var);
+        out.maskVariable = f.varName(var);
+        const std::size_t nh = g.nx * g.ny, nzLoaded = g.depth.size();
+        const std::size_t nt = dims->hasTime ? t.idx.size() : 1, nz = dims->hasDepth ? nzLoaded : 1;
+        std::vector<double> raw(nt * nz * nh);
+        readScatter(f, var, dims->reads, dims->stride, raw);
+        const Packing p = packingOf(f, var);
+        for (std::size_t it = 0; it < nt; ++it)
+            for (std::size_t kz = 0; kz < nz && (!dims->hasTime || t.inTrip(it)); ++kz)
+                for (std::size_t n = 0; n < nh; ++n)
+                {
+                    const double r = raw[(it * nz + kz) * nh + n];
+                    const double v = r * p.scale + p.offset;
+                    // the layers this mask value speaks for: its own, or all of them for a 2-D mask
+                    for (std::size_t k = dims->hasDepth ? kz : 0; k < (dims->hasDepth ? kz + 1 : nzLoaded); ++k)
+                    {
+                        bool water = false;
+                        if (!p.isFill(r))
+                            switch (m.rule)
+                            {
+                                case MaskRule::WaterIfHalf:
+                                    water = v >= 0.5;
+                                    break;
+                                case MaskRule::LandIfHalf:
+                                    water = v < 0.5;
+                                    break;
+                                case MaskRule::Flags:
+                                    water = m.waterFlags.count(v) > 0;
+                                    break;
+                                case MaskRule::LevelCount:
+                                    water = double(z.idx[k]) < v;
+                                    break;
+                            }
+                        std::uint8_t &w = g.water[k * nh + n];
+                        if (w && !water)
+                        {
+                            w = 0;
+                            ++out.maskLandNodes;
+                        }
+                    }
+                }
+    }
+    out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
+    // a node that is land by the mask keeps no velocity: the field treats land nodes as zero current
+    const std::size_t perTime = g.water.size();
+    for (std::size_t idx = 0; idx < g.u.size(); ++idx)
+        if (!g.water[idx % perTime])
+            g.u[idx] = g.v[idx] = 0.0f;
 }
 }  // namespace netcdf_detail
 }  // namespace ompl_glider

@@ -15,7 +15,7 @@
 ///  - CurvilinearSubset.cpp  index box of a 2-D grid for the region and its node coordinates
 ///  - Hyperslab.cpp          contiguous runs per dimension and the scattered nc_get_vara reads
 ///  - UnitsAndPacking.cpp    velocity and axis units, scale_factor/add_offset and fill/valid-range rules
-///  - LandMask.cpp           reading u/v: unpacking, unit conversion, land where either is a fill value
+///  - LandMask.cpp           reading u/v: unpacking, unit conversion; land from fill values, zero velocity, a mask
 ///  - NodeCoordinates.cpp    projected (and rotated) or Cartesian node coordinates
 ///  - ../NetCdfCurrents.cpp  loadNetCdfCurrents(), composing the stages, and the NetCdfCurrents members
 
@@ -223,6 +223,14 @@ struct AxisSelection
 {
     std::vector<std::size_t> idx{0};
     std::vector<double> values{0.0};
+    /// time: positions in idx of the records bracketing the trip (the last at or before the departure to the first
+    /// at or after departure + horizon); land is decided on these only, not on the stencil margin around them
+    std::size_t tripBegin{0}, tripEnd{0};
+    /// True when position q counts for land.
+    bool inTrip(std::size_t q) const
+    {
+        return q >= tripBegin && q <= tripEnd;
+    }
 };
 
 /// The forecast times the mission needs (departure to departure + horizon, plus 2 steps each side); sets the
@@ -361,8 +369,16 @@ struct Packing
 Packing packingOf(const NcFile &f, int var);
 
 /// Reads u and v over the plan into g.u / g.v (unpacked, m/s) and g.water (land where u or v is a fill value at
-/// any time). g.nx, g.ny, g.depth and g.time must be set.
-void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, double velScale, GriddedData &g);
+/// any of the trip's records (t.inTrip()), or, with opt.zeroVelocityIsLand, where both are exactly 0 at all of
+/// them; counted in
+/// out.fillLandNodes / out.zeroLandNodes). g.nx, g.ny, g.depth and g.time must be set.
+void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
+                    double velScale, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
+/// The land/sea mask variable (the given one, or one found automatically: rules at loadNetCdfCurrents()) applied
+/// to g.water over the loaded nodes, depths and times; sets out.maskVariable and the land counts, and zeroes the
+/// velocities of every land node. @throws Error when a given mask is missing or does not fit u's grid.
+void applyLandMask(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+                   const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
 
 // ---- coordinates (NodeCoordinates.cpp) ----
 

@@ -117,11 +117,12 @@ AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentO
     // departure to departure + horizon, plus 2 forecast steps on each side for cubic/Akima stencils
     const double end = std::isfinite(opt.horizon) ? dep + std::max(0.0, opt.horizon) : ts.back();
     const Axis ax(ts, "time '" + tv.name + "'");
-    std::size_t a = ax.interval(dep), b = ax.size() > 1 ? ax.interval(std::min(end, ts.back())) + 1 : 0;
-    a = a >= 2 ? a - 2 : 0;
-    b = std::min(ts.size() - 1, b + 2);
+    const std::size_t ta = ax.interval(dep), tb = ax.size() > 1 ? ax.interval(std::min(end, ts.back())) + 1 : 0;
+    const std::size_t a = ta >= 2 ? ta - 2 : 0, b = std::min(ts.size() - 1, tb + 2);
     s.idx.clear();
     s.values.clear();
+    s.tripBegin = ta - a;
+    s.tripEnd = std::min(tb, ts.size() - 1) - a;
     for (std::size_t k = a; k <= b; ++k)
     {
         s.idx.push_back(k);

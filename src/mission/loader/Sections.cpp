@@ -67,7 +67,7 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
 void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "current";
-    r.checkMap(n, f, {"type", "parameters", "file", "variables", "interpolation", "horizon"});
+    r.checkMap(n, f, {"type", "parameters", "file", "variables", "interpolation", "horizon", "zero_velocity_land"});
     CurrentSpec &c = m.current;
     c.mark = {r.file(), r.line(n)};
     std::set<std::string> kinds;
@@ -92,7 +92,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (c.type == "double_gyre" && c.parameters.count("length") && !(c.parameters["length"] > 0))
         r.fail(n["parameters"]["length"], f + ".parameters.length", "expected a number > 0");
     const bool netcdf = kind.gridded;
-    for (const char *key : {"file", "variables", "interpolation", "horizon"})
+    for (const char *key : {"file", "variables", "interpolation", "horizon", "zero_velocity_land"})
         if (n[key] && !netcdf)
             r.fail(n[key], f + "." + key, "only for type netcdf");
     if (!netcdf)
@@ -104,7 +104,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
         r.fail(n["file"], f + ".file", "cannot open '" + c.file + "'");
     if (n["variables"])
     {
-        r.checkMap(n["variables"], f + ".variables", {"u", "v", "x", "y", "lon", "lat", "depth", "time"});
+        r.checkMap(n["variables"], f + ".variables", {"u", "v", "x", "y", "lon", "lat", "depth", "time", "mask"});
         for (auto it = n["variables"].begin(); it != n["variables"].end(); ++it)
             c.variables[it->first.Scalar()] = r.text(it->second, f + ".variables." + it->first.Scalar());
     }
@@ -123,6 +123,8 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
     }
     if (n["horizon"])
         c.horizonPolicy = r.oneOf(n["horizon"], f + ".horizon", {"refuse", "hold_last"});
+    if (n["zero_velocity_land"])
+        c.zeroVelocityLand = r.boolean(n["zero_velocity_land"], f + ".zero_velocity_land");
     readFileCalendar(r, n, m);
 }
 
