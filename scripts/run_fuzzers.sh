@@ -7,6 +7,8 @@
 # status 1 after running every target. Logs: build-fuzz/findings/<target>.log.
 # Reproduce a finding: build-fuzz/fuzz/<target> build-fuzz/findings/<target>/crash-...
 # Usage: scripts/run_fuzzers.sh SECONDS [TARGET...]   (TARGET: mission, netcdf, cli or fuzz_<name>; default all)
+# FUZZ_UNIT_TIMEOUT (seconds, default 10) sets how slow an input may be: raise it when the machine is shared, so
+# that a starved process is not reported as a hang.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 if [ $# -lt 1 ] || ! [[ "$1" =~ ^[1-9][0-9]*$ ]]; then
@@ -14,6 +16,8 @@ if [ $# -lt 1 ] || ! [[ "$1" =~ ^[1-9][0-9]*$ ]]; then
   exit 2
 fi
 seconds="$1"
+unit_timeout="${FUZZ_UNIT_TIMEOUT:-10}"
+[[ "$unit_timeout" =~ ^[1-9][0-9]*$ ]] || { echo "run_fuzzers: FUZZ_UNIT_TIMEOUT must be a whole number of seconds" >&2; exit 2; }
 shift
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(mission netcdf cli)
@@ -52,7 +56,7 @@ for t in "${targets[@]}"; do
   [ -f "$root/fuzz/$t.dict" ] && dict=(-dict="$root/fuzz/$t.dict")
   echo "run_fuzzers: fuzz_$t for ${seconds}s ($(ls "$corpus" | wc -l) seeds)"
   set +e
-  "$build/fuzz/fuzz_$t" "$corpus" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 \
+  "$build/fuzz/fuzz_$t" "$corpus" -max_total_time="$seconds" -timeout="$unit_timeout" -rss_limit_mb=2048 -malloc_limit_mb=2048 \
     "${dict[@]}" -artifact_prefix="$findings/" -print_final_stats=1 > "$log" 2>&1
   rc=$?
   set -e

@@ -25,6 +25,7 @@ struct CutShort
 /// Thrown when the bytes are not a classic header (an unknown tag, type or dimension id).
 struct NotClassic
 {
+    std::string why;
 };
 
 /// a * b, saturating at kMax.
@@ -66,7 +67,7 @@ std::uint64_t typeBytes(std::uint64_t type)
         case NC_UINT64:
             return 8;
         default:
-            throw NotClassic{};
+            throw NotClassic{"unknown type " + std::to_string(type)};
     }
 }
 
@@ -133,7 +134,7 @@ std::uint64_t listLength(HeaderReader &r, const Widths &w, std::uint64_t tag)
     if (t == 0 && n == 0)
         return 0;
     if (t != tag)
-        throw NotClassic{};
+        throw NotClassic{"list tag " + std::to_string(t) + " where " + std::to_string(tag) + " belongs"};
     return n;
 }
 
@@ -168,7 +169,7 @@ VarExtent readVariable(HeaderReader &r, const Widths &w, const std::vector<std::
     {
         const std::uint64_t id = r.uint(w.nonNeg);
         if (id >= dimLen.size())
-            throw NotClassic{};
+            throw NotClassic{"dimension id " + std::to_string(id) + " of " + std::to_string(dimLen.size())};
         if (k == 0 && dimLen[id] == 0)
             v.record = true;
         else
@@ -176,6 +177,8 @@ VarExtent readVariable(HeaderReader &r, const Widths &w, const std::vector<std::
     }
     skipAttributes(r, w);
     v.bytes = mulSat(values, typeBytes(r.uint(4)));
+    if (v.bytes == kMax)
+        throw NotClassic{"a variable of more than 2^64 bytes"};
     r.uint(w.nonNeg);  // vsize
     v.begin = r.uint(w.offset);
     return v;
@@ -247,9 +250,12 @@ ClassicExtent classicExtent(std::istream &in, std::uint64_t size)
     {
         e.headerCut = true;
     }
-    catch (const NotClassic &)
+    catch (const NotClassic &bad)
     {
-        e.version = 0;
+        // after a classic magic number, a header that breaks the format is corrupt (NetCDF-C may divide by zero
+        // or allocate what it declares); without one, the file is simply not classic
+        if (e.version != 0)
+            e.corrupt = bad.why;
     }
     return e;
 }
@@ -266,6 +272,8 @@ std::optional<std::string> classicTruncation(const std::string &path)
     const std::string s = std::to_string(e.fileBytes);
     if (e.version == 0)
         return std::nullopt;
+    if (!e.corrupt.empty())
+        return "is corrupt: its classic-format header is broken (" + e.corrupt + ")";
     if (e.headerCut)
         return "is truncated or corrupt: it ends inside its header, after " + s +
                " bytes (or its header declares more values than the file holds)";

@@ -107,6 +107,8 @@ private:
 struct ClassicExtent
 {
     int version{0};              ///< 1, 2 or 5; 0 when the bytes are not a classic header
+    std::string corrupt;         ///< after a classic magic number, what breaks the format (unknown type or tag,
+                                 ///< a dimension id out of range, a variable of more than 2^64 bytes)
     bool headerCut{false};       ///< the bytes end inside the header (headerEnd and the data fields are then 0)
     bool streaming{false};       ///< numrecs is STREAMING: the record count is unknown and the records unchecked
     std::uint64_t fileBytes{0};  ///< bytes of the file
@@ -120,7 +122,8 @@ struct ClassicExtent
 };
 
 /// Parses the classic header at the start of `in`, a file of `size` bytes. Never throws for bad bytes: version 0
-/// when they are not a classic header, headerCut when they end inside it.
+/// when they are not a classic header, corrupt when they break the format after a classic magic number,
+/// headerCut when they end inside it.
 ClassicExtent classicExtent(std::istream &in, std::uint64_t size);
 
 /// Why the classic-format file at `path` is shorter than its header declares ("is truncated: its header declares
