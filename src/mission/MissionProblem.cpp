@@ -52,6 +52,16 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     o.timeName = var("time");
     o.maskName = var("mask");
     o.zeroVelocityIsLand = c.zeroVelocityLand;
+    // the trip's records (land is decided on them): from the departure (or the window's first) to the horizon
+    const double departure = m.departure.window ? m.departure.begin : m.departure.time;
+    if (std::isfinite(departure) && departure > 0.0)
+    {
+        char text[40];
+        std::snprintf(text, sizeof text, "%.17g", departure);
+        o.departure = text;
+        if (m.planner.horizon > 0.0)
+            o.horizon = m.planner.horizon + (m.departure.window ? m.departure.end - m.departure.begin : 0.0);
+    }
     o.field.xy = parseInterp2D(c.xyInterpolation);
     o.field.depth = parseInterp1D(c.depthInterpolation);
     o.field.time = parseInterp1D(c.timeInterpolation);

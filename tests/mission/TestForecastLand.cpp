@@ -1,0 +1,128 @@
+// A route on a model file whose land is stored as zero velocities (as POP writes it): a peninsula between start and
+// goal with a strong current through it would make the straight route attractive; the route must go around it.
+// Checked independently of the planner's own land test: every leg is sampled every ~50 m (a cell is ~20 km) and no
+// sample may lie inside a cell with a land corner, computed from lon/lat and the land node list.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <utility>
+
+#include "../current/TestNetCdfUtil.h"
+#include "ompl_glider/mission/ForecastMission.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/Planning.h"
+
+using namespace ompl_glider;
+using namespace glider_test;
+
+namespace
+{
+// 0.2-degree grid, lon -80..-76, lat 25..28 (21 x 16 nodes); the peninsula: lon -78.6..-77.4 (i = 7..13), lat
+// 25..27.2 (j = 0..11), attached to the southern edge; open water north of it
+constexpr std::size_t kNx = 21, kNy = 16;
+bool peninsula(std::size_t i, std::size_t j)
+{
+    return i >= 7 && i <= 13 && j <= 11;
+}
+double lonOf(std::size_t i)
+{
+    return -80.0 + 0.2 * double(i);
+}
+double latOf(std::size_t j)
+{
+    return 25.0 + 0.2 * double(j);
+}
+
+void writePopLike(const std::string &path)
+{
+    NcWriter w(path, NC_CLOBBER);  // classic format, as many model archives are
+    const int dt = w.dim("time", 2), dy = w.dim("lat", kNy), dx = w.dim("lon", kNx);
+    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
+    w.text(vt, "units", "hours since 2026-05-01 00:00:00");
+    w.text(vy, "units", "degrees_north");
+    w.text(vx, "units", "degrees_east");
+    const int vu = w.var("UVEL", NC_FLOAT, {dt, dy, dx}), vv = w.var("VVEL", NC_FLOAT, {dt, dy, dx});
+    for (int v : {vu, vv})
+        w.text(v, "units", "m/s");
+    w.text(vu, "standard_name", "eastward_sea_water_velocity");
+    w.text(vv, "standard_name", "northward_sea_water_velocity");
+    w.enddef();
+    w.put(vt, {0.0, 720.0});
+    std::vector<double> lat(kNy), lon(kNx);
+    for (std::size_t j = 0; j < kNy; ++j)
+        lat[j] = latOf(j);
+    for (std::size_t i = 0; i < kNx; ++i)
+        lon[i] = lonOf(i);
+    w.put(vy, lat);
+    w.put(vx, lon);
+    std::vector<double> u, v;
+    for (int t = 0; t < 2; ++t)
+        for (std::size_t j = 0; j < kNy; ++j)
+            for (std::size_t i = 0; i < kNx; ++i)
+            {
+                // land: exactly zero; water: an eastward current of 0.4 m/s in the south (where it would carry
+                // a glider straight across the peninsula), weaker to the north
+                u.push_back(peninsula(i, j) ? 0.0 : 0.4 - 0.02 * double(j));
+                v.push_back(peninsula(i, j) ? 0.0 : 0.02);
+            }
+    w.put(vu, u);
+    w.put(vv, v);
+}
+
+/// True when (lon, lat) lies inside a grid cell with a land corner, shrunk by `margin` degrees on each side.
+bool inLandCell(double lon, double lat, double margin)
+{
+    const double fi = (lon + 80.0) / 0.2, fj = (lat - 25.0) / 0.2;
+    if (fi < 0 || fj < 0 || fi >= kNx - 1 || fj >= kNy - 1)
+        return false;
+    const std::size_t i = std::size_t(fi), j = std::size_t(fj);
+    const bool land = peninsula(i, j) || peninsula(i + 1, j) || peninsula(i, j + 1) || peninsula(i + 1, j + 1);
+    const double m = margin / 0.2;
+    return land && fi - double(i) > m && double(i + 1) - fi > m && fj - double(j) > m && double(j + 1) - fj > m;
+}
+}  // namespace
+
+TEST(ForecastLand, RouteGoesAroundAPeninsulaStoredAsZeroVelocity)
+{
+    TempDir dir;
+    const std::string file = dir.file("pop_like.nc");
+    writePopLike(file);
+    ForecastInput in;
+    in.file = file;
+    in.start = {-79.5, 25.6};  // south-west of the peninsula
+    in.goal = {-76.5, 26.4};   // east of it: the straight line crosses it
+    in.speed = 0.5;
+    const MissionSpec spec = forecastMission(in);
+    const MissionProblem problem(spec);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.status << " " << r.plan.reason;
+    EXPECT_TRUE(std::isinf(r.plan.straightLineTime)) << "the straight leg must be refused";
+    // the route passes north of the peninsula
+    double northmost = -90.0;
+    for (const TimedWaypoint &w : r.plan.path)
+        northmost = std::max(northmost, problem.toGeographic({w.x, w.y}).lat);
+    EXPECT_GT(northmost, latOf(11));
+    // independent land clearance: every ~50 m along every leg
+    for (std::size_t k = 0; k + 1 < r.plan.path.size(); ++k)
+    {
+        const TimedWaypoint &a = r.plan.path[k], &b = r.plan.path[k + 1];
+        const double len = std::hypot(b.x - a.x, b.y - a.y);
+        const int n = std::max(2, int(len / 50.0));
+        for (int q = 0; q <= n; ++q)
+        {
+            const double s = double(q) / n;
+            const LonLat g = problem.toGeographic({a.x + s * (b.x - a.x), a.y + s * (b.y - a.y)});
+            // 0.001 degree (~100 m) margin: the planner's cells have straight projected edges, the check's cells
+            // follow meridians and parallels; they differ by far less than that over a 0.2-degree cell
+            ASSERT_FALSE(inLandCell(g.lon, g.lat, 0.001)) << "leg " << k << " at " << g.lon << ", " << g.lat;
+        }
+    }
+    // the same file with zero velocities taken as water would let the route cross (the old, unsafe answer)
+    ForecastInput water = in;
+    water.zeroVelocityLand = false;
+    const MissionProblem open(forecastMission(water));
+    const MissionResult ro = runMission(open);
+    ASSERT_TRUE(ro.plan.solved);
+    EXPECT_TRUE(std::isfinite(ro.plan.straightLineTime));
+}
