@@ -16,6 +16,7 @@ PACKAGES=(
   libproj-dev
   libcairo2-dev
   libcli11-dev nlohmann-json3-dev
+  libgdal-dev
   python3 python3-matplotlib
   clang-14 libfuzzer-14-dev
 )

@@ -97,6 +97,11 @@ void applySettings(const Flags &f, MissionSpec &m)
     if (f.speed)
         m.vehicle.speed = m.travel.speed = *f.speed;
     m.outputs.directory = f.out;
+    if (!f.coastline.empty())
+    {
+        m.forbidden.coastline = f.coastline;
+        m.forbidden.coastlineMark = SourceMark{"--coastline", 0};
+    }
 }
 }  // namespace
 
@@ -163,6 +168,11 @@ void defineFlags(CLI::App &app, Flags &f)
     app.add_option("--out", f.out,
                    "write summary.json and the route files (waypoints.csv, path.csv, path.geojson, goto_l10.ma, "
                    "map.svg, map.png) into this directory; with --mission it replaces outputs.directory")
+        ->group(io);
+    app.add_option("--coastline", f.coastline,
+                   "land polygons from a GIS file (GeoJSON, Shapefile, KML, GeoPackage; read with GDAL/OGR), "
+                   "forbidden to the glider and drawn on the map")
+        ->check(CLI::ExistingFile)
         ->group(io);
     app.add_flag("--verbose", f.verbose, "show OMPL's log messages")->group(io);
     auto *nc = "NetCDF forecast (with --currents)";

@@ -8,6 +8,7 @@
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/mission/Coastline.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/Interpolation.h"
 #include "ompl_glider/current/LocalProjection.h"
@@ -264,6 +265,57 @@ void MissionProblem::buildRegions()
     auto regions = std::make_shared<ForbiddenRegions>();
     for (const auto &o : m.forbidden.obstacles)
         regions->add(std::make_shared<StaticRegion>(o.polygon.name, polygon(o.polygon, o.kind), o.kind));
+    if (!m.forbidden.coastline.empty())
+    {
+        // the coastline's land polygons that meet the box (with a margin of a tenth of its size)
+        const SourceMark &mk = m.forbidden.coastlineMark;
+        const std::string at = mk.line == 0 && mk.file.rfind("--", 0) == 0 ? mk.file + ": " : where(m, mk);
+        if (!isGeographic())
+            throw Error(at + "forbidden.coastline: the coastline is in lon/lat; give a 'projection' in the mission");
+        double lon0 = 180.0, lon1 = -180.0, lat0 = 90.0, lat1 = -90.0;
+        for (int k = 0; k <= 40; ++k)
+        {
+            const double s = k / 40.0;
+            for (const Point2 p : {Point2{box_.xMin + s * (box_.xMax - box_.xMin), box_.yMin},
+                                   Point2{box_.xMin + s * (box_.xMax - box_.xMin), box_.yMax},
+                                   Point2{box_.xMin, box_.yMin + s * (box_.yMax - box_.yMin)},
+                                   Point2{box_.xMax, box_.yMin + s * (box_.yMax - box_.yMin)}})
+            {
+                const LonLat g = toGeographic(p);
+                lon0 = std::min(lon0, g.lon);
+                lon1 = std::max(lon1, g.lon);
+                lat0 = std::min(lat0, g.lat);
+                lat1 = std::max(lat1, g.lat);
+            }
+        }
+        const double pad = 0.1 * std::max(lon1 - lon0, lat1 - lat0);
+        std::vector<LandPolygon> land;
+        try
+        {
+            land = readLandPolygons(m.forbidden.coastline, std::max(-180.0, lon0 - pad), std::max(-90.0, lat0 - pad),
+                                    std::min(180.0, lon1 + pad), std::min(90.0, lat1 + pad));
+        }
+        catch (const Error &e)
+        {
+            throw Error(at + e.what());
+        }
+        for (std::size_t k = 0; k < land.size(); ++k)
+        {
+            PolygonSpec p;
+            p.name = "coast " + std::to_string(k + 1);
+            p.geographic = true;
+            p.mark = m.forbidden.coastlineMark;
+            for (const LonLat &g : land[k].outer)
+                p.points.emplace_back(g.lon, g.lat);
+            for (const auto &h : land[k].holes)
+            {
+                p.holes.emplace_back();
+                for (const LonLat &g : h)
+                    p.holes.back().emplace_back(g.lon, g.lat);
+            }
+            regions->add(std::make_shared<StaticRegion>(p.name, polygon(p, "land"), "land"));
+        }
+    }
     for (const auto &t : m.forbidden.timeWindows)
     {
         std::vector<Interval> w;

@@ -1,6 +1,7 @@
 # mission/: mission files, the problem, the one planning pipeline, departure-time search
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/AkimaSpline.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Coastline.cpp
   ${CMAKE_CURRENT_LIST_DIR}/DepartureTimeSearch.cpp
   ${CMAKE_CURRENT_LIST_DIR}/IsoTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionLoader.cpp

@@ -148,6 +148,8 @@ struct ForbiddenSpec
     std::vector<IceSpec> ice;
     std::string geojson;                ///< GeoJSON file (Polygon / MultiPolygon features), resolved path
     bool geojsonGeographic{true};       ///< GeoJSON coordinates are lon/lat (RFC 7946); false: planning x/y
+    std::string coastline;              ///< land polygons from a GIS file (readLandPolygons()), resolved path
+    SourceMark coastlineMark;           ///< where it was given
 };
 
 /// @brief The planner and its parameters.

@@ -118,7 +118,7 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
 void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "forbidden";
-    r.checkMap(n, f, {"obstacles", "time_windows", "ice", "geojson", "geojson_coordinates"});
+    r.checkMap(n, f, {"obstacles", "time_windows", "ice", "geojson", "geojson_coordinates", "coastline"});
     auto list = [&](const char *key) -> YAML::Node {
         const YAML::Node &l = n[key];
         if (l && !l.IsSequence())
@@ -192,6 +192,14 @@ void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
     {
         m.forbidden.geojson = joinPath(r.dir(), r.text(n["geojson"], f + ".geojson"));
         readGeoJson(r, n["geojson"], m);
+    }
+    if (n["coastline"])
+    {
+        // read when the problem is built, clipped to the trip's box (MissionProblem::buildRegions())
+        m.forbidden.coastline = joinPath(r.dir(), r.text(n["coastline"], f + ".coastline"));
+        m.forbidden.coastlineMark = {r.file(), r.line(n["coastline"])};
+        if (!fileExists(m.forbidden.coastline))
+            r.fail(n["coastline"], f + ".coastline", "cannot open '" + m.forbidden.coastline + "'");
     }
 }
 }  // namespace ompl_glider::mission_loader

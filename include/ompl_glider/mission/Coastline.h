@@ -1,0 +1,32 @@
+#pragma once
+/// @file Coastline.h
+/// @brief Land polygons from a vector GIS file (GeoJSON, ESRI Shapefile, KML, GeoPackage, GMT/OGR...), read with
+/// GDAL/OGR: the coastline a pilot has (GSHHG, Natural Earth, a national chart's land area), forbidden to the
+/// glider and drawn on the map.
+
+#include <string>
+#include <vector>
+
+#include "ompl_glider/Geometry.h"
+
+namespace ompl_glider
+{
+/// @brief One land polygon in lon/lat (degrees, WGS 84), rings not closed (the first vertex is not repeated).
+struct LandPolygon
+{
+    std::vector<LonLat> outer;
+    std::vector<std::vector<LonLat>> holes;  ///< lakes
+};
+
+/// @brief The land polygons of every layer of @p path that meet the box [lonMin, lonMax] x [latMin, latMax],
+/// clipped to it (GEOS intersection through OGR), so that only what the trip can meet is kept.
+///
+/// Polygons and multi-polygons are read as they are; closed line strings (a shoreline written as a line, as GMT's
+/// `coast -M` and some charts do) are taken as the outline of land. Coordinates are transformed to WGS 84 lon/lat
+/// from the layer's spatial reference when it has another one (a file without one is taken as lon/lat). The box
+/// must not cross the antimeridian (lonMin < lonMax within -180..180).
+/// @throws Error naming the file (and the feature) when it cannot be opened, holds no layer, holds an open line or
+/// a point where land is expected, or has coordinates that cannot be transformed to lon/lat.
+std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin, double latMin, double lonMax,
+                                          double latMax);
+}  // namespace ompl_glider

@@ -1,0 +1,170 @@
+// Land polygons from a vector GIS file through GDAL/OGR (see Coastline.h).
+#include "ompl_glider/mission/Coastline.h"
+
+#include <memory>
+#include <mutex>
+
+#include <cpl_error.h>
+#include <gdal_priv.h>
+#include <ogr_geometry.h>
+#include <ogr_spatialref.h>
+#include <ogrsf_frmts.h>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace
+{
+void registerDrivers()
+{
+    static std::once_flag once;
+    std::call_once(once, [] {
+        GDALAllRegister();
+        CPLSetErrorHandler(CPLQuietErrorHandler);  // errors reach the user through our messages
+    });
+}
+
+std::vector<LonLat> ringOf(const OGRLinearRing &r)
+{
+    std::vector<LonLat> v;
+    for (int k = 0; k < r.getNumPoints(); ++k)
+        v.push_back({r.getX(k), r.getY(k)});
+    if (v.size() > 1 && v.front().lon == v.back().lon && v.front().lat == v.back().lat)
+        v.pop_back();
+    return v;
+}
+
+void addPolygon(const OGRPolygon &p, std::vector<LandPolygon> &out)
+{
+    if (p.IsEmpty() || !p.getExteriorRing())
+        return;
+    LandPolygon lp;
+    lp.outer = ringOf(*p.getExteriorRing());
+    for (int k = 0; k < p.getNumInteriorRings(); ++k)
+        lp.holes.push_back(ringOf(*p.getInteriorRing(k)));
+    if (lp.outer.size() >= 3)
+        out.push_back(std::move(lp));
+}
+
+/// Polygons of a (clipped) geometry; lines and points left by the clipping (land touching the box's edge) are
+/// dropped.
+void collect(const OGRGeometry &g, std::vector<LandPolygon> &out)
+{
+    switch (wkbFlatten(g.getGeometryType()))
+    {
+        case wkbPolygon:
+            addPolygon(*g.toPolygon(), out);
+            break;
+        case wkbMultiPolygon:
+        case wkbGeometryCollection:
+        {
+            const auto &c = *g.toGeometryCollection();
+            for (int k = 0; k < c.getNumGeometries(); ++k)
+                collect(*c.getGeometryRef(k), out);
+            break;
+        }
+        default:
+            break;
+    }
+}
+}  // namespace
+
+std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin, double latMin, double lonMax,
+                                          double latMax)
+{
+    registerDrivers();
+    const std::string who = "coastline file '" + path + "'";
+    if (!(lonMin < lonMax) || !(latMin < latMax))
+        throw Error(who + ": empty box");
+    std::unique_ptr<GDALDataset> ds(
+        GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+    if (!ds)
+        throw Error(who + ": cannot open it as a vector GIS file (GeoJSON, Shapefile, KML, GeoPackage...): " +
+                    CPLGetLastErrorMsg());
+    if (ds->GetLayerCount() == 0)
+        throw Error(who + ": holds no layer");
+    OGRSpatialReference wgs84;
+    wgs84.importFromEPSG(4326);
+    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    OGRPolygon box;
+    {
+        OGRLinearRing r;
+        r.addPoint(lonMin, latMin);
+        r.addPoint(lonMax, latMin);
+        r.addPoint(lonMax, latMax);
+        r.addPoint(lonMin, latMax);
+        r.closeRings();
+        box.addRing(&r);
+    }
+    std::vector<LandPolygon> out;
+    for (OGRLayer *layer : ds->GetLayers())
+    {
+        std::unique_ptr<OGRCoordinateTransformation> toLonLat;
+        if (const OGRSpatialReference *srs = layer->GetSpatialRef())
+        {
+            OGRSpatialReference src(*srs);
+            src.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+            if (!src.IsSame(&wgs84))
+            {
+                toLonLat.reset(OGRCreateCoordinateTransformation(&src, &wgs84));
+                if (!toLonLat)
+                    throw Error(who + ", layer '" + layer->GetName() +
+                                "': its spatial reference cannot be transformed to lon/lat (WGS 84)");
+            }
+        }
+        layer->ResetReading();
+        for (auto &feature : *layer)
+        {
+            const OGRGeometry *g0 = feature->GetGeometryRef();
+            if (!g0 || g0->IsEmpty())
+                continue;
+            std::unique_ptr<OGRGeometry> g(g0->clone());
+            const std::string which = who + ", layer '" + layer->GetName() + "', feature " +
+                                      std::to_string(feature->GetFID());
+            if (toLonLat && g->transform(toLonLat.get()) != OGRERR_NONE)
+                throw Error(which + ": its coordinates cannot be transformed to lon/lat");
+            const OGRwkbGeometryType type = wkbFlatten(g->getGeometryType());
+            if (type == wkbLineString || type == wkbMultiLineString)
+            {
+                // a shoreline written as closed lines: each closed line is the outline of land
+                auto lines = std::unique_ptr<OGRGeometry>(OGRGeometryFactory::forceToMultiLineString(g.release()));
+                auto *polys = new OGRMultiPolygon;
+                for (const OGRLineString *l : *lines->toMultiLineString())
+                {
+                    if (l->getNumPoints() < 4 || !l->get_IsClosed())
+                    {
+                        delete polys;
+                        throw Error(which + ": an open line; expected land polygons (or closed shorelines)");
+                    }
+                    OGRLinearRing r;
+                    r.addSubLineString(l);
+                    OGRPolygon p;
+                    p.addRing(&r);
+                    polys->addGeometry(&p);
+                }
+                g.reset(polys);
+            }
+            else if (type != wkbPolygon && type != wkbMultiPolygon && type != wkbGeometryCollection)
+                throw Error(which + ": a " + OGRGeometryTypeToName(g->getGeometryType()) +
+                            "; expected land polygons");
+            OGREnvelope e;
+            g->getEnvelope(&e);
+            if (e.MaxX < lonMin || e.MinX > lonMax || e.MaxY < latMin || e.MinY > latMax)
+                continue;
+            if (!g->IsValid())
+            {
+                std::unique_ptr<OGRGeometry> fixed(g->MakeValid());
+                if (!fixed)
+                    throw Error(which + ": an invalid polygon that cannot be repaired");
+                g = std::move(fixed);
+            }
+            std::unique_ptr<OGRGeometry> clipped(g->Intersection(&box));
+            if (!clipped)
+                throw Error(which + ": cannot be clipped to the trip's box (GEOS)");
+            collect(*clipped, out);
+        }
+    }
+    return out;
+}
+}  // namespace ompl_glider

@@ -1,0 +1,225 @@
+// Coastlines from GIS files: a real GSHHG extract (examples/jamaica_coast.geojson, made by scripts/make_coastline.sh)
+// as forbidden land and map outline; the same land written by GDAL as a Shapefile in Web Mercator and as KML, a
+// shoreline written as a closed line, and bad files.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+#include <ogrsf_frmts.h>
+
+#include "../current/TestNetCdfUtil.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/mission/Coastline.h"
+#include "ompl_glider/mission/ForecastMission.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/Planning.h"
+
+using namespace ompl_glider;
+using namespace glider_test;
+
+namespace
+{
+const std::string kJamaica = std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/jamaica_coast.geojson";
+
+/// Even-odd point-in-ring test on lon/lat (an independent reference for the planner's polygons).
+bool inside(const std::vector<LonLat> &ring, double lon, double lat)
+{
+    bool in = false;
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++)
+    {
+        const LonLat &a = ring[i], &b = ring[j];
+        if ((a.lat > lat) != (b.lat > lat) && lon < (b.lon - a.lon) * (lat - a.lat) / (b.lat - a.lat) + a.lon)
+            in = !in;
+    }
+    return in;
+}
+
+double ringArea(const std::vector<LonLat> &r)
+{
+    double a = 0;
+    for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+        a += (r[j].lon - r[i].lon) * (r[j].lat + r[i].lat);
+    return std::abs(0.5 * a);
+}
+
+/// Writes the polygons to a GDAL vector file of the given driver, in the given EPSG code.
+void writeWithGdal(const std::string &path, const char *driver, int epsg, const std::vector<LandPolygon> &land,
+                   bool asLines = false)
+{
+    GDALAllRegister();
+    GDALDriver *drv = GetGDALDriverManager()->GetDriverByName(driver);
+    ASSERT_NE(drv, nullptr) << driver;
+    std::unique_ptr<GDALDataset> ds(drv->Create(path.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    ASSERT_NE(ds, nullptr) << path;
+    OGRSpatialReference srs, wgs84;
+    srs.importFromEPSG(epsg);
+    srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    wgs84.importFromEPSG(4326);
+    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    std::unique_ptr<OGRCoordinateTransformation> ct(OGRCreateCoordinateTransformation(&wgs84, &srs));
+    OGRLayer *layer = ds->CreateLayer("land", &srs, asLines ? wkbLineString : wkbPolygon, nullptr);
+    ASSERT_NE(layer, nullptr);
+    for (const LandPolygon &p : land)
+    {
+        OGRLinearRing r;
+        for (const LonLat &g : p.outer)
+            r.addPoint(g.lon, g.lat);
+        r.closeRings();
+        std::unique_ptr<OGRGeometry> geom;
+        if (asLines)
+        {
+            auto *l = new OGRLineString;
+            l->addSubLineString(&r);
+            geom.reset(l);
+        }
+        else
+        {
+            auto *poly = new OGRPolygon;
+            poly->addRing(&r);
+            geom.reset(poly);
+        }
+        ASSERT_EQ(geom->transform(ct.get()), OGRERR_NONE);
+        OGRFeature f(layer->GetLayerDefn());
+        f.SetGeometry(geom.get());
+        ASSERT_EQ(layer->CreateFeature(&f), OGRERR_NONE);
+    }
+}
+
+/// A 0.1-degree file over lon -79.5..-75, lat 16.5..19.5 with no land and a westward current of 0.1 m/s.
+void writeCaribbean(const std::string &path)
+{
+    NcWriter w(path);
+    const std::size_t nx = 46, ny = 31;
+    const int dt = w.dim("time", 2), dy = w.dim("lat", ny), dx = w.dim("lon", nx);
+    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
+    w.text(vt, "units", "days since 2026-06-01");
+    w.text(vy, "units", "degrees_north");
+    w.text(vx, "units", "degrees_east");
+    const int vu = w.var("uo", NC_FLOAT, {dt, dy, dx}), vv = w.var("vo", NC_FLOAT, {dt, dy, dx});
+    w.text(vu, "standard_name", "eastward_sea_water_velocity");
+    w.text(vv, "standard_name", "northward_sea_water_velocity");
+    w.text(vu, "units", "m s-1");
+    w.text(vv, "units", "m s-1");
+    w.enddef();
+    w.put(vt, {0.0, 30.0});
+    w.put(vy, linspace(16.5, 0.1, ny));
+    w.put(vx, linspace(-79.5, 0.1, nx));
+    w.put(vu, std::vector<double>(2 * nx * ny, -0.1));
+    w.put(vv, std::vector<double>(2 * nx * ny, 0.01));
+}
+}  // namespace
+
+TEST(Coastline, GshhgExtractOfJamaicaIsOneLandPolygon)
+{
+    const auto land = readLandPolygons(kJamaica, -80, 16, -75, 20);
+    ASSERT_EQ(land.size(), 1u);
+    // Jamaica: about 11,000 km^2, 1.0 square degree at 18N (1 deg^2 = 111 x 105.6 km^2); GSHHG's low resolution
+    // keeps the outline within a few per cent
+    EXPECT_NEAR(ringArea(land[0].outer), 0.94, 0.1);
+    EXPECT_TRUE(inside(land[0].outer, -77.3, 18.1));   // the island's interior
+    EXPECT_FALSE(inside(land[0].outer, -77.3, 17.5));  // south of it
+    // a box that holds only the eastern half: clipped to it
+    const auto east = readLandPolygons(kJamaica, -77.0, 16, -75, 20);
+    ASSERT_EQ(east.size(), 1u);
+    for (const LonLat &g : east[0].outer)
+        EXPECT_GE(g.lon, -77.0 - 1e-9);
+    EXPECT_LT(ringArea(east[0].outer), ringArea(land[0].outer));
+    // a box away from it: nothing
+    EXPECT_TRUE(readLandPolygons(kJamaica, -70, 10, -65, 12).empty());
+}
+
+TEST(Coastline, ShapefileInWebMercatorKmlAndClosedShorelinesReadTheSame)
+{
+    TempDir dir;
+    const auto land = readLandPolygons(kJamaica, -80, 16, -75, 20);
+    ASSERT_EQ(land.size(), 1u);
+    const double area = ringArea(land[0].outer);
+    const std::string shp = dir.file("jamaica_3857.shp"), kml = dir.file("jamaica.kml"),
+                      lines = dir.file("shore.geojson");
+    writeWithGdal(shp, "ESRI Shapefile", 3857, land);
+    writeWithGdal(kml, "KML", 4326, land);
+    writeWithGdal(lines, "GeoJSON", 4326, land, true);
+    for (const std::string &f : {shp, kml, lines})
+    {
+        const auto again = readLandPolygons(f, -80, 16, -75, 20);
+        ASSERT_EQ(again.size(), 1u) << f;
+        EXPECT_NEAR(ringArea(again[0].outer), area, 1e-6 * area) << f;
+        EXPECT_TRUE(inside(again[0].outer, -77.3, 18.1)) << f;
+    }
+}
+
+TEST(Coastline, BadFilesAreErrorsNamingTheFile)
+{
+    TempDir dir;
+    const std::string open = dir.file("open.geojson"), point = dir.file("point.geojson"), junk = dir.file("junk.shp");
+    std::ofstream(open) << R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},)"
+                           R"("geometry":{"type":"LineString","coordinates":[[-77,18],[-76,18.5],[-75.5,18]]}}]})";
+    std::ofstream(point) << R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},)"
+                            R"("geometry":{"type":"Point","coordinates":[-77,18]}}]})";
+    std::ofstream(junk) << "not a shapefile";
+    for (const auto &[file, phrase] : std::vector<std::pair<std::string, std::string>>{
+             {open, "open line"}, {point, "Point"}, {junk, "cannot open"}, {dir.file("missing.kml"), "cannot open"}})
+    {
+        try
+        {
+            readLandPolygons(file, -80, 16, -75, 20);
+            ADD_FAILURE() << file;
+        }
+        catch (const Error &e)
+        {
+            const std::string msg = e.what();
+            EXPECT_NE(msg.find(file), std::string::npos) << msg;
+            EXPECT_NE(msg.find(phrase), std::string::npos) << msg;
+        }
+    }
+}
+
+TEST(Coastline, RouteGoesAroundJamaicaAndAStartOnItIsBadInput)
+{
+    TempDir dir;
+    const std::string nc = dir.file("caribbean.nc");
+    writeCaribbean(nc);
+    ForecastInput in;
+    in.file = nc;
+    in.start = {-78.8, 18.2};  // west of Jamaica
+    in.goal = {-75.8, 18.1};   // east of it
+    in.speed = 0.4;
+    // without the coastline the file has no land: the straight leg crosses the island
+    const MissionProblem bare(forecastMission(in));
+    const MissionResult rb = runMission(bare);
+    ASSERT_TRUE(rb.plan.solved);
+    EXPECT_TRUE(std::isfinite(rb.plan.straightLineTime));
+
+    MissionSpec spec = forecastMission(in);
+    spec.forbidden.coastline = kJamaica;
+    const MissionProblem problem(spec);
+    ASSERT_EQ(problem.getPolygons().size(), 1u);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.status << " " << r.plan.reason;
+    EXPECT_TRUE(std::isinf(r.plan.straightLineTime));
+    EXPECT_GT(r.plan.travelTime, rb.plan.travelTime);
+    // every ~200 m of the route lies outside the island (independent point-in-polygon on lon/lat)
+    const auto land = readLandPolygons(kJamaica, -80, 16, -75, 20);
+    for (std::size_t k = 0; k + 1 < r.plan.path.size(); ++k)
+    {
+        const TimedWaypoint &a = r.plan.path[k], &b = r.plan.path[k + 1];
+        const int n = std::max(2, int(std::hypot(b.x - a.x, b.y - a.y) / 200.0));
+        for (int q = 0; q <= n; ++q)
+        {
+            const double s = double(q) / n;
+            const LonLat g = problem.toGeographic({a.x + s * (b.x - a.x), a.y + s * (b.y - a.y)});
+            ASSERT_FALSE(inside(land[0].outer, g.lon, g.lat)) << "leg " << k << " at " << g.lon << ", " << g.lat;
+        }
+    }
+    // a start on the island is bad input
+    MissionSpec onLand = spec;
+    onLand.start.lon = onLand.start.x = -77.3;
+    onLand.start.lat = onLand.start.y = 18.1;
+    const MissionProblem p2(onLand);
+    const PlannedPath pp = planRoute(p2, p2.getSpec().departure.time);
+    EXPECT_FALSE(pp.solved);
+    EXPECT_EQ(pp.badInput, "start");
+}
