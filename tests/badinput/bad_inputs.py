@@ -181,8 +181,11 @@ nc_case("nc-no-time-records", forecast(replace=[("time = 0, 24, 48 ;", ""),
 nc_case("nc-lon-not-monotonic", forecast(lon="-53.0, -52.8, -52.2, -52.4, -52.6, -52.0"), "lon")
 nc_case("nc-lat-not-monotonic", forecast(lat="47.0, 47.2, 47.4, 47.4, 47.8, 48.0"), "lat")
 nc_case("nc-lat-nan", forecast(lat="47.0, 47.2, NaN, 47.6, 47.8, 48.0"), "lat")
-nc_case("nc-units-unknown", forecast(replace=[('u:units = "m s-1"', 'u:units = "furlongs per fortnight"')]),
-        "furlongs")
+# (furlongs per fortnight would be a velocity: UDUNITS-2 converts it)
+nc_case("nc-units-unknown", forecast(replace=[('u:units = "m s-1"', 'u:units = "furlongs per blink"')]),
+        "furlongs per blink")
+nc_case("nc-units-not-velocity", forecast(replace=[('u:units = "m s-1"', 'u:units = "degC"')]),
+        "variable 'u': units 'degC' are not a velocity")
 nc_case("nc-time-units-bad", forecast(replace=[('"hours since 2026-03-15 00:00:00"', '"hours since whenever"')]),
         "time")
 nc_case("nc-time-not-monotonic", forecast(replace=[("time = 0, 24, 48 ;", "time = 0, 48, 24 ;")]), "time")

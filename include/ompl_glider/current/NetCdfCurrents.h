@@ -37,7 +37,8 @@ struct NetCdfCurrentOptions
     std::string depthName;  ///< depth coordinate variable
     std::string timeName;   ///< time coordinate variable
     CoordinateMode coordinates{CoordinateMode::Auto};  ///< how to read x/y
-    std::string velocityUnits;  ///< overrides the units attribute of u and v ("m/s", "cm/s", "knots")
+    std::string velocityUnits;  ///< overrides the units attribute of u and v: any velocity UDUNITS-2 reads ("m/s",
+                                ///< "cm s-1", "knots", "km/h"; UnitConversion.h)
 
     // --- model ---
     GriddedFieldOptions field;  ///< schemes (xy bilinear, depth linear, time linear), BeyondForecast, name
@@ -102,7 +103,8 @@ struct NetCdfCurrents
 /// value (plus the netCDF default fill when _FillValue is absent, and NaN); CF time units with the standard,
 /// gregorian, proleptic_gregorian, julian, noleap/365_day, all_leap/366_day and 360_day calendars; longitudes
 /// in -180..180 or 0..360 and regions across the seam of a global grid; latitude and depth ascending or
-/// descending; depth positive="up" negated; velocities in m/s, cm/s or knots. Only the hyperslab covering the
+/// descending; depth positive="up" negated; velocities, Cartesian axes and depths in any unit UDUNITS-2 reads
+/// ("m s-1", "cm/s", "knots", "km/h"; "km", "centimeters": UnitConversion.h). Only the hyperslab covering the
 /// region (+ margin), the depth layers down to maxDepth and the time window is read (nc_get_vara).
 ///
 /// Geographic grids (1-D or 2-D) become curvilinear grids of projected nodes (LocalProjection about the

@@ -37,6 +37,7 @@
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/LocalProjection.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/UnitConversion.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
@@ -339,13 +340,15 @@ void checkTripMemory(const NcFile &f, std::size_t ni, std::size_t nj, std::size_
 HyperslabPlan planHyperslab(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                             const AxisSelection &t);
 
-/// Factor of a velocity unit string to m/s (m/s, cm/s, knots and their spellings); nullopt if unknown.
-std::optional<double> velocityScale(const std::string &units);
-/// Factor to m/s of u and v (options' velocityUnits, else their units attributes; 1 for dimensionless velocities
-/// of a Cartesian file). @throws Error for units not understood or different for u and v.
-double velocityScaleOf(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt);
-/// Factor of a Cartesian axis' units to metres (1000 for km, else 1).
-double axisScale(const NcFile &f, int var);
+/// The conversion to m/s of u and v (UDUNITS-2, velocityToMetresPerSecond()): the options' velocityUnits, else
+/// their units attributes; the identity for velocities without units ("" or "1") in a Cartesian file.
+/// @throws Error naming the file, the variable (or NetCdfCurrentOptions::velocityUnits) and the units when they
+/// are missing, not understood, not a velocity, or different for u and v.
+LinearConversion velocityConversionOf(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt);
+/// The conversion to metres of a Cartesian axis' units (UDUNITS-2, lengthToMetres()); the identity without
+/// units or for dimensionless ones (degrees included). @throws Error naming the file, the variable and the units
+/// when they are not a length.
+LinearConversion axisConversion(const NcFile &f, int var);
 
 /// Packing and missing-value rules of a variable (compared on the packed value).
 struct Packing
@@ -360,9 +363,10 @@ struct Packing
 /// valid_range / valid_min / valid_max. @throws Error for a zero or non-finite scale or offset.
 Packing packingOf(const NcFile &f, int var);
 
-/// Reads u and v over the plan into g.u / g.v (unpacked, m/s) and g.water (land where u or v is a fill value at
+/// Reads u and v over the plan into g.u / g.v (unpacked, converted to m/s by vel) and g.water (land where u or v is a fill value at
 /// any time). g.nx, g.ny, g.depth and g.time must be set.
-void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, double velScale, GriddedData &g);
+void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const LinearConversion &vel,
+                    GriddedData &g);
 
 // ---- coordinates (NodeCoordinates.cpp) ----
 

@@ -1,0 +1,243 @@
+// Forecast files as pilots get them: velocity units in any spelling UDUNITS-2 reads (converted with the exact
+// factor), non-velocity units refused, the units override; axes and depths in any length unit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "TestNetCdfUtil.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/UnitConversion.h"
+
+using namespace ompl_glider;
+using glider_test::linspace;
+using glider_test::NcWriter;
+using glider_test::TempDir;
+
+namespace
+{
+std::string errorOf(const std::function<void()> &f)
+{
+    try
+    {
+        f();
+    }
+    catch (const Error &e)
+    {
+        return e.what();
+    }
+    return "";
+}
+
+/// A Cartesian file u(time, y, x) = uRaw, v(time, y, x) = vRaw in the given units (x, y in metres, 2 times 1 h
+/// apart); no units attribute when `units` is "-".
+void writeCartesian(const std::string &path, const std::string &units, double uRaw, double vRaw)
+{
+    NcWriter w(path);
+    const int dt = w.dim("time", 2), dy = w.dim("y", 3), dx = w.dim("x", 4);
+    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("y", NC_DOUBLE, {dy}), vx = w.var("x", NC_DOUBLE, {dx});
+    w.text(vt, "units", "seconds since 2026-01-01 00:00:00");
+    w.text(vy, "units", "m");
+    w.text(vx, "units", "m");
+    const int u = w.var("u", NC_DOUBLE, {dt, dy, dx}), v = w.var("v", NC_DOUBLE, {dt, dy, dx});
+    if (units != "-")
+    {
+        w.text(u, "units", units);
+        w.text(v, "units", units);
+    }
+    w.enddef();
+    w.put(vt, {0.0, 3600.0});
+    w.put(vy, linspace(0.0, 1000.0, 3));
+    w.put(vx, linspace(0.0, 1000.0, 4));
+    w.put(u, std::vector<double>(24, uRaw));
+    w.put(v, std::vector<double>(24, vRaw));
+}
+
+}  // namespace
+
+TEST(NetCdfUnits, SpellingsOfCmPerSecondKnotsAndOthersConvertWithTheExactFactor)
+{
+    TempDir tmp;
+    struct Case
+    {
+        std::string units;
+        double factor;
+    };
+    const double knot = 1852.0 / 3600.0;
+    const std::vector<Case> cases = {
+        {"m s-1", 1.0}, {"m/s", 1.0}, {"M/S", 1.0}, {"meters per second", 1.0}, {"mps", 1.0}, {"ms-1", 1.0},
+        {"cm/s", 0.01}, {"cm s-1", 0.01}, {"centimeter/s", 0.01}, {"centimeters per second", 0.01},
+        {"CM/S", 0.01}, {"cm.s-1", 0.01}, {"cms-1", 0.01},
+        {"knots", knot}, {"knot", knot}, {"kt", knot}, {"kts", knot}, {"kn", knot}, {"KT", knot},
+        {"km/h", 1000.0 / 3600.0}, {"mm/s", 0.001}, {" mm s-1 ", 0.001},
+        {"furlongs/fortnight", 660.0 * 1200.0 / 3937.0 / (14 * 86400.0)}};  // UDUNITS: 660 US survey feet
+    const double uRaw = 37.0, vRaw = -12.5;
+    int n = 0;
+    for (const Case &c : cases)
+    {
+        const std::string path = tmp.file("units" + std::to_string(n++) + ".nc");
+        writeCartesian(path, c.units, uRaw, vRaw);
+        const NetCdfCurrents nc = loadNetCdfCurrents(path);
+        const Velocity w = nc.field->velocity(1500.0, 700.0, 0.0, 1800.0);
+        // float storage: 7 significant digits; a wrong factor (1, 0.1, 1/1.852) is far off
+        EXPECT_NEAR(w.u, uRaw * c.factor, 1e-6 * std::abs(uRaw * c.factor)) << "'" << c.units << "'";
+        EXPECT_NEAR(w.v, vRaw * c.factor, 1e-6 * std::abs(vRaw * c.factor)) << "'" << c.units << "'";
+    }
+    // the factors themselves, to the last bit where the closed form is one rounding away
+    EXPECT_DOUBLE_EQ(velocityToMetresPerSecond("cm/s").factor, 0.01);
+    EXPECT_DOUBLE_EQ(velocityToMetresPerSecond("centimeter/s").factor, 0.01);
+    EXPECT_DOUBLE_EQ(velocityToMetresPerSecond("knots").factor, knot);
+    EXPECT_DOUBLE_EQ(velocityToMetresPerSecond("kt").factor, knot);
+    EXPECT_EQ(velocityToMetresPerSecond("m s-1").offset, 0.0);
+    EXPECT_DOUBLE_EQ(lengthToMetres("km").factor, 1000.0);
+    EXPECT_DOUBLE_EQ(lengthToMetres("centimeters").factor, 0.01);
+    EXPECT_TRUE(isDimensionless("degrees_east"));
+    EXPECT_TRUE(isDimensionless("1"));
+    EXPECT_FALSE(isDimensionless("m"));
+}
+
+TEST(NetCdfUnits, ConversionsFromSeveralThreadsAgree)
+{
+    // UDUNITS-2's parser keeps global state: every call is serialised, the database read once
+    const std::vector<std::pair<std::string, double>> spellings = {
+        {"cm s-1", 0.01}, {"knots", 1852.0 / 3600.0}, {"km/h", 1000.0 / 3600.0}, {"m/s", 1.0}, {"mm/s", 0.001}};
+    std::vector<int> wrong(4, 0);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t)
+        threads.emplace_back([&, t] {
+            for (int i = 0; i < 300; ++i)
+            {
+                const auto &[units, factor] = spellings[std::size_t(i + t) % spellings.size()];
+                if (std::abs(velocityToMetresPerSecond(units).factor - factor) > 1e-15 * factor)
+                    ++wrong[std::size_t(t)];
+                try
+                {
+                    velocityToMetresPerSecond("degC");
+                    ++wrong[std::size_t(t)];
+                }
+                catch (const Error &)
+                {
+                }
+            }
+        });
+    for (std::thread &th : threads)
+        th.join();
+    EXPECT_EQ(wrong, std::vector<int>(4, 0));
+}
+
+TEST(NetCdfUnits, NonVelocityUnitsAreRefusedNamingFileVariableAndUnits)
+{
+    TempDir tmp;
+    for (const std::string units : {"degC", "m", "m s-2", "Pa"})
+    {
+        const std::string path = tmp.file("bad.nc");
+        writeCartesian(path, units, 1.0, 1.0);
+        const std::string m = errorOf([&] { loadNetCdfCurrents(path); });
+        EXPECT_NE(m.find(path), std::string::npos) << m;
+        EXPECT_NE(m.find("variable 'u'"), std::string::npos) << m;
+        EXPECT_NE(m.find("'" + units + "'"), std::string::npos) << m;
+        EXPECT_NE(m.find("not a velocity"), std::string::npos) << m;
+        EXPECT_NE(m.find("velocityUnits"), std::string::npos) << m;  // how to override them
+    }
+    const std::string path = tmp.file("gibberish.nc");
+    writeCartesian(path, "parsecs per thingy", 1.0, 1.0);
+    std::string m = errorOf([&] { loadNetCdfCurrents(path); });
+    EXPECT_NE(m.find("'parsecs per thingy'"), std::string::npos) << m;
+    EXPECT_NE(m.find("not understood"), std::string::npos) << m;
+    // the library function alone says what UDUNITS-2 made of them
+    m = errorOf([] { velocityToMetresPerSecond("degC"); });
+    EXPECT_NE(m.find("not a velocity"), std::string::npos) << m;
+    EXPECT_NE(m.find("K @ 273.15"), std::string::npos) << m;
+    m = errorOf([] { lengthToMetres("s"); });
+    EXPECT_NE(m.find("not a length"), std::string::npos) << m;
+}
+
+TEST(NetCdfUnits, OverrideReplacesTheFilesUnitsAndIsChecked)
+{
+    TempDir tmp;
+    const std::string path = tmp.file("wrong_units.nc");
+    writeCartesian(path, "degC", 40.0, 10.0);  // a file that says degC for velocities in cm/s
+    NetCdfCurrentOptions o;
+    o.velocityUnits = "cm s-1";
+    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    const Velocity w = nc.field->velocity(1500.0, 700.0, 0.0, 0.0);
+    EXPECT_NEAR(w.u, 0.4, 1e-7);
+    EXPECT_NEAR(w.v, 0.1, 1e-7);
+    o.velocityUnits = "knots";
+    EXPECT_NEAR(loadNetCdfCurrents(path, o).field->velocity(1500.0, 700.0, 0.0, 0.0).u, 40.0 * 1852.0 / 3600.0,
+                1e-5);
+    // velocities without units in a geographic file: the override is the way through
+    const std::string geo = tmp.file("geo.nc");
+    {
+        NcWriter w(geo);
+        const int dy = w.dim("lat", 2), dx = w.dim("lon", 2);
+        const int vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
+        w.text(vy, "units", "degrees_north");
+        w.text(vx, "units", "degrees_east");
+        const int u = w.var("u", NC_FLOAT, {dy, dx}), v = w.var("v", NC_FLOAT, {dy, dx});
+        w.enddef();
+        w.put(vy, {10.0, 10.1});
+        w.put(vx, {20.0, 20.1});
+        w.put(u, {50, 50, 50, 50});
+        w.put(v, {0, 0, 0, 0});
+    }
+    std::string m = errorOf([&] { loadNetCdfCurrents(geo); });
+    EXPECT_NE(m.find("variable 'u' has no units"), std::string::npos) << m;
+    EXPECT_NE(m.find("velocityUnits"), std::string::npos) << m;
+    NetCdfCurrentOptions g;
+    g.velocityUnits = "cm/s";
+    const Velocity gv = loadNetCdfCurrents(geo, g).field->velocity(0.0, 0.0, 0.0, 0.0);
+    EXPECT_NEAR(std::hypot(gv.u, gv.v), 0.5, 1e-6);
+    // a bad override names the option and the units
+    o.velocityUnits = "degC";
+    m = errorOf([&] { loadNetCdfCurrents(path, o); });
+    EXPECT_NE(m.find("NetCdfCurrentOptions::velocityUnits"), std::string::npos) << m;
+    EXPECT_NE(m.find("'degC'"), std::string::npos) << m;
+    EXPECT_NE(m.find("not a velocity"), std::string::npos) << m;
+    o.velocityUnits = "furlongs per blink";
+    m = errorOf([&] { loadNetCdfCurrents(path, o); });
+    EXPECT_NE(m.find("not understood"), std::string::npos) << m;
+}
+
+TEST(NetCdfUnits, CartesianAxesAndDepthInAnyLengthUnit)
+{
+    TempDir tmp;
+    // POP: depth z_t in centimetres, x/y in km; a time axis unit that is not a length is refused on an axis
+    const std::string path = tmp.file("pop_like.nc");
+    {
+        NcWriter w(path);
+        const int dz = w.dim("z_t", 3), dy = w.dim("y", 2), dx = w.dim("x", 2);
+        const int vz = w.var("z_t", NC_DOUBLE, {dz}), vy = w.var("y", NC_DOUBLE, {dy}), vx = w.var("x", NC_DOUBLE, {dx});
+        w.text(vz, "units", "centimeters");
+        w.text(vz, "positive", "down");
+        w.text(vy, "units", "km");
+        w.text(vx, "units", "kilometre");
+        const int u = w.var("uvel", NC_FLOAT, {dz, dy, dx}), v = w.var("vvel", NC_FLOAT, {dz, dy, dx});
+        w.text(u, "units", "centimeter/s");
+        w.text(v, "units", "centimeter/s");
+        w.enddef();
+        w.put(vz, {500.0, 1500.0, 2500.0});  // 5, 15, 25 m
+        w.put(vy, {0.0, 2.0});
+        w.put(vx, {0.0, 3.0});
+        // u = 10 cm/s at 5 m, 20 at 15 m, 30 at 25 m
+        std::vector<double> pu;
+        for (double s : {10.0, 20.0, 30.0})
+            for (int n = 0; n < 4; ++n)
+                pu.push_back(s);
+        w.put(u, pu);
+        w.put(v, std::vector<double>(12, 0.0));
+    }
+    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    EXPECT_EQ(nc.uVariable, "uvel");
+    EXPECT_EQ(nc.field->depthAxis().nodes(), (std::vector<double>{5.0, 15.0, 25.0}));
+    EXPECT_NEAR(nc.field->velocity(1500.0, 1000.0, 10.0, 0.0).u, 0.15, 1e-7);  // halfway 5 m .. 15 m
+    const Region e = nc.field->extent();
+    EXPECT_EQ(e.xMax, 3000.0);
+    EXPECT_EQ(e.yMax, 2000.0);
+}
