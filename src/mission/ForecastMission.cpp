@@ -41,6 +41,7 @@ std::string flagMessage(std::string what, const ForecastInput &q)
              {"NetCdfCurrentOptions::timeName/depthName/lonName/latName",
               "--time-var/--depth-var/--lon-var/--lat-var"},
              {"NetCdfCurrentOptions::lonName/latName", "--lon-var/--lat-var"},
+             {"NetCdfCurrentOptions::uName/vName", "--u-var/--v-var"},
              {"NetCdfCurrentOptions::uName", "--u-var"},
              {"NetCdfCurrentOptions::vName", "--v-var"},
              {"NetCdfCurrentOptions::lonName", "--lon-var"},

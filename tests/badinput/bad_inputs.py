@@ -234,6 +234,10 @@ variables:
 data: y = 0, 10000, 20000, 30000 ; x = 0, 10000, 20000, 30000, 40000 ;
 }
 """
+nc_case("nc-no-velocity-candidates", forecast(replace=[("float u(", "float speed_east("), ("u:", "speed_east:"),
+                                                       ("  u = ", "  speed_east = "),
+                                                       ('"eastward_sea_water_velocity"', '"sea_water_speed"')]),
+        "candidates: speed_east(time,lat,lon) [m s-1], v(time,lat,lon) [m s-1]; name them with --u-var/--v-var")
 nc_case("nc-cartesian-no-time-records", CARTESIAN, "time", args=("--start", "5000,5000", "--goal", "35000,25000"))
 case("mission-netcdf-departure-after-end", ["--mission", "m.yaml", "--out", "{out}"], 2, "departure",
      {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: f.nc}\nstart: {lon: -52.9, lat: 47.1}\n"

@@ -1,5 +1,7 @@
 // Forecast files as pilots get them: velocity units in any spelling UDUNITS-2 reads (converted with the exact
-// factor), non-velocity units refused, the units override; axes and depths in any length unit.
+// factor), non-velocity units refused, the units override; u/v under the usual names of models without CF
+// standard names (POP urot/vrot, winds UWND/VWND, u10/v10, UVEL/VVEL, ROMS u_eastward/v_northward) and the
+// candidate list when none is found.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -59,6 +61,51 @@ void writeCartesian(const std::string &path, const std::string &units, double uR
     w.put(v, std::vector<double>(24, vRaw));
 }
 
+/// Geographic 3 x 3 grid without CF standard names: u/v under the given names and dimensions (time, lat, lon)
+/// with `nt` times ("hours since 2026-03-01" unless timeUnits says otherwise; no time dimension when nt is 0);
+/// u = uRecord[k] at time k (0.1 when not given), v = 0.
+void writeGeographic(const std::string &path, const std::string &uName, const std::string &vName, std::size_t nt,
+                     const std::string &timeUnits = "hours since 2026-03-01 00:00:00",
+                     std::vector<double> uRecord = {})
+{
+    if (uRecord.empty())
+        uRecord.assign(std::max<std::size_t>(nt, 1), 0.1);
+    NcWriter w(path);
+    const int dy = w.dim("lat", 3), dx = w.dim("lon", 3);
+    int dt = -1, vt = -1;
+    if (nt > 0)
+    {
+        dt = w.dim("time", nt);
+        vt = w.var("time", NC_DOUBLE, {dt});
+        if (!timeUnits.empty())
+            w.text(vt, "units", timeUnits);
+    }
+    const int vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
+    w.text(vy, "units", "degrees_north");
+    w.text(vx, "units", "degrees_east");
+    const std::vector<int> dims = nt > 0 ? std::vector<int>{dt, dy, dx} : std::vector<int>{dy, dx};
+    const int u = w.var(uName, NC_FLOAT, dims), v = w.var(vName, NC_FLOAT, dims);
+    w.text(u, "units", "m/s");
+    w.text(v, "units", "m/s");
+    w.enddef();
+    if (nt > 0)
+        w.put(vt, linspace(0.0, 6.0, nt));
+    w.put(vy, {47.0, 47.1, 47.2});
+    w.put(vx, {-53.0, -52.9, -52.8});
+    std::vector<double> pu;
+    for (std::size_t k = 0; k < std::max<std::size_t>(nt, 1); ++k)
+        for (int n = 0; n < 9; ++n)
+            pu.push_back(uRecord[k]);
+    w.put(u, pu);
+    w.put(v, std::vector<double>(pu.size(), 0.0));
+}
+
+/// u at the centre node of a loaded geographic 3 x 3 file (eastward there: the projection's centre) at time t.
+double centreU(const NetCdfCurrents &nc, double t)
+{
+    const Point2 p = nc.toLocal({-52.9, 47.1});
+    return nc.field->velocity(p.x, p.y, 0.0, t).u;
+}
 }  // namespace
 
 TEST(NetCdfUnits, SpellingsOfCmPerSecondKnotsAndOthersConvertWithTheExactFactor)
@@ -218,7 +265,7 @@ TEST(NetCdfUnits, CartesianAxesAndDepthInAnyLengthUnit)
         w.text(vz, "positive", "down");
         w.text(vy, "units", "km");
         w.text(vx, "units", "kilometre");
-        const int u = w.var("uvel", NC_FLOAT, {dz, dy, dx}), v = w.var("vvel", NC_FLOAT, {dz, dy, dx});
+        const int u = w.var("UVEL", NC_FLOAT, {dz, dy, dx}), v = w.var("VVEL", NC_FLOAT, {dz, dy, dx});
         w.text(u, "units", "centimeter/s");
         w.text(v, "units", "centimeter/s");
         w.enddef();
@@ -234,10 +281,69 @@ TEST(NetCdfUnits, CartesianAxesAndDepthInAnyLengthUnit)
         w.put(v, std::vector<double>(12, 0.0));
     }
     const NetCdfCurrents nc = loadNetCdfCurrents(path);
-    EXPECT_EQ(nc.uVariable, "uvel");
+    EXPECT_EQ(nc.uVariable, "UVEL");
     EXPECT_EQ(nc.field->depthAxis().nodes(), (std::vector<double>{5.0, 15.0, 25.0}));
     EXPECT_NEAR(nc.field->velocity(1500.0, 1000.0, 10.0, 0.0).u, 0.15, 1e-7);  // halfway 5 m .. 15 m
     const Region e = nc.field->extent();
     EXPECT_EQ(e.xMax, 3000.0);
     EXPECT_EQ(e.yMax, 2000.0);
+}
+
+TEST(NetCdfNames, VelocitiesFoundUnderUsualNamesInAnyCase)
+{
+    TempDir tmp;
+    const std::vector<std::pair<std::string, std::string>> pairs = {
+        {"urot", "vrot"}, {"UWND", "VWND"}, {"uwnd", "vwnd"}, {"u10", "v10"},
+        {"UVEL", "VVEL"}, {"u_eastward", "v_northward"}, {"U10", "V10"}};
+    int n = 0;
+    for (const auto &[u, v] : pairs)
+    {
+        const std::string path = tmp.file("names" + std::to_string(n++) + ".nc");
+        writeGeographic(path, u, v, 2);
+        const NetCdfCurrents nc = loadNetCdfCurrents(path);
+        EXPECT_EQ(nc.uVariable, u);
+        EXPECT_EQ(nc.vVariable, v);
+        EXPECT_NEAR(centreU(nc, 0.0), 0.1, 1e-6) << u;
+    }
+}
+
+TEST(NetCdfNames, NoVelocityFoundListsTheCandidatesWithUnitsAndDimensions)
+{
+    TempDir tmp;
+    const std::string path = tmp.file("pop_misc.nc");
+    {
+        NcWriter w(path);
+        const int dt = w.dim("time", 1), dz = w.dim("z_t", 2), dj = w.dim("nlat", 2), di = w.dim("nlon", 2);
+        const int dy = w.dim("lat", 2), dx = w.dim("lon", 2);
+        const int vt = w.var("time", NC_DOUBLE, {dt});
+        w.text(vt, "units", "days since 2026-01-01");
+        const int vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
+        w.text(vy, "units", "degrees_north");
+        w.text(vx, "units", "degrees_east");
+        const int temp = w.var("temp", NC_FLOAT, {dt, dy, dx});
+        w.text(temp, "units", "degC");
+        const int uvel2 = w.var("UVEL2", NC_FLOAT, {dt, dz, dj, di});
+        w.text(uvel2, "units", "cm/s");
+        w.var("mask", NC_INT, {dj, di});
+        w.enddef();
+    }
+    const std::string m = errorOf([&] { loadNetCdfCurrents(path); });
+    EXPECT_NE(m.find(path), std::string::npos) << m;
+    EXPECT_NE(m.find("no eastward (u) velocity found"), std::string::npos) << m;
+    EXPECT_NE(m.find("candidates: temp(time,lat,lon) [degC], UVEL2(time,z_t,nlat,nlon) [cm/s], "
+                     "mask(nlat,nlon) [no units]"),
+              std::string::npos)
+        << m;
+    EXPECT_EQ(m.find("lat(lat)"), std::string::npos) << m;  // 1-D variables are no candidates
+    EXPECT_NE(m.find("NetCdfCurrentOptions::uName/vName"), std::string::npos) << m;
+    // named, they load (UVEL2 has no v partner here: the v error lists the same candidates)
+    NetCdfCurrentOptions o;
+    o.uName = "UVEL2";
+    const std::string mv = errorOf([&] { loadNetCdfCurrents(path, o); });
+    EXPECT_NE(mv.find("no northward (v) velocity found"), std::string::npos) << mv;
+    EXPECT_NE(mv.find("UVEL2(time,z_t,nlat,nlon) [cm/s]"), std::string::npos) << mv;
+    o.uName = "uvel3";
+    const std::string mg = errorOf([&] { loadNetCdfCurrents(path, o); });
+    EXPECT_NE(mg.find("no variable 'uvel3'"), std::string::npos) << mg;
+    EXPECT_NE(mg.find("temp(time,lat,lon) [degC]"), std::string::npos) << mg;
 }

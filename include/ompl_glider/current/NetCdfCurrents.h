@@ -30,7 +30,8 @@ struct NetCdfCurrentOptions
     // --- variables (empty: found automatically) ---
     std::string uName;      ///< eastward velocity; default: CF standard_name eastward_sea_water_velocity and
                             ///< variants (surface_, baroclinic_, barotropic_, ..._assuming_no_tide, eastward_current,
-                            ///< sea_water_x_velocity), then the names uo, u, water_u, uvel, vozocrtx, ucur, U
+                            ///< sea_water_x_velocity), then the names uo, u, water_u, uvel, urot, u_eastward,
+                            ///< vozocrtx, ucur, u_current, uwnd, u10 in any case (UVEL, UWND, U)
     std::string vName;      ///< northward velocity (same rules with northward / y / v)
     std::string lonName;    ///< longitude or x coordinate variable (1-D axis or 2-D curvilinear)
     std::string latName;    ///< latitude or y coordinate variable
