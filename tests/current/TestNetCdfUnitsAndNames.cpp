@@ -1,7 +1,8 @@
 // Forecast files as pilots get them: velocity units in any spelling UDUNITS-2 reads (converted with the exact
 // factor), non-velocity units refused, the units override; u/v under the usual names of models without CF
 // standard names (POP urot/vrot, winds UWND/VWND, u10/v10, UVEL/VVEL, ROMS u_eastward/v_northward) and the
-// candidate list when none is found.
+// candidate list when none is found; steady fields (no time axis, one record, NetCdfCurrentOptions::steadyRecord)
+// and time axes without "since" (NetCdfCurrentOptions::timeUnits).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -346,4 +347,129 @@ TEST(NetCdfNames, NoVelocityFoundListsTheCandidatesWithUnitsAndDimensions)
     const std::string mg = errorOf([&] { loadNetCdfCurrents(path, o); });
     EXPECT_NE(mg.find("no variable 'uvel3'"), std::string::npos) << mg;
     EXPECT_NE(mg.find("temp(time,lat,lon) [degC]"), std::string::npos) << mg;
+}
+
+TEST(NetCdfSteady, NoTimeAxisOrOneRecordIsASteadyFieldTakingAnyDeparture)
+{
+    TempDir tmp;
+    const std::string none = tmp.file("no_time.nc");
+    writeGeographic(none, "u", "v", 0);
+    NetCdfCurrentOptions o;
+    NetCdfCurrents nc = loadNetCdfCurrents(none, o);
+    EXPECT_TRUE(nc.steady);
+    EXPECT_FALSE(nc.dated);
+    EXPECT_EQ(nc.field->timeEnd(), std::numeric_limits<double>::infinity());
+    o.departure = "86400";
+    nc = loadNetCdfCurrents(none, o);
+    EXPECT_EQ(nc.departureTime, 86400.0);
+    EXPECT_NEAR(centreU(nc, 1e7), 0.1, 1e-6);
+    o.departure = "2026-03-01T00:00:00Z";  // a date needs dates in the file
+    std::string m = errorOf([&] { loadNetCdfCurrents(none, o); });
+    EXPECT_NE(m.find("departure"), std::string::npos) << m;
+    EXPECT_NE(m.find("no dated time axis"), std::string::npos) << m;
+    const NetCdfTimeAxis a = readNetCdfTimeAxis(none);
+    EXPECT_TRUE(a.steady);
+    EXPECT_FALSE(a.found);
+    // the options for a time axis make no sense without one
+    NetCdfCurrentOptions t;
+    t.timeUnits = "days since 2026-01-01";
+    m = errorOf([&] { loadNetCdfCurrents(none, t); });
+    EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits given, but variable 'u' has no time dimension"),
+              std::string::npos)
+        << m;
+    t = {};
+    t.steadyRecord = 0;
+    m = errorOf([&] { readNetCdfTimeAxis(none, t); });
+    EXPECT_NE(m.find("NetCdfCurrentOptions::steadyRecord given"), std::string::npos) << m;
+
+    // one record: steady, dated by it, any date accepted
+    const std::string one = tmp.file("one_record.nc");
+    writeGeographic(one, "u", "v", 1);
+    o = {};
+    o.departure = "2026-04-01T00:00:00Z";
+    nc = loadNetCdfCurrents(one, o);
+    EXPECT_TRUE(nc.steady);
+    EXPECT_TRUE(nc.dated);
+    EXPECT_EQ(nc.isoTime(nc.departureTime), "2026-04-01T00:00:00Z");
+    EXPECT_EQ(nc.departureTime, 31.0 * 86400);
+    EXPECT_EQ(nc.field->timeEnd(), std::numeric_limits<double>::infinity());
+    EXPECT_TRUE(readNetCdfTimeAxis(one).steady);
+    // two records: not steady, the departure must lie in the forecast
+    const std::string two = tmp.file("two_records.nc");
+    writeGeographic(two, "u", "v", 2);
+    EXPECT_FALSE(loadNetCdfCurrents(two).steady);
+    m = errorOf([&] { loadNetCdfCurrents(two, o); });
+    EXPECT_NE(m.find("outside the forecast"), std::string::npos) << m;
+}
+
+TEST(NetCdfTime, AxisWithoutSinceNamesBothOptionsAndEachGetsThrough)
+{
+    TempDir tmp;
+    // a climatology-like axis in "month": records 0, 6, 12 with u = 0.1, 0.2, 0.3
+    const std::string path = tmp.file("months.nc");
+    writeGeographic(path, "uo", "vo", 3, "month", {0.1, 0.2, 0.3});
+    std::string m = errorOf([&] { loadNetCdfCurrents(path); });
+    EXPECT_NE(m.find(path), std::string::npos) << m;
+    EXPECT_NE(m.find("time variable 'time': units 'month'"), std::string::npos) << m;
+    EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits"), std::string::npos) << m;
+    EXPECT_NE(m.find("NetCdfCurrentOptions::steadyRecord"), std::string::npos) << m;
+    // the same without units attribute, and in hours without a date
+    for (const std::string units : {"", "hours"})
+    {
+        const std::string p = tmp.file("undated.nc");
+        writeGeographic(p, "uo", "vo", 3, units);
+        m = errorOf([&] { loadNetCdfCurrents(p); });
+        EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits"), std::string::npos) << "'" << units << "': " << m;
+    }
+
+    // timeUnits: the values (0, 6, 12) are days since 2026-01-15
+    NetCdfCurrentOptions o;
+    o.timeUnits = "days since 2026-01-15";
+    NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    EXPECT_TRUE(nc.dated);
+    EXPECT_FALSE(nc.steady);
+    EXPECT_EQ(nc.isoTime(0.0), "2026-01-15T00:00:00Z");
+    EXPECT_EQ(nc.forecastEnd, 12.0 * 86400);
+    EXPECT_NEAR(centreU(nc, 3.0 * 86400), 0.15, 1e-6);  // halfway between the first two records
+    EXPECT_EQ(readNetCdfTimeAxis(path, o).originSeconds, nc.originSeconds);
+    EXPECT_EQ(readNetCdfTimeAxis(path, o).span, 12.0 * 86400);
+    // checked: a units text without "since", or one the calendar parser refuses
+    o.timeUnits = "days";
+    m = errorOf([&] { loadNetCdfCurrents(path, o); });
+    EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits 'days'"), std::string::npos) << m;
+    o.timeUnits = "fortnights since 2026-01-15";
+    m = errorOf([&] { loadNetCdfCurrents(path, o); });
+    EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits 'fortnights since 2026-01-15'"), std::string::npos) << m;
+
+    // steadyRecord: only that record, a steady field (undated here: the axis has no dates)
+    for (std::size_t k : {0u, 2u})
+    {
+        NetCdfCurrentOptions s;
+        s.steadyRecord = k;
+        nc = loadNetCdfCurrents(path, s);
+        EXPECT_TRUE(nc.steady);
+        EXPECT_FALSE(nc.dated);
+        EXPECT_EQ(nc.loadedShape[0], 1u);
+        EXPECT_EQ(nc.field->timeEnd(), std::numeric_limits<double>::infinity());
+        EXPECT_NEAR(centreU(nc, 0.0), 0.1 * double(k + 1), 1e-6);
+        EXPECT_NEAR(centreU(nc, 5e6), 0.1 * double(k + 1), 1e-6);
+        EXPECT_TRUE(readNetCdfTimeAxis(path, s).steady);
+    }
+    // with dates (timeUnits) the record dates the steady field
+    NetCdfCurrentOptions s;
+    s.steadyRecord = 1;
+    s.timeUnits = "days since 2026-01-15";
+    nc = loadNetCdfCurrents(path, s);
+    EXPECT_TRUE(nc.steady);
+    EXPECT_TRUE(nc.dated);
+    EXPECT_EQ(nc.isoTime(0.0), "2026-01-21T00:00:00Z");
+    EXPECT_EQ(readNetCdfTimeAxis(path, s).originSeconds, nc.originSeconds);
+    // out of range
+    s = {};
+    s.steadyRecord = 3;
+    m = errorOf([&] { loadNetCdfCurrents(path, s); });
+    EXPECT_NE(m.find("NetCdfCurrentOptions::steadyRecord 3 is out of range: time variable 'time' has 3 records "
+                     "(0 to 2)"),
+              std::string::npos)
+        << m;
 }

@@ -214,10 +214,27 @@ struct TimeValues
     std::vector<double> times;              ///< per file index: seconds after the first time, or raw values
 };
 
-/// Reads the time coordinate variable tv. @throws Error when the units are not "<unit> since <date>" and
-/// allowUndated is false, when the units or calendar are not understood, or when the variable has no values,
-/// holds fill values or non-finite numbers, or is not strictly increasing.
-TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated);
+/// Reads the time coordinate variable tv, with unitsOverride (NetCdfCurrentOptions::timeUnits) in place of its
+/// units attribute when given. @throws Error when the override is not "<unit> since <date>", when the units are
+/// not "<unit> since <date>" and allowUndated is false (naming NetCdfCurrentOptions::timeUnits and steadyRecord),
+/// when the units or calendar are not understood, or when the variable has no values, holds fill values or
+/// non-finite numbers, or is not strictly increasing.
+TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated, const std::string &unitsOverride = "");
+
+/// The one record of NetCdfCurrentOptions::steadyRecord and its date.
+struct SteadyRecord
+{
+    std::size_t index{0};                   ///< file index along the time dimension
+    bool dated{false};                      ///< the axis (or NetCdfCurrentOptions::timeUnits) has dates
+    Calendar calendar{Calendar::Standard};
+    double originSeconds{0.0};              ///< the record's time, seconds since the calendar epoch (dated)
+};
+
+/// nullopt without NetCdfCurrentOptions::steadyRecord; else the record on time dimension timeDim (coordinate
+/// variable tv, -1 if none), dated when its units (or the options' timeUnits) are "<unit> since <date>" (an
+/// undated axis is not read). @throws Error when the index is not below the number of records, or the dated axis
+/// is bad (readTimeValues()).
+std::optional<SteadyRecord> steadyRecordOf(const NcFile &f, int timeDim, int tv, const NetCdfCurrentOptions &opt);
 
 /// File indices and coordinate values chosen along one dimension.
 struct AxisSelection
@@ -227,7 +244,9 @@ struct AxisSelection
 };
 
 /// The forecast times the mission needs (departure to departure + horizon, plus 2 steps each side); sets the
-/// time fields of out (dated, calendar, origin, forecast begin/end, departure). {0}/{0} without time axis.
+/// time fields of out (dated, steady, calendar, origin, forecast begin/end, departure). {0}/{0} without time axis
+/// or with a single record; {steadyRecord}/{0} with NetCdfCurrentOptions::steadyRecord. @throws Error for
+/// timeUnits or steadyRecord given for a file without time dimension.
 AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, NetCdfCurrents &out);
 
 /// The depth layers (metres, positive down, ascending) down to the first at or below maxDepth plus 2;
