@@ -220,7 +220,7 @@ void defineFlags(CLI::App &app, Flags &f)
                            ? std::string()
                            : "expected '<seconds|minutes|hours|days> since <date>', got '" + units + "'";
             },
-            "TEXT"))
+            ""))
         ->group(nc);
     app.add_option_function<std::size_t>(
            "--steady-record", [&fc](std::size_t k) { fc.steadyRecord = k; },
