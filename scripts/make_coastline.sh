@@ -18,7 +18,8 @@ if [ $# -lt 2 ]; then
 fi
 region=$1 out=$2 res=${3:-l}
 command -v gmt >/dev/null || { echo "make_coastline: needs gmt and gmt-gshhg-low (apt-get install gmt gmt-gshhg-low)" >&2; exit 2; }
-gmt coast -R"$region" -D"$res" -M -W -A0/1/1 | python3 -c '
+# (GMT writes gmt.history into the working directory: run it in a temporary one)
+(cd "$(mktemp -d)" && gmt coast -R"$region" -D"$res" -M -W -A0/1/1) | python3 -c '
 import json, sys
 segments, cur = [], None
 for line in sys.stdin:

@@ -2,6 +2,7 @@
 #include "Flags.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <exception>
@@ -9,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/UnitConversion.h"
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/planners/PlannerRegistry.h"
 
@@ -208,6 +211,42 @@ void defineFlags(CLI::App &app, Flags &f)
         ->group(nc);
     app.add_option("--depth", f.depth, "depth in metres, positive down, at which the current is read (default 0)")
         ->check(CLI::Range(0.0, 12000.0))
+        ->group(nc);
+    app.add_option("--velocity-units", fc.velocityUnits,
+                   "units of u and v in place of the file's (any velocity UDUNITS-2 reads: \"m/s\", \"cm s-1\", "
+                   "\"knots\", \"km/h\")")
+        ->check(CLI::Validator(
+            [](std::string &units) {
+                try
+                {
+                    (void)velocityToMetresPerSecond(units);
+                    return std::string();
+                }
+                catch (const Error &e)
+                {
+                    return std::string(e.what());
+                }
+            },
+            "UNITS"))
+        ->group(nc);
+    app.add_option("--time-units", fc.timeUnits,
+                   "units of the time variable in place of the file's, e.g. \"days since 2026-01-15\" (for a time "
+                   "axis in \"month\", \"hours\" or without units)")
+        ->check(CLI::Validator(
+            [](std::string &units) {
+                std::string lower = units;
+                for (char &c : lower)
+                    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+                return lower.find(" since ") != std::string::npos
+                           ? std::string()
+                           : "expected '<seconds|minutes|hours|days> since <date>', got '" + units + "'";
+            },
+            ""))
+        ->group(nc);
+    app.add_option_function<std::size_t>(
+           "--steady-record", [&fc](std::size_t k) { fc.steadyRecord = k; },
+           "plan on this time record only (0 the first), as a steady field")
+        ->check(CLI::Range(std::size_t(0), std::size_t(1000000000)))
         ->group(nc);
     app.footer("Exit status: 0 path found, 1 no path (the reason is printed), 2 bad arguments or input (a message "
                "says what and where; nothing is written).");

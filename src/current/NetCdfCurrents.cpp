@@ -58,7 +58,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
     out.uVariable = l.uName;
     out.vVariable = l.vName;
     out.geographic = l.geographic;
-    const double velScale = velocityScaleOf(f, l, opt);
+    const LinearConversion vel = velocityConversionOf(f, l, opt);
     // what to load: depth layers, forecast times, region (its memory checked before the nodes are read)
     const RegionOfInterest region = regionOfInterest(opt, l.geographic);
     const AxisSelection z = selectDepths(f, l, opt.maxDepth);
@@ -73,7 +73,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
     g.ny = h.yIdx.size();
     g.depth = z.values;
     g.time = t.values;
-    readVelocities(f, l, plan, t, velScale, opt, g, out);
+    readVelocities(f, l, plan, t, vel, opt, g, out);
     applyLandMask(f, l, h, z, t, opt, g, out);
     out.projection = setNodeCoordinates(f, l, h, region, opt, g);
     GriddedFieldOptions fo = opt.field;

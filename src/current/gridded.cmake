@@ -10,6 +10,7 @@ if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
     # the NetCDF reader: loadNetCdfCurrents() composing the stages in netcdf/ (see netcdf/NetCdfInternal.h)
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfCurrents.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/UnitConversion.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/NcFile.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/ClassicSize.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/AxisChecks.cpp

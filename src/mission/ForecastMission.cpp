@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <tuple>
 #include <vector>
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/mission/MissionProblem.h"
 
 namespace ompl_glider
@@ -26,6 +29,14 @@ std::string num(double v)
 
 namespace
 {
+/// A plain number (seconds after the first forecast time), not a date.
+bool isNumber(const std::string &text)
+{
+    char *end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    return !text.empty() && end && *end == '\0' && std::isfinite(v);
+}
+
 std::string pointText(double a, double b)
 {
     char buf[80];
@@ -41,6 +52,10 @@ std::string flagMessage(std::string what, const ForecastInput &q)
              {"NetCdfCurrentOptions::timeName/depthName/lonName/latName",
               "--time-var/--depth-var/--lon-var/--lat-var"},
              {"NetCdfCurrentOptions::lonName/latName", "--lon-var/--lat-var"},
+             {"NetCdfCurrentOptions::uName/vName", "--u-var/--v-var"},
+             {"NetCdfCurrentOptions::velocityUnits", "--velocity-units"},
+             {"NetCdfCurrentOptions::timeUnits", "--time-units"},
+             {"NetCdfCurrentOptions::steadyRecord", "--steady-record"},
              {"NetCdfCurrentOptions::uName", "--u-var"},
              {"NetCdfCurrentOptions::vName", "--v-var"},
              {"NetCdfCurrentOptions::lonName", "--lon-var"},
@@ -85,6 +100,9 @@ MissionSpec forecastMission(const ForecastInput &q)
     m.current.timeInterpolation = q.timeInterpolation;
     m.current.horizonPolicy = q.horizonPolicy;
     m.current.zeroVelocityLand = q.zeroVelocityLand;
+    m.current.velocityUnits = q.velocityUnits;
+    m.current.timeUnits = q.timeUnits;
+    m.current.steadyRecord = q.steadyRecord;
     m.current.mark.file = file;
 
     // The file's coordinates are not known yet: take start and goal as lon/lat (the trip region is the same box
@@ -99,8 +117,25 @@ MissionSpec forecastMission(const ForecastInput &q)
     NetCdfCurrentOptions o = netCdfLoadOptions(m);
     o.departure = q.departure;
     NetCdfCurrents nc;
+    std::optional<double> epoch;  // the date of field time 0 of a steady file without dates
     try
     {
+        if (!q.departure.empty() && !isNumber(q.departure))
+        {
+            const NetCdfTimeAxis axis = readNetCdfTimeAxis(file, o);
+            if (axis.steady && !axis.dated)
+            {
+                try
+                {
+                    epoch = parseIsoTime(q.departure);
+                }
+                catch (const Error &e)
+                {
+                    throw Error("--departure " + q.departure + ": " + e.what());
+                }
+                o.departure.clear();  // departs at field time 0, which is that date
+            }
+        }
         nc = loadNetCdfCurrents(file, o);
     }
     catch (const Error &e)
@@ -134,10 +169,11 @@ MissionSpec forecastMission(const ForecastInput &q)
                         "' (u/v are fill values there at depth " + num(q.depth) + " m)");
     }
     const double tDep = nc.departureTime;
-    if (tDep < nc.forecastBegin || tDep > nc.forecastEnd)
+    // a steady field (no time dimension, a single record, --steady-record) is the same at every time
+    if (!nc.steady && (tDep < nc.forecastBegin || tDep > nc.forecastEnd))
         throw Error("--departure " + q.departure + " is outside the forecast (" + nc.isoTime(nc.forecastBegin) +
                     " to " + nc.isoTime(nc.forecastEnd) + ")");
-    if (tDep >= nc.forecastEnd && q.horizonPolicy == "refuse")
+    if (!nc.steady && tDep >= nc.forecastEnd && q.horizonPolicy == "refuse")
         throw Error("--departure " + (q.departure.empty() ? std::string("(default)") : q.departure) +
                     " is the last forecast time: no time is left to travel (use an earlier departure or --beyond hold)");
 
@@ -150,6 +186,9 @@ MissionSpec forecastMission(const ForecastInput &q)
         m.fileCalendar = fc;
         m.epoch = fc.originSeconds - secondsSinceCalendarEpoch(DateTime{}, fc.calendar);
     }
+    else if (epoch)
+        m.epoch = *epoch;
+    m.current.steady = nc.steady;
     m.departure.time = tDep;
     m.vehicle.speed = q.speed;
     m.vehicle.depth = q.depth;

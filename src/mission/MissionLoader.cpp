@@ -138,8 +138,13 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     readCurrent(r, root["current"], m);
     if (m.current.type == "netcdf" && root["units"])
         r.fail(root["units"], "units", "a NetCDF forecast is planned in metres and seconds: remove 'units'");
-    if (m.current.type == "netcdf" && root["epoch"])
-        r.fail(root["epoch"], "epoch", "the NetCDF forecast defines the time origin (its first time): remove 'epoch'");
+    // A dated forecast defines the time origin; a steady file without dates takes the mission's epoch as the date
+    // of field time 0 (ISO times in the mission and the outputs).
+    if (m.current.type == "netcdf" && root["epoch"] && (m.fileCalendar || !m.current.steady))
+        r.fail(root["epoch"], "epoch",
+               m.fileCalendar ? "the NetCDF forecast defines the time origin (its first time): remove 'epoch'"
+                              : "the NetCDF forecast has undated times (field time is the file's): remove 'epoch' "
+                                "(only a steady file without dates takes one)");
     if (root["region"])
         readRegion(r, root["region"], m);
     else if (m.current.type != "netcdf")

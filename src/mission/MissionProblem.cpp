@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
@@ -63,6 +65,9 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
         if (m.planner.horizon > 0.0)
             o.horizon = m.planner.horizon + (m.departure.window ? m.departure.end - m.departure.begin : 0.0);
     }
+    o.velocityUnits = c.velocityUnits;
+    o.timeUnits = c.timeUnits;
+    o.steadyRecord = c.steadyRecord;
     o.field.xy = parseInterp2D(c.xyInterpolation);
     o.field.depth = parseInterp1D(c.depthInterpolation);
     o.field.time = parseInterp1D(c.timeInterpolation);
@@ -105,6 +110,28 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
 }
 
 #endif
+
+std::string netCdfMissionMessage(std::string what)
+{
+    // the longer names first ("uName/vName" before "uName")
+    for (const auto &[option, field] : std::vector<std::pair<std::string, std::string>>{
+             {"NetCdfCurrentOptions::timeName/depthName/lonName/latName",
+              "current.variables.time/depth/lon/lat"},
+             {"NetCdfCurrentOptions::lonName/latName", "current.variables.lon/lat"},
+             {"NetCdfCurrentOptions::uName/vName", "current.variables.u/v"},
+             {"NetCdfCurrentOptions::uName", "current.variables.u"},
+             {"NetCdfCurrentOptions::vName", "current.variables.v"},
+             {"NetCdfCurrentOptions::lonName", "current.variables.lon"},
+             {"NetCdfCurrentOptions::latName", "current.variables.lat"},
+             {"NetCdfCurrentOptions::depthName", "current.variables.depth"},
+             {"NetCdfCurrentOptions::timeName", "current.variables.time"},
+             {"NetCdfCurrentOptions::velocityUnits", "current.velocity_units"},
+             {"NetCdfCurrentOptions::timeUnits", "current.time_units"},
+             {"NetCdfCurrentOptions::steadyRecord", "current.steady_record"}})
+        for (std::size_t at = what.find(option); at != std::string::npos; at = what.find(option, at))
+            what.replace(at, option.size(), field);
+    return what;
+}
 
 double defaultForecastGridSize(double minCellSize, double distance)
 {
@@ -157,7 +184,18 @@ void MissionProblem::buildField()
         return;
     }
 #if OMPL_GLIDER_WITH_NETCDF
-    NetCdfCurrents nc = loadNetCdfCurrents(m.current.file, netCdfLoadOptions(m));
+    NetCdfCurrents nc;
+    try
+    {
+        nc = loadNetCdfCurrents(m.current.file, netCdfLoadOptions(m));
+    }
+    catch (const Error &e)
+    {
+        // a mission file's current section (the command line's forecastMission() words its own messages)
+        if (m.current.mark.line > 0)
+            throw Error(where(m, m.current.mark) + netCdfMissionMessage(e.what()));
+        throw;
+    }
     field_ = nc.field;
     projection_ = nc.projection;
     projectionScale_ = 1.0;

@@ -181,8 +181,11 @@ nc_case("nc-no-time-records", forecast(replace=[("time = 0, 24, 48 ;", ""),
 nc_case("nc-lon-not-monotonic", forecast(lon="-53.0, -52.8, -52.2, -52.4, -52.6, -52.0"), "lon")
 nc_case("nc-lat-not-monotonic", forecast(lat="47.0, 47.2, 47.4, 47.4, 47.8, 48.0"), "lat")
 nc_case("nc-lat-nan", forecast(lat="47.0, 47.2, NaN, 47.6, 47.8, 48.0"), "lat")
-nc_case("nc-units-unknown", forecast(replace=[('u:units = "m s-1"', 'u:units = "furlongs per fortnight"')]),
-        "furlongs")
+# (furlongs per fortnight would be a velocity: UDUNITS-2 converts it)
+nc_case("nc-units-unknown", forecast(replace=[('u:units = "m s-1"', 'u:units = "furlongs per blink"')]),
+        "furlongs per blink")
+nc_case("nc-units-not-velocity", forecast(replace=[('u:units = "m s-1"', 'u:units = "degC"')]),
+        "variable 'u': units 'degC' are not a velocity")
 nc_case("nc-time-units-bad", forecast(replace=[('"hours since 2026-03-15 00:00:00"', '"hours since whenever"')]),
         "time")
 nc_case("nc-time-not-monotonic", forecast(replace=[("time = 0, 24, 48 ;", "time = 0, 48, 24 ;")]), "time")
@@ -231,6 +234,40 @@ variables:
 data: y = 0, 10000, 20000, 30000 ; x = 0, 10000, 20000, 30000, 40000 ;
 }
 """
+# the NetCDF flags of issue 10: units (checked with UDUNITS-2 before the file is read), the time record, the time units
+nc_case("flag-velocity-units-unparseable", forecast(), "--velocity-units: units 'parsecs per thingy' not understood",
+        extra=("--velocity-units", "parsecs per thingy"))
+nc_case("flag-velocity-units-not-velocity", forecast(), "--velocity-units: units 'degC' are not a velocity",
+        extra=("--velocity-units", "degC"))
+nc_case("flag-velocity-units-length", forecast(), "are not a velocity", extra=("--velocity-units", "m"))
+nc_case("flag-steady-record-out-of-range", forecast(), "--steady-record 3 is out of range: time variable 'time' has 3",
+        extra=("--steady-record", "3"))
+nc_case("flag-steady-record-negative", forecast(), "--steady-record", extra=("--steady-record", "-1"))
+nc_case("flag-steady-record-text", forecast(), "--steady-record", extra=("--steady-record", "first"))
+nc_case("flag-time-units-without-since", forecast(), "--time-units", extra=("--time-units", "hours"))
+nc_case("flag-time-units-bad-date", forecast(), "--time-units 'days since the flood'",
+        extra=("--time-units", "days since the flood"))
+nc_case("nc-time-units-month", forecast(replace=[('"hours since 2026-03-15 00:00:00"', '"month"')]), "--time-units")
+nc_case("nc-time-units-month-names-steady-record", forecast(replace=[('"hours since 2026-03-15 00:00:00"', '"month"')]),
+        "--steady-record")
+nc_case("nc-no-velocity-candidates", forecast(replace=[("float u(", "float speed_east("), ("u:", "speed_east:"),
+                                                       ("  u = ", "  speed_east = "),
+                                                       ('"eastward_sea_water_velocity"', '"sea_water_speed"')]),
+        "candidates: speed_east(time,lat,lon) [m s-1], v(time,lat,lon) [m s-1]; name them with --u-var/--v-var")
+case("yaml-velocity-units-not-velocity", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:1: field 'current.velocity_units': units 'degC' are not a velocity",
+     {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: f.nc, velocity_units: degC}\n"
+                                     "start: {lon: -52.9, lat: 47.1}\ngoal: {lon: -52.1, lat: 47.9}\n"})
+case("yaml-steady-record-out-of-range", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:1: field 'current.steady_record'",
+     {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: f.nc, steady_record: 7}\n"
+                                     "start: {lon: -52.9, lat: 47.1}\ngoal: {lon: -52.1, lat: 47.9}\n"})
+case("yaml-time-units-without-since", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:1: field 'current.time_units'",
+     {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: f.nc, time_units: days}\n"
+                                     "start: {lon: -52.9, lat: 47.1}\ngoal: {lon: -52.1, lat: 47.9}\n"})
+case("yaml-velocity-units-analytic", ["--mission", "m.yaml", "--out", "{out}"], 2, "only for type netcdf",
+     {"m.yaml": mission("current: {type: uniform, velocity_units: knots}")})
 nc_case("nc-cartesian-no-time-records", CARTESIAN, "time", args=("--start", "5000,5000", "--goal", "35000,25000"))
 case("mission-netcdf-departure-after-end", ["--mission", "m.yaml", "--out", "{out}"], 2, "departure",
      {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: f.nc}\nstart: {lon: -52.9, lat: 47.1}\n"
@@ -297,6 +334,8 @@ for name, args, phrase in [
         ("flag-planner-unknown", ["--planner", "Dijkstra"], "Dijkstra"),
         ("flag-mission-and-currents", ["--mission", "m.yaml", "--currents", "f.nc"], "cannot be combined"),
         ("flag-u-var-without-currents", ["--u-var", "u"], "--currents"),
+        ("flag-velocity-units-without-currents", ["--velocity-units", "knots"], "--velocity-units needs --currents"),
+        ("flag-steady-record-without-currents", ["--steady-record", "0"], "--steady-record needs --currents"),
         ("flag-speeds-empty", ["--speeds", ""], "--speeds"),
         ("flag-speeds-negative", ["--speeds", "0.3,-1"], "--speeds"),
 ]:

@@ -5,7 +5,8 @@ glider_add_test(test_current_projection ${CMAKE_CURRENT_LIST_DIR}/TestProjection
 glider_add_test(test_current_netcdf
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLayouts.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLand.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLand.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfUnitsAndNames.cpp)
 target_link_libraries(test_current_netcdf PRIVATE netCDF::netcdf)
 glider_add_test(test_current_gridded_agreement ${CMAKE_CURRENT_LIST_DIR}/TestGriddedAgreement.cpp)
 target_link_libraries(test_current_gridded_agreement PRIVATE netCDF::netcdf)
@@ -15,3 +16,9 @@ glider_add_test(test_current_netcdf_checks
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfClassicSize.cpp)
 target_link_libraries(test_current_netcdf_checks PRIVATE netCDF::netcdf)
 target_include_directories(test_current_netcdf_checks PRIVATE ${PROJECT_SOURCE_DIR}/src/current)
+# glider_plan on steady files, undated time axes and mislabelled velocity units (issue 10)
+if(TARGET glider_plan)
+  add_test(NAME current.glider_plan_forecast_files
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_glider_plan_forecast_files.sh $<TARGET_FILE:glider_plan>)
+  set_tests_properties(current.glider_plan_forecast_files PROPERTIES TIMEOUT 600)
+endif()

@@ -5,6 +5,7 @@
 
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,14 +31,20 @@ struct NetCdfCurrentOptions
     // --- variables (empty: found automatically) ---
     std::string uName;      ///< eastward velocity; default: CF standard_name eastward_sea_water_velocity and
                             ///< variants (surface_, baroclinic_, barotropic_, ..._assuming_no_tide, eastward_current,
-                            ///< sea_water_x_velocity), then the names uo, u, water_u, uvel, vozocrtx, ucur, U
+                            ///< sea_water_x_velocity), then the names uo, u, water_u, uvel, urot, u_eastward,
+                            ///< vozocrtx, ucur, u_current, uwnd, u10 in any case (UVEL, UWND, U)
     std::string vName;      ///< northward velocity (same rules with northward / y / v)
     std::string lonName;    ///< longitude or x coordinate variable (1-D axis or 2-D curvilinear)
     std::string latName;    ///< latitude or y coordinate variable
     std::string depthName;  ///< depth coordinate variable
     std::string timeName;   ///< time coordinate variable
     CoordinateMode coordinates{CoordinateMode::Auto};  ///< how to read x/y
-    std::string velocityUnits;  ///< overrides the units attribute of u and v ("m/s", "cm/s", "knots")
+    std::string velocityUnits;  ///< overrides the units attribute of u and v: any velocity UDUNITS-2 reads ("m/s",
+                                ///< "cm s-1", "knots", "km/h"; UnitConversion.h)
+    std::string timeUnits;      ///< overrides the units attribute of the time variable: "<unit> since <date>"
+                                ///< ("days since 2026-01-15"), e.g. for an axis in "month", "hours" or without units
+    std::optional<std::size_t> steadyRecord;  ///< read only this time record (0-based) and plan on it as a steady
+                                              ///< field (dated by the record's time when the axis is dated)
 
     // --- land (besides fill values of u/v, which are always land) ---
     std::string maskName;  ///< land/sea mask variable; empty: found automatically (loadNetCdfCurrents()); "none": none
@@ -58,7 +65,8 @@ struct NetCdfCurrentOptions
                                                               ///< down): loads the layers down to the first at or
                                                               ///< below it, plus 2 for cubic/Akima stencils
     std::string departure;    ///< ISO 8601 date/time, or a number of seconds after the first forecast time; empty
-                              ///< = the first forecast time. Outside the forecast -> Error.
+                              ///< = the first forecast time. Outside the forecast -> Error (a steady field takes
+                              ///< any time; a date only when it is dated).
     double horizon{std::numeric_limits<double>::infinity()};  ///< seconds after departure to load (plus 2 time
                                                              ///< steps of margin); infinity = to the end
 
@@ -75,8 +83,11 @@ struct NetCdfCurrents
     std::shared_ptr<const LocalProjection> projection;  ///< null in Cartesian mode
     bool geographic{false};          ///< true when x/y come from longitude/latitude
     bool dated{false};               ///< true when the time axis has CF units "<unit> since <date>"
+    bool steady{false};              ///< one time: no time dimension, a single record, or steadyRecord; the field
+                                     ///< is the same at all times (timeEnd() = +inf) and any departure is inside it
     Calendar calendar{Calendar::Standard};  ///< the file's calendar (dated files)
-    double originSeconds{0.0};       ///< first forecast time, seconds since the calendar epoch (dated files)
+    double originSeconds{0.0};       ///< first forecast time (steadyRecord: the record's time), seconds since the
+                                     ///< calendar epoch (dated files)
     double departureTime{0.0};       ///< the departure in field time (0 when none was given)
     double forecastBegin{0.0};       ///< first forecast time of the file, field time
     double forecastEnd{0.0};         ///< last forecast time of the file, field time
@@ -112,7 +123,8 @@ struct NetCdfCurrents
 /// value (plus the netCDF default fill when _FillValue is absent, and NaN); CF time units with the standard,
 /// gregorian, proleptic_gregorian, julian, noleap/365_day, all_leap/366_day and 360_day calendars; longitudes
 /// in -180..180 or 0..360 and regions across the seam of a global grid; latitude and depth ascending or
-/// descending; depth positive="up" negated; velocities in m/s, cm/s or knots. Only the hyperslab covering the
+/// descending; depth positive="up" negated; velocities, Cartesian axes and depths in any unit UDUNITS-2 reads
+/// ("m s-1", "cm/s", "knots", "km/h"; "km", "centimeters": UnitConversion.h). Only the hyperslab covering the
 /// region (+ margin), the depth layers down to maxDepth and the time window is read (nc_get_vara).
 ///
 /// Land, per node and depth layer, is the union of: u or v a fill value in any of the trip's records; land in a
@@ -132,6 +144,12 @@ struct NetCdfCurrents
 ///  - kmt / KMT (POP's number of ocean levels): depth layer k (file index) is water when k < KMT;
 ///  - sea_binary_mask and every other name (ROMS mask_rho, NEMO tmask, mask): >= 0.5 is water;
 ///  - a fill value is land.
+///
+/// Steady fields: velocities without time dimension, with a single time record, or one record chosen with
+/// NetCdfCurrentOptions::steadyRecord give a field that is the same at all times (NetCdfCurrents::steady,
+/// timeEnd() = +inf) and take any departure. A time axis without "since" ("month", "hours", no units) is
+/// refused in a geographic file unless NetCdfCurrentOptions::timeUnits supplies the units or steadyRecord picks
+/// one record.
 ///
 /// Geographic grids (1-D or 2-D) become curvilinear grids of projected nodes (LocalProjection about the
 /// reference point) and eastward/northward velocities are rotated into x/y at each node. Between nodes a point is
@@ -157,6 +175,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
 struct NetCdfTimeAxis
 {
     bool found{false};      ///< the velocities have a time dimension with a coordinate variable (else a steady field)
+    bool steady{false};     ///< the loaded field is steady: no time dimension, a single record, or steadyRecord
     bool dated{false};      ///< CF units "<unit> since <date>" (else raw values: loadNetCdfCurrents() accepts
                             ///< them only in Cartesian files)
     std::string variable;   ///< the time coordinate variable
@@ -172,12 +191,15 @@ struct NetCdfTimeAxis
 /// "<unit> since <date>", standard_name "time" or axis "T" (or a usual name such as time, time_counter,
 /// ocean_time), whatever the variable is called.
 ///
-/// Only the names in `options` are used (uName, lonName, latName, depthName, timeName, coordinates); vName and
-/// the rest of the grid are not checked, so a file this accepts may still fail to load.
-/// @returns found = false when the velocities have no time dimension.
+/// Only the names in `options` (uName, lonName, latName, depthName, timeName, coordinates), timeUnits and
+/// steadyRecord are used; vName and the rest of the grid are not checked, so a file this accepts may still fail to
+/// load. With steadyRecord: found and steady, size 1, span 0, dated (originSeconds the record's time) when the
+/// axis or timeUnits has dates.
+/// @returns found = false (and steady) when the velocities have no time dimension.
 /// @throws Error naming the file (and the variable) when the file is not NetCDF, a given name is missing or not
 /// on a dimension of u, no velocity variable is found, the time units or calendar are not understood, or the
-/// times are not finite and strictly increasing.
+/// times are not finite and strictly increasing; for timeUnits or steadyRecord without time dimension, and a
+/// steadyRecord beyond the last record.
 NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const NetCdfCurrentOptions &options);
 
 /// @brief readNetCdfTimeAxis() with only the names of the time and eastward velocity variables (empty: found

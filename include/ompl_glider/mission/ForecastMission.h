@@ -4,7 +4,9 @@
 /// the file is read once to check the request and to convert the start, goal and departure, and the MissionSpec
 /// it gives is planned by the same pipeline as every other mission.
 
+#include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "ompl_glider/Geometry.h"
@@ -22,17 +24,23 @@ struct ForecastInput
     std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima
     std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
     std::string horizonPolicy{"refuse"};           ///< refuse | hold_last (beyond the last forecast time)
+    std::string velocityUnits;  ///< overrides the units of u and v (NetCdfCurrentOptions::velocityUnits)
+    std::string timeUnits;      ///< overrides the units of the time variable (NetCdfCurrentOptions::timeUnits)
+    std::optional<std::size_t> steadyRecord;  ///< plan on this time record only, as a steady field
     double depth{0.0};                             ///< depth (m, positive down) at which the current is read
     bool zeroVelocityLand{true};                   ///< u = v = 0 at every loaded time is land (CurrentSpec)
     Point2 start;  ///< start: lon,lat (x = lon, y = lat) for a geographic file, x,y for a Cartesian one
     Point2 goal;   ///< goal, as start
-    std::string departure;  ///< ISO 8601 date or seconds after the first forecast time; empty: first forecast time
+    /// ISO 8601 date or seconds after the first forecast time; empty: the first forecast time. A steady field takes
+    /// any departure; for a steady file without dates, a date is the date of field time 0 (the outputs' ISO times).
+    std::string departure;
     double speed{0.3};      ///< vehicle speed through water, m/s
 };
 
 /// @brief The MissionSpec of a forecast, the same as a mission file with the same current, start, goal, departure
 /// and speed: loads the trip's region (netCdfLoadOptions()) once to check that start and goal lie on the grid and
-/// in water, that the depth is not below the deepest layer and that the departure lies within the forecast, and
+/// in water, that the depth is not below the deepest layer and that the departure lies within the forecast (a
+/// steady field, without time dimension, with a single record or with steadyRecord, takes any departure), and
 /// to convert the departure; sets the outputs to every format. The planner settings are the defaults of
 /// PlannerSpec (grid size automatic): change them in the returned spec. Writes nothing.
 /// @throws Error with a one-line message naming the input (as its command-line flag), file or variable at fault.

@@ -124,6 +124,11 @@ GliderProblem gulfStreamProblem();
 /// @throws Error for an unknown interpolation scheme. (Only with OMPL_GLIDER_WITH_NETCDF.)
 NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &mission);
 
+/// @brief The NetCDF reader's message in a mission file's words: its option fields (NetCdfCurrentOptions::uName,
+/// ::timeUnits, ::steadyRecord, ...) become the fields of the mission's current section (current.variables.u,
+/// current.time_units, current.steady_record, ...).
+std::string netCdfMissionMessage(std::string readerMessage);
+
 /// @brief Default lattice spacing (metres) on a forecast: half the smallest grid cell, but no coarser than 1/25
 /// of the start-goal distance and no finer than 1/200 of it, rounded to two significant digits. (Half a cell
 /// resolves the interpolated field; 25 steps keep the path's shape; 200 steps bound the search on fine grids.)

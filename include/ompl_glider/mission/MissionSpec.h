@@ -60,6 +60,12 @@ struct CurrentSpec
     std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
     std::string horizonPolicy{"refuse"};           ///< refuse (trips past the forecast are infeasible) | hold_last
     bool zeroVelocityLand{true};  ///< netcdf: nodes with u = v = 0 exactly at every loaded time are land
+    std::string velocityUnits;  ///< netcdf: overrides the units of u and v (any velocity UDUNITS-2 reads)
+    std::string timeUnits;      ///< netcdf: overrides the units of the time variable ("days since 2026-01-15")
+    std::optional<std::size_t> steadyRecord;  ///< netcdf: plan on this time record only, as a steady field
+    /// netcdf, set when the mission is read: the field is steady (no time dimension, a single record, or
+    /// steadyRecord); a steady file without dated time axis takes the mission's `epoch`.
+    bool steady{false};
     SourceMark mark;                               ///< where the current block is
 };
 

@@ -1,4 +1,4 @@
-// The depth axis: metres, positive down (positive = "up" negated; cm and km scaled), sorted ascending, and the
+// The depth axis: metres, positive down (positive = "up" negated; any length unit converted with UDUNITS-2), sorted ascending, and the
 // layers down to the deepest depth the glider reaches.
 #include <algorithm>
 #include <cmath>
@@ -25,16 +25,22 @@ std::vector<double> readDepthMetres(const NcFile &f, int zv)
     const std::string pos = lower(f.attText(zv, "positive").value_or("down"));
     if (pos != "down" && pos != "up")
         throw f.error("depth '" + zn + "': attribute positive = '" + pos + "', expected 'down' or 'up'");
-    const std::string zu = lower(unitsOf(f, zv));
-    double zscale = 1.0;
-    if (zu == "cm" || zu == "centimeters")
-        zscale = 0.01;
-    else if (zu == "km")
-        zscale = 1000.0;
-    else if (!(zu.empty() || inList(zu, {"m", "meter", "meters", "metre", "metres", "1", "level"})))
-        throw f.error("depth '" + zn + "': units '" + zu + "', expected m");
+    // any length unit (UDUNITS-2: m, cm as POP writes, km, ...); none, "1" or "level": metres
+    const std::string zu = trim(unitsOf(f, zv));
+    LinearConversion toMetres;
+    if (!(zu.empty() || zu == "1" || lower(zu) == "level"))
+    {
+        try
+        {
+            toMetres = lengthToMetres(zu);
+        }
+        catch (const Error &e)
+        {
+            throw f.error("depth '" + zn + "': " + e.what());
+        }
+    }
     for (double &z : zs)
-        z *= (pos == "up" ? -zscale : zscale);
+        z = (pos == "up" ? -1.0 : 1.0) * toMetres(z);
     return zs;
 }
 }  // namespace

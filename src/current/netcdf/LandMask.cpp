@@ -19,8 +19,8 @@ namespace
 /// the trip's records only (t.inTrip()). Fill values become velocity 0 (a fill in a margin record only reaches
 /// the field through cubic/Akima time stencils, as a zero).
 void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv, const Packing &pu,
-                   const Packing &pv, double velScale, bool zeroIsLand, const AxisSelection &t, GriddedData &g,
-                   NetCdfCurrents &out)
+                   const Packing &pv, const LinearConversion &vel, bool zeroIsLand, const AxisSelection &t,
+                   GriddedData &g, NetCdfCurrents &out)
 {
     const std::size_t total = ru.size(), perTime = g.depth.size() * g.nx * g.ny;
     g.u.assign(total, 0.0f);
@@ -37,8 +37,8 @@ void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv,
                     g.water[n] = 0;
                 continue;
             }
-            const double u = (ru[idx] * pu.scale + pu.offset) * velScale;
-            const double v = (rv[idx] * pv.scale + pv.offset) * velScale;
+            const double u = vel(ru[idx] * pu.scale + pu.offset);
+            const double v = vel(rv[idx] * pv.scale + pv.offset);
             if ((u != 0.0 || v != 0.0) && t.inTrip(it))
                 allZero[n] = 0;
             g.u[idx] = static_cast<float>(u);
@@ -241,14 +241,14 @@ int findMask(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, 
 }  // namespace
 
 void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
-                    double velScale, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
+                    const LinearConversion &vel, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
 {
     const std::size_t total = g.time.size() * g.depth.size() * g.ny * g.nx;
     std::vector<double> ru(total), rv(total);
     readScatter(f, l.uVar, plan.reads, plan.stride, ru);
     readScatter(f, l.vVar, plan.reads, plan.stride, rv);
     const Packing pu = packingOf(f, l.uVar), pv = packingOf(f, l.vVar);
-    unpackAndMask(ru, rv, pu, pv, velScale, opt.zeroVelocityIsLand, t, g, out);
+    unpackAndMask(ru, rv, pu, pv, vel, opt.zeroVelocityIsLand, t, g, out);
 }
 
 void applyLandMask(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,

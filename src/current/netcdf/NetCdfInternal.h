@@ -37,6 +37,7 @@
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/LocalProjection.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/UnitConversion.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
@@ -216,10 +217,27 @@ struct TimeValues
     std::vector<double> times;              ///< per file index: seconds after the first time, or raw values
 };
 
-/// Reads the time coordinate variable tv. @throws Error when the units are not "<unit> since <date>" and
-/// allowUndated is false, when the units or calendar are not understood, or when the variable has no values,
-/// holds fill values or non-finite numbers, or is not strictly increasing.
-TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated);
+/// Reads the time coordinate variable tv, with unitsOverride (NetCdfCurrentOptions::timeUnits) in place of its
+/// units attribute when given. @throws Error when the override is not "<unit> since <date>", when the units are
+/// not "<unit> since <date>" and allowUndated is false (naming NetCdfCurrentOptions::timeUnits and steadyRecord),
+/// when the units or calendar are not understood, or when the variable has no values, holds fill values or
+/// non-finite numbers, or is not strictly increasing.
+TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated, const std::string &unitsOverride = "");
+
+/// The one record of NetCdfCurrentOptions::steadyRecord and its date.
+struct SteadyRecord
+{
+    std::size_t index{0};                   ///< file index along the time dimension
+    bool dated{false};                      ///< the axis (or NetCdfCurrentOptions::timeUnits) has dates
+    Calendar calendar{Calendar::Standard};
+    double originSeconds{0.0};              ///< the record's time, seconds since the calendar epoch (dated)
+};
+
+/// nullopt without NetCdfCurrentOptions::steadyRecord; else the record on time dimension timeDim (coordinate
+/// variable tv, -1 if none), dated when its units (or the options' timeUnits) are "<unit> since <date>" (an
+/// undated axis is not read). @throws Error when the index is not below the number of records, or the dated axis
+/// is bad (readTimeValues()).
+std::optional<SteadyRecord> steadyRecordOf(const NcFile &f, int timeDim, int tv, const NetCdfCurrentOptions &opt);
 
 /// File indices and coordinate values chosen along one dimension.
 struct AxisSelection
@@ -237,7 +255,9 @@ struct AxisSelection
 };
 
 /// The forecast times the mission needs (departure to departure + horizon, plus 2 steps each side); sets the
-/// time fields of out (dated, calendar, origin, forecast begin/end, departure). {0}/{0} without time axis.
+/// time fields of out (dated, steady, calendar, origin, forecast begin/end, departure). {0}/{0} without time axis
+/// or with a single record; {steadyRecord}/{0} with NetCdfCurrentOptions::steadyRecord. @throws Error for
+/// timeUnits or steadyRecord given for a file without time dimension.
 AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, NetCdfCurrents &out);
 
 /// The depth layers (metres, positive down, ascending) down to the first at or below maxDepth plus 2;
@@ -350,13 +370,15 @@ void checkTripMemory(const NcFile &f, std::size_t ni, std::size_t nj, std::size_
 HyperslabPlan planHyperslab(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                             const AxisSelection &t);
 
-/// Factor of a velocity unit string to m/s (m/s, cm/s, knots and their spellings); nullopt if unknown.
-std::optional<double> velocityScale(const std::string &units);
-/// Factor to m/s of u and v (options' velocityUnits, else their units attributes; 1 for dimensionless velocities
-/// of a Cartesian file). @throws Error for units not understood or different for u and v.
-double velocityScaleOf(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt);
-/// Factor of a Cartesian axis' units to metres (1000 for km, else 1).
-double axisScale(const NcFile &f, int var);
+/// The conversion to m/s of u and v (UDUNITS-2, velocityToMetresPerSecond()): the options' velocityUnits, else
+/// their units attributes; the identity for velocities without units ("" or "1") in a Cartesian file.
+/// @throws Error naming the file, the variable (or NetCdfCurrentOptions::velocityUnits) and the units when they
+/// are missing, not understood, not a velocity, or different for u and v.
+LinearConversion velocityConversionOf(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt);
+/// The conversion to metres of a Cartesian axis' units (UDUNITS-2, lengthToMetres()); the identity without
+/// units or for dimensionless ones (degrees included). @throws Error naming the file, the variable and the units
+/// when they are not a length.
+LinearConversion axisConversion(const NcFile &f, int var);
 
 /// Packing and missing-value rules of a variable (compared on the packed value).
 struct Packing
@@ -371,12 +393,12 @@ struct Packing
 /// valid_range / valid_min / valid_max. @throws Error for a zero or non-finite scale or offset.
 Packing packingOf(const NcFile &f, int var);
 
-/// Reads u and v over the plan into g.u / g.v (unpacked, m/s) and g.water (land where u or v is a fill value at
+/// Reads u and v over the plan into g.u / g.v (unpacked, converted to m/s by vel) and g.water (land where u or v is a fill value at
 /// any of the trip's records (t.inTrip()), or, with opt.zeroVelocityIsLand, where both are exactly 0 at all of
 /// them; counted in
 /// out.fillLandNodes / out.zeroLandNodes). g.nx, g.ny, g.depth and g.time must be set.
 void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
-                    double velScale, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
+                    const LinearConversion &vel, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
 /// The land/sea mask variable (the given one, or one found automatically: rules at loadNetCdfCurrents()) applied
 /// to g.water over the loaded nodes, depths and times; sets out.maskVariable and the land counts, and zeroes the
 /// velocities of every land node. @throws Error when a given mask is missing or does not fit u's grid.

@@ -43,27 +43,28 @@ void projectNodes(const NcFile &f, const Layout &l, const HorizontalSubset &h, c
         }
 }
 
-/// Cartesian x/y (m or km -> metres): 1-D axes or curvilinear nodes.
+/// Cartesian x/y (any length unit -> metres; dimensionless as they are): 1-D axes or curvilinear nodes.
 void cartesianNodes(const NcFile &f, const Layout &l, const HorizontalSubset &h, GriddedData &g)
 {
     if (l.curvilinear)
     {
-        const double sx = axisScale(f, l.lon2D), sy = axisScale(f, l.lat2D);
+        const LinearConversion cx = axisConversion(f, l.lon2D), cy = axisConversion(f, l.lat2D);
         const std::size_t nh = g.nx * g.ny;
         g.nodeX.resize(nh);
         g.nodeY.resize(nh);
         for (std::size_t n = 0; n < nh; ++n)
         {
-            g.nodeX[n] = h.nodeLon[n] * sx;
-            g.nodeY[n] = h.nodeLat[n] * sy;
+            g.nodeX[n] = cx(h.nodeLon[n]);
+            g.nodeY[n] = cy(h.nodeLat[n]);
         }
         return;
     }
-    const double sx = axisScale(f, l.coordVar[std::size_t(l.dimX)]), sy = axisScale(f, l.coordVar[std::size_t(l.dimY)]);
+    const LinearConversion cx = axisConversion(f, l.coordVar[std::size_t(l.dimX)]);
+    const LinearConversion cy = axisConversion(f, l.coordVar[std::size_t(l.dimY)]);
     for (double v : h.lon1D)
-        g.x.push_back(v * sx);
+        g.x.push_back(cx(v));
     for (double v : h.lat1D)
-        g.y.push_back(v * sy);
+        g.y.push_back(cy(v));
 }
 }  // namespace
 

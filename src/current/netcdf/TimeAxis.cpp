@@ -21,11 +21,35 @@ std::size_t firstNotIncreasing(const std::vector<double> &v)
 }
 }  // namespace
 
-TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated)
+namespace
+{
+bool hasSince(const std::string &units)
+{
+    return lower(units).find(" since ") != std::string::npos;
+}
+
+/// The message for a time axis without "since" where dates are needed.
+std::string undatedMessage(const std::string &tn, const std::string &units)
+{
+    return "time variable '" + tn + "': units '" + units +
+           "' have no date; expected '<seconds|minutes|hours|days> since <date>': give the units with "
+           "NetCdfCurrentOptions::timeUnits (\"days since 2026-01-15\"), or plan on one record as a steady field "
+           "with NetCdfCurrentOptions::steadyRecord";
+}
+}  // namespace
+
+TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated, const std::string &unitsOverride)
 {
     TimeValues out;
     out.name = f.varName(tv);
     const std::string &tn = out.name;
+    const bool overridden = !unitsOverride.empty();
+    const std::string units = overridden ? trim(unitsOverride) : unitsOf(f, tv);
+    if (overridden && !hasSince(units))
+        throw f.error("NetCdfCurrentOptions::timeUnits '" + unitsOverride + "' (for time variable '" + tn +
+                      "'): expected '<seconds|minutes|hours|days> since <date>'");
+    if (!hasSince(units) && !allowUndated)
+        throw f.error(undatedMessage(tn, units));
     const std::vector<double> raw = f.readAll1D(tv);
     if (raw.empty())
         throw f.error("time variable '" + tn + "' has no values");
@@ -35,11 +59,10 @@ TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated)
         throw f.error("time variable '" + tn + "' is not strictly monotonic: " + numText(raw[bad - 1]) +
                       " at index " + std::to_string(bad - 1) + ", then " + numText(raw[bad]) + " at index " +
                       std::to_string(bad) + "; expected increasing times");
-    const std::string units = unitsOf(f, tv);
     const std::string cal = f.attText(tv, "calendar").value_or("standard");
     std::vector<double> &ts = out.times;
     ts.resize(raw.size());
-    if (lower(units).find(" since ") != std::string::npos)
+    if (hasSince(units))
     {
         CfTimeUnits cu;
         try
@@ -48,6 +71,9 @@ TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated)
         }
         catch (const Error &e)
         {
+            if (overridden)
+                throw f.error("NetCdfCurrentOptions::timeUnits '" + unitsOverride + "' (for time variable '" + tn +
+                              "'): " + e.what());
             throw f.error("time variable '" + tn + "': " + e.what());
         }
         out.dated = true;
@@ -56,11 +82,8 @@ TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated)
         for (std::size_t k = 0; k < raw.size(); ++k)
             ts[k] = (raw[k] - raw[0]) * cu.secondsPerUnit;
     }
-    else if (allowUndated)
-        ts = raw;
     else
-        throw f.error("time variable '" + tn + "': units '" + units +
-                      "', expected '<seconds|minutes|hours|days> since <date>'");
+        ts = raw;
     for (std::size_t j = 0; j < ts.size(); ++j)
         if (!std::isfinite(ts[j]) || (j > 0 && !(ts[j] > ts[j - 1])))
             throw f.error("time variable '" + tn + "': " + numText(raw[j]) + " at index " + std::to_string(j) +
@@ -68,12 +91,38 @@ TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated)
     return out;
 }
 
+std::optional<SteadyRecord> steadyRecordOf(const NcFile &f, int timeDim, int tv, const NetCdfCurrentOptions &opt)
+{
+    if (!opt.steadyRecord)
+        return std::nullopt;
+    const std::size_t k = *opt.steadyRecord, n = f.dimLen(timeDim);
+    const std::string tn = tv >= 0 ? f.varName(tv) : f.dimName(timeDim);
+    if (k >= n)
+        throw f.error("NetCdfCurrentOptions::steadyRecord " + std::to_string(k) + " is out of range: time variable '" +
+                      tn + "' has " + std::to_string(n) + " record" + (n == 1 ? "" : "s") +
+                      (n > 0 ? " (0 to " + std::to_string(n - 1) + ")" : ""));
+    SteadyRecord r;
+    r.index = k;
+    // dated by the record's time when the axis (or NetCdfCurrentOptions::timeUnits) has dates; else undated, and
+    // the time values are not needed at all
+    const std::string units = !opt.timeUnits.empty() ? opt.timeUnits : (tv >= 0 ? unitsOf(f, tv) : "");
+    if (tv >= 0 && (hasSince(units) || !opt.timeUnits.empty()))
+    {
+        const TimeValues v = readTimeValues(f, tv, true, opt.timeUnits);
+        r.dated = v.dated;
+        r.calendar = v.calendar;
+        r.originSeconds = v.originSeconds + v.times.at(k);
+    }
+    return r;
+}
+
 namespace
 {
-/// The departure in field time (the first forecast time when none is given). @throws Error outside the forecast.
-double departureOf(const NcFile &f, const NetCdfCurrentOptions &opt, const TimeValues &tv, const NetCdfCurrents &out)
+/// The departure in field time (the first forecast time when none is given). @throws Error when it is not a time
+/// of the file, or outside the forecast of an unsteady field.
+double departureOf(const NcFile &f, const NetCdfCurrentOptions &opt, const std::string &tn,
+                   const std::vector<double> &ts, const NetCdfCurrents &out)
 {
-    const std::vector<double> &ts = tv.times;
     double dep = ts.front();
     if (opt.departure.empty())
         return dep;
@@ -85,9 +134,9 @@ double departureOf(const NcFile &f, const NetCdfCurrentOptions &opt, const TimeV
     {
         throw f.error(std::string("departure: ") + e.what());
     }
-    if (dep < ts.front() || dep > ts.back())
+    if (!out.steady && (dep < ts.front() || dep > ts.back()))
         throw f.error("departure " + opt.departure + " (" + out.isoTime(dep) +
-                      ") is outside the forecast of variable '" + tv.name + "' [" + out.isoTime(ts.front()) + ", " +
+                      ") is outside the forecast of variable '" + tn + "' [" + out.isoTime(ts.front()) + ", " +
                       out.isoTime(ts.back()) + "]");
     return dep;
 }
@@ -98,11 +147,28 @@ AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentO
     AxisSelection s;
     if (l.dimT < 0)
     {
-        if (!opt.departure.empty())
-            out.departureTime = out.fieldTime(opt.departure);
+        const std::string what = "variable '" + l.uName + "' has no time dimension (a steady field)";
+        if (!opt.timeUnits.empty())
+            throw f.error("NetCdfCurrentOptions::timeUnits given, but " + what);
+        if (opt.steadyRecord)
+            throw f.error("NetCdfCurrentOptions::steadyRecord given, but " + what);
+        out.steady = true;
+        out.departureTime = departureOf(f, opt, "", {0.0}, out);
         return s;
     }
-    const TimeValues tv = readTimeValues(f, l.coordVar[std::size_t(l.dimT)], !l.geographic);
+    const int tVar = l.coordVar[std::size_t(l.dimT)];
+    if (const auto rec = steadyRecordOf(f, l.dims[std::size_t(l.dimT)], tVar, opt))
+    {
+        out.steady = true;
+        out.dated = rec->dated;
+        out.calendar = rec->calendar;
+        out.originSeconds = rec->originSeconds;
+        out.departureTime = departureOf(f, opt, f.varName(tVar), {0.0}, out);
+        s.idx = {rec->index};
+        s.values = {0.0};
+        return s;
+    }
+    const TimeValues tv = readTimeValues(f, tVar, !l.geographic, opt.timeUnits);
     const std::vector<double> &ts = tv.times;
     out.dated = tv.dated;
     if (tv.dated)
@@ -110,10 +176,13 @@ AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentO
         out.calendar = tv.calendar;
         out.originSeconds = tv.originSeconds;
     }
+    out.steady = ts.size() == 1;
     out.forecastBegin = ts.front();
     out.forecastEnd = ts.back();
-    const double dep = departureOf(f, opt, tv, out);
+    const double dep = departureOf(f, opt, tv.name, ts, out);
     out.departureTime = dep;
+    if (out.steady)
+        return s;  // the one record: {0}/{0}
     // departure to departure + horizon, plus 2 forecast steps on each side for cubic/Akima stencils
     const double end = std::isfinite(opt.horizon) ? dep + std::max(0.0, opt.horizon) : ts.back();
     const Axis ax(ts, "time '" + tv.name + "'");
@@ -141,10 +210,29 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const NetCdfCurrentOp
     NetCdfTimeAxis axis;
     const int dimT = dr.find(Role::Time);
     if (dimT < 0)
+    {
+        const std::string what = "variable '" + f.varName(uVar) + "' has no time dimension (a steady field)";
+        if (!options.timeUnits.empty())
+            throw f.error("NetCdfCurrentOptions::timeUnits given, but " + what);
+        if (options.steadyRecord)
+            throw f.error("NetCdfCurrentOptions::steadyRecord given, but " + what);
+        axis.steady = true;
         return axis;
-    const TimeValues tv = readTimeValues(f, dr.coordVar[std::size_t(dimT)], true);
+    }
+    const int tVar = dr.coordVar[std::size_t(dimT)];
     axis.found = true;
-    axis.variable = tv.name;
+    axis.variable = f.varName(tVar);
+    if (const auto rec = steadyRecordOf(f, dr.dims[std::size_t(dimT)], tVar, options))
+    {
+        axis.steady = true;
+        axis.dated = rec->dated;
+        axis.calendar = rec->calendar;
+        axis.originSeconds = rec->originSeconds;
+        axis.size = 1;
+        return axis;
+    }
+    const TimeValues tv = readTimeValues(f, tVar, true, options.timeUnits);
+    axis.steady = tv.times.size() == 1;
     axis.dated = tv.dated;
     axis.calendar = tv.calendar;
     axis.originSeconds = tv.originSeconds;

@@ -1,57 +1,64 @@
-// Units (velocities to m/s, Cartesian axes to metres) and packing (scale_factor / add_offset, fill values and
+// Units (velocities to m/s, Cartesian axes to metres, both with UDUNITS-2: UnitConversion.h) and packing (scale_factor / add_offset, fill values and
 // valid ranges compared on the packed value).
 #include <cctype>
 #include <cmath>
 
 #include "NetCdfInternal.h"
+#include "ompl_glider/current/UnitConversion.h"
 
 namespace ompl_glider
 {
 namespace netcdf_detail
 {
-std::optional<double> velocityScale(const std::string &units)
+LinearConversion velocityConversionOf(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt)
 {
-    std::string s;
-    for (char c : lower(units))
-        if (!std::isspace(static_cast<unsigned char>(c)))
-            s += c;
-    if (inList(s, {"m/s", "ms-1", "m.s-1", "ms^-1", "m.s^-1", "m*s-1", "m/sec", "meter/second", "meters/second",
-                   "metre/second", "metres/second", "meterspersecond", "metrespersecond", "meter/sec", "meters/sec",
-                   "mps"}))
-        return 1.0;
-    if (inList(s, {"cm/s", "cms-1", "cm.s-1", "cms^-1", "cm.s^-1", "cm*s-1", "cm/sec", "centimeter/second",
-                   "centimeters/second", "centimetre/second", "centimetres/second", "centimeterspersecond"}))
-        return 0.01;
-    if (inList(s, {"knots", "knot", "kt", "kts", "kn"}))
-        return 1852.0 / 3600.0;
-    return std::nullopt;
+    const bool given = !opt.velocityUnits.empty();
+    const std::string uu = given ? opt.velocityUnits : unitsOf(f, l.uVar);
+    const std::string vu = given ? opt.velocityUnits : unitsOf(f, l.vVar);
+    const auto noUnits = [](const std::string &u) { return trim(u).empty() || trim(u) == "1"; };
+    if (!l.geographic && noUnits(uu) && noUnits(vu))
+        return {};  // dimensionless velocities of a Cartesian file (the analytic flows sampled to a grid)
+    const auto conversion = [&](const std::string &units, const std::string &var) {
+        if (!given && trim(units).empty())
+            throw f.error("variable '" + var + "' has no units attribute; expected a velocity (m/s, cm/s, knots): "
+                          "give the units with NetCdfCurrentOptions::velocityUnits");
+        try
+        {
+            return velocityToMetresPerSecond(units);
+        }
+        catch (const Error &e)
+        {
+            if (given)
+                throw f.error("NetCdfCurrentOptions::velocityUnits (for variables '" + l.uName + "' and '" + l.vName +
+                              "'): " + e.what());
+            throw f.error("variable '" + var + "': " + e.what() +
+                          "; give the right units with NetCdfCurrentOptions::velocityUnits");
+        }
+    };
+    const LinearConversion cu = conversion(uu, l.uName), cv = conversion(vu, l.vName);
+    if (cu.factor != cv.factor || cu.offset != cv.offset)
+        throw f.error("variables '" + l.uName + "' and '" + l.vName + "' have different units ('" + uu + "' and '" +
+                      vu + "')");
+    return cu;
 }
 
-double velocityScaleOf(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt)
+LinearConversion axisConversion(const NcFile &f, int var)
 {
-    const std::string uu = opt.velocityUnits.empty() ? unitsOf(f, l.uVar) : opt.velocityUnits;
-    const std::string vu = opt.velocityUnits.empty() ? unitsOf(f, l.vVar) : opt.velocityUnits;
-    auto su = velocityScale(uu), sv = velocityScale(vu);
-    const bool dimensionless = !l.geographic && (uu.empty() || uu == "1") && (vu.empty() || vu == "1");
-    if (dimensionless)
-        return 1.0;
-    if (!su)
-        throw f.error("variable '" + l.uName + "': units '" + uu +
-                      "' not understood; expected m/s (m s-1), cm/s (cm s-1) or knots");
-    if (!sv)
-        throw f.error("variable '" + l.vName + "': units '" + vu +
-                      "' not understood; expected m/s (m s-1), cm/s (cm s-1) or knots");
-    if (*su != *sv)
-        throw f.error("variables '" + l.uName + "' and '" + l.vName + "' have different units");
-    return *su;
-}
-
-double axisScale(const NcFile &f, int var)
-{
-    const std::string u = lower(unitsOf(f, var));
-    if (u == "km" || u == "kilometer" || u == "kilometers" || u == "kilometre" || u == "kilometres")
-        return 1000.0;
-    return 1.0;
+    const std::string units = trim(unitsOf(f, var));
+    // No units, UDUNITS-2's dimensionless ones ("1", "count", angles such as degrees_east, read as x/y in
+    // CoordinateMode::Cartesian), and a few words UDUNITS-2 does not know that say the same: the values as they are.
+    if (units.empty() || inList(lower(units), {"none", "nondimensional", "dimensionless", "-", "index", "grid_index"}) ||
+        isDimensionless(units))
+        return {};
+    try
+    {
+        return lengthToMetres(units);
+    }
+    catch (const Error &e)
+    {
+        throw f.error("coordinate '" + f.varName(var) + "': " + e.what() +
+                      "; Cartesian axes are read in a length unit (m, km) or without units");
+    }
 }
 
 bool Packing::isFill(double raw) const

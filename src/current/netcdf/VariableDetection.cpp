@@ -66,13 +66,36 @@ bool isDepthVar(const NcFile &f, int var)
            inList(n, {"depth", "deptht", "depthu", "depthv", "depthw", "z", "lev", "level", "zlev"});
 }
 
+namespace
+{
+/// "name(dim,dim,...) [units]" of every variable with 2 or more dimensions: what the user may mean by u and v.
+std::string candidateList(const NcFile &f)
+{
+    std::string out;
+    for (int var = 0; var < f.nvars(); ++var)
+    {
+        const std::vector<int> dims = f.varDims(var);
+        if (dims.size() < 2)
+            continue;
+        std::string item = f.varName(var) + "(";
+        for (std::size_t d = 0; d < dims.size(); ++d)
+            item += (d ? "," : "") + f.dimName(dims[d]);
+        const std::string units = trim(unitsOf(f, var));
+        item += ") [" + (units.empty() ? std::string("no units") : units) + "]";
+        out += (out.empty() ? "" : ", ") + item;
+    }
+    return out.empty() ? "none (no variable has 2 or more dimensions)" : out;
+}
+}  // namespace
+
 int findVelocity(const NcFile &f, const std::string &given, bool east, const std::string &optionName)
 {
     if (!given.empty())
     {
         auto v = f.findVar(given);
         if (!v)
-            throw f.error("no variable '" + given + "' (given with NetCdfCurrentOptions::" + optionName + ")");
+            throw f.error("no variable '" + given + "' (given with NetCdfCurrentOptions::" + optionName +
+                          "); candidates: " + candidateList(f));
         return *v;
     }
     const std::vector<std::string> stdNames =
@@ -88,21 +111,31 @@ int findVelocity(const NcFile &f, const std::string &given, bool east, const std
                                         "barotropic_northward_sea_water_velocity",
                                         "surface_geostrophic_northward_sea_water_velocity", "northward_current",
                                         "sea_water_y_velocity"};
+    // Usual names of files without CF standard names, matched without regard to case (UVEL, UWND, U10): Copernicus
+    // and NEMO (uo, vozocrtx), HYCOM (water_u), POP (uvel; urot rotated to east/north), ROMS post-processed
+    // (u_eastward), winds of reanalyses and weather models (uwnd, u10) for vehicles in wind.
     const std::vector<std::string> names =
-        east ? std::vector<std::string>{"uo", "u", "water_u", "uvel", "vozocrtx", "ucur", "U", "u_current"}
-             : std::vector<std::string>{"vo", "v", "water_v", "vvel", "vomecrty", "vcur", "V", "v_current"};
+        east ? std::vector<std::string>{"uo", "u", "water_u", "uvel", "urot", "u_eastward", "vozocrtx", "ucur",
+                                        "u_current", "uwnd", "u10"}
+             : std::vector<std::string>{"vo", "v", "water_v", "vvel", "vrot", "v_northward", "vomecrty", "vcur",
+                                        "v_current", "vwnd", "v10"};
     const int nv = f.nvars();
     for (const std::string &sn : stdNames)
         for (int var = 0; var < nv; ++var)
             if (stdName(f, var) == sn)
                 return var;
     for (const std::string &n : names)
-        if (auto v = f.findVar(n))
+    {
+        if (auto v = f.findVar(n))  // as listed first (a file may hold both u and U)
             return *v;
+        for (int var = 0; var < nv; ++var)
+            if (lower(f.varName(var)) == n)
+                return var;
+    }
     throw f.error(std::string("no ") + (east ? "eastward (u)" : "northward (v)") +
-                  " velocity variable: expected a variable with standard_name one of {" + joinNames(stdNames) +
-                  "} or named one of {" + joinNames(names) + "}; give its name with NetCdfCurrentOptions::" +
-                  optionName);
+                  " velocity found: no variable with standard_name one of {" + joinNames(stdNames) +
+                  "} or named one of {" + joinNames(names) + "} (in any case); candidates: " + candidateList(f) +
+                  "; name them with NetCdfCurrentOptions::uName/vName");
 }
 
 int DimensionRoles::find(Role r) const

@@ -1,5 +1,6 @@
 // Readers of the mission's sections: current (with the NetCDF file's calendar), region, departure, dive profile,
 // planner and outputs ([EichhornOceans] Sec. IV mission contents).
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -10,10 +11,12 @@
 #include "ompl_glider/current/CfTime.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/mission/IsoTime.h"
+#include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/output/OutputFormats.h"
 #include "ompl_glider/planners/PlannerRegistry.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/UnitConversion.h"
 #endif
 
 namespace ompl_glider::mission_loader
@@ -37,23 +40,33 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
         return it == m.current.variables.end() ? std::string() : it->second;
     };
     const std::string timeName = given("time"), uName = given("u");
+    NetCdfCurrentOptions o;
+    o.timeName = timeName;
+    o.uName = uName;
+    o.timeUnits = m.current.timeUnits;
+    o.steadyRecord = m.current.steadyRecord;
     NetCdfTimeAxis axis;
     try
     {
-        axis = readNetCdfTimeAxis(m.current.file, timeName, uName);
+        axis = readNetCdfTimeAxis(m.current.file, o);
     }
     catch (const Error &e)
     {
-        // on the variable the message names when the mission gave it, else on the file
-        const std::string what = e.what();
+        // on the option or the variable the message names when the mission gave it, else on the file
+        const std::string what = netCdfMissionMessage(e.what());
+        if (n["time_units"] && what.find("current.time_units") != std::string::npos)
+            r.fail(n["time_units"], "current.time_units", what);
+        if (n["steady_record"] && what.find("current.steady_record") != std::string::npos)
+            r.fail(n["steady_record"], "current.steady_record", what);
         if (!timeName.empty() && what.find("'" + timeName + "'") != std::string::npos)
             r.fail(n["variables"]["time"], "current.variables.time", what);
         if (!uName.empty() && what.find("'" + uName + "'") != std::string::npos)
             r.fail(n["variables"]["u"], "current.variables.u", what);
         r.fail(n["file"], "current.file", what);
     }
+    m.current.steady = axis.steady;
     if (!axis.found || !axis.dated)
-        return;  // a steady field, or raw times of a Cartesian file: no calendar
+        return;  // a steady field without dates, or raw times of a Cartesian file: no calendar
     MissionSpec::FileCalendar fc;
     fc.calendar = axis.calendar;
     fc.originSeconds = axis.originSeconds;
@@ -62,12 +75,47 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
 #endif
 }
 
+/// current.velocity_units (checked with UDUNITS-2 now: it does not depend on the file), current.time_units
+/// (checked against the file's calendar by readFileCalendar) and current.steady_record.
+void readUnitsAndRecord(const Reader &r, const YAML::Node &n, CurrentSpec &c)
+{
+    const std::string f = "current";
+    if (n["velocity_units"])
+    {
+        c.velocityUnits = r.text(n["velocity_units"], f + ".velocity_units");
+#if OMPL_GLIDER_WITH_NETCDF
+        try
+        {
+            (void)velocityToMetresPerSecond(c.velocityUnits);
+        }
+        catch (const Error &e)
+        {
+            r.fail(n["velocity_units"], f + ".velocity_units", e.what());
+        }
+#endif
+    }
+    if (n["time_units"])
+    {
+        c.timeUnits = r.text(n["time_units"], f + ".time_units");
+        std::string lower = c.timeUnits;
+        for (char &ch : lower)
+            ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        if (lower.find(" since ") == std::string::npos)
+            r.fail(n["time_units"], f + ".time_units",
+                   "expected '<seconds|minutes|hours|days> since <date>', got '" + c.timeUnits + "'");
+    }
+    if (n["steady_record"])
+        c.steadyRecord =
+            static_cast<std::size_t>(r.integer(n["steady_record"], f + ".steady_record", 0, 1000000000L));
+}
 }  // namespace
 
 void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "current";
-    r.checkMap(n, f, {"type", "parameters", "file", "variables", "interpolation", "horizon", "zero_velocity_land"});
+    r.checkMap(n, f,
+               {"type", "parameters", "file", "variables", "interpolation", "horizon", "velocity_units", "time_units",
+                "steady_record", "zero_velocity_land"});
     CurrentSpec &c = m.current;
     c.mark = {r.file(), r.line(n)};
     std::set<std::string> kinds;
@@ -92,7 +140,8 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (c.type == "double_gyre" && c.parameters.count("length") && !(c.parameters["length"] > 0))
         r.fail(n["parameters"]["length"], f + ".parameters.length", "expected a number > 0");
     const bool netcdf = kind.gridded;
-    for (const char *key : {"file", "variables", "interpolation", "horizon", "zero_velocity_land"})
+    for (const char *key : {"file", "variables", "interpolation", "horizon", "velocity_units", "time_units",
+                            "steady_record", "zero_velocity_land"})
         if (n[key] && !netcdf)
             r.fail(n[key], f + "." + key, "only for type netcdf");
     if (!netcdf)
@@ -125,6 +174,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
         c.horizonPolicy = r.oneOf(n["horizon"], f + ".horizon", {"refuse", "hold_last"});
     if (n["zero_velocity_land"])
         c.zeroVelocityLand = r.boolean(n["zero_velocity_land"], f + ".zero_velocity_land");
+    readUnitsAndRecord(r, n, c);
     readFileCalendar(r, n, m);
 }
 

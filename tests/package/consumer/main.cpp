@@ -1,5 +1,6 @@
-// Uses the installed library: one leg in a uniform current, checked against the closed form, and, when the
-// package has the mission component, the built-in Gulf Stream mission through the planning pipeline.
+// Uses the installed library: one leg in a uniform current, checked against the closed form, when the package
+// has the NetCDF component a unit conversion through UDUNITS-2 (a private dependency a static library carries),
+// and, when it has the mission component, the built-in Gulf Stream mission through the planning pipeline.
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -7,6 +8,9 @@
 #include <ompl_glider/Config.h>
 #include <ompl_glider/cost/TravelTimeCalculator.h>
 #include <ompl_glider/current/UniformCurrent.h>
+#if OMPL_GLIDER_WITH_NETCDF
+#include <ompl_glider/current/UnitConversion.h>
+#endif
 #if OMPL_GLIDER_WITH_MISSION
 #include <ompl_glider/mission/Planning.h>
 #endif
@@ -21,6 +25,12 @@ int main()
     std::printf("travel time %.9f (expected %.9f)\n", t, 4.0 / 0.8);
     if (std::abs(t - 5.0) >= 1e-9)
         return 1;
+#if OMPL_GLIDER_WITH_NETCDF
+    const double knot = ompl_glider::velocityToMetresPerSecond("knots").factor;
+    std::printf("1 knot = %.12f m/s\n", knot);
+    if (std::abs(knot - 1852.0 / 3600.0) > 1e-15)
+        return 1;
+#endif
 #if OMPL_GLIDER_WITH_MISSION
     const ompl_glider::MissionProblem problem(ompl_glider::defaultGulfStreamMission());
     const ompl_glider::MissionResult r = ompl_glider::runMission(problem);
