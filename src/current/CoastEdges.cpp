@@ -8,6 +8,25 @@ namespace ompl_glider
 {
 namespace detail
 {
+namespace
+{
+/// A count of buckets from a real number: 1 for anything not finite, at most 2^14.
+std::size_t bucketCount(double q)
+{
+    return std::isfinite(q) ? static_cast<std::size_t>(std::clamp(std::ceil(q), 1.0, 16384.0)) : std::size_t{1};
+}
+
+/// The bucket of coordinate v along an axis from o with inverse size inv and n buckets (NaN and far values
+/// clamped).
+std::size_t bucketOf(double v, double o, double inv, std::size_t n)
+{
+    const double q = (v - o) * inv;
+    if (!(q > 0.0))
+        return 0;
+    return q >= double(n - 1) ? n - 1 : static_cast<std::size_t>(q);
+}
+}  // namespace
+
 void CoastEdges::build(std::size_t nx, std::size_t ny, std::size_t nz, const std::vector<std::uint8_t> &cellWater,
                        const NodeXY &node, double x0, double x1, double y0, double y1)
 {
@@ -17,13 +36,15 @@ void CoastEdges::build(std::size_t nx, std::size_t ny, std::size_t nz, const std
     const double w = std::max(x1 - x0, 1e-300), h = std::max(y1 - y0, 1e-300);
     const double cells = std::max<double>(1.0, double(cx) * double(cy) / 4.0);
     const double side = std::sqrt(w * h / cells);
-    bnx_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(w / side)), 1, 1u << 14);
-    bny_ = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(h / side)), 1, 1u << 14);
+    bnx_ = bucketCount(w / side);
+    bny_ = bucketCount(h / side);
     x0_ = x0;
     y0_ = y0;
-    inv_ = std::min(double(bnx_) / w, double(bny_) / h);
-    bnx_ = static_cast<std::size_t>(std::ceil(w * inv_)) + 1;
-    bny_ = static_cast<std::size_t>(std::ceil(h * inv_)) + 1;
+    inv_ = std::min(double(bnx_) / w, double(bny_) / h);  // 0 for an infinite extent: one bucket holds all
+    if (!std::isfinite(inv_) || !(inv_ >= 0.0))
+        inv_ = 0.0;
+    bnx_ = bucketCount(w * inv_) + 1;
+    bny_ = bucketCount(h * inv_) + 1;
 
     auto pushEdge = [&](Layer &L, std::size_t n1, std::size_t n2) {
         Edge e{};
@@ -54,14 +75,10 @@ void CoastEdges::build(std::size_t nx, std::size_t ny, std::size_t nz, const std
         const std::size_t nb = bnx_ * bny_;
         L.start.assign(nb + 1, 0);
         auto range = [&](const Edge &e, std::size_t &i0, std::size_t &i1, std::size_t &j0, std::size_t &j1) {
-            auto bucket = [&](double v, double o, std::size_t n) {
-                const double q = (v - o) * inv_;
-                return q <= 0.0 ? std::size_t{0} : std::min(n - 1, static_cast<std::size_t>(q));
-            };
-            i0 = bucket(std::min(e.ax, e.bx), x0_, bnx_);
-            i1 = bucket(std::max(e.ax, e.bx), x0_, bnx_);
-            j0 = bucket(std::min(e.ay, e.by), y0_, bny_);
-            j1 = bucket(std::max(e.ay, e.by), y0_, bny_);
+            i0 = bucketOf(std::min(e.ax, e.bx), x0_, inv_, bnx_);
+            i1 = bucketOf(std::max(e.ax, e.bx), x0_, inv_, bnx_);
+            j0 = bucketOf(std::min(e.ay, e.by), y0_, inv_, bny_);
+            j1 = bucketOf(std::max(e.ay, e.by), y0_, inv_, bny_);
         };
         for (const Edge &e : L.edges)
         {
@@ -129,21 +146,15 @@ void CoastEdges::meet(std::size_t k, double ax, double ay, double bx, double by,
     const double rx = bx - ax, ry = by - ay;
     if (rx == 0.0 && ry == 0.0)
         return;
-    auto col = [&](double x) {
-        const double q = (x - x0_) * inv_;
-        return q <= 0.0 ? std::size_t{0} : std::min(bnx_ - 1, static_cast<std::size_t>(q));
-    };
-    auto row = [&](double y) {
-        const double q = (y - y0_) * inv_;
-        return q <= 0.0 ? std::size_t{0} : std::min(bny_ - 1, static_cast<std::size_t>(q));
-    };
+    auto col = [&](double x) { return bucketOf(x, x0_, inv_, bnx_); };
+    auto row = [&](double y) { return bucketOf(y, y0_, inv_, bny_); };
     const std::size_t c0 = col(std::min(ax, bx)), c1 = col(std::max(ax, bx));
     std::vector<std::uint32_t> seen;
     for (std::size_t c = c0; c <= c1; ++c)
     {
         // the part of the segment within this column of buckets (a little wider, so nothing at a border is lost)
         double ylo = std::min(ay, by), yhi = std::max(ay, by);
-        if (rx != 0.0)
+        if (rx != 0.0 && inv_ > 0.0)
         {
             const double cxa = x0_ + double(c) / inv_, cxb = x0_ + double(c + 1) / inv_;
             const double sa = std::clamp((cxa - ax) / rx, 0.0, 1.0), sb = std::clamp((cxb - ax) / rx, 0.0, 1.0);
@@ -151,7 +162,7 @@ void CoastEdges::meet(std::size_t k, double ax, double ay, double bx, double by,
             ylo = std::min(ya, yb);
             yhi = std::max(ya, yb);
         }
-        const double pad = 1e-9 / inv_;
+        const double pad = inv_ > 0.0 ? 1e-9 / inv_ : 0.0;
         const std::size_t r0 = row(ylo - pad), r1 = row(yhi + pad);
         const std::size_t cl = c > 0 ? c - 1 : c, ch = std::min(bnx_ - 1, c + 1);
         for (std::size_t r = r0; r <= r1; ++r)
