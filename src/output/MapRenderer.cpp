@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <set>
 
 #include <cairo-svg.h>
@@ -41,10 +42,36 @@ std::string fmt(double v, int prec = -1)
     return buf;
 }
 
+/// A graticule step in degrees giving about `lines` lines over `span` degrees.
+double degreeStep(double span, double lines)
+{
+    for (double s : {0.01, 0.02, 0.05, 0.1, 0.2, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0, 15.0, 30.0})
+        if (span / s <= lines)
+            return s;
+    return 45.0;
+}
+
+/// "76.50°W", "18.2°N": a longitude (east) or latitude (north) with as many decimals as the step needs.
+std::string degrees(double v, double step, bool east)
+{
+    int d = 0;
+    while (d < 3 && std::abs(step * std::pow(10.0, d) - std::round(step * std::pow(10.0, d))) > 1e-6)
+        ++d;
+    if (east)
+        v = std::remainder(v, 360.0);
+    if (std::abs(v) < 1e-9)
+        v = 0.0;
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.*f\u00b0%s", d, std::abs(v),
+                  v == 0.0 || (!east && std::abs(v) < 1e-9) ? "" : east ? (v < 0 ? "W" : "E") : (v < 0 ? "S" : "N"));
+    return buf;
+}
+
 void setColour(cairo_t *cr, const Rgba &c)
 {
     cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
 }
+
 
 /// Text with a white halo so that it stays readable over lines and shading.
 void haloText(cairo_t *cr, double x, double y, const std::string &s, const Rgba &c, double size, bool bold = false,
@@ -143,6 +170,121 @@ void arrow(cairo_t *cr, double x, double y, double dx, double dy, double head)
     cairo_close_path(cr);
     cairo_fill(cr);
 }
+/// Meridians and parallels through the field's frame (toLocal of points along each) when `lines`; else their
+/// labels where they leave the plot at the bottom (longitudes) and left (latitudes) edges, and a scale bar when the
+/// frame is in metres.
+void drawGraticule(cairo_t *cr, const Region &reg, const MapOptions &o, const std::function<double(double)> &X,
+                   const std::function<double(double)> &Y, bool lines)
+{
+    // the lon/lat extent of the plot, longitudes unwrapped about the centre's
+    const LonLat c = o.toGeographic({0.5 * (reg.xMin + reg.xMax), 0.5 * (reg.yMin + reg.yMax)});
+    double lon0 = 1e9, lon1 = -1e9, lat0 = 1e9, lat1 = -1e9;
+    for (int k = 0; k <= 60; ++k)
+    {
+        const double s = k / 60.0;
+        for (const Point2 p : {Point2{reg.xMin + s * (reg.xMax - reg.xMin), reg.yMin},
+                               Point2{reg.xMin + s * (reg.xMax - reg.xMin), reg.yMax},
+                               Point2{reg.xMin, reg.yMin + s * (reg.yMax - reg.yMin)},
+                               Point2{reg.xMax, reg.yMin + s * (reg.yMax - reg.yMin)}})
+        {
+            const LonLat g = o.toGeographic(p);
+            const double lon = c.lon + std::remainder(g.lon - c.lon, 360.0);
+            lon0 = std::min(lon0, lon);
+            lon1 = std::max(lon1, lon);
+            lat0 = std::min(lat0, g.lat);
+            lat1 = std::max(lat1, g.lat);
+        }
+    }
+    if (!(lon1 > lon0) || !(lat1 > lat0))
+        return;
+    const double step = degreeStep(std::max(lon1 - lon0, lat1 - lat0), 7.0);
+    const int n = 80;
+    auto line = [&](bool meridian, double v) {
+        std::vector<Point2> pts;
+        for (int k = 0; k <= n; ++k)
+        {
+            const double s = k / double(n);
+            const LonLat g = meridian ? LonLat{v, lat0 + s * (lat1 - lat0)} : LonLat{lon0 + s * (lon1 - lon0), v};
+            pts.push_back(o.toLocal(g));
+        }
+        return pts;
+    };
+    if (lines)
+    {
+    cairo_save(cr);
+    cairo_rectangle(cr, X(reg.xMin), Y(reg.yMax), X(reg.xMax) - X(reg.xMin), Y(reg.yMin) - Y(reg.yMax));
+    cairo_clip(cr);
+    cairo_set_source_rgba(cr, 0.25, 0.25, 0.25, 0.45);
+    cairo_set_line_width(cr, 0.7);
+    for (int meridian = 0; meridian < 2; ++meridian)
+        for (double v = std::ceil((meridian ? lon0 : lat0) / step) * step; v <= (meridian ? lon1 : lat1) + 1e-9;
+             v += step)
+        {
+            const auto pts = line(meridian, v);
+            for (std::size_t k = 0; k < pts.size(); ++k)
+                k == 0 ? cairo_move_to(cr, X(pts[k].x), Y(pts[k].y)) : cairo_line_to(cr, X(pts[k].x), Y(pts[k].y));
+            cairo_stroke(cr);
+        }
+    cairo_restore(cr);
+    return;
+    }
+    // labels where the lines leave the plot: meridians at the bottom edge, parallels at the left edge
+    for (int meridian = 0; meridian < 2; ++meridian)
+        for (double v = std::ceil((meridian ? lon0 : lat0) / step) * step; v <= (meridian ? lon1 : lat1) + 1e-9;
+             v += step)
+        {
+            const auto pts = line(meridian, v);
+            for (std::size_t k = 0; k + 1 < pts.size(); ++k)
+            {
+                const Point2 a = pts[k], b = pts[k + 1];
+                if (meridian && (a.y - reg.yMin) * (b.y - reg.yMin) <= 0 && a.y != b.y)
+                {
+                    const double x = a.x + (reg.yMin - a.y) / (b.y - a.y) * (b.x - a.x);
+                    if (x < reg.xMin || x > reg.xMax)
+                        continue;
+                    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+                    cairo_move_to(cr, X(x), Y(reg.yMin));
+                    cairo_line_to(cr, X(x), Y(reg.yMin) + 5);
+                    cairo_stroke(cr);
+                    plainText(cr, X(x), Y(reg.yMin) + 19, degrees(v, step, true), 12, false, 0.5);
+                    break;
+                }
+                if (!meridian && (a.x - reg.xMin) * (b.x - reg.xMin) <= 0 && a.x != b.x)
+                {
+                    const double y = a.y + (reg.xMin - a.x) / (b.x - a.x) * (b.y - a.y);
+                    if (y < reg.yMin || y > reg.yMax)
+                        continue;
+                    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+                    cairo_move_to(cr, X(reg.xMin) - 5, Y(y));
+                    cairo_line_to(cr, X(reg.xMin), Y(y));
+                    cairo_stroke(cr);
+                    plainText(cr, X(reg.xMin) - 8, Y(y) + 4, degrees(v, step, false), 12, false, 1.0);
+                    break;
+                }
+            }
+        }
+    // scale bar: a round number of km about a fifth of the width, bottom left inside the plot
+    if (o.metresPerUnit > 0.0)
+    {
+        const double widthKm = (reg.xMax - reg.xMin) * o.metresPerUnit / 1000.0;
+        const double raw = widthKm / 5.0, p = std::pow(10.0, std::floor(std::log10(raw))), m = raw / p;
+        const double km = p * (m < 2.0 ? 1.0 : m < 5.0 ? 2.0 : 5.0);
+        const double len = km * 1000.0 / o.metresPerUnit;
+        const double x0 = X(reg.xMin) + 16, y0 = Y(reg.yMin) - 16, x1 = x0 + (X(reg.xMin + len) - X(reg.xMin));
+        cairo_set_source_rgba(cr, 1, 1, 1, 0.75);
+        cairo_rectangle(cr, x0 - 6, y0 - 20, x1 - x0 + 12, 28);
+        cairo_fill(cr);
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        cairo_set_line_width(cr, 2.0);
+        cairo_move_to(cr, x0, y0 - 4);
+        cairo_line_to(cr, x0, y0);
+        cairo_line_to(cr, x1, y0);
+        cairo_line_to(cr, x1, y0 - 4);
+        cairo_stroke(cr);
+        plainText(cr, 0.5 * (x0 + x1), y0 - 7, fmt(km) + " km", 11, false, 0.5);
+    }
+}
+
 }  // namespace
 
 MapRenderer::MapRenderer(const Region &region, MapOptions options) : region_(region), options_(std::move(options))
@@ -248,6 +390,13 @@ void MapRenderer::draw(void *context) const
     auto X = [&](double x) { return kLeft + (x - region_.xMin) * scale; };
     auto Y = [&](double y) { return kTop + (region_.yMax - y) * scale; };
     const std::string tu = options_.timeUnit.empty() ? "" : " " + options_.timeUnit;
+    // a position for the legend: degrees in a geographic frame, else the frame's x/y
+    auto position = [&](double x, double y) {
+        if (!(options_.toGeographic && options_.toLocal))
+            return "(" + fmt(x) + ", " + fmt(y) + ")";
+        const LonLat g = options_.toGeographic({x, y});
+        return degrees(g.lat, 0.001, false) + " " + degrees(g.lon, 0.001, true);
+    };
 
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
@@ -316,12 +465,15 @@ void MapRenderer::draw(void *context) const
     const double xs = niceStep((region_.xMax - region_.xMin) / 8), ys = niceStep((region_.yMax - region_.yMin) / 8);
     cairo_set_source_rgba(cr, 0.3, 0.3, 0.3, 0.18);
     cairo_set_line_width(cr, 0.8);
-    for (double x = std::ceil(region_.xMin / xs) * xs; x <= region_.xMax + 1e-9; x += xs)
+    const bool geographic = options_.toGeographic && options_.toLocal;
+    if (geographic)
+        drawGraticule(cr, region_, options_, X, Y, true);
+    for (double x = std::ceil(region_.xMin / xs) * xs; !geographic && x <= region_.xMax + 1e-9; x += xs)
     {
         cairo_move_to(cr, X(x), kTop);
         cairo_line_to(cr, X(x), kTop + plotH);
     }
-    for (double y = std::ceil(region_.yMin / ys) * ys; y <= region_.yMax + 1e-9; y += ys)
+    for (double y = std::ceil(region_.yMin / ys) * ys; !geographic && y <= region_.yMax + 1e-9; y += ys)
     {
         cairo_move_to(cr, kLeft, Y(y));
         cairo_line_to(cr, kLeft + plotW, Y(y));
@@ -483,26 +635,28 @@ void MapRenderer::draw(void *context) const
     cairo_set_line_width(cr, 1.2);
     cairo_rectangle(cr, kLeft, kTop, plotW, plotH);
     cairo_stroke(cr);
-    for (double x = std::ceil(region_.xMin / xs) * xs; x <= region_.xMax + 1e-9; x += xs)
+    if (geographic)
+        drawGraticule(cr, region_, options_, X, Y, false);
+    for (double x = std::ceil(region_.xMin / xs) * xs; !geographic && x <= region_.xMax + 1e-9; x += xs)
     {
         cairo_move_to(cr, X(x), kTop + plotH);
         cairo_line_to(cr, X(x), kTop + plotH + 5);
         cairo_stroke(cr);
         plainText(cr, X(x), kTop + plotH + 19, fmt(std::abs(x) < 1e-12 ? 0.0 : x), 12, false, 0.5);
     }
-    for (double y = std::ceil(region_.yMin / ys) * ys; y <= region_.yMax + 1e-9; y += ys)
+    for (double y = std::ceil(region_.yMin / ys) * ys; !geographic && y <= region_.yMax + 1e-9; y += ys)
     {
         cairo_move_to(cr, kLeft - 5, Y(y));
         cairo_line_to(cr, kLeft, Y(y));
         cairo_stroke(cr);
         plainText(cr, kLeft - 8, Y(y) + 4, fmt(std::abs(y) < 1e-12 ? 0.0 : y), 12, false, 1.0);
     }
-    plainText(cr, kLeft + plotW / 2, kTop + plotH + 42, "x (east)", 13, true, 0.5);
+    plainText(cr, kLeft + plotW / 2, kTop + plotH + 42, geographic ? "longitude" : "x (east)", 13, true, 0.5);
     cairo_save(cr);
     cairo_move_to(cr, 0, 0);
     cairo_translate(cr, 22, kTop + plotH / 2);
     cairo_rotate(cr, -kPi / 2);
-    plainText(cr, 0, 0, "y (north)", 13, true, 0.5);
+    plainText(cr, 0, 0, geographic ? "latitude" : "y (north)", 13, true, 0.5);
     cairo_restore(cr);
     if (!options_.title.empty())
         plainText(cr, kLeft, 32, options_.title, 17, true);
@@ -543,7 +697,7 @@ void MapRenderer::draw(void *context) const
         cairo_arc(cr, lx + 15, ly, 6, 0, 2 * kPi);
         cairo_set_source_rgb(cr, 0.05, 0.60, 0.15);
         cairo_fill(cr);
-        plainText(cr, lx + 38, ly + 4, "start (" + fmt(sx_) + ", " + fmt(sy_) + ")", 12);
+        plainText(cr, lx + 38, ly + 4, "start " + position(sx_, sy_), 12);
         ly += 22;
         cairo_new_path(cr);
         for (int k = 0; k < 10; ++k)
@@ -555,7 +709,7 @@ void MapRenderer::draw(void *context) const
         cairo_close_path(cr);
         cairo_set_source_rgb(cr, 0.55, 0.0, 0.55);
         cairo_fill(cr);
-        plainText(cr, lx + 38, ly + 4, "goal (" + fmt(gx_) + ", " + fmt(gy_) + ")", 12);
+        plainText(cr, lx + 38, ly + 4, "goal " + position(gx_, gy_), 12);
         ly += 22;
     }
     std::set<std::string> seen;
@@ -583,7 +737,7 @@ void MapRenderer::draw(void *context) const
                                {0.3, 0.3, 0.3, 1}) + 6;
         if (options_.speedShading && vmax > 0)
         {
-            plainText(cr, lx, ly + 4, "current speed", 12);
+            plainText(cr, lx, ly + 4, options_.speedInMetresPerSecond ? "current speed (m/s)" : "current speed", 12);
             ly += 12;
             const double bw = 150, bh = 12;
             for (int k = 0; k < 60; ++k)
@@ -597,7 +751,9 @@ void MapRenderer::draw(void *context) const
             cairo_rectangle(cr, lx, ly, bw, bh);
             cairo_stroke(cr);
             plainText(cr, lx, ly + bh + 13, "0", 11, false, 0.5);
-            plainText(cr, lx + bw, ly + bh + 13, fmt(vmax), 11, false, 0.5);
+            plainText(cr, lx + bw, ly + bh + 13,
+                      fmt(vmax) + (options_.speedInMetresPerSecond ? " (" + fmt(vmax * 3600.0 / 1852.0) + " kn)" : ""),
+                      11, false, 0.5);
             ly += bh + 30;
         }
     }

@@ -50,6 +50,35 @@ std::string tickUnit(const MissionResult &r, std::vector<std::vector<TimedWaypoi
     return unit == 86400.0 ? "days" : "hours";
 }
 
+/// A duration for the pilot: "3.2 days (76.8 h)" or "5.4 h" with physical time units (short: "3.20 d"), else the
+/// field's number.
+std::string duration(const MissionResult &r, double t, bool shortForm = false)
+{
+    const bool physical = r.spec.current.type == "netcdf" || r.spec.timeUnitSeconds != 1.0;
+    if (!physical || !std::isfinite(t))
+        return fmt(t);
+    const double h = t * r.spec.timeUnitSeconds / 3600.0;
+    char buf[64];
+    if (h >= 48.0 && shortForm)
+        std::snprintf(buf, sizeof buf, "%.2f d", h / 24.0);
+    else if (h >= 48.0)
+        std::snprintf(buf, sizeof buf, "%.2f days (%.1f h)", h / 24.0, h);
+    else
+        std::snprintf(buf, sizeof buf, "%.2f h", h);
+    return buf;
+}
+
+/// A length: km when the frame is in metres, else the field's number.
+std::string length(const MissionResult &r, double d)
+{
+    const double metres = r.spec.current.type == "netcdf" ? 1.0 : r.spec.lengthUnitMetres;
+    if (metres == 1.0 && r.spec.current.type != "netcdf")
+        return fmt(d);
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.1f km", d * metres / 1000.0);
+    return buf;
+}
+
 void addPaths(MapRenderer &map, const MissionResult &r)
 {
     const PlannedPath &p = r.plan;
@@ -60,19 +89,20 @@ void addPaths(MapRenderer &map, const MissionResult &r)
     const bool smoothedDiffers = p.smoothed.size() != p.raw.size() || p.smoothedTravelTime < p.rawTravelTime;
     const bool finalDiffers = p.path.size() != p.smoothed.size() || p.travelTime < p.smoothedTravelTime;
     MapPath rawPath = MapRenderer::rawPathStyle(
-        p.planner + " path: " + std::to_string(p.raw.size()) + " wp, T=" + fmt(p.rawTravelTime), raw);
+        p.planner + " path: " + std::to_string(p.raw.size()) + " wp, T=" + duration(r, p.rawTravelTime, true), raw);
     rawPath.timeTicks = !smoothedDiffers && !finalDiffers;
     map.addPath(rawPath);
     if (smoothedDiffers)
     {
         MapPath s = MapRenderer::smoothedPathStyle(
-            "smoothed: " + std::to_string(p.smoothed.size()) + " wp, T=" + fmt(p.smoothedTravelTime), smoothed);
+            "smoothed: " + std::to_string(p.smoothed.size()) + " wp, T=" + duration(r, p.smoothedTravelTime, true),
+            smoothed);
         s.timeTicks = !finalDiffers;
         map.addPath(s);
     }
     if (finalDiffers)
         map.addPath(MapRenderer::refinedPathStyle(
-            "refined: " + std::to_string(p.path.size()) + " wp, T=" + fmt(p.travelTime), fin));
+            "refined: " + std::to_string(p.path.size()) + " wp, T=" + duration(r, p.travelTime, true), fin));
 }
 }  // namespace
 
@@ -80,7 +110,18 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
 {
     const MissionSpec &m = r.spec;
     MapOptions mo;
-    mo.title = m.name + " - " + r.plan.planner + ", V = " + fmt(r.plan.speed) + (r.plan.solved ? "" : " (no path)");
+    const bool netcdf = m.current.type == "netcdf";
+    const std::string depIso = problem.isoTime(r.plan.departure);
+    mo.title = m.name + " - " + r.plan.planner + ", V = " + fmt(r.plan.speed) + (netcdf ? " m/s" : "") +
+               (depIso.empty() ? "" : ", departing " + depIso) + (r.plan.solved ? "" : " (no path)");
+    if (problem.isGeographic())
+    {
+        // the map refers to the problem for its lon/lat frame: draw it while the problem lives
+        mo.toGeographic = [&problem](Point2 p) { return problem.toGeographic(p); };
+        mo.toLocal = [&problem](LonLat g) { return problem.toLocal(g); };
+        mo.metresPerUnit = netcdf ? 1.0 : m.lengthUnitMetres;
+    }
+    mo.speedInMetresPerSecond = netcdf;
     MapRenderer map(problem.getBox(), mo);
     const double tMap = std::isnan(m.outputs.mapTime) ? r.plan.departure : m.outputs.mapTime;
     map.setField(problem.getField(), tMap, m.vehicle.depth);
@@ -105,9 +146,9 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
     map.addNote("departure " + fmt(r.plan.departure) + (iso.empty() ? "" : " (" + iso + ")"));
     if (r.plan.solved)
     {
-        map.addNote("travel time " + fmt(r.plan.travelTime) + ", path length " + fmt(r.plan.pathLength));
+        map.addNote("travel time " + duration(r, r.plan.travelTime) + ", path length " + length(r, r.plan.pathLength));
         map.addNote("straight line: " +
-                    (std::isfinite(r.plan.straightLineTime) ? "T=" + fmt(r.plan.straightLineTime)
+                    (std::isfinite(r.plan.straightLineTime) ? "T=" + duration(r, r.plan.straightLineTime)
                                                             : std::string("impassable")));
     }
     else

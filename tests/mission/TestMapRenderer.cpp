@@ -4,6 +4,7 @@
 
 #include <cairo.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/LocalProjection.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/output/MapRenderer.h"
 
@@ -115,4 +117,53 @@ TEST(MapRenderer, BadInputRaisesError)
     EXPECT_THROW(map.addPolygon({"two points", {{0, 0}, {1, 1}}}), Error);
     EXPECT_THROW(map.writePng("/nonexistent-dir/x/map.png"), Error);
     EXPECT_THROW(map.writeSvg("/nonexistent-dir/x/map.svg"), Error);
+}
+
+TEST(MapRenderer, GeographicFrameDrawsMeridiansWhereTheProjectionPutsThem)
+{
+    // a 300 km square about 77W 18N in the local azimuthal frame; the graticule step for ~2.8 degrees is 0.5
+    // degrees, so the meridian 76.5W crosses the plot at x = forward(-76.5, 18).x, which is no multiple of the metre
+    // grid's 50 km: only the geographic map has a line in that pixel column
+    const auto proj = std::make_shared<LocalProjection>(-77.0, 18.0);
+    Region r;
+    r.xMin = -150000;
+    r.xMax = 150000;
+    r.yMin = -150000;
+    r.yMax = 150000;
+    MapOptions geo;
+    geo.toGeographic = [proj](Point2 p) { return proj->inverse(p.x, p.y); };
+    geo.toLocal = [proj](LonLat g) { return proj->forward(g.lon, g.lat); };
+    geo.metresPerUnit = 1.0;
+    const fs::path dir = tempDir("geo");
+    MapRenderer withGrid(r, geo), plain(r);
+    withGrid.writePng((dir / "geo.png").string());
+    plain.writePng((dir / "plain.png").string());
+    const double xm = proj->forward(-76.5, 18.0).x;
+    ASSERT_GT(std::abs(std::remainder(xm, 50000.0)), 2000.0);  // 5 px from the nearest metre grid line
+    const auto [w, h] = withGrid.size();
+    const double plotW = w - 72 - 270, scale = plotW / 300000.0;  // the renderer's margins (kLeft, kRight)
+    const int col = int(std::lround(72 + (xm - r.xMin) * scale));
+    auto darkInColumn = [&](const fs::path &png) {
+        cairo_surface_t *s = cairo_image_surface_create_from_png(png.c_str());
+        const int stride = cairo_image_surface_get_stride(s);
+        const unsigned char *data = cairo_image_surface_get_data(s);
+        int rows = 0;
+        for (int y = 52 + 40; y < 52 + int(300000 * scale) - 60; ++y)  // inside the plot, clear of the scale bar
+        {
+            bool dark = false;
+            for (int x = col - 1; x <= col + 1; ++x)
+            {
+                const auto px = *reinterpret_cast<const uint32_t *>(data + y * stride + 4 * x);
+                dark = dark || ((px >> 8) & 255) < 235;
+            }
+            rows += dark;
+        }
+        cairo_surface_destroy(s);
+        return rows;
+    };
+    const int plotRows = int(300000 * scale) - 100;
+    EXPECT_GT(darkInColumn(dir / "geo.png"), plotRows * 9 / 10);
+    EXPECT_LT(darkInColumn(dir / "plain.png"), 12);  // only where the metre grid's horizontal lines cross it
+    EXPECT_EQ(w, plain.size().first);
+    fs::remove_all(dir);
 }

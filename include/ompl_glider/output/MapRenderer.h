@@ -4,6 +4,7 @@
 /// start and goal, legend and axes; written as SVG and PNG (cairo).
 
 #include <memory>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,6 +55,13 @@ struct MapOptions
     std::string title;         ///< drawn above the map
     std::string timeUnit;      ///< appended to times in labels ("s", "h", or empty for dimensionless fields)
     bool speedShading{true};   ///< shade the background by current speed
+    /// Geographic frame (both set): the axes are labelled in longitude/latitude and a graticule of meridians and
+    /// parallels is drawn through the field's frame (curved where the projection bends them); start and goal are
+    /// given in degrees and a scale bar is drawn. Unset: the field's x/y frame.
+    std::function<LonLat(Point2)> toGeographic;
+    std::function<Point2(LonLat)> toLocal;
+    double metresPerUnit{0.0};  ///< > 0: the frame is in metres times this (scale bar); 0: no scale bar
+    bool speedInMetresPerSecond{false};  ///< label the colour bar "m/s" and give its top in knots too
 };
 
 /// @brief Renders a map of one planning problem. Coordinates are the field's (x east, y north); the map keeps

@@ -8,6 +8,8 @@
 
 namespace ompl_glider
 {
-/// @brief Draws the map of @p result on @p problem (write it with MapRenderer::writeSvg / writePng).
+/// @brief Draws the map of @p result on @p problem (write it with MapRenderer::writeSvg / writePng). A problem with
+/// lon/lat (a forecast, or a projection) gives a map in longitude/latitude with a graticule and a scale bar; the map
+/// then refers to @p problem, which must outlive it.
 MapRenderer missionMap(const MissionResult &result, const MissionProblem &problem);
 }  // namespace ompl_glider
