@@ -307,11 +307,7 @@ LonLat MissionProblem::toGeographic(Point2 p) const
 {
     if (!projection_)
         throw Error(spec_.file + ": no projection: longitudes and latitudes are unknown");
-    LonLat g = projection_->inverse(p.x * projectionScale_, p.y * projectionScale_);
-    g.lon = std::remainder(g.lon, 360.0);  // -180..180 in every output
-    if (g.lon == 180.0)
-        g.lon = -180.0;
-    return g;
+    return projection_->inverse(p.x * projectionScale_, p.y * projectionScale_);  // longitude in -180..180
 }
 
 Point2 MissionProblem::toLocal(LonLat g) const

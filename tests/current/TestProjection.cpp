@@ -12,7 +12,8 @@ using namespace ompl_glider;
 
 TEST(LocalProjection, RoundTripIsExactToAMicrometre)
 {
-    for (auto [lon0, lat0] : {std::pair{-52.0, 47.5}, {170.0, -40.0}, {0.0, 0.0}, {-179.5, 60.0}})
+    for (auto [lon0, lat0] :
+         {std::pair{-52.0, 47.5}, {170.0, -40.0}, {0.0, 0.0}, {-179.5, 60.0}, {179.9, -10.0}, {185.0, 20.0}})
     {
         const LocalProjection p(lon0, lat0);
         const Point2 o = p.forward(lon0, lat0);
@@ -24,16 +25,46 @@ TEST(LocalProjection, RoundTripIsExactToAMicrometre)
         {
             const double px = U(rng), py = U(rng);
             const LonLat g = p.inverse(px, py);
-            EXPECT_GE(g.lon, p.lon0() - 180.0);
-            EXPECT_LT(g.lon, p.lon0() + 180.0);
+            // every longitude out is in -180..180, whatever the reference (300 km from 179.9E is past the
+            // antimeridian for half the points)
+            EXPECT_GE(g.lon, -180.0);
+            EXPECT_LT(g.lon, 180.0);
             const Point2 q = p.forward(g.lon, g.lat);
             EXPECT_NEAR(q.x, px, 1e-6);
             EXPECT_NEAR(q.y, py, 1e-6);
-            // longitudes in another 360-degree convention give the same point
+            // longitudes in another convention give the same point
             EXPECT_NEAR(p.forward(g.lon + 360.0, g.lat).x, px, 1e-6);
+            EXPECT_NEAR(p.forward(g.lon - 720.0, g.lat).y, py, 1e-6);
+        }
+        // a position written in 0..360 and in -180..180 is the same point to the last bit
+        for (double lon = std::round(lon0) - 2.0; lon <= std::round(lon0) + 2.0; lon += 0.25)  // grid values
+        {
+            const double west = normalizeLongitude(lon), east = west < 0 ? west + 360.0 : west;
+            const Point2 a = p.forward(west, lat0 + 0.5), b = p.forward(east, lat0 + 0.5);
+            EXPECT_EQ(a.x, b.x) << lon;
+            EXPECT_EQ(a.y, b.y) << lon;
         }
     }
     EXPECT_THROW(LocalProjection(0.0, 95.0), Error);
+}
+
+TEST(LocalProjection, NormalizeLongitudeIsExactAndHalfOpen)
+{
+    EXPECT_EQ(normalizeLongitude(185.0), -175.0);
+    EXPECT_EQ(normalizeLongitude(180.0), -180.0);
+    EXPECT_EQ(normalizeLongitude(-180.0), -180.0);
+    EXPECT_EQ(normalizeLongitude(360.0), 0.0);
+    EXPECT_EQ(normalizeLongitude(359.75), -0.25);
+    EXPECT_EQ(normalizeLongitude(-190.0), 170.0);
+    EXPECT_EQ(normalizeLongitude(540.0), -180.0);
+    EXPECT_EQ(normalizeLongitude(-52.7), -52.7);
+    // a grid longitude in 0..360 and the same in -180..180 are the same double; any other within a unit of the
+    // last place of 360 (the rounding of l + 360 itself)
+    for (double l = -179.75; l < 180.0; l += 0.25)
+        EXPECT_EQ(normalizeLongitude(l + 360.0), normalizeLongitude(l)) << l;
+    for (double l = -179.95; l < 180.0; l += 0.37)
+        EXPECT_NEAR(normalizeLongitude(l + 360.0), l, 6e-14) << l;
+    EXPECT_TRUE(std::isnan(normalizeLongitude(std::nan(""))));
 }
 
 TEST(LocalProjection, PlanarDistancesWithinTheStatedBoundOver500km)

@@ -85,11 +85,11 @@ struct NetCdfCurrents
     double fieldTime(const std::string &isoOrSeconds) const;
     /// @brief ISO 8601 date of a field time (dated files; else the number).
     std::string isoTime(double t) const;
-    /// @brief Planning-frame point (x, y) in metres -> (lon, lat) in degrees; identity (lon = x, lat = y) in
-    /// Cartesian mode.
+    /// @brief Planning-frame point (x, y) in metres -> (lon, lat) in degrees, longitude in [-180, 180) whatever
+    /// the file's convention (LocalProjection::inverse()); identity (lon = x, lat = y) in Cartesian mode.
     LonLat toGeographic(Point2 p) const;
-    /// @brief (lon, lat) in degrees -> planning-frame point (x, y) in metres; identity (x = lon, y = lat) in
-    /// Cartesian mode.
+    /// @brief (lon, lat) in degrees, longitude in either convention (0..360 or -180..180) -> planning-frame point
+    /// (x, y) in metres; identity (x = lon, y = lat) in Cartesian mode.
     Point2 toLocal(LonLat g) const;
 };
 
