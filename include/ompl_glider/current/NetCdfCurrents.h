@@ -77,6 +77,9 @@ struct NetCdfCurrents
     double forecastEnd{0.0};         ///< last forecast time of the file, field time
     std::string uVariable, vVariable;  ///< variables read
     std::vector<std::size_t> loadedShape;  ///< nt, nz, ny, nx actually loaded
+    /// Bounds of the loaded nodes in the file's coordinates: longitudes from lonMin in [-180, 180) east to lonMax
+    /// (beyond 180 when the nodes cross the antimeridian), latitudes; x and y in Cartesian mode (file units).
+    double lonMin{0.0}, lonMax{0.0}, latMin{0.0}, latMax{0.0};
     std::size_t fileValues{0};       ///< values per component in the file variable
     std::size_t loadedValues{0};     ///< values per component loaded
 
@@ -121,6 +124,12 @@ struct NetCdfCurrents
 ///
 /// @throws Error naming the file, the variable and what was expected when something is missing or wrong.
 NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &options = {});
+
+/// @brief Whether loadNetCdfCurrents() reads the file's horizontal coordinates as longitude/latitude (true) or as
+/// Cartesian x/y (false), by the loader's own detection (the variable names and `coordinates` of the options);
+/// reads attributes only. @throws Error as loadNetCdfCurrents() does for a file that is not NetCDF or whose
+/// velocities or grid cannot be found.
+bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &options = {});
 
 /// @brief The time axis of a forecast file as loadNetCdfCurrents() reads it, without its velocities: what a
 /// mission needs to turn ISO dates into field times before the forecast is loaded.
