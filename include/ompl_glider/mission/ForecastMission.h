@@ -4,7 +4,9 @@
 /// the file is read once to check the request and to convert the start, goal and departure, and the MissionSpec
 /// it gives is planned by the same pipeline as every other mission.
 
+#include <array>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "ompl_glider/Geometry.h"
@@ -23,16 +25,22 @@ struct ForecastInput
     std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
     std::string horizonPolicy{"refuse"};           ///< refuse | hold_last (beyond the last forecast time)
     double depth{0.0};                             ///< depth (m, positive down) at which the current is read
-    Point2 start;  ///< start: lon,lat (x = lon, y = lat) for a geographic file, x,y for a Cartesian one
+    Point2 start;  ///< start: lon,lat (x = lon, y = lat; longitude in -180..180 or 0..360, whatever the file's
+                   ///< convention) for a geographic file, x,y for a Cartesian one
     Point2 goal;   ///< goal, as start
+    /// Region to load and plan in: lon_min, lat_min, lon_max, lat_max (a GeoJSON bbox; either convention,
+    /// lon_max < lon_min across the antimeridian: regionFault()), or x_min, y_min, x_max, y_max for a Cartesian
+    /// file. None: the trip's region (netCdfLoadOptions()).
+    std::optional<std::array<double, 4>> region;
     std::string departure;  ///< ISO 8601 date or seconds after the first forecast time; empty: first forecast time
     double speed{0.3};      ///< vehicle speed through water, m/s
 };
 
-/// @brief The MissionSpec of a forecast, the same as a mission file with the same current, start, goal, departure
-/// and speed: loads the trip's region (netCdfLoadOptions()) once to check that start and goal lie on the grid and
-/// in water, that the depth is not below the deepest layer and that the departure lies within the forecast, and
-/// to convert the departure; sets the outputs to every format. The planner settings are the defaults of
+/// @brief The MissionSpec of a forecast, the same as a mission file with the same current, region, start, goal,
+/// departure and speed: checks the region (regionFault()) and that start and goal lie in it, loads the region (or
+/// the trip's, netCdfLoadOptions()) once to check that start and goal lie on the grid and in water, that the depth
+/// is not below the deepest layer and that the departure lies within the forecast, and to convert the departure;
+/// sets the outputs to every format. The planner settings are the defaults of
 /// PlannerSpec (grid size automatic): change them in the returned spec. Writes nothing.
 /// @throws Error with a one-line message naming the input (as its command-line flag), file or variable at fault.
 MissionSpec forecastMission(const ForecastInput &input);
