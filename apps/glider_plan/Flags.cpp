@@ -52,8 +52,8 @@ std::array<double, 4> quad(const std::string &flag, const std::string &text)
     {
         const std::size_t comma = k < 3 ? text.find(',', at) : text.size();
         if (comma == std::string::npos || (k == 3 && text.find(',', at) != std::string::npos))
-            throw UsageError{flag + " expects four numbers lon_min,lat_min,lon_max,lat_max separated by commas "
-                                    "(write " + flag + "=-60,30,-40,45 when the first is negative), got '" + text + "'"};
+            throw UsageError{flag + " expects four numbers lon_min,lat_min,lon_max,lat_max separated by commas " +
+                             "(write " + flag + "=-60,30,-40,45 when the first is negative), got '" + text + "'"};
         v[k] = number(flag, text.substr(at, comma - at));
         at = comma + 1;
     }

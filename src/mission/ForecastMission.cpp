@@ -62,9 +62,12 @@ std::string flagMessage(std::string what, const ForecastInput &q)
     if (!q.departure.empty() && departure && what.find("--departure") == std::string::npos)
         what = "--departure " + q.departure + ": " + what;
     else if (what.find("region ") != std::string::npos && what.find("] is outside '") != std::string::npos)
-        what = (q.region ? "--region " + regionText(*q.region)
-                         : "--start " + pointText(q.start.x, q.start.y) + " / --goal " + pointText(q.goal.x, q.goal.y)) +
-               ": not on the grid: " + what;
+    {
+        const std::string given = q.region ? "--region " + regionText(*q.region)
+                                           : "--start " + pointText(q.start.x, q.start.y) + " / --goal " +
+                                                 pointText(q.goal.x, q.goal.y);
+        what = given + ": not on the grid: " + what;
+    }
     return what;
 }
 }  // namespace

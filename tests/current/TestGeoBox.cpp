@@ -78,7 +78,8 @@ TEST(GeoBox, GreatCircleDistances)
     EXPECT_NEAR(greatCircleKm({10, 0}, {10, 90}), 90 * degree, 1e-6);
     // 70 degrees of longitude at 40S: cos(d) = sin^2(lat) + cos^2(lat) cos(70 deg)
     const double lat = 40.0 * M_PI / 180.0;
-    const double d = std::acos(std::sin(lat) * std::sin(lat) + std::cos(lat) * std::cos(lat) * std::cos(70 * M_PI / 180));
+    const double d =
+        std::acos(std::sin(lat) * std::sin(lat) + std::cos(lat) * std::cos(lat) * std::cos(70 * M_PI / 180));
     EXPECT_NEAR(greatCircleKm({-35, -40}, {35, -40}), d * 180 / M_PI * degree, 1e-6);
 }
 

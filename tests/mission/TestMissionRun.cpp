@@ -252,7 +252,8 @@ TEST(MissionRun, AcrossTheAntimeridianInEitherConvention)
         for (const char *region : {"{lon_min: 170, lon_max: -170, lat_min: -5, lat_max: 5}",
                                    "{lon_min: 170, lon_max: 190, lat_min: -5, lat_max: 5}"})
         {
-            const std::string text = std::string("name: dateline\ncurrent: {type: uniform, parameters: {u: 0.1, v: 0}}\n") +
+            const std::string text = std::string("name: dateline\n") +
+                                     "current: {type: uniform, parameters: {u: 0.1, v: 0}}\n" +
                                      "units: {length_m: 1000, time_s: 3600}\nprojection: {lon0: 180, lat0: 0}\n" +
                                      "region: " + region + "\nstart: {lon: 175, lat: 0}\ngoal: {lon: " + goal +
                                      ", lat: 0}\nvehicle: {speed: 0.5}\nplanner: {grid_size: 50}\n" +
