@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <exception>
@@ -46,6 +47,23 @@ Point2 pair(const std::string &flag, const std::string &text)
     return {number(flag, text.substr(0, comma)), number(flag, text.substr(comma + 1))};
 }
 
+/// Four numbers separated by commas (--region).
+std::array<double, 4> quad(const std::string &flag, const std::string &text)
+{
+    std::array<double, 4> v{};
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < 4; ++k)
+    {
+        const std::size_t comma = k < 3 ? text.find(',', at) : text.size();
+        if (comma == std::string::npos || (k == 3 && text.find(',', at) != std::string::npos))
+            throw UsageError{flag + " expects four numbers lon_min,lat_min,lon_max,lat_max separated by commas " +
+                             "(write " + flag + "=-60,30,-40,45 when the first is negative), got '" + text + "'"};
+        v[k] = number(flag, text.substr(at, comma - at));
+        at = comma + 1;
+    }
+    return v;
+}
+
 /// A finite number > 0 (CLI11's PositiveNumber lets "nan" and "inf" through).
 const CLI::Validator kPositiveFinite(
     [](std::string &text) {
@@ -79,7 +97,8 @@ void applySettings(const Flags &f, MissionSpec &m)
                                                    {f.speed.has_value(), "vehicle.speed=--speed"},
                                                    {!f.departure.empty(), "departure.time=--departure"},
                                                    {!f.start.empty(), "start=--start"},
-                                                   {!f.goal.empty(), "goal=--goal"}};
+                                                   {!f.goal.empty(), "goal=--goal"},
+                                                   {!f.region.empty(), "region=--region"}};
     for (const auto &[set, pair] : given)
         if (set)
         {
@@ -209,6 +228,12 @@ void defineFlags(CLI::App &app, Flags &f)
            "past the last forecast time: refuse (default) | hold (hold the last field)")
         ->check(CLI::IsMember({"refuse", "hold"}))
         ->group(nc);
+    app.add_option("--region", f.region,
+                   "region to load and plan in: lon_min,lat_min,lon_max,lat_max in either convention (-180..180 "
+                   "or 0..360; lon_max < lon_min crosses the antimeridian, as a GeoJSON bbox), x_min,y_min,x_max,"
+                   "y_max for a Cartesian file; write --region=-60,30,-40,45 for a negative first value (default: "
+                   "the box of start and goal widened by half their distance, at least 25 km)")
+        ->group(nc);
     app.add_option("--depth", f.depth, "depth in metres, positive down, at which the current is read (default 0)")
         ->check(CLI::Range(0.0, 12000.0))
         ->group(nc);
@@ -309,6 +334,8 @@ MissionSpec forecastMissionOf(Flags f)
     f.forecast.start = pair("--start", f.start);
     f.forecast.goal = pair("--goal", f.goal);
     f.forecast.departure = f.departure;
+    if (!f.region.empty())
+        f.forecast.region = quad("--region", f.region);
     if (f.speed)
         f.forecast.speed = *f.speed;
     if (f.depth)

@@ -59,7 +59,8 @@ LocalProjection::~LocalProjection()
 Point2 LocalProjection::forward(double lon, double lat) const
 {
     std::lock_guard<std::mutex> lock(mutex_);
-    PJ_COORD c = proj_coord(proj_torad(wrapLon(lon, lon0_)), proj_torad(lat), 0, 0);
+    // normalised first (exactly), so that 185 and -175 give the same point to the last bit
+    PJ_COORD c = proj_coord(proj_torad(wrapLon(normalizeLongitude(lon), lon0_)), proj_torad(lat), 0, 0);
     PJ_COORD r = proj_trans(impl_->pj, PJ_FWD, c);
     const Point2 p{r.xy.x, r.xy.y};
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
@@ -75,7 +76,7 @@ LonLat LocalProjection::inverse(double x, double y) const
     LonLat g{proj_todeg(r.lp.lam), proj_todeg(r.lp.phi)};
     if (!std::isfinite(g.lon) || !std::isfinite(g.lat))
         throw Error("LocalProjection: cannot invert (" + std::to_string(x) + ", " + std::to_string(y) + ")");
-    g.lon = wrapLon(g.lon, lon0_);
+    g.lon = normalizeLongitude(g.lon);  // the one place planning-frame points become longitudes: -180..180
     return g;
 }
 

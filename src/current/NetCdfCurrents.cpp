@@ -48,6 +48,12 @@ Point2 NetCdfCurrents::toLocal(LonLat g) const
     return {g.lon, g.lat};
 }
 
+bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &opt)
+{
+    netcdf_detail::NcFile f(path);
+    return netcdf_detail::detectLayout(f, opt).geographic;
+}
+
 NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &opt)
 {
     using namespace netcdf_detail;
@@ -76,6 +82,10 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
     readVelocities(f, l, plan, t, vel, opt, g, out);
     applyLandMask(f, l, h, z, t, opt, g, out);
     out.projection = setNodeCoordinates(f, l, h, region, opt, g);
+    out.lonMin = l.geographic ? normalizeLongitude(h.lonLo) : h.lonLo;
+    out.lonMax = out.lonMin + (h.lonHi - h.lonLo);
+    out.latMin = h.latLo;
+    out.latMax = h.latHi;
     GriddedFieldOptions fo = opt.field;
     if (fo.name == "gridded" || fo.name.empty())
         fo.name = "netcdf:" + path;

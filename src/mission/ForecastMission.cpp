@@ -1,6 +1,7 @@
 #include "ompl_glider/mission/ForecastMission.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/mission/IsoTime.h"
@@ -43,6 +45,11 @@ std::string pointText(double a, double b)
     std::snprintf(buf, sizeof buf, "%.6g,%.6g", a, b);
     return buf;
 }
+
+std::string regionText(const std::array<double, 4> &r)
+{
+    return num(r[0]) + "," + num(r[1]) + "," + num(r[2]) + "," + num(r[3]);
+}
 /// The reader's message in the command line's words: its option fields become the flags, and a departure or
 /// region fault is prefixed with the flags that gave it.
 std::string flagMessage(std::string what, const ForecastInput &q)
@@ -70,8 +77,12 @@ std::string flagMessage(std::string what, const ForecastInput &q)
     if (!q.departure.empty() && departure && what.find("--departure") == std::string::npos)
         what = "--departure " + q.departure + ": " + what;
     else if (what.find("region ") != std::string::npos && what.find("] is outside '") != std::string::npos)
-        what = "--start " + pointText(q.start.x, q.start.y) + " / --goal " + pointText(q.goal.x, q.goal.y) +
-               ": not on the grid: " + what;
+    {
+        const std::string given = q.region ? "--region " + regionText(*q.region)
+                                           : "--start " + pointText(q.start.x, q.start.y) + " / --goal " +
+                                                 pointText(q.goal.x, q.goal.y);
+        what = given + ": not on the grid: " + what;
+    }
     return what;
 }
 }  // namespace
@@ -105,14 +116,71 @@ MissionSpec forecastMission(const ForecastInput &q)
     m.current.steadyRecord = q.steadyRecord;
     m.current.mark.file = file;
 
-    // The file's coordinates are not known yet: take start and goal as lon/lat (the trip region is the same box
-    // in x/y for a Cartesian file) and switch to x/y below when the file is Cartesian.
-    m.start.geographic = m.goal.geographic = true;
-    m.start.lon = m.start.x = q.start.x;
-    m.start.lat = m.start.y = q.start.y;
-    m.goal.lon = m.goal.x = q.goal.x;
-    m.goal.lat = m.goal.y = q.goal.y;
+    m.marks["start"] = SourceMark{"--start", 0};
+    m.marks["goal"] = SourceMark{"--goal", 0};
+    m.start.x = m.start.lon = q.start.x;
+    m.start.y = m.start.lat = q.start.y;
+    m.goal.x = m.goal.lon = q.goal.x;
+    m.goal.y = m.goal.lat = q.goal.y;
     m.vehicle.depth = m.travel.depth = q.depth;
+    // Longitude/latitude or x/y: the reader's own detection, before any region is cut.
+    bool geographic = true;
+    try
+    {
+        geographic = netCdfIsGeographic(file, netCdfLoadOptions(m));
+    }
+    catch (const Error &e)
+    {
+        throw Error(flagMessage(e.what(), q));
+    }
+    const char *coords = geographic ? "lon,lat" : "x,y";
+    m.start.geographic = m.goal.geographic = geographic;
+    if (geographic)
+        for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
+        {
+            if (p.x < -180.0 || p.x > 360.0)
+                throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": longitude " + num(p.x) +
+                            " is not in -180..180 or 0..360");
+            if (std::abs(p.y) > 90.0)
+                throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": latitude " + num(p.y) +
+                            " is not in -90..90");
+        }
+    if (q.region)
+    {
+        const auto &[a0, b0, a1, b1] = *q.region;
+        m.marks["region"] = SourceMark{"--region", 0};
+        m.region.set = true;
+        m.region.geographic = geographic;
+        if (geographic)
+        {
+            if (const auto fault = regionFault(a0, b0, a1, b1))
+                throw Error("--region " + regionText(*q.region) + ": " + fault->bound + " " + fault->what);
+            const GeoBox box = geoBox(a0, b0, a1, b1);
+            m.region.lonMin = box.lonMin;
+            m.region.lonMax = box.lonMax;
+            m.region.latMin = box.latMin;
+            m.region.latMax = box.latMax;
+            for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
+                if (!box.contains({p.x, p.y}))
+                    throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (lon,lat) lies outside --region " +
+                                regionText(*q.region) + " (" + box.text() + ")");
+        }
+        else
+        {
+            if (!(a1 > a0) || !(b1 > b0) || !std::isfinite(a1 - a0) || !std::isfinite(b1 - b0))
+                throw Error("--region " + regionText(*q.region) +
+                            ": a Cartesian file's region is x_min,y_min,x_max,y_max with x_max > x_min and "
+                            "y_max > y_min");
+            m.region.xMin = a0;
+            m.region.yMin = b0;
+            m.region.xMax = a1;
+            m.region.yMax = b1;
+            for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
+                if (!(p.x >= a0 && p.x <= a1 && p.y >= b0 && p.y <= b1))
+                    throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (x,y) lies outside --region " +
+                                regionText(*q.region));
+        }
+    }
     // Load the trip's region as the mission will (netCdfLoadOptions) to check the request and convert the departure.
     NetCdfCurrentOptions o = netCdfLoadOptions(m);
     o.departure = q.departure;
@@ -147,10 +215,8 @@ MissionSpec forecastMission(const ForecastInput &q)
     if (g.nz() > 1 && q.depth > g.depthAxis().back())
         throw Error("--depth " + num(q.depth) + " m lies below the deepest layer of '" + file + "' (" +
                     num(g.depthAxis().back()) + " m)");
-    const char *coords = nc.geographic ? "lon,lat" : "x,y";
     const Point2 start = nc.toLocal({q.start.x, q.start.y});
     const Point2 goal = nc.toLocal({q.goal.x, q.goal.y});
-    const Region e = g.extent();
     for (const auto &[flag, a, b, x, y] :
          {std::tuple<const char *, double, double, double, double>{"--start", q.start.x, q.start.y, start.x, start.y},
           std::tuple<const char *, double, double, double, double>{"--goal", q.goal.x, q.goal.y, goal.x, goal.y}})
@@ -158,11 +224,10 @@ MissionSpec forecastMission(const ForecastInput &q)
         double fi, fj;
         if (!std::isfinite(x) || !std::isfinite(y) || !g.locate(x, y, fi, fj))
         {
-            const LonLat lo = nc.toGeographic({e.xMin, e.yMin});
-            const LonLat hi = nc.toGeographic({e.xMax, e.yMax});
+            // the loaded nodes' own bounds, in the file's coordinates (longitudes from west to east)
             throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") lies outside the grid of '" +
-                        file + "' (about " + coords + " " + pointText(lo.lon, lo.lat) + " to " +
-                        pointText(hi.lon, hi.lat) + ")");
+                        file + "' (" + (geographic ? "lon " : "x ") + num(nc.lonMin) + ".." + num(nc.lonMax) +
+                        (geographic ? ", lat " : ", y ") + num(nc.latMin) + ".." + num(nc.latMax) + ")");
         }
         if (!g.inWater(x, y, q.depth))
             throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") is on land in '" + file +
@@ -177,7 +242,6 @@ MissionSpec forecastMission(const ForecastInput &q)
         throw Error("--departure " + (q.departure.empty() ? std::string("(default)") : q.departure) +
                     " is the last forecast time: no time is left to travel (use an earlier departure or --beyond hold)");
 
-    m.start.geographic = m.goal.geographic = nc.geographic;
     if (nc.dated)
     {
         MissionSpec::FileCalendar fc;

@@ -11,6 +11,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/mission/Coastline.h"
+#include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/Interpolation.h"
 #include "ompl_glider/current/LocalProjection.h"
@@ -30,6 +31,13 @@ namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+std::string num(double v)
+{
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
 std::string where(const MissionSpec &m, const SourceMark &mark = {})
 {
     if (!mark.file.empty() && mark.line > 0)
@@ -37,6 +45,11 @@ std::string where(const MissionSpec &m, const SourceMark &mark = {})
     return m.file + ": ";
 }
 }  // namespace
+
+double tripMarginKm(LonLat start, LonLat goal)
+{
+    return std::max(kMinTripMarginKm, 0.5 * greatCircleKm(start, goal));
+}
 
 #if OMPL_GLIDER_WITH_NETCDF
 NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
@@ -81,30 +94,40 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     }
     if (m.region.set && m.region.geographic)
     {
+        // as loaded: lon_min in -180..180, lon_max = lon_min + width (beyond 180 across the antimeridian)
         o.lonMin = m.region.lonMin;
         o.lonMax = m.region.lonMax;
         o.latMin = m.region.latMin;
         o.latMax = m.region.latMax;
     }
-    else if (!m.region.set && m.start.geographic == m.goal.geographic)
+    else if (m.region.set)
+        ;  // an x/y region is in the planning frame, not the file's coordinates: the whole file is loaded
+    else if (m.start.geographic && m.goal.geographic)
     {
-        // The trip's region, in the file's coordinates (lon/lat, or x/y of a Cartesian file).
-        const double a0 = m.start.geographic ? m.start.lon : m.start.x, b0 = m.start.geographic ? m.start.lat : m.start.y;
-        const double a1 = m.goal.geographic ? m.goal.lon : m.goal.x, b1 = m.goal.geographic ? m.goal.lat : m.goal.y;
-        const double spanA = std::abs(a1 - a0), spanB = std::abs(b1 - b0);
+        // The trip's region in geographic terms (never from projected corners): the lon/lat box of start and goal
+        // across the shorter way round, widened by a geodesic margin.
+        const LonLat a{m.start.lon, m.start.lat}, b{m.goal.lon, m.goal.lat};
+        for (const auto &[field, p] : {std::pair<const char *, LonLat>{"start", a}, {"goal", b}})
+            if (std::abs(p.lat) > kMaxGridLatitude && std::abs(p.lat) <= 90.0)
+                throw Error(m.place(field) + ": latitude " + num(p.lat) + " is within " +
+                            num(90.0 - kMaxGridLatitude) +
+                            " degrees of a pole, where a longitude/latitude grid degenerates (|lat| <= " +
+                            num(kMaxGridLatitude) + " can be planned)");
+        const GeoBox box = tripBox({a, b}, tripMarginKm(a, b));
+        o.lonMin = box.lonMin;
+        o.lonMax = box.lonMax;
+        o.latMin = box.latMin;
+        o.latMax = box.latMax;
+    }
+    else if (!m.start.geographic && !m.goal.geographic)
+    {
+        // A Cartesian file: the start-goal box plus half its larger side (at least 0.2 units) on each side.
+        const double spanA = std::abs(m.goal.x - m.start.x), spanB = std::abs(m.goal.y - m.start.y);
         const double pad = std::max(0.5 * std::max(spanA, spanB), 0.2);
-        if (spanA < 180.0)
-        {
-            o.lonMin = std::min(a0, a1) - pad;
-            o.lonMax = std::max(a0, a1) + pad;
-            o.latMin = std::min(b0, b1) - pad;
-            o.latMax = std::max(b0, b1) + pad;
-            if (m.start.geographic)
-            {
-                o.latMin = std::max(o.latMin, -90.0);
-                o.latMax = std::min(o.latMax, 90.0);
-            }
-        }
+        o.lonMin = std::min(m.start.x, m.goal.x) - pad;
+        o.lonMax = std::max(m.start.x, m.goal.x) + pad;
+        o.latMin = std::min(m.start.y, m.goal.y) - pad;
+        o.latMax = std::max(m.start.y, m.goal.y) + pad;
     }
     return o;
 }
@@ -226,16 +249,29 @@ void MissionProblem::buildBox()
     }
     else if (m.region.set)
     {
-        // The projected bounding box of the region's outline (sampled along its four edges).
+        // Start and goal in the region, in geographic terms (longitudes in either convention).
+        GeoBox region;
+        region.lonMin = m.region.lonMin;
+        region.lonMax = m.region.lonMax;
+        region.latMin = m.region.latMin;
+        region.latMax = m.region.latMax;
+        for (const auto &[name, p] : {std::pair<const char *, const PointSpec *>{"start", &m.start}, {"goal", &m.goal}})
+            if (p->geographic && !region.contains({p->lon, p->lat}))
+                throw Error(m.place(name) + ": lon,lat " + num(p->lon) + "," + num(p->lat) +
+                            " lies outside the region (" + m.place("region") + ": " + region.text() + ")");
+        // The planning box: the projected bounding box of the region's outline, sampled along its four edges at
+        // least every degree (a parallel bows in the plane).
         box_.xMin = box_.yMin = kInf;
         box_.xMax = box_.yMax = -kInf;
-        for (int i = 0; i <= 8; ++i)
-            for (int j = 0; j <= 8; ++j)
+        const int n = std::max(8, static_cast<int>(std::ceil(std::max(m.region.lonMax - m.region.lonMin,
+                                                                      m.region.latMax - m.region.latMin))));
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j)
             {
-                if (i != 0 && i != 8 && j != 0 && j != 8)
+                if (i != 0 && i != n && j != 0 && j != n)
                     continue;
-                const Point2 q = toLocal({m.region.lonMin + (m.region.lonMax - m.region.lonMin) * i / 8.0,
-                                          m.region.latMin + (m.region.latMax - m.region.latMin) * j / 8.0});
+                const Point2 q = toLocal({m.region.lonMin + (m.region.lonMax - m.region.lonMin) * i / double(n),
+                                          m.region.latMin + (m.region.latMax - m.region.latMin) * j / double(n)});
                 box_.xMin = std::min(box_.xMin, q.x);
                 box_.xMax = std::max(box_.xMax, q.x);
                 box_.yMin = std::min(box_.yMin, q.y);
@@ -310,7 +346,9 @@ void MissionProblem::buildRegions()
         const std::string at = mk.line == 0 && mk.file.rfind("--", 0) == 0 ? mk.file + ": " : where(m, mk);
         if (!isGeographic())
             throw Error(at + "forbidden.coastline: the coastline is in lon/lat; give a 'projection' in the mission");
-        double lon0 = 180.0, lon1 = -180.0, lat0 = 90.0, lat1 = -90.0;
+        // longitudes unwrapped about the box centre's, so that a box across the antimeridian stays narrow
+        const double lonC = toGeographic({0.5 * (box_.xMin + box_.xMax), 0.5 * (box_.yMin + box_.yMax)}).lon;
+        double lon0 = 1e9, lon1 = -1e9, lat0 = 90.0, lat1 = -90.0;
         for (int k = 0; k <= 40; ++k)
         {
             const double s = k / 40.0;
@@ -320,8 +358,9 @@ void MissionProblem::buildRegions()
                                    Point2{box_.xMax, box_.yMin + s * (box_.yMax - box_.yMin)}})
             {
                 const LonLat g = toGeographic(p);
-                lon0 = std::min(lon0, g.lon);
-                lon1 = std::max(lon1, g.lon);
+                const double lon = lonC + std::remainder(g.lon - lonC, 360.0);
+                lon0 = std::min(lon0, lon);
+                lon1 = std::max(lon1, lon);
                 lat0 = std::min(lat0, g.lat);
                 lat1 = std::max(lat1, g.lat);
             }
@@ -330,8 +369,20 @@ void MissionProblem::buildRegions()
         std::vector<LandPolygon> land;
         try
         {
-            land = readLandPolygons(m.forbidden.coastline, std::max(-180.0, lon0 - pad), std::max(-90.0, lat0 - pad),
-                                    std::min(180.0, lon1 + pad), std::min(90.0, lat1 + pad));
+            // the box in -180..180; across the antimeridian, its two sides
+            const double a = lon0 - pad, b = lon1 + pad, s = std::max(-90.0, lat0 - pad), n = std::min(90.0, lat1 + pad);
+            std::vector<std::pair<double, double>> spans;
+            if (b - a >= 360.0)
+                spans = {{-180.0, 180.0}};
+            else if (a < -180.0)
+                spans = {{a + 360.0, 180.0}, {-180.0, b}};
+            else if (b > 180.0)
+                spans = {{a, 180.0}, {-180.0, b - 360.0}};
+            else
+                spans = {{a, b}};
+            for (const auto &[w, e] : spans)
+                for (LandPolygon &p : readLandPolygons(m.forbidden.coastline, w, s, e, n))
+                    land.push_back(std::move(p));
         }
         catch (const Error &e)
         {
@@ -409,11 +460,7 @@ LonLat MissionProblem::toGeographic(Point2 p) const
 {
     if (!projection_)
         throw Error(spec_.file + ": no projection: longitudes and latitudes are unknown");
-    LonLat g = projection_->inverse(p.x * projectionScale_, p.y * projectionScale_);
-    g.lon = std::remainder(g.lon, 360.0);  // -180..180 in every output
-    if (g.lon == 180.0)
-        g.lon = -180.0;
-    return g;
+    return projection_->inverse(p.x * projectionScale_, p.y * projectionScale_);  // longitude in -180..180
 }
 
 Point2 MissionProblem::toLocal(LonLat g) const

@@ -142,7 +142,8 @@ double NetCdfBathymetry::seafloorDepth(double x, double y) const
 {
     if (!geographic_)
         return atAxes(x, y);
-    const LonLat g = toGeographic_(x, y);
-    return atAxes(g.lon, g.lat);
+    const LonLat g = toGeographic_(x, y);  // longitude in -180..180: shifted into the axis's own convention
+    const double mid = 0.5 * (ax_.front() + ax_.back());
+    return atAxes(mid + std::remainder(g.lon - mid, 360.0), g.lat);
 }
 }  // namespace ompl_glider

@@ -1,5 +1,6 @@
 #include "ompl_glider/output/RouteFiles.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -70,6 +71,52 @@ std::string pathCsv(const MissionResult &r)
     return s;
 }
 
+std::vector<std::vector<LonLat>> splitAtAntimeridian(const std::vector<LonLat> &line)
+{
+    // Longitudes unwrapped along the line (each leg the shorter way round), cut where the line meets 180 + 360 k,
+    // each piece shifted back by whole turns into -180..180 (its eastern or western edge at +-180 exactly).
+    std::vector<std::vector<LonLat>> pieces;
+    if (line.empty())
+        return pieces;
+    auto cell = [](double u) { return std::floor((u - 180.0) / 360.0); };  // [180 + 360 k, 540 + 360 k)
+    std::vector<LonLat> piece{{normalizeLongitude(line[0].lon), line[0].lat}};
+    auto close = [&]() {
+        std::vector<LonLat> kept;
+        for (const LonLat &p : piece)
+            if (kept.empty() || p.lon != kept.back().lon || p.lat != kept.back().lat)
+                kept.push_back(p);
+        if (kept.size() >= 2)
+        {
+            double lo = kept[0].lon, hi = kept[0].lon;
+            for (const LonLat &p : kept)
+            {
+                lo = std::min(lo, p.lon);
+                hi = std::max(hi, p.lon);
+            }
+            const double shift = -360.0 * std::round(0.5 * (lo + hi) / 360.0);
+            for (LonLat &p : kept)
+                p.lon += shift;
+            pieces.push_back(kept);
+        }
+    };
+    for (std::size_t i = 1; i < line.size(); ++i)
+    {
+        const LonLat a = piece.back();
+        const LonLat b{a.lon + std::remainder(line[i].lon - a.lon, 360.0), line[i].lat};
+        if (cell(a.lon) != cell(b.lon))
+        {
+            const double c = 180.0 + 360.0 * std::max(cell(a.lon), cell(b.lon));
+            const double lat = a.lat + (c - a.lon) / (b.lon - a.lon) * (b.lat - a.lat);
+            piece.push_back({c, lat});
+            close();
+            piece = {{c, lat}};
+        }
+        piece.push_back(b);
+    }
+    close();
+    return pieces;
+}
+
 std::string routeGeoJson(const MissionResult &r)
 {
     const bool geo = geographic(r);
@@ -77,9 +124,32 @@ std::string routeGeoJson(const MissionResult &r)
         return geo ? nlohmann::ordered_json::array({w.lonLat.lon, w.lonLat.lat})
                    : nlohmann::ordered_json::array({w.position.x, w.position.y});
     };
-    nlohmann::ordered_json line = nlohmann::ordered_json::array();
+    nlohmann::ordered_json geometry;
+    std::vector<LonLat> lonLats;
     for (const MissionWaypoint &w : r.waypoints)
-        line.push_back(coord(w));
+        lonLats.push_back(w.lonLat);
+    const std::vector<std::vector<LonLat>> parts =
+        geo ? splitAtAntimeridian(lonLats) : std::vector<std::vector<LonLat>>{};  // one piece unless it crosses
+    if (parts.size() > 1)
+    {
+        // across the antimeridian: a MultiLineString split there (RFC 7946 sec. 3.1.9)
+        nlohmann::ordered_json lines = nlohmann::ordered_json::array();
+        for (const auto &part : parts)
+        {
+            nlohmann::ordered_json line = nlohmann::ordered_json::array();
+            for (const LonLat &p : part)
+                line.push_back(nlohmann::ordered_json::array({p.lon, p.lat}));
+            lines.push_back(line);
+        }
+        geometry = {{"type", "MultiLineString"}, {"coordinates", lines}};
+    }
+    else
+    {
+        nlohmann::ordered_json line = nlohmann::ordered_json::array();
+        for (const MissionWaypoint &w : r.waypoints)
+            line.push_back(coord(w));
+        geometry = {{"type", "LineString"}, {"coordinates", line}};
+    }
     nlohmann::ordered_json features = nlohmann::ordered_json::array();
     features.push_back({{"type", "Feature"},
                         {"properties",
@@ -87,7 +157,7 @@ std::string routeGeoJson(const MissionResult &r)
                           {"departure", jnum(r.plan.departure)},
                           {"travel_time", jnum(r.plan.travelTime)},
                           {"path_length", jnum(r.plan.pathLength)}}},
-                        {"geometry", {{"type", "LineString"}, {"coordinates", line}}}});
+                        {"geometry", geometry}});
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];

@@ -73,10 +73,9 @@ std::string formatGotoList(const GotoList &list)
     s << "<start:waypoints>\n";
     for (const LonLat &p : list.waypoints)
     {
-        double lon = std::remainder(p.lon, 360.0);  // a Slocum reads -180..180 (185E is -17500.0000)
-        if (lon == 180.0)
-            lon = -180.0;
-        s << formatDegMin(lon) << " " << formatDegMin(p.lat) << "\n";
+        // A Slocum reads -180..180: a list built by hand in 0..360 is written in that convention too (185E is
+        // -17500.0000); gotoList() already gives normalised longitudes (LocalProjection::inverse()).
+        s << formatDegMin(normalizeLongitude(p.lon)) << " " << formatDegMin(p.lat) << "\n";
     }
     s << "<end:waypoints>\n";
     return s.str();

@@ -314,6 +314,39 @@ case("nc-broken-header-sigfpe", ["--currents", "f.nc", START, GOAL, "--out", "{o
      {"f.nc": ("bytes", BROKEN_TAG_HEADER)})
 case("nc-not-netcdf", ["--currents", "f.nc", START, GOAL, "--out", "{out}"], 2, "f.nc", {"f.nc": "hello\n"})
 
+# --- geography: --region, longitudes in either convention, poles ------------------------------------------------
+for name, region, phrase in [
+        ("region-lat-above-90", "--region=-53,47,-52,95", "--region -53,47,-52,95: lat_max 95 is not a latitude"),
+        ("region-lat-inverted", "--region=-53,48,-52,47", "lat_max 47 must be > lat_min 48"),
+        ("region-360-wide", "--region=-180,47,180,48", "less than 360"),
+        ("region-no-width", "--region=-53,47,-53,48", "no width"),
+        ("region-lon-beyond-360", "--region=-53,47,400,48", "lon_max 400 is not a longitude"),
+        ("region-lon-below-180", "--region=-200,47,-52,48", "lon_min -200 is not a longitude"),
+        ("region-three-numbers", "--region=-53,47,-52", "--region expects four numbers"),
+        ("region-text", "--region=-53,47,-52,north", "--region"),
+        ("region-nan", "--region=-53,nan,-52,48", "--region"),
+        ("region-start-outside", "--region=-52.5,47,-52,48", "--start -52.9,47.1 (lon,lat) lies outside --region"),
+]:
+    nc_case(name, forecast(), phrase, extra=(region,))
+nc_case("start-lon-beyond-360", forecast(), "--start 400,47.1: longitude 400", args=("--start=400,47.1", GOAL))
+nc_case("start-lat-beyond-90", forecast(), "latitude 91", args=("--start=-52.9,91", GOAL))
+nc_case("start-at-pole", forecast(), "--start: latitude 89.95 is within 0.1 degrees of a pole",
+        args=("--start=-52.9,89.95", GOAL))
+case("region-without-currents", ["--region", "1,2,3,4", "--out", "{out}"], 2, "--region needs --currents")
+case("region-with-mission", ["--mission", "m.yaml", "--region=-53,47,-52,48", "--out", "{out}"], 2,
+     "cannot be combined", {"m.yaml": MISSION})
+NC_MISSION = "current: {type: netcdf, file: f.nc}\nstart: {lon: -52.9, lat: 47.1}\ngoal: {lon: -52.1, lat: 47.9}\n"
+for name, region, phrase in [
+        ("mission-region-lat-above-90", "{lon_min: -53, lon_max: -52, lat_min: 47, lat_max: 95}",
+         "m.yaml:4: field 'region.lat_max'"),
+        ("mission-region-360-wide", "{lon_min: 0, lon_max: 360, lat_min: 47, lat_max: 48}",
+         "field 'region.lon_max'"),
+        ("mission-region-start-outside", "{lon_min: 307.5, lon_max: 308, lat_min: 47, lat_max: 48}",
+         "field 'start': lon,lat -52.9,47.1 lies outside the region"),
+]:
+    case(name, ["--mission", "m.yaml", "--out", "{out}"], 2, phrase,
+         {"f.cdl": forecast(), "m.yaml": NC_MISSION + "region: " + region + "\n"})
+
 # --- flags ------------------------------------------------------------------------------------------------------
 for name, args, phrase in [
         ("flag-unknown", ["--colour", "red"], "colour"),

@@ -1,12 +1,16 @@
 # gridded / NetCDF tests (current model from forecasts)
 glider_add_test(test_current_interpolation ${CMAKE_CURRENT_LIST_DIR}/TestInterpolation.cpp)
 glider_add_test(test_current_gridded ${CMAKE_CURRENT_LIST_DIR}/TestGriddedField.cpp)
-glider_add_test(test_current_projection ${CMAKE_CURRENT_LIST_DIR}/TestProjection.cpp)
+glider_add_test(test_current_projection
+  ${CMAKE_CURRENT_LIST_DIR}/TestProjection.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TestGeoBox.cpp)
 glider_add_test(test_current_netcdf
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLayouts.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLand.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfUnitsAndNames.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfUnitsAndNames.cpp
+
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfGlobal.cpp)
 target_link_libraries(test_current_netcdf PRIVATE netCDF::netcdf)
 glider_add_test(test_current_gridded_agreement ${CMAKE_CURRENT_LIST_DIR}/TestGriddedAgreement.cpp)
 target_link_libraries(test_current_gridded_agreement PRIVATE netCDF::netcdf)

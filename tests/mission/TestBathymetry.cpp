@@ -21,7 +21,7 @@ double plane(double lon, double lat)
 
 /// Writes a CDL with depth(lat, lon) = plane(lon, lat) (or -plane with positive = "up"), lat descending, and one
 /// fill value at (lon -51, lat 49); converts it with ncgen. Returns the NetCDF path.
-std::string makeFile(const std::string &name, bool elevation)
+std::string makeFile(const std::string &name, bool elevation, double lonShift = 0.0)
 {
     const std::string dir = ::testing::TempDir();
     std::ofstream f(dir + name + ".cdl");
@@ -30,7 +30,8 @@ std::string makeFile(const std::string &name, bool elevation)
       << " float depth(lat, lon) ;\n  depth:_FillValue = -32767.f ;\n";
     if (elevation)
         f << "  depth:positive = \"up\" ;\n";
-    f << "data:\n lat = 49, 48.5, 48, 47.5, 47 ;\n lon = -53, -52.5, -52, -51.5, -51 ;\n depth =";
+    f << "data:\n lat = 49, 48.5, 48, 47.5, 47 ;\n lon = " << -53 + lonShift << ", " << -52.5 + lonShift << ", "
+      << -52 + lonShift << ", " << -51.5 + lonShift << ", " << -51 + lonShift << " ;\n depth =";
     bool first = true;
     for (double lat : {49.0, 48.5, 48.0, 47.5, 47.0})
         for (double lon : {-53.0, -52.5, -52.0, -51.5, -51.0})
@@ -69,6 +70,22 @@ TEST(NetCdfBathymetry, BilinearOnGeographicAxes)
         // Outside the grid: nearest edge.
         EXPECT_NEAR(b.atAxes(-54.0, 47.0), plane(-53.0, 47.0), 1e-3);
     }
+}
+
+TEST(NetCdfBathymetry, EitherLongitudeConvention)
+{
+    // a 0..360 file (307..309E) queried with the -180..180 longitudes every projection gives, and a -180..180 file
+    // queried in 0..360: the same depths
+    const NetCdfBathymetry east(makeFile("mission_bathy_360", false, 360.0), "depth",
+                                [](double x, double y) { return LonLat{x, y}; });
+    const NetCdfBathymetry west(makeFile("mission_bathy_180", false, 0.0), "depth",
+                                [](double x, double y) { return LonLat{x + 360.0, y}; });
+    for (double lon = -53.0; lon <= -51.6; lon += 0.17)
+        for (double lat = 47.0; lat <= 48.5; lat += 0.13)
+        {
+            EXPECT_NEAR(east.seafloorDepth(lon, lat), plane(lon, lat), 1e-3) << lon << " " << lat;
+            EXPECT_NEAR(west.seafloorDepth(lon, lat), plane(lon, lat), 1e-3) << lon << " " << lat;
+        }
 }
 
 TEST(NetCdfBathymetry, ErrorsNameFileAndVariable)

@@ -192,6 +192,46 @@ TEST(MissionFile, MissingRequiredFieldsAndSyntaxErrors)
     EXPECT_HAS(msg, "/nonexistent.nc");
 }
 
+TEST(MissionFile, GeographicRegionsInEitherConvention)
+{
+    // an analytic flow with a projection: lon/lat regions are stored from lon_min in -180..180 eastward
+    const std::string geo = "current: {type: uniform}\nprojection: {lon0: 180, lat0: 0}\n"
+                            "start: {lon: 175, lat: 0}\ngoal: {lon: 185, lat: 1}\n";
+    auto region = [&](const std::string &r) { return parseMission(geo + "region: " + r + "\n", "m.yaml").region; };
+    for (const char *r : {"{lon_min: 170, lon_max: -170, lat_min: -5, lat_max: 5}",  // RFC 7946 bbox across 180
+                          "{lon_min: 170, lon_max: 190, lat_min: -5, lat_max: 5}"})  // unwrapped
+    {
+        const RegionSpec g = region(r);
+        EXPECT_TRUE(g.geographic);
+        EXPECT_EQ(g.lonMin, 170.0) << r;
+        EXPECT_EQ(g.lonMax, 190.0) << r;
+    }
+    const RegionSpec g = region("{lon_min: 350, lon_max: 10, lat_min: -5, lat_max: 5}");  // 0..360 across 0
+    EXPECT_EQ(g.lonMin, -10.0);
+    EXPECT_EQ(g.lonMax, 10.0);
+    // bad bounds name the bound and its line
+    std::string msg = errorOf(geo + "region:\n  lon_min: 170\n  lon_max: -170\n  lat_min: -5\n  lat_max: 95\n");
+    EXPECT_HAS(msg, "m.yaml:9:");
+    EXPECT_HAS(msg, "field 'region.lat_max'");
+    EXPECT_HAS(msg, "95");
+    msg = errorOf(geo + "region: {lon_min: -190, lon_max: -170, lat_min: -5, lat_max: 5}\n");
+    EXPECT_HAS(msg, "field 'region.lon_min'");
+    EXPECT_HAS(msg, "-180..180 or 0..360");
+    msg = errorOf(geo + "region: {lon_min: -180, lon_max: 180, lat_min: -5, lat_max: 5}\n");
+    EXPECT_HAS(msg, "field 'region.lon_max'");
+    EXPECT_HAS(msg, "less than 360");
+    msg = errorOf(geo + "region: {lon_min: 10, lon_max: 10, lat_min: -5, lat_max: 5}\n");
+    EXPECT_HAS(msg, "field 'region.lon_max'");
+    msg = errorOf(geo + "region: {lon_min: 10, lon_max: 20, lat_min: 5, lat_max: -5}\n");
+    EXPECT_HAS(msg, "field 'region.lat_max'");
+    // start and goal longitudes in either convention, nothing else
+    msg = errorOf("current: {type: uniform}\nprojection: {lon0: 180, lat0: 0}\n"
+                  "start: {lon: 400, lat: 0}\ngoal: {lon: 185, lat: 1}\n"
+                  "region: {lon_min: 170, lon_max: -170, lat_min: -5, lat_max: 5}\n");
+    EXPECT_HAS(msg, "m.yaml:3:");
+    EXPECT_HAS(msg, "field 'start.lon'");
+}
+
 TEST(MissionFile, GeoJsonForbiddenRegions)
 {
     const std::string dir = ::testing::TempDir();

@@ -240,6 +240,114 @@ TEST(MissionRun, GeographicOutputsGotoAndIsoTimes)
     EXPECT_NEAR(p.y, 0.0, 1e-9);
 }
 
+TEST(MissionRun, AcrossTheAntimeridianInEitherConvention)
+{
+    // A uniform eastward current on the equator, projected about 180E: start 175E, goal 175W (written 185 or
+    // -175), region 170E..170W (written as an RFC 7946 bbox or unwrapped). On the equator through the reference
+    // point the planar distance is the geodesic: 10 degrees of the WGS84 equator, 1113.1949 km; the time is
+    // D / (V + u). Every longitude out lies in -180..180 and the GeoJSON path is split at the antimeridian.
+    const double D = 10.0 * 6378137.0 * M_PI / 180.0 / 1000.0;  // km (1 planning unit = 1 km)
+    std::vector<std::string> csvs;
+    for (const char *goal : {"-175", "185"})
+        for (const char *region : {"{lon_min: 170, lon_max: -170, lat_min: -5, lat_max: 5}",
+                                   "{lon_min: 170, lon_max: 190, lat_min: -5, lat_max: 5}"})
+        {
+            const std::string text = std::string("name: dateline\n") +
+                                     "current: {type: uniform, parameters: {u: 0.1, v: 0}}\n" +
+                                     "units: {length_m: 1000, time_s: 3600}\nprojection: {lon0: 180, lat0: 0}\n" +
+                                     "region: " + region + "\nstart: {lon: 175, lat: 0}\ngoal: {lon: " + goal +
+                                     ", lat: 0}\nvehicle: {speed: 0.5}\nplanner: {grid_size: 50}\n" +
+                                     "outputs: {files: [csv, path, geojson, goto, summary]}\n";
+            MissionSpec spec = parseMission(text, "dateline.yaml");
+            spec.outputs.directory = ::testing::TempDir() + "mission_dateline";
+            fs::remove_all(spec.outputs.directory);
+            const MissionProblem problem(spec);
+            EXPECT_NEAR(problem.getGoal().x - problem.getStart().x, D, 1e-6);
+            const MissionResult r = runMission(problem);
+            ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+            EXPECT_NEAR(r.plan.travelTime, D / 0.6, 1e-6);
+            EXPECT_NEAR(r.waypoints.front().lonLat.lon, 175.0, 1e-9);
+            EXPECT_NEAR(r.waypoints.back().lonLat.lon, -175.0, 1e-9);
+            writeOutputs(r, problem);
+            const std::string dir = spec.outputs.directory;
+            const std::string csv = readFile(dir + "/path.csv");
+            csvs.push_back(csv);
+            for (const auto &row : parseCsv(csv))
+                if (row[0] != "t")
+                {
+                    EXPECT_GE(std::stod(row[3]), -180.0) << csv;
+                    EXPECT_LE(std::stod(row[3]), 180.0) << csv;
+                }
+            const json g = readJson(dir + "/path.geojson");
+            const json &geometry = g["features"][0]["geometry"];
+            ASSERT_EQ(geometry["type"], "MultiLineString");
+            ASSERT_EQ(geometry["coordinates"].size(), 2u);
+            const json &west = geometry["coordinates"][0], &east = geometry["coordinates"][1];
+            EXPECT_NEAR(west[0][0].get<double>(), 175.0, 1e-9);
+            EXPECT_EQ(west.back()[0].get<double>(), 180.0);   // to the antimeridian ...
+            EXPECT_EQ(east[0][0].get<double>(), -180.0);      // ... and on from the other side
+            EXPECT_NEAR(west.back()[1].get<double>(), 0.0, 1e-6);
+            EXPECT_NEAR(east.back()[0].get<double>(), -175.0, 1e-9);
+            const json s = readJson(dir + "/summary.json");
+            EXPECT_NEAR(s["goal"]["lon"].get<double>(), -175.0, 1e-9);
+            // the goto list: 175W is -17500.0000 (never 18500.0000)
+            const std::string gotoText = readFile(dir + "/goto_l10.ma");
+            EXPECT_HAS(gotoText, "\n-17500.0000 000.0000\n");
+        }
+    for (const std::string &c : csvs)
+        EXPECT_EQ(c, csvs.front());  // the same route, to the last digit written
+}
+
+TEST(MissionRun, GeoJsonLinesAreSplitAtTheAntimeridian)
+{
+    using Line = std::vector<LonLat>;
+    auto pieces = [](const Line &l) { return splitAtAntimeridian(l); };
+    auto expectLine = [](const Line &got, const Line &want) {
+        ASSERT_EQ(got.size(), want.size());
+        for (std::size_t i = 0; i < got.size(); ++i)
+        {
+            EXPECT_NEAR(got[i].lon, want[i].lon, 1e-12) << i;
+            EXPECT_NEAR(got[i].lat, want[i].lat, 1e-12) << i;
+        }
+    };
+    // no crossing: one piece, longitudes normalised (0..360 in, -180..180 out)
+    auto p = pieces({{350, 0}, {10, 2}});
+    ASSERT_EQ(p.size(), 1u);
+    expectLine(p[0], {{-10, 0}, {10, 2}});
+    // eastward across 180: cut at the latitude interpolated in lon/lat
+    p = pieces({{175, 0}, {185, 10}});
+    ASSERT_EQ(p.size(), 2u);
+    expectLine(p[0], {{175, 0}, {180, 5}});
+    expectLine(p[1], {{-180, 5}, {-175, 10}});
+    // westward
+    p = pieces({{-175, 0}, {170, 3}});
+    ASSERT_EQ(p.size(), 2u);
+    expectLine(p[0], {{-175, 0}, {-180, 1}});
+    expectLine(p[1], {{180, 1}, {170, 3}});
+    // through a waypoint on the antimeridian (180 comes in as -180)
+    p = pieces({{179, 0}, {180, 1}, {-179, 2}});
+    ASSERT_EQ(p.size(), 2u);
+    expectLine(p[0], {{179, 0}, {180, 1}});
+    expectLine(p[1], {{-180, 1}, {-179, 2}});
+    // ending on it: one piece ending at 180
+    p = pieces({{170, 0}, {-180, 0}});
+    ASSERT_EQ(p.size(), 1u);
+    expectLine(p[0], {{170, 0}, {180, 0}});
+    // back and forth: three pieces, every longitude in -180..180, no leg longer than 180 degrees
+    p = pieces({{179, 0}, {-179, 0}, {179, 1}});
+    ASSERT_EQ(p.size(), 3u);
+    for (const Line &l : p)
+        for (std::size_t i = 0; i < l.size(); ++i)
+        {
+            EXPECT_GE(l[i].lon, -180.0);
+            EXPECT_LE(l[i].lon, 180.0);
+            if (i > 0)
+            {
+                EXPECT_LE(std::abs(l[i].lon - l[i - 1].lon), 180.0);
+            }
+        }
+}
+
 TEST(MissionRun, SpeedSweepClosedForm)
 {
     const MissionProblem problem(uniformMission(false));

@@ -12,3 +12,20 @@ if(TARGET glider_plan)
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_glider_plan_cli.sh $<TARGET_FILE:glider_plan> ${PROJECT_SOURCE_DIR})
   set_tests_properties(mission.glider_plan_cli PROPERTIES TIMEOUT 300)
 endif()
+# glider_plan on real-sized global forecasts in both longitude conventions (issue 10): the forecasts are written
+# once by make_global_forecast (NetCDF-C) as a fixture, then one test per scenario (check_geography.sh)
+if(TARGET glider_plan)
+  add_executable(make_global_forecast ${CMAKE_CURRENT_LIST_DIR}/MakeGlobalForecast.cpp)
+  target_link_libraries(make_global_forecast PRIVATE netCDF::netcdf)
+  set(_geo_data ${CMAKE_CURRENT_BINARY_DIR}/geography_data)
+  add_test(NAME mission.geography.files
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_geography.sh files $<TARGET_FILE:glider_plan>
+            $<TARGET_FILE:make_global_forecast> ${_geo_data})
+  set_tests_properties(mission.geography.files PROPERTIES FIXTURES_SETUP geography_files TIMEOUT 120)
+  foreach(scenario dateline greenwich seam duplicate wide polar region)
+    add_test(NAME mission.geography.${scenario}
+      COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_geography.sh ${scenario} $<TARGET_FILE:glider_plan>
+              $<TARGET_FILE:make_global_forecast> ${_geo_data})
+    set_tests_properties(mission.geography.${scenario} PROPERTIES FIXTURES_REQUIRED geography_files TIMEOUT 300)
+  endforeach()
+endif()

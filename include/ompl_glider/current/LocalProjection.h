@@ -44,10 +44,12 @@ public:
         return lat0_;
     }
 
-    /// @brief (lon, lat) in degrees -> (x, y) in metres. Longitude may be given in any 360-degree range.
-    /// @throws Error if the point cannot be projected.
+    /// @brief (lon, lat) in degrees -> (x, y) in metres. Longitude may be given in any convention (0..360,
+    /// -180..180, whole turns off): it is normalised exactly (normalizeLongitude()) first, so one position written
+    /// in two conventions gives the identical point. @throws Error if the point cannot be projected.
     Point2 forward(double lon, double lat) const;
-    /// @brief (x, y) in metres -> (lon, lat) in degrees, lon in [lon0 - 180, lon0 + 180).
+    /// @brief (x, y) in metres -> (lon, lat) in degrees, lon in [-180, 180) whatever lon0 is (normalizeLongitude():
+    /// the one place where planning-frame points become longitudes, so every output is in -180..180).
     /// @throws Error if the point cannot be inverted.
     LonLat inverse(double x, double y) const;
 

@@ -98,6 +98,9 @@ struct NetCdfCurrents
     std::size_t fillLandNodes{0};    ///<   u or v a fill value in some record of the trip
     std::size_t maskLandNodes{0};    ///<   land in the mask (in some record of the trip, for a mask with a time axis)
     std::size_t zeroLandNodes{0};    ///<   u = v = 0 exactly in every record of the trip (zeroVelocityIsLand)
+    /// Bounds of the loaded nodes in the file's coordinates: longitudes from lonMin in [-180, 180) east to lonMax
+    /// (beyond 180 when the nodes cross the antimeridian), latitudes; x and y in Cartesian mode (file units).
+    double lonMin{0.0}, lonMax{0.0}, latMin{0.0}, latMax{0.0};
     std::size_t fileValues{0};       ///< values per component in the file variable
     std::size_t loadedValues{0};     ///< values per component loaded
 
@@ -106,11 +109,11 @@ struct NetCdfCurrents
     double fieldTime(const std::string &isoOrSeconds) const;
     /// @brief ISO 8601 date of a field time (dated files; else the number).
     std::string isoTime(double t) const;
-    /// @brief Planning-frame point (x, y) in metres -> (lon, lat) in degrees; identity (lon = x, lat = y) in
-    /// Cartesian mode.
+    /// @brief Planning-frame point (x, y) in metres -> (lon, lat) in degrees, longitude in [-180, 180) whatever
+    /// the file's convention (LocalProjection::inverse()); identity (lon = x, lat = y) in Cartesian mode.
     LonLat toGeographic(Point2 p) const;
-    /// @brief (lon, lat) in degrees -> planning-frame point (x, y) in metres; identity (x = lon, y = lat) in
-    /// Cartesian mode.
+    /// @brief (lon, lat) in degrees, longitude in either convention (0..360 or -180..180) -> planning-frame point
+    /// (x, y) in metres; identity (x = lon, y = lat) in Cartesian mode.
     Point2 toLocal(LonLat g) const;
 };
 
@@ -166,6 +169,12 @@ struct NetCdfCurrents
 ///
 /// @throws Error naming the file, the variable and what was expected when something is missing or wrong.
 NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &options = {});
+
+/// @brief Whether loadNetCdfCurrents() reads the file's horizontal coordinates as longitude/latitude (true) or as
+/// Cartesian x/y (false), by the loader's own detection (the variable names and `coordinates` of the options);
+/// reads attributes only. @throws Error as loadNetCdfCurrents() does for a file that is not NetCDF or whose
+/// velocities or grid cannot be found.
+bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &options = {});
 
 /// @brief The time axis of a forecast file as loadNetCdfCurrents() reads it, without its velocities: what a
 /// mission needs to turn ISO dates into field times before the forecast is loaded.

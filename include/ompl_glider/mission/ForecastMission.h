@@ -5,6 +5,7 @@
 /// it gives is planned by the same pipeline as every other mission.
 
 #include <cstddef>
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -29,19 +30,25 @@ struct ForecastInput
     std::optional<std::size_t> steadyRecord;  ///< plan on this time record only, as a steady field
     double depth{0.0};                             ///< depth (m, positive down) at which the current is read
     bool zeroVelocityLand{true};                   ///< u = v = 0 at every loaded time is land (CurrentSpec)
-    Point2 start;  ///< start: lon,lat (x = lon, y = lat) for a geographic file, x,y for a Cartesian one
+    Point2 start;  ///< start: lon,lat (x = lon, y = lat; longitude in -180..180 or 0..360, whatever the file's
+                   ///< convention) for a geographic file, x,y for a Cartesian one
     Point2 goal;   ///< goal, as start
+    /// Region to load and plan in: lon_min, lat_min, lon_max, lat_max (a GeoJSON bbox; either convention,
+    /// lon_max < lon_min across the antimeridian: regionFault()), or x_min, y_min, x_max, y_max for a Cartesian
+    /// file. None: the trip's region (netCdfLoadOptions()).
+    std::optional<std::array<double, 4>> region;
     /// ISO 8601 date or seconds after the first forecast time; empty: the first forecast time. A steady field takes
     /// any departure; for a steady file without dates, a date is the date of field time 0 (the outputs' ISO times).
     std::string departure;
     double speed{0.3};      ///< vehicle speed through water, m/s
 };
 
-/// @brief The MissionSpec of a forecast, the same as a mission file with the same current, start, goal, departure
-/// and speed: loads the trip's region (netCdfLoadOptions()) once to check that start and goal lie on the grid and
-/// in water, that the depth is not below the deepest layer and that the departure lies within the forecast (a
-/// steady field, without time dimension, with a single record or with steadyRecord, takes any departure), and
-/// to convert the departure; sets the outputs to every format. The planner settings are the defaults of
+/// @brief The MissionSpec of a forecast, the same as a mission file with the same current, region, start, goal,
+/// departure and speed: checks the region (regionFault()) and that start and goal lie in it, loads the region (or
+/// the trip's, netCdfLoadOptions()) once to check that start and goal lie on the grid and in water, that the depth
+/// is not below the deepest layer and that the departure lies within the forecast (a steady field, without time
+/// dimension, with a single record or with steadyRecord, takes any departure), and to convert the departure; sets
+/// the outputs to every format. The planner settings are the defaults of
 /// PlannerSpec (grid size automatic): change them in the returned spec. Writes nothing.
 /// @throws Error with a one-line message naming the input (as its command-line flag), file or variable at fault.
 MissionSpec forecastMission(const ForecastInput &input);

@@ -116,12 +116,24 @@ private:
 /// tests and benchmarks that use the OMPL layer directly.
 GliderProblem gulfStreamProblem();
 
+/// @brief Smallest margin of a trip's region (km).
+constexpr double kMinTripMarginKm = 25.0;
+
+/// @brief The margin (km) of a trip's region around its start and goal: half their great-circle distance, at
+/// least kMinTripMarginKm (room for the detours a current forces).
+double tripMarginKm(LonLat start, LonLat goal);
+
 /// @brief How a NetCDF mission reads its forecast: variable names (lon/lat, else x/y), interpolation schemes,
-/// horizon policy, depth range, projection and the region to load: the mission's region, else the trip's (the
-/// start-goal box plus half its larger side, at least 0.2 degrees, on each side; the whole file when the trip
-/// spans 180 degrees of longitude or more). Shared by MissionProblem and forecastMission() so that a forecast from
-/// the command line and the same forecast in a mission file are the same problem.
-/// @throws Error for an unknown interpolation scheme. (Only with OMPL_GLIDER_WITH_NETCDF.)
+/// horizon policy, depth range, projection and the region to load: the mission's region, else the trip's. For
+/// lon/lat start and goal that is tripBox() of the two with tripMarginKm(): their lon/lat box the shorter way
+/// round (across the antimeridian or Greenwich when that is shorter, in whatever convention they are written),
+/// widened by the margin converted to degrees of latitude and of longitude at the box's highest |latitude|, up to
+/// +-kMaxGridLatitude; never rebuilt from projected corners. For x/y start and goal (a Cartesian file): their box
+/// plus half its larger side (at least 0.2 units) on each side. The projection's reference is the region's
+/// centre. Shared by MissionProblem and forecastMission() so that a forecast from the command line and the same
+/// forecast in a mission file are the same problem.
+/// @throws Error for an unknown interpolation scheme, or a lon/lat start or goal within 90 - kMaxGridLatitude
+/// degrees of a pole (naming it). (Only with OMPL_GLIDER_WITH_NETCDF.)
 NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &mission);
 
 /// @brief The NetCDF reader's message in a mission file's words: its option fields (NetCdfCurrentOptions::uName,

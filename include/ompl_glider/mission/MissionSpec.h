@@ -32,7 +32,7 @@ struct PointSpec
     bool geographic{false};  ///< lon/lat given
     double x{0.0};           ///< x (planning units) when !geographic
     double y{0.0};           ///< y
-    double lon{0.0};         ///< longitude, degrees east, when geographic
+    double lon{0.0};         ///< longitude, degrees east, when geographic (-180..180 or 0..360)
     double lat{0.0};         ///< latitude, degrees north
 };
 
@@ -75,7 +75,9 @@ struct RegionSpec
     bool set{false};         ///< a region was given (else: the NetCDF grid extent, or required for analytic flows)
     bool geographic{false};  ///< given as lon/lat
     double xMin{0}, xMax{0}, yMin{0}, yMax{0};          ///< x/y bounds
-    double lonMin{0}, lonMax{0}, latMin{0}, latMax{0};  ///< lon/lat bounds
+    /// lon/lat bounds as loaded (GeoBox): lonMin in -180..180, lonMax = lonMin + width (beyond 180 across the
+    /// antimeridian), whatever convention the file used
+    double lonMin{0}, lonMax{0}, latMin{0}, latMax{0};
 };
 
 /// @brief Departure: a fixed time, or a window searched for the optimal departure ([EichhornRAS] Sec. 5).

@@ -18,8 +18,8 @@ namespace ompl_glider
 /// is used.
 ///
 /// For geographic axes, queries in the planning frame are converted with @p toGeographic, which returns the
-/// (lon, lat) of a planning-frame point (x, y) (for example MissionProblem::toGeographic); without it the axes
-/// are taken as planning x/y.
+/// (lon, lat) of a planning-frame point (x, y) (for example MissionProblem::toGeographic) and the longitude shifted
+/// by whole turns into the file's convention (0..360 or -180..180); without it the axes are taken as planning x/y.
 class NetCdfBathymetry : public Bathymetry
 {
 public:

@@ -3,7 +3,9 @@
 /// @brief The route as text files a pilot or a GIS loads: waypoints CSV, path CSV, GeoJSON, the Slocum goto list.
 
 #include <string>
+#include <vector>
 
+#include "ompl_glider/Geometry.h"
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/output/SlocumGoto.h"
 
@@ -19,10 +21,18 @@ std::string waypointsCsv(const MissionResult &result);
 /// projection).
 std::string pathCsv(const MissionResult &result);
 
-/// @brief GeoJSON FeatureCollection: one LineString of the path (properties: mission, departure, travel time,
-/// path length) and one Point per waypoint (properties: index, time, time_s, time_iso, leg_time, dive profile).
-/// Coordinates are [lon, lat] (RFC 7946) when the mission has a projection, else planning x/y (then the
-/// collection carries "coordinates": "local").
+/// @brief A line of lon/lat positions (any longitude convention) as pieces that do not cross the antimeridian
+/// (RFC 7946 sec. 3.1.9): each leg goes the shorter way round; a leg across 180 is cut there, at the latitude
+/// interpolated linearly in lon/lat (how a GeoJSON reader draws the leg), the piece before ending at +-180 and the
+/// one after starting at -+180. Longitudes out are in -180..180; one piece when the line does not cross;
+/// consecutive repeated points are dropped, and pieces of fewer than two points.
+std::vector<std::vector<LonLat>> splitAtAntimeridian(const std::vector<LonLat> &line);
+
+/// @brief GeoJSON FeatureCollection: the path (properties: mission, departure, travel time, path length) and one
+/// Point per waypoint (properties: index, time, time_s, time_iso, leg_time, dive profile). Coordinates are
+/// [lon, lat] (RFC 7946, longitudes in -180..180) when the mission has a projection, else planning x/y (then the
+/// collection carries "coordinates": "local"). The path is a LineString, or a MultiLineString split at the
+/// antimeridian (splitAtAntimeridian()) when it crosses it.
 std::string routeGeoJson(const MissionResult &result);
 
 /// @brief The Slocum goto list of the final path (without the start unless outputs.goto_include_start).

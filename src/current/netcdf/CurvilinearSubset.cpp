@@ -79,7 +79,7 @@ IndexBox regionBox(const NcFile &f, const Layout &l, const RegionOfInterest &r)
     return box;
 }
 
-/// Centre of the bounding box of the loaded nodes (longitudes wrapped about ref when geographic).
+/// Bounds and centre of the bounding box of the loaded nodes (longitudes wrapped about ref when geographic).
 void setCentre(bool geographic, double ref, HorizontalSubset &h)
 {
     double a = kInf, b = -kInf, c = kInf, d = -kInf;
@@ -91,6 +91,10 @@ void setCentre(bool geographic, double ref, HorizontalSubset &h)
         c = std::min(c, h.nodeLat[k]);
         d = std::max(d, h.nodeLat[k]);
     }
+    h.lonLo = a;
+    h.lonHi = b;
+    h.latLo = c;
+    h.latHi = d;
     h.centreLon = 0.5 * (a + b);
     h.centreLat = 0.5 * (c + d);
 }

@@ -287,6 +287,7 @@ struct HorizontalSubset
     std::vector<double> lon1D, lat1D;      ///< rectilinear: coordinate per internal i / j
     std::vector<double> nodeLon, nodeLat;  ///< curvilinear: coordinates per internal j * nx + i
     double centreLon{kNaN}, centreLat{kNaN};
+    double lonLo{kNaN}, lonHi{kNaN}, latLo{kNaN}, latHi{kNaN};  ///< bounds of the nodes (longitudes unwrapped)
 };
 
 /// Indices [a, b] (inclusive) of an axis (ascending or descending) whose values lie in [lo, hi], widened by
@@ -296,10 +297,11 @@ std::optional<std::pair<std::size_t, std::size_t>> indexRange(const std::vector<
 /// lon shifted by whole turns into [centre - 180, centre + 180).
 double wrapTo(double lon, double centre);
 
-/// 1-D axes: latitude stored ascending; longitude ascending, unwrapped across the seam of a global axis (or of
-/// a regional axis written across one). The nodes x the times t and depths z must fit the memory limit
-/// (checkTripMemory()). @throws Error for axes with fill values or non-finite numbers, axes that are not strictly
-/// monotonic, a region outside the axes or a trip too large for the memory.
+/// 1-D axes: latitude stored ascending, rows beyond +-kMaxGridLatitude left out (geographic); longitude
+/// ascending, unwrapped across the seam of a global axis (or of a regional axis written across one), a global
+/// axis's repeated seam column (-180 and 180, 0 and 360) read once. The nodes x the times t and depths z must fit
+/// the memory limit (checkTripMemory()). @throws Error for axes with fill values or non-finite numbers, axes that
+/// are not strictly monotonic, a region outside the axes or a trip too large for the memory.
 HorizontalSubset rectilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
                                    const AxisSelection &t);
 /// 2-D coordinates: the index box of the nodes in the region (+ margin nodes) and their coordinates; the memory

@@ -1,10 +1,12 @@
 // The nodes of 1-D longitude/latitude (or x/y) axes that cover the region: ascending or descending axes, 0..360
-// or -180..180 longitudes, and global axes cut across their seam (the loaded longitudes are unwrapped).
+// or -180..180 longitudes, and global axes cut across their seam (the loaded longitudes are unwrapped); rows
+// beyond +-kMaxGridLatitude are left out.
 #include <algorithm>
 #include <cmath>
 
 #include "NetCdfInternal.h"
 #include "ompl_glider/ResourceLimits.h"
+#include "ompl_glider/current/GeoBox.h"
 
 namespace ompl_glider
 {
@@ -56,12 +58,15 @@ void subsetY(const NcFile &f, const Layout &l, const RegionOfInterest &r, const 
     for (std::size_t k = 0; k <= yb - ya; ++k)
     {
         const std::size_t fi = yDesc ? yb - k : ya + k;
+        if (l.geographic && std::abs(ys[fi]) > kMaxGridLatitude)
+            continue;  // a pole row (the grid degenerates there): never loaded, whatever the region's margin
         h.yIdx.push_back(fi);
         h.lat1D.push_back(ys[fi]);
     }
 }
 
-/// An x axis in ascending order: values xa[k] at file index xmap[k]; cyclic for a global longitude axis.
+/// An x axis in ascending order: values xa[k] at file index xmap[k]; cyclic for a global longitude axis (whose
+/// repeated seam column, 180 after -180 or 360 after 0, is left out).
 struct AscendingX
 {
     std::vector<double> xa;
@@ -80,11 +85,21 @@ AscendingX ascendingX(const std::vector<double> &xs, bool geographic)
         x.xmap[k] = xDesc ? xs.size() - 1 - k : k;
     for (std::size_t k = 0; k < xs.size(); ++k)
         x.xa[k] = xs[x.xmap[k]];
+    std::size_t n = x.xa.size();
+    x.step = n > 1 ? (x.xa[n - 1] - x.xa[0]) / double(n - 1) : 360.0;
+    // Rounding of float axes (a 1/12-degree axis in float32 is off by up to 3e-5) against a missing column.
+    const double tol = 0.01 * std::abs(x.step);
+    if (geographic && n > 3 && std::abs(x.xa[n - 1] - x.xa[0] - 360.0) <= tol)
+    {
+        // both seam columns (-180 and 180, or 0 and 360): one column a turn apart, left out so that the seam is
+        // one cell like any other (not a cell of zero width)
+        x.xa.pop_back();
+        x.xmap.pop_back();
+        --n;
+        x.step = (x.xa[n - 1] - x.xa[0]) / double(n - 1);
+    }
     const std::vector<double> &xa = x.xa;
-    const std::size_t n = xa.size();
-    x.step = n > 1 ? (xa[n - 1] - xa[0]) / double(n - 1) : 360.0;
-    x.cyclic = geographic && n > 2 && (xa[n - 1] - xa[0] + x.step) >= 360.0 - 1e-6 * std::abs(x.step) &&
-               (xa[n - 1] - xa[0]) < 360.0;
+    x.cyclic = geographic && n > 2 && (xa[n - 1] - xa[0] + x.step) >= 360.0 - tol && (xa[n - 1] - xa[0]) < 360.0;
     return x;
 }
 
@@ -166,8 +181,12 @@ HorizontalSubset rectilinearSubset(const NcFile &f, const Layout &l, const Regio
     if (h.xIdx.size() < 2 || h.yIdx.size() < 2)
         throw f.error("the region covers fewer than 2 grid nodes along '" + l.xName + "' or '" + l.yName + "'");
     checkTripMemory(f, h.xIdx.size(), h.yIdx.size(), t.idx.size(), z.idx.size());
-    h.centreLon = 0.5 * (h.lon1D.front() + h.lon1D.back());
-    h.centreLat = 0.5 * (h.lat1D.front() + h.lat1D.back());
+    h.lonLo = h.lon1D.front();
+    h.lonHi = h.lon1D.back();
+    h.latLo = h.lat1D.front();
+    h.latHi = h.lat1D.back();
+    h.centreLon = 0.5 * (h.lonLo + h.lonHi);
+    h.centreLat = 0.5 * (h.latLo + h.latHi);
     return h;
 }
 }  // namespace netcdf_detail

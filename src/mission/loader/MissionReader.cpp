@@ -248,6 +248,8 @@ void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, P
         p.lat = r.finite(n["lat"], field + ".lat");
         if (std::abs(p.lat) > 90)
             r.fail(n["lat"], field + ".lat", "latitude must be within [-90, 90]");
+        if (p.lon < -180.0 || p.lon > 360.0)
+            r.fail(n["lon"], field + ".lon", "longitude must be within -180..180 or 0..360");
     }
 }
 

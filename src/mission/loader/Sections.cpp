@@ -10,6 +10,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CfTime.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/output/OutputFormats.h"
@@ -209,14 +210,16 @@ void readRegion(const Reader &r, const YAML::Node &n, MissionSpec &m)
     {
         if (!m.projection.set && m.current.type != "netcdf")
             r.fail(n, f, "lon/lat bounds need a 'projection' in the mission");
-        g.lonMin = need("lon_min");
-        g.lonMax = need("lon_max");
-        g.latMin = need("lat_min");
-        g.latMax = need("lat_max");
-        if (!(g.lonMax > g.lonMin))
-            r.fail(n["lon_max"], f + ".lon_max", "must be > lon_min");
-        if (!(g.latMax > g.latMin))
-            r.fail(n["lat_max"], f + ".lat_max", "must be > lat_min");
+        const double lonMin = need("lon_min"), lonMax = need("lon_max");
+        const double latMin = need("lat_min"), latMax = need("lat_max");
+        // either convention; lon_max < lon_min crosses the antimeridian (RFC 7946 bbox), stored unwrapped
+        if (const auto fault = regionFault(lonMin, latMin, lonMax, latMax))
+            r.fail(n[fault->bound], f + "." + fault->bound, fault->what);
+        const GeoBox box = geoBox(lonMin, latMin, lonMax, latMax);
+        g.lonMin = box.lonMin;
+        g.lonMax = box.lonMax;
+        g.latMin = box.latMin;
+        g.latMax = box.latMax;
     }
 }
 

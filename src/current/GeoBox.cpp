@@ -1,0 +1,144 @@
+// Longitude/latitude boxes: regions checked in either convention, the trip's region widened by a geodesic margin.
+#include "ompl_glider/current/GeoBox.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr double kDeg = M_PI / 180.0;
+
+std::string num(double v)
+{
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+}  // namespace
+
+double GeoBox::unwrap(double lon) const
+{
+    double d = std::fmod(normalizeLongitude(lon) - lonMin, 360.0);
+    if (d < 0.0)
+        d += 360.0;
+    return lonMin + d;
+}
+
+bool GeoBox::contains(LonLat p) const
+{
+    if (!(p.lat >= latMin && p.lat <= latMax))
+        return false;
+    return unwrap(p.lon) <= lonMax || width() >= 360.0;
+}
+
+std::string GeoBox::text() const
+{
+    return "lon " + num(lonMin) + ".." + num(lonMax) + ", lat " + num(latMin) + ".." + num(latMax);
+}
+
+std::optional<RegionFault> regionFault(double lonMin, double latMin, double lonMax, double latMax)
+{
+    const std::pair<const char *, double> values[] = {
+        {"lon_min", lonMin}, {"lat_min", latMin}, {"lon_max", lonMax}, {"lat_max", latMax}};
+    for (const auto &[bound, v] : values)
+        if (!std::isfinite(v))
+            return RegionFault{bound, "must be a finite number (got " + num(v) + ")"};
+    for (const auto &[bound, v] : {values[0], values[2]})
+        if (v < -180.0 || v > 360.0)
+            return RegionFault{bound, num(v) + " is not a longitude in -180..180 or 0..360"};
+    for (const auto &[bound, v] : {values[1], values[3]})
+        if (v < -90.0 || v > 90.0)
+            return RegionFault{bound, num(v) + " is not a latitude in -90..90"};
+    if (!(latMax > latMin))
+        return RegionFault{"lat_max", num(latMax) + " must be > lat_min " + num(latMin)};
+    if (lonMax == lonMin)
+        return RegionFault{"lon_max", num(lonMax) + " equals lon_min: the region has no width"};
+    if (lonMax - lonMin >= 360.0)
+        return RegionFault{"lon_max", "the region " + num(lonMin) + ".." + num(lonMax) + " is " +
+                                          num(lonMax - lonMin) + " degrees wide; it must be less than 360"};
+    if (lonMax < lonMin && lonMax - lonMin + 360.0 <= 0.0)
+        return RegionFault{"lon_max", num(lonMax) + " lies a whole turn or more west of lon_min " + num(lonMin) +
+                                          " (lon_max < lon_min means eastward across the antimeridian)"};
+    return std::nullopt;
+}
+
+GeoBox geoBox(double lonMin, double latMin, double lonMax, double latMax)
+{
+    if (const auto f = regionFault(lonMin, latMin, lonMax, latMax))
+        throw Error("region: " + f->bound + " " + f->what);
+    GeoBox b;
+    const double width = lonMax > lonMin ? lonMax - lonMin : lonMax - lonMin + 360.0;
+    b.lonMin = normalizeLongitude(lonMin);
+    b.lonMax = b.lonMin + width;
+    b.latMin = latMin;
+    b.latMax = latMax;
+    return b;
+}
+
+double greatCircleKm(LonLat a, LonLat b)
+{
+    const double dLat = (b.lat - a.lat) * kDeg, dLon = normalizeLongitude(b.lon - a.lon) * kDeg;
+    const double h = std::sin(dLat / 2) * std::sin(dLat / 2) +
+                     std::cos(a.lat * kDeg) * std::cos(b.lat * kDeg) * std::sin(dLon / 2) * std::sin(dLon / 2);
+    return 2.0 * kEarthRadiusKm * std::asin(std::min(1.0, std::sqrt(h)));
+}
+
+GeoBox tripBox(const std::vector<LonLat> &points, double marginKm)
+{
+    if (points.empty())
+        throw Error("tripBox: no points");
+    if (!(marginKm >= 0.0) || !std::isfinite(marginKm))
+        throw Error("tripBox: the margin must be finite and >= 0 km (got " + num(marginKm) + ")");
+    std::vector<double> lons;
+    GeoBox b;
+    b.latMin = 90.0;
+    b.latMax = -90.0;
+    for (const LonLat &p : points)
+    {
+        if (!std::isfinite(p.lon) || !std::isfinite(p.lat) || std::abs(p.lat) > 90.0)
+            throw Error("(" + num(p.lon) + ", " + num(p.lat) + ") is not a longitude/latitude");
+        if (std::abs(p.lat) > kMaxGridLatitude)
+            throw Error("latitude " + num(p.lat) + " is within " + num(90.0 - kMaxGridLatitude) +
+                        " degrees of a pole, where a longitude/latitude grid degenerates (|lat| <= " +
+                        num(kMaxGridLatitude) + " is planned)");
+        lons.push_back(normalizeLongitude(p.lon));
+        b.latMin = std::min(b.latMin, p.lat);
+        b.latMax = std::max(b.latMax, p.lat);
+    }
+    // The shortest arc holding every longitude: the circle minus its largest gap between neighbours.
+    std::sort(lons.begin(), lons.end());
+    std::size_t after = 0;  // the arc starts at lons[after]
+    double gap = lons.front() + 360.0 - lons.back();
+    for (std::size_t k = 1; k < lons.size(); ++k)
+        if (lons[k] - lons[k - 1] > gap)
+        {
+            gap = lons[k] - lons[k - 1];
+            after = k;
+        }
+    double lon0 = lons[after], width = 360.0 - gap;
+    // Widen: latitudes first (stopping short of the poles), then longitudes at the widened box's highest |lat|.
+    const double dLat = marginKm / kKmPerDegree;
+    b.latMin = std::max(b.latMin - dLat, -kMaxGridLatitude);
+    b.latMax = std::min(b.latMax + dLat, kMaxGridLatitude);
+    const double phi = std::max(std::abs(b.latMin), std::abs(b.latMax));
+    const double dLon = marginKm / (kKmPerDegree * std::cos(phi * kDeg));
+    if (width + 2.0 * dLon >= 360.0 || !std::isfinite(dLon))
+    {
+        lon0 += 0.5 * width - 180.0;  // the whole circle, centred on the trip
+        width = 360.0;
+    }
+    else
+    {
+        lon0 -= dLon;
+        width += 2.0 * dLon;
+    }
+    b.lonMin = normalizeLongitude(lon0);
+    b.lonMax = b.lonMin + width;
+    return b;
+}
+}  // namespace ompl_glider
