@@ -234,6 +234,17 @@ void defineFlags(CLI::App &app, Flags &f)
                    "y_max for a Cartesian file; write --region=-60,30,-40,45 for a negative first value (default: "
                    "the box of start and goal widened by half their distance, at least 25 km)")
         ->group(nc);
+    app.add_option_function<std::string>(
+           "--depth-average",
+           [&fc](const std::string &v) {
+               const Point2 p = pair("--depth-average", v);
+               if (!(p.x >= 0.0 && p.x <= p.y && p.y <= 12000.0))
+                   throw UsageError{"--depth-average expects top,bottom in metres with 0 <= top <= bottom <= 12000, "
+                                    "got '" + v + "'"};
+               fc.depthAverage = std::make_pair(p.x, p.y);
+           },
+           "plan on the current averaged over the glider's working depth, top,bottom in metres (e.g. 0,200)")
+        ->group(nc);
     app.add_option("--depth", f.depth, "depth in metres, positive down, at which the current is read (default 0)")
         ->check(CLI::Range(0.0, 12000.0))
         ->group(nc);

@@ -67,7 +67,11 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
     const LinearConversion vel = velocityConversionOf(f, l, opt);
     // what to load: depth layers, forecast times, region (its memory checked before the nodes are read)
     const RegionOfInterest region = regionOfInterest(opt, l.geographic);
-    const AxisSelection z = selectDepths(f, l, opt.maxDepth);
+    if (opt.depthAverage && !(opt.depthAverage->first >= 0.0 && opt.depthAverage->first <= opt.depthAverage->second &&
+                              std::isfinite(opt.depthAverage->second)))
+        throw f.error("depth average over " + std::to_string(opt.depthAverage->first) + ".." +
+                      std::to_string(opt.depthAverage->second) + " m: expected 0 <= top <= bottom, finite");
+    const AxisSelection z = selectDepths(f, l, opt.depthAverage ? opt.depthAverage->second : opt.maxDepth);
     const AxisSelection t = selectTimes(f, l, opt, out);
     const HorizontalSubset h =
         l.curvilinear ? curvilinearSubset(f, l, region, z, t) : rectilinearSubset(f, l, region, z, t);
@@ -81,6 +85,8 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
     g.time = t.values;
     readVelocities(f, l, plan, t, vel, opt, g, out);
     applyLandMask(f, l, h, z, t, opt, g, out);
+    if (opt.depthAverage)
+        averageOverDepth(opt.depthAverage->first, opt.depthAverage->second, g);
     out.projection = setNodeCoordinates(f, l, h, region, opt, g);
     out.lonMin = l.geographic ? normalizeLongitude(h.lonLo) : h.lonLo;
     out.lonMax = out.lonMin + (h.lonHi - h.lonLo);

@@ -111,6 +111,7 @@ MissionSpec forecastMission(const ForecastInput &q)
     m.current.timeInterpolation = q.timeInterpolation;
     m.current.horizonPolicy = q.horizonPolicy;
     m.current.zeroVelocityLand = q.zeroVelocityLand;
+    m.current.depthAverage = q.depthAverage;
     m.current.velocityUnits = q.velocityUnits;
     m.current.timeUnits = q.timeUnits;
     m.current.steadyRecord = q.steadyRecord;

@@ -68,6 +68,7 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     o.timeName = var("time");
     o.maskName = var("mask");
     o.zeroVelocityIsLand = c.zeroVelocityLand;
+    o.depthAverage = c.depthAverage;
     // the trip's records (land is decided on them): from the departure (or the window's first) to the horizon
     const double departure = m.departure.window ? m.departure.begin : m.departure.time;
     if (std::isfinite(departure) && departure > 0.0)

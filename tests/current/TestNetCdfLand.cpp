@@ -301,3 +301,44 @@ TEST(NetCdfLand, AGivenMaskMustExistAndFitTheGrid)
     given.maskName = "landsea";
     EXPECT_THROW(loadNetCdfCurrents(path, given), Error);
 }
+
+TEST(NetCdfLand, DepthAverageOfALinearProfileIsExactAndKeepsTheLandOfItsLayers)
+{
+    // 5 layers at 0, 50, 100, 150, 200 m; u = 0.1 + 0.001 z (linear: the trapezoid rule is exact), v = 0.1; the
+    // block is rock at 150 m only (fill values)
+    TempDir dir;
+    const std::string path = dir.file("layers.nc");
+    writeFile(path, 5, [](std::size_t, std::size_t k, std::size_t j, std::size_t i) {
+        if (k == 3 && inBlock(i, j))
+            return -999.0;
+        return 0.1 + 0.001 * 50.0 * double(k);
+    });
+    auto averaged = [&](double top, double bottom) {
+        NetCdfCurrentOptions o;
+        o.depthAverage = std::make_pair(top, bottom);
+        return loadNetCdfCurrents(path, o);
+    };
+    // u is linear in z, so its average over a range is its value at the range's mean depth: compare with the 3-D
+    // field read at that depth (the same rotation into the local frame, the same interpolation)
+    const NetCdfCurrents full = loadNetCdfCurrents(path);
+    auto at = [](const NetCdfCurrents &nc, double z) {
+        const Point2 p = nc.toLocal({-68.0, 41.0});
+        return nc.field->velocity(p.x, p.y, z, 0.0);
+    };
+    const NetCdfCurrents deep = averaged(20.0, 170.0);
+    EXPECT_EQ(deep.field->nz(), 1u);
+    EXPECT_NEAR(at(deep, 0.0).u, at(full, 95.0).u, 1e-7);
+    EXPECT_NEAR(at(deep, 0.0).v, at(full, 95.0).v, 1e-7);
+    EXPECT_NEAR(std::hypot(at(deep, 0.0).u, at(deep, 0.0).v), std::hypot(0.195, 0.1), 1e-4);
+    EXPECT_FALSE(probe(deep).block);  // rock at 150 m lies within 20..170 m
+    const NetCdfCurrents shallow = averaged(0.0, 90.0);
+    EXPECT_NEAR(at(shallow, 0.0).u, at(full, 45.0).u, 1e-7);
+    EXPECT_TRUE(probe(shallow).block);  // the 150 m layer carries no weight over 0..90 m
+    // beyond the deepest layer the profile is constant: 0..300 m averages 200 m of the profile and 100 m of 0.3,
+    // (200 * 0.2 + 100 * 0.3) / 300 = 0.2333..., the profile's value at 133.33 m
+    const NetCdfCurrents beyond = averaged(0.0, 300.0);
+    EXPECT_NEAR(at(beyond, 0.0).u, at(full, 400.0 / 3.0).u, 1e-7);
+    NetCdfCurrentOptions bad;
+    bad.depthAverage = std::make_pair(100.0, 50.0);
+    EXPECT_THROW(loadNetCdfCurrents(path, bad), Error);
+}

@@ -61,6 +61,12 @@ struct NetCdfCurrentOptions
     double latMax{std::numeric_limits<double>::quiet_NaN()};
     double margin{0.0};       ///< extra margin around the region (degrees, or x/y units in Cartesian mode)
     int marginNodes{2};       ///< extra grid nodes on each side (2 keeps bicubic stencils inside the data)
+    /// Depth-averaged current over [first, second] metres (positive down, first <= second): the layers covering the
+    /// range are loaded and averaged (the trapezoid rule on the piecewise-linear profile, which is exact for a
+    /// current linear in depth between layers; constant above the first layer and below the last), giving a 2-D
+    /// field; a node that is land at any layer within the range is land. What pilots read off a forecast for the
+    /// glider's working depth. Replaces maxDepth.
+    std::optional<std::pair<double, double>> depthAverage;
     double maxDepth{std::numeric_limits<double>::infinity()};  ///< deepest depth the glider reaches (m, positive
                                                               ///< down): loads the layers down to the first at or
                                                               ///< below it, plus 2 for cubic/Akima stencils

@@ -30,6 +30,7 @@ struct ForecastInput
     std::optional<std::size_t> steadyRecord;  ///< plan on this time record only, as a steady field
     double depth{0.0};                             ///< depth (m, positive down) at which the current is read
     bool zeroVelocityLand{true};                   ///< u = v = 0 at every loaded time is land (CurrentSpec)
+    std::optional<std::pair<double, double>> depthAverage;  ///< current averaged over [top, bottom] m (CurrentSpec)
     Point2 start;  ///< start: lon,lat (x = lon, y = lat; longitude in -180..180 or 0..360, whatever the file's
                    ///< convention) for a geographic file, x,y for a Cartesian one
     Point2 goal;   ///< goal, as start

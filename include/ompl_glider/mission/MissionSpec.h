@@ -60,6 +60,8 @@ struct CurrentSpec
     std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
     std::string horizonPolicy{"refuse"};           ///< refuse (trips past the forecast are infeasible) | hold_last
     bool zeroVelocityLand{true};  ///< netcdf: nodes with u = v = 0 exactly at every loaded time are land
+    /// netcdf: the current averaged over [top, bottom] metres (NetCdfCurrentOptions::depthAverage)
+    std::optional<std::pair<double, double>> depthAverage;
     std::string velocityUnits;  ///< netcdf: overrides the units of u and v (any velocity UDUNITS-2 reads)
     std::string timeUnits;      ///< netcdf: overrides the units of the time variable ("days since 2026-01-15")
     std::optional<std::size_t> steadyRecord;  ///< netcdf: plan on this time record only, as a steady field

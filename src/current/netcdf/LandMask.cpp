@@ -307,5 +307,65 @@ void applyLandMask(const NcFile &f, const Layout &l, const HorizontalSubset &h, 
         if (!g.water[idx % perTime])
             g.u[idx] = g.v[idx] = 0.0f;
 }
+void averageOverDepth(double top, double bottom, GriddedData &g)
+{
+    const std::vector<double> &d = g.depth;
+    const std::size_t nz = d.size(), nh = g.nx * g.ny, nt = g.time.size();
+    std::vector<double> w(nz, 0.0);
+    if (nz == 1 || top == bottom)
+    {
+        // one layer, or a single depth: linear interpolation (clamped)
+        const double z = std::clamp(top, d.front(), d.back());
+        std::size_t k = 0;
+        while (k + 2 < nz && d[k + 1] < z)
+            ++k;
+        const double a = nz == 1 ? 0.0 : (z - d[k]) / (d[k + 1] - d[k]);
+        w[k] += 1.0 - a;
+        if (nz > 1)
+            w[k + 1] += a;
+    }
+    else
+    {
+        // integral of the piecewise-linear profile, extended as constants above d[0] and below d[nz-1]
+        if (top < d.front())
+            w.front() += std::min(bottom, d.front()) - top;
+        if (bottom > d.back())
+            w.back() += bottom - std::max(top, d.back());
+        for (std::size_t k = 0; k + 1 < nz; ++k)
+        {
+            const double p = std::max(top, d[k]), q = std::min(bottom, d[k + 1]);
+            if (!(q > p))
+                continue;
+            const double h = d[k + 1] - d[k], ap = (p - d[k]) / h, aq = (q - d[k]) / h;
+            w[k] += 0.5 * (q - p) * ((1.0 - ap) + (1.0 - aq));
+            w[k + 1] += 0.5 * (q - p) * (ap + aq);
+        }
+        for (double &x : w)
+            x /= bottom - top;
+    }
+    std::vector<double> u(nt * nh, 0.0), v(nt * nh, 0.0);
+    std::vector<std::uint8_t> water(nh, 1);
+    for (std::size_t k = 0; k < nz; ++k)
+    {
+        if (w[k] == 0.0)
+            continue;
+        for (std::size_t n = 0; n < nh; ++n)
+            water[n] = water[n] && g.water[k * nh + n];
+        for (std::size_t it = 0; it < nt; ++it)
+            for (std::size_t n = 0; n < nh; ++n)
+            {
+                u[it * nh + n] += w[k] * g.u[(it * nz + k) * nh + n];
+                v[it * nh + n] += w[k] * g.v[(it * nz + k) * nh + n];
+            }
+    }
+    for (std::size_t it = 0; it < nt; ++it)
+        for (std::size_t n = 0; n < nh; ++n)
+            if (!water[n])
+                u[it * nh + n] = v[it * nh + n] = 0.0;
+    g.u.assign(u.begin(), u.end());
+    g.v.assign(v.begin(), v.end());
+    g.water = std::move(water);
+    g.depth = {top};
+}
 }  // namespace netcdf_detail
 }  // namespace ompl_glider

@@ -401,6 +401,10 @@ Packing packingOf(const NcFile &f, int var);
 /// out.fillLandNodes / out.zeroLandNodes). g.nx, g.ny, g.depth and g.time must be set.
 void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
                     const LinearConversion &vel, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
+/// Collapses the depth layers of g into one: the depth average over [top, bottom] (trapezoid rule on the
+/// piecewise-linear profile, constant outside the layers; NetCdfCurrentOptions::depthAverage); a node is land when
+/// it is land at a layer that carries weight. g.depth becomes {top}.
+void averageOverDepth(double top, double bottom, GriddedData &g);
 /// The land/sea mask variable (the given one, or one found automatically: rules at loadNetCdfCurrents()) applied
 /// to g.water over the loaded nodes, depths and times; sets out.maskVariable and the land counts, and zeroes the
 /// velocities of every land node. @throws Error when a given mask is missing or does not fit u's grid.

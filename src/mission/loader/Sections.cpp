@@ -116,7 +116,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
     const std::string f = "current";
     r.checkMap(n, f,
                {"type", "parameters", "file", "variables", "interpolation", "horizon", "velocity_units", "time_units",
-                "steady_record", "zero_velocity_land"});
+                "steady_record", "zero_velocity_land", "depth_average"});
     CurrentSpec &c = m.current;
     c.mark = {r.file(), r.line(n)};
     std::set<std::string> kinds;
@@ -142,7 +142,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
         r.fail(n["parameters"]["length"], f + ".parameters.length", "expected a number > 0");
     const bool netcdf = kind.gridded;
     for (const char *key : {"file", "variables", "interpolation", "horizon", "velocity_units", "time_units",
-                            "steady_record", "zero_velocity_land"})
+                            "steady_record", "zero_velocity_land", "depth_average"})
         if (n[key] && !netcdf)
             r.fail(n[key], f + "." + key, "only for type netcdf");
     if (!netcdf)
@@ -175,6 +175,14 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
         c.horizonPolicy = r.oneOf(n["horizon"], f + ".horizon", {"refuse", "hold_last"});
     if (n["zero_velocity_land"])
         c.zeroVelocityLand = r.boolean(n["zero_velocity_land"], f + ".zero_velocity_land");
+    if (n["depth_average"])
+    {
+        const auto [top, bottom] = r.pair(n["depth_average"], f + ".depth_average");
+        if (!(top >= 0.0 && top <= bottom && bottom <= 12000.0))
+            r.fail(n["depth_average"], f + ".depth_average",
+                   "expected [top, bottom] in metres, positive down, 0 <= top <= bottom <= 12000");
+        c.depthAverage = std::make_pair(top, bottom);
+    }
     readUnitsAndRecord(r, n, c);
     readFileCalendar(r, n, m);
 }
