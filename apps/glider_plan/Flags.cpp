@@ -211,7 +211,7 @@ void defineFlags(CLI::App &app, Flags &f)
         ->group(nc);
     app.add_flag_function(
            "--no-zero-land", [&fc](std::int64_t) { fc.zeroVelocityLand = false; },
-           "do not take nodes whose u and v are exactly 0 at every loaded time for land (on by default: models "
+           "do not take nodes whose u and v are exactly 0 in every record of the trip for land (on by default: models "
            "such as POP store land as zero velocity)")
         ->group(nc);
     app.add_option("--xy-interp", fc.xyInterpolation, "nearest | bilinear (default) | bicubic")

@@ -70,12 +70,17 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     o.zeroVelocityIsLand = c.zeroVelocityLand;
     o.depthAverage = c.depthAverage;
     // the trip's records (land is decided on them): from the departure (or the window's first) to the horizon
+    // (only under the 'refuse' policy: with hold_last a departure may lie after the forecast, and then every
+    // record counts, which errs towards land)
     const double departure = m.departure.window ? m.departure.begin : m.departure.time;
-    if (std::isfinite(departure) && departure > 0.0)
+    if (std::isfinite(departure) && departure >= 0.0 && c.horizonPolicy == "refuse")
     {
-        char text[40];
-        std::snprintf(text, sizeof text, "%.17g", departure);
-        o.departure = text;
+        if (departure > 0.0)
+        {
+            char text[40];
+            std::snprintf(text, sizeof text, "%.17g", departure);
+            o.departure = text;
+        }
         if (m.planner.horizon > 0.0)
             o.horizon = m.planner.horizon + (m.departure.window ? m.departure.end - m.departure.begin : 0.0);
     }

@@ -371,8 +371,8 @@ for name, args, phrase in [
         ("flag-steady-record-without-currents", ["--steady-record", "0"], "--steady-record needs --currents"),
         ("flag-speeds-empty", ["--speeds", ""], "--speeds"),
         ("flag-speeds-negative", ["--speeds", "0.3,-1"], "--speeds"),
-        ("flag-depth-average-reversed", ["--depth-average", "100,50"], "--depth-average"),
-        ("flag-depth-average-one-number", ["--depth-average", "200"], "--depth-average"),
+        ("flag-depth-average-reversed", ["--depth-average", "100,50"], "0 <= top <= bottom"),
+        ("flag-depth-average-one-number", ["--depth-average", "200"], "two numbers"),
 ]:
     case(name, args + ["--out", "{out}"], 2, phrase, {"m.yaml": MISSION})
 case("flag-grid-fine-memory-limit", ["--grid-size", "1e-3", "--out", "{out}"], 2, "--grid-size: a lattice spacing",

@@ -138,7 +138,9 @@ struct NetCdfCurrents
 ///
 /// Land, per node and depth layer, is the union of: u or v a fill value in any of the trip's records; land in a
 /// mask variable (below), in any of the trip's records when the mask has the time axis of u; u = v = 0 exactly in
-/// all of the trip's records (NetCdfCurrentOptions::zeroVelocityIsLand, on by default). The trip's records are
+/// all of the trip's records (NetCdfCurrentOptions::zeroVelocityIsLand, on by default; not applied when every
+/// water node would be zero, a still field, nor to packed data seen in a single record, where rounding can zero a
+/// calm node). The trip's records are
 /// those from the last at or before the departure to the first at or after departure + horizon (not the stencil
 /// margin loaded around them), so a seasonal mask or missing winter data close what is closed during the trip,
 /// not all year.

@@ -44,11 +44,25 @@ void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv,
             g.u[idx] = static_cast<float>(u);
             g.v[idx] = static_cast<float>(v);
         }
+    // The zero rule is for model output: a field that is zero at every water node is still water, not all land,
+    // and packed data seen in one record only can round a calm node to zero
+    std::size_t tripRecords = 0;
+    for (std::size_t it = 0; it < g.time.size(); ++it)
+        tripRecords += t.inTrip(it);
+    const bool packed = pu.scale != 1.0 || pu.offset != 0.0 || pv.scale != 1.0 || pv.offset != 0.0;
+    std::size_t zeros = 0, wet = 0;
+    for (std::size_t n = 0; n < perTime; ++n)
+        if (g.water[n])
+        {
+            ++wet;
+            zeros += allZero[n];
+        }
+    const bool applyZero = zeroIsLand && zeros < wet && !(packed && tripRecords < 2);
     for (std::size_t n = 0; n < perTime; ++n)
     {
         if (!g.water[n])
             ++out.fillLandNodes;
-        else if (zeroIsLand && allZero[n])
+        else if (applyZero && allZero[n])
         {
             g.water[n] = 0;
             ++out.zeroLandNodes;
@@ -109,7 +123,10 @@ Mask maskOf(const NcFile &f, int var)
         m.rule = MaskRule::Flags;
         return m;
     }
-    if (sn == "land_binary_mask" || name.find("land") != std::string::npos || name.find("lsm") != std::string::npos)
+    if (sn == "sea_binary_mask")
+        m.rule = MaskRule::WaterIfHalf;
+    else if (sn == "land_binary_mask" || name.find("land") != std::string::npos ||
+             name.find("lsm") != std::string::npos)
         m.rule = MaskRule::LandIfHalf;
     else if (name == "kmt")
         m.rule = MaskRule::LevelCount;
@@ -214,10 +231,12 @@ int findMask(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, 
     {
         const auto v = f.findVar(opt.maskName);
         if (!v)
-            throw f.error("no mask variable '" + opt.maskName + "' (given as the land/sea mask)");
+            throw f.error("no mask variable '" + opt.maskName +
+                          "' (given as the land/sea mask: --mask-var, current.variables.mask)");
         dims = fitMask(f, l, *v, h, z, t, why);
         if (!dims)
-            throw f.error("mask variable '" + opt.maskName + "' does not fit the velocities: " + why);
+            throw f.error("mask variable '" + opt.maskName +
+                          "' (--mask-var, current.variables.mask) does not fit the velocities: " + why);
         return *v;
     }
     std::vector<int> order;
@@ -225,8 +244,19 @@ int findMask(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, 
     {
         const std::string sn = stdName(f, var);
         const auto meanings = f.attText(var, "flag_meanings");
-        if ((meanings && lower(*meanings).find("land") != std::string::npos) || sn == "land_binary_mask" ||
-            sn == "sea_binary_mask")
+        // flag meanings that name both land and water (not a quality flag such as "land_contaminated")
+        bool landWord = false, waterWord = false;
+        if (meanings)
+        {
+            std::istringstream is(lower(*meanings));
+            std::string word;
+            while (is >> word)
+            {
+                landWord = landWord || word == "land";
+                waterWord = waterWord || word == "sea" || word == "water" || word == "ocean" || word == "open_water";
+            }
+        }
+        if ((landWord && waterWord) || sn == "land_binary_mask" || sn == "sea_binary_mask")
             order.push_back(var);
     }
     for (const char *name : kMaskNames)

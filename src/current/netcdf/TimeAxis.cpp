@@ -186,8 +186,17 @@ AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentO
     // departure to departure + horizon, plus 2 forecast steps on each side for cubic/Akima stencils
     const double end = std::isfinite(opt.horizon) ? dep + std::max(0.0, opt.horizon) : ts.back();
     const Axis ax(ts, "time '" + tv.name + "'");
-    const std::size_t ta = ax.interval(dep), tb = ax.size() > 1 ? ax.interval(std::min(end, ts.back())) + 1 : 0;
-    const std::size_t a = ta >= 2 ? ta - 2 : 0, b = std::min(ts.size() - 1, tb + 2);
+    // the last record at or before the departure, the first at or after the end
+    const std::size_t n = ts.size();
+    const std::size_t ta = std::min<std::size_t>(
+        n - 1, static_cast<std::size_t>(std::max<std::ptrdiff_t>(
+                   0, std::upper_bound(ts.begin(), ts.end(), dep) - ts.begin() - 1)));
+    const std::size_t tb = std::max(
+        ta, std::min<std::size_t>(n - 1, static_cast<std::size_t>(std::lower_bound(ts.begin(), ts.end(), end) -
+                                                                   ts.begin())));
+    // loaded: the intervals of departure and end, plus 2 records on each side for cubic/Akima stencils
+    const std::size_t ia = ax.interval(dep), ib = ax.size() > 1 ? ax.interval(std::min(end, ts.back())) + 1 : 0;
+    const std::size_t a = ia >= 2 ? ia - 2 : 0, b = std::min(ts.size() - 1, ib + 2);
     s.idx.clear();
     s.values.clear();
     s.tripBegin = ta - a;
