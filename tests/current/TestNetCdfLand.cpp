@@ -178,9 +178,9 @@ TEST(NetCdfLand, VelocitiesExactlyZeroAtEveryTimeAreLandByDefault)
     EXPECT_TRUE(nc.field->segmentInWater(n1.x, n1.y, n2.x, n2.y, 0.0));
 
     // a still field (zero at every node and time) is water, not all land
-    const std::string still = dir.file("still.nc");
-    writeFile(still, 0, [](std::size_t, std::size_t, std::size_t, std::size_t) { return 0.0; });
-    EXPECT_EQ(loadNetCdfCurrents(still).landNodes, 0u);
+    const std::string stillFile = dir.file("still.nc");
+    writeFile(stillFile, 0, [](std::size_t, std::size_t, std::size_t, std::size_t) { return 0.0; });
+    EXPECT_EQ(loadNetCdfCurrents(stillFile).landNodes, 0u);
 
     NetCdfCurrentOptions off;
     off.zeroVelocityIsLand = false;
