@@ -145,13 +145,15 @@ struct NetCdfCurrents
 /// margin loaded around them), so a seasonal mask or missing winter data close what is closed during the trip,
 /// not all year.
 /// The mask variable is found automatically, in this order: a variable
-/// with CF flag_values/flag_meanings naming land, standard_name land_binary_mask or sea_binary_mask, then the names
+/// with CF flag_values/flag_meanings naming both land and sea/water/ocean (not a quality flag such as
+/// "land_contaminated"), standard_name land_binary_mask or sea_binary_mask, then the names
 /// (case-insensitive) mask_rho, mask, tmask, landmask, land_mask, lsm, land_sea_mask, seamask, sea_mask, kmt; only
 /// one whose dimensions fit u's grid (its horizontal dimensions are u's, or have their lengths; a time or depth
 /// dimension must be u's) is taken. A given name (maskName) must fit. The values mean:
 ///  - flag_values with flag_meanings: a value whose meaning has the word sea, water or ocean and none of ice, land,
 ///    shelf, lake, glacier, river ("sea", "open_water"; not "sea_ice") is water, any other value land;
-///  - land_binary_mask, or a name containing "land" or "lsm" (ERA5's land fraction, WRF's LANDMASK): >= 0.5 is land;
+///  - land_binary_mask, or (without standard_name sea_binary_mask) a name containing "land" or "lsm" (ERA5's land
+///    fraction, WRF's LANDMASK): >= 0.5 is land;
 ///  - kmt / KMT (POP's number of ocean levels): depth layer k (file index) is water when k < KMT;
 ///  - sea_binary_mask and every other name (ROMS mask_rho, NEMO tmask, mask): >= 0.5 is water;
 ///  - a fill value is land.
