@@ -27,6 +27,7 @@
 #include <netcdf.h>
 #include <sanitizer/lsan_interface.h>
 
+#include "netcdf/NetCdfInternal.h"
 #include "FuzzUtil.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
@@ -143,9 +144,13 @@ struct LeaksIgnored
     }
 };
 
-/// True when NetCDF-C opens the file (it is closed again); a failed open's leaks are ignored.
+/// True when NetCDF-C opens the file (it is closed again); a failed open's leaks are ignored. A classic file the
+/// reader refuses before opening it (truncated, or a header that breaks the format: NetCDF-C divides by zero on a
+/// type it does not know in a CDF-1 header) is not handed to NetCDF-C here either.
 bool netCdfOpens(const std::string &path)
 {
+    if (ompl_glider::netcdf_detail::classicTruncation(path))
+        return false;
     const LeaksIgnored ignored;
     int id = 0;
     if (nc_open(path.c_str(), NC_NOWRITE, &id) != NC_NOERR)
