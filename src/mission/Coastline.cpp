@@ -85,7 +85,8 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin
     if (ds->GetLayerCount() == 0)
         throw Error(who + ": holds no layer");
     OGRSpatialReference wgs84;
-    wgs84.importFromEPSG(4326);
+    if (wgs84.importFromEPSG(4326) != OGRERR_NONE)
+        throw Error(who + ": cannot set up lon/lat (EPSG:4326): is PROJ's database (proj-data) installed?");
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     OGRPolygon box;
     {
