@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,7 +23,8 @@ using namespace ompl_glider;
 
 namespace
 {
-double number(const std::string &flag, const std::string &text)
+/// The whole of @p text as a finite number, or nullopt.
+std::optional<double> finiteNumber(const std::string &text)
 {
     std::size_t used = 0;
     double v = 0.0;
@@ -32,11 +34,19 @@ double number(const std::string &flag, const std::string &text)
     }
     catch (const std::exception &)
     {
-        used = 0;
+        return std::nullopt;
     }
     if (used == 0 || used != text.size() || !std::isfinite(v))
-        throw UsageError{flag + " expects a finite number, got '" + text + "'"};
+        return std::nullopt;
     return v;
+}
+
+double number(const std::string &flag, const std::string &text)
+{
+    const auto v = finiteNumber(text);
+    if (!v)
+        throw UsageError{flag + " expects a finite number, got '" + text + "'"};
+    return *v;
 }
 
 Point2 pair(const std::string &flag, const std::string &text)
@@ -67,19 +77,8 @@ std::array<double, 4> quad(const std::string &flag, const std::string &text)
 /// A finite number > 0 (CLI11's PositiveNumber lets "nan" and "inf" through).
 const CLI::Validator kPositiveFinite(
     [](std::string &text) {
-        std::size_t used = 0;
-        double v = 0.0;
-        try
-        {
-            v = std::stod(text, &used);
-        }
-        catch (const std::exception &)
-        {
-            used = 0;
-        }
-        return used == text.size() && used > 0 && std::isfinite(v) && v > 0.0
-                   ? std::string()
-                   : "expected a finite number > 0, got '" + text + "'";
+        const auto v = finiteNumber(text);
+        return v && *v > 0.0 ? std::string() : "expected a finite number > 0, got '" + text + "'";
     },
     "POSITIVE");
 

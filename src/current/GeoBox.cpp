@@ -141,4 +141,29 @@ GeoBox tripBox(const std::vector<LonLat> &points, double marginKm)
     b.lonMax = b.lonMin + width;
     return b;
 }
+GeoBox frameBounds(const Region &r, const std::function<LonLat(Point2)> &toGeographic)
+{
+    const double lonC = toGeographic({0.5 * (r.xMin + r.xMax), 0.5 * (r.yMin + r.yMax)}).lon;
+    double lon0 = 1e9, lon1 = -1e9, lat0 = 90.0, lat1 = -90.0;
+    for (int k = 0; k <= 40; ++k)
+    {
+        const double s = k / 40.0, x = r.xMin + s * (r.xMax - r.xMin), y = r.yMin + s * (r.yMax - r.yMin);
+        for (const Point2 p : {Point2{x, r.yMin}, Point2{x, r.yMax}, Point2{r.xMin, y}, Point2{r.xMax, y}})
+        {
+            const LonLat g = toGeographic(p);
+            const double lon = lonC + std::remainder(g.lon - lonC, 360.0);
+            lon0 = std::min(lon0, lon);
+            lon1 = std::max(lon1, lon);
+            lat0 = std::min(lat0, g.lat);
+            lat1 = std::max(lat1, g.lat);
+        }
+    }
+    GeoBox b;
+    b.lonMin = normalizeLongitude(lon0);
+    b.lonMax = b.lonMin + (lon1 - lon0);
+    b.latMin = lat0;
+    b.latMax = lat1;
+    return b;
+}
+
 }  // namespace ompl_glider

@@ -352,25 +352,8 @@ void MissionProblem::buildRegions()
         const std::string at = mk.line == 0 && mk.file.rfind("--", 0) == 0 ? mk.file + ": " : where(m, mk);
         if (!isGeographic())
             throw Error(at + "forbidden.coastline: the coastline is in lon/lat; give a 'projection' in the mission");
-        // longitudes unwrapped about the box centre's, so that a box across the antimeridian stays narrow
-        const double lonC = toGeographic({0.5 * (box_.xMin + box_.xMax), 0.5 * (box_.yMin + box_.yMax)}).lon;
-        double lon0 = 1e9, lon1 = -1e9, lat0 = 90.0, lat1 = -90.0;
-        for (int k = 0; k <= 40; ++k)
-        {
-            const double s = k / 40.0;
-            for (const Point2 p : {Point2{box_.xMin + s * (box_.xMax - box_.xMin), box_.yMin},
-                                   Point2{box_.xMin + s * (box_.xMax - box_.xMin), box_.yMax},
-                                   Point2{box_.xMin, box_.yMin + s * (box_.yMax - box_.yMin)},
-                                   Point2{box_.xMax, box_.yMin + s * (box_.yMax - box_.yMin)}})
-            {
-                const LonLat g = toGeographic(p);
-                const double lon = lonC + std::remainder(g.lon - lonC, 360.0);
-                lon0 = std::min(lon0, lon);
-                lon1 = std::max(lon1, lon);
-                lat0 = std::min(lat0, g.lat);
-                lat1 = std::max(lat1, g.lat);
-            }
-        }
+        const GeoBox gb = frameBounds(box_, [this](Point2 p) { return toGeographic(p); });
+        const double lon0 = gb.lonMin, lon1 = gb.lonMax, lat0 = gb.latMin, lat1 = gb.latMax;
         const double pad = 0.1 * std::max(lon1 - lon0, lat1 - lat0);
         std::vector<LandPolygon> land;
         try

@@ -10,6 +10,7 @@
 #include <cairo.h>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/GeoBox.h"
 
 namespace ompl_glider
 {
@@ -176,25 +177,9 @@ void arrow(cairo_t *cr, double x, double y, double dx, double dy, double head)
 void drawGraticule(cairo_t *cr, const Region &reg, const MapOptions &o, const std::function<double(double)> &X,
                    const std::function<double(double)> &Y, bool lines)
 {
-    // the lon/lat extent of the plot, longitudes unwrapped about the centre's
-    const LonLat c = o.toGeographic({0.5 * (reg.xMin + reg.xMax), 0.5 * (reg.yMin + reg.yMax)});
-    double lon0 = 1e9, lon1 = -1e9, lat0 = 1e9, lat1 = -1e9;
-    for (int k = 0; k <= 60; ++k)
-    {
-        const double s = k / 60.0;
-        for (const Point2 p : {Point2{reg.xMin + s * (reg.xMax - reg.xMin), reg.yMin},
-                               Point2{reg.xMin + s * (reg.xMax - reg.xMin), reg.yMax},
-                               Point2{reg.xMin, reg.yMin + s * (reg.yMax - reg.yMin)},
-                               Point2{reg.xMax, reg.yMin + s * (reg.yMax - reg.yMin)}})
-        {
-            const LonLat g = o.toGeographic(p);
-            const double lon = c.lon + std::remainder(g.lon - c.lon, 360.0);
-            lon0 = std::min(lon0, lon);
-            lon1 = std::max(lon1, lon);
-            lat0 = std::min(lat0, g.lat);
-            lat1 = std::max(lat1, g.lat);
-        }
-    }
+    // the lon/lat extent of the plot
+    const GeoBox gb = frameBounds(reg, o.toGeographic);
+    const double lon0 = gb.lonMin, lon1 = gb.lonMax, lat0 = gb.latMin, lat1 = gb.latMax;
     if (!(lon1 > lon0) || !(lat1 > lat0))
         return;
     const double step = degreeStep(std::max(lon1 - lon0, lat1 - lat0), 7.0);

@@ -3,11 +3,13 @@
 /// @brief Longitude/latitude boxes in geographic terms: a region given in either longitude convention (checked),
 /// and the trip's region (the box of start and goal widened by a geodesic margin), across the antimeridian.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "ompl_glider/Geometry.h"
+#include "ompl_glider/current/CurrentField.h"
 
 namespace ompl_glider
 {
@@ -74,4 +76,8 @@ double greatCircleKm(LonLat a, LonLat b);
 /// @throws Error when there is no point, a value is not finite, a |latitude| exceeds kMaxGridLatitude (the message
 /// says so), or the margin is negative.
 GeoBox tripBox(const std::vector<LonLat> &points, double marginKm);
+/// @brief The lon/lat box of a planning-frame rectangle: its edges sampled (40 points each) through @p toGeographic,
+/// longitudes unwrapped about the centre's so that a rectangle across the antimeridian stays narrow (lonMax beyond
+/// 180 then). For clipping and drawing, not for exact bounds (an edge may bow between samples).
+GeoBox frameBounds(const Region &frame, const std::function<LonLat(Point2)> &toGeographic);
 }  // namespace ompl_glider
