@@ -208,6 +208,12 @@ void defineFlags(CLI::App &app, Flags &f)
            "land/sea mask variable (found automatically: flag_meanings, mask_rho, tmask, lsm, KMT...; 'none' for "
            "no mask)")
         ->group(nc);
+    app.add_option_function<std::string>(
+           "--angle-var", [&fc](const std::string &v) { fc.variables["angle"] = v; },
+           "grid angle variable (radians or degrees, grid i direction to east) of velocities given along a rotated "
+           "grid (found automatically: 'angle' on the velocities' grid, as ROMS and POP write it; 'none' for "
+           "none)")
+        ->group(nc);
     app.add_flag_function(
            "--no-zero-land", [&fc](std::int64_t) { fc.zeroVelocityLand = false; },
            "do not take nodes whose u and v are exactly 0 in every record of the trip for land (on by default: models "

@@ -83,7 +83,11 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
     g.ny = h.yIdx.size();
     g.depth = z.values;
     g.time = t.values;
-    readVelocities(f, l, plan, t, vel, opt, g, out);
+    if (l.staggered)
+        readStaggeredVelocities(f, l, h, z, t, vel, opt, g, out);
+    else
+        readVelocities(f, l, plan, t, vel, opt, g, out);
+    rotateGridToEastNorth(f, l, h, g);
     applyLandMask(f, l, h, z, t, opt, g, out);
     if (opt.depthAverage)
         averageOverDepth(opt.depthAverage->first, opt.depthAverage->second, g);

@@ -67,6 +67,7 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     o.depthName = var("depth");
     o.timeName = var("time");
     o.maskName = var("mask");
+    o.angleName = var("angle");
     o.zeroVelocityIsLand = c.zeroVelocityLand;
     o.depthAverage = c.depthAverage;
     // the trip's records (land is decided on them): from the departure (or the window's first) to the horizon

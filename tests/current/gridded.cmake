@@ -10,7 +10,8 @@ glider_add_test(test_current_netcdf
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfUnitsAndNames.cpp
 
-  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfGlobal.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfGlobal.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfModelGrids.cpp)
 target_link_libraries(test_current_netcdf PRIVATE netCDF::netcdf)
 glider_add_test(test_current_gridded_agreement ${CMAKE_CURRENT_LIST_DIR}/TestGriddedAgreement.cpp)
 target_link_libraries(test_current_gridded_agreement PRIVATE netCDF::netcdf)

@@ -46,6 +46,10 @@ struct NetCdfCurrentOptions
     std::optional<std::size_t> steadyRecord;  ///< read only this time record (0-based) and plan on it as a steady
                                               ///< field (dated by the record's time when the axis is dated)
 
+    std::string angleName;  ///< angle (radians or degrees) from the grid's i direction to east, for velocities given
+                            ///< along the grid (ROMS angle, POP ANGLE); empty: a variable named "angle" on the
+                            ///< velocities' grid unless u has an eastward standard_name; "none": none
+
     // --- land (besides fill values of u/v, which are always land) ---
     std::string maskName;  ///< land/sea mask variable; empty: found automatically (loadNetCdfCurrents()); "none": none
     bool zeroVelocityIsLand{true};  ///< a node whose u and v are exactly 0 in every record of the trip is land (models
@@ -168,9 +172,18 @@ struct NetCdfCurrents
 /// reference point) and eastward/northward velocities are rotated into x/y at each node. Between nodes a point is
 /// located in the straight-edged cell of the projected nodes (GriddedCurrentField); a parallel bows away from that edge by at most L^2 tan(lat) / (8 R)
 /// for a cell of width L: 0.5 m for 6 km cells at 45 degrees, 27 m for 0.5-degree cells at 33 degrees, far
-/// below the forecasts' resolution. Curvilinear velocities are taken as eastward/northward (CF standard names);
-/// grid-relative components (ROMS/NEMO rotated grids with an angle variable), staggered u/v grids and
-/// terrain-following (sigma) vertical coordinates are not supported (the last two give an Error).
+/// below the forecasts' resolution. Velocities are eastward/northward unless an angle variable (angleName) says
+/// they run along the grid's i/j directions; then (u, v) at each node is rotated by its angle a:
+/// east = u cos a - v sin a, north = u sin a + v cos a (ROMS `angle`, POP `ANGLE`).
+///
+/// Staggered grids: u and v on grids of their own. An Arakawa C grid as ROMS writes it (u on (eta_u, xi_u) with
+/// xi_u = xi_rho - 1, v on (eta_v, xi_v) with eta_v = eta_rho - 1, 2-D longitude/latitude on (eta_rho, xi_rho))
+/// is loaded on its interior rho points: u at a rho point is the mean of the u points west and east of it, v the
+/// mean of the v points south and north of it, read at their own points. A face that mask_u/mask_v marks as land,
+/// or whose value is a fill value, counts as zero flow (no flow through a coast); a rho point whose two u faces or
+/// two v faces are both fill values is land, as is a rho point that mask_rho marks as land. A B grid (POP, MOM: u and
+/// v together on the velocity points, ULONG/ULAT) is an ordinary curvilinear grid with an angle. Terrain-following
+/// (sigma) vertical coordinates are not supported (an Error: interpolate to z levels first).
 ///
 /// Bad files are refused rather than loaded wrong: a classic-format (CDF-1/2/5) file shorter than its
 /// header declares, a dimension of u/v of length 0, axes holding fill values, NaN or infinities, axes that are not

@@ -53,8 +53,8 @@ struct CurrentSpec
     /// linear_shear a; double_gyre amplitude length). Missing ones take the class defaults.
     std::map<std::string, double> parameters;
     std::string file;                              ///< netcdf: path (relative paths resolved against the mission)
-    std::map<std::string, std::string> variables;  ///< netcdf: role (u, v, lon, lat, x, y, depth, time, mask) -> name
-                                                   ///< (mask "none": no land/sea mask variable)
+    std::map<std::string, std::string> variables;  ///< netcdf: role (u, v, lon, lat, x, y, depth, time, mask, angle) -> name
+                                                   ///< (mask "none": no land/sea mask variable; angle "none": no grid angle)
     std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic
     std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima
     std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima

@@ -1,5 +1,7 @@
 // The grid of the velocities: 1-D longitude/latitude (or x/y) axes or a 2-D curvilinear grid, geographic or
 // Cartesian.
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "NetCdfInternal.h"
@@ -18,9 +20,14 @@ void findVelocities(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
     l.uName = f.varName(l.uVar);
     l.vName = f.varName(l.vVar);
     const std::vector<int> dims = f.varDims(l.uVar);
-    if (f.varDims(l.vVar) != dims)
+    l.uDims = dims;
+    l.vDims = f.varDims(l.vVar);
+    l.staggered = l.vDims != dims;
+    if (l.staggered && (l.vDims.size() != dims.size() || dims.size() < 2 ||
+                        !std::equal(dims.begin(), dims.end() - 2, l.vDims.begin())))
         throw f.error("velocity variables '" + l.uName + "' and '" + l.vName +
-                      "' must have the same dimensions (staggered grids are not supported)");
+                      "' differ in more than their two horizontal dimensions; expected the same time and depth "
+                      "dimensions (a staggered grid puts only the horizontal points apart)");
     if (dims.size() < 2 || dims.size() > 4)
         throw f.error("variable '" + l.uName + "': expected 2 to 4 dimensions ([time,] [depth,] lat, lon), got " +
                       std::to_string(dims.size()));
@@ -72,6 +79,74 @@ void findCurvilinearCoordinates(const NcFile &f, const NetCdfCurrentOptions &opt
                       "': expected dimensions (" + f.dimName(want[0]) + ", " + f.dimName(want[1]) + ")");
 }
 
+/// The describing text "name = length" of a dimension.
+std::string dimText(const NcFile &f, int dim)
+{
+    return f.dimName(dim) + " = " + std::to_string(f.dimLen(dim));
+}
+
+/// The rho (cell centre) dimensions (eta_rho, xi_rho) of a ROMS-like C grid: u on (eta_u, xi_u) with
+/// eta_u = eta_rho and xi_u = xi_rho - 1, v on (eta_v, xi_v) with eta_v = eta_rho - 1 and xi_v = xi_rho; found
+/// from the 2-D longitude/latitude (x/y) variables of that shape. @throws Error when the staggering is another.
+std::vector<int> rhoDimensions(const NcFile &f, const NetCdfCurrentOptions &opt, const Layout &l)
+{
+    const std::size_t n = l.uDims.size();
+    const int ueta = l.uDims[n - 2], uxi = l.uDims[n - 1], veta = l.vDims[n - 2], vxi = l.vDims[n - 1];
+    const bool cartesian = opt.coordinates == CoordinateMode::Cartesian;
+    for (int var = 0; var < f.nvars(); ++var)
+    {
+        const std::vector<int> d = f.varDims(var);
+        if (d.size() != 2 || !(cartesian ? isXVar(f, var) : isLonVar(f, var)))
+            continue;
+        if (f.dimLen(d[0]) == f.dimLen(ueta) && f.dimLen(d[1]) == f.dimLen(uxi) + 1 &&
+            f.dimLen(d[0]) == f.dimLen(veta) + 1 && f.dimLen(d[1]) == f.dimLen(vxi))
+            return d;
+    }
+    throw f.error("velocity variables '" + l.uName + "' (" + dimText(f, ueta) + ", " + dimText(f, uxi) + ") and '" +
+                  l.vName + "' (" + dimText(f, veta) + ", " + dimText(f, vxi) +
+                  ") are on different grids; a staggered grid is read as an Arakawa C grid as ROMS writes it (u one "
+                  "point shorter than the cell centres in x, v one shorter in y, with 2-D longitude/latitude on the "
+                  "cell centres), and no such longitude variable was found");
+}
+
+/// The grid angle variable: the given one (which must be 2-D on the grid), else one named "angle" on the grid,
+/// unless u is named eastward; its unit (radians or degrees). -1 when none.
+void findAngle(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
+{
+    const std::vector<int> grid = {l.dims[std::size_t(l.dimY)], l.dims[std::size_t(l.dimX)]};
+    if (lower(opt.angleName) == "none")
+        return;
+    if (!opt.angleName.empty())
+    {
+        const auto v = f.findVar(opt.angleName);
+        if (!v)
+            throw f.error("no grid angle variable '" + opt.angleName + "' (given as --angle-var, "
+                          "current.variables.angle)");
+        if (f.varDims(*v) != grid)
+            throw f.error("grid angle variable '" + opt.angleName + "' (--angle-var, current.variables.angle) is not "
+                          "on the grid of the velocities (" + dimText(f, grid[0]) + ", " + dimText(f, grid[1]) + ")");
+        l.angleVar = *v;
+    }
+    else
+    {
+        if (stdName(f, l.uVar).rfind("eastward", 0) == 0)
+            return;
+        for (int var = 0; var < f.nvars() && l.angleVar < 0; ++var)
+            if (lower(f.varName(var)) == "angle" && f.varDims(var) == grid)
+                l.angleVar = var;
+        if (l.angleVar < 0)
+            return;
+    }
+    const std::string units = lower(trim(unitsOf(f, l.angleVar)));
+    if (inList(units, {"radian", "radians", "rad"}))
+        l.angleToRadians = 1.0;
+    else if (inList(units, {"degree", "degrees", "deg", "degrees_east", "degrees_north"}))
+        l.angleToRadians = M_PI / 180.0;
+    else
+        throw f.error("grid angle variable '" + f.varName(l.angleVar) + "' has units '" + units +
+                      "'; expected radians or degrees");
+}
+
 /// Without 1-D x/y axes: the two remaining dimensions of length > 1 are (j, i) in file order, with 2-D
 /// coordinates. Updates the roles and geoAxes/cartAxes.
 void makeCurvilinear(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l, bool &geoAxes, bool &cartAxes)
@@ -89,6 +164,12 @@ void makeCurvilinear(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l
     l.role[std::size_t(l.dimY)] = Role::Y;
     l.role[std::size_t(l.dimX)] = Role::X;
     l.curvilinear = true;
+    if (l.staggered)
+    {
+        const std::vector<int> rho = rhoDimensions(f, opt, l);
+        l.dims[std::size_t(l.dimY)] = rho[0];
+        l.dims[std::size_t(l.dimX)] = rho[1];
+    }
     findCurvilinearCoordinates(f, opt, {l.dims[std::size_t(l.dimY)], l.dims[std::size_t(l.dimX)]}, l);
     geoAxes = opt.coordinates != CoordinateMode::Cartesian && isLonVar(f, l.lon2D) && isLatVar(f, l.lat2D);
     cartAxes = !geoAxes;
@@ -141,6 +222,10 @@ Layout detectLayout(const NcFile &f, const NetCdfCurrentOptions &opt)
     l.coordVar = std::move(dr.coordVar);
     bool geoAxes = dr.geoAxes, cartAxes = dr.cartAxes;
     checkNoEmptyDimension(f, l);
+    if (l.staggered && (l.dimX >= 0 || l.dimY >= 0))
+        throw f.error("velocity variables '" + l.uName + "' and '" + l.vName +
+                      "' are on different grids with 1-D axes; only a ROMS-like C grid with 2-D coordinates on "
+                      "its cell centres is read as a staggered grid");
     if (l.dimX < 0 || l.dimY < 0)
         makeCurvilinear(f, opt, l, geoAxes, cartAxes);
     for (std::size_t d = 0; d < l.dims.size(); ++d)
@@ -151,6 +236,7 @@ Layout detectLayout(const NcFile &f, const NetCdfCurrentOptions &opt)
     l.geographic = decideGeographic(f, opt, l, geoAxes, cartAxes);
     l.xName = l.curvilinear ? f.varName(l.lon2D) : f.varName(l.coordVar[std::size_t(l.dimX)]);
     l.yName = l.curvilinear ? f.varName(l.lat2D) : f.varName(l.coordVar[std::size_t(l.dimY)]);
+    findAngle(f, opt, l);
     return l;
 }
 }  // namespace netcdf_detail

@@ -13,8 +13,6 @@ namespace ompl_glider
 {
 namespace netcdf_detail
 {
-namespace
-{
 /// Unpacks raw u/v (internal order t, z, y, x) into g.u / g.v and marks land in g.water (per z, y, x), deciding on
 /// the trip's records only (t.inTrip()). Fill values become velocity 0 (a fill in a margin record only reaches
 /// the field through cubic/Akima time stencils, as a zero).
@@ -69,6 +67,9 @@ void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv,
         }
     }
 }
+
+namespace
+{
 
 /// How the values of a mask variable are read.
 enum class MaskRule
@@ -128,7 +129,7 @@ Mask maskOf(const NcFile &f, int var)
     else if (sn == "land_binary_mask" || name.find("land") != std::string::npos ||
              name.find("lsm") != std::string::npos)
         m.rule = MaskRule::LandIfHalf;
-    else if (name == "kmt")
+    else if (name == "kmt" || name == "kmu")
         m.rule = MaskRule::LevelCount;
     return m;
 }
@@ -218,7 +219,7 @@ std::optional<MaskDims> fitMask(const NcFile &f, const Layout &l, int var, const
 }
 
 const char *const kMaskNames[] = {"mask_rho", "mask", "tmask", "landmask", "land_mask", "lsm",
-                                  "land_sea_mask", "seamask", "sea_mask", "kmt"};
+                                  "land_sea_mask", "seamask", "sea_mask", "kmu", "kmt"};
 
 /// The mask variable: the given one (which must fit), else the first candidate that fits; -1 for none.
 int findMask(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, const HorizontalSubset &h,

@@ -200,6 +200,12 @@ struct Layout
     int lon2D{-1}, lat2D{-1};
     bool geographic{false};     ///< longitude/latitude (projected), else Cartesian
     std::string xName, yName;   ///< the horizontal coordinate variables (1-D or 2-D)
+    /// Arakawa C grid (ROMS): u and v on their own dimensions; dims[dimY], dims[dimX] are then the rho (cell
+    /// centre) dimensions the grid is loaded on, uDims/vDims the variables' own (file order)
+    bool staggered{false};
+    std::vector<int> uDims, vDims;
+    int angleVar{-1};           ///< grid angle (velocities along the grid's i/j directions), -1 if none
+    double angleToRadians{1.0}; ///< its unit
 };
 
 /// Finds u and v and the grid they are on. @throws Error naming the file, the variable and what was expected.
@@ -395,12 +401,27 @@ struct Packing
 /// valid_range / valid_min / valid_max. @throws Error for a zero or non-finite scale or offset.
 Packing packingOf(const NcFile &f, int var);
 
+/// Unpacks raw u/v (internal order t, z, y, x; packings pu/pv, converted to m/s by vel) into g.u / g.v and marks
+/// land in g.water (per z, y, x) as readVelocities() says, deciding on the trip's records only (t.inTrip()).
+void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv, const Packing &pu,
+                   const Packing &pv, const LinearConversion &vel, bool zeroIsLand, const AxisSelection &t,
+                   GriddedData &g, NetCdfCurrents &out);
 /// Reads u and v over the plan into g.u / g.v (unpacked, converted to m/s by vel) and g.water (land where u or v is a fill value at
 /// any of the trip's records (t.inTrip()), or, with opt.zeroVelocityIsLand, where both are exactly 0 at all of
 /// them; counted in
 /// out.fillLandNodes / out.zeroLandNodes). g.nx, g.ny, g.depth and g.time must be set.
 void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
                     const LinearConversion &vel, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
+/// readVelocities() for a staggered (C) grid (Layout::staggered): u read at the u points west and east of each
+/// loaded rho point and averaged, v at the v points south and north of it; faces marked land by mask_u/mask_v or
+/// holding fill values count as zero flow, a rho point with both faces of a component fill values is land.
+/// @throws Error when the loaded rho points are not one contiguous, interior block.
+void readStaggeredVelocities(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+                             const AxisSelection &t, const LinearConversion &vel, const NetCdfCurrentOptions &opt,
+                             GriddedData &g, NetCdfCurrents &out);
+/// Rotates grid-relative velocities (Layout::angleVar) into eastward/northward at every loaded node.
+/// @throws Error when the angle holds fill values or non-finite numbers.
+void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSubset &h, GriddedData &g);
 /// Collapses the depth layers of g into one: the depth average over [top, bottom] (trapezoid rule on the
 /// piecewise-linear profile, constant outside the layers; NetCdfCurrentOptions::depthAverage); a node is land when
 /// it is land at a layer that carries weight. g.depth becomes {top}.

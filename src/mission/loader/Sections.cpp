@@ -154,7 +154,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
         r.fail(n["file"], f + ".file", "cannot open '" + c.file + "'");
     if (n["variables"])
     {
-        r.checkMap(n["variables"], f + ".variables", {"u", "v", "x", "y", "lon", "lat", "depth", "time", "mask"});
+        r.checkMap(n["variables"], f + ".variables", {"u", "v", "x", "y", "lon", "lat", "depth", "time", "mask", "angle"});
         for (auto it = n["variables"].begin(); it != n["variables"].end(); ++it)
             c.variables[it->first.Scalar()] = r.text(it->second, f + ".variables." + it->first.Scalar());
     }

@@ -1,0 +1,560 @@
+// Model grids as ocean models write them (issue 10): a global curvilinear grid whose i-index wraps (a displaced-pole
+// grid's seam in the ocean), with and without a repeated seam column; a ROMS-like Arakawa C grid (u and v on their
+// own points, rotated by `angle`, masks mask_rho/mask_u/mask_v); a POP-like B grid (UVEL/VVEL along the grid in cm/s
+// on ULONG/ULAT, ANGLE, KMU). Every file is written here with NetCDF-C; the loaded field is compared at nodes with
+// the analytic eastward/northward current the file was made from.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "TestNetCdfUtil.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/LocalProjection.h"
+#include "ompl_glider/current/NetCdfCurrents.h"
+
+using namespace ompl_glider;
+using glider_test::NcWriter;
+using glider_test::TempDir;
+
+namespace
+{
+constexpr double kDeg = M_PI / 180.0;
+
+/// The east/north current rotated into the loaded field's plane at (lon, lat).
+Velocity inPlane(const NetCdfCurrents &nc, double lon, double lat, double ue, double vn)
+{
+    double ex, ey, nx, ny;
+    nc.projection->eastDirection(lon, lat, ex, ey);
+    nc.projection->northDirection(lon, lat, nx, ny);
+    return {ue * ex + vn * nx, ue * ey + vn * ny};
+}
+
+// ---- a global curvilinear grid whose i-index wraps ----
+
+/// Eastward/northward current of the wrapping grid (smooth, periodic in longitude).
+void wrapCurrent(double lon, double lat, double &u, double &v)
+{
+    u = 0.2 + 0.05 * std::sin(lon * kDeg) * std::cos(lat * kDeg);
+    v = 0.04 * std::cos(2.0 * lon * kDeg);
+}
+
+/// 120 columns of 3 degrees starting at 40W (the index seam between column 119 at 43W and column 0 at 40W, in the
+/// Atlantic), rows 40S..40N every 2 degrees, sheared (longitude grows by 0.2 degree per row) so that the grid is
+/// truly curvilinear; longitudes stored in -180..180 (a second seam, of the values, near column 73). With
+/// `repeat`, a 121st column repeats column 0 (as some global files write their seam).
+struct WrapGrid
+{
+    static constexpr std::size_t kCols = 120, kRows = 41;
+    bool repeat{false};
+    double lon(std::size_t j, std::size_t i) const
+    {
+        return normalizeLongitude(-40.0 + 3.0 * double(i % kCols) + 0.2 * double(j));
+    }
+    double lat(std::size_t j, std::size_t) const
+    {
+        return -40.0 + 2.0 * double(j);
+    }
+    std::size_t columns() const
+    {
+        return kCols + (repeat ? 1 : 0);
+    }
+    void write(const std::string &path) const
+    {
+        NcWriter w(path);
+        const int dt = w.dim("time", 2), dj = w.dim("nj", kRows), di = w.dim("ni", columns());
+        const int vt = w.var("time", NC_DOUBLE, {dt});
+        const int la = w.var("TLAT", NC_DOUBLE, {dj, di}), lo = w.var("TLONG", NC_DOUBLE, {dj, di});
+        w.text(vt, "units", "days since 2026-03-01");
+        w.text(la, "units", "degrees_north");
+        w.text(lo, "units", "degrees_east");
+        const int u = w.var("uo", NC_FLOAT, {dt, dj, di}), v = w.var("vo", NC_FLOAT, {dt, dj, di});
+        for (int var : {u, v})
+        {
+            w.text(var, "units", "m/s");
+            w.text(var, "coordinates", "TLONG TLAT");
+        }
+        w.text(u, "standard_name", "eastward_sea_water_velocity");
+        w.text(v, "standard_name", "northward_sea_water_velocity");
+        w.enddef();
+        w.put(vt, {0.0, 30.0});
+        std::vector<double> pla, plo, pu, pv;
+        for (std::size_t j = 0; j < kRows; ++j)
+            for (std::size_t i = 0; i < columns(); ++i)
+            {
+                pla.push_back(lat(j, i));
+                plo.push_back(lon(j, i));
+            }
+        for (int rec = 0; rec < 2; ++rec)
+            for (std::size_t j = 0; j < kRows; ++j)
+                for (std::size_t i = 0; i < columns(); ++i)
+                {
+                    double a, b;
+                    wrapCurrent(lon(j, i), lat(j, i), a, b);
+                    pu.push_back(a);
+                    pv.push_back(b);
+                }
+        w.put(la, pla);
+        w.put(lo, plo);
+        w.put(u, pu);
+        w.put(v, pv);
+    }
+};
+
+NetCdfCurrentOptions region(double lonMin, double lonMax, double latMin, double latMax)
+{
+    NetCdfCurrentOptions o;
+    o.lonMin = lonMin;
+    o.lonMax = lonMax;
+    o.latMin = latMin;
+    o.latMax = latMax;
+    return o;
+}
+
+void expectWrapNodes(const NetCdfCurrents &nc, const WrapGrid &g, std::size_t j, const std::vector<std::size_t> &cols)
+{
+    for (std::size_t i : cols)
+    {
+        const double lon = g.lon(j, i), lat = g.lat(j, i);
+        double ue, vn;
+        wrapCurrent(lon, lat, ue, vn);
+        const Velocity e = inPlane(nc, lon, lat, double(float(ue)), double(float(vn)));
+        const Point2 p = nc.toLocal({lon, lat});
+        const Velocity c = nc.field->velocity(p.x, p.y, 0.0, 0.0);
+        EXPECT_NEAR(c.u, e.u, 1e-6) << "node (" << j << ", " << i << ") at " << lon << ", " << lat;
+        EXPECT_NEAR(c.v, e.v, 1e-6) << "node (" << j << ", " << i << ") at " << lon << ", " << lat;
+        EXPECT_TRUE(nc.field->inWater(p.x, p.y, 0.0));
+    }
+}
+
+// ---- a ROMS-like C grid ----
+
+/// A rotated rectangular grid of cell centres (rho points) 5 km apart, at angle theta (radians, from east to the
+/// grid's xi direction) about (-70, 40): positions in a local plane, then lon/lat through a LocalProjection.
+struct RomsGrid
+{
+    static constexpr std::size_t kEta = 14, kXi = 18;
+    double theta{30.0 * kDeg};
+    double d{5000.0};
+    LocalProjection proj{-70.0, 40.0};
+    /// Local plane position of the point at fractional indices (eta, xi) of the rho grid.
+    Point2 at(double eta, double xi) const
+    {
+        const double a = xi - 0.5 * kXi, b = eta - 0.5 * kEta;
+        return {d * (a * std::cos(theta) - b * std::sin(theta)), d * (a * std::sin(theta) + b * std::cos(theta))};
+    }
+    LonLat geo(double eta, double xi) const
+    {
+        const Point2 p = at(eta, xi);
+        return proj.inverse(p.x, p.y);
+    }
+    /// The true current, eastward/northward, linear in the plane position (so the mean of two faces is the value
+    /// at the centre between them).
+    static void current(Point2 p, double &ue, double &vn)
+    {
+        ue = 0.25 + 4e-6 * p.x - 2e-6 * p.y;
+        vn = -0.1 + 3e-6 * p.y + 1e-6 * p.x;
+    }
+    /// Land: a block of rho points.
+    static bool land(std::size_t eta, std::size_t xi)
+    {
+        return eta >= 9 && eta <= 11 && xi >= 11 && xi <= 14;
+    }
+    /// Writes the file; grid components u along xi, v along eta (u = e cos + n sin, v = -e sin + n cos).
+    void write(const std::string &path, bool masks = true) const
+    {
+        NcWriter w(path, NC_CLOBBER);  // classic format, as ROMS writes
+        const int dt = w.dim("ocean_time", 2), er = w.dim("eta_rho", kEta), xr = w.dim("xi_rho", kXi);
+        const int eu = w.dim("eta_u", kEta), xu = w.dim("xi_u", kXi - 1);
+        const int ev = w.dim("eta_v", kEta - 1), xv = w.dim("xi_v", kXi);
+        const int vt = w.var("ocean_time", NC_DOUBLE, {dt});
+        w.text(vt, "units", "seconds since 2026-04-01 00:00:00");
+        auto coord = [&](const char *name, int a, int b, const char *units) {
+            const int v = w.var(name, NC_DOUBLE, {a, b});
+            w.text(v, "units", units);
+            return v;
+        };
+        const int lonr = coord("lon_rho", er, xr, "degree_east"), latr = coord("lat_rho", er, xr, "degree_north");
+        const int lonu = coord("lon_u", eu, xu, "degree_east"), latu = coord("lat_u", eu, xu, "degree_north");
+        const int lonv = coord("lon_v", ev, xv, "degree_east"), latv = coord("lat_v", ev, xv, "degree_north");
+        const int ang = w.var("angle", NC_DOUBLE, {er, xr});
+        w.text(ang, "units", "radians");
+        w.text(ang, "long_name", "angle between XI-axis and EAST");
+        int mr = -1, mu = -1, mv = -1;
+        if (masks)
+        {
+            mr = w.var("mask_rho", NC_DOUBLE, {er, xr});
+            mu = w.var("mask_u", NC_DOUBLE, {eu, xu});
+            mv = w.var("mask_v", NC_DOUBLE, {ev, xv});
+            for (int m : {mr, mu, mv})
+                w.text(m, "flag_meanings", "land water"), w.num(m, "flag_values", NC_DOUBLE, {0.0, 1.0});
+        }
+        const int u = w.var("u", NC_FLOAT, {dt, eu, xu}), v = w.var("v", NC_FLOAT, {dt, ev, xv});
+        w.text(u, "units", "meter second-1");
+        w.text(v, "units", "meter second-1");
+        w.text(u, "coordinates", "lon_u lat_u ocean_time");
+        w.text(v, "coordinates", "lon_v lat_v ocean_time");
+        w.fill(u, NC_FLOAT, 1e37);
+        w.fill(v, NC_FLOAT, 1e37);
+        w.enddef();
+        w.put(vt, {0.0, 86400.0});
+        std::vector<double> a, b;
+        auto grid = [&](std::size_t ne, std::size_t nxi, double de, double dx, int var1, int var2) {
+            a.clear();
+            b.clear();
+            for (std::size_t j = 0; j < ne; ++j)
+                for (std::size_t i = 0; i < nxi; ++i)
+                {
+                    const LonLat g = geo(double(j) + de, double(i) + dx);
+                    a.push_back(g.lon);
+                    b.push_back(g.lat);
+                }
+            w.put(var1, a);
+            w.put(var2, b);
+        };
+        grid(kEta, kXi, 0, 0, lonr, latr);
+        grid(kEta, kXi - 1, 0, 0.5, lonu, latu);
+        grid(kEta - 1, kXi, 0.5, 0, lonv, latv);
+        w.put(ang, std::vector<double>(kEta * kXi, theta));
+        auto landU = [](std::size_t j, std::size_t i) { return land(j, i) || land(j, i + 1); };
+        auto landV = [](std::size_t j, std::size_t i) { return land(j, i) || land(j + 1, i); };
+        if (masks)
+        {
+            std::vector<double> m;
+            for (std::size_t j = 0; j < kEta; ++j)
+                for (std::size_t i = 0; i < kXi; ++i)
+                    m.push_back(land(j, i) ? 0.0 : 1.0);
+            w.put(mr, m);
+            m.clear();
+            for (std::size_t j = 0; j < kEta; ++j)
+                for (std::size_t i = 0; i + 1 < kXi; ++i)
+                    m.push_back(landU(j, i) ? 0.0 : 1.0);
+            w.put(mu, m);
+            m.clear();
+            for (std::size_t j = 0; j + 1 < kEta; ++j)
+                for (std::size_t i = 0; i < kXi; ++i)
+                    m.push_back(landV(j, i) ? 0.0 : 1.0);
+            w.put(mv, m);
+        }
+        std::vector<double> pu, pv;
+        for (int rec = 0; rec < 2; ++rec)
+        {
+            for (std::size_t j = 0; j < kEta; ++j)
+                for (std::size_t i = 0; i + 1 < kXi; ++i)
+                {
+                    double ue, vn;
+                    current(at(double(j), double(i) + 0.5), ue, vn);
+                    pu.push_back(landU(j, i) ? 1e37 : ue * std::cos(theta) + vn * std::sin(theta));
+                }
+            for (std::size_t j = 0; j + 1 < kEta; ++j)
+                for (std::size_t i = 0; i < kXi; ++i)
+                {
+                    double ue, vn;
+                    current(at(double(j) + 0.5, double(i)), ue, vn);
+                    pv.push_back(landV(j, i) ? 1e37 : -ue * std::sin(theta) + vn * std::cos(theta));
+                }
+        }
+        w.put(u, pu);
+        w.put(v, pv);
+    }
+};
+}  // namespace
+
+TEST(NetCdfModelGrids, CurvilinearGridWhoseIndexWrapsIsSubsetAcrossItsSeam)
+{
+    TempDir tmp;
+    for (bool repeat : {false, true})
+    {
+        WrapGrid g;
+        g.repeat = repeat;
+        const std::string path = tmp.file(repeat ? "repeat.nc" : "wrap.nc");
+        g.write(path);
+        // a region across the index seam (43W | 40W): the columns on both sides of it, not the whole band
+        const NetCdfCurrents nc = loadNetCdfCurrents(path, region(-52, -28, 10, 30));
+        ASSERT_TRUE(nc.field->curvilinear());
+        EXPECT_LE(nc.loadedShape[3], 16u) << "columns loaded (repeat " << repeat << ")";
+        EXPECT_GE(nc.loadedShape[3], 9u);
+        EXPECT_LE(nc.loadedShape[2], 16u);
+        EXPECT_LT(nc.lonMin, -52.0);
+        EXPECT_GT(nc.lonMax, -28.0);
+        expectWrapNodes(nc, g, 30, {116, 117, 118, 119, 0, 1, 2, 3});
+        expectWrapNodes(nc, g, 35, {117, 119, 0, 2});
+        // between nodes across the seam: the cell between columns 119 and 0 is water and interpolates the two
+        const LonLat mid{0.5 * (g.lon(30, 119) + g.lon(30, 0)), 0.5 * (g.lat(30, 119) + g.lat(30, 0))};
+        const Point2 p = nc.toLocal(mid);
+        EXPECT_TRUE(nc.field->inWater(p.x, p.y, 0.0));
+        double ue, vn;
+        wrapCurrent(mid.lon, mid.lat, ue, vn);
+        const Velocity e = inPlane(nc, mid.lon, mid.lat, ue, vn), c = nc.field->velocity(p.x, p.y, 0.0, 0.0);
+        EXPECT_NEAR(c.u, e.u, 2e-4);
+        EXPECT_NEAR(c.v, e.v, 2e-4);
+        // a region away from the seam, and one across the value seam (180) near column 73
+        const NetCdfCurrents east = loadNetCdfCurrents(path, region(10, 30, -10, 10));
+        EXPECT_LE(east.loadedShape[3], 14u);
+        expectWrapNodes(east, g, 20, {17, 18, 19, 20});
+        const NetCdfCurrents pacific = loadNetCdfCurrents(path, region(170, -170, 0, 20));
+        EXPECT_LE(pacific.loadedShape[3], 14u);
+        expectWrapNodes(pacific, g, 25, {70, 71, 72, 73});
+    }
+}
+
+TEST(NetCdfModelGrids, RomsCGridIsReadAtItsOwnPointsRotatedAndMasked)
+{
+    TempDir tmp;
+    const RomsGrid grid;
+    const std::string path = tmp.file("roms.nc");
+    grid.write(path);
+    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    ASSERT_TRUE(nc.field->curvilinear());
+    EXPECT_EQ(nc.maskVariable, "mask_rho");
+    // the interior rho points: 12 x 16
+    EXPECT_EQ(nc.loadedShape[2], RomsGrid::kEta - 2);
+    EXPECT_EQ(nc.loadedShape[3], RomsGrid::kXi - 2);
+    std::size_t checked = 0;
+    for (std::size_t j = 1; j + 1 < RomsGrid::kEta; ++j)
+        for (std::size_t i = 1; i + 1 < RomsGrid::kXi; ++i)
+        {
+            const LonLat g = grid.geo(double(j), double(i));
+            const Point2 p = nc.toLocal(g);
+            // land rho points are dry (a point is water where the cell holding it has no land corner)
+            bool nearLand = false;
+            for (std::size_t a = j - 1; a <= j + 1; ++a)
+                for (std::size_t b = i - 1; b <= i + 1; ++b)
+                    nearLand = nearLand || RomsGrid::land(a, b);
+            if (RomsGrid::land(j, i))
+            {
+                EXPECT_FALSE(nc.field->inWater(p.x, p.y, 0.0)) << j << " " << i;
+                continue;
+            }
+            if (nearLand)
+                continue;
+            EXPECT_TRUE(nc.field->inWater(p.x, p.y, 0.0)) << j << " " << i;
+            double ue, vn;
+            RomsGrid::current(grid.at(double(j), double(i)), ue, vn);
+            const Velocity e = inPlane(nc, g.lon, g.lat, ue, vn), c = nc.field->velocity(p.x, p.y, 0.0, 0.0);
+            EXPECT_NEAR(c.u, e.u, 2e-6) << j << " " << i;
+            EXPECT_NEAR(c.v, e.v, 2e-6) << j << " " << i;
+            ++checked;
+        }
+    EXPECT_GT(checked, 120u);
+    // the coast face counts as zero flow: at the rho point west of the land block, u is the mean of its west face
+    // and 0
+    {
+        const std::size_t j = 10, i = 10;
+        const LonLat g = grid.geo(double(j), double(i));
+        const Point2 p = nc.toLocal(g);
+        double ue, vn;
+        RomsGrid::current(grid.at(double(j), double(i) - 0.5), ue, vn);
+        const double west = ue * std::cos(grid.theta) + vn * std::sin(grid.theta);
+        RomsGrid::current(grid.at(double(j) - 0.5, double(i)), ue, vn);
+        const double south = -ue * std::sin(grid.theta) + vn * std::cos(grid.theta);
+        RomsGrid::current(grid.at(double(j) + 0.5, double(i)), ue, vn);
+        const double north = -ue * std::sin(grid.theta) + vn * std::cos(grid.theta);
+        const double ug = 0.5 * west, vg = 0.5 * (south + north);
+        const Velocity e = inPlane(nc, g.lon, g.lat, ug * std::cos(grid.theta) - vg * std::sin(grid.theta),
+                                   ug * std::sin(grid.theta) + vg * std::cos(grid.theta));
+        const Velocity c = nc.field->velocity(p.x, p.y, 0.0, 0.0);
+        EXPECT_NEAR(c.u, e.u, 2e-6);
+        EXPECT_NEAR(c.v, e.v, 2e-6);
+    }
+    // without the angle the components stay along the grid: 30 degrees off
+    NetCdfCurrentOptions none;
+    none.angleName = "none";
+    const NetCdfCurrents raw = loadNetCdfCurrents(path, none);
+    const LonLat g = grid.geo(4, 4);
+    double ue, vn;
+    RomsGrid::current(grid.at(4, 4), ue, vn);
+    const Point2 p = raw.toLocal(g);
+    const Velocity e = inPlane(raw, g.lon, g.lat, ue, vn), c = raw.field->velocity(p.x, p.y, 0.0, 0.0);
+    EXPECT_GT(std::hypot(c.u - e.u, c.v - e.v), 0.1);
+    // a region: fewer rho points, the same values
+    const LonLat lo = grid.geo(3, 3), hi = grid.geo(7, 8);
+    const NetCdfCurrents sub = loadNetCdfCurrents(
+        path, region(std::min(lo.lon, hi.lon), std::max(lo.lon, hi.lon), std::min(lo.lat, hi.lat),
+                     std::max(lo.lat, hi.lat)));
+    EXPECT_LT(sub.loadedValues, nc.loadedValues);
+    const LonLat m = grid.geo(5, 5);
+    RomsGrid::current(grid.at(5, 5), ue, vn);
+    const Point2 q = sub.toLocal(m);
+    const Velocity es = inPlane(sub, m.lon, m.lat, ue, vn), cs = sub.field->velocity(q.x, q.y, 0.0, 0.0);
+    EXPECT_NEAR(cs.u, es.u, 2e-6);
+    EXPECT_NEAR(cs.v, es.v, 2e-6);
+}
+
+TEST(NetCdfModelGrids, RomsCGridWithoutMasksTakesLandFromFillValues)
+{
+    TempDir tmp;
+    const RomsGrid grid;
+    const std::string path = tmp.file("roms_nomask.nc");
+    grid.write(path, false);
+    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    EXPECT_EQ(nc.maskVariable, "");
+    // inside the land block (both faces of u fill values): land; two points off it: water with the true current
+    for (auto [j, i] : {std::pair<std::size_t, std::size_t>{10, 12}, {10, 13}})
+    {
+        const Point2 p = nc.toLocal(grid.geo(double(j), double(i)));
+        EXPECT_FALSE(nc.field->inWater(p.x, p.y, 0.0)) << j << " " << i;
+    }
+    const LonLat g = grid.geo(4, 6);
+    double ue, vn;
+    RomsGrid::current(grid.at(4, 6), ue, vn);
+    const Point2 p = nc.toLocal(g);
+    EXPECT_TRUE(nc.field->inWater(p.x, p.y, 0.0));
+    const Velocity e = inPlane(nc, g.lon, g.lat, ue, vn), c = nc.field->velocity(p.x, p.y, 0.0, 0.0);
+    EXPECT_NEAR(c.u, e.u, 2e-6);
+    EXPECT_NEAR(c.v, e.v, 2e-6);
+}
+
+TEST(NetCdfModelGrids, PopBGridAlongTheGridInCmPerSecondWithAngleAndKmu)
+{
+    TempDir tmp;
+    const std::string path = tmp.file("pop.nc");
+    // a rotated grid as in RomsGrid (angle 30 degrees given in degrees here), u and v together on the U points,
+    // two depth levels (z_t in cm), KMU = 1 (one ocean level) on a block, 0 (land) on another
+    const RomsGrid grid;
+    const std::size_t nj = RomsGrid::kEta, ni = RomsGrid::kXi;
+    auto kmu = [](std::size_t j, std::size_t i) { return RomsGrid::land(j, i) ? 0.0 : (i <= 4 && j <= 4 ? 1.0 : 2.0); };
+    {
+        NcWriter w(path, NC_CLOBBER);
+        const int dt = w.dim("time", 1), dz = w.dim("z_t", 2), dj = w.dim("nlat", nj), di = w.dim("nlon", ni);
+        const int vt = w.var("time", NC_DOUBLE, {dt}), vz = w.var("z_t", NC_FLOAT, {dz});
+        w.text(vt, "units", "days since 0001-01-01 00:00:00");
+        w.text(vt, "calendar", "noleap");
+        w.text(vz, "units", "centimeters");
+        w.text(vz, "positive", "down");
+        const int ul = w.var("ULONG", NC_DOUBLE, {dj, di}), ua = w.var("ULAT", NC_DOUBLE, {dj, di});
+        const int tl = w.var("TLONG", NC_DOUBLE, {dj, di}), ta = w.var("TLAT", NC_DOUBLE, {dj, di});
+        for (int var : {ul, tl})
+            w.text(var, "units", "degrees_east");
+        for (int var : {ua, ta})
+            w.text(var, "units", "degrees_north");
+        const int an = w.var("ANGLE", NC_DOUBLE, {dj, di});
+        w.text(an, "units", "degrees");
+        const int km = w.var("KMU", NC_INT, {dj, di});
+        const int u = w.var("UVEL", NC_FLOAT, {dt, dz, dj, di}), v = w.var("VVEL", NC_FLOAT, {dt, dz, dj, di});
+        for (int var : {u, v})
+        {
+            w.text(var, "units", "centimeter/s");
+            w.text(var, "coordinates", "ULONG ULAT z_t time");
+        }
+        w.enddef();
+        w.put(vt, {730000.0});
+        w.put(vz, {500.0, 5000.0});  // 5 m and 50 m
+        std::vector<double> lon, lat, tlon, tlat, m, pu, pv;
+        for (std::size_t j = 0; j < nj; ++j)
+            for (std::size_t i = 0; i < ni; ++i)
+            {
+                const LonLat g = grid.geo(double(j), double(i)), h = grid.geo(double(j) - 0.5, double(i) - 0.5);
+                lon.push_back(g.lon);
+                lat.push_back(g.lat);
+                tlon.push_back(h.lon);
+                tlat.push_back(h.lat);
+                m.push_back(kmu(j, i));
+            }
+        for (int k = 0; k < 2; ++k)
+            for (std::size_t j = 0; j < nj; ++j)
+                for (std::size_t i = 0; i < ni; ++i)
+                {
+                    double ue, vn;
+                    RomsGrid::current(grid.at(double(j), double(i)), ue, vn);
+                    const double s = k == 0 ? 100.0 : 50.0;  // cm/s; half the speed at 50 m
+                    pu.push_back(kmu(j, i) > k ? s * (ue * std::cos(grid.theta) + vn * std::sin(grid.theta)) : 0.0);
+                    pv.push_back(kmu(j, i) > k ? s * (-ue * std::sin(grid.theta) + vn * std::cos(grid.theta)) : 0.0);
+                }
+        w.put(ul, lon);
+        w.put(ua, lat);
+        w.put(tl, tlon);
+        w.put(ta, tlat);
+        w.put(an, std::vector<double>(nj * ni, 30.0));
+        w.put(km, m);
+        w.put(u, pu);
+        w.put(v, pv);
+    }
+    NetCdfCurrentOptions o;
+    o.uName = "UVEL";
+    o.vName = "VVEL";
+    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    EXPECT_EQ(nc.maskVariable, "KMU");
+    EXPECT_EQ(nc.loadedShape[3], ni);  // the U points themselves
+    for (auto [j, i] : {std::pair<std::size_t, std::size_t>{2, 2}, {6, 7}, {12, 16}})
+        for (double depth : {5.0, 50.0})
+        {
+            const LonLat g = grid.geo(double(j), double(i));
+            const Point2 p = nc.toLocal(g);
+            double ue, vn;
+            RomsGrid::current(grid.at(double(j), double(i)), ue, vn);
+            const double s = depth == 5.0 ? 1.0 : 0.5;
+            const bool water = kmu(j, i) > (depth == 5.0 ? 0 : 1);
+            EXPECT_EQ(nc.field->inWater(p.x, p.y, depth), water) << j << " " << i << " " << depth;
+            if (!water)
+                continue;
+            const Velocity e = inPlane(nc, g.lon, g.lat, s * ue, s * vn), c = nc.field->velocity(p.x, p.y, depth, 0.0);
+            EXPECT_NEAR(c.u, e.u, 2e-6) << j << " " << i << " " << depth;
+            EXPECT_NEAR(c.v, e.v, 2e-6) << j << " " << i << " " << depth;
+        }
+    const Point2 p = nc.toLocal(grid.geo(10, 12));
+    EXPECT_FALSE(nc.field->inWater(p.x, p.y, 5.0));
+}
+
+TEST(NetCdfModelGrids, StaggeredAndAngleErrorsNameTheVariables)
+{
+    TempDir tmp;
+    const RomsGrid grid;
+    const std::string path = tmp.file("roms.nc");
+    grid.write(path);
+    NetCdfCurrentOptions o;
+    o.angleName = "grid_angle";
+    try
+    {
+        loadNetCdfCurrents(path, o);
+        FAIL() << "a missing angle variable must be refused";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("no grid angle variable 'grid_angle'"), std::string::npos) << e.what();
+    }
+    o.angleName = "mask_u";  // not on the grid of the rho points
+    try
+    {
+        loadNetCdfCurrents(path, o);
+        FAIL() << "an angle off the grid must be refused";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("is not on the grid"), std::string::npos) << e.what();
+    }
+    // u and v on different grids that are not a ROMS C grid
+    const std::string odd = tmp.file("odd.nc");
+    {
+        NcWriter w(odd);
+        const int a = w.dim("y", 4), b = w.dim("x", 5), c = w.dim("y2", 4), d = w.dim("x2", 6);
+        const int la = w.var("lat", NC_DOUBLE, {a, b}), lo = w.var("lon", NC_DOUBLE, {a, b});
+        w.text(la, "units", "degrees_north");
+        w.text(lo, "units", "degrees_east");
+        const int u = w.var("u", NC_FLOAT, {a, b}), v = w.var("v", NC_FLOAT, {c, d});
+        w.text(u, "units", "m/s");
+        w.text(v, "units", "m/s");
+        w.enddef();
+        std::vector<double> lat, lon;
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 5; ++i)
+                lat.push_back(40 + 0.1 * j), lon.push_back(-70 + 0.1 * i);
+        w.put(la, lat);
+        w.put(lo, lon);
+        w.put(u, std::vector<double>(20, 0.1));
+        w.put(v, std::vector<double>(24, 0.1));
+    }
+    try
+    {
+        loadNetCdfCurrents(odd);
+        FAIL() << "velocities on unrelated grids must be refused";
+    }
+    catch (const Error &e)
+    {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("'u' (y = 4, x = 5) and 'v' (y2 = 4, x2 = 6) are on different grids"), std::string::npos)
+            << m;
+    }
+}
