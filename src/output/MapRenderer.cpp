@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <functional>
 #include <set>
+#include <tuple>
 
 #include <cairo-svg.h>
 #include <cairo.h>
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/current/GriddedCurrentField.h"
 
 namespace ompl_glider
 {
@@ -18,6 +20,10 @@ namespace
 {
 constexpr double kLeft = 72, kRight = 270, kTop = 52, kBottom = 58;
 constexpr double kPi = 3.14159265358979323846;
+/// Speed-shading values of the points without a current: land of the field (closed cells of a gridded forecast,
+/// or wherever an analytic field has no water) and no data (outside a gridded forecast's grid).
+constexpr double kLand = -1.0, kNoData = -2.0;
+const Rgba kLandColour{0.80, 0.76, 0.68, 1.0}, kNoDataColour{0.90, 0.90, 0.92, 1.0};
 
 double niceStep(double raw)
 {
@@ -391,11 +397,14 @@ void MapRenderer::draw(void *context) const
     cairo_rectangle(cr, kLeft, kTop, plotW, plotH);
     cairo_clip(cr);
     double vmax = 0.0;
+    bool landShown = false, noDataShown = false;
     if (field_)
     {
         const int cell = 6;
         const int nx = static_cast<int>(std::ceil(plotW / cell)), ny = static_cast<int>(std::ceil(plotH / cell));
         std::vector<double> sp(static_cast<std::size_t>(nx) * ny, 0.0);
+        // a gridded forecast tells land (closed nodes of its grid) from no data (outside its grid)
+        const auto *grid = dynamic_cast<const GriddedCurrentField *>(field_.get());
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i)
             {
@@ -409,7 +418,11 @@ void MapRenderer::draw(void *context) const
                         s = 0.0;
                 }
                 else
-                    s = -1.0;  // land
+                {
+                    double fi, fj;
+                    s = grid && !grid->locate(x, y, fi, fj) ? kNoData : kLand;
+                    (s == kLand ? landShown : noDataShown) = true;
+                }
                 sp[static_cast<std::size_t>(j) * nx + i] = s;
                 vmax = std::max(vmax, s);
             }
@@ -418,7 +431,9 @@ void MapRenderer::draw(void *context) const
                 for (int i = 0; i < nx; ++i)
                 {
                     const double s = sp[static_cast<std::size_t>(j) * nx + i];
-                    setColour(cr, s < 0 ? Rgba{0.80, 0.76, 0.68, 1.0} : speedColour(vmax > 0 ? s / vmax : 0.0));
+                    setColour(cr, s == kLand     ? kLandColour
+                                  : s == kNoData ? kNoDataColour
+                                                 : speedColour(vmax > 0 ? s / vmax : 0.0));
                     cairo_rectangle(cr, kLeft + i * cell, kTop + j * cell, cell + 0.5, cell + 0.5);
                     cairo_fill(cr);
                 }
@@ -695,6 +710,22 @@ void MapRenderer::draw(void *context) const
         cairo_set_source_rgb(cr, 0.55, 0.0, 0.55);
         cairo_fill(cr);
         plainText(cr, lx + 38, ly + 4, "goal " + position(gx_, gy_), 12);
+        ly += 22;
+    }
+    // the field's land and no-data areas (when the map shades them)
+    for (const auto &[shown, colour, label] :
+         {std::tuple<bool, Rgba, const char *>{landShown, kLandColour, "land (closed grid cells)"},
+          {noDataShown, kNoDataColour, "no data (outside the forecast)"}})
+    {
+        if (!shown || !options_.speedShading)
+            continue;
+        cairo_rectangle(cr, lx + 5, ly - 7, 20, 14);
+        setColour(cr, colour);
+        cairo_fill_preserve(cr);
+        cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
+        cairo_set_line_width(cr, 0.8);
+        cairo_stroke(cr);
+        plainText(cr, lx + 38, ly + 4, label, 12);
         ly += 22;
     }
     std::set<std::string> seen;

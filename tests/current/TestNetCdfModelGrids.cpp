@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ModelGrids.h"
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/LocalProjection.h"
@@ -18,10 +19,13 @@
 using namespace ompl_glider;
 using glider_test::NcWriter;
 using glider_test::TempDir;
+using glider_test::WrapGrid;
+using glider_test::RomsGrid;
+using glider_test::wrapCurrent;
+using glider_test::kDeg;
 
 namespace
 {
-constexpr double kDeg = M_PI / 180.0;
 
 /// The east/north current rotated into the loaded field's plane at (lon, lat).
 Velocity inPlane(const NetCdfCurrents &nc, double lon, double lat, double ue, double vn)
@@ -31,77 +35,6 @@ Velocity inPlane(const NetCdfCurrents &nc, double lon, double lat, double ue, do
     nc.projection->northDirection(lon, lat, nx, ny);
     return {ue * ex + vn * nx, ue * ey + vn * ny};
 }
-
-// ---- a global curvilinear grid whose i-index wraps ----
-
-/// Eastward/northward current of the wrapping grid (smooth, periodic in longitude).
-void wrapCurrent(double lon, double lat, double &u, double &v)
-{
-    u = 0.2 + 0.05 * std::sin(lon * kDeg) * std::cos(lat * kDeg);
-    v = 0.04 * std::cos(2.0 * lon * kDeg);
-}
-
-/// 120 columns of 3 degrees starting at 40W (the index seam between column 119 at 43W and column 0 at 40W, in the
-/// Atlantic), rows 40S..40N every 2 degrees, sheared (longitude grows by 0.2 degree per row) so that the grid is
-/// truly curvilinear; longitudes stored in -180..180 (a second seam, of the values, near column 73). With
-/// `repeat`, a 121st column repeats column 0 (as some global files write their seam).
-struct WrapGrid
-{
-    static constexpr std::size_t kCols = 120, kRows = 41;
-    bool repeat{false};
-    double lon(std::size_t j, std::size_t i) const
-    {
-        return normalizeLongitude(-40.0 + 3.0 * double(i % kCols) + 0.2 * double(j));
-    }
-    double lat(std::size_t j, std::size_t) const
-    {
-        return -40.0 + 2.0 * double(j);
-    }
-    std::size_t columns() const
-    {
-        return kCols + (repeat ? 1 : 0);
-    }
-    void write(const std::string &path) const
-    {
-        NcWriter w(path);
-        const int dt = w.dim("time", 2), dj = w.dim("nj", kRows), di = w.dim("ni", columns());
-        const int vt = w.var("time", NC_DOUBLE, {dt});
-        const int la = w.var("TLAT", NC_DOUBLE, {dj, di}), lo = w.var("TLONG", NC_DOUBLE, {dj, di});
-        w.text(vt, "units", "days since 2026-03-01");
-        w.text(la, "units", "degrees_north");
-        w.text(lo, "units", "degrees_east");
-        const int u = w.var("uo", NC_FLOAT, {dt, dj, di}), v = w.var("vo", NC_FLOAT, {dt, dj, di});
-        for (int var : {u, v})
-        {
-            w.text(var, "units", "m/s");
-            w.text(var, "coordinates", "TLONG TLAT");
-        }
-        w.text(u, "standard_name", "eastward_sea_water_velocity");
-        w.text(v, "standard_name", "northward_sea_water_velocity");
-        w.enddef();
-        w.put(vt, {0.0, 30.0});
-        std::vector<double> pla, plo, pu, pv;
-        for (std::size_t j = 0; j < kRows; ++j)
-            for (std::size_t i = 0; i < columns(); ++i)
-            {
-                pla.push_back(lat(j, i));
-                plo.push_back(lon(j, i));
-            }
-        for (int rec = 0; rec < 2; ++rec)
-            for (std::size_t j = 0; j < kRows; ++j)
-                for (std::size_t i = 0; i < columns(); ++i)
-                {
-                    double a, b;
-                    wrapCurrent(lon(j, i), lat(j, i), a, b);
-                    pu.push_back(a);
-                    pv.push_back(b);
-                }
-        w.put(la, pla);
-        w.put(lo, plo);
-        w.put(u, pu);
-        w.put(v, pv);
-    }
-};
 
 NetCdfCurrentOptions region(double lonMin, double lonMax, double latMin, double latMax)
 {
@@ -129,137 +62,6 @@ void expectWrapNodes(const NetCdfCurrents &nc, const WrapGrid &g, std::size_t j,
     }
 }
 
-// ---- a ROMS-like C grid ----
-
-/// A rotated rectangular grid of cell centres (rho points) 5 km apart, at angle theta (radians, from east to the
-/// grid's xi direction) about (-70, 40): positions in a local plane, then lon/lat through a LocalProjection.
-struct RomsGrid
-{
-    static constexpr std::size_t kEta = 14, kXi = 18;
-    double theta{30.0 * kDeg};
-    double d{5000.0};
-    LocalProjection proj{-70.0, 40.0};
-    /// Local plane position of the point at fractional indices (eta, xi) of the rho grid.
-    Point2 at(double eta, double xi) const
-    {
-        const double a = xi - 0.5 * kXi, b = eta - 0.5 * kEta;
-        return {d * (a * std::cos(theta) - b * std::sin(theta)), d * (a * std::sin(theta) + b * std::cos(theta))};
-    }
-    LonLat geo(double eta, double xi) const
-    {
-        const Point2 p = at(eta, xi);
-        return proj.inverse(p.x, p.y);
-    }
-    /// The true current, eastward/northward, linear in the plane position (so the mean of two faces is the value
-    /// at the centre between them).
-    static void current(Point2 p, double &ue, double &vn)
-    {
-        ue = 0.25 + 4e-6 * p.x - 2e-6 * p.y;
-        vn = -0.1 + 3e-6 * p.y + 1e-6 * p.x;
-    }
-    /// Land: a block of rho points.
-    static bool land(std::size_t eta, std::size_t xi)
-    {
-        return eta >= 9 && eta <= 11 && xi >= 11 && xi <= 14;
-    }
-    /// Writes the file; grid components u along xi, v along eta (u = e cos + n sin, v = -e sin + n cos).
-    void write(const std::string &path, bool masks = true) const
-    {
-        NcWriter w(path, NC_CLOBBER);  // classic format, as ROMS writes
-        const int dt = w.dim("ocean_time", 2), er = w.dim("eta_rho", kEta), xr = w.dim("xi_rho", kXi);
-        const int eu = w.dim("eta_u", kEta), xu = w.dim("xi_u", kXi - 1);
-        const int ev = w.dim("eta_v", kEta - 1), xv = w.dim("xi_v", kXi);
-        const int vt = w.var("ocean_time", NC_DOUBLE, {dt});
-        w.text(vt, "units", "seconds since 2026-04-01 00:00:00");
-        auto coord = [&](const char *name, int a, int b, const char *units) {
-            const int v = w.var(name, NC_DOUBLE, {a, b});
-            w.text(v, "units", units);
-            return v;
-        };
-        const int lonr = coord("lon_rho", er, xr, "degree_east"), latr = coord("lat_rho", er, xr, "degree_north");
-        const int lonu = coord("lon_u", eu, xu, "degree_east"), latu = coord("lat_u", eu, xu, "degree_north");
-        const int lonv = coord("lon_v", ev, xv, "degree_east"), latv = coord("lat_v", ev, xv, "degree_north");
-        const int ang = w.var("angle", NC_DOUBLE, {er, xr});
-        w.text(ang, "units", "radians");
-        w.text(ang, "long_name", "angle between XI-axis and EAST");
-        int mr = -1, mu = -1, mv = -1;
-        if (masks)
-        {
-            mr = w.var("mask_rho", NC_DOUBLE, {er, xr});
-            mu = w.var("mask_u", NC_DOUBLE, {eu, xu});
-            mv = w.var("mask_v", NC_DOUBLE, {ev, xv});
-            for (int m : {mr, mu, mv})
-                w.text(m, "flag_meanings", "land water"), w.num(m, "flag_values", NC_DOUBLE, {0.0, 1.0});
-        }
-        const int u = w.var("u", NC_FLOAT, {dt, eu, xu}), v = w.var("v", NC_FLOAT, {dt, ev, xv});
-        w.text(u, "units", "meter second-1");
-        w.text(v, "units", "meter second-1");
-        w.text(u, "coordinates", "lon_u lat_u ocean_time");
-        w.text(v, "coordinates", "lon_v lat_v ocean_time");
-        w.fill(u, NC_FLOAT, 1e37);
-        w.fill(v, NC_FLOAT, 1e37);
-        w.enddef();
-        w.put(vt, {0.0, 86400.0});
-        std::vector<double> a, b;
-        auto grid = [&](std::size_t ne, std::size_t nxi, double de, double dx, int var1, int var2) {
-            a.clear();
-            b.clear();
-            for (std::size_t j = 0; j < ne; ++j)
-                for (std::size_t i = 0; i < nxi; ++i)
-                {
-                    const LonLat g = geo(double(j) + de, double(i) + dx);
-                    a.push_back(g.lon);
-                    b.push_back(g.lat);
-                }
-            w.put(var1, a);
-            w.put(var2, b);
-        };
-        grid(kEta, kXi, 0, 0, lonr, latr);
-        grid(kEta, kXi - 1, 0, 0.5, lonu, latu);
-        grid(kEta - 1, kXi, 0.5, 0, lonv, latv);
-        w.put(ang, std::vector<double>(kEta * kXi, theta));
-        auto landU = [](std::size_t j, std::size_t i) { return land(j, i) || land(j, i + 1); };
-        auto landV = [](std::size_t j, std::size_t i) { return land(j, i) || land(j + 1, i); };
-        if (masks)
-        {
-            std::vector<double> m;
-            for (std::size_t j = 0; j < kEta; ++j)
-                for (std::size_t i = 0; i < kXi; ++i)
-                    m.push_back(land(j, i) ? 0.0 : 1.0);
-            w.put(mr, m);
-            m.clear();
-            for (std::size_t j = 0; j < kEta; ++j)
-                for (std::size_t i = 0; i + 1 < kXi; ++i)
-                    m.push_back(landU(j, i) ? 0.0 : 1.0);
-            w.put(mu, m);
-            m.clear();
-            for (std::size_t j = 0; j + 1 < kEta; ++j)
-                for (std::size_t i = 0; i < kXi; ++i)
-                    m.push_back(landV(j, i) ? 0.0 : 1.0);
-            w.put(mv, m);
-        }
-        std::vector<double> pu, pv;
-        for (int rec = 0; rec < 2; ++rec)
-        {
-            for (std::size_t j = 0; j < kEta; ++j)
-                for (std::size_t i = 0; i + 1 < kXi; ++i)
-                {
-                    double ue, vn;
-                    current(at(double(j), double(i) + 0.5), ue, vn);
-                    pu.push_back(landU(j, i) ? 1e37 : ue * std::cos(theta) + vn * std::sin(theta));
-                }
-            for (std::size_t j = 0; j + 1 < kEta; ++j)
-                for (std::size_t i = 0; i < kXi; ++i)
-                {
-                    double ue, vn;
-                    current(at(double(j) + 0.5, double(i)), ue, vn);
-                    pv.push_back(landV(j, i) ? 1e37 : -ue * std::sin(theta) + vn * std::cos(theta));
-                }
-        }
-        w.put(u, pu);
-        w.put(v, pv);
-    }
-};
 }  // namespace
 
 TEST(NetCdfModelGrids, CurvilinearGridWhoseIndexWrapsIsSubsetAcrossItsSeam)

@@ -3,6 +3,7 @@ glider_add_test(test_mission_goto ${CMAKE_CURRENT_LIST_DIR}/TestSlocumGoto.cpp)
 glider_add_test(test_mission_departure ${CMAKE_CURRENT_LIST_DIR}/TestDepartureTime.cpp)
 glider_add_test(test_mission_file ${CMAKE_CURRENT_LIST_DIR}/TestMissionFile.cpp)
 glider_add_test(test_mission_run ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp ${CMAKE_CURRENT_LIST_DIR}/TestForecastLand.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TestForecastModelGrids.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestCoastline.cpp)
 target_link_libraries(test_mission_run PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)
 glider_add_test(test_mission_bathymetry ${CMAKE_CURRENT_LIST_DIR}/TestBathymetry.cpp)

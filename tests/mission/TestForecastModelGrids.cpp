@@ -1,0 +1,121 @@
+// Routes on model grids (issue 10): across the index seam of a global curvilinear grid round an island that sits on
+// the seam, and across a ROMS-like C grid round a masked island. Land clearance is checked independently of the
+// planner: every leg is sampled every ~200 m (cells are 5 km and 300 km) and no sample may lie inside a cell with
+// a land corner, found from the sample's lon/lat through the grid's own formulas.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../current/ModelGrids.h"
+#include "../current/TestNetCdfUtil.h"
+#include "ompl_glider/mission/ForecastMission.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/Planning.h"
+
+using namespace ompl_glider;
+using namespace glider_test;
+
+namespace
+{
+/// Samples every leg of the route every `step` metres, calls bad(lon, lat) and fails on the first true.
+template <typename Bad>
+void expectClearOfLand(const MissionProblem &problem, const std::vector<TimedWaypoint> &path, double step, Bad bad)
+{
+    std::size_t samples = 0;
+    for (std::size_t k = 0; k + 1 < path.size(); ++k)
+    {
+        const TimedWaypoint &a = path[k], &b = path[k + 1];
+        const int n = std::max(2, int(std::hypot(b.x - a.x, b.y - a.y) / step));
+        for (int q = 0; q <= n; ++q, ++samples)
+        {
+            const double s = double(q) / n;
+            const LonLat g = problem.toGeographic({a.x + s * (b.x - a.x), a.y + s * (b.y - a.y)});
+            ASSERT_GE(g.lon, -180.0);
+            ASSERT_LE(g.lon, 180.0);
+            ASSERT_FALSE(bad(g.lon, g.lat)) << "leg " << k << " at " << g.lon << ", " << g.lat;
+        }
+    }
+    EXPECT_GT(samples, 100u);
+}
+}  // namespace
+
+TEST(ForecastModelGrids, RouteAcrossTheIndexSeamOfAWrappingCurvilinearGridGoesRoundAnIslandOnIt)
+{
+    TempDir dir;
+    WrapGrid grid;
+    // at 20N (row 30) the nodes lie at -34 + 3i: the index seam runs between column 119 (37W) and column 0 (34W);
+    // the island covers rows 29..31 of columns 119 and 0
+    grid.landRows[0] = 29;
+    grid.landRows[1] = 31;
+    grid.landCols[0] = 119;
+    grid.landCols[1] = 0;
+    const std::string file = dir.file("wrap.nc");
+    grid.write(file);
+    ForecastInput in;
+    in.file = file;
+    in.start = {-44.0, 20.0};
+    in.goal = {-27.0, 20.5};
+    in.speed = 1.0;
+    const MissionSpec spec = forecastMission(in);
+    const MissionProblem problem(spec);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.status << " " << r.plan.reason;
+    EXPECT_TRUE(std::isinf(r.plan.straightLineTime)) << "the straight leg crosses the island";
+    // cell (j, i) from lon/lat: lat = -40 + 2j, lon = -40 + 3i + 0.2j (mod 360) is affine in (i, j)
+    auto bad = [&](double lon, double lat) {
+        const double fj = (lat + 40.0) / 2.0;
+        double fi = std::fmod(lon + 40.0 - 0.2 * fj, 360.0) / 3.0;
+        if (fi < 0)
+            fi += 120.0;
+        const std::size_t j = std::size_t(std::floor(fj)), i = std::size_t(std::floor(fi)) % 120;
+        const double m = 0.01;  // of a cell: the planner's cells have straight projected edges
+        const bool corner = grid.land(j, i) || grid.land(j + 1, i) || grid.land(j, (i + 1) % 120) ||
+                            grid.land(j + 1, (i + 1) % 120);
+        const double a = fi - std::floor(fi), b = fj - std::floor(fj);
+        return corner && a > m && a < 1 - m && b > m && b < 1 - m;
+    };
+    expectClearOfLand(problem, r.plan.path, 200.0, bad);
+    // the route went round the island: north of row 31 or south of row 29 somewhere
+    double north = -90, south = 90;
+    for (const TimedWaypoint &w : r.plan.path)
+    {
+        const LonLat g = problem.toGeographic({w.x, w.y});
+        north = std::max(north, g.lat);
+        south = std::min(south, g.lat);
+    }
+    EXPECT_TRUE(north > grid.lat(31, 0) || south < grid.lat(29, 0)) << north << " " << south;
+    const LonLat end = problem.toGeographic({r.plan.path.back().x, r.plan.path.back().y});
+    EXPECT_NEAR(end.lon, -27.0, 1e-6);
+    EXPECT_NEAR(end.lat, 20.5, 1e-6);
+}
+
+TEST(ForecastModelGrids, RouteOnARomsCGridGoesRoundItsMaskedIsland)
+{
+    TempDir dir;
+    const RomsGrid grid;
+    const std::string file = dir.file("roms.nc");
+    grid.write(file);
+    ForecastInput in;
+    in.file = file;
+    const LonLat s = grid.geo(10, 3), g = grid.geo(10.2, 16);  // the straight line crosses the island (eta 9..11)
+    in.start = {s.lon, s.lat};
+    in.goal = {g.lon, g.lat};
+    in.speed = 0.5;
+    const MissionSpec spec = forecastMission(in);
+    const MissionProblem problem(spec);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.status << " " << r.plan.reason;
+    EXPECT_TRUE(std::isinf(r.plan.straightLineTime)) << "the straight leg crosses the island";
+    // (eta, xi) of a position: the grid's own plane, rotation undone
+    auto bad = [&](double lon, double lat) {
+        const Point2 p = grid.proj.forward(lon, lat);
+        const double a = (p.x * std::cos(grid.theta) + p.y * std::sin(grid.theta)) / grid.d + 0.5 * RomsGrid::kXi;
+        const double b = (-p.x * std::sin(grid.theta) + p.y * std::cos(grid.theta)) / grid.d + 0.5 * RomsGrid::kEta;
+        const std::size_t i = std::size_t(std::floor(a)), j = std::size_t(std::floor(b));
+        const bool corner = RomsGrid::land(j, i) || RomsGrid::land(j + 1, i) || RomsGrid::land(j, i + 1) ||
+                            RomsGrid::land(j + 1, i + 1);
+        const double m = 0.01, fa = a - std::floor(a), fb = b - std::floor(b);
+        return corner && fa > m && fa < 1 - m && fb > m && fb < 1 - m;
+    };
+    expectClearOfLand(problem, r.plan.path, 200.0, bad);
+}
