@@ -166,7 +166,11 @@ std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp)
 {
     const double seconds = gp.horizon * problem.getSpec().timeUnitSeconds;
     char text[160];
-    std::snprintf(text, sizeof text, "%.6g time units (%.3g h)", gp.horizon, seconds / 3600.0);
+    if (seconds >= 2.0 * 86400.0)
+        std::snprintf(text, sizeof text, "%.6g time units (%.3g days, %.0f h)", gp.horizon, seconds / 86400.0,
+                      seconds / 3600.0);
+    else
+        std::snprintf(text, sizeof text, "%.6g time units (%.3g h)", gp.horizon, seconds / 3600.0);
     const double fieldEnd = problem.getField()->timeEnd();
     if (std::isfinite(fieldEnd) && gp.t0 + gp.horizon >= fieldEnd - 1e-9 * std::max(1.0, std::abs(fieldEnd)))
         return std::string("; the path must arrive before the forecast ends, ") + text +
@@ -247,7 +251,18 @@ PlannedPath planRoute(const MissionProblem &problem, double departure, const Pla
     {
         r.reason = noPathReason(status, *planner, dynamic_cast<const GliderSimpleSetup *>(ss.get()), limit);
         if (status == ompl::base::PlannerStatus::INVALID_START || status == ompl::base::PlannerStatus::INVALID_GOAL)
-            r.badInput = status == ompl::base::PlannerStatus::INVALID_START ? "start" : "goal";
+        {
+            const bool start = status == ompl::base::PlannerStatus::INVALID_START;
+            r.badInput = start ? "start" : "goal";
+            if (problem.isGeographic())
+            {
+                // the planner speaks in its plane; the pilot gave lon/lat
+                const LonLat p = problem.toGeographic(start ? s : g);
+                char where[96];
+                std::snprintf(where, sizeof where, " (lon %.5f, lat %.5f)", p.lon, p.lat);
+                r.reason += std::string("; the ") + r.badInput + where;
+            }
+        }
         if (r.reason.rfind("no path exists", 0) == 0)
         {
             r.status = kNoPathStatus;  // OMPL's ABORT or TIMEOUT would send the user after a longer time limit

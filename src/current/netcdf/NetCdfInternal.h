@@ -16,6 +16,7 @@
 ///  - Hyperslab.cpp          contiguous runs per dimension and the scattered nc_get_vara reads
 ///  - UnitsAndPacking.cpp    velocity and axis units, scale_factor/add_offset and fill/valid-range rules
 ///  - LandMask.cpp           reading u/v: unpacking, unit conversion; land from fill values, zero velocity, a mask
+///  - Staggered.cpp          a ROMS C grid's u/v read at their own points onto the rho points; grid angle rotation
 ///  - NodeCoordinates.cpp    projected (and rotated) or Cartesian node coordinates
 ///  - ../NetCdfCurrents.cpp  loadNetCdfCurrents(), composing the stages, and the NetCdfCurrents members
 
