@@ -2,6 +2,7 @@
 // and the coordinate/time conversions of NetCdfCurrents.
 #include "ompl_glider/current/NetCdfCurrents.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -89,6 +90,15 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
         readVelocities(f, l, plan, t, vel, opt, g, out);
     rotateGridToEastNorth(f, l, h, g);
     applyLandMask(f, l, h, z, t, opt, g, out);
+    if (z.sigma)
+    {
+        const double deepest = opt.depthAverage ? opt.depthAverage->second : opt.maxDepth;
+        std::vector<double> requested{opt.maxDepth};
+        if (opt.depthAverage)
+            requested = {opt.depthAverage->first, opt.depthAverage->second};
+        remapSigmaToDepths(f, l, h, z, t, deepest, requested, g);
+        out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
+    }
     if (opt.depthAverage)
         averageOverDepth(opt.depthAverage->first, opt.depthAverage->second, g);
     out.projection = setNodeCoordinates(f, l, h, region, opt, g);

@@ -2,6 +2,7 @@
 // Model grids as ocean models write them, written with NetCDF-C for the tests (issue 10): a global curvilinear
 // grid whose i-index wraps (WrapGrid) and a ROMS-like Arakawa C grid (RomsGrid). Both come from an analytic
 // eastward/northward current, so that the loaded field and the planned routes can be checked against it.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -133,6 +134,34 @@ struct RomsGrid
     {
         return eta >= 9 && eta <= 11 && xi >= 11 && xi <= 14;
     }
+    /// With sLevels > 0: terrain-following s-levels (ROMS Vtransform 2, CF ocean_s_coordinate_g2), sea surface
+    /// zeta, and the current scaled by depthFactor(z) at each level's depth z (m, negative down).
+    std::size_t sLevels{0};
+    double hc{20.0}, zeta{0.5};
+    /// s of level k (bottom first, as ROMS) and its stretching C(s) = -s^2.
+    double sOf(std::size_t k) const
+    {
+        return -1.0 + (double(k) + 0.5) / double(sLevels);
+    }
+    static double stretch(double s)
+    {
+        return -s * s;
+    }
+    /// Bathymetry: 200 m, 30 m on a shallow bank (rows 2..4, columns 12..15).
+    static double bottom(std::size_t eta, std::size_t xi)
+    {
+        return eta >= 2 && eta <= 4 && xi >= 12 && xi <= 15 ? 30.0 : 200.0;
+    }
+    /// Depth z (m, negative down) of level k where the bottom is h ([CF] ocean_s_coordinate_g2).
+    double levelZ(std::size_t k, double h) const
+    {
+        const double S = (hc * sOf(k) + h * stretch(sOf(k))) / (hc + h);
+        return zeta + (zeta + h) * S;
+    }
+    static double depthFactor(double z)
+    {
+        return 1.0 + z / 250.0;
+    }
     /// Writes the file; grid components u along xi, v along eta (u = e cos + n sin, v = -e sin + n cos).
     void write(const std::string &path, bool masks = true) const
     {
@@ -162,7 +191,24 @@ struct RomsGrid
             for (int m : {mr, mu, mv})
                 w.text(m, "flag_meanings", "land water"), w.num(m, "flag_values", NC_DOUBLE, {0.0, 1.0});
         }
-        const int u = w.var("u", NC_FLOAT, {dt, eu, xu}), v = w.var("v", NC_FLOAT, {dt, ev, xv});
+        int ds = -1, vs = -1, vc = -1, vhc = -1, vh = -1, vzeta = -1;
+        if (sLevels > 0)
+        {
+            ds = w.dim("s_rho", sLevels);
+            vs = w.var("s_rho", NC_DOUBLE, {ds});
+            w.text(vs, "standard_name", "ocean_s_coordinate_g2");
+            w.text(vs, "positive", "up");
+            w.text(vs, "formula_terms", "s: s_rho C: Cs_r eta: zeta depth: h depth_c: hc");
+            vc = w.var("Cs_r", NC_DOUBLE, {ds});
+            vhc = w.var("hc", NC_DOUBLE, {});
+            vh = w.var("h", NC_DOUBLE, {er, xr});
+            w.text(vh, "units", "meter");
+            vzeta = w.var("zeta", NC_DOUBLE, {dt, er, xr});
+            w.text(vzeta, "units", "meter");
+        }
+        const std::vector<int> udims = sLevels > 0 ? std::vector<int>{dt, ds, eu, xu} : std::vector<int>{dt, eu, xu};
+        const std::vector<int> vdims = sLevels > 0 ? std::vector<int>{dt, ds, ev, xv} : std::vector<int>{dt, ev, xv};
+        const int u = w.var("u", NC_FLOAT, udims), v = w.var("v", NC_FLOAT, vdims);
         w.text(u, "units", "meter second-1");
         w.text(v, "units", "meter second-1");
         w.text(u, "coordinates", "lon_u lat_u ocean_time");
@@ -209,23 +255,43 @@ struct RomsGrid
                     m.push_back(landV(j, i) ? 0.0 : 1.0);
             w.put(mv, m);
         }
+        if (sLevels > 0)
+        {
+            std::vector<double> sv, cv, hv;
+            for (std::size_t k = 0; k < sLevels; ++k)
+                sv.push_back(sOf(k)), cv.push_back(stretch(sOf(k)));
+            for (std::size_t j = 0; j < kEta; ++j)
+                for (std::size_t i = 0; i < kXi; ++i)
+                    hv.push_back(bottom(j, i));
+            w.put(vs, sv);
+            w.put(vc, cv);
+            w.put(vhc, {hc});
+            w.put(vh, hv);
+            w.put(vzeta, std::vector<double>(2 * kEta * kXi, zeta));
+        }
+        // a face's level lies at the depth of its bottom (the mean of the two rho points' bottoms)
+        auto factor = [&](std::size_t k, double h) { return sLevels > 0 ? depthFactor(levelZ(k, h)) : 1.0; };
         std::vector<double> pu, pv;
         for (int rec = 0; rec < 2; ++rec)
         {
-            for (std::size_t j = 0; j < kEta; ++j)
-                for (std::size_t i = 0; i + 1 < kXi; ++i)
-                {
-                    double ue, vn;
-                    current(at(double(j), double(i) + 0.5), ue, vn);
-                    pu.push_back(landU(j, i) ? 1e37 : ue * std::cos(theta) + vn * std::sin(theta));
-                }
-            for (std::size_t j = 0; j + 1 < kEta; ++j)
-                for (std::size_t i = 0; i < kXi; ++i)
-                {
-                    double ue, vn;
-                    current(at(double(j) + 0.5, double(i)), ue, vn);
-                    pv.push_back(landV(j, i) ? 1e37 : -ue * std::sin(theta) + vn * std::cos(theta));
-                }
+            for (std::size_t k = 0; k < std::max<std::size_t>(1, sLevels); ++k)
+                for (std::size_t j = 0; j < kEta; ++j)
+                    for (std::size_t i = 0; i + 1 < kXi; ++i)
+                    {
+                        double ue, vn;
+                        current(at(double(j), double(i) + 0.5), ue, vn);
+                        const double f = factor(k, 0.5 * (bottom(j, i) + bottom(j, i + 1)));
+                        pu.push_back(landU(j, i) ? 1e37 : f * (ue * std::cos(theta) + vn * std::sin(theta)));
+                    }
+            for (std::size_t k = 0; k < std::max<std::size_t>(1, sLevels); ++k)
+                for (std::size_t j = 0; j + 1 < kEta; ++j)
+                    for (std::size_t i = 0; i < kXi; ++i)
+                    {
+                        double ue, vn;
+                        current(at(double(j) + 0.5, double(i)), ue, vn);
+                        const double f = factor(k, 0.5 * (bottom(j, i) + bottom(j + 1, i)));
+                        pv.push_back(landV(j, i) ? 1e37 : f * (-ue * std::sin(theta) + vn * std::cos(theta)));
+                    }
         }
         w.put(u, pu);
         w.put(v, pv);

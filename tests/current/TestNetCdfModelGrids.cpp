@@ -360,3 +360,47 @@ TEST(NetCdfModelGrids, StaggeredAndAngleErrorsNameTheVariables)
             << m;
     }
 }
+
+TEST(NetCdfModelGrids, RomsSCoordinateLevelsBecomeDepthsPerColumn)
+{
+    TempDir tmp;
+    RomsGrid grid;
+    grid.sLevels = 8;
+    const std::string path = tmp.file("roms_s.nc");
+    grid.write(path);
+    NetCdfCurrentOptions o;
+    o.maxDepth = 100.0;
+    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    const GriddedCurrentField &f = *nc.field;
+    // depth levels in metres: the standard ones down to 100 m and 2 more
+    const Axis &levels = f.depthAxis();
+    ASSERT_GE(levels.size(), 3u);
+    EXPECT_EQ(levels[0], 0.0);
+    EXPECT_EQ(levels[levels.size() - 3], 100.0);
+    const double zTop = grid.levelZ(grid.sLevels - 1, 200.0);  // the top s-level where the bottom is 200 m
+    std::size_t checked = 0;
+    for (auto [j, i] : {std::pair<std::size_t, std::size_t>{6, 4}, {7, 8}, {10, 4}, {4, 8}})
+        for (double depth : {0.0, 10.0, 50.0, 100.0})
+        {
+            const LonLat g = grid.geo(double(j), double(i));
+            const Point2 p = nc.toLocal(g);
+            double ue, vn;
+            RomsGrid::current(grid.at(double(j), double(i)), ue, vn);
+            // linear in depth between s-levels (the factor is linear in z); above the top level, its value
+            const double s = RomsGrid::depthFactor(std::min(-depth, zTop));
+            ASSERT_TRUE(f.inWater(p.x, p.y, depth)) << j << " " << i << " " << depth;
+            const Velocity e = inPlane(nc, g.lon, g.lat, s * ue, s * vn), c = f.velocity(p.x, p.y, depth, 0.0);
+            EXPECT_NEAR(c.u, e.u, 2e-6) << j << " " << i << " " << depth;
+            EXPECT_NEAR(c.v, e.v, 2e-6) << j << " " << i << " " << depth;
+            ++checked;
+        }
+    EXPECT_EQ(checked, 16u);
+    // the shallow bank (30 m): water at 10 m, land at 50 m
+    const Point2 bank = nc.toLocal(grid.geo(3, 13.5));
+    EXPECT_TRUE(f.inWater(bank.x, bank.y, 10.0));
+    EXPECT_FALSE(f.inWater(bank.x, bank.y, 50.0));
+    // a depth average over 0..40 m of the same file: one layer
+    o.depthAverage = std::make_pair(0.0, 40.0);
+    const NetCdfCurrents avg = loadNetCdfCurrents(path, o);
+    EXPECT_EQ(avg.field->depthAxis().size(), 1u);
+}

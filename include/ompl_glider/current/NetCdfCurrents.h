@@ -183,7 +183,9 @@ struct NetCdfCurrents
 /// or whose value is a fill value, counts as zero flow (no flow through a coast); a rho point whose two u faces or
 /// two v faces are both fill values is land, as is a rho point that mask_rho marks as land. A B grid (POP, MOM: u and
 /// v together on the velocity points, ULONG/ULAT) is an ordinary curvilinear grid with an angle. Terrain-following
-/// (sigma) vertical coordinates are not supported (an Error: interpolate to z levels first).
+/// levels of ROMS (CF ocean_s_coordinate_g1/_g2) become depth levels in metres per water column (level depths
+/// from formula_terms or ROMS' Cs_r, h, hc, zeta; linear in depth between levels; below the floor h is land; the
+/// standard levels 0, 2, 5, 10, ... m down to maxDepth plus two); other sigma coordinates are an Error.
 ///
 /// Bad files are refused rather than loaded wrong: a classic-format (CDF-1/2/5) file shorter than its
 /// header declares, a dimension of u/v of length 0, axes holding fill values, NaN or infinities, axes that are not

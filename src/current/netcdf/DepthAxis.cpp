@@ -11,17 +11,13 @@ namespace netcdf_detail
 {
 namespace
 {
-/// Depth values of zv in metres, positive down, in file order. @throws Error for terrain-following
-/// coordinates, an unknown positive attribute or units, fill values or non-finite numbers.
+/// Depth values of zv in metres, positive down, in file order. @throws Error for an unknown positive attribute or
+/// units, fill values or non-finite numbers.
 std::vector<double> readDepthMetres(const NcFile &f, int zv)
 {
     const std::string zn = f.varName(zv);
     std::vector<double> zs = f.readAll1D(zv);
     checkAxisValues(f, zv, zs, "depth");
-    const std::string zsn = stdName(f, zv);
-    if (zsn.rfind("ocean_s", 0) == 0 || zsn.rfind("ocean_sigma", 0) == 0 || zsn.rfind("ocean_double_sigma", 0) == 0)
-        throw f.error("depth '" + zn + "' is a terrain-following coordinate (standard_name " + zsn +
-                      "); expected depth in metres: interpolate the file to z levels first");
     const std::string pos = lower(f.attText(zv, "positive").value_or("down"));
     if (pos != "down" && pos != "up")
         throw f.error("depth '" + zn + "': attribute positive = '" + pos + "', expected 'down' or 'up'");
@@ -50,6 +46,18 @@ AxisSelection selectDepths(const NcFile &f, const Layout &l, double maxDepth)
     AxisSelection s;
     if (l.dimZ < 0)
         return s;
+    const int zv = l.coordVar[std::size_t(l.dimZ)];
+    if (isSigmaCoordinate(f, zv))
+    {
+        // every s-level: which of them reach a depth differs from node to node (remapSigmaToDepths())
+        s.values = f.readAll1D(zv);
+        checkAxisValues(f, zv, s.values, "depth");
+        s.idx.clear();
+        for (std::size_t k = 0; k < s.values.size(); ++k)
+            s.idx.push_back(k);
+        s.sigma = true;
+        return s;
+    }
     const std::vector<double> zs = readDepthMetres(f, l.coordVar[std::size_t(l.dimZ)]);
     std::vector<std::size_t> order(zs.size());
     for (std::size_t k = 0; k < zs.size(); ++k)

@@ -17,6 +17,7 @@
 ///  - UnitsAndPacking.cpp    velocity and axis units, scale_factor/add_offset and fill/valid-range rules
 ///  - LandMask.cpp           reading u/v: unpacking, unit conversion; land from fill values, zero velocity, a mask
 ///  - Staggered.cpp          a ROMS C grid's u/v read at their own points onto the rho points; grid angle rotation
+///  - SigmaLevels.cpp        terrain-following s-levels (ROMS) interpolated onto depth levels in metres
 ///  - NodeCoordinates.cpp    projected (and rotated) or Cartesian node coordinates
 ///  - ../NetCdfCurrents.cpp  loadNetCdfCurrents(), composing the stages, and the NetCdfCurrents members
 
@@ -254,6 +255,8 @@ struct AxisSelection
     /// time: positions in idx of the records bracketing the trip (the last at or before the departure to the first
     /// at or after departure + horizon); land is decided on these only, not on the stencil margin around them
     std::size_t tripBegin{0}, tripEnd{0};
+    /// depth: terrain-following s-levels (values are s, not metres; remapSigmaToDepths() makes depths of them)
+    bool sigma{false};
     /// True when position q counts for land.
     bool inTrip(std::size_t q) const
     {
@@ -268,7 +271,7 @@ struct AxisSelection
 AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, NetCdfCurrents &out);
 
 /// The depth layers (metres, positive down, ascending) down to the first at or below maxDepth plus 2;
-/// {0}/{0} without depth axis.
+/// {0}/{0} without depth axis; every level, with sigma set, for a terrain-following coordinate.
 AxisSelection selectDepths(const NcFile &f, const Layout &l, double maxDepth);
 
 // ---- horizontal subset (RegionOfInterest.cpp, RectilinearSubset.cpp, CurvilinearSubset.cpp) ----
@@ -420,6 +423,16 @@ void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan,
 void readStaggeredVelocities(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                              const AxisSelection &t, const LinearConversion &vel, const NetCdfCurrentOptions &opt,
                              GriddedData &g, NetCdfCurrents &out);
+/// True when the depth variable zv is terrain-following (standard_name ocean_s_*, ocean_sigma_*,
+/// ocean_double_sigma_*).
+bool isSigmaCoordinate(const NcFile &f, int zv);
+/// Turns the s-levels of g (all of them, read by selectDepths() with AxisSelection::sigma) into fixed depth levels
+/// in metres down to `deepest` (plus the depths `requested`): the depth of each s-level per node and record from
+/// the CF formula of ocean_s_coordinate_g1/_g2 (formula_terms, else ROMS' Cs_r, h, hc, zeta; zeta 0 without it),
+/// each column interpolated linearly in depth; a level below the node's floor (h) is land there, one above the top
+/// s-level takes its value. @throws Error for other terrain-following coordinates or missing formula terms.
+void remapSigmaToDepths(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+                        const AxisSelection &t, double deepest, const std::vector<double> &requested, GriddedData &g);
 /// Rotates grid-relative velocities (Layout::angleVar) into eastward/northward at every loaded node.
 /// @throws Error when the angle holds fill values or non-finite numbers.
 void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSubset &h, GriddedData &g);
