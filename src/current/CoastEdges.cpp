@@ -149,7 +149,9 @@ void CoastEdges::meet(std::size_t k, double ax, double ay, double bx, double by,
     auto col = [&](double x) { return bucketOf(x, x0_, inv_, bnx_); };
     auto row = [&](double y) { return bucketOf(y, y0_, inv_, bny_); };
     const std::size_t c0 = col(std::min(ax, bx)), c1 = col(std::max(ax, bx));
-    std::vector<std::uint32_t> seen;
+    // the candidate edges: a scratch list per thread, so a leg check allocates nothing once it has grown
+    thread_local std::vector<std::uint32_t> seen;
+    seen.clear();
     for (std::size_t c = c0; c <= c1; ++c)
     {
         // the part of the segment within this column of buckets (a little wider, so nothing at a border is lost)
