@@ -88,16 +88,19 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin
     if (wgs84.importFromEPSG(4326) != OGRERR_NONE)
         throw Error(who + ": cannot set up lon/lat (EPSG:4326): is PROJ's database (proj-data) installed?");
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    OGRPolygon box;
-    {
+    // the box, and the box a turn east and west: a layer written in 0..360 (or beyond -180) holds the land of
+    // -180..180 a turn away; what it clips is brought back by the turn
+    auto boxAt = [&](double shift) {
+        OGRPolygon box;
         OGRLinearRing r;
-        r.addPoint(lonMin, latMin);
-        r.addPoint(lonMax, latMin);
-        r.addPoint(lonMax, latMax);
-        r.addPoint(lonMin, latMax);
+        r.addPoint(lonMin + shift, latMin);
+        r.addPoint(lonMax + shift, latMin);
+        r.addPoint(lonMax + shift, latMax);
+        r.addPoint(lonMin + shift, latMax);
         r.closeRings();
         box.addRing(&r);
-    }
+        return box;
+    };
     std::vector<LandPolygon> out;
     for (OGRLayer *layer : ds->GetLayers())
     {
@@ -151,19 +154,34 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin
                             "; expected land polygons");
             OGREnvelope e;
             g->getEnvelope(&e);
-            if (e.MaxX < lonMin || e.MinX > lonMax || e.MaxY < latMin || e.MinY > latMax)
-                continue;
-            if (!g->IsValid())
+            bool valid = false;
+            for (double shift : {0.0, 360.0, -360.0})
             {
-                std::unique_ptr<OGRGeometry> fixed(g->MakeValid());
-                if (!fixed)
-                    throw Error(which + ": an invalid polygon that cannot be repaired");
-                g = std::move(fixed);
+                if (e.MaxX < lonMin + shift || e.MinX > lonMax + shift || e.MaxY < latMin || e.MinY > latMax)
+                    continue;
+                if (!valid && !g->IsValid())
+                {
+                    std::unique_ptr<OGRGeometry> fixed(g->MakeValid());
+                    if (!fixed)
+                        throw Error(which + ": an invalid polygon that cannot be repaired");
+                    g = std::move(fixed);
+                }
+                valid = true;
+                const OGRPolygon box = boxAt(shift);
+                std::unique_ptr<OGRGeometry> clipped(g->Intersection(&box));
+                if (!clipped)
+                    throw Error(which + ": cannot be clipped to the trip's box (GEOS)");
+                const std::size_t first = out.size();
+                collect(*clipped, out);
+                for (std::size_t k = first; k < out.size(); ++k)
+                {
+                    for (LonLat &p : out[k].outer)
+                        p.lon -= shift;
+                    for (auto &hole : out[k].holes)
+                        for (LonLat &p : hole)
+                            p.lon -= shift;
+                }
             }
-            std::unique_ptr<OGRGeometry> clipped(g->Intersection(&box));
-            if (!clipped)
-                throw Error(which + ": cannot be clipped to the trip's box (GEOS)");
-            collect(*clipped, out);
         }
     }
     return out;

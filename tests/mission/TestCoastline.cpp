@@ -151,6 +151,32 @@ TEST(Coastline, ShapefileInWebMercatorKmlAndClosedShorelinesReadTheSame)
     }
 }
 
+TEST(Coastline, ALayerIn0To360LongitudesGivesItsLandInMinus180To180)
+{
+    // a GeoJSON without CRS whose longitudes run 0..360 (as some Pacific extracts are written): an island at
+    // 200..202E (158..160W) and one across the antimeridian at 179..181E
+    TempDir dir;
+    const std::string path = dir.file("pacific360.geojson");
+    std::ofstream(path) << R"({"type": "FeatureCollection", "features": [
+      {"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates":
+        [[[200, 20], [202, 20], [202, 22], [200, 22], [200, 20]]]}},
+      {"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates":
+        [[[179, 30], [181, 30], [181, 31], [179, 31], [179, 30]]]}}]})";
+    const auto east = readLandPolygons(path, -165, 15, -150, 25);
+    ASSERT_EQ(east.size(), 1u);
+    EXPECT_NEAR(ringArea(east[0].outer), 4.0, 1e-9);
+    EXPECT_TRUE(inside(east[0].outer, -159.0, 21.0));
+    for (const LonLat &p : east[0].outer)
+        EXPECT_TRUE(p.lon >= -180 && p.lon <= 180) << p.lon;
+    // the box split at the antimeridian (as MissionProblem asks for it): both halves of the second island
+    const auto west = readLandPolygons(path, 175, 25, 180, 35), across = readLandPolygons(path, -180, 25, -175, 35);
+    ASSERT_EQ(west.size(), 1u);
+    ASSERT_EQ(across.size(), 1u);
+    EXPECT_NEAR(ringArea(west[0].outer), 1.0, 1e-9);
+    EXPECT_NEAR(ringArea(across[0].outer), 1.0, 1e-9);
+    EXPECT_TRUE(inside(across[0].outer, -179.5, 30.5));
+}
+
 TEST(Coastline, BadFilesAreErrorsNamingTheFile)
 {
     TempDir dir;
