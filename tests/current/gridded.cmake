@@ -9,6 +9,7 @@ glider_add_test(test_current_netcdf
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLayouts.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfUnitsAndNames.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfMultiFile.cpp
 
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfGlobal.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfModelGrids.cpp)
