@@ -103,7 +103,16 @@ JoinedAxis joinTimeAxes(const std::vector<std::string> &paths, const NetCdfCurre
                     " NetCDF files: a steady record is one record of one file; give that file alone");
     JoinedAxis a;
     for (const std::string &p : paths)
+    {
         a.files.push_back(readFileTimes(p, opt));
+        // dates of different calendars cannot be ordered: checked before anything is compared
+        const FileTimes &f0 = a.files.front(), &q = a.files.back();
+        if (q.tv.calendar != f0.tv.calendar)
+            throw Error("NetCDF files '" + f0.path + "' and '" + q.path +
+                        "' cannot be joined as one forecast: their calendars differ ('" +
+                        std::string(calendarName(f0.tv.calendar)) + "' and '" + calendarName(q.tv.calendar) +
+                        "', time variables '" + f0.tv.name + "' and '" + q.tv.name + "')");
+    }
     std::stable_sort(a.files.begin(), a.files.end(), [](const FileTimes &x, const FileTimes &y) {
         return x.tv.originSeconds < y.tv.originSeconds;
     });
@@ -113,12 +122,6 @@ JoinedAxis joinTimeAxes(const std::vector<std::string> &paths, const NetCdfCurre
     for (std::size_t i = 1; i < a.files.size(); ++i)
     {
         const FileTimes &p = a.files[i - 1], &q = a.files[i];
-        if (q.tv.calendar != a.calendar)
-            throw Error("NetCDF files '" + first.path + "' and '" + q.path +
-                        "' cannot be joined as one forecast: their calendars differ ('" +
-                        std::string(calendarName(a.calendar)) + "' and '" + calendarName(q.tv.calendar) +
-                        "', time variables '" +
-                        first.tv.name + "' and '" + q.tv.name + "')");
         if (!(q.tv.originSeconds > p.tv.originSeconds))
             throw Error("NetCDF files '" + p.path + "' and '" + q.path +
                         "' cannot be joined as one forecast: both begin at " + iso(q.tv.originSeconds, a.calendar) +
