@@ -30,6 +30,8 @@ struct MfFile
     std::vector<double> bias;      ///< added to u per record (0: the true forecast)
     std::string calendar{"standard"};
     double lonShift{0.0};          ///< moves the grid (a mismatched file)
+    double landHour{30.0};         ///< at this hour node (i 2, j 3) is a fill value (land in this record only)
+    double stillUntil{24.0};       ///< node (i 3, j 2) is u = v = 0 before this hour (all of day 0's file)
 };
 
 inline void writeMfFile(const std::string &path, const MfFile &m)
@@ -59,8 +61,8 @@ inline void writeMfFile(const std::string &path, const MfFile &m)
             for (std::size_t i = 0; i < nx; ++i)
             {
                 // one land node (fill value) in every record, one node that is still in every record
-                const bool land = i == 5 && j == 0;
-                const bool still = i == 0 && j == 5;
+                const bool land = (i == 5 && j == 0) || (i == 2 && j == 3 && m.hours[k] == m.landHour);
+                const bool still = (i == 0 && j == 5) || (i == 3 && j == 2 && m.hours[k] < m.stillUntil);
                 u.push_back(land ? -999.0 : still ? 0.0 : mfU(lon[i], lat[j], m.hours[k]) + m.bias.at(k));
                 v.push_back(land ? -999.0 : still ? 0.0 : mfV(lon[i], lat[j], m.hours[k]));
             }

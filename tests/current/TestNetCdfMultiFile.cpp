@@ -139,6 +139,30 @@ TEST(NetCdfMultiFile, OnlyTheFilesOfTheTripAreRead)
     EXPECT_NE(msg.find("4 files"), std::string::npos) << msg;
 }
 
+TEST(NetCdfMultiFile, ZeroVelocityLandIsDecidedOnAllTheTripsRecords)
+{
+    Files f;
+    // node (3, 2) is still throughout day 0's file, moving from day 1 on: water for a trip into day 1, as in the
+    // combined file (not land because one file saw it still)
+    NetCdfCurrentOptions o = options();
+    o.departure = "2026-03-01T15:00:00Z";
+    o.horizon = 12.0 * 3600.0;
+    NetCdfCurrents one = loadNetCdfCurrents(f.combined, o), many = loadNetCdfCurrents(f.days, o);
+    EXPECT_EQ(many.zeroLandNodes, 1u);
+    EXPECT_EQ(many.zeroLandNodes, one.zeroLandNodes);
+    EXPECT_EQ(many.files.size(), 2u);
+    expectSameField(one, many, 9.0 * 3600.0, 33.0 * 3600.0);
+    // a trip within day 0 (its margin record in day 1 does not count): land in both
+    o.departure = "2026-03-01T06:00:00Z";
+    o.horizon = 9.0 * 3600.0;
+    one = loadNetCdfCurrents(f.combined, o);
+    many = loadNetCdfCurrents(f.days, o);
+    EXPECT_EQ(many.files.size(), 2u);  // the stencil margin reaches 00:00 of day 1
+    EXPECT_EQ(many.zeroLandNodes, 2u);
+    EXPECT_EQ(many.zeroLandNodes, one.zeroLandNodes);
+    expectSameField(one, many, 0.0, 24.0 * 3600.0);
+}
+
 TEST(NetCdfMultiFile, TimeAxisOfSeveralFiles)
 {
     Files f;

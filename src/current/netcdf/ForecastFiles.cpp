@@ -205,6 +205,10 @@ std::string gridDifference(const ForecastPiece &a, const ForecastPiece &b)
     if (la.uName != lb.uName || la.vName != lb.vName)
         return "velocity variables: '" + la.uName + "'/'" + la.vName + "' against '" + lb.uName + "'/'" + lb.vName +
                "'";
+    if (a.out.maskVariable != b.out.maskVariable)
+        return "land/sea mask variable: " +
+               (a.out.maskVariable.empty() ? std::string("none") : "'" + a.out.maskVariable + "'") + " against " +
+               (b.out.maskVariable.empty() ? std::string("none") : "'" + b.out.maskVariable + "'");
     if (a.g.nx != b.g.nx || a.g.ny != b.g.ny)
         return "nodes in the region: " + std::to_string(a.g.nx) + " x " + std::to_string(a.g.ny) + " against " +
                std::to_string(b.g.nx) + " x " + std::to_string(b.g.ny) + " (x by y)";
@@ -393,40 +397,37 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
     // each file read with the same stages and options; zero-velocity land is decided below, on all the records
     NetCdfCurrentOptions o = opt;
     o.zeroVelocityIsLand = false;
-    std::vector<ForecastPiece> pieces;
+    // joined along time as they are read (internal order t, z, y, x: records are appended); land in any file's
+    // trip records is land
+    ForecastPiece p;
     std::vector<std::string> used;
     bool packed = false;
+    std::size_t fileValues = 0;
     for (const auto &[fi, s] : parts)
     {
         const std::string &path = a.files[fi].path;
-        pieces.push_back(readForecastPiece(path, o, &s, sel.idx.size()));
+        ForecastPiece b = readForecastPiece(path, o, &s, sel.idx.size());
         used.push_back(path);
-        packed = packed || isPacked(pieces.back());
-        if (pieces.size() > 1)
+        packed = packed || isPacked(b);
+        fileValues += b.out.fileValues;
+        if (used.size() == 1)
         {
-            const std::string d = gridDifference(pieces.front(), pieces.back());
-            if (!d.empty())
-                throw Error("NetCDF files '" + used.front() + "' and '" + path +
-                            "' cannot be joined as one forecast: their grids in the trip's region differ: " + d);
+            p = std::move(b);
+            continue;
         }
-    }
-    // joined along time (internal order t, z, y, x: records are appended); land in any file's trip records is land
-    ForecastPiece &p = pieces.front();
-    GriddedData &g = p.g;
-    for (std::size_t i = 1; i < pieces.size(); ++i)
-    {
-        ForecastPiece &b = pieces[i];
-        g.u.insert(g.u.end(), b.g.u.begin(), b.g.u.end());
-        g.v.insert(g.v.end(), b.g.v.begin(), b.g.v.end());
-        for (std::size_t n = 0; n < g.water.size(); ++n)
+        const std::string d = gridDifference(p, b);
+        if (!d.empty())
+            throw Error("NetCDF files '" + used.front() + "' and '" + path +
+                        "' cannot be joined as one forecast: their grids in the trip's region differ: " + d);
+        p.g.u.insert(p.g.u.end(), b.g.u.begin(), b.g.u.end());
+        p.g.v.insert(p.g.v.end(), b.g.v.begin(), b.g.v.end());
+        for (std::size_t n = 0; n < p.g.water.size(); ++n)
         {
-            g.water[n] = g.water[n] && b.g.water[n];
+            p.g.water[n] = p.g.water[n] && b.g.water[n];
             p.fillWater[n] = p.fillWater[n] && b.fillWater[n];
         }
-        if (p.out.maskVariable.empty())
-            p.out.maskVariable = b.out.maskVariable;
-        b.g = GriddedData{};
     }
+    GriddedData &g = p.g;
     g.time = sel.values;
     p.t = sel;
     NetCdfCurrents &out = p.out;
@@ -439,6 +440,11 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
     if (opt.zeroVelocityIsLand)
         out.zeroLandNodes = zeroVelocityLand(g, sel, packed);
     out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
+    // as after the mask stage of one file: a land node keeps no velocity in any record
+    const std::size_t perTime = g.water.size();
+    for (std::size_t idx = 0; idx < g.u.size(); ++idx)
+        if (!g.water[idx % perTime])
+            g.u[idx] = g.v[idx] = 0.0f;
     out.dated = true;
     out.steady = false;
     out.calendar = a.calendar;
@@ -448,9 +454,6 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
     out.forecastEnd = meta.forecastEnd;
     out.files = used;
     out.droppedRecords = a.dropped;
-    std::size_t fileValues = 0;
-    for (const ForecastPiece &b : pieces)
-        fileValues += b.out.fileValues;
     out.fileValues = fileValues;
     std::string name = "netcdf:" + used.front();
     for (std::size_t i = 1; i < used.size(); ++i)
