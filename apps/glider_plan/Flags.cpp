@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/current/UnitConversion.h"
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/planners/PlannerRegistry.h"
@@ -185,7 +186,11 @@ void defineFlags(CLI::App &app, Flags &f)
     app.add_option("--mission", f.mission, "run a YAML mission file (examples/MISSION_FORMAT.md); only --out, "
                                            "--speeds, --optimum and --verbose go with it")
         ->group(io);
-    app.add_option("--currents", f.currents, "plan on the u/v currents of a NetCDF forecast")->group(io);
+    app.add_option("--currents", f.currents,
+                   "plan on the u/v currents of a NetCDF forecast: a file, or several read as one forecast (a "
+                   "comma-separated list of files and glob patterns, e.g. 'hycom_202603*.nc'; ordered by their "
+                   "dates, the later file wins where two overlap)")
+        ->group(io);
     app.add_option("--out", f.out,
                    "write summary.json and the route files (waypoints.csv, path.csv, path.geojson, goto_l10.ma, "
                    "map.svg, map.png) into this directory; with --mission it replaces outputs.directory")
@@ -346,7 +351,20 @@ MissionSpec builtInMission(const Flags &f)
 
 MissionSpec forecastMissionOf(Flags f)
 {
-    f.forecast.file = f.currents;
+    // one file, or several read as one forecast: a comma-separated list of files and glob patterns
+    std::vector<std::string> files;
+    try
+    {
+        files = ompl_glider::forecastFileList(f.currents);
+    }
+    catch (const ompl_glider::Error &e)
+    {
+        throw UsageError{"--currents " + f.currents + ": " + e.what()};
+    }
+    if (files.size() == 1)
+        f.forecast.file = files.front();
+    else
+        f.forecast.files = files;
     f.forecast.start = pair("--start", f.start);
     f.forecast.goal = pair("--goal", f.goal);
     f.forecast.departure = f.departure;

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "netcdf/ForecastFiles.h"
 #include "netcdf/NetCdfInternal.h"
 #include "ompl_glider/Exception.h"
 
@@ -57,29 +58,47 @@ bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &opt
 
 NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &opt)
 {
+    netcdf_detail::ForecastPiece p = netcdf_detail::readForecastPiece(path, opt);
+    return netcdf_detail::buildForecast(p, opt, "netcdf:" + path);
+}
+
+// The stages of one file up to its land (the forecast in several files reads each file with it: ForecastFiles.cpp),
+// then the field (buildForecast()).
+netcdf_detail::ForecastPiece netcdf_detail::readForecastPiece(const std::string &path, const NetCdfCurrentOptions &opt,
+                                                              const AxisSelection *times, std::size_t totalTimes)
+{
     using namespace netcdf_detail;
-    NcFile f(path);
-    NetCdfCurrents out;
+    ForecastPiece p;
+    p.file = std::make_unique<NcFile>(path);
+    const NcFile &f = *p.file;
+    NetCdfCurrents &out = p.out;
+    out.files = {path};
     // what is in the file: velocities, their grid, units
-    const Layout l = detectLayout(f, opt);
+    const Layout &l = p.layout = detectLayout(f, opt);
     out.uVariable = l.uName;
     out.vVariable = l.vName;
     out.geographic = l.geographic;
     const LinearConversion vel = velocityConversionOf(f, l, opt);
     // what to load: depth layers, forecast times, region (its memory checked before the nodes are read)
-    const RegionOfInterest region = regionOfInterest(opt, l.geographic);
+    const RegionOfInterest &region = p.region = regionOfInterest(opt, l.geographic);
     if (opt.depthAverage && !(opt.depthAverage->first >= 0.0 && opt.depthAverage->first <= opt.depthAverage->second &&
                               std::isfinite(opt.depthAverage->second)))
         throw f.error("depth average over " + std::to_string(opt.depthAverage->first) + ".." +
                       std::to_string(opt.depthAverage->second) + " m: expected 0 <= top <= bottom, finite");
-    const AxisSelection z = selectDepths(f, l, opt.depthAverage ? opt.depthAverage->second : opt.maxDepth);
-    const AxisSelection t = selectTimes(f, l, opt, out);
-    const HorizontalSubset h =
+    const AxisSelection &z = p.z = selectDepths(f, l, opt.depthAverage ? opt.depthAverage->second : opt.maxDepth);
+    // the records: chosen here (one file), or given (one file of a forecast in several files)
+    if (times && l.dimT < 0)
+        throw f.error("variable '" + l.uName + "' has no time dimension: it cannot be part of a forecast in several "
+                      "files");
+    const AxisSelection &t = p.t = times ? *times : selectTimes(f, l, opt, out);
+    const HorizontalSubset &h = p.h =
         l.curvilinear ? curvilinearSubset(f, l, region, z, t) : rectilinearSubset(f, l, region, z, t);
+    if (totalTimes > t.idx.size())
+        checkTripMemory(f, h.xIdx.size(), h.yIdx.size(), totalTimes, z.idx.size());
     // read u, v and build the grid
     const HyperslabPlan plan = planHyperslab(f, l, h, z, t);
     out.fileValues = plan.fileValues;
-    GriddedData g;
+    GriddedData &g = p.g;
     g.nx = h.xIdx.size();
     g.ny = h.yIdx.size();
     g.depth = z.values;
@@ -89,6 +108,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
     else
         readVelocities(f, l, plan, t, vel, opt, g, out);
     rotateGridToEastNorth(f, l, h, g);
+    p.fillWater = g.water;
     applyLandMask(f, l, h, z, t, opt, g, out);
     if (z.sigma)
     {
@@ -99,6 +119,21 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
         remapSigmaToDepths(f, l, h, z, t, deepest, requested, g);
         out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
     }
+    if (p.fillWater.size() != g.water.size())
+        p.fillWater = g.water;  // layers remapped: land from fill values is not told apart from the mask's
+    return p;
+}
+
+NetCdfCurrents netcdf_detail::buildForecast(ForecastPiece &p, const NetCdfCurrentOptions &opt,
+                                            const std::string &fieldName)
+{
+    const NcFile &f = *p.file;
+    const netcdf_detail::Layout &l = p.layout;
+    const netcdf_detail::HorizontalSubset &h = p.h;
+    const netcdf_detail::RegionOfInterest &region = p.region;
+    const netcdf_detail::AxisSelection &z = p.z, &t = p.t;
+    GriddedData &g = p.g;
+    NetCdfCurrents out = std::move(p.out);
     if (opt.depthAverage)
         averageOverDepth(opt.depthAverage->first, opt.depthAverage->second, g);
     out.projection = setNodeCoordinates(f, l, h, region, opt, g);
@@ -108,7 +143,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
     out.latMax = h.latHi;
     GriddedFieldOptions fo = opt.field;
     if (fo.name == "gridded" || fo.name.empty())
-        fo.name = "netcdf:" + path;
+        fo.name = fieldName;
     out.loadedShape = {t.idx.size(), z.idx.size(), g.ny, g.nx};
     out.loadedValues = g.u.size();
     try

@@ -27,5 +27,6 @@ if(OMPL_GLIDER_WITH_NETCDF)
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/UnitsAndPacking.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/LandMask.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/NodeCoordinates.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/ForecastFiles.cpp
   )
 endif()

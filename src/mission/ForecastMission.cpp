@@ -90,10 +90,17 @@ std::string flagMessage(std::string what, const ForecastInput &q)
 MissionSpec forecastMission(const ForecastInput &q)
 {
     namespace fs = std::filesystem;
-    const std::string &file = q.file;
+    if (!q.file.empty() && !q.files.empty())
+        throw Error("ForecastInput: both file and files given; give one of them");
+    const std::vector<std::string> files = q.files.empty() ? std::vector<std::string>{q.file} : q.files;
     std::error_code ec;
-    if (!fs::is_regular_file(file, ec))
-        throw Error("--currents: cannot open '" + file + "' (no such file)");
+    for (const std::string &p : files)
+        if (!fs::is_regular_file(p, ec))
+            throw Error("--currents: cannot open '" + p + "' (no such file)");
+    // in messages: the file, or the files of a forecast in several
+    std::string file = files.front();
+    for (std::size_t k = 1; k < files.size(); ++k)
+        file += "," + files[k];
     if (!(q.speed > 0.0) || !std::isfinite(q.speed))
         throw Error("--speed must be > 0 (m/s)");
     if (!(q.depth >= 0.0))
@@ -102,9 +109,11 @@ MissionSpec forecastMission(const ForecastInput &q)
     MissionSpec m;
     m.file = file;
     m.directory = ".";
-    m.name = fs::path(file).stem().string();
+    m.name = fs::path(files.front()).stem().string();
     m.current.type = "netcdf";
-    m.current.file = file;
+    m.current.file = files.front();
+    if (files.size() > 1)
+        m.current.files = files;
     m.current.variables = q.variables;
     m.current.xyInterpolation = q.xyInterpolation;
     m.current.depthInterpolation = q.depthInterpolation;
@@ -116,6 +125,7 @@ MissionSpec forecastMission(const ForecastInput &q)
     m.current.timeUnits = q.timeUnits;
     m.current.steadyRecord = q.steadyRecord;
     m.current.mark.file = file;
+    const std::vector<std::string> list = m.current.forecastFiles();
 
     m.marks["start"] = SourceMark{"--start", 0};
     m.marks["goal"] = SourceMark{"--goal", 0};
@@ -128,7 +138,7 @@ MissionSpec forecastMission(const ForecastInput &q)
     bool geographic = true;
     try
     {
-        geographic = netCdfIsGeographic(file, netCdfLoadOptions(m));
+        geographic = netCdfIsGeographic(list, netCdfLoadOptions(m));
     }
     catch (const Error &e)
     {
@@ -191,7 +201,7 @@ MissionSpec forecastMission(const ForecastInput &q)
     {
         if (!q.departure.empty() && !isNumber(q.departure))
         {
-            const NetCdfTimeAxis axis = readNetCdfTimeAxis(file, o);
+            const NetCdfTimeAxis axis = readNetCdfTimeAxis(list, o);
             if (axis.steady && !axis.dated)
             {
                 try
@@ -205,7 +215,7 @@ MissionSpec forecastMission(const ForecastInput &q)
                 o.departure.clear();  // departs at field time 0, which is that date
             }
         }
-        nc = loadNetCdfCurrents(file, o);
+        nc = loadNetCdfCurrents(list, o);
     }
     catch (const Error &e)
     {

@@ -93,6 +93,8 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     o.field.time = parseInterp1D(c.timeInterpolation);
     o.field.beyond = c.horizonPolicy == "hold_last" ? BeyondForecast::HoldLast : BeyondForecast::Refuse;
     o.field.name = "netcdf:" + c.file;
+    for (std::size_t k = 1; k < c.files.size(); ++k)
+        o.field.name += "," + c.files[k];
     o.maxDepth = m.dive.enabled ? m.dive.params.zMax : m.vehicle.depth;
     if (m.projection.set)
     {
@@ -217,7 +219,7 @@ void MissionProblem::buildField()
     NetCdfCurrents nc;
     try
     {
-        nc = loadNetCdfCurrents(m.current.file, netCdfLoadOptions(m));
+        nc = loadNetCdfCurrents(m.current.forecastFiles(), netCdfLoadOptions(m));
     }
     catch (const Error &e)
     {
@@ -229,6 +231,7 @@ void MissionProblem::buildField()
     field_ = nc.field;
     projection_ = nc.projection;
     projectionScale_ = 1.0;
+    forecastFiles_ = nc.files;
 #else
     throw Error(where(m, m.current.mark) + "field 'current.type': this build of ompl_glider has no NetCDF "
                                            "support (OMPL_GLIDER_WITH_NETCDF=OFF)");

@@ -76,6 +76,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["mission"] = m.name;
     j["source"] = m.file;
     j["current"] = m.current.type;
+    j["forecast_files"] = problem.forecastFiles();
     j["solved"] = p.solved;
     j["status"] = p.status;
     j["reason"] = jtext(p.reason);

@@ -276,6 +276,37 @@ case("mission-netcdf-departure-after-end", ["--mission", "m.yaml", "--out", "{ou
      {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: f.nc}\nstart: {lon: -52.9, lat: 47.1}\n"
                                      "goal: {lon: -52.1, lat: 47.9}\nvehicle: {speed: 0.3}\n"
                                      "departure: {time: 2026-04-01T00:00:00Z}\n"})
+# a forecast in several files (--currents LIST or glob, current.file list or glob): the files must be dated, on one
+# grid and calendar, without a gap in the trip; a pattern must match
+LATER = '"hours since 2026-03-17 00:00:00"'
+case("currents-glob-no-match", ["--currents", "f.nc,hycom_*.nc", START, GOAL, "--out", "{out}"], 2,
+     "no file matches the pattern 'hycom_*.nc'", {"f.cdl": forecast()})
+case("currents-list-empty-item", ["--currents", "f.nc,,f.nc", START, GOAL, "--out", "{out}"], 2,
+     "forecast files: an empty name in the list", {"f.cdl": forecast()})
+case("currents-list-same-file-twice", ["--currents", "f.nc,f.nc", START, GOAL, "--out", "{out}"], 2,
+     "'f.nc' and 'f.nc' cannot be joined as one forecast: both begin at 2026-03-15T00:00:00Z", {"f.cdl": forecast()})
+case("currents-list-grids-differ", ["--currents", "f.nc,g.nc", START, GOAL, "--out", "{out}"], 2,
+     "NetCDF files 'f.nc' and 'g.nc' cannot be joined as one forecast: their grids in the trip's region differ",
+     {"f.cdl": forecast(), "g.cdl": forecast(lat="47.0, 47.25, 47.4, 47.6, 47.8, 48.0",
+                                             replace=[('"hours since 2026-03-15 00:00:00"', LATER)])})
+case("currents-list-undated", ["--currents", "f.nc,g.nc", START, GOAL, "--out", "{out}"], 2,
+     "NetCDF file 'g.nc': time variable 'time': units 'hours' have no date",
+     {"f.cdl": forecast(), "g.cdl": forecast(replace=[('"hours since 2026-03-15 00:00:00"', '"hours"')])})
+case("currents-list-calendars-differ", ["--currents", "g.nc,f.nc", START, GOAL, "--out", "{out}"], 2,
+     "NetCDF files 'g.nc' and 'f.nc' cannot be joined as one forecast: their calendars differ ('360_day' and 'standard'",
+     {"f.cdl": forecast(), "g.cdl": forecast(replace=[('"hours since 2026-03-15 00:00:00"',
+                                                       LATER + ' ; time:calendar = "360_day"')])})
+case("currents-list-gap", ["--currents", "f.nc,g.nc", START, GOAL, "--out", "{out}"], 2,
+     "NetCDF files 'f.nc' and 'g.nc': a gap of 72 h in the forecast within the trip's time window",
+     {"f.cdl": forecast(),
+      "g.cdl": forecast(replace=[('"hours since 2026-03-15 00:00:00"', '"hours since 2026-03-20 00:00:00"')])})
+case("yaml-file-glob-no-match", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:1: field 'current.file': forecast files: no file matches the pattern",
+     {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: \"x_*.nc\"}\n"
+                                     "start: {lon: -52.9, lat: 47.1}\ngoal: {lon: -52.1, lat: 47.9}\n"})
+case("yaml-file-list-empty", ["--mission", "m.yaml", "--out", "{out}"], 2, "m.yaml:1: field 'current.file'",
+     {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: []}\n"
+                                     "start: {lon: -52.9, lat: 47.1}\ngoal: {lon: -52.1, lat: 47.9}\n"})
 # A corrupt classic header found by fuzz_netcdf: an attribute declaring more values than the file holds made
 # NetCDF-C allocate gigabytes inside nc_open; the header is now checked before NetCDF-C opens the file.
 CORRUPT_HEADER = base64.b64decode(

@@ -9,6 +9,7 @@ glider_add_test(test_current_netcdf
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLayouts.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfUnitsAndNames.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfMultiFile.cpp
 
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfGlobal.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfModelGrids.cpp)
@@ -26,4 +27,8 @@ if(TARGET glider_plan)
   add_test(NAME current.glider_plan_forecast_files
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_glider_plan_forecast_files.sh $<TARGET_FILE:glider_plan>)
   set_tests_properties(current.glider_plan_forecast_files PROPERTIES TIMEOUT 600)
+  # glider_plan --currents with a glob and a list of daily files: the combined file's travel time
+  add_test(NAME current.glider_plan_forecast_glob
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_glider_plan_forecast_glob.sh $<TARGET_FILE:glider_plan>)
+  set_tests_properties(current.glider_plan_forecast_glob PROPERTIES TIMEOUT 600)
 endif()

@@ -7,6 +7,9 @@ glider_add_test(test_mission_run ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp ${
   ${CMAKE_CURRENT_LIST_DIR}/TestCoastline.cpp)
 target_link_libraries(test_mission_run PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)
 glider_add_test(test_mission_bathymetry ${CMAKE_CURRENT_LIST_DIR}/TestBathymetry.cpp)
+# a forecast in several files (--currents LIST, current.file list or glob) planned as the combined file
+glider_add_test(test_mission_forecast_files ${CMAKE_CURRENT_LIST_DIR}/TestForecastFiles.cpp)
+target_link_libraries(test_mission_forecast_files PRIVATE netCDF::netcdf)
 # glider_plan --mission / --currents / --speeds and its error cases (issues 5, 6)
 if(TARGET glider_plan)
   add_test(NAME mission.glider_plan_cli

@@ -86,7 +86,7 @@ struct NetCdfCurrentOptions
 };
 
 /// @brief A loaded forecast: the field (x east / y north in metres, t in seconds since the first forecast time of
-/// the file; raw units in Cartesian mode) and what is needed to convert coordinates and times for output.
+/// the file, or of the earliest file of a forecast in several files; raw units in Cartesian mode) and what is needed to convert coordinates and times for output.
 struct NetCdfCurrents
 {
     std::shared_ptr<GriddedCurrentField> field;       ///< ready to plan on
@@ -111,8 +111,14 @@ struct NetCdfCurrents
     /// Bounds of the loaded nodes in the file's coordinates: longitudes from lonMin in [-180, 180) east to lonMax
     /// (beyond 180 when the nodes cross the antimeridian), latitudes; x and y in Cartesian mode (file units).
     double lonMin{0.0}, lonMax{0.0}, latMin{0.0}, latMax{0.0};
-    std::size_t fileValues{0};       ///< values per component in the file variable
+    std::size_t fileValues{0};       ///< values per component in the file variable (summed over the files read)
     std::size_t loadedValues{0};     ///< values per component loaded
+    /// The files read, in time order: the one file, or those of a forecast in several files that hold records
+    /// of the trip's time window (with its stencil margin).
+    std::vector<std::string> files;
+    /// Forecast in several files: records of a file left out because a later file (the newer forecast) starts
+    /// at or before their time, counted over all the files given; 0 for one file.
+    std::size_t droppedRecords{0};
 
     /// @brief Field time (seconds after the first forecast time) of an ISO 8601 date in the file's calendar, or
     /// of a plain number (seconds after the first forecast time). @throws Error for undated files given a date.
@@ -240,4 +246,49 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const NetCdfCurrentOp
 /// automatically).
 NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const std::string &timeName = "",
                                   const std::string &uName = "");
+
+/// @brief A forecast in several files (daily files of one model, each with its own time axis) loaded as one, with
+/// the same options and the same stages as one file (the region, depths, units, land rules of loadNetCdfCurrents()).
+///
+/// - Order: the files are ordered by their first time (a date: each file's "<unit> since <date>" is read on its
+///   own, so the files may use different units and origins), whatever the order given; field time 0 is the first
+///   time of the earliest file. The calendars must agree.
+/// - Overlap: a record of a file at or after the first time of the next file is dropped: the later file (the newer
+///   forecast) gives every time from its first on (NetCdfCurrents::droppedRecords counts them).
+/// - What is read: the records the trip needs are chosen on the joined time axis exactly as in one file
+///   (departure to departure + horizon, plus 2 records of stencil margin on each side), and only the files that
+///   hold some of them are opened for their velocities (NetCdfCurrents::files); the others' time axes only.
+/// - Grids: the files read must give the same grid in the trip's region (the same nodes and coordinates, depth
+///   layers, longitude/latitude or Cartesian, velocity variable names); velocity units may differ (each file's
+///   are converted to m/s).
+/// - Gaps: a step between two files' records within the records read longer than twice the forecast's typical
+///   step (the median step of the joined axis) is refused, naming both files and the dates: interpolating across
+///   a missing day is not what a pilot expects. Gaps outside the trip's records do not matter.
+/// - Land: a node is land when it is land in any file's records of the trip (fill values, a mask); zero-velocity
+///   land (NetCdfCurrentOptions::zeroVelocityIsLand) is decided on all the trip's records of all files, after the
+///   mask.
+/// One path: exactly loadNetCdfCurrents(path, options).
+/// @throws Error naming the file(s) for: no file; a file without time dimension or without dated time axis
+/// (undated files cannot be ordered or joined); different calendars; two files with the same first time (the
+/// same file twice); NetCdfCurrentOptions::steadyRecord; a departure outside the joined forecast; a gap; grids
+/// that differ (naming both files and what differs); and everything loadNetCdfCurrents() refuses in a file.
+NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const NetCdfCurrentOptions &options = {});
+
+/// @brief The time axis of a forecast in several files as loadNetCdfCurrents(paths) joins it (dated, never steady;
+/// originSeconds the first time of the earliest file, size the records after overlaps are dropped, span from the
+/// first to the last). One path: readNetCdfTimeAxis(path, options). @throws Error as the loader does for the
+/// time axes (undated files, calendars, equal first times, steadyRecord).
+NetCdfTimeAxis readNetCdfTimeAxis(const std::vector<std::string> &paths, const NetCdfCurrentOptions &options);
+
+/// @brief netCdfIsGeographic() of every file; @throws Error naming two files that disagree.
+bool netCdfIsGeographic(const std::vector<std::string> &paths, const NetCdfCurrentOptions &options = {});
+
+/// @brief The files of a list: each item a path, or a shell-style pattern (an item with `*`, `?` or `[`) expanded
+/// with glob(3) (its matches in glob's order: by name). Relative items are taken relative to baseDir (empty: as
+/// they are). @throws Error for an empty item, a pattern that matches nothing (naming it) or cannot be expanded,
+/// and an empty list. Existence of plain paths is not checked.
+std::vector<std::string> expandForecastFiles(const std::vector<std::string> &items, const std::string &baseDir = "");
+
+/// @brief expandForecastFiles() of a comma-separated list ("a.nc,b.nc", "hycom_202603*.nc", "a.nc, b_*.nc").
+std::vector<std::string> forecastFileList(const std::string &commaSeparated, const std::string &baseDir = "");
 }  // namespace ompl_glider

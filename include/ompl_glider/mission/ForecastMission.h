@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ompl_glider/Geometry.h"
 #include "ompl_glider/mission/MissionProblem.h"
@@ -19,7 +20,10 @@ namespace ompl_glider
 /// @brief What a forecast mission needs beyond the pipeline's settings.
 struct ForecastInput
 {
-    std::string file;                              ///< the NetCDF forecast
+    std::string file;                              ///< the NetCDF forecast (one file)
+    /// a forecast in several files read as one (loadNetCdfCurrents() on a list: any order, ordered by their
+    /// dates); when given, `file` must be empty
+    std::vector<std::string> files;
     std::map<std::string, std::string> variables;  ///< role (u, v, lon, lat, depth, time, mask) -> variable name
     std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic
     std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima

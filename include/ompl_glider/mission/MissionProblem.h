@@ -49,6 +49,12 @@ public:
     {
         return field_;
     }
+    /// @brief The NetCDF files read for the current, in time order (the one file, or those of a forecast in several
+    /// files that hold the trip's records); empty for an analytic current.
+    const std::vector<std::string> &forecastFiles() const
+    {
+        return forecastFiles_;
+    }
     /// @brief The forbidden regions (null when there are none).
     const std::shared_ptr<const Environment> &getEnvironment() const
     {
@@ -107,6 +113,7 @@ private:
     std::shared_ptr<const Environment> environment_;
     std::shared_ptr<const LocalProjection> projection_;
     double projectionScale_{1.0};  // metres per planning unit
+    std::vector<std::string> forecastFiles_;
     std::vector<MissionPolygon> polygons_;
     Region box_;
     Point2 start_, goal_;

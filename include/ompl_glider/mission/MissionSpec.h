@@ -52,7 +52,16 @@ struct CurrentSpec
     /// Analytic parameters (names per type: meandering_jet B0 epsilon omega theta k c; uniform u v;
     /// linear_shear a; double_gyre amplitude length). Missing ones take the class defaults.
     std::map<std::string, double> parameters;
-    std::string file;                              ///< netcdf: path (relative paths resolved against the mission)
+    std::string file;                              ///< netcdf: path (relative paths resolved against the mission);
+                                                   ///< with several files, the first given (for names and messages)
+    /// netcdf: a forecast in several files read as one (loadNetCdfCurrents() on a list: ordered by their dates),
+    /// resolved and glob patterns expanded; empty: `file` alone
+    std::vector<std::string> files;
+    /// @brief The forecast's files: `files`, else `file` alone.
+    std::vector<std::string> forecastFiles() const
+    {
+        return files.empty() ? std::vector<std::string>{file} : files;
+    }
     std::map<std::string, std::string> variables;  ///< netcdf: role (u, v, lon, lat, x, y, depth, time, mask, angle) -> name
                                                    ///< (mask "none": no land/sea mask variable; angle "none": no grid angle)
     std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic

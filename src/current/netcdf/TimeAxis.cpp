@@ -2,7 +2,9 @@
 // readNetCdfTimeAxis(), which finds the axis exactly as the loader does.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
+#include "ForecastFiles.h"
 #include "NetCdfInternal.h"
 
 namespace ompl_glider
@@ -120,8 +122,8 @@ namespace
 {
 /// The departure in field time (the first forecast time when none is given). @throws Error when it is not a time
 /// of the file, or outside the forecast of an unsteady field.
-double departureOf(const NcFile &f, const NetCdfCurrentOptions &opt, const std::string &tn,
-                   const std::vector<double> &ts, const NetCdfCurrents &out)
+double departureOf(const std::function<Error(const std::string &)> &error, const NetCdfCurrentOptions &opt,
+                   const std::string &tn, const std::vector<double> &ts, const NetCdfCurrents &out)
 {
     double dep = ts.front();
     if (opt.departure.empty())
@@ -132,13 +134,19 @@ double departureOf(const NcFile &f, const NetCdfCurrentOptions &opt, const std::
     }
     catch (const Error &e)
     {
-        throw f.error(std::string("departure: ") + e.what());
+        throw error(std::string("departure: ") + e.what());
     }
     if (!out.steady && (dep < ts.front() || dep > ts.back()))
-        throw f.error("departure " + opt.departure + " (" + out.isoTime(dep) +
+        throw error("departure " + opt.departure + " (" + out.isoTime(dep) +
                       ") is outside the forecast of variable '" + tn + "' [" + out.isoTime(ts.front()) + ", " +
                       out.isoTime(ts.back()) + "]");
     return dep;
+}
+
+/// The errors of one file.
+std::function<Error(const std::string &)> fileErrors(const NcFile &f)
+{
+    return [&f](const std::string &what) { return f.error(what); };
 }
 }  // namespace
 
@@ -153,7 +161,7 @@ AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentO
         if (opt.steadyRecord)
             throw f.error("NetCdfCurrentOptions::steadyRecord given, but " + what);
         out.steady = true;
-        out.departureTime = departureOf(f, opt, "", {0.0}, out);
+        out.departureTime = departureOf(fileErrors(f), opt, "", {0.0}, out);
         return s;
     }
     const int tVar = l.coordVar[std::size_t(l.dimT)];
@@ -163,7 +171,7 @@ AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentO
         out.dated = rec->dated;
         out.calendar = rec->calendar;
         out.originSeconds = rec->originSeconds;
-        out.departureTime = departureOf(f, opt, f.varName(tVar), {0.0}, out);
+        out.departureTime = departureOf(fileErrors(f), opt, f.varName(tVar), {0.0}, out);
         s.idx = {rec->index};
         s.values = {0.0};
         return s;
@@ -176,16 +184,29 @@ AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentO
         out.calendar = tv.calendar;
         out.originSeconds = tv.originSeconds;
     }
-    out.steady = ts.size() == 1;
+    if (ts.size() == 1)
+    {
+        out.steady = true;
+        out.forecastBegin = out.forecastEnd = ts.front();
+        out.departureTime = departureOf(fileErrors(f), opt, tv.name, ts, out);
+        return s;  // the one record: {0}/{0}
+    }
+    return selectForecastTimes(ts, tv.name, opt, out, fileErrors(f));
+}
+
+AxisSelection selectForecastTimes(const std::vector<double> &ts, const std::string &name,
+                                  const NetCdfCurrentOptions &opt, NetCdfCurrents &out,
+                                  const std::function<Error(const std::string &)> &error)
+{
+    AxisSelection s;
+    out.steady = false;
     out.forecastBegin = ts.front();
     out.forecastEnd = ts.back();
-    const double dep = departureOf(f, opt, tv.name, ts, out);
+    const double dep = departureOf(error, opt, name, ts, out);
     out.departureTime = dep;
-    if (out.steady)
-        return s;  // the one record: {0}/{0}
     // departure to departure + horizon, plus 2 forecast steps on each side for cubic/Akima stencils
     const double end = std::isfinite(opt.horizon) ? dep + std::max(0.0, opt.horizon) : ts.back();
-    const Axis ax(ts, "time '" + tv.name + "'");
+    const Axis ax(ts, "time '" + name + "'");
     // the last record at or before the departure, the first at or after the end
     const std::size_t n = ts.size();
     const std::size_t ta = std::min<std::size_t>(

@@ -49,7 +49,7 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
     NetCdfTimeAxis axis;
     try
     {
-        axis = readNetCdfTimeAxis(m.current.file, o);
+        axis = readNetCdfTimeAxis(m.current.forecastFiles(), o);
     }
     catch (const Error &e)
     {
@@ -111,6 +111,43 @@ void readUnitsAndRecord(const Reader &r, const YAML::Node &n, CurrentSpec &c)
 }
 }  // namespace
 
+namespace
+{
+/// current.file: a path or a glob pattern, or a list of them (a forecast in several files), relative to the
+/// mission file; every file must exist.
+void readForecastFiles(const Reader &r, const YAML::Node &n, CurrentSpec &c)
+{
+    const std::string f = "current.file";
+    std::vector<std::string> items;
+    if (n.IsSequence())
+    {
+        if (n.size() == 0)
+            r.fail(n, f, "an empty list: expected NetCDF files or glob patterns");
+        for (std::size_t k = 0; k < n.size(); ++k)
+            items.push_back(joinPath(r.dir(), r.text(n[k], f)));
+    }
+    else
+        items.push_back(joinPath(r.dir(), r.text(n, f)));
+    std::vector<std::string> files = items;
+#if OMPL_GLIDER_WITH_NETCDF
+    try
+    {
+        files = expandForecastFiles(items);
+    }
+    catch (const Error &e)
+    {
+        r.fail(n, f, e.what());
+    }
+#endif
+    for (const std::string &file : files)
+        if (!fileExists(file))
+            r.fail(n, f, "cannot open '" + file + "'");
+    c.file = files.front();
+    if (files.size() > 1)
+        c.files = files;
+}
+}  // namespace
+
 void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "current";
@@ -149,9 +186,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
         return;
     if (!n["file"])
         r.fail(n, f + ".file", "missing: the NetCDF forecast file");
-    c.file = joinPath(r.dir(), r.text(n["file"], f + ".file"));
-    if (!fileExists(c.file))
-        r.fail(n["file"], f + ".file", "cannot open '" + c.file + "'");
+    readForecastFiles(r, n["file"], c);
     if (n["variables"])
     {
         r.checkMap(n["variables"], f + ".variables", {"u", "v", "x", "y", "lon", "lat", "depth", "time", "mask", "angle"});
