@@ -281,6 +281,8 @@ case("mission-netcdf-departure-after-end", ["--mission", "m.yaml", "--out", "{ou
 LATER = '"hours since 2026-03-17 00:00:00"'
 case("currents-glob-no-match", ["--currents", "f.nc,hycom_*.nc", START, GOAL, "--out", "{out}"], 2,
      "no file matches the pattern 'hycom_*.nc'", {"f.cdl": forecast()})
+case("currents-glob-in-directory", ["--currents", "*/f.nc", START, GOAL, "--out", "{out}"], 2,
+     "the pattern '*/f.nc' has wildcards in its directory", {"f.cdl": forecast()})
 case("currents-list-empty-item", ["--currents", "f.nc,,f.nc", START, GOAL, "--out", "{out}"], 2,
      "forecast files: an empty name in the list", {"f.cdl": forecast()})
 case("currents-list-same-file-twice", ["--currents", "f.nc,f.nc", START, GOAL, "--out", "{out}"], 2,

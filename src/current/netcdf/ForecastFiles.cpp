@@ -284,6 +284,10 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
             out.push_back(path);
             continue;
         }
+        // wildcards in the file name only: a pattern reads one directory, never walks a tree
+        if (fs::path(item).parent_path().string().find_first_of("*?[") != std::string::npos)
+            throw Error("forecast files: the pattern '" + item + "' has wildcards in its directory; put them in the "
+                        "file name only (e.g. forecasts/hycom_*.nc)");
         glob_t g{};
         const int rc = ::glob(path.c_str(), 0, nullptr, &g);
         if (rc == GLOB_NOMATCH)
@@ -296,6 +300,14 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
             globfree(&g);
             throw Error("forecast files: cannot expand the pattern '" + path + "' (" +
                         (rc == GLOB_NOSPACE ? "out of memory" : "a directory cannot be read") + ")");
+        }
+        const std::size_t kMaxFiles = 100000;
+        if (g.gl_pathc > kMaxFiles)
+        {
+            const std::size_t n = g.gl_pathc;
+            globfree(&g);
+            throw Error("forecast files: the pattern '" + path + "' matches " + std::to_string(n) +
+                        " files, more than " + std::to_string(kMaxFiles) + "; narrow it");
         }
         for (std::size_t k = 0; k < g.gl_pathc; ++k)
             out.emplace_back(g.gl_pathv[k]);
