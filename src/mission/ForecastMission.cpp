@@ -241,8 +241,23 @@ MissionSpec forecastMission(const ForecastInput &q)
                         (geographic ? ", lat " : ", y ") + num(nc.latMin) + ".." + num(nc.latMax) + ")");
         }
         if (!g.inWater(x, y, q.depth))
+        {
+            // what makes land in this forecast (a cell with a land corner is land)
+            std::string why;
+            auto add = [&why](const std::string &s) { why += (why.empty() ? "" : ", ") + s; };
+            if (nc.fillLandNodes > 0)
+                add("fill values of '" + nc.uVariable + "'/'" + nc.vVariable + "'");
+            if (nc.maskLandNodes > 0)
+                add("the mask variable '" + nc.maskVariable + "'");
+            if (nc.zeroLandNodes > 0)
+                add("u = v = 0 in every record (--no-zero-land turns this off)");
+            const std::string at = q.depthAverage ? "in the depth average over " + num(q.depthAverage->first) + ".." +
+                                                        num(q.depthAverage->second) +
+                                                        " m (land where any depth in it is land or below the sea floor)"
+                                                  : "at depth " + num(q.depth) + " m";
             throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") is on land in '" + file +
-                        "' (u/v are fill values there at depth " + num(q.depth) + " m)");
+                        "' " + at + (why.empty() ? "" : "; the forecast's land is where it has " + why));
+        }
     }
     const double tDep = nc.departureTime;
     // a steady field (no time dimension, a single record, --steady-record) is the same at every time
