@@ -404,3 +404,54 @@ TEST(NetCdfModelGrids, RomsSCoordinateLevelsBecomeDepthsPerColumn)
     const NetCdfCurrents avg = loadNetCdfCurrents(path, o);
     EXPECT_EQ(avg.field->depthAxis().size(), 1u);
 }
+
+TEST(NetCdfModelGrids, RomsEastwardVelocitiesOnRhoPointsAreNotTurnedByTheAngle)
+{
+    // ROMS' u_eastward/v_northward (already east/north, on the rho points, no standard_name) beside the grid's angle
+    TempDir tmp;
+    const RomsGrid grid;
+    const std::string path = tmp.file("roms_avg.nc");
+    const std::size_t nj = RomsGrid::kEta, ni = RomsGrid::kXi;
+    {
+        NcWriter w(path, NC_CLOBBER);
+        const int dt = w.dim("ocean_time", 1), dj = w.dim("eta_rho", nj), di = w.dim("xi_rho", ni);
+        const int vt = w.var("ocean_time", NC_DOUBLE, {dt});
+        w.text(vt, "units", "seconds since 2026-04-01 00:00:00");
+        const int lo = w.var("lon_rho", NC_DOUBLE, {dj, di}), la = w.var("lat_rho", NC_DOUBLE, {dj, di});
+        w.text(lo, "units", "degree_east");
+        w.text(la, "units", "degree_north");
+        const int an = w.var("angle", NC_DOUBLE, {dj, di});
+        w.text(an, "units", "radians");
+        const int u = w.var("u_eastward", NC_FLOAT, {dt, dj, di}), v = w.var("v_northward", NC_FLOAT, {dt, dj, di});
+        w.text(u, "units", "meter second-1");
+        w.text(v, "units", "meter second-1");
+        w.enddef();
+        w.put(vt, {0.0});
+        std::vector<double> lon, lat, pu, pv;
+        for (std::size_t j = 0; j < nj; ++j)
+            for (std::size_t i = 0; i < ni; ++i)
+            {
+                const LonLat g = grid.geo(double(j), double(i));
+                lon.push_back(g.lon);
+                lat.push_back(g.lat);
+                double ue, vn;
+                RomsGrid::current(grid.at(double(j), double(i)), ue, vn);
+                pu.push_back(ue);
+                pv.push_back(vn);
+            }
+        w.put(lo, lon);
+        w.put(la, lat);
+        w.put(an, std::vector<double>(nj * ni, grid.theta));
+        w.put(u, pu);
+        w.put(v, pv);
+    }
+    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    EXPECT_EQ(nc.uVariable, "u_eastward");
+    const LonLat g = grid.geo(6, 7);
+    double ue, vn;
+    RomsGrid::current(grid.at(6, 7), ue, vn);
+    const Point2 p = nc.toLocal(g);
+    const Velocity e = inPlane(nc, g.lon, g.lat, ue, vn), c = nc.field->velocity(p.x, p.y, 0.0, 0.0);
+    EXPECT_NEAR(c.u, e.u, 2e-6);
+    EXPECT_NEAR(c.v, e.v, 2e-6);
+}

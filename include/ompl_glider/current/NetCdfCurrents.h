@@ -48,7 +48,8 @@ struct NetCdfCurrentOptions
 
     std::string angleName;  ///< angle (radians or degrees) from the grid's i direction to east, for velocities given
                             ///< along the grid (ROMS angle, POP ANGLE); empty: a variable named "angle" on the
-                            ///< velocities' grid unless u has an eastward standard_name; "none": none
+                            ///< velocities' grid unless u says it is eastward (standard_name eastward_*, or
+                            ///< "east" in its name, as ROMS' u_eastward); "none": none
 
     // --- land (besides fill values of u/v, which are always land) ---
     std::string maskName;  ///< land/sea mask variable; empty: found automatically (loadNetCdfCurrents()); "none": none

@@ -129,7 +129,8 @@ void findAngle(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
     }
     else
     {
-        if (stdName(f, l.uVar).rfind("eastward", 0) == 0)
+        // velocities that say they are eastward (standard_name, or a name such as ROMS' u_eastward) are not turned
+        if (stdName(f, l.uVar).rfind("eastward", 0) == 0 || lower(l.uName).find("east") != std::string::npos)
             return;
         for (int var = 0; var < f.nvars() && l.angleVar < 0; ++var)
             if (lower(f.varName(var)) == "angle" && f.varDims(var) == grid)
