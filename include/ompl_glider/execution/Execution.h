@@ -1,0 +1,83 @@
+#pragma once
+/// @file Execution.h
+/// @brief Flying a plan in an ocean other than the one it was planned in ([ThompsonICRA] Sec. III-IV; issue 13).
+///
+/// A glider dives with a fixed heading and corrects it only at the surface: at every surfacing (every
+/// ExecutionOptions::surfacingInterval) it takes a GPS fix, a control strategy chooses the heading from the fix,
+/// the time, the plan and the forecast, and the glider holds that heading through still water at its speed until
+/// the next surfacing while the "truth" current carries it (classic RK4 on dx/dt = V h + c_truth(x, t), step
+/// ExecutionOptions::step). Land of the truth field (inWater() / segmentInWater()) and the forbidden regions are
+/// checked along every step: meeting them ends the run as a grounding.
+///
+/// Units are those of the planning frame: positions in its x/y units, times and intervals in field time units,
+/// the speed in x/y units per time unit (MissionSpec::timeUnitSeconds converts from seconds).
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/environment/Environment.h"
+#include "ompl_glider/planners/TveSearch.h"
+
+namespace ompl_glider
+{
+/// @brief How the heading is chosen at each surfacing ([ThompsonICRA] Sec. III).
+enum class ControlStrategy
+{
+    /// Toward the end of the plan's segment active at the fix's time (waypoints advance by time), with the heading
+    /// that, with the forecast current at the fix, makes good that course (crab angle).
+    CurrentSensitive,
+    /// Toward the end of the active segment, ignoring the current.
+    CurrentBlind,
+    /// Toward the goal, without a plan.
+    Greedy
+};
+
+/// @brief The name of a strategy as outputs write it: "current_sensitive", "current_blind", "greedy".
+std::string controlStrategyName(ControlStrategy s);
+
+/// @brief Options of flyPlan().
+struct ExecutionOptions
+{
+    double surfacingInterval{3600.0};  ///< time between surfacings (field time units)
+    double step{60.0};                 ///< RK4 step while submerged (field time units); the last step of an
+                                       ///< interval is shortened to end at the surfacing
+    double radius{0.0};                ///< the goal counts as reached within this distance (x/y units)
+    double depth{0.0};                 ///< depth at which the currents are read (m)
+    double endTime{std::numeric_limits<double>::quiet_NaN()};  ///< the run ends here at the latest (field time);
+                                                               ///< NaN: twice the plan's duration after its start
+};
+
+/// @brief One flown run.
+struct FlownTrack
+{
+    std::vector<TimedWaypoint> fixes;  ///< the start, every surfacing (GPS fixes) and the end of the run
+    std::vector<TimedWaypoint> track;  ///< every integration step
+    std::vector<double> headings;      ///< heading (radians from +x, counter-clockwise) chosen at each fix but the last
+    double plannedArrival{0.0};        ///< the plan's arrival time
+    /// Distance to the goal at the plan's arrival time (the position then, interpolated on the track; at the end of
+    /// the run when it ended earlier by a grounding)
+    double finalDistance{std::numeric_limits<double>::infinity()};
+    double arrivalTime{std::numeric_limits<double>::quiet_NaN()};  ///< first time within radius of the goal (NaN: never)
+    bool reached{false};       ///< the goal was reached within radius before the run ended
+    bool grounded{false};      ///< the run ended on land or in a forbidden region
+    std::string groundedWhy;   ///< what was met, and where (planning frame)
+    double madeGoodSpeed{0.0}; ///< straight distance start -> last position divided by the time flown
+};
+
+/// @brief Flies `plan` (waypoints with planned times; the last is the goal) at `speed` through `truth`, choosing
+/// headings with `strategy` from `forecast` (which may be `truth` itself). The run ends when the goal is reached
+/// (within options.radius, when radius > 0), on a grounding, or at options.endTime. `forbidden` may be null.
+/// @throws Error for an empty plan, a speed or interval that is not positive and finite, or a step that is not.
+FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const CurrentField &forecast,
+                   const CurrentField &truth, const Environment *forbidden, ControlStrategy strategy,
+                   const ExecutionOptions &options);
+
+/// @brief The unit heading (hx, hy) that, added at `speed` to the current c, makes good the unit direction (dx, dy):
+/// the cross-current part of c is cancelled and the rest of the speed goes along d. Where the cross current is
+/// stronger than the speed, the heading points straight against it. [ThompsonICRA] Sec. III (current-sensitive control).
+void crabHeading(double dx, double dy, Velocity c, double speed, double &hx, double &hy);
+}  // namespace ompl_glider

@@ -1,0 +1,185 @@
+// Flying a plan in a "truth" ocean: headings chosen at each surfacing, held while submerged (see Execution.h).
+#include "ompl_glider/execution/Execution.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+std::string controlStrategyName(ControlStrategy s)
+{
+    switch (s)
+    {
+        case ControlStrategy::CurrentSensitive:
+            return "current_sensitive";
+        case ControlStrategy::CurrentBlind:
+            return "current_blind";
+        case ControlStrategy::Greedy:
+            return "greedy";
+    }
+    return "unknown";
+}
+
+void crabHeading(double dx, double dy, Velocity c, double speed, double &hx, double &hy)
+{
+    // c = along * d + cross * n with n the left normal of d; the heading cancels the cross part
+    const double nx = -dy, ny = dx;
+    const double cross = c.u * nx + c.v * ny;
+    if (std::abs(cross) >= speed)
+    {
+        hx = -std::copysign(1.0, cross) * nx;
+        hy = -std::copysign(1.0, cross) * ny;
+        return;
+    }
+    const double s = -cross / speed, a = std::sqrt(1.0 - s * s);
+    hx = a * dx + s * nx;
+    hy = a * dy + s * ny;
+}
+
+namespace
+{
+/// The position on the plan at time t (linear between waypoints; the ends outside the plan's times).
+TimedWaypoint planAt(const std::vector<TimedWaypoint> &plan, double t)
+{
+    if (t <= plan.front().t)
+        return plan.front();
+    for (std::size_t k = 0; k + 1 < plan.size(); ++k)
+        if (t <= plan[k + 1].t)
+        {
+            const TimedWaypoint &a = plan[k], &b = plan[k + 1];
+            const double s = b.t > a.t ? (t - a.t) / (b.t - a.t) : 1.0;
+            return {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), t};
+        }
+    return plan.back();
+}
+
+/// The end of the plan's segment active at time t (the first waypoint planned after t; the goal after the plan).
+TimedWaypoint activeWaypoint(const std::vector<TimedWaypoint> &plan, double t)
+{
+    for (const TimedWaypoint &w : plan)
+        if (w.t > t)
+            return w;
+    return plan.back();
+}
+
+std::string where(double x, double y, double t)
+{
+    std::ostringstream os;
+    os << "(" << x << ", " << y << ") at t = " << t;
+    return os.str();
+}
+}  // namespace
+
+FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const CurrentField &forecast,
+                   const CurrentField &truth, const Environment *forbidden, ControlStrategy strategy,
+                   const ExecutionOptions &o)
+{
+    if (plan.empty())
+        throw Error("flyPlan: the plan has no waypoint");
+    if (!(speed > 0.0) || !std::isfinite(speed))
+        throw Error("flyPlan: the speed must be positive and finite");
+    if (!(o.surfacingInterval > 0.0) || !std::isfinite(o.surfacingInterval) || !(o.step > 0.0) ||
+        !std::isfinite(o.step))
+        throw Error("flyPlan: the surfacing interval and the step must be positive and finite");
+    FlownTrack r;
+    const TimedWaypoint &goal = plan.back();
+    const double t0 = plan.front().t;
+    r.plannedArrival = goal.t;
+    const double end = std::isfinite(o.endTime) ? o.endTime : t0 + 2.0 * std::max(goal.t - t0, o.surfacingInterval);
+    double x = plan.front().x, y = plan.front().y, t = t0;
+    r.fixes.push_back({x, y, t});
+    r.track.push_back({x, y, t});
+    auto distance = [&](double px, double py) { return std::hypot(goal.x - px, goal.y - py); };
+    auto reachedNow = [&](double px, double py) { return o.radius > 0.0 && distance(px, py) <= o.radius; };
+    if (reachedNow(x, y))
+    {
+        r.reached = true;
+        r.arrivalTime = t;
+    }
+    while (!r.reached && !r.grounded && t < end)
+    {
+        // at the surface: the heading for the next dive
+        const TimedWaypoint target = strategy == ControlStrategy::Greedy ? goal : activeWaypoint(plan, t);
+        double dx = target.x - x, dy = target.y - y;
+        const double len = std::hypot(dx, dy);
+        double hx = 0.0, hy = 0.0;
+        if (len > 0.0)
+        {
+            dx /= len;
+            dy /= len;
+            if (strategy == ControlStrategy::CurrentSensitive)
+                crabHeading(dx, dy, forecast.velocity(x, y, o.depth, t), speed, hx, hy);
+            else
+            {
+                hx = dx;
+                hy = dy;
+            }
+        }
+        r.headings.push_back(std::atan2(hy, hx));
+        const double surface = std::min(t + o.surfacingInterval, end);
+        // the dive: RK4 with the heading held
+        auto rate = [&](double px, double py, double pt) {
+            const Velocity c = truth.velocity(px, py, o.depth, pt);
+            return Velocity{speed * hx + c.u, speed * hy + c.v};
+        };
+        while (t < surface - 1e-12 * std::max(1.0, std::abs(surface)))
+        {
+            const double h = std::min(o.step, surface - t);
+            const Velocity k1 = rate(x, y, t);
+            const Velocity k2 = rate(x + 0.5 * h * k1.u, y + 0.5 * h * k1.v, t + 0.5 * h);
+            const Velocity k3 = rate(x + 0.5 * h * k2.u, y + 0.5 * h * k2.v, t + 0.5 * h);
+            const Velocity k4 = rate(x + h * k3.u, y + h * k3.v, t + h);
+            const double nx = x + h / 6.0 * (k1.u + 2.0 * k2.u + 2.0 * k3.u + k4.u);
+            const double ny = y + h / 6.0 * (k1.v + 2.0 * k2.v + 2.0 * k3.v + k4.v);
+            const double nt = t + h;
+            if (!std::isfinite(nx) || !std::isfinite(ny) || !truth.segmentInWater(x, y, nx, ny, o.depth))
+            {
+                r.grounded = true;
+                r.groundedWhy = "land of the truth field between " + where(x, y, t) + " and " + where(nx, ny, nt);
+                break;
+            }
+            if (forbidden && !forbidden->legFree(x, y, t, nx, ny, nt))
+            {
+                r.grounded = true;
+                r.groundedWhy = forbidden->whyLegBlocked(x, y, t, nx, ny, nt) + " between " + where(x, y, t) +
+                                " and " + where(nx, ny, nt);
+                break;
+            }
+            // the goal reached within this step: the first point of the step within radius (its chord)
+            if (o.radius > 0.0 && !r.reached)
+            {
+                const double ex = nx - x, ey = ny - y, fx = x - goal.x, fy = y - goal.y;
+                const double a = ex * ex + ey * ey, b = 2.0 * (ex * fx + ey * fy),
+                             c = fx * fx + fy * fy - o.radius * o.radius;
+                const double disc = b * b - 4.0 * a * c;
+                if (a > 0.0 && disc >= 0.0)
+                {
+                    const double s = (-b - std::sqrt(disc)) / (2.0 * a);
+                    if (s >= 0.0 && s <= 1.0)
+                    {
+                        r.reached = true;
+                        r.arrivalTime = t + s * h;
+                    }
+                }
+            }
+            x = nx;
+            y = ny;
+            t = nt;
+            r.track.push_back({x, y, t});
+            if (r.reached)
+                break;
+        }
+        r.fixes.push_back({x, y, t});
+    }
+    // the distance to the goal at the planned arrival time, on the flown track
+    const TimedWaypoint at = planAt(r.track, std::min(r.plannedArrival, r.track.back().t));
+    r.finalDistance = distance(at.x, at.y);
+    const double flown = r.track.back().t - t0;
+    r.madeGoodSpeed = flown > 0.0 ? std::hypot(r.track.back().x - plan.front().x, r.track.back().y - plan.front().y) / flown
+                                  : 0.0;
+    return r;
+}
+}  // namespace ompl_glider
