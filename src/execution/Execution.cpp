@@ -19,6 +19,8 @@ std::string controlStrategyName(ControlStrategy s)
             return "current_blind";
         case ControlStrategy::Greedy:
             return "greedy";
+        case ControlStrategy::Replan:
+            return "replan";
     }
     return "unknown";
 }
@@ -84,7 +86,11 @@ FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const C
     if (!(o.surfacingInterval > 0.0) || !std::isfinite(o.surfacingInterval) || !(o.step > 0.0) ||
         !std::isfinite(o.step))
         throw Error("flyPlan: the surfacing interval and the step must be positive and finite");
+    if (strategy == ControlStrategy::Replan && (!o.replan || o.replanEvery == 0))
+        throw Error("flyPlan: the replan strategy needs a replanner and replanEvery >= 1");
     FlownTrack r;
+    std::vector<TimedWaypoint> active = plan;  // the plan flown now (replaced by each new plan)
+    unsigned surfacings = 0;
     const TimedWaypoint &goal = plan.back();
     const double t0 = plan.front().t;
     r.plannedArrival = goal.t;
@@ -101,8 +107,18 @@ FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const C
     }
     while (!r.reached && !r.grounded && t < end)
     {
-        // at the surface: the heading for the next dive
-        const TimedWaypoint target = strategy == ControlStrategy::Greedy ? goal : activeWaypoint(plan, t);
+        // at the surface: a new plan (replanning), then the heading for the next dive
+        if (strategy == ControlStrategy::Replan && surfacings++ % o.replanEvery == 0)
+        {
+            std::vector<TimedWaypoint> fresh = o.replan(x, y, t);
+            if (!fresh.empty())
+            {
+                fresh.back() = {goal.x, goal.y, fresh.back().t};
+                active = std::move(fresh);
+                ++r.replans;
+            }
+        }
+        const TimedWaypoint target = strategy == ControlStrategy::Greedy ? goal : activeWaypoint(active, t);
         double dx = target.x - x, dy = target.y - y;
         const double len = std::hypot(dx, dy);
         double hx = 0.0, hy = 0.0;
@@ -110,7 +126,7 @@ FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const C
         {
             dx /= len;
             dy /= len;
-            if (strategy == ControlStrategy::CurrentSensitive)
+            if (strategy == ControlStrategy::CurrentSensitive || strategy == ControlStrategy::Replan)
                 crabHeading(dx, dy, forecast.velocity(x, y, o.depth, t), speed, hx, hy);
             else
             {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "ompl_glider/Exception.h"
 #include "ompl_glider/current/UniformCurrent.h"
 #include "ompl_glider/environment/ForbiddenRegions.h"
 #include "ompl_glider/environment/StaticRegion.h"
@@ -158,4 +159,40 @@ TEST(Execution, AZaStarTvePlanOnTheJetFlownInItsOwnFieldArrivesOnTime)
     EXPECT_LT(std::abs((r.arrivalTime - plan.front().t) - planned), 0.01 * planned)
         << "flown " << r.arrivalTime - plan.front().t << ", planned " << planned;
     EXPECT_LT(r.finalDistance, 0.05);
+}
+
+TEST(Execution, ReplanningWithAStraightLinePlannerAndNoForecastCurrentFliesAsGreedy)
+{
+    // the replanner gives the straight line from the fix to the goal; with a forecast without current the heading
+    // at each surfacing is then the direction to the goal: the fixes of greedy control, whatever the truth does
+    const UniformCurrent forecast(0.0, 0.0), truth(0.05, 0.2);
+    const std::vector<TimedWaypoint> plan{{0, 0, 0}, {30000, 20000, 5000}, {60000, 0, 150000}};
+    ExecutionOptions o;
+    o.radius = 500.0;
+    unsigned calls = 0;
+    o.replan = [&](double x, double y, double t) {
+        ++calls;
+        return std::vector<TimedWaypoint>{{x, y, t}, {60000, 0, t + std::hypot(60000 - x, y) / 0.4}};
+    };
+    const FlownTrack g = flyPlan(plan, 0.4, forecast, truth, nullptr, ControlStrategy::Greedy, o);
+    const FlownTrack r = flyPlan(plan, 0.4, forecast, truth, nullptr, ControlStrategy::Replan, o);
+    ASSERT_EQ(r.fixes.size(), g.fixes.size());
+    for (std::size_t k = 0; k < r.fixes.size(); ++k)
+    {
+        EXPECT_NEAR(r.fixes[k].x, g.fixes[k].x, 1e-6) << k;
+        EXPECT_NEAR(r.fixes[k].y, g.fixes[k].y, 1e-6) << k;
+    }
+    EXPECT_EQ(r.replans, calls);
+    EXPECT_EQ(calls, r.headings.size());  // every surfacing, the start included
+    // every third surfacing: a third of the plans (rounded up)
+    calls = 0;
+    o.replanEvery = 3;
+    const FlownTrack third = flyPlan(plan, 0.4, forecast, truth, nullptr, ControlStrategy::Replan, o);
+    EXPECT_EQ(calls, (third.headings.size() + 2) / 3);
+    // the original plan's detour through (30000, 20000) is flown without replanning: another track
+    const FlownTrack sensitive = flyPlan(plan, 0.4, forecast, truth, nullptr, ControlStrategy::CurrentSensitive, o);
+    EXPECT_GT(std::abs(sensitive.fixes[1].y - g.fixes[1].y), 100.0);
+    // no replanner: refused
+    o.replan = nullptr;
+    EXPECT_THROW(flyPlan(plan, 0.4, forecast, truth, nullptr, ControlStrategy::Replan, o), Error);
 }

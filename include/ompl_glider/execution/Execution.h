@@ -13,6 +13,7 @@
 /// the speed in x/y units per time unit (MissionSpec::timeUnitSeconds converts from seconds).
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -33,11 +34,17 @@ enum class ControlStrategy
     /// Toward the end of the active segment, ignoring the current.
     CurrentBlind,
     /// Toward the goal, without a plan.
-    Greedy
+    Greedy,
+    /// A new plan from the fix at every ExecutionOptions::replanEvery-th surfacing (ExecutionOptions::replan, e.g.
+    /// the planner on the forecast), then flown as CurrentSensitive. Not in [ThompsonICRA]; what operators do.
+    Replan
 };
 
 /// @brief The name of a strategy as outputs write it: "current_sensitive", "current_blind", "greedy".
 std::string controlStrategyName(ControlStrategy s);
+
+/// @brief A new plan from a GPS fix (x, y at time t) to the goal; empty when there is none (the old plan is kept).
+using Replanner = std::function<std::vector<TimedWaypoint>(double x, double y, double t)>;
 
 /// @brief Options of flyPlan().
 struct ExecutionOptions
@@ -49,6 +56,8 @@ struct ExecutionOptions
     double depth{0.0};                 ///< depth at which the currents are read (m)
     double endTime{std::numeric_limits<double>::quiet_NaN()};  ///< the run ends here at the latest (field time);
                                                                ///< NaN: twice the plan's duration after its start
+    Replanner replan;        ///< ControlStrategy::Replan: makes the new plans (required by it)
+    unsigned replanEvery{1}; ///< ControlStrategy::Replan: replan at every n-th surfacing (the start counts)
 };
 
 /// @brief One flown run.
@@ -66,12 +75,15 @@ struct FlownTrack
     bool grounded{false};      ///< the run ended on land or in a forbidden region
     std::string groundedWhy;   ///< what was met, and where (planning frame)
     double madeGoodSpeed{0.0}; ///< straight distance start -> last position divided by the time flown
+    unsigned replans{0};       ///< ControlStrategy::Replan: plans made during the run
 };
 
 /// @brief Flies `plan` (waypoints with planned times; the last is the goal) at `speed` through `truth`, choosing
 /// headings with `strategy` from `forecast` (which may be `truth` itself). The run ends when the goal is reached
 /// (within options.radius, when radius > 0), on a grounding, or at options.endTime. `forbidden` may be null.
-/// @throws Error for an empty plan, a speed or interval that is not positive and finite, or a step that is not.
+/// The plan's last waypoint stays the goal for every strategy, replanning included.
+/// @throws Error for an empty plan, a speed or interval that is not positive and finite, a step that is not, or
+/// ControlStrategy::Replan without options.replan or with replanEvery 0.
 FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const CurrentField &forecast,
                    const CurrentField &truth, const Environment *forbidden, ControlStrategy strategy,
                    const ExecutionOptions &options);
