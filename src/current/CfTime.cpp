@@ -111,6 +111,26 @@ Calendar parseCalendar(const std::string &name)
                 "360_day");
 }
 
+const char *calendarName(Calendar c)
+{
+    switch (c)
+    {
+        case Calendar::Standard:
+            return "standard";
+        case Calendar::ProlepticGregorian:
+            return "proleptic_gregorian";
+        case Calendar::Julian:
+            return "julian";
+        case Calendar::NoLeap:
+            return "noleap";
+        case Calendar::AllLeap:
+            return "all_leap";
+        case Calendar::Day360:
+            return "360_day";
+    }
+    return "standard";
+}
+
 DateTime parseDateTime(const std::string &text)
 {
     const std::string s = trim(text);

@@ -119,4 +119,22 @@ inline MfFile mfDay(int d)
                        : "minutes since 2026-02-28";
     return m;
 }
+/// The forecast written as one file (combined.nc) and as the 4 daily files named by dayName(d), in a fresh
+/// directory.
+struct MfFiles
+{
+    TempDir dir;
+    std::string combined = dir.file("combined.nc");
+    std::vector<std::string> days;
+    template <typename DayName>
+    explicit MfFiles(DayName dayName)
+    {
+        writeMfFile(combined, mfCombined());
+        for (int d = 0; d < 4; ++d)
+        {
+            days.push_back(dir.file(dayName(d)));
+            writeMfFile(days.back(), mfDay(d));
+        }
+    }
+};
 }  // namespace glider_test

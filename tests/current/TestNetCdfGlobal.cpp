@@ -14,18 +14,10 @@
 using namespace ompl_glider;
 using glider_test::GlobalForecastSpec;
 using glider_test::TempDir;
+using glider_test::regionOptions;
 
 namespace
 {
-NetCdfCurrentOptions regionOptions(double lonMin, double lonMax, double latMin, double latMax)
-{
-    NetCdfCurrentOptions o;
-    o.lonMin = lonMin;
-    o.lonMax = lonMax;
-    o.latMin = latMin;
-    o.latMax = latMax;
-    return o;
-}
 
 /// The loaded field at the node (lon, lat) against the file's value there (the analytic field in float32),
 /// eastward/northward rotated into the plane with the projection's east and north directions at the node.
@@ -33,14 +25,11 @@ void expectNodeSpeed(const NetCdfCurrents &nc, double lon, double lat)
 {
     const Point2 p = nc.toLocal({lon, lat});
     const Velocity c = nc.field->velocity(p.x, p.y, 0.0, 0.0);
-    double u, v, ex, ey, nx, ny;
+    double u, v;
     glider_test::globalCurrent(lon, lat, u, v);
-    u = double(float(u));
-    v = double(float(v));
-    nc.projection->eastDirection(lon, lat, ex, ey);
-    nc.projection->northDirection(lon, lat, nx, ny);
-    EXPECT_NEAR(c.u, u * ex + v * nx, 1e-7) << lon << "," << lat;
-    EXPECT_NEAR(c.v, u * ey + v * ny, 1e-7) << lon << "," << lat;
+    const Velocity e = glider_test::inPlane(nc, lon, lat, double(float(u)), double(float(v)));
+    EXPECT_NEAR(c.u, e.u, 1e-7) << lon << "," << lat;
+    EXPECT_NEAR(c.v, e.v, 1e-7) << lon << "," << lat;
     EXPECT_TRUE(nc.field->inWater(p.x, p.y, 0.0)) << lon << "," << lat;
 }
 }  // namespace

@@ -15,17 +15,10 @@ using namespace ompl_glider;
 using glider_test::linspace;
 using glider_test::NcWriter;
 using glider_test::TempDir;
+using glider_test::inPlane;
 
 namespace
 {
-/// Expected current in the local frame of an eastward/northward current (ue, vn) at (lon, lat).
-Velocity rotated(const NetCdfCurrents &nc, double lon, double lat, double ue, double vn)
-{
-    double ex, ey, nx, ny;
-    nc.projection->eastDirection(lon, lat, ex, ey);
-    nc.projection->northDirection(lon, lat, nx, ny);
-    return {ue * ex + vn * nx, ue * ey + vn * ny};
-}
 
 // HYCOM-like: u = 0.1 + 0.01 i + 0.015 j - 0.001 depth + 0.01 hour (exact multiples of the 0.001 packing step)
 const std::vector<double> kHyLon = linspace(280.0, 0.5, 10);  // 280 .. 284.5 = -80 .. -75.5
@@ -106,7 +99,7 @@ TEST(NetCdfLayouts, PackedHycomLikeValuesAtNodesAndBetween)
                 for (double hour : {0.0, 9.0, 33.0})
                 {
                     const Point2 p = nc.toLocal({lon, lat});
-                    const Velocity e = rotated(nc, lon, lat, hyU(lon, lat, z, hour), hyV(lon, lat, z, hour));
+                    const Velocity e = inPlane(nc, lon, lat, hyU(lon, lat, z, hour), hyV(lon, lat, z, hour));
                     const Velocity c = f.velocity(p.x, p.y, z, hour * 3600);
                     EXPECT_NEAR(c.u, e.u, 1e-6) << lon << " " << lat << " " << z << " " << hour;
                     EXPECT_NEAR(c.v, e.v, 1e-6);
@@ -118,7 +111,7 @@ TEST(NetCdfLayouts, PackedHycomLikeValuesAtNodesAndBetween)
                 for (double hour : {1.0, 20.5})
                 {
                     const Point2 p = nc.toLocal({lon, lat});
-                    const Velocity e = rotated(nc, lon, lat, hyU(lon, lat, z, hour), hyV(lon, lat, z, hour));
+                    const Velocity e = inPlane(nc, lon, lat, hyU(lon, lat, z, hour), hyV(lon, lat, z, hour));
                     const Velocity c = f.velocity(p.x, p.y, z, hour * 3600);
                     EXPECT_NEAR(c.u, e.u, 2e-4) << lon << " " << lat << " " << z << " " << hour;
                     EXPECT_NEAR(c.v, e.v, 2e-4);
@@ -169,7 +162,7 @@ TEST(NetCdfLayouts, LoadsOnlyTheRegionDepthsAndTimesTheMissionNeeds)
             {
                 const Point2 p = nc.toLocal({lon, lat});
                 const Velocity a = nc.field->velocity(p.x, p.y, z, 8 * 3600.0);
-                const Velocity e = rotated(nc, lon, lat, hyU(lon + 360, lat, z, 8), hyV(lon + 360, lat, z, 8));
+                const Velocity e = inPlane(nc, lon, lat, hyU(lon + 360, lat, z, 8), hyV(lon + 360, lat, z, 8));
                 EXPECT_NEAR(a.u, e.u, 2e-4);
                 EXPECT_NEAR(a.v, e.v, 2e-4);
                 const Point2 q = all.toLocal({lon, lat});
@@ -249,7 +242,7 @@ TEST(NetCdfLayouts, CmemsLikeFloatDescendingLatitudeWithFill)
         for (double lo : {-9.5, -8.2, -7.6})
         {
             const Point2 p = nc.toLocal({lo, la});
-            const Velocity e = rotated(nc, lo, la, 0.25 + 0.1 * (la - 32.0) + 0.025, 0.05 * (lo + 10.0));
+            const Velocity e = inPlane(nc, lo, la, 0.25 + 0.1 * (la - 32.0) + 0.025, 0.05 * (lo + 10.0));
             const Velocity c = f.velocity(p.x, p.y, 0.494, 43200.0);
             EXPECT_NEAR(c.u, e.u, 1e-4) << la << " " << lo;
             EXPECT_NEAR(c.v, e.v, 1e-4);
@@ -377,7 +370,7 @@ TEST(NetCdfLayouts, CurvilinearNemoLikeGridWithLandAndNoleapCalendar)
             const double lon = nodeLon(i, j), lat = nodeLat(i, j);
             const Point2 p = nc.toLocal({lon, lat});
             EXPECT_TRUE(f.inWater(p.x, p.y, 0.5)) << i << " " << j;
-            const Velocity e = rotated(nc, lon, lat, uf(i, j, 0.125), vf(i, j, 0.125));
+            const Velocity e = inPlane(nc, lon, lat, uf(i, j, 0.125), vf(i, j, 0.125));
             const Velocity c = f.velocity(p.x, p.y, 0.5, 10800.0);
             EXPECT_NEAR(c.u, e.u, 2e-4) << i << " " << j;
             EXPECT_NEAR(c.v, e.v, 2e-4) << i << " " << j;
@@ -400,7 +393,7 @@ TEST(NetCdfLayouts, CurvilinearNemoLikeGridWithLandAndNoleapCalendar)
     const NetCdfCurrents sub = loadNetCdfCurrents(path, o);
     EXPECT_LT(sub.loadedValues, nc.loadedValues);
     p = sub.toLocal({nodeLon(3, 3), nodeLat(3, 3)});
-    const Velocity e = rotated(sub, nodeLon(3, 3), nodeLat(3, 3), uf(3, 3, 0), vf(3, 3, 0));
+    const Velocity e = inPlane(sub, nodeLon(3, 3), nodeLat(3, 3), uf(3, 3, 0), vf(3, 3, 0));
     EXPECT_NEAR(sub.field->velocity(p.x, p.y, 0.5, 0).u, e.u, 2e-4);
 }
 

@@ -19,6 +19,8 @@
 using namespace ompl_glider;
 using glider_test::NcWriter;
 using glider_test::TempDir;
+using glider_test::inPlane;
+using glider_test::regionOptions;
 using glider_test::WrapGrid;
 using glider_test::RomsGrid;
 using glider_test::wrapCurrent;
@@ -27,24 +29,7 @@ using glider_test::kDeg;
 namespace
 {
 
-/// The east/north current rotated into the loaded field's plane at (lon, lat).
-Velocity inPlane(const NetCdfCurrents &nc, double lon, double lat, double ue, double vn)
-{
-    double ex, ey, nx, ny;
-    nc.projection->eastDirection(lon, lat, ex, ey);
-    nc.projection->northDirection(lon, lat, nx, ny);
-    return {ue * ex + vn * nx, ue * ey + vn * ny};
-}
 
-NetCdfCurrentOptions region(double lonMin, double lonMax, double latMin, double latMax)
-{
-    NetCdfCurrentOptions o;
-    o.lonMin = lonMin;
-    o.lonMax = lonMax;
-    o.latMin = latMin;
-    o.latMax = latMax;
-    return o;
-}
 
 void expectWrapNodes(const NetCdfCurrents &nc, const WrapGrid &g, std::size_t j, const std::vector<std::size_t> &cols)
 {
@@ -74,7 +59,7 @@ TEST(NetCdfModelGrids, CurvilinearGridWhoseIndexWrapsIsSubsetAcrossItsSeam)
         const std::string path = tmp.file(repeat ? "repeat.nc" : "wrap.nc");
         g.write(path);
         // a region across the index seam (43W | 40W): the columns on both sides of it, not the whole band
-        const NetCdfCurrents nc = loadNetCdfCurrents(path, region(-52, -28, 10, 30));
+        const NetCdfCurrents nc = loadNetCdfCurrents(path, regionOptions(-52, -28, 10, 30));
         ASSERT_TRUE(nc.field->curvilinear());
         EXPECT_LE(nc.loadedShape[3], 16u) << "columns loaded (repeat " << repeat << ")";
         EXPECT_GE(nc.loadedShape[3], 9u);
@@ -93,10 +78,10 @@ TEST(NetCdfModelGrids, CurvilinearGridWhoseIndexWrapsIsSubsetAcrossItsSeam)
         EXPECT_NEAR(c.u, e.u, 2e-4);
         EXPECT_NEAR(c.v, e.v, 2e-4);
         // a region away from the seam, and one across the value seam (180) near column 73
-        const NetCdfCurrents east = loadNetCdfCurrents(path, region(10, 30, -10, 10));
+        const NetCdfCurrents east = loadNetCdfCurrents(path, regionOptions(10, 30, -10, 10));
         EXPECT_LE(east.loadedShape[3], 14u);
         expectWrapNodes(east, g, 20, {17, 18, 19, 20});
-        const NetCdfCurrents pacific = loadNetCdfCurrents(path, region(170, -170, 0, 20));
+        const NetCdfCurrents pacific = loadNetCdfCurrents(path, regionOptions(170, -170, 0, 20));
         EXPECT_LE(pacific.loadedShape[3], 14u);
         expectWrapNodes(pacific, g, 25, {70, 71, 72, 73});
     }
@@ -174,7 +159,7 @@ TEST(NetCdfModelGrids, RomsCGridIsReadAtItsOwnPointsRotatedAndMasked)
     // a region: fewer rho points, the same values
     const LonLat lo = grid.geo(3, 3), hi = grid.geo(7, 8);
     const NetCdfCurrents sub = loadNetCdfCurrents(
-        path, region(std::min(lo.lon, hi.lon), std::max(lo.lon, hi.lon), std::min(lo.lat, hi.lat),
+        path, regionOptions(std::min(lo.lon, hi.lon), std::max(lo.lon, hi.lon), std::min(lo.lat, hi.lat),
                      std::max(lo.lat, hi.lat)));
     EXPECT_LT(sub.loadedValues, nc.loadedValues);
     const LonLat m = grid.geo(5, 5);

@@ -18,21 +18,11 @@ using namespace glider_test;
 
 namespace
 {
-struct Files
+/// The daily files named so that their alphabetical order is not their time order.
+struct Files : MfFiles
 {
-    TempDir dir;
-    std::string combined = dir.file("combined.nc");
-    std::vector<std::string> days;
-    Files()
+    Files() : MfFiles([](int d) { return std::string(1, char('d' - d)) + "_day" + std::to_string(d) + ".nc"; })
     {
-        writeMfFile(combined, mfCombined());
-        // named so that their alphabetical order is not their time order
-        const char *names[] = {"d_day0.nc", "c_day1.nc", "b_day2.nc", "a_day3.nc"};
-        for (int d = 0; d < 4; ++d)
-        {
-            days.push_back(dir.file(names[d]));
-            writeMfFile(days.back(), mfDay(d));
-        }
     }
 };
 

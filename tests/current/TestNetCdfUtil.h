@@ -1,5 +1,6 @@
 #pragma once
-// Helpers of the gridded/NetCDF tests: a per-test temporary directory and a tiny NetCDF-C writer.
+// Helpers of the gridded/NetCDF tests: a per-test temporary directory, a tiny NetCDF-C writer, the options of a
+// region and the expected current in a loaded field's plane.
 #include <gtest/gtest.h>
 #include <netcdf.h>
 #include <unistd.h>
@@ -7,6 +8,8 @@
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include "ompl_glider/current/NetCdfCurrents.h"
 
 namespace glider_test
 {
@@ -104,6 +107,28 @@ public:
 private:
     int id_{-1};
 };
+
+/// Options that load the region lon [lonMin, lonMax] x lat [latMin, latMax] (lonMax < lonMin across 180).
+inline ompl_glider::NetCdfCurrentOptions regionOptions(double lonMin, double lonMax, double latMin, double latMax)
+{
+    ompl_glider::NetCdfCurrentOptions o;
+    o.lonMin = lonMin;
+    o.lonMax = lonMax;
+    o.latMin = latMin;
+    o.latMax = latMax;
+    return o;
+}
+
+/// The eastward/northward current (ue, vn) at (lon, lat) as the loaded field holds it in its plane: turned by the
+/// projection's east and north directions there.
+inline ompl_glider::Velocity inPlane(const ompl_glider::NetCdfCurrents &nc, double lon, double lat, double ue,
+                                     double vn)
+{
+    double ex, ey, nx, ny;
+    nc.projection->eastDirection(lon, lat, ex, ey);
+    nc.projection->northDirection(lon, lat, nx, ny);
+    return {ue * ex + vn * nx, ue * ey + vn * ny};
+}
 
 /// Regularly spaced values a, a+h, ... (n values).
 inline std::vector<double> linspace(double a, double h, std::size_t n)

@@ -18,19 +18,11 @@ using namespace glider_test;
 
 namespace
 {
-struct Files
+/// The daily files named as a pilot downloads them: hycom_20260301.nc ...
+struct Files : MfFiles
 {
-    TempDir dir;
-    std::string combined = dir.file("combined.nc");
-    std::vector<std::string> days;
-    Files()
+    Files() : MfFiles([](int d) { return "hycom_2026030" + std::to_string(d + 1) + ".nc"; })
     {
-        writeMfFile(combined, mfCombined());
-        for (int d = 0; d < 4; ++d)
-        {
-            days.push_back(dir.file("hycom_2026030" + std::to_string(d + 1) + ".nc"));
-            writeMfFile(days.back(), mfDay(d));
-        }
     }
 };
 

@@ -37,6 +37,18 @@ void expectClearOfLand(const MissionProblem &problem, const std::vector<TimedWay
     }
     EXPECT_GT(samples, 100u);
 }
+
+/// True when the point at fractional grid indices (fi, fj) lies inside a cell with a land corner (land(j, i) of its
+/// four corners, column i + 1 taken modulo `columns` for a grid whose index wraps), at least `margin` of a cell
+/// from the cell's edges: the planner's cells have straight projected edges, the grid's follow its own formula.
+template <typename Land>
+bool inLandCell(double fi, double fj, Land land, std::size_t columns, double margin = 0.01)
+{
+    const std::size_t i = std::size_t(std::floor(fi)), j = std::size_t(std::floor(fj)), i1 = (i + 1) % columns;
+    const bool corner = land(j, i) || land(j + 1, i) || land(j, i1) || land(j + 1, i1);
+    const double a = fi - std::floor(fi), b = fj - std::floor(fj);
+    return corner && a > margin && a < 1 - margin && b > margin && b < 1 - margin;
+}
 }  // namespace
 
 TEST(ForecastModelGrids, RouteAcrossTheIndexSeamOfAWrappingCurvilinearGridGoesRoundAnIslandOnIt)
@@ -67,12 +79,7 @@ TEST(ForecastModelGrids, RouteAcrossTheIndexSeamOfAWrappingCurvilinearGridGoesRo
         double fi = std::fmod(lon + 40.0 - 0.2 * fj, 360.0) / 3.0;
         if (fi < 0)
             fi += 120.0;
-        const std::size_t j = std::size_t(std::floor(fj)), i = std::size_t(std::floor(fi)) % 120;
-        const double m = 0.01;  // of a cell: the planner's cells have straight projected edges
-        const bool corner = grid.land(j, i) || grid.land(j + 1, i) || grid.land(j, (i + 1) % 120) ||
-                            grid.land(j + 1, (i + 1) % 120);
-        const double a = fi - std::floor(fi), b = fj - std::floor(fj);
-        return corner && a > m && a < 1 - m && b > m && b < 1 - m;
+        return inLandCell(fi, fj, [&](std::size_t j, std::size_t i) { return grid.land(j, i); }, 120);
     };
     expectClearOfLand(problem, r.plan.path, 200.0, bad);
     // the route went round the island: north of row 31 or south of row 29 somewhere
@@ -111,11 +118,7 @@ TEST(ForecastModelGrids, RouteOnARomsCGridGoesRoundItsMaskedIsland)
         const Point2 p = grid.proj.forward(lon, lat);
         const double a = (p.x * std::cos(grid.theta) + p.y * std::sin(grid.theta)) / grid.d + 0.5 * RomsGrid::kXi;
         const double b = (-p.x * std::sin(grid.theta) + p.y * std::cos(grid.theta)) / grid.d + 0.5 * RomsGrid::kEta;
-        const std::size_t i = std::size_t(std::floor(a)), j = std::size_t(std::floor(b));
-        const bool corner = RomsGrid::land(j, i) || RomsGrid::land(j + 1, i) || RomsGrid::land(j, i + 1) ||
-                            RomsGrid::land(j + 1, i + 1);
-        const double m = 0.01, fa = a - std::floor(a), fb = b - std::floor(b);
-        return corner && fa > m && fa < 1 - m && fb > m && fb < 1 - m;
+        return inLandCell(a, b, RomsGrid::land, RomsGrid::kXi);
     };
     expectClearOfLand(problem, r.plan.path, 200.0, bad);
 }

@@ -20,6 +20,8 @@ enum class Calendar
 /// @brief Parses a CF calendar attribute (case-insensitive; empty means standard).
 /// @throws Error naming the value and the accepted names.
 Calendar parseCalendar(const std::string &name);
+/// @brief The CF name of a calendar, as parseCalendar() reads it ("standard", "noleap", "360_day", ...).
+const char *calendarName(Calendar c);
 
 /// @brief A calendar date and time of day (seconds may have a fraction). Always UTC.
 struct DateTime

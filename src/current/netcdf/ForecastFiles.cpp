@@ -52,26 +52,6 @@ std::string iso(double calendarSeconds, Calendar c)
     return formatDateTime(dateFromCalendarEpoch(calendarSeconds, c));
 }
 
-const char *calendarName(Calendar c)
-{
-    switch (c)
-    {
-    case Calendar::Standard:
-        return "standard";
-    case Calendar::ProlepticGregorian:
-        return "proleptic_gregorian";
-    case Calendar::Julian:
-        return "julian";
-    case Calendar::NoLeap:
-        return "noleap";
-    case Calendar::AllLeap:
-        return "all_leap";
-    case Calendar::Day360:
-        return "360_day";
-    }
-    return "?";
-}
-
 std::string hoursText(double seconds)
 {
     return numText(seconds / 3600.0) + " h";

@@ -159,6 +159,9 @@ void remapSigmaToDepths(const NcFile &f, const Layout &l, const HorizontalSubset
                     zk[k] = e + (e + hn) * S;
                 }
             }
+            // z levels ascending with k when s is (ROMS: bottom first)
+            const bool up = zk.back() > zk.front();
+            const std::size_t top = up ? nzS - 1 : 0, bottom = up ? 0 : nzS - 1;
             for (std::size_t q = 0; q < nzD; ++q)
             {
                 const double zt = -levels[q];
@@ -168,11 +171,9 @@ void remapSigmaToDepths(const NcFile &f, const Layout &l, const HorizontalSubset
                     w = 0;
                     continue;
                 }
-                // z levels ascending with k when s is (ROMS: bottom first); find the bracketing pair
+                // the bracketing pair of s-levels
                 std::size_t lo = 0, hi = 0;
                 double a = 0.0;
-                const bool up = zk.back() > zk.front();
-                const std::size_t top = up ? nzS - 1 : 0, bottom = up ? 0 : nzS - 1;
                 if (nzS == 1 || zt >= zk[top])
                     lo = hi = top;
                 else if (zt <= zk[bottom])

@@ -133,7 +133,7 @@ void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSub
     if (l.angleVar < 0)
         return;
     const std::size_t nx = h.xIdx.size(), nh = nx * h.yIdx.size();
-    std::vector<double> a(nh);
+    std::vector<double> a(nh), cosA(nh), sinA(nh);
     readScatter(f, l.angleVar, {makeDimRead(h.yIdx), makeDimRead(h.xIdx)}, {nx, 1}, a);
     const Packing p = packingOf(f, l.angleVar);
     for (std::size_t n = 0; n < nh; ++n)
@@ -142,11 +142,14 @@ void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSub
             throw f.error("grid angle variable '" + f.varName(l.angleVar) + "' holds a fill value or a non-finite "
                           "number at (j, i) = (" + std::to_string(h.yIdx[n / nx]) + ", " +
                           std::to_string(h.xIdx[n % nx]) + "); expected an angle at every velocity point");
-        a[n] = (a[n] * p.scale + p.offset) * l.angleToRadians;
+        const double rad = (a[n] * p.scale + p.offset) * l.angleToRadians;
+        cosA[n] = std::cos(rad);
+        sinA[n] = std::sin(rad);
     }
+    // once per node, for every time and depth
     for (std::size_t idx = 0; idx < g.u.size(); ++idx)
     {
-        const double c = std::cos(a[idx % nh]), s = std::sin(a[idx % nh]);
+        const double c = cosA[idx % nh], s = sinA[idx % nh];
         const double u = g.u[idx], v = g.v[idx];
         g.u[idx] = static_cast<float>(u * c - v * s);
         g.v[idx] = static_cast<float>(u * s + v * c);
