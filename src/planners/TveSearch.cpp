@@ -141,9 +141,11 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
     const std::uint64_t cfc0 = travel.costFunctionCalls();
     const std::uint64_t cmc0 = field.callCount();
     TveResult res;
+    LatticeHeuristic *bounds = nullptr;  // set below when TveOptions::tightBounds applies
     auto finish = [&](TveResult &r) -> TveResult & {
         r.costFunctionCalls = travel.costFunctionCalls() - cfc0;
         r.currentModelCalls = field.callCount() - cmc0;
+        r.heuristicSettled = bounds ? bounds->settled() : 0;
         return r;
     };
 
@@ -216,14 +218,6 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
         }
     }
 
-    // A* heuristic ([EichhornRAS] Eq. 1).
-    const double vmax = ctx.speed() + (options.heuristic ? ctx.maxCurrent() : 0.0);
-    auto h = [&](Lattice::VertexId v) -> double {
-        return options.heuristic ? std::hypot(lattice_.x(v) - gx, lattice_.y(v) - gy) / vmax : 0.0;
-    };
-    if (options.heuristic && !(vmax > 0.0 && std::isfinite(vmax)))
-        throw Error("TveSearch: the A* heuristic needs a finite bound of the current speed over the region");
-
     // Land cache: 0 unknown, 1 water, 2 land.
     std::vector<signed char> wet(N, 0);
     auto inWater = [&](Lattice::VertexId v) {
@@ -231,6 +225,30 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
             wet[v] = field.inWater(lattice_.x(v), lattice_.y(v), z) ? 1 : 2;
         return wet[v] == 1;
     };
+
+    // Lower bounds of edges and of the remaining time (TveOptions::tightBounds, LatticeHeuristic).
+    if (options.tightBounds && (options.heuristic || options.zermelo))
+    {
+        if (!bounds_ || bounds_->tBegin() != t0 || bounds_->tEnd() != ctx.region.tMax ||
+            (options.boundCellFactor != 0 && bounds_->cellFactor() != options.boundCellFactor))
+            bounds_ = std::make_unique<LatticeHeuristic>(lattice_, field, ctx.speed(), z, t0, ctx.region.tMax,
+                                                         options.boundCellFactor);
+        bounds_->reset(inWater);
+        bounds = bounds_.get();
+    }
+
+    // A* heuristic ([EichhornRAS] Eq. 1), or max(Eq. 1, LatticeHeuristic).
+    const double vmax = ctx.speed() + (options.heuristic ? ctx.maxCurrent() : 0.0);
+    auto hEuclid = [&](Lattice::VertexId v) -> double {
+        return std::hypot(lattice_.x(v) - gx, lattice_.y(v) - gy) / vmax;
+    };
+    auto h = [&](Lattice::VertexId v) -> double {
+        if (!options.heuristic)
+            return 0.0;
+        return bounds ? std::max(hEuclid(v), (*bounds)(v)) : hEuclid(v);
+    };
+    if (options.heuristic && !(vmax > 0.0 && std::isfinite(vmax)))
+        throw Error("TveSearch: the A* heuristic needs a finite bound of the current speed over the region");
 
     std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> Q;
     d_[s] = t0;
@@ -245,6 +263,26 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
         if (!inWater(v))
             return false;
         const double vx = lattice_.x(v), vy = lattice_.y(v);
+        double hv = -1.0;  // h(v), when known
+        if (bounds)
+        {
+            // No CFC for an edge whose lower bound cannot improve v, or the goal found so far.
+            const double lb = bounds->edgeLowerBound(u, v);
+            if (!(du + lb < d_[v]) || du + lb > ctx.region.tMax)
+            {
+                ++res.boundSkips;
+                return true;
+            }
+            if (d_[g] < kInf)
+            {
+                hv = h(v);
+                if (!(du + lb + std::max(hv, (*bounds)(v)) < d_[g]))
+                {
+                    ++res.boundSkips;
+                    return true;
+                }
+            }
+        }
         const double w = travel.travelTime(ux, uy, vx, vy, du);
         if (!std::isfinite(w))
             return false;
@@ -257,7 +295,10 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
             reached_.push_back(v);
         d_[v] = dv;
         pi_[v] = u;
-        Q.push({dv + h(v), dv, v});
+        if (hv < 0.0)
+            hv = h(v);
+        if (hv < kInf)  // +inf: the goal cannot be reached from v even with the optimistic bounds
+            Q.push({dv + hv, dv, v});
         return true;
     };
 
@@ -268,6 +309,7 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
     const double vAll = ctx.speed() + ctx.maxCurrent();
     if (certify && !(vAll > 0.0 && std::isfinite(vAll)))
         throw Error("TveSearch: certification needs a finite bound of the current speed over the region");
+    auto hEuclidAll = [&](Lattice::VertexId v) { return std::hypot(lattice_.x(v) - gx, lattice_.y(v) - gy) / vAll; };
     std::priority_queue<DeferredEdge, std::vector<DeferredEdge>, std::greater<DeferredEdge>> deferred;
     bool certifying = false;
     const unsigned checkEvery = std::max(1u, options.checkEvery);
@@ -290,7 +332,8 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
                 pruning = false;
                 res.fallbackUsed = true;
                 for (Lattice::VertexId v : prunedAt)
-                    Q.push({d_[v] + h(v), d_[v], v});
+                    if (h(v) < kInf)
+                        Q.push({d_[v] + h(v), d_[v], v});
                 prunedAt.clear();
                 continue;
             }
@@ -306,8 +349,10 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
             }
             deferred.pop();
             // stale (u improved and re-expanded since), or cannot improve v even at the bound
-            const double lenUV = std::hypot(lattice_.x(de.v) - lattice_.x(de.u), lattice_.y(de.v) - lattice_.y(de.u));
-            if (de.du != d_[de.u] || !(de.du + lenUV / vAll < d_[de.v]))
+            const double lbUV =
+                bounds ? bounds->edgeLowerBound(de.u, de.v)
+                       : std::hypot(lattice_.x(de.v) - lattice_.x(de.u), lattice_.y(de.v) - lattice_.y(de.u)) / vAll;
+            if (de.du != d_[de.u] || !(de.du + lbUV < d_[de.v]))
                 continue;
             ++res.reopenedEdges;
             relax(de.u, lattice_.x(de.u), lattice_.y(de.u), de.du, de.v);
@@ -375,8 +420,14 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
                     ++res.prunedEdges;
                     prunedHere = true;
                     if (certify)
-                        deferred.push({du + (std::hypot(vx - ux, vy - uy) + std::hypot(vx - gx, vy - gy)) / vAll,
-                                       du, u, v});
+                    {
+                        // a lower bound of any arrival at the goal through u -> v
+                        const double key =
+                            bounds ? du + bounds->edgeLowerBound(u, v) + std::max(hEuclidAll(v), (*bounds)(v))
+                                   : du + (std::hypot(vx - ux, vy - uy) + std::hypot(vx - gx, vy - gy)) / vAll;
+                        if (key < kInf)
+                            deferred.push({key, du, u, v});
+                    }
                     return;
                 }
                 if (pass == 1 && inCone)

@@ -72,6 +72,7 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
                          "0.:0.25:5.");
     declareParam<double>("certify_tolerance", this, &ZAStarTVE::setCertifyTolerance,
                          &ZAStarTVE::getCertifyTolerance, "-1.:0.05:1.");
+    declareParam<bool>("tight_bounds", this, &ZAStarTVE::setTightBounds, &ZAStarTVE::getTightBounds, "0,1");
     declareParam<unsigned>("sectors", this, &ZAStarTVE::setSectors, &ZAStarTVE::getSectors, "1:1:5");
     declareParam<double>("grid_size", this, &ZAStarTVE::setGridSize, &ZAStarTVE::getGridSize, "0.:0.01:1000.");
     declareParam<unsigned>("zermelo_steps", this, &ZAStarTVE::setZermeloSteps, &ZAStarTVE::getZermeloSteps,

@@ -1,6 +1,7 @@
 # planners/ search: lattice, ZAStarTVE
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Lattice.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/SearchHeuristic.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TveSearch.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ZAStarTVE.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PlannerRegistry.cpp

@@ -1,3 +1,4 @@
 # tests of the lattice search
 glider_add_test(test_lattice ${CMAKE_CURRENT_LIST_DIR}/TestLattice.cpp)
 glider_add_test(test_zastartve ${CMAKE_CURRENT_LIST_DIR}/TestZAStarTVE.cpp)
+glider_add_test(test_search_heuristic ${CMAKE_CURRENT_LIST_DIR}/TestSearchHeuristic.cpp)

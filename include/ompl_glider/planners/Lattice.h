@@ -150,6 +150,43 @@ public:
     /// @brief True when (dx, dy) is (0, 0) or a connectivity offset.
     bool inNeighbourhood(long dx, long dy) const;
 
+    /// @brief Calls f(u) for every vertex u that has v among its successors, except the extra start vertex (for
+    /// backward searches from the goal): the grid neighbours of a grid vertex (the offsets are symmetric), and the
+    /// grid vertices of the goal's anchor neighbourhood for the extra goal vertex.
+    template <typename F>
+    void forEachPredecessor(VertexId v, F &&f) const
+    {
+        if (v == goalExtra())
+        {
+            if (goalIsExtra_)
+                visitNeighbourhood(goalAnchorI_, goalAnchorJ_, true, f);
+            return;
+        }
+        if (v >= numGridVertices())
+            return;
+        visitNeighbourhood(column(v), row(v), false, f);
+    }
+    /// @brief Column i of a grid vertex.
+    long columnOf(VertexId v) const
+    {
+        return column(v);
+    }
+    /// @brief Row j of a grid vertex.
+    long rowOf(VertexId v) const
+    {
+        return row(v);
+    }
+    /// @brief Lower x bound (x of column 0).
+    double xMin() const
+    {
+        return xMin_;
+    }
+    /// @brief Lower y bound (y of row 0).
+    double yMin() const
+    {
+        return yMin_;
+    }
+
 private:
     long column(VertexId v) const
     {

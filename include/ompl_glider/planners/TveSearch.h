@@ -13,13 +13,25 @@
 
 #include "ompl_glider/ompl/GliderContext.h"
 #include "ompl_glider/planners/Lattice.h"
+#include "ompl_glider/planners/SearchHeuristic.h"
 
 namespace ompl_glider
 {
 /// @brief Switches and tunables of the search.
 struct TveOptions
 {
-    bool heuristic{true};   ///< A*: h(u) = |x_u - x_g| / (V + max|c|) ([EichhornRAS] Eq. 1)
+    bool heuristic{true};   ///< A*: h(u) = |x_u - x_g| / (V + max|c|) ([EichhornRAS] Eq. 1), or tighter (tightBounds)
+    /// Lower bounds from LatticeHeuristic (an addition to [EichhornRAS]; default on; used when heuristic or zermelo is
+    /// on): per-cell, per-direction speed bounds over the search's time window give a lower bound of every edge's
+    /// travel time and, by an optimistic backward search from the goal, a consistent heuristic at least as large as
+    /// Eq. 1's. They serve as (1) the A* heuristic max(Eq. 1, h), (2) the certificate of deferred edges
+    /// (d[u] + edge bound + h(v), tight where the current is weak or against the edge), and (3) a test that skips
+    /// the cost-function call of an edge that cannot improve its end vertex (d[u] + edge bound >= d[v]) or the goal
+    /// (d[u] + edge bound + h(v) >= d[goal]). None of them changes the result: the search stays exact on the lattice.
+    bool tightBounds{true};
+    /// Lattice cells per side of the cells of LatticeHeuristic's velocity bounds (0 = automatic: 1 up to 2^16
+    /// lattice cells, then coarser so that there are at most about 2^16 cells).
+    unsigned boundCellFactor{0};
     bool zermelo{true};     ///< Zermelo pruning ([EichhornRAS] Sec. 2.2.2)
     /// Half-width of the accepted course range around phi_opt, radians ([EichhornRAS] Fig. 3, Table 2), before the turn
     /// widening below. Defaults (18 deg, courseExtrapolation 1, turnWidening 1.5) were tuned on the meandering jet
@@ -44,7 +56,7 @@ struct TveOptions
     /// No pruning at vertices within this distance of the goal (0 = prune everywhere but the goal edge): the final
     /// approach of the lattice optimum often turns towards the goal faster than Zermelo's law predicts.
     double goalRadius{0.0};
-    /// Certification of the pruned search (an addition to [EichhornRAS] Table 2; default 0.1; < 0 = off, the paper's
+    /// Certification of the pruned search (an addition to [EichhornRAS] Table 2; default 0; < 0 = off, the paper's
     /// rule). Without it the pruning misses the lattice optimum on some problems (campaign open water +1.25 %, islands
     /// +5.1 %, random pairs up to +76 %; benchmarks/table4/README.md). Pruned edges
     /// are deferred instead of dropped, with the lower bound d[u] + (|uv| + |v - goal|) / (V + max|c|) of any arrival
@@ -53,8 +65,9 @@ struct TveOptions
     /// their own pruned edges deferred again), until the goal is extracted with no such edge left. With tol = 0 the
     /// result is the lattice optimum (as TVE); a larger tol bounds the travel time by (1 + tol) times the optimum on
     /// the lattice and costs fewer CFC. The bound is weak where the current is strong, so tol trades CFC for that
-    /// guarantee (benchmarks/table4/README.md).
-    double certifyTolerance{0.1};
+    /// guarantee (benchmarks/table4/README.md). With tightBounds (default) the bound is d[u] + edge bound + h(v)
+    /// (LatticeHeuristic), tight enough that the default is now 0: the lattice optimum (benchmarks/search/README.md).
+    double certifyTolerance{0.0};
     /// When the pruned search (zermelo) exhausts without reaching the goal, continue without pruning, so that
     /// "no solution" still means "no path on this lattice" (an addition to [EichhornRAS] Table 2, which does not say).
     bool unprunedFallback{true};
@@ -100,6 +113,8 @@ struct TveResult
     std::uint64_t prunedEdges{0};        ///< edges not examined because of Zermelo pruning
     std::uint64_t reopenedEdges{0};      ///< deferred (pruned) edges examined by the certification phase
     std::uint64_t deadEnds{0};           ///< expansions whose Zermelo cone was a dead end (see deadEndFallback)
+    std::uint64_t boundSkips{0};         ///< edges whose CFC the lower bounds saved (TveOptions::tightBounds)
+    std::uint64_t heuristicSettled{0};   ///< vertices settled by LatticeHeuristic's backward search
     bool fallbackUsed{false};            ///< the pruned search exhausted and continued without pruning
     std::string message;                 ///< why the start or goal is invalid
 };
@@ -133,6 +148,8 @@ public:
     /// @brief Search over ctx->region's x/y bounds with the given lattice spacing and sectors.
     /// Throws ompl_glider::Error on a null context, field or travel, or bad lattice parameters.
     TveSearch(std::shared_ptr<const GliderContext> ctx, double gridSize, unsigned sectors);
+    TveSearch(const TveSearch &) = delete;
+    TveSearch &operator=(const TveSearch &) = delete;
 
     /// @brief Runs the search from (sx, sy), departing at t0 (the start state's time, d[s] = t0), to (gx, gy).
     /// terminate() is called every options.checkEvery expansions (and once before the first); when it returns true
@@ -165,5 +182,6 @@ private:
     std::vector<double> d_;
     std::vector<Lattice::VertexId> pi_;
     std::vector<Lattice::VertexId> reached_;
+    std::unique_ptr<LatticeHeuristic> bounds_;  ///< kept while the time window and cell factor stay the same
 };
 }  // namespace ompl_glider

@@ -112,8 +112,19 @@ public:
     {
         return options_.turnWidening;
     }
-    /// @brief Certification tolerance of the pruned search (param "certify_tolerance", default 0.1; < 0 = off, the
-    /// paper's rule; 0 = the lattice optimum as TVE). See TveOptions::certifyTolerance.
+    /// @brief Lower bounds from LatticeHeuristic for the heuristic, the certificate and skipped CFC (param
+    /// "tight_bounds", default on; TveOptions::tightBounds). Off: [EichhornRAS] Eq. 1 only.
+    void setTightBounds(bool on)
+    {
+        options_.tightBounds = on;
+    }
+    /// @brief Whether LatticeHeuristic's bounds are used.
+    bool getTightBounds() const
+    {
+        return options_.tightBounds;
+    }
+    /// @brief Certification tolerance of the pruned search (param "certify_tolerance", default 0, the lattice optimum as
+    /// TVE; < 0 = off, the paper's rule). See TveOptions::certifyTolerance.
     void setCertifyTolerance(double tol);
     /// @brief Certification tolerance of the pruned search.
     double getCertifyTolerance() const

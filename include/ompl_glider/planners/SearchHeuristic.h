@@ -1,0 +1,156 @@
+#pragma once
+/// @file SearchHeuristic.h
+/// @brief A tight admissible and consistent A* heuristic for the lattice search: an optimistic backward search over
+/// the lattice with per-cell, per-direction speed bounds (issue 15), and the per-edge lower bound it is built from.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <queue>
+#include <unordered_map>
+#include <vector>
+
+#include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/planners/Lattice.h"
+
+namespace ompl_glider
+{
+/// @brief Bounds of the current components over a region of space and time: u in [uMin, uMax], v in [vMin, vMax].
+struct VelocityBox
+{
+    double uMin{0.0}, uMax{0.0}, vMin{0.0}, vMax{0.0};
+};
+
+/// @brief Bounds of the current over @p region (x, y and the time window [tMin, tMax]) at depth @p z.
+///
+/// For a MeanderingJet: an interval-arithmetic evaluation of the jet's closed form ([EichhornRAS] Eq. 7-9) over the
+/// region, split into @p timeSlices equal sub-windows and 2 x 2 sub-boxes (each evaluation encloses every value the
+/// formula takes on its box, so the union is a true bound); it costs no current-model call (the model is not sampled).
+/// Every other field: the box [-M, M]^2 with M = field.maxSpeed(region), the field's own bound (no gain, but true).
+/// The components are also clamped to [-M, M].
+VelocityBox currentBounds(const CurrentField &field, const Region &region, unsigned timeSlices = 0);
+
+/// @brief Optimistic lower bound of the travel time of straight legs, from per-cell velocity boxes, and an A*
+/// heuristic from it: an optimistic backward search over the lattice.
+///
+/// **Edge bound.** A vehicle of speed V holding the course e along a leg in current c progresses at the fast root
+/// s = c.e + sqrt(V^2 - (c.n)^2) ([EichhornRAS] Eq. 5-6; n the leg's normal), so s <= max c.e + sqrt(V^2 - min (c.n)^2)
+/// over every current c the leg can meet, and the leg is infeasible where that bound is <= 0 or min |c.n| >= V.
+/// The currents a leg meets lie in the velocity boxes of the cells its bounding box touches, over the time window
+/// [t0, tEnd] of the search (arrivals after tEnd are dropped by the search). So
+/// edgeLowerBound(u, v) = |uv| / sMax <= the travel time of the leg at any departure in the window (+inf when even
+/// the optimistic speed is <= 0). The adaptive integration of CALC-TRAVELTIME ([EichhornIWK] Table III) uses the
+/// current at points of the leg and means of two such currents, whose along-track speeds obey the same bound, so
+/// the computed travel time obeys it too. sMax is also capped by V + maxSpeed (the bound of [EichhornRAS] Eq. 1), so
+/// the bound is never weaker than that of the Euclidean heuristic.
+///
+/// **Heuristic.** h(v) = the smallest sum of edge bounds over the lattice paths from v to the goal (a static
+/// Dijkstra search run backwards from the goal over the lattice with the edge bounds as weights, only through
+/// water vertices). Admissible: the lattice optimum from v, departing at any time in the window, is the sum of
+/// true edge travel times along some lattice path from v to the goal, and each is >= its edge bound, so it is >=
+/// h(v). Consistent: h(u) <= edgeLowerBound(u, v) + h(v) <= w(u, v, t) + h(v) for every edge and departure time
+/// (triangle inequality of shortest paths). The search is resumed lazily ("reverse resumable A*"): h(v) settles
+/// vertices in order of h only until v is settled; labels are kept in a hash map, so memory grows with the
+/// vertices settled, not with the lattice.
+///
+/// Cells: the velocity boxes are kept per coarse cell of cellFactor x cellFactor lattice cells; for each cell and
+/// connectivity offset the largest bound over the cells an edge from that cell can touch is tabulated, so an edge
+/// bound costs a table look-up.
+class LatticeHeuristic
+{
+public:
+    /// @brief Bounds for @p lattice (its start/goal need not be set yet) over the time window [tBegin, tEnd] at the
+    /// travel depth z, vehicle speed V. cellFactor 0 picks one so that there are at most about 2^16 cells.
+    LatticeHeuristic(const Lattice &lattice, const CurrentField &field, double speed, double depth, double tBegin,
+                     double tEnd, unsigned cellFactor = 0);
+
+    /// @brief Starts a new backward search from the lattice's goal (call after Lattice::setGoal). @p inWater tells
+    /// whether a vertex may be used (the search's land test); it must stay valid until the next reset().
+    void reset(std::function<bool(Lattice::VertexId)> inWater);
+
+    /// @brief h(v): lower bound of the remaining travel time from v to the goal (+inf when even the optimistic
+    /// search cannot reach the goal from v). The extra start vertex gets 0 (it has no predecessor edges).
+    double operator()(Lattice::VertexId v);
+
+    /// @brief Lower bound of the travel time of the lattice edge u -> v (any two vertices joined by an edge).
+    double edgeLowerBound(Lattice::VertexId u, Lattice::VertexId v) const;
+
+    /// @brief Time window of the bounds.
+    double tBegin() const
+    {
+        return tBegin_;
+    }
+    /// @brief Time window of the bounds.
+    double tEnd() const
+    {
+        return tEnd_;
+    }
+    /// @brief Lattice cells per coarse cell side.
+    unsigned cellFactor() const
+    {
+        return f_;
+    }
+    /// @brief Vertices settled by the backward search since reset().
+    std::size_t settled() const
+    {
+        return settled_;
+    }
+    /// @brief Velocity box of coarse cell (I, J).
+    const VelocityBox &cellBox(long I, long J) const
+    {
+        return boxes_[static_cast<std::size_t>(I + J * NX_)];
+    }
+    /// @brief Coarse cells along x and y.
+    long cellsX() const
+    {
+        return NX_;
+    }
+    long cellsY() const
+    {
+        return NY_;
+    }
+
+private:
+    /// Speed bound along unit direction (ex, ey) for box b (>= 0; 0 = the leg cannot be flown).
+    double speedBound(const VelocityBox &b, double ex, double ey) const;
+    long cellOfColumn(long i) const
+    {
+        return std::min(i / static_cast<long>(f_), NX_ - 1);
+    }
+    long cellOfRow(long j) const
+    {
+        return std::min(j / static_cast<long>(f_), NY_ - 1);
+    }
+    double genericBound(double x1, double y1, double x2, double y2) const;
+
+    const Lattice &lat_;
+    double V_, vCap_, tBegin_, tEnd_;
+    unsigned f_;
+    long NX_{1}, NY_{1};
+    int n_;                                 // sectors
+    std::vector<VelocityBox> boxes_;        // per coarse cell
+    std::vector<double> invSpeed_;          // per coarse cell x offset: 1 / (largest speed bound), +inf = infeasible
+    std::vector<double> len_;               // per offset: |o| g
+    std::vector<int> offsetIndex_;          // (dx + n) + (dy + n) (2n + 1) -> offset index
+    std::function<bool(Lattice::VertexId)> inWater_;
+
+    struct Label
+    {
+        double d;
+        bool settled;
+    };
+    struct QEntry
+    {
+        double d;
+        Lattice::VertexId v;
+        bool operator>(const QEntry &o) const
+        {
+            return d > o.d || (d == o.d && v > o.v);
+        }
+    };
+    std::unordered_map<Lattice::VertexId, Label> labels_;
+    std::priority_queue<QEntry, std::vector<QEntry>, std::greater<QEntry>> queue_;
+    std::size_t settled_{0};
+};
+}  // namespace ompl_glider

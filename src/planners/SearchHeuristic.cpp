@@ -1,0 +1,347 @@
+#include "ompl_glider/planners/SearchHeuristic.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/MeanderingJet.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
+
+/// A closed interval [lo, hi] (interval arithmetic: every operation encloses all values of the operation on members
+/// of its operands; rounding is covered by the relative margin applied to the final box).
+struct Iv
+{
+    double lo, hi;
+};
+Iv add(Iv a, Iv b)
+{
+    return {a.lo + b.lo, a.hi + b.hi};
+}
+Iv sub(Iv a, Iv b)
+{
+    return {a.lo - b.hi, a.hi - b.lo};
+}
+Iv mul(Iv a, Iv b)
+{
+    const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+    return {*std::min_element(p, p + 4), *std::max_element(p, p + 4)};
+}
+Iv scale(double k, Iv a)
+{
+    return k >= 0 ? Iv{k * a.lo, k * a.hi} : Iv{k * a.hi, k * a.lo};
+}
+/// a / b for b > 0.
+Iv divPos(Iv a, Iv b)
+{
+    return mul(a, Iv{1.0 / b.hi, 1.0 / b.lo});
+}
+Iv sq(Iv a)
+{
+    if (a.lo >= 0)
+        return {a.lo * a.lo, a.hi * a.hi};
+    if (a.hi <= 0)
+        return {a.hi * a.hi, a.lo * a.lo};
+    return {0.0, std::max(a.lo * a.lo, a.hi * a.hi)};
+}
+/// sin over [a.lo, a.hi].
+Iv sinI(Iv a)
+{
+    if (!(a.hi - a.lo < 2.0 * kPi) || !std::isfinite(a.lo) || !std::isfinite(a.hi))
+        return {-1.0, 1.0};
+    double lo = std::min(std::sin(a.lo), std::sin(a.hi)), hi = std::max(std::sin(a.lo), std::sin(a.hi));
+    // a maximum pi/2 + 2 pi m inside?
+    if (std::ceil((a.lo - kPi / 2) / (2 * kPi)) <= std::floor((a.hi - kPi / 2) / (2 * kPi)))
+        hi = 1.0;
+    if (std::ceil((a.lo + kPi / 2) / (2 * kPi)) <= std::floor((a.hi + kPi / 2) / (2 * kPi)))
+        lo = -1.0;
+    return {lo, hi};
+}
+Iv cosI(Iv a)
+{
+    return sinI({a.lo + kPi / 2, a.hi + kPi / 2});
+}
+
+/// Encloses (u, v) of the meandering jet ([EichhornRAS] Eq. 7-9, as MeanderingJet evaluates it) over X x Y x T.
+VelocityBox jetBox(const MeanderingJetParams &p, Iv X, Iv Y, Iv T)
+{
+    const Iv B = add({p.B0, p.B0}, scale(p.epsilon, cosI(add(scale(p.omega, T), {p.theta, p.theta}))));
+    const Iv th = scale(p.k, sub(X, scale(p.c, T)));
+    const Iv sn = sinI(th), cs = cosI(th);
+    const Iv N = sub(Y, mul(B, cs));
+    const Iv B2 = sq(B);
+    const Iv D = [&] {
+        const Iv q = add({1.0, 1.0}, scale(p.k * p.k, mul(B2, sq(sn))));
+        return Iv{std::sqrt(std::max(1.0, q.lo)), std::sqrt(std::max(1.0, q.hi))};
+    }();
+    const Iv s = divPos(N, D);
+    // g = sech^2(s), decreasing in |s|
+    const double sAbsMin = (s.lo <= 0 && s.hi >= 0) ? 0.0 : std::min(std::abs(s.lo), std::abs(s.hi));
+    const double sAbsMax = std::max(std::abs(s.lo), std::abs(s.hi));
+    auto sech2 = [](double x) {
+        const double c = std::cosh(std::min(x, 300.0));
+        return 1.0 / (c * c);
+    };
+    const Iv g{sech2(sAbsMax), sech2(sAbsMin)};
+    const Iv u = divPos(g, D);
+    const double k3 = p.k * p.k * p.k;
+    const Iv Dx = divPos(scale(k3, mul(B2, mul(sn, cs))), D);
+    const Iv sx = sub(divPos(scale(p.k, mul(B, sn)), D), divPos(mul(N, Dx), sq(D)));
+    const Iv v = scale(-1.0, mul(g, sx));
+    return {u.lo, u.hi, v.lo, v.hi};
+}
+}  // namespace
+
+VelocityBox currentBounds(const CurrentField &field, const Region &region, unsigned timeSlices)
+{
+    const double M = field.maxSpeed(region);
+    VelocityBox box{-M, M, -M, M};
+    if (const auto *jet = dynamic_cast<const MeanderingJet *>(&field))
+    {
+        const bool finiteT = std::isfinite(region.tMin) && std::isfinite(region.tMax);
+        const unsigned nt = finiteT ? std::max(1u, timeSlices) : 1u;
+        VelocityBox b{kInf, -kInf, kInf, -kInf};
+        for (unsigned it = 0; it < nt; ++it)
+        {
+            const Iv T = finiteT ? Iv{region.tMin + (region.tMax - region.tMin) * it / nt,
+                                      region.tMin + (region.tMax - region.tMin) * (it + 1) / nt}
+                                 : Iv{-kInf, kInf};
+            for (int a = 0; a < 2; ++a)
+                for (int c = 0; c < 2; ++c)
+                {
+                    const double xm = 0.5 * (region.xMin + region.xMax), ym = 0.5 * (region.yMin + region.yMax);
+                    const Iv X = a ? Iv{xm, region.xMax} : Iv{region.xMin, xm};
+                    const Iv Y = c ? Iv{ym, region.yMax} : Iv{region.yMin, ym};
+                    VelocityBox e = jetBox(jet->params(), X, Y, T);
+                    if (!finiteT)
+                        e = VelocityBox{-M, M, -M, M};
+                    b.uMin = std::min(b.uMin, e.uMin);
+                    b.uMax = std::max(b.uMax, e.uMax);
+                    b.vMin = std::min(b.vMin, e.vMin);
+                    b.vMax = std::max(b.vMax, e.vMax);
+                }
+        }
+        // a small margin for rounding in the interval operations and in the field's own evaluation
+        const double m = 1e-9 * (1.0 + M);
+        if (std::isfinite(b.uMin) && std::isfinite(b.uMax) && std::isfinite(b.vMin) && std::isfinite(b.vMax))
+            box = {b.uMin - m, b.uMax + m, b.vMin - m, b.vMax + m};
+    }
+    box.uMin = std::max(box.uMin, -M);
+    box.vMin = std::max(box.vMin, -M);
+    box.uMax = std::min(box.uMax, M);
+    box.vMax = std::min(box.vMax, M);
+    return box;
+}
+
+LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &field, double speed, double depth,
+                                   double tBegin, double tEnd, unsigned cellFactor)
+  : lat_(lattice), V_(speed), tBegin_(tBegin), tEnd_(tEnd), n_(static_cast<int>(lattice.sectors()))
+{
+    if (!(speed > 0.0) || !std::isfinite(speed))
+        throw Error("LatticeHeuristic: the vehicle speed must be finite and > 0");
+    const long nx = lattice.nx(), ny = lattice.ny();
+    if (cellFactor == 0)
+    {
+        const double cells = static_cast<double>(nx) * static_cast<double>(ny);
+        cellFactor = static_cast<unsigned>(std::max(1.0, std::ceil(std::sqrt(cells / 65536.0))));
+    }
+    f_ = cellFactor;
+    const long f = static_cast<long>(f_);
+    NX_ = std::max(0L, nx - 1) / f + 1;
+    NY_ = std::max(0L, ny - 1) / f + 1;
+    const double g = lattice.gridSize();
+
+    Region whole;
+    whole.xMin = lattice.xMin();
+    whole.yMin = lattice.yMin();
+    whole.xMax = lattice.xMin() + g * static_cast<double>(nx - 1);
+    whole.yMax = lattice.yMin() + g * static_cast<double>(ny - 1);
+    whole.zMin = whole.zMax = depth;
+    whole.tMin = tBegin;
+    whole.tMax = tEnd;
+    const double M = field.maxSpeed(whole);
+    vCap_ = speed + M;
+    if (!std::isfinite(vCap_))
+        throw Error("LatticeHeuristic: the field has no finite bound of the current speed");
+
+    // Time slices of the interval bound: about one per unit of the jet's time scale, at most 64.
+    const unsigned slices =
+        std::isfinite(tEnd - tBegin) ? static_cast<unsigned>(std::clamp(std::ceil(tEnd - tBegin), 1.0, 64.0)) : 1u;
+    boxes_.resize(static_cast<std::size_t>(NX_ * NY_));
+    for (long J = 0; J < NY_; ++J)
+        for (long I = 0; I < NX_; ++I)
+        {
+            Region r = whole;
+            r.xMin = lattice.xMin() + g * static_cast<double>(I * f);
+            r.xMax = lattice.xMin() + g * static_cast<double>((I + 1) * f);
+            r.yMin = lattice.yMin() + g * static_cast<double>(J * f);
+            r.yMax = lattice.yMin() + g * static_cast<double>((J + 1) * f);
+            boxes_[static_cast<std::size_t>(I + J * NX_)] = currentBounds(field, r, slices);
+        }
+
+    const std::vector<LatticeOffset> &offs = lattice.offsets();
+    const std::size_t K = offs.size();
+    const int w = 2 * n_ + 1;
+    offsetIndex_.assign(static_cast<std::size_t>(w * w), -1);
+    len_.resize(K);
+    for (std::size_t k = 0; k < K; ++k)
+    {
+        offsetIndex_[static_cast<std::size_t>((offs[k].dx + n_) + (offs[k].dy + n_) * w)] = static_cast<int>(k);
+        len_[k] = g * std::hypot(static_cast<double>(offs[k].dx), static_cast<double>(offs[k].dy));
+    }
+    // Per coarse cell and offset: the largest speed bound over the coarse cells an edge leaving a vertex of the
+    // cell along the offset can touch (the cells of its bounding box).
+    invSpeed_.assign(static_cast<std::size_t>(NX_ * NY_) * K, 0.0);
+    auto cellRange = [&](long C, int d, long nv, long ncells, long &lo, long &hi) {
+        if (d == 0)
+        {
+            lo = hi = C;  // the edge runs along a vertex line inside the closed cell
+            return;
+        }
+        // lattice cells (spanning vertex lines c .. c + 1) crossed by edges from vertex lines C f .. C f + f - 1
+        long a = C * f + std::min(0, d), b = C * f + f - 1 + std::max(0, d) - 1;
+        a = std::clamp(a, 0L, std::max(0L, nv - 2));
+        b = std::clamp(b, 0L, std::max(0L, nv - 2));
+        lo = std::min(a / f, ncells - 1);
+        hi = std::min(b / f, ncells - 1);
+    };
+    for (long J = 0; J < NY_; ++J)
+        for (long I = 0; I < NX_; ++I)
+            for (std::size_t k = 0; k < K; ++k)
+            {
+                long i0, i1, j0, j1;
+                cellRange(I, offs[k].dx, nx, NX_, i0, i1);
+                cellRange(J, offs[k].dy, ny, NY_, j0, j1);
+                const double L = len_[k] / g;
+                const double ex = offs[k].dx / L, ey = offs[k].dy / L;
+                double s = 0.0;
+                for (long jj = j0; jj <= j1; ++jj)
+                    for (long ii = i0; ii <= i1; ++ii)
+                        s = std::max(s, speedBound(boxes_[static_cast<std::size_t>(ii + jj * NX_)], ex, ey));
+                invSpeed_[static_cast<std::size_t>(I + J * NX_) * K + k] =
+                    s > 0.0 ? 1.0 / s : kInf;
+            }
+}
+
+double LatticeHeuristic::speedBound(const VelocityBox &b, double ex, double ey) const
+{
+    const double ceMax = std::max(ex * b.uMin, ex * b.uMax) + std::max(ey * b.vMin, ey * b.vMax);
+    // c.n with n = (-ey, ex)
+    const double cnLo = std::min(-ey * b.uMin, -ey * b.uMax) + std::min(ex * b.vMin, ex * b.vMax);
+    const double cnHi = std::max(-ey * b.uMin, -ey * b.uMax) + std::max(ex * b.vMin, ex * b.vMax);
+    const double cnMin = (cnLo <= 0.0 && cnHi >= 0.0) ? 0.0 : std::min(std::abs(cnLo), std::abs(cnHi));
+    if (cnMin >= V_)
+        return 0.0;  // |c.n| >= V everywhere: the leg cannot be held ([EichhornRAS] Eq. 5)
+    const double s = std::min(ceMax + std::sqrt(V_ * V_ - cnMin * cnMin), vCap_);
+    return s > 0.0 ? s * (1.0 + 1e-12) : 0.0;
+}
+
+double LatticeHeuristic::genericBound(double x1, double y1, double x2, double y2) const
+{
+    const double len = std::hypot(x2 - x1, y2 - y1);
+    if (!(len > 0.0))
+        return 0.0;
+    const double g = lat_.gridSize();
+    const double ex = (x2 - x1) / len, ey = (y2 - y1) / len;
+    auto cellIdx = [&](double c, double origin, long ncells) {
+        const double fc = std::floor((c - origin) / (g * f_));
+        return static_cast<long>(std::clamp(fc, 0.0, static_cast<double>(ncells - 1)));
+    };
+    // the cells covering the segment's bounding box (and the neighbours of cells whose boundary it touches)
+    const long i0 = std::max(0L, cellIdx(std::min(x1, x2), lat_.xMin(), NX_) - 1);
+    const long i1 = std::min(NX_ - 1, cellIdx(std::max(x1, x2), lat_.xMin(), NX_) + 1);
+    const long j0 = std::max(0L, cellIdx(std::min(y1, y2), lat_.yMin(), NY_) - 1);
+    const long j1 = std::min(NY_ - 1, cellIdx(std::max(y1, y2), lat_.yMin(), NY_) + 1);
+    double s = 0.0;
+    for (long j = j0; j <= j1; ++j)
+        for (long i = i0; i <= i1; ++i)
+            s = std::max(s, speedBound(boxes_[static_cast<std::size_t>(i + j * NX_)], ex, ey));
+    return s > 0.0 ? len / s : kInf;
+}
+
+double LatticeHeuristic::edgeLowerBound(Lattice::VertexId u, Lattice::VertexId v) const
+{
+    const std::size_t G = lat_.numGridVertices();
+    if (u < G && v < G)
+    {
+        const long iu = lat_.columnOf(u), ju = lat_.rowOf(u);
+        const long dx = lat_.columnOf(v) - iu, dy = lat_.rowOf(v) - ju;
+        const int w = 2 * n_ + 1;
+        if (std::labs(dx) <= n_ && std::labs(dy) <= n_)
+        {
+            const int k = offsetIndex_[static_cast<std::size_t>((dx + n_) + (dy + n_) * w)];
+            if (k >= 0)
+            {
+                const std::size_t C = static_cast<std::size_t>(cellOfColumn(iu) + cellOfRow(ju) * NX_);
+                const double inv = invSpeed_[C * len_.size() + static_cast<std::size_t>(k)];
+                return std::isfinite(inv) ? len_[static_cast<std::size_t>(k)] * inv : kInf;
+            }
+        }
+    }
+    return genericBound(lat_.x(u), lat_.y(u), lat_.x(v), lat_.y(v));
+}
+
+void LatticeHeuristic::reset(std::function<bool(Lattice::VertexId)> inWater)
+{
+    inWater_ = std::move(inWater);
+    labels_.clear();
+    queue_ = {};
+    settled_ = 0;
+    const Lattice::VertexId g = lat_.goal();
+    if (g == Lattice::kNone)
+        return;
+    labels_[g] = {0.0, false};
+    queue_.push({0.0, g});
+}
+
+double LatticeHeuristic::operator()(Lattice::VertexId v)
+{
+    if (v == lat_.startExtra() && v != lat_.goal())
+        return 0.0;
+    {
+        const auto it = labels_.find(v);
+        if (it != labels_.end() && it->second.settled)
+            return it->second.d;
+    }
+    while (!queue_.empty())
+    {
+        const QEntry e = queue_.top();
+        queue_.pop();
+        Label &lab = labels_[e.v];
+        if (lab.settled || e.d > lab.d)
+            continue;
+        lab.settled = true;
+        ++settled_;
+        const Lattice::VertexId x = e.v;
+        lat_.forEachPredecessor(x, [&](Lattice::VertexId u) {
+            const double w = edgeLowerBound(u, x);
+            if (!std::isfinite(w))
+                return;
+            const double nd = e.d + w;
+            auto [it, inserted] = labels_.try_emplace(u, Label{nd, false});
+            if (!inserted)
+            {
+                if (it->second.settled || !(nd < it->second.d))
+                    return;
+                it->second.d = nd;
+            }
+            if (inWater_ && !inWater_(u))
+            {
+                it->second.d = kInf;  // land: never enters the search
+                it->second.settled = true;
+                return;
+            }
+            queue_.push({nd, u});
+        });
+        if (x == v)
+            return e.d;
+    }
+    return kInf;
+}
+}  // namespace ompl_glider
