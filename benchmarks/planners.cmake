@@ -1,3 +1,6 @@
 # benchmarks of planners
 # Table 4 of [EichhornRAS]: CFC / CMC of TVE, A*TVE, ZTVE, ZA*TVE (lattice search).
 glider_add_benchmark(bench_table4 ${CMAKE_CURRENT_LIST_DIR}/table4/bench_table4.cpp)
+# Issue 15: CFC / CMC / expansions / wall time of the search configurations on the repository's problems, 100 random
+# jet pairs and a 10^6-vertex gridded forecast (benchmarks/search/README.md).
+glider_add_benchmark(bench_search ${CMAKE_CURRENT_LIST_DIR}/search/bench_search.cpp)

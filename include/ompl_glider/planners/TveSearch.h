@@ -78,6 +78,12 @@ struct TveOptions
     /// runs into land, or is infeasible against the current), examine the vertex's other edges too (an addition to
     /// [EichhornRAS] Table 2; costs cost-function calls only at such dead ends).
     bool deadEndFallback{false};
+    /// Latest arrival accepted by this search (NaN = the end of the planning window, region.tMax; a later value is
+    /// clamped to it). Arrivals after it are dropped, and LatticeHeuristic's bounds cover only [t0, deadline], so a
+    /// short deadline gives tighter bounds. The result is the same as with the full window whenever the optimum
+    /// arrives by the deadline (the labels TVE computes are built in increasing order of arrival time, so those up to
+    /// the deadline never use a later arrival); otherwise the search exhausts.
+    double deadline{std::numeric_limits<double>::quiet_NaN()};
     /// Expansions between two calls of the termination callback.
     unsigned checkEvery{8};
 };

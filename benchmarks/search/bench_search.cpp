@@ -1,0 +1,347 @@
+// bench_search (issue 15): cost-function calls (CFC), current-model calls (CMC), expanded vertices, wall time and
+// travel time against TVE of the lattice search configurations, on
+//   - the repository's problems: the five Table 4 starts ([EichhornRAS] Table 4, goal (7.6, 1.2)) and the four
+//     campaign problems (benchmarks/campaign/CampaignProblems.h), meandering jet, grid 0.4, 3 sectors;
+//   - N random start/goal pairs of the jet (default 100; lattice points, seed 1, as bench_table4 --random-pairs),
+//     with the totals over all pairs and over the pairs whose goal lies upstream of the jet (west of the start:
+//     the jet flows east everywhere, u > 0);
+//   - a gridded forecast (synthetic meanders on a 201 x 161 node grid, 11 forecast times) searched on a lattice of
+//     about 10^6 vertices, with the peak resident memory.
+// Prints Markdown tables. Single thread.
+//
+// Usage: bench_search [--random-pairs N] [--per-pair] [--no-gridded] [--gridded-tve] [--gridded-grid G]
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <ompl/util/Console.h>
+
+#include "../campaign/CampaignProblems.h"
+#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/ompl/GliderSetup.h"
+#include "ompl_glider/planners/TveSearch.h"
+
+using namespace ompl_glider;
+
+namespace
+{
+struct Config
+{
+    const char *name;
+    TveOptions options;
+};
+
+std::vector<Config> makeConfigs()
+{
+    std::vector<Config> c;
+    TveOptions tve;
+    tve.heuristic = tve.zermelo = false;
+    c.push_back({"TVE", tve});
+    TveOptions astarEq1;
+    astarEq1.zermelo = false;
+    astarEq1.tightBounds = false;
+    c.push_back({"A*TVE, Eq. 1", astarEq1});
+    TveOptions before;  // the default before issue 15: Eq. 1 bounds, certify_tolerance 0.1
+    before.tightBounds = false;
+    before.certifyTolerance = 0.1;
+    c.push_back({"ZA*TVE, before (Eq. 1, tol 0.1)", before});
+    TveOptions beforeExact = before;
+    beforeExact.certifyTolerance = 0.0;
+    c.push_back({"ZA*TVE, Eq. 1, tol 0", beforeExact});
+    TveOptions astarTight;
+    astarTight.zermelo = false;
+    c.push_back({"A*TVE, tight bounds", astarTight});
+    c.push_back({"ZA*TVE, default (tight, tol 0)", TveOptions{}});
+    if (std::getenv("BENCH_ORACLE"))
+    {
+        c.push_back({"oracle: ZA*TVE, deadline = TVE arrival", TveOptions{}});
+        TveOptions a;
+        a.zermelo = false;
+        c.push_back({"oracle: A*TVE, deadline = TVE arrival", a});
+    }
+    return c;
+}
+
+struct Run
+{
+    TveOutcome outcome{TveOutcome::Exhausted};
+    double time{0.0};
+    std::uint64_t cfc{0}, cmc{0}, expanded{0};
+    double wall{0.0};  // seconds
+};
+
+Run runOnce(TveSearch &search, double sx, double sy, double t0, double gx, double gy, const TveOptions &o)
+{
+    const auto a = std::chrono::steady_clock::now();
+    const TveResult r = search.run(sx, sy, t0, gx, gy, o);
+    const auto b = std::chrono::steady_clock::now();
+    Run out;
+    out.outcome = r.outcome;
+    out.time = r.travelTime;
+    out.cfc = r.costFunctionCalls;
+    out.cmc = r.currentModelCalls;
+    out.expanded = r.expansions;
+    out.wall = std::chrono::duration<double>(b - a).count();
+    return out;
+}
+
+double relDev(const Run &r, const Run &tve)
+{
+    if (r.outcome != TveOutcome::Exact || tve.outcome != TveOutcome::Exact)
+        return r.outcome == tve.outcome ? 0.0 : INFINITY;
+    return std::abs(r.time / tve.time - 1.0);
+}
+
+void printRow(const char *problem, const char *config, const Run &r, const Run &tve)
+{
+    std::printf("| %s | %s | %llu | %llu | %llu | %.1f | ", problem, config, static_cast<unsigned long long>(r.cfc),
+                static_cast<unsigned long long>(r.cmc), static_cast<unsigned long long>(r.expanded), 1e3 * r.wall);
+    if (r.outcome == TveOutcome::Exact)
+        std::printf("%.9f | %.1e |\n", r.time, relDev(r, tve));
+    else
+        std::printf("no path | %s |\n", r.outcome == tve.outcome ? "same" : "DIFFERENT");
+}
+
+struct Total
+{
+    double cfc{0}, cmc{0}, expanded{0}, wall{0}, maxDev{0};
+    int pairs{0}, equal{0};
+    void add(const Run &r, const Run &tve)
+    {
+        cfc += double(r.cfc);
+        cmc += double(r.cmc);
+        expanded += double(r.expanded);
+        wall += r.wall;
+        const double d = relDev(r, tve);
+        maxDev = std::max(maxDev, d);
+        ++pairs;
+        if (d <= 1e-9)
+            ++equal;
+    }
+};
+
+void printTotals(const char *title, const std::vector<Config> &configs, const std::vector<Total> &tot)
+{
+    std::printf("\n%s\n\n| configuration | CFC | CMC | expanded | wall [ms] | TVE / config CFC | TVE / config CMC | "
+                "travel time = TVE (1e-9 rel.) | max rel. deviation |\n|---|---|---|---|---|---|---|---|---|\n",
+                title);
+    for (std::size_t c = 0; c < configs.size(); ++c)
+        std::printf("| %s | %.0f | %.0f | %.0f | %.0f | %.2fx | %.2fx | %d / %d | %.1e |\n", configs[c].name,
+                    tot[c].cfc, tot[c].cmc, tot[c].expanded, 1e3 * tot[c].wall, tot[0].cfc / tot[c].cfc,
+                    tot[0].cmc / tot[c].cmc, tot[c].equal, tot[c].pairs, tot[c].maxDev);
+}
+
+long peakRssKb()
+{
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_maxrss;
+}
+
+/// Synthetic forecast: meanders of a jet across the box, drifting east, on a 201 x 161 node grid (x in [0, 50],
+/// y in [-20, 20]), 11 forecast times 0, 10, ..., 100; speeds up to about 1 (V = 0.5), calm water far from the jets.
+std::shared_ptr<GriddedCurrentField> makeForecast()
+{
+    GriddedData d;
+    d.nx = 201;
+    d.ny = 161;
+    for (std::size_t i = 0; i < d.nx; ++i)
+        d.x.push_back(0.25 * double(i));
+    for (std::size_t j = 0; j < d.ny; ++j)
+        d.y.push_back(-20.0 + 0.25 * double(j));
+    d.time.clear();
+    for (int t = 0; t <= 10; ++t)
+        d.time.push_back(10.0 * t);
+    const MeanderingJet jet;  // two jets: the jet's closed form at y - 8 and (reversed) at y + 8
+    for (double t : d.time)
+        for (std::size_t j = 0; j < d.ny; ++j)
+            for (std::size_t i = 0; i < d.nx; ++i)
+            {
+                const double x = d.x[i], y = d.y[j];
+                const Velocity a = jet.velocity(x, y - 8.0, 0.0, t);
+                const Velocity b = jet.velocity(x + 3.0, y + 8.0, 0.0, t);
+                d.u.push_back(static_cast<float>(a.u - b.u));
+                d.v.push_back(static_cast<float>(a.v - b.v));
+            }
+    GriddedFieldOptions o;
+    o.name = "synthetic forecast";
+    o.beyond = BeyondForecast::HoldLast;
+    return std::make_shared<GriddedCurrentField>(std::move(d), o);
+}
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    int randomPairs = 100;
+    bool perPair = false, gridded = true, griddedTve = false;
+    double griddedGrid = 0.045;
+    for (int i = 1; i < argc; ++i)
+    {
+        const std::string a = argv[i];
+        if (a == "--random-pairs" && i + 1 < argc)
+            randomPairs = std::atoi(argv[++i]);
+        else if (a == "--per-pair")
+            perPair = true;
+        else if (a == "--no-gridded")
+            gridded = false;
+        else if (a == "--gridded-tve")
+            griddedTve = true;
+        else if (a == "--gridded-grid" && i + 1 < argc)
+            griddedGrid = std::atof(argv[++i]);
+        else
+        {
+            std::fprintf(stderr,
+                         "usage: %s [--random-pairs N] [--per-pair] [--no-gridded] [--gridded-tve] [--gridded-grid G]\n",
+                         argv[0]);
+            return 2;
+        }
+    }
+    const std::vector<Config> configs = makeConfigs();
+    auto jet = std::make_shared<MeanderingJet>();
+    bool allEqual = true;
+
+    std::printf("Meandering jet ([EichhornRAS] Sec. 6.1), V = 0.5, grid 0.4, 3 sectors, horizon 60.\n"
+                "CFC = travel-time calls, CMC = current-model calls (velocity + Jacobian), expanded = vertices taken "
+                "from the queue.\n\n");
+    std::printf("| problem | configuration | CFC | CMC | expanded | wall [ms] | travel time | rel. deviation from TVE "
+                "|\n|---|---|---|---|---|---|---|---|\n");
+    {
+        GliderProblem p;
+        p.field = jet;
+        p.startX = p.startY = p.goalX = p.goalY = 0.0;
+        auto ctx = makeGliderContext(p);
+        TveSearch search(ctx, 0.4, 3);
+        const double starts[5][2] = {{0.4, -3.2}, {2.0, -2.4}, {3.2, -1.6}, {4.8, -0.4}, {6.0, 0.4}};
+        for (int s = 0; s < 5; ++s)
+        {
+            char name[64];
+            std::snprintf(name, sizeof name, "Table 4 SP%d", s + 1);
+            Run tve;
+            for (std::size_t c = 0; c < configs.size(); ++c)
+            {
+                const Run r = runOnce(search, starts[s][0], starts[s][1], 0.0, 7.6, 1.2, configs[c].options);
+                if (c == 0)
+                    tve = r;
+                printRow(name, configs[c].name, r, tve);
+            }
+        }
+    }
+    for (const CampaignProblem &cp : makeCampaignProblems(jet))
+    {
+        auto ctx = makeGliderContext(cp.problem);
+        TveSearch search(ctx, 0.4, 3);
+        Run tve;
+        for (std::size_t c = 0; c < configs.size(); ++c)
+        {
+            const Run r = runOnce(search, cp.problem.startX, cp.problem.startY, cp.problem.t0, cp.problem.goalX,
+                                  cp.problem.goalY, configs[c].options);
+            if (c == 0)
+                tve = r;
+            const std::string name = "campaign " + cp.name;
+            printRow(name.c_str(), configs[c].name, r, tve);
+        }
+    }
+
+    if (randomPairs > 0)
+    {
+        GliderProblem p;
+        p.field = jet;
+        p.startX = p.startY = p.goalX = p.goalY = 0.0;
+        auto ctx = makeGliderContext(p);
+        TveSearch search(ctx, 0.4, 3);
+        std::mt19937 rng(1);
+        std::uniform_int_distribution<int> ix(1, 24), iy(1, 19);
+        std::vector<Total> all(configs.size()), up(configs.size());
+        if (perPair)
+            std::printf("\n| pair | start | goal | configuration | CFC | CMC | expanded | wall [ms] | travel time | "
+                        "rel. deviation from TVE |\n|---|---|---|---|---|---|---|---|---|---|\n");
+        int n = 0;
+        while (n < randomPairs)
+        {
+            const double sx = 0.4 * ix(rng), sy = -4.0 + 0.4 * iy(rng), gx = 0.4 * ix(rng), gy = -4.0 + 0.4 * iy(rng);
+            if (sx == gx && sy == gy)
+                continue;
+            ++n;
+            const bool upstream = gx < sx;
+            Run tve;
+            for (std::size_t c = 0; c < configs.size(); ++c)
+            {
+                TveOptions o = configs[c].options;
+                if (std::strncmp(configs[c].name, "oracle", 6) == 0)
+                    o.deadline = tve.time * (1 + 1e-9);
+                const Run r = runOnce(search, sx, sy, 0.0, gx, gy, o);
+                if (c == 0)
+                    tve = r;
+                all[c].add(r, tve);
+                if (upstream)
+                    up[c].add(r, tve);
+                if (std::strcmp(configs[c].name, "ZA*TVE, default (tight, tol 0)") == 0 && relDev(r, tve) > 1e-9)
+                    allEqual = false;
+                if (perPair)
+                {
+                    std::printf("| %d%s | (%.1f, %.1f) | (%.1f, %.1f) | %s | %llu | %llu | %llu | %.1f | %.9f | %.1e |\n",
+                                n, upstream ? " up" : "", sx, sy, gx, gy, configs[c].name,
+                                static_cast<unsigned long long>(r.cfc), static_cast<unsigned long long>(r.cmc),
+                                static_cast<unsigned long long>(r.expanded), 1e3 * r.wall, r.time,
+                                relDev(r, tve));
+                }
+            }
+        }
+        char title[160];
+        std::snprintf(title, sizeof title, "Totals over %d random jet pairs (lattice points, seed 1):", randomPairs);
+        printTotals(title, configs, all);
+        std::snprintf(title, sizeof title, "Totals over the %d of them whose goal lies upstream (west) of the start:",
+                      up[0].pairs);
+        printTotals(title, configs, up);
+    }
+
+    if (gridded)
+    {
+        auto field = makeForecast();
+        GliderProblem p;
+        p.field = field;
+        p.xMin = 0.0;
+        p.xMax = 50.0;
+        p.yMin = -20.0;
+        p.yMax = 20.0;
+        p.horizon = 100.0;
+        p.startX = 2.0;
+        p.startY = -15.0;
+        p.goalX = 40.0;
+        p.goalY = 12.0;
+        auto ctx = makeGliderContext(p);
+        const long rss0 = peakRssKb();
+        TveSearch search(ctx, griddedGrid, 3);
+        std::printf("\nGridded forecast (synthetic, %zu x %zu nodes, %zu times), lattice %ld x %ld = %.2f million "
+                    "vertices (grid %g, 3 sectors), (%g, %g) -> (%g, %g); peak RSS before the searches %.0f MB\n\n",
+                    field->nx(), field->ny(), field->nt(), search.lattice().nx(), search.lattice().ny(),
+                    1e-6 * double(search.lattice().numGridVertices()), griddedGrid, p.startX, p.startY, p.goalX,
+                    p.goalY, rss0 / 1024.0);
+        std::printf("| problem | configuration | CFC | CMC | expanded | wall [ms] | travel time | rel. deviation from "
+                    "TVE |\n|---|---|---|---|---|---|---|---|\n");
+        Run tve;
+        tve.outcome = TveOutcome::Terminated;  // not run
+        for (std::size_t c = griddedTve ? 0 : 1; c < configs.size(); ++c)
+        {
+            const Run r = runOnce(search, p.startX, p.startY, 0.0, p.goalX, p.goalY, configs[c].options);
+            if (c == 0)
+                tve = r;
+            printRow("gridded 10^6", configs[c].name, r, tve);
+            std::printf("|   | peak RSS so far %.0f MB | | | | | | |\n", peakRssKb() / 1024.0);
+        }
+    }
+    std::printf("\nDefault configuration equal to TVE (1e-9 relative) on every random pair: %s\n",
+                allEqual ? "yes" : "NO");
+    return allEqual ? 0 : 1;
+}
