@@ -61,7 +61,14 @@ std::vector<Config> makeConfigs()
     TveOptions astarTight;
     astarTight.zermelo = false;
     c.push_back({"A*TVE, tight bounds", astarTight});
-    c.push_back({"ZA*TVE, default (tight, tol 0)", TveOptions{}});
+    TveOptions def;
+    if (const char *e = std::getenv("BENCH_ROUNDS"))
+        def.windowRounds = static_cast<unsigned>(std::atoi(e));
+    if (const char *e = std::getenv("BENCH_GW"))
+        def.greedyWeight = std::atof(e);
+    if (const char *e = std::getenv("BENCH_TWO"))
+        def.greedyDeadline = std::atoi(e) != 0;
+    c.push_back({"ZA*TVE, default (tight, tol 0)", def});
     if (std::getenv("BENCH_ORACLE"))
     {
         c.push_back({"oracle: ZA*TVE, deadline = TVE arrival", TveOptions{}});

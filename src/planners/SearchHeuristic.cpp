@@ -141,7 +141,13 @@ VelocityBox currentBounds(const CurrentField &field, const Region &region, unsig
 
 LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &field, double speed, double depth,
                                    double tBegin, double tEnd, unsigned cellFactor)
-  : lat_(lattice), V_(speed), tBegin_(tBegin), tEnd_(tEnd), n_(static_cast<int>(lattice.sectors()))
+  : lat_(lattice)
+  , field_(field)
+  , depth_(depth)
+  , V_(speed)
+  , tBegin_(tBegin)
+  , tEnd_(tEnd)
+  , n_(static_cast<int>(lattice.sectors()))
 {
     if (!(speed > 0.0) || !std::isfinite(speed))
         throw Error("LatticeHeuristic: the vehicle speed must be finite and > 0");
@@ -185,6 +191,16 @@ LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &f
             boxes_[static_cast<std::size_t>(I + J * NX_)] = currentBounds(field, r, slices);
         }
 
+    empty_.assign(boxes_.size(), 0);
+    buildTable();
+}
+
+void LatticeHeuristic::buildTable()
+{
+    const Lattice &lattice = lat_;
+    const long nx = lattice.nx(), ny = lattice.ny();
+    const long f = static_cast<long>(f_);
+    const double g = lattice.gridSize();
     const std::vector<LatticeOffset> &offs = lattice.offsets();
     const std::size_t K = offs.size();
     const int w = 2 * n_ + 1;
@@ -223,7 +239,8 @@ LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &f
                 double s = 0.0;
                 for (long jj = j0; jj <= j1; ++jj)
                     for (long ii = i0; ii <= i1; ++ii)
-                        s = std::max(s, speedBound(boxes_[static_cast<std::size_t>(ii + jj * NX_)], ex, ey));
+                        if (!empty_[static_cast<std::size_t>(ii + jj * NX_)])
+                            s = std::max(s, speedBound(boxes_[static_cast<std::size_t>(ii + jj * NX_)], ex, ey));
                 invSpeed_[static_cast<std::size_t>(I + J * NX_) * K + k] =
                     s > 0.0 ? 1.0 / s : kInf;
             }
@@ -261,7 +278,8 @@ double LatticeHeuristic::genericBound(double x1, double y1, double x2, double y2
     double s = 0.0;
     for (long j = j0; j <= j1; ++j)
         for (long i = i0; i <= i1; ++i)
-            s = std::max(s, speedBound(boxes_[static_cast<std::size_t>(i + j * NX_)], ex, ey));
+            if (!empty_[static_cast<std::size_t>(i + j * NX_)])
+                s = std::max(s, speedBound(boxes_[static_cast<std::size_t>(i + j * NX_)], ex, ey));
     return s > 0.0 ? len / s : kInf;
 }
 
@@ -285,6 +303,120 @@ double LatticeHeuristic::edgeLowerBound(Lattice::VertexId u, Lattice::VertexId v
         }
     }
     return genericBound(lat_.x(u), lat_.y(u), lat_.x(v), lat_.y(v));
+}
+
+long LatticeHeuristic::cellOfVertex(Lattice::VertexId v) const
+{
+    if (v < lat_.numGridVertices())
+        return cellOfColumn(lat_.columnOf(v)) + cellOfRow(lat_.rowOf(v)) * NX_;
+    const double g = lat_.gridSize() * f_;
+    const long I = std::clamp(static_cast<long>(std::floor((lat_.x(v) - lat_.xMin()) / g)), 0L, NX_ - 1);
+    const long J = std::clamp(static_cast<long>(std::floor((lat_.y(v) - lat_.yMin()) / g)), 0L, NY_ - 1);
+    return I + J * NX_;
+}
+
+std::vector<double> LatticeHeuristic::staticSearch(bool forward,
+                                                   const std::function<bool(Lattice::VertexId)> &inWater) const
+{
+    std::vector<double> d(lat_.numVertices(), kInf);
+    const Lattice::VertexId src = forward ? lat_.start() : lat_.goal();
+    if (src == Lattice::kNone)
+        return d;
+    std::priority_queue<QEntry, std::vector<QEntry>, std::greater<QEntry>> q;
+    d[src] = 0.0;
+    q.push({0.0, src});
+    while (!q.empty())
+    {
+        const QEntry e = q.top();
+        q.pop();
+        if (e.d > d[e.v])
+            continue;
+        auto visit = [&](Lattice::VertexId y) {
+            if (inWater && !inWater(y))
+                return;
+            const double w = forward ? edgeLowerBound(e.v, y) : edgeLowerBound(y, e.v);
+            if (e.d + w < d[y])
+            {
+                d[y] = e.d + w;
+                q.push({d[y], y});
+            }
+        };
+        if (forward)
+            lat_.forEachSuccessor(e.v, visit);
+        else
+            lat_.forEachPredecessor(e.v, visit);
+    }
+    return d;
+}
+
+void LatticeHeuristic::refineWindows(unsigned rounds, const std::function<bool(Lattice::VertexId)> &inWater)
+{
+    if (!std::isfinite(tEnd_) || lat_.start() == Lattice::kNone || lat_.goal() == Lattice::kNone)
+        return;
+    const std::size_t C = boxes_.size();
+    const long rc = n_ / static_cast<long>(f_) + 1;
+    const double g = lat_.gridSize();
+    const long f = static_cast<long>(f_);
+    for (unsigned r = 0; r < rounds; ++r)
+    {
+        const std::vector<double> a = staticSearch(true, inWater);
+        std::vector<double> h = staticSearch(false, inWater);
+        if (lat_.start() == lat_.startExtra())
+            lat_.forEachSuccessor(lat_.start(), [&](Lattice::VertexId y) {
+                h[lat_.start()] = std::min(h[lat_.start()], edgeLowerBound(lat_.start(), y) + h[y]);
+            });
+        std::vector<double> minA(C, kInf), minH(C, kInf);
+        for (Lattice::VertexId v = 0; v < lat_.numVertices(); ++v)
+        {
+            if (!(a[v] < kInf) || !(h[v] < kInf))
+                continue;  // on no path from the start to the goal
+            if ((v == lat_.startExtra() && v != lat_.start()) || (v == lat_.goalExtra() && v != lat_.goal()))
+                continue;  // unused extra vertex
+            if (tBegin_ + a[v] + h[v] > tEnd_)
+                continue;  // no path through v arrives by the deadline
+            const std::size_t c = static_cast<std::size_t>(cellOfVertex(v));
+            minA[c] = std::min(minA[c], a[v]);
+            minH[c] = std::min(minH[c], h[v]);
+        }
+        for (long J = 0; J < NY_; ++J)
+            for (long I = 0; I < NX_; ++I)
+            {
+                double lo = kInf, hiH = kInf;
+                for (long jj = std::max(0L, J - rc); jj <= std::min(NY_ - 1, J + rc); ++jj)
+                    for (long ii = std::max(0L, I - rc); ii <= std::min(NX_ - 1, I + rc); ++ii)
+                    {
+                        lo = std::min(lo, minA[static_cast<std::size_t>(ii + jj * NX_)]);
+                        hiH = std::min(hiH, minH[static_cast<std::size_t>(ii + jj * NX_)]);
+                    }
+                const std::size_t c = static_cast<std::size_t>(I + J * NX_);
+                const double t1 = tBegin_ + lo, t2 = tEnd_ - hiH;
+                if (!(t1 <= t2))
+                {
+                    empty_[c] = 1;
+                    continue;
+                }
+                Region reg;
+                reg.xMin = lat_.xMin() + g * static_cast<double>(I * f);
+                reg.xMax = lat_.xMin() + g * static_cast<double>((I + 1) * f);
+                reg.yMin = lat_.yMin() + g * static_cast<double>(J * f);
+                reg.yMax = lat_.yMin() + g * static_cast<double>((J + 1) * f);
+                reg.zMin = reg.zMax = depth_;
+                reg.tMin = t1;
+                reg.tMax = t2;
+                const VelocityBox b =
+                    currentBounds(field_, reg, static_cast<unsigned>(std::clamp(std::ceil(t2 - t1), 1.0, 64.0)));
+                // never wider than the previous round's box (both bound the same currents)
+                VelocityBox &old = boxes_[c];
+                old = {std::max(old.uMin, b.uMin), std::min(old.uMax, b.uMax), std::max(old.vMin, b.vMin),
+                       std::min(old.vMax, b.vMax)};
+                if (old.uMin > old.uMax || old.vMin > old.vMax)
+                    empty_[c] = 1;
+            }
+        buildTable();
+    }
+    labels_.clear();
+    queue_ = {};
+    settled_ = 0;
 }
 
 void LatticeHeuristic::reset(std::function<bool(Lattice::VertexId)> inWater)

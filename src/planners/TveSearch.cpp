@@ -132,6 +132,54 @@ std::optional<double> TveSearch::calcOptimalCourse(double px, double py, double 
 TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
                          const std::function<bool()> &terminate)
 {
+    if (!(options.tightBounds && options.heuristic && options.greedyDeadline && std::isnan(options.deadline) &&
+          options.heuristicWeight == 1.0))
+        return runCore(sx, sy, t0, gx, gy, options, terminate);
+    std::unordered_map<EdgeKey, double, EdgeKeyHash> cache;
+    struct Scope
+    {
+        TveSearch &s;
+        ~Scope()
+        {
+            s.edgeCache_ = nullptr;
+        }
+    } scope{*this};
+    edgeCache_ = &cache;
+    auto add = [](TveResult &into, const TveResult &r) {
+        into.costFunctionCalls += r.costFunctionCalls;
+        into.currentModelCalls += r.currentModelCalls;
+        into.expansions += r.expansions;
+        into.prunedEdges += r.prunedEdges;
+        into.reopenedEdges += r.reopenedEdges;
+        into.boundSkips += r.boundSkips;
+        into.heuristicSettled += r.heuristicSettled;
+    };
+    TveOptions greedy = options;
+    greedy.greedyDeadline = false;
+    greedy.zermelo = true;
+    greedy.certifyTolerance = -1.0;
+    greedy.heuristicWeight = options.greedyWeight;
+    const TveResult first = runCore(sx, sy, t0, gx, gy, greedy, terminate);
+    if (first.outcome != TveOutcome::Exact)
+        return first;  // invalid start/goal, terminated, or no path at all (the greedy search falls back unpruned)
+    TveOptions second = options;
+    second.greedyDeadline = false;
+    second.deadline = t0 + first.travelTime * (1.0 + 1e-12);
+    TveResult r = runCore(sx, sy, t0, gx, gy, second, terminate);
+    add(r, first);
+    if (r.outcome == TveOutcome::Exhausted)
+    {
+        second.deadline = std::numeric_limits<double>::quiet_NaN();
+        TveResult full = runCore(sx, sy, t0, gx, gy, second, terminate);
+        add(full, r);
+        return full;
+    }
+    return r;
+}
+
+TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
+                             const std::function<bool()> &terminate)
+{
     const GliderContext &ctx = *ctx_;
     const CurrentField &field = *ctx.field;
     const TravelTimeCalculator &travel = *ctx.travel;
@@ -232,10 +280,14 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
     // Lower bounds of edges and of the remaining time (TveOptions::tightBounds, LatticeHeuristic).
     if (options.tightBounds && (options.heuristic || options.zermelo))
     {
-        if (!bounds_ || bounds_->tBegin() != t0 || bounds_->tEnd() != tEnd ||
+        const bool refine = !std::isnan(options.deadline) && std::isfinite(tEnd) && options.windowRounds > 0;
+        if (refine || boundsRefined_ || !bounds_ || bounds_->tBegin() != t0 || bounds_->tEnd() != tEnd ||
             (options.boundCellFactor != 0 && bounds_->cellFactor() != options.boundCellFactor))
             bounds_ = std::make_unique<LatticeHeuristic>(lattice_, field, ctx.speed(), z, t0, tEnd,
                                                          options.boundCellFactor);
+        boundsRefined_ = refine;
+        if (refine)
+            bounds_->refineWindows(options.windowRounds, inWater);
         bounds_->reset(inWater);
         bounds = bounds_.get();
     }
@@ -248,7 +300,7 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
     auto h = [&](Lattice::VertexId v) -> double {
         if (!options.heuristic)
             return 0.0;
-        return bounds ? std::max(hEuclid(v), (*bounds)(v)) : hEuclid(v);
+        return options.heuristicWeight * (bounds ? std::max(hEuclid(v), (*bounds)(v)) : hEuclid(v));
     };
     if (options.heuristic && !(vmax > 0.0 && std::isfinite(vmax)))
         throw Error("TveSearch: the A* heuristic needs a finite bound of the current speed over the region");
@@ -286,7 +338,16 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
                 }
             }
         }
-        const double w = travel.travelTime(ux, uy, vx, vy, du);
+        double w;
+        if (edgeCache_)
+        {
+            const auto [it, inserted] = edgeCache_->try_emplace(EdgeKey{u, v, du}, 0.0);
+            if (inserted)
+                it->second = travel.travelTime(ux, uy, vx, vy, du);
+            w = it->second;
+        }
+        else
+            w = travel.travelTime(ux, uy, vx, vy, du);
         if (!std::isfinite(w))
             return false;
         const double dv = du + w;

@@ -65,6 +65,20 @@ public:
     LatticeHeuristic(const Lattice &lattice, const CurrentField &field, double speed, double depth, double tBegin,
                      double tEnd, unsigned cellFactor = 0);
 
+    /// @brief Narrows the time window of each cell's velocity box for the paths that arrive at the goal by the
+    /// deadline tEnd() ("corridor in space-time"), in @p rounds rounds, and restarts the backward search.
+    ///
+    /// On a path that leaves the start at t0 and reaches the goal by tEnd, a vertex v is visited at a time in
+    /// [t0 + a(v), tEnd - h(v)], where a(v) is the smallest sum of edge bounds from the start to v (a static forward
+    /// search) and h(v) the smallest from v to the goal (the heuristic): both sums bound the true travel times from
+    /// below, since every edge of such a path is flown inside the window the current bounds cover. An edge touching
+    /// a cell has both ends within n lattice cells of it, so the currents it meets in that cell occur in the union of
+    /// these intervals over the vertices near the cell: the box of the cell over that window (empty: no such path
+    /// touches the cell) still bounds them, and the edge bounds and heuristic rebuilt from these boxes remain true
+    /// lower bounds for every path that arrives by tEnd. By induction this holds after every round. Needs the
+    /// lattice's start and goal set; costs two static searches over the lattice per round, no CFC or CMC.
+    void refineWindows(unsigned rounds, const std::function<bool(Lattice::VertexId)> &inWater);
+
     /// @brief Starts a new backward search from the lattice's goal (call after Lattice::setGoal). @p inWater tells
     /// whether a vertex may be used (the search's land test); it must stay valid until the next reset().
     void reset(std::function<bool(Lattice::VertexId)> inWater);
@@ -123,9 +137,16 @@ private:
         return std::min(j / static_cast<long>(f_), NY_ - 1);
     }
     double genericBound(double x1, double y1, double x2, double y2) const;
+    void buildTable();
+    /// Static search over the whole lattice (forward from the start or backward from the goal) with the edge bounds.
+    std::vector<double> staticSearch(bool forward, const std::function<bool(Lattice::VertexId)> &inWater) const;
+    long cellOfVertex(Lattice::VertexId v) const;
 
     const Lattice &lat_;
+    const CurrentField &field_;
+    double depth_;
     double V_, vCap_, tBegin_, tEnd_;
+    std::vector<unsigned char> empty_;      // per coarse cell: no path within the deadline touches it
     unsigned f_;
     long NX_{1}, NY_{1};
     int n_;                                 // sectors

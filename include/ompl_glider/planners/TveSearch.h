@@ -4,6 +4,8 @@
 /// ([EichhornRAS] Sec. 2.2, Tables 1 and 2). ZAStarTVE wraps it as an ompl::base::Planner.
 
 #include <cstdint>
+#include <cstring>
+#include <unordered_map>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -84,6 +86,21 @@ struct TveOptions
     /// arrives by the deadline (the labels TVE computes are built in increasing order of arrival time, so those up to
     /// the deadline never use a later arrival); otherwise the search exhausts.
     double deadline{std::numeric_limits<double>::quiet_NaN()};
+    /// Two phases (an addition to [EichhornRAS]; default on; with tightBounds and heuristic, when no deadline is
+    /// given): first a greedy pruned search (weighted A*, key d + greedyWeight h, Zermelo pruning without
+    /// certification) finds some arrival C1; then the search runs with deadline t0 + C1 and LatticeHeuristic's
+    /// boxes narrowed to the space-time corridor of the paths that arrive by it (windowRounds rounds of
+    /// LatticeHeuristic::refineWindows). Travel times computed in the first phase are reused in the second (same
+    /// edge, same departure time). The result is the same as without the phases: if the optimum arrives after
+    /// t0 + C1 (possible only where the field is not FIFO) the second phase exhausts and the search repeats
+    /// without deadline.
+    bool greedyDeadline{true};
+    /// Weight of the heuristic in the first phase (greedyDeadline).
+    double greedyWeight{1.5};
+    /// Rounds of LatticeHeuristic::refineWindows when a deadline is set (0 = none).
+    unsigned windowRounds{1};
+    /// Weight w of the heuristic in the queue key d + w h (1 = A*; > 1 = weighted A*, which gives up exactness).
+    double heuristicWeight{1.0};
     /// Expansions between two calls of the termination callback.
     unsigned checkEvery{8};
 };
@@ -182,6 +199,32 @@ public:
 
 private:
     std::vector<TimedWaypoint> pathTo(Lattice::VertexId v) const;
+    TveResult runCore(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
+                      const std::function<bool()> &terminate);
+
+    /// Travel times of edges by (u, v, departure time), kept between the phases of one run (greedyDeadline).
+    struct EdgeKey
+    {
+        Lattice::VertexId u, v;
+        double t;
+        bool operator==(const EdgeKey &o) const
+        {
+            return u == o.u && v == o.v && t == o.t;
+        }
+    };
+    struct EdgeKeyHash
+    {
+        std::size_t operator()(const EdgeKey &k) const
+        {
+            std::uint64_t b;
+            static_assert(sizeof b == sizeof k.t);
+            std::memcpy(&b, &k.t, sizeof b);
+            std::uint64_t h = k.u * 0x9E3779B97F4A7C15ULL ^ (k.v + 0x632BE59BD9B4E019ULL) * 0xC2B2AE3D27D4EB4FULL;
+            h ^= b + 0x165667B19E3779F9ULL + (h << 6) + (h >> 2);
+            return static_cast<std::size_t>(h);
+        }
+    };
+    std::unordered_map<EdgeKey, double, EdgeKeyHash> *edgeCache_{nullptr};
 
     std::shared_ptr<const GliderContext> ctx_;
     Lattice lattice_;
@@ -189,5 +232,6 @@ private:
     std::vector<Lattice::VertexId> pi_;
     std::vector<Lattice::VertexId> reached_;
     std::unique_ptr<LatticeHeuristic> bounds_;  ///< kept while the time window and cell factor stay the same
+    bool boundsRefined_{false};                 ///< bounds_ was narrowed to one run's corridor
 };
 }  // namespace ompl_glider
