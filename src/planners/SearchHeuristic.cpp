@@ -100,6 +100,8 @@ VelocityBox jetBox(const MeanderingJetParams &p, Iv X, Iv Y, Iv T)
 
 VelocityBox currentBounds(const CurrentField &field, const Region &region, unsigned timeSlices)
 {
+    constexpr int kSub = 2;  // 2 x 2 sub-boxes (4 x 4 and quarter time slices: 3.7x instead of 3.3x fewer CFC than
+                             // TVE on bench_search's random pairs, at 7x the wall time)
     const double M = field.maxSpeed(region);
     VelocityBox box{-M, M, -M, M};
     if (const auto *jet = dynamic_cast<const MeanderingJet *>(&field))
@@ -112,12 +114,12 @@ VelocityBox currentBounds(const CurrentField &field, const Region &region, unsig
             const Iv T = finiteT ? Iv{region.tMin + (region.tMax - region.tMin) * it / nt,
                                       region.tMin + (region.tMax - region.tMin) * (it + 1) / nt}
                                  : Iv{-kInf, kInf};
-            for (int a = 0; a < 2; ++a)
-                for (int c = 0; c < 2; ++c)
+            for (int a = 0; a < kSub; ++a)
+                for (int c = 0; c < kSub; ++c)
                 {
-                    const double xm = 0.5 * (region.xMin + region.xMax), ym = 0.5 * (region.yMin + region.yMax);
-                    const Iv X = a ? Iv{xm, region.xMax} : Iv{region.xMin, xm};
-                    const Iv Y = c ? Iv{ym, region.yMax} : Iv{region.yMin, ym};
+                    const double wx = (region.xMax - region.xMin) / kSub, wy = (region.yMax - region.yMin) / kSub;
+                    const Iv X{region.xMin + a * wx, a + 1 == kSub ? region.xMax : region.xMin + (a + 1) * wx};
+                    const Iv Y{region.yMin + c * wy, c + 1 == kSub ? region.yMax : region.yMin + (c + 1) * wy};
                     VelocityBox e = jetBox(jet->params(), X, Y, T);
                     if (!finiteT)
                         e = VelocityBox{-M, M, -M, M};

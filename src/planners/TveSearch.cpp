@@ -198,18 +198,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
     };
 
     // Clear the previous run's labels (only the vertices it touched).
-    const std::size_t N = lattice_.numVertices();
-    if (d_.size() != N)
-    {
-        d_.assign(N, kInf);
-        pi_.assign(N, Lattice::kNone);
-    }
-    else
-        for (Lattice::VertexId v : reached_)
-        {
-            d_[v] = kInf;
-            pi_[v] = Lattice::kNone;
-        }
+    labels_.clear();  // labels only of the vertices reached: memory grows with the search, not the lattice
     reached_.clear();
 
     // Start and goal.
@@ -267,11 +256,12 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
     }
 
     // Land cache: 0 unknown, 1 water, 2 land.
-    std::vector<signed char> wet(N, 0);
+    std::unordered_map<Lattice::VertexId, bool> wet;  // only the vertices looked at
     auto inWater = [&](Lattice::VertexId v) {
-        if (wet[v] == 0)
-            wet[v] = field.inWater(lattice_.x(v), lattice_.y(v), z) ? 1 : 2;
-        return wet[v] == 1;
+        const auto [it, inserted] = wet.try_emplace(v, false);
+        if (inserted)
+            it->second = field.inWater(lattice_.x(v), lattice_.y(v), z);
+        return it->second;
     };
 
     // Arrival deadline of this search (TveOptions::deadline): arrivals after it are dropped.
@@ -280,7 +270,9 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
     // Lower bounds of edges and of the remaining time (TveOptions::tightBounds, LatticeHeuristic).
     if (options.tightBounds && (options.heuristic || options.zermelo))
     {
-        const bool refine = !std::isnan(options.deadline) && std::isfinite(tEnd) && options.windowRounds > 0;
+        // (refineWindows runs two static searches over the whole lattice: only on lattices up to 2^18 vertices)
+        const bool refine = !std::isnan(options.deadline) && std::isfinite(tEnd) && options.windowRounds > 0 &&
+                            lattice_.numVertices() <= (std::size_t{1} << 18);
         if (refine || boundsRefined_ || !bounds_ || bounds_->tBegin() != t0 || bounds_->tEnd() != tEnd ||
             (options.boundCellFactor != 0 && bounds_->cellFactor() != options.boundCellFactor))
             bounds_ = std::make_unique<LatticeHeuristic>(lattice_, field, ctx.speed(), z, t0, tEnd,
@@ -306,7 +298,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
         throw Error("TveSearch: the A* heuristic needs a finite bound of the current speed over the region");
 
     std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> Q;
-    d_[s] = t0;
+    labels_[s] = {t0, Lattice::kNone};
     reached_.push_back(s);
     Q.push({t0 + h(s), t0, s});
     std::vector<Lattice::VertexId> prunedAt;  // vertices whose expansion pruned edges (for the fallback)
@@ -323,15 +315,15 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
         {
             // No CFC for an edge whose lower bound cannot improve v, or the goal found so far.
             const double lb = bounds->edgeLowerBound(u, v);
-            if (!(du + lb < d_[v]) || du + lb > tEnd)
+            if (!(du + lb < dist(v)) || du + lb > tEnd)
             {
                 ++res.boundSkips;
                 return true;
             }
-            if (d_[g] < kInf)
+            if (dist(g) < kInf)
             {
                 hv = h(v);
-                if (!(du + lb + std::max(hv, (*bounds)(v)) < d_[g]))
+                if (!(du + lb + std::max(hv, (*bounds)(v)) < dist(g)))
                 {
                     ++res.boundSkips;
                     return true;
@@ -351,14 +343,15 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
         if (!std::isfinite(w))
             return false;
         const double dv = du + w;
-        if (!(dv < d_[v]) || dv > tEnd)
+        if (!(dv < dist(v)) || dv > tEnd)
             return true;  // no improvement, or later than the planning window
         if (env && (!env->pointFree(vx, vy, dv) || !env->legFree(ux, uy, du, vx, vy, dv)))
             return true;
-        if (d_[v] == kInf)
+        Label &lv = labels_[v];
+        if (lv.d == kInf)
             reached_.push_back(v);
-        d_[v] = dv;
-        pi_[v] = u;
+        lv.d = dv;
+        lv.pi = u;
         if (hv < 0.0)
             hv = h(v);
         if (hv < kInf)  // +inf: the goal cannot be reached from v even with the optimistic bounds
@@ -403,7 +396,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
             const DeferredEdge de = deferred.top();
             deferred.pop();
             // stale (u improved and re-expanded since), or cannot improve v even at the bound
-            if (de.du != d_[de.u] || !(de.du + edgeBound(de.u, de.v) < d_[de.v]))
+            if (de.du != dist(de.u) || !(de.du + edgeBound(de.u, de.v) < dist(de.v)))
                 continue;
             ++res.reopenedEdges;
             relax(de.u, lattice_.x(de.u), lattice_.y(de.u), de.du, de.v);
@@ -418,7 +411,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
                 res.fallbackUsed = true;
                 for (Lattice::VertexId v : prunedAt)
                     if (h(v) < kInf)
-                        Q.push({d_[v] + h(v), d_[v], v});
+                        Q.push({dist(v) + h(v), dist(v), v});
                 prunedAt.clear();
                 continue;
             }
@@ -427,7 +420,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
         const QueueEntry e = Q.top();
         Q.pop();
         const Lattice::VertexId u = e.v;
-        if (e.d != d_[u])
+        if (e.d != dist(u))
             continue;  // stale entry (u was improved after this push)
         if (u == g)
         {
@@ -440,16 +433,16 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
             res.outcome = TveOutcome::Terminated;
             break;
         }
-        const double du = d_[u];
+        const double du = dist(u);
         const double ux = lattice_.x(u), uy = lattice_.y(u);
 
         std::optional<double> phiOpt;
         double halfWidth = options.deltaPhiMax;
-        if (pruning && u != s && pi_[u] != Lattice::kNone &&
+        if (pruning && u != s && parent(u) != Lattice::kNone &&
             !(options.goalRadius > 0.0 && std::hypot(ux - gx, uy - gy) <= options.goalRadius))
         {
-            const Lattice::VertexId p = pi_[u];
-            phiOpt = calcOptimalCourse(lattice_.x(p), lattice_.y(p), d_[p], ux, uy, du, options.zermeloSteps);
+            const Lattice::VertexId p = parent(u);
+            phiOpt = calcOptimalCourse(lattice_.x(p), lattice_.y(p), dist(p), ux, uy, du, options.zermeloSteps);
             if (phiOpt)
             {
                 const double edge = std::atan2(uy - lattice_.y(p), ux - lattice_.x(p));
@@ -469,7 +462,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
             if (pass == 1 && (!prunedHere || feasibleInCone || !options.deadEndFallback))
                 break;
             lattice_.forEachSuccessor(u, [&](Lattice::VertexId v) {
-                if (!(du < d_[v]))
+                if (!(du < dist(v)))
                     return;  // d[u] >= d[v]: the edge cannot improve v ([EichhornRAS] Table 1, difference 2)
                 const double vx = lattice_.x(v), vy = lattice_.y(v);
                 const bool inCone = !phiOpt || (options.neverPruneGoal && v == g) ||
@@ -506,7 +499,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
     {
         res.outcome = TveOutcome::Exact;
         res.waypoints = pathTo(found);
-        res.travelTime = d_[found] - t0;
+        res.travelTime = dist(found) - t0;
         return finish(res);
     }
     if (res.outcome == TveOutcome::Terminated)
@@ -534,9 +527,9 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
 std::vector<TimedWaypoint> TveSearch::pathTo(Lattice::VertexId v) const
 {
     std::vector<TimedWaypoint> out;
-    for (Lattice::VertexId w = v; w != Lattice::kNone; w = pi_[w])
+    for (Lattice::VertexId w = v; w != Lattice::kNone; w = parent(w))
     {
-        out.push_back({lattice_.x(w), lattice_.y(w), d_[w]});
+        out.push_back({lattice_.x(w), lattice_.y(w), dist(w)});
         if (out.size() > reached_.size() + 1)
             throw Error("TveSearch: predecessor cycle (internal error)");
     }
@@ -549,7 +542,7 @@ std::vector<TveTreeVertex> TveSearch::tree() const
     std::vector<TveTreeVertex> out;
     out.reserve(reached_.size());
     for (Lattice::VertexId v : reached_)
-        out.push_back({v, pi_[v], lattice_.x(v), lattice_.y(v), d_[v]});
+        out.push_back({v, parent(v), lattice_.x(v), lattice_.y(v), dist(v)});
     return out;
 }
 }  // namespace ompl_glider

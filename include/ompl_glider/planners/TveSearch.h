@@ -97,7 +97,8 @@ struct TveOptions
     bool greedyDeadline{true};
     /// Weight of the heuristic in the first phase (greedyDeadline).
     double greedyWeight{1.5};
-    /// Rounds of LatticeHeuristic::refineWindows when a deadline is set (0 = none).
+    /// Rounds of LatticeHeuristic::refineWindows when a deadline is set (0 = none; skipped on lattices of more than
+    /// 2^18 vertices, where its two static searches over the whole lattice would cost more than they save).
     unsigned windowRounds{1};
     /// Weight w of the heuristic in the queue key d + w h (1 = A*; > 1 = weighted A*, which gives up exactness).
     double heuristicWeight{1.0};
@@ -228,8 +229,24 @@ private:
 
     std::shared_ptr<const GliderContext> ctx_;
     Lattice lattice_;
-    std::vector<double> d_;
-    std::vector<Lattice::VertexId> pi_;
+    /// Arrival time d[v] and predecessor pi[v] of a reached vertex (hash map: memory grows with the vertices
+    /// reached, not with the lattice).
+    struct Label
+    {
+        double d{std::numeric_limits<double>::infinity()};
+        Lattice::VertexId pi{Lattice::kNone};
+    };
+    std::unordered_map<Lattice::VertexId, Label> labels_;
+    double dist(Lattice::VertexId v) const
+    {
+        const auto it = labels_.find(v);
+        return it == labels_.end() ? std::numeric_limits<double>::infinity() : it->second.d;
+    }
+    Lattice::VertexId parent(Lattice::VertexId v) const
+    {
+        const auto it = labels_.find(v);
+        return it == labels_.end() ? Lattice::kNone : it->second.pi;
+    }
     std::vector<Lattice::VertexId> reached_;
     std::unique_ptr<LatticeHeuristic> bounds_;  ///< kept while the time window and cell factor stay the same
     bool boundsRefined_{false};                 ///< bounds_ was narrowed to one run's corridor
