@@ -181,8 +181,8 @@ LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &f
     // Time slices of the interval bound: about one per unit of the jet's time scale, at most 64.
     const unsigned slices =
         std::isfinite(tEnd - tBegin) ? static_cast<unsigned>(std::clamp(std::ceil(tEnd - tBegin), 1.0, 64.0)) : 1u;
-    boxes_.resize(static_cast<std::size_t>(NX_ * NY_));
-    for (long J = 0; J < NY_; ++J)
+    boxes_.assign(static_cast<std::size_t>(NX_ * NY_), VelocityBox{-M, M, -M, M});
+    for (long J = 0; J < NY_ && hasLocalBounds(field); ++J)
         for (long I = 0; I < NX_; ++I)
         {
             Region r = whole;
@@ -190,7 +190,10 @@ LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &f
             r.xMax = lattice.xMin() + g * static_cast<double>((I + 1) * f);
             r.yMin = lattice.yMin() + g * static_cast<double>(J * f);
             r.yMax = lattice.yMin() + g * static_cast<double>((J + 1) * f);
-            boxes_[static_cast<std::size_t>(I + J * NX_)] = currentBounds(field, r, slices);
+            const VelocityBox b = currentBounds(field, r, slices);
+            boxes_[static_cast<std::size_t>(I + J * NX_)] = b;
+            if (b.uMin > -M || b.uMax < M || b.vMin > -M || b.vMax < M)
+                informative_ = true;
         }
 
     empty_.assign(boxes_.size(), 0);
@@ -305,6 +308,11 @@ double LatticeHeuristic::edgeLowerBound(Lattice::VertexId u, Lattice::VertexId v
         }
     }
     return genericBound(lat_.x(u), lat_.y(u), lat_.x(v), lat_.y(v));
+}
+
+bool LatticeHeuristic::hasLocalBounds(const CurrentField &field)
+{
+    return dynamic_cast<const MeanderingJet *>(&field) != nullptr;
 }
 
 long LatticeHeuristic::cellOfVertex(Lattice::VertexId v) const

@@ -132,8 +132,10 @@ std::optional<double> TveSearch::calcOptimalCourse(double px, double py, double 
 TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
                          const std::function<bool()> &terminate)
 {
+    // (the phases pay off through LatticeHeuristic::refineWindows: only with local bounds, on lattices it refines)
     if (!(options.tightBounds && options.heuristic && options.greedyDeadline && std::isnan(options.deadline) &&
-          options.heuristicWeight == 1.0))
+          options.heuristicWeight == 1.0 && options.windowRounds > 0 &&
+          lattice_.numVertices() <= (std::size_t{1} << 18) && LatticeHeuristic::hasLocalBounds(*ctx_->field)))
         return runCore(sx, sy, t0, gx, gy, options, terminate);
     std::unordered_map<EdgeKey, double, EdgeKeyHash> cache;
     struct Scope
@@ -281,7 +283,8 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
         if (refine)
             bounds_->refineWindows(options.windowRounds, inWater);
         bounds_->reset(inWater);
-        bounds = bounds_.get();
+        if (bounds_->informative())
+            bounds = bounds_.get();  // else the bounds are Eq. 1's: the code below uses it directly
     }
 
     // A* heuristic ([EichhornRAS] Eq. 1), or max(Eq. 1, LatticeHeuristic).

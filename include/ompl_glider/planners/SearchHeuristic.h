@@ -90,6 +90,15 @@ public:
     /// @brief Lower bound of the travel time of the lattice edge u -> v (any two vertices joined by an edge).
     double edgeLowerBound(Lattice::VertexId u, Lattice::VertexId v) const;
 
+    /// @brief True when currentBounds() has local bounds for this field (a MeanderingJet); other fields get the
+    /// global box everywhere.
+    static bool hasLocalBounds(const CurrentField &field);
+    /// @brief True when some cell's box is narrower than the field's global bound (else the bounds are those of
+    /// [EichhornRAS] Eq. 1 and the backward search would only cost time).
+    bool informative() const
+    {
+        return informative_;
+    }
     /// @brief Time window of the bounds.
     double tBegin() const
     {
@@ -147,6 +156,7 @@ private:
     double depth_;
     double V_, vCap_, tBegin_, tEnd_;
     std::vector<unsigned char> empty_;      // per coarse cell: no path within the deadline touches it
+    bool informative_{false};
     unsigned f_;
     long NX_{1}, NY_{1};
     int n_;                                 // sectors
