@@ -141,8 +141,69 @@ VelocityBox currentBounds(const CurrentField &field, const Region &region, unsig
     return box;
 }
 
+CellBoxCache::CellBoxCache(const Lattice &lattice, const CurrentField &field, double depth, unsigned cellFactor,
+                           double origin, double dt)
+  : lat_(&lattice), field_(field), depth_(depth), origin_(origin), dt_(dt), f_(std::max(1u, cellFactor))
+{
+    const long f = static_cast<long>(f_);
+    NX_ = std::max(0L, lattice.nx() - 1) / f + 1;
+    NY_ = std::max(0L, lattice.ny() - 1) / f + 1;
+}
+
+VelocityBox CellBoxCache::box(long I, long J, double ta, double tb)
+{
+    const long k0 = static_cast<long>(std::floor((ta - origin_) / dt_));
+    const long k1 = std::max(k0, static_cast<long>(std::ceil((tb - origin_) / dt_)) - 1);
+    VelocityBox out{kInf, -kInf, kInf, -kInf};
+    const double g = lat_->gridSize();
+    const long f = static_cast<long>(f_);
+    for (long k = k0; k <= k1; ++k)
+    {
+        auto [it, inserted] = slices_.try_emplace(k);
+        if (inserted)
+        {
+            it->second.resize(static_cast<std::size_t>(NX_ * NY_));
+            for (long jj = 0; jj < NY_; ++jj)
+                for (long ii = 0; ii < NX_; ++ii)
+                {
+                    Region r;
+                    r.xMin = lat_->xMin() + g * static_cast<double>(ii * f);
+                    r.xMax = lat_->xMin() + g * static_cast<double>((ii + 1) * f);
+                    r.yMin = lat_->yMin() + g * static_cast<double>(jj * f);
+                    r.yMax = lat_->yMin() + g * static_cast<double>((jj + 1) * f);
+                    r.zMin = r.zMax = depth_;
+                    r.tMin = origin_ + dt_ * static_cast<double>(k);
+                    r.tMax = origin_ + dt_ * static_cast<double>(k + 1);
+                    it->second[static_cast<std::size_t>(ii + jj * NX_)] = currentBounds(field_, r, 1);
+                }
+        }
+        const VelocityBox &b = it->second[static_cast<std::size_t>(I + J * NX_)];
+        out = {std::min(out.uMin, b.uMin), std::max(out.uMax, b.uMax), std::min(out.vMin, b.vMin),
+               std::max(out.vMax, b.vMax)};
+    }
+    return out;
+}
+
+unsigned LatticeHeuristic::autoCellFactor(const Lattice &lattice)
+{
+    const double cells = static_cast<double>(lattice.nx()) * static_cast<double>(lattice.ny());
+    return static_cast<unsigned>(std::max(1.0, std::ceil(std::sqrt(cells / 65536.0))));
+}
+
+VelocityBox LatticeHeuristic::box(long I, long J, double ta, double tb, const Region &region, unsigned slices) const
+{
+    if (cache_ && std::isfinite(ta) && std::isfinite(tb) && tb - ta <= 1e6)
+    {
+        VelocityBox b = cache_->box(I, J, ta, tb);
+        const double M = vCap_ - V_;
+        b = {std::max(b.uMin, -M), std::min(b.uMax, M), std::max(b.vMin, -M), std::min(b.vMax, M)};
+        return b;
+    }
+    return currentBounds(field_, region, slices);
+}
+
 LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &field, double speed, double depth,
-                                   double tBegin, double tEnd, unsigned cellFactor)
+                                   double tBegin, double tEnd, unsigned cellFactor, CellBoxCache *cache)
   : lat_(lattice)
   , field_(field)
   , depth_(depth)
@@ -155,11 +216,10 @@ LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &f
         throw Error("LatticeHeuristic: the vehicle speed must be finite and > 0");
     const long nx = lattice.nx(), ny = lattice.ny();
     if (cellFactor == 0)
-    {
-        const double cells = static_cast<double>(nx) * static_cast<double>(ny);
-        cellFactor = static_cast<unsigned>(std::max(1.0, std::ceil(std::sqrt(cells / 65536.0))));
-    }
+        cellFactor = autoCellFactor(lattice);
     f_ = cellFactor;
+    if (cache && cache->matches(lattice, f_))
+        cache_ = cache;
     const long f = static_cast<long>(f_);
     NX_ = std::max(0L, nx - 1) / f + 1;
     NY_ = std::max(0L, ny - 1) / f + 1;
@@ -190,7 +250,7 @@ LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &f
             r.xMax = lattice.xMin() + g * static_cast<double>((I + 1) * f);
             r.yMin = lattice.yMin() + g * static_cast<double>(J * f);
             r.yMax = lattice.yMin() + g * static_cast<double>((J + 1) * f);
-            const VelocityBox b = currentBounds(field, r, slices);
+            const VelocityBox b = box(I, J, tBegin, tEnd, r, slices);
             boxes_[static_cast<std::size_t>(I + J * NX_)] = b;
             if (b.uMin > -M || b.uMax < M || b.vMin > -M || b.vMax < M)
                 informative_ = true;
@@ -414,7 +474,7 @@ void LatticeHeuristic::refineWindows(unsigned rounds, const std::function<bool(L
                 reg.tMin = t1;
                 reg.tMax = t2;
                 const VelocityBox b =
-                    currentBounds(field_, reg, static_cast<unsigned>(std::clamp(std::ceil(t2 - t1), 1.0, 64.0)));
+                    box(I, J, t1, t2, reg, static_cast<unsigned>(std::clamp(std::ceil(t2 - t1), 1.0, 64.0)));
                 // never wider than the previous round's box (both bound the same currents)
                 VelocityBox &old = boxes_[c];
                 old = {std::max(old.uMin, b.uMin), std::min(old.uMax, b.uMax), std::max(old.vMin, b.vMin),

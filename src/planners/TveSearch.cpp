@@ -275,10 +275,15 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
         // (refineWindows runs two static searches over the whole lattice: only on lattices up to 2^18 vertices)
         const bool refine = !std::isnan(options.deadline) && std::isfinite(tEnd) && options.windowRounds > 0 &&
                             lattice_.numVertices() <= (std::size_t{1} << 18);
+        const unsigned f =
+            options.boundCellFactor ? options.boundCellFactor : LatticeHeuristic::autoCellFactor(lattice_);
+        if (LatticeHeuristic::hasLocalBounds(field) && (!boxCache_ || !boxCache_->matches(lattice_, f)))
+            boxCache_ = std::make_unique<CellBoxCache>(lattice_, field, z, f,
+                                                       std::isfinite(ctx.region.tMin) ? ctx.region.tMin : 0.0, 1.0);
         if (refine || boundsRefined_ || !bounds_ || bounds_->tBegin() != t0 || bounds_->tEnd() != tEnd ||
-            (options.boundCellFactor != 0 && bounds_->cellFactor() != options.boundCellFactor))
-            bounds_ = std::make_unique<LatticeHeuristic>(lattice_, field, ctx.speed(), z, t0, tEnd,
-                                                         options.boundCellFactor);
+            bounds_->cellFactor() != f)
+            bounds_ = std::make_unique<LatticeHeuristic>(lattice_, field, ctx.speed(), z, t0, tEnd, f,
+                                                         boxCache_.get());
         boundsRefined_ = refine;
         if (refine)
             bounds_->refineWindows(options.windowRounds, inWater);

@@ -31,6 +31,33 @@ struct VelocityBox
 /// The components are also clamped to [-M, M].
 VelocityBox currentBounds(const CurrentField &field, const Region &region, unsigned timeSlices = 0);
 
+/// @brief Velocity boxes of the cells of a lattice (cellFactor x cellFactor lattice cells each) per time slice
+/// [origin + k dt, origin + (k + 1) dt], computed by currentBounds() on first use and kept: the box of a cell over
+/// any window is the union of the boxes of the slices it overlaps (a true bound, slightly wider than the window's
+/// own). Lets the searches of one problem (random pairs, departure sweeps, the phases of one run) share the interval
+/// evaluations.
+class CellBoxCache
+{
+public:
+    CellBoxCache(const Lattice &lattice, const CurrentField &field, double depth, unsigned cellFactor, double origin,
+                 double dt);
+    /// @brief Box of cell (I, J) over [ta, tb] (finite, ta <= tb).
+    VelocityBox box(long I, long J, double ta, double tb);
+    /// @brief Cell factor and lattice the cache was built for.
+    bool matches(const Lattice &lattice, unsigned cellFactor) const
+    {
+        return &lattice == lat_ && cellFactor == f_;
+    }
+
+private:
+    const Lattice *lat_;
+    const CurrentField &field_;
+    double depth_, origin_, dt_;
+    unsigned f_;
+    long NX_, NY_;
+    std::unordered_map<long, std::vector<VelocityBox>> slices_;  // slice index -> per cell
+};
+
 /// @brief Optimistic lower bound of the travel time of straight legs, from per-cell velocity boxes, and an A*
 /// heuristic from it: an optimistic backward search over the lattice.
 ///
@@ -63,7 +90,9 @@ public:
     /// @brief Bounds for @p lattice (its start/goal need not be set yet) over the time window [tBegin, tEnd] at the
     /// travel depth z, vehicle speed V. cellFactor 0 picks one so that there are at most about 2^16 cells.
     LatticeHeuristic(const Lattice &lattice, const CurrentField &field, double speed, double depth, double tBegin,
-                     double tEnd, unsigned cellFactor = 0);
+                     double tEnd, unsigned cellFactor = 0, CellBoxCache *cache = nullptr);
+    /// @brief The cell factor LatticeHeuristic picks for @p lattice when asked for 0.
+    static unsigned autoCellFactor(const Lattice &lattice);
 
     /// @brief Narrows the time window of each cell's velocity box for the paths that arrive at the goal by the
     /// deadline tEnd() ("corridor in space-time"), in @p rounds rounds, and restarts the backward search.
@@ -157,6 +186,8 @@ private:
     double V_, vCap_, tBegin_, tEnd_;
     std::vector<unsigned char> empty_;      // per coarse cell: no path within the deadline touches it
     bool informative_{false};
+    CellBoxCache *cache_{nullptr};
+    VelocityBox box(long I, long J, double ta, double tb, const Region &region, unsigned slices) const;
     unsigned f_;
     long NX_{1}, NY_{1};
     int n_;                                 // sectors
