@@ -321,21 +321,19 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
         double hv = -1.0;  // h(v), when known
         if (bounds)
         {
-            // No CFC for an edge whose lower bound cannot improve v, or the goal found so far.
+            // No CFC for an edge whose lower bound cannot improve v, or reach the goal by the deadline, or improve
+            // the goal found so far (any arrival at the goal through it is >= d[u] + bound + h(v)).
             const double lb = bounds->edgeLowerBound(u, v);
             if (!(du + lb < dist(v)) || du + lb > tEnd)
             {
                 ++res.boundSkips;
                 return true;
             }
-            if (dist(g) < kInf)
+            const double hb = (*bounds)(v);  // unweighted: a true lower bound (>= Eq. 1's, LatticeHeuristic)
+            if (du + lb + hb > tEnd || (dist(g) < kInf && !(du + lb + hb < dist(g))))
             {
-                hv = h(v);
-                if (!(du + lb + std::max(hv, (*bounds)(v)) < dist(g)))
-                {
-                    ++res.boundSkips;
-                    return true;
-                }
+                ++res.boundSkips;
+                return true;
             }
         }
         double w;
