@@ -212,3 +212,26 @@ TEST(SearchHeuristic, UniformCurrentAgainstTheCurrentIsBoundedByTheSlowSpeed)
     EXPECT_LE(lb, w);
     EXPECT_NEAR(lb, 0.4 / 0.8, 1e-9);
 }
+
+TEST(SearchHeuristic, DeadlineKeepsTheOptimumOrExhausts)
+{
+    // A deadline at TVE's arrival gives TVE's travel time (the labels up to the deadline do not depend on later
+    // arrivals); one just below it leaves no path. Also with the bounds narrowed to the deadline's corridor.
+    GliderProblem p = jetProblem();
+    auto ctx = makeGliderContext(p);
+    TveSearch search(ctx, 0.4, 3);
+    const double sx = 8.8, sy = -1.2, gx = 1.6, gy = 0.4;  // goal upstream of the start
+    const TveResult tve = search.run(sx, sy, 0.0, gx, gy, tveOptions());
+    ASSERT_EQ(tve.outcome, TveOutcome::Exact);
+    for (bool tight : {false, true})
+    {
+        TveOptions o;
+        o.tightBounds = tight;
+        o.deadline = tve.travelTime;
+        const TveResult at = search.run(sx, sy, 0.0, gx, gy, o);
+        ASSERT_EQ(at.outcome, TveOutcome::Exact) << tight;
+        EXPECT_NEAR(at.travelTime, tve.travelTime, 1e-9 * tve.travelTime);
+        o.deadline = tve.travelTime * (1.0 - 1e-6);
+        EXPECT_EQ(search.run(sx, sy, 0.0, gx, gy, o).outcome, TveOutcome::Exhausted) << tight;
+    }
+}

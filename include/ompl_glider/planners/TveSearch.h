@@ -60,15 +60,15 @@ struct TveOptions
     double goalRadius{0.0};
     /// Certification of the pruned search (an addition to [EichhornRAS] Table 2; default 0; < 0 = off, the paper's
     /// rule). Without it the pruning misses the lattice optimum on some problems (campaign open water +1.25 %, islands
-    /// +5.1 %, random pairs up to +76 %; benchmarks/table4/README.md). Pruned edges
-    /// are deferred instead of dropped, with the lower bound d[u] + (|uv| + |v - goal|) / (V + max|c|) of any arrival
-    /// through them. When the goal is first extracted at C, the deferred edges whose bound is below t0 + (C - t0) / (1
-    /// + tol) are examined in bound order, interleaved with the queue (their improvements are expanded with pruning,
-    /// their own pruned edges deferred again), until the goal is extracted with no such edge left. With tol = 0 the
-    /// result is the lattice optimum (as TVE); a larger tol bounds the travel time by (1 + tol) times the optimum on
-    /// the lattice and costs fewer CFC. The bound is weak where the current is strong, so tol trades CFC for that
-    /// guarantee (benchmarks/table4/README.md). With tightBounds (default) the bound is d[u] + edge bound + h(v)
-    /// (LatticeHeuristic), tight enough that the default is now 0: the lattice optimum (benchmarks/search/README.md).
+    /// +5.1 %, random pairs up to +76 %; benchmarks/table4/README.md). Pruned edges are deferred instead of dropped,
+    /// each with a lower bound of the queue key its end vertex would get through it: d[u] + (edge bound) + h(v)
+    /// (LatticeHeuristic's edge bound with tightBounds, else |uv| / (V + max|c|); h the queue's heuristic, 0
+    /// without A*). A deferred edge is examined once t0 + (bound - t0)(1 + tol) is not above the queue's smallest key,
+    /// interleaved with the queue (its improvements are expanded with pruning, their pruned edges deferred again).
+    /// With tol = 0 (and a consistent heuristic) every vertex is extracted with its final label: the result is TVE's
+    /// (the fixpoint d(v) = min_u d(u) + w(u, v, d(u)), also where the field is not FIFO), at the cost of the deferred
+    /// edges whose bound lies below the goal's arrival (benchmarks/search/README.md). A larger tol examines fewer of
+    /// them and bounds the travel time by about (1 + tol) times TVE's.
     double certifyTolerance{0.0};
     /// When the pruned search (zermelo) exhausts without reaching the goal, continue without pruning, so that
     /// "no solution" still means "no path on this lattice" (an addition to [EichhornRAS] Table 2, which does not say).
