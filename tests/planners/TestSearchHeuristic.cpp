@@ -115,7 +115,7 @@ TEST(SearchHeuristic, NeverAboveTheTrueRemainingTimeAndConsistent)
     std::uniform_int_distribution<long> ci(0, 25), cj(0, 20);
     double sumH = 0, sumE = 0, sumT = 0;
     int compared = 0;
-    for (int goal = 0; goal < 4; ++goal)
+    for (int goal = 0; goal < 8; ++goal)
     {
         const double gx = goal % 2 ? ux(rng) : 0.4 * static_cast<double>(ci(rng) % 25);
         const double gy = goal % 2 ? uy(rng) : -4.0 + 0.4 * static_cast<double>(cj(rng) % 20);
@@ -124,7 +124,7 @@ TEST(SearchHeuristic, NeverAboveTheTrueRemainingTimeAndConsistent)
         ASSERT_NE(lat.setGoal(gx, gy), Lattice::kNone);
         LatticeHeuristic hb(lat, *ctx->field, ctx->speed(), 0.0, 0.0, ctx->region.tMax);
         hb.reset({});
-        for (int k = 0; k < 6; ++k)
+        for (int k = 0; k < 10; ++k)
         {
             const Lattice::VertexId v = lat.gridVertex(ci(rng) % lat.nx(), cj(rng) % lat.ny());
             const double t = ut(rng);
@@ -150,7 +150,7 @@ TEST(SearchHeuristic, NeverAboveTheTrueRemainingTimeAndConsistent)
             });
         }
     }
-    EXPECT_GE(compared, 15);
+    EXPECT_GE(compared, 50);
     // tighter than [EichhornRAS] Eq. 1 on these vertices (it is 1.0 x Eq. 1 at worst by construction)
     std::printf("sum h %.3f, Eq. 1 %.3f, true %.3f\n", sumH, sumE, sumT);
     EXPECT_GT(sumH, 1.2 * sumE) << "h " << sumH << " Eq. 1 " << sumE << " true " << sumT;
