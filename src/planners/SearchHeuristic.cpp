@@ -141,21 +141,55 @@ VelocityBox currentBounds(const CurrentField &field, const Region &region, unsig
     return box;
 }
 
-CellBoxCache::CellBoxCache(const Lattice &lattice, const CurrentField &field, double depth, unsigned cellFactor,
-                           double origin, double dt)
-  : lat_(&lattice), field_(field), depth_(depth), origin_(origin), dt_(dt), f_(std::max(1u, cellFactor))
+CellBoxCache::CellBoxCache(std::shared_ptr<const CurrentField> field, const Lattice &lattice, double depth,
+                           unsigned cellFactor, double origin, double dt)
+  : field_(std::move(field))
+  , xMin_(lattice.xMin())
+  , yMin_(lattice.yMin())
+  , g_(lattice.gridSize())
+  , nx_(lattice.nx())
+  , ny_(lattice.ny())
+  , depth_(depth)
+  , origin_(origin)
+  , dt_(dt)
+  , f_(std::max(1u, cellFactor))
 {
     const long f = static_cast<long>(f_);
-    NX_ = std::max(0L, lattice.nx() - 1) / f + 1;
-    NY_ = std::max(0L, lattice.ny() - 1) / f + 1;
+    NX_ = std::max(0L, nx_ - 1) / f + 1;
+    NY_ = std::max(0L, ny_ - 1) / f + 1;
+}
+
+bool CellBoxCache::matches(const CurrentField *field, const Lattice &lattice, double depth, unsigned cellFactor,
+                           double origin, double dt) const
+{
+    return field == field_.get() && lattice.xMin() == xMin_ && lattice.yMin() == yMin_ &&
+           lattice.gridSize() == g_ && lattice.nx() == nx_ && lattice.ny() == ny_ && depth == depth_ &&
+           std::max(1u, cellFactor) == f_ && origin == origin_ && dt == dt_;
+}
+
+std::shared_ptr<CellBoxCache> CellBoxCache::shared(const std::shared_ptr<const CurrentField> &field,
+                                                   const Lattice &lattice, double depth, unsigned cellFactor,
+                                                   double origin, double dt)
+{
+    static std::mutex m;
+    static std::vector<std::shared_ptr<CellBoxCache>> caches;
+    const std::lock_guard<std::mutex> lock(m);
+    for (const auto &c : caches)
+        if (c->matches(field.get(), lattice, depth, cellFactor, origin, dt))
+            return c;
+    if (caches.size() >= 16)
+        caches.erase(caches.begin());
+    caches.push_back(std::make_shared<CellBoxCache>(field, lattice, depth, cellFactor, origin, dt));
+    return caches.back();
 }
 
 VelocityBox CellBoxCache::box(long I, long J, double ta, double tb)
 {
+    const std::lock_guard<std::mutex> lock(mutex_);
     const long k0 = static_cast<long>(std::floor((ta - origin_) / dt_));
     const long k1 = std::max(k0, static_cast<long>(std::ceil((tb - origin_) / dt_)) - 1);
     VelocityBox out{kInf, -kInf, kInf, -kInf};
-    const double g = lat_->gridSize();
+    const double g = g_;
     const long f = static_cast<long>(f_);
     for (long k = k0; k <= k1; ++k)
     {
@@ -167,14 +201,14 @@ VelocityBox CellBoxCache::box(long I, long J, double ta, double tb)
                 for (long ii = 0; ii < NX_; ++ii)
                 {
                     Region r;
-                    r.xMin = lat_->xMin() + g * static_cast<double>(ii * f);
-                    r.xMax = lat_->xMin() + g * static_cast<double>((ii + 1) * f);
-                    r.yMin = lat_->yMin() + g * static_cast<double>(jj * f);
-                    r.yMax = lat_->yMin() + g * static_cast<double>((jj + 1) * f);
+                    r.xMin = xMin_ + g * static_cast<double>(ii * f);
+                    r.xMax = xMin_ + g * static_cast<double>((ii + 1) * f);
+                    r.yMin = yMin_ + g * static_cast<double>(jj * f);
+                    r.yMax = yMin_ + g * static_cast<double>((jj + 1) * f);
                     r.zMin = r.zMax = depth_;
                     r.tMin = origin_ + dt_ * static_cast<double>(k);
                     r.tMax = origin_ + dt_ * static_cast<double>(k + 1);
-                    it->second[static_cast<std::size_t>(ii + jj * NX_)] = currentBounds(field_, r, 1);
+                    it->second[static_cast<std::size_t>(ii + jj * NX_)] = currentBounds(*field_, r, 1);
                 }
         }
         const VelocityBox &b = it->second[static_cast<std::size_t>(I + J * NX_)];
@@ -218,7 +252,7 @@ LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &f
     if (cellFactor == 0)
         cellFactor = autoCellFactor(lattice);
     f_ = cellFactor;
-    if (cache && cache->matches(lattice, f_))
+    if (cache && cache->matches(&field, lattice, depth, f_, cache->origin(), cache->dt()))
         cache_ = cache;
     const long f = static_cast<long>(f_);
     NX_ = std::max(0L, nx - 1) / f + 1;

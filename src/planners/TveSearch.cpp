@@ -277,9 +277,10 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
                             lattice_.numVertices() <= (std::size_t{1} << 18);
         const unsigned f =
             options.boundCellFactor ? options.boundCellFactor : LatticeHeuristic::autoCellFactor(lattice_);
-        if (LatticeHeuristic::hasLocalBounds(field) && (!boxCache_ || !boxCache_->matches(lattice_, f)))
-            boxCache_ = std::make_unique<CellBoxCache>(lattice_, field, z, f,
-                                                       std::isfinite(ctx.region.tMin) ? ctx.region.tMin : 0.0, 1.0);
+        const double origin = 0.0;  // slices [k, k + 1] of absolute time: shared by searches of any departure
+        if (LatticeHeuristic::hasLocalBounds(field) &&
+            (!boxCache_ || !boxCache_->matches(&field, lattice_, z, f, origin, 1.0)))
+            boxCache_ = CellBoxCache::shared(ctx.field, lattice_, z, f, origin, 1.0);
         if (refine || boundsRefined_ || !bounds_ || bounds_->tBegin() != t0 || bounds_->tEnd() != tEnd ||
             bounds_->cellFactor() != f)
             bounds_ = std::make_unique<LatticeHeuristic>(lattice_, field, ctx.speed(), z, t0, tEnd, f,

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <queue>
 #include <unordered_map>
 #include <vector>
@@ -39,22 +40,36 @@ VelocityBox currentBounds(const CurrentField &field, const Region &region, unsig
 class CellBoxCache
 {
 public:
-    CellBoxCache(const Lattice &lattice, const CurrentField &field, double depth, unsigned cellFactor, double origin,
-                 double dt);
-    /// @brief Box of cell (I, J) over [ta, tb] (finite, ta <= tb).
+    CellBoxCache(std::shared_ptr<const CurrentField> field, const Lattice &lattice, double depth, unsigned cellFactor,
+                 double origin, double dt);
+    /// @brief Box of cell (I, J) over [ta, tb] (finite, ta <= tb). Thread-safe.
     VelocityBox box(long I, long J, double ta, double tb);
-    /// @brief Cell factor and lattice the cache was built for.
-    bool matches(const Lattice &lattice, unsigned cellFactor) const
+    /// @brief Origin and length of the time slices.
+    double origin() const
     {
-        return &lattice == lat_ && cellFactor == f_;
+        return origin_;
     }
+    double dt() const
+    {
+        return dt_;
+    }
+    /// @brief True when built for this field, lattice geometry, depth, cell factor and slices.
+    bool matches(const CurrentField *field, const Lattice &lattice, double depth, unsigned cellFactor, double origin,
+                 double dt) const;
+    /// @brief The process-wide cache for these arguments (made on first use; the last 16 are kept), so that the
+    /// searches of one problem share it even when each builds its own TveSearch (departure sweeps, the mission code).
+    static std::shared_ptr<CellBoxCache> shared(const std::shared_ptr<const CurrentField> &field,
+                                                const Lattice &lattice, double depth, unsigned cellFactor,
+                                                double origin, double dt);
 
 private:
-    const Lattice *lat_;
-    const CurrentField &field_;
+    std::shared_ptr<const CurrentField> field_;
+    double xMin_, yMin_, g_;
+    long nx_, ny_;
     double depth_, origin_, dt_;
     unsigned f_;
     long NX_, NY_;
+    std::mutex mutex_;
     std::unordered_map<long, std::vector<VelocityBox>> slices_;  // slice index -> per cell
 };
 

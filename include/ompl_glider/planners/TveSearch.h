@@ -250,6 +250,6 @@ private:
     std::vector<Lattice::VertexId> reached_;
     std::unique_ptr<LatticeHeuristic> bounds_;  ///< kept while the time window and cell factor stay the same
     bool boundsRefined_{false};                 ///< bounds_ was narrowed to one run's corridor
-    std::unique_ptr<CellBoxCache> boxCache_;    ///< velocity boxes per cell and unit time slice, shared by the runs
+    std::shared_ptr<CellBoxCache> boxCache_;    ///< velocity boxes per cell and unit time slice (CellBoxCache::shared)
 };
 }  // namespace ompl_glider
