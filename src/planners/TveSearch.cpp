@@ -196,6 +196,8 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
         r.costFunctionCalls = travel.costFunctionCalls() - cfc0;
         r.currentModelCalls = field.callCount() - cmc0;
         r.heuristicSettled = bounds ? bounds->settled() : 0;
+        if (bounds_)
+            bounds_->releaseLandTest();  // it refers to this run's land cache
         return r;
     };
 

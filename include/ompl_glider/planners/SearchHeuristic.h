@@ -127,6 +127,12 @@ public:
     /// whether a vertex may be used (the search's land test); it must stay valid until the next reset().
     void reset(std::function<bool(Lattice::VertexId)> inWater);
 
+    /// @brief Forgets the land test given to reset() (call before it goes out of scope).
+    void releaseLandTest()
+    {
+        inWater_ = nullptr;
+    }
+
     /// @brief h(v): lower bound of the remaining travel time from v to the goal (+inf when even the optimistic
     /// search cannot reach the goal from v). The extra start vertex gets 0 (it has no predecessor edges).
     double operator()(Lattice::VertexId v);
