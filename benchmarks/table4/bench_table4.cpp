@@ -49,6 +49,7 @@ int main(int argc, char **argv)
     int randomPairs = 0;
     double tw = -1.0;
     double reliableTurnDeg = -1.0, goalRadius = -1.0, certify = -2.0;
+    bool looseBounds = false; // [EichhornRAS] Eq. 1 with the region's maximum current (tight_bounds 0)
     for (int i = 1; i < argc; ++i)
     {
         const std::string a = argv[i];
@@ -64,6 +65,8 @@ int main(int argc, char **argv)
             reliableTurnDeg = std::atof(argv[++i]);
         else if (a == "--certify" && i + 1 < argc)
             certify = std::atof(argv[++i]);
+        else if (a == "--loose-bounds")
+            looseBounds = true;
         else if (a == "--goal-radius" && i + 1 < argc)
             goalRadius = std::atof(argv[++i]);
         else if (a == "--random-pairs" && i + 1 < argc)
@@ -71,7 +74,7 @@ int main(int argc, char **argv)
         else
         {
             std::fprintf(stderr,
-                         "usage: %s [--delta-phi-max DEG] [--course-extrapolation K] [--goal X,Y] [--random-pairs N]\n",
+                         "usage: %s [--delta-phi-max DEG] [--course-extrapolation K] [--goal X,Y] [--random-pairs N] [--certify TOL] [--loose-bounds]\n",
                          argv[0]);
             return 2;
         }
@@ -113,6 +116,8 @@ int main(int argc, char **argv)
                 planner->options().goalRadius = goalRadius;
             if (certify > -2.0)
                 planner->options().certifyTolerance = certify;
+            if (looseBounds)
+                planner->options().tightBounds = false;
             ss->clear();
             ss->setPlanner(planner);
             ss->setup();
