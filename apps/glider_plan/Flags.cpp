@@ -13,9 +13,12 @@
 #include <vector>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/current/UnitConversion.h"
+#include "ompl_glider/execution/Execution.h"
 #include "ompl_glider/mission/ForecastMission.h"
+#include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/planners/PlannerRegistry.h"
 
 namespace glider_plan
@@ -86,6 +89,102 @@ const CLI::Validator kPositiveFinite(
 const std::vector<std::string> kSchemes2D = {"nearest", "bilinear", "bicubic"};
 const std::vector<std::string> kSchemes1D = {"nearest", "linear", "cubic", "akima"};
 
+/// The execution flags (--truth, --surfacing-interval, --strategies, --radius, --execution-pairs/-seed).
+void applyExecution(const Flags &f, MissionSpec &m)
+{
+    ExecutionSpec &e = m.execution;
+    e.enabled = !f.truth.empty() || !f.surfacingInterval.empty() || !f.strategies.empty() || f.radius ||
+                f.executionPairs || f.executionSeed;
+    if (!e.enabled)
+        return;
+    e.mark = SourceMark{"--truth", 0};
+    if (!f.truth.empty() && f.truth != "forecast")
+    {
+        CurrentSpec t = m.current;
+        t.mark = SourceMark{"--truth", 0};
+        if (m.current.type == "netcdf")
+        {
+            // another forecast file (or list / glob) read with the forecast's variable names and options
+            std::vector<std::string> files;
+            try
+            {
+                files = ompl_glider::forecastFileList(f.truth);
+            }
+            catch (const ompl_glider::Error &err)
+            {
+                throw UsageError{"--truth " + f.truth + ": " + err.what()};
+            }
+            t.file = files.front();
+            t.files = files.size() > 1 ? files : std::vector<std::string>{};
+        }
+        else
+        {
+            // the built-in flow with other parameters: NAME=VALUE,... (e.g. B0=1.3,c=0.14)
+            const CurrentFieldKind *kind = findCurrentFieldKind(m.current.type);
+            std::size_t at = 0;
+            while (at < f.truth.size())
+            {
+                const std::size_t comma = std::min(f.truth.find(',', at), f.truth.size());
+                const std::string item = f.truth.substr(at, comma - at);
+                const std::size_t eq = item.find('=');
+                bool known = false;
+                if (eq != std::string::npos && kind)
+                    for (const auto &[name, value] : kind->parameters)
+                        known = known || name == item.substr(0, eq);
+                if (!known)
+                {
+                    std::string names;
+                    if (kind)
+                        for (const auto &[name, value] : kind->parameters)
+                            names += (names.empty() ? "" : ", ") + name;
+                    throw UsageError{"--truth: expected 'forecast' or NAME=VALUE,... with the " + m.current.type +
+                                     "'s parameters (" + names + "), got '" + item + "'"};
+                }
+                t.parameters[item.substr(0, eq)] = number("--truth", item.substr(eq + 1));
+                at = comma + 1;
+            }
+        }
+        e.truth = t;
+    }
+    if (!f.surfacingInterval.empty())
+    {
+        try
+        {
+            e.surfacingInterval =
+                parseDuration(f.surfacingInterval, m.timeUnitSeconds,
+                              m.current.type == "netcdf" || m.timeUnitSeconds != 1.0 || m.epoch.has_value());
+        }
+        catch (const ompl_glider::Error &err)
+        {
+            throw UsageError{std::string("--surfacing-interval: ") + err.what()};
+        }
+    }
+    if (!f.strategies.empty())
+    {
+        e.strategies.clear();
+        std::size_t at = 0;
+        while (at <= f.strategies.size())
+        {
+            const std::size_t comma = std::min(f.strategies.find(',', at), f.strategies.size());
+            const std::string name = f.strategies.substr(at, comma - at);
+            if (!parseControlStrategy(name))
+                throw UsageError{"--strategies: unknown strategy '" + name +
+                                 "' (expected a comma-separated list of current_sensitive, current_blind, greedy, "
+                                 "replan)"};
+            if (std::find(e.strategies.begin(), e.strategies.end(), name) != e.strategies.end())
+                throw UsageError{"--strategies: '" + name + "' is listed twice"};
+            e.strategies.push_back(name);
+            at = comma + 1;
+        }
+    }
+    if (f.radius)
+        e.radius = *f.radius;
+    if (f.executionPairs)
+        e.pairs = *f.executionPairs;
+    if (f.executionSeed)
+        e.seed = *f.executionSeed;
+}
+
 /// The settings common to the built-in and forecast modes.
 void applySettings(const Flags &f, MissionSpec &m)
 {
@@ -119,6 +218,7 @@ void applySettings(const Flags &f, MissionSpec &m)
     if (f.speed)
         m.vehicle.speed = m.travel.speed = *f.speed;
     m.outputs.directory = f.out;
+    applyExecution(f, m);
     if (!f.coastline.empty())
     {
         m.forbidden.coastline = f.coastline;
@@ -201,6 +301,29 @@ void defineFlags(CLI::App &app, Flags &f)
         ->check(CLI::ExistingFile)
         ->group(io);
     app.add_flag("--verbose", f.verbose, "show OMPL's log messages")->group(io);
+    auto *ex = "Execution in another ocean (any of these flies the plan; not with --mission: use its execution section)";
+    app.add_option("--truth", f.truth,
+                   "the ocean the plan is flown in: 'forecast' (the planning field itself), with --currents another "
+                   "NetCDF file (list or glob; same variable names), for the built-in flow its parameters changed, "
+                   "e.g. B0=1.3,c=0.14")
+        ->group(ex);
+    app.add_option("--surfacing-interval", f.surfacingInterval,
+                   "time between surfacings: a number in the mission's time unit, or e.g. '1 h', '30 min' (default "
+                   "1 h)")
+        ->group(ex);
+    app.add_option("--strategies", f.strategies,
+                   "control strategies compared, e.g. current_sensitive,current_blind,greedy,replan (default: all)")
+        ->group(ex);
+    app.add_option("--radius", f.radius,
+                   "the goal counts as reached within this distance (mission length unit; default 1 % of the "
+                   "start-goal distance)")
+        ->check(kPositiveFinite)
+        ->group(ex);
+    app.add_option("--execution-pairs", f.executionPairs,
+                   "also fly this many random start/goal pairs of the region (a batch: box plot execution.png)")
+        ->check(CLI::Range(0u, 100000u))
+        ->group(ex);
+    app.add_option("--execution-seed", f.executionSeed, "seed of the random pairs (default 1)")->group(ex);
     auto *nc = "NetCDF forecast (with --currents)";
     ForecastInput &fc = f.forecast;
     for (const char *role : {"u", "v", "lon", "lat", "depth", "time"})

@@ -29,6 +29,10 @@ struct Flags
     std::optional<double> speed, gridSize, timeLimit, depth;
     std::optional<int> sectors;
     bool noSmooth{false}, noRefine{false}, optimum{false}, verbose{false};
+    // execution in another ocean (any of these enables it)
+    std::string truth, surfacingInterval, strategies;
+    std::optional<double> radius;
+    std::optional<unsigned> executionPairs, executionSeed;
     ompl_glider::ForecastInput forecast;
 };
 

@@ -25,6 +25,21 @@ std::string controlStrategyName(ControlStrategy s)
     return "unknown";
 }
 
+const std::vector<ControlStrategy> &controlStrategies()
+{
+    static const std::vector<ControlStrategy> all{ControlStrategy::CurrentSensitive, ControlStrategy::CurrentBlind,
+                                                  ControlStrategy::Greedy, ControlStrategy::Replan};
+    return all;
+}
+
+std::optional<ControlStrategy> parseControlStrategy(const std::string &name)
+{
+    for (ControlStrategy s : controlStrategies())
+        if (controlStrategyName(s) == name)
+            return s;
+    return std::nullopt;
+}
+
 void crabHeading(double dx, double dy, Velocity c, double speed, double &hx, double &hy)
 {
     // c = along * d + cross * n with n the left normal of d; the heading cancels the cross part

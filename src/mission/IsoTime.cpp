@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <regex>
 
 #include "ompl_glider/Exception.h"
@@ -86,5 +87,40 @@ std::string formatIsoTime(double s)
     std::snprintf(buf, sizeof buf, "%04lld-%02u-%02uT%02lld:%02lld:%02lldZ", y, m, d, rem / 3600, (rem / 60) % 60,
                   rem % 60);
     return buf;
+}
+double parseDuration(const std::string &text, double timeUnitSeconds, bool unitKnown)
+{
+    const std::string expected =
+        "expected a duration > 0: a number in the mission's time unit, or e.g. '1 h', '30 min', '2 d'; got '" + text +
+        "'";
+    const char *begin = text.c_str();
+    char *end = nullptr;
+    const double value = std::strtod(begin, &end);
+    if (end == begin)
+        throw Error(expected);
+    std::string unit(end);
+    const std::size_t a = unit.find_first_not_of(' '), b = unit.find_last_not_of(' ');
+    unit = a == std::string::npos ? std::string() : unit.substr(a, b - a + 1);
+    double seconds = 0.0;
+    if (unit == "s")
+        seconds = 1.0;
+    else if (unit == "min")
+        seconds = 60.0;
+    else if (unit == "h")
+        seconds = 3600.0;
+    else if (unit == "d")
+        seconds = 86400.0;
+    else if (!unit.empty())
+        throw Error(expected);
+    if (!std::isfinite(value) || !(value > 0.0))
+        throw Error(expected);
+    if (unit.empty())
+        return value;
+    if (!unitKnown)
+        throw Error("'" + text + "' needs the mission's time unit: give units.time_s, or the duration as a number");
+    const double v = value * seconds / timeUnitSeconds;
+    if (!std::isfinite(v))
+        throw Error(expected);
+    return v;
 }
 }  // namespace ompl_glider

@@ -131,7 +131,7 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         throw Error(r.file() + ": the mission file is empty");
     r.checkMap(root, "",
                {"name", "units", "epoch", "projection", "current", "region", "start", "goal", "departure", "vehicle",
-                "travel_time", "dive_profile", "forbidden", "planner", "outputs", "speeds"});
+                "travel_time", "dive_profile", "forbidden", "planner", "outputs", "speeds", "execution"});
     readHeader(r, root, m);
     if (!root["current"])
         r.fail(root, "current", "missing: the current source (type: meandering_jet | uniform | ... | netcdf)");
@@ -171,6 +171,8 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     if ((!root["outputs"] || !root["outputs"]["files"]) && !m.projection.set && m.current.type != "netcdf")
         m.outputs.files = {"csv", "geojson", "summary"};  // no lon/lat: no goto list by default
     readSpeedsAndCheck(r, root, m);
+    if (root["execution"])
+        readExecution(r, root["execution"], m);
     m.marks = r.marks();
     return m;
 }

@@ -1,8 +1,11 @@
 #include "ompl_glider/mission/MissionProblem.h"
 
+#include "ompl_glider/current/ShiftedTimeField.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -188,6 +191,7 @@ MissionProblem::~MissionProblem() = default;
 MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
 {
     buildField();
+    buildTruth();
     start_ = localPoint(spec_.start, "start");
     goal_ = localPoint(spec_.goal, "goal");
     buildBox();
@@ -236,6 +240,73 @@ void MissionProblem::buildField()
     throw Error(where(m, m.current.mark) + "field 'current.type': this build of ompl_glider has no NetCDF "
                                            "support (OMPL_GLIDER_WITH_NETCDF=OFF)");
 #endif
+}
+
+void MissionProblem::buildTruth()
+{
+    const MissionSpec &m = spec_;
+    if (!m.execution.enabled || !m.execution.truth)
+        return;
+    const CurrentSpec &t = *m.execution.truth;
+    const std::string at = where(m, t.mark) + "field 'execution.truth': ";
+    const CurrentFieldKind *kind = findCurrentFieldKind(t.type);
+    if (!kind)
+        throw Error(at + "unknown type '" + t.type + "' (expected one of " + currentFieldKindList() + ")");
+    if (!kind->gridded)
+    {
+        truth_ = makeAnalyticField(t.type, t.parameters);
+        return;
+    }
+#if OMPL_GLIDER_WITH_NETCDF
+    // The truth is read like the forecast (same region and projection centre), every record of the region: its
+    // time axis may start at another date, so the trip's records are not known in its own time.
+    MissionSpec tm = m;
+    tm.current = t;
+    NetCdfCurrentOptions o = netCdfLoadOptions(tm);
+    o.departure.clear();
+    o.horizon = std::numeric_limits<double>::infinity();
+    if (projection_)
+    {
+        o.refLon = projection_->lon0();
+        o.refLat = projection_->lat0();
+    }
+    NetCdfCurrents nc;
+    try
+    {
+        nc = loadNetCdfCurrents(t.forecastFiles(), o);
+    }
+    catch (const Error &e)
+    {
+        throw Error(at + netCdfMissionMessage(e.what()));
+    }
+    if (!nc.projection != !projection_)
+        throw Error(at + (projection_ ? "the truth has no longitude/latitude but the forecast has"
+                                      : "the truth has longitude/latitude but the forecast is Cartesian"));
+    // Field time 0 of each file is its first time: the truth is shifted so that both are asked at the same date.
+    double shift = 0.0;
+    if (m.fileCalendar && nc.dated && !nc.steady)
+    {
+        if (nc.calendar != m.fileCalendar->calendar)
+            throw Error(at + "its calendar (" + calendarName(nc.calendar) + ") differs from the forecast's (" +
+                        calendarName(m.fileCalendar->calendar) + ")");
+        shift = m.fileCalendar->originSeconds - nc.originSeconds;
+    }
+    else if (m.fileCalendar && !nc.dated && !nc.steady)
+        throw Error(at + "its time axis has no dates ('<unit> since <date>') but the forecast's has: the two cannot "
+                         "be aligned");
+    truth_ = shift == 0.0 ? std::shared_ptr<const CurrentField>(nc.field)
+                          : std::make_shared<ShiftedTimeField>(nc.field, shift);
+#else
+    throw Error(at + "this build of ompl_glider has no NetCDF support (OMPL_GLIDER_WITH_NETCDF=OFF)");
+#endif
+}
+
+MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
+{
+    MissionProblem p(*this);
+    p.start_ = start;
+    p.goal_ = goal;
+    return p;
 }
 
 Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) const

@@ -469,6 +469,8 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     const std::vector<double> speeds = options.speeds ? *options.speeds : m.speeds;
     if (!speeds.empty())
         result.speedSweep = speedSweep(problem, tDep, speeds, options.progress);
+    if (m.execution.enabled)
+        result.execution = executeMission(problem, result.plan, options.progress);
     result.wallSeconds = secondsSince(start);
     return result;
 }

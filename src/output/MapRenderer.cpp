@@ -786,37 +786,45 @@ void MapRenderer::draw(void *context) const
         ly += 18 * wrappedText(cr, lx, ly + 4, n, 12, W - lx - 8, 18);
 }
 
-void MapRenderer::writeSvg(const std::string &filename) const
+void writeCairoFile(const std::string &filename, int width, int height, bool svg,
+                    const std::function<void(void *)> &draw)
 {
-    const auto [W, H] = size();
-    cairo_surface_t *surf = cairo_svg_surface_create(filename.c_str(), W, H);
+    cairo_surface_t *surf = svg ? cairo_svg_surface_create(filename.c_str(), width, height)
+                                : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
     if (cairo_surface_status(surf) != CAIRO_STATUS_SUCCESS)
     {
         const std::string msg = cairo_status_to_string(cairo_surface_status(surf));
         cairo_surface_destroy(surf);
-        throw Error("MapRenderer::writeSvg: cannot create '" + filename + "': " + msg);
+        throw Error("cannot create '" + filename + "': " + msg);
     }
     cairo_t *cr = cairo_create(surf);
     draw(cr);
     cairo_destroy(cr);
-    cairo_surface_finish(surf);
-    const cairo_status_t st = cairo_surface_status(surf);
+    cairo_status_t st;
+    if (svg)
+    {
+        cairo_surface_finish(surf);
+        st = cairo_surface_status(surf);
+    }
+    else
+    {
+        cairo_surface_flush(surf);
+        st = cairo_surface_write_to_png(surf, filename.c_str());
+    }
     cairo_surface_destroy(surf);
     if (st != CAIRO_STATUS_SUCCESS)
-        throw Error("MapRenderer::writeSvg: cannot write '" + filename + "': " + cairo_status_to_string(st));
+        throw Error("cannot write '" + filename + "': " + cairo_status_to_string(st));
+}
+
+void MapRenderer::writeSvg(const std::string &filename) const
+{
+    const auto [W, H] = size();
+    writeCairoFile(filename, W, H, true, [this](void *cr) { draw(cr); });
 }
 
 void MapRenderer::writePng(const std::string &filename) const
 {
     const auto [W, H] = size();
-    cairo_surface_t *surf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, W, H);
-    cairo_t *cr = cairo_create(surf);
-    draw(cr);
-    cairo_destroy(cr);
-    cairo_surface_flush(surf);
-    const cairo_status_t st = cairo_surface_write_to_png(surf, filename.c_str());
-    cairo_surface_destroy(surf);
-    if (st != CAIRO_STATUS_SUCCESS)
-        throw Error("MapRenderer::writePng: cannot write '" + filename + "': " + cairo_status_to_string(st));
+    writeCairoFile(filename, W, H, false, [this](void *cr) { draw(cr); });
 }
 }  // namespace ompl_glider

@@ -140,6 +140,29 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
         opt.waypointMarkers = false;
         map.addPath(opt);
     }
+    if (r.execution && r.execution->runs.front().planned)
+    {
+        // the mission's own run flown in the truth, one track per strategy, surfacings marked
+        const ExecutionResult &e = *r.execution;
+        const Rgba colours[4] = {{0.05, 0.35, 0.85, 0.9}, {0.10, 0.60, 0.20, 0.9}, {0.95, 0.50, 0.05, 0.9},
+                                 {0.55, 0.20, 0.70, 0.9}};
+        for (std::size_t k = 0; k < e.strategies.size(); ++k)
+        {
+            const FlownTrack &f = e.runs.front().flown[k];
+            MapPath flown;
+            flown.label = "flown " + controlStrategyName(e.strategies[k]) + ": " +
+                          (f.reached ? "arrived T=" + duration(r, f.arrivalTime - r.plan.departure, true)
+                                     : std::string(f.grounded ? "grounded" : "not arrived")) +
+                          ", " + length(r, f.finalDistance) + " off at the planned arrival";
+            flown.waypoints = f.fixes;
+            flown.colour = colours[k % 4];
+            flown.width = 1.4;
+            flown.dashed = true;
+            flown.waypointMarkers = true;
+            map.addPath(flown);
+        }
+        map.addNote("flown in " + e.truth + ", surfacing every " + duration(r, e.surfacingInterval));
+    }
     const Point2 s = problem.getStart(), g = problem.getGoal();
     map.setStartGoal(s.x, s.y, g.x, g.y);
     const std::string iso = r.waypoints.empty() ? "" : r.waypoints.front().iso;

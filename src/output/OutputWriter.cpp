@@ -15,6 +15,7 @@
 #if OMPL_GLIDER_WITH_MAP
 #include "ompl_glider/output/MissionMap.h"
 #endif
+#include "ompl_glider/output/ExecutionFiles.h"
 #include "ompl_glider/output/RouteFiles.h"
 #include "ompl_glider/output/SlocumGoto.h"
 #include "ompl_glider/output/SummaryJson.h"
@@ -48,6 +49,23 @@ std::vector<OutputFile> formatFiles(const std::string &format, const MissionResu
             return {};
         return {{gotoFileName(r.spec.outputs.gotoNumber),
                  [res](const std::string &p) { writeGotoFile(p, gotoList(*res)); }}};
+    }
+    if (format == "execution")
+    {
+        if (!r.execution)
+            return {};
+        const MissionProblem *prob = &problem;
+        std::vector<OutputFile> files{
+            {"execution.csv", [res, prob](const std::string &p) { writeText(p, executionCsv(*res->execution, *prob)); }},
+            {"execution_tracks.csv",
+             [res, prob](const std::string &p) { writeText(p, executionTracksCsv(*res->execution, *prob)); }}};
+#if OMPL_GLIDER_WITH_MAP
+        for (const bool svg : {true, false})
+            files.push_back({svg ? "execution.svg" : "execution.png", [res, svg](const std::string &p) {
+                                 writeExecutionPlot(p, *res->execution, res->spec, svg);
+                             }});
+#endif
+        return files;
     }
 #if OMPL_GLIDER_WITH_MAP
     if (format == "map")
@@ -129,6 +147,10 @@ const std::vector<OutputFormat> &outputFormats()
         {"geojson", "path.geojson", "the path and its waypoints as GeoJSON", true},
         {"goto", "goto_lNN.ma", "Slocum goto list (geographic missions)", true},
         {"map", "map.svg, map.png", "map of the current, regions and paths", false},
+        {"execution", "execution.csv, execution_tracks.csv, execution.svg/png",
+         "the plan flown in the truth per strategy, and the box plot of a batch (written whenever the mission has "
+         "an execution section)",
+         false},
     };
     return formats;
 }
@@ -140,7 +162,7 @@ std::vector<OutputFile> outputFiles(const MissionResult &r, const MissionProblem
     {
         if (format.name == "summary")
             continue;
-        bool wanted = false;
+        bool wanted = format.name == "execution" && r.execution;
         for (const std::string &f : r.spec.outputs.files)
             wanted = wanted || f == format.name;
         if (!wanted || (format.route && !r.plan.solved))

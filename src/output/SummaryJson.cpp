@@ -32,6 +32,64 @@ json position(const MissionProblem &problem, Point2 p)
     return j;
 }
 
+json spreadJson(const MeasureSpread &s)
+{
+    return {{"count", s.count},  {"min", jnum(s.min)}, {"q1", jnum(s.q1)},        {"median", jnum(s.median)},
+            {"q3", jnum(s.q3)}, {"max", jnum(s.max)}, {"mean", jnum(s.mean)}};
+}
+
+/// The execution: one object per strategy (keyed by its name) with the mission's own run, its spread over every
+/// run flown (the batch), and the settings.
+json executionJson(const ExecutionResult &e, const MissionProblem &problem)
+{
+    json j;
+    j["truth"] = e.truth;
+    j["surfacing_interval"] = e.surfacingInterval;
+    j["step"] = e.step;
+    const ExecutionRun &own = e.runs.front();
+    j["radius"] = own.radius;
+    j["runs"] = e.runs.size();
+    std::size_t planned = 0;
+    for (const ExecutionRun &run : e.runs)
+        planned += run.planned ? 1 : 0;
+    j["runs_planned"] = planned;
+    j["threads"] = e.threads;
+    j["wall_time_s"] = e.wallSeconds;
+    j["planned"] = own.planned;
+    j["reason"] = jtext(own.reason);
+    for (std::size_t k = 0; k < e.strategies.size(); ++k)
+    {
+        const StrategySpread &s = e.spread[k];
+        json o;
+        if (own.planned)
+        {
+            const FlownTrack &f = own.flown[k];
+            o["final_distance"] = jnum(f.finalDistance);
+            o["arrival_time"] = jnum(f.arrivalTime);
+            o["arrival_iso"] = std::isfinite(f.arrivalTime) ? jtext(problem.isoTime(f.arrivalTime)) : json(nullptr);
+            o["planned_arrival"] = f.plannedArrival;
+            o["reached"] = f.reached;
+            o["grounded"] = f.grounded;
+            o["grounded_why"] = jtext(f.groundedWhy);
+            o["made_good_speed"] = f.madeGoodSpeed;
+            o["surfacings"] = f.fixes.empty() ? 0 : f.fixes.size() - 1;
+            if (e.strategies[k] == ControlStrategy::Replan)
+                o["replans"] = f.replans;
+        }
+        else
+            for (const char *key : {"final_distance", "arrival_time", "reached", "grounded"})
+                o[key] = nullptr;
+        o["batch"] = {{"runs", s.runs},
+                      {"reached", s.reached},
+                      {"grounded", s.grounded},
+                      {"final_distance", spreadJson(s.finalDistance)},
+                      {"arrival_delay", spreadJson(s.arrivalDelay)},
+                      {"made_good_speed", spreadJson(s.madeGoodSpeed)}};
+        j[s.strategy] = o;
+    }
+    return j;
+}
+
 json plannerJson(const MissionSpec &m, const PlannedPath &p)
 {
     json params = json::object();
@@ -132,6 +190,8 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                             {"straight_line_length", w.straightLineLength}});
         j["speed_sweep"] = rows;
     }
+    if (r.execution)
+        j["execution"] = executionJson(*r.execution, problem);
     j["files"] = files;
     return j.dump(2) + "\n";
 }

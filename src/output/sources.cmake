@@ -5,10 +5,12 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/SummaryJson.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Report.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputWriter.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ExecutionFiles.cpp
 )
 if(OMPL_GLIDER_WITH_MAP)
   list(APPEND OMPL_GLIDER_SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/MapRenderer.cpp
     ${CMAKE_CURRENT_LIST_DIR}/MissionMap.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/ExecutionPlot.cpp
   )
 endif()

@@ -16,6 +16,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,8 +41,12 @@ enum class ControlStrategy
     Replan
 };
 
-/// @brief The name of a strategy as outputs write it: "current_sensitive", "current_blind", "greedy".
+/// @brief The name of a strategy as outputs write it: "current_sensitive", "current_blind", "greedy", "replan".
 std::string controlStrategyName(ControlStrategy s);
+/// @brief Every strategy, in the order above.
+const std::vector<ControlStrategy> &controlStrategies();
+/// @brief The strategy of a name of controlStrategyName(); nullopt for any other text.
+std::optional<ControlStrategy> parseControlStrategy(const std::string &name);
 
 /// @brief A new plan from a GPS fix (x, y at time t) to the goal; empty when there is none (the old plan is kept).
 using Replanner = std::function<std::vector<TimedWaypoint>(double x, double y, double t)>;

@@ -14,4 +14,9 @@ double parseIsoTime(const std::string &text);
 
 /// @brief "YYYY-MM-DDThh:mm:ssZ" (rounded to the second).
 std::string formatIsoTime(double secondsSince1970);
+
+/// @brief A duration in field units: a number (field units), or "<number> s|min|h|d" (also without the space)
+/// converted with @p timeUnitSeconds seconds per field unit; @p unitKnown false (an analytic flow without
+/// units.time_s) refuses the second form. @throws Error saying what was expected (the caller adds where).
+double parseDuration(const std::string &text, double timeUnitSeconds, bool unitKnown);
 }  // namespace ompl_glider

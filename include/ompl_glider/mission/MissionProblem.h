@@ -55,6 +55,15 @@ public:
     {
         return forecastFiles_;
     }
+    /// @brief The ocean an execution flies in (MissionSpec::execution.truth, on the forecast's frame and time
+    /// axis); the forecast itself when no truth is given.
+    const std::shared_ptr<const CurrentField> &getTruth() const
+    {
+        return truth_ ? truth_ : field_;
+    }
+    /// @brief The same problem between other endpoints (planning frame): field, truth, regions and box are shared.
+    /// The spec's start and goal stay the mission's.
+    MissionProblem withEndpoints(Point2 start, Point2 goal) const;
     /// @brief The forbidden regions (null when there are none).
     const std::shared_ptr<const Environment> &getEnvironment() const
     {
@@ -102,6 +111,7 @@ public:
 
 private:
     void buildField();
+    void buildTruth();
     void buildBox();
     void buildRegions();
     Point2 localPoint(const PointSpec &p, const std::string &what) const;
@@ -110,6 +120,7 @@ private:
 
     MissionSpec spec_;
     std::shared_ptr<const CurrentField> field_;
+    std::shared_ptr<const CurrentField> truth_;  // null: the forecast
     std::shared_ptr<const Environment> environment_;
     std::shared_ptr<const LocalProjection> projection_;
     double projectionScale_{1.0};  // metres per planning unit

@@ -206,6 +206,31 @@ struct OutputSpec
     double mapTime{std::numeric_limits<double>::quiet_NaN()};  ///< time of the map's current arrows (NaN: departure)
 };
 
+/// @brief Flying the plan in another ocean (issue 13; [ThompsonICRA]): the "truth" current, the surfacings, the
+/// control strategies compared, and a batch of other start/goal pairs.
+struct ExecutionSpec
+{
+    bool enabled{false};  ///< an `execution` section (or --truth / --execution) was given
+    /// The ocean the glider flies in: a current source of the same family as `current` (an analytic flow, or a
+    /// NetCDF file on the same calendar); unset: the forecast itself (truth = forecast).
+    std::optional<CurrentSpec> truth;
+    /// Time between surfacings (field units); NaN: one hour (3600 s / units.time_s, or 3600 for a forecast).
+    double surfacingInterval{std::numeric_limits<double>::quiet_NaN()};
+    /// Strategies by name (current_sensitive, current_blind, greedy, replan), in the order given.
+    std::vector<std::string> strategies{"current_sensitive", "current_blind", "greedy", "replan"};
+    /// The goal counts as reached within this distance (length units); NaN: 1 % of the start-goal distance.
+    double radius{std::numeric_limits<double>::quiet_NaN()};
+    unsigned replanEvery{1};  ///< replan at every n-th surfacing
+    /// The run ends at departure + this (field units); NaN: twice the planned travel time.
+    double duration{std::numeric_limits<double>::quiet_NaN()};
+    unsigned pairs{0};        ///< batch: random start/goal pairs besides the mission's own (0: none)
+    unsigned seed{1};         ///< batch: seed of the pairs
+    double minDistance{std::numeric_limits<double>::quiet_NaN()};  ///< batch: shortest start-goal distance;
+                                                                  ///< NaN: a quarter of the box's diagonal
+    unsigned threads{0};      ///< batch: parallel runs (0: all cores)
+    SourceMark mark;          ///< where the section is
+};
+
 /// @brief A complete mission.
 struct MissionSpec
 {
@@ -235,6 +260,7 @@ struct MissionSpec
     PlannerSpec planner;
     OutputSpec outputs;
     std::vector<double> speeds;    ///< speed sweep ([EichhornOceans] Table VI); empty = none
+    ExecutionSpec execution;       ///< flying the plan in another ocean (issue 13)
     /// Where each value was given, by dotted field name ("planner.grid_size"): a line of the mission file, or the
     /// command-line flag. Checks made after loading (those that need the field or the region) name it with place().
     std::map<std::string, SourceMark> marks;

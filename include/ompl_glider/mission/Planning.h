@@ -16,6 +16,7 @@
 #include "ompl_glider/Progress.h"
 #include "ompl_glider/cost/DiveProfile.h"
 #include "ompl_glider/mission/DepartureTimeSearch.h"
+#include "ompl_glider/mission/MissionExecution.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/planners/TveSearch.h"
 
@@ -122,6 +123,7 @@ struct MissionResult
     std::optional<DepartureSearchResult> departureSearch;  ///< when a window was given
     std::optional<OptimumReference> optimum;               ///< when asked (RunOptions::optimum)
     std::vector<SpeedSweepRow> speedSweep;  ///< speed sweep rows
+    std::optional<ExecutionResult> execution;  ///< the plan flown in the truth (MissionSpec::execution)
     double wallSeconds{0.0};                ///< whole run
 };
 

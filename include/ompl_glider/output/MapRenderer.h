@@ -15,6 +15,11 @@
 
 namespace ompl_glider
 {
+/// @brief Writes a drawing as SVG (@p svg) or PNG of @p width x @p height pixels: @p draw gets the cairo_t.
+/// @throws Error naming the file when it cannot be written.
+void writeCairoFile(const std::string &filename, int width, int height, bool svg,
+                    const std::function<void(void *)> &draw);
+
 /// @brief A colour with alpha, components in [0, 1].
 struct Rgba
 {

@@ -89,6 +89,9 @@ void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, P
 void readPolygon(const Reader &r, const YAML::Node &n, const std::string &field, PolygonSpec &poly,
                  const MissionSpec &m);
 void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m);
+/// A current source (the `current` section's keys) under the dotted field @p field, without the file calendar.
+void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &field, CurrentSpec &c);
+void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readRegion(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m);

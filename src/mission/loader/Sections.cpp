@@ -1,6 +1,8 @@
 // Readers of the mission's sections: current (with the NetCDF file's calendar), region, departure, dive profile,
 // planner and outputs ([EichhornOceans] Sec. IV mission contents).
+#include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -11,6 +13,7 @@
 #include "ompl_glider/current/CfTime.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/execution/Execution.h"
 #include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/output/OutputFormats.h"
@@ -78,9 +81,8 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
 
 /// current.velocity_units (checked with UDUNITS-2 now: it does not depend on the file), current.time_units
 /// (checked against the file's calendar by readFileCalendar) and current.steady_record.
-void readUnitsAndRecord(const Reader &r, const YAML::Node &n, CurrentSpec &c)
+void readUnitsAndRecord(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c)
 {
-    const std::string f = "current";
     if (n["velocity_units"])
     {
         c.velocityUnits = r.text(n["velocity_units"], f + ".velocity_units");
@@ -115,9 +117,8 @@ namespace
 {
 /// current.file: a path or a glob pattern, or a list of them (a forecast in several files), relative to the
 /// mission file; every file must exist.
-void readForecastFiles(const Reader &r, const YAML::Node &n, CurrentSpec &c)
+void readForecastFiles(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c)
 {
-    const std::string f = "current.file";
     std::vector<std::string> items;
     if (n.IsSequence())
     {
@@ -150,11 +151,16 @@ void readForecastFiles(const Reader &r, const YAML::Node &n, CurrentSpec &c)
 
 void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
-    const std::string f = "current";
+    readCurrentSource(r, n, "current", m.current);
+    if (m.current.type == "netcdf")
+        readFileCalendar(r, n, m);
+}
+
+void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c)
+{
     r.checkMap(n, f,
                {"type", "parameters", "file", "variables", "interpolation", "horizon", "velocity_units", "time_units",
                 "steady_record", "zero_velocity_land", "depth_average"});
-    CurrentSpec &c = m.current;
     c.mark = {r.file(), r.line(n)};
     std::set<std::string> kinds;
     for (const CurrentFieldKind &k : currentFieldKinds())
@@ -186,7 +192,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
         return;
     if (!n["file"])
         r.fail(n, f + ".file", "missing: the NetCDF forecast file");
-    readForecastFiles(r, n["file"], c);
+    readForecastFiles(r, n["file"], f + ".file", c);
     if (n["variables"])
     {
         r.checkMap(n["variables"], f + ".variables", {"u", "v", "x", "y", "lon", "lat", "depth", "time", "mask", "angle"});
@@ -218,8 +224,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
                    "expected [top, bottom] in metres, positive down, 0 <= top <= bottom <= 12000");
         c.depthAverage = std::make_pair(top, bottom);
     }
-    readUnitsAndRecord(r, n, c);
-    readFileCalendar(r, n, m);
+    readUnitsAndRecord(r, n, f, c);
 }
 
 void readRegion(const Reader &r, const YAML::Node &n, MissionSpec &m)
@@ -469,5 +474,95 @@ void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
     }
     if (n["map_time"])
         o.mapTime = r.time(n["map_time"], f + ".map_time", m);
+}
+}  // namespace ompl_glider::mission_loader
+
+namespace ompl_glider::mission_loader
+{
+namespace
+{
+/// A duration: a number in field units, or a text "<number> s|min|h|d" converted with units.time_s.
+double duration(const Reader &r, const YAML::Node &n, const std::string &f, const MissionSpec &m)
+{
+    if (!n.IsScalar())
+        r.fail(n, f, "expected a duration: a number in the mission's time unit, or e.g. '1 h', '30 min', '2 d'");
+    try
+    {
+        return parseDuration(n.Scalar(), m.timeUnitSeconds,
+                             m.current.type == "netcdf" || m.timeUnitSeconds != 1.0 || m.epoch.has_value());
+    }
+    catch (const Error &e)
+    {
+        r.fail(n, f, e.what());
+    }
+}
+}  // namespace
+
+void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const std::string f = "execution";
+    r.checkMap(n, f, {"truth", "surfacing_interval", "strategies", "radius", "replan_every", "duration", "batch"});
+    ExecutionSpec &e = m.execution;
+    e.enabled = true;
+    e.mark = {r.file(), r.line(n)};
+    if (n["truth"])
+    {
+        const YAML::Node &t = n["truth"];
+        if (t.IsScalar() && t.Scalar() == "forecast")
+            e.truth.reset();
+        else
+        {
+            if (!t.IsMap())
+                r.fail(t, f + ".truth", "expected 'forecast' or a current source (type: ..., as in 'current')");
+            CurrentSpec c;
+            readCurrentSource(r, t, f + ".truth", c);
+            c.mark = {r.file(), r.line(t)};
+            const bool gridded = c.type == "netcdf", forecastGridded = m.current.type == "netcdf";
+            if (gridded != forecastGridded)
+                r.fail(t["type"], f + ".truth.type",
+                       forecastGridded ? "the forecast is a NetCDF file: the truth must be one too (same frame)"
+                                       : "the forecast is an analytic flow: the truth must be one too (same units)");
+            e.truth = c;
+        }
+    }
+    if (n["surfacing_interval"])
+        e.surfacingInterval = duration(r, n["surfacing_interval"], f + ".surfacing_interval", m);
+    if (n["duration"])
+        e.duration = duration(r, n["duration"], f + ".duration", m);
+    if (n["strategies"])
+    {
+        const YAML::Node &l = n["strategies"];
+        std::set<std::string> names;
+        for (ControlStrategy s : controlStrategies())
+            names.insert(controlStrategyName(s));
+        if (!l.IsSequence() || l.size() == 0)
+            r.fail(l, f + ".strategies", "expected a list such as [current_sensitive, current_blind, greedy, replan]");
+        e.strategies.clear();
+        for (std::size_t i = 0; i < l.size(); ++i)
+        {
+            const std::string field = f + ".strategies[" + std::to_string(i) + "]";
+            const std::string s = r.oneOf(l[i], field, names);
+            if (std::find(e.strategies.begin(), e.strategies.end(), s) != e.strategies.end())
+                r.fail(l[i], field, "'" + s + "' is listed twice");
+            e.strategies.push_back(s);
+        }
+    }
+    if (n["radius"])
+        e.radius = r.positive(n["radius"], f + ".radius");
+    if (n["replan_every"])
+        e.replanEvery = static_cast<unsigned>(r.integer(n["replan_every"], f + ".replan_every", 1, 100000));
+    if (n["batch"])
+    {
+        const YAML::Node &b = n["batch"];
+        r.checkMap(b, f + ".batch", {"pairs", "seed", "min_distance", "threads"});
+        if (b["pairs"])
+            e.pairs = static_cast<unsigned>(r.integer(b["pairs"], f + ".batch.pairs", 0, 100000));
+        if (b["seed"])
+            e.seed = static_cast<unsigned>(r.integer(b["seed"], f + ".batch.seed", 0, 4294967295L));
+        if (b["min_distance"])
+            e.minDistance = r.positive(b["min_distance"], f + ".batch.min_distance");
+        if (b["threads"])
+            e.threads = static_cast<unsigned>(r.integer(b["threads"], f + ".batch.threads", 0, 1024));
+    }
 }
 }  // namespace ompl_glider::mission_loader

@@ -1,0 +1,86 @@
+#pragma once
+/// @file MissionExecution.h
+/// @brief The mission's execution in another ocean (issue 13, [ThompsonICRA]): the plan of the pipeline is flown
+/// with every control strategy of MissionSpec::execution in the "truth" current (MissionProblem::getTruth()),
+/// and, for a batch, so are plans between random start/goal pairs of the region. Part of the one pipeline:
+/// runMission() calls executeMission() when the mission has an `execution` section; the result is a member of
+/// MissionResult and written by the output layer (execution.csv, execution_tracks.csv, the box plot, summary.json).
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/Geometry.h"
+#include "ompl_glider/Progress.h"
+#include "ompl_glider/execution/Execution.h"
+
+namespace ompl_glider
+{
+class MissionProblem;
+struct PlannedPath;
+
+/// @brief One start/goal pair, planned on the forecast and flown with each strategy.
+struct ExecutionRun
+{
+    unsigned index{0};        ///< 0: the mission's own start and goal; 1..: the batch's pairs
+    Point2 start, goal;       ///< planning frame
+    bool planned{false};      ///< the forecast gave a plan (runs without one are not flown)
+    std::string reason;       ///< why there is no plan
+    double departure{0.0};    ///< departure (field units)
+    double radius{0.0};       ///< goal radius used (length units)
+    std::vector<TimedWaypoint> plan;  ///< the plan flown (the final path of planRoute())
+    std::vector<FlownTrack> flown;    ///< one per ExecutionResult::strategies
+};
+
+/// @brief Quartiles of one measure over the runs of a strategy.
+struct MeasureSpread
+{
+    std::size_t count{0};  ///< runs with a value
+    double min{std::numeric_limits<double>::quiet_NaN()};
+    double q1{std::numeric_limits<double>::quiet_NaN()};
+    double median{std::numeric_limits<double>::quiet_NaN()};
+    double q3{std::numeric_limits<double>::quiet_NaN()};
+    double max{std::numeric_limits<double>::quiet_NaN()};  ///< the worst for distances and delays
+    double mean{std::numeric_limits<double>::quiet_NaN()};
+};
+
+/// @brief Quartiles (linear interpolation between order statistics) of the finite values of @p v.
+MeasureSpread measureSpread(std::vector<double> v);
+
+/// @brief What a strategy did over the runs that were flown.
+struct StrategySpread
+{
+    std::string strategy;         ///< controlStrategyName()
+    MeasureSpread finalDistance;  ///< distance to the goal at the planned arrival time
+    MeasureSpread arrivalDelay;   ///< arrival (within radius) minus the planned arrival, runs that arrived
+    MeasureSpread madeGoodSpeed;  ///< speed made good
+    std::size_t runs{0};          ///< runs flown
+    std::size_t reached{0};       ///< runs that reached the goal within radius
+    std::size_t grounded{0};      ///< runs that ended on land or in a forbidden region
+};
+
+/// @brief Every run of an execution.
+struct ExecutionResult
+{
+    std::vector<ControlStrategy> strategies;  ///< in the mission's order
+    std::string truth;            ///< name of the truth field ("forecast" when it is the forecast itself)
+    double surfacingInterval{0.0};  ///< field units
+    double step{0.0};             ///< integration step while submerged (field units)
+    unsigned replanEvery{1};      ///< replan strategy: surfacings between plans
+    std::vector<ExecutionRun> runs;  ///< runs[0] is the mission's own pair
+    std::vector<StrategySpread> spread;  ///< one per strategy, over every run flown
+    unsigned threads{1};          ///< threads used
+    double wallSeconds{0.0};      ///< wall time of the execution
+};
+
+/// @brief Flies @p plan (the pipeline's plan of the mission; when not solved, run 0 is reported without flights)
+/// and the batch's pairs with every strategy of problem.getSpec().execution. @throws Error for bad settings.
+ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath &plan,
+                               const ProgressSink &progress = {});
+
+/// @brief The batch's start/goal pairs: uniform in the planning box, both ends in water in the forecast and the
+/// truth and outside the forbidden regions at the departure, at least @p minDistance apart; deterministic for a
+/// seed. Fewer than @p count only when 1000 tries per pair find none (then the error says so).
+std::vector<std::pair<Point2, Point2>> executionPairs(const MissionProblem &problem, unsigned count, unsigned seed,
+                                                      double minDistance, double departure);
+}  // namespace ompl_glider

@@ -1,0 +1,240 @@
+// The mission's execution in another ocean (issue 13): plans flown with each control strategy in the truth field,
+// for the mission's own pair and a batch of random pairs, in parallel.
+#include "ompl_glider/mission/MissionExecution.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <random>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/cost/DiveProfilePool.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/Planning.h"
+
+namespace ompl_glider
+{
+namespace
+{
+/// Surfacing interval of the mission: given, else one hour in its time unit.
+double surfacingInterval(const MissionSpec &m)
+{
+    if (!std::isnan(m.execution.surfacingInterval))
+        return m.execution.surfacingInterval;
+    return 3600.0 / m.timeUnitSeconds;
+}
+
+bool freeAt(const MissionProblem &problem, Point2 p, double t)
+{
+    const double z = problem.getSpec().vehicle.depth;
+    if (!problem.getField()->inWater(p.x, p.y, z) || !problem.getTruth()->inWater(p.x, p.y, z))
+        return false;
+    const auto &env = problem.getEnvironment();
+    return !env || env->pointFree(p.x, p.y, t);
+}
+
+/// Plans of the replan strategy: from the fix to the run's goal on the forecast (smoothing as the mission asks,
+/// no refinement: a plan per surfacing must be quick).
+Replanner replanner(const MissionProblem &problem, Point2 goal)
+{
+    return [&problem, goal](double x, double y, double t) -> std::vector<TimedWaypoint> {
+        const Region &box = problem.getBox();
+        if (x < box.xMin || x > box.xMax || y < box.yMin || y > box.yMax)
+            return {};  // drifted out of the planning box: keep the old plan
+        PlanOptions o;
+        o.refinement = false;
+        try
+        {
+            const PlannedPath p = planRoute(problem.withEndpoints({x, y}, goal), t, o);
+            return p.solved ? p.path : std::vector<TimedWaypoint>{};
+        }
+        catch (const Error &)
+        {
+            return {};  // e.g. the fix lies where the lattice cannot start: keep flying the old plan
+        }
+    };
+}
+
+/// Flies one planned run with every strategy.
+void flyRun(const MissionProblem &problem, const ExecutionResult &settings, ExecutionRun &run)
+{
+    const MissionSpec &m = problem.getSpec();
+    const ExecutionSpec &e = m.execution;
+    const double speed = m.vehicle.speed;
+    const double planned = run.plan.back().t - run.plan.front().t;
+    ExecutionOptions o;
+    o.surfacingInterval = settings.surfacingInterval;
+    o.step = settings.step;
+    o.radius = run.radius;
+    o.depth = m.vehicle.depth;
+    o.endTime = run.plan.front().t + (std::isnan(e.duration) ? 2.0 * planned : e.duration);
+    o.replanEvery = settings.replanEvery;
+    for (ControlStrategy s : settings.strategies)
+    {
+        if (s == ControlStrategy::Replan)
+            o.replan = replanner(problem, run.goal);
+        run.flown.push_back(flyPlan(run.plan, speed, *problem.getField(), *problem.getTruth(),
+                                    problem.getEnvironment().get(), s, o));
+    }
+}
+}  // namespace
+
+MeasureSpread measureSpread(std::vector<double> v)
+{
+    v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+    MeasureSpread s;
+    s.count = v.size();
+    if (v.empty())
+        return s;
+    std::sort(v.begin(), v.end());
+    auto quantile = [&](double q) {
+        const double pos = q * static_cast<double>(v.size() - 1);
+        const std::size_t i = static_cast<std::size_t>(std::floor(pos));
+        const std::size_t j = std::min(i + 1, v.size() - 1);
+        return v[i] + (pos - static_cast<double>(i)) * (v[j] - v[i]);
+    };
+    s.min = v.front();
+    s.q1 = quantile(0.25);
+    s.median = quantile(0.5);
+    s.q3 = quantile(0.75);
+    s.max = v.back();
+    double sum = 0.0;
+    for (double x : v)
+        sum += x;
+    s.mean = sum / static_cast<double>(v.size());
+    return s;
+}
+
+std::vector<std::pair<Point2, Point2>> executionPairs(const MissionProblem &problem, unsigned count, unsigned seed,
+                                                      double minDistance, double departure)
+{
+    const Region &box = problem.getBox();
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> ux(box.xMin, box.xMax), uy(box.yMin, box.yMax);
+    std::vector<std::pair<Point2, Point2>> pairs;
+    for (unsigned k = 0; k < count; ++k)
+    {
+        bool found = false;
+        for (int attempt = 0; attempt < 1000 && !found; ++attempt)
+        {
+            const Point2 a{ux(rng), uy(rng)}, b{ux(rng), uy(rng)};
+            if (std::hypot(b.x - a.x, b.y - a.y) < minDistance || !freeAt(problem, a, departure) ||
+                !freeAt(problem, b, departure))
+                continue;
+            pairs.emplace_back(a, b);
+            found = true;
+        }
+        if (!found)
+            throw Error(problem.getSpec().place("execution.batch") + ": no start/goal pair " +
+                        std::to_string(minDistance) + " or more apart with both ends in water found in 1000 tries "
+                        "(pair " + std::to_string(k + 1) + "): lower execution.batch.min_distance");
+    }
+    return pairs;
+}
+
+ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath &plan, const ProgressSink &progress)
+{
+    const auto t0 = std::chrono::steady_clock::now();
+    const MissionSpec &m = problem.getSpec();
+    const ExecutionSpec &e = m.execution;
+    ExecutionResult r;
+    for (const std::string &name : e.strategies)
+    {
+        const auto s = parseControlStrategy(name);
+        if (!s)
+            throw Error(m.place("execution.strategies") + ": unknown strategy '" + name + "'");
+        r.strategies.push_back(*s);
+    }
+    r.truth = e.truth ? problem.getTruth()->name() : "forecast";
+    r.surfacingInterval = surfacingInterval(m);
+    if (!(r.surfacingInterval > 0.0) || !std::isfinite(r.surfacingInterval))
+        throw Error(m.place("execution.surfacing_interval") + ": expected a duration > 0");
+    // 30 RK4 steps per dive: the truth is smooth on that scale for every field here (checked against the closed
+    // form in the tests: drift errors far below the goal radius)
+    r.step = r.surfacingInterval / 30.0;
+    r.replanEvery = e.replanEvery;
+
+    const Region &box = problem.getBox();
+    const double diagonal = std::hypot(box.xMax - box.xMin, box.yMax - box.yMin);
+    const double minDistance = std::isnan(e.minDistance) ? 0.25 * diagonal : e.minDistance;
+    std::vector<std::pair<Point2, Point2>> pairs{{problem.getStart(), problem.getGoal()}};
+    if (e.pairs > 0)
+    {
+        const auto more = executionPairs(problem, e.pairs, e.seed, minDistance, plan.departure);
+        pairs.insert(pairs.end(), more.begin(), more.end());
+    }
+    r.runs.resize(pairs.size());
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+    {
+        ExecutionRun &run = r.runs[i];
+        run.index = static_cast<unsigned>(i);
+        run.start = pairs[i].first;
+        run.goal = pairs[i].second;
+        run.departure = plan.departure;
+        const double d = std::hypot(run.goal.x - run.start.x, run.goal.y - run.start.y);
+        run.radius = std::isnan(e.radius) ? 0.01 * d : e.radius;
+    }
+    if (plan.solved)
+    {
+        r.runs[0].planned = true;
+        r.runs[0].plan = plan.path;
+    }
+    else
+        r.runs[0].reason = plan.reason;
+
+    DiveProfilePool pool(e.threads);
+    r.threads = std::min<unsigned>(pool.size(), static_cast<unsigned>(r.runs.size()));
+    std::atomic<std::size_t> done{0};
+    std::mutex printMutex;
+    pool.parallelFor(r.runs.size(), [&](std::size_t i) {
+        ExecutionRun &run = r.runs[i];
+        if (i > 0)
+        {
+            const PlannedPath p = planRoute(problem.withEndpoints(run.start, run.goal), run.departure);
+            run.planned = p.solved;
+            run.reason = p.reason;
+            if (p.solved)
+                run.plan = p.path;
+        }
+        if (run.planned)
+            flyRun(problem, r, run);
+        if (progress)
+        {
+            std::lock_guard<std::mutex> lock(printMutex);
+            const std::size_t n = ++done;
+            char line[96];
+            std::snprintf(line, sizeof line, "execution: %zu/%zu runs flown", n, r.runs.size());
+            progress(line, n == r.runs.size());
+        }
+    });
+
+    for (std::size_t k = 0; k < r.strategies.size(); ++k)
+    {
+        StrategySpread s;
+        s.strategy = controlStrategyName(r.strategies[k]);
+        std::vector<double> dist, delay, speed;
+        for (const ExecutionRun &run : r.runs)
+        {
+            if (!run.planned)
+                continue;
+            const FlownTrack &f = run.flown[k];
+            ++s.runs;
+            s.reached += f.reached ? 1 : 0;
+            s.grounded += f.grounded ? 1 : 0;
+            dist.push_back(f.finalDistance);
+            if (f.reached)
+                delay.push_back(f.arrivalTime - f.plannedArrival);
+            speed.push_back(f.madeGoodSpeed);
+        }
+        s.finalDistance = measureSpread(dist);
+        s.arrivalDelay = measureSpread(delay);
+        s.madeGoodSpeed = measureSpread(speed);
+        r.spread.push_back(s);
+    }
+    r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+}
+}  // namespace ompl_glider

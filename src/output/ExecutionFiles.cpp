@@ -1,0 +1,94 @@
+#include "ompl_glider/output/ExecutionFiles.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace ompl_glider
+{
+namespace
+{
+std::string num(double v)
+{
+    if (!std::isfinite(v))
+        return "";
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
+/// "x,y,lon,lat" of a point (lon/lat empty without a projection).
+std::string where(const MissionProblem &problem, Point2 p)
+{
+    std::string s = num(p.x) + "," + num(p.y) + ",";
+    if (problem.isGeographic())
+    {
+        const LonLat g = problem.toGeographic(p);
+        s += num(g.lon) + "," + num(g.lat);
+    }
+    else
+        s += ",";
+    return s;
+}
+
+/// Heading in degrees clockwise from north (+y) of a heading angle from +x counter-clockwise (radians).
+double compassDegrees(double angle)
+{
+    double d = 90.0 - angle * 180.0 / M_PI;
+    d = std::fmod(d, 360.0);
+    return d < 0.0 ? d + 360.0 : d;
+}
+}  // namespace
+
+std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem)
+{
+    std::string s = "run,strategy,start_x,start_y,start_lon,start_lat,goal_x,goal_y,goal_lon,goal_lat,departure,"
+                    "planned_arrival,final_distance,arrival_time,arrival_iso,reached,grounded,made_good_speed,"
+                    "surfacings,replans,radius,reason\n";
+    for (const ExecutionRun &run : e.runs)
+    {
+        const std::string head = std::to_string(run.index) + ",";
+        const std::string ends = where(problem, run.start) + "," + where(problem, run.goal) + "," +
+                                 num(run.departure) + ",";
+        if (!run.planned)
+        {
+            std::string reason = run.reason;
+            for (char &c : reason)
+                if (c == ',' || c == '\n' || c == '"')
+                    c = ';';
+            s += head + "none," + ends + ",,,,,,,,,," + num(run.radius) + "," + reason + "\n";
+            continue;
+        }
+        for (std::size_t k = 0; k < e.strategies.size(); ++k)
+        {
+            const FlownTrack &f = run.flown[k];
+            s += head + controlStrategyName(e.strategies[k]) + "," + ends + num(f.plannedArrival) + "," +
+                 num(f.finalDistance) + "," + num(f.arrivalTime) + "," +
+                 (std::isfinite(f.arrivalTime) ? problem.isoTime(f.arrivalTime) : std::string()) + "," +
+                 (f.reached ? "1" : "0") + "," + (f.grounded ? "1" : "0") + "," + num(f.madeGoodSpeed) + "," +
+                 std::to_string(f.fixes.empty() ? 0 : f.fixes.size() - 1) + "," + std::to_string(f.replans) + "," +
+                 num(run.radius) + ",\n";
+        }
+    }
+    return s;
+}
+
+std::string executionTracksCsv(const ExecutionResult &e, const MissionProblem &problem)
+{
+    std::string s = "strategy,index,time,time_iso,x,y,lon,lat,heading_deg\n";
+    const ExecutionRun &run = e.runs.front();
+    if (!run.planned)
+        return s;
+    for (std::size_t i = 0; i < run.plan.size(); ++i)
+        s += "plan," + std::to_string(i) + "," + num(run.plan[i].t) + "," + problem.isoTime(run.plan[i].t) + "," +
+             where(problem, {run.plan[i].x, run.plan[i].y}) + ",\n";
+    for (std::size_t k = 0; k < e.strategies.size(); ++k)
+    {
+        const FlownTrack &f = run.flown[k];
+        for (std::size_t i = 0; i < f.fixes.size(); ++i)
+            s += controlStrategyName(e.strategies[k]) + "," + std::to_string(i) + "," + num(f.fixes[i].t) + "," +
+                 problem.isoTime(f.fixes[i].t) + "," + where(problem, {f.fixes[i].x, f.fixes[i].y}) + "," +
+                 (i < f.headings.size() ? num(compassDegrees(f.headings[i])) : std::string()) + "\n";
+    }
+    return s;
+}
+}  // namespace ompl_glider

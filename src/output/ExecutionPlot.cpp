@@ -1,0 +1,160 @@
+// Box plots of an execution's measures per strategy (issue 13; the shape of [ThompsonICRA] Fig. 8).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <cairo.h>
+
+#include "ompl_glider/output/ExecutionFiles.h"
+#include "ompl_glider/output/MapRenderer.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr int kPanelW = 520, kPanelH = 420, kMarginL = 70, kMarginT = 60, kMarginB = 70;
+
+/// A round tick step giving about 6 ticks over @p span.
+double tickStep(double span)
+{
+    const double raw = span / 6.0;
+    const double p = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
+        if (m * p >= raw)
+            return m * p;
+    return 10.0 * p;
+}
+
+void text(cairo_t *cr, double x, double y, const std::string &s, double size, double align, bool bold = false)
+{
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, size);
+    cairo_text_extents_t ext;
+    cairo_text_extents(cr, s.c_str(), &ext);
+    cairo_move_to(cr, x - align * ext.x_advance, y);
+    cairo_show_text(cr, s.c_str());
+}
+
+std::string fmt(double v)
+{
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return b;
+}
+
+/// One panel at (x0, y0): a box per strategy of the measure chosen by @p pick, scaled by @p scale.
+void panel(cairo_t *cr, double x0, double y0, const ExecutionResult &e, const std::string &title,
+           const std::string &axis, double scale, const MeasureSpread StrategySpread::*pick)
+{
+    const double plotW = kPanelW - kMarginL - 20, plotH = kPanelH - kMarginT - kMarginB;
+    const double px = x0 + kMarginL, py = y0 + kMarginT;
+    double lo = 0.0, hi = 0.0;
+    for (const StrategySpread &s : e.spread)
+    {
+        const MeasureSpread &m = s.*pick;
+        if (m.count == 0)
+            continue;
+        lo = std::min(lo, m.min * scale);
+        hi = std::max(hi, m.max * scale);
+    }
+    if (!(hi > lo))
+        hi = lo + 1.0;
+    const double step = tickStep(hi - lo);
+    lo = std::floor(lo / step) * step;
+    hi = std::ceil(hi / step) * step;
+    auto Y = [&](double v) { return py + plotH * (1.0 - (v - lo) / (hi - lo)); };
+
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    text(cr, x0 + kPanelW / 2.0, y0 + 28, title, 15, 0.5, true);
+    cairo_set_line_width(cr, 1.0);
+    for (double v = lo; v <= hi + 1e-9 * step; v += step)
+    {
+        cairo_set_source_rgb(cr, 0.85, 0.85, 0.85);
+        cairo_move_to(cr, px, Y(v));
+        cairo_line_to(cr, px + plotW, Y(v));
+        cairo_stroke(cr);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text(cr, px - 6, Y(v) + 4, fmt(std::abs(v) < 1e-12 * step ? 0.0 : v), 11, 1.0);
+    }
+    cairo_rectangle(cr, px, py, plotW, plotH);
+    cairo_stroke(cr);
+    cairo_save(cr);
+    cairo_move_to(cr, x0 + 18, py + plotH / 2.0);
+    cairo_rotate(cr, -M_PI / 2.0);
+    text(cr, 0, 0, axis, 12, 0.5);
+    cairo_restore(cr);
+
+    const double colours[4][3] = {{0.20, 0.45, 0.75}, {0.30, 0.65, 0.35}, {0.85, 0.45, 0.15}, {0.60, 0.35, 0.70}};
+    const std::size_t n = e.spread.size();
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        const MeasureSpread &m = e.spread[k].*pick;
+        const double cx = px + plotW * (static_cast<double>(k) + 0.5) / static_cast<double>(n);
+        const double bw = std::min(70.0, 0.5 * plotW / static_cast<double>(n));
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text(cr, cx, py + plotH + 20, e.spread[k].strategy, 12, 0.5);
+        text(cr, cx, py + plotH + 38, "n = " + std::to_string(m.count), 11, 0.5);
+        if (m.count == 0)
+            continue;
+        const double *c = colours[k % 4];
+        cairo_set_line_width(cr, 1.5);
+        cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+        // whiskers to the extremes
+        cairo_move_to(cr, cx, Y(m.min * scale));
+        cairo_line_to(cr, cx, Y(m.q1 * scale));
+        cairo_move_to(cr, cx, Y(m.q3 * scale));
+        cairo_line_to(cr, cx, Y(m.max * scale));
+        cairo_move_to(cr, cx - bw / 4, Y(m.min * scale));
+        cairo_line_to(cr, cx + bw / 4, Y(m.min * scale));
+        cairo_move_to(cr, cx - bw / 4, Y(m.max * scale));
+        cairo_line_to(cr, cx + bw / 4, Y(m.max * scale));
+        cairo_stroke(cr);
+        // the box: quartiles, median
+        cairo_rectangle(cr, cx - bw / 2, Y(m.q3 * scale), bw, Y(m.q1 * scale) - Y(m.q3 * scale));
+        cairo_set_source_rgba(cr, c[0], c[1], c[2], 0.35);
+        cairo_fill_preserve(cr);
+        cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+        cairo_stroke(cr);
+        cairo_set_line_width(cr, 3.0);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_move_to(cr, cx - bw / 2, Y(m.median * scale));
+        cairo_line_to(cr, cx + bw / 2, Y(m.median * scale));
+        cairo_stroke(cr);
+        // the mean
+        cairo_arc(cr, cx, Y(m.mean * scale), 3.5, 0, 2 * M_PI);
+        cairo_fill(cr);
+    }
+}
+}  // namespace
+
+void writeExecutionPlot(const std::string &path, const ExecutionResult &e, const MissionSpec &m, bool svg)
+{
+    const bool metric = m.current.type == "netcdf" || m.lengthUnitMetres != 1.0;
+    const bool hours = m.current.type == "netcdf" || m.timeUnitSeconds != 1.0;
+    const double lengthScale = metric ? m.lengthUnitMetres / 1000.0 : 1.0;
+    const double timeScale = hours ? m.timeUnitSeconds / 3600.0 : 1.0;
+    const std::string lengthAxis = metric ? "km" : "length units";
+    const std::string timeAxis = hours ? "h" : "time units";
+    const int W = 2 * kPanelW, H = kPanelH + 40;
+    writeCairoFile(path, W, H, svg, [&](void *ctx) {
+        cairo_t *cr = static_cast<cairo_t *>(ctx);
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_paint(cr);
+        panel(cr, 0, 0, e, "distance to goal at the planned arrival", "distance (" + lengthAxis + ")", lengthScale,
+              &StrategySpread::finalDistance);
+        panel(cr, kPanelW, 0, e, "arrival within the radius minus the planned arrival",
+              "delay (" + timeAxis + ")", timeScale, &StrategySpread::arrivalDelay);
+        std::size_t runs = 0;
+        for (const ExecutionRun &r : e.runs)
+            runs += r.planned ? 1 : 0;
+        char note[256];
+        std::snprintf(note, sizeof note,
+                      "%zu runs flown in %s, surfacing every %g %s; boxes: quartiles, bar: median, dot: mean, "
+                      "whiskers: extremes",
+                      runs, e.truth.c_str(), e.surfacingInterval * (hours ? timeScale : 1.0), timeAxis.c_str());
+        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+        text(cr, 20, H - 14, note, 12, 0.0);
+    });
+}
+}  // namespace ompl_glider
