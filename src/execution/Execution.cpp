@@ -125,7 +125,7 @@ FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const C
         // at the surface: a new plan (replanning), then the heading for the next dive
         if (strategy == ControlStrategy::Replan && surfacings++ % o.replanEvery == 0)
         {
-            std::vector<TimedWaypoint> fresh = o.replan(x, y, t);
+            std::vector<TimedWaypoint> fresh = o.replan(x, y, t, active);
             if (!fresh.empty())
             {
                 fresh.back() = {goal.x, goal.y, fresh.back().t};

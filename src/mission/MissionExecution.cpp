@@ -7,10 +7,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <mutex>
 #include <random>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/cost/TravelTimeCalculator.h"
 #include "ompl_glider/cost/DiveProfilePool.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -36,25 +38,68 @@ bool freeAt(const MissionProblem &problem, Point2 p, double t)
     return !env || env->pointFree(p.x, p.y, t);
 }
 
-/// Plans of the replan strategy: from the fix to the run's goal on the forecast (smoothing as the mission asks,
-/// no refinement: a plan per surfacing must be quick).
-Replanner replanner(const MissionProblem &problem, Point2 goal)
+/// The rest of @p plan flown from the fix (x, y) at t, re-timed on the forecast: the fix, a leg to one of the
+/// plan's waypoints after t, then the plan's later waypoints. The waypoint joined is the one giving the earliest
+/// arrival (a fix a little off the plan in a strong current may not reach the next waypoint, but a later one or
+/// the goal). Empty when no choice is passable (land, forbidden, beyond the forecast).
+std::vector<TimedWaypoint> continuation(const MissionProblem &problem, const TravelTimeCalculator &travel, double x,
+                                        double y, double t, const std::vector<TimedWaypoint> &plan)
 {
-    return [&problem, goal](double x, double y, double t) -> std::vector<TimedWaypoint> {
+    const auto &env = problem.getEnvironment();
+    std::size_t first = 0;
+    while (first < plan.size() && plan[first].t <= t)
+        ++first;
+    if (first == plan.size())
+        first = plan.size() - 1;  // late: the goal is the only waypoint left
+    std::vector<TimedWaypoint> best;
+    for (std::size_t k = first; k < plan.size(); ++k)
+    {
+        std::vector<TimedWaypoint> rest{{x, y, t}};
+        bool ok = true;
+        for (std::size_t i = k; i < plan.size() && ok; ++i)
+        {
+            const TimedWaypoint &a = rest.back(), &w = plan[i];
+            const double dt = travel.travelTime(a.x, a.y, w.x, w.y, a.t);
+            ok = std::isfinite(dt) && (!env || env->legFree(a.x, a.y, a.t, w.x, w.y, a.t + dt)) &&
+                 (best.empty() || a.t + dt < best.back().t);
+            rest.push_back({w.x, w.y, a.t + dt});
+        }
+        if (ok)
+            best = std::move(rest);
+    }
+    return best;
+}
+
+/// Plans of the replan strategy: from the fix to the run's goal on the forecast (smoothing as the mission asks,
+/// no refinement: a plan per surfacing must be quick). The new plan is taken only when the forecast says it
+/// arrives earlier, by more than @p margin (the surfacing interval), than the rest of the current plan flown from
+/// the fix (re-timed on the forecast): a lattice anchored at an arbitrary fix can be much coarser than the plan it
+/// would replace, and a plan's times assume a heading adjusted all along each leg, which a glider holding one
+/// heading per dive cannot fly exactly (a new plan that gains less than a dive on paper is noise).
+Replanner replanner(const MissionProblem &problem, Point2 goal, double margin)
+{
+    TravelTimeParams tp = problem.getSpec().travel;
+    tp.speed = problem.getSpec().vehicle.speed;
+    auto travel = std::make_shared<TravelTimeCalculator>(problem.getField(), tp);
+    return [&problem, goal, travel, margin](double x, double y, double t,
+                                    const std::vector<TimedWaypoint> &current) -> std::vector<TimedWaypoint> {
+        std::vector<TimedWaypoint> rest = continuation(problem, *travel, x, y, t, current);
         const Region &box = problem.getBox();
         if (x < box.xMin || x > box.xMax || y < box.yMin || y > box.yMax)
-            return {};  // drifted out of the planning box: keep the old plan
+            return rest;  // drifted out of the planning box: no new plan
         PlanOptions o;
         o.refinement = false;
         try
         {
             const PlannedPath p = planRoute(problem.withEndpoints({x, y}, goal), t, o);
-            return p.solved ? p.path : std::vector<TimedWaypoint>{};
+            if (p.solved && (rest.empty() || p.path.back().t < rest.back().t - margin))
+                return p.path;
         }
         catch (const Error &)
         {
-            return {};  // e.g. the fix lies where the lattice cannot start: keep flying the old plan
+            // e.g. the fix lies where the lattice cannot start: keep the current plan
         }
+        return rest;
     };
 }
 
@@ -75,7 +120,7 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
     for (ControlStrategy s : settings.strategies)
     {
         if (s == ControlStrategy::Replan)
-            o.replan = replanner(problem, run.goal);
+            o.replan = replanner(problem, run.goal, settings.surfacingInterval);
         run.flown.push_back(flyPlan(run.plan, speed, *problem.getField(), *problem.getTruth(),
                                     problem.getEnvironment().get(), s, o));
     }

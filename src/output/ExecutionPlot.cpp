@@ -80,7 +80,7 @@ void panel(cairo_t *cr, double x0, double y0, const ExecutionResult &e, const st
     cairo_rectangle(cr, px, py, plotW, plotH);
     cairo_stroke(cr);
     cairo_save(cr);
-    cairo_move_to(cr, x0 + 18, py + plotH / 2.0);
+    cairo_translate(cr, x0 + 22, py + plotH / 2.0);
     cairo_rotate(cr, -M_PI / 2.0);
     text(cr, 0, 0, axis, 12, 0.5);
     cairo_restore(cr);

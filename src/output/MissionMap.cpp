@@ -150,18 +150,22 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
         {
             const FlownTrack &f = e.runs.front().flown[k];
             MapPath flown;
-            flown.label = "flown " + controlStrategyName(e.strategies[k]) + ": " +
-                          (f.reached ? "arrived T=" + duration(r, f.arrivalTime - r.plan.departure, true)
-                                     : std::string(f.grounded ? "grounded" : "not arrived")) +
-                          ", " + length(r, f.finalDistance) + " off at the planned arrival";
+            std::string name = controlStrategyName(e.strategies[k]);
+            if (name.rfind("current_", 0) == 0)
+                name = name.substr(8);
+            flown.label = name + ": " +
+                          (f.reached ? duration(r, f.arrivalTime - r.plan.departure, true)
+                                     : std::string(f.grounded ? "grounded" : "not there")) +
+                          ", off " + length(r, f.finalDistance);
             flown.waypoints = f.fixes;
             flown.colour = colours[k % 4];
             flown.width = 1.4;
             flown.dashed = true;
-            flown.waypointMarkers = true;
+            flown.waypointMarkers = false;
             map.addPath(flown);
         }
-        map.addNote("flown in " + e.truth + ", surfacing every " + duration(r, e.surfacingInterval));
+        map.addNote("dashed: the plan flown in the truth (" + e.truth + "), surfacing every " +
+                    duration(r, e.surfacingInterval) + "; arrival, distance off the goal at the planned arrival");
     }
     const Point2 s = problem.getStart(), g = problem.getGoal();
     map.setStartGoal(s.x, s.y, g.x, g.y);

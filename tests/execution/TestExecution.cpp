@@ -171,7 +171,7 @@ TEST(Execution, ReplanningWithAStraightLinePlannerAndNoForecastCurrentFliesAsGre
     ExecutionOptions o;
     o.radius = 500.0;
     unsigned calls = 0;
-    o.replan = [&](double x, double y, double t) {
+    o.replan = [&](double x, double y, double t, const std::vector<TimedWaypoint> &) {
         ++calls;
         return std::vector<TimedWaypoint>{{x, y, t}, {60000, 0, t + std::hypot(60000 - x, y) / 0.4}};
     };

@@ -7,6 +7,9 @@ glider_add_test(test_mission_run ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp ${
   ${CMAKE_CURRENT_LIST_DIR}/TestCoastline.cpp)
 target_link_libraries(test_mission_run PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)
 glider_add_test(test_mission_bathymetry ${CMAKE_CURRENT_LIST_DIR}/TestBathymetry.cpp)
+# the plan flown in another ocean through the pipeline (issue 13)
+glider_add_test(test_mission_execution ${CMAKE_CURRENT_LIST_DIR}/TestMissionExecution.cpp)
+target_link_libraries(test_mission_execution PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf)
 # a forecast in several files (--currents LIST, current.file list or glob) planned as the combined file
 glider_add_test(test_mission_forecast_files ${CMAKE_CURRENT_LIST_DIR}/TestForecastFiles.cpp)
 target_link_libraries(test_mission_forecast_files PRIVATE netCDF::netcdf)

@@ -48,8 +48,10 @@ const std::vector<ControlStrategy> &controlStrategies();
 /// @brief The strategy of a name of controlStrategyName(); nullopt for any other text.
 std::optional<ControlStrategy> parseControlStrategy(const std::string &name);
 
-/// @brief A new plan from a GPS fix (x, y at time t) to the goal; empty when there is none (the old plan is kept).
-using Replanner = std::function<std::vector<TimedWaypoint>(double x, double y, double t)>;
+/// @brief A new plan from a GPS fix (x, y at time t) to the goal, given the plan flown so far (@p current, with its
+/// planned times); empty when there is none (the current plan is kept).
+using Replanner = std::function<std::vector<TimedWaypoint>(double x, double y, double t,
+                                                           const std::vector<TimedWaypoint> &current)>;
 
 /// @brief Options of flyPlan().
 struct ExecutionOptions
