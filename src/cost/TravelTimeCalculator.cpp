@@ -41,6 +41,8 @@ TravelTimeCalculator::TravelTimeCalculator(std::shared_ptr<const CurrentField> f
         throw Error("TravelTimeCalculator: eps must be > 0");
     if (!(params_.tau > 0.0 && params_.tau <= 1.0))
         throw Error("TravelTimeCalculator: tau must be in (0, 1]");
+    if (!(params_.maxStep > 0.0))
+        throw Error("TravelTimeCalculator: maxStep must be > 0");
 }
 
 double TravelTimeCalculator::travelTime(double x1, double y1, double x2, double y2, double tStart) const
@@ -87,7 +89,8 @@ double TravelTimeCalculator::integrate(double x1, double y1, double z1, double x
 
     // Progress along the leg as a fraction in [0, 1] and the local time.
     double frac = 0.0, t = tStart;
-    double h = std::min(params_.h, 1.0);
+    const double hCap = std::min(params_.hMax, std::max(params_.hMin, params_.maxStep / len));
+    double h = std::min({params_.h, 1.0, hCap});
     Velocity cStart = f.velocity(x1, y1, z1, t);
     // Speed chosen from the roots: the fast one for the earliest arrival, the slow one for the latest.
     auto pace = [&](const Velocity &c, double &speed) -> bool {
@@ -119,7 +122,7 @@ double TravelTimeCalculator::integrate(double x1, double y1, double z1, double x
             return kInf;
         const double tImproved = segLen / v2;
         const double err = std::abs(tRough - tImproved);
-        const double hNew = std::max(params_.hMin, std::min(params_.hMax, params_.tau * h * std::sqrt(params_.eps / err)));
+        const double hNew = std::max(params_.hMin, std::min(hCap, params_.tau * h * std::sqrt(params_.eps / err)));
         if (err < params_.eps || h <= params_.hMin)
         {
             cStart = cEnd;

@@ -8,5 +8,6 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/ResourceLimits.cpp
   ${CMAKE_CURRENT_LIST_DIR}/GeoBox.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ShiftedTimeField.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/EnsembleField.cpp
 )
 include(${CMAKE_CURRENT_LIST_DIR}/gridded.cmake)

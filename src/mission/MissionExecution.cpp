@@ -12,7 +12,6 @@
 #include <random>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/cost/TravelTimeCalculator.h"
 #include "ompl_glider/cost/DiveProfilePool.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -42,10 +41,9 @@ bool freeAt(const MissionProblem &problem, Point2 p, double t)
 /// plan's waypoints after t, then the plan's later waypoints. The waypoint joined is the one giving the earliest
 /// arrival (a fix a little off the plan in a strong current may not reach the next waypoint, but a later one or
 /// the goal). Empty when no choice is passable (land, forbidden, beyond the forecast).
-std::vector<TimedWaypoint> continuation(const MissionProblem &problem, const TravelTimeCalculator &travel, double x,
-                                        double y, double t, const std::vector<TimedWaypoint> &plan)
+std::vector<TimedWaypoint> continuation(const MissionProblem &problem, double x, double y, double t,
+                                        const std::vector<TimedWaypoint> &plan)
 {
-    const auto &env = problem.getEnvironment();
     std::size_t first = 0;
     while (first < plan.size() && plan[first].t <= t)
         ++first;
@@ -54,17 +52,11 @@ std::vector<TimedWaypoint> continuation(const MissionProblem &problem, const Tra
     std::vector<TimedWaypoint> best;
     for (std::size_t k = first; k < plan.size(); ++k)
     {
-        std::vector<TimedWaypoint> rest{{x, y, t}};
-        bool ok = true;
-        for (std::size_t i = k; i < plan.size() && ok; ++i)
-        {
-            const TimedWaypoint &a = rest.back(), &w = plan[i];
-            const double dt = travel.travelTime(a.x, a.y, w.x, w.y, a.t);
-            ok = std::isfinite(dt) && (!env || env->legFree(a.x, a.y, a.t, w.x, w.y, a.t + dt)) &&
-                 (best.empty() || a.t + dt < best.back().t);
-            rest.push_back({w.x, w.y, a.t + dt});
-        }
-        if (ok)
+        std::vector<TimedWaypoint> via{{x, y, t}};
+        via.insert(via.end(), plan.begin() + static_cast<std::ptrdiff_t>(k), plan.end());
+        std::vector<TimedWaypoint> rest =
+            retimePath(problem, problem.getField(), problem.getSpec().vehicle.speed, via);
+        if (!rest.empty() && (best.empty() || rest.back().t < best.back().t))
             best = std::move(rest);
     }
     return best;
@@ -78,12 +70,9 @@ std::vector<TimedWaypoint> continuation(const MissionProblem &problem, const Tra
 /// heading per dive cannot fly exactly (a new plan that gains less than a dive on paper is noise).
 Replanner replanner(const MissionProblem &problem, Point2 goal, double margin)
 {
-    TravelTimeParams tp = problem.getSpec().travel;
-    tp.speed = problem.getSpec().vehicle.speed;
-    auto travel = std::make_shared<TravelTimeCalculator>(problem.getField(), tp);
-    return [&problem, goal, travel, margin](double x, double y, double t,
+    return [&problem, goal, margin](double x, double y, double t,
                                     const std::vector<TimedWaypoint> &current) -> std::vector<TimedWaypoint> {
-        std::vector<TimedWaypoint> rest = continuation(problem, *travel, x, y, t, current);
+        std::vector<TimedWaypoint> rest = continuation(problem, x, y, t, current);
         const Region &box = problem.getBox();
         if (x < box.xMin || x > box.xMax || y < box.yMin || y > box.yMax)
             return rest;  // drifted out of the planning box: no new plan

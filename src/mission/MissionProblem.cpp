@@ -1,5 +1,6 @@
 #include "ompl_glider/mission/MissionProblem.h"
 
+#include "ompl_glider/current/EnsembleField.h"
 #include "ompl_glider/current/ShiftedTimeField.h"
 
 #include <algorithm>
@@ -191,14 +192,18 @@ MissionProblem::~MissionProblem() = default;
 MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
 {
     buildField();
+    buildMembers();
     buildTruth();
     start_ = localPoint(spec_.start, "start");
     goal_ = localPoint(spec_.goal, "goal");
     buildBox();
     buildRegions();
+    const auto grid = std::dynamic_pointer_cast<const GriddedCurrentField>(members_.empty() ? field_ : members_.front());
+    if (grid)
+        spec_.travel.maxStep = 0.5 * grid->minCellSize();  // no travel-time step passes over a grid node
     if (!(spec_.planner.gridSize > 0))
     {
-        const auto g = std::dynamic_pointer_cast<const GriddedCurrentField>(field_);
+        const auto &g = grid;
         spec_.planner.gridSize =
             g ? defaultForecastGridSize(g->minCellSize(), std::hypot(goal_.x - start_.x, goal_.y - start_.y)) : 0.4;
     }
@@ -242,24 +247,18 @@ void MissionProblem::buildField()
 #endif
 }
 
-void MissionProblem::buildTruth()
+std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec &t, const std::string &field) const
 {
     const MissionSpec &m = spec_;
-    if (!m.execution.enabled || !m.execution.truth)
-        return;
-    const CurrentSpec &t = *m.execution.truth;
-    const std::string at = where(m, t.mark) + "field 'execution.truth': ";
+    const std::string at = where(m, t.mark) + "field '" + field + "': ";
     const CurrentFieldKind *kind = findCurrentFieldKind(t.type);
     if (!kind)
         throw Error(at + "unknown type '" + t.type + "' (expected one of " + currentFieldKindList() + ")");
     if (!kind->gridded)
-    {
-        truth_ = makeAnalyticField(t.type, t.parameters);
-        return;
-    }
+        return makeAnalyticField(t.type, t.parameters);
 #if OMPL_GLIDER_WITH_NETCDF
-    // The truth is read like the forecast (same region and projection centre), every record of the region: its
-    // time axis may start at another date, so the trip's records are not known in its own time.
+    // Read like the forecast (same region and projection centre), every record of the region: its time axis may
+    // start at another date, so the trip's records are not known in its own time.
     MissionSpec tm = m;
     tm.current = t;
     NetCdfCurrentOptions o = netCdfLoadOptions(tm);
@@ -280,9 +279,9 @@ void MissionProblem::buildTruth()
         throw Error(at + netCdfMissionMessage(e.what()));
     }
     if (!nc.projection != !projection_)
-        throw Error(at + (projection_ ? "the truth has no longitude/latitude but the forecast has"
-                                      : "the truth has longitude/latitude but the forecast is Cartesian"));
-    // Field time 0 of each file is its first time: the truth is shifted so that both are asked at the same date.
+        throw Error(at + (projection_ ? "it has no longitude/latitude but the forecast has"
+                                      : "it has longitude/latitude but the forecast is Cartesian"));
+    // Field time 0 of each file is its first time: shifted so that both are asked at the same date.
     double shift = 0.0;
     if (m.fileCalendar && nc.dated && !nc.steady)
     {
@@ -294,11 +293,37 @@ void MissionProblem::buildTruth()
     else if (m.fileCalendar && !nc.dated && !nc.steady)
         throw Error(at + "its time axis has no dates ('<unit> since <date>') but the forecast's has: the two cannot "
                          "be aligned");
-    truth_ = shift == 0.0 ? std::shared_ptr<const CurrentField>(nc.field)
-                          : std::make_shared<ShiftedTimeField>(nc.field, shift);
+    return shift == 0.0 ? std::shared_ptr<const CurrentField>(nc.field)
+                        : std::make_shared<ShiftedTimeField>(nc.field, shift);
 #else
     throw Error(at + "this build of ompl_glider has no NetCDF support (OMPL_GLIDER_WITH_NETCDF=OFF)");
 #endif
+}
+
+void MissionProblem::buildMembers()
+{
+    const std::vector<CurrentSpec> &members = spec_.current.members;
+    if (members.empty())
+        return;
+    members_.push_back(field_);  // the first member, read as the forecast
+    for (std::size_t i = 1; i < members.size(); ++i)
+        members_.push_back(loadSource(members[i], "current.ensemble[" + std::to_string(i) + "]"));
+    field_ = std::make_shared<EnsembleMeanField>(members_);
+}
+
+void MissionProblem::buildTruth()
+{
+    const MissionSpec &m = spec_;
+    if (m.execution.enabled && m.execution.truth)
+        truth_ = loadSource(*m.execution.truth, "execution.truth");
+}
+
+MissionProblem MissionProblem::withMember(std::size_t member) const
+{
+    MissionProblem p(*this);
+    p.field_ = members_.at(member);
+    p.members_.clear();
+    return p;
 }
 
 MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
@@ -359,7 +384,7 @@ void MissionProblem::buildBox()
                 box_.yMax = std::max(box_.yMax, q.y);
             }
     }
-    else if (auto g = std::dynamic_pointer_cast<const GriddedCurrentField>(field_))
+    else if (auto g = std::dynamic_pointer_cast<const GriddedCurrentField>(members_.empty() ? field_ : members_.front()))
     {
         const Region e = g->extent();
         box_.xMin = e.xMin;

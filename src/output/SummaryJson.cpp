@@ -190,6 +190,34 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                             {"straight_line_length", w.straightLineLength}});
         j["speed_sweep"] = rows;
     }
+    if (p.ensemble)
+    {
+        const EnsemblePlan &e = *p.ensemble;
+        auto times = [](const std::vector<double> &v) {
+            json a = json::array();
+            for (double x : v)
+                a.push_back(jnum(x));
+            return a;
+        };
+        json members = json::array();
+        for (const auto &f : problem.getMembers())
+            members.push_back(f->name());
+        json cands = json::array();
+        for (const EnsemblePlan::Candidate &c : e.candidates)
+            cands.push_back({{"name", c.name},
+                             {"solved", c.solved},
+                             {"objective_value", jnum(c.objectiveValue)},
+                             {"member_travel_times", times(c.memberTravelTimes)}});
+        const MeasureSpread spread = measureSpread(e.memberTravelTimes);
+        j["ensemble"] = {{"members", members},
+                         {"objective", e.objective},
+                         {"quantile", e.objective == "quantile" ? json(e.quantile) : json(nullptr)},
+                         {"chosen", e.chosen},
+                         {"objective_value", jnum(e.objectiveValue)},
+                         {"member_travel_times", times(e.memberTravelTimes)},
+                         {"spread", {{"min", jnum(spread.min)}, {"mean", jnum(spread.mean)}, {"max", jnum(spread.max)}}},
+                         {"candidates", cands}};
+    }
     if (r.execution)
         j["execution"] = executionJson(*r.execution, problem);
     j["files"] = files;

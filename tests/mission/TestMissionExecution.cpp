@@ -2,6 +2,7 @@
 // on the forecast's frame and dates, runMission() flying the plan with each strategy, the batch, the output files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -222,7 +223,9 @@ TEST(MissionExecution, BatchIsDeterministicAndParallelRunsAgree)
         EXPECT_EQ(x.start.x, y.start.x);
         EXPECT_EQ(x.goal.y, y.goal.y);
         if (i > 0)
+        {
             EXPECT_GE(std::hypot(x.goal.x - x.start.x, x.goal.y - x.start.y), 3.0);
+        }
         ASSERT_EQ(x.planned, y.planned);
         for (std::size_t k = 0; k < x.flown.size(); ++k)
         {
@@ -370,5 +373,146 @@ execution:
         const std::string msg = e.what();
         EXPECT_NE(msg.find("field 'execution.truth'"), std::string::npos) << msg;
         EXPECT_NE(msg.find("calendar"), std::string::npos) << msg;
+    }
+}
+
+namespace
+{
+/// A steady-looking forecast on lon -53.5..-51.5, lat 47..48 (0.1 degree; two records ten days apart): a weak
+/// current u = 0.02 m/s everywhere, and, when @p adverse, u = -0.35 m/s in the box lon -52.65..-52.35,
+/// lat 47.3..47.7 (the middle of the route of the test, against it).
+void writeMember(const std::string &path, bool adverse)
+{
+    NcWriter w(path, NC_CLOBBER);
+    const std::size_t nt = 2, ny = 11, nx = 21;
+    const int dt = w.dim("time", nt), dy = w.dim("lat", ny), dx = w.dim("lon", nx);
+    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}),
+              vx = w.var("lon", NC_DOUBLE, {dx});
+    const int vu = w.var("u", NC_FLOAT, {dt, dy, dx}), vv = w.var("v", NC_FLOAT, {dt, dy, dx});
+    w.text(vt, "units", "hours since 2026-03-01 00:00:00");
+    w.text(vt, "standard_name", "time");
+    w.text(vy, "units", "degrees_north");
+    w.text(vx, "units", "degrees_east");
+    for (int v : {vu, vv})
+        w.text(v, "units", "m s-1");
+    w.text(vu, "standard_name", "eastward_sea_water_velocity");
+    w.text(vv, "standard_name", "northward_sea_water_velocity");
+    w.enddef();
+    const std::vector<double> lat = linspace(47.0, 0.1, ny), lon = linspace(-53.5, 0.1, nx);
+    std::vector<double> u, v;
+    for (std::size_t k = 0; k < nt; ++k)
+        for (std::size_t j = 0; j < ny; ++j)
+            for (std::size_t i = 0; i < nx; ++i)
+            {
+                const bool box = lon[i] > -52.65 && lon[i] < -52.35 && lat[j] > 47.3 && lat[j] < 47.7;
+                u.push_back(adverse && box ? -0.35 : 0.02);
+                v.push_back(0.0);
+            }
+    w.put(vt, {0.0, 240.0});
+    w.put(vy, lat);
+    w.put(vx, lon);
+    w.put(vu, u);
+    w.put(vv, v);
+}
+}  // namespace
+
+// Two members that differ only in one region: the calm member's plan runs straight through the region where the
+// other has a strong adverse current. The robust plan (worst case over the members) is never worse than any
+// single member's plan by that measure, and here strictly better than the calm member's.
+TEST(MissionEnsemble, RobustPlanOnTwoMembersThatDifferInOneRegion)
+{
+    TempDir dir;
+    writeMember(dir.file("calm.nc"), false);
+    writeMember(dir.file("adverse.nc"), true);
+    auto mission = [&](const std::string &objective) {
+        return "name: ensemble\ncurrent:\n  ensemble:\n    - {type: netcdf, file: " + dir.file("calm.nc") +
+               "}\n    - {type: netcdf, file: " + dir.file("adverse.nc") +
+               "}\nstart: {lon: -52.95, lat: 47.5}\ngoal: {lon: -52.05, lat: 47.5}\n"
+               "departure: {time: \"2026-03-01T01:00:00Z\"}\nvehicle: {speed: 0.4}\n"
+               "planner: {objective: " + objective + "}\n";
+    };
+    const MissionSpec spec = parseMission(mission("worst"), "m.yaml");
+    ASSERT_EQ(spec.current.members.size(), 2u);
+    EXPECT_EQ(spec.planner.objective, "worst");
+    const MissionProblem problem(spec);
+    ASSERT_EQ(problem.getMembers().size(), 2u);
+    // the planning field is the members' mean
+    const Point2 mid = problem.toLocal({-52.5, 47.5});
+    EXPECT_NEAR(problem.getField()->velocity(mid.x, mid.y, 0.0, 3600.0).u, 0.5 * (0.02 - 0.35), 1e-6);
+    EXPECT_NEAR(problem.getMembers()[0]->velocity(mid.x, mid.y, 0.0, 3600.0).u, 0.02, 1e-6);
+
+    const PlannedPath p = planRoute(problem, 3600.0);
+    ASSERT_TRUE(p.solved) << p.reason;
+    ASSERT_TRUE(p.ensemble.has_value());
+    const EnsemblePlan &e = *p.ensemble;
+    ASSERT_EQ(e.candidates.size(), 3u);  // mean, member 0, member 1
+    EXPECT_EQ(e.memberTravelTimes.size(), 2u);
+    const double robust = *std::max_element(e.memberTravelTimes.begin(), e.memberTravelTimes.end());
+    EXPECT_DOUBLE_EQ(e.objectiveValue, robust);
+    for (const EnsemblePlan::Candidate &c : e.candidates)
+    {
+        ASSERT_TRUE(c.solved) << c.name;
+        EXPECT_LE(robust, *std::max_element(c.memberTravelTimes.begin(), c.memberTravelTimes.end())) << c.name;
+    }
+    // the calm member's plan goes straight through the adverse box: much worse in the adverse member
+    const EnsemblePlan::Candidate &calm = e.candidates[1];
+    EXPECT_EQ(calm.name, "member 0");
+    EXPECT_GT(calm.memberTravelTimes[1], calm.memberTravelTimes[0] * 1.2);
+    EXPECT_LT(robust, calm.memberTravelTimes[1]);
+    // the chosen path flown in each member is what the candidate table says
+    for (std::size_t k = 0; k < 2; ++k)
+    {
+        const auto flown = retimePath(problem, problem.getMembers()[k], 0.4, p.path);
+        ASSERT_FALSE(flown.empty());
+        EXPECT_NEAR(flown.back().t - 3600.0, e.memberTravelTimes[k], 1e-6 * e.memberTravelTimes[k]);
+    }
+    // the expected objective judges the same candidates by the mean
+    const PlannedPath x = planRoute(MissionProblem(parseMission(mission("expected"), "m.yaml")), 3600.0);
+    ASSERT_TRUE(x.ensemble.has_value());
+    for (const EnsemblePlan::Candidate &c : x.ensemble->candidates)
+        EXPECT_LE(x.ensemble->objectiveValue, c.objectiveValue);
+}
+
+TEST(MissionEnsemble, ObjectivesAndBadSections)
+{
+    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0}, "expected", 0.9), 2.0);
+    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0}, "worst", 0.9), 3.0);
+    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0, 4.0}, "quantile", 0.5), 2.0);
+    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0, 4.0}, "quantile", 0.75), 3.0);
+    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0, 4.0}, "quantile", 1.0), 4.0);
+    EXPECT_TRUE(std::isinf(ensembleObjective({1.0, INFINITY}, "expected", 0.9)));
+    EXPECT_THROW(ensembleObjective({1.0}, "median", 0.9), Error);
+
+    const std::string head = "name: e\nregion: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\nstart: {x: 1, y: 0}\n"
+                             "goal: {x: 9, y: 0}\n";
+    const std::string two = "current:\n  ensemble:\n    - {type: uniform, parameters: {u: 0.1}}\n"
+                            "    - {type: meandering_jet}\n";
+    // analytic members: the mean of a uniform flow and the jet
+    const MissionSpec ok = parseMission(head + two + "planner: {objective: quantile, quantile: 0.5}\n", "m.yaml");
+    EXPECT_EQ(ok.current.members.size(), 2u);
+    EXPECT_EQ(ok.current.type, "uniform");
+    const MissionProblem problem(ok);
+    const auto jet = makeAnalyticField("meandering_jet", {});
+    EXPECT_NEAR(problem.getField()->velocity(3.0, 0.5, 0.0, 1.0).u, 0.5 * (0.1 + jet->velocity(3.0, 0.5, 0.0, 1.0).u),
+                1e-12);
+
+    struct Case
+    {
+        std::string yaml, phrase;
+    };
+    const Case cases[] = {
+        {head + "current: {ensemble: [{type: uniform}]}\n", "field 'current.ensemble'"},
+        {head + "current: {ensemble: [{type: uniform}, {type: netcdf, file: x.nc}]}\n", "current.ensemble[1]"},
+        {head + "current: {type: uniform, ensemble: [{type: uniform}, {type: uniform}]}\n", "current.type"},
+        {head + "current: {ensemble: [{type: uniform}, {type: vortex}]}\n", "field 'current.ensemble[1].type'"},
+        {head + "current: {type: uniform}\nplanner: {objective: worst}\n", "needs an ensemble current"},
+        {head + two + "planner: {objective: median}\n", "field 'planner.objective'"},
+        {head + two + "planner: {objective: quantile, quantile: 1.5}\n", "field 'planner.quantile'"},
+        {head + two + "planner: {objective: worst, quantile: 0.5}\n", "only with objective: quantile"},
+    };
+    for (const Case &c : cases)
+    {
+        const std::string msg = messageOf(c.yaml);
+        EXPECT_NE(msg.find(c.phrase), std::string::npos) << c.yaml << "\n-> " << msg;
     }
 }

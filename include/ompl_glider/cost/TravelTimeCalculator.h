@@ -3,6 +3,7 @@
 /// @brief Travel time along a straight leg through a time-varying current.
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 
 #include "ompl_glider/ShardedCounter.h"
@@ -36,6 +37,10 @@ struct TravelTimeParams
     double eps{1e-3};   ///< tolerance of the local error |t_rough - t_improved| per step (time units)
     double tau{0.9};    ///< safety factor in (0, 1] of the step-size law [EichhornIWK] Eq. 5
     double depth{0.0};  ///< depth at which the current is read (positive down)
+    /// Longest step (x/y units): the step law judges a step by the current at its two ends only, so a step longer
+    /// than the field's features could pass over a feature between calm ends. Gridded fields set half a grid cell
+    /// (MissionProblem); +inf: no limit beyond hMax.
+    double maxStep{std::numeric_limits<double>::infinity()};
 };
 
 /// @brief Earliest and latest durations to fly a leg: between the two roots the vehicle chooses its

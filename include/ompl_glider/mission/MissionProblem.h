@@ -61,6 +61,14 @@ public:
     {
         return truth_ ? truth_ : field_;
     }
+    /// @brief The members of an ensemble current (on the forecast's frame and dates; the first read as the forecast);
+    /// empty for a single source. getField() is then their mean (EnsembleMeanField).
+    const std::vector<std::shared_ptr<const CurrentField>> &getMembers() const
+    {
+        return members_;
+    }
+    /// @brief The same problem on one member's field alone (no ensemble).
+    MissionProblem withMember(std::size_t member) const;
     /// @brief The same problem between other endpoints (planning frame): field, truth, regions and box are shared.
     /// The spec's start and goal stay the mission's.
     MissionProblem withEndpoints(Point2 start, Point2 goal) const;
@@ -112,6 +120,9 @@ public:
 private:
     void buildField();
     void buildTruth();
+    void buildMembers();
+    /// A current source other than the forecast (a truth, an ensemble member) on the forecast's frame and dates.
+    std::shared_ptr<const CurrentField> loadSource(const CurrentSpec &source, const std::string &field) const;
     void buildBox();
     void buildRegions();
     Point2 localPoint(const PointSpec &p, const std::string &what) const;
@@ -121,6 +132,7 @@ private:
     MissionSpec spec_;
     std::shared_ptr<const CurrentField> field_;
     std::shared_ptr<const CurrentField> truth_;  // null: the forecast
+    std::vector<std::shared_ptr<const CurrentField>> members_;  // ensemble members (empty: one source)
     std::shared_ptr<const Environment> environment_;
     std::shared_ptr<const LocalProjection> projection_;
     double projectionScale_{1.0};  // metres per planning unit

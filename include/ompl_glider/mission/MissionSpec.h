@@ -74,6 +74,10 @@ struct CurrentSpec
     std::string velocityUnits;  ///< netcdf: overrides the units of u and v (any velocity UDUNITS-2 reads)
     std::string timeUnits;      ///< netcdf: overrides the units of the time variable ("days since 2026-01-15")
     std::optional<std::size_t> steadyRecord;  ///< netcdf: plan on this time record only, as a steady field
+    /// An ensemble (`current: {ensemble: [...]}`): its members, each a source of this kind (the first is also this
+    /// spec's own fields, for names, calendar and messages); empty: a single source. The planning field is the
+    /// members' mean; planner.objective judges plans member by member.
+    std::vector<CurrentSpec> members;
     /// netcdf, set when the mission is read: the field is steady (no time dimension, a single record, or
     /// steadyRecord); a steady file without dated time axis takes the mission's `epoch`.
     bool steady{false};
@@ -191,6 +195,10 @@ struct PlannerSpec
     /// plus refiner_max_evaluations for the refinement), as text; checked against the planner before planning.
     std::map<std::string, std::string> parameters;
     std::map<std::string, SourceMark> parameterMarks;  ///< where each parameter was given
+    /// With an ensemble current: what a plan minimises over the members' arrival times: expected (their mean),
+    /// worst (their maximum) or quantile (the `quantile` quantile).
+    std::string objective{"expected"};
+    double quantile{0.9};  ///< objective quantile: in (0, 1]
 };
 
 /// @brief What to write.

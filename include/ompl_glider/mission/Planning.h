@@ -32,6 +32,30 @@ struct PlanOptions
     std::optional<bool> refinement;                          ///< waypoint refinement
 };
 
+/// @brief How a plan fares over the members of an ensemble current (planRoute() with MissionProblem::getMembers()).
+struct EnsemblePlan
+{
+    std::string objective;   ///< expected | worst | quantile (PlannerSpec::objective)
+    double quantile{0.9};    ///< the quantile of objective quantile
+    /// The chosen plan's travel time by the objective over the members (+inf when a member cannot fly it)
+    double objectiveValue{std::numeric_limits<double>::infinity()};
+    std::vector<double> memberTravelTimes;  ///< the chosen path flown in each member (+inf: impassable there)
+    /// One candidate plan: planned on the members' mean or on one member, judged on every member.
+    struct Candidate
+    {
+        std::string name;  ///< "mean" or "member N" (0-based, in the mission's order)
+        bool solved{false};
+        double objectiveValue{std::numeric_limits<double>::infinity()};
+        std::vector<double> memberTravelTimes;
+    };
+    std::vector<Candidate> candidates;  ///< every candidate, the chosen one included
+    std::string chosen;                 ///< name of the chosen candidate
+};
+
+/// @brief The objective over members' travel times: their mean (expected), maximum (worst) or the q-quantile
+/// (the ceil(q M)-th smallest of M; quantile); +inf when any is +inf (a plan that fails in a member is not robust).
+double ensembleObjective(const std::vector<double> &travelTimes, const std::string &objective, double q);
+
 /// @brief One planned path: what planRoute() returns.
 struct PlannedPath
 {
@@ -62,6 +86,7 @@ struct PlannedPath
     double planningSeconds{0.0};     ///< planner wall time
     double postprocessSeconds{0.0};  ///< smoothing + refinement wall time
     bool pathChecked{false};         ///< the final OMPL path passed PathGeometric::check()
+    std::optional<EnsemblePlan> ensemble;  ///< with an ensemble current: how the plan fares per member
 
     /// @brief CFC of planner and post-processing together.
     std::uint64_t totalCostFunctionCalls() const
@@ -127,11 +152,21 @@ struct MissionResult
     double wallSeconds{0.0};                ///< whole run
 };
 
+/// @brief The path's waypoints flown leg by leg in @p field at @p speed from path.front().t (each leg's fastest
+/// straight travel time, TravelTimeCalculator), legs checked against the forbidden regions; empty when a leg is
+/// impassable there.
+std::vector<TimedWaypoint> retimePath(const MissionProblem &problem, std::shared_ptr<const CurrentField> field,
+                                      double speed, const std::vector<TimedWaypoint> &path);
+
 /// @brief Plans from the start at @p departure: makeSimpleSetup(), the planner named by planner.name (from the
 /// registry, with the mission's planner.parameters set through OMPL's ParamSet), solve within planner.time_limit,
 /// then smoothing (PathSmoother, [EichhornRAS] Table 3) and refinement (WaypointRefiner) as asked, and the
 /// straight-line time for comparison. No path is an outcome (solved false, status and reason say why), not an
 /// exception. Thread-safe for concurrent calls on one problem.
+/// With an ensemble current (MissionProblem::getMembers()) the plan is robust: candidates are planned on the
+/// members' mean and on every member (in parallel), each candidate path is flown in every member (retimePath()),
+/// and the one with the least planner.objective over the members is returned (PlannedPath::ensemble), its times
+/// those of the mean field. The robust plan is thus never worse by the objective than any single-member plan.
 /// @throws Error for an unknown planner or parameter, or a bad problem (see makeGliderContext()).
 PlannedPath planRoute(const MissionProblem &problem, double departure, const PlanOptions &options = {});
 

@@ -151,6 +151,33 @@ void readForecastFiles(const Reader &r, const YAML::Node &n, const std::string &
 
 void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
+    if (n.IsMap() && n["ensemble"])
+    {
+        // members of one kind (analytic flows, or NetCDF files on one calendar); the first sets names and dates
+        r.checkMap(n, "current", {"ensemble"});
+        const YAML::Node &l = n["ensemble"];
+        if (!l.IsSequence() || l.size() < 2)
+            r.fail(l, "current.ensemble", "expected a list of 2 or more current sources (type: ..., as in 'current')");
+        std::vector<CurrentSpec> members;
+        for (std::size_t i = 0; i < l.size(); ++i)
+        {
+            const std::string f = "current.ensemble[" + std::to_string(i) + "]";
+            CurrentSpec c;
+            readCurrentSource(r, l[i], f, c);
+            c.mark = {r.file(), r.line(l[i])};
+            if (i > 0 && (c.type == "netcdf") != (members.front().type == "netcdf"))
+                r.fail(l[i]["type"], f + ".type",
+                       "every member must be of one kind: all NetCDF files or all analytic flows (the first is " +
+                           members.front().type + ")");
+            members.push_back(c);
+        }
+        m.current = members.front();
+        m.current.mark = {r.file(), r.line(n)};
+        m.current.members = members;
+        if (m.current.type == "netcdf")
+            readFileCalendar(r, l[0], m);
+        return;
+    }
     readCurrentSource(r, n, "current", m.current);
     if (m.current.type == "netcdf")
         readFileCalendar(r, n, m);
@@ -385,8 +412,23 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
     const std::string f = "planner";
     r.checkMap(n, f,
                {"name", "grid_size", "sectors", "smoothing", "refinement", "time_limit", "horizon", "goal_tolerance",
-                "parameters"});
+                "parameters", "objective", "quantile"});
     PlannerSpec &p = m.planner;
+    if (n["objective"])
+    {
+        p.objective = r.oneOf(n["objective"], f + ".objective", {"expected", "worst", "quantile"});
+        if (m.current.members.empty())
+            r.fail(n["objective"], f + ".objective",
+                   "an objective over members needs an ensemble current (current: {ensemble: [...]})");
+    }
+    if (n["quantile"])
+    {
+        p.quantile = r.number(n["quantile"], f + ".quantile");
+        if (!(p.quantile > 0.0 && p.quantile <= 1.0))
+            r.fail(n["quantile"], f + ".quantile", "expected a number in (0, 1]");
+        if (p.objective != "quantile")
+            r.fail(n["quantile"], f + ".quantile", "only with objective: quantile");
+    }
     if (n["name"])
     {
         const std::string name = r.text(n["name"], f + ".name");

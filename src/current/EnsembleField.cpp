@@ -1,0 +1,92 @@
+#include "ompl_glider/current/EnsembleField.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+EnsembleMeanField::EnsembleMeanField(std::vector<std::shared_ptr<const CurrentField>> members)
+    : members_(std::move(members))
+{
+    if (members_.empty())
+        throw Error("EnsembleMeanField: no member");
+    for (const auto &m : members_)
+        if (!m)
+            throw Error("EnsembleMeanField: a member is null");
+}
+
+double EnsembleMeanField::maxSpeed(const Region &region) const
+{
+    double s = 0.0;
+    for (const auto &m : members_)
+        s = std::max(s, m->maxSpeed(region));
+    return s;
+}
+
+bool EnsembleMeanField::divergenceFree() const
+{
+    return std::all_of(members_.begin(), members_.end(), [](const auto &m) { return m->divergenceFree(); });
+}
+
+bool EnsembleMeanField::inWater(double x, double y, double z) const
+{
+    return std::all_of(members_.begin(), members_.end(), [&](const auto &m) { return m->inWater(x, y, z); });
+}
+
+bool EnsembleMeanField::segmentInWater(double x1, double y1, double x2, double y2, double z) const
+{
+    return std::all_of(members_.begin(), members_.end(),
+                       [&](const auto &m) { return m->segmentInWater(x1, y1, x2, y2, z); });
+}
+
+double EnsembleMeanField::timeBegin() const
+{
+    double t = -std::numeric_limits<double>::infinity();
+    for (const auto &m : members_)
+        t = std::max(t, m->timeBegin());
+    return t;
+}
+
+double EnsembleMeanField::timeEnd() const
+{
+    double t = std::numeric_limits<double>::infinity();
+    for (const auto &m : members_)
+        t = std::min(t, m->timeEnd());
+    return t;
+}
+
+std::string EnsembleMeanField::name() const
+{
+    return "ensemble mean of " + std::to_string(members_.size()) + " (" + members_.front()->name() + ", ...)";
+}
+
+Velocity EnsembleMeanField::evaluate(double x, double y, double z, double t) const
+{
+    Velocity s{0.0, 0.0};
+    for (const auto &m : members_)
+    {
+        const Velocity c = m->velocity(x, y, z, t);
+        s.u += c.u;
+        s.v += c.v;
+    }
+    const double n = static_cast<double>(members_.size());
+    return {s.u / n, s.v / n};
+}
+
+Jacobian EnsembleMeanField::evaluateJacobian(double x, double y, double z, double t) const
+{
+    Jacobian s;
+    for (const auto &m : members_)
+    {
+        const Jacobian j = m->jacobian(x, y, z, t);
+        s.ux += j.ux;
+        s.uy += j.uy;
+        s.vx += j.vx;
+        s.vy += j.vy;
+    }
+    const double n = static_cast<double>(members_.size());
+    return {s.ux / n, s.uy / n, s.vx / n, s.vy / n};
+}
+}  // namespace ompl_glider
