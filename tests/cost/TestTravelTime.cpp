@@ -266,3 +266,52 @@ TEST(TravelTime, NeverCrossesLandBetweenIntegrationSteps)
     EXPECT_NEAR(calc.travelTime(0.0, 0.0, 4.9, 0.0, 0.0), 4.9 / 0.7, 1e-12);
     EXPECT_NEAR(calc.travelTime(5.1, 0.0, 9.0, 0.0, 0.0), 3.9 / 0.7, 1e-12);
 }
+
+namespace
+{
+// Calm water (u = 0.02) with an adverse band u = -0.3 for 3 < x < 4.5: a feature a long step can pass over when
+// both its ends are calm.
+class AdverseBandField : public CurrentField
+{
+public:
+    double maxSpeed(const Region &) const override
+    {
+        return 0.3;
+    }
+    std::string name() const override
+    {
+        return "adverse band";
+    }
+
+protected:
+    Velocity evaluate(double x, double, double, double) const override
+    {
+        return {x > 3.0 && x < 4.5 ? -0.3 : 0.02, 0.0};
+    }
+    Jacobian evaluateJacobian(double, double, double, double) const override
+    {
+        return {};
+    }
+};
+}  // namespace
+
+// A 9-unit leg through the band: the closed form is 1.5 / 0.1 + 7.5 / 0.42. With maxStep smaller than the band
+// the integration must see it (within the step law's tolerance). Without the cap the step law passes over the band
+// (9 / 0.42 = 21.4 instead of 32.9), which is why MissionProblem caps gridded fields at half a grid cell.
+TEST(TravelTime, MaxStepKeepsNarrowFeaturesBetweenCalmEnds)
+{
+    const auto field = std::make_shared<AdverseBandField>();
+    const double exact = 1.5 / (0.4 - 0.3) + 7.5 / (0.4 + 0.02);
+    TravelTimeParams p;
+    p.speed = 0.4;
+    p.maxStep = 0.25;
+    const TravelTimeCalculator capped(field, p);
+    EXPECT_NEAR(capped.travelTime(0.0, 0.0, 9.0, 0.0, 0.0), exact, 0.02 * exact);
+    // the same leg in pieces agrees
+    double pieces = 0.0;
+    for (int k = 0; k < 9; ++k)
+        pieces += capped.travelTime(k, 0.0, k + 1.0, 0.0, pieces);
+    EXPECT_NEAR(capped.travelTime(0.0, 0.0, 9.0, 0.0, 0.0), pieces, 0.02 * exact);
+    p.maxStep = 0.0;
+    EXPECT_THROW(TravelTimeCalculator(field, p), std::runtime_error);
+}
