@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <random>
@@ -115,6 +116,22 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
     }
 }
 }  // namespace
+
+double rmsDifference(const CurrentField &a, const CurrentField &b, double x, double y, double z, double t0, double t1,
+                     int samples)
+{
+    if (!a.inWater(x, y, z) || !b.inWater(x, y, z))
+        return std::numeric_limits<double>::quiet_NaN();
+    double sum = 0.0;
+    const int n = std::max(1, samples);
+    for (int k = 0; k < n; ++k)
+    {
+        const double t = n == 1 ? t0 : t0 + (t1 - t0) * k / (n - 1);
+        const Velocity ca = a.velocity(x, y, z, t), cb = b.velocity(x, y, z, t);
+        sum += (ca.u - cb.u) * (ca.u - cb.u) + (ca.v - cb.v) * (ca.v - cb.v);
+    }
+    return std::sqrt(sum / n);
+}
 
 MeasureSpread measureSpread(std::vector<double> v)
 {
@@ -267,6 +284,33 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         s.arrivalDelay = measureSpread(delay);
         s.madeGoodSpeed = measureSpread(speed);
         r.spread.push_back(s);
+    }
+    // the truth against the forecast over the box and the runs' time window
+    double latest = plan.departure;
+    for (const ExecutionRun &run : r.runs)
+        if (run.planned)
+            latest = std::max(latest, run.plan.back().t);
+    r.differenceBegin = plan.departure;
+    r.differenceEnd = plan.departure + 2.0 * (latest - plan.departure);
+    if (e.truth)
+    {
+        const CurrentField &f = *problem.getField(), &tr = *problem.getTruth();
+        const double tEnd = std::max(r.differenceBegin, std::min({r.differenceEnd, f.timeEnd(), tr.timeEnd()}));
+        double sum = 0.0;
+        std::size_t count = 0;
+        for (int j = 0; j < 40; ++j)
+            for (int i = 0; i < 40; ++i)
+            {
+                const double x = box.xMin + (i + 0.5) * (box.xMax - box.xMin) / 40.0;
+                const double y = box.yMin + (j + 0.5) * (box.yMax - box.yMin) / 40.0;
+                const double d = rmsDifference(f, tr, x, y, m.vehicle.depth, r.differenceBegin, tEnd);
+                if (std::isnan(d))
+                    continue;
+                sum += d * d;
+                ++count;
+                r.maxPointRmsDifference = std::max(r.maxPointRmsDifference, d);
+            }
+        r.rmsDifference = count > 0 ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
     }
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;

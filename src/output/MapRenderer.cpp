@@ -437,9 +437,10 @@ void MapRenderer::draw(void *context) const
                     cairo_rectangle(cr, kLeft + i * cell, kTop + j * cell, cell + 0.5, cell + 0.5);
                     cairo_fill(cr);
                 }
-        const int cols = options_.arrowColumns;
+        const int cols = options_.arrows ? options_.arrowColumns : 0;
         const double dxCell = (region_.xMax - region_.xMin) / cols;
-        const int rows = std::max(2, static_cast<int>(std::round((region_.yMax - region_.yMin) / dxCell)));
+        const int rows =
+            cols == 0 ? 0 : std::max(2, static_cast<int>(std::round((region_.yMax - region_.yMin) / dxCell)));
         const double dyCell = (region_.yMax - region_.yMin) / rows;
         const double cellPx = std::min(dxCell, dyCell) * scale;
         cairo_set_source_rgba(cr, 0.10, 0.20, 0.40, 0.75);
@@ -744,16 +745,22 @@ void MapRenderer::draw(void *context) const
     }
     if (field_)
     {
-        cairo_set_source_rgba(cr, 0.10, 0.20, 0.40, 0.9);
-        cairo_set_line_width(cr, 1.1);
-        arrow(cr, lx + 2, ly, 26, 0, 6);
-        plainText(cr, lx + 38, ly + 4, "current at t=" + fmt(fieldTime_) + tu, 12);
-        ly += 20;
-        ly += 16 * wrappedText(cr, lx + 38, ly + 4, "(" + field_->name() + ")", 11, W - lx - 46, 16,
-                               {0.3, 0.3, 0.3, 1}) + 6;
+        if (options_.arrows)
+        {
+            cairo_set_source_rgba(cr, 0.10, 0.20, 0.40, 0.9);
+            cairo_set_line_width(cr, 1.1);
+            arrow(cr, lx + 2, ly, 26, 0, 6);
+            plainText(cr, lx + 38, ly + 4, "current at t=" + fmt(fieldTime_) + tu, 12);
+            ly += 20;
+            ly += 16 * wrappedText(cr, lx + 38, ly + 4, "(" + field_->name() + ")", 11, W - lx - 46, 16,
+                                   {0.3, 0.3, 0.3, 1}) + 6;
+        }
         if (options_.speedShading && vmax > 0)
         {
-            plainText(cr, lx, ly + 4, options_.speedInMetresPerSecond ? "current speed (m/s)" : "current speed", 12);
+            const std::string label = !options_.shadingLabel.empty() ? options_.shadingLabel
+                                      : options_.speedInMetresPerSecond ? "current speed (m/s)"
+                                                                        : "current speed";
+            plainText(cr, lx, ly + 4, label, 12);
             ly += 12;
             const double bw = 150, bh = 12;
             for (int k = 0; k < 60; ++k)

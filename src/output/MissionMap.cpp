@@ -1,5 +1,6 @@
 #include "ompl_glider/output/MissionMap.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -104,24 +105,97 @@ void addPaths(MapRenderer &map, const MissionResult &r)
         map.addPath(MapRenderer::refinedPathStyle(
             "refined: " + std::to_string(p.path.size()) + " wp, T=" + duration(r, p.travelTime, true), fin));
 }
-}  // namespace
-
-MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
+/// The map's frame: lon/lat when the problem has them (the map then refers to the problem: draw it while the
+/// problem lives), speeds in m/s for forecasts.
+MapOptions mapFrame(const MissionProblem &problem)
 {
-    const MissionSpec &m = r.spec;
-    MapOptions mo;
+    const MissionSpec &m = problem.getSpec();
     const bool netcdf = m.current.type == "netcdf";
-    const std::string depIso = problem.isoTime(r.plan.departure);
-    mo.title = m.name + " - " + r.plan.planner + ", V = " + fmt(r.plan.speed) + (netcdf ? " m/s" : "") +
-               (depIso.empty() ? "" : ", departing " + depIso) + (r.plan.solved ? "" : " (no path)");
+    MapOptions mo;
     if (problem.isGeographic())
     {
-        // the map refers to the problem for its lon/lat frame: draw it while the problem lives
         mo.toGeographic = [&problem](Point2 p) { return problem.toGeographic(p); };
         mo.toLocal = [&problem](LonLat g) { return problem.toLocal(g); };
         mo.metresPerUnit = netcdf ? 1.0 : m.lengthUnitMetres;
     }
     mo.speedInMetresPerSecond = netcdf;
+    return mo;
+}
+
+/// RMS over a time window of |truth - forecast| as the "speed" (u) of a steady field, for the difference map.
+class RmsDifferenceField : public CurrentField
+{
+public:
+    RmsDifferenceField(std::shared_ptr<const CurrentField> a, std::shared_ptr<const CurrentField> b, double t0,
+                       double t1)
+      : a_(std::move(a)), b_(std::move(b)), t0_(t0), t1_(t1)
+    {
+    }
+    double maxSpeed(const Region &region) const override
+    {
+        return a_->maxSpeed(region) + b_->maxSpeed(region);
+    }
+    bool inWater(double x, double y, double z) const override
+    {
+        return a_->inWater(x, y, z) && b_->inWater(x, y, z);
+    }
+    std::string name() const override
+    {
+        return "RMS |truth - forecast|";
+    }
+
+protected:
+    Velocity evaluate(double x, double y, double z, double) const override
+    {
+        const double d = rmsDifference(*a_, *b_, x, y, z, t0_, t1_);
+        return {std::isnan(d) ? 0.0 : d, 0.0};
+    }
+    Jacobian evaluateJacobian(double, double, double, double) const override
+    {
+        return {};
+    }
+
+private:
+    std::shared_ptr<const CurrentField> a_, b_;
+    double t0_, t1_;
+};
+}  // namespace
+
+MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &problem)
+{
+    const MissionSpec &m = r.spec;
+    const ExecutionResult &e = *r.execution;
+    MapOptions mo = mapFrame(problem);
+    mo.arrows = false;
+    const bool netcdf = m.current.type == "netcdf";
+    mo.shadingLabel = netcdf ? "RMS |truth - forecast| (m/s)" : "RMS |truth - forecast|";
+    mo.title = m.name + " - truth against forecast, RMS over " + duration(r, e.differenceEnd - e.differenceBegin);
+    MapRenderer map(problem.getBox(), mo);
+    const double tEnd = std::max(e.differenceBegin, std::min({e.differenceEnd, problem.getField()->timeEnd(),
+                                                               problem.getTruth()->timeEnd()}));
+    map.setField(std::make_shared<RmsDifferenceField>(problem.getTruth(), problem.getField(), e.differenceBegin, tEnd),
+                 e.differenceBegin, m.vehicle.depth);
+    for (const MissionPolygon &p : problem.getPolygons())
+        map.addPolygon(mapPolygon(p));
+    if (r.plan.solved)
+        map.addPath(MapRenderer::refinedPathStyle("plan", r.plan.path));
+    const Point2 s = problem.getStart(), g = problem.getGoal();
+    map.setStartGoal(s.x, s.y, g.x, g.y);
+    map.addNote("truth: " + e.truth);
+    map.addNote("forecast: " + problem.getField()->name());
+    map.addNote("RMS over the box " + fmt(e.rmsDifference) + (netcdf ? " m/s" : "") + ", largest at a point " +
+                fmt(e.maxPointRmsDifference) + (netcdf ? " m/s" : ""));
+    return map;
+}
+
+MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
+{
+    const MissionSpec &m = r.spec;
+    MapOptions mo = mapFrame(problem);
+    const bool netcdf = m.current.type == "netcdf";
+    const std::string depIso = problem.isoTime(r.plan.departure);
+    mo.title = m.name + " - " + r.plan.planner + ", V = " + fmt(r.plan.speed) + (netcdf ? " m/s" : "") +
+               (depIso.empty() ? "" : ", departing " + depIso) + (r.plan.solved ? "" : " (no path)");
     MapRenderer map(problem.getBox(), mo);
     const double tMap = std::isnan(m.outputs.mapTime) ? r.plan.departure : m.outputs.mapTime;
     map.setField(problem.getField(), tMap, m.vehicle.depth);

@@ -64,6 +64,17 @@ std::vector<OutputFile> formatFiles(const std::string &format, const MissionResu
             files.push_back({svg ? "execution.svg" : "execution.png", [res, svg](const std::string &p) {
                                  writeExecutionPlot(p, *res->execution, res->spec, svg);
                              }});
+        if (r.spec.execution.truth)
+        {
+            auto map = std::make_shared<std::unique_ptr<MapRenderer>>();
+            auto draw = [map, res, prob]() -> const MapRenderer & {
+                if (!*map)
+                    *map = std::make_unique<MapRenderer>(modelDifferenceMap(*res, *prob));
+                return **map;
+            };
+            files.push_back({"model_difference.svg", [draw](const std::string &p) { draw().writeSvg(p); }});
+            files.push_back({"model_difference.png", [draw](const std::string &p) { draw().writePng(p); }});
+        }
 #endif
         return files;
     }
@@ -147,7 +158,7 @@ const std::vector<OutputFormat> &outputFormats()
         {"geojson", "path.geojson", "the path and its waypoints as GeoJSON", true},
         {"goto", "goto_lNN.ma", "Slocum goto list (geographic missions)", true},
         {"map", "map.svg, map.png", "map of the current, regions and paths", false},
-        {"execution", "execution.csv, execution_tracks.csv, execution.svg/png",
+        {"execution", "execution.csv, execution_tracks.csv, execution.svg/png, model_difference.svg/png",
          "the plan flown in the truth per strategy, and the box plot of a batch (written whenever the mission has "
          "an execution section)",
          false},

@@ -53,6 +53,10 @@ json executionJson(const ExecutionResult &e, const MissionProblem &problem)
     for (const ExecutionRun &run : e.runs)
         planned += run.planned ? 1 : 0;
     j["runs_planned"] = planned;
+    j["model_difference"] = {{"rms", e.rmsDifference},
+                             {"max_point_rms", e.maxPointRmsDifference},
+                             {"from", e.differenceBegin},
+                             {"to", e.differenceEnd}};
     j["threads"] = e.threads;
     j["wall_time_s"] = e.wallSeconds;
     j["planned"] = own.planned;

@@ -69,9 +69,20 @@ struct ExecutionResult
     unsigned replanEvery{1};      ///< replan strategy: surfacings between plans
     std::vector<ExecutionRun> runs;  ///< runs[0] is the mission's own pair
     std::vector<StrategySpread> spread;  ///< one per strategy, over every run flown
+    /// The truth against the forecast over the planning box and the time window of the runs (departure to the
+    /// latest planned arrival x 2, 24 times, a 40 x 40 grid of water points): RMS over space and time of
+    /// |c_truth - c_forecast|, and the largest RMS over time at one point. 0 when the truth is the forecast.
+    double rmsDifference{0.0};
+    double maxPointRmsDifference{0.0};
+    double differenceBegin{0.0}, differenceEnd{0.0};  ///< the time window of the comparison
     unsigned threads{1};          ///< threads used
     double wallSeconds{0.0};      ///< wall time of the execution
 };
+
+/// @brief RMS over @p samples times evenly spread over [t0, t1] of |a - b| at one point (x, y, depth z); NaN where
+/// either field has no water.
+double rmsDifference(const CurrentField &a, const CurrentField &b, double x, double y, double z, double t0, double t1,
+                     int samples = 24);
 
 /// @brief Flies @p plan (the pipeline's plan of the mission; when not solved, run 0 is reported without flights)
 /// and the batch's pairs with every strategy of problem.getSpec().execution. @throws Error for bad settings.

@@ -60,6 +60,8 @@ struct MapOptions
     std::string title;         ///< drawn above the map
     std::string timeUnit;      ///< appended to times in labels ("s", "h", or empty for dimensionless fields)
     bool speedShading{true};   ///< shade the background by current speed
+    bool arrows{true};         ///< draw current arrows (off for a field whose "velocity" is a scalar in u)
+    std::string shadingLabel;  ///< label of the colour bar; empty: "current speed" 
     /// Geographic frame (both set): the axes are labelled in longitude/latitude and a graticule of meridians and
     /// parallels is drawn through the field's frame (curved where the projection bends them); start and goal are
     /// given in degrees and a scale bar is drawn. Unset: the field's x/y frame.
