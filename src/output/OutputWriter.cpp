@@ -42,6 +42,13 @@ std::vector<OutputFile> formatFiles(const std::string &format, const MissionResu
         return {{"path.csv", [res](const std::string &p) { writeText(p, pathCsv(*res)); }}};
     if (format == "geojson")
         return {{"path.geojson", [res](const std::string &p) { writeText(p, routeGeoJson(*res)); }}};
+    if (format == "stints")
+    {
+        if (!r.plan.stints)
+            return {};
+        const MissionProblem *prob = &problem;
+        return {{"stints.csv", [res, prob](const std::string &p) { writeText(p, stintsCsv(*res, *prob)); }}};
+    }
     if (format == "goto")
     {
         if (!problem.isGeographic())
@@ -128,6 +135,8 @@ const std::vector<OutputFormat> &outputFormats()
         {"path", "path.csv", "the final path: t,x,y,lon,lat", true},
         {"geojson", "path.geojson", "the path and its waypoints as GeoJSON", true},
         {"goto", "goto_lNN.ma", "Slocum goto list (geographic missions)", true},
+        {"stints", "stints.csv", "heading per surfacing: time, position, heading, expected drift (missions with stints)",
+         true},
         {"map", "map.svg, map.png", "map of the current, regions and paths", false},
     };
     return formats;

@@ -18,6 +18,7 @@
 #include "ompl_glider/mission/DepartureTimeSearch.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/planners/TveSearch.h"
+#include "ompl_glider/stints/StintSimulator.h"
 
 namespace ompl_glider
 {
@@ -29,6 +30,23 @@ struct PlanOptions
     int sectors{0};                                          ///< lattice sectors
     std::optional<bool> smoothing;                           ///< smoothing ([EichhornRAS] Table 3)
     std::optional<bool> refinement;                          ///< waypoint refinement
+};
+
+/// @brief What a glider flies ([IsernObstacles]): the plan of a stint planner, or the conversion of another
+/// planner's path to a heading per surfacing (when the mission has a `stints` section).
+struct StintOutcome
+{
+    StintPlan plan;          ///< bearings (degrees clockwise from north), surfacings, track, remaining distance
+    bool converted{false};   ///< converted from the planner's path (stintsFromPath()), not planned on stints
+    double duration{0.0};    ///< time between surfacings
+    double missionDuration{0.0};  ///< the mission length flown (a conversion: long enough to arrive)
+    std::string objective;   ///< remaining_distance | earliest_arrival
+    double radius{0.0};      ///< goal radius of the stints
+    /// Conversion: the path's travel time, the stints' (+inf: they do not arrive) and the loss
+    /// stintTravelTime / pathTravelTime - 1
+    double pathTravelTime{std::numeric_limits<double>::infinity()};
+    double stintTravelTime{std::numeric_limits<double>::infinity()};  ///< see pathTravelTime
+    double loss{std::numeric_limits<double>::infinity()};             ///< see pathTravelTime
 };
 
 /// @brief One planned path: what planRoute() returns.
@@ -60,7 +78,10 @@ struct PlannedPath
     std::uint64_t expandedVertices{0};              ///< lattice vertices expanded (lattice planners)
     double planningSeconds{0.0};     ///< planner wall time
     double postprocessSeconds{0.0};  ///< smoothing + refinement wall time
-    bool pathChecked{false};         ///< the final OMPL path passed PathGeometric::check()
+    bool pathChecked{false};         ///< the final OMPL path passed PathGeometric::check() (stint plans: no
+                                     ///< stint met land or a forbidden region)
+    /// Stints: the plan of a stint planner (then path holds its surfacings), or the path converted to stints
+    std::optional<StintOutcome> stints;
 
     /// @brief CFC of planner and post-processing together.
     std::uint64_t totalCostFunctionCalls() const
@@ -131,7 +152,15 @@ struct MissionResult
 /// straight-line time for comparison. No path is an outcome (solved false, status and reason say why), not an
 /// exception. Thread-safe for concurrent calls on one problem.
 /// @throws Error for an unknown planner or parameter, or a bad problem (see makeGliderContext()).
+/// A stint planner (PlannerEntry::stints) flies the mission's `stints` section: its plan is the surfacings (not
+/// smoothed or refined), solved when a plan was flown (exactly reaching the goal or not: PlannedPath::stints has the
+/// remaining distance). With another planner and a `stints` section, the final path is converted to stints
+/// (stintsFromPath()).
 PlannedPath planRoute(const MissionProblem &problem, double departure, const PlanOptions &options = {});
+
+/// @brief The stint settings of the mission's `stints` section for a departure (depth from the vehicle).
+/// @throws Error naming the section's field when the mission would run past the forecast.
+StintSettings stintSettings(const MissionProblem &problem, double departure);
 
 /// @brief Travel time of a full planner run against departure time ([EichhornRAS] Sec. 5), for the departure
 /// search: thread-safe, +inf when no path. @p gridSize / @p sectors 0: the planner's.

@@ -1,0 +1,104 @@
+// From a timed path to constant-bearing stints; see PathToStints.h.
+#include "ompl_glider/stints/PathToStints.h"
+
+#include <cmath>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/execution/Execution.h"
+
+namespace ompl_glider
+{
+namespace
+{
+TimedWaypoint pathAt(const std::vector<TimedWaypoint> &path, double t)
+{
+    if (t <= path.front().t)
+        return path.front();
+    for (std::size_t k = 0; k + 1 < path.size(); ++k)
+        if (t <= path[k + 1].t)
+        {
+            const TimedWaypoint &a = path[k], &b = path[k + 1];
+            const double s = b.t > a.t ? (t - a.t) / (b.t - a.t) : 1.0;
+            return {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), t};
+        }
+    return path.back();
+}
+}  // namespace
+
+PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<TimedWaypoint> &path,
+                                  const BearingOptimizerParams &params)
+{
+    if (path.size() < 2)
+        throw Error("stintsFromPath: the path needs at least two points");
+    if (!(sim.settings().radius > 0.0))
+        throw Error("stintsFromPath: the simulator needs a goal radius");
+    PathToStintsResult out;
+    out.pathTravelTime = path.back().t - path.front().t;
+    const double D = sim.settings().duration;
+    // tracking: stint by stint toward the path's position one stint later
+    std::vector<double> bearings;
+    double x = path.front().x, y = path.front().y, t = path.front().t;
+    const std::size_t count = sim.settings().stintCount();
+    while (bearings.size() < count && t < sim.endTime())
+    {
+        const TimedWaypoint aim = pathAt(path, t + D);
+        double dx = aim.x - x, dy = aim.y - y;
+        const double len = std::hypot(dx, dy);
+        double b0 = sim.bearingToGoal(x, y);
+        if (len > 0.0)
+        {
+            double hx = 0.0, hy = 0.0;
+            crabHeading(dx / len, dy / len, sim.field().velocity(x, y, sim.settings().depth, t), sim.speed(), hx, hy);
+            b0 = bearingOf(hx, hy);
+        }
+        auto miss = [&](double b) {
+            const DiveEnd e = sim.flyStint(x, y, t, b);
+            return e.grounded ? INFINITY : std::hypot(aim.x - e.x, aim.y - e.y);
+        };
+        // golden section over b0 +- 45 degrees
+        const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
+        double a = b0 - 45.0, c = b0 + 45.0;
+        double p = c - phi * (c - a), q = a + phi * (c - a);
+        double fp = miss(p), fq = miss(q);
+        for (int it = 0; it < 18; ++it)
+        {
+            if (fp <= fq)
+            {
+                c = q;
+                q = p;
+                fq = fp;
+                p = c - phi * (c - a);
+                fp = miss(p);
+            }
+            else
+            {
+                a = p;
+                p = q;
+                fp = fq;
+                q = a + phi * (c - a);
+                fq = miss(q);
+            }
+        }
+        double b = fp <= fq ? p : q;
+        if (!(std::min(fp, fq) <= miss(b0)))
+            b = b0;
+        bearings.push_back(b);
+        const DiveEnd e = sim.flyStint(x, y, t, b);
+        x = e.x;
+        y = e.y;
+        t = e.t;
+        if (e.reached || e.grounded)
+            break;
+    }
+    out.tracking = sim.simulate(bearings);
+    const BearingOptimizerResult opt = optimiseBearings(sim, bearings, params);
+    out.evaluations = opt.evaluations;
+    out.plan = opt.plan.cost <= out.tracking.cost ? opt.plan : out.tracking;
+    if (out.plan.reached)
+    {
+        out.stintTravelTime = out.plan.arrivalTime - path.front().t;
+        out.loss = out.stintTravelTime / out.pathTravelTime - 1.0;
+    }
+    return out;
+}
+}  // namespace ompl_glider
