@@ -55,6 +55,14 @@ DiveEnd flyHeading(double x, double y, double t, double hx, double hy, double tE
             const double a = ex * ex + ey * ey, b = 2.0 * (ex * fx + ey * fy),
                          c = fx * fx + fy * fy - s.radius * s.radius;
             const double disc = b * b - 4.0 * a * c;
+            // closest approach on the chord (for a continuous cost of plans that miss the radius)
+            const double q0 = a > 0.0 ? std::clamp(-(ex * fx + ey * fy) / a, 0.0, 1.0) : 0.0;
+            const double dq = std::hypot(fx + q0 * ex, fy + q0 * ey);
+            if (dq < e.closestDistance)
+            {
+                e.closestDistance = dq;
+                e.closestTime = t + q0 * h;
+            }
             if (a > 0.0 && disc >= 0.0)
             {
                 const double q = (-b - std::sqrt(disc)) / (2.0 * a);

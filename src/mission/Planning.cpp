@@ -238,7 +238,7 @@ StintSettings stintSettings(const MissionProblem &problem, double departure)
 namespace
 {
 /// The final path of a (non-stint) planner flown as stints: the heading per surfacing that follows it best and
-/// what that loses (stintsFromPath()); earliest arrival within the section's radius (0: 1e-3 of the start-goal
+/// what that loses (stintsFromPath()); earliest arrival within the section's radius (0: 1e-4 of the start-goal
 /// distance), over a mission long enough to arrive (1.5 times the path's time plus one stint, within the forecast).
 StintOutcome convertToStints(const MissionProblem &problem, const PlannedPath &r)
 {
@@ -246,7 +246,7 @@ StintOutcome convertToStints(const MissionProblem &problem, const PlannedPath &r
     StintSettings s = stintSettings(problem, r.departure);
     s.objective = StintObjective::EarliestArrival;
     if (!(s.radius > 0.0))
-        s.radius = std::max(1e-3 * r.straightLineLength, 1e-9);
+        s.radius = std::max(1e-4 * r.straightLineLength, 1e-9);
     s.missionDuration = 1.5 * r.travelTime + s.duration;
     const double end = problem.getField()->timeEnd();
     if (std::isfinite(end))

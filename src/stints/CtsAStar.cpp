@@ -21,6 +21,7 @@ struct Node
     bool terminal;    // mission end or goal reached
     bool reached;
     double arrival;
+    double closest, closestTime;  // closest approach to the goal so far (with a radius)
 };
 
 struct Key
@@ -65,7 +66,8 @@ CtsAStarResult ctsAStar(const StintSimulator &sim, const CtsAStarParams &params)
     const Point2 g = sim.goal();
     auto dist = [&](double x, double y) { return std::hypot(g.x - x, g.y - y); };
     nodes.push_back({sim.start().x, sim.start().y, sim.t0(), 0, -1, 0.0, sim.lowerBound(sim.start().x, sim.start().y,
-                     sim.t0()), dist(sim.start().x, sim.start().y), false, false, 0.0});
+                     sim.t0()), dist(sim.start().x, sim.start().y), false, false, 0.0,
+                     dist(sim.start().x, sim.start().y), sim.t0()});
     using Entry = std::pair<std::pair<double, double>, long>;  // (bound, distance), node
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
     open.push({{nodes[0].bound, nodes[0].distance}, 0});
@@ -107,7 +109,13 @@ CtsAStarResult ctsAStar(const StintSimulator &sim, const CtsAStarParams &params)
             const DiveEnd e = sim.flyStint(n.x, n.y, n.t, b);
             if (e.grounded)
                 continue;
-            Node c{e.x, e.y, e.t, n.depth + 1, i, b, 0.0, dist(e.x, e.y), false, e.reached, e.arrivalTime};
+            Node c{e.x, e.y, e.t, n.depth + 1, i, b, 0.0, dist(e.x, e.y), false, e.reached, e.arrivalTime,
+                   n.closest, n.closestTime};
+            if (e.closestDistance < c.closest)
+            {
+                c.closest = e.closestDistance;
+                c.closestTime = e.closestTime;
+            }
             c.terminal = e.reached || c.depth >= count || e.t >= end - 1e-12 * std::max(1.0, std::abs(end));
             if (c.terminal)
             {
@@ -116,6 +124,11 @@ CtsAStarResult ctsAStar(const StintSimulator &sim, const CtsAStarParams &params)
                 p.remainingDistance = c.distance;
                 p.reached = e.reached;
                 p.arrivalTime = e.arrivalTime;
+                if (s.radius > 0.0)
+                {
+                    p.closestDistance = c.closest;
+                    p.closestTime = c.closestTime;
+                }
                 c.bound = sim.cost(p);
             }
             else

@@ -1,6 +1,7 @@
 // From a timed path to constant-bearing stints; see PathToStints.h.
 #include "ompl_glider/stints/PathToStints.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ompl_glider/Exception.h"
@@ -23,6 +24,25 @@ TimedWaypoint pathAt(const std::vector<TimedWaypoint> &path, double t)
         }
     return path.back();
 }
+
+/// The path's time at the point of the path nearest (x, y) (the glider's progress along it, whatever the clock).
+double progressTime(const std::vector<TimedWaypoint> &path, double x, double y)
+{
+    double best = INFINITY, tBest = path.front().t;
+    for (std::size_t k = 0; k + 1 < path.size(); ++k)
+    {
+        const TimedWaypoint &a = path[k], &b = path[k + 1];
+        const double ex = b.x - a.x, ey = b.y - a.y, l2 = ex * ex + ey * ey;
+        const double q = l2 > 0.0 ? std::clamp(((x - a.x) * ex + (y - a.y) * ey) / l2, 0.0, 1.0) : 0.0;
+        const double d = std::hypot(a.x + q * ex - x, a.y + q * ey - y);
+        if (d < best)
+        {
+            best = d;
+            tBest = a.t + q * (b.t - a.t);
+        }
+    }
+    return tBest;
+}
 }  // namespace
 
 PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<TimedWaypoint> &path,
@@ -41,7 +61,9 @@ PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<T
     const std::size_t count = sim.settings().stintCount();
     while (bearings.size() < count && t < sim.endTime())
     {
-        const TimedWaypoint aim = pathAt(path, t + D);
+        // aim one stint ahead of the glider's progress along the path (ahead of the path's clock or behind it)
+        const double tau = progressTime(path, x, y);
+        const TimedWaypoint aim = pathAt(path, tau + D);
         double dx = aim.x - x, dy = aim.y - y;
         const double len = std::hypot(dx, dy);
         double b0 = sim.bearingToGoal(x, y);
@@ -51,9 +73,16 @@ PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<T
             crabHeading(dx / len, dy / len, sim.field().velocity(x, y, sim.settings().depth, t), sim.speed(), hx, hy);
             b0 = bearingOf(hx, hy);
         }
-        auto miss = [&](double b) {
+        // the path ends within this stint: aim at the goal's radius (arriving, the earlier the better; else the
+        // closest approach), otherwise at the path's point one stint later
+        const bool last = tau + D >= path.back().t;
+        auto miss = [&](double b) -> double {
             const DiveEnd e = sim.flyStint(x, y, t, b);
-            return e.grounded ? INFINITY : std::hypot(aim.x - e.x, aim.y - e.y);
+            if (e.grounded)
+                return INFINITY;
+            if (e.reached)
+                return -1e6 * D + (e.arrivalTime - t);
+            return last ? e.closestDistance : std::hypot(aim.x - e.x, aim.y - e.y);
         };
         // golden section over b0 +- 45 degrees
         const double phi = 0.5 * (std::sqrt(5.0) - 1.0);
@@ -93,7 +122,10 @@ PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<T
     out.tracking = sim.simulate(bearings);
     const BearingOptimizerResult opt = optimiseBearings(sim, bearings, params);
     out.evaluations = opt.evaluations;
-    out.plan = opt.plan.cost <= out.tracking.cost ? opt.plan : out.tracking;
+    // the better of the two, a plan that arrives before one that does not
+    const bool optBetter = opt.plan.reached != out.tracking.reached ? opt.plan.reached
+                                                                    : opt.plan.cost <= out.tracking.cost;
+    out.plan = optBetter ? opt.plan : out.tracking;
     if (out.plan.reached)
     {
         out.stintTravelTime = out.plan.arrivalTime - path.front().t;

@@ -98,7 +98,12 @@ StintPlan fly(const StintSimulator &sim, const Next &next, std::size_t count, bo
     if (keepTrack)
         p.track.push_back({x, y, t});
     const double r = sim.settings().radius;
-    if (r > 0.0 && std::hypot(sim.goal().x - x, sim.goal().y - y) <= r)
+    if (r > 0.0)
+    {
+        p.closestDistance = std::hypot(sim.goal().x - x, sim.goal().y - y);
+        p.closestTime = t;
+    }
+    if (r > 0.0 && p.closestDistance <= r)
     {
         p.reached = true;
         p.arrivalTime = t;
@@ -113,6 +118,11 @@ StintPlan fly(const StintSimulator &sim, const Next &next, std::size_t count, bo
         y = e.y;
         t = e.t;
         p.surfacings.push_back({x, y, t});
+        if (e.closestDistance < p.closestDistance)
+        {
+            p.closestDistance = e.closestDistance;
+            p.closestTime = e.closestTime;
+        }
         if (e.reached)
         {
             p.reached = true;
@@ -151,7 +161,12 @@ double StintSimulator::cost(const StintPlan &p) const
         return p.remainingDistance + maxReach() * lost;
     if (p.reached)
         return p.arrivalTime - t0_;
-    return settings_.missionDuration + p.remainingDistance / maxReach() + lost;
+    if (!std::isfinite(p.closestDistance))  // a plan that has not flown (no radius is checked by the settings)
+        return settings_.missionDuration + p.remainingDistance / maxReach() + lost;
+    // a miss costs the time of the closest approach plus the distance left to the radius at a tenth of the speed
+    // through water: continuous where a plan starts to reach the radius, and steep enough that just missing early
+    // never beats reaching a little later
+    return p.closestTime - t0_ + std::max(0.0, p.closestDistance - settings_.radius) / (0.1 * speed_) + lost;
 }
 
 double StintSimulator::lowerBound(double x, double y, double t) const

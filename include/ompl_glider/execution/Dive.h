@@ -38,6 +38,9 @@ struct DiveEnd
     double arrivalTime{std::numeric_limits<double>::quiet_NaN()};  ///< first time within the radius
     bool grounded{false};           ///< land or a forbidden region ended the dive at (x, y, t)
     std::string why;                ///< what was met, and where (planning frame)
+    /// With a goal radius: the closest approach to the goal on the dive's steps (chords) and its time
+    double closestDistance{std::numeric_limits<double>::infinity()};
+    double closestTime{std::numeric_limits<double>::quiet_NaN()};  ///< see closestDistance
 };
 
 /// @brief Flies the unit heading (hx, hy) from (x, y) at time t until @p tEnd through @p field, checking land and

@@ -3,7 +3,8 @@
 /// @brief From any plan to what a glider flies: the heading per surfacing that follows a timed path (a lattice
 /// ZA*TVE path, a refined path, a sampling planner's path) best, and what the stint version loses against it.
 ///
-/// At each surfacing the glider aims at the point the path reaches one stint later: the current-sensitive heading
+/// At each surfacing the glider aims at the point the path reaches one stint after the glider's progress along it
+/// (the path's time at the path point nearest the glider, so that a glider ahead of the path's clock does not wait): the current-sensitive heading
 /// ([ThompsonICRA] Sec. III, crabHeading()) with the current at the fix, refined by a golden-section search over
 /// +-45 degrees around it on the flown stint (the end of the stint nearest that point). The whole bearing vector is
 /// then optimised for the earliest arrival (optimiseBearings(), [IsernObstacles] Sec. II.2).

@@ -70,6 +70,9 @@ struct StintPlan
     double remainingDistance{std::numeric_limits<double>::infinity()};  ///< goal distance at the end
     bool reached{false};       ///< within the radius of the goal before the mission ended
     double arrivalTime{std::numeric_limits<double>::quiet_NaN()};  ///< first time within the radius
+    /// With a radius: the closest approach to the goal over the stints flown, and its time
+    double closestDistance{std::numeric_limits<double>::infinity()};
+    double closestTime{std::numeric_limits<double>::quiet_NaN()};  ///< see closestDistance
     bool grounded{false};      ///< a stint met land or a forbidden region and ended there (the glider stops)
     std::string groundedWhy;   ///< what, and where
     double cost{std::numeric_limits<double>::infinity()};  ///< StintSimulator::cost() of this plan
@@ -95,7 +98,9 @@ public:
     StintPlan direct() const;
 
     /// @brief The objective value of a plan (lower is better): RemainingDistance: the final distance;
-    /// EarliestArrival: arrival - t0 when reached, else missionDuration + final distance / (V + max current).
+    /// EarliestArrival: arrival - t0 when reached, else the time of the closest approach - t0 plus the distance
+    /// then left to the radius at a tenth of V (continuous with the arrival time where a plan starts to reach
+    /// the radius, so that the optimiser can steer into it, and steep, so that a near miss does not pay).
     /// A grounded plan also pays for the time it cannot fly (max reach times the time left, or that time), so that
     /// the optimisers never prefer stopping on land.
     double cost(const StintPlan &plan) const;
