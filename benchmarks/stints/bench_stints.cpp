@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include <ompl/util/Console.h>
+
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -260,7 +262,7 @@ MissionSpec forecastMission(const Pair &p, double speedMs, const std::string &fi
 struct Stat
 {
     std::vector<double> diff, time, remaining;
-    int grounded{0};
+    int grounded{0}, better{0};  // stopped on land; pairs where the method leaves less than Init-Optim
 };
 
 double mean(const std::vector<double> &v)
@@ -304,18 +306,22 @@ void runScenario(const char *title, const std::vector<MissionSpec> &missions, do
         }
         for (const std::string &method : kMethods)
             if (rem.count(method) && rem.count("init_optim"))
+            {
                 stats[method].diff.push_back(rem[method] - rem["init_optim"]);
+                stats[method].better += rem[method] < rem["init_optim"] - 1e-9 ? 1 : 0;
+            }
         std::fprintf(stderr, "%s: pair %zu/%zu done\n", title, i + 1, missions.size());
     }
     std::printf("\n%s (%zu start/goal pairs)\n\n", title, missions.size());
     std::printf("| method | remaining distance, km: mean (std) | difference to Init-Optim, km: mean (std) | "
-                "stopped on land | computing time, s: mean (std) |\n|---|---|---|---|---|\n");
+                "pairs it beats Init-Optim | stopped on land | computing time, s: mean (std) |\n|---|---|---|---|---|---|\n");
     const char *names[] = {"Init-Optim", "Optim", "CTS-A*", "Direct to goal"};
     for (std::size_t k = 0; k < kMethods.size(); ++k)
     {
         const Stat &s = stats[kMethods[k]];
-        std::printf("| %s | %.1f (%.1f) | %.1f (%.1f) | %d | %.2f (%.2f) |\n", names[k], mean(s.remaining),
-                    stdev(s.remaining), mean(s.diff), stdev(s.diff), s.grounded, mean(s.time), stdev(s.time));
+        std::printf("| %s | %.1f (%.1f) | %.1f (%.1f) | %d | %d | %.2f (%.2f) |\n", names[k], mean(s.remaining),
+                    stdev(s.remaining), mean(s.diff), stdev(s.diff), s.better, s.grounded, mean(s.time),
+                    stdev(s.time));
     }
     std::fflush(stdout);
 }
@@ -344,7 +350,7 @@ void conversion()
             const PlannedPath p = planRoute(problem, 0.0);
             loss.push_back(p.stints ? p.stints->loss : INFINITY);
             count.push_back(p.stints ? p.stints->plan.bearings.size() : 0);
-            secs.push_back(p.postprocessSeconds);
+            secs.push_back(p.stints ? p.stints->seconds : NAN);
         }
         double worst = -INFINITY;
         for (double l : loss)
@@ -384,6 +390,7 @@ void drawMap(const std::string &file, int index, int pairs, unsigned seed)
 
 int main(int argc, char **argv)
 {
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);  // one line per solve would drown the tables
     int pairs = 20, mapPair = 0;
     unsigned seed = 14;
     std::string scenario = "all", dir = ".", mapFile;

@@ -41,9 +41,6 @@ void crabHeading(double dx, double dy, Velocity c, double speed, double &hx, dou
     hy = a * dy + s * ny;
 }
 
-namespace
-{
-/// The position on the plan at time t (linear between waypoints; the ends outside the plan's times).
 TimedWaypoint planAt(const std::vector<TimedWaypoint> &plan, double t)
 {
     if (t <= plan.front().t)
@@ -58,6 +55,8 @@ TimedWaypoint planAt(const std::vector<TimedWaypoint> &plan, double t)
     return plan.back();
 }
 
+namespace
+{
 /// The end of the plan's segment active at time t (the first waypoint planned after t; the goal after the plan).
 TimedWaypoint activeWaypoint(const std::vector<TimedWaypoint> &plan, double t)
 {

@@ -171,6 +171,12 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         r.fail(root["planner"]["name"], "planner.name",
                "planner '" + m.planner.name +
                    "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
+    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints && m.departure.window &&
+        m.stints.objective == "remaining_distance")
+        r.fail(root["departure"]["window"], "departure.window",
+               "the departure window is searched for the earliest arrival; the stint planner '" + m.planner.name +
+                   "' with the remaining_distance objective has none: give departure.time, or stints.objective: "
+                   "earliest_arrival with a radius");
     if (root["outputs"])
         readOutputs(r, root["outputs"], m);
     else

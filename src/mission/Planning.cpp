@@ -379,7 +379,11 @@ PlannedPath planRoute(const MissionProblem &problem, double departure, const Pla
     r.pathLength = pathLength(r.path);
     r.pathChecked = path.check();
     if (m.stints.set)
+    {
+        const auto tS = std::chrono::steady_clock::now();
         r.stints = convertToStints(problem, r);
+        r.stints->seconds = secondsSince(tS);
+    }
     return r;
 }
 

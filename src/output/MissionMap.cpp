@@ -134,10 +134,9 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
         // what the glider flies: the stint track, and the surfacings as markers
         const StintOutcome &st = *r.plan.stints;
         char label[200];
-        std::snprintf(label, sizeof label, "%s: %zu stints of %s, remaining %s%s", 
+        std::snprintf(label, sizeof label, "%s: %zu stints, %s left%s",
                       st.converted ? "as stints" : r.plan.planner.c_str(), st.plan.bearings.size(),
-                      fmt(st.duration).c_str(), length(r, st.plan.remainingDistance).c_str(),
-                      st.plan.grounded ? " (stopped on land)" : "");
+                      length(r, st.plan.remainingDistance).c_str(), st.plan.grounded ? " (on land)" : "");
         map.addPath(MapRenderer::stintTrackStyle(label, st.plan.track, st.converted ? 2 : 0));
         MapPath fixes = MapRenderer::rawPathStyle("surfacings", st.plan.surfacings);
         fixes.width = 0.6;

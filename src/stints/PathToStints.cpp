@@ -11,20 +11,6 @@ namespace ompl_glider
 {
 namespace
 {
-TimedWaypoint pathAt(const std::vector<TimedWaypoint> &path, double t)
-{
-    if (t <= path.front().t)
-        return path.front();
-    for (std::size_t k = 0; k + 1 < path.size(); ++k)
-        if (t <= path[k + 1].t)
-        {
-            const TimedWaypoint &a = path[k], &b = path[k + 1];
-            const double s = b.t > a.t ? (t - a.t) / (b.t - a.t) : 1.0;
-            return {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), t};
-        }
-    return path.back();
-}
-
 /// The path's time at the point of the path nearest (x, y) (the glider's progress along it, whatever the clock).
 double progressTime(const std::vector<TimedWaypoint> &path, double x, double y)
 {
@@ -63,7 +49,7 @@ PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<T
     {
         // aim one stint ahead of the glider's progress along the path (ahead of the path's clock or behind it)
         const double tau = progressTime(path, x, y);
-        const TimedWaypoint aim = pathAt(path, tau + D);
+        const TimedWaypoint aim = planAt(path, tau + D);
         double dx = aim.x - x, dy = aim.y - y;
         const double len = std::hypot(dx, dy);
         double b0 = sim.bearingToGoal(x, y);

@@ -47,6 +47,7 @@ struct StintOutcome
     double pathTravelTime{std::numeric_limits<double>::infinity()};
     double stintTravelTime{std::numeric_limits<double>::infinity()};  ///< see pathTravelTime
     double loss{std::numeric_limits<double>::infinity()};             ///< see pathTravelTime
+    double seconds{0.0};  ///< wall time of the conversion (the planning time of a stint planner is planningSeconds)
 };
 
 /// @brief One planned path: what planRoute() returns.
