@@ -370,16 +370,16 @@ void drawMap(const std::string &file, int index, int pairs, unsigned seed)
     const MissionProblem problem(first);
     MissionResult r = runMission(problem);
     MapRenderer map = missionMap(r, problem);
-    const char *names[] = {"Optim", "CTS-A*", "direct to goal"};
+    const char *names[] = {"optim", "cts_astar", "direct"};
     for (std::size_t k = 1; k < kMethods.size(); ++k)
     {
         MissionSpec m = base;
         m.planner.name = kMethods[k];
         const PlannedPath q = planRoute(MissionProblem(m), 0.0);
         char label[160];
-        std::snprintf(label, sizeof label, "%s: remaining %.1f km%s", names[k - 1],
-                      q.stints->plan.remainingDistance * kLengthUnit / 1000.0,
-                      q.stints->plan.grounded ? " (stopped on land)" : "");
+        std::snprintf(label, sizeof label, "%s: %zu stints, %.1f km left%s", names[k - 1],
+                      q.stints->plan.bearings.size(), q.stints->plan.remainingDistance * kLengthUnit / 1000.0,
+                      q.stints->plan.grounded ? ", land" : "");
         map.addPath(MapRenderer::stintTrackStyle(label, q.stints->plan.track, static_cast<int>(k)));
     }
     map.writePng(file);
