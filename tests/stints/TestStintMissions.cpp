@@ -3,7 +3,9 @@
 // on the jet problems of test_planner_vs_optimum.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -11,6 +13,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
+#include "ompl_glider/output/OutputWriter.h"
 #include "ompl_glider/output/RouteFiles.h"
 #include "ompl_glider/output/SummaryJson.h"
 
@@ -161,4 +164,36 @@ TEST(StintMissions, LatticePathsFlownAsOneHourStintsLoseUnderTwoPercent)
                     sx, sy, gx, gy, p.travelTime, s.stintTravelTime, s.plan.bearings.size(), 100.0 * s.loss,
                     opt.travelTime);
     }
+}
+
+TEST(StintMissions, TheExampleWritesItsHeadingTableSummaryAndMap)
+{
+    MissionSpec spec = loadMission(std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/stints_jet.yaml");
+    const std::string dir = ::testing::TempDir() + "/stints_example";
+    spec.outputs.directory = dir;
+    const MissionProblem problem(spec);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved);
+    ASSERT_TRUE(r.plan.stints.has_value());
+    const std::vector<std::string> written = writeOutputs(r, problem);
+    auto read = [&](const std::string &name) {
+        std::ifstream in(dir + "/" + name);
+        std::stringstream s;
+        s << in.rdbuf();
+        return s.str();
+    };
+    const std::string csv = read("stints.csv");
+    EXPECT_EQ(static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')), r.plan.stints->plan.bearings.size() + 1);
+    EXPECT_NE(csv.find("2026-04-01T08:00:00Z"), std::string::npos);  // the second surfacing, 8 h after the epoch
+    const nlohmann::json j = nlohmann::json::parse(read("summary.json"));
+    EXPECT_DOUBLE_EQ(j["remaining_distance"].get<double>(), r.plan.stints->plan.remainingDistance);
+    EXPECT_EQ(j["bearings"].size(), 12u);
+    EXPECT_FALSE(read("map.png").empty());
+    // without a stints section there is no heading table, even when asked for
+    MissionSpec plain = defaultGulfStreamMission();
+    plain.outputs.files = {"summary", "stints"};
+    const MissionProblem pp(plain);
+    const MissionResult pr = runMission(pp);
+    for (const OutputFile &f : outputFiles(pr, pp))
+        EXPECT_NE(f.name, "stints.csv");
 }
