@@ -14,6 +14,7 @@ PACKAGES=(
   libbenchmark-dev
   libyaml-cpp-dev
   libproj-dev
+  libnlopt-cxx-dev
   libcairo2-dev
   libcli11-dev nlohmann-json3-dev
   libgdal-dev

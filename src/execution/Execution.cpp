@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/execution/Dive.h"
 
 namespace ompl_glider
 {
@@ -56,9 +56,6 @@ void crabHeading(double dx, double dy, Velocity c, double speed, double &hx, dou
     hy = a * dy + s * ny;
 }
 
-namespace
-{
-/// The position on the plan at time t (linear between waypoints; the ends outside the plan's times).
 TimedWaypoint planAt(const std::vector<TimedWaypoint> &plan, double t)
 {
     if (t <= plan.front().t)
@@ -73,6 +70,8 @@ TimedWaypoint planAt(const std::vector<TimedWaypoint> &plan, double t)
     return plan.back();
 }
 
+namespace
+{
 /// The end of the plan's segment active at time t (the first waypoint planned after t; the goal after the plan).
 TimedWaypoint activeWaypoint(const std::vector<TimedWaypoint> &plan, double t)
 {
@@ -82,12 +81,6 @@ TimedWaypoint activeWaypoint(const std::vector<TimedWaypoint> &plan, double t)
     return plan.back();
 }
 
-std::string where(double x, double y, double t)
-{
-    std::ostringstream os;
-    os << "(" << x << ", " << y << ") at t = " << t;
-    return os.str();
-}
 }  // namespace
 
 FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const CurrentField &forecast,
@@ -151,57 +144,27 @@ FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const C
         }
         r.headings.push_back(std::atan2(hy, hx));
         const double surface = std::min(t + o.surfacingInterval, end);
-        // the dive: RK4 with the heading held
-        auto rate = [&](double px, double py, double pt) {
-            const Velocity c = truth.velocity(px, py, o.depth, pt);
-            return Velocity{speed * hx + c.u, speed * hy + c.v};
-        };
-        while (t < surface - 1e-12 * std::max(1.0, std::abs(surface)))
+        // the dive: the heading held (the one integrator of a dive, Dive.h)
+        DiveSettings ds;
+        ds.speed = speed;
+        ds.step = o.step;
+        ds.depth = o.depth;
+        ds.radius = r.reached ? 0.0 : o.radius;
+        ds.goalX = goal.x;
+        ds.goalY = goal.y;
+        const DiveEnd dive = flyHeading(x, y, t, hx, hy, surface, truth, forbidden, ds, &r.track);
+        x = dive.x;
+        y = dive.y;
+        t = dive.t;
+        if (dive.grounded)
         {
-            const double h = std::min(o.step, surface - t);
-            const Velocity k1 = rate(x, y, t);
-            const Velocity k2 = rate(x + 0.5 * h * k1.u, y + 0.5 * h * k1.v, t + 0.5 * h);
-            const Velocity k3 = rate(x + 0.5 * h * k2.u, y + 0.5 * h * k2.v, t + 0.5 * h);
-            const Velocity k4 = rate(x + h * k3.u, y + h * k3.v, t + h);
-            const double nx = x + h / 6.0 * (k1.u + 2.0 * k2.u + 2.0 * k3.u + k4.u);
-            const double ny = y + h / 6.0 * (k1.v + 2.0 * k2.v + 2.0 * k3.v + k4.v);
-            const double nt = t + h;
-            if (!std::isfinite(nx) || !std::isfinite(ny) || !truth.segmentInWater(x, y, nx, ny, o.depth))
-            {
-                r.grounded = true;
-                r.groundedWhy = "land of the truth field between " + where(x, y, t) + " and " + where(nx, ny, nt);
-                break;
-            }
-            if (forbidden && !forbidden->legFree(x, y, t, nx, ny, nt))
-            {
-                r.grounded = true;
-                r.groundedWhy = forbidden->whyLegBlocked(x, y, t, nx, ny, nt) + " between " + where(x, y, t) +
-                                " and " + where(nx, ny, nt);
-                break;
-            }
-            // the goal reached within this step: the first point of the step within radius (its chord)
-            if (o.radius > 0.0 && !r.reached)
-            {
-                const double ex = nx - x, ey = ny - y, fx = x - goal.x, fy = y - goal.y;
-                const double a = ex * ex + ey * ey, b = 2.0 * (ex * fx + ey * fy),
-                             c = fx * fx + fy * fy - o.radius * o.radius;
-                const double disc = b * b - 4.0 * a * c;
-                if (a > 0.0 && disc >= 0.0)
-                {
-                    const double s = (-b - std::sqrt(disc)) / (2.0 * a);
-                    if (s >= 0.0 && s <= 1.0)
-                    {
-                        r.reached = true;
-                        r.arrivalTime = t + s * h;
-                    }
-                }
-            }
-            x = nx;
-            y = ny;
-            t = nt;
-            r.track.push_back({x, y, t});
-            if (r.reached)
-                break;
+            r.grounded = true;
+            r.groundedWhy = dive.why;
+        }
+        if (dive.reached)
+        {
+            r.reached = true;
+            r.arrivalTime = dive.arrivalTime;
         }
         r.fixes.push_back({x, y, t});
     }

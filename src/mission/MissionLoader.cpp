@@ -9,6 +9,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/planners/PlannerRegistry.h"
 
 namespace ompl_glider
 {
@@ -131,7 +132,7 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         throw Error(r.file() + ": the mission file is empty");
     r.checkMap(root, "",
                {"name", "units", "epoch", "projection", "current", "region", "start", "goal", "departure", "vehicle",
-                "travel_time", "dive_profile", "forbidden", "planner", "outputs", "speeds", "execution"});
+                "travel_time", "dive_profile", "forbidden", "planner", "stints", "outputs", "speeds", "execution"});
     readHeader(r, root, m);
     if (!root["current"])
         r.fail(root, "current", "missing: the current source (type: meandering_jet | uniform | ... | netcdf)");
@@ -164,6 +165,18 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         readForbidden(r, root["forbidden"], m);
     if (root["planner"])
         readPlanner(r, root["planner"], m);
+    if (root["stints"])
+        readStints(r, root["stints"], m);
+    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints && !m.stints.set)
+        r.fail(root["planner"]["name"], "planner.name",
+               "planner '" + m.planner.name +
+                   "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
+    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints && m.departure.window &&
+        m.stints.objective == "remaining_distance")
+        r.fail(root["departure"]["window"], "departure.window",
+               "the departure window is searched for the earliest arrival; the stint planner '" + m.planner.name +
+                   "' with the remaining_distance objective has none: give departure.time, or stints.objective: "
+                   "earliest_arrival with a radius");
     if (root["outputs"])
         readOutputs(r, root["outputs"], m);
     else

@@ -87,7 +87,8 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
             o.departure = text;
         }
         if (m.planner.horizon > 0.0)
-            o.horizon = m.planner.horizon + (m.departure.window ? m.departure.end - m.departure.begin : 0.0);
+            o.horizon = std::max(m.planner.horizon, m.stints.set ? m.stints.missionDuration : 0.0) +
+                        (m.departure.window ? m.departure.end - m.departure.begin : 0.0);
     }
     o.velocityUnits = c.velocityUnits;
     o.timeUnits = c.timeUnits;

@@ -18,6 +18,8 @@
 #include "ompl_glider/planners/WaypointRefiner.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/reference/ZermeloReference.h"
+#include "ompl_glider/stints/PathToStints.h"
+#include "ompl_glider/stints/StintPlanner.h"
 
 namespace ompl_glider
 {
@@ -119,11 +121,20 @@ RefinerParams refinerParams(const MissionSpec &m)
 }
 
 /// The configured planner of the mission on the setup's space information.
-ompl::base::PlannerPtr makePlanner(const MissionSpec &m, const ompl::base::SpaceInformationPtr &si,
-                                   const std::shared_ptr<const GliderContext> &ctx, double grid, int sectors)
+ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::base::SpaceInformationPtr &si,
+                                   const std::shared_ptr<const GliderContext> &ctx, double grid, int sectors,
+                                   double departure)
 {
+    const MissionSpec &m = problem.getSpec();
     const PlannerEntry &entry = plannerEntry(m.planner.name);
     ompl::base::PlannerPtr planner = entry.make(si, ctx);
+    if (auto st = std::dynamic_pointer_cast<StintPlanner>(planner))
+    {
+        if (!m.stints.set)
+            throw Error(m.place("planner.name") + ": planner '" + entry.name +
+                        "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
+        st->setStintSettings(stintSettings(problem, departure));
+    }
     if (auto z = std::dynamic_pointer_cast<ZAStarTVE>(planner))
     {
         z->setGridSize(grid);
@@ -206,6 +217,64 @@ void checkLatticeSize(const MissionSpec &m, const GliderProblem &gp, double grid
 }
 }  // namespace
 
+StintSettings stintSettings(const MissionProblem &problem, double departure)
+{
+    const MissionSpec &m = problem.getSpec();
+    StintSettings s;
+    s.duration = m.stints.duration;
+    s.missionDuration = m.stints.missionDuration;
+    s.bearingStep = m.stints.bearingStep;
+    s.objective = m.stints.objective == "earliest_arrival" ? StintObjective::EarliestArrival
+                                                           : StintObjective::RemainingDistance;
+    s.radius = m.stints.radius;
+    s.step = m.stints.step;
+    s.depth = m.vehicle.depth;
+    const double end = problem.getField()->timeEnd();
+    if (std::isfinite(end) && departure + s.missionDuration > end * (1.0 + 1e-12))
+        throw Error(m.place("stints.mission_duration") + ": the mission would end at t = " +
+                    std::to_string(departure + s.missionDuration) + ", after the forecast (it ends at t = " +
+                    std::to_string(end) + "): shorten it, depart earlier, or hold the last forecast time "
+                    "(current.horizon: hold_last)");
+    return s;
+}
+
+namespace
+{
+/// The final path of a (non-stint) planner flown as stints: the heading per surfacing that follows it best and
+/// what that loses (stintsFromPath()); earliest arrival within the section's radius (0: 1e-4 of the start-goal
+/// distance), over a mission long enough to arrive (1.5 times the path's time plus one stint, within the forecast).
+StintOutcome convertToStints(const MissionProblem &problem, const PlannedPath &r)
+{
+    const MissionSpec &m = problem.getSpec();
+    StintSettings s = stintSettings(problem, r.departure);
+    s.objective = StintObjective::EarliestArrival;
+    if (!(s.radius > 0.0))
+        s.radius = std::max(1e-4 * r.straightLineLength, 1e-9);
+    s.missionDuration = 1.5 * r.travelTime + s.duration;
+    const double end = problem.getField()->timeEnd();
+    if (std::isfinite(end))
+        s.missionDuration = std::min(s.missionDuration, end - r.departure);
+    Region box = problem.getBox();
+    box.tMin = r.departure;
+    box.tMax = r.departure + s.missionDuration;
+    const Point2 start{r.path.front().x, r.path.front().y}, goal = problem.getGoal();
+    const StintSimulator sim(problem.getField(), problem.getEnvironment(), r.speed, problem.getField()->maxSpeed(box),
+                             start, r.departure, goal, s);
+    const PathToStintsResult c = stintsFromPath(sim, r.path);
+    StintOutcome o;
+    o.plan = c.plan;
+    o.converted = true;
+    o.duration = s.duration;
+    o.missionDuration = s.missionDuration;
+    o.objective = stintObjectiveName(s.objective);
+    o.radius = s.radius;
+    o.pathTravelTime = c.pathTravelTime;
+    o.stintTravelTime = c.stintTravelTime;
+    o.loss = c.loss;
+    (void)m;
+    return o;
+}
+}  // namespace
 
 namespace
 {
@@ -235,12 +304,14 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     }
     std::shared_ptr<GliderContext> ctx;
     const ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(gp, &ctx);
-    const ompl::base::PlannerPtr planner = makePlanner(m, ss->getSpaceInformation(), ctx, grid, sectors);
+    const ompl::base::PlannerPtr planner = makePlanner(problem, ss->getSpaceInformation(), ctx, grid, sectors, departure);
     ss->setPlanner(planner);
     r.straightLineTime = legTravelTime(*ctx, s.x, s.y, g.x, g.y, departure);
 
     const bool lattice = plannerEntry(m.planner.name).lattice;
-    const double limit = m.planner.timeLimit > 0 ? m.planner.timeLimit : (lattice ? 0.0 : kDefaultSamplingTimeLimit);
+    const bool stints = plannerEntry(m.planner.name).stints;  // its own caps bound the work, as the lattice's
+    const double limit =
+        m.planner.timeLimit > 0 ? m.planner.timeLimit : (lattice || stints ? 0.0 : kDefaultSamplingTimeLimit);
     const std::uint64_t cfc0 = ctx->travel->costFunctionCalls(), cmc0 = ctx->field->callCount();
     const auto tA = std::chrono::steady_clock::now();
     const ompl::base::PlannerStatus status =
@@ -252,6 +323,24 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     r.currentModelCalls = ctx->field->callCount() - cmc0;
     if (auto z = std::dynamic_pointer_cast<ZAStarTVE>(planner))
         r.expandedVertices = z->getExpandedVertices();
+    if (auto st = std::dynamic_pointer_cast<StintPlanner>(planner))
+        if (ss->haveSolutionPath() && !st->lastPlan().surfacings.empty())
+        {
+            // a stint plan is flown, not smoothed: its surfacings are the path
+            StintOutcome o;
+            o.plan = st->lastPlan();
+            o.duration = m.stints.duration;
+            o.missionDuration = m.stints.missionDuration;
+            o.objective = m.stints.objective;
+            o.radius = m.stints.radius;
+            r.solved = true;
+            r.raw = r.smoothed = r.path = o.plan.surfacings;
+            r.rawTravelTime = r.smoothedTravelTime = r.travelTime = r.path.back().t - departure;
+            r.rawPathLength = r.pathLength = pathLength(o.plan.track);
+            r.pathChecked = !o.plan.grounded;
+            r.stints = std::move(o);
+            return r;
+        }
     r.solved = ss->haveExactSolutionPath();
     if (!r.solved)
     {
@@ -295,6 +384,12 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     r.travelTime = r.path.back().t - departure;
     r.pathLength = pathLength(r.path);
     r.pathChecked = path.check();
+    if (m.stints.set)
+    {
+        const auto tS = std::chrono::steady_clock::now();
+        r.stints = convertToStints(problem, r);
+        r.stints->seconds = secondsSince(tS);
+    }
     return r;
 }
 
@@ -466,7 +561,8 @@ std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep
 PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath &plan)
 {
     PilotWaypoints out;
-    const auto dive = problem.diveProfiles(plan.speed);
+    // a stint plan's legs between surfacings are not straight: its times are the flown ones
+    const auto dive = plan.stints && !plan.stints->converted ? nullptr : problem.diveProfiles(plan.speed);
     double t = plan.departure;
     for (std::size_t i = 0; i < plan.path.size(); ++i)
     {
@@ -534,7 +630,7 @@ void checkPlanner(const MissionProblem &problem, double departure)
         return;
     std::shared_ptr<GliderContext> ctx;
     const ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(gp, &ctx);
-    makePlanner(m, ss->getSpaceInformation(), ctx, m.planner.gridSize, m.planner.sectors);
+    makePlanner(problem, ss->getSpaceInformation(), ctx, m.planner.gridSize, m.planner.sectors, departure);
     refinerParams(m);
 }
 

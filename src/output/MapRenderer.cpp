@@ -348,6 +348,20 @@ MapPath MapRenderer::rawPathStyle(std::string label, std::vector<TimedWaypoint> 
     return p;
 }
 
+MapPath MapRenderer::stintTrackStyle(std::string label, std::vector<TimedWaypoint> track, int index)
+{
+    static const Rgba palette[] = {{0.85, 0.10, 0.10, 1.0}, {0.10, 0.45, 0.95, 1.0}, {0.95, 0.55, 0.05, 1.0},
+                                   {0.45, 0.20, 0.70, 1.0}, {0.10, 0.60, 0.25, 1.0}, {0.35, 0.35, 0.35, 1.0}};
+    MapPath p;
+    p.label = std::move(label);
+    p.waypoints = std::move(track);
+    p.colour = palette[((index % 6) + 6) % 6];
+    p.width = 2.0;
+    p.dashed = false;
+    p.waypointMarkers = false;
+    return p;
+}
+
 MapPath MapRenderer::smoothedPathStyle(std::string label, std::vector<TimedWaypoint> waypoints)
 {
     MapPath p;

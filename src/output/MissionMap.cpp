@@ -201,8 +201,21 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
     map.setField(problem.getField(), tMap, m.vehicle.depth);
     for (const MissionPolygon &p : problem.getPolygons())
         map.addPolygon(mapPolygon(p));
-    if (r.plan.solved)
+    if (r.plan.solved && !(r.plan.stints && !r.plan.stints->converted))
         addPaths(map, r);
+    if (r.plan.solved && r.plan.stints)
+    {
+        // what the glider flies: the stint track, and the surfacings as markers
+        const StintOutcome &st = *r.plan.stints;
+        char label[200];
+        std::snprintf(label, sizeof label, "%s: %zu stints, %s left%s",
+                      st.converted ? "as stints" : r.plan.planner.c_str(), st.plan.bearings.size(),
+                      length(r, st.plan.remainingDistance).c_str(), st.plan.grounded ? " (on land)" : "");
+        map.addPath(MapRenderer::stintTrackStyle(label, st.plan.track, st.converted ? 2 : 0));
+        MapPath fixes = MapRenderer::rawPathStyle("surfacings", st.plan.surfacings);
+        fixes.width = 0.6;
+        map.addPath(fixes);
+    }
     if (r.optimum && r.optimum->found)
     {
         MapPath opt;

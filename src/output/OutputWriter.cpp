@@ -43,6 +43,13 @@ std::vector<OutputFile> formatFiles(const std::string &format, const MissionResu
         return {{"path.csv", [res](const std::string &p) { writeText(p, pathCsv(*res)); }}};
     if (format == "geojson")
         return {{"path.geojson", [res](const std::string &p) { writeText(p, routeGeoJson(*res)); }}};
+    if (format == "stints")
+    {
+        if (!r.plan.stints)
+            return {};
+        const MissionProblem *prob = &problem;
+        return {{"stints.csv", [res, prob](const std::string &p) { writeText(p, stintsCsv(*res, *prob)); }}};
+    }
     if (format == "goto")
     {
         if (!problem.isGeographic())
@@ -157,6 +164,8 @@ const std::vector<OutputFormat> &outputFormats()
         {"path", "path.csv", "the final path: t,x,y,lon,lat", true},
         {"geojson", "path.geojson", "the path and its waypoints as GeoJSON", true},
         {"goto", "goto_lNN.ma", "Slocum goto list (geographic missions)", true},
+        {"stints", "stints.csv", "heading per surfacing: time, position, heading, expected drift (missions with stints)",
+         true},
         {"map", "map.svg, map.png", "map of the current, regions and paths", false},
         {"execution", "execution.csv, execution_tracks.csv, execution.svg/png, model_difference.svg/png",
          "the plan flown in the truth per strategy, and the box plot of a batch (written whenever the mission has "

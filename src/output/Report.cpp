@@ -106,6 +106,22 @@ void printReport(std::ostream &out, const MissionResult &r)
         else
             out << "Optimal control:    no extremal through the goal found\n";
     }
+    if (p.solved && p.stints)
+    {
+        // constant-bearing stints ([IsernObstacles]): what the glider flies
+        const StintOutcome &st = *p.stints;
+        out << format("Stints:             %zu of %g (%s), remaining distance %.4f%s%s\n", st.plan.bearings.size(),
+                      st.duration, st.converted ? "the path converted" : st.objective.c_str(),
+                      st.plan.remainingDistance, st.plan.reached ? ", goal reached" : "",
+                      st.plan.grounded ? ", stopped on land" : "");
+        if (st.converted)
+            out << format("As stints:          arrival after %.4f against the path's %.4f (%+.2f%%)\n",
+                          st.stintTravelTime, st.pathTravelTime, 100.0 * st.loss);
+        std::string b;
+        for (double x : st.plan.bearings)
+            b += (b.empty() ? "" : " ") + format("%.1f", x);
+        out << "Bearings (deg):     " << b << "\n";
+    }
     if (p.solved)
         printWaypoints(out, r);
     if (!r.speedSweep.empty())

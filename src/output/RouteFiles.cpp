@@ -192,4 +192,30 @@ GotoList gotoList(const MissionResult &r)
         g.waypoints.push_back({r.waypoints[i].lonLat.lon, r.waypoints[i].lonLat.lat});
     return g;
 }
+std::string stintsCsv(const MissionResult &r, const MissionProblem &problem)
+{
+    std::string s = "stint,time,time_s,time_iso,x,y,lon,lat,heading_deg,end_time,end_x,end_y,drift_x,drift_y,drift_speed\n";
+    if (!r.plan.stints)
+        return s;
+    const StintPlan &p = r.plan.stints->plan;
+    for (std::size_t k = 0; k < p.bearings.size() && k + 1 < p.surfacings.size(); ++k)
+    {
+        const TimedWaypoint &a = p.surfacings[k], &b = p.surfacings[k + 1];
+        const Point2 h = bearingVector(p.bearings[k]);
+        const double dt = b.t - a.t;
+        const double dx = b.x - a.x - r.plan.speed * dt * h.x, dy = b.y - a.y - r.plan.speed * dt * h.y;
+        s += std::to_string(k) + "," + csvNum(a.t) + "," + csvNum(a.t * r.spec.timeUnitSeconds) + "," +
+             problem.isoTime(a.t) + "," + csvNum(a.x) + "," + csvNum(a.y) + ",";
+        if (problem.isGeographic())
+        {
+            const LonLat g = problem.toGeographic({a.x, a.y});
+            s += csvNum(g.lon) + "," + csvNum(g.lat);
+        }
+        else
+            s += ",";
+        s += "," + csvNum(p.bearings[k]) + "," + csvNum(b.t) + "," + csvNum(b.x) + "," + csvNum(b.y) + "," +
+             csvNum(dx) + "," + csvNum(dy) + "," + csvNum(dt > 0.0 ? std::hypot(dx, dy) / dt : 0.0) + "\n";
+    }
+    return s;
+}
 }  // namespace ompl_glider

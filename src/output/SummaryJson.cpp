@@ -169,6 +169,26 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["expanded_vertices"] = p.expandedVertices;
     j["wall_time_s"] = {{"planning", p.planningSeconds}, {"postprocess", p.postprocessSeconds}, {"total", r.wallSeconds}};
     j["path_checked"] = p.pathChecked;
+    // constant-bearing stints ([IsernObstacles]): null without a stints section
+    j["remaining_distance"] = p.stints ? jnum(p.stints->plan.remainingDistance) : json(nullptr);
+    j["bearings"] = p.stints ? json(p.stints->plan.bearings) : json(nullptr);
+    if (p.stints)
+    {
+        const StintOutcome &s = *p.stints;
+        j["stints"] = {{"converted", s.converted},
+                       {"duration", s.duration},
+                       {"mission_duration", s.missionDuration},
+                       {"objective", s.objective},
+                       {"radius", s.radius},
+                       {"count", s.plan.bearings.size()},
+                       {"reached", s.plan.reached},
+                       {"arrival_time", jnum(s.plan.arrivalTime)},
+                       {"grounded", s.plan.grounded},
+                       {"grounded_why", jtext(s.plan.groundedWhy)},
+                       {"path_travel_time", jnum(s.pathTravelTime)},
+                       {"stint_travel_time", jnum(s.stintTravelTime)},
+                       {"loss", jnum(s.loss)}};
+    }
     if (r.optimum)
         j["optimal_control"] = {{"found", r.optimum->found},
                                 {"travel_time", jnum(r.optimum->travelTime)},

@@ -16,6 +16,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
+#include "ompl_glider/stints/StintPlanner.h"
 
 namespace ompl_glider
 {
@@ -52,6 +53,18 @@ PlannerEntry sampling(const std::string &name, std::vector<std::string> aliases,
     };
     return e;
 }
+PlannerEntry stint(StintMethod method, std::vector<std::string> aliases, const std::string &what)
+{
+    PlannerEntry e;
+    e.name = stintMethodName(method);
+    e.aliases = std::move(aliases);
+    e.description = what;
+    e.stints = true;
+    e.make = [method](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &ctx) {
+        return std::make_shared<StintPlanner>(si, ctx, method);
+    };
+    return e;
+}
 }  // namespace
 
 const std::vector<PlannerEntry> &plannerRegistry()
@@ -72,6 +85,10 @@ const std::vector<PlannerEntry> &plannerRegistry()
         sampling<og::LBTRRT>("LBTRRT", {}, "OMPL lower-bound tree RRT"),
         sampling<og::BITstar>("BITstar", {"BIT*"}, "OMPL BIT*"),
         sampling<og::SST>("SST", {}, "OMPL stable sparse RRT"),
+        stint(StintMethod::InitOptim, {"Init-Optim", "initoptim"}, "stints: bearings optimised from CTS-A*'s (needs a stints section)"),
+        stint(StintMethod::Optim, {"Optim"}, "stints: bearings optimised from the direct bearings"),
+        stint(StintMethod::CtsAStar, {"CTS-A*", "ctsastar"}, "stints: A* over a bearing rose per stint"),
+        stint(StintMethod::Direct, {"direct_to_goal"}, "stints: the bearing to the goal at every surfacing"),
     };
     return entries;
 }

@@ -143,6 +143,32 @@ yaml_case("planner-grid-tiny", mission("planner: {name: zastartve, grid_size: 1e
 yaml_case("planner-time-limit-huge", mission("planner: {name: zastartve, time_limit: 1e10}"), "planner.time_limit")
 yaml_case("planner-zermelo-steps-huge", mission("planner: {name: zastartve, parameters: {zermelo_steps: 1e12}}"),
           "planner.parameters.zermelo_steps")
+# constant-bearing stints (issue 14)
+yaml_case("stints-planner-without-section", mission("planner: {name: init_optim}"), "m.yaml:7: field 'planner.name'")
+yaml_case("stints-duration-zero", mission("stints: {duration: 0, mission_duration: 10}"),
+          "m.yaml:8: field 'stints.duration'")
+yaml_case("stints-duration-text", mission("stints: {duration: one, mission_duration: 10}"), "stints.duration")
+yaml_case("stints-mission-missing", mission("stints: {duration: 1}"), "m.yaml:8: field 'stints.mission_duration'")
+yaml_case("stints-mission-negative", mission("stints: {duration: 1, mission_duration: -4}"),
+          "stints.mission_duration")
+yaml_case("stints-too-many", mission("stints: {duration: 1e-9, mission_duration: 10}"), "stints.mission_duration")
+yaml_case("stints-bearing-step-270", mission("stints: {duration: 1, mission_duration: 10, bearing_step: 270}"),
+          "m.yaml:8: field 'stints.bearing_step'")
+yaml_case("stints-bearing-step-zero", mission("stints: {duration: 1, mission_duration: 10, bearing_step: 0}"),
+          "stints.bearing_step")
+yaml_case("stints-objective-bad", mission("stints: {duration: 1, mission_duration: 10, objective: fastest}"),
+          "stints.objective")
+yaml_case("stints-earliest-without-radius",
+          mission("stints: {duration: 1, mission_duration: 10, objective: earliest_arrival}"), "stints.radius")
+yaml_case("stints-radius-negative", mission("stints: {duration: 1, mission_duration: 10, radius: -1}"),
+          "stints.radius")
+yaml_case("stints-step-tiny", mission("stints: {duration: 1, mission_duration: 10, step: 1e-9}"), "stints.step")
+yaml_case("stints-unknown-field", mission("stints: {duration: 1, mission_duration: 10, heading: 4}"),
+          "stints.heading")
+yaml_case("stints-not-a-map", mission("stints: 8"), "stints")
+yaml_case("stints-window-remaining-distance",
+          mission("planner: {name: optim}", "departure: {window: {begin: 0, end: 5}}",
+                  "stints: {duration: 1, mission_duration: 10}"), "departure.window")
 yaml_case("planner-refiner-evals-huge",
           mission("planner: {name: zastartve, parameters: {refiner_max_evaluations: 5e9}}"),
           "planner.parameters.refiner_max_evaluations")

@@ -95,6 +95,10 @@ FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const C
                    const CurrentField &truth, const Environment *forbidden, ControlStrategy strategy,
                    const ExecutionOptions &options);
 
+/// @brief The position on a timed plan (or track) at time t: linear between its points, its first point before
+/// it and its last point after it. The plan must not be empty.
+TimedWaypoint planAt(const std::vector<TimedWaypoint> &plan, double t);
+
 /// @brief The unit heading (hx, hy) that, added at `speed` to the current c, makes good the unit direction (dx, dy):
 /// the cross-current part of c is cancelled and the rest of the speed goes along d. Where the cross current is
 /// stronger than the speed, the heading points straight against it. [ThompsonICRA] Sec. III (current-sensitive control).

@@ -201,6 +201,20 @@ struct PlannerSpec
     double quantile{0.9};  ///< objective quantile: in (0, 1]
 };
 
+/// @brief Constant-bearing stints ([IsernObstacles]): the settings of the stint planners (init_optim, optim,
+/// cts_astar, direct), and, with any other planner, the conversion of its path to stints (a heading per surfacing).
+/// Times in field units.
+struct StintSpec
+{
+    bool set{false};               ///< a `stints` section was given
+    double duration{0.0};          ///< time between surfacings (required)
+    double missionDuration{0.0};   ///< the mission ends this long after departure (required)
+    double bearingStep{20.0};      ///< degrees between the bearings of the CTS-A* rose
+    std::string objective{"remaining_distance"};  ///< remaining_distance | earliest_arrival
+    double radius{0.0};            ///< goal radius (> 0 required by earliest_arrival); 0 for a conversion: automatic
+    double step{0.0};              ///< RK4 step; 0: duration / 24
+};
+
 /// @brief What to write.
 struct OutputSpec
 {
@@ -266,6 +280,7 @@ struct MissionSpec
     DiveSpec dive;
     ForbiddenSpec forbidden;
     PlannerSpec planner;
+    StintSpec stints;
     OutputSpec outputs;
     std::vector<double> speeds;    ///< speed sweep ([EichhornOceans] Table VI); empty = none
     ExecutionSpec execution;       ///< flying the plan in another ocean (issue 13)

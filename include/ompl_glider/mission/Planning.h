@@ -19,6 +19,7 @@
 #include "ompl_glider/mission/MissionExecution.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/planners/TveSearch.h"
+#include "ompl_glider/stints/StintSimulator.h"
 
 namespace ompl_glider
 {
@@ -56,6 +57,24 @@ struct EnsemblePlan
 /// (the ceil(q M)-th smallest of M; quantile); +inf when any is +inf (a plan that fails in a member is not robust).
 double ensembleObjective(const std::vector<double> &travelTimes, const std::string &objective, double q);
 
+/// @brief What a glider flies ([IsernObstacles]): the plan of a stint planner, or the conversion of another
+/// planner's path to a heading per surfacing (when the mission has a `stints` section).
+struct StintOutcome
+{
+    StintPlan plan;          ///< bearings (degrees clockwise from north), surfacings, track, remaining distance
+    bool converted{false};   ///< converted from the planner's path (stintsFromPath()), not planned on stints
+    double duration{0.0};    ///< time between surfacings
+    double missionDuration{0.0};  ///< the mission length flown (a conversion: long enough to arrive)
+    std::string objective;   ///< remaining_distance | earliest_arrival
+    double radius{0.0};      ///< goal radius of the stints
+    /// Conversion: the path's travel time, the stints' (+inf: they do not arrive) and the loss
+    /// stintTravelTime / pathTravelTime - 1
+    double pathTravelTime{std::numeric_limits<double>::infinity()};
+    double stintTravelTime{std::numeric_limits<double>::infinity()};  ///< see pathTravelTime
+    double loss{std::numeric_limits<double>::infinity()};             ///< see pathTravelTime
+    double seconds{0.0};  ///< wall time of the conversion (the planning time of a stint planner is planningSeconds)
+};
+
 /// @brief One planned path: what planRoute() returns.
 struct PlannedPath
 {
@@ -85,7 +104,10 @@ struct PlannedPath
     std::uint64_t expandedVertices{0};              ///< lattice vertices expanded (lattice planners)
     double planningSeconds{0.0};     ///< planner wall time
     double postprocessSeconds{0.0};  ///< smoothing + refinement wall time
-    bool pathChecked{false};         ///< the final OMPL path passed PathGeometric::check()
+    bool pathChecked{false};         ///< the final OMPL path passed PathGeometric::check() (stint plans: no
+                                     ///< stint met land or a forbidden region)
+    /// Stints: the plan of a stint planner (then path holds its surfacings), or the path converted to stints
+    std::optional<StintOutcome> stints;
     std::optional<EnsemblePlan> ensemble;  ///< with an ensemble current: how the plan fares per member
 
     /// @brief CFC of planner and post-processing together.
@@ -168,7 +190,15 @@ std::vector<TimedWaypoint> retimePath(const MissionProblem &problem, std::shared
 /// and the one with the least planner.objective over the members is returned (PlannedPath::ensemble), its times
 /// those of the mean field. The robust plan is thus never worse by the objective than any single-member plan.
 /// @throws Error for an unknown planner or parameter, or a bad problem (see makeGliderContext()).
+/// A stint planner (PlannerEntry::stints) flies the mission's `stints` section: its plan is the surfacings (not
+/// smoothed or refined), solved when a plan was flown (exactly reaching the goal or not: PlannedPath::stints has the
+/// remaining distance). With another planner and a `stints` section, the final path is converted to stints
+/// (stintsFromPath()).
 PlannedPath planRoute(const MissionProblem &problem, double departure, const PlanOptions &options = {});
+
+/// @brief The stint settings of the mission's `stints` section for a departure (depth from the vehicle).
+/// @throws Error naming the section's field when the mission would run past the forecast.
+StintSettings stintSettings(const MissionProblem &problem, double departure);
 
 /// @brief Travel time of a full planner run against departure time ([EichhornRAS] Sec. 5), for the departure
 /// search: thread-safe, +inf when no path. @p gridSize / @p sectors 0: the planner's.

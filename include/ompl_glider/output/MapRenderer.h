@@ -103,6 +103,9 @@ public:
     static MapPath rawPathStyle(std::string label, std::vector<TimedWaypoint> waypoints);
     static MapPath smoothedPathStyle(std::string label, std::vector<TimedWaypoint> waypoints);
     static MapPath refinedPathStyle(std::string label, std::vector<TimedWaypoint> waypoints);
+    /// @brief A flown stint track ([IsernObstacles]): solid, no markers, colour @p index of a palette of 6
+    /// (several methods on one map).
+    static MapPath stintTrackStyle(std::string label, std::vector<TimedWaypoint> track, int index = 0);
 
 private:
     void draw(void *cairoContext) const;

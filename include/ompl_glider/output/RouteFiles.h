@@ -38,4 +38,11 @@ std::string routeGeoJson(const MissionResult &result);
 /// @brief The Slocum goto list of the final path (without the start unless outputs.goto_include_start).
 /// @throws Error when the waypoints have no geographic coordinates.
 GotoList gotoList(const MissionResult &result);
+/// @brief stints.csv: the heading table of a stint plan ([IsernObstacles]), one row per surfacing: stint index,
+/// time (field units, seconds, ISO 8601), position (x, y, lon, lat), heading through the water held until the next
+/// surfacing (degrees clockwise from north), the next surfacing (time, x, y) and the expected drift over the stint
+/// (displacement minus speed x time x heading: what the current does; drift_speed its mean speed). Empty rows when
+/// the result has no stints.
+std::string stintsCsv(const MissionResult &result, const MissionProblem &problem);
+
 }  // namespace ompl_glider

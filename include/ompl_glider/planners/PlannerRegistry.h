@@ -21,6 +21,8 @@ struct PlannerEntry
     std::vector<std::string> aliases;  ///< other accepted spellings (matched without regard to case)
     std::string description;           ///< one line for --help and the docs
     bool lattice{false};               ///< a ZAStarTVE configuration (grid_size / sectors apply)
+    bool stints{false};                ///< a StintPlanner method: flies constant-bearing stints (a mission's
+                                       ///< `stints` section applies; [IsernObstacles])
     /// Makes the planner on the problem's space information; ctx is the problem's context.
     std::function<ompl::base::PlannerPtr(const ompl::base::SpaceInformationPtr &,
                                          const std::shared_ptr<const GliderContext> &)>
@@ -28,7 +30,8 @@ struct PlannerEntry
 };
 
 /// @brief Every registered planner, in the order of the documentation: the ZAStarTVE configurations TVE, A*TVE,
-/// ZTVE, ZA*TVE ([EichhornRAS] Sec. 2.2), then OMPL's geometric planners on the time-augmented space.
+/// ZTVE, ZA*TVE ([EichhornRAS] Sec. 2.2), then OMPL's geometric planners on the time-augmented space, then the
+/// constant-bearing stint planners init_optim, optim, cts_astar, direct ([IsernObstacles]).
 const std::vector<PlannerEntry> &plannerRegistry();
 
 /// @brief The entry whose name or alias equals @p name (case-insensitive); null when there is none.

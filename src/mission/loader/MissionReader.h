@@ -97,5 +97,6 @@ void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m);
+void readStints(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m);
 }  // namespace ompl_glider::mission_loader

@@ -1,0 +1,147 @@
+#pragma once
+/// @file StintSimulator.h
+/// @brief What a glider actually flies: one heading through the water per stint between two surfacings
+/// ([IsernObstacles] Sec. II: "the on-board navigation system simply tries to keep the last commanded heading or
+/// bearing during the whole stint"). A plan is a list of bearings, one per surfacing; the simulator flies them in
+/// the time-varying current with the one dive integrator (flyHeading(), execution/Dive.h: RK4, land and forbidden
+/// regions checked along every step) and returns the surfacing positions.
+///
+/// Bearings are degrees clockwise from north (+y): the heading through the water, unit vector
+/// (sin b, cos b). Units are those of the planning frame (x/y units, field time units).
+
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/Geometry.h"
+#include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/environment/Environment.h"
+#include "ompl_glider/execution/Dive.h"
+
+namespace ompl_glider
+{
+/// @brief What a stint plan is judged by.
+enum class StintObjective
+{
+    /// Distance to the goal at the end of the mission ([IsernObstacles] Sec. II.A: the Euclidean distance between
+    /// the last surfacing and the target).
+    RemainingDistance,
+    /// Earliest arrival within StintSettings::radius of the goal (the stints end there).
+    EarliestArrival
+};
+
+/// @brief "remaining_distance" / "earliest_arrival".
+std::string stintObjectiveName(StintObjective o);
+
+/// @brief Stint settings (times in field units).
+struct StintSettings
+{
+    double duration{1.0};         ///< time between two surfacings (8 h in [IsernObstacles] Sec. III)
+    double missionDuration{4.0};  ///< the mission ends here after the departure (4 days in [IsernObstacles])
+    double bearingStep{20.0};     ///< degrees between the bearings of the CTS-A* rose ([IsernObstacles] Sec. III.B)
+    StintObjective objective{StintObjective::RemainingDistance};  ///< what plans are judged by
+    double radius{0.0};  ///< > 0: the goal counts as reached within this distance and the stints end there
+                         ///< (required > 0 by EarliestArrival)
+    double step{0.0};    ///< RK4 step; 0: duration / 24
+    double depth{0.0};   ///< depth at which the currents are read (m)
+
+    /// @brief The RK4 step used.
+    double rk4Step() const
+    {
+        return step > 0.0 ? step : duration / 24.0;
+    }
+    /// @brief Number of stints of the mission: ceil(missionDuration / duration) (the last may be shorter).
+    std::size_t stintCount() const;
+    /// @brief Throws Error naming the bad setting (duration, mission duration, step not positive and finite,
+    /// bearing step not in (0, 180], radius < 0, earliest arrival without radius).
+    void check() const;
+};
+
+/// @brief A flown stint plan.
+struct StintPlan
+{
+    std::vector<double> bearings;             ///< degrees clockwise from north, one per stint flown
+    std::vector<TimedWaypoint> surfacings;    ///< the start, each surfacing, and the end (arrival, grounding)
+    std::vector<TimedWaypoint> track;         ///< every integration step (start first)
+    double remainingDistance{std::numeric_limits<double>::infinity()};  ///< goal distance at the end
+    bool reached{false};       ///< within the radius of the goal before the mission ended
+    double arrivalTime{std::numeric_limits<double>::quiet_NaN()};  ///< first time within the radius
+    /// With a radius: the closest approach to the goal over the stints flown, and its time
+    double closestDistance{std::numeric_limits<double>::infinity()};
+    double closestTime{std::numeric_limits<double>::quiet_NaN()};  ///< see closestDistance
+    bool grounded{false};      ///< a stint met land or a forbidden region and ended there (the glider stops)
+    std::string groundedWhy;   ///< what, and where
+    double cost{std::numeric_limits<double>::infinity()};  ///< StintSimulator::cost() of this plan
+};
+
+/// @brief Flies stint plans from a start at a departure time toward a goal.
+class StintSimulator
+{
+public:
+    /// @brief @p maxCurrent bounds the current speed over the region and the mission (for the heuristic and the
+    /// cost of an unfinished plan); @p forbidden may be null. @throws Error for bad settings, speed or bound.
+    StintSimulator(std::shared_ptr<const CurrentField> field, std::shared_ptr<const Environment> forbidden,
+                   double speed, double maxCurrent, Point2 start, double t0, Point2 goal, StintSettings settings);
+
+    /// @brief Flies @p bearings (at most StintSettings::stintCount() are used) from the start; stops at the goal
+    /// (radius), at a grounding or when the bearings or the mission run out. @p keepTrack: fill StintPlan::track.
+    StintPlan simulate(const std::vector<double> &bearings, bool keepTrack = true) const;
+
+    /// @brief One stint from (x, y) at t with @p bearing (degrees) until min(t + duration, mission end).
+    DiveEnd flyStint(double x, double y, double t, double bearing, std::vector<TimedWaypoint> *track = nullptr) const;
+
+    /// @brief Direct to goal ([IsernObstacles] Sec. III.A): at every surfacing, the bearing to the goal.
+    StintPlan direct() const;
+
+    /// @brief The objective value of a plan (lower is better): RemainingDistance: the final distance;
+    /// EarliestArrival: arrival - t0 when reached, else the time of the closest approach - t0 plus the distance
+    /// then left to the radius at a tenth of V (continuous with the arrival time where a plan starts to reach
+    /// the radius, so that the optimiser can steer into it, and steep, so that a near miss does not pay).
+    /// A grounded plan also pays for the time it cannot fly (max reach times the time left, or that time), so that
+    /// the optimisers never prefer stopping on land.
+    double cost(const StintPlan &plan) const;
+
+    /// @brief A lower bound of the cost of every plan through (x, y) at time t (admissible heuristic of CTS-A*):
+    /// RemainingDistance max(0, d - (V + max|c|) * time left); EarliestArrival (t - t0) + d / (V + max|c|).
+    double lowerBound(double x, double y, double t) const;
+
+    /// @brief The bearing (degrees clockwise from north) from (x, y) to the goal.
+    double bearingToGoal(double x, double y) const;
+
+    const StintSettings &settings() const { return settings_; }  ///< the settings
+    double speed() const { return speed_; }                     ///< speed through water
+    double maxReach() const { return speed_ + maxCurrent_; }    ///< V + max|c|
+    Point2 start() const { return start_; }                     ///< start
+    Point2 goal() const { return goal_; }                       ///< goal
+    double t0() const { return t0_; }                           ///< departure
+    double endTime() const { return t0_ + settings_.missionDuration; }  ///< end of the mission
+    const CurrentField &field() const { return *field_; }       ///< the current
+    /// @brief Number of simulate() and flyStint() calls so far (thread-safe counter; for benchmarks).
+    std::uint64_t stintsFlown() const;
+
+private:
+    std::shared_ptr<const CurrentField> field_;
+    std::shared_ptr<const Environment> forbidden_;
+    double speed_, maxCurrent_;
+    Point2 start_;
+    double t0_;
+    Point2 goal_;
+    StintSettings settings_;
+    DiveSettings dive_;
+    std::shared_ptr<std::atomic<std::uint64_t>> flown_;
+};
+
+/// @brief Degrees clockwise from north -> unit heading (hx, hy) = (sin b, cos b).
+inline Point2 bearingVector(double bearingDeg)
+{
+    constexpr double kDeg = 3.14159265358979323846 / 180.0;
+    return {std::sin(bearingDeg * kDeg), std::cos(bearingDeg * kDeg)};
+}
+
+/// @brief (dx, dy) -> bearing in degrees clockwise from north, in [0, 360).
+double bearingOf(double dx, double dy);
+}  // namespace ompl_glider

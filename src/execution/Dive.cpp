@@ -1,0 +1,89 @@
+// One dive with a held heading: RK4 between surfacings with land, forbidden-region and goal checks (see Dive.h).
+#include "ompl_glider/execution/Dive.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace ompl_glider
+{
+namespace
+{
+std::string where(double x, double y, double t)
+{
+    std::ostringstream os;
+    os << "(" << x << ", " << y << ") at t = " << t;
+    return os.str();
+}
+}  // namespace
+
+DiveEnd flyHeading(double x, double y, double t, double hx, double hy, double tEnd, const CurrentField &field,
+                   const Environment *forbidden, const DiveSettings &s, std::vector<TimedWaypoint> *track)
+{
+    DiveEnd e;
+    auto rate = [&](double px, double py, double pt) {
+        const Velocity c = field.velocity(px, py, s.depth, pt);
+        return Velocity{s.speed * hx + c.u, s.speed * hy + c.v};
+    };
+    while (t < tEnd - 1e-12 * std::max(1.0, std::abs(tEnd)))
+    {
+        const double h = std::min(s.step, tEnd - t);
+        const Velocity k1 = rate(x, y, t);
+        const Velocity k2 = rate(x + 0.5 * h * k1.u, y + 0.5 * h * k1.v, t + 0.5 * h);
+        const Velocity k3 = rate(x + 0.5 * h * k2.u, y + 0.5 * h * k2.v, t + 0.5 * h);
+        const Velocity k4 = rate(x + h * k3.u, y + h * k3.v, t + h);
+        const double nx = x + h / 6.0 * (k1.u + 2.0 * k2.u + 2.0 * k3.u + k4.u);
+        const double ny = y + h / 6.0 * (k1.v + 2.0 * k2.v + 2.0 * k3.v + k4.v);
+        const double nt = t + h;
+        if (!std::isfinite(nx) || !std::isfinite(ny) || !field.segmentInWater(x, y, nx, ny, s.depth))
+        {
+            e.grounded = true;
+            e.why = "land of the current field between " + where(x, y, t) + " and " + where(nx, ny, nt);
+            break;
+        }
+        if (forbidden && !forbidden->legFree(x, y, t, nx, ny, nt))
+        {
+            e.grounded = true;
+            e.why = forbidden->whyLegBlocked(x, y, t, nx, ny, nt) + " between " + where(x, y, t) + " and " +
+                    where(nx, ny, nt);
+            break;
+        }
+        // the goal reached within this step: the first point of the step within radius (its chord)
+        if (s.radius > 0.0)
+        {
+            const double ex = nx - x, ey = ny - y, fx = x - s.goalX, fy = y - s.goalY;
+            const double a = ex * ex + ey * ey, b = 2.0 * (ex * fx + ey * fy),
+                         c = fx * fx + fy * fy - s.radius * s.radius;
+            const double disc = b * b - 4.0 * a * c;
+            // closest approach on the chord (for a continuous cost of plans that miss the radius)
+            const double q0 = a > 0.0 ? std::clamp(-(ex * fx + ey * fy) / a, 0.0, 1.0) : 0.0;
+            const double dq = std::hypot(fx + q0 * ex, fy + q0 * ey);
+            if (dq < e.closestDistance)
+            {
+                e.closestDistance = dq;
+                e.closestTime = t + q0 * h;
+            }
+            if (a > 0.0 && disc >= 0.0)
+            {
+                const double q = (-b - std::sqrt(disc)) / (2.0 * a);
+                if (q >= 0.0 && q <= 1.0)
+                {
+                    e.reached = true;
+                    e.arrivalTime = t + q * h;
+                }
+            }
+        }
+        x = nx;
+        y = ny;
+        t = nt;
+        if (track)
+            track->push_back({x, y, t});
+        if (e.reached)
+            break;
+    }
+    e.x = x;
+    e.y = y;
+    e.t = t;
+    return e;
+}
+}  // namespace ompl_glider

@@ -1,0 +1,179 @@
+// Constant-bearing stints ([IsernObstacles] Sec. II): flying a list of bearings, one per surfacing.
+#include "ompl_glider/stints/StintSimulator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+std::string stintObjectiveName(StintObjective o)
+{
+    return o == StintObjective::RemainingDistance ? "remaining_distance" : "earliest_arrival";
+}
+
+std::size_t StintSettings::stintCount() const
+{
+    const double n = std::ceil(missionDuration / duration - 1e-9);
+    return static_cast<std::size_t>(std::max(1.0, n));
+}
+
+void StintSettings::check() const
+{
+    auto positive = [](double v) { return v > 0.0 && std::isfinite(v); };
+    if (!positive(duration))
+        throw Error("stints.duration: must be positive and finite");
+    if (!positive(missionDuration))
+        throw Error("stints.mission_duration: must be positive and finite");
+    if (missionDuration / duration > 100000.0)
+        throw Error("stints.mission_duration: more than 100000 stints of stints.duration");
+    if (!(bearingStep > 0.0 && bearingStep <= 180.0))
+        throw Error("stints.bearing_step: must be in (0, 180] degrees");
+    if (!(radius >= 0.0) || !std::isfinite(radius))
+        throw Error("stints.radius: must be >= 0 and finite");
+    if (objective == StintObjective::EarliestArrival && !(radius > 0.0))
+        throw Error("stints.radius: the earliest_arrival objective needs a radius > 0");
+    if (!(step >= 0.0) || !std::isfinite(step) || (step > 0.0 && duration / step > 1e6))
+        throw Error("stints.step: must be >= 0 and finite, at most 10^6 steps per stint");
+}
+
+double bearingOf(double dx, double dy)
+{
+    double b = std::atan2(dx, dy) * 180.0 / 3.14159265358979323846;
+    if (b < 0.0)
+        b += 360.0;
+    return b >= 360.0 ? 0.0 : b;
+}
+
+StintSimulator::StintSimulator(std::shared_ptr<const CurrentField> field, std::shared_ptr<const Environment> forbidden,
+                               double speed, double maxCurrent, Point2 start, double t0, Point2 goal,
+                               StintSettings settings)
+    : field_(std::move(field)), forbidden_(std::move(forbidden)), speed_(speed), maxCurrent_(maxCurrent),
+      start_(start), t0_(t0), goal_(goal), settings_(settings),
+      flown_(std::make_shared<std::atomic<std::uint64_t>>(0))
+{
+    if (!field_)
+        throw Error("StintSimulator: no current field");
+    settings_.check();
+    if (!(speed_ > 0.0) || !std::isfinite(speed_))
+        throw Error("StintSimulator: the speed must be positive and finite");
+    if (!(maxCurrent_ >= 0.0) || !std::isfinite(maxCurrent_))
+        throw Error("StintSimulator: the current bound must be >= 0 and finite");
+    dive_.speed = speed_;
+    dive_.step = settings_.rk4Step();
+    dive_.depth = settings_.depth;
+    dive_.radius = settings_.radius;
+    dive_.goalX = goal_.x;
+    dive_.goalY = goal_.y;
+}
+
+std::uint64_t StintSimulator::stintsFlown() const
+{
+    return flown_->load(std::memory_order_relaxed);
+}
+
+DiveEnd StintSimulator::flyStint(double x, double y, double t, double bearing, std::vector<TimedWaypoint> *track) const
+{
+    flown_->fetch_add(1, std::memory_order_relaxed);
+    const Point2 h = bearingVector(bearing);
+    return flyHeading(x, y, t, h.x, h.y, std::min(t + settings_.duration, endTime()), *field_, forbidden_.get(),
+                      dive_, track);
+}
+
+double StintSimulator::bearingToGoal(double x, double y) const
+{
+    return bearingOf(goal_.x - x, goal_.y - y);
+}
+
+namespace
+{
+/// Flies stints from the start, the bearing of each chosen by @p next(k, x, y, t) (k = stint index).
+template <class Next>
+StintPlan fly(const StintSimulator &sim, const Next &next, std::size_t count, bool keepTrack)
+{
+    StintPlan p;
+    double x = sim.start().x, y = sim.start().y, t = sim.t0();
+    p.surfacings.push_back({x, y, t});
+    if (keepTrack)
+        p.track.push_back({x, y, t});
+    const double r = sim.settings().radius;
+    if (r > 0.0)
+    {
+        p.closestDistance = std::hypot(sim.goal().x - x, sim.goal().y - y);
+        p.closestTime = t;
+    }
+    if (r > 0.0 && p.closestDistance <= r)
+    {
+        p.reached = true;
+        p.arrivalTime = t;
+    }
+    const double end = sim.endTime();
+    for (std::size_t k = 0; k < count && !p.reached && t < end - 1e-12 * std::max(1.0, std::abs(end)); ++k)
+    {
+        const double b = next(k, x, y, t);
+        p.bearings.push_back(b);
+        const DiveEnd e = sim.flyStint(x, y, t, b, keepTrack ? &p.track : nullptr);
+        x = e.x;
+        y = e.y;
+        t = e.t;
+        p.surfacings.push_back({x, y, t});
+        if (e.closestDistance < p.closestDistance)
+        {
+            p.closestDistance = e.closestDistance;
+            p.closestTime = e.closestTime;
+        }
+        if (e.reached)
+        {
+            p.reached = true;
+            p.arrivalTime = e.arrivalTime;
+        }
+        if (e.grounded)
+        {
+            p.grounded = true;
+            p.groundedWhy = e.why;
+            break;
+        }
+    }
+    p.remainingDistance = std::hypot(sim.goal().x - x, sim.goal().y - y);
+    p.cost = sim.cost(p);
+    return p;
+}
+}  // namespace
+
+StintPlan StintSimulator::simulate(const std::vector<double> &bearings, bool keepTrack) const
+{
+    return fly(*this, [&](std::size_t k, double, double, double) { return bearings[k]; },
+               std::min(bearings.size(), settings_.stintCount()), keepTrack);
+}
+
+StintPlan StintSimulator::direct() const
+{
+    return fly(*this, [&](std::size_t, double x, double y, double) { return bearingToGoal(x, y); },
+               settings_.stintCount(), true);
+}
+
+double StintSimulator::cost(const StintPlan &p) const
+{
+    const TimedWaypoint &last = p.surfacings.back();
+    const double lost = p.grounded ? std::max(0.0, endTime() - last.t) : 0.0;
+    if (settings_.objective == StintObjective::RemainingDistance)
+        return p.remainingDistance + maxReach() * lost;
+    if (p.reached)
+        return p.arrivalTime - t0_;
+    if (!std::isfinite(p.closestDistance))  // a plan that has not flown (no radius is checked by the settings)
+        return settings_.missionDuration + p.remainingDistance / maxReach() + lost;
+    // a miss costs the time of the closest approach plus the distance left to the radius at a tenth of the speed
+    // through water: continuous where a plan starts to reach the radius, and steep enough that just missing early
+    // never beats reaching a little later
+    return p.closestTime - t0_ + std::max(0.0, p.closestDistance - settings_.radius) / (0.1 * speed_) + lost;
+}
+
+double StintSimulator::lowerBound(double x, double y, double t) const
+{
+    const double d = std::hypot(goal_.x - x, goal_.y - y);
+    if (settings_.objective == StintObjective::RemainingDistance)
+        return std::max(0.0, d - maxReach() * std::max(0.0, endTime() - t));
+    return (t - t0_) + std::max(0.0, d - settings_.radius) / maxReach();
+}
+}  // namespace ompl_glider
