@@ -2,15 +2,23 @@
 """Writes examples/labrador_forecast.cdl: a small synthetic 5-day current forecast off Newfoundland in CF NetCDF
 form (lon, lat, depth, time; u/v in m/s with _FillValue on an island). Build the NetCDF file with
     ncgen -o examples/labrador_forecast.nc examples/labrador_forecast.cdl
+With --nowcast it writes examples/labrador_nowcast.cdl instead: "another model" of the same ocean for flying plans
+in (issue 13): the jet 0.1 degree further north and 20 % weaker, the tide 1.5 h later and 25 % stronger, the
+drift reversed; its times in minutes since 2026-03-15 06:00 every 3 h (another origin and units).
 The field: an eastward shelf-break jet centred at 48.2 N that weakens with depth, a semi-diurnal tide (M2,
 12.42 h) and a slow northward drift that grows during the forecast."""
 import math
 import os
+import sys
+
+NOWCAST = "--nowcast" in sys.argv[1:]
 
 lons = [-53.0 + 0.2 * i for i in range(11)]
 lats = [47.6 + 0.12 * j for j in range(11)]
 depths = [0.0, 50.0, 200.0]
 times = [6.0 * k for k in range(21)]  # hours since 2026-03-15 00:00:00
+if NOWCAST:
+    times = [6.0 + 3.0 * k for k in range(39)]  # hours since 2026-03-15 00:00 (written as minutes since 06:00)
 FILL = -999.0
 jet = {0.0: 0.45, 50.0: 0.30, 200.0: 0.08}
 
@@ -22,11 +30,12 @@ def land(lon, lat):
 def uv(t, z, lat, lon):
     if land(lon, lat):
         return FILL, FILL
-    core = jet[z] * math.exp(-((lat - 48.2) / 0.25) ** 2)
-    tide = 0.12 * (1.0 - z / 400.0)
-    w = 2.0 * math.pi * t / 12.42
+    centre, strength, lag, tidal, drift = (48.3, 0.8, 1.5, 1.25, -1.0) if NOWCAST else (48.2, 1.0, 0.0, 1.0, 1.0)
+    core = strength * jet[z] * math.exp(-((lat - centre) / 0.25) ** 2)
+    tide = tidal * 0.12 * (1.0 - z / 400.0)
+    w = 2.0 * math.pi * (t - lag) / 12.42
     u = core + tide * math.cos(w)
-    v = 0.6 * tide * math.sin(w) + 0.04 * (t / 120.0) * math.cos(math.radians(60.0 * (lon + 53.0)))
+    v = 0.6 * tide * math.sin(w) + drift * 0.04 * (t / 120.0) * math.cos(math.radians(60.0 * (lon + 53.0)))
     return round(u, 4), round(v, 4)
 
 
@@ -53,7 +62,12 @@ for t in times:
                 us.append(u)
                 vs.append(v)
 
-cdl = f"""netcdf labrador_forecast {{
+name = "labrador_nowcast" if NOWCAST else "labrador_forecast"
+time_units = "minutes since 2026-03-15 06:00:00" if NOWCAST else "hours since 2026-03-15 00:00:00"
+title = ("Synthetic nowcast for ompl_glider examples (another model of the forecast's ocean)" if NOWCAST
+         else "Synthetic 5-day forecast for ompl_glider examples (shelf-break jet, M2 tide, island)")
+written_times = [60.0 * (t - 6.0) for t in times] if NOWCAST else times
+cdl = f"""netcdf {name} {{
 dimensions:
  time = {len(times)} ;
  depth = {len(depths)} ;
@@ -61,7 +75,7 @@ dimensions:
  lon = {len(lons)} ;
 variables:
  double time(time) ;
-  time:units = "hours since 2026-03-15 00:00:00" ;
+  time:units = "{time_units}" ;
   time:calendar = "standard" ;
   time:standard_name = "time" ;
  double depth(depth) ;
@@ -84,10 +98,10 @@ variables:
   v:_FillValue = -999.f ;
 
 // global attributes:
-  :title = "Synthetic 5-day forecast for ompl_glider examples (shelf-break jet, M2 tide, island)" ;
+  :title = "{title}" ;
   :Conventions = "CF-1.8" ;
 data:
-{block("time", times)}
+{block("time", written_times)}
 {block("depth", depths)}
 {block("lat", [round(x, 4) for x in lats])}
 {block("lon", [round(x, 4) for x in lons])}
@@ -96,5 +110,5 @@ data:
 }}
 """
 here = os.path.dirname(os.path.abspath(__file__))
-with open(os.path.join(here, "labrador_forecast.cdl"), "w") as f:
+with open(os.path.join(here, name + ".cdl"), "w") as f:
     f.write(cdl)

@@ -296,6 +296,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     {
         const CurrentField &f = *problem.getField(), &tr = *problem.getTruth();
         const double tEnd = std::max(r.differenceBegin, std::min({r.differenceEnd, f.timeEnd(), tr.timeEnd()}));
+        r.differenceEnd = tEnd;  // within both fields
         double sum = 0.0;
         std::size_t count = 0;
         for (int j = 0; j < 40; ++j)

@@ -277,7 +277,14 @@ std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec
     }
     catch (const Error &e)
     {
-        throw Error(at + netCdfMissionMessage(e.what()));
+        // the loader's hints name the forecast's options: here they are this source's
+        std::string what = netCdfMissionMessage(e.what());
+        for (std::size_t k = what.find("current."); k != std::string::npos; k = what.find("current.", k))
+        {
+            what.replace(k, 8, field + ".");
+            k += field.size() + 1;
+        }
+        throw Error(at + what);
     }
     if (!nc.projection != !projection_)
         throw Error(at + (projection_ ? "it has no longitude/latitude but the forecast has"

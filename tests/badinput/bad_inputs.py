@@ -169,6 +169,61 @@ yaml_case("stints-not-a-map", mission("stints: 8"), "stints")
 yaml_case("stints-window-remaining-distance",
           mission("planner: {name: optim}", "departure: {window: {begin: 0, end: 5}}",
                   "stints: {duration: 1, mission_duration: 10}"), "departure.window")
+# execution in another ocean, ensembles (issue 13)
+yaml_case("execution-unknown-field", mission("execution: {surfacing: 1}"), "m.yaml:8: unknown field 'execution.surfacing'")
+yaml_case("execution-strategy-unknown", mission("execution: {strategies: [current_sensitive, zigzag]}"),
+          "m.yaml:8: field 'execution.strategies[1]'")
+yaml_case("execution-strategy-twice", mission("execution: {strategies: [greedy, greedy]}"), "listed twice")
+yaml_case("execution-interval-negative", mission("execution: {surfacing_interval: -1}"),
+          "m.yaml:8: field 'execution.surfacing_interval'")
+yaml_case("execution-interval-hours-without-unit", mission("execution: {surfacing_interval: 1 h}"),
+          "needs the mission's time unit")
+yaml_case("execution-interval-fortnight", mission("units: {length_m: 1000, time_s: 3600}",
+                                                   "execution: {surfacing_interval: 1 fortnight}"),
+          "execution.surfacing_interval")
+yaml_case("execution-radius-zero", mission("execution: {radius: 0}"), "execution.radius")
+yaml_case("execution-replan-every-zero", mission("execution: {replan_every: 0}"), "execution.replan_every")
+yaml_case("execution-truth-netcdf-for-analytic", mission("execution: {truth: {type: netcdf, file: f.nc}}"),
+          "execution.truth")
+yaml_case("execution-truth-word", mission("execution: {truth: nowcast}"), "field 'execution.truth'")
+yaml_case("execution-truth-parameter", mission("execution: {truth: {type: uniform, parameters: {w: 1}}}"),
+          "execution.truth.parameters.w")
+yaml_case("execution-batch-negative", mission("execution: {batch: {pairs: -3}}"), "execution.batch.pairs")
+yaml_case("execution-batch-min-distance-huge",
+          mission("execution: {batch: {pairs: 3, min_distance: 100}}"), "execution.batch")
+yaml_case("ensemble-one-member", mission("current: {ensemble: [{type: uniform}]}"), "field 'current.ensemble'")
+yaml_case("ensemble-mixed", mission("current: {ensemble: [{type: uniform}, {type: netcdf, file: f.nc}]}"),
+          "current.ensemble[1]")
+yaml_case("ensemble-with-type", mission("current: {type: uniform, ensemble: [{type: uniform}, {type: uniform}]}"),
+          "current")
+yaml_case("objective-without-ensemble", mission("planner: {name: zastartve, objective: worst}"),
+          "needs an ensemble current")
+yaml_case("objective-quantile-range",
+          mission("current: {ensemble: [{type: uniform, parameters: {u: 0.1}}, {type: uniform}]}",
+                  "planner: {objective: quantile, quantile: 1.5}"), "planner.quantile")
+NC_MISSION = """name: nc
+current: {type: netcdf, file: f.nc}
+start: {lon: -52.9, lat: 47.1}
+goal: {lon: -52.1, lat: 47.9}
+vehicle: {speed: 0.5}
+"""
+case("execution-truth-file-missing", ["--mission", "m.yaml", "--out", "{out}"], 2, "execution.truth.file",
+     {"f.cdl": forecast(), "m.yaml": NC_MISSION + "execution: {truth: {type: netcdf, file: missing.nc}}\n"})
+case("execution-truth-other-calendar", ["--mission", "m.yaml", "--out", "{out}"], 2, "calendar",
+     {"f.cdl": forecast(), "t.cdl": forecast(replace=[('time:standard_name = "time" ;',
+                                                       'time:standard_name = "time" ; time:calendar = "noleap" ;')]),
+      "m.yaml": NC_MISSION + "execution: {truth: {type: netcdf, file: t.nc}}\n"})
+case("execution-truth-undated", ["--mission", "m.yaml", "--out", "{out}"], 2, "execution.truth.time_units",
+     {"f.cdl": forecast(), "t.cdl": forecast(replace=[('"hours since 2026-03-15 00:00:00"', '"hours"')]),
+      "m.yaml": NC_MISSION + "execution: {truth: {type: netcdf, file: t.nc}}\n"})
+case("cli-truth-parameter", ["--truth", "Q=1", "--out", "{out}"], 2, "--truth")
+case("cli-truth-not-a-number", ["--truth", "B0=big", "--out", "{out}"], 2, "--truth")
+case("cli-strategies-unknown", ["--strategies", "current_sensitive,zigzag", "--out", "{out}"], 2, "--strategies")
+case("cli-surfacing-fortnight", ["--surfacing-interval", "1 fortnight", "--out", "{out}"], 2,
+     "--surfacing-interval")
+case("cli-radius-zero", ["--radius", "0", "--out", "{out}"], 2, "--radius")
+case("cli-truth-with-mission", ["--mission", "m.yaml", "--truth", "forecast", "--out", "{out}"], 2,
+     "cannot be combined", {"m.yaml": MISSION})
 yaml_case("planner-refiner-evals-huge",
           mission("planner: {name: zastartve, parameters: {refiner_max_evaluations: 5e9}}"),
           "planner.parameters.refiner_max_evaluations")

@@ -247,6 +247,31 @@ expect_error "bad2.yaml:7: field 'planner.name': unknown planner 'dijkstra'" --m
 sed 's/delta_phi_max: 20/delta_phi_max_deg: 20/' "$dir/m/trip.yaml" > "$dir/bad3.yaml"
 expect_error "bad3.yaml:7: field 'planner.parameters.delta_phi_max_deg': planner ZTVE has no parameter" \
     --mission "$dir/bad3.yaml"
+# the plan flown in another ocean from the command line (issue 13): the built-in jet with another amplitude as the
+# truth, two strategies, a small batch; the second run of the same directory without --truth removes the files
+"$exe" --truth B0=1.38,c=0.138 --surfacing-interval 0.25 --strategies current_sensitive,greedy --radius 0.1 \
+    --execution-pairs 3 --out "$dir/exec" > "$dir/exec.txt" 2> "$dir/exec.err"
+python3 - "$dir/exec" <<'PY'
+import csv, json, os, sys
+d = sys.argv[1]
+s = json.load(open(os.path.join(d, "summary.json")))
+e = s["execution"]
+assert e["truth"] == "meandering jet" and e["surfacing_interval"] == 0.25 and e["radius"] == 0.1, e
+assert e["runs"] == 4 and e["model_difference"]["rms"] > 0, e
+assert sorted(k for k in e if isinstance(e[k], dict) and "batch" in e[k]) == ["current_sensitive", "greedy"], e.keys()
+for k in ["current_sensitive", "greedy"]:
+    o = e[k]
+    assert isinstance(o["reached"], bool) and isinstance(o["grounded"], bool), o
+    assert o["final_distance"] >= 0 and o["batch"]["runs"] == e["runs_planned"], o
+    assert o["arrival_time"] is None or o["arrival_time"] > s["departure"]["time"], o
+rows = list(csv.DictReader(open(os.path.join(d, "execution.csv"))))
+assert len(rows) == 2 * e["runs_planned"] + (e["runs"] - e["runs_planned"]), len(rows)
+for name in ["execution_tracks.csv", "execution.png", "execution.svg", "model_difference.png", "map.png"]:
+    assert name in s["files"] and os.path.exists(os.path.join(d, name)), name
+print("execution OK")
+PY
+"$exe" --out "$dir/exec" > /dev/null 2>&1
+test ! -e "$dir/exec/execution.csv" && test ! -e "$dir/exec/model_difference.png"
 # an empty speed list is bad input too (was parseSpeedList("") -> error)
 expect_error "speeds" --speeds ""
 echo "OK"

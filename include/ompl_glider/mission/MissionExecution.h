@@ -69,8 +69,8 @@ struct ExecutionResult
     unsigned replanEvery{1};      ///< replan strategy: surfacings between plans
     std::vector<ExecutionRun> runs;  ///< runs[0] is the mission's own pair
     std::vector<StrategySpread> spread;  ///< one per strategy, over every run flown
-    /// The truth against the forecast over the planning box and the time window of the runs (departure to the
-    /// latest planned arrival x 2, 24 times, a 40 x 40 grid of water points): RMS over space and time of
+    /// The truth against the forecast over the planning box and the time window of the runs (departure to twice
+    /// the latest planned travel time after it, within both fields; 24 times, a 40 x 40 grid of water points): RMS over space and time of
     /// |c_truth - c_forecast|, and the largest RMS over time at one point. 0 when the truth is the forecast.
     double rmsDifference{0.0};
     double maxPointRmsDifference{0.0};
