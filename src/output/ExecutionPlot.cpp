@@ -14,26 +14,9 @@ namespace
 {
 constexpr int kPanelW = 520, kPanelH = 420, kMarginL = 70, kMarginT = 60, kMarginB = 70;
 
-/// A round tick step giving about 6 ticks over @p span.
-double tickStep(double span)
-{
-    const double raw = span / 6.0;
-    const double p = std::pow(10.0, std::floor(std::log10(raw)));
-    for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
-        if (m * p >= raw)
-            return m * p;
-    return 10.0 * p;
-}
-
 void text(cairo_t *cr, double x, double y, const std::string &s, double size, double align, bool bold = false)
 {
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
-                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, size);
-    cairo_text_extents_t ext;
-    cairo_text_extents(cr, s.c_str(), &ext);
-    cairo_move_to(cr, x - align * ext.x_advance, y);
-    cairo_show_text(cr, s.c_str());
+    drawCairoText(cr, x, y, s, size, bold, align, {0.0, 0.0, 0.0, 1.0});
 }
 
 std::string fmt(double v)
@@ -60,7 +43,7 @@ void panel(cairo_t *cr, double x0, double y0, const ExecutionResult &e, const st
     }
     if (!(hi > lo))
         hi = lo + 1.0;
-    const double step = tickStep(hi - lo);
+    const double step = niceAxisStep((hi - lo) / 6.0);
     lo = std::floor(lo / step) * step;
     hi = std::ceil(hi / step) * step;
     auto Y = [&](double v) { return py + plotH * (1.0 - (v - lo) / (hi - lo)); };

@@ -807,6 +807,17 @@ void MapRenderer::draw(void *context) const
         ly += 18 * wrappedText(cr, lx, ly + 4, n, 12, W - lx - 8, 18);
 }
 
+void drawCairoText(void *cairo, double x, double y, const std::string &text, double size, bool bold, double alignX,
+                   Rgba colour)
+{
+    plainText(static_cast<cairo_t *>(cairo), x, y, text, size, bold, alignX, colour);
+}
+
+double niceAxisStep(double raw)
+{
+    return niceStep(raw);
+}
+
 void writeCairoFile(const std::string &filename, int width, int height, bool svg,
                     const std::function<void(void *)> &draw)
 {

@@ -29,6 +29,14 @@ struct Rgba
     double a{1.0};
 };
 
+/// @brief Text at (x, y) (baseline) on a cairo_t, aligned by @p alignX (0 left, 0.5 centre, 1 right): the maps' and
+/// plots' one text routine.
+void drawCairoText(void *cairo, double x, double y, const std::string &text, double size, bool bold = false,
+                   double alignX = 0.0, Rgba colour = {0.1, 0.1, 0.1, 1.0});
+
+/// @brief A round axis step (1, 2, 5 x 10^k) at least @p raw (1 for a raw step that is not positive and finite).
+double niceAxisStep(double raw);
+
 /// @brief A forbidden region (land, restricted area, ice zone ...) drawn as a filled polygon.
 struct MapPolygon
 {
