@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <mutex>
 #include <cmath>
 #include <cstdio>
 
@@ -541,20 +542,24 @@ TravelTimeOfDeparture departureFunction(const MissionProblem &problem, double gr
 std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep, const std::vector<double> &speeds,
                                       const ProgressSink &progress)
 {
-    std::vector<SpeedSweepRow> rows;
-    for (std::size_t i = 0; i < speeds.size(); ++i)
-    {
-        if (progress)
-        {
-            char line[96];
-            std::snprintf(line, sizeof line, "speed sweep: %zu/%zu (V = %g)", i + 1, speeds.size(), speeds[i]);
-            progress(line, i + 1 == speeds.size());
-        }
+    // one plan per speed, in parallel (planRoute() is thread-safe on one problem); rows in the order given
+    std::vector<SpeedSweepRow> rows(speeds.size());
+    std::mutex printMutex;
+    std::size_t done = 0;
+    DiveProfilePool pool(0);
+    pool.parallelFor(speeds.size(), [&](std::size_t i) {
         PlanOptions o;
         o.speed = speeds[i];
         const PlannedPath p = planRoute(problem, tDep, o);
-        rows.push_back({speeds[i], p.solved, p.travelTime, p.pathLength, p.straightLineTime, p.straightLineLength});
-    }
+        rows[i] = {speeds[i], p.solved, p.travelTime, p.pathLength, p.straightLineTime, p.straightLineLength};
+        if (progress)
+        {
+            std::lock_guard<std::mutex> lock(printMutex);
+            char line[96];
+            std::snprintf(line, sizeof line, "speed sweep: %zu/%zu speeds planned", ++done, speeds.size());
+            progress(line, done == speeds.size());
+        }
+    });
     return rows;
 }
 
