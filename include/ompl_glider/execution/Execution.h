@@ -82,7 +82,8 @@ struct FlownTrack
     bool grounded{false};      ///< the run ended on land or in a forbidden region
     std::string groundedWhy;   ///< what was met, and where (planning frame)
     double madeGoodSpeed{0.0}; ///< straight distance start -> last position divided by the time flown
-    unsigned replans{0};       ///< ControlStrategy::Replan: plans made during the run
+    unsigned replans{0};       ///< ControlStrategy::Replan: surfacings that renewed the plan (a new plan, or the
+                               ///< replanner's re-timed rest of the current one)
 };
 
 /// @brief Flies `plan` (waypoints with planned times; the last is the goal) at `speed` through `truth`, choosing
