@@ -251,7 +251,9 @@ void MissionProblem::buildField()
 std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec &t, const std::string &field) const
 {
     const MissionSpec &m = spec_;
-    const std::string at = where(m, t.mark) + "field '" + field + "': ";
+    // a command-line flag gave the source (--truth): name the flag, else the mission file's line and field
+    const std::string at = t.mark.file.rfind("--", 0) == 0 ? t.mark.file + ": "
+                                                             : where(m, t.mark) + "field '" + field + "': ";
     const CurrentFieldKind *kind = findCurrentFieldKind(t.type);
     if (!kind)
         throw Error(at + "unknown type '" + t.type + "' (expected one of " + currentFieldKindList() + ")");

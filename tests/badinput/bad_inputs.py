@@ -221,6 +221,7 @@ case("cli-truth-not-a-number", ["--truth", "B0=big", "--out", "{out}"], 2, "--tr
 case("cli-strategies-unknown", ["--strategies", "current_sensitive,zigzag", "--out", "{out}"], 2, "--strategies")
 case("cli-surfacing-fortnight", ["--surfacing-interval", "1 fortnight", "--out", "{out}"], 2,
      "--surfacing-interval")
+nc_case("cli-truth-file-missing", forecast(), "--truth: NetCDF file 'nothere.nc'", extra=("--truth", "nothere.nc"))
 case("cli-radius-zero", ["--radius", "0", "--out", "{out}"], 2, "--radius")
 case("cli-truth-with-mission", ["--mission", "m.yaml", "--truth", "forecast", "--out", "{out}"], 2,
      "cannot be combined", {"m.yaml": MISSION})
