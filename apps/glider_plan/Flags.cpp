@@ -61,6 +61,20 @@ Point2 pair(const std::string &flag, const std::string &text)
     return {number(flag, text.substr(0, comma)), number(flag, text.substr(comma + 1))};
 }
 
+/// The comma-separated items of a flag's value, empty ones included ("a,,b" -> a, "", b).
+std::vector<std::string> commaItems(const std::string &text)
+{
+    std::vector<std::string> items;
+    std::size_t at = 0;
+    while (at <= text.size())
+    {
+        const std::size_t comma = std::min(text.find(',', at), text.size());
+        items.push_back(text.substr(at, comma - at));
+        at = comma + 1;
+    }
+    return items;
+}
+
 /// Four numbers separated by commas (--region).
 std::array<double, 4> quad(const std::string &flag, const std::string &text)
 {
@@ -121,11 +135,8 @@ void applyExecution(const Flags &f, MissionSpec &m)
         {
             // the built-in flow with other parameters: NAME=VALUE,... (e.g. B0=1.3,c=0.14)
             const CurrentFieldKind *kind = findCurrentFieldKind(m.current.type);
-            std::size_t at = 0;
-            while (at < f.truth.size())
+            for (const std::string &item : commaItems(f.truth))
             {
-                const std::size_t comma = std::min(f.truth.find(',', at), f.truth.size());
-                const std::string item = f.truth.substr(at, comma - at);
                 const std::size_t eq = item.find('=');
                 bool known = false;
                 if (eq != std::string::npos && kind)
@@ -141,7 +152,6 @@ void applyExecution(const Flags &f, MissionSpec &m)
                                      "'s parameters (" + names + "), got '" + item + "'"};
                 }
                 t.parameters[item.substr(0, eq)] = number("--truth", item.substr(eq + 1));
-                at = comma + 1;
             }
         }
         e.truth = t;
@@ -151,8 +161,7 @@ void applyExecution(const Flags &f, MissionSpec &m)
         try
         {
             e.surfacingInterval =
-                parseDuration(f.surfacingInterval, m.timeUnitSeconds,
-                              m.current.type == "netcdf" || m.timeUnitSeconds != 1.0 || m.epoch.has_value());
+                parseDuration(f.surfacingInterval, m.timeUnitSeconds, m.hasTimeUnit());
         }
         catch (const ompl_glider::Error &err)
         {
@@ -162,11 +171,8 @@ void applyExecution(const Flags &f, MissionSpec &m)
     if (!f.strategies.empty())
     {
         e.strategies.clear();
-        std::size_t at = 0;
-        while (at <= f.strategies.size())
+        for (const std::string &name : commaItems(f.strategies))
         {
-            const std::size_t comma = std::min(f.strategies.find(',', at), f.strategies.size());
-            const std::string name = f.strategies.substr(at, comma - at);
             if (!parseControlStrategy(name))
                 throw UsageError{"--strategies: unknown strategy '" + name +
                                  "' (expected a comma-separated list of current_sensitive, current_blind, greedy, "
@@ -174,7 +180,6 @@ void applyExecution(const Flags &f, MissionSpec &m)
             if (std::find(e.strategies.begin(), e.strategies.end(), name) != e.strategies.end())
                 throw UsageError{"--strategies: '" + name + "' is listed twice"};
             e.strategies.push_back(name);
-            at = comma + 1;
         }
     }
     if (f.radius)
@@ -230,15 +235,12 @@ void applySettings(const Flags &f, MissionSpec &m)
 std::vector<double> speedList(const std::string &text)
 {
     std::vector<double> v;
-    std::size_t at = 0;
-    while (at <= text.size())
+    for (const std::string &item : commaItems(text))
     {
-        const std::size_t comma = std::min(text.find(',', at), text.size());
-        const double x = number("--speeds", text.substr(at, comma - at));
+        const double x = number("--speeds", item);
         if (!(x > 0.0))
-            throw UsageError{"--speeds: every speed must be > 0, got " + text.substr(at, comma - at)};
+            throw UsageError{"--speeds: every speed must be > 0, got " + item};
         v.push_back(x);
-        at = comma + 1;
     }
     return v;
 }

@@ -288,6 +288,13 @@ struct MissionSpec
     /// command-line flag. Checks made after loading (those that need the field or the region) name it with place().
     std::map<std::string, SourceMark> marks;
 
+    /// @brief True when the mission's time unit is known in seconds (a forecast, units.time_s, or an epoch), so that
+    /// durations such as "1 h" can be converted (parseDuration()).
+    bool hasTimeUnit() const
+    {
+        return current.type == "netcdf" || timeUnitSeconds != 1.0 || epoch.has_value();
+    }
+
     /// @brief "m.yaml:12: field 'planner.grid_size'", "--grid-size" for a flag, or "m.yaml: field '...'" when the
     /// value was not given (a default).
     std::string place(const std::string &field) const;

@@ -569,8 +569,7 @@ double duration(const Reader &r, const YAML::Node &n, const std::string &f, cons
         r.fail(n, f, "expected a duration: a number in the mission's time unit, or e.g. '1 h', '30 min', '2 d'");
     try
     {
-        return parseDuration(n.Scalar(), m.timeUnitSeconds,
-                             m.current.type == "netcdf" || m.timeUnitSeconds != 1.0 || m.epoch.has_value());
+        return parseDuration(n.Scalar(), m.timeUnitSeconds, m.hasTimeUnit());
     }
     catch (const Error &e)
     {
