@@ -162,6 +162,8 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)
     ctx->region.zMin = ctx->region.zMax = p.travel.depth;
     ctx->region.tMin = p.t0;
     ctx->region.tMax = p.t0 + p.horizon;
+    ctx->arriveNotBefore = p.arriveNotBefore;
+    ctx->arriveNotAfter = p.arriveNotAfter;
     const double cmax = ctx->maxCurrent();
     if (!(cmax >= 0.0) || !std::isfinite(cmax))
         throw Error("GliderProblem: the field '" + p.field->name() +

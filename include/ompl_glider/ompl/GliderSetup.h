@@ -29,6 +29,10 @@ struct GliderProblem
     double goalX{std::numeric_limits<double>::quiet_NaN()};
     double goalY{std::numeric_limits<double>::quiet_NaN()};
     double goalTolerance{1e-3};  ///< xy distance within which the goal counts as reached
+    /// Arrival window at the goal (absolute times; GliderContext::arriveNotBefore / arriveNotAfter). Unbounded
+    /// by default.
+    double arriveNotBefore{-std::numeric_limits<double>::infinity()};
+    double arriveNotAfter{std::numeric_limits<double>::infinity()};
 };
 
 /// @brief Checks the start and goal of a problem definition on a TimeSE2StateSpace before planning: every start
