@@ -1,6 +1,7 @@
 #include "ompl_glider/environment/Polygon.h"
 
 #include <algorithm>
+#include <limits>
 #include <cfloat>
 #include <cmath>
 #include <sstream>
@@ -256,6 +257,22 @@ bool Polygon::contains(double x, double y) const
         }
     }
     return inside;
+}
+
+double Polygon::signedDistance(double x, double y) const
+{
+    double best = std::numeric_limits<double>::infinity();
+    for (const Edge &e : edges_)
+    {
+        const double ex = e.bx - e.ax, ey = e.by - e.ay;
+        const double len2 = ex * ex + ey * ey;
+        double s = len2 > 0.0 ? ((x - e.ax) * ex + (y - e.ay) * ey) / len2 : 0.0;
+        s = std::clamp(s, 0.0, 1.0);
+        const double dx = x - (e.ax + s * ex), dy = y - (e.ay + s * ey);
+        best = std::min(best, dx * dx + dy * dy);
+    }
+    const double d = std::sqrt(best);
+    return contains(x, y) ? d : -d;
 }
 
 template <typename F>

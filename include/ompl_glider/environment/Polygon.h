@@ -71,6 +71,11 @@ public:
     /// intervals (a touch at a single vertex gives a degenerate interval [s, s]).
     std::vector<Interval> segmentInsideIntervals(double ax, double ay, double bx, double by) const;
 
+    /// @brief Signed Euclidean distance from (x, y) to the polygon's boundary (outer ring and holes): positive
+    /// inside, negative outside, 0 on it. Exact (minimum over every edge of the point-segment distance, sign by
+    /// contains()); cost linear in the number of edges. Used by the level-set planner to keep its front out of the
+    /// polygon ([LollaLevelSet]; obstacles enter as phi = max(phi, d)).
+    double signedDistance(double x, double y) const;
     /// @brief Bounding box of the outer ring.
     const BoundingBox &bounds() const
     {

@@ -1,0 +1,127 @@
+#pragma once
+/// @file LevelSet.h
+/// @brief Reachability by a level-set equation: the set a glider can reach from a start by each time, its first
+/// arrival time everywhere, the time-optimal path by backtracking, and isochrones ([LollaLevelSet], issue 12).
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "ompl_glider/Geometry.h"
+#include "ompl_glider/ompl/GliderContext.h"
+
+namespace ompl_glider
+{
+/// @brief Resolution and numerics of the level-set solver.
+struct LevelSetParams
+{
+    double cellSize{0.05};  ///< grid spacing h (the field's length unit); > 0
+    double cfl{1.5};        ///< time step dt = cfl * h / (V + max|c|); in (0, 2] (semi-Lagrangian: stable beyond 1)
+    double band{6.0};       ///< narrow band: phi is kept within +-band cells of the front; in [4, 50]
+    unsigned threads{0};    ///< threads sharing each step (0: all cores)
+    int reinitEvery{4};     ///< reinitialise phi to a signed distance every this many steps (0: never)
+    bool iceForbidden{true};  ///< ice zones are kept out of the front (the glider cannot surface there); false: they
+                              ///< are ignored (the limit on the time under ice is not modelled either way)
+};
+
+/// @brief A position at a time (a point of a backtracked path).
+struct TimedPoint
+{
+    double x{0.0};
+    double y{0.0};
+    double t{0.0};
+};
+
+/// @brief Work done by one solve.
+struct LevelSetStats
+{
+    std::uint64_t steps{0};        ///< time steps taken
+    std::uint64_t nodeUpdates{0};  ///< node updates (the narrow band's work)
+    std::uint64_t currentCalls{0}; ///< current-model calls (CMC)
+    double seconds{0.0};           ///< wall time
+    unsigned threads{1};           ///< threads used
+    double dt{0.0};                ///< time step
+    std::size_t nodes{0};          ///< grid nodes
+};
+
+/// @brief What one solve gives: the first-arrival field on the grid, the goal's arrival and the optimal path.
+struct Reachability
+{
+    double x0{0.0}, y0{0.0}, h{1.0};  ///< node (i, j) is at (x0 + i h, y0 + j h)
+    int nx{0}, ny{0};                 ///< node counts
+    double t0{0.0};                   ///< departure time
+    /// First arrival time per node (index j * nx + i; absolute time); +inf where the front never came.
+    std::vector<double> arrival;
+    bool goalReached{false};          ///< the front reached the goal (within the time limit)
+    double goalTime{std::numeric_limits<double>::infinity()};  ///< first arrival at the goal (absolute)
+    /// Time-optimal path from the start (t0) to the goal (goalTime) by backtracking; empty without a goal. A hold
+    /// appears as two points at the same position.
+    std::vector<TimedPoint> path;
+    LevelSetStats stats;
+
+    /// @brief First arrival time at (x, y) by bilinear interpolation of the nodes (+inf where a corner is unreached
+    /// or outside the grid).
+    double arrivalAt(double x, double y) const;
+    /// @brief The boundary of the set reached by time @p t ({T <= t}): polylines (closed ones repeat their first
+    /// point) by marching squares on the arrival field.
+    std::vector<std::vector<Point2>> isochrone(double t) const;
+};
+
+/// @brief The level-set solver: the reachable set from a start at t0 is {phi <= 0} with
+///   phi_t + V |grad phi| + c(x, t) . grad phi = 0  ([LollaLevelSet]),
+/// on a uniform grid over the context's region, forbidden regions kept outside the front.
+///
+/// Scheme (semi-Lagrangian, one step t -> t + dt): the set reachable at t + dt is the set of points x = y +
+/// dt (c + V u), |u| <= 1, with y reachable at t, so phi(x, t + dt) = min over |u| <= 1 of phi(y(u), t), the
+/// departure point y(u) = x - dt (c(x_m, t + dt/2) + V u) by the midpoint rule (x_m = x - dt/2 (c(x, t + dt) +
+/// V u)). The minimum over the disc of headings is taken at the heading along grad phi (exact for a locally
+/// linear phi) and at two headings 0.3 rad to each side of it (the kinks where fronts meet). phi between nodes is
+/// bicubic (Catmull-Rom) with a monotone limiter (clipped to the cell's corner values): bilinear is too diffusive,
+/// an unlimited cubic overshoots at the band's edge and at obstacles. The splitting of the two terms into an
+/// upwind expansion and an advection step, which fails where |c| > V, is not used: the departure point moves with
+/// both at once.
+///
+/// Start: the exact reachable disc of the first instant (centre start + dt0 c(start), radius V dt0, dt0 chosen so
+/// the radius is two cells), with first arrivals inside it solved in closed form.
+/// Forbidden regions: after each step phi = max(phi, d(x, t)), d the signed distance to the forbidden set
+/// (positive inside): exact for polygons (static regions; time-windowed zones while closed; ice zones at their
+/// drifted position unless iceForbidden is false), from the node mask for land (the field's inWater()) and for any
+/// other Environment (pointFree() at the nodes). Points outside the region are unreachable.
+/// Narrow band: phi is clipped to +-band h; only 16 x 16 tiles holding an unclipped value, and their neighbours,
+/// are updated; the tiles of a step are shared by the threads.
+/// First arrival T(x) = the time phi(x) first becomes <= 0, linear in phi within the step; the goal's by the
+/// interpolated phi at the goal.
+/// Backtracking: from the goal at its arrival time back in time with dx/dt = c + V n, n = grad T / |grad T| (the
+/// front's outward normal at the point it passes at that time), midpoint rule; where T(x) is earlier than the
+/// path's time by more than a tolerance the glider held there (it arrived earlier and waited, e.g. for a lane to
+/// open): the path holds until T(x), if |c| < V there.
+/// Memory: three doubles per node (phi twice, T), nothing per step.
+class LevelSetSolver
+{
+public:
+    /// @throws Error for a null context or a parameter out of range, or when the grid would exceed the memory limit
+    LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSetParams params = {});
+    ~LevelSetSolver();
+
+    /// @brief Propagates the front from (sx, sy) at t0 until @p tEnd, or until the goal is reached when
+    /// @p goal is given and @p stopAtGoal. Checks @p stop (if any) every step and returns what it has when it
+    /// answers true.
+    Reachability solve(double sx, double sy, double t0, double tEnd, const std::optional<Point2> &goal,
+                       bool stopAtGoal = true, const std::function<bool()> &stop = {}) const;
+
+    /// @brief The parameters in use.
+    const LevelSetParams &params() const
+    {
+        return params_;
+    }
+
+private:
+    struct Impl;
+    std::shared_ptr<const GliderContext> ctx_;
+    LevelSetParams params_;
+    std::unique_ptr<Impl> impl_;
+};
+}  // namespace ompl_glider
