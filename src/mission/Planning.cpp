@@ -18,6 +18,7 @@
 #include "ompl_glider/planners/PlannerRegistry.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
+#include "ompl_glider/reachability/LevelSetPlanner.h"
 #include "ompl_glider/reference/ZermeloReference.h"
 #include "ompl_glider/stints/PathToStints.h"
 #include "ompl_glider/stints/StintPlanner.h"
@@ -170,6 +171,12 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
                 break;
         }
     }
+    if (const auto *l = dynamic_cast<const LevelSetPlanner *>(&planner);
+        l && status == ompl::base::PlannerStatus::ABORT)
+        return l->lastReachability().goalReached ?
+                   "the level-set path cannot be flown as straight legs at this resolution: try a finer one" :
+                   "the reachable front never reaches the goal within the time window (walled in by land or "
+                   "forbidden regions, or a closure that does not open in time)";
     if (status == ompl::base::PlannerStatus::APPROXIMATE_SOLUTION)
         return "the planner reached only an approximate solution within the time limit";
     if (status == ompl::base::PlannerStatus::TIMEOUT)
@@ -311,8 +318,9 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
 
     const bool lattice = plannerEntry(m.planner.name).lattice;
     const bool stints = plannerEntry(m.planner.name).stints;  // its own caps bound the work, as the lattice's
-    const double limit =
-        m.planner.timeLimit > 0 ? m.planner.timeLimit : (lattice || stints ? 0.0 : kDefaultSamplingTimeLimit);
+    const bool exhaustive = plannerEntry(m.planner.name).exhaustive;
+    const double limit = m.planner.timeLimit > 0 ? m.planner.timeLimit :
+                         (lattice || stints || exhaustive ? 0.0 : kDefaultSamplingTimeLimit);
     const std::uint64_t cfc0 = ctx->travel->costFunctionCalls(), cmc0 = ctx->field->callCount();
     const auto tA = std::chrono::steady_clock::now();
     const ompl::base::PlannerStatus status =

@@ -16,6 +16,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
+#include "ompl_glider/reachability/LevelSetPlanner.h"
 #include "ompl_glider/stints/StintPlanner.h"
 
 namespace ompl_glider
@@ -53,6 +54,18 @@ PlannerEntry sampling(const std::string &name, std::vector<std::string> aliases,
     };
     return e;
 }
+PlannerEntry levelSet()
+{
+    PlannerEntry e;
+    e.name = "LevelSet";
+    e.aliases = {"level_set", "levelset"};
+    e.description = "level-set reachability front, the continuous optimum (parameter resolution)";
+    e.exhaustive = true;
+    e.make = [](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &ctx) {
+        return std::make_shared<LevelSetPlanner>(si, ctx);
+    };
+    return e;
+}
 PlannerEntry stint(StintMethod method, std::vector<std::string> aliases, const std::string &what)
 {
     PlannerEntry e;
@@ -75,6 +88,7 @@ const std::vector<PlannerEntry> &plannerRegistry()
         lattice("A*TVE", {"astartve", "AStarTVE"}, "TVE with the admissible A* heuristic"),
         lattice("ZTVE", {"ztve"}, "TVE with Zermelo pruning"),
         lattice("ZA*TVE", {"zastartve", "ZAStarTVE"}, "TVE with A* heuristic and certified Zermelo pruning (default)"),
+        levelSet(),
         sampling<og::RRTstar>("RRTstar", {"RRT*"}, "OMPL RRT*"),
         sampling<og::InformedRRTstar>("InformedRRTstar", {"InformedRRT*"}, "OMPL Informed RRT*"),
         sampling<og::PRM>("PRM", {}, "OMPL PRM"),

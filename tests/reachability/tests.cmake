@@ -1,2 +1,2 @@
 # tests of reachability/
-glider_add_test(test_reachability ${CMAKE_CURRENT_LIST_DIR}/TestLevelSet.cpp)
+glider_add_test(test_reachability ${CMAKE_CURRENT_LIST_DIR}/TestLevelSet.cpp ${CMAKE_CURRENT_LIST_DIR}/TestLevelSetPlanner.cpp)

@@ -21,6 +21,7 @@ struct PlannerEntry
     std::vector<std::string> aliases;  ///< other accepted spellings (matched without regard to case)
     std::string description;           ///< one line for --help and the docs
     bool lattice{false};               ///< a ZAStarTVE configuration (grid_size / sectors apply)
+    bool exhaustive{false};            ///< runs to its own end, like the lattice (no default time limit): LevelSet
     bool stints{false};                ///< a StintPlanner method: flies constant-bearing stints (a mission's
                                        ///< `stints` section applies; [IsernObstacles])
     /// Makes the planner on the problem's space information; ctx is the problem's context.

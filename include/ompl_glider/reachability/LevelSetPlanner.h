@@ -1,0 +1,99 @@
+#pragma once
+/// @file LevelSetPlanner.h
+/// @brief The level-set solver as an OMPL planner ("LevelSet", issue 12).
+
+#include <memory>
+
+#include <ompl/base/Planner.h>
+
+#include "ompl_glider/ompl/GliderContext.h"
+#include "ompl_glider/planners/TveSearch.h"
+#include "ompl_glider/reachability/LevelSet.h"
+
+namespace ompl_glider
+{
+/// @brief Time-optimal path by the level-set solver (LevelSetSolver, [LollaLevelSet]): the front is propagated from
+/// the start state (its time is the departure) until it reaches the goal position, and the path is backtracked.
+///
+/// The returned PathGeometric (TimeSE2 states) is valid under TravelTimeMotionValidator: the backtracked points are
+/// thinned to straight legs that stay within a third of a cell of the backtracked curve, and timed by the project's
+/// travel-time code from the departure (fastest pace); where the backtracked path holds (it arrived earlier than
+/// needed, e.g. before a lane opens), the path holds too (two states at one position) when the glider can hold there.
+/// Its cost is therefore the travel-time code's time of those legs, close to, not equal to, the front's arrival
+/// time getLevelSetTime() (the continuous optimum at this resolution; the reference figure).
+///
+/// Declared parameters: "resolution" (cell size, the field's length unit; 0: 1/200 of the region's larger side),
+/// "cfl", "threads". Outcomes: EXACT_SOLUTION; ABORT when the front never reaches the goal within the region's time
+/// window (no path: walled in, a lane that never opens); TIMEOUT when the termination condition stopped it;
+/// INVALID_START / INVALID_GOAL outside the region; UNRECOGNIZED_GOAL_TYPE for goals without a position.
+class LevelSetPlanner : public ompl::base::Planner
+{
+public:
+    LevelSetPlanner(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx);
+    ~LevelSetPlanner() override;
+
+    ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
+    void clear() override;
+
+    /// @brief Cell size (0: automatic). @throws Error when negative or not finite.
+    void setResolution(double h);
+    double getResolution() const
+    {
+        return resolution_;
+    }
+    /// @brief The cell size used by the last solve.
+    double getUsedResolution() const
+    {
+        return usedResolution_;
+    }
+    /// @brief Time step factor (LevelSetParams::cfl).
+    void setCfl(double c);
+    double getCfl() const
+    {
+        return params_.cfl;
+    }
+    /// @brief Threads (0: all cores).
+    void setThreads(unsigned n)
+    {
+        params_.threads = n;
+    }
+    unsigned getThreads() const
+    {
+        return params_.threads;
+    }
+
+    /// @brief Arrival time minus departure of the front at the goal in the last solve (+inf when not reached).
+    double getLevelSetTime() const
+    {
+        return levelSetTime_;
+    }
+    /// @brief The last solve's reachability (arrival field, backtracked path, work done).
+    const Reachability &lastReachability() const
+    {
+        return last_;
+    }
+    /// @brief The last solve's path as waypoints (the states of the returned path).
+    const std::vector<TimedWaypoint> &getWaypoints() const
+    {
+        return waypoints_;
+    }
+
+private:
+    std::shared_ptr<const GliderContext> ctx_;
+    LevelSetParams params_;
+    double resolution_{0.0};
+    double usedResolution_{0.0};
+    double levelSetTime_{0.0};
+    Reachability last_;
+    std::vector<TimedWaypoint> waypoints_;
+};
+
+/// @brief The cell size LevelSetPlanner uses for resolution 0: 1/200 of the region's larger side.
+double defaultLevelSetResolution(const GliderContext &ctx);
+
+/// @brief A backtracked level-set path (LevelSetSolver) as waypoints a glider flies: thinned to straight legs within
+/// @p tolerance of the curve and free of forbidden regions, timed by the travel-time code from the first point's
+/// time; holds kept where the glider can hold. Empty when no timing is feasible.
+std::vector<TimedWaypoint> levelSetWaypoints(const GliderContext &ctx, const std::vector<TimedPoint> &path,
+                                             double tolerance);
+}  // namespace ompl_glider

@@ -1,0 +1,239 @@
+#include "ompl_glider/reachability/LevelSetPlanner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <ompl/base/goals/GoalState.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Console.h>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/ompl/PositionGoal.h"
+#include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "ompl_glider/planners/PathSmoother.h"
+
+namespace ompl_glider
+{
+namespace
+{
+using TimeState = TimeSE2StateSpace::StateType;
+
+double segmentDistance(const TimedPoint &p, const TimedPoint &a, const TimedPoint &b)
+{
+    const double ex = b.x - a.x, ey = b.y - a.y, l2 = ex * ex + ey * ey;
+    double s = l2 > 0.0 ? ((p.x - a.x) * ex + (p.y - a.y) * ey) / l2 : 0.0;
+    s = std::clamp(s, 0.0, 1.0);
+    return std::hypot(p.x - a.x - s * ex, p.y - a.y - s * ey);
+}
+
+/// |c| < V at (x, y) over [t1, t2], sampled at 64 times at least.
+bool holdable(const GliderContext &ctx, double x, double y, double t1, double t2)
+{
+    const double V = ctx.speed(), z = ctx.travel->params().depth;
+    const int n = 64;
+    for (int k = 0; k <= n; ++k)
+    {
+        const Velocity c = ctx.field->velocity(x, y, z, t1 + (t2 - t1) * k / n);
+        if (!(std::hypot(c.u, c.v) < V))
+            return false;
+    }
+    return true;
+}
+}  // namespace
+
+double defaultLevelSetResolution(const GliderContext &ctx)
+{
+    const Region &r = ctx.region;
+    return std::max(r.xMax - r.xMin, r.yMax - r.yMin) / 200.0;
+}
+
+std::vector<TimedWaypoint> levelSetWaypoints(const GliderContext &ctx, const std::vector<TimedPoint> &path,
+                                             double tolerance)
+{
+    std::vector<TimedWaypoint> out;
+    if (path.size() < 2)
+        return out;
+    const auto same = [&](std::size_t i, std::size_t j) { return path[i].x == path[j].x && path[i].y == path[j].y; };
+    double t = path.front().t;
+    out.push_back({path.front().x, path.front().y, t});
+    std::size_t a = 0;
+    const std::size_t n = path.size();
+    bool heldHere = false;
+    while (a + 1 < n)
+    {
+        if (same(a, a + 1))
+        {
+            // The backtracked path holds here: hold until its time if the glider can.
+            if (path[a + 1].t > t && holdable(ctx, path[a].x, path[a].y, t, path[a + 1].t))
+            {
+                t = path[a + 1].t;
+                out.push_back({path[a].x, path[a].y, t});
+            }
+            ++a;
+            continue;
+        }
+        // Farthest point whose chord stays within the tolerance of the curve (no hold in between).
+        std::size_t best = a + 1;
+        for (std::size_t j = a + 2; j < n && j - a <= 512 && !same(j - 1, j); ++j)
+        {
+            bool ok = true;
+            for (std::size_t k = a + 1; k < j && ok; ++k)
+                ok = segmentDistance(path[k], path[a], path[j]) <= tolerance;
+            if (!ok)
+                break;
+            best = j;
+        }
+        double tt = std::numeric_limits<double>::infinity();
+        std::size_t j = best;
+        for (; j > a; --j)
+        {
+            tt = legTravelTime(ctx, path[a].x, path[a].y, path[j].x, path[j].y, t);
+            if (std::isfinite(tt))
+                break;
+        }
+        if (!std::isfinite(tt))
+        {
+            // Blocked now: the level set waited here (a lane not yet open). Its time steps straddle the opening, so
+            // hold until the first departure (on a fine time grid, up to a few of its steps past its own time) at
+            // which the next leg is free, where the glider can hold.
+            j = a + 1;
+            const double step = std::max(path[a + 1].t - path[a].t, 1e-9) / 4.0;
+            const double from = std::max(t, path[a].t);
+            bool found = false;
+            for (int m = 0; m <= 64 && !found && !heldHere; ++m)
+            {
+                const double dep = from + m * step;
+                if (dep > t && !holdable(ctx, path[a].x, path[a].y, t, dep))
+                    break;
+                tt = legTravelTime(ctx, path[a].x, path[a].y, path[j].x, path[j].y, dep);
+                if (std::isfinite(tt))
+                {
+                    if (dep > t)
+                        out.push_back({path[a].x, path[a].y, dep});
+                    t = dep;
+                    found = true;
+                }
+            }
+            if (!found)
+                return {};
+            heldHere = true;
+        }
+        else
+            heldHere = false;
+        t += tt;
+        out.push_back({path[j].x, path[j].y, t});
+        a = j;
+    }
+    return out;
+}
+
+LevelSetPlanner::LevelSetPlanner(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx)
+    : ompl::base::Planner(si, "LevelSet"), ctx_(std::move(ctx))
+{
+    if (!ctx_ || !ctx_->field || !ctx_->travel)
+        throw Error("LevelSet: the problem context is null or has no field");
+    specs_.approximateSolutions = false;
+    specs_.optimizingPaths = true;
+    specs_.multithreaded = true;
+    declareParam<double>("resolution", this, &LevelSetPlanner::setResolution, &LevelSetPlanner::getResolution,
+                         "0:0.001:1000000");
+    declareParam<double>("cfl", this, &LevelSetPlanner::setCfl, &LevelSetPlanner::getCfl, "0.1:0.1:2");
+    declareParam<unsigned>("threads", this, &LevelSetPlanner::setThreads, &LevelSetPlanner::getThreads, "0:1:64");
+    addPlannerProgressProperty("level set time REAL", [this] { return std::to_string(levelSetTime_); });
+    addPlannerProgressProperty("resolution REAL", [this] { return std::to_string(usedResolution_); });
+}
+
+LevelSetPlanner::~LevelSetPlanner() = default;
+
+void LevelSetPlanner::setResolution(double h)
+{
+    if (!(h >= 0.0) || !std::isfinite(h))
+        throw Error("LevelSet: resolution must be >= 0 (0: automatic), got " + std::to_string(h));
+    resolution_ = h;
+}
+
+void LevelSetPlanner::setCfl(double c)
+{
+    if (!(c > 0.0 && c <= 2.0))
+        throw Error("LevelSet: cfl must be in (0, 2], got " + std::to_string(c));
+    params_.cfl = c;
+}
+
+void LevelSetPlanner::clear()
+{
+    Planner::clear();
+    last_ = Reachability();
+    waypoints_.clear();
+    levelSetTime_ = 0.0;
+}
+
+ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTerminationCondition &ptc)
+{
+    checkValidity();
+    if (pdef_->getStartStateCount() == 0)
+    {
+        OMPL_ERROR("%s: invalid start: no start state given", getName().c_str());
+        return ompl::base::PlannerStatus::INVALID_START;
+    }
+    const auto *st = pdef_->getStartState(0)->as<TimeState>();
+    const double sx = st->getX(), sy = st->getY(), t0 = st->getTime();
+    double gx = 0.0, gy = 0.0;
+    const ompl::base::GoalPtr &goal = pdef_->getGoal();
+    if (auto pg = std::dynamic_pointer_cast<PositionGoal>(goal))
+    {
+        gx = pg->getX();
+        gy = pg->getY();
+    }
+    else if (auto gs = std::dynamic_pointer_cast<ompl::base::GoalState>(goal))
+    {
+        gx = gs->getState()->as<TimeState>()->getX();
+        gy = gs->getState()->as<TimeState>()->getY();
+    }
+    else
+    {
+        OMPL_ERROR("%s: unknown goal type (need PositionGoal or GoalState)", getName().c_str());
+        return ompl::base::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
+    }
+    const Region &r = ctx_->region;
+    const auto inRegion = [&](double x, double y) { return x >= r.xMin && x <= r.xMax && y >= r.yMin && y <= r.yMax; };
+    if (!inRegion(sx, sy))
+        return ompl::base::PlannerStatus::INVALID_START;
+    if (!inRegion(gx, gy))
+        return ompl::base::PlannerStatus::INVALID_GOAL;
+
+    LevelSetParams p = params_;
+    p.cellSize = resolution_ > 0.0 ? resolution_ : defaultLevelSetResolution(*ctx_);
+    usedResolution_ = p.cellSize;
+    const LevelSetSolver solver(ctx_, p);
+    const double tEnd = std::min(r.tMax, ctx_->field->timeEnd());
+    last_ = solver.solve(sx, sy, t0, tEnd, Point2{gx, gy}, true, [&ptc] { return ptc(); });
+    waypoints_.clear();
+    if (!last_.goalReached)
+    {
+        levelSetTime_ = std::numeric_limits<double>::infinity();
+        if (ptc())
+            return ompl::base::PlannerStatus::TIMEOUT;
+        OMPL_INFORM("%s: the front never reaches the goal before the end of the time window (%llu steps)",
+                    getName().c_str(), static_cast<unsigned long long>(last_.stats.steps));
+        return ompl::base::PlannerStatus::ABORT;
+    }
+    levelSetTime_ = last_.goalTime - t0;
+    waypoints_ = levelSetWaypoints(*ctx_, last_.path, p.cellSize / 3.0);
+    if (waypoints_.empty())
+    {
+        OMPL_ERROR("%s: the backtracked path cannot be flown as straight legs (resolution %g)", getName().c_str(),
+                   p.cellSize);
+        return ompl::base::PlannerStatus::ABORT;
+    }
+    auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
+    waypointsToPath(waypoints_, *path);
+    const double cost = waypoints_.back().t - t0;
+    ompl::base::PlannerSolution sol(path);
+    sol.setPlannerName(getName());
+    if (pdef_->getOptimizationObjective())
+        sol.setOptimized(pdef_->getOptimizationObjective(), ompl::base::Cost(cost), true);
+    pdef_->addSolutionPath(sol);
+    return ompl::base::PlannerStatus::EXACT_SOLUTION;
+}
+}  // namespace ompl_glider

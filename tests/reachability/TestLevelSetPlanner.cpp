@@ -1,0 +1,157 @@
+// The LevelSet planner through OMPL's SimpleSetup (issue 12): exact solutions whose paths pass
+// PathGeometric::check() and whose travel time is the front's within the resolution, around islands, waiting out a
+// closed lane, and no path for a walled-in start; the name is in the planner registry.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include <ompl/geometric/PathGeometric.h>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/current/UniformCurrent.h"
+#include "ompl_glider/environment/ForbiddenRegions.h"
+#include "ompl_glider/environment/StaticRegion.h"
+#include "ompl_glider/environment/TimeWindowedZone.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/ompl/GliderSetup.h"
+#include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/planners/ZAStarTVE.h"
+#include "ompl_glider/reachability/LevelSetPlanner.h"
+
+using namespace ompl_glider;
+
+namespace
+{
+struct LsRun
+{
+    ompl::base::PlannerStatus status;
+    std::shared_ptr<LevelSetPlanner> planner;
+    ompl::geometric::SimpleSetupPtr ss;
+    std::shared_ptr<GliderContext> ctx;
+};
+
+LsRun plan(const GliderProblem &p, double resolution)
+{
+    LsRun r;
+    r.ss = makeSimpleSetup(p, &r.ctx);
+    auto planner = plannerEntry("LevelSet").make(r.ss->getSpaceInformation(), r.ctx);
+    r.planner = std::dynamic_pointer_cast<LevelSetPlanner>(planner);
+    EXPECT_TRUE(r.planner);
+    EXPECT_TRUE(planner->params().setParam("resolution", std::to_string(resolution)));
+    r.ss->setPlanner(planner);
+    r.status = r.ss->solve(600.0);
+    return r;
+}
+
+double latticeTime(const GliderProblem &p)
+{
+    std::shared_ptr<GliderContext> ctx;
+    auto ss = makeSimpleSetup(p, &ctx);
+    auto z = std::make_shared<ZAStarTVE>(ss->getSpaceInformation(), ctx, "ZA*TVE");
+    z->setGridSize(0.2);
+    ss->setPlanner(z);
+    EXPECT_EQ(ss->solve(600.0), ompl::base::PlannerStatus::EXACT_SOLUTION);
+    return z->getWaypoints().back().t - p.t0;  // refined: the pipeline's best
+}
+}  // namespace
+
+TEST(LevelSetPlanner, JetAndIslandsGiveCheckedPathsNoSlowerThanRefinedLattice)
+{
+    GliderProblem p = gulfStreamProblem();
+    p.startX = 0.6;
+    p.startY = -2.6;
+    p.goalX = 9.4;
+    p.goalY = 2.6;
+    p.horizon = 40.0;
+    for (int withIslands = 0; withIslands < 2; ++withIslands)
+    {
+        SCOPED_TRACE(withIslands ? "islands" : "open water");
+        if (withIslands)
+        {
+            auto env = std::make_shared<ForbiddenRegions>();
+            env->add(std::make_shared<StaticRegion>("A", Polygon::regular(3.0, -1.6, 0.7, 40, 0.1, "A"), "island"));
+            env->add(std::make_shared<StaticRegion>(
+                "B", Polygon({{5.2, -0.4}, {6.6, -0.2}, {6.8, 1.2}, {6.1, 0.5}, {5.4, 1.0}}, {}, "B"), "island"));
+            p.environment = env;
+        }
+        const LsRun r = plan(p, 0.05);
+        ASSERT_EQ(r.status, ompl::base::PlannerStatus::EXACT_SOLUTION);
+        auto &path = static_cast<ompl::geometric::PathGeometric &>(*r.ss->getProblemDefinition()->getSolutionPath());
+        EXPECT_TRUE(path.check());  // every leg valid for the motion validator: no island crossed
+        const double flown = r.planner->getWaypoints().back().t - p.t0;
+        const double front = r.planner->getLevelSetTime();
+        const double lattice = latticeTime(p);
+        std::printf("%s: level set %.4f, its path flown %.4f (%zu waypoints), ZA*TVE refined %.4f\n",
+                    withIslands ? "islands" : "open water", front, flown, r.planner->getWaypoints().size(), lattice);
+        // The flown path is the front's within the resolution (legs timed by the travel-time code).
+        EXPECT_NEAR(flown, front, 0.01 * front);
+        // The level set is the continuous optimum: the refined lattice path is not faster (beyond its accuracy).
+        EXPECT_GE(lattice, front * (1 - 0.003));
+    }
+}
+
+TEST(LevelSetPlanner, WaitsOutAClosedLaneAndReportsNoPathWhenWalledIn)
+{
+    GliderProblem p;
+    p.field = std::make_shared<UniformCurrent>(0.0, 0.0);
+    p.travel.speed = 0.5;
+    p.xMin = 0;
+    p.xMax = 10;
+    p.yMin = -4;
+    p.yMax = 4;
+    p.horizon = 40;
+    p.startX = 1;
+    p.startY = 0;
+    p.goalX = 8;
+    p.goalY = 0;
+    auto env = std::make_shared<ForbiddenRegions>();
+    env->add(std::make_shared<StaticRegion>("north", Polygon::rectangle(3.0, 0.5, 3.5, 5.0, "north"), "island"));
+    env->add(std::make_shared<StaticRegion>("south", Polygon::rectangle(3.0, -5.0, 3.5, -0.5, "south"), "island"));
+    env->add(std::make_shared<TimeWindowedZone>("lane", Polygon::rectangle(3.0, -0.5, 3.5, 0.5, "lane"),
+                                                std::vector<Interval>{{0.0, 10.0}}));
+    p.environment = env;
+    {
+        const LsRun r = plan(p, 0.05);
+        ASSERT_EQ(r.status, ompl::base::PlannerStatus::EXACT_SOLUTION);
+        auto &path = static_cast<ompl::geometric::PathGeometric &>(*r.ss->getProblemDefinition()->getSolutionPath());
+        EXPECT_TRUE(path.check());
+        // Arrival: the lane opens at 10, then 5 units at V = 0.5 (the front's 20 within the resolution).
+        const double arrival = r.planner->getWaypoints().back().t;
+        EXPECT_NEAR(arrival, 20.0, 0.1);
+        EXPECT_GE(arrival, 20.0 - 1e-9);  // it cannot pass the lane before it opens
+        // The path holds (a repeated position with a later time).
+        bool holds = false;
+        const auto &w = r.planner->getWaypoints();
+        for (std::size_t k = 1; k < w.size(); ++k)
+            holds = holds || (w[k].x == w[k - 1].x && w[k].y == w[k - 1].y && w[k].t > w[k - 1].t + 1.0);
+        EXPECT_TRUE(holds);
+    }
+    {
+        // The lane never opens within the horizon: walled in, no path (ABORT, not a timeout).
+        auto env2 = std::make_shared<ForbiddenRegions>();
+        for (const auto &m : env->regions())
+            if (m->name() != "lane")
+                env2->add(m);
+        env2->add(std::make_shared<TimeWindowedZone>("lane", Polygon::rectangle(3.0, -0.5, 3.5, 0.5, "lane"),
+                                                     std::vector<Interval>{{0.0, 100.0}}));
+        p.environment = env2;
+        const LsRun r = plan(p, 0.1);
+        EXPECT_EQ(r.status, ompl::base::PlannerStatus::ABORT);
+        EXPECT_FALSE(r.ss->haveExactSolutionPath());
+        EXPECT_FALSE(r.planner->lastReachability().goalReached);
+    }
+}
+
+TEST(LevelSetPlanner, ParametersAreChecked)
+{
+    GliderProblem p = gulfStreamProblem();
+    std::shared_ptr<GliderContext> ctx;
+    auto ss = makeSimpleSetup(p, &ctx);
+    LevelSetPlanner planner(ss->getSpaceInformation(), ctx);
+    EXPECT_THROW(planner.setResolution(-1.0), Error);
+    EXPECT_THROW(planner.setCfl(0.0), Error);
+    EXPECT_THROW(planner.setCfl(3.0), Error);
+    EXPECT_NE(findPlanner("levelset"), nullptr);
+}
