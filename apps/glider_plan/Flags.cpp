@@ -232,6 +232,26 @@ void applySettings(const Flags &f, MissionSpec &m)
 }
 }  // namespace
 
+void applyOutputFlags(const Flags &f, MissionSpec &m)
+{
+    if (!f.isochroneInterval.empty())
+    {
+        try
+        {
+            m.outputs.isochroneInterval = parseDuration(f.isochroneInterval, m.timeUnitSeconds, m.hasTimeUnit());
+        }
+        catch (const ompl_glider::Error &err)
+        {
+            throw UsageError{std::string("--isochrone-interval: ") + err.what()};
+        }
+        if (!(m.outputs.isochroneInterval > 0.0))
+            throw UsageError{"--isochrone-interval: must be > 0, got '" + f.isochroneInterval + "'"};
+    }
+    if ((f.isochrones || !f.isochroneInterval.empty()) &&
+        std::find(m.outputs.files.begin(), m.outputs.files.end(), "isochrones") == m.outputs.files.end())
+        m.outputs.files.push_back("isochrones");
+}
+
 std::vector<double> speedList(const std::string &text)
 {
     std::vector<double> v;
@@ -303,6 +323,14 @@ void defineFlags(CLI::App &app, Flags &f)
         ->check(CLI::ExistingFile)
         ->group(io);
     app.add_flag("--verbose", f.verbose, "show OMPL's log messages")->group(io);
+    app.add_flag("--isochrones", f.isochrones,
+                 "also write isochrones.geojson: where the glider can be by times after the departure (level-set "
+                 "reachable set), drawn on the map too")
+        ->group(io);
+    app.add_option("--isochrone-interval", f.isochroneInterval,
+                   "time between isochrones: a number in the mission's time unit, or e.g. '12 h' (default: eight up "
+                   "to the arrival); implies --isochrones")
+        ->group(io);
     auto *ex = "Execution in another ocean (any of these flies the plan; not with --mission: use its execution section)";
     app.add_option("--truth", f.truth,
                    "the ocean the plan is flown in: 'forecast' (the planning field itself), with --currents another "
@@ -432,9 +460,11 @@ void checkCombinations(const CLI::App &app, const Flags &f)
         {
             const std::string name = o->get_name();
             if (o->count() > 0 && name != "--mission" && name != "--out" && name != "--speeds" &&
-                name != "--verbose" && name != "--optimum" && name != "--help")
+                name != "--verbose" && name != "--optimum" && name != "--isochrones" &&
+                name != "--isochrone-interval" && name != "--help")
                 throw UsageError{"--mission takes its settings from the mission file: " + name +
-                                 " cannot be combined with it (only --out, --speeds, --optimum and --verbose can)"};
+                                 " cannot be combined with it (only --out, --speeds, --optimum, --isochrones, "
+                                 "--isochrone-interval and --verbose can)"};
         }
         return;
     }

@@ -29,12 +29,19 @@ struct Flags
     std::optional<double> speed, gridSize, timeLimit, depth;
     std::optional<int> sectors;
     bool noSmooth{false}, noRefine{false}, optimum{false}, verbose{false};
+    // reachable-set contours (issue 12): --isochrones, --isochrone-interval
+    bool isochrones{false};
+    std::string isochroneInterval;
     // execution in another ocean (any of these enables it)
     std::string truth, surfacingInterval, strategies;
     std::optional<double> radius;
     std::optional<unsigned> executionPairs, executionSeed;
     ompl_glider::ForecastInput forecast;
 };
+
+/// @brief The output requests that go with every mode, --mission included: --isochrones and --isochrone-interval
+/// (which implies --isochrones) add the format "isochrones" to @p m's outputs. @throws UsageError naming the flag.
+void applyOutputFlags(const Flags &f, ompl_glider::MissionSpec &m);
 
 /// @brief Declares every flag on @p app, storing into @p f (which must outlive @p app).
 void defineFlags(CLI::App &app, Flags &f);

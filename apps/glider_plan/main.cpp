@@ -39,6 +39,7 @@ int run(const Flags &f)
                                              : builtInMission(f);
     if (!f.mission.empty() && !f.out.empty())
         spec.outputs.directory = f.out;
+    applyOutputFlags(f, spec);
     const bool write = !f.mission.empty() || !f.out.empty();
     if (write)
         checkOutputDirectory(spec.outputs.directory);

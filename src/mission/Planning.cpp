@@ -711,6 +711,8 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
         result.speedSweep = speedSweep(problem, tDep, speeds, options.progress);
     if (m.execution.enabled)
         result.execution = executeMission(problem, result.plan, options.progress);
+    if (std::find(m.outputs.files.begin(), m.outputs.files.end(), "isochrones") != m.outputs.files.end())
+        result.isochrones = computeIsochrones(problem, result.plan, tDep, m.outputs.isochroneInterval);
     result.wallSeconds = secondsSince(start);
     return result;
 }

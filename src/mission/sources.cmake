@@ -10,6 +10,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/loader/ForbiddenRegions.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Planning.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Isochrones.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionExecution.cpp
 )
 if(OMPL_GLIDER_WITH_NETCDF)

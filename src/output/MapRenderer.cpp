@@ -682,6 +682,8 @@ void MapRenderer::draw(void *context) const
     ly += 26;
     for (const MapPath &p : paths_)
     {
+        if (p.label.empty())  // a line without a legend entry (e.g. the further pieces of one isochrone)
+            continue;
         setColour(cr, p.colour);
         cairo_set_line_width(cr, p.width);
         if (p.dashed)

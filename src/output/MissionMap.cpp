@@ -227,6 +227,32 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
         opt.waypointMarkers = false;
         map.addPath(opt);
     }
+    if (r.isochrones && !r.isochrones->contours.empty())
+    {
+        // reachable-set contours ([ThompsonICRA] Fig. 4), light to dark with time, one legend entry
+        const auto &cs = r.isochrones->contours;
+        bool labelled = false;
+        for (std::size_t k = 0; k < cs.size(); ++k)
+        {
+            const double f = cs.size() > 1 ? static_cast<double>(k) / (cs.size() - 1) : 1.0;
+            for (const auto &line : cs[k].lines)
+            {
+                MapPath iso;
+                if (!labelled)
+                {
+                    iso.label = "reachable by +" + duration(r, cs.front().time - r.plan.departure, true) + " ... +" +
+                                duration(r, cs.back().time - r.plan.departure, true);
+                    labelled = true;
+                }
+                for (const Point2 &p : line)
+                    iso.waypoints.push_back({p.x, p.y, cs[k].time});
+                iso.colour = {0.55 - 0.35 * f, 0.25, 0.75 - 0.25 * f, 0.85};
+                iso.width = 1.2;
+                iso.waypointMarkers = false;
+                map.addPath(iso);
+            }
+        }
+    }
     if (r.execution && r.execution->runs.front().planned)
     {
         // the mission's own run flown in the truth, one track per strategy, surfacings marked

@@ -43,6 +43,12 @@ std::vector<OutputFile> formatFiles(const std::string &format, const MissionResu
         return {{"path.csv", [res](const std::string &p) { writeText(p, pathCsv(*res)); }}};
     if (format == "geojson")
         return {{"path.geojson", [res](const std::string &p) { writeText(p, routeGeoJson(*res)); }}};
+    if (format == "isochrones")
+    {
+        if (!r.isochrones)
+            return {};
+        return {{"isochrones.geojson", [res](const std::string &p) { writeText(p, isochronesGeoJson(*res)); }}};
+    }
     if (format == "stints")
     {
         if (!r.plan.stints)
@@ -163,6 +169,8 @@ const std::vector<OutputFormat> &outputFormats()
         {"csv", "waypoints.csv", "waypoints with times, lon/lat and dive profiles", true},
         {"path", "path.csv", "the final path: t,x,y,lon,lat", true},
         {"geojson", "path.geojson", "the path and its waypoints as GeoJSON", true},
+        {"isochrones", "isochrones.geojson",
+         "reachable-set contours (level set) at times after the departure, as GeoJSON, also drawn on the map", false},
         {"goto", "goto_lNN.ma", "Slocum goto list (geographic missions)", true},
         {"stints", "stints.csv", "heading per surfacing: time, position, heading, expected drift (missions with stints)",
          true},

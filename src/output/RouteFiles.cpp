@@ -117,6 +117,48 @@ std::vector<std::vector<LonLat>> splitAtAntimeridian(const std::vector<LonLat> &
     return pieces;
 }
 
+std::string isochronesGeoJson(const MissionResult &r)
+{
+    // One feature per time: a MultiLineString of the reachable set's boundary, lon/lat where geographic.
+    const bool geo = geographic(r);
+    nlohmann::ordered_json features = nlohmann::ordered_json::array();
+    if (r.isochrones)
+        for (const Isochrone &c : r.isochrones->contours)
+        {
+            nlohmann::ordered_json lines = nlohmann::ordered_json::array();
+            if (geo)
+                for (const auto &line : c.lonLat)
+                    for (const auto &part : splitAtAntimeridian(line))
+                    {
+                        nlohmann::ordered_json l = nlohmann::ordered_json::array();
+                        for (const LonLat &p : part)
+                            l.push_back(nlohmann::ordered_json::array({p.lon, p.lat}));
+                        lines.push_back(l);
+                    }
+            else
+                for (const auto &line : c.lines)
+                {
+                    nlohmann::ordered_json l = nlohmann::ordered_json::array();
+                    for (const Point2 &p : line)
+                        l.push_back(nlohmann::ordered_json::array({p.x, p.y}));
+                    lines.push_back(l);
+                }
+            features.push_back(
+                {{"type", "Feature"},
+                 {"properties",
+                  {{"time", jnum(c.time)},
+                   {"time_s", jnum(c.time * r.spec.timeUnitSeconds)},
+                   {"time_iso", c.iso.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(c.iso)},
+                   {"since_departure", jnum(c.time - r.plan.departure)}}},
+                 {"geometry", {{"type", "MultiLineString"}, {"coordinates", lines}}}});
+        }
+    nlohmann::ordered_json doc = {{"type", "FeatureCollection"},
+                                  {"name", r.spec.name + " isochrones"},
+                                  {"resolution", r.isochrones ? jnum(r.isochrones->resolution) : jnum(0.0)},
+                                  {"features", features}};
+    return doc.dump(1) + "\n";
+}
+
 std::string routeGeoJson(const MissionResult &r)
 {
     const bool geo = geographic(r);

@@ -226,6 +226,8 @@ struct OutputSpec
     bool gotoIncludeStart{false}; ///< also list the start position in the goto file
     std::string prefix;           ///< non-empty: also a copy of every file named <prefix>_<file> (a plain name)
     double mapTime{std::numeric_limits<double>::quiet_NaN()};  ///< time of the map's current arrows (NaN: departure)
+    /// Time between two isochrones (format "isochrones"; the mission's time unit); NaN: eight up to the arrival.
+    double isochroneInterval{std::numeric_limits<double>::quiet_NaN()};
 };
 
 /// @brief Flying the plan in another ocean (issue 13; [ThompsonICRA]): the "truth" current, the surfacings, the

@@ -16,6 +16,7 @@
 #include "ompl_glider/Progress.h"
 #include "ompl_glider/cost/DiveProfile.h"
 #include "ompl_glider/mission/DepartureTimeSearch.h"
+#include "ompl_glider/mission/Isochrones.h"
 #include "ompl_glider/mission/MissionExecution.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/planners/TveSearch.h"
@@ -171,6 +172,7 @@ struct MissionResult
     std::optional<OptimumReference> optimum;               ///< when asked (RunOptions::optimum)
     std::vector<SpeedSweepRow> speedSweep;  ///< speed sweep rows
     std::optional<ExecutionResult> execution;  ///< the plan flown in the truth (MissionSpec::execution)
+    std::optional<IsochroneSet> isochrones;    ///< reachable-set contours (output format "isochrones")
     double wallSeconds{0.0};                ///< whole run
 };
 

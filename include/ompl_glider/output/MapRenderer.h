@@ -50,7 +50,7 @@ struct MapPolygon
 /// @brief A path drawn as a polyline through its waypoints.
 struct MapPath
 {
-    std::string label;                   ///< legend entry ("ZA*TVE raw", "smoothed", ...)
+    std::string label;                   ///< legend entry ("ZA*TVE raw", "smoothed", ...); empty: none
     std::vector<TimedWaypoint> waypoints;  ///< positions and arrival times
     Rgba colour{0.85, 0.10, 0.10, 1.0};  ///< line colour
     double width{2.5};                   ///< line width in pixels

@@ -35,6 +35,11 @@ std::vector<std::vector<LonLat>> splitAtAntimeridian(const std::vector<LonLat> &
 /// antimeridian (splitAtAntimeridian()) when it crosses it.
 std::string routeGeoJson(const MissionResult &result);
 
+/// @brief isochrones.geojson: one Feature per isochrone time (MultiLineString, lon/lat where the problem is
+/// geographic, else the planning frame) with properties time (the mission's unit), time_s, time_iso (null without
+/// dates) and since_departure ([ThompsonICRA] Fig. 4; issue 12).
+std::string isochronesGeoJson(const MissionResult &result);
+
 /// @brief The Slocum goto list of the final path (without the start unless outputs.goto_include_start).
 /// @throws Error when the waypoints have no geographic coordinates.
 GotoList gotoList(const MissionResult &result);

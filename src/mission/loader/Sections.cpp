@@ -515,10 +515,29 @@ void readStints(const Reader &r, const YAML::Node &n, MissionSpec &m)
     }
 }
 
+namespace
+{
+/// A duration: a number in field units, or a text "<number> s|min|h|d" converted with units.time_s.
+double duration(const Reader &r, const YAML::Node &n, const std::string &f, const MissionSpec &m)
+{
+    if (!n.IsScalar())
+        r.fail(n, f, "expected a duration: a number in the mission's time unit, or e.g. '1 h', '30 min', '2 d'");
+    try
+    {
+        return parseDuration(n.Scalar(), m.timeUnitSeconds, m.hasTimeUnit());
+    }
+    catch (const Error &e)
+    {
+        r.fail(n, f, e.what());
+    }
+}
+}  // namespace
+
 void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "outputs";
-    r.checkMap(n, f, {"directory", "files", "goto_number", "goto_include_start", "prefix", "map_time"});
+    r.checkMap(n, f,
+               {"directory", "files", "goto_number", "goto_include_start", "prefix", "map_time", "isochrone_interval"});
     OutputSpec &o = m.outputs;
     if (n["directory"])
         o.directory = joinPath(r.dir(), r.text(n["directory"], f + ".directory"));
@@ -555,6 +574,12 @@ void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
     }
     if (n["map_time"])
         o.mapTime = r.time(n["map_time"], f + ".map_time", m);
+    if (n["isochrone_interval"])
+    {
+        o.isochroneInterval = duration(r, n["isochrone_interval"], f + ".isochrone_interval", m);
+        if (!(o.isochroneInterval > 0.0))
+            r.fail(n["isochrone_interval"], f + ".isochrone_interval", "must be > 0");
+    }
 }
 }  // namespace ompl_glider::mission_loader
 
@@ -562,20 +587,6 @@ namespace ompl_glider::mission_loader
 {
 namespace
 {
-/// A duration: a number in field units, or a text "<number> s|min|h|d" converted with units.time_s.
-double duration(const Reader &r, const YAML::Node &n, const std::string &f, const MissionSpec &m)
-{
-    if (!n.IsScalar())
-        r.fail(n, f, "expected a duration: a number in the mission's time unit, or e.g. '1 h', '30 min', '2 d'");
-    try
-    {
-        return parseDuration(n.Scalar(), m.timeUnitSeconds, m.hasTimeUnit());
-    }
-    catch (const Error &e)
-    {
-        r.fail(n, f, e.what());
-    }
-}
 }  // namespace
 
 void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
