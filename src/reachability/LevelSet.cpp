@@ -443,7 +443,7 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
     };
 
     // Initial front: the exact reachable disc after dt0 ([LollaLevelSet]: start from the first instant's disc).
-    const double r0 = 2.0 * g.h;
+    const double r0 = 4.0 * g.h;  // 2 cells leave a dent in the front that persists; 3-6 agree
     const double dt0 = r0 / V;
     const Velocity c0 = field.velocity(sx, sy, z, t0 + 0.5 * dt0);
     const double cxs = sx + dt0 * c0.u, cys = sy + dt0 * c0.v;
@@ -502,13 +502,14 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
     out.stats.threads = pool.size();
     const double dth = 0.25;
     // One node's new value: the minimum of phi over the departure disc ([LollaLevelSet]; see the class comment).
-    const double r = V * dt;
+    double ds = dt;  // this step's length (shortened to end at a zone's opening or closing)
+    double r = V * ds;
     const auto update = [&](const std::vector<double> &f, double x, double y, double t1, double tm) {
         const Velocity c1 = field.velocity(x, y, z, t1);
         // Heading guess: the normal of the front at the departure point without the vehicle's own motion; where
         // phi is flat there (the band's clipped edge) the node's own neighbours, else a scan of 8 headings.
         double gx, gy;
-        g.gradient(f, x - dt * c1.u, y - dt * c1.v, gx, gy);
+        g.gradient(f, x - ds * c1.u, y - ds * c1.v, gx, gy);
         double gn = std::hypot(gx, gy);
         double nx = 1.0, ny = 0.0;
         const bool known = gn >= 0.2;  // phi stays close to a distance (|grad phi| ~ 1) near the front
@@ -517,8 +518,8 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
             nx = gx / gn;
             ny = gy / gn;
         }
-        const Velocity cm = field.velocity(x - 0.5 * dt * (c1.u + V * nx), y - 0.5 * dt * (c1.v + V * ny), z, tm);
-        const double qx = x - dt * cm.u, qy = y - dt * cm.v;
+        const Velocity cm = field.velocity(x - 0.5 * ds * (c1.u + V * nx), y - 0.5 * ds * (c1.v + V * ny), z, tm);
+        const double qx = x - ds * cm.u, qy = y - ds * cm.v;
         const auto at = [&](double a) { return g.cubic(f, qx - r * std::cos(a), qy - r * std::sin(a), band); };
         // The disc's centre (u = 0: drifting, or holding where |c| < V) covers minima inside the disc (the start).
         const double centre = g.cubic(f, qx, qy, band);
@@ -559,12 +560,27 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
     };
     std::uint64_t updates = 0;
     std::vector<double> reinitDist;
-    const std::size_t maxSteps = static_cast<std::size_t>(std::ceil((tEnd - t) / dt)) + 1;
+    // The times at which a time-windowed zone opens or closes: steps end there, so that a lane is not entered
+    // part of a step before it opens.
+    std::vector<double> events;
+    for (const Impl::Zone &zn : impl_->zones)
+        for (const Interval &w : zn.zone->windows())
+        {
+            events.push_back(w.lo);
+            events.push_back(w.hi);
+        }
+    std::sort(events.begin(), events.end());
+    const std::size_t maxSteps = static_cast<std::size_t>(std::ceil((tEnd - t) / dt)) + 1 + 2 * events.size();
     for (std::size_t step = 0; step < maxSteps && t < tEnd; ++step)
     {
         if (stop && stop())
             break;
-        const double t1 = t + dt, tm = t + 0.5 * dt;
+        ds = dt;
+        const auto ev = std::upper_bound(events.begin(), events.end(), t * (1 + 1e-12) + 1e-12);
+        if (ev != events.end() && *ev < t + dt)
+            ds = *ev - t;
+        r = V * ds;
+        const double t1 = t + ds, tm = t + 0.5 * ds;
         findActive();
         next = phi;  // tiles not updated keep their (clipped) values
         pool.parallelFor(activeTiles.size(), [&](std::size_t k) {
@@ -590,7 +606,7 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
                     if (v <= 0.0 && out.arrival[n] == kInf)
                     {
                         const double p0 = phi[n];
-                        out.arrival[n] = p0 > 0.0 ? t + dt * p0 / (p0 - v) : t1;
+                        out.arrival[n] = p0 > 0.0 ? t + ds * p0 / (p0 - v) : t1;
                     }
                 }
         }
@@ -615,7 +631,7 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
             if (gp <= 0.0)
             {
                 out.goalReached = true;
-                out.goalTime = goalPhi > 0.0 ? t + dt * goalPhi / (goalPhi - gp) : t1;
+                out.goalTime = goalPhi > 0.0 ? t + ds * goalPhi / (goalPhi - gp) : t1;
             }
             goalPhi = gp;
         }

@@ -169,6 +169,23 @@ yaml_case("stints-not-a-map", mission("stints: 8"), "stints")
 yaml_case("stints-window-remaining-distance",
           mission("planner: {name: optim}", "departure: {window: {begin: 0, end: 5}}",
                   "stints: {duration: 1, mission_duration: 10}"), "departure.window")
+# level set and isochrones (issue 12)
+yaml_case("levelset-resolution-negative", mission("planner: {name: LevelSet, parameters: {resolution: -1}}"),
+          "resolution")
+yaml_case("levelset-cfl-huge", mission("planner: {name: LevelSet, parameters: {cfl: 5}}"), "cfl")
+yaml_case("isochrone-interval-zero", mission(append="outputs: {files: [summary, isochrones], isochrone_interval: 0}\n"),
+          "outputs.isochrone_interval")
+yaml_case("isochrone-interval-hours-without-unit",
+          mission(append="outputs: {files: [summary, isochrones], isochrone_interval: 2 h}\n"),
+          "needs the mission's time unit")
+yaml_case("levelset-walled-in",
+          mission("planner: {name: LevelSet, parameters: {resolution: 0.1}}",
+                  append="forbidden:\n  obstacles:\n    - {name: pocket, points: [[0, -1], [3, -1], [3, 1], [0, 1], "
+                  "[0, 0.6], [2.5, 0.6], [2.5, -0.6], [0, -0.6]]}\n"),
+          "never reaches the goal", status=1)
+case("cli-isochrone-interval-zero", ["--isochrone-interval", "0", "--out", "{out}"], 2, "--isochrone-interval")
+case("cli-isochrone-interval-fortnight", ["--isochrone-interval", "1 fortnight", "--out", "{out}"], 2,
+     "--isochrone-interval")
 # execution in another ocean, ensembles (issue 13)
 yaml_case("execution-unknown-field", mission("execution: {surfacing: 1}"), "m.yaml:8: unknown field 'execution.surfacing'")
 yaml_case("execution-strategy-unknown", mission("execution: {strategies: [current_sensitive, zigzag]}"),

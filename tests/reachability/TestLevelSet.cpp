@@ -129,10 +129,13 @@ TEST(LevelSet, BettsShearProblem)
     ASSERT_GE(r.path.size(), 10u);
     EXPECT_NEAR(r.path.front().x, 3.5, 1e-12);
     EXPECT_NEAR(r.path.back().x, 0.0, 1e-12);
+    // Continuous and physically possible: no step faster than V + |c| (|c| = |y| <= 3 in the region).
     for (std::size_t k = 1; k < r.path.size(); ++k)
+    {
         EXPECT_GE(r.path[k].t, r.path[k - 1].t);
-    // Its second point is close to the start (the path is continuous).
-    EXPECT_LT(std::hypot(r.path[1].x - 3.5, r.path[1].y + 1.8), 0.2);
+        const double d = std::hypot(r.path[k].x - r.path[k - 1].x, r.path[k].y - r.path[k - 1].y);
+        EXPECT_LE(d, (1.0 + 3.0) * (r.path[k].t - r.path[k - 1].t) * 1.05 + 1e-12) << "step " << k;
+    }
 }
 
 TEST(LevelSet, MeanderingJetMatchesShooting)

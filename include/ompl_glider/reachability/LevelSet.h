@@ -85,7 +85,8 @@ struct Reachability
 /// both at once.
 ///
 /// Start: the exact reachable disc of the first instant (centre start + dt0 c(start), radius V dt0, dt0 chosen so
-/// the radius is two cells), with first arrivals inside it solved in closed form.
+/// the radius is four cells), with first arrivals inside it solved in closed form (radius four cells: with two, the first steps leave a dent in
+/// the front that persists).
 /// Forbidden regions: after each step phi = max(phi, d(x, t)), d the signed distance to the forbidden set
 /// (positive inside): exact for polygons (static regions; time-windowed zones while closed; ice zones at their
 /// drifted position unless iceForbidden is false), from the node mask for land (the field's inWater()) and for any
