@@ -57,8 +57,8 @@ using namespace ompl_glider;
 namespace
 {
 /// The planners of the campaign, by their registry names (PlannerRegistry.h).
-const std::vector<std::string> kCampaignPlanners = {"TVE",     "A*TVE",      "ZTVE", "ZA*TVE", "RRTstar", "PRM",
-                                                    "PRMstar", "RRTConnect", "RRT#", "LBTRRT", "BITstar", "SST"};
+const std::vector<std::string> kCampaignPlanners = {"TVE",     "A*TVE",      "ZTVE", "ZA*TVE", "Wavefront", "RRTstar",
+                                                    "PRM",     "PRMstar", "RRTConnect", "RRT#", "LBTRRT", "BITstar", "SST"};
 
 struct Options
 {

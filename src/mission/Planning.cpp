@@ -16,6 +16,7 @@
 #include "ompl_glider/planners/Lattice.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/planners/Wavefront.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/reference/ZermeloReference.h"
@@ -143,6 +144,11 @@ ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::ba
         z->setSmooth(false);  // the pipeline smooths and refines every planner's path alike
         z->setRefine(false);
     }
+    if (auto w = std::dynamic_pointer_cast<Wavefront>(planner))
+    {
+        w->setGridSize(grid);
+        w->setSectors(static_cast<unsigned>(sectors));
+    }
     applyParameters(m, *planner);
     return planner;
 }
@@ -165,6 +171,24 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
                 return "no path exists on this lattice (" + std::to_string(r.expansions) +
                        " vertices expanded; a finer grid, more sectors or a higher speed may find one)";
             case TveOutcome::Terminated:
+                return "the time limit (" + std::to_string(timeLimit) + " s) ended the search: raise it";
+            default:
+                break;
+        }
+    }
+    if (const auto *w = dynamic_cast<const Wavefront *>(&planner))
+    {
+        switch (w->lastOutcome())
+        {
+            case WavefrontOutcome::InvalidStart:
+                return "invalid start: " + w->lastMessage();
+            case WavefrontOutcome::InvalidGoal:
+                return "invalid goal: " + w->lastMessage();
+            case WavefrontOutcome::Exhausted:
+                return "no path exists on this lattice: " + w->lastMessage();
+            case WavefrontOutcome::BadWindow:
+                return w->lastMessage();
+            case WavefrontOutcome::Terminated:
                 return "the time limit (" + std::to_string(timeLimit) + " s) ended the search: raise it";
             default:
                 break;
