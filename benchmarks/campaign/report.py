@@ -24,7 +24,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-LATTICE = ["TVE", "A*TVE", "ZTVE", "ZA*TVE"]
+LATTICE = ["TVE", "A*TVE", "ZTVE", "ZA*TVE", "Wavefront"]
 PROBLEM_ORDER = ["open_water", "islands", "ice", "closure"]
 
 

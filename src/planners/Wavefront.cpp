@@ -57,13 +57,15 @@ struct NodeLabel
     bool closed{false};
 };
 
+/// Queue entry: key = the time the node is occupied, max(A, start of its interval); A (stale-entry test); node.
 struct QueueEntry
 {
+    double key;
     double a;
     NodeKey n;
     bool operator>(const QueueEntry &o) const
     {
-        return a > o.a || (a == o.a && n > o.n);
+        return key > o.key || (key == o.key && n > o.n);
     }
 };
 
@@ -276,7 +278,8 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
         l.a = a;
         l.parent = parent;
         l.hold = hold;
-        queue.push({a, n});
+        const std::uint64_t k = nodeInterval(n);
+        queue.push({k == kArrived ? a : std::max(a, intervalStart(k)), a, n});
     };
     improve(nodeKey(s, 0), t0, kNoNode, false);
 
@@ -300,7 +303,7 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
         settledIndex[e.n] = static_cast<std::int64_t>(settled_.size());
         settled_.push_back({vx, vy, e.a, parentIt == settledIndex.end() ? -1 : parentIt->second});
         // Earliest possible departure ([ThompsonICRA] Algorithm 1, lines 13-16).
-        const double tDepart = std::max(e.a, intervalStart(k));
+        const double tDepart = e.key;  // = max(A, start of tau_k)
 
         if (k == kArrived)
         {

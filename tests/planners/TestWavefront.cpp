@@ -103,6 +103,13 @@ TEST(Wavefront, UniformCurrentOnALatticeDirectionGivesTheClosedFormStraightLineT
     EXPECT_NEAR(r.planner->getTravelTime(), exact, 1e-6 * exact);
     EXPECT_DOUBLE_EQ(r.lastStateTime, p.t0 + r.planner->getTravelTime());
     EXPECT_EQ(r.planner->getHoldTime(), 0.0);
+    // Nodes leave the queue in the order of the time they are occupied: none after the arrival is expanded, so at
+    // most one node per vertex and interval up to the arrival (ordered by A alone, the hold chains would run to the
+    // end of the 60-unit window first: about 546 x 76 nodes).
+    const double dt = r.planner->effectiveTimeStep();
+    const double vertices = 26.0 * 21.0 + 2.0;
+    EXPECT_LE(static_cast<double>(r.planner->getExpandedNodes()),
+              vertices * (std::floor(r.planner->getTravelTime() / dt) + 2.0));
 }
 
 TEST(Wavefront, UniformCurrentOffTheLatticeDirectionsLiesBetweenTheStraightLineAndATwoOffsetPath)

@@ -37,9 +37,12 @@ enum class WavefrontOutcome
 /// (Lattice: grid_size, sectors; exact start and goal joined to it) and a time interval
 /// tau_k = [t0 + k dt, t0 + (k + 1) dt) (dt = time_step, t0 the start state's time). Each node carries A(v, k), its
 /// earliest valid arrival: the earliest time at which the glider can be at v and stay there into tau_k (A may lie
-/// before tau_k when the glider arrived earlier and held). Nodes leave the queue in increasing A and are closed
-/// (settled) then. From (v, k) the glider departs at t_d = max(A, start of tau_k) ([ThompsonICRA] Algorithm 1,
-/// lines 13-16) and
+/// before tau_k when the glider arrived earlier and held). From (v, k) the glider departs at
+/// t_d = max(A, start of tau_k) ([ThompsonICRA] Algorithm 1, lines 13-16). Nodes leave the queue in increasing t_d,
+/// the time the node is occupied, and are closed (settled) then. (Algorithm 1 orders by A; since a hold keeps A, that
+/// order would expand every hold chain to the end of the window before the goal is settled. Both keys grow along
+/// every action, so either order settles each node with its least t_d, and a node's least A is kept among equal
+/// t_d.) From (v, k) the glider
 ///   - holds position into (v, k + 1), keeping A (lines 6-10), where TravelTimeMotionValidator::classify() accepts
 ///     the zero-length motion (v, t_d) -> (v, start of tau_{k+1}): |c| < V there (canHold()) and the environment
 ///     allows it;
@@ -52,7 +55,7 @@ enum class WavefrontOutcome
 /// same interval cannot hide it); settling it ends the search with that arrival. When a goal node (g, k) reached
 /// before the window opens is settled, the arrival is T = max(t_d, arriveNotBefore) provided T <= arriveNotAfter
 /// and the glider can hold at g from t_d to T ([ThompsonICRA] Sec. III: arrive early, then hold). Either is the
-/// earliest valid arrival, since no later-settled node has a smaller A. Where the goal cannot be held the search
+/// earliest valid arrival, since no later-settled node is occupied earlier. Where the goal cannot be held the search
 /// goes on: the window is then met by holding elsewhere or by a longer way (timing the arrival). The search ends
 /// with no path when no node can still arrive by min(region.tMax, arriveNotAfter).
 ///
