@@ -5,7 +5,6 @@
 #include <functional>
 #include <optional>
 #include <queue>
-#include <sstream>
 #include <unordered_map>
 
 #include <ompl/base/PlannerData.h>
@@ -68,13 +67,6 @@ struct QueueEntry
         return key > o.key || (key == o.key && n > o.n);
     }
 };
-
-std::string formatPoint(double x, double y)
-{
-    std::ostringstream os;
-    os << "(" << x << ", " << y << ")";
-    return os.str();
-}
 }  // namespace
 
 Wavefront::Wavefront(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx)
