@@ -239,8 +239,14 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
     const double dt = effectiveTimeStep();
     const double intervals = std::floor((tEnd - t0) / dt) + 1.0;
     if (!(intervals <= kMaxIntervals))  // (also keeps k below kArrived)
-        throw Error("Wavefront: time_step " + std::to_string(dt) + " gives " + std::to_string(intervals) +
-                    " time intervals over the window (at most 1e6): use a larger time_step");
+    {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "Wavefront: time_step %g gives %.4g time intervals over the planning window [%g, %g] (at most "
+                      "1e6): use a larger time_step",
+                      dt, intervals, t0, tEnd);
+        throw Error(text);
+    }
     const std::uint64_t K = intervals >= 1.0 ? static_cast<std::uint64_t>(intervals) : 0;
     auto intervalStart = [&](std::uint64_t k) { return t0 + static_cast<double>(k) * dt; };
     auto intervalOf = [&](double t) {
