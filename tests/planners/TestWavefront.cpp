@@ -20,6 +20,9 @@
 #include "ompl_glider/current/UniformCurrent.h"
 #include "ompl_glider/environment/ForbiddenRegions.h"
 #include "ompl_glider/environment/TimeWindowedZone.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/planners/PlannerRegistry.h"
@@ -358,6 +361,7 @@ TEST(Wavefront, ParametersAreDeclaredCheckedAndReachedThroughTheRegistry)
     w->setTimeStep(0.0);
     ss->clear();
     ASSERT_EQ(ss->solve(ob::plannerNonTerminatingCondition()), ob::PlannerStatus::EXACT_SOLUTION);
+    EXPECT_TRUE(ss->getSolutionPath().check());
     const double first = w->getTravelTime();
     EXPECT_NEAR(first, 2.0 / 0.5, 1e-9);
     ob::PlannerData data(ss->getSpaceInformation());
@@ -368,4 +372,33 @@ TEST(Wavefront, ParametersAreDeclaredCheckedAndReachedThroughTheRegistry)
     ss->clear();
     ASSERT_EQ(ss->solve(ob::plannerNonTerminatingCondition()), ob::PlannerStatus::EXACT_SOLUTION);
     EXPECT_EQ(w->getTravelTime(), first);
+}
+
+TEST(Wavefront, ThePipelineGivesItTheMissionsLatticeAndItMatchesTve)
+{
+    // planRoute() hands the mission's grid size and sectors to the Wavefront as to ZA*TVE: on the built-in Gulf
+    // Stream mission with a 0.5 lattice of 2 sectors both return the same raw lattice time (open water: see
+    // AgreesWithTveOnTheMeanderingJet); with the Wavefront's defaults (0.4, 3 sectors) it would differ.
+    double raw[2] = {0.0, 0.0};
+    const char *names[2] = {"TVE", "Wavefront"};
+    for (int i = 0; i < 2; ++i)
+    {
+        MissionSpec m = defaultGulfStreamMission();
+        m.planner.name = names[i];
+        m.planner.gridSize = 0.5;
+        m.planner.sectors = 2;
+        m.planner.smoothing = false;
+        m.planner.refinement = false;
+        const MissionResult r = runMission(MissionProblem(m));
+        ASSERT_TRUE(r.plan.solved) << names[i] << ": " << r.plan.reason;
+        EXPECT_EQ(r.plan.planner, names[i]);
+        EXPECT_TRUE(r.plan.pathChecked) << names[i];
+        raw[i] = r.plan.rawTravelTime;
+    }
+    EXPECT_NEAR(raw[1], raw[0], 1e-6 * raw[0]);
+    MissionSpec m = defaultGulfStreamMission();
+    m.planner.name = "Wavefront";
+    m.planner.smoothing = false;
+    m.planner.refinement = false;
+    EXPECT_GT(std::abs(runMission(MissionProblem(m)).plan.rawTravelTime - raw[1]), 1e-3);
 }
