@@ -247,7 +247,12 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
                       dt, intervals, t0, tEnd);
         throw Error(text);
     }
-    const std::uint64_t K = intervals >= 1.0 ? static_cast<std::uint64_t>(intervals) : 0;
+    if (!(intervals >= 1.0))
+    {
+        message_ = "the planning window ends (t = " + std::to_string(tEnd) + ") before the departure";
+        return WavefrontOutcome::Exhausted;
+    }
+    const auto K = static_cast<std::uint64_t>(intervals);
     auto intervalStart = [&](std::uint64_t k) { return t0 + static_cast<double>(k) * dt; };
     auto intervalOf = [&](double t) {
         const double k = std::floor((t - t0) / dt);

@@ -307,6 +307,11 @@ TEST(Wavefront, GoalWindowThatCannotBeHeldIsMetByTimingTheArrival)
     const WaveRun none = runWavefront(p, g, 1, 0.5);
     EXPECT_FALSE(none.ss->haveSolutionPath());
     EXPECT_EQ(none.planner->lastOutcome(), WavefrontOutcome::Exhausted);
+
+    p.arriveNotAfter = p.t0 - 1.0;  // a window that ends before the departure
+    const WaveRun before = runWavefront(p, g, 1, 0.5);
+    EXPECT_FALSE(before.ss->haveSolutionPath());
+    EXPECT_EQ(before.status, ob::PlannerStatus::ABORT);
 }
 
 TEST(Wavefront, ParametersAreDeclaredCheckedAndReachedThroughTheRegistry)
