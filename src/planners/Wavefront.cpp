@@ -352,8 +352,8 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
     }
     if (goalNode == kNoNode)
     {
-        message_ = "no path reaches the goal by t = " + std::to_string(tEnd) + " on this lattice (" +
-                   std::to_string(expansions_) + " nodes expanded)";
+        message_ = "no path reaches the goal by t = " + std::to_string(tEnd) + " (" + std::to_string(expansions_) +
+                   " nodes expanded)";
         return WavefrontOutcome::Exhausted;
     }
 
