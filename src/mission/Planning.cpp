@@ -150,6 +150,20 @@ ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::ba
         w->setSectors(static_cast<unsigned>(sectors));
     }
     applyParameters(m, *planner);
+    if (auto w = std::dynamic_pointer_cast<Wavefront>(planner))
+    {
+        // the interval count its search would refuse, named here by the field that set the interval
+        const double intervals = (ctx->region.tMax - departure) / w->effectiveTimeStep();
+        if (!(intervals <= Wavefront::kMaxIntervals))
+        {
+            const bool given = m.planner.parameters.count("time_step") > 0;
+            char text[160];
+            std::snprintf(text, sizeof text, ": %.4g time intervals of %g over the planning window (at most %g)",
+                          intervals, w->effectiveTimeStep(), Wavefront::kMaxIntervals);
+            throw Error((given ? parameterPlace(m, "time_step") : m.place("planner.grid_size")) + text +
+                        ": use a larger time_step");
+        }
+    }
     return planner;
 }
 

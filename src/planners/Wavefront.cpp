@@ -25,8 +25,6 @@ namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 using TimeState = TimeSE2StateSpace::StateType;
-/// Most time intervals a search may have (a larger count is a time_step far too small for the window).
-constexpr double kMaxIntervals = 1e6;
 
 /// Node (v, k) as one key: the vertex in the high 32 bits (a lattice holds at most 2^31 + 2 vertices), k below.
 using NodeKey = std::uint64_t;

@@ -88,6 +88,10 @@ public:
     Wavefront(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx);
     ~Wavefront() override;
 
+    /// @brief Most time intervals a search may have over its window (more: solve() throws ompl_glider::Error naming
+    /// time_step).
+    static constexpr double kMaxIntervals = 1e6;
+
     /// @brief An allocator for ompl::tools::Benchmark::addPlannerAllocator().
     static ompl::base::PlannerAllocator allocator(std::shared_ptr<const GliderContext> ctx);
 
