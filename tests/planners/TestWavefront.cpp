@@ -379,6 +379,25 @@ TEST(Wavefront, ParametersAreDeclaredCheckedAndReachedThroughTheRegistry)
     EXPECT_EQ(w->getTravelTime(), first);
 }
 
+TEST(Wavefront, TheTerminationConditionEndsTheSearchWithoutAPath)
+{
+    GliderProblem p;
+    p.field = std::make_shared<MeanderingJet>();
+    p.startX = 0.0;
+    p.startY = 0.0;
+    p.goalX = 8.0;
+    p.goalY = 2.0;
+    std::shared_ptr<GliderContext> ctx;
+    auto ss = makeSimpleSetup(p, &ctx);
+    auto w = std::make_shared<Wavefront>(ss->getSpaceInformation(), ctx);
+    ss->setPlanner(w);
+    const ob::PlannerStatus st = ss->solve(ob::PlannerTerminationCondition([] { return true; }));
+    EXPECT_EQ(st, ob::PlannerStatus::TIMEOUT);
+    EXPECT_EQ(w->lastOutcome(), WavefrontOutcome::Terminated);
+    EXPECT_FALSE(ss->haveSolutionPath());
+    EXPECT_LE(w->getExpandedNodes(), 64u);  // the condition is asked every 64 expansions
+}
+
 TEST(Wavefront, ThePipelineGivesItTheMissionsLatticeAndItMatchesTve)
 {
     // planRoute() hands the mission's grid size and sectors to the Wavefront as to ZA*TVE: on the built-in Gulf
