@@ -4,7 +4,7 @@
 #   benchmarks/run_campaign.sh [--quick] OUTDIR
 #
 # Builds glider_campaign and glider_campaign_paths if needed (build dir: $GLIDER_BUILD_DIR, default
-# <repo>/build-campaign, Release), runs the four meandering-jet problems with TVE, A*TVE, ZTVE, ZA*TVE, RRT*, PRM,
+# <repo>/build-campaign, Release), runs the four meandering-jet problems with TVE, A*TVE, ZTVE, ZA*TVE, Wavefront, RRT*, PRM,
 # PRM*, RRTConnect, RRT#, LBTRRT and SST on the identical SpaceInformation (--quick: 5 runs per planner, 2 s budget,
 # about 7 minutes on 2 cores; default: 20 runs, 10 s), converts the logs with OMPL's ompl_benchmark_statistics
 # into OUTDIR/campaign.db (load it in Planner Arena), and writes the plots OUTDIR/travel_time.png,

@@ -18,7 +18,7 @@
 // Usage: glider_campaign [--quick] [--runs N] [--time SECONDS] [--grid G] [--seed S] [--problems a,b]
 //                        [--planners NAME,...] OUTDIR   (planner names and aliases of the registry)
 // Writes OUTDIR/<problem>.log (OMPL benchmark logs) and OUTDIR/reference.csv (optimal-control travel time of the
-// open-water problem, ZermeloReference).
+// open-water problem, ZermeloReference; every problem, the level-set optimum: reference.csv).
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -45,6 +45,7 @@
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/planners/PlannerRegistry.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
+#include "ompl_glider/reachability/LevelSet.h"
 #include "ompl_glider/reference/ZermeloReference.h"
 
 #include "CampaignProblems.h"
@@ -57,8 +58,9 @@ using namespace ompl_glider;
 namespace
 {
 /// The planners of the campaign, by their registry names (PlannerRegistry.h).
-const std::vector<std::string> kCampaignPlanners = {"TVE",     "A*TVE",      "ZTVE", "ZA*TVE", "RRTstar", "PRM",
-                                                    "PRMstar", "RRTConnect", "RRT#", "LBTRRT", "BITstar", "SST"};
+const std::vector<std::string> kCampaignPlanners = {"TVE",     "A*TVE",   "ZTVE",       "ZA*TVE", "Wavefront",
+                                                    "LevelSet", "RRTstar", "PRM",        "PRMstar", "RRTConnect",
+                                                    "RRT#",    "LBTRRT",  "BITstar",    "SST"};
 
 struct Options
 {
@@ -166,23 +168,62 @@ int main(int argc, char **argv)
     const auto field = std::make_shared<MeanderingJet>();
     const std::vector<CampaignProblem> problems = makeCampaignProblems(field);
 
-    // optimal-control reference (open water only: the reference ignores forbidden regions)
+    // The optimum of every problem (issue 12): the level-set front (LevelSetSolver, [LollaLevelSet]) at three
+    // resolutions (the convergence study), and in open water also Zermelo shooting. The reference is shooting where it
+    // exists, else the finest level set. Ice zones are kept out of the front (the glider cannot surface there), an
+    // upper bound of the optimum; the same front with the ice ignored is a lower bound (ice_passable).
     {
         std::ofstream ref(opt.outdir + "/reference.csv");
-        ref << "problem,reference_travel_time,found\n";
+        ref << "problem,reference_travel_time,found,method,level_set_0.1,level_set_0.05,level_set_0.025,"
+               "level_set_seconds_0.025,shooting,ice_passable_0.025\n";
         for (const CampaignProblem &p : problems)
         {
-            if (p.environment || (!opt.problems.empty() && !opt.problems.count(p.name)))
+            if (!opt.problems.empty() && !opt.problems.count(p.name))
                 continue;
-            ZermeloParams zp;
-            zp.speed = p.problem.travel.speed;
-            zp.maxTime = p.problem.horizon;
-            const ZermeloReference zr(field, zp);
-            const ZermeloSolution s = zr.solve(p.problem.startX, p.problem.startY, p.problem.goalX, p.problem.goalY,
-                                               p.problem.t0);
-            ref << p.name << "," << std::setprecision(10) << s.travelTime << "," << (s.found ? 1 : 0) << "\n";
-            std::cout << "reference (optimal control) " << p.name << ": travel time " << s.travelTime
-                      << (s.found ? "" : " (not found)") << std::endl;
+            const auto ctx = makeGliderContext(p.problem);
+            const Point2 goal{p.problem.goalX, p.problem.goalY};
+            double ls[3] = {0, 0, 0}, lsSeconds = 0.0, passable = std::numeric_limits<double>::quiet_NaN();
+            const double hs[3] = {0.1, 0.05, 0.025};
+            for (int k = 0; k < 3; ++k)
+            {
+                LevelSetParams lp;
+                lp.cellSize = hs[k];
+                const Reachability r =
+                    LevelSetSolver(ctx, lp).solve(p.problem.startX, p.problem.startY, p.problem.t0,
+                                                  p.problem.t0 + p.problem.horizon, goal);
+                ls[k] = r.goalReached ? r.goalTime - p.problem.t0 : std::numeric_limits<double>::infinity();
+                lsSeconds = r.stats.seconds;
+                if (k == 2 && p.name == "ice")
+                {
+                    lp.iceForbidden = false;
+                    const Reachability q =
+                        LevelSetSolver(ctx, lp).solve(p.problem.startX, p.problem.startY, p.problem.t0,
+                                                      p.problem.t0 + p.problem.horizon, goal);
+                    passable = q.goalReached ? q.goalTime - p.problem.t0 : std::numeric_limits<double>::infinity();
+                }
+            }
+            double shooting = std::numeric_limits<double>::quiet_NaN();
+            if (!p.environment)
+            {
+                ZermeloParams zp;
+                zp.speed = p.problem.travel.speed;
+                zp.maxTime = p.problem.horizon;
+                const ZermeloSolution s = ZermeloReference(field, zp).solve(p.problem.startX, p.problem.startY,
+                                                                            p.problem.goalX, p.problem.goalY,
+                                                                            p.problem.t0);
+                if (s.found)
+                    shooting = s.travelTime;
+            }
+            const bool shot = std::isfinite(shooting);
+            const double best = shot ? shooting : ls[2];
+            ref << p.name << "," << std::setprecision(10) << best << "," << (std::isfinite(best) ? 1 : 0) << ","
+                << (shot ? "shooting" : "level set 0.025") << "," << ls[0] << "," << ls[1] << "," << ls[2] << ","
+                << lsSeconds << "," << shooting << "," << passable << "\n";
+            std::cout << "optimum " << p.name << ": " << std::setprecision(6) << best
+                      << (shot ? " (shooting)" : " (level set, h 0.025)") << "; level set h 0.1 / 0.05 / 0.025: "
+                      << ls[0] << " / " << ls[1] << " / " << ls[2] << " (" << lsSeconds << " s at 0.025)"
+                      << (std::isfinite(passable) ? "; with the ice passable " + std::to_string(passable) : "")
+                      << std::endl;
         }
     }
 

@@ -11,7 +11,8 @@ table. Definitions (per problem and planner, over the runs of the campaign):
   motions   = share of those whose motions as returned (with the planner's own time stamps) pass the motion validator
   median T  = median re-simulated travel time ("travel_time") over the valid runs
   / ZA*TVE  = median T divided by ZA*TVE's median T on the same problem
-  / ref     = median T divided by the optimal-control travel time (ZermeloReference; open water only)
+  / optimum = median T divided by the problem's optimum (reference.csv: Zermelo shooting in open water, else the
+              level-set front at cell 0.025; with ice zones kept out of the front, an upper bound)
 """
 import csv
 import math
@@ -24,7 +25,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-LATTICE = ["TVE", "A*TVE", "ZTVE", "ZA*TVE"]
+LATTICE = ["TVE", "A*TVE", "ZTVE", "ZA*TVE", "Wavefront", "LevelSet"]
 PROBLEM_ORDER = ["open_water", "islands", "ice", "closure"]
 
 
@@ -65,9 +66,10 @@ def fmt(v, digits=3):
 def main():
     db, out = sys.argv[1], sys.argv[2]
     refcsv = sys.argv[3] if len(sys.argv) > 3 else os.path.join(out, "reference.csv")
-    ref = {}
+    ref, refrows = {}, {}
     if os.path.exists(refcsv):
         for row in csv.DictReader(open(refcsv)):
+            refrows[row["problem"]] = row
             if row["found"] == "1":
                 ref[row["problem"]] = float(row["reference_travel_time"])
     data = load(db)
@@ -96,7 +98,7 @@ def main():
                 medCFC=median([r["cfc"] for r in runs if r["cfc"] is not None]),
                 medCMC=median([r["cmc"] for r in runs if r["cmc"] is not None]))
 
-    lines = ["| problem | planner | runs | success | valid | motions valid | median travel time | / ZA*TVE | / ref "
+    lines = ["| problem | planner | runs | success | valid | motions valid | median travel time | / ZA*TVE | / optimum "
              "| median solve time (s) | median CFC | median CMC |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     verdicts = []
@@ -122,8 +124,17 @@ def main():
                 p, fmt(z), fmt(100 * zs["valid"], 0) + "%" if zs["valid"] == zs["valid"] else "-",
                 ", ".join(worse) if worse else "none"))
     if ref:
-        verdicts.append("- optimal-control reference (ZermeloReference): " +
-                        ", ".join("%s %s" % (k, fmt(v, 4)) for k, v in ref.items()))
+        verdicts.append("- optimum per problem: " + ", ".join(
+            "%s %s (%s)" % (k, fmt(v, 4), refrows[k].get("method", "shooting")) for k, v in ref.items()))
+    for k, row in refrows.items():
+        if "level_set_0.025" in row:
+            extra = ""
+            if row.get("ice_passable_0.025") not in (None, "", "nan"):
+                extra = "; ice passable (lower bound) %s" % fmt(float(row["ice_passable_0.025"]), 4)
+            verdicts.append("- level-set resolution study, %s: cell 0.1 / 0.05 / 0.025: %s / %s / %s (%s s at 0.025)%s"
+                            % (k, fmt(float(row["level_set_0.1"]), 4), fmt(float(row["level_set_0.05"]), 4),
+                               fmt(float(row["level_set_0.025"]), 4), fmt(float(row["level_set_seconds_0.025"]), 1),
+                               extra))
     text = "\n".join(lines) + "\n\n" + "\n".join(verdicts) + "\n"
     open(os.path.join(out, "table.md"), "w").write(text)
     print(text)
@@ -137,7 +148,7 @@ def main():
                 vals = [getter(stats[(p, pl)]) for pl in pls]
                 ax.boxplot([v if v else [float("nan")] for v in vals], labels=pls)
                 if kind == "box" and fname.startswith("travel") and p in ref:
-                    ax.axhline(ref[p], color="g", ls="--", lw=1, label="optimal control %.3f" % ref[p])
+                    ax.axhline(ref[p], color="g", ls="--", lw=1, label="optimum %.3f" % ref[p])
                     ax.legend(fontsize=7)
             else:
                 vals = [getter(stats[(p, pl)]) for pl in pls]

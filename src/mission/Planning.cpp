@@ -16,6 +16,7 @@
 #include "ompl_glider/planners/Lattice.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/planners/Wavefront.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/reachability/LevelSetPlanner.h"
@@ -144,7 +145,26 @@ ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::ba
         z->setSmooth(false);  // the pipeline smooths and refines every planner's path alike
         z->setRefine(false);
     }
+    if (auto w = std::dynamic_pointer_cast<Wavefront>(planner))
+    {
+        w->setGridSize(grid);
+        w->setSectors(static_cast<unsigned>(sectors));
+    }
     applyParameters(m, *planner);
+    if (auto w = std::dynamic_pointer_cast<Wavefront>(planner))
+    {
+        // the interval count its search would refuse, named here by the field that set the interval
+        const double intervals = (ctx->region.tMax - departure) / w->effectiveTimeStep();
+        if (!(intervals <= Wavefront::kMaxIntervals))
+        {
+            const bool given = m.planner.parameters.count("time_step") > 0;
+            char text[160];
+            std::snprintf(text, sizeof text, ": %.4g time intervals of %g over the planning window (at most %g)",
+                          intervals, w->effectiveTimeStep(), Wavefront::kMaxIntervals);
+            throw Error((given ? parameterPlace(m, "time_step") : m.place("planner.grid_size")) + text +
+                        ": use a larger time_step");
+        }
+    }
     return planner;
 }
 
@@ -177,6 +197,24 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
                    "the level-set path cannot be flown as straight legs at this resolution: try a finer one" :
                    "the reachable front never reaches the goal within the time window (walled in by land or "
                    "forbidden regions, or a closure that does not open in time)";
+    if (const auto *w = dynamic_cast<const Wavefront *>(&planner))
+    {
+        switch (w->lastOutcome())
+        {
+            case WavefrontOutcome::InvalidStart:
+                return "invalid start: " + w->lastMessage();
+            case WavefrontOutcome::InvalidGoal:
+                return "invalid goal: " + w->lastMessage();
+            case WavefrontOutcome::Exhausted:
+                return "no path exists on this lattice: " + w->lastMessage();
+            case WavefrontOutcome::BadWindow:
+                return w->lastMessage();
+            case WavefrontOutcome::Terminated:
+                return "the time limit (" + std::to_string(timeLimit) + " s) ended the search: raise it";
+            default:
+                break;
+        }
+    }
     if (status == ompl::base::PlannerStatus::APPROXIMATE_SOLUTION)
         return "the planner reached only an approximate solution within the time limit";
     if (status == ompl::base::PlannerStatus::TIMEOUT)

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include <ompl/base/goals/GoalState.h>
+
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/GliderStateValidityChecker.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
@@ -94,5 +96,32 @@ std::string PositionGoal::whyInvalidAt(double t) const
         why = "rejected by the state validity checker";
     si_->freeState(st);
     return why;
+}
+
+std::optional<Point2> goalPosition(const ob::Goal &goal, std::string *why)
+{
+    using TimeState = TimeSE2StateSpace::StateType;
+    if (const auto *pg = dynamic_cast<const PositionGoal *>(&goal))
+        return Point2{pg->getX(), pg->getY()};
+    if (const auto *gs = dynamic_cast<const ob::GoalState *>(&goal))
+        return Point2{gs->getState()->as<TimeState>()->getX(), gs->getState()->as<TimeState>()->getY()};
+    if (const auto *gr = dynamic_cast<const ob::GoalSampleableRegion *>(&goal))
+    {
+        if (!gr->canSample())
+        {
+            if (why)
+                *why = "the goal region cannot be sampled";
+            return std::nullopt;
+        }
+        const ob::SpaceInformationPtr &si = gr->getSpaceInformation();
+        ob::State *tmp = si->allocState();
+        gr->sampleGoal(tmp);
+        const Point2 p{tmp->as<TimeState>()->getX(), tmp->as<TimeState>()->getY()};
+        si->freeState(tmp);
+        return p;
+    }
+    if (why)
+        *why = "unknown goal type (need PositionGoal, GoalState or GoalSampleableRegion)";
+    return std::nullopt;
 }
 }  // namespace ompl_glider

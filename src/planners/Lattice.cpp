@@ -4,12 +4,20 @@
 #include <cmath>
 #include <cstdlib>
 #include <numeric>
+#include <sstream>
 #include <string>
 
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
 {
+std::string formatPoint(double x, double y)
+{
+    std::ostringstream os;
+    os << "(" << x << ", " << y << ")";
+    return os.str();
+}
+
 Lattice::Lattice(double xMin, double xMax, double yMin, double yMax, double gridSize, unsigned sectors)
   : xMin_(xMin), xMax_(xMax), yMin_(yMin), yMax_(yMax), g_(gridSize), sectors_(sectors)
 {

@@ -15,6 +15,7 @@
 #include <ompl/geometric/planners/sst/SST.h>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/planners/Wavefront.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/reachability/LevelSetPlanner.h"
 #include "ompl_glider/stints/StintPlanner.h"
@@ -38,6 +39,19 @@ PlannerEntry lattice(const std::string &name, std::vector<std::string> aliases, 
     e.lattice = true;
     e.make = [name](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &ctx) {
         return std::make_shared<ZAStarTVE>(si, ctx, name);
+    };
+    return e;
+}
+
+PlannerEntry wavefront()
+{
+    PlannerEntry e;
+    e.name = "Wavefront";
+    e.aliases = {"wavefront"};
+    e.description = "earliest valid arrival over (vertex, time interval) nodes with holding ([ThompsonICRA])";
+    e.lattice = true;
+    e.make = [](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &ctx) {
+        return std::make_shared<Wavefront>(si, ctx);
     };
     return e;
 }
@@ -89,6 +103,7 @@ const std::vector<PlannerEntry> &plannerRegistry()
         lattice("ZTVE", {"ztve"}, "TVE with Zermelo pruning"),
         lattice("ZA*TVE", {"zastartve", "ZAStarTVE"}, "TVE with A* heuristic and certified Zermelo pruning (default)"),
         levelSet(),
+        wavefront(),
         sampling<og::RRTstar>("RRTstar", {"RRT*"}, "OMPL RRT*"),
         sampling<og::InformedRRTstar>("InformedRRTstar", {"InformedRRT*"}, "OMPL Informed RRT*"),
         sampling<og::PRM>("PRM", {}, "OMPL PRM"),

@@ -37,13 +37,6 @@ const GliderContext &checkedContext(const std::shared_ptr<const GliderContext> &
     return *ctx;
 }
 
-std::string formatPoint(double x, double y)
-{
-    std::ostringstream os;
-    os << "(" << x << ", " << y << ")";
-    return os.str();
-}
-
 /// Queue entry: key (d or d + h), the d it was pushed with (stale-entry test), vertex.
 struct QueueEntry
 {

@@ -3,12 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 #include <unordered_map>
 
 #include <ompl/base/PlannerData.h>
-#include <ompl/base/goals/GoalSampleableRegion.h>
-#include <ompl/base/goals/GoalState.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
 
@@ -223,37 +222,14 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
     const double sx = st->getX(), sy = st->getY(), t0 = st->getTime();
 
     // Goal position.
-    const ompl::base::GoalPtr &goal = pdef_->getGoal();
-    double gx = 0.0, gy = 0.0;
-    if (auto pg = std::dynamic_pointer_cast<PositionGoal>(goal))
+    std::string why;
+    const std::optional<Point2> goalXY = goalPosition(*pdef_->getGoal(), &why);
+    if (!goalXY)
     {
-        gx = pg->getX();
-        gy = pg->getY();
-    }
-    else if (auto gs = std::dynamic_pointer_cast<ompl::base::GoalState>(goal))
-    {
-        gx = gs->getState()->as<TimeState>()->getX();
-        gy = gs->getState()->as<TimeState>()->getY();
-    }
-    else if (auto gr = std::dynamic_pointer_cast<ompl::base::GoalSampleableRegion>(goal))
-    {
-        if (!gr->canSample())
-        {
-            OMPL_ERROR("%s: the goal region cannot be sampled", getName().c_str());
-            return ompl::base::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
-        }
-        ompl::base::State *tmp = si_->allocState();
-        gr->sampleGoal(tmp);
-        gx = tmp->as<TimeState>()->getX();
-        gy = tmp->as<TimeState>()->getY();
-        si_->freeState(tmp);
-    }
-    else
-    {
-        OMPL_ERROR("%s: unknown goal type (need PositionGoal, GoalState or GoalSampleableRegion)",
-                   getName().c_str());
+        OMPL_ERROR("%s: %s", getName().c_str(), why.c_str());
         return ompl::base::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
     }
+    const double gx = goalXY->x, gy = goalXY->y;
 
     freeDataStates();
     solution_.clear();

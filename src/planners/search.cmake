@@ -1,8 +1,9 @@
-# planners/ search: lattice, ZAStarTVE
+# planners/ search: lattice, ZAStarTVE, Wavefront
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Lattice.cpp
   ${CMAKE_CURRENT_LIST_DIR}/SearchHeuristic.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TveSearch.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ZAStarTVE.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Wavefront.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PlannerRegistry.cpp
 )

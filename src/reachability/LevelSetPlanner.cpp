@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include <ompl/base/goals/GoalState.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
 
@@ -178,23 +177,14 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
     }
     const auto *st = pdef_->getStartState(0)->as<TimeState>();
     const double sx = st->getX(), sy = st->getY(), t0 = st->getTime();
-    double gx = 0.0, gy = 0.0;
-    const ompl::base::GoalPtr &goal = pdef_->getGoal();
-    if (auto pg = std::dynamic_pointer_cast<PositionGoal>(goal))
+    std::string why;
+    const std::optional<Point2> gp = goalPosition(*pdef_->getGoal(), &why);
+    if (!gp)
     {
-        gx = pg->getX();
-        gy = pg->getY();
-    }
-    else if (auto gs = std::dynamic_pointer_cast<ompl::base::GoalState>(goal))
-    {
-        gx = gs->getState()->as<TimeState>()->getX();
-        gy = gs->getState()->as<TimeState>()->getY();
-    }
-    else
-    {
-        OMPL_ERROR("%s: unknown goal type (need PositionGoal or GoalState)", getName().c_str());
+        OMPL_ERROR("%s: %s", getName().c_str(), why.c_str());
         return ompl::base::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
     }
+    const double gx = gp->x, gy = gp->y;
     const Region &r = ctx_->region;
     const auto inRegion = [&](double x, double y) { return x >= r.xMin && x <= r.xMax && y >= r.yMin && y <= r.yMax; };
     if (!inRegion(sx, sy))

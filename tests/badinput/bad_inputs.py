@@ -143,6 +143,11 @@ yaml_case("planner-grid-tiny", mission("planner: {name: zastartve, grid_size: 1e
 yaml_case("planner-time-limit-huge", mission("planner: {name: zastartve, time_limit: 1e10}"), "planner.time_limit")
 yaml_case("planner-zermelo-steps-huge", mission("planner: {name: zastartve, parameters: {zermelo_steps: 1e12}}"),
           "planner.parameters.zermelo_steps")
+yaml_case("wavefront-time-step-negative",
+          mission("planner: {name: Wavefront, grid_size: 0.5, parameters: {time_step: -1}}"),
+          "planner.parameters.time_step")
+yaml_case("wavefront-time-step-tiny", mission("planner: {name: Wavefront, grid_size: 0.5, parameters: {time_step: 1e-9}}"),
+          "m.yaml:7: field 'planner.parameters.time_step': 2.081e+12 time intervals")
 # constant-bearing stints (issue 14)
 yaml_case("stints-planner-without-section", mission("planner: {name: init_optim}"), "m.yaml:7: field 'planner.name'")
 yaml_case("stints-duration-zero", mission("stints: {duration: 0, mission_duration: 10}"),

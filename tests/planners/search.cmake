@@ -2,3 +2,4 @@
 glider_add_test(test_lattice ${CMAKE_CURRENT_LIST_DIR}/TestLattice.cpp)
 glider_add_test(test_zastartve ${CMAKE_CURRENT_LIST_DIR}/TestZAStarTVE.cpp)
 glider_add_test(test_search_heuristic ${CMAKE_CURRENT_LIST_DIR}/TestSearchHeuristic.cpp)
+glider_add_test(test_wavefront ${CMAKE_CURRENT_LIST_DIR}/TestWavefront.cpp)

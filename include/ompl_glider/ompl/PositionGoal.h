@@ -3,11 +3,14 @@
 /// @brief Goal: be at a position (within a tolerance) at any time of the window.
 
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <ompl/base/goals/GoalSampleableRegion.h>
 #include <ompl/util/RandomNumbers.h>
+
+#include "ompl_glider/Geometry.h"
 
 namespace ompl_glider
 {
@@ -80,4 +83,9 @@ private:
     double tEarliest_, tLatest_;
     mutable ompl::RNG rng_;
 };
+
+/// @brief The goal position (x, y) of a goal on a TimeSE2StateSpace, as the lattice planners read it: a
+/// PositionGoal's point, a GoalState's state, or one state sampled from a GoalSampleableRegion. Empty when the goal is
+/// of another type or the region cannot be sampled; @p why (if non-null) then says which.
+std::optional<Point2> goalPosition(const ompl::base::Goal &goal, std::string *why = nullptr);
 }  // namespace ompl_glider

@@ -5,10 +5,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace ompl_glider
 {
+/// @brief A position as "(x, y)" (default stream precision), for the lattice searches' messages about start and goal.
+std::string formatPoint(double x, double y);
+
 /// @brief An integer grid offset (dx, dy) of a lattice edge.
 struct LatticeOffset
 {

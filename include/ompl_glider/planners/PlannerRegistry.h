@@ -20,7 +20,8 @@ struct PlannerEntry
     std::string name;                  ///< canonical name, also the OMPL planner name (e.g. "ZA*TVE", "RRTstar")
     std::vector<std::string> aliases;  ///< other accepted spellings (matched without regard to case)
     std::string description;           ///< one line for --help and the docs
-    bool lattice{false};               ///< a ZAStarTVE configuration (grid_size / sectors apply)
+    bool lattice{false};               ///< a lattice planner (ZAStarTVE configurations, Wavefront): grid_size /
+                                       ///< sectors apply
     bool exhaustive{false};            ///< runs to its own end, like the lattice (no default time limit): LevelSet
     bool stints{false};                ///< a StintPlanner method: flies constant-bearing stints (a mission's
                                        ///< `stints` section applies; [IsernObstacles])
@@ -31,7 +32,7 @@ struct PlannerEntry
 };
 
 /// @brief Every registered planner, in the order of the documentation: the ZAStarTVE configurations TVE, A*TVE,
-/// ZTVE, ZA*TVE ([EichhornRAS] Sec. 2.2), then OMPL's geometric planners on the time-augmented space, then the
+/// ZTVE, ZA*TVE ([EichhornRAS] Sec. 2.2), the Wavefront ([ThompsonICRA] Sec. III), then OMPL's geometric planners on the time-augmented space, then the
 /// constant-bearing stint planners init_optim, optim, cts_astar, direct ([IsernObstacles]).
 const std::vector<PlannerEntry> &plannerRegistry();
 

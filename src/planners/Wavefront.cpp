@@ -1,0 +1,497 @@
+#include "ompl_glider/planners/Wavefront.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <optional>
+#include <queue>
+#include <unordered_map>
+
+#include <ompl/base/PlannerData.h>
+#include <ompl/geometric/PathGeometric.h>
+#include <ompl/util/Console.h>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/ompl/GliderStateValidityChecker.h"
+#include "ompl_glider/ompl/PositionGoal.h"
+#include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "ompl_glider/ompl/TravelTimeMotionValidator.h"
+#include "ompl_glider/planners/Lattice.h"
+#include "ompl_glider/planners/PathSmoother.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+using TimeState = TimeSE2StateSpace::StateType;
+
+/// Node (v, k) as one key: the vertex in the high 32 bits (a lattice holds at most 2^31 + 2 vertices), k below.
+using NodeKey = std::uint64_t;
+constexpr NodeKey kNoNode = std::numeric_limits<NodeKey>::max();
+NodeKey nodeKey(Lattice::VertexId v, std::uint64_t k)
+{
+    return (static_cast<NodeKey>(v) << 32) | k;
+}
+Lattice::VertexId nodeVertex(NodeKey n)
+{
+    return static_cast<Lattice::VertexId>(n >> 32);
+}
+std::uint64_t nodeInterval(NodeKey n)
+{
+    return n & 0xffffffffULL;
+}
+/// Interval index of the goal node "arrived in the arrival window" (a move reaching the goal at a time of its
+/// window goes there, so that an earlier arrival in the same interval, before the window opens, cannot hide it).
+constexpr std::uint64_t kArrived = 0xffffffffULL;
+
+/// Label of a node: earliest valid arrival A, parent node, whether it was reached by holding, closed.
+struct NodeLabel
+{
+    double a{kInf};
+    NodeKey parent{kNoNode};
+    bool hold{false};
+    bool closed{false};
+};
+
+/// Queue entry: key = the time the node is occupied, max(A, start of its interval); A (stale-entry test); node.
+struct QueueEntry
+{
+    double key;
+    double a;
+    NodeKey n;
+    bool operator>(const QueueEntry &o) const
+    {
+        return key > o.key || (key == o.key && n > o.n);
+    }
+};
+}  // namespace
+
+Wavefront::Wavefront(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx)
+  : ompl::base::Planner(si, "Wavefront"), ctx_(std::move(ctx))
+{
+    if (!ctx_ || !ctx_->field || !ctx_->travel)
+        throw Error("Wavefront: a GliderContext with field and travel is required");
+    specs_.approximateSolutions = false;
+    specs_.optimizingPaths = false;
+    specs_.multithreaded = false;
+    specs_.directed = true;
+
+    declareParam<double>("grid_size", this, &Wavefront::setGridSize, &Wavefront::getGridSize, "0.:0.01:1000.");
+    declareParam<unsigned>("sectors", this, &Wavefront::setSectors, &Wavefront::getSectors, "1:1:5");
+    declareParam<double>("time_step", this, &Wavefront::setTimeStep, &Wavefront::getTimeStep, "0.:0.05:100.");
+
+    const TravelTimeCalculator *travel = ctx_->travel.get();
+    const CurrentField *field = ctx_->field.get();
+    addPlannerProgressProperty("cost function calls INTEGER", [this, travel] {
+        return std::to_string(solving_ ? travel->costFunctionCalls() - cfcBase_ : cfc_);
+    });
+    addPlannerProgressProperty("current model calls INTEGER", [this, field] {
+        return std::to_string(solving_ ? field->callCount() - cmcBase_ : cmc_);
+    });
+    addPlannerProgressProperty("best cost REAL", [this] {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.17g", bestCost_.load());
+        return std::string(buf);
+    });
+}
+
+Wavefront::~Wavefront()
+{
+    freeDataStates();
+}
+
+ompl::base::PlannerAllocator Wavefront::allocator(std::shared_ptr<const GliderContext> ctx)
+{
+    return [ctx](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<Wavefront>(si, ctx); };
+}
+
+void Wavefront::setGridSize(double g)
+{
+    if (!(g > 0.0) || !std::isfinite(g))
+        throw Error("Wavefront: grid_size must be a finite number > 0 (got " + std::to_string(g) + ")");
+    gridSize_ = g;
+}
+
+void Wavefront::setSectors(unsigned n)
+{
+    if (n < 1 || n > 5)
+        throw Error("Wavefront: sectors must be in 1..5 (got " + std::to_string(n) + ")");
+    sectors_ = n;
+}
+
+void Wavefront::setTimeStep(double dt)
+{
+    if (!(dt >= 0.0) || !std::isfinite(dt))
+        throw Error("Wavefront: time_step must be a finite number >= 0 (0 = grid_size / V; got " +
+                    std::to_string(dt) + ")");
+    timeStep_ = dt;
+}
+
+double Wavefront::effectiveTimeStep() const
+{
+    return timeStep_ > 0.0 ? timeStep_ : gridSize_ / ctx_->speed();
+}
+
+double Wavefront::getHoldTime() const
+{
+    double h = 0.0;
+    for (std::size_t i = 1; i < waypoints_.size(); ++i)
+        if (waypoints_[i].x == waypoints_[i - 1].x && waypoints_[i].y == waypoints_[i - 1].y)
+            h += waypoints_[i].t - waypoints_[i - 1].t;
+    return h;
+}
+
+void Wavefront::setup()
+{
+    Planner::setup();
+    if (!dynamic_cast<const TimeSE2StateSpace *>(si_->getStateSpace().get()))
+    {
+        OMPL_ERROR("%s: the state space must be a TimeSE2StateSpace", getName().c_str());
+        setup_ = false;
+        return;
+    }
+    // The holds are checked by the validator that will judge the path; another validator: one of our own.
+    validator_ = std::dynamic_pointer_cast<const TravelTimeMotionValidator>(si_->getMotionValidator());
+    if (!validator_)
+        validator_ = std::make_shared<TravelTimeMotionValidator>(si_, ctx_);
+}
+
+void Wavefront::freeDataStates() const
+{
+    for (ompl::base::State *s : dataStates_)
+        si_->freeState(s);
+    dataStates_.clear();
+}
+
+void Wavefront::clear()
+{
+    Planner::clear();
+    freeDataStates();
+    settled_.clear();
+    waypoints_.clear();
+    message_.clear();
+    outcome_ = WavefrontOutcome::None;
+    travelTime_ = kInf;
+    expansions_ = cfc_ = cmc_ = 0;
+    bestCost_ = kInf;
+}
+
+WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, double gy,
+                                   const ompl::base::PlannerTerminationCondition &ptc)
+{
+    const GliderContext &ctx = *ctx_;
+    const CurrentField &field = *ctx.field;
+    const TravelTimeCalculator &travel = *ctx.travel;
+    const Environment *env = ctx.environment.get();
+    const double z = travel.params().depth;
+    Lattice lattice(ctx.region.xMin, ctx.region.xMax, ctx.region.yMin, ctx.region.yMax, gridSize_, sectors_);
+
+    // Start and goal (the state checks of OMPL's validity checker, with its reason when it has one).
+    const Lattice::VertexId s = lattice.setStart(sx, sy), g = lattice.setGoal(gx, gy);
+    ompl::base::State *scratch = si_->allocState();
+    struct FreeScratch
+    {
+        const ompl::base::SpaceInformationPtr &si;
+        ompl::base::State *st;
+        ~FreeScratch()
+        {
+            si->freeState(st);
+        }
+    } freeScratch{si_, scratch};
+    auto validState = [&](double x, double y, double t) {
+        scratch->as<TimeState>()->setXYT(x, y, t);
+        scratch->as<TimeState>()->setYaw(0.0);
+        return si_->isValid(scratch);
+    };
+    if (s == Lattice::kNone)
+    {
+        message_ = "start " + formatPoint(sx, sy) + " lies outside the planning region";
+        return WavefrontOutcome::InvalidStart;
+    }
+    if (!std::isfinite(t0) || !(t0 >= ctx.region.tMin && t0 <= ctx.region.tMax) || !validState(sx, sy, t0))
+    {
+        message_ = "start " + formatPoint(sx, sy) + " is not a valid state at t0 = " + std::to_string(t0);
+        if (const auto *vc = dynamic_cast<const GliderStateValidityChecker *>(si_->getStateValidityChecker().get()))
+        {
+            const std::string why = vc->whyInvalid(scratch);
+            if (!why.empty())
+                message_ += ": " + why;
+        }
+        return WavefrontOutcome::InvalidStart;
+    }
+    if (g == Lattice::kNone || !field.inWater(gx, gy, z))
+    {
+        message_ = "goal " + formatPoint(gx, gy) +
+                   (g == Lattice::kNone ? " lies outside the planning region" : " is not in water");
+        return WavefrontOutcome::InvalidGoal;
+    }
+
+    // Time intervals tau_k = [t0 + k dt, t0 + (k + 1) dt), k = 0 .. K - 1, up to the end of the window.
+    const double tEnd = std::min(ctx.region.tMax, ctx.arriveNotAfter);
+    if (!std::isfinite(tEnd))
+    {
+        message_ = "the planning window has no finite end (region.tMax and the goal's arrival window are unbounded)";
+        return WavefrontOutcome::BadWindow;
+    }
+    const double dt = effectiveTimeStep();
+    const double intervals = std::floor((tEnd - t0) / dt) + 1.0;
+    if (!(intervals <= kMaxIntervals))  // (also keeps k below kArrived)
+    {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "Wavefront: time_step %g gives %.4g time intervals over the planning window [%g, %g] (at most "
+                      "1e6): use a larger time_step",
+                      dt, intervals, t0, tEnd);
+        throw Error(text);
+    }
+    if (!(intervals >= 1.0))
+    {
+        message_ = "the planning window ends (t = " + std::to_string(tEnd) + ") before the departure";
+        return WavefrontOutcome::Exhausted;
+    }
+    const auto K = static_cast<std::uint64_t>(intervals);
+    auto intervalStart = [&](std::uint64_t k) { return t0 + static_cast<double>(k) * dt; };
+    auto intervalOf = [&](double t) {
+        const double k = std::floor((t - t0) / dt);
+        return k <= 0.0 ? std::uint64_t{0} : std::min(K - 1, static_cast<std::uint64_t>(k));
+    };
+    const double notBefore = ctx.arriveNotBefore;
+
+    std::unordered_map<Lattice::VertexId, bool> wet;  // land cache of the vertices looked at
+    auto inWater = [&](Lattice::VertexId v) {
+        const auto [it, inserted] = wet.try_emplace(v, false);
+        if (inserted)
+            it->second = field.inWater(lattice.x(v), lattice.y(v), z);
+        return it->second;
+    };
+    // A hold at (x, y) over [t1, t2]: the motion validator's verdict (canHold(): |c| < V; the environment).
+    auto holdValid = [&](double x, double y, double t1, double t2) {
+        return t2 == t1 || validator_->classify(x, y, t1, x, y, t2) == MotionVerdict::Valid;
+    };
+
+    std::unordered_map<NodeKey, NodeLabel> labels;
+    std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> queue;
+    auto improve = [&](NodeKey n, double a, NodeKey parent, bool hold) {
+        NodeLabel &l = labels[n];
+        if (l.closed || !(a < l.a))
+            return;
+        l.a = a;
+        l.parent = parent;
+        l.hold = hold;
+        const std::uint64_t k = nodeInterval(n);
+        queue.push({k == kArrived ? a : std::max(a, intervalStart(k)), a, n});
+    };
+    improve(nodeKey(s, 0), t0, kNoNode, false);
+
+    NodeKey goalNode = kNoNode;
+    double arrival = kInf;
+    std::unordered_map<NodeKey, std::int64_t> settledIndex;
+    while (!queue.empty())
+    {
+        const QueueEntry e = queue.top();
+        queue.pop();
+        NodeLabel &label = labels[e.n];
+        if (label.closed || e.a != label.a)
+            continue;  // stale entry
+        label.closed = true;
+        if ((++expansions_ & 63u) == 0 && ptc())
+            return WavefrontOutcome::Terminated;
+        const Lattice::VertexId v = nodeVertex(e.n);
+        const std::uint64_t k = nodeInterval(e.n);
+        const double vx = lattice.x(v), vy = lattice.y(v);
+        const auto parentIt = settledIndex.find(label.parent);
+        settledIndex[e.n] = static_cast<std::int64_t>(settled_.size());
+        settled_.push_back({vx, vy, e.a, parentIt == settledIndex.end() ? -1 : parentIt->second});
+        // Earliest possible departure ([ThompsonICRA] Algorithm 1, lines 13-16).
+        const double tDepart = e.key;  // = max(A, start of tau_k)
+
+        if (k == kArrived)
+        {
+            goalNode = e.n;  // the earliest arrival inside the window
+            arrival = e.a;
+            break;
+        }
+        if (v == g)
+        {
+            // Earliest valid arrival in the goal's window: hold at the goal until the window opens when needed.
+            const double t = std::max(tDepart, notBefore);
+            if (t <= tEnd && holdValid(vx, vy, tDepart, t))
+            {
+                goalNode = e.n;
+                arrival = t;
+                break;
+            }
+        }
+        // Hold position into the next interval ([ThompsonICRA] Algorithm 1, lines 6-10).
+        if (k + 1 < K && holdValid(vx, vy, tDepart, intervalStart(k + 1)))
+            improve(nodeKey(v, k + 1), e.a, e.n, true);
+        // Move to each lattice neighbour ([ThompsonICRA] Algorithm 1, lines 11-22).
+        lattice.forEachSuccessor(v, [&](Lattice::VertexId u) {
+            if (u == Lattice::kNone || !inWater(u))
+                return;
+            const double ux = lattice.x(u), uy = lattice.y(u);
+            const double w = travel.travelTime(vx, vy, ux, uy, tDepart);
+            if (!std::isfinite(w))
+                return;
+            const double ta = tDepart + w;
+            if (!(ta <= tEnd))
+                return;
+            const NodeKey child = nodeKey(u, u == g && ta >= notBefore ? kArrived : intervalOf(ta));
+            const auto it = labels.find(child);
+            if (it != labels.end() && (it->second.closed || !(ta < it->second.a)))
+                return;
+            if (env && !env->legFree(vx, vy, tDepart, ux, uy, ta))
+                return;
+            if (!validState(ux, uy, ta))
+                return;
+            improve(child, ta, e.n, false);
+        });
+    }
+    if (goalNode == kNoNode)
+    {
+        message_ = "no path reaches the goal by t = " + std::to_string(tEnd) + " (" + std::to_string(expansions_) +
+                   " nodes expanded)";
+        return WavefrontOutcome::Exhausted;
+    }
+
+    // The path ([ThompsonICRA] Algorithm 1, lines 24-29): parents from the goal node back to the start.
+    std::vector<NodeKey> chain;
+    for (NodeKey n = goalNode; n != kNoNode; n = labels[n].parent)
+        chain.push_back(n);
+    std::vector<TimedWaypoint> wp;
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it)
+    {
+        const NodeLabel &l = labels[*it];
+        const Lattice::VertexId v = nodeVertex(*it);
+        // a hold ends at the start of the node's interval; a move arrives at A
+        wp.push_back({lattice.x(v), lattice.y(v), l.hold ? intervalStart(nodeInterval(*it)) : l.a});
+    }
+    if (arrival > wp.back().t)
+        wp.push_back({wp.back().x, wp.back().y, arrival});  // the final hold at the goal until its window opens
+    // Merge each run of holds at one place into one motion where the validator accepts it.
+    std::vector<TimedWaypoint> merged;
+    for (std::size_t i = 0; i < wp.size();)
+    {
+        std::size_t j = i;
+        while (j + 1 < wp.size() && wp[j + 1].x == wp[i].x && wp[j + 1].y == wp[i].y)
+            ++j;
+        merged.push_back(wp[i]);
+        if (j > i)
+        {
+            if (holdValid(wp[i].x, wp[i].y, wp[i].t, wp[j].t))
+                merged.push_back(wp[j]);
+            else
+                merged.insert(merged.end(), wp.begin() + static_cast<std::ptrdiff_t>(i) + 1,
+                              wp.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+        }
+        i = j + 1;
+    }
+    waypoints_ = std::move(merged);
+    travelTime_ = arrival - t0;
+    return WavefrontOutcome::Exact;
+}
+
+ompl::base::PlannerStatus Wavefront::solve(const ompl::base::PlannerTerminationCondition &ptc)
+{
+    checkValidity();
+    if (pdef_->getStartStateCount() == 0)
+    {
+        OMPL_ERROR("%s: invalid start: no start state given", getName().c_str());
+        return ompl::base::PlannerStatus::INVALID_START;
+    }
+    const auto *st = pdef_->getStartState(0)->as<TimeState>();
+    const double sx = st->getX(), sy = st->getY(), t0 = st->getTime();
+    std::string why;
+    const std::optional<Point2> goal = goalPosition(*pdef_->getGoal(), &why);
+    if (!goal)
+    {
+        OMPL_ERROR("%s: %s", getName().c_str(), why.c_str());
+        return ompl::base::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
+    }
+
+    freeDataStates();
+    settled_.clear();
+    waypoints_.clear();
+    message_.clear();
+    travelTime_ = kInf;
+    expansions_ = 0;
+    bestCost_ = kInf;
+    cfcBase_ = ctx_->travel->costFunctionCalls();
+    cmcBase_ = ctx_->field->callCount();
+    solving_ = true;
+    try
+    {
+        outcome_ = search(sx, sy, t0, goal->x, goal->y, ptc);
+    }
+    catch (...)
+    {
+        solving_ = false;
+        throw;
+    }
+    cfc_ = ctx_->travel->costFunctionCalls() - cfcBase_;
+    cmc_ = ctx_->field->callCount() - cmcBase_;
+    solving_ = false;
+
+    switch (outcome_)
+    {
+        case WavefrontOutcome::InvalidStart:
+            OMPL_ERROR("%s: invalid start: %s", getName().c_str(), message_.c_str());
+            return ompl::base::PlannerStatus::INVALID_START;
+        case WavefrontOutcome::InvalidGoal:
+            OMPL_ERROR("%s: invalid goal: %s", getName().c_str(), message_.c_str());
+            return ompl::base::PlannerStatus::INVALID_GOAL;
+        case WavefrontOutcome::Exhausted:
+        case WavefrontOutcome::BadWindow:
+            OMPL_INFORM("%s: %s", getName().c_str(), message_.c_str());
+            return ompl::base::PlannerStatus::ABORT;  // more time would not help (OMPL 1.5: no "infeasible")
+        case WavefrontOutcome::Terminated:
+            return ompl::base::PlannerStatus::TIMEOUT;
+        default:
+            break;
+    }
+    auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
+    waypointsToPath(waypoints_, *path);
+    bestCost_ = travelTime_;
+    ompl::base::PlannerSolution sol(path);
+    sol.setPlannerName(getName());
+    if (pdef_->getOptimizationObjective())
+        sol.setOptimized(pdef_->getOptimizationObjective(), ompl::base::Cost(travelTime_), true);
+    pdef_->addSolutionPath(sol);
+    return ompl::base::PlannerStatus::EXACT_SOLUTION;
+}
+
+void Wavefront::getPlannerData(ompl::base::PlannerData &data) const
+{
+    Planner::getPlannerData(data);
+    if (settled_.empty())
+        return;
+    // The states live until the next solve() / clear() (PlannerData keeps pointers to them).
+    if (dataStates_.size() != settled_.size())
+    {
+        freeDataStates();
+        for (const SettledNode &n : settled_)
+        {
+            ompl::base::State *s = si_->allocState();
+            s->as<TimeState>()->setXYT(n.x, n.y, n.a);
+            s->as<TimeState>()->setYaw(0.0);
+            dataStates_.push_back(s);
+        }
+    }
+    for (std::size_t i = 0; i < settled_.size(); ++i)
+    {
+        const SettledNode &n = settled_[i];
+        const ompl::base::PlannerDataVertex vertex(dataStates_[i]);
+        if (n.parent < 0)
+            data.addStartVertex(vertex);
+        else
+        {
+            const SettledNode &p = settled_[static_cast<std::size_t>(n.parent)];
+            data.addEdge(ompl::base::PlannerDataVertex(dataStates_[static_cast<std::size_t>(n.parent)]), vertex,
+                         ompl::base::PlannerDataEdge(), ompl::base::Cost(n.a - p.a));
+        }
+    }
+    if (outcome_ == WavefrontOutcome::Exact)
+        data.markGoalState(dataStates_.back());
+}
+}  // namespace ompl_glider
