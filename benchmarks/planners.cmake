@@ -4,3 +4,6 @@ glider_add_benchmark(bench_table4 ${CMAKE_CURRENT_LIST_DIR}/table4/bench_table4.
 # Issue 15: CFC / CMC / expansions / wall time of the search configurations on the repository's problems, 100 random
 # jet pairs and a 10^6-vertex gridded forecast (benchmarks/search/README.md).
 glider_add_benchmark(bench_search ${CMAKE_CURRENT_LIST_DIR}/search/bench_search.cpp)
+# Issue 12: the level-set planner's error against the shooting optimum vs wall time, beside ZA*TVE + refinement,
+# and what the narrow band, the gradient heading and the threads buy.
+glider_add_benchmark(bench_levelset ${CMAKE_CURRENT_LIST_DIR}/reachability/bench_levelset.cpp)

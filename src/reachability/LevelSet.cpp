@@ -126,7 +126,8 @@ struct SparseDistance
 
 /// Signed distance of polygon p shifted by (sx, sy) at the nodes within band of its bounding box; values below
 /// -band are left out.
-SparseDistance polygonDistance(const Grid &g, const Polygon &p, double sx, double sy, double band)
+SparseDistance polygonDistance(const Grid &g, const Polygon &p, double sx, double sy, double band,
+                               double clearance = 0.0)
 {
     SparseDistance out;
     const BoundingBox &b = p.bounds();
@@ -137,7 +138,7 @@ SparseDistance polygonDistance(const Grid &g, const Polygon &p, double sx, doubl
     for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i)
         {
-            const double d = p.signedDistance(g.x(i) - sx, g.y(j) - sy);
+            const double d = p.signedDistance(g.x(i) - sx, g.y(j) - sy) + clearance;
             if (d > -band)
             {
                 out.nodes.push_back(static_cast<std::uint32_t>(g.index(i, j)));
@@ -149,7 +150,8 @@ SparseDistance polygonDistance(const Grid &g, const Polygon &p, double sx, doubl
 
 /// Signed distance from a node mask (true = forbidden): the boundary is taken half-way between neighbouring nodes
 /// of opposite kinds; band-limited.
-void maskDistance(const Grid &g, const std::vector<char> &blocked, double band, std::vector<double> &d)
+void maskDistance(const Grid &g, const std::vector<char> &blocked, double band, std::vector<double> &d,
+                  double clearance = 0.0)
 {
     d.assign(g.size(), -band);
     std::vector<double> best(g.size(), kInf);
@@ -175,7 +177,7 @@ void maskDistance(const Grid &g, const std::vector<char> &blocked, double band, 
     for (std::size_t n = 0; n < g.size(); ++n)
     {
         const double dist = std::min(best[n], band);
-        d[n] = blocked[n] ? dist : -dist;
+        d[n] = std::clamp((blocked[n] ? dist : -dist) + clearance, -band, band);
     }
 }
 
@@ -307,6 +309,8 @@ LevelSetSolver::LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSe
         throw Error("LevelSet: resolution (cell size) must be > 0, got " + std::to_string(params_.cellSize));
     if (!(params_.cfl > 0.0 && params_.cfl <= 2.0))
         throw Error("LevelSet: cfl must be in (0, 2], got " + std::to_string(params_.cfl));
+    if (!(params_.clearance >= 0.0) || !std::isfinite(params_.clearance))
+        throw Error("LevelSet: clearance must be >= 0, got " + std::to_string(params_.clearance));
     if (!(params_.band >= 4.0 && params_.band <= 50.0))
         throw Error("LevelSet: band must be in [4, 50] cells, got " + std::to_string(params_.band));
     const Region &r = ctx_->region;
@@ -338,7 +342,7 @@ LevelSetSolver::LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSe
             if (!ctx_->field->inWater(g.x(i), g.y(j), z))
                 land[g.index(i, j)] = anyLand = 1;
     if (anyLand)
-        maskDistance(g, land, band, impl_->staticD);
+        maskDistance(g, land, band, impl_->staticD, params_.clearance);
     else
         impl_->staticD.assign(g.size(), -band);
 
@@ -352,12 +356,12 @@ LevelSetSolver::LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSe
     {
         if (const auto *s = dynamic_cast<const StaticRegion *>(m))
         {
-            const SparseDistance d = polygonDistance(g, s->polygon(), 0.0, 0.0, band);
+            const SparseDistance d = polygonDistance(g, s->polygon(), 0.0, 0.0, band, params_.clearance);
             for (std::size_t k = 0; k < d.nodes.size(); ++k)
                 impl_->staticD[d.nodes[k]] = std::max(impl_->staticD[d.nodes[k]], d.d[k]);
         }
         else if (const auto *tz = dynamic_cast<const TimeWindowedZone *>(m))
-            impl_->zones.push_back({tz, polygonDistance(g, tz->polygon(), 0.0, 0.0, band)});
+            impl_->zones.push_back({tz, polygonDistance(g, tz->polygon(), 0.0, 0.0, band, params_.clearance)});
         else if (const auto *iz = dynamic_cast<const IceZone *>(m))
         {
             if (params_.iceForbidden)
@@ -418,7 +422,7 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
         for (const IceZone *iz : impl_->ice)
         {
             const Point2 s = iz->displacement(t);
-            const SparseDistance d = polygonDistance(g, iz->shape(), s.x, s.y, band);
+            const SparseDistance d = polygonDistance(g, iz->shape(), s.x, s.y, band, params_.clearance);
             for (std::size_t k = 0; k < d.nodes.size(); ++k)
                 raise(d.nodes[k], d.d[k]);
         }
@@ -434,7 +438,7 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
             if (any)
             {
                 std::vector<double> d;
-                maskDistance(g, blocked, band, d);
+                maskDistance(g, blocked, band, d, params_.clearance);
                 for (std::size_t n = 0; n < g.size(); ++n)
                     if (d[n] > -band)
                         raise(static_cast<std::uint32_t>(n), d[n]);
@@ -493,7 +497,7 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
                 for (int bb = std::max(0, b - 1); bb <= std::min(ty - 1, b + 1) && !on; ++bb)
                     for (int aa = std::max(0, a - 1); aa <= std::min(tx - 1, a + 1) && !on; ++aa)
                         on = tileLive[static_cast<std::size_t>(bb) * tx + aa];
-                if (on)
+                if (on || !params_.narrowBand)
                     activeTiles.push_back(static_cast<std::uint32_t>(b * tx + a));
             }
     };
@@ -524,6 +528,13 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
         // The disc's centre (u = 0: drifting, or holding where |c| < V) covers minima inside the disc (the start).
         const double centre = g.cubic(f, qx, qy, band);
         double a0 = std::atan2(ny, nx);
+        if (params_.headingScan > 0)
+        {
+            double v = centre;
+            for (int k = 0; k < params_.headingScan; ++k)
+                v = std::min(v, at(2.0 * M_PI * k / params_.headingScan));
+            return v;
+        }
         if (!known)
         {
             double v = band;
@@ -696,6 +707,8 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
         const double holdTol = std::max(3.0 * dt, 2e-3 * (out.goalTime - t0));
         const double done = t0 + dt0;
         const std::size_t maxBack = 4 * static_cast<std::size_t>((out.goalTime - t0) / dt + 10);
+        double lastNx = 0.0, lastNy = 0.0;  // the last normal found: kept for a few steps where the path runs
+        int blind = 0;                      // along unreached nodes (the edge of a forbidden region)
         for (std::size_t k = 0; k < maxBack && pt > done; ++k)
         {
             const double Tx = out.arrivalAt(px, py);
@@ -710,9 +723,13 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
                 }
             }
             const double h1 = std::min(dt, pt - done);
-            double nx, ny;
-            if (!normal(px, py, nx, ny))
-                break;
+            double nx = lastNx, ny = lastNy;
+            if (normal(px, py, nx, ny))
+                blind = 0;
+            else if (++blind > 8 || !(lastNx != 0.0 || lastNy != 0.0))
+                break;  // off the reached nodes for long (along a forbidden region's edge): stop
+            lastNx = nx;
+            lastNy = ny;
             const Velocity c1 = field.velocity(px, py, z, pt);
             const double mx = px - 0.5 * h1 * (c1.u + V * nx), my = py - 0.5 * h1 * (c1.v + V * ny);
             double nmx = nx, nmy = ny;

@@ -48,7 +48,7 @@ double defaultLevelSetResolution(const GliderContext &ctx)
 }
 
 std::vector<TimedWaypoint> levelSetWaypoints(const GliderContext &ctx, const std::vector<TimedPoint> &path,
-                                             double tolerance)
+                                             double tolerance, std::string *why)
 {
     std::vector<TimedWaypoint> out;
     if (path.size() < 2)
@@ -97,7 +97,8 @@ std::vector<TimedWaypoint> levelSetWaypoints(const GliderContext &ctx, const std
             // hold until the first departure (on a fine time grid, up to a few of its steps past its own time) at
             // which the next leg is free, where the glider can hold.
             j = a + 1;
-            const double step = std::max(path[a + 1].t - path[a].t, 1e-9) / 4.0;
+            // a quarter of the backtracking's mean step (a hold pair's span would be far too coarse)
+            const double step = std::max((path.back().t - path.front().t) / static_cast<double>(n), 1e-9) / 4.0;
             const double from = std::max(t, path[a].t);
             bool found = false;
             for (int m = 0; m <= 64 && !found && !heldHere; ++m)
@@ -115,12 +116,36 @@ std::vector<TimedWaypoint> levelSetWaypoints(const GliderContext &ctx, const std
                 }
             }
             if (!found)
+            {
+                if (why)
+                {
+                    const std::string env =
+                        ctx.environment ? ctx.environment->whyLegBlocked(path[a].x, path[a].y, t, path[a + 1].x,
+                                                                         path[a + 1].y, t + 1e-9)
+                                        : std::string();
+                    *why = "leg from (" + std::to_string(path[a].x) + ", " + std::to_string(path[a].y) +
+                           ") at time " + std::to_string(t) + " (level set " + std::to_string(path[a].t) +
+                           ") to the next point is infeasible" + (env.empty() ? "" : ": " + env);
+                }
                 return {};
+            }
             heldHere = true;
         }
         else
             heldHere = false;
-        t += tt;
+        double arrive = t + tt;
+        if (path[j].t > arrive)
+        {
+            // The level set reaches this point later than the straight legs at full speed: keep its schedule by
+            // flying the leg slower, within the leg's arrival window (the motion validator's pace), where that keeps
+            // the leg free (e.g. arriving at a lane as it opens when the current is too strong to hold).
+            const ArrivalWindow w = ctx.travel->arrivalWindow(path[a].x, path[a].y, path[j].x, path[j].y, t);
+            const double slow = std::min(path[j].t, t + w.latest * (1.0 - 1e-9));
+            if (slow > arrive && slow <= ctx.region.tMax &&
+                (!ctx.environment || ctx.environment->legFree(path[a].x, path[a].y, t, path[j].x, path[j].y, slow)))
+                arrive = slow;
+        }
+        t = arrive;
         out.push_back({path[j].x, path[j].y, t});
         a = j;
     }
@@ -195,6 +220,7 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
     LevelSetParams p = params_;
     p.cellSize = resolution_ > 0.0 ? resolution_ : defaultLevelSetResolution(*ctx_);
     usedResolution_ = p.cellSize;
+    p.clearance = 0.5 * p.cellSize;  // the legs between backtracked points must clear the forbidden regions
     const LevelSetSolver solver(ctx_, p);
     const double tEnd = std::min(r.tMax, ctx_->field->timeEnd());
     last_ = solver.solve(sx, sy, t0, tEnd, Point2{gx, gy}, true, [&ptc] { return ptc(); });
@@ -209,11 +235,12 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
         return ompl::base::PlannerStatus::ABORT;
     }
     levelSetTime_ = last_.goalTime - t0;
-    waypoints_ = levelSetWaypoints(*ctx_, last_.path, p.cellSize / 3.0);
+    why.clear();
+    waypoints_ = levelSetWaypoints(*ctx_, last_.path, p.cellSize / 3.0, &why);
     if (waypoints_.empty())
     {
-        OMPL_ERROR("%s: the backtracked path cannot be flown as straight legs (resolution %g)", getName().c_str(),
-                   p.cellSize);
+        OMPL_ERROR("%s: the backtracked path cannot be flown as straight legs (resolution %g): %s", getName().c_str(),
+                   p.cellSize, why.c_str());
         return ompl::base::PlannerStatus::ABORT;
     }
     auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);

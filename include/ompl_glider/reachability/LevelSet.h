@@ -23,6 +23,11 @@ struct LevelSetParams
     double band{6.0};       ///< narrow band: phi is kept within +-band cells of the front; in [4, 50]
     unsigned threads{0};    ///< threads sharing each step (0: all cores)
     int reinitEvery{4};     ///< reinitialise phi to a signed distance every this many steps (0: never)
+    double clearance{0.0};  ///< forbidden regions grown by this distance (>= 0; the planner keeps half a cell so that
+                            ///< its straight legs clear them; 0 for the reference optimum)
+    bool narrowBand{true};  ///< update only the tiles near the front (false: every node every step; for measuring)
+    int headingScan{0};     ///< 0: the heading along grad phi, +-0.25 rad and the parabola (4 evaluations); N > 0:
+                            ///< N evenly spaced headings instead (for measuring what the gradient buys)
     bool iceForbidden{true};  ///< ice zones are kept out of the front (the glider cannot surface there); false: they
                               ///< are ignored (the limit on the time under ice is not modelled either way)
 };

@@ -3,6 +3,7 @@
 /// @brief The level-set solver as an OMPL planner ("LevelSet", issue 12).
 
 #include <memory>
+#include <string>
 
 #include <ompl/base/Planner.h>
 
@@ -93,7 +94,7 @@ double defaultLevelSetResolution(const GliderContext &ctx);
 
 /// @brief A backtracked level-set path (LevelSetSolver) as waypoints a glider flies: thinned to straight legs within
 /// @p tolerance of the curve and free of forbidden regions, timed by the travel-time code from the first point's
-/// time; holds kept where the glider can hold. Empty when no timing is feasible.
+/// time; holds kept where the glider can hold. Empty when no timing is feasible (@p why, if given, says where).
 std::vector<TimedWaypoint> levelSetWaypoints(const GliderContext &ctx, const std::vector<TimedPoint> &path,
-                                             double tolerance);
+                                             double tolerance, std::string *why = nullptr);
 }  // namespace ompl_glider

@@ -1,0 +1,145 @@
+// Level-set planner (issue 12): error against the shooting optimum versus wall time, beside ZA*TVE + refinement, on
+// the eight meandering-jet crossings of test_planner_vs_optimum (region x in [0, 10], y in [-4, 4], V = 0.5,
+// t0 = 0); then what the narrow band, the gradient heading and the threads each buy at cell 0.05.
+//   bench_levelset [--quick]
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "ompl_glider/ompl/GliderSetup.h"
+#include "ompl_glider/planners/ZAStarTVE.h"
+#include "ompl_glider/reachability/LevelSet.h"
+#include "ompl_glider/reference/ZermeloReference.h"
+
+using namespace ompl_glider;
+
+namespace
+{
+struct Pair
+{
+    double sx, sy, gx, gy, optimum;
+};
+
+double seconds(std::chrono::steady_clock::time_point a)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
+}
+
+GliderProblem problem(const std::shared_ptr<const CurrentField> &jet, const Pair &p)
+{
+    GliderProblem g;
+    g.field = jet;
+    g.startX = p.sx;
+    g.startY = p.sy;
+    g.goalX = p.gx;
+    g.goalY = p.gy;
+    return g;
+}
+
+struct Row
+{
+    double meanErr{0}, maxErr{0}, meanSeconds{0};
+};
+
+template <class F>
+Row measure(const std::vector<Pair> &pairs, F &&solve)
+{
+    Row r;
+    for (const Pair &p : pairs)
+    {
+        const auto t = std::chrono::steady_clock::now();
+        const double T = solve(p);
+        r.meanSeconds += seconds(t) / pairs.size();
+        const double e = std::abs(T - p.optimum) / p.optimum;
+        r.meanErr += e / pairs.size();
+        r.maxErr = std::max(r.maxErr, e);
+    }
+    return r;
+}
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+    auto jet = std::make_shared<MeanderingJet>();
+    std::vector<Pair> pairs = {{1.0, -3.0, 8.0, 3.0, 0}, {1.0, 3.0, 9.0, -2.5, 0}, {2.0, -3.5, 7.0, 3.5, 0},
+                               {0.5, -2.0, 9.5, 2.0, 0}, {2.0, 3.5, 8.0, -3.5, 0}, {0.5, 3.0, 5.0, -3.0, 0},
+                               {8.0, 3.0, 2.0, -3.0, 0}, {5.0, -3.5, 4.0, 3.5, 0}};
+    if (quick)
+        pairs.resize(3);
+    ZermeloParams zp;
+    zp.speed = 0.5;
+    zp.maxTime = 40.0;
+    const ZermeloReference ref(jet, zp);
+    for (Pair &p : pairs)
+        p.optimum = ref.solve(p.sx, p.sy, p.gx, p.gy, 0.0).travelTime;
+    const auto ctx = makeGliderContext(problem(jet, pairs.front()));
+
+    std::printf("Error against the shooting optimum vs wall time, %zu jet crossings (mean over pairs)\n\n",
+                pairs.size());
+    std::printf("| method | resolution | mean error | max error | mean time (s) |\n|---|---|---|---|---|\n");
+    const std::vector<double> cells = quick ? std::vector<double>{0.1, 0.05} :
+                                              std::vector<double>{0.1, 0.07, 0.05, 0.035, 0.025};
+    for (double h : cells)
+    {
+        LevelSetParams lp;
+        lp.cellSize = h;
+        const LevelSetSolver solver(ctx, lp);
+        const Row r = measure(pairs, [&](const Pair &p) {
+            return solver.solve(p.sx, p.sy, 0.0, 60.0, Point2{p.gx, p.gy}).goalTime;
+        });
+        std::printf("| LevelSet | cell %.3f | %.3f %% | %.3f %% | %.2f |\n", h, 100 * r.meanErr, 100 * r.maxErr,
+                    r.meanSeconds);
+    }
+    for (double grid : quick ? std::vector<double>{0.4} : std::vector<double>{0.8, 0.4, 0.2})
+    {
+        const Row r = measure(pairs, [&](const Pair &p) {
+            std::shared_ptr<GliderContext> c;
+            auto ss = makeSimpleSetup(problem(jet, p), &c);
+            auto z = std::make_shared<ZAStarTVE>(ss->getSpaceInformation(), c, "ZA*TVE");
+            z->setGridSize(grid);
+            ss->setPlanner(z);
+            if (ss->solve(600.0) != ompl::base::PlannerStatus::EXACT_SOLUTION)
+                return static_cast<double>(INFINITY);
+            // ZA*TVE smooths and refines its path by default: the arrival of the returned path
+            const auto *last = ss->getSolutionPath().getStates().back()->as<TimeSE2StateSpace::StateType>();
+            return last->getTime();
+        });
+        std::printf("| ZA*TVE + smoothing + refinement | grid %.1f, 3 sectors | %.3f %% | %.3f %% | %.2f |\n", grid,
+                    100 * r.meanErr, 100 * r.maxErr, r.meanSeconds);
+    }
+
+    std::printf("\nWhat each part buys, cell 0.05, pair (%.1f, %.1f) -> (%.1f, %.1f), optimum %.4f\n\n",
+                pairs.front().sx, pairs.front().sy, pairs.front().gx, pairs.front().gy, pairs.front().optimum);
+    std::printf("| configuration | travel time | error | time (s) | node updates |\n|---|---|---|---|---|\n");
+    struct Config
+    {
+        const char *name;
+        bool band;
+        int scan;
+        unsigned threads;
+    };
+    const Config configs[] = {{"default: narrow band, gradient heading, 2 threads", true, 0, 2},
+                              {"1 thread", true, 0, 1},
+                              {"every node every step (no narrow band)", false, 0, 2},
+                              {"16 headings instead of the gradient", true, 16, 2},
+                              {"64 headings instead of the gradient", true, 64, 2}};
+    for (const Config &c : configs)
+    {
+        LevelSetParams lp;
+        lp.cellSize = 0.05;
+        lp.narrowBand = c.band;
+        lp.headingScan = c.scan;
+        lp.threads = c.threads;
+        const Pair &p = pairs.front();
+        const Reachability r = LevelSetSolver(ctx, lp).solve(p.sx, p.sy, 0.0, 60.0, Point2{p.gx, p.gy});
+        std::printf("| %s | %.4f | %+.3f %% | %.2f | %.3g |\n", c.name, r.goalTime, 100 * (r.goalTime / p.optimum - 1),
+                    r.stats.seconds, static_cast<double>(r.stats.nodeUpdates));
+    }
+    return 0;
+}
