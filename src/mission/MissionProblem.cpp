@@ -604,6 +604,11 @@ GliderProblem MissionProblem::gliderProblem(double tDep, double speed) const
     p.startY = start_.y;
     p.goalX = goal_.x;
     p.goalY = goal_.y;
+    if (spec_.goalWindow.set)
+    {
+        p.arriveNotBefore = spec_.goalWindow.begin;
+        p.arriveNotAfter = spec_.goalWindow.end;
+    }
     p.goalTolerance = spec_.planner.goalTolerance >= 0
                           ? spec_.planner.goalTolerance
                           : 1e-6 * std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);

@@ -94,6 +94,13 @@ struct PlannedPath
     double rawTravelTime{std::numeric_limits<double>::infinity()};       ///< raw path arrival - departure
     double smoothedTravelTime{std::numeric_limits<double>::infinity()};  ///< smoothed path arrival - departure
     double travelTime{std::numeric_limits<double>::infinity()};          ///< final path arrival - departure
+    /// Total time spent holding position on the final path (its zero-length legs: at the goal or a waypoint to
+    /// arrive in the goal window, or the lattice's waits at a time-windowed zone); field time units
+    double holdTime{0.0};
+    /// How the arrival was moved into the goal window (MissionSpec::goalWindow): "hold at the goal", "hold at
+    /// waypoint K", "later departure (hold at the start)", "slower leg K -> K+1"; empty when the planner's arrival
+    /// was in the window or there is none
+    std::string arrivalTiming;
     double rawPathLength{0.0};  ///< raw path length
     double pathLength{0.0};     ///< final path length
     double straightLineTime{std::numeric_limits<double>::infinity()};  ///< direct leg (+inf: impassable)
