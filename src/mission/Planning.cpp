@@ -540,7 +540,7 @@ std::string timeText(const MissionProblem &problem, double t)
 /// Goals in time (issue 12; [ThompsonICRA] Sec. III, the earliest valid arrival): moves the arrival of a solved plan
 /// into the goal window [begin, end] of the mission. Early: hold at the goal where the glider can (|c| < V over the
 /// hold, TravelTimeMotionValidator::canHold); else time the arrival: from the last waypoint before the goal back to
-/// the start, fly the leg leaving it slower (any pace in its arrival window) or hold there, the rest of the path flown
+/// the start, hold there (where |c| < V) or fly the leg leaving it slower (any pace in its arrival window), the rest of the path flown
 /// as fast as possible (legTravelTime), the delay found by bisection (the arrival of a fastest flight does not
 /// decrease with its departure on each leg, FIFO); the first candidate whose arrival lands in the window and whose
 /// path passes PathGeometric::check() is kept. Late, or no candidate: no path in the window (solved false).
@@ -635,22 +635,42 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
         }
         return out;
     };
-    // smallest x in [lo, hi] with arrival(x) >= B (arrival non-decreasing in x), by bisection
+    // smallest x in [lo, hi] with arrival(x) >= B: a scan at 33 points for the first bracket [a, b] with a finite
+    // arrival before B at a and in reach of B at b (the arrival jumps or is infeasible where the path meets the
+    // current at other times), then bisection inside it (arrival non-decreasing in x there)
     auto bisect = [&](double lo, double hi, const std::function<std::vector<TimedWaypoint>(double)> &fly)
         -> std::vector<TimedWaypoint> {
-        std::vector<TimedWaypoint> best = fly(hi);
-        if (!std::isfinite(best.back().t) || best.back().t < B - tol)
+        constexpr int kScan = 32;
+        double a = lo;
+        std::vector<TimedWaypoint> best;
+        for (int i = 0; i <= kScan; ++i)
+        {
+            const double x = lo + (hi - lo) * i / kScan;
+            std::vector<TimedWaypoint> c = fly(x);
+            const double t = c.back().t;
+            if (!std::isfinite(t))
+                continue;
+            if (t < B - tol)
+                a = x;
+            else if (t <= E + tol && x > a)
+            {
+                best = std::move(c);
+                hi = x;
+                break;
+            }
+        }
+        if (best.empty())
             return {};
-        for (int it = 0; it < 60 && hi - lo > 1e-12 * std::max(1.0, std::abs(hi)); ++it)
+        lo = a;
+        for (int it = 0; it < 60 && best.back().t > B + tol && hi - lo > 1e-12 * std::max(1.0, std::abs(hi)); ++it)
         {
             const double mid = 0.5 * (lo + hi);
             std::vector<TimedWaypoint> c = fly(mid);
             if (std::isfinite(c.back().t) && c.back().t >= B - tol)
             {
                 hi = mid;
-                best = std::move(c);
-                if (best.back().t <= B + tol)
-                    break;
+                if (c.back().t <= E + tol)
+                    best = std::move(c);
             }
             else
                 lo = mid;
@@ -662,24 +682,6 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
         const TimedWaypoint &a = P[k], &b = P[k + 1];
         const bool holdLeg = a.x == b.x && a.y == b.y;  // an existing hold: lengthen it below
         const double tk = a.t;
-        if (!holdLeg)
-        {
-            // fly the leg k -> k + 1 slower: any duration in its arrival window
-            const ArrivalWindow aw = ctx->travel->arrivalWindow(a.x, a.y, b.x, b.y, tk);
-            if (std::isfinite(aw.earliest))
-            {
-                const double dMax = std::min(std::isfinite(aw.latest) ? aw.latest : kInf, B - tk);
-                if (dMax > aw.earliest)
-                {
-                    std::vector<TimedWaypoint> c =
-                        bisect(aw.earliest, dMax, [&](double d) { return flyOn(k, tk, d); });
-                    char how[96];
-                    std::snprintf(how, sizeof how, "slower leg %zu -> %zu", k, k + 1);
-                    if (!c.empty() && accept(std::move(c), how))
-                        break;
-                }
-            }
-        }
         // hold at waypoint k (k = 0: a later departure from the start), as long as the glider can
         double hMax = B - tk;
         if (!holdable(a, tk, tk + hMax))
@@ -705,6 +707,24 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
                 k == 0 ? std::string("later departure (hold at the start)") : "hold at waypoint " + std::to_string(k);
             if (!c.empty() && accept(std::move(c), how))
                 break;
+        }
+        if (!holdLeg)
+        {
+            // fly the leg k -> k + 1 slower: any duration in its arrival window
+            const ArrivalWindow aw = ctx->travel->arrivalWindow(a.x, a.y, b.x, b.y, tk);
+            if (std::isfinite(aw.earliest))
+            {
+                const double dMax = std::min(std::isfinite(aw.latest) ? aw.latest : kInf, B - tk);
+                if (dMax > aw.earliest)
+                {
+                    std::vector<TimedWaypoint> c =
+                        bisect(aw.earliest, dMax, [&](double d) { return flyOn(k, tk, d); });
+                    char how[96];
+                    std::snprintf(how, sizeof how, "slower leg %zu -> %zu", k, k + 1);
+                    if (!c.empty() && accept(std::move(c), how))
+                        break;
+                }
+            }
         }
     }
     r.postprocessCostFunctionCalls += ctx->travel->costFunctionCalls() - cfc0;
