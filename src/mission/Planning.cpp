@@ -567,7 +567,12 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
         return;
     }
     if (ta >= B - tol)
-        return;  // already in the window
+    {
+        // already in the window (a lattice planner holds at the goal itself: TveOptions::waiting)
+        if (r.path.size() >= 2 && lastHoldEnd(r.path) == r.path.size() - 1)
+            r.arrivalTiming = "hold at the goal";
+        return;
+    }
 
     GliderProblem gp = checkedProblem(problem, r.departure, r.speed);
     if (B > gp.t0 + gp.horizon)
