@@ -760,7 +760,8 @@ TravelTimeOfDeparture departureFunction(const MissionProblem &problem, double gr
         try
         {
             const PlannedPath p = planRoute(problem, tDep, o);
-            return p.solved ? p.travelTime : kInf;  // == rawTravelTime, holds for a goal window included
+            // with a goal window the travel time includes the holds that move the arrival into it
+            return !p.solved ? kInf : problem.getSpec().goalWindow.set ? p.travelTime : p.rawTravelTime;
         }
         catch (const Error &)
         {
