@@ -890,8 +890,10 @@ void checkGoalWindow(const MissionProblem &problem)
     if (w.end < first)
         throw Error(m.place("goal.window.end") + ": the arrival window ends at " + timeText(problem, w.end) +
                     ", before the departure (" + timeText(problem, first) + "): no plan can arrive in it");
-    const GliderProblem gp = checkedProblem(problem, last, m.vehicle.speed);
-    const double horizonEnd = gp.t0 + gp.horizon;
+    // (the departure itself is checked where it is planned: a window's end may lie past the forecast)
+    const GliderProblem gp = problem.gliderProblem(last, m.vehicle.speed);
+    const double fieldEnd = problem.getField()->timeEnd();
+    const double horizonEnd = std::min(gp.t0 + gp.horizon, std::isfinite(fieldEnd) ? fieldEnd : kInf);
     if (w.begin > horizonEnd)
         throw Error(m.place("goal.window.begin") + ": the arrival window opens at " + timeText(problem, w.begin) +
                     ", after the planning horizon ends (" + timeText(problem, horizonEnd) +
