@@ -340,6 +340,8 @@ MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
 {
     MissionProblem p(*this);
     p.start_ = start;
+    if (goal.x != goal_.x || goal.y != goal_.y)
+        p.spec_.goalWindow = {};  // the window belongs to the mission's goal
     p.goal_ = goal;
     return p;
 }
