@@ -201,6 +201,11 @@ std::vector<TimedWaypoint> retimePath(const MissionProblem &problem, std::shared
 /// smoothed or refined), solved when a plan was flown (exactly reaching the goal or not: PlannedPath::stints has the
 /// remaining distance). With another planner and a `stints` section, the final path is converted to stints
 /// (stintsFromPath()).
+/// Goals in time (MissionSpec::goalWindow, issue 12; [ThompsonICRA] Sec. III): after any planner, post-processing and
+/// the ensemble's choice, an arrival before the window is moved into it (a hold at the goal where the glider can hold
+/// there, else a hold at an earlier waypoint or a slower leg, latest first; PlannedPath::holdTime, arrivalTiming); an
+/// arrival after it, or one that cannot be delayed, is no path (solved false, reason says why). The stint conversion
+/// is made from the path before these holds.
 PlannedPath planRoute(const MissionProblem &problem, double departure, const PlanOptions &options = {});
 
 /// @brief The stint settings of the mission's `stints` section for a departure (depth from the vehicle).
