@@ -190,6 +190,39 @@ void applyExecution(const Flags &f, MissionSpec &m)
         e.seed = *f.executionSeed;
 }
 
+/// --arrive-between t1,t2: the goal's arrival window, each time read as the mission reads its departure (a number
+/// in field units, or a date with the forecast's calendar or the mission's epoch).
+void applyArrivalWindow(const Flags &f, MissionSpec &m)
+{
+    if (f.arriveBetween.empty())
+        return;
+    const std::vector<std::string> items = commaItems(f.arriveBetween);
+    if (items.size() != 2 || items[0].empty() || items[1].empty())
+        throw UsageError{"--arrive-between expects two times separated by a comma, begin,end (numbers in the "
+                         "mission's time unit, or ISO 8601 dates with --currents), got '" + f.arriveBetween + "'"};
+    double t[2];
+    for (int k = 0; k < 2; ++k)
+    {
+        try
+        {
+            t[k] = m.timeOf(items[k]);
+        }
+        catch (const ompl_glider::Error &e)
+        {
+            throw UsageError{std::string("--arrive-between: ") + (k == 0 ? "begin" : "end") + ": " + e.what()};
+        }
+    }
+    if (!(t[1] >= t[0]))
+        throw UsageError{"--arrive-between: the end (" + items[1] + ") must not be before the begin (" + items[0] +
+                         ")"};
+    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints)
+        throw UsageError{"--arrive-between: the stint planner '" + m.planner.name +
+                         "' flies fixed stints and cannot time its arrival"};
+    m.goalWindow = {true, t[0], t[1]};
+    for (const char *key : {"goal.window", "goal.window.begin", "goal.window.end"})
+        m.marks[key] = SourceMark{"--arrive-between", 0};
+}
+
 /// The settings common to the built-in and forecast modes.
 void applySettings(const Flags &f, MissionSpec &m)
 {
@@ -224,6 +257,7 @@ void applySettings(const Flags &f, MissionSpec &m)
         m.vehicle.speed = m.travel.speed = *f.speed;
     m.outputs.directory = f.out;
     applyExecution(f, m);
+    applyArrivalWindow(f, m);
     if (!f.coastline.empty())
     {
         m.forbidden.coastline = f.coastline;
@@ -275,6 +309,11 @@ void defineFlags(CLI::App &app, Flags &f)
     app.add_option("--departure", f.departure,
                    "departure: a time (built-in, default 0); with --currents an ISO 8601 date "
                    "(2026-03-15T06:00:00Z) or seconds after the first forecast time (default: the first)")
+        ->group(built);
+    app.add_option("--arrive-between", f.arriveBetween,
+                   "arrive at the goal within begin,end (built-in: times; --currents: ISO 8601 dates or seconds after "
+                   "the first forecast time): arrive early and hold at the goal where the current allows, else time "
+                   "the arrival (a hold or a slower leg earlier on the path)")
         ->group(built);
     app.add_option("--speed", f.speed, "speed through water (built-in 0.5; --currents m/s, default 0.3)")
         ->check(kPositiveFinite)

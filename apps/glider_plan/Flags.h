@@ -24,7 +24,7 @@ struct UsageError
 /// @brief Everything the flags say.
 struct Flags
 {
-    std::string mission, currents, out, start, goal, departure, planner, coastline, region;
+    std::string mission, currents, out, start, goal, departure, planner, coastline, region, arriveBetween;
     std::optional<std::string> speeds;  // given, even empty, is a sweep request
     std::optional<double> speed, gridSize, timeLimit, depth;
     std::optional<int> sectors;

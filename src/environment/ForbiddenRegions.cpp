@@ -1,5 +1,7 @@
 #include "ompl_glider/environment/ForbiddenRegions.h"
 
+#include <algorithm>
+
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
@@ -49,5 +51,17 @@ std::string ForbiddenRegions::whyLegBlocked(double x1, double y1, double t1, dou
             out += (out.empty() ? "" : "; ") + why;
     }
     return out;
+}
+std::vector<double> ForbiddenRegions::releaseTimes() const
+{
+    std::vector<double> all;
+    for (const auto &r : regions_)
+    {
+        const std::vector<double> t = r->releaseTimes();
+        all.insert(all.end(), t.begin(), t.end());
+    }
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    return all;
 }
 }  // namespace ompl_glider

@@ -78,4 +78,11 @@ bool TimeWindowedZone::legFree(double x1, double y1, double t1, double x2, doubl
                 return false;
     return true;
 }
+std::vector<double> TimeWindowedZone::releaseTimes() const
+{
+    std::vector<double> ends;
+    for (const Interval &w : windows_)  // sorted and merged: the ends are increasing
+        ends.push_back(w.hi);
+    return ends;
+}
 }  // namespace ompl_glider

@@ -7,6 +7,7 @@
 
 #include "loader/MissionReader.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/CfTime.h"
 #include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/planners/PlannerRegistry.h"
@@ -158,6 +159,8 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     }
     if (root["departure"])
         readDeparture(r, root["departure"], m);
+    if (root["goal"]["window"])
+        readGoalWindow(r, root["goal"]["window"], m);
     readVehicleAndTravel(r, root, m);
     if (root["dive_profile"])
         readDive(r, root["dive_profile"], m);
@@ -177,6 +180,10 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
                "the departure window is searched for the earliest arrival; the stint planner '" + m.planner.name +
                    "' with the remaining_distance objective has none: give departure.time, or stints.objective: "
                    "earliest_arrival with a radius");
+    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints && m.goalWindow.set)
+        r.fail(root["goal"]["window"], "goal.window",
+               "the stint planner '" + m.planner.name +
+                   "' flies fixed stints and cannot time its arrival: remove the window or use another planner");
     if (root["outputs"])
         readOutputs(r, root["outputs"], m);
     else
@@ -190,6 +197,36 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     return m;
 }
 }  // namespace
+
+double MissionSpec::timeOf(const std::string &text) const
+{
+    {
+        // a number in field units (the whole text)
+        std::size_t used = 0;
+        double v = 0.0;
+        bool number = false;
+        try
+        {
+            v = std::stod(text, &used);
+            number = used == text.size() && used > 0;
+        }
+        catch (const std::exception &)
+        {
+        }
+        if (number)
+        {
+            if (!std::isfinite(v))
+                throw Error("expected a finite time, got '" + text + "'");
+            return v;
+        }
+    }
+    if (fileCalendar)
+        return secondsSinceCalendarEpoch(parseDateTime(text), fileCalendar->calendar) - fileCalendar->originSeconds;
+    if (!epoch)
+        throw Error("expected a number (an ISO 8601 date needs 'epoch' at the top of the mission), got '" + text +
+                    "'");
+    return (parseIsoTime(text) - *epoch) / timeUnitSeconds;
+}
 
 std::string MissionSpec::place(const std::string &field) const
 {

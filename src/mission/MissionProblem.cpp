@@ -340,6 +340,8 @@ MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
 {
     MissionProblem p(*this);
     p.start_ = start;
+    if (goal.x != goal_.x || goal.y != goal_.y)
+        p.spec_.goalWindow = {};  // the window belongs to the mission's goal
     p.goal_ = goal;
     return p;
 }
@@ -604,6 +606,11 @@ GliderProblem MissionProblem::gliderProblem(double tDep, double speed) const
     p.startY = start_.y;
     p.goalX = goal_.x;
     p.goalY = goal_.y;
+    if (spec_.goalWindow.set)
+    {
+        p.arriveNotBefore = spec_.goalWindow.begin;
+        p.arriveNotAfter = spec_.goalWindow.end;
+    }
     p.goalTolerance = spec_.planner.goalTolerance >= 0
                           ? spec_.planner.goalTolerance
                           : 1e-6 * std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);

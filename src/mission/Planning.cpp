@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <mutex>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +21,7 @@
 #include "ompl_glider/planners/WaypointRefiner.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/reachability/LevelSetPlanner.h"
+#include "ompl_glider/ompl/TravelTimeMotionValidator.h"
 #include "ompl_glider/reference/ZermeloReference.h"
 #include "ompl_glider/stints/PathToStints.h"
 #include "ompl_glider/stints/StintPlanner.h"
@@ -560,9 +562,237 @@ std::vector<TimedWaypoint> retimePath(const MissionProblem &problem, std::shared
     return out;
 }
 
+
+namespace
+{
+/// Total time spent holding position: the zero-length legs of a timed path.
+double holdTimeOf(const std::vector<TimedWaypoint> &path)
+{
+    double hold = 0.0;
+    for (std::size_t i = 1; i < path.size(); ++i)
+        if (path[i].x == path[i - 1].x && path[i].y == path[i - 1].y)
+            hold += path[i].t - path[i - 1].t;
+    return hold;
+}
+
+std::string timeText(const MissionProblem &problem, double t)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "t = %.6g", t);
+    const std::string iso = problem.isoTime(t);
+    return iso.empty() ? std::string(text) : std::string(text) + " (" + iso + ")";
+}
+
+/// Goals in time (issue 12; [ThompsonICRA] Sec. III, the earliest valid arrival): moves the arrival of a solved plan
+/// into the goal window [begin, end] of the mission. Early: hold at the goal where the glider can (|c| < V over the
+/// hold, TravelTimeMotionValidator::canHold); else time the arrival: from the last waypoint before the goal back to
+/// the start, hold there (where |c| < V) or fly the leg leaving it slower (any pace in its arrival window), the rest of the path flown
+/// as fast as possible (legTravelTime), the delay found by bisection (the arrival of a fastest flight does not
+/// decrease with its departure on each leg, FIFO); the first candidate whose arrival lands in the window and whose
+/// path passes PathGeometric::check() is kept. Late, or no candidate: no path in the window (solved false).
+void timeArrival(const MissionProblem &problem, PlannedPath &r)
+{
+    const MissionSpec &m = problem.getSpec();
+    const GoalWindowSpec &w = m.goalWindow;
+    if (!w.set || !r.solved || r.path.empty() || (r.stints && !r.stints->converted))
+        return;
+    const double B = w.begin, E = w.end;
+    const double tol = 1e-9 * std::max({1.0, std::abs(B), std::abs(E)});
+    const std::string window = "the goal's arrival window [" + timeText(problem, B) + ", " + timeText(problem, E) + "]";
+    const double ta = r.path.back().t;
+    auto fail = [&](const std::string &why) {
+        r.solved = false;
+        r.status = kNoPathStatus;
+        r.reason = why;
+        r.pathChecked = false;
+    };
+    if (ta > E + tol)
+    {
+        fail("the path reaches the goal at " + timeText(problem, ta) + ", after the end of " + window +
+             ": no path arrives in the window (depart earlier, or widen the window)");
+        return;
+    }
+    if (ta >= B - tol)
+    {
+        // already in the window (a lattice planner holds at the goal itself: TveOptions::waiting)
+        if (r.path.size() >= 2 && lastHoldEnd(r.path) == r.path.size() - 1)
+            r.arrivalTiming = "hold at the goal";
+        return;
+    }
+
+    GliderProblem gp = checkedProblem(problem, r.departure, r.speed);
+    if (B > gp.t0 + gp.horizon)
+    {
+        fail(window + " opens after the planning horizon ends (" + timeText(problem, gp.t0 + gp.horizon) + ")");
+        return;
+    }
+    std::shared_ptr<GliderContext> ctx;
+    const ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(gp, &ctx);
+    const ompl::base::SpaceInformationPtr si = ss->getSpaceInformation();
+    const auto mv = std::dynamic_pointer_cast<TravelTimeMotionValidator>(si->getMotionValidator());
+    if (!mv)
+        throw Error("planRoute: the space has no TravelTimeMotionValidator (internal error)");
+    // sample the current of a hold at least 512 times over the trip's time
+    mv->setHoldTimeStep(std::min(mv->getHoldTimeStep(), std::max(B - r.departure, 1e-9) / 512.0));
+    const std::uint64_t cfc0 = ctx->travel->costFunctionCalls();
+    const std::vector<TimedWaypoint> &P = r.path;
+    const std::size_t n = P.size() - 1;  // index of the goal waypoint
+
+    // a candidate path: checked by OMPL (every motion by the motion validator, every state valid)
+    auto accept = [&](std::vector<TimedWaypoint> cand, const std::string &how) {
+        // land exactly on the window's begin when the arrival is within rounding of it
+        if (std::abs(cand.back().t - B) <= tol && cand.size() >= 2 && cand.back().t != B)
+            cand.back().t = std::max(B, cand[cand.size() - 2].t);
+        if (!(cand.back().t >= B - tol && cand.back().t <= E + tol))
+            return false;
+        ompl::geometric::PathGeometric path(si);
+        waypointsToPath(cand, path);
+        if (!path.check())
+            return false;
+        r.path = std::move(cand);
+        r.travelTime = r.path.back().t - r.departure;
+        r.pathChecked = true;
+        r.arrivalTiming = how;
+        return true;
+    };
+    const auto &env = ctx->environment;
+    auto holdable = [&](const TimedWaypoint &p, double t1, double t2) {
+        return mv->canHold(p.x, p.y, t1, t2) && (!env || env->legFree(p.x, p.y, t1, p.x, p.y, t2));
+    };
+
+    // 1. hold at the goal: the earliest valid arrival
+    if (holdable(P[n], ta, B))
+    {
+        std::vector<TimedWaypoint> cand = P;
+        cand.push_back({P[n].x, P[n].y, B});
+        if (accept(std::move(cand), "hold at the goal"))
+        {
+            r.postprocessCostFunctionCalls += ctx->travel->costFunctionCalls() - cfc0;
+            return;
+        }
+    }
+    // 2. time the arrival: a slower leg or a hold at an earlier waypoint, latest first
+    // waypoints 0..k as planned, then k -> k + 1 in duration d, then as fast as possible
+    auto flyOn = [&](std::size_t k, double tDepart, double legDuration) {
+        std::vector<TimedWaypoint> out(P.begin(), P.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+        if (tDepart > out.back().t)
+            out.push_back({P[k].x, P[k].y, tDepart});
+        out.push_back({P[k + 1].x, P[k + 1].y, tDepart + legDuration});
+        for (std::size_t i = k + 2; i <= n && std::isfinite(out.back().t); ++i)
+        {
+            const TimedWaypoint &a = out.back();
+            const double dt = legTravelTime(*ctx, a.x, a.y, P[i].x, P[i].y, a.t);
+            out.push_back({P[i].x, P[i].y, a.t + dt});
+        }
+        return out;
+    };
+    // smallest x in [lo, hi] with arrival(x) >= B: a scan at 33 points for the first bracket [a, b] with a finite
+    // arrival before B at a and in reach of B at b (the arrival jumps or is infeasible where the path meets the
+    // current at other times), then bisection inside it (arrival non-decreasing in x there)
+    auto bisect = [&](double lo, double hi, const std::function<std::vector<TimedWaypoint>(double)> &fly)
+        -> std::vector<TimedWaypoint> {
+        constexpr int kScan = 32;
+        double a = lo;
+        std::vector<TimedWaypoint> best;
+        for (int i = 0; i <= kScan; ++i)
+        {
+            const double x = lo + (hi - lo) * i / kScan;
+            std::vector<TimedWaypoint> c = fly(x);
+            const double t = c.back().t;
+            if (!std::isfinite(t))
+                continue;
+            if (t < B - tol)
+                a = x;
+            else if (t <= E + tol && x > a)
+            {
+                best = std::move(c);
+                hi = x;
+                break;
+            }
+        }
+        if (best.empty())
+            return {};
+        lo = a;
+        for (int it = 0; it < 60 && best.back().t > B + tol && hi - lo > 1e-12 * std::max(1.0, std::abs(hi)); ++it)
+        {
+            const double mid = 0.5 * (lo + hi);
+            std::vector<TimedWaypoint> c = fly(mid);
+            if (std::isfinite(c.back().t) && c.back().t >= B - tol)
+            {
+                hi = mid;
+                if (c.back().t <= E + tol)
+                    best = std::move(c);
+            }
+            else
+                lo = mid;
+        }
+        return best;
+    };
+    for (std::size_t k = n; k-- > 0;)
+    {
+        const TimedWaypoint &a = P[k], &b = P[k + 1];
+        const bool holdLeg = a.x == b.x && a.y == b.y;  // an existing hold: lengthen it below
+        const double tk = a.t;
+        // hold at waypoint k (k = 0: a later departure from the start), as long as the glider can
+        double hMax = B - tk;
+        if (!holdable(a, tk, tk + hMax))
+        {
+            double lo = 0.0, hi = hMax;
+            for (int it = 0; it < 40; ++it)
+            {
+                const double mid = 0.5 * (lo + hi);
+                (holdable(a, tk, tk + mid) ? lo : hi) = mid;
+            }
+            hMax = lo;
+        }
+        if (hMax > 0.0)
+        {
+            auto fly = [&](double h) {
+                if (holdLeg)  // lengthen the hold k -> k + 1
+                    return flyOn(k, tk, b.t - tk + h);
+                const double dt = legTravelTime(*ctx, a.x, a.y, b.x, b.y, tk + h);
+                return flyOn(k, tk + h, dt);
+            };
+            std::vector<TimedWaypoint> c = bisect(0.0, hMax, fly);
+            const std::string how =
+                k == 0 ? std::string("later departure (hold at the start)") : "hold at waypoint " + std::to_string(k);
+            if (!c.empty() && accept(std::move(c), how))
+                break;
+        }
+        if (!holdLeg)
+        {
+            // fly the leg k -> k + 1 slower: any duration in its arrival window
+            const ArrivalWindow aw = ctx->travel->arrivalWindow(a.x, a.y, b.x, b.y, tk);
+            if (std::isfinite(aw.earliest))
+            {
+                const double dMax = std::min(std::isfinite(aw.latest) ? aw.latest : kInf, B - tk);
+                if (dMax > aw.earliest)
+                {
+                    std::vector<TimedWaypoint> c =
+                        bisect(aw.earliest, dMax, [&](double d) { return flyOn(k, tk, d); });
+                    char how[96];
+                    std::snprintf(how, sizeof how, "slower leg %zu -> %zu", k, k + 1);
+                    if (!c.empty() && accept(std::move(c), how))
+                        break;
+                }
+            }
+        }
+    }
+    r.postprocessCostFunctionCalls += ctx->travel->costFunctionCalls() - cfc0;
+    if (r.arrivalTiming.empty())
+        fail("the path reaches the goal at " + timeText(problem, ta) + ", before " + window +
+             " opens; the glider cannot hold at the goal (the current reaches its speed there) and no slower leg or "
+             "hold at an earlier waypoint lands the arrival in the window");
+}
+}  // namespace
+
 PlannedPath planRoute(const MissionProblem &problem, double departure, const PlanOptions &o)
 {
-    return problem.getMembers().empty() ? planOnField(problem, departure, o) : planRobust(problem, departure, o);
+    PlannedPath r = problem.getMembers().empty() ? planOnField(problem, departure, o) : planRobust(problem, departure, o);
+    timeArrival(problem, r);
+    if (r.solved)
+        r.holdTime = holdTimeOf(r.path);
+    return r;
 }
 
 TravelTimeOfDeparture departureFunction(const MissionProblem &problem, double gridSize, int sectors)
@@ -576,7 +806,8 @@ TravelTimeOfDeparture departureFunction(const MissionProblem &problem, double gr
         try
         {
             const PlannedPath p = planRoute(problem, tDep, o);
-            return p.solved ? p.rawTravelTime : kInf;
+            // with a goal window the travel time includes the holds that move the arrival into it
+            return !p.solved ? kInf : problem.getSpec().goalWindow.set ? p.travelTime : p.rawTravelTime;
         }
         catch (const Error &)
         {
@@ -626,6 +857,13 @@ PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath
         }
         if (i == 0)
             w.time = plan.departure;
+        else if (dive && plan.path[i].x == plan.path[i - 1].x && plan.path[i].y == plan.path[i - 1].y)
+        {
+            // a hold (goal window, a lattice wait): as long as planned
+            w.legTime = plan.path[i].t - plan.path[i - 1].t;
+            t += w.legTime;
+            w.time = t;
+        }
         else if (dive)
         {
             const DiveLegResult leg =
@@ -685,6 +923,33 @@ void checkPlanner(const MissionProblem &problem, double departure)
     refinerParams(m);
 }
 
+/// The goal's arrival window must lie within reach: it must not end before the (earliest) departure, and must open
+/// before the planning horizon of the latest departure ends (the end of the forecast, or planner.horizon).
+void checkGoalWindow(const MissionProblem &problem)
+{
+    const MissionSpec &m = problem.getSpec();
+    const GoalWindowSpec &w = m.goalWindow;
+    if (!w.set)
+        return;
+    const double first = m.departure.window ? m.departure.begin : m.departure.time;
+    const double last = m.departure.window ? m.departure.end : m.departure.time;
+    if (w.end < first)
+        throw Error(m.place("goal.window.end") + ": the arrival window ends at " + timeText(problem, w.end) +
+                    ", before the departure (" + timeText(problem, first) + "): no plan can arrive in it");
+    // (the departure itself is checked where it is planned: a window's end may lie past the forecast)
+    const GliderProblem gp = problem.gliderProblem(last, m.vehicle.speed);
+    const double fieldEnd = problem.getField()->timeEnd();
+    const double horizonEnd = std::min(gp.t0 + gp.horizon, std::isfinite(fieldEnd) ? fieldEnd : kInf);
+    if (w.begin > horizonEnd)
+        throw Error(m.place("goal.window.begin") + ": the arrival window opens at " + timeText(problem, w.begin) +
+                    ", after the planning horizon ends (" + timeText(problem, horizonEnd) +
+                    (std::isfinite(problem.getField()->timeEnd()) &&
+                             horizonEnd >= problem.getField()->timeEnd() - 1e-9
+                         ? ": the end of the forecast"
+                         : ": planner.horizon") +
+                    ")");
+}
+
 double chooseDeparture(const MissionProblem &problem, const RunOptions &options, MissionResult &result)
 {
     const MissionSpec &m = problem.getSpec();
@@ -715,6 +980,7 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     result.spec = problem.getSpec();
     const MissionSpec &m = result.spec;
     checkPlanner(problem, m.departure.window ? m.departure.begin : m.departure.time);
+    checkGoalWindow(problem);
     const double tDep = chooseDeparture(problem, options, result);
     if (result.departureSearch && !result.departureSearch->found)
     {

@@ -1,5 +1,6 @@
 #include "ompl_glider/ompl/GliderSetup.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -126,6 +127,34 @@ std::string departureProblem(const GliderProblem &p)
                " is too large to resolve the integration tolerance eps = " + num(p.travel.eps) +
                " (times must stay below " + num(limit) + ")";
     return {};
+}
+
+bool GliderContext::canHold(double x, double y, double t1, double t2, double step, int subdivide) const
+{
+    if (!(t2 >= t1))
+        return false;
+    const CurrentField &f = *field;
+    const double V = speed();
+    const double z = travel->params().depth;
+    if (!f.inWater(x, y, z))
+        return false;
+    const int n = std::max(1, static_cast<int>(std::ceil((t2 - t1) / step))) * std::max(1, subdivide);
+    for (int i = 0; i <= n; ++i)
+    {
+        const double t = (i == n) ? t2 : t1 + (t2 - t1) * i / n;
+        if (t < f.timeBegin() || t > f.timeEnd())
+            return false;
+        const Velocity c = f.velocity(x, y, z, t);
+        if (!(c.u * c.u + c.v * c.v < V * V))
+            return false;
+    }
+    return true;
+}
+
+double GliderContext::holdTimeStep() const
+{
+    const double span = region.tMax - region.tMin;
+    return (std::isfinite(span) && span > 0.0) ? span / 256.0 : 1.0;
 }
 
 std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)

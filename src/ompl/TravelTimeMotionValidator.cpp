@@ -57,8 +57,7 @@ void TravelTimeMotionValidator::init()
     if (!ctx_ || !ctx_->field || !ctx_->travel)
         throw Error("TravelTimeMotionValidator: the GliderContext must be non-null with a field and a travel-time "
                     "calculator");
-    const double span = ctx_->region.tMax - ctx_->region.tMin;
-    holdStep_ = (std::isfinite(span) && span > 0.0) ? span / 256.0 : 1.0;
+    holdStep_ = ctx_->holdTimeStep();
     vMax_ = ctx_->speed() + ctx_->maxCurrent();
     if (!(vMax_ > 0.0))
         vMax_ = std::numeric_limits<double>::infinity();
@@ -91,24 +90,7 @@ void TravelTimeMotionValidator::setHoldTimeStep(double dt)
 
 bool TravelTimeMotionValidator::canHold(double x, double y, double t1, double t2) const
 {
-    if (!(t2 >= t1))
-        return false;
-    const CurrentField &f = *ctx_->field;
-    const double V = ctx_->speed();
-    const double z = ctx_->travel->params().depth;
-    if (!f.inWater(x, y, z))
-        return false;
-    const int n = std::max(1, static_cast<int>(std::ceil((t2 - t1) / holdStep_)));
-    for (int i = 0; i <= n; ++i)
-    {
-        const double t = (i == n) ? t2 : t1 + (t2 - t1) * i / n;
-        if (t < f.timeBegin() || t > f.timeEnd())
-            return false;
-        const Velocity c = f.velocity(x, y, z, t);
-        if (!(c.u * c.u + c.v * c.v < V * V))
-            return false;
-    }
-    return true;
+    return ctx_->canHold(x, y, t1, t2, holdStep_);
 }
 
 MotionVerdict TravelTimeMotionValidator::classify(double x1, double y1, double t1, double x2, double y2,

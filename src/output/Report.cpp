@@ -82,6 +82,16 @@ void printReport(std::ostream &out, const MissionResult &r)
     {
         out << format("Travel time:        %.4f (raw %.4f, smoothed %.4f)\n", p.travelTime, p.rawTravelTime,
                       p.smoothedTravelTime);
+        if (m.goalWindow.set || p.holdTime > 0.0)
+        {
+            const std::string at = r.waypoints.empty() ? "" : r.waypoints.back().iso;
+            out << "Arrival at goal:    " << num(p.path.back().t) << (at.empty() ? "" : " (" + at + ")");
+            if (m.goalWindow.set)
+                out << " in the window [" << num(m.goalWindow.begin) << ", " << num(m.goalWindow.end) << "]";
+            out << "\n";
+            out << "Holding:            " << num(p.holdTime)
+                << (p.arrivalTiming.empty() ? std::string() : " (" + p.arrivalTiming + ")") << "\n";
+        }
         if (r.diveProfiles)
             out << "With dive profiles: " << (std::isfinite(r.diveTravelTime) ? num(r.diveTravelTime) : "impassable")
                 << "\n";

@@ -151,6 +151,15 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                       {"iso", r.waypoints.empty() ? json(nullptr) : jtext(r.waypoints.front().iso)}};
     j["arrival"] = {{"time", r.waypoints.empty() ? json(nullptr) : jnum(r.waypoints.back().time)},
                     {"iso", r.waypoints.empty() ? json(nullptr) : jtext(r.waypoints.back().iso)}};
+    // goals in time (issue 12): the time at the goal in the window, the holds, the window
+    j["arrival_time"] = r.waypoints.empty() ? json(nullptr) : jnum(r.waypoints.back().time);
+    j["hold_time"] = p.solved ? jnum(p.holdTime) : json(nullptr);
+    if (m.goalWindow.set)
+        j["goal_window"] = {{"begin", m.goalWindow.begin},
+                            {"end", m.goalWindow.end},
+                            {"begin_iso", jtext(problem.isoTime(m.goalWindow.begin))},
+                            {"end_iso", jtext(problem.isoTime(m.goalWindow.end))},
+                            {"timing", jtext(p.arrivalTiming)}};
     j["travel_time"] = jnum(p.travelTime);
     j["travel_time_raw"] = jnum(p.rawTravelTime);
     j["travel_time_smoothed"] = jnum(p.smoothedTravelTime);

@@ -80,6 +80,42 @@ std::vector<TimedWaypoint> waypointsFromPath(const ompl::geometric::PathGeometri
     return out;
 }
 
+std::size_t lastHoldEnd(const std::vector<TimedWaypoint> &w)
+{
+    for (std::size_t k = w.size(); k-- > 1;)
+        if (w[k].x == w[k - 1].x && w[k].y == w[k - 1].y && w[k].t > w[k - 1].t)
+            return k;
+    return 0;
+}
+
+std::vector<TimedWaypoint> improveAroundHolds(
+    const GliderContext &ctx, const std::vector<TimedWaypoint> &w,
+    const std::function<std::vector<TimedWaypoint>(const std::vector<TimedWaypoint> &)> &improve)
+{
+    const std::size_t k = lastHoldEnd(w);
+    if (k == 0)
+        return improve(w);
+    if (k + 1 < w.size())
+    {
+        // the piece after the last hold, departing at the hold's end
+        std::vector<TimedWaypoint> out(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(k));
+        const std::vector<TimedWaypoint> tail = improve({w.begin() + static_cast<std::ptrdiff_t>(k), w.end()});
+        out.insert(out.end(), tail.begin(), tail.end());
+        return out;
+    }
+    // the path ends with a hold: improve the part before it, then hold from its new arrival to the old end
+    const std::vector<TimedWaypoint> head(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(k));
+    std::vector<TimedWaypoint> better = improveAroundHolds(ctx, head, improve);
+    const TimedWaypoint &end = w.back();
+    const double arrival = better.back().t;
+    if (!(arrival <= head.back().t) ||
+        !ctx.canHold(end.x, end.y, arrival, end.t, ctx.holdTimeStep(), 4) ||
+        (ctx.environment && !ctx.environment->legFree(end.x, end.y, arrival, end.x, end.y, end.t)))
+        return w;
+    better.push_back(end);
+    return better;
+}
+
 void waypointsToPath(const std::vector<TimedWaypoint> &waypoints, ompl::geometric::PathGeometric &path)
 {
     const TimeSE2StateSpace &space = timeSpace(path, "waypointsToPath");
@@ -149,6 +185,23 @@ SmoothingResult PathSmoother::smooth(const std::vector<TimedWaypoint> &input) co
 {
     if (input.empty())
         return {};
+    if (lastHoldEnd(input) > 0)
+    {
+        // a path that holds position: smooth its hold-free pieces, keep the holds (improveAroundHolds())
+        const std::uint64_t cfcH = ctx_->travel->costFunctionCalls();
+        SmoothingResult res;
+        res.waypointsBefore = input.size();
+        res.arrivalBefore = input.back().t;
+        res.waypoints = improveAroundHolds(*ctx_, input, [&](const std::vector<TimedWaypoint> &piece) {
+            SmoothingResult r = smooth(piece);
+            return std::isfinite(r.arrivalAfter) && r.arrivalAfter <= piece.back().t ? r.waypoints : piece;
+        });
+        res.waypointsAfter = res.waypoints.size();
+        res.arrivalAfter = res.waypoints.back().t;
+        res.passes = 1;
+        res.costFunctionCalls = ctx_->travel->costFunctionCalls() - cfcH;
+        return res;
+    }
     const double t0 = input.front().t;  // the departure
     const GliderContext &ctx = *ctx_;
     const std::uint64_t cfc0 = ctx.travel->costFunctionCalls();

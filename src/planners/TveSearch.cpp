@@ -125,6 +125,31 @@ std::optional<double> TveSearch::calcOptimalCourse(double px, double py, double 
 TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
                          const std::function<bool()> &terminate)
 {
+    TveResult r = runPhases(sx, sy, t0, gx, gy, options, terminate);
+    const bool window = std::isfinite(ctx_->arriveNotBefore) || std::isfinite(ctx_->arriveNotAfter);
+    if (r.outcome != TveOutcome::Exhausted || !window || !options.waiting || !options.goalWindowFallback)
+        return r;
+    // no path meets the goal window: the earliest arrival without it (TveOptions::goalWindowFallback)
+    struct Scope
+    {
+        TveSearch &s;
+        ~Scope()
+        {
+            s.ignoreGoalWindow_ = false;
+        }
+    } scope{*this};
+    ignoreGoalWindow_ = true;
+    TveResult f = runPhases(sx, sy, t0, gx, gy, options, terminate);
+    f.costFunctionCalls += r.costFunctionCalls;
+    f.currentModelCalls += r.currentModelCalls;
+    f.expansions += r.expansions;
+    f.goalWindowMissed = f.outcome == TveOutcome::Exact;
+    return f;
+}
+
+TveResult TveSearch::runPhases(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
+                               const std::function<bool()> &terminate)
+{
     // (the phases pay off through LatticeHeuristic::refineWindows: only with local bounds, on lattices it refines)
     if (!(options.tightBounds && options.heuristic && options.greedyDeadline && std::isnan(options.deadline) &&
           options.heuristicWeight == 1.0 && options.windowRounds > 0 &&
@@ -308,6 +333,13 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
     std::vector<Lattice::VertexId> prunedAt;  // vertices whose expansion pruned edges (for the fallback)
     bool pruning = options.zermelo;
 
+    // Holding (TveOptions::waiting): the environment's release times and the goal window.
+    const std::vector<double> releases = env && options.waiting ? env->releaseTimes() : std::vector<double>{};
+    const double holdStep = ctx.holdTimeStep();
+    const bool goalWindow =
+        !ignoreGoalWindow_ && (std::isfinite(ctx.arriveNotBefore) || std::isfinite(ctx.arriveNotAfter));
+    goalHoldUntil_ = -kInf;
+
     // Examines the edge u -> v leaving at du (one CFC): true when its travel time is finite; improves v when the
     // arrival is earlier than d[v], inside the window and free.
     auto relax = [&](Lattice::VertexId u, double ux, double uy, double du, Lattice::VertexId v) -> bool {
@@ -332,32 +364,103 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
                 return true;
             }
         }
-        double w;
-        if (edgeCache_)
-        {
-            const auto [it, inserted] = edgeCache_->try_emplace(EdgeKey{u, v, du}, 0.0);
+        auto edgeTime = [&](double dep) {
+            if (!edgeCache_)
+                return travel.travelTime(ux, uy, vx, vy, dep);
+            const auto [it, inserted] = edgeCache_->try_emplace(EdgeKey{u, v, dep}, 0.0);
             if (inserted)
-                it->second = travel.travelTime(ux, uy, vx, vy, du);
-            w = it->second;
-        }
-        else
-            w = travel.travelTime(ux, uy, vx, vy, du);
+                it->second = travel.travelTime(ux, uy, vx, vy, dep);
+            return it->second;
+        };
+        auto label = [&](double dv, double dep) {
+            Label &lv = labels_[v];
+            if (lv.d == kInf)
+                reached_.push_back(v);
+            lv.d = dv;
+            lv.pi = u;
+            lv.dep = dep;
+            if (hv < 0.0)
+                hv = h(v);
+            if (hv < kInf)  // +inf: the goal cannot be reached from v even with the optimistic bounds
+                Q.push({dv + hv, dv, v});
+        };
+        // holding at u over [du, tw]: |c| < V there (a superset of the motion validator's samples) and u free
+        auto canWait = [&](double tw) {
+            return ctx.canHold(ux, uy, du, tw, holdStep, 4) && (!env || env->legFree(ux, uy, du, ux, uy, tw));
+        };
+        const double w = edgeTime(du);
         if (!std::isfinite(w))
             return false;
         const double dv = du + w;
+        if (options.waiting && v == g && goalWindow)
+        {
+            // goal window: an arrival counts inside [arriveNotBefore, arriveNotAfter] (TveOptions::waiting)
+            if (dv > ctx.arriveNotAfter)
+                return true;
+            if (dv < ctx.arriveNotBefore && !(ctx.canHold(gx, gy, dv, ctx.arriveNotBefore, holdStep, 4) &&
+                                               (!env || env->legFree(gx, gy, dv, gx, gy, ctx.arriveNotBefore))))
+            {
+                // no hold at the goal: hold at u so that the edge arrives at the window's begin (bisection on the
+                // departure; arrival non-decreasing in it, FIFO)
+                const double B = ctx.arriveNotBefore;
+                if (!(B < dist(v)) || B > tEnd)
+                    return true;
+                double lo = du, hi = B;
+                double hiArr = hi + edgeTime(hi);
+                if (!std::isfinite(hiArr))
+                    return true;
+                for (int it = 0; it < 50 && hiArr > B * (1.0 + 1e-12) + 1e-12; ++it)
+                {
+                    const double mid = 0.5 * (lo + hi);
+                    const double a = mid + edgeTime(mid);
+                    if (std::isfinite(a) && a >= B)
+                    {
+                        hi = mid;
+                        hiArr = a;
+                    }
+                    else
+                        lo = mid;
+                }
+                if (!(hiArr < dist(v)) || hiArr > tEnd || hiArr > ctx.arriveNotAfter || !canWait(hi))
+                    return true;
+                if (env && (!env->pointFree(vx, vy, hiArr) || !env->legFree(ux, uy, hi, vx, vy, hiArr)))
+                    return true;
+                label(hiArr, hi);
+                return true;
+            }
+        }
         if (!(dv < dist(v)) || dv > tEnd)
             return true;  // no improvement, or later than the planning window
         if (env && (!env->pointFree(vx, vy, dv) || !env->legFree(ux, uy, du, vx, vy, dv)))
+        {
+            if (!options.waiting || releases.empty())
+                return true;
+            // waiting edge: depart just after a release time (the end of a blocking window), the first that frees
+            // the leg (later ones arrive no earlier where the field is FIFO)
+            for (const double r : releases)
+            {
+                const double tw = r + 1e-9 * std::max(1.0, std::abs(r));
+                if (tw <= du)
+                    continue;
+                if (tw > tEnd || !(tw < dist(v)) || !canWait(tw))
+                    break;  // later departures cannot improve v, or the glider cannot hold that long
+                const double ww = edgeTime(tw);
+                if (!std::isfinite(ww))
+                    continue;
+                const double dw = tw + ww;
+                if (dw > tEnd || !(dw < dist(v)))
+                    break;
+                if (env->pointFree(vx, vy, dw) && env->legFree(ux, uy, tw, vx, vy, dw))
+                {
+                    if (v == g && goalWindow && dw > ctx.arriveNotAfter)
+                        break;
+                    label(dw, tw);
+                    break;
+                }
+            }
             return true;
-        Label &lv = labels_[v];
-        if (lv.d == kInf)
-            reached_.push_back(v);
-        lv.d = dv;
-        lv.pi = u;
-        if (hv < 0.0)
-            hv = h(v);
-        if (hv < kInf)  // +inf: the goal cannot be reached from v even with the optimistic bounds
-            Q.push({dv + hv, dv, v});
+        }
+        label(dv, -kInf);
         return true;
     };
 
@@ -500,8 +603,10 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
     if (found != Lattice::kNone)
     {
         res.outcome = TveOutcome::Exact;
+        if (options.waiting && goalWindow && dist(found) < ctx.arriveNotBefore)
+            goalHoldUntil_ = ctx.arriveNotBefore;  // arrived early where the goal can be held: hold there
         res.waypoints = pathTo(found);
-        res.travelTime = dist(found) - t0;
+        res.travelTime = res.waypoints.back().t - t0;
         return finish(res);
     }
     if (res.outcome == TveOutcome::Terminated)
@@ -529,10 +634,15 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
 std::vector<TimedWaypoint> TveSearch::pathTo(Lattice::VertexId v) const
 {
     std::vector<TimedWaypoint> out;
+    if (v == lattice_.goal() && goalHoldUntil_ > dist(v))
+        out.push_back({lattice_.x(v), lattice_.y(v), goalHoldUntil_});  // hold at the goal (goal window)
     for (Lattice::VertexId w = v; w != Lattice::kNone; w = parent(w))
     {
         out.push_back({lattice_.x(w), lattice_.y(w), dist(w)});
-        if (out.size() > reached_.size() + 1)
+        const auto it = labels_.find(w);
+        if (it != labels_.end() && it->second.pi != Lattice::kNone && it->second.dep > dist(it->second.pi))
+            out.push_back({lattice_.x(it->second.pi), lattice_.y(it->second.pi), it->second.dep});  // a hold
+        if (out.size() > 2 * reached_.size() + 2)
             throw Error("TveSearch: predecessor cycle (internal error)");
     }
     std::reverse(out.begin(), out.end());

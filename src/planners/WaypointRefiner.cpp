@@ -194,6 +194,24 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input
 {
     if (input.empty())
         return {};
+    if (lastHoldEnd(input) > 0)
+    {
+        // a path that holds position: refine its hold-free pieces, keep the holds (improveAroundHolds())
+        const std::uint64_t cfcH = ctx_->travel->costFunctionCalls();
+        RefinementResult res;
+        res.waypointsBefore = input.size();
+        res.arrivalBefore = input.back().t;
+        res.waypoints = improveAroundHolds(*ctx_, input, [&](const std::vector<TimedWaypoint> &piece) {
+            RefinementResult r = refine(piece);
+            res.evaluations += r.evaluations;
+            res.acceptedMoves += r.acceptedMoves;
+            return std::isfinite(r.arrivalAfter) && r.arrivalAfter <= piece.back().t ? r.waypoints : piece;
+        });
+        res.waypointsAfter = res.waypoints.size();
+        res.arrivalAfter = res.waypoints.back().t;
+        res.costFunctionCalls = ctx_->travel->costFunctionCalls() - cfcH;
+        return res;
+    }
     const double t0 = input.front().t;  // the departure
     const GliderContext &ctx = *ctx_;
     const std::uint64_t cfc0 = ctx.travel->costFunctionCalls();

@@ -251,6 +251,10 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
     last_ = r;
     tree_ = search_->tree();
     solution_ = r.waypoints;
+    if (r.goalWindowMissed)
+        OMPL_WARN("%s: no lattice path arrives in the goal window [%g, %g]; the path is the earliest arrival without "
+                  "it (planRoute() times or refuses it)",
+                  getName().c_str(), ctx_->arriveNotBefore, ctx_->arriveNotAfter);
     if (r.outcome == TveOutcome::Exact && (smooth_ || refine_))
     {
         // Post-processing of the exact lattice path: both never arrive later ([EichhornRAS] Table 3; refinement).

@@ -539,6 +539,45 @@ case("memory-limit-env-bad", ["--out", "{out}"], 2, "OMPL_GLIDER_MEMORY_LIMIT", 
 case("out-is-a-file", ["--out", "afile"], 2, "afile")
 case("out-unwritable", ["--out", "/proc/glider_out"], 2, "/proc/glider_out")
 
+# --- goals in time (issue 12): goal.window and --arrive-between ---------------------------------------------------
+yaml_case("goal-window-reversed", mission("goal: {x: 9, y: 0, window: {begin: 20, end: 10}}"),
+          "m.yaml:5: field 'goal.window.end': must not be before begin")
+yaml_case("goal-window-missing-end", mission("goal: {x: 9, y: 0, window: {begin: 20}}"),
+          "field 'goal.window': begin and end are required (missing end)")
+yaml_case("goal-window-missing-begin", mission("goal: {x: 9, y: 0, window: {end: 20}}"), "(missing begin)")
+yaml_case("goal-window-unknown-key", mission("goal: {x: 9, y: 0, window: {begin: 1, end: 2, slack: 3}}"),
+          "goal.window.slack")
+yaml_case("goal-window-not-a-time", mission("goal: {x: 9, y: 0, window: {begin: soon, end: 30}}"),
+          "field 'goal.window.begin'")
+yaml_case("goal-window-date-without-epoch",
+          mission("goal: {x: 9, y: 0, window: {begin: 2026-03-15T00:00:00Z, end: 30}}"), "epoch")
+yaml_case("goal-window-before-departure",
+          mission("goal: {x: 9, y: 0, window: {begin: 10, end: 20}}", "departure: {time: 50}"),
+          "field 'goal.window.end': the arrival window ends at t = 20, before the departure")
+yaml_case("goal-window-beyond-horizon",
+          mission("goal: {x: 9, y: 0, window: {begin: 100, end: 200}}",
+                  "planner: {name: zastartve, grid_size: 0.5, horizon: 30}"),
+          "field 'goal.window.begin': the arrival window opens at t = 100, after the planning horizon ends")
+yaml_case("goal-window-stint-planner",
+          mission("goal: {x: 9, y: 0, window: {begin: 10, end: 20}}", "planner: {name: direct}",
+                  "stints: {duration: 1, mission_duration: 30}"), "goal.window")
+nc_case("goal-window-after-forecast", forecast(), "--arrive-between: the arrival window opens",
+        extra=("--arrive-between", "2026-03-20T00:00:00Z,2026-03-21T00:00:00Z"))
+nc_case("cli-arrive-between-not-a-date", forecast(), "--arrive-between: begin",
+        extra=("--arrive-between", "tomorrow,2026-03-16T00:00:00Z"))
+case("cli-arrive-between-one-time", ["--arrive-between", "5", "--out", "{out}"], 2,
+     "--arrive-between expects two times separated by a comma")
+case("cli-arrive-between-three-times", ["--arrive-between", "5,6,7", "--out", "{out}"], 2,
+     "--arrive-between expects two times")
+case("cli-arrive-between-empty-item", ["--arrive-between", "5,", "--out", "{out}"], 2,
+     "--arrive-between expects two times")
+case("cli-arrive-between-reversed", ["--arrive-between", "20,10", "--out", "{out}"], 2,
+     "--arrive-between: the end (10) must not be before the begin (20)")
+case("cli-arrive-between-nan", ["--arrive-between", "nan,10", "--out", "{out}"], 2, "--arrive-between: begin")
+case("cli-arrive-between-date-built-in", ["--arrive-between", "2026-03-15,2026-03-16", "--out", "{out}"], 2,
+     "--arrive-between: begin")
+case("goal-window-missed", ["--arrive-between", "1,2", "--out", "{out}"], 1,
+     "after the end of the goal's arrival window")
 # --- well-formed problems without a path: exit 1 with the reason ------------------------------------------------
 case("no-path-slow-in-jet", ["--speed", "0.05", "--out", "{out}"], 1, "Status:             No path")
 case("no-path-horizon-named", ["--speed", "0.05", "--out", "{out}"], 1, "within the planning horizon")

@@ -36,3 +36,6 @@ if(TARGET glider_plan)
     set_tests_properties(mission.geography.${scenario} PROPERTIES FIXTURES_REQUIRED geography_files TIMEOUT 300)
   endforeach()
 endif()
+# goals in time (issue 12): a goal window met by holding at the goal or by timing the arrival, or not at all
+glider_add_test(test_mission_goal_window ${CMAKE_CURRENT_LIST_DIR}/TestGoalWindow.cpp)
+target_link_libraries(test_mission_goal_window PRIVATE nlohmann_json::nlohmann_json)

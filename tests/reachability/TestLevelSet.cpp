@@ -186,8 +186,12 @@ TEST(LevelSet, WalledInStartReachesNothingOutside)
     EXPECT_TRUE(r.path.empty());
     for (int j = 0; j < r.ny; ++j)
         for (int i = 0; i < r.nx; ++i)
+        {
             if (std::isfinite(r.arrival[static_cast<std::size_t>(j) * r.nx + i]))
+            {
                 ASSERT_LE(std::hypot(r.x0 + i * r.h - 5, r.y0 + j * r.h), 1.0 + 1e-9);
+            }
+        }
 }
 
 TEST(LevelSet, ClosedLaneIsWaitedOut)

@@ -3,6 +3,7 @@
 /// @brief What is forbidden where and when: the interface the motion validator and the planners query.
 
 #include <string>
+#include <vector>
 
 namespace ompl_glider
 {
@@ -22,6 +23,14 @@ public:
     /// @brief True when the straight leg (x1, y1, t1) -> (x2, y2, t2) meets no forbidden region at the times it
     /// passes it (and, for ice zones, stays under ice no longer than allowed).
     virtual bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const = 0;
+
+    /// @brief The times at which a timed restriction ends: the ends of the closed windows of time-windowed zones,
+    /// sorted, without repeats. A planner that waits (TveSearch, issue 12) tries departing just after them when a leg
+    /// is blocked. Empty by default (static regions; drifting ice has no end).
+    virtual std::vector<double> releaseTimes() const
+    {
+        return {};
+    }
 
     /// @brief Why (x, y, t) is not free ("inside island 'A'"); empty when it is free.
     virtual std::string whyBlocked(double x, double y, double t) const = 0;

@@ -27,6 +27,9 @@ public:
     bool pointFree(double x, double y, double t) const override;
     bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const override;
 
+    /// @brief The ends of the windows (Environment::releaseTimes()).
+    std::vector<double> releaseTimes() const override;
+
     /// @brief The time intervals during which the leg is inside the polygon (whatever the windows).
     std::vector<Interval> insideTimes(double x1, double y1, double t1, double x2, double y2, double t2) const;
 

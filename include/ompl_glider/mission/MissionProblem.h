@@ -70,7 +70,8 @@ public:
     /// @brief The same problem on one member's field alone (no ensemble).
     MissionProblem withMember(std::size_t member) const;
     /// @brief The same problem between other endpoints (planning frame): field, truth, regions and box are shared.
-    /// The spec's start and goal stay the mission's.
+    /// The spec's start and goal stay the mission's. The goal's arrival window (MissionSpec::goalWindow) is kept for
+    /// the mission's goal (a replan from a fix) and dropped for another goal (the execution batch's random pairs).
     MissionProblem withEndpoints(Point2 start, Point2 goal) const;
     /// @brief The forbidden regions (null when there are none).
     const std::shared_ptr<const Environment> &getEnvironment() const

@@ -109,6 +109,15 @@ struct DepartureSpec
     unsigned threads{0};        ///< parallel searches (0: all cores)
 };
 
+/// @brief The goal's arrival window (issue 12, "goals in time"; [ThompsonICRA] Sec. III: a spatiotemporal goal, reached
+/// at its earliest valid arrival): the glider must be at the goal at a time in [begin, end] (field time units).
+struct GoalWindowSpec
+{
+    bool set{false};    ///< a window is given (mission `goal.window`, or `--arrive-between`)
+    double begin{0.0};  ///< earliest accepted arrival
+    double end{0.0};    ///< latest accepted arrival
+};
+
 /// @brief Vehicle.
 struct VehicleSpec
 {
@@ -276,6 +285,7 @@ struct MissionSpec
     RegionSpec region;
     PointSpec start;
     PointSpec goal;
+    GoalWindowSpec goalWindow;     ///< arrival window at the goal (unset: any time)
     DepartureSpec departure;
     VehicleSpec vehicle;
     TravelTimeParams travel;       ///< integration parameters (speed and depth are copied from vehicle)
@@ -296,6 +306,11 @@ struct MissionSpec
     {
         return current.type == "netcdf" || timeUnitSeconds != 1.0 || epoch.has_value();
     }
+
+    /// @brief A time given as text, read as the mission's departure times are: a number in field units, or an ISO 8601
+    /// date converted with the dated forecast's calendar or the mission's epoch. @throws Error saying what was
+    /// expected (the caller adds where).
+    double timeOf(const std::string &text) const;
 
     /// @brief "m.yaml:12: field 'planner.grid_size'", "--grid-size" for a flag, or "m.yaml: field '...'" when the
     /// value was not given (a default).

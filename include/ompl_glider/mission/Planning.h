@@ -95,6 +95,13 @@ struct PlannedPath
     double rawTravelTime{std::numeric_limits<double>::infinity()};       ///< raw path arrival - departure
     double smoothedTravelTime{std::numeric_limits<double>::infinity()};  ///< smoothed path arrival - departure
     double travelTime{std::numeric_limits<double>::infinity()};          ///< final path arrival - departure
+    /// Total time spent holding position on the final path (its zero-length legs: at the goal or a waypoint to
+    /// arrive in the goal window, or the lattice's waits at a time-windowed zone); field time units
+    double holdTime{0.0};
+    /// How the arrival was moved into the goal window (MissionSpec::goalWindow): "hold at the goal", "hold at
+    /// waypoint K", "later departure (hold at the start)", "slower leg K -> K+1"; empty when the planner's arrival
+    /// was in the window or there is none
+    std::string arrivalTiming;
     double rawPathLength{0.0};  ///< raw path length
     double pathLength{0.0};     ///< final path length
     double straightLineTime{std::numeric_limits<double>::infinity()};  ///< direct leg (+inf: impassable)
@@ -196,6 +203,11 @@ std::vector<TimedWaypoint> retimePath(const MissionProblem &problem, std::shared
 /// smoothed or refined), solved when a plan was flown (exactly reaching the goal or not: PlannedPath::stints has the
 /// remaining distance). With another planner and a `stints` section, the final path is converted to stints
 /// (stintsFromPath()).
+/// Goals in time (MissionSpec::goalWindow, issue 12; [ThompsonICRA] Sec. III): after any planner, post-processing and
+/// the ensemble's choice, an arrival before the window is moved into it (a hold at the goal where the glider can hold
+/// there, else a hold at an earlier waypoint or a slower leg, latest first; PlannedPath::holdTime, arrivalTiming); an
+/// arrival after it, or one that cannot be delayed, is no path (solved false, reason says why). The stint conversion
+/// is made from the path before these holds.
 PlannedPath planRoute(const MissionProblem &problem, double departure, const PlanOptions &options = {});
 
 /// @brief The stint settings of the mission's `stints` section for a departure (depth from the vehicle).

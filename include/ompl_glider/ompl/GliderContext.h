@@ -32,6 +32,14 @@ struct GliderContext
     {
         return travel->params().speed;
     }
+    /// @brief True when the glider can hold position at (x, y) over [t1, t2] (t2 >= t1): in water, within the
+    /// field's time, and |c| < V at t1 + (t2 - t1) i / n, i = 0..n, n = max(1, ceil((t2 - t1) / step)) * subdivide.
+    /// The one hold test of the motion validator (TravelTimeMotionValidator::canHold, subdivide 1) and of the lattice
+    /// search's waiting edges (TveSearch; subdivide > 1 samples a superset of the validator's times).
+    bool canHold(double x, double y, double t1, double t2, double step, int subdivide = 1) const;
+    /// @brief The motion validator's default spacing of hold samples: 1/256 of the time window (1 if unbounded).
+    double holdTimeStep() const;
+
     /// @brief Upper bound of the current speed over the region and time window ([EichhornRAS] Eq. 1).
     double maxCurrent() const
     {

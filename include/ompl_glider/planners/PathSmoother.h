@@ -7,6 +7,8 @@
 #include <memory>
 #include <vector>
 
+#include <functional>
+
 #include <ompl/geometric/PathGeometric.h>
 
 #include "ompl_glider/ompl/GliderContext.h"
@@ -29,6 +31,21 @@ double arrivalTime(const GliderContext &ctx, const std::vector<TimedWaypoint> &w
 
 /// @brief Sum of the leg lengths.
 double pathLength(const std::vector<TimedWaypoint> &waypoints);
+
+/// @brief Index k >= 1 of the waypoint that ends the path's last hold (waypoints k - 1 and k at the same position:
+/// the glider holds position from t[k - 1] to t[k]); 0 when the path never holds.
+std::size_t lastHoldEnd(const std::vector<TimedWaypoint> &waypoints);
+
+/// @brief Post-processing of a path that holds position (a lattice wait at a time-windowed zone, a hold for the goal
+/// window; issue 12): @p improve (smoothing or refinement, which fly every leg at full speed from the departure and
+/// would drop the holds) is applied only to hold-free pieces, the holds kept: the piece after the last hold (from the
+/// hold's end, its time fixed) or, when the path ends with a hold (at the goal), the part before it, the hold then
+/// lengthened to its old end where the glider can hold from the new arrival (GliderContext::canHold and the
+/// environment; else that part is kept). @p improve returns its input when it cannot improve it. A path without holds
+/// is passed to @p improve whole.
+std::vector<TimedWaypoint> improveAroundHolds(
+    const GliderContext &ctx, const std::vector<TimedWaypoint> &waypoints,
+    const std::function<std::vector<TimedWaypoint>(const std::vector<TimedWaypoint> &)> &improve);
 
 /// @brief Waypoints (x, y, t) of a path on a TimeSE2StateSpace (see ompl/TimeSE2StateSpace.h).
 /// @throws Error when the path's space is not a TimeSE2StateSpace.

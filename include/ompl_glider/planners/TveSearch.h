@@ -102,6 +102,26 @@ struct TveOptions
     unsigned windowRounds{1};
     /// Weight w of the heuristic in the queue key d + w h (1 = A*; > 1 = weighted A*, which gives up exactness).
     double heuristicWeight{1.0};
+    /// Holding in the search (issue 12; [ThompsonICRA] Sec. III, hold-position actions; default on): when a leg from
+    /// u is blocked by the environment at u's arrival time d[u] (a time-windowed zone closes the lane, or the end
+    /// vertex is closed then) and the glider can hold at u (|c| < V over the hold, GliderContext::canHold), the leg is
+    /// also tried departing just after each release time of the environment (Environment::releaseTimes(): the ends of
+    /// the zones' windows) later than d[u], earliest first, up to the first that gives a free leg (a waiting edge; the
+    /// path then holds at u: the same position twice with two times). With a goal window
+    /// (GliderContext::arriveNotBefore / arriveNotAfter) an arrival at the goal counts only inside it: an early one
+    /// where the goal can be held (the path then holds there up to the window's begin), else the edge into the goal
+    /// is flown from u after a hold found by bisection so that it arrives at the window's begin (the earliest valid
+    /// arrival); arrivals after the window's end are dropped. What remains heuristic: waits only at lattice
+    /// vertices, only at release times (and before the goal edge), and the first free release time is taken, which
+    /// is the best one only where arrival does not decrease with departure (FIFO); legs are flown at full speed,
+    /// never slower. The lower bounds (A* heuristic, edge bounds, certification) stay bounds: they bound the flight
+    /// time whatever the departure within the search's time window, and holding only adds time.
+    bool waiting{true};
+    /// With a goal window: when no path meets it (it closes before any arrival, or the goal cannot be held and the
+    /// vertex before the goal edge cannot either), search again ignoring it and return that earliest arrival with
+    /// TveResult::goalWindowMissed set, so that the caller can time the arrival elsewhere on the path or report why
+    /// (planRoute() does both). Off: such a search exhausts.
+    bool goalWindowFallback{true};
     /// Expansions between two calls of the termination callback.
     unsigned checkEvery{8};
 };
@@ -140,6 +160,8 @@ struct TveResult
     std::uint64_t boundSkips{0};         ///< edges whose CFC the lower bounds saved (TveOptions::tightBounds)
     std::uint64_t heuristicSettled{0};   ///< vertices settled by LatticeHeuristic's backward search
     bool fallbackUsed{false};            ///< the pruned search exhausted and continued without pruning
+    /// No path meets the goal window: the waypoints are the earliest arrival ignoring it (TveOptions::goalWindowFallback)
+    bool goalWindowMissed{false};
     std::string message;                 ///< why the start or goal is invalid
 };
 
@@ -200,6 +222,8 @@ public:
 
 private:
     std::vector<TimedWaypoint> pathTo(Lattice::VertexId v) const;
+    TveResult runPhases(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
+                        const std::function<bool()> &terminate);
     TveResult runCore(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
                       const std::function<bool()> &terminate);
 
@@ -235,7 +259,13 @@ private:
     {
         double d{std::numeric_limits<double>::infinity()};
         Lattice::VertexId pi{Lattice::kNone};
+        /// Departure from pi[v] when the glider held position there first (a waiting edge, TveOptions::waiting);
+        /// -inf when it left on arrival
+        double dep{-std::numeric_limits<double>::infinity()};
     };
+    bool ignoreGoalWindow_{false};  ///< the fallback run of run() (TveOptions::goalWindowFallback)
+    /// Hold at the goal after the arrival d[goal] up to this time (the goal window opens then); -inf: none
+    double goalHoldUntil_{-std::numeric_limits<double>::infinity()};
     std::unordered_map<Lattice::VertexId, Label> labels_;
     double dist(Lattice::VertexId v) const
     {

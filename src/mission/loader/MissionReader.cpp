@@ -181,23 +181,9 @@ double Reader::time(const YAML::Node &node, const std::string &field, const Miss
     }
     catch (const Error &)
     {
-        if (m.fileCalendar)
-        {
-            try
-            {
-                const DateTime d = parseDateTime(node.Scalar());
-                return secondsSinceCalendarEpoch(d, m.fileCalendar->calendar) - m.fileCalendar->originSeconds;
-            }
-            catch (const Error &e)
-            {
-                fail(node, field, e.what());
-            }
-        }
-        if (!m.epoch)
-            fail(node, field, "expected a number (an ISO 8601 date needs 'epoch' at the top of the mission)");
         try
         {
-            return (parseIsoTime(node.Scalar()) - *m.epoch) / m.timeUnitSeconds;
+            return m.timeOf(node.Scalar());
         }
         catch (const Error &e)
         {
@@ -225,7 +211,10 @@ std::vector<std::pair<double, double>> Reader::ring(const YAML::Node &node, cons
 
 void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, PointSpec &p, const MissionSpec &m)
 {
-    r.checkMap(n, field, {"x", "y", "lon", "lat"});
+    if (field == "goal")
+        r.checkMap(n, field, {"x", "y", "lon", "lat", "window"});  // goal.window: readGoalWindow()
+    else
+        r.checkMap(n, field, {"x", "y", "lon", "lat"});
     const bool xy = n["x"] || n["y"], geo = n["lon"] || n["lat"];
     if (xy == geo)
         r.fail(n, field, "give either x and y, or lon and lat");

@@ -94,6 +94,8 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
 void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readRegion(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m);
+/// The goal's arrival window `goal.window: {begin, end}` (times read as the departure's), after readDeparture().
+void readGoalWindow(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m);

@@ -339,6 +339,21 @@ void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m)
         d.threads = static_cast<unsigned>(r.integer(w["threads"], g + ".threads", 0, 1024));
 }
 
+void readGoalWindow(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const std::string g = "goal.window";
+    r.checkMap(n, g, {"begin", "end"});
+    if (!n["begin"] || !n["end"])
+        r.fail(n, g, std::string("begin and end are required (missing ") + (n["begin"] ? "end" : "begin") + ")");
+    GoalWindowSpec &w = m.goalWindow;
+    w.set = true;
+    w.begin = r.time(n["begin"], g + ".begin", m);
+    w.end = r.time(n["end"], g + ".end", m);
+    if (!(w.end >= w.begin))
+        r.fail(n["end"], g + ".end", "must not be before begin");
+    // (a window out of reach of the departure and the planning horizon is refused by runMission())
+}
+
 void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "dive_profile";
