@@ -4,6 +4,7 @@
 #include <string>
 
 #include <ompl/base/goals/GoalState.h>
+#include <ompl/util/Console.h>
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/GliderStateValidityChecker.h"
@@ -123,5 +124,26 @@ std::optional<Point2> goalPosition(const ob::Goal &goal, std::string *why)
     if (why)
         *why = "unknown goal type (need PositionGoal, GoalState or GoalSampleableRegion)";
     return std::nullopt;
+}
+
+std::optional<StartAndGoal> startAndGoal(const ob::ProblemDefinition &pdef, const std::string &planner,
+                                         ob::PlannerStatus &status)
+{
+    if (pdef.getStartStateCount() == 0)
+    {
+        OMPL_ERROR("%s: invalid start: no start state given", planner.c_str());
+        status = ob::PlannerStatus::INVALID_START;
+        return std::nullopt;
+    }
+    const auto *st = pdef.getStartState(0)->as<TimeSE2StateSpace::StateType>();
+    std::string why;
+    const std::optional<Point2> goal = goalPosition(*pdef.getGoal(), &why);
+    if (!goal)
+    {
+        OMPL_ERROR("%s: %s", planner.c_str(), why.c_str());
+        status = ob::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
+        return std::nullopt;
+    }
+    return StartAndGoal{st->getX(), st->getY(), st->getTime(), *goal};
 }
 }  // namespace ompl_glider

@@ -395,20 +395,12 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
 ompl::base::PlannerStatus Wavefront::solve(const ompl::base::PlannerTerminationCondition &ptc)
 {
     checkValidity();
-    if (pdef_->getStartStateCount() == 0)
-    {
-        OMPL_ERROR("%s: invalid start: no start state given", getName().c_str());
-        return ompl::base::PlannerStatus::INVALID_START;
-    }
-    const auto *st = pdef_->getStartState(0)->as<TimeState>();
-    const double sx = st->getX(), sy = st->getY(), t0 = st->getTime();
-    std::string why;
-    const std::optional<Point2> goal = goalPosition(*pdef_->getGoal(), &why);
-    if (!goal)
-    {
-        OMPL_ERROR("%s: %s", getName().c_str(), why.c_str());
-        return ompl::base::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
-    }
+    ompl::base::PlannerStatus status;
+    const std::optional<StartAndGoal> sg = startAndGoal(*pdef_, getName(), status);
+    if (!sg)
+        return status;
+    const double sx = sg->sx, sy = sg->sy, t0 = sg->t0;
+    const std::optional<Point2> goal = sg->goal;
 
     freeDataStates();
     settled_.clear();

@@ -209,27 +209,12 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
     if (!search_)
         search_ = std::make_unique<TveSearch>(ctx_, gridSize_, sectors_);
 
-    // Start: the first start state given, read directly (not through pis_, which would silently drop a start that
-    // fails the validity checker; the search says why a start is invalid) so that solve() can be called again. Its
-    // time is the departure time t0.
-    if (pdef_->getStartStateCount() == 0)
-    {
-        OMPL_ERROR("%s: invalid start: no start state given", getName().c_str());
-        return ompl::base::PlannerStatus::INVALID_START;
-    }
-    const ompl::base::State *startState = pdef_->getStartState(0);
-    const auto *st = startState->as<TimeState>();
-    const double sx = st->getX(), sy = st->getY(), t0 = st->getTime();
-
-    // Goal position.
-    std::string why;
-    const std::optional<Point2> goalXY = goalPosition(*pdef_->getGoal(), &why);
-    if (!goalXY)
-    {
-        OMPL_ERROR("%s: %s", getName().c_str(), why.c_str());
-        return ompl::base::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
-    }
-    const double gx = goalXY->x, gy = goalXY->y;
+    // Start (its time is the departure t0) and goal position (startAndGoal(): read so that solve() can be repeated).
+    ompl::base::PlannerStatus status;
+    const std::optional<StartAndGoal> sg = startAndGoal(*pdef_, getName(), status);
+    if (!sg)
+        return status;
+    const double sx = sg->sx, sy = sg->sy, t0 = sg->t0, gx = sg->goal.x, gy = sg->goal.y;
 
     freeDataStates();
     solution_.clear();

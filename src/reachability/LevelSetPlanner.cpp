@@ -195,21 +195,11 @@ void LevelSetPlanner::clear()
 ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTerminationCondition &ptc)
 {
     checkValidity();
-    if (pdef_->getStartStateCount() == 0)
-    {
-        OMPL_ERROR("%s: invalid start: no start state given", getName().c_str());
-        return ompl::base::PlannerStatus::INVALID_START;
-    }
-    const auto *st = pdef_->getStartState(0)->as<TimeState>();
-    const double sx = st->getX(), sy = st->getY(), t0 = st->getTime();
-    std::string why;
-    const std::optional<Point2> gp = goalPosition(*pdef_->getGoal(), &why);
-    if (!gp)
-    {
-        OMPL_ERROR("%s: %s", getName().c_str(), why.c_str());
-        return ompl::base::PlannerStatus::UNRECOGNIZED_GOAL_TYPE;
-    }
-    const double gx = gp->x, gy = gp->y;
+    ompl::base::PlannerStatus status;
+    const std::optional<StartAndGoal> sg = startAndGoal(*pdef_, getName(), status);
+    if (!sg)
+        return status;
+    const double sx = sg->sx, sy = sg->sy, t0 = sg->t0, gx = sg->goal.x, gy = sg->goal.y;
     const Region &r = ctx_->region;
     const auto inRegion = [&](double x, double y) { return x >= r.xMin && x <= r.xMax && y >= r.yMin && y <= r.yMax; };
     if (!inRegion(sx, sy))
@@ -235,7 +225,7 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
         return ompl::base::PlannerStatus::ABORT;
     }
     levelSetTime_ = last_.goalTime - t0;
-    why.clear();
+    std::string why;
     waypoints_ = levelSetWaypoints(*ctx_, last_.path, p.cellSize / 3.0, &why);
     if (waypoints_.empty())
     {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <ompl/base/PlannerStatus.h>
+#include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/goals/GoalSampleableRegion.h>
 #include <ompl/util/RandomNumbers.h>
 
@@ -88,4 +90,18 @@ private:
 /// PositionGoal's point, a GoalState's state, or one state sampled from a GoalSampleableRegion. Empty when the goal is
 /// of another type or the region cannot be sampled; @p why (if non-null) then says which.
 std::optional<Point2> goalPosition(const ompl::base::Goal &goal, std::string *why = nullptr);
+
+/// @brief What the planners of this project read from a problem definition on a TimeSE2StateSpace: the first start
+/// state (read directly, not through the planner's input states, so that a start the validity checker refuses is
+/// still seen and solve() can be called again; its time is the departure) and the goal position (goalPosition()).
+struct StartAndGoal
+{
+    double sx{0.0}, sy{0.0}, t0{0.0};  ///< start position and departure time
+    Point2 goal;                       ///< goal position
+};
+
+/// @brief The start and goal of @p pdef, or nullopt with @p status set to INVALID_START (no start state) or
+/// UNRECOGNIZED_GOAL_TYPE (a goal without a position), the reason logged by OMPL_ERROR under @p planner's name.
+std::optional<StartAndGoal> startAndGoal(const ompl::base::ProblemDefinition &pdef, const std::string &planner,
+                                         ompl::base::PlannerStatus &status);
 }  // namespace ompl_glider
