@@ -735,8 +735,34 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
             double nmx = nx, nmy = ny;
             normal(mx, my, nmx, nmy);
             const Velocity cm = field.velocity(mx, my, z, pt - 0.5 * h1);
-            px -= h1 * (cm.u + V * nmx);
-            py -= h1 * (cm.v + V * nmy);
+            // Near a moving forbidden region (drifting ice) T is not the front at the path's time: a step along
+            // grad T may enter the region. Then the heading turns, 15 degrees at a time either way, to the nearest
+            // one whose step ends where the region is not (a local repair; the legs are checked again later).
+            double qx = px - h1 * (cm.u + V * nmx), qy = py - h1 * (cm.v + V * nmy);
+            const auto blocked = [&](double x, double y, double t) {
+                return ctx_->environment && !ctx_->environment->pointFree(x, y, t);
+            };
+            if (blocked(qx, qy, pt - h1))
+                for (int k = 1; k <= 12; ++k)
+                {
+                    bool found = false;
+                    for (int sgn = -1; sgn <= 1 && !found; sgn += 2)
+                    {
+                        const double a = sgn * k * M_PI / 12.0, ca = std::cos(a), sa = std::sin(a);
+                        const double ux = nmx * ca - nmy * sa, uy = nmx * sa + nmy * ca;
+                        const double rx = px - h1 * (cm.u + V * ux), ry = py - h1 * (cm.v + V * uy);
+                        if (!blocked(rx, ry, pt - h1) && std::isfinite(out.arrivalAt(rx, ry)))
+                        {
+                            qx = rx;
+                            qy = ry;
+                            found = true;
+                        }
+                    }
+                    if (found)
+                        break;
+                }
+            px = qx;
+            py = qy;
             pt -= h1;
             back.push_back({px, py, pt});
         }
