@@ -82,28 +82,34 @@ struct Reachability
 /// Scheme (semi-Lagrangian, one step t -> t + dt): the set reachable at t + dt is the set of points x = y +
 /// dt (c + V u), |u| <= 1, with y reachable at t, so phi(x, t + dt) = min over |u| <= 1 of phi(y(u), t), the
 /// departure point y(u) = x - dt (c(x_m, t + dt/2) + V u) by the midpoint rule (x_m = x - dt/2 (c(x, t + dt) +
-/// V u)). The minimum over the disc of headings is taken at the heading along grad phi (exact for a locally
-/// linear phi) and at two headings 0.3 rad to each side of it (the kinks where fronts meet). phi between nodes is
-/// bicubic (Catmull-Rom) with a monotone limiter (clipped to the cell's corner values): bilinear is too diffusive,
-/// an unlimited cubic overshoots at the band's edge and at obstacles. The splitting of the two terms into an
-/// upwind expansion and an advection step, which fails where |c| > V, is not used: the departure point moves with
-/// both at once.
+/// V u)). The minimum over the disc is taken at the heading along grad phi (the cubic's gradient at the departure
+/// point; exact for a locally linear phi), at 0.25 rad to each side and at the vertex of the parabola through those
+/// three (the kinks where fronts meet), and at the disc's centre, u = 0 (drifting, or holding where |c| < V; it
+/// covers a minimum inside the disc, the start); where grad phi is too small to trust, at 8 headings.
+/// phi between nodes is bicubic (Catmull-Rom) with a monotone limiter (clipped to the cell's corner values):
+/// bilinear is too diffusive, an unlimited cubic overshoots at the band's edge and at obstacles. The splitting of
+/// the two terms into an upwind expansion and an advection step, which fails where |c| > V, is not used: the
+/// departure point moves with both at once.
 ///
-/// Start: the exact reachable disc of the first instant (centre start + dt0 c(start), radius V dt0, dt0 chosen so
-/// the radius is four cells), with first arrivals inside it solved in closed form (radius four cells: with two, the first steps leave a dent in
-/// the front that persists).
-/// Forbidden regions: after each step phi = max(phi, d(x, t)), d the signed distance to the forbidden set
-/// (positive inside): exact for polygons (static regions; time-windowed zones while closed; ice zones at their
+/// Start: the exact reachable disc of the first instant (centre start + dt0 c(start), radius V dt0 = four cells;
+/// with two, the first steps leave a dent in the front that persists), first arrivals inside it in closed form.
+/// Reinitialisation: every reinitEvery steps phi becomes the signed distance to its zero level (located by linear
+/// interpolation on the cell edges, left in place): a minimum over a disc never lowers phi below its least value,
+/// so without it the inside flattens to the first disc's depth and the cubic sees a kinked profile.
+/// Forbidden regions: after each step phi = max(phi, d(x, t) + clearance), d the signed distance to the forbidden
+/// set (positive inside): exact for polygons (static regions; time-windowed zones while closed; ice zones at their
 /// drifted position unless iceForbidden is false), from the node mask for land (the field's inWater()) and for any
-/// other Environment (pointFree() at the nodes). Points outside the region are unreachable.
+/// other Environment (pointFree() at the nodes). Points outside the region are unreachable. A step ends where a
+/// time-windowed zone opens or closes.
 /// Narrow band: phi is clipped to +-band h; only 16 x 16 tiles holding an unclipped value, and their neighbours,
 /// are updated; the tiles of a step are shared by the threads.
 /// First arrival T(x) = the time phi(x) first becomes <= 0, linear in phi within the step; the goal's by the
-/// interpolated phi at the goal.
+/// interpolated phi at the goal. Convergence is first order in the cell size, the front slow, never fast.
 /// Backtracking: from the goal at its arrival time back in time with dx/dt = c + V n, n = grad T / |grad T| (the
 /// front's outward normal at the point it passes at that time), midpoint rule; where T(x) is earlier than the
 /// path's time by more than a tolerance the glider held there (it arrived earlier and waited, e.g. for a lane to
-/// open): the path holds until T(x), if |c| < V there.
+/// open): the path holds until T(x), if |c| < V there. Near a moving forbidden region T is not the front at the
+/// path's time, so a step that enters the region turns to the nearest free heading (a local repair).
 /// Memory: three doubles per node (phi twice, T), nothing per step.
 class LevelSetSolver
 {

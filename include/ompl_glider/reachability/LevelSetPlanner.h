@@ -16,12 +16,14 @@ namespace ompl_glider
 /// @brief Time-optimal path by the level-set solver (LevelSetSolver, [LollaLevelSet]): the front is propagated from
 /// the start state (its time is the departure) until it reaches the goal position, and the path is backtracked.
 ///
-/// The returned PathGeometric (TimeSE2 states) is valid under TravelTimeMotionValidator: the backtracked points are
-/// thinned to straight legs that stay within a third of a cell of the backtracked curve, and timed by the project's
-/// travel-time code from the departure (fastest pace); where the backtracked path holds (it arrived earlier than
-/// needed, e.g. before a lane opens), the path holds too (two states at one position) when the glider can hold there.
-/// Its cost is therefore the travel-time code's time of those legs, close to, not equal to, the front's arrival
-/// time getLevelSetTime() (the continuous optimum at this resolution; the reference figure).
+/// The returned PathGeometric (TimeSE2 states) is valid under TravelTimeMotionValidator: the front keeps half a
+/// cell of clearance from forbidden regions; the backtracked points are thinned to straight legs that stay within a
+/// third of a cell of the backtracked curve and timed by the project's travel-time code from the departure, at full
+/// speed, or slower within the leg's arrival window where the level set reaches a point later (it waited, e.g. for a
+/// lane to open, in a current too strong to hold); where the backtracked path holds, the path holds too (two states
+/// at one position) when the glider can hold there. Its cost is therefore the travel-time code's time of those legs,
+/// close to, not equal to, the front's arrival time getLevelSetTime() (the continuous optimum at this resolution,
+/// with the clearance).
 ///
 /// Declared parameters: "resolution" (cell size, the field's length unit; 0: 1/200 of the region's larger side),
 /// "cfl", "threads". Outcomes: EXACT_SOLUTION; ABORT when the front never reaches the goal within the region's time
