@@ -184,7 +184,7 @@ yaml_case("isochrone-interval-hours-without-unit",
           mission(append="outputs: {files: [summary, isochrones], isochrone_interval: 2 h}\n"),
           "needs the mission's time unit")
 yaml_case("levelset-walled-in",
-          mission("planner: {name: LevelSet, parameters: {resolution: 0.1}}",
+          mission("planner: {name: LevelSet, horizon: 60, parameters: {resolution: 0.1}}",
                   append="forbidden:\n  obstacles:\n    - {name: pocket, points: [[0, -1], [3, -1], [3, 1], [0, 1], "
                   "[0, 0.6], [2.5, 0.6], [2.5, -0.6], [0, -0.6]]}\n"),
           "never reaches the goal", status=1)

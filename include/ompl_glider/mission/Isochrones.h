@@ -30,7 +30,8 @@ struct IsochroneSet
     std::vector<Isochrone> contours;    ///< ascending times
 };
 
-/// @brief Propagates the level-set front (LevelSetSolver) from the start at @p departure and draws its boundary every
+/// @brief Propagates the level-set front (LevelSetSolver, cell 1/100 of the region's larger side) from the start at
+/// @p departure and draws its boundary every
 /// @p interval (NaN: eight times evenly up to the planned arrival, or up to the horizon when there is no path) up to
 /// the planned arrival (or the horizon).
 IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath &plan, double departure,
