@@ -479,7 +479,7 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
 
     // Tiles.
     const int tx = (g.nx + kTile - 1) / kTile, ty = (g.ny + kTile - 1) / kTile;
-    std::vector<char> tileLive(static_cast<std::size_t>(tx) * ty, 0), tileActive(tileLive.size(), 0);
+    std::vector<char> tileLive(static_cast<std::size_t>(tx) * ty, 0);
     std::vector<std::uint32_t> activeTiles;
     const double bandInner = band * (1.0 - 1e-9);
     const auto findActive = [&]() {
@@ -488,7 +488,6 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
             for (int i = 0; i < g.nx; ++i)
                 if (std::abs(phi[g.index(i, j)]) < bandInner)
                     tileLive[static_cast<std::size_t>(j / kTile) * tx + i / kTile] = 1;
-        std::fill(tileActive.begin(), tileActive.end(), 0);
         activeTiles.clear();
         for (int b = 0; b < ty; ++b)
             for (int a = 0; a < tx; ++a)
