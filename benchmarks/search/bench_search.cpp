@@ -68,6 +68,10 @@ std::vector<Config> makeConfigs()
         def.greedyWeight = std::atof(e);
     if (const char *e = std::getenv("BENCH_TWO"))
         def.greedyDeadline = std::atoi(e) != 0;
+    if (const char *e = std::getenv("BENCH_CF"))
+        def.coarseFactor = static_cast<unsigned>(std::atoi(e));
+    if (const char *e = std::getenv("BENCH_CB"))
+        def.corridorBlocks = static_cast<unsigned>(std::atoi(e));
     c.push_back({"ZA*TVE, default (tight, tol 0)", def});
     if (std::getenv("BENCH_ORACLE"))
     {
@@ -99,6 +103,8 @@ Run runOnce(TveSearch &search, double sx, double sy, double t0, double gx, doubl
     out.cmc = r.currentModelCalls;
     out.expanded = r.expansions;
     out.wall = std::chrono::duration<double>(b - a).count();
+    if (std::getenv("BENCH_VERBOSE"))
+        std::printf("  [corridor rounds %u, blocks %u]\n", r.corridorRounds, r.corridorBlocks);
     return out;
 }
 

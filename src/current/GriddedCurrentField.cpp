@@ -728,6 +728,61 @@ double GriddedCurrentField::maxSpeed(const Region &region) const
     return std::min(product, data) * (1.0 + 1e-9) + 1e-300;
 }
 
+bool GriddedCurrentField::hasVelocityBounds() const
+{
+    return !curvilinear_ && options_.xy != Interp2D::Bicubic &&
+           (options_.depth == Interp1D::Nearest || options_.depth == Interp1D::Linear) &&
+           (options_.time == Interp1D::Nearest || options_.time == Interp1D::Linear);
+}
+
+bool GriddedCurrentField::velocityBounds(const Region &region, double &uMin, double &uMax, double &vMin,
+                                         double &vMax) const
+{
+    if (!hasVelocityBounds())
+        return false;
+    // nodes a..b of an axis whose stencils can serve a query in [lo, hi] (queries are clamped to the axis; a
+    // linear or nearest stencil uses the two nodes of the interval holding the query)
+    auto range = [](const Axis &ax, double lo, double hi, std::size_t &a, std::size_t &b) {
+        if (ax.size() == 1 || !(lo <= hi))
+        {
+            a = 0;
+            b = ax.size() - 1;
+            return;
+        }
+        lo = std::isfinite(lo) ? std::clamp(lo, ax.front(), ax.back()) : ax.front();
+        hi = std::isfinite(hi) ? std::clamp(hi, ax.front(), ax.back()) : ax.back();
+        a = ax.interval(lo);
+        b = std::min(ax.size() - 1, ax.interval(hi) + 1);
+    };
+    std::size_t i0, i1, j0, j1, t0, t1;
+    range(x_, region.xMin, region.xMax, i0, i1);
+    range(y_, region.yMin, region.yMax, j0, j1);
+    range(time_, std::isnan(region.tMin) ? -kInf : region.tMin, std::isnan(region.tMax) ? kInf : region.tMax, t0,
+          t1);
+    const std::size_t nz = depth_.size();
+    float a = std::numeric_limits<float>::infinity(), b = -a, c = a, d = -a;
+    for (std::size_t it = t0; it <= t1; ++it)
+        for (std::size_t k = 0; k < nz; ++k)  // all loaded layers, as maxSpeed()
+            for (std::size_t j = j0; j <= j1; ++j)
+            {
+                const float *row = &uv_[2 * (((it * nz + k) * ny_ + j) * nx_)];
+                for (std::size_t i = i0; i <= i1; ++i)
+                {
+                    a = std::min(a, row[2 * i]);
+                    b = std::max(b, row[2 * i]);
+                    c = std::min(c, row[2 * i + 1]);
+                    d = std::max(d, row[2 * i + 1]);
+                }
+            }
+    // (the interpolation's weights are rounded: a relative margin as in maxSpeed())
+    const double m = 1e-9 * std::max({std::abs(a), std::abs(b), std::abs(c), std::abs(d)}) + 1e-300;
+    uMin = a - m;
+    uMax = b + m;
+    vMin = c - m;
+    vMax = d + m;
+    return true;
+}
+
 Region GriddedCurrentField::extent() const
 {
     Region r;

@@ -134,6 +134,12 @@ VelocityBox currentBounds(const CurrentField &field, const Region &region, unsig
         if (std::isfinite(b.uMin) && std::isfinite(b.uMax) && std::isfinite(b.vMin) && std::isfinite(b.vMax))
             box = {b.uMin - m, b.uMax + m, b.vMin - m, b.vMax + m};
     }
+    else
+    {
+        VelocityBox b;
+        if (field.velocityBounds(region, b.uMin, b.uMax, b.vMin, b.vMax))
+            box = b;  // the field's own local bounds (a gridded field's node extremes)
+    }
     box.uMin = std::max(box.uMin, -M);
     box.vMin = std::max(box.vMin, -M);
     box.uMax = std::min(box.uMax, M);
@@ -406,6 +412,11 @@ double LatticeHeuristic::edgeLowerBound(Lattice::VertexId u, Lattice::VertexId v
 
 bool LatticeHeuristic::hasLocalBounds(const CurrentField &field)
 {
+    return dynamic_cast<const MeanderingJet *>(&field) != nullptr || field.hasVelocityBounds();
+}
+
+bool LatticeHeuristic::hasSlicedBounds(const CurrentField &field)
+{
     return dynamic_cast<const MeanderingJet *>(&field) != nullptr;
 }
 
@@ -518,7 +529,7 @@ void LatticeHeuristic::refineWindows(unsigned rounds, const std::function<bool(L
             }
         buildTable();
     }
-    labels_.clear();
+    labels_.reset(lat_, Label{});
     queue_ = {};
     settled_ = 0;
 }
@@ -526,13 +537,13 @@ void LatticeHeuristic::refineWindows(unsigned rounds, const std::function<bool(L
 void LatticeHeuristic::reset(std::function<bool(Lattice::VertexId)> inWater)
 {
     inWater_ = std::move(inWater);
-    labels_.clear();
+    labels_.reset(lat_, Label{});
     queue_ = {};
     settled_ = 0;
     const Lattice::VertexId g = lat_.goal();
     if (g == Lattice::kNone)
         return;
-    labels_[g] = {0.0, false};
+    labels_.ref(g) = {0.0, false};
     queue_.push({0.0, g});
 }
 
@@ -541,15 +552,15 @@ double LatticeHeuristic::operator()(Lattice::VertexId v)
     if (v == lat_.startExtra() && v != lat_.goal())
         return 0.0;
     {
-        const auto it = labels_.find(v);
-        if (it != labels_.end() && it->second.settled)
-            return it->second.d;
+        const Label &l = labels_.get(v);
+        if (l.settled)
+            return l.d;
     }
     while (!queue_.empty())
     {
         const QEntry e = queue_.top();
         queue_.pop();
-        Label &lab = labels_[e.v];
+        Label &lab = labels_.ref(e.v);
         if (lab.settled || e.d > lab.d)
             continue;
         lab.settled = true;
@@ -560,17 +571,15 @@ double LatticeHeuristic::operator()(Lattice::VertexId v)
             if (!std::isfinite(w))
                 return;
             const double nd = e.d + w;
-            auto [it, inserted] = labels_.try_emplace(u, Label{nd, false});
-            if (!inserted)
+            Label &lu = labels_.ref(u);
+            if (lu.settled || !(nd < lu.d))
+                return;
+            const bool first = lu.d == kInf;
+            lu.d = nd;
+            if (first && inWater_ && !inWater_(u))
             {
-                if (it->second.settled || !(nd < it->second.d))
-                    return;
-                it->second.d = nd;
-            }
-            if (inWater_ && !inWater_(u))
-            {
-                it->second.d = kInf;  // land: never enters the search
-                it->second.settled = true;
+                lu.d = kInf;  // land: never enters the search
+                lu.settled = true;
                 return;
             }
             queue_.push({nd, u});

@@ -125,7 +125,15 @@ std::optional<double> TveSearch::calcOptimalCourse(double px, double py, double 
 TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
                          const std::function<bool()> &terminate)
 {
-    TveResult r = runPhases(sx, sy, t0, gx, gy, options, terminate);
+    const bool coarseToFine =
+        std::isnan(options.deadline) &&
+        (options.coarseFactor > 1 ||
+         (options.coarseFactor == 0 && lattice_.numGridVertices() > (std::size_t{1} << 19)));
+    auto search = [&] {
+        return coarseToFine ? runCoarseToFine(sx, sy, t0, gx, gy, options, terminate)
+                            : runPhases(sx, sy, t0, gx, gy, options, terminate);
+    };
+    TveResult r = search();
     const bool window = std::isfinite(ctx_->arriveNotBefore) || std::isfinite(ctx_->arriveNotAfter);
     if (r.outcome != TveOutcome::Exhausted || !window || !options.waiting || !options.goalWindowFallback)
         return r;
@@ -139,12 +147,157 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
         }
     } scope{*this};
     ignoreGoalWindow_ = true;
-    TveResult f = runPhases(sx, sy, t0, gx, gy, options, terminate);
+    TveResult f = search();
     f.costFunctionCalls += r.costFunctionCalls;
     f.currentModelCalls += r.currentModelCalls;
     f.expansions += r.expansions;
     f.goalWindowMissed = f.outcome == TveOutcome::Exact;
     return f;
+}
+
+namespace
+{
+/// Adds the counters of r to into (the searches of one run).
+void addCounts(TveResult &into, const TveResult &r)
+{
+    into.costFunctionCalls += r.costFunctionCalls;
+    into.currentModelCalls += r.currentModelCalls;
+    into.expansions += r.expansions;
+    into.prunedEdges += r.prunedEdges;
+    into.reopenedEdges += r.reopenedEdges;
+    into.boundSkips += r.boundSkips;
+    into.heuristicSettled += r.heuristicSettled;
+}
+}  // namespace
+
+TveResult TveSearch::runCoarseToFine(double sx, double sy, double t0, double gx, double gy,
+                                     const TveOptions &options, const std::function<bool()> &terminate)
+{
+    const long f = options.coarseFactor > 1 ? static_cast<long>(options.coarseFactor) : 8;
+    TveOptions single = options;
+    single.coarseFactor = 1;
+
+    // 1. The coarse search (same region, spacing f g; kept between runs).
+    const double gc = lattice_.gridSize() * static_cast<double>(f);
+    if (!coarse_ || coarse_->lattice_.gridSize() != gc || coarse_->lattice_.sectors() != lattice_.sectors())
+        coarse_ = std::make_unique<TveSearch>(ctx_, gc, lattice_.sectors());
+    coarse_->ignoreGoalWindow_ = ignoreGoalWindow_;
+    const TveResult coarse = coarse_->runPhases(sx, sy, t0, gx, gy, single, terminate);
+    if (coarse.outcome == TveOutcome::Terminated)
+        return coarse;
+    if (coarse.outcome != TveOutcome::Exact)
+    {
+        // no coarse path (a passage narrower than the coarse lattice resolves, or none at all): the full search
+        TveResult r = runPhases(sx, sy, t0, gx, gy, single, terminate);
+        addCounts(r, coarse);
+        return r;
+    }
+
+    // 2. Chebyshev distance, in blocks of f x f cells, of every block from the blocks the coarse path crosses
+    // (multi-source breadth-first search with 8 neighbours).
+    const long NX = (lattice_.nx() + f - 1) / f, NY = (lattice_.ny() + f - 1) / f;
+    const double bs = lattice_.gridSize() * static_cast<double>(f);
+    std::vector<int> ring(static_cast<std::size_t>(NX * NY), -1);
+    std::vector<long> frontier;
+    auto mark = [&](double x, double y) {
+        const long I = std::clamp(static_cast<long>(std::floor((x - lattice_.xMin()) / bs)), 0L, NX - 1);
+        const long J = std::clamp(static_cast<long>(std::floor((y - lattice_.yMin()) / bs)), 0L, NY - 1);
+        const long b = I + J * NX;
+        if (ring[static_cast<std::size_t>(b)] < 0)
+        {
+            ring[static_cast<std::size_t>(b)] = 0;
+            frontier.push_back(b);
+        }
+    };
+    for (std::size_t k = 0; k < coarse.waypoints.size(); ++k)
+    {
+        const TimedWaypoint &a = coarse.waypoints[k];
+        mark(a.x, a.y);
+        if (k + 1 == coarse.waypoints.size())
+            break;
+        const TimedWaypoint &b = coarse.waypoints[k + 1];
+        const int n = static_cast<int>(std::ceil(4.0 * std::hypot(b.x - a.x, b.y - a.y) / bs));
+        for (int i = 1; i < n; ++i)
+            mark(a.x + (b.x - a.x) * i / n, a.y + (b.y - a.y) * i / n);
+    }
+    int maxRing = 0;
+    for (std::size_t head = 0; head < frontier.size(); ++head)
+    {
+        const long b = frontier[head], I = b % NX, J = b / NX;
+        const int d = ring[static_cast<std::size_t>(b)];
+        maxRing = std::max(maxRing, d);
+        for (long dj = -1; dj <= 1; ++dj)
+            for (long di = -1; di <= 1; ++di)
+            {
+                const long a = I + di, c = J + dj;
+                if (a < 0 || c < 0 || a >= NX || c >= NY || ring[static_cast<std::size_t>(a + c * NX)] >= 0)
+                    continue;
+                ring[static_cast<std::size_t>(a + c * NX)] = d + 1;
+                frontier.push_back(a + c * NX);
+            }
+    }
+
+    // 3. Fine searches inside the corridor, doubled while the fine path enters its outermost ring (or none lies
+    // inside). Travel times are shared between the rounds (same edge, same departure).
+    struct Scope
+    {
+        TveSearch &s;
+        bool ownsCache;
+        ~Scope()
+        {
+            s.corridor_.clear();
+            if (ownsCache)
+                s.edgeCache_ = nullptr;
+        }
+    } scope{*this, edgeCache_ == nullptr};
+    std::unordered_map<EdgeKey, double, EdgeKeyHash> cache;
+    if (scope.ownsCache)
+        edgeCache_ = &cache;
+    corridorFactor_ = f;
+    corridorNX_ = NX;
+    TveResult total = coarse;
+    total.waypoints.clear();
+    unsigned rounds = 0;
+    for (int w = std::max(1, static_cast<int>(options.corridorBlocks));; w = 2 * w)
+    {
+        const bool whole = w >= maxRing;
+        corridor_.clear();
+        if (!whole)
+        {
+            corridor_.resize(ring.size());
+            for (std::size_t b = 0; b < ring.size(); ++b)
+                corridor_[b] = ring[b] <= w ? 1 : 0;
+        }
+        TveResult r = runPhases(sx, sy, t0, gx, gy, single, terminate);
+        addCounts(total, r);
+        r.costFunctionCalls = total.costFunctionCalls;
+        r.currentModelCalls = total.currentModelCalls;
+        r.expansions = total.expansions;
+        r.prunedEdges = total.prunedEdges;
+        r.reopenedEdges = total.reopenedEdges;
+        r.boundSkips = total.boundSkips;
+        r.heuristicSettled = total.heuristicSettled;
+        r.corridorRounds = ++rounds;
+        r.corridorBlocks = static_cast<unsigned>(w);
+        if (whole || r.outcome == TveOutcome::Terminated || r.outcome == TveOutcome::InvalidStart ||
+            r.outcome == TveOutcome::InvalidGoal)
+            return r;
+        if (r.outcome == TveOutcome::Exact)
+        {
+            bool touches = false;
+            for (const TimedWaypoint &p : r.waypoints)
+            {
+                const long i = std::lround((p.x - lattice_.xMin()) / lattice_.gridSize());
+                const long j = std::lround((p.y - lattice_.yMin()) / lattice_.gridSize());
+                if (i < 0 || j < 0 || i >= lattice_.nx() || j >= lattice_.ny())
+                    continue;
+                if (ring[static_cast<std::size_t>(i / f + (j / f) * NX)] >= w)
+                    touches = true;
+            }
+            if (!touches)
+                return r;
+        }
+    }
 }
 
 TveResult TveSearch::runPhases(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
@@ -159,21 +312,16 @@ TveResult TveSearch::runPhases(double sx, double sy, double t0, double gx, doubl
     struct Scope
     {
         TveSearch &s;
+        bool ownsCache;
         ~Scope()
         {
-            s.edgeCache_ = nullptr;
+            if (ownsCache)
+                s.edgeCache_ = nullptr;
         }
-    } scope{*this};
-    edgeCache_ = &cache;
-    auto add = [](TveResult &into, const TveResult &r) {
-        into.costFunctionCalls += r.costFunctionCalls;
-        into.currentModelCalls += r.currentModelCalls;
-        into.expansions += r.expansions;
-        into.prunedEdges += r.prunedEdges;
-        into.reopenedEdges += r.reopenedEdges;
-        into.boundSkips += r.boundSkips;
-        into.heuristicSettled += r.heuristicSettled;
-    };
+    } scope{*this, edgeCache_ == nullptr};
+    if (scope.ownsCache)
+        edgeCache_ = &cache;  // (coarse-to-fine shares its own between the corridor rounds)
+    const auto add = addCounts;
     TveOptions greedy = options;
     greedy.greedyDeadline = false;
     greedy.zermelo = true;
@@ -220,7 +368,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
     };
 
     // Clear the previous run's labels (only the vertices it touched).
-    labels_.clear();  // labels only of the vertices reached: memory grows with the search, not the lattice
+    labels_.reset(lattice_, Label{});  // labels only of the pages reached: memory grows with the search
     reached_.clear();
 
     // Start and goal.
@@ -278,19 +426,23 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
     }
 
     // Land cache: 0 unknown, 1 water, 2 land.
-    std::unordered_map<Lattice::VertexId, bool> wet;  // only the vertices looked at
+    VertexPages<unsigned char> wet;  // only the pages looked at
+    wet.reset(lattice_, 0);
     auto inWater = [&](Lattice::VertexId v) {
-        const auto [it, inserted] = wet.try_emplace(v, false);
-        if (inserted)
-            it->second = field.inWater(lattice_.x(v), lattice_.y(v), z);
-        return it->second;
+        if (!inCorridor(v))
+            return false;  // outside the corridor of coarse-to-fine (TveOptions::coarseFactor)
+        unsigned char &w = wet.ref(v);
+        if (w == 0)
+            w = field.inWater(lattice_.x(v), lattice_.y(v), z) ? 1 : 2;
+        return w == 1;
     };
 
     // Arrival deadline of this search (TveOptions::deadline): arrivals after it are dropped.
     const double tEnd = std::isnan(options.deadline) ? ctx.region.tMax : std::min(ctx.region.tMax, options.deadline);
 
     // Lower bounds of edges and of the remaining time (TveOptions::tightBounds, LatticeHeuristic).
-    if (options.tightBounds && (options.heuristic || options.zermelo))
+    // (without local bounds the table would hold [EichhornRAS] Eq. 1's bound everywhere: not built)
+    if (options.tightBounds && (options.heuristic || options.zermelo) && LatticeHeuristic::hasLocalBounds(field))
     {
         // (refineWindows runs two static searches over the whole lattice: only on lattices up to 2^18 vertices)
         const bool refine = !std::isnan(options.deadline) && std::isfinite(tEnd) && options.windowRounds > 0 &&
@@ -298,7 +450,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
         const unsigned f =
             options.boundCellFactor ? options.boundCellFactor : LatticeHeuristic::autoCellFactor(lattice_);
         const double origin = 0.0;  // slices [k, k + 1] of absolute time: shared by searches of any departure
-        if (LatticeHeuristic::hasLocalBounds(field) &&
+        if (LatticeHeuristic::hasSlicedBounds(field) &&
             (!boxCache_ || !boxCache_->matches(&field, lattice_, z, f, origin, 1.0)))
             boxCache_ = CellBoxCache::shared(ctx.field, lattice_, z, f, origin, 1.0);
         if (refine || boundsRefined_ || !bounds_ || bounds_->tBegin() != t0 || bounds_->tEnd() != tEnd ||
@@ -327,7 +479,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
         throw Error("TveSearch: the A* heuristic needs a finite bound of the current speed over the region");
 
     std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> Q;
-    labels_[s] = {t0, Lattice::kNone};
+    labels_.ref(s) = {t0, Lattice::kNone};
     reached_.push_back(s);
     Q.push({t0 + h(s), t0, s});
     std::vector<Lattice::VertexId> prunedAt;  // vertices whose expansion pruned edges (for the fallback)
@@ -373,7 +525,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
             return it->second;
         };
         auto label = [&](double dv, double dep) {
-            Label &lv = labels_[v];
+            Label &lv = labels_.ref(v);
             if (lv.d == kInf)
                 reached_.push_back(v);
             lv.d = dv;
@@ -639,9 +791,9 @@ std::vector<TimedWaypoint> TveSearch::pathTo(Lattice::VertexId v) const
     for (Lattice::VertexId w = v; w != Lattice::kNone; w = parent(w))
     {
         out.push_back({lattice_.x(w), lattice_.y(w), dist(w)});
-        const auto it = labels_.find(w);
-        if (it != labels_.end() && it->second.pi != Lattice::kNone && it->second.dep > dist(it->second.pi))
-            out.push_back({lattice_.x(it->second.pi), lattice_.y(it->second.pi), it->second.dep});  // a hold
+        const Label &lw = labels_.get(w);
+        if (lw.pi != Lattice::kNone && lw.dep > dist(lw.pi))
+            out.push_back({lattice_.x(lw.pi), lattice_.y(lw.pi), lw.dep});  // a hold
         if (out.size() > 2 * reached_.size() + 2)
             throw Error("TveSearch: predecessor cycle (internal error)");
     }

@@ -5,3 +5,4 @@ glider_add_test(test_search_heuristic ${CMAKE_CURRENT_LIST_DIR}/TestSearchHeuris
 glider_add_test(test_wavefront ${CMAKE_CURRENT_LIST_DIR}/TestWavefront.cpp)
 # holding in the lattice search: waiting edges at time-windowed zones, goal windows (issue 12)
 glider_add_test(test_lattice_waiting ${CMAKE_CURRENT_LIST_DIR}/TestWaiting.cpp)
+glider_add_test(test_coarse_to_fine ${CMAKE_CURRENT_LIST_DIR}/TestCoarseToFine.cpp)

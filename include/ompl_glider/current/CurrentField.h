@@ -68,6 +68,21 @@ public:
     /// @brief An upper bound of |c| over the region and time window (the A*TVE heuristic, [EichhornRAS] Eq. 1).
     virtual double maxSpeed(const Region &region) const = 0;
 
+    /// @brief Local bounds of the current components over a region of space and time, where the field can give
+    /// them cheaply without sampling itself (no CMC): true with every velocity() value over the region (x, y,
+    /// the time window, any depth) inside [uMin, uMax] x [vMin, vMax]; false = no local bound (the caller falls
+    /// back to maxSpeed()). Used by the lattice search's lower bounds (LatticeHeuristic, issue 15).
+    virtual bool velocityBounds(const Region & /*region*/, double & /*uMin*/, double & /*uMax*/, double & /*vMin*/,
+                                double & /*vMax*/) const
+    {
+        return false;
+    }
+    /// @brief True when velocityBounds() gives local bounds (it would return true).
+    virtual bool hasVelocityBounds() const
+    {
+        return false;
+    }
+
     /// @brief Stream function psi with u = -dpsi/dy, v = dpsi/dx, where the field has one.
     virtual std::optional<double> streamFunction(double /*x*/, double /*y*/, double /*z*/, double /*t*/) const
     {

@@ -93,6 +93,13 @@ public:
     GriddedCurrentField(GriddedData data, GriddedFieldOptions options = {});
 
     double maxSpeed(const Region &region) const override;
+    /// @brief Node minimum and maximum of u and v over the nodes whose interpolation stencils cover the region
+    /// (x, y clamped to the grid, the forecast records bracketing the time window, all loaded depth layers): exact
+    /// bounds of velocity() when every scheme is a convex combination of nodes (rectilinear grid; nearest or
+    /// bilinear horizontally; nearest or linear in depth and time). False for curvilinear grids and cubic or Akima
+    /// schemes (their overshoot would need the margin of maxSpeed()).
+    bool velocityBounds(const Region &region, double &uMin, double &uMax, double &vMin, double &vMax) const override;
+    bool hasVelocityBounds() const override;
     bool inWater(double x, double y, double z) const override;
     double timeBegin() const override;
     double timeEnd() const override;

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <queue>
@@ -14,6 +15,7 @@
 
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/planners/Lattice.h"
+#include "ompl_glider/planners/VertexPages.h"
 
 namespace ompl_glider
 {
@@ -28,7 +30,9 @@ struct VelocityBox
 /// For a MeanderingJet: an interval-arithmetic evaluation of the jet's closed form ([EichhornRAS] Eq. 7-9) over the
 /// region, split into @p timeSlices equal sub-windows and 2 x 2 sub-boxes (each evaluation encloses every value the
 /// formula takes on its box, so the union is a true bound); it costs no current-model call (the model is not sampled).
-/// Every other field: the box [-M, M]^2 with M = field.maxSpeed(region), the field's own bound (no gain, but true).
+/// A field with CurrentField::velocityBounds() (a gridded forecast with linear schemes): its node extremes over the
+/// region. Every other field: the box [-M, M]^2 with M = field.maxSpeed(region), the field's own bound (no gain, but
+/// true).
 /// The components are also clamped to [-M, M].
 VelocityBox currentBounds(const CurrentField &field, const Region &region, unsigned timeSlices = 0);
 
@@ -140,9 +144,13 @@ public:
     /// @brief Lower bound of the travel time of the lattice edge u -> v (any two vertices joined by an edge).
     double edgeLowerBound(Lattice::VertexId u, Lattice::VertexId v) const;
 
-    /// @brief True when currentBounds() has local bounds for this field (a MeanderingJet); other fields get the
-    /// global box everywhere.
+    /// @brief True when currentBounds() has local bounds for this field (a MeanderingJet, or a field whose
+    /// CurrentField::hasVelocityBounds() is true); other fields get the global box everywhere.
     static bool hasLocalBounds(const CurrentField &field);
+    /// @brief True when the local bounds are worth keeping per unit time slice (CellBoxCache): the jet's interval
+    /// evaluation narrows with the slice; a gridded field's node bounds change only at its forecast records and
+    /// are computed per window directly.
+    static bool hasSlicedBounds(const CurrentField &field);
     /// @brief True when some cell's box is narrower than the field's global bound (else the bounds are those of
     /// [EichhornRAS] Eq. 1 and the backward search would only cost time).
     bool informative() const
@@ -220,8 +228,8 @@ private:
 
     struct Label
     {
-        double d;
-        bool settled;
+        double d{std::numeric_limits<double>::infinity()};  ///< +inf: not reached
+        bool settled{false};
     };
     struct QEntry
     {
@@ -232,7 +240,7 @@ private:
             return d > o.d || (d == o.d && v > o.v);
         }
     };
-    std::unordered_map<Lattice::VertexId, Label> labels_;
+    VertexPages<Label> labels_;  // pages of vertices: memory grows with the area settled
     std::priority_queue<QEntry, std::vector<QEntry>, std::greater<QEntry>> queue_;
     std::size_t settled_{0};
 };

@@ -16,6 +16,7 @@
 #include "ompl_glider/ompl/GliderContext.h"
 #include "ompl_glider/planners/Lattice.h"
 #include "ompl_glider/planners/SearchHeuristic.h"
+#include "ompl_glider/planners/VertexPages.h"
 
 namespace ompl_glider
 {
@@ -122,6 +123,18 @@ struct TveOptions
     /// TveResult::goalWindowMissed set, so that the caller can time the arrival elsewhere on the path or report why
     /// (planRoute() does both). Off: such a search exhausts.
     bool goalWindowFallback{true};
+    /// Coarse-to-fine ([EichhornRAS] Sec. 2.2, the "pipe" around a first path; an addition to its Table 2): the
+    /// search first runs on a lattice of spacing coarseFactor x gridSize over the same region, then on this
+    /// lattice restricted to a corridor of blocks (coarseFactor x coarseFactor cells each) within corridorBlocks
+    /// blocks (Chebyshev distance) of the blocks the coarse path crosses; while the fine path enters the outermost
+    /// ring of blocks, or no path lies inside, the corridor is doubled and the fine search repeated (the corridor
+    /// reaching the whole lattice is the full search). The result equals the full search's whenever the full
+    /// search's optimum lies inside the final corridor; no bound certifies that (a path far outside the corridor,
+    /// e.g. around an island the other way, that is faster is missed; benchmarks/search/README.md measures it).
+    /// 0 = automatic: 8 on lattices of more than 2^19 grid vertices, else off; 1 = off.
+    unsigned coarseFactor{0};
+    /// First half-width of the corridor, in blocks (>= 1).
+    unsigned corridorBlocks{2};
     /// Expansions between two calls of the termination callback.
     unsigned checkEvery{8};
 };
@@ -159,6 +172,8 @@ struct TveResult
     std::uint64_t deadEnds{0};           ///< expansions whose Zermelo cone was a dead end (see deadEndFallback)
     std::uint64_t boundSkips{0};         ///< edges whose CFC the lower bounds saved (TveOptions::tightBounds)
     std::uint64_t heuristicSettled{0};   ///< vertices settled by LatticeHeuristic's backward search
+    unsigned corridorRounds{0};          ///< fine searches of coarse-to-fine (TveOptions::coarseFactor), 0 = not used
+    unsigned corridorBlocks{0};          ///< half-width of the final corridor in blocks (0 = not used)
     bool fallbackUsed{false};            ///< the pruned search exhausted and continued without pruning
     /// No path meets the goal window: the waypoints are the earliest arrival ignoring it (TveOptions::goalWindowFallback)
     bool goalWindowMissed{false};
@@ -222,6 +237,8 @@ public:
 
 private:
     std::vector<TimedWaypoint> pathTo(Lattice::VertexId v) const;
+    TveResult runCoarseToFine(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
+                              const std::function<bool()> &terminate);
     TveResult runPhases(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
                         const std::function<bool()> &terminate);
     TveResult runCore(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
@@ -266,20 +283,30 @@ private:
     bool ignoreGoalWindow_{false};  ///< the fallback run of run() (TveOptions::goalWindowFallback)
     /// Hold at the goal after the arrival d[goal] up to this time (the goal window opens then); -inf: none
     double goalHoldUntil_{-std::numeric_limits<double>::infinity()};
-    std::unordered_map<Lattice::VertexId, Label> labels_;
+    VertexPages<Label> labels_;  // pages of vertices: memory grows with the area the search visits
     double dist(Lattice::VertexId v) const
     {
-        const auto it = labels_.find(v);
-        return it == labels_.end() ? std::numeric_limits<double>::infinity() : it->second.d;
+        return labels_.get(v).d;
     }
     Lattice::VertexId parent(Lattice::VertexId v) const
     {
-        const auto it = labels_.find(v);
-        return it == labels_.end() ? Lattice::kNone : it->second.pi;
+        return labels_.get(v).pi;
     }
     std::vector<Lattice::VertexId> reached_;
     std::unique_ptr<LatticeHeuristic> bounds_;  ///< kept while the time window and cell factor stay the same
     bool boundsRefined_{false};                 ///< bounds_ was narrowed to one run's corridor
     std::shared_ptr<CellBoxCache> boxCache_;    ///< velocity boxes per cell and unit time slice (CellBoxCache::shared)
+    /// Coarse-to-fine (TveOptions::coarseFactor): the coarse search, and the corridor of the fine one (per block of
+    /// corridorFactor_ x corridorFactor_ cells, 1 = inside; empty = no corridor)
+    std::unique_ptr<TveSearch> coarse_;
+    std::vector<unsigned char> corridor_;
+    long corridorFactor_{1}, corridorNX_{0};
+    bool inCorridor(Lattice::VertexId v) const
+    {
+        if (corridor_.empty() || v >= lattice_.numGridVertices())
+            return true;
+        const long I = lattice_.columnOf(v) / corridorFactor_, J = lattice_.rowOf(v) / corridorFactor_;
+        return corridor_[static_cast<std::size_t>(I + J * corridorNX_)] != 0;
+    }
 };
 }  // namespace ompl_glider
