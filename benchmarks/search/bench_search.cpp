@@ -51,7 +51,9 @@ std::vector<Config> makeConfigs()
     astarEq1.zermelo = false;
     astarEq1.tightBounds = false;
     c.push_back({"A*TVE, Eq. 1", astarEq1});
-    TveOptions before;  // the default before issue 15: Eq. 1 bounds, certify_tolerance 0.1
+    astarEq1.coarseFactor = 1;
+    TveOptions before;  // the default before issue 15: Eq. 1 bounds, certify_tolerance 0.1, full search
+    before.coarseFactor = 1;
     before.tightBounds = false;
     before.certifyTolerance = 0.1;
     c.push_back({"ZA*TVE, before (Eq. 1, tol 0.1)", before});
@@ -60,6 +62,7 @@ std::vector<Config> makeConfigs()
     c.push_back({"ZA*TVE, Eq. 1, tol 0", beforeExact});
     TveOptions astarTight;
     astarTight.zermelo = false;
+    astarTight.coarseFactor = 1;
     c.push_back({"A*TVE, tight bounds", astarTight});
     TveOptions def;
     if (const char *e = std::getenv("BENCH_ROUNDS"))
@@ -73,6 +76,9 @@ std::vector<Config> makeConfigs()
     if (const char *e = std::getenv("BENCH_CB"))
         def.corridorBlocks = static_cast<unsigned>(std::atoi(e));
     c.push_back({"ZA*TVE, default (tight, tol 0)", def});
+    TveOptions noCoarse = def;
+    noCoarse.coarseFactor = 1;
+    c.push_back({"ZA*TVE, default without coarse-to-fine", noCoarse});
     if (std::getenv("BENCH_ORACLE"))
     {
         c.push_back({"oracle: ZA*TVE, deadline = TVE arrival", TveOptions{}});
@@ -89,6 +95,7 @@ struct Run
     double time{0.0};
     std::uint64_t cfc{0}, cmc{0}, expanded{0};
     double wall{0.0};  // seconds
+    unsigned rounds{0}, blocks{0};  // coarse-to-fine: fine searches and the final corridor (0: full search)
 };
 
 Run runOnce(TveSearch &search, double sx, double sy, double t0, double gx, double gy, const TveOptions &o)
@@ -103,8 +110,8 @@ Run runOnce(TveSearch &search, double sx, double sy, double t0, double gx, doubl
     out.cmc = r.currentModelCalls;
     out.expanded = r.expansions;
     out.wall = std::chrono::duration<double>(b - a).count();
-    if (std::getenv("BENCH_VERBOSE"))
-        std::printf("  [corridor rounds %u, blocks %u]\n", r.corridorRounds, r.corridorBlocks);
+    out.rounds = r.corridorRounds;
+    out.blocks = r.corridorBlocks;
     return out;
 }
 
@@ -370,6 +377,9 @@ int main(int argc, char **argv)
             if (c == 0)
                 tve = r;
             printRow("gridded 10^6", configs[c].name, r, tve);
+            if (r.rounds > 0)
+                std::printf("|   | coarse-to-fine: %u fine search(es), corridor %u blocks | | | | | | |\n", r.rounds,
+                            r.blocks);
             std::printf("|   | peak RSS so far %.0f MB | | | | | | |\n", peakRssKb() / 1024.0);
         }
     }

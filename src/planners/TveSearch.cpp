@@ -128,7 +128,7 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
     const bool coarseToFine =
         std::isnan(options.deadline) &&
         (options.coarseFactor > 1 ||
-         (options.coarseFactor == 0 && lattice_.numGridVertices() > (std::size_t{1} << 19)));
+         (options.coarseFactor == 0 && options.heuristic && lattice_.numGridVertices() > (std::size_t{1} << 19)));
     auto search = [&] {
         return coarseToFine ? runCoarseToFine(sx, sy, t0, gx, gy, options, terminate)
                             : runPhases(sx, sy, t0, gx, gy, options, terminate);

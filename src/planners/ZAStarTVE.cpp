@@ -72,6 +72,10 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
     declareParam<double>("certify_tolerance", this, &ZAStarTVE::setCertifyTolerance,
                          &ZAStarTVE::getCertifyTolerance, "-1.:0.05:1.");
     declareParam<bool>("tight_bounds", this, &ZAStarTVE::setTightBounds, &ZAStarTVE::getTightBounds, "0,1");
+    declareParam<unsigned>("coarse_factor", this, &ZAStarTVE::setCoarseFactor, &ZAStarTVE::getCoarseFactor,
+                           "0:1:64");
+    declareParam<unsigned>("corridor_blocks", this, &ZAStarTVE::setCorridorBlocks, &ZAStarTVE::getCorridorBlocks,
+                           "1:1:1000");
     declareParam<unsigned>("sectors", this, &ZAStarTVE::setSectors, &ZAStarTVE::getSectors, "1:1:5");
     declareParam<double>("grid_size", this, &ZAStarTVE::setGridSize, &ZAStarTVE::getGridSize, "0.:0.01:1000.");
     declareParam<unsigned>("zermelo_steps", this, &ZAStarTVE::setZermeloSteps, &ZAStarTVE::getZermeloSteps,
@@ -144,6 +148,21 @@ void ZAStarTVE::setZermeloSteps(unsigned n)
     if (n < 1 || n > 10000)
         throw Error("ZAStarTVE: zermelo_steps must be an integer in 1..10000 (got " + std::to_string(n) + ")");
     options_.zermeloSteps = n;
+}
+
+void ZAStarTVE::setCoarseFactor(unsigned f)
+{
+    if (f > 64)
+        throw Error("ZAStarTVE: coarse_factor must be an integer in 0..64 (0 automatic, 1 off; got " +
+                    std::to_string(f) + ")");
+    options_.coarseFactor = f;
+}
+
+void ZAStarTVE::setCorridorBlocks(unsigned b)
+{
+    if (b < 1 || b > 1000)
+        throw Error("ZAStarTVE: corridor_blocks must be an integer in 1..1000 (got " + std::to_string(b) + ")");
+    options_.corridorBlocks = b;
 }
 
 void ZAStarTVE::setRefinerMaxEvaluations(unsigned n)

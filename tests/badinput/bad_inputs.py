@@ -143,6 +143,10 @@ yaml_case("planner-grid-tiny", mission("planner: {name: zastartve, grid_size: 1e
 yaml_case("planner-time-limit-huge", mission("planner: {name: zastartve, time_limit: 1e10}"), "planner.time_limit")
 yaml_case("planner-zermelo-steps-huge", mission("planner: {name: zastartve, parameters: {zermelo_steps: 1e12}}"),
           "planner.parameters.zermelo_steps")
+yaml_case("planner-coarse-factor-huge", mission("planner: {name: zastartve, parameters: {coarse_factor: 100}}"),
+          "coarse_factor must be an integer in 0..64")
+yaml_case("planner-corridor-blocks-zero", mission("planner: {name: zastartve, parameters: {corridor_blocks: 0}}"),
+          "corridor_blocks must be an integer in 1..1000")
 yaml_case("wavefront-time-step-negative",
           mission("planner: {name: Wavefront, grid_size: 0.5, parameters: {time_step: -1}}"),
           "planner.parameters.time_step")

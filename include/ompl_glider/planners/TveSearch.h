@@ -131,7 +131,8 @@ struct TveOptions
     /// reaching the whole lattice is the full search). The result equals the full search's whenever the full
     /// search's optimum lies inside the final corridor; no bound certifies that (a path far outside the corridor,
     /// e.g. around an island the other way, that is faster is missed; benchmarks/search/README.md measures it).
-    /// 0 = automatic: 8 on lattices of more than 2^19 grid vertices, else off; 1 = off.
+    /// 0 = automatic: 8 on lattices of more than 2^19 grid vertices with the A* heuristic on (TVE, the plain
+    /// reference search, stays a full search), else off; 1 = off.
     unsigned coarseFactor{0};
     /// First half-width of the corridor, in blocks (>= 1).
     unsigned corridorBlocks{2};

@@ -123,6 +123,19 @@ public:
     {
         return options_.tightBounds;
     }
+    /// @brief Coarse-to-fine search (parameter "coarse_factor", TveOptions::coarseFactor): spacing factor of the
+    /// coarse lattice (0 = automatic: 8 above 2^19 lattice vertices; 1 = off).
+    void setCoarseFactor(unsigned f);
+    unsigned getCoarseFactor() const
+    {
+        return options_.coarseFactor;
+    }
+    /// @brief First half-width of the coarse-to-fine corridor in blocks (parameter "corridor_blocks", >= 1).
+    void setCorridorBlocks(unsigned b);
+    unsigned getCorridorBlocks() const
+    {
+        return options_.corridorBlocks;
+    }
     /// @brief Certification tolerance of the pruned search (param "certify_tolerance", default 0, the lattice optimum as
     /// TVE; < 0 = off, the paper's rule). See TveOptions::certifyTolerance.
     void setCertifyTolerance(double tol);
