@@ -49,9 +49,9 @@ std::vector<Config> makeConfigs()
     c.push_back({"TVE", tve});
     TveOptions astarEq1;
     astarEq1.zermelo = false;
+    astarEq1.coarseFactor = 1;
     astarEq1.tightBounds = false;
     c.push_back({"A*TVE, Eq. 1", astarEq1});
-    astarEq1.coarseFactor = 1;
     TveOptions before;  // the default before issue 15: Eq. 1 bounds, certify_tolerance 0.1, full search
     before.coarseFactor = 1;
     before.tightBounds = false;
@@ -376,7 +376,9 @@ int main(int argc, char **argv)
             const Run r = runOnce(search, p.startX, p.startY, 0.0, p.goalX, p.goalY, configs[c].options);
             if (c == 0)
                 tve = r;
-            printRow("gridded 10^6", configs[c].name, r, tve);
+            char label[64];
+            std::snprintf(label, sizeof label, "gridded %.2fe6", 1e-6 * double(search.lattice().numGridVertices()));
+            printRow(label, configs[c].name, r, tve);
             if (r.rounds > 0)
                 std::printf("|   | coarse-to-fine: %u fine search(es), corridor %u blocks | | | | | | |\n", r.rounds,
                             r.blocks);
