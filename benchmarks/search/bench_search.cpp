@@ -176,6 +176,11 @@ constexpr double kForecastScale = 0.4;
 
 /// Synthetic forecast: two meandering jets (the jet's closed form, one reversed) across the box, drifting east, on a
 /// 201 x 161 node grid (x in [0, 50], y in [-20, 20]), 11 forecast times 0, 10, ..., 100; calm water between them.
+bool onIsland(double x, double y)
+{
+    return std::hypot(x - 20.0, y) < 3.0 || std::hypot(x - 31.0, y - 6.0) < 2.0 || std::hypot(x - 12.0, y + 8.0) < 2.5;
+}
+
 std::shared_ptr<GriddedCurrentField> makeForecast()
 {
     GriddedData d;
@@ -199,6 +204,10 @@ std::shared_ptr<GriddedCurrentField> makeForecast()
                 d.u.push_back(static_cast<float>(kForecastScale * (a.u - b.u)));
                 d.v.push_back(static_cast<float>(kForecastScale * (a.v - b.v)));
             }
+    // three islands (land nodes, as a model's mask writes them): corridors must go around them
+    for (std::size_t j = 0; j < d.ny; ++j)
+        for (std::size_t i = 0; i < d.nx; ++i)
+            d.water.push_back(onIsland(d.x[i], d.y[j]) ? 0 : 1);
     GriddedFieldOptions o;
     o.name = "synthetic forecast";
     o.beyond = BeyondForecast::HoldLast;
@@ -213,6 +222,7 @@ int main(int argc, char **argv)
     bool perPair = false, gridded = true, griddedTve = false, jetProblems = true;
     std::string griddedOnly;  // --gridded-config NAME: only that configuration on the gridded problem
     double griddedGrid = 0.045;
+    int griddedPairs = 0;  // --gridded-pairs N: coarse-to-fine against the full search on N random water pairs
     for (int i = 1; i < argc; ++i)
     {
         const std::string a = argv[i];
@@ -230,10 +240,13 @@ int main(int argc, char **argv)
             griddedTve = true;
         else if (a == "--gridded-grid" && i + 1 < argc)
             griddedGrid = std::atof(argv[++i]);
+        else if (a == "--gridded-pairs" && i + 1 < argc)
+            griddedPairs = std::atoi(argv[++i]);
         else
         {
             std::fprintf(stderr,
-                         "usage: %s [--random-pairs N] [--per-pair] [--no-gridded] [--gridded-tve] [--gridded-grid G]\n",
+                         "usage: %s [--random-pairs N] [--per-pair] [--no-gridded] [--only-gridded] [--gridded-tve] "
+                         "[--gridded-grid G] [--gridded-config NAME] [--gridded-pairs N]\n",
                          argv[0]);
             return 2;
         }
@@ -384,6 +397,79 @@ int main(int argc, char **argv)
                             r.blocks);
             std::printf("|   | peak RSS so far %.0f MB | | | | | | |\n", peakRssKb() / 1024.0);
         }
+    }
+    if (gridded && griddedPairs > 0)
+    {
+        // coarse-to-fine (the default above 2^19 vertices) against the same search without it, on random pairs
+        auto field = makeForecast();
+        GliderProblem p;
+        p.field = field;
+        p.xMin = 0.0;
+        p.xMax = 50.0;
+        p.yMin = -20.0;
+        p.yMax = 20.0;
+        p.horizon = 200.0;
+        p.startX = p.startY = p.goalX = p.goalY = 1.0;
+        auto ctx = makeGliderContext(p);
+        TveSearch search(ctx, griddedGrid, 3);
+        TveOptions c2f, full;
+        full.coarseFactor = 1;
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<double> ux(0.5, 49.5), uy(-19.5, 19.5);
+        auto water = [&](double &x, double &y) {
+            do
+            {
+                x = ux(rng);
+                y = uy(rng);
+            } while (!field->inWater(x, y, 0.0));
+        };
+        int equal = 0, compared = 0, widened = 0, noPath = 0;
+        double worst = 0.0, wallC = 0.0, wallF = 0.0;
+        std::uint64_t cfcC = 0, cfcF = 0, cmcC = 0, cmcF = 0;
+        std::printf("\nCoarse-to-fine against the full search, %d random water pairs of the gridded forecast "
+                    "(%.2f million vertices):\n\n| pair | start | goal | full: CFC | wall [ms] | coarse-to-fine: CFC | "
+                    "wall [ms] | fine searches | corridor [blocks] | travel time | rel. deviation |\n"
+                    "|---|---|---|---|---|---|---|---|---|---|---|\n",
+                    griddedPairs, 1e-6 * double(search.lattice().numGridVertices()));
+        for (int k = 0; k < griddedPairs; ++k)
+        {
+            double sx, sy, gx, gy;
+            water(sx, sy);
+            water(gx, gy);
+            if (const char *only = std::getenv("BENCH_ONLY_PAIR"); only && std::atoi(only) != k + 1)
+                continue;
+            const Run a = runOnce(search, sx, sy, 0.0, gx, gy, full);
+            const Run b = runOnce(search, sx, sy, 0.0, gx, gy, c2f);
+            wallF += a.wall;
+            wallC += b.wall;
+            cfcF += a.cfc;
+            cfcC += b.cfc;
+            cmcF += a.cmc;
+            cmcC += b.cmc;
+            if (b.rounds > 1)
+                ++widened;
+            const double dev = relDev(b, a);
+            if (a.outcome != TveOutcome::Exact)
+                ++noPath;
+            else
+            {
+                ++compared;
+                worst = std::max(worst, dev);
+                if (dev <= 1e-9)
+                    ++equal;
+            }
+            std::printf("| %d | (%.2f, %.2f) | (%.2f, %.2f) | %llu | %.0f | %llu | %.0f | %u | %u | %.6f | %.1e |\n", k + 1,
+                        sx, sy, gx, gy, static_cast<unsigned long long>(a.cfc), 1e3 * a.wall,
+                        static_cast<unsigned long long>(b.cfc), 1e3 * b.wall, b.rounds, b.blocks, a.time, dev);
+        }
+        std::printf("\nTotals: full search %llu CFC / %llu CMC / %.1f s; coarse-to-fine %llu CFC / %llu CMC / %.1f s "
+                    "(%.1fx / %.1fx / %.1fx fewer); equal travel time (1e-9 relative) on %d of %d pairs with a path "
+                    "(worst deviation %.1e); %d needed a wider corridor; %d without a path\n",
+                    static_cast<unsigned long long>(cfcF), static_cast<unsigned long long>(cmcF), wallF,
+                    static_cast<unsigned long long>(cfcC), static_cast<unsigned long long>(cmcC), wallC,
+                    double(cfcF) / double(std::max<std::uint64_t>(1, cfcC)),
+                    double(cmcF) / double(std::max<std::uint64_t>(1, cmcC)), wallF / std::max(1e-9, wallC), equal,
+                    compared, worst, widened, noPath);
     }
     std::printf("\nDefault configuration equal to TVE (1e-9 relative) on every random pair: %s\n",
                 allEqual ? "yes" : "NO");

@@ -327,11 +327,20 @@ TveResult TveSearch::runPhases(double sx, double sy, double t0, double gx, doubl
     greedy.zermelo = true;
     greedy.certifyTolerance = -1.0;
     greedy.heuristicWeight = options.greedyWeight;
+    greedy.reopen = false;  // any arrival serves as the deadline; reopening could cost far more than it gains
     const TveResult first = runCore(sx, sy, t0, gx, gy, greedy, terminate);
-    if (first.outcome != TveOutcome::Exact)
-        return first;  // invalid start/goal, terminated, or no path at all (the greedy search falls back unpruned)
     TveOptions second = options;
     second.greedyDeadline = false;
+    if (first.outcome == TveOutcome::Exhausted)
+    {
+        // (without reopening, a greedy search that exhausts proves nothing where the field is not FIFO: the search
+        // without deadline decides)
+        TveResult full = runCore(sx, sy, t0, gx, gy, second, terminate);
+        add(full, first);
+        return full;
+    }
+    if (first.outcome != TveOutcome::Exact)
+        return first;  // invalid start/goal, or terminated
     second.deadline = t0 + first.travelTime * (1.0 + 1e-12);
     TveResult r = runCore(sx, sy, t0, gx, gy, second, terminate);
     add(r, first);
@@ -667,8 +676,11 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
                 pruning = false;
                 res.fallbackUsed = true;
                 for (Lattice::VertexId v : prunedAt)
+                {
+                    labels_.ref(v).expanded = false;  // expanded again, with every edge
                     if (h(v) < kInf)
                         Q.push({dist(v) + h(v), dist(v), v});
+                }
                 prunedAt.clear();
                 continue;
             }
@@ -683,6 +695,13 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
         {
             found = u;
             break;
+        }
+        if (!options.reopen)
+        {
+            Label &lu = labels_.ref(u);
+            if (lu.expanded)
+                continue;  // expanded once already (TveOptions::reopen)
+            lu.expanded = true;
         }
         ++res.expansions;
         if (res.expansions % checkEvery == 0 && terminated())
