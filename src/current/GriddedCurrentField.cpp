@@ -152,6 +152,7 @@ GriddedCurrentField::GriddedCurrentField(GriddedData d, GriddedFieldOptions opti
         yMin_ = *std::min_element(nodeY_.begin(), nodeY_.end());
         yMax_ = *std::max_element(nodeY_.begin(), nodeY_.end());
         buildLocator();
+        buildBlocks();
         fdStep_ = 1e-4 * std::sqrt((xMax_ - xMin_) * (yMax_ - yMin_) / double(cx * cy));
     }
     else
@@ -728,9 +729,100 @@ double GriddedCurrentField::maxSpeed(const Region &region) const
     return std::min(product, data) * (1.0 + 1e-9) + 1e-300;
 }
 
+void GriddedCurrentField::buildBlocks()
+{
+    Blocks &b = blocks_;
+    const std::size_t B = Blocks::kBlock, cx = nx_ - 1, cy = ny_ - 1, nz = depth_.size(), nt = time_.size();
+    b.nbi = (cx + B - 1) / B;
+    b.nbj = (cy + B - 1) / B;
+    const std::size_t nb = b.nbi * b.nbj;
+    b.box.assign(4 * nb, 0.0);
+    b.edge.assign(nb, 0);
+    b.ext.assign(4 * nb * nt, 0.0f);
+    b.all.assign(4 * nt, 0.0f);
+    const float inf = std::numeric_limits<float>::infinity();
+    for (std::size_t bj = 0; bj < b.nbj; ++bj)
+        for (std::size_t bi = 0; bi < b.nbi; ++bi)
+        {
+            const std::size_t k = bi + bj * b.nbi;
+            const std::size_t i0 = bi * B, i1 = std::min(cx, (bi + 1) * B), j0 = bj * B, j1 = std::min(cy, (bj + 1) * B);
+            b.edge[k] = bi == 0 || bj == 0 || i1 == cx || j1 == cy;
+            double x0 = kInf, x1 = -kInf, y0 = kInf, y1 = -kInf;
+            for (std::size_t j = j0; j <= j1; ++j)
+                for (std::size_t i = i0; i <= i1; ++i)
+                {
+                    x0 = std::min(x0, nodeX_[j * nx_ + i]);
+                    x1 = std::max(x1, nodeX_[j * nx_ + i]);
+                    y0 = std::min(y0, nodeY_[j * nx_ + i]);
+                    y1 = std::max(y1, nodeY_[j * nx_ + i]);
+                }
+            b.box[4 * k] = x0;
+            b.box[4 * k + 1] = x1;
+            b.box[4 * k + 2] = y0;
+            b.box[4 * k + 3] = y1;
+            for (std::size_t it = 0; it < nt; ++it)
+            {
+                float a = inf, c = -inf, d = inf, e = -inf;
+                for (std::size_t iz = 0; iz < nz; ++iz)
+                    for (std::size_t j = j0; j <= j1; ++j)
+                    {
+                        const float *row = &uv_[2 * (((it * nz + iz) * ny_ + j) * nx_)];
+                        for (std::size_t i = i0; i <= i1; ++i)
+                        {
+                            a = std::min(a, row[2 * i]);
+                            c = std::max(c, row[2 * i]);
+                            d = std::min(d, row[2 * i + 1]);
+                            e = std::max(e, row[2 * i + 1]);
+                        }
+                    }
+                float *out = &b.ext[4 * (it * nb + k)];
+                out[0] = a;
+                out[1] = c;
+                out[2] = d;
+                out[3] = e;
+                float *g = &b.all[4 * it];
+                if (k == 0)
+                {
+                    g[0] = a;
+                    g[1] = c;
+                    g[2] = d;
+                    g[3] = e;
+                }
+                else
+                {
+                    g[0] = std::min(g[0], a);
+                    g[1] = std::max(g[1], c);
+                    g[2] = std::min(g[2], d);
+                    g[3] = std::max(g[3], e);
+                }
+            }
+        }
+    // buckets: about one block per bucket
+    b.bnx = std::max<std::size_t>(1, b.nbi);
+    b.bny = std::max<std::size_t>(1, b.nbj);
+    b.bx0 = xMin_;
+    b.by0 = yMin_;
+    b.bdx = std::max(1e-300, (xMax_ - xMin_) / double(b.bnx));
+    b.bdy = std::max(1e-300, (yMax_ - yMin_) / double(b.bny));
+    b.buckets.assign(b.bnx * b.bny, {});
+    auto bucketRange = [&](double lo, double hi, double o, double d, std::size_t n, std::size_t &a, std::size_t &c) {
+        a = static_cast<std::size_t>(std::clamp(std::floor((lo - o) / d), 0.0, double(n - 1)));
+        c = static_cast<std::size_t>(std::clamp(std::floor((hi - o) / d), 0.0, double(n - 1)));
+    };
+    for (std::size_t k = 0; k < nb; ++k)
+    {
+        std::size_t a0, a1, c0, c1;
+        bucketRange(b.box[4 * k], b.box[4 * k + 1], b.bx0, b.bdx, b.bnx, a0, a1);
+        bucketRange(b.box[4 * k + 2], b.box[4 * k + 3], b.by0, b.bdy, b.bny, c0, c1);
+        for (std::size_t c = c0; c <= c1; ++c)
+            for (std::size_t a = a0; a <= a1; ++a)
+                b.buckets[a + c * b.bnx].push_back(static_cast<std::uint32_t>(k));
+    }
+}
+
 bool GriddedCurrentField::hasVelocityBounds() const
 {
-    return !curvilinear_ && options_.xy != Interp2D::Bicubic &&
+    return options_.xy != Interp2D::Bicubic &&
            (options_.depth == Interp1D::Nearest || options_.depth == Interp1D::Linear) &&
            (options_.time == Interp1D::Nearest || options_.time == Interp1D::Linear);
 }
@@ -755,12 +847,72 @@ bool GriddedCurrentField::velocityBounds(const Region &region, double &uMin, dou
         b = std::min(ax.size() - 1, ax.interval(hi) + 1);
     };
     std::size_t i0, i1, j0, j1, t0, t1;
-    range(x_, region.xMin, region.xMax, i0, i1);
-    range(y_, region.yMin, region.yMax, j0, j1);
     range(time_, std::isnan(region.tMin) ? -kInf : region.tMin, std::isnan(region.tMax) ? kInf : region.tMax, t0,
           t1);
     const std::size_t nz = depth_.size();
     float a = std::numeric_limits<float>::infinity(), b = -a, c = a, d = -a;
+    auto finish = [&] {
+        // (the interpolation's weights are rounded: a relative margin as in maxSpeed())
+        const double m = 1e-9 * std::max({std::abs(a), std::abs(b), std::abs(c), std::abs(d)}) + 1e-300;
+        uMin = a - m;
+        uMax = b + m;
+        vMin = c - m;
+        vMax = d + m;
+        return true;
+    };
+    if (curvilinear_)
+    {
+        const Blocks &B = blocks_;
+        const std::size_t nb = B.nbi * B.nbj;
+        auto whole = [&] {
+            for (std::size_t it = t0; it <= t1; ++it)
+            {
+                const float *g = &B.all[4 * it];
+                a = std::min(a, g[0]);
+                b = std::max(b, g[1]);
+                c = std::min(c, g[2]);
+                d = std::max(d, g[3]);
+            }
+            return finish();
+        };
+        const double rx0 = region.xMin, rx1 = region.xMax, ry0 = region.yMin, ry1 = region.yMax;
+        if (!(rx0 >= xMin_ && rx1 <= xMax_ && ry0 >= yMin_ && ry1 <= yMax_ && rx0 <= rx1 && ry0 <= ry1))
+            return whole();  // reaches beyond the nodes (or not finite): points outside the grid are clamped
+        double fi, fj;
+        if (!locate(0.5 * (rx0 + rx1), 0.5 * (ry0 + ry1), fi, fj))
+            return whole();
+        auto bucket = [](double q, double o, double dq, std::size_t n) {
+            return static_cast<std::size_t>(std::clamp(std::floor((q - o) / dq), 0.0, double(n - 1)));
+        };
+        const std::size_t a0 = bucket(rx0, B.bx0, B.bdx, B.bnx), a1 = bucket(rx1, B.bx0, B.bdx, B.bnx);
+        const std::size_t c0 = bucket(ry0, B.by0, B.bdy, B.bny), c1 = bucket(ry1, B.by0, B.bdy, B.bny);
+        std::vector<std::uint32_t> hit;
+        for (std::size_t cc = c0; cc <= c1; ++cc)
+            for (std::size_t aa = a0; aa <= a1; ++aa)
+                for (const std::uint32_t k : B.buckets[aa + cc * B.bnx])
+                {
+                    const double *bx = &B.box[4 * k];
+                    if (bx[0] > rx1 || bx[1] < rx0 || bx[2] > ry1 || bx[3] < ry0)
+                        continue;
+                    if (B.edge[k])
+                        return whole();  // the region may reach outside the grid
+                    hit.push_back(k);
+                }
+        if (hit.empty())
+            return whole();
+        for (std::size_t it = t0; it <= t1; ++it)
+            for (const std::uint32_t k : hit)
+            {
+                const float *e = &B.ext[4 * (it * nb + k)];
+                a = std::min(a, e[0]);
+                b = std::max(b, e[1]);
+                c = std::min(c, e[2]);
+                d = std::max(d, e[3]);
+            }
+        return finish();
+    }
+    range(x_, region.xMin, region.xMax, i0, i1);
+    range(y_, region.yMin, region.yMax, j0, j1);
     for (std::size_t it = t0; it <= t1; ++it)
         for (std::size_t k = 0; k < nz; ++k)  // all loaded layers, as maxSpeed()
             for (std::size_t j = j0; j <= j1; ++j)
@@ -774,13 +926,7 @@ bool GriddedCurrentField::velocityBounds(const Region &region, double &uMin, dou
                     d = std::max(d, row[2 * i + 1]);
                 }
             }
-    // (the interpolation's weights are rounded: a relative margin as in maxSpeed())
-    const double m = 1e-9 * std::max({std::abs(a), std::abs(b), std::abs(c), std::abs(d)}) + 1e-300;
-    uMin = a - m;
-    uMax = b + m;
-    vMin = c - m;
-    vMax = d + m;
-    return true;
+    return finish();
 }
 
 Region GriddedCurrentField::extent() const

@@ -1,5 +1,5 @@
 // Issue 15, on a gridded forecast (two meanders, one reversed, and two islands; non-uniform x axis; six records):
-// - the gridded field's local bounds (GriddedCurrentField::velocityBounds) enclose every velocity() value of their
+// - the gridded field's local bounds (GriddedCurrentField::velocityBounds, rectilinear and curvilinear) enclose every velocity() value of their
 //   region, and are refused where the schemes could overshoot the nodes;
 // - the lattice heuristic built from them never exceeds the true remaining time (TVE from the vertex) and the
 //   default search still equals TVE;
@@ -155,6 +155,88 @@ TEST(GriddedBounds, EncloseEveryInterpolatedVelocityOfTheRegion)
     EXPECT_FALSE(forecast(akima)->velocityBounds(any, a, b, c, d));
     EXPECT_TRUE(LatticeHeuristic::hasLocalBounds(*forecast()));
     EXPECT_FALSE(LatticeHeuristic::hasLocalBounds(*forecast(cubic)));
+}
+
+TEST(GriddedBounds, CurvilinearGridBoundsEncloseTheInterpolatedVelocity)
+{
+    // the same data on a curved, rotated grid (as a geographic forecast looks after projection)
+    GriddedData d = forecastData();
+    const double th = 0.3;
+    for (std::size_t j = 0; j < d.ny; ++j)
+        for (std::size_t i = 0; i < d.nx; ++i)
+        {
+            const double x = d.x[i], y = d.y[j];
+            d.nodeX.push_back(x * std::cos(th) - y * std::sin(th) + 0.01 * y * y);
+            d.nodeY.push_back(x * std::sin(th) + y * std::cos(th) + 0.015 * x * x);
+        }
+    d.x.clear();
+    d.y.clear();
+    const std::vector<double> nodeX = d.nodeX, nodeY = d.nodeY;
+    GriddedFieldOptions o;
+    o.beyond = BeyondForecast::HoldLast;
+    const GriddedCurrentField field(std::move(d), o);
+    ASSERT_TRUE(field.hasVelocityBounds());
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> ux(-6.0, 22.0), uy(-6.0, 20.0), ut(-3.0, 30.0), w(0.0, 1.0);
+    int local = 0;
+    Region all;
+    double ga, gb, gc, gd;
+    ASSERT_TRUE(field.velocityBounds(all, ga, gb, gc, gd));  // everywhere: the whole grid's extremes
+    for (int c = 0; c < 400; ++c)
+    {
+        Region r;
+        r.xMin = ux(rng);
+        r.xMax = r.xMin + 1.5 * w(rng);
+        r.yMin = uy(rng);
+        r.yMax = r.yMin + 1.5 * w(rng);
+        r.tMin = ut(rng);
+        r.tMax = r.tMin + 8.0 * w(rng);
+        double a, b, cc, dd;
+        ASSERT_TRUE(field.velocityBounds(r, a, b, cc, dd));
+        for (int k = 0; k < 60; ++k)
+        {
+            const double fx = k < 4 ? double(k % 2) : w(rng), fy = k < 4 ? double(k / 2) : w(rng);
+            const double x = r.xMin + (r.xMax - r.xMin) * fx, y = r.yMin + (r.yMax - r.yMin) * fy;
+            const double t = r.tMin + (r.tMax - r.tMin) * (k % 5 == 0 ? 1.0 : w(rng));
+            const Velocity v = field.velocity(x, y, 0.0, t);
+            ASSERT_GE(v.u, a) << x << " " << y << " " << t;
+            ASSERT_LE(v.u, b) << x << " " << y << " " << t;
+            ASSERT_GE(v.v, cc) << x << " " << y << " " << t;
+            ASSERT_LE(v.v, dd) << x << " " << y << " " << t;
+        }
+    }
+    // regions well inside the grid (centred on nodes at least 18 cells from its edge) get local bounds: within the
+    // extremes of the nodes at most 16 cells (two blocks) away, over the two records of the window
+    const GriddedData ref = forecastData();
+    std::uniform_int_distribution<std::size_t> ni(18, 62), nj(18, 40);  // a block away from the edge blocks
+    for (int c = 0; c < 100; ++c)
+    {
+        const std::size_t i0 = ni(rng), j0 = nj(rng), n = j0 * 81 + i0;
+        double lu = 1e9, hu = -1e9, lv = 1e9, hv = -1e9;
+        for (std::size_t rec = 0; rec < 2; ++rec)
+            for (std::size_t j = j0 >= 16 ? j0 - 16 : 0; j <= std::min<std::size_t>(60, j0 + 16); ++j)
+                for (std::size_t i = i0 >= 16 ? i0 - 16 : 0; i <= std::min<std::size_t>(80, i0 + 16); ++i)
+                {
+                    const std::size_t q = (rec * 61 + j) * 81 + i;
+                    lu = std::min(lu, double(ref.u[q]));
+                    hu = std::max(hu, double(ref.u[q]));
+                    lv = std::min(lv, double(ref.v[q]));
+                    hv = std::max(hv, double(ref.v[q]));
+                }
+        Region r;
+        const double cx = nodeX[n], cy = nodeY[n];
+        r.xMin = cx - 0.25;
+        r.xMax = cx + 0.25;
+        r.yMin = cy - 0.25;
+        r.yMax = cy + 0.25;
+        r.tMin = 0.0;
+        r.tMax = 4.9;  // records 0 and 1
+        double a, b, cc, dd;
+        ASSERT_TRUE(field.velocityBounds(r, a, b, cc, dd));
+        if (a >= lu - 1e-6 && b <= hu + 1e-6 && cc >= lv - 1e-6 && dd <= hv + 1e-6)
+            ++local;
+    }
+    EXPECT_GE(local, 95);
 }
 
 TEST(GriddedBounds, HeuristicNeverAboveTheTrueRemainingTimeAndSearchEqualsTve)

@@ -93,11 +93,15 @@ public:
     GriddedCurrentField(GriddedData data, GriddedFieldOptions options = {});
 
     double maxSpeed(const Region &region) const override;
-    /// @brief Node minimum and maximum of u and v over the nodes whose interpolation stencils cover the region
-    /// (x, y clamped to the grid, the forecast records bracketing the time window, all loaded depth layers): exact
-    /// bounds of velocity() when every scheme is a convex combination of nodes (rectilinear grid; nearest or
-    /// bilinear horizontally; nearest or linear in depth and time). False for curvilinear grids and cubic or Akima
-    /// schemes (their overshoot would need the margin of maxSpeed()).
+    /// @brief Node minimum and maximum of u and v over the nodes whose interpolation stencils can serve the region
+    /// (the forecast records bracketing the time window, all loaded depth layers): true bounds of velocity() when
+    /// every scheme is a convex combination of nodes (nearest or bilinear horizontally; nearest or linear in depth
+    /// and time). Rectilinear grids: the nodes of the cells the region overlaps (x, y clamped to the grid).
+    /// Curvilinear grids (geographic forecasts after projection): the nodes of the blocks of 8 x 8 cells whose
+    /// bounding boxes meet the region, when the region's centre lies in the grid and none of these blocks touches
+    /// the grid's edge (then every point of the region lies in one of their cells, since a region reaching outside
+    /// would cross the edge); else the nodes of the whole grid. False for cubic or Akima schemes (their overshoot
+    /// would need the margin of maxSpeed()).
     bool velocityBounds(const Region &region, double &uMin, double &uMax, double &vMin, double &vMax) const override;
     bool hasVelocityBounds() const override;
     bool inWater(double x, double y, double z) const override;
@@ -216,5 +220,22 @@ private:
     std::size_t bnx_{0}, bny_{0};
     std::vector<std::int32_t> bucket_;      // start cell (j * (nx-1) + i) or -1
     double xMin_{0}, xMax_{0}, yMin_{0}, yMax_{0};
+    /// Curvilinear grids: blocks of kBlock x kBlock cells with the bounding box of their nodes, whether they touch
+    /// the grid's edge, and the extremes of u and v over their nodes per forecast record (velocityBounds()); a
+    /// bucket grid over the nodes' bounding box lists the blocks meeting each bucket.
+    struct Blocks
+    {
+        static constexpr std::size_t kBlock = 8;
+        std::size_t nbi{0}, nbj{0};
+        std::vector<double> box;              // per block: xMin, xMax, yMin, yMax
+        std::vector<unsigned char> edge;      // per block: touches the grid's edge
+        std::vector<float> ext;               // per (record, block): uMin, uMax, vMin, vMax
+        std::vector<float> all;               // per record: extremes over every node
+        double bx0{0}, by0{0}, bdx{1}, bdy{1};
+        std::size_t bnx{1}, bny{1};
+        std::vector<std::vector<std::uint32_t>> buckets;
+    };
+    Blocks blocks_;
+    void buildBlocks();
 };
 }  // namespace ompl_glider
