@@ -19,7 +19,7 @@
 #include "ompl_glider/execution/Execution.h"
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/mission/IsoTime.h"
-#include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace glider_plan
 {

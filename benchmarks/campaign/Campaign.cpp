@@ -9,7 +9,7 @@
 // keeps undirected edges and may return motions that run backwards in time), the planner's own travel time, and
 // CFC / CMC counted on the shared travel-time calculator and current field during solve().
 //
-// The planners come from the planner registry (planners/PlannerRegistry.h), the one list the command line and the
+// The planners come from the planner registry (registry/PlannerRegistry.h), the one list the command line and the
 // mission files use, by their canonical names; the lattice planners get the campaign's grid size and sectors
 // through OMPL's ParamSet ("grid_size", "sectors") and keep "smooth" and "refine" at their defaults (on), so the
 // campaign records the smoothed and refined ZA*TVE path (its CFC includes that post-processing; the search's own
@@ -43,7 +43,7 @@
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/ompl/PathResimulation.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
-#include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/reachability/LevelSet.h"
 #include "ompl_glider/reference/ZermeloReference.h"

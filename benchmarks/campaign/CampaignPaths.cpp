@@ -1,6 +1,6 @@
 // Map data of the campaign problems for the report figures: one ZA*TVE path and one RRT* path per problem
 // (same seed and budget as the campaign), the forbidden regions, and a few current-field samples. Both planners come
-// from the planner registry (planners/PlannerRegistry.h) as in the campaign; ZA*TVE returns its smoothed and refined
+// from the planner registry (registry/PlannerRegistry.h) as in the campaign; ZA*TVE returns its smoothed and refined
 // path (its "smooth" and "refine" params are on by default).
 //
 // Usage: glider_campaign_paths [--time SECONDS] [--grid G] [--seed S] OUTDIR
@@ -18,7 +18,7 @@
 
 #include "ompl_glider/ompl/PathResimulation.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
-#include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
 
 #include "CampaignProblems.h"
 

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Geometry.h
-/// @brief The 2-D point of the planning frame and the geographic position, used by every layer.
+/// @brief The value types every layer shares: the 2-D point of the planning frame, the timed point of a path, the
+/// axis-aligned box, the velocity and the geographic position.
 
 #include <cmath>
 
@@ -11,6 +12,31 @@ struct Point2
 {
     double x{0.0};  ///< east (planning frame)
     double y{0.0};  ///< north (planning frame)
+};
+
+/// @brief A position of the planning frame at a time: a waypoint of a path, a point of a flown or backtracked track.
+struct TimedPoint
+{
+    double x{0.0};  ///< east (planning frame)
+    double y{0.0};  ///< north (planning frame)
+    double t{0.0};  ///< time at the point (the departure time at a path's start)
+};
+
+/// @brief An axis-aligned box of the planning frame.
+struct Box
+{
+    double xMin{0.0};
+    double xMax{0.0};
+    double yMin{0.0};
+    double yMax{0.0};
+};
+
+/// @brief A horizontal velocity (u eastward / along x, v northward / along y): a current, a wind or a glider's
+/// velocity through the water, in the units of its field.
+struct Velocity
+{
+    double u{0.0};  ///< x component
+    double v{0.0};  ///< y component
 };
 
 /// @brief A geographic position in degrees.

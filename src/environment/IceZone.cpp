@@ -243,7 +243,7 @@ bool IceZone::legFree(double x1, double y1, double t1, double x2, double y2, dou
             dyMin = std::min(dyMin, dy_[i]);
             dyMax = std::max(dyMax, dy_[i]);
         }
-    const BoundingBox &s = shape_.bounds();
+    const Box &s = shape_.bounds();
     if (std::max(x1, x2) < s.xMin + dxMin || std::min(x1, x2) > s.xMax + dxMax || std::max(y1, y2) < s.yMin + dyMin ||
         std::min(y1, y2) > s.yMax + dyMax)
         return true;

@@ -141,7 +141,7 @@ Polygon::Polygon(std::vector<Point2> outer, std::vector<std::vector<Point2>> hol
             edges_.push_back(Edge{r[j].x, r[j].y, r[i].x, r[i].y});
     };
     addRing(outer_);
-    box_ = BoundingBox{outer_[0].x, outer_[0].x, outer_[0].y, outer_[0].y};
+    box_ = Box{outer_[0].x, outer_[0].x, outer_[0].y, outer_[0].y};
     for (const Point2 &p : outer_)
     {
         box_.xMin = std::min(box_.xMin, p.x);

@@ -18,7 +18,7 @@ std::string where(double x, double y, double t)
 }  // namespace
 
 DiveEnd flyHeading(double x, double y, double t, double hx, double hy, double tEnd, const CurrentField &field,
-                   const Environment *forbidden, const DiveSettings &s, std::vector<TimedWaypoint> *track)
+                   const Environment *forbidden, const DiveSettings &s, std::vector<TimedPoint> *track)
 {
     DiveEnd e;
     auto rate = [&](double px, double py, double pt) {

@@ -56,14 +56,14 @@ void crabHeading(double dx, double dy, Velocity c, double speed, double &hx, dou
     hy = a * dy + s * ny;
 }
 
-TimedWaypoint planAt(const std::vector<TimedWaypoint> &plan, double t)
+TimedPoint planAt(const std::vector<TimedPoint> &plan, double t)
 {
     if (t <= plan.front().t)
         return plan.front();
     for (std::size_t k = 0; k + 1 < plan.size(); ++k)
         if (t <= plan[k + 1].t)
         {
-            const TimedWaypoint &a = plan[k], &b = plan[k + 1];
+            const TimedPoint &a = plan[k], &b = plan[k + 1];
             const double s = b.t > a.t ? (t - a.t) / (b.t - a.t) : 1.0;
             return {a.x + s * (b.x - a.x), a.y + s * (b.y - a.y), t};
         }
@@ -73,9 +73,9 @@ TimedWaypoint planAt(const std::vector<TimedWaypoint> &plan, double t)
 namespace
 {
 /// The end of the plan's segment active at time t (the first waypoint planned after t; the goal after the plan).
-TimedWaypoint activeWaypoint(const std::vector<TimedWaypoint> &plan, double t)
+TimedPoint activeWaypoint(const std::vector<TimedPoint> &plan, double t)
 {
-    for (const TimedWaypoint &w : plan)
+    for (const TimedPoint &w : plan)
         if (w.t > t)
             return w;
     return plan.back();
@@ -83,7 +83,7 @@ TimedWaypoint activeWaypoint(const std::vector<TimedWaypoint> &plan, double t)
 
 }  // namespace
 
-FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const CurrentField &forecast,
+FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const CurrentField &forecast,
                    const CurrentField &truth, const Environment *forbidden, ControlStrategy strategy,
                    const ExecutionOptions &o)
 {
@@ -97,9 +97,9 @@ FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const C
     if (strategy == ControlStrategy::Replan && (!o.replan || o.replanEvery == 0))
         throw Error("flyPlan: the replan strategy needs a replanner and replanEvery >= 1");
     FlownTrack r;
-    std::vector<TimedWaypoint> active = plan;  // the plan flown now (replaced by each new plan)
+    std::vector<TimedPoint> active = plan;  // the plan flown now (replaced by each new plan)
     unsigned surfacings = 0;
-    const TimedWaypoint &goal = plan.back();
+    const TimedPoint &goal = plan.back();
     const double t0 = plan.front().t;
     r.plannedArrival = goal.t;
     const double end = std::isfinite(o.endTime) ? o.endTime : t0 + 2.0 * std::max(goal.t - t0, o.surfacingInterval);
@@ -118,7 +118,7 @@ FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const C
         // at the surface: a new plan (replanning), then the heading for the next dive
         if (strategy == ControlStrategy::Replan && surfacings++ % o.replanEvery == 0)
         {
-            std::vector<TimedWaypoint> fresh = o.replan(x, y, t, active);
+            std::vector<TimedPoint> fresh = o.replan(x, y, t, active);
             if (!fresh.empty())
             {
                 fresh.back() = {goal.x, goal.y, fresh.back().t};
@@ -126,7 +126,7 @@ FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const C
                 ++r.replans;
             }
         }
-        const TimedWaypoint target = strategy == ControlStrategy::Greedy ? goal : activeWaypoint(active, t);
+        const TimedPoint target = strategy == ControlStrategy::Greedy ? goal : activeWaypoint(active, t);
         double dx = target.x - x, dy = target.y - y;
         const double len = std::hypot(dx, dy);
         double hx = 0.0, hy = 0.0;
@@ -169,7 +169,7 @@ FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const C
         r.fixes.push_back({x, y, t});
     }
     // the distance to the goal at the planned arrival time, on the flown track
-    const TimedWaypoint at = planAt(r.track, std::min(r.plannedArrival, r.track.back().t));
+    const TimedPoint at = planAt(r.track, std::min(r.plannedArrival, r.track.back().t));
     r.finalDistance = distance(at.x, at.y);
     const double flown = r.track.back().t - t0;
     r.madeGoodSpeed = flown > 0.0 ? std::hypot(r.track.back().x - plan.front().x, r.track.back().y - plan.front().y) / flown

@@ -42,20 +42,20 @@ bool freeAt(const MissionProblem &problem, Point2 p, double t)
 /// plan's waypoints after t, then the plan's later waypoints. The waypoint joined is the one giving the earliest
 /// arrival (a fix a little off the plan in a strong current may not reach the next waypoint, but a later one or
 /// the goal). Empty when no choice is passable (land, forbidden, beyond the forecast).
-std::vector<TimedWaypoint> continuation(const MissionProblem &problem, double x, double y, double t,
-                                        const std::vector<TimedWaypoint> &plan)
+std::vector<TimedPoint> continuation(const MissionProblem &problem, double x, double y, double t,
+                                        const std::vector<TimedPoint> &plan)
 {
     std::size_t first = 0;
     while (first < plan.size() && plan[first].t <= t)
         ++first;
     if (first == plan.size())
         first = plan.size() - 1;  // late: the goal is the only waypoint left
-    std::vector<TimedWaypoint> best;
+    std::vector<TimedPoint> best;
     for (std::size_t k = first; k < plan.size(); ++k)
     {
-        std::vector<TimedWaypoint> via{{x, y, t}};
+        std::vector<TimedPoint> via{{x, y, t}};
         via.insert(via.end(), plan.begin() + static_cast<std::ptrdiff_t>(k), plan.end());
-        std::vector<TimedWaypoint> rest =
+        std::vector<TimedPoint> rest =
             retimePath(problem, problem.getField(), problem.getSpec().vehicle.speed, via);
         if (!rest.empty() && (best.empty() || rest.back().t < best.back().t))
             best = std::move(rest);
@@ -72,8 +72,8 @@ std::vector<TimedWaypoint> continuation(const MissionProblem &problem, double x,
 Replanner replanner(const MissionProblem &problem, Point2 goal, double margin)
 {
     return [&problem, goal, margin](double x, double y, double t,
-                                    const std::vector<TimedWaypoint> &current) -> std::vector<TimedWaypoint> {
-        std::vector<TimedWaypoint> rest = continuation(problem, x, y, t, current);
+                                    const std::vector<TimedPoint> &current) -> std::vector<TimedPoint> {
+        std::vector<TimedPoint> rest = continuation(problem, x, y, t, current);
         const Region &box = problem.getBox();
         if (x < box.xMin || x > box.xMax || y < box.yMin || y > box.yMax)
             return rest;  // drifted out of the planning box: no new plan

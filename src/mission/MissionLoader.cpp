@@ -10,7 +10,7 @@
 #include "ompl_glider/current/CfTime.h"
 #include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/mission/MissionSpec.h"
-#include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace ompl_glider
 {

@@ -16,7 +16,7 @@
 #include "ompl_glider/cost/TravelTimeCalculator.h"
 #include "ompl_glider/planners/Lattice.h"
 #include "ompl_glider/planners/PathSmoother.h"
-#include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/planners/Wavefront.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
@@ -459,7 +459,7 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
             return;
         for (std::size_t k = 0; k < n; ++k)
         {
-            const std::vector<TimedWaypoint> flown = retimePath(problem, members[k], speed, plans[c].path);
+            const std::vector<TimedPoint> flown = retimePath(problem, members[k], speed, plans[c].path);
             times[c][k] = flown.empty() ? kInf : flown.back().t - departure;
         }
     });
@@ -504,7 +504,7 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
     if (best > 0 && r.solved)
     {
         // a member's plan: its times on the mean field, which the outputs describe
-        const std::vector<TimedWaypoint> onMean = retimePath(problem, problem.getField(), speed, r.path);
+        const std::vector<TimedPoint> onMean = retimePath(problem, problem.getField(), speed, r.path);
         if (!onMean.empty())
         {
             r.path = onMean;
@@ -541,8 +541,8 @@ double ensembleObjective(const std::vector<double> &t, const std::string &object
     return sum / static_cast<double>(t.size());
 }
 
-std::vector<TimedWaypoint> retimePath(const MissionProblem &problem, std::shared_ptr<const CurrentField> field,
-                                      double speed, const std::vector<TimedWaypoint> &path)
+std::vector<TimedPoint> retimePath(const MissionProblem &problem, std::shared_ptr<const CurrentField> field,
+                                      double speed, const std::vector<TimedPoint> &path)
 {
     if (path.empty())
         return {};
@@ -550,10 +550,10 @@ std::vector<TimedWaypoint> retimePath(const MissionProblem &problem, std::shared
     tp.speed = speed;
     const TravelTimeCalculator travel(std::move(field), tp);
     const auto &env = problem.getEnvironment();
-    std::vector<TimedWaypoint> out{path.front()};
+    std::vector<TimedPoint> out{path.front()};
     for (std::size_t i = 1; i < path.size(); ++i)
     {
-        const TimedWaypoint &a = out.back(), &w = path[i];
+        const TimedPoint &a = out.back(), &w = path[i];
         const double dt = travel.travelTime(a.x, a.y, w.x, w.y, a.t);
         if (!std::isfinite(dt) || (env && !env->legFree(a.x, a.y, a.t, w.x, w.y, a.t + dt)))
             return {};
@@ -566,7 +566,7 @@ std::vector<TimedWaypoint> retimePath(const MissionProblem &problem, std::shared
 namespace
 {
 /// Total time spent holding position: the zero-length legs of a timed path.
-double holdTimeOf(const std::vector<TimedWaypoint> &path)
+double holdTimeOf(const std::vector<TimedPoint> &path)
 {
     double hold = 0.0;
     for (std::size_t i = 1; i < path.size(); ++i)
@@ -635,11 +635,11 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
     // sample the current of a hold at least 512 times over the trip's time
     mv->setHoldTimeStep(std::min(mv->getHoldTimeStep(), std::max(B - r.departure, 1e-9) / 512.0));
     const std::uint64_t cfc0 = ctx->travel->costFunctionCalls();
-    const std::vector<TimedWaypoint> &P = r.path;
+    const std::vector<TimedPoint> &P = r.path;
     const std::size_t n = P.size() - 1;  // index of the goal waypoint
 
     // a candidate path: checked by OMPL (every motion by the motion validator, every state valid)
-    auto accept = [&](std::vector<TimedWaypoint> cand, const std::string &how) {
+    auto accept = [&](std::vector<TimedPoint> cand, const std::string &how) {
         // land exactly on the window's begin when the arrival is within rounding of it
         if (std::abs(cand.back().t - B) <= tol && cand.size() >= 2 && cand.back().t != B)
             cand.back().t = std::max(B, cand[cand.size() - 2].t);
@@ -656,14 +656,14 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
         return true;
     };
     const auto &env = ctx->environment;
-    auto holdable = [&](const TimedWaypoint &p, double t1, double t2) {
+    auto holdable = [&](const TimedPoint &p, double t1, double t2) {
         return mv->canHold(p.x, p.y, t1, t2) && (!env || env->legFree(p.x, p.y, t1, p.x, p.y, t2));
     };
 
     // 1. hold at the goal: the earliest valid arrival
     if (holdable(P[n], ta, B))
     {
-        std::vector<TimedWaypoint> cand = P;
+        std::vector<TimedPoint> cand = P;
         cand.push_back({P[n].x, P[n].y, B});
         if (accept(std::move(cand), "hold at the goal"))
         {
@@ -674,13 +674,13 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
     // 2. time the arrival: a slower leg or a hold at an earlier waypoint, latest first
     // waypoints 0..k as planned, then k -> k + 1 in duration d, then as fast as possible
     auto flyOn = [&](std::size_t k, double tDepart, double legDuration) {
-        std::vector<TimedWaypoint> out(P.begin(), P.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+        std::vector<TimedPoint> out(P.begin(), P.begin() + static_cast<std::ptrdiff_t>(k) + 1);
         if (tDepart > out.back().t)
             out.push_back({P[k].x, P[k].y, tDepart});
         out.push_back({P[k + 1].x, P[k + 1].y, tDepart + legDuration});
         for (std::size_t i = k + 2; i <= n && std::isfinite(out.back().t); ++i)
         {
-            const TimedWaypoint &a = out.back();
+            const TimedPoint &a = out.back();
             const double dt = legTravelTime(*ctx, a.x, a.y, P[i].x, P[i].y, a.t);
             out.push_back({P[i].x, P[i].y, a.t + dt});
         }
@@ -689,15 +689,15 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
     // smallest x in [lo, hi] with arrival(x) >= B: a scan at 33 points for the first bracket [a, b] with a finite
     // arrival before B at a and in reach of B at b (the arrival jumps or is infeasible where the path meets the
     // current at other times), then bisection inside it (arrival non-decreasing in x there)
-    auto bisect = [&](double lo, double hi, const std::function<std::vector<TimedWaypoint>(double)> &fly)
-        -> std::vector<TimedWaypoint> {
+    auto bisect = [&](double lo, double hi, const std::function<std::vector<TimedPoint>(double)> &fly)
+        -> std::vector<TimedPoint> {
         constexpr int kScan = 32;
         double a = lo;
-        std::vector<TimedWaypoint> best;
+        std::vector<TimedPoint> best;
         for (int i = 0; i <= kScan; ++i)
         {
             const double x = lo + (hi - lo) * i / kScan;
-            std::vector<TimedWaypoint> c = fly(x);
+            std::vector<TimedPoint> c = fly(x);
             const double t = c.back().t;
             if (!std::isfinite(t))
                 continue;
@@ -716,7 +716,7 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
         for (int it = 0; it < 60 && best.back().t > B + tol && hi - lo > 1e-12 * std::max(1.0, std::abs(hi)); ++it)
         {
             const double mid = 0.5 * (lo + hi);
-            std::vector<TimedWaypoint> c = fly(mid);
+            std::vector<TimedPoint> c = fly(mid);
             if (std::isfinite(c.back().t) && c.back().t >= B - tol)
             {
                 hi = mid;
@@ -730,7 +730,7 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
     };
     for (std::size_t k = n; k-- > 0;)
     {
-        const TimedWaypoint &a = P[k], &b = P[k + 1];
+        const TimedPoint &a = P[k], &b = P[k + 1];
         const bool holdLeg = a.x == b.x && a.y == b.y;  // an existing hold: lengthen it below
         const double tk = a.t;
         // hold at waypoint k (k = 0: a later departure from the start), as long as the glider can
@@ -753,7 +753,7 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
                 const double dt = legTravelTime(*ctx, a.x, a.y, b.x, b.y, tk + h);
                 return flyOn(k, tk + h, dt);
             };
-            std::vector<TimedWaypoint> c = bisect(0.0, hMax, fly);
+            std::vector<TimedPoint> c = bisect(0.0, hMax, fly);
             const std::string how =
                 k == 0 ? std::string("later departure (hold at the start)") : "hold at waypoint " + std::to_string(k);
             if (!c.empty() && accept(std::move(c), how))
@@ -768,7 +768,7 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
                 const double dMax = std::min(std::isfinite(aw.latest) ? aw.latest : kInf, B - tk);
                 if (dMax > aw.earliest)
                 {
-                    std::vector<TimedWaypoint> c =
+                    std::vector<TimedPoint> c =
                         bisect(aw.earliest, dMax, [&](double d) { return flyOn(k, tk, d); });
                     char how[96];
                     std::snprintf(how, sizeof how, "slower leg %zu -> %zu", k, k + 1);

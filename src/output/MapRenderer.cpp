@@ -336,7 +336,7 @@ std::pair<int, int> MapRenderer::size() const
     return {options_.width, h};
 }
 
-MapPath MapRenderer::rawPathStyle(std::string label, std::vector<TimedWaypoint> waypoints)
+MapPath MapRenderer::rawPathStyle(std::string label, std::vector<TimedPoint> waypoints)
 {
     MapPath p;
     p.label = std::move(label);
@@ -348,7 +348,7 @@ MapPath MapRenderer::rawPathStyle(std::string label, std::vector<TimedWaypoint> 
     return p;
 }
 
-MapPath MapRenderer::stintTrackStyle(std::string label, std::vector<TimedWaypoint> track, int index)
+MapPath MapRenderer::stintTrackStyle(std::string label, std::vector<TimedPoint> track, int index)
 {
     static const Rgba palette[] = {{0.85, 0.10, 0.10, 1.0}, {0.10, 0.45, 0.95, 1.0}, {0.95, 0.55, 0.05, 1.0},
                                    {0.45, 0.20, 0.70, 1.0}, {0.10, 0.60, 0.25, 1.0}, {0.35, 0.35, 0.35, 1.0}};
@@ -362,7 +362,7 @@ MapPath MapRenderer::stintTrackStyle(std::string label, std::vector<TimedWaypoin
     return p;
 }
 
-MapPath MapRenderer::smoothedPathStyle(std::string label, std::vector<TimedWaypoint> waypoints)
+MapPath MapRenderer::smoothedPathStyle(std::string label, std::vector<TimedPoint> waypoints)
 {
     MapPath p;
     p.label = std::move(label);
@@ -373,7 +373,7 @@ MapPath MapRenderer::smoothedPathStyle(std::string label, std::vector<TimedWaypo
     return p;
 }
 
-MapPath MapRenderer::refinedPathStyle(std::string label, std::vector<TimedWaypoint> waypoints)
+MapPath MapRenderer::refinedPathStyle(std::string label, std::vector<TimedPoint> waypoints)
 {
     MapPath p;
     p.label = std::move(label);
@@ -574,7 +574,7 @@ void MapRenderer::draw(void *context) const
         cairo_stroke(cr);
         cairo_set_dash(cr, nullptr, 0, 0);
         if (p.waypointMarkers)
-            for (const TimedWaypoint &w : p.waypoints)
+            for (const TimedPoint &w : p.waypoints)
             {
                 cairo_new_path(cr);
                 cairo_arc(cr, X(w.x), Y(w.y), p.width + 1.2, 0, 2 * kPi);
@@ -593,7 +593,7 @@ void MapRenderer::draw(void *context) const
             {
                 while (leg + 1 < p.waypoints.size() && p.waypoints[leg].t < T)
                     ++leg;
-                const TimedWaypoint &a = p.waypoints[leg - 1], &b = p.waypoints[leg];
+                const TimedPoint &a = p.waypoints[leg - 1], &b = p.waypoints[leg];
                 const double f = b.t > a.t ? std::clamp((T - a.t) / (b.t - a.t), 0.0, 1.0) : 0.0;
                 const double x = X(a.x + f * (b.x - a.x)), y = Y(a.y + f * (b.y - a.y));
                 double nx = -(Y(b.y) - Y(a.y)), ny = X(b.x) - X(a.x);

@@ -38,7 +38,7 @@ MapPolygon mapPolygon(const MissionPolygon &p)
 
 /// Time ticks a pilot reads: hours or days after departure when the mission has physical time units; field time
 /// otherwise. Returns the unit's name ("" for field time).
-std::string tickUnit(const MissionResult &r, std::vector<std::vector<TimedWaypoint> *> paths)
+std::string tickUnit(const MissionResult &r, std::vector<std::vector<TimedPoint> *> paths)
 {
     const bool physical = r.spec.current.type == "netcdf" || r.spec.timeUnitSeconds != 1.0;
     if (!physical)
@@ -83,7 +83,7 @@ std::string length(const MissionResult &r, double d)
 void addPaths(MapRenderer &map, const MissionResult &r)
 {
     const PlannedPath &p = r.plan;
-    std::vector<TimedWaypoint> raw = p.raw, smoothed = p.smoothed, fin = p.path;
+    std::vector<TimedPoint> raw = p.raw, smoothed = p.smoothed, fin = p.path;
     const std::string unit = tickUnit(r, {&raw, &smoothed, &fin});
     if (!unit.empty())
         map.addNote("ticks: " + unit + " after departure");

@@ -242,7 +242,7 @@ std::string stintsCsv(const MissionResult &r, const MissionProblem &problem)
     const StintPlan &p = r.plan.stints->plan;
     for (std::size_t k = 0; k < p.bearings.size() && k + 1 < p.surfacings.size(); ++k)
     {
-        const TimedWaypoint &a = p.surfacings[k], &b = p.surfacings[k + 1];
+        const TimedPoint &a = p.surfacings[k], &b = p.surfacings[k + 1];
         const Point2 h = bearingVector(p.bearings[k]);
         const double dt = b.t - a.t;
         const double dx = b.x - a.x - r.plan.speed * dt * h.x, dy = b.y - a.y - r.plan.speed * dt * h.y;

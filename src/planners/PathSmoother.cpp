@@ -35,7 +35,7 @@ double legTravelTime(const GliderContext &ctx, double x1, double y1, double x2, 
     return tt;
 }
 
-std::vector<TimedWaypoint> retimeWaypoints(const GliderContext &ctx, std::vector<TimedWaypoint> waypoints, double t0)
+std::vector<TimedPoint> retimeWaypoints(const GliderContext &ctx, std::vector<TimedPoint> waypoints, double t0)
 {
     if (waypoints.empty())
         return waypoints;
@@ -51,7 +51,7 @@ std::vector<TimedWaypoint> retimeWaypoints(const GliderContext &ctx, std::vector
     return waypoints;
 }
 
-double arrivalTime(const GliderContext &ctx, const std::vector<TimedWaypoint> &waypoints, double t0)
+double arrivalTime(const GliderContext &ctx, const std::vector<TimedPoint> &waypoints, double t0)
 {
     double t = t0;
     for (std::size_t i = 1; i < waypoints.size() && std::isfinite(t); ++i)
@@ -59,7 +59,7 @@ double arrivalTime(const GliderContext &ctx, const std::vector<TimedWaypoint> &w
     return t;
 }
 
-double pathLength(const std::vector<TimedWaypoint> &waypoints)
+double pathLength(const std::vector<TimedPoint> &waypoints)
 {
     double len = 0.0;
     for (std::size_t i = 1; i < waypoints.size(); ++i)
@@ -67,10 +67,10 @@ double pathLength(const std::vector<TimedWaypoint> &waypoints)
     return len;
 }
 
-std::vector<TimedWaypoint> waypointsFromPath(const ompl::geometric::PathGeometric &path)
+std::vector<TimedPoint> waypointsFromPath(const ompl::geometric::PathGeometric &path)
 {
     timeSpace(path, "waypointsFromPath");
-    std::vector<TimedWaypoint> out;
+    std::vector<TimedPoint> out;
     out.reserve(path.getStateCount());
     for (std::size_t i = 0; i < path.getStateCount(); ++i)
     {
@@ -80,7 +80,7 @@ std::vector<TimedWaypoint> waypointsFromPath(const ompl::geometric::PathGeometri
     return out;
 }
 
-std::size_t lastHoldEnd(const std::vector<TimedWaypoint> &w)
+std::size_t lastHoldEnd(const std::vector<TimedPoint> &w)
 {
     for (std::size_t k = w.size(); k-- > 1;)
         if (w[k].x == w[k - 1].x && w[k].y == w[k - 1].y && w[k].t > w[k - 1].t)
@@ -88,9 +88,9 @@ std::size_t lastHoldEnd(const std::vector<TimedWaypoint> &w)
     return 0;
 }
 
-std::vector<TimedWaypoint> improveAroundHolds(
-    const GliderContext &ctx, const std::vector<TimedWaypoint> &w,
-    const std::function<std::vector<TimedWaypoint>(const std::vector<TimedWaypoint> &)> &improve)
+std::vector<TimedPoint> improveAroundHolds(
+    const GliderContext &ctx, const std::vector<TimedPoint> &w,
+    const std::function<std::vector<TimedPoint>(const std::vector<TimedPoint> &)> &improve)
 {
     const std::size_t k = lastHoldEnd(w);
     if (k == 0)
@@ -98,15 +98,15 @@ std::vector<TimedWaypoint> improveAroundHolds(
     if (k + 1 < w.size())
     {
         // the piece after the last hold, departing at the hold's end
-        std::vector<TimedWaypoint> out(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(k));
-        const std::vector<TimedWaypoint> tail = improve({w.begin() + static_cast<std::ptrdiff_t>(k), w.end()});
+        std::vector<TimedPoint> out(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(k));
+        const std::vector<TimedPoint> tail = improve({w.begin() + static_cast<std::ptrdiff_t>(k), w.end()});
         out.insert(out.end(), tail.begin(), tail.end());
         return out;
     }
     // the path ends with a hold: improve the part before it, then hold from its new arrival to the old end
-    const std::vector<TimedWaypoint> head(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(k));
-    std::vector<TimedWaypoint> better = improveAroundHolds(ctx, head, improve);
-    const TimedWaypoint &end = w.back();
+    const std::vector<TimedPoint> head(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(k));
+    std::vector<TimedPoint> better = improveAroundHolds(ctx, head, improve);
+    const TimedPoint &end = w.back();
     const double arrival = better.back().t;
     if (!(arrival <= head.back().t) ||
         !ctx.canHold(end.x, end.y, arrival, end.t, ctx.holdTimeStep(), 4) ||
@@ -116,7 +116,7 @@ std::vector<TimedWaypoint> improveAroundHolds(
     return better;
 }
 
-void waypointsToPath(const std::vector<TimedWaypoint> &waypoints, ompl::geometric::PathGeometric &path)
+void waypointsToPath(const std::vector<TimedPoint> &waypoints, ompl::geometric::PathGeometric &path)
 {
     const TimeSE2StateSpace &space = timeSpace(path, "waypointsToPath");
     const auto &si = path.getSpaceInformation();
@@ -137,11 +137,11 @@ void waypointsToPath(const std::vector<TimedWaypoint> &waypoints, ompl::geometri
     si->freeState(st);
 }
 
-std::vector<TimedWaypoint> mergeKeepingSchedule(const GliderContext &ctx, const std::vector<TimedWaypoint> &timed)
+std::vector<TimedPoint> mergeKeepingSchedule(const GliderContext &ctx, const std::vector<TimedPoint> &timed)
 {
     if (timed.size() <= 2)
         return timed;
-    auto flyable = [&](const TimedWaypoint &a, const TimedWaypoint &b) {
+    auto flyable = [&](const TimedPoint &a, const TimedPoint &b) {
         const double dur = b.t - a.t;
         if (!(dur > 0.0) || !std::isfinite(dur) || b.t > ctx.region.tMax)
             return false;
@@ -152,7 +152,7 @@ std::vector<TimedWaypoint> mergeKeepingSchedule(const GliderContext &ctx, const 
             return false;
         return !ctx.environment || ctx.environment->legFree(a.x, a.y, a.t, b.x, b.y, b.t);
     };
-    std::vector<TimedWaypoint> out{timed.front()};
+    std::vector<TimedPoint> out{timed.front()};
     std::size_t i = 0;
     while (i + 1 < timed.size())
     {
@@ -181,7 +181,7 @@ PathSmoother::PathSmoother(std::shared_ptr<const GliderContext> ctx) : ctx_(std:
         throw Error("PathSmoother: the GliderContext must be non-null with a field and a travel-time calculator");
 }
 
-SmoothingResult PathSmoother::smooth(const std::vector<TimedWaypoint> &input) const
+SmoothingResult PathSmoother::smooth(const std::vector<TimedPoint> &input) const
 {
     if (input.empty())
         return {};
@@ -192,7 +192,7 @@ SmoothingResult PathSmoother::smooth(const std::vector<TimedWaypoint> &input) co
         SmoothingResult res;
         res.waypointsBefore = input.size();
         res.arrivalBefore = input.back().t;
-        res.waypoints = improveAroundHolds(*ctx_, input, [&](const std::vector<TimedWaypoint> &piece) {
+        res.waypoints = improveAroundHolds(*ctx_, input, [&](const std::vector<TimedPoint> &piece) {
             SmoothingResult r = smooth(piece);
             return std::isfinite(r.arrivalAfter) && r.arrivalAfter <= piece.back().t ? r.waypoints : piece;
         });
@@ -207,19 +207,19 @@ SmoothingResult PathSmoother::smooth(const std::vector<TimedWaypoint> &input) co
     const std::uint64_t cfc0 = ctx.travel->costFunctionCalls();
     SmoothingResult res;
     res.waypointsBefore = input.size();
-    std::vector<TimedWaypoint> wp = retimeWaypoints(ctx, input, t0);
+    std::vector<TimedPoint> wp = retimeWaypoints(ctx, input, t0);
     res.arrivalBefore = wp.back().t;
     double best = res.arrivalBefore;  // arrival at the goal of the current candidate path (TT[end])
     if (wp.size() > 2 && std::isfinite(best))
     {
-        auto leg = [&](const TimedWaypoint &a, const TimedWaypoint &b, double t) {
+        auto leg = [&](const TimedPoint &a, const TimedPoint &b, double t) {
             return legTravelTime(ctx, a.x, a.y, b.x, b.y, t);
         };
         while (wp.size() > 2)  // loop I
         {
             ++res.passes;
             const std::size_t n = wp.size();
-            std::vector<TimedWaypoint> out{wp[0]};
+            std::vector<TimedPoint> out{wp[0]};
             std::size_t iStart = 0;
             double t1 = wp[1].t - wp[0].t;  // time from WP[i_start] to WP[i_path - 1] along the candidate path
             for (std::size_t iPath = 2; iPath < n; ++iPath)  // loop II
@@ -273,7 +273,7 @@ SmoothingResult PathSmoother::smooth(const std::vector<TimedWaypoint> &input) co
 
 SmoothingResult PathSmoother::smooth(ompl::geometric::PathGeometric &path) const
 {
-    const std::vector<TimedWaypoint> in = waypointsFromPath(path);
+    const std::vector<TimedPoint> in = waypointsFromPath(path);
     if (in.empty())
         return {};
     const std::uint64_t cfc0 = ctx_->travel->costFunctionCalls();
@@ -285,7 +285,7 @@ SmoothingResult PathSmoother::smooth(ompl::geometric::PathGeometric &path) const
     }
     // The waypoints cannot be flown at full speed from the departure (the path waits or flies slow legs): merge
     // keeping the schedule, then try full speed on the fewer waypoints.
-    const std::vector<TimedWaypoint> merged = mergeKeepingSchedule(*ctx_, in);
+    const std::vector<TimedPoint> merged = mergeKeepingSchedule(*ctx_, in);
     SmoothingResult fast = smooth(merged);  // merged.front() is in.front()
     if (std::isfinite(fast.arrivalAfter) && noLater(fast.arrivalAfter, in.back().t))
         res = fast;

@@ -211,11 +211,11 @@ TveResult TveSearch::runCoarseToFine(double sx, double sy, double t0, double gx,
     };
     for (std::size_t k = 0; k < coarse.waypoints.size(); ++k)
     {
-        const TimedWaypoint &a = coarse.waypoints[k];
+        const TimedPoint &a = coarse.waypoints[k];
         mark(a.x, a.y);
         if (k + 1 == coarse.waypoints.size())
             break;
-        const TimedWaypoint &b = coarse.waypoints[k + 1];
+        const TimedPoint &b = coarse.waypoints[k + 1];
         const int n = static_cast<int>(std::ceil(4.0 * std::hypot(b.x - a.x, b.y - a.y) / bs));
         for (int i = 1; i < n; ++i)
             mark(a.x + (b.x - a.x) * i / n, a.y + (b.y - a.y) * i / n);
@@ -285,7 +285,7 @@ TveResult TveSearch::runCoarseToFine(double sx, double sy, double t0, double gx,
         if (r.outcome == TveOutcome::Exact)
         {
             bool touches = false;
-            for (const TimedWaypoint &p : r.waypoints)
+            for (const TimedPoint &p : r.waypoints)
             {
                 const long i = std::lround((p.x - lattice_.xMin()) / lattice_.gridSize());
                 const long j = std::lround((p.y - lattice_.yMin()) / lattice_.gridSize());
@@ -802,9 +802,9 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
     return finish(res);
 }
 
-std::vector<TimedWaypoint> TveSearch::pathTo(Lattice::VertexId v) const
+std::vector<TimedPoint> TveSearch::pathTo(Lattice::VertexId v) const
 {
-    std::vector<TimedWaypoint> out;
+    std::vector<TimedPoint> out;
     if (v == lattice_.goal() && goalHoldUntil_ > dist(v))
         out.push_back({lattice_.x(v), lattice_.y(v), goalHoldUntil_});  // hold at the goal (goal window)
     for (Lattice::VertexId w = v; w != Lattice::kNone; w = parent(w))

@@ -359,7 +359,7 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
     std::vector<NodeKey> chain;
     for (NodeKey n = goalNode; n != kNoNode; n = labels[n].parent)
         chain.push_back(n);
-    std::vector<TimedWaypoint> wp;
+    std::vector<TimedPoint> wp;
     for (auto it = chain.rbegin(); it != chain.rend(); ++it)
     {
         const NodeLabel &l = labels[*it];
@@ -370,7 +370,7 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
     if (arrival > wp.back().t)
         wp.push_back({wp.back().x, wp.back().y, arrival});  // the final hold at the goal until its window opens
     // Merge each run of holds at one place into one motion where the validator accepts it.
-    std::vector<TimedWaypoint> merged;
+    std::vector<TimedPoint> merged;
     for (std::size_t i = 0; i < wp.size();)
     {
         std::size_t j = i;

@@ -28,7 +28,7 @@ struct Search
         return evaluations >= budget || (terminate && *terminate && (*terminate)());
     }
 
-    double cost(const std::vector<TimedWaypoint> &wp)
+    double cost(const std::vector<TimedPoint> &wp)
     {
         ++evaluations;
         return arrivalTime(ctx, wp, t0);
@@ -40,7 +40,7 @@ struct Search
     /// Arrival at the goal when the path is flown from waypoint k, reached at time tk (the legs before k are
     /// unchanged, so their times are reused). Stores the arrival at each waypoint j > k in times[j] (up to the
     /// first infinite one).
-    double costFrom(const std::vector<TimedWaypoint> &wp, std::size_t k, double tk)
+    double costFrom(const std::vector<TimedPoint> &wp, std::size_t k, double tk)
     {
         ++evaluations;
         times.resize(wp.size());
@@ -62,13 +62,13 @@ struct Search
     /// Moves waypoint i by (dx, dy) and its neighbours within radius (interior only) by the same vector scaled
     /// by 1 - |j - i| / (radius + 1); keeps the move iff the arrival gets strictly earlier. timed holds the
     /// arrival times of wp and is updated on acceptance.
-    bool tryMove(std::vector<TimedWaypoint> &wp, std::vector<TimedWaypoint> &timed, double &best, std::size_t i,
+    bool tryMove(std::vector<TimedPoint> &wp, std::vector<TimedPoint> &timed, double &best, std::size_t i,
                  std::size_t radius, double dx, double dy)
     {
         const std::size_t n = wp.size();
         const std::size_t lo = i > radius ? std::max<std::size_t>(1, i - radius) : 1;
         const std::size_t hi = std::min(n - 2, i + radius);
-        const std::vector<TimedWaypoint> keep(wp.begin() + lo, wp.begin() + hi + 1);
+        const std::vector<TimedPoint> keep(wp.begin() + lo, wp.begin() + hi + 1);
         bool inside = true;
         for (std::size_t j = lo; j <= hi; ++j)
         {
@@ -97,7 +97,7 @@ struct Search
     }
 
     /// Compass search on the interior waypoints; wp and best are updated in place.
-    void pattern(std::vector<TimedWaypoint> &wp, double &best, double s0, double sMin)
+    void pattern(std::vector<TimedPoint> &wp, double &best, double s0, double sMin)
     {
         const std::size_t n = wp.size();
         if (n < 3)
@@ -105,7 +105,7 @@ struct Search
         std::vector<double> step(n, s0);
         const double sMax = 4.0 * s0;
         const std::size_t bumpRadius = bumpFraction > 0.0 ? static_cast<std::size_t>(bumpFraction * double(n)) : 0;
-        std::vector<TimedWaypoint> timed = retimeWaypoints(ctx, wp, t0);  // arrival times of the current path
+        std::vector<TimedPoint> timed = retimeWaypoints(ctx, wp, t0);  // arrival times of the current path
         while (!exhausted())
         {
             bool active = false;
@@ -152,11 +152,11 @@ struct Search
     }
 
     /// Drops interior waypoints whose removal does not make the arrival later.
-    void dropRedundant(std::vector<TimedWaypoint> &wp, double &best)
+    void dropRedundant(std::vector<TimedPoint> &wp, double &best)
     {
         for (std::size_t i = 1; i + 1 < wp.size() && !exhausted();)
         {
-            std::vector<TimedWaypoint> cand = wp;
+            std::vector<TimedPoint> cand = wp;
             cand.erase(cand.begin() + static_cast<std::ptrdiff_t>(i));
             const double c = cost(cand);
             if (c <= best)
@@ -171,7 +171,7 @@ struct Search
     }
 };
 
-double meanLeg(const std::vector<TimedWaypoint> &wp)
+double meanLeg(const std::vector<TimedPoint> &wp)
 {
     return wp.size() > 1 ? pathLength(wp) / static_cast<double>(wp.size() - 1) : 0.0;
 }
@@ -190,7 +190,7 @@ WaypointRefiner::WaypointRefiner(std::shared_ptr<const GliderContext> ctx, Refin
         throw Error("WaypointRefiner: minRelativeGain must be >= 0");
 }
 
-RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input) const
+RefinementResult WaypointRefiner::refine(const std::vector<TimedPoint> &input) const
 {
     if (input.empty())
         return {};
@@ -201,7 +201,7 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input
         RefinementResult res;
         res.waypointsBefore = input.size();
         res.arrivalBefore = input.back().t;
-        res.waypoints = improveAroundHolds(*ctx_, input, [&](const std::vector<TimedWaypoint> &piece) {
+        res.waypoints = improveAroundHolds(*ctx_, input, [&](const std::vector<TimedPoint> &piece) {
             RefinementResult r = refine(piece);
             res.evaluations += r.evaluations;
             res.acceptedMoves += r.acceptedMoves;
@@ -217,7 +217,7 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input
     const std::uint64_t cfc0 = ctx.travel->costFunctionCalls();
     RefinementResult res;
     res.waypointsBefore = input.size();
-    std::vector<TimedWaypoint> wp = input;
+    std::vector<TimedPoint> wp = input;
     Search s{ctx, t0, params_.maxEvaluations, params_.bumpFraction, &params_.terminate};
     double best = s.cost(wp);
     res.arrivalBefore = best;
@@ -225,7 +225,7 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input
     {
         const double len = pathLength(wp);
         const double sMin = params_.minStep > 0.0 ? params_.minStep : 1e-4 * len;
-        auto s0For = [&](const std::vector<TimedWaypoint> &w) {
+        auto s0For = [&](const std::vector<TimedPoint> &w) {
             return params_.initialStep > 0.0 ? params_.initialStep : 0.25 * meanLeg(w);
         };
         s.dropRedundant(wp, best);
@@ -234,7 +234,7 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input
         {
             if (2 * wp.size() - 1 > params_.maxWaypoints)
                 break;
-            std::vector<TimedWaypoint> cand;
+            std::vector<TimedPoint> cand;
             const double splitAbove = params_.splitFraction * meanLeg(wp);
             for (std::size_t i = 0; i < wp.size(); ++i)
             {
@@ -276,7 +276,7 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedWaypoint> &input
 
 RefinementResult WaypointRefiner::refine(ompl::geometric::PathGeometric &path) const
 {
-    const std::vector<TimedWaypoint> in = waypointsFromPath(path);
+    const std::vector<TimedPoint> in = waypointsFromPath(path);
     if (in.empty())
         return {};
     RefinementResult res = refine(in);

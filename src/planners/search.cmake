@@ -5,5 +5,4 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/TveSearch.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ZAStarTVE.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Wavefront.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/PlannerRegistry.cpp
 )

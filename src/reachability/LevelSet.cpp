@@ -130,7 +130,7 @@ SparseDistance polygonDistance(const Grid &g, const Polygon &p, double sx, doubl
                                double clearance = 0.0)
 {
     SparseDistance out;
-    const BoundingBox &b = p.bounds();
+    const Box &b = p.bounds();
     const int i0 = std::max(0, static_cast<int>(std::floor((b.xMin + sx - band - g.x0) / g.h)));
     const int i1 = std::min(g.nx - 1, static_cast<int>(std::ceil((b.xMax + sx + band - g.x0) / g.h)));
     const int j0 = std::max(0, static_cast<int>(std::floor((b.yMin + sy - band - g.y0) / g.h)));

@@ -47,10 +47,10 @@ double defaultLevelSetResolution(const GliderContext &ctx)
     return std::max(r.xMax - r.xMin, r.yMax - r.yMin) / 200.0;
 }
 
-std::vector<TimedWaypoint> levelSetWaypoints(const GliderContext &ctx, const std::vector<TimedPoint> &path,
+std::vector<TimedPoint> levelSetWaypoints(const GliderContext &ctx, const std::vector<TimedPoint> &path,
                                              double tolerance, std::string *why)
 {
-    std::vector<TimedWaypoint> out;
+    std::vector<TimedPoint> out;
     if (path.size() < 2)
         return out;
     const auto same = [&](std::size_t i, std::size_t j) { return path[i].x == path[j].x && path[i].y == path[j].y; };

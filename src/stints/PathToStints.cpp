@@ -12,12 +12,12 @@ namespace ompl_glider
 namespace
 {
 /// The path's time at the point of the path nearest (x, y) (the glider's progress along it, whatever the clock).
-double progressTime(const std::vector<TimedWaypoint> &path, double x, double y)
+double progressTime(const std::vector<TimedPoint> &path, double x, double y)
 {
     double best = INFINITY, tBest = path.front().t;
     for (std::size_t k = 0; k + 1 < path.size(); ++k)
     {
-        const TimedWaypoint &a = path[k], &b = path[k + 1];
+        const TimedPoint &a = path[k], &b = path[k + 1];
         const double ex = b.x - a.x, ey = b.y - a.y, l2 = ex * ex + ey * ey;
         const double q = l2 > 0.0 ? std::clamp(((x - a.x) * ex + (y - a.y) * ey) / l2, 0.0, 1.0) : 0.0;
         const double d = std::hypot(a.x + q * ex - x, a.y + q * ey - y);
@@ -31,7 +31,7 @@ double progressTime(const std::vector<TimedWaypoint> &path, double x, double y)
 }
 }  // namespace
 
-PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<TimedWaypoint> &path,
+PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<TimedPoint> &path,
                                   const BearingOptimizerParams &params)
 {
     if (path.size() < 2)
@@ -49,7 +49,7 @@ PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<T
     {
         // aim one stint ahead of the glider's progress along the path (ahead of the path's clock or behind it)
         const double tau = progressTime(path, x, y);
-        const TimedWaypoint aim = planAt(path, tau + D);
+        const TimedPoint aim = planAt(path, tau + D);
         double dx = aim.x - x, dy = aim.y - y;
         const double len = std::hypot(dx, dy);
         double b0 = sim.bearingToGoal(x, y);

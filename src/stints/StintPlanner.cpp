@@ -110,7 +110,7 @@ ompl::base::PlannerStatus StintPlanner::solve(const ompl::base::PlannerTerminati
     {
         ompl::base::State *state = si_->allocState();
         auto *ts = state->as<TimeSE2StateSpace::StateType>();
-        const TimedWaypoint &w = plan_.surfacings[k];
+        const TimedPoint &w = plan_.surfacings[k];
         ts->setXYT(w.x, w.y, w.t);
         const double b = k < plan_.bearings.size() ? plan_.bearings[k] : (k > 0 ? plan_.bearings[k - 1] : 0.0);
         const Point2 h = bearingVector(b);

@@ -73,7 +73,7 @@ std::uint64_t StintSimulator::stintsFlown() const
     return flown_->load(std::memory_order_relaxed);
 }
 
-DiveEnd StintSimulator::flyStint(double x, double y, double t, double bearing, std::vector<TimedWaypoint> *track) const
+DiveEnd StintSimulator::flyStint(double x, double y, double t, double bearing, std::vector<TimedPoint> *track) const
 {
     flown_->fetch_add(1, std::memory_order_relaxed);
     const Point2 h = bearingVector(bearing);
@@ -155,7 +155,7 @@ StintPlan StintSimulator::direct() const
 
 double StintSimulator::cost(const StintPlan &p) const
 {
-    const TimedWaypoint &last = p.surfacings.back();
+    const TimedPoint &last = p.surfacings.back();
     const double lost = p.grounded ? std::max(0.0, endTime() - last.t) : 0.0;
     if (settings_.objective == StintObjective::RemainingDistance)
         return p.remainingDistance + maxReach() * lost;

@@ -164,7 +164,7 @@ TEST_F(JetGrid, TravelTimesAlongFixedMultiLegPathsAgreeWithinOnePercent)
         const TveResult r = TveSearch(makeGliderContext(gp), 0.4, 3).run(q.sx, q.sy, q.t0, q.gx, q.gy, TveOptions{});
         ASSERT_EQ(r.outcome, TveOutcome::Exact);
         std::vector<Pt> path;
-        for (const TimedWaypoint &w : r.waypoints)
+        for (const TimedPoint &w : r.waypoints)
             path.push_back({w.x, w.y});
         ASSERT_GE(path.size(), 4u);
         paths.emplace_back(path, q.t0);

@@ -48,7 +48,7 @@ TEST(Execution, CurrentSensitiveGliderInAUniformCurrentStaysOnItsLineAndArrivesO
     const double V = 0.4, L = 100000.0, dirx = 0.8, diry = 0.6;
     const double cPar = 0.15 * dirx + 0.2 * diry, cPerp = -0.15 * diry + 0.2 * dirx;
     const double ground = std::sqrt(V * V - cPerp * cPerp) + cPar, T = L / ground;
-    const std::vector<TimedWaypoint> plan{{0, 0, 0}, {L * dirx * 0.5, L * diry * 0.5, 0.5 * T}, {L * dirx, L * diry, T}};
+    const std::vector<TimedPoint> plan{{0, 0, 0}, {L * dirx * 0.5, L * diry * 0.5, 0.5 * T}, {L * dirx, L * diry, T}};
     ExecutionOptions o;
     o.surfacingInterval = 3600.0;
     o.radius = 1.0;
@@ -57,7 +57,7 @@ TEST(Execution, CurrentSensitiveGliderInAUniformCurrentStaysOnItsLineAndArrivesO
     EXPECT_FALSE(r.grounded);
     // within radius 1 m: arrival 1 m / ground speed before the plan's
     EXPECT_NEAR(r.arrivalTime, T - 1.0 / ground, 1e-6 * T);
-    for (const TimedWaypoint &p : r.track)
+    for (const TimedPoint &p : r.track)
         EXPECT_NEAR(p.x * diry - p.y * dirx, 0.0, 1e-6);  // on the line
     EXPECT_LT(r.finalDistance, 1.0 + 1e-6);
     EXPECT_NEAR(r.madeGoodSpeed, ground, 1e-6 * ground);
@@ -70,7 +70,7 @@ TEST(Execution, CurrentBlindGliderDriftsBetweenSurfacingsAsTheClosedFormSays)
     const Velocity cur{0.0, 0.25};
     const UniformCurrent c(cur.u, cur.v);
     const double V = 0.4, T = 3 * 3600.0;
-    const std::vector<TimedWaypoint> plan{{0, 0, 0}, {60000, 0, 150000}, {120000, 10000, 300000}};
+    const std::vector<TimedPoint> plan{{0, 0, 0}, {60000, 0, 150000}, {120000, 10000, 300000}};
     ExecutionOptions o;
     o.surfacingInterval = T;
     o.step = 500.0;
@@ -80,7 +80,7 @@ TEST(Execution, CurrentBlindGliderDriftsBetweenSurfacingsAsTheClosedFormSays)
     std::size_t k = 1;
     for (; t < o.endTime - 1e-9; ++k)
     {
-        const TimedWaypoint w = t < 150000 ? plan[1] : plan[2];
+        const TimedPoint w = t < 150000 ? plan[1] : plan[2];
         const double dx = w.x - x, dy = w.y - y, n = std::hypot(dx, dy), h = std::min(T, o.endTime - t);
         x += h * (V * dx / n + cur.u);
         y += h * (V * dy / n + cur.v);
@@ -98,7 +98,7 @@ TEST(Execution, CurrentBlindGliderDriftsBetweenSurfacingsAsTheClosedFormSays)
 TEST(Execution, AForecastWithoutTheCurrentSteersStraightAndTheTruthCarriesTheGlider)
 {
     const UniformCurrent forecast(0.0, 0.0), truth(0.1, -0.05);
-    const std::vector<TimedWaypoint> plan{{0, 0, 0}, {50000, 0, 125000}};
+    const std::vector<TimedPoint> plan{{0, 0, 0}, {50000, 0, 125000}};
     ExecutionOptions o;
     o.endTime = 7200.0;
     const FlownTrack s = flyPlan(plan, 0.4, forecast, truth, nullptr, ControlStrategy::CurrentSensitive, o);
@@ -120,14 +120,14 @@ TEST(Execution, AGliderCarriedOntoAnIslandIsGroundedThere)
     auto regions = std::make_shared<ForbiddenRegions>();
     regions->add(std::make_shared<StaticRegion>(
         "Reef", Polygon({{10000, 8000}, {30000, 8000}, {30000, 20000}, {10000, 20000}})));
-    const std::vector<TimedWaypoint> plan{{0, 0, 0}, {40000, 0, 100000}};
+    const std::vector<TimedPoint> plan{{0, 0, 0}, {40000, 0, 100000}};
     ExecutionOptions o;
     o.radius = 100.0;
     const FlownTrack r = flyPlan(plan, 0.4, c, c, regions.get(), ControlStrategy::Greedy, o);
     ASSERT_TRUE(r.grounded);
     EXPECT_FALSE(r.reached);
     EXPECT_NE(r.groundedWhy.find("Reef"), std::string::npos) << r.groundedWhy;
-    const TimedWaypoint &last = r.track.back();
+    const TimedPoint &last = r.track.back();
     EXPECT_TRUE(regions->pointFree(last.x, last.y, last.t));
     // stopped at the reef's edge, within one step: the ground speed is at most 0.4 + 0.3 m/s
     EXPECT_GT(last.y, 8000.0 - 0.7 * o.step);
@@ -144,7 +144,7 @@ TEST(Execution, AZaStarTvePlanOnTheJetFlownInItsOwnFieldArrivesOnTime)
     const MissionProblem problem(spec);
     const MissionResult res = runMission(problem);
     ASSERT_TRUE(res.plan.solved);
-    const std::vector<TimedWaypoint> &plan = res.plan.path;
+    const std::vector<TimedPoint> &plan = res.plan.path;
     ExecutionOptions o;
     // the built-in jet has no units; at the scale of examples/gulf_stream_window.yaml (a time unit is a day, a
     // length unit 50 km) an hour is 1/24 and 0.05 length units are 2.5 km
@@ -167,13 +167,13 @@ TEST(Execution, ReplanningWithAStraightLinePlannerAndNoForecastCurrentFliesAsGre
     // the replanner gives the straight line from the fix to the goal; with a forecast without current the heading
     // at each surfacing is then the direction to the goal: the fixes of greedy control, whatever the truth does
     const UniformCurrent forecast(0.0, 0.0), truth(0.05, 0.2);
-    const std::vector<TimedWaypoint> plan{{0, 0, 0}, {30000, 20000, 5000}, {60000, 0, 150000}};
+    const std::vector<TimedPoint> plan{{0, 0, 0}, {30000, 20000, 5000}, {60000, 0, 150000}};
     ExecutionOptions o;
     o.radius = 500.0;
     unsigned calls = 0;
-    o.replan = [&](double x, double y, double t, const std::vector<TimedWaypoint> &) {
+    o.replan = [&](double x, double y, double t, const std::vector<TimedPoint> &) {
         ++calls;
-        return std::vector<TimedWaypoint>{{x, y, t}, {60000, 0, t + std::hypot(60000 - x, y) / 0.4}};
+        return std::vector<TimedPoint>{{x, y, t}, {60000, 0, t + std::hypot(60000 - x, y) / 0.4}};
     };
     const FlownTrack g = flyPlan(plan, 0.4, forecast, truth, nullptr, ControlStrategy::Greedy, o);
     const FlownTrack r = flyPlan(plan, 0.4, forecast, truth, nullptr, ControlStrategy::Replan, o);

@@ -231,7 +231,7 @@ TEST(Coastline, RouteGoesAroundJamaicaAndAStartOnItIsBadInput)
     const auto land = readLandPolygons(kJamaica, -80, 16, -75, 20);
     for (std::size_t k = 0; k + 1 < r.plan.path.size(); ++k)
     {
-        const TimedWaypoint &a = r.plan.path[k], &b = r.plan.path[k + 1];
+        const TimedPoint &a = r.plan.path[k], &b = r.plan.path[k + 1];
         const int n = std::max(2, int(std::hypot(b.x - a.x, b.y - a.y) / 200.0));
         for (int q = 0; q <= n; ++q)
         {

@@ -100,13 +100,13 @@ TEST(ForecastLand, RouteGoesAroundAPeninsulaStoredAsZeroVelocity)
     EXPECT_TRUE(std::isinf(r.plan.straightLineTime)) << "the straight leg must be refused";
     // the route passes north of the peninsula
     double northmost = -90.0;
-    for (const TimedWaypoint &w : r.plan.path)
+    for (const TimedPoint &w : r.plan.path)
         northmost = std::max(northmost, problem.toGeographic({w.x, w.y}).lat);
     EXPECT_GT(northmost, latOf(11));
     // independent land clearance: every ~50 m along every leg
     for (std::size_t k = 0; k + 1 < r.plan.path.size(); ++k)
     {
-        const TimedWaypoint &a = r.plan.path[k], &b = r.plan.path[k + 1];
+        const TimedPoint &a = r.plan.path[k], &b = r.plan.path[k + 1];
         const double len = std::hypot(b.x - a.x, b.y - a.y);
         const int n = std::max(2, int(len / 50.0));
         for (int q = 0; q <= n; ++q)

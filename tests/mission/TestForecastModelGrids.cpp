@@ -19,12 +19,12 @@ namespace
 {
 /// Samples every leg of the route every `step` metres, calls bad(lon, lat) and fails on the first true.
 template <typename Bad>
-void expectClearOfLand(const MissionProblem &problem, const std::vector<TimedWaypoint> &path, double step, Bad bad)
+void expectClearOfLand(const MissionProblem &problem, const std::vector<TimedPoint> &path, double step, Bad bad)
 {
     std::size_t samples = 0;
     for (std::size_t k = 0; k + 1 < path.size(); ++k)
     {
-        const TimedWaypoint &a = path[k], &b = path[k + 1];
+        const TimedPoint &a = path[k], &b = path[k + 1];
         const int n = std::max(2, int(std::hypot(b.x - a.x, b.y - a.y) / step));
         for (int q = 0; q <= n; ++q, ++samples)
         {
@@ -84,7 +84,7 @@ TEST(ForecastModelGrids, RouteAcrossTheIndexSeamOfAWrappingCurvilinearGridGoesRo
     expectClearOfLand(problem, r.plan.path, 200.0, bad);
     // the route went round the island: north of row 31 or south of row 29 somewhere
     double north = -90, south = 90;
-    for (const TimedWaypoint &w : r.plan.path)
+    for (const TimedPoint &w : r.plan.path)
     {
         const LonLat g = problem.toGeographic({w.x, w.y});
         north = std::max(north, g.lat);

@@ -50,7 +50,7 @@ MissionSpec withWindow(const char *text, double begin, double end)
     return m;
 }
 
-bool samePosition(const TimedWaypoint &a, const TimedWaypoint &b)
+bool samePosition(const TimedPoint &a, const TimedPoint &b)
 {
     return a.x == b.x && a.y == b.y;
 }
@@ -65,7 +65,7 @@ void expectValidPath(const MissionProblem &problem, const PlannedPath &p)
     ASSERT_TRUE(mv);
     for (std::size_t i = 1; i < p.path.size(); ++i)
     {
-        const TimedWaypoint &a = p.path[i - 1], &b = p.path[i];
+        const TimedPoint &a = p.path[i - 1], &b = p.path[i];
         EXPECT_EQ(mv->classify(a.x, a.y, a.t, b.x, b.y, b.t), MotionVerdict::Valid) << "leg " << i - 1;
     }
     ompl::geometric::PathGeometric path(si);
@@ -158,7 +158,7 @@ TEST(GoalWindow, TimingWhereTheGoalCannotBeHeld)
             lastHold = i;
     ASSERT_GT(lastHold, 0u);
     EXPECT_TRUE(mv->canHold(p.path[lastHold].x, p.path[lastHold].y, p.path[lastHold - 1].t, p.path[lastHold].t));
-    const std::vector<TimedWaypoint> rest(p.path.begin() + static_cast<std::ptrdiff_t>(lastHold), p.path.end());
+    const std::vector<TimedPoint> rest(p.path.begin() + static_cast<std::ptrdiff_t>(lastHold), p.path.end());
     const double flown = arrivalTime(*ctx, rest, p.path[lastHold].t);
     EXPECT_NEAR(flown, p.path.back().t, 1e-6);
     EXPECT_GE(flown, 30.0 - 1e-6);

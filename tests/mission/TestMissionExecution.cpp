@@ -172,7 +172,7 @@ TEST(MissionExecution, UniformTruthArrivesAtTheClosedFormTime)
         EXPECT_NEAR(f.arrivalTime, r.plan.departure + 7.8 / 0.8, 1e-6) << controlStrategyName(s);
         EXPECT_LE(f.finalDistance, 0.2 + 1e-9);
         // at the fixes the glider is on the x axis
-        for (const TimedWaypoint &w : f.fixes)
+        for (const TimedPoint &w : f.fixes)
             EXPECT_NEAR(w.y, 0.0, 1e-6);
     }
 }

@@ -22,7 +22,7 @@ TEST(WaypointRefiner, ApproachesZermeloOptimumInShearFlow)
     // feasible polyline (about 5x slower); the refined path must come within 1% of the optimum, never below it
     // by more than the travel-time integration error.
     auto ctx = makeContext(std::make_shared<LinearShear>(-1.0), 1.0, box(-1, 6, -3, 3), nullptr, 1e-5);
-    const std::vector<TimedWaypoint> start = {{3.5, -1.8, 0}, {5.0, -0.8, 0}, {0, 0, 0}};
+    const std::vector<TimedPoint> start = {{3.5, -1.8, 0}, {5.0, -0.8, 0}, {0, 0, 0}};
     const double before = arrivalTime(*ctx, start, 0.0);
     ASSERT_TRUE(std::isfinite(before));
     ASSERT_GT(before, 2 * 5.26493205);
@@ -100,12 +100,12 @@ TEST(WaypointRefiner, StopsWhenTheTerminationConditionSaysSo)
 TEST(WaypointRefiner, InfeasibleInputAndBadParameters)
 {
     auto ctx = makeContext(std::make_shared<UniformCurrent>(1.0, 0.0), 0.5, box(-10, 10, -10, 10));
-    const std::vector<TimedWaypoint> wp = {{0, 0, 0}, {-1, 0.5, 0}, {-3, 1, 0}};
+    const std::vector<TimedPoint> wp = {{0, 0, 0}, {-1, 0.5, 0}, {-3, 1, 0}};
     const RefinementResult r = WaypointRefiner(ctx).refine(wp);
     EXPECT_FALSE(std::isfinite(r.arrivalBefore));
     ASSERT_EQ(r.waypointsAfter, 3u);
     EXPECT_EQ(r.waypoints[1].x, -1.0);
-    EXPECT_TRUE(WaypointRefiner(ctx).refine(std::vector<TimedWaypoint>{}).waypoints.empty());
+    EXPECT_TRUE(WaypointRefiner(ctx).refine(std::vector<TimedPoint>{}).waypoints.empty());
     RefinerParams bad;
     bad.maxEvaluations = 0;
     EXPECT_THROW(WaypointRefiner(ctx, bad), Error);

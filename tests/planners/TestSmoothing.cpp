@@ -55,7 +55,7 @@ double uniformTime(double L, double px, double py, double cu, double cv, double 
 TEST(PathSmoother, StaircaseInUniformCurrentBecomesStraightLeg)
 {
     auto ctx = makeContext(std::make_shared<UniformCurrent>(0.2, 0.1), 0.5, box(-1, 10, -1, 10));
-    std::vector<TimedWaypoint> stairs;
+    std::vector<TimedPoint> stairs;
     for (int i = 0; i <= 8; ++i)
         stairs.push_back({0.5 * ((i + 1) / 2), 0.5 * (i / 2), 0.0});  // (0,0),(0.5,0),(0.5,0.5),(1,0.5),...
     const std::uint64_t cfc0 = ctx->travel->costFunctionCalls();
@@ -92,7 +92,7 @@ TEST(PathSmoother, NeverLaterOnJetLatticePaths)
             ASSERT_EQ(lat.outcome, TveOutcome::Exact);
             for (int variant = 0; variant < 4; ++variant)
             {
-                std::vector<TimedWaypoint> wp = lat.waypoints;
+                std::vector<TimedPoint> wp = lat.waypoints;
                 if (variant > 0)
                     for (std::size_t i = 1; i + 1 < wp.size(); ++i)
                     {
@@ -131,7 +131,7 @@ TEST(PathSmoother, DoesNotMergeAcrossObstacle)
     // A box between start and goal; the path goes round it. The direct leg would be faster but is blocked.
     auto env = std::make_shared<BoxEnvironment>(2, 3, -1, 1);
     auto ctx = makeContext(std::make_shared<UniformCurrent>(0.0, 0.0), 0.5, box(-1, 6, -3, 3), env);
-    const std::vector<TimedWaypoint> wp = {{0, 0, 0}, {1, 1.5, 0}, {2, 1.5, 0}, {3, 1.5, 0}, {4, 1.5, 0}, {5, 0, 0}};
+    const std::vector<TimedPoint> wp = {{0, 0, 0}, {1, 1.5, 0}, {2, 1.5, 0}, {3, 1.5, 0}, {4, 1.5, 0}, {5, 0, 0}};
     const SmoothingResult r = PathSmoother(ctx).smooth(wp);
     EXPECT_LT(r.waypointsAfter, r.waypointsBefore);
     EXPECT_GE(r.waypointsAfter, 3u);
@@ -148,7 +148,7 @@ TEST(PathSmoother, InfeasiblePathUnchanged)
 {
     // Current 1.0 eastward, V = 0.5: any leg heading west is infeasible.
     auto ctx = makeContext(std::make_shared<UniformCurrent>(1.0, 0.0), 0.5, box(-10, 10, -10, 10));
-    const std::vector<TimedWaypoint> wp = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-3, 1, 0}};
+    const std::vector<TimedPoint> wp = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-3, 1, 0}};
     const SmoothingResult r = PathSmoother(ctx).smooth(wp);
     EXPECT_FALSE(std::isfinite(r.arrivalBefore));
     ASSERT_EQ(r.waypointsAfter, 4u);
@@ -171,7 +171,7 @@ TEST(PathSmoother, OmplPathAdapter)
     si->setStateValidityChecker([](const ompl::base::State *) { return true; });
     si->setup();
     auto ctx = makeContext(std::make_shared<UniformCurrent>(0.1, 0.0), 0.5, box(-1, 10, -1, 10));
-    std::vector<TimedWaypoint> wp = {{0, 0, 0}, {1, 0.2, 0}, {2, 0, 0}, {3, 0.2, 0}, {4, 0, 0}};
+    std::vector<TimedPoint> wp = {{0, 0, 0}, {1, 0.2, 0}, {2, 0, 0}, {3, 0.2, 0}, {4, 0, 0}};
     wp = retimeWaypoints(*ctx, wp, 0.0);
     ompl::geometric::PathGeometric path(si);
     waypointsToPath(wp, path);
@@ -191,9 +191,9 @@ TEST(PathSmoother, WaitingPathMergedKeepingItsSchedule)
     // A path that waits (slow first leg) because flying at full speed would meet the adverse current: its
     // waypoints cannot be flown at full speed from t0, so smoothing merges legs keeping the schedule.
     auto ctx = makeContext(std::make_shared<AdverseUntilFive>(), 0.5, box(-1, 5, -1, 1));
-    const std::vector<TimedWaypoint> timed = {{0, 0, 0}, {1, 0, 6}, {2, 0, 8}, {3, 0, 10}};
+    const std::vector<TimedPoint> timed = {{0, 0, 0}, {1, 0, 6}, {2, 0, 8}, {3, 0, 10}};
     EXPECT_FALSE(std::isfinite(arrivalTime(*ctx, timed, 0.0)));
-    const std::vector<TimedWaypoint> merged = mergeKeepingSchedule(*ctx, timed);
+    const std::vector<TimedPoint> merged = mergeKeepingSchedule(*ctx, timed);
     ASSERT_EQ(merged.size(), 3u);  // (0,0,0) -> (1,0,6) -> (3,0,10): the last two legs flown in exactly 4
     EXPECT_EQ(merged[1].x, 1.0);
     EXPECT_EQ(merged[1].t, 6.0);
@@ -225,13 +225,13 @@ TEST(PathSmoother, DepartsAtTheFirstWaypointsTime)
 {
     // The departure is the first waypoint's time; the other input times are ignored. Empty input: empty result.
     auto ctx = makeContext(std::make_shared<UniformCurrent>(0.2, 0.0), 0.5, box(0, 10, -1, 1));
-    const std::vector<TimedWaypoint> wp{{1.0, 0.0, 3.0}, {4.0, 0.5, 99.0}, {9.0, 0.0, -1.0}};
+    const std::vector<TimedPoint> wp{{1.0, 0.0, 3.0}, {4.0, 0.5, 99.0}, {9.0, 0.0, -1.0}};
     const SmoothingResult r = PathSmoother(ctx).smooth(wp);
     ASSERT_EQ(r.waypoints.size(), 2u);
     EXPECT_EQ(r.waypoints.front().t, 3.0);
     EXPECT_EQ(r.arrivalBefore, arrivalTime(*ctx, wp, 3.0));
     EXPECT_NEAR(r.arrivalAfter, 3.0 + 8.0 / 0.7, 1e-9);
-    const SmoothingResult e = PathSmoother(ctx).smooth(std::vector<TimedWaypoint>{});
+    const SmoothingResult e = PathSmoother(ctx).smooth(std::vector<TimedPoint>{});
     EXPECT_TRUE(e.waypoints.empty());
     EXPECT_EQ(e.waypointsBefore, 0u);
 }
@@ -242,7 +242,7 @@ TEST(PathSmoother, CollinearTieMergedDespiteRounding)
     // time as the legs it replaces, up to rounding (here the sum of legs is 1 ulp earlier). The tie must merge, so
     // only start and goal remain, and the arrival is the closed form to rounding.
     auto ctx = makeContext(std::make_shared<UniformCurrent>(0.2, 0.0), 0.5, box(0, 10, -1, 1));
-    const std::vector<TimedWaypoint> wp{{1.0, 0.0, 0.0}, {4.0, 0.0, 0.0}, {4.5, 0.0, 0.0}, {9.0, 0.0, 0.0}};
+    const std::vector<TimedPoint> wp{{1.0, 0.0, 0.0}, {4.0, 0.0, 0.0}, {4.5, 0.0, 0.0}, {9.0, 0.0, 0.0}};
     const SmoothingResult r = PathSmoother(ctx).smooth(wp);
     EXPECT_EQ(r.waypointsBefore, 4u);
     EXPECT_EQ(r.waypointsAfter, 2u);

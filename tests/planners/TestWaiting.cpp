@@ -54,12 +54,12 @@ GliderProblem walledIn()
     return p;
 }
 
-bool samePosition(const TimedWaypoint &a, const TimedWaypoint &b)
+bool samePosition(const TimedPoint &a, const TimedPoint &b)
 {
     return a.x == b.x && a.y == b.y;
 }
 
-double holdTime(const std::vector<TimedWaypoint> &w)
+double holdTime(const std::vector<TimedPoint> &w)
 {
     double h = 0.0;
     for (std::size_t i = 1; i < w.size(); ++i)
@@ -69,7 +69,7 @@ double holdTime(const std::vector<TimedWaypoint> &w)
 }
 
 /// Every motion valid for the motion validator and PathGeometric::check() on the waypoints.
-void expectValid(const og::SimpleSetupPtr &ss, const std::vector<TimedWaypoint> &w)
+void expectValid(const og::SimpleSetupPtr &ss, const std::vector<TimedPoint> &w)
 {
     const auto si = ss->getSpaceInformation();
     const auto mv = std::dynamic_pointer_cast<TravelTimeMotionValidator>(si->getMotionValidator());
@@ -136,7 +136,7 @@ TEST(LatticeWaiting, WalledInStartWaitsForTheLaneToOpen)
     ASSERT_EQ(ss->solve(30.0), ob::PlannerStatus::EXACT_SOLUTION);
     const og::PathGeometric &sol = ss->getSolutionPath();
     EXPECT_TRUE(sol.check());
-    const std::vector<TimedWaypoint> w = waypointsFromPath(sol);
+    const std::vector<TimedPoint> w = waypointsFromPath(sol);
     EXPECT_GE(w.back().t, kT + 5.0);
     EXPECT_LE(w.back().t, kT + 5.5 + 1e-6);
 }
@@ -199,7 +199,7 @@ TEST(LatticeWaiting, GoalWindowTimedWhereTheGoalCannotBeHeld)
     EXPECT_GT(holdTime(w), 0.0);
     expectValid(ss, w);
     // re-fly: the edge into the goal flown as fast as possible from its departure lands on the arrival
-    const TimedWaypoint &a = w[w.size() - 2];
+    const TimedPoint &a = w[w.size() - 2];
     EXPECT_NEAR(a.t + ctx->travel->travelTime(a.x, a.y, w.back().x, w.back().y, a.t), w.back().t, 1e-9);
 }
 

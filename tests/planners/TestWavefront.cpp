@@ -25,7 +25,7 @@
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
-#include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/planners/Wavefront.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 
@@ -211,7 +211,7 @@ TEST(Wavefront, WaitsOutALaneClosedAroundTheStart)
     for (std::size_t i = 1; i < wp.size(); ++i)
         held = held || (wp[i].x == wp[i - 1].x && wp[i].y == wp[i - 1].y && wp[i].t > wp[i - 1].t);
     EXPECT_TRUE(held);
-    for (const TimedWaypoint &q : wp)
+    for (const TimedPoint &q : wp)
         if (q.x >= 0.6)
         {
             EXPECT_GT(q.t, 10.0);
@@ -261,7 +261,7 @@ TEST(Wavefront, GoalWindowIsMetByHoldingAtTheGoal)
     const auto &wp = w.planner->getWaypoints();
     ASSERT_GE(wp.size(), 3u);
     // the last motion is the hold at the goal from the earliest arrival to the window's opening
-    const TimedWaypoint &a = wp[wp.size() - 2], &b = wp.back();
+    const TimedPoint &a = wp[wp.size() - 2], &b = wp.back();
     EXPECT_EQ(a.x, b.x);
     EXPECT_EQ(a.y, b.y);
     EXPECT_NEAR(a.x, p.goalX, 1e-12);

@@ -16,7 +16,7 @@
 #include "ompl_glider/environment/TimeWindowedZone.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/reachability/LevelSetPlanner.h"
 

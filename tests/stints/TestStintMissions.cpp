@@ -58,7 +58,7 @@ TEST(StintMissions, EveryStintPlannerFliesTheMissionThroughThePipeline)
         const StintOutcome &s = *r.plan.stints;
         EXPECT_FALSE(s.converted);
         const Point2 g = problem.getGoal();
-        const TimedWaypoint &last = s.plan.surfacings.back();
+        const TimedPoint &last = s.plan.surfacings.back();
         EXPECT_NEAR(s.plan.remainingDistance, std::hypot(g.x - last.x, g.y - last.y), 1e-12);
         if (!s.plan.grounded)
         {

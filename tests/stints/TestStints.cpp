@@ -110,14 +110,14 @@ TEST(Stints, StintIntoAnIslandStopsThere)
     const StintPlan p = sim.direct();  // due east, through the rock
     ASSERT_TRUE(p.grounded);
     EXPECT_NE(p.groundedWhy.find("Rock"), std::string::npos) << p.groundedWhy;
-    const TimedWaypoint &end = p.surfacings.back();
+    const TimedPoint &end = p.surfacings.back();
     // it stops at the start of the step that meets the rock: within one step (V * step) west of x = 3
     EXPECT_LT(end.x, 3.0);
     EXPECT_GE(end.x, 3.0 - V * s.step - 1e-12);
     EXPECT_NEAR(end.y, 0.0, 1e-12);
     EXPECT_LT(end.t, sim.endTime());
     EXPECT_EQ(p.bearings.size(), 2u);  // the second stint (from x = 2) meets it
-    for (const TimedWaypoint &w : p.track)
+    for (const TimedPoint &w : p.track)
         EXPECT_TRUE(regions->pointFree(w.x, w.y, w.t));
     EXPECT_NEAR(p.remainingDistance, 10.0 - end.x, 1e-12);
     // the optimisers pay for the time lost on the rock: more than the remaining distance
@@ -149,7 +149,7 @@ TEST(Stints, CtsAStarAvoidsTheIslandDirectMeets)
     EXPECT_FALSE(cts.plan.grounded);
     EXPECT_LE(cts.plan.cost, direct.cost);
     // every surfacing of the plan is in water (the track was checked step by step)
-    for (const TimedWaypoint &w : cts.plan.track)
+    for (const TimedPoint &w : cts.plan.track)
         EXPECT_TRUE(jetIsland()->pointFree(w.x, w.y, w.t));
 }
 

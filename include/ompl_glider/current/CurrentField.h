@@ -7,17 +7,11 @@
 #include <optional>
 #include <string>
 
+#include "ompl_glider/Geometry.h"
 #include "ompl_glider/ShardedCounter.h"
 
 namespace ompl_glider
 {
-/// @brief Current velocity (u eastward / along x, v northward / along y), in the field's units.
-struct Velocity
-{
-    double u{0.0};  ///< x component
-    double v{0.0};  ///< y component
-};
-
 /// @brief Spatial Jacobian of the horizontal current (needed by Zermelo's navigation law, [EichhornRAS] Eq. 2).
 struct Jacobian
 {

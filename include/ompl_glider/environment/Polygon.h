@@ -17,15 +17,6 @@ struct Interval
     double hi{0.0};
 };
 
-/// @brief Axis-aligned bounding box.
-struct BoundingBox
-{
-    double xMin{0.0};
-    double xMax{0.0};
-    double yMin{0.0};
-    double yMax{0.0};
-};
-
 /// @brief A polygon with any number of holes, taken as a CLOSED set: its boundary (outer ring and hole rings)
 /// belongs to it, so a segment that only touches a vertex or runs along an edge meets the polygon.
 ///
@@ -77,7 +68,7 @@ public:
     /// polygon ([LollaLevelSet]; obstacles enter as phi = max(phi, d)).
     double signedDistance(double x, double y) const;
     /// @brief Bounding box of the outer ring.
-    const BoundingBox &bounds() const
+    const Box &bounds() const
     {
         return box_;
     }
@@ -120,7 +111,7 @@ private:
     std::vector<Edge> edges_;
     std::size_t holes_{0};
     double area_{0.0};
-    BoundingBox box_;
+    Box box_;
     // uniform grid (CSR layout): cell (i, j) -> edges cellEdges_[cellStart_[c] .. cellStart_[c + 1])
     int nx_{1}, ny_{1};
     double cellW_{1.0}, cellH_{1.0}, pad_{0.0};

@@ -15,7 +15,7 @@
 
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/environment/Environment.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "ompl_glider/Geometry.h"
 
 namespace ompl_glider
 {
@@ -48,5 +48,5 @@ struct DiveEnd
 /// when it is not null. The step must be positive and finite (not checked here: callers check their options).
 DiveEnd flyHeading(double x, double y, double t, double hx, double hy, double tEnd, const CurrentField &field,
                    const Environment *forbidden, const DiveSettings &settings,
-                   std::vector<TimedWaypoint> *track = nullptr);
+                   std::vector<TimedPoint> *track = nullptr);
 }  // namespace ompl_glider

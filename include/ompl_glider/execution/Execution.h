@@ -22,7 +22,7 @@
 
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/environment/Environment.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "ompl_glider/Geometry.h"
 
 namespace ompl_glider
 {
@@ -50,8 +50,8 @@ std::optional<ControlStrategy> parseControlStrategy(const std::string &name);
 
 /// @brief A new plan from a GPS fix (x, y at time t) to the goal, given the plan flown so far (@p current, with its
 /// planned times); empty when there is none (the current plan is kept).
-using Replanner = std::function<std::vector<TimedWaypoint>(double x, double y, double t,
-                                                           const std::vector<TimedWaypoint> &current)>;
+using Replanner = std::function<std::vector<TimedPoint>(double x, double y, double t,
+                                                           const std::vector<TimedPoint> &current)>;
 
 /// @brief Options of flyPlan().
 struct ExecutionOptions
@@ -70,8 +70,8 @@ struct ExecutionOptions
 /// @brief One flown run.
 struct FlownTrack
 {
-    std::vector<TimedWaypoint> fixes;  ///< the start, every surfacing (GPS fixes) and the end of the run
-    std::vector<TimedWaypoint> track;  ///< every integration step
+    std::vector<TimedPoint> fixes;  ///< the start, every surfacing (GPS fixes) and the end of the run
+    std::vector<TimedPoint> track;  ///< every integration step
     std::vector<double> headings;      ///< heading (radians from +x, counter-clockwise) chosen at each fix but the last
     double plannedArrival{0.0};        ///< the plan's arrival time
     /// Distance to the goal at the plan's arrival time (the position then, interpolated on the track; at the end of
@@ -92,13 +92,13 @@ struct FlownTrack
 /// The plan's last waypoint stays the goal for every strategy, replanning included.
 /// @throws Error for an empty plan, a speed or interval that is not positive and finite, a step that is not, or
 /// ControlStrategy::Replan without options.replan or with replanEvery 0.
-FlownTrack flyPlan(const std::vector<TimedWaypoint> &plan, double speed, const CurrentField &forecast,
+FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const CurrentField &forecast,
                    const CurrentField &truth, const Environment *forbidden, ControlStrategy strategy,
                    const ExecutionOptions &options);
 
 /// @brief The position on a timed plan (or track) at time t: linear between its points, its first point before
 /// it and its last point after it. The plan must not be empty.
-TimedWaypoint planAt(const std::vector<TimedWaypoint> &plan, double t);
+TimedPoint planAt(const std::vector<TimedPoint> &plan, double t);
 
 /// @brief The unit heading (hx, hy) that, added at `speed` to the current c, makes good the unit direction (dx, dy):
 /// the cross-current part of c is cancelled and the rest of the speed goes along d. Where the cross current is

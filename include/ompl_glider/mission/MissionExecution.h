@@ -28,7 +28,7 @@ struct ExecutionRun
     std::string reason;       ///< why there is no plan
     double departure{0.0};    ///< departure (field units)
     double radius{0.0};       ///< goal radius used (length units)
-    std::vector<TimedWaypoint> plan;  ///< the plan flown (the final path of planRoute())
+    std::vector<TimedPoint> plan;  ///< the plan flown (the final path of planRoute())
     std::vector<FlownTrack> flown;    ///< one per ExecutionResult::strategies
 };
 

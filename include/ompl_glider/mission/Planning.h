@@ -89,9 +89,9 @@ struct PlannedPath
     std::string planner;      ///< canonical planner name (PlannerRegistry.h)
     double departure{0.0};    ///< departure time (field units)
     double speed{0.0};        ///< vehicle speed used
-    std::vector<TimedWaypoint> raw;       ///< the planner's path (its own times)
-    std::vector<TimedWaypoint> smoothed;  ///< after smoothing (== raw when smoothing is off)
-    std::vector<TimedWaypoint> path;      ///< the final path (after refinement when it is on)
+    std::vector<TimedPoint> raw;       ///< the planner's path (its own times)
+    std::vector<TimedPoint> smoothed;  ///< after smoothing (== raw when smoothing is off)
+    std::vector<TimedPoint> path;      ///< the final path (after refinement when it is on)
     double rawTravelTime{std::numeric_limits<double>::infinity()};       ///< raw path arrival - departure
     double smoothedTravelTime{std::numeric_limits<double>::infinity()};  ///< smoothed path arrival - departure
     double travelTime{std::numeric_limits<double>::infinity()};          ///< final path arrival - departure
@@ -155,7 +155,7 @@ struct OptimumReference
 {
     bool found{false};                                           ///< an extremal through the goal was found
     double travelTime{std::numeric_limits<double>::infinity()};  ///< its travel time
-    std::vector<TimedWaypoint> path;                             ///< samples of the optimal trajectory
+    std::vector<TimedPoint> path;                             ///< samples of the optimal trajectory
 };
 
 /// @brief How runMission() runs.
@@ -186,8 +186,8 @@ struct MissionResult
 /// @brief The path's waypoints flown leg by leg in @p field at @p speed from path.front().t (each leg's fastest
 /// straight travel time, TravelTimeCalculator), legs checked against the forbidden regions; empty when a leg is
 /// impassable there.
-std::vector<TimedWaypoint> retimePath(const MissionProblem &problem, std::shared_ptr<const CurrentField> field,
-                                      double speed, const std::vector<TimedWaypoint> &path);
+std::vector<TimedPoint> retimePath(const MissionProblem &problem, std::shared_ptr<const CurrentField> field,
+                                      double speed, const std::vector<TimedPoint> &path);
 
 /// @brief Plans from the start at @p departure: makeSimpleSetup(), the planner named by planner.name (from the
 /// registry, with the mission's planner.parameters set through OMPL's ParamSet), solve within planner.time_limit,

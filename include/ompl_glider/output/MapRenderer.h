@@ -51,7 +51,7 @@ struct MapPolygon
 struct MapPath
 {
     std::string label;                   ///< legend entry ("ZA*TVE raw", "smoothed", ...); empty: none
-    std::vector<TimedWaypoint> waypoints;  ///< positions and arrival times
+    std::vector<TimedPoint> waypoints;  ///< positions and arrival times
     Rgba colour{0.85, 0.10, 0.10, 1.0};  ///< line colour
     double width{2.5};                   ///< line width in pixels
     bool dashed{false};                  ///< dashed line
@@ -108,12 +108,12 @@ public:
     std::pair<int, int> size() const;
 
     /// @brief Default styles for the usual path kinds.
-    static MapPath rawPathStyle(std::string label, std::vector<TimedWaypoint> waypoints);
-    static MapPath smoothedPathStyle(std::string label, std::vector<TimedWaypoint> waypoints);
-    static MapPath refinedPathStyle(std::string label, std::vector<TimedWaypoint> waypoints);
+    static MapPath rawPathStyle(std::string label, std::vector<TimedPoint> waypoints);
+    static MapPath smoothedPathStyle(std::string label, std::vector<TimedPoint> waypoints);
+    static MapPath refinedPathStyle(std::string label, std::vector<TimedPoint> waypoints);
     /// @brief A flown stint track ([IsernObstacles]): solid, no markers, colour @p index of a palette of 6
     /// (several methods on one map).
-    static MapPath stintTrackStyle(std::string label, std::vector<TimedWaypoint> track, int index = 0);
+    static MapPath stintTrackStyle(std::string label, std::vector<TimedPoint> track, int index = 0);
 
 private:
     void draw(void *cairoContext) const;

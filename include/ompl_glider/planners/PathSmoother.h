@@ -23,18 +23,18 @@ double legTravelTime(const GliderContext &ctx, double x1, double y1, double x2, 
 
 /// @brief The waypoints' positions with arrival times re-simulated from t0 (fastest pace on every leg):
 /// t[0] = t0, t[i] = t[i-1] + legTravelTime(i-1 -> i). Times are +inf from the first infeasible leg on.
-std::vector<TimedWaypoint> retimeWaypoints(const GliderContext &ctx, std::vector<TimedWaypoint> waypoints,
+std::vector<TimedPoint> retimeWaypoints(const GliderContext &ctx, std::vector<TimedPoint> waypoints,
                                            double t0);
 
 /// @brief Arrival time at the last waypoint re-simulated from t0 (+inf when a leg is infeasible; t0 for < 2 points).
-double arrivalTime(const GliderContext &ctx, const std::vector<TimedWaypoint> &waypoints, double t0);
+double arrivalTime(const GliderContext &ctx, const std::vector<TimedPoint> &waypoints, double t0);
 
 /// @brief Sum of the leg lengths.
-double pathLength(const std::vector<TimedWaypoint> &waypoints);
+double pathLength(const std::vector<TimedPoint> &waypoints);
 
 /// @brief Index k >= 1 of the waypoint that ends the path's last hold (waypoints k - 1 and k at the same position:
 /// the glider holds position from t[k - 1] to t[k]); 0 when the path never holds.
-std::size_t lastHoldEnd(const std::vector<TimedWaypoint> &waypoints);
+std::size_t lastHoldEnd(const std::vector<TimedPoint> &waypoints);
 
 /// @brief Post-processing of a path that holds position (a lattice wait at a time-windowed zone, a hold for the goal
 /// window; issue 12): @p improve (smoothing or refinement, which fly every leg at full speed from the departure and
@@ -43,18 +43,18 @@ std::size_t lastHoldEnd(const std::vector<TimedWaypoint> &waypoints);
 /// lengthened to its old end where the glider can hold from the new arrival (GliderContext::canHold and the
 /// environment; else that part is kept). @p improve returns its input when it cannot improve it. A path without holds
 /// is passed to @p improve whole.
-std::vector<TimedWaypoint> improveAroundHolds(
-    const GliderContext &ctx, const std::vector<TimedWaypoint> &waypoints,
-    const std::function<std::vector<TimedWaypoint>(const std::vector<TimedWaypoint> &)> &improve);
+std::vector<TimedPoint> improveAroundHolds(
+    const GliderContext &ctx, const std::vector<TimedPoint> &waypoints,
+    const std::function<std::vector<TimedPoint>(const std::vector<TimedPoint> &)> &improve);
 
 /// @brief Waypoints (x, y, t) of a path on a TimeSE2StateSpace (see ompl/TimeSE2StateSpace.h).
 /// @throws Error when the path's space is not a TimeSE2StateSpace.
-std::vector<TimedWaypoint> waypointsFromPath(const ompl::geometric::PathGeometric &path);
+std::vector<TimedPoint> waypointsFromPath(const ompl::geometric::PathGeometric &path);
 
 /// @brief Replaces the states of @p path (on a TimeSE2StateSpace) by the waypoints; each state's yaw is the
 /// direction of the leg that reaches it (the first state takes the first leg's direction).
 /// @throws Error when the path's space is not a TimeSE2StateSpace.
-void waypointsToPath(const std::vector<TimedWaypoint> &waypoints, ompl::geometric::PathGeometric &path);
+void waypointsToPath(const std::vector<TimedPoint> &waypoints, ompl::geometric::PathGeometric &path);
 
 /// @brief Merges consecutive legs of a timed path while keeping its schedule: from a kept waypoint a (time t_a), the
 /// farthest later waypoint b is joined directly when the straight leg can be flown in exactly t_b - t_a (the
@@ -62,7 +62,7 @@ void waypointsToPath(const std::vector<TimedWaypoint> &waypoints, ompl::geometri
 /// and is legFree at those times. Every kept waypoint keeps its time, so the arrival is unchanged and every merged
 /// leg is valid for TravelTimeMotionValidator. Meant for paths that wait or fly slow legs (sampling planners on
 /// TimeSE2StateSpace), whose waypoints cannot all be flown at full speed from t0.
-std::vector<TimedWaypoint> mergeKeepingSchedule(const GliderContext &ctx, const std::vector<TimedWaypoint> &timed);
+std::vector<TimedPoint> mergeKeepingSchedule(const GliderContext &ctx, const std::vector<TimedPoint> &timed);
 
 /// @brief Relative tolerance of the smoother's "no later" tests (IV, V and the final guard): an arrival a counts as
 /// no later than b when a <= b + 1e-12 |b|. It only lets exact ties that differ by rounding merge (a straight path
@@ -73,7 +73,7 @@ constexpr double kSmoothingTieTolerance = 1e-12;
 /// @brief What smoothing did.
 struct SmoothingResult
 {
-    std::vector<TimedWaypoint> waypoints;  ///< smoothed path, times re-simulated from t0
+    std::vector<TimedPoint> waypoints;  ///< smoothed path, times re-simulated from t0
     std::size_t waypointsBefore{0};        ///< waypoint count of the input (start and goal included)
     std::size_t waypointsAfter{0};         ///< waypoint count of the result
     double arrivalBefore{0.0};             ///< arrival at the goal of the input, re-simulated from t0
@@ -102,7 +102,7 @@ public:
 
     /// @brief Smooths the waypoints with departure at t0 = waypoints.front().t (the start's time; the other input
     /// times are ignored). An empty input gives an empty result.
-    SmoothingResult smooth(const std::vector<TimedWaypoint> &waypoints) const;
+    SmoothingResult smooth(const std::vector<TimedPoint> &waypoints) const;
 
     /// @brief Smooths an OMPL path on a TimeSE2StateSpace in place (departure at the first state's time). The path
     /// is replaced only when the smoothed path arrives no later than the path's own last state time. When its

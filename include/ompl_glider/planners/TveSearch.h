@@ -146,14 +146,6 @@ struct TveOptions
     unsigned checkEvery{8};
 };
 
-/// @brief A path waypoint: position and arrival time.
-struct TimedWaypoint
-{
-    double x{0.0};  ///< x
-    double y{0.0};  ///< y
-    double t{0.0};  ///< arrival time (t0 at the start)
-};
-
 /// @brief How a search ended.
 enum class TveOutcome
 {
@@ -169,7 +161,7 @@ enum class TveOutcome
 struct TveResult
 {
     TveOutcome outcome{TveOutcome::Exhausted};  ///< how the search ended
-    std::vector<TimedWaypoint> waypoints;       ///< start ... goal (Exact) or ... closest reached vertex (Terminated)
+    std::vector<TimedPoint> waypoints;       ///< start ... goal (Exact) or ... closest reached vertex (Terminated)
     double travelTime{std::numeric_limits<double>::infinity()};  ///< arrival at the goal - t0 (Exact only)
     std::uint64_t costFunctionCalls{0};  ///< CFC of this search ([EichhornRAS] Table 4)
     std::uint64_t currentModelCalls{0};  ///< CMC of this search, CALC-OPTDIR included ([EichhornRAS] Table 4)
@@ -243,7 +235,7 @@ public:
     std::vector<TveTreeVertex> tree() const;
 
 private:
-    std::vector<TimedWaypoint> pathTo(Lattice::VertexId v) const;
+    std::vector<TimedPoint> pathTo(Lattice::VertexId v) const;
     TveResult runCoarseToFine(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
                               const std::function<bool()> &terminate);
     TveResult runPhases(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,

@@ -142,7 +142,7 @@ public:
         return message_;
     }
     /// @brief Waypoints of the last path (x, y, time; holds as repeated positions); empty when none.
-    const std::vector<TimedWaypoint> &getWaypoints() const
+    const std::vector<TimedPoint> &getWaypoints() const
     {
         return waypoints_;
     }
@@ -185,7 +185,7 @@ private:
 
     WavefrontOutcome outcome_{WavefrontOutcome::None};
     std::string message_;
-    std::vector<TimedWaypoint> waypoints_;
+    std::vector<TimedPoint> waypoints_;
     double travelTime_{std::numeric_limits<double>::infinity()};
     std::uint64_t expansions_{0}, cfc_{0}, cmc_{0};
     std::vector<SettledNode> settled_;

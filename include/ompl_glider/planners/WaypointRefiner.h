@@ -39,7 +39,7 @@ struct RefinerParams
 /// @brief What refinement did.
 struct RefinementResult
 {
-    std::vector<TimedWaypoint> waypoints;  ///< refined path, times re-simulated from t0
+    std::vector<TimedPoint> waypoints;  ///< refined path, times re-simulated from t0
     std::size_t waypointsBefore{0};        ///< waypoint count of the input
     std::size_t waypointsAfter{0};         ///< waypoint count of the result
     double arrivalBefore{0.0};             ///< arrival of the input, re-simulated from t0
@@ -74,7 +74,7 @@ public:
 
     /// @brief Refines the waypoints for departure at t0 = waypoints.front().t (the start's time; the other input
     /// times are ignored). An empty input gives an empty result.
-    RefinementResult refine(const std::vector<TimedWaypoint> &waypoints) const;
+    RefinementResult refine(const std::vector<TimedPoint> &waypoints) const;
 
     /// @brief Refines an OMPL path on a TimeSE2StateSpace in place (departure at the first state's time); the path
     /// is replaced only when the result arrives no later than its own last state time.

@@ -222,12 +222,12 @@ public:
     }
     /// @brief Waypoints (x, y, arrival time) of the last solve's lattice path, before smoothing and refinement
     /// (empty when none).
-    const std::vector<TimedWaypoint> &getWaypoints() const
+    const std::vector<TimedPoint> &getWaypoints() const
     {
         return last_.waypoints;
     }
     /// @brief Waypoints of the path the last solve returned (after smoothing and refinement when they are on).
-    const std::vector<TimedWaypoint> &getSolutionWaypoints() const
+    const std::vector<TimedPoint> &getSolutionWaypoints() const
     {
         return solution_;
     }
@@ -257,7 +257,7 @@ private:
     bool refine_{true};
     unsigned refinerMaxEvaluations_{40000};
     std::uint64_t postprocessCfc_{0};
-    std::vector<TimedWaypoint> solution_;
+    std::vector<TimedPoint> solution_;
     std::unique_ptr<TveSearch> search_;
     TveResult last_;
     std::vector<TveTreeVertex> tree_;

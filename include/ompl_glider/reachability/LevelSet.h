@@ -32,14 +32,6 @@ struct LevelSetParams
                               ///< are ignored (the limit on the time under ice is not modelled either way)
 };
 
-/// @brief A position at a time (a point of a backtracked path).
-struct TimedPoint
-{
-    double x{0.0};
-    double y{0.0};
-    double t{0.0};
-};
-
 /// @brief Work done by one solve.
 struct LevelSetStats
 {

@@ -8,7 +8,6 @@
 #include <ompl/base/Planner.h>
 
 #include "ompl_glider/ompl/GliderContext.h"
-#include "ompl_glider/planners/TveSearch.h"
 #include "ompl_glider/reachability/LevelSet.h"
 
 namespace ompl_glider
@@ -76,7 +75,7 @@ public:
         return last_;
     }
     /// @brief The last solve's path as waypoints (the states of the returned path).
-    const std::vector<TimedWaypoint> &getWaypoints() const
+    const std::vector<TimedPoint> &getWaypoints() const
     {
         return waypoints_;
     }
@@ -88,7 +87,7 @@ private:
     double usedResolution_{0.0};
     double levelSetTime_{0.0};
     Reachability last_;
-    std::vector<TimedWaypoint> waypoints_;
+    std::vector<TimedPoint> waypoints_;
 };
 
 /// @brief The cell size LevelSetPlanner uses for resolution 0: 1/200 of the region's larger side.
@@ -97,6 +96,6 @@ double defaultLevelSetResolution(const GliderContext &ctx);
 /// @brief A backtracked level-set path (LevelSetSolver) as waypoints a glider flies: thinned to straight legs within
 /// @p tolerance of the curve and free of forbidden regions, timed by the travel-time code from the first point's
 /// time; holds kept where the glider can hold. Empty when no timing is feasible (@p why, if given, says where).
-std::vector<TimedWaypoint> levelSetWaypoints(const GliderContext &ctx, const std::vector<TimedPoint> &path,
+std::vector<TimedPoint> levelSetWaypoints(const GliderContext &ctx, const std::vector<TimedPoint> &path,
                                              double tolerance, std::string *why = nullptr);
 }  // namespace ompl_glider

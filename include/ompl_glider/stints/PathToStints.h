@@ -33,6 +33,6 @@ struct PathToStintsResult
 /// @p sim, which must depart at the path's first time from its first point with the earliest-arrival objective
 /// and a radius (StintSettings::radius > 0) and a mission long enough to arrive (e.g. 1.5 x the path's time).
 /// @throws Error for a path with fewer than 2 points or a simulator without radius.
-PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<TimedWaypoint> &path,
+PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<TimedPoint> &path,
                                   const BearingOptimizerParams &params = {});
 }  // namespace ompl_glider

@@ -65,8 +65,8 @@ struct StintSettings
 struct StintPlan
 {
     std::vector<double> bearings;             ///< degrees clockwise from north, one per stint flown
-    std::vector<TimedWaypoint> surfacings;    ///< the start, each surfacing, and the end (arrival, grounding)
-    std::vector<TimedWaypoint> track;         ///< every integration step (start first)
+    std::vector<TimedPoint> surfacings;    ///< the start, each surfacing, and the end (arrival, grounding)
+    std::vector<TimedPoint> track;         ///< every integration step (start first)
     double remainingDistance{std::numeric_limits<double>::infinity()};  ///< goal distance at the end
     bool reached{false};       ///< within the radius of the goal before the mission ended
     double arrivalTime{std::numeric_limits<double>::quiet_NaN()};  ///< first time within the radius
@@ -92,7 +92,7 @@ public:
     StintPlan simulate(const std::vector<double> &bearings, bool keepTrack = true) const;
 
     /// @brief One stint from (x, y) at t with @p bearing (degrees) until min(t + duration, mission end).
-    DiveEnd flyStint(double x, double y, double t, double bearing, std::vector<TimedWaypoint> *track = nullptr) const;
+    DiveEnd flyStint(double x, double y, double t, double bearing, std::vector<TimedPoint> *track = nullptr) const;
 
     /// @brief Direct to goal ([IsernObstacles] Sec. III.A): at every surfacing, the bearing to the goal.
     StintPlan direct() const;

@@ -17,7 +17,7 @@
 #include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/output/OutputFormats.h"
-#include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/current/UnitConversion.h"

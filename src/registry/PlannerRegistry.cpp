@@ -1,4 +1,4 @@
-#include "ompl_glider/planners/PlannerRegistry.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
 
 #include <algorithm>
 #include <cctype>
