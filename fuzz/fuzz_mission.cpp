@@ -53,7 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     {
         return 0;
     }
-    const bool netcdf = spec.current.type == "netcdf";
+    const bool netcdf = spec.current.isForecast();
     if ((netcdf && !insideScratch(spec.current.file)) || !insideScratch(spec.forbidden.geojson) ||
         (spec.dive.bathymetryType == "netcdf" && !insideScratch(spec.dive.bathymetryFile)))
         return 0;

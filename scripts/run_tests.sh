@@ -1,9 +1,18 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds (Release, with tests) and runs the whole test suite with ctest.
+# Installs what is missing, builds (Release, with tests) and runs the test suite with ctest.
+# Usage: scripts/run_tests.sh [--all] [CTEST_ARGS...]
+#   Without --all the cases labelled "ci" (minutes each: a second, static build of the library) are left out;
+#   --all, or CI=true in the environment (.ci/run), runs every case. Other arguments go to ctest.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+select=(-LE ci)
+if [ "${1:-}" = "--all" ]; then
+  select=(); shift
+elif [ "${CI:-}" = "true" ]; then
+  select=()
+fi
 bash "$root/scripts/setup.sh"
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DOMPL_GLIDER_BUILD_TESTS=ON >/dev/null
 cmake --build "$root/build" -j"$(nproc)"
 cd "$root/build"
-ctest --output-on-failure -j"$(nproc)" "$@"
+ctest --output-on-failure -j"$(nproc)" ${select[@]+"${select[@]}"} "$@"

@@ -18,7 +18,7 @@
 #include "ompl_glider/current/UnitConversion.h"
 #include "ompl_glider/execution/Execution.h"
 #include "ompl_glider/mission/ForecastMission.h"
-#include "ompl_glider/mission/IsoTime.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace glider_plan
@@ -116,7 +116,7 @@ void applyExecution(const Flags &f, MissionSpec &m)
     {
         CurrentSpec t = m.current;
         t.mark = SourceMark{"--truth", 0};
-        if (m.current.type == "netcdf")
+        if (m.current.isForecast())
         {
             // another forecast file (or list / glob) read with the forecast's variable names and options
             std::vector<std::string> files;
@@ -215,7 +215,7 @@ void applyArrivalWindow(const Flags &f, MissionSpec &m)
     if (!(t[1] >= t[0]))
         throw UsageError{"--arrive-between: the end (" + items[1] + ") must not be before the begin (" + items[0] +
                          ")"};
-    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints)
+    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints())
         throw UsageError{"--arrive-between: the stint planner '" + m.planner.name +
                          "' flies fixed stints and cannot time its arrival"};
     m.goalWindow = {true, t[0], t[1]};
@@ -282,8 +282,8 @@ void applyOutputFlags(const Flags &f, MissionSpec &m)
             throw UsageError{"--isochrone-interval: must be > 0, got '" + f.isochroneInterval + "'"};
     }
     if ((f.isochrones || !f.isochroneInterval.empty()) &&
-        std::find(m.outputs.files.begin(), m.outputs.files.end(), "isochrones") == m.outputs.files.end())
-        m.outputs.files.push_back("isochrones");
+        !m.outputs.wants(OutputFormatId::Isochrones))
+        m.outputs.files.push_back(OutputFormatId::Isochrones);
 }
 
 std::vector<double> speedList(const std::string &text)
@@ -426,7 +426,7 @@ void defineFlags(CLI::App &app, Flags &f)
         ->check(CLI::IsMember(kSchemes1D))
         ->group(nc);
     app.add_option_function<std::string>(
-           "--beyond", [&fc](const std::string &v) { fc.horizonPolicy = v == "hold" ? "hold_last" : "refuse"; },
+           "--beyond", [&fc](const std::string &v) { fc.horizonPolicy = v == "hold" ? BeyondForecast::HoldLast : BeyondForecast::Refuse; },
            "past the last forecast time: refuse (default) | hold (hold the last field)")
         ->check(CLI::IsMember({"refuse", "hold"}))
         ->group(nc);

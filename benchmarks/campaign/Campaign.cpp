@@ -265,7 +265,7 @@ int main(int argc, char **argv)
                 continue;
             const PlannerEntry &entry = plannerEntry(name);
             const ob::PlannerPtr planner = entry.make(si, ctx);
-            if (entry.lattice)
+            if (entry.lattice())
             {
                 setParameter(*planner, "grid_size", str(opt.grid));
                 setParameter(*planner, "sectors", "3");

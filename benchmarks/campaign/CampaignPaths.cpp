@@ -125,7 +125,7 @@ int main(int argc, char **argv)
             const ob::PlannerPtr planner = entry.make(ss->getSpaceInformation(), ctx);
             std::ostringstream gridText;
             gridText << std::setprecision(17) << grid;
-            if (entry.lattice && !planner->params().setParam("grid_size", gridText.str()))
+            if (entry.lattice() && !planner->params().setParam("grid_size", gridText.str()))
             {
                 std::cerr << "glider_campaign_paths: " << name << " refuses grid_size " << grid << "\n";
                 return 2;

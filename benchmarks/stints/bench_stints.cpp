@@ -89,7 +89,7 @@ MissionSpec jetMission(const Pair &p, double speedMs)
     m.name = "stints_jet";
     m.lengthUnitMetres = kLengthUnit;
     m.timeUnitSeconds = kTimeUnit;
-    m.current.type = "meandering_jet";
+    m.current.setType("meandering_jet");
     m.region.set = true;
     m.region.xMin = -5;
     m.region.xMax = 45;
@@ -112,7 +112,7 @@ MissionSpec jetMission(const Pair &p, double speedMs)
     m.stints.duration = 8.0 * 3600.0 / kTimeUnit;
     m.stints.missionDuration = 4.0 * 86400.0 / kTimeUnit;
     m.stints.bearingStep = 20.0;
-    m.outputs.files = {"summary"};
+    m.outputs.files = {OutputFormatId::Summary};
     return m;
 }
 
@@ -241,7 +241,7 @@ MissionSpec forecastMission(const Pair &p, double speedMs, const std::string &fi
     MissionSpec m;
     m.file = "<bench_stints>";
     m.name = "stints_forecast";
-    m.current.type = "netcdf";
+    m.current.setType("netcdf");
     m.current.file = file;
     m.current.variables = {{"x", "x"}, {"y", "y"}};
     m.start.x = p.start.x;
@@ -255,7 +255,7 @@ MissionSpec forecastMission(const Pair &p, double speedMs, const std::string &fi
     m.stints.duration = 8.0 * 3600.0;
     m.stints.missionDuration = 4.0 * 86400.0;
     m.stints.bearingStep = 20.0;
-    m.outputs.files = {"summary"};
+    m.outputs.files = {OutputFormatId::Summary};
     return m;
 }
 

@@ -85,7 +85,7 @@ DiveProfileTravelTime::DiveProfileTravelTime(std::shared_ptr<const CurrentField>
 {
     profiles_ = makeDiveProfiles(dive_);
     if (threads != 1)
-        pool_ = std::make_unique<DiveProfilePool>(threads);
+        pool_ = std::make_unique<ThreadPool>(threads);
 }
 
 double DiveProfileTravelTime::travelTime(const DiveProfile &profile, double x1, double y1, double x2, double y2,

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "TextUtil.h"
+#include "../io/TextUtil.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
@@ -72,62 +72,86 @@ double maxAbsBasis(const double *x, int n, int i, double a, double b)
         }
     return best;
 }
+
+/// Nodes of the m-node cubic stencil of interval k (k-1 .. k+2, shifted inside at the ends of the axis) into x;
+/// returns the first.
+std::size_t cubicNodes(const Axis &axis, std::size_t k, int m, double *x)
+{
+    std::size_t first = k >= 1 ? k - 1 : 0;
+    if (first + m > axis.size())
+        first = axis.size() - m;
+    for (int i = 0; i < m; ++i)
+        x[i] = axis[first + i];
+    return first;
+}
+
+/// A scheme and one of its names; the first entry of a scheme is the name toString() gives, later ones are
+/// aliases that parsing accepts.
+template <typename E>
+struct SchemeName
+{
+    E scheme;
+    const char *name;
+};
+
+constexpr SchemeName<Interp2D> kInterp2DNames[] = {{Interp2D::Nearest, "nearest"},
+                                                   {Interp2D::Bilinear, "bilinear"},
+                                                   {Interp2D::Bicubic, "bicubic"},
+                                                   {Interp2D::Bilinear, "linear"},
+                                                   {Interp2D::Bicubic, "cubic"}};
+constexpr SchemeName<Interp1D> kInterp1DNames[] = {{Interp1D::Nearest, "nearest"},
+                                                   {Interp1D::Linear, "linear"},
+                                                   {Interp1D::Cubic, "cubic"},
+                                                   {Interp1D::Akima, "akima"}};
+
+/// The scheme named (lower case) `name` in the table; false when none is.
+template <typename E, std::size_t N>
+bool findScheme(const SchemeName<E> (&table)[N], const std::string &name, E &scheme)
+{
+    for (const SchemeName<E> &e : table)
+        if (name == e.name)
+        {
+            scheme = e.scheme;
+            return true;
+        }
+    return false;
+}
+
+/// The first name of the scheme in the table, "?" for a value outside the enumeration.
+template <typename E, std::size_t N>
+std::string schemeName(const SchemeName<E> (&table)[N], E scheme)
+{
+    for (const SchemeName<E> &e : table)
+        if (e.scheme == scheme)
+            return e.name;
+    return "?";
+}
 }  // namespace
 
 Interp2D parseInterp2D(const std::string &name)
 {
-    const std::string s = lower(name);
-    if (s == "nearest")
-        return Interp2D::Nearest;
-    if (s == "bilinear" || s == "linear")
-        return Interp2D::Bilinear;
-    if (s == "bicubic" || s == "cubic")
-        return Interp2D::Bicubic;
-    throw Error("x/y interpolation scheme '" + name + "': expected nearest, bilinear or bicubic");
+    Interp2D s{};
+    if (!findScheme(kInterp2DNames, lower(name), s))
+        throw Error("x/y interpolation scheme '" + name + "': expected nearest, bilinear or bicubic");
+    return s;
 }
 
 Interp1D parseInterp1D(const std::string &name)
 {
-    const std::string s = lower(name);
-    if (s == "nearest")
-        return Interp1D::Nearest;
-    if (s == "linear")
-        return Interp1D::Linear;
-    if (s == "cubic")
-        return Interp1D::Cubic;
-    if (s == "akima")
-        return Interp1D::Akima;
-    throw Error("depth/time interpolation scheme '" + name + "': expected nearest, linear, cubic or akima");
+    Interp1D s{};
+    if (!findScheme(kInterp1DNames, lower(name), s))
+        throw Error("depth/time interpolation scheme '" + name + "': expected nearest, linear, cubic or akima");
+    return s;
 }
 
 std::string toString(Interp2D s)
 {
-    switch (s)
-    {
-        case Interp2D::Nearest:
-            return "nearest";
-        case Interp2D::Bilinear:
-            return "bilinear";
-        case Interp2D::Bicubic:
-            return "bicubic";
-    }
-    return "?";
+    return schemeName(kInterp2DNames, s);
 }
 
 std::string toString(Interp1D s)
 {
-    switch (s)
-    {
-        case Interp1D::Nearest:
-            return "nearest";
-        case Interp1D::Linear:
-            return "linear";
-        case Interp1D::Cubic:
-            return "cubic";
-        case Interp1D::Akima:
-            return "akima";
-    }
-    return "?";
+    return schemeName(kInterp1DNames, s);
 }
 
 Axis::Axis(std::vector<double> nodes, const std::string &what) : c_(std::move(nodes))
@@ -244,13 +268,8 @@ Stencil makeStencil(const Axis &axis, Interp1D scheme, double q, bool derivative
         case Interp1D::Cubic:
         {
             const int m = static_cast<int>(std::min<std::size_t>(4, n));
-            std::size_t first = k >= 1 ? k - 1 : 0;
-            if (first + m > n)
-                first = n - m;
             double x[4];
-            for (int i = 0; i < m; ++i)
-                x[i] = axis[first + i];
-            s.first = first;
+            s.first = cubicNodes(axis, k, m, x);
             s.n = m;
             lagrange(x, m, q, s.w.data(), derivative ? s.dw.data() : nullptr);
             if (outside)
@@ -263,41 +282,6 @@ Stencil makeStencil(const Axis &axis, Interp1D scheme, double q, bool derivative
     throw Error("makeStencil: Akima interpolation is not linear in the data; use akimaInterpolate()");
 }
 
-namespace detail
-{
-double akimaFromNodes(const double *x, const double *y, int n, int k, double q)
-{
-    if (n == 1)
-        return y[0];
-    q = std::clamp(q, x[0], x[n - 1]);
-    const double h = x[k + 1] - x[k];
-    if (n == 2)
-        return y[k] + (y[k + 1] - y[k]) * (q - x[k]) / h;
-    // secants m_j, j = -2 .. n (index j + 2), extrapolated beyond the data as in Akima (1970)
-    double m[10];
-    for (int j = 0; j < n - 1; ++j)
-        m[j + 2] = (y[j + 1] - y[j]) / (x[j + 1] - x[j]);
-    m[1] = 2 * m[2] - m[3];
-    m[0] = 2 * m[1] - m[2];
-    m[n + 1] = 2 * m[n] - m[n - 1];
-    m[n + 2] = 2 * m[n + 1] - m[n];
-    auto slope = [&](int i) {
-        // node i uses secants i-2, i-1, i, i+1 (stored at offset + 2)
-        const double m0 = m[i], m1 = m[i + 1], m2 = m[i + 2], m3 = m[i + 3];
-        const double w1 = std::abs(m3 - m2), w2 = std::abs(m1 - m0);
-        const double den = w1 + w2;
-        if (den <= 1e-12 * (std::abs(m1) + std::abs(m2)) || den == 0.0)
-            return 0.5 * (m1 + m2);
-        return (w1 * m1 + w2 * m2) / den;
-    };
-    const double t0 = slope(k), t1 = slope(k + 1);
-    const double s = (q - x[k]) / h;
-    const double s2 = s * s, s3 = s2 * s;
-    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
-    return h00 * y[k] + h01 * y[k + 1] + h * (h10 * t0 + h11 * t1);
-}
-}  // namespace detail
-
 double overshootFactor(const Axis &axis, Interp1D scheme)
 {
     const std::size_t n = axis.size();
@@ -309,12 +293,8 @@ double overshootFactor(const Axis &axis, Interp1D scheme)
         double worst = 1.0;
         for (std::size_t k = 0; k + 1 < n; ++k)
         {
-            std::size_t first = k >= 1 ? k - 1 : 0;
-            if (first + m > n)
-                first = n - m;
             double x[4];
-            for (int i = 0; i < m; ++i)
-                x[i] = axis[first + i];
+            cubicNodes(axis, k, m, x);
             double sum = 0.0;
             for (int i = 0; i < m; ++i)
                 sum += maxAbsBasis(x, m, i, axis[k], axis[k + 1]);

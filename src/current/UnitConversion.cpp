@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "TextUtil.h"
+#include "../io/TextUtil.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider

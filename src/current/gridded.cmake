@@ -1,9 +1,12 @@
 # current/ gridded fields and NetCDF
 list(APPEND OMPL_GLIDER_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/AkimaSpline.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Interpolation.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/CfTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/LocalProjection.cpp
+  # GriddedCurrentField: construction and evaluation, the locator, speed and velocity bounds
   ${CMAKE_CURRENT_LIST_DIR}/GriddedCurrentField.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/GriddedLocator.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/GriddedBounds.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CoastEdges.cpp
 )
 if(OMPL_GLIDER_WITH_NETCDF)
@@ -11,8 +14,6 @@ if(OMPL_GLIDER_WITH_NETCDF)
     # the NetCDF reader: loadNetCdfCurrents() composing the stages in netcdf/ (see netcdf/NetCdfInternal.h)
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfCurrents.cpp
     ${CMAKE_CURRENT_LIST_DIR}/UnitConversion.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/NcFile.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/ClassicSize.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/AxisChecks.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/VariableDetection.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/GridLayout.cpp

@@ -8,8 +8,8 @@
 #include <mutex>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/cost/DiveProfilePool.h"
-#include "ompl_glider/mission/AkimaSpline.h"
+#include "ompl_glider/ThreadPool.h"
+#include "ompl_glider/current/AkimaSpline.h"
 
 namespace ompl_glider
 {
@@ -55,7 +55,7 @@ std::vector<DepartureSample> evaluateAll(const TravelTimeOfDeparture &f, const s
     std::vector<DepartureSample> out(ts.size());
     std::atomic<std::size_t> done{0};
     std::mutex printMutex;
-    DiveProfilePool pool(p.threads);
+    ThreadPool pool(p.threads);
     pool.parallelFor(ts.size(), [&](std::size_t i) {
         double tt = f(ts[i]);
         if (!(tt >= 0.0) || ts[i] + tt > p.horizon)

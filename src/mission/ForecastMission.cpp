@@ -14,7 +14,7 @@
 #include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
-#include "ompl_glider/mission/IsoTime.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
 
 namespace ompl_glider
@@ -85,9 +85,10 @@ std::string flagMessage(std::string what, const ForecastInput &q)
     }
     return what;
 }
-}  // namespace
 
-MissionSpec forecastMission(const ForecastInput &q)
+/// The forecast's files (file or files, each an existing regular file).
+/// @throws Error when both or a missing file are given.
+std::vector<std::string> forecastFiles(const ForecastInput &q)
 {
     namespace fs = std::filesystem;
     if (!q.file.empty() && !q.files.empty())
@@ -97,20 +98,19 @@ MissionSpec forecastMission(const ForecastInput &q)
     for (const std::string &p : files)
         if (!fs::is_regular_file(p, ec))
             throw Error("--currents: cannot open '" + p + "' (no such file)");
-    // in messages: the file, or the files of a forecast in several
-    std::string file = files.front();
-    for (std::size_t k = 1; k < files.size(); ++k)
-        file += "," + files[k];
-    if (!(q.speed > 0.0) || !std::isfinite(q.speed))
-        throw Error("--speed must be > 0 (m/s)");
-    if (!(q.depth >= 0.0))
-        throw Error("--depth must be >= 0 (metres, positive down)");
+    return files;
+}
 
+/// The mission's current, start, goal and depth as the flags give them (the current section as a mission file's
+/// `current: type netcdf`); @p file names the forecast in messages.
+MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> &files, const std::string &file)
+{
+    namespace fs = std::filesystem;
     MissionSpec m;
     m.file = file;
     m.directory = ".";
     m.name = fs::path(files.front()).stem().string();
-    m.current.type = "netcdf";
+    m.current.setType("netcdf");
     m.current.file = files.front();
     if (files.size() > 1)
         m.current.files = files;
@@ -125,7 +125,6 @@ MissionSpec forecastMission(const ForecastInput &q)
     m.current.timeUnits = q.timeUnits;
     m.current.steadyRecord = q.steadyRecord;
     m.current.mark.file = file;
-    const std::vector<std::string> list = m.current.forecastFiles();
 
     m.marks["start"] = SourceMark{"--start", 0};
     m.marks["goal"] = SourceMark{"--goal", 0};
@@ -134,7 +133,12 @@ MissionSpec forecastMission(const ForecastInput &q)
     m.goal.x = m.goal.lon = q.goal.x;
     m.goal.y = m.goal.lat = q.goal.y;
     m.vehicle.depth = m.travel.depth = q.depth;
-    // Longitude/latitude or x/y: the reader's own detection, before any region is cut.
+    return m;
+}
+
+/// Longitude/latitude or x/y: the reader's own detection, before any region is cut.
+bool forecastIsGeographic(const std::vector<std::string> &list, const MissionSpec &m, const ForecastInput &q)
+{
     bool geographic = true;
     try
     {
@@ -144,59 +148,72 @@ MissionSpec forecastMission(const ForecastInput &q)
     {
         throw Error(flagMessage(e.what(), q));
     }
-    const char *coords = geographic ? "lon,lat" : "x,y";
-    m.start.geographic = m.goal.geographic = geographic;
-    if (geographic)
-        for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
-        {
-            if (p.x < -180.0 || p.x > 360.0)
-                throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": longitude " + num(p.x) +
-                            " is not in -180..180 or 0..360");
-            if (std::abs(p.y) > 90.0)
-                throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": latitude " + num(p.y) +
-                            " is not in -90..90");
-        }
-    if (q.region)
+    return geographic;
+}
+
+/// Start and goal of a geographic file: longitudes in -180..180 or 0..360, latitudes in -90..90.
+void checkLonLat(const ForecastInput &q)
+{
+    for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
     {
-        const auto &[a0, b0, a1, b1] = *q.region;
-        m.marks["region"] = SourceMark{"--region", 0};
-        m.region.set = true;
-        m.region.geographic = geographic;
-        if (geographic)
-        {
-            if (const auto fault = regionFault(a0, b0, a1, b1))
-                throw Error("--region " + regionText(*q.region) + ": " + fault->bound + " " + fault->what);
-            const GeoBox box = geoBox(a0, b0, a1, b1);
-            m.region.lonMin = box.lonMin;
-            m.region.lonMax = box.lonMax;
-            m.region.latMin = box.latMin;
-            m.region.latMax = box.latMax;
-            for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
-                if (!box.contains({p.x, p.y}))
-                    throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (lon,lat) lies outside --region " +
-                                regionText(*q.region) + " (" + box.text() + ")");
-        }
-        else
-        {
-            if (!(a1 > a0) || !(b1 > b0) || !std::isfinite(a1 - a0) || !std::isfinite(b1 - b0))
-                throw Error("--region " + regionText(*q.region) +
-                            ": a Cartesian file's region is x_min,y_min,x_max,y_max with x_max > x_min and "
-                            "y_max > y_min");
-            m.region.xMin = a0;
-            m.region.yMin = b0;
-            m.region.xMax = a1;
-            m.region.yMax = b1;
-            for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
-                if (!(p.x >= a0 && p.x <= a1 && p.y >= b0 && p.y <= b1))
-                    throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (x,y) lies outside --region " +
-                                regionText(*q.region));
-        }
+        if (p.x < -180.0 || p.x > 360.0)
+            throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": longitude " + num(p.x) +
+                        " is not in -180..180 or 0..360");
+        if (std::abs(p.y) > 90.0)
+            throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": latitude " + num(p.y) +
+                        " is not in -90..90");
     }
-    // Load the trip's region as the mission will (netCdfLoadOptions) to check the request and convert the departure.
+}
+
+/// The region of --region (when given) in the mission, checked (regionFault() for a geographic file, the order of
+/// the bounds for a Cartesian one) and with start and goal in it.
+void setRegion(MissionSpec &m, const ForecastInput &q, bool geographic)
+{
+    if (!q.region)
+        return;
+    const auto &[a0, b0, a1, b1] = *q.region;
+    m.marks["region"] = SourceMark{"--region", 0};
+    m.region.set = true;
+    m.region.geographic = geographic;
+    if (geographic)
+    {
+        if (const auto fault = regionFault(a0, b0, a1, b1))
+            throw Error("--region " + regionText(*q.region) + ": " + fault->bound + " " + fault->what);
+        const GeoBox box = geoBox(a0, b0, a1, b1);
+        m.region.lonMin = box.lonMin;
+        m.region.lonMax = box.lonMax;
+        m.region.latMin = box.latMin;
+        m.region.latMax = box.latMax;
+        for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
+            if (!box.contains({p.x, p.y}))
+                throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (lon,lat) lies outside --region " +
+                            regionText(*q.region) + " (" + box.text() + ")");
+    }
+    else
+    {
+        if (!(a1 > a0) || !(b1 > b0) || !std::isfinite(a1 - a0) || !std::isfinite(b1 - b0))
+            throw Error("--region " + regionText(*q.region) +
+                        ": a Cartesian file's region is x_min,y_min,x_max,y_max with x_max > x_min and "
+                        "y_max > y_min");
+        m.region.xMin = a0;
+        m.region.yMin = b0;
+        m.region.xMax = a1;
+        m.region.yMax = b1;
+        for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
+            if (!(p.x >= a0 && p.x <= a1 && p.y >= b0 && p.y <= b1))
+                throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (x,y) lies outside --region " +
+                            regionText(*q.region));
+    }
+}
+
+/// Loads the trip's region as the mission will (netCdfLoadOptions) to check the request and convert the departure;
+/// @p epoch is set to the date of field time 0 of a steady file without dates when the departure is a date.
+NetCdfCurrents loadForecast(const std::vector<std::string> &list, const MissionSpec &m, const ForecastInput &q,
+                            std::optional<double> &epoch)
+{
     NetCdfCurrentOptions o = netCdfLoadOptions(m);
     o.departure = q.departure;
     NetCdfCurrents nc;
-    std::optional<double> epoch;  // the date of field time 0 of a steady file without dates
     try
     {
         if (!q.departure.empty() && !isNumber(q.departure))
@@ -221,6 +238,13 @@ MissionSpec forecastMission(const ForecastInput &q)
     {
         throw Error(flagMessage(e.what(), q));
     }
+    return nc;
+}
+
+/// The depth lies within the forecast's layers, and start and goal lie on its grid and in water.
+void checkEndpoints(const NetCdfCurrents &nc, const ForecastInput &q, const std::string &file, bool geographic)
+{
+    const char *coords = geographic ? "lon,lat" : "x,y";
     const GriddedCurrentField &g = *nc.field;
     // (Above the first layer is the surface layer's value, as forecasts put their first layer just below it.)
     if (g.nz() > 1 && q.depth > g.depthAxis().back())
@@ -259,15 +283,24 @@ MissionSpec forecastMission(const ForecastInput &q)
                         "' " + at + (why.empty() ? "" : "; the forecast's land is where it has " + why));
         }
     }
+}
+
+/// The departure lies within the forecast and leaves time to travel (a steady field takes any departure).
+void checkDeparture(const NetCdfCurrents &nc, const ForecastInput &q)
+{
     const double tDep = nc.departureTime;
     // a steady field (no time dimension, a single record, --steady-record) is the same at every time
     if (!nc.steady && (tDep < nc.forecastBegin || tDep > nc.forecastEnd))
         throw Error("--departure " + q.departure + " is outside the forecast (" + nc.isoTime(nc.forecastBegin) +
                     " to " + nc.isoTime(nc.forecastEnd) + ")");
-    if (!nc.steady && tDep >= nc.forecastEnd && q.horizonPolicy == "refuse")
+    if (!nc.steady && tDep >= nc.forecastEnd && q.horizonPolicy == BeyondForecast::Refuse)
         throw Error("--departure " + (q.departure.empty() ? std::string("(default)") : q.departure) +
                     " is the last forecast time: no time is left to travel (use an earlier departure or --beyond hold)");
+}
 
+/// The forecast's calendar, the departure, the vehicle and the outputs (every format) of the mission.
+void finishSpec(MissionSpec &m, const NetCdfCurrents &nc, const std::optional<double> &epoch, const ForecastInput &q)
+{
     if (nc.dated)
     {
         MissionSpec::FileCalendar fc;
@@ -279,15 +312,43 @@ MissionSpec forecastMission(const ForecastInput &q)
     else if (epoch)
         m.epoch = *epoch;
     m.current.steady = nc.steady;
-    m.departure.time = tDep;
+    m.departure.time = nc.departureTime;
     m.vehicle.speed = q.speed;
     m.vehicle.depth = q.depth;
     m.travel.speed = q.speed;
     m.travel.depth = q.depth;
     m.travel.eps = 1.0;  // one second per integration step on trips of hours to days (as the example mission)
-    m.outputs.files = {"summary", "path", "csv", "geojson", "goto", "map"};
+    m.outputs.files = {OutputFormatId::Summary, OutputFormatId::Path, OutputFormatId::Csv, OutputFormatId::GeoJson,
+                       OutputFormatId::Goto, OutputFormatId::Map};
     m.outputs.directory.clear();
     m.outputs.gotoNumber = 10;
+}
+}  // namespace
+
+MissionSpec forecastMission(const ForecastInput &q)
+{
+    const std::vector<std::string> files = forecastFiles(q);
+    // in messages: the file, or the files of a forecast in several
+    std::string file = files.front();
+    for (std::size_t k = 1; k < files.size(); ++k)
+        file += "," + files[k];
+    if (!(q.speed > 0.0) || !std::isfinite(q.speed))
+        throw Error("--speed must be > 0 (m/s)");
+    if (!(q.depth >= 0.0))
+        throw Error("--depth must be >= 0 (metres, positive down)");
+
+    MissionSpec m = forecastSpec(q, files, file);
+    const std::vector<std::string> list = m.current.forecastFiles();
+    const bool geographic = forecastIsGeographic(list, m, q);
+    m.start.geographic = m.goal.geographic = geographic;
+    if (geographic)
+        checkLonLat(q);
+    setRegion(m, q, geographic);
+    std::optional<double> epoch;  // the date of field time 0 of a steady file without dates
+    const NetCdfCurrents nc = loadForecast(list, m, q, epoch);
+    checkEndpoints(nc, q, file, geographic);
+    checkDeparture(nc, q);
+    finishSpec(m, nc, epoch, q);
     return m;
 }
 

@@ -13,7 +13,7 @@
 #include <random>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/cost/DiveProfilePool.h"
+#include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
 
@@ -236,7 +236,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     else
         r.runs[0].reason = plan.reason;
 
-    DiveProfilePool pool(e.threads);
+    ThreadPool pool(e.threads);
     r.threads = std::min<unsigned>(pool.size(), static_cast<unsigned>(r.runs.size()));
     std::atomic<std::size_t> done{0};
     std::mutex printMutex;

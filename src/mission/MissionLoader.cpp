@@ -7,8 +7,7 @@
 
 #include "loader/MissionReader.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/CfTime.h"
-#include "ompl_glider/mission/IsoTime.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
@@ -84,7 +83,7 @@ void readVehicleAndTravel(const Reader &r, const YAML::Node &root, MissionSpec &
             m.travel.tau = r.positive(t["tau"], "travel_time.tau");
     }
     // eps is absolute in the field's time unit: 1 s for forecasts in seconds, unless given.
-    if (m.current.type == "netcdf" && !(root["travel_time"] && root["travel_time"]["eps"]))
+    if (m.current.isForecast() && !(root["travel_time"] && root["travel_time"]["eps"]))
         m.travel.eps = 1.0;
     m.travel.speed = m.vehicle.speed;
     m.travel.depth = m.vehicle.depth;
@@ -138,18 +137,18 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     if (!root["current"])
         r.fail(root, "current", "missing: the current source (type: meandering_jet | uniform | ... | netcdf)");
     readCurrent(r, root["current"], m);
-    if (m.current.type == "netcdf" && root["units"])
+    if (m.current.isForecast() && root["units"])
         r.fail(root["units"], "units", "a NetCDF forecast is planned in metres and seconds: remove 'units'");
     // A dated forecast defines the time origin; a steady file without dates takes the mission's epoch as the date
     // of field time 0 (ISO times in the mission and the outputs).
-    if (m.current.type == "netcdf" && root["epoch"] && (m.fileCalendar || !m.current.steady))
+    if (m.current.isForecast() && root["epoch"] && (m.fileCalendar || !m.current.steady))
         r.fail(root["epoch"], "epoch",
                m.fileCalendar ? "the NetCDF forecast defines the time origin (its first time): remove 'epoch'"
                               : "the NetCDF forecast has undated times (field time is the file's): remove 'epoch' "
                                 "(only a steady file without dates takes one)");
     if (root["region"])
         readRegion(r, root["region"], m);
-    else if (m.current.type != "netcdf")
+    else if (!m.current.isForecast())
         r.fail(root, "region", "missing: an analytic current needs the planning region");
     for (const char *key : {"start", "goal"})
     {
@@ -170,17 +169,17 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         readPlanner(r, root["planner"], m);
     if (root["stints"])
         readStints(r, root["stints"], m);
-    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints && !m.stints.set)
+    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints() && !m.stints.set)
         r.fail(root["planner"]["name"], "planner.name",
                "planner '" + m.planner.name +
                    "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
-    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints && m.departure.window &&
+    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints() && m.departure.window &&
         m.stints.objective == "remaining_distance")
         r.fail(root["departure"]["window"], "departure.window",
                "the departure window is searched for the earliest arrival; the stint planner '" + m.planner.name +
                    "' with the remaining_distance objective has none: give departure.time, or stints.objective: "
                    "earliest_arrival with a radius");
-    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints && m.goalWindow.set)
+    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints() && m.goalWindow.set)
         r.fail(root["goal"]["window"], "goal.window",
                "the stint planner '" + m.planner.name +
                    "' flies fixed stints and cannot time its arrival: remove the window or use another planner");
@@ -188,8 +187,8 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         readOutputs(r, root["outputs"], m);
     else
         m.outputs.directory = joinPath(r.dir(), ".");
-    if ((!root["outputs"] || !root["outputs"]["files"]) && !m.projection.set && m.current.type != "netcdf")
-        m.outputs.files = {"csv", "geojson", "summary"};  // no lon/lat: no goto list by default
+    if ((!root["outputs"] || !root["outputs"]["files"]) && !m.projection.set && !m.current.isForecast())
+        m.outputs.files = {OutputFormatId::Csv, OutputFormatId::GeoJson, OutputFormatId::Summary};  // no lon/lat: no goto list by default
     readSpeedsAndCheck(r, root, m);
     if (root["execution"])
         readExecution(r, root["execution"], m);
@@ -278,7 +277,7 @@ MissionSpec defaultGulfStreamMission()
     MissionSpec m;
     m.file = "<built-in>";
     m.name = "gulf_stream";
-    m.current.type = "meandering_jet";
+    m.current.setType("meandering_jet");
     m.region.set = true;
     m.region.xMin = 0;
     m.region.xMax = 10;
@@ -293,7 +292,8 @@ MissionSpec defaultGulfStreamMission()
     m.travel.speed = 0.5;
     m.planner.horizon = 60.0;
     m.planner.goalTolerance = 1e-3;
-    m.outputs.files = {"summary", "path", "csv", "geojson", "map"};
+    m.outputs.files = {OutputFormatId::Summary, OutputFormatId::Path, OutputFormatId::Csv, OutputFormatId::GeoJson,
+                       OutputFormatId::Map};
     return m;
 }
 }  // namespace ompl_glider

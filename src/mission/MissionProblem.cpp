@@ -14,20 +14,20 @@
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
-#include "ompl_glider/mission/Coastline.h"
+#include "ompl_glider/io/Coastline.h"
 #include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/Interpolation.h"
 #include "ompl_glider/current/LocalProjection.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/current/NetCdfCurrents.h"
-#include "ompl_glider/mission/NetCdfBathymetry.h"
+#include "ompl_glider/io/NetCdfBathymetry.h"
 #endif
 #include "ompl_glider/environment/ForbiddenRegions.h"
 #include "ompl_glider/environment/IceZone.h"
 #include "ompl_glider/environment/StaticRegion.h"
 #include "ompl_glider/environment/TimeWindowedZone.h"
-#include "ompl_glider/mission/IsoTime.h"
+#include "ompl_glider/io/Time.h"
 
 namespace ompl_glider
 {
@@ -78,7 +78,7 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     // (only under the 'refuse' policy: with hold_last a departure may lie after the forecast, and then every
     // record counts, which errs towards land)
     const double departure = m.departure.window ? m.departure.begin : m.departure.time;
-    if (std::isfinite(departure) && departure >= 0.0 && c.horizonPolicy == "refuse")
+    if (std::isfinite(departure) && departure >= 0.0 && c.horizonPolicy == BeyondForecast::Refuse)
     {
         if (departure > 0.0)
         {
@@ -96,7 +96,7 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     o.field.xy = parseInterp2D(c.xyInterpolation);
     o.field.depth = parseInterp1D(c.depthInterpolation);
     o.field.time = parseInterp1D(c.timeInterpolation);
-    o.field.beyond = c.horizonPolicy == "hold_last" ? BeyondForecast::HoldLast : BeyondForecast::Refuse;
+    o.field.beyond = c.horizonPolicy;
     o.field.name = "netcdf:" + c.file;
     for (std::size_t k = 1; k < c.files.size(); ++k)
         o.field.name += "," + c.files[k];

@@ -1,21 +1,24 @@
 # mission/: mission files, the problem, the one planning pipeline, departure-time search
 list(APPEND OMPL_GLIDER_SOURCES
-  ${CMAKE_CURRENT_LIST_DIR}/AkimaSpline.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/Coastline.cpp
   ${CMAKE_CURRENT_LIST_DIR}/DepartureTimeSearch.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/IsoTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionLoader.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/OutputFormats.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/MissionReader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Sections.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/ForbiddenRegions.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
+  # the planning pipeline, one concern per file (see PlanningInternal.h)
   ${CMAKE_CURRENT_LIST_DIR}/Planning.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/PlannerSetup.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/NoPathReason.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Ensembles.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/GoalWindow.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Evaluations.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Isochrones.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionExecution.cpp
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/ForecastMission.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
   )
 endif()

@@ -113,8 +113,8 @@ void panel(cairo_t *cr, double x0, double y0, const ExecutionResult &e, const st
 
 void writeExecutionPlot(const std::string &path, const ExecutionResult &e, const MissionSpec &m, bool svg)
 {
-    const bool metric = m.current.type == "netcdf" || m.lengthUnitMetres != 1.0;
-    const bool hours = m.current.type == "netcdf" || m.timeUnitSeconds != 1.0;
+    const bool metric = m.physicalUnits().length;
+    const bool hours = m.physicalUnits().time;
     const double lengthScale = metric ? m.lengthUnitMetres / 1000.0 : 1.0;
     const double timeScale = hours ? m.timeUnitSeconds / 3600.0 : 1.0;
     const std::string lengthAxis = metric ? "km" : "length units";

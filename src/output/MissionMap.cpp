@@ -40,8 +40,7 @@ MapPolygon mapPolygon(const MissionPolygon &p)
 /// otherwise. Returns the unit's name ("" for field time).
 std::string tickUnit(const MissionResult &r, std::vector<std::vector<TimedPoint> *> paths)
 {
-    const bool physical = r.spec.current.type == "netcdf" || r.spec.timeUnitSeconds != 1.0;
-    if (!physical)
+    if (!r.spec.physicalUnits().time)
         return "";
     const double tripSeconds = r.plan.travelTime * r.spec.timeUnitSeconds;
     const double unit = tripSeconds > 4 * 86400.0 ? 86400.0 : 3600.0;
@@ -55,8 +54,7 @@ std::string tickUnit(const MissionResult &r, std::vector<std::vector<TimedPoint>
 /// field's number.
 std::string duration(const MissionResult &r, double t, bool shortForm = false)
 {
-    const bool physical = r.spec.current.type == "netcdf" || r.spec.timeUnitSeconds != 1.0;
-    if (!physical || !std::isfinite(t))
+    if (!r.spec.physicalUnits().time || !std::isfinite(t))
         return fmt(t);
     const double h = t * r.spec.timeUnitSeconds / 3600.0;
     char buf[64];
@@ -72,11 +70,10 @@ std::string duration(const MissionResult &r, double t, bool shortForm = false)
 /// A length: km when the frame is in metres, else the field's number.
 std::string length(const MissionResult &r, double d)
 {
-    const double metres = r.spec.current.type == "netcdf" ? 1.0 : r.spec.lengthUnitMetres;
-    if (metres == 1.0 && r.spec.current.type != "netcdf")
+    if (!r.spec.physicalUnits().length)
         return fmt(d);
     char buf[48];
-    std::snprintf(buf, sizeof buf, "%.1f km", d * metres / 1000.0);
+    std::snprintf(buf, sizeof buf, "%.1f km", d * r.spec.lengthUnitMetres / 1000.0);
     return buf;
 }
 
@@ -110,7 +107,7 @@ void addPaths(MapRenderer &map, const MissionResult &r)
 MapOptions mapFrame(const MissionProblem &problem)
 {
     const MissionSpec &m = problem.getSpec();
-    const bool netcdf = m.current.type == "netcdf";
+    const bool netcdf = m.current.isForecast();
     MapOptions mo;
     if (problem.isGeographic())
     {
@@ -167,7 +164,7 @@ MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &pro
     const ExecutionResult &e = *r.execution;
     MapOptions mo = mapFrame(problem);
     mo.arrows = false;
-    const bool netcdf = m.current.type == "netcdf";
+    const bool netcdf = m.current.isForecast();
     mo.shadingLabel = netcdf ? "RMS |truth - forecast| (m/s)" : "RMS |truth - forecast|";
     mo.title = m.name + " - truth against forecast, RMS over " + duration(r, e.differenceEnd - e.differenceBegin);
     MapRenderer map(problem.getBox(), mo);
@@ -192,7 +189,7 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
 {
     const MissionSpec &m = r.spec;
     MapOptions mo = mapFrame(problem);
-    const bool netcdf = m.current.type == "netcdf";
+    const bool netcdf = m.current.isForecast();
     const std::string depIso = problem.isoTime(r.plan.departure);
     mo.title = m.name + " - " + r.plan.planner + ", V = " + fmt(r.plan.speed) + (netcdf ? " m/s" : "") +
                (depIso.empty() ? "" : ", departing " + depIso) + (r.plan.solved ? "" : " (no path)");

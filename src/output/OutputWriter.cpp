@@ -34,36 +34,36 @@ void writeText(const std::string &path, const std::string &text)
 }
 
 /// The route and map files of one format (summary.json is added by outputFiles()).
-std::vector<OutputFile> formatFiles(const std::string &format, const MissionResult &r, const MissionProblem &problem)
+std::vector<OutputFile> formatFiles(OutputFormatId format, const MissionResult &r, const MissionProblem &problem)
 {
     const MissionResult *res = &r;
-    if (format == "csv")
+    if (format == OutputFormatId::Csv)
         return {{"waypoints.csv", [res](const std::string &p) { writeText(p, waypointsCsv(*res)); }}};
-    if (format == "path")
+    if (format == OutputFormatId::Path)
         return {{"path.csv", [res](const std::string &p) { writeText(p, pathCsv(*res)); }}};
-    if (format == "geojson")
+    if (format == OutputFormatId::GeoJson)
         return {{"path.geojson", [res](const std::string &p) { writeText(p, routeGeoJson(*res)); }}};
-    if (format == "isochrones")
+    if (format == OutputFormatId::Isochrones)
     {
         if (!r.isochrones)
             return {};
         return {{"isochrones.geojson", [res](const std::string &p) { writeText(p, isochronesGeoJson(*res)); }}};
     }
-    if (format == "stints")
+    if (format == OutputFormatId::Stints)
     {
         if (!r.plan.stints)
             return {};
         const MissionProblem *prob = &problem;
         return {{"stints.csv", [res, prob](const std::string &p) { writeText(p, stintsCsv(*res, *prob)); }}};
     }
-    if (format == "goto")
+    if (format == OutputFormatId::Goto)
     {
         if (!problem.isGeographic())
             return {};
         return {{gotoFileName(r.spec.outputs.gotoNumber),
                  [res](const std::string &p) { writeGotoFile(p, gotoList(*res)); }}};
     }
-    if (format == "execution")
+    if (format == OutputFormatId::Execution)
     {
         if (!r.execution)
             return {};
@@ -92,7 +92,7 @@ std::vector<OutputFile> formatFiles(const std::string &format, const MissionResu
         return files;
     }
 #if OMPL_GLIDER_WITH_MAP
-    if (format == "map")
+    if (format == OutputFormatId::Map)
     {
         // One drawing for both files.
         auto map = std::make_shared<std::unique_ptr<MapRenderer>>();
@@ -106,7 +106,7 @@ std::vector<OutputFile> formatFiles(const std::string &format, const MissionResu
                 {"map.png", [draw](const std::string &p) { draw().writePng(p); }}};
     }
 #else
-    if (format == "map")
+    if (format == OutputFormatId::Map)
         throw Error(r.spec.file + ": field 'outputs.files': this build of ompl_glider draws no maps "
                                   "(OMPL_GLIDER_WITH_MAP=OFF)");
 #endif
@@ -162,40 +162,17 @@ fs::path stagingDirectory(const fs::path &target)
 }
 }  // namespace
 
-const std::vector<OutputFormat> &outputFormats()
-{
-    static const std::vector<OutputFormat> formats = {
-        {"summary", "summary.json", "what was planned and how (always written)", false},
-        {"csv", "waypoints.csv", "waypoints with times, lon/lat and dive profiles", true},
-        {"path", "path.csv", "the final path: t,x,y,lon,lat", true},
-        {"geojson", "path.geojson", "the path and its waypoints as GeoJSON", true},
-        {"isochrones", "isochrones.geojson",
-         "reachable-set contours (level set) at times after the departure, as GeoJSON, also drawn on the map", false},
-        {"goto", "goto_lNN.ma", "Slocum goto list (geographic missions)", true},
-        {"stints", "stints.csv", "heading per surfacing: time, position, heading, expected drift (missions with stints)",
-         true},
-        {"map", "map.svg, map.png", "map of the current, regions and paths", false},
-        {"execution", "execution.csv, execution_tracks.csv, execution.svg/png, model_difference.svg/png",
-         "the plan flown in the truth per strategy, and the box plot of a batch (written whenever the mission has "
-         "an execution section)",
-         false},
-    };
-    return formats;
-}
-
 std::vector<OutputFile> outputFiles(const MissionResult &r, const MissionProblem &problem)
 {
     std::vector<OutputFile> files;
     for (const OutputFormat &format : outputFormats())
     {
-        if (format.name == "summary")
+        if (format.id == OutputFormatId::Summary)
             continue;
-        bool wanted = format.name == "execution" && r.execution;
-        for (const std::string &f : r.spec.outputs.files)
-            wanted = wanted || f == format.name;
+        const bool wanted = (format.id == OutputFormatId::Execution && r.execution) || r.spec.outputs.wants(format.id);
         if (!wanted || (format.route && !r.plan.solved))
             continue;
-        for (OutputFile &f : formatFiles(format.name, r, problem))
+        for (OutputFile &f : formatFiles(format.id, r, problem))
             files.push_back(std::move(f));
     }
     const std::string &prefix = r.spec.outputs.prefix;

@@ -10,6 +10,8 @@ list(APPEND OMPL_GLIDER_SOURCES
 if(OMPL_GLIDER_WITH_MAP)
   list(APPEND OMPL_GLIDER_SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/MapRenderer.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/MapRendererAxes.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/MapRendererLegend.cpp
     ${CMAKE_CURRENT_LIST_DIR}/MissionMap.cpp
     ${CMAKE_CURRENT_LIST_DIR}/ExecutionPlot.cpp
   )

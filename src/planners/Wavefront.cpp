@@ -68,7 +68,7 @@ struct QueueEntry
 }  // namespace
 
 Wavefront::Wavefront(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx)
-  : ompl::base::Planner(si, "Wavefront"), ctx_(std::move(ctx))
+  : LatticePlanner(si, "Wavefront", "Wavefront"), ctx_(std::move(ctx))
 {
     if (!ctx_ || !ctx_->field || !ctx_->travel)
         throw Error("Wavefront: a GliderContext with field and travel is required");
@@ -77,8 +77,6 @@ Wavefront::Wavefront(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
     specs_.multithreaded = false;
     specs_.directed = true;
 
-    declareParam<double>("grid_size", this, &Wavefront::setGridSize, &Wavefront::getGridSize, "0.:0.01:1000.");
-    declareParam<unsigned>("sectors", this, &Wavefront::setSectors, &Wavefront::getSectors, "1:1:5");
     declareParam<double>("time_step", this, &Wavefront::setTimeStep, &Wavefront::getTimeStep, "0.:0.05:100.");
 
     const TravelTimeCalculator *travel = ctx_->travel.get();
@@ -106,20 +104,6 @@ ompl::base::PlannerAllocator Wavefront::allocator(std::shared_ptr<const GliderCo
     return [ctx](const ompl::base::SpaceInformationPtr &si) { return std::make_shared<Wavefront>(si, ctx); };
 }
 
-void Wavefront::setGridSize(double g)
-{
-    if (!(g > 0.0) || !std::isfinite(g))
-        throw Error("Wavefront: grid_size must be a finite number > 0 (got " + std::to_string(g) + ")");
-    gridSize_ = g;
-}
-
-void Wavefront::setSectors(unsigned n)
-{
-    if (n < 1 || n > 5)
-        throw Error("Wavefront: sectors must be in 1..5 (got " + std::to_string(n) + ")");
-    sectors_ = n;
-}
-
 void Wavefront::setTimeStep(double dt)
 {
     if (!(dt >= 0.0) || !std::isfinite(dt))
@@ -130,7 +114,7 @@ void Wavefront::setTimeStep(double dt)
 
 double Wavefront::effectiveTimeStep() const
 {
-    return timeStep_ > 0.0 ? timeStep_ : gridSize_ / ctx_->speed();
+    return timeStep_ > 0.0 ? timeStep_ : getGridSize() / ctx_->speed();
 }
 
 double Wavefront::getHoldTime() const
@@ -177,64 +161,168 @@ void Wavefront::clear()
     bestCost_ = kInf;
 }
 
+/// @brief One search of Wavefront::search(): the lattice, the time intervals, the nodes' labels and the queue, with
+/// the steps of [ThompsonICRA] Algorithm 1 as member functions. Writes the planner's message, counters, settled nodes
+/// and path.
+class Wavefront::Search
+{
+public:
+    Search(Wavefront &planner, double startX, double startY, double departure, double goalX, double goalY,
+           const ompl::base::PlannerTerminationCondition &stop);
+    ~Search();
+    Search(const Search &) = delete;
+    Search &operator=(const Search &) = delete;
+    /// @brief The search from the start at t0 to the goal; the path is stored in the planner on Exact.
+    WavefrontOutcome run();
+
+private:
+    using Queue = std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>>;
+
+    std::optional<WavefrontOutcome> checkEndpoints();
+    std::optional<WavefrontOutcome> setUpIntervals();
+    WavefrontOutcome sweep();
+    void recordSettled(NodeKey n, double x, double y, double a, NodeKey parent);
+    bool arriveAtGoal(NodeKey n, double x, double y, double tDepart);
+    void move(NodeKey from, double vx, double vy, double tDepart, Lattice::VertexId u);
+    void storePath();
+    std::vector<TimedPoint> mergeHolds(const std::vector<TimedPoint> &wp) const;
+
+    bool validState(double x, double y, double t);
+    bool inWater(Lattice::VertexId v);
+    bool holdValid(double x, double y, double t1, double t2) const;
+    void improve(NodeKey n, double a, NodeKey parent, bool hold);
+    /// Start of tau_k.
+    double intervalStart(std::uint64_t k) const { return t0 + static_cast<double>(k) * dt; }
+    /// The interval holding t (clamped to 0 .. K - 1).
+    std::uint64_t intervalOf(double t) const
+    {
+        const double k = std::floor((t - t0) / dt);
+        return k <= 0.0 ? std::uint64_t{0} : std::min(K - 1, static_cast<std::uint64_t>(k));
+    }
+
+    Wavefront &wf;
+    const GliderContext &ctx;
+    const CurrentField &field;
+    const TravelTimeCalculator &travel;
+    const Environment *env;
+    const double z;
+    const double sx, sy, t0, gx, gy;
+    const ompl::base::PlannerTerminationCondition &ptc;
+    Lattice lattice;
+    Lattice::VertexId s{Lattice::kNone}, g{Lattice::kNone};
+    ompl::base::State *scratch{nullptr};  ///< the state validState() checks
+    double tEnd{0.0};                     ///< end of the window: min(region.tMax, arriveNotAfter)
+    double dt{0.0};                       ///< interval length
+    std::uint64_t K{0};                   ///< intervals tau_0 .. tau_{K-1}
+    double notBefore{0.0};                ///< the goal window's begin
+    std::unordered_map<Lattice::VertexId, bool> wet;  ///< land cache of the vertices looked at
+    std::unordered_map<NodeKey, NodeLabel> labels;
+    Queue queue;
+    std::unordered_map<NodeKey, std::int64_t> settledIndex;  ///< node -> index in the planner's settled_
+    NodeKey goalNode{kNoNode};
+    double arrival{kInf};
+};
+
+Wavefront::Search::Search(Wavefront &planner, double startX, double startY, double departure, double goalX,
+                          double goalY, const ompl::base::PlannerTerminationCondition &stop)
+  : wf(planner)
+  , ctx(*planner.ctx_)
+  , field(*ctx.field)
+  , travel(*ctx.travel)
+  , env(ctx.environment.get())
+  , z(travel.params().depth)
+  , sx(startX)
+  , sy(startY)
+  , t0(departure)
+  , gx(goalX)
+  , gy(goalY)
+  , ptc(stop)
+  , lattice(ctx.region.xMin, ctx.region.xMax, ctx.region.yMin, ctx.region.yMax, planner.getGridSize(),
+            planner.getSectors())
+{
+}
+
+Wavefront::Search::~Search()
+{
+    if (scratch)
+        wf.si_->freeState(scratch);
+}
+
 WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, double gy,
                                    const ompl::base::PlannerTerminationCondition &ptc)
 {
-    const GliderContext &ctx = *ctx_;
-    const CurrentField &field = *ctx.field;
-    const TravelTimeCalculator &travel = *ctx.travel;
-    const Environment *env = ctx.environment.get();
-    const double z = travel.params().depth;
-    Lattice lattice(ctx.region.xMin, ctx.region.xMax, ctx.region.yMin, ctx.region.yMax, gridSize_, sectors_);
+    return Search(*this, sx, sy, t0, gx, gy, ptc).run();
+}
 
+WavefrontOutcome Wavefront::Search::run()
+{
     // Start and goal (the state checks of OMPL's validity checker, with its reason when it has one).
-    const Lattice::VertexId s = lattice.setStart(sx, sy), g = lattice.setGoal(gx, gy);
-    ompl::base::State *scratch = si_->allocState();
-    struct FreeScratch
+    s = lattice.setStart(sx, sy);
+    g = lattice.setGoal(gx, gy);
+    scratch = wf.si_->allocState();
+    if (const std::optional<WavefrontOutcome> bad = checkEndpoints())
+        return *bad;
+    if (const std::optional<WavefrontOutcome> bad = setUpIntervals())
+        return *bad;
+    notBefore = ctx.arriveNotBefore;
+
+    improve(nodeKey(s, 0), t0, kNoNode, false);
+    const WavefrontOutcome outcome = sweep();
+    if (outcome == WavefrontOutcome::Terminated)
+        return outcome;
+    if (goalNode == kNoNode)
     {
-        const ompl::base::SpaceInformationPtr &si;
-        ompl::base::State *st;
-        ~FreeScratch()
-        {
-            si->freeState(st);
-        }
-    } freeScratch{si_, scratch};
-    auto validState = [&](double x, double y, double t) {
-        scratch->as<TimeState>()->setXYT(x, y, t);
-        scratch->as<TimeState>()->setYaw(0.0);
-        return si_->isValid(scratch);
-    };
+        wf.message_ = "no path reaches the goal by t = " + std::to_string(tEnd) + " (" +
+                      std::to_string(wf.expansions_) + " nodes expanded)";
+        return WavefrontOutcome::Exhausted;
+    }
+    storePath();
+    return WavefrontOutcome::Exact;
+}
+
+/// InvalidStart or InvalidGoal (with the planner's message saying why) when the start at t0 or the goal is not
+/// valid; nothing otherwise.
+std::optional<WavefrontOutcome> Wavefront::Search::checkEndpoints()
+{
     if (s == Lattice::kNone)
     {
-        message_ = "start " + formatPoint(sx, sy) + " lies outside the planning region";
+        wf.message_ = "start " + formatPoint(sx, sy) + " lies outside the planning region";
         return WavefrontOutcome::InvalidStart;
     }
     if (!std::isfinite(t0) || !(t0 >= ctx.region.tMin && t0 <= ctx.region.tMax) || !validState(sx, sy, t0))
     {
-        message_ = "start " + formatPoint(sx, sy) + " is not a valid state at t0 = " + std::to_string(t0);
-        if (const auto *vc = dynamic_cast<const GliderStateValidityChecker *>(si_->getStateValidityChecker().get()))
+        wf.message_ = "start " + formatPoint(sx, sy) + " is not a valid state at t0 = " + std::to_string(t0);
+        if (const auto *vc =
+                dynamic_cast<const GliderStateValidityChecker *>(wf.si_->getStateValidityChecker().get()))
         {
             const std::string why = vc->whyInvalid(scratch);
             if (!why.empty())
-                message_ += ": " + why;
+                wf.message_ += ": " + why;
         }
         return WavefrontOutcome::InvalidStart;
     }
     if (g == Lattice::kNone || !field.inWater(gx, gy, z))
     {
-        message_ = "goal " + formatPoint(gx, gy) +
-                   (g == Lattice::kNone ? " lies outside the planning region" : " is not in water");
+        wf.message_ = "goal " + formatPoint(gx, gy) +
+                      (g == Lattice::kNone ? " lies outside the planning region" : " is not in water");
         return WavefrontOutcome::InvalidGoal;
     }
+    return std::nullopt;
+}
 
-    // Time intervals tau_k = [t0 + k dt, t0 + (k + 1) dt), k = 0 .. K - 1, up to the end of the window.
-    const double tEnd = std::min(ctx.region.tMax, ctx.arriveNotAfter);
+/// Time intervals tau_k = [t0 + k dt, t0 + (k + 1) dt), k = 0 .. K - 1, up to the end of the window; BadWindow or
+/// Exhausted (with the planner's message) when there are none. Throws ompl_glider::Error on more than
+/// kMaxIntervals.
+std::optional<WavefrontOutcome> Wavefront::Search::setUpIntervals()
+{
+    tEnd = std::min(ctx.region.tMax, ctx.arriveNotAfter);
     if (!std::isfinite(tEnd))
     {
-        message_ = "the planning window has no finite end (region.tMax and the goal's arrival window are unbounded)";
+        wf.message_ =
+            "the planning window has no finite end (region.tMax and the goal's arrival window are unbounded)";
         return WavefrontOutcome::BadWindow;
     }
-    const double dt = effectiveTimeStep();
+    dt = wf.effectiveTimeStep();
     const double intervals = std::floor((tEnd - t0) / dt) + 1.0;
     if (!(intervals <= kMaxIntervals))  // (also keeps k below kArrived)
     {
@@ -247,46 +335,53 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
     }
     if (!(intervals >= 1.0))
     {
-        message_ = "the planning window ends (t = " + std::to_string(tEnd) + ") before the departure";
+        wf.message_ = "the planning window ends (t = " + std::to_string(tEnd) + ") before the departure";
         return WavefrontOutcome::Exhausted;
     }
-    const auto K = static_cast<std::uint64_t>(intervals);
-    auto intervalStart = [&](std::uint64_t k) { return t0 + static_cast<double>(k) * dt; };
-    auto intervalOf = [&](double t) {
-        const double k = std::floor((t - t0) / dt);
-        return k <= 0.0 ? std::uint64_t{0} : std::min(K - 1, static_cast<std::uint64_t>(k));
-    };
-    const double notBefore = ctx.arriveNotBefore;
+    K = static_cast<std::uint64_t>(intervals);
+    return std::nullopt;
+}
 
-    std::unordered_map<Lattice::VertexId, bool> wet;  // land cache of the vertices looked at
-    auto inWater = [&](Lattice::VertexId v) {
-        const auto [it, inserted] = wet.try_emplace(v, false);
-        if (inserted)
-            it->second = field.inWater(lattice.x(v), lattice.y(v), z);
-        return it->second;
-    };
-    // A hold at (x, y) over [t1, t2]: the motion validator's verdict (canHold(): |c| < V; the environment).
-    auto holdValid = [&](double x, double y, double t1, double t2) {
-        return t2 == t1 || validator_->classify(x, y, t1, x, y, t2) == MotionVerdict::Valid;
-    };
+/// The validity checker's verdict on (x, y, t) (yaw 0).
+bool Wavefront::Search::validState(double x, double y, double t)
+{
+    scratch->as<TimeState>()->setXYT(x, y, t);
+    scratch->as<TimeState>()->setYaw(0.0);
+    return wf.si_->isValid(scratch);
+}
 
-    std::unordered_map<NodeKey, NodeLabel> labels;
-    std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> queue;
-    auto improve = [&](NodeKey n, double a, NodeKey parent, bool hold) {
-        NodeLabel &l = labels[n];
-        if (l.closed || !(a < l.a))
-            return;
-        l.a = a;
-        l.parent = parent;
-        l.hold = hold;
-        const std::uint64_t k = nodeInterval(n);
-        queue.push({k == kArrived ? a : std::max(a, intervalStart(k)), a, n});
-    };
-    improve(nodeKey(s, 0), t0, kNoNode, false);
+/// Land test of a vertex (cached).
+bool Wavefront::Search::inWater(Lattice::VertexId v)
+{
+    const auto [it, inserted] = wet.try_emplace(v, false);
+    if (inserted)
+        it->second = field.inWater(lattice.x(v), lattice.y(v), z);
+    return it->second;
+}
 
-    NodeKey goalNode = kNoNode;
-    double arrival = kInf;
-    std::unordered_map<NodeKey, std::int64_t> settledIndex;
+/// A hold at (x, y) over [t1, t2]: the motion validator's verdict (canHold(): |c| < V; the environment).
+bool Wavefront::Search::holdValid(double x, double y, double t1, double t2) const
+{
+    return t2 == t1 || wf.validator_->classify(x, y, t1, x, y, t2) == MotionVerdict::Valid;
+}
+
+/// Node n reached at a from parent (by a hold or a move): queued when it improves n's label and n is open.
+void Wavefront::Search::improve(NodeKey n, double a, NodeKey parent, bool hold)
+{
+    NodeLabel &l = labels[n];
+    if (l.closed || !(a < l.a))
+        return;
+    l.a = a;
+    l.parent = parent;
+    l.hold = hold;
+    const std::uint64_t k = nodeInterval(n);
+    queue.push({k == kArrived ? a : std::max(a, intervalStart(k)), a, n});
+}
+
+/// The wavefront: settles nodes in increasing departure time until a goal node is settled (Exact, goalNode and
+/// arrival set), the queue runs empty (Exhausted) or the termination condition fires (Terminated).
+WavefrontOutcome Wavefront::Search::sweep()
+{
     while (!queue.empty())
     {
         const QueueEntry e = queue.top();
@@ -295,14 +390,12 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
         if (label.closed || e.a != label.a)
             continue;  // stale entry
         label.closed = true;
-        if ((++expansions_ & 63u) == 0 && ptc())
+        if ((++wf.expansions_ & 63u) == 0 && ptc())
             return WavefrontOutcome::Terminated;
         const Lattice::VertexId v = nodeVertex(e.n);
         const std::uint64_t k = nodeInterval(e.n);
         const double vx = lattice.x(v), vy = lattice.y(v);
-        const auto parentIt = settledIndex.find(label.parent);
-        settledIndex[e.n] = static_cast<std::int64_t>(settled_.size());
-        settled_.push_back({vx, vy, e.a, parentIt == settledIndex.end() ? -1 : parentIt->second});
+        recordSettled(e.n, vx, vy, e.a, label.parent);
         // Earliest possible departure ([ThompsonICRA] Algorithm 1, lines 13-16).
         const double tDepart = e.key;  // = max(A, start of tau_k)
 
@@ -310,52 +403,68 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
         {
             goalNode = e.n;  // the earliest arrival inside the window
             arrival = e.a;
-            break;
+            return WavefrontOutcome::Exact;
         }
-        if (v == g)
-        {
-            // Earliest valid arrival in the goal's window: hold at the goal until the window opens when needed.
-            const double t = std::max(tDepart, notBefore);
-            if (t <= tEnd && holdValid(vx, vy, tDepart, t))
-            {
-                goalNode = e.n;
-                arrival = t;
-                break;
-            }
-        }
+        if (v == g && arriveAtGoal(e.n, vx, vy, tDepart))
+            return WavefrontOutcome::Exact;
         // Hold position into the next interval ([ThompsonICRA] Algorithm 1, lines 6-10).
         if (k + 1 < K && holdValid(vx, vy, tDepart, intervalStart(k + 1)))
             improve(nodeKey(v, k + 1), e.a, e.n, true);
         // Move to each lattice neighbour ([ThompsonICRA] Algorithm 1, lines 11-22).
-        lattice.forEachSuccessor(v, [&](Lattice::VertexId u) {
-            if (u == Lattice::kNone || !inWater(u))
-                return;
-            const double ux = lattice.x(u), uy = lattice.y(u);
-            const double w = travel.travelTime(vx, vy, ux, uy, tDepart);
-            if (!std::isfinite(w))
-                return;
-            const double ta = tDepart + w;
-            if (!(ta <= tEnd))
-                return;
-            const NodeKey child = nodeKey(u, u == g && ta >= notBefore ? kArrived : intervalOf(ta));
-            const auto it = labels.find(child);
-            if (it != labels.end() && (it->second.closed || !(ta < it->second.a)))
-                return;
-            if (env && !env->legFree(vx, vy, tDepart, ux, uy, ta))
-                return;
-            if (!validState(ux, uy, ta))
-                return;
-            improve(child, ta, e.n, false);
-        });
+        lattice.forEachSuccessor(v, [&](Lattice::VertexId u) { move(e.n, vx, vy, tDepart, u); });
     }
-    if (goalNode == kNoNode)
-    {
-        message_ = "no path reaches the goal by t = " + std::to_string(tEnd) + " (" + std::to_string(expansions_) +
-                   " nodes expanded)";
-        return WavefrontOutcome::Exhausted;
-    }
+    return WavefrontOutcome::Exhausted;
+}
 
-    // The path ([ThompsonICRA] Algorithm 1, lines 24-29): parents from the goal node back to the start.
+/// Appends the settled node n (arrival a) to the planner's settled nodes, linked to its parent's entry.
+void Wavefront::Search::recordSettled(NodeKey n, double x, double y, double a, NodeKey parent)
+{
+    const auto parentIt = settledIndex.find(parent);
+    const std::int64_t parentIndex = parentIt == settledIndex.end() ? -1 : parentIt->second;
+    settledIndex[n] = static_cast<std::int64_t>(wf.settled_.size());
+    wf.settled_.push_back({x, y, a, parentIndex});
+}
+
+/// The goal node n at (x, y) is settled: the earliest valid arrival in the goal's window, holding at the goal until
+/// the window opens when needed. True (goalNode and arrival set) when that hold is valid and ends in the window.
+bool Wavefront::Search::arriveAtGoal(NodeKey n, double x, double y, double tDepart)
+{
+    const double t = std::max(tDepart, notBefore);
+    if (!(t <= tEnd && holdValid(x, y, tDepart, t)))
+        return false;
+    goalNode = n;
+    arrival = t;
+    return true;
+}
+
+/// The move from node `from` at (vx, vy), departing at tDepart, to the lattice successor u (one CFC): improves the
+/// node of its arrival when it is finite, by the end of the window, the leg is free and the arrival state valid.
+void Wavefront::Search::move(NodeKey from, double vx, double vy, double tDepart, Lattice::VertexId u)
+{
+    if (u == Lattice::kNone || !inWater(u))
+        return;
+    const double ux = lattice.x(u), uy = lattice.y(u);
+    const double w = travel.travelTime(vx, vy, ux, uy, tDepart);
+    if (!std::isfinite(w))
+        return;
+    const double ta = tDepart + w;
+    if (!(ta <= tEnd))
+        return;
+    const NodeKey child = nodeKey(u, u == g && ta >= notBefore ? kArrived : intervalOf(ta));
+    const auto it = labels.find(child);
+    if (it != labels.end() && (it->second.closed || !(ta < it->second.a)))
+        return;
+    if (env && !env->legFree(vx, vy, tDepart, ux, uy, ta))
+        return;
+    if (!validState(ux, uy, ta))
+        return;
+    improve(child, ta, from, false);
+}
+
+/// The path ([ThompsonICRA] Algorithm 1, lines 24-29): parents from the goal node back to the start, the final hold
+/// at the goal, holds merged; stored with the travel time in the planner.
+void Wavefront::Search::storePath()
+{
     std::vector<NodeKey> chain;
     for (NodeKey n = goalNode; n != kNoNode; n = labels[n].parent)
         chain.push_back(n);
@@ -369,7 +478,13 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
     }
     if (arrival > wp.back().t)
         wp.push_back({wp.back().x, wp.back().y, arrival});  // the final hold at the goal until its window opens
-    // Merge each run of holds at one place into one motion where the validator accepts it.
+    wf.waypoints_ = mergeHolds(wp);
+    wf.travelTime_ = arrival - t0;
+}
+
+/// Merges each run of holds at one place into one motion where the validator accepts it.
+std::vector<TimedPoint> Wavefront::Search::mergeHolds(const std::vector<TimedPoint> &wp) const
+{
     std::vector<TimedPoint> merged;
     for (std::size_t i = 0; i < wp.size();)
     {
@@ -387,9 +502,7 @@ WavefrontOutcome Wavefront::search(double sx, double sy, double t0, double gx, d
         }
         i = j + 1;
     }
-    waypoints_ = std::move(merged);
-    travelTime_ = arrival - t0;
-    return WavefrontOutcome::Exact;
+    return merged;
 }
 
 ompl::base::PlannerStatus Wavefront::solve(const ompl::base::PlannerTerminationCondition &ptc)

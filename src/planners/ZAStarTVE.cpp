@@ -30,11 +30,20 @@ double legYaw(double x1, double y1, double x2, double y2)
     const double yaw = std::atan2(y2 - y1, x2 - x1);
     return yaw >= 3.14159265358979323846 ? yaw - 2.0 * 3.14159265358979323846 : yaw;
 }
+
+/// n when lo <= n <= hi; else throws "ZAStarTVE: <name> must be an integer in lo..hi (<note>got n)".
+unsigned checkedInteger(const char *name, unsigned n, unsigned lo, unsigned hi, const char *note = "")
+{
+    if (n < lo || n > hi)
+        throw Error(std::string("ZAStarTVE: ") + name + " must be an integer in " + std::to_string(lo) + ".." +
+                    std::to_string(hi) + " (" + note + "got " + std::to_string(n) + ")");
+    return n;
+}
 }  // namespace
 
 ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx,
                      const std::string &configuration)
-  : ompl::base::Planner(si, configuration), ctx_(std::move(ctx))
+  : LatticePlanner(si, configuration, "ZAStarTVE"), ctx_(std::move(ctx))
 {
     if (!ctx_ || !ctx_->field || !ctx_->travel)
         throw Error("ZAStarTVE: a GliderContext with field and travel is required");
@@ -76,8 +85,6 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
                            "0:1:64");
     declareParam<unsigned>("corridor_blocks", this, &ZAStarTVE::setCorridorBlocks, &ZAStarTVE::getCorridorBlocks,
                            "1:1:1000");
-    declareParam<unsigned>("sectors", this, &ZAStarTVE::setSectors, &ZAStarTVE::getSectors, "1:1:5");
-    declareParam<double>("grid_size", this, &ZAStarTVE::setGridSize, &ZAStarTVE::getGridSize, "0.:0.01:1000.");
     declareParam<unsigned>("zermelo_steps", this, &ZAStarTVE::setZermeloSteps, &ZAStarTVE::getZermeloSteps,
                            "1:1:64");
     declareParam<bool>("smooth", this, &ZAStarTVE::setSmooth, &ZAStarTVE::getSmooth, "0,1");
@@ -145,50 +152,27 @@ void ZAStarTVE::setCertifyTolerance(double tol)
 
 void ZAStarTVE::setZermeloSteps(unsigned n)
 {
-    if (n < 1 || n > 10000)
-        throw Error("ZAStarTVE: zermelo_steps must be an integer in 1..10000 (got " + std::to_string(n) + ")");
-    options_.zermeloSteps = n;
+    options_.zermeloSteps = checkedInteger("zermelo_steps", n, 1, 10000);
 }
 
 void ZAStarTVE::setCoarseFactor(unsigned f)
 {
-    if (f > 64)
-        throw Error("ZAStarTVE: coarse_factor must be an integer in 0..64 (0 automatic, 1 off; got " +
-                    std::to_string(f) + ")");
-    options_.coarseFactor = f;
+    options_.coarseFactor = checkedInteger("coarse_factor", f, 0, 64, "0 automatic, 1 off; ");
 }
 
 void ZAStarTVE::setCorridorBlocks(unsigned b)
 {
-    if (b < 1 || b > 1000)
-        throw Error("ZAStarTVE: corridor_blocks must be an integer in 1..1000 (got " + std::to_string(b) + ")");
-    options_.corridorBlocks = b;
+    options_.corridorBlocks = checkedInteger("corridor_blocks", b, 1, 1000);
 }
 
 void ZAStarTVE::setRefinerMaxEvaluations(unsigned n)
 {
-    if (n < 1 || n > 100000000u)
-        throw Error("ZAStarTVE: refiner_max_evaluations must be an integer in 1..100000000 (got " +
-                    std::to_string(n) + ")");
-    refinerMaxEvaluations_ = n;
+    refinerMaxEvaluations_ = checkedInteger("refiner_max_evaluations", n, 1, 100000000u);
 }
 
-void ZAStarTVE::setSectors(unsigned n)
+void ZAStarTVE::latticeChanged()
 {
-    if (n < 1 || n > 5)
-        throw Error("ZAStarTVE: sectors must be in 1..5 (got " + std::to_string(n) + ")");
-    if (n != sectors_)
-        search_.reset();
-    sectors_ = n;
-}
-
-void ZAStarTVE::setGridSize(double g)
-{
-    if (!(g > 0.0) || !std::isfinite(g))
-        throw Error("ZAStarTVE: grid_size must be a finite number > 0 (got " + std::to_string(g) + ")");
-    if (g != gridSize_)
-        search_.reset();
-    gridSize_ = g;
+    search_.reset();
 }
 
 void ZAStarTVE::setup()
@@ -201,7 +185,7 @@ void ZAStarTVE::setup()
         return;
     }
     if (!search_)
-        search_ = std::make_unique<TveSearch>(ctx_, gridSize_, sectors_);  // throws Error on bad lattice params
+        search_ = std::make_unique<TveSearch>(ctx_, getGridSize(), getSectors());  // throws Error on bad lattice params
 }
 
 void ZAStarTVE::freeDataStates() const
@@ -226,7 +210,7 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
 {
     checkValidity();
     if (!search_)
-        search_ = std::make_unique<TveSearch>(ctx_, gridSize_, sectors_);
+        search_ = std::make_unique<TveSearch>(ctx_, getGridSize(), getSectors());
 
     // Start (its time is the departure t0) and goal position (startAndGoal(): read so that solve() can be repeated).
     ompl::base::PlannerStatus status;

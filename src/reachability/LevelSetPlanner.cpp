@@ -39,6 +39,36 @@ bool holdable(const GliderContext &ctx, double x, double y, double t1, double t2
     }
     return true;
 }
+
+/// The farthest index j > a (at most 512 on, no hold in between) such that every point between a and j is within
+/// @p tolerance of the chord from path[a] to path[j]; a + 1 at least.
+std::size_t farthestChord(const std::vector<TimedPoint> &path, std::size_t a, double tolerance)
+{
+    const auto same = [&](std::size_t i, std::size_t j) { return path[i].x == path[j].x && path[i].y == path[j].y; };
+    const std::size_t n = path.size();
+    std::size_t best = a + 1;
+    for (std::size_t j = a + 2; j < n && j - a <= 512 && !same(j - 1, j); ++j)
+    {
+        bool ok = true;
+        for (std::size_t k = a + 1; k < j && ok; ++k)
+            ok = segmentDistance(path[k], path[a], path[j]) <= tolerance;
+        if (!ok)
+            break;
+        best = j;
+    }
+    return best;
+}
+
+/// Why the leg from path[a] (departing at @p t) to the next point cannot be flown (for levelSetWaypoints()'s why).
+std::string infeasibleLegReason(const GliderContext &ctx, const std::vector<TimedPoint> &path, std::size_t a, double t)
+{
+    const std::string env = ctx.environment ? ctx.environment->whyLegBlocked(path[a].x, path[a].y, t, path[a + 1].x,
+                                                                             path[a + 1].y, t + 1e-9)
+                                            : std::string();
+    return "leg from (" + std::to_string(path[a].x) + ", " + std::to_string(path[a].y) + ") at time " +
+           std::to_string(t) + " (level set " + std::to_string(path[a].t) + ") to the next point is infeasible" +
+           (env.empty() ? "" : ": " + env);
+}
 }  // namespace
 
 double defaultLevelSetResolution(const GliderContext &ctx)
@@ -72,17 +102,7 @@ std::vector<TimedPoint> levelSetWaypoints(const GliderContext &ctx, const std::v
             ++a;
             continue;
         }
-        // Farthest point whose chord stays within the tolerance of the curve (no hold in between).
-        std::size_t best = a + 1;
-        for (std::size_t j = a + 2; j < n && j - a <= 512 && !same(j - 1, j); ++j)
-        {
-            bool ok = true;
-            for (std::size_t k = a + 1; k < j && ok; ++k)
-                ok = segmentDistance(path[k], path[a], path[j]) <= tolerance;
-            if (!ok)
-                break;
-            best = j;
-        }
+        const std::size_t best = farthestChord(path, a, tolerance);
         double tt = std::numeric_limits<double>::infinity();
         std::size_t j = best;
         for (; j > a; --j)
@@ -118,15 +138,7 @@ std::vector<TimedPoint> levelSetWaypoints(const GliderContext &ctx, const std::v
             if (!found)
             {
                 if (why)
-                {
-                    const std::string env =
-                        ctx.environment ? ctx.environment->whyLegBlocked(path[a].x, path[a].y, t, path[a + 1].x,
-                                                                         path[a + 1].y, t + 1e-9)
-                                        : std::string();
-                    *why = "leg from (" + std::to_string(path[a].x) + ", " + std::to_string(path[a].y) +
-                           ") at time " + std::to_string(t) + " (level set " + std::to_string(path[a].t) +
-                           ") to the next point is infeasible" + (env.empty() ? "" : ": " + env);
-                }
+                    *why = infeasibleLegReason(ctx, path, a, t);
                 return {};
             }
             heldHere = true;

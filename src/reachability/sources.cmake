@@ -1,6 +1,9 @@
 # reachability/: the level-set solver (reachable sets, first-arrival times, optimal paths, isochrones; issue 12)
+# LevelSetInternal.h (internal, not installed) describes how the solver is split over the LevelSet*.cpp files.
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/LevelSet.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/LevelSetDistance.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/LevelSetBacktrack.cpp
 )
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/LevelSetPlanner.cpp

@@ -25,6 +25,73 @@ constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a
 constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84;
 constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
                  e6 = 22.0 / 525, e7 = -1.0 / 40;
+
+/// Step-size control after a rejected step (scaled error err > 1, or not finite): shrinks h; false when h became
+/// too small to proceed at time t (a singular field).
+bool shrinkStep(double err, double t, double &h)
+{
+    h *= std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -0.2)) : 0.2;
+    return !(h < 1e-14 * std::max(1.0, t));
+}
+
+/// Factor of the next step size after an accepted step with scaled error err.
+double growthFactor(double err)
+{
+    return std::min(5.0, 0.9 * std::pow(std::max(err, 1e-10), -0.2));
+}
+
+/// The adaptive step loop of shoot() and trajectory(): from t = 0 to `duration`, at most maxSteps tries, step sizes
+/// from shrinkStep() and growthFactor(). attempt(t, h, err) makes one step of size h from t (setting its scaled
+/// error) and returns false to stop; accept(t, h) takes the step just made, before t advances by h.
+template <typename Attempt, typename Accept>
+void stepLoop(double duration, int maxSteps, Attempt &&attempt, Accept &&accept)
+{
+    double t = 0.0;
+    double h = std::max(1e-6, 1e-3 * duration);
+    int steps = 0;
+    while (t < duration && steps < maxSteps)
+    {
+        ++steps;
+        h = std::min(h, duration - t);
+        double err = 0.0;
+        if (!attempt(t, h, err))
+            break;
+        if (!(err <= 1.0))
+        {
+            if (!shrinkStep(err, t, h))
+                break;  // cannot proceed (singular field)
+            continue;
+        }
+        accept(t, h);
+        t += h;
+        h *= growthFactor(err);
+    }
+}
+
+/// Trial point of the Illinois method on the bracket (a, fa), (b, fb): the secant's root, or the middle when that
+/// root is not strictly inside the bracket.
+double illinoisPoint(double a, double fa, double b, double fb)
+{
+    const double c = (a * fb - b * fa) / (fb - fa);
+    if (!(c > std::min(a, b) && c < std::max(a, b)))
+        return 0.5 * (a + b);
+    return c;
+}
+
+/// Illinois update with the trial point (c, fc): c replaces b; when fc has the sign of fb the kept end a has its
+/// value halved, else b becomes the new a.
+void illinoisUpdate(double &a, double &fa, double &b, double &fb, double c, double fc)
+{
+    if ((fc < 0.0) == (fb < 0.0))
+        fa *= 0.5;
+    else
+    {
+        a = b;
+        fa = fb;
+    }
+    b = c;
+    fb = fc;
+}
 }  // namespace
 
 ZermeloReference::ZermeloReference(std::shared_ptr<const CurrentField> field, ZermeloParams params)
@@ -94,27 +161,17 @@ std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, doubl
     std::vector<ClosestApproach> events;
     const double tEndField = field_->timeEnd();
     Y s{x1, y1, theta0};
-    double t = 0.0;
     Y k1 = rhs(t0, s);
+    Y sNew{};
     auto g = [&](const Y &st, const Y &d) { return (st.x - gx) * d.x + (st.y - gy) * d.y; };
     double gPrev = g(s, k1);
-    double h = std::max(1e-6, 1e-3 * maxTime);
-    int steps = 0;
-    while (t < maxTime && steps < params_.maxSteps)
-    {
-        ++steps;
-        h = std::min(h, maxTime - t);
+    auto attempt = [&](double t, double h, double &err) {
         if (t0 + t + h > tEndField)
-            break;
-        double err = 0.0;
-        const Y sNew = step(t0 + t, s, k1, h, relTol, err);
-        if (!(err <= 1.0))
-        {
-            h *= std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -0.2)) : 0.2;
-            if (h < 1e-14 * std::max(1.0, t))
-                break;  // cannot proceed (singular field)
-            continue;
-        }
+            return false;
+        sNew = step(t0 + t, s, k1, h, relTol, err);
+        return true;
+    };
+    auto accept = [&](double t, double h) {
         const Y kNew = rhs(t0 + t + h, sNew);
         const double gNew = g(sNew, kNew);
         if (gPrev < 0.0 && gNew >= 0.0)
@@ -127,9 +184,7 @@ std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, doubl
             Y dAt = kNew;
             for (int it = 0; it < 80 && b - a > 1e-15 * std::max(1.0, t); ++it)
             {
-                double c = (a * fb - b * fa) / (fb - fa);
-                if (!(c > a && c < b))
-                    c = 0.5 * (a + b);
+                const double c = illinoisPoint(a, fa, b, fb);
                 double dummy;
                 const Y sc = step(t0 + t, s, k1, c, relTol, dummy);
                 const Y dc = rhs(t0 + t + c, sc);
@@ -139,19 +194,7 @@ std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, doubl
                 dAt = dc;
                 if (fc == 0.0)
                     break;
-                if ((fc < 0.0) == (fb < 0.0))
-                {
-                    b = c;
-                    fb = fc;
-                    fa *= 0.5;
-                }
-                else
-                {
-                    a = b;
-                    fa = fb;
-                    b = c;
-                    fb = fc;
-                }
+                illinoisUpdate(a, fa, b, fb, c, fc);
                 if (a > b)
                 {
                     std::swap(a, b);
@@ -169,12 +212,11 @@ std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, doubl
             e.state = {t0 + e.t, sAt.x, sAt.y, sAt.th};
             events.push_back(e);
         }
-        t += h;
         s = sNew;
         k1 = kNew;
         gPrev = gNew;
-        h *= std::min(5.0, 0.9 * std::pow(std::max(err, 1e-10), -0.2));
-    }
+    };
+    stepLoop(maxTime, params_.maxSteps, attempt, accept);
     return events;
 }
 
@@ -183,30 +225,20 @@ std::vector<ZermeloState> ZermeloReference::trajectory(double x1, double y1, dou
 {
     std::vector<ZermeloState> out;
     Y s{x1, y1, theta0};
-    double t = 0.0;
     out.push_back({t0, s.x, s.y, s.th});
     Y k1 = rhs(t0, s);
-    double h = std::max(1e-6, 1e-3 * duration);
-    int steps = 0;
-    while (t < duration && steps < params_.maxSteps)
-    {
-        ++steps;
-        h = std::min(h, duration - t);
-        double err = 0.0;
-        const Y sNew = step(t0 + t, s, k1, h, params_.relTol, err);
-        if (!(err <= 1.0))
-        {
-            h *= std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -0.2)) : 0.2;
-            if (h < 1e-14 * std::max(1.0, t))
-                break;
-            continue;
-        }
-        t += h;
+    Y sNew{};
+    auto attempt = [&](double t, double h, double &err) {
+        sNew = step(t0 + t, s, k1, h, params_.relTol, err);
+        return true;
+    };
+    auto accept = [&](double t, double h) {
+        const double tNext = t + h;
         s = sNew;
-        k1 = rhs(t0 + t, s);
-        out.push_back({t0 + t, s.x, s.y, s.th});
-        h *= std::min(5.0, 0.9 * std::pow(std::max(err, 1e-10), -0.2));
-    }
+        k1 = rhs(t0 + tNext, s);
+        out.push_back({t0 + tNext, s.x, s.y, s.th});
+    };
+    stepLoop(duration, params_.maxSteps, attempt, accept);
     return out;
 }
 
@@ -294,24 +326,14 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
         {
             if (std::abs(cur.miss) <= 0.1 * params_.goalTolerance || std::abs(b - a) < 1e-15)
                 break;
-            double c = (a * fb - b * fa) / (fb - fa);
-            if (!(c > std::min(a, b) && c < std::max(a, b)))
-                c = 0.5 * (a + b);
+            const double c = illinoisPoint(a, fa, b, fb);
             double fc;
             tRef = cur.t;
             if (!F(c, fc))
                 break;
             cur = last;
             curTh = c;
-            if ((fc < 0.0) == (fb < 0.0))
-                fa *= 0.5;
-            else
-            {
-                a = b;
-                fa = fb;
-            }
-            b = c;
-            fb = fc;
+            illinoisUpdate(a, fa, b, fb, c, fc);
         }
         if (!(std::abs(cur.miss) <= params_.goalTolerance))
             continue;

@@ -36,7 +36,7 @@ PlannerEntry lattice(const std::string &name, std::vector<std::string> aliases, 
     e.name = name;
     e.aliases = std::move(aliases);
     e.description = what;
-    e.lattice = true;
+    e.family = PlannerFamily::Lattice;
     e.make = [name](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &ctx) {
         return std::make_shared<ZAStarTVE>(si, ctx, name);
     };
@@ -49,7 +49,7 @@ PlannerEntry wavefront()
     e.name = "Wavefront";
     e.aliases = {"wavefront"};
     e.description = "earliest valid arrival over (vertex, time interval) nodes with holding ([ThompsonICRA])";
-    e.lattice = true;
+    e.family = PlannerFamily::Lattice;
     e.make = [](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &ctx) {
         return std::make_shared<Wavefront>(si, ctx);
     };
@@ -74,7 +74,7 @@ PlannerEntry levelSet()
     e.name = "LevelSet";
     e.aliases = {"level_set", "levelset"};
     e.description = "level-set reachability front, the continuous optimum (parameter resolution)";
-    e.exhaustive = true;
+    e.family = PlannerFamily::LevelSet;
     e.make = [](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &ctx) {
         return std::make_shared<LevelSetPlanner>(si, ctx);
     };
@@ -86,7 +86,7 @@ PlannerEntry stint(StintMethod method, std::vector<std::string> aliases, const s
     e.name = stintMethodName(method);
     e.aliases = std::move(aliases);
     e.description = what;
-    e.stints = true;
+    e.family = PlannerFamily::Stints;
     e.make = [method](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &ctx) {
         return std::make_shared<StintPlanner>(si, ctx, method);
     };

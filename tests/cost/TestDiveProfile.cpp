@@ -297,9 +297,9 @@ TEST(DiveProfile, BathymetryLimitsTheDive)
     EXPECT_TRUE(std::isinf(r.travelTime));
 }
 
-TEST(DiveProfilePool, EveryIndexOnceNestedAndExceptions)
+TEST(ThreadPool, EveryIndexOnceNestedAndExceptions)
 {
-    DiveProfilePool pool(3);
+    ThreadPool pool(3);
     EXPECT_EQ(pool.size(), 3u);
     for (int round = 0; round < 20; ++round)
     {

@@ -1,4 +1,4 @@
-// The size check of classic-format files (CDF-1, CDF-2, CDF-5; src/current/netcdf/ClassicSize.cpp): the header
+// The size check of classic-format files (CDF-1, CDF-2, CDF-5; src/io/ClassicSize.cpp): the header
 // parsed to the end of the last non-record variable and of the last record, complete files accepted, files cut
 // in the header, in the fixed data and in the last record refused with the byte counts, and loadNetCdfCurrents()
 // refusing a cut forecast that NetCDF-C would read as if complete.

@@ -10,7 +10,7 @@
 
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/CfTime.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 
 using namespace ompl_glider;

@@ -8,7 +8,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/mission/MissionProblem.h"
-#include "ompl_glider/mission/NetCdfBathymetry.h"
+#include "ompl_glider/io/NetCdfBathymetry.h"
 
 using namespace ompl_glider;
 

@@ -12,7 +12,7 @@
 
 #include "../current/TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/mission/Coastline.h"
+#include "ompl_glider/io/Coastline.h"
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/mission/AkimaSpline.h"
+#include "ompl_glider/current/AkimaSpline.h"
 #include "ompl_glider/mission/DepartureTimeSearch.h"
 
 using namespace ompl_glider;

@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/mission/IsoTime.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionSpec.h"
 
 using namespace ompl_glider;
@@ -105,7 +105,8 @@ TEST(MissionFile, MinimalMissionAndDefaults)
     EXPECT_EQ(m.planner.name, "ZA*TVE");  // the canonical name of the registry
     EXPECT_FALSE(m.departure.window);
     EXPECT_FALSE(m.dive.enabled);
-    EXPECT_EQ(m.outputs.files, (std::vector<std::string>{"csv", "geojson", "summary"}));  // no projection: no goto
+    EXPECT_EQ(m.outputs.files,
+              (std::vector<OutputFormatId>{OutputFormatId::Csv, OutputFormatId::GeoJson, OutputFormatId::Summary}));  // no projection: no goto
 }
 
 TEST(MissionFile, UnknownFieldsAreRejectedWithTheirLine)

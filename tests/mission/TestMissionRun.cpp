@@ -460,7 +460,7 @@ TEST(MissionRun, NetCdfForecastMission)
     spec.departure.window = false;
     spec.departure.time = 6 * 3600.0;
     spec.outputs.directory = ::testing::TempDir() + "mission_labrador";
-    spec.outputs.files = {"csv", "goto", "summary"};
+    spec.outputs.files = {OutputFormatId::Csv, OutputFormatId::Goto, OutputFormatId::Summary};
     fs::remove_all(spec.outputs.directory);
     const MissionProblem problem(spec);
     const MissionResult r = runMission(problem);

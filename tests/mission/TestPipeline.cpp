@@ -236,7 +236,7 @@ TEST(Pipeline, EveryRegisteredPlannerIsReachableByNameAndAlias)
         const auto planner = e.make(ss->getSpaceInformation(), ctx);
         ASSERT_NE(planner, nullptr) << e.name;
         EXPECT_EQ(planner->getName(), e.name);
-        EXPECT_EQ(e.lattice, std::dynamic_pointer_cast<ZAStarTVE>(planner) != nullptr ||
+        EXPECT_EQ(e.lattice(), std::dynamic_pointer_cast<ZAStarTVE>(planner) != nullptr ||
                                  std::dynamic_pointer_cast<Wavefront>(planner) != nullptr)
             << e.name;
     }

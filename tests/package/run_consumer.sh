@@ -8,7 +8,7 @@ set -euo pipefail
 build_dir=$1; src_dir=$2; work=$3; project_src=${4:-}
 rm -rf "$work"; mkdir -p "$work"
 if [ -n "$project_src" ]; then
-  cmake -S "$project_src" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=OFF \
+  cmake -S "$project_src" -B "$build_dir" -DCMAKE_BUILD_TYPE=None -DBUILD_SHARED_LIBS=OFF \
     -DOMPL_GLIDER_WITH_NETCDF=OFF -DOMPL_GLIDER_WITH_MAP=OFF -DOMPL_GLIDER_BUILD_TESTS=OFF \
     -DOMPL_GLIDER_BUILD_BENCHMARKS=OFF -DOMPL_GLIDER_BUILD_APPS=OFF >/dev/null
   cmake --build "$build_dir" -j"$(nproc)" >/dev/null
@@ -19,6 +19,23 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 if grep -l -e "$root" -e "$build_dir" $targets; then
   echo "the exported targets name paths of this machine's source or build tree"; exit 1
 fi
+# Only the public API is installed: no header of src/, and the internals only under detail/ folders.
+for internal in $(cd "$root/src" && find . -name '*.h' | sed 's|^\./||'); do
+  if [ -e "$work/prefix/include/ompl_glider/$internal" ]; then
+    echo "internal header src/$internal was installed"; exit 1
+  fi
+done
+# The installed glider_plan runs from its prefix, and from the prefix moved elsewhere, with no library path set:
+# its RPATH ($ORIGIN/../lib) finds libompl_glider.
+if [ -x "$work/prefix/bin/glider_plan" ]; then
+  mv "$work/prefix" "$work/moved_prefix"
+  out=$(env -u LD_LIBRARY_PATH "$work/moved_prefix/bin/glider_plan" --speed 0.5 --planner ZAStarTVE \
+        --out "$work/route" 2>&1) || { echo "installed glider_plan failed: $out"; exit 1; }
+  grep -q "Travel time" <<<"$out" || { echo "installed glider_plan printed no travel time: $out"; exit 1; }
+  [ -s "$work/route/summary.json" ] || { echo "installed glider_plan wrote no summary.json"; exit 1; }
+  echo "installed glider_plan ran from $work/moved_prefix"
+  mv "$work/moved_prefix" "$work/prefix"
+fi
 cmake -S "$src_dir" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$work/build" >/dev/null
-LD_LIBRARY_PATH="$work/prefix/lib:$work/prefix/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}" "$work/build/consumer"
+env -u LD_LIBRARY_PATH "$work/build/consumer"

@@ -7,4 +7,5 @@ set_tests_properties(package.find_package_consumer PROPERTIES TIMEOUT 300)
 add_test(NAME package.static_without_netcdf_and_map
   COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/run_consumer.sh ${CMAKE_CURRENT_BINARY_DIR}/static_build
           ${CMAKE_CURRENT_LIST_DIR}/consumer ${CMAKE_CURRENT_BINARY_DIR}/package_static ${PROJECT_SOURCE_DIR})
-set_tests_properties(package.static_without_netcdf_and_map PROPERTIES TIMEOUT 1200)
+# rebuilds the whole library (minutes on two cores): CI only (label "ci"; scripts/run_tests.sh leaves it out)
+set_tests_properties(package.static_without_netcdf_and_map PROPERTIES TIMEOUT 1200 LABELS ci)

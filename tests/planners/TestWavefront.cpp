@@ -331,7 +331,7 @@ TEST(Wavefront, ParametersAreDeclaredCheckedAndReachedThroughTheRegistry)
     auto ss = makeSimpleSetup(p, &ctx);
     const PlannerEntry &e = plannerEntry("wavefront");
     EXPECT_EQ(e.name, "Wavefront");
-    EXPECT_TRUE(e.lattice);
+    EXPECT_TRUE(e.lattice());
     auto planner = e.make(ss->getSpaceInformation(), ctx);
     ASSERT_NE(std::dynamic_pointer_cast<Wavefront>(planner), nullptr);
     EXPECT_TRUE(planner->params().setParam("grid_size", "0.25"));

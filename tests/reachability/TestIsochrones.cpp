@@ -89,7 +89,7 @@ TEST(Isochrones, ForecastIsochronesAreGeographicAndDated)
     const std::string src = OMPL_GLIDER_SOURCE_DIR;
     MissionSpec spec = loadMission(src + "/examples/labrador_forecast.yaml");
     spec.outputs.directory = (dir / "out").string();
-    spec.outputs.files = {"summary", "isochrones"};
+    spec.outputs.files = {OutputFormatId::Summary, OutputFormatId::Isochrones};
     spec.departure.window = false;  // one departure (the window's start): the test is about the isochrones
     spec.departure.time = spec.departure.begin;
     const MissionProblem problem(spec);

@@ -191,7 +191,7 @@ TEST(StintMissions, TheExampleWritesItsHeadingTableSummaryAndMap)
     EXPECT_FALSE(read("map.png").empty());
     // without a stints section there is no heading table, even when asked for
     MissionSpec plain = defaultGulfStreamMission();
-    plain.outputs.files = {"summary", "stints"};
+    plain.outputs.files = {OutputFormatId::Summary, OutputFormatId::Stints};
     const MissionProblem pp(plain);
     const MissionResult pr = runMission(pp);
     for (const OutputFile &f : outputFiles(pr, pp))

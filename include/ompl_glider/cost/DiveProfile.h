@@ -10,10 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "ompl_glider/cost/DiveProfilePool.h"
+#include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/ShardedCounter.h"
 #include "ompl_glider/cost/TravelTimeCalculator.h"
 #include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/io/Bathymetry.h"
 
 namespace ompl_glider
 {
@@ -60,16 +61,6 @@ struct DiveProfileParams
 
 /// @brief Builds and validates the profile set of @p params (throws Error naming the bad parameter).
 std::vector<DiveProfile> makeDiveProfiles(const DiveProfileParams &params);
-
-/// @brief Seafloor depth (positive down) at a horizontal position; +inf where there is no limit.
-/// Implementations must be thread-safe for const use.
-class Bathymetry
-{
-public:
-    virtual ~Bathymetry() = default;
-    /// @brief Depth of the seafloor at (x, y); <= 0 means land.
-    virtual double seafloorDepth(double x, double y) const = 0;
-};
 
 /// @brief Bathymetry given by a function (an analytic seafloor, or an adapter over a gridded NetCDF depth).
 class FunctionBathymetry : public Bathymetry
@@ -168,7 +159,7 @@ private:
     DiveProfileParams dive_;
     std::shared_ptr<const Bathymetry> bathymetry_;
     std::vector<DiveProfile> profiles_;
-    std::unique_ptr<DiveProfilePool> pool_;
+    std::unique_ptr<ThreadPool> pool_;
     mutable ShardedCounter calls_;
 };
 

@@ -82,7 +82,7 @@ struct GriddedData
 ///   per cubic axis, about 1.6 for Akima, which is applied per component so the node bound is then
 ///   hypot(max|u|, max|v|)), or, when smaller, the data-dependent bound M + D (K_xy + K_z L_xy + K_t L_xy L_z)
 ///   with M the largest node speed, D the largest diameter of the node velocities within one interpolation
-///   stencil box, L the stages' overshoot factors and K = (L - 1) / 2 (see maxSpeed() in the source for the
+///   stencil box, L the stages' overshoot factors and K = (L - 1) / 2 (see maxSpeed() in GriddedBounds.cpp for the
 ///   argument): both are true upper bounds of what velocity() can return; the second is close to M for
 ///   smooth data even with cubic/Akima schemes on uneven axes.
 class GriddedCurrentField : public CurrentField
@@ -195,7 +195,12 @@ private:
     template <bool Deriv>
     Sample full(double x, double y, double z, double t) const;
     double clampTime(double t) const;
+    /// Depth layers k0..k1 that carry weight at depth z (both 0 for a single layer).
+    void waterLayers(double z, std::size_t &k0, std::size_t &k1) const;
     bool cellInside(std::size_t ci, std::size_t cj, double px, double py, double &a, double &b) const;
+    // construction (GriddedCurrentField.cpp), the locator (GriddedLocator.cpp), bounds (GriddedBounds.cpp)
+    void storeVelocities(const GriddedData &d, const std::string &who);
+    void computeMinCell(const std::string &who);
     void buildLocator();
     void computeStencilDiameters();
 
@@ -237,5 +242,8 @@ private:
     };
     Blocks blocks_;
     void buildBlocks();
+    /// Widens e = {uMin, uMax, vMin, vMax} by the nodes of the curvilinear grid that can serve the region in the
+    /// records t0..t1 (see velocityBounds()).
+    void curvilinearExtremes(const Region &region, std::size_t t0, std::size_t t1, float *e) const;
 };
 }  // namespace ompl_glider

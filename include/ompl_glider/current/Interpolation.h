@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/current/AkimaSpline.h"
+
 namespace ompl_glider
 {
 /// @brief Horizontal (x/y) interpolation scheme ([EichhornOceans] Sec. II.C, first step of Fig. 2).
@@ -24,7 +26,7 @@ enum class Interp1D
     Nearest,  ///< nearest node
     Linear,   ///< linear between the two bracketing nodes
     Cubic,    ///< local 4-point Lagrange cubic (nodes k-1..k+2, shifted inside at the ends): exact for cubics
-    Akima     ///< Akima (1970) local cubic Hermite; no overshoot at an abrupt step (tides, layered streams)
+    Akima     ///< [AkimaSpline] local cubic Hermite; no overshoot at an abrupt step (tides, layered streams)
 };
 
 /// @brief Parses "nearest", "bilinear", "bicubic" (case-insensitive; "linear"/"cubic" accepted as aliases).
@@ -102,9 +104,30 @@ Stencil makeStencil(const Axis &axis, Interp1D scheme, double q, bool derivative
 /// @brief The 2-D scheme's 1-D factor: Nearest -> nearest, Bilinear -> linear, Bicubic -> cubic.
 Interp1D axisScheme(Interp2D scheme);
 
-/// @brief Akima (1970) interpolation at q of the data values f(0..size-1) on the axis; `f(i)` is called only for
-/// the nodes k-2..k+3 around the interval k. Secants missing beyond the ends are extrapolated as in Akima's
-/// paper (m_{-1} = 2 m_0 - m_1, ...); with two nodes it is linear, with one constant. q is clamped to the axis.
+/// @brief The nodes lo..hi that Akima interpolation at q reads: k-2..k+3 around the interval k holding q, cut at the
+/// ends of the axis; k - lo is the interval's index among them. For an axis of at least two nodes.
+struct AkimaWindow
+{
+    std::size_t lo{0};  ///< first node
+    std::size_t hi{0};  ///< last node
+    int k{0};           ///< interval holding q, counted from lo
+};
+
+/// @brief The window of Akima interpolation at q on the axis (axis.size() >= 2).
+inline AkimaWindow akimaWindow(const Axis &axis, double q)
+{
+    const std::size_t n = axis.size();
+    const std::size_t k = axis.interval(q);
+    AkimaWindow w;
+    w.lo = k >= 2 ? k - 2 : 0;
+    w.hi = k + 3 < n ? k + 3 : n - 1;
+    w.k = static_cast<int>(k - w.lo);
+    return w;
+}
+
+/// @brief [AkimaSpline] interpolation at q of the data values f(0..size-1) on the axis; `f(i)` is called only for
+/// the nodes of akimaWindow(). Secants missing beyond the ends are extrapolated as in [AkimaSpline]
+/// (m_{-1} = 2 m_0 - m_1, ...); with two nodes it is linear, with one constant. q is clamped to the axis.
 template <typename F>
 double akimaInterpolate(const Axis &axis, double q, F &&f);
 
@@ -117,27 +140,19 @@ double akimaInterpolate(const Axis &axis, double q, F &&f);
 double overshootFactor(const Axis &axis, Interp1D scheme);
 
 // ---- implementation of the template ----
-namespace detail
-{
-double akimaFromNodes(const double *x, const double *y, int n, int k, double q);
-}
-
 template <typename F>
 double akimaInterpolate(const Axis &axis, double q, F &&f)
 {
-    const std::size_t n = axis.size();
-    if (n == 1)
+    if (axis.size() == 1)
         return f(std::size_t{0});
-    const std::size_t k = axis.interval(q);
-    const std::size_t lo = k >= 2 ? k - 2 : 0;
-    const std::size_t hi = k + 3 < n ? k + 3 : n - 1;
+    const AkimaWindow w = akimaWindow(axis, q);
     double xs[6], ys[6];
     int m = 0;
-    for (std::size_t i = lo; i <= hi; ++i, ++m)
+    for (std::size_t i = w.lo; i <= w.hi; ++i, ++m)
     {
         xs[m] = axis[i];
         ys[m] = f(i);
     }
-    return detail::akimaFromNodes(xs, ys, m, static_cast<int>(k - lo), q);
+    return detail::akimaFromNodes(xs, ys, m, w.k, q);
 }
 }  // namespace ompl_glider

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ompl_glider/Geometry.h"
-#include "ompl_glider/current/CfTime.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/LocalProjection.h"
 

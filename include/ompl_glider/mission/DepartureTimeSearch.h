@@ -63,7 +63,7 @@ struct DepartureSearchResult
     double wallSeconds{0.0};           ///< wall time of the whole search
 };
 
-/// @brief Brent's method for a minimum of f on [a, b] (golden section with parabolic steps, Brent 1973 ch. 5),
+/// @brief Brent's method for a minimum of f on [a, b] (golden section with parabolic steps, [BrentMin] Ch. 5),
 /// started at x0 when x0 is inside (a, b). Stops when the bracket is below 2 tol or after maxEvaluations calls.
 /// Non-finite values are handled as larger than every finite one. Returns (argmin, min); appends every call to
 /// @p calls when given.

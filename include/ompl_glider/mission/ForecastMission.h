@@ -28,7 +28,7 @@ struct ForecastInput
     std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic
     std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima
     std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
-    std::string horizonPolicy{"refuse"};           ///< refuse | hold_last (beyond the last forecast time)
+    BeyondForecast horizonPolicy{BeyondForecast::Refuse};  ///< beyond the last forecast time (--beyond)
     std::string velocityUnits;  ///< overrides the units of u and v (NetCdfCurrentOptions::velocityUnits)
     std::string timeUnits;      ///< overrides the units of the time variable (NetCdfCurrentOptions::timeUnits)
     std::optional<std::size_t> steadyRecord;  ///< plan on this time record only, as a steady field

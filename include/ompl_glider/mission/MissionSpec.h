@@ -15,7 +15,9 @@
 
 #include "ompl_glider/cost/DiveProfile.h"
 #include "ompl_glider/cost/TravelTimeCalculator.h"
-#include "ompl_glider/current/CfTime.h"
+#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/io/Time.h"
+#include "ompl_glider/mission/OutputFormats.h"
 
 namespace ompl_glider
 {
@@ -47,8 +49,27 @@ struct ProjectionSpec
 /// @brief Source of the current: an analytic flow or a NetCDF forecast (loaded by the gridded-field reader).
 struct CurrentSpec
 {
-    /// meandering_jet | uniform | linear_shear | double_gyre | netcdf
+    /// Where the current comes from: an analytic flow of the current-field registry, or a NetCDF forecast.
+    enum class Source
+    {
+        Analytic,  ///< a flow of the registry (CurrentFieldRegistry.h), made from `parameters`
+        NetCdf     ///< a forecast read from `file` / `files`
+    };
+    /// The registry's name of the kind (currentFieldKinds(): meandering_jet, uniform, linear_shear, double_gyre,
+    /// netcdf); set with setType(), which also sets `source`.
     std::string type{"meandering_jet"};
+    Source source{Source::Analytic};  ///< parsed from `type` once, by setType()
+    /// @brief Sets the kind by its registry name and the source it implies.
+    void setType(const std::string &name)
+    {
+        type = name;
+        source = name == "netcdf" ? Source::NetCdf : Source::Analytic;
+    }
+    /// @brief True for a NetCDF forecast (planning in metres and seconds, positions in lon/lat).
+    bool isForecast() const
+    {
+        return source == Source::NetCdf;
+    }
     /// Analytic parameters (names per type: meandering_jet B0 epsilon omega theta k c; uniform u v;
     /// linear_shear a; double_gyre amplitude length). Missing ones take the class defaults.
     std::map<std::string, double> parameters;
@@ -67,7 +88,8 @@ struct CurrentSpec
     std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic
     std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima
     std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
-    std::string horizonPolicy{"refuse"};           ///< refuse (trips past the forecast are infeasible) | hold_last
+    /// Refuse (trips past the forecast are infeasible; `horizon: refuse`) or HoldLast (`horizon: hold_last`)
+    BeyondForecast horizonPolicy{BeyondForecast::Refuse};
     bool zeroVelocityLand{true};  ///< netcdf: nodes with u = v = 0 exactly at every loaded time are land
     /// netcdf: the current averaged over [top, bottom] metres (NetCdfCurrentOptions::depthAverage)
     std::optional<std::pair<double, double>> depthAverage;
@@ -228,9 +250,18 @@ struct StintSpec
 struct OutputSpec
 {
     std::string directory{"."};   ///< resolved against the mission file's folder
-    /// Output formats by name (output/OutputWriter.h: summary, csv, path, geojson, goto, map); summary.json is
-    /// always written.
-    std::vector<std::string> files{"csv", "geojson", "goto", "summary"};
+    /// Output formats (OutputFormats.h: outputFormats() lists them with their names); summary.json is always
+    /// written.
+    std::vector<OutputFormatId> files{OutputFormatId::Csv, OutputFormatId::GeoJson, OutputFormatId::Goto,
+                                      OutputFormatId::Summary};
+    /// @brief True when @p id is among `files`.
+    bool wants(OutputFormatId id) const
+    {
+        for (OutputFormatId f : files)
+            if (f == id)
+                return true;
+        return false;
+    }
     int gotoNumber{10};           ///< goto_lNN.ma
     bool gotoIncludeStart{false}; ///< also list the start position in the goto file
     std::string prefix;           ///< non-empty: also a copy of every file named <prefix>_<file> (a plain name)
@@ -277,7 +308,7 @@ struct MissionSpec
     struct FileCalendar
     {
         Calendar calendar{Calendar::Standard};  ///< CF calendar of the file
-        double originSeconds{0.0};  ///< first forecast time, seconds since the calendar's epoch (CfTime.h)
+        double originSeconds{0.0};  ///< first forecast time, seconds since the calendar's epoch (io/Time.h)
     };
     std::optional<FileCalendar> fileCalendar;  ///< set for dated NetCDF forecasts
     ProjectionSpec projection;
@@ -304,7 +335,22 @@ struct MissionSpec
     /// durations such as "1 h" can be converted (parseDuration()).
     bool hasTimeUnit() const
     {
-        return current.type == "netcdf" || timeUnitSeconds != 1.0 || epoch.has_value();
+        return physicalUnits().time || epoch.has_value();
+    }
+
+    /// @brief Which of the mission's units are physical: a forecast plans in metres and seconds; an analytic flow
+    /// only where `units` gives length_m / time_s other than 1. Outputs print hours/days and km for physical units,
+    /// the field's numbers otherwise (the one rule for every output).
+    struct PhysicalUnits
+    {
+        bool time{false};    ///< times are in known seconds (durations in hours and days)
+        bool length{false};  ///< lengths are in known metres (distances in km)
+    };
+    /// @brief The mission's PhysicalUnits.
+    PhysicalUnits physicalUnits() const
+    {
+        const bool forecast = current.isForecast();
+        return {forecast || timeUnitSeconds != 1.0, forecast || lengthUnitMetres != 1.0};
     }
 
     /// @brief A time given as text, read as the mission's departure times are: a number in field units, or an ISO 8601

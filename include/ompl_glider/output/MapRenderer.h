@@ -15,6 +15,11 @@
 
 namespace ompl_glider
 {
+namespace map_detail
+{
+class MapPainter;
+}
+
 /// @brief Writes a drawing as SVG (@p svg) or PNG of @p width x @p height pixels: @p draw gets the cairo_t.
 /// @throws Error naming the file when it cannot be written.
 void writeCairoFile(const std::string &filename, int width, int height, bool svg,
@@ -116,6 +121,8 @@ public:
     static MapPath stintTrackStyle(std::string label, std::vector<TimedPoint> track, int index = 0);
 
 private:
+    /// Draws the map through map_detail::MapPainter (detail/MapPainter.h), which reads the members below.
+    friend class map_detail::MapPainter;
     void draw(void *cairoContext) const;
 
     Region region_;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ompl_glider/mission/Planning.h"
-#include "ompl_glider/output/OutputFormats.h"
+#include "ompl_glider/mission/OutputFormats.h"
 
 namespace ompl_glider
 {

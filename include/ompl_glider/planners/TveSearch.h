@@ -174,7 +174,8 @@ struct TveResult
     unsigned corridorRounds{0};          ///< fine searches of coarse-to-fine (TveOptions::coarseFactor), 0 = not used
     unsigned corridorBlocks{0};          ///< half-width of the final corridor in blocks (0 = not used)
     bool fallbackUsed{false};            ///< the pruned search exhausted and continued without pruning
-    /// No path meets the goal window: the waypoints are the earliest arrival ignoring it (TveOptions::goalWindowFallback)
+    /// No path meets the goal window: the waypoints are the earliest arrival ignoring it
+    /// (TveOptions::goalWindowFallback)
     bool goalWindowMissed{false};
     std::string message;                 ///< why the start or goal is invalid
 };
@@ -235,6 +236,9 @@ public:
     std::vector<TveTreeVertex> tree() const;
 
 private:
+    /// One search of runCore() with its steps ([EichhornRAS] Table 2; TveSearchCore.cpp).
+    class Core;
+
     std::vector<TimedPoint> pathTo(Lattice::VertexId v) const;
     TveResult runCoarseToFine(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
                               const std::function<bool()> &terminate);

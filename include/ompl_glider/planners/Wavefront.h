@@ -13,6 +13,7 @@
 #include <ompl/base/Planner.h>
 
 #include "ompl_glider/ompl/GliderContext.h"
+#include "ompl_glider/planners/LatticePlanner.h"
 #include "ompl_glider/planners/TveSearch.h"
 
 namespace ompl_glider
@@ -34,7 +35,8 @@ enum class WavefrontOutcome
 /// @brief Earliest valid arrival by a Dijkstra wavefront over (lattice vertex, time interval) nodes, with holding.
 ///
 /// [ThompsonICRA] Sec. III, Algorithm 1: the nodes are pairs (v, k) of a vertex v of the lattice of ZAStarTVE
-/// (Lattice: grid_size, sectors; exact start and goal joined to it) and a time interval
+/// (Lattice: grid_size, sectors of LatticePlanner, where sectors 1 gives the 8 compass directions of [ThompsonICRA]
+/// Sec. III; exact start and goal joined to it) and a time interval
 /// tau_k = [t0 + k dt, t0 + (k + 1) dt) (dt = time_step, t0 the start state's time). Each node carries A(v, k), its
 /// earliest valid arrival: the earliest time at which the glider can be at v and stay there into tau_k (A may lie
 /// before tau_k when the glider arrived earlier and held). From (v, k) the glider departs at
@@ -80,7 +82,7 @@ enum class WavefrontOutcome
 /// D. R. Thompson, S. Chien, Y. Chao, P. Li, B. Cahill, J. Levin, O. Schofield, A. Balasuriya, S. Petillo,
 /// M. Arrott, M. Meisinger, "Spatiotemporal path planning in strong, dynamic, uncertain currents", ICRA 2010
 /// ([ThompsonICRA]), Sec. III and Algorithm 1.
-class Wavefront : public ompl::base::Planner
+class Wavefront : public LatticePlanner
 {
 public:
     /// @brief Planner on space information si (a TimeSE2StateSpace) for the problem ctx.
@@ -105,21 +107,6 @@ public:
     /// by the difference of their arrival times (0 for a hold).
     void getPlannerData(ompl::base::PlannerData &data) const override;
 
-    /// @brief Lattice spacing (param "grid_size", default 0.4).
-    void setGridSize(double g);
-    /// @brief Lattice spacing.
-    double getGridSize() const
-    {
-        return gridSize_;
-    }
-    /// @brief Lattice connectivity n in 1..5 (param "sectors", default 3; 1 gives the 8 compass directions of
-    /// [ThompsonICRA] Sec. III).
-    void setSectors(unsigned n);
-    /// @brief Lattice connectivity.
-    unsigned getSectors() const
-    {
-        return sectors_;
-    }
     /// @brief Length dt of the time intervals (param "time_step", default 0 = automatic: grid_size / V, the time to
     /// cross one cell in still water). Must be finite and >= 0.
     void setTimeStep(double dt);
@@ -170,6 +157,9 @@ public:
     }
 
 private:
+    /// One search of search() with its steps ([ThompsonICRA] Algorithm 1; Wavefront.cpp).
+    class Search;
+
     /// One settled node of the last search (for getPlannerData()).
     struct SettledNode
     {
@@ -179,8 +169,6 @@ private:
 
     std::shared_ptr<const GliderContext> ctx_;
     std::shared_ptr<const TravelTimeMotionValidator> validator_;
-    double gridSize_{0.4};
-    unsigned sectors_{3};
     double timeStep_{0.0};
 
     WavefrontOutcome outcome_{WavefrontOutcome::None};

@@ -11,6 +11,7 @@
 #include <ompl/base/Planner.h>
 
 #include "ompl_glider/ompl/GliderContext.h"
+#include "ompl_glider/planners/LatticePlanner.h"
 #include "ompl_glider/planners/TveSearch.h"
 
 namespace ompl_glider
@@ -20,8 +21,9 @@ namespace ompl_glider
 /// The configuration picks the acceleration methods of [EichhornRAS] Sec. 2.2: "TVE" (time-dependent Dijkstra),
 /// "A*TVE" (+ the heuristic of [EichhornRAS] Eq. 1), "ZTVE" (+ Zermelo pruning, [EichhornRAS] Sec. 2.2.2) and "ZA*TVE"
 /// (both, [EichhornRAS] Table 2). The search runs on an implicit rectangular lattice over ctx->region (grid_size,
-/// sectors; see Lattice) from the exact start to the exact goal position (both joined to the lattice), departing at
-/// the time t0 of the (first) start state, which must lie in [ctx->region.tMin, ctx->region.tMax].
+/// sectors; see LatticePlanner and Lattice) from the exact start to the exact goal position (both joined to the
+/// lattice), departing at the time t0 of the (first) start state, which must lie in [ctx->region.tMin,
+/// ctx->region.tMax].
 ///
 /// The space must be a TimeSE2StateSpace (or hold one as its state type). Goals: PositionGoal, or any GoalState /
 /// GoalSampleableRegion whose (sampled) state gives the goal position. The returned PathGeometric has one
@@ -44,9 +46,9 @@ namespace ompl_glider
 /// and refinement), "best cost REAL".
 ///
 /// @par External documentation
-/// B. Eichhorn, "Optimal routing strategies for autonomous underwater vehicles in time-varying environment",
+/// M. Eichhorn, "Optimal routing strategies for autonomous underwater vehicles in time-varying environment",
 /// Robotics and Autonomous Systems ([EichhornRAS]), Sec. 2.2 and Tables 1, 2, 4.
-class ZAStarTVE : public ompl::base::Planner
+class ZAStarTVE : public LatticePlanner
 {
 public:
     /// @brief Planner on space information si for the problem described by ctx; configuration is one of
@@ -70,189 +72,85 @@ public:
     /// arrival time) with an edge from its predecessor weighted by the leg's travel time.
     void getPlannerData(ompl::base::PlannerData &data) const override;
 
+    // Parameters (OMPL ParamSet names in quotes; "grid_size" and "sectors" are LatticePlanner's). Each setter with a
+    // range throws ompl_glider::Error on a value outside it.
+
     /// @brief A* heuristic on/off (param "heuristic").
-    void setHeuristic(bool on)
-    {
-        options_.heuristic = on;
-    }
-    /// @brief A* heuristic on/off.
-    bool getHeuristic() const
-    {
-        return options_.heuristic;
-    }
+    void setHeuristic(bool on) { options_.heuristic = on; }
+    bool getHeuristic() const { return options_.heuristic; }
     /// @brief Zermelo pruning on/off (param "zermelo").
-    void setZermelo(bool on)
-    {
-        options_.zermelo = on;
-    }
-    /// @brief Zermelo pruning on/off.
-    bool getZermelo() const
-    {
-        return options_.zermelo;
-    }
-    /// @brief Half-width of the accepted course range, degrees (param "delta_phi_max", default 18).
+    void setZermelo(bool on) { options_.zermelo = on; }
+    bool getZermelo() const { return options_.zermelo; }
+    /// @brief Half-width of the accepted course range, degrees in (0, 180] (param "delta_phi_max", default 18).
     void setDeltaPhiMax(double degrees);
-    /// @brief Half-width of the accepted course range, degrees.
     double getDeltaPhiMax() const;
-    /// @brief Extrapolation k of the predicted course (param "course_extrapolation", default 1; 0 = [EichhornRAS] Table
-    /// 2).
-    void setCourseExtrapolation(double k)
-    {
-        options_.courseExtrapolation = k;
-    }
-    /// @brief Extrapolation k of the predicted course.
-    double getCourseExtrapolation() const
-    {
-        return options_.courseExtrapolation;
-    }
-    /// @brief Cone widening w with the predicted turn (param "turn_widening", default 1.5; 0 = [EichhornRAS] Table 2).
+    /// @brief Extrapolation k of the predicted course (param "course_extrapolation", default 1; 0 = [EichhornRAS]
+    /// Table 2).
+    void setCourseExtrapolation(double k) { options_.courseExtrapolation = k; }
+    double getCourseExtrapolation() const { return options_.courseExtrapolation; }
+    /// @brief Cone widening w >= 0 with the predicted turn (param "turn_widening", default 1.5; 0 = [EichhornRAS]
+    /// Table 2).
     void setTurnWidening(double w);
-    /// @brief Cone widening with the predicted turn.
-    double getTurnWidening() const
-    {
-        return options_.turnWidening;
-    }
+    double getTurnWidening() const { return options_.turnWidening; }
     /// @brief Lower bounds from LatticeHeuristic for the heuristic, the certificate and skipped CFC (param
     /// "tight_bounds", default on; TveOptions::tightBounds). Off: [EichhornRAS] Eq. 1 only.
-    void setTightBounds(bool on)
-    {
-        options_.tightBounds = on;
-    }
-    /// @brief Whether LatticeHeuristic's bounds are used.
-    bool getTightBounds() const
-    {
-        return options_.tightBounds;
-    }
-    /// @brief Coarse-to-fine search (parameter "coarse_factor", TveOptions::coarseFactor): spacing factor of the
+    void setTightBounds(bool on) { options_.tightBounds = on; }
+    bool getTightBounds() const { return options_.tightBounds; }
+    /// @brief Coarse-to-fine search (param "coarse_factor", 0..64, TveOptions::coarseFactor): spacing factor of the
     /// coarse lattice (0 = automatic: 8 above 2^19 lattice vertices; 1 = off).
     void setCoarseFactor(unsigned f);
-    unsigned getCoarseFactor() const
-    {
-        return options_.coarseFactor;
-    }
-    /// @brief First half-width of the coarse-to-fine corridor in blocks (parameter "corridor_blocks", >= 1).
+    unsigned getCoarseFactor() const { return options_.coarseFactor; }
+    /// @brief First half-width of the coarse-to-fine corridor in blocks (param "corridor_blocks", 1..1000).
     void setCorridorBlocks(unsigned b);
-    unsigned getCorridorBlocks() const
-    {
-        return options_.corridorBlocks;
-    }
-    /// @brief Certification tolerance of the pruned search (param "certify_tolerance", default 0, the lattice optimum as
-    /// TVE; < 0 = off, the paper's rule). See TveOptions::certifyTolerance.
+    unsigned getCorridorBlocks() const { return options_.corridorBlocks; }
+    /// @brief Certification tolerance of the pruned search (param "certify_tolerance", finite, default 0, the lattice
+    /// optimum as TVE; < 0 = off, the paper's rule). See TveOptions::certifyTolerance.
     void setCertifyTolerance(double tol);
-    /// @brief Certification tolerance of the pruned search.
-    double getCertifyTolerance() const
-    {
-        return options_.certifyTolerance;
-    }
-    /// @brief Lattice connectivity n in 1..5 (param "sectors", default 3).
-    void setSectors(unsigned n);
-    /// @brief Lattice connectivity.
-    unsigned getSectors() const
-    {
-        return sectors_;
-    }
-    /// @brief Lattice spacing (param "grid_size", default 0.4, the paper's).
-    void setGridSize(double g);
-    /// @brief Lattice spacing.
-    double getGridSize() const
-    {
-        return gridSize_;
-    }
+    double getCertifyTolerance() const { return options_.certifyTolerance; }
     /// @brief Steps of the Zermelo course integration per edge (param "zermelo_steps", 1..10000, default 1).
     void setZermeloSteps(unsigned n);
-    /// @brief Steps of the Zermelo course integration per edge.
-    unsigned getZermeloSteps() const
-    {
-        return options_.zermeloSteps;
-    }
+    unsigned getZermeloSteps() const { return options_.zermeloSteps; }
     /// @brief Smooth the lattice path in the time-varying field before returning it (param "smooth", default on;
     /// PathSmoother, [EichhornRAS] Table 3).
-    void setSmooth(bool on)
-    {
-        smooth_ = on;
-    }
-    /// @brief Smoothing on/off.
-    bool getSmooth() const
-    {
-        return smooth_;
-    }
+    void setSmooth(bool on) { smooth_ = on; }
+    bool getSmooth() const { return smooth_; }
     /// @brief Refine the (smoothed) path's waypoints before returning it (param "refine", default on;
     /// WaypointRefiner). With both on, OMPL's Benchmark and any OMPL application record the refined path.
-    void setRefine(bool on)
-    {
-        refine_ = on;
-    }
-    /// @brief Refinement on/off.
-    bool getRefine() const
-    {
-        return refine_;
-    }
+    void setRefine(bool on) { refine_ = on; }
+    bool getRefine() const { return refine_; }
     /// @brief Budget of path re-simulations of the refiner (param "refiner_max_evaluations", 1..10^8).
     void setRefinerMaxEvaluations(unsigned n);
-    /// @brief Budget of path re-simulations of the refiner.
-    unsigned getRefinerMaxEvaluations() const
-    {
-        return refinerMaxEvaluations_;
-    }
+    unsigned getRefinerMaxEvaluations() const { return refinerMaxEvaluations_; }
     /// @brief All search options (Zermelo steps, fallback, ...); the params above set the same fields.
-    TveOptions &options()
-    {
-        return options_;
-    }
+    TveOptions &options() { return options_; }
 
     /// @brief Cost-function calls (CFC, [EichhornRAS] Table 4) of the last solve's search (without post-processing).
-    std::uint64_t getCostFunctionCalls() const
-    {
-        return last_.costFunctionCalls;
-    }
+    std::uint64_t getCostFunctionCalls() const { return last_.costFunctionCalls; }
     /// @brief Cost-function calls of the last solve's smoothing and refinement (0 when both are off).
-    std::uint64_t getPostprocessCostFunctionCalls() const
-    {
-        return postprocessCfc_;
-    }
+    std::uint64_t getPostprocessCostFunctionCalls() const { return postprocessCfc_; }
     /// @brief Current-model calls (CMC, [EichhornRAS] Table 4) of the last solve, CALC-OPTDIR included.
-    std::uint64_t getCurrentModelCalls() const
-    {
-        return last_.currentModelCalls;
-    }
+    std::uint64_t getCurrentModelCalls() const { return last_.currentModelCalls; }
     /// @brief Vertices expanded (extracted from the queue) in the last solve.
-    std::uint64_t getExpandedVertices() const
-    {
-        return last_.expansions;
-    }
+    std::uint64_t getExpandedVertices() const { return last_.expansions; }
     /// @brief Waypoints (x, y, arrival time) of the last solve's lattice path, before smoothing and refinement
     /// (empty when none).
-    const std::vector<TimedPoint> &getWaypoints() const
-    {
-        return last_.waypoints;
-    }
+    const std::vector<TimedPoint> &getWaypoints() const { return last_.waypoints; }
     /// @brief Waypoints of the path the last solve returned (after smoothing and refinement when they are on).
-    const std::vector<TimedPoint> &getSolutionWaypoints() const
-    {
-        return solution_;
-    }
+    const std::vector<TimedPoint> &getSolutionWaypoints() const { return solution_; }
     /// @brief Travel time (arrival - start state's time) of the last exact lattice path (before post-processing);
     /// +inf otherwise.
-    double getTravelTime() const
-    {
-        return last_.travelTime;
-    }
+    double getTravelTime() const { return last_.travelTime; }
     /// @brief Everything the last search reported.
-    const TveResult &lastResult() const
-    {
-        return last_;
-    }
+    const TveResult &lastResult() const { return last_; }
     /// @brief How the last search ended.
-    TveOutcome lastOutcome() const
-    {
-        return last_.outcome;
-    }
+    TveOutcome lastOutcome() const { return last_.outcome; }
 
 private:
+    /// Forgets the search (its lattice) when grid_size or sectors change.
+    void latticeChanged() override;
+
     std::shared_ptr<const GliderContext> ctx_;
     TveOptions options_;
-    unsigned sectors_{3};
-    double gridSize_{0.4};
     bool smooth_{true};
     bool refine_{true};
     unsigned refinerMaxEvaluations_{40000};

@@ -14,17 +14,39 @@
 
 namespace ompl_glider
 {
+/// @brief The kinds of planner, which decide what the pipeline gives them and how long they may run.
+enum class PlannerFamily
+{
+    Lattice,   ///< a lattice search (the ZAStarTVE configurations, Wavefront): grid_size / sectors apply; runs to its
+               ///< own end (no default time limit)
+    LevelSet,  ///< the level-set front: runs to its own end, like the lattice
+    Sampling,  ///< an OMPL sampling planner: uses all the time it is given (10 s by default)
+    Stints     ///< a StintPlanner method: flies constant-bearing stints (a mission's `stints` section applies;
+               ///< [IsernObstacles]); its own caps bound the work
+};
+
 /// @brief One planner that can be asked for by name.
 struct PlannerEntry
 {
     std::string name;                  ///< canonical name, also the OMPL planner name (e.g. "ZA*TVE", "RRTstar")
     std::vector<std::string> aliases;  ///< other accepted spellings (matched without regard to case)
     std::string description;           ///< one line for --help and the docs
-    bool lattice{false};               ///< a lattice planner (ZAStarTVE configurations, Wavefront): grid_size /
-                                       ///< sectors apply
-    bool exhaustive{false};            ///< runs to its own end, like the lattice (no default time limit): LevelSet
-    bool stints{false};                ///< a StintPlanner method: flies constant-bearing stints (a mission's
-                                       ///< `stints` section applies; [IsernObstacles])
+    PlannerFamily family{PlannerFamily::Sampling};  ///< what kind of planner it is
+    /// @brief True for a lattice planner (grid_size and sectors apply).
+    bool lattice() const
+    {
+        return family == PlannerFamily::Lattice;
+    }
+    /// @brief True for a stint planner (the mission's `stints` section applies).
+    bool stints() const
+    {
+        return family == PlannerFamily::Stints;
+    }
+    /// @brief True when the planner runs to its own end, so no default time limit applies (all but sampling).
+    bool runsToItsEnd() const
+    {
+        return family != PlannerFamily::Sampling;
+    }
     /// Makes the planner on the problem's space information; ctx is the problem's context.
     std::function<ompl::base::PlannerPtr(const ompl::base::SpaceInformationPtr &,
                                          const std::shared_ptr<const GliderContext> &)>

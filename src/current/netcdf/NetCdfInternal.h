@@ -2,9 +2,10 @@
 /// @file NetCdfInternal.h
 /// @brief Internal pieces of the NetCDF reader (loadNetCdfCurrents(), readNetCdfTimeAxis()); not installed.
 ///
-/// The reader runs in stages, one source file each (all in src/current/netcdf/ except the composition):
-///  - NcFile.cpp             the open file, attribute/variable queries, errors that name the file
-///  - ClassicSize.cpp        the size a classic-format file must have, from its header (refuses truncated files)
+/// The reader runs in stages, one source file each (all in src/current/netcdf/ except the composition and the file
+/// access):
+///  - ../../io/NcFile.cpp    the open file, attribute/variable queries, errors that name the file (io/NcFile.h)
+///  - ../../io/ClassicSize.cpp  the size a classic-format file must have, from its header (refuses truncated files)
 ///  - AxisChecks.cpp         coordinate values: no fill values or non-finite numbers, strictly monotonic axes
 ///  - VariableDetection.cpp  velocities and the role of each of their dimensions (CF standard_name, axis, units)
 ///  - GridLayout.cpp         1-D axes or a 2-D curvilinear grid; geographic or Cartesian
@@ -34,8 +35,9 @@
 #include <utility>
 #include <vector>
 
-#include "../TextUtil.h"
-#include "ompl_glider/current/CfTime.h"
+#include "../../io/NcFile.h"
+#include "../../io/TextUtil.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/LocalProjection.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
@@ -49,90 +51,12 @@ namespace netcdf_detail
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// ---- strings (NcFile.cpp) ----
+// ---- strings (io/TextUtil.h) and the open file (io/NcFile.h: NcFile, ClassicExtent, classicTruncation()) ----
 
-using text::lower;  // TextUtil.h
+using text::inList;
+using text::joinNames;
+using text::lower;
 using text::trim;
-/// True when s equals one of the names.
-bool inList(const std::string &s, std::initializer_list<const char *> names);
-/// "a, b, c".
-std::string joinNames(const std::vector<std::string> &names);
-
-// ---- the open file (NcFile.cpp) ----
-
-/// The open file, closed on scope exit; its queries throw Errors that name the file.
-class NcFile
-{
-public:
-    /// @throws Error "NetCDF file '<path>': cannot open: ..." when the file is missing or not NetCDF, and
-    /// "NetCDF file '<path>' is truncated: ..." when it is a classic-format file shorter than its header declares
-    /// (classicTruncation(); netCDF-4/HDF5 files are not checked).
-    explicit NcFile(const std::string &path);
-    ~NcFile();
-    NcFile(const NcFile &) = delete;
-    NcFile &operator=(const NcFile &) = delete;
-
-    int id() const
-    {
-        return id_;
-    }
-    const std::string &path() const
-    {
-        return path_;
-    }
-    /// An Error "NetCDF file '<path>': <what>".
-    Error error(const std::string &what) const;
-    /// Throws error(what + ": " + nc_strerror(status)) unless status is NC_NOERR.
-    void check(int status, const std::string &what) const;
-
-    int nvars() const;
-    std::string varName(int var) const;
-    std::string dimName(int dim) const;
-    std::size_t dimLen(int dim) const;
-    std::optional<int> findVar(const std::string &name) const;
-    std::vector<int> varDims(int var) const;
-    nc_type varType(int var) const;
-    /// A text attribute (NC_CHAR or the first NC_STRING), trimmed; nullopt when absent or numeric.
-    std::optional<std::string> attText(int var, const char *name) const;
-    /// A numeric attribute's values; empty when absent or text.
-    std::vector<double> attDoubles(int var, const char *name) const;
-    /// All values of a variable (any number of dimensions), as doubles.
-    std::vector<double> readAll1D(int var) const;
-
-private:
-    std::string path_;
-    int id_{-1};
-};
-
-// ---- classic-format files (ClassicSize.cpp) ----
-
-/// What the header of a classic-format file (CDF-1, CDF-2 or CDF-5) declares about where its data end.
-struct ClassicExtent
-{
-    int version{0};              ///< 1, 2 or 5; 0 when the bytes are not a classic header
-    std::string corrupt;         ///< after a classic magic number, what breaks the format (unknown type or tag,
-                                 ///< a dimension id out of range, a variable of more than 2^64 bytes)
-    bool headerCut{false};       ///< the bytes end inside the header (headerEnd and the data fields are then 0)
-    bool streaming{false};       ///< numrecs is STREAMING: the record count is unknown and the records unchecked
-    std::uint64_t fileBytes{0};  ///< bytes of the file
-    std::uint64_t headerEnd{0};  ///< first byte after the header
-    std::uint64_t dataBegin{0};  ///< first byte of the first variable's values (headerEnd without variables)
-    std::uint64_t fixedEnd{0};   ///< end of the last non-record variable's values (0 without one)
-    std::uint64_t recordEnd{0};  ///< end of the last record variable's values in the last record (0 without)
-
-    /// The byte where the declared contents end: the largest of headerEnd, fixedEnd and recordEnd.
-    std::uint64_t dataEnd() const;
-};
-
-/// Parses the classic header at the start of `in`, a file of `size` bytes. Never throws for bad bytes: version 0
-/// when they are not a classic header, corrupt when they break the format after a classic magic number,
-/// headerCut when they end inside it.
-ClassicExtent classicExtent(std::istream &in, std::uint64_t size);
-
-/// Why the classic-format file at `path` is shorter than its header declares ("is truncated: its header declares
-/// N bytes of data ending at byte B, the file has S bytes (M missing)", or "is truncated: it ends inside its
-/// header, after S bytes"); nullopt when it is complete, not a classic file, or cannot be read.
-std::optional<std::string> classicTruncation(const std::string &path);
 
 // ---- what a variable is (VariableDetection.cpp) ----
 

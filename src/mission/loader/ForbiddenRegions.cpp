@@ -34,7 +34,7 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
         !doc["features"].IsSequence())
         g.fail(doc, "type", "expected a GeoJSON FeatureCollection with a 'features' list");
     const bool geo = m.forbidden.geojsonGeographic;
-    if (geo && !m.projection.set && m.current.type != "netcdf")
+    if (geo && !m.projection.set && !m.current.isForecast())
         r.fail(where, "forbidden.geojson", "GeoJSON coordinates are lon/lat: give a 'projection' in the mission");
     const YAML::Node &features = doc["features"];
     for (std::size_t i = 0; i < features.size(); ++i)

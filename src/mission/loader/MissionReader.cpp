@@ -7,8 +7,7 @@
 
 #include "MissionReader.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/CfTime.h"
-#include "ompl_glider/mission/IsoTime.h"
+#include "ompl_glider/io/Time.h"
 
 namespace ompl_glider::mission_loader
 {
@@ -230,7 +229,7 @@ void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, P
     {
         if (!n["lon"] || !n["lat"])
             r.fail(n, field, "both lon and lat are required");
-        if (!m.projection.set && m.current.type != "netcdf")
+        if (!m.projection.set && !m.current.isForecast())
             r.fail(n, field, "lon/lat needs a 'projection' (lon0, lat0) in the mission");
         p.geographic = true;
         p.lon = r.finite(n["lon"], field + ".lon");
@@ -251,7 +250,7 @@ void readPolygon(const Reader &r, const YAML::Node &n, const std::string &field,
     const bool xy = static_cast<bool>(n["points"]), geo = static_cast<bool>(n["lonlat"]);
     if (xy == geo)
         r.fail(n, field, "give the vertices either as 'points' ([x, y] ...) or as 'lonlat' ([lon, lat] ...)");
-    if (geo && !m.projection.set && m.current.type != "netcdf")
+    if (geo && !m.projection.set && !m.current.isForecast())
         r.fail(n["lonlat"], field + ".lonlat", "lon/lat vertices need a 'projection' in the mission");
     poly.geographic = geo;
     poly.points = r.ring(geo ? n["lonlat"] : n["points"], field + (geo ? ".lonlat" : ".points"));

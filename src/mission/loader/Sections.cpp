@@ -10,13 +10,12 @@
 #include "MissionReader.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/CfTime.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/execution/Execution.h"
-#include "ompl_glider/mission/IsoTime.h"
 #include "ompl_glider/mission/MissionProblem.h"
-#include "ompl_glider/output/OutputFormats.h"
+#include "ompl_glider/mission/OutputFormats.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/current/NetCdfCurrents.h"
@@ -165,7 +164,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
             CurrentSpec c;
             readCurrentSource(r, l[i], f, c);
             c.mark = {r.file(), r.line(l[i])};
-            if (i > 0 && (c.type == "netcdf") != (members.front().type == "netcdf"))
+            if (i > 0 && (c.isForecast()) != (members.front().isForecast()))
                 r.fail(l[i]["type"], f + ".type",
                        "every member must be of one kind: all NetCDF files or all analytic flows (the first is " +
                            members.front().type + ")");
@@ -174,12 +173,12 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
         m.current = members.front();
         m.current.mark = {r.file(), r.line(n)};
         m.current.members = members;
-        if (m.current.type == "netcdf")
+        if (m.current.isForecast())
             readFileCalendar(r, l[0], m);
         return;
     }
     readCurrentSource(r, n, "current", m.current);
-    if (m.current.type == "netcdf")
+    if (m.current.isForecast())
         readFileCalendar(r, n, m);
 }
 
@@ -194,7 +193,7 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
         kinds.insert(k.name);
     if (!n["type"])
         r.fail(n, f + ".type", "missing (" + currentFieldKindList() + ")");
-    c.type = r.oneOf(n["type"], f + ".type", kinds);
+    c.setType(r.oneOf(n["type"], f + ".type", kinds));
     const CurrentFieldKind &kind = *findCurrentFieldKind(c.type);
     if (n["parameters"])
     {
@@ -240,7 +239,9 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
                 r.oneOf(i["time"], f + ".interpolation.time", {"nearest", "linear", "cubic", "akima"});
     }
     if (n["horizon"])
-        c.horizonPolicy = r.oneOf(n["horizon"], f + ".horizon", {"refuse", "hold_last"});
+        c.horizonPolicy = r.oneOf(n["horizon"], f + ".horizon", {"refuse", "hold_last"}) == "hold_last"
+                              ? BeyondForecast::HoldLast
+                              : BeyondForecast::Refuse;
     if (n["zero_velocity_land"])
         c.zeroVelocityLand = r.boolean(n["zero_velocity_land"], f + ".zero_velocity_land");
     if (n["depth_average"])
@@ -283,7 +284,7 @@ void readRegion(const Reader &r, const YAML::Node &n, MissionSpec &m)
     }
     else
     {
-        if (!m.projection.set && m.current.type != "netcdf")
+        if (!m.projection.set && !m.current.isForecast())
             r.fail(n, f, "lon/lat bounds need a 'projection' in the mission");
         const double lonMin = need("lon_min"), lonMax = need("lon_max");
         const double latMin = need("lat_min"), latMax = need("lat_max");
@@ -568,10 +569,11 @@ void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
         for (std::size_t i = 0; i < l.size(); ++i)
         {
             const std::string kind = r.oneOf(l[i], f + ".files[" + std::to_string(i) + "]", formats);
-            if (kind == "goto" && !m.projection.set && m.current.type != "netcdf")
+            const OutputFormatId id = *outputFormatByName(kind);
+            if (id == OutputFormatId::Goto && !m.projection.set && !m.current.isForecast())
                 r.fail(l[i], f + ".files[" + std::to_string(i) + "]",
                        "a goto list needs longitudes and latitudes: give a 'projection' in the mission");
-            o.files.push_back(kind);
+            o.files.push_back(id);
         }
     }
     if (n["goto_number"])
@@ -623,7 +625,7 @@ void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
             CurrentSpec c;
             readCurrentSource(r, t, f + ".truth", c);
             c.mark = {r.file(), r.line(t)};
-            const bool gridded = c.type == "netcdf", forecastGridded = m.current.type == "netcdf";
+            const bool gridded = c.isForecast(), forecastGridded = m.current.isForecast();
             if (gridded != forecastGridded)
                 r.fail(t["type"], f + ".truth.type",
                        forecastGridded ? "the forecast is a NetCDF file: the truth must be one too (same frame)"

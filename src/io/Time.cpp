@@ -1,9 +1,11 @@
-#include "ompl_glider/current/CfTime.h"
+// Calendars, CF time units, ISO 8601 dates and durations (see Time.h).
+#include "ompl_glider/io/Time.h"
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
+#include <cstdlib>
+#include <exception>
 
 #include "TextUtil.h"
 #include "ompl_glider/Exception.h"
@@ -24,14 +26,21 @@ bool julianLeap(long y)
     return y % 4 == 0;
 }
 
-/// Day of the date counted from 0001-01-01 = day 0 with leap rule `leap` (proleptic).
+/// a / b rounded towards minus infinity (b > 0), so that the leap days before a year are counted right for years
+/// before 1 too (0000-12-31 is the day before 0001-01-01).
+long floorDiv(long a, long b)
+{
+    return a / b - (a % b < 0 ? 1 : 0);
+}
+
+/// Day of the date counted from 0001-01-01 = day 0 with the Gregorian or the Julian leap rule (proleptic).
 long daysProleptic(long y, int m, int d, bool gregorian)
 {
     static const int cum[12] = {0, 31, 59, 90, 120, 151, 181, 212, 243, 273, 304, 334};
     const long y1 = y - 1;
-    long days = y1 * 365 + y1 / 4;
+    long days = y1 * 365 + floorDiv(y1, 4);
     if (gregorian)
-        days += -y1 / 100 + y1 / 400;
+        days += -floorDiv(y1, 100) + floorDiv(y1, 400);
     days += cum[m - 1] + d - 1;
     const bool leap = gregorian ? gregorianLeap(y) : julianLeap(y);
     if (leap && m > 2)
@@ -131,42 +140,53 @@ const char *calendarName(Calendar c)
     return "standard";
 }
 
-DateTime parseDateTime(const std::string &text)
+namespace
+{
+/// A date as written: its fields and the offset of its time zone, neither range-checked nor converted to UTC.
+struct WrittenDate
+{
+    DateTime fields;
+    double zoneOffset{0.0};  ///< seconds east of UTC
+};
+
+/// The Error of a date that cannot be read: what is wrong and the syntax expected.
+Error dateError(const std::string &text, const std::string &why)
+{
+    return Error("date '" + text + "': " + why + " (expected YYYY-MM-DD[Thh:mm[:ss]][Z|+hh:mm])");
+}
+
+/// The one reader of ISO 8601 dates (parseDateTime(), parseIsoTime()): "[-]YYYY-MM-DD[Thh:mm[:ss[.fff]]]" (a
+/// leading '-' for years before 1) with T, t or spaces before the time, single-digit fields allowed, then, after
+/// optional white space, a zone "Z", "UTC", "GMT", "+hh[:mm]", "+hhmm" or "-...". @throws Error (dateError()) on a
+/// syntax error.
+WrittenDate readWrittenDate(const std::string &text)
 {
     const std::string s = trim(text);
-    DateTime d;
+    WrittenDate w;
+    DateTime &d = w.fields;
     std::size_t pos = 0;
-    auto fail = [&](const std::string &why) -> Error {
-        return Error("date '" + text + "': " + why + " (expected YYYY-MM-DD[Thh:mm[:ss]][Z|+hh:mm])");
-    };
     auto readInt = [&](int minDigits, int maxDigits) -> long {
-        std::size_t start = pos;
-        bool neg = false;
-        if (pos < s.size() && s[pos] == '-' && minDigits == 4)
-        {
-            neg = true;
-            ++pos;
-            ++start;
-        }
+        const std::size_t start = pos;
         while (pos < s.size() && std::isdigit(static_cast<unsigned char>(s[pos])) &&
                static_cast<int>(pos - start) < maxDigits)
             ++pos;
         if (static_cast<int>(pos - start) < minDigits)
-            throw fail("bad number at position " + std::to_string(start));
-        const long v = std::stol(s.substr(start, pos - start));
-        return neg ? -v : v;
+            throw dateError(text, "bad number at position " + std::to_string(start));
+        return std::stol(s.substr(start, pos - start));
     };
     auto expect = [&](char c) {
         if (pos >= s.size() || s[pos] != c)
-            throw fail(std::string("expected '") + c + "' at position " + std::to_string(pos));
+            throw dateError(text, std::string("expected '") + c + "' at position " + std::to_string(pos));
         ++pos;
     };
-    d.year = static_cast<int>(readInt(1, 6));
+    const bool beforeYear1 = !s.empty() && s[0] == '-';  // a year before 1 (proleptic calendars), as "-0001"
+    if (beforeYear1)
+        ++pos;
+    d.year = static_cast<int>(readInt(1, 6)) * (beforeYear1 ? -1 : 1);
     expect('-');
     d.month = static_cast<int>(readInt(1, 2));
     expect('-');
     d.day = static_cast<int>(readInt(1, 2));
-    double tzOffset = 0.0;
     if (pos < s.size() && (s[pos] == 'T' || s[pos] == 't' || s[pos] == ' '))
     {
         ++pos;
@@ -184,12 +204,19 @@ DateTime parseDateTime(const std::string &text)
                 while (pos < s.size() && (std::isdigit(static_cast<unsigned char>(s[pos])) || s[pos] == '.'))
                     ++pos;
                 if (pos == start)
-                    throw fail("missing seconds");
-                d.second = std::stod(s.substr(start, pos - start));
+                    throw dateError(text, "missing seconds");
+                try
+                {
+                    d.second = std::stod(s.substr(start, pos - start));
+                }
+                catch (const std::exception &)  // "." or "..": no number
+                {
+                    throw dateError(text, "bad seconds at position " + std::to_string(start));
+                }
             }
         }
     }
-    while (pos < s.size() && s[pos] == ' ')
+    while (pos < s.size() && std::isspace(static_cast<unsigned char>(s[pos])))
         ++pos;
     if (pos < s.size())
     {
@@ -209,17 +236,28 @@ DateTime parseDateTime(const std::string &text)
             }
             else if (pos + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[pos])))
                 mm = readInt(2, 2);
-            tzOffset = sign * (hh * 3600.0 + mm * 60.0);
+            w.zoneOffset = sign * (hh * 3600.0 + mm * 60.0);
         }
         if (pos != s.size())
-            throw fail("unexpected text '" + s.substr(pos) + "'");
+            throw dateError(text, "unexpected text '" + s.substr(pos) + "'");
     }
+    return w;
+}
+
+/// Day number of 1970-01-01 in the proleptic Gregorian calendar (dayNumber()): the epoch of parseIsoTime().
+constexpr long kUnixEpochDay = 719162;
+}  // namespace
+
+DateTime parseDateTime(const std::string &text)
+{
+    const WrittenDate w = readWrittenDate(text);
+    DateTime d = w.fields;
     if (d.month < 1 || d.month > 12 || d.day < 1 || d.day > 31 || d.hour > 24 || d.minute > 59 || d.second >= 61)
-        throw fail("field out of range");
-    if (tzOffset != 0.0)
+        throw dateError(text, "field out of range");
+    if (w.zoneOffset != 0.0)
     {
         // shift to UTC with proleptic Gregorian arithmetic (time zones only appear with real-world calendars)
-        const double t = secondsSinceCalendarEpoch(d, Calendar::ProlepticGregorian) - tzOffset;
+        const double t = secondsSinceCalendarEpoch(d, Calendar::ProlepticGregorian) - w.zoneOffset;
         d = dateFromCalendarEpoch(t, Calendar::ProlepticGregorian);
     }
     return d;
@@ -246,7 +284,10 @@ DateTime dateFromCalendarEpoch(double seconds, Calendar cal)
     }
     DateTime d;
     // year estimate then correct
-    const double yearLen = cal == Calendar::Day360 ? 360.0 : cal == Calendar::NoLeap ? 365.0 : cal == Calendar::AllLeap ? 366.0 : 365.25;
+    const double yearLen = cal == Calendar::Day360    ? 360.0
+                           : cal == Calendar::NoLeap  ? 365.0
+                           : cal == Calendar::AllLeap ? 366.0
+                                                      : 365.25;
     long y = static_cast<long>(std::floor(static_cast<double>(day) / yearLen)) + 1;
     while (dayNumber(y, 1, 1, cal) > day)
         --y;
@@ -310,5 +351,62 @@ CfTimeUnits parseCfTimeUnits(const std::string &units, const std::string &calend
     u.calendar = parseCalendar(calendar);
     u.reference = secondsSinceCalendarEpoch(parseDateTime(s.substr(since + 7)), u.calendar);
     return u;
+}
+
+double parseIsoTime(const std::string &text)
+{
+    const WrittenDate w = readWrittenDate(text);
+    const DateTime &d = w.fields;
+    const Calendar gregorian = Calendar::ProlepticGregorian;
+    if (d.month < 1 || d.month > 12 || d.day < 1 || d.day > daysInMonth(d.year, d.month, gregorian) || d.hour > 23 ||
+        d.minute > 59 || d.second >= 61.0)
+        throw Error("'" + text + "' is not a valid date-time");
+    const long days = dayNumber(d.year, d.month, d.day, gregorian) - kUnixEpochDay;
+    return static_cast<double>(days) * 86400.0 + d.hour * 3600.0 + d.minute * 60.0 + d.second - w.zoneOffset;
+}
+
+std::string formatIsoTime(double s)
+{
+    if (!std::isfinite(s))
+        return "";
+    // whole seconds: the date is exact (dateFromCalendarEpoch() of an integral number of seconds)
+    const long long since1 = std::llround(s) + static_cast<long long>(kUnixEpochDay) * 86400;
+    return formatDateTime(dateFromCalendarEpoch(static_cast<double>(since1), Calendar::ProlepticGregorian));
+}
+
+double parseDuration(const std::string &text, double timeUnitSeconds, bool unitKnown)
+{
+    const std::string expected =
+        "expected a duration > 0: a number in the mission's time unit, or e.g. '1 h', '30 min', '2 d'; got '" + text +
+        "'";
+    const char *begin = text.c_str();
+    char *end = nullptr;
+    const double value = std::strtod(begin, &end);
+    if (end == begin)
+        throw Error(expected);
+    std::string unit(end);
+    const std::size_t a = unit.find_first_not_of(' '), b = unit.find_last_not_of(' ');
+    unit = a == std::string::npos ? std::string() : unit.substr(a, b - a + 1);
+    double seconds = 0.0;
+    if (unit == "s")
+        seconds = 1.0;
+    else if (unit == "min")
+        seconds = 60.0;
+    else if (unit == "h")
+        seconds = 3600.0;
+    else if (unit == "d")
+        seconds = 86400.0;
+    else if (!unit.empty())
+        throw Error(expected);
+    if (!std::isfinite(value) || !(value > 0.0))
+        throw Error(expected);
+    if (unit.empty())
+        return value;
+    if (!unitKnown)
+        throw Error("'" + text + "' needs the mission's time unit: give units.time_s, or the duration as a number");
+    const double v = value * seconds / timeUnitSeconds;
+    if (!std::isfinite(v))
+        throw Error(expected);
+    return v;
 }
 }  // namespace ompl_glider

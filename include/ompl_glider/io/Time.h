@@ -1,6 +1,8 @@
 #pragma once
-/// @file CfTime.h
-/// @brief CF-convention time coordinates: "<unit> since <date>" with the CF calendars, and ISO 8601 dates.
+/// @file Time.h
+/// @brief Dates and times of every layer: the CF calendars and time units of the forecasts ("<unit> since <date>"),
+/// ISO 8601 dates (parsed once, for CF attributes and mission files alike), UTC seconds since 1970 for mission
+/// epochs and the arrival times of the outputs, and durations such as "30 min".
 
 #include <string>
 
@@ -34,9 +36,10 @@ struct DateTime
     double second{0.0};
 };
 
-/// @brief Parses "YYYY-MM-DD", "YYYY-MM-DDThh:mm[:ss[.fff]]" (also with a space instead of T) with an optional
-/// time zone "Z", " UTC", "+hh[:mm]" or "-hh[:mm]" (converted to UTC). Also accepts single-digit fields
-/// ("1950-1-1 0:0:0") as CF files use them. @throws Error naming the text on a syntax error.
+/// @brief Parses "YYYY-MM-DD", "YYYY-MM-DDThh:mm[:ss[.fff]]" (also with a space instead of T; "-YYYY" for years
+/// before 1) with an optional time zone "Z", " UTC", "+hh[:mm]" or "-hh[:mm]" (converted to UTC). Also accepts
+/// single-digit fields ("1950-1-1 0:0:0") as CF files use them. @throws Error naming the text on a syntax error or
+/// a field out of range.
 DateTime parseDateTime(const std::string &text);
 
 /// @brief Seconds from the calendar's epoch (0001-01-01 00:00 in that calendar) to the date; exact in the
@@ -60,4 +63,18 @@ struct CfTimeUnits
 /// and years are rejected because CF defines them as fixed fractions of a year, which forecasts never mean).
 /// @throws Error naming the text and what was expected.
 CfTimeUnits parseCfTimeUnits(const std::string &units, const std::string &calendar);
+
+/// @brief A UTC date as seconds since 1970-01-01T00:00:00Z in the proleptic Gregorian calendar (mission epochs):
+/// the text as parseDateTime() reads it, offset converted to UTC, with hours up to 23 only.
+/// @throws Error naming the text when it is not such a date or the date does not exist.
+double parseIsoTime(const std::string &text);
+
+/// @brief "YYYY-MM-DDThh:mm:ssZ" of seconds since 1970-01-01T00:00:00Z (proleptic Gregorian, rounded to the
+/// second); "" when the value is not finite.
+std::string formatIsoTime(double secondsSince1970);
+
+/// @brief A duration in field units: a number (field units), or "<number> s|min|h|d" (also without the space)
+/// converted with @p timeUnitSeconds seconds per field unit; @p unitKnown false (an analytic flow without
+/// units.time_s) refuses the second form. @throws Error saying what was expected (the caller adds where).
+double parseDuration(const std::string &text, double timeUnitSeconds, bool unitKnown);
 }  // namespace ompl_glider

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <limits>
 
-#include "NetCdfInternal.h"
+#include "NcFile.h"
 
 namespace ompl_glider
 {

@@ -1,12 +1,57 @@
-#include "ompl_glider/mission/AkimaSpline.h"
+#include "ompl_glider/current/AkimaSpline.h"
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
 {
+namespace
+{
+/// When the two weights of a node slope count as vanishing: their sum is at most rel * max(floor, |m_{i-1}| +
+/// |m_i|), or zero.
+struct FlatTest
+{
+    double rel;
+    double floor;
+};
+constexpr FlatTest kSplineFlat{1e-14, 1.0};  // AkimaSpline
+constexpr FlatTest kNodesFlat{1e-12, 0.0};   // detail::akimaFromNodes
+
+/// Secants of the nodes (x[0..n-1], y[0..n-1]), n >= 2, into m[0..n+2]: m[j + 2] is the slope of interval j,
+/// j = -2 .. n, the two beyond each end extrapolated with equal second differences ([AkimaSpline]); with two
+/// nodes all five equal the one secant.
+void secants(const double *x, const double *y, std::size_t n, double *m)
+{
+    for (std::size_t k = 0; k + 1 < n; ++k)
+        m[k + 2] = (y[k + 1] - y[k]) / (x[k + 1] - x[k]);
+    if (n == 2)
+    {
+        m[1] = m[0] = m[3] = m[4] = m[2];
+        return;
+    }
+    m[1] = 2.0 * m[2] - m[3];
+    m[0] = 2.0 * m[1] - m[2];
+    m[n + 1] = 2.0 * m[n] - m[n - 1];
+    m[n + 2] = 2.0 * m[n + 1] - m[n];
+}
+
+/// Akima slope at node i from the secants of secants(): m_{i-2} = m[i], m_{i-1} = m[i+1], m_i = m[i+2],
+/// m_{i+1} = m[i+3].
+double nodeSlope(const double *m, std::size_t i, const FlatTest &flat)
+{
+    const double w1 = std::abs(m[i + 3] - m[i + 2]);
+    const double w2 = std::abs(m[i + 1] - m[i]);
+    const double den = w1 + w2;
+    const double scale = std::abs(m[i + 1]) + std::abs(m[i + 2]);
+    if (den <= flat.rel * std::max(flat.floor, scale) || den == 0.0)
+        return 0.5 * (m[i + 1] + m[i + 2]);
+    return (w1 * m[i + 1] + w2 * m[i + 2]) / den;
+}
+}  // namespace
+
 AkimaSpline::AkimaSpline(std::vector<double> x, std::vector<double> y) : x_(std::move(x)), y_(std::move(y))
 {
     const std::size_t n = x_.size();
@@ -19,34 +64,11 @@ AkimaSpline::AkimaSpline(std::vector<double> x, std::vector<double> y) : x_(std:
         if (i > 0 && !(x_[i] > x_[i - 1]))
             throw Error("AkimaSpline: x must be strictly increasing (point " + std::to_string(i) + ")");
     }
-    // Secants m[k + 2] = slope of interval k, k = -2 .. n, with two extrapolated secants at each end.
     std::vector<double> m(n + 3);
-    for (std::size_t k = 0; k + 1 < n; ++k)
-        m[k + 2] = (y_[k + 1] - y_[k]) / (x_[k + 1] - x_[k]);
-    if (n == 2)
-    {
-        m[1] = m[0] = m[3] = m[4] = m[2];
-    }
-    else
-    {
-        m[1] = 2.0 * m[2] - m[3];
-        m[0] = 2.0 * m[1] - m[2];
-        m[n + 1] = 2.0 * m[n] - m[n - 1];
-        m[n + 2] = 2.0 * m[n + 1] - m[n];
-    }
+    secants(x_.data(), y_.data(), n, m.data());
     t_.resize(n);
     for (std::size_t i = 0; i < n; ++i)
-    {
-        // Around node i: m_{i-2} = m[i], m_{i-1} = m[i+1], m_i = m[i+2], m_{i+1} = m[i+3].
-        const double w1 = std::abs(m[i + 3] - m[i + 2]);
-        const double w2 = std::abs(m[i + 1] - m[i]);
-        const double den = w1 + w2;
-        const double scale = std::abs(m[i + 1]) + std::abs(m[i + 2]);
-        if (den <= 1e-14 * std::max(1.0, scale))
-            t_[i] = 0.5 * (m[i + 1] + m[i + 2]);
-        else
-            t_[i] = (w1 * m[i + 1] + w2 * m[i + 2]) / den;
-    }
+        t_[i] = nodeSlope(m.data(), i, kSplineFlat);
 }
 
 double AkimaSpline::operator()(double q) const
@@ -103,4 +125,25 @@ std::pair<double, double> AkimaSpline::minimum() const
     }
     return {bestX, bestY};
 }
+
+namespace detail
+{
+double akimaFromNodes(const double *x, const double *y, int n, int k, double q)
+{
+    if (n == 1)
+        return y[0];
+    q = std::clamp(q, x[0], x[n - 1]);
+    const double h = x[k + 1] - x[k];
+    if (n == 2)
+        return y[k] + (y[k + 1] - y[k]) * (q - x[k]) / h;
+    double m[10];
+    secants(x, y, static_cast<std::size_t>(n), m);
+    const double t0 = nodeSlope(m, static_cast<std::size_t>(k), kNodesFlat);
+    const double t1 = nodeSlope(m, static_cast<std::size_t>(k) + 1, kNodesFlat);
+    const double s = (q - x[k]) / h;
+    const double s2 = s * s, s3 = s2 * s;
+    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+    return h00 * y[k] + h01 * y[k + 1] + h * (h10 * t0 + h11 * t1);
+}
+}  // namespace detail
 }  // namespace ompl_glider

@@ -1,8 +1,9 @@
 #pragma once
-/// @file DiveProfilePool.h
-/// @brief A fixed pool of worker threads that runs independent evaluations in parallel: the dive profiles of one
-/// leg ([EichhornOceans] Sec. IV: "a thread pool is created at the start of the mission planning system") and the
-/// independent departure-time searches ([EichhornRAS] Sec. 5.3).
+/// @file ThreadPool.h
+/// @brief The project's one pool of worker threads for independent evaluations in parallel: the dive profiles of one
+/// leg ([EichhornOceans] Sec. IV: "a thread pool is created at the start of the mission planning system"), the
+/// independent departure-time searches ([EichhornRAS] Sec. 5.3), the level set's tiles, the ensemble members and the
+/// execution batch.
 
 #include <atomic>
 #include <condition_variable>
@@ -19,14 +20,14 @@ namespace ompl_glider
 /// @brief Fixed pool of threads with a blocking parallelFor(). The calling thread works too, so a pool of size n
 /// has n - 1 worker threads. One parallelFor() runs at a time; a call made while the pool is busy (from another
 /// thread, or nested inside a job) runs serially in the caller, so nesting never deadlocks.
-class DiveProfilePool
+class ThreadPool
 {
 public:
     /// @brief Pool of @p threads threads in total (the caller included); 0 means std::thread::hardware_concurrency().
-    explicit DiveProfilePool(unsigned threads = 0);
-    ~DiveProfilePool();
-    DiveProfilePool(const DiveProfilePool &) = delete;
-    DiveProfilePool &operator=(const DiveProfilePool &) = delete;
+    explicit ThreadPool(unsigned threads = 0);
+    ~ThreadPool();
+    ThreadPool(const ThreadPool &) = delete;
+    ThreadPool &operator=(const ThreadPool &) = delete;
 
     /// @brief Number of threads that take part in a parallelFor() (workers + caller).
     unsigned size() const

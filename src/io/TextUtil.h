@@ -1,7 +1,9 @@
 #pragma once
-// Internal to the library: the small text helpers of the CF-attribute and calendar parsers. Not installed.
+// Internal to the library: the small text helpers of the CF-attribute, calendar and NetCDF parsers. Not installed.
 #include <cctype>
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace ompl_glider::text
 {
@@ -23,5 +25,23 @@ inline std::string trim(const std::string &s)
     while (b > a && blank(s[b - 1]))
         --b;
     return s.substr(a, b - a);
+}
+
+/// True when s equals one of the names.
+inline bool inList(const std::string &s, std::initializer_list<const char *> names)
+{
+    for (const char *x : names)
+        if (s == x)
+            return true;
+    return false;
+}
+
+/// "a, b, c".
+inline std::string joinNames(const std::vector<std::string> &names)
+{
+    std::string s;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        s += (i ? ", " : "") + names[i];
+    return s;
 }
 }  // namespace ompl_glider::text

@@ -1,28 +1,12 @@
-// The open NetCDF file and its queries; string helpers of the reader.
-#include <cctype>
+// The open NetCDF file and its queries (see NcFile.h).
+#include "NcFile.h"
 
-#include "NetCdfInternal.h"
+#include "TextUtil.h"
 
 namespace ompl_glider
 {
 namespace netcdf_detail
 {
-bool inList(const std::string &s, std::initializer_list<const char *> names)
-{
-    for (const char *x : names)
-        if (s == x)
-            return true;
-    return false;
-}
-
-std::string joinNames(const std::vector<std::string> &names)
-{
-    std::string s;
-    for (std::size_t i = 0; i < names.size(); ++i)
-        s += (i ? ", " : "") + names[i];
-    return s;
-}
-
 NcFile::NcFile(const std::string &path) : path_(path)
 {
     // A classic file is checked against its header before NetCDF-C opens it: NetCDF-C reads a cut file as if it
@@ -114,7 +98,7 @@ std::optional<std::string> NcFile::attText(int var, const char *name) const
         std::string s(len, '\0');
         if (len > 0)
             check(nc_get_att_text(id_, var, name, &s[0]), std::string("read attribute ") + name);
-        return trim(s);
+        return text::trim(s);
     }
     if (t == NC_STRING && len >= 1)
     {
@@ -122,7 +106,7 @@ std::optional<std::string> NcFile::attText(int var, const char *name) const
         check(nc_get_att_string(id_, var, name, p.data()), std::string("read attribute ") + name);
         std::string s = p[0] ? p[0] : "";
         nc_free_string(len, p.data());
-        return trim(s);
+        return text::trim(s);
     }
     return std::nullopt;
 }

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "ompl_glider/Geometry.h"
-#include "ompl_glider/cost/DiveProfile.h"
+#include "ompl_glider/io/Bathymetry.h"
 
 namespace ompl_glider
 {
@@ -23,7 +23,9 @@ namespace ompl_glider
 class NetCdfBathymetry : public Bathymetry
 {
 public:
-    /// @throws Error naming the file and variable when the file, the variable or its axes cannot be read.
+    /// @throws Error "NetCDF file '<path>': ..." naming the variable when the file, the variable or its axes cannot be
+    /// read (every NetCDF-C call is checked), the variable is not 2-D, an axis is not a 1-D coordinate variable of
+    /// its dimension or not strictly monotonic, or the axes are longitude/latitude without @p toGeographic.
     NetCdfBathymetry(const std::string &path, const std::string &variable,
                      std::function<LonLat(double x, double y)> toGeographic = {});
 

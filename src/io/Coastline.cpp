@@ -1,5 +1,5 @@
 // Land polygons from a vector GIS file through GDAL/OGR (see Coastline.h).
-#include "ompl_glider/mission/Coastline.h"
+#include "ompl_glider/io/Coastline.h"
 
 #include <memory>
 #include <mutex>

@@ -1,11 +1,11 @@
-#include "ompl_glider/cost/DiveProfilePool.h"
+#include "ompl_glider/ThreadPool.h"
 
 #include <algorithm>
 #include <chrono>
 
 namespace ompl_glider
 {
-DiveProfilePool::DiveProfilePool(unsigned threads)
+ThreadPool::ThreadPool(unsigned threads)
 {
     if (threads == 0)
         threads = std::max(1u, std::thread::hardware_concurrency());
@@ -13,7 +13,7 @@ DiveProfilePool::DiveProfilePool(unsigned threads)
         workers_.emplace_back([this] { workerLoop(); });
 }
 
-DiveProfilePool::~DiveProfilePool()
+ThreadPool::~ThreadPool()
 {
     {
         std::lock_guard<std::mutex> lock(m_);
@@ -24,7 +24,7 @@ DiveProfilePool::~DiveProfilePool()
         w.join();
 }
 
-void DiveProfilePool::runIndices()
+void ThreadPool::runIndices()
 {
     for (;;)
     {
@@ -44,7 +44,7 @@ void DiveProfilePool::runIndices()
     }
 }
 
-void DiveProfilePool::workerLoop()
+void ThreadPool::workerLoop()
 {
     // Jobs come back to back (the legs of a mission: one parallelFor per leg, about 0.1 ms each), so a worker spins
     // briefly for the next one before it sleeps: waking a sleeping thread costs about as much as the job itself.
@@ -74,7 +74,7 @@ void DiveProfilePool::workerLoop()
     }
 }
 
-void DiveProfilePool::parallelFor(std::size_t n, const std::function<void(std::size_t)> &fn)
+void ThreadPool::parallelFor(std::size_t n, const std::function<void(std::size_t)> &fn)
 {
     std::unique_lock<std::mutex> callLock(callMutex_, std::try_to_lock);
     if (n <= 1 || workers_.empty() || !callLock.owns_lock())

@@ -1,0 +1,172 @@
+#!/usr/bin/env python3
+"""The structure rules of docs/ARCHITECTURE.md, checked on the source tree.
+
+Usage: scripts/check_structure.py [ROOT]     (exit 0: every rule holds; exit 1: each breach printed as file:line)
+
+Rules:
+  layers     a file of layer L (include/ompl_glider/L/ or src/L/) includes only headers of L, of the layers below
+             L in LAYERS, and the top-level headers (ompl_glider/*.h); so no include runs up a layer and no two
+             folders include each other. apps/ may include every layer.
+  size       no file in src/ over MAX_FILE_LINES lines.
+  functions  no function in src/ over MAX_FUNCTION_LINES lines (from its opening to its closing brace).
+  citations  sources cite by the keys of docs/REFERENCES.md ("[EichhornRAS] Eq. 5"), not by author and year.
+"""
+import os
+import re
+import sys
+
+# Top to bottom: a layer may include the layers after it.
+LAYERS = ["output", "mission", "registry", "reachability", "stints", "planners", "reference", "execution", "ompl",
+          "cost", "environment", "current", "io", "core"]
+MAX_FILE_LINES = 700
+MAX_FUNCTION_LINES = 150
+INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]ompl_glider/([^/">]+)/')
+RELATIVE_INCLUDE = re.compile(r'^\s*#\s*include\s*"((?:\.\./)+[^"]+)"')
+# an author-year citation: "Akima (1970)", "Brent 1973", "Lolla et al. 2014"
+AUTHOR_YEAR = re.compile(r"\b[A-Z][a-z]+(?: et al\.)?,? \(?(19|20)\d\d\)?")
+
+
+def layer_of(rel):
+    m = re.match(r"(?:include/ompl_glider|src)/([^/]+)/", rel)
+    return m.group(1) if m else None
+
+
+def source_files(root, folders, exts=(".h", ".cpp")):
+    for folder in folders:
+        for dirpath, _, names in os.walk(os.path.join(root, folder)):
+            for name in sorted(names):
+                if name.endswith(exts):
+                    path = os.path.join(dirpath, name)
+                    yield path, os.path.relpath(path, root)
+
+
+def check_layers(root):
+    breaches = []
+    for path, rel in source_files(root, ["include/ompl_glider", "src"]):
+        own = layer_of(rel)
+        if own is None:
+            continue
+        if own not in LAYERS:
+            breaches.append(f"{rel}: layer '{own}' is not in the list of layers (scripts/check_structure.py)")
+            continue
+        allowed = set(LAYERS[LAYERS.index(own):])
+        with open(path, encoding="utf-8", errors="replace") as f:
+            for number, line in enumerate(f, 1):
+                m = INCLUDE.match(line)
+                target = m.group(1) if m else None
+                r = RELATIVE_INCLUDE.match(line)
+                if r:  # a relative include into another folder of src/
+                    resolved = os.path.relpath(os.path.normpath(os.path.join(os.path.dirname(path), r.group(1))),
+                                               root)
+                    target = layer_of(resolved)
+                if target and target.endswith(".h"):
+                    continue  # a top-level header
+                if target and target not in allowed:
+                    breaches.append(f"{rel}:{number}: layer '{own}' includes layer '{target}' above it")
+    return breaches
+
+
+def strip_comments_and_strings(text):
+    """The text with comments and string/character literals blanked (newlines kept, so lines still count)."""
+    out, i, n = [], 0, len(text)
+    while i < n:
+        if text.startswith("//", i):
+            j = text.find("\n", i)
+            i = n if j < 0 else j
+        elif text.startswith("/*", i):
+            j = text.find("*/", i + 2)
+            j = n if j < 0 else j + 2
+            out.append("\n" * text.count("\n", i, j))
+            i = j
+        elif text[i] == "R" and re.match(r'R"([^(\s]*)\(', text[i:i + 20]):
+            delim = ")" + re.match(r'R"([^(\s]*)\(', text[i:i + 20]).group(1) + '"'
+            j = text.find(delim, i)
+            j = n if j < 0 else j + len(delim)
+            out.append('""' + "\n" * text.count("\n", i, j))
+            i = j
+        elif text[i] in "\"'" and not (text[i] == "'" and i > 0 and text[i - 1].isalnum()):  # 1'000 separators
+            quote, j = text[i], i + 1
+            while j < n and text[j] != quote and text[j] != "\n":
+                j += 2 if text[j] == "\\" else 1
+            out.append(quote * 2)
+            i = j + 1
+        else:
+            out.append(text[i])
+            i += 1
+    return "".join(out)
+
+
+FUNCTION_HEAD = re.compile(r"\)\s*(const)?\s*(noexcept)?\s*(override|final)?\s*(->[^{]*)?$")
+CONSTRUCTOR_HEAD = re.compile(r"\)\s*:[^;]*$", re.S)
+SCOPE_HEAD = re.compile(r"\b(namespace|class|struct|union|enum)\b[^()]*$")
+
+
+def functions(path):
+    """(first line, lines, name) of every function defined at namespace or class scope (lambdas count with their
+    enclosing function)."""
+    with open(path, encoding="utf-8", errors="replace") as f:
+        text = strip_comments_and_strings(f.read())
+    stack, found, last = [], [], 0
+    for i, c in enumerate(text):
+        if c == "{":
+            head = text[last:i].strip()
+            kind = "block"
+            if SCOPE_HEAD.search(head) or head.endswith('extern ""'):
+                kind = "scope"
+            elif FUNCTION_HEAD.search(head) or CONSTRUCTOR_HEAD.search(head):
+                bare = re.sub(r"\([^()]*\)", "", head)
+                if all(k == "scope" for k, _, _ in stack) and not bare.rstrip().endswith("]"):
+                    kind = "function"
+            names = re.findall(r"([~\w:]+)\s*\(", head)
+            stack.append((kind, text.count("\n", 0, i) + 1, names[0] if names else "?"))
+            last = i + 1
+        elif c == "}":
+            if stack:
+                kind, first, name = stack.pop()
+                if kind == "function":
+                    found.append((first, text.count("\n", 0, i) + 1 - first + 1, name))
+            last = i + 1
+        elif c == ";":
+            last = i + 1
+    return found
+
+
+def check_sizes(root):
+    breaches = []
+    for path, rel in source_files(root, ["src"]):
+        with open(path, encoding="utf-8", errors="replace") as f:
+            count = sum(1 for _ in f)
+        if count > MAX_FILE_LINES:
+            breaches.append(f"{rel}: {count} lines (at most {MAX_FILE_LINES})")
+        for first, length, name in functions(path):
+            if length > MAX_FUNCTION_LINES:
+                breaches.append(f"{rel}:{first}: function {name} has {length} lines (at most {MAX_FUNCTION_LINES})")
+    return breaches
+
+
+def check_citations(root):
+    breaches = []
+    for path, rel in source_files(root, ["include/ompl_glider", "src"]):
+        with open(path, encoding="utf-8", errors="replace") as f:
+            for number, line in enumerate(f, 1):
+                comment = line.split("//", 1)[1] if "//" in line else ""
+                m = AUTHOR_YEAR.search(comment)
+                if m:
+                    breaches.append(f"{rel}:{number}: cites '{m.group(0)}': cite by the key of docs/REFERENCES.md")
+    return breaches
+
+
+def main():
+    root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
+    failed = False
+    for rule, check in (("layers", check_layers), ("size", check_sizes), ("citations", check_citations)):
+        breaches = check(root)
+        print(f"{rule}: {'ok' if not breaches else str(len(breaches)) + ' breach(es)'}")
+        for b in breaches:
+            print("  " + b)
+        failed = failed or bool(breaches)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,18 @@
+# io/: outside formats several layers share: dates and times (CF calendars, ISO 8601), the NetCDF file, bathymetry
+# grids and coastlines (GIS files)
+list(APPEND OMPL_GLIDER_SOURCES
+  ${CMAKE_CURRENT_LIST_DIR}/Time.cpp
+)
+if(OMPL_GLIDER_WITH_NETCDF)
+  list(APPEND OMPL_GLIDER_SOURCES
+    # the open NetCDF file (NcFile.h, internal) of the forecast reader (current/netcdf/) and the bathymetry
+    ${CMAKE_CURRENT_LIST_DIR}/NcFile.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/ClassicSize.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
+  )
+endif()
+if(OMPL_GLIDER_WITH_MISSION)
+  list(APPEND OMPL_GLIDER_SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/Coastline.cpp  # GDAL/OGR
+  )
+endif()

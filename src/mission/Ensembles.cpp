@@ -1,0 +1,137 @@
+/// @file Ensembles.cpp
+/// @brief Robust plans over the members of an ensemble current (planRobust(), used by planRoute()): candidates
+/// planned on the members' mean and on every member, each flown in every member (retimePath()) and judged by the
+/// mission's objective over the members (ensembleObjective()).
+
+#include <algorithm>
+#include <cmath>
+
+#include "PlanningInternal.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/ThreadPool.h"
+#include "ompl_glider/cost/TravelTimeCalculator.h"
+
+namespace ompl_glider
+{
+namespace planning_detail
+{
+/// A robust plan over the members of an ensemble (see planRoute()).
+PlannedPath planRobust(const MissionProblem &problem, double departure, const PlanOptions &o)
+{
+    const MissionSpec &m = problem.getSpec();
+    const auto &members = problem.getMembers();
+    const std::size_t n = members.size();
+    const double speed = std::isnan(o.speed) ? m.vehicle.speed : o.speed;
+    // candidates: the mean field's plan, then each member's, planned in parallel
+    std::vector<PlannedPath> plans(n + 1);
+    std::vector<std::vector<double>> times(n + 1, std::vector<double>(n, kInf));
+    ThreadPool pool(0);
+    pool.parallelFor(n + 1, [&](std::size_t c) {
+        plans[c] = c == 0 ? planOnField(problem, departure, o) : planOnField(problem.withMember(c - 1), departure, o);
+        if (!plans[c].solved)
+            return;
+        for (std::size_t k = 0; k < n; ++k)
+        {
+            const std::vector<TimedPoint> flown = retimePath(problem, members[k], speed, plans[c].path);
+            times[c][k] = flown.empty() ? kInf : flown.back().t - departure;
+        }
+    });
+    EnsemblePlan e;
+    e.objective = m.planner.objective;
+    e.quantile = m.planner.quantile;
+    std::size_t best = 0;
+    for (std::size_t c = 0; c <= n; ++c)
+    {
+        EnsemblePlan::Candidate cand;
+        cand.name = c == 0 ? "mean" : "member " + std::to_string(c - 1);
+        cand.solved = plans[c].solved;
+        cand.memberTravelTimes = times[c];
+        cand.objectiveValue = plans[c].solved ? ensembleObjective(times[c], e.objective, e.quantile) : kInf;
+        e.candidates.push_back(cand);
+        const auto better = [&](std::size_t a, std::size_t b) {
+            const auto &ca = e.candidates[a];
+            const auto &cb = e.candidates[b];
+            if (ca.solved != cb.solved)
+                return ca.solved;
+            return ca.objectiveValue < cb.objectiveValue;
+        };
+        if (c > 0 && better(c, best))
+            best = c;
+    }
+    PlannedPath r = plans[best];
+    e.chosen = e.candidates[best].name;
+    e.objectiveValue = e.candidates[best].objectiveValue;
+    e.memberTravelTimes = times[best];
+    // every candidate's search counts
+    r.searchCostFunctionCalls = r.postprocessCostFunctionCalls = r.currentModelCalls = r.expandedVertices = 0;
+    r.planningSeconds = r.postprocessSeconds = 0.0;
+    for (const PlannedPath &p : plans)
+    {
+        r.searchCostFunctionCalls += p.searchCostFunctionCalls;
+        r.postprocessCostFunctionCalls += p.postprocessCostFunctionCalls;
+        r.currentModelCalls += p.currentModelCalls;
+        r.expandedVertices += p.expandedVertices;
+        r.planningSeconds += p.planningSeconds;
+        r.postprocessSeconds += p.postprocessSeconds;
+    }
+    if (best > 0 && r.solved)
+    {
+        // a member's plan: its times on the mean field, which the outputs describe
+        const std::vector<TimedPoint> onMean = retimePath(problem, problem.getField(), speed, r.path);
+        if (!onMean.empty())
+        {
+            r.path = onMean;
+            r.travelTime = onMean.back().t - departure;
+        }
+    }
+    r.ensemble = e;
+    return r;
+}
+}  // namespace planning_detail
+
+double ensembleObjective(const std::vector<double> &t, const std::string &objective, double q)
+{
+    if (t.empty())
+        return planning_detail::kInf;
+    for (double x : t)
+        if (!std::isfinite(x))
+            return planning_detail::kInf;
+    if (objective == "worst")
+        return *std::max_element(t.begin(), t.end());
+    if (objective == "quantile")
+    {
+        std::vector<double> s = t;
+        std::sort(s.begin(), s.end());
+        const double rank = std::ceil(q * static_cast<double>(s.size()));
+        const std::size_t k = static_cast<std::size_t>(std::clamp(rank, 1.0, static_cast<double>(s.size())));
+        return s[k - 1];
+    }
+    if (objective != "expected")
+        throw Error("unknown ensemble objective '" + objective + "' (expected, worst, quantile)");
+    double sum = 0.0;
+    for (double x : t)
+        sum += x;
+    return sum / static_cast<double>(t.size());
+}
+
+std::vector<TimedPoint> retimePath(const MissionProblem &problem, std::shared_ptr<const CurrentField> field,
+                                      double speed, const std::vector<TimedPoint> &path)
+{
+    if (path.empty())
+        return {};
+    TravelTimeParams tp = problem.getSpec().travel;
+    tp.speed = speed;
+    const TravelTimeCalculator travel(std::move(field), tp);
+    const auto &env = problem.getEnvironment();
+    std::vector<TimedPoint> out{path.front()};
+    for (std::size_t i = 1; i < path.size(); ++i)
+    {
+        const TimedPoint &a = out.back(), &w = path[i];
+        const double dt = travel.travelTime(a.x, a.y, w.x, w.y, a.t);
+        if (!std::isfinite(dt) || (env && !env->legFree(a.x, a.y, a.t, w.x, w.y, a.t + dt)))
+            return {};
+        out.push_back({w.x, w.y, a.t + dt});
+    }
+    return out;
+}
+}  // namespace ompl_glider

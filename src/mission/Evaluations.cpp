@@ -1,0 +1,104 @@
+/// @file Evaluations.cpp
+/// @brief The evaluations of a plan made by runMission(): the speed sweep, the waypoints for the pilot (with dive
+/// profiles) and the optimal-control reference.
+
+#include <cstdio>
+#include <mutex>
+
+#include "PlanningInternal.h"
+#include "ompl_glider/ThreadPool.h"
+#include "ompl_glider/reference/ZermeloReference.h"
+
+namespace ompl_glider
+{
+std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep, const std::vector<double> &speeds,
+                                      const ProgressSink &progress)
+{
+    // one plan per speed, in parallel (planRoute() is thread-safe on one problem); rows in the order given
+    std::vector<SpeedSweepRow> rows(speeds.size());
+    std::mutex printMutex;
+    std::size_t done = 0;
+    ThreadPool pool(0);
+    pool.parallelFor(speeds.size(), [&](std::size_t i) {
+        PlanOptions o;
+        o.speed = speeds[i];
+        const PlannedPath p = planRoute(problem, tDep, o);
+        rows[i] = {speeds[i], p.solved, p.travelTime, p.pathLength, p.straightLineTime, p.straightLineLength};
+        if (progress)
+        {
+            std::lock_guard<std::mutex> lock(printMutex);
+            char line[96];
+            std::snprintf(line, sizeof line, "speed sweep: %zu/%zu speeds planned", ++done, speeds.size());
+            progress(line, done == speeds.size());
+        }
+    });
+    return rows;
+}
+
+PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath &plan)
+{
+    PilotWaypoints out;
+    // a stint plan's legs between surfacings are not straight: its times are the flown ones
+    const auto dive = plan.stints && !plan.stints->converted ? nullptr : problem.diveProfiles(plan.speed);
+    double t = plan.departure;
+    for (std::size_t i = 0; i < plan.path.size(); ++i)
+    {
+        MissionWaypoint w;
+        w.position = {plan.path[i].x, plan.path[i].y};
+        if (problem.isGeographic())
+        {
+            w.geographic = true;
+            w.lonLat = problem.toGeographic(w.position);
+        }
+        if (i == 0)
+            w.time = plan.departure;
+        else if (dive && plan.path[i].x == plan.path[i - 1].x && plan.path[i].y == plan.path[i - 1].y)
+        {
+            // a hold (goal window, a lattice wait): as long as planned
+            w.legTime = plan.path[i].t - plan.path[i - 1].t;
+            t += w.legTime;
+            w.time = t;
+        }
+        else if (dive)
+        {
+            const DiveLegResult leg =
+                dive->bestProfile(plan.path[i - 1].x, plan.path[i - 1].y, w.position.x, w.position.y, t);
+            w.profile = leg.profile;
+            if (leg.profile >= 0)
+                w.dive = dive->profiles()[leg.profile];
+            w.legTime = leg.travelTime;
+            t += leg.travelTime;
+            w.time = t;
+        }
+        else
+        {
+            w.time = plan.path[i].t;
+            w.legTime = plan.path[i].t - plan.path[i - 1].t;
+        }
+        w.iso = problem.isoTime(w.time);
+        out.waypoints.push_back(w);
+    }
+    out.travelTime = out.waypoints.empty() ? planning_detail::kInf : out.waypoints.back().time - plan.departure;
+    return out;
+}
+
+OptimumReference optimumReference(const MissionProblem &problem, double departure, double speed,
+                                  double maxTravelTime)
+{
+    ZermeloParams zp;
+    zp.speed = speed;
+    zp.depth = problem.getSpec().vehicle.depth;
+    zp.maxTime = maxTravelTime;
+    const ZermeloReference ref(problem.getField(), zp);
+    const Point2 s = problem.getStart(), g = problem.getGoal();
+    const ZermeloSolution sol = ref.solve(s.x, s.y, g.x, g.y, departure);
+    OptimumReference out;
+    out.found = sol.found;
+    if (!sol.found)
+        return out;
+    out.travelTime = sol.travelTime;
+    for (const ZermeloState &z : ref.trajectory(s.x, s.y, sol.initialHeading, departure, sol.travelTime))
+        out.path.push_back({z.x, z.y, z.t});
+    return out;
+}
+}  // namespace ompl_glider

@@ -1,0 +1,90 @@
+/// @file NoPathReason.cpp
+/// @brief Why a search ended without a path, in words for the user: the setup's own check, the outcome of the
+/// lattice, wavefront and level-set planners, or OMPL's status; and what bounds the arrival of an exhausted search.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "PlanningInternal.h"
+#include "ompl_glider/planners/Wavefront.h"
+#include "ompl_glider/planners/ZAStarTVE.h"
+#include "ompl_glider/reachability/LevelSetPlanner.h"
+
+namespace ompl_glider
+{
+namespace planning_detail
+{
+std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::Planner &planner,
+                         const GliderSimpleSetup *setup, double timeLimit)
+{
+    if (setup && !setup->lastCheckMessage().empty())
+        return setup->lastCheckMessage();
+    if (const auto *z = dynamic_cast<const ZAStarTVE *>(&planner))
+    {
+        const TveResult &r = z->lastResult();
+        switch (r.outcome)
+        {
+            case TveOutcome::InvalidStart:
+                return "invalid start: " + r.message;
+            case TveOutcome::InvalidGoal:
+                return "invalid goal: " + r.message;
+            case TveOutcome::Exhausted:
+                return "no path exists on this lattice (" + std::to_string(r.expansions) +
+                       " vertices expanded; a finer grid, more sectors or a higher speed may find one)";
+            case TveOutcome::Terminated:
+                return "the time limit (" + std::to_string(timeLimit) + " s) ended the search: raise it";
+            default:
+                break;
+        }
+    }
+    if (const auto *l = dynamic_cast<const LevelSetPlanner *>(&planner);
+        l && status == ompl::base::PlannerStatus::ABORT)
+        return l->lastReachability().goalReached ?
+                   "the level-set path cannot be flown as straight legs at this resolution: try a finer one" :
+                   "the reachable front never reaches the goal within the time window (walled in by land or "
+                   "forbidden regions, or a closure that does not open in time)";
+    if (const auto *w = dynamic_cast<const Wavefront *>(&planner))
+    {
+        switch (w->lastOutcome())
+        {
+            case WavefrontOutcome::InvalidStart:
+                return "invalid start: " + w->lastMessage();
+            case WavefrontOutcome::InvalidGoal:
+                return "invalid goal: " + w->lastMessage();
+            case WavefrontOutcome::Exhausted:
+                return "no path exists on this lattice: " + w->lastMessage();
+            case WavefrontOutcome::BadWindow:
+                return w->lastMessage();
+            case WavefrontOutcome::Terminated:
+                return "the time limit (" + std::to_string(timeLimit) + " s) ended the search: raise it";
+            default:
+                break;
+        }
+    }
+    if (status == ompl::base::PlannerStatus::APPROXIMATE_SOLUTION)
+        return "the planner reached only an approximate solution within the time limit";
+    if (status == ompl::base::PlannerStatus::TIMEOUT)
+        return "the planner found no path within the time limit";
+    return std::string("planner status: ") + status.asString();
+}
+
+/// What bounds the arrival of an exhausted search: the end of the forecast or the planning horizon.
+std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp)
+{
+    const double seconds = gp.horizon * problem.getSpec().timeUnitSeconds;
+    char text[160];
+    if (seconds >= 2.0 * 86400.0)
+        std::snprintf(text, sizeof text, "%.6g time units (%.3g days, %.0f h)", gp.horizon, seconds / 86400.0,
+                      seconds / 3600.0);
+    else
+        std::snprintf(text, sizeof text, "%.6g time units (%.3g h)", gp.horizon, seconds / 3600.0);
+    const double fieldEnd = problem.getField()->timeEnd();
+    if (std::isfinite(fieldEnd) && gp.t0 + gp.horizon >= fieldEnd - 1e-9 * std::max(1.0, std::abs(fieldEnd)))
+        return std::string("; the path must arrive before the forecast ends, ") + text +
+               " after departure: depart earlier, or hold the last forecast time past its end (current.horizon: hold_last, --beyond hold)";
+    return std::string("; the path must arrive within the planning horizon, ") + text +
+           " after departure (planner.horizon)";
+}
+}  // namespace planning_detail
+}  // namespace ompl_glider

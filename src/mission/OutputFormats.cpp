@@ -1,0 +1,42 @@
+#include "ompl_glider/mission/OutputFormats.h"
+
+namespace ompl_glider
+{
+const std::vector<OutputFormat> &outputFormats()
+{
+    static const std::vector<OutputFormat> formats = {
+        {OutputFormatId::Summary, "summary", "summary.json", "what was planned and how (always written)", false},
+        {OutputFormatId::Csv, "csv", "waypoints.csv", "waypoints with times, lon/lat and dive profiles", true},
+        {OutputFormatId::Path, "path", "path.csv", "the final path: t,x,y,lon,lat", true},
+        {OutputFormatId::GeoJson, "geojson", "path.geojson", "the path and its waypoints as GeoJSON", true},
+        {OutputFormatId::Isochrones, "isochrones", "isochrones.geojson",
+         "reachable-set contours (level set) at times after the departure, as GeoJSON, also drawn on the map", false},
+        {OutputFormatId::Goto, "goto", "goto_lNN.ma", "Slocum goto list (geographic missions)", true},
+        {OutputFormatId::Stints, "stints", "stints.csv",
+         "heading per surfacing: time, position, heading, expected drift (missions with stints)", true},
+        {OutputFormatId::Map, "map", "map.svg, map.png", "map of the current, regions and paths", false},
+        {OutputFormatId::Execution, "execution",
+         "execution.csv, execution_tracks.csv, execution.svg/png, model_difference.svg/png",
+         "the plan flown in the truth per strategy, and the box plot of a batch (written whenever the mission has "
+         "an execution section)",
+         false},
+    };
+    return formats;
+}
+
+std::optional<OutputFormatId> outputFormatByName(const std::string &name)
+{
+    for (const OutputFormat &format : outputFormats())
+        if (format.name == name)
+            return format.id;
+    return std::nullopt;
+}
+
+const std::string &outputFormatName(OutputFormatId id)
+{
+    for (const OutputFormat &format : outputFormats())
+        if (format.id == id)
+            return format.name;
+    return outputFormats().front().name;  // unreachable: the table lists every id
+}
+}  // namespace ompl_glider

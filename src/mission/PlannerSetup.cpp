@@ -1,0 +1,199 @@
+/// @file PlannerSetup.cpp
+/// @brief The planner of the mission and the problem of one departure: makePlanner() (the one place where the
+/// pipeline's grid size, sectors and stint settings reach the planner types), the mission's planner parameters set
+/// through OMPL's ParamSet, the checked problem of a departure, the lattice size check, and stintSettings().
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "PlanningInternal.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/ResourceLimits.h"
+#include "ompl_glider/planners/Lattice.h"
+#include "ompl_glider/planners/Wavefront.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
+#include "ompl_glider/stints/StintPlanner.h"
+
+namespace ompl_glider
+{
+namespace planning_detail
+{
+namespace
+{
+/// Pipeline settings that a mission gives as planner fields, not as planner parameters.
+bool pipelineParameter(const std::string &name)
+{
+    return name == "refiner_max_evaluations";
+}
+
+/// Sets the mission's planner parameters through OMPL's ParamSet (the names of declareParam).
+void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
+{
+    ompl::base::ParamSet &params = planner.params();
+    for (const auto &[name, value] : m.planner.parameters)
+    {
+        if (name == "grid_size" || name == "sectors" || name == "smooth" || name == "refine")
+            throw Error(parameterPlace(m, name) + ": set it as planner." +
+                        (name == "smooth" ? std::string("smoothing") :
+                         name == "refine" ? std::string("refinement") : name) +
+                        ", which every planner of the pipeline honours");
+        if (params.hasParam(name))
+        {
+            const std::string range = params[name].getRangeSuggestion();
+            // OMPL reads any text other than "true"/"1" as false for a bool parameter (range "0,1")
+            if (range == "0,1" && value != "0" && value != "1" && value != "true" && value != "false")
+                throw Error(parameterPlace(m, name) + ": planner " + planner.getName() +
+                            " expects true or false, got '" + value + "'");
+            bool accepted = false;
+            try
+            {
+                accepted = params.setParam(name, value);
+            }
+            catch (const std::exception &e)  // a setter that refuses the value with its own reason
+            {
+                throw Error(parameterPlace(m, name) + ": " + e.what());
+            }
+            if (!accepted)
+                throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " rejects the value '" +
+                            value + "' (range " + range + ")");
+            // OMPL converts leniently ("1e12" becomes 1 for an integer): read the value back and refuse a change.
+            const std::string stored = params[name].getValue();
+            char *endA = nullptr, *endB = nullptr;
+            const double want = std::strtod(value.c_str(), &endA), got = std::strtod(stored.c_str(), &endB);
+            if (endA != value.c_str() && *endA == '\0' && endB != stored.c_str() &&
+                !(std::abs(want - got) <= 1e-9 * std::max(1.0, std::abs(want))))
+                throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " rejects the value '" +
+                            value + "' (it would be read as " + stored + "; range " + range + ")");
+        }
+        else if (!pipelineParameter(name))
+        {
+            std::vector<std::string> names;
+            params.getParamNames(names);
+            std::string list;
+            for (const std::string &n : names)
+                if (n != "grid_size" && n != "sectors" && n != "smooth" && n != "refine")
+                    list += (list.empty() ? "" : ", ") + n;
+            throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " has no parameter '" + name +
+                        "' (it has: " + (list.empty() ? std::string("none") : list) + ")");
+        }
+    }
+}
+}  // namespace
+
+std::string parameterPlace(const MissionSpec &m, const std::string &name)
+{
+    const auto it = m.planner.parameterMarks.find(name);
+    const SourceMark mark = it != m.planner.parameterMarks.end() ? it->second : SourceMark{m.file, 0};
+    return (mark.line > 0 ? mark.file + ":" + std::to_string(mark.line) : mark.file) + ": field 'planner.parameters." +
+           name + "'";
+}
+
+RefinerParams refinerParams(const MissionSpec &m)
+{
+    RefinerParams rp;
+    const auto it = m.planner.parameters.find("refiner_max_evaluations");
+    if (it != m.planner.parameters.end())
+    {
+        char *end = nullptr;
+        const double v = std::strtod(it->second.c_str(), &end);
+        if (end == it->second.c_str() || *end != '\0' || !(v >= 1.0 && v <= 1e8) || v != std::floor(v))
+            throw Error(parameterPlace(m, it->first) + ": expected an integer in 1..100000000, got '" + it->second +
+                        "'");
+        rp.maxEvaluations = static_cast<unsigned>(v);
+    }
+    return rp;
+}
+
+/// The configured planner of the mission on the setup's space information.
+ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::base::SpaceInformationPtr &si,
+                                   const std::shared_ptr<const GliderContext> &ctx, double grid, int sectors,
+                                   double departure)
+{
+    const MissionSpec &m = problem.getSpec();
+    const PlannerEntry &entry = plannerEntry(m.planner.name);
+    ompl::base::PlannerPtr planner = entry.make(si, ctx);
+    if (auto st = std::dynamic_pointer_cast<StintPlanner>(planner))
+    {
+        if (!m.stints.set)
+            throw Error(m.place("planner.name") + ": planner '" + entry.name +
+                        "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
+        st->setStintSettings(stintSettings(problem, departure));
+    }
+    // The lattice planners (LatticePlanner) declare grid_size and sectors, ZAStarTVE also smooth and refine: set by
+    // name through OMPL's ParamSet. The pipeline smooths and refines every planner's path alike, so the planner's own
+    // smoothing and refinement are off.
+    char gridText[32];
+    std::snprintf(gridText, sizeof gridText, "%.17g", grid);  // round-trips the double exactly
+    const std::pair<const char *, std::string> settings[] = {
+        {"grid_size", gridText}, {"sectors", std::to_string(sectors)}, {"smooth", "0"}, {"refine", "0"}};
+    ompl::base::ParamSet &params = planner->params();
+    for (const auto &[name, value] : settings)
+        if (params.hasParam(name) && !params.setParam(name, value))
+            throw Error(m.place(std::string("planner.") + name) + ": planner '" + entry.name + "' refused " + name +
+                        " = " + value);
+    applyParameters(m, *planner);
+    if (auto w = std::dynamic_pointer_cast<Wavefront>(planner))
+    {
+        // the interval count its search would refuse, named here by the field that set the interval
+        const double intervals = (ctx->region.tMax - departure) / w->effectiveTimeStep();
+        if (!(intervals <= Wavefront::kMaxIntervals))
+        {
+            const bool given = m.planner.parameters.count("time_step") > 0;
+            char text[160];
+            std::snprintf(text, sizeof text, ": %.4g time intervals of %g over the planning window (at most %g)",
+                          intervals, w->effectiveTimeStep(), Wavefront::kMaxIntervals);
+            throw Error((given ? parameterPlace(m, "time_step") : m.place("planner.grid_size")) + text +
+                        ": use a larger time_step");
+        }
+    }
+    return planner;
+}
+
+/// The problem of one departure, its departure time checked first so that the error names where it was given.
+GliderProblem checkedProblem(const MissionProblem &problem, double departure, double speed)
+{
+    GliderProblem gp = problem.gliderProblem(departure, speed);
+    if (const std::string why = departureProblem(gp); !why.empty())
+        throw Error(problem.getSpec().place("departure.time") + ": " + why);
+    return gp;
+}
+
+/// The lattice planners keep dense arrays over the whole lattice (a travel time and a predecessor per vertex,
+/// TveSearch): refuse, naming the field or flag, a spacing whose lattice would not fit in memory.
+void checkLatticeSize(const MissionSpec &m, const GliderProblem &gp, double grid, const std::string &field)
+{
+    const double nx = std::floor((gp.xMax - gp.xMin) / grid + 1e-9) + 1.0;
+    const double ny = std::floor((gp.yMax - gp.yMin) / grid + 1e-9) + 1.0;
+    char what[160];
+    std::snprintf(what, sizeof what, ": a lattice spacing of %g gives %.0f x %.0f = %.3g vertices, which", grid, nx,
+                  ny, nx * ny);
+    if (nx * ny > 2147483648.0)
+        throw Error(m.place(field) + what + " is more than the 2^31 a lattice can hold: use a larger spacing");
+    checkMemory(nx * ny * static_cast<double>(sizeof(double) + sizeof(Lattice::VertexId)), m.place(field) + what,
+                "use a larger spacing");
+}
+}  // namespace planning_detail
+
+StintSettings stintSettings(const MissionProblem &problem, double departure)
+{
+    const MissionSpec &m = problem.getSpec();
+    StintSettings s;
+    s.duration = m.stints.duration;
+    s.missionDuration = m.stints.missionDuration;
+    s.bearingStep = m.stints.bearingStep;
+    s.objective = m.stints.objective == "earliest_arrival" ? StintObjective::EarliestArrival
+                                                           : StintObjective::RemainingDistance;
+    s.radius = m.stints.radius;
+    s.step = m.stints.step;
+    s.depth = m.vehicle.depth;
+    const double end = problem.getField()->timeEnd();
+    if (std::isfinite(end) && departure + s.missionDuration > end * (1.0 + 1e-12))
+        throw Error(m.place("stints.mission_duration") + ": the mission would end at t = " +
+                    std::to_string(departure + s.missionDuration) + ", after the forecast (it ends at t = " +
+                    std::to_string(end) + "): shorten it, depart earlier, or hold the last forecast time "
+                    "(current.horizon: hold_last)");
+    return s;
+}
+}  // namespace ompl_glider

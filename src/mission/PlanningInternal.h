@@ -1,0 +1,97 @@
+#pragma once
+/// @file PlanningInternal.h
+/// @brief Internal pieces of the planning pipeline (planRoute(), runMission(), Planning.h); not installed.
+///
+/// The pipeline is split by concern, one source file each (all in src/mission/):
+///  - Planning.cpp       planRoute() and runMission(): one plan on a field (planOnField()), the departure, the checks
+///                       made before any search, departureFunction()
+///  - PlannerSetup.cpp   the planner of the mission (makePlanner()), its parameters, the checked problem of one
+///                       departure, the lattice size check, stintSettings()
+///  - NoPathReason.cpp   why a search ended without a path (noPathReason(), horizonNote())
+///  - Ensembles.cpp      robust plans over the members of an ensemble (planRobust()), ensembleObjective(),
+///                       retimePath()
+///  - GoalWindow.cpp     goals in time: the arrival moved into the goal window (timeArrival()), holdTimeOf()
+///  - Evaluations.cpp    the evaluations of a plan: pilot waypoints, the optimal-control reference, the speed sweep
+
+#include <chrono>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ompl/base/Planner.h>
+#include <ompl/base/PlannerStatus.h>
+#include <ompl/base/SpaceInformation.h>
+
+#include "ompl_glider/mission/Planning.h"
+#include "ompl_glider/planners/WaypointRefiner.h"
+
+namespace ompl_glider
+{
+namespace planning_detail
+{
+/// The status of a well-formed problem whose search ended without a path for want of one, not of time.
+inline constexpr const char *kNoPathStatus = "No path";
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+/// Time limit of planners that use all the time they get (sampling planners) when the mission gives none.
+inline constexpr double kDefaultSamplingTimeLimit = 10.0;
+
+/// Wall time in seconds since @p a.
+inline double secondsSince(std::chrono::steady_clock::time_point a)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
+}
+
+// PlannerSetup.cpp
+
+/// Where the mission gave the planner parameter @p name ("file:line: field 'planner.parameters.NAME'").
+std::string parameterPlace(const MissionSpec &m, const std::string &name);
+
+/// The waypoint refiner's settings from the mission's pipeline parameter refiner_max_evaluations.
+/// @throws Error naming the parameter when its value is not an integer in 1..100000000.
+RefinerParams refinerParams(const MissionSpec &m);
+
+/// The configured planner of the mission on the setup's space information.
+ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::base::SpaceInformationPtr &si,
+                                   const std::shared_ptr<const GliderContext> &ctx, double grid, int sectors,
+                                   double departure);
+
+/// The problem of one departure, its departure time checked first so that the error names where it was given.
+GliderProblem checkedProblem(const MissionProblem &problem, double departure, double speed);
+
+/// The lattice planners keep dense arrays over the whole lattice (a travel time and a predecessor per vertex,
+/// TveSearch): refuse, naming the field or flag, a spacing whose lattice would not fit in memory.
+void checkLatticeSize(const MissionSpec &m, const GliderProblem &gp, double grid, const std::string &field);
+
+// NoPathReason.cpp
+
+/// Why a search ended without an exact path: the setup's own check, the planner's outcome, or OMPL's status.
+std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::Planner &planner,
+                         const GliderSimpleSetup *setup, double timeLimit);
+
+/// What bounds the arrival of an exhausted search: the end of the forecast or the planning horizon.
+std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp);
+
+// Planning.cpp
+
+/// planRoute() on the problem's one field.
+PlannedPath planOnField(const MissionProblem &problem, double departure, const PlanOptions &o);
+
+// Ensembles.cpp
+
+/// A robust plan over the members of an ensemble (see planRoute()).
+PlannedPath planRobust(const MissionProblem &problem, double departure, const PlanOptions &o);
+
+// GoalWindow.cpp
+
+/// Total time spent holding position: the zero-length legs of a timed path.
+double holdTimeOf(const std::vector<TimedPoint> &path);
+
+/// A field time for messages: "t = T", followed by its ISO 8601 date when the mission has a calendar.
+std::string timeText(const MissionProblem &problem, double t);
+
+/// Moves the arrival of a solved plan into the mission's goal window (see GoalWindow.cpp).
+void timeArrival(const MissionProblem &problem, PlannedPath &r);
+}  // namespace planning_detail
+}  // namespace ompl_glider

@@ -1,0 +1,38 @@
+#include "ompl_glider/planners/LatticePlanner.h"
+
+#include <cmath>
+#include <utility>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+LatticePlanner::LatticePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name,
+                               std::string className)
+  : ompl::base::Planner(si, name), className_(std::move(className))
+{
+    declareParam<double>("grid_size", this, &LatticePlanner::setGridSize, &LatticePlanner::getGridSize,
+                         "0.:0.01:1000.");
+    declareParam<unsigned>("sectors", this, &LatticePlanner::setSectors, &LatticePlanner::getSectors, "1:1:5");
+}
+
+void LatticePlanner::setGridSize(double g)
+{
+    if (!(g > 0.0) || !std::isfinite(g))
+        throw Error(className_ + ": grid_size must be a finite number > 0 (got " + std::to_string(g) + ")");
+    const bool changed = g != gridSize_;
+    gridSize_ = g;
+    if (changed)
+        latticeChanged();
+}
+
+void LatticePlanner::setSectors(unsigned n)
+{
+    if (n < 1 || n > 5)
+        throw Error(className_ + ": sectors must be in 1..5 (got " + std::to_string(n) + ")");
+    const bool changed = n != sectors_;
+    sectors_ = n;
+    if (changed)
+        latticeChanged();
+}
+}  // namespace ompl_glider

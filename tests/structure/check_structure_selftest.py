@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""The structure checker catches what it claims to: an upward include, a long file, a long function, an
+author-year citation; and passes a tree that keeps the rules. Run by ctest (structure.checker_selftest)."""
+import os
+import subprocess
+import sys
+import tempfile
+
+SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "check_structure.py")
+
+
+def tree(files):
+    root = tempfile.mkdtemp(prefix="structure-")
+    for rel, text in files.items():
+        path = os.path.join(root, rel)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w") as f:
+            f.write(text)
+    return root
+
+
+def run(root):
+    p = subprocess.run([sys.executable, SCRIPT, root], capture_output=True, text=True)
+    return p.returncode, p.stdout
+
+
+def function(name, body_lines):
+    return f"int {name}(int a)\n{{\n" + "    a += 1;\n" * body_lines + "    return a;\n}\n"
+
+
+failures = []
+
+
+def expect(condition, what, output):
+    if not condition:
+        failures.append(what + "\n" + output)
+
+
+good = {
+    "include/ompl_glider/current/Field.h": '#include "ompl_glider/Geometry.h"\n',
+    "src/current/Field.cpp": '#include "ompl_glider/current/Field.h"\n#include "ompl_glider/io/Time.h"\n' +
+                             function("f", 140),
+    "src/mission/Plan.cpp": '#include "ompl_glider/planners/X.h"\n#include "ompl_glider/current/Field.h"\n'
+                            "// the search of [EichhornRAS] Eq. 5\n",
+}
+code, out = run(tree(good))
+expect(code == 0, "a tree that keeps the rules must pass", out)
+
+upward = dict(good)
+upward["src/current/Bad.cpp"] = '#include "ompl_glider/mission/MissionSpec.h"\n'
+code, out = run(tree(upward))
+expect(code == 1 and "src/current/Bad.cpp:1: layer 'current' includes layer 'mission'" in out,
+       "an upward include must fail with file:line", out)
+
+relative = dict(good)
+relative["src/current/netcdf/Rel.cpp"] = '#include "../../output/Writer.h"\n'
+code, out = run(tree(relative))
+expect(code == 1 and "src/current/netcdf/Rel.cpp:1: layer 'current' includes layer 'output'" in out,
+       "a relative upward include must fail", out)
+
+long_function = dict(good)
+long_function["src/current/Long.cpp"] = function("tooLong", 160)
+code, out = run(tree(long_function))
+expect(code == 1 and "function tooLong has 163 lines" in out, "a 163-line function must fail", out)
+
+long_file = dict(good)
+long_file["src/current/Big.cpp"] = "".join(function(f"g{i}", 10) for i in range(60))
+code, out = run(tree(long_file))
+expect(code == 1 and "src/current/Big.cpp: 840 lines" in out, "an 840-line file must fail", out)
+
+citation = dict(good)
+citation["src/current/Cite.cpp"] = "// the spline of Akima (1970)\n"
+code, out = run(tree(citation))
+expect(code == 1 and "Akima (1970)" in out, "an author-year citation must fail", out)
+
+unknown = dict(good)
+unknown["src/gadgets/G.cpp"] = "\n"
+code, out = run(tree(unknown))
+expect(code == 1 and "layer 'gadgets' is not in the list" in out, "a folder outside the layer list must fail", out)
+
+for f in failures:
+    print("FAILED: " + f)
+print(f"{7 - len(failures)} passed, {len(failures)} failed")
+sys.exit(1 if failures else 0)

@@ -1,0 +1,7 @@
+# The structure rules of docs/ARCHITECTURE.md on the real tree (layering, file and function sizes, citations), and
+# the checker's own test on small trees that break each rule.
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+add_test(NAME structure.layers_sizes_citations
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_structure.py ${PROJECT_SOURCE_DIR})
+add_test(NAME structure.checker_selftest
+  COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_structure_selftest.py)
