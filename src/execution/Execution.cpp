@@ -6,6 +6,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/execution/Dive.h"
+#include "DiveOutcome.h"
 
 namespace ompl_glider
 {
@@ -156,16 +157,7 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         x = dive.x;
         y = dive.y;
         t = dive.t;
-        if (dive.grounded)
-        {
-            r.grounded = true;
-            r.groundedWhy = dive.why;
-        }
-        if (dive.reached)
-        {
-            r.reached = true;
-            r.arrivalTime = dive.arrivalTime;
-        }
+        noteDiveOutcome(dive, r);
         r.fixes.push_back({x, y, t});
     }
     // the distance to the goal at the planned arrival time, on the flown track

@@ -16,6 +16,7 @@
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
+#include "../io/NumberText.h"
 
 namespace ompl_glider
 {
@@ -23,9 +24,7 @@ namespace
 {
 std::string num(double v)
 {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
+    return text::number(v, 10);
 }
 }  // namespace
 

@@ -11,7 +11,7 @@
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ResourceLimits.h"
-#include "ompl_glider/planners/Lattice.h"
+#include "ompl_glider/planners/detail/Lattice.h"
 #include "ompl_glider/planners/Wavefront.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/stints/StintPlanner.h"

@@ -14,7 +14,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
-#include "ompl_glider/output/detail/MapPainter.h"
+#include "MapPainter.h"
 
 namespace ompl_glider
 {

@@ -1,6 +1,6 @@
 /// @file MapRendererAxes.cpp
 /// @brief The map's grid, frame and axes: the light x/y grid and axis ticks, or in a geographic frame the graticule
-/// of meridians and parallels, its labels and a scale bar (MapRenderer's drawing, see detail/MapPainter.h).
+/// of meridians and parallels, its labels and a scale bar (MapRenderer's drawing, see src/output/MapPainter.h).
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <cairo.h>
 
 #include "ompl_glider/current/GeoBox.h"
-#include "ompl_glider/output/detail/MapPainter.h"
+#include "MapPainter.h"
 
 namespace ompl_glider
 {

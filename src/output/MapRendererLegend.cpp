@@ -1,7 +1,7 @@
 /// @file MapRendererLegend.cpp
 /// @brief The map's legend in the right margin: paths, start and goal, land / no-data areas and forbidden regions,
 /// the current arrow with the field's name, the colour bar, and the notes (MapRenderer's drawing, see
-/// detail/MapPainter.h).
+/// src/output/MapPainter.h).
 
 #include <set>
 #include <string>
@@ -9,7 +9,7 @@
 
 #include <cairo.h>
 
-#include "ompl_glider/output/detail/MapPainter.h"
+#include "MapPainter.h"
 
 namespace ompl_glider
 {

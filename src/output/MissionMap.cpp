@@ -4,15 +4,15 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../io/NumberText.h"
+
 namespace ompl_glider
 {
 namespace
 {
 std::string fmt(double v)
 {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
+    return text::number(v, 4);
 }
 
 MapPolygon mapPolygon(const MissionPolygon &p)

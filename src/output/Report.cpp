@@ -3,19 +3,16 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../io/NumberText.h"
+
 namespace ompl_glider
 {
 namespace
 {
+/// Empty for NaN, "inf" for either infinity, else text::csvNumber().
 std::string num(double v)
 {
-    if (std::isnan(v))
-        return "";
-    if (std::isinf(v))
-        return "inf";
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
+    return std::isinf(v) ? "inf" : text::csvNumber(v);
 }
 
 /// printf into a string (the report's lines are short).

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ompl_glider/Exception.h"
+#include "../io/NumberText.h"
 
 namespace ompl_glider
 {
@@ -14,13 +15,7 @@ namespace
 {
 std::string csvNum(double v)
 {
-    if (std::isnan(v))
-        return "";
-    if (std::isinf(v))
-        return v > 0 ? "inf" : "-inf";
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
+    return text::csvNumber(v);
 }
 
 /// A number for JSON: null when not finite.

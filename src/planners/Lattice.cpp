@@ -1,4 +1,4 @@
-#include "ompl_glider/planners/Lattice.h"
+#include "ompl_glider/planners/detail/Lattice.h"
 
 #include <algorithm>
 #include <cmath>

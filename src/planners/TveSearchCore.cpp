@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "ompl_glider/Exception.h"
+#include "SearchSetting.h"
 
 namespace ompl_glider
 {
@@ -65,7 +66,7 @@ struct Cone
 /// @brief One search of runCore(): the state its steps share (start s, goal g, queue Q, deadline tEnd, ...; the
 /// arrival d[v] through dist()) and the steps as member functions. Lives for one call of runCore(); the labels, the
 /// reached vertices, the bounds and the edge cache stay in the TveSearch.
-class TveSearch::Core
+class TveSearch::Core : private SearchSetting
 {
 public:
     /// @brief A search of @p search from (startX, startY), departing at @p departure, to (goalX, goalY).
@@ -121,12 +122,6 @@ private:
 
     TveSearch &ts;
     Lattice &lattice;
-    const GliderContext &ctx;
-    const CurrentField &field;
-    const TravelTimeCalculator &travel;
-    const Environment *env;
-    const double z;
-    const double sx, sy, t0, gx, gy;
     const TveOptions &options;
     const std::function<bool()> &terminate;
     const std::uint64_t cfc0;  ///< CFC before the search
@@ -151,18 +146,9 @@ private:
 
 TveSearch::Core::Core(TveSearch &search, double startX, double startY, double departure, double goalX, double goalY,
                       const TveOptions &opts, const std::function<bool()> &stop)
-  : ts(search)
+  : SearchSetting(*search.ctx_, startX, startY, departure, goalX, goalY)
+  , ts(search)
   , lattice(search.lattice_)
-  , ctx(*search.ctx_)
-  , field(*ctx.field)
-  , travel(*ctx.travel)
-  , env(ctx.environment.get())
-  , z(travel.params().depth)
-  , sx(startX)
-  , sy(startY)
-  , t0(departure)
-  , gx(goalX)
-  , gy(goalY)
   , options(opts)
   , terminate(stop)
   , cfc0(travel.costFunctionCalls())

@@ -16,8 +16,9 @@
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
-#include "ompl_glider/planners/Lattice.h"
+#include "ompl_glider/planners/detail/Lattice.h"
 #include "ompl_glider/planners/PathSmoother.h"
+#include "SearchSetting.h"
 
 namespace ompl_glider
 {
@@ -164,7 +165,7 @@ void Wavefront::clear()
 /// @brief One search of Wavefront::search(): the lattice, the time intervals, the nodes' labels and the queue, with
 /// the steps of [ThompsonICRA] Algorithm 1 as member functions. Writes the planner's message, counters, settled nodes
 /// and path.
-class Wavefront::Search
+class Wavefront::Search : private SearchSetting
 {
 public:
     Search(Wavefront &planner, double startX, double startY, double departure, double goalX, double goalY,
@@ -201,12 +202,6 @@ private:
     }
 
     Wavefront &wf;
-    const GliderContext &ctx;
-    const CurrentField &field;
-    const TravelTimeCalculator &travel;
-    const Environment *env;
-    const double z;
-    const double sx, sy, t0, gx, gy;
     const ompl::base::PlannerTerminationCondition &ptc;
     Lattice lattice;
     Lattice::VertexId s{Lattice::kNone}, g{Lattice::kNone};
@@ -225,17 +220,8 @@ private:
 
 Wavefront::Search::Search(Wavefront &planner, double startX, double startY, double departure, double goalX,
                           double goalY, const ompl::base::PlannerTerminationCondition &stop)
-  : wf(planner)
-  , ctx(*planner.ctx_)
-  , field(*ctx.field)
-  , travel(*ctx.travel)
-  , env(ctx.environment.get())
-  , z(travel.params().depth)
-  , sx(startX)
-  , sy(startY)
-  , t0(departure)
-  , gx(goalX)
-  , gy(goalY)
+  : SearchSetting(*planner.ctx_, startX, startY, departure, goalX, goalY)
+  , wf(planner)
   , ptc(stop)
   , lattice(ctx.region.xMin, ctx.region.xMax, ctx.region.yMin, ctx.region.yMax, planner.getGridSize(),
             planner.getSectors())

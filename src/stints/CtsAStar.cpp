@@ -6,6 +6,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "StintStep.h"
+
 namespace ompl_glider
 {
 namespace
@@ -156,11 +158,7 @@ CtsAStarResult ctsAStar(const StintSimulator &sim, const CtsAStarParams &params)
         while (b.size() < count && t < end && !head.grounded)
         {
             b.push_back(sim.bearingToGoal(x, y));
-            const DiveEnd e = sim.flyStint(x, y, t, b.back());
-            x = e.x;
-            y = e.y;
-            t = e.t;
-            if (e.grounded || e.reached)
+            if (flyOneStint(sim, x, y, t, b.back()))
                 break;
         }
         out.plan = sim.simulate(b);

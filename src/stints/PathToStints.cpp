@@ -6,6 +6,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/execution/Execution.h"
+#include "StintStep.h"
 
 namespace ompl_glider
 {
@@ -98,11 +99,7 @@ PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<T
         if (!(std::min(fp, fq) <= miss(b0)))
             b = b0;
         bearings.push_back(b);
-        const DiveEnd e = sim.flyStint(x, y, t, b);
-        x = e.x;
-        y = e.y;
-        t = e.t;
-        if (e.reached || e.grounded)
+        if (flyOneStint(sim, x, y, t, b))
             break;
     }
     out.tracking = sim.simulate(bearings);

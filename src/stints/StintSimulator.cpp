@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "ompl_glider/Exception.h"
+#include "../execution/DiveOutcome.h"
 
 namespace ompl_glider
 {
@@ -123,17 +124,9 @@ StintPlan fly(const StintSimulator &sim, const Next &next, std::size_t count, bo
             p.closestDistance = e.closestDistance;
             p.closestTime = e.closestTime;
         }
-        if (e.reached)
-        {
-            p.reached = true;
-            p.arrivalTime = e.arrivalTime;
-        }
+        noteDiveOutcome(e, p);
         if (e.grounded)
-        {
-            p.grounded = true;
-            p.groundedWhy = e.why;
             break;
-        }
     }
     p.remainingDistance = std::hypot(sim.goal().x - x, sim.goal().y - y);
     p.cost = sim.cost(p);

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/planners/Lattice.h"
+#include "ompl_glider/planners/detail/Lattice.h"
 
 using namespace ompl_glider;
 

@@ -13,7 +13,7 @@
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/current/UniformCurrent.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "ompl_glider/planners/SearchHeuristic.h"
+#include "ompl_glider/planners/detail/SearchHeuristic.h"
 #include "ompl_glider/planners/TveSearch.h"
 
 using namespace ompl_glider;

@@ -121,7 +121,7 @@ public:
     static MapPath stintTrackStyle(std::string label, std::vector<TimedPoint> track, int index = 0);
 
 private:
-    /// Draws the map through map_detail::MapPainter (detail/MapPainter.h), which reads the members below.
+    /// Draws the map through map_detail::MapPainter (src/output/MapPainter.h), which reads the members below.
     friend class map_detail::MapPainter;
     void draw(void *cairoContext) const;
 

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "ompl_glider/ompl/GliderContext.h"
-#include "ompl_glider/planners/Lattice.h"
-#include "ompl_glider/planners/SearchHeuristic.h"
-#include "ompl_glider/planners/VertexPages.h"
+#include "ompl_glider/planners/detail/Lattice.h"
+#include "ompl_glider/planners/detail/SearchHeuristic.h"
+#include "ompl_glider/planners/detail/VertexPages.h"
 
 namespace ompl_glider
 {

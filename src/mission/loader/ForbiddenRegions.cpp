@@ -113,6 +113,21 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
     }
 }
 
+/// @brief Entry @p i of the list forbidden.<list> (@p entry): checks its keys against @p keys, reads its polygon
+/// into @p polygon and names it "<unnamed> <i + 1>" when the entry gives no name.
+/// @return The entry's path in messages, "forbidden.<list>[i]".
+std::string readListedPolygon(const Reader &r, const YAML::Node &entry, const char *list, std::size_t i,
+                              const std::set<std::string> &keys, const char *unnamed, PolygonSpec &polygon,
+                              const MissionSpec &m)
+{
+    const std::string g = std::string("forbidden.") + list + "[" + std::to_string(i) + "]";
+    r.checkMap(entry, g, keys);
+    readPolygon(r, entry, g, polygon, m);
+    if (polygon.name.empty())
+        polygon.name = std::string(unnamed) + " " + std::to_string(i + 1);
+    return g;
+}
+
 }  // namespace
 
 void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
@@ -128,12 +143,10 @@ void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (const YAML::Node l = list("obstacles"))
         for (std::size_t i = 0; i < l.size(); ++i)
         {
-            const std::string g = f + ".obstacles[" + std::to_string(i) + "]";
-            r.checkMap(l[i], g, {"name", "kind", "points", "lonlat", "holes"});
             ObstacleSpec o;
-            readPolygon(r, l[i], g, o.polygon, m);
-            if (o.polygon.name.empty())
-                o.polygon.name = "obstacle " + std::to_string(i + 1);
+            const std::string g = readListedPolygon(r, l[i], "obstacles", i,
+                                                    {"name", "kind", "points", "lonlat", "holes"}, "obstacle",
+                                                    o.polygon, m);
             if (l[i]["kind"])
                 o.kind = r.oneOf(l[i]["kind"], g + ".kind", {"island", "land", "restricted area"});
             m.forbidden.obstacles.push_back(o);
@@ -141,12 +154,10 @@ void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (const YAML::Node l = list("time_windows"))
         for (std::size_t i = 0; i < l.size(); ++i)
         {
-            const std::string g = f + ".time_windows[" + std::to_string(i) + "]";
-            r.checkMap(l[i], g, {"name", "points", "lonlat", "holes", "windows"});
             TimeWindowSpec tw;
-            readPolygon(r, l[i], g, tw.polygon, m);
-            if (tw.polygon.name.empty())
-                tw.polygon.name = "closure " + std::to_string(i + 1);
+            const std::string g = readListedPolygon(r, l[i], "time_windows", i,
+                                                    {"name", "points", "lonlat", "holes", "windows"}, "closure",
+                                                    tw.polygon, m);
             const YAML::Node &w = l[i]["windows"];
             if (!w || !w.IsSequence() || w.size() == 0)
                 r.fail(w ? w : l[i], g + ".windows", "expected a list of [from, to] time intervals");
@@ -165,13 +176,11 @@ void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (const YAML::Node l = list("ice"))
         for (std::size_t i = 0; i < l.size(); ++i)
         {
-            const std::string g = f + ".ice[" + std::to_string(i) + "]";
-            r.checkMap(l[i], g,
-                       {"name", "points", "lonlat", "holes", "t_ref", "drift", "carried", "max_submerged_time"});
             IceSpec ice;
-            readPolygon(r, l[i], g, ice.polygon, m);
-            if (ice.polygon.name.empty())
-                ice.polygon.name = "ice " + std::to_string(i + 1);
+            const std::string g = readListedPolygon(
+                r, l[i], "ice", i,
+                {"name", "points", "lonlat", "holes", "t_ref", "drift", "carried", "max_submerged_time"}, "ice",
+                ice.polygon, m);
             if (!l[i]["max_submerged_time"])
                 r.fail(l[i], g + ".max_submerged_time", "missing: the longest continuous stay under the ice");
             ice.maxSubmergedTime = r.nonNegative(l[i]["max_submerged_time"], g + ".max_submerged_time");

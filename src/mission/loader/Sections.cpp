@@ -110,6 +110,14 @@ void readUnitsAndRecord(const Reader &r, const YAML::Node &n, const std::string 
         c.steadyRecord =
             static_cast<std::size_t>(r.integer(n["steady_record"], f + ".steady_record", 0, 1000000000L));
 }
+
+/// @brief The optional key `threads` of @p n (path @p f + ".threads" in messages): an integer 0 .. 1024 into
+/// @p threads when given (0: all cores); @p threads keeps its value otherwise.
+void readThreads(const Reader &r, const YAML::Node &n, const std::string &f, unsigned &threads)
+{
+    if (n["threads"])
+        threads = static_cast<unsigned>(r.integer(n["threads"], f + ".threads", 0, 1024));
+}
 }  // namespace
 
 namespace
@@ -336,8 +344,7 @@ void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m)
         d.coarseGridSize = r.positive(w["coarse_grid_size"], g + ".coarse_grid_size");
     if (w["coarse_sectors"])
         d.coarseSectors = static_cast<int>(r.integer(w["coarse_sectors"], g + ".coarse_sectors", 1, 5));
-    if (w["threads"])
-        d.threads = static_cast<unsigned>(r.integer(w["threads"], g + ".threads", 0, 1024));
+    readThreads(r, w, g, d.threads);
 }
 
 void readGoalWindow(const Reader &r, const YAML::Node &n, MissionSpec &m)
@@ -386,8 +393,7 @@ void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m)
         p.maxTime = r.positive(n["max_time"], f + ".max_time");
     if (n["clearance"])
         p.clearance = r.nonNegative(n["clearance"], f + ".clearance");
-    if (n["threads"])
-        d.threads = static_cast<unsigned>(r.integer(n["threads"], f + ".threads", 0, 1024));
+    readThreads(r, n, f, d.threads);
     try
     {
         makeDiveProfiles(p);
@@ -669,8 +675,7 @@ void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
             e.seed = static_cast<unsigned>(r.integer(b["seed"], f + ".batch.seed", 0, 4294967295L));
         if (b["min_distance"])
             e.minDistance = r.positive(b["min_distance"], f + ".batch.min_distance");
-        if (b["threads"])
-            e.threads = static_cast<unsigned>(r.integer(b["threads"], f + ".batch.threads", 0, 1024));
+        readThreads(r, b, f + ".batch", e.threads);
     }
 }
 }  // namespace ompl_glider::mission_loader

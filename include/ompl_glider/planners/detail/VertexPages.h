@@ -1,5 +1,5 @@
 #pragma once
-/// @file VertexPages.h
+/// @file detail/VertexPages.h (an internal of the lattice search, installed because TveSearch.h needs it; not API)
 /// @brief Per-vertex values of a lattice search kept in pages of 32 x 32 grid vertices, allocated when a vertex of
 /// the page is first written: O(1) access like a dense array, memory in proportion to the area the search visits
 /// (issue 15: no array over the whole lattice unless it is visited).
@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "ompl_glider/planners/Lattice.h"
+#include "ompl_glider/planners/detail/Lattice.h"
 
 namespace ompl_glider
 {

@@ -1,5 +1,5 @@
 #pragma once
-/// @file Lattice.h
+/// @file detail/Lattice.h (an internal of the lattice search, installed because TveSearch.h needs it; not API)
 /// @brief Implicit rectangular lattice with n-sector connectivity ([EichhornRAS] Sec. 2.1, Fig. 1).
 
 #include <cstddef>

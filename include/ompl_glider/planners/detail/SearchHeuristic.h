@@ -1,5 +1,5 @@
 #pragma once
-/// @file SearchHeuristic.h
+/// @file detail/SearchHeuristic.h (an internal of the lattice search, installed because TveSearch.h needs it; not API)
 /// @brief A tight admissible and consistent A* heuristic for the lattice search: an optimistic backward search over
 /// the lattice with per-cell, per-direction speed bounds (issue 15), and the per-edge lower bound it is built from.
 
@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "ompl_glider/current/CurrentField.h"
-#include "ompl_glider/planners/Lattice.h"
-#include "ompl_glider/planners/VertexPages.h"
+#include "ompl_glider/planners/detail/Lattice.h"
+#include "ompl_glider/planners/detail/VertexPages.h"
 
 namespace ompl_glider
 {

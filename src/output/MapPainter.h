@@ -1,5 +1,5 @@
 #pragma once
-/// @file detail/MapPainter.h
+/// @file MapPainter.h (internal to src/output, not installed)
 /// @brief Internal to src/output/MapRenderer*.cpp, not part of the public API: the map's page layout, the cairo
 /// drawing primitives it shares, and MapPainter, which draws one MapRenderer in steps (the plot area in
 /// MapRenderer.cpp, grid, frame and axes in MapRendererAxes.cpp, the legend in MapRendererLegend.cpp).
