@@ -1,5 +1,6 @@
 // Longitude/latitude boxes: regions checked in either convention, the trip's region widened by a geodesic margin.
 #include "ompl_glider/current/GeoBox.h"
+#include "../io/NumberText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,9 +16,7 @@ constexpr double kDeg = M_PI / 180.0;
 
 std::string num(double v)
 {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
+    return text::number(v, 10);
 }
 }  // namespace
 

@@ -1,4 +1,5 @@
 #include "ompl_glider/mission/MissionProblem.h"
+#include "../io/NumberText.h"
 
 #include "ompl_glider/current/EnsembleField.h"
 #include "ompl_glider/current/ShiftedTimeField.h"
@@ -37,9 +38,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string num(double v)
 {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
+    return text::number(v, 10);
 }
 
 std::string where(const MissionSpec &m, const SourceMark &mark = {})

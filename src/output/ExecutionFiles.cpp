@@ -1,4 +1,5 @@
 #include "ompl_glider/output/ExecutionFiles.h"
+#include "../io/NumberText.h"
 
 #include <cmath>
 #include <cstdio>
@@ -9,11 +10,7 @@ namespace
 {
 std::string num(double v)
 {
-    if (!std::isfinite(v))
-        return "";
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
+    return std::isfinite(v) ? text::number(v, 10) : "";
 }
 
 /// "x,y,lon,lat" of a point (lon/lat empty without a projection).

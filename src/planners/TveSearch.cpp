@@ -25,12 +25,17 @@ const GliderContext &checkedContext(const std::shared_ptr<const GliderContext> &
         throw Error("TveSearch: GliderContext.travel is null");
     return *ctx;
 }
+
+/// The lattice over a checked context's region (the context is checked before any member reads it).
+Lattice latticeOf(const GliderContext &ctx, double gridSize, unsigned sectors)
+{
+    return Lattice(ctx.region.xMin, ctx.region.xMax, ctx.region.yMin, ctx.region.yMax, gridSize, sectors);
+}
 }  // namespace
 
 TveSearch::TveSearch(std::shared_ptr<const GliderContext> ctx, double gridSize, unsigned sectors)
   : ctx_(std::move(ctx))
-  , lattice_(checkedContext(ctx_).region.xMin, ctx_->region.xMax, ctx_->region.yMin, ctx_->region.yMax, gridSize,
-             sectors)
+  , lattice_(latticeOf(checkedContext(ctx_), gridSize, sectors))
 {
 }
 

@@ -11,6 +11,7 @@
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/geometric/SimpleSetup.h>
 
+#include "ompl_glider/Exception.h"
 #include "ompl_glider/current/LinearShear.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/current/UniformCurrent.h"
@@ -261,4 +262,12 @@ TEST(LatticeWaiting, CertifiedZAStarTveEqualsTveWithWaitingOnTheJet)
                 tve.travelTime, static_cast<unsigned long long>(tve.costFunctionCalls), za.travelTime,
                 static_cast<unsigned long long>(za.costFunctionCalls), holdTime(za.waypoints),
                 tveNoWait.outcome == TveOutcome::Exact ? tveNoWait.travelTime : -1.0);
+}
+
+// A search without a context is refused with the documented Error before the lattice reads the context's region.
+TEST(TveSearch, MissingContextIsAnErrorNotACrash)
+{
+    EXPECT_THROW(TveSearch search(nullptr, 0.4, 3), Error);
+    auto noField = std::make_shared<GliderContext>();
+    EXPECT_THROW(TveSearch search(noField, 0.4, 3), Error);
 }
