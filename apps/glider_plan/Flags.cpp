@@ -397,36 +397,36 @@ void defineFlags(CLI::App &app, Flags &f)
     ForecastInput &fc = f.forecast;
     for (const char *role : {"u", "v", "lon", "lat", "depth", "time"})
         app.add_option_function<std::string>(
-               std::string("--") + role + "-var", [&fc, role](const std::string &v) { fc.variables[role] = v; },
+               std::string("--") + role + "-var", [&fc, role](const std::string &v) { fc.current.variables[role] = v; },
                std::string("name of the ") + role + " variable (found automatically when not given)")
             ->group(nc);
     app.add_option_function<std::string>(
-           "--mask-var", [&fc](const std::string &v) { fc.variables["mask"] = v; },
+           "--mask-var", [&fc](const std::string &v) { fc.current.variables["mask"] = v; },
            "land/sea mask variable (found automatically: flag_meanings, mask_rho, tmask, lsm, KMT...; 'none' for "
            "no mask)")
         ->group(nc);
     app.add_option_function<std::string>(
-           "--angle-var", [&fc](const std::string &v) { fc.variables["angle"] = v; },
+           "--angle-var", [&fc](const std::string &v) { fc.current.variables["angle"] = v; },
            "grid angle variable (radians or degrees, grid i direction to east) of velocities given along a rotated "
            "grid (found automatically: 'angle' on the velocities' grid, as ROMS and POP write it; 'none' for "
            "none)")
         ->group(nc);
     app.add_flag_function(
-           "--no-zero-land", [&fc](std::int64_t) { fc.zeroVelocityLand = false; },
+           "--no-zero-land", [&fc](std::int64_t) { fc.current.zeroVelocityLand = false; },
            "do not take nodes whose u and v are exactly 0 in every record of the trip for land (on by default: models "
            "such as POP store land as zero velocity)")
         ->group(nc);
-    app.add_option("--xy-interp", fc.xyInterpolation, "nearest | bilinear (default) | bicubic")
+    app.add_option("--xy-interp", fc.current.xyInterpolation, "nearest | bilinear (default) | bicubic")
         ->check(CLI::IsMember(kSchemes2D))
         ->group(nc);
-    app.add_option("--time-interp", fc.timeInterpolation, "nearest | linear (default) | cubic | akima")
+    app.add_option("--time-interp", fc.current.timeInterpolation, "nearest | linear (default) | cubic | akima")
         ->check(CLI::IsMember(kSchemes1D))
         ->group(nc);
-    app.add_option("--depth-interp", fc.depthInterpolation, "nearest | linear (default) | cubic | akima")
+    app.add_option("--depth-interp", fc.current.depthInterpolation, "nearest | linear (default) | cubic | akima")
         ->check(CLI::IsMember(kSchemes1D))
         ->group(nc);
     app.add_option_function<std::string>(
-           "--beyond", [&fc](const std::string &v) { fc.horizonPolicy = v == "hold" ? BeyondForecast::HoldLast : BeyondForecast::Refuse; },
+           "--beyond", [&fc](const std::string &v) { fc.current.horizonPolicy = v == "hold" ? BeyondForecast::HoldLast : BeyondForecast::Refuse; },
            "past the last forecast time: refuse (default) | hold (hold the last field)")
         ->check(CLI::IsMember({"refuse", "hold"}))
         ->group(nc);
@@ -443,14 +443,14 @@ void defineFlags(CLI::App &app, Flags &f)
                if (!(p.x >= 0.0 && p.x <= p.y && p.y <= 12000.0))
                    throw UsageError{"--depth-average expects top,bottom in metres with 0 <= top <= bottom <= 12000, "
                                     "got '" + v + "'"};
-               fc.depthAverage = std::make_pair(p.x, p.y);
+               fc.current.depthAverage = std::make_pair(p.x, p.y);
            },
            "plan on the current averaged over the glider's working depth, top,bottom in metres (e.g. 0,200)")
         ->group(nc);
     app.add_option("--depth", f.depth, "depth in metres, positive down, at which the current is read (default 0)")
         ->check(CLI::Range(0.0, 12000.0))
         ->group(nc);
-    app.add_option("--velocity-units", fc.velocityUnits,
+    app.add_option("--velocity-units", fc.current.velocityUnits,
                    "units of u and v in place of the file's (any velocity UDUNITS-2 reads: \"m/s\", \"cm s-1\", "
                    "\"knots\", \"km/h\")")
         ->check(CLI::Validator(
@@ -467,7 +467,7 @@ void defineFlags(CLI::App &app, Flags &f)
             },
             "UNITS"))
         ->group(nc);
-    app.add_option("--time-units", fc.timeUnits,
+    app.add_option("--time-units", fc.current.timeUnits,
                    "units of the time variable in place of the file's, e.g. \"days since 2026-01-15\" (for a time "
                    "axis in \"month\", \"hours\" or without units)")
         ->check(CLI::Validator(
@@ -482,7 +482,7 @@ void defineFlags(CLI::App &app, Flags &f)
             ""))
         ->group(nc);
     app.add_option_function<std::size_t>(
-           "--steady-record", [&fc](std::size_t k) { fc.steadyRecord = k; },
+           "--steady-record", [&fc](std::size_t k) { fc.current.steadyRecord = k; },
            "plan on this time record only (0 the first), as a steady field")
         ->check(CLI::Range(std::size_t(0), std::size_t(1000000000)))
         ->group(nc);
@@ -556,9 +556,9 @@ MissionSpec forecastMissionOf(Flags f)
         throw UsageError{"--currents " + f.currents + ": " + e.what()};
     }
     if (files.size() == 1)
-        f.forecast.file = files.front();
+        f.forecast.current.file = files.front();
     else
-        f.forecast.files = files;
+        f.forecast.current.files = files;
     f.forecast.start = pair("--start", f.start);
     f.forecast.goal = pair("--goal", f.goal);
     f.forecast.departure = f.departure;

@@ -181,7 +181,7 @@ int main(int argc, char **argv)
             if (!opt.problems.empty() && !opt.problems.count(p.name))
                 continue;
             const auto ctx = makeGliderContext(p.problem);
-            const Point2 goal{p.problem.goalX, p.problem.goalY};
+            const Point2 goal{p.problem.goal.x, p.problem.goal.y};
             double ls[3] = {0, 0, 0}, lsSeconds = 0.0, passable = std::numeric_limits<double>::quiet_NaN();
             const double hs[3] = {0.1, 0.05, 0.025};
             for (int k = 0; k < 3; ++k)
@@ -189,7 +189,7 @@ int main(int argc, char **argv)
                 LevelSetParams lp;
                 lp.cellSize = hs[k];
                 const Reachability r =
-                    LevelSetSolver(ctx, lp).solve(p.problem.startX, p.problem.startY, p.problem.t0,
+                    LevelSetSolver(ctx, lp).solve(p.problem.start.x, p.problem.start.y, p.problem.t0,
                                                   p.problem.t0 + p.problem.horizon, goal);
                 ls[k] = r.goalReached ? r.goalTime - p.problem.t0 : std::numeric_limits<double>::infinity();
                 lsSeconds = r.stats.seconds;
@@ -197,7 +197,7 @@ int main(int argc, char **argv)
                 {
                     lp.iceForbidden = false;
                     const Reachability q =
-                        LevelSetSolver(ctx, lp).solve(p.problem.startX, p.problem.startY, p.problem.t0,
+                        LevelSetSolver(ctx, lp).solve(p.problem.start.x, p.problem.start.y, p.problem.t0,
                                                       p.problem.t0 + p.problem.horizon, goal);
                     passable = q.goalReached ? q.goalTime - p.problem.t0 : std::numeric_limits<double>::infinity();
                 }
@@ -208,8 +208,8 @@ int main(int argc, char **argv)
                 ZermeloParams zp;
                 zp.speed = p.problem.travel.speed;
                 zp.maxTime = p.problem.horizon;
-                const ZermeloSolution s = ZermeloReference(field, zp).solve(p.problem.startX, p.problem.startY,
-                                                                            p.problem.goalX, p.problem.goalY,
+                const ZermeloSolution s = ZermeloReference(field, zp).solve(p.problem.start.x, p.problem.start.y,
+                                                                            p.problem.goal.x, p.problem.goal.y,
                                                                             p.problem.t0);
                 if (s.found)
                     shooting = s.travelTime;
@@ -249,10 +249,10 @@ int main(int argc, char **argv)
         b.addExperimentParameter("sectors", "INTEGER", "3");
         b.addExperimentParameter("t0", "REAL", str(p.problem.t0));
         b.addExperimentParameter("horizon", "REAL", str(p.problem.horizon));
-        b.addExperimentParameter("start_x", "REAL", str(p.problem.startX));
-        b.addExperimentParameter("start_y", "REAL", str(p.problem.startY));
-        b.addExperimentParameter("goal_x", "REAL", str(p.problem.goalX));
-        b.addExperimentParameter("goal_y", "REAL", str(p.problem.goalY));
+        b.addExperimentParameter("start_x", "REAL", str(p.problem.start.x));
+        b.addExperimentParameter("start_y", "REAL", str(p.problem.start.y));
+        b.addExperimentParameter("goal_x", "REAL", str(p.problem.goal.x));
+        b.addExperimentParameter("goal_y", "REAL", str(p.problem.goal.y));
         b.addExperimentParameter("regions", "INTEGER", std::to_string(p.environment ? p.environment->size() : 0));
         b.addExperimentParameter("campaign_seed", "INTEGER", std::to_string(opt.seed));
 
@@ -298,7 +298,7 @@ int main(int argc, char **argv)
             if (!path || path->getStateCount() == 0)
                 return;
             const auto *last = path->getStates().back()->as<TimeSE2StateSpace::StateType>();
-            const bool atGoal = std::hypot(last->getX() - pr.goalX, last->getY() - pr.goalY) <= pr.goalTolerance;
+            const bool atGoal = std::hypot(last->getX() - pr.goal.x, last->getY() - pr.goal.y) <= pr.goalTolerance;
             const PathResimulation r = resimulatePath(*ctx, *path, pr.t0);
             const bool reached = exact && atGoal;
             run["reached goal BOOLEAN"] = reached ? "1" : "0";

@@ -86,8 +86,8 @@ int main(int argc, char **argv)
         og::SimpleSetupPtr ss = makeSimpleSetup(p.problem, &ctx);
         js << (firstProblem ? "" : ",") << "\"" << p.name << "\":{";
         firstProblem = false;
-        js << "\"start\":[" << p.problem.startX << "," << p.problem.startY << "],\"goal\":[" << p.problem.goalX << ","
-           << p.problem.goalY << "],\"regions\":[";
+        js << "\"start\":[" << p.problem.start.x << "," << p.problem.start.y << "],\"goal\":[" << p.problem.goal.x << ","
+           << p.problem.goal.y << "],\"regions\":[";
         bool firstRegion = true;
         if (p.environment)
             for (const auto &r : p.environment->regions())

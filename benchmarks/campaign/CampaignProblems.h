@@ -33,10 +33,10 @@ inline GliderProblem campaignBaseProblem(std::shared_ptr<const CurrentField> fie
     GliderProblem p = gulfStreamProblem();
     p.field = std::move(field);
     p.horizon = 40.0;
-    p.startX = 0.6;
-    p.startY = -2.6;
-    p.goalX = 9.4;
-    p.goalY = 2.6;
+    p.start.x = 0.6;
+    p.start.y = -2.6;
+    p.goal.x = 9.4;
+    p.goal.y = 2.6;
     p.goalTolerance = 1e-3;
     return p;
 }

@@ -34,10 +34,10 @@ GliderProblem problem(const std::shared_ptr<const CurrentField> &jet, const Pair
 {
     GliderProblem g;
     g.field = jet;
-    g.startX = p.sx;
-    g.startY = p.sy;
-    g.goalX = p.gx;
-    g.goalY = p.gy;
+    g.start.x = p.sx;
+    g.start.y = p.sy;
+    g.goal.x = p.gx;
+    g.goal.y = p.gy;
     return g;
 }
 

@@ -268,7 +268,7 @@ int main(int argc, char **argv)
     {
         GliderProblem p;
         p.field = jet;
-        p.startX = p.startY = p.goalX = p.goalY = 0.0;
+        p.start.x = p.start.y = p.goal.x = p.goal.y = 0.0;
         auto ctx = makeGliderContext(p);
         TveSearch search(ctx, 0.4, 3);
         const double starts[5][2] = {{0.4, -3.2}, {2.0, -2.4}, {3.2, -1.6}, {4.8, -0.4}, {6.0, 0.4}};
@@ -293,8 +293,8 @@ int main(int argc, char **argv)
         Run tve;
         for (std::size_t c = 0; c < configs.size(); ++c)
         {
-            const Run r = runOnce(search, cp.problem.startX, cp.problem.startY, cp.problem.t0, cp.problem.goalX,
-                                  cp.problem.goalY, configs[c].options);
+            const Run r = runOnce(search, cp.problem.start.x, cp.problem.start.y, cp.problem.t0, cp.problem.goal.x,
+                                  cp.problem.goal.y, configs[c].options);
             if (c == 0)
                 tve = r;
             const std::string name = "campaign " + cp.name;
@@ -307,7 +307,7 @@ int main(int argc, char **argv)
     {
         GliderProblem p;
         p.field = jet;
-        p.startX = p.startY = p.goalX = p.goalY = 0.0;
+        p.start.x = p.start.y = p.goal.x = p.goal.y = 0.0;
         auto ctx = makeGliderContext(p);
         TveSearch search(ctx, 0.4, 3);
         std::mt19937 rng(1);
@@ -366,18 +366,18 @@ int main(int argc, char **argv)
         p.yMin = -20.0;
         p.yMax = 20.0;
         p.horizon = 100.0;
-        p.startX = 2.0;
-        p.startY = -15.0;
-        p.goalX = 40.0;
-        p.goalY = 12.0;
+        p.start.x = 2.0;
+        p.start.y = -15.0;
+        p.goal.x = 40.0;
+        p.goal.y = 12.0;
         auto ctx = makeGliderContext(p);
         const long rss0 = peakRssKb();
         TveSearch search(ctx, griddedGrid, 3);
         std::printf("\nGridded forecast (synthetic, %zu x %zu nodes, %zu times), lattice %ld x %ld = %.2f million "
                     "vertices (grid %g, 3 sectors), (%g, %g) -> (%g, %g); peak RSS before the searches %.0f MB\n\n",
                     field->nx(), field->ny(), field->nt(), search.lattice().nx(), search.lattice().ny(),
-                    1e-6 * double(search.lattice().numGridVertices()), griddedGrid, p.startX, p.startY, p.goalX,
-                    p.goalY, rss0 / 1024.0);
+                    1e-6 * double(search.lattice().numGridVertices()), griddedGrid, p.start.x, p.start.y, p.goal.x,
+                    p.goal.y, rss0 / 1024.0);
         std::printf("| problem | configuration | CFC | CMC | expanded | wall [ms] | travel time | rel. deviation from "
                     "TVE |\n|---|---|---|---|---|---|---|---|\n");
         Run tve;
@@ -386,7 +386,7 @@ int main(int argc, char **argv)
         {
             if (!griddedOnly.empty() && griddedOnly != configs[c].name)
                 continue;
-            const Run r = runOnce(search, p.startX, p.startY, 0.0, p.goalX, p.goalY, configs[c].options);
+            const Run r = runOnce(search, p.start.x, p.start.y, 0.0, p.goal.x, p.goal.y, configs[c].options);
             if (c == 0)
                 tve = r;
             char label[64];
@@ -409,7 +409,7 @@ int main(int argc, char **argv)
         p.yMin = -20.0;
         p.yMax = 20.0;
         p.horizon = 200.0;
-        p.startX = p.startY = p.goalX = p.goalY = 1.0;
+        p.start.x = p.start.y = p.goal.x = p.goal.y = 1.0;
         auto ctx = makeGliderContext(p);
         TveSearch search(ctx, griddedGrid, 3);
         TveOptions c2f, full;

@@ -90,10 +90,10 @@ int main(int argc, char **argv)
     {
         GliderProblem p;
         p.field = jet;
-        p.startX = starts[s][0];
-        p.startY = starts[s][1];
-        p.goalX = gx;
-        p.goalY = gy;
+        p.start.x = starts[s][0];
+        p.start.y = starts[s][1];
+        p.goal.x = gx;
+        p.goal.y = gy;
         std::shared_ptr<GliderContext> ctx;
         auto ss = makeSimpleSetup(p, &ctx);
         for (int c = 0; c < 4; ++c)
@@ -213,8 +213,8 @@ int main(int argc, char **argv)
             }
             TveResult r[3];
             for (int c = 0; c < 3; ++c)
-                r[c] = search.run(cp.problem.startX, cp.problem.startY, cp.problem.t0, cp.problem.goalX,
-                                  cp.problem.goalY, opts[c]);
+                r[c] = search.run(cp.problem.start.x, cp.problem.start.y, cp.problem.t0, cp.problem.goal.x,
+                                  cp.problem.goal.y, opts[c]);
             std::printf("  %-10s %.6f / %.6f / %.6f  (%+.2f %% / %+.2f %%)  CFC %llu / %llu / %llu\n",
                         cp.name.c_str(), r[0].travelTime, r[1].travelTime, r[2].travelTime,
                         100 * (r[1].travelTime / r[0].travelTime - 1), 100 * (r[2].travelTime / r[0].travelTime - 1),
@@ -229,7 +229,7 @@ int main(int argc, char **argv)
         // Robustness: random lattice-aligned pairs, ZA*TVE (same options) against TVE on the same lattice.
         GliderProblem p;
         p.field = jet;
-        p.startX = p.startY = p.goalX = p.goalY = 0.0;
+        p.start.x = p.start.y = p.goal.x = p.goal.y = 0.0;
         auto ctx = makeGliderContext(p);
         TveSearch search(ctx, 0.4, 3);
         TveOptions tve;

@@ -51,7 +51,7 @@ DiveEnd flyHeading(double x, double y, double t, double hx, double hy, double tE
         // the goal reached within this step: the first point of the step within radius (its chord)
         if (s.radius > 0.0)
         {
-            const double ex = nx - x, ey = ny - y, fx = x - s.goalX, fy = y - s.goalY;
+            const double ex = nx - x, ey = ny - y, fx = x - s.goal.x, fy = y - s.goal.y;
             const double a = ex * ex + ey * ey, b = 2.0 * (ex * fx + ey * fy),
                          c = fx * fx + fy * fy - s.radius * s.radius;
             const double disc = b * b - 4.0 * a * c;

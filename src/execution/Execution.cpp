@@ -151,8 +151,8 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         ds.step = o.step;
         ds.depth = o.depth;
         ds.radius = r.reached ? 0.0 : o.radius;
-        ds.goalX = goal.x;
-        ds.goalY = goal.y;
+        ds.goal.x = goal.x;
+        ds.goal.y = goal.y;
         const DiveEnd dive = flyHeading(x, y, t, hx, hy, surface, truth, forbidden, ds, &r.track);
         x = dive.x;
         y = dive.y;

@@ -90,9 +90,9 @@ std::string flagMessage(std::string what, const ForecastInput &q)
 std::vector<std::string> forecastFiles(const ForecastInput &q)
 {
     namespace fs = std::filesystem;
-    if (!q.file.empty() && !q.files.empty())
-        throw Error("ForecastInput: both file and files given; give one of them");
-    const std::vector<std::string> files = q.files.empty() ? std::vector<std::string>{q.file} : q.files;
+    if (!q.current.file.empty() && !q.current.files.empty())
+        throw Error("ForecastInput: both current.file and current.files given; give one of them");
+    const std::vector<std::string> files = q.current.forecastFiles();
     std::error_code ec;
     for (const std::string &p : files)
         if (!fs::is_regular_file(p, ec))
@@ -109,21 +109,11 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
     m.file = file;
     m.directory = ".";
     m.name = fs::path(files.front()).stem().string();
+    m.current = q.current;
     m.current.setType("netcdf");
     m.current.file = files.front();
-    if (files.size() > 1)
-        m.current.files = files;
-    m.current.variables = q.variables;
-    m.current.xyInterpolation = q.xyInterpolation;
-    m.current.depthInterpolation = q.depthInterpolation;
-    m.current.timeInterpolation = q.timeInterpolation;
-    m.current.horizonPolicy = q.horizonPolicy;
-    m.current.zeroVelocityLand = q.zeroVelocityLand;
-    m.current.depthAverage = q.depthAverage;
-    m.current.velocityUnits = q.velocityUnits;
-    m.current.timeUnits = q.timeUnits;
-    m.current.steadyRecord = q.steadyRecord;
-    m.current.mark.file = file;
+    m.current.files = files.size() > 1 ? files : std::vector<std::string>{};
+    m.current.mark = SourceMark{file, 0};
 
     m.marks["start"] = SourceMark{"--start", 0};
     m.marks["goal"] = SourceMark{"--goal", 0};
@@ -274,8 +264,8 @@ void checkEndpoints(const NetCdfCurrents &nc, const ForecastInput &q, const std:
                 add("the mask variable '" + nc.maskVariable + "'");
             if (nc.zeroLandNodes > 0)
                 add("u = v = 0 in every record (--no-zero-land turns this off)");
-            const std::string at = q.depthAverage ? "in the depth average over " + num(q.depthAverage->first) + ".." +
-                                                        num(q.depthAverage->second) +
+            const std::string at = q.current.depthAverage ? "in the depth average over " + num(q.current.depthAverage->first) + ".." +
+                                                        num(q.current.depthAverage->second) +
                                                         " m (land where any depth in it is land or below the sea floor)"
                                                   : "at depth " + num(q.depth) + " m";
             throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") is on land in '" + file +
@@ -292,7 +282,7 @@ void checkDeparture(const NetCdfCurrents &nc, const ForecastInput &q)
     if (!nc.steady && (tDep < nc.forecastBegin || tDep > nc.forecastEnd))
         throw Error("--departure " + q.departure + " is outside the forecast (" + nc.isoTime(nc.forecastBegin) +
                     " to " + nc.isoTime(nc.forecastEnd) + ")");
-    if (!nc.steady && tDep >= nc.forecastEnd && q.horizonPolicy == BeyondForecast::Refuse)
+    if (!nc.steady && tDep >= nc.forecastEnd && q.current.horizonPolicy == BeyondForecast::Refuse)
         throw Error("--departure " + (q.departure.empty() ? std::string("(default)") : q.departure) +
                     " is the last forecast time: no time is left to travel (use an earlier departure or --beyond hold)");
 }

@@ -71,7 +71,7 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     o.timeName = var("time");
     o.maskName = var("mask");
     o.angleName = var("angle");
-    o.zeroVelocityIsLand = c.zeroVelocityLand;
+    o.zeroVelocityLand = c.zeroVelocityLand;
     o.depthAverage = c.depthAverage;
     // the trip's records (land is decided on them): from the departure (or the window's first) to the horizon
     // (only under the 'refuse' policy: with hold_last a departure may lie after the forecast, and then every
@@ -601,10 +601,10 @@ GliderProblem MissionProblem::gliderProblem(double tDep, double speed) const
             horizon = std::min(horizon, field_->timeEnd() - tDep);
     }
     p.horizon = horizon;
-    p.startX = start_.x;
-    p.startY = start_.y;
-    p.goalX = goal_.x;
-    p.goalY = goal_.y;
+    p.start.x = start_.x;
+    p.start.y = start_.y;
+    p.goal.x = goal_.x;
+    p.goal.y = goal_.y;
     if (spec_.goalWindow.set)
     {
         p.arriveNotBefore = spec_.goalWindow.begin;

@@ -175,8 +175,8 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)
         throw Error("GliderProblem: departure time t0 = " + num(p.t0) + " is outside the time span [" +
                     num(p.field->timeBegin()) + ", " + num(p.field->timeEnd()) + ") of the field '" +
                     p.field->name() + "'");
-    checkPoint(p, "start", p.startX, p.startY);
-    checkPoint(p, "goal", p.goalX, p.goalY);
+    checkPoint(p, "start", p.start.x, p.start.y);
+    checkPoint(p, "goal", p.goal.x, p.goal.y);
     if (!(p.goalTolerance >= 0.0) || !std::isfinite(p.goalTolerance))
         throw Error("GliderProblem: goalTolerance must be finite and >= 0 (got " + num(p.goalTolerance) + ")");
 
@@ -212,8 +212,8 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
 {
     if (!ctx)
         throw Error("makeSimpleSetup: the GliderContext is null");
-    checkPoint(p, "start", p.startX, p.startY);
-    checkPoint(p, "goal", p.goalX, p.goalY);
+    checkPoint(p, "start", p.start.x, p.start.y);
+    checkPoint(p, "goal", p.goal.x, p.goal.y);
     const Region &r = ctx->region;
     if (!(p.t0 >= r.tMin && p.t0 <= r.tMax))
         throw Error("makeSimpleSetup: departure time t0 = " + num(p.t0) + " lies outside the context's time window [" +
@@ -226,7 +226,7 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
     auto space = std::make_shared<TimeSE2StateSpace>(b, r.tMin, r.tMax);
     const double vMax = ctx->speed() + ctx->maxCurrent();
     space->setTimeWeight(vMax);
-    const double sx = p.startX, sy = p.startY, t0 = p.t0;  // the start state's time
+    const double sx = p.start.x, sy = p.start.y, t0 = p.t0;  // the start state's time
     space->setStateSamplerAllocator([sx, sy, t0, vMax](const ob::StateSpace *sp) {
         return std::make_shared<GliderStateSampler>(sp, sx, sy, t0, vMax);
     });
@@ -239,13 +239,13 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
     ss->setOptimizationObjective(std::make_shared<TravelTimeObjective>(si, cctx));
 
     ob::ScopedState<TimeSE2StateSpace> start(space);
-    start->setXYT(p.startX, p.startY, p.t0);
+    start->setXYT(p.start.x, p.start.y, p.t0);
     start->setYaw(0.0);
     ss->setStartState(start);
 
-    const double straight = std::hypot(p.goalX - p.startX, p.goalY - p.startY);
+    const double straight = std::hypot(p.goal.x - p.start.x, p.goal.y - p.start.y);
     const double tEarliest = std::min(r.tMax, p.t0 + straight / vMax);
-    ss->setGoal(std::make_shared<PositionGoal>(si, p.goalX, p.goalY, p.goalTolerance, tEarliest, r.tMax));
+    ss->setGoal(std::make_shared<PositionGoal>(si, p.goal.x, p.goal.y, p.goalTolerance, tEarliest, r.tMax));
     return ss;
 }
 }  // namespace ompl_glider

@@ -65,8 +65,8 @@ StintSimulator::StintSimulator(std::shared_ptr<const CurrentField> field, std::s
     dive_.step = settings_.rk4Step();
     dive_.depth = settings_.depth;
     dive_.radius = settings_.radius;
-    dive_.goalX = goal_.x;
-    dive_.goalY = goal_.y;
+    dive_.goal.x = goal_.x;
+    dive_.goal.y = goal_.y;
 }
 
 std::uint64_t StintSimulator::stintsFlown() const

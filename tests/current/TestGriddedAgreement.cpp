@@ -156,10 +156,10 @@ TEST_F(JetGrid, TravelTimesAlongFixedMultiLegPathsAgreeWithinOnePercent)
     {
         GliderProblem gp;
         gp.field = jet;
-        gp.startX = q.sx;
-        gp.startY = q.sy;
-        gp.goalX = q.gx;
-        gp.goalY = q.gy;
+        gp.start.x = q.sx;
+        gp.start.y = q.sy;
+        gp.goal.x = q.gx;
+        gp.goal.y = q.gy;
         gp.t0 = q.t0;
         const TveResult r = TveSearch(makeGliderContext(gp), 0.4, 3).run(q.sx, q.sy, q.t0, q.gx, q.gy, TveOptions{});
         ASSERT_EQ(r.outcome, TveOutcome::Exact);
@@ -202,10 +202,10 @@ TEST_F(JetGrid, ZAStarTvePlansAgreeWithinOnePercent)
                 p.field = std::make_shared<MeanderingJet>();
             else
                 p.field = gridded_->field;
-            p.startX = q.sx;
-            p.startY = q.sy;
-            p.goalX = q.gx;
-            p.goalY = q.gy;
+            p.start.x = q.sx;
+            p.start.y = q.sy;
+            p.goal.x = q.gx;
+            p.goal.y = q.gy;
             std::shared_ptr<GliderContext> ctx;
             auto ss = makeSimpleSetup(p, &ctx);
             auto planner = std::make_shared<ZAStarTVE>(ss->getSpaceInformation(), ctx, "ZA*TVE");

@@ -183,7 +183,7 @@ TEST(NetCdfLand, VelocitiesExactlyZeroAtEveryTimeAreLandByDefault)
     EXPECT_EQ(loadNetCdfCurrents(stillFile).landNodes, 0u);
 
     NetCdfCurrentOptions off;
-    off.zeroVelocityIsLand = false;
+    off.zeroVelocityLand = false;
     const NetCdfCurrents still = loadNetCdfCurrents(path, off);
     EXPECT_EQ(still.landNodes, 0u);
     EXPECT_TRUE(probe(still).block);

@@ -72,10 +72,10 @@ GliderProblem jetProblem(std::shared_ptr<const Environment> env)
     p.field = std::make_shared<MeanderingJet>();
     p.environment = std::move(env);
     p.horizon = 40.0;
-    p.startX = 0.6;
-    p.startY = -2.6;
-    p.goalX = 9.4;
-    p.goalY = 2.6;
+    p.start.x = 0.6;
+    p.start.y = -2.6;
+    p.goal.x = 9.4;
+    p.goal.y = 2.6;
     return p;
 }
 
@@ -233,10 +233,10 @@ TEST(EnvironmentPlanning, RrtStarPathAroundIslandNeverCrossesIt)
     p.field = std::make_shared<UniformCurrent>(0.1, 0.0);
     p.environment = env;
     p.horizon = 60.0;
-    p.startX = 1.0;
-    p.startY = 0.0;
-    p.goalX = 9.0;
-    p.goalY = 0.0;
+    p.start.x = 1.0;
+    p.start.y = 0.0;
+    p.goal.x = 9.0;
+    p.goal.y = 0.0;
     p.goalTolerance = 1e-3;
     std::shared_ptr<GliderContext> ctx;
     og::SimpleSetupPtr ss = makeSimpleSetup(p, &ctx);

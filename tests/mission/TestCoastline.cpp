@@ -209,7 +209,7 @@ TEST(Coastline, RouteGoesAroundJamaicaAndAStartOnItIsBadInput)
     const std::string nc = dir.file("caribbean.nc");
     writeCaribbean(nc);
     ForecastInput in;
-    in.file = nc;
+    in.current.file = nc;
     in.start = {-78.8, 18.2};  // west of Jamaica
     in.goal = {-75.8, 18.1};   // east of it
     in.speed = 0.4;

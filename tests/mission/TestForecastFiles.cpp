@@ -55,11 +55,11 @@ TEST(ForecastFiles, DailyFilesPlanAsTheCombinedFile)
 {
     Files f;
     ForecastInput one = trip();
-    one.file = f.combined;
+    one.current.file = f.combined;
     ForecastInput many = trip();
-    many.files = {f.days[3], f.days[1], f.days[0], f.days[2]};  // any order
+    many.current.files = {f.days[3], f.days[1], f.days[0], f.days[2]};  // any order
     const MissionSpec s1 = forecastMission(one), s2 = forecastMission(many);
-    EXPECT_EQ(s2.current.files, many.files);
+    EXPECT_EQ(s2.current.files, many.current.files);
     EXPECT_EQ(s1.departure.time, s2.departure.time);
     ASSERT_TRUE(s2.fileCalendar);
     EXPECT_EQ(s1.fileCalendar->originSeconds, s2.fileCalendar->originSeconds);

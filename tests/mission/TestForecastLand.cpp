@@ -89,7 +89,7 @@ TEST(ForecastLand, RouteGoesAroundAPeninsulaStoredAsZeroVelocity)
     const std::string file = dir.file("pop_like.nc");
     writePopLike(file);
     ForecastInput in;
-    in.file = file;
+    in.current.file = file;
     in.start = {-79.5, 25.6};  // south-west of the peninsula
     in.goal = {-76.5, 26.4};   // east of it: the straight line crosses it
     in.speed = 0.5;
@@ -120,7 +120,7 @@ TEST(ForecastLand, RouteGoesAroundAPeninsulaStoredAsZeroVelocity)
     }
     // the same file with zero velocities taken as water would let the route cross (the old, unsafe answer)
     ForecastInput water = in;
-    water.zeroVelocityLand = false;
+    water.current.zeroVelocityLand = false;
     const MissionProblem open(forecastMission(water));
     const MissionResult ro = runMission(open);
     ASSERT_TRUE(ro.plan.solved);

@@ -64,7 +64,7 @@ TEST(ForecastModelGrids, RouteAcrossTheIndexSeamOfAWrappingCurvilinearGridGoesRo
     const std::string file = dir.file("wrap.nc");
     grid.write(file);
     ForecastInput in;
-    in.file = file;
+    in.current.file = file;
     in.start = {-44.0, 20.0};
     in.goal = {-27.0, 20.5};
     in.speed = 1.0;
@@ -103,7 +103,7 @@ TEST(ForecastModelGrids, RouteOnARomsCGridGoesRoundItsMaskedIsland)
     const std::string file = dir.file("roms.nc");
     grid.write(file);
     ForecastInput in;
-    in.file = file;
+    in.current.file = file;
     const LonLat s = grid.geo(10, 3), g = grid.geo(10.2, 16);  // the straight line crosses the island (eta 9..11)
     in.start = {s.lon, s.lat};
     in.goal = {g.lon, g.lat};

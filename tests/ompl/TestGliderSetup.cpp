@@ -28,10 +28,10 @@ GliderProblem uniformProblem(double cu, double cv)
 {
     GliderProblem p;
     p.field = std::make_shared<UniformCurrent>(cu, cv);
-    p.startX = 1.0;
-    p.startY = 0.0;
-    p.goalX = 9.0;
-    p.goalY = 0.0;
+    p.start.x = 1.0;
+    p.start.y = 0.0;
+    p.goal.x = 9.0;
+    p.goal.y = 0.0;
     return p;
 }
 
@@ -138,13 +138,13 @@ TEST(GliderSetup, ErrorsNameTheField)
     p.horizon = -5;
     expectError(p, "horizon");
     p = uniformProblem(0.3, 0);
-    p.startX = 11;
+    p.start.x = 11;
     expectError(p, "start");
     p = uniformProblem(0.3, 0);
-    p.goalY = -4.5;
+    p.goal.y = -4.5;
     expectError(p, "goal");
     p = uniformProblem(0.3, 0);
-    p.goalX = std::numeric_limits<double>::quiet_NaN();
+    p.goal.x = std::numeric_limits<double>::quiet_NaN();
     expectError(p, "goal");
     p = uniformProblem(0.3, 0);
     p.xMax = p.xMin;

@@ -37,10 +37,10 @@ GliderProblem jetProblem(double sx, double sy, double gx, double gy)
     p.yMax = 4;
     p.t0 = 0;
     p.horizon = 60;
-    p.startX = sx;
-    p.startY = sy;
-    p.goalX = gx;
-    p.goalY = gy;
+    p.start.x = sx;
+    p.start.y = sy;
+    p.goal.x = gx;
+    p.goal.y = gy;
     return p;
 }
 

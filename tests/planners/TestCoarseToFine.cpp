@@ -74,10 +74,10 @@ std::shared_ptr<const GliderContext> context(std::shared_ptr<const CurrentField>
     p.yMax = 7.5;
     p.horizon = 200.0;
     p.travel.speed = 0.5;
-    p.startX = 1.0;
-    p.startY = 0.0;
-    p.goalX = 19.0;
-    p.goalY = 0.0;
+    p.start.x = 1.0;
+    p.start.y = 0.0;
+    p.goal.x = 19.0;
+    p.goal.y = 0.0;
     return makeGliderContext(p);
 }
 

@@ -57,10 +57,10 @@ TEST(PlannerVsOptimum, MeanderingJetCrossings)
                      std::to_string(row.gx) + ", " + std::to_string(row.gy) + ")");
         GliderProblem prob;
         prob.field = jet;
-        prob.startX = row.sx;
-        prob.startY = row.sy;
-        prob.goalX = row.gx;
-        prob.goalY = row.gy;
+        prob.start.x = row.sx;
+        prob.start.y = row.sy;
+        prob.goal.x = row.gx;
+        prob.goal.y = row.gy;
         std::shared_ptr<GliderContext> ctx;
         auto ss = makeSimpleSetup(prob, &ctx);
         auto planner = std::make_shared<ZAStarTVE>(ss->getSpaceInformation(), ctx, "ZA*TVE");

@@ -24,7 +24,7 @@ GliderProblem jetProblem()
 {
     GliderProblem p;
     p.field = std::make_shared<MeanderingJet>();
-    p.startX = p.startY = p.goalX = p.goalY = 0.0;
+    p.start.x = p.start.y = p.goal.x = p.goal.y = 0.0;
     return p;
 }
 
@@ -201,7 +201,7 @@ TEST(SearchHeuristic, UniformCurrentAgainstTheCurrentIsBoundedByTheSlowSpeed)
     // exactly 0.4 / 0.2 (the fallback box is [-0.3, 0.3]^2, so the bound is 0.4 / 0.8 there).
     GliderProblem p;
     p.field = std::make_shared<UniformCurrent>(0.3, 0.0);
-    p.startX = p.startY = p.goalX = p.goalY = 0.0;
+    p.start.x = p.start.y = p.goal.x = p.goal.y = 0.0;
     auto ctx = makeGliderContext(p);
     Lattice lat(ctx->region.xMin, ctx->region.xMax, ctx->region.yMin, ctx->region.yMax, 0.4, 3);
     LatticeHeuristic hb(lat, *ctx->field, ctx->speed(), 0.0, 0.0, 60.0);

@@ -44,10 +44,10 @@ GliderProblem walledIn()
     p.yMin = -2.0;
     p.yMax = 2.0;
     p.horizon = 40.0;
-    p.startX = 1.0;
-    p.startY = 0.0;
-    p.goalX = 8.0;
-    p.goalY = 0.0;
+    p.start.x = 1.0;
+    p.start.y = 0.0;
+    p.goal.x = 8.0;
+    p.goal.y = 0.0;
     auto env = std::make_shared<ForbiddenRegions>();
     env->add(std::make_shared<TimeWindowedZone>("lane", Polygon::rectangle(3.0, -3.0, 4.0, 3.0, "lane"),
                                                 std::vector<Interval>{{0.0, kT}}));
@@ -173,10 +173,10 @@ TEST(LatticeWaiting, GoalWindowTimedWhereTheGoalCannotBeHeld)
     p.yMin = -2.0;
     p.yMax = 2.0;
     p.horizon = 60.0;
-    p.startX = 1.0;
-    p.startY = 0.0;
-    p.goalX = 8.0;
-    p.goalY = 0.55;
+    p.start.x = 1.0;
+    p.start.y = 0.0;
+    p.goal.x = 8.0;
+    p.goal.y = 0.55;
     std::shared_ptr<GliderContext> free;
     makeSimpleSetup(p, &free);
     TveSearch s0(free, 0.25, 3);
@@ -231,10 +231,10 @@ TEST(LatticeWaiting, CertifiedZAStarTveEqualsTveWithWaitingOnTheJet)
     GliderProblem p;
     p.field = std::make_shared<MeanderingJet>();
     p.horizon = 40.0;
-    p.startX = 0.6;
-    p.startY = -2.6;
-    p.goalX = 9.4;
-    p.goalY = 2.6;
+    p.start.x = 0.6;
+    p.start.y = -2.6;
+    p.goal.x = 9.4;
+    p.goal.y = 2.6;
     auto env = std::make_shared<ForbiddenRegions>();
     env->add(std::make_shared<TimeWindowedZone>("lane", Polygon::rectangle(4.6, -4.0, 5.4, 4.0, "lane"),
                                                 std::vector<Interval>{{0.0, 12.0}}));

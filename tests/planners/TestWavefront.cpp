@@ -95,14 +95,14 @@ TEST(Wavefront, UniformCurrentOnALatticeDirectionGivesTheClosedFormStraightLineT
     // path: the wavefront's arrival is F(goal - start) exactly, with no hold.
     const double cu = 0.2, cv = 0.1, g = 0.4;
     GliderProblem p = uniformProblem(cu, cv);
-    p.startX = 0.8;
-    p.startY = -2.0;  // grid vertex (2, 5)
-    p.goalX = 0.8 + 5 * 3 * g;
-    p.goalY = -2.0 + 5 * 1 * g;  // grid vertex (17, 10)
+    p.start.x = 0.8;
+    p.start.y = -2.0;  // grid vertex (2, 5)
+    p.goal.x = 0.8 + 5 * 3 * g;
+    p.goal.y = -2.0 + 5 * 1 * g;  // grid vertex (17, 10)
     const WaveRun r = runWavefront(p, g, 3, 0.0);
     ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
     EXPECT_TRUE(r.checked);
-    const double exact = straightTime(p.goalX - p.startX, p.goalY - p.startY, cu, cv, 0.5);
+    const double exact = straightTime(p.goal.x - p.start.x, p.goal.y - p.start.y, cu, cv, 0.5);
     EXPECT_NEAR(r.planner->getTravelTime(), exact, 1e-6 * exact);
     EXPECT_DOUBLE_EQ(r.lastStateTime, p.t0 + r.planner->getTravelTime());
     EXPECT_EQ(r.planner->getHoldTime(), 0.0);
@@ -121,10 +121,10 @@ TEST(Wavefront, UniformCurrentOffTheLatticeDirectionsLiesBetweenTheStraightLineA
     // lower bound the straight line F(7g, 2g); upper bound the lattice path of 5 steps (1, 0) and 2 steps (1, 1).
     const double cu = -0.15, cv = 0.2, g = 0.4, V = 0.5;
     GliderProblem p = uniformProblem(cu, cv);
-    p.startX = 1.2;
-    p.startY = -1.2;
-    p.goalX = 1.2 + 7 * g;
-    p.goalY = -1.2 + 2 * g;
+    p.start.x = 1.2;
+    p.start.y = -1.2;
+    p.goal.x = 1.2 + 7 * g;
+    p.goal.y = -1.2 + 2 * g;
     const WaveRun r = runWavefront(p, g, 1, 0.0);
     ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
     EXPECT_TRUE(r.checked);
@@ -148,10 +148,10 @@ TEST(Wavefront, AgreesWithTveOnTheMeanderingJet)
     {
         GliderProblem p;
         p.field = std::make_shared<MeanderingJet>();
-        p.startX = sg[0];
-        p.startY = sg[1];
-        p.goalX = sg[2];
-        p.goalY = sg[3];
+        p.start.x = sg[0];
+        p.start.y = sg[1];
+        p.goal.x = sg[2];
+        p.goal.y = sg[3];
         const WaveRun w = runWavefront(p, g, 2, dt);
         ASSERT_EQ(w.status, ob::PlannerStatus::EXACT_SOLUTION);
         EXPECT_TRUE(w.checked);
@@ -188,10 +188,10 @@ TEST(Wavefront, WaitsOutALaneClosedAroundTheStart)
     p.xMax = 6.0;
     p.yMin = -1.0;
     p.yMax = 1.0;
-    p.startX = 0.4;
-    p.startY = 0.2;
-    p.goalX = 5.2;
-    p.goalY = 0.2;
+    p.start.x = 0.4;
+    p.start.y = 0.2;
+    p.goal.x = 5.2;
+    p.goal.y = 0.2;
     auto env = std::make_shared<ForbiddenRegions>();
     env->add(std::make_shared<TimeWindowedZone>("band", Polygon::rectangle(0.6, -2.0, 1.0, 2.0, "band"),
                                                 std::vector<Interval>{{0.0, 10.0}}));
@@ -247,11 +247,11 @@ TEST(Wavefront, GoalWindowIsMetByHoldingAtTheGoal)
     const double cu = 0.1, cv = 0.05, g = 0.4;
     GliderProblem p = uniformProblem(cu, cv);
     p.t0 = 2.0;
-    p.startX = 1.2;
-    p.startY = 0.0;
-    p.goalX = 1.2 + 4 * 2 * g;
-    p.goalY = 0.0 + 4 * 1 * g;
-    const double T1 = straightTime(p.goalX - p.startX, p.goalY - p.startY, cu, cv, 0.5);
+    p.start.x = 1.2;
+    p.start.y = 0.0;
+    p.goal.x = 1.2 + 4 * 2 * g;
+    p.goal.y = 0.0 + 4 * 1 * g;
+    const double T1 = straightTime(p.goal.x - p.start.x, p.goal.y - p.start.y, cu, cv, 0.5);
     p.arriveNotBefore = p.t0 + T1 + 3.0;
     const WaveRun w = runWavefront(p, g, 3, 0.7);
     ASSERT_EQ(w.status, ob::PlannerStatus::EXACT_SOLUTION);
@@ -264,8 +264,8 @@ TEST(Wavefront, GoalWindowIsMetByHoldingAtTheGoal)
     const TimedPoint &a = wp[wp.size() - 2], &b = wp.back();
     EXPECT_EQ(a.x, b.x);
     EXPECT_EQ(a.y, b.y);
-    EXPECT_NEAR(a.x, p.goalX, 1e-12);
-    EXPECT_NEAR(a.y, p.goalY, 1e-12);
+    EXPECT_NEAR(a.x, p.goal.x, 1e-12);
+    EXPECT_NEAR(a.y, p.goal.y, 1e-12);
     EXPECT_NEAR(a.t, p.t0 + T1, 1e-6 * T1);
     EXPECT_NEAR(w.planner->getHoldTime(), 3.0, 1e-6 * T1);
 
@@ -289,10 +289,10 @@ TEST(Wavefront, GoalWindowThatCannotBeHeldIsMetByTimingTheArrival)
     // before T1 has no solution.
     const double g = 0.4;
     GliderProblem p = uniformProblem(0.6, 0.0);
-    p.startX = 0.4;
-    p.startY = 0.0;
-    p.goalX = 4.4;
-    p.goalY = 0.0;
+    p.start.x = 0.4;
+    p.start.y = 0.0;
+    p.goal.x = 4.4;
+    p.goal.y = 0.0;
     const double T1 = straightTime(4.0, 0.0, 0.6, 0.0, 0.5);
     ASSERT_NEAR(T1, 4.0 / 1.1, 1e-12);
     const WaveRun fastest = runWavefront(p, g, 1, 0.5);
@@ -323,10 +323,10 @@ TEST(Wavefront, GoalWindowThatCannotBeHeldIsMetByTimingTheArrival)
 TEST(Wavefront, ParametersAreDeclaredCheckedAndReachedThroughTheRegistry)
 {
     GliderProblem p = uniformProblem(0.0, 0.0);
-    p.startX = 1.0;
-    p.startY = 0.0;
-    p.goalX = 3.0;
-    p.goalY = 0.0;
+    p.start.x = 1.0;
+    p.start.y = 0.0;
+    p.goal.x = 3.0;
+    p.goal.y = 0.0;
     std::shared_ptr<GliderContext> ctx;
     auto ss = makeSimpleSetup(p, &ctx);
     const PlannerEntry &e = plannerEntry("wavefront");
@@ -389,10 +389,10 @@ TEST(Wavefront, TheTerminationConditionEndsTheSearchWithoutAPath)
 {
     GliderProblem p;
     p.field = std::make_shared<MeanderingJet>();
-    p.startX = 0.0;
-    p.startY = 0.0;
-    p.goalX = 8.0;
-    p.goalY = 2.0;
+    p.start.x = 0.0;
+    p.start.y = 0.0;
+    p.goal.x = 8.0;
+    p.goal.y = 2.0;
     std::shared_ptr<GliderContext> ctx;
     auto ss = makeSimpleSetup(p, &ctx);
     auto w = std::make_shared<Wavefront>(ss->getSpaceInformation(), ctx);

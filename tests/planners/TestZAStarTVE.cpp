@@ -72,10 +72,10 @@ GliderProblem jetProblem(double sx, double sy, double gx, double gy)
 {
     GliderProblem p;
     p.field = std::make_shared<MeanderingJet>();
-    p.startX = sx;
-    p.startY = sy;
-    p.goalX = gx;
-    p.goalY = gy;
+    p.start.x = sx;
+    p.start.y = sy;
+    p.goal.x = gx;
+    p.goal.y = gy;
     return p;
 }
 
@@ -165,10 +165,10 @@ TEST(ZAStarTVE, UniformCurrentGivesClosedFormStraightLineTime)
     const double cu = 0.2, cv = 0.1, V = 0.5;
     GliderProblem p;
     p.field = std::make_shared<UniformCurrent>(cu, cv);
-    p.startX = 0.4;
-    p.startY = -2.0;
-    p.goalX = 6.4;
-    p.goalY = 0.0;
+    p.start.x = 0.4;
+    p.start.y = -2.0;
+    p.goal.x = 6.4;
+    p.goal.y = 0.0;
     const double L = std::hypot(6.0, 2.0);
     const double expected = uniformTime(L, 6.0 / L, 2.0 / L, cu, cv, V);
     for (const char *config : {"TVE", "A*TVE", "ZTVE", "ZA*TVE"})
@@ -192,10 +192,10 @@ TEST(ZAStarTVE, ExactOffGridStartAndGoalAreKept)
 {
     GliderProblem p;
     p.field = std::make_shared<UniformCurrent>(0.2, 0.1);
-    p.startX = 0.53;
-    p.startY = -1.91;
-    p.goalX = 6.27;
-    p.goalY = 0.17;
+    p.start.x = 0.53;
+    p.start.y = -1.91;
+    p.goal.x = 6.27;
+    p.goal.y = 0.17;
     const PlanRun r = plan(p, "ZA*TVE");
     ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
     const auto &w = r.planner->getWaypoints();
@@ -216,10 +216,10 @@ TEST(ZAStarTVE, UnreachableGoalGivesNoSolution)
     // Current of 1.0 eastward, V = 0.5: nothing west of the start can be reached.
     GliderProblem p;
     p.field = std::make_shared<UniformCurrent>(1.0, 0.0);
-    p.startX = 6.0;
-    p.startY = 0.0;
-    p.goalX = 2.0;
-    p.goalY = 0.4;
+    p.start.x = 6.0;
+    p.start.y = 0.0;
+    p.goal.x = 2.0;
+    p.goal.y = 0.4;
     for (const char *config : {"TVE", "A*TVE", "ZTVE", "ZA*TVE"})
     {
         const PlanRun r = plan(p, config);
@@ -333,10 +333,10 @@ TEST(ZAStarTVE, ForbiddenStartGoalAndObstacle)
 {
     GliderProblem p;
     p.field = std::make_shared<UniformCurrent>(0.2, 0.0);
-    p.startX = 1.0;
-    p.startY = 0.0;
-    p.goalX = 9.0;
-    p.goalY = 0.0;
+    p.start.x = 1.0;
+    p.start.y = 0.0;
+    p.goal.x = 9.0;
+    p.goal.y = 0.0;
     // Obstacle across the straight line.
     p.environment = std::make_shared<DiskEnvironment>(5.0, 0.0, 1.0);
     const PlanRun r = plan(p, "ZA*TVE");

@@ -34,10 +34,10 @@ std::shared_ptr<GliderContext> context(std::shared_ptr<const CurrentField> field
     p.yMax = y1;
     p.horizon = horizon;
     p.environment = std::move(env);
-    p.startX = 0.5 * (x0 + x1);
-    p.startY = 0.5 * (y0 + y1);
-    p.goalX = p.startX;
-    p.goalY = p.startY;
+    p.start.x = 0.5 * (x0 + x1);
+    p.start.y = 0.5 * (y0 + y1);
+    p.goal.x = p.start.x;
+    p.goal.y = p.start.y;
     return makeGliderContext(p);
 }
 

@@ -60,10 +60,10 @@ double latticeTime(const GliderProblem &p)
 TEST(LevelSetPlanner, JetAndIslandsGiveCheckedPathsNoSlowerThanRefinedLattice)
 {
     GliderProblem p = gulfStreamProblem();
-    p.startX = 0.6;
-    p.startY = -2.6;
-    p.goalX = 9.4;
-    p.goalY = 2.6;
+    p.start.x = 0.6;
+    p.start.y = -2.6;
+    p.goal.x = 9.4;
+    p.goal.y = 2.6;
     p.horizon = 40.0;
     for (int withIslands = 0; withIslands < 2; ++withIslands)
     {
@@ -102,10 +102,10 @@ TEST(LevelSetPlanner, WaitsOutAClosedLaneAndReportsNoPathWhenWalledIn)
     p.yMin = -4;
     p.yMax = 4;
     p.horizon = 40;
-    p.startX = 1;
-    p.startY = 0;
-    p.goalX = 8;
-    p.goalY = 0;
+    p.start.x = 1;
+    p.start.y = 0;
+    p.goal.x = 8;
+    p.goal.y = 0;
     auto env = std::make_shared<ForbiddenRegions>();
     env->add(std::make_shared<StaticRegion>("north", Polygon::rectangle(3.0, 0.5, 3.5, 5.0, "north"), "island"));
     env->add(std::make_shared<StaticRegion>("south", Polygon::rectangle(3.0, -5.0, 3.5, -0.5, "south"), "island"));

@@ -53,7 +53,7 @@ struct NetCdfCurrentOptions
 
     // --- land (besides fill values of u/v, which are always land) ---
     std::string maskName;  ///< land/sea mask variable; empty: found automatically (loadNetCdfCurrents()); "none": none
-    bool zeroVelocityIsLand{true};  ///< a node whose u and v are exactly 0 in every record of the trip is land (models
+    bool zeroVelocityLand{true};  ///< a node whose u and v are exactly 0 in every record of the trip is land (models
                                     ///< such as POP store land velocity points as zeros, not fill values)
 
     // --- model ---
@@ -108,7 +108,7 @@ struct NetCdfCurrents
     std::size_t landNodes{0};        ///< loaded nodes (x depth layers) that are land, for any of the reasons:
     std::size_t fillLandNodes{0};    ///<   u or v a fill value in some record of the trip
     std::size_t maskLandNodes{0};    ///<   land in the mask (in some record of the trip, for a mask with a time axis)
-    std::size_t zeroLandNodes{0};    ///<   u = v = 0 exactly in every record of the trip (zeroVelocityIsLand)
+    std::size_t zeroLandNodes{0};    ///<   u = v = 0 exactly in every record of the trip (zeroVelocityLand)
     /// Bounds of the loaded nodes in the file's coordinates: longitudes from lonMin in [-180, 180) east to lonMax
     /// (beyond 180 when the nodes cross the antimeridian), latitudes; x and y in Cartesian mode (file units).
     double lonMin{0.0}, lonMax{0.0}, latMin{0.0}, latMax{0.0};
@@ -149,7 +149,7 @@ struct NetCdfCurrents
 ///
 /// Land, per node and depth layer, is the union of: u or v a fill value in any of the trip's records; land in a
 /// mask variable (below), in any of the trip's records when the mask has the time axis of u; u = v = 0 exactly in
-/// all of the trip's records (NetCdfCurrentOptions::zeroVelocityIsLand, on by default; not applied when every
+/// all of the trip's records (NetCdfCurrentOptions::zeroVelocityLand, on by default; not applied when every
 /// water node would be zero, a still field, nor to packed data seen in a single record, where rounding can zero a
 /// calm node). The trip's records are
 /// those from the last at or before the departure to the first at or after departure + horizon (not the stencil
@@ -266,7 +266,7 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const std::string &ti
 ///   step (the median step of the joined axis) is refused, naming both files and the dates: interpolating across
 ///   a missing day is not what a pilot expects. Gaps outside the trip's records do not matter.
 /// - Land: a node is land when it is land in any file's records of the trip (fill values, a mask); zero-velocity
-///   land (NetCdfCurrentOptions::zeroVelocityIsLand) is decided on all the trip's records of all files, after the
+///   land (NetCdfCurrentOptions::zeroVelocityLand) is decided on all the trip's records of all files, after the
 ///   mask.
 /// One path: exactly loadNetCdfCurrents(path, options).
 /// @throws Error naming the file(s) for: no file; a file without time dimension or without dated time axis

@@ -26,8 +26,7 @@ struct DiveSettings
     double step{0.01};   ///< RK4 step (time units)
     double depth{0.0};   ///< depth at which the currents are read (m)
     double radius{0.0};  ///< > 0: the dive ends when the goal is within this distance
-    double goalX{0.0};   ///< goal x (used when radius > 0)
-    double goalY{0.0};   ///< goal y
+    Point2 goal;         ///< goal (used when radius > 0)
 };
 
 /// @brief Where a dive ended and why.

@@ -20,21 +20,11 @@ namespace ompl_glider
 /// @brief What a forecast mission needs beyond the pipeline's settings.
 struct ForecastInput
 {
-    std::string file;                              ///< the NetCDF forecast (one file)
-    /// a forecast in several files read as one (loadNetCdfCurrents() on a list: any order, ordered by their
-    /// dates); when given, `file` must be empty
-    std::vector<std::string> files;
-    std::map<std::string, std::string> variables;  ///< role (u, v, lon, lat, depth, time, mask) -> variable name
-    std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic
-    std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima
-    std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
-    BeyondForecast horizonPolicy{BeyondForecast::Refuse};  ///< beyond the last forecast time (--beyond)
-    std::string velocityUnits;  ///< overrides the units of u and v (NetCdfCurrentOptions::velocityUnits)
-    std::string timeUnits;      ///< overrides the units of the time variable (NetCdfCurrentOptions::timeUnits)
-    std::optional<std::size_t> steadyRecord;  ///< plan on this time record only, as a steady field
+    /// The forecast as a mission file's `current` section describes it (type netcdf): `file` (one file) or `files`
+    /// (several read as one, ordered by their dates; then `file` must be empty), variables, interpolation, horizon
+    /// policy, unit overrides, steady record, zero-velocity land, depth average. The mission takes it as it is.
+    CurrentSpec current;
     double depth{0.0};                             ///< depth (m, positive down) at which the current is read
-    bool zeroVelocityLand{true};                   ///< u = v = 0 at every loaded time is land (CurrentSpec)
-    std::optional<std::pair<double, double>> depthAverage;  ///< current averaged over [top, bottom] m (CurrentSpec)
     Point2 start;  ///< start: lon,lat (x = lon, y = lat; longitude in -180..180 or 0..360, whatever the file's
                    ///< convention) for a geographic file, x,y for a Cartesian one
     Point2 goal;   ///< goal, as start

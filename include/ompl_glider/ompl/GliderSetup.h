@@ -9,6 +9,7 @@
 #include <ompl/geometric/SimpleSetup.h>
 
 #include "ompl_glider/cost/TravelTimeCalculator.h"
+#include "ompl_glider/Geometry.h"
 #include "ompl_glider/ompl/GliderContext.h"
 
 namespace ompl_glider
@@ -24,10 +25,10 @@ struct GliderProblem
     double xMin{0.0}, xMax{10.0}, yMin{-4.0}, yMax{4.0};  ///< planning box
     double t0{0.0};                                       ///< departure time
     double horizon{60.0};                                 ///< the time window is [t0, t0 + horizon]
-    double startX{std::numeric_limits<double>::quiet_NaN()};
-    double startY{std::numeric_limits<double>::quiet_NaN()};
-    double goalX{std::numeric_limits<double>::quiet_NaN()};
-    double goalY{std::numeric_limits<double>::quiet_NaN()};
+    /// start position (NaN until set: makeSimpleSetup() refuses an unset start)
+    Point2 start{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    /// goal position (NaN until set)
+    Point2 goal{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
     double goalTolerance{1e-3};  ///< xy distance within which the goal counts as reached
     /// Arrival window at the goal (absolute times; GliderContext::arriveNotBefore / arriveNotAfter). Unbounded
     /// by default.
@@ -85,7 +86,7 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &problem);
 
 /// @brief A ready SimpleSetup: TimeSE2StateSpace over the box and [t0, t0 + horizon] with time weight V + max|c|
 /// and GliderStateSampler as its state sampler (no samples earlier than reachable from the start),
-/// GliderStateValidityChecker, TravelTimeMotionValidator, TravelTimeObjective, start state (startX, startY, t0,
+/// GliderStateValidityChecker, TravelTimeMotionValidator, TravelTimeObjective, start state (start, t0,
 /// yaw 0) and a PositionGoal whose sampled times lie in [t0 + |start - goal| / (V + max|c|), t0 + horizon].
 /// No planner is set (SimpleSetup picks OMPL's default unless setPlanner() is called). The returned object is a
 /// GliderSimpleSetup: a start or goal inside a forbidden region is not an error here, solve() reports

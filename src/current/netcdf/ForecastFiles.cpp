@@ -210,7 +210,7 @@ bool isPacked(const ForecastPiece &p)
     return pu.scale != 1.0 || pu.offset != 0.0 || pv.scale != 1.0 || pv.offset != 0.0;
 }
 
-/// NetCdfCurrentOptions::zeroVelocityIsLand on the joined records (the rule of the single-file reader, decided on
+/// NetCdfCurrentOptions::zeroVelocityLand on the joined records (the rule of the single-file reader, decided on
 /// all of the trip's records of all files, after the mask): returns the nodes it made land.
 std::size_t zeroVelocityLand(GriddedData &g, const AxisSelection &t, bool packed)
 {
@@ -388,7 +388,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
     }
     // each file read with the same stages and options; zero-velocity land is decided below, on all the records
     NetCdfCurrentOptions o = opt;
-    o.zeroVelocityIsLand = false;
+    o.zeroVelocityLand = false;
     // joined along time as they are read (internal order t, z, y, x: records are appended); land in any file's
     // trip records is land
     ForecastPiece p;
@@ -429,7 +429,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
         out.fillLandNodes += !p.fillWater[n];
         out.maskLandNodes += p.fillWater[n] && !g.water[n];
     }
-    if (opt.zeroVelocityIsLand)
+    if (opt.zeroVelocityLand)
         out.zeroLandNodes = zeroVelocityLand(g, sel, packed);
     out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
     // as after the mask stage of one file: a land node keeps no velocity in any record

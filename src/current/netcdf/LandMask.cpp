@@ -1,6 +1,6 @@
 // Reading the velocities and the land: u and v over the hyperslab plan, unpacked to m/s; a node (per depth layer)
 // is land where u or v is a fill value (or outside the valid range, or NaN) in a record of the trip, where a
-// land/sea mask variable says land, and (NetCdfCurrentOptions::zeroVelocityIsLand) where u = v = 0 exactly in
+// land/sea mask variable says land, and (NetCdfCurrentOptions::zeroVelocityLand) where u = v = 0 exactly in
 // every record of the trip. The rules of the mask variable are documented at loadNetCdfCurrents() (NetCdfCurrents.h).
 #include <algorithm>
 #include <cmath>
@@ -279,7 +279,7 @@ void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan,
     readScatter(f, l.uVar, plan.reads, plan.stride, ru);
     readScatter(f, l.vVar, plan.reads, plan.stride, rv);
     const Packing pu = packingOf(f, l.uVar), pv = packingOf(f, l.vVar);
-    unpackAndMask(ru, rv, pu, pv, vel, opt.zeroVelocityIsLand, t, g, out);
+    unpackAndMask(ru, rv, pu, pv, vel, opt.zeroVelocityLand, t, g, out);
 }
 
 void applyLandMask(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,

@@ -335,7 +335,7 @@ void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv,
                    const Packing &pv, const LinearConversion &vel, bool zeroIsLand, const AxisSelection &t,
                    GriddedData &g, NetCdfCurrents &out);
 /// Reads u and v over the plan into g.u / g.v (unpacked, converted to m/s by vel) and g.water (land where u or v is a fill value at
-/// any of the trip's records (t.inTrip()), or, with opt.zeroVelocityIsLand, where both are exactly 0 at all of
+/// any of the trip's records (t.inTrip()), or, with opt.zeroVelocityLand, where both are exactly 0 at all of
 /// them; counted in
 /// out.fillLandNodes / out.zeroLandNodes). g.nx, g.ny, g.depth and g.time must be set.
 void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,

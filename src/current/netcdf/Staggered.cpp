@@ -124,7 +124,7 @@ void readStaggeredVelocities(const NcFile &f, const Layout &l, const HorizontalS
     for (std::size_t it = 0; it < t.idx.size(); ++it)
         tripRecords += t.inTrip(it);
     const bool packed = pu.scale != 1.0 || pu.offset != 0.0 || pv.scale != 1.0 || pv.offset != 0.0;
-    unpackAndMask(au, av, Packing{}, Packing{}, LinearConversion{}, opt.zeroVelocityIsLand && !(packed && tripRecords < 2),
+    unpackAndMask(au, av, Packing{}, Packing{}, LinearConversion{}, opt.zeroVelocityLand && !(packed && tripRecords < 2),
                   t, g, out);
 }
 
