@@ -426,7 +426,7 @@ void defineFlags(CLI::App &app, Flags &f)
         ->check(CLI::IsMember(kSchemes1D))
         ->group(nc);
     app.add_option_function<std::string>(
-           "--beyond", [&fc](const std::string &v) { fc.current.horizonPolicy = v == "hold" ? BeyondForecast::HoldLast : BeyondForecast::Refuse; },
+           "--beyond", [&fc](const std::string &v) { fc.current.horizonPolicy = parseBeyondForecast(v); },
            "past the last forecast time: refuse (default) | hold (hold the last field)")
         ->check(CLI::IsMember({"refuse", "hold"}))
         ->group(nc);

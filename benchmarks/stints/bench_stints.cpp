@@ -89,7 +89,7 @@ MissionSpec jetMission(const Pair &p, double speedMs)
     m.name = "stints_jet";
     m.lengthUnitMetres = kLengthUnit;
     m.timeUnitSeconds = kTimeUnit;
-    m.current.setType("meandering_jet");
+    m.current.type = "meandering_jet";
     m.region.set = true;
     m.region.xMin = -5;
     m.region.xMax = 45;
@@ -241,7 +241,7 @@ MissionSpec forecastMission(const Pair &p, double speedMs, const std::string &fi
     MissionSpec m;
     m.file = "<bench_stints>";
     m.name = "stints_forecast";
-    m.current.setType("netcdf");
+    m.current.type = "netcdf";
     m.current.file = file;
     m.current.variables = {{"x", "x"}, {"y", "y"}};
     m.start.x = p.start.x;

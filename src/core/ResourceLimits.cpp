@@ -1,5 +1,5 @@
-// The memory limit of a planning run (ResourceLimits.h). It lives with the current fields, the lowest layer,
-// because the forecast reader is the first to need it.
+// The memory limit of a planning run (ResourceLimits.h), a top-level header every layer may use: the forecast
+// reader and the lattice ask it before they allocate.
 #include "ompl_glider/ResourceLimits.h"
 
 #include <sys/resource.h>

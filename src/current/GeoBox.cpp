@@ -14,10 +14,6 @@ namespace
 {
 constexpr double kDeg = M_PI / 180.0;
 
-std::string num(double v)
-{
-    return text::number(v, 10);
-}
 }  // namespace
 
 double GeoBox::unwrap(double lon) const
@@ -37,7 +33,7 @@ bool GeoBox::contains(LonLat p) const
 
 std::string GeoBox::text() const
 {
-    return "lon " + num(lonMin) + ".." + num(lonMax) + ", lat " + num(latMin) + ".." + num(latMax);
+    return "lon " + text::number(lonMin) + ".." + text::number(lonMax) + ", lat " + text::number(latMin) + ".." + text::number(latMax);
 }
 
 std::optional<RegionFault> regionFault(double lonMin, double latMin, double lonMax, double latMax)
@@ -46,22 +42,22 @@ std::optional<RegionFault> regionFault(double lonMin, double latMin, double lonM
         {"lon_min", lonMin}, {"lat_min", latMin}, {"lon_max", lonMax}, {"lat_max", latMax}};
     for (const auto &[bound, v] : values)
         if (!std::isfinite(v))
-            return RegionFault{bound, "must be a finite number (got " + num(v) + ")"};
+            return RegionFault{bound, "must be a finite number (got " + text::number(v) + ")"};
     for (const auto &[bound, v] : {values[0], values[2]})
         if (v < -180.0 || v > 360.0)
-            return RegionFault{bound, num(v) + " is not a longitude in -180..180 or 0..360"};
+            return RegionFault{bound, text::number(v) + " is not a longitude in -180..180 or 0..360"};
     for (const auto &[bound, v] : {values[1], values[3]})
         if (v < -90.0 || v > 90.0)
-            return RegionFault{bound, num(v) + " is not a latitude in -90..90"};
+            return RegionFault{bound, text::number(v) + " is not a latitude in -90..90"};
     if (!(latMax > latMin))
-        return RegionFault{"lat_max", num(latMax) + " must be > lat_min " + num(latMin)};
+        return RegionFault{"lat_max", text::number(latMax) + " must be > lat_min " + text::number(latMin)};
     if (lonMax == lonMin)
-        return RegionFault{"lon_max", num(lonMax) + " equals lon_min: the region has no width"};
+        return RegionFault{"lon_max", text::number(lonMax) + " equals lon_min: the region has no width"};
     if (lonMax - lonMin >= 360.0)
-        return RegionFault{"lon_max", "the region " + num(lonMin) + ".." + num(lonMax) + " is " +
-                                          num(lonMax - lonMin) + " degrees wide; it must be less than 360"};
+        return RegionFault{"lon_max", "the region " + text::number(lonMin) + ".." + text::number(lonMax) + " is " +
+                                          text::number(lonMax - lonMin) + " degrees wide; it must be less than 360"};
     if (lonMax < lonMin && lonMax - lonMin + 360.0 <= 0.0)
-        return RegionFault{"lon_max", num(lonMax) + " lies a whole turn or more west of lon_min " + num(lonMin) +
+        return RegionFault{"lon_max", text::number(lonMax) + " lies a whole turn or more west of lon_min " + text::number(lonMin) +
                                           " (lon_max < lon_min means eastward across the antimeridian)"};
     return std::nullopt;
 }
@@ -92,7 +88,7 @@ GeoBox tripBox(const std::vector<LonLat> &points, double marginKm)
     if (points.empty())
         throw Error("tripBox: no points");
     if (!(marginKm >= 0.0) || !std::isfinite(marginKm))
-        throw Error("tripBox: the margin must be finite and >= 0 km (got " + num(marginKm) + ")");
+        throw Error("tripBox: the margin must be finite and >= 0 km (got " + text::number(marginKm) + ")");
     std::vector<double> lons;
     GeoBox b;
     b.latMin = 90.0;
@@ -100,11 +96,11 @@ GeoBox tripBox(const std::vector<LonLat> &points, double marginKm)
     for (const LonLat &p : points)
     {
         if (!std::isfinite(p.lon) || !std::isfinite(p.lat) || std::abs(p.lat) > 90.0)
-            throw Error("(" + num(p.lon) + ", " + num(p.lat) + ") is not a longitude/latitude");
+            throw Error("(" + text::number(p.lon) + ", " + text::number(p.lat) + ") is not a longitude/latitude");
         if (std::abs(p.lat) > kMaxGridLatitude)
-            throw Error("latitude " + num(p.lat) + " is within " + num(90.0 - kMaxGridLatitude) +
+            throw Error("latitude " + text::number(p.lat) + " is within " + text::number(90.0 - kMaxGridLatitude) +
                         " degrees of a pole, where a longitude/latitude grid degenerates (|lat| <= " +
-                        num(kMaxGridLatitude) + " is planned)");
+                        text::number(kMaxGridLatitude) + " is planned)");
         lons.push_back(normalizeLongitude(p.lon));
         b.latMin = std::min(b.latMin, p.lat);
         b.latMax = std::max(b.latMax, p.lat);

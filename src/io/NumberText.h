@@ -8,8 +8,9 @@
 
 namespace ompl_glider::text
 {
-/// @brief @p v with @p digits significant digits, printf's "%.<digits>g" (number(0.1, 10) is "0.1").
-inline std::string number(double v, int digits)
+/// @brief @p v with @p digits significant digits, printf's "%.<digits>g" (number(0.1) is "0.1"); 17 digits give
+/// back the same double when read.
+inline std::string number(double v, int digits = 10)
 {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*g", digits, v);

@@ -22,10 +22,6 @@ namespace ompl_glider
 {
 namespace
 {
-std::string num(double v)
-{
-    return text::number(v, 10);
-}
 }  // namespace
 
 namespace
@@ -47,7 +43,7 @@ std::string pointText(double a, double b)
 
 std::string regionText(const std::array<double, 4> &r)
 {
-    return num(r[0]) + "," + num(r[1]) + "," + num(r[2]) + "," + num(r[3]);
+    return text::number(r[0]) + "," + text::number(r[1]) + "," + text::number(r[2]) + "," + text::number(r[3]);
 }
 /// The reader's message in the command line's words: its option fields become the flags, and a departure or
 /// region fault is prefixed with the flags that gave it.
@@ -110,7 +106,7 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
     m.directory = ".";
     m.name = fs::path(files.front()).stem().string();
     m.current = q.current;
-    m.current.setType("netcdf");
+    m.current.type = "netcdf";
     m.current.file = files.front();
     m.current.files = files.size() > 1 ? files : std::vector<std::string>{};
     m.current.mark = SourceMark{file, 0};
@@ -146,10 +142,10 @@ void checkLonLat(const ForecastInput &q)
     for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
     {
         if (p.x < -180.0 || p.x > 360.0)
-            throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": longitude " + num(p.x) +
+            throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": longitude " + text::number(p.x) +
                         " is not in -180..180 or 0..360");
         if (std::abs(p.y) > 90.0)
-            throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": latitude " + num(p.y) +
+            throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": latitude " + text::number(p.y) +
                         " is not in -90..90");
     }
 }
@@ -237,8 +233,8 @@ void checkEndpoints(const NetCdfCurrents &nc, const ForecastInput &q, const std:
     const GriddedCurrentField &g = *nc.field;
     // (Above the first layer is the surface layer's value, as forecasts put their first layer just below it.)
     if (g.nz() > 1 && q.depth > g.depthAxis().back())
-        throw Error("--depth " + num(q.depth) + " m lies below the deepest layer of '" + file + "' (" +
-                    num(g.depthAxis().back()) + " m)");
+        throw Error("--depth " + text::number(q.depth) + " m lies below the deepest layer of '" + file + "' (" +
+                    text::number(g.depthAxis().back()) + " m)");
     const Point2 start = nc.toLocal({q.start.x, q.start.y});
     const Point2 goal = nc.toLocal({q.goal.x, q.goal.y});
     for (const auto &[flag, a, b, x, y] :
@@ -250,8 +246,8 @@ void checkEndpoints(const NetCdfCurrents &nc, const ForecastInput &q, const std:
         {
             // the loaded nodes' own bounds, in the file's coordinates (longitudes from west to east)
             throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") lies outside the grid of '" +
-                        file + "' (" + (geographic ? "lon " : "x ") + num(nc.lonMin) + ".." + num(nc.lonMax) +
-                        (geographic ? ", lat " : ", y ") + num(nc.latMin) + ".." + num(nc.latMax) + ")");
+                        file + "' (" + (geographic ? "lon " : "x ") + text::number(nc.lonMin) + ".." + text::number(nc.lonMax) +
+                        (geographic ? ", lat " : ", y ") + text::number(nc.latMin) + ".." + text::number(nc.latMax) + ")");
         }
         if (!g.inWater(x, y, q.depth))
         {
@@ -264,10 +260,10 @@ void checkEndpoints(const NetCdfCurrents &nc, const ForecastInput &q, const std:
                 add("the mask variable '" + nc.maskVariable + "'");
             if (nc.zeroLandNodes > 0)
                 add("u = v = 0 in every record (--no-zero-land turns this off)");
-            const std::string at = q.current.depthAverage ? "in the depth average over " + num(q.current.depthAverage->first) + ".." +
-                                                        num(q.current.depthAverage->second) +
+            const std::string at = q.current.depthAverage ? "in the depth average over " + text::number(q.current.depthAverage->first) + ".." +
+                                                        text::number(q.current.depthAverage->second) +
                                                         " m (land where any depth in it is land or below the sea floor)"
-                                                  : "at depth " + num(q.depth) + " m";
+                                                  : "at depth " + text::number(q.depth) + " m";
             throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") is on land in '" + file +
                         "' " + at + (why.empty() ? "" : "; the forecast's land is where it has " + why));
         }

@@ -277,7 +277,7 @@ MissionSpec defaultGulfStreamMission()
     MissionSpec m;
     m.file = "<built-in>";
     m.name = "gulf_stream";
-    m.current.setType("meandering_jet");
+    m.current.type = "meandering_jet";
     m.region.set = true;
     m.region.xMin = 0;
     m.region.xMax = 10;

@@ -36,11 +36,6 @@ namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-std::string num(double v)
-{
-    return text::number(v, 10);
-}
-
 std::string where(const MissionSpec &m, const SourceMark &mark = {})
 {
     if (!mark.file.empty() && mark.line > 0)
@@ -80,11 +75,7 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     if (std::isfinite(departure) && departure >= 0.0 && c.horizonPolicy == BeyondForecast::Refuse)
     {
         if (departure > 0.0)
-        {
-            char text[40];
-            std::snprintf(text, sizeof text, "%.17g", departure);
-            o.departure = text;
-        }
+            o.departure = text::number(departure, 17);
         if (m.planner.horizon > 0.0)
             o.horizon = std::max(m.planner.horizon, m.stints.set ? m.stints.missionDuration : 0.0) +
                         (m.departure.window ? m.departure.end - m.departure.begin : 0.0);
@@ -122,10 +113,10 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
         const LonLat a{m.start.lon, m.start.lat}, b{m.goal.lon, m.goal.lat};
         for (const auto &[field, p] : {std::pair<const char *, LonLat>{"start", a}, {"goal", b}})
             if (std::abs(p.lat) > kMaxGridLatitude && std::abs(p.lat) <= 90.0)
-                throw Error(m.place(field) + ": latitude " + num(p.lat) + " is within " +
-                            num(90.0 - kMaxGridLatitude) +
+                throw Error(m.place(field) + ": latitude " + text::number(p.lat) + " is within " +
+                            text::number(90.0 - kMaxGridLatitude) +
                             " degrees of a pole, where a longitude/latitude grid degenerates (|lat| <= " +
-                            num(kMaxGridLatitude) + " can be planned)");
+                            text::number(kMaxGridLatitude) + " can be planned)");
         const GeoBox box = tripBox({a, b}, tripMarginKm(a, b));
         o.lonMin = box.lonMin;
         o.lonMax = box.lonMax;
@@ -374,7 +365,7 @@ void MissionProblem::buildBox()
         region.latMax = m.region.latMax;
         for (const auto &[name, p] : {std::pair<const char *, const PointSpec *>{"start", &m.start}, {"goal", &m.goal}})
             if (p->geographic && !region.contains({p->lon, p->lat}))
-                throw Error(m.place(name) + ": lon,lat " + num(p->lon) + "," + num(p->lat) +
+                throw Error(m.place(name) + ": lon,lat " + text::number(p->lon) + "," + text::number(p->lat) +
                             " lies outside the region (" + m.place("region") + ": " + region.text() + ")");
         // The planning box: the projected bounding box of the region's outline, sampled along its four edges at
         // least every degree (a parallel bows in the plane).

@@ -31,12 +31,4 @@ std::optional<OutputFormatId> outputFormatByName(const std::string &name)
             return format.id;
     return std::nullopt;
 }
-
-const std::string &outputFormatName(OutputFormatId id)
-{
-    for (const OutputFormat &format : outputFormats())
-        if (format.id == id)
-            return format.name;
-    return outputFormats().front().name;  // unreachable: the table lists every id
-}
 }  // namespace ompl_glider

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "../io/NumberText.h"
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ResourceLimits.h"
@@ -124,10 +125,11 @@ ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::ba
     // The lattice planners (LatticePlanner) declare grid_size and sectors, ZAStarTVE also smooth and refine: set by
     // name through OMPL's ParamSet. The pipeline smooths and refines every planner's path alike, so the planner's own
     // smoothing and refinement are off.
-    char gridText[32];
-    std::snprintf(gridText, sizeof gridText, "%.17g", grid);  // round-trips the double exactly
     const std::pair<const char *, std::string> settings[] = {
-        {"grid_size", gridText}, {"sectors", std::to_string(sectors)}, {"smooth", "0"}, {"refine", "0"}};
+        {"grid_size", text::number(grid, 17)},  // 17 digits: the same double back
+        {"sectors", std::to_string(sectors)},
+        {"smooth", "0"},
+        {"refine", "0"}};
     ompl::base::ParamSet &params = planner->params();
     for (const auto &[name, value] : settings)
         if (params.hasParam(name) && !params.setParam(name, value))

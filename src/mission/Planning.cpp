@@ -32,7 +32,6 @@ namespace
 /// distance), over a mission long enough to arrive (1.5 times the path's time plus one stint, within the forecast).
 StintOutcome convertToStints(const MissionProblem &problem, const PlannedPath &r)
 {
-    const MissionSpec &m = problem.getSpec();
     StintSettings s = stintSettings(problem, r.departure);
     s.objective = StintObjective::EarliestArrival;
     if (!(s.radius > 0.0))
@@ -58,7 +57,6 @@ StintOutcome convertToStints(const MissionProblem &problem, const PlannedPath &r
     o.pathTravelTime = c.pathTravelTime;
     o.stintTravelTime = c.stintTravelTime;
     o.loss = c.loss;
-    (void)m;
     return o;
 }
 

@@ -115,7 +115,7 @@ void writeExecutionPlot(const std::string &path, const ExecutionResult &e, const
 {
     const bool metric = m.physicalUnits().length;
     const bool hours = m.physicalUnits().time;
-    const double lengthScale = metric ? m.lengthUnitMetres / 1000.0 : 1.0;
+    const double lengthScale = metric ? m.metresPerUnit() / 1000.0 : 1.0;
     const double timeScale = hours ? m.timeUnitSeconds / 3600.0 : 1.0;
     const std::string lengthAxis = metric ? "km" : "length units";
     const std::string timeAxis = hours ? "h" : "time units";

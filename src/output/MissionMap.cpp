@@ -73,7 +73,7 @@ std::string length(const MissionResult &r, double d)
     if (!r.spec.physicalUnits().length)
         return fmt(d);
     char buf[48];
-    std::snprintf(buf, sizeof buf, "%.1f km", d * r.spec.lengthUnitMetres / 1000.0);
+    std::snprintf(buf, sizeof buf, "%.1f km", d * r.spec.metresPerUnit() / 1000.0);
     return buf;
 }
 
@@ -113,7 +113,7 @@ MapOptions mapFrame(const MissionProblem &problem)
     {
         mo.toGeographic = [&problem](Point2 p) { return problem.toGeographic(p); };
         mo.toLocal = [&problem](LonLat g) { return problem.toLocal(g); };
-        mo.metresPerUnit = netcdf ? 1.0 : m.lengthUnitMetres;
+        mo.metresPerUnit = m.metresPerUnit();
     }
     mo.speedInMetresPerSecond = netcdf;
     return mo;

@@ -13,10 +13,6 @@ namespace ompl_glider
 {
 namespace
 {
-std::string csvNum(double v)
-{
-    return text::csvNumber(v);
-}
 
 /// A number for JSON: null when not finite.
 nlohmann::ordered_json jnum(double v)
@@ -41,12 +37,12 @@ std::string waypointsCsv(const MissionResult &r)
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];
-        s += std::to_string(i) + "," + csvNum(w.position.x) + "," + csvNum(w.position.y) + ",";
-        s += w.geographic ? csvNum(w.lonLat.lon) + "," + csvNum(w.lonLat.lat) : std::string(",");
-        s += "," + csvNum(w.time) + "," + csvNum(w.time * r.spec.timeUnitSeconds) + "," + w.iso + "," +
-             csvNum(w.legTime) + ",";
+        s += std::to_string(i) + "," + text::csvNumber(w.position.x) + "," + text::csvNumber(w.position.y) + ",";
+        s += w.geographic ? text::csvNumber(w.lonLat.lon) + "," + text::csvNumber(w.lonLat.lat) : std::string(",");
+        s += "," + text::csvNumber(w.time) + "," + text::csvNumber(w.time * r.spec.timeUnitSeconds) + "," + w.iso + "," +
+             text::csvNumber(w.legTime) + ",";
         if (hasProfile(r, i))
-            s += std::to_string(w.profile) + "," + csvNum(w.dive.climbTo) + "," + csvNum(w.dive.diveTo);
+            s += std::to_string(w.profile) + "," + text::csvNumber(w.dive.climbTo) + "," + text::csvNumber(w.dive.diveTo);
         else
             s += ",,";
         s += "\n";
@@ -59,8 +55,8 @@ std::string pathCsv(const MissionResult &r)
     std::string s = "t,x,y,lon,lat\n";
     for (const MissionWaypoint &w : r.waypoints)
     {
-        s += csvNum(w.time) + "," + csvNum(w.position.x) + "," + csvNum(w.position.y) + ",";
-        s += w.geographic ? csvNum(w.lonLat.lon) + "," + csvNum(w.lonLat.lat) : std::string(",");
+        s += text::csvNumber(w.time) + "," + text::csvNumber(w.position.x) + "," + text::csvNumber(w.position.y) + ",";
+        s += w.geographic ? text::csvNumber(w.lonLat.lon) + "," + text::csvNumber(w.lonLat.lat) : std::string(",");
         s += "\n";
     }
     return s;
@@ -241,17 +237,17 @@ std::string stintsCsv(const MissionResult &r, const MissionProblem &problem)
         const Point2 h = bearingVector(p.bearings[k]);
         const double dt = b.t - a.t;
         const double dx = b.x - a.x - r.plan.speed * dt * h.x, dy = b.y - a.y - r.plan.speed * dt * h.y;
-        s += std::to_string(k) + "," + csvNum(a.t) + "," + csvNum(a.t * r.spec.timeUnitSeconds) + "," +
-             problem.isoTime(a.t) + "," + csvNum(a.x) + "," + csvNum(a.y) + ",";
+        s += std::to_string(k) + "," + text::csvNumber(a.t) + "," + text::csvNumber(a.t * r.spec.timeUnitSeconds) + "," +
+             problem.isoTime(a.t) + "," + text::csvNumber(a.x) + "," + text::csvNumber(a.y) + ",";
         if (problem.isGeographic())
         {
             const LonLat g = problem.toGeographic({a.x, a.y});
-            s += csvNum(g.lon) + "," + csvNum(g.lat);
+            s += text::csvNumber(g.lon) + "," + text::csvNumber(g.lat);
         }
         else
             s += ",";
-        s += "," + csvNum(p.bearings[k]) + "," + csvNum(b.t) + "," + csvNum(b.x) + "," + csvNum(b.y) + "," +
-             csvNum(dx) + "," + csvNum(dy) + "," + csvNum(dt > 0.0 ? std::hypot(dx, dy) / dt : 0.0) + "\n";
+        s += "," + text::csvNumber(p.bearings[k]) + "," + text::csvNumber(b.t) + "," + text::csvNumber(b.x) + "," + text::csvNumber(b.y) + "," +
+             text::csvNumber(dx) + "," + text::csvNumber(dy) + "," + text::csvNumber(dt > 0.0 ? std::hypot(dx, dy) / dt : 0.0) + "\n";
     }
     return s;
 }

@@ -25,7 +25,7 @@ double days(const std::string &a, const std::string &b, Calendar c)
 }
 }  // namespace
 
-TEST(CfTime, CalendarsCountDaysTheirOwnWay)
+TEST(Time, CalendarsCountDaysTheirOwnWay)
 {
     EXPECT_EQ(days("2000-02-01", "2000-03-01", Calendar::ProlepticGregorian), 29);
     EXPECT_EQ(days("2000-02-01", "2000-03-01", Calendar::Standard), 29);
@@ -45,7 +45,7 @@ TEST(CfTime, CalendarsCountDaysTheirOwnWay)
     EXPECT_NO_THROW(secondsSinceCalendarEpoch(parseDateTime("2001-02-30"), Calendar::Day360));
 }
 
-TEST(CfTime, DatesRoundTripInEveryCalendar)
+TEST(Time, DatesRoundTripInEveryCalendar)
 {
     for (Calendar c : {Calendar::Standard, Calendar::ProlepticGregorian, Calendar::Julian, Calendar::NoLeap,
                        Calendar::AllLeap, Calendar::Day360})
@@ -57,7 +57,7 @@ TEST(CfTime, DatesRoundTripInEveryCalendar)
         }
 }
 
-TEST(CfTime, ParsesUnitsAndIsoVariants)
+TEST(Time, ParsesUnitsAndIsoVariants)
 {
     const CfTimeUnits h = parseCfTimeUnits("hours since 1950-1-1 0:0:0", "gregorian");
     EXPECT_EQ(h.secondsPerUnit, 3600.0);

@@ -40,7 +40,7 @@ std::string errorOf(const std::string &text)
 #define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << "message: " << (msg)
 }  // namespace
 
-TEST(IsoTime, RoundTripAndOffsets)
+TEST(Time, IsoDatesRoundTripWithOffsets)
 {
     EXPECT_DOUBLE_EQ(parseIsoTime("1970-01-01T00:00:00Z"), 0.0);
     EXPECT_DOUBLE_EQ(parseIsoTime("2026-06-01T00:00:00Z"), 1780272000.0);

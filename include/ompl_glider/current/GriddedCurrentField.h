@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/current/BeyondForecast.h"
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/current/Interpolation.h"
 
@@ -17,16 +18,6 @@ namespace detail
 {
 class CoastEdges;
 }
-
-/// @brief What the field does after the last forecast time.
-enum class BeyondForecast
-{
-    HoldLast,  ///< keep the last forecast field for all later times (the paper's choice); timeEnd() = +inf
-    Refuse     ///< timeEnd() = last forecast time: travel-time code reports legs that need later data infeasible
-};
-
-/// @brief Parses "hold" / "hold_last" / "hold-last" or "refuse" (case-insensitive). @throws Error otherwise.
-BeyondForecast parseBeyondForecast(const std::string &name);
 
 /// @brief Interpolation schemes and policies of a gridded field.
 struct GriddedFieldOptions

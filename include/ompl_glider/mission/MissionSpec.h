@@ -15,7 +15,8 @@
 
 #include "ompl_glider/cost/DiveProfile.h"
 #include "ompl_glider/cost/TravelTimeCalculator.h"
-#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/current/BeyondForecast.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/OutputFormats.h"
 
@@ -49,26 +50,15 @@ struct ProjectionSpec
 /// @brief Source of the current: an analytic flow or a NetCDF forecast (loaded by the gridded-field reader).
 struct CurrentSpec
 {
-    /// Where the current comes from: an analytic flow of the current-field registry, or a NetCDF forecast.
-    enum class Source
-    {
-        Analytic,  ///< a flow of the registry (CurrentFieldRegistry.h), made from `parameters`
-        NetCdf     ///< a forecast read from `file` / `files`
-    };
     /// The registry's name of the kind (currentFieldKinds(): meandering_jet, uniform, linear_shear, double_gyre,
-    /// netcdf); set with setType(), which also sets `source`.
+    /// netcdf); the registry says whether it is read from a file (CurrentFieldKind::gridded).
     std::string type{"meandering_jet"};
-    Source source{Source::Analytic};  ///< parsed from `type` once, by setType()
-    /// @brief Sets the kind by its registry name and the source it implies.
-    void setType(const std::string &name)
-    {
-        type = name;
-        source = name == "netcdf" ? Source::NetCdf : Source::Analytic;
-    }
-    /// @brief True for a NetCDF forecast (planning in metres and seconds, positions in lon/lat).
+    /// @brief True for a kind read from a file, a NetCDF forecast (planning in metres and seconds, positions in
+    /// lon/lat); false for an analytic flow or an unknown name (refused by the loader and MissionProblem).
     bool isForecast() const
     {
-        return source == Source::NetCdf;
+        const CurrentFieldKind *kind = findCurrentFieldKind(type);
+        return kind && kind->gridded;
     }
     /// Analytic parameters (names per type: meandering_jet B0 epsilon omega theta k c; uniform u v;
     /// linear_shear a; double_gyre amplitude length). Missing ones take the class defaults.
@@ -346,6 +336,11 @@ struct MissionSpec
         bool time{false};    ///< times are in known seconds (durations in hours and days)
         bool length{false};  ///< lengths are in known metres (distances in km)
     };
+    /// @brief Metres per planning length unit: 1 for a forecast (planned in metres), else `lengthUnitMetres`.
+    double metresPerUnit() const
+    {
+        return current.isForecast() ? 1.0 : lengthUnitMetres;
+    }
     /// @brief The mission's PhysicalUnits.
     PhysicalUnits physicalUnits() const
     {

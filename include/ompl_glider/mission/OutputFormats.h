@@ -38,7 +38,4 @@ const std::vector<OutputFormat> &outputFormats();
 
 /// @brief The format named @p name in `outputs.files`; nullopt for an unknown name.
 std::optional<OutputFormatId> outputFormatByName(const std::string &name);
-
-/// @brief The name of @p id in `outputs.files` ("csv", ...).
-const std::string &outputFormatName(OutputFormatId id);
 }  // namespace ompl_glider

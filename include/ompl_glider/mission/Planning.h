@@ -199,7 +199,7 @@ std::vector<TimedPoint> retimePath(const MissionProblem &problem, std::shared_pt
 /// and the one with the least planner.objective over the members is returned (PlannedPath::ensemble), its times
 /// those of the mean field. The robust plan is thus never worse by the objective than any single-member plan.
 /// @throws Error for an unknown planner or parameter, or a bad problem (see makeGliderContext()).
-/// A stint planner (PlannerEntry::stints) flies the mission's `stints` section: its plan is the surfacings (not
+/// A stint planner (PlannerFamily::Stints) flies the mission's `stints` section: its plan is the surfacings (not
 /// smoothed or refined), solved when a plan was flown (exactly reaching the goal or not: PlannedPath::stints has the
 /// remaining distance). With another planner and a `stints` section, the final path is converted to stints
 /// (stintsFromPath()).

@@ -201,7 +201,7 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
         kinds.insert(k.name);
     if (!n["type"])
         r.fail(n, f + ".type", "missing (" + currentFieldKindList() + ")");
-    c.setType(r.oneOf(n["type"], f + ".type", kinds));
+    c.type = r.oneOf(n["type"], f + ".type", kinds);
     const CurrentFieldKind &kind = *findCurrentFieldKind(c.type);
     if (n["parameters"])
     {
@@ -247,9 +247,7 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
                 r.oneOf(i["time"], f + ".interpolation.time", {"nearest", "linear", "cubic", "akima"});
     }
     if (n["horizon"])
-        c.horizonPolicy = r.oneOf(n["horizon"], f + ".horizon", {"refuse", "hold_last"}) == "hold_last"
-                              ? BeyondForecast::HoldLast
-                              : BeyondForecast::Refuse;
+        c.horizonPolicy = parseBeyondForecast(r.oneOf(n["horizon"], f + ".horizon", {"refuse", "hold_last"}));
     if (n["zero_velocity_land"])
         c.zeroVelocityLand = r.boolean(n["zero_velocity_land"], f + ".zero_velocity_land");
     if (n["depth_average"])
