@@ -416,13 +416,19 @@ void defineFlags(CLI::App &app, Flags &f)
            "do not take nodes whose u and v are exactly 0 in every record of the trip for land (on by default: models "
            "such as POP store land as zero velocity)")
         ->group(nc);
-    app.add_option("--xy-interp", fc.current.xyInterpolation, "nearest | bilinear (default) | bicubic")
+    app.add_option_function<std::string>(
+           "--xy-interp", [&fc](const std::string &v) { fc.current.xyInterpolation = parseInterp2D(v); },
+           "nearest | bilinear (default) | bicubic")
         ->check(CLI::IsMember(kSchemes2D))
         ->group(nc);
-    app.add_option("--time-interp", fc.current.timeInterpolation, "nearest | linear (default) | cubic | akima")
+    app.add_option_function<std::string>(
+           "--time-interp", [&fc](const std::string &v) { fc.current.timeInterpolation = parseInterp1D(v); },
+           "nearest | linear (default) | cubic | akima")
         ->check(CLI::IsMember(kSchemes1D))
         ->group(nc);
-    app.add_option("--depth-interp", fc.current.depthInterpolation, "nearest | linear (default) | cubic | akima")
+    app.add_option_function<std::string>(
+           "--depth-interp", [&fc](const std::string &v) { fc.current.depthInterpolation = parseInterp1D(v); },
+           "nearest | linear (default) | cubic | akima")
         ->check(CLI::IsMember(kSchemes1D))
         ->group(nc);
     app.add_option_function<std::string>(

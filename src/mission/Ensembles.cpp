@@ -89,16 +89,38 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
 }
 }  // namespace planning_detail
 
-double ensembleObjective(const std::vector<double> &t, const std::string &objective, double q)
+const char *ensembleObjectiveName(EnsembleObjective o)
+{
+    switch (o)
+    {
+    case EnsembleObjective::Worst:
+        return "worst";
+    case EnsembleObjective::Quantile:
+        return "quantile";
+    case EnsembleObjective::Expected:
+        break;
+    }
+    return "expected";
+}
+
+EnsembleObjective parseEnsembleObjective(const std::string &name)
+{
+    for (EnsembleObjective o : {EnsembleObjective::Expected, EnsembleObjective::Worst, EnsembleObjective::Quantile})
+        if (name == ensembleObjectiveName(o))
+            return o;
+    throw Error("unknown ensemble objective '" + name + "' (expected, worst, quantile)");
+}
+
+double ensembleObjective(const std::vector<double> &t, EnsembleObjective objective, double q)
 {
     if (t.empty())
         return planning_detail::kInf;
     for (double x : t)
         if (!std::isfinite(x))
             return planning_detail::kInf;
-    if (objective == "worst")
+    if (objective == EnsembleObjective::Worst)
         return *std::max_element(t.begin(), t.end());
-    if (objective == "quantile")
+    if (objective == EnsembleObjective::Quantile)
     {
         std::vector<double> s = t;
         std::sort(s.begin(), s.end());
@@ -106,8 +128,6 @@ double ensembleObjective(const std::vector<double> &t, const std::string &object
         const std::size_t k = static_cast<std::size_t>(std::clamp(rank, 1.0, static_cast<double>(s.size())));
         return s[k - 1];
     }
-    if (objective != "expected")
-        throw Error("unknown ensemble objective '" + objective + "' (expected, worst, quantile)");
     double sum = 0.0;
     for (double x : t)
         sum += x;

@@ -174,7 +174,7 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
                "planner '" + m.planner.name +
                    "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
     if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints() && m.departure.window &&
-        m.stints.objective == "remaining_distance")
+        m.stints.objective == StintObjective::RemainingDistance)
         r.fail(root["departure"]["window"], "departure.window",
                "the departure window is searched for the earliest arrival; the stint planner '" + m.planner.name +
                    "' with the remaining_distance objective has none: give departure.time, or stints.objective: "

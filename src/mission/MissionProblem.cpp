@@ -83,9 +83,9 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     o.velocityUnits = c.velocityUnits;
     o.timeUnits = c.timeUnits;
     o.steadyRecord = c.steadyRecord;
-    o.field.xy = parseInterp2D(c.xyInterpolation);
-    o.field.depth = parseInterp1D(c.depthInterpolation);
-    o.field.time = parseInterp1D(c.timeInterpolation);
+    o.field.xy = c.xyInterpolation;
+    o.field.depth = c.depthInterpolation;
+    o.field.time = c.timeInterpolation;
     o.field.beyond = c.horizonPolicy;
     o.field.name = "netcdf:" + c.file;
     for (std::size_t k = 1; k < c.files.size(); ++k)

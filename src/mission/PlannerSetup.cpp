@@ -185,8 +185,7 @@ StintSettings stintSettings(const MissionProblem &problem, double departure)
     s.duration = m.stints.duration;
     s.missionDuration = m.stints.missionDuration;
     s.bearingStep = m.stints.bearingStep;
-    s.objective = m.stints.objective == "earliest_arrival" ? StintObjective::EarliestArrival
-                                                           : StintObjective::RemainingDistance;
+    s.objective = m.stints.objective;
     s.radius = m.stints.radius;
     s.step = m.stints.step;
     s.depth = m.vehicle.depth;

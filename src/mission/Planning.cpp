@@ -52,7 +52,7 @@ StintOutcome convertToStints(const MissionProblem &problem, const PlannedPath &r
     o.converted = true;
     o.duration = s.duration;
     o.missionDuration = s.missionDuration;
-    o.objective = stintObjectiveName(s.objective);
+    o.objective = s.objective;
     o.radius = s.radius;
     o.pathTravelTime = c.pathTravelTime;
     o.stintTravelTime = c.stintTravelTime;

@@ -187,7 +187,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
         j["stints"] = {{"converted", s.converted},
                        {"duration", s.duration},
                        {"mission_duration", s.missionDuration},
-                       {"objective", s.objective},
+                       {"objective", stintObjectiveName(s.objective)},
                        {"radius", s.radius},
                        {"count", s.plan.bearings.size()},
                        {"reached", s.plan.reached},
@@ -243,8 +243,8 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                              {"member_travel_times", times(c.memberTravelTimes)}});
         const MeasureSpread spread = measureSpread(e.memberTravelTimes);
         j["ensemble"] = {{"members", members},
-                         {"objective", e.objective},
-                         {"quantile", e.objective == "quantile" ? json(e.quantile) : json(nullptr)},
+                         {"objective", ensembleObjectiveName(e.objective)},
+                         {"quantile", e.objective == EnsembleObjective::Quantile ? json(e.quantile) : json(nullptr)},
                          {"chosen", e.chosen},
                          {"objective_value", jnum(e.objectiveValue)},
                          {"member_travel_times", times(e.memberTravelTimes)},

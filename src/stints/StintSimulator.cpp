@@ -14,6 +14,14 @@ std::string stintObjectiveName(StintObjective o)
     return o == StintObjective::RemainingDistance ? "remaining_distance" : "earliest_arrival";
 }
 
+StintObjective parseStintObjective(const std::string &name)
+{
+    for (StintObjective o : {StintObjective::RemainingDistance, StintObjective::EarliestArrival})
+        if (stintObjectiveName(o) == name)
+            return o;
+    throw Error("unknown stint objective '" + name + "' (remaining_distance, earliest_arrival)");
+}
+
 std::size_t StintSettings::stintCount() const
 {
     const double n = std::ceil(missionDuration / duration - 1e-9);

@@ -433,7 +433,7 @@ TEST(MissionEnsemble, RobustPlanOnTwoMembersThatDifferInOneRegion)
     };
     const MissionSpec spec = parseMission(mission("worst"), "m.yaml");
     ASSERT_EQ(spec.current.members.size(), 2u);
-    EXPECT_EQ(spec.planner.objective, "worst");
+    EXPECT_EQ(spec.planner.objective, EnsembleObjective::Worst);
     const MissionProblem problem(spec);
     ASSERT_EQ(problem.getMembers().size(), 2u);
     // the planning field is the members' mean
@@ -475,13 +475,15 @@ TEST(MissionEnsemble, RobustPlanOnTwoMembersThatDifferInOneRegion)
 
 TEST(MissionEnsemble, ObjectivesAndBadSections)
 {
-    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0}, "expected", 0.9), 2.0);
-    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0}, "worst", 0.9), 3.0);
-    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0, 4.0}, "quantile", 0.5), 2.0);
-    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0, 4.0}, "quantile", 0.75), 3.0);
-    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0, 4.0}, "quantile", 1.0), 4.0);
-    EXPECT_TRUE(std::isinf(ensembleObjective({1.0, INFINITY}, "expected", 0.9)));
-    EXPECT_THROW(ensembleObjective({1.0}, "median", 0.9), Error);
+    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0}, EnsembleObjective::Expected, 0.9), 2.0);
+    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0}, EnsembleObjective::Worst, 0.9), 3.0);
+    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0, 4.0}, EnsembleObjective::Quantile, 0.5), 2.0);
+    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0, 4.0}, EnsembleObjective::Quantile, 0.75), 3.0);
+    EXPECT_DOUBLE_EQ(ensembleObjective({1.0, 3.0, 2.0, 4.0}, EnsembleObjective::Quantile, 1.0), 4.0);
+    EXPECT_TRUE(std::isinf(ensembleObjective({1.0, INFINITY}, EnsembleObjective::Expected, 0.9)));
+    EXPECT_THROW(parseEnsembleObjective("median"), Error);
+    for (EnsembleObjective o : {EnsembleObjective::Expected, EnsembleObjective::Worst, EnsembleObjective::Quantile})
+        EXPECT_EQ(parseEnsembleObjective(ensembleObjectiveName(o)), o);
 
     const std::string head = "name: e\nregion: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\nstart: {x: 1, y: 0}\n"
                              "goal: {x: 9, y: 0}\n";

@@ -84,8 +84,8 @@ TEST(MissionFile, ExamplesLoad)
     const MissionSpec l = loadMission(kExamples + "labrador_forecast.yaml");
     EXPECT_EQ(l.current.type, "netcdf");
     EXPECT_EQ(l.current.file, kExamples + "labrador_forecast.nc");
-    EXPECT_EQ(l.current.xyInterpolation, "bicubic");
-    EXPECT_EQ(l.current.timeInterpolation, "akima");
+    EXPECT_EQ(l.current.xyInterpolation, Interp2D::Bicubic);
+    EXPECT_EQ(l.current.timeInterpolation, Interp1D::Akima);
     ASSERT_TRUE(l.fileCalendar.has_value());
     EXPECT_DOUBLE_EQ(l.departure.begin, 0.0);          // the file's first time
     EXPECT_DOUBLE_EQ(l.departure.end, 2 * 86400.0);    // ISO date in the file's calendar

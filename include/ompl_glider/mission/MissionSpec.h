@@ -17,6 +17,8 @@
 #include "ompl_glider/cost/TravelTimeCalculator.h"
 #include "ompl_glider/current/BeyondForecast.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/current/Interpolation.h"
+#include "ompl_glider/stints/StintSimulator.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/OutputFormats.h"
 
@@ -47,6 +49,19 @@ struct ProjectionSpec
     double lat0{0.0};  ///< reference latitude (degrees)
 };
 
+/// @brief What a plan minimises over the members of an ensemble: the mean of their arrival times, the maximum or a
+/// quantile (PlannerSpec::quantile).
+enum class EnsembleObjective
+{
+    Expected,  ///< "expected": the mean
+    Worst,     ///< "worst": the maximum
+    Quantile   ///< "quantile": the ceil(q M)-th smallest of M
+};
+/// @brief "expected", "worst" or "quantile".
+const char *ensembleObjectiveName(EnsembleObjective o);
+/// @brief The objective named @p name. @throws Error for another name (saying which are known).
+EnsembleObjective parseEnsembleObjective(const std::string &name);
+
 /// @brief Source of the current: an analytic flow or a NetCDF forecast (loaded by the gridded-field reader).
 struct CurrentSpec
 {
@@ -75,9 +90,9 @@ struct CurrentSpec
     }
     std::map<std::string, std::string> variables;  ///< netcdf: role (u, v, lon, lat, x, y, depth, time, mask, angle) -> name
                                                    ///< (mask "none": no land/sea mask variable; angle "none": no grid angle)
-    std::string xyInterpolation{"bilinear"};       ///< nearest | bilinear | bicubic
-    std::string depthInterpolation{"linear"};      ///< nearest | linear | cubic | akima
-    std::string timeInterpolation{"linear"};       ///< nearest | linear | cubic | akima
+    Interp2D xyInterpolation{Interp2D::Bilinear};  ///< nearest | bilinear | bicubic (parseInterp2D())
+    Interp1D depthInterpolation{Interp1D::Linear};  ///< nearest | linear | cubic | akima (parseInterp1D())
+    Interp1D timeInterpolation{Interp1D::Linear};   ///< nearest | linear | cubic | akima (parseInterp1D())
     /// Refuse (trips past the forecast are infeasible; `horizon: refuse`) or HoldLast (`horizon: hold_last`)
     BeyondForecast horizonPolicy{BeyondForecast::Refuse};
     bool zeroVelocityLand{true};  ///< netcdf: nodes with u = v = 0 exactly at every loaded time are land
@@ -218,7 +233,7 @@ struct PlannerSpec
     std::map<std::string, SourceMark> parameterMarks;  ///< where each parameter was given
     /// With an ensemble current: what a plan minimises over the members' arrival times: expected (their mean),
     /// worst (their maximum) or quantile (the `quantile` quantile).
-    std::string objective{"expected"};
+    EnsembleObjective objective{EnsembleObjective::Expected};
     double quantile{0.9};  ///< objective quantile: in (0, 1]
 };
 
@@ -231,7 +246,7 @@ struct StintSpec
     double duration{0.0};          ///< time between surfacings (required)
     double missionDuration{0.0};   ///< the mission ends this long after departure (required)
     double bearingStep{20.0};      ///< degrees between the bearings of the CTS-A* rose
-    std::string objective{"remaining_distance"};  ///< remaining_distance | earliest_arrival
+    StintObjective objective{StintObjective::RemainingDistance};  ///< remaining_distance | earliest_arrival
     double radius{0.0};            ///< goal radius (> 0 required by earliest_arrival); 0 for a conversion: automatic
     double step{0.0};              ///< RK4 step; 0: duration / 24
 };

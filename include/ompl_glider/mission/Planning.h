@@ -37,7 +37,7 @@ struct PlanOptions
 /// @brief How a plan fares over the members of an ensemble current (planRoute() with MissionProblem::getMembers()).
 struct EnsemblePlan
 {
-    std::string objective;   ///< expected | worst | quantile (PlannerSpec::objective)
+    EnsembleObjective objective{EnsembleObjective::Expected};  ///< PlannerSpec::objective
     double quantile{0.9};    ///< the quantile of objective quantile
     /// The chosen plan's travel time by the objective over the members (+inf when a member cannot fly it)
     double objectiveValue{std::numeric_limits<double>::infinity()};
@@ -56,7 +56,7 @@ struct EnsemblePlan
 
 /// @brief The objective over members' travel times: their mean (expected), maximum (worst) or the q-quantile
 /// (the ceil(q M)-th smallest of M; quantile); +inf when any is +inf (a plan that fails in a member is not robust).
-double ensembleObjective(const std::vector<double> &travelTimes, const std::string &objective, double q);
+double ensembleObjective(const std::vector<double> &travelTimes, EnsembleObjective objective, double q);
 
 /// @brief What a glider flies ([IsernObstacles]): the plan of a stint planner, or the conversion of another
 /// planner's path to a heading per surfacing (when the mission has a `stints` section).
@@ -66,7 +66,7 @@ struct StintOutcome
     bool converted{false};   ///< converted from the planner's path (stintsFromPath()), not planned on stints
     double duration{0.0};    ///< time between surfacings
     double missionDuration{0.0};  ///< the mission length flown (a conversion: long enough to arrive)
-    std::string objective;   ///< remaining_distance | earliest_arrival
+    StintObjective objective{StintObjective::RemainingDistance};  ///< what the stints minimise
     double radius{0.0};      ///< goal radius of the stints
     /// Conversion: the path's travel time, the stints' (+inf: they do not arrive) and the loss
     /// stintTravelTime / pathTravelTime - 1

@@ -36,6 +36,8 @@ enum class StintObjective
 
 /// @brief "remaining_distance" / "earliest_arrival".
 std::string stintObjectiveName(StintObjective o);
+/// @brief The objective named @p name ("remaining_distance" / "earliest_arrival"). @throws Error for another name.
+StintObjective parseStintObjective(const std::string &name);
 
 /// @brief Stint settings (times in field units).
 struct StintSettings

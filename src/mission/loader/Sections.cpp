@@ -238,13 +238,13 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
         const YAML::Node &i = n["interpolation"];
         r.checkMap(i, f + ".interpolation", {"xy", "depth", "time"});
         if (i["xy"])
-            c.xyInterpolation = r.oneOf(i["xy"], f + ".interpolation.xy", {"nearest", "bilinear", "bicubic"});
+            c.xyInterpolation = parseInterp2D(r.oneOf(i["xy"], f + ".interpolation.xy", {"nearest", "bilinear", "bicubic"}));
         if (i["depth"])
             c.depthInterpolation =
-                r.oneOf(i["depth"], f + ".interpolation.depth", {"nearest", "linear", "cubic", "akima"});
+                parseInterp1D(r.oneOf(i["depth"], f + ".interpolation.depth", {"nearest", "linear", "cubic", "akima"}));
         if (i["time"])
             c.timeInterpolation =
-                r.oneOf(i["time"], f + ".interpolation.time", {"nearest", "linear", "cubic", "akima"});
+                parseInterp1D(r.oneOf(i["time"], f + ".interpolation.time", {"nearest", "linear", "cubic", "akima"}));
     }
     if (n["horizon"])
         c.horizonPolicy = parseBeyondForecast(r.oneOf(n["horizon"], f + ".horizon", {"refuse", "hold_last"}));
@@ -436,7 +436,7 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
     PlannerSpec &p = m.planner;
     if (n["objective"])
     {
-        p.objective = r.oneOf(n["objective"], f + ".objective", {"expected", "worst", "quantile"});
+        p.objective = parseEnsembleObjective(r.oneOf(n["objective"], f + ".objective", {"expected", "worst", "quantile"}));
         if (m.current.members.empty())
             r.fail(n["objective"], f + ".objective",
                    "an objective over members needs an ensemble current (current: {ensemble: [...]})");
@@ -446,7 +446,7 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
         p.quantile = r.number(n["quantile"], f + ".quantile");
         if (!(p.quantile > 0.0 && p.quantile <= 1.0))
             r.fail(n["quantile"], f + ".quantile", "expected a number in (0, 1]");
-        if (p.objective != "quantile")
+        if (p.objective != EnsembleObjective::Quantile)
             r.fail(n["quantile"], f + ".quantile", "only with objective: quantile");
     }
     if (n["name"])
@@ -521,10 +521,11 @@ void readStints(const Reader &r, const YAML::Node &n, MissionSpec &m)
                                                                n["bearing_step"].Scalar());
     }
     if (n["objective"])
-        s.objective = r.oneOf(n["objective"], f + ".objective", {"remaining_distance", "earliest_arrival"});
+        s.objective =
+            parseStintObjective(r.oneOf(n["objective"], f + ".objective", {"remaining_distance", "earliest_arrival"}));
     if (n["radius"])
         s.radius = r.nonNegative(n["radius"], f + ".radius");
-    if (s.objective == "earliest_arrival" && !(s.radius > 0.0))
+    if (s.objective == StintObjective::EarliestArrival && !(s.radius > 0.0))
         r.fail(n["radius"] ? n["radius"] : n["objective"], f + ".radius",
                "the earliest_arrival objective needs a goal radius > 0");
     if (n["step"])
