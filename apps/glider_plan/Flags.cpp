@@ -75,8 +75,9 @@ std::vector<std::string> commaItems(const std::string &text)
     return items;
 }
 
-/// Four numbers separated by commas (--region).
-std::array<double, 4> quad(const std::string &flag, const std::string &text)
+/// Four numbers separated by commas (--region), in GeoJSON bbox order: x_min,y_min,x_max,y_max (for a geographic
+/// file lon_min,lat_min,lon_max,lat_max), as given (ForecastMission checks them).
+Box quad(const std::string &flag, const std::string &text)
 {
     std::array<double, 4> v{};
     std::size_t at = 0;
@@ -89,7 +90,7 @@ std::array<double, 4> quad(const std::string &flag, const std::string &text)
         v[k] = number(flag, text.substr(at, comma - at));
         at = comma + 1;
     }
-    return v;
+    return {v[0], v[2], v[1], v[3]};
 }
 
 /// A finite number > 0 (CLI11's PositiveNumber lets "nan" and "inf" through).
@@ -534,14 +535,12 @@ MissionSpec builtInMission(const Flags &f)
     if (!f.start.empty())
     {
         const Point2 p = pair("--start", f.start);
-        m.start.x = p.x;
-        m.start.y = p.y;
+        m.start.xy = p;
     }
     if (!f.goal.empty())
     {
         const Point2 p = pair("--goal", f.goal);
-        m.goal.x = p.x;
-        m.goal.y = p.y;
+        m.goal.xy = p;
     }
     if (!f.departure.empty())
         m.departure.time = number("--departure", f.departure);

@@ -64,10 +64,8 @@ int main(int argc, char **argv)
         }
     }
     MissionSpec spec = defaultGulfStreamMission();
-    spec.start.x = sx;
-    spec.start.y = sy;
-    spec.goal.x = gx;
-    spec.goal.y = gy;
+    spec.start.xy = {sx, sy};
+    spec.goal.xy = {gx, gy};
     spec.planner.gridSize = grid;
     const MissionProblem problem(spec);
 

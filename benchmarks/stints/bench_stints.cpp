@@ -91,14 +91,9 @@ MissionSpec jetMission(const Pair &p, double speedMs)
     m.timeUnitSeconds = kTimeUnit;
     m.current.type = "meandering_jet";
     m.region.set = true;
-    m.region.xMin = -5;
-    m.region.xMax = 45;
-    m.region.yMin = -15;
-    m.region.yMax = 15;
-    m.start.x = p.start.x;
-    m.start.y = p.start.y;
-    m.goal.x = p.goal.x;
-    m.goal.y = p.goal.y;
+    m.region.xy = {-5, 45, -15, 15};
+    m.start.xy = p.start;
+    m.goal.xy = p.goal;
     m.vehicle.speed = speedMs * kTimeUnit / kLengthUnit;
     m.travel.speed = m.vehicle.speed;
     for (std::size_t k = 0; k < p.islands.size(); ++k)
@@ -244,10 +239,8 @@ MissionSpec forecastMission(const Pair &p, double speedMs, const std::string &fi
     m.current.type = "netcdf";
     m.current.file = file;
     m.current.variables = {{"x", "x"}, {"y", "y"}};
-    m.start.x = p.start.x;
-    m.start.y = p.start.y;
-    m.goal.x = p.goal.x;
-    m.goal.y = p.goal.y;
+    m.start.xy = p.start;
+    m.goal.xy = p.goal;
     m.vehicle.speed = speedMs;
     m.travel.speed = speedMs;
     m.travel.eps = 1.0;
@@ -339,10 +332,8 @@ void conversion()
         for (const auto &r : rows)
         {
             MissionSpec m = defaultGulfStreamMission();
-            m.start.x = r[0];
-            m.start.y = r[1];
-            m.goal.x = r[2];
-            m.goal.y = r[3];
+            m.start.xy = {r[0], r[1]};
+            m.goal.xy = {r[2], r[3]};
             m.stints.set = true;
             m.stints.duration = hours * 3600.0 / kTimeUnit;
             m.stints.missionDuration = 40.0;

@@ -1,7 +1,6 @@
 #include "ompl_glider/mission/ForecastMission.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -41,9 +40,11 @@ std::string pointText(double a, double b)
     return buf;
 }
 
-std::string regionText(const std::array<double, 4> &r)
+/// The region as given, in GeoJSON bbox order: "x_min,y_min,x_max,y_max" (lon_min,lat_min,lon_max,lat_max).
+std::string regionText(const Box &r)
 {
-    return text::number(r[0]) + "," + text::number(r[1]) + "," + text::number(r[2]) + "," + text::number(r[3]);
+    return text::number(r.xMin) + "," + text::number(r.yMin) + "," + text::number(r.xMax) + "," +
+           text::number(r.yMax);
 }
 /// The reader's message in the command line's words: its option fields become the flags, and a departure or
 /// region fault is prefixed with the flags that gave it.
@@ -113,10 +114,10 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
 
     m.marks["start"] = SourceMark{"--start", 0};
     m.marks["goal"] = SourceMark{"--goal", 0};
-    m.start.x = m.start.lon = q.start.x;
-    m.start.y = m.start.lat = q.start.y;
-    m.goal.x = m.goal.lon = q.goal.x;
-    m.goal.y = m.goal.lat = q.goal.y;
+    m.start.xy = q.start;
+    m.start.lonLat = {q.start.x, q.start.y};
+    m.goal.xy = q.goal;
+    m.goal.lonLat = {q.goal.x, q.goal.y};
     m.vehicle.depth = m.travel.depth = q.depth;
     return m;
 }
@@ -156,38 +157,33 @@ void setRegion(MissionSpec &m, const ForecastInput &q, bool geographic)
 {
     if (!q.region)
         return;
-    const auto &[a0, b0, a1, b1] = *q.region;
+    const Box &r = *q.region;
     m.marks["region"] = SourceMark{"--region", 0};
     m.region.set = true;
     m.region.geographic = geographic;
     if (geographic)
     {
-        if (const auto fault = regionFault(a0, b0, a1, b1))
-            throw Error("--region " + regionText(*q.region) + ": " + fault->bound + " " + fault->what);
-        const GeoBox box = geoBox(a0, b0, a1, b1);
-        m.region.lonMin = box.lonMin;
-        m.region.lonMax = box.lonMax;
-        m.region.latMin = box.latMin;
-        m.region.latMax = box.latMax;
+        if (const auto fault = regionFault(r.xMin, r.yMin, r.xMax, r.yMax))
+            throw Error("--region " + regionText(r) + ": " + fault->bound + " " + fault->what);
+        const GeoBox box = geoBox(r.xMin, r.yMin, r.xMax, r.yMax);
+        m.region.lonLat = box;
         for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
             if (!box.contains({p.x, p.y}))
                 throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (lon,lat) lies outside --region " +
-                            regionText(*q.region) + " (" + box.text() + ")");
+                            regionText(r) + " (" + box.text() + ")");
     }
     else
     {
-        if (!(a1 > a0) || !(b1 > b0) || !std::isfinite(a1 - a0) || !std::isfinite(b1 - b0))
-            throw Error("--region " + regionText(*q.region) +
+        if (!(r.xMax > r.xMin) || !(r.yMax > r.yMin) || !std::isfinite(r.xMax - r.xMin) ||
+            !std::isfinite(r.yMax - r.yMin))
+            throw Error("--region " + regionText(r) +
                         ": a Cartesian file's region is x_min,y_min,x_max,y_max with x_max > x_min and "
                         "y_max > y_min");
-        m.region.xMin = a0;
-        m.region.yMin = b0;
-        m.region.xMax = a1;
-        m.region.yMax = b1;
+        m.region.xy = r;
         for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
-            if (!(p.x >= a0 && p.x <= a1 && p.y >= b0 && p.y <= b1))
+            if (!(p.x >= r.xMin && p.x <= r.xMax && p.y >= r.yMin && p.y <= r.yMax))
                 throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (x,y) lies outside --region " +
-                            regionText(*q.region));
+                            regionText(r));
     }
 }
 

@@ -114,8 +114,8 @@ void readSpeedsAndCheck(const Reader &r, const YAML::Node &root, MissionSpec &m)
     if (m.region.set && !m.region.geographic)
     {
         for (const auto *p : {&m.start, &m.goal})
-            if (!p->geographic && (p->x < m.region.xMin || p->x > m.region.xMax || p->y < m.region.yMin ||
-                                   p->y > m.region.yMax))
+            if (!p->geographic && (p->xy.x < m.region.xy.xMin || p->xy.x > m.region.xy.xMax ||
+                                   p->xy.y < m.region.xy.yMin || p->xy.y > m.region.xy.yMax))
             {
                 const char *key = p == &m.start ? "start" : "goal";
                 r.fail(root[key], key, "lies outside the region");
@@ -279,15 +279,10 @@ MissionSpec defaultGulfStreamMission()
     m.name = "gulf_stream";
     m.current.type = "meandering_jet";
     m.region.set = true;
-    m.region.xMin = 0;
-    m.region.xMax = 10;
-    m.region.yMin = -4;
-    m.region.yMax = 4;
+    m.region.xy = {0, 10, -4, 4};
     // South of the jet to north of it.
-    m.start.x = 1.0;
-    m.start.y = -3.0;
-    m.goal.x = 8.0;
-    m.goal.y = 3.0;
+    m.start.xy = {1.0, -3.0};
+    m.goal.xy = {8.0, 3.0};
     m.vehicle.speed = 0.5;
     m.travel.speed = 0.5;
     m.planner.horizon = 60.0;

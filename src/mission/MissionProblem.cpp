@@ -99,10 +99,10 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     if (m.region.set && m.region.geographic)
     {
         // as loaded: lon_min in -180..180, lon_max = lon_min + width (beyond 180 across the antimeridian)
-        o.lonMin = m.region.lonMin;
-        o.lonMax = m.region.lonMax;
-        o.latMin = m.region.latMin;
-        o.latMax = m.region.latMax;
+        o.lonMin = m.region.lonLat.lonMin;
+        o.lonMax = m.region.lonLat.lonMax;
+        o.latMin = m.region.lonLat.latMin;
+        o.latMax = m.region.lonLat.latMax;
     }
     else if (m.region.set)
         ;  // an x/y region is in the planning frame, not the file's coordinates: the whole file is loaded
@@ -110,7 +110,7 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     {
         // The trip's region in geographic terms (never from projected corners): the lon/lat box of start and goal
         // across the shorter way round, widened by a geodesic margin.
-        const LonLat a{m.start.lon, m.start.lat}, b{m.goal.lon, m.goal.lat};
+        const LonLat a = m.start.lonLat, b = m.goal.lonLat;
         for (const auto &[field, p] : {std::pair<const char *, LonLat>{"start", a}, {"goal", b}})
             if (std::abs(p.lat) > kMaxGridLatitude && std::abs(p.lat) <= 90.0)
                 throw Error(m.place(field) + ": latitude " + text::number(p.lat) + " is within " +
@@ -126,12 +126,13 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     else if (!m.start.geographic && !m.goal.geographic)
     {
         // A Cartesian file: the start-goal box plus half its larger side (at least 0.2 units) on each side.
-        const double spanA = std::abs(m.goal.x - m.start.x), spanB = std::abs(m.goal.y - m.start.y);
+        const Point2 a = m.start.xy, b = m.goal.xy;
+        const double spanA = std::abs(b.x - a.x), spanB = std::abs(b.y - a.y);
         const double pad = std::max(0.5 * std::max(spanA, spanB), 0.2);
-        o.lonMin = std::min(m.start.x, m.goal.x) - pad;
-        o.lonMax = std::max(m.start.x, m.goal.x) + pad;
-        o.latMin = std::min(m.start.y, m.goal.y) - pad;
-        o.latMax = std::max(m.start.y, m.goal.y) + pad;
+        o.lonMin = std::min(a.x, b.x) - pad;
+        o.lonMax = std::max(a.x, b.x) + pad;
+        o.latMin = std::min(a.y, b.y) - pad;
+        o.latMax = std::max(a.y, b.y) + pad;
     }
     return o;
 }
@@ -339,10 +340,10 @@ MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
 Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) const
 {
     if (!p.geographic)
-        return {p.x, p.y};
+        return p.xy;
     if (!projection_)
         throw Error(where(spec_) + what + ": lon/lat given but the forecast has no geographic coordinates");
-    return toLocal({p.lon, p.lat});
+    return toLocal(p.lonLat);
 }
 
 void MissionProblem::buildBox()
@@ -350,36 +351,33 @@ void MissionProblem::buildBox()
     const MissionSpec &m = spec_;
     if (m.region.set && !m.region.geographic)
     {
-        box_.xMin = m.region.xMin;
-        box_.xMax = m.region.xMax;
-        box_.yMin = m.region.yMin;
-        box_.yMax = m.region.yMax;
+        box_.xMin = m.region.xy.xMin;
+        box_.xMax = m.region.xy.xMax;
+        box_.yMin = m.region.xy.yMin;
+        box_.yMax = m.region.xy.yMax;
     }
     else if (m.region.set)
     {
         // Start and goal in the region, in geographic terms (longitudes in either convention).
-        GeoBox region;
-        region.lonMin = m.region.lonMin;
-        region.lonMax = m.region.lonMax;
-        region.latMin = m.region.latMin;
-        region.latMax = m.region.latMax;
+        const GeoBox &region = m.region.lonLat;
         for (const auto &[name, p] : {std::pair<const char *, const PointSpec *>{"start", &m.start}, {"goal", &m.goal}})
-            if (p->geographic && !region.contains({p->lon, p->lat}))
-                throw Error(m.place(name) + ": lon,lat " + text::number(p->lon) + "," + text::number(p->lat) +
-                            " lies outside the region (" + m.place("region") + ": " + region.text() + ")");
+            if (p->geographic && !region.contains(p->lonLat))
+                throw Error(m.place(name) + ": lon,lat " + text::number(p->lonLat.lon) + "," +
+                            text::number(p->lonLat.lat) + " lies outside the region (" + m.place("region") + ": " +
+                            region.text() + ")");
         // The planning box: the projected bounding box of the region's outline, sampled along its four edges at
         // least every degree (a parallel bows in the plane).
         box_.xMin = box_.yMin = kInf;
         box_.xMax = box_.yMax = -kInf;
-        const int n = std::max(8, static_cast<int>(std::ceil(std::max(m.region.lonMax - m.region.lonMin,
-                                                                      m.region.latMax - m.region.latMin))));
+        const int n = std::max(8, static_cast<int>(std::ceil(std::max(region.lonMax - region.lonMin,
+                                                                      region.latMax - region.latMin))));
         for (int i = 0; i <= n; ++i)
             for (int j = 0; j <= n; ++j)
             {
                 if (i != 0 && i != n && j != 0 && j != n)
                     continue;
-                const Point2 q = toLocal({m.region.lonMin + (m.region.lonMax - m.region.lonMin) * i / double(n),
-                                          m.region.latMin + (m.region.latMax - m.region.latMin) * j / double(n)});
+                const Point2 q = toLocal({region.lonMin + (region.lonMax - region.lonMin) * i / double(n),
+                                          region.latMin + (region.latMax - region.latMin) * j / double(n)});
                 box_.xMin = std::min(box_.xMin, q.x);
                 box_.xMax = std::max(box_.xMax, q.x);
                 box_.yMin = std::min(box_.yMin, q.y);
@@ -419,8 +417,8 @@ std::vector<Point2> MissionProblem::ring(const std::vector<std::pair<double, dou
     {
         PointSpec p;
         p.geographic = geographic;
-        p.x = p.lon = a;
-        p.y = p.lat = b;
+        p.xy.x = p.lonLat.lon = a;
+        p.xy.y = p.lonLat.lat = b;
         out.push_back(localPoint(p, what));
     }
     return out;

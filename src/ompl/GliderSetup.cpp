@@ -1,5 +1,7 @@
 #include "ompl_glider/ompl/GliderSetup.h"
 
+#include "../io/NumberText.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -21,24 +23,18 @@ namespace ompl_glider
 {
 namespace
 {
-std::string num(double v)
-{
-    std::ostringstream os;
-    os << v;
-    return os.str();
-}
 
 void checkPoint(const GliderProblem &p, const char *what, double x, double y)
 {
     if (!std::isfinite(x) || !std::isfinite(y))
         throw Error(std::string("GliderProblem: ") + what + " position (" + what + "X, " + what +
-                    "Y) must be set to finite values (got " + num(x) + ", " + num(y) + ")");
+                    "Y) must be set to finite values (got " + text::number(x, 6) + ", " + text::number(y, 6) + ")");
     if (x < p.xMin || x > p.xMax || y < p.yMin || y > p.yMax)
-        throw Error(std::string("GliderProblem: ") + what + " (" + num(x) + ", " + num(y) +
-                    ") is outside the planning box x in [" + num(p.xMin) + ", " + num(p.xMax) + "], y in [" +
-                    num(p.yMin) + ", " + num(p.yMax) + "]");
+        throw Error(std::string("GliderProblem: ") + what + " (" + text::number(x, 6) + ", " + text::number(y, 6) +
+                    ") is outside the planning box x in [" + text::number(p.xMin, 6) + ", " + text::number(p.xMax, 6) +
+                    "], y in [" + text::number(p.yMin, 6) + ", " + text::number(p.yMax, 6) + "]");
 }
-}  // namespace
+} // namespace
 
 ob::PlannerStatus checkStartAndGoal(const ob::ProblemDefinition &pdef, std::string *why)
 {
@@ -84,9 +80,7 @@ ob::PlannerStatus checkStartAndGoal(const ob::ProblemDefinition &pdef, std::stri
     return ob::PlannerStatus::UNKNOWN;
 }
 
-GliderSimpleSetup::GliderSimpleSetup(const ob::StateSpacePtr &space) : og::SimpleSetup(space)
-{
-}
+GliderSimpleSetup::GliderSimpleSetup(const ob::StateSpacePtr &space) : og::SimpleSetup(space) {}
 
 bool GliderSimpleSetup::rejectStartOrGoal()
 {
@@ -119,13 +113,13 @@ ob::PlannerStatus GliderSimpleSetup::solve(const ob::PlannerTerminationCondition
 std::string departureProblem(const GliderProblem &p)
 {
     if (!std::isfinite(p.t0))
-        return "departure time t0 must be finite (got " + num(p.t0) + ")";
+        return "departure time t0 must be finite (got " + text::number(p.t0, 6) + ")";
     // A time so large that doubles cannot resolve the integration tolerance near it would give travel times of 0.
     const double limit = 1e-3 * p.travel.eps / std::numeric_limits<double>::epsilon();
     if (std::abs(p.t0) + (std::isfinite(p.horizon) ? p.horizon : 0.0) > limit)
-        return "departure time t0 = " + num(p.t0) + " with horizon " + num(p.horizon) +
-               " is too large to resolve the integration tolerance eps = " + num(p.travel.eps) +
-               " (times must stay below " + num(limit) + ")";
+        return "departure time t0 = " + text::number(p.t0, 6) + " with horizon " + text::number(p.horizon, 6) +
+               " is too large to resolve the integration tolerance eps = " + text::number(p.travel.eps, 6) +
+               " (times must stay below " + text::number(limit, 6) + ")";
     return {};
 }
 
@@ -162,27 +156,28 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)
     if (!p.field)
         throw Error("GliderProblem: field is null (a current field is required)");
     if (!std::isfinite(p.xMin) || !std::isfinite(p.xMax) || !(p.xMin < p.xMax))
-        throw Error("GliderProblem: x bounds must be finite with xMin < xMax (got [" + num(p.xMin) + ", " +
-                    num(p.xMax) + "])");
+        throw Error("GliderProblem: x bounds must be finite with xMin < xMax (got [" + text::number(p.xMin, 6) + ", " +
+                    text::number(p.xMax, 6) + "])");
     if (!std::isfinite(p.yMin) || !std::isfinite(p.yMax) || !(p.yMin < p.yMax))
-        throw Error("GliderProblem: y bounds must be finite with yMin < yMax (got [" + num(p.yMin) + ", " +
-                    num(p.yMax) + "])");
+        throw Error("GliderProblem: y bounds must be finite with yMin < yMax (got [" + text::number(p.yMin, 6) + ", " +
+                    text::number(p.yMax, 6) + "])");
     if (!(p.horizon > 0.0) || !std::isfinite(p.horizon))
-        throw Error("GliderProblem: horizon must be finite and > 0 (got " + num(p.horizon) + ")");
+        throw Error("GliderProblem: horizon must be finite and > 0 (got " + text::number(p.horizon, 6) + ")");
     if (const std::string why = departureProblem(p); !why.empty())
         throw Error("GliderProblem: " + why);
     if (p.t0 < p.field->timeBegin() || p.t0 >= p.field->timeEnd())
-        throw Error("GliderProblem: departure time t0 = " + num(p.t0) + " is outside the time span [" +
-                    num(p.field->timeBegin()) + ", " + num(p.field->timeEnd()) + ") of the field '" +
-                    p.field->name() + "'");
+        throw Error("GliderProblem: departure time t0 = " + text::number(p.t0, 6) + " is outside the time span [" +
+                    text::number(p.field->timeBegin(), 6) + ", " + text::number(p.field->timeEnd(), 6) +
+                    ") of the field '" + p.field->name() + "'");
     checkPoint(p, "start", p.start.x, p.start.y);
     checkPoint(p, "goal", p.goal.x, p.goal.y);
     if (!(p.goalTolerance >= 0.0) || !std::isfinite(p.goalTolerance))
-        throw Error("GliderProblem: goalTolerance must be finite and >= 0 (got " + num(p.goalTolerance) + ")");
+        throw Error("GliderProblem: goalTolerance must be finite and >= 0 (got " + text::number(p.goalTolerance, 6) +
+                    ")");
 
     auto ctx = std::make_shared<GliderContext>();
     ctx->field = p.field;
-    ctx->travel = std::make_shared<TravelTimeCalculator>(p.field, p.travel);  // validates the travel parameters
+    ctx->travel = std::make_shared<TravelTimeCalculator>(p.field, p.travel); // validates the travel parameters
     ctx->environment = p.environment;
     ctx->region.xMin = p.xMin;
     ctx->region.xMax = p.xMax;
@@ -196,7 +191,7 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)
     const double cmax = ctx->maxCurrent();
     if (!(cmax >= 0.0) || !std::isfinite(cmax))
         throw Error("GliderProblem: the field '" + p.field->name() +
-                    "' gives no finite maximum current speed over the region (got " + num(cmax) + ")");
+                    "' gives no finite maximum current speed over the region (got " + text::number(cmax, 6) + ")");
     return ctx;
 }
 
@@ -216,8 +211,9 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
     checkPoint(p, "goal", p.goal.x, p.goal.y);
     const Region &r = ctx->region;
     if (!(p.t0 >= r.tMin && p.t0 <= r.tMax))
-        throw Error("makeSimpleSetup: departure time t0 = " + num(p.t0) + " lies outside the context's time window [" +
-                    num(r.tMin) + ", " + num(r.tMax) + "]");
+        throw Error("makeSimpleSetup: departure time t0 = " + text::number(p.t0, 6) +
+                    " lies outside the context's time window [" + text::number(r.tMin, 6) + ", " +
+                    text::number(r.tMax, 6) + "]");
     ob::RealVectorBounds b(2);
     b.setLow(0, r.xMin);
     b.setHigh(0, r.xMax);
@@ -226,7 +222,7 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
     auto space = std::make_shared<TimeSE2StateSpace>(b, r.tMin, r.tMax);
     const double vMax = ctx->speed() + ctx->maxCurrent();
     space->setTimeWeight(vMax);
-    const double sx = p.start.x, sy = p.start.y, t0 = p.t0;  // the start state's time
+    const double sx = p.start.x, sy = p.start.y, t0 = p.t0; // the start state's time
     space->setStateSamplerAllocator([sx, sy, t0, vMax](const ob::StateSpace *sp) {
         return std::make_shared<GliderStateSampler>(sp, sx, sy, t0, vMax);
     });
@@ -248,4 +244,4 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
     ss->setGoal(std::make_shared<PositionGoal>(si, p.goal.x, p.goal.y, p.goalTolerance, tEarliest, r.tMax));
     return ss;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -5,6 +5,7 @@
 
 #include <cairo.h>
 
+#include "../io/NumberText.h"
 #include "ompl_glider/output/ExecutionFiles.h"
 #include "ompl_glider/output/MapRenderer.h"
 
@@ -14,16 +15,9 @@ namespace
 {
 constexpr int kPanelW = 520, kPanelH = 420, kMarginL = 70, kMarginT = 60, kMarginB = 70;
 
-void text(cairo_t *cr, double x, double y, const std::string &s, double size, double align, bool bold = false)
+void drawText(cairo_t *cr, double x, double y, const std::string &s, double size, double align, bool bold = false)
 {
     drawCairoText(cr, x, y, s, size, bold, align, {0.0, 0.0, 0.0, 1.0});
-}
-
-std::string fmt(double v)
-{
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return b;
 }
 
 /// One panel at (x0, y0): a box per strategy of the measure chosen by @p pick, scaled by @p scale.
@@ -49,7 +43,7 @@ void panel(cairo_t *cr, double x0, double y0, const ExecutionResult &e, const st
     auto Y = [&](double v) { return py + plotH * (1.0 - (v - lo) / (hi - lo)); };
 
     cairo_set_source_rgb(cr, 0, 0, 0);
-    text(cr, x0 + kPanelW / 2.0, y0 + 28, title, 15, 0.5, true);
+    drawText(cr, x0 + kPanelW / 2.0, y0 + 28, title, 15, 0.5, true);
     cairo_set_line_width(cr, 1.0);
     for (double v = lo; v <= hi + 1e-9 * step; v += step)
     {
@@ -58,14 +52,14 @@ void panel(cairo_t *cr, double x0, double y0, const ExecutionResult &e, const st
         cairo_line_to(cr, px + plotW, Y(v));
         cairo_stroke(cr);
         cairo_set_source_rgb(cr, 0, 0, 0);
-        text(cr, px - 6, Y(v) + 4, fmt(std::abs(v) < 1e-12 * step ? 0.0 : v), 11, 1.0);
+        drawText(cr, px - 6, Y(v) + 4, text::number(std::abs(v) < 1e-12 * step ? 0.0 : v, 6), 11, 1.0);
     }
     cairo_rectangle(cr, px, py, plotW, plotH);
     cairo_stroke(cr);
     cairo_save(cr);
     cairo_translate(cr, x0 + 22, py + plotH / 2.0);
     cairo_rotate(cr, -M_PI / 2.0);
-    text(cr, 0, 0, axis, 12, 0.5);
+    drawText(cr, 0, 0, axis, 12, 0.5);
     cairo_restore(cr);
 
     const double colours[4][3] = {{0.20, 0.45, 0.75}, {0.30, 0.65, 0.35}, {0.85, 0.45, 0.15}, {0.60, 0.35, 0.70}};
@@ -76,8 +70,8 @@ void panel(cairo_t *cr, double x0, double y0, const ExecutionResult &e, const st
         const double cx = px + plotW * (static_cast<double>(k) + 0.5) / static_cast<double>(n);
         const double bw = std::min(70.0, 0.5 * plotW / static_cast<double>(n));
         cairo_set_source_rgb(cr, 0, 0, 0);
-        text(cr, cx, py + plotH + 20, e.spread[k].strategy, 12, 0.5);
-        text(cr, cx, py + plotH + 38, "n = " + std::to_string(m.count), 11, 0.5);
+        drawText(cr, cx, py + plotH + 20, e.spread[k].strategy, 12, 0.5);
+        drawText(cr, cx, py + plotH + 38, "n = " + std::to_string(m.count), 11, 0.5);
         if (m.count == 0)
             continue;
         const double *c = colours[k % 4];
@@ -109,7 +103,7 @@ void panel(cairo_t *cr, double x0, double y0, const ExecutionResult &e, const st
         cairo_fill(cr);
     }
 }
-}  // namespace
+} // namespace
 
 void writeExecutionPlot(const std::string &path, const ExecutionResult &e, const MissionSpec &m, bool svg)
 {
@@ -126,8 +120,8 @@ void writeExecutionPlot(const std::string &path, const ExecutionResult &e, const
         cairo_paint(cr);
         panel(cr, 0, 0, e, "distance to goal at the planned arrival", "distance (" + lengthAxis + ")", lengthScale,
               &StrategySpread::finalDistance);
-        panel(cr, kPanelW, 0, e, "arrival within the radius minus the planned arrival",
-              "delay (" + timeAxis + ")", timeScale, &StrategySpread::arrivalDelay);
+        panel(cr, kPanelW, 0, e, "arrival within the radius minus the planned arrival", "delay (" + timeAxis + ")",
+              timeScale, &StrategySpread::arrivalDelay);
         std::size_t runs = 0;
         for (const ExecutionRun &r : e.runs)
             runs += r.planned ? 1 : 0;
@@ -137,7 +131,7 @@ void writeExecutionPlot(const std::string &path, const ExecutionResult &e, const
                       "whiskers: extremes",
                       runs, e.truth.c_str(), e.surfacingInterval * (hours ? timeScale : 1.0), timeAxis.c_str());
         cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        text(cr, 20, H - 14, note, 12, 0.0);
+        drawText(cr, 20, H - 14, note, 12, 0.0);
     });
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

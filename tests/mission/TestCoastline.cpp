@@ -242,8 +242,8 @@ TEST(Coastline, RouteGoesAroundJamaicaAndAStartOnItIsBadInput)
     }
     // a start on the island is bad input
     MissionSpec onLand = spec;
-    onLand.start.lon = onLand.start.x = -77.3;
-    onLand.start.lat = onLand.start.y = 18.1;
+    onLand.start.lonLat.lon = onLand.start.xy.x = -77.3;
+    onLand.start.lonLat.lat = onLand.start.xy.y = 18.1;
     const MissionProblem p2(onLand);
     const PlannedPath pp = planRoute(p2, p2.getSpec().departure.time);
     EXPECT_FALSE(pp.solved);

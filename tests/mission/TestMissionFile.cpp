@@ -92,7 +92,7 @@ TEST(MissionFile, ExamplesLoad)
     ASSERT_TRUE(l.epoch.has_value());
     EXPECT_DOUBLE_EQ(*l.epoch, parseIsoTime("2026-03-15T00:00:00Z"));
     EXPECT_TRUE(l.start.geographic);
-    EXPECT_DOUBLE_EQ(l.start.lon, -52.7);
+    EXPECT_DOUBLE_EQ(l.start.lonLat.lon, -52.7);
     EXPECT_EQ(l.dive.bathymetryType, "constant");
     EXPECT_DOUBLE_EQ(l.dive.bathymetryDepth, 180.0);
     EXPECT_DOUBLE_EQ(l.travel.eps, 1.0);
@@ -204,12 +204,12 @@ TEST(MissionFile, GeographicRegionsInEitherConvention)
     {
         const RegionSpec g = region(r);
         EXPECT_TRUE(g.geographic);
-        EXPECT_EQ(g.lonMin, 170.0) << r;
-        EXPECT_EQ(g.lonMax, 190.0) << r;
+        EXPECT_EQ(g.lonLat.lonMin, 170.0) << r;
+        EXPECT_EQ(g.lonLat.lonMax, 190.0) << r;
     }
     const RegionSpec g = region("{lon_min: 350, lon_max: 10, lat_min: -5, lat_max: 5}");  // 0..360 across 0
-    EXPECT_EQ(g.lonMin, -10.0);
-    EXPECT_EQ(g.lonMax, 10.0);
+    EXPECT_EQ(g.lonLat.lonMin, -10.0);
+    EXPECT_EQ(g.lonLat.lonMax, 10.0);
     // bad bounds name the bound and its line
     std::string msg = errorOf(geo + "region:\n  lon_min: 170\n  lon_max: -170\n  lat_min: -5\n  lat_max: 95\n");
     EXPECT_HAS(msg, "m.yaml:9:");

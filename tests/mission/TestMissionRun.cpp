@@ -382,7 +382,8 @@ TEST(MissionRun, GulfStreamStraightLineImpassableAndJetFasterThanStill)
     EXPECT_LT(r.plan.travelTime, r.plan.rawTravelTime);  // refinement (on by default) gains on the jet
     EXPECT_LE(r.plan.smoothed.size(), r.plan.raw.size());
     // No path can beat the distance at V + max|c|.
-    EXPECT_GE(r.plan.travelTime, std::hypot(spec.goal.x - spec.start.x, spec.goal.y - spec.start.y) / (0.5 + 1.01));
+    EXPECT_GE(r.plan.travelTime,
+              std::hypot(spec.goal.xy.x - spec.start.xy.x, spec.goal.xy.y - spec.start.xy.y) / (0.5 + 1.01));
 }
 
 TEST(MissionRun, IslandsAndIceAreAvoided)
@@ -406,8 +407,8 @@ TEST(MissionRun, IslandsAndIceAreAvoided)
 TEST(MissionRun, StartOnAnIslandIsAnOutcomeNotAnException)
 {
     MissionSpec spec = loadMission(kExamples + "islands_ice.yaml");
-    spec.start.x = 4.5;
-    spec.start.y = -0.8;  // inside North Island
+    spec.start.xy.x = 4.5;
+    spec.start.xy.y = -0.8;  // inside North Island
     spec.dive.enabled = false;
     const MissionProblem problem(spec);
     const MissionResult r = runMission(problem);

@@ -138,10 +138,8 @@ TEST(StintMissions, LatticePathsFlownAsOneHourStintsLoseUnderTwoPercent)
           std::array<double, 4>{2.0, 3.5, 8.0, -3.5}, std::array<double, 4>{0.5, 3.0, 5.0, -3.0}})
     {
         MissionSpec m = defaultGulfStreamMission();
-        m.start.x = sx;
-        m.start.y = sy;
-        m.goal.x = gx;
-        m.goal.y = gy;
+        m.start.xy = {sx, sy};
+        m.goal.xy = {gx, gy};
         m.stints.set = true;
         m.stints.duration = hour;
         m.stints.missionDuration = 40.0;

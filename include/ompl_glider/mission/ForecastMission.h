@@ -5,7 +5,6 @@
 /// it gives is planned by the same pipeline as every other mission.
 
 #include <cstddef>
-#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -28,10 +27,11 @@ struct ForecastInput
     Point2 start;  ///< start: lon,lat (x = lon, y = lat; longitude in -180..180 or 0..360, whatever the file's
                    ///< convention) for a geographic file, x,y for a Cartesian one
     Point2 goal;   ///< goal, as start
-    /// Region to load and plan in: lon_min, lat_min, lon_max, lat_max (a GeoJSON bbox; either convention,
-    /// lon_max < lon_min across the antimeridian: regionFault()), or x_min, y_min, x_max, y_max for a Cartesian
-    /// file. None: the trip's region (netCdfLoadOptions()).
-    std::optional<std::array<double, 4>> region;
+    /// Region to load and plan in, as given (unchecked): for a geographic file x = lon, y = lat (xMin = lon_min,
+    /// xMax = lon_max, in either convention, xMax < xMin across the antimeridian: regionFault()); for a Cartesian
+    /// file x/y bounds. Messages quote it in GeoJSON bbox order (xMin, yMin, xMax, yMax). None: the trip's region
+    /// (netCdfLoadOptions()).
+    std::optional<Box> region;
     /// ISO 8601 date or seconds after the first forecast time; empty: the first forecast time. A steady field takes
     /// any departure; for a steady file without dates, a date is the date of field time 0 (the outputs' ISO times).
     std::string departure;

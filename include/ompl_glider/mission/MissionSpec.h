@@ -13,10 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/Geometry.h"
 #include "ompl_glider/cost/DiveProfile.h"
 #include "ompl_glider/cost/TravelTimeCalculator.h"
 #include "ompl_glider/current/BeyondForecast.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/current/Interpolation.h"
 #include "ompl_glider/stints/StintSimulator.h"
 #include "ompl_glider/io/Time.h"
@@ -35,10 +37,8 @@ struct SourceMark
 struct PointSpec
 {
     bool geographic{false};  ///< lon/lat given
-    double x{0.0};           ///< x (planning units) when !geographic
-    double y{0.0};           ///< y
-    double lon{0.0};         ///< longitude, degrees east, when geographic (-180..180 or 0..360)
-    double lat{0.0};         ///< latitude, degrees north
+    Point2 xy;               ///< x/y (planning units) when !geographic
+    LonLat lonLat;           ///< lon/lat (degrees; longitude -180..180 or 0..360) when geographic
 };
 
 /// @brief Local projection of the mission: azimuthal equidistant about (lon0, lat0) (as the NetCDF loader uses).
@@ -116,10 +116,10 @@ struct RegionSpec
 {
     bool set{false};         ///< a region was given (else: the NetCDF grid extent, or required for analytic flows)
     bool geographic{false};  ///< given as lon/lat
-    double xMin{0}, xMax{0}, yMin{0}, yMax{0};          ///< x/y bounds
-    /// lon/lat bounds as loaded (GeoBox): lonMin in -180..180, lonMax = lonMin + width (beyond 180 across the
-    /// antimeridian), whatever convention the file used
-    double lonMin{0}, lonMax{0}, latMin{0}, latMax{0};
+    Box xy;                  ///< x/y bounds (planning units) when !geographic
+    /// lon/lat bounds as loaded, when geographic: lonMin in -180..180, lonMax = lonMin + width (beyond 180 across
+    /// the antimeridian), whatever convention the file used
+    GeoBox lonLat;
 };
 
 /// @brief Departure: a fixed time, or a window searched for the optimal departure ([EichhornRAS] Sec. 5).

@@ -10,13 +10,6 @@ namespace ompl_glider
 {
 namespace netcdf_detail
 {
-std::string numText(double v)
-{
-    std::ostringstream os;
-    os.precision(10);
-    os << v;
-    return os.str();
-}
 
 std::size_t firstFillOrNonFinite(const NcFile &f, int var, const std::vector<double> &values)
 {
@@ -32,7 +25,7 @@ void checkAxisValues(const NcFile &f, int var, const std::vector<double> &values
     const std::size_t k = firstFillOrNonFinite(f, var, values);
     if (k < values.size())
         throw f.error(kind + " '" + f.varName(var) + "' holds fill values or non-finite numbers (" +
-                      numText(values[k]) + " at index " + std::to_string(k) + "); expected finite coordinates");
+                      text::number(values[k]) + " at index " + std::to_string(k) + "); expected finite coordinates");
 }
 
 std::size_t monotonicBreak(const std::vector<double> &values)
@@ -51,8 +44,8 @@ void checkStrictlyMonotonic(const NcFile &f, const std::vector<double> &values, 
 {
     const std::size_t k = monotonicBreak(values);
     if (k < values.size())
-        throw f.error(kind + " '" + name + "' is not strictly monotonic: " + numText(shown[k - 1]) + " at index " +
-                      std::to_string(k - 1) + ", then " + numText(shown[k]) + " at index " + std::to_string(k));
+        throw f.error(kind + " '" + name + "' is not strictly monotonic: " + text::number(shown[k - 1]) + " at index " +
+                      std::to_string(k - 1) + ", then " + text::number(shown[k]) + " at index " + std::to_string(k));
 }
 
 std::vector<double> unwrapLongitudes(const std::vector<double> &lon)

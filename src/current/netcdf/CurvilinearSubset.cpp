@@ -27,7 +27,7 @@ void checkNodeValues(const NcFile &f, int var, const std::vector<double> &v, con
     const std::size_t k = firstFillOrNonFinite(f, var, v);
     if (k < v.size())
         throw f.error("coordinate '" + f.varName(var) + "' holds fill values or non-finite numbers (" +
-                      numText(v[k]) + " at (j, i) = (" + std::to_string(rows[k / cols.size()]) + ", " +
+                      text::number(v[k]) + " at (j, i) = (" + std::to_string(rows[k / cols.size()]) + ", " +
                       std::to_string(cols[k % cols.size()]) + ")); expected finite coordinates");
 }
 

@@ -66,7 +66,7 @@ AxisSelection selectDepths(const NcFile &f, const Layout &l, double maxDepth)
     for (std::size_t k = 1; k < order.size(); ++k)
         if (zs[order[k]] == zs[order[k - 1]])
             throw f.error("depth '" + f.varName(l.coordVar[std::size_t(l.dimZ)]) + "' has the depth " +
-                          numText(zs[order[k]]) + " m twice (indices " + std::to_string(order[k - 1]) + " and " +
+                          text::number(zs[order[k]]) + " m twice (indices " + std::to_string(order[k - 1]) + " and " +
                           std::to_string(order[k]) + "); expected distinct depths");
     std::size_t last = order.size() - 1;
     if (std::isfinite(maxDepth))

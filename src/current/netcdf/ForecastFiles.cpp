@@ -54,7 +54,7 @@ std::string iso(double calendarSeconds, Calendar c)
 
 std::string hoursText(double seconds)
 {
-    return numText(seconds / 3600.0) + " h";
+    return text::number(seconds / 3600.0) + " h";
 }
 
 /// The files' time axes on one origin (the first time of the earliest file). Records of a file at or after the
@@ -167,8 +167,8 @@ std::string firstDifference(const std::vector<T> &a, const std::vector<T> &b, co
         return what + ": " + std::to_string(a.size()) + " values against " + std::to_string(b.size());
     for (std::size_t k = 0; k < a.size(); ++k)
         if (a[k] != b[k])
-            return what + " at index " + std::to_string(k) + ": " + numText(double(a[k])) + " against " +
-                   numText(double(b[k]));
+            return what + " at index " + std::to_string(k) + ": " + text::number(double(a[k])) + " against " +
+                   text::number(double(b[k]));
     return "";
 }
 

@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "../../io/NcFile.h"
+#include "../../io/NumberText.h"
 #include "../../io/TextUtil.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
@@ -247,7 +248,7 @@ HorizontalSubset curvilinearSubset(const NcFile &f, const Layout &l, const Regio
 // ---- coordinate values (AxisChecks.cpp) ----
 
 /// A number for messages: up to 10 significant digits ("47.4", "9.969209968e+36").
-std::string numText(double v);
+
 /// Index of the first value that is NaN, infinite or a fill value of var (packingOf(): _FillValue or the netCDF
 /// default fill, missing_value, outside valid_min/valid_max/valid_range); values.size() when there is none.
 std::size_t firstFillOrNonFinite(const NcFile &f, int var, const std::vector<double> &values);

@@ -58,8 +58,8 @@ TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated, const std:
     checkAxisValues(f, tv, raw, "time variable");
     const std::size_t bad = firstNotIncreasing(raw);
     if (bad < raw.size())
-        throw f.error("time variable '" + tn + "' is not strictly monotonic: " + numText(raw[bad - 1]) +
-                      " at index " + std::to_string(bad - 1) + ", then " + numText(raw[bad]) + " at index " +
+        throw f.error("time variable '" + tn + "' is not strictly monotonic: " + text::number(raw[bad - 1]) +
+                      " at index " + std::to_string(bad - 1) + ", then " + text::number(raw[bad]) + " at index " +
                       std::to_string(bad) + "; expected increasing times");
     const std::string cal = f.attText(tv, "calendar").value_or("standard");
     std::vector<double> &ts = out.times;
@@ -88,7 +88,7 @@ TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated, const std:
         ts = raw;
     for (std::size_t j = 0; j < ts.size(); ++j)
         if (!std::isfinite(ts[j]) || (j > 0 && !(ts[j] > ts[j - 1])))
-            throw f.error("time variable '" + tn + "': " + numText(raw[j]) + " at index " + std::to_string(j) +
+            throw f.error("time variable '" + tn + "': " + text::number(raw[j]) + " at index " + std::to_string(j) +
                           " does not convert to a finite time in seconds after the one before");
     return out;
 }

@@ -222,8 +222,8 @@ void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, P
         if (!n["x"] || !n["y"])
             r.fail(n, field, "both x and y are required");
         p.geographic = false;
-        p.x = r.finite(n["x"], field + ".x");
-        p.y = r.finite(n["y"], field + ".y");
+        p.xy.x = r.finite(n["x"], field + ".x");
+        p.xy.y = r.finite(n["y"], field + ".y");
     }
     else
     {
@@ -232,11 +232,11 @@ void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, P
         if (!m.projection.set && !m.current.isForecast())
             r.fail(n, field, "lon/lat needs a 'projection' (lon0, lat0) in the mission");
         p.geographic = true;
-        p.lon = r.finite(n["lon"], field + ".lon");
-        p.lat = r.finite(n["lat"], field + ".lat");
-        if (std::abs(p.lat) > 90)
+        p.lonLat.lon = r.finite(n["lon"], field + ".lon");
+        p.lonLat.lat = r.finite(n["lat"], field + ".lat");
+        if (std::abs(p.lonLat.lat) > 90)
             r.fail(n["lat"], field + ".lat", "latitude must be within [-90, 90]");
-        if (p.lon < -180.0 || p.lon > 360.0)
+        if (p.lonLat.lon < -180.0 || p.lonLat.lon > 360.0)
             r.fail(n["lon"], field + ".lon", "longitude must be within -180..180 or 0..360");
     }
 }

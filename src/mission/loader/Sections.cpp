@@ -279,13 +279,13 @@ void readRegion(const Reader &r, const YAML::Node &n, MissionSpec &m)
     g.geographic = geo;
     if (xy)
     {
-        g.xMin = need("x_min");
-        g.xMax = need("x_max");
-        g.yMin = need("y_min");
-        g.yMax = need("y_max");
-        if (!(g.xMax > g.xMin))
+        g.xy.xMin = need("x_min");
+        g.xy.xMax = need("x_max");
+        g.xy.yMin = need("y_min");
+        g.xy.yMax = need("y_max");
+        if (!(g.xy.xMax > g.xy.xMin))
             r.fail(n["x_max"], f + ".x_max", "must be > x_min");
-        if (!(g.yMax > g.yMin))
+        if (!(g.xy.yMax > g.xy.yMin))
             r.fail(n["y_max"], f + ".y_max", "must be > y_min");
     }
     else
@@ -297,11 +297,7 @@ void readRegion(const Reader &r, const YAML::Node &n, MissionSpec &m)
         // either convention; lon_max < lon_min crosses the antimeridian (RFC 7946 bbox), stored unwrapped
         if (const auto fault = regionFault(lonMin, latMin, lonMax, latMax))
             r.fail(n[fault->bound], f + "." + fault->bound, fault->what);
-        const GeoBox box = geoBox(lonMin, latMin, lonMax, latMax);
-        g.lonMin = box.lonMin;
-        g.lonMax = box.lonMax;
-        g.latMin = box.latMin;
-        g.latMax = box.latMax;
+        g.lonLat = geoBox(lonMin, latMin, lonMax, latMax);
     }
 }
 
