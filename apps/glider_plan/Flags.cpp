@@ -216,7 +216,7 @@ void applyArrivalWindow(const Flags &f, MissionSpec &m)
     if (!(t[1] >= t[0]))
         throw UsageError{"--arrive-between: the end (" + items[1] + ") must not be before the begin (" + items[0] +
                          ")"};
-    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints())
+    if (const PlannerEntry *planner = findPlanner(m.planner.name); planner && planner->stints())
         throw UsageError{"--arrive-between: the stint planner '" + m.planner.name +
                          "' flies fixed stints and cannot time its arrival"};
     m.goalWindow = {true, t[0], t[1]};

@@ -169,17 +169,19 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         readPlanner(r, root["planner"], m);
     if (root["stints"])
         readStints(r, root["stints"], m);
-    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints() && !m.stints.set)
+    const PlannerEntry *planner = findPlanner(m.planner.name);
+    const bool stintPlanner = planner && planner->stints();
+    if (stintPlanner && !m.stints.set)
         r.fail(root["planner"]["name"], "planner.name",
                "planner '" + m.planner.name +
                    "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
-    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints() && m.departure.window &&
+    if (stintPlanner && m.departure.window &&
         m.stints.objective == StintObjective::RemainingDistance)
         r.fail(root["departure"]["window"], "departure.window",
                "the departure window is searched for the earliest arrival; the stint planner '" + m.planner.name +
                    "' with the remaining_distance objective has none: give departure.time, or stints.objective: "
                    "earliest_arrival with a radius");
-    if (findPlanner(m.planner.name) && findPlanner(m.planner.name)->stints() && m.goalWindow.set)
+    if (stintPlanner && m.goalWindow.set)
         r.fail(root["goal"]["window"], "goal.window",
                "the stint planner '" + m.planner.name +
                    "' flies fixed stints and cannot time its arrival: remove the window or use another planner");
