@@ -70,6 +70,7 @@ DiveEnd flyHeading(double x, double y, double t, double hx, double hy, double tE
                 {
                     e.reached = true;
                     e.arrivalTime = t + q * h;
+                    e.arrival = {x + q * ex, y + q * ey, e.arrivalTime};
                 }
             }
         }

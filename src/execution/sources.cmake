@@ -1,5 +1,6 @@
 # execution/: flying a plan in another ocean (surfacings, control strategies; issue 13)
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Dive.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/HeadingRoute.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Execution.cpp
 )

@@ -47,14 +47,6 @@ void StintSettings::check() const
         throw Error("stints.step: must be >= 0 and finite, at most 10^6 steps per stint");
 }
 
-double bearingOf(double dx, double dy)
-{
-    double b = std::atan2(dx, dy) * 180.0 / 3.14159265358979323846;
-    if (b < 0.0)
-        b += 360.0;
-    return b >= 360.0 ? 0.0 : b;
-}
-
 StintSimulator::StintSimulator(std::shared_ptr<const CurrentField> field, std::shared_ptr<const Environment> forbidden,
                                double speed, double maxCurrent, Point2 start, double t0, Point2 goal,
                                StintSettings settings)

@@ -35,6 +35,7 @@ struct DiveEnd
     double x{0.0}, y{0.0}, t{0.0};  ///< last position and time (the surfacing, the arrival or the grounding)
     bool reached{false};            ///< the goal came within the radius (then x, y, t is the end of that step)
     double arrivalTime{std::numeric_limits<double>::quiet_NaN()};  ///< first time within the radius
+    TimedPoint arrival;             ///< where and when (on the step's chord) the radius was first met, when reached
     bool grounded{false};           ///< land or a forbidden region ended the dive at (x, y, t)
     std::string why;                ///< what was met, and where (planning frame)
     /// With a goal radius: the closest approach to the goal on the dive's steps (chords) and its time

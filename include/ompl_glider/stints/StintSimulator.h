@@ -21,6 +21,7 @@
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/environment/Environment.h"
 #include "ompl_glider/execution/Dive.h"
+#include "ompl_glider/execution/HeadingRoute.h"
 
 namespace ompl_glider
 {
@@ -137,13 +138,4 @@ private:
     std::shared_ptr<std::atomic<std::uint64_t>> flown_;
 };
 
-/// @brief Degrees clockwise from north -> unit heading (hx, hy) = (sin b, cos b).
-inline Point2 bearingVector(double bearingDeg)
-{
-    constexpr double kDeg = 3.14159265358979323846 / 180.0;
-    return {std::sin(bearingDeg * kDeg), std::cos(bearingDeg * kDeg)};
-}
-
-/// @brief (dx, dy) -> bearing in degrees clockwise from north, in [0, 360).
-double bearingOf(double dx, double dy);
 }  // namespace ompl_glider
