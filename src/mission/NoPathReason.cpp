@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "PlanningInternal.h"
+#include "ompl_glider/planners/IsochronePlanner.h"
 #include "ompl_glider/planners/Wavefront.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/reachability/LevelSetPlanner.h"
@@ -40,10 +41,12 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
     }
     if (const auto *l = dynamic_cast<const LevelSetPlanner *>(&planner);
         l && status == ompl::base::PlannerStatus::ABORT)
-        return l->lastReachability().goalReached ?
-                   "the level-set path cannot be flown as straight legs at this resolution: try a finer one" :
+        return l->lastReachability().goalReached ? l->lastReason() :
                    "the reachable front never reaches the goal within the time window (walled in by land or "
                    "forbidden regions, or a closure that does not open in time)";
+    if (const auto *iso = dynamic_cast<const IsochronePlanner *>(&planner);
+        iso && status == ompl::base::PlannerStatus::ABORT && !iso->lastReason().empty())
+        return iso->lastReason();
     if (const auto *w = dynamic_cast<const Wavefront *>(&planner))
     {
         switch (w->lastOutcome())

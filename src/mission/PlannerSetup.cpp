@@ -110,10 +110,10 @@ RefinerParams refinerParams(const MissionSpec &m)
 /// The configured planner of the mission on the setup's space information.
 ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::base::SpaceInformationPtr &si,
                                    const std::shared_ptr<const GliderContext> &ctx, double grid, int sectors,
-                                   double departure)
+                                   double departure, const std::string &other)
 {
     const MissionSpec &m = problem.getSpec();
-    const PlannerEntry &entry = plannerEntry(m.planner.name);
+    const PlannerEntry &entry = plannerEntry(other.empty() ? m.planner.name : other);
     ompl::base::PlannerPtr planner = entry.make(si, ctx);
     if (auto st = std::dynamic_pointer_cast<StintPlanner>(planner))
     {
@@ -135,7 +135,8 @@ ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::ba
         if (params.hasParam(name) && !params.setParam(name, value))
             throw Error(m.place(std::string("planner.") + name) + ": planner '" + entry.name + "' refused " + name +
                         " = " + value);
-    applyParameters(m, *planner);
+    if (other.empty())
+        applyParameters(m, *planner);
     if (auto w = std::dynamic_pointer_cast<Wavefront>(planner))
     {
         // the interval count its search would refuse, named here by the field that set the interval

@@ -131,7 +131,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     PlannedPath r;
     r.departure = departure;
     r.speed = std::isnan(o.speed) ? m.vehicle.speed : o.speed;
-    const PlannerEntry &entry = plannerEntry(m.planner.name);
+    const PlannerEntry &entry = plannerEntry(o.planner.empty() ? m.planner.name : o.planner);
     r.planner = entry.name;
     const double grid = o.gridSize > 0 ? o.gridSize : m.planner.gridSize;
     const int sectors = o.sectors > 0 ? o.sectors : m.planner.sectors;
@@ -151,7 +151,8 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     }
     std::shared_ptr<GliderContext> ctx;
     const ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(gp, &ctx);
-    const ompl::base::PlannerPtr planner = makePlanner(problem, ss->getSpaceInformation(), ctx, grid, sectors, departure);
+    const ompl::base::PlannerPtr planner = makePlanner(problem, ss->getSpaceInformation(), ctx, grid, sectors, departure,
+                                                         o.planner);
     ss->setPlanner(planner);
     r.straightLineTime = legTravelTime(*ctx, s.x, s.y, g.x, g.y, departure);
 
@@ -187,6 +188,9 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
             return r;
         }
     r.solved = ss->haveExactSolutionPath();
+    if (const auto *source = dynamic_cast<const HeadingRouteSource *>(planner.get()))
+        if (r.solved && source->lastHeadingRoute())
+            return headingResult(problem, *ctx, *source->lastHeadingRoute(), std::move(r));
     if (!r.solved)
     {
         r.reason = noPathReason(status, *planner, dynamic_cast<const GliderSimpleSetup *>(ss.get()), limit);
@@ -243,6 +247,7 @@ PlannedPath planRoute(const MissionProblem &problem, double departure, const Pla
 {
     using namespace planning_detail;
     PlannedPath r = problem.getMembers().empty() ? planOnField(problem, departure, o) : planRobust(problem, departure, o);
+    r = switchToHeadings(problem, departure, o, std::move(r));
     timeArrival(problem, r);
     if (r.solved)
         r.holdTime = holdTimeOf(r.path);

@@ -55,7 +55,7 @@ RefinerParams refinerParams(const MissionSpec &m);
 /// The configured planner of the mission on the setup's space information.
 ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::base::SpaceInformationPtr &si,
                                    const std::shared_ptr<const GliderContext> &ctx, double grid, int sectors,
-                                   double departure);
+                                   double departure, const std::string &other = "");
 
 /// The problem of one departure, its departure time checked first so that the error names where it was given.
 GliderProblem checkedProblem(const MissionProblem &problem, double departure, double speed);
@@ -77,6 +77,19 @@ std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp);
 
 /// planRoute() on the problem's one field.
 PlannedPath planOnField(const MissionProblem &problem, double departure, const PlanOptions &o);
+
+// HeadingRoutes.cpp
+
+/// The result of a planner that returned a heading route (HeadingRouteSource): the route flown once more by the one
+/// integrator at a fine step, its segment ends as the path, its track kept; no smoothing or waypoint refinement.
+PlannedPath headingResult(const MissionProblem &problem, const GliderContext &ctx, const HeadingRoute &route,
+                          PlannedPath r);
+
+/// The default's switch (issue 24): a lattice planner that found no path on a well-formed problem hands over to the
+/// heading planner (Isochrone), and that one to the level set; "no path" stays only when the level set's front
+/// never reaches the goal within the time window. Returns @p failed unchanged for other planners and outcomes.
+PlannedPath switchToHeadings(const MissionProblem &problem, double departure, const PlanOptions &o,
+                             PlannedPath failed);
 
 // Ensembles.cpp
 

@@ -9,6 +9,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
   # the planning pipeline, one concern per file (see PlanningInternal.h)
   ${CMAKE_CURRENT_LIST_DIR}/Planning.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/HeadingRoutes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PlannerSetup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/NoPathReason.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Ensembles.cpp

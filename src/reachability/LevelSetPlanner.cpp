@@ -4,12 +4,14 @@
 #include <cmath>
 #include <limits>
 
+#include <ompl/base/goals/GoalRegion.h>
 #include <ompl/geometric/PathGeometric.h>
 #include <ompl/util/Console.h>
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "ompl_glider/planners/HeadingRefiner.h"
 #include "ompl_glider/planners/PathSmoother.h"
 
 namespace ompl_glider
@@ -68,6 +70,39 @@ std::string infeasibleLegReason(const GliderContext &ctx, const std::vector<Time
     return "leg from (" + std::to_string(path[a].x) + ", " + std::to_string(path[a].y) + ") at time " +
            std::to_string(t) + " (level set " + std::to_string(path[a].t) + ") to the next point is infeasible" +
            (env.empty() ? "" : ": " + env);
+}
+
+/// The steering directions along a backtracked level-set path (issue 24): between two points, the bearing of the
+/// velocity through the water, (p1 - p0) / dt - c at the middle, held for dt; then refined to end at the goal.
+RefinedHeadings levelSetHeadings(const GliderContext &ctx, const std::vector<TimedPoint> &path, Point2 goal,
+                                 double tolerance, double tEnd)
+{
+    HeadingRoute route;
+    RefinedHeadings none;
+    if (path.size() < 2)
+    {
+        none.why = "the backtracked path has fewer than two points";
+        return none;
+    }
+    route.start = {path.front().x, path.front().y};
+    route.departure = path.front().t;
+    const double depth = ctx.travel->params().depth;
+    for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    {
+        const TimedPoint &a = path[i], &b = path[i + 1];
+        const double dt = b.t - a.t;
+        if (!(dt > 0.0))
+            continue;
+        const Velocity c = ctx.field->velocity(0.5 * (a.x + b.x), 0.5 * (a.y + b.y), depth, 0.5 * (a.t + b.t));
+        const double wx = (b.x - a.x) / dt - c.u, wy = (b.y - a.y) / dt - c.v;
+        route.segments.push_back({bearingOf(wx, wy), dt});
+    }
+    HeadingRefineSettings s;
+    s.segments = static_cast<unsigned>(std::clamp<std::size_t>(route.segments.size() / 4, 16, 64));
+    s.depth = depth;
+    s.radius = std::max(tolerance, 1e-12);
+    s.tEnd = tEnd;
+    return refineHeadingRoute(route, goal, ctx, s);
 }
 }  // namespace
 
@@ -201,6 +236,8 @@ void LevelSetPlanner::clear()
     Planner::clear();
     last_ = Reachability();
     waypoints_.clear();
+    headings_ = HeadingRoute();
+    reason_.clear();
     levelSetTime_ = 0.0;
 }
 
@@ -225,6 +262,8 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
     p.clearance = 0.5 * p.cellSize;  // the legs between backtracked points must clear the forbidden regions
     const LevelSetSolver solver(ctx_, p);
     const double tEnd = std::min(r.tMax, ctx_->field->timeEnd());
+    headings_ = HeadingRoute();
+    reason_.clear();
     last_ = solver.solve(sx, sy, t0, tEnd, Point2{gx, gy}, true, [&ptc] { return ptc(); });
     waypoints_.clear();
     if (!last_.goalReached)
@@ -241,9 +280,19 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
     waypoints_ = levelSetWaypoints(*ctx_, last_.path, p.cellSize / 3.0, &why);
     if (waypoints_.empty())
     {
-        OMPL_ERROR("%s: the backtracked path cannot be flown as straight legs (resolution %g): %s", getName().c_str(),
-                   p.cellSize, why.c_str());
-        return ompl::base::PlannerStatus::ABORT;
+        // no straight legs: the steering directions along the backtracked path, as held headings
+        OMPL_INFORM("%s: the backtracked path cannot be flown as straight legs (resolution %g): %s; flying its "
+                    "headings", getName().c_str(), p.cellSize, why.c_str());
+        const auto *goal = pdef_->getGoal()->as<ompl::base::GoalRegion>();
+        const RefinedHeadings h = levelSetHeadings(*ctx_, last_.path, Point2{gx, gy}, goal->getThreshold(), tEnd);
+        if (!h.ok)
+        {
+            reason_ = "the level set reached the goal, but neither straight legs nor its headings could be flown to "
+                      "it: " + why + "; " + h.why;
+            return ompl::base::PlannerStatus::ABORT;
+        }
+        headings_ = h.route;
+        waypoints_ = h.flight.ends;
     }
     auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
     waypointsToPath(waypoints_, *path);

@@ -15,6 +15,7 @@
 #include <ompl/geometric/planners/sst/SST.h>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/planners/IsochronePlanner.h"
 #include "ompl_glider/planners/Wavefront.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/reachability/LevelSetPlanner.h"
@@ -80,6 +81,18 @@ PlannerEntry levelSet()
     };
     return e;
 }
+PlannerEntry isochrone()
+{
+    PlannerEntry e;
+    e.name = "Isochrone";
+    e.aliases = {};
+    e.description = "held headings for strong currents: isochrone fronts on a heading lattice, then shooting refinement";
+    e.family = PlannerFamily::Headings;
+    e.make = [](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &ctx) {
+        return std::make_shared<IsochronePlanner>(si, ctx);
+    };
+    return e;
+}
 PlannerEntry stint(StintMethod method, std::vector<std::string> aliases, const std::string &what)
 {
     PlannerEntry e;
@@ -103,6 +116,7 @@ const std::vector<PlannerEntry> &plannerRegistry()
         lattice("ZTVE", {"ztve"}, "TVE with Zermelo pruning"),
         lattice("ZA*TVE", {"zastartve", "ZAStarTVE"}, "TVE with A* heuristic and certified Zermelo pruning (default)"),
         levelSet(),
+        isochrone(),
         wavefront(),
         sampling<og::RRTstar>("RRTstar", {"RRT*"}, "OMPL RRT*"),
         sampling<og::InformedRRTstar>("InformedRRTstar", {"InformedRRT*"}, "OMPL Informed RRT*"),

@@ -35,6 +35,9 @@ struct HeadingRoute
     Point2 start;                          ///< start (planning frame)
     double departure{0.0};                 ///< departure (field time)
     std::vector<HeadingSegment> segments;  ///< flown in order
+    /// RK4 step at which the route was computed and checked (0: none given); flights of the route use it so that
+    /// they follow the planner's own
+    double step{0.0};
 
     /// @brief Sum of the segments' durations.
     double duration() const
@@ -68,6 +71,16 @@ struct HeadingFlight
 /// Segments with a duration <= 0 are skipped. DiveSettings::speed is the speed through water.
 HeadingFlight flyHeadingRoute(const HeadingRoute &route, const CurrentField &field, const Environment *forbidden,
                               const DiveSettings &settings, bool keepTrack = true);
+
+/// @brief A planner whose result is a heading route (IsochronePlanner, LevelSetPlanner in strong currents): the
+/// pipeline asks it for the route after a solve and uses it instead of straight legs between the path's states.
+class HeadingRouteSource
+{
+public:
+    virtual ~HeadingRouteSource() = default;
+    /// @brief The last solve's heading route; null when it returned straight legs or nothing.
+    virtual const HeadingRoute *lastHeadingRoute() const = 0;
+};
 
 /// @brief Degrees clockwise from north -> unit heading (hx, hy) = (sin b, cos b).
 inline Point2 bearingVector(double bearingDeg)

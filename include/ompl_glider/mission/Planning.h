@@ -15,6 +15,7 @@
 
 #include "ompl_glider/Progress.h"
 #include "ompl_glider/cost/DiveProfile.h"
+#include "ompl_glider/execution/HeadingRoute.h"
 #include "ompl_glider/mission/DepartureTimeSearch.h"
 #include "ompl_glider/mission/Isochrones.h"
 #include "ompl_glider/mission/MissionExecution.h"
@@ -32,6 +33,9 @@ struct PlanOptions
     int sectors{0};                                          ///< lattice sectors
     std::optional<bool> smoothing;                           ///< smoothing ([EichhornRAS] Table 3)
     std::optional<bool> refinement;                          ///< waypoint refinement
+    /// Another planner than the mission's (by registry name; the mission's planner parameters are then not applied):
+    /// the pipeline's switch to a heading planner (issue 24); empty: the mission's
+    std::string planner;
 };
 
 /// @brief How a plan fares over the members of an ensemble current (planRoute() with MissionProblem::getMembers()).
@@ -117,6 +121,20 @@ struct PlannedPath
     /// Stints: the plan of a stint planner (then path holds its surfacings), or the path converted to stints
     std::optional<StintOutcome> stints;
     std::optional<EnsemblePlan> ensemble;  ///< with an ensemble current: how the plan fares per member
+    /// A route of held headings (issue 24: IsochronePlanner, LevelSet in strong currents): the headings flown from the
+    /// start; then path holds the segment ends (with their times) and track the flown track. Unset for straight legs.
+    std::optional<HeadingRoute> headings;
+    std::vector<TimedPoint> track;  ///< the flown track of a heading route (every integration step; start first)
+    /// The planner first asked when the pipeline switched to another one (a lattice without a path, issue 24), and
+    /// why; both empty when it did not switch
+    std::string switchedFrom;
+    std::string switchReason;  ///< see switchedFrom
+
+    /// @brief True for a route of held headings.
+    bool headingRoute() const
+    {
+        return headings.has_value();
+    }
 
     /// @brief CFC of planner and post-processing together.
     std::uint64_t totalCostFunctionCalls() const

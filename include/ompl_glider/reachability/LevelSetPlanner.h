@@ -7,6 +7,7 @@
 
 #include <ompl/base/Planner.h>
 
+#include "ompl_glider/execution/HeadingRoute.h"
 #include "ompl_glider/ompl/GliderContext.h"
 #include "ompl_glider/reachability/LevelSet.h"
 
@@ -24,11 +25,17 @@ namespace ompl_glider
 /// close to, not equal to, the front's arrival time getLevelSetTime() (the continuous optimum at this resolution,
 /// with the clearance).
 ///
+/// Where no straight legs can follow the backtracked path (a cross current stronger than the vehicle, issue 24) the
+/// result is a heading route instead (HeadingRouteSource): the steering direction along the path, the direction of
+/// the velocity through the water (dx/dt - c) between backtracked points ([LollaLevelSet]: "a sequence of steering
+/// directions"), refined by direct shooting (HeadingRefiner.h) so that its flight ends at the goal. The returned
+/// PathGeometric then holds the segment ends.
+///
 /// Declared parameters: "resolution" (cell size, the field's length unit; 0: 1/200 of the region's larger side),
 /// "cfl", "threads". Outcomes: EXACT_SOLUTION; ABORT when the front never reaches the goal within the region's time
 /// window (no path: walled in, a lane that never opens); TIMEOUT when the termination condition stopped it;
 /// INVALID_START / INVALID_GOAL outside the region; UNRECOGNIZED_GOAL_TYPE for goals without a position.
-class LevelSetPlanner : public ompl::base::Planner
+class LevelSetPlanner : public ompl::base::Planner, public HeadingRouteSource
 {
 public:
     LevelSetPlanner(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx);
@@ -74,6 +81,17 @@ public:
     {
         return last_;
     }
+    /// @brief The heading route of the last solve when its backtracked path could not be flown as straight legs
+    /// (issue 24): the steering directions along the backtracked path, refined to end at the goal; null otherwise.
+    const HeadingRoute *lastHeadingRoute() const override
+    {
+        return headings_.segments.empty() ? nullptr : &headings_;
+    }
+    /// @brief Why the last solve returned no path (empty otherwise).
+    const std::string &lastReason() const
+    {
+        return reason_;
+    }
     /// @brief The last solve's path as waypoints (the states of the returned path).
     const std::vector<TimedPoint> &getWaypoints() const
     {
@@ -88,6 +106,8 @@ private:
     double levelSetTime_{0.0};
     Reachability last_;
     std::vector<TimedPoint> waypoints_;
+    HeadingRoute headings_;
+    std::string reason_;
 };
 
 /// @brief The cell size LevelSetPlanner uses for resolution 0: 1/200 of the region's larger side.

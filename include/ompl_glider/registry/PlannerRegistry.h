@@ -20,6 +20,8 @@ enum class PlannerFamily
     Lattice,   ///< a lattice search (the ZAStarTVE configurations, Wavefront): grid_size / sectors apply; runs to its
                ///< own end (no default time limit)
     LevelSet,  ///< the level-set front: runs to its own end, like the lattice
+    Headings,  ///< a heading planner (IsochronePlanner): routes of held headings, for currents stronger than the
+               ///< vehicle; runs to its own end
     Sampling,  ///< an OMPL sampling planner: uses all the time it is given (10 s by default)
     Stints     ///< a StintPlanner method: flies constant-bearing stints (a mission's `stints` section applies;
                ///< [IsernObstacles]); its own caps bound the work
