@@ -16,8 +16,8 @@
 //      T* = |r1 - r0| / V (lower bound (1) attained), and any other point at radius r1 takes strictly longer
 //      (equality in (1) forces the radial heading almost everywhere, hence that spiral).
 //  (3) From the centre, the first heading chooses theta0 freely, so every point at distance d is reached at best in
-//      T* = d / V, whatever vmax: the reachable set at time t is the disc of radius V t ([LollaLevelSet]'s Rankine
-//      benchmark). The optimal route ends at angle theta0 + (vmax / V)(d / R) for d <= R and
+//      T* = d / V, whatever vmax: the earliest-arrival front at time t is the circle of radius V t (the kind of
+//      analytic answer [LollaLevelSet] checks its Rankine-vortex benchmark against). The optimal route ends at angle theta0 + (vmax / V)(d / R) for d <= R and
 //      theta0 + (vmax / V)(2 - R / d) for d > R, so the first heading is theta_goal minus that turn.
 //  (4) Upper bounds (flown routes, not optimal in general): two points at the same radius r, the second at the
 //      counter-clockwise angle dtheta from the first, are joined in r dtheta / (w(r) + V) by the circle flown with

@@ -22,9 +22,10 @@ struct RankineVortexParams
 /// rotation at the angular speed vmax / R) and w(r) = vmax R / r outside (irrotational). The velocity is continuous,
 /// its Jacobian jumps at r = R (the core's value is used on the circle itself). Stream function
 /// psi = vmax r^2 / (2R) inside, vmax R (1/2 + ln(r / R)) outside, plus v x - u y. Divergence-free.
-/// Without background stream the flow has no radial component, which gives closed-form travel times: from the
-/// centre every point at distance d is reached at best in d / V, whatever vmax ([LollaLevelSet]'s benchmark; see
-/// tests/current/TestAnalyticVortexGyre.cpp for these facts and their derivation).
+/// [LollaLevelSet] validates its level-set planner on a Rankine vortex, a flow with an analytic answer. Without
+/// background stream the flow has no radial component, which gives closed-form travel times: from the centre every
+/// point at distance d is reached at best in d / V, whatever vmax (see tests/current/TestAnalyticVortexGyre.cpp for
+/// these facts and their derivation).
 class RankineVortex : public CurrentField
 {
 public:
