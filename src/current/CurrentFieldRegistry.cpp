@@ -4,6 +4,7 @@
 #include "ompl_glider/current/DoubleGyre.h"
 #include "ompl_glider/current/LinearShear.h"
 #include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/current/RankineVortex.h"
 #include "ompl_glider/current/UniformCurrent.h"
 
 namespace ompl_glider
@@ -33,8 +34,31 @@ const std::vector<CurrentFieldKind> &currentFieldKinds()
                      [](const P &p) { return std::make_shared<UniformCurrent>(p.at("u"), p.at("v")); }});
         k.push_back({"linear_shear", "linear shear u = a y (Zermelo's problem)", {{"a", -1.0}}, false,
                      [](const P &p) { return std::make_shared<LinearShear>(p.at("a")); }});
-        k.push_back({"double_gyre", "steady double gyre", {{"amplitude", 0.1}, {"length", 1.0}}, false,
-                     [](const P &p) { return std::make_shared<DoubleGyre>(p.at("amplitude"), p.at("length")); }});
+        k.push_back({"double_gyre",
+                     "double gyre on [0, 2 length] x [0, length], steady, or time-dependent when epsilon and omega "
+                     "are not 0 ([ShaddenLCS])",
+                     {{"amplitude", 0.1}, {"length", 1.0}, {"epsilon", 0.0}, {"omega", 0.0}},
+                     false,
+                     [](const P &p) {
+                         return std::make_shared<DoubleGyre>(p.at("amplitude"), p.at("length"), p.at("epsilon"),
+                                                             p.at("omega"));
+                     }});
+        const RankineVortexParams rv;
+        k.push_back({"rankine_vortex",
+                     "Rankine vortex centred at (x0, y0), core radius radius, azimuthal speed vmax at the core "
+                     "radius (counter-clockwise for vmax > 0), in a uniform stream (u, v) ([LollaLevelSet])",
+                     {{"x0", rv.x0}, {"y0", rv.y0}, {"radius", rv.radius}, {"vmax", rv.vmax}, {"u", rv.u}, {"v", rv.v}},
+                     false,
+                     [](const P &p) {
+                         RankineVortexParams q;
+                         q.x0 = p.at("x0");
+                         q.y0 = p.at("y0");
+                         q.radius = p.at("radius");
+                         q.vmax = p.at("vmax");
+                         q.u = p.at("u");
+                         q.v = p.at("v");
+                         return std::make_shared<RankineVortex>(q);
+                     }});
         k.push_back({"netcdf", "gridded forecast read from a NetCDF file", {}, true, nullptr});
         return k;
     }();

@@ -11,6 +11,7 @@
 #include "ompl_glider/current/DoubleGyre.h"
 #include "ompl_glider/current/LinearShear.h"
 #include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/current/RankineVortex.h"
 #include "ompl_glider/current/UniformCurrent.h"
 
 using namespace ompl_glider;
@@ -45,6 +46,27 @@ std::vector<FieldCase> fieldCases()
         {"Uniform", [] { return std::make_shared<UniformCurrent>(0.3, -0.2); }, unit},
         {"LinearShear", [] { return std::make_shared<LinearShear>(-1.0); }, unit},
         {"DoubleGyre", [] { return std::make_shared<DoubleGyre>(0.1, 1.0); }, gyre},
+        // time-dependent: the time window holds a full period 2 pi / omega = 10 (the bound is reached at t = 7.5)
+        {"DoubleGyreTimeDependent", [] { return std::make_shared<DoubleGyre>(0.1, 1.0, 0.25, 2 * M_PI / 10); },
+         Region{0.0, 2.0, 0.0, 1.0, 0.0, 0.0, 0.0, 10.0}},
+        {"DoubleGyreTimeDependentScaled", [] { return std::make_shared<DoubleGyre>(-0.3, 2.0, 0.1, 1.0); },
+         Region{0.0, 4.0, 0.0, 2.0, 0.0, 0.0, 0.0, 2 * M_PI}},
+        {"RankineVortex", [] { return std::make_shared<RankineVortex>(); }, unit},
+        {"RankineVortexInStream",
+         [] {
+             RankineVortexParams p;
+             p.x0 = 0.5;
+             p.y0 = -0.3;
+             p.radius = 0.7;
+             p.vmax = -1.5;  // clockwise
+             p.u = 0.4;
+             p.v = 0.3;
+             return std::make_shared<RankineVortex>(p);
+         },
+         unit},
+        // a region away from the core: the bound is the speed at the region's nearest point, vmax R / dMin
+        {"RankineVortexOutsideCore", [] { return std::make_shared<RankineVortex>(); },
+         Region{2.0, 5.0, 1.0, 3.0, 0.0, 0.0, 0.0, 1.0}},
     };
 }
 

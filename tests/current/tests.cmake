@@ -1,2 +1,3 @@
 glider_add_test(test_current ${CMAKE_CURRENT_LIST_DIR}/TestCurrentConformance.cpp)
 include(${CMAKE_CURRENT_LIST_DIR}/gridded.cmake)
+glider_add_test(test_current_analytic ${CMAKE_CURRENT_LIST_DIR}/TestAnalyticVortexGyre.cpp)

@@ -26,7 +26,8 @@ struct CurrentFieldKind
     std::function<std::shared_ptr<const CurrentField>(const std::map<std::string, double> &)> make;
 };
 
-/// @brief Every kind: meandering_jet ([EichhornRAS] Sec. 6.1), uniform, linear_shear, double_gyre, netcdf.
+/// @brief Every kind: meandering_jet ([EichhornRAS] Sec. 6.1), uniform, linear_shear, double_gyre ([ShaddenLCS]),
+/// rankine_vortex ([LollaLevelSet]), netcdf.
 const std::vector<CurrentFieldKind> &currentFieldKinds();
 
 /// @brief The kind called @p name; null when there is none.
