@@ -300,6 +300,14 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
         r.postprocessCostFunctionCalls += timer.costFunctionCalls();
         return;
     }
+    if (r.headingRoute())
+    {
+        // a route of held headings has no leg to slow down, and its waypoints are not places to hold at
+        r.postprocessCostFunctionCalls += timer.costFunctionCalls();
+        failArrival(r, "the heading route reaches the goal at " + timeText(problem, ta) + ", before " + window +
+                           " opens, and the glider cannot hold at the goal (the current reaches its speed there)");
+        return;
+    }
     // 2. time the arrival: a slower leg or a hold at an earlier waypoint, latest first
     for (std::size_t k = r.path.size() - 1; k-- > 0;)
         if (timer.delayAt(k))

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include <nlopt.hpp>
@@ -211,30 +213,33 @@ HeadingFlight verifyHeadingRoute(const HeadingRoute &route, const GliderContext 
     DiveSettings dive;
     dive.speed = ctx.speed();
     dive.depth = settings.depth;
-    dive.radius = settings.radius;
-    dive.goal = goal;
     dive.step = settings.step > 0.0 ? settings.step : route.step > 0.0 ? route.step : headingCheckStep(route.duration());
+    // the whole route is flown (it ends at the goal); its end must lie within the radius
     HeadingFlight f = flyHeadingRoute(route, *ctx.field, ctx.environment.get(), dive, true);
+    const TimedPoint &end = f.ends.back();
+    const double miss = std::hypot(end.x - goal.x, end.y - goal.y);
+    f.closestDistance = miss;
+    f.closestTime = end.t;
     std::string w;
     if (f.grounded)
         w = f.why;
-    else if (!f.reached)
-        w = "the flight ends " + std::to_string(f.closestDistance) + " from the goal at its closest";
-    else if (f.arrivalTime > settings.tEnd)
+    else if (!(miss <= settings.radius))
+        w = "the flight ends " + std::to_string(miss) + " from the goal (goal radius " +
+            std::to_string(settings.radius) + ")";
+    else if (end.t > settings.tEnd)
         w = "the arrival is after the end of the time window";
     else
         for (const TimedPoint &p : f.track)
             if (!inRegion(ctx.region, p))
             {
-                w = "the track leaves the planning region at (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+                w = "the track leaves the planning region at (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                    ")";
                 break;
             }
-    if (!w.empty())
-    {
-        f.reached = false;
-        if (why)
-            *why = w;
-    }
+    f.reached = w.empty();
+    f.arrivalTime = f.reached ? end.t : std::numeric_limits<double>::quiet_NaN();
+    if (!w.empty() && why)
+        *why = w;
     return f;
 }
 
@@ -315,12 +320,6 @@ RefinedHeadings refineHeadingRoute(const HeadingRoute &initial, Point2 goal, con
         {
             out.ok = true;
             out.route = r;
-            // the route ends at the arrival: cut the last segment flown there
-            out.route.segments.resize(flight.segmentsFlown);
-            double acc = 0.0;
-            for (std::size_t i = 0; i + 1 < out.route.segments.size(); ++i)
-                acc += out.route.segments[i].duration;
-            out.route.segments.back().duration = flight.arrivalTime - initial.departure - acc;
             out.flight = std::move(flight);
             out.flights = s.flights;
             return out;

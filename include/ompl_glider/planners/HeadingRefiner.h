@@ -22,7 +22,7 @@ struct HeadingRefineSettings
     /// own flights use T / (16 N)
     double step{0.0};
     double depth{0.0};          ///< depth of the currents (m)
-    double radius{1e-3};        ///< the refined route ends where it first comes within this distance of the goal
+    double radius{1e-3};        ///< the refined route must end within this distance of the goal
     unsigned maxEvaluations{400};  ///< SLSQP iterations at most (each costs N + 2 flights)
     double tEnd{std::numeric_limits<double>::infinity()};  ///< no flight may last past this time
     unsigned threads{0};  ///< threads of the finite-difference flights (0: all cores)
@@ -43,8 +43,10 @@ struct RefinedHeadings
 /// error is then far below the 1e-5 relative that an accurate re-flight may differ by).
 double headingCheckStep(double duration);
 
-/// @brief Flies @p route in @p ctx (its field, forbidden regions and speed) with the goal radius, and checks the
-/// track against the region: the verification every heading route gets before it is returned.
+/// @brief Flies the whole of @p route in @p ctx (its field, forbidden regions and speed) and checks it: no land or
+/// forbidden region, the track inside the region, the end within the goal radius and before the end of the time
+/// window. Then reached is set and arrivalTime is the end of the route (a heading route ends at the goal point, as
+/// straight legs do); otherwise @p why says what failed. The verification every heading route gets.
 HeadingFlight verifyHeadingRoute(const HeadingRoute &route, const GliderContext &ctx, Point2 goal,
                                  const HeadingRefineSettings &settings, std::string *why = nullptr);
 

@@ -217,6 +217,8 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
     }
     if (c.type == "double_gyre" && c.parameters.count("length") && !(c.parameters["length"] > 0))
         r.fail(n["parameters"]["length"], f + ".parameters.length", "expected a number > 0");
+    if (c.type == "rankine_vortex" && c.parameters.count("radius") && !(c.parameters["radius"] > 0))
+        r.fail(n["parameters"]["radius"], f + ".parameters.radius", "expected a number > 0 (the core radius)");
     const bool netcdf = kind.gridded;
     for (const char *key : {"file", "variables", "interpolation", "horizon", "velocity_units", "time_units",
                             "steady_record", "zero_velocity_land", "depth_average"})
