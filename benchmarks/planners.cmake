@@ -7,3 +7,5 @@ glider_add_benchmark(bench_search ${CMAKE_CURRENT_LIST_DIR}/search/bench_search.
 # Issue 12: the level-set planner's error against the shooting optimum vs wall time, beside ZA*TVE + refinement,
 # and what the narrow band, the gradient heading and the threads buy.
 glider_add_benchmark(bench_levelset ${CMAKE_CURRENT_LIST_DIR}/reachability/bench_levelset.cpp)
+# Issue 24: strong currents, per V and planner: travel time against a fine level set, wall time, random pairs solved.
+glider_add_benchmark(bench_strong_currents ${CMAKE_CURRENT_LIST_DIR}/reachability/bench_strong_currents.cpp)
