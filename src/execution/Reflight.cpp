@@ -385,6 +385,11 @@ private:
             return false;
         }
         const Velocity c = field_.velocity(x1_ + l * px_, y1_ + l * py_, s_.depth, t);
+        if (!std::isfinite(c.u) || !std::isfinite(c.v))
+        {
+            why_ = "the current is not finite";
+            return false;
+        }
         const AlongTrackSpeeds v = alongTrackSpeeds(px_, py_, c, s_.speed);
         if (!v.feasible)
         {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <memory>
@@ -403,7 +404,10 @@ TEST(Reflight, ThePipelinesDefaultLegTimesOnTheJetMeasured)
     const MissionResult res = runMission(problem);
     ASSERT_TRUE(res.plan.solved);
     const std::vector<TimedPoint> &path = res.plan.path;
-    const PathReflight r = reflyPath(path, *problem.getField(), problem.getEnvironment().get(), settings(0.3));
+    const CurrentField &field = *problem.getField();
+    const std::uint64_t before = field.callCount();
+    const PathReflight r = reflyPath(path, field, problem.getEnvironment().get(), settings(0.3));
+    const std::uint64_t reflightCalls = field.callCount() - before;
     ASSERT_TRUE(r.feasible) << r.why;
     ASSERT_EQ(r.times.size(), path.size());
     double worst = 0.0;
@@ -419,7 +423,9 @@ TEST(Reflight, ThePipelinesDefaultLegTimesOnTheJetMeasured)
                     leg.duration, rd);
     }
     const double total = relativeDifference(path.back().t, r.arrivalTime, path.front().t);
-    std::printf("path: reported %.9f re-flown %.9f relative %+.2e; worst leg %.2e\n", path.back().t - path.front().t,
-                r.arrivalTime - path.front().t, total, worst);
+    std::printf("path: reported %.9f re-flown %.9f relative %+.2e; worst leg %.2e; the re-flight took %zu steps and "
+                "%llu current-model calls\n",
+                path.back().t - path.front().t, r.arrivalTime - path.front().t, total, worst, r.steps,
+                static_cast<unsigned long long>(reflightCalls));
     EXPECT_LT(std::abs(total), 1e-2);  // a sanity bound only: the figure is the measurement
 }
