@@ -285,7 +285,15 @@ private:
     {
         // distance to the circle after a fresh step of theta * h from the step's start (<= 0: inside)
         auto gap = [&](double theta, Vec<2> &d) {
-            d = theta >= 1.0 ? tr.y : dormandPrinceStep<2>(rate, t_, d_, k1, theta * h).y;
+            if (theta >= 1.0)
+                d = tr.y;
+            else
+            {
+                const Trial<2> part = dormandPrinceStep<2>(rate, t_, d_, k1, theta * h);
+                if (!part.finite)
+                    return kInf;  // not evaluated: taken as outside
+                d = part.y;
+            }
             return distanceToGoal(d) - s_.radius;
         };
         Vec<2> d{};
