@@ -39,6 +39,8 @@ TravelTimeCalculator::TravelTimeCalculator(std::shared_ptr<const CurrentField> f
         throw Error("TravelTimeCalculator: step fractions must satisfy 0 < hMin <= h, hMin <= hMax <= 1");
     if (!(params_.eps > 0.0))
         throw Error("TravelTimeCalculator: eps must be > 0");
+    if (!(params_.rtol >= 0.0) || !std::isfinite(params_.rtol))
+        throw Error("TravelTimeCalculator: rtol must be finite and >= 0 (0: off)");
     if (!(params_.tau > 0.0 && params_.tau <= 1.0))
         throw Error("TravelTimeCalculator: tau must be in (0, 1]");
     if (!(params_.maxStep > 0.0))
@@ -122,8 +124,10 @@ double TravelTimeCalculator::integrate(double x1, double y1, double z1, double x
             return kInf;
         const double tImproved = segLen / v2;
         const double err = std::abs(tRough - tImproved);
-        const double hNew = std::max(params_.hMin, std::min(hCap, params_.tau * h * std::sqrt(params_.eps / err)));
-        if (err < params_.eps || h <= params_.hMin)
+        // the step's tolerance: eps, or tighter relative to the step's own time (rtol > 0)
+        const double tol = params_.rtol > 0.0 ? std::min(params_.eps, params_.rtol * tImproved) : params_.eps;
+        const double hNew = std::max(params_.hMin, std::min(hCap, params_.tau * h * std::sqrt(tol / err)));
+        if (err < tol || h <= params_.hMin)
         {
             cStart = cEnd;
             frac = fe;

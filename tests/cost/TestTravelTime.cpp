@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
+#include <vector>
 
 #include "ompl_glider/cost/TravelTimeCalculator.h"
 #include "ompl_glider/current/LinearShear.h"
@@ -218,6 +220,11 @@ TEST(TravelTimeParams, RejectsBadParameters)
     p = {};
     p.tau = 1.5;
     EXPECT_THROW(TravelTimeCalculator(f, p), std::runtime_error);
+    p = {};
+    p.rtol = -1e-6;
+    EXPECT_THROW(TravelTimeCalculator(f, p), std::runtime_error);
+    p.rtol = kInf;
+    EXPECT_THROW(TravelTimeCalculator(f, p), std::runtime_error);
     EXPECT_THROW(TravelTimeCalculator(nullptr, {}), std::runtime_error);
 }
 
@@ -314,4 +321,165 @@ TEST(TravelTime, MaxStepKeepsNarrowFeaturesBetweenCalmEnds)
     EXPECT_NEAR(capped.travelTime(0.0, 0.0, 9.0, 0.0, 0.0), pieces, 0.02 * exact);
     p.maxStep = 0.0;
     EXPECT_THROW(TravelTimeCalculator(field, p), std::runtime_error);
+}
+
+namespace
+{
+// The meandering jet in another time unit: t' = k t, so velocities are c / k and every travel time is k times the
+// jet's (with the speed V / k).
+class TimeScaledJet : public CurrentField
+{
+public:
+    explicit TimeScaledJet(double k) : k_(k)
+    {
+    }
+    double maxSpeed(const Region &) const override
+    {
+        return 1.1 / k_;
+    }
+    std::string name() const override
+    {
+        return "time-scaled jet";
+    }
+
+protected:
+    Velocity evaluate(double x, double y, double z, double t) const override
+    {
+        const Velocity c = jet_.velocity(x, y, z, t / k_);
+        return {c.u / k_, c.v / k_};
+    }
+    Jacobian evaluateJacobian(double, double, double, double) const override
+    {
+        return {};
+    }
+
+private:
+    MeanderingJet jet_;
+    double k_;
+};
+
+struct JetLeg
+{
+    double x1, y1, x2, y2, t0;
+};
+const JetLeg kJetLegs[] = {{1.0, -1.0, 1.4, 0.2, 0.0}, {2.0, 2.0, 3.5, -0.5, 4.5}, {8.0, -2.0, 8.4, -0.6, 12.0},
+                           {3.0, 1.0, 3.4, -0.2, 9.0}, {1.0, -1.0, 1.4, 0.2, 7.5}};
+}  // namespace
+
+// Issue 24, "leg tolerances relative to the leg": with rtol > 0 a step is judged against min(eps, rtol * its time).
+TEST(TravelTime, RelativeToleranceOffIsTheAbsoluteOneBitForBit)
+{
+    // rtol so large that rtol * t_step >= eps on every step: the same steps, the same bits, as rtol = 0
+    auto jet = std::make_shared<MeanderingJet>();
+    TravelTimeParams p;
+    const TravelTimeCalculator off(jet, p);
+    p.rtol = 1e30;
+    const TravelTimeCalculator loose(jet, p);
+    for (const JetLeg &l : kJetLegs)
+    {
+        const double a = off.travelTime(l.x1, l.y1, l.x2, l.y2, l.t0);
+        ASSERT_TRUE(std::isfinite(a));
+        EXPECT_EQ(a, loose.travelTime(l.x1, l.y1, l.x2, l.y2, l.t0));
+    }
+    // a tight rtol changes the answer (towards the reference)
+    p.rtol = 1e-6;
+    const TravelTimeCalculator tight(jet, p);
+    const JetLeg &l = kJetLegs[0];
+    const double ref = referenceTravelTime(*jet, 0.5, l.x1, l.y1, l.x2, l.y2, l.t0, 20000);
+    EXPECT_LT(std::abs(tight.travelTime(l.x1, l.y1, l.x2, l.y2, l.t0) - ref),
+              std::abs(off.travelTime(l.x1, l.y1, l.x2, l.y2, l.t0) - ref));
+}
+
+TEST(TravelTime, RelativeToleranceHoldsInAnyTimeUnit)
+{
+    // the jet's legs in its own time unit and in units 1000 times longer and shorter: a purely relative tolerance
+    // (eps out of the way, rtol = 1e-6, hMin small enough not to cap it) meets 1e-6 relative in every unit, where
+    // the absolute eps = 1e-3 means 1e-3 of a time unit, whatever the unit
+    for (double k : {1.0, 1e3, 1e-3})
+    {
+        auto field = std::make_shared<TimeScaledJet>(k);
+        TravelTimeParams p;
+        p.speed = 0.5 / k;
+        p.eps = 1e300;
+        p.rtol = 1e-6;
+        p.hMin = 1e-6;
+        const TravelTimeCalculator rel(field, p);
+        TravelTimeParams a;
+        a.speed = p.speed;
+        const TravelTimeCalculator abs(field, a);
+        for (const JetLeg &l : kJetLegs)
+        {
+            const double ref = referenceTravelTime(*field, p.speed, l.x1, l.y1, l.x2, l.y2, k * l.t0, 20000);
+            ASSERT_TRUE(std::isfinite(ref));
+            const double got = rel.travelTime(l.x1, l.y1, l.x2, l.y2, k * l.t0);
+            EXPECT_LT(std::abs(got - ref), 1e-6 * ref) << "time unit x" << k << ", leg from " << l.x1 << "," << l.y1;
+            const double absErr = std::abs(abs.travelTime(l.x1, l.y1, l.x2, l.y2, k * l.t0) - ref) / ref;
+            std::printf("time unit x%g leg from (%g, %g): relative error rtol 1e-6 %.1e, eps 1e-3 %.1e\n", k, l.x1, l.y1,
+                        std::abs(got - ref) / ref, absErr);
+        }
+    }
+}
+
+TEST(TravelTime, RelativeToleranceCostOnTheJetMeasured)
+{
+    // the cost of a cost-function call (current-model calls per CFC) with rtol = 1e-6 against the default, on the
+    // micro-benchmark's legs (benchmarks/bench_travel_time.cpp) of length 0.4 and 1.2 at V = 0.5; printed, with
+    // the relative error against the fine RK4 reference on every fifth leg. The last setting (hMin small enough
+    // not to cap rtol) is run on those legs only: it costs about 1e5 CMC per CFC.
+    auto jet = std::make_shared<MeanderingJet>();
+    struct Setting
+    {
+        const char *name;
+        double rtol, hMin;
+        std::size_t every;  // legs run: every one, or every fifth
+    };
+    for (double length : {0.4, 1.2})
+    {
+        std::vector<JetLeg> legs;
+        for (int i = 0; i < 5; ++i)
+            for (int j = 0; j < 5; ++j)
+                for (int k = 0; k < 16; ++k)
+                {
+                    const double x = 1.0 + 2.0 * i, y = -3.0 + 1.5 * j, a = 2 * M_PI * k / 16;
+                    legs.push_back({x, y, x + length * std::cos(a), y + length * std::sin(a), 0.7 * (i + j + k)});
+                }
+        std::vector<double> ref;
+        for (std::size_t n = 0; n < legs.size(); n += 5)
+        {
+            const JetLeg &l = legs[n];
+            ref.push_back(referenceTravelTime(*jet, 0.5, l.x1, l.y1, l.x2, l.y2, l.t0, 4000));
+        }
+        double defaultCmc = 0.0;
+        for (const Setting &s : {Setting{"default (eps 1e-3)", 0.0, 1e-3, 1}, Setting{"rtol 1e-6", 1e-6, 1e-3, 1},
+                                 Setting{"rtol 1e-6, hMin 1e-6", 1e-6, 1e-6, 5}})
+        {
+            TravelTimeParams p;
+            p.rtol = s.rtol;
+            p.hMin = s.hMin;
+            const TravelTimeCalculator calc(jet, p);
+            jet->resetCallCount();
+            double worst = 0.0, sum = 0.0;
+            int compared = 0;
+            std::size_t run = 0;
+            for (std::size_t n = 0; n < legs.size(); n += s.every, ++run)
+            {
+                const JetLeg &l = legs[n];
+                const double t = calc.travelTime(l.x1, l.y1, l.x2, l.y2, l.t0);
+                if (n % 5 == 0 && std::isfinite(t) && std::isfinite(ref[n / 5]))
+                {
+                    const double e = std::abs(t - ref[n / 5]) / ref[n / 5];
+                    worst = std::max(worst, e);
+                    sum += e;
+                    ++compared;
+                }
+            }
+            const double cmc = double(jet->callCount()) / double(run);
+            if (s.rtol == 0.0)
+                defaultCmc = cmc;
+            else
+                EXPECT_GT(cmc, defaultCmc);  // a tighter tolerance takes more steps
+            std::printf("length %.1f, %-22s: %9.1f CMC per CFC (x%.0f), relative error mean %.1e worst %.1e (%d legs)\n",
+                        length, s.name, cmc, cmc / defaultCmc, sum / compared, worst, compared);
+        }
+    }
 }
