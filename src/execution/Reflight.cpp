@@ -551,7 +551,8 @@ PathReflight reflyPath(const std::vector<TimedPoint> &path, const CurrentField &
             r.why = "leg " + std::to_string(i) + ": " + leg.why;
             return r;
         }
-        r.times.push_back(r.times.back() + leg.duration);
+        const bool slow = settings.keepSlowLegs && b.t - a.t > leg.duration * (1.0 + 1e-3);
+        r.times.push_back(slow ? std::max(r.times.back() + leg.duration, b.t) : r.times.back() + leg.duration);
     }
     r.feasible = true;
     r.arrivalTime = r.times.back();

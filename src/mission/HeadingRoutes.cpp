@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "PlanningInternal.h"
+#include "ompl_glider/execution/Reflight.h"
 #include "ompl_glider/planners/HeadingRefiner.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
@@ -40,6 +41,52 @@ PlannedPath headingResult(const MissionProblem &problem, const GliderContext &ct
     return r;
 }
 
+void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, PlannedPath &r)
+{
+    if (!r.solved || r.path.size() < 2 || (r.stints && !r.stints->converted))
+        return;
+    ReflightSettings s;
+    s.speed = r.speed;
+    s.depth = ctx.travel->params().depth;
+    const Environment *forbidden = ctx.environment.get();
+    r.reflown = true;
+    if (r.headingRoute())
+    {
+        const HeadingReflight f = reflyHeadingRoute(*r.headings, *ctx.field, forbidden, s);
+        const Point2 g = problem.getGoal();
+        r.reflownEndDistance = std::hypot(f.end.x - g.x, f.end.y - g.y);
+        r.reflownTravelTime = f.end.t - r.departure;
+        const double radius = problem.gliderProblem(r.departure, r.speed).goalTolerance;
+        if (!f.ok || f.grounded || !(r.reflownEndDistance <= radius))
+        {
+            r.solved = false;
+            r.status = kNoPathStatus;
+            r.reason = "the heading route fails its accurate re-flight: " +
+                       (f.grounded || !f.ok ? f.why : "it ends " + std::to_string(r.reflownEndDistance) +
+                                                          " from the goal (goal radius " + std::to_string(radius) + ")");
+        }
+        return;
+    }
+    // straight legs, leg by leg from the re-flown time of the leg's start, the plan's waits kept
+    s.keepSlowLegs = true;
+    const PathReflight f = reflyPath(r.path, *ctx.field, forbidden, s);
+    if (!f.feasible)
+    {
+        r.solved = false;
+        r.status = kNoPathStatus;
+        r.reason = "the path cannot be flown when re-flown accurately: " + f.why;
+        return;
+    }
+    std::vector<TimedPoint> path = r.path;
+    for (std::size_t k = 0; k < path.size(); ++k)
+        path[k].t = f.times[k];
+    r.plannerTravelTime = r.travelTime;
+    r.path = std::move(path);
+    r.travelTime = r.path.back().t - r.departure;
+    r.reflownTravelTime = r.travelTime;
+    r.reflownEndDistance = 0.0;
+}
+
 PlannedPath switchToHeadings(const MissionProblem &problem, double departure, const PlanOptions &o,
                              PlannedPath failed)
 {
@@ -63,11 +110,21 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     }
     else
         r.switchReason = why;
-    r.switchedFrom = asked.name;
-    if (!r.solved && r.reason.empty())
-        r.reason = failed.reason;
     r.planningSeconds += failed.planningSeconds;
-    return r;
+    if (r.solved)
+    {
+        r.switchedFrom = asked.name;
+        return r;
+    }
+    // no route of either kind: the asked planner's outcome, with what the level set found
+    const std::size_t note = failed.reason.find("; the path must arrive");
+    const std::string bound = note == std::string::npos ? std::string() : failed.reason.substr(note);
+    const bool proven = r.reason.find("never reaches the goal") != std::string::npos;
+    failed.reason = (proven ? "no path exists: " : "no path found: ") + r.reason + " (" + asked.name +
+                    " found none on its lattice, nor Isochrone with held headings)" + bound;
+    failed.status = kNoPathStatus;
+    failed.planningSeconds = r.planningSeconds;
+    return failed;
 }
 }  // namespace planning_detail
 }  // namespace ompl_glider

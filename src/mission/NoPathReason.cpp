@@ -42,8 +42,8 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
     if (const auto *l = dynamic_cast<const LevelSetPlanner *>(&planner);
         l && status == ompl::base::PlannerStatus::ABORT)
         return l->lastReachability().goalReached ? l->lastReason() :
-                   "the reachable front never reaches the goal within the time window (walled in by land or "
-                   "forbidden regions, or a closure that does not open in time)";
+                   "the reachable front never reaches the goal within the time window (the current carries the "
+                   "glider off faster than it makes way, or land, forbidden regions or a closure wall it in)";
     if (const auto *iso = dynamic_cast<const IsochronePlanner *>(&planner);
         iso && status == ompl::base::PlannerStatus::ABORT && !iso->lastReason().empty())
         return iso->lastReason();

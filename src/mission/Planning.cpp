@@ -190,7 +190,11 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     r.solved = ss->haveExactSolutionPath();
     if (const auto *source = dynamic_cast<const HeadingRouteSource *>(planner.get()))
         if (r.solved && source->lastHeadingRoute())
-            return headingResult(problem, *ctx, *source->lastHeadingRoute(), std::move(r));
+        {
+            r = headingResult(problem, *ctx, *source->lastHeadingRoute(), std::move(r));
+            reflyRoute(problem, *ctx, r);
+            return r;
+        }
     if (!r.solved)
     {
         r.reason = noPathReason(status, *planner, dynamic_cast<const GliderSimpleSetup *>(ss.get()), limit);
@@ -233,6 +237,9 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     r.travelTime = r.path.back().t - departure;
     r.pathLength = pathLength(r.path);
     r.pathChecked = path.check();
+    reflyRoute(problem, *ctx, r);
+    if (!r.solved)
+        return r;
     if (m.stints.set)
     {
         const auto tS = std::chrono::steady_clock::now();

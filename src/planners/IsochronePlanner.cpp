@@ -74,6 +74,30 @@ struct CellGrid
     }
 };
 
+/// The earliest arrival per cell: of the flights of a step, one new front point per cell not reached before (the one
+/// nearest the cell's centre; ties broken by parent and heading, so that the result does not depend on threads).
+std::vector<long> keepOnePerCell(std::vector<std::vector<Flight>> &flown, CellGrid &grid,
+                                 std::vector<FrontPoint> &points)
+{
+    std::vector<Flight> all;
+    for (auto &f : flown)
+        all.insert(all.end(), f.begin(), f.end());
+    std::sort(all.begin(), all.end(), [](const Flight &a, const Flight &b) {
+        return a.cell != b.cell ? a.cell < b.cell :
+               a.centreDistance != b.centreDistance ? a.centreDistance < b.centreDistance :
+               a.parent != b.parent ? a.parent < b.parent : a.bearing < b.bearing;
+    });
+    std::vector<long> front;
+    for (const Flight &f : all)
+        if (!grid.reached[f.cell])
+        {
+            grid.reached[f.cell] = 1;
+            front.push_back(static_cast<long>(points.size()));
+            points.push_back({f.x, f.y, f.t, f.parent, f.bearing});
+        }
+    return front;
+}
+
 /// The headings flown from the start to front point @p i, then @p last for @p lastDuration.
 HeadingRoute routeTo(const std::vector<FrontPoint> &points, long i, double lastBearing, double lastDuration,
                      Point2 start, double t0)
@@ -173,7 +197,7 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
         return ompl::base::PlannerStatus::INVALID_GOAL;
     const auto *goalRegion = pdef_->getGoal()->as<ompl::base::GoalRegion>();
     const Point2 start{sg->sx, sg->sy}, goal = sg->goal;
-    const double t0 = sg->t0, V = ctx_->speed(), C = ctx_->maxCurrent();
+    const double t0 = sg->t0, V = ctx_->speed();
     const double tEnd = std::min(r.tMax, ctx_->field->timeEnd());
     const double cell = resolution_ > 0.0 ? resolution_ : std::max(r.xMax - r.xMin, r.yMax - r.yMin) / 150.0;
     const double dt = timeStep_ > 0.0 ? timeStep_ : 2.5 * cell / V;
@@ -230,23 +254,7 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
                 hit = g;
         if (std::isfinite(hit.arrival))
             break;
-        // the earliest arrival per cell: one new point per cell not reached before (the one nearest its centre)
-        std::vector<Flight> all;
-        for (auto &f : flown)
-            all.insert(all.end(), f.begin(), f.end());
-        std::sort(all.begin(), all.end(), [](const Flight &a, const Flight &b) {
-            return a.cell != b.cell ? a.cell < b.cell :
-                   a.centreDistance != b.centreDistance ? a.centreDistance < b.centreDistance :
-                   a.parent != b.parent ? a.parent < b.parent : a.bearing < b.bearing;
-        });
-        front.clear();
-        for (const Flight &f : all)
-            if (!grid.reached[f.cell])
-            {
-                grid.reached[f.cell] = 1;
-                front.push_back(static_cast<long>(points.size()));
-                points.push_back({f.x, f.y, f.t, f.parent, f.bearing});
-            }
+        front = keepOnePerCell(flown, grid, points);
         expanded_ += front.size();
     }
     if (!std::isfinite(hit.arrival))

@@ -11,6 +11,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "ompl_glider/execution/Reflight.h"
 #include "ompl_glider/planners/HeadingRefiner.h"
 #include "ompl_glider/planners/PathSmoother.h"
 
@@ -278,6 +279,20 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
     levelSetTime_ = last_.goalTime - t0;
     std::string why;
     waypoints_ = levelSetWaypoints(*ctx_, last_.path, p.cellSize / 3.0, &why);
+    if (!waypoints_.empty())
+    {
+        // the legs must also fly when timed accurately (near-stalls that the travel-time code's tolerance passes)
+        ReflightSettings rs;
+        rs.speed = ctx_->speed();
+        rs.depth = ctx_->travel->params().depth;
+        rs.keepSlowLegs = true;
+        const PathReflight check = reflyPath(waypoints_, *ctx_->field, ctx_->environment.get(), rs);
+        if (!check.feasible)
+        {
+            why = "re-flown accurately, " + check.why;
+            waypoints_.clear();
+        }
+    }
     if (waypoints_.empty())
     {
         // no straight legs: the steering directions along the backtracked path, as held headings

@@ -262,7 +262,7 @@ TEST(Pipeline, NoPathIsAnOutcomeWithItsReason)
     const MissionResult r = runMission(MissionProblem(m));
     EXPECT_FALSE(r.plan.solved);
     EXPECT_FALSE(std::isfinite(r.plan.travelTime));
-    EXPECT_HAS(r.plan.reason, "no path exists on this lattice");
+    EXPECT_HAS(r.plan.reason, "no path exists: the reachable front never reaches the goal");  // the level set proves it
     EXPECT_HAS(r.plan.reason, "within the planning horizon, 2 time units");  // what bounded the search
     EXPECT_TRUE(r.waypoints.empty());
 }
@@ -357,7 +357,7 @@ TEST(Output, NoPathRunRemovesTheEarlierRouteAndSaysWhy)
     EXPECT_TRUE(fs::exists(dir / "notes.txt"));  // only files the earlier run listed are removed
     const nlohmann::json s = readJson(dir / "summary.json");
     EXPECT_EQ(s["solved"], false);
-    EXPECT_NE(s["reason"].get<std::string>().find("no path exists on this lattice"), std::string::npos);
+    EXPECT_NE(s["reason"].get<std::string>().find("no path exists: the reachable front"), std::string::npos);
     EXPECT_TRUE(s["travel_time"].is_null());
 }
 

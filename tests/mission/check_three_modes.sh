@@ -63,7 +63,7 @@ set -e
 python3 -c "
 import json, sys
 s = json.load(open('$dir/gulf/summary.json'))
-assert s['solved'] is False and 'no path exists on this lattice' in s['reason'], s['reason']
+assert s['solved'] is False and 'no path exists: the reachable front never reaches the goal' in s['reason'], s['reason']
 assert s['files'] == ['summary.json'], s['files']"
 
 # 4. Exit 2 (a bad planner parameter, found before planning) changes nothing in the directory.

@@ -51,6 +51,10 @@ struct ReflightSettings
     double radius{0.0};  ///< heading routes: > 0, the flight ends when the goal is within this distance
     Point2 goal;         ///< heading routes: the goal (used when radius > 0)
     ReflightTolerance tolerance;  ///< the integrator's tolerances
+    /// reflyPath(): a leg the plan flies more than 0.1 % slower than the re-flight at full speed (a wait for a lane,
+    /// a goal window) keeps its planned arrival when that is later than the re-flown one, so the re-flight follows
+    /// the plan's schedule; false: every leg at full speed
+    bool keepSlowLegs{false};
 };
 
 /// @brief A re-flown heading route.

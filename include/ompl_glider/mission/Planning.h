@@ -129,6 +129,17 @@ struct PlannedPath
     /// why; both empty when it did not switch
     std::string switchedFrom;
     std::string switchReason;  ///< see switchedFrom
+    /// Honest times (issue 24): the route re-flown by the accurate Dormand-Prince re-flight (execution/Reflight.h).
+    /// Straight legs are re-timed leg by leg by it (full speed; holds and legs the plan flies slower on purpose keep
+    /// their planned arrival when the re-flight is earlier), so path and travelTime are the re-flight's; a leg it
+    /// cannot fly makes the plan fail. Heading routes are re-flown whole: the distance of their end from the goal.
+    bool reflown{false};
+    /// The planner's own travel time of the final path before the re-timing (straight legs; its integrator's
+    /// tolerance, [EichhornIWK] Table III); NaN when not re-timed
+    double plannerTravelTime{std::numeric_limits<double>::quiet_NaN()};
+    double reflownTravelTime{std::numeric_limits<double>::quiet_NaN()};  ///< the re-flight's travel time
+    /// Heading routes: the distance from the goal at which the re-flight ends (straight legs end on it: 0)
+    double reflownEndDistance{std::numeric_limits<double>::quiet_NaN()};
 
     /// @brief True for a route of held headings.
     bool headingRoute() const
