@@ -154,6 +154,13 @@ struct MissionWaypoint
     int profile{-1};                  ///< dive profile index of the leg that reaches this waypoint (-1: none)
     DiveProfile dive;                 ///< that profile (climb-to / dive-to depths)
     double legTime{0.0};              ///< travel time of the leg that reaches it
+    /// Heading routes (PlannedPath::headingRoute()): the heading to hold FROM this waypoint, the bearing of the
+    /// segment that leaves it (degrees clockwise from north, through the water), and how long it is held (field time
+    /// units, as flown: the last segment ends at the arrival). The leaving segment is what the pilot sets at the
+    /// waypoint; the segment that reaches waypoint i is waypoint i-1's. NaN for straight legs and at the last
+    /// waypoint.
+    double heading{std::numeric_limits<double>::quiet_NaN()};
+    double headingDuration{std::numeric_limits<double>::quiet_NaN()};  ///< see heading
 };
 
 /// @brief One row of the speed sweep ([EichhornOceans] Table VI).
