@@ -2,6 +2,7 @@
 /// @brief The evaluations of a plan made by runMission(): the speed sweep, the waypoints for the pilot (with dive
 /// profiles) and the optimal-control reference.
 
+#include <cmath>
 #include <cstdio>
 #include <mutex>
 
@@ -90,7 +91,8 @@ PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath
             const TimedPoint &a = plan.path[i], &b = plan.path[i + 1];
             if (a.x == b.x && a.y == b.y)
                 continue;
-            out.waypoints[i].heading = plan.headings->segments[k++].bearing;
+            const double bearing = plan.headings->segments[k++].bearing;  // a planner's bearing may be < 0 or >= 360
+            out.waypoints[i].heading = bearing - 360.0 * std::floor(bearing / 360.0);
             out.waypoints[i].headingDuration = b.t - a.t;
         }
     }

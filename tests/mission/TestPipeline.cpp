@@ -20,6 +20,7 @@
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/output/OutputWriter.h"
 #include "ompl_glider/output/Report.h"
+#include "ompl_glider/output/SlocumGoto.h"
 #include "ompl_glider/output/SummaryJson.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
@@ -305,6 +306,12 @@ TEST(Output, SummaryHasOneSchemaAndNoDuplicateKeys)
     EXPECT_TRUE(s["straight_line"]["travel_time"].is_null());
     EXPECT_EQ(s["straight_line"]["passable"], false);
     EXPECT_EQ(s["start"]["x"], 1.0);
+    // Straight legs at V = 0.5: no heading route, no switch
+    EXPECT_FALSE(r.plan.headingRoute());
+    EXPECT_EQ(s["route_model"], "straight_legs");
+    EXPECT_TRUE(s["headings"].is_null());
+    EXPECT_TRUE(s["switched_from"].is_null());
+    EXPECT_TRUE(s["switch_reason"].is_null());
     // One name per quantity: none of the old duplicates.
     for (const char *old : {"cfc", "cmc", "feasible", "waypoints_raw", "planning_time_s", "straight_line_travel_time"})
         EXPECT_FALSE(s.contains(old)) << old;
@@ -487,7 +494,10 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
     ASSERT_TRUE(p.headingRoute());
     EXPECT_EQ(p.switchedFrom, "ZA*TVE");
     EXPECT_EQ(p.planner, "Isochrone");
-    const std::vector<HeadingSegment> &seg = p.headings->segments;
+    // the route's segments, their bearings in [0, 360) as written for the pilot
+    std::vector<HeadingSegment> seg = p.headings->segments;
+    for (HeadingSegment &h : seg)
+        h.bearing = std::fmod(std::fmod(h.bearing, 360.0) + 360.0, 360.0);
     const std::size_t n = r.waypoints.size();
     ASSERT_EQ(n, p.path.size());
     ASSERT_GE(n, 2u);
@@ -495,7 +505,9 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
     // The waypoints: leg i is flown with segment i for as long as it lasts; the last is cut at the arrival.
     for (std::size_t i = 0; i + 1 < n; ++i)
     {
-        EXPECT_EQ(r.waypoints[i].heading, seg[i].bearing) << i;
+        EXPECT_NEAR(r.waypoints[i].heading, seg[i].bearing, 1e-12) << i;
+        EXPECT_GE(r.waypoints[i].heading, 0.0);
+        EXPECT_LT(r.waypoints[i].heading, 360.0);
         EXPECT_EQ(r.waypoints[i].headingDuration, p.path[i + 1].t - p.path[i].t) << i;
         if (i + 2 < n)
             EXPECT_NEAR(r.waypoints[i].headingDuration, seg[i].duration, 1e-9) << i;
@@ -553,7 +565,7 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
     for (std::size_t i = 0; i + 1 < n; ++i)
     {
         const nlohmann::json &h = s["headings"][i];
-        EXPECT_EQ(h["bearing_deg"].get<double>(), seg[i].bearing);
+        EXPECT_NEAR(h["bearing_deg"].get<double>(), seg[i].bearing, 1e-12);
         EXPECT_EQ(h["duration"].get<double>(), p.path[i + 1].t - p.path[i].t);
         EXPECT_NEAR(h["duration_h"].get<double>(), 24.0 * h["duration"].get<double>(), 1e-9);
         EXPECT_EQ(h["start"]["x"].get<double>(), p.path[i].x);
@@ -586,7 +598,7 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
         const nlohmann::json &props = g["features"][i + 1]["properties"];
         if (i + 1 < n)
         {
-            EXPECT_EQ(props["heading_deg"].get<double>(), seg[i].bearing);
+            EXPECT_NEAR(props["heading_deg"].get<double>(), seg[i].bearing, 1e-12);
             EXPECT_EQ(props["segment_duration"].get<double>(), p.path[i + 1].t - p.path[i].t);
         }
         else
