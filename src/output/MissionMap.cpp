@@ -110,8 +110,8 @@ void addHeadingRoute(MapRenderer &map, const MissionResult &r)
     const std::string unit = tickUnit(r, {&track, &ends});
     if (!unit.empty())
         map.addNote("ticks: " + unit + " after departure");
-    const std::string label = p.planner + ": held headings, " + std::to_string(p.headings->segments.size()) +
-                              " segments, T=" + duration(r, p.travelTime, true);
+    const std::string label = p.planner + ": " + std::to_string(p.headings->segments.size()) +
+                              " held headings, T=" + duration(r, p.travelTime, true);
     MapPath t = MapRenderer::refinedPathStyle(label, track);
     t.waypointMarkers = false;  // the track has a point per integration step
     map.addPath(t);
