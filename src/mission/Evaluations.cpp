@@ -2,6 +2,7 @@
 /// @brief The evaluations of a plan made by runMission(): the speed sweep, the waypoints for the pilot (with dive
 /// profiles) and the optimal-control reference.
 
+#include <cmath>
 #include <cstdio>
 #include <mutex>
 
@@ -38,8 +39,10 @@ std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep
 PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath &plan)
 {
     PilotWaypoints out;
-    // a stint plan's legs between surfacings are not straight: its times are the flown ones
-    const auto dive = plan.stints && !plan.stints->converted ? nullptr : problem.diveProfiles(plan.speed);
+    // a stint plan's legs between surfacings are not straight, nor are a heading route's: their times are the
+    // flown ones
+    const bool flown = (plan.stints && !plan.stints->converted) || plan.headingRoute();
+    const auto dive = flown ? nullptr : problem.diveProfiles(plan.speed);
     double t = plan.departure;
     for (std::size_t i = 0; i < plan.path.size(); ++i)
     {
@@ -77,6 +80,21 @@ PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath
         }
         w.iso = problem.isoTime(w.time);
         out.waypoints.push_back(w);
+    }
+    if (plan.headingRoute())
+    {
+        // the heading held from each waypoint: the legs in order take the segments in order; a leg that stays in
+        // place (a hold the goal window added) takes none
+        std::size_t k = 0;
+        for (std::size_t i = 0; i + 1 < plan.path.size() && k < plan.headings->segments.size(); ++i)
+        {
+            const TimedPoint &a = plan.path[i], &b = plan.path[i + 1];
+            if (a.x == b.x && a.y == b.y)
+                continue;
+            const double bearing = plan.headings->segments[k++].bearing;  // a planner's bearing may be < 0 or >= 360
+            out.waypoints[i].heading = bearing - 360.0 * std::floor(bearing / 360.0);
+            out.waypoints[i].headingDuration = b.t - a.t;
+        }
     }
     out.travelTime = out.waypoints.empty() ? planning_detail::kInf : out.waypoints.back().time - plan.departure;
     return out;

@@ -102,6 +102,24 @@ void addPaths(MapRenderer &map, const MissionResult &r)
         map.addPath(MapRenderer::refinedPathStyle(
             "refined: " + std::to_string(p.path.size()) + " wp, T=" + duration(r, p.travelTime, true), fin));
 }
+/// A heading route: the flown track of held headings (time ticks), the segment ends marked.
+void addHeadingRoute(MapRenderer &map, const MissionResult &r)
+{
+    const PlannedPath &p = r.plan;
+    std::vector<TimedPoint> track = p.track, ends = p.path;
+    const std::string unit = tickUnit(r, {&track, &ends});
+    if (!unit.empty())
+        map.addNote("ticks: " + unit + " after departure");
+    const std::string label = p.planner + ": " + std::to_string(p.headings->segments.size()) +
+                              " held headings, T=" + duration(r, p.travelTime, true);
+    MapPath t = MapRenderer::refinedPathStyle(label, track);
+    t.waypointMarkers = false;  // the track has a point per integration step
+    map.addPath(t);
+    MapPath marks = MapRenderer::rawPathStyle("segment ends (heading changes)", ends);
+    marks.width = 0.6;
+    map.addPath(marks);
+}
+
 /// The map's frame: lon/lat when the problem has them (the map then refers to the problem: draw it while the
 /// problem lives), speeds in m/s for forecasts.
 MapOptions mapFrame(const MissionProblem &problem)
@@ -175,7 +193,11 @@ MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &pro
     for (const MissionPolygon &p : problem.getPolygons())
         map.addPolygon(mapPolygon(p));
     if (r.plan.solved)
-        map.addPath(MapRenderer::refinedPathStyle("plan", r.plan.path));
+    {
+        MapPath plan = MapRenderer::refinedPathStyle("plan", r.plan.headingRoute() ? r.plan.track : r.plan.path);
+        plan.waypointMarkers = !r.plan.headingRoute();  // a heading route's track: a point per integration step
+        map.addPath(plan);
+    }
     const Point2 s = problem.getStart(), g = problem.getGoal();
     map.setStartGoal(s.x, s.y, g.x, g.y);
     map.addNote("truth: " + e.truth);
@@ -198,7 +220,9 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
     map.setField(problem.getField(), tMap, m.vehicle.depth);
     for (const MissionPolygon &p : problem.getPolygons())
         map.addPolygon(mapPolygon(p));
-    if (r.plan.solved && !(r.plan.stints && !r.plan.stints->converted))
+    if (r.plan.solved && r.plan.headingRoute())
+        addHeadingRoute(map, r);
+    else if (r.plan.solved && !(r.plan.stints && !r.plan.stints->converted))
         addPaths(map, r);
     if (r.plan.solved && r.plan.stints)
     {

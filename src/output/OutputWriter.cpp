@@ -42,7 +42,10 @@ std::vector<OutputFile> formatFiles(OutputFormatId format, const MissionResult &
     if (format == OutputFormatId::Path)
         return {{"path.csv", [res](const std::string &p) { writeText(p, pathCsv(*res)); }}};
     if (format == OutputFormatId::GeoJson)
-        return {{"path.geojson", [res](const std::string &p) { writeText(p, routeGeoJson(*res)); }}};
+    {
+        const MissionProblem *prob = &problem;  // projects a heading route's track
+        return {{"path.geojson", [res, prob](const std::string &p) { writeText(p, routeGeoJson(*res, prob)); }}};
+    }
     if (format == OutputFormatId::Isochrones)
     {
         if (!r.isochrones)
@@ -51,7 +54,7 @@ std::vector<OutputFile> formatFiles(OutputFormatId format, const MissionResult &
     }
     if (format == OutputFormatId::Stints)
     {
-        if (!r.plan.stints)
+        if (!r.plan.stints && !r.plan.headingRoute())  // a heading route's segments are written as stints
             return {};
         const MissionProblem *prob = &problem;
         return {{"stints.csv", [res, prob](const std::string &p) { writeText(p, stintsCsv(*res, *prob)); }}};

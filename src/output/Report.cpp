@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ompl_glider/registry/PlannerRegistry.h"
 #include "../io/NumberText.h"
 
 namespace ompl_glider
@@ -26,19 +27,39 @@ std::string format(const char *fmt, A... args)
 
 void printWaypoints(std::ostream &out, const MissionResult &r)
 {
-    out << format("%4s %12s %12s %11s %10s %14s %22s %16s\n", "#", "x", "y", "lon", "lat", "arrival",
-                  "arrival (UTC)", "dive profile");
+    // a heading route: the heading held from each waypoint and for how long
+    const bool headings = r.plan.headingRoute();
+    out << format("%4s %12s %12s %11s %10s %14s %22s %16s", "#", "x", "y", "lon", "lat", "arrival", "arrival (UTC)",
+                  "dive profile");
+    out << (headings ? format(" %11s %12s\n", "heading", "held for") : std::string("\n"));
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];
         std::string prof;
         if (r.diveProfiles && i > 0 && w.profile >= 0)
             prof = num(w.dive.climbTo) + "-" + num(w.dive.diveTo);
-        out << format("%4zu %12.6g %12.6g %11s %10s %14s %22s %16s\n", i, w.position.x, w.position.y,
+        out << format("%4zu %12.6g %12.6g %11s %10s %14s %22s %16s", i, w.position.x, w.position.y,
                       w.geographic ? format("%.6f", w.lonLat.lon).c_str() : "",
                       w.geographic ? format("%.6f", w.lonLat.lat).c_str() : "", num(w.time).c_str(), w.iso.c_str(),
                       prof.c_str());
+        if (headings && std::isfinite(w.heading))
+            out << format(" %11s %12s\n", format("%.1f deg", w.heading).c_str(), num(w.headingDuration).c_str());
+        else
+            out << "\n";
     }
+}
+
+/// The route's kind: held headings or straight legs, and the switch to another planner.
+void printRouteModel(std::ostream &out, const PlannedPath &p)
+{
+    if (!p.switchedFrom.empty())
+        out << "Switched:           " << p.switchReason << "; planned with " << p.planner << "\n";
+    if (!p.solved)
+        return;
+    if (p.headingRoute())
+        out << "Route:              held headings (" << p.headings->segments.size() << " segments)\n";
+    else
+        out << "Route:              straight legs (" << (p.path.empty() ? 0 : p.path.size() - 1) << " legs)\n";
 }
 }  // namespace
 
@@ -62,7 +83,8 @@ void printReport(std::ostream &out, const MissionResult &r)
     const MissionSpec &m = r.spec;
     out << "Mission:            " << m.name << " (" << m.file << "), current " << m.current.type << "\n";
     out << "Planner:            " << p.planner;
-    if (m.planner.gridSize > 0)
+    const PlannerEntry *entry = findPlanner(p.planner.empty() ? m.planner.name : p.planner);
+    if (m.planner.gridSize > 0 && entry && entry->lattice())  // grid and sectors are the lattice's
         out << format(" (grid %g, %d sectors)", m.planner.gridSize, m.planner.sectors);
     out << ", V = " << num(p.speed) << "\n";
     if (r.departureSearch)
@@ -75,6 +97,7 @@ void printReport(std::ostream &out, const MissionResult &r)
     const std::string iso = r.waypoints.empty() ? "" : r.waypoints.front().iso;
     out << "Departure:          " << num(p.departure) << (iso.empty() ? "" : " (" + iso + ")") << "\n";
     out << "Status:             " << p.status << (p.solved ? "" : "\nReason:             " + p.reason) << "\n";
+    printRouteModel(out, p);
     if (p.solved)
     {
         out << format("Travel time:        %.4f (raw %.4f, smoothed %.4f)\n", p.travelTime, p.rawTravelTime,

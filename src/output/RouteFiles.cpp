@@ -29,11 +29,22 @@ bool hasProfile(const MissionResult &r, std::size_t i)
 {
     return r.diveProfiles && i > 0 && r.waypoints[i].profile >= 0;
 }
+
+/// A held duration for the pilot: hours with physical time units ("2.50 h"), else the field's number.
+std::string heldFor(const MissionResult &r, double t)
+{
+    if (!r.spec.physicalUnits().time)
+        return text::number(t, 4);
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.2f h", t * r.spec.timeUnitSeconds / 3600.0);
+    return buf;
+}
 }  // namespace
 
 std::string waypointsCsv(const MissionResult &r)
 {
-    std::string s = "index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to\n";
+    std::string s = "index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to,heading_deg,"
+                    "segment_duration\n";
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];
@@ -45,6 +56,9 @@ std::string waypointsCsv(const MissionResult &r)
             s += std::to_string(w.profile) + "," + text::csvNumber(w.dive.climbTo) + "," + text::csvNumber(w.dive.diveTo);
         else
             s += ",,";
+        // a heading route: the heading held from here and for how long (empty for straight legs)
+        s += "," + (std::isfinite(w.heading) ? text::csvNumber(w.heading) : std::string()) + "," +
+             (std::isfinite(w.headingDuration) ? text::csvNumber(w.headingDuration) : std::string());
         s += "\n";
     }
     return s;
@@ -150,7 +164,40 @@ std::string isochronesGeoJson(const MissionResult &r)
     return doc.dump(1) + "\n";
 }
 
-std::string routeGeoJson(const MissionResult &r)
+namespace
+{
+/// The route line of the GeoJSON: the waypoints for straight legs, the flown track of a heading route (planning
+/// frame and, where geographic, lon/lat).
+struct RouteLine
+{
+    std::vector<Point2> xy;
+    std::vector<LonLat> lonLat;
+};
+
+RouteLine routeLine(const MissionResult &r, const MissionProblem *problem, bool geo)
+{
+    RouteLine l;
+    if (r.plan.headingRoute() && r.plan.track.size() >= 2)
+    {
+        if (geo && !problem)
+            throw Error("routeGeoJson: the track of a geographic heading route needs the problem to project it");
+        for (const TimedPoint &p : r.plan.track)
+        {
+            l.xy.push_back({p.x, p.y});
+            l.lonLat.push_back(geo ? problem->toGeographic({p.x, p.y}) : LonLat{});
+        }
+        return l;
+    }
+    for (const MissionWaypoint &w : r.waypoints)
+    {
+        l.xy.push_back(w.position);
+        l.lonLat.push_back(w.lonLat);
+    }
+    return l;
+}
+}  // namespace
+
+std::string routeGeoJson(const MissionResult &r, const MissionProblem *problem)
 {
     const bool geo = geographic(r);
     auto coord = [&](const MissionWaypoint &w) {
@@ -158,11 +205,9 @@ std::string routeGeoJson(const MissionResult &r)
                    : nlohmann::ordered_json::array({w.position.x, w.position.y});
     };
     nlohmann::ordered_json geometry;
-    std::vector<LonLat> lonLats;
-    for (const MissionWaypoint &w : r.waypoints)
-        lonLats.push_back(w.lonLat);
+    const RouteLine route = routeLine(r, problem, geo);
     const std::vector<std::vector<LonLat>> parts =
-        geo ? splitAtAntimeridian(lonLats) : std::vector<std::vector<LonLat>>{};  // one piece unless it crosses
+        geo ? splitAtAntimeridian(route.lonLat) : std::vector<std::vector<LonLat>>{};  // one piece unless it crosses
     if (parts.size() > 1)
     {
         // across the antimeridian: a MultiLineString split there (RFC 7946 sec. 3.1.9)
@@ -179,18 +224,23 @@ std::string routeGeoJson(const MissionResult &r)
     else
     {
         nlohmann::ordered_json line = nlohmann::ordered_json::array();
-        for (const MissionWaypoint &w : r.waypoints)
-            line.push_back(coord(w));
+        for (std::size_t i = 0; i < route.xy.size(); ++i)
+            line.push_back(geo ? nlohmann::ordered_json::array({route.lonLat[i].lon, route.lonLat[i].lat})
+                               : nlohmann::ordered_json::array({route.xy[i].x, route.xy[i].y}));
         geometry = {{"type", "LineString"}, {"coordinates", line}};
     }
+    nlohmann::ordered_json pathProps = {{"name", r.spec.name + " path"},
+                                        {"departure", jnum(r.plan.departure)},
+                                        {"travel_time", jnum(r.plan.travelTime)},
+                                        {"path_length", jnum(r.plan.pathLength)}};
+    if (r.plan.headingRoute())
+    {
+        // the line is the flown track of held headings, not straight legs between the waypoints
+        pathProps["route_model"] = "headings";
+        pathProps["segments"] = r.plan.headings->segments.size();
+    }
     nlohmann::ordered_json features = nlohmann::ordered_json::array();
-    features.push_back({{"type", "Feature"},
-                        {"properties",
-                         {{"name", r.spec.name + " path"},
-                          {"departure", jnum(r.plan.departure)},
-                          {"travel_time", jnum(r.plan.travelTime)},
-                          {"path_length", jnum(r.plan.pathLength)}}},
-                        {"geometry", geometry}});
+    features.push_back({{"type", "Feature"}, {"properties", pathProps}, {"geometry", geometry}});
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];
@@ -204,6 +254,12 @@ std::string routeGeoJson(const MissionResult &r)
             props["profile"] = w.profile;
             props["climb_to"] = jnum(w.dive.climbTo);
             props["dive_to"] = jnum(w.dive.diveTo);
+        }
+        if (r.plan.headingRoute())
+        {
+            // the heading held from this waypoint (null at the last one)
+            props["heading_deg"] = jnum(w.heading);
+            props["segment_duration"] = jnum(w.headingDuration);
         }
         features.push_back(
             {{"type", "Feature"}, {"properties", props}, {"geometry", {{"type", "Point"}, {"coordinates", coord(w)}}}});
@@ -222,33 +278,76 @@ GotoList gotoList(const MissionResult &r)
     g.number = r.spec.outputs.gotoNumber;
     g.comment = r.spec.name;
     for (std::size_t i = r.spec.outputs.gotoIncludeStart ? 0 : 1; i < r.waypoints.size(); ++i)
+    {
         g.waypoints.push_back({r.waypoints[i].lonLat.lon, r.waypoints[i].lonLat.lat});
+        if (r.plan.headingRoute())
+        {
+            // the heading held on the way to this waypoint: the one held from the waypoint before
+            const MissionWaypoint *from = i > 0 ? &r.waypoints[i - 1] : nullptr;
+            std::string note;
+            if (from && std::isfinite(from->heading))
+            {
+                char buf[128];
+                std::snprintf(buf, sizeof buf, "to here: hold heading %05.1f deg for %s", from->heading,
+                              heldFor(r, from->headingDuration).c_str());
+                note = buf;
+            }
+            else if (i == 0)
+                note = "start";
+            else
+                note = "hold in place";
+            g.notes.push_back(note);
+        }
+    }
     return g;
 }
+
+namespace
+{
+/// One stints.csv row: stint @p k from @p a held at @p bearing until @p b.
+std::string stintRow(const MissionResult &r, const MissionProblem &problem, std::size_t k, const TimedPoint &a,
+                     double bearing, const TimedPoint &b)
+{
+    const Point2 h = bearingVector(bearing);
+    const double dt = b.t - a.t;
+    const double dx = b.x - a.x - r.plan.speed * dt * h.x, dy = b.y - a.y - r.plan.speed * dt * h.y;
+    std::string s = std::to_string(k) + "," + text::csvNumber(a.t) + "," +
+                    text::csvNumber(a.t * r.spec.timeUnitSeconds) + "," + problem.isoTime(a.t) + "," +
+                    text::csvNumber(a.x) + "," + text::csvNumber(a.y) + ",";
+    if (problem.isGeographic())
+    {
+        const LonLat g = problem.toGeographic({a.x, a.y});
+        s += text::csvNumber(g.lon) + "," + text::csvNumber(g.lat);
+    }
+    else
+        s += ",";
+    s += "," + text::csvNumber(bearing) + "," + text::csvNumber(b.t) + "," + text::csvNumber(b.x) + "," +
+         text::csvNumber(b.y) + "," + text::csvNumber(dx) + "," + text::csvNumber(dy) + "," +
+         text::csvNumber(dt > 0.0 ? std::hypot(dx, dy) / dt : 0.0) + "\n";
+    return s;
+}
+}  // namespace
+
 std::string stintsCsv(const MissionResult &r, const MissionProblem &problem)
 {
     std::string s = "stint,time,time_s,time_iso,x,y,lon,lat,heading_deg,end_time,end_x,end_y,drift_x,drift_y,drift_speed\n";
     if (!r.plan.stints)
+    {
+        // a heading route: its segments are the stints, from the waypoint where each is begun to the next one
+        std::size_t k = 0;
+        if (r.plan.headingRoute())
+            for (std::size_t i = 0; i + 1 < r.waypoints.size(); ++i)
+                if (std::isfinite(r.waypoints[i].heading))
+                {
+                    const MissionWaypoint &a = r.waypoints[i], &b = r.waypoints[i + 1];
+                    s += stintRow(r, problem, k++, {a.position.x, a.position.y, a.time}, a.heading,
+                                  {b.position.x, b.position.y, b.time});
+                }
         return s;
+    }
     const StintPlan &p = r.plan.stints->plan;
     for (std::size_t k = 0; k < p.bearings.size() && k + 1 < p.surfacings.size(); ++k)
-    {
-        const TimedPoint &a = p.surfacings[k], &b = p.surfacings[k + 1];
-        const Point2 h = bearingVector(p.bearings[k]);
-        const double dt = b.t - a.t;
-        const double dx = b.x - a.x - r.plan.speed * dt * h.x, dy = b.y - a.y - r.plan.speed * dt * h.y;
-        s += std::to_string(k) + "," + text::csvNumber(a.t) + "," + text::csvNumber(a.t * r.spec.timeUnitSeconds) + "," +
-             problem.isoTime(a.t) + "," + text::csvNumber(a.x) + "," + text::csvNumber(a.y) + ",";
-        if (problem.isGeographic())
-        {
-            const LonLat g = problem.toGeographic({a.x, a.y});
-            s += text::csvNumber(g.lon) + "," + text::csvNumber(g.lat);
-        }
-        else
-            s += ",";
-        s += "," + text::csvNumber(p.bearings[k]) + "," + text::csvNumber(b.t) + "," + text::csvNumber(b.x) + "," + text::csvNumber(b.y) + "," +
-             text::csvNumber(dx) + "," + text::csvNumber(dy) + "," + text::csvNumber(dt > 0.0 ? std::hypot(dx, dy) / dt : 0.0) + "\n";
-    }
+        s += stintRow(r, problem, k, p.surfacings[k], p.bearings[k], p.surfacings[k + 1]);
     return s;
 }
 }  // namespace ompl_glider

@@ -71,8 +71,11 @@ std::string formatGotoList(const GotoList &list)
     s << "    b_arg: num_waypoints(nodim) " << list.waypoints.size() << "\n";
     s << "<end:b_arg>\n";
     s << "<start:waypoints>\n";
-    for (const LonLat &p : list.waypoints)
+    for (std::size_t i = 0; i < list.waypoints.size(); ++i)
     {
+        const LonLat &p = list.waypoints[i];
+        if (i < list.notes.size() && !list.notes[i].empty())
+            s << "# " << list.notes[i] << "\n";
         // A Slocum reads -180..180: a list built by hand in 0..360 is written in that convention too (185E is
         // -17500.0000); gotoList() already gives normalised longitudes (LocalProjection::inverse()).
         s << formatDegMin(normalizeLongitude(p.lon)) << " " << formatDegMin(p.lat) << "\n";

@@ -108,6 +108,29 @@ json plannerJson(const MissionSpec &m, const PlannedPath &p)
             {"parameters", params}};
 }
 
+/// A heading route's segments as flown, from the waypoints (each begun where the one before ended): bearing,
+/// duration (also in hours with physical time units) and where and when it is begun; null for straight legs.
+json headingsJson(const MissionResult &r, const MissionProblem &problem)
+{
+    if (!r.plan.headingRoute())
+        return nullptr;
+    json a = json::array();
+    for (const MissionWaypoint &w : r.waypoints)
+    {
+        if (!std::isfinite(w.heading))
+            continue;
+        json start = position(problem, w.position);
+        start["time"] = w.time;
+        start["iso"] = jtext(w.iso);
+        json seg = {{"bearing_deg", w.heading}, {"duration", w.headingDuration}};
+        if (r.spec.physicalUnits().time)
+            seg["duration_h"] = w.headingDuration * r.spec.timeUnitSeconds / 3600.0;
+        seg["start"] = start;
+        a.push_back(seg);
+    }
+    return a;
+}
+
 json departureSearchJson(const MissionSpec &m, const DepartureSearchResult &d)
 {
     auto samples = [](const std::vector<DepartureSample> &v) {
@@ -178,6 +201,11 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["expanded_vertices"] = p.expandedVertices;
     j["wall_time_s"] = {{"planning", p.planningSeconds}, {"postprocess", p.postprocessSeconds}, {"total", r.wallSeconds}};
     j["path_checked"] = p.pathChecked;
+    // heading routes (issue 24): what the glider holds, and the switch from a planner without a path
+    j["route_model"] = p.headingRoute() ? "headings" : "straight_legs";
+    j["headings"] = headingsJson(r, problem);
+    j["switched_from"] = jtext(p.switchedFrom);
+    j["switch_reason"] = jtext(p.switchReason);
     // constant-bearing stints ([IsernObstacles]): null without a stints section
     j["remaining_distance"] = p.stints ? jnum(p.stints->plan.remainingDistance) : json(nullptr);
     j["bearings"] = p.stints ? json(p.stints->plan.bearings) : json(nullptr);

@@ -20,6 +20,7 @@
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/output/OutputWriter.h"
 #include "ompl_glider/output/Report.h"
+#include "ompl_glider/output/SlocumGoto.h"
 #include "ompl_glider/output/SummaryJson.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
@@ -305,6 +306,12 @@ TEST(Output, SummaryHasOneSchemaAndNoDuplicateKeys)
     EXPECT_TRUE(s["straight_line"]["travel_time"].is_null());
     EXPECT_EQ(s["straight_line"]["passable"], false);
     EXPECT_EQ(s["start"]["x"], 1.0);
+    // Straight legs at V = 0.5: no heading route, no switch
+    EXPECT_FALSE(r.plan.headingRoute());
+    EXPECT_EQ(s["route_model"], "straight_legs");
+    EXPECT_TRUE(s["headings"].is_null());
+    EXPECT_TRUE(s["switched_from"].is_null());
+    EXPECT_TRUE(s["switch_reason"].is_null());
     // One name per quantity: none of the old duplicates.
     for (const char *old : {"cfc", "cmc", "feasible", "waypoints_raw", "planning_time_s", "straight_line_travel_time"})
         EXPECT_FALSE(s.contains(old)) << old;
@@ -427,4 +434,211 @@ TEST(Output, CheckOutputDirectoryBeforePlanning)
     EXPECT_THROW(checkOutputDirectory((file / "sub").string()), Error);
     EXPECT_NO_THROW(checkOutputDirectory(freshDirectory("fresh").string()));
     fs::remove(file);
+}
+
+namespace
+{
+/// Cells of a CSV text without quoting (the route files quote nothing), the header first.
+std::vector<std::vector<std::string>> csvRows(const std::string &text)
+{
+    std::vector<std::vector<std::string>> rows;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line))
+    {
+        std::vector<std::string> cells;
+        std::size_t from = 0;
+        for (std::size_t comma = line.find(','); comma != std::string::npos; comma = line.find(',', from))
+        {
+            cells.push_back(line.substr(from, comma - from));
+            from = comma + 1;
+        }
+        cells.push_back(line.substr(from));
+        rows.push_back(cells);
+    }
+    return rows;
+}
+
+std::string readText(const fs::path &p)
+{
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+}  // namespace
+
+TEST(Output, HeadingRouteFilesCarryTheHeadingsAndTheSwitch)
+{
+    // The Gulf Stream crossing at V = 0.2, a fifth of the jet's core speed (issue 24): ZA*TVE finds no path of
+    // straight legs, the pipeline switches to Isochrone, whose plan is a route of held headings. Geographic (50 km,
+    // one day per unit) so that every file has lon/lat, ISO times and hours.
+    MissionSpec m = parseMission(R"(name: jet_headings
+units: {length_m: 50000, time_s: 86400}
+epoch: "2026-06-01T00:00:00Z"
+projection: {lon0: -70.0, lat0: 36.0}
+current: {type: meandering_jet}
+region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}
+start: {x: 1, y: -3}
+goal: {x: 8, y: 3}
+vehicle: {speed: 0.2}
+planner: {horizon: 60, goal_tolerance: 0.001}
+outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
+)",
+                                 "jet_headings.yaml");
+    m.outputs.directory = freshDirectory("headings").string();
+    const MissionProblem problem(m);
+    const MissionResult r = runMission(problem);
+    const PlannedPath &p = r.plan;
+    ASSERT_TRUE(p.solved) << p.reason;
+    ASSERT_TRUE(p.headingRoute());
+    EXPECT_EQ(p.switchedFrom, "ZA*TVE");
+    EXPECT_EQ(p.planner, "Isochrone");
+    // the route's segments, their bearings in [0, 360) as written for the pilot
+    std::vector<HeadingSegment> seg = p.headings->segments;
+    for (HeadingSegment &h : seg)
+        h.bearing = std::fmod(std::fmod(h.bearing, 360.0) + 360.0, 360.0);
+    const std::size_t n = r.waypoints.size();
+    ASSERT_EQ(n, p.path.size());
+    ASSERT_GE(n, 2u);
+    ASSERT_LE(n - 1, seg.size());  // a segment per leg (the arrival may come before the last segment is begun)
+    // The waypoints: leg i is flown with segment i for as long as it lasts; the last is cut at the arrival.
+    for (std::size_t i = 0; i + 1 < n; ++i)
+    {
+        EXPECT_NEAR(r.waypoints[i].heading, seg[i].bearing, 1e-12) << i;
+        EXPECT_GE(r.waypoints[i].heading, 0.0);
+        EXPECT_LT(r.waypoints[i].heading, 360.0);
+        EXPECT_EQ(r.waypoints[i].headingDuration, p.path[i + 1].t - p.path[i].t) << i;
+        if (i + 2 < n)
+            EXPECT_NEAR(r.waypoints[i].headingDuration, seg[i].duration, 1e-9) << i;
+        else
+            EXPECT_LE(r.waypoints[i].headingDuration, seg[i].duration + 1e-9);
+    }
+    EXPECT_TRUE(std::isnan(r.waypoints.back().heading));
+
+    const auto files = writeOutputs(r, problem);
+    const fs::path dir = m.outputs.directory;
+    std::set<std::string> written;
+    for (const auto &f : files)
+        written.insert(fs::path(f).filename().string());
+    EXPECT_EQ(written, (std::set<std::string>{"summary.json", "waypoints.csv", "path.geojson", "goto_l05.ma",
+                                              "stints.csv", "map.svg", "map.png"}));
+
+    // waypoints.csv: the heading held from each waypoint and its duration, empty at the last one.
+    const auto w = csvRows(readText(dir / "waypoints.csv"));
+    ASSERT_EQ(w.size(), n + 1);
+    ASSERT_EQ(w[0].size(), 14u);
+    EXPECT_EQ(w[0][12], "heading_deg");
+    EXPECT_EQ(w[0][13], "segment_duration");
+    for (std::size_t i = 0; i + 1 < n; ++i)
+    {
+        EXPECT_NEAR(std::stod(w[i + 1][12]), seg[i].bearing, 1e-7 * 360.0) << i;
+        EXPECT_NEAR(std::stod(w[i + 1][13]), p.path[i + 1].t - p.path[i].t, 1e-8) << i;
+    }
+    EXPECT_EQ(w[n][12], "");
+    EXPECT_EQ(w[n][13], "");
+
+    // stints.csv: one row per segment flown; the drift is the displacement less V dt (sin b, cos b).
+    const auto st = csvRows(readText(dir / "stints.csv"));
+    ASSERT_EQ(st.size(), n);  // header + n - 1 segments
+    for (std::size_t i = 0; i + 1 < n; ++i)
+    {
+        const auto &row = st[i + 1];
+        const TimedPoint &a = p.path[i], &b = p.path[i + 1];
+        EXPECT_EQ(row[0], std::to_string(i));
+        EXPECT_NEAR(std::stod(row[1]), a.t, 1e-8);
+        EXPECT_EQ(row[3], problem.isoTime(a.t));
+        EXPECT_NEAR(std::stod(row[8]), seg[i].bearing, 1e-7 * 360.0);
+        EXPECT_NEAR(std::stod(row[9]), b.t, 1e-8);
+        const double b0 = seg[i].bearing * M_PI / 180.0, dt = b.t - a.t;
+        EXPECT_NEAR(std::stod(row[12]), b.x - a.x - 0.2 * dt * std::sin(b0), 1e-8);
+        EXPECT_NEAR(std::stod(row[13]), b.y - a.y - 0.2 * dt * std::cos(b0), 1e-8);
+    }
+
+    // summary.json: the route model, the segments (one day is 24 h) and the switch.
+    const nlohmann::json s = readJson(dir / "summary.json");
+    EXPECT_EQ(s["route_model"], "headings");
+    EXPECT_EQ(s["switched_from"], "ZA*TVE");
+    EXPECT_HAS(s["switch_reason"].get<std::string>(), "ZA*TVE found no path");
+    ASSERT_EQ(s["headings"].size(), n - 1);
+    double total = 0.0;
+    for (std::size_t i = 0; i + 1 < n; ++i)
+    {
+        const nlohmann::json &h = s["headings"][i];
+        EXPECT_NEAR(h["bearing_deg"].get<double>(), seg[i].bearing, 1e-12);
+        EXPECT_EQ(h["duration"].get<double>(), p.path[i + 1].t - p.path[i].t);
+        EXPECT_NEAR(h["duration_h"].get<double>(), 24.0 * h["duration"].get<double>(), 1e-9);
+        EXPECT_EQ(h["start"]["x"].get<double>(), p.path[i].x);
+        EXPECT_EQ(h["start"]["time"].get<double>(), p.path[i].t);
+        EXPECT_EQ(h["start"]["lat"].get<double>(), r.waypoints[i].lonLat.lat);
+        EXPECT_EQ(h["start"]["iso"], r.waypoints[i].iso);
+        total += h["duration"].get<double>();
+    }
+    EXPECT_NEAR(total, s["travel_time"].get<double>(), 1e-9);  // no holds: the segments make the whole trip
+
+    // path.geojson: the line is the flown track (lon/lat) through every segment end; the points carry the headings.
+    const nlohmann::json g = readJson(dir / "path.geojson");
+    const nlohmann::json &line = g["features"][0]["geometry"];
+    ASSERT_EQ(line["type"], "LineString");
+    ASSERT_EQ(line["coordinates"].size(), p.track.size());
+    ASSERT_GT(p.track.size(), n);  // curved: more points than segment ends
+    for (std::size_t k = 0; k < p.track.size(); k += p.track.size() / 7)
+    {
+        const LonLat q = problem.toGeographic({p.track[k].x, p.track[k].y});
+        EXPECT_EQ(line["coordinates"][k][0].get<double>(), q.lon);
+        EXPECT_EQ(line["coordinates"][k][1].get<double>(), q.lat);
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        bool onLine = false;
+        for (const auto &c : line["coordinates"])
+            onLine = onLine || (std::abs(c[0].get<double>() - r.waypoints[i].lonLat.lon) < 1e-9 &&
+                                std::abs(c[1].get<double>() - r.waypoints[i].lonLat.lat) < 1e-9);
+        EXPECT_TRUE(onLine) << "segment end " << i << " is not on the line";
+        const nlohmann::json &props = g["features"][i + 1]["properties"];
+        if (i + 1 < n)
+        {
+            EXPECT_NEAR(props["heading_deg"].get<double>(), seg[i].bearing, 1e-12);
+            EXPECT_EQ(props["segment_duration"].get<double>(), p.path[i + 1].t - p.path[i].t);
+        }
+        else
+            EXPECT_TRUE(props["heading_deg"].is_null());
+    }
+    EXPECT_EQ(g["features"][0]["properties"]["route_model"], "headings");
+
+    // The goto list: the segment ends after the start, each after a comment with the heading held to reach it.
+    const std::string gotoText = readText(dir / "goto_l05.ma");
+    const GotoList back = readGotoFile((dir / "goto_l05.ma").string());
+    ASSERT_EQ(back.waypoints.size(), n - 1);
+    std::istringstream gl(gotoText);
+    std::string gline, previous;
+    std::size_t k = 0;
+    bool inList = false;
+    while (std::getline(gl, gline))
+    {
+        if (gline == "<start:waypoints>")
+            inList = true;
+        else if (gline == "<end:waypoints>")
+            inList = false;
+        else if (inList && gline[0] != '#')
+        {
+            char want[64];
+            std::snprintf(want, sizeof want, "# to here: hold heading %05.1f deg for %.2f h", seg[k].bearing,
+                          24.0 * (p.path[k + 1].t - p.path[k].t));
+            EXPECT_EQ(previous, want) << "waypoint " << k;
+            ++k;
+        }
+        previous = gline;
+    }
+    EXPECT_EQ(k, n - 1);
+
+    // The report: the switch, the route model, the heading column, and no lattice grid for Isochrone.
+    std::ostringstream out;
+    printReport(out, r);
+    const std::string report = out.str();
+    EXPECT_HAS(report, "Switched:           ZA*TVE found no path");
+    EXPECT_HAS(report, "; planned with Isochrone\n");
+    EXPECT_HAS(report, "Route:              held headings (" + std::to_string(seg.size()) + " segments)\n");
+    EXPECT_HAS(report, "held for");
+    EXPECT_HAS(report, "Planner:            Isochrone, V = 0.2\n");
 }

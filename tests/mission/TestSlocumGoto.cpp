@@ -98,3 +98,27 @@ TEST(SlocumGoto, MalformedFilesAreRejectedWithTheLine)
                  Error);
     EXPECT_THROW(readGotoFile("/nonexistent/goto_l01.ma"), Error);
 }
+
+TEST(SlocumGoto, NotesAreCommentLinesBeforeTheirWaypoints)
+{
+    // A heading route's notes (gotoList()): a comment line before its waypoint, none where the note is empty or
+    // missing; the parser reads the same waypoints back.
+    GotoList list;
+    list.waypoints = {{-70.5, 41.25}, {-70.25, 41.5}, {-70.0, 41.75}};
+    list.notes = {"to here: hold heading 045.0 deg for 2.50 h", ""};
+    const std::string text = formatGotoList(list);
+    EXPECT_NE(text.find("<start:waypoints>\n# to here: hold heading 045.0 deg for 2.50 h\n-7030.0000 4115.0000\n"
+                        "-7015.0000 4130.0000\n-7000.0000 4145.0000\n<end:waypoints>\n"),
+              std::string::npos)
+        << text;
+    const GotoList back = parseGotoList(text);
+    ASSERT_EQ(back.waypoints.size(), 3u);
+    EXPECT_NEAR(back.waypoints[1].lon, -70.25, 1e-12);
+    EXPECT_NEAR(back.waypoints[2].lat, 41.75, 1e-12);
+    // without notes the text is what it was
+    GotoList plain = list;
+    plain.notes.clear();
+    std::string expected = text;
+    expected.erase(expected.find("# to here"), std::string("# to here: hold heading 045.0 deg for 2.50 h\n").size());
+    EXPECT_EQ(formatGotoList(plain), expected);
+}

@@ -165,6 +165,13 @@ struct MissionWaypoint
     int profile{-1};                  ///< dive profile index of the leg that reaches this waypoint (-1: none)
     DiveProfile dive;                 ///< that profile (climb-to / dive-to depths)
     double legTime{0.0};              ///< travel time of the leg that reaches it
+    /// Heading routes (PlannedPath::headingRoute()): the heading to hold FROM this waypoint, the bearing of the
+    /// segment that leaves it (degrees clockwise from north in [0, 360), through the water), and how long it is held
+    /// (field time units, as flown: the last segment ends at the arrival). The leaving segment is what the pilot sets
+    /// at the waypoint; the segment that reaches waypoint i is waypoint i-1's. NaN for straight legs, at the last
+    /// waypoint and where a hold (goal window) leaves the waypoint.
+    double heading{std::numeric_limits<double>::quiet_NaN()};
+    double headingDuration{std::numeric_limits<double>::quiet_NaN()};  ///< see heading
 };
 
 /// @brief One row of the speed sweep ([EichhornOceans] Table VI).

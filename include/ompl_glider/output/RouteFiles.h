@@ -12,9 +12,12 @@
 namespace ompl_glider
 {
 /// @brief Waypoints CSV, one line per waypoint (start first), header
-/// `index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to` (time in field units, time_s in
-/// seconds = time * units.time_s; lon/lat in -180..180, empty without a projection; time_iso empty without a
-/// calendar; the profile columns empty without dive profiles). Numbers with 10 significant digits.
+/// `index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to,heading_deg,segment_duration` (time in
+/// field units, time_s in seconds = time * units.time_s; lon/lat in -180..180, empty without a projection; time_iso
+/// empty without a calendar; the profile columns empty without dive profiles). For a heading route
+/// (PlannedPath::headingRoute()) heading_deg is the heading held FROM the waypoint (degrees clockwise from north,
+/// through the water) and segment_duration how long it is held, as flown (field time units); both are empty for
+/// straight legs and at the last waypoint. Numbers with 10 significant digits.
 std::string waypointsCsv(const MissionResult &result);
 
 /// @brief The final path as CSV with header `t,x,y,lon,lat` (t in field time units; lon/lat empty without a
@@ -33,21 +36,29 @@ std::vector<std::vector<LonLat>> splitAtAntimeridian(const std::vector<LonLat> &
 /// [lon, lat] (RFC 7946, longitudes in -180..180) when the mission has a projection, else planning x/y (then the
 /// collection carries "coordinates": "local"). The path is a LineString, or a MultiLineString split at the
 /// antimeridian (splitAtAntimeridian()) when it crosses it.
-std::string routeGeoJson(const MissionResult &result);
+/// A heading route (PlannedPath::headingRoute()): the line is the flown track (PlannedPath::track, every integration
+/// step, so it passes through every segment end), the path carries "route_model": "headings" and "segments", and
+/// every waypoint "heading_deg" and "segment_duration" (the heading held from it and for how long; null at the last).
+/// The track of a geographic heading route is projected with @p problem.
+/// @throws Error for a geographic heading route without @p problem.
+std::string routeGeoJson(const MissionResult &result, const MissionProblem *problem = nullptr);
 
 /// @brief isochrones.geojson: one Feature per isochrone time (MultiLineString, lon/lat where the problem is
 /// geographic, else the planning frame) with properties time (the mission's unit), time_s, time_iso (null without
 /// dates) and since_departure ([ThompsonICRA] Fig. 4; issue 12).
 std::string isochronesGeoJson(const MissionResult &result);
 
-/// @brief The Slocum goto list of the final path (without the start unless outputs.goto_include_start).
+/// @brief The Slocum goto list of the final path (without the start unless outputs.goto_include_start). For a heading
+/// route the waypoints are the segment ends, each with a note (GotoList::notes) naming the heading held on the way to
+/// it (the heading of the waypoint before) and for how long.
 /// @throws Error when the waypoints have no geographic coordinates.
 GotoList gotoList(const MissionResult &result);
 /// @brief stints.csv: the heading table of a stint plan ([IsernObstacles]), one row per surfacing: stint index,
 /// time (field units, seconds, ISO 8601), position (x, y, lon, lat), heading through the water held until the next
 /// surfacing (degrees clockwise from north), the next surfacing (time, x, y) and the expected drift over the stint
 /// (displacement minus speed x time x heading: what the current does; drift_speed its mean speed). Empty rows when
-/// the result has no stints.
+/// the result has no stints. A heading route without stints writes its segments as the stints: one row per segment
+/// flown, from the waypoint where it is begun to the next one (the last ends at the arrival).
 std::string stintsCsv(const MissionResult &result, const MissionProblem &problem);
 
 }  // namespace ompl_glider
