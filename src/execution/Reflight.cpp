@@ -539,7 +539,8 @@ PathReflight reflyPath(const std::vector<TimedPoint> &path, const CurrentField &
         const TimedPoint &a = path[i], &b = path[i + 1];
         if (a.x == b.x && a.y == b.y)
         {
-            r.times.push_back(r.times.back() + (b.t - a.t));  // a hold keeps its planned duration
+            // a hold keeps its planned duration, or with keepSlowLegs its planned end (a wait for a time)
+            r.times.push_back(settings.keepSlowLegs ? std::max(r.times.back(), b.t) : r.times.back() + (b.t - a.t));
             continue;
         }
         const LegReflight leg = reflyLeg(a.x, a.y, b.x, b.y, r.times.back(), field, forbidden, settings);

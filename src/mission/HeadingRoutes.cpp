@@ -8,6 +8,7 @@
 #include "PlanningInternal.h"
 #include "ompl_glider/execution/Reflight.h"
 #include "ompl_glider/planners/HeadingRefiner.h"
+#include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace ompl_glider
@@ -69,19 +70,61 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
     }
     // straight legs, leg by leg from the re-flown time of the leg's start, the plan's waits kept
     s.keepSlowLegs = true;
-    const PathReflight f = reflyPath(r.path, *ctx.field, forbidden, s);
-    if (!f.feasible)
+    const auto retimed = [&](const std::vector<TimedPoint> &path, std::string *why) {
+        std::vector<TimedPoint> out;
+        if (path.size() < 2)
+            return out;
+        const PathReflight f = reflyPath(path, *ctx.field, forbidden, s);
+        if (!f.feasible)
+        {
+            if (why)
+                *why = f.why;
+            return out;
+        }
+        out = path;
+        for (std::size_t k = 0; k < out.size(); ++k)
+            out[k].t = f.times[k];
+        return out;
+    };
+    // Each stage re-flown; a post-processing stage is kept only where the re-flight confirms that it flies and does
+    // not arrive later than the stage before it (the smoother and the refiner decide with the planner's integrator)
+    std::string why;
+    const std::vector<TimedPoint> raw = retimed(r.raw, &why);
+    std::vector<TimedPoint> smoothed = retimed(r.smoothed, &why), path = retimed(r.path, &why);
+    const auto later = [](const std::vector<TimedPoint> &a, const std::vector<TimedPoint> &b) {
+        return !b.empty() && (a.empty() || a.back().t > b.back().t);
+    };
+    double planner = r.travelTime;
+    if (later(smoothed, raw))
+        smoothed = raw;
+    if (later(path, smoothed))
+    {
+        r.reflightNote = path.empty() ? "the final path fails its accurate re-flight (" + why + ")" :
+                                        "the final path arrives later than the path before it when re-flown";
+        r.reflightNote += "; the earlier stage is flown instead";
+        planner = smoothed.size() == r.smoothed.size() ? r.smoothedTravelTime : r.rawTravelTime;
+        path = smoothed;
+    }
+    if (path.empty())
     {
         r.solved = false;
         r.status = kNoPathStatus;
-        r.reason = "the path cannot be flown when re-flown accurately: " + f.why;
+        r.reason = "the path cannot be flown when re-flown accurately: " + why;
         return;
     }
-    std::vector<TimedPoint> path = r.path;
-    for (std::size_t k = 0; k < path.size(); ++k)
-        path[k].t = f.times[k];
-    r.plannerTravelTime = r.travelTime;
+    r.plannerTravelTime = planner;
+    if (!raw.empty())
+    {
+        r.raw = raw;
+        r.rawTravelTime = raw.back().t - r.departure;
+    }
+    if (!smoothed.empty())
+    {
+        r.smoothed = smoothed;
+        r.smoothedTravelTime = smoothed.back().t - r.departure;
+    }
     r.path = std::move(path);
+    r.pathLength = pathLength(r.path);
     r.travelTime = r.path.back().t - r.departure;
     r.reflownTravelTime = r.travelTime;
     r.reflownEndDistance = 0.0;
@@ -95,7 +138,8 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     const PlannerEntry &asked = plannerEntry(failed.planner);
     if (!asked.lattice())
         return failed;
-    const std::string why = asked.name + " found no path of straight legs (" + failed.reason + ")";
+    const std::size_t cut = failed.reason.find("; the path must arrive");
+    const std::string why = asked.name + " found no path of straight legs: " + failed.reason.substr(0, cut);
     PlanOptions h = o;
     h.planner = "Isochrone";
     PlannedPath r = planOnField(problem, departure, h);

@@ -60,6 +60,13 @@ void printRouteModel(std::ostream &out, const PlannedPath &p)
         out << "Route:              held headings (" << p.headings->segments.size() << " segments)\n";
     else
         out << "Route:              straight legs (" << (p.path.empty() ? 0 : p.path.size() - 1) << " legs)\n";
+    if (p.solved && p.reflown && std::isfinite(p.plannerTravelTime))
+        out << format("Re-flight:          %.6f (the planner's own legs: %.6f, %+.2e relative)\n", p.reflownTravelTime,
+                      p.plannerTravelTime, (p.plannerTravelTime - p.reflownTravelTime) / p.reflownTravelTime);
+    else if (p.solved && p.reflown)
+        out << format("Re-flight:          %.6f, ends %.3g from the goal\n", p.reflownTravelTime, p.reflownEndDistance);
+    if (p.solved && !p.reflightNote.empty())
+        out << "Re-flight note:     " << p.reflightNote << "\n";
 }
 }  // namespace
 

@@ -206,6 +206,17 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["headings"] = headingsJson(r, problem);
     j["switched_from"] = jtext(p.switchedFrom);
     j["switch_reason"] = jtext(p.switchReason);
+    // honest times (issue 24): the accurate Dormand-Prince re-flight of the reported route
+    if (p.reflown)
+        j["reflight"] = {{"method", "Dormand-Prince 5(4), rtol 1e-10"},
+                         {"travel_time", jnum(p.reflownTravelTime)},
+                         {"relative_difference", p.reflownTravelTime > 0.0 ?
+                              jnum((p.travelTime - p.reflownTravelTime) / p.reflownTravelTime) : json(nullptr)},
+                         {"end_distance_to_goal", jnum(p.reflownEndDistance)},
+                         {"planner_travel_time", jnum(p.plannerTravelTime)},
+                         {"note", jtext(p.reflightNote)}};
+    else
+        j["reflight"] = nullptr;
     // constant-bearing stints ([IsernObstacles]): null without a stints section
     j["remaining_distance"] = p.stints ? jnum(p.stints->plan.remainingDistance) : json(nullptr);
     j["bearings"] = p.stints ? json(p.stints->plan.bearings) : json(nullptr);

@@ -52,8 +52,9 @@ struct ReflightSettings
     Point2 goal;         ///< heading routes: the goal (used when radius > 0)
     ReflightTolerance tolerance;  ///< the integrator's tolerances
     /// reflyPath(): a leg the plan flies more than 0.1 % slower than the re-flight at full speed (a wait for a lane,
-    /// a goal window) keeps its planned arrival when that is later than the re-flown one, so the re-flight follows
-    /// the plan's schedule; false: every leg at full speed
+    /// a goal window) keeps its planned arrival when that is later than the re-flown one, and a hold keeps its
+    /// planned end, so the re-flight follows the plan's schedule; false: every leg at full speed, holds keep their
+    /// planned duration
     bool keepSlowLegs{false};
 };
 

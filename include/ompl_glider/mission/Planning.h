@@ -138,6 +138,8 @@ struct PlannedPath
     /// tolerance, [EichhornIWK] Table III); NaN when not re-timed
     double plannerTravelTime{std::numeric_limits<double>::quiet_NaN()};
     double reflownTravelTime{std::numeric_limits<double>::quiet_NaN()};  ///< the re-flight's travel time
+    /// Set when the final path failed its re-flight and an earlier stage (smoothed, or the planner's) is flown: why
+    std::string reflightNote;
     /// Heading routes: the distance from the goal at which the re-flight ends (straight legs end on it: 0)
     double reflownEndDistance{std::numeric_limits<double>::quiet_NaN()};
 
