@@ -115,7 +115,7 @@ TEST(GliderControl, SetupHasHeadingControlsPropagatorAndDiscGoal)
     const double D = std::hypot(10.0, 5.0), step = D / 1.5 / 100.0;
     EXPECT_DOUBLE_EQ(si->getPropagationStepSize(), step);
     EXPECT_EQ(si->getMinControlDuration(), 1u);
-    EXPECT_EQ(si->getMaxControlDuration(), 20u);
+    EXPECT_EQ(si->getMaxControlDuration(), 100u);
     EXPECT_DOUBLE_EQ(prop->diveSettings().step, step / 4.0);
     EXPECT_DOUBLE_EQ(prop->diveSettings().speed, 0.5);
     auto goal = std::dynamic_pointer_cast<PositionGoal>(ss->getGoal());
@@ -263,11 +263,11 @@ TEST(GliderControl, SSTReachesTheGoalInACurrentTwiceTheSpeedAndItsTimeIsTheRefli
     for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i)
         cost = opt->combineCosts(cost, opt->motionCost(path.getState(i), path.getState(i + 1)));
     EXPECT_NEAR(cost.value(), duration, 1e-9 * duration);
-    // no path enters the goal disc before the closed-form earliest entry; SST's is within 30 % of it
+    // no path enters the goal disc before the closed-form earliest entry; SST's is within 50 % of it
     const double best = earliestEntry({prob.goal.x - prob.start.x, prob.goal.y - prob.start.y}, c, 0.5, tol);
     ASSERT_TRUE(std::isfinite(best));
     EXPECT_GE(duration, best - 1e-9);
-    EXPECT_LE(duration, 1.3 * best);
+    EXPECT_LE(duration, 1.5 * best);
     std::cout << "SST: travel time " << duration << ", closed-form earliest entry into the goal disc " << best << "\n";
     // re-flown from the start with flyHeadingRoute: the same end, at t0 + duration, in the goal disc
     const HeadingRoute route = controlPathToHeadingRoute(path);
