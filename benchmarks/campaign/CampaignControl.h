@@ -140,7 +140,7 @@ inline void benchmarkControlPlanners(const CampaignProblem &p, const std::set<st
     const double diagonal = std::hypot(r.xMax - r.xMin, r.yMax - r.yMin);
     const auto str = controlNumber;
 
-    ot::Benchmark b(*css, "glider " + p.name + " control");
+    ot::Benchmark b(*css, "glider " + p.name + "_control");  // the statistics script keeps the last word
     b.addExperimentParameter("problem", "VARCHAR(64)", p.name);
     b.addExperimentParameter("description", "VARCHAR(256)", p.description);
     b.addExperimentParameter("field", "VARCHAR(64)", p.problem.field->name());

@@ -73,8 +73,9 @@ public:
 /// mathematical angle (atan2(hy, hx), informational like the yaw of the geometric planners).
 ///
 /// A motion that cannot be flown makes the result invalid for every validity checker: when flyHeading() reports a
-/// grounding (land or a forbidden region) or a step of the dive leaves the planning box, the result is the last
-/// point before it with the time +infinity, outside the space's time bounds. OMPL's control planners propagate with
+/// grounding (land or a forbidden region, checked on every RK4 step's chord) or the end of an RK4 step lies outside
+/// the planning box, the result is the last point before it with the time +infinity, outside the space's time bounds
+/// (so a wall thinner than a propagation step is not jumped over). OMPL's control planners propagate with
 /// oc::SpaceInformation::propagateWhileValid(), which checks the state after every propagation step and keeps the
 /// motion only up to the last valid one. A negative duration (backward propagation, which canPropagateBackward()
 /// refuses) gives such an invalid result too; a zero duration copies the state.
