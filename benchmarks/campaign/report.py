@@ -157,7 +157,7 @@ def main():
             extra = ""
             if row.get(passable) not in (None, "", "nan"):
                 extra = "; ice passable (lower bound) %s" % fmt(float(row[passable]), 4)
-            if k in refdisc:
+            if k in refdisc and any(pl.startswith(CONTROL_PREFIX) for pl in data.get(k, {})):
                 extra += "; first entry into the control goal disc (radius %s) %s" % (
                     fmt(float(row["control_goal_tolerance"]), 4), fmt(refdisc[k], 4))
             verdicts.append("- level-set resolution study, %s: cell %s: %s / %s / %s, extrapolated %s "
