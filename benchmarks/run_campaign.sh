@@ -10,6 +10,10 @@
 # into OUTDIR/campaign.db (load it in Planner Arena), and writes the plots OUTDIR/travel_time.png,
 # solve_time.png, success_rate.png, maps.png and the Markdown table OUTDIR/table.md (also printed).
 # Extra arguments after OUTDIR are passed to glider_campaign (e.g. --runs 3 --time 1 --problems islands).
+# The strong-current set of issue 24 (the jet at V = 0.2 and 0.15, a double gyre six times V; ZA*TVE, LevelSet,
+# Isochrone and OMPL's control planners oc::SST, oc::RRT, oc::KPIECE1), alone and quickly:
+#   benchmarks/run_campaign.sh --quick OUTDIR --runs 3 --time 5 --problems strong
+# (the maps of maps.png stay those of the four classic problems).
 set -euo pipefail
 
 QUICK=0
@@ -18,7 +22,7 @@ EXTRA=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) QUICK=1 ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
     *) if [ -z "$OUT" ]; then OUT="$1"; else EXTRA+=("$1"); fi ;;
   esac
   shift

@@ -1,12 +1,16 @@
 #pragma once
 /// @file CampaignProblems.h
-/// @brief The four problems of the benchmark campaign (issue #4) on the meandering jet of [EichhornRAS] Sec. 6.1:
-/// region x in [0, 10], y in [-4, 4], V = 0.5, t0 = 0, from the south-west to the north-east across the jet.
+/// @brief The problems of the benchmark campaign. The "classic" set (issue #4): four problems on the meandering jet of
+/// [EichhornRAS] Sec. 6.1, region x in [0, 10], y in [-4, 4], V = 0.5, t0 = 0, from the south-west to the north-east
+/// across the jet. The "strong" set (issue 24): currents several times the glider's speed, where straight legs fail
+/// and OMPL's control planners (heading controls, GliderControl.h) run beside the registry's planners.
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/environment/ForbiddenRegions.h"
 #include "ompl_glider/environment/IceZone.h"
@@ -20,11 +24,74 @@ namespace ompl_glider
 /// @brief One campaign problem: the GliderProblem and its forbidden regions (null for open water).
 struct CampaignProblem
 {
-    std::string name;                               ///< "open_water", "islands", "ice", "closure"
+    std::string name;                               ///< "open_water", "islands", "ice", "closure", "jet_v020", ...
     std::string description;                        ///< one line
     GliderProblem problem;                          ///< field, box, t0, horizon, start, goal, V
     std::shared_ptr<ForbiddenRegions> environment;  ///< forbidden regions (also in problem.environment)
+    std::string set{"classic"};                     ///< "classic" (issue #4) or "strong" (issue 24)
+    /// Finest cell of the level-set reference (the campaign also solves at 2x and 4x this cell and extrapolates)
+    double referenceCell{0.025};
+    /// The optimum also by Zermelo shooting (ZermeloReference; open water of the classic set only)
+    bool shooting{true};
+    /// Registry planners to run; empty: the campaign's default list
+    std::vector<std::string> planners;
+    /// Run OMPL's control planners (oc::SST, oc::RRT, oc::KPIECE1) on the heading-control setup as well
+    bool control{false};
 };
+
+/// @brief Registry planners of the strong-current problems: the lattice default, the level set and the heading
+/// planner "Isochrone" (skipped with a note when the registry does not have it).
+inline std::vector<std::string> strongCurrentPlanners()
+{
+    return {"ZA*TVE", "LevelSet", "Isochrone"};
+}
+
+/// @brief The strong-current problems (issue 24):
+///   - jet_v020, jet_v015: the built-in Gulf Stream mission (meandering jet, peak speed about 1, box [0, 10] x
+///     [-4, 4], horizon 60) from (1, -3) to (8, 3) across the jet at V = 0.2 and 0.15, as `glider_plan --speed V`;
+///   - gyre: the double gyre of the registry ("double_gyre", amplitude 0.5, length 1: two gyres on [0, 2] x [0, 1],
+///     peak speed pi A / L = 1.571) at V = 0.26, the flow 6.04 times the speed, from (0.3, 0.3) in the western gyre to
+///     (1.7, 0.7) in the eastern one, horizon 10.
+inline std::vector<CampaignProblem> makeStrongCurrentProblems()
+{
+    std::vector<CampaignProblem> out;
+    for (const auto &[name, V] : std::vector<std::pair<std::string, double>>{{"jet_v020", 0.2}, {"jet_v015", 0.15}})
+    {
+        CampaignProblem c;
+        c.name = name;
+        c.description = "meandering jet (Gulf Stream mission), start (1, -3), goal (8, 3), V = " + std::to_string(V);
+        c.problem = gulfStreamProblem();
+        c.problem.travel.speed = V;
+        c.set = "strong";
+        c.shooting = false;
+        c.planners = strongCurrentPlanners();
+        c.control = true;
+        out.push_back(c);
+    }
+    {
+        CampaignProblem c;
+        c.name = "gyre";
+        c.description = "double gyre A = 0.5, L = 1 (peak 1.571) at V = 0.26, from (0.3, 0.3) to (1.7, 0.7)";
+        c.problem.field = makeAnalyticField("double_gyre", {{"amplitude", 0.5}, {"length", 1.0}});
+        c.problem.travel.speed = 0.26;
+        c.problem.xMin = 0.0;
+        c.problem.xMax = 2.0;
+        c.problem.yMin = 0.0;
+        c.problem.yMax = 1.0;
+        c.problem.t0 = 0.0;
+        c.problem.horizon = 10.0;
+        c.problem.start = {0.3, 0.3};
+        c.problem.goal = {1.7, 0.7};
+        c.problem.goalTolerance = 1e-3;
+        c.set = "strong";
+        c.referenceCell = 0.005;
+        c.shooting = false;
+        c.planners = strongCurrentPlanners();
+        c.control = true;
+        out.push_back(c);
+    }
+    return out;
+}
 
 /// @brief Start, goal and common settings of every campaign problem.
 inline GliderProblem campaignBaseProblem(std::shared_ptr<const CurrentField> field)

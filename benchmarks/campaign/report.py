@@ -11,9 +11,12 @@ table. Definitions (per problem and planner, over the runs of the campaign):
   motions   = share of those whose motions as returned (with the planner's own time stamps) pass the motion validator
   median T  = median re-simulated travel time ("travel_time") over the valid runs
   / ZA*TVE  = median T divided by ZA*TVE's median T on the same problem
-  / optimum = median T divided by the problem's optimum (reference.csv: Zermelo shooting in open water, else the
-              level-set front extrapolated from cells 0.05 and 0.025, 2 T(0.025) - T(0.05); with ice zones kept out
-              of the front, an upper bound)
+  optimum   = the problem's optimum (reference.csv: Zermelo shooting in open water, else the level-set front
+              extrapolated from its two finest cells h and 2h, 2 T(h) - T(2h); with ice zones kept out of the front, an
+              upper bound). OMPL's control planners (control_SST, control_RRT, control_KPIECE1: heading controls,
+              GliderControl.h) reach a goal disc (their goal tolerance, reference.csv control_goal_tolerance), so their
+              optimum is the front's first entry into that disc (reference_disc), extrapolated the same way
+  / optimum = median T divided by that optimum
 """
 import csv
 import math
@@ -26,8 +29,14 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-LATTICE = ["TVE", "A*TVE", "ZTVE", "ZA*TVE", "Wavefront", "LevelSet"]
-PROBLEM_ORDER = ["open_water", "islands", "ice", "closure"]
+LATTICE = ["TVE", "A*TVE", "ZTVE", "ZA*TVE", "Wavefront", "LevelSet", "Isochrone"]
+PROBLEM_ORDER = ["open_water", "islands", "ice", "closure", "jet_v020", "jet_v015", "gyre"]
+CONTROL_PREFIX = "control_"
+# reference.csv columns: the current names, then those of earlier campaigns (cells 0.1 / 0.05 / 0.025)
+LEVEL_SET_COLUMNS = [("level_set_coarse", "level_set_medium", "level_set_fine", "level_set_seconds_fine",
+                      "ice_passable_fine"),
+                     ("level_set_0.1", "level_set_0.05", "level_set_0.025", "level_set_seconds_0.025",
+                      "ice_passable_0.025")]
 
 
 def clean(name):
@@ -67,12 +76,20 @@ def fmt(v, digits=3):
 def main():
     db, out = sys.argv[1], sys.argv[2]
     refcsv = sys.argv[3] if len(sys.argv) > 3 else os.path.join(out, "reference.csv")
-    ref, refrows = {}, {}
+    ref, refdisc, refrows = {}, {}, {}
     if os.path.exists(refcsv):
         for row in csv.DictReader(open(refcsv)):
             refrows[row["problem"]] = row
             if row["found"] == "1":
                 ref[row["problem"]] = float(row["reference_travel_time"])
+            if row.get("reference_disc") not in (None, "", "nan", "inf"):
+                refdisc[row["problem"]] = float(row["reference_disc"])
+
+    def optimum(p, pl):
+        """The optimum a planner's travel time is compared with (the goal disc for the control planners)."""
+        if pl.startswith(CONTROL_PREFIX):
+            return refdisc.get(p, float("nan"))
+        return ref.get(p, float("nan"))
     data = load(db)
     problems = [p for p in PROBLEM_ORDER if p in data] + sorted(p for p in data if p not in PROBLEM_ORDER)
     planners = []
@@ -99,9 +116,9 @@ def main():
                 medCFC=median([r["cfc"] for r in runs if r["cfc"] is not None]),
                 medCMC=median([r["cmc"] for r in runs if r["cmc"] is not None]))
 
-    lines = ["| problem | planner | runs | success | valid | motions valid | median travel time | / ZA*TVE | / optimum "
-             "| median solve time (s) | median CFC | median CMC |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| problem | planner | runs | success | valid | motions valid | median travel time | / ZA*TVE | optimum "
+             "| / optimum | median solve time (s) | median CFC | median CMC |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     verdicts = []
     for p in problems:
         z = stats.get((p, "ZA*TVE"), {}).get("medT", float("nan"))
@@ -110,15 +127,21 @@ def main():
             if s["n"] == 0:
                 continue
             rz = s["medT"] / z if z == z and s["medT"] == s["medT"] else float("nan")
-            rr = s["medT"] / ref[p] if p in ref and s["medT"] == s["medT"] else float("nan")
-            lines.append("| %s | %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            opt = optimum(p, pl)
+            rr = s["medT"] / opt if opt == opt and s["medT"] == s["medT"] else float("nan")
+            lines.append("| %s | %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
                 p, pl, s["n"], fmt(100 * s["success"], 0) + "%", fmt(100 * s["valid"], 0) + "%"
                 if s["valid"] == s["valid"] else "-", fmt(100 * s["motions"], 0) + "%"
-                if s["motions"] == s["motions"] else "-", fmt(s["medT"]), fmt(rz), fmt(rr), fmt(s["medTime"], 3),
-                fmt(s["medCFC"], 0), fmt(s["medCMC"], 0)))
+                if s["motions"] == s["motions"] else "-", fmt(s["medT"]), fmt(rz), fmt(opt), fmt(rr),
+                fmt(s["medTime"], 3), fmt(s["medCFC"], 0), fmt(s["medCMC"], 0)))
         # the issue's figures: ZA*TVE no worse than any sampling planner, 100% valid where a solution exists
         zs = stats.get((p, "ZA*TVE"))
-        if zs:
+        if zs and z != z:  # no ZA*TVE path (strong currents): who reached the goal, and how close to the optimum
+            best = ["%s %s (%s)" % (pl, fmt(stats[(p, pl)]["medT"]), fmt(100 * stats[(p, pl)]["success"], 0) + "%")
+                    for pl in planners if stats[(p, pl)]["n"] and stats[(p, pl)]["medT"] == stats[(p, pl)]["medT"]]
+            verdicts.append("- %s: ZA*TVE found no path; median travel times (solved share): %s" % (
+                p, ", ".join(best) if best else "none"))
+        elif zs:
             worse = [pl for pl in planners if pl not in LATTICE and stats[(p, pl)]["medT"] == stats[(p, pl)]["medT"]
                      and stats[(p, pl)]["medT"] < z]
             verdicts.append("- %s: ZA*TVE median %s, valid %s; sampling planners with a lower median: %s" % (
@@ -128,15 +151,20 @@ def main():
         verdicts.append("- optimum per problem: " + ", ".join(
             "%s %s (%s)" % (k, fmt(v, 4), refrows[k].get("method", "shooting")) for k, v in ref.items()))
     for k, row in refrows.items():
-        if "level_set_0.025" in row:
+        names = next((c for c in LEVEL_SET_COLUMNS if c[2] in row), None)
+        if names:
+            coarse, medium, fine, seconds, passable = names
             extra = ""
-            if row.get("ice_passable_0.025") not in (None, "", "nan"):
-                extra = "; ice passable (lower bound) %s" % fmt(float(row["ice_passable_0.025"]), 4)
-            verdicts.append("- level-set resolution study, %s: cell 0.1 / 0.05 / 0.025: %s / %s / %s, extrapolated %s "
-                            "(%s s at 0.025)%s"
-                            % (k, fmt(float(row["level_set_0.1"]), 4), fmt(float(row["level_set_0.05"]), 4),
-                               fmt(float(row["level_set_0.025"]), 4), fmt(float(row["level_set_extrapolated"]), 4),
-                               fmt(float(row["level_set_seconds_0.025"]), 1), extra))
+            if row.get(passable) not in (None, "", "nan"):
+                extra = "; ice passable (lower bound) %s" % fmt(float(row[passable]), 4)
+            if k in refdisc and any(pl.startswith(CONTROL_PREFIX) for pl in data.get(k, {})):
+                extra += "; first entry into the control goal disc (radius %s) %s" % (
+                    fmt(float(row["control_goal_tolerance"]), 4), fmt(refdisc[k], 4))
+            verdicts.append("- level-set resolution study, %s: cell %s: %s / %s / %s, extrapolated %s "
+                            "(%s s at the finest)%s"
+                            % (k, row.get("cells", "0.1 / 0.05 / 0.025"), fmt(float(row[coarse]), 4),
+                               fmt(float(row[medium]), 4), fmt(float(row[fine]), 4),
+                               fmt(float(row["level_set_extrapolated"]), 4), fmt(float(row[seconds]), 1), extra))
     text = "\n".join(lines) + "\n\n" + "\n".join(verdicts) + "\n"
     open(os.path.join(out, "table.md"), "w").write(text)
     print(text)
@@ -151,11 +179,14 @@ def main():
                 ax.boxplot([v if v else [float("nan")] for v in vals], labels=pls)
                 if kind == "box" and fname.startswith("travel") and p in ref:
                     ax.axhline(ref[p], color="g", ls="--", lw=1, label="optimum %.3f" % ref[p])
+                    if p in refdisc and any(pl.startswith(CONTROL_PREFIX) for pl in pls):
+                        ax.axhline(refdisc[p], color="m", ls=":", lw=1, label="goal disc %.3f" % refdisc[p])
                     ax.legend(fontsize=7)
             else:
                 vals = [getter(stats[(p, pl)]) for pl in pls]
                 ax.bar(range(len(pls)), [100 * v if v == v else 0 for v in vals],
-                       color=["tab:red" if pl in LATTICE else "tab:blue" for pl in pls])
+                       color=["tab:red" if pl in LATTICE else "tab:green" if pl.startswith(CONTROL_PREFIX)
+                              else "tab:blue" for pl in pls])
                 ax.set_xticks(range(len(pls)))
                 ax.set_xticklabels(pls)
                 ax.set_ylim(0, 105)

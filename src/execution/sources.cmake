@@ -1,7 +1,9 @@
-# execution/: flying a plan in another ocean (surfacings, control strategies; issue 13)
+# execution/: flying a plan in another ocean (surfacings, control strategies; issue 13), OMPL control planning
+# with the dive integrator (GliderControl, issue 24)
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Dive.cpp
   ${CMAKE_CURRENT_LIST_DIR}/HeadingRoute.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Reflight.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Execution.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/GliderControl.cpp
 )
