@@ -55,6 +55,8 @@
 #include "ompl_glider/execution/GliderControl.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/ompl/PathResimulation.h"
+#include "ompl_glider/execution/HeadingRoute.h"
+#include "ompl_glider/execution/Reflight.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
@@ -296,7 +298,19 @@ void recordGeometricRun(const ob::PlannerPtr &planner, ot::Benchmark::RunPropert
         return;
     const auto *last = path->getStates().back()->as<TimeSE2StateSpace::StateType>();
     const bool atGoal = std::hypot(last->getX() - pr.goal.x, last->getY() - pr.goal.y) <= pr.goalTolerance;
-    const PathResimulation r = resimulatePath(ctx, *path, pr.t0);
+    PathResimulation r = resimulatePath(ctx, *path, pr.t0);
+    if (const auto *source = dynamic_cast<const HeadingRouteSource *>(planner.get()); source && source->lastHeadingRoute())
+    {
+        // a route of held headings (Isochrone, LevelSet in strong currents): re-flown as headings, accurately
+        ReflightSettings rs;
+        rs.speed = ctx.speed();
+        rs.depth = ctx.travel->params().depth;
+        const HeadingReflight f = reflyHeadingRoute(*source->lastHeadingRoute(), *ctx.field, ctx.environment.get(), rs);
+        r.finite = f.ok && !f.grounded;
+        r.valid = r.finite && std::hypot(f.end.x - pr.goal.x, f.end.y - pr.goal.y) <= pr.goalTolerance;
+        r.travelTime = f.end.t - pr.t0;
+        run["heading route BOOLEAN"] = "1";
+    }
     const bool reached = exact && atGoal;
     run["reached goal BOOLEAN"] = reached ? "1" : "0";
     run["plan valid BOOLEAN"] = (reached && r.valid) ? "1" : "0";

@@ -22,6 +22,8 @@ std::string controlStrategyName(ControlStrategy s)
             return "greedy";
         case ControlStrategy::Replan:
             return "replan";
+        case ControlStrategy::PlannedHeadings:
+            return "planned_headings";
     }
     return "unknown";
 }
@@ -29,7 +31,8 @@ std::string controlStrategyName(ControlStrategy s)
 const std::vector<ControlStrategy> &controlStrategies()
 {
     static const std::vector<ControlStrategy> all{ControlStrategy::CurrentSensitive, ControlStrategy::CurrentBlind,
-                                                  ControlStrategy::Greedy, ControlStrategy::Replan};
+                                                  ControlStrategy::Greedy, ControlStrategy::Replan,
+                                                  ControlStrategy::PlannedHeadings};
     return all;
 }
 
@@ -131,11 +134,32 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         double dx = target.x - x, dy = target.y - y;
         const double len = std::hypot(dx, dy);
         double hx = 0.0, hy = 0.0;
-        if (len > 0.0)
+        double surface = std::min(t + o.surfacingInterval, end);
+        if (strategy == ControlStrategy::PlannedHeadings && o.headings && !o.headings->segments.empty())
+        {
+            // the planned segment at t: its heading until its end (then a surfacing), the last one held after it
+            double segEnd = o.headings->departure;
+            const HeadingSegment *seg = &o.headings->segments.back();
+            for (const HeadingSegment &h : o.headings->segments)
+            {
+                segEnd += std::max(h.duration, 0.0);
+                if (t < segEnd - 1e-12 * std::max(1.0, std::abs(segEnd)))
+                {
+                    seg = &h;
+                    break;
+                }
+            }
+            const Point2 h = bearingVector(seg->bearing);
+            hx = h.x;
+            hy = h.y;
+            if (seg != &o.headings->segments.back() || t < segEnd)
+                surface = std::min(surface, segEnd);
+        }
+        else if (len > 0.0)
         {
             dx /= len;
             dy /= len;
-            if (strategy == ControlStrategy::CurrentSensitive || strategy == ControlStrategy::Replan)
+            if (strategy != ControlStrategy::CurrentBlind && strategy != ControlStrategy::Greedy)
                 crabHeading(dx, dy, forecast.velocity(x, y, o.depth, t), speed, hx, hy);
             else
             {
@@ -144,7 +168,6 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
             }
         }
         r.headings.push_back(std::atan2(hy, hx));
-        const double surface = std::min(t + o.surfacingInterval, end);
         // the dive: the heading held (the one integrator of a dive, Dive.h)
         DiveSettings ds;
         ds.speed = speed;

@@ -107,6 +107,7 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
     o.depth = m.vehicle.depth;
     o.endTime = run.plan.front().t + (std::isnan(e.duration) ? 2.0 * planned : e.duration);
     o.replanEvery = settings.replanEvery;
+    o.headings = run.headings ? &*run.headings : nullptr;
     for (ControlStrategy s : settings.strategies)
     {
         if (s == ControlStrategy::Replan)
@@ -199,6 +200,9 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
             throw Error(m.place("execution.strategies") + ": unknown strategy '" + name + "'");
         r.strategies.push_back(*s);
     }
+    // a heading route is flown by its own headings too, unless the mission lists its strategies
+    if (plan.headingRoute() && e.strategies == ExecutionSpec().strategies)
+        r.strategies.insert(r.strategies.begin(), ControlStrategy::PlannedHeadings);
     r.truth = e.truth ? problem.getTruth()->name() : "forecast";
     r.surfacingInterval = surfacingInterval(m);
     if (!(r.surfacingInterval > 0.0) || !std::isfinite(r.surfacingInterval))
@@ -232,6 +236,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     {
         r.runs[0].planned = true;
         r.runs[0].plan = plan.path;
+        r.runs[0].headings = plan.headings;
     }
     else
         r.runs[0].reason = plan.reason;
@@ -248,7 +253,10 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
             run.planned = p.solved;
             run.reason = p.reason;
             if (p.solved)
+            {
                 run.plan = p.path;
+                run.headings = p.headings;
+            }
         }
         if (run.planned)
             flyRun(problem, r, run);

@@ -163,7 +163,8 @@ TEST(MissionExecution, UniformTruthArrivesAtTheClosedFormTime)
     ASSERT_EQ(e.runs.size(), 1u);
     EXPECT_NEAR(e.surfacingInterval, 0.25, 1e-15);
     EXPECT_NEAR(r.plan.travelTime, 8.0 / 0.6, 1e-3);  // the plan: 8 units at V + 0.1
-    for (ControlStrategy s : controlStrategies())
+    ASSERT_EQ(e.strategies.size(), 4u);  // a plan of straight legs: only the listed strategies
+    for (ControlStrategy s : e.strategies)  // the four the mission lists
     {
         const FlownTrack &f = flown(e, 0, s);
         EXPECT_TRUE(f.reached) << controlStrategyName(s);

@@ -22,6 +22,7 @@
 
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/environment/Environment.h"
+#include "ompl_glider/execution/HeadingRoute.h"
 #include "ompl_glider/Geometry.h"
 
 namespace ompl_glider
@@ -38,10 +39,15 @@ enum class ControlStrategy
     Greedy,
     /// A new plan from the fix at every ExecutionOptions::replanEvery-th surfacing (ExecutionOptions::replan, e.g.
     /// the planner on the forecast), then flown as CurrentSensitive. Not in [ThompsonICRA]; what operators do.
-    Replan
+    Replan,
+    /// The plan's own held headings (a heading route, issue 24): each segment's heading from its start to its end
+    /// (a surfacing also at every segment end), the last one held after the plan's end. For a plan of straight legs
+    /// (no ExecutionOptions::headings) it flies as CurrentSensitive.
+    PlannedHeadings
 };
 
-/// @brief The name of a strategy as outputs write it: "current_sensitive", "current_blind", "greedy", "replan".
+/// @brief The name of a strategy as outputs write it: "current_sensitive", "current_blind", "greedy", "replan",
+/// "planned_headings".
 std::string controlStrategyName(ControlStrategy s);
 /// @brief Every strategy, in the order above.
 const std::vector<ControlStrategy> &controlStrategies();
@@ -65,6 +71,8 @@ struct ExecutionOptions
                                                                ///< NaN: twice the plan's duration after its start
     Replanner replan;        ///< ControlStrategy::Replan: makes the new plans (required by it)
     unsigned replanEvery{1}; ///< ControlStrategy::Replan: replan at every n-th surfacing (the start counts)
+    /// ControlStrategy::PlannedHeadings: the plan's held headings (null: the plan is straight legs)
+    const HeadingRoute *headings{nullptr};
 };
 
 /// @brief One flown run.

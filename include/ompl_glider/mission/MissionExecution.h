@@ -7,6 +7,7 @@
 /// MissionResult and written by the output layer (execution.csv, execution_tracks.csv, the box plot, summary.json).
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@ struct ExecutionRun
     double departure{0.0};    ///< departure (field units)
     double radius{0.0};       ///< goal radius used (length units)
     std::vector<TimedPoint> plan;  ///< the plan flown (the final path of planRoute())
+    std::optional<HeadingRoute> headings;  ///< the plan's held headings when it is a heading route (issue 24)
     std::vector<FlownTrack> flown;    ///< one per ExecutionResult::strategies
 };
 
