@@ -3,7 +3,7 @@
 // region x in [0, 10], y in [-4, 4]) and on a time-dependent double gyre whose flow is about six times V.
 // "default" is the pipeline as glider_plan runs it (ZA*TVE, switching to Isochrone, then LevelSet, when the lattice
 // finds no path); the others are the named planner alone (no switch).
-//   bench_strong_currents [--quick] [--pairs N]
+//   bench_strong_currents [--quick] [--pairs N] [--only-pairs]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +13,8 @@
 #include <random>
 #include <string>
 #include <vector>
+
+#include <ompl/util/Console.h>
 
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -55,6 +57,7 @@ struct Outcome
     double travelTime{NAN};
     double seconds{0.0};
     std::string planner;
+    std::string reason;
 };
 
 /// One plan; @p alone: the named planner only (no switch).
@@ -67,6 +70,7 @@ Outcome plan(const std::string &yaml, bool alone, const std::string &name)
     const auto t = std::chrono::steady_clock::now();
     const PlannedPath p = planRoute(problem, problem.getSpec().departure.time, o);
     Outcome r;
+    r.reason = p.reason;
     r.seconds = seconds(t);
     r.solved = p.solved;
     r.travelTime = p.solved ? p.travelTime : NAN;
@@ -82,12 +86,15 @@ const char *planners[][2] = {{"default", "{name: ZA*TVE}"},
 
 int main(int argc, char **argv)
 {
-    bool quick = false;
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    bool quick = false, onlyPairs = false;
     int pairs = 10;
     for (int i = 1; i < argc; ++i)
     {
         if (!std::strcmp(argv[i], "--quick"))
             quick = true;
+        else if (!std::strcmp(argv[i], "--only-pairs"))
+            onlyPairs = true;
         else if (!std::strcmp(argv[i], "--pairs") && i + 1 < argc)
             pairs = std::atoi(argv[++i]);
     }
@@ -97,6 +104,8 @@ int main(int argc, char **argv)
     char ref[96];
     std::snprintf(ref, sizeof ref, "{name: LevelSet, parameters: {resolution: %g}}", fine);
 
+    if (onlyPairs)
+        goto randomPairs;
     std::printf("Jet crossing (1,-3) -> (8,3); reference: LevelSet at cell %g\n\n", fine);
     std::printf("| V | reference | planner | used | travel time | vs reference | wall s |\n|---|---|---|---|---|---|---|\n");
     for (double V : {0.3, 0.2, 0.15, 0.1})
@@ -132,6 +141,7 @@ int main(int argc, char **argv)
         }
     }
 
+randomPairs:
     std::printf("\nRandom jet pairs (start in y < -1, goal in y > 1, across the jet; seed 7): share solved, mean wall s\n\n");
     std::printf("| V | planner | solved | mean wall s |\n|---|---|---|---|\n");
     std::mt19937 rng(7);
@@ -139,6 +149,7 @@ int main(int argc, char **argv)
     std::vector<std::array<double, 4>> list;
     for (int i = 0; i < pairs; ++i)
         list.push_back({ux(rng), uys(rng), ux(rng), uyg(rng)});
+    std::vector<std::string> failures;
     for (double V : {0.2, 0.1})
         for (const auto &p : planners)
         {
@@ -152,8 +163,16 @@ int main(int argc, char **argv)
                 const Outcome o = plan(jetMission(V, q[0], q[1], q[2], q[3], p[1]), alone, alone ? p[0] : "");
                 solved += o.solved;
                 wall += o.seconds;
+                if (!o.solved)
+                    failures.push_back(std::string(p[0]) + " at V " + std::to_string(V) + ", (" + std::to_string(q[0]) +
+                                       ", " + std::to_string(q[1]) + ") -> (" + std::to_string(q[2]) + ", " +
+                                       std::to_string(q[3]) + "): " + o.reason);
             }
             std::printf("| %.2f | %s | %d / %d | %.2f |\n", V, p[0], solved, pairs, wall / pairs);
         }
+    std::printf("\nWithout a route (the named planner alone, or the default):\n");
+    for (const std::string &f : failures)
+        if (f.rfind("ZA*TVE", 0) != 0)
+            std::printf("- %s\n", f.c_str());
     return 0;
 }

@@ -124,6 +124,36 @@ TEST(StrongCurrents, RankineVortexIsochroneMatchesTheRadialSpiral)
     }
 }
 
+// (2b) Convergence: the heading planner's route tends to the continuous optimum as its segments shrink. In the Rankine
+// vortex the optimal heading turns continuously (radially outward while the vortex carries the glider round), so a
+// route of N held headings is slower by an amount that falls as 1 / N^2 (measured: 4.8e-3, 1.2e-3, 3.0e-4, 7.4e-5,
+// 1.9e-5 of T = 10 for N = 4 ... 64); every N stays above the bound |r1 - r0| / V.
+TEST(StrongCurrents, IsochroneConvergesToTheRadialSpiralAsItsSegmentsShrink)
+{
+    std::vector<double> errors;
+    for (int n : {4, 8, 16, 32, 64})
+    {
+        const std::string yaml =
+            "name: rankine\n"
+            "current: {type: rankine_vortex, parameters: {x0: 0, y0: 0, radius: 1, vmax: 1, u: 0, v: 0}}\n"
+            "region: {x_min: -6, x_max: 6, y_min: -6, y_max: 6}\n"
+            "start: {x: 2, y: 0}\n"
+            "goal: {x: 1.2612894, y: 3.7959385}\n"
+            "vehicle: {speed: 0.2}\n"
+            "planner: {name: Isochrone, horizon: 40, parameters: {segments: " + std::to_string(n) + "}}\n";
+        const MissionProblem problem = mission(yaml);
+        const PlannedPath plan = planRoute(problem, 0.0);
+        ASSERT_TRUE(plan.solved) << n << " segments: " << plan.reason;
+        errors.push_back(plan.travelTime / 10.0 - 1.0);
+        std::printf("rankine V 0.2, %d segments: travel time %.9f (rel %.3e)\n", n, plan.travelTime, errors.back());
+        EXPECT_GE(errors.back(), -1e-5) << n;  // the goal tolerance (1e-5 of the distance) is all it may gain
+    }
+    // second order in the segment length: each doubling of N divides the excess by about 4 (at least 3 here)
+    for (std::size_t k = 0; k + 1 < errors.size(); ++k)
+        EXPECT_LT(errors[k + 1], errors[k] / 3.0) << "N = " << (4 << k) << " -> " << (8 << k);
+    EXPECT_LT(errors.back(), 5e-5);
+}
+
 namespace
 {
 /// Linear shear u = a y, v = 0: the least time of a route of two held headings (theta1 for t1, then one heading to
