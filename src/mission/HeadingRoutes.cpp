@@ -139,7 +139,12 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     if (!asked.lattice())
         return failed;
     const std::size_t cut = failed.reason.find("; the path must arrive");
-    const std::string why = asked.name + " found no path of straight legs: " + failed.reason.substr(0, cut);
+    std::string lattice = failed.reason.substr(0, cut);
+    // the lattice's advice (a finer grid, ...) is moot once another planner has been asked
+    const std::size_t advice = lattice.find("; a finer grid");
+    if (advice != std::string::npos)
+        lattice = lattice.substr(0, advice) + ")";
+    const std::string why = asked.name + " found no path of straight legs: " + lattice;
     PlanOptions h = o;
     h.planner = "Isochrone";
     PlannedPath r = planOnField(problem, departure, h);

@@ -21,6 +21,8 @@ namespace ompl_glider
 namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+/// Front points at most (about 50 bytes each): beyond, the search gives up (the level set decides then).
+constexpr std::size_t kMaxPoints = 4000000;
 
 /// A point of a front: where a chain of held headings from the start is at the end of a step.
 struct FrontPoint
@@ -53,14 +55,22 @@ struct CellGrid
 {
     double x0, y0, h;
     std::size_t nx, ny;
-    std::vector<unsigned char> reached;
+    std::vector<long> reached;   ///< the step at which a front last held the cell (-1: never)
+    std::vector<long> occupied;  ///< the step whose new front holds the cell (-1: none)
 
     CellGrid(const Region &r, double cell)
         : x0(r.xMin), y0(r.yMin), h(cell),
           nx(static_cast<std::size_t>(std::ceil((r.xMax - r.xMin) / cell)) + 1),
-          ny(static_cast<std::size_t>(std::ceil((r.yMax - r.yMin) / cell)) + 1), reached(nx * ny, 0)
+          ny(static_cast<std::size_t>(std::ceil((r.yMax - r.yMin) / cell)) + 1), reached(nx * ny, -1), occupied(nx * ny, -1)
     {
     }
+    /// A cell a new point may take at @p step: never reached, or reached long enough ago that the reachable set,
+    /// which cannot hold still where the current is stronger than the vehicle, may have left it and come back.
+    bool open(std::size_t c, long step) const
+    {
+        return reached[c] < 0 || step - reached[c] > kReopenSteps;
+    }
+    static constexpr long kReopenSteps = 8;
     std::size_t cellOf(double x, double y) const
     {
         const auto i = static_cast<std::size_t>(std::clamp((x - x0) / h, 0.0, static_cast<double>(nx - 1)));
@@ -74,10 +84,12 @@ struct CellGrid
     }
 };
 
-/// The earliest arrival per cell: of the flights of a step, one new front point per cell not reached before (the one
-/// nearest the cell's centre; ties broken by parent and heading, so that the result does not depend on threads).
+/// The earliest arrival per cell: of the flights of a step, one new front point per open cell (the one nearest the
+/// cell's centre; ties broken by parent and heading, so that the result does not depend on threads). Of those, the
+/// points whose eight neighbouring cells all hold new points too are inside the front, not on it, and are dropped:
+/// the front is the boundary of the set reached at this step (what the isochrone method keeps).
 std::vector<long> keepOnePerCell(std::vector<std::vector<Flight>> &flown, CellGrid &grid,
-                                 std::vector<FrontPoint> &points)
+                                 std::vector<FrontPoint> &points, long step)
 {
     std::vector<Flight> all;
     for (auto &f : flown)
@@ -87,14 +99,31 @@ std::vector<long> keepOnePerCell(std::vector<std::vector<Flight>> &flown, CellGr
                a.centreDistance != b.centreDistance ? a.centreDistance < b.centreDistance :
                a.parent != b.parent ? a.parent < b.parent : a.bearing < b.bearing;
     });
-    std::vector<long> front;
+    std::vector<const Flight *> kept;
     for (const Flight &f : all)
-        if (!grid.reached[f.cell])
+        if (grid.open(f.cell, step) && grid.occupied[f.cell] != step)
         {
-            grid.reached[f.cell] = 1;
-            front.push_back(static_cast<long>(points.size()));
-            points.push_back({f.x, f.y, f.t, f.parent, f.bearing});
+            grid.occupied[f.cell] = step;
+            kept.push_back(&f);
         }
+    std::vector<long> front;
+    for (const Flight *f : kept)
+    {
+        const long i = static_cast<long>(f->cell % grid.nx), j = static_cast<long>(f->cell / grid.nx);
+        bool inside = true;
+        for (long dj = -1; dj <= 1 && inside; ++dj)
+            for (long di = -1; di <= 1 && inside; ++di)
+            {
+                const long a = i + di, b = j + dj;
+                inside = a >= 0 && b >= 0 && a < static_cast<long>(grid.nx) && b < static_cast<long>(grid.ny) &&
+                         grid.occupied[static_cast<std::size_t>(b) * grid.nx + static_cast<std::size_t>(a)] == step;
+            }
+        grid.reached[f->cell] = step;
+        if (inside)
+            continue;
+        front.push_back(static_cast<long>(points.size()));
+        points.push_back({f->x, f->y, f->t, f->parent, f->bearing});
+    }
     return front;
 }
 
@@ -212,7 +241,8 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
     CellGrid grid(r, cell);
     std::vector<FrontPoint> points{{start.x, start.y, t0, -1, 0.0}};
     std::vector<long> front{0};
-    grid.reached[grid.cellOf(start.x, start.y)] = 1;
+    grid.reached[grid.cellOf(start.x, start.y)] = 0;
+    long step = 0;
     ThreadPool pool(threads_);
     const unsigned K = headings_;
     GoalHit hit;
@@ -244,7 +274,7 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
                     if (e.grounded || !inRegion(e.x, e.y))
                         continue;
                     const std::size_t cl = grid.cellOf(e.x, e.y);
-                    if (!grid.reached[cl])
+                    if (grid.open(cl, step + 1))
                         flown[c].push_back({cl, e.x, e.y, e.t, front[q], bearing, grid.centreDistance(cl, e.x, e.y)});
                 }
             }
@@ -254,7 +284,13 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
                 hit = g;
         if (std::isfinite(hit.arrival))
             break;
-        front = keepOnePerCell(flown, grid, points);
+        front = keepOnePerCell(flown, grid, points, ++step);
+        if (points.size() > kMaxPoints)
+        {
+            reason_ = "the isochrone search gave up after " + std::to_string(points.size()) +
+                      " front points without meeting the goal";
+            return ompl::base::PlannerStatus::ABORT;
+        }
         expanded_ += front.size();
     }
     if (!std::isfinite(hit.arrival))

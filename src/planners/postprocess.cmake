@@ -6,5 +6,6 @@ list(APPEND OMPL_GLIDER_SOURCES
 # planners/ heading routes: the isochrone planner and the refinement of headings (issue 24)
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/HeadingRefiner.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/HeadingTracker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/IsochronePlanner.cpp
 )

@@ -13,6 +13,7 @@
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/execution/Reflight.h"
 #include "ompl_glider/planners/HeadingRefiner.h"
+#include "ompl_glider/planners/HeadingTracker.h"
 #include "ompl_glider/planners/PathSmoother.h"
 
 namespace ompl_glider
@@ -73,37 +74,49 @@ std::string infeasibleLegReason(const GliderContext &ctx, const std::vector<Time
            (env.empty() ? "" : ": " + env);
 }
 
-/// The steering directions along a backtracked level-set path (issue 24): between two points, the bearing of the
-/// velocity through the water, (p1 - p0) / dt - c at the middle, held for dt; then refined to end at the goal.
+/// The steering directions along a backtracked level-set path (issue 24): the path followed by held headings piece
+/// by piece (trackPathWithHeadings(), targets about @p spacing apart), then refined whole by direct shooting where
+/// that is faster and still valid. When the path cannot be followed, the steering directions themselves (the bearing
+/// of the velocity through the water, (p1 - p0) / dt - c, between backtracked points) are refined instead.
 RefinedHeadings levelSetHeadings(const GliderContext &ctx, const std::vector<TimedPoint> &path, Point2 goal,
-                                 double tolerance, double tEnd)
+                                 double tolerance, double tEnd, double spacing)
 {
-    HeadingRoute route;
     RefinedHeadings none;
     if (path.size() < 2)
     {
         none.why = "the backtracked path has fewer than two points";
         return none;
     }
-    route.start = {path.front().x, path.front().y};
-    route.departure = path.front().t;
     const double depth = ctx.travel->params().depth;
-    for (std::size_t i = 0; i + 1 < path.size(); ++i)
-    {
-        const TimedPoint &a = path[i], &b = path[i + 1];
-        const double dt = b.t - a.t;
-        if (!(dt > 0.0))
-            continue;
-        const Velocity c = ctx.field->velocity(0.5 * (a.x + b.x), 0.5 * (a.y + b.y), depth, 0.5 * (a.t + b.t));
-        const double wx = (b.x - a.x) / dt - c.u, wy = (b.y - a.y) / dt - c.v;
-        route.segments.push_back({bearingOf(wx, wy), dt});
-    }
     HeadingRefineSettings s;
-    s.segments = static_cast<unsigned>(std::clamp<std::size_t>(route.segments.size() / 4, 16, 64));
     s.depth = depth;
     s.radius = std::max(tolerance, 1e-12);
     s.tEnd = tEnd;
-    return refineHeadingRoute(route, goal, ctx, s);
+    RefinedHeadings tracked = trackPathWithHeadings(path, goal, ctx, s, spacing);
+    HeadingRoute route;
+    if (tracked.ok)
+        route = tracked.route;
+    else
+    {
+        route.start = {path.front().x, path.front().y};
+        route.departure = path.front().t;
+        for (std::size_t i = 0; i + 1 < path.size(); ++i)
+        {
+            const TimedPoint &a = path[i], &b = path[i + 1];
+            const double dt = b.t - a.t;
+            if (!(dt > 0.0))
+                continue;
+            const Velocity c = ctx.field->velocity(0.5 * (a.x + b.x), 0.5 * (a.y + b.y), depth, 0.5 * (a.t + b.t));
+            route.segments.push_back({bearingOf((b.x - a.x) / dt - c.u, (b.y - a.y) / dt - c.v), dt});
+        }
+    }
+    s.segments = static_cast<unsigned>(std::clamp<std::size_t>(route.segments.size(), 16, 64));
+    RefinedHeadings refined = refineHeadingRoute(route, goal, ctx, s);
+    if (tracked.ok && (!refined.ok || refined.flight.arrivalTime > tracked.flight.arrivalTime))
+        return tracked;
+    if (!refined.ok && !tracked.ok)
+        refined.why = tracked.why + "; " + refined.why;
+    return refined;
 }
 }  // namespace
 
@@ -299,7 +312,8 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
         OMPL_INFORM("%s: the backtracked path cannot be flown as straight legs (resolution %g): %s; flying its "
                     "headings", getName().c_str(), p.cellSize, why.c_str());
         const auto *goal = pdef_->getGoal()->as<ompl::base::GoalRegion>();
-        const RefinedHeadings h = levelSetHeadings(*ctx_, last_.path, Point2{gx, gy}, goal->getThreshold(), tEnd);
+        const RefinedHeadings h =
+            levelSetHeadings(*ctx_, last_.path, Point2{gx, gy}, goal->getThreshold(), tEnd, 4.0 * p.cellSize);
         if (!h.ok)
         {
             reason_ = "the level set reached the goal, but neither straight legs nor its headings could be flown to "
