@@ -74,7 +74,8 @@ double bearing0(const GliderContext &ctx, const HeadingRefineSettings &settings,
 }  // namespace
 
 RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point2 goal, const GliderContext &ctx,
-                                      const HeadingRefineSettings &settings, double spacing)
+                                      const HeadingRefineSettings &settings, double spacing,
+                                      const std::vector<double> *flownBearings)
 {
     RefinedHeadings out;
     if (path.size() < 2)
@@ -110,7 +111,9 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
         {
             const Point2 q = target + 1 == path.size() ? goal : Point2{path[target].x, path[target].y};
             double duration = duration0(at, path[target].t, total);
-            double bearing = bearing0(ctx, settings, at, q, path[target].t);
+            double bearing = flownBearings && target == from + 1 && target < flownBearings->size() ?
+                                 (*flownBearings)[target] :
+                                 bearing0(ctx, settings, at, q, path[target].t);
             if (flyTo(ctx, dive, at, q, bearing, duration) <= tolerance)
             {
                 route.segments.push_back({bearing, duration});

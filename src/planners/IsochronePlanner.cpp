@@ -14,6 +14,7 @@
 #include "ompl_glider/execution/Dive.h"
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/planners/HeadingRefiner.h"
+#include "ompl_glider/planners/HeadingTracker.h"
 #include "ompl_glider/planners/PathSmoother.h"
 
 namespace ompl_glider
@@ -125,6 +126,23 @@ std::vector<long> keepOnePerCell(std::vector<std::vector<Flight>> &flown, CellGr
         points.push_back({f->x, f->y, f->t, f->parent, f->bearing});
     }
     return front;
+}
+
+/// The timed points of the search from the start to the goal hit: the front points back from the hit's parent, then
+/// the goal at the hit's arrival; @p bearings gets the bearing flown into each (the start's is unused).
+std::vector<TimedPoint> chainTo(const std::vector<FrontPoint> &points, const GoalHit &hit, Point2 goal,
+                                std::vector<double> &bearings)
+{
+    std::vector<TimedPoint> back{{goal.x, goal.y, hit.arrival}};
+    std::vector<double> into{hit.bearing};
+    for (long k = hit.parent; k >= 0; k = points[static_cast<std::size_t>(k)].parent)
+    {
+        const FrontPoint &p = points[static_cast<std::size_t>(k)];
+        back.push_back({p.x, p.y, p.t});
+        into.push_back(p.bearing);
+    }
+    bearings.assign(into.rbegin(), into.rend());
+    return std::vector<TimedPoint>(back.rbegin(), back.rend());
 }
 
 /// The headings flown from the start to front point @p i, then @p last for @p lastDuration.
@@ -315,16 +333,23 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
     rs.threads = threads_;
     if (refine_)
     {
-        const RefinedHeadings ref = refineHeadingRoute(coarse, goal, *ctx_, rs);
-        if (!ref.ok)
+        // the search's points followed by held headings, the last piece closed on the goal (always near the goal,
+        // so this closes wherever the search arrived), and the whole route shot in N segments; the faster valid one
+        std::vector<double> bearings;
+        const std::vector<TimedPoint> chain = chainTo(points, hit, goal, bearings);
+        const RefinedHeadings followed = trackPathWithHeadings(chain, goal, *ctx_, rs, 0.0, &bearings);
+        const RefinedHeadings shot = refineHeadingRoute(coarse, goal, *ctx_, rs);
+        if (!followed.ok && !shot.ok)
         {
-            reason_ = "the refinement could not close the route on the goal: " + ref.why;
+            reason_ = "the route could not be closed on the goal: " + followed.why + "; " + shot.why;
             OMPL_INFORM("%s: %s", getName().c_str(), reason_.c_str());
             return ompl::base::PlannerStatus::ABORT;
         }
-        route_ = ref.route;
-        OMPL_DEBUG("%s: refinement: %u flights, %u segments, %g -> %g", getName().c_str(), ref.flights, rs.segments,
-                   searchTime_, route_.duration());
+        const bool useShot = shot.ok && (!followed.ok || shot.flight.arrivalTime <= followed.flight.arrivalTime);
+        route_ = useShot ? shot.route : followed.route;
+        OMPL_DEBUG("%s: refinement: %u flights, %u segments, %g -> %g (followed: %g)", getName().c_str(), shot.flights,
+                   rs.segments, searchTime_, shot.ok ? shot.route.duration() : kInf,
+                   followed.ok ? followed.route.duration() : kInf);
     }
     else
     {

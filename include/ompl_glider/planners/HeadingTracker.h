@@ -18,6 +18,9 @@ namespace ompl_glider
 /// apart along it (x/y units), flights at @p settings.step (0: headingCheckStep() of the path's duration). The
 /// result is checked as every heading route is (verifyHeadingRoute(): land, forbidden regions, region, the end within
 /// settings.radius of @p goal); ok false with why when a piece cannot be flown even split down to the path's points.
+/// @p flownBearings (may be null): when the path was flown by held headings (a search's points), the bearing flown
+/// into each point (index 0 unused): the first guess of a piece between neighbouring points.
 RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point2 goal, const GliderContext &ctx,
-                                      const HeadingRefineSettings &settings, double spacing);
+                                      const HeadingRefineSettings &settings, double spacing,
+                                      const std::vector<double> *flownBearings = nullptr);
 }  // namespace ompl_glider

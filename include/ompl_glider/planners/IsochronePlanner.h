@@ -5,8 +5,11 @@
 ///
 /// From the start, every point of the front flies K headings through the water for one time step with the one dive
 /// integrator (flyHeading(): land and forbidden regions checked at the times they are passed); of the points that
-/// land in a cell of a square grid not reached before, one per cell is kept (the earliest arrival per cell: the
-/// discrete form of the first-arrival front of [LollaLevelSet]); the front is the set of points kept at that step.
+/// land in a cell of a square grid, one per cell is kept (the one nearest the cell's centre), and of those only the
+/// ones on the boundary of the cells reached at this step (a cell whose eight neighbours were all reached too is
+/// inside the set, not on its front): the discrete form of the reachable set's boundary that [LollaLevelSet]'s front
+/// tracks. A cell reached once stays closed for 8 steps, then reopens: where the current is stronger than the vehicle
+/// the reachable set cannot hold still, so it may leave a place and come back to it later.
 /// The first flight whose track passes within one cell of the goal ends the search; its headings, followed back to
 /// the start, are the initial route, which refineHeadingRoute() turns into N equal segments that end exactly at the
 /// goal in least time. As the cell, the step and the segments shrink, the route tends to the continuous optimum that
