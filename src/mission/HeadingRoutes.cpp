@@ -24,7 +24,7 @@ PlannedPath headingResult(const MissionProblem &problem, const GliderContext &ct
     s.radius = problem.gliderProblem(r.departure, r.speed).goalTolerance;
     s.tEnd = std::min(ctx.region.tMax, ctx.field->timeEnd());
     // the planner's check step: the reported times are those of this flight (checked against an accurate re-flight)
-    s.step = route.step > 0.0 ? route.step : headingCheckStep(route.duration());
+    s.step = route.step > 0.0 ? route.step : headingCheckStep(route.duration(), ctx);
     std::string why;
     const HeadingFlight f = verifyHeadingRoute(route, ctx, g, s, &why);
     r.headings = route;
@@ -57,7 +57,10 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
         const Point2 g = problem.getGoal();
         r.reflownEndDistance = std::hypot(f.end.x - g.x, f.end.y - g.y);
         r.reflownTravelTime = f.end.t - r.departure;
-        const double radius = problem.gliderProblem(r.departure, r.speed).goalTolerance;
+        // within the goal tolerance, or so close that still water would close the gap in 1e-6 of the trip (a long
+        // route through a sensitive flow, where two accurate integrators part by more than a tight tolerance)
+        const double radius = std::max(problem.gliderProblem(r.departure, r.speed).goalTolerance,
+                                       1e-6 * r.speed * r.travelTime);
         if (!f.ok || f.grounded || !(r.reflownEndDistance <= radius))
         {
             r.solved = false;

@@ -176,9 +176,14 @@ bool inRegion(const Region &r, const TimedPoint &p)
 }
 }  // namespace
 
-double headingCheckStep(double duration)
+double headingCheckStep(double duration, const GliderContext &ctx)
 {
-    return std::max(duration, 1e-12) / 2000.0;
+    // a step no longer than the time to cross 1/150 of the region at V + max|c| either: long routes through the
+    // flow's features (a gyre circled for weeks) are integrated as finely as short ones
+    const Region &r = ctx.region;
+    const double cross = std::max(r.xMax - r.xMin, r.yMax - r.yMin) / 150.0 / (ctx.speed() + ctx.maxCurrent());
+    const double step = std::max(duration, 1e-12) / 2000.0;
+    return std::isfinite(cross) && cross > 0.0 ? std::min(step, cross) : step;
 }
 
 HeadingRoute resampleHeadingRoute(const HeadingRoute &initial, unsigned n, double duration)
@@ -213,7 +218,7 @@ HeadingFlight verifyHeadingRoute(const HeadingRoute &route, const GliderContext 
     DiveSettings dive;
     dive.speed = ctx.speed();
     dive.depth = settings.depth;
-    dive.step = settings.step > 0.0 ? settings.step : route.step > 0.0 ? route.step : headingCheckStep(route.duration());
+    dive.step = settings.step > 0.0 ? settings.step : route.step > 0.0 ? route.step : headingCheckStep(route.duration(), ctx);
     // the whole route is flown (it ends at the goal); its end must lie within the radius
     HeadingFlight f = flyHeadingRoute(route, *ctx.field, ctx.environment.get(), dive, true);
     const TimedPoint &end = f.ends.back();
@@ -311,7 +316,7 @@ RefinedHeadings refineHeadingRoute(const HeadingRoute &initial, Point2 goal, con
             // roundoff or a failed line search: judge the point reached below
         }
         HeadingRoute r = s.routeOf(x.data(), n);
-        verify.step = settings.step > 0.0 ? settings.step : headingCheckStep(r.duration());
+        verify.step = settings.step > 0.0 ? settings.step : headingCheckStep(r.duration(), ctx);
         r = polish(std::move(r), goal, ctx, settings.depth, verify.step, s.flights);
         r.step = verify.step;
         std::string why;

@@ -87,7 +87,7 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
     DiveSettings dive;
     dive.speed = ctx.speed();
     dive.depth = settings.depth;
-    dive.step = settings.step > 0.0 ? settings.step : headingCheckStep(total);
+    dive.step = settings.step > 0.0 ? settings.step : headingCheckStep(total, ctx);
     HeadingRoute route;
     route.start = {path.front().x, path.front().y};
     route.departure = path.front().t;

@@ -132,7 +132,8 @@ struct PlannedPath
     /// Honest times (issue 24): the route re-flown by the accurate Dormand-Prince re-flight (execution/Reflight.h).
     /// Straight legs are re-timed leg by leg by it (full speed; holds and legs the plan flies slower on purpose keep
     /// their planned arrival when the re-flight is earlier), so path and travelTime are the re-flight's; a leg it
-    /// cannot fly makes the plan fail. Heading routes are re-flown whole: the distance of their end from the goal.
+    /// cannot fly makes the plan fail. Heading routes are re-flown whole: their end must lie within the goal tolerance,
+    /// or within V * 1e-6 of the travel time of the goal (the gap still water closes in 1e-6 of the trip).
     bool reflown{false};
     /// The planner's own travel time of the final path before the re-timing (straight legs; its integrator's
     /// tolerance, [EichhornIWK] Table III); NaN when not re-timed

@@ -39,9 +39,10 @@ struct RefinedHeadings
     std::string why;         ///< why it failed (when !ok)
 };
 
-/// @brief The RK4 step at which heading routes are checked and reported: 1/2000 of their duration (the fixed-step
-/// error is then far below the 1e-5 relative that an accurate re-flight may differ by).
-double headingCheckStep(double duration);
+/// @brief The RK4 step at which heading routes are checked and reported: 1/2000 of their duration, and at most the
+/// time to cross 1/150 of the region's larger side at V + max|c| (the fixed-step error is then far below the 1e-5
+/// relative that an accurate re-flight may differ by, on long routes too).
+double headingCheckStep(double duration, const GliderContext &ctx);
 
 /// @brief Flies the whole of @p route in @p ctx (its field, forbidden regions and speed) and checks it: no land or
 /// forbidden region, the track inside the region, the end within the goal radius and before the end of the time
