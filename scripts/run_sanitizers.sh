@@ -12,6 +12,6 @@ export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppres
 cd "$root/build-fuzz"
 # The package tests build and install a second copy of the library with the system compiler flags: they run in the
 # ordinary build (scripts/run_tests.sh), not here.
-# label nosan: the slow references (a level set at a fine resolution) that the ordinary run already covers; the same
-# code runs sanitized in the faster cases
-ctest --output-on-failure -j"$(nproc)" -E '^package\.' -LE nosan "$@"
+# StrongCurrentsFine: the slow references (a level set at a fine resolution, 5 min sanitized) that the ordinary run
+# already covers; the same code runs sanitized in the faster StrongCurrents cases
+ctest --output-on-failure -j"$(nproc)" -E '^(package|StrongCurrentsFine)\.' "$@"

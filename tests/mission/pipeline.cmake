@@ -14,4 +14,4 @@ add_executable(test_strong_currents_fine ${CMAKE_CURRENT_LIST_DIR}/TestStrongCur
 target_link_libraries(test_strong_currents_fine PRIVATE ompl_glider::ompl_glider GTest::gtest GTest::gtest_main)
 target_compile_options(test_strong_currents_fine PRIVATE -Wall -Wextra)
 gtest_discover_tests(test_strong_currents_fine DISCOVERY_TIMEOUT 60 NO_PRETTY_VALUES
-                     PROPERTIES TIMEOUT 1800 LABELS "ci;nosan")
+                     PROPERTIES TIMEOUT 1800 LABELS ci)
