@@ -263,6 +263,10 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
     long step = 0;
     ThreadPool pool(threads_);
     const unsigned K = headings_;
+    // the K headings, once (not per front point and step)
+    std::vector<Point2> rose(K);
+    for (unsigned k = 0; k < K; ++k)
+        rose[k] = bearingVector(360.0 * k / K);
     GoalHit hit;
     while (!front.empty() && !ptc())
     {
@@ -280,7 +284,7 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
                 for (unsigned k = 0; k < K; ++k)
                 {
                     const double bearing = 360.0 * k / K;
-                    const Point2 h = bearingVector(bearing);
+                    const Point2 h = rose[k];
                     const DiveEnd e = flyHeading(p.x, p.y, p.t, h.x, h.y, tNext, *ctx_->field,
                                                  ctx_->environment.get(), dive);
                     if (e.reached)
