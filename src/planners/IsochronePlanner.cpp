@@ -161,6 +161,27 @@ HeadingRoute routeTo(const std::vector<FrontPoint> &points, long i, double lastB
     r.segments.assign(back.rbegin(), back.rend());
     return r;
 }
+// The search's points followed by held headings, the last piece closed on the goal (always near the goal, so this
+// closes wherever the search arrived), and the whole route shot in N segments: the faster valid one into `route`.
+bool closeOnGoal(const std::vector<FrontPoint> &points, const GoalHit &hit, const HeadingRoute &coarse, Point2 goal,
+                 const GliderContext &ctx, const HeadingRefineSettings &rs, HeadingRoute &route, std::string &why)
+{
+    std::vector<double> bearings;
+    const std::vector<TimedPoint> chain = chainTo(points, hit, goal, bearings);
+    const RefinedHeadings followed = trackPathWithHeadings(chain, goal, ctx, rs, 0.0, &bearings);
+    const RefinedHeadings shot = refineHeadingRoute(coarse, goal, ctx, rs);
+    if (!followed.ok && !shot.ok)
+    {
+        why = followed.why + "; " + shot.why;
+        return false;
+    }
+    const bool useShot = shot.ok && (!followed.ok || shot.flight.arrivalTime <= followed.flight.arrivalTime);
+    route = useShot ? shot.route : followed.route;
+    OMPL_DEBUG("Isochrone: refinement: %u flights, %u segments, search %g -> shot %g, followed %g", shot.flights,
+               rs.segments, coarse.duration(), shot.ok ? shot.route.duration() : kInf,
+               followed.ok ? followed.route.duration() : kInf);
+    return true;
+}
 }  // namespace
 
 IsochronePlanner::IsochronePlanner(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx)
@@ -337,23 +358,13 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
     rs.threads = threads_;
     if (refine_)
     {
-        // the search's points followed by held headings, the last piece closed on the goal (always near the goal,
-        // so this closes wherever the search arrived), and the whole route shot in N segments; the faster valid one
-        std::vector<double> bearings;
-        const std::vector<TimedPoint> chain = chainTo(points, hit, goal, bearings);
-        const RefinedHeadings followed = trackPathWithHeadings(chain, goal, *ctx_, rs, 0.0, &bearings);
-        const RefinedHeadings shot = refineHeadingRoute(coarse, goal, *ctx_, rs);
-        if (!followed.ok && !shot.ok)
+        std::string why;
+        if (!closeOnGoal(points, hit, coarse, goal, *ctx_, rs, route_, why))
         {
-            reason_ = "the route could not be closed on the goal: " + followed.why + "; " + shot.why;
+            reason_ = "the route could not be closed on the goal: " + why;
             OMPL_INFORM("%s: %s", getName().c_str(), reason_.c_str());
             return ompl::base::PlannerStatus::ABORT;
         }
-        const bool useShot = shot.ok && (!followed.ok || shot.flight.arrivalTime <= followed.flight.arrivalTime);
-        route_ = useShot ? shot.route : followed.route;
-        OMPL_DEBUG("%s: refinement: %u flights, %u segments, %g -> %g (followed: %g)", getName().c_str(), shot.flights,
-                   rs.segments, searchTime_, shot.ok ? shot.route.duration() : kInf,
-                   followed.ok ? followed.route.duration() : kInf);
     }
     else
     {

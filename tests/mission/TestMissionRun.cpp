@@ -492,8 +492,8 @@ TEST(MissionRun, MeanderingJetDepartureAgainstBruteForce)
     // come within 1 % of a brute-force sweep at spacing 0.05 with at most a fifth of its searches. (A coarser lattice
     // than the benchmark's, to keep the test short; bench_departure runs the 0.4 lattice at spacing 0.02.)
     MissionSpec spec = defaultGulfStreamMission();
-    spec.start = {false, 0.5, -3.0};  // bench_departure's default problem
-    spec.goal = {false, 9.5, 3.0};
+    spec.start = {false, {0.5, -3.0}, {}};  // bench_departure's default problem
+    spec.goal = {false, {9.5, 3.0}, {}};
     spec.planner.gridSize = 0.8;
     spec.planner.sectors = 2;
     const MissionProblem problem(spec);
