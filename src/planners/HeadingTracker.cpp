@@ -147,6 +147,8 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
         {
             out.why = "no held heading flies from (" + std::to_string(at.x) + ", " + std::to_string(at.y) + ") at t = " +
                       std::to_string(at.t) + " to the path's next point";
+            out.route = std::move(route);
+            out.stoppedAt = at;
             return out;
         }
     }

@@ -8,4 +8,5 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/HeadingRefiner.cpp
   ${CMAKE_CURRENT_LIST_DIR}/HeadingTracker.cpp
   ${CMAKE_CURRENT_LIST_DIR}/IsochronePlanner.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/IsochroneSearch.cpp
 )

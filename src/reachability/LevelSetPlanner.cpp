@@ -13,7 +13,7 @@
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/execution/Reflight.h"
 #include "ompl_glider/planners/HeadingRefiner.h"
-#include "ompl_glider/planners/HeadingTracker.h"
+#include "ompl_glider/planners/IsochroneSearch.h"
 #include "ompl_glider/planners/PathSmoother.h"
 
 namespace ompl_glider
@@ -75,11 +75,13 @@ std::string infeasibleLegReason(const GliderContext &ctx, const std::vector<Time
 }
 
 /// The steering directions along a backtracked level-set path (issue 24): the path followed by held headings piece
-/// by piece (trackPathWithHeadings(), targets about @p spacing apart), then refined whole by direct shooting where
-/// that is faster and still valid. When the path cannot be followed, the steering directions themselves (the bearing
+/// by piece (targets about @p spacing apart; where a piece cannot be flown, e.g. where the backtrack broke off near
+/// the start, an isochrone search from where the glider stopped links it to the goal: followWithRestarts()), then
+/// refined whole by direct shooting where that is faster and still valid. When the path cannot be followed, the steering directions themselves (the bearing
 /// of the velocity through the water, (p1 - p0) / dt - c, between backtracked points) are refined instead.
 RefinedHeadings levelSetHeadings(const GliderContext &ctx, const std::vector<TimedPoint> &path, Point2 goal,
-                                 double tolerance, double tEnd, double spacing)
+                                 double tolerance, double tEnd, double spacing, unsigned threads,
+                                 const ompl::base::PlannerTerminationCondition &ptc)
 {
     RefinedHeadings none;
     if (path.size() < 2)
@@ -92,7 +94,12 @@ RefinedHeadings levelSetHeadings(const GliderContext &ctx, const std::vector<Tim
     s.depth = depth;
     s.radius = std::max(tolerance, 1e-12);
     s.tEnd = tEnd;
-    RefinedHeadings tracked = trackPathWithHeadings(path, goal, ctx, s, spacing);
+    s.threads = threads;
+    s.step = headingCheckStep(path.back().t - path.front().t, ctx);
+    ThreadPool pool(threads);
+    RefinedHeadings tracked = followWithRestarts(path, nullptr, goal, ctx, s, spacing,
+                                                 makeIsochroneSetup(ctx, goal, s.radius), pool, ptc);
+    s.step = 0.0;
     HeadingRoute route;
     if (tracked.ok)
         route = tracked.route;
@@ -313,7 +320,8 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
                     "headings", getName().c_str(), p.cellSize, why.c_str());
         const auto *goal = pdef_->getGoal()->as<ompl::base::GoalRegion>();
         const RefinedHeadings h =
-            levelSetHeadings(*ctx_, last_.path, Point2{gx, gy}, goal->getThreshold(), tEnd, 4.0 * p.cellSize);
+            levelSetHeadings(*ctx_, last_.path, Point2{gx, gy}, goal->getThreshold(), tEnd, 4.0 * p.cellSize,
+                             params_.threads, ptc);
         if (!h.ok)
         {
             reason_ = "the level set reached the goal, but neither straight legs nor its headings could be flown to "

@@ -37,6 +37,9 @@ struct RefinedHeadings
     HeadingFlight flight;    ///< its flight (track kept)
     unsigned flights{0};     ///< flights flown by the refinement
     std::string why;         ///< why it failed (when !ok)
+    /// trackPathWithHeadings() only: where following stopped when a piece could not be flown (route then holds the
+    /// pieces flown up to there); empty when it did not stop part-way.
+    std::optional<TimedPoint> stoppedAt;
 };
 
 /// @brief The RK4 step at which heading routes are checked and reported: 1/2000 of their duration, and at most the

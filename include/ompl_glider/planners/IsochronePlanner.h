@@ -3,16 +3,12 @@
 /// @brief A heading planner for strong currents ("Isochrone", issue 24): the isochrone method of weather routing on a
 /// heading lattice, then a refinement of the headings by direct shooting (HeadingRefiner.h).
 ///
-/// From the start, every point of the front flies K headings through the water for one time step with the one dive
-/// integrator (flyHeading(): land and forbidden regions checked at the times they are passed); of the points that
-/// land in a cell of a square grid, one per cell is kept (the one nearest the cell's centre), and of those only the
-/// ones on the boundary of the cells reached at this step (a cell whose eight neighbours were all reached too is
-/// inside the set, not on its front): the discrete form of the reachable set's boundary that [LollaLevelSet]'s front
-/// tracks. A cell reached once stays closed for 8 steps, then reopens: where the current is stronger than the vehicle
-/// the reachable set cannot hold still, so it may leave a place and come back to it later.
-/// The first flight whose track passes within one cell of the goal ends the search; its headings, followed back to
-/// the start, are the initial route, which refineHeadingRoute() turns into N equal segments that end exactly at the
-/// goal in least time. As the cell, the step and the segments shrink, the route tends to the continuous optimum that
+/// The search (IsochroneSearch.h) keeps, step by step, the boundary of the cells that held headings reach from the
+/// start.
+/// The first flight whose track passes within one cell of the goal ends the search. Its points are followed by held
+/// headings (a new search from where following stops, followWithRestarts()), and its headings, followed back to the
+/// start, are shot as N equal segments that end exactly at the goal in least time (refineHeadingRoute()); the faster
+/// valid route is kept. As the cell, the step and the segments shrink, the route tends to the continuous optimum that
 /// the level set approximates ([ZermeloNav]).
 ///
 /// Unlike the straight-leg planners it needs no leg to be flyable against the current: a held heading that drifts
@@ -20,8 +16,8 @@
 /// (HeadingRouteSource); the PathGeometric it returns holds the segment ends.
 ///
 /// Parameters: "resolution" (cell size, length units; 0: 1/150 of the region's larger side), "headings" (K, default
-/// 36), "time_step" (0: the smaller of 2.5 cells at the speed and 12 cells at the speed plus the current bound),
-/// "segments" (N of the refinement, 0: the number of steps, within 16..64), "shooting" (the refinement; default true), "threads".
+/// 36), "time_step" (0: 2.5 cells at the speed),
+/// "segments" (N of the refinement, 0: the number of steps, within 16..32), "shooting" (the refinement; default true), "threads".
 /// Outcomes: EXACT_SOLUTION; ABORT when the front dies out or passes the end of the time window without meeting the
 /// goal (the reason is kept in lastReason()); TIMEOUT; INVALID_START / INVALID_GOAL outside the region.
 
