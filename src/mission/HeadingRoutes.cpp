@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "PlanningInternal.h"
 #include "ompl_glider/execution/Reflight.h"
 #include "ompl_glider/planners/HeadingRefiner.h"
+#include "ompl_glider/planners/HeadingTracker.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
@@ -42,6 +44,36 @@ PlannedPath headingResult(const MissionProblem &problem, const GliderContext &ct
     return r;
 }
 
+namespace
+{
+/// A heading route whose accurate re-flight ends farther from the goal than allowed: its last segment re-aimed on the
+/// accurate flight (reaimOnReflight()); the route's waypoints and times become the accurate flight's. False when that
+/// fails (nothing changed).
+bool reaimLastSegment(const MissionProblem &problem, const GliderContext &ctx, const ReflightSettings &s,
+                      double radius, PlannedPath &r)
+{
+    HeadingRoute route = *r.headings;
+    const HeadingSegment before = route.segments.back();
+    HeadingReflight f;
+    if (!reaimOnReflight(route, problem.getGoal(), *ctx.field, ctx.environment.get(), s, radius, f))
+        return false;
+    char note[240];
+    std::snprintf(note, sizeof note,
+                  "the last segment re-aimed on the accurate re-flight (bearing %+.3g deg, duration %+.3g): the "
+                  "planner's route ended %.3g from the goal when flown accurately",
+                  route.segments.back().bearing - before.bearing, route.segments.back().duration - before.duration,
+                  r.reflownEndDistance);
+    r.reflightNote = note;
+    r.plannerTravelTime = r.travelTime;
+    r.headings = route;
+    r.path = r.raw = r.smoothed = f.ends;
+    r.rawTravelTime = r.smoothedTravelTime = r.travelTime = f.end.t - r.departure;
+    r.reflownTravelTime = r.travelTime;
+    r.reflownEndDistance = std::hypot(f.end.x - problem.getGoal().x, f.end.y - problem.getGoal().y);
+    return true;
+}
+}  // namespace
+
 void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, PlannedPath &r)
 {
     if (!r.solved || r.path.size() < 2 || (r.stints && !r.stints->converted))
@@ -61,6 +93,8 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
         // route through a sensitive flow, where two accurate integrators part by more than a tight tolerance)
         const double radius = std::max(problem.gliderProblem(r.departure, r.speed).goalTolerance,
                                        1e-6 * r.speed * r.travelTime);
+        if (f.ok && !f.grounded && !(r.reflownEndDistance <= radius) && reaimLastSegment(problem, ctx, s, radius, r))
+            return;
         if (!f.ok || f.grounded || !(r.reflownEndDistance <= radius))
         {
             r.solved = false;

@@ -3,13 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace ompl_glider
 {
 namespace
 {
-/// One held heading from (x, y, t) to the target: Newton on (bearing, duration) with forward differences, the step
-/// halved while it does not reduce the miss. Returns the miss left (x/y units); bearing and duration hold the result.
+/// One held heading from (x, y, t) to the target (solveHeldHeading() with the planner's RK4 flights).
 double flyTo(const GliderContext &ctx, const DiveSettings &dive, const TimedPoint &from, Point2 target,
              double &bearing, double &duration)
 {
@@ -21,41 +21,8 @@ double flyTo(const GliderContext &ctx, const DiveSettings &dive, const TimedPoin
         const HeadingFlight f = flyHeadingRoute(r, *ctx.field, nullptr, dive, false);
         return Point2{f.ends.back().x - target.x, f.ends.back().y - target.y};
     };
-    Point2 F = endOf(bearing, duration);
-    double miss = std::hypot(F.x, F.y);
     const double scale = std::max(std::hypot(target.x - from.x, target.y - from.y), 1e-12);
-    for (int it = 0; it < 30 && miss > 1e-12 * std::max(scale, 1.0); ++it)
-    {
-        const double hb = 1e-6, hd = 1e-7 * std::max(duration, 1e-9);
-        const Point2 Fb = endOf(bearing + hb, duration), Fd = endOf(bearing, duration + hd);
-        const double a = (Fb.x - F.x) / hb, b = (Fd.x - F.x) / hd, c = (Fb.y - F.y) / hb, d = (Fd.y - F.y) / hd;
-        const double det = a * d - b * c;
-        if (!std::isfinite(det) || det == 0.0)
-            break;
-        const double db = -(d * F.x - b * F.y) / det, dd = -(-c * F.x + a * F.y) / det;
-        double lambda = 1.0;
-        bool improved = false;
-        for (int k = 0; k < 12; ++k, lambda *= 0.5)
-        {
-            const double nb = bearing + lambda * db, nd = duration + lambda * dd;
-            if (!(nd > 0.0))
-                continue;
-            const Point2 G = endOf(nb, nd);
-            const double m = std::hypot(G.x, G.y);
-            if (m < miss)
-            {
-                bearing = nb;
-                duration = nd;
-                F = G;
-                miss = m;
-                improved = true;
-                break;
-            }
-        }
-        if (!improved)
-            break;
-    }
-    return miss;
+    return solveHeldHeading(endOf, 1e-12 * std::max(scale, 1.0), bearing, duration);
 }
 /// The planned duration of a piece to a path point reached at @p tq (at least a tiny positive one).
 double duration0(const TimedPoint &at, double tq, double total)
@@ -72,6 +39,45 @@ double bearing0(const GliderContext &ctx, const HeadingRefineSettings &settings,
     return bearingOf((q.x - at.x) / duration - c.u, (q.y - at.y) / duration - c.v);
 }
 }  // namespace
+
+double solveHeldHeading(const std::function<Point2(double, double)> &miss, double tolerance, double &bearing,
+                        double &duration)
+{
+    Point2 F = miss(bearing, duration);
+    double m = std::hypot(F.x, F.y);
+    for (int it = 0; it < 30 && m > tolerance; ++it)
+    {
+        const double hb = 1e-6, hd = 1e-7 * std::max(duration, 1e-9);
+        const Point2 Fb = miss(bearing + hb, duration), Fd = miss(bearing, duration + hd);
+        const double a = (Fb.x - F.x) / hb, b = (Fd.x - F.x) / hd, c = (Fb.y - F.y) / hb, d = (Fd.y - F.y) / hd;
+        const double det = a * d - b * c;
+        if (!std::isfinite(det) || det == 0.0)
+            break;
+        const double db = -(d * F.x - b * F.y) / det, dd = -(-c * F.x + a * F.y) / det;
+        double lambda = 1.0;
+        bool improved = false;
+        for (int k = 0; k < 12; ++k, lambda *= 0.5)
+        {
+            const double nb = bearing + lambda * db, nd = duration + lambda * dd;
+            if (!(nd > 0.0))
+                continue;
+            const Point2 G = miss(nb, nd);
+            const double mg = std::hypot(G.x, G.y);
+            if (mg < m)
+            {
+                bearing = nb;
+                duration = nd;
+                F = G;
+                m = mg;
+                improved = true;
+                break;
+            }
+        }
+        if (!improved)
+            break;
+    }
+    return m;
+}
 
 RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point2 goal, const GliderContext &ctx,
                                       const HeadingRefineSettings &settings, double spacing,
@@ -165,5 +171,42 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
     out.route = std::move(route);
     out.flight = std::move(flight);
     return out;
+}
+bool reaimOnReflight(HeadingRoute &route, Point2 goal, const CurrentField &field, const Environment *forbidden,
+                     const ReflightSettings &settings, double radius, HeadingReflight &flight)
+{
+    if (route.segments.empty() || !(radius > 0.0))
+        return false;
+    ReflightSettings s = settings;
+    s.radius = 0.0;  // every segment flown to its end: the last one must end on the goal
+    TimedPoint from{route.start.x, route.start.y, route.departure};
+    HeadingRoute prefix = route;
+    prefix.segments.pop_back();
+    if (!prefix.segments.empty())
+    {
+        const HeadingReflight f = reflyHeadingRoute(prefix, field, forbidden, s);
+        if (!f.ok || f.grounded)
+            return false;
+        from = f.end;
+    }
+    HeadingSegment last = route.segments.back();
+    const auto miss = [&](double bearing, double duration) {
+        HeadingRoute one;
+        one.start = {from.x, from.y};
+        one.departure = from.t;
+        one.segments.push_back({bearing, duration});
+        const HeadingReflight f = reflyHeadingRoute(one, field, forbidden, s);
+        return Point2{f.end.x - goal.x, f.end.y - goal.y};
+    };
+    if (!(solveHeldHeading(miss, 1e-3 * radius, last.bearing, last.duration) <= 1e-3 * radius))
+        return false;
+    HeadingRoute aimed = route;
+    aimed.segments.back() = last;
+    HeadingReflight f = reflyHeadingRoute(aimed, field, forbidden, s);
+    if (!f.ok || f.grounded || !(std::hypot(f.end.x - goal.x, f.end.y - goal.y) <= radius))
+        return false;
+    route = std::move(aimed);
+    flight = std::move(f);
+    return true;
 }
 }  // namespace ompl_glider

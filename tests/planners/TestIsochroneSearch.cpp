@@ -7,7 +7,9 @@
 #include <ompl/base/PlannerTerminationCondition.h>
 
 #include "PostprocessTestUtil.h"
+#include "ompl_glider/current/DoubleGyre.h"
 #include "ompl_glider/current/UniformCurrent.h"
+#include "ompl_glider/planners/HeadingTracker.h"
 #include "ompl_glider/planners/IsochroneSearch.h"
 
 using namespace ompl_glider;
@@ -88,4 +90,68 @@ TEST(IsochroneSearch, FollowingThatStopsIsClosedByANewSearchFromWhereTheGliderSt
     const HeadingFlight again = verifyHeadingRoute(closed.route, *ctx, goal, s);
     EXPECT_TRUE(again.reached);
     EXPECT_NEAR(again.ends.back().t, end.t, 1e-12 * end.t);
+}
+
+TEST(IsochroneSearch, LastSegmentReAimedOnTheAccurateReflight)
+{
+    // A route flown by RK4 at a coarse step (0.4) through a time-dependent double gyre (flow up to about 0.94, the
+    // glider 0.15): aimed so that the coarse flight ends on the goal, the accurate flight ends elsewhere. Re-aiming
+    // the last segment on the accurate flight brings that flight to the goal.
+    Region r = box(0.0, 2.0, 0.0, 1.0);
+    r.tMin = 0.0;
+    r.tMax = 50.0;
+    const auto ctx = makeContext(std::make_shared<DoubleGyre>(0.3, 1.0, 0.25, 2.0 * M_PI / 10.0), 0.15, r);
+    HeadingRoute route;
+    route.start = {0.3, 0.3};
+    route.departure = 0.0;
+    route.step = 0.4;
+    route.segments = {{90.0, 1.2}, {45.0, 1.2}, {0.0, 1.2}};
+    DiveSettings coarse;
+    coarse.speed = 0.15;
+    coarse.step = route.step;
+    const HeadingFlight planned = flyHeadingRoute(route, *ctx->field, nullptr, coarse, false);
+    const Point2 goal{planned.ends.back().x, planned.ends.back().y};  // where the coarse flight ends
+
+    ReflightSettings s;
+    s.speed = 0.15;
+    const HeadingReflight before = reflyHeadingRoute(route, *ctx->field, nullptr, s);
+    const double radius = 1e-6;
+    const double missBefore = std::hypot(before.end.x - goal.x, before.end.y - goal.y);
+    ASSERT_GT(missBefore, 100.0 * radius);  // the coarse and the accurate flights part
+
+    HeadingRoute aimed = route;
+    HeadingReflight flight;
+    ASSERT_TRUE(reaimOnReflight(aimed, goal, *ctx->field, nullptr, s, radius, flight));
+    // only the last segment changed, by little
+    for (std::size_t k = 0; k + 1 < route.segments.size(); ++k)
+    {
+        EXPECT_EQ(aimed.segments[k].bearing, route.segments[k].bearing);
+        EXPECT_EQ(aimed.segments[k].duration, route.segments[k].duration);
+    }
+    EXPECT_LT(std::abs(aimed.segments.back().bearing - route.segments.back().bearing), 10.0);
+    // an independent accurate flight of the re-aimed route, at a tighter tolerance, ends on the goal
+    ReflightSettings tight = s;
+    tight.tolerance.rtol = 1e-12;
+    const HeadingReflight check = reflyHeadingRoute(aimed, *ctx->field, nullptr, tight);
+    EXPECT_LT(std::hypot(check.end.x - goal.x, check.end.y - goal.y), radius);
+    EXPECT_NEAR(flight.end.t, check.end.t, 1e-9);
+    ASSERT_EQ(flight.ends.size(), route.segments.size() + 1);
+
+}
+
+TEST(IsochroneSearch, ReAimingRefusesAGoalNoHeldHeadingReaches)
+{
+    // upstream of a current three times the glider's speed: no heading and duration reach it; the route is unchanged
+    const auto ctx = eastward();
+    HeadingRoute route;
+    route.start = {0.0, 0.0};
+    route.departure = 0.0;
+    route.segments = {{90.0, 1.0}, {0.0, 1.0}};
+    ReflightSettings s;
+    s.speed = kV;
+    HeadingRoute same = route;
+    HeadingReflight flight;
+    EXPECT_FALSE(reaimOnReflight(same, {-2.0, 0.0}, *ctx->field, nullptr, s, 1e-6, flight));
+    EXPECT_EQ(same.segments.back().bearing, route.segments.back().bearing);
+    EXPECT_EQ(same.segments.back().duration, route.segments.back().duration);
 }
