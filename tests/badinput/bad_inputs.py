@@ -260,6 +260,12 @@ yaml_case("planner-horizon-negative", mission("planner: {name: zastartve, horizo
 yaml_case("outputs-prefix-escapes", mission("outputs: {prefix: ../../x}"), "outputs.prefix")
 yaml_case("outputs-unknown-format", mission("outputs: {files: [pdf]}"), "outputs.files")
 case("outputs-dir-is-file", ["--mission", "m.yaml"], 2, "afile", {"m.yaml": mission("outputs: {directory: afile}")})
+case("outputs-dir-dangling-link", ["--mission", "m.yaml", "--out", "gone"], 2,
+     "output directory 'gone' is a symbolic link to 'no/such/place', which does not exist",
+     {"m.yaml": MISSION, "gone": ("symlink", "no/such/place")})
+case("outputs-directory-where-a-file-goes", ["--mission", "m.yaml", "--out", "o2"], 2,
+     "output directory 'o2' holds a directory 'summary.json' where glider_plan writes a file; nothing was replaced",
+     {"m.yaml": MISSION, "o2/summary.json/keep": "a pilot's file\n"})
 yaml_case("speeds-empty", mission("speeds: []"), "speeds")
 yaml_case("speeds-text", mission("speeds: [0.3, abc]"), "speeds[1]")
 yaml_case("forbidden-bowtie",
@@ -614,6 +620,8 @@ def prepare(workdir, files):
                 size = os.path.getsize(nc)
                 with open(nc, "r+b") as f:
                     f.truncate(size // 2 + 8)
+        elif how == "symlink":
+            os.symlink(text, path)
         elif how == "bytes":
             with open(path, "wb") as f:
                 f.write(text)
