@@ -105,6 +105,15 @@ yaml_case("yaml-deep-nesting", nested(100000), "nest")
 yaml_case("yaml-not-a-map", "- a\n- b\n", "expected a mapping")
 yaml_case("yaml-unknown-top-field", MISSION + "colour: red\n", "m.yaml:8: unknown field 'colour'")
 yaml_case("yaml-duplicate-key", MISSION + "vehicle: {speed: 0.4}\n", "given twice")
+yaml_case("yaml-two-documents", MISSION + "---\nname: second\n",
+          "m.yaml:8: a second YAML document: a mission file holds one document")
+yaml_case("yaml-epoch-arrival-after-9999", mission("epoch: 9999-12-31T00:00:00Z", "units: {time_s: 86400}"),
+          "field 'epoch': t = 13.33333333 falls outside the years 0000-9999")
+case("cli-truth-overflows", ["--truth", "B0=1e300", "--out", "{out}"], 2,
+     "--truth: the current is not a finite number at (0, -4) at t = 0: its parameters overflow")
+yaml_case("yaml-current-overflows",
+          mission("current: {type: meandering_jet, parameters: {B0: 1e300}}"),
+          "m.yaml:2: field 'current.parameters': the current is not a finite number")
 yaml_case("yaml-binary-garbage", "\x00\x01\x02\xff\xfe", "m.yaml")
 case("mission-is-a-directory", ["--mission", "sub", "--out", "{out}"], 2, "is a directory", {"sub/x": "x"})
 case("mission-missing", ["--mission", "nope.yaml", "--out", "{out}"], 2, "cannot read mission file 'nope.yaml'")

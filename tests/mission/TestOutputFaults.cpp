@@ -4,6 +4,7 @@
 // device) is an error naming the file; a directory locked by another process is refused.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -17,7 +18,10 @@
 
 #include "OutputDirectory.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/Time.h"
+#include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/output/OutputWriter.h"
+#include "ompl_glider/output/SummaryJson.h"
 
 namespace fs = std::filesystem;
 using namespace ompl_glider;
@@ -247,4 +251,46 @@ TEST(OutputFaults, ADirectoryInUseByAnotherProcessIsRefused)
     const OutputLock mine(dir.string());
     writeOutputFiles(dir.string(), runFiles("third", {}));
     EXPECT_TRUE(fs::exists(dir / "summary.json"));
+}
+
+TEST(OutputFaults, NonFiniteNumbersNeverReachSummaryJson)
+{
+    MissionSpec m = defaultGulfStreamMission();
+    m.planner.gridSize = 0.8;
+    const MissionProblem problem(m);
+    const MissionResult good = runMission(problem);
+    EXPECT_NO_THROW(summaryJson(good, problem));
+    MissionResult r = good;
+    r.plan.pathLength = std::nan("");  // written as a number, not through the null of a missing value
+    try
+    {
+        summaryJson(r, problem);
+        ADD_FAILURE() << "NaN written";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("field 'path_length' holds a non-finite number"), std::string::npos)
+            << e.what();
+    }
+    r = good;
+    r.plan.reason = "land between (1, -3) at t = 0 and (-nan, nan) at t = 22.8";  // a number printed into a text
+    try
+    {
+        summaryJson(r, problem);
+        ADD_FAILURE() << "NaN written in a text";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("field 'reason'"), std::string::npos) << e.what();
+    }
+    r.plan.reason = "the infinite sea, financial nano";  // words, not numbers
+    EXPECT_NO_THROW(summaryJson(r, problem));
+}
+
+TEST(OutputFaults, DatesOutsideTheYears0To9999AreRefused)
+{
+    EXPECT_EQ(formatIsoTime(253402300799.0), "9999-12-31T23:59:59Z");
+    EXPECT_EQ(formatIsoTime(-62167219200.0), "0000-01-01T00:00:00Z");
+    EXPECT_THROW(formatIsoTime(253402300800.0), Error);  // would be 10000-01-01T00:00:00Z
+    EXPECT_THROW(formatIsoTime(-62167219201.0), Error);
 }
