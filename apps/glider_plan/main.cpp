@@ -6,6 +6,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -41,8 +42,13 @@ int run(const Flags &f)
         spec.outputs.directory = f.out;
     applyOutputFlags(f, spec);
     const bool write = !f.mission.empty() || !f.out.empty();
+    std::optional<OutputLock> lock;  // held from here: a second run into the directory is refused at once
     if (write)
+    {
         checkOutputDirectory(spec.outputs.directory);
+        checkOutputNames(spec.outputs);
+        lock.emplace(spec.outputs.directory);
+    }
     const MissionProblem problem(spec);
     RunOptions options;
     if (f.speeds)
@@ -93,6 +99,7 @@ int main(int argc, char **argv)
     }
     if (!f.verbose)
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    installOutputSignalHandlers();  // SIGINT/SIGTERM while files are written: the earlier outputs stay
     try
     {
         return run(f);

@@ -365,10 +365,19 @@ double parseIsoTime(const std::string &text)
     return static_cast<double>(days) * 86400.0 + d.hour * 3600.0 + d.minute * 60.0 + d.second - w.zoneOffset;
 }
 
+bool isoYearInRange(double s)
+{
+    // 0000-01-01T00:00:00Z and 10000-01-01T00:00:00Z in seconds since 1970 (proleptic Gregorian)
+    return s >= -62167219200.0 && s < 253402300799.5;  // formatIsoTime() rounds to the second
+}
+
 std::string formatIsoTime(double s)
 {
     if (!std::isfinite(s))
         return "";
+    if (!isoYearInRange(s))
+        throw Error("the time " + std::to_string(s) + " s since 1970 falls outside the years 0000-9999, which ISO "
+                    "8601 dates are written in");
     // whole seconds: the date is exact (dateFromCalendarEpoch() of an integral number of seconds)
     const long long since1 = std::llround(s) + static_cast<long long>(kUnixEpochDay) * 86400;
     return formatDateTime(dateFromCalendarEpoch(static_cast<double>(since1), Calendar::ProlepticGregorian));

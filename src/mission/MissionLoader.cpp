@@ -1,5 +1,7 @@
 // loadMission(): YAML mission files, validated field by field ([EichhornOceans] Sec. IV mission contents). The
 // sections are read in loader/ (MissionReader.h).
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -247,16 +249,38 @@ std::string MissionSpec::place(const std::string &field) const
 
 MissionSpec parseMission(const std::string &yamlText, const std::string &file, const std::string &directory)
 {
-    YAML::Node root;
+    std::vector<YAML::Node> documents;
     try
     {
-        root = YAML::Load(yamlText);
+        documents = YAML::LoadAll(yamlText);
     }
     catch (const YAML::ParserException &e)
     {
         throw Error(yamlErrorMessage(file, e, "YAML syntax error"));
     }
-    return readMission(root, Reader(file, directory));
+    if (documents.size() > 1)
+    {
+        // the line of the "---" that begins the second document (the first one, unless the file begins with one)
+        int line = 0;
+        bool content = false;
+        std::istringstream lines(yamlText);
+        std::string text;
+        for (int n = 1; line == 0 && std::getline(lines, text); ++n)
+        {
+            const bool marker =
+                text.rfind("---", 0) == 0 && (text.size() == 3 || std::isspace(static_cast<unsigned char>(text[3])));
+            if (marker && content)
+                line = n;
+            content = content || marker ||
+                      (!text.empty() && text[0] != '#' && text.find_first_not_of(" \t\r") != std::string::npos);
+        }
+        if (line == 0 && documents[1].Mark().line >= 0)
+            line = documents[1].Mark().line + 1;
+        throw Error(file + ":" + std::to_string(std::max(line, 1)) +
+                    ": a second YAML document: a mission file holds one document (remove the '---' line and what "
+                    "follows it, or split the file)");
+    }
+    return readMission(documents.empty() ? YAML::Node() : documents.front(), Reader(file, directory));
 }
 
 MissionSpec loadMission(const std::string &path)

@@ -42,6 +42,23 @@ std::string where(const MissionSpec &m, const SourceMark &mark = {})
         return mark.file + ":" + std::to_string(mark.line) + ": ";
     return m.file + ": ";
 }
+/// An analytic field whose parameters overflow its formulas (a meandering jet with B0 = 1e300) gives NaN or
+/// infinity: refused, naming where the parameters were given. Sampled on 9 x 9 points of the box at three times.
+void checkFiniteField(const CurrentField &f, const Region &box, double t0, const std::string &at)
+{
+    for (const double t : {t0, t0 + 1.0, t0 + 10.0})
+        for (int i = 0; i <= 8; ++i)
+            for (int j = 0; j <= 8; ++j)
+            {
+                const double x = box.xMin + (box.xMax - box.xMin) * i / 8.0;
+                const double y = box.yMin + (box.yMax - box.yMin) * j / 8.0;
+                const Velocity v = f.velocity(x, y, 0.0, t);  // CMC are counted as differences: no effect
+                if (!std::isfinite(v.u) || !std::isfinite(v.v))
+                    throw Error(at + "the current is not a finite number at (" + text::number(x, 6) + ", " +
+                                text::number(y, 6) + ") at t = " + text::number(t, 6) +
+                                ": its parameters overflow the field's formulas");
+            }
+}
 }  // namespace
 
 double tripMarginKm(LonLat start, LonLat goal)
@@ -189,6 +206,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     start_ = localPoint(spec_.start, "start");
     goal_ = localPoint(spec_.goal, "goal");
     buildBox();
+    checkAnalyticFields();
     buildRegions();
     const auto grid = std::dynamic_pointer_cast<const GriddedCurrentField>(members_.empty() ? field_ : members_.front());
     if (grid)
@@ -310,6 +328,26 @@ void MissionProblem::buildMembers()
     for (std::size_t i = 1; i < members.size(); ++i)
         members_.push_back(loadSource(members[i], "current.ensemble[" + std::to_string(i) + "]"));
     field_ = std::make_shared<EnsembleMeanField>(members_);
+}
+
+void MissionProblem::checkAnalyticFields() const
+{
+    const MissionSpec &m = spec_;
+    auto check = [&](const std::shared_ptr<const CurrentField> &f, const CurrentSpec &c, const std::string &field) {
+        const CurrentFieldKind *kind = findCurrentFieldKind(c.type);
+        if (!f || !kind || kind->gridded)
+            return;
+        const std::string at = c.mark.file.rfind("--", 0) == 0 ? c.mark.file + ": "
+                                                                 : where(m, c.mark) + "field '" + field + "': ";
+        checkFiniteField(*f, box_, m.departure.time, at);
+    };
+    if (members_.empty())
+        check(field_, m.current, "current.parameters");
+    for (std::size_t i = 0; i < members_.size(); ++i)
+        check(members_[i], i == 0 ? m.current : m.current.members[i],
+              i == 0 ? std::string("current.parameters") : "current.ensemble[" + std::to_string(i) + "].parameters");
+    if (truth_ && m.execution.truth)
+        check(truth_, *m.execution.truth, "execution.truth.parameters");
 }
 
 void MissionProblem::buildTruth()
@@ -566,7 +604,11 @@ std::string MissionProblem::isoTime(double t) const
 {
     if (!spec_.epoch || !std::isfinite(t))
         return "";
-    return formatIsoTime(*spec_.epoch + t * spec_.timeUnitSeconds);
+    const double s = *spec_.epoch + t * spec_.timeUnitSeconds;
+    if (!isoYearInRange(s))
+        throw Error(spec_.place("epoch") + ": t = " + text::number(t) + " falls outside the years 0000-9999, which "
+                    "ISO 8601 dates are written in (choose an earlier epoch or a shorter horizon)");
+    return formatIsoTime(s);
 }
 
 GliderProblem MissionProblem::gliderProblem(double tDep, double speed) const

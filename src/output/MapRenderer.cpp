@@ -15,6 +15,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "MapPainter.h"
+#include "OutputDirectory.h"
 
 namespace ompl_glider
 {
@@ -559,10 +560,22 @@ double niceAxisStep(double raw)
     return map_detail::niceStep(raw);
 }
 
+namespace
+{
+cairo_status_t appendToString(void *closure, const unsigned char *data, unsigned int length)
+{
+    static_cast<std::string *>(closure)->append(reinterpret_cast<const char *>(data), length);
+    return CAIRO_STATUS_SUCCESS;
+}
+}  // namespace
+
 void writeCairoFile(const std::string &filename, int width, int height, bool svg,
                     const std::function<void(void *)> &draw)
 {
-    cairo_surface_t *surf = svg ? cairo_svg_surface_create(filename.c_str(), width, height)
+    // Drawn into memory, then written by the output layer's checked write (a full disk is an error, not a short
+    // file).
+    std::string bytes;
+    cairo_surface_t *surf = svg ? cairo_svg_surface_create_for_stream(appendToString, &bytes, width, height)
                                 : cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
     if (cairo_surface_status(surf) != CAIRO_STATUS_SUCCESS)
     {
@@ -582,11 +595,12 @@ void writeCairoFile(const std::string &filename, int width, int height, bool svg
     else
     {
         cairo_surface_flush(surf);
-        st = cairo_surface_write_to_png(surf, filename.c_str());
+        st = cairo_surface_write_to_png_stream(surf, appendToString, &bytes);
     }
     cairo_surface_destroy(surf);
     if (st != CAIRO_STATUS_SUCCESS)
         throw Error("cannot write '" + filename + "': " + cairo_status_to_string(st));
+    output_detail::writeFileChecked(filename, bytes);
 }
 
 void MapRenderer::writeSvg(const std::string &filename) const

@@ -1,6 +1,7 @@
 #include "ompl_glider/output/OutputWriter.h"
 
-#include <atomic>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -19,6 +20,7 @@
 #include "ompl_glider/output/RouteFiles.h"
 #include "ompl_glider/output/SlocumGoto.h"
 #include "ompl_glider/output/SummaryJson.h"
+#include "OutputDirectory.h"
 
 namespace ompl_glider
 {
@@ -28,9 +30,7 @@ namespace
 {
 void writeText(const std::string &path, const std::string &text)
 {
-    std::ofstream out(path, std::ios::binary);
-    if (!out || !(out << text) || !out.flush())
-        throw Error("cannot write '" + path + "'");
+    output_detail::writeFileChecked(path, text);
 }
 
 /// The route and map files of one format (summary.json is added by outputFiles()).
@@ -119,6 +119,9 @@ std::vector<OutputFile> formatFiles(OutputFormatId format, const MissionResult &
 /// The names an earlier run listed in DIR/summary.json (empty when there is none or it cannot be read).
 std::vector<std::string> previousManifest(const fs::path &dir)
 {
+    std::error_code ec;
+    if (!fs::is_regular_file(dir / "summary.json", ec))
+        return {};
     std::ifstream in(dir / "summary.json");
     if (!in)
         return {};
@@ -147,22 +150,6 @@ bool plainName(const std::string &name)
            name.find('\\') == std::string::npos;
 }
 
-fs::path normalised(const std::string &directory)
-{
-    fs::path p = fs::absolute(directory.empty() ? fs::path(".") : fs::path(directory)).lexically_normal();
-    if (p.filename().empty() && p.has_parent_path() && p != p.root_path())
-        p = p.parent_path();  // trailing slash
-    return p;
-}
-
-fs::path stagingDirectory(const fs::path &target)
-{
-    static std::atomic<unsigned> counter{0};
-    const std::string base = target.filename().string();
-    return target.parent_path() /
-           ("." + (base.empty() ? std::string("out") : base) + ".tmp-" + std::to_string(::getpid()) + "-" +
-            std::to_string(counter++));
-}
 }  // namespace
 
 std::vector<OutputFile> outputFiles(const MissionResult &r, const MissionProblem &problem)
@@ -198,7 +185,7 @@ std::vector<OutputFile> outputFiles(const MissionResult &r, const MissionProblem
 
 void checkOutputDirectory(const std::string &directory)
 {
-    const fs::path target = normalised(directory);
+    const fs::path target = output_detail::resolveOutputDirectory(directory);
     std::error_code ec;
     if (fs::exists(target, ec) && !fs::is_directory(target, ec))
         throw Error("output directory '" + directory + "' exists and is not a directory");
@@ -211,71 +198,103 @@ void checkOutputDirectory(const std::string &directory)
         throw Error("output directory '" + directory + "': '" + parent.string() + "' is not a directory");
     if (::access(parent.c_str(), W_OK | X_OK) != 0 ||
         (fs::exists(target, ec) && ::access(target.c_str(), W_OK | X_OK) != 0))
-        throw Error("output directory '" + directory + "' is not writable");
-    // access() says yes to root everywhere (even in /proc): make and remove a directory where the staging
-    // directory will go.
+        throw Error("output directory '" + directory + "' is not writable (" + std::strerror(errno) + ")");
+    // access() says yes to root everywhere (even in /proc or on a read-only mount): make and remove a directory
+    // where the staging directory will go.
     const fs::path probe = parent / (".ompl_glider-probe-" + std::to_string(::getpid()));
     if (!fs::create_directory(probe, ec))
-        throw Error("output directory '" + directory + "' cannot be created: no directory can be made in '" +
+        throw Error("output directory '" + directory + "' cannot be written: no directory can be made in '" +
                     parent.string() + "'" + (ec ? " (" + ec.message() + ")" : std::string()));
     fs::remove(probe, ec);
+}
+
+void checkOutputNames(const OutputSpec &outputs)
+{
+    const fs::path target = output_detail::resolveOutputDirectory(outputs.directory);
+    std::error_code ec;
+    if (!fs::is_directory(target, ec))
+        return;
+    // Every name a run can write (outputFormats()' file lists: "a.csv, b.svg/png, goto_lNN.ma"), with the prefix.
+    std::vector<std::string> names;
+    for (const OutputFormat &format : outputFormats())
+    {
+        std::string list = format.files + ",";
+        for (std::size_t at = 0, comma; (comma = list.find(',', at)) != std::string::npos; at = comma + 1)
+        {
+            std::string name = list.substr(at, comma - at);
+            name.erase(0, name.find_first_not_of(' '));
+            if (name == "goto_lNN.ma")
+                name = gotoFileName(outputs.gotoNumber);
+            const std::size_t slash = name.find('/');
+            if (slash != std::string::npos)  // "map.svg/png"
+            {
+                names.push_back(name.substr(0, slash));
+                name = name.substr(0, name.rfind('.', slash) + 1) + name.substr(slash + 1);
+            }
+            names.push_back(name);
+        }
+    }
+    for (std::size_t i = 0, n = names.size(); i < n && !outputs.prefix.empty(); ++i)
+        names.push_back(outputs.prefix + "_" + names[i]);
+    for (const std::string &name : names)
+        if (fs::symlink_status(target / name, ec).type() == fs::file_type::directory)
+            throw Error("output directory '" + outputs.directory + "' holds a directory '" + name +
+                        "' where glider_plan writes a file; nothing was replaced (remove it or choose another "
+                        "output directory)");
 }
 
 std::vector<std::string> writeOutputFiles(const std::string &directory, const std::vector<OutputFile> &files)
 {
     checkOutputDirectory(directory);
-    const fs::path target = normalised(directory);
-    std::error_code ec;
-    fs::create_directories(target.parent_path(), ec);
-    const fs::path staging = stagingDirectory(target);
-    if (!fs::create_directory(staging, ec))
-        throw Error("cannot create the temporary directory '" + staging.string() + "'" +
-                    (ec ? ": " + ec.message() : std::string()));
-    std::set<std::string> names;
+    const std::string shown = directory.empty() ? "." : directory;
+    std::vector<std::string> names;
+    std::set<std::string> unique;
+    for (const OutputFile &f : files)
+    {
+        if (!plainName(f.name) || !unique.insert(f.name).second)
+            throw Error("output file name '" + f.name + "' is not a plain, unique file name");
+        names.push_back(f.name);
+    }
+    const OutputLock lock(directory);
+    const fs::path target = output_detail::resolveOutputDirectory(directory);
+    output_detail::removeStaleStaging(target);
+    const fs::path staging = output_detail::makeStaging(target);
+    output_detail::setStaging(true);
     try
     {
         for (const OutputFile &f : files)
         {
-            if (!plainName(f.name) || !names.insert(f.name).second)
-                throw Error("output file name '" + f.name + "' is not a plain, unique file name");
+            output_detail::interruptIfSignalled(staging);
             f.write((staging / f.name).string());
         }
+        output_detail::interruptIfSignalled(staging);
+        output_detail::stepHook("staged");
+        output_detail::commitStaging(staging, target, names, previousManifest(target), shown);
+    }
+    catch (const Error &e)
+    {
+        std::error_code ec;
+        fs::remove_all(staging, ec);
+        output_detail::setStaging(false);
+        output_detail::raisePendingSignal();
+        std::string what = e.what();  // name the file where it was meant to go, not in the staging directory
+        const std::string from = staging.string() + "/";
+        for (std::size_t at = what.find(from); at != std::string::npos; at = what.find(from))
+            what.replace(at, from.size(), (fs::path(shown) / "").string());
+        throw Error(what + "; the output directory '" + shown + "' was left as it was");
     }
     catch (...)
     {
+        std::error_code ec;
         fs::remove_all(staging, ec);
+        output_detail::setStaging(false);
         throw;
     }
-    // Everything was written: move it into place.
+    output_detail::setStaging(false);
+    output_detail::raisePendingSignal();
     std::vector<std::string> written;
-    if (!fs::exists(target, ec))
-    {
-        fs::rename(staging, target, ec);
-        if (ec)
-        {
-            fs::remove_all(staging, ec);
-            throw Error("cannot create the output directory '" + directory + "': " + ec.message());
-        }
-    }
-    else
-    {
-        const std::vector<std::string> old = previousManifest(target);
-        for (const OutputFile &f : files)
-        {
-            fs::rename(staging / f.name, target / f.name, ec);
-            if (ec)
-            {
-                fs::remove_all(staging, ec);
-                throw Error("cannot move '" + f.name + "' into '" + directory + "': " + ec.message());
-            }
-        }
-        for (const std::string &name : old)
-            if (plainName(name) && !names.count(name))
-                fs::remove(target / name, ec);
-        fs::remove_all(staging, ec);
-    }
-    for (const OutputFile &f : files)
-        written.push_back((fs::path(directory.empty() ? "." : directory) / f.name).string());
+    for (const std::string &name : names)
+        written.push_back((fs::path(shown) / name).string());
     return written;
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "ompl_glider/Exception.h"
+#include "OutputDirectory.h"
 
 namespace ompl_glider
 {
@@ -86,10 +87,7 @@ std::string formatGotoList(const GotoList &list)
 
 void writeGotoFile(const std::string &path, const GotoList &list)
 {
-    const std::string text = formatGotoList(list);
-    std::ofstream out(path);
-    if (!out || !(out << text))
-        throw Error("cannot write goto list file '" + path + "'");
+    output_detail::writeFileChecked(path, formatGotoList(list));
 }
 
 GotoList parseGotoList(const std::string &text, const std::string &source)

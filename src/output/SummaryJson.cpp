@@ -1,8 +1,12 @@
 #include "ompl_glider/output/SummaryJson.h"
 
+#include <cctype>
 #include <cmath>
+#include <set>
 
 #include <nlohmann/json.hpp>
+
+#include "ompl_glider/Exception.h"
 
 namespace ompl_glider
 {
@@ -18,6 +22,43 @@ json jnum(double v)
 json jtext(const std::string &s)
 {
     return s.empty() ? json(nullptr) : json(s);
+}
+
+/// "nan", "-nan", "inf" or "-inf" as a word of @p s (as "%g" prints a non-finite number).
+bool holdsNonFiniteNumber(const std::string &s)
+{
+    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    for (const char *token : {"nan", "inf"})
+        for (std::size_t at = s.find(token); at != std::string::npos; at = s.find(token, at + 1))
+            if ((at == 0 || !word(s[at - 1])) && (at + 3 == s.size() || !word(s[at + 3])))
+                return true;
+    return false;
+}
+
+/// Refuses a non-finite number anywhere in the summary, and one printed into a generated text (a reason, a
+/// time), naming the field; a missing value is written as null on purpose (jnum()).
+void checkFinite(const json &j, const std::string &field)
+{
+    static const std::set<std::string> generated = {"reason", "grounded_why", "switch_reason", "note", "timing",
+                                                     "switched_from", "iso", "arrival_iso", "begin_iso", "end_iso"};
+    auto fail = [&field](const std::string &what) {
+        throw Error("summary.json: field '" + field + "' holds a non-finite number (" + what +
+                    "); nothing was written");
+    };
+    if (j.is_number_float() && !std::isfinite(j.get<double>()))
+        fail(std::to_string(j.get<double>()));
+    if (j.is_string())
+    {
+        const std::string key = field.substr(field.find_last_of('.') + 1);
+        if (generated.count(key) && holdsNonFiniteNumber(j.get<std::string>()))
+            fail("'" + j.get<std::string>() + "'");
+    }
+    if (j.is_object())
+        for (auto it = j.begin(); it != j.end(); ++it)
+            checkFinite(it.value(), field.empty() ? it.key() : field + "." + it.key());
+    if (j.is_array())
+        for (std::size_t i = 0; i < j.size(); ++i)
+            checkFinite(j[i], field + "[" + std::to_string(i) + "]");
 }
 
 json position(const MissionProblem &problem, Point2 p)
@@ -293,6 +334,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     if (r.execution)
         j["execution"] = executionJson(*r.execution, problem);
     j["files"] = files;
+    checkFinite(j, "");
     return j.dump(2) + "\n";
 }
 }  // namespace ompl_glider

@@ -105,6 +105,15 @@ yaml_case("yaml-deep-nesting", nested(100000), "nest")
 yaml_case("yaml-not-a-map", "- a\n- b\n", "expected a mapping")
 yaml_case("yaml-unknown-top-field", MISSION + "colour: red\n", "m.yaml:8: unknown field 'colour'")
 yaml_case("yaml-duplicate-key", MISSION + "vehicle: {speed: 0.4}\n", "given twice")
+yaml_case("yaml-two-documents", MISSION + "---\nname: second\n",
+          "m.yaml:8: a second YAML document: a mission file holds one document")
+yaml_case("yaml-epoch-arrival-after-9999", mission("epoch: 9999-12-31T00:00:00Z", "units: {time_s: 86400}"),
+          "field 'epoch': t = 13.33333333 falls outside the years 0000-9999")
+case("cli-truth-overflows", ["--truth", "B0=1e300", "--out", "{out}"], 2,
+     "--truth: the current is not a finite number at (0, -4) at t = 0: its parameters overflow")
+yaml_case("yaml-current-overflows",
+          mission("current: {type: meandering_jet, parameters: {B0: 1e300}}"),
+          "m.yaml:2: field 'current.parameters': the current is not a finite number")
 yaml_case("yaml-binary-garbage", "\x00\x01\x02\xff\xfe", "m.yaml")
 case("mission-is-a-directory", ["--mission", "sub", "--out", "{out}"], 2, "is a directory", {"sub/x": "x"})
 case("mission-missing", ["--mission", "nope.yaml", "--out", "{out}"], 2, "cannot read mission file 'nope.yaml'")
@@ -260,6 +269,12 @@ yaml_case("planner-horizon-negative", mission("planner: {name: zastartve, horizo
 yaml_case("outputs-prefix-escapes", mission("outputs: {prefix: ../../x}"), "outputs.prefix")
 yaml_case("outputs-unknown-format", mission("outputs: {files: [pdf]}"), "outputs.files")
 case("outputs-dir-is-file", ["--mission", "m.yaml"], 2, "afile", {"m.yaml": mission("outputs: {directory: afile}")})
+case("outputs-dir-dangling-link", ["--mission", "m.yaml", "--out", "gone"], 2,
+     "output directory 'gone' is a symbolic link to 'no/such/place', which does not exist",
+     {"m.yaml": MISSION, "gone": ("symlink", "no/such/place")})
+case("outputs-directory-where-a-file-goes", ["--mission", "m.yaml", "--out", "o2"], 2,
+     "output directory 'o2' holds a directory 'summary.json' where glider_plan writes a file; nothing was replaced",
+     {"m.yaml": MISSION, "o2/summary.json/keep": "a pilot's file\n"})
 yaml_case("speeds-empty", mission("speeds: []"), "speeds")
 yaml_case("speeds-text", mission("speeds: [0.3, abc]"), "speeds[1]")
 yaml_case("forbidden-bowtie",
@@ -614,6 +629,8 @@ def prepare(workdir, files):
                 size = os.path.getsize(nc)
                 with open(nc, "r+b") as f:
                     f.truncate(size // 2 + 8)
+        elif how == "symlink":
+            os.symlink(text, path)
         elif how == "bytes":
             with open(path, "wb") as f:
                 f.write(text)

@@ -73,6 +73,10 @@ double parseIsoTime(const std::string &text);
 /// second); "" when the value is not finite.
 std::string formatIsoTime(double secondsSince1970);
 
+/// @brief Whether @p secondsSince1970 lies in the years 0000-9999 (what formatIsoTime() writes; it throws Error
+/// outside them).
+bool isoYearInRange(double secondsSince1970);
+
 /// @brief A duration in field units: a number (field units), or "<number> s|min|h|d" (also without the space)
 /// converted with @p timeUnitSeconds seconds per field unit; @p unitKnown false (an analytic flow without
 /// units.time_s) refuses the second form. @throws Error saying what was expected (the caller adds where).

@@ -125,6 +125,7 @@ private:
     /// A current source other than the forecast (a truth, an ensemble member) on the forecast's frame and dates.
     std::shared_ptr<const CurrentField> loadSource(const CurrentSpec &source, const std::string &field) const;
     void buildBox();
+    void checkAnalyticFields() const;  ///< analytic fields are finite over the box (parameters do not overflow)
     void buildRegions();
     Point2 localPoint(const PointSpec &p, const std::string &what) const;
     std::vector<Point2> ring(const std::vector<std::pair<double, double>> &pts, bool geographic,

@@ -1,0 +1,346 @@
+// The output directory's transaction: checked writes, the lock, the staging directory, its commit by one
+// exchange of directories, and the signals that arrive while files are written (OutputWriter.h).
+#include "OutputDirectory.h"
+
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <mutex>
+#include <set>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/output/OutputWriter.h"
+
+namespace ompl_glider
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+std::atomic<bool> g_staging{false};
+std::atomic<int> g_pending{0};
+std::atomic<void (*)(const char *)> g_hook{nullptr};
+
+extern "C" void onTerminatingSignal(int sig)
+{
+    if (!g_staging.load())
+    {
+        ::signal(sig, SIG_DFL);  // end the process as the signal would have (nothing is half written)
+        ::raise(sig);
+        return;
+    }
+    g_pending.store(sig);  // answered at the next file (interruptIfSignalled) or after the commit
+}
+
+std::string systemReason(int err)
+{
+    return std::strerror(err);
+}
+
+/// fsync() of a directory, so that the names in it survive a crash; errors are not fatal (some file systems
+/// refuse fsync on directories).
+void syncDirectory(const fs::path &dir)
+{
+    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd >= 0)
+    {
+        (void)::fsync(fd);
+        ::close(fd);
+    }
+}
+
+std::string baseName(const fs::path &target)
+{
+    const std::string base = target.filename().string();
+    return base.empty() ? std::string("out") : base;
+}
+
+/// ".BASE.tmp-" followed by digits, '-', digits: the staging directories of BASE (and nothing else's).
+bool isStagingName(const std::string &name, const std::string &base)
+{
+    const std::string head = "." + base + ".tmp-";
+    if (name.compare(0, head.size(), head) != 0)
+        return false;
+    const std::string rest = name.substr(head.size());
+    const std::size_t dash = rest.find('-');
+    auto digits = [](const std::string &s) {
+        return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
+    };
+    return dash != std::string::npos && digits(rest.substr(0, dash)) && digits(rest.substr(dash + 1));
+}
+
+/// Whether @p target holds only an earlier run's outputs (regular files listed in its summary.json) and is not
+/// the working directory: then it may be exchanged as a whole.
+bool holdsOnlyOutputs(const fs::path &target, const std::vector<std::string> &previous)
+{
+    std::error_code ec;
+    if (fs::equivalent(target, fs::current_path(ec), ec))
+        return false;
+    const std::set<std::string> listed(previous.begin(), previous.end());
+    for (const fs::directory_entry &e : fs::directory_iterator(target, ec))
+    {
+        const std::string name = e.path().filename().string();
+        if (!listed.count(name) || fs::symlink_status(e.path(), ec).type() != fs::file_type::regular)
+            return false;
+    }
+    return !ec;
+}
+
+struct HeldLock
+{
+    int fd = -1;
+    int count = 0;
+};
+
+std::mutex &lockMutex()
+{
+    static std::mutex m;
+    return m;
+}
+
+std::map<std::string, HeldLock> &heldLocks()
+{
+    static std::map<std::string, HeldLock> held;
+    return held;
+}
+}  // namespace
+
+void installOutputSignalHandlers()
+{
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP})
+    {
+        struct sigaction old
+        {
+        };
+        if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN)
+            continue;  // an ignored signal (nohup) stays ignored
+        struct sigaction sa
+        {
+        };
+        sa.sa_handler = onTerminatingSignal;
+        sigemptyset(&sa.sa_mask);
+        sa.sa_flags = SA_RESTART;
+        ::sigaction(sig, &sa, nullptr);
+    }
+}
+
+OutputLock::OutputLock(const std::string &directory)
+{
+    const fs::path target = output_detail::resolveOutputDirectory(directory);
+    std::error_code ec;
+    fs::create_directories(target.parent_path(), ec);
+    path_ = (target.parent_path() / ("." + baseName(target) + ".lock")).string();
+    const std::lock_guard<std::mutex> guard(lockMutex());
+    HeldLock &held = heldLocks()[path_];
+    if (held.count > 0)
+    {
+        ++held.count;  // this process holds it already (glider_plan locks before planning, then writes)
+        return;
+    }
+    const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    if (fd < 0)
+    {
+        const int err = errno;
+        heldLocks().erase(path_);
+        throw Error("output directory '" + directory + "': cannot create its lock file '" + path_ +
+                    "': " + systemReason(err));
+    }
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+    {
+        const int err = errno;
+        ::close(fd);
+        heldLocks().erase(path_);
+        if (err == EWOULDBLOCK)
+            throw Error("output directory '" + directory + "' is in use by another glider_plan run (it holds '" +
+                        path_ + "'); wait for that run to end or choose another output directory");
+        throw Error("output directory '" + directory + "': cannot lock '" + path_ + "': " + systemReason(err));
+    }
+    held.fd = fd;
+    held.count = 1;
+}
+
+OutputLock::~OutputLock()
+{
+    const std::lock_guard<std::mutex> guard(lockMutex());
+    auto it = heldLocks().find(path_);
+    if (it == heldLocks().end() || --it->second.count > 0)
+        return;
+    ::close(it->second.fd);  // releases the flock; the lock file stays (removing it would race a waiting run)
+    heldLocks().erase(it);
+}
+
+namespace output_detail
+{
+void writeFileChecked(const std::string &path, const std::string &bytes)
+{
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0)
+        throw Error("cannot write '" + path + "': " + systemReason(errno));
+    std::size_t done = 0;
+    while (done < bytes.size())
+    {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+        {
+            const int err = n < 0 ? errno : ENOSPC;
+            ::close(fd);
+            throw Error("cannot write '" + path + "': " + systemReason(err) + " (" + std::to_string(done) + " of " +
+                        std::to_string(bytes.size()) + " bytes written)");
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS)
+    {
+        const int err = errno;
+        ::close(fd);
+        throw Error("cannot write '" + path + "': " + systemReason(err));
+    }
+    if (::close(fd) != 0)
+        throw Error("cannot write '" + path + "': " + systemReason(errno) + " (when closing it)");
+}
+
+fs::path resolveOutputDirectory(const std::string &directory)
+{
+    fs::path p = fs::absolute(directory.empty() ? fs::path(".") : fs::path(directory)).lexically_normal();
+    if (p.filename().empty() && p.has_parent_path() && p != p.root_path())
+        p = p.parent_path();  // trailing slash
+    std::error_code ec;
+    if (fs::is_symlink(p, ec))
+    {
+        if (!fs::exists(p, ec))
+            throw Error("output directory '" + directory + "' is a symbolic link to '" +
+                        fs::read_symlink(p, ec).string() +
+                        "', which does not exist; create that directory or choose another output directory");
+        p = fs::canonical(p, ec);  // the exchange must move the directory, not the link
+    }
+    return p;
+}
+
+void removeStaleStaging(const fs::path &target)
+{
+    std::error_code ec;
+    const std::string base = baseName(target);
+    std::vector<fs::path> stale;
+    for (const fs::directory_entry &e : fs::directory_iterator(target.parent_path(), ec))
+        if (isStagingName(e.path().filename().string(), base) &&
+            fs::symlink_status(e.path(), ec).type() == fs::file_type::directory)
+            stale.push_back(e.path());
+    for (const fs::path &p : stale)
+        fs::remove_all(p, ec);
+}
+
+fs::path makeStaging(const fs::path &target)
+{
+    static std::atomic<unsigned> counter{0};
+    const fs::path staging = target.parent_path() / ("." + baseName(target) + ".tmp-" + std::to_string(::getpid()) +
+                                                     "-" + std::to_string(counter++));
+    std::error_code ec;
+    if (!fs::create_directory(staging, ec))
+        throw Error("cannot create the temporary directory '" + staging.string() + "'" +
+                    (ec ? ": " + ec.message() : std::string()));
+    return staging;
+}
+
+namespace
+{
+/// File by file into a directory that holds other things too (summary.json last), then the earlier run's files
+/// this run does not write are removed.
+void moveFileByFile(const fs::path &staging, const fs::path &target, const std::vector<std::string> &names,
+                    const std::vector<std::string> &previous, const std::string &shown)
+{
+    std::vector<std::string> order;
+    for (const bool summaries : {false, true})
+        for (const std::string &n : names)
+            if ((n.size() >= 12 && n.compare(n.size() - 12, 12, "summary.json") == 0) == summaries)
+                order.push_back(n);
+    for (const std::string &n : order)
+        if (::rename((staging / n).c_str(), (target / n).c_str()) != 0)
+            throw Error("cannot move '" + n + "' into '" + shown + "': " + systemReason(errno));
+    stepHook("committed");
+    const std::set<std::string> now(names.begin(), names.end());
+    std::error_code ec;
+    for (const std::string &name : previous)
+        if (!now.count(name) && name.find('/') == std::string::npos && name != "." && name != ".." &&
+            fs::symlink_status(target / name, ec).type() == fs::file_type::regular)
+            fs::remove(target / name, ec);
+}
+}  // namespace
+
+void commitStaging(const fs::path &staging, const fs::path &target, const std::vector<std::string> &names,
+                   const std::vector<std::string> &previous, const std::string &shown)
+{
+    std::error_code ec;
+    for (const std::string &n : names)
+    {
+        const fs::file_type type = fs::symlink_status(target / n, ec).type();
+        if (type == fs::file_type::directory)
+            throw Error("output directory '" + shown + "' holds a directory '" + n +
+                        "' where glider_plan writes a file; nothing was replaced (remove it or choose another "
+                        "output directory)");
+        if (type != fs::file_type::not_found && type != fs::file_type::none && type != fs::file_type::regular &&
+            type != fs::file_type::symlink)
+            throw Error("output directory '" + shown + "' holds '" + n +
+                        "', which is not a regular file, where glider_plan writes a file; nothing was replaced");
+    }
+    syncDirectory(staging);
+    if (!fs::exists(fs::symlink_status(target, ec)))
+    {
+        if (::rename(staging.c_str(), target.c_str()) != 0)
+            throw Error("cannot create the output directory '" + shown + "': " + systemReason(errno));
+        stepHook("committed");
+    }
+    else if (holdsOnlyOutputs(target, previous) &&
+             (fs::permissions(staging, fs::status(target, ec).permissions(), ec), true) &&
+             ::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0)
+        stepHook("committed");  // the staging directory now holds the earlier run's files
+    else
+        moveFileByFile(staging, target, names, previous, shown);
+    syncDirectory(target.parent_path());
+    fs::remove_all(staging, ec);
+}
+
+void setStaging(bool on)
+{
+    g_staging.store(on);
+}
+
+void raisePendingSignal()
+{
+    if (const int sig = g_pending.exchange(0))
+    {
+        ::signal(sig, SIG_DFL);
+        ::raise(sig);
+    }
+}
+
+void interruptIfSignalled(const fs::path &staging)
+{
+    if (g_pending.load() == 0)
+        return;
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    g_staging.store(false);
+    raisePendingSignal();
+}
+
+void setStepHook(void (*hook)(const char *))
+{
+    g_hook.store(hook);
+}
+
+void stepHook(const char *step)
+{
+    if (auto *hook = g_hook.load())
+        hook(step);
+}
+}  // namespace output_detail
+}  // namespace ompl_glider
