@@ -40,6 +40,7 @@ int run(const Flags &f)
     if (!f.mission.empty() && !f.out.empty())
         spec.outputs.directory = f.out;
     applyOutputFlags(f, spec);
+    applySafetyFlags(f, spec);
     const bool write = !f.mission.empty() || !f.out.empty();
     if (write)
         checkOutputDirectory(spec.outputs.directory);
