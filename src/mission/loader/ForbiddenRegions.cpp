@@ -219,12 +219,13 @@ void readSafety(const Reader &r, const YAML::Node &n, MissionSpec &m)
     r.checkMap(n, f, {"keep_off", "bathymetry", "bathymetry_variable", "min_depth"});
     // a length: a number in planning units, or "2 km" / "500 m"
     auto length = [&](const char *key, double metresPerUnit, bool unitKnown) {
-        const YAML::Node &v = n[key];
+        const YAML::Node v = n[key];
         if (!v.IsScalar())
             r.fail(v, f + "." + key, "expected a length: a number, or e.g. '500 m', '2 km'");
+        const std::string text = v.Scalar();
         try
         {
-            return parseLength(v.Scalar(), metresPerUnit, unitKnown);
+            return parseLength(text, metresPerUnit, unitKnown);
         }
         catch (const Error &e)
         {
