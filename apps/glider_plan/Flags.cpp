@@ -18,6 +18,7 @@
 #include "ompl_glider/current/UnitConversion.h"
 #include "ompl_glider/execution/Execution.h"
 #include "ompl_glider/mission/ForecastMission.h"
+#include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
@@ -287,6 +288,40 @@ void applyOutputFlags(const Flags &f, MissionSpec &m)
         m.outputs.files.push_back(OutputFormatId::Isochrones);
 }
 
+void applySafetyFlags(const Flags &f, MissionSpec &m)
+{
+    auto length = [](const char *flag, const std::string &text, double metresPerUnit, bool known) {
+        try
+        {
+            return parseLength(text, metresPerUnit, known);
+        }
+        catch (const ompl_glider::Error &err)
+        {
+            throw UsageError{std::string(flag) + ": " + err.what()};
+        }
+    };
+    if (!f.keepOff.empty())
+    {
+        m.safety.keepOff = length("--keep-off", f.keepOff, m.metresPerUnit(), m.physicalUnits().length);
+        m.marks["safety.keep_off"] = SourceMark{"--keep-off", 0};
+    }
+    if (!f.minDepth.empty())
+    {
+        m.safety.minDepth = length("--min-depth", f.minDepth, 1.0, true);
+        m.marks["safety.min_depth"] = SourceMark{"--min-depth", 0};
+    }
+    if (!f.bathymetry.empty())
+    {
+        m.safety.bathymetry = f.bathymetry;
+        m.marks["safety.bathymetry"] = SourceMark{"--bathymetry", 0};
+    }
+    m.safety.bathymetryVariable = f.bathymetryVariable;
+    if (!f.bathymetryVariable.empty() && f.bathymetry.empty() && !m.current.isForecast())
+        throw UsageError{"--bathymetry-variable needs --bathymetry FILE"};
+    if (!f.minDepth.empty() && f.bathymetry.empty() && !m.current.isForecast())
+        throw UsageError{"--min-depth needs --bathymetry FILE (a NetCDF file of seafloor depth or elevation)"};
+}
+
 std::vector<double> speedList(const std::string &text)
 {
     std::vector<double> v;
@@ -362,6 +397,22 @@ void defineFlags(CLI::App &app, Flags &f)
                    "forbidden to the glider and drawn on the map")
         ->check(CLI::ExistingFile)
         ->group(io);
+    auto *safe = "Safety margins";
+    app.add_option("--keep-off", f.keepOff,
+                   "keep this far from land (land cells, --coastline polygons, islands): e.g. '2km', '500m', or a "
+                   "number in planning units; the closest approach to land is reported")
+        ->group(safe);
+    app.add_option("--bathymetry", f.bathymetry,
+                   "NetCDF seafloor depth or elevation (GEBCO/ETOPO-style lon/lat grid, or a model's h on lon_rho/"
+                   "lat_rho); with --min-depth, shallower water is forbidden")
+        ->check(CLI::ExistingFile)
+        ->group(safe);
+    app.add_option("--bathymetry-variable", f.bathymetryVariable,
+                   "the depth variable of --bathymetry (default: detected from standard_name and name)")
+        ->group(safe);
+    app.add_option("--min-depth", f.minDepth,
+                   "forbid water shallower than this, e.g. '50m' (needs --bathymetry, or a forecast file with h)")
+        ->group(safe);
     app.add_flag("--verbose", f.verbose, "show OMPL's log messages")->group(io);
     app.add_flag("--isochrones", f.isochrones,
                  "also write isochrones.geojson: where the glider can be by times after the departure (level-set "

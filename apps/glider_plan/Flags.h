@@ -37,11 +37,17 @@ struct Flags
     std::optional<double> radius;
     std::optional<unsigned> executionPairs, executionSeed;
     ompl_glider::ForecastInput forecast;
+    // safety margins: --keep-off, --bathymetry, --bathymetry-variable, --min-depth
+    std::string keepOff, bathymetry, bathymetryVariable, minDepth;
 };
 
 /// @brief The output requests that go with every mode, --mission included: --isochrones and --isochrone-interval
 /// (which implies --isochrones) add the format "isochrones" to @p m's outputs. @throws UsageError naming the flag.
 void applyOutputFlags(const Flags &f, ompl_glider::MissionSpec &m);
+
+/// @brief The safety flags (--keep-off, --bathymetry, --bathymetry-variable, --min-depth) applied to
+/// @p m (lengths read in its units, marks naming the flags). @throws UsageError naming the flag.
+void applySafetyFlags(const Flags &f, ompl_glider::MissionSpec &m);
 
 /// @brief Declares every flag on @p app, storing into @p f (which must outlive @p app).
 void defineFlags(CLI::App &app, Flags &f);

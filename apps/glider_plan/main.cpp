@@ -41,6 +41,7 @@ int run(const Flags &f)
     if (!f.mission.empty() && !f.out.empty())
         spec.outputs.directory = f.out;
     applyOutputFlags(f, spec);
+    applySafetyFlags(f, spec);
     const bool write = !f.mission.empty() || !f.out.empty();
     std::optional<OutputLock> lock;  // held from here: a second run into the directory is refused at once
     if (write)

@@ -31,6 +31,13 @@ struct Box
     double yMax{0.0};
 };
 
+/// @brief A straight segment of the plane (an edge of land's boundary, a leg).
+struct Segment2
+{
+    Point2 a;  ///< one end
+    Point2 b;  ///< the other end
+};
+
 /// @brief A horizontal velocity (u eastward / along x, v northward / along y): a current, a wind or a glider's
 /// velocity through the water, in the units of its field.
 struct Velocity

@@ -35,6 +35,17 @@ bool EnsembleMeanField::inWater(double x, double y, double z) const
     return std::all_of(members_.begin(), members_.end(), [&](const auto &m) { return m->inWater(x, y, z); });
 }
 
+std::vector<Segment2> EnsembleMeanField::landBoundary(double z) const
+{
+    std::vector<Segment2> out;
+    for (const auto &m : members_)
+    {
+        const std::vector<Segment2> b = m->landBoundary(z);
+        out.insert(out.end(), b.begin(), b.end());
+    }
+    return out;
+}
+
 bool EnsembleMeanField::segmentInWater(double x1, double y1, double x2, double y2, double z) const
 {
     return std::all_of(members_.begin(), members_.end(),

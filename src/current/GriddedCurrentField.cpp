@@ -382,6 +382,33 @@ bool GriddedCurrentField::segmentInWater(double x1, double y1, double x2, double
     return true;
 }
 
+std::vector<Segment2> GriddedCurrentField::landBoundary(double z) const
+{
+    std::size_t k0, k1;
+    waterLayers(z, k0, k1);
+    const std::size_t cx = nx_ - 1, cy = ny_ - 1;
+    auto wet = [&](std::size_t i, std::size_t j) {
+        for (std::size_t k = k0; k <= k1; ++k)
+            if (!cellWater_[(k * cy + j) * cx + i])
+                return false;
+        return true;
+    };
+    auto node = [&](std::size_t i, std::size_t j) {
+        const std::size_t n = j * nx_ + i;
+        return curvilinear_ ? Point2{nodeX_[n], nodeY_[n]} : Point2{x_[i], y_[j]};
+    };
+    std::vector<Segment2> out;
+    for (std::size_t j = 0; j < cy; ++j)
+        for (std::size_t i = 1; i < cx; ++i)
+            if (wet(i - 1, j) != wet(i, j))
+                out.push_back({node(i, j), node(i, j + 1)});
+    for (std::size_t j = 1; j < cy; ++j)
+        for (std::size_t i = 0; i < cx; ++i)
+            if (wet(i, j - 1) != wet(i, j))
+                out.push_back({node(i, j), node(i + 1, j)});
+    return out;
+}
+
 BeyondForecast parseBeyondForecast(const std::string &name)
 {
     const std::string s = text::lower(name);

@@ -13,6 +13,14 @@ void ForbiddenRegions::add(std::shared_ptr<const ForbiddenRegion> region)
     regions_.push_back(std::move(region));
 }
 
+bool ForbiddenRegions::isStatic() const
+{
+    for (const auto &r : regions_)
+        if (!r->isStatic())
+            return false;
+    return true;
+}
+
 bool ForbiddenRegions::pointFree(double x, double y, double t) const
 {
     for (const auto &r : regions_)

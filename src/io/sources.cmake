@@ -2,6 +2,7 @@
 # grids and coastlines (GIS files)
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Time.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Length.cpp
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
@@ -9,6 +10,7 @@ if(OMPL_GLIDER_WITH_NETCDF)
     ${CMAKE_CURRENT_LIST_DIR}/NcFile.cpp
     ${CMAKE_CURRENT_LIST_DIR}/ClassicSize.cpp
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/DepthGrid.cpp
   )
 endif()
 if(OMPL_GLIDER_WITH_MISSION)

@@ -134,7 +134,7 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         throw Error(r.file() + ": the mission file is empty");
     r.checkMap(root, "",
                {"name", "units", "epoch", "projection", "current", "region", "start", "goal", "departure", "vehicle",
-                "travel_time", "dive_profile", "forbidden", "planner", "stints", "outputs", "speeds", "execution"});
+                "travel_time", "dive_profile", "forbidden", "safety", "planner", "stints", "outputs", "speeds", "execution"});
     readHeader(r, root, m);
     if (!root["current"])
         r.fail(root, "current", "missing: the current source (type: meandering_jet | uniform | ... | netcdf)");
@@ -167,6 +167,8 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         readDive(r, root["dive_profile"], m);
     if (root["forbidden"])
         readForbidden(r, root["forbidden"], m);
+    if (root["safety"])
+        readSafety(r, root["safety"], m);
     if (root["planner"])
         readPlanner(r, root["planner"], m);
     if (root["stints"])

@@ -574,6 +574,7 @@ void MissionProblem::buildRegions()
             throw Error(where(m, i.polygon.mark) + e.what());
         }
     }
+    addSafety(*regions);
     if (regions->size() > 0)
         environment_ = regions;
 }

@@ -313,6 +313,15 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
             result.profileSet = makeDiveProfiles(m.dive.params);
         result.diveTravelTime = w.travelTime;
     }
+    result.keepOff = m.safety.keepOff;
+    result.safetyNote = problem.safetyNote();
+    if (result.plan.solved && problem.getLand())
+    {
+        const PlannedPath &p = result.plan;
+        result.closestLand = closestApproach(*problem.getLand(), p.track.size() > 1 ? p.track : p.path);
+        if (problem.isGeographic() && std::isfinite(result.closestLand.distance))
+            result.closestLandLonLat = problem.toGeographic(result.closestLand.where);
+    }
     if (options.optimum)
     {
         // Any flown path bounds the optimum; without one, the planning horizon does.

@@ -105,6 +105,8 @@ void printReport(std::ostream &out, const MissionResult &r)
     out << "Departure:          " << num(p.departure) << (iso.empty() ? "" : " (" + iso + ")") << "\n";
     out << "Status:             " << p.status << (p.solved ? "" : "\nReason:             " + p.reason) << "\n";
     printRouteModel(out, p);
+    if (!r.safetyNote.empty())
+        out << "Depth limit:        " << r.safetyNote << "\n";
     if (p.solved)
     {
         out << format("Travel time:        %.4f (raw %.4f, smoothed %.4f)\n", p.travelTime, p.rawTravelTime,
@@ -123,6 +125,21 @@ void printReport(std::ostream &out, const MissionResult &r)
             out << "With dive profiles: " << (std::isfinite(r.diveTravelTime) ? num(r.diveTravelTime) : "impassable")
                 << "\n";
         out << format("Path length:        %.4f (straight %.4f)\n", p.pathLength, p.straightLineLength);
+        if (std::isfinite(r.closestLand.distance))
+        {
+            const double mpu = m.metresPerUnit();
+            const std::string d = m.physicalUnits().length ? format("%.3f km", r.closestLand.distance * mpu / 1000.0)
+                                                           : num(r.closestLand.distance);
+            out << "Closest to land:    " << d;
+            if (r.closestLandLonLat)
+                out << format(" at %.5f, %.5f", r.closestLandLonLat->lon, r.closestLandLonLat->lat);
+            else
+                out << " at (" << num(r.closestLand.where.x) << ", " << num(r.closestLand.where.y) << ")";
+            if (r.keepOff > 0.0)
+                out << " (keep-off "
+                    << (m.physicalUnits().length ? format("%.3f km", r.keepOff * mpu / 1000.0) : num(r.keepOff)) << ")";
+            out << "\n";
+        }
         out << "Straight line:      "
             << (std::isfinite(p.straightLineTime) ? format("%.4f", p.straightLineTime) : std::string("impassable"))
             << "\n";

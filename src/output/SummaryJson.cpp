@@ -191,6 +191,27 @@ json departureSearchJson(const MissionSpec &m, const DepartureSearchResult &d)
             {"supporting_points", samples(d.supportingPoints)},
             {"refinements", samples(d.refinements)}};
 }
+/// The safety margins (keep-off distance, depth limit) and the route's closest approach to land.
+void safetyJson(const MissionResult &r, json &j)
+{
+    const MissionSpec &m = r.spec;
+    const double mpu = m.metresPerUnit();
+    const bool metres = m.physicalUnits().length;
+    const LandApproach &c = r.closestLand;
+    j["safety"] = {{"keep_off", m.safety.keepOff},
+                   {"keep_off_m", metres ? json(m.safety.keepOff * mpu) : json(nullptr)},
+                   {"min_depth_m", m.safety.minDepth},
+                   {"depth_limit", jtext(r.safetyNote)}};
+    j["closest_land"] = std::isfinite(c.distance)
+                            ? json{{"distance", c.distance},
+                                   {"distance_m", metres ? json(c.distance * mpu) : json(nullptr)},
+                                   {"x", c.where.x},
+                                   {"y", c.where.y},
+                                   {"lon", r.closestLandLonLat ? json(r.closestLandLonLat->lon) : json(nullptr)},
+                                   {"lat", r.closestLandLonLat ? json(r.closestLandLonLat->lat) : json(nullptr)}}
+                            : json(nullptr);
+    j["closest_land_m"] = std::isfinite(c.distance) && metres ? json(c.distance * mpu) : json(nullptr);
+}
 }  // namespace
 
 std::string summaryJson(const MissionResult &r, const MissionProblem &problem, const std::vector<std::string> &files)
@@ -234,6 +255,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["straight_line"] = {{"travel_time", jnum(p.straightLineTime)},
                           {"passable", std::isfinite(p.straightLineTime)},
                           {"length", p.straightLineLength}};
+    safetyJson(r, j);
     j["waypoints"] = {{"raw", p.raw.size()}, {"smoothed", p.smoothed.size()}, {"final", p.path.size()}};
     j["cost_function_calls"] = {{"search", p.searchCostFunctionCalls},
                                 {"postprocess", p.postprocessCostFunctionCalls},

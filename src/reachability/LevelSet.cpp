@@ -516,7 +516,7 @@ LevelSetSolver::LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSe
     else
         impl_->staticD.assign(g.size(), -band);
 
-    std::vector<const Environment *> members;
+    std::vector<const Environment *> members, staticOthers;
     if (const auto *fr = dynamic_cast<const ForbiddenRegions *>(ctx_->environment.get()))
         for (const auto &m : fr->regions())
             members.push_back(m.get());
@@ -537,8 +537,31 @@ LevelSetSolver::LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSe
             if (params_.iceForbidden)
                 impl_->ice.push_back(iz);
         }
+        else if (m->isStatic())
+            staticOthers.push_back(m);
         else
             impl_->others.push_back(m);
+    }
+    // other static regions (keep-off zones, shallow water): their nodes once, like land
+    if (!staticOthers.empty())
+    {
+        std::vector<char> blocked(g.size(), 0);
+        bool any = false;
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i)
+                for (const Environment *e : staticOthers)
+                    if (!e->pointFree(g.x(i), g.y(j), 0.0))
+                    {
+                        blocked[g.index(i, j)] = any = 1;
+                        break;
+                    }
+        if (any)
+        {
+            std::vector<double> d;
+            maskDistance(g, blocked, band, d, params_.clearance);
+            for (std::size_t n = 0; n < g.size(); ++n)
+                impl_->staticD[n] = std::max(impl_->staticD[n], d[n]);
+        }
     }
 }
 

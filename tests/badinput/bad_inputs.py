@@ -597,6 +597,46 @@ case("cli-arrive-between-date-built-in", ["--arrive-between", "2026-03-15,2026-0
      "--arrive-between: begin")
 case("goal-window-missed", ["--arrive-between", "1,2", "--out", "{out}"], 1,
      "after the end of the goal's arrival window")
+# --- safety margins: keep-off distance, depth limit --------------------------------------------------------------
+BATHY = """netcdf b {
+dimensions: lat = 3 ; lon = 3 ;
+variables:
+  double lat(lat) ; lat:units = "degrees_north" ;
+  double lon(lon) ; lon:units = "degrees_east" ;
+  float VAR(lat, lon) ; ATTRS
+data:
+  lat = 46.9, 47.5, 48.1 ;
+  lon = -53.1, -52.5, -51.9 ;
+  VAR = -100, -100, -100, -100, -100, -100, -100, -100, -100 ;
+}
+"""
+for name, args, phrase in [
+        ("flag-keep-off-negative", ["--keep-off=-2"], "--keep-off: expected a length >= 0"),
+        ("flag-keep-off-unknown-unit", ["--keep-off", "2 parsecs"], "--keep-off: expected a length"),
+        ("flag-keep-off-km-without-units", ["--keep-off", "2km"], "needs the mission's length unit"),
+        ("flag-min-depth-without-bathymetry", ["--min-depth", "50m"], "--min-depth needs --bathymetry"),
+]:
+    case(name, args + ["--out", "{out}"], 2, phrase, {"m.yaml": MISSION})
+yaml_case("safety-keep-off-negative", mission(append="safety: {keep_off: -1}\n"), "m.yaml:8: field 'safety.keep_off'")
+yaml_case("safety-unknown-key", mission(append="safety: {keepoff: 1}\n"), "safety.keepoff")
+yaml_case("safety-min-depth-without-bathymetry", mission(append="safety: {min_depth: 50m}\n"),
+          "field 'safety.min_depth': needs safety.bathymetry")
+yaml_case("safety-start-within-keep-off",
+          mission(append="forbidden: {obstacles: [{name: Rock, points: [[1.5, -1], [2.5, -1], [2.5, 1], [1.5, 1]]}]}\n"
+                         "safety: {keep_off: 1}\n"), "keep-off")
+case("bathymetry-without-depth-variable", ["--currents", "f.nc", START, GOAL, "--bathymetry", "b.nc", "--min-depth",
+                                           "50m", "--out", "{out}"], 2,
+     "no seafloor depth or elevation variable",
+     {"f.cdl": forecast(), "b.cdl": BATHY.replace("VAR", "foo").replace("ATTRS", "foo:units = \"m\" ;")})
+case("bathymetry-sign-ambiguous", ["--currents", "f.nc", START, GOAL, "--bathymetry", "b.nc", "--bathymetry-variable",
+                                   "foo", "--out", "{out}"], 2,
+     "variable 'foo': cannot tell a depth (positive down) from an elevation",
+     {"f.cdl": forecast(), "b.cdl": BATHY.replace("VAR", "foo").replace("ATTRS", "foo:units = \"m\" ;")})
+case("bathymetry-variable-missing", ["--currents", "f.nc", START, GOAL, "--bathymetry", "b.nc", "--bathymetry-variable",
+                                     "depth", "--out", "{out}"], 2, "--bathymetry: NetCDF file",
+     {"f.cdl": forecast(), "b.cdl": BATHY.replace("VAR", "elevation").replace("ATTRS", "elevation:positive = \"up\" ;")})
+nc_case("depth-average-single-level", forecast(), "needs several depth levels", extra=("--depth-average", "0,200"))
+
 # --- well-formed problems without a path: exit 1 with the reason ------------------------------------------------
 case("no-path-slow-in-jet", ["--speed", "0.05", "--out", "{out}"], 1, "Status:             No path")
 case("no-path-horizon-named", ["--speed", "0.05", "--out", "{out}"], 1, "within the planning horizon")

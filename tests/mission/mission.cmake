@@ -39,3 +39,6 @@ endif()
 # goals in time (issue 12): a goal window met by holding at the goal or by timing the arrival, or not at all
 glider_add_test(test_mission_goal_window ${CMAKE_CURRENT_LIST_DIR}/TestGoalWindow.cpp)
 target_link_libraries(test_mission_goal_window PRIVATE nlohmann_json::nlohmann_json)
+# safety margins (keep-off distance, depth limit) through the pipeline
+glider_add_test(test_mission_safety ${CMAKE_CURRENT_LIST_DIR}/TestSafety.cpp)
+target_link_libraries(test_mission_safety PRIVATE netCDF::netcdf)

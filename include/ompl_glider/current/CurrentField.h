@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ompl_glider/Geometry.h"
 #include "ompl_glider/ShardedCounter.h"
@@ -102,6 +103,15 @@ public:
     virtual bool segmentInWater(double x1, double y1, double x2, double y2, double z) const
     {
         return inWater(x1, y1, z) && inWater(x2, y2, z);
+    }
+
+    /// @brief The boundary between water and land at depth z, as straight edges of the plane: the edges between a
+    /// cell inWater() refuses and one it accepts (not the field's outer edges). The distance to land of the
+    /// keep-off zone (environment/KeepOffZone.h) and of the report is measured to these edges. Empty by default
+    /// (fields without land).
+    virtual std::vector<Segment2> landBoundary(double /*z*/) const
+    {
+        return {};
     }
 
     /// @brief Earliest time at which the field is defined (-inf for analytic fields).

@@ -24,6 +24,8 @@ public:
     bool divergenceFree() const override;
     bool inWater(double x, double y, double z) const override;
     bool segmentInWater(double x1, double y1, double x2, double y2, double z) const override;
+    /// @brief The members' land boundaries together (a point is in water only where every member has water).
+    std::vector<Segment2> landBoundary(double z) const override;
     double timeBegin() const override;
     double timeEnd() const override;
     std::string name() const override;

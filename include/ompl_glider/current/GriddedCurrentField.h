@@ -155,6 +155,9 @@ public:
     /// 1e-12 relative, in the intersection tests). For environment/planner code that must keep whole legs off land
     /// (the travel-time code asks it once per leg).
     bool segmentInWater(double x1, double y1, double x2, double y2, double z) const override;
+    /// @brief The edges between a water cell and a land cell (a cell is land at z when it is land in any depth
+    /// layer that carries weight at z, as inWater() decides), straight between their nodes.
+    std::vector<Segment2> landBoundary(double z) const override;
     /// @brief Smallest distance between neighbouring grid nodes (x/y units).
     double minCellSize() const
     {

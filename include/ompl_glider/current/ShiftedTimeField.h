@@ -31,6 +31,10 @@ public:
     {
         return inner_->segmentInWater(x1, y1, x2, y2, z);
     }
+    std::vector<Segment2> landBoundary(double z) const override
+    {
+        return inner_->landBoundary(z);
+    }
     double timeBegin() const override
     {
         return inner_->timeBegin() - shift_;

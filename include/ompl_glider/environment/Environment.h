@@ -32,6 +32,13 @@ public:
         return {};
     }
 
+    /// @brief True when the region never changes with time (pointFree() ignores t): a planner may then evaluate it
+    /// once (LevelSet's static forbidden set). False by default.
+    virtual bool isStatic() const
+    {
+        return false;
+    }
+
     /// @brief Why (x, y, t) is not free ("inside island 'A'"); empty when it is free.
     virtual std::string whyBlocked(double x, double y, double t) const = 0;
 

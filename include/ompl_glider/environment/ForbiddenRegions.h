@@ -37,6 +37,8 @@ public:
     bool pointFree(double x, double y, double t) const override;
     bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const override;
     std::string whyBlocked(double x, double y, double t) const override;
+    /// @brief True when every member is static.
+    bool isStatic() const override;
     /// @brief The members' release times, merged (sorted, no repeats).
     std::vector<double> releaseTimes() const override;
     std::string whyLegBlocked(double x1, double y1, double t1, double x2, double y2, double t2) const override;

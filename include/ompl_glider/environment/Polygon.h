@@ -87,6 +87,15 @@ public:
     {
         return area_;
     }
+    /// @brief Every edge of the outer ring and the holes.
+    std::vector<Segment2> edges() const
+    {
+        std::vector<Segment2> out;
+        out.reserve(edges_.size());
+        for (const Edge &e : edges_)
+            out.push_back({{e.ax, e.ay}, {e.bx, e.by}});
+        return out;
+    }
     /// @brief The outer ring (open: last != first).
     const std::vector<Point2> &outer() const
     {

@@ -12,12 +12,15 @@
 #include "ompl_glider/Geometry.h"
 #include "ompl_glider/cost/DiveProfile.h"
 #include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/environment/KeepOffZone.h"
 #include "ompl_glider/environment/Environment.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 
 namespace ompl_glider
 {
+class ForbiddenRegions;
+class ForbiddenCells;
 struct NetCdfCurrentOptions;
 class LocalProjection;
 
@@ -78,6 +81,18 @@ public:
     {
         return environment_;
     }
+    /// @brief Land's boundary with the keep-off distance (MissionSpec::safety): the zone the planners keep off, and
+    /// the distances of the closest approach; null when the problem has no land.
+    const std::shared_ptr<const KeepOffZone> &getLand() const
+    {
+        return land_;
+    }
+    /// @brief What the depth limit read ("depth limit 50 m from 'gebco.nc' variable 'elevation' (elevation, positive
+    /// up (attribute positive)): 1234 cells forbidden"); empty without one.
+    const std::string &safetyNote() const
+    {
+        return safetyNote_;
+    }
     /// @brief Forbidden regions in the planning frame.
     const std::vector<MissionPolygon> &getPolygons() const
     {
@@ -127,6 +142,10 @@ private:
     void buildBox();
     void checkAnalyticFields() const;  ///< analytic fields are finite over the box (parameters do not overflow)
     void buildRegions();
+    /// The keep-off zone and the shallow water (Safety.cpp), added to @p regions.
+    void addSafety(ForbiddenRegions &regions);
+    /// The shallow water of the depth limit (Safety.cpp); null without a bathymetry.
+    std::shared_ptr<const ForbiddenCells> shallowWater();
     Point2 localPoint(const PointSpec &p, const std::string &what) const;
     std::vector<Point2> ring(const std::vector<std::pair<double, double>> &pts, bool geographic,
                              const std::string &what) const;
@@ -142,6 +161,8 @@ private:
     std::vector<MissionPolygon> polygons_;
     Region box_;
     Point2 start_, goal_;
+    std::shared_ptr<const KeepOffZone> land_;  // land's boundary and the keep-off distance (null: no land)
+    std::string safetyNote_;                   // what the depth limit read, and how
 };
 
 /// @brief The GliderProblem of the built-in Gulf Stream mission (defaultGulfStreamMission()) departing at 0, for

@@ -211,6 +211,19 @@ struct ForbiddenSpec
     SourceMark coastlineMark;           ///< where it was given
 };
 
+/// @brief Safety margins: a keep-off distance from land and a depth limit from a bathymetry grid. Both become
+/// forbidden regions of the one environment (KeepOffZone, ForbiddenCells), so every planner, the motion validator
+/// and the re-flights keep them.
+struct SafetySpec
+{
+    /// Keep-off distance from land (the field's land cells, coastline polygons, islands and land obstacles), planning
+    /// units (metres for a forecast); 0: none (the closest approach is still reported)
+    double keepOff{0.0};
+    std::string bathymetry;          ///< NetCDF seafloor depth or elevation (resolved path); empty: none
+    std::string bathymetryVariable;  ///< its variable; empty: detected (DepthGrid.h)
+    double minDepth{0.0};            ///< metres: water shallower than this is forbidden (needs a bathymetry)
+};
+
 /// @brief The planner and its parameters.
 struct PlannerSpec
 {
@@ -327,6 +340,7 @@ struct MissionSpec
     TravelTimeParams travel;       ///< integration parameters (speed and depth are copied from vehicle)
     DiveSpec dive;
     ForbiddenSpec forbidden;
+    SafetySpec safety;             ///< keep-off distance and depth limit
     PlannerSpec planner;
     StintSpec stints;
     OutputSpec outputs;

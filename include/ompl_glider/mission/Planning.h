@@ -219,6 +219,12 @@ struct MissionResult
     std::vector<SpeedSweepRow> speedSweep;  ///< speed sweep rows
     std::optional<ExecutionResult> execution;  ///< the plan flown in the truth (MissionSpec::execution)
     std::optional<IsochroneSet> isochrones;    ///< reachable-set contours (output format "isochrones")
+    /// The final route's closest approach to land (the flown track of a heading route, else the legs): distance in
+    /// planning units (NaN without land or path) and where; lonLat set when the mission is geographic
+    LandApproach closestLand;
+    std::optional<LonLat> closestLandLonLat;
+    double keepOff{0.0};      ///< the keep-off distance kept (MissionSpec::safety.keepOff)
+    std::string safetyNote;   ///< what the depth limit read (MissionProblem::safetyNote())
     double wallSeconds{0.0};                ///< whole run
 };
 

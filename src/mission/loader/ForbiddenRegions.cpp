@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "MissionReader.h"
+#include "ompl_glider/io/Length.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider::mission_loader
@@ -210,5 +211,50 @@ void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
         if (!fileExists(m.forbidden.coastline))
             r.fail(n["coastline"], f + ".coastline", "cannot open '" + m.forbidden.coastline + "'");
     }
+}
+
+void readSafety(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const std::string f = "safety";
+    r.checkMap(n, f, {"keep_off", "bathymetry", "bathymetry_variable", "min_depth"});
+    // a length: a number in planning units, or "2 km" / "500 m"
+    auto length = [&](const char *key, double metresPerUnit, bool unitKnown) {
+        const YAML::Node v = n[key];
+        if (!v.IsScalar())
+            r.fail(v, f + "." + key, "expected a length: a number, or e.g. '500 m', '2 km'");
+        const std::string text = v.Scalar();
+        try
+        {
+            return parseLength(text, metresPerUnit, unitKnown);
+        }
+        catch (const Error &e)
+        {
+            r.fail(v, f + "." + key, e.what());
+        }
+    };
+    if (n["keep_off"])
+    {
+        m.safety.keepOff = length("keep_off", m.metresPerUnit(), m.physicalUnits().length);
+        m.marks[f + ".keep_off"] = {r.file(), r.line(n["keep_off"])};
+    }
+    if (n["min_depth"])
+    {
+        m.safety.minDepth = length("min_depth", 1.0, true);  // depths are metres for every field
+        m.marks[f + ".min_depth"] = {r.file(), r.line(n["min_depth"])};
+    }
+    if (n["bathymetry"])
+    {
+        m.safety.bathymetry = joinPath(r.dir(), r.text(n["bathymetry"], f + ".bathymetry"));
+        m.marks[f + ".bathymetry"] = {r.file(), r.line(n["bathymetry"])};
+        if (!fileExists(m.safety.bathymetry))
+            r.fail(n["bathymetry"], f + ".bathymetry", "cannot open '" + m.safety.bathymetry + "'");
+    }
+    if (n["bathymetry_variable"])
+        m.safety.bathymetryVariable = r.text(n["bathymetry_variable"], f + ".bathymetry_variable");
+    if (n["min_depth"] && m.safety.bathymetry.empty() && !m.current.isForecast())
+        r.fail(n["min_depth"], f + ".min_depth",
+               "needs safety.bathymetry (a NetCDF file of seafloor depth or elevation)");
+    if (n["bathymetry_variable"] && !n["bathymetry"] && !m.current.isForecast())
+        r.fail(n["bathymetry_variable"], f + ".bathymetry_variable", "needs safety.bathymetry");
 }
 }  // namespace ompl_glider::mission_loader

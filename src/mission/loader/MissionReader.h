@@ -98,6 +98,8 @@ void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readGoalWindow(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m);
+/// The `safety` section (keep_off, bathymetry, bathymetry_variable, min_depth), after the current.
+void readSafety(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readStints(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m);

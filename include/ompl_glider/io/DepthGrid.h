@@ -1,0 +1,40 @@
+#pragma once
+/// @file DepthGrid.h
+/// @brief A seafloor-depth grid read from a NetCDF file for the depth limit: GEBCO/ETOPO-style files (1-D lon/lat
+/// axes, elevation or depth) and a model's own bathymetry (ROMS `h` on 2-D lon_rho/lat_rho).
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace ompl_glider
+{
+/// @brief Nodes and seafloor depths of a bathymetry file, cut to a region.
+struct DepthGrid
+{
+    std::size_t nx{0}, ny{0};  ///< nodes along i and j
+    std::vector<double> a, b;  ///< node coordinates [j * nx + i]: lon/lat (degrees) when geographic, else x/y
+    std::vector<double> depth; ///< seafloor depth, metres positive down (negative on land); NaN for fill values
+    bool geographic{true};     ///< the coordinates are lon/lat
+    std::string variable;      ///< the variable read
+    std::string convention;    ///< how its sign was decided ("elevation, positive up (attribute positive)")
+};
+
+/// @brief The region of a DepthGrid to read: lon in [lonMin, lonMax] (any convention; lonMax < lonMin + 360) and
+/// lat in [latMin, latMax], or x/y for a file on planning coordinates.
+struct DepthRegion
+{
+    double lonMin{-180.0}, lonMax{180.0}, latMin{-90.0}, latMax{90.0};
+};
+
+/// @brief Reads the depth variable @p variable (empty: the first 2-D variable whose standard_name or name says it is
+/// a depth or an elevation: sea_floor_depth*, height_above_*, altitude; depth, h, bathymetry, elevation, z, topo,
+/// rose) on 1-D axes (coordinate variables of its two dimensions) or 2-D lon/lat (its `coordinates` attribute, or
+/// lon_rho/lat_rho). Its sign is decided by the attribute `positive`, else its standard_name, else its name, else
+/// its long_name ("depth"/"bathymetry" down; "elevation", "height", "altitude", "relief" up); a variable none of
+/// these settle is refused. 1-D geographic axes are cut to @p region (one node beyond each side; a global axis
+/// across its seam); 2-D grids are kept whole.
+/// @throws Error "NetCDF file '<path>': ..." naming the variable when the file, the variable or its coordinates
+/// cannot be read, none is found, its sign is ambiguous or no node lies in the region.
+DepthGrid readDepthGrid(const std::string &path, const std::string &variable, const DepthRegion &region);
+}  // namespace ompl_glider

@@ -1,0 +1,123 @@
+// Safety margins of a mission (MissionSpec::safety): the keep-off zone from land and the shallow water of the depth
+// limit, both forbidden regions of the one environment (see MissionProblem.h).
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "../io/NumberText.h"
+#include "ompl_glider/Config.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/environment/ForbiddenCells.h"
+#include "ompl_glider/environment/ForbiddenRegions.h"
+#include "ompl_glider/environment/KeepOffZone.h"
+#include "ompl_glider/environment/StaticRegion.h"
+#include "ompl_glider/io/DepthGrid.h"
+#include "ompl_glider/mission/MissionProblem.h"
+
+namespace ompl_glider
+{
+namespace
+{
+/// "m.yaml:12: field 'safety.min_depth': " or "--min-depth: ".
+std::string at(const MissionSpec &m, const std::string &field)
+{
+    const auto it = m.marks.find(field);
+    if (it != m.marks.end() && it->second.line == 0 && it->second.file.rfind("--", 0) == 0)
+        return it->second.file + ": ";
+    return m.place(field) + ": ";
+}
+}  // namespace
+
+std::shared_ptr<const ForbiddenCells> MissionProblem::shallowWater()
+{
+    const MissionSpec &m = spec_;
+    const bool limit = m.marks.count("safety.min_depth") > 0 || !m.safety.bathymetry.empty();
+    if (!limit)
+        return nullptr;
+    const std::string field = m.safety.bathymetry.empty() ? "safety.min_depth" : "safety.bathymetry";
+    std::string file = m.safety.bathymetry;
+    if (file.empty())
+    {
+        if (forecastFiles_.empty())
+            throw Error(at(m, field) + "a depth limit needs a bathymetry file (safety.bathymetry, --bathymetry)");
+        file = forecastFiles_.front();  // the model's own bathymetry (ROMS h)
+    }
+#if OMPL_GLIDER_WITH_NETCDF
+    DepthRegion region;
+    const bool geo = isGeographic();
+    if (geo)
+    {
+        const GeoBox gb = frameBounds(box_, [this](Point2 p) { return toGeographic(p); });
+        const double pad = 0.05 * std::max(gb.lonMax - gb.lonMin, gb.latMax - gb.latMin);
+        region = {gb.lonMin - pad, gb.lonMax + pad, std::max(-90.0, gb.latMin - pad), std::min(90.0, gb.latMax + pad)};
+    }
+    DepthGrid g;
+    try
+    {
+        g = readDepthGrid(file, m.safety.bathymetryVariable, region);
+        if (g.geographic && !geo)
+            throw Error("the bathymetry is on longitude/latitude: the mission needs a projection");
+    }
+    catch (const Error &e)
+    {
+        throw Error(at(m, field) + e.what());
+    }
+    std::vector<Point2> nodes(g.a.size());
+    for (std::size_t n = 0; n < nodes.size(); ++n)
+        nodes[n] = g.geographic ? (std::abs(g.b[n]) <= 89.9 ? toLocal({g.a[n], g.b[n]}) : Point2{NAN, NAN})
+                                : Point2{g.a[n], g.b[n]};
+    // a cell is too shallow when any corner is (or has no value): the depth limit holds on the whole cell
+    const std::size_t cx = g.nx - 1, cy = g.ny - 1;
+    std::vector<std::uint8_t> bad(cx * cy, 0);
+    std::size_t count = 0;
+    auto shallow = [&](std::size_t n) { return !(g.depth[n] >= m.safety.minDepth); };
+    for (std::size_t j = 0; j < cy; ++j)
+        for (std::size_t i = 0; i < cx; ++i)
+            if (shallow(j * g.nx + i) || shallow(j * g.nx + i + 1) || shallow((j + 1) * g.nx + i) ||
+                shallow((j + 1) * g.nx + i + 1))
+            {
+                bad[j * cx + i] = 1;
+                ++count;
+            }
+    const std::string name = "depth < " + text::number(m.safety.minDepth) + " m";
+    auto cells = std::make_shared<ForbiddenCells>(name, "shallow water", g.nx, g.ny, std::move(nodes), bad);
+    safetyNote_ = "depth limit " + text::number(m.safety.minDepth) + " m from '" + file +
+                                             "' variable '" + g.variable + "' (" + g.convention + "): " +
+                                             std::to_string(count) + " of " + std::to_string(cx * cy) +
+                                             " cells too shallow";
+    return cells;
+#else
+    (void)file;
+    throw Error(at(m, field) + "this build of ompl_glider has no NetCDF support");
+#endif
+}
+
+void MissionProblem::addSafety(ForbiddenRegions &regions)
+{
+    const MissionSpec &m = spec_;
+    if (!(m.safety.keepOff >= 0.0) || !std::isfinite(m.safety.keepOff))
+        throw Error(at(m, "safety.keep_off") + "the keep-off distance must be finite and >= 0, got " +
+                    text::number(m.safety.keepOff));
+    if (!(m.safety.minDepth >= 0.0) || !std::isfinite(m.safety.minDepth))
+        throw Error(at(m, "safety.min_depth") + "the depth limit must be finite and >= 0 m, got " +
+                    text::number(m.safety.minDepth));
+    // land's boundary: the field's land cells, the land polygons (coastline, islands, land obstacles)
+    std::vector<Segment2> edges = field_->landBoundary(m.travel.depth);
+    for (const auto &r : regions.regions())
+        if (const auto *s = dynamic_cast<const StaticRegion *>(r.get()))
+            if (s->kind() == "land" || s->kind() == "island")
+            {
+                const std::vector<Segment2> e = s->polygon().edges();
+                edges.insert(edges.end(), e.begin(), e.end());
+            }
+    if (!edges.empty())
+    {
+        land_ = std::make_shared<KeepOffZone>(std::move(edges), m.safety.keepOff);
+        if (m.safety.keepOff > 0.0)
+            regions.add(land_);
+    }
+    if (auto shallow = shallowWater())
+        regions.add(shallow);
+}
+}  // namespace ompl_glider
