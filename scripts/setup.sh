@@ -19,6 +19,7 @@ PACKAGES=(
   libcli11-dev nlohmann-json3-dev
   libgdal-dev
   python3 python3-matplotlib
+  pybind11-dev python3-dev python3-numpy python3-pytest
   clang-14 libfuzzer-14-dev
 )
 

@@ -39,6 +39,12 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
     const Reachability r = solver.solve(s.x, s.y, departure, departure + (times.empty() ? 0.0 : times.back()),
                                         std::nullopt);
     out.seconds = r.stats.seconds;
+    out.x0 = r.x0;
+    out.y0 = r.y0;
+    out.h = r.h;
+    out.nx = r.nx;
+    out.ny = r.ny;
+    out.arrival = r.arrival;
     for (double dt : times)
     {
         Isochrone c;

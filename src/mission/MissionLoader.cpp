@@ -242,7 +242,8 @@ std::string MissionSpec::place(const std::string &field) const
         if (it != marks.end() && it->first.rfind(field + ".", 0) != 0)
             it = marks.end();
     }
-    if (it != marks.end() && it->second.file.rfind("--", 0) == 0)
+    // a command-line flag ("--grid-size") or a keyword of the Python module ("plan(): keyword 'speed'") names itself
+    if (it != marks.end() && (it->second.file.rfind("--", 0) == 0 || it->second.file.rfind("plan(", 0) == 0))
         return it->second.file;
     if (it != marks.end() && it->second.line > 0)
         return it->second.file + ":" + std::to_string(it->second.line) + ": field '" + field + "'";

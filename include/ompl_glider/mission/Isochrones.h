@@ -28,6 +28,11 @@ struct IsochroneSet
     double resolution{0.0};             ///< the level-set cell size
     double seconds{0.0};                ///< solver wall time
     std::vector<Isochrone> contours;    ///< ascending times
+    /// The level set's first-arrival field the contours are drawn on: node (i, j) at (x0 + i h, y0 + j h) in the
+    /// planning frame, arrival[j * nx + i] the absolute time (+inf where the front never came)
+    double x0{0.0}, y0{0.0}, h{0.0};
+    int nx{0}, ny{0};                   ///< node counts
+    std::vector<double> arrival;        ///< see x0
 };
 
 /// @brief Propagates the level-set front (LevelSetSolver, cell 1/100 of the region's larger side) from the start at

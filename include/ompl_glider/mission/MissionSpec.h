@@ -382,8 +382,8 @@ struct MissionSpec
     /// expected (the caller adds where).
     double timeOf(const std::string &text) const;
 
-    /// @brief "m.yaml:12: field 'planner.grid_size'", "--grid-size" for a flag, or "m.yaml: field '...'" when the
-    /// value was not given (a default).
+    /// @brief "m.yaml:12: field 'planner.grid_size'", "--grid-size" for a flag, "plan(): keyword 'speed'" for a
+    /// keyword of the Python module, or "m.yaml: field '...'" when the value was not given (a default).
     std::string place(const std::string &field) const;
 };
 

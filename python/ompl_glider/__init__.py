@@ -1,0 +1,354 @@
+"""Time-optimal glider routes through time-varying currents, from Python.
+
+A thin layer over the C++ library's one pipeline: every call builds one mission (the library's MissionSpec),
+plans it with the same planning function as the command line ``glider_plan`` and reads the same result, so the
+travel times are the command line's to the last bit, and :meth:`Result.write` writes the same files.
+
+    >>> import ompl_glider
+    >>> r = ompl_glider.plan()                       # the built-in Gulf Stream mission, as glider_plan
+    >>> r.travel_time, r.status
+    >>> r = ompl_glider.plan("examples/islands_ice.yaml", planner="LevelSet")
+    >>> f = ompl_glider.Field.netcdf("examples/labrador_forecast.nc")
+    >>> r = ompl_glider.plan(field=f, start=(-52.7, 47.9), goal=(-51.5, 48.45), speed=0.3, isochrones=True)
+    >>> r.route.lon, r.route.lat, r.route.t          # numpy arrays
+    >>> r.write("out/labrador")                      # summary.json, waypoints.csv, path.geojson, goto list, map
+
+Errors in the input raise :class:`Error` (a ``ValueError``) with glider_plan's message; a well-formed problem
+without a path is a result with ``solved`` False and ``reason`` saying why.
+"""
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import shutil
+import tempfile
+import weakref
+from typing import Any, Callable, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _core
+from ._core import Error, set_verbose
+
+__all__ = ["plan", "Field", "Result", "Route", "Error", "planner_names", "analytic_fields", "set_verbose"]
+
+Pair = Tuple[float, float]
+ProgressCallback = Callable[[str, bool], None]
+
+
+def planner_names() -> List[str]:
+    """The planners by their registry names (ZA*TVE, LevelSet, RRTstar, ...), as ``glider_plan --planner``."""
+    return list(_core.planner_names())
+
+
+def analytic_fields() -> Dict[str, Dict[str, float]]:
+    """The analytic flows by name, each with its parameters and their defaults."""
+    return dict(_core.analytic_fields())
+
+
+class Field:
+    """A current field for :func:`plan`: a NetCDF forecast, numpy arrays, or an analytic flow by name.
+
+    Build one with :meth:`netcdf`, :meth:`from_arrays` or :meth:`analytic`.
+    """
+
+    def __init__(self, kind: str, **settings: Any) -> None:
+        self.kind = kind
+        self.settings = settings
+        self._tempdir: Optional[str] = None
+
+    def __repr__(self) -> str:
+        return f"Field({self.kind!r}, {self.settings!r})"
+
+    @staticmethod
+    def netcdf(path: Union[str, os.PathLike, Sequence[str]], *, variables: Optional[Dict[str, str]] = None,
+               depth: float = 0.0, xy_interpolation: str = "bilinear", depth_interpolation: str = "linear",
+               time_interpolation: str = "linear", horizon: str = "refuse", velocity_units: str = "",
+               time_units: str = "", steady_record: Optional[int] = None, zero_velocity_land: bool = True,
+               depth_average: Optional[Pair] = None) -> "Field":
+        """A NetCDF forecast with the command line's options (``glider_plan --currents``).
+
+        path: a file, a list of files read as one forecast, or a comma-separated list of files and glob patterns.
+        variables: names by role (u, v, lon, lat, depth, time, mask, angle), found automatically when not given.
+        The other options are those of the mission format's ``current`` section (examples/MISSION_FORMAT.md).
+        """
+        files = path if isinstance(path, (str, os.PathLike)) else ",".join(os.fspath(p) for p in path)
+        return Field("netcdf", files=os.fspath(files), variables=dict(variables or {}), depth=float(depth),
+                     xy_interpolation=xy_interpolation, depth_interpolation=depth_interpolation,
+                     time_interpolation=time_interpolation, horizon=horizon, velocity_units=velocity_units,
+                     time_units=time_units, steady_record=steady_record, zero_velocity_land=zero_velocity_land,
+                     depth_average=depth_average)
+
+    @staticmethod
+    def from_arrays(u: Any, v: Any, *, lon: Any = None, lat: Any = None, x: Any = None, y: Any = None,
+                    t: Any = None, time_units: str = "", velocity_units: str = "m s-1", **options: Any) -> "Field":
+        """Currents from numpy arrays (what an ``xarray.Dataset`` gives with ``.values``).
+
+        u, v: (time, lat, lon) or, for a steady field, (lat, lon) arrays in m/s; NaN marks land.
+        lon, lat: 1-D axes in degrees (a geographic field), or x, y: 1-D axes in metres (a Cartesian one).
+        t: the times, numbers in ``time_units`` (e.g. "seconds since 2026-03-15 00:00:00") or numpy datetime64.
+        The arrays are written as a CF NetCDF file in a temporary directory (removed with the Field) and read by the
+        forecast reader, so they get the same checks, interpolation and land handling as any forecast.
+        ``options`` are those of :meth:`netcdf`.
+        """
+        geographic = lon is not None or lat is not None
+        if geographic == (x is not None or y is not None):
+            raise TypeError("Field.from_arrays: give the axes either as lon and lat or as x and y")
+        ax, ay = (lon, lat) if geographic else (x, y)
+        if ax is None or ay is None:
+            raise TypeError("Field.from_arrays: both axes are needed (lon and lat, or x and y)")
+        times = None
+        if t is not None:
+            times = np.asarray(t)
+            if np.issubdtype(times.dtype, np.datetime64):
+                times = (times - np.datetime64("1970-01-01T00:00:00")) / np.timedelta64(1, "s")
+                time_units = "seconds since 1970-01-01 00:00:00"
+            times = np.asarray(times, dtype=float)
+        tempdir = tempfile.mkdtemp(prefix="ompl_glider_")
+        path = os.path.join(tempdir, "currents.nc")
+        _core.write_forecast(path, np.asarray(u, dtype=float), np.asarray(v, dtype=float),
+                             np.asarray(ax, dtype=float), np.asarray(ay, dtype=float), times, geographic,
+                             time_units, velocity_units)
+        field = Field.netcdf(path, variables={"u": "u", "v": "v"}, **options)
+        field._tempdir = tempdir
+        weakref.finalize(field, shutil.rmtree, tempdir, True)
+        return field
+
+    @staticmethod
+    def analytic(name: str, **parameters: float) -> "Field":
+        """An analytic flow by its registry name (meandering_jet, uniform, linear_shear, double_gyre, ...) and
+        parameters (missing ones take their defaults; :func:`analytic_fields` lists them). Dimensionless units;
+        the region is the built-in mission's (x in [0, 10], y in [-4, 4]) unless ``region=`` is given."""
+        return Field("analytic", name=name, parameters={k: float(p) for k, p in parameters.items()})
+
+
+class Route(NamedTuple):
+    """The route's waypoints as numpy arrays (start first): planning frame x, y; lon, lat (NaN without a
+    projection); arrival time t (the mission's time unit); the heading held from each waypoint in degrees clockwise
+    from north for a route of held headings (NaN for straight legs and at the last waypoint)."""
+    x: np.ndarray
+    y: np.ndarray
+    lon: np.ndarray
+    lat: np.ndarray
+    t: np.ndarray
+    headings: np.ndarray
+
+
+class Result:
+    """One planned mission: travel time, status, route, summary, GeoJSON, isochrones, execution table.
+
+    Everything comes from the library's one result type; :meth:`write` writes the command line's files.
+    """
+
+    def __init__(self, core: "_core.Result") -> None:
+        self._core = core
+
+    def __repr__(self) -> str:
+        return (f"<ompl_glider.Result planner={self.planner!r} status={self.status!r} "
+                f"travel_time={self.travel_time!r}>")
+
+    @property
+    def travel_time(self) -> float:
+        """Arrival minus departure of the final path (the mission's time unit; inf without a path)."""
+        return self._core.travel_time
+
+    @property
+    def status(self) -> str:
+        """OMPL's planner status ("Exact solution", "Timeout", ...)."""
+        return self._core.status
+
+    @property
+    def solved(self) -> bool:
+        """True when a path to the goal was found."""
+        return self._core.solved
+
+    @property
+    def reason(self) -> str:
+        """Why there is no path (empty when solved)."""
+        return self._core.reason
+
+    @property
+    def planner(self) -> str:
+        """The planner that made the path (its registry name)."""
+        return self._core.planner
+
+    @property
+    def departure(self) -> float:
+        """The departure time (the mission's time unit)."""
+        return self._core.departure
+
+    @property
+    def route(self) -> Route:
+        """The waypoints for the pilot as numpy arrays (:class:`Route`)."""
+        w = self._core.waypoints()
+        return Route(w["x"], w["y"], w["lon"], w["lat"], w["t"], w["heading"])
+
+    @property
+    def waypoints(self) -> Dict[str, Any]:
+        """The waypoints with every column of waypoints.csv (x, y, lon, lat, t, time_iso, leg_time, heading,
+        heading_duration)."""
+        return self._core.waypoints()
+
+    @property
+    def path(self) -> Dict[str, np.ndarray]:
+        """The final path (x, y, t, lon, lat)."""
+        return self._core.path()
+
+    @property
+    def track(self) -> Dict[str, np.ndarray]:
+        """The flown track of a route of held headings (empty arrays for straight legs)."""
+        return self._core.track()
+
+    @property
+    def summary(self) -> Dict[str, Any]:
+        """summary.json as a dict."""
+        return json.loads(self._core.summary_json())
+
+    @property
+    def geojson(self) -> Dict[str, Any]:
+        """path.geojson as a dict (a FeatureCollection)."""
+        return json.loads(self._core.route_geojson())
+
+    @property
+    def isochrones(self) -> Optional[List[Dict[str, Any]]]:
+        """Where the glider can be by a few times after the departure (``plan(isochrones=True)``): a list of
+        {time, time_iso, lines, lonlat}, each line an (n, 2) array; None when not computed."""
+        return self._core.isochrones()
+
+    @property
+    def arrival_time(self) -> Optional[Dict[str, np.ndarray]]:
+        """The level set's first-arrival time field behind the isochrones: {x, y, arrival} with arrival[j, i] the
+        time at (x[i], y[j]) (inf where the front never came); None when isochrones were not computed."""
+        return self._core.arrival_field()
+
+    @property
+    def execution(self) -> Optional[Dict[str, List[Any]]]:
+        """execution.csv (the plan flown in the truth ocean, one row per run and strategy) as columns; None
+        without an execution section."""
+        text = self._core.execution_csv()
+        if not text:
+            return None
+        rows = list(csv.DictReader(io.StringIO(text)))
+        return {key: [_number(row[key]) for row in rows] for key in (rows[0].keys() if rows else [])}
+
+    @property
+    def ensemble(self) -> Optional[Dict[str, Any]]:
+        """How the robust plan fares over an ensemble's members; None for a single current."""
+        return self._core.ensemble()
+
+    @property
+    def speed_sweep(self) -> Dict[str, np.ndarray]:
+        """The speed sweep (``plan(speeds=[...])``): speed, travel_time, path_length."""
+        return self._core.speed_sweep()
+
+    @property
+    def polygons(self) -> List[Dict[str, Any]]:
+        """The forbidden regions in the planning frame: {name, kind, points}."""
+        return self._core.polygons()
+
+    def current_grid(self, n: int = 25, t: Optional[float] = None) -> Dict[str, Any]:
+        """The current on an n x n grid over the planning box at time t (default: the departure), for maps:
+        x, y, u, v, lon, lat as (n, n) arrays."""
+        return self._core.current_grid(n, float("nan") if t is None else float(t))
+
+    def report(self) -> str:
+        """The command line's report (what glider_plan prints)."""
+        return self._core.report()
+
+    def write(self, out_dir: Union[str, os.PathLike]) -> List[str]:
+        """Writes the command line's files (summary.json and the mission's output formats) into out_dir, all or
+        nothing; returns the paths written."""
+        return list(self._core.write(os.fspath(out_dir)))
+
+    def __getattr__(self, name: str) -> Any:  # the rest of the C++ result: path_length, box, start, goal, ...
+        if name.startswith("_"):
+            raise AttributeError(name)
+        return getattr(self._core, name)
+
+
+def _number(text: str) -> Any:
+    try:
+        return float(text) if text != "" else float("nan")
+    except ValueError:
+        return text
+
+
+def _json_default(value: Any) -> Any:
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    raise TypeError(f"mission dict: {type(value).__name__} is not a mission value")
+
+
+def _forbidden(items: Optional[Sequence[Any]]) -> Optional[List[Dict[str, Any]]]:
+    if items is None:
+        return None
+    return [dict(item) if isinstance(item, dict) else {"points": [tuple(p) for p in item]} for item in items]
+
+
+def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field: Optional[Field] = None,
+         start: Optional[Pair] = None, goal: Optional[Pair] = None, speed: Optional[float] = None,
+         departure: Union[None, float, str] = None, region: Optional[Tuple[float, float, float, float]] = None,
+         forbidden: Optional[Sequence[Any]] = None, planner: Optional[str] = None,
+         planner_params: Optional[Dict[str, Any]] = None, grid_size: Optional[float] = None,
+         sectors: Optional[int] = None, time_limit: Optional[float] = None, smoothing: Optional[bool] = None,
+         refinement: Optional[bool] = None, horizon: Optional[float] = None,
+         goal_tolerance: Optional[float] = None, isochrones: bool = False,
+         isochrone_interval: Optional[float] = None, speeds: Optional[Sequence[float]] = None,
+         optimum: bool = False, progress: Optional[ProgressCallback] = None) -> Result:
+    """Plans a mission with the library's one pipeline and returns its :class:`Result`.
+
+    mission: a YAML mission file, a mission as a dict (the keys of the mission format, examples/MISSION_FORMAT.md;
+    relative paths are resolved against the working directory), or None: the built-in Gulf Stream mission (as
+    ``glider_plan`` without arguments), or the mission of ``field``.
+    field: a :class:`Field` instead of a mission: a NetCDF forecast (needs start and goal as lon, lat) or arrays (as
+    ``glider_plan --currents``), or an analytic flow (the built-in mission on that flow).
+    The keywords change the mission as glider_plan's flags do: start, goal ((x, y) or (lon, lat) as the mission
+    gives them), speed, departure (a number in the mission's time unit or an ISO 8601 date), region ((x_min, y_min,
+    x_max, y_max), or lon/lat in that order), forbidden (polygons, each a list of points or a dict with points,
+    name, kind, and windows for a time-windowed zone or max_submerged_time, t_ref, drift for an ice zone),
+    planner (a registry name, :func:`planner_names`) and planner_params (its OMPL parameters by name), grid_size,
+    sectors, time_limit (s), smoothing, refinement, horizon, goal_tolerance; isochrones / isochrone_interval add
+    the reachable-set contours (:attr:`Result.isochrones`); speeds a speed sweep; optimum the optimal-control
+    reference. progress(line, done) receives the progress lines of long runs (the GIL is released while planning).
+
+    Raises :class:`Error` with glider_plan's message for bad input (exit status 2 there); a problem without a
+    path returns a result with ``solved`` False (exit status 1 there).
+    """
+    keywords = dict(start=start, goal=goal, speed=speed, departure=departure, region=region,
+                    forbidden=_forbidden(forbidden), planner=planner, grid_size=grid_size, sectors=sectors,
+                    time_limit=time_limit, smoothing=smoothing, refinement=refinement, horizon=horizon,
+                    goal_tolerance=goal_tolerance, isochrones=isochrones, isochrone_interval=isochrone_interval)
+    if planner_params is not None:
+        keywords["planner_params"] = {k: (str(v).lower() if isinstance(v, bool) else str(v))
+                                      for k, v in planner_params.items()}
+    if field is not None and mission is not None:
+        raise TypeError("plan(): give a mission or a field, not both")
+    if field is not None and field.kind == "netcdf":
+        if start is None or goal is None:
+            raise TypeError("plan(): a NetCDF field needs start and goal (lon, lat, or x, y on a Cartesian grid)")
+        s = field.settings
+        spec = _core.forecast_mission(s["files"], tuple(start), tuple(goal),
+                                      "" if departure is None else str(departure),
+                                      0.3 if speed is None else float(speed), s["depth"], region, s["variables"],
+                                      s["xy_interpolation"], s["depth_interpolation"], s["time_interpolation"],
+                                      s["horizon"], s["velocity_units"], s["time_units"], s["steady_record"],
+                                      s["zero_velocity_land"], s["depth_average"])
+        for used in ("start", "goal", "departure", "speed", "region"):
+            keywords.pop(used)
+    elif field is not None:
+        spec = _core.builtin_mission()
+        keywords["analytic"] = (field.settings["name"], field.settings["parameters"])
+    elif mission is None:
+        spec = _core.builtin_mission()
+    elif isinstance(mission, dict):
+        text = json.dumps(mission, indent=1, default=_json_default)
+        spec = _core.parse_mission(text, "<mission dict>", os.getcwd())
+    else:
+        spec = _core.load_mission(os.fspath(mission))
+    spec = spec.with_keywords(**keywords)
+    core = _core.run(spec, progress, None if speeds is None else [float(v) for v in speeds], optimum)
+    return Result(core)

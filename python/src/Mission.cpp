@@ -1,0 +1,338 @@
+// Missions for the Python module: the MissionSpec of each way in (built-in, mission file, mission text, NetCDF
+// forecast) and the keyword arguments of plan() applied to it as the command line applies its flags.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/stl.h>
+
+#include "Bindings.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/mission/ForecastMission.h"
+#include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
+
+namespace py = pybind11;
+using namespace ompl_glider;
+
+namespace ompl_glider_py
+{
+namespace
+{
+using Pair = std::pair<double, double>;
+using Quad = std::tuple<double, double, double, double>;
+
+/// Where a keyword's value came from, for MissionSpec::place() (a mark starting "plan(" names itself).
+SourceMark keyword(const std::string &name)
+{
+    return SourceMark{"plan(): keyword '" + name + "'", 0};
+}
+
+void checkFinite(const std::string &name, double v, bool positive)
+{
+    if (!std::isfinite(v) || (positive && !(v > 0.0)))
+        throw Error("plan(): keyword '" + name + "' expects a finite number" + (positive ? " > 0" : "") + ", got " +
+                    std::to_string(v));
+}
+
+/// The forecast of a NetCDF path (a file, or a comma-separated list of files and glob patterns) with the
+/// command line's options, as `--currents FILE --start ... --goal ...` builds it (forecastMission()).
+MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std::string &departure, double speed,
+                     double depth, std::optional<Quad> region, const std::map<std::string, std::string> &variables,
+                     const std::string &xy, const std::string &depthScheme, const std::string &timeScheme,
+                     const std::string &horizon, const std::string &velocityUnits, const std::string &timeUnits,
+                     std::optional<std::size_t> steadyRecord, bool zeroVelocityLand,
+                     std::optional<Pair> depthAverage)
+{
+    ForecastInput in;
+    const std::vector<std::string> list = forecastFileList(files);
+    if (list.size() == 1)
+        in.current.file = list.front();
+    else
+        in.current.files = list;
+    in.current.variables = variables;
+    in.current.xyInterpolation = parseInterp2D(xy);
+    in.current.depthInterpolation = parseInterp1D(depthScheme);
+    in.current.timeInterpolation = parseInterp1D(timeScheme);
+    in.current.horizonPolicy = parseBeyondForecast(horizon);
+    in.current.velocityUnits = velocityUnits;
+    in.current.timeUnits = timeUnits;
+    in.current.steadyRecord = steadyRecord;
+    in.current.zeroVelocityLand = zeroVelocityLand;
+    in.current.depthAverage = depthAverage;
+    in.start = {start.first, start.second};
+    in.goal = {goal.first, goal.second};
+    in.departure = departure;
+    checkFinite("speed", speed, true);
+    in.speed = speed;
+    in.depth = depth;
+    if (region)
+    {
+        const auto [a, b, c, d] = *region;
+        in.region = Box{a, c, b, d};  // (lon_min, lat_min, lon_max, lat_max) as --region
+    }
+    return forecastMission(in);
+}
+
+/// A polygon of the `forbidden` keyword: a dict with "points" and optional "name", "kind", "lonlat", "windows"
+/// (a time-windowed zone), "t_ref", "drift", "carried", "max_submerged_time" (an ice zone).
+void addForbidden(MissionSpec &m, const py::dict &item, std::size_t index)
+{
+    const std::string where = "plan(): keyword 'forbidden' [" + std::to_string(index) + "]";
+    PolygonSpec poly;
+    poly.name = item.contains("name") ? item["name"].cast<std::string>() : "region " + std::to_string(index + 1);
+    poly.geographic = item.contains("lonlat") ? item["lonlat"].cast<bool>() : m.start.geographic;
+    if (!item.contains("points"))
+        throw Error(where + ": expected 'points', a list of (x, y) or (lon, lat) pairs");
+    poly.points = item["points"].cast<std::vector<Pair>>();
+    if (poly.points.size() < 3)
+        throw Error(where + ": a polygon needs at least 3 points, got " + std::to_string(poly.points.size()));
+    for (const Pair &p : poly.points)
+        if (!std::isfinite(p.first) || !std::isfinite(p.second))
+            throw Error(where + ": every point must be finite");
+    poly.mark = keyword("forbidden");
+    if (item.contains("windows"))
+    {
+        TimeWindowSpec w{poly, item["windows"].cast<std::vector<Pair>>()};
+        for (const Pair &p : w.windows)
+            if (!(p.second >= p.first))
+                throw Error(where + ": a window's end must not be before its begin");
+        m.forbidden.timeWindows.push_back(std::move(w));
+    }
+    else if (item.contains("max_submerged_time"))
+    {
+        IceSpec ice;
+        ice.polygon = poly;
+        ice.maxSubmergedTime = item["max_submerged_time"].cast<double>();
+        checkFinite("forbidden.max_submerged_time", ice.maxSubmergedTime, false);
+        ice.tRef = item.contains("t_ref") ? item["t_ref"].cast<double>() : 0.0;
+        if (item.contains("drift"))
+            std::tie(ice.vx, ice.vy) = item["drift"].cast<Pair>();
+        ice.carried = item.contains("carried") && item["carried"].cast<bool>();
+        m.forbidden.ice.push_back(std::move(ice));
+    }
+    else
+    {
+        ObstacleSpec o;
+        o.polygon = poly;
+        if (item.contains("kind"))
+            o.kind = item["kind"].cast<std::string>();
+        if (o.kind != "island" && o.kind != "land" && o.kind != "restricted area")
+            throw Error(where + ": kind must be island, land or restricted area, got '" + o.kind + "'");
+        m.forbidden.obstacles.push_back(std::move(o));
+    }
+}
+
+void setPoint(MissionSpec &m, PointSpec &p, const char *name, Pair v)
+{
+    checkFinite(name, v.first, false);
+    checkFinite(name, v.second, false);
+    if (p.geographic)
+        p.lonLat = {v.first, v.second};
+    else
+        p.xy = {v.first, v.second};
+    m.marks[name] = keyword(name);
+}
+
+/// The current of an analytic flow by its registry name, its parameters checked against the registry.
+void setAnalytic(MissionSpec &m, const std::string &type, const std::map<std::string, double> &parameters)
+{
+    const CurrentFieldKind *kind = findCurrentFieldKind(type);
+    std::string names;
+    for (const CurrentFieldKind &k : currentFieldKinds())
+        if (!k.gridded)
+            names += (names.empty() ? "" : ", ") + k.name;
+    if (!kind || kind->gridded)
+        throw Error("analytic field: unknown flow '" + type + "' (expected one of " + names + ")");
+    for (const auto &[name, value] : parameters)
+    {
+        bool known = false;
+        std::string list;
+        for (const auto &[pname, def] : kind->parameters)
+        {
+            known = known || pname == name;
+            list += (list.empty() ? "" : ", ") + pname;
+        }
+        if (!known)
+            throw Error("analytic field '" + type + "': unknown parameter '" + name + "' (expected " + list + ")");
+        checkFinite(name, value, false);
+    }
+    if (m.current.isForecast())
+        throw Error("analytic field: the mission plans on a NetCDF forecast");
+    m.current.type = type;
+    m.current.parameters = parameters;
+    m.current.members.clear();
+    m.marks["current"] = keyword("field");
+}
+
+/// The keyword arguments of plan(), applied as glider_plan applies its flags (applySettings()).
+MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
+{
+    auto get = [&kw](const char *name) -> std::optional<py::object> {
+        if (kw.contains(name) && !kw[name].is_none())
+            return py::reinterpret_borrow<py::object>(kw[name]);
+        return std::nullopt;
+    };
+    static const char *known[] = {"planner", "planner_params", "grid_size", "sectors", "time_limit", "smoothing",
+                                  "refinement", "speed", "departure", "start", "goal", "region", "forbidden",
+                                  "isochrones", "isochrone_interval", "analytic", "horizon", "goal_tolerance"};
+    for (const auto &item : kw)
+    {
+        const std::string name = item.first.cast<std::string>();
+        if (std::find(std::begin(known), std::end(known), name) == std::end(known))
+            throw Error("plan(): unknown keyword '" + name + "'");
+    }
+    if (auto v = get("analytic"))
+    {
+        const auto [type, params] = v->cast<std::pair<std::string, std::map<std::string, double>>>();
+        setAnalytic(m, type, params);
+    }
+    if (auto v = get("planner"))
+    {
+        m.planner.name = plannerEntry(v->cast<std::string>()).name;
+        m.marks["planner.name"] = keyword("planner");
+    }
+    if (auto v = get("planner_params"))
+        for (const auto &[name, value] : v->cast<std::map<std::string, std::string>>())
+        {
+            m.planner.parameters[name] = value;
+            m.planner.parameterMarks[name] = keyword("planner_params");
+        }
+    if (auto v = get("grid_size"))
+    {
+        m.planner.gridSize = v->cast<double>();
+        checkFinite("grid_size", m.planner.gridSize, true);
+        m.marks["planner.grid_size"] = keyword("grid_size");
+    }
+    if (auto v = get("sectors"))
+    {
+        m.planner.sectors = v->cast<int>();
+        if (m.planner.sectors < 1 || m.planner.sectors > 5)
+            throw Error("plan(): keyword 'sectors' expects 1..5, got " + std::to_string(m.planner.sectors));
+        m.marks["planner.sectors"] = keyword("sectors");
+    }
+    if (auto v = get("time_limit"))
+    {
+        m.planner.timeLimit = v->cast<double>();
+        checkFinite("time_limit", m.planner.timeLimit, true);
+        m.marks["planner.time_limit"] = keyword("time_limit");
+    }
+    if (auto v = get("horizon"))
+    {
+        m.planner.horizon = v->cast<double>();
+        checkFinite("horizon", m.planner.horizon, true);
+        m.marks["planner.horizon"] = keyword("horizon");
+    }
+    if (auto v = get("goal_tolerance"))
+    {
+        m.planner.goalTolerance = v->cast<double>();
+        checkFinite("goal_tolerance", m.planner.goalTolerance, true);
+        m.marks["planner.goal_tolerance"] = keyword("goal_tolerance");
+    }
+    if (auto v = get("smoothing"))
+        m.planner.smoothing = v->cast<bool>();
+    if (auto v = get("refinement"))
+        m.planner.refinement = v->cast<bool>();
+    if (auto v = get("speed"))
+    {
+        const double s = v->cast<double>();
+        checkFinite("speed", s, true);
+        m.vehicle.speed = m.travel.speed = s;
+        m.marks["vehicle.speed"] = keyword("speed");
+    }
+    if (auto v = get("departure"))
+    {
+        const std::string text = py::str(*v).cast<std::string>();
+        try
+        {
+            m.departure.time = m.timeOf(text);
+        }
+        catch (const Error &e)
+        {
+            throw Error(std::string("plan(): keyword 'departure': ") + e.what());
+        }
+        m.departure.window = false;
+        m.marks["departure.time"] = keyword("departure");
+    }
+    if (auto v = get("start"))
+        setPoint(m, m.start, "start", v->cast<Pair>());
+    if (auto v = get("goal"))
+        setPoint(m, m.goal, "goal", v->cast<Pair>());
+    if (auto v = get("region"))
+    {
+        const auto [a, b, c, d] = v->cast<Quad>();
+        m.region.set = true;
+        m.region.geographic = m.start.geographic;
+        if (m.region.geographic)
+            m.region.lonLat = geoBox(a, b, c, d);
+        else
+        {
+            if (!(c > a) || !(d > b))
+                throw Error("plan(): keyword 'region' expects (x_min, y_min, x_max, y_max) with x_max > x_min and "
+                            "y_max > y_min");
+            m.region.xy = Box{a, c, b, d};
+        }
+        m.marks["region"] = keyword("region");
+    }
+    if (auto v = get("forbidden"))
+    {
+        std::size_t k = 0;
+        for (const py::handle item : v->cast<py::list>())
+            addForbidden(m, item.cast<py::dict>(), k++);
+    }
+    if (auto v = get("isochrone_interval"))
+    {
+        m.outputs.isochroneInterval = v->cast<double>();
+        checkFinite("isochrone_interval", m.outputs.isochroneInterval, true);
+    }
+    const bool isochrones = get("isochrones") ? get("isochrones")->cast<bool>() : false;
+    if ((isochrones || get("isochrone_interval")) && !m.outputs.wants(OutputFormatId::Isochrones))
+        m.outputs.files.push_back(OutputFormatId::Isochrones);
+    return m;
+}
+}  // namespace
+
+void bindMission(py::module_ &m)
+{
+    py::class_<MissionSpec>(m, "Mission", "A mission (MissionSpec): what plan() plans.")
+        .def_readonly("name", &MissionSpec::name)
+        .def_property_readonly("planner", [](const MissionSpec &s) { return s.planner.name; })
+        .def_property_readonly("speed", [](const MissionSpec &s) { return s.vehicle.speed; })
+        .def_property_readonly("is_forecast", [](const MissionSpec &s) { return s.current.isForecast(); })
+        .def_property_readonly("geographic", [](const MissionSpec &s) { return s.start.geographic; })
+        .def("with_keywords", &withKeywords, "The mission with plan()'s keyword arguments applied.");
+    m.def("builtin_mission", &defaultGulfStreamMission, "The built-in Gulf Stream mission (as glider_plan).");
+    m.def("load_mission", &loadMission, py::arg("path"), "A YAML mission file (examples/MISSION_FORMAT.md).");
+    m.def("parse_mission", &parseMission, py::arg("text"), py::arg("file") = "<mission>",
+          py::arg("directory") = ".", "A mission from YAML (or JSON) text.");
+    m.def("forecast_mission", &forecast, py::arg("files"), py::arg("start"), py::arg("goal"),
+          py::arg("departure") = "", py::arg("speed") = 0.3, py::arg("depth") = 0.0, py::arg("region") = py::none(),
+          py::arg("variables") = std::map<std::string, std::string>{}, py::arg("xy_interpolation") = "bilinear",
+          py::arg("depth_interpolation") = "linear", py::arg("time_interpolation") = "linear",
+          py::arg("horizon") = "refuse", py::arg("velocity_units") = "", py::arg("time_units") = "",
+          py::arg("steady_record") = py::none(), py::arg("zero_velocity_land") = true,
+          py::arg("depth_average") = py::none(),
+          "The mission of a NetCDF forecast, as glider_plan --currents builds it.");
+    m.def("planner_names", []() {
+        std::vector<std::string> names;
+        for (const PlannerEntry &e : plannerRegistry())
+            names.push_back(e.name);
+        return names;
+    });
+    m.def("analytic_fields", []() {
+        std::map<std::string, std::map<std::string, double>> out;
+        for (const CurrentFieldKind &k : currentFieldKinds())
+            if (!k.gridded)
+                out[k.name] = std::map<std::string, double>(k.parameters.begin(), k.parameters.end());
+        return out;
+    });
+}
+}  // namespace ompl_glider_py

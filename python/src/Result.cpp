@@ -1,0 +1,318 @@
+// The Python module's run() and Result: runMission() with the GIL released, its MissionResult read back as numpy
+// arrays and as the output layer's texts (summary.json, GeoJSON, execution.csv), and written by the output layer.
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "Bindings.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/output/ExecutionFiles.h"
+#include "ompl_glider/output/OutputWriter.h"
+#include "ompl_glider/output/Report.h"
+#include "ompl_glider/output/RouteFiles.h"
+#include "ompl_glider/output/SummaryJson.h"
+
+namespace py = pybind11;
+using namespace ompl_glider;
+
+namespace ompl_glider_py
+{
+namespace
+{
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+py::array_t<double> array(const std::vector<double> &v)
+{
+    return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+}
+
+/// x, y, t of timed points (and lon, lat where the problem is geographic, else NaN).
+py::dict points(const PyResult &r, const std::vector<TimedPoint> &pts)
+{
+    std::vector<double> x, y, t, lon, lat;
+    const bool geo = r.problem->isGeographic();
+    for (const TimedPoint &p : pts)
+    {
+        x.push_back(p.x);
+        y.push_back(p.y);
+        t.push_back(p.t);
+        const LonLat g = geo ? r.problem->toGeographic({p.x, p.y}) : LonLat{kNaN, kNaN};
+        lon.push_back(g.lon);
+        lat.push_back(g.lat);
+    }
+    py::dict d;
+    d["x"] = array(x);
+    d["y"] = array(y);
+    d["t"] = array(t);
+    d["lon"] = array(lon);
+    d["lat"] = array(lat);
+    return d;
+}
+
+py::dict waypoints(const PyResult &r)
+{
+    std::vector<double> x, y, lon, lat, t, heading, duration, leg;
+    std::vector<std::string> iso;
+    for (const MissionWaypoint &w : r.result.waypoints)
+    {
+        x.push_back(w.position.x);
+        y.push_back(w.position.y);
+        lon.push_back(w.geographic ? w.lonLat.lon : kNaN);
+        lat.push_back(w.geographic ? w.lonLat.lat : kNaN);
+        t.push_back(w.time);
+        heading.push_back(w.heading);
+        duration.push_back(w.headingDuration);
+        leg.push_back(w.legTime);
+        iso.push_back(w.iso);
+    }
+    py::dict d;
+    d["x"] = array(x);
+    d["y"] = array(y);
+    d["lon"] = array(lon);
+    d["lat"] = array(lat);
+    d["t"] = array(t);
+    d["heading"] = array(heading);
+    d["heading_duration"] = array(duration);
+    d["leg_time"] = array(leg);
+    d["time_iso"] = iso;
+    return d;
+}
+
+py::object isochrones(const PyResult &r)
+{
+    if (!r.result.isochrones)
+        return py::none();
+    py::list out;
+    for (const Isochrone &c : r.result.isochrones->contours)
+    {
+        py::list lines, lonlat;
+        for (const auto &line : c.lines)
+        {
+            py::array_t<double> a({static_cast<py::ssize_t>(line.size()), py::ssize_t{2}});
+            auto v = a.mutable_unchecked<2>();
+            for (std::size_t k = 0; k < line.size(); ++k)
+                v(k, 0) = line[k].x, v(k, 1) = line[k].y;
+            lines.append(a);
+        }
+        for (const auto &line : c.lonLat)
+        {
+            py::array_t<double> a({static_cast<py::ssize_t>(line.size()), py::ssize_t{2}});
+            auto v = a.mutable_unchecked<2>();
+            for (std::size_t k = 0; k < line.size(); ++k)
+                v(k, 0) = line[k].lon, v(k, 1) = line[k].lat;
+            lonlat.append(a);
+        }
+        py::dict d;
+        d["time"] = c.time;
+        d["time_iso"] = c.iso;
+        d["lines"] = lines;
+        d["lonlat"] = lonlat;
+        out.append(d);
+    }
+    return std::move(out);
+}
+
+py::object arrivalField(const PyResult &r)
+{
+    if (!r.result.isochrones || r.result.isochrones->arrival.empty())
+        return py::none();
+    const IsochroneSet &s = *r.result.isochrones;
+    std::vector<double> x(s.nx), y(s.ny);
+    for (int i = 0; i < s.nx; ++i)
+        x[i] = s.x0 + i * s.h;
+    for (int j = 0; j < s.ny; ++j)
+        y[j] = s.y0 + j * s.h;
+    py::array_t<double> t({static_cast<py::ssize_t>(s.ny), static_cast<py::ssize_t>(s.nx)}, s.arrival.data());
+    py::dict d;
+    d["x"] = array(x);
+    d["y"] = array(y);
+    d["arrival"] = t;
+    return std::move(d);
+}
+
+/// The current on an n x n grid over the planning box at time t (NaN: the departure), for maps.
+py::dict currentGrid(const PyResult &r, int n, double t)
+{
+    if (n < 2 || n > 2000)
+        throw Error("current_grid(): n must be in 2..2000, got " + std::to_string(n));
+    if (std::isnan(t))
+        t = r.result.plan.departure;
+    const Region &box = r.problem->getBox();
+    const double z = r.result.spec.vehicle.depth;
+    py::array_t<double> x({n, n}), y({n, n}), u({n, n}), v({n, n}), lon({n, n}), lat({n, n});
+    auto X = x.mutable_unchecked<2>(), Y = y.mutable_unchecked<2>(), U = u.mutable_unchecked<2>(),
+         V = v.mutable_unchecked<2>(), Lo = lon.mutable_unchecked<2>(), La = lat.mutable_unchecked<2>();
+    const bool geo = r.problem->isGeographic();
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+        {
+            const double px = box.xMin + (box.xMax - box.xMin) * i / (n - 1);
+            const double py_ = box.yMin + (box.yMax - box.yMin) * j / (n - 1);
+            const Velocity c = r.problem->getField()->velocity(px, py_, z, t);
+            X(j, i) = px, Y(j, i) = py_, U(j, i) = c.u, V(j, i) = c.v;
+            const LonLat g = geo ? r.problem->toGeographic({px, py_}) : LonLat{kNaN, kNaN};
+            Lo(j, i) = g.lon, La(j, i) = g.lat;
+        }
+    py::dict d;
+    d["x"] = x, d["y"] = y, d["u"] = u, d["v"] = v, d["lon"] = lon, d["lat"] = lat, d["t"] = t;
+    return d;
+}
+
+py::list polygons(const PyResult &r)
+{
+    py::list out;
+    for (const MissionPolygon &p : r.problem->getPolygons())
+    {
+        py::array_t<double> a({static_cast<py::ssize_t>(p.points.size()), py::ssize_t{2}});
+        auto v = a.mutable_unchecked<2>();
+        for (std::size_t k = 0; k < p.points.size(); ++k)
+            v(k, 0) = p.points[k].x, v(k, 1) = p.points[k].y;
+        py::dict d;
+        d["name"] = p.name;
+        d["kind"] = p.kind;
+        d["points"] = a;
+        out.append(d);
+    }
+    return out;
+}
+
+/// runMission() on @p spec, the GIL released; progress lines go to @p progress (called with the GIL held; an
+/// exception it raises is raised after the run). Bad input is raised as Error with glider_plan's message.
+std::shared_ptr<PyResult> run(const MissionSpec &spec, const py::object &progress,
+                              std::optional<std::vector<double>> speeds, bool optimum)
+{
+    auto out = std::make_shared<PyResult>();
+    PyObject *callback = progress.is_none() ? nullptr : progress.ptr();  // kept alive by the caller's reference
+    std::optional<py::error_already_set> raised;
+    std::mutex guard;
+    RunOptions options;
+    options.speeds = std::move(speeds);
+    options.optimum = optimum;
+    if (callback)
+        options.progress = [callback, &raised, &guard](const std::string &line, bool done) {
+            const py::gil_scoped_acquire gil;
+            const std::lock_guard<std::mutex> lock(guard);
+            if (raised)
+                return;
+            try
+            {
+                const py::handle function(callback);
+                function(line, done);
+            }
+            catch (py::error_already_set &e)
+            {
+                raised = std::move(e);
+            }
+        };
+    {
+        const py::gil_scoped_release release;
+        out->problem = std::make_shared<const MissionProblem>(spec);
+        out->result = runMission(*out->problem, options);
+        options.progress = nullptr;
+    }
+    if (raised)
+        throw *raised;
+    const PlannedPath &p = out->result.plan;
+    if (!p.solved && !p.badInput.empty())
+        throw Error(out->problem->getSpec().place(p.badInput) + ": " + p.reason);
+    return out;
+}
+
+std::vector<std::string> write(const PyResult &r, const std::string &directory)
+{
+    const py::gil_scoped_release release;
+    checkOutputDirectory(directory);
+    return writeOutputFiles(directory, outputFiles(r.result, *r.problem));
+}
+}  // namespace
+
+void bindResult(py::module_ &m)
+{
+    using R = PyResult;
+    py::class_<R, std::shared_ptr<R>>(m, "Result", "The result of one run (MissionResult and its problem).")
+        .def_property_readonly("solved", [](const R &r) { return r.result.plan.solved; })
+        .def_property_readonly("status", [](const R &r) { return r.result.plan.status; })
+        .def_property_readonly("reason", [](const R &r) { return r.result.plan.reason; })
+        .def_property_readonly("planner", [](const R &r) { return r.result.plan.planner; })
+        .def_property_readonly("switched_from", [](const R &r) { return r.result.plan.switchedFrom; })
+        .def_property_readonly("travel_time", [](const R &r) { return r.result.plan.travelTime; })
+        .def_property_readonly("departure", [](const R &r) { return r.result.plan.departure; })
+        .def_property_readonly("speed", [](const R &r) { return r.result.plan.speed; })
+        .def_property_readonly("path_length", [](const R &r) { return r.result.plan.pathLength; })
+        .def_property_readonly("hold_time", [](const R &r) { return r.result.plan.holdTime; })
+        .def_property_readonly("straight_line_time", [](const R &r) { return r.result.plan.straightLineTime; })
+        .def_property_readonly("planning_seconds", [](const R &r) { return r.result.plan.planningSeconds; })
+        .def_property_readonly("wall_seconds", [](const R &r) { return r.result.wallSeconds; })
+        .def_property_readonly("cost_function_calls",
+                               [](const R &r) { return r.result.plan.totalCostFunctionCalls(); })
+        .def_property_readonly("current_model_calls", [](const R &r) { return r.result.plan.currentModelCalls; })
+        .def_property_readonly("geographic", [](const R &r) { return r.problem->isGeographic(); })
+        .def_property_readonly("mission", [](const R &r) { return r.problem->getSpec(); })
+        .def_property_readonly("box",
+                               [](const R &r) {
+                                   const Region &b = r.problem->getBox();
+                                   return py::make_tuple(b.xMin, b.yMin, b.xMax, b.yMax);
+                               })
+        .def_property_readonly("start", [](const R &r) { return py::make_tuple(r.problem->getStart().x,
+                                                                               r.problem->getStart().y); })
+        .def_property_readonly("goal", [](const R &r) { return py::make_tuple(r.problem->getGoal().x,
+                                                                              r.problem->getGoal().y); })
+        .def("waypoints", &waypoints)
+        .def("path", [](const R &r) { return points(r, r.result.plan.path); })
+        .def("track", [](const R &r) { return points(r, r.result.plan.track); })
+        .def("polygons", &polygons)
+        .def("isochrones", &isochrones)
+        .def("arrival_field", &arrivalField)
+        .def("current_grid", &currentGrid, py::arg("n") = 25, py::arg("t") = kNaN)
+        .def("summary_json", [](const R &r) { return summaryJson(r.result, *r.problem, {}); })
+        .def("route_geojson", [](const R &r) { return routeGeoJson(r.result, r.problem.get()); })
+        .def("isochrones_geojson", [](const R &r) { return isochronesGeoJson(r.result); })
+        .def("report",
+             [](const R &r) {
+                 std::ostringstream s;
+                 printReport(s, r.result);
+                 return s.str();
+             })
+        .def("execution_csv",
+             [](const R &r) {
+                 return r.result.execution ? executionCsv(*r.result.execution, *r.problem) : std::string();
+             })
+        .def("speed_sweep",
+             [](const R &r) {
+                 std::vector<double> s, t, l;
+                 for (const SpeedSweepRow &row : r.result.speedSweep)
+                     s.push_back(row.speed), t.push_back(row.travelTime), l.push_back(row.pathLength);
+                 py::dict d;
+                 d["speed"] = array(s), d["travel_time"] = array(t), d["path_length"] = array(l);
+                 return d;
+             })
+        .def("ensemble",
+             [](const R &r) -> py::object {
+                 if (!r.result.plan.ensemble)
+                     return py::none();
+                 const EnsemblePlan &e = *r.result.plan.ensemble;
+                 py::dict d;
+                 d["chosen"] = e.chosen;
+                 d["objective_value"] = e.objectiveValue;
+                 d["member_travel_times"] = array(e.memberTravelTimes);
+                 py::list c;
+                 for (const EnsemblePlan::Candidate &k : e.candidates)
+                     c.append(py::dict(py::arg("name") = k.name, py::arg("solved") = k.solved,
+                                       py::arg("objective_value") = k.objectiveValue,
+                                       py::arg("member_travel_times") = array(k.memberTravelTimes)));
+                 d["candidates"] = c;
+                 return std::move(d);
+             })
+        .def("write", &write, py::arg("directory"));
+    m.def("run", &run, py::arg("mission"), py::arg("progress") = py::none(), py::arg("speeds") = py::none(),
+          py::arg("optimum") = false, "runMission() on a mission (the GIL released).");
+}
+}  // namespace ompl_glider_py

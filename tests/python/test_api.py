@@ -1,0 +1,180 @@
+"""The Python API: ways in (file, dict, keywords, fields), the result's arrays and dicts, errors, progress."""
+import json
+import math
+import os
+import threading
+
+import numpy as np
+import pytest
+
+import ompl_glider
+from conftest import EXAMPLES
+
+SHEAR = {
+    "name": "shear",
+    "current": {"type": "linear_shear", "parameters": {"a": 0.2}},
+    "region": {"x_min": 0, "x_max": 10, "y_min": -2, "y_max": 2},
+    "start": {"x": 1, "y": 0},
+    "goal": {"x": 8, "y": 1},
+    "vehicle": {"speed": 0.5},
+    "planner": {"name": "zastartve", "grid_size": 0.25},
+}
+
+
+def test_dict_and_file_give_the_same_plan(tmp_path):
+    path = tmp_path / "shear.yaml"
+    path.write_text(json.dumps(SHEAR))
+    a = ompl_glider.plan(SHEAR)
+    b = ompl_glider.plan(str(path))
+    assert a.solved and a.travel_time == b.travel_time
+    assert a.summary["mission"] == "shear"
+
+
+def test_result_arrays_and_dicts():
+    r = ompl_glider.plan()
+    route = r.route
+    n = len(route.x)
+    assert n >= 2 and all(len(a) == n for a in route)
+    assert (route.x[0], route.y[0]) == (1.0, -3.0)
+    assert math.hypot(route.x[-1] - 8, route.y[-1] - 3) < 1e-2
+    assert np.all(np.diff(route.t) > 0)
+    assert route.t[-1] - route.t[0] == pytest.approx(r.travel_time, rel=1e-12)
+    assert np.all(np.isnan(route.lon))  # the built-in mission has no projection
+    assert r.summary["travel_time"] == r.travel_time
+    gj = r.geojson
+    assert gj["type"] == "FeatureCollection"
+    assert r.isochrones is None and r.arrival_time is None and r.execution is None
+    assert "travel time" in r.report().lower()
+
+
+def test_keywords_change_the_mission():
+    slow = ompl_glider.plan(SHEAR)
+    fast = ompl_glider.plan(SHEAR, speed=1.0)
+    assert fast.travel_time < slow.travel_time
+    assert ompl_glider.plan(SHEAR, planner="TVE").planner == "TVE"
+
+
+def test_analytic_field_uniform_current_along_the_trip():
+    r = ompl_glider.plan(field=ompl_glider.Field.analytic("uniform", u=0.2, v=0.0), start=(1, 0), goal=(9, 0),
+                         speed=0.5)
+    assert r.solved
+    assert r.travel_time == pytest.approx(8 / 0.7, rel=1e-3)
+
+
+def test_arrays_field_is_read_as_a_forecast():
+    lon = np.linspace(-60.0, -59.0, 21)
+    lat = np.linspace(40.0, 40.6, 13)
+    u = np.full((lat.size, lon.size), 0.1)  # steady, 0.1 m/s east
+    v = np.zeros_like(u)
+    field = ompl_glider.Field.from_arrays(u, v, lon=lon, lat=lat)
+    r = ompl_glider.plan(field=field, start=(-59.8, 40.3), goal=(-59.2, 40.3), speed=0.4)
+    assert r.solved and r.geographic
+    distance = r.path_length  # metres in the planning frame
+    assert r.travel_time == pytest.approx(distance / 0.5, rel=2e-3)
+    # the same arrays with a time axis of datetime64 give the same plan
+    times = np.array(["2026-03-15T00", "2026-03-18T00"], dtype="datetime64[s]")
+    field2 = ompl_glider.Field.from_arrays(np.stack([u, u]), np.stack([v, v]), lon=lon, lat=lat, t=times)
+    r2 = ompl_glider.plan(field=field2, start=(-59.8, 40.3), goal=(-59.2, 40.3), speed=0.4)
+    assert r2.travel_time == pytest.approx(r.travel_time, rel=1e-9)
+    assert r2.waypoints["time_iso"][0].startswith("2026-03-15")
+
+
+def test_arrays_field_rejects_mismatched_axes():
+    with pytest.raises(ompl_glider.Error, match="'lon' must be 1-D with 4 values"):
+        ompl_glider.Field.from_arrays(np.zeros((3, 4)), np.zeros((3, 4)), lon=np.arange(5.0), lat=np.arange(3.0))
+
+
+def test_forbidden_keyword_makes_a_detour():
+    wall = [(4.0, -1.0), (4.4, -1.0), (4.4, 1.8), (4.0, 1.8)]
+    free = ompl_glider.plan(SHEAR)
+    blocked = ompl_glider.plan(SHEAR, forbidden=[{"name": "wall", "points": wall}])
+    assert blocked.solved and blocked.path_length > free.path_length
+    assert [p["name"] for p in blocked.polygons] == ["wall"]
+    path = blocked.path
+    inside = (path["x"] > 4.0) & (path["x"] < 4.4) & (path["y"] > -1.0) & (path["y"] < 1.8)
+    assert not inside.any()
+
+
+def test_no_path_is_a_result_not_an_error():
+    r = ompl_glider.plan(SHEAR, horizon=3.0)  # the goal is 7 units away at speed 0.5
+    assert not r.solved and r.reason
+    assert math.isinf(r.travel_time)
+
+
+def test_errors_are_python_exceptions_naming_the_input():
+    with pytest.raises(ompl_glider.Error, match="unknown planner 'nope'"):
+        ompl_glider.plan(planner="nope")
+    with pytest.raises(ompl_glider.Error, match="<mission dict>.*bogus"):
+        ompl_glider.plan(dict(SHEAR, bogus=1))
+    with pytest.raises(ompl_glider.Error, match="keyword 'speed'"):
+        ompl_glider.plan(speed=-1.0)
+    with pytest.raises(ompl_glider.Error, match="planner_params"):
+        ompl_glider.plan(SHEAR, planner_params={"no_such_parameter": 1})
+    with pytest.raises(ompl_glider.Error, match="unknown flow 'nope'"):
+        ompl_glider.plan(field=ompl_glider.Field.analytic("nope"))
+    assert issubclass(ompl_glider.Error, ValueError)
+
+
+def test_isochrones_and_arrival_time_field():
+    r = ompl_glider.plan(SHEAR, isochrones=True)
+    contours = r.isochrones
+    assert len(contours) == 8
+    assert contours[-1]["time"] == pytest.approx(r.departure + r.travel_time)
+    assert all(line.shape[1] == 2 for c in contours for line in c["lines"])
+    field = r.arrival_time
+    t = field["arrival"]
+    assert t.shape == (field["y"].size, field["x"].size)
+    i = np.argmin(np.abs(field["x"] - 1.0))
+    j = np.argmin(np.abs(field["y"] - 0.0))
+    assert t[j, i] < 0.1  # the start is reached at once
+    # the goal is first reached about when the plan arrives (level-set cell of 0.1)
+    i, j = np.argmin(np.abs(field["x"] - 8.0)), np.argmin(np.abs(field["y"] - 1.0))
+    assert t[j, i] == pytest.approx(r.travel_time, rel=0.05)
+
+
+def test_progress_callback_and_other_threads_run_while_planning():
+    mission = dict(SHEAR, departure={"window": {"begin": 0, "end": 4, "spacing": 1}})
+    lines = []
+    ticks = []
+    stop = threading.Event()
+
+    def tick():
+        while not stop.is_set():
+            ticks.append(1)
+            stop.wait(0.001)
+
+    t = threading.Thread(target=tick)
+    t.start()
+    try:
+        r = ompl_glider.plan(mission, progress=lambda line, done: lines.append((line, done)))
+    finally:
+        stop.set()
+        t.join()
+    assert r.solved
+    assert lines and lines[-1][1] is True
+    assert len(ticks) > 1  # the thread ran during the plan (the GIL is released)
+
+
+def test_progress_callback_exception_is_raised_after_the_run():
+    mission = dict(SHEAR, departure={"window": {"begin": 0, "end": 2, "spacing": 1}})
+
+    def fail(line, done):
+        raise RuntimeError("stop here")
+
+    with pytest.raises(RuntimeError, match="stop here"):
+        ompl_glider.plan(mission, progress=fail)
+
+
+def test_execution_table():
+    mission = dict(SHEAR, execution={"truth": {"type": "linear_shear", "parameters": {"a": 0.3}},
+                                     "surfacing_interval": 2.0, "strategies": ["current_sensitive", "greedy"]})
+    r = ompl_glider.plan(mission)
+    table = r.execution
+    assert table is not None
+    assert table["strategy"] == ["current_sensitive", "greedy"]
+
+
+def test_planner_names_and_fields():
+    names = ompl_glider.planner_names()
+    assert "ZA*TVE" in names and "LevelSet" in names and "RRTstar" in names
+    assert "meandering_jet" in ompl_glider.analytic_fields()

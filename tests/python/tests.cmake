@@ -1,0 +1,18 @@
+# The Python module's tests (pytest, Debian's python3-pytest), one ctest per file; examples/python run headless.
+if(TARGET ompl_glider_python)
+  set(OMPL_GLIDER_PY_ENV "PYTHONPATH=${PROJECT_BINARY_DIR}/python" "MPLBACKEND=Agg"
+      "OMPL_GLIDER_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+  if(TARGET glider_plan)
+    list(APPEND OMPL_GLIDER_PY_ENV "GLIDER_PLAN=$<TARGET_FILE:glider_plan>")
+  endif()
+  foreach(file api cli_equivalence)
+    add_test(NAME python.${file}
+      COMMAND ${Python3_EXECUTABLE} -m pytest -q -p no:cacheprovider ${CMAKE_CURRENT_LIST_DIR}/test_${file}.py)
+    set_tests_properties(python.${file} PROPERTIES ENVIRONMENT "${OMPL_GLIDER_PY_ENV}" TIMEOUT 300 LABELS python)
+  endforeach()
+  add_test(NAME python.example_forecast_map
+    COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/examples/python/plan_forecast.py
+            ${CMAKE_CURRENT_BINARY_DIR}/example_forecast_map)
+  set_tests_properties(python.example_forecast_map PROPERTIES ENVIRONMENT "${OMPL_GLIDER_PY_ENV}" TIMEOUT 300
+    LABELS python)
+endif()
