@@ -18,6 +18,7 @@ PACKAGES=(
   libcairo2-dev
   libcli11-dev nlohmann-json3-dev
   libgdal-dev
+  libopenmpi-dev openmpi-bin
   python3 python3-matplotlib
   clang-14 libfuzzer-14-dev
 )
