@@ -20,7 +20,7 @@
 // campaign records the smoothed and refined ZA*TVE path (its CFC includes that post-processing; the search's own
 // CFC is recorded as "search CFC").
 //
-// Usage: glider_campaign [--quick] [--runs N] [--time SECONDS] [--grid G] [--seed S] [--problems a,b]
+// Usage: glider_campaign [--quick] [--no-reference] [--runs N] [--time SECONDS] [--grid G] [--seed S] [--problems a,b]
 //                        [--planners NAME,...] [--control SST,RRT,KPIECE1|none] [--own-end-time S] OUTDIR
 // --problems takes problem names and the set names classic (the default: open_water, islands, ice, closure), strong
 // (jet_v020, jet_v015, gyre) and all; --planners restricts the registry planners (names and aliases of the
@@ -95,6 +95,7 @@ const std::vector<std::string> kCampaignPlanners = {"TVE",     "A*TVE",   "ZTVE"
 struct Options
 {
     bool quick{false};
+    bool reference{true};  ///< --no-reference: no reference.csv (its level sets take tens of seconds)
     unsigned runs{0};
     double time{0.0};
     double grid{0.4};
@@ -109,7 +110,7 @@ struct Options
 [[noreturn]] void usage(const std::string &why)
 {
     std::cerr << "glider_campaign: " << why << "\n"
-              << "usage: glider_campaign [--quick] [--runs N] [--time SECONDS] [--grid G] [--own-end-time S] [--seed S] "
+              << "usage: glider_campaign [--quick] [--no-reference] [--runs N] [--time SECONDS] [--grid G] [--own-end-time S] [--seed S] "
                  "[--problems classic|strong|all|open_water,islands,ice,closure,jet_v020,jet_v015,gyre] "
                  "[--planners TVE,RRTstar,...] [--control SST,RRT,KPIECE1|none] OUTDIR\n";
     std::exit(2);
@@ -156,6 +157,8 @@ Options parse(int argc, char **argv)
         {
             if (a == "--quick")
                 o.quick = true;
+            else if (a == "--no-reference")
+                o.reference = false;
             else if (a == "--runs")
                 o.runs = static_cast<unsigned>(std::stoul(next()));
             else if (a == "--time")
@@ -422,6 +425,7 @@ std::unique_ptr<BuiltBenchmark> buildRegistryBenchmark(const Options &opt, const
 /// The campaign in one process, as it has always run: the references, then each benchmark in turn.
 void runHere(const Options &opt, const std::vector<CampaignProblem> &problems)
 {
+    if (opt.reference)
     {
         std::ofstream ref(opt.outdir + "/reference.csv");
         ref << kReferenceHeader;
@@ -446,7 +450,8 @@ void runHere(const Options &opt, const std::vector<CampaignProblem> &problems)
 /// then every (benchmark, planner, run); rank 0 writes reference.csv and the logs once everything succeeded.
 void runSpread(TaskSpreader &spread, const Options &opt, const std::vector<CampaignProblem> &problems)
 {
-    const std::vector<std::string> refs = spread.run("reference problem", problems.size(), [&](std::size_t i) {
+    const std::vector<std::string> refs = spread.run("reference problem", opt.reference ? problems.size() : 0,
+                                                     [&](std::size_t i) {
         const auto lines = referenceLines(problems[i]);
         ByteWriter w;
         w.put(lines.first);
@@ -472,7 +477,7 @@ void runSpread(TaskSpreader &spread, const Options &opt, const std::vector<Campa
             std::cout << console << std::endl;
     }
     campaign_spread::spreadBenchmarks(spread, makers);
-    if (spread.rank() == 0)
+    if (spread.rank() == 0 && opt.reference)
     {
         const std::string part = opt.outdir + "/reference.csv.part";
         std::ofstream(part) << csv;

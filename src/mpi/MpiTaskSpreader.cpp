@@ -52,10 +52,14 @@ void broadcast(std::string &bytes, double &moved)
 }
 
 /// Runs one task, catching what it throws: (kind, result or reason); kind 0 ok, 1 ompl_glider::Error, 2 another.
-std::pair<int, std::string> attempt(const TaskSpreader::Task &task, std::size_t i)
+/// OMPL_GLIDER_FAIL_TASK="what:i" makes task i of @p what fail as bad input would (the fault path's tests).
+std::pair<int, std::string> attempt(const TaskSpreader::Task &task, std::size_t i, const std::string &what)
 {
     try
     {
+        const char *fail = std::getenv("OMPL_GLIDER_FAIL_TASK");
+        if (fail && std::string(fail) == what + ":" + std::to_string(i))
+            throw Error("failure injected by OMPL_GLIDER_FAIL_TASK=" + std::string(fail));
         return {0, task(i)};
     }
     catch (const Error &e)
@@ -103,6 +107,8 @@ MpiTaskSpreader::MpiTaskSpreader(int &argc, char **&argv)
 
 MpiTaskSpreader::~MpiTaskSpreader()
 {
+    if (std::getenv("OMPL_GLIDER_MPI_STATS"))
+        std::fprintf(stderr, "rank %d: %zu tasks, %.0f bytes sent and received\n", rank_, tasks_, bytes_);
     int finalized = 0;
     MPI_Finalized(&finalized);
     if (initialised_ && !finalized)
@@ -118,7 +124,7 @@ std::vector<std::string> MpiTaskSpreader::run(const std::string &what, std::size
     if (rank_ == 0)
         results = master(what, n, task, progress);
     else
-        worker(n, task);
+        worker(what, n, task);
     return share(what, std::move(results));
 }
 
@@ -155,7 +161,10 @@ std::vector<std::string> MpiTaskSpreader::master(const std::string &what, std::s
     // rank 0's own share, in a thread that makes no MPI calls
     std::thread local([&] {
         for (long long i = take(0); i >= 0; i = take(0))
-            finish(0, i, attempt(task, static_cast<std::size_t>(i)));
+        {
+            finish(0, i, attempt(task, static_cast<std::size_t>(i), what));
+            ++tasks_;
+        }
     });
     int stopped = 0;
     std::size_t reported = 0;
@@ -206,7 +215,7 @@ std::vector<std::string> MpiTaskSpreader::master(const std::string &what, std::s
     return results;
 }
 
-void MpiTaskSpreader::worker(std::size_t n, const Task &task)
+void MpiTaskSpreader::worker(const std::string &what, std::size_t n, const Task &task)
 {
     long long i = -1;
     std::pair<int, std::string> outcome{0, ""};
@@ -225,7 +234,8 @@ void MpiTaskSpreader::worker(std::size_t n, const Task &task)
         bytes_ += sizeof i;
         if (i < 0 || static_cast<std::size_t>(i) >= n)
             return;
-        outcome = attempt(task, static_cast<std::size_t>(i));
+        outcome = attempt(task, static_cast<std::size_t>(i), what);
+        ++tasks_;
     }
 }
 

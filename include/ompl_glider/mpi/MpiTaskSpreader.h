@@ -51,7 +51,7 @@ public:
 
 private:
     std::vector<std::string> master(const std::string &what, std::size_t n, const Task &task, const Progress &progress);
-    void worker(std::size_t n, const Task &task);
+    void worker(const std::string &what, std::size_t n, const Task &task);
     std::vector<std::string> share(const std::string &what, std::vector<std::string> results);
 
     int rank_{0};
@@ -59,6 +59,8 @@ private:
     bool initialised_{false};
     double timeLimit_{0.0};
     double bytes_{0.0};
+    std::size_t tasks_{0};  ///< tasks this rank computed
+    // OMPL_GLIDER_MPI_STATS set: each rank prints its tasks and bytes when the spreader ends
     // the first failure of a run, as rank 0 knows it (kind 1: ompl_glider::Error, 2: another exception)
     struct Failure
     {
