@@ -490,9 +490,19 @@ int main(int argc, char **argv)
 {
 #if OMPL_GLIDER_WITH_MPI
     // started by mpirun or srun: the runs are spread over the ranks (finalised when main returns)
-    std::unique_ptr<MpiTaskSpreader> mpi;
+    std::shared_ptr<MpiTaskSpreader> mpi;
     if (MpiTaskSpreader::launched())
-        mpi = std::make_unique<MpiTaskSpreader>(argc, argv);
+    {
+        mpi = std::make_shared<MpiTaskSpreader>(argc, argv);
+        setTaskSpreader(mpi);
+    }
+    struct Unset
+    {
+        ~Unset()
+        {
+            setTaskSpreader(nullptr);
+        }
+    } unset;
 #endif
     const Options opt = parse(argc, argv);
     ompl::RNG::setSeed(opt.seed);  // before any RNG exists: fixed seeds for every planner and run
@@ -508,22 +518,20 @@ int main(int argc, char **argv)
             problems.push_back(p);
     if (problems.empty())
         usage("no problem selected");
-#if OMPL_GLIDER_WITH_MPI
-    if (mpi && mpi->size() > 1)
+    if (TaskSpreader *spread = activeTaskSpreader())  // an MPI job of several ranks
     {
         try
         {
-            runSpread(*mpi, opt, problems);
+            runSpread(*spread, opt, problems);
         }
         catch (const std::exception &e)
         {
-            if (mpi->rank() == 0)
+            if (spread->rank() == 0)
                 std::cerr << "\nglider_campaign: " << e.what() << "; no log written\n";
             return 1;
         }
         return 0;
     }
-#endif
     runHere(opt, problems);
     return 0;
 }
