@@ -14,6 +14,7 @@
 # Isochrone and OMPL's control planners oc::SST, oc::RRT, oc::KPIECE1), alone and quickly:
 #   benchmarks/run_campaign.sh --quick OUTDIR --runs 3 --time 5 --problems strong
 # (the maps of maps.png stay those of the four classic problems).
+# GLIDER_MPIRUN="mpirun -np N" runs glider_campaign as an MPI job (a build with OMPL_GLIDER_WITH_MPI; docs/MPI.md).
 set -euo pipefail
 
 QUICK=0
@@ -51,7 +52,8 @@ fi
 
 start=$(date +%s)
 rm -f "$OUT"/*.log "$OUT/campaign.db"
-"$BUILD/benchmarks/glider_campaign" "${ARGS[@]}" ${EXTRA[@]+"${EXTRA[@]}"} "$OUT"
+# GLIDER_MPIRUN="mpirun -np 8" (or "srun"): the runs spread over the ranks of an MPI job (docs/MPI.md)
+${GLIDER_MPIRUN:-} "$BUILD/benchmarks/glider_campaign" "${ARGS[@]}" ${EXTRA[@]+"${EXTRA[@]}"} "$OUT"
 "$BUILD/benchmarks/glider_campaign_paths" --time "$BUDGET" "$OUT" > "$OUT/paths.txt"
 "$PY" "$STATS" "$OUT"/*.log -d "$OUT/campaign.db" >/dev/null
 "$PY" "$ROOT/benchmarks/campaign/report.py" "$OUT/campaign.db" "$OUT" "$OUT/reference.csv"

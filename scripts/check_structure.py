@@ -16,7 +16,7 @@ import re
 import sys
 
 # Top to bottom: a layer may include the layers after it.
-LAYERS = ["output", "mission", "registry", "reachability", "stints", "planners", "reference", "execution", "ompl",
+LAYERS = ["mpi", "output", "mission", "registry", "reachability", "stints", "planners", "reference", "execution", "ompl",
           "cost", "environment", "current", "io", "core"]
 MAX_FILE_LINES = 700
 MAX_FUNCTION_LINES = 150

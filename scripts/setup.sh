@@ -18,6 +18,7 @@ PACKAGES=(
   libcairo2-dev
   libcli11-dev nlohmann-json3-dev
   libgdal-dev
+  libopenmpi-dev openmpi-bin
   python3 python3-matplotlib
   pybind11-dev python3-dev python3-numpy python3-pytest
   clang-14 libfuzzer-14-dev

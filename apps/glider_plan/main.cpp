@@ -2,6 +2,8 @@
 // NetCDF forecast with --currents, a mission file with --mission) builds a MissionSpec and runs the library's one
 // pipeline (mission/Planning.h) and output layer (output/). Running, messages and exit codes live here; the flags,
 // their checks and the MissionSpec of the built-in and --currents modes in Flags.cpp (shared with fuzz/fuzz_cli).
+// Under mpirun (a build with OMPL_GLIDER_WITH_MPI) every rank runs the same pipeline; the many-plan modes spread
+// their tasks over the ranks (TaskSpread.h) and rank 0 alone prints and writes.
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -13,10 +15,15 @@
 #include <ompl/util/Console.h>
 
 #include "Flags.h"
+#include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/output/OutputWriter.h"
 #include "ompl_glider/output/Report.h"
+#if OMPL_GLIDER_WITH_MPI
+#include "ompl_glider/mpi/MpiTaskSpreader.h"
+#endif
 
 namespace
 {
@@ -28,6 +35,8 @@ constexpr int kBadInput = 2;
 
 void printProgress(const std::string &line, bool done)
 {
+    if (taskRank() != 0)
+        return;
     std::fprintf(stderr, "\r%s%s", line.c_str(), done ? "\n" : "   ");
     std::fflush(stderr);
 }
@@ -48,7 +57,8 @@ int run(const Flags &f)
     {
         checkOutputDirectory(spec.outputs.directory);
         checkOutputNames(spec.outputs);
-        lock.emplace(spec.outputs.directory);
+        if (taskRank() == 0)  // an MPI job writes from rank 0 only
+            lock.emplace(spec.outputs.directory);
     }
     const MissionProblem problem(spec);
     RunOptions options;
@@ -58,6 +68,8 @@ int run(const Flags &f)
     if (!f.mission.empty() || !f.currents.empty())
         options.progress = printProgress;
     const MissionResult result = runMission(problem, options);
+    if (taskRank() != 0)  // an MPI job's other ranks: rank 0 reports and writes
+        return result.plan.solved || result.plan.badInput.empty() ? (result.plan.solved ? 0 : kNoPath) : kBadInput;
     if (!result.plan.solved && !result.plan.badInput.empty())
     {
         std::cerr << "glider_plan: " << problem.getSpec().place(result.plan.badInput) << ": " << result.plan.reason
@@ -70,10 +82,57 @@ int run(const Flags &f)
             std::cout << "wrote " << file << "\n";
     return result.plan.solved ? 0 : kNoPath;
 }
+
+/// Plans under run(), turning exceptions into messages (rank 0's only: every rank of a job meets the same bad input,
+/// and a task's failure is thrown on every rank) and exit codes.
+int runAndReport(const Flags &f)
+{
+    const bool speak = taskRank() == 0;
+    std::string message;
+    try
+    {
+        return run(f);
+    }
+    catch (const UsageError &e)
+    {
+        message = e.message + "\nTry 'glider_plan --help'.";
+    }
+    catch (const Error &e)
+    {
+        message = e.what();
+    }
+    catch (const std::bad_alloc &)
+    {
+        message = "out of memory while planning (reduce the region, the grid or the window)";
+    }
+    catch (const std::exception &e)
+    {
+        message = e.what();
+    }
+    if (speak)
+        std::cerr << "glider_plan: " << message << "\n";
+    return kBadInput;
+}
 }  // namespace
 
 int main(int argc, char **argv)
 {
+#if OMPL_GLIDER_WITH_MPI
+    // started by mpirun or srun: the ranks share the many-plan modes' tasks (finalised when main returns)
+    std::shared_ptr<MpiTaskSpreader> mpi;
+    if (MpiTaskSpreader::launched())
+    {
+        mpi = std::make_shared<MpiTaskSpreader>(argc, argv);
+        setTaskSpreader(mpi);
+    }
+    struct Unset
+    {
+        ~Unset()
+        {
+            setTaskSpreader(nullptr);
+        }
+    } unset;
+#endif
     CLI::App app{"Plans a time-optimal glider route through time-varying currents and prints travel time, path "
                  "length, waypoints, CFC and CMC.\nWithout --mission or --currents: the built-in Gulf Stream "
                  "mission (meandering jet, x in [0, 10], y in [-4, 4], V = 0.5, dimensionless units).",
@@ -101,25 +160,5 @@ int main(int argc, char **argv)
     if (!f.verbose)
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     installOutputSignalHandlers();  // SIGINT/SIGTERM while files are written: the earlier outputs stay
-    try
-    {
-        return run(f);
-    }
-    catch (const UsageError &e)
-    {
-        std::cerr << "glider_plan: " << e.message << "\nTry 'glider_plan --help'.\n";
-    }
-    catch (const Error &e)
-    {
-        std::cerr << "glider_plan: " << e.what() << "\n";
-    }
-    catch (const std::bad_alloc &)
-    {
-        std::cerr << "glider_plan: out of memory while planning (reduce the region, the grid or the window)\n";
-    }
-    catch (const std::exception &e)
-    {
-        std::cerr << "glider_plan: " << e.what() << "\n";
-    }
-    return kBadInput;
+    return runAndReport(f);
 }

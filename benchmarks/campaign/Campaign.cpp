@@ -20,13 +20,15 @@
 // campaign records the smoothed and refined ZA*TVE path (its CFC includes that post-processing; the search's own
 // CFC is recorded as "search CFC").
 //
-// Usage: glider_campaign [--quick] [--runs N] [--time SECONDS] [--grid G] [--seed S] [--problems a,b]
+// Usage: glider_campaign [--quick] [--no-reference] [--runs N] [--time SECONDS] [--grid G] [--seed S] [--problems a,b]
 //                        [--planners NAME,...] [--control SST,RRT,KPIECE1|none] [--own-end-time S] OUTDIR
 // --problems takes problem names and the set names classic (the default: open_water, islands, ice, closure), strong
 // (jet_v020, jet_v015, gyre) and all; --planners restricts the registry planners (names and aliases of the
 // registry), --control the control planners of the strong set (default: all three). --time is the budget of every
 // planner, except on the strong set, whose registry planners all run to their own end (ZA*TVE, LevelSet, Isochrone):
 // they get at most max(--time, --own-end-time) (default 60 s), and their solve time is what they used.
+// Under mpirun -np N (a build with OMPL_GLIDER_WITH_MPI) the (problem, planner, run) runs are spread over the ranks
+// (CampaignSpread.h) and rank 0 writes the same files; -np 1 and a build without MPI run as one process.
 // Writes OUTDIR/<problem>.log and OUTDIR/<problem>_control.log (OMPL benchmark logs) and OUTDIR/reference.csv (the
 // optimum of every problem: the level-set front at three cells and its extrapolation, Zermelo shooting in open
 // water, and the level-set first entry into the control planners' goal disc).
@@ -63,8 +65,15 @@
 #include "ompl_glider/reachability/LevelSet.h"
 #include "ompl_glider/reference/ZermeloReference.h"
 
+#include "CampaignBenchmark.h"
 #include "CampaignControl.h"
 #include "CampaignProblems.h"
+#include "CampaignSpread.h"
+#include "ompl_glider/Config.h"
+#include "ompl_glider/TaskSpread.h"
+#if OMPL_GLIDER_WITH_MPI
+#include "ompl_glider/mpi/MpiTaskSpreader.h"
+#endif
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;
@@ -73,6 +82,11 @@ using namespace ompl_glider;
 
 namespace
 {
+const char *const kReferenceHeader =
+    "problem,reference_travel_time,found,method,cells,level_set_coarse,level_set_medium,level_set_fine,"
+    "level_set_extrapolated,level_set_seconds_fine,shooting,ice_passable_fine,control_goal_tolerance,"
+    "reference_disc\n";
+
 /// The planners of the campaign, by their registry names (PlannerRegistry.h).
 const std::vector<std::string> kCampaignPlanners = {"TVE",     "A*TVE",   "ZTVE",       "ZA*TVE", "Wavefront",
                                                     "LevelSet", "RRTstar", "PRM",        "PRMstar", "RRTConnect",
@@ -81,6 +95,7 @@ const std::vector<std::string> kCampaignPlanners = {"TVE",     "A*TVE",   "ZTVE"
 struct Options
 {
     bool quick{false};
+    bool reference{true};  ///< --no-reference: no reference.csv (its level sets take tens of seconds)
     unsigned runs{0};
     double time{0.0};
     double grid{0.4};
@@ -95,7 +110,7 @@ struct Options
 [[noreturn]] void usage(const std::string &why)
 {
     std::cerr << "glider_campaign: " << why << "\n"
-              << "usage: glider_campaign [--quick] [--runs N] [--time SECONDS] [--grid G] [--own-end-time S] [--seed S] "
+              << "usage: glider_campaign [--quick] [--no-reference] [--runs N] [--time SECONDS] [--grid G] [--own-end-time S] [--seed S] "
                  "[--problems classic|strong|all|open_water,islands,ice,closure,jet_v020,jet_v015,gyre] "
                  "[--planners TVE,RRTstar,...] [--control SST,RRT,KPIECE1|none] OUTDIR\n";
     std::exit(2);
@@ -142,6 +157,8 @@ Options parse(int argc, char **argv)
         {
             if (a == "--quick")
                 o.quick = true;
+            else if (a == "--no-reference")
+                o.reference = false;
             else if (a == "--runs")
                 o.runs = static_cast<unsigned>(std::stoul(next()));
             else if (a == "--time")
@@ -214,14 +231,15 @@ double discArrival(const Reachability &r, Point2 goal, double radius)
     return best;
 }
 
-/// The optimum of one problem (issue 12) as a line of reference.csv: the level-set front (LevelSetSolver,
+/// The optimum of one problem (issue 12) as a line of reference.csv (and the line printed): the level-set front (LevelSetSolver,
 /// [LollaLevelSet]) at cells 4h, 2h, h (the convergence study; h = referenceCell), in open water also Zermelo
 /// shooting. The reference is shooting where it exists, else the level set extrapolated to cell 0. Ice zones are
 /// kept out of the front (the glider cannot surface there), an upper bound of the optimum; the same front with the
 /// ice ignored is a lower bound (ice_passable). The control planners' goal is a disc (ControlSettings::goalTolerance):
 /// their reference is the front's first entry into that disc, extrapolated the same way (reference_disc).
-void writeReference(std::ofstream &ref, const CampaignProblem &p)
+std::pair<std::string, std::string> referenceLines(const CampaignProblem &p)
 {
+    std::ostringstream ref, console;
     const auto ctx = makeGliderContext(p.problem);
     const Point2 goal{p.problem.goal.x, p.problem.goal.y};
     const double tolerance = resolveControlSettings(p.problem, *ctx, ControlSettings()).goalTolerance;
@@ -266,12 +284,13 @@ void writeReference(std::ofstream &ref, const CampaignProblem &p)
         << (shot ? "shooting" : "level set extrapolated") << "," << hs[0] << "/" << hs[1] << "/" << hs[2] << ","
         << ls[0] << "," << ls[1] << "," << ls[2] << "," << extrapolated << "," << lsSeconds << "," << shooting << ","
         << passable << "," << tolerance << "," << discExtrapolated << "\n";
-    std::cout << "optimum " << p.name << ": " << std::setprecision(6) << best
+    console << "optimum " << p.name << ": " << std::setprecision(6) << best
               << (shot ? " (shooting)" : " (level set extrapolated)") << "; level set cells " << hs[0] << " / "
               << hs[1] << " / " << hs[2] << ": " << ls[0] << " / " << ls[1] << " / " << ls[2] << ", extrapolated "
               << extrapolated << " (" << lsSeconds << " s at " << hs[2] << "); first entry into the goal disc of "
               << tolerance << ": " << discExtrapolated
-              << (std::isfinite(passable) ? "; with the ice passable " + std::to_string(passable) : "") << std::endl;
+              << (std::isfinite(passable) ? "; with the ice passable " + std::to_string(passable) : "");
+    return {ref.str(), console.str()};
 }
 
 /// Records a finished run of a registry planner (see the file's documentation).
@@ -329,15 +348,19 @@ void recordGeometricRun(const ob::PlannerPtr &planner, ot::Benchmark::RunPropert
                   r.reason.c_str());
 }
 
-/// Benchmarks the registry planners of one problem (its own list, else the campaign's) into OUTDIR/<problem>.log.
-void benchmarkRegistryPlanners(const Options &opt, const CampaignProblem &p)
+/// The benchmark of the registry planners of one problem (its own list, else the campaign's) into
+/// OUTDIR/<problem>.log; null when no planner is selected.
+std::unique_ptr<BuiltBenchmark> buildRegistryBenchmark(const Options &opt, const CampaignProblem &p)
 {
     std::shared_ptr<GliderContext> ctx;
     og::SimpleSetupPtr ss = makeSimpleSetup(p.problem, &ctx);
     ss->setup();
     const ob::SpaceInformationPtr si = ss->getSpaceInformation();
 
-    ot::Benchmark b(*ss, "glider " + p.name);
+    auto built = std::make_unique<BuiltBenchmark>();
+    built->setup = ss;
+    built->benchmark = std::make_unique<ot::Benchmark>(*ss, "glider " + p.name);
+    ot::Benchmark &b = *built->benchmark;
     b.addExperimentParameter("problem", "VARCHAR(64)", p.name);
     b.addExperimentParameter("description", "VARCHAR(256)", p.description);
     b.addExperimentParameter("field", "VARCHAR(64)", p.problem.field->name());
@@ -378,7 +401,7 @@ void benchmarkRegistryPlanners(const Options &opt, const CampaignProblem &p)
         allOwnEnd = allOwnEnd && entry->runsToItsEnd();
     }
     if (nPlanners == 0)
-        return;
+        return nullptr;
     // A problem with its own list of planners that all run to their own end (the strong set) gets --own-end-time:
     // --time is the budget of the sampling and control planners, and would cut LevelSet short. The classic set's
     // mixed list keeps --time for everyone, as before.
@@ -392,18 +415,95 @@ void benchmarkRegistryPlanners(const Options &opt, const CampaignProblem &p)
         recordGeometricRun(planner, run, *ctx, si, pr);
     });
 
-    ot::Benchmark::Request req(limit, 4096.0, opt.runs, 0.1, false, false, false);
-    std::cout << "problem " << p.name << ": " << opt.runs << " runs x " << nPlanners << " planners, at most " << limit
-              << " s each" << std::endl;
-    b.benchmark(req);
-    const std::string log = opt.outdir + "/" + p.name + ".log";
-    b.saveResultsToFile(log.c_str());
-    std::cout << "  -> " << log << std::endl;
+    built->request = ot::Benchmark::Request(limit, 4096.0, opt.runs, 0.1, false, false, false);
+    built->banner = "problem " + p.name + ": " + std::to_string(opt.runs) + " runs x " + std::to_string(nPlanners) +
+                    " planners, at most " + str(limit) + " s each";
+    built->log = opt.outdir + "/" + p.name + ".log";
+    return built;
+}
+
+/// The campaign in one process, as it has always run: the references, then each benchmark in turn.
+void runHere(const Options &opt, const std::vector<CampaignProblem> &problems)
+{
+    if (opt.reference)
+    {
+        std::ofstream ref(opt.outdir + "/reference.csv");
+        ref << kReferenceHeader;
+        for (const CampaignProblem &p : problems)
+        {
+            const auto lines = referenceLines(p);
+            ref << lines.first;
+            std::cout << lines.second << std::endl;
+        }
+    }
+    for (const CampaignProblem &p : problems)
+    {
+        if (auto b = buildRegistryBenchmark(opt, p))
+            runBenchmark(*b);
+        if (p.control && !opt.control.empty())
+            if (auto b = buildControlBenchmark(p, opt.control, opt.runs, opt.time, opt.seed, opt.outdir))
+                runBenchmark(*b);
+    }
+}
+
+/// The campaign spread over the processes of a job (CampaignSpread.h): the references (one task per problem),
+/// then every (benchmark, planner, run); rank 0 writes reference.csv and the logs once everything succeeded.
+void runSpread(TaskSpreader &spread, const Options &opt, const std::vector<CampaignProblem> &problems)
+{
+    const std::vector<std::string> refs = spread.run("reference problem", opt.reference ? problems.size() : 0,
+                                                     [&](std::size_t i) {
+        const auto lines = referenceLines(problems[i]);
+        ByteWriter w;
+        w.put(lines.first);
+        w.put(lines.second);
+        return w.take();
+    });
+    std::vector<campaign_spread::Maker> makers;
+    for (const CampaignProblem &p : problems)
+    {
+        makers.push_back([&opt, &p] { return buildRegistryBenchmark(opt, p); });
+        if (p.control && !opt.control.empty())
+            makers.push_back([&opt, &p] {
+                return buildControlBenchmark(p, opt.control, opt.runs, opt.time, opt.seed, opt.outdir);
+            });
+    }
+    std::string csv = kReferenceHeader;
+    for (const std::string &r : refs)
+    {
+        ByteReader in(r);
+        const std::string line = in.value<std::string>(), console = in.value<std::string>();
+        csv += line;
+        if (spread.rank() == 0)
+            std::cout << console << std::endl;
+    }
+    campaign_spread::spreadBenchmarks(spread, makers);
+    if (spread.rank() == 0 && opt.reference)
+    {
+        const std::string part = opt.outdir + "/reference.csv.part";
+        std::ofstream(part) << csv;
+        std::rename(part.c_str(), (opt.outdir + "/reference.csv").c_str());
+    }
 }
 }  // namespace
 
 int main(int argc, char **argv)
 {
+#if OMPL_GLIDER_WITH_MPI
+    // started by mpirun or srun: the runs are spread over the ranks (finalised when main returns)
+    std::shared_ptr<MpiTaskSpreader> mpi;
+    if (MpiTaskSpreader::launched())
+    {
+        mpi = std::make_shared<MpiTaskSpreader>(argc, argv);
+        setTaskSpreader(mpi);
+    }
+    struct Unset
+    {
+        ~Unset()
+        {
+            setTaskSpreader(nullptr);
+        }
+    } unset;
+#endif
     const Options opt = parse(argc, argv);
     ompl::RNG::setSeed(opt.seed);  // before any RNG exists: fixed seeds for every planner and run
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
@@ -418,20 +518,20 @@ int main(int argc, char **argv)
             problems.push_back(p);
     if (problems.empty())
         usage("no problem selected");
-
+    if (TaskSpreader *spread = activeTaskSpreader())  // an MPI job of several ranks
     {
-        std::ofstream ref(opt.outdir + "/reference.csv");
-        ref << "problem,reference_travel_time,found,method,cells,level_set_coarse,level_set_medium,level_set_fine,"
-               "level_set_extrapolated,level_set_seconds_fine,shooting,ice_passable_fine,control_goal_tolerance,"
-               "reference_disc\n";
-        for (const CampaignProblem &p : problems)
-            writeReference(ref, p);
+        try
+        {
+            runSpread(*spread, opt, problems);
+        }
+        catch (const std::exception &e)
+        {
+            if (spread->rank() == 0)
+                std::cerr << "\nglider_campaign: " << e.what() << "; no log written\n";
+            return 1;
+        }
+        return 0;
     }
-    for (const CampaignProblem &p : problems)
-    {
-        benchmarkRegistryPlanners(opt, p);
-        if (p.control && !opt.control.empty())
-            benchmarkControlPlanners(p, opt.control, opt.runs, opt.time, opt.seed, opt.outdir);
-    }
+    runHere(opt, problems);
     return 0;
 }

@@ -25,6 +25,8 @@
 #include <sstream>
 #include <string>
 
+#include "CampaignBenchmark.h"
+
 #include <ompl/control/planners/kpiece/KPIECE1.h>
 #include <ompl/control/planners/rrt/RRT.h>
 #include <ompl/control/planners/sst/SST.h>
@@ -125,8 +127,10 @@ inline void recordControlRun(const ompl::base::PlannerPtr &planner, ompl::tools:
 /// @brief Benchmarks the control planners @p names on the heading-control setup of @p p: @p runs runs of
 /// @p seconds each; writes OUTDIR/<problem>_control.log. Experiment parameters as the geometric experiment's, plus the
 /// control discretisation (propagation step, control durations, RK4 substeps, goal tolerance).
-inline void benchmarkControlPlanners(const CampaignProblem &p, const std::set<std::string> &names, unsigned runs,
-                                     double seconds, std::uint32_t seed, const std::string &outdir)
+inline std::unique_ptr<BuiltBenchmark> buildControlBenchmark(const CampaignProblem &p,
+                                                              const std::set<std::string> &names, unsigned runs,
+                                                              double seconds, std::uint32_t seed,
+                                                              const std::string &outdir)
 {
     namespace ob = ompl::base;
     namespace ot = ompl::tools;
@@ -140,7 +144,10 @@ inline void benchmarkControlPlanners(const CampaignProblem &p, const std::set<st
     const double diagonal = std::hypot(r.xMax - r.xMin, r.yMax - r.yMin);
     const auto str = controlNumber;
 
-    ot::Benchmark b(*css, "glider " + p.name + "_control");  // the statistics script keeps the last word
+    auto built = std::make_unique<BuiltBenchmark>();
+    built->setup = css;
+    built->benchmark = std::make_unique<ot::Benchmark>(*css, "glider " + p.name + "_control");  // the statistics
+    ot::Benchmark &b = *built->benchmark;                                 // script keeps the last word
     b.addExperimentParameter("problem", "VARCHAR(64)", p.name);
     b.addExperimentParameter("description", "VARCHAR(256)", p.description);
     b.addExperimentParameter("field", "VARCHAR(64)", p.problem.field->name());
@@ -167,19 +174,19 @@ inline void benchmarkControlPlanners(const CampaignProblem &p, const std::set<st
             ++n;
         }
     if (n == 0)
-        return;
+        return nullptr;
     b.setPreRunEvent([ctx](const ob::PlannerPtr &) { ctx->field->resetCallCount(); });
     b.setPostRunEvent([ctx, pr = p.problem, prop, tol = cs.goalTolerance](const ob::PlannerPtr &planner,
                                                                           ot::Benchmark::RunProperties &run) {
         recordControlRun(planner, run, *ctx, pr, *prop, tol);
     });
-    ot::Benchmark::Request req(seconds, 4096.0, runs, 0.1, false, false, false);
-    std::cout << "problem " << p.name << " (control): " << runs << " runs x " << n << " planners, " << seconds
-              << " s each; propagation step " << cs.propagationStep << ", controls of " << cs.minSteps << "-"
-              << cs.maxSteps << " steps, goal tolerance " << cs.goalTolerance << std::endl;
-    b.benchmark(req);
-    const std::string log = outdir + "/" + p.name + "_control.log";
-    b.saveResultsToFile(log.c_str());
-    std::cout << "  -> " << log << std::endl;
+    built->request = ot::Benchmark::Request(seconds, 4096.0, runs, 0.1, false, false, false);
+    std::ostringstream banner;
+    banner << "problem " << p.name << " (control): " << runs << " runs x " << n << " planners, " << seconds
+           << " s each; propagation step " << cs.propagationStep << ", controls of " << cs.minSteps << "-"
+           << cs.maxSteps << " steps, goal tolerance " << cs.goalTolerance;
+    built->banner = banner.str();
+    built->log = outdir + "/" + p.name + "_control.log";
+    return built;
 }
 }  // namespace ompl_glider

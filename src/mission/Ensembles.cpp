@@ -1,13 +1,16 @@
 /// @file Ensembles.cpp
 /// @brief Robust plans over the members of an ensemble current (planRobust(), used by planRoute()): candidates
 /// planned on the members' mean and on every member, each flown in every member (retimePath()) and judged by the
-/// mission's objective over the members (ensembleObjective()).
+/// mission's objective over the members (ensembleObjective()); in an MPI job the candidates are spread over the
+/// ranks (TaskSpread.h).
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/cost/TravelTimeCalculator.h"
 
@@ -15,6 +18,44 @@ namespace ompl_glider
 {
 namespace planning_detail
 {
+namespace
+{
+/// The candidates planned on the processes of a job: each task plans one candidate and returns what the choice
+/// needs (solved, the member travel times, the counters); the paths stay where they were planned.
+void spreadCandidates(TaskSpreader &spread, std::vector<PlannedPath> &plans, std::vector<std::vector<double>> &times,
+                      const std::function<void(std::size_t)> &candidate)
+{
+    const std::vector<std::string> out = spread.run("ensemble candidate", plans.size(), [&](std::size_t c) {
+        candidate(c);
+        const PlannedPath &p = plans[c];
+        ByteWriter w;
+        w.put(p.solved);
+        w.put(times[c]);
+        w.put(p.searchCostFunctionCalls);
+        w.put(p.postprocessCostFunctionCalls);
+        w.put(p.currentModelCalls);
+        w.put(p.expandedVertices);
+        w.put(p.planningSeconds);
+        w.put(p.postprocessSeconds);
+        plans[c] = PlannedPath();
+        return w.take();
+    });
+    for (std::size_t c = 0; c < plans.size(); ++c)
+    {
+        PlannedPath &p = plans[c];
+        ByteReader r(out[c]);
+        r.get(p.solved);
+        r.get(times[c]);
+        r.get(p.searchCostFunctionCalls);
+        r.get(p.postprocessCostFunctionCalls);
+        r.get(p.currentModelCalls);
+        r.get(p.expandedVertices);
+        r.get(p.planningSeconds);
+        r.get(p.postprocessSeconds);
+    }
+}
+}  // namespace
+
 /// A robust plan over the members of an ensemble (see planRoute()).
 PlannedPath planRobust(const MissionProblem &problem, double departure, const PlanOptions &o)
 {
@@ -25,17 +66,25 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
     // candidates: the mean field's plan, then each member's, planned in parallel
     std::vector<PlannedPath> plans(n + 1);
     std::vector<std::vector<double>> times(n + 1, std::vector<double>(n, kInf));
-    ThreadPool pool(0);
-    pool.parallelFor(n + 1, [&](std::size_t c) {
-        plans[c] = c == 0 ? planOnField(problem, departure, o) : planOnField(problem.withMember(c - 1), departure, o);
-        if (!plans[c].solved)
-            return;
-        for (std::size_t k = 0; k < n; ++k)
+    const auto flyInMembers = [&](std::size_t c) {
+        for (std::size_t k = 0; k < n && plans[c].solved; ++k)
         {
             const std::vector<TimedPoint> flown = retimePath(problem, members[k], speed, plans[c].path);
             times[c][k] = flown.empty() ? kInf : flown.back().t - departure;
         }
-    });
+    };
+    const auto candidate = [&](std::size_t c) {
+        plans[c] = c == 0 ? planOnField(problem, departure, o) : planOnField(problem.withMember(c - 1), departure, o);
+        flyInMembers(c);
+    };
+    TaskSpreader *spread = activeTaskSpreader();
+    if (spread)
+        spreadCandidates(*spread, plans, times, candidate);
+    else
+    {
+        ThreadPool pool(0);
+        pool.parallelFor(n + 1, candidate);
+    }
     EnsemblePlan e;
     e.objective = m.planner.objective;
     e.quantile = m.planner.quantile;
@@ -57,6 +106,21 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
         };
         if (c > 0 && better(c, best))
             best = c;
+    }
+    if (spread && plans[best].solved)
+    {
+        // the chosen candidate is planned again on every rank (the same planning on the same field: the same path,
+        // for the deterministic planners), and flown in the members again
+        const PlannedPath counted = plans[best];
+        candidate(best);
+        plans[best].searchCostFunctionCalls = counted.searchCostFunctionCalls;
+        plans[best].postprocessCostFunctionCalls = counted.postprocessCostFunctionCalls;
+        plans[best].currentModelCalls = counted.currentModelCalls;
+        plans[best].expandedVertices = counted.expandedVertices;
+        plans[best].planningSeconds = counted.planningSeconds;
+        plans[best].postprocessSeconds = counted.postprocessSeconds;
+        e.candidates[best].memberTravelTimes = times[best];
+        e.candidates[best].objectiveValue = ensembleObjective(times[best], e.objective, e.quantile);
     }
     PlannedPath r = plans[best];
     e.chosen = e.candidates[best].name;

@@ -1,5 +1,6 @@
 // The mission's execution in another ocean (issue 13): plans flown with each control strategy in the truth field,
-// for the mission's own pair and a batch of random pairs, in parallel.
+// for the mission's own pair and a batch of random pairs, in parallel (in threads, or spread over the ranks of an MPI
+// job: TaskSpread.h).
 #include "ompl_glider/mission/MissionExecution.h"
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <random>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -115,6 +117,122 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
         run.flown.push_back(flyPlan(run.plan, speed, *problem.getField(), *problem.getTruth(),
                                     problem.getEnvironment().get(), s, o));
     }
+}
+void putPoints(ByteWriter &w, const std::vector<TimedPoint> &v)
+{
+    w.putEach(v, [](ByteWriter &o, const TimedPoint &p) {
+        o.put(p.x);
+        o.put(p.y);
+        o.put(p.t);
+    });
+}
+
+void getPoints(ByteReader &r, std::vector<TimedPoint> &v)
+{
+    r.getEach(v, [](ByteReader &i, TimedPoint &p) {
+        i.get(p.x);
+        i.get(p.y);
+        i.get(p.t);
+    });
+}
+
+/// An execution run as bytes (every bit of its numbers), for the processes of a job.
+std::string packRun(const ExecutionRun &run)
+{
+    ByteWriter w;
+    w.put(run.planned);
+    w.put(run.reason);
+    putPoints(w, run.plan);
+    w.put(run.headings.has_value());
+    if (run.headings)
+    {
+        const HeadingRoute &h = *run.headings;
+        w.put(h.start.x);
+        w.put(h.start.y);
+        w.put(h.departure);
+        w.put(h.step);
+        w.putEach(h.segments, [](ByteWriter &o, const HeadingSegment &g) {
+            o.put(g.bearing);
+            o.put(g.duration);
+        });
+    }
+    w.putEach(run.flown, [](ByteWriter &o, const FlownTrack &f) {
+        putPoints(o, f.fixes);
+        putPoints(o, f.track);
+        o.put(f.headings);
+        o.put(f.plannedArrival);
+        o.put(f.finalDistance);
+        o.put(f.arrivalTime);
+        o.put(f.reached);
+        o.put(f.grounded);
+        o.put(f.groundedWhy);
+        o.put(f.madeGoodSpeed);
+        o.put(f.replans);
+    });
+    return w.take();
+}
+
+void unpackRun(const std::string &bytes, ExecutionRun &run)
+{
+    ByteReader r(bytes);
+    r.get(run.planned);
+    r.get(run.reason);
+    getPoints(r, run.plan);
+    if (r.value<bool>())
+    {
+        HeadingRoute h;
+        r.get(h.start.x);
+        r.get(h.start.y);
+        r.get(h.departure);
+        r.get(h.step);
+        r.getEach(h.segments, [](ByteReader &i, HeadingSegment &g) {
+            i.get(g.bearing);
+            i.get(g.duration);
+        });
+        run.headings = h;
+    }
+    r.getEach(run.flown, [](ByteReader &i, FlownTrack &f) {
+        getPoints(i, f.fixes);
+        getPoints(i, f.track);
+        i.get(f.headings);
+        i.get(f.plannedArrival);
+        i.get(f.finalDistance);
+        i.get(f.arrivalTime);
+        i.get(f.reached);
+        i.get(f.grounded);
+        i.get(f.groundedWhy);
+        i.get(f.madeGoodSpeed);
+        i.get(f.replans);
+    });
+}
+/// What each strategy did over the runs flown.
+std::vector<StrategySpread> strategySpreads(const ExecutionResult &r)
+{
+    std::vector<StrategySpread> out;
+    for (std::size_t k = 0; k < r.strategies.size(); ++k)
+    {
+        StrategySpread s;
+        s.strategy = controlStrategyName(r.strategies[k]);
+        std::vector<double> dist, delay, speed;
+        for (const ExecutionRun &run : r.runs)
+        {
+            if (!run.planned)
+                continue;
+            const FlownTrack &f = run.flown[k];
+            ++s.runs;
+            s.reached += f.reached ? 1 : 0;
+            s.grounded += f.grounded ? 1 : 0;
+            dist.push_back(f.finalDistance);
+            if (f.reached)
+                delay.push_back(f.arrivalTime - f.plannedArrival);
+            speed.push_back(f.madeGoodSpeed);
+        }
+        s.finalDistance = measureSpread(dist);
+        s.arrivalDelay = measureSpread(delay);
+        s.madeGoodSpeed = measureSpread(speed);
+        out.push_back(s);
+    }
+    return out;
 }
 }  // namespace
 
@@ -241,13 +359,8 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     else
         r.runs[0].reason = plan.reason;
 
-    ThreadPool pool(e.threads);
-    r.threads = std::min<unsigned>(pool.size(), static_cast<unsigned>(r.runs.size()));
-    std::atomic<std::size_t> done{0};
-    std::mutex printMutex;
-    pool.parallelFor(r.runs.size(), [&](std::size_t i) {
-        ExecutionRun &run = r.runs[i];
-        if (i > 0)
+    const auto planAndFly = [&](ExecutionRun &run) {
+        if (run.index > 0)
         {
             const PlannedPath p = planRoute(problem.withEndpoints(run.start, run.goal), run.departure);
             run.planned = p.solved;
@@ -260,39 +373,48 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         }
         if (run.planned)
             flyRun(problem, r, run);
-        if (progress)
-        {
-            std::lock_guard<std::mutex> lock(printMutex);
-            const std::size_t n = ++done;
-            char line[96];
-            std::snprintf(line, sizeof line, "execution: %zu/%zu runs flown", n, r.runs.size());
-            progress(line, n == r.runs.size());
-        }
-    });
-
-    for (std::size_t k = 0; k < r.strategies.size(); ++k)
+    };
+    const auto report = [&](std::size_t n) {
+        char line[96];
+        std::snprintf(line, sizeof line, "execution: %zu/%zu runs flown", n, r.runs.size());
+        progress(line, n == r.runs.size());
+    };
+    if (TaskSpreader *spread = activeTaskSpreader())
     {
-        StrategySpread s;
-        s.strategy = controlStrategyName(r.strategies[k]);
-        std::vector<double> dist, delay, speed;
-        for (const ExecutionRun &run : r.runs)
-        {
-            if (!run.planned)
-                continue;
-            const FlownTrack &f = run.flown[k];
-            ++s.runs;
-            s.reached += f.reached ? 1 : 0;
-            s.grounded += f.grounded ? 1 : 0;
-            dist.push_back(f.finalDistance);
-            if (f.reached)
-                delay.push_back(f.arrivalTime - f.plannedArrival);
-            speed.push_back(f.madeGoodSpeed);
-        }
-        s.finalDistance = measureSpread(dist);
-        s.arrivalDelay = measureSpread(delay);
-        s.madeGoodSpeed = measureSpread(speed);
-        r.spread.push_back(s);
+        // the runs spread over the processes of a job, each returned whole
+        const std::vector<std::string> out = spread->run(
+            "execution run", r.runs.size(),
+            [&](std::size_t i) {
+                ExecutionRun run = r.runs[i];
+                planAndFly(run);
+                return packRun(run);
+            },
+            [&](std::size_t n, std::size_t) {
+                if (progress)
+                    report(n);
+            });
+        for (std::size_t i = 0; i < out.size(); ++i)
+            unpackRun(out[i], r.runs[i]);
+        r.threads = static_cast<unsigned>(std::min<std::size_t>(static_cast<std::size_t>(spread->size()),
+                                                                r.runs.size()));
     }
+    else
+    {
+        ThreadPool pool(e.threads);
+        r.threads = std::min<unsigned>(pool.size(), static_cast<unsigned>(r.runs.size()));
+        std::atomic<std::size_t> done{0};
+        std::mutex printMutex;
+        pool.parallelFor(r.runs.size(), [&](std::size_t i) {
+            planAndFly(r.runs[i]);
+            if (progress)
+            {
+                std::lock_guard<std::mutex> lock(printMutex);
+                report(++done);
+            }
+        });
+    }
+
+    r.spread = strategySpreads(r);
     // the truth against the forecast over the box and the runs' time window
     double latest = plan.departure;
     for (const ExecutionRun &run : r.runs)

@@ -1,0 +1,73 @@
+#pragma once
+/// @file MpiTaskSpreader.h
+/// @brief The TaskSpreader of an MPI job (TaskSpread.h): rank 0 hands out task indices one at a time to the ranks
+/// that ask for the next (dynamic load balancing: tasks differ a lot in length) and computes tasks itself in a
+/// thread of its own between the requests; every result goes to rank 0, which broadcasts them all (or the first
+/// failure) to every rank. Only the executables include this layer (library: ompl_glider_mpi, CMake option
+/// OMPL_GLIDER_WITH_MPI); MPI calls are made by each rank's main thread only (MPI_THREAD_FUNNELED).
+
+#include <memory>
+#include <string>
+
+#include "ompl_glider/TaskSpread.h"
+
+namespace ompl_glider
+{
+class MpiTaskSpreader : public TaskSpreader
+{
+public:
+    /// @brief Initialises MPI (MPI_Init_thread) unless it is already; finalises it on destruction if it did.
+    MpiTaskSpreader(int &argc, char **&argv);
+    ~MpiTaskSpreader() override;
+    MpiTaskSpreader(const MpiTaskSpreader &) = delete;
+    MpiTaskSpreader &operator=(const MpiTaskSpreader &) = delete;
+
+    /// @brief True when the environment says an MPI launcher started this process (mpirun / mpiexec of OpenMPI or
+    /// MPICH, Slurm's srun with PMI or PMIx): only then do the executables initialise MPI.
+    static bool launched();
+
+    int rank() const override
+    {
+        return rank_;
+    }
+    int size() const override
+    {
+        return size_;
+    }
+    std::vector<std::string> run(const std::string &what, std::size_t n, const Task &task,
+                                 const Progress &progress = {}) override;
+
+    /// @brief Bytes sent and received by this rank in run() so far (task indices, results, broadcasts).
+    double bytesMoved() const
+    {
+        return bytes_;
+    }
+    /// @brief A task running longer than this many seconds (> 0) on a rank ends the job (MPI_Abort) with a message
+    /// naming the rank and the task; 0: no limit. Read from OMPL_GLIDER_TASK_TIME_LIMIT by the constructor.
+    void setTaskTimeLimit(double seconds)
+    {
+        timeLimit_ = seconds;
+    }
+
+private:
+    std::vector<std::string> master(const std::string &what, std::size_t n, const Task &task, const Progress &progress);
+    void worker(const std::string &what, std::size_t n, const Task &task);
+    std::vector<std::string> share(const std::string &what, std::vector<std::string> results);
+
+    int rank_{0};
+    int size_{1};
+    bool initialised_{false};
+    double timeLimit_{0.0};
+    double bytes_{0.0};
+    std::size_t tasks_{0};  ///< tasks this rank computed
+    // OMPL_GLIDER_MPI_STATS set: each rank prints its tasks and bytes when the spreader ends
+    // the first failure of a run, as rank 0 knows it (kind 1: ompl_glider::Error, 2: another exception)
+    struct Failure
+    {
+        int kind{0};
+        int rank{0};
+        long long task{-1};
+        std::string reason;
+    } failure_;
+};
+}  // namespace ompl_glider

@@ -1,0 +1,274 @@
+// The TaskSpreader of an MPI job (MpiTaskSpreader.h): rank 0 dispatches task indices and computes tasks in a thread
+// of its own; the other ranks ask for a task, compute it, send the result and ask again.
+#include "ompl_glider/mpi/MpiTaskSpreader.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <mutex>
+#include <thread>
+
+#include <mpi.h>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace
+{
+constexpr int kTagResult = 7101;  // worker -> rank 0: the finished task (or -1) and its result, asking for the next
+constexpr int kTagTask = 7102;    // rank 0 -> worker: the next task index, -1: no more
+using Clock = std::chrono::steady_clock;
+
+/// Waits for a non-blocking request without spinning a core (OpenMPI's blocking calls poll busily).
+void waitFor(MPI_Request &request)
+{
+    int flag = 0;
+    MPI_Test(&request, &flag, MPI_STATUS_IGNORE);
+    while (!flag)
+    {
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+        MPI_Test(&request, &flag, MPI_STATUS_IGNORE);
+    }
+}
+
+/// Broadcasts @p bytes from rank 0 (its size first; in pieces below 2^30 bytes).
+void broadcast(std::string &bytes, double &moved)
+{
+    std::uint64_t size = bytes.size();
+    MPI_Request r;
+    MPI_Ibcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD, &r);
+    waitFor(r);
+    bytes.resize(static_cast<std::size_t>(size));
+    const std::size_t piece = std::size_t(1) << 30;
+    for (std::size_t at = 0; at < bytes.size(); at += piece)
+    {
+        const int count = static_cast<int>(std::min(piece, bytes.size() - at));
+        MPI_Ibcast(&bytes[at], count, MPI_BYTE, 0, MPI_COMM_WORLD, &r);
+        waitFor(r);
+    }
+    moved += 8.0 + static_cast<double>(bytes.size());
+}
+
+/// Runs one task, catching what it throws: (kind, result or reason); kind 0 ok, 1 ompl_glider::Error, 2 another.
+/// OMPL_GLIDER_FAIL_TASK="what:i" makes task i of @p what fail as bad input would (the fault path's tests).
+std::pair<int, std::string> attempt(const TaskSpreader::Task &task, std::size_t i, const std::string &what)
+{
+    try
+    {
+        const char *fail = std::getenv("OMPL_GLIDER_FAIL_TASK");
+        if (fail && std::string(fail) == what + ":" + std::to_string(i))
+            throw Error("failure injected by OMPL_GLIDER_FAIL_TASK=" + std::string(fail));
+        return {0, task(i)};
+    }
+    catch (const Error &e)
+    {
+        return {1, e.what()};
+    }
+    catch (const std::bad_alloc &)
+    {
+        return {2, "out of memory"};
+    }
+    catch (const std::exception &e)
+    {
+        return {2, e.what()};
+    }
+    catch (...)
+    {
+        return {2, "unknown exception"};
+    }
+}
+}  // namespace
+
+bool MpiTaskSpreader::launched()
+{
+    for (const char *name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE", "MPI_LOCALNRANKS"})
+        if (std::getenv(name))
+            return true;
+    return false;
+}
+
+MpiTaskSpreader::MpiTaskSpreader(int &argc, char **&argv)
+{
+    int done = 0;
+    MPI_Initialized(&done);
+    if (!done)
+    {
+        int provided = 0;
+        MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+        initialised_ = true;
+    }
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    if (const char *limit = std::getenv("OMPL_GLIDER_TASK_TIME_LIMIT"))
+        timeLimit_ = std::atof(limit);
+}
+
+MpiTaskSpreader::~MpiTaskSpreader()
+{
+    if (std::getenv("OMPL_GLIDER_MPI_STATS"))
+        std::fprintf(stderr, "rank %d: %zu tasks, %.0f bytes sent and received\n", rank_, tasks_, bytes_);
+    int finalized = 0;
+    MPI_Finalized(&finalized);
+    if (initialised_ && !finalized)
+        MPI_Finalize();
+}
+
+std::vector<std::string> MpiTaskSpreader::run(const std::string &what, std::size_t n, const Task &task,
+                                              const Progress &progress)
+{
+    const TaskSpreadScope scope;  // tasks within these tasks run locally
+    failure_ = Failure();
+    std::vector<std::string> results;
+    if (rank_ == 0)
+        results = master(what, n, task, progress);
+    else
+        worker(what, n, task);
+    return share(what, std::move(results));
+}
+
+std::vector<std::string> MpiTaskSpreader::master(const std::string &what, std::size_t n, const Task &task,
+                                                 const Progress &progress)
+{
+    std::mutex m;
+    std::size_t next = 0, done = 0;
+    bool stop = false;
+    std::vector<std::string> results(n);
+    std::vector<long long> running(static_cast<std::size_t>(size_), -1);  // the task of each rank
+    std::vector<Clock::time_point> since(static_cast<std::size_t>(size_));
+    const auto take = [&](int rank) -> long long {
+        std::lock_guard<std::mutex> lock(m);
+        const long long i = (stop || next >= n) ? -1 : static_cast<long long>(next++);
+        running[static_cast<std::size_t>(rank)] = i;
+        since[static_cast<std::size_t>(rank)] = Clock::now();
+        return i;
+    };
+    const auto finish = [&](int rank, long long i, std::pair<int, std::string> outcome) {
+        std::lock_guard<std::mutex> lock(m);
+        if (outcome.first == 0)
+        {
+            results[static_cast<std::size_t>(i)] = std::move(outcome.second);
+            ++done;
+        }
+        else
+        {
+            if (failure_.kind == 0)
+                failure_ = {outcome.first, rank, i, outcome.second};
+            stop = true;
+        }
+    };
+    // rank 0's own share, in a thread that makes no MPI calls
+    std::thread local([&] {
+        for (long long i = take(0); i >= 0; i = take(0))
+        {
+            finish(0, i, attempt(task, static_cast<std::size_t>(i), what));
+            ++tasks_;
+        }
+    });
+    int stopped = 0;
+    std::size_t reported = 0;
+    while (stopped < size_ - 1)
+    {
+        int flag = 0;
+        MPI_Status st;
+        MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &flag, &st);
+        if (!flag)
+        {
+            std::lock_guard<std::mutex> lock(m);
+            if (progress && done != reported)
+                progress(reported = done, n);
+            for (int r = 0; r < size_ && timeLimit_ > 0.0; ++r)
+                if (running[static_cast<std::size_t>(r)] >= 0 &&
+                    std::chrono::duration<double>(Clock::now() - since[static_cast<std::size_t>(r)]).count() > timeLimit_)
+                {
+                    std::fprintf(stderr, "\nrank %d, %s %lld: still running after %g s (OMPL_GLIDER_TASK_TIME_LIMIT); "
+                                         "the job is ended, nothing written\n",
+                                 r, what.c_str(), running[static_cast<std::size_t>(r)], timeLimit_);
+                    std::fflush(stderr);
+                    MPI_Abort(MPI_COMM_WORLD, 3);
+                }
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+            continue;
+        }
+        int count = 0;
+        MPI_Get_count(&st, MPI_BYTE, &count);
+        std::string message(static_cast<std::size_t>(count), '\0');
+        MPI_Recv(&message[0], count, MPI_BYTE, st.MPI_SOURCE, kTagResult, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        bytes_ += count;
+        ByteReader in(message);
+        const auto i = in.value<long long>();
+        const auto kind = in.value<int>();
+        std::string payload;
+        in.get(payload);
+        if (i >= 0)
+            finish(st.MPI_SOURCE, i, {kind, std::move(payload)});
+        long long give = take(st.MPI_SOURCE);
+        MPI_Send(&give, 1, MPI_LONG_LONG, st.MPI_SOURCE, kTagTask, MPI_COMM_WORLD);
+        bytes_ += sizeof give;
+        if (give < 0)
+            ++stopped;
+    }
+    local.join();
+    if (progress && failure_.kind == 0 && done != reported)
+        progress(done, n);
+    return results;
+}
+
+void MpiTaskSpreader::worker(const std::string &what, std::size_t n, const Task &task)
+{
+    long long i = -1;
+    std::pair<int, std::string> outcome{0, ""};
+    for (;;)
+    {
+        ByteWriter out;
+        out.put(i);
+        out.put(outcome.first);
+        out.put(outcome.second);
+        std::string message = out.take();
+        MPI_Send(message.data(), static_cast<int>(message.size()), MPI_BYTE, 0, kTagResult, MPI_COMM_WORLD);
+        bytes_ += static_cast<double>(message.size());
+        MPI_Request r;
+        MPI_Irecv(&i, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, &r);
+        waitFor(r);
+        bytes_ += sizeof i;
+        if (i < 0 || static_cast<std::size_t>(i) >= n)
+            return;
+        outcome = attempt(task, static_cast<std::size_t>(i), what);
+        ++tasks_;
+    }
+}
+
+std::vector<std::string> MpiTaskSpreader::share(const std::string &what, std::vector<std::string> results)
+{
+    std::string head;
+    if (rank_ == 0)
+    {
+        ByteWriter w;
+        w.put(failure_.kind);
+        w.put(failure_.rank);
+        w.put(failure_.task);
+        w.put(failure_.reason);
+        if (failure_.kind == 0)
+            w.put(results);
+        head = w.take();
+    }
+    broadcast(head, bytes_);
+    ByteReader in(head);
+    in.get(failure_.kind);
+    in.get(failure_.rank);
+    in.get(failure_.task);
+    in.get(failure_.reason);
+    if (failure_.kind != 0)
+    {
+        const std::string message = "rank " + std::to_string(failure_.rank) + ", " + what + " " +
+                                    std::to_string(failure_.task) + ": " + failure_.reason;
+        if (failure_.kind == 1)
+            throw Error(message);
+        throw std::runtime_error(message);
+    }
+    if (rank_ != 0)
+        in.get(results);
+    return results;
+}
+}  // namespace ompl_glider

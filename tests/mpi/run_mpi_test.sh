@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# One MPI test of ctest (tests/mpi/tests.cmake): the same work in one process and under mpirun -np NP, compared
+# (compare_runs.py), or a job whose task fails or overruns, which must exit non-zero naming the rank and the task
+# and leave nothing written.
+#   run_mpi_test.sh MODE NP MPIEXEC GLIDER_PLAN GLIDER_CAMPAIGN
+# MODE: campaign | ensemble | execution | fail_plan | fail_campaign | time_limit
+set -uo pipefail
+MODE=$1 NP=$2 MPIEXEC=$3 PLAN=$4 CAMPAIGN=$5
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+WORK="$(mktemp -d)"
+trap 'rm -rf "$WORK"' EXIT
+# OpenMPI refuses root without these (CI runs as root); several ranks on few cores need --oversubscribe
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+MPIRUN=("$MPIEXEC" --oversubscribe -np "$NP")
+CAMPAIGN_ARGS=(--no-reference --problems open_water --planners "ZA*TVE,A*TVE" --runs 2 --time 1)
+fail() { echo "FAIL: $*"; exit 1; }
+
+# a failing job: non-zero exit, the rank and the task in the message, no output left
+expect_failure() {  # expect_failure PATTERN OUTDIR command...
+  local pattern=$1 out=$2
+  shift 2
+  "$@" >"$WORK/stdout" 2>"$WORK/stderr" && fail "the job exited 0"
+  grep -q "$pattern" "$WORK/stderr" || { cat "$WORK/stderr"; fail "no '$pattern' in the message"; }
+  if [ -e "$out" ] && [ -n "$(ls -A "$out")" ]; then ls -la "$out"; fail "output left in $out"; fi
+  ls "$(dirname "$out")" | grep -q "staging\|\.part" && fail "temporary files left beside $out"
+  echo "ok: $(grep -m1 "$pattern" "$WORK/stderr")"
+}
+
+case "$MODE" in
+  campaign)
+    mkdir -p "$WORK/one" "$WORK/mpi"
+    "$CAMPAIGN" "${CAMPAIGN_ARGS[@]}" "$WORK/one" >/dev/null || fail "one process"
+    "${MPIRUN[@]}" "$CAMPAIGN" "${CAMPAIGN_ARGS[@]}" "$WORK/mpi" >/dev/null 2>"$WORK/stderr" || { cat "$WORK/stderr"; fail "mpirun"; }
+    python3 "$HERE/compare_runs.py" campaign "$WORK/one" "$WORK/mpi" || fail "the logs differ"
+    ;;
+  ensemble|execution)
+    "$PLAN" --mission "$HERE/$MODE.yaml" --out "$WORK/one" >/dev/null 2>&1 || fail "one process"
+    "${MPIRUN[@]}" "$PLAN" --mission "$HERE/$MODE.yaml" --out "$WORK/mpi" >"$WORK/stdout" 2>"$WORK/stderr" ||
+      { cat "$WORK/stderr"; fail "mpirun"; }
+    [ "$(grep -c "^wrote" "$WORK/stdout")" = "$(ls "$WORK/one" | wc -l)" ] || fail "not one set of files written by rank 0"
+    python3 "$HERE/compare_runs.py" plan "$WORK/one" "$WORK/mpi" || fail "the outputs differ"
+    ;;
+  fail_plan)
+    OMPL_GLIDER_FAIL_TASK="ensemble candidate:3" expect_failure "rank [0-9]*, ensemble candidate 3: failure injected" \
+      "$WORK/ens" "${MPIRUN[@]}" "$PLAN" --mission "$HERE/ensemble.yaml" --out "$WORK/ens"
+    OMPL_GLIDER_FAIL_TASK="execution run:5" expect_failure "rank [0-9]*, execution run 5: failure injected" \
+      "$WORK/exe" "${MPIRUN[@]}" "$PLAN" --mission "$HERE/execution.yaml" --out "$WORK/exe"
+    ;;
+  fail_campaign)
+    mkdir -p "$WORK/out"
+    OMPL_GLIDER_FAIL_TASK="benchmark run:2" expect_failure "rank [0-9]*, benchmark run 2: failure injected" \
+      "$WORK/out" "${MPIRUN[@]}" "$CAMPAIGN" "${CAMPAIGN_ARGS[@]}" "$WORK/out"
+    ;;
+  time_limit)
+    OMPL_GLIDER_TASK_TIME_LIMIT=0.01 expect_failure "rank [0-9]*, execution run [0-9]*: still running after 0.01 s" \
+      "$WORK/exe" "${MPIRUN[@]}" "$PLAN" --mission "$HERE/execution.yaml" --out "$WORK/exe"
+    ;;
+  *) fail "unknown mode $MODE" ;;
+esac
+echo "ok: $MODE with $NP processes"
