@@ -136,7 +136,7 @@ OutputLock::OutputLock(const std::string &directory)
     const fs::path target = output_detail::resolveOutputDirectory(directory);
     std::error_code ec;
     fs::create_directories(target.parent_path(), ec);
-    path_ = (target.parent_path() / ("." + baseName(target) + ".lock")).string();
+    path_ = (output_detail::workDirOf(target) / ("." + baseName(target) + ".lock")).string();
     const std::lock_guard<std::mutex> guard(lockMutex());
     HeldLock &held = heldLocks()[path_];
     if (held.count > 0)
@@ -230,7 +230,7 @@ void removeStaleStaging(const fs::path &target)
     std::error_code ec;
     const std::string base = baseName(target);
     std::vector<fs::path> stale;
-    for (const fs::directory_entry &e : fs::directory_iterator(target.parent_path(), ec))
+    for (const fs::directory_entry &e : fs::directory_iterator(workDirOf(target), ec))
         if (isStagingName(e.path().filename().string(), base) &&
             fs::symlink_status(e.path(), ec).type() == fs::file_type::directory)
             stale.push_back(e.path());
@@ -238,10 +238,19 @@ void removeStaleStaging(const fs::path &target)
         fs::remove_all(p, ec);
 }
 
+fs::path workDirOf(const fs::path &target)
+{
+    const fs::path parent = target.parent_path();
+    if (::access(parent.c_str(), W_OK | X_OK) == 0)
+        return parent;
+    std::error_code ec;
+    return fs::is_directory(target, ec) && ::access(target.c_str(), W_OK | X_OK) == 0 ? target : parent;
+}
+
 fs::path makeStaging(const fs::path &target)
 {
     static std::atomic<unsigned> counter{0};
-    const fs::path staging = target.parent_path() / ("." + baseName(target) + ".tmp-" + std::to_string(::getpid()) +
+    const fs::path staging = workDirOf(target) / ("." + baseName(target) + ".tmp-" + std::to_string(::getpid()) +
                                                      "-" + std::to_string(counter++));
     std::error_code ec;
     if (!fs::create_directory(staging, ec))

@@ -23,6 +23,9 @@ void removeStaleStaging(const std::filesystem::path &target);
 
 /// @brief A new, empty staging directory beside @p target.
 std::filesystem::path makeStaging(const std::filesystem::path &target);
+/// Where the lock file and the staging directory of @p target go: beside it, or inside it when its parent may not be
+/// written (the run then fills the target file by file).
+std::filesystem::path workDirOf(const std::filesystem::path &target);
 
 /// @brief Moves the files @p names of @p staging into @p target (see OutputWriter.h): one exchange of the two
 /// directories when @p target is missing or holds only an earlier run's outputs (@p previous, its summary.json's

@@ -189,22 +189,25 @@ void checkOutputDirectory(const std::string &directory)
     std::error_code ec;
     if (fs::exists(target, ec) && !fs::is_directory(target, ec))
         throw Error("output directory '" + directory + "' exists and is not a directory");
-    // The staging directory is made beside the target: its parent (or the nearest existing ancestor) must be a
-    // writable directory.
+    // The staging directory is made beside the target (its parent, or the nearest existing ancestor, must be a
+    // writable directory), or inside the target when only the target may be written.
     fs::path parent = target.parent_path();
     while (!parent.empty() && !fs::exists(parent, ec) && parent != parent.root_path())
         parent = parent.parent_path();
     if (!fs::is_directory(parent, ec))
         throw Error("output directory '" + directory + "': '" + parent.string() + "' is not a directory");
-    if (::access(parent.c_str(), W_OK | X_OK) != 0 ||
-        (fs::exists(target, ec) && ::access(target.c_str(), W_OK | X_OK) != 0))
+    const bool targetExists = fs::exists(target, ec);
+    if (targetExists && ::access(target.c_str(), W_OK | X_OK) != 0)
+        throw Error("output directory '" + directory + "' is not writable (" + std::strerror(errno) + ")");
+    const fs::path work = targetExists ? output_detail::workDirOf(target) : parent;
+    if (::access(work.c_str(), W_OK | X_OK) != 0)
         throw Error("output directory '" + directory + "' is not writable (" + std::strerror(errno) + ")");
     // access() says yes to root everywhere (even in /proc or on a read-only mount): make and remove a directory
     // where the staging directory will go.
-    const fs::path probe = parent / (".ompl_glider-probe-" + std::to_string(::getpid()));
+    const fs::path probe = work / (".ompl_glider-probe-" + std::to_string(::getpid()));
     if (!fs::create_directory(probe, ec))
         throw Error("output directory '" + directory + "' cannot be written: no directory can be made in '" +
-                    parent.string() + "'" + (ec ? " (" + ec.message() + ")" : std::string()));
+                    work.string() + "'" + (ec ? " (" + ec.message() + ")" : std::string()));
     fs::remove(probe, ec);
 }
 

@@ -60,6 +60,21 @@ check "directory where a file goes: exit 2 ($rc)" "[ $rc -eq 2 ]"
 check "directory where a file goes: named" "grep -q \"holds a directory 'path.csv'\" err.txt"
 check "directory where a file goes: nothing replaced" "[ \"\$(digest blocked)\" = \"\$b\" ]"
 
+# --- an output directory whose parent the user may not write (a home directory's parent) ----------------------------
+# (as root: the run is made as nobody, into a directory nobody owns inside one only root may write)
+if [ "$(id -u)" -eq 0 ] && command -v runuser >/dev/null; then
+  mkdir -p locked/own && chmod 755 . locked && chown nobody locked/own
+  runuser -u nobody -- "$G" "${quick[@]}" --out locked/own >/dev/null 2>err.txt
+  rc=$?
+  check "parent not writable: the run writes into its own directory ($rc)" "[ $rc -eq 0 ] && [ -s locked/own/summary.json ]"
+  runuser -u nobody -- "$G" "${quick[@]}" --out locked/own >/dev/null 2>err.txt
+  rc=$?
+  check "parent not writable: a second run replaces the files ($rc)" "[ $rc -eq 0 ] && [ $(staging locked/own) -eq 0 ]"
+  check "parent not writable: nothing beside the directory" "[ \"\$(ls -A locked)\" = own ]"
+else
+  echo "skip parent not writable: needs root and runuser"
+fi
+
 # --- a full and a read-only device ----------------------------------------------------------------------------------
 if unshare -rm true 2>/dev/null; then
   cat >m.yaml <<'EOF'
