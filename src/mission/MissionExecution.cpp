@@ -18,6 +18,7 @@
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
+#include "PlanningInternal.h"
 
 namespace ompl_glider
 {
@@ -338,6 +339,13 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     {
         const auto more = executionPairs(problem, e.pairs, e.seed, minDistance, plan.departure);
         pairs.insert(pairs.end(), more.begin(), more.end());
+    }
+    {
+        // surfacings per flight over its window (the mission's duration, else twice the planned trip)
+        const double planned = plan.solved ? plan.path.back().t - plan.departure
+                                           : problem.minTripDuration(m.vehicle.speed);
+        const double window = std::isnan(e.duration) ? 2.0 * planned : e.duration;
+        planning_detail::checkExecutionWork(m, r.surfacingInterval, window, pairs.size(), r.strategies.size());
     }
     r.runs.resize(pairs.size());
     for (std::size_t i = 0; i < pairs.size(); ++i)

@@ -29,7 +29,21 @@ bool pipelineParameter(const std::string &name)
     return name == "refiner_max_evaluations";
 }
 
-/// Sets the mission's planner parameters through OMPL's ParamSet (the names of declareParam).
+/// The declared range "lo:step:hi" of a numeric parameter as [lo, hi]; false for other forms ("0,1", empty).
+bool declaredRange(const std::string &range, double &lo, double &hi)
+{
+    const std::size_t a = range.find(':'), b = range.rfind(':');
+    if (a == std::string::npos || b == a)
+        return false;
+    char *endLo = nullptr, *endHi = nullptr;
+    const std::string loText = range.substr(0, a), hiText = range.substr(b + 1);
+    lo = std::strtod(loText.c_str(), &endLo);
+    hi = std::strtod(hiText.c_str(), &endHi);
+    return endLo != loText.c_str() && *endLo == '\0' && endHi != hiText.c_str() && *endHi == '\0';
+}
+
+/// Sets the mission's planner parameters through OMPL's ParamSet (the names of declareParam); a number outside the
+/// declared range (declareParam's "lo:step:hi") is refused, naming the range.
 void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
 {
     ompl::base::ParamSet &params = planner.params();
@@ -47,6 +61,14 @@ void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
             if (range == "0,1" && value != "0" && value != "1" && value != "true" && value != "false")
                 throw Error(parameterPlace(m, name) + ": planner " + planner.getName() +
                             " expects true or false, got '" + value + "'");
+            double lo = 0.0, hi = 0.0;
+            char *endV = nullptr;
+            const double asNumber = std::strtod(value.c_str(), &endV);
+            if (!pipelineParameter(name) && declaredRange(range, lo, hi) && endV != value.c_str() && *endV == '\0' &&
+                !(asNumber >= lo && asNumber <= hi))
+                throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " accepts " + name + " in " +
+                            text::number(lo) + " .. " + text::number(hi) + " (its declared range " + range +
+                            "), got '" + value + "'");
             bool accepted = false;
             try
             {
@@ -151,6 +173,7 @@ ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::ba
                         ": use a larger time_step");
         }
     }
+    checkPlannerWork(problem, *ctx, *planner, departure);
     return planner;
 }
 
