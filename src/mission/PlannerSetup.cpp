@@ -61,14 +61,6 @@ void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
             if (range == "0,1" && value != "0" && value != "1" && value != "true" && value != "false")
                 throw Error(parameterPlace(m, name) + ": planner " + planner.getName() +
                             " expects true or false, got '" + value + "'");
-            double lo = 0.0, hi = 0.0;
-            char *endV = nullptr;
-            const double asNumber = std::strtod(value.c_str(), &endV);
-            if (!pipelineParameter(name) && declaredRange(range, lo, hi) && endV != value.c_str() && *endV == '\0' &&
-                !(asNumber >= lo && asNumber <= hi))
-                throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " accepts " + name + " in " +
-                            text::number(lo) + " .. " + text::number(hi) + " (its declared range " + range +
-                            "), got '" + value + "'");
             bool accepted = false;
             try
             {
@@ -89,6 +81,13 @@ void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
                 !(std::abs(want - got) <= 1e-9 * std::max(1.0, std::abs(want))))
                 throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " rejects the value '" +
                             value + "' (it would be read as " + stored + "; range " + range + ")");
+            // the setter's own checks first (their reasons are the more precise), then the declared range
+            double lo = 0.0, hi = 0.0;
+            if (!pipelineParameter(name) && declaredRange(range, lo, hi) && endA != value.c_str() && *endA == '\0' &&
+                !(want >= lo && want <= hi))
+                throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " accepts " + name + " in " +
+                            text::number(lo) + " .. " + text::number(hi) + " (its declared range " + range +
+                            "), got '" + value + "'");
         }
         else if (!pipelineParameter(name))
         {
