@@ -169,6 +169,7 @@ void applyExecution(const Flags &f, MissionSpec &m)
         {
             throw UsageError{std::string("--surfacing-interval: ") + err.what()};
         }
+        m.marks["execution.surfacing_interval"] = SourceMark{"--surfacing-interval", 0};
     }
     if (!f.strategies.empty())
     {
@@ -282,6 +283,7 @@ void applyOutputFlags(const Flags &f, MissionSpec &m)
         }
         if (!(m.outputs.isochroneInterval > 0.0))
             throw UsageError{"--isochrone-interval: must be > 0, got '" + f.isochroneInterval + "'"};
+        m.marks["outputs.isochrone_interval"] = SourceMark{"--isochrone-interval", 0};
     }
     if ((f.isochrones || !f.isochroneInterval.empty()) &&
         !m.outputs.wants(OutputFormatId::Isochrones))
@@ -430,7 +432,7 @@ void defineFlags(CLI::App &app, Flags &f)
         ->group(ex);
     app.add_option("--surfacing-interval", f.surfacingInterval,
                    "time between surfacings: a number in the mission's time unit, or e.g. '1 h', '30 min' (default "
-                   "1 h)")
+                   "1 h; without a time unit a twentieth of the planned trip)")
         ->group(ex);
     app.add_option("--strategies", f.strategies,
                    "control strategies compared, e.g. current_sensitive,current_blind,greedy,replan (default: all)")

@@ -148,6 +148,20 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
             r.travelTime = onMean.back().t - departure;
         }
     }
+    if (r.solved && !std::isfinite(e.objectiveValue))
+    {
+        // every candidate fails in some member: no plan is robust over the ensemble (exit 1, the members named)
+        std::string failing;
+        for (std::size_t k = 0; k < n; ++k)
+            if (!std::isfinite(times[best][k]))
+                failing += (failing.empty() ? "" : ", ") + std::string("member ") + std::to_string(k) + " (" +
+                           members[k]->name() + ")";
+        r.solved = false;
+        r.status = kNoPathStatus;
+        r.reason = std::string("not robust: no candidate plan can be flown in every member of the ensemble (objective ") +
+                   ensembleObjectiveName(e.objective) + "); the best, planned on the " + e.chosen +
+                   ", is impassable in " + failing;
+    }
     r.ensemble = e;
     return r;
 }

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
+#include "PlanningInternal.h"
+#include "ompl_glider/Exception.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/ompl/GliderSetup.h"
@@ -22,8 +25,20 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
     const double span = plan.solved && std::isfinite(plan.travelTime) ? std::min(plan.travelTime, horizon) : horizon;
     std::vector<double> times;
     if (std::isfinite(interval) && interval > 0.0)
-        for (double t = interval; t <= span * (1 + 1e-9) && times.size() < 1000; t += interval)
+    {
+        const double count = std::floor(span * (1 + 1e-9) / interval);
+        if (count > static_cast<double>(planning_detail::kMaxIsochrones))
+        {
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          ": an interval of %g gives %.4g isochrones over the %.4g the plan takes, more than the "
+                          "limit of %zu: use a longer interval",
+                          interval, count, span, planning_detail::kMaxIsochrones);
+            throw Error(m.place("outputs.isochrone_interval") + text);
+        }
+        for (double t = interval; t <= span * (1 + 1e-9); t += interval)
             times.push_back(t);
+    }
     else
         for (int k = 1; k <= 8; ++k)
             times.push_back(span * k / 8.0);

@@ -18,17 +18,28 @@
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
+#include "PlanningInternal.h"
 
 namespace ompl_glider
 {
 namespace
 {
-/// Surfacing interval of the mission: given, else one hour in its time unit.
-double surfacingInterval(const MissionSpec &m)
+/// Surfacing interval of the mission: given, else one hour in its time unit; a mission without a time unit (its
+/// numbers are no seconds) gets a twentieth of the planned trip @p trip. @p source says which.
+double surfacingInterval(const MissionSpec &m, double trip, std::string &source)
 {
     if (!std::isnan(m.execution.surfacingInterval))
+    {
+        source = "given";
         return m.execution.surfacingInterval;
-    return 3600.0 / m.timeUnitSeconds;
+    }
+    if (m.hasTimeUnit())
+    {
+        source = "default: 1 h";
+        return 3600.0 / m.timeUnitSeconds;
+    }
+    source = "default: a twentieth of the planned trip (the mission has no time unit)";
+    return trip / 20.0;
 }
 
 bool freeAt(const MissionProblem &problem, Point2 p, double t)
@@ -107,7 +118,8 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
     o.step = settings.step;
     o.radius = run.radius;
     o.depth = m.vehicle.depth;
-    o.endTime = run.plan.front().t + (std::isnan(e.duration) ? 2.0 * planned : e.duration);
+    o.endTime = std::min(run.plan.front().t + (std::isnan(e.duration) ? 2.0 * planned : e.duration),
+                         problem.getTruth()->timeEnd());  // never beyond the truth (checkTruthTimes())
     o.replanEvery = settings.replanEvery;
     o.headings = run.headings ? &*run.headings : nullptr;
     for (ControlStrategy s : settings.strategies)
@@ -118,6 +130,30 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
                                     problem.getEnvironment().get(), s, o));
     }
 }
+/// A truth that does not cover the flights in time is never extrapolated: refused when it starts after the
+/// departure or ends before the plan arrives, else the flights stop at its end and a note says so.
+void checkTruthTimes(const MissionProblem &problem, const PlannedPath &plan, double window, ExecutionResult &r)
+{
+    const MissionSpec &m = problem.getSpec();
+    if (!m.execution.truth)
+        return;
+    const CurrentField &truth = *problem.getTruth();
+    const auto at = [&](double t) {
+        const std::string iso = problem.isoTime(t);
+        return "t = " + std::to_string(t) + (iso.empty() ? "" : " (" + iso + ")");
+    };
+    if (truth.timeBegin() > plan.departure)
+        throw Error(m.place("execution.truth") + ": the truth begins at " + at(truth.timeBegin()) +
+                    ", after the departure at " + at(plan.departure) + ": give a truth that covers the flights");
+    const double arrival = plan.solved ? plan.path.back().t : plan.departure;
+    if (truth.timeEnd() < arrival)
+        throw Error(m.place("execution.truth") + ": the truth ends at " + at(truth.timeEnd()) +
+                    ", before the plan arrives at " + at(arrival) + ": give a truth that covers the flights");
+    if (truth.timeEnd() < plan.departure + window)
+        r.notes.push_back("the truth ends at " + at(truth.timeEnd()) + ", before the flights' window ends at " +
+                          at(plan.departure + window) + ": every flight stops there (not extrapolated)");
+}
+
 void putPoints(ByteWriter &w, const std::vector<TimedPoint> &v)
 {
     w.putEach(v, [](ByteWriter &o, const TimedPoint &p) {
@@ -322,7 +358,8 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     if (plan.headingRoute() && e.strategies == ExecutionSpec().strategies)
         r.strategies.insert(r.strategies.begin(), ControlStrategy::PlannedHeadings);
     r.truth = e.truth ? problem.getTruth()->name() : "forecast";
-    r.surfacingInterval = surfacingInterval(m);
+    const double trip = plan.solved ? plan.path.back().t - plan.departure : problem.minTripDuration(m.vehicle.speed);
+    r.surfacingInterval = surfacingInterval(m, trip, r.surfacingIntervalSource);
     if (!(r.surfacingInterval > 0.0) || !std::isfinite(r.surfacingInterval))
         throw Error(m.place("execution.surfacing_interval") + ": expected a duration > 0");
     // 30 RK4 steps per dive: the truth is smooth on that scale for every field here (checked against the closed
@@ -338,6 +375,12 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     {
         const auto more = executionPairs(problem, e.pairs, e.seed, minDistance, plan.departure);
         pairs.insert(pairs.end(), more.begin(), more.end());
+    }
+    {
+        // surfacings per flight over its window (the mission's duration, else twice the planned trip)
+        const double window = std::isnan(e.duration) ? 2.0 * trip : e.duration;
+        planning_detail::checkExecutionWork(m, r.surfacingInterval, window, pairs.size(), r.strategies.size());
+        checkTruthTimes(problem, plan, window, r);
     }
     r.runs.resize(pairs.size());
     for (std::size_t i = 0; i < pairs.size(); ++i)

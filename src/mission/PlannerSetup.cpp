@@ -29,7 +29,21 @@ bool pipelineParameter(const std::string &name)
     return name == "refiner_max_evaluations";
 }
 
-/// Sets the mission's planner parameters through OMPL's ParamSet (the names of declareParam).
+/// The declared range "lo:step:hi" of a numeric parameter as [lo, hi]; false for other forms ("0,1", empty).
+bool declaredRange(const std::string &range, double &lo, double &hi)
+{
+    const std::size_t a = range.find(':'), b = range.rfind(':');
+    if (a == std::string::npos || b == a)
+        return false;
+    char *endLo = nullptr, *endHi = nullptr;
+    const std::string loText = range.substr(0, a), hiText = range.substr(b + 1);
+    lo = std::strtod(loText.c_str(), &endLo);
+    hi = std::strtod(hiText.c_str(), &endHi);
+    return endLo != loText.c_str() && *endLo == '\0' && endHi != hiText.c_str() && *endHi == '\0';
+}
+
+/// Sets the mission's planner parameters through OMPL's ParamSet (the names of declareParam); a number outside the
+/// declared range (declareParam's "lo:step:hi") is refused, naming the range.
 void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
 {
     ompl::base::ParamSet &params = planner.params();
@@ -67,6 +81,13 @@ void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
                 !(std::abs(want - got) <= 1e-9 * std::max(1.0, std::abs(want))))
                 throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " rejects the value '" +
                             value + "' (it would be read as " + stored + "; range " + range + ")");
+            // the setter's own checks first (their reasons are the more precise), then the declared range
+            double lo = 0.0, hi = 0.0;
+            if (!pipelineParameter(name) && declaredRange(range, lo, hi) && endA != value.c_str() && *endA == '\0' &&
+                !(want >= lo && want <= hi))
+                throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " accepts " + name + " in " +
+                            text::number(lo) + " .. " + text::number(hi) + " (its declared range " + range +
+                            "), got '" + value + "'");
         }
         else if (!pipelineParameter(name))
         {
@@ -151,6 +172,7 @@ ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::ba
                         ": use a larger time_step");
         }
     }
+    checkPlannerWork(problem, *ctx, *planner, departure);
     return planner;
 }
 

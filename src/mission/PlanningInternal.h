@@ -12,6 +12,7 @@
 ///                       retimePath()
 ///  - GoalWindow.cpp     goals in time: the arrival moved into the goal window (timeArrival()), holdTimeOf()
 ///  - Evaluations.cpp    the evaluations of a plan: pilot waypoints, the optimal-control reference, the speed sweep
+///  - WorkEstimates.cpp  work estimates before the work: level set, Wavefront, stints, execution surfacings
 
 #include <chrono>
 #include <limits>
@@ -63,6 +64,26 @@ GliderProblem checkedProblem(const MissionProblem &problem, double departure, do
 /// The lattice planners keep dense arrays over the whole lattice (a travel time and a predecessor per vertex,
 /// TveSearch): refuse, naming the field or flag, a spacing whose lattice would not fit in memory.
 void checkLatticeSize(const MissionSpec &m, const GliderProblem &gp, double grid, const std::string &field);
+
+// WorkEstimates.cpp: the limits of the work a parameter controls (refused up front, with the estimate)
+
+inline constexpr double kMaxLevelSetSteps = 1e5;        ///< level-set time steps over the planning window
+inline constexpr double kMaxLevelSetWork = 2e11;        ///< level-set grid nodes x time steps
+inline constexpr double kMaxWavefrontNodes = 1e7;       ///< Wavefront space-time nodes before the fastest arrival
+inline constexpr double kMaxStintBearings = 360;        ///< CTS-A* bearings per expansion (1 degree)
+inline constexpr double kMaxStintFlights = 7.2e7;       ///< CTS-A* bearings x its expansion cap
+inline constexpr double kMaxSurfacingsPerFlight = 1e5;  ///< surfacings of one flown execution
+inline constexpr double kMaxSurfacings = 2e7;           ///< surfacings of all runs and strategies of an execution
+inline constexpr std::size_t kMaxIsochrones = 1000;     ///< isochrones of the isochrone output
+
+/// Refuses, naming the field with the estimate and the limit, a planner whose parameters make its work explode
+/// (LevelSet, Wavefront, the stint planners); called by makePlanner() once the parameters are set.
+void checkPlannerWork(const MissionProblem &problem, const GliderContext &ctx, const ompl::base::Planner &planner,
+                      double departure);
+
+/// Refuses an execution whose surfacing interval gives too many surfacings over @p window per flight, or in all.
+void checkExecutionWork(const MissionSpec &m, double interval, double window, std::size_t runs,
+                        std::size_t strategies);
 
 // NoPathReason.cpp
 

@@ -16,6 +16,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Ensembles.cpp
   ${CMAKE_CURRENT_LIST_DIR}/GoalWindow.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Evaluations.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/WorkEstimates.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Isochrones.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionExecution.cpp
 )

@@ -176,6 +176,15 @@ void printReport(std::ostream &out, const MissionResult &r)
             b += (b.empty() ? "" : " ") + format("%.1f", x);
         out << "Bearings (deg):     " << b << "\n";
     }
+    if (r.execution)
+    {
+        const ExecutionResult &e = *r.execution;
+        out << "Execution:          truth " << e.truth << ", " << e.runs.size() << " run(s) x " << e.strategies.size()
+            << " strategies, surfacing every " << num(e.surfacingInterval) << " (" << e.surfacingIntervalSource
+            << ")\n";
+        for (const std::string &note : e.notes)
+            out << "Execution note:     " << note << "\n";
+    }
     if (p.solved)
         printWaypoints(out, r);
     if (!r.speedSweep.empty())

@@ -86,6 +86,8 @@ json executionJson(const ExecutionResult &e, const MissionProblem &problem)
     json j;
     j["truth"] = e.truth;
     j["surfacing_interval"] = e.surfacingInterval;
+    j["surfacing_interval_source"] = e.surfacingIntervalSource;
+    j["notes"] = e.notes;
     j["step"] = e.step;
     const ExecutionRun &own = e.runs.front();
     j["radius"] = own.radius;

@@ -260,6 +260,42 @@ nc_case("cli-truth-file-missing", forecast(), "--truth: NetCDF file 'nothere.nc'
 case("cli-radius-zero", ["--radius", "0", "--out", "{out}"], 2, "--radius")
 case("cli-truth-with-mission", ["--mission", "m.yaml", "--truth", "forecast", "--out", "{out}"], 2,
      "cannot be combined", {"m.yaml": MISSION})
+# work estimates before work: refused with the estimate and the limit (no hang)
+yaml_case("levelset-cfl-tiny", mission("planner: {name: LevelSet, parameters: {cfl: 1e-6}}"),
+          "m.yaml:7: field 'planner.parameters.cfl': planner LevelSet accepts cfl in 0.1 .. 2")
+yaml_case("levelset-threads-huge", mission("planner: {name: LevelSet, parameters: {threads: 100000}}"),
+          "field 'planner.parameters.threads': planner LevelSet accepts threads in 0 .. 64")
+yaml_case("levelset-resolution-fine", mission("planner: {name: LevelSet, parameters: {resolution: 0.001}}"),
+          "m.yaml:7: field 'planner.parameters.resolution': the level set would take up to 8.32e+05 time steps")
+yaml_case("levelset-walled-in-long-horizon",
+          mission("planner: {name: LevelSet, horizon: 100000}",
+                  append="forbidden:\n  obstacles:\n    - {name: pocket, points: [[0, -1], [3, -1], [3, 1], [0, 1], "
+                  "[0, 0.6], [2.5, 0.6], [2.5, -0.6], [0, -0.6]]}\n"),
+          "field 'planner.horizon': the level set would take up to 8e+05 time steps")
+yaml_case("stints-bearing-step-tenth",
+          mission("planner: {name: CTS-A*}", "stints: {duration: 1, mission_duration: 30, bearing_step: 0.1}"),
+          "m.yaml:8: field 'stints.bearing_step': a bearing step of 0.1 degrees flies 3600 stints")
+yaml_case("stints-bearing-step-micro",
+          mission("planner: {name: init_optim}", "stints: {duration: 1, mission_duration: 30, bearing_step: 1e-6}"),
+          "more than the limit of 360 bearings")
+yaml_case("wavefront-fine-grid", mission("planner: {name: Wavefront, grid_size: 0.01, sectors: 5}"),
+          "m.yaml:7: field 'planner.grid_size': the Wavefront search settles 8.02e+05 lattice vertices")
+yaml_case("execution-surfacing-tiny", mission("execution: {surfacing_interval: 1e-7}"),
+          "m.yaml:8: field 'execution.surfacing_interval': a surfacing interval of 1e-07 gives up to")
+case("cli-surfacing-tiny", ["--surfacing-interval", "1e-7", "--out", "{out}"], 2,
+     "--surfacing-interval: a surfacing interval of 1e-07 gives up to 2.28e+08 surfacings per flight")
+case("cli-isochrone-interval-tiny", ["--isochrone-interval", "0.01", "--out", "{out}"], 2,
+     "--isochrone-interval: an interval of 0.01 gives 1139 isochrones over the 11.4 the plan takes")
+# an ensemble member that no candidate can cross: not robust, exit 1 with the member named
+yaml_case("ensemble-worst-member-impassable",
+          mission("current: {ensemble: [{type: uniform, parameters: {u: 0.1}}, {type: uniform, parameters: {u: -0.6}}]}",
+                  "planner: {name: zastartve, grid_size: 0.5, objective: worst}"),
+          "not robust: no candidate plan can be flown in every member of the ensemble (objective worst)", status=1)
+# a truth that ends before the plan arrives: refused, never extrapolated
+case("execution-truth-ends-early", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "field 'execution.truth': the truth ends at t = 7200",
+     {"f.cdl": forecast(), "t.cdl": forecast(replace=[("time = 0, 24, 48 ;", "time = 0, 1, 2 ;")]),
+      "m.yaml": NC_MISSION.replace("speed: 0.5", "speed: 1.0") + "execution: {truth: {type: netcdf, file: t.nc}}\n"})
 yaml_case("planner-refiner-evals-huge",
           mission("planner: {name: zastartve, parameters: {refiner_max_evaluations: 5e9}}"),
           "planner.parameters.refiner_max_evaluations")

@@ -67,6 +67,12 @@ struct ExecutionResult
     std::vector<ControlStrategy> strategies;  ///< in the mission's order
     std::string truth;            ///< name of the truth field ("forecast" when it is the forecast itself)
     double surfacingInterval{0.0};  ///< field units
+    /// Where the surfacing interval came from: "given", "default: 1 h", or for a mission without a time unit
+    /// "default: a twentieth of the planned trip (the mission has no time unit)"
+    std::string surfacingIntervalSource;
+    /// What the execution could not do as asked, said plainly (e.g. a truth that ends before the flights would):
+    /// printed in the report and written to summary.json (`execution.notes`)
+    std::vector<std::string> notes;
     double step{0.0};             ///< integration step while submerged (field units)
     unsigned replanEvery{1};      ///< replan strategy: surfacings between plans
     std::vector<ExecutionRun> runs;  ///< runs[0] is the mission's own pair

@@ -296,7 +296,8 @@ struct ExecutionSpec
     /// The ocean the glider flies in: a current source of the same family as `current` (an analytic flow, or a
     /// NetCDF file on the same calendar); unset: the forecast itself (truth = forecast).
     std::optional<CurrentSpec> truth;
-    /// Time between surfacings (field units); NaN: one hour (3600 s / units.time_s, or 3600 for a forecast).
+    /// Time between surfacings (field units); NaN: one hour (3600 s / units.time_s, or 3600 for a forecast), or
+    /// for a mission without a time unit (no units.time_s, no epoch, not a forecast) a twentieth of the planned trip.
     double surfacingInterval{std::numeric_limits<double>::quiet_NaN()};
     /// Strategies by name (current_sensitive, current_blind, greedy, replan), in the order given.
     std::vector<std::string> strategies{"current_sensitive", "current_blind", "greedy", "replan"};

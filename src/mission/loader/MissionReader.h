@@ -73,6 +73,11 @@ public:
     {
         return marks_;
     }
+    /// Records where @p field was given, for a value read without the typed readers above (durations, lengths).
+    void mark(const YAML::Node &node, const std::string &field) const
+    {
+        remember(node, field);
+    }
 
 private:
     void remember(const YAML::Node &node, const std::string &field) const

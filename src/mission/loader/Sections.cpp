@@ -541,6 +541,7 @@ double duration(const Reader &r, const YAML::Node &n, const std::string &f, cons
 {
     if (!n.IsScalar())
         r.fail(n, f, "expected a duration: a number in the mission's time unit, or e.g. '1 h', '30 min', '2 d'");
+    r.mark(n, f);
     try
     {
         return parseDuration(n.Scalar(), m.timeUnitSeconds, m.hasTimeUnit());
