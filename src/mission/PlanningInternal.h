@@ -67,7 +67,7 @@ void checkLatticeSize(const MissionSpec &m, const GliderProblem &gp, double grid
 
 // WorkEstimates.cpp: the limits of the work a parameter controls (refused up front, with the estimate)
 
-inline constexpr double kMaxLevelSetSteps = 1e5;        ///< level-set time steps over the planning window
+inline constexpr double kMaxLevelSetSteps = 1e6;        ///< level-set time steps over the planning window
 inline constexpr double kMaxLevelSetWork = 2e11;        ///< level-set grid nodes x time steps
 inline constexpr double kMaxWavefrontNodes = 1e7;       ///< Wavefront space-time nodes before the fastest arrival
 inline constexpr double kMaxStintBearings = 360;        ///< CTS-A* bearings per expansion (1 degree)

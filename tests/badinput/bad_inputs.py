@@ -268,10 +268,10 @@ yaml_case("levelset-threads-huge", mission("planner: {name: LevelSet, parameters
 yaml_case("levelset-resolution-fine", mission("planner: {name: LevelSet, parameters: {resolution: 0.001}}"),
           "m.yaml:7: field 'planner.parameters.resolution': the level set would take up to 8.32e+05 time steps")
 yaml_case("levelset-walled-in-long-horizon",
-          mission("planner: {name: LevelSet, horizon: 100000}",
+          mission("planner: {name: LevelSet, horizon: 1000000}",
                   append="forbidden:\n  obstacles:\n    - {name: pocket, points: [[0, -1], [3, -1], [3, 1], [0, 1], "
                   "[0, 0.6], [2.5, 0.6], [2.5, -0.6], [0, -0.6]]}\n"),
-          "field 'planner.horizon': the level set would take up to 8e+05 time steps")
+          "field 'planner.horizon': the level set would take up to 8e+06 time steps")
 yaml_case("stints-bearing-step-tenth",
           mission("planner: {name: CTS-A*}", "stints: {duration: 1, mission_duration: 30, bearing_step: 0.1}"),
           "m.yaml:8: field 'stints.bearing_step': a bearing step of 0.1 degrees flies 3600 stints")
