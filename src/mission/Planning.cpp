@@ -315,6 +315,9 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     }
     result.keepOff = m.safety.keepOff;
     result.safetyNote = problem.safetyNote();
+    result.forecastNotes = problem.forecastNotes();
+    for (const std::string &note : problem.endpointNotes())
+        result.forecastNotes.push_back(note);
     if (result.plan.solved && problem.getLand())
     {
         const PlannedPath &p = result.plan;
