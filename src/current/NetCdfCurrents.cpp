@@ -91,8 +91,8 @@ NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOption
     const std::vector<double> y = f.readAll1D(yv);
     if (x.empty() || y.empty())
         throw f.error("coordinates '" + l.xName + "'/'" + l.yName + "' have no values");
+    checkAxisValues(f, yv, y, "coordinate");  // (latitude first, as the loader checks them)
     checkAxisValues(f, xv, x, "coordinate");
-    checkAxisValues(f, yv, y, "coordinate");
     if (l.geographic)
     {
         // each longitude the shorter way from the first: a regional grid's span, wherever its seam

@@ -202,7 +202,7 @@ NetCdfCurrents loadForecast(const std::vector<std::string> &list, const MissionS
         for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
             if (!e.contains(p.x, p.y))
                 throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (" +
-                            (e.geographic ? "lon,lat" : "x,y") + ") lies outside '" + list.front() + "' (" + e.text() +
+                            (e.geographic ? "lon,lat" : "x,y") + ") lies outside the grid of '" + list.front() + "' (" + e.text() +
                             (e.geographic ? ")" : "; start and goal are in the file's own x/y units)"));
         if (!q.departure.empty() && !isNumber(q.departure))
         {
