@@ -318,6 +318,11 @@ void applySafetyFlags(const Flags &f, MissionSpec &m)
         m.marks["safety.bathymetry"] = SourceMark{"--bathymetry", 0};
     }
     m.safety.bathymetryVariable = f.bathymetryVariable;
+    if (f.snapToWater)
+    {
+        m.safety.snapToWater = true;
+        m.marks["safety.snap_to_water"] = SourceMark{"--snap-to-water", 0};
+    }
     if (!f.bathymetryVariable.empty() && f.bathymetry.empty() && !m.current.isForecast())
         throw UsageError{"--bathymetry-variable needs --bathymetry FILE"};
     if (!f.minDepth.empty() && f.bathymetry.empty() && !m.current.isForecast())
@@ -414,6 +419,10 @@ void defineFlags(CLI::App &app, Flags &f)
         ->group(safe);
     app.add_option("--min-depth", f.minDepth,
                    "forbid water shallower than this, e.g. '50m' (needs --bathymetry, or a forecast file with h)")
+        ->group(safe);
+    app.add_flag("--snap-to-water", f.snapToWater,
+                 "a start or goal on the forecast's land is moved to the nearest water (the report says where); "
+                 "without it such a start or goal is refused, naming the nearest water")
         ->group(safe);
     app.add_flag("--verbose", f.verbose, "show OMPL's log messages")->group(io);
     app.add_flag("--isochrones", f.isochrones,
@@ -626,6 +635,7 @@ MissionSpec forecastMissionOf(Flags f)
         f.forecast.speed = *f.speed;
     if (f.depth)
         f.forecast.depth = *f.depth;
+    f.forecast.snapToWater = f.snapToWater;
     MissionSpec m = forecastMission(f.forecast);
     applySettings(f, m);
     return m;

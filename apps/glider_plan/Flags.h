@@ -39,6 +39,7 @@ struct Flags
     ompl_glider::ForecastInput forecast;
     // safety margins: --keep-off, --bathymetry, --bathymetry-variable, --min-depth
     std::string keepOff, bathymetry, bathymetryVariable, minDepth;
+    bool snapToWater{false};  ///< --snap-to-water
 };
 
 /// @brief The output requests that go with every mode, --mission included: --isochrones and --isochrone-interval

@@ -56,6 +56,66 @@ bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &opt
     return netcdf_detail::detectLayout(f, opt).geographic;
 }
 
+bool NetCdfExtent::contains(double a, double b) const
+{
+    if (!(b >= latMin && b <= latMax))
+        return false;
+    if (!geographic)
+        return a >= lonMin && a <= lonMax;
+    const double lon = netcdf_detail::wrapTo(a, 0.5 * (lonMin + lonMax));
+    return allLongitudes || (lon >= lonMin - 1e-9 && lon <= lonMax + 1e-9);
+}
+
+std::string NetCdfExtent::text() const
+{
+    using ompl_glider::text::number;
+    if (!geographic)
+        return xName + " " + number(lonMin) + ".." + number(lonMax) + ", " + yName + " " + number(latMin) + ".." +
+               number(latMax);
+    return (allLongitudes ? std::string("lon all") : "lon " + number(lonMin) + ".." + number(lonMax)) + ", lat " +
+           number(latMin) + ".." + number(latMax);
+}
+
+NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOptions &opt)
+{
+    using namespace netcdf_detail;
+    NcFile f(path);
+    const Layout l = detectLayout(f, opt);
+    NetCdfExtent e;
+    e.geographic = l.geographic;
+    e.xName = l.xName;
+    e.yName = l.yName;
+    const int xv = l.curvilinear ? l.lon2D : l.coordVar[std::size_t(l.dimX)];
+    const int yv = l.curvilinear ? l.lat2D : l.coordVar[std::size_t(l.dimY)];
+    std::vector<double> x = f.readAll1D(xv);
+    const std::vector<double> y = f.readAll1D(yv);
+    if (x.empty() || y.empty())
+        throw f.error("coordinates '" + l.xName + "'/'" + l.yName + "' have no values");
+    checkAxisValues(f, yv, y, "coordinate");  // (latitude first, as the loader checks them)
+    checkAxisValues(f, xv, x, "coordinate");
+    if (l.geographic)
+    {
+        // each longitude the shorter way from the first: a regional grid's span, wherever its seam
+        const double ref = x.front();
+        for (double &v : x)
+            v = wrapTo(v, ref);
+    }
+    const auto [x0, x1] = std::minmax_element(x.begin(), x.end());
+    const auto [y0, y1] = std::minmax_element(y.begin(), y.end());
+    e.lonMin = *x0;
+    e.lonMax = *x1;
+    e.latMin = *y0;
+    e.latMax = *y1;
+    if (l.geographic)
+    {
+        e.allLongitudes = e.lonMax - e.lonMin >= 358.0;  // (a global grid, its spacing of up to 2 degrees)
+        const double w = e.lonMax - e.lonMin;
+        e.lonMin = normalizeLongitude(e.lonMin);
+        e.lonMax = e.lonMin + w;
+    }
+    return e;
+}
+
 NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &opt)
 {
     netcdf_detail::ForecastPiece p = netcdf_detail::readForecastPiece(path, opt);
@@ -111,7 +171,7 @@ netcdf_detail::ForecastPiece netcdf_detail::readForecastPiece(const std::string 
         readStaggeredVelocities(f, l, h, z, t, vel, opt, g, out);
     else
         readVelocities(f, l, plan, t, vel, opt, g, out);
-    rotateGridToEastNorth(f, l, h, g);
+    rotateGridToEastNorth(f, l, h, g, out);
     p.fillWater = g.water;
     applyLandMask(f, l, h, z, t, opt, g, out);
     if (z.sigma)

@@ -23,6 +23,7 @@ if(OMPL_GLIDER_WITH_NETCDF)
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/RectilinearSubset.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/CurvilinearSubset.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/Staggered.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/GridAngle.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/SigmaLevels.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/Hyperslab.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/UnitsAndPacking.cpp

@@ -26,4 +26,26 @@ inline std::string csvNumber(double v)
         return v > 0 ? "inf" : "-inf";
     return number(v, 10);
 }
+
+/// @brief A duration for people with its SI value beside it: "15 d 9.1 h (1328826.6 s)", "9.1 h (32760.0 s)",
+/// "12.5 min (750.0 s)"; csvNumber() for a non-finite or negative value.
+inline std::string durationText(double seconds)
+{
+    if (!std::isfinite(seconds) || seconds < 0.0)
+        return csvNumber(seconds);
+    char buf[96];
+    const double hours = seconds / 3600.0;
+    if (hours < 1.0)
+        std::snprintf(buf, sizeof buf, "%.1f min (%.1f s)", seconds / 60.0, seconds);
+    else if (hours < 24.0)
+        std::snprintf(buf, sizeof buf, "%.1f h (%.1f s)", hours, seconds);
+    else
+    {
+        double days = std::floor(hours / 24.0), rest = std::round((hours - 24.0 * days) * 10.0) / 10.0;
+        if (rest >= 24.0)  // (23.96 h rounds to 24.0: one more day)
+            days += 1.0, rest = 0.0;
+        std::snprintf(buf, sizeof buf, "%.0f d %.1f h (%.1f s)", days, rest, seconds);
+    }
+    return buf;
+}
 }  // namespace ompl_glider::text

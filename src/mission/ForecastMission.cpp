@@ -197,6 +197,13 @@ NetCdfCurrents loadForecast(const std::vector<std::string> &list, const MissionS
     NetCdfCurrents nc;
     try
     {
+        // start and goal within the file's coordinates, before its data are read (the files' grids agree)
+        const NetCdfExtent e = readNetCdfExtent(list.front(), o);
+        for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
+            if (!e.contains(p.x, p.y))
+                throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (" +
+                            (e.geographic ? "lon,lat" : "x,y") + ") lies outside the grid of '" + list.front() + "' (" + e.text() +
+                            (e.geographic ? ")" : "; start and goal are in the file's own x/y units)"));
         if (!q.departure.empty() && !isNumber(q.departure))
         {
             const NetCdfTimeAxis axis = readNetCdfTimeAxis(list, o);
@@ -245,7 +252,7 @@ void checkEndpoints(const NetCdfCurrents &nc, const ForecastInput &q, const std:
                         file + "' (" + (geographic ? "lon " : "x ") + text::number(nc.lonMin) + ".." + text::number(nc.lonMax) +
                         (geographic ? ", lat " : ", y ") + text::number(nc.latMin) + ".." + text::number(nc.latMax) + ")");
         }
-        if (!g.inWater(x, y, q.depth))
+        if (!g.inWater(x, y, q.depth) && !q.snapToWater)
         {
             // what makes land in this forecast (a cell with a land corner is land)
             std::string why;
@@ -260,8 +267,18 @@ void checkEndpoints(const NetCdfCurrents &nc, const ForecastInput &q, const std:
                                                         text::number(q.current.depthAverage->second) +
                                                         " m (land where any depth in it is land or below the sea floor)"
                                                   : "at depth " + text::number(q.depth) + " m";
+            std::string nearest;
+            if (const std::optional<Point2> w = nearestWater(g, {x, y}, q.depth, 0.01 * g.minCellSize()))
+            {
+                const LonLat ll = nc.toGeographic(*w);
+                const double d = std::hypot(w->x - x, w->y - y);
+                nearest = "; the nearest water is " + text::number(ll.lon, 8) + "," + text::number(ll.lat, 8) + " (" +
+                          coords + "), " +
+                          (geographic ? text::number(d / 1000.0, 4) + " km" : text::number(d, 6)) +
+                          " away (--snap-to-water uses it)";
+            }
             throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") is on land in '" + file +
-                        "' " + at + (why.empty() ? "" : "; the forecast's land is where it has " + why));
+                        "' " + at + (why.empty() ? "" : "; the forecast's land is where it has " + why) + nearest);
         }
     }
 }
@@ -293,6 +310,7 @@ void finishSpec(MissionSpec &m, const NetCdfCurrents &nc, const std::optional<do
     else if (epoch)
         m.epoch = *epoch;
     m.current.steady = nc.steady;
+    m.safety.snapToWater = q.snapToWater;
     m.departure.time = nc.departureTime;
     m.vehicle.speed = q.speed;
     m.vehicle.depth = q.depth;

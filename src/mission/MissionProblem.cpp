@@ -205,6 +205,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     buildTruth();
     start_ = localPoint(spec_.start, "start");
     goal_ = localPoint(spec_.goal, "goal");
+    snapEndpoints();
     buildBox();
     checkAnalyticFields();
     buildRegions();
@@ -251,6 +252,7 @@ void MissionProblem::buildField()
     projection_ = nc.projection;
     projectionScale_ = 1.0;
     forecastFiles_ = nc.files;
+    forecastNotes_ = ompl_glider::forecastNotes(nc);
 #else
     throw Error(where(m, m.current.mark) + "field 'current.type': this build of ompl_glider has no NetCDF "
                                            "support (OMPL_GLIDER_WITH_NETCDF=OFF)");

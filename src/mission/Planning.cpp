@@ -315,6 +315,11 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     }
     result.keepOff = m.safety.keepOff;
     result.safetyNote = problem.safetyNote();
+    result.forecastNotes = problem.forecastNotes();
+    for (const std::string &note : problem.endpointNotes())
+        result.forecastNotes.push_back(note);
+    if (const std::string frozen = planning_detail::frozenFieldNote(problem, result.plan); !frozen.empty())
+        result.forecastNotes.push_back(frozen);
     if (result.plan.solved && problem.getLand())
     {
         const PlannedPath &p = result.plan;

@@ -132,5 +132,12 @@ std::string timeText(const MissionProblem &problem, double t);
 
 /// Moves the arrival of a solved plan into the mission's goal window (see GoalWindow.cpp).
 void timeArrival(const MissionProblem &problem, PlannedPath &r);
+
+// Endpoints.cpp
+
+/// A solved plan that arrives after the forecast's last time under current.horizon hold_last (--beyond hold):
+/// "planned past the forecast's last time (DATE) on its last field, held frozen for the last 5 d 2.0 h of the route
+/// (...)"; empty otherwise.
+std::string frozenFieldNote(const MissionProblem &problem, const PlannedPath &plan);
 }  // namespace planning_detail
 }  // namespace ompl_glider

@@ -8,6 +8,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/loader/ForbiddenRegions.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Safety.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Endpoints.cpp
   # the planning pipeline, one concern per file (see PlanningInternal.h)
   ${CMAKE_CURRENT_LIST_DIR}/Planning.cpp
   ${CMAKE_CURRENT_LIST_DIR}/HeadingRoutes.cpp

@@ -107,10 +107,16 @@ void printReport(std::ostream &out, const MissionResult &r)
     printRouteModel(out, p);
     if (!r.safetyNote.empty())
         out << "Depth limit:        " << r.safetyNote << "\n";
+    for (const std::string &note : r.forecastNotes)
+        out << "Forecast:           " << note << "\n";
     if (p.solved)
     {
-        out << format("Travel time:        %.4f (raw %.4f, smoothed %.4f)\n", p.travelTime, p.rawTravelTime,
-                      p.smoothedTravelTime);
+        if (m.physicalUnits().time)  // days and hours, the seconds beside them
+            out << "Travel time:        " << text::durationText(p.travelTime * m.timeUnitSeconds)
+                << format(" (raw %.4f, smoothed %.4f)\n", p.rawTravelTime, p.smoothedTravelTime);
+        else
+            out << format("Travel time:        %.4f (raw %.4f, smoothed %.4f)\n", p.travelTime, p.rawTravelTime,
+                          p.smoothedTravelTime);
         if (m.goalWindow.set || p.holdTime > 0.0)
         {
             const std::string at = r.waypoints.empty() ? "" : r.waypoints.back().iso;

@@ -226,6 +226,9 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["source"] = m.file;
     j["current"] = m.current.type;
     j["forecast_files"] = problem.forecastFiles();
+    j["forecast_notes"] = json::array();
+    for (const std::string &note : r.forecastNotes)
+        j["forecast_notes"].push_back(jtext(note));
     j["solved"] = p.solved;
     j["status"] = p.status;
     j["reason"] = jtext(p.reason);

@@ -354,7 +354,29 @@ nc_case("nc-truncated", ("truncate", forecast()), "truncated")
 nc_case("nc-u-var-missing", forecast(), "speed_u", extra=("--u-var", "speed_u"))
 nc_case("nc-start-on-land", forecast(u=", ".join(["-999"] * 2 + ["0.1"] * 106)), "land",
         args=("--start=-53.0,47.0", GOAL))
+nc_case("nc-start-on-land-nearest-water", forecast(u=", ".join(["-999"] * 2 + ["0.1"] * 106)),
+        "the nearest water is -52.", args=("--start=-53.0,47.0", GOAL))
 nc_case("nc-start-outside", forecast(), "outside", args=("--start=-60,47.1", GOAL))
+nc_case("nc-goal-outside-extent", forecast(), "--goal -40,47.9 (lon,lat) lies outside the grid of 'f.nc' (lon -53..-52, lat 47..48)",
+        args=(START, "--goal=-40,47.9"))
+# a rotated curvilinear grid, left-handed (eta clockwise of xi), u/v without angle or standard_name: ambiguous
+nc_case("nc-grid-angle-ambiguous", """netcdf roms {
+dimensions: ocean_time = 1 ; eta_rho = 3 ; xi_rho = 3 ;
+variables:
+  double ocean_time(ocean_time) ; ocean_time:units = "seconds since 2026-04-01" ;
+  double lon_rho(eta_rho, xi_rho) ; lon_rho:units = "degree_east" ;
+  double lat_rho(eta_rho, xi_rho) ; lat_rho:units = "degree_north" ;
+  float u(ocean_time, eta_rho, xi_rho) ; u:units = "m s-1" ;
+  float v(ocean_time, eta_rho, xi_rho) ; v:units = "m s-1" ;
+data:
+  ocean_time = 0 ;
+  lon_rho = LONS ;
+  lat_rho = LATS ;
+  u = 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1, 0.1 ;
+  v = 0, 0, 0, 0, 0, 0, 0, 0, 0 ;
+}
+""".replace("LONS", "-52.5000, -52.3718, -52.2436, -52.4260, -52.2978, -52.1696, -52.3520, -52.2238, -52.0956").replace("LATS", "47.5000, 47.5500, 47.6000, 47.4134, 47.4634, 47.5134, 47.3268, 47.3768, 47.4268"),
+        "gives no clear angle", args=("--start=-52.4,47.5", "--goal=-52.3,47.45"))
 nc_case("nc-departure-after-forecast", forecast(), "departure", extra=("--departure", "2026-04-01T00:00:00Z"))
 nc_case("nc-departure-garbage", forecast(), "departure", extra=("--departure", "yesterday"))
 nc_case("nc-lat-all-fill", ("nc4", """netcdf huge {

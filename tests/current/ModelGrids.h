@@ -110,6 +110,8 @@ struct RomsGrid
     static constexpr std::size_t kEta = 14, kXi = 18;
     double theta{30.0 * kDeg};
     double d{5000.0};
+    /// false: no `angle` variable (the loader derives it from lon_rho/lat_rho)
+    bool writeAngle{true};
     LocalProjection proj{-70.0, 40.0};
     /// Local plane position of the point at fractional indices (eta, xi) of the rho grid.
     Point2 at(double eta, double xi) const
@@ -179,9 +181,12 @@ struct RomsGrid
         const int lonr = coord("lon_rho", er, xr, "degree_east"), latr = coord("lat_rho", er, xr, "degree_north");
         const int lonu = coord("lon_u", eu, xu, "degree_east"), latu = coord("lat_u", eu, xu, "degree_north");
         const int lonv = coord("lon_v", ev, xv, "degree_east"), latv = coord("lat_v", ev, xv, "degree_north");
-        const int ang = w.var("angle", NC_DOUBLE, {er, xr});
-        w.text(ang, "units", "radians");
-        w.text(ang, "long_name", "angle between XI-axis and EAST");
+        const int ang = writeAngle ? w.var("angle", NC_DOUBLE, {er, xr}) : -1;
+        if (writeAngle)
+        {
+            w.text(ang, "units", "radians");
+            w.text(ang, "long_name", "angle between XI-axis and EAST");
+        }
         int mr = -1, mu = -1, mv = -1;
         if (masks)
         {
@@ -234,7 +239,8 @@ struct RomsGrid
         grid(kEta, kXi, 0, 0, lonr, latr);
         grid(kEta, kXi - 1, 0, 0.5, lonu, latu);
         grid(kEta - 1, kXi, 0.5, 0, lonv, latv);
-        w.put(ang, std::vector<double>(kEta * kXi, theta));
+        if (writeAngle)
+            w.put(ang, std::vector<double>(kEta * kXi, theta));
         auto landU = [](std::size_t j, std::size_t i) { return land(j, i) || land(j, i + 1); };
         auto landV = [](std::size_t j, std::size_t i) { return land(j, i) || land(j + 1, i); };
         if (masks)

@@ -331,6 +331,9 @@ TEST(NetCdfLayouts, CurvilinearNemoLikeGridWithLandAndNoleapCalendar)
             w.text(var, "coordinates", "nav_lon nav_lat");
             w.num(var, "missing_value", NC_DOUBLE, {-999.0});
         }
+        // eastward/northward as written (without, the rotated grid's velocities would be read as along the grid)
+        w.text(u, "standard_name", "eastward_sea_water_velocity");
+        w.text(v, "standard_name", "northward_sea_water_velocity");
         w.enddef();
         w.put(vt, {25550.0, 25550.25});  // 2020-01-01 00:00 and 06:00 in the noleap calendar
         w.put(vz, {0.5});

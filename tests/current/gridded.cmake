@@ -16,10 +16,12 @@ glider_add_test(test_current_netcdf
 target_link_libraries(test_current_netcdf PRIVATE netCDF::netcdf)
 glider_add_test(test_current_gridded_agreement ${CMAKE_CURRENT_LIST_DIR}/TestGriddedAgreement.cpp)
 target_link_libraries(test_current_gridded_agreement PRIVATE netCDF::netcdf)
-# bad forecast files refused with a clear Error; the classic-format size check (an internal of the reader)
+# bad forecast files refused with a clear Error; the classic-format size check and the derived grid angle (internals
+# of the reader)
 glider_add_test(test_current_netcdf_checks
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfBadFiles.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfClassicSize.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfClassicSize.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfGridAngle.cpp)
 target_link_libraries(test_current_netcdf_checks PRIVATE netCDF::netcdf)
 target_include_directories(test_current_netcdf_checks PRIVATE ${PROJECT_SOURCE_DIR}/src/current)
 # glider_plan on steady files, undated time axes and mislabelled velocity units (issue 10)

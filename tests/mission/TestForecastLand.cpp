@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "../current/TestNetCdfUtil.h"
+#include "ompl_glider/Exception.h"
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -125,4 +126,57 @@ TEST(ForecastLand, RouteGoesAroundAPeninsulaStoredAsZeroVelocity)
     const MissionResult ro = runMission(open);
     ASSERT_TRUE(ro.plan.solved);
     EXPECT_TRUE(std::isfinite(ro.plan.straightLineTime));
+}
+
+TEST(ForecastLand, StartOnLandNamesTheNearestWaterAndSnapsToItOnRequest)
+{
+    TempDir dir;
+    const std::string file = dir.file("pop_like.nc");
+    writePopLike(file);
+    ForecastInput in;
+    in.current.file = file;
+    in.start = {-78.4, 25.6};  // on the peninsula, 0.4 degree east of its western shore (cells with a land corner
+                               // end at the nodes of lon -78.8)
+    in.goal = {-76.5, 26.4};
+    in.speed = 0.5;
+    try
+    {
+        forecastMission(in);
+        FAIL() << "a start on land must be refused";
+    }
+    catch (const Error &e)
+    {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("--start -78.4,25.6 (lon,lat) is on land"), std::string::npos) << m;
+        EXPECT_NE(m.find("the nearest water is -78.80"), std::string::npos) << m;
+        EXPECT_NE(m.find(",25.6"), std::string::npos) << m;
+        EXPECT_NE(m.find("km away (--snap-to-water uses it)"), std::string::npos) << m;
+    }
+    in.snapToWater = true;
+    MissionSpec spec = forecastMission(in);
+    EXPECT_TRUE(spec.safety.snapToWater);
+    const MissionProblem problem(spec);
+    const LonLat s = problem.toGeographic(problem.getStart());
+    EXPECT_NEAR(s.lon, -78.8, 0.01);
+    EXPECT_NEAR(s.lat, 25.6, 0.01);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    ASSERT_FALSE(r.forecastNotes.empty());
+    EXPECT_EQ(r.forecastNotes.back().rfind("start lon,lat -78.4,25.6 is on land: moved to the nearest water lon,lat "
+                                           "-78.80",
+                                           0),
+              0u)
+        << r.forecastNotes.back();
+    // the same problem without snapping (as a mission file gives it): refused, naming the field and the water
+    spec.safety.snapToWater = false;
+    try
+    {
+        const MissionProblem refused(spec);
+        FAIL() << "a start on land must be refused";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("the nearest water is lon,lat -78.80"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("safety.snap_to_water: true"), std::string::npos) << e.what();
+    }
 }

@@ -122,3 +122,34 @@ TEST(ForecastModelGrids, RouteOnARomsCGridGoesRoundItsMaskedIsland)
     };
     expectClearOfLand(problem, r.plan.path, 200.0, bad);
 }
+
+TEST(ForecastModelGrids, RomsGridWithoutAngleGivesTheSameRouteAsWithIt)
+{
+    // the rotated (30 degrees) C grid with its `angle`, and the same file without: the angle is then derived from
+    // lon_rho/lat_rho and the route is the same; read as east/north (angle none), it is not
+    TempDir dir;
+    RomsGrid with, without;
+    without.writeAngle = false;
+    const std::string a = dir.file("with.nc"), b = dir.file("without.nc");
+    with.write(a);
+    without.write(b);
+    const LonLat s = with.geo(3, 2), g = with.geo(8, 15);
+    auto plan = [&](const std::string &file, const std::string &angle) {
+        ForecastInput in;
+        in.current.file = file;
+        if (!angle.empty())
+            in.current.variables["angle"] = angle;
+        in.start = {s.lon, s.lat};
+        in.goal = {g.lon, g.lat};
+        in.speed = 0.5;
+        const MissionProblem problem(forecastMission(in));
+        return runMission(problem);
+    };
+    const MissionResult ra = plan(a, ""), rb = plan(b, ""), rn = plan(a, "none");
+    ASSERT_TRUE(ra.plan.solved && rb.plan.solved && rn.plan.solved) << ra.plan.reason << rb.plan.reason << rn.plan.reason;
+    EXPECT_NEAR(rb.plan.travelTime / ra.plan.travelTime, 1.0, 1e-3) << ra.plan.travelTime << " " << rb.plan.travelTime;
+    EXPECT_GT(std::abs(rn.plan.travelTime / ra.plan.travelTime - 1.0), 0.01) << rn.plan.travelTime;
+    // the report and summary say how the angle was found
+    EXPECT_NE(rb.forecastNotes.front().find("grid angle derived from 'lon_rho'/'lat_rho'"), std::string::npos);
+    EXPECT_NE(ra.forecastNotes.front().find("grid angle from the variable 'angle'"), std::string::npos);
+}

@@ -182,8 +182,12 @@ PY
     > "$dir/hold.txt" || { echo "--beyond hold: expected a path"; cat "$dir/hold.txt"; exit 1; }
 python3 - "$dir/hold.txt" <<'PY'
 import re, sys
-m = re.search(r"^Travel time: +([0-9.]+)", open(sys.argv[1]).read(), re.M)
+text = open(sys.argv[1]).read()
+# days/hours with the seconds beside them: "11.1 h (40000.0 s)"
+m = re.search(r"^Travel time: +[0-9.]+ h \(([0-9.]+) s\)", text, re.M)
 assert m and abs(float(m.group(1)) - 40000) < 5, "--beyond hold: expected travel time 40000"
+# planning on the frozen last field is said
+assert "on its last field, held frozen (current.horizon: hold_last, --beyond hold)" in text, text
 PY
 
 # 3. --speeds on the built-in mission: one line per speed, travel time falling with speed
@@ -228,7 +232,7 @@ expect_error "on land" --currents "$nc" --start=-51.9,48.7 --goal=-52.7,47.9
 expect_error "departure" --currents "$nc" --start=-52.7,47.9 --goal=-51.5,48.45 --departure 2026-04-01T00:00:00Z
 expect_error "outside the grid" --currents "$nc" --start=-60,47.9 --goal=-51.5,48.45
 expect_error "deepest layer" --currents "$nc" --start=-52.7,47.9 --goal=-51.5,48.45 --depth 500
-expect_error "not on the grid" --currents "$nc" --start=-70,40 --goal=-69,41
+expect_error "lies outside the grid of" --currents "$nc" --start=-70,40 --goal=-69,41
 expect_error "xy-interp" --currents "$nc" --start=-52.7,47.9 --goal=-51.5,48.45 --xy-interp spline
 expect_error "needs --currents" --u-var u
 expect_error "unknown planner 'Dijkstra'" --planner Dijkstra

@@ -105,6 +105,10 @@ struct NetCdfCurrents
     std::string uVariable, vVariable;  ///< variables read
     std::vector<std::size_t> loadedShape;  ///< nt, nz, ny, nx actually loaded
     std::string maskVariable;        ///< the land/sea mask read ("" when none)
+    /// How grid-relative velocities were turned to eastward/northward: "" (the velocities are eastward/northward,
+    /// or the grid is not rotated), "variable 'angle'", or "derived from lon_rho/lat_rho: the grid's i direction
+    /// 29.7..30.3 degrees counter-clockwise from east" (a rotated curvilinear grid without angle variable)
+    std::string gridAngle;
     std::size_t landNodes{0};        ///< loaded nodes (x depth layers) that are land, for any of the reasons:
     std::size_t fillLandNodes{0};    ///<   u or v a fill value in some record of the trip
     std::size_t maskLandNodes{0};    ///<   land in the mask (in some record of the trip, for a mask with a time axis)
@@ -207,6 +211,26 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
 /// reads attributes only. @throws Error as loadNetCdfCurrents() does for a file that is not NetCDF or whose
 /// velocities or grid cannot be found.
 bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &options = {});
+
+/// @brief The horizontal extent of a forecast file, from its coordinate variables alone (the velocities are not read).
+struct NetCdfExtent
+{
+    bool geographic{false};  ///< longitude/latitude (else Cartesian x/y in the file's units)
+    bool allLongitudes{false};  ///< the longitudes go round the globe: every longitude lies in the file
+    double lonMin{0.0}, lonMax{0.0};  ///< lonMin in [-180, 180), lonMax = lonMin + width (x in Cartesian files)
+    double latMin{0.0}, latMax{0.0};  ///< (y in Cartesian files)
+    std::string xName, yName;         ///< the coordinate variables
+    /// True when (a, b) (lon/lat in either convention, or x/y) lies within the bounds (a curvilinear grid's bounds are
+    /// those of its nodes: a point inside them may still lie outside the grid).
+    bool contains(double a, double b) const;
+    /// "lon -80..-76, lat 25..28" (or "x 0..100, y 0..50").
+    std::string text() const;
+};
+
+/// @brief The extent of the velocities' grid with the loader's own detection (the names of `options`), reading the
+/// coordinate variables only: what the command line checks the start and goal against before a forecast's data are
+/// read. @throws Error as loadNetCdfCurrents() does for a file whose velocities or grid cannot be found.
+NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOptions &options = {});
 
 /// @brief The time axis of a forecast file as loadNetCdfCurrents() reads it, without its velocities: what a
 /// mission needs to turn ISO dates into field times before the forecast is loaded.

@@ -36,6 +36,9 @@ struct ForecastInput
     /// any departure; for a steady file without dates, a date is the date of field time 0 (the outputs' ISO times).
     std::string departure;
     double speed{0.3};      ///< vehicle speed through water, m/s
+    /// a start or goal on the forecast's land is moved to the nearest water (MissionSpec::safety.snapToWater); else
+    /// it is refused, the message naming the nearest water
+    bool snapToWater{false};
 };
 
 /// @brief The MissionSpec of a forecast, the same as a mission file with the same current, region, start, goal,

@@ -5,6 +5,7 @@
 /// (Planning.h) plans on it; the output layer (output/) writes from it.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +23,7 @@ namespace ompl_glider
 class ForbiddenRegions;
 class ForbiddenCells;
 struct NetCdfCurrentOptions;
+struct NetCdfCurrents;
 class LocalProjection;
 
 /// @brief A forbidden region in the planning frame (for maps and outputs).
@@ -93,6 +95,18 @@ public:
     {
         return safetyNote_;
     }
+    /// @brief What reading the forecast decided that a pilot should know, one sentence each: how grid-relative
+    /// velocities were turned ("grid angle derived from 'lon_rho'/'lat_rho': ..."), how many nodes are land only
+    /// because u = v = 0; empty for analytic fields and forecasts with nothing to say.
+    const std::vector<std::string> &forecastNotes() const
+    {
+        return forecastNotes_;
+    }
+    /// @brief Start or goal moved off land (MissionSpec::safety.snapToWater), one sentence each: from where to where.
+    const std::vector<std::string> &endpointNotes() const
+    {
+        return endpointNotes_;
+    }
     /// @brief Forbidden regions in the planning frame.
     const std::vector<MissionPolygon> &getPolygons() const
     {
@@ -140,6 +154,9 @@ private:
     /// A current source other than the forecast (a truth, an ensemble member) on the forecast's frame and dates.
     std::shared_ptr<const CurrentField> loadSource(const CurrentSpec &source, const std::string &field) const;
     void buildBox();
+    /// A start or goal on the forecast's land (Endpoints.cpp): refused naming the nearest water, or moved there
+    /// with MissionSpec::safety.snapToWater.
+    void snapEndpoints();
     void checkAnalyticFields() const;  ///< analytic fields are finite over the box (parameters do not overflow)
     void buildRegions();
     /// The keep-off zone and the shallow water (Safety.cpp), added to @p regions.
@@ -158,6 +175,8 @@ private:
     std::shared_ptr<const LocalProjection> projection_;
     double projectionScale_{1.0};  // metres per planning unit
     std::vector<std::string> forecastFiles_;
+    std::vector<std::string> forecastNotes_;
+    std::vector<std::string> endpointNotes_;
     std::vector<MissionPolygon> polygons_;
     Region box_;
     Point2 start_, goal_;
@@ -188,6 +207,14 @@ double tripMarginKm(LonLat start, LonLat goal);
 /// @throws Error for an unknown interpolation scheme, or a lon/lat start or goal within 90 - kMaxGridLatitude
 /// degrees of a pole (naming it). (Only with OMPL_GLIDER_WITH_NETCDF.)
 NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &mission);
+
+/// @brief What a loaded forecast decided that a pilot should know (MissionProblem::forecastNotes()), one sentence
+/// each: the grid angle (NetCdfCurrents::gridAngle), land from zero velocities. (Only with OMPL_GLIDER_WITH_NETCDF.)
+std::vector<std::string> forecastNotes(const NetCdfCurrents &forecast);
+
+/// @brief The water point nearest to @p p at depth z: just beyond (by @p step, in planning units) the closest point
+/// of the field's land boundary (CurrentField::landBoundary()), checked with inWater(); nullopt when none is found.
+std::optional<Point2> nearestWater(const CurrentField &field, Point2 p, double z, double step);
 
 /// @brief The NetCDF reader's message in a mission file's words: its option fields (NetCdfCurrentOptions::uName,
 /// ::timeUnits, ::steadyRecord, ...) become the fields of the mission's current section (current.variables.u,

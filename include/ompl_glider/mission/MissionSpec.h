@@ -222,6 +222,9 @@ struct SafetySpec
     std::string bathymetry;          ///< NetCDF seafloor depth or elevation (resolved path); empty: none
     std::string bathymetryVariable;  ///< its variable; empty: detected (DepthGrid.h)
     double minDepth{0.0};            ///< metres: water shallower than this is forbidden (needs a bathymetry)
+    /// A start or goal on a forecast's land is moved to the nearest water (MissionProblem::endpointNotes() says
+    /// where); false: such a start or goal is refused, the message naming the nearest water
+    bool snapToWater{false};
 };
 
 /// @brief The planner and its parameters.

@@ -225,6 +225,9 @@ struct MissionResult
     std::optional<LonLat> closestLandLonLat;
     double keepOff{0.0};      ///< the keep-off distance kept (MissionSpec::safety.keepOff)
     std::string safetyNote;   ///< what the depth limit read (MissionProblem::safetyNote())
+    /// what the forecast's reading decided that a pilot should know (MissionProblem::forecastNotes()): a derived
+    /// grid angle, land from zero velocities, planning on a frozen last field
+    std::vector<std::string> forecastNotes;
     double wallSeconds{0.0};                ///< whole run
 };
 

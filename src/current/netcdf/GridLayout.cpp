@@ -110,7 +110,8 @@ std::vector<int> rhoDimensions(const NcFile &f, const NetCdfCurrentOptions &opt,
 }
 
 /// The grid angle variable: the given one (which must be 2-D on the grid), else one named "angle" on the grid,
-/// unless u is named eastward; its unit (radians or degrees). -1 when none.
+/// unless u is named eastward; its unit (radians or degrees). -1 when none: then a curvilinear grid's angle is
+/// derived from its coordinates (Layout::deriveAngle) unless u is named eastward or the angle is "none".
 void findAngle(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
 {
     const std::vector<int> grid = {l.dims[std::size_t(l.dimY)], l.dims[std::size_t(l.dimX)]};
@@ -130,13 +131,17 @@ void findAngle(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
     else
     {
         // velocities that say they are eastward (standard_name, or a name such as ROMS' u_eastward) are not turned
-        if (stdName(f, l.uVar).rfind("eastward", 0) == 0 || lower(l.uName).find("east") != std::string::npos)
+        if (stdName(f, l.uVar).find("eastward") != std::string::npos || lower(l.uName).find("east") != std::string::npos)
             return;
         for (int var = 0; var < f.nvars() && l.angleVar < 0; ++var)
             if (lower(f.varName(var)) == "angle" && f.varDims(var) == grid)
                 l.angleVar = var;
         if (l.angleVar < 0)
+        {
+            // nothing says the velocities are eastward: on a curvilinear grid they may run along it (ROMS, NEMO)
+            l.deriveAngle = l.curvilinear;
             return;
+        }
     }
     const std::string units = lower(trim(unitsOf(f, l.angleVar)));
     if (inList(units, {"radian", "radians", "rad"}))

@@ -133,6 +133,9 @@ struct Layout
     std::vector<int> uDims, vDims;
     int angleVar{-1};           ///< grid angle (velocities along the grid's i/j directions), -1 if none
     double angleToRadians{1.0}; ///< its unit
+    /// a curvilinear grid without angle variable whose velocities do not say they are eastward: the angle is
+    /// derived from the nodes' coordinates (deriveGridAngle())
+    bool deriveAngle{false};
 };
 
 /// Finds u and v and the grid they are on. @throws Error naming the file, the variable and what was expected.
@@ -358,9 +361,43 @@ bool isSigmaCoordinate(const NcFile &f, int zv);
 /// s-level takes its value. @throws Error for other terrain-following coordinates or missing formula terms.
 void remapSigmaToDepths(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                         const AxisSelection &t, double deepest, const std::vector<double> &requested, GriddedData &g);
-/// Rotates grid-relative velocities (Layout::angleVar) into eastward/northward at every loaded node.
-/// @throws Error when the angle holds fill values or non-finite numbers.
-void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSubset &h, GriddedData &g);
+/// Rotates grid-relative velocities (Layout::angleVar, or the angle derived from the nodes' coordinates with
+/// Layout::deriveAngle) into eastward/northward at every loaded node; says how in out.gridAngle.
+/// @throws Error when the angle holds fill values or non-finite numbers, or a derived angle is ambiguous (naming the
+/// node, the coordinates and what to give instead).
+void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSubset &h, GriddedData &g,
+                           NetCdfCurrents &out);
+
+// ---- the grid angle from the coordinates (GridAngle.cpp) ----
+
+/// A grid whose i direction is more than this many degrees from east somewhere is rotated.
+constexpr double kGridRotatedDegrees = 0.01;
+/// Ambiguous grids: j more than this many degrees off 90 degrees counter-clockwise of i ...
+constexpr double kGridSkewDegrees = 30.0;
+/// ... or i turning by more than this many degrees between neighbouring nodes.
+constexpr double kGridTurnDegrees = 30.0;
+
+/// The angle of a grid's i direction at every node.
+struct DerivedGridAngle
+{
+    std::vector<double> radians;  ///< per node j * nx + i, counter-clockwise from east (x)
+    double maxAbsDegrees{0.0};
+    double minDegrees{kInf}, maxDegrees{-kInf};
+    bool rotated{false};          ///< maxAbsDegrees > kGridRotatedDegrees
+    std::string fault;            ///< non-empty when the angle is ambiguous: what is wrong, at node (faultJ, faultI)
+    std::size_t faultJ{0}, faultI{0};
+};
+
+/// The angle of the i direction of a curvilinear grid of nx x ny nodes (x = longitude, y = latitude in degrees when
+/// geographic, else Cartesian x/y in one unit) at every node, as ROMS' grid tools derive `angle`: the direction of
+/// the neighbouring nodes along i (central differences, second-order one-sided ones at the edges), a longitude
+/// difference scaled by cos(lat) (and by the WGS84 ellipsoid's ratio of meridian to parallel radius). When the grid
+/// is rotated, fault says why the angle would be ambiguous: j not about 90 degrees counter-clockwise of i
+/// (kGridSkewDegrees), or i turning sharply between neighbours (kGridTurnDegrees), or a single node along i or j.
+DerivedGridAngle deriveGridAngle(const std::vector<double> &x, const std::vector<double> &y, std::size_t nx,
+                                 std::size_t ny, bool geographic);
+/// "derived from <coordinates>: the grid's i direction a..b degrees counter-clockwise from east".
+std::string gridAngleNote(const DerivedGridAngle &a, const std::string &coordinates);
 /// Collapses the depth layers of g into one: the depth average over [top, bottom] (trapezoid rule on the
 /// piecewise-linear profile, constant outside the layers; NetCdfCurrentOptions::depthAverage); a node is land when
 /// it is land at a layer that carries weight. g.depth becomes {top}.

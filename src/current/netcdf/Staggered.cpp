@@ -128,12 +128,36 @@ void readStaggeredVelocities(const NcFile &f, const Layout &l, const HorizontalS
                   t, g, out);
 }
 
-void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSubset &h, GriddedData &g)
+namespace
 {
-    if (l.angleVar < 0)
-        return;
+/// The angle derived from the loaded nodes' coordinates (Layout::deriveAngle), per node; empty when the grid is not
+/// rotated. @throws Error naming the node when the angle is ambiguous.
+std::vector<double> derivedAngle(const NcFile &f, const Layout &l, const HorizontalSubset &h, NetCdfCurrents &out)
+{
+    const std::size_t nx = h.xIdx.size(), ny = h.yIdx.size();
+    const DerivedGridAngle a = deriveGridAngle(h.nodeLon, h.nodeLat, nx, ny, l.geographic);
+    if (!a.fault.empty() && (a.rotated || a.radians.empty()))
+    {
+        const std::size_t n = a.faultJ * nx + a.faultI;
+        throw f.error("variables '" + l.uName + "'/'" + l.vName + "' have no grid angle variable and do not say they "
+                      "are eastward/northward (standard_name eastward_*), and the rotated curvilinear grid '" +
+                      l.xName + "'/'" + l.yName + "' gives no clear angle: at (j, i) = (" +
+                      std::to_string(h.yIdx[a.faultJ]) + ", " + std::to_string(h.xIdx[a.faultI]) + "), " +
+                      l.xName + " " + text::number(h.nodeLon[n]) + ", " + l.yName + " " + text::number(h.nodeLat[n]) +
+                      ", " + a.fault + "; name the angle variable (--angle-var, current.variables.angle), or give "
+                      "--angle-var none (current.variables.angle: none) if the velocities are eastward/northward");
+    }
+    if (!a.rotated)
+        return {};
+    out.gridAngle = gridAngleNote(a, "'" + l.xName + "'/'" + l.yName + "'");
+    return a.radians;
+}
+
+/// The angle of the variable Layout::angleVar, per loaded node, in radians.
+std::vector<double> angleOfVariable(const NcFile &f, const Layout &l, const HorizontalSubset &h, NetCdfCurrents &out)
+{
     const std::size_t nx = h.xIdx.size(), nh = nx * h.yIdx.size();
-    std::vector<double> a(nh), cosA(nh), sinA(nh);
+    std::vector<double> a(nh);
     readScatter(f, l.angleVar, {makeDimRead(h.yIdx), makeDimRead(h.xIdx)}, {nx, 1}, a);
     const Packing p = packingOf(f, l.angleVar);
     for (std::size_t n = 0; n < nh; ++n)
@@ -142,9 +166,27 @@ void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSub
             throw f.error("grid angle variable '" + f.varName(l.angleVar) + "' holds a fill value or a non-finite "
                           "number at (j, i) = (" + std::to_string(h.yIdx[n / nx]) + ", " +
                           std::to_string(h.xIdx[n % nx]) + "); expected an angle at every velocity point");
-        const double rad = (a[n] * p.scale + p.offset) * l.angleToRadians;
-        cosA[n] = std::cos(rad);
-        sinA[n] = std::sin(rad);
+        a[n] = (a[n] * p.scale + p.offset) * l.angleToRadians;
+    }
+    out.gridAngle = "variable '" + f.varName(l.angleVar) + "'";
+    return a;
+}
+}  // namespace
+
+void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSubset &h, GriddedData &g,
+                           NetCdfCurrents &out)
+{
+    if (l.angleVar < 0 && !l.deriveAngle)
+        return;
+    const std::vector<double> a = l.angleVar >= 0 ? angleOfVariable(f, l, h, out) : derivedAngle(f, l, h, out);
+    if (a.empty())
+        return;
+    const std::size_t nh = a.size();
+    std::vector<double> cosA(nh), sinA(nh);
+    for (std::size_t n = 0; n < nh; ++n)
+    {
+        cosA[n] = std::cos(a[n]);
+        sinA[n] = std::sin(a[n]);
     }
     // once per node, for every time and depth
     for (std::size_t idx = 0; idx < g.u.size(); ++idx)

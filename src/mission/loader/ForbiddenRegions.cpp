@@ -216,7 +216,7 @@ void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
 void readSafety(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "safety";
-    r.checkMap(n, f, {"keep_off", "bathymetry", "bathymetry_variable", "min_depth"});
+    r.checkMap(n, f, {"keep_off", "bathymetry", "bathymetry_variable", "min_depth", "snap_to_water"});
     // a length: a number in planning units, or "2 km" / "500 m"
     auto length = [&](const char *key, double metresPerUnit, bool unitKnown) {
         const YAML::Node v = n[key];
@@ -251,6 +251,11 @@ void readSafety(const Reader &r, const YAML::Node &n, MissionSpec &m)
     }
     if (n["bathymetry_variable"])
         m.safety.bathymetryVariable = r.text(n["bathymetry_variable"], f + ".bathymetry_variable");
+    if (n["snap_to_water"])
+    {
+        m.safety.snapToWater = r.boolean(n["snap_to_water"], f + ".snap_to_water");
+        m.marks[f + ".snap_to_water"] = {r.file(), r.line(n["snap_to_water"])};
+    }
     if (n["min_depth"] && m.safety.bathymetry.empty() && !m.current.isForecast())
         r.fail(n["min_depth"], f + ".min_depth",
                "needs safety.bathymetry (a NetCDF file of seafloor depth or elevation)");

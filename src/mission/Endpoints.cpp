@@ -1,0 +1,137 @@
+// A start or goal on a forecast's land: the nearest water, named in the refusal or taken as the endpoint
+// (safety.snap_to_water, --snap-to-water); and what reading the forecast decided that a pilot should know
+// (forecastNotes()).
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "../io/NumberText.h"
+#include "PlanningInternal.h"
+#include "ompl_glider/current/BeyondForecast.h"
+#include "ompl_glider/Config.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#if OMPL_GLIDER_WITH_NETCDF
+#include "ompl_glider/current/NetCdfCurrents.h"
+#endif
+
+namespace ompl_glider
+{
+std::optional<Point2> nearestWater(const CurrentField &field, Point2 p, double z, double step)
+{
+    // the closest points of land's boundary, nearest first; just beyond each (away from p, or across the edge)
+    struct Near
+    {
+        double d;
+        Point2 q, n, t;  // closest point, edge normal, unit vector from q into the edge (zero at its middle)
+    };
+    std::vector<Near> near;
+    for (const Segment2 &e : field.landBoundary(z))
+    {
+        const double dx = e.b.x - e.a.x, dy = e.b.y - e.a.y, len2 = dx * dx + dy * dy;
+        if (!(len2 > 0.0))
+            continue;
+        const double s = std::clamp(((p.x - e.a.x) * dx + (p.y - e.a.y) * dy) / len2, 0.0, 1.0);
+        const Point2 q{e.a.x + s * dx, e.a.y + s * dy};
+        const double len = std::sqrt(len2), in = s < 0.5 ? 1.0 : -1.0;
+        near.push_back({std::hypot(q.x - p.x, q.y - p.y), q, Point2{-dy / len, dx / len},
+                        Point2{in * dx / len, in * dy / len}});
+    }
+    std::sort(near.begin(), near.end(), [](const Near &a, const Near &b) { return a.d < b.d; });
+    if (near.size() > 256)
+        near.resize(256);
+    for (const Near &c : near)
+    {
+        const Point2 q = c.q, n = c.n, t = c.t;
+        // across the edge (away from p, or either side), also inwards along it (q may be a corner of the grid)
+        std::vector<Point2> dirs{n, Point2{-n.x, -n.y}, Point2{n.x + t.x, n.y + t.y}, Point2{t.x - n.x, t.y - n.y}};
+        if (c.d > 0.0)
+        {
+            const Point2 a{(q.x - p.x) / c.d, (q.y - p.y) / c.d};
+            dirs.insert(dirs.begin(), {a, Point2{a.x + t.x, a.y + t.y}});
+        }
+        for (const double f : {1.0, 3.0})
+            for (const Point2 &u : dirs)
+            {
+                const Point2 w{q.x + f * step * u.x, q.y + f * step * u.y};
+                if (field.inWater(w.x, w.y, z))
+                    return w;
+            }
+    }
+    return std::nullopt;
+}
+
+void MissionProblem::snapEndpoints()
+{
+    const auto grid = std::dynamic_pointer_cast<const GriddedCurrentField>(members_.empty() ? field_ : members_.front());
+    if (!grid)
+        return;
+    const MissionSpec &m = spec_;
+    const double z = m.vehicle.depth;
+    auto text = [&](Point2 p) {
+        if (!isGeographic())
+            return "x,y " + text::number(p.x) + "," + text::number(p.y);
+        const LonLat g = toGeographic(p);
+        return "lon,lat " + text::number(g.lon, 8) + "," + text::number(g.lat, 8);
+    };
+    for (const auto &[name, p] : {std::pair<const char *, Point2 *>{"start", &start_}, {"goal", &goal_}})
+    {
+        double fi, fj;
+        if (!grid->locate(p->x, p->y, fi, fj) || grid->inWater(p->x, p->y, z))
+            continue;  // (outside the grid: the planning box's check names it)
+        const std::optional<Point2> w = nearestWater(*grid, *p, z, 0.01 * grid->minCellSize());
+        if (!w)
+            throw Error(m.place(name) + ": " + text(*p) + " is on land in the forecast at depth " + text::number(z) +
+                        " m, and the forecast has no water there");
+        const double d = std::hypot(w->x - p->x, w->y - p->y);
+        const std::string away = isGeographic() ? text::number(d / 1000.0, 4) + " km" : text::number(d, 6);
+        if (!m.safety.snapToWater)
+            throw Error(m.place(name) + ": " + text(*p) + " is on land in the forecast at depth " + text::number(z) +
+                        " m; the nearest water is " + text(*w) + ", " + away +
+                        " away: give that, or --snap-to-water (safety.snap_to_water: true) to use it");
+        endpointNotes_.push_back(std::string(name) + " " + text(*p) + " is on land: moved to the nearest water " +
+                                 text(*w) + " (" + away + " away; safety.snap_to_water)");
+        *p = *w;
+    }
+}
+
+std::string planning_detail::frozenFieldNote(const MissionProblem &problem, const PlannedPath &plan)
+{
+    const MissionSpec &m = problem.getSpec();
+    if (!plan.solved || plan.path.empty() || m.current.horizonPolicy != BeyondForecast::HoldLast || m.current.steady)
+        return "";
+    const auto &members = problem.getMembers();
+    const auto grid = std::dynamic_pointer_cast<const GriddedCurrentField>(members.empty() ? problem.getField()
+                                                                                           : members.front());
+    if (!grid || grid->nt() < 2)
+        return "";
+    const double last = grid->timeAxis().back(), arrival = plan.path.back().t;
+    if (!(arrival > last))
+        return "";
+    const double held = arrival - std::max(last, plan.departure);
+    return "planned past the forecast's last time (" + timeText(problem, last) +
+           ") on its last field, held frozen (current.horizon: hold_last, --beyond hold) for the last " +
+           (m.physicalUnits().time ? text::durationText(held * m.timeUnitSeconds) : text::number(held)) + " of the route";
+}
+
+#if OMPL_GLIDER_WITH_NETCDF
+std::vector<std::string> forecastNotes(const NetCdfCurrents &nc)
+{
+    std::vector<std::string> notes;
+    if (nc.gridAngle.rfind("variable ", 0) == 0)
+        notes.push_back("grid angle from the " + nc.gridAngle + " (velocities along the grid turned to east/north)");
+    else if (!nc.gridAngle.empty())
+        notes.push_back("grid angle " + nc.gridAngle + " (the file has no angle variable and its velocities do not "
+                        "say they are eastward/northward)");
+    if (nc.zeroLandNodes > 0)
+        notes.push_back(std::to_string(nc.zeroLandNodes) + " of the " + std::to_string(nc.loadedValues /
+                        std::max<std::size_t>(1, nc.loadedShape.empty() ? 1 : nc.loadedShape[0])) +
+                        " nodes loaded are land only because u = v = 0 in every record of the trip "
+                        "(current.zero_velocity_land: false, --no-zero-land, takes them as water)");
+    return notes;
+}
+#endif
+}  // namespace ompl_glider
