@@ -468,12 +468,25 @@ void MissionProblem::buildRegions()
     auto polygon = [&](const PolygonSpec &p, const std::string &kind) {
         try
         {
+            // every polygon GEOS calls valid (a hole may touch its outer ring at a point), checked as given
+            auto given = [](const std::vector<std::pair<double, double>> &r) {
+                std::vector<Point2> out;
+                for (const auto &[a, b] : r)
+                    out.push_back({a, b});
+                return out;
+            };
             std::vector<std::vector<Point2>> holes;
+            for (const auto &h : p.holes)
+                holes.push_back(given(h));
+            const std::string fault = polygonFault(given(p.points), holes);
+            if (!fault.empty())
+                throw Error("an invalid polygon: " + fault + (p.geographic ? " (lon lat)" : " (x y as given)"));
+            holes.clear();
             for (const auto &h : p.holes)
                 holes.push_back(ring(h, p.geographic, p.name));
             std::vector<Point2> outer = ring(p.points, p.geographic, p.name);
             polygons_.push_back({p.name, kind, outer});
-            return Polygon(outer, holes, p.name);
+            return Polygon(outer, holes, p.name, RingCheck::validated);
         }
         catch (const Error &e)
         {
@@ -507,9 +520,13 @@ void MissionProblem::buildRegions()
                 spans = {{a, 180.0}, {-180.0, b - 360.0}};
             else
                 spans = {{a, b}};
+            std::vector<std::string> repairs;
             for (const auto &[w, e] : spans)
-                for (LandPolygon &p : readLandPolygons(m.forbidden.coastline, w, s, e, n))
+                for (LandPolygon &p : readLandPolygons(m.forbidden.coastline, w, s, e, n, &repairs))
                     land.push_back(std::move(p));
+            coastlineNote_ = std::to_string(land.size()) + " land polygons from '" + m.forbidden.coastline + "'";
+            for (const std::string &r : repairs)
+                coastlineNote_ += "; " + r;
         }
         catch (const Error &e)
         {
@@ -518,7 +535,7 @@ void MissionProblem::buildRegions()
         for (std::size_t k = 0; k < land.size(); ++k)
         {
             PolygonSpec p;
-            p.name = "coast " + std::to_string(k + 1);
+            p.name = land[k].name;
             p.geographic = true;
             p.mark = m.forbidden.coastlineMark;
             for (const LonLat &g : land[k].outer)
@@ -529,7 +546,19 @@ void MissionProblem::buildRegions()
                 for (const LonLat &g : h)
                     p.holes.back().emplace_back(g.lon, g.lat);
             }
-            regions->add(std::make_shared<StaticRegion>(p.name, polygon(p, "land"), "land"));
+            try
+            {
+                regions->add(std::make_shared<StaticRegion>(p.name, polygon(p, "land"), "land"));
+            }
+            catch (const Error &e)
+            {
+                // (polygon() names the forecast's file for a flag: name the coastline file and the feature)
+                std::string what = e.what();
+                const std::string head = where(m, p.mark) + "forbidden region '" + p.name + "': ";
+                if (what.rfind(head, 0) == 0)
+                    what = what.substr(head.size());
+                throw Error(at + "coastline file '" + m.forbidden.coastline + "', feature '" + p.name + "': " + what);
+            }
         }
     }
     for (const auto &t : m.forbidden.timeWindows)

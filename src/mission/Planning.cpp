@@ -315,6 +315,7 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     }
     result.keepOff = m.safety.keepOff;
     result.safetyNote = problem.safetyNote();
+    result.coastlineNote = problem.coastlineNote();
     if (result.plan.solved && problem.getLand())
     {
         const PlannedPath &p = result.plan;

@@ -107,6 +107,8 @@ void printReport(std::ostream &out, const MissionResult &r)
     printRouteModel(out, p);
     if (!r.safetyNote.empty())
         out << "Depth limit:        " << r.safetyNote << "\n";
+    if (!r.coastlineNote.empty())
+        out << "Coastline:          " << r.coastlineNote << "\n";
     if (p.solved)
     {
         out << format("Travel time:        %.4f (raw %.4f, smoothed %.4f)\n", p.travelTime, p.rawTravelTime,

@@ -93,6 +93,11 @@ public:
     {
         return safetyNote_;
     }
+    /// @brief What the coastline file gave (how many land polygons, which were repaired and why), or "".
+    const std::string &coastlineNote() const
+    {
+        return coastlineNote_;
+    }
     /// @brief Forbidden regions in the planning frame.
     const std::vector<MissionPolygon> &getPolygons() const
     {
@@ -163,6 +168,7 @@ private:
     Point2 start_, goal_;
     std::shared_ptr<const KeepOffZone> land_;  // land's boundary and the keep-off distance (null: no land)
     std::string safetyNote_;                   // what the depth limit read, and how
+    std::string coastlineNote_;                // what the coastline gave, and what was repaired
 };
 
 /// @brief The GliderProblem of the built-in Gulf Stream mission (defaultGulfStreamMission()) departing at 0, for

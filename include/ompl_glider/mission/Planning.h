@@ -225,6 +225,7 @@ struct MissionResult
     std::optional<LonLat> closestLandLonLat;
     double keepOff{0.0};      ///< the keep-off distance kept (MissionSpec::safety.keepOff)
     std::string safetyNote;   ///< what the depth limit read (MissionProblem::safetyNote())
+    std::string coastlineNote;  ///< what the coastline gave and repaired (MissionProblem::coastlineNote())
     double wallSeconds{0.0};                ///< whole run
 };
 
