@@ -503,35 +503,7 @@ void MissionProblem::buildRegions()
         const std::string at = mk.line == 0 && mk.file.rfind("--", 0) == 0 ? mk.file + ": " : where(m, mk);
         if (!isGeographic())
             throw Error(at + "forbidden.coastline: the coastline is in lon/lat; give a 'projection' in the mission");
-        const GeoBox gb = frameBounds(box_, [this](Point2 p) { return toGeographic(p); });
-        const double lon0 = gb.lonMin, lon1 = gb.lonMax, lat0 = gb.latMin, lat1 = gb.latMax;
-        const double pad = 0.1 * std::max(lon1 - lon0, lat1 - lat0);
-        std::vector<LandPolygon> land;
-        try
-        {
-            // the box in -180..180; across the antimeridian, its two sides
-            const double a = lon0 - pad, b = lon1 + pad, s = std::max(-90.0, lat0 - pad), n = std::min(90.0, lat1 + pad);
-            std::vector<std::pair<double, double>> spans;
-            if (b - a >= 360.0)
-                spans = {{-180.0, 180.0}};
-            else if (a < -180.0)
-                spans = {{a + 360.0, 180.0}, {-180.0, b}};
-            else if (b > 180.0)
-                spans = {{a, 180.0}, {-180.0, b - 360.0}};
-            else
-                spans = {{a, b}};
-            std::vector<std::string> repairs;
-            for (const auto &[w, e] : spans)
-                for (LandPolygon &p : readLandPolygons(m.forbidden.coastline, w, s, e, n, &repairs))
-                    land.push_back(std::move(p));
-            coastlineNote_ = std::to_string(land.size()) + " land polygons from '" + m.forbidden.coastline + "'";
-            for (const std::string &r : repairs)
-                coastlineNote_ += "; " + r;
-        }
-        catch (const Error &e)
-        {
-            throw Error(at + e.what());
-        }
+        const std::vector<LandPolygon> land = readCoastline(at);
         for (std::size_t k = 0; k < land.size(); ++k)
         {
             PolygonSpec p;

@@ -23,6 +23,7 @@ class ForbiddenRegions;
 class ForbiddenCells;
 struct NetCdfCurrentOptions;
 class LocalProjection;
+struct LandPolygon;
 
 /// @brief A forbidden region in the planning frame (for maps and outputs).
 struct MissionPolygon
@@ -147,6 +148,8 @@ private:
     void buildBox();
     void checkAnalyticFields() const;  ///< analytic fields are finite over the box (parameters do not overflow)
     void buildRegions();
+    /// The coastline's land polygons about the box (Safety.cpp); errors begin with @p at.
+    std::vector<LandPolygon> readCoastline(const std::string &at);
     /// The keep-off zone and the shallow water (Safety.cpp), added to @p regions.
     void addSafety(ForbiddenRegions &regions);
     /// The shallow water of the depth limit (Safety.cpp); null without a bathymetry.
