@@ -5,6 +5,7 @@
 #include "ompl_glider/current/ShiftedTimeField.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -251,6 +252,14 @@ void MissionProblem::buildField()
     projection_ = nc.projection;
     projectionScale_ = 1.0;
     forecastFiles_ = nc.files;
+    {
+        // a wind (uwnd, u10, eastward_wind...) is called so on the map
+        std::string u = nc.uVariable;
+        for (char &ch : u)
+            ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        if (u == "uwnd" || u == "u10" || u.find("wind") != std::string::npos)
+            fieldWord_ = "wind";
+    }
 #else
     throw Error(where(m, m.current.mark) + "field 'current.type': this build of ompl_glider has no NetCDF "
                                            "support (OMPL_GLIDER_WITH_NETCDF=OFF)");
@@ -521,6 +530,7 @@ void MissionProblem::buildRegions()
             try
             {
                 regions->add(std::make_shared<StaticRegion>(p.name, polygon(p, "land"), "land"));
+                polygons_.back().coastline = true;
             }
             catch (const Error &e)
             {

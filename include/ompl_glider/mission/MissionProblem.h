@@ -31,6 +31,7 @@ struct MissionPolygon
     std::string name;            ///< its name
     std::string kind;            ///< island / land / restricted area / closure / ice
     std::vector<Point2> points;  ///< outer ring, planning frame
+    bool coastline{false};       ///< one of the coastline file's land polygons
 };
 
 /// @brief The problem of a mission: field, forbidden regions, frame conversions. Thread-safe for const use (the
@@ -93,6 +94,11 @@ public:
     const std::string &safetyNote() const
     {
         return safetyNote_;
+    }
+    /// @brief What the field is: "wind" for a forecast of winds (uwnd, u10, ...), else "current".
+    const std::string &fieldWord() const
+    {
+        return fieldWord_;
     }
     /// @brief What the coastline file gave (how many land polygons, which were repaired and why), or "".
     const std::string &coastlineNote() const
@@ -171,6 +177,7 @@ private:
     Point2 start_, goal_;
     std::shared_ptr<const KeepOffZone> land_;  // land's boundary and the keep-off distance (null: no land)
     std::string safetyNote_;                   // what the depth limit read, and how
+    std::string fieldWord_{"current"};         // "current" or "wind"
     std::string coastlineNote_;                // what the coastline gave, and what was repaired
 };
 
