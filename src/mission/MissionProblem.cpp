@@ -252,14 +252,10 @@ void MissionProblem::buildField()
     projection_ = nc.projection;
     projectionScale_ = 1.0;
     forecastFiles_ = nc.files;
-    {
-        // a wind (uwnd, u10, eastward_wind...) is called so on the map
-        std::string u = nc.uVariable;
-        for (char &ch : u)
-            ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-        if (u == "uwnd" || u == "u10" || u.find("wind") != std::string::npos)
-            fieldWord_ = "wind";
-    }
+    std::string u = nc.uVariable;  // a wind (uwnd, u10, eastward_wind...) is called so on the map
+    std::transform(u.begin(), u.end(), u.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
+    if (u == "uwnd" || u == "u10" || u.find("wind") != std::string::npos)
+        fieldWord_ = "wind";
 #else
     throw Error(where(m, m.current.mark) + "field 'current.type': this build of ompl_glider has no NetCDF "
                                            "support (OMPL_GLIDER_WITH_NETCDF=OFF)");
