@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
 # Writes the land polygons of a region as GeoJSON from GSHHG (the Global Self-consistent, Hierarchical,
-# High-resolution Geography database, LGPL) through GMT's `coast`, both from Debian (gmt, gmt-gshhg-low or
-# gmt-gshhg-full). Use the result with `glider_plan --coastline FILE` or `forbidden.coastline` in a mission.
+# High-resolution Geography database, LGPL) through GMT's `coast`, both from Debian. Use the result with
+# `glider_plan --coastline FILE` or `forbidden.coastline` in a mission.
 #
 # Usage: scripts/make_coastline.sh LON_MIN/LON_MAX/LAT_MIN/LAT_MAX OUT.geojson [RESOLUTION]
-#   RESOLUTION: c (crude), l (low, default), i, h, f (intermediate, high, full: need gmt-gshhg-full)
+#   RESOLUTION: c (crude), l (low, default), i (intermediate): Debian's gmt-gshhg-low;
+#               h (high): gmt-gshhg-high; f (full): gmt-gshhg-full  (files /usr/share/gmt-gshhg/binned_GSHHS_R.nc)
 #
-# GMT dumps shorelines as lines; this keeps those that close on themselves (islands, and coasts wholly inside the
-# region), which become polygons. A shoreline cut by the region's edge is left out and named on stderr: widen the
-# region until none is, or take land polygons from another source (Natural Earth's land shapefile, a chart's land
-# area), which --coastline reads as well (GeoJSON, Shapefile, KML, GeoPackage through GDAL/OGR).
+# GMT dumps the shorelines (level 1: land/ocean) as lines. scripts/close_shorelines.py keeps those that close on
+# themselves (islands), clips the others to the region and closes them along its edges, so that a coast cut by the
+# region (Florida and Cuba on a Florida Straits map) stays land. Which side is land is settled by asking GMT
+# whether the region's south-west corner is on land (`gmt select -N`).
 # examples/jamaica_coast.geojson was made with: scripts/make_coastline.sh -79/-75.5/17/19 examples/jamaica_coast.geojson
 set -euo pipefail
 if [ $# -lt 2 ]; then
@@ -17,29 +18,25 @@ if [ $# -lt 2 ]; then
   exit 2
 fi
 region=$1 out=$2 res=${3:-l}
-command -v gmt >/dev/null || { echo "make_coastline: needs gmt and gmt-gshhg-low (apt-get install gmt gmt-gshhg-low)" >&2; exit 2; }
-# (GMT writes gmt.history into the working directory: run it in a temporary one)
-(cd "$(mktemp -d)" && gmt coast -R"$region" -D"$res" -M -W -A0/1/1) | python3 -c '
-import json, sys
-segments, cur = [], None
-for line in sys.stdin:
-    line = line.strip()
-    if line.startswith(">"):
-        cur = []
-        segments.append(cur)
-    elif line and cur is not None:
-        x, y = map(float, line.split()[:2])
-        cur.append([round(x, 6), round(y, 6)])
-features, open_ = [], 0
-for s in segments:
-    if len(s) >= 4 and s[0] == s[-1]:
-        features.append({"type": "Feature", "properties": {"kind": "land", "source": "GSHHG via GMT coast"},
-                         "geometry": {"type": "Polygon", "coordinates": [s]}})
-    elif len(s) >= 2:
-        open_ += 1
-        print("make_coastline: a shoreline from %s to %s is cut by the region: left out" % (s[0], s[-1]),
-              file=sys.stderr)
-json.dump({"type": "FeatureCollection", "features": features}, sys.stdout)
-sys.stdout.write("\n")
-print("make_coastline: %d polygons, %d cut shorelines left out" % (len(features), open_), file=sys.stderr)
-' > "$out"
+case "$res" in
+  c|l|i) package=gmt-gshhg-low ;;
+  h) package=gmt-gshhg-high ;;
+  f) package=gmt-gshhg-full ;;
+  *) echo "make_coastline: resolution '$res': expected c, l, i, h or f" >&2; exit 2 ;;
+esac
+command -v gmt >/dev/null || { echo "make_coastline: needs gmt and $package (apt-get install gmt $package)" >&2; exit 2; }
+installed=$(ls /usr/share/gmt-gshhg/binned_GSHHS_?.nc 2>/dev/null | sed 's/.*_\(.\)\.nc/\1/' | tr -d '\n')
+if [ -d /usr/share/gmt-gshhg ] && [ ! -e "/usr/share/gmt-gshhg/binned_GSHHS_$res.nc" ]; then
+  echo "make_coastline: resolution '$res' is not installed (installed: ${installed:-none}): apt-get install $package" >&2
+  exit 2
+fi
+IFS=/ read -r lon0 lon1 lat0 lat1 <<< "$region"
+here=$(cd "$(dirname "$0")" && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# (GMT writes gmt.history into the working directory: run it in the temporary one)
+(cd "$tmp" && gmt coast -R"$region" -D"$res" -M -W -A0/1/1) > "$tmp/shore.txt"
+# the south-west corner on land? (-N wet/dry: s skips water, k keeps land)
+corner=$(cd "$tmp" && echo "$lon0 $lat0" | gmt select -R"$region" -D"$res" -A0/1/1 -Ns/k || true)
+if [ -n "$corner" ]; then corner_land=yes; else corner_land=no; fi
+python3 "$here/close_shorelines.py" --corner-land "$corner_land" -- "$lon0/$lon1/$lat0/$lat1" < "$tmp/shore.txt" > "$out"

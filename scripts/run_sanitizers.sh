@@ -14,4 +14,6 @@ cd "$root/build-fuzz"
 # ordinary build (scripts/run_tests.sh), not here.
 # StrongCurrentsFine: the slow references (a level set at a fine resolution, 5 min sanitized) that the ordinary run
 # already covers; the same code runs sanitized in the faster StrongCurrents cases
-ctest --output-on-failure -j"$(nproc)" -E '^(package|StrongCurrentsFine)\.' "$@"
+# demo.benchmark_ice: OMPL's Benchmark gives every planner a fixed time, which ZA*TVE does not meet sanitized; the
+# other demos run here, the benchmark in the ordinary run
+ctest --output-on-failure -j"$(nproc)" -E '^(package|StrongCurrentsFine)\.|^demo\.benchmark_ice$' "$@"

@@ -123,14 +123,16 @@ double signedArea(const std::vector<Point2> &r)
 }
 }  // namespace
 
-Polygon::Polygon(std::vector<Point2> outer, std::vector<std::vector<Point2>> holes, const std::string &name)
+Polygon::Polygon(std::vector<Point2> outer, std::vector<std::vector<Point2>> holes, const std::string &name,
+                 RingCheck check)
 {
     outer_ = cleanRing(std::move(outer), name, "outer ring");
     {
         std::vector<std::vector<Point2>> rings{outer_};
         for (std::size_t h = 0; h < holes.size(); ++h)
             rings.push_back(cleanRing(holes[h], name, "hole " + std::to_string(h)));
-        checkSimple(rings, name);
+        if (check == RingCheck::strict)
+            checkSimple(rings, name);
     }
     const double outerArea = std::fabs(signedArea(outer_));
     if (!(outerArea > 0))

@@ -11,6 +11,7 @@
 #include <ogrsf_frmts.h>
 
 #include "ompl_glider/Exception.h"
+#include "NumberText.h"
 
 namespace ompl_glider
 {
@@ -68,10 +69,52 @@ void collect(const OGRGeometry &g, std::vector<LandPolygon> &out)
             break;
     }
 }
+
+/// "lon -80.1, lat 25.2"
+std::string lonLat(double lon, double lat)
+{
+    return "lon " + text::number(lon) + ", lat " + text::number(lat);
+}
+
+/// GEOS's reason why @p g is invalid (OGR reports it as a warning), or "" when it is valid.
+std::string invalidity(const OGRGeometry &g)
+{
+    CPLErrorReset();
+    if (g.IsValid())
+        return "";
+    const std::string reason = CPLGetLastErrorMsg();
+    return reason.empty() ? "invalid (GEOS)" : reason;
+}
+
+/// The feature as messages name it: its `name` attribute, else its index.
+std::string featureName(const OGRFeature &f)
+{
+    const int k = f.GetFieldIndex("name");
+    if (k >= 0 && f.IsFieldSetAndNotNull(k) && *f.GetFieldAsString(k))
+        return std::string("'") + f.GetFieldAsString(k) + "'";
+    return std::to_string(f.GetFID());
+}
 }  // namespace
 
+std::string polygonFault(const std::vector<Point2> &outer, const std::vector<std::vector<Point2>> &holes)
+{
+    registerDrivers();
+    OGRPolygon p;
+    auto add = [&p](const std::vector<Point2> &ring) {
+        OGRLinearRing r;
+        for (const Point2 &q : ring)
+            r.addPoint(q.x, q.y);
+        r.closeRings();
+        p.addRing(&r);
+    };
+    add(outer);
+    for (const auto &h : holes)
+        add(h);
+    return invalidity(p);
+}
+
 std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin, double latMin, double lonMax,
-                                          double latMax)
+                                          double latMax, std::vector<std::string> *repairs)
 {
     registerDrivers();
     const std::string who = "coastline file '" + path + "'";
@@ -124,8 +167,8 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin
             if (!g0 || g0->IsEmpty())
                 continue;
             std::unique_ptr<OGRGeometry> g(g0->clone());
-            const std::string which = who + ", layer '" + layer->GetName() + "', feature " +
-                                      std::to_string(feature->GetFID());
+            const std::string name = featureName(*feature);
+            const std::string which = who + ", layer '" + layer->GetName() + "', feature " + name;
             if (toLonLat && g->transform(toLonLat.get()) != OGRERR_NONE)
                 throw Error(which + ": its coordinates cannot be transformed to lon/lat");
             const OGRwkbGeometryType type = wkbFlatten(g->getGeometryType());
@@ -139,7 +182,12 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin
                     if (l->getNumPoints() < 4 || !l->get_IsClosed())
                     {
                         delete polys;
-                        throw Error(which + ": an open line; expected land polygons (or closed shorelines)");
+                        const int n = l->getNumPoints();
+                        throw Error(which + ": an open line" +
+                                    (n > 0 ? " from " + lonLat(l->getX(0), l->getY(0)) + " to " +
+                                                 lonLat(l->getX(n - 1), l->getY(n - 1))
+                                           : std::string()) +
+                                    "; expected land polygons (or closed shorelines)");
                     }
                     OGRLinearRing r;
                     r.addSubLineString(l);
@@ -159,12 +207,16 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin
             {
                 if (e.MaxX < lonMin + shift || e.MinX > lonMax + shift || e.MaxY < latMin || e.MinY > latMax)
                     continue;
-                if (!valid && !g->IsValid())
+                const std::string fault = valid ? std::string() : invalidity(*g);
+                if (!fault.empty())
                 {
                     std::unique_ptr<OGRGeometry> fixed(g->MakeValid());
-                    if (!fixed)
-                        throw Error(which + ": an invalid polygon that cannot be repaired");
+                    if (!fixed || !fixed->IsValid())
+                        throw Error(which + ": an invalid polygon (" + fault +
+                                    ", in lon lat) that OGR's MakeValid cannot repair");
                     g = std::move(fixed);
+                    if (repairs)
+                        repairs->push_back("feature " + name + ": " + fault + " (lon lat): repaired by OGR's MakeValid");
                 }
                 valid = true;
                 const OGRPolygon box = boxAt(shift);
@@ -175,6 +227,9 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin
                 collect(*clipped, out);
                 for (std::size_t k = first; k < out.size(); ++k)
                 {
+                    out[k].name = feature->GetFieldIndex("name") >= 0 && name.front() == '\''
+                                      ? name.substr(1, name.size() - 2)
+                                      : "feature " + name;
                     for (LonLat &p : out[k].outer)
                         p.lon -= shift;
                     for (auto &hole : out[k].holes)

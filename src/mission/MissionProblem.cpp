@@ -5,6 +5,7 @@
 #include "ompl_glider/current/ShiftedTimeField.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -253,6 +254,10 @@ void MissionProblem::buildField()
     projectionScale_ = 1.0;
     forecastFiles_ = nc.files;
     forecastNotes_ = ompl_glider::forecastNotes(nc);
+    std::string u = nc.uVariable;  // a wind (uwnd, u10, eastward_wind...) is called so on the map
+    std::transform(u.begin(), u.end(), u.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
+    if (u == "uwnd" || u == "u10" || u.find("wind") != std::string::npos)
+        fieldWord_ = "wind";
 #else
     throw Error(where(m, m.current.mark) + "field 'current.type': this build of ompl_glider has no NetCDF "
                                            "support (OMPL_GLIDER_WITH_NETCDF=OFF)");
@@ -470,12 +475,25 @@ void MissionProblem::buildRegions()
     auto polygon = [&](const PolygonSpec &p, const std::string &kind) {
         try
         {
+            // every polygon GEOS calls valid (a hole may touch its outer ring at a point), checked as given
+            auto given = [](const std::vector<std::pair<double, double>> &r) {
+                std::vector<Point2> out;
+                for (const auto &[a, b] : r)
+                    out.push_back({a, b});
+                return out;
+            };
             std::vector<std::vector<Point2>> holes;
+            for (const auto &h : p.holes)
+                holes.push_back(given(h));
+            const std::string fault = polygonFault(given(p.points), holes);
+            if (!fault.empty())
+                throw Error("an invalid polygon: " + fault + (p.geographic ? " (lon lat)" : " (x y as given)"));
+            holes.clear();
             for (const auto &h : p.holes)
                 holes.push_back(ring(h, p.geographic, p.name));
             std::vector<Point2> outer = ring(p.points, p.geographic, p.name);
             polygons_.push_back({p.name, kind, outer});
-            return Polygon(outer, holes, p.name);
+            return Polygon(outer, holes, p.name, RingCheck::validated);
         }
         catch (const Error &e)
         {
@@ -492,35 +510,11 @@ void MissionProblem::buildRegions()
         const std::string at = mk.line == 0 && mk.file.rfind("--", 0) == 0 ? mk.file + ": " : where(m, mk);
         if (!isGeographic())
             throw Error(at + "forbidden.coastline: the coastline is in lon/lat; give a 'projection' in the mission");
-        const GeoBox gb = frameBounds(box_, [this](Point2 p) { return toGeographic(p); });
-        const double lon0 = gb.lonMin, lon1 = gb.lonMax, lat0 = gb.latMin, lat1 = gb.latMax;
-        const double pad = 0.1 * std::max(lon1 - lon0, lat1 - lat0);
-        std::vector<LandPolygon> land;
-        try
-        {
-            // the box in -180..180; across the antimeridian, its two sides
-            const double a = lon0 - pad, b = lon1 + pad, s = std::max(-90.0, lat0 - pad), n = std::min(90.0, lat1 + pad);
-            std::vector<std::pair<double, double>> spans;
-            if (b - a >= 360.0)
-                spans = {{-180.0, 180.0}};
-            else if (a < -180.0)
-                spans = {{a + 360.0, 180.0}, {-180.0, b}};
-            else if (b > 180.0)
-                spans = {{a, 180.0}, {-180.0, b - 360.0}};
-            else
-                spans = {{a, b}};
-            for (const auto &[w, e] : spans)
-                for (LandPolygon &p : readLandPolygons(m.forbidden.coastline, w, s, e, n))
-                    land.push_back(std::move(p));
-        }
-        catch (const Error &e)
-        {
-            throw Error(at + e.what());
-        }
+        const std::vector<LandPolygon> land = readCoastline(at);
         for (std::size_t k = 0; k < land.size(); ++k)
         {
             PolygonSpec p;
-            p.name = "coast " + std::to_string(k + 1);
+            p.name = land[k].name;
             p.geographic = true;
             p.mark = m.forbidden.coastlineMark;
             for (const LonLat &g : land[k].outer)
@@ -531,7 +525,20 @@ void MissionProblem::buildRegions()
                 for (const LonLat &g : h)
                     p.holes.back().emplace_back(g.lon, g.lat);
             }
-            regions->add(std::make_shared<StaticRegion>(p.name, polygon(p, "land"), "land"));
+            try
+            {
+                regions->add(std::make_shared<StaticRegion>(p.name, polygon(p, "land"), "land"));
+                polygons_.back().coastline = true;
+            }
+            catch (const Error &e)
+            {
+                // (polygon() names the forecast's file for a flag: name the coastline file and the feature)
+                std::string what = e.what();
+                const std::string head = where(m, p.mark) + "forbidden region '" + p.name + "': ";
+                if (what.rfind(head, 0) == 0)
+                    what = what.substr(head.size());
+                throw Error(at + "coastline file '" + m.forbidden.coastline + "', feature '" + p.name + "': " + what);
+            }
         }
     }
     for (const auto &t : m.forbidden.timeWindows)

@@ -320,6 +320,7 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
         result.forecastNotes.push_back(note);
     if (const std::string frozen = planning_detail::frozenFieldNote(problem, result.plan); !frozen.empty())
         result.forecastNotes.push_back(frozen);
+    result.coastlineNote = problem.coastlineNote();
     if (result.plan.solved && problem.getLand())
     {
         const PlannedPath &p = result.plan;

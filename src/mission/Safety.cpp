@@ -1,5 +1,6 @@
 // Safety margins of a mission (MissionSpec::safety): the keep-off zone from land and the shallow water of the depth
 // limit, both forbidden regions of the one environment (see MissionProblem.h).
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "ompl_glider/environment/ForbiddenRegions.h"
 #include "ompl_glider/environment/KeepOffZone.h"
 #include "ompl_glider/environment/StaticRegion.h"
+#include "ompl_glider/io/Coastline.h"
 #include "ompl_glider/io/DepthGrid.h"
 #include "ompl_glider/mission/MissionProblem.h"
 
@@ -119,5 +121,40 @@ void MissionProblem::addSafety(ForbiddenRegions &regions)
     }
     if (auto shallow = shallowWater())
         regions.add(shallow);
+}
+std::vector<LandPolygon> MissionProblem::readCoastline(const std::string &at)
+{
+    // the coastline's land polygons that meet the box (with a margin of a tenth of its size)
+    const MissionSpec &m = spec_;
+    const GeoBox gb = frameBounds(box_, [this](Point2 p) { return toGeographic(p); });
+    const double lon0 = gb.lonMin, lon1 = gb.lonMax, lat0 = gb.latMin, lat1 = gb.latMax;
+    const double pad = 0.1 * std::max(lon1 - lon0, lat1 - lat0);
+    std::vector<LandPolygon> land;
+    try
+    {
+        // the box in -180..180; across the antimeridian, its two sides
+        const double a = lon0 - pad, b = lon1 + pad, s = std::max(-90.0, lat0 - pad), n = std::min(90.0, lat1 + pad);
+        std::vector<std::pair<double, double>> spans;
+        if (b - a >= 360.0)
+            spans = {{-180.0, 180.0}};
+        else if (a < -180.0)
+            spans = {{a + 360.0, 180.0}, {-180.0, b}};
+        else if (b > 180.0)
+            spans = {{a, 180.0}, {-180.0, b - 360.0}};
+        else
+            spans = {{a, b}};
+        std::vector<std::string> repairs;
+        for (const auto &[w, e] : spans)
+            for (LandPolygon &p : readLandPolygons(m.forbidden.coastline, w, s, e, n, &repairs))
+                land.push_back(std::move(p));
+        coastlineNote_ = std::to_string(land.size()) + " land polygons from '" + m.forbidden.coastline + "'";
+        for (const std::string &r : repairs)
+            coastlineNote_ += "; " + r;
+    }
+    catch (const Error &e)
+    {
+        throw Error(at + e.what());
+    }
+    return land;
 }
 }  // namespace ompl_glider

@@ -31,6 +31,48 @@ void selectFont(cairo_t *cr, double size, bool bold)
     cairo_set_font_size(cr, size);
 }
 
+/// Text of an SVG map, written as <text> elements (searchable, selectable, small) rather than cairo's glyph
+/// outlines: attached to the SVG surface as user data; the text helpers write to it instead of drawing.
+cairo_user_data_key_t svgTextKey;
+
+std::string xmlEscaped(const std::string &s)
+{
+    std::string out;
+    for (char ch : s)
+        switch (ch)
+        {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += ch;
+        }
+    return out;
+}
+
+/// Writes @p s as an SVG <text> element when @p cr draws on an SVG surface with a text buffer; false otherwise.
+bool svgText(cairo_t *cr, double x, double y, const std::string &s, double size, bool bold, double alignX,
+             const Rgba &c, bool halo)
+{
+    auto *out = static_cast<std::string *>(cairo_surface_get_user_data(cairo_get_target(cr), &svgTextKey));
+    if (!out)
+        return false;
+    cairo_matrix_t m;
+    cairo_get_matrix(cr, &m);
+    const char *anchor = alignX >= 0.75 ? "end" : alignX >= 0.25 ? "middle" : "start";
+    char head[512];
+    std::snprintf(head, sizeof head,
+                  "<text transform=\"matrix(%g %g %g %g %g %g)\" x=\"%.2f\" y=\"%.2f\" font-family=\"sans-serif\" "
+                  "font-size=\"%g\"%s text-anchor=\"%s\" fill=\"rgb(%d,%d,%d)\" fill-opacity=\"%g\"%s>",
+                  m.xx, m.yx, m.xy, m.yy, m.x0, m.y0, x, y, size, bold ? " font-weight=\"bold\"" : "", anchor,
+                  int(std::lround(255 * c.r)), int(std::lround(255 * c.g)), int(std::lround(255 * c.b)), c.a,
+                  halo ? " stroke=\"white\" stroke-opacity=\"0.85\" stroke-width=\"3\" stroke-linejoin=\"round\" "
+                         "paint-order=\"stroke\""
+                       : "");
+    *out += head + xmlEscaped(s) + "</text>\n";
+    return true;
+}
+
 /// The advance of @p s in the current font.
 double textAdvance(cairo_t *cr, const std::string &s)
 {
@@ -96,6 +138,8 @@ void setDash(cairo_t *cr, bool dashed)
 void haloText(cairo_t *cr, double x, double y, const std::string &s, const Rgba &c, double size, bool bold,
               double alignX)
 {
+    if (svgText(cr, x, y, s, size, bold, alignX, c, true))
+        return;
     selectFont(cr, size, bold);
     const double x0 = x - alignX * textAdvance(cr, s);
     cairo_move_to(cr, x0, y);
@@ -112,6 +156,8 @@ void haloText(cairo_t *cr, double x, double y, const std::string &s, const Rgba 
 
 void plainText(cairo_t *cr, double x, double y, const std::string &s, double size, bool bold, double alignX, Rgba c)
 {
+    if (svgText(cr, x, y, s, size, bold, alignX, c, false))
+        return;
     selectFont(cr, size, bold);
     cairo_move_to(cr, x - alignX * textAdvance(cr, s), y);
     setColour(cr, c);
@@ -356,7 +402,7 @@ void MapPainter::drawRegion(const MapPolygon &poly) const
         }
         cx /= poly.vertices.size();
         cy /= poly.vertices.size();
-        haloText(cr, X(cx), Y(cy) + 4, poly.label, poly.stroke, 12, true, 0.5);
+        haloText(cr, X(cx), Y(cy) + 4, poly.label, poly.stroke, 12, true, 0.5);  // (a coastline's have none)
     }
 }
 
@@ -583,6 +629,9 @@ void writeCairoFile(const std::string &filename, int width, int height, bool svg
         cairo_surface_destroy(surf);
         throw Error("cannot create '" + filename + "': " + msg);
     }
+    std::string texts;  // the SVG's text, as <text> elements
+    if (svg)
+        cairo_surface_set_user_data(surf, &map_detail::svgTextKey, &texts, nullptr);
     cairo_t *cr = cairo_create(surf);
     draw(cr);
     cairo_destroy(cr);
@@ -600,6 +649,13 @@ void writeCairoFile(const std::string &filename, int width, int height, bool svg
     cairo_surface_destroy(surf);
     if (st != CAIRO_STATUS_SUCCESS)
         throw Error("cannot write '" + filename + "': " + cairo_status_to_string(st));
+    if (svg)
+    {
+        const std::size_t end = bytes.rfind("</svg>");
+        if (end == std::string::npos)
+            throw Error("cannot write '" + filename + "': cairo's SVG has no </svg>");
+        bytes.insert(end, "<g id=\"text\">\n" + texts + "</g>\n");
+    }
     output_detail::writeFileChecked(filename, bytes);
 }
 

@@ -24,9 +24,9 @@ void MapPainter::drawLegend()
     drawPathEntries();
     if (map.hasStartGoal_)
         drawStartGoalEntries();
-    drawAreaEntries();
     if (map.field_)
         drawFieldEntries();
+    drawAreaEntries();
     drawNotes();
 }
 
@@ -76,12 +76,31 @@ void MapPainter::drawAreaEntries()
             continue;
         legendSwatch(colour, {0.4, 0.4, 0.4, 1.0}, 0.8, label);
     }
+    // one entry per name, at most kMaxAreaEntries of them, so that a coastline of hundreds of polygons (or many
+    // regions) never pushes the notes off the page
+    constexpr std::size_t kMaxAreaEntries = 8;
     std::set<std::string> seen;
+    std::size_t more = 0;
     for (const MapPolygon &poly : map.polygons_)
     {
-        if (!seen.insert(poly.label).second)
+        const std::string entry = !poly.legend.empty() ? poly.legend
+                                  : poly.label.empty() ? std::string("forbidden region")
+                                                       : poly.label;
+        if (seen.count(entry))
             continue;
-        legendSwatch(poly.fill, poly.stroke, 1.2, poly.label.empty() ? "forbidden region" : poly.label);
+        if (seen.size() >= kMaxAreaEntries)
+        {
+            ++more;
+            seen.insert(entry);
+            continue;
+        }
+        seen.insert(entry);
+        legendSwatch(poly.fill, poly.stroke, 1.2, entry);
+    }
+    if (more > 0)
+    {
+        plainText(cr, lx_ + 38, ly_ + 4, "and " + std::to_string(more) + " more regions", 12);
+        ly_ += 22;
     }
 }
 
@@ -92,7 +111,10 @@ void MapPainter::drawFieldEntries()
         cairo_set_source_rgba(cr, 0.10, 0.20, 0.40, 0.9);
         cairo_set_line_width(cr, 1.1);
         arrow(cr, lx_ + 2, ly_, 26, 0, 6);
-        plainText(cr, lx_ + 38, ly_ + 4, "current at t=" + fmt(map.fieldTime_) + tu, 12);
+        plainText(cr, lx_ + 38, ly_ + 4,
+                  options.fieldWord + " at " +
+                      (options.timeText ? options.timeText(map.fieldTime_) : "t=" + fmt(map.fieldTime_) + tu),
+                  12);
         ly_ += 20;
         ly_ += 16 * wrappedText(cr, lx_ + 38, ly_ + 4, "(" + map.field_->name() + ")", 11, W - lx_ - 46, 16,
                                 {0.3, 0.3, 0.3, 1}) +
@@ -105,8 +127,8 @@ void MapPainter::drawFieldEntries()
 void MapPainter::drawColourBar()
 {
     const std::string label = !options.shadingLabel.empty()    ? options.shadingLabel
-                              : options.speedInMetresPerSecond ? "current speed (m/s)"
-                                                               : "current speed";
+                              : options.speedInMetresPerSecond ? options.fieldWord + " speed (m/s)"
+                                                               : options.fieldWord + " speed";
     plainText(cr, lx_, ly_ + 4, label, 12);
     ly_ += 12;
     const double bw = 150, bh = 12;

@@ -19,6 +19,12 @@ MapPolygon mapPolygon(const MissionPolygon &p)
 {
     MapPolygon mp;
     mp.label = p.name;
+    if (p.coastline)
+    {
+        // a coastline's polygons (often hundreds): one legend entry, no labels on the map
+        mp.label.clear();
+        mp.legend = "land (coastline)";
+    }
     for (const Point2 &q : p.points)
         mp.vertices.push_back({q.x, q.y});
     if (p.kind == "closure")
@@ -134,6 +140,11 @@ MapOptions mapFrame(const MissionProblem &problem)
         mo.metresPerUnit = m.metresPerUnit();
     }
     mo.speedInMetresPerSecond = netcdf;
+    mo.fieldWord = problem.fieldWord();
+    mo.timeText = [&problem](double t) {
+        const std::string iso = problem.isoTime(t);
+        return iso.empty() ? "t=" + fmt(t) : iso;
+    };
     return mo;
 }
 
@@ -303,8 +314,9 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
     }
     const Point2 s = problem.getStart(), g = problem.getGoal();
     map.setStartGoal(s.x, s.y, g.x, g.y);
-    const std::string iso = r.waypoints.empty() ? "" : r.waypoints.front().iso;
-    map.addNote("departure " + fmt(r.plan.departure) + (iso.empty() ? "" : " (" + iso + ")"));
+    // the departure as a date when the field has dates (also without a path)
+    const std::string iso = problem.isoTime(r.plan.departure);
+    map.addNote("departure " + (iso.empty() ? fmt(r.plan.departure) : iso));
     if (r.plan.solved)
     {
         map.addNote("travel time " + duration(r, r.plan.travelTime) + ", path length " + length(r, r.plan.pathLength));
@@ -314,7 +326,10 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
     }
     else
         map.addNote("no path: " + r.plan.reason);
-    map.addNote(std::isnan(m.outputs.mapTime) ? "field shown at departure" : "field shown at t = " + fmt(tMap));
+    map.addNote(std::isnan(m.outputs.mapTime) ? "field shown at departure"
+                                              : "field shown at " + (problem.isoTime(tMap).empty()
+                                                                         ? "t = " + fmt(tMap)
+                                                                         : problem.isoTime(tMap)));
     return map;
 }
 }  // namespace ompl_glider

@@ -109,6 +109,8 @@ void printReport(std::ostream &out, const MissionResult &r)
         out << "Depth limit:        " << r.safetyNote << "\n";
     for (const std::string &note : r.forecastNotes)
         out << "Forecast:           " << note << "\n";
+    if (!r.coastlineNote.empty())
+        out << "Coastline:          " << r.coastlineNote << "\n";
     if (p.solved)
     {
         if (m.physicalUnits().time)  // days and hours, the seconds beside them

@@ -203,7 +203,8 @@ void safetyJson(const MissionResult &r, json &j)
     j["safety"] = {{"keep_off", m.safety.keepOff},
                    {"keep_off_m", metres ? json(m.safety.keepOff * mpu) : json(nullptr)},
                    {"min_depth_m", m.safety.minDepth},
-                   {"depth_limit", jtext(r.safetyNote)}};
+                   {"depth_limit", jtext(r.safetyNote)},
+                   {"coastline", jtext(r.coastlineNote)}};
     j["closest_land"] = std::isfinite(c.distance)
                             ? json{{"distance", c.distance},
                                    {"distance_m", metres ? json(c.distance * mpu) : json(nullptr)},

@@ -315,7 +315,7 @@ yaml_case("speeds-empty", mission("speeds: []"), "speeds")
 yaml_case("speeds-text", mission("speeds: [0.3, abc]"), "speeds[1]")
 yaml_case("forbidden-bowtie",
           mission(append="forbidden:\n  obstacles:\n    - {name: bow, points: [[4, -1], [6, 1], [6, -1], [4, 1]]}\n"),
-          "polygon 'bow': outer ring edge 0 (4, -1)-(6, 1) meets outer ring edge 2")
+          "forbidden region 'bow': an invalid polygon: Self-intersection at or near point 5 0 (x y as given)")
 yaml_case("forbidden-two-points",
           mission(append="forbidden:\n  obstacles:\n    - {name: line, points: [[4, -1], [6, 1]]}\n"),
           "at least 3 points")

@@ -249,3 +249,137 @@ TEST(Coastline, RouteGoesAroundJamaicaAndAStartOnItIsBadInput)
     EXPECT_FALSE(pp.solved);
     EXPECT_EQ(pp.badInput, "start");
 }
+
+namespace
+{
+/// A GeoJSON of one feature with the given name and geometry (JSON text).
+std::string oneFeature(const std::string &name, const std::string &geometry)
+{
+    return R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{"name":")" + name +
+           R"("},"geometry":)" + geometry + "}]}";
+}
+
+// an island of lon -77.5..-76.5, lat 17.8..18.6 with a lagoon whose corner touches the outer ring at its
+// south-west vertex (valid for GEOS, as in GSHHG's intermediate data)
+const char *kTouchingLagoon =
+    R"({"type":"Polygon","coordinates":[[[-77.5,17.8],[-76.5,17.8],[-76.5,18.6],[-77.5,18.6],[-77.5,17.8]],)"
+    R"([[-77.5,17.8],[-77.0,18.0],[-77.2,18.3],[-77.5,17.8]]]})";
+}  // namespace
+
+TEST(Coastline, AHoleTouchingItsOuterRingAtAVertexIsTakenAsItIs)
+{
+    TempDir dir;
+    const std::string coast = dir.file("lagoon.geojson"), nc = dir.file("caribbean.nc");
+    std::ofstream(coast) << oneFeature("Isla Laguna", kTouchingLagoon);
+    std::vector<std::string> repairs;
+    const auto land = readLandPolygons(coast, -80, 16, -75, 20, &repairs);
+    ASSERT_EQ(land.size(), 1u);
+    EXPECT_EQ(land[0].holes.size(), 1u);
+    EXPECT_EQ(land[0].name, "Isla Laguna");
+    EXPECT_TRUE(repairs.empty()) << repairs.front();
+    // the planner takes it: land is forbidden, the lagoon is water
+    writeCaribbean(nc);
+    ForecastInput in;
+    in.current.file = nc;
+    in.start = {-78.8, 18.2};
+    in.goal = {-75.8, 18.1};
+    in.speed = 0.4;
+    MissionSpec spec = forecastMission(in);
+    spec.forbidden.coastline = coast;
+    spec.forbidden.coastlineMark = {"--coastline", 0};
+    const MissionProblem problem(spec);
+    ASSERT_EQ(problem.getPolygons().size(), 1u);
+    EXPECT_EQ(problem.getPolygons()[0].name, "Isla Laguna");
+    const Point2 onLand = problem.toLocal({-76.8, 18.4}), inLagoon = problem.toLocal({-77.2, 18.1});
+    EXPECT_FALSE(problem.getEnvironment()->pointFree(onLand.x, onLand.y, spec.departure.time));
+    EXPECT_TRUE(problem.getEnvironment()->pointFree(inLagoon.x, inLagoon.y, spec.departure.time));
+    EXPECT_EQ(problem.coastlineNote().find("repaired"), std::string::npos) << problem.coastlineNote();
+}
+
+TEST(Coastline, AnInvalidPolygonIsRepairedAndTheRepairIsReported)
+{
+    TempDir dir;
+    const std::string coast = dir.file("bowtie.geojson");
+    // a bow tie: its outer ring crosses itself at lon -77, lat 18.2
+    std::ofstream(coast) << oneFeature(
+        "Bow Tie", R"({"type":"Polygon","coordinates":[[[-77.5,17.8],[-76.5,18.6],[-76.5,17.8],[-77.5,18.6],[-77.5,17.8]]]})");
+    std::vector<std::string> repairs;
+    const auto land = readLandPolygons(coast, -80, 16, -75, 20, &repairs);
+    ASSERT_EQ(repairs.size(), 1u);
+    EXPECT_NE(repairs[0].find("'Bow Tie'"), std::string::npos) << repairs[0];
+    EXPECT_NE(repairs[0].find("Self-intersection"), std::string::npos) << repairs[0];
+    EXPECT_NE(repairs[0].find("-77"), std::string::npos) << repairs[0];  // where, in lon/lat
+    // both triangles are land after the repair
+    ASSERT_EQ(land.size(), 2u);
+    int west = 0, east = 0;
+    for (const LandPolygon &p : land)
+    {
+        west += inside(p.outer, -77.4, 18.2);
+        east += inside(p.outer, -76.6, 18.2);
+    }
+    EXPECT_EQ(west, 1);
+    EXPECT_EQ(east, 1);
+}
+
+TEST(Coastline, ErrorsNameTheCoastlineFileTheFeatureAndLonLat)
+{
+    TempDir dir;
+    const std::string coast = dir.file("cape.geojson"), nc = dir.file("caribbean.nc");
+    std::ofstream(coast) << oneFeature("Cape Open",
+                                       R"({"type":"LineString","coordinates":[[-77,18],[-76,18.5],[-75.5,18]]})");
+    writeCaribbean(nc);
+    ForecastInput in;
+    in.current.file = nc;
+    in.start = {-78.8, 18.2};
+    in.goal = {-75.8, 18.1};
+    MissionSpec spec = forecastMission(in);
+    spec.forbidden.coastline = coast;
+    spec.forbidden.coastlineMark = {"--coastline", 0};
+    try
+    {
+        const MissionProblem problem(spec);
+        ADD_FAILURE() << "an open line was taken as land";
+    }
+    catch (const Error &e)
+    {
+        const std::string msg = e.what();
+        EXPECT_EQ(msg.rfind("--coastline: ", 0), 0u) << msg;
+        EXPECT_NE(msg.find(coast), std::string::npos) << msg;
+        EXPECT_NE(msg.find("'Cape Open'"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("lon -77, lat 18"), std::string::npos) << msg;
+        EXPECT_EQ(msg.find(nc), std::string::npos) << msg;  // not the forecast's file
+    }
+}
+
+TEST(Coastline, MissionPolygonsGeosCallsValidAreTakenOthersNamedWithTheReason)
+{
+    TempDir dir;
+    const std::string nc = dir.file("caribbean.nc");
+    writeCaribbean(nc);
+    ForecastInput in;
+    in.current.file = nc;
+    in.start = {-78.8, 18.2};
+    in.goal = {-75.8, 18.1};
+    MissionSpec spec = forecastMission(in);
+    ObstacleSpec o;
+    o.polygon.name = "reef";
+    o.polygon.geographic = true;
+    o.polygon.points = {{-77.5, 17.8}, {-76.5, 17.8}, {-76.5, 18.6}, {-77.5, 18.6}};
+    o.polygon.holes = {{{-77.5, 17.8}, {-77.0, 18.0}, {-77.2, 18.3}}};  // touches the outer ring at a vertex
+    spec.forbidden.obstacles = {o};
+    EXPECT_NO_THROW(MissionProblem{spec});
+    spec.forbidden.obstacles[0].polygon.holes.clear();
+    spec.forbidden.obstacles[0].polygon.points = {{-77.5, 17.8}, {-76.5, 18.6}, {-76.5, 17.8}, {-77.5, 18.6}};
+    try
+    {
+        const MissionProblem problem(spec);
+        ADD_FAILURE() << "a bow tie was taken";
+    }
+    catch (const Error &e)
+    {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("'reef'"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("Self-intersection"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("lon lat"), std::string::npos) << msg;
+    }
+}

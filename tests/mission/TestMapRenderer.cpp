@@ -167,3 +167,80 @@ TEST(MapRenderer, GeographicFrameDrawsMeridiansWhereTheProjectionPutsThem)
     EXPECT_EQ(w, plain.size().first);
     fs::remove_all(dir);
 }
+
+namespace
+{
+/// The y of the <text> element holding exactly @p s in the SVG (its device y: the maps' texts have no transform
+/// but the identity), or -1 when there is none.
+double textY(const std::string &svg, const std::string &s)
+{
+    const std::size_t at = svg.find(">" + s + "</text>");
+    if (at == std::string::npos)
+        return -1;
+    const std::size_t open = svg.rfind("<text ", at), y = svg.find(" y=\"", open);
+    return std::stod(svg.substr(y + 4));
+}
+
+std::size_t occurrences(const std::string &text, const std::string &s)
+{
+    std::size_t n = 0;
+    for (std::size_t at = text.find(s); at != std::string::npos; at = text.find(s, at + 1))
+        ++n;
+    return n;
+}
+
+/// 250 small triangles over the jet's box (a coastline's worth of polygons).
+std::vector<MapPolygon> manyPolygons(bool asCoastline)
+{
+    std::vector<MapPolygon> out;
+    for (int k = 0; k < 250; ++k)
+    {
+        const double x = 0.5 + 9.0 * (k % 25) / 25.0, y = -3.5 + 7.0 * (k / 25) / 10.0;
+        MapPolygon p;
+        p.vertices = {{x, y}, {x + 0.2, y}, {x + 0.1, y + 0.2}};
+        p.label = asCoastline ? "" : "islet " + std::to_string(k);
+        p.legend = asCoastline ? "land (coastline)" : "";
+        out.push_back(p);
+    }
+    return out;
+}
+}  // namespace
+
+TEST(MapRenderer, ACoastlineOfManyPolygonsKeepsTheLegendColourBarAndNotesOnThePageAsText)
+{
+    const fs::path dir = tempDir("coast");
+    for (const bool asCoastline : {true, false})
+    {
+        MapRenderer map(jetRegion());
+        map.setField(std::make_shared<MeanderingJet>(), 0.0);
+        for (const MapPolygon &p : manyPolygons(asCoastline))
+            map.addPolygon(p);
+        map.setStartGoal(1, -3, 8, 3);
+        map.addNote("travel time 12");
+        map.writeSvg((dir / "map.svg").string());
+        const std::string svg = readAll(dir / "map.svg");
+        const double H = map.size().second;
+        // text is text: the legend, the colour bar's label and the note are <text> elements on the page
+        for (const std::string s : {"Legend", "current speed", "travel time 12"})
+        {
+            const double y = textY(svg, s);
+            EXPECT_GT(y, 0) << s;
+            EXPECT_LT(y, H) << s;
+        }
+        if (asCoastline)
+        {
+            EXPECT_EQ(occurrences(svg, ">land (coastline)</text>"), 1u);  // one entry, no labels on the map
+            EXPECT_EQ(occurrences(svg, "islet"), 0u);
+        }
+        else
+        {
+            // at most 8 regions in the legend, the rest counted
+            std::size_t entries = 0;
+            for (int k = 0; k < 250; ++k)
+                entries += occurrences(svg, ">islet " + std::to_string(k) + "</text>") > 1;
+            EXPECT_LE(entries, 8u);
+            EXPECT_NE(svg.find(">and 242 more regions</text>"), std::string::npos);
+        }
+    }
+    fs::remove_all(dir);
+}

@@ -44,3 +44,6 @@ target_link_libraries(test_mission_goal_window PRIVATE nlohmann_json::nlohmann_j
 # safety margins (keep-off distance, depth limit) through the pipeline
 glider_add_test(test_mission_safety ${CMAKE_CURRENT_LIST_DIR}/TestSafety.cpp)
 target_link_libraries(test_mission_safety PRIVATE netCDF::netcdf)
+# shorelines cut by the box closed along its edges (scripts/close_shorelines.py, used by make_coastline.sh)
+add_test(NAME mission.close_shorelines
+  COMMAND python3 ${CMAKE_CURRENT_LIST_DIR}/check_close_shorelines.py ${PROJECT_SOURCE_DIR}/scripts/close_shorelines.py)

@@ -36,14 +36,23 @@ struct Interval
 ///
 /// Thread-safe for const use. Invalid input (a ring with fewer than 3 distinct vertices, a non-finite
 /// coordinate, zero area) throws ompl_glider::Error naming the polygon and ring.
+/// @brief How a Polygon checks its rings.
+enum class RingCheck
+{
+    strict,     ///< no two edges meet except consecutive edges of one ring at their shared vertex
+    validated,  ///< the caller has checked the rings (GEOS's validity in the coordinates given, which lets a hole
+                ///< touch the outer ring or another hole at a point): only finite vertices and a positive area
+};
+
 class Polygon
 {
 public:
     /// @brief Build from the outer ring and optional holes. Rings may be closed (last == first) or open, in any
     /// orientation. Holes must lie inside the outer ring and not overlap each other (not checked).
     /// @param name used in error messages
+    /// @param check RingCheck::strict (the default) refuses rings that cross or touch, naming the two edges
     explicit Polygon(std::vector<Point2> outer, std::vector<std::vector<Point2>> holes = {},
-                     const std::string &name = "polygon");
+                     const std::string &name = "polygon", RingCheck check = RingCheck::strict);
 
     /// @brief An axis-aligned rectangle [xMin, xMax] x [yMin, yMax].
     static Polygon rectangle(double xMin, double yMin, double xMax, double yMax, const std::string &name = "rectangle");

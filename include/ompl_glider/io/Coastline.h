@@ -16,6 +16,7 @@ struct LandPolygon
 {
     std::vector<LonLat> outer;
     std::vector<std::vector<LonLat>> holes;  ///< lakes
+    std::string name;                         ///< the feature's `name` attribute, else "feature <FID>"
 };
 
 /// @brief The land polygons of every layer of @p path that meet the box [lonMin, lonMax] x [latMin, latMax],
@@ -25,8 +26,16 @@ struct LandPolygon
 /// `coast -M` and some charts do) are taken as the outline of land. Coordinates are transformed to WGS 84 lon/lat
 /// from the layer's spatial reference when it has another one (a file without one is taken as lon/lat). The box
 /// must not cross the antimeridian (lonMin < lonMax within -180..180).
-/// @throws Error naming the file (and the feature) when it cannot be opened, holds no layer, holds an open line or
-/// a point where land is expected, or has coordinates that cannot be transformed to lon/lat.
+/// Every polygon GEOS calls valid is taken as it is (a hole may touch its outer ring or another hole at a point,
+/// as GSHHG's do); the others are repaired by OGR's MakeValid, and each repair is described in @p repairs (when
+/// given): the feature, GEOS's reason and its place in lon/lat.
+/// @throws Error naming the file, the layer and the feature (its `name`, else its index) and giving places in lon/lat,
+/// when it cannot be opened, holds no layer, holds an open line or a point where land is expected, or has
+/// coordinates that cannot be transformed to lon/lat.
 std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin, double latMin, double lonMax,
-                                          double latMax);
+                                          double latMax, std::vector<std::string> *repairs = nullptr);
+
+/// @brief Why GEOS (through OGR) calls the polygon with outer ring @p outer and @p holes invalid ("Self-intersection
+/// at or near point 1 2", in the rings' own coordinates), or "" when it is valid.
+std::string polygonFault(const std::vector<Point2> &outer, const std::vector<std::vector<Point2>> &holes);
 }  // namespace ompl_glider

@@ -25,6 +25,7 @@ class ForbiddenCells;
 struct NetCdfCurrentOptions;
 struct NetCdfCurrents;
 class LocalProjection;
+struct LandPolygon;
 
 /// @brief A forbidden region in the planning frame (for maps and outputs).
 struct MissionPolygon
@@ -32,6 +33,7 @@ struct MissionPolygon
     std::string name;            ///< its name
     std::string kind;            ///< island / land / restricted area / closure / ice
     std::vector<Point2> points;  ///< outer ring, planning frame
+    bool coastline{false};       ///< one of the coastline file's land polygons
 };
 
 /// @brief The problem of a mission: field, forbidden regions, frame conversions. Thread-safe for const use (the
@@ -107,6 +109,16 @@ public:
     {
         return endpointNotes_;
     }
+    /// @brief What the field is: "wind" for a forecast of winds (uwnd, u10, ...), else "current".
+    const std::string &fieldWord() const
+    {
+        return fieldWord_;
+    }
+    /// @brief What the coastline file gave (how many land polygons, which were repaired and why), or "".
+    const std::string &coastlineNote() const
+    {
+        return coastlineNote_;
+    }
     /// @brief Forbidden regions in the planning frame.
     const std::vector<MissionPolygon> &getPolygons() const
     {
@@ -159,6 +171,8 @@ private:
     void snapEndpoints();
     void checkAnalyticFields() const;  ///< analytic fields are finite over the box (parameters do not overflow)
     void buildRegions();
+    /// The coastline's land polygons about the box (Safety.cpp); errors begin with @p at.
+    std::vector<LandPolygon> readCoastline(const std::string &at);
     /// The keep-off zone and the shallow water (Safety.cpp), added to @p regions.
     void addSafety(ForbiddenRegions &regions);
     /// The shallow water of the depth limit (Safety.cpp); null without a bathymetry.
@@ -182,6 +196,8 @@ private:
     Point2 start_, goal_;
     std::shared_ptr<const KeepOffZone> land_;  // land's boundary and the keep-off distance (null: no land)
     std::string safetyNote_;                   // what the depth limit read, and how
+    std::string fieldWord_{"current"};         // "current" or "wind"
+    std::string coastlineNote_;                // what the coastline gave, and what was repaired
 };
 
 /// @brief The GliderProblem of the built-in Gulf Stream mission (defaultGulfStreamMission()) departing at 0, for

@@ -228,6 +228,7 @@ struct MissionResult
     /// what the forecast's reading decided that a pilot should know (MissionProblem::forecastNotes()): a derived
     /// grid angle, land from zero velocities, planning on a frozen last field
     std::vector<std::string> forecastNotes;
+    std::string coastlineNote;  ///< what the coastline gave and repaired (MissionProblem::coastlineNote())
     double wallSeconds{0.0};                ///< whole run
 };
 

@@ -50,6 +50,8 @@ struct MapPolygon
     Rgba fill{0.55, 0.50, 0.45, 0.55};                ///< fill colour (default: land brown-grey, translucent)
     Rgba stroke{0.30, 0.25, 0.20, 1.0};               ///< outline colour
     bool hatched{false};                              ///< draw diagonal hatching (e.g. for time-windowed zones)
+    std::string legend{};                             ///< the legend's entry when it differs from label (a
+                                                      ///< coastline's many polygons: one entry, no labels)
 };
 
 /// @brief A path drawn as a polyline through its waypoints.
@@ -75,6 +77,8 @@ struct MapOptions
     bool speedShading{true};   ///< shade the background by current speed
     bool arrows{true};         ///< draw current arrows (off for a field whose "velocity" is a scalar in u)
     std::string shadingLabel;  ///< label of the colour bar; empty: "current speed" 
+    std::string fieldWord{"current"};  ///< what the field is, in the legend: "current" or "wind"
+    std::function<std::string(double)> timeText;  ///< a field time as a pilot reads it (a date); empty: "t=..."
     /// Geographic frame (both set): the axes are labelled in longitude/latitude and a graticule of meridians and
     /// parallels is drawn through the field's frame (curved where the projection bends them); start and goal are
     /// given in degrees and a scale bar is drawn. Unset: the field's x/y frame.
