@@ -9,11 +9,13 @@
 #include <exception>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/current/UnitConversion.h"
 #include "ompl_glider/execution/Execution.h"
@@ -109,10 +111,10 @@ const std::vector<std::string> kSchemes1D = {"nearest", "linear", "cubic", "akim
 void applyExecution(const Flags &f, MissionSpec &m)
 {
     ExecutionSpec &e = m.execution;
-    e.enabled = !f.truth.empty() || !f.surfacingInterval.empty() || !f.strategies.empty() || f.radius ||
-                f.executionPairs || f.executionSeed;
-    if (!e.enabled)
-        return;
+    if (f.truth.empty() && f.surfacingInterval.empty() && f.strategies.empty() && !f.radius && !f.executionPairs &&
+        !f.executionSeed)
+        return;  // a mission file's execution section stays as it is
+    e.enabled = true;
     e.mark = SourceMark{"--truth", 0};
     if (!f.truth.empty() && f.truth != "forecast")
     {
@@ -226,7 +228,8 @@ void applyArrivalWindow(const Flags &f, MissionSpec &m)
         m.marks[key] = SourceMark{"--arrive-between", 0};
 }
 
-/// The settings common to the built-in and forecast modes.
+/// The settings common to every mode: a flag given replaces the mission's field (of the built-in mission, the
+/// --currents forecast's or the mission file's).
 void applySettings(const Flags &f, MissionSpec &m)
 {
     // checks after loading name the flag that gave the value (MissionSpec::place)
@@ -254,11 +257,14 @@ void applySettings(const Flags &f, MissionSpec &m)
         m.planner.sectors = *f.sectors;
     if (f.timeLimit)
         m.planner.timeLimit = *f.timeLimit;
-    m.planner.smoothing = !f.noSmooth;
-    m.planner.refinement = !f.noRefine;
+    if (f.noSmooth)
+        m.planner.smoothing = false;
+    if (f.noRefine)
+        m.planner.refinement = false;
     if (f.speed)
         m.vehicle.speed = m.travel.speed = *f.speed;
-    m.outputs.directory = f.out;
+    if (!f.out.empty() || f.mission.empty())  // a mission file keeps its outputs.directory unless --out is given
+        m.outputs.directory = f.out;
     applyExecution(f, m);
     applyArrivalWindow(f, m);
     if (!f.coastline.empty())
@@ -369,8 +375,9 @@ void defineFlags(CLI::App &app, Flags &f)
         })
         ->group(built);
     app.add_option("--grid-size", f.gridSize,
-                   "lattice spacing (built-in 0.4; --currents metres, default half the smallest grid cell, within "
-                   "1/200..1/25 of the start-goal distance)")
+                   "lattice spacing (analytic flows: 0.4, kept within 1/200..1/25 of the start-goal distance; the "
+                   "built-in trip 0.4; --currents metres, default half the smallest grid cell, within the same "
+                   "bounds)")
         ->check(kPositiveFinite)
         ->group(built);
     app.add_option("--sectors", f.sectors, "lattice connectivity 1..5 (default 3)")
@@ -387,8 +394,8 @@ void defineFlags(CLI::App &app, Flags &f)
                  "also solve Zermelo's optimal-control problem by shooting (open water) and compare")
         ->group(built);
     auto *io = "Input and output";
-    app.add_option("--mission", f.mission, "run a YAML mission file (examples/MISSION_FORMAT.md); only --out, "
-                                           "--speeds, --optimum and --verbose go with it")
+    app.add_option("--mission", f.mission, "run a YAML mission file (examples/MISSION_FORMAT.md); the other flags "
+                                           "(not --currents and its options) override its fields")
         ->group(io);
     app.add_option("--currents", f.currents,
                    "plan on the u/v currents of a NetCDF forecast: a file, or several read as one forecast (a "
@@ -433,7 +440,8 @@ void defineFlags(CLI::App &app, Flags &f)
                    "time between isochrones: a number in the mission's time unit, or e.g. '12 h' (default: eight up "
                    "to the arrival); implies --isochrones")
         ->group(io);
-    auto *ex = "Execution in another ocean (any of these flies the plan; not with --mission: use its execution section)";
+    auto *ex = "Execution in another ocean (any of these flies the plan; with --mission they override its execution "
+               "section)";
     app.add_option("--truth", f.truth,
                    "the ocean the plan is flown in: 'forecast' (the planning field itself), with --currents another "
                    "NetCDF file (list or glob; same variable names), for the built-in flow its parameters changed, "
@@ -559,7 +567,8 @@ void defineFlags(CLI::App &app, Flags &f)
                "says what and where; nothing is written).");
 }
 
-/// Flags that --mission does not take: the mission file holds those settings.
+/// Flags that --mission does not take: the forecast and its reading options are the mission's current section.
+/// Every other flag overrides the mission file's field (missionFileOf()).
 void checkCombinations(const CLI::App &app, const Flags &f)
 {
     if (!f.mission.empty())
@@ -567,12 +576,10 @@ void checkCombinations(const CLI::App &app, const Flags &f)
         for (const CLI::Option *o : app.get_options())
         {
             const std::string name = o->get_name();
-            if (o->count() > 0 && name != "--mission" && name != "--out" && name != "--speeds" &&
-                name != "--verbose" && name != "--optimum" && name != "--isochrones" &&
-                name != "--isochrone-interval" && name != "--help")
-                throw UsageError{"--mission takes its settings from the mission file: " + name +
-                                 " cannot be combined with it (only --out, --speeds, --optimum, --isochrones, "
-                                 "--isochrone-interval and --verbose can)"};
+            if (o->count() > 0 && name != "--region" &&
+                (name == "--currents" || o->get_group() == "NetCDF forecast (with --currents)"))
+                throw UsageError{name + " cannot be combined with --mission: the mission file's current section "
+                                        "names the forecast and how to read it (examples/MISSION_FORMAT.md)"};
         }
         return;
     }
@@ -606,6 +613,53 @@ MissionSpec builtInMission(const Flags &f)
     }
     if (!f.departure.empty())
         m.departure.time = number("--departure", f.departure);
+    applySettings(f, m);
+    return m;
+}
+
+MissionSpec missionFileOf(const Flags &f)
+{
+    MissionSpec m = loadMission(f.mission);
+    for (auto [flag, text, point] : {std::make_tuple("--start", &f.start, &m.start),
+                                     std::make_tuple("--goal", &f.goal, &m.goal)})
+        if (!text->empty())
+        {
+            const Point2 p = pair(flag, *text);  // in the mission's terms: lon,lat where it gives lon/lat
+            if (point->geographic)
+                point->lonLat = {p.x, p.y};
+            else
+                point->xy = p;
+        }
+    if (!f.departure.empty())
+    {
+        try
+        {
+            m.departure.time = m.timeOf(f.departure);
+        }
+        catch (const ompl_glider::Error &e)
+        {
+            throw UsageError{std::string("--departure: ") + e.what()};
+        }
+        m.departure.window = false;  // one departure in place of the file's window
+    }
+    if (!f.region.empty())
+    {
+        const Box b = quad("--region", f.region);
+        m.region.set = true;
+        m.region.geographic = m.start.geographic;
+        if (m.region.geographic)
+            m.region.lonLat = geoBox(b.xMin, b.yMin, b.xMax, b.yMax);
+        else if (!(b.xMax > b.xMin && b.yMax > b.yMin))
+            throw UsageError{"--region expects x_min,y_min,x_max,y_max with x_max > x_min and y_max > y_min, got '" +
+                             f.region + "'"};
+        else
+            m.region.xy = b;
+    }
+    if (!f.planner.empty() && findPlanner(f.planner)->name != m.planner.name)
+    {
+        m.planner.parameters.clear();  // the file's parameters are the other planner's
+        m.planner.parameterMarks.clear();
+    }
     applySettings(f, m);
     return m;
 }

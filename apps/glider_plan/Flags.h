@@ -53,7 +53,7 @@ void applySafetyFlags(const Flags &f, ompl_glider::MissionSpec &m);
 /// @brief Declares every flag on @p app, storing into @p f (which must outlive @p app).
 void defineFlags(CLI::App &app, Flags &f);
 
-/// @brief Flags that do not go together (--mission takes its settings from the file; the NetCDF flags need
+/// @brief Flags that do not go together (--mission with --currents or its NetCDF options; the NetCDF flags need
 /// --currents; --currents needs --start and --goal). @throws UsageError naming the flag.
 void checkCombinations(const CLI::App &app, const Flags &f);
 
@@ -66,6 +66,12 @@ std::vector<double> speedList(const std::string &text);
 
 /// @brief The built-in Gulf Stream mission with the flags applied. @throws UsageError for a malformed number.
 ompl_glider::MissionSpec builtInMission(const Flags &f);
+
+/// @brief The mission file of --mission with the flags applied on top of it: a flag given replaces the field it
+/// names (planner, grid, sectors, time limit, smoothing, speed, start, goal, departure, region, arrival window,
+/// coastline, execution, --out; the planner's parameters are dropped when --planner names another planner).
+/// @throws UsageError for a malformed flag, ompl_glider::Error for the file.
+ompl_glider::MissionSpec missionFileOf(const Flags &f);
 
 /// @brief The mission of a --currents forecast (reads the file's time axis and grid: forecastMission()).
 /// @throws UsageError for a malformed --start/--goal, ompl_glider::Error for the file and the request.

@@ -44,11 +44,9 @@ void printProgress(const std::string &line, bool done)
 /// Plans, reports and writes. Returns the exit status.
 int run(const Flags &f)
 {
-    MissionSpec spec = !f.mission.empty() ? loadMission(f.mission)
+    MissionSpec spec = !f.mission.empty() ? missionFileOf(f)
                        : !f.currents.empty() ? forecastMissionOf(f)
                                              : builtInMission(f);
-    if (!f.mission.empty() && !f.out.empty())
-        spec.outputs.directory = f.out;
     applyOutputFlags(f, spec);
     applySafetyFlags(f, spec);
     const bool write = !f.mission.empty() || !f.out.empty();

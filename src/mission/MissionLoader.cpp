@@ -10,6 +10,7 @@
 #include "loader/MissionReader.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Time.h"
+#include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
@@ -319,5 +320,14 @@ MissionSpec defaultGulfStreamMission()
     m.outputs.files = {OutputFormatId::Summary, OutputFormatId::Path, OutputFormatId::Csv, OutputFormatId::GeoJson,
                        OutputFormatId::Map};
     return m;
+}
+
+double defaultAnalyticGridSize(const MissionSpec &m, double distance)
+{
+    const MissionSpec b = defaultGulfStreamMission();
+    const bool builtInTrip = m.current.type == b.current.type && !m.start.geographic && !m.goal.geographic &&
+                             m.start.xy.x == b.start.xy.x && m.start.xy.y == b.start.xy.y &&
+                             m.goal.xy.x == b.goal.xy.x && m.goal.xy.y == b.goal.xy.y;
+    return builtInTrip ? 0.4 : defaultForecastGridSize(2.0 * 0.4, distance);  // half of 0.8: the forecasts' rule
 }
 }  // namespace ompl_glider

@@ -215,9 +215,9 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
         spec_.travel.maxStep = 0.5 * grid->minCellSize();  // no travel-time step passes over a grid node
     if (!(spec_.planner.gridSize > 0))
     {
-        const auto &g = grid;
+        const double d = std::hypot(goal_.x - start_.x, goal_.y - start_.y);
         spec_.planner.gridSize =
-            g ? defaultForecastGridSize(g->minCellSize(), std::hypot(goal_.x - start_.x, goal_.y - start_.y)) : 0.4;
+            grid ? defaultForecastGridSize(grid->minCellSize(), d) : defaultAnalyticGridSize(spec_, d);
     }
 }
 

@@ -258,8 +258,15 @@ case("cli-surfacing-fortnight", ["--surfacing-interval", "1 fortnight", "--out",
      "--surfacing-interval")
 nc_case("cli-truth-file-missing", forecast(), "--truth: NetCDF file 'nothere.nc'", extra=("--truth", "nothere.nc"))
 case("cli-radius-zero", ["--radius", "0", "--out", "{out}"], 2, "--radius")
-case("cli-truth-with-mission", ["--mission", "m.yaml", "--truth", "forecast", "--out", "{out}"], 2,
-     "cannot be combined", {"m.yaml": MISSION})
+case("cli-truth-with-mission-unknown-parameter", ["--mission", "m.yaml", "--truth", "w=1", "--out", "{out}"], 2,
+     "--truth: expected 'forecast' or NAME=VALUE,... with the uniform's parameters (u, v), got 'w=1'",
+     {"m.yaml": MISSION})
+case("cli-start-over-mission-one-number", ["--mission", "m.yaml", "--start", "1", "--out", "{out}"], 2,
+     "--start expects two numbers", {"m.yaml": MISSION})
+case("cli-departure-over-mission-text", ["--mission", "m.yaml", "--departure", "noon", "--out", "{out}"], 2,
+     "--departure: ", {"m.yaml": MISSION})
+case("cli-start-over-mission-outside", ["--mission", "m.yaml", "--start", "20,0", "--out", "{out}"], 2,
+     "--start", {"m.yaml": MISSION})
 # work estimates before work: refused with the estimate and the limit (no hang)
 yaml_case("levelset-cfl-tiny", mission("planner: {name: LevelSet, parameters: {cfl: 1e-6}}"),
           "m.yaml:7: field 'planner.parameters.cfl': planner LevelSet accepts cfl in 0.1 .. 2")
@@ -568,8 +575,10 @@ nc_case("start-lat-beyond-90", forecast(), "latitude 91", args=("--start=-52.9,9
 nc_case("start-at-pole", forecast(), "--start: latitude 89.95 is within 0.1 degrees of a pole",
         args=("--start=-52.9,89.95", GOAL))
 case("region-without-currents", ["--region", "1,2,3,4", "--out", "{out}"], 2, "--region needs --currents")
-case("region-with-mission", ["--mission", "m.yaml", "--region=-53,47,-52,48", "--out", "{out}"], 2,
-     "cannot be combined", {"m.yaml": MISSION})
+case("region-over-mission-inverted", ["--mission", "m.yaml", "--region=5,3,1,-3", "--out", "{out}"], 2,
+     "--region expects x_min,y_min,x_max,y_max with x_max > x_min", {"m.yaml": MISSION})
+case("u-var-with-mission", ["--mission", "m.yaml", "--u-var", "u", "--out", "{out}"], 2,
+     "--u-var cannot be combined with --mission", {"m.yaml": MISSION})
 NC_MISSION = "current: {type: netcdf, file: f.nc}\nstart: {lon: -52.9, lat: 47.1}\ngoal: {lon: -52.1, lat: 47.9}\n"
 for name, region, phrase in [
         ("mission-region-lat-above-90", "{lon_min: -53, lon_max: -52, lat_min: 47, lat_max: 95}",

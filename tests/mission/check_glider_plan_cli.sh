@@ -218,7 +218,7 @@ expect_error() {  # pattern, args...
     if [ -e "$out" ]; then echo "files written despite the error: $*"; exit 1; fi
 }
 expect_error "no-such-flag" --no-such-flag
-expect_error "cannot be combined" --mission "$src/examples/gulf_stream_window.yaml" --start 1,2
+expect_error "cannot be combined" --mission "$src/examples/gulf_stream_window.yaml" --u-var u
 expect_error "missing.nc" --currents "$dir/missing.nc" --start=-52.7,47.9 --goal=-51.5,48.45
 # a NetCDF file without u/v (the bathymetry-like file made here)
 ncgen -o "$dir/nouv.nc" - <<'CDL'

@@ -24,3 +24,9 @@ if(TARGET glider_plan)
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_output_faults.sh $<TARGET_FILE:glider_plan>)
   set_tests_properties(mission.output_faults PROPERTIES TIMEOUT 300)
 endif()
+if(TARGET glider_plan)
+  # flags override a mission file's fields: --mission m.yaml --speed 0.6 plans the mission edited to 0.6
+  add_test(NAME mission.flags_override_mission_file
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_mission_overrides.sh $<TARGET_FILE:glider_plan>)
+  set_tests_properties(mission.flags_override_mission_file PROPERTIES TIMEOUT 300)
+endif()

@@ -9,3 +9,7 @@ add_test(NAME package.static_without_netcdf_and_map
           ${CMAKE_CURRENT_LIST_DIR}/consumer ${CMAKE_CURRENT_BINARY_DIR}/package_static ${PROJECT_SOURCE_DIR})
 # rebuilds the whole library (minutes on two cores): CI only (label "ci"; scripts/run_tests.sh leaves it out)
 set_tests_properties(package.static_without_netcdf_and_map PROPERTIES TIMEOUT 1200 LABELS ci)
+# the Debian package (cpack -G DEB): its contents and Depends, the unpacked glider_plan and module run; installed
+# with apt only as root with CI=true (a throwaway environment). cpack reinstalls the whole build: CI only.
+add_test(NAME package.deb COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_deb.sh ${PROJECT_BINARY_DIR} "${Python3_EXECUTABLE}")
+set_tests_properties(package.deb PROPERTIES TIMEOUT 900 LABELS ci RUN_SERIAL TRUE)

@@ -5,3 +5,6 @@ add_test(NAME structure.layers_sizes_citations
   COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_structure.py ${PROJECT_SOURCE_DIR})
 add_test(NAME structure.checker_selftest
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_structure_selftest.py)
+# The README as a front page: its snippets are lines of a demo and of docs/PYTHON.md, its links and docs/'s resolve.
+add_test(NAME structure.readme_and_docs
+  COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_docs.py ${PROJECT_SOURCE_DIR})

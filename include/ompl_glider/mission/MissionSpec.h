@@ -233,7 +233,8 @@ struct PlannerSpec
     /// A name of the planner registry (PlannerRegistry.h; any accepted spelling is stored as the canonical name):
     /// TVE, A*TVE, ZTVE, ZA*TVE (lattice search) or an OMPL planner on the time-augmented space (RRTstar, PRM, ...).
     std::string name{"ZA*TVE"};
-    /// Lattice spacing; 0 = automatic: 0.4 for the analytic flows ([EichhornRAS] Sec. 6.1), for a forecast half
+    /// Lattice spacing; 0 = automatic: for the analytic flows 0.4 ([EichhornRAS] Sec. 6.1) within 1/200..1/25 of
+    /// the start-goal distance (defaultAnalyticGridSize()), for a forecast half
     /// the smallest grid cell kept within 1/200..1/25 of the start-goal distance (defaultForecastGridSize()).
     double gridSize{0.0};
     int sectors{3};                 ///< n-sector connectivity (1..5)
@@ -404,4 +405,11 @@ MissionSpec parseMission(const std::string &yamlText, const std::string &file = 
 /// meandering jet ([EichhornRAS] Sec. 6.1), x in [0, 10], y in [-4, 4], V = 0.5, start (1, -3) south of the jet,
 /// goal (8, 3) north of it, departure 0, horizon 60, goal tolerance 1e-3, ZA*TVE on a 0.4 lattice with 3 sectors.
 MissionSpec defaultGulfStreamMission();
+
+/// @brief Default lattice spacing on an analytic flow (planner.grid_size 0), the forecasts' rule
+/// (defaultForecastGridSize()) with 0.4 ([EichhornRAS] Sec. 6.1) in place of half a grid cell: 0.4 kept within
+/// 1/200..1/25 of the start-goal @p distance, two significant digits (a 1-unit trip gets 0.04, 25 steps across).
+/// The built-in mission's trip (the meandering jet from (1, -3) to (8, 3), built in or from a file) keeps 0.4, the
+/// paper's lattice for it (its 9.2 units would give 0.37), so its figures stay the paper's.
+double defaultAnalyticGridSize(const MissionSpec &m, double distance);
 }  // namespace ompl_glider
