@@ -253,38 +253,35 @@ std::string MissionSpec::place(const std::string &field) const
 
 MissionSpec parseMission(const std::string &yamlText, const std::string &file, const std::string &directory)
 {
-    std::vector<YAML::Node> documents;
+    // A second document is found by its "---" line after content (yaml-cpp 0.7's LoadAll() can loop without end on
+    // malformed text; Load() reads the first document only)
+    int line = 0;
+    bool content = false;
+    std::istringstream lines(yamlText);
+    std::string text;
+    for (int n = 1; line == 0 && std::getline(lines, text); ++n)
+    {
+        const bool marker =
+            text.rfind("---", 0) == 0 && (text.size() == 3 || std::isspace(static_cast<unsigned char>(text[3])));
+        if (marker && content)
+            line = n;
+        content = content || marker ||
+                  (!text.empty() && text[0] != '#' && text.find_first_not_of(" \t\r") != std::string::npos);
+    }
+    YAML::Node document;
     try
     {
-        documents = YAML::LoadAll(yamlText);
+        document = YAML::Load(yamlText);
     }
     catch (const YAML::ParserException &e)
     {
         throw Error(yamlErrorMessage(file, e, "YAML syntax error"));
     }
-    if (documents.size() > 1)
-    {
-        // the line of the "---" that begins the second document (the first one, unless the file begins with one)
-        int line = 0;
-        bool content = false;
-        std::istringstream lines(yamlText);
-        std::string text;
-        for (int n = 1; line == 0 && std::getline(lines, text); ++n)
-        {
-            const bool marker =
-                text.rfind("---", 0) == 0 && (text.size() == 3 || std::isspace(static_cast<unsigned char>(text[3])));
-            if (marker && content)
-                line = n;
-            content = content || marker ||
-                      (!text.empty() && text[0] != '#' && text.find_first_not_of(" \t\r") != std::string::npos);
-        }
-        if (line == 0 && documents[1].Mark().line >= 0)
-            line = documents[1].Mark().line + 1;
-        throw Error(file + ":" + std::to_string(std::max(line, 1)) +
+    if (line > 0)
+        throw Error(file + ":" + std::to_string(line) +
                     ": a second YAML document: a mission file holds one document (remove the '---' line and what "
                     "follows it, or split the file)");
-    }
-    return readMission(documents.empty() ? YAML::Node() : documents.front(), Reader(file, directory));
+    return readMission(document, Reader(file, directory));
 }
 
 MissionSpec loadMission(const std::string &path)
