@@ -117,19 +117,7 @@ int main(int argc, char **argv)
 {
 #if OMPL_GLIDER_WITH_MPI
     // started by mpirun or srun: the ranks share the many-plan modes' tasks (finalised when main returns)
-    std::shared_ptr<MpiTaskSpreader> mpi;
-    if (MpiTaskSpreader::launched())
-    {
-        mpi = std::make_shared<MpiTaskSpreader>(argc, argv);
-        setTaskSpreader(mpi);
-    }
-    struct Unset
-    {
-        ~Unset()
-        {
-            setTaskSpreader(nullptr);
-        }
-    } unset;
+    const MpiLaunchScope mpi(argc, argv);
 #endif
     CLI::App app{"Plans a time-optimal glider route through time-varying currents and prints travel time, path "
                  "length, waypoints, CFC and CMC.\nWithout --mission or --currents: the built-in Gulf Stream "

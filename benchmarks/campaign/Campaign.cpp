@@ -490,19 +490,7 @@ int main(int argc, char **argv)
 {
 #if OMPL_GLIDER_WITH_MPI
     // started by mpirun or srun: the runs are spread over the ranks (finalised when main returns)
-    std::shared_ptr<MpiTaskSpreader> mpi;
-    if (MpiTaskSpreader::launched())
-    {
-        mpi = std::make_shared<MpiTaskSpreader>(argc, argv);
-        setTaskSpreader(mpi);
-    }
-    struct Unset
-    {
-        ~Unset()
-        {
-            setTaskSpreader(nullptr);
-        }
-    } unset;
+    const MpiLaunchScope mpi(argc, argv);
 #endif
     const Options opt = parse(argc, argv);
     ompl::RNG::setSeed(opt.seed);  // before any RNG exists: fixed seeds for every planner and run

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "ompl_glider/Exception.h"
+#include "Quantity.h"
 
 namespace ompl_glider
 {
@@ -12,14 +13,10 @@ double parseLength(const std::string &text, double metresPerUnit, bool unitKnown
 {
     const std::string expected =
         "expected a length >= 0: a number in the mission's length unit, or e.g. '500 m', '2 km'; got '" + text + "'";
-    const char *begin = text.c_str();
-    char *end = nullptr;
-    const double value = std::strtod(begin, &end);
-    if (end == begin)
+    double value = 0.0;
+    std::string unit;
+    if (!io_detail::splitQuantity(text, value, unit))
         throw Error(expected);
-    std::string unit(end);
-    const std::size_t a = unit.find_first_not_of(' '), b = unit.find_last_not_of(' ');
-    unit = a == std::string::npos ? std::string() : unit.substr(a, b - a + 1);
     double metres = 0.0;
     if (unit == "m")
         metres = 1.0;

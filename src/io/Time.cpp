@@ -9,6 +9,7 @@
 
 #include "TextUtil.h"
 #include "ompl_glider/Exception.h"
+#include "Quantity.h"
 
 namespace ompl_glider
 {
@@ -388,14 +389,10 @@ double parseDuration(const std::string &text, double timeUnitSeconds, bool unitK
     const std::string expected =
         "expected a duration > 0: a number in the mission's time unit, or e.g. '1 h', '30 min', '2 d'; got '" + text +
         "'";
-    const char *begin = text.c_str();
-    char *end = nullptr;
-    const double value = std::strtod(begin, &end);
-    if (end == begin)
+    double value = 0.0;
+    std::string unit;
+    if (!io_detail::splitQuantity(text, value, unit))
         throw Error(expected);
-    std::string unit(end);
-    const std::size_t a = unit.find_first_not_of(' '), b = unit.find_last_not_of(' ');
-    unit = a == std::string::npos ? std::string() : unit.substr(a, b - a + 1);
     double seconds = 0.0;
     if (unit == "s")
         seconds = 1.0;

@@ -70,4 +70,28 @@ private:
         std::string reason;
     } failure_;
 };
+
+/// @brief For an executable's main(): when an MPI launcher started the process (MpiTaskSpreader::launched()), makes
+/// an MpiTaskSpreader the active task spreader for the scope's life, then unsets it (MPI is finalised with it).
+class MpiLaunchScope
+{
+public:
+    MpiLaunchScope(int &argc, char **&argv)
+    {
+        if (!MpiTaskSpreader::launched())
+            return;
+        spreader_ = std::make_shared<MpiTaskSpreader>(argc, argv);
+        setTaskSpreader(spreader_);
+    }
+    ~MpiLaunchScope()
+    {
+        if (spreader_)
+            setTaskSpreader(nullptr);
+    }
+    MpiLaunchScope(const MpiLaunchScope &) = delete;
+    MpiLaunchScope &operator=(const MpiLaunchScope &) = delete;
+
+private:
+    std::shared_ptr<MpiTaskSpreader> spreader_;
+};
 }  // namespace ompl_glider
