@@ -723,7 +723,8 @@ def island_geojson(points, crs=None):
 
 MERC = [mercator(*p) for p in ISLAND]
 SWAPPED = [(b, a) for a, b in ISLAND]
-case("coastline-crs-3857-transformed", ["--currents", "f.nc", START, GOAL, "--coastline", "c.geojson", "--out", "{out}"],
+case("coastline-crs-3857-transformed", ["--currents", "f.nc", START, GOAL, "--coastline", "c.geojson", "--speed", "1",
+                                        "--no-refine", "--out", "{out}"],
      0, "1 land polygons from 1 of 1 features of 'c.geojson'",
      {"f.cdl": forecast(), "c.geojson": island_geojson(MERC, "urn:ogc:def:crs:EPSG::3857")})
 case("coastline-mercator-without-crs", ["--currents", "f.nc", START, GOAL, "--coastline", "c.geojson", "--out", "{out}"],
@@ -760,17 +761,19 @@ PACKED = forecast(replace=[("double lat(lat) ;", "short lat(lat) ; lat:scale_fac
                   lat="0, 20, 40, 60, 80, 100", lon="0, 20, 40, 60, 80, 100")
 nc_case("nc-lon-lat-int16-packed-extent", PACKED,
         "--goal -40,47.9 (lon,lat) lies outside the grid of 'f.nc' (lon -53..-52, lat 47..48)", args=(START, "--goal=-40,47.9"))
-nc_case("nc-lon-lat-int16-packed-plans", PACKED, "Status:             Exact solution", status=0)
+# the same travel time as the unpacked forecast() (102067.2 s at 1 m/s): the nodes are where the doubles put them
+nc_case("nc-lon-lat-int16-packed-plans", PACKED, "Travel time:        1 d 4.4 h (102067.2 s)", status=0,
+        extra=("--speed", "1"))
 GROUPED = "netcdf grouped {\ngroup: ocean {\n" + forecast().split("{", 1)[1] + "}\n"
 nc_case("nc4-variables-in-a-group", ("nc4", GROUPED), "NetCDF-4 groups ('ocean'): only the root group is read")
 case("currents-file-name-with-brackets", ["--currents", "a[1].nc", START, "--goal=-40,47.9", "--out", "{out}"], 2,
      "lies outside the grid of 'a[1].nc'", {"a[1].cdl": forecast()})
 # --- a truth over a corner of the trip: refused where the plan leaves it (its grid's edge is not land) -------------
 case("execution-truth-covers-a-corner", ["--mission", "m.yaml", "--out", "{out}"], 2,
-     "field 'execution.truth': the truth's grid covers lon -53, lat 47 to lon -52.6",
+     "field 'execution.truth': the truth's grid covers lon -53, lat 46.9989 to lon -52.6, lat 47.401; the plan leaves it at",
      {"f.cdl": forecast(), "t.cdl": forecast(lat="47.0, 47.08, 47.16, 47.24, 47.32, 47.4",
                                              lon="-53.0, -52.92, -52.84, -52.76, -52.68, -52.6"),
-      "m.yaml": NC_MISSION + "execution: {truth: {type: netcdf, file: t.nc}}\n"})
+      "m.yaml": NC_MISSION + "vehicle: {speed: 1.0}\nexecution: {truth: {type: netcdf, file: t.nc}}\n"})
 # --- a goal walled in, with a long window: proven at once, not stepped for minutes ----------------------------------
 yaml_case("levelset-walled-in-horizon-1e5",
           mission("planner: {name: LevelSet, horizon: 100000}",
