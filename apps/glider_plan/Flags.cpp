@@ -96,11 +96,14 @@ Box quad(const std::string &flag, const std::string &text)
     return {v[0], v[2], v[1], v[3]};
 }
 
-/// A finite number > 0 (CLI11's PositiveNumber lets "nan" and "inf" through).
+/// A finite number > 0, not denormal (CLI11's PositiveNumber lets "nan" and "inf" through; 1e-310 overflows
+/// every division).
 const CLI::Validator kPositiveFinite(
     [](std::string &text) {
         const auto v = finiteNumber(text);
-        return v && *v > 0.0 ? std::string() : "expected a finite number > 0, got '" + text + "'";
+        return v && *v > 0.0 && std::isnormal(*v)
+                   ? std::string()
+                   : "expected a finite number > 0 (at least 2.2e-308), got '" + text + "'";
     },
     "POSITIVE");
 

@@ -10,6 +10,9 @@
 #include <new>
 #include <optional>
 #include <string>
+#include <system_error>
+
+#include <sys/resource.h>
 
 #include <CLI/CLI.hpp>
 #include <ompl/util/Console.h>
@@ -101,7 +104,15 @@ int runAndReport(const Flags &f)
     }
     catch (const std::bad_alloc &)
     {
-        message = "out of memory while planning (reduce the region, the grid or the window)";
+        message = "out of memory while planning (the address-space limit, ulimit -v, or the machine's memory; "
+                  "reduce the region, the grid or the window)";
+    }
+    catch (const std::system_error &e)
+    {
+        message = e.code() == std::errc::resource_unavailable_try_again
+                      ? std::string("cannot start a thread: ") + e.what() +
+                            " (the limit on processes and threads, ulimit -u, or on memory, ulimit -v, is too low)"
+                      : e.what();
     }
     catch (const std::exception &e)
     {
@@ -146,5 +157,16 @@ int main(int argc, char **argv)
     if (!f.verbose)
         ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     installOutputSignalHandlers();  // SIGINT/SIGTERM while files are written: the earlier outputs stay
+    // a CPU time limit whose soft and hard values agree (ulimit -t) kills at once; one second less of soft limit
+    // first sends SIGXCPU, answered with a message
+    struct rlimit cpu
+    {
+    };
+    if (::getrlimit(RLIMIT_CPU, &cpu) == 0 && cpu.rlim_cur != RLIM_INFINITY && cpu.rlim_cur == cpu.rlim_max &&
+        cpu.rlim_cur > 1)
+    {
+        cpu.rlim_cur -= 1;
+        (void)::setrlimit(RLIMIT_CPU, &cpu);
+    }
     return runAndReport(f);
 }

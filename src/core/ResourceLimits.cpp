@@ -71,6 +71,7 @@ void checkMemory(double bytes, const std::string &what, const std::string &hint)
     const double limit = static_cast<double>(memoryLimitBytes());
     if (!(bytes <= limit))
         throw Error(what + " needs about " + formatBytes(bytes) + " of memory, more than the limit of " +
-                    formatBytes(limit) + " (half the physical memory, or OMPL_GLIDER_MEMORY_LIMIT): " + hint);
+                    formatBytes(limit) + " (half the physical memory, three quarters of the address-space limit ulimit -v, or "
+                    "OMPL_GLIDER_MEMORY_LIMIT): " + hint);
 }
 }  // namespace ompl_glider

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <system_error>
 
 namespace ompl_glider
 {
@@ -10,7 +11,16 @@ ThreadPool::ThreadPool(unsigned threads)
     if (threads == 0)
         threads = std::max(1u, std::thread::hardware_concurrency());
     for (unsigned i = 1; i < threads; ++i)
-        workers_.emplace_back([this] { workerLoop(); });
+    {
+        try
+        {
+            workers_.emplace_back([this] { workerLoop(); });
+        }
+        catch (const std::system_error &)
+        {
+            break;  // no more threads (ulimit -u, memory): the pool works with those it has, and the caller
+        }
+    }
 }
 
 ThreadPool::~ThreadPool()

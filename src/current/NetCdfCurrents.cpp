@@ -88,11 +88,13 @@ NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOption
     const int xv = l.curvilinear ? l.lon2D : l.coordVar[std::size_t(l.dimX)];
     const int yv = l.curvilinear ? l.lat2D : l.coordVar[std::size_t(l.dimY)];
     std::vector<double> x = f.readAll1D(xv);
-    const std::vector<double> y = f.readAll1D(yv);
+    std::vector<double> y = f.readAll1D(yv);
     if (x.empty() || y.empty())
         throw f.error("coordinates '" + l.xName + "'/'" + l.yName + "' have no values");
     checkAxisValues(f, yv, y, "coordinate");  // (latitude first, as the loader checks them)
     checkAxisValues(f, xv, x, "coordinate");
+    unpackCoordinates(f, xv, x);
+    unpackCoordinates(f, yv, y);
     if (l.geographic)
     {
         // each longitude the shorter way from the first: a regional grid's span, wherever its seam

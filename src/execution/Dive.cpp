@@ -5,6 +5,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "ompl_glider/current/GriddedCurrentField.h"
+
 namespace ompl_glider
 {
 namespace
@@ -14,6 +16,16 @@ std::string where(double x, double y, double t)
     std::ostringstream os;
     os << "(" << x << ", " << y << ") at t = " << t;
     return os.str();
+}
+
+/// True when (x, y) lies outside a gridded field's nodes: the grid's edge, where the field ends, not its land.
+bool leavesGrid(const CurrentField &field, double x, double y)
+{
+    const auto *g = dynamic_cast<const GriddedCurrentField *>(&field);
+    if (!g)
+        return false;
+    const Region e = g->extent();
+    return !(x >= e.xMin && x <= e.xMax && y >= e.yMin && y <= e.yMax);
 }
 }  // namespace
 
@@ -38,7 +50,9 @@ DiveEnd flyHeading(double x, double y, double t, double hx, double hy, double tE
         if (!std::isfinite(nx) || !std::isfinite(ny) || !field.segmentInWater(x, y, nx, ny, s.depth))
         {
             e.grounded = true;
-            e.why = "land of the current field between " + where(x, y, t) + " and " + where(nx, ny, nt);
+            e.why = (leavesGrid(field, nx, ny) ? "the edge of the current field's grid (not land) between "
+                                               : "land of the current field between ") +
+                    where(x, y, t) + " and " + where(nx, ny, nt);
             break;
         }
         if (forbidden && !forbidden->legFree(x, y, t, nx, ny, nt))

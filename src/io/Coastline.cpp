@@ -1,6 +1,8 @@
 // Land polygons from a vector GIS file through GDAL/OGR (see Coastline.h).
 #include "ompl_glider/io/Coastline.h"
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <mutex>
 
@@ -114,7 +116,7 @@ std::string polygonFault(const std::vector<Point2> &outer, const std::vector<std
 }
 
 std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin, double latMin, double lonMax,
-                                          double latMax, std::vector<std::string> *repairs)
+                                          double latMax, std::vector<std::string> *repairs, CoastlineCount *count)
 {
     registerDrivers();
     const std::string who = "coastline file '" + path + "'";
@@ -202,6 +204,19 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin
                             "; expected land polygons");
             OGREnvelope e;
             g->getEnvelope(&e);
+            if (!(e.MinX >= -180.0 && e.MaxX <= 360.0 && e.MinY >= -90.0 && e.MaxY <= 90.0))
+                throw Error(which + ": coordinates up to " + lonLat(std::abs(e.MinX) > std::abs(e.MaxX) ? e.MinX : e.MaxX,
+                                                                     std::abs(e.MinY) > std::abs(e.MaxY) ? e.MinY : e.MaxY) +
+                            " are not lon/lat (longitude -180..360, latitude -90..90): a projected file (web-mercator "
+                            "metres?) needs its spatial reference (a GeoJSON 'crs' member, a shapefile's .prj)");
+            if (count)
+            {
+                ++count->features;
+                count->lonMin = std::min(count->lonMin, e.MinX);
+                count->lonMax = std::max(count->lonMax, e.MaxX);
+                count->latMin = std::min(count->latMin, e.MinY);
+                count->latMax = std::max(count->latMax, e.MaxY);
+            }
             bool valid = false;
             for (double shift : {0.0, 360.0, -360.0})
             {
@@ -218,6 +233,8 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin
                     if (repairs)
                         repairs->push_back("feature " + name + ": " + fault + " (lon lat): repaired by OGR's MakeValid");
                 }
+                if (count && !valid)
+                    ++count->used;
                 valid = true;
                 const OGRPolygon box = boxAt(shift);
                 std::unique_ptr<OGRGeometry> clipped(g->Intersection(&box));

@@ -115,8 +115,12 @@ std::vector<double> NcFile::attDoubles(int var, const char *name) const
 {
     nc_type t;
     std::size_t len;
-    if (nc_inq_att(id_, var, name, &t, &len) != NC_NOERR || t == NC_CHAR || t == NC_STRING)
+    if (nc_inq_att(id_, var, name, &t, &len) != NC_NOERR)
         return {};
+    if (t == NC_CHAR || t == NC_STRING)  // CF: these attributes are numbers; text would be ignored in silence
+        throw error((var == NC_GLOBAL ? std::string("global") : "variable '" + varName(var) + "':") +
+                    " attribute '" + name + "' is text ('" + attText(var, name).value_or("") +
+                    "'); it must be numeric");
     std::vector<double> v(len);
     check(nc_get_att_double(id_, var, name, v.data()), std::string("read attribute ") + name);
     return v;

@@ -58,7 +58,8 @@ public:
     nc_type varType(int var) const;
     /// A text attribute (NC_CHAR or the first NC_STRING), trimmed; nullopt when absent or numeric.
     std::optional<std::string> attText(int var, const char *name) const;
-    /// A numeric attribute's values; empty when absent or text.
+    /// A numeric attribute's values; empty when absent. @throws Error naming the variable and the attribute when it
+    /// is text (a `scale_factor` of "0.01" is not applied in silence).
     std::vector<double> attDoubles(int var, const char *name) const;
     /// All values of a variable (any number of dimensions), as doubles.
     std::vector<double> readAll1D(int var) const;

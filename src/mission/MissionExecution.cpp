@@ -15,9 +15,11 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/TaskSpread.h"
+#include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
+#include "../io/NumberText.h"
 #include "PlanningInternal.h"
 
 namespace ompl_glider
@@ -152,6 +154,41 @@ void checkTruthTimes(const MissionProblem &problem, const PlannedPath &plan, dou
     if (truth.timeEnd() < plan.departure + window)
         r.notes.push_back("the truth ends at " + at(truth.timeEnd()) + ", before the flights' window ends at " +
                           at(plan.departure + window) + ": every flight stops there (not extrapolated)");
+}
+
+/// A gridded truth that covers only part of the region: refused when the plan leaves its grid (where, when);
+/// else a note says that a flight leaving the grid stops there (it is not land).
+void checkTruthSpace(const MissionProblem &problem, const PlannedPath &plan, ExecutionResult &r)
+{
+    const MissionSpec &m = problem.getSpec();
+    const auto grid = std::dynamic_pointer_cast<const GriddedCurrentField>(problem.getTruth());
+    if (!m.execution.truth || !grid)
+        return;
+    const Region e = grid->extent(), &box = problem.getBox();
+    auto inside = [&](double x, double y) { return x >= e.xMin && x <= e.xMax && y >= e.yMin && y <= e.yMax; };
+    auto place = [&](double x, double y) {
+        if (problem.isGeographic())
+        {
+            const LonLat g = problem.toGeographic({x, y});
+            return "lon " + text::number(g.lon, 6) + ", lat " + text::number(g.lat, 6);
+        }
+        return "(" + text::number(x, 6) + ", " + text::number(y, 6) + ")";
+    };
+    const std::string covers = "the truth's grid covers " + place(e.xMin, e.yMin) + " to " + place(e.xMax, e.yMax);
+    const std::vector<TimedPoint> &p = plan.path;
+    for (std::size_t k = 0; plan.solved && k < p.size(); ++k)
+        for (int s = 0; s <= (k + 1 < p.size() ? 8 : 0); ++s)
+        {
+            const TimedPoint a = p[k], b = k + 1 < p.size() ? p[k + 1] : p[k];
+            const double q = s / 8.0, x = a.x + q * (b.x - a.x), y = a.y + q * (b.y - a.y);
+            if (!inside(x, y))
+                throw Error(m.place("execution.truth") + ": " + covers + "; the plan leaves it at " + place(x, y) +
+                            ", t = " + text::number(a.t + q * (b.t - a.t), 6) +
+                            ": give a truth that covers the flights");
+        }
+    if (!inside(box.xMin, box.yMin) || !inside(box.xMax, box.yMax))
+        r.notes.push_back(covers + ", less than the planning region (" + place(box.xMin, box.yMin) + " to " +
+                          place(box.xMax, box.yMax) + "): a flight that leaves it stops there (not land)");
 }
 
 void putPoints(ByteWriter &w, const std::vector<TimedPoint> &v)
@@ -381,6 +418,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         const double window = std::isnan(e.duration) ? 2.0 * trip : e.duration;
         planning_detail::checkExecutionWork(m, r.surfacingInterval, window, pairs.size(), r.strategies.size());
         checkTruthTimes(problem, plan, window, r);
+        checkTruthSpace(problem, plan, r);
     }
     r.runs.resize(pairs.size());
     for (std::size_t i = 0; i < pairs.size(); ++i)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -251,8 +252,48 @@ std::string MissionSpec::place(const std::string &field) const
     return file + ": field '" + field + "'";
 }
 
+namespace
+{
+/// Offset of the first byte of @p s that does not begin or continue a well-formed UTF-8 sequence (overlong forms,
+/// surrogates and values beyond U+10FFFF included); s.size() when it is all UTF-8.
+std::size_t firstBadUtf8(const std::string &s)
+{
+    std::size_t k = 0;
+    while (k < s.size())
+    {
+        const auto c = static_cast<unsigned char>(s[k]);
+        const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+        if (n == 0 || k + n > s.size() || c == 0xC0 || c == 0xC1 || c > 0xF4)
+            return k;
+        unsigned code = n == 1 ? c : c & (0xFFu >> (n + 1));
+        for (std::size_t i = 1; i < n; ++i)
+        {
+            const auto d = static_cast<unsigned char>(s[k + i]);
+            if ((d >> 6) != 0x2)
+                return k;
+            code = (code << 6) | (d & 0x3Fu);
+        }
+        if ((n == 3 && (code < 0x800 || (code >= 0xD800 && code <= 0xDFFF))) || (n == 4 && (code < 0x10000 || code > 0x10FFFF)))
+            return k;
+        k += n;
+    }
+    return k;
+}
+}  // namespace
+
 MissionSpec parseMission(const std::string &yamlText, const std::string &file, const std::string &directory)
 {
+    // every name and text ends up in outputs (JSON, SVG, CSV): the file must be UTF-8
+    if (const std::size_t bad = firstBadUtf8(yamlText); bad < yamlText.size())
+    {
+        const std::size_t lineStart = yamlText.rfind('\n', bad == 0 ? 0 : bad - 1);
+        const std::size_t col = bad - (lineStart == std::string::npos || bad == 0 ? 0 : lineStart + 1) + 1;
+        char byte[8];
+        std::snprintf(byte, sizeof byte, "0x%02x", static_cast<unsigned char>(yamlText[bad]));
+        throw Error(file + ":" + std::to_string(std::count(yamlText.begin(), yamlText.begin() + static_cast<std::ptrdiff_t>(bad), '\n') + 1) +
+                    ": the text is not UTF-8 (byte " + byte + " at column " + std::to_string(col) +
+                    "); save the mission file as UTF-8");
+    }
     // A second document is found by its "---" line after content (yaml-cpp 0.7's LoadAll() can loop without end on
     // malformed text; Load() reads the first document only)
     int line = 0;
@@ -289,6 +330,16 @@ MissionSpec loadMission(const std::string &path)
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw Error("cannot read mission file '" + path + "': it is a directory, not a YAML mission file");
+    // a device, a pipe or a huge file is no mission: /dev/zero or a FIFO would be read without end
+    const auto status = std::filesystem::status(path, ec);
+    if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        throw Error("cannot read mission file '" + path + "': it is not a regular file (a device, a pipe or a "
+                    "socket); give a YAML mission file");
+    constexpr std::uintmax_t kMaxMissionBytes = 16u << 20;
+    if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxMissionBytes)
+        throw Error("cannot read mission file '" + path + "': it holds " + std::to_string(size) +
+                    " bytes, more than the " + std::to_string(kMaxMissionBytes >> 20) +
+                    " MiB a mission file may have (is it the right file?)");
     std::ifstream in(path);
     if (!in)
         throw Error("cannot read mission file '" + path + "'");

@@ -583,6 +583,7 @@ void MissionProblem::buildRegions()
             throw Error(where(m, i.polygon.mark) + e.what());
         }
     }
+    checkGeoJsonNearBox();
     addSafety(*regions);
     if (regions->size() > 0)
         environment_ = regions;

@@ -41,7 +41,11 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
     }
     if (const auto *l = dynamic_cast<const LevelSetPlanner *>(&planner);
         l && status == ompl::base::PlannerStatus::ABORT)
-        return l->lastReachability().goalReached ? l->lastReason() :
+        return l->lastReachability().goalReached ? l->lastReason()
+               : l->lastReachability().goalWalledOff
+                   ? "the reachable front never reaches the goal: no water links it to the start (land or forbidden "
+                     "regions wall it in; a flood fill of the level set's grid, before any step)"
+                   :
                    "the reachable front never reaches the goal within the time window (the current carries the "
                    "glider off faster than it makes way, or land, forbidden regions or a closure wall it in)";
     if (const auto *iso = dynamic_cast<const IsochronePlanner *>(&planner);

@@ -122,6 +122,46 @@ void MissionProblem::addSafety(ForbiddenRegions &regions)
     if (auto shallow = shallowWater())
         regions.add(shallow);
 }
+void MissionProblem::checkGeoJsonNearBox() const
+{
+    const MissionSpec &m = spec_;
+    if (m.forbidden.geojson.empty())
+        return;
+    std::vector<const PolygonSpec *> given;
+    for (const auto &o : m.forbidden.obstacles)
+        given.push_back(&o.polygon);
+    for (const auto &t : m.forbidden.timeWindows)
+        given.push_back(&t.polygon);
+    for (const auto &i : m.forbidden.ice)
+        given.push_back(&i.polygon);
+    const double near = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
+    double a0 = 1e300, a1 = -1e300, b0 = 1e300, b1 = -1e300;  // the file's extent as given
+    int n = 0;
+    for (const PolygonSpec *p : given)
+    {
+        if (p->mark.file != m.forbidden.geojson)
+            continue;
+        ++n;
+        for (const auto &[a, b] : p->points)
+        {
+            a0 = std::min(a0, a), a1 = std::max(a1, a), b0 = std::min(b0, b), b1 = std::max(b1, b);
+        }
+        if (p->geographic && std::abs(p->points.front().second) >= 89.9)
+            continue;  // (no projection at a pole)
+        for (const Point2 &q : ring(p->points, p->geographic, p->name))
+            if (q.x >= box_.xMin - near && q.x <= box_.xMax + near && q.y >= box_.yMin - near &&
+                q.y <= box_.yMax + near)
+                return;
+    }
+    if (n == 0)
+        return;
+    const bool geo = m.forbidden.geojsonGeographic;
+    throw Error(m.place("forbidden.geojson") + ": '" + m.forbidden.geojson + "': none of its " + std::to_string(n) +
+                " forbidden regions lies in or near the planning region; they lie within " + (geo ? "lon " : "x ") +
+                text::number(a0) + ".." + text::number(a1) + (geo ? ", lat " : ", y ") + text::number(b0) + ".." +
+                text::number(b1) + (geo ? " (lon and lat swapped? another region?)" : ""));
+}
+
 std::vector<LandPolygon> MissionProblem::readCoastline(const std::string &at)
 {
     // the coastline's land polygons that meet the box (with a margin of a tenth of its size)
@@ -144,10 +184,30 @@ std::vector<LandPolygon> MissionProblem::readCoastline(const std::string &at)
         else
             spans = {{a, b}};
         std::vector<std::string> repairs;
+        CoastlineCount count;
+        int used = 0;
         for (const auto &[w, e] : spans)
-            for (LandPolygon &p : readLandPolygons(m.forbidden.coastline, w, s, e, n, &repairs))
+        {
+            count = {};
+            for (LandPolygon &p : readLandPolygons(m.forbidden.coastline, w, s, e, n, &repairs, &count))
                 land.push_back(std::move(p));
-        coastlineNote_ = std::to_string(land.size()) + " land polygons from '" + m.forbidden.coastline + "'";
+            used += count.used;
+        }
+        // none used: open water in a larger file, or a file nowhere near the trip (lon and lat swapped, another
+        // region): the latter is refused, with where the file's features lie
+        const double near = std::max(lon1 - lon0, lat1 - lat0);
+        auto nearBox = [&](double shift) {
+            return count.lonMax + shift >= lon0 - near && count.lonMin + shift <= lon1 + near &&
+                   count.latMax >= lat0 - near && count.latMin <= lat1 + near;
+        };
+        if (count.features > 0 && used == 0 && !nearBox(0.0) && !nearBox(360.0) && !nearBox(-360.0))
+            throw Error("coastline file '" + m.forbidden.coastline + "': none of its " +
+                        std::to_string(count.features) + " features lies in or near the trip's box (" + gb.text() +
+                        "); they lie within lon " + text::number(count.lonMin) + ".." + text::number(count.lonMax) +
+                        ", lat " + text::number(count.latMin) + ".." + text::number(count.latMax) +
+                        " (lon and lat swapped? another region?)");
+        coastlineNote_ = std::to_string(land.size()) + " land polygons from " + std::to_string(used) + " of " +
+                         std::to_string(count.features) + " features of '" + m.forbidden.coastline + "'";
         for (const std::string &r : repairs)
             coastlineNote_ += "; " + r;
     }

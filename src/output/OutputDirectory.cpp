@@ -28,12 +28,28 @@ std::atomic<bool> g_staging{false};
 std::atomic<int> g_pending{0};
 std::atomic<void (*)(const char *)> g_hook{nullptr};
 
+/// Ends the process by @p sig as its default action would; the CPU time limit (SIGXCPU, whose default dumps
+/// core) with a message and exit status 128 + SIGXCPU. Async-signal-safe.
+void endBySignal(int sig)
+{
+    if (sig == SIGXCPU)
+    {
+        static const char msg[] = ": the CPU time limit (ulimit -t) was reached: stopped, no output written or "
+                                  "replaced\n";
+        const char *name = program_invocation_short_name;
+        (void)!::write(STDERR_FILENO, name, std::strlen(name));
+        (void)!::write(STDERR_FILENO, msg, sizeof msg - 1);
+        ::_exit(128 + SIGXCPU);
+    }
+    ::signal(sig, SIG_DFL);
+    ::raise(sig);
+}
+
 extern "C" void onTerminatingSignal(int sig)
 {
     if (!g_staging.load())
     {
-        ::signal(sig, SIG_DFL);  // end the process as the signal would have (nothing is half written)
-        ::raise(sig);
+        endBySignal(sig);  // end the process as the signal would have (nothing is half written)
         return;
     }
     g_pending.store(sig);  // answered at the next file (interruptIfSignalled) or after the commit
@@ -114,7 +130,7 @@ std::map<std::string, HeldLock> &heldLocks()
 
 void installOutputSignalHandlers()
 {
-    for (const int sig : {SIGINT, SIGTERM, SIGHUP})
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP, SIGXCPU})
     {
         struct sigaction old
         {
@@ -325,10 +341,7 @@ void setStaging(bool on)
 void raisePendingSignal()
 {
     if (const int sig = g_pending.exchange(0))
-    {
-        ::signal(sig, SIG_DFL);
-        ::raise(sig);
-    }
+        endBySignal(sig);
 }
 
 void interruptIfSignalled(const fs::path &staging)

@@ -578,8 +578,14 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
 
     FrontPropagation front(*impl_, *ctx_, params_);
     front.initialise(sx, sy, t0, goal);
-    front.propagate(tEnd, stopAtGoal, stop);
+    // a goal walled off from the start: proven before any step (a long window would step for minutes)
+    const int reach = static_cast<int>(std::ceil(params_.cfl)) + 3;  // a step's reach and its cubic stencil
+    const bool walledOff = goal && stopAtGoal && !front.result().goalReached && !impl_->staticD.empty() &&
+                           !levelset_detail::waterConnects(*impl_, {sx, sy}, *goal, reach);
+    if (!walledOff)
+        front.propagate(tEnd, stopAtGoal, stop);
     Reachability out = std::move(front.result());
+    out.goalWalledOff = walledOff;
 
     // Backtracking from the goal through the arrival field.
     if (goal && out.goalReached)

@@ -140,5 +140,42 @@ void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std
             }
     }
 }
+bool waterConnects(const SolverGrid &sg, Point2 a, Point2 b, int reach)
+{
+    const Grid &g = sg.grid;
+    auto node = [&](Point2 p, int &i, int &j) {
+        i = std::clamp(static_cast<int>(std::lround((p.x - g.x0) / g.h)), 0, g.nx - 1);
+        j = std::clamp(static_cast<int>(std::lround((p.y - g.y0) / g.h)), 0, g.ny - 1);
+    };
+    int ai = 0, aj = 0, bi = 0, bj = 0;
+    node(a, ai, aj);
+    node(b, bi, bj);
+    std::vector<char> seen(g.size(), 0);
+    std::vector<std::uint32_t> todo;
+    auto visitAround = [&](int ci, int cj) {
+        for (int j = std::max(0, cj - reach); j <= std::min(g.ny - 1, cj + reach); ++j)
+            for (int i = std::max(0, ci - reach); i <= std::min(g.nx - 1, ci + reach); ++i)
+            {
+                const std::size_t n = g.index(i, j);
+                if (!seen[n] && !(sg.staticD[n] > 0.0))
+                {
+                    seen[n] = 1;
+                    todo.push_back(static_cast<std::uint32_t>(n));
+                }
+            }
+    };
+    visitAround(ai, aj);
+    while (!todo.empty())
+    {
+        const std::uint32_t n = todo.back();
+        todo.pop_back();
+        const int i = static_cast<int>(n % static_cast<std::uint32_t>(g.nx)),
+                  j = static_cast<int>(n / static_cast<std::uint32_t>(g.nx));
+        if (std::abs(i - bi) <= reach && std::abs(j - bj) <= reach)
+            return true;
+        visitAround(i, j);
+    }
+    return false;
+}
 }  // namespace levelset_detail
 }  // namespace ompl_glider

@@ -157,6 +157,11 @@ struct SolverGrid
 SparseDistance polygonDistance(const Grid &g, const Polygon &p, double sx, double sy, double band,
                                double clearance = 0.0);
 
+/// True when a chain of nodes outside the static forbidden set (staticD <= 0), each within @p reach nodes
+/// (Chebyshev) of the last, links the nodes near @p a to those near @p b: false proves that no front started at
+/// @p a reaches @p b (one step moves information at most @p reach nodes; the other forbidden sets only add).
+bool waterConnects(const SolverGrid &sg, Point2 a, Point2 b, int reach);
+
 /// Signed distance from a node mask (true = forbidden): the boundary is taken half-way between neighbouring nodes
 /// of opposite kinds; band-limited.
 void maskDistance(const Grid &g, const std::vector<char> &blocked, double band, std::vector<double> &d,

@@ -704,6 +704,96 @@ case("bathymetry-variable-missing", ["--currents", "f.nc", START, GOAL, "--bathy
      {"f.cdl": forecast(), "b.cdl": BATHY.replace("VAR", "elevation").replace("ATTRS", "elevation:positive = \"up\" ;")})
 nc_case("depth-average-single-level", forecast(), "needs several depth levels", extra=("--depth-average", "0,200"))
 
+# --- coastline and forbidden-region files: their CRS, coordinates that are not lon/lat, files nowhere near -------
+def mercator(lon, lat):
+    import math
+    r = 6378137.0
+    return r * math.radians(lon), r * math.log(math.tan(math.pi / 4 + math.radians(lat) / 2))
+
+
+ISLAND = [(-52.55, 47.45), (-52.45, 47.45), (-52.45, 47.55), (-52.55, 47.55), (-52.55, 47.45)]
+
+
+def island_geojson(points, crs=None):
+    ring = ", ".join("[%.3f, %.3f]" % p for p in points)
+    head = '"crs": {"type": "name", "properties": {"name": "%s"}}, ' % crs if crs else ""
+    return ('{"type": "FeatureCollection", %s"features": [{"type": "Feature", "properties": {"name": "Isle"}, '
+            '"geometry": {"type": "Polygon", "coordinates": [[%s]]}}]}\n' % (head, ring))
+
+
+MERC = [mercator(*p) for p in ISLAND]
+SWAPPED = [(b, a) for a, b in ISLAND]
+case("coastline-crs-3857-transformed", ["--currents", "f.nc", START, GOAL, "--coastline", "c.geojson", "--speed", "1",
+                                        "--no-refine", "--out", "{out}"],
+     0, "1 land polygons from 1 of 1 features of 'c.geojson'",
+     {"f.cdl": forecast(), "c.geojson": island_geojson(MERC, "urn:ogc:def:crs:EPSG::3857")})
+case("coastline-mercator-without-crs", ["--currents", "f.nc", START, GOAL, "--coastline", "c.geojson", "--out", "{out}"],
+     2, "coastline file 'c.geojson', layer 'c', feature 'Isle': coordinates up to lon",
+     {"f.cdl": forecast(), "c.geojson": island_geojson(MERC)})
+case("coastline-lon-lat-swapped", ["--currents", "f.nc", START, GOAL, "--coastline", "c.geojson", "--out", "{out}"],
+     2, "coastline file 'c.geojson': none of its 1 features lies in or near the trip's box",
+     {"f.cdl": forecast(), "c.geojson": island_geojson(SWAPPED)})
+GJ_MISSION = NC_MISSION + "forbidden: {geojson: r.geojson}\n"
+case("forbidden-geojson-crs-3857", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "r.geojson:1: field 'crs': the GeoJSON names the coordinate reference system 'urn:ogc:def:crs:EPSG::3857'",
+     {"f.cdl": forecast(), "m.yaml": GJ_MISSION, "r.geojson": island_geojson(MERC, "urn:ogc:def:crs:EPSG::3857")})
+case("forbidden-geojson-mercator-without-crs", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "feature 'Isle': [-5849839.241, 6015837.354] is not lon/lat",
+     {"f.cdl": forecast(), "m.yaml": GJ_MISSION, "r.geojson": island_geojson(MERC)})
+case("forbidden-geojson-lon-lat-swapped", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "none of its 1 forbidden regions lies in or near the planning region; they lie within lon 47.45..47.55",
+     {"f.cdl": forecast(), "m.yaml": GJ_MISSION, "r.geojson": island_geojson(SWAPPED)})
+# --- NetCDF: attributes and axes that were taken in silence, packed coordinates, groups ---------------------------
+NOT_EASTWARD = [('u:standard_name = "eastward_sea_water_velocity" ;', ""),
+                ('v:standard_name = "northward_sea_water_velocity" ;', "")]
+nc_case("nc-angle-1d-on-2d-grid", forecast(replace=NOT_EASTWARD + [
+    ('  float u(', '  double angle(lon) ; angle:units = "radians" ;\n  float u('),
+    ("  u = ", "  angle = 0, 0, 0, 0, 0, 0 ;\n  u = ")]),
+    "grid angle variable 'angle' is not on the grid of the velocities")
+nc_case("nc-scale-factor-text", forecast(replace=[('u:_FillValue = -999.f ;', 'u:_FillValue = -999.f ; u:scale_factor = "0.01" ;')]),
+        "variable 'u': attribute 'scale_factor' is text ('0.01'); it must be numeric")
+DEPTH_NO_AXIS = forecast(replace=[("lat = 6 ;", "k = 2 ; lat = 6 ;"), ("float u(time, lat", "float u(time, k, lat"),
+                                  ("float v(time, lat", "float v(time, k, lat")]).replace(
+    ", ".join(["0.1"] * 108), ", ".join(["0.1"] * 216)).replace(", ".join(["0"] * 108), ", ".join(["0"] * 216))
+nc_case("nc-depth-without-depth-axis", DEPTH_NO_AXIS, "has dimension 'k' (length 2) that is neither time, depth")
+PACKED = forecast(replace=[("double lat(lat) ;", "short lat(lat) ; lat:scale_factor = 0.01 ; lat:add_offset = 47. ;"),
+                           ("double lon(lon) ;", "short lon(lon) ; lon:scale_factor = 0.01 ; lon:add_offset = -53. ;")],
+                  lat="0, 20, 40, 60, 80, 100", lon="0, 20, 40, 60, 80, 100")
+nc_case("nc-lon-lat-int16-packed-extent", PACKED,
+        "--goal -40,47.9 (lon,lat) lies outside the grid of 'f.nc' (lon -53..-52, lat 47..48)", args=(START, "--goal=-40,47.9"))
+# the same travel time as the unpacked forecast() (102067.2 s at 1 m/s): the nodes are where the doubles put them
+nc_case("nc-lon-lat-int16-packed-plans", PACKED, "Travel time:        1 d 4.4 h (102067.2 s)", status=0,
+        extra=("--speed", "1"))
+GROUPED = "netcdf grouped {\ngroup: ocean {\n" + forecast().split("{", 1)[1] + "}\n"
+nc_case("nc4-variables-in-a-group", ("nc4", GROUPED), "NetCDF-4 groups ('ocean'): only the root group is read")
+case("currents-file-name-with-brackets", ["--currents", "a[1].nc", START, "--goal=-40,47.9", "--out", "{out}"], 2,
+     "lies outside the grid of 'a[1].nc'", {"a[1].cdl": forecast()})
+# --- a truth over a corner of the trip: refused where the plan leaves it (its grid's edge is not land) -------------
+case("execution-truth-covers-a-corner", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "field 'execution.truth': the truth's grid covers lon -53, lat 46.9989 to lon -52.6, lat 47.401; the plan leaves it at",
+     {"f.cdl": forecast(), "t.cdl": forecast(lat="47.0, 47.08, 47.16, 47.24, 47.32, 47.4",
+                                             lon="-53.0, -52.92, -52.84, -52.76, -52.68, -52.6"),
+      "m.yaml": NC_MISSION + "vehicle: {speed: 1.0}\nexecution: {truth: {type: netcdf, file: t.nc}}\n"})
+# --- a goal walled in, with a long window: proven at once, not stepped for minutes ----------------------------------
+yaml_case("levelset-walled-in-horizon-1e5",
+          mission("planner: {name: LevelSet, horizon: 100000}",
+                  append="forbidden:\n  obstacles:\n    - {name: pocket, points: [[0, -1], [3, -1], [3, 1], [0, 1], "
+                  "[0, 0.6], [2.5, 0.6], [2.5, -0.6], [0, -0.6]]}\n"),
+          "no water links it to the start", status=1)
+# --- mission files that are no files, nulls, tiny speeds, bad UTF-8 ------------------------------------------------
+case("mission-is-dev-zero", ["--mission", "/dev/zero", "--out", "{out}"], 2,
+     "cannot read mission file '/dev/zero': it is not a regular file")
+case("mission-is-a-fifo", ["--mission", "pipe", "--out", "{out}"], 2,
+     "cannot read mission file 'pipe': it is not a regular file", {"pipe": ("fifo", "")})
+case("mission-huge-file", ["--mission", "big.yaml", "--out", "{out}"], 2,
+     "cannot read mission file 'big.yaml': it holds 17825792 bytes", {"big.yaml": ("bytes", b"#" * (17 << 20))})
+yaml_case("start-null", mission("start: ~"), "m.yaml:4: field 'start'")
+yaml_case("speed-denormal", mission("vehicle: {speed: 1e-310}"), "m.yaml:6: field 'vehicle.speed'")
+case("flag-speed-denormal", ["--speed", "1e-310", "--out", "{out}"], 2, "--speed")
+case("name-bad-utf8", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:1: the text is not UTF-8 (byte 0xff at column 7)",
+     {"m.yaml": ("bytes", b"name: \xff\xfe glider\n" + mission().split("\n", 1)[1].encode())})
+
 # --- well-formed problems without a path: exit 1 with the reason ------------------------------------------------
 case("no-path-slow-in-jet", ["--speed", "0.05", "--out", "{out}"], 1, "Status:             No path")
 case("no-path-horizon-named", ["--speed", "0.05", "--out", "{out}"], 1, "within the planning horizon")
@@ -738,6 +828,8 @@ def prepare(workdir, files):
                     f.truncate(size // 2 + 8)
         elif how == "symlink":
             os.symlink(text, path)
+        elif how == "fifo":
+            os.mkfifo(path)
         elif how == "bytes":
             with open(path, "wb") as f:
                 f.write(text)

@@ -19,6 +19,15 @@ struct LandPolygon
     std::string name;                         ///< the feature's `name` attribute, else "feature <FID>"
 };
 
+/// @brief What a coastline file held: its features with a geometry, those that met the box, and their extent in
+/// lon/lat (after the transformation), so that a file lying nowhere near the trip can be told from open water.
+struct CoastlineCount
+{
+    int features{0};  ///< features with a geometry
+    int used{0};      ///< features that met the box
+    double lonMin{1e300}, lonMax{-1e300}, latMin{1e300}, latMax{-1e300};  ///< the features' extent
+};
+
 /// @brief The land polygons of every layer of @p path that meet the box [lonMin, lonMax] x [latMin, latMax],
 /// clipped to it (GEOS intersection through OGR), so that only what the trip can meet is kept.
 ///
@@ -31,9 +40,12 @@ struct LandPolygon
 /// given): the feature, GEOS's reason and its place in lon/lat.
 /// @throws Error naming the file, the layer and the feature (its `name`, else its index) and giving places in lon/lat,
 /// when it cannot be opened, holds no layer, holds an open line or a point where land is expected, or has
-/// coordinates that cannot be transformed to lon/lat.
+/// coordinates that cannot be transformed to lon/lat, or coordinates (after the transformation) outside lon
+/// -180..360, lat -90..90 (a projected file without a spatial reference: a GeoJSON without a `crs` member, a
+/// shapefile without its `.prj`). @p count (when given) is added to.
 std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin, double latMin, double lonMax,
-                                          double latMax, std::vector<std::string> *repairs = nullptr);
+                                          double latMax, std::vector<std::string> *repairs = nullptr,
+                                          CoastlineCount *count = nullptr);
 
 /// @brief Why GEOS (through OGR) calls the polygon with outer ring @p outer and @p holes invalid ("Self-intersection
 /// at or near point 1 2", in the rings' own coordinates), or "" when it is valid.

@@ -173,6 +173,9 @@ private:
     void buildRegions();
     /// The coastline's land polygons about the box (Safety.cpp); errors begin with @p at.
     std::vector<LandPolygon> readCoastline(const std::string &at);
+    /// A GeoJSON of forbidden regions none of whose polygons lies in or near the box (lon and lat swapped, another
+    /// region) is refused (Safety.cpp).
+    void checkGeoJsonNearBox() const;
     /// The keep-off zone and the shallow water (Safety.cpp), added to @p regions.
     void addSafety(ForbiddenRegions &regions);
     /// The shallow water of the depth limit (Safety.cpp); null without a bathymetry.

@@ -46,7 +46,8 @@ private:
 
 /// @brief SIGINT, SIGTERM and SIGHUP (unless ignored) end the process at once, except while writeOutputFiles()
 /// writes its staging directory: then that directory is removed first (the earlier outputs stay), or, once the
-/// commit has begun, it is completed; then the process ends by the signal. For programs (glider_plan).
+/// commit has begun, it is completed; then the process ends by the signal. SIGXCPU (the CPU time limit, ulimit -t)
+/// likewise, ending with a message and exit status 128 + SIGXCPU instead of a core dump. For programs (glider_plan).
 void installOutputSignalHandlers();
 
 /// @brief The files of @p result: summary.json always, then the formats of result.spec.outputs.files that apply

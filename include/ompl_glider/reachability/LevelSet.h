@@ -54,6 +54,9 @@ struct Reachability
     std::vector<double> arrival;
     bool goalReached{false};          ///< the front reached the goal (within the time limit)
     double goalTime{std::numeric_limits<double>::infinity()};  ///< first arrival at the goal (absolute)
+    /// No water links the goal to the start on the grid (a flood fill through the static forbidden set, with jumps
+    /// as long as one step's reach): the front cannot reach it, and no step was taken.
+    bool goalWalledOff{false};
     /// Time-optimal path from the start (t0) to the goal (goalTime) by backtracking; empty without a goal. A hold
     /// appears as two points at the same position.
     std::vector<TimedPoint> path;

@@ -46,6 +46,7 @@ std::vector<double> readNodes(const NcFile &f, int var, const std::vector<std::s
     std::vector<double> out(rows.size() * cols.size());
     readScatter(f, var, {makeDimRead(rows), makeDimRead(cols)}, {cols.size(), 1}, out);
     checkNodeValues(f, var, out, rows, cols);
+    unpackCoordinates(f, var, out);
     return out;
 }
 

@@ -18,6 +18,7 @@ std::vector<double> readDepthMetres(const NcFile &f, int zv)
     const std::string zn = f.varName(zv);
     std::vector<double> zs = f.readAll1D(zv);
     checkAxisValues(f, zv, zs, "depth");
+    unpackCoordinates(f, zv, zs);
     const std::string pos = lower(f.attText(zv, "positive").value_or("down"));
     if (pos != "down" && pos != "up")
         throw f.error("depth '" + zn + "': attribute positive = '" + pos + "', expected 'down' or 'up'");

@@ -259,8 +259,9 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
                         "separated by commas)");
         const std::string path =
             baseDir.empty() || fs::path(item).is_absolute() ? item : (fs::path(baseDir) / item).string();
-        if (item.find_first_of("*?[") == std::string::npos)
-        {
+        std::error_code ec;
+        if (item.find_first_of("*?[") == std::string::npos || fs::is_regular_file(path, ec))
+        {  // (a file that exists is that file, even when its name holds brackets: a[1].nc)
             out.push_back(path);
             continue;
         }

@@ -134,8 +134,15 @@ void findAngle(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
         if (stdName(f, l.uVar).find("eastward") != std::string::npos || lower(l.uName).find("east") != std::string::npos)
             return;
         for (int var = 0; var < f.nvars() && l.angleVar < 0; ++var)
-            if (lower(f.varName(var)) == "angle" && f.varDims(var) == grid)
+            if (lower(f.varName(var)) == "angle")
+            {
+                if (f.varDims(var) != grid)  // (a 1-D angle on a 2-D grid would turn nothing, in silence)
+                    throw f.error("grid angle variable '" + f.varName(var) + "' is not on the grid of the "
+                                  "velocities (" + dimText(f, grid[0]) + ", " + dimText(f, grid[1]) +
+                                  "): give the grid's angle with --angle-var (current.variables.angle), or 'none' "
+                                  "when the velocities are east/north");
                 l.angleVar = var;
+            }
         if (l.angleVar < 0)
         {
             // nothing says the velocities are eastward: on a curvilinear grid they may run along it (ROMS, NEMO)

@@ -332,6 +332,9 @@ struct Packing
 /// scale_factor / add_offset, _FillValue (else the netCDF default fill of the type), missing_value,
 /// valid_range / valid_min / valid_max. @throws Error for a zero or non-finite scale or offset.
 Packing packingOf(const NcFile &f, int var);
+/// Coordinates as CF packs them (int16 lon/lat with scale_factor / add_offset): @p values, read raw and checked
+/// for fill values, unpacked in place.
+void unpackCoordinates(const NcFile &f, int var, std::vector<double> &values);
 
 /// Unpacks raw u/v (internal order t, z, y, x; packings pu/pv, converted to m/s by vel) into g.u / g.v and marks
 /// land in g.water (per z, y, x) as readVelocities() says, deciding on the trip's records only (t.inTrip()).

@@ -18,8 +18,9 @@ namespace
 /// or values that are not strictly monotonic (longitudes: also across one seam, returned unwrapped).
 std::vector<double> readAxis(const NcFile &f, int var, bool longitude)
 {
-    const std::vector<double> raw = f.readAll1D(var);
+    std::vector<double> raw = f.readAll1D(var);
     checkAxisValues(f, var, raw, "coordinate");
+    unpackCoordinates(f, var, raw);
     const std::vector<double> values = longitude ? unwrapLongitudes(raw) : raw;
     checkStrictlyMonotonic(f, values, raw, "coordinate", f.varName(var));
     return values;

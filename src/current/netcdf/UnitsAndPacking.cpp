@@ -123,5 +123,14 @@ Packing packingOf(const NcFile &f, int var)
         p.validMax = vmax[0];
     return p;
 }
+
+void unpackCoordinates(const NcFile &f, int var, std::vector<double> &values)
+{
+    const Packing p = packingOf(f, var);
+    if (p.scale == 1.0 && p.offset == 0.0)
+        return;
+    for (double &v : values)
+        v = v * p.scale + p.offset;
+}
 }  // namespace netcdf_detail
 }  // namespace ompl_glider

@@ -88,11 +88,34 @@ std::string candidateList(const NcFile &f)
 }
 }  // namespace
 
+/// A NetCDF-4 file whose variables lie in groups: only the root group is read, so a velocity not found there is
+/// refused naming the groups (not as a missing variable). "" without groups.
+std::string groupNote(const NcFile &f)
+{
+    int n = 0;
+    if (nc_inq_grps(f.id(), &n, nullptr) != NC_NOERR || n <= 0)
+        return "";
+    std::vector<int> ids(static_cast<std::size_t>(n));
+    nc_inq_grps(f.id(), &n, ids.data());
+    std::string names;
+    for (int g : ids)
+    {
+        char name[NC_MAX_NAME + 1] = {0};
+        nc_inq_grpname(g, name);
+        names += (names.empty() ? "'" : ", '") + std::string(name) + "'";
+    }
+    return "the velocities are not in the root group, and the file has NetCDF-4 groups (" + names +
+           "): only the root group is read; copy the group's variables out first (nccopy -G or ncks -G : -g NAME)";
+}
+
 int findVelocity(const NcFile &f, const std::string &given, bool east, const std::string &optionName)
 {
+    const std::string groups = groupNote(f);
     if (!given.empty())
     {
         auto v = f.findVar(given);
+        if (!v && !groups.empty())
+            throw f.error("no variable '" + given + "' in the root group: " + groups);
         if (!v)
             throw f.error("no variable '" + given + "' (given with NetCdfCurrentOptions::" + optionName +
                           "); candidates: " + candidateList(f));
@@ -132,6 +155,8 @@ int findVelocity(const NcFile &f, const std::string &given, bool east, const std
             if (lower(f.varName(var)) == n)
                 return var;
     }
+    if (!groups.empty())
+        throw f.error(groups);
     throw f.error(std::string("no ") + (east ? "eastward (u)" : "northward (v)") +
                   " velocity found: no variable with standard_name one of {" + joinNames(stdNames) +
                   "} or named one of {" + joinNames(names) + "} (in any case); candidates: " + candidateList(f) +

@@ -6,6 +6,7 @@
 #include "MissionReader.h"
 #include "ompl_glider/io/Length.h"
 #include "ompl_glider/Exception.h"
+#include "../../io/NumberText.h"
 
 namespace ompl_glider::mission_loader
 {
@@ -13,6 +14,44 @@ namespace
 {
 
 // --- GeoJSON forbidden regions ---------------------------------------------------------------------------------
+
+/// A GeoJSON `crs` member (GeoJSON 2008; RFC 7946 dropped it): only lon/lat (WGS 84) is taken; another one is
+/// refused, since the mission reads the coordinates as lon/lat or as its own x/y.
+void checkGeoJsonCrs(const Reader &g, const YAML::Node &doc)
+{
+    const YAML::Node crs = doc["crs"];
+    if (!crs)
+        return;
+    std::string name;
+    if (crs.IsMap() && crs["properties"] && crs["properties"].IsMap() && crs["properties"]["name"] &&
+        crs["properties"]["name"].IsScalar())
+        name = crs["properties"]["name"].Scalar();
+    const bool lonLat = name.find("CRS84") != std::string::npos || name.find("4326") != std::string::npos;
+    if (!lonLat)
+        g.fail(crs, "crs",
+               "the GeoJSON names the coordinate reference system '" + (name.empty() ? "?" : name) +
+                   "'; forbidden regions are read as lon/lat (WGS 84) or as the mission's x/y "
+                   "(geojson_coordinates: local): transform the file first (ogr2ogr -t_srs EPSG:4326 OUT IN), "
+                   "or give it as forbidden.coastline, which is transformed");
+}
+
+/// Lon/lat of a geographic GeoJSON ring: a longitude outside -180..360 or a latitude outside -90..90 is not lon/lat
+/// (web-mercator metres without a `crs` member, say).
+void checkLonLat(const Reader &g, const YAML::Node &ring, const std::string &field, const std::string &feature,
+                 const std::vector<std::pair<double, double>> &points)
+{
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (!(points[i].first >= -180.0 && points[i].first <= 360.0 && points[i].second >= -90.0 &&
+              points[i].second <= 90.0))
+            g.fail(ring[i], field + "[" + std::to_string(i) + "]",
+                   "feature '" + feature + "': [" + text::number(points[i].first) + ", " +
+                       text::number(points[i].second) +
+                       "] is not lon/lat (longitude -180..360, latitude -90..90): projected coordinates (metres of "
+                       "web-mercator?) need transforming to lon/lat, or geojson_coordinates: local for the "
+                       "mission's x/y");
+}
+
+// (GeoJSON forbidden regions ---------------------------------------------------------------------------------
 
 void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
 {
@@ -34,6 +73,7 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
     if (!doc.IsMap() || !doc["type"] || doc["type"].Scalar() != "FeatureCollection" || !doc["features"] ||
         !doc["features"].IsSequence())
         g.fail(doc, "type", "expected a GeoJSON FeatureCollection with a 'features' list");
+    checkGeoJsonCrs(g, doc);
     const bool geo = m.forbidden.geojsonGeographic;
     if (geo && !m.projection.set && !m.current.isForecast())
         r.fail(where, "forbidden.geojson", "GeoJSON coordinates are lon/lat: give a 'projection' in the mission");
@@ -81,6 +121,10 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
             poly.points = g.ring(rings[0], pf + "[0]");
             for (std::size_t h = 1; h < rings.size(); ++h)
                 poly.holes.push_back(g.ring(rings[h], pf + "[" + std::to_string(h) + "]"));
+            if (geo)
+                for (std::size_t h = 0; h < rings.size(); ++h)
+                    checkLonLat(g, rings[h], pf + "[" + std::to_string(h) + "]", name,
+                                h == 0 ? poly.points : poly.holes[h - 1]);
             if (kind == "closure")
             {
                 TimeWindowSpec tw;

@@ -102,6 +102,9 @@ double Reader::positive(const YAML::Node &node, const std::string &field) const
     const double v = finite(node, field);
     if (!(v > 0))
         fail(node, field, "expected a number > 0, got " + node.Scalar());
+    if (!std::isnormal(v))  // a denormal (1e-310): divisions by it overflow
+        fail(node, field, "expected a number > 0, got " + node.Scalar() +
+                              ", below the smallest normal double (2.2e-308): too small to compute with");
     return v;
 }
 
