@@ -43,11 +43,19 @@ struct Shooting
         }
         return r;
     }
+    /// The optimiser's flights take 16 RK4 steps per segment whatever T is: a fixed step would make a flight whose
+    /// T grows toward the time window's end (up to (tEnd - departure) / T0 times T0) cost that many times more.
+    DiveSettings diveOf(const double *x, unsigned n) const
+    {
+        DiveSettings d = dive;
+        d.step = x[n - 1] * T0 / (16.0 * static_cast<double>(base.segments.size()));
+        return d;
+    }
     /// Segment ends of the flight without goal radius (pure dynamics: the constraints must be smooth).
     std::vector<TimedPoint> endsOf(const double *x, unsigned n)
     {
         ++flights;
-        return flyHeadingRoute(routeOf(x, n), *ctx->field, nullptr, dive, false).ends;
+        return flyHeadingRoute(routeOf(x, n), *ctx->field, nullptr, diveOf(x, n), false).ends;
     }
 
     /// The flights at x and at x + h e_j (forward differences), kept for the constraints at the same x.
@@ -72,7 +80,7 @@ struct Shooting
             std::vector<double> xp(x, x + n);
             steps[j] = 1e-7 * std::max(1.0, std::abs(x[j]));
             xp[j] = x[j] + steps[j];
-            perturbed[j] = flyHeadingRoute(routeOf(xp.data(), n), *ctx->field, nullptr, dive, false).ends;
+            perturbed[j] = flyHeadingRoute(routeOf(xp.data(), n), *ctx->field, nullptr, diveOf(xp.data(), n), false).ends;
         });
         flights += n;
     }
@@ -267,7 +275,6 @@ RefinedHeadings refineHeadingRoute(const HeadingRoute &initial, Point2 goal, con
     s.scale = std::max(std::hypot(goal.x - initial.start.x, goal.y - initial.start.y), 1e-9);
     s.dive.speed = ctx.speed();
     s.dive.depth = settings.depth;
-    s.dive.step = T0 / (16.0 * N);
     ThreadPool pool(settings.threads);
     s.pool = &pool;
     const Region &reg = ctx.region;

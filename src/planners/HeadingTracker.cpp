@@ -5,6 +5,8 @@
 #include <cmath>
 #include <functional>
 
+#include <ompl/util/Console.h>
+
 namespace ompl_glider
 {
 namespace
@@ -101,6 +103,7 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
     TimedPoint at = path.front();
     std::size_t from = 0;
     const double tolerance = std::max(settings.radius, 1e-12) * 1e-3;
+    unsigned shotPieces = 0, pieceFlights = 0;
     while (from + 1 < path.size())
     {
         // the next target: the first point at least spacing along the path (the last point is the goal itself)
@@ -139,6 +142,8 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
                 sub.radius = tolerance;
                 sub.step = dive.step;
                 const RefinedHeadings r = refineHeadingRoute(piece, q, ctx, sub);
+                ++shotPieces;
+                pieceFlights += r.flights;
                 if (r.ok)
                 {
                     route.segments.insert(route.segments.end(), r.route.segments.begin(), r.route.segments.end());
@@ -151,6 +156,7 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
         }
         if (!flown)
         {
+            OMPL_DEBUG("tracking: %u pieces shot (%u flights)", shotPieces, pieceFlights);
             out.why = "no held heading flies from (" + std::to_string(at.x) + ", " + std::to_string(at.y) + ") at t = " +
                       std::to_string(at.t) + " to the path's next point";
             out.route = std::move(route);
@@ -158,6 +164,7 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
             return out;
         }
     }
+    OMPL_DEBUG("tracking: %zu path points, %u pieces shot (%u flights)", path.size(), shotPieces, pieceFlights);
     std::string why;
     HeadingRefineSettings verify = settings;
     verify.step = dive.step;
