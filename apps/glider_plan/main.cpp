@@ -16,6 +16,8 @@
 
 #include <sys/resource.h>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <ompl/util/Console.h>
 
@@ -55,7 +57,8 @@ int runFleetMode(const Flags &f, const MissionSpec &spec, RunOptions options)
     if (!f.start.empty() || !f.goal.empty())
         throw UsageError{"--start and --goal cannot be combined with a mission file's fleet: each glider gives its "
                          "own (fleet[i].start, fleet[i].goal)"};
-    options.progress = printProgress;
+    if (::isatty(STDERR_FILENO))  // a line per glider on a terminal; a log gets the table
+        options.progress = printProgress;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<FleetGlider> gliders = runFleet(spec, options, renderOutputFiles);
     int status = 0;
