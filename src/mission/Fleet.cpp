@@ -109,11 +109,16 @@ std::vector<FleetGlider> runFleet(const MissionSpec &mission, const RunOptions &
     const std::size_t n = mission.fleet.size();
     RunOptions each = options;
     each.progress = {};  // one line per glider instead of each glider's own
+    std::mutex loading;
     const auto plan = [&](std::size_t i) {
         const MissionSpec spec = fleetGliderMission(mission, i);
         try
         {
+            // the problems are built one at a time: they read the forecast, bathymetry and coastline files, and the
+            // NetCDF and GDAL libraries are not thread-safe; the plans then run in parallel
+            std::unique_lock<std::mutex> lock(loading);
             const MissionProblem problem(spec);
+            lock.unlock();
             const MissionResult result = runMission(problem, each);
             FleetGlider g;
             g.row = rowOf(spec, problem, result);

@@ -23,6 +23,28 @@ assert all(g["solved"] and g["travel_time"] > 0 for g in s["fleet"])
 assert "alpha/waypoints.csv" in s["files"] and "fleet.csv" in s["files"]
 PY
 
+# a forecast fleet: the problems read the NetCDF file one at a time (the library is not thread-safe), then plan in
+# threads; each glider's route equals its own mission's
+cat >"$WORK/forecast.yaml" <<Y
+name: labrador_fleet
+current:
+  type: netcdf
+  file: $SRC/examples/labrador_forecast.nc
+  variables: {u: u, v: v, lon: lon, lat: lat, depth: depth, time: time}
+region: {lon_min: -52.9, lon_max: -51.1, lat_min: 47.7, lat_max: 48.7}
+departure: {time: "2026-03-15T06:00:00Z"}
+vehicle: {speed: 0.3}
+fleet:
+  - {name: east, start: {lon: -52.7, lat: 47.9}, goal: {lon: -51.5, lat: 48.45}}
+  - {name: west, start: {lon: -52.6, lat: 48.1}, goal: {lon: -51.7, lat: 48.3}}
+outputs: {directory: fc, files: [csv, summary]}
+Y
+"$PLAN" --mission "$WORK/forecast.yaml" >"$WORK/stdout" 2>"$WORK/stderr" || fail "forecast fleet: exit $?"
+sed -e '/^fleet:/,/^outputs/{/^outputs/!d}' -e 's/^outputs: {directory: fc/start: {lon: -52.6, lat: 48.1}\ngoal: {lon: -51.7, lat: 48.3}\noutputs: {directory: alone/' \
+  "$WORK/forecast.yaml" >"$WORK/west.yaml"
+"$PLAN" --mission "$WORK/west.yaml" >/dev/null 2>"$WORK/stderr" || fail "west alone: exit $?"
+cmp "$WORK/fc/west/waypoints.csv" "$WORK/alone/waypoints.csv" || fail "the fleet's west differs from its own mission"
+
 # a glider that cannot make headway against the current: exit 1, named; the others' routes are written
 cat >"$WORK/nopath.yaml" <<'Y'
 name: nopath
