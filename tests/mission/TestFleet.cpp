@@ -104,6 +104,19 @@ TEST(Fleet, ReadWithEachGlidersOwnValuesAndPlaces)
     EXPECT_EQ(late.departure.time, 4.0);
     EXPECT_EQ(late.vehicle.speed, 0.5);
     EXPECT_EQ(late.place("departure.time"), "m.yaml:13: field 'departure.time'");
+    // the fleet's mission itself is not one plan: runMission() refuses it, naming the field
+    const MissionProblem problem(m);
+    try
+    {
+        runMission(problem);
+        ADD_FAILURE() << "a fleet planned as one mission";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("m.yaml:8: field 'fleet': a fleet is planned glider by glider"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(Fleet, BadEntriesNameTheirLine)

@@ -25,6 +25,7 @@ void readFleet(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     if (!n.IsSequence() || n.size() == 0)
         r.fail(n, "fleet", "expected a list of gliders, each {name, start, goal} (speed and departure optional)");
+    r.mark(n, "fleet");
     std::set<std::string> names;
     for (std::size_t i = 0; i < n.size(); ++i)
     {
