@@ -4,6 +4,8 @@
 // their checks and the MissionSpec of the built-in and --currents modes in Flags.cpp (shared with fuzz/fuzz_cli).
 // Under mpirun (a build with OMPL_GLIDER_WITH_MPI) every rank runs the same pipeline; the many-plan modes spread
 // their tasks over the ranks (TaskSpread.h) and rank 0 alone prints and writes.
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -14,6 +16,8 @@
 
 #include <sys/resource.h>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <ompl/util/Console.h>
 
@@ -21,7 +25,9 @@
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/TaskSpread.h"
+#include "ompl_glider/mission/Fleet.h"
 #include "ompl_glider/mission/Planning.h"
+#include "ompl_glider/output/FleetFiles.h"
 #include "ompl_glider/output/OutputWriter.h"
 #include "ompl_glider/output/Report.h"
 #if OMPL_GLIDER_WITH_MPI
@@ -44,6 +50,42 @@ void printProgress(const std::string &line, bool done)
     std::fflush(stderr);
 }
 
+/// A fleet (the mission's `fleet`): every glider planned by the one pipeline (runFleet()), its files rendered where it
+/// was planned; rank 0 prints the table and writes all folders in one transaction. Returns the exit status.
+int runFleetMode(const Flags &f, const MissionSpec &spec, RunOptions options)
+{
+    if (!f.start.empty() || !f.goal.empty())
+        throw UsageError{"--start and --goal cannot be combined with a mission file's fleet: each glider gives its "
+                         "own (fleet[i].start, fleet[i].goal)"};
+    if (::isatty(STDERR_FILENO))  // a line per glider on a terminal; a log gets the table
+        options.progress = printProgress;
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<FleetGlider> gliders = runFleet(spec, options, renderOutputFiles);
+    int status = 0;
+    for (const FleetGlider &g : gliders)
+        status = std::max(status, !g.row.badInput.empty() ? kBadInput : g.row.solved ? 0 : kNoPath);
+    if (taskRank() != 0)
+        return status;
+    if (status == kBadInput)
+    {
+        for (const FleetGlider &g : gliders)
+            if (!g.row.badInput.empty())
+                std::cerr << "glider_plan: glider '" << g.row.name << "': " << g.row.badInput << ": " << g.row.reason
+                          << "\n";
+        return kBadInput;  // bad input: nothing is written
+    }
+    printFleetTable(std::cout, spec, gliders);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::vector<std::string> written =
+        writeOutputFiles(spec.outputs.directory, fleetOutputFiles(spec, gliders, wall));
+    std::cout << "wrote " << written.size() << " files: " << (spec.outputs.directory.empty() ? "." : spec.outputs.directory)
+              << "/summary.json, fleet.csv and a folder per glider\n";
+    for (const FleetGlider &g : gliders)
+        if (!g.row.solved)
+            std::cerr << "glider_plan: glider '" << g.row.name << "' has no route: " << g.row.reason << "\n";
+    return status;
+}
+
 /// Plans, reports and writes. Returns the exit status.
 int run(const Flags &f)
 {
@@ -61,11 +103,13 @@ int run(const Flags &f)
         if (taskRank() == 0)  // an MPI job writes from rank 0 only
             lock.emplace(spec.outputs.directory);
     }
-    const MissionProblem problem(spec);
     RunOptions options;
     if (f.speeds)
         options.speeds = speedList(*f.speeds);
     options.optimum = f.optimum;
+    if (!spec.fleet.empty())
+        return runFleetMode(f, spec, options);
+    const MissionProblem problem(spec);
     if (!f.mission.empty() || !f.currents.empty())
         options.progress = printProgress;
     const MissionResult result = runMission(problem, options);
@@ -85,8 +129,8 @@ int run(const Flags &f)
 }
 
 /// Plans under run(), turning exceptions into messages (rank 0's only: every rank of a job meets the same bad input,
-/// and a task's failure is thrown on every rank) and exit codes.
-int runAndReport(const Flags &f)
+/// and a task's failure is thrown on every rank) and exit codes; @p failure gets the message.
+int runAndReport(const Flags &f, std::string &failure)
 {
     const bool speak = taskRank() == 0;
     std::string message;
@@ -120,6 +164,7 @@ int runAndReport(const Flags &f)
     }
     if (speak)
         std::cerr << "glider_plan: " << message << "\n";
+    failure = message;
     return kBadInput;
 }
 }  // namespace
@@ -136,6 +181,8 @@ int main(int argc, char **argv)
                  "glider_plan"};
     Flags f;
     defineFlags(app, f);
+    int status = 0;
+    std::string failure;
     try
     {
         parseFlags(app, f, argc, argv);
@@ -146,27 +193,40 @@ int main(int argc, char **argv)
     }
     catch (const CLI::ParseError &e)
     {
-        std::cerr << "glider_plan: " << e.what() << "\nTry 'glider_plan --help'.\n";
-        return kBadInput;
+        failure = e.what();
     }
     catch (const UsageError &e)
     {
-        std::cerr << "glider_plan: " << e.message << "\nTry 'glider_plan --help'.\n";
-        return kBadInput;
+        failure = e.message;
     }
-    if (!f.verbose)
-        ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-    installOutputSignalHandlers();  // SIGINT/SIGTERM while files are written: the earlier outputs stay
-    // a CPU time limit whose soft and hard values agree (ulimit -t) kills at once; one second less of soft limit
-    // first sends SIGXCPU, answered with a message
-    struct rlimit cpu
+    if (!failure.empty())
     {
-    };
-    if (::getrlimit(RLIMIT_CPU, &cpu) == 0 && cpu.rlim_cur != RLIM_INFINITY && cpu.rlim_cur == cpu.rlim_max &&
-        cpu.rlim_cur > 1)
-    {
-        cpu.rlim_cur -= 1;
-        (void)::setrlimit(RLIMIT_CPU, &cpu);
+        if (taskRank() == 0)
+            std::cerr << "glider_plan: " << failure << "\nTry 'glider_plan --help'.\n";
+        status = kBadInput;
     }
-    return runAndReport(f);
+    else
+    {
+        if (!f.verbose)
+            ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+        installOutputSignalHandlers();  // SIGINT/SIGTERM while files are written: the earlier outputs stay
+        // a CPU time limit whose soft and hard values agree (ulimit -t) kills at once; one second less of soft limit
+        // first sends SIGXCPU, answered with a message
+        struct rlimit cpu
+        {
+        };
+        if (::getrlimit(RLIMIT_CPU, &cpu) == 0 && cpu.rlim_cur != RLIM_INFINITY && cpu.rlim_cur == cpu.rlim_max &&
+            cpu.rlim_cur > 1)
+        {
+            cpu.rlim_cur -= 1;
+            (void)::setrlimit(RLIMIT_CPU, &cpu);
+        }
+        status = runAndReport(f, failure);
+    }
+#if OMPL_GLIDER_WITH_MPI
+    // a rank that failed alone must not leave the others waiting for it (MpiTaskSpreader::endJob())
+    return mpi.end(status, failure);
+#else
+    return status;
+#endif
 }

@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/current/AkimaSpline.h"
 
@@ -48,26 +49,49 @@ std::vector<double> grid(double a, double b, double spacing)
     return t;
 }
 
-/// Evaluates f at every t in parallel, honouring the horizon; prints a progress line when asked.
+/// Evaluates f at every t in parallel (threads, or the processes of a job: TaskSpread.h), honouring the horizon; prints a progress line when asked.
 std::vector<DepartureSample> evaluateAll(const TravelTimeOfDeparture &f, const std::vector<double> &ts,
                                          const DepartureSearchParams &p, bool coarse, const char *what)
 {
     std::vector<DepartureSample> out(ts.size());
     std::atomic<std::size_t> done{0};
     std::mutex printMutex;
-    ThreadPool pool(p.threads);
-    pool.parallelFor(ts.size(), [&](std::size_t i) {
+    const auto report = [&](std::size_t n) {
+        char line[128];
+        std::snprintf(line, sizeof line, "%s: %zu/%zu departures searched", what, n, ts.size());
+        p.progress(line, n == ts.size());
+    };
+    const auto evaluate = [&](std::size_t i) {
         double tt = f(ts[i]);
         if (!(tt >= 0.0) || ts[i] + tt > p.horizon)
             tt = kInf;
-        out[i] = {ts[i], tt, coarse};
+        return tt;
+    };
+    if (TaskSpreader *spread = activeTaskSpreader())
+    {
+        // the supporting points spread over the processes of a job: each returns its travel time (every bit)
+        const std::vector<std::string> times = spread->run(
+            "departure evaluation", ts.size(),
+            [&](std::size_t i) {
+                ByteWriter w;
+                w.put(evaluate(i));
+                return w.take();
+            },
+            [&](std::size_t n, std::size_t) {
+                if (p.progress)
+                    report(n);
+            });
+        for (std::size_t i = 0; i < ts.size(); ++i)
+            out[i] = {ts[i], ByteReader(times[i]).value<double>(), coarse};
+        return out;
+    }
+    ThreadPool pool(p.threads);
+    pool.parallelFor(ts.size(), [&](std::size_t i) {
+        out[i] = {ts[i], evaluate(i), coarse};
         if (p.progress)
         {
             std::lock_guard<std::mutex> lock(printMutex);
-            const std::size_t n = ++done;
-            char line[128];
-            std::snprintf(line, sizeof line, "%s: %zu/%zu departures searched", what, n, ts.size());
-            p.progress(line, n == ts.size());
+            report(++done);
         }
     });
     return out;

@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "PlanningInternal.h"
+#include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/reference/ZermeloReference.h"
 
@@ -15,22 +16,56 @@ namespace ompl_glider
 std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep, const std::vector<double> &speeds,
                                       const ProgressSink &progress)
 {
-    // one plan per speed, in parallel (planRoute() is thread-safe on one problem); rows in the order given
+    // one plan per speed, in parallel (planRoute() is thread-safe on one problem; in a job, spread over its
+    // processes: TaskSpread.h); rows in the order given
     std::vector<SpeedSweepRow> rows(speeds.size());
     std::mutex printMutex;
     std::size_t done = 0;
-    ThreadPool pool(0);
-    pool.parallelFor(speeds.size(), [&](std::size_t i) {
+    const auto report = [&](std::size_t n) {
+        char line[96];
+        std::snprintf(line, sizeof line, "speed sweep: %zu/%zu speeds planned", n, speeds.size());
+        progress(line, n == speeds.size());
+    };
+    const auto row = [&](std::size_t i) {
         PlanOptions o;
         o.speed = speeds[i];
         const PlannedPath p = planRoute(problem, tDep, o);
-        rows[i] = {speeds[i], p.solved, p.travelTime, p.pathLength, p.straightLineTime, p.straightLineLength};
+        return SpeedSweepRow{speeds[i], p.solved, p.travelTime, p.pathLength, p.straightLineTime, p.straightLineLength};
+    };
+    if (TaskSpreader *spread = activeTaskSpreader())
+    {
+        const std::vector<std::string> out = spread->run(
+            "speed sweep speed", speeds.size(),
+            [&](std::size_t i) {
+                const SpeedSweepRow r = row(i);
+                ByteWriter w;
+                w.put(r.solved);
+                for (const double v : {r.travelTime, r.pathLength, r.straightLineTime, r.straightLineLength})
+                    w.put(v);
+                return w.take();
+            },
+            [&](std::size_t n, std::size_t) {
+                if (progress)
+                    report(n);
+            });
+        for (std::size_t i = 0; i < speeds.size(); ++i)
+        {
+            ByteReader in(out[i]);
+            SpeedSweepRow &r = rows[i];
+            r.speed = speeds[i];
+            in.get(r.solved);
+            for (double *v : {&r.travelTime, &r.pathLength, &r.straightLineTime, &r.straightLineLength})
+                in.get(*v);
+        }
+        return rows;
+    }
+    ThreadPool pool(0);
+    pool.parallelFor(speeds.size(), [&](std::size_t i) {
+        rows[i] = row(i);
         if (progress)
         {
             std::lock_guard<std::mutex> lock(printMutex);
-            char line[96];
-            std::snprintf(line, sizeof line, "speed sweep: %zu/%zu speeds planned", ++done, speeds.size());
-            progress(line, done == speeds.size());
+            report(++done);
         }
     });
     return rows;

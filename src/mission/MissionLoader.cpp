@@ -136,7 +136,8 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         throw Error(r.file() + ": the mission file is empty");
     r.checkMap(root, "",
                {"name", "units", "epoch", "projection", "current", "region", "start", "goal", "departure", "vehicle",
-                "travel_time", "dive_profile", "forbidden", "safety", "planner", "stints", "outputs", "speeds", "execution"});
+                "travel_time", "dive_profile", "forbidden", "safety", "planner", "stints", "outputs", "speeds", "execution",
+                "fleet"});
     readHeader(r, root, m);
     if (!root["current"])
         r.fail(root, "current", "missing: the current source (type: meandering_jet | uniform | ... | netcdf)");
@@ -156,13 +157,23 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         r.fail(root, "region", "missing: an analytic current needs the planning region");
     for (const char *key : {"start", "goal"})
     {
+        if (!root[key] && root["fleet"])
+            continue;  // a fleet's gliders give theirs
         if (!root[key])
             r.fail(root, key, "missing");
         readPoint(r, root[key], key, std::string(key) == "start" ? m.start : m.goal, m);
     }
     if (root["departure"])
         readDeparture(r, root["departure"], m);
-    if (root["goal"]["window"])
+    if (root["fleet"])
+    {
+        readFleet(r, root["fleet"], m);
+        if (!root["start"])
+            m.start = m.fleet.front().start;
+        if (!root["goal"])
+            m.goal = m.fleet.front().goal;
+    }
+    if (root["goal"] && root["goal"]["window"])
         readGoalWindow(r, root["goal"]["window"], m);
     readVehicleAndTravel(r, root, m);
     if (root["dive_profile"])

@@ -290,6 +290,9 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     MissionResult result;
     result.spec = problem.getSpec();
     const MissionSpec &m = result.spec;
+    if (!m.fleet.empty())
+        throw Error(m.place("fleet") + ": a fleet is planned glider by glider: runFleet() (mission/Fleet.h), or "
+                                       "glider_plan --mission");
     checkPlanner(problem, m.departure.window ? m.departure.begin : m.departure.time);
     checkGoalWindow(problem);
     const double tDep = chooseDeparture(problem, options, result);

@@ -6,6 +6,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/loader/MissionReader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Sections.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/ForbiddenRegions.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Fleet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Safety.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Endpoints.cpp
@@ -20,6 +21,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/WorkEstimates.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Isochrones.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionExecution.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Fleet.cpp
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES

@@ -19,15 +19,40 @@ namespace
 {
 constexpr int kTagResult = 7101;  // worker -> rank 0: the finished task (or -1) and its result, asking for the next
 constexpr int kTagTask = 7102;    // rank 0 -> worker: the next task index, -1: no more
+constexpr int kTagFailed = 7103;  // a rank that failed outside the tasks -> every other rank: its status and reason
 using Clock = std::chrono::steady_clock;
 
-/// Waits for a non-blocking request without spinning a core (OpenMPI's blocking calls poll busily).
+/// Ends the job when another rank said it failed outside the tasks (MpiTaskSpreader::endJob()): this rank waits for
+/// something that rank will never do (a request, a task, a broadcast), so waiting would hang the job.
+void abortOnFailureNotice()
+{
+    int flag = 0;
+    MPI_Status st;
+    MPI_Iprobe(MPI_ANY_SOURCE, kTagFailed, MPI_COMM_WORLD, &flag, &st);
+    if (!flag)
+        return;
+    int count = 0;
+    MPI_Get_count(&st, MPI_BYTE, &count);
+    std::string message(static_cast<std::size_t>(count), '\0');
+    MPI_Recv(&message[0], count, MPI_BYTE, st.MPI_SOURCE, kTagFailed, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    ByteReader in(message);
+    const int status = in.value<int>();
+    const std::string reason = in.value<std::string>();
+    std::fprintf(stderr, "\nrank %d failed outside the tasks: %s; the job is ended, nothing written\n", st.MPI_SOURCE,
+                 reason.c_str());
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, status > 0 ? status : 2);
+}
+
+/// Waits for a non-blocking request without spinning a core (OpenMPI's blocking calls poll busily); ends the job
+/// when another rank failed outside the tasks.
 void waitFor(MPI_Request &request)
 {
     int flag = 0;
     MPI_Test(&request, &flag, MPI_STATUS_IGNORE);
     while (!flag)
     {
+        abortOnFailureNotice();
         std::this_thread::sleep_for(std::chrono::microseconds(200));
         MPI_Test(&request, &flag, MPI_STATUS_IGNORE);
     }
@@ -175,6 +200,7 @@ std::vector<std::string> MpiTaskSpreader::master(const std::string &what, std::s
         MPI_Iprobe(MPI_ANY_SOURCE, kTagResult, MPI_COMM_WORLD, &flag, &st);
         if (!flag)
         {
+            abortOnFailureNotice();
             std::lock_guard<std::mutex> lock(m);
             if (progress && done != reported)
                 progress(reported = done, n);
@@ -226,9 +252,10 @@ void MpiTaskSpreader::worker(const std::string &what, std::size_t n, const Task 
         out.put(outcome.first);
         out.put(outcome.second);
         std::string message = out.take();
-        MPI_Send(message.data(), static_cast<int>(message.size()), MPI_BYTE, 0, kTagResult, MPI_COMM_WORLD);
-        bytes_ += static_cast<double>(message.size());
         MPI_Request r;
+        MPI_Isend(message.data(), static_cast<int>(message.size()), MPI_BYTE, 0, kTagResult, MPI_COMM_WORLD, &r);
+        waitFor(r);  // (a large result waits for rank 0: not for ever when rank 0 failed outside the tasks)
+        bytes_ += static_cast<double>(message.size());
         MPI_Irecv(&i, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, &r);
         waitFor(r);
         bytes_ += sizeof i;
@@ -270,5 +297,54 @@ std::vector<std::string> MpiTaskSpreader::share(const std::string &what, std::ve
     if (rank_ != 0)
         in.get(results);
     return results;
+}
+
+int MpiTaskSpreader::endJob(int status, const std::string &failure)
+{
+    if (size_ < 2)
+        return status;
+    // a failure: every other rank is told first, so that a rank waiting for this one (for its requests in a run(),
+    // for a task from rank 0, in a broadcast) ends the job instead of waiting for ever
+    const bool failed = !failure.empty();
+    std::string notice;
+    std::vector<MPI_Request> sends;
+    if (failed)
+    {
+        ByteWriter w;
+        w.put(status);
+        w.put(failure);
+        notice = w.take();
+        for (int r = 0; r < size_; ++r)
+            if (r != rank_)
+            {
+                sends.emplace_back();
+                MPI_Isend(notice.data(), static_cast<int>(notice.size()), MPI_BYTE, r, kTagFailed, MPI_COMM_WORLD,
+                          &sends.back());
+            }
+    }
+    // every rank at the end: how many failed (each rank then takes the notices sent to it)
+    int mine = failed ? 1 : 0, all = 0;
+    MPI_Request r;
+    MPI_Iallreduce(&mine, &all, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD, &r);
+    int flag = 0;
+    for (MPI_Test(&r, &flag, MPI_STATUS_IGNORE); !flag; MPI_Test(&r, &flag, MPI_STATUS_IGNORE))
+        std::this_thread::sleep_for(std::chrono::microseconds(500));
+    for (int k = 0; k < all - mine; ++k)
+    {
+        MPI_Status st;
+        MPI_Probe(MPI_ANY_SOURCE, kTagFailed, MPI_COMM_WORLD, &st);
+        int count = 0;
+        MPI_Get_count(&st, MPI_BYTE, &count);
+        std::string message(static_cast<std::size_t>(count), '\0');
+        MPI_Recv(&message[0], count, MPI_BYTE, st.MPI_SOURCE, kTagFailed, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        ByteReader in(message);
+        const int theirs = in.value<int>();
+        const std::string reason = in.value<std::string>();
+        if (rank_ == 0 && reason != failure)  // the same failure on every rank is said once (by rank 0's caller)
+            std::fprintf(stderr, "rank %d failed: %s\n", st.MPI_SOURCE, reason.c_str());
+        status = std::max(status, theirs);
+    }
+    MPI_Waitall(static_cast<int>(sends.size()), sends.data(), MPI_STATUSES_IGNORE);
+    return status;
 }
 }  // namespace ompl_glider

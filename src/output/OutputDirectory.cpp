@@ -103,10 +103,32 @@ bool holdsOnlyOutputs(const fs::path &target, const std::vector<std::string> &pr
     for (const fs::directory_entry &e : fs::directory_iterator(target, ec))
     {
         const std::string name = e.path().filename().string();
-        if (!listed.count(name) || fs::symlink_status(e.path(), ec).type() != fs::file_type::regular)
+        const fs::file_type type = fs::symlink_status(e.path(), ec).type();
+        if (type == fs::file_type::directory)  // a fleet glider's folder: every file in it listed as NAME/FILE
+        {
+            bool any = false;
+            for (const fs::directory_entry &f : fs::directory_iterator(e.path(), ec))
+            {
+                if (!listed.count(name + "/" + f.path().filename().string()) ||
+                    fs::symlink_status(f.path(), ec).type() != fs::file_type::regular)
+                    return false;
+                any = true;
+            }
+            if (!any)
+                return false;
+            continue;
+        }
+        if (!listed.count(name) || type != fs::file_type::regular)
             return false;
     }
     return !ec;
+}
+
+/// The folder part of a name in a fleet's output ("alpha" of "alpha/summary.json"); empty for a plain name.
+std::string folderOf(const std::string &name)
+{
+    const std::size_t slash = name.find('/');
+    return slash == std::string::npos ? std::string() : name.substr(0, slash);
 }
 
 struct HeldLock
@@ -287,16 +309,32 @@ void moveFileByFile(const fs::path &staging, const fs::path &target, const std::
         for (const std::string &n : names)
             if ((n.size() >= 12 && n.compare(n.size() - 12, 12, "summary.json") == 0) == summaries)
                 order.push_back(n);
+    std::error_code ec;
     for (const std::string &n : order)
+    {
+        const std::string folder = folderOf(n);
+        if (!folder.empty())
+            fs::create_directory(target / folder, ec);
         if (::rename((staging / n).c_str(), (target / n).c_str()) != 0)
             throw Error("cannot move '" + n + "' into '" + shown + "': " + systemReason(errno));
+    }
     stepHook("committed");
     const std::set<std::string> now(names.begin(), names.end());
-    std::error_code ec;
+    std::set<std::string> folders;
     for (const std::string &name : previous)
-        if (!now.count(name) && name.find('/') == std::string::npos && name != "." && name != ".." &&
-            fs::symlink_status(target / name, ec).type() == fs::file_type::regular)
-            fs::remove(target / name, ec);
+    {
+        const std::string folder = folderOf(name);
+        const std::string file = folder.empty() ? name : name.substr(folder.size() + 1);
+        if (now.count(name) || file.find('/') != std::string::npos || file.empty() || file == "." || file == ".." ||
+            folder == "." || folder == ".." || fs::symlink_status(target / name, ec).type() != fs::file_type::regular)
+            continue;
+        fs::remove(target / name, ec);
+        if (!folder.empty())
+            folders.insert(folder);
+    }
+    for (const std::string &folder : folders)  // an earlier fleet's glider that this run has not
+        if (fs::is_empty(target / folder, ec))
+            fs::remove(target / folder, ec);
 }
 }  // namespace
 
@@ -306,6 +344,12 @@ void commitStaging(const fs::path &staging, const fs::path &target, const std::v
     std::error_code ec;
     for (const std::string &n : names)
     {
+        const std::string folder = folderOf(n);
+        const fs::file_type held = folder.empty() ? fs::file_type::directory : fs::symlink_status(target / folder, ec).type();
+        if (held != fs::file_type::directory && held != fs::file_type::not_found && held != fs::file_type::none)
+            throw Error("output directory '" + shown + "' holds '" + folder +
+                        "', which is not a directory, where glider_plan writes a glider's folder; nothing was "
+                        "replaced (remove it or choose another output directory)");
         const fs::file_type type = fs::symlink_status(target / n, ec).type();
         if (type == fs::file_type::directory)
             throw Error("output directory '" + shown + "' holds a directory '" + n +
@@ -316,6 +360,9 @@ void commitStaging(const fs::path &staging, const fs::path &target, const std::v
             throw Error("output directory '" + shown + "' holds '" + n +
                         "', which is not a regular file, where glider_plan writes a file; nothing was replaced");
     }
+    for (const std::string &n : names)
+        if (!folderOf(n).empty())
+            syncDirectory(staging / folderOf(n));
     syncDirectory(staging);
     if (!fs::exists(fs::symlink_status(target, ec)))
     {

@@ -143,11 +143,16 @@ std::vector<std::string> previousManifest(const fs::path &dir)
     return {};
 }
 
-/// A plain file name (no directory part, not "." or ".."): only such names are ever removed.
+/// A plain file name (no directory part, not "." or ".."), or one in a folder ("alpha/summary.json": a fleet's
+/// glider): only such names are ever removed.
 bool plainName(const std::string &name)
 {
-    return !name.empty() && name != "." && name != ".." && name.find('/') == std::string::npos &&
-           name.find('\\') == std::string::npos;
+    const auto plain = [](const std::string &n) {
+        return !n.empty() && n != "." && n != ".." && n.find('/') == std::string::npos &&
+               n.find('\\') == std::string::npos;
+    };
+    const std::size_t slash = name.find('/');
+    return slash == std::string::npos ? plain(name) : plain(name.substr(0, slash)) && plain(name.substr(slash + 1));
 }
 
 }  // namespace
@@ -268,6 +273,8 @@ std::vector<std::string> writeOutputFiles(const std::string &directory, const st
         for (const OutputFile &f : files)
         {
             output_detail::interruptIfSignalled(staging);
+            if (f.name.find('/') != std::string::npos)
+                fs::create_directory((staging / f.name).parent_path());
             f.write((staging / f.name).string());
         }
         output_detail::interruptIfSignalled(staging);

@@ -107,6 +107,13 @@ yaml_case("yaml-unknown-top-field", MISSION + "colour: red\n", "m.yaml:8: unknow
 yaml_case("yaml-duplicate-key", MISSION + "vehicle: {speed: 0.4}\n", "given twice")
 yaml_case("yaml-two-documents", MISSION + "---\nname: second\n",
           "m.yaml:8: a second YAML document: a mission file holds one document")
+yaml_case("yaml-fleet-entry-missing-goal", mission(append="fleet:\n  - {name: a, start: {x: 1, y: 0}}\n"),
+          "m.yaml:9: field 'fleet[0].goal': missing")
+yaml_case("yaml-fleet-start-on-island",
+          mission(append="forbidden:\n  obstacles:\n    - {name: rock, kind: island, points: [[4, 1], [6, 1], [6, 3], "
+                         "[4, 3]]}\nfleet:\n  - {name: a, start: {x: 1, y: 0}, goal: {x: 9, y: 0}}\n"
+                         "  - {name: b, start: {x: 5, y: 2}, goal: {x: 9, y: 2}}\n"),
+          "glider 'b': m.yaml:13: field 'start'")
 yaml_case("yaml-epoch-arrival-after-9999", mission("epoch: 9999-12-31T00:00:00Z", "units: {time_s: 86400}"),
           "field 'epoch': t = 13.33333333 falls outside the years 0000-9999")
 case("cli-truth-overflows", ["--truth", "B0=1e300", "--out", "{out}"], 2,

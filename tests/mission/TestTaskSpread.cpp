@@ -148,3 +148,29 @@ TEST(TaskSpread, ExecutionBatchEqualsThreaded)
     for (std::size_t k = 0; k < one.execution->spread.size(); ++k)
         EXPECT_EQ(one.execution->spread[k].finalDistance.median, two.execution->spread[k].finalDistance.median);
 }
+
+TEST(TaskSpread, DepartureSearchAndSpeedSweepEqualThreaded)
+{
+    const MissionResult one = runWith("sweep_departure.yaml", nullptr);
+    auto spread = std::make_shared<ReverseSpreader>();
+    const MissionResult two = runWith("sweep_departure.yaml", spread);
+    ASSERT_EQ(spread->runs, (std::vector<std::string>{"departure evaluation x7", "speed sweep speed x6"}));
+    ASSERT_TRUE(one.departureSearch && two.departureSearch);
+    const DepartureSearchResult &a = *one.departureSearch, &b = *two.departureSearch;
+    ASSERT_EQ(a.supportingPoints.size(), b.supportingPoints.size());
+    for (std::size_t i = 0; i < a.supportingPoints.size(); ++i)
+        EXPECT_EQ(a.supportingPoints[i].travelTime, b.supportingPoints[i].travelTime) << i;
+    ASSERT_EQ(a.refinements.size(), b.refinements.size());
+    EXPECT_EQ(a.departure, b.departure);
+    EXPECT_EQ(one.plan.travelTime, two.plan.travelTime);
+    ASSERT_EQ(one.speedSweep.size(), 6u);
+    ASSERT_EQ(two.speedSweep.size(), 6u);
+    for (std::size_t i = 0; i < 6; ++i)
+    {
+        EXPECT_EQ(one.speedSweep[i].speed, two.speedSweep[i].speed);
+        EXPECT_EQ(one.speedSweep[i].solved, two.speedSweep[i].solved);
+        EXPECT_EQ(one.speedSweep[i].travelTime, two.speedSweep[i].travelTime) << i;
+        EXPECT_EQ(one.speedSweep[i].pathLength, two.speedSweep[i].pathLength) << i;
+    }
+    EXPECT_TRUE(one.speedSweep[0].solved);
+}

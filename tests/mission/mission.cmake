@@ -12,6 +12,13 @@ glider_add_test(test_mission_execution ${CMAKE_CURRENT_LIST_DIR}/TestMissionExec
 target_link_libraries(test_mission_execution PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf)
 # the many-plan modes through a TaskSpreader (TaskSpread.h) equal the threaded run bit for bit
 glider_add_test(test_mission_task_spread ${CMAKE_CURRENT_LIST_DIR}/TestTaskSpread.cpp)
+# a fleet: one plan per glider through the pipeline, one folder per glider, all or nothing
+glider_add_test(test_mission_fleet ${CMAKE_CURRENT_LIST_DIR}/TestFleet.cpp)
+target_link_libraries(test_mission_fleet PRIVATE nlohmann_json::nlohmann_json)
+if(TARGET glider_plan)
+  add_test(NAME mission.fleet_cli
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_fleet_cli.sh $<TARGET_FILE:glider_plan> ${PROJECT_SOURCE_DIR})
+endif()
 # a forecast in several files (--currents LIST, current.file list or glob) planned as the combined file
 glider_add_test(test_mission_forecast_files ${CMAKE_CURRENT_LIST_DIR}/TestForecastFiles.cpp)
 target_link_libraries(test_mission_forecast_files PRIVATE netCDF::netcdf)

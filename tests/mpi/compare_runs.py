@@ -12,7 +12,7 @@ import json
 import os
 import sys
 
-IGNORED_JSON = {"wall_time_s", "threads", "current_model_calls"}
+IGNORED_JSON = {"wall_time_s", "threads", "current_model_calls", "processes"}
 TIMING = ("time REAL", "memory REAL")
 
 
@@ -26,9 +26,13 @@ def strip(value):
 
 def compare_plan(one, mpi):
     bad = []
-    names = sorted(os.listdir(one))
-    if sorted(os.listdir(mpi)) != names:
-        return [f"files differ: {names} vs {sorted(os.listdir(mpi))}"]
+
+    def files(root):  # every file, in folders too (a fleet's gliders)
+        return sorted(os.path.relpath(os.path.join(d, f), root) for d, _, fs in os.walk(root) for f in fs)
+
+    names = files(one)
+    if files(mpi) != names:
+        return [f"files differ: {names} vs {files(mpi)}"]
     for name in names:
         a, b = os.path.join(one, name), os.path.join(mpi, name)
         if name.endswith(".json"):

@@ -3,7 +3,8 @@
 # (compare_runs.py), or a job whose task fails or overruns, which must exit non-zero naming the rank and the task
 # and leave nothing written.
 #   run_mpi_test.sh MODE NP MPIEXEC GLIDER_PLAN GLIDER_CAMPAIGN
-# MODE: campaign | ensemble | execution | fail_plan | fail_campaign | time_limit
+# MODE: campaign | ensemble | execution | fleet | sweep_departure | fail_plan | fail_fleet | fail_outside |
+#       fail_campaign | time_limit
 set -uo pipefail
 MODE=$1 NP=$2 MPIEXEC=$3 PLAN=$4 CAMPAIGN=$5
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -39,6 +40,30 @@ case "$MODE" in
       { cat "$WORK/stderr"; fail "mpirun"; }
     [ "$(grep -c "^wrote" "$WORK/stdout")" = "$(ls "$WORK/one" | wc -l)" ] || fail "not one set of files written by rank 0"
     python3 "$HERE/compare_runs.py" plan "$WORK/one" "$WORK/mpi" || fail "the outputs differ"
+    ;;
+  fleet|sweep_departure)
+    "$PLAN" --mission "$HERE/$MODE.yaml" --out "$WORK/one" >/dev/null 2>&1 || fail "one process"
+    "${MPIRUN[@]}" "$PLAN" --mission "$HERE/$MODE.yaml" --out "$WORK/mpi" >"$WORK/stdout" 2>"$WORK/stderr" ||
+      { cat "$WORK/stderr"; fail "mpirun"; }
+    [ "$(grep -c "^wrote" "$WORK/stdout")" = 1 ] || [ "$MODE" != fleet ] || fail "not one write by rank 0"
+    [ "$MODE" != fleet ] || [ "$(ls -d "$WORK"/mpi/*/ | wc -l)" = 5 ] || fail "not a folder per glider"
+    python3 "$HERE/compare_runs.py" plan "$WORK/one" "$WORK/mpi" || fail "the outputs differ"
+    ;;
+  fail_fleet)
+    OMPL_GLIDER_FAIL_TASK="fleet glider:3" expect_failure "rank [0-9]*, fleet glider 3: failure injected" \
+      "$WORK/fl" "${MPIRUN[@]}" "$PLAN" --mission "$HERE/fleet.yaml" --out "$WORK/fl"
+    expect_failure "glider 'c': .*fleet_bad_start.yaml:14: field 'start'" \
+      "$WORK/bad" "${MPIRUN[@]}" "$PLAN" --mission "$HERE/fleet_bad_start.yaml" --out "$WORK/bad"
+    grep -q "rank [0-9]*, fleet glider" "$WORK/stderr" && fail "a bad input every rank meets is not a rank's failure"
+    ;;
+  fail_outside)
+    # one rank cannot read its mission (a file on one node only): the job ends, naming the rank, instead of hanging
+    expect_failure "rank 1 failed outside the tasks: cannot read mission file" "$WORK/fl" \
+      timeout 60 "$MPIEXEC" --oversubscribe -np 1 "$PLAN" --mission "$HERE/fleet.yaml" --out "$WORK/fl" \
+      : -np $((NP - 1)) "$PLAN" --mission "$WORK/missing.yaml" --out "$WORK/fl"
+    expect_failure "rank 0 failed outside the tasks: cannot read mission file" "$WORK/fl" \
+      timeout 60 "$MPIEXEC" --oversubscribe -np 1 "$PLAN" --mission "$WORK/missing.yaml" --out "$WORK/fl" \
+      : -np $((NP - 1)) "$PLAN" --mission "$HERE/fleet.yaml" --out "$WORK/fl"
     ;;
   fail_plan)
     OMPL_GLIDER_FAIL_TASK="ensemble candidate:3" expect_failure "rank [0-9]*, ensemble candidate 3: failure injected" \

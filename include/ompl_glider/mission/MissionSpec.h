@@ -292,6 +292,18 @@ struct OutputSpec
     double isochroneInterval{std::numeric_limits<double>::quiet_NaN()};
 };
 
+/// @brief One glider of a fleet (mission `fleet`): its own start, goal and, optionally, speed and departure; every
+/// other setting is the mission's. fleetGliderMission() (mission/Fleet.h) makes its mission.
+struct FleetGliderSpec
+{
+    std::string name;                 ///< a folder name under the output directory (letters, digits, '_', '-', '.')
+    PointSpec start;
+    PointSpec goal;
+    std::optional<double> speed;      ///< vehicle speed (unset: the mission's)
+    std::optional<double> departure;  ///< fixed departure time, field units (unset: the mission's departure)
+    int line{0};                      ///< the entry's line in the mission file
+};
+
 /// @brief Flying the plan in another ocean (issue 13; [ThompsonICRA]): the "truth" current, the surfacings, the
 /// control strategies compared, and a batch of other start/goal pairs.
 struct ExecutionSpec
@@ -351,6 +363,8 @@ struct MissionSpec
     OutputSpec outputs;
     std::vector<double> speeds;    ///< speed sweep ([EichhornOceans] Table VI); empty = none
     ExecutionSpec execution;       ///< flying the plan in another ocean (issue 13)
+    /// A fleet: one plan per glider, each from its own start to its own goal (empty: one plan, start to goal)
+    std::vector<FleetGliderSpec> fleet;
     /// Where each value was given, by dotted field name ("planner.grid_size"): a line of the mission file, or the
     /// command-line flag. Checks made after loading (those that need the field or the region) name it with place().
     std::map<std::string, SourceMark> marks;

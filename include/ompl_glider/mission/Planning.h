@@ -292,6 +292,6 @@ OptimumReference optimumReference(const MissionProblem &problem, double departur
 /// @brief The pipeline: departure (fixed or searched in the window), planRoute(), pilot waypoints with dive
 /// profiles, the optimal-control reference when asked, the speed sweep. Writes nothing (see writeOutputs()).
 /// A mission without a path is an outcome (plan.solved false), not an exception.
-/// @throws Error for configuration errors.
+/// @throws Error for configuration errors, and for a mission with a fleet (plan it with runFleet(), Fleet.h).
 MissionResult runMission(const MissionProblem &problem, const RunOptions &options = {});
 }  // namespace ompl_glider

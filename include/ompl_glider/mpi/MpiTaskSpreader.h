@@ -49,6 +49,13 @@ public:
         timeLimit_ = seconds;
     }
 
+    /// @brief The end of the job, called by every rank once with its exit status and, when it failed, the reason
+    /// (empty: it did not). A failing rank first tells every other rank, so that one waiting for it (for its
+    /// requests, a task, a broadcast) ends the job (MPI_Abort with the failing rank and its reason) instead of
+    /// hanging; then every rank waits for all, each takes the notices sent to it, and rank 0 prints those that
+    /// differ from its own failure. @return the highest status of all ranks.
+    int endJob(int status, const std::string &failure);
+
 private:
     std::vector<std::string> master(const std::string &what, std::size_t n, const Task &task, const Progress &progress);
     void worker(const std::string &what, std::size_t n, const Task &task);
@@ -82,6 +89,11 @@ public:
             return;
         spreader_ = std::make_shared<MpiTaskSpreader>(argc, argv);
         setTaskSpreader(spreader_);
+    }
+    /// @brief MpiTaskSpreader::endJob() when MPI runs, else @p status.
+    int end(int status, const std::string &failure) const
+    {
+        return spreader_ ? spreader_->endJob(status, failure) : status;
     }
     ~MpiLaunchScope()
     {

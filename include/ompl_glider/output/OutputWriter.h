@@ -64,7 +64,9 @@ void checkOutputDirectory(const std::string &directory);
 /// directory in outputs.directory. @throws Error naming it.
 void checkOutputNames(const OutputSpec &outputs);
 
-/// @brief Writes @p files into @p directory (created when missing) all or nothing (see the file comment); the
+/// @brief Writes @p files into @p directory (created when missing) all or nothing (see the file comment); a name may
+/// hold one folder ("alpha/summary.json": a fleet's glider, made in the directory; a file standing where the folder
+/// goes is refused before anything is replaced, and an earlier run's folder left empty is removed); the
 /// route files of an earlier run are found in the `files` list of the summary.json already there. Takes the
 /// directory's OutputLock (unless this process holds it) and removes staging directories killed runs left.
 /// @return the paths written. @throws Error naming the file that could not be written; the directory is unchanged.

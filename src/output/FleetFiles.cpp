@@ -1,0 +1,191 @@
+// The outputs of a fleet (FleetFiles.h): each glider's files rendered where it was planned, then written with
+// fleet.csv and the fleet's summary.json in one transaction.
+#include "ompl_glider/output/FleetFiles.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "../io/NumberText.h"
+#include "OutputDirectory.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/TaskSpread.h"
+#include "ompl_glider/output/SummaryJson.h"
+
+namespace ompl_glider
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+using json = nlohmann::ordered_json;
+
+json jnum(double v)
+{
+    return std::isfinite(v) ? json(v) : json(nullptr);
+}
+
+json jtext(const std::string &s)
+{
+    return s.empty() ? json(nullptr) : json(s);
+}
+
+std::string csvText(const std::string &s)
+{
+    if (s.find_first_of(",\"\n") == std::string::npos)
+        return s;
+    std::string q = "\"";
+    for (const char c : s)
+        q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+/// A glider's rendered files: (name, bytes) pairs.
+std::vector<std::pair<std::string, std::string>> filesOf(const std::string &kept)
+{
+    std::vector<std::string> names, bytes;
+    ByteReader in(kept);
+    in.get(names);
+    in.get(bytes);
+    std::vector<std::pair<std::string, std::string>> out;
+    for (std::size_t i = 0; i < names.size() && i < bytes.size(); ++i)
+        out.emplace_back(names[i], bytes[i]);
+    return out;
+}
+
+std::string fleetSummaryJson(const MissionSpec &m, const std::vector<FleetGlider> &gliders,
+                             const std::vector<std::string> &files, double wallSeconds)
+{
+    json fleet = json::array();
+    std::size_t solved = 0;
+    for (const FleetGlider &g : gliders)
+    {
+        const FleetRow &r = g.row;
+        solved += r.solved ? 1 : 0;
+        fleet.push_back({{"name", r.name},
+                         {"directory", r.name},
+                         {"solved", r.solved},
+                         {"status", r.status},
+                         {"reason", jtext(r.reason)},
+                         {"travel_time", jnum(r.travelTime)},
+                         {"path_length", jnum(r.pathLength)},
+                         {"departure", jnum(r.departure)},
+                         {"departure_iso", jtext(r.departureIso)},
+                         {"arrival_time", jnum(r.arrival)},
+                         {"arrival_iso", jtext(r.arrivalIso)}});
+    }
+    json j;
+    j["schema"] = kSummarySchema;
+    j["mission"] = m.name;
+    j["mission_file"] = m.file;
+    j["gliders"] = gliders.size();
+    j["gliders_with_route"] = solved;
+    j["fleet"] = fleet;
+    j["wall_time_s"] = jnum(wallSeconds);
+    j["processes"] = taskProcesses();
+    j["files"] = files;
+    return j.dump(2) + "\n";
+}
+}  // namespace
+
+std::string renderOutputFiles(const MissionResult &result, const MissionProblem &problem)
+{
+    std::string pattern = (fs::temp_directory_path() / "ompl_glider-fleet-XXXXXX").string();
+    if (!::mkdtemp(&pattern[0]))
+        throw Error("cannot create a temporary directory in '" + fs::temp_directory_path().string() +
+                    "' for a glider's files");
+    const fs::path dir(pattern);
+    std::vector<std::string> names, bytes;
+    try
+    {
+        for (const OutputFile &f : outputFiles(result, problem))
+        {
+            const fs::path p = dir / f.name;
+            f.write(p.string());
+            std::ifstream in(p, std::ios::binary);
+            std::ostringstream s;
+            s << in.rdbuf();
+            if (!in)
+                throw Error("cannot read back '" + p.string() + "'");
+            names.push_back(f.name);
+            bytes.push_back(s.str());
+            fs::remove(p);
+        }
+    }
+    catch (...)
+    {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+        throw;
+    }
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+    ByteWriter w;
+    w.put(names);
+    w.put(bytes);
+    return w.take();
+}
+
+std::string fleetCsv(const std::vector<FleetGlider> &gliders)
+{
+    std::string out = "name,status,travel_time,path_length,departure,arrival_time,departure_iso,arrival_iso,reason\n";
+    for (const FleetGlider &g : gliders)
+    {
+        const FleetRow &r = g.row;
+        out += csvText(r.name) + "," + csvText(r.status) + "," + text::csvNumber(r.travelTime) + "," +
+               text::csvNumber(r.pathLength) + "," + text::csvNumber(r.departure) + "," + text::csvNumber(r.arrival) +
+               "," + r.departureIso + "," + r.arrivalIso + "," + csvText(r.reason) + "\n";
+    }
+    return out;
+}
+
+std::vector<OutputFile> fleetOutputFiles(const MissionSpec &mission, const std::vector<FleetGlider> &gliders,
+                                         double wallSeconds)
+{
+    std::vector<OutputFile> files;
+    for (const FleetGlider &g : gliders)
+        for (auto &[name, bytes] : filesOf(g.kept))
+            files.push_back({g.row.name + "/" + name, [bytes = bytes](const std::string &p) {
+                                 output_detail::writeFileChecked(p, bytes);
+                             }});
+    const std::string csv = fleetCsv(gliders);
+    files.push_back({"fleet.csv", [csv](const std::string &p) { output_detail::writeFileChecked(p, csv); }});
+    std::vector<std::string> names = {"summary.json"};
+    for (const OutputFile &f : files)
+        names.push_back(f.name);
+    const std::string summary = fleetSummaryJson(mission, gliders, names, wallSeconds);
+    files.insert(files.begin(),
+                 OutputFile{"summary.json", [summary](const std::string &p) { output_detail::writeFileChecked(p, summary); }});
+    return files;
+}
+
+void printFleetTable(std::ostream &out, const MissionSpec &mission, const std::vector<FleetGlider> &gliders)
+{
+    const MissionSpec::PhysicalUnits units = mission.physicalUnits();
+    std::size_t width = 6;
+    for (const FleetGlider &g : gliders)
+        width = std::max(width, g.row.name.size());
+    char line[512];
+    std::snprintf(line, sizeof line, "%-*s  %-8s  %14s  %14s  %s\n", static_cast<int>(width), "glider", "status",
+                  units.time ? "travel time h" : "travel time", units.length ? "path km" : "path length", "arrival");
+    out << "Fleet: " << mission.name << ", " << gliders.size() << " gliders\n" << line;
+    for (const FleetGlider &g : gliders)
+    {
+        const FleetRow &r = g.row;
+        const double hours = r.travelTime * mission.timeUnitSeconds / 3600.0;
+        const double km = r.pathLength * mission.metresPerUnit() / 1000.0;
+        const std::string arrival = !r.solved ? "-" : !r.arrivalIso.empty() ? r.arrivalIso : text::number(r.arrival, 6);
+        std::snprintf(line, sizeof line, "%-*s  %-8s  %14s  %14s  %s%s\n", static_cast<int>(width), r.name.c_str(),
+                      r.solved ? "route" : "no path",
+                      r.solved ? text::number(units.time ? hours : r.travelTime, 6).c_str() : "-",
+                      r.solved ? text::number(units.length ? km : r.pathLength, 6).c_str() : "-", arrival.c_str(),
+                      r.solved ? "" : ("  (" + r.reason + ")").c_str());
+        out << line;
+    }
+}
+}  // namespace ompl_glider
