@@ -167,13 +167,22 @@ netcdf_detail::ForecastPiece netcdf_detail::readForecastPiece(const std::string 
     g.ny = h.yIdx.size();
     g.depth = z.values;
     g.time = t.values;
+    NetCdfCurrentOptions unpack = opt;
+    unpack.zeroVelocityLand = false;  // decided after the mask, where the file says nothing else of land
     if (l.staggered)
-        readStaggeredVelocities(f, l, h, z, t, vel, opt, g, out);
+        readStaggeredVelocities(f, l, h, z, t, vel, unpack, g, out);
     else
-        readVelocities(f, l, plan, t, vel, opt, g, out);
+        readVelocities(f, l, plan, t, vel, unpack, g, out);
     rotateGridToEastNorth(f, l, h, g, out);
     p.fillWater = g.water;
     applyLandMask(f, l, h, z, t, opt, g, out);
+    if (opt.zeroVelocityLand && out.fillLandNodes == 0 && out.maskLandNodes == 0)
+    {
+        const Packing pu = packingOf(f, l.uVar), pv = packingOf(f, l.vVar);
+        out.zeroLandNodes = zeroVelocityLand(
+            g, t, pu.scale != 1.0 || pu.offset != 0.0 || pv.scale != 1.0 || pv.offset != 0.0);
+        out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
+    }
     if (z.sigma)
     {
         const double deepest = opt.depthAverage ? opt.depthAverage->second : opt.maxDepth;

@@ -1,6 +1,5 @@
 #include "ompl_glider/mission/MissionProblem.h"
 #include "../io/NumberText.h"
-
 #include "ompl_glider/current/EnsembleField.h"
 #include "ompl_glider/current/ShiftedTimeField.h"
 
@@ -12,7 +11,6 @@
 #include <tuple>
 #include <utility>
 #include <vector>
-
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
@@ -614,7 +612,10 @@ std::string MissionProblem::isoTime(double t) const
 {
     if (!spec_.epoch || !std::isfinite(t))
         return "";
-    const double s = *spec_.epoch + t * spec_.timeUnitSeconds;
+    const double s = (spec_.fileCalendar ? spec_.fileCalendar->originSeconds : *spec_.epoch) +
+                     t * spec_.timeUnitSeconds;
+    if (spec_.fileCalendar)  // a dated forecast's own calendar: a climatology's year 0, a noleap or 360_day year
+        return formatCalendarTime(s, spec_.fileCalendar->calendar);
     if (!isoYearInRange(s))
         throw Error(spec_.place("epoch") + ": t = " + text::number(t) + " falls outside the years 0000-9999, which "
                     "ISO 8601 dates are written in (choose an earlier epoch or a shorter horizon)");

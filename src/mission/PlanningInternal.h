@@ -8,6 +8,7 @@
 ///  - PlannerSetup.cpp   the planner of the mission (makePlanner()), its parameters, the checked problem of one
 ///                       departure, the lattice size check, stintSettings()
 ///  - NoPathReason.cpp   why a search ended without a path (noPathReason(), horizonNote())
+///  - NoPathDiagnosis.cpp what blocks the route, for the pilot (diagnoseNoPath())
 ///  - Ensembles.cpp      robust plans over the members of an ensemble (planRobust()), ensembleObjective(),
 ///                       retimePath()
 ///  - GoalWindow.cpp     goals in time: the arrival moved into the goal window (timeArrival()), holdTimeOf()
@@ -93,6 +94,13 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
 
 /// What bounds the arrival of an exhausted search: the end of the forecast or the planning horizon.
 std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp);
+
+// NoPathDiagnosis.cpp
+
+/// A final plan without a path (status kNoPathStatus, no bad input): its reason led by what blocks the route and
+/// the advice that helps (start or goal enclosed, the forecast too short, the current faster than V), the planner's
+/// generic advice dropped; unchanged when none of these is found.
+void diagnoseNoPath(const MissionProblem &problem, double departure, PlannedPath &plan);
 
 // Planning.cpp
 

@@ -54,7 +54,8 @@ struct NetCdfCurrentOptions
     // --- land (besides fill values of u/v, which are always land) ---
     std::string maskName;  ///< land/sea mask variable; empty: found automatically (loadNetCdfCurrents()); "none": none
     bool zeroVelocityLand{true};  ///< a node whose u and v are exactly 0 in every record of the trip is land (models
-                                    ///< such as POP store land velocity points as zeros, not fill values)
+                                    ///< such as POP store land velocity points as zeros, not fill values), where
+                                    ///< neither fill values nor a mask mark land in the region
 
     // --- model ---
     GriddedFieldOptions field;  ///< schemes (xy bilinear, depth linear, time linear), BeyondForecast, name
@@ -155,7 +156,8 @@ struct NetCdfCurrents
 /// mask variable (below), in any of the trip's records when the mask has the time axis of u; u = v = 0 exactly in
 /// all of the trip's records (NetCdfCurrentOptions::zeroVelocityLand, on by default; not applied when every
 /// water node would be zero, a still field, nor to packed data seen in a single record, where rounding can zero a
-/// calm node). The trip's records are
+/// calm node, nor where fill values or a mask variable mark land in the region: the file says where its land is,
+/// and zeros are calm water). The trip's records are
 /// those from the last at or before the departure to the first at or after departure + horizon (not the stencil
 /// margin loaded around them), so a seasonal mask or missing winter data close what is closed during the trip,
 /// not all year.
