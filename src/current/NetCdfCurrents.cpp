@@ -40,14 +40,14 @@ LonLat NetCdfCurrents::toGeographic(Point2 p) const
 {
     if (projection)
         return projection->inverse(p.x, p.y);
-    return {p.x, p.y};
+    return {p.x / xyMetres, p.y / xyMetres};  // the file's own x/y units
 }
 
 Point2 NetCdfCurrents::toLocal(LonLat g) const
 {
     if (projection)
         return projection->forward(g.lon, g.lat);
-    return {g.lon, g.lat};
+    return {g.lon * xyMetres, g.lat * xyMetres};
 }
 
 bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &opt)
@@ -210,6 +210,8 @@ NetCdfCurrents netcdf_detail::buildForecast(ForecastPiece &p, const NetCdfCurren
     if (opt.depthAverage)
         averageOverDepth(opt.depthAverage->first, opt.depthAverage->second, g);
     out.projection = setNodeCoordinates(f, l, h, region, opt, g);
+    if (!l.geographic && l.dimX >= 0)
+        out.xyMetres = netcdf_detail::axisConversion(f, l.coordVar[std::size_t(l.dimX)]).factor;
     out.lonMin = l.geographic ? normalizeLongitude(h.lonLo) : h.lonLo;
     out.lonMax = out.lonMin + (h.lonHi - h.lonLo);
     out.latMin = h.latLo;

@@ -173,7 +173,7 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     if (failed.solved || !failed.badInput.empty() || !o.planner.empty() || !problem.getMembers().empty())
         return failed;
     const PlannerEntry &asked = plannerEntry(failed.planner);
-    if (!asked.lattice())
+    if (!asked.lattice() || !enclosure(problem, departure).empty())  // no heading reaches water cut off
         return failed;
     const std::size_t cut = failed.reason.find("; the path must arrive");
     std::string lattice = failed.reason.substr(0, cut);

@@ -250,6 +250,7 @@ void MissionProblem::buildField()
     field_ = nc.field;
     projection_ = nc.projection;
     projectionScale_ = 1.0;
+    xyScale_ = nc.projection ? 1.0 : nc.xyMetres;
     forecastFiles_ = nc.files;
     forecastNotes_ = ompl_glider::forecastNotes(nc);
     std::string u = nc.uVariable;  // a wind (uwnd, u10, eastward_wind...) is called so on the map
@@ -380,24 +381,15 @@ MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
     return p;
 }
 
-Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) const
-{
-    if (!p.geographic)
-        return p.xy;
-    if (!projection_)
-        throw Error(where(spec_) + what + ": lon/lat given but the forecast has no geographic coordinates");
-    return toLocal(p.lonLat);
-}
-
 void MissionProblem::buildBox()
 {
     const MissionSpec &m = spec_;
     if (m.region.set && !m.region.geographic)
     {
-        box_.xMin = m.region.xy.xMin;
-        box_.xMax = m.region.xy.xMax;
-        box_.yMin = m.region.xy.yMin;
-        box_.yMax = m.region.xy.yMax;
+        box_.xMin = m.region.xy.xMin * xyScale_;  // a Cartesian forecast's region in its own x/y units
+        box_.xMax = m.region.xy.xMax * xyScale_;
+        box_.yMin = m.region.xy.yMin * xyScale_;
+        box_.yMax = m.region.xy.yMax * xyScale_;
     }
     else if (m.region.set)
     {

@@ -139,7 +139,8 @@ std::string durationOf(const MissionSpec &m, double t)
     return m.physicalUnits().time ? text::durationText(t * m.timeUnitSeconds) : text::number(t, 6) + " time units";
 }
 
-/// Start or goal cut off from the other's water: which, and by what; empty when they are connected.
+}  // namespace
+
 std::string enclosure(const MissionProblem &problem, double t0)
 {
     const MissionSpec &m = problem.getSpec();
@@ -184,6 +185,8 @@ std::string enclosure(const MissionProblem &problem, double t0)
     return what;
 }
 
+namespace
+{
 /// The generic advice of a planner's reason, removed once the diagnosis says what helps.
 std::string withoutGenericAdvice(std::string reason)
 {
@@ -198,7 +201,8 @@ std::string withoutGenericAdvice(std::string reason)
 
 void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
 {
-    if (r.solved || !r.badInput.empty() || r.status != kNoPathStatus)
+    // a search stopped by its time limit is not diagnosed: more time is the advice
+    if (r.solved || !r.badInput.empty() || r.reason.find("time limit") != std::string::npos)
         return;
     const MissionSpec &m = problem.getSpec();
     const GliderProblem gp = problem.gliderProblem(tDep, r.speed > 0.0 ? r.speed : m.vehicle.speed);

@@ -97,10 +97,13 @@ std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp);
 
 // NoPathDiagnosis.cpp
 
-/// A final plan without a path (status kNoPathStatus, no bad input): its reason led by what blocks the route and
+/// A final plan without a path (no bad input, not stopped by a time limit): its reason led by what blocks the route and
 /// the advice that helps (start or goal enclosed, the forecast too short, the current faster than V), the planner's
 /// generic advice dropped; unchanged when none of these is found.
 void diagnoseNoPath(const MissionProblem &problem, double departure, PlannedPath &plan);
+/// Start or goal cut off from the other's water at the departure (a flood fill over the box at half the model's
+/// cell, by the field's land, then also by the static forbidden regions): which, and by what; empty when connected.
+std::string enclosure(const MissionProblem &problem, double departure);
 
 // Planning.cpp
 

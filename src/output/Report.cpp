@@ -157,7 +157,9 @@ void printReport(std::ostream &out, const MissionResult &r)
             out << "\n";
         }
         out << "Straight line:      "
-            << (std::isfinite(p.straightLineTime) ? format("%.4f", p.straightLineTime) : std::string("impassable"))
+            << (!std::isfinite(p.straightLineTime) ? std::string("impassable")
+                : m.physicalUnits().time           ? text::durationText(p.straightLineTime * m.timeUnitSeconds)
+                                                   : format("%.4f", p.straightLineTime))
             << "\n";
         out << format("Waypoints:          raw %zu, smoothed %zu%s, refined %zu%s\n", p.raw.size(), p.smoothed.size(),
                       m.planner.smoothing ? "" : " (off)", p.path.size(), m.planner.refinement ? "" : " (off)");

@@ -394,7 +394,7 @@ std::string kmlCoordinates(const std::vector<LonLat> &line)
     char buf[64];
     for (const LonLat &p : line)
     {
-        std::snprintf(buf, sizeof buf, "%s%.9g,%.9g,0", s.empty() ? "" : " ", p.lon, p.lat);
+        std::snprintf(buf, sizeof buf, "%s%.12g,%.12g,0", s.empty() ? "" : " ", p.lon, p.lat);
         s += buf;
     }
     return s;

@@ -93,6 +93,7 @@ struct NetCdfCurrents
 {
     std::shared_ptr<GriddedCurrentField> field;       ///< ready to plan on
     std::shared_ptr<const LocalProjection> projection;  ///< null in Cartesian mode
+    double xyMetres{1.0};  ///< Cartesian mode: metres per unit of the file's x/y axes (1000 for km)
     bool geographic{false};          ///< true when x/y come from longitude/latitude
     bool dated{false};               ///< true when the time axis has CF units "<unit> since <date>"
     bool steady{false};              ///< one time: no time dimension, a single record, or steadyRecord; the field
