@@ -188,12 +188,12 @@ std::string enclosure(const MissionProblem &problem, double t0)
 namespace
 {
 /// The generic advice of a planner's reason, removed once the diagnosis says what helps.
-std::string withoutGenericAdvice(std::string reason)
+std::string withoutGenericAdvice(std::string reason, bool dropHorizon)
 {
     const std::string lattice = "; a finer grid, more sectors or a higher speed may find one";
     if (const std::size_t at = reason.find(lattice); at != std::string::npos)
         reason.erase(at, lattice.size());
-    if (const std::size_t at = reason.find("; the path must arrive"); at != std::string::npos)
+    if (const std::size_t at = reason.find("; the path must arrive"); dropHorizon && at != std::string::npos)
         reason.erase(at);
     return reason;
 }
@@ -234,7 +234,8 @@ void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
         findings.push_back(f + ": plan on its last field past its end (--beyond hold, current.horizon: hold_last), "
                                "depart earlier, or use a forecast that runs longer");
     }
-    if (enclosed.empty() && cMax > speed)
+    // the current is named where time is not what is short: the glider would cross still water twice over
+    if (enclosed.empty() && cMax > speed && gp.horizon >= 2.0 * distance / speed)
     {
         const double ms = m.metresPerUnit() / m.timeUnitSeconds, kn = 3600.0 / 1852.0;
         char buf[320];
@@ -253,7 +254,7 @@ void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
     std::string why;
     for (const std::string &f : findings)
         why += (why.empty() ? "" : "; ") + f;
-    r.reason = why + " (" + withoutGenericAdvice(r.reason) + ")";
+    r.reason = why + " (" + withoutGenericAdvice(r.reason, !enclosed.empty() || forecastBound) + ")";
 }
 }  // namespace planning_detail
 }  // namespace ompl_glider
