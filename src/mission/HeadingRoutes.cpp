@@ -173,7 +173,10 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     if (failed.solved || !failed.badInput.empty() || !o.planner.empty() || !problem.getMembers().empty())
         return failed;
     const PlannerEntry &asked = plannerEntry(failed.planner);
-    if (!asked.lattice() || !enclosure(problem, departure).empty())  // no heading reaches water cut off
+    if (!asked.lattice())
+        return failed;
+    bool byModelLand = false;  // no heading reaches water the forecast's land cuts off
+    if (!enclosure(problem, departure, &byModelLand).empty() && byModelLand)
         return failed;
     const std::size_t cut = failed.reason.find("; the path must arrive");
     std::string lattice = failed.reason.substr(0, cut);

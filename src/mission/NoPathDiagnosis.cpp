@@ -141,8 +141,10 @@ std::string durationOf(const MissionSpec &m, double t)
 
 }  // namespace
 
-std::string enclosure(const MissionProblem &problem, double t0)
+std::string enclosure(const MissionProblem &problem, double t0, bool *byModelLand)
 {
+    if (byModelLand)
+        *byModelLand = false;
     const MissionSpec &m = problem.getSpec();
     const Region &box = problem.getBox();
     const CurrentField &field = *problem.getField();
@@ -160,6 +162,11 @@ std::string enclosure(const MissionProblem &problem, double t0)
     const Point2 s = problem.getStart(), g = problem.getGoal();
     // the forecast's own land first: a passage closed at the model's resolution
     const Connection water = connection(waterGraph(problem, nullptr, z, t0, h), field, nullptr, z, t0, s, g);
+    // sampled coarser than half a model cell (a huge region), a narrow passage may be missed: no verdict then
+    if (!water.connected && gridded && h > 0.5 * gridded->minCellSize() * (1.0 + 1e-9))
+        return "";
+    if (byModelLand)
+        *byModelLand = !water.connected;
     Connection c = water;
     if (water.connected && env)
         c = connection(waterGraph(problem, env, z, t0, h), field, env, z, t0, s, g);

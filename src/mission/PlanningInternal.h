@@ -102,8 +102,10 @@ std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp);
 /// generic advice dropped; unchanged when none of these is found.
 void diagnoseNoPath(const MissionProblem &problem, double departure, PlannedPath &plan);
 /// Start or goal cut off from the other's water at the departure (a flood fill over the box at half the model's
-/// cell, by the field's land, then also by the static forbidden regions): which, and by what; empty when connected.
-std::string enclosure(const MissionProblem &problem, double departure);
+/// cell, by the field's land, then also by the static forbidden regions): which, and by what; empty when connected
+/// or undecided. @p byModelLand (optional) is set when the field's own land closes every way (then no heading can
+/// reach the goal either; the forbidden regions' verdict is sampled, a gap narrower than a sample may be missed).
+std::string enclosure(const MissionProblem &problem, double departure, bool *byModelLand = nullptr);
 
 // Planning.cpp
 
