@@ -294,6 +294,13 @@ void applyOutputFlags(const Flags &f, MissionSpec &m)
             throw UsageError{"--isochrone-interval: must be > 0, got '" + f.isochroneInterval + "'"};
         m.marks["outputs.isochrone_interval"] = SourceMark{"--isochrone-interval", 0};
     }
+    if (f.gotoTurn)
+    {
+        if (!(*f.gotoTurn >= 0.0 && *f.gotoTurn <= 180.0))
+            throw UsageError{"--goto-turn: expected degrees in 0..180 (0: every waypoint), got " +
+                             std::to_string(*f.gotoTurn)};
+        m.outputs.gotoTurnDeg = *f.gotoTurn;
+    }
     if ((f.isochrones || !f.isochroneInterval.empty()) &&
         !m.outputs.wants(OutputFormatId::Isochrones))
         m.outputs.files.push_back(OutputFormatId::Isochrones);
@@ -438,6 +445,10 @@ void defineFlags(CLI::App &app, Flags &f)
     app.add_flag("--isochrones", f.isochrones,
                  "also write isochrones.geojson: where the glider can be by times after the departure (level-set "
                  "reachable set), drawn on the map too")
+        ->group(io);
+    app.add_option("--goto-turn", f.gotoTurn,
+                   "the goto list names a waypoint where the course turns by more than this many degrees, or where "
+                   "leaving it out strays from the route or crosses land (default 10; 0: every waypoint)")
         ->group(io);
     app.add_option("--isochrone-interval", f.isochroneInterval,
                    "time between isochrones: a number in the mission's time unit, or e.g. '12 h' (default: eight up "

@@ -32,6 +32,7 @@ struct Flags
     // reachable-set contours (issue 12): --isochrones, --isochrone-interval
     bool isochrones{false};
     std::string isochroneInterval;
+    std::optional<double> gotoTurn;  // --goto-turn: the goto list's turn threshold in degrees
     // execution in another ocean (any of these enables it)
     std::string truth, surfacingInterval, strategies;
     std::optional<double> radius;

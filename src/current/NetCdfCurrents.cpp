@@ -40,14 +40,14 @@ LonLat NetCdfCurrents::toGeographic(Point2 p) const
 {
     if (projection)
         return projection->inverse(p.x, p.y);
-    return {p.x, p.y};
+    return {p.x / xyMetres, p.y / xyMetres};  // the file's own x/y units
 }
 
 Point2 NetCdfCurrents::toLocal(LonLat g) const
 {
     if (projection)
         return projection->forward(g.lon, g.lat);
-    return {g.lon, g.lat};
+    return {g.lon * xyMetres, g.lat * xyMetres};
 }
 
 bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &opt)
@@ -169,13 +169,22 @@ netcdf_detail::ForecastPiece netcdf_detail::readForecastPiece(const std::string 
     g.ny = h.yIdx.size();
     g.depth = z.values;
     g.time = t.values;
+    NetCdfCurrentOptions unpack = opt;
+    unpack.zeroVelocityLand = false;  // decided after the mask, where the file says nothing else of land
     if (l.staggered)
-        readStaggeredVelocities(f, l, h, z, t, vel, opt, g, out);
+        readStaggeredVelocities(f, l, h, z, t, vel, unpack, g, out);
     else
-        readVelocities(f, l, plan, t, vel, opt, g, out);
+        readVelocities(f, l, plan, t, vel, unpack, g, out);
     rotateGridToEastNorth(f, l, h, g, out);
     p.fillWater = g.water;
     applyLandMask(f, l, h, z, t, opt, g, out);
+    if (opt.zeroVelocityLand && out.fillLandNodes == 0 && out.maskLandNodes == 0)
+    {
+        const Packing pu = packingOf(f, l.uVar), pv = packingOf(f, l.vVar);
+        out.zeroLandNodes = zeroVelocityLand(
+            g, t, pu.scale != 1.0 || pu.offset != 0.0 || pv.scale != 1.0 || pv.offset != 0.0);
+        out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
+    }
     if (z.sigma)
     {
         const double deepest = opt.depthAverage ? opt.depthAverage->second : opt.maxDepth;
@@ -203,6 +212,8 @@ NetCdfCurrents netcdf_detail::buildForecast(ForecastPiece &p, const NetCdfCurren
     if (opt.depthAverage)
         averageOverDepth(opt.depthAverage->first, opt.depthAverage->second, g);
     out.projection = setNodeCoordinates(f, l, h, region, opt, g);
+    if (!l.geographic && l.dimX >= 0)
+        out.xyMetres = netcdf_detail::axisConversion(f, l.coordVar[std::size_t(l.dimX)]).factor;
     out.lonMin = l.geographic ? normalizeLongitude(h.lonLo) : h.lonLo;
     out.lonMax = out.lonMin + (h.lonHi - h.lonLo);
     out.latMin = h.latLo;

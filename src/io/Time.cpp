@@ -267,7 +267,7 @@ DateTime parseDateTime(const std::string &text)
 double secondsSinceCalendarEpoch(const DateTime &d, Calendar cal)
 {
     if (d.month < 1 || d.month > 12 || d.day < 1 || d.day > daysInMonth(d.year, d.month, cal))
-        throw Error("date " + formatDateTime(d) + " does not exist in this calendar");
+        throw Error("date " + formatDateTime(d) + " does not exist in the " + calendarName(cal) + " calendar");
     if (cal == Calendar::Standard && d.year == 1582 && d.month == 10 && d.day > 4 && d.day < 15)
         throw Error("date " + formatDateTime(d) + " does not exist in the standard (mixed Julian/Gregorian) calendar");
     return static_cast<double>(dayNumber(d.year, d.month, d.day, cal)) * 86400.0 + d.hour * 3600.0 + d.minute * 60.0 +
@@ -327,6 +327,15 @@ std::string formatDateTime(const DateTime &d)
         std::snprintf(buf, sizeof buf, "%04d-%02d-%02dT%02d:%02d:%06.3fZ", d.year, d.month, d.day, d.hour, d.minute,
                       d.second);
     return buf;
+}
+
+std::string formatCalendarTime(double seconds, Calendar cal)
+{
+    const DateTime d = dateFromCalendarEpoch(std::round(seconds), cal);
+    if (d.year < 0 || d.year > 9999)
+        throw Error("the date " + formatDateTime(d) + " (" + calendarName(cal) +
+                    " calendar) falls outside the years 0000-9999, which ISO 8601 dates are written in");
+    return formatDateTime(d);
 }
 
 CfTimeUnits parseCfTimeUnits(const std::string &units, const std::string &calendar)

@@ -117,10 +117,22 @@ std::string planning_detail::frozenFieldNote(const MissionProblem &problem, cons
            (m.physicalUnits().time ? text::durationText(held * m.timeUnitSeconds) : text::number(held)) + " of the route";
 }
 
+Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) const
+{
+    if (!p.geographic)
+        return {p.xy.x * xyScale_, p.xy.y * xyScale_};
+    if (!projection_)
+        throw Error(spec_.place(what) + ": lon/lat given but the forecast has no geographic coordinates");
+    return toLocal(p.lonLat);
+}
+
 #if OMPL_GLIDER_WITH_NETCDF
 std::vector<std::string> forecastNotes(const NetCdfCurrents &nc)
 {
     std::vector<std::string> notes;
+    if (!nc.projection && nc.xyMetres != 1.0)
+        notes.push_back("x/y (start, goal, region, polygons) are read in the file's axis units (" +
+                        text::number(nc.xyMetres) + " m each); the planning frame and the outputs' x/y are metres");
     if (nc.gridAngle.rfind("variable ", 0) == 0)
         notes.push_back("grid angle from the " + nc.gridAngle + " (velocities along the grid turned to east/north)");
     else if (!nc.gridAngle.empty())

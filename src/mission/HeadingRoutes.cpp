@@ -175,6 +175,9 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     const PlannerEntry &asked = plannerEntry(failed.planner);
     if (!asked.lattice())
         return failed;
+    bool byModelLand = false;  // no heading reaches water the forecast's land cuts off
+    if (!enclosure(problem, departure, &byModelLand).empty() && byModelLand)
+        return failed;
     const std::size_t cut = failed.reason.find("; the path must arrive");
     std::string lattice = failed.reason.substr(0, cut);
     // the lattice's advice (a finer grid, ...) is moot once another planner has been asked

@@ -1,6 +1,5 @@
 #include "ompl_glider/mission/MissionProblem.h"
 #include "../io/NumberText.h"
-
 #include "ompl_glider/current/EnsembleField.h"
 #include "ompl_glider/current/ShiftedTimeField.h"
 
@@ -12,7 +11,6 @@
 #include <tuple>
 #include <utility>
 #include <vector>
-
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
@@ -252,6 +250,7 @@ void MissionProblem::buildField()
     field_ = nc.field;
     projection_ = nc.projection;
     projectionScale_ = 1.0;
+    xyScale_ = nc.projection ? 1.0 : nc.xyMetres;
     forecastFiles_ = nc.files;
     forecastNotes_ = ompl_glider::forecastNotes(nc);
     std::string u = nc.uVariable;  // a wind (uwnd, u10, eastward_wind...) is called so on the map
@@ -382,24 +381,15 @@ MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
     return p;
 }
 
-Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) const
-{
-    if (!p.geographic)
-        return p.xy;
-    if (!projection_)
-        throw Error(where(spec_) + what + ": lon/lat given but the forecast has no geographic coordinates");
-    return toLocal(p.lonLat);
-}
-
 void MissionProblem::buildBox()
 {
     const MissionSpec &m = spec_;
     if (m.region.set && !m.region.geographic)
     {
-        box_.xMin = m.region.xy.xMin;
-        box_.xMax = m.region.xy.xMax;
-        box_.yMin = m.region.xy.yMin;
-        box_.yMax = m.region.xy.yMax;
+        box_.xMin = m.region.xy.xMin * xyScale_;  // a Cartesian forecast's region in its own x/y units
+        box_.xMax = m.region.xy.xMax * xyScale_;
+        box_.yMin = m.region.xy.yMin * xyScale_;
+        box_.yMax = m.region.xy.yMax * xyScale_;
     }
     else if (m.region.set)
     {
@@ -615,7 +605,10 @@ std::string MissionProblem::isoTime(double t) const
 {
     if (!spec_.epoch || !std::isfinite(t))
         return "";
-    const double s = *spec_.epoch + t * spec_.timeUnitSeconds;
+    const double s = (spec_.fileCalendar ? spec_.fileCalendar->originSeconds : *spec_.epoch) +
+                     t * spec_.timeUnitSeconds;
+    if (spec_.fileCalendar)  // a dated forecast's own calendar: a climatology's year 0, a noleap or 360_day year
+        return formatCalendarTime(s, spec_.fileCalendar->calendar);
     if (!isoYearInRange(s))
         throw Error(spec_.place("epoch") + ": t = " + text::number(t) + " falls outside the years 0000-9999, which "
                     "ISO 8601 dates are written in (choose an earlier epoch or a shorter horizon)");

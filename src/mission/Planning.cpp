@@ -303,10 +303,13 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
         result.plan.planner = plannerEntry(m.planner.name).name;
         result.plan.status = kNoPathStatus;
         result.plan.reason = "no departure in the window has a path within the forecast";
+        result.departureIso = problem.isoTime(result.plan.departure);
         result.wallSeconds = secondsSince(start);
         return result;
     }
     result.plan = planRoute(problem, tDep);
+    result.departureIso = problem.isoTime(result.plan.departure);
+    diagnoseNoPath(problem, tDep, result.plan);
     if (result.plan.solved)
     {
         PilotWaypoints w = missionWaypoints(problem, result.plan);

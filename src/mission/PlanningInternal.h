@@ -8,6 +8,7 @@
 ///  - PlannerSetup.cpp   the planner of the mission (makePlanner()), its parameters, the checked problem of one
 ///                       departure, the lattice size check, stintSettings()
 ///  - NoPathReason.cpp   why a search ended without a path (noPathReason(), horizonNote())
+///  - NoPathDiagnosis.cpp what blocks the route, for the pilot (diagnoseNoPath())
 ///  - Ensembles.cpp      robust plans over the members of an ensemble (planRobust()), ensembleObjective(),
 ///                       retimePath()
 ///  - GoalWindow.cpp     goals in time: the arrival moved into the goal window (timeArrival()), holdTimeOf()
@@ -93,6 +94,18 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
 
 /// What bounds the arrival of an exhausted search: the end of the forecast or the planning horizon.
 std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp);
+
+// NoPathDiagnosis.cpp
+
+/// A final plan without a path (no bad input, not stopped by a time limit): its reason led by what blocks the route and
+/// the advice that helps (start or goal enclosed, the forecast too short, the current faster than V), the planner's
+/// generic advice dropped; unchanged when none of these is found.
+void diagnoseNoPath(const MissionProblem &problem, double departure, PlannedPath &plan);
+/// Start or goal cut off from the other's water at the departure (a flood fill over the box at half the model's
+/// cell, by the field's land, then also by the static forbidden regions): which, and by what; empty when connected
+/// or undecided. @p byModelLand (optional) is set when the field's own land closes every way (then no heading can
+/// reach the goal either; the forbidden regions' verdict is sampled, a gap narrower than a sample may be missed).
+std::string enclosure(const MissionProblem &problem, double departure, bool *byModelLand = nullptr);
 
 // Planning.cpp
 

@@ -15,6 +15,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/HeadingRoutes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PlannerSetup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/NoPathReason.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/NoPathDiagnosis.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Ensembles.cpp
   ${CMAKE_CURRENT_LIST_DIR}/GoalWindow.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Evaluations.cpp

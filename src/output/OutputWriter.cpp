@@ -44,7 +44,11 @@ std::vector<OutputFile> formatFiles(OutputFormatId format, const MissionResult &
     if (format == OutputFormatId::GeoJson)
     {
         const MissionProblem *prob = &problem;  // projects a heading route's track
-        return {{"path.geojson", [res, prob](const std::string &p) { writeText(p, routeGeoJson(*res, prob)); }}};
+        std::vector<OutputFile> files{
+            {"path.geojson", [res, prob](const std::string &p) { writeText(p, routeGeoJson(*res, prob)); }}};
+        if (problem.isGeographic())  // the same route for Google Earth
+            files.push_back({"route.kml", [res, prob](const std::string &p) { writeText(p, routeKml(*res, prob)); }});
+        return files;
     }
     if (format == OutputFormatId::Isochrones)
     {
@@ -63,8 +67,9 @@ std::vector<OutputFile> formatFiles(OutputFormatId format, const MissionResult &
     {
         if (!problem.isGeographic())
             return {};
+        const MissionProblem *prob = &problem;  // checks the thinned list's legs
         return {{gotoFileName(r.spec.outputs.gotoNumber),
-                 [res](const std::string &p) { writeGotoFile(p, gotoList(*res)); }}};
+                 [res, prob](const std::string &p) { writeGotoFile(p, gotoList(*res, prob)); }}};
     }
     if (format == OutputFormatId::Execution)
     {

@@ -25,6 +25,12 @@ std::string format(const char *fmt, A... args)
     return buf;
 }
 
+/// A length for people: km with physical length units ("109.479 km"), else the field's number ("%.4f").
+std::string lengthText(const MissionSpec &m, double d)
+{
+    return m.physicalUnits().length ? format("%.3f km", d * m.metresPerUnit() / 1000.0) : format("%.4f", d);
+}
+
 void printWaypoints(std::ostream &out, const MissionResult &r)
 {
     // a heading route: the heading held from each waypoint and for how long
@@ -92,7 +98,8 @@ void printReport(std::ostream &out, const MissionResult &r)
     out << "Planner:            " << p.planner;
     const PlannerEntry *entry = findPlanner(p.planner.empty() ? m.planner.name : p.planner);
     if (m.planner.gridSize > 0 && entry && entry->lattice())  // grid and sectors are the lattice's
-        out << format(" (grid %g, %d sectors)", m.planner.gridSize, m.planner.sectors);
+        out << " (grid " << (m.physicalUnits().length ? lengthText(m, m.planner.gridSize) : format("%g", m.planner.gridSize))
+            << format(", %d sectors)", m.planner.sectors);
     out << ", V = " << num(p.speed) << "\n";
     if (r.departureSearch)
     {
@@ -101,7 +108,7 @@ void printReport(std::ostream &out, const MissionResult &r)
                       m.departure.begin, d.windowEnd, d.fineEvaluations, d.coarseEvaluations, d.wallSeconds,
                       d.found ? num(d.departure).c_str() : "none");
     }
-    const std::string iso = r.waypoints.empty() ? "" : r.waypoints.front().iso;
+    const std::string iso = r.waypoints.empty() ? r.departureIso : r.waypoints.front().iso;
     out << "Departure:          " << num(p.departure) << (iso.empty() ? "" : " (" + iso + ")") << "\n";
     out << "Status:             " << p.status << (p.solved ? "" : "\nReason:             " + p.reason) << "\n";
     printRouteModel(out, p);
@@ -132,7 +139,8 @@ void printReport(std::ostream &out, const MissionResult &r)
         if (r.diveProfiles)
             out << "With dive profiles: " << (std::isfinite(r.diveTravelTime) ? num(r.diveTravelTime) : "impassable")
                 << "\n";
-        out << format("Path length:        %.4f (straight %.4f)\n", p.pathLength, p.straightLineLength);
+        out << "Path length:        " << lengthText(m, p.pathLength) << " (straight " << lengthText(m, p.straightLineLength)
+            << ")\n";
         if (std::isfinite(r.closestLand.distance))
         {
             const double mpu = m.metresPerUnit();
@@ -149,7 +157,9 @@ void printReport(std::ostream &out, const MissionResult &r)
             out << "\n";
         }
         out << "Straight line:      "
-            << (std::isfinite(p.straightLineTime) ? format("%.4f", p.straightLineTime) : std::string("impassable"))
+            << (!std::isfinite(p.straightLineTime) ? std::string("impassable")
+                : m.physicalUnits().time           ? text::durationText(p.straightLineTime * m.timeUnitSeconds)
+                                                   : format("%.4f", p.straightLineTime))
             << "\n";
         out << format("Waypoints:          raw %zu, smoothed %zu%s, refined %zu%s\n", p.raw.size(), p.smoothed.size(),
                       m.planner.smoothing ? "" : " (off)", p.path.size(), m.planner.refinement ? "" : " (off)");

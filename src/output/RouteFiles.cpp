@@ -270,15 +270,82 @@ std::string routeGeoJson(const MissionResult &r, const MissionProblem *problem)
     return doc.dump(1) + "\n";
 }
 
-GotoList gotoList(const MissionResult &r)
+namespace
+{
+/// The course from @p a to @p b in degrees clockwise from the planning frame's y axis.
+double courseDeg(Point2 a, Point2 b)
+{
+    return std::atan2(b.x - a.x, b.y - a.y) * 180.0 / M_PI;
+}
+
+/// Distance from @p p to the segment @p a - @p b.
+double offsetFrom(Point2 p, Point2 a, Point2 b)
+{
+    const double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+    const double s = l2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+    return std::hypot(p.x - a.x - s * dx, p.y - a.y - s * dy);
+}
+
+/// The leg from waypoint @p a to @p b keeps to water and out of the forbidden regions (nothing to check without
+/// the problem).
+bool legAllowed(const MissionResult &r, const MissionProblem *problem, std::size_t a, std::size_t b)
+{
+    if (!problem)
+        return true;
+    const MissionWaypoint &p = r.waypoints[a], &q = r.waypoints[b];
+    if (!problem->getField()->segmentInWater(p.position.x, p.position.y, q.position.x, q.position.y,
+                                             r.spec.travel.depth))
+        return false;
+    const auto &env = problem->getEnvironment();
+    return !env || env->legFree(p.position.x, p.position.y, p.time, q.position.x, q.position.y, q.time);
+}
+}  // namespace
+
+std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const MissionProblem *problem)
+{
+    const std::size_t n = r.waypoints.size();
+    std::vector<std::size_t> kept;
+    if (n == 0)
+        return kept;
+    kept.push_back(0);
+    const double turn = r.spec.outputs.gotoTurnDeg;
+    const double tolerance = r.spec.outputs.gotoMaxOffset / r.spec.metresPerUnit();
+    auto at = [&](std::size_t i) { return r.waypoints[i].position; };
+    auto same = [&](std::size_t i, std::size_t j) { return at(i).x == at(j).x && at(i).y == at(j).y; };
+    for (std::size_t i = 1; i + 1 < n; ++i)
+    {
+        const std::size_t k = kept.back();
+        if (r.plan.headingRoute() || !(turn > 0.0))  // every segment end of held headings, or every waypoint
+        {
+            kept.push_back(i);
+            continue;
+        }
+        if (same(i, k) || same(i, i + 1))  // a hold: the same position again
+            continue;
+        bool drop = std::abs(std::remainder(courseDeg(at(i), at(i + 1)) - courseDeg(at(k), at(i)), 360.0)) <= turn;
+        for (std::size_t j = k + 1; drop && j <= i; ++j)
+            drop = offsetFrom(at(j), at(k), at(i + 1)) <= tolerance;
+        if (!(drop && legAllowed(r, problem, k, i + 1)))
+            kept.push_back(i);
+    }
+    if (n > 1)
+        kept.push_back(n - 1);
+    return kept;
+}
+
+GotoList gotoList(const MissionResult &r, const MissionProblem *problem)
 {
     if (!geographic(r))
         throw Error(r.spec.file + ": a goto list needs longitudes and latitudes (give a 'projection')");
     GotoList g;
     g.number = r.spec.outputs.gotoNumber;
     g.comment = r.spec.name;
-    for (std::size_t i = r.spec.outputs.gotoIncludeStart ? 0 : 1; i < r.waypoints.size(); ++i)
+    g.listWhenWptDist = r.spec.outputs.gotoWptDist;
+    const std::vector<std::size_t> listed = gotoWaypointIndices(r, problem);
+    for (std::size_t i : listed)
     {
+        if (i == 0 && !r.spec.outputs.gotoIncludeStart)
+            continue;
         g.waypoints.push_back({r.waypoints[i].lonLat.lon, r.waypoints[i].lonLat.lat});
         if (r.plan.headingRoute())
         {
@@ -300,6 +367,115 @@ GotoList gotoList(const MissionResult &r)
         }
     }
     return g;
+}
+
+namespace
+{
+/// Text for XML character data and attributes.
+std::string xmlEscaped(const std::string &t)
+{
+    std::string out;
+    for (char c : t)
+        switch (c)
+        {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    return out;
+}
+
+/// A KML coordinates list "lon,lat,0 lon,lat,0 ...".
+std::string kmlCoordinates(const std::vector<LonLat> &line)
+{
+    std::string s;
+    char buf[64];
+    for (const LonLat &p : line)
+    {
+        std::snprintf(buf, sizeof buf, "%s%.12g,%.12g,0", s.empty() ? "" : " ", p.lon, p.lat);
+        s += buf;
+    }
+    return s;
+}
+
+/// A line of lon/lat as KML geometry: a LineString, or a MultiGeometry of the pieces split at the antimeridian.
+std::string kmlLines(const std::vector<std::vector<LonLat>> &pieces)
+{
+    std::string s = pieces.size() == 1 ? "" : "<MultiGeometry>";
+    for (const auto &piece : pieces)
+        s += "<LineString><tessellate>1</tessellate><coordinates>" + kmlCoordinates(piece) +
+             "</coordinates></LineString>";
+    return s + (pieces.size() == 1 ? "" : "</MultiGeometry>");
+}
+
+/// Whether the mission's dates are Gregorian ones (KML's TimeStamp is xsd:dateTime): an epoch, or a forecast on
+/// the standard or proleptic Gregorian calendar after 1582.
+bool gregorianDates(const MissionResult &r, const std::string &iso)
+{
+    if (iso.empty())
+        return false;
+    if (!r.spec.fileCalendar)
+        return true;
+    const Calendar c = r.spec.fileCalendar->calendar;
+    return (c == Calendar::Standard || c == Calendar::ProlepticGregorian) && iso.compare(0, 4, "1583") >= 0;
+}
+}  // namespace
+
+std::string routeKml(const MissionResult &r, const MissionProblem *problem)
+{
+    if (!geographic(r))
+        throw Error(r.spec.file + ": route.kml needs longitudes and latitudes (give a 'projection')");
+    std::string k = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<kml xmlns=\"http://www.opengis.net/kml/2.2\">\n"
+                    "<Document>\n<name>" + xmlEscaped(r.spec.name) + "</name>\n"
+                    "<Style id=\"route\"><LineStyle><color>ff0000ff</color><width>3</width></LineStyle></Style>\n"
+                    "<Style id=\"isochrone\"><LineStyle><color>ff00aaff</color><width>1</width></LineStyle></Style>\n";
+    const RouteLine route = routeLine(r, problem, true);
+    const auto pieces = splitAtAntimeridian(route.lonLat);
+    const MissionSpec::PhysicalUnits units = r.spec.physicalUnits();
+    const std::string about =
+        "travel time " +
+        (units.time ? text::durationText(r.plan.travelTime * r.spec.timeUnitSeconds) : text::number(r.plan.travelTime)) +
+        ", path length " +
+        (units.length ? text::number(r.plan.pathLength * r.spec.metresPerUnit() / 1000.0, 6) + " km" :
+                        text::number(r.plan.pathLength));
+    k += "<Placemark>\n<name>route</name>\n<description>" + xmlEscaped(about) +
+         (r.plan.headingRoute() ? " (the flown track of held headings)" : "") +
+         "</description>\n<styleUrl>#route</styleUrl>\n" + kmlLines(pieces) + "\n</Placemark>\n";
+    k += "<Folder>\n<name>waypoints</name>\n";
+    for (std::size_t i = 0; i < r.waypoints.size(); ++i)
+    {
+        const MissionWaypoint &w = r.waypoints[i];
+        const std::string name = i == 0 ? "start" : i + 1 == r.waypoints.size() ? "goal" : "WP " + std::to_string(i);
+        k += "<Placemark>\n<name>" + name + "</name>\n";
+        if (gregorianDates(r, w.iso))
+            k += "<TimeStamp><when>" + w.iso + "</when></TimeStamp>\n";
+        k += "<description>" + xmlEscaped(w.iso.empty() ? "t = " + text::number(w.time, 10) : (i == 0 ? "departure " : "arrival ") + w.iso) +
+             "</description>\n<Point><coordinates>" + kmlCoordinates({w.lonLat}) + "</coordinates></Point>\n"
+             "</Placemark>\n";
+    }
+    k += "</Folder>\n";
+    if (r.isochrones && !r.isochrones->contours.empty())
+    {
+        k += "<Folder>\n<name>isochrones</name>\n";
+        for (const Isochrone &c : r.isochrones->contours)
+        {
+            std::vector<std::vector<LonLat>> lines;
+            for (const auto &line : c.lonLat)
+                for (const auto &part : splitAtAntimeridian(line))
+                    lines.push_back(part);
+            if (lines.empty())
+                continue;
+            k += "<Placemark>\n<name>" + xmlEscaped(c.iso.empty() ? "t = " + text::number(c.time, 10) : c.iso) +
+                 "</name>\n<styleUrl>#isochrone</styleUrl>\n<MultiGeometry>";
+            for (const auto &line : lines)
+                k += kmlLines({line});
+            k += "</MultiGeometry>\n</Placemark>\n";
+        }
+        k += "</Folder>\n";
+    }
+    return k + "</Document>\n</kml>\n";
 }
 
 namespace

@@ -68,6 +68,9 @@ std::string formatGotoList(const GotoList &list)
     s << "    b_arg: num_legs_to_run(nodim) " << list.numLegsToRun << "\n";
     s << "    b_arg: start_when(enum) " << list.startWhen << "\n";
     s << "    b_arg: list_stop_when(enum) " << list.listStopWhen << "\n";
+    char dist[48];
+    std::snprintf(dist, sizeof dist, "%.10g", list.listWhenWptDist);
+    s << "    b_arg: list_when_wpt_dist(m) " << dist << "\n";
     s << "    b_arg: initial_wpt(enum) " << list.initialWpt << "\n";
     s << "    b_arg: num_waypoints(nodim) " << list.waypoints.size() << "\n";
     s << "<end:b_arg>\n";
@@ -142,9 +145,10 @@ GotoList parseGotoList(const std::string &text, const std::string &source)
         if (block == Block::Args)
         {
             std::string name;
-            long value;
-            if (first != "b_arg:" || !(ls >> name >> value))
+            double number;
+            if (first != "b_arg:" || !(ls >> name >> number) || !std::isfinite(number))
                 fail("expected 'b_arg: name(unit) value'");
+            const long value = std::lround(number);
             const std::string key = name.substr(0, name.find('('));
             if (key == "num_waypoints")
                 declared = value;
@@ -156,6 +160,8 @@ GotoList parseGotoList(const std::string &text, const std::string &source)
                 list.listStopWhen = static_cast<int>(value);
             else if (key == "initial_wpt")
                 list.initialWpt = static_cast<int>(value);
+            else if (key == "list_when_wpt_dist")
+                list.listWhenWptDist = number;
         }
         else if (block == Block::Waypoints)
         {

@@ -239,7 +239,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["start"] = position(problem, problem.getStart());
     j["goal"] = position(problem, problem.getGoal());
     j["departure"] = {{"time", p.departure},
-                      {"iso", r.waypoints.empty() ? json(nullptr) : jtext(r.waypoints.front().iso)}};
+                      {"iso", r.waypoints.empty() ? jtext(r.departureIso) : jtext(r.waypoints.front().iso)}};
     j["arrival"] = {{"time", r.waypoints.empty() ? json(nullptr) : jnum(r.waypoints.back().time)},
                     {"iso", r.waypoints.empty() ? json(nullptr) : jtext(r.waypoints.back().iso)}};
     // goals in time (issue 12): the time at the goal in the window, the holds, the window

@@ -208,6 +208,10 @@ yaml_case("levelset-walled-in",
                   append="forbidden:\n  obstacles:\n    - {name: pocket, points: [[0, -1], [3, -1], [3, 1], [0, 1], "
                   "[0, 0.6], [2.5, 0.6], [2.5, -0.6], [0, -0.6]]}\n"),
           "never reaches the goal", status=1)
+# the goto list thinned to the turns
+yaml_case("goto-turn-deg-out-of-range", mission(append="outputs: {goto_turn_deg: 200}\n"), "outputs.goto_turn_deg")
+yaml_case("goto-wpt-dist-zero", mission(append="outputs: {goto_wpt_dist: 0}\n"), "outputs.goto_wpt_dist")
+case("cli-goto-turn-negative", ["--goto-turn=-5", "--out", "{out}"], 2, "--goto-turn")
 case("cli-isochrone-interval-zero", ["--isochrone-interval", "0", "--out", "{out}"], 2, "--isochrone-interval")
 case("cli-isochrone-interval-fortnight", ["--isochrone-interval", "1 fortnight", "--out", "{out}"], 2,
      "--isochrone-interval")

@@ -32,6 +32,7 @@ struct MfFile
     double lonShift{0.0};          ///< moves the grid (a mismatched file)
     double landHour{30.0};         ///< at this hour node (i 2, j 3) is a fill value (land in this record only)
     double stillUntil{24.0};       ///< node (i 3, j 2) is u = v = 0 before this hour (all of day 0's file)
+    bool land{true};               ///< the fill-value land nodes above are written (false: no fill values at all)
 };
 
 inline void writeMfFile(const std::string &path, const MfFile &m)
@@ -61,7 +62,7 @@ inline void writeMfFile(const std::string &path, const MfFile &m)
             for (std::size_t i = 0; i < nx; ++i)
             {
                 // one land node (fill value) in every record, one node that is still in every record
-                const bool land = (i == 5 && j == 0) || (i == 2 && j == 3 && m.hours[k] == m.landHour);
+                const bool land = m.land && ((i == 5 && j == 0) || (i == 2 && j == 3 && m.hours[k] == m.landHour));
                 const bool still = (i == 0 && j == 5) || (i == 3 && j == 2 && m.hours[k] < m.stillUntil);
                 u.push_back(land ? -999.0 : still ? 0.0 : mfU(lon[i], lat[j], m.hours[k]) + m.bias.at(k));
                 v.push_back(land ? -999.0 : still ? 0.0 : mfV(lon[i], lat[j], m.hours[k]));
@@ -127,13 +128,17 @@ struct MfFiles
     std::string combined = dir.file("combined.nc");
     std::vector<std::string> days;
     template <typename DayName>
-    explicit MfFiles(DayName dayName)
+    explicit MfFiles(DayName dayName, bool land = true)
     {
-        writeMfFile(combined, mfCombined());
+        MfFile c = mfCombined();
+        c.land = land;
+        writeMfFile(combined, c);
         for (int d = 0; d < 4; ++d)
         {
             days.push_back(dir.file(dayName(d)));
-            writeMfFile(days.back(), mfDay(d));
+            MfFile f = mfDay(d);
+            f.land = land;
+            writeMfFile(days.back(), f);
         }
     }
 };

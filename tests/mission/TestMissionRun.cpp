@@ -212,7 +212,7 @@ TEST(MissionRun, GeographicOutputsGotoAndIsoTimes)
     // 13.333... hours later.
     EXPECT_EQ(r.waypoints.back().iso, "2026-01-01T13:20:00Z");
     const std::vector<std::string> files = writeOutputs(r, problem);
-    EXPECT_EQ(files.size(), 4u);  // summary.json, waypoints.csv, path.geojson, goto_l03.ma
+    EXPECT_EQ(files.size(), 5u);  // summary.json, waypoints.csv, path.geojson, route.kml, goto_l03.ma
     const GotoList back = readGotoFile(spec.outputs.directory + "/goto_l03.ma");
     EXPECT_EQ(back.number, 3);
     ASSERT_EQ(back.waypoints.size(), r.waypoints.size() - 1);  // the start is where the glider already is
@@ -547,15 +547,18 @@ TEST(MissionRun, ExampleMissionsRunEndToEnd)
         const MissionResult r = runMission(problem);
         EXPECT_TRUE(r.plan.solved) << name << ": " << r.plan.status << ": " << r.plan.reason;
         const std::vector<std::string> files = writeOutputs(r, problem);
-        // summary.json, waypoints.csv, path.geojson, goto list, map.svg + map.png
-        EXPECT_EQ(files.size(), 6u) << name;
+        // summary.json, waypoints.csv, path.geojson, route.kml, goto list, map.svg + map.png
+        EXPECT_EQ(files.size(), 7u) << name;
         for (const auto &f : files)
             EXPECT_TRUE(std::ifstream(f).good()) << f;
-        for (const char *f : {"summary.json", "waypoints.csv", "path.geojson", "map.svg", "map.png"})
+        for (const char *f : {"summary.json", "waypoints.csv", "path.geojson", "route.kml", "map.svg", "map.png"})
             EXPECT_TRUE(fs::is_regular_file(spec.outputs.directory + "/" + f)) << name << ": " << f;
-        // The goto list is the path after the start, as flown.
+        // The goto list is the path's turns after the start (gotoWaypointIndices()), in the order flown.
         const GotoList g = readGotoFile(spec.outputs.directory + "/" + gotoFileName(spec.outputs.gotoNumber));
-        ASSERT_EQ(g.waypoints.size() + 1, r.waypoints.size()) << name;
+        const std::vector<std::size_t> listed = gotoWaypointIndices(r, &problem);
+        ASSERT_EQ(g.waypoints.size() + 1, listed.size()) << name;
+        for (std::size_t k = 0; k < g.waypoints.size(); ++k)
+            EXPECT_LE(std::abs(g.waypoints[k].lat - r.waypoints[listed[k + 1]].lonLat.lat) * 60, 0.5e-4 + 1e-9);
         EXPECT_LE(std::abs(g.waypoints.back().lat - r.waypoints.back().lonLat.lat) * 60, 0.5e-4 + 1e-9);
         if (spec.departure.window)
         {

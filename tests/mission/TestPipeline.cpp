@@ -552,8 +552,8 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
     std::set<std::string> written;
     for (const auto &f : files)
         written.insert(fs::path(f).filename().string());
-    EXPECT_EQ(written, (std::set<std::string>{"summary.json", "waypoints.csv", "path.geojson", "goto_l05.ma",
-                                              "stints.csv", "map.svg", "map.png"}));
+    EXPECT_EQ(written, (std::set<std::string>{"summary.json", "waypoints.csv", "path.geojson", "route.kml",
+                                              "goto_l05.ma", "stints.csv", "map.svg", "map.png"}));
 
     // waypoints.csv: the heading held from each waypoint and its duration, empty at the last one.
     const auto w = csvRows(readText(dir / "waypoints.csv"));

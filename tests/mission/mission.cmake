@@ -54,3 +54,7 @@ target_link_libraries(test_mission_safety PRIVATE netCDF::netcdf)
 # shorelines cut by the box closed along its edges (scripts/close_shorelines.py, used by make_coastline.sh)
 add_test(NAME mission.close_shorelines
   COMMAND python3 ${CMAKE_CURRENT_LIST_DIR}/check_close_shorelines.py ${PROJECT_SOURCE_DIR}/scripts/close_shorelines.py)
+# what a pilot reads and loads: calendars of climatologies, route.kml, the thinned goto list, no-path reasons,
+# units for people, zero velocity as land
+glider_add_test(test_mission_pilot ${CMAKE_CURRENT_LIST_DIR}/TestPilotOutputs.cpp)
+target_link_libraries(test_mission_pilot PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)

@@ -54,7 +54,8 @@ struct NetCdfCurrentOptions
     // --- land (besides fill values of u/v, which are always land) ---
     std::string maskName;  ///< land/sea mask variable; empty: found automatically (loadNetCdfCurrents()); "none": none
     bool zeroVelocityLand{true};  ///< a node whose u and v are exactly 0 in every record of the trip is land (models
-                                    ///< such as POP store land velocity points as zeros, not fill values)
+                                    ///< such as POP store land velocity points as zeros, not fill values), where
+                                    ///< neither fill values nor a mask mark land in the region
 
     // --- model ---
     GriddedFieldOptions field;  ///< schemes (xy bilinear, depth linear, time linear), BeyondForecast, name
@@ -92,6 +93,7 @@ struct NetCdfCurrents
 {
     std::shared_ptr<GriddedCurrentField> field;       ///< ready to plan on
     std::shared_ptr<const LocalProjection> projection;  ///< null in Cartesian mode
+    double xyMetres{1.0};  ///< Cartesian mode: metres per unit of the file's x/y axes (1000 for km)
     bool geographic{false};          ///< true when x/y come from longitude/latitude
     bool dated{false};               ///< true when the time axis has CF units "<unit> since <date>"
     bool steady{false};              ///< one time: no time dimension, a single record, or steadyRecord; the field
@@ -155,7 +157,8 @@ struct NetCdfCurrents
 /// mask variable (below), in any of the trip's records when the mask has the time axis of u; u = v = 0 exactly in
 /// all of the trip's records (NetCdfCurrentOptions::zeroVelocityLand, on by default; not applied when every
 /// water node would be zero, a still field, nor to packed data seen in a single record, where rounding can zero a
-/// calm node). The trip's records are
+/// calm node, nor where fill values or a mask variable mark land in the region: the file says where its land is,
+/// and zeros are calm water). The trip's records are
 /// those from the last at or before the departure to the first at or after departure + horizon (not the stencil
 /// margin loaded around them), so a seasonal mask or missing winter data close what is closed during the trip,
 /// not all year.

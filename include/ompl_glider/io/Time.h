@@ -51,6 +51,10 @@ DateTime dateFromCalendarEpoch(double seconds, Calendar cal);
 /// @brief "YYYY-MM-DDThh:mm:ssZ" (seconds rounded to the nearest integer, milliseconds when not integral).
 std::string formatDateTime(const DateTime &d);
 
+/// @brief formatDateTime() of seconds since the calendar's epoch (secondsSinceCalendarEpoch()), rounded to the
+/// second: the dates of a forecast in its own calendar. @throws Error outside the years 0000-9999.
+std::string formatCalendarTime(double secondsSinceCalendarEpoch, Calendar cal);
+
 /// @brief Parsed CF time units: value * secondsPerUnit + reference = seconds since the calendar epoch.
 struct CfTimeUnits
 {

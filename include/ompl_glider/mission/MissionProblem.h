@@ -180,6 +180,7 @@ private:
     void addSafety(ForbiddenRegions &regions);
     /// The shallow water of the depth limit (Safety.cpp); null without a bathymetry.
     std::shared_ptr<const ForbiddenCells> shallowWater();
+    /// A point given (lon/lat, or x/y in a Cartesian forecast's own axis units) in the planning frame (Endpoints.cpp).
     Point2 localPoint(const PointSpec &p, const std::string &what) const;
     std::vector<Point2> ring(const std::vector<std::pair<double, double>> &pts, bool geographic,
                              const std::string &what) const;
@@ -191,6 +192,7 @@ private:
     std::shared_ptr<const Environment> environment_;
     std::shared_ptr<const LocalProjection> projection_;
     double projectionScale_{1.0};  // metres per planning unit
+    double xyScale_{1.0};          // planning units per x/y unit given (a Cartesian forecast's axes in km: 1000)
     std::vector<std::string> forecastFiles_;
     std::vector<std::string> forecastNotes_;
     std::vector<std::string> endpointNotes_;

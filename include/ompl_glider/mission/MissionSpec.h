@@ -286,6 +286,11 @@ struct OutputSpec
     }
     int gotoNumber{10};           ///< goto_lNN.ma
     bool gotoIncludeStart{false}; ///< also list the start position in the goto file
+    /// goto list: a waypoint is listed where the course turns by more than this (degrees), or where leaving it out
+    /// would take the route farther than gotoMaxOffset from it or across land; 0 lists every waypoint
+    double gotoTurnDeg{10.0};
+    double gotoMaxOffset{1000.0}; ///< goto list: the farthest a waypoint left out may lie from the listed legs (m)
+    double gotoWptDist{100.0};    ///< goto list: list_when_wpt_dist, the waypoint radius in metres
     std::string prefix;           ///< non-empty: also a copy of every file named <prefix>_<file> (a plain name)
     double mapTime{std::numeric_limits<double>::quiet_NaN()};  ///< time of the map's current arrows (NaN: departure)
     /// Time between two isochrones (format "isochrones"; the mission's time unit); NaN: eight up to the arrival.

@@ -211,6 +211,7 @@ struct MissionResult
     MissionSpec spec;                       ///< the mission
     PlannedPath plan;                       ///< the path at the chosen departure
     std::vector<MissionWaypoint> waypoints; ///< final path for the pilot (start first; empty without a path)
+    std::string departureIso;               ///< the departure's date (empty without dates), also without a path
     bool diveProfiles{false};               ///< dive profiles evaluated
     std::vector<DiveProfile> profileSet;    ///< the generated profile set ([EichhornOceans] Sec. III.B)
     double diveTravelTime{std::numeric_limits<double>::infinity()};  ///< travel time flying the chosen profiles

@@ -48,11 +48,25 @@ std::string routeGeoJson(const MissionResult &result, const MissionProblem *prob
 /// dates) and since_departure ([ThompsonICRA] Fig. 4; issue 12).
 std::string isochronesGeoJson(const MissionResult &result);
 
-/// @brief The Slocum goto list of the final path (without the start unless outputs.goto_include_start). For a heading
+/// @brief The Slocum goto list of the final path, thinned to gotoWaypointIndices() (without the start unless
+/// outputs.goto_include_start), list_when_wpt_dist from outputs.goto_wpt_dist. For a heading
 /// route the waypoints are the segment ends, each with a note (GotoList::notes) naming the heading held on the way to
 /// it (the heading of the waypoint before) and for how long.
 /// @throws Error when the waypoints have no geographic coordinates.
-GotoList gotoList(const MissionResult &result);
+GotoList gotoList(const MissionResult &result, const MissionProblem *problem = nullptr);
+
+/// @brief The waypoints (indices into MissionResult::waypoints) the goto list names: always the start and the goal;
+/// of straight legs, a waypoint only where the course turns by more than outputs.goto_turn_deg, or where the
+/// straight leg past it would stray more than outputs.goto_max_offset from a waypoint left out or (with @p problem)
+/// leave the water or cross a forbidden region (the keep-off zone included); a repeated position (a hold) once.
+/// Every waypoint of a heading route, and every waypoint when goto_turn_deg is 0.
+std::vector<std::size_t> gotoWaypointIndices(const MissionResult &result, const MissionProblem *problem = nullptr);
+
+/// @brief route.kml for Google Earth (KML 2.2; geographic missions): the route as a LineString of lon,lat (the
+/// flown track of a heading route; split at the antimeridian), one Placemark per waypoint with its arrival date
+/// (TimeStamp where the dates are Gregorian, and in the description), and a folder of isochrones when the result
+/// has them. @throws Error when the mission has no lon/lat, or for a heading route without @p problem.
+std::string routeKml(const MissionResult &result, const MissionProblem *problem = nullptr);
 /// @brief stints.csv: the heading table of a stint plan ([IsernObstacles]), one row per surfacing: stint index,
 /// time (field units, seconds, ISO 8601), position (x, y, lon, lat), heading through the water held until the next
 /// surfacing (degrees clockwise from north), the next surfacing (time, x, y) and the expected drift over the stint

@@ -27,6 +27,7 @@ struct GotoList
     int startWhen{0};        ///< b_arg start_when: 0 = immediately
     int listStopWhen{7};     ///< b_arg list_stop_when: 7 = when the waypoint distance is reached
     int initialWpt{0};       ///< b_arg initial_wpt: 0 = the first waypoint
+    double listWhenWptDist{100.0};  ///< b_arg list_when_wpt_dist (m): a waypoint is reached this close (stop when 7)
     std::string comment;     ///< free comment written under the behavior line (one line)
     /// Per waypoint (same index; shorter or empty: none): a comment line written just before its waypoint line
     /// (a heading route's heading to hold, gotoList()); one line each, not read back by parseGotoList()
@@ -37,7 +38,7 @@ struct GotoList
 std::string gotoFileName(int number);
 
 /// @brief The goto list as text: behavior_name=goto_list, a `<start:b_arg>` ... `<end:b_arg>` block with
-/// num_legs_to_run, start_when, list_stop_when, initial_wpt and num_waypoints, then `<start:waypoints>`, one
+/// num_legs_to_run, start_when, list_stop_when, list_when_wpt_dist, initial_wpt and num_waypoints, then `<start:waypoints>`, one
 /// waypoint per line as "longitude latitude" in [-]DDDMM.MMMM (preceded by a line "# note" where GotoList::notes has
 /// one), and `<end:waypoints>`.
 std::string formatGotoList(const GotoList &list);

@@ -210,40 +210,6 @@ bool isPacked(const ForecastPiece &p)
     return pu.scale != 1.0 || pu.offset != 0.0 || pv.scale != 1.0 || pv.offset != 0.0;
 }
 
-/// NetCdfCurrentOptions::zeroVelocityLand on the joined records (the rule of the single-file reader, decided on
-/// all of the trip's records of all files, after the mask): returns the nodes it made land.
-std::size_t zeroVelocityLand(GriddedData &g, const AxisSelection &t, bool packed)
-{
-    const std::size_t perTime = g.water.size();
-    std::vector<std::uint8_t> allZero(perTime, 1);
-    std::size_t tripRecords = 0;
-    for (std::size_t it = 0; it < g.time.size(); ++it)
-    {
-        if (!t.inTrip(it))
-            continue;
-        ++tripRecords;
-        for (std::size_t n = 0; n < perTime; ++n)
-            if (g.u[it * perTime + n] != 0.0f || g.v[it * perTime + n] != 0.0f)
-                allZero[n] = 0;
-    }
-    std::size_t zeros = 0, wet = 0;
-    for (std::size_t n = 0; n < perTime; ++n)
-        if (g.water[n])
-        {
-            ++wet;
-            zeros += allZero[n];
-        }
-    if (!(zeros < wet) || (packed && tripRecords < 2))
-        return 0;
-    std::size_t made = 0;
-    for (std::size_t n = 0; n < perTime; ++n)
-        if (g.water[n] && allZero[n])
-        {
-            g.water[n] = 0;
-            ++made;
-        }
-    return made;
-}
 }  // namespace
 }  // namespace netcdf_detail
 
@@ -430,7 +396,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
         out.fillLandNodes += !p.fillWater[n];
         out.maskLandNodes += p.fillWater[n] && !g.water[n];
     }
-    if (opt.zeroVelocityLand)
+    if (opt.zeroVelocityLand && out.fillLandNodes == 0 && out.maskLandNodes == 0)  // the file says nothing of land
         out.zeroLandNodes = zeroVelocityLand(g, sel, packed);
     out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
     // as after the mask stage of one file: a land node keeps no velocity in any record

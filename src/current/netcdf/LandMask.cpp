@@ -68,6 +68,40 @@ void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv,
     }
 }
 
+/// NetCdfCurrentOptions::zeroVelocityLand (see NetCdfInternal.h).
+std::size_t zeroVelocityLand(GriddedData &g, const AxisSelection &t, bool packed)
+{
+    const std::size_t perTime = g.water.size();
+    std::vector<std::uint8_t> allZero(perTime, 1);
+    std::size_t tripRecords = 0;
+    for (std::size_t it = 0; it < g.time.size(); ++it)
+    {
+        if (!t.inTrip(it))
+            continue;
+        ++tripRecords;
+        for (std::size_t n = 0; n < perTime; ++n)
+            if (g.u[it * perTime + n] != 0.0f || g.v[it * perTime + n] != 0.0f)
+                allZero[n] = 0;
+    }
+    std::size_t zeros = 0, wet = 0;
+    for (std::size_t n = 0; n < perTime; ++n)
+        if (g.water[n])
+        {
+            ++wet;
+            zeros += allZero[n];
+        }
+    if (!(zeros < wet) || (packed && tripRecords < 2))
+        return 0;
+    std::size_t made = 0;
+    for (std::size_t n = 0; n < perTime; ++n)
+        if (g.water[n] && allZero[n])
+        {
+            g.water[n] = 0;
+            ++made;
+        }
+    return made;
+}
+
 namespace
 {
 

@@ -344,6 +344,11 @@ void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv,
 /// Reads u and v over the plan into g.u / g.v (unpacked, converted to m/s by vel) and g.water (land where u or v is a fill value at
 /// any of the trip's records (t.inTrip()), or, with opt.zeroVelocityLand, where both are exactly 0 at all of
 /// them; counted in
+/// Zero velocity as land (NetCdfCurrentOptions::zeroVelocityLand): the water nodes (per z, y, x) whose u and v are
+/// exactly 0 in every record of the trip (t.inTrip()) become land in g.water; not when every water node is zero (a
+/// calm field is water) nor for packed data seen in one record. Called after the mask stage, and only when neither
+/// fill values nor a mask marked land in the region. Returns the nodes it made land.
+std::size_t zeroVelocityLand(GriddedData &g, const AxisSelection &t, bool packed);
 /// out.fillLandNodes / out.zeroLandNodes). g.nx, g.ny, g.depth and g.time must be set.
 void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
                     const LinearConversion &vel, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);

@@ -120,6 +120,21 @@ std::optional<SteadyRecord> steadyRecordOf(const NcFile &f, int timeDim, int tv,
 
 namespace
 {
+/// "; the file is a climatology ..." when its dates lie in the years 0 and 1 (a climatology's year, as CDO and the
+/// ocean models write one), else "": a pilot's real date must be given in that year.
+std::string climatologyHint(const NetCdfCurrents &out, const std::vector<double> &ts)
+{
+    if (!out.dated)
+        return "";
+    const int first = dateFromCalendarEpoch(out.originSeconds + ts.front(), out.calendar).year;
+    const int last = dateFromCalendarEpoch(out.originSeconds + ts.back(), out.calendar).year;
+    if (first < 0 || last > 1)
+        return "";
+    return std::string("; the file is a climatology (its dates are in year ") + (first == last ? "" : "0000-") +
+           (last == 1 ? "0001" : "0000") + ", " + calendarName(out.calendar) +
+           " calendar): give the departure as a date in that year, e.g. " + out.isoTime(ts.front()) + "";
+}
+
 /// The departure in field time (the first forecast time when none is given). @throws Error when it is not a time
 /// of the file, or outside the forecast of an unsteady field.
 double departureOf(const std::function<Error(const std::string &)> &error, const NetCdfCurrentOptions &opt,
@@ -139,7 +154,7 @@ double departureOf(const std::function<Error(const std::string &)> &error, const
     if (!out.steady && (dep < ts.front() || dep > ts.back()))
         throw error("departure " + opt.departure + " (" + out.isoTime(dep) +
                       ") is outside the forecast of variable '" + tn + "' [" + out.isoTime(ts.front()) + ", " +
-                      out.isoTime(ts.back()) + "]");
+                      out.isoTime(ts.back()) + "]" + climatologyHint(out, ts));
     return dep;
 }
 

@@ -557,7 +557,8 @@ void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "outputs";
     r.checkMap(n, f,
-               {"directory", "files", "goto_number", "goto_include_start", "prefix", "map_time", "isochrone_interval"});
+               {"directory", "files", "goto_number", "goto_include_start", "goto_turn_deg", "goto_max_offset",
+                "goto_wpt_dist", "prefix", "map_time", "isochrone_interval"});
     OutputSpec &o = m.outputs;
     if (n["directory"])
         o.directory = joinPath(r.dir(), r.text(n["directory"], f + ".directory"));
@@ -584,6 +585,13 @@ void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
         o.gotoNumber = static_cast<int>(r.integer(n["goto_number"], f + ".goto_number", 0, 99));
     if (n["goto_include_start"])
         o.gotoIncludeStart = r.boolean(n["goto_include_start"], f + ".goto_include_start");
+    if (n["goto_turn_deg"] && !((o.gotoTurnDeg = r.number(n["goto_turn_deg"], f + ".goto_turn_deg")) >= 0.0 &&
+                                o.gotoTurnDeg <= 180.0))
+        r.fail(n["goto_turn_deg"], f + ".goto_turn_deg", "expected degrees in 0..180 (0: every waypoint)");
+    if (n["goto_max_offset"] && !((o.gotoMaxOffset = r.number(n["goto_max_offset"], f + ".goto_max_offset")) >= 0.0))
+        r.fail(n["goto_max_offset"], f + ".goto_max_offset", "expected a distance in metres >= 0");
+    if (n["goto_wpt_dist"] && !((o.gotoWptDist = r.number(n["goto_wpt_dist"], f + ".goto_wpt_dist")) > 0.0))
+        r.fail(n["goto_wpt_dist"], f + ".goto_wpt_dist", "expected a distance in metres > 0");
     if (n["prefix"])
     {
         o.prefix = r.text(n["prefix"], f + ".prefix");
