@@ -10,3 +10,10 @@ target_link_libraries(glider_campaign_paths PRIVATE ompl_glider::ompl_glider)
 target_compile_options(glider_campaign_paths PRIVATE -Wall -Wextra)
 # speed of the polygon tests on many-vertex coastlines (grid index vs brute force)
 glider_add_benchmark(bench_polygon ${CMAKE_CURRENT_LIST_DIR}/campaign/bench_polygon.cpp)
+if(OMPL_GLIDER_BUILD_TESTS)
+  # a small campaign read by OMPL's statistics script; misspelt problems and unwritable directories refused
+  find_program(OMPL_BENCHMARK_STATISTICS ompl_benchmark_statistics)
+  add_test(NAME campaign.cli COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/campaign/check_campaign_cli.sh
+           $<TARGET_FILE:glider_campaign> "${OMPL_BENCHMARK_STATISTICS}")
+  set_tests_properties(campaign.cli PROPERTIES TIMEOUT 120)
+endif()

@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -504,22 +505,44 @@ int main(int argc, char **argv)
     for (const CampaignProblem &p : makeStrongCurrentProblems())
         if (selected(opt, p))
             problems.push_back(p);
+    for (const std::string &name : opt.problems)  // a misspelt name must not be dropped in silence
+    {
+        bool known = name == "all";
+        for (const auto &list : {makeCampaignProblems(field), makeStrongCurrentProblems()})
+            for (const CampaignProblem &p : list)
+                known = known || name == p.name || name == p.set;
+        if (!known)
+            usage("unknown problem '" + name + "' in --problems");
+    }
     if (problems.empty())
         usage("no problem selected");
-    if (TaskSpreader *spread = activeTaskSpreader())  // an MPI job of several ranks
     {
-        try
-        {
-            runSpread(*spread, opt, problems);
-        }
-        catch (const std::exception &e)
-        {
-            if (spread->rank() == 0)
-                std::cerr << "\nglider_campaign: " << e.what() << "; no log written\n";
-            return 1;
-        }
-        return 0;
+        std::error_code ec;  // the logs go into OUTDIR: made here, or refused before any run
+        std::filesystem::create_directories(opt.outdir, ec);
+        if (ec || !std::filesystem::is_directory(opt.outdir))
+            usage("cannot make the output directory '" + opt.outdir + "': " + (ec ? ec.message() : "a file is there"));
     }
-    runHere(opt, problems);
-    return 0;
+    int status = 0;
+    std::string failure;
+    TaskSpreader *spread = activeTaskSpreader();  // an MPI job of several ranks, or null
+    try
+    {
+        if (spread)
+            runSpread(*spread, opt, problems);
+        else
+            runHere(opt, problems);
+    }
+    catch (const std::exception &e)
+    {
+        if (!spread || spread->rank() == 0)
+            std::cerr << "\nglider_campaign: " << e.what() << (spread ? "; no log written\n" : "\n");
+        failure = e.what();
+        status = 1;
+    }
+#if OMPL_GLIDER_WITH_MPI
+    // a rank that failed alone must not leave the others waiting for it (MpiTaskSpreader::endJob())
+    return mpi.end(status, failure);
+#else
+    return status;
+#endif
 }

@@ -7,6 +7,7 @@
 
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include <ompl/tools/benchmark/Benchmark.h>
@@ -27,7 +28,8 @@ inline void runBenchmark(BuiltBenchmark &b)
 {
     std::cout << b.banner << std::endl;
     b.benchmark->benchmark(b.request);
-    b.benchmark->saveResultsToFile(b.log.c_str());
+    if (!b.benchmark->saveResultsToFile(b.log.c_str()))
+        throw std::runtime_error("cannot write " + b.log);
     std::cout << "  -> " << b.log << std::endl;
 }
 }  // namespace ompl_glider
