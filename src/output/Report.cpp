@@ -56,8 +56,12 @@ void printWaypoints(std::ostream &out, const MissionResult &r)
 }
 
 /// The route's kind: held headings or straight legs, and the switch to another planner.
-void printRouteModel(std::ostream &out, const PlannedPath &p)
+void printRouteModel(std::ostream &out, const PlannedPath &p, const MissionSpec &m)
 {
+    // a duration as a pilot reads it (days and hours, the seconds beside them) where the mission has a time unit
+    const auto span = [&](double t) {
+        return m.physicalUnits().time ? text::durationText(t * m.timeUnitSeconds) : format("%.6f", t);
+    };
     if (!p.switchedFrom.empty())
         out << "Switched:           " << p.switchReason << "; planned with " << p.planner << "\n";
     if (!p.solved)
@@ -67,10 +71,11 @@ void printRouteModel(std::ostream &out, const PlannedPath &p)
     else
         out << "Route:              straight legs (" << (p.path.empty() ? 0 : p.path.size() - 1) << " legs)\n";
     if (p.solved && p.reflown && std::isfinite(p.plannerTravelTime))
-        out << format("Re-flight:          %.6f (the planner's own legs: %.6f, %+.2e relative)\n", p.reflownTravelTime,
-                      p.plannerTravelTime, (p.plannerTravelTime - p.reflownTravelTime) / p.reflownTravelTime);
+        out << "Re-flight:          " << span(p.reflownTravelTime) << " (the planner's own legs: "
+            << span(p.plannerTravelTime)
+            << format(", %+.2e relative)\n", (p.plannerTravelTime - p.reflownTravelTime) / p.reflownTravelTime);
     else if (p.solved && p.reflown)
-        out << format("Re-flight:          %.6f, ends %.3g from the goal\n", p.reflownTravelTime, p.reflownEndDistance);
+        out << "Re-flight:          " << span(p.reflownTravelTime) << format(", ends %.3g from the goal\n", p.reflownEndDistance);
     if (p.solved && !p.reflightNote.empty())
         out << "Re-flight note:     " << p.reflightNote << "\n";
 }
@@ -111,7 +116,7 @@ void printReport(std::ostream &out, const MissionResult &r)
     const std::string iso = r.waypoints.empty() ? r.departureIso : r.waypoints.front().iso;
     out << "Departure:          " << num(p.departure) << (iso.empty() ? "" : " (" + iso + ")") << "\n";
     out << "Status:             " << p.status << (p.solved ? "" : "\nReason:             " + p.reason) << "\n";
-    printRouteModel(out, p);
+    printRouteModel(out, p, m);
     if (!r.safetyNote.empty())
         out << "Depth limit:        " << r.safetyNote << "\n";
     for (const std::string &note : r.forecastNotes)
@@ -198,7 +203,9 @@ void printReport(std::ostream &out, const MissionResult &r)
     {
         const ExecutionResult &e = *r.execution;
         out << "Execution:          truth " << e.truth << ", " << e.runs.size() << " run(s) x " << e.strategies.size()
-            << " strategies, surfacing every " << num(e.surfacingInterval) << " (" << e.surfacingIntervalSource
+            << " strategies, surfacing every "
+            << (m.physicalUnits().time ? text::durationText(e.surfacingInterval * m.timeUnitSeconds) : num(e.surfacingInterval))
+            << " (" << e.surfacingIntervalSource
             << ")\n";
         for (const std::string &note : e.notes)
             out << "Execution note:     " << note << "\n";
