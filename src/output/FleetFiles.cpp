@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../io/NumberText.h"
+#include "JsonValues.h"
 #include "OutputDirectory.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/TaskSpread.h"
@@ -24,16 +25,8 @@ namespace fs = std::filesystem;
 namespace
 {
 using json = nlohmann::ordered_json;
-
-json jnum(double v)
-{
-    return std::isfinite(v) ? json(v) : json(nullptr);
-}
-
-json jtext(const std::string &s)
-{
-    return s.empty() ? json(nullptr) : json(s);
-}
+using output_json::jnum;
+using output_json::jtext;
 
 std::string csvText(const std::string &s)
 {

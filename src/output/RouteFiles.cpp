@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "JsonValues.h"
+
 #include "ompl_glider/Exception.h"
 #include "../io/NumberText.h"
 
@@ -14,11 +16,7 @@ namespace ompl_glider
 namespace
 {
 
-/// A number for JSON: null when not finite.
-nlohmann::ordered_json jnum(double v)
-{
-    return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
+using output_json::jnum;
 
 bool geographic(const MissionResult &r)
 {

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "JsonValues.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
@@ -13,16 +14,8 @@ namespace ompl_glider
 namespace
 {
 using json = nlohmann::ordered_json;
-
-json jnum(double v)
-{
-    return std::isfinite(v) ? json(v) : json(nullptr);
-}
-
-json jtext(const std::string &s)
-{
-    return s.empty() ? json(nullptr) : json(s);
-}
+using output_json::jnum;
+using output_json::jtext;
 
 /// "nan", "-nan", "inf" or "-inf" as a word of @p s (as "%g" prints a non-finite number).
 bool holdsNonFiniteNumber(const std::string &s)
