@@ -141,19 +141,31 @@ def clip_line(points, box):
     return [p for p in pieces if len(p) >= 2]
 
 
-def covers(ring, p, tol):
-    """Whether point p is inside the ring or within tol of its boundary."""
-    x, y = p
-    for (ax, ay), (bx, by) in zip(ring, ring[1:]):
-        dx, dy = bx - ax, by - ay
-        t = max(0.0, min(1.0, ((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy or 1.0)))
-        if abs(ax + t * dx - x) <= tol and abs(ay + t * dy - y) <= tol:
-            return True
-    odd = False
-    for (ax, ay), (bx, by) in zip(ring, ring[1:]):
-        if (ay > y) != (by > y) and x < (bx - ax) * (y - ay) / (by - ay) + ax:
-            odd = not odd
-    return odd
+def split_on_edges(points, box):
+    """A shoreline cut where it runs along the box's boundary. GMT clips shorelines to the region itself and joins
+    the part outside by a walk along the region's edge (sometimes closing a shoreline through a corner): those
+    stretches are the box's boundary, not coast, and the closing below walks the boundary itself."""
+    x0, x1, y0, y1 = box
+    tol = 1e-7 * max(x1 - x0, y1 - y0)
+
+    def same_edge(a, b):
+        return ((abs(a[0] - x0) <= tol and abs(b[0] - x0) <= tol) or (abs(a[0] - x1) <= tol and abs(b[0] - x1) <= tol)
+                or (abs(a[1] - y0) <= tol and abs(b[1] - y0) <= tol)
+                or (abs(a[1] - y1) <= tol and abs(b[1] - y1) <= tol))
+
+    parts, cur = [], [points[0]]
+    for a, b in zip(points, points[1:]):
+        if same_edge(a, b):
+            if len(cur) >= 2:
+                parts.append(cur)
+            cur = [b]
+        else:
+            cur.append(b)
+    if len(cur) >= 2:
+        parts.append(cur)
+    if len(parts) >= 2 and parts[0][0] == parts[-1][-1] and points[0] == points[-1]:
+        parts[0] = parts.pop()[:-1] + parts[0]  # a closed shoreline cut once: one piece
+    return parts
 
 
 def perimeter_position(p, box):
@@ -191,7 +203,7 @@ def corners_between(t_from, t_to, box):
 def close_shorelines(segments, box, corner_land):
     """Land polygons (closed rings of (lon, lat)) of the box; and messages on what was left out."""
     rings, pieces, notes = [], [], []
-    for s in segments:
+    for s in [part for seg in segments for part in split_on_edges(seg, box)]:
         closed = len(s) >= 4 and s[0] == s[-1]
         if closed and all(inside(p, box) for p in s):
             rings.append(list(s))
@@ -206,10 +218,6 @@ def close_shorelines(segments, box, corner_land):
             pieces.append((piece, ta, tb))
     x0, x1, y0, y1 = box
     perim = 2 * ((x1 - x0) + (y1 - y0))
-    # GMT closes some shorelines along the box's edges itself: when such a ring holds the corner, the corner's land
-    # is that ring's, and the boundary outside the rings starts in water
-    if corner_land and any(covers(r, (x0, y0), 1e-7 * max(x1 - x0, y1 - y0)) for r in rings):
-        corner_land = False
     if not pieces:
         if corner_land:
             rings.append([(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)])
