@@ -52,6 +52,10 @@ ROUTES = [
      ((0.10, 0.10), (0.20, 0.0))),
     ("Cape Hatteras, Gulf Stream coastal leg", (-76.0, -74.0, 34.5, 36.5), (-75.30, 34.90), (-74.70, 36.10),
      ((0.25, 0.40), (0.35, 0.30))),
+    # a control: a 16 km keep-off closes the 31 km St Lucia Channel (and the box's south edge cuts St Lucia off from
+    # the sea south of it), so this one must be refused with a reason naming the keep-off
+    ("St Lucia Channel, keep-off 16 km (closed)", (-61.5, -60.4, 13.7, 14.7), (-61.45, 14.20), (-60.45, 14.20),
+     ((-0.30, 0.05), (-0.20, 0.10)), 16000.0),
 ]
 
 
@@ -129,6 +133,12 @@ class Etopo:
 # ----------------------------------------------------------------------------------------------------------------
 # geometry in a local equirectangular projection
 
+def unwrap(points, box):
+    """Longitudes within 180 degrees of the box's centre (path.csv writes -179.9 for 180.1 across 180)."""
+    c = 0.5 * (box[0] + box[1])
+    return [(c + (x - c + 180.0) % 360.0 - 180.0, y) for x, y in points]
+
+
 def densify(points):
     """Points every STEP metres along the polyline of (lon, lat)."""
     out = [points[0]]
@@ -144,29 +154,37 @@ class Land:
     def __init__(self, geojson):
         self.rings = [np.array(f["geometry"]["coordinates"][0], dtype=float) for f in geojson["features"]]
         self.edges = np.concatenate([np.hstack([r[:-1], r[1:]]) for r in self.rings]) if self.rings else None
+        self.ring_of = np.concatenate([np.full(len(r) - 1, k) for k, r in enumerate(self.rings)]) if self.rings \
+            else None
 
     def distance(self, lon, lat):
-        """Metres from (lon, lat) to the nearest coastline edge (equirectangular at lat), and whether it is inside."""
+        """Metres from each point (arrays lon, lat) to the nearest coastline edge (equirectangular at the point's
+        latitude), and whether the point is inside a land polygon (even-odd rule, ring by ring)."""
+        lon, lat = np.asarray(lon, float), np.asarray(lat, float)
         if self.edges is None:
-            return float("inf"), False
-        k = math.cos(math.radians(lat))
+            return np.full(lon.shape, np.inf), np.zeros(lon.shape, bool)
         m = R_EARTH * math.pi / 180.0
-        ax, ay = (self.edges[:, 0] - lon) * k * m, (self.edges[:, 1] - lat) * m
-        bx, by = (self.edges[:, 2] - lon) * k * m, (self.edges[:, 3] - lat) * m
-        dx, dy = bx - ax, by - ay
-        dd = dx * dx + dy * dy
-        t = np.clip(np.where(dd > 0, -(ax * dx + ay * dy) / np.where(dd > 0, dd, 1.0), 0.0), 0.0, 1.0)
-        d = float(np.sqrt(np.min((ax + t * dx) ** 2 + (ay + t * dy) ** 2)))
-        inside = False
-        for r in self.rings:  # even-odd rule, ring by ring
-            x0, y0, x1, y1 = r[:-1, 0], r[:-1, 1], r[1:, 0], r[1:, 1]
-            cross = (y0 > lat) != (y1 > lat)
+        dist = np.empty(lon.shape)
+        inside = np.zeros(lon.shape, bool)
+        e = self.edges
+        for c in range(0, len(lon), 256):
+            x, y = lon[c:c + 256, None], lat[c:c + 256, None]
+            k = np.cos(np.radians(y))
+            ax, ay = (e[None, :, 0] - x) * k * m, (e[None, :, 1] - y) * m
+            bx, by = (e[None, :, 2] - x) * k * m, (e[None, :, 3] - y) * m
+            dx, dy = bx - ax, by - ay
+            dd = dx * dx + dy * dy
+            t = np.clip(-(ax * dx + ay * dy) / np.where(dd > 0, dd, 1.0), 0.0, 1.0)
+            dist[c:c + 256] = np.sqrt(np.min((ax + t * dx) ** 2 + (ay + t * dy) ** 2, axis=1))
+            cross = (e[None, :, 1] > y) != (e[None, :, 3] > y)
             with np.errstate(divide="ignore", invalid="ignore"):
-                xs = x0 + (lat - y0) * (x1 - x0) / (y1 - y0)
-            if np.count_nonzero(cross & (lon < xs)) % 2:
-                inside = True
-                break
-        return d, inside
+                xs = e[None, :, 0] + (y - e[None, :, 1]) * (e[None, :, 2] - e[None, :, 0]) / (e[None, :, 3] - e[None, :, 1])
+            hits = cross & (x < xs)
+            per_ring = np.zeros((hits.shape[0], len(self.rings)), int)
+            for r in range(len(self.rings)):
+                per_ring[:, r] = np.count_nonzero(hits[:, self.ring_of == r], axis=1)
+            inside[c:c + 256] = np.any(per_ring % 2 == 1, axis=1)
+        return dist, inside
 
 
 # ----------------------------------------------------------------------------------------------------------------
@@ -223,7 +241,8 @@ data:
 # ----------------------------------------------------------------------------------------------------------------
 
 def run_route(k, route, glider_plan, repo, work, etopo):
-    name, box, start, goal, shear = route
+    name, box, start, goal, shear = route[:5]
+    keep_off = route[5] if len(route) > 5 else KEEP_OFF
     d = os.path.join(work, "route%d" % k)
     os.makedirs(d, exist_ok=True)
     coast = os.path.join(d, "coast.geojson")
@@ -237,7 +256,7 @@ def run_route(k, route, glider_plan, repo, work, etopo):
     out = os.path.join(d, "out")
     cmd = [glider_plan, "--currents", nc, "--start=%g,%g" % start, "--goal=%g,%g" % goal,
            "--region=%g,%g,%g,%g" % (box[0], box[2], box[1], box[3]), "--speed", "0.5", "--coastline", coast,
-           "--keep-off", "2km", "--bathymetry", ETOPO, "--min-depth", "50m", "--out", out]
+           "--keep-off", "%gm" % keep_off, "--bathymetry", ETOPO, "--min-depth", "50m", "--out", out]
     t0 = time.time()
     p = subprocess.run(cmd, capture_output=True, text=True)
     row = {"name": name, "exit": p.returncode, "seconds": time.time() - t0, "hours": None, "closest_km": None,
@@ -245,11 +264,21 @@ def run_route(k, route, glider_plan, repo, work, etopo):
     fail = row["failures"]
     with open(os.path.join(d, "log.txt"), "w") as f:
         f.write(" ".join(cmd) + "\n" + p.stdout + p.stderr)
+    land = Land(json.load(open(coast)))
+    straight = densify(unwrap([start, goal], box))
+    sd, sin = land.distance([q[0] for q in straight], [q[1] for q in straight])
+    row["straight"] = "%s, %.0f m" % ("crosses land" if sin.any() else "%.1f km" % (sd.min() / 1000.0),
+                                     -max(etopo.elevation(a, b)[0] for a, b in straight))
+    if len(route) > 5 and p.returncode != 1:
+        fail.append("expected a refusal (exit 1) naming the keep-off, got exit %d" % p.returncode)
     if p.returncode == 1:
-        text = (p.stdout + p.stderr).lower()
-        if not any(w in text for w in ("keep-off", "keep off", "shallow", "depth", "land", "coastline")):
-            fail.append("refused without naming what closes the route: " + (p.stdout + p.stderr)[-400:])
-        row["reason"] = [l for l in (p.stdout + p.stderr).splitlines() if l.strip()][-1:]
+        reason = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("Reason:")]
+        text = " ".join(reason).lower()
+        needed = ("keep-off",) if len(route) > 5 else ("keep-off", "shallow", "depth", "land", "coastline")
+        if not any(w in text for w in needed):
+            fail.append("refused without naming what closes the route (%s): %s" % ("/".join(needed),
+                                                                                   (p.stdout + p.stderr)[-400:]))
+        row["reason"] = reason[:1]
         return row
     if p.returncode != 0:
         fail.append("exit %d: %s" % (p.returncode, (p.stdout + p.stderr)[-600:]))
@@ -260,29 +289,30 @@ def run_route(k, route, glider_plan, repo, work, etopo):
         rows = list(csv.DictReader(f))
     path = [(float(r["lon"]), float(r["lat"])) for r in rows]
     row["hours"] = summary_travel_hours(summary)
-    land = Land(json.load(open(coast)))
-    closest, shallowest, worst_node = float("inf"), -float("inf"), -float("inf")
-    for lon, lat in densify(path):
-        dist, inside = land.distance(lon, lat)
-        if inside:
-            fail.append("(%.5f, %.5f) is inside a land polygon" % (lon, lat))
-        closest = min(closest, dist)
-        bil, node = etopo.elevation(lon, lat)
-        shallowest, worst_node = max(shallowest, bil), max(worst_node, node)
+    points = densify(unwrap(path, box))
+    lons, lats = np.array([p[0] for p in points]), np.array([p[1] for p in points])
+    dist, inside = land.distance(lons, lats)
+    for q in np.nonzero(inside)[0][:5]:
+        fail.append("(%.5f, %.5f) is inside a land polygon" % (lons[q], lats[q]))
+    closest = float(dist.min())
+    elev = [etopo.elevation(a, b) for a, b in points]
+    shallowest = max(e[0] for e in elev)
     row["closest_km"], row["min_depth_m"] = closest / 1000.0, -shallowest
-    if closest < KEEP_OFF - TOL:
-        fail.append("closest approach to the coastline %.0f m < keep-off %.0f m - %.0f m" % (closest, KEEP_OFF, TOL))
+    if closest < keep_off - TOL:
+        fail.append("closest approach to the coastline %.0f m < keep-off %.0f m - %.0f m" % (closest, keep_off, TOL))
     if shallowest > -MIN_DEPTH + DEPTH_TOL:
         fail.append("ETOPO5 elevation %.1f m on the route: shallower than %.0f m" % (shallowest, MIN_DEPTH))
-    if abs(path[0][0] - start[0]) % 360 > 1e-3 and abs(path[0][0] - start[0]) % 360 < 359.999:
-        fail.append("path.csv does not start at the start")
+    ends = unwrap([path[0], path[-1], start, goal], box)
+    if max(abs(ends[0][0] - ends[2][0]), abs(ends[0][1] - ends[2][1]),
+           abs(ends[1][0] - ends[3][0]), abs(ends[1][1] - ends[3][1])) > 1e-3:
+        fail.append("path.csv runs from %s to %s, not from the start to the goal" % (path[0], path[-1]))
     if not os.path.getsize(os.path.join(out, "map.png")) > 1000:
         fail.append("map.png missing or empty")
     reported = find_closest(summary)
     row["reported_km"] = reported
     if reported is None:
         fail.append("summary.json has no closest_land_m (safety: %s)" % summary.get("safety"))
-    elif reported < KEEP_OFF / 1000.0 - 1e-6:
+    elif reported < keep_off / 1000.0 - 1e-6:
         fail.append("summary.json: closest approach %.3f km < keep-off" % reported)
     return row
 
@@ -314,15 +344,17 @@ def main():
         if only and str(k) not in only:
             continue
         rows.append(run_route(k, route, glider_plan, repo, work, etopo))
-    print("%-40s %4s %9s %10s %10s %13s %7s" % ("route", "exit", "time (h)", "land (km)", "summary km",
-                                                "min depth (m)", "run (s)"))
+    print("%-42s %4s %8s %9s %10s %9s  %s" % ("route", "exit", "time (h)", "land (km)", "summary km",
+                                                "depth (m)", "straight line: land, depth"))
     for r in rows:
         f = lambda v, fmt: (fmt % v) if v is not None else "-"
-        print("%-40s %4d %9s %10s %10s %13s %7.1f" % (r["name"], r["exit"], f(r["hours"], "%.1f"),
-                                                     f(r["closest_km"], "%.2f"), f(r["reported_km"], "%.2f"),
-                                                     f(r["min_depth_m"], "%.0f"), r["seconds"]))
+        print("%-42s %4d %8s %9s %10s %9s  %s" % (r["name"], r["exit"], f(r["hours"], "%.1f"),
+                                                 f(r["closest_km"], "%.2f"), f(r["reported_km"], "%.2f"),
+                                                 f(r["min_depth_m"], "%.0f"), r.get("straight", "-")))
         if r.get("reason"):
-            print("    refused: %s" % r["reason"])
+            print("    " + r["reason"][0][:160])
+    print("(land: closest approach of path.csv densified every %g m to the GSHHG 'i' coastline; depth: the "
+          "shallowest ETOPO5 depth along it, bilinear)" % STEP)
     bad = [(r["name"], x, r["cmd"]) for r in rows for x in r["failures"]]
     for name, x, cmd in bad:
         print("FAIL %s: %s\n    (%s)" % (name, x, cmd))
