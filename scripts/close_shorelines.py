@@ -36,6 +36,57 @@ def read_segments(stream):
     return [s for s in segments if len(s) >= 2]
 
 
+def unwrap(segments, box):
+    """Longitudes brought within 180 degrees of the box's centre: GMT writes lon -179 for 181 on a box across 180."""
+    c = 0.5 * (box[0] + box[1])
+    return [[(c + (x - c + 180.0) % 360.0 - 180.0, y) for x, y in s] for s in segments]
+
+
+def join_segments(segments):
+    """Shorelines joined end to end: GMT's `coast -M -W` writes a shoreline cut into pieces at the edges of its
+    bins (every degree or two), each piece starting where the one before it ends. Pieces are joined where an end of
+    one is an end of another (reversing a piece when needed); closed shorelines are left as they are."""
+    def key(p):
+        return (round(p[0], 7), round(p[1], 7))
+
+    done, open_ = [], []
+    for s in segments:
+        (done if len(s) >= 4 and key(s[0]) == key(s[-1]) else open_).append(list(s))
+    ends = {}  # end point -> indices of the open pieces with an end there
+    for k, s in enumerate(open_):
+        ends.setdefault(key(s[0]), []).append(k)
+        ends.setdefault(key(s[-1]), []).append(k)
+    used = [False] * len(open_)
+
+    def take(point, exclude):
+        for k in ends.get(key(point), []):
+            if not used[k] and k != exclude:
+                return k
+        return None
+
+    for k in range(len(open_)):
+        if used[k]:
+            continue
+        used[k] = True
+        line = list(open_[k])
+        for forward in (True, False):
+            while key(line[0]) != key(line[-1]):
+                tip = line[-1] if forward else line[0]
+                j = take(tip, k)
+                if j is None:
+                    break
+                used[j] = True
+                s = open_[j]
+                if forward:
+                    line.extend((s if key(s[0]) == key(tip) else s[::-1])[1:])
+                else:
+                    line[:0] = (s if key(s[-1]) == key(tip) else s[::-1])[:-1]
+        if len(line) >= 4 and key(line[0]) == key(line[-1]):
+            line[-1] = line[0]
+        done.append(line)
+    return done
+
+
 def inside(p, box):
     x0, x1, y0, y1 = box
     return x0 - EPS <= p[0] <= x1 + EPS and y0 - EPS <= p[1] <= y1 + EPS
@@ -90,6 +141,33 @@ def clip_line(points, box):
     return [p for p in pieces if len(p) >= 2]
 
 
+def split_on_edges(points, box):
+    """A shoreline cut where it runs along the box's boundary. GMT clips shorelines to the region itself and joins
+    the part outside by a walk along the region's edge (sometimes closing a shoreline through a corner): those
+    stretches are the box's boundary, not coast, and the closing below walks the boundary itself."""
+    x0, x1, y0, y1 = box
+    tol = 1e-7 * max(x1 - x0, y1 - y0)
+
+    def same_edge(a, b):
+        return ((abs(a[0] - x0) <= tol and abs(b[0] - x0) <= tol) or (abs(a[0] - x1) <= tol and abs(b[0] - x1) <= tol)
+                or (abs(a[1] - y0) <= tol and abs(b[1] - y0) <= tol)
+                or (abs(a[1] - y1) <= tol and abs(b[1] - y1) <= tol))
+
+    parts, cur = [], [points[0]]
+    for a, b in zip(points, points[1:]):
+        if same_edge(a, b):
+            if len(cur) >= 2:
+                parts.append(cur)
+            cur = [b]
+        else:
+            cur.append(b)
+    if len(cur) >= 2:
+        parts.append(cur)
+    if len(parts) >= 2 and parts[0][0] == parts[-1][-1] and points[0] == points[-1]:
+        parts[0] = parts.pop()[:-1] + parts[0]  # a closed shoreline cut once: one piece
+    return parts
+
+
 def perimeter_position(p, box):
     """Anticlockwise distance along the box's boundary from its south-west corner, or None off the boundary."""
     x0, x1, y0, y1 = box
@@ -125,7 +203,7 @@ def corners_between(t_from, t_to, box):
 def close_shorelines(segments, box, corner_land):
     """Land polygons (closed rings of (lon, lat)) of the box; and messages on what was left out."""
     rings, pieces, notes = [], [], []
-    for s in segments:
+    for s in [part for seg in segments for part in split_on_edges(seg, box)]:
         closed = len(s) >= 4 and s[0] == s[-1]
         if closed and all(inside(p, box) for p in s):
             rings.append(list(s))
@@ -199,7 +277,8 @@ def main():
         print("close_shorelines: region '%s': expected LON_MIN/LON_MAX/LAT_MIN/LAT_MAX with MIN < MAX"
               % args.region, file=sys.stderr)
         return 2
-    rings, notes = close_shorelines(read_segments(sys.stdin), box, args.corner_land == "yes")
+    segments = join_segments(unwrap(read_segments(sys.stdin), box))
+    rings, notes = close_shorelines(segments, box, args.corner_land == "yes")
     features = [{"type": "Feature", "properties": {"name": "land %d" % (k + 1), "kind": "land"},
                  "geometry": {"type": "Polygon",
                               "coordinates": [[[round(x, 6), round(y, 6)] for x, y in r]]}}

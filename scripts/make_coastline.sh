@@ -11,6 +11,8 @@
 # themselves (islands), clips the others to the region and closes them along its edges, so that a coast cut by the
 # region (Florida and Cuba on a Florida Straits map) stays land. Which side is land is settled by asking GMT
 # whether the region's south-west corner is on land (`gmt select -N`).
+# GMT cuts shorelines at the edges of GSHHG's bins, runs some along the region's edge and writes lon -179 for 181:
+# close_shorelines.py joins the pieces, cuts out those stretches and unwraps longitudes (boxes across 180 work).
 # examples/jamaica_coast.geojson was made with: scripts/make_coastline.sh -79/-75.5/17/19 examples/jamaica_coast.geojson
 set -euo pipefail
 if [ $# -lt 2 ]; then

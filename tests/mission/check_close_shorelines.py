@@ -65,6 +65,27 @@ check(len(rings3) == 1 and land(rings3, -81.3, 26.5) == 1 and land(rings3, -83.0
       "Florida alone: one polygon, the south of the box water")
 # no shoreline: all land or all water
 check(len(run([], "yes")[0]) == 1 and len(run([], "no")[0]) == 0, "an empty box is all land or all water")
+# GMT writes a shoreline cut into pieces at its bins' edges (lat 24 and lon -80 here), some of them reversed: the
+# pieces are joined before clipping, so Cuba is still one polygon and the Straits water
+cuba_pieces = [cuba[:2] + [(-80.0, 23.1)], [(-82.0, 23.1), (-80.0, 23.1)], cuba[2:]]
+florida_pieces = [florida[:2] + [(-81.5, 25.4)], [(-81.5, 25.4), (-81.0, 25.0), (-80.0, 26.0)], florida[3:]]
+rings4, log4 = run(cuba_pieces + florida_pieces + [island], "yes")
+check(len(rings4) == 3 and land(rings4, -81.0, 22.3) == 1 and land(rings4, -81.3, 26.5) == 1
+      and land(rings4, -81.0, 24.0) == 0 and "ends inside" not in log4,
+      "shorelines in bin pieces are joined (%d polygons, %s)" % (len(rings4), log4))
+# a box across 180: GMT writes lon 181 as -179; an island from 179.8 to 180.2 stays one ring
+fiji = [(179.8, -16.2), (-179.8, -16.2), (-179.8, -16.0), (179.8, -16.0), (179.8, -16.2)]
+out = subprocess.run([sys.executable, script, "--corner-land", "no", "--", "179/181/-17/-15"],
+                     input="> s\n" + "".join("%g %g\n" % p for p in fiji), capture_output=True, text=True, check=True)
+rings5 = [f["geometry"]["coordinates"][0] for f in json.loads(out.stdout)["features"]]
+check(len(rings5) == 1 and land(rings5, 180.1, -16.1) == 1 and land(rings5, 179.5, -16.1) == 0,
+      "an island across 180 is one ring (%s)" % rings5)
+# GMT closes some shorelines along the box's edges itself, through the south-west corner: the corner's land is
+# that ring's and the rest of the box stays water
+corner_ring = [(-83.0, 22.0), (-84.0, 22.5), (-84.0, 22.0), (-83.0, 22.0)]
+rings6, _ = run([corner_ring, island], "yes")
+check(len(rings6) == 2 and land(rings6, -81.0, 24.0) == 0 and land(rings6, -83.8, 22.1) == 1,
+      "a ring closed along the edges through the corner does not make the whole box land (%d)" % len(rings6))
 for f in failures:
     print("FAIL:", f)
 sys.exit(1 if failures else 0)
