@@ -45,8 +45,13 @@ std::string KeepOffZone::whyBlocked(double x, double y, double t) const
 {
     if (pointFree(x, y, t))
         return {};
-    return "within the keep-off distance " + text::number(d_) + " of " + name() + " (" +
-           text::number(distanceTo(x, y)) + " away)";
+    const auto length = [&](double d) {
+        if (!(metresPerUnit_ > 0.0))
+            return text::number(d);
+        const double m = d * metresPerUnit_;
+        return m >= 1000.0 ? text::number(m / 1000.0, 4) + " km" : text::number(m, 4) + " m";
+    };
+    return "within the keep-off distance " + length(d_) + " of " + name() + " (" + length(distanceTo(x, y)) + " away)";
 }
 
 double KeepOffZone::distanceTo(double x, double y) const

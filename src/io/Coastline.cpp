@@ -234,7 +234,10 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin
                         repairs->push_back("feature " + name + ": " + fault + " (lon lat): repaired by OGR's MakeValid");
                 }
                 if (count && !valid)
+                {
                     ++count->used;
+                    count->usedFeatures.insert(std::string(layer->GetName()) + "/" + std::to_string(feature->GetFID()));
+                }
                 valid = true;
                 const OGRPolygon box = boxAt(shift);
                 std::unique_ptr<OGRGeometry> clipped(g->Intersection(&box));

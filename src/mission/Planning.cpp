@@ -149,6 +149,23 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
         r.badInput = "departure.time";
         return r;
     }
+    // a start or goal that land's keep-off band, shallow water or another static region forbids: refused in the
+    // pilot's terms (lon/lat, km) before the planner would refuse it in its plane
+    if (const std::shared_ptr<const Environment> &env = problem.getEnvironment(); env && problem.isGeographic())
+        for (const bool start : {true, false})
+        {
+            const Point2 q = start ? s : g;
+            const std::string why = start || env->isStatic() ? env->whyBlocked(q.x, q.y, departure) : std::string();
+            if (why.empty())
+                continue;
+            const LonLat p = problem.toGeographic(q);
+            char where[96];
+            std::snprintf(where, sizeof where, " (lon %.5f, lat %.5f)", p.lon, p.lat);
+            r.status = start ? "Invalid start" : "Invalid goal";
+            r.badInput = start ? "start" : "goal";
+            r.reason = "the " + r.badInput + where + " is " + why;
+            return r;
+        }
     std::shared_ptr<GliderContext> ctx;
     const ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(gp, &ctx);
     const ompl::base::PlannerPtr planner = makePlanner(problem, ss->getSpaceInformation(), ctx, grid, sectors, departure,

@@ -2,6 +2,7 @@
 // limit, both forbidden regions of the one environment (see MissionProblem.h).
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -115,7 +116,10 @@ void MissionProblem::addSafety(ForbiddenRegions &regions)
             }
     if (!edges.empty())
     {
-        land_ = std::make_shared<KeepOffZone>(std::move(edges), m.safety.keepOff);
+        auto zone = std::make_shared<KeepOffZone>(std::move(edges), m.safety.keepOff);
+        if (m.physicalUnits().length)
+            zone->setMetresPerUnit(m.metresPerUnit());  // the pilot's units in its messages
+        land_ = zone;
         if (m.safety.keepOff > 0.0)
             regions.add(land_);
     }
@@ -185,14 +189,15 @@ std::vector<LandPolygon> MissionProblem::readCoastline(const std::string &at)
             spans = {{a, b}};
         std::vector<std::string> repairs;
         CoastlineCount count;
-        int used = 0;
+        std::set<std::string> usedFeatures;  // a feature across the antimeridian meets both spans: counted once
         for (const auto &[w, e] : spans)
         {
             count = {};
             for (LandPolygon &p : readLandPolygons(m.forbidden.coastline, w, s, e, n, &repairs, &count))
                 land.push_back(std::move(p));
-            used += count.used;
+            usedFeatures.insert(count.usedFeatures.begin(), count.usedFeatures.end());
         }
+        const int used = static_cast<int>(usedFeatures.size());
         // none used: open water in a larger file, or a file nowhere near the trip (lon and lat swapped, another
         // region): the latter is refused, with where the file's features lie
         const double near = std::max(lon1 - lon0, lat1 - lat0);

@@ -22,6 +22,7 @@ import csv
 import json
 import math
 import os
+import re
 import struct
 import subprocess
 import sys
@@ -264,6 +265,11 @@ def run_route(k, route, glider_plan, repo, work, etopo):
     fail = row["failures"]
     with open(os.path.join(d, "log.txt"), "w") as f:
         f.write(" ".join(cmd) + "\n" + p.stdout + p.stderr)
+    note = re.search(r"Coastline: +(\d+) land polygons from (\d+) of (\d+) features", p.stdout)
+    if p.returncode == 0 and not note:
+        fail.append("no 'Coastline: N land polygons from U of K features' line")
+    elif note and int(note.group(2)) > int(note.group(3)):
+        fail.append("the coastline note counts more features used than the file has: " + note.group(0))
     land = Land(json.load(open(coast)))
     straight = densify(unwrap([start, goal], box))
     sd, sin = land.distance([q[0] for q in straight], [q[1] for q in straight])
@@ -317,6 +323,25 @@ def run_route(k, route, glider_plan, repo, work, etopo):
     return row
 
 
+def goal_in_keep_off(glider_plan, work):
+    """A goal inside the keep-off band (Turks Island Passage, 15 km): refused with exit 2, in lon/lat and km."""
+    d = os.path.join(work, "route1")
+    cmd = [glider_plan, "--currents", os.path.join(d, "forecast.nc"), "--start=-71.30,21.95", "--goal=-71.25,21.05",
+           "--region=-71.9,20.9,-70.7,22.1", "--speed", "0.5", "--coastline", os.path.join(d, "coast.geojson"),
+           "--keep-off", "15km", "--out", os.path.join(work, "goal_keep_off")]
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    text = p.stdout + p.stderr
+    want = re.compile(r"the goal \(lon -71\.25000, lat 21\.05000\) is within the keep-off distance 15 km of land "
+                      r"\((\d+\.\d+) km away\)")
+    m = want.search(text)
+    if p.returncode != 2 or not m or not float(m.group(1)) < 15.0:
+        return ["a goal within the keep-off: expected exit 2 naming it in lon/lat and km, got exit %d: %s" %
+                (p.returncode, text[-400:])]
+    if "Error:" in text or os.path.exists(os.path.join(work, "goal_keep_off")):
+        return ["a goal within the keep-off: an OMPL error line or an output directory: " + text[-400:]]
+    return []
+
+
 def summary_travel_hours(summary):
     for key in ("travel_time_s", "travel_time"):
         v = summary.get(key)
@@ -356,6 +381,8 @@ def main():
     print("(land: closest approach of path.csv densified every %g m to the GSHHG 'i' coastline; depth: the "
           "shallowest ETOPO5 depth along it, bilinear)" % STEP)
     bad = [(r["name"], x, r["cmd"]) for r in rows for x in r["failures"]]
+    if not only or "1" in only:
+        bad += [("goal in the keep-off band", x, "") for x in goal_in_keep_off(glider_plan, work)]
     for name, x, cmd in bad:
         print("FAIL %s: %s\n    (%s)" % (name, x, cmd))
     return 1 if bad else 0

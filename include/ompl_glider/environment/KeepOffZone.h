@@ -41,6 +41,12 @@ public:
         return true;
     }
 
+    /// @brief Metres per planning unit (> 0): whyBlocked() then gives the distances in m or km; 0 (the default):
+    /// in planning units.
+    void setMetresPerUnit(double metres)
+    {
+        metresPerUnit_ = metres;
+    }
     /// @brief The keep-off distance.
     double distance() const
     {
@@ -56,6 +62,7 @@ public:
 private:
     std::unique_ptr<environment_detail::SegmentIndex> index_;
     double d_{0.0};
+    double metresPerUnit_{0.0};
 };
 
 /// @brief Closest approach to land of a route: the smallest legDistance() over its legs, and where.

@@ -4,6 +4,7 @@
 /// GDAL/OGR: the coastline a pilot has (GSHHG, Natural Earth, a national chart's land area), forbidden to the
 /// glider and drawn on the map.
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct CoastlineCount
 {
     int features{0};  ///< features with a geometry
     int used{0};      ///< features that met the box
+    std::set<std::string> usedFeatures;  ///< those features (layer/FID): a feature met by two reads counts once
     double lonMin{1e300}, lonMax{-1e300}, latMin{1e300}, latMax{-1e300};  ///< the features' extent
 };
 
