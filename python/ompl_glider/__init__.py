@@ -32,7 +32,7 @@ import numpy as np
 from . import _core
 from ._core import Error, set_verbose
 
-__all__ = ["plan", "Field", "Result", "Route", "Error", "planner_names", "analytic_fields", "set_verbose"]
+__all__ = ["plan", "plan_fleet", "Field", "Result", "Route", "Error", "planner_names", "analytic_fields", "set_verbose"]
 
 Pair = Tuple[float, float]
 ProgressCallback = Callable[[str, bool], None]
@@ -289,6 +289,34 @@ def _forbidden(items: Optional[Sequence[Any]]) -> Optional[List[Dict[str, Any]]]
     return [dict(item) if isinstance(item, dict) else {"points": [tuple(p) for p in item]} for item in items]
 
 
+def _load(mission: Union[str, os.PathLike, Dict[str, Any]]) -> Any:
+    """A mission file or a mission dict as the library's mission."""
+    if isinstance(mission, dict):
+        text = json.dumps(mission, indent=1, default=_json_default)
+        return _core.parse_mission(text, "<mission dict>", os.getcwd())
+    return _core.load_mission(os.fspath(mission))
+
+
+def plan_fleet(mission: Union[str, os.PathLike, Dict[str, Any]],
+               progress: Optional[ProgressCallback] = None) -> Dict[str, "Result"]:
+    """Plans every glider of a mission's ``fleet`` (examples/MISSION_FORMAT.md, Fleets) and returns their results by
+    name, in the fleet's order.
+
+    Each glider's mission is the one ``glider_plan --mission`` plans for it (its start, goal, speed and departure in
+    place of the mission's), planned one after the other by the same pipeline as :func:`plan`; a glider without a
+    path has ``solved`` False. Raises :class:`Error` for a mission without a fleet, and for bad input (naming the
+    glider's fleet entry).
+    """
+    spec = _load(mission)
+    if spec.fleet_size == 0:
+        raise Error("plan_fleet(): the mission has no fleet (a 'fleet:' list of gliders); use plan()")
+    results: Dict[str, Result] = {}
+    for i in range(spec.fleet_size):
+        glider = spec.fleet_glider(i)
+        results[glider.name] = Result(_core.run(glider, progress, None, False))
+    return results
+
+
 def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field: Optional[Field] = None,
          start: Optional[Pair] = None, goal: Optional[Pair] = None, speed: Optional[float] = None,
          departure: Union[None, float, str] = None, region: Optional[Tuple[float, float, float, float]] = None,
@@ -344,11 +372,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
         keywords["analytic"] = (field.settings["name"], field.settings["parameters"])
     elif mission is None:
         spec = _core.builtin_mission()
-    elif isinstance(mission, dict):
-        text = json.dumps(mission, indent=1, default=_json_default)
-        spec = _core.parse_mission(text, "<mission dict>", os.getcwd())
     else:
-        spec = _core.load_mission(os.fspath(mission))
+        spec = _load(mission)
     spec = spec.with_keywords(**keywords)
     core = _core.run(spec, progress, None if speeds is None else [float(v) for v in speeds], optimum)
     return Result(core)

@@ -16,6 +16,7 @@
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/mission/Fleet.h"
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
@@ -308,7 +309,10 @@ void bindMission(py::module_ &m)
         .def_property_readonly("speed", [](const MissionSpec &s) { return s.vehicle.speed; })
         .def_property_readonly("is_forecast", [](const MissionSpec &s) { return s.current.isForecast(); })
         .def_property_readonly("geographic", [](const MissionSpec &s) { return s.start.geographic; })
-        .def("with_keywords", &withKeywords, "The mission with plan()'s keyword arguments applied.");
+        .def("with_keywords", &withKeywords, "The mission with plan()'s keyword arguments applied.")
+        .def_property_readonly("fleet_size", [](const MissionSpec &s) { return s.fleet.size(); })
+        .def("fleet_glider", &fleetGliderMission, py::arg("i"),
+             "The mission of glider i of the fleet (fleetGliderMission(): as glider_plan plans it).");
     m.def("builtin_mission", &defaultGulfStreamMission, "The built-in Gulf Stream mission (as glider_plan).");
     m.def("load_mission", &loadMission, py::arg("path"), "A YAML mission file (examples/MISSION_FORMAT.md).");
     m.def("parse_mission", &parseMission, py::arg("text"), py::arg("file") = "<mission>",

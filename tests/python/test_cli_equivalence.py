@@ -1,5 +1,7 @@
 """ompl_glider.plan() is the command line's pipeline: the same problem gives the same travel time, status, files
 and error messages as glider_plan."""
+import csv
+import json
 import os
 
 import pytest
@@ -69,3 +71,46 @@ def test_bad_start_same_message_as_glider_plan_but_naming_the_keyword():
     assert message.startswith("plan(): keyword 'start'")
     # the same words after the place (the command line names its flag there)
     assert err.strip().split("--start", 1)[1] == message.split("plan(): keyword 'start'", 1)[1]
+
+
+def test_fleet_same_travel_times_as_glider_plan(tmp_path):
+    # a fleet of two on the built-in jet with an island, one flying slower; then a third whose goal is in the island
+    mission = {
+        "name": "py_fleet",
+        "current": {"type": "meandering_jet"},
+        "region": {"x_min": 0, "x_max": 10, "y_min": -4, "y_max": 4},
+        "vehicle": {"speed": 0.5},
+        "planner": {"name": "zastartve", "grid_size": 0.4, "sectors": 3},
+        "forbidden": {"obstacles": [{"name": "isle", "kind": "island",
+                                     "points": [[6.5, -1.5], [7.5, -1.5], [7.5, -0.5], [6.5, -0.5]]}]},
+        "fleet": [{"name": "alpha", "start": {"x": 1, "y": -3}, "goal": {"x": 8, "y": 3}},
+                  {"name": "bravo", "start": {"x": 1, "y": 3}, "goal": {"x": 8, "y": -3}, "speed": 0.4}],
+    }
+    path = tmp_path / "fleet.json"  # JSON is YAML: the same mission for glider_plan
+    path.write_text(json.dumps(mission))
+    rc, out, err, summary = glider_plan("--mission", str(path), out_dir=tmp_path / "cli")
+    assert rc == 0, out + err
+    assert summary is not None and "fleet" in summary
+    results = ompl_glider.plan_fleet(mission)
+    assert list(results) == ["alpha", "bravo"]
+    with open(tmp_path / "cli" / "fleet.csv") as f:
+        rows = {r["name"]: r for r in csv.DictReader(f)}
+    for name in ("alpha", "bravo"):
+        assert results[name].solved
+        with open(tmp_path / "cli" / name / "summary.json") as f:
+            assert results[name].travel_time == json.load(f)["travel_time"]  # bit-identical: one pipeline
+        assert abs(results[name].travel_time - float(rows[name]["travel_time"])) <= 1e-6 * results[name].travel_time
+    assert results["alpha"].route.x[0] == 1 and results["bravo"].route.y[0] == 3
+    assert results["bravo"].travel_time != results["alpha"].travel_time
+
+    # a glider whose goal is in the island: bad input for both, the island named
+    mission["fleet"].append({"name": "charlie", "start": {"x": 2, "y": 0}, "goal": {"x": 7, "y": -1}})
+    path.write_text(json.dumps(mission))
+    rc, out, err, _ = glider_plan("--mission", str(path), out_dir=tmp_path / "cli2")
+    assert rc == 2 and "isle" in err, out + err
+    with pytest.raises(ompl_glider.Error, match="isle"):
+        ompl_glider.plan_fleet(mission)
+
+    with pytest.raises(ompl_glider.Error, match="no fleet"):
+        ompl_glider.plan_fleet({k: v for k, v in mission.items() if k != "fleet"} | {"start": {"x": 1, "y": -3},
+                                                                                   "goal": {"x": 8, "y": 3}})
