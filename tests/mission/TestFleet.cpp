@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "ompl_glider/Exception.h"
+#include "ReverseSpreader.h"
 #include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/mission/Fleet.h"
 #include "ompl_glider/output/FleetFiles.h"
@@ -51,29 +52,7 @@ std::string errorOf(const std::string &text)
     return "";
 }
 
-/// Runs the tasks here, last first, through their bytes (as a job of two processes would).
-class ReverseSpreader : public TaskSpreader
-{
-public:
-    int rank() const override
-    {
-        return 0;
-    }
-    int size() const override
-    {
-        return 2;
-    }
-    std::vector<std::string> run(const std::string &what, std::size_t n, const Task &task, const Progress &) override
-    {
-        const TaskSpreadScope scope;
-        runs.push_back(what + " x" + std::to_string(n));
-        std::vector<std::string> out(n);
-        for (std::size_t i = n; i-- > 0;)
-            out[i] = task(i);
-        return out;
-    }
-    std::vector<std::string> runs;
-};
+using test::ReverseSpreader;
 
 std::string read(const fs::path &p)
 {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ReverseSpreader.h"
 #include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/mission/Planning.h"
@@ -14,35 +15,7 @@ using namespace ompl_glider;
 
 namespace
 {
-/// Runs the tasks in this process, last first, through their bytes; counts the tasks per run.
-class ReverseSpreader : public TaskSpreader
-{
-public:
-    int rank() const override
-    {
-        return 0;
-    }
-    int size() const override
-    {
-        return 2;
-    }
-    std::vector<std::string> run(const std::string &what, std::size_t n, const Task &task,
-                                 const Progress &progress) override
-    {
-        const TaskSpreadScope scope;
-        EXPECT_EQ(activeTaskSpreader(), nullptr) << "a task's own tasks run locally";
-        runs.push_back(what + " x" + std::to_string(n));
-        std::vector<std::string> out(n);
-        for (std::size_t i = n; i-- > 0;)
-        {
-            out[i] = task(i);
-            if (progress)
-                progress(n - i, n);
-        }
-        return out;
-    }
-    std::vector<std::string> runs;
-};
+using test::ReverseSpreader;
 
 MissionResult runWith(const std::string &mission, std::shared_ptr<TaskSpreader> spreader)
 {
