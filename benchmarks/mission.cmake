@@ -1,3 +1,6 @@
 # benchmarks of mission: optimal departure time vs brute force; dive-profile parallel speedup
 glider_add_benchmark(bench_departure ${CMAKE_CURRENT_LIST_DIR}/mission/bench_departure.cpp)
 glider_add_benchmark(bench_dive_profiles ${CMAKE_CURRENT_LIST_DIR}/mission/bench_dive_profiles.cpp)
+# the trust benchmark: the default against an independent extremal sweep over random pairs (docs/TRUST.md)
+glider_add_benchmark(bench_trust ${CMAKE_CURRENT_LIST_DIR}/mission/bench_trust.cpp)
+target_include_directories(bench_trust PRIVATE ${PROJECT_SOURCE_DIR}/tests/mission)

@@ -264,6 +264,8 @@ void applySettings(const Flags &f, MissionSpec &m)
         m.planner.smoothing = false;
     if (f.noRefine)
         m.planner.refinement = false;
+    if (f.noGlobalCheck)
+        m.planner.globalCheck = false;
     if (f.speed)
         m.vehicle.speed = m.travel.speed = *f.speed;
     if (!f.out.empty() || f.mission.empty())  // a mission file keeps its outputs.directory unless --out is given
@@ -400,8 +402,12 @@ void defineFlags(CLI::App &app, Flags &f)
         ->group(built);
     app.add_flag("--no-smooth", f.noSmooth, "skip path smoothing")->group(built);
     app.add_flag("--no-refine", f.noRefine, "skip waypoint refinement")->group(built);
+    app.add_flag("--no-global-check", f.noGlobalCheck,
+                 "skip the global check of the route class (extremals shot from the start after a lattice planner)")
+        ->group(built);
     app.add_flag("--optimum", f.optimum,
-                 "also solve Zermelo's optimal-control problem by shooting (open water) and compare")
+                 "also solve Zermelo's optimal-control problem by shooting (extremals that stay in the region's water "
+                 "and out of forbidden regions) and compare")
         ->group(built);
     auto *io = "Input and output";
     app.add_option("--mission", f.mission, "run a YAML mission file (examples/MISSION_FORMAT.md); the other flags "

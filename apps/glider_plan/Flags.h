@@ -28,7 +28,7 @@ struct Flags
     std::optional<std::string> speeds;  // given, even empty, is a sweep request
     std::optional<double> speed, gridSize, timeLimit, depth;
     std::optional<int> sectors;
-    bool noSmooth{false}, noRefine{false}, optimum{false}, verbose{false};
+    bool noSmooth{false}, noRefine{false}, noGlobalCheck{false}, optimum{false}, verbose{false};
     // reachable-set contours (issue 12): --isochrones, --isochrone-interval
     bool isochrones{false};
     std::string isochroneInterval;

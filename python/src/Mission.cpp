@@ -184,7 +184,8 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     };
     static const char *known[] = {"planner", "planner_params", "grid_size", "sectors", "time_limit", "smoothing",
                                   "refinement", "speed", "departure", "start", "goal", "region", "forbidden",
-                                  "isochrones", "isochrone_interval", "analytic", "horizon", "goal_tolerance"};
+                                  "isochrones", "isochrone_interval", "analytic", "horizon", "goal_tolerance",
+                                  "global_check"};
     for (const auto &item : kw)
     {
         const std::string name = item.first.cast<std::string>();
@@ -242,6 +243,8 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
         m.planner.smoothing = v->cast<bool>();
     if (auto v = get("refinement"))
         m.planner.refinement = v->cast<bool>();
+    if (auto v = get("global_check"))
+        m.planner.globalCheck = v->cast<bool>();
     if (auto v = get("speed"))
     {
         const double s = v->cast<double>();

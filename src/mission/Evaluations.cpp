@@ -9,6 +9,7 @@
 #include "PlanningInternal.h"
 #include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/ThreadPool.h"
+#include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/reference/ZermeloReference.h"
 
 namespace ompl_glider
@@ -138,10 +139,15 @@ PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath
 OptimumReference optimumReference(const MissionProblem &problem, double departure, double speed,
                                   double maxTravelTime)
 {
-    ZermeloParams zp;
-    zp.speed = speed;
-    zp.depth = problem.getSpec().vehicle.depth;
-    zp.maxTime = maxTravelTime;
+    // the reference is a route the glider can fly: extremals end at land, forbidden regions and the region's edge
+    std::shared_ptr<GliderContext> ctx;
+    makeSimpleSetup(problem.gliderProblem(departure, speed), &ctx);
+    ZermeloParams zp = planning_detail::checkedExtremalParams(problem, ctx, speed, maxTravelTime);
+    const ZermeloParams reference;  // the reference's own accuracy
+    zp.goalTolerance = reference.goalTolerance;
+    zp.headingSamples = reference.headingSamples;
+    zp.scanRelTol = reference.scanRelTol;
+    zp.relTol = reference.relTol;
     const ZermeloReference ref(problem.getField(), zp);
     const Point2 s = problem.getStart(), g = problem.getGoal();
     const ZermeloSolution sol = ref.solve(s.x, s.y, g.x, g.y, departure);

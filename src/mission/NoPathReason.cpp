@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "../io/NumberText.h"
 #include "PlanningInternal.h"
 #include "ompl_glider/planners/IsochronePlanner.h"
 #include "ompl_glider/planners/Wavefront.h"
@@ -79,18 +80,15 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
 /// What bounds the arrival of an exhausted search: the end of the forecast or the planning horizon.
 std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp)
 {
-    const double seconds = gp.horizon * problem.getSpec().timeUnitSeconds;
-    char text[160];
-    if (seconds >= 2.0 * 86400.0)
-        std::snprintf(text, sizeof text, "%.6g time units (%.3g days, %.0f h)", gp.horizon, seconds / 86400.0,
-                      seconds / 3600.0);
-    else
-        std::snprintf(text, sizeof text, "%.6g time units (%.3g h)", gp.horizon, seconds / 3600.0);
+    // in the mission's own units: days and hours where it has a time unit, else the field's number
+    const MissionSpec &m = problem.getSpec();
+    const std::string span = m.physicalUnits().time ? text::durationText(gp.horizon * m.timeUnitSeconds) :
+                                                      text::number(gp.horizon, 6) + " time units";
     const double fieldEnd = problem.getField()->timeEnd();
     if (std::isfinite(fieldEnd) && gp.t0 + gp.horizon >= fieldEnd - 1e-9 * std::max(1.0, std::abs(fieldEnd)))
-        return std::string("; the path must arrive before the forecast ends, ") + text +
+        return std::string("; the path must arrive before the forecast ends, ") + span +
                " after departure: depart earlier, or hold the last forecast time past its end (current.horizon: hold_last, --beyond hold)";
-    return std::string("; the path must arrive within the planning horizon, ") + text +
+    return std::string("; the path must arrive within the planning horizon, ") + span +
            " after departure (planner.horizon)";
 }
 }  // namespace planning_detail

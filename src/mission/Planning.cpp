@@ -25,8 +25,6 @@ namespace ompl_glider
 {
 namespace planning_detail
 {
-namespace
-{
 /// The final path of a (non-stint) planner flown as stints: the heading per surfacing that follows it best and
 /// what that loses (stintsFromPath()); earliest arrival within the section's radius (0: 1e-4 of the start-goal
 /// distance), over a mission long enough to arrive (1.5 times the path's time plus one stint, within the forecast).
@@ -59,6 +57,9 @@ StintOutcome convertToStints(const MissionProblem &problem, const PlannedPath &r
     o.loss = c.loss;
     return o;
 }
+
+namespace
+{
 
 /// Finds the planner and sets its parameters once before any search, so that a bad name or parameter is an
 /// error naming the mission file, not a failed search.
@@ -272,6 +273,7 @@ PlannedPath planRoute(const MissionProblem &problem, double departure, const Pla
     using namespace planning_detail;
     PlannedPath r = problem.getMembers().empty() ? planOnField(problem, departure, o) : planRobust(problem, departure, o);
     r = switchToHeadings(problem, departure, o, std::move(r));
+    r = checkGlobally(problem, departure, o, std::move(r));
     timeArrival(problem, r);
     if (r.solved)
         r.holdTime = holdTimeOf(r.path);
@@ -287,6 +289,7 @@ TravelTimeOfDeparture departureFunction(const MissionProblem &problem, double gr
         o.sectors = sectors;
         o.smoothing = false;
         o.refinement = false;
+        o.globalCheck = false;  // the departure's supporting points compare the planner's raw times
         try
         {
             const PlannedPath p = planRoute(problem, tDep, o);

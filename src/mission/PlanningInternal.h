@@ -14,8 +14,10 @@
 ///  - GoalWindow.cpp     goals in time: the arrival moved into the goal window (timeArrival()), holdTimeOf()
 ///  - Evaluations.cpp    the evaluations of a plan: pilot waypoints, the optimal-control reference, the speed sweep
 ///  - WorkEstimates.cpp  work estimates before the work: level set, Wavefront, stints, execution surfacings
+///  - GlobalCheck.cpp    the global check of the route class after a lattice planner (checkGlobally())
 
 #include <chrono>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -27,6 +29,7 @@
 
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
+#include "ompl_glider/reference/ZermeloReference.h"
 
 namespace ompl_glider
 {
@@ -111,6 +114,27 @@ std::string enclosure(const MissionProblem &problem, double departure, bool *byM
 
 /// planRoute() on the problem's one field.
 PlannedPath planOnField(const MissionProblem &problem, double departure, const PlanOptions &o);
+
+/// The final path of a (non-stint) planner flown as stints (stintsFromPath()), for a mission with a `stints` section.
+StintOutcome convertToStints(const MissionProblem &problem, const PlannedPath &r);
+
+// GlobalCheck.cpp
+
+/// Where an extremal may go in @p ctx: inside the region's x/y bounds, in the field's water, out of the forbidden
+/// regions at the times it passes them (ZermeloParams::admissible).
+std::function<bool(double, double, double, double, double, double)> admissibleSet(
+    const std::shared_ptr<const GliderContext> &ctx);
+
+/// Shooting parameters for extremals in @p ctx up to @p maxTime: admissibleSet(), the scan on all cores, a goal miss
+/// of 1e-9 of the trip.
+ZermeloParams checkedExtremalParams(const MissionProblem &problem, const std::shared_ptr<const GliderContext> &ctx,
+                                    double speed, double maxTime);
+
+/// The global check (GlobalCheck, Planning.h) of a lattice planner's outcome in the default pipeline: returns @p r
+/// with PlannedPath::globalCheck set, or the extremal's route when that is faster (or @p r had none); @p r unchanged
+/// for other planners, an override planner (PlanOptions::planner), ensembles, bad input, a proven "no path" or
+/// PlannerSpec::globalCheck false.
+PlannedPath checkGlobally(const MissionProblem &problem, double departure, const PlanOptions &o, PlannedPath r);
 
 // HeadingRoutes.cpp
 

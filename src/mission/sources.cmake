@@ -12,6 +12,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Endpoints.cpp
   # the planning pipeline, one concern per file (see PlanningInternal.h)
   ${CMAKE_CURRENT_LIST_DIR}/Planning.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/GlobalCheck.cpp
   ${CMAKE_CURRENT_LIST_DIR}/HeadingRoutes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PlannerSetup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/NoPathReason.cpp

@@ -79,6 +79,26 @@ void printRouteModel(std::ostream &out, const PlannedPath &p, const MissionSpec 
     if (p.solved && !p.reflightNote.empty())
         out << "Re-flight note:     " << p.reflightNote << "\n";
 }
+
+/// The global check of the route class: the candidates and which one won, by how much.
+void printGlobalCheck(std::ostream &out, const PlannedPath &p, const MissionSpec &m)
+{
+    if (!p.globalCheck)
+        return;
+    const GlobalCheck &g = *p.globalCheck;
+    const auto span = [&](double t) {
+        return m.physicalUnits().time ? text::durationText(t * m.timeUnitSeconds) : format("%.4f", t);
+    };
+    out << "Global check:       " << g.headings << " extremals shot from the start, "
+        << (g.extremalFound ? "the fastest through the goal " + span(g.extremalTime) : std::string("none through the goal"))
+        << format(" (%.2f s)\n", g.seconds);
+    for (const RouteCandidate &c : g.candidates)
+        out << "  candidate         " << c.name << ": "
+            << (c.solved ? span(c.travelTime) : "no route (" + c.why + ")")
+            << (c.name == g.winner ? "  <- the route" : "") << "\n";
+    if (!g.winner.empty() && g.winner != g.candidates.front().name)
+        out << format("  the planner's route was in another route class: %.2f%% faster now\n", 100.0 * g.gain);
+}
 }  // namespace
 
 std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows)
@@ -117,6 +137,7 @@ void printReport(std::ostream &out, const MissionResult &r)
     out << "Departure:          " << num(p.departure) << (iso.empty() ? "" : " (" + iso + ")") << "\n";
     out << "Status:             " << p.status << (p.solved ? "" : "\nReason:             " + p.reason) << "\n";
     printRouteModel(out, p, m);
+    printGlobalCheck(out, p, m);
     if (!r.safetyNote.empty())
         out << "Depth limit:        " << r.safetyNote << "\n";
     for (const std::string &note : r.forecastNotes)

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/ThreadPool.h"
 
 namespace ompl_glider
 {
@@ -165,13 +166,19 @@ std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, doubl
     Y sNew{};
     auto g = [&](const Y &st, const Y &d) { return (st.x - gx) * d.x + (st.y - gy) * d.y; };
     double gPrev = g(s, k1);
+    bool stopped = false;
     auto attempt = [&](double t, double h, double &err) {
-        if (t0 + t + h > tEndField)
+        if (stopped || t0 + t + h > tEndField)
             return false;
         sNew = step(t0 + t, s, k1, h, relTol, err);
         return true;
     };
     auto accept = [&](double t, double h) {
+        if (params_.admissible && !params_.admissible(s.x, s.y, t0 + t, sNew.x, sNew.y, t0 + t + h))
+        {
+            stopped = true;  // the extremal ends where it leaves the admissible set
+            return;
+        }
         const Y kNew = rhs(t0 + t + h, sNew);
         const double gNew = g(sNew, kNew);
         if (gPrev < 0.0 && gNew >= 0.0)
@@ -262,8 +269,14 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
 
     // 1. Scan: closest approaches of n extremals (loose tolerance: only brackets are needed).
     std::vector<std::vector<ClosestApproach>> shots(n);
-    for (int j = 0; j < n; ++j)
-        shots[j] = shoot(x1, y1, j * dTheta, t0, x2, y2, tMax, params_.scanRelTol);
+    const auto scan = [&](std::size_t j) {
+        shots[j] = shoot(x1, y1, double(j) * dTheta, t0, x2, y2, tMax, params_.scanRelTol);
+    };
+    if (params_.threads == 1)
+        for (int j = 0; j < n; ++j)
+            scan(std::size_t(j));
+    else
+        ThreadPool(params_.threads).parallelFor(std::size_t(n), scan);
 
     // 2. Brackets: a closest approach whose signed miss changes sign between neighbouring headings (matched by
     // the nearest approach time).

@@ -36,3 +36,12 @@ if(TARGET glider_plan)
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_real_coast_trial.sh $<TARGET_FILE:glider_plan> ${PROJECT_SOURCE_DIR})
   set_tests_properties(mission.real_coast_trial PROPERTIES TIMEOUT 300 SKIP_RETURN_CODE 77)
 endif()
+# the trust property: the default against an independent extremal sweep on random pairs (TrustFast: a dozen pairs;
+# TrustProperty: more than a hundred, CI only)
+add_executable(test_trust ${CMAKE_CURRENT_LIST_DIR}/TestTrust.cpp)
+target_link_libraries(test_trust PRIVATE ompl_glider::ompl_glider GTest::gtest GTest::gtest_main)
+target_compile_options(test_trust PRIVATE -Wall -Wextra)
+gtest_discover_tests(test_trust TEST_FILTER "TrustFast.*" DISCOVERY_TIMEOUT 60 NO_PRETTY_VALUES
+                     PROPERTIES TIMEOUT 600)
+gtest_discover_tests(test_trust TEST_FILTER "TrustProperty.*" DISCOVERY_TIMEOUT 60 NO_PRETTY_VALUES
+                     PROPERTIES TIMEOUT 1800 LABELS ci)

@@ -252,6 +252,9 @@ struct PlannerSpec
     /// worst (their maximum) or quantile (the `quantile` quantile).
     EnsembleObjective objective{EnsembleObjective::Expected};
     double quantile{0.9};  ///< objective quantile: in (0, 1]
+    /// The global check of the route class after a lattice planner (GlobalCheck, Planning.h): extremals shot from the
+    /// start, a faster route of another class taken instead of the planner's
+    bool globalCheck{true};
 };
 
 /// @brief Constant-bearing stints ([IsernObstacles]): the settings of the stint planners (init_optim, optim,

@@ -34,8 +34,41 @@ struct PlanOptions
     std::optional<bool> smoothing;                           ///< smoothing ([EichhornRAS] Table 3)
     std::optional<bool> refinement;                          ///< waypoint refinement
     /// Another planner than the mission's (by registry name; the mission's planner parameters are then not applied):
-    /// the pipeline's switch to a heading planner (issue 24); empty: the mission's
+    /// the pipeline's switch to a heading planner; empty: the mission's
     std::string planner;
+    std::optional<bool> globalCheck;  ///< the global check of the route class (PlannerSpec::globalCheck)
+};
+
+/// @brief One candidate route of the global check: the planner's own, or one made from an extremal.
+struct RouteCandidate
+{
+    std::string name;    ///< "ZA*TVE" (the planner's route), "extremal as straight legs", "extremal as headings"
+    bool solved{false};  ///< a route that reaches the goal and passes its accurate re-flight
+    double travelTime{std::numeric_limits<double>::infinity()};  ///< its re-flown travel time
+    std::string why;     ///< why it has no route (empty when solved)
+};
+
+/// @brief The global check of the default pipeline (planRoute() with a lattice planner): the planner's route is
+/// refined within its route class (the side of the jet, of an island it passes), so before the answer is final
+/// extremals of Zermelo's heading law ([EichhornRAS] Eq. 2, Eq. 10) are shot from the start over a sweep of initial
+/// headings, stopped where they meet land, a forbidden region or the region's edge. The fastest extremal through the
+/// goal is a route of another class when it beats the planner's route; it is then flown as straight legs along its
+/// track (refined like the planner's path) or as held headings following it, and the faster flyable route wins.
+/// Where the planner found no route at all, the extremals are shot over the whole planning window: every extremal
+/// through the goal is a flyable route.
+struct GlobalCheck
+{
+    unsigned headings{0};     ///< initial headings swept
+    bool extremalFound{false};  ///< an admissible extremal reaches the goal within the time bound
+    /// Its travel time (the integrator's, a flyable schedule of continuous headings), +inf when none; the bound was
+    /// the planner's route's travel time (or the planning window without a route)
+    double extremalTime{std::numeric_limits<double>::infinity()};
+    std::vector<RouteCandidate> candidates;  ///< the planner's route first, then the extremal's routes tried
+    std::string winner;       ///< the candidate whose route is the plan (empty: none has one)
+    /// 1 - winner's travel time / the planner's route's (0 when the planner's route won; 1 when it had none)
+    double gain{0.0};
+    double seconds{0.0};      ///< wall time of the check
+    std::uint64_t currentModelCalls{0};  ///< CMC of the check
 };
 
 /// @brief How a plan fares over the members of an ensemble current (planRoute() with MissionProblem::getMembers()).
@@ -143,6 +176,8 @@ struct PlannedPath
     std::string reflightNote;
     /// Heading routes: the distance from the goal at which the re-flight ends (straight legs end on it: 0)
     double reflownEndDistance{std::numeric_limits<double>::quiet_NaN()};
+    /// The global check of the route class (lattice planners in the default pipeline); unset when it did not run
+    std::optional<GlobalCheck> globalCheck;
 
     /// @brief True for a route of held headings.
     bool headingRoute() const
@@ -188,8 +223,10 @@ struct SpeedSweepRow
     double straightLineLength{0.0};  ///< direct distance
 };
 
-/// @brief The optimal-control reference (Zermelo's problem solved by shooting, ZermeloReference): open water only,
-/// forbidden regions are ignored.
+/// @brief The optimal-control reference (Zermelo's problem solved by shooting, ZermeloReference): extremals end where
+/// they meet land, a forbidden region or leave the planning region, so the reference is a route the glider can fly;
+/// where such an obstacle bounds the optimum, the best route may be slower than the fastest admissible extremal
+/// (it follows the obstacle's edge) and none may be found.
 struct OptimumReference
 {
     bool found{false};                                           ///< an extremal through the goal was found

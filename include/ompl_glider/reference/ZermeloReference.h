@@ -3,6 +3,7 @@
 /// @brief Exact time-optimal travel time between two points in an analytic current field: Zermelo's navigation
 /// problem solved by shooting over the initial heading ([EichhornRAS] Sec. 6.1, Eq. 2 and Eq. 10).
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -23,6 +24,11 @@ struct ZermeloParams
     int headingSamples{720};      ///< initial headings scanned uniformly over [0, 2 pi) to bracket the solutions
     double goalTolerance{1e-9};   ///< largest miss distance accepted as "passes through the goal"
     int maxSteps{2000000};        ///< safety bound on integrator steps per trajectory
+    /// Where an extremal may go: called with every accepted integrator step (from (x1, y1) at t1 to (x2, y2) at
+    /// t2, absolute times); false ends the extremal there (land, a forbidden region, outside the planning region),
+    /// so that no closest approach after it counts. Empty: everywhere (open water).
+    std::function<bool(double x1, double y1, double t1, double x2, double y2, double t2)> admissible;
+    unsigned threads{1};          ///< threads of the heading scan (0: all cores); the field must be thread-safe
 };
 
 /// @brief One point of an extremal: time, position and heading (direction of the vehicle's velocity through water).
@@ -62,7 +68,10 @@ struct ZermeloSolution
 /// exactly (event location by single RK steps of the located size). A sign change of the signed miss distance
 /// between neighbouring headings brackets an extremal through the goal, refined by the Illinois method until the
 /// miss is below the tolerance; the fastest such extremal is kept. The paper used a collocation BVP solver (bvp6c)
-/// for the same equations; shooting needs no initial guess of the path.
+/// for the same equations; shooting needs no initial guess of the path. With ZermeloParams::admissible an extremal
+/// ends where it meets land, a forbidden region or the region's edge: the fastest extremal found is then the fastest
+/// flyable one, and where an obstacle bounds the optimal route the true optimum (which follows the obstacle's edge)
+/// may be slower than any extremal through the goal, never faster.
 /// @note Uses CurrentField::velocity and CurrentField::jacobian (counts CMC like any other caller).
 class ZermeloReference
 {

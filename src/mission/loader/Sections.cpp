@@ -430,7 +430,7 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
     const std::string f = "planner";
     r.checkMap(n, f,
                {"name", "grid_size", "sectors", "smoothing", "refinement", "time_limit", "horizon", "goal_tolerance",
-                "parameters", "objective", "quantile"});
+                "parameters", "objective", "quantile", "global_check"});
     PlannerSpec &p = m.planner;
     if (n["objective"])
     {
@@ -464,6 +464,8 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
         p.smoothing = r.boolean(n["smoothing"], f + ".smoothing");
     if (n["refinement"])
         p.refinement = r.boolean(n["refinement"], f + ".refinement");
+    if (n["global_check"])
+        p.globalCheck = r.boolean(n["global_check"], f + ".global_check");
     if (n["time_limit"])
     {
         p.timeLimit = r.nonNegative(n["time_limit"], f + ".time_limit");
