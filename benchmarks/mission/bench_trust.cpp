@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include <ompl/util/Console.h>
+
 #include "TrustCases.h"
 
 int main(int argc, char **argv)
@@ -40,6 +42,7 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "bench_trust: --pairs must be >= 1\n");
         return 2;
     }
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     std::mt19937 rng(seed);
     std::printf("bench_trust: %d random pairs per flow and speed, seed %u, global check %s\n\n", pairs, seed,
                 check ? "on" : "off");

@@ -117,10 +117,13 @@ PlannedPath straightLegsAlong(const MissionProblem &problem, const std::shared_p
     return c;
 }
 
-/// The extremal's track followed by held headings (trackPathWithHeadings(): a heading per piece, re-aimed on its
-/// targets), its result checked and re-flown as every heading route is.
+/// The extremal flown as held headings: its own heading schedule, one segment per integrator step (the bearing at the
+/// step's middle), closed on the goal by direct shooting (refineHeadingRoute() from that schedule); where that fails,
+/// the track followed piece by piece (trackPathWithHeadings()). The result is checked and re-flown as every heading
+/// route is.
 PlannedPath headingsAlong(const MissionProblem &problem, const std::shared_ptr<const GliderContext> &ctx,
-                          const std::vector<TimedPoint> &curve, PlannedPath base)
+                          const std::vector<ZermeloState> &extremal, const std::vector<TimedPoint> &curve,
+                          PlannedPath base)
 {
     PlannedPath c = std::move(base);
     const Point2 g = problem.getGoal();
@@ -128,19 +131,33 @@ PlannedPath headingsAlong(const MissionProblem &problem, const std::shared_ptr<c
     s.depth = ctx->travel->params().depth;
     s.radius = problem.gliderProblem(c.departure, c.speed).goalTolerance;
     s.tEnd = std::min(ctx->region.tMax, ctx->field->timeEnd());
-    s.step = headingCheckStep(curve.back().t - curve.front().t, *ctx);
-    const double spacing = pathLength(curve) / 48.0;
-    const RefinedHeadings h = trackPathWithHeadings(curve, g, *ctx, s, spacing);
+    constexpr double kDeg = 180.0 / 3.14159265358979323846;
+    HeadingRoute schedule;
+    schedule.start = {extremal.front().x, extremal.front().y};
+    schedule.departure = extremal.front().t;
+    for (std::size_t i = 0; i + 1 < extremal.size(); ++i)
+    {
+        const double dt = extremal[i + 1].t - extremal[i].t;
+        if (dt > 0.0)  // heading theta from +x, counter-clockwise -> bearing clockwise from north
+            schedule.segments.push_back({90.0 - 0.5 * (extremal[i].theta + extremal[i + 1].theta) * kDeg, dt});
+    }
+    s.segments = 64;
+    RefinedHeadings h = refineHeadingRoute(schedule, g, *ctx, s);
     if (!h.ok)
     {
-        c.solved = false;
-        c.reason = "its track cannot be followed by held headings: " + h.why;
-        return c;
+        s.step = headingCheckStep(curve.back().t - curve.front().t, *ctx);
+        const RefinedHeadings tracked = trackPathWithHeadings(curve, g, *ctx, s, pathLength(curve) / 48.0);
+        if (!tracked.ok)
+        {
+            c.solved = false;
+            c.reason = "its headings cannot be closed on the goal (" + h.why + "), nor its track followed by held "
+                       "headings (" + tracked.why + ")";
+            return c;
+        }
+        h = tracked;
     }
-    HeadingRoute route = h.route;
-    route.step = s.step;
     c.solved = true;
-    c = headingResult(problem, *ctx, route, std::move(c));
+    c = headingResult(problem, *ctx, h.route, std::move(c));
     if (c.solved)
         reflyRoute(problem, *ctx, c);
     return c;
@@ -172,19 +189,28 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
 
     GlobalCheck check;
     check.candidates.push_back(plannerCandidate(r));
-    const ZermeloParams zp = checkedExtremalParams(problem, ctx, r.speed, bound);
+    ZermeloParams zp = checkedExtremalParams(problem, ctx, r.speed, bound);
+    const Point2 s = problem.getStart(), g = problem.getGoal();
+    ZermeloSolution sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
+    if (!sol.found && !r.solved)
+    {
+        // no route at all: in strong currents the headings that reach a far goal can lie within a fraction of a
+        // degree, so sweep eight times finer before giving up
+        zp.headingSamples *= 8;
+        sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
+    }
     check.headings = static_cast<unsigned>(zp.headingSamples);
     const ZermeloReference ref(ctx->field, zp);
-    const Point2 s = problem.getStart(), g = problem.getGoal();
-    const ZermeloSolution sol = ref.solve(s.x, s.y, g.x, g.y, departure);
     check.extremalFound = sol.found;
     check.extremalTime = sol.found ? sol.travelTime : kInf;
     PlannedPath best = std::move(r);
     const double planned = best.solved ? best.travelTime : kInf;
     if (sol.found && sol.travelTime < planned * (1.0 - kCheckTolerance))
     {
+        const std::vector<ZermeloState> extremal =
+            ref.trajectory(s.x, s.y, sol.initialHeading, departure, sol.travelTime);
         std::vector<TimedPoint> curve;
-        for (const ZermeloState &z : ref.trajectory(s.x, s.y, sol.initialHeading, departure, sol.travelTime))
+        for (const ZermeloState &z : extremal)
             curve.push_back({z.x, z.y, z.t});
         curve.back().x = g.x;  // within the goal tolerance of it: the route ends on the goal
         curve.back().y = g.y;
@@ -219,7 +245,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
                                    "extremal as straight legs");
         // held headings where straight legs cannot follow the extremal, or arrive clearly later than it
         if (!legs || best.travelTime > sol.travelTime * (1.0 + 2.0 * kCheckTolerance))
-            consider(headingsAlong(problem, ctx, curve, base), "extremal as headings");
+            consider(headingsAlong(problem, ctx, extremal, curve, base), "extremal as headings");
     }
     if (check.winner.empty() && best.solved)
         check.winner = check.candidates.front().name;

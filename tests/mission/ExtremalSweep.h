@@ -82,7 +82,8 @@ struct Pass
 
 /// The closest approaches of the extremal with initial heading th0 (located inside a step by bisection on the
 /// derivative of the distance, each trial point one RK4 step from the step's start).
-inline std::vector<Pass> shoot(const Setup &s, double x0, double y0, double t0, double th0, double gx, double gy)
+inline std::vector<Pass> shoot(const Setup &s, double x0, double y0, double t0, double th0, double gx, double gy,
+                               double until = std::numeric_limits<double>::infinity())
 {
     std::vector<Pass> out;
     const double h = s.maxTime / s.steps;
@@ -92,7 +93,7 @@ inline std::vector<Pass> shoot(const Setup &s, double x0, double y0, double t0, 
         return (q.x - gx) * d.x + (q.y - gy) * d.y;
     };
     double a0 = approach(t0, p);
-    for (int k = 0; k < s.steps; ++k)
+    for (int k = 0; k < s.steps && k * h <= until; ++k)
     {
         const double t = t0 + k * h;
         const S n = rk4(s, t, p, h);
@@ -162,7 +163,8 @@ inline Best fastest(const Setup &s, double x0, double y0, double t0, double gx, 
             for (int it = 0; it < 60 && miss > 1e-7 * D; ++it)
             {
                 const double m = 0.5 * (a + b);
-                const Pass *q = nearest(shoot(s, x0, y0, t0, m, gx, gy), tRef);
+                const std::vector<Pass> passes = shoot(s, x0, y0, t0, m, gx, gy, 1.2 * tRef + 10 * s.maxTime / s.steps);
+                const Pass *q = nearest(passes, tRef);
                 if (!q)
                     break;
                 at = *q;

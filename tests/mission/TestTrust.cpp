@@ -1,7 +1,8 @@
 // The trust property (a default answer a pilot can trust): on random problems in four flows and at several speeds,
 // the default pipeline's route is within the tolerance of the fastest extremal of an independent sweep
 // (ExtremalSweep.h: its own RK4, no code of the planners), and whenever an extremal reaches the goal the default has
-// a route. TrustFast runs a dozen pairs in the README's test command; TrustProperty runs more than 100 (label ci).
+// a route. TrustFast runs a dozen pairs at V = 0.5 in the README's test command; TrustProperty runs more than 100 at
+// V = 0.5, 0.3 and 0.2 (label ci: a goal against the jet at V = 0.3 can take the fallbacks half a minute).
 // The seed is OMPL_GLIDER_TRUST_SEED when set (any seed must pass), else a fixed one; the table of every pair is
 // printed.
 #include <gtest/gtest.h>
@@ -9,6 +10,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+
+#include <ompl/util/Console.h>
 
 #include "TrustCases.h"
 
@@ -26,8 +29,8 @@ unsigned seed(unsigned fallback)
 void checkTrials(const std::vector<std::pair<std::string, std::vector<std::pair<double, int>>>> &plan, unsigned s)
 {
     std::mt19937 rng(s);
-    std::printf("seed %u\n%-15s %5s %5s %18s %18s %10s %10s %8s  %s\n", s, "flow", "V", "dep", "start", "goal",
-                "default", "reference", "ratio", "winner");
+    std::printf("seed %u\n%-15s %5s %5s %18s %18s %10s %10s %8s %7s  %s\n", s, "flow", "V", "dep", "start", "goal",
+                "default", "reference", "ratio", "plan s", "winner");
     int trials = 0, reachable = 0;
     for (const Flow &flow : flows())
         for (const auto &[name, speeds] : plan)
@@ -40,9 +43,9 @@ void checkTrials(const std::vector<std::pair<std::string, std::vector<std::pair<
                     run(flow, t);
                     ++trials;
                     reachable += t.referenceFound;
-                    std::printf("%-15s %5.2f %5.1f %8.3f,%-9.3f %8.3f,%-9.3f %10.4f %10.4f %8.4f  %s\n",
+                    std::printf("%-15s %5.2f %5.1f %8.3f,%-9.3f %8.3f,%-9.3f %10.4f %10.4f %8.4f %7.2f  %s\n",
                                 t.flow.c_str(), t.speed, t.departure, t.start.x, t.start.y, t.goal.x, t.goal.y,
-                                t.defaultTime, t.referenceTime, t.referenceFound ? t.ratio() : NAN, t.winner.c_str());
+                                t.defaultTime, t.referenceTime, t.referenceFound ? t.ratio() : NAN, t.seconds, t.winner.c_str());
                     const std::string what = flow.name + " V=" + std::to_string(t.speed) + " from (" +
                                              std::to_string(t.start.x) + ", " + std::to_string(t.start.y) + ") to (" +
                                              std::to_string(t.goal.x) + ", " + std::to_string(t.goal.y) +
@@ -53,9 +56,11 @@ void checkTrials(const std::vector<std::pair<std::string, std::vector<std::pair<
                     // an extremal reaches the goal: the goal is reachable, and the default must say so with a route
                     EXPECT_TRUE(t.defaultSolved) << what << ": an extremal reaches the goal in " << t.referenceTime;
                     if (t.defaultSolved)
+                    {
                         EXPECT_LE(t.defaultTime, (1.0 + tolerance(t.speed)) * t.referenceTime)
                             << what << ": the default is " << 100.0 * (t.ratio() - 1.0)
                             << " % slower than an extremal through the goal";
+                    }
                 }
         }
     std::printf("%d trials, %d with an extremal through the goal\n", trials, reachable);
@@ -65,7 +70,8 @@ void checkTrials(const std::vector<std::pair<std::string, std::vector<std::pair<
 
 TEST(TrustFast, DefaultIsTheBestRouteOnRandomPairs)
 {
-    checkTrials({{"jet", {{0.5, 4}, {0.3, 3}}},
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    checkTrials({{"jet", {{0.5, 6}}},
                  {"double gyre", {{0.5, 2}}},
                  {"Rankine vortex", {{0.5, 2}}},
                  {"shear", {{0.5, 2}}}},
@@ -74,6 +80,7 @@ TEST(TrustFast, DefaultIsTheBestRouteOnRandomPairs)
 
 TEST(TrustProperty, DefaultIsTheBestRouteOnMoreThanAHundredPairs)
 {
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     checkTrials({{"jet", {{0.5, 25}, {0.3, 20}, {0.2, 15}}},
                  {"double gyre", {{0.5, 8}, {0.3, 7}}},
                  {"Rankine vortex", {{0.5, 8}, {0.3, 7}}},
