@@ -170,21 +170,27 @@ netcdf_detail::ForecastPiece netcdf_detail::readForecastPiece(const std::string 
     g.depth = z.values;
     g.time = t.values;
     NetCdfCurrentOptions unpack = opt;
-    unpack.zeroVelocityLand = false;  // decided after the mask, where the file says nothing else of land
+    unpack.zeroVelocityLand = false;  // decided after every other signal of land (zeroVelocityLand())
     if (l.staggered)
         readStaggeredVelocities(f, l, h, z, t, vel, unpack, g, out);
     else
         readVelocities(f, l, plan, t, vel, unpack, g, out);
     rotateGridToEastNorth(f, l, h, g, out);
+    // land is the union of every signal the file gives, each node counted for the first that marks it
     p.fillWater = g.water;
     applyLandMask(f, l, h, z, t, opt, g, out);
-    if (opt.zeroVelocityLand && out.fillLandNodes == 0 && out.maskLandNodes == 0)
+    p.maskWater = g.water;
+    applyTracerLand(f, l, h, z, t, opt, g, out);
+    p.cornerGrid = out.cornerGrid;
+    if (opt.zeroVelocityLand && !times)  // (a forecast in several files decides it on all its records)
     {
         const Packing pu = packingOf(f, l.uVar), pv = packingOf(f, l.vVar);
-        out.zeroLandNodes = zeroVelocityLand(
-            g, t, pu.scale != 1.0 || pu.offset != 0.0 || pv.scale != 1.0 || pv.offset != 0.0);
-        out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
+        const bool packed = pu.scale != 1.0 || pu.offset != 0.0 || pv.scale != 1.0 || pv.offset != 0.0;
+        const bool otherLand = out.fillLandNodes + out.maskLandNodes + out.tracerLandNodes > 0;
+        out.zeroLandNodes = zeroVelocityLand(g, t, packed, zeroLandRule(f, l, h, otherLand, out.cornerGrid));
     }
+    zeroLandVelocities(g);
+    out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
     if (z.sigma)
     {
         const double deepest = opt.depthAverage ? opt.depthAverage->second : opt.maxDepth;
@@ -195,7 +201,8 @@ netcdf_detail::ForecastPiece netcdf_detail::readForecastPiece(const std::string 
         out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
     }
     if (p.fillWater.size() != g.water.size())
-        p.fillWater = g.water;  // layers remapped: land from fill values is not told apart from the mask's
+        p.fillWater = p.maskWater = g.water;  // layers remapped: land from fill values is not told apart from the
+                                              // mask's and the tracer's
     return p;
 }
 

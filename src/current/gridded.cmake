@@ -28,6 +28,7 @@ if(OMPL_GLIDER_WITH_NETCDF)
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/Hyperslab.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/UnitsAndPacking.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/LandMask.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/TracerLand.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/NodeCoordinates.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/ForecastFiles.cpp
   )

@@ -51,11 +51,13 @@ struct NetCdfCurrentOptions
                             ///< velocities' grid unless u says it is eastward (standard_name eastward_*, or
                             ///< "east" in its name, as ROMS' u_eastward); "none": none
 
-    // --- land (besides fill values of u/v, which are always land) ---
+    // --- land (besides fill values of u/v, which are always land; every signal's land is land: the union) ---
     std::string maskName;  ///< land/sea mask variable; empty: found automatically (loadNetCdfCurrents()); "none": none
+    std::string tracerName;  ///< tracer (temperature, salinity) whose missing values mark land; empty: found
+                             ///< automatically (loadNetCdfCurrents()); "none": none
     bool zeroVelocityLand{true};  ///< a node whose u and v are exactly 0 in every record of the trip is land (models
-                                    ///< such as POP store land velocity points as zeros, not fill values), where
-                                    ///< neither fill values nor a mask mark land in the region
+                                    ///< such as POP store coastal velocity points as zeros, not fill values) where it
+                                    ///< touches other land or the file marks none (rules at loadNetCdfCurrents())
 
     // --- model ---
     GriddedFieldOptions field;  ///< schemes (xy bilinear, depth linear, time linear), BeyondForecast, name
@@ -111,9 +113,18 @@ struct NetCdfCurrents
     /// or the grid is not rotated), "variable 'angle'", or "derived from lon_rho/lat_rho: the grid's i direction
     /// 29.7..30.3 degrees counter-clockwise from east" (a rotated curvilinear grid without angle variable)
     std::string gridAngle;
-    std::size_t landNodes{0};        ///< loaded nodes (x depth layers) that are land, for any of the reasons:
+    /// The tracer whose missing values mark land ("" when none), and where its cells lie: "same points", or
+    /// "B grid: velocity points at the north-east corners of the tracer cells" (or south-west): a velocity point is
+    /// then land when any of the 4 tracer cells around it is.
+    std::string tracerVariable, tracerPlacement;
+    /// The velocities are a B grid's (POP, MOM): the corners of the tracer cells, where the model writes every
+    /// point that touches a land cell as zero velocity; every still node is then land.
+    bool cornerGrid{false};
+    std::size_t landNodes{0};        ///< loaded nodes (x depth layers) that are land, for any of the reasons, each
+                                     ///< node counted once, for the first of them that marks it:
     std::size_t fillLandNodes{0};    ///<   u or v a fill value in some record of the trip
     std::size_t maskLandNodes{0};    ///<   land in the mask (in some record of the trip, for a mask with a time axis)
+    std::size_t tracerLandNodes{0};  ///<   a tracer's missing value (tracerVariable) in some record of the trip
     std::size_t zeroLandNodes{0};    ///<   u = v = 0 exactly in every record of the trip (zeroVelocityLand)
     /// Bounds of the loaded nodes in the file's coordinates: longitudes from lonMin in [-180, 180) east to lonMax
     /// (beyond 180 when the nodes cross the antimeridian), latitudes; x and y in Cartesian mode (file units).
@@ -153,26 +164,51 @@ struct NetCdfCurrents
 /// ("m s-1", "cm/s", "knots", "km/h"; "km", "centimeters": UnitConversion.h). Only the hyperslab covering the
 /// region (+ margin), the depth layers down to maxDepth and the time window is read (nc_get_vara).
 ///
-/// Land, per node and depth layer, is the union of: u or v a fill value in any of the trip's records; land in a
-/// mask variable (below), in any of the trip's records when the mask has the time axis of u; u = v = 0 exactly in
-/// all of the trip's records (NetCdfCurrentOptions::zeroVelocityLand, on by default; not applied when every
-/// water node would be zero, a still field, nor to packed data seen in a single record, where rounding can zero a
-/// calm node, nor where fill values or a mask variable mark land in the region: the file says where its land is,
-/// and zeros are calm water). The trip's records are
+/// Land, per node and depth layer, is the union of every signal the file gives (the more conservative where they
+/// disagree), each decided on the trip's records: u or v a fill value in any of them; land in a mask variable
+/// (below), in any of them when the mask has the time axis of u; a tracer's missing value (below); and still nodes,
+/// u = v = 0 exactly in all of them (NetCdfCurrentOptions::zeroVelocityLand, on by default). The trip's records are
 /// those from the last at or before the departure to the first at or after departure + horizon (not the stencil
 /// margin loaded around them), so a seasonal mask or missing winter data close what is closed during the trip,
 /// not all year.
+///
+/// Still nodes are land where the file marks no other land in the region (POP-like files whose land is all zeros),
+/// on a B grid (NetCdfCurrents::cornerGrid: the model writes every velocity point touching a land tracer cell as
+/// zero, an island's corners too), and elsewhere where their block of still nodes (8-connected in a layer) touches
+/// land or an edge of the loaded nodes beyond which the file goes on (the coast's ring of zeros around land marked
+/// by fill values, a mask or a tracer). A block of still nodes in open water, away from any land, in a file that
+/// marks its land otherwise stays water (a calm patch; nothing in an A-grid file tells it from an island written
+/// as zeros, which a tracer or mask then marks). Never when every water node is still (a still field), nor for
+/// packed data seen in a single record, where rounding can zero a calm node.
+///
+/// The tracer (NetCdfCurrentOptions::tracerName; "none": none) is found automatically: standard_name
+/// sea_water_potential_temperature, sea_water_temperature, sea_water_conservative_temperature, sea_water_salinity,
+/// sea_water_practical_salinity or sea_water_absolute_salinity, then the names (case-insensitive) temp, t, salt,
+/// theta, thetao, so, votemper, vosaline, water_temp, salinity; only one whose dimensions fit u's grid as a mask's
+/// must, and that holds a valid value in the loaded region (a variable never written is all fill values). It is
+/// land where it holds its _FillValue, missing_value, NaN or a value outside its valid range (per layer when it has
+/// u's depth dimension, else at every layer). Its cells are placed on the velocity points (NetCdfCurrents::
+/// tracerPlacement): on a B grid a velocity point is land when any of the 4 tracer cells around it is, which is
+/// established when the tracer's own coordinates (POP's TLAT/TLONG, MOM's xt_ocean/yt_ocean) lie half a cell
+/// south-west (or north-east) of the velocities' (ULAT/ULONG), or when the tracer shares the velocities'
+/// coordinates and these are named as a B grid's velocity points (ULAT/ULONG/ULON, xu_ocean/yu_ocean, or
+/// "u-grid" in their long_name, as NCL's pop.nc: POP's velocity point (j, i) is the north-east corner of tracer
+/// cell (j, i)); else the tracer at the velocity point's own index. On a ROMS C grid the tracer is on the rho
+/// points the field is loaded on. Across the seam of a curvilinear grid whose columns wrap, the neighbour cells
+/// are read across it.
+///
 /// The mask variable is found automatically, in this order: a variable
 /// with CF flag_values/flag_meanings naming both land and sea/water/ocean (not a quality flag such as
 /// "land_contaminated"), standard_name land_binary_mask or sea_binary_mask, then the names
-/// (case-insensitive) mask_rho, mask, tmask, landmask, land_mask, lsm, land_sea_mask, seamask, sea_mask, kmt; only
-/// one whose dimensions fit u's grid (its horizontal dimensions are u's, or have their lengths; a time or depth
+/// (case-insensitive) mask_rho, mask, tmask, landmask, land_mask, lsm, land_sea_mask, seamask, sea_mask, kmu, kmt;
+/// only one whose dimensions fit u's grid (its horizontal dimensions are u's, or have their lengths; a time or depth
 /// dimension must be u's) is taken. A given name (maskName) must fit. The values mean:
 ///  - flag_values with flag_meanings: a value whose meaning has the word sea, water or ocean and none of ice, land,
 ///    shelf, lake, glacier, river ("sea", "open_water"; not "sea_ice") is water, any other value land;
 ///  - land_binary_mask, or (without standard_name sea_binary_mask) a name containing "land" or "lsm" (ERA5's land
 ///    fraction, WRF's LANDMASK): >= 0.5 is land;
-///  - kmt / KMT (POP's number of ocean levels): depth layer k (file index) is water when k < KMT;
+///  - kmt / KMT, kmu / KMU (POP's number of ocean levels at the tracer / velocity points): depth layer k (file
+///    index) is water when k < KMT;
 ///  - sea_binary_mask and every other name (ROMS mask_rho, NEMO tmask, mask): >= 0.5 is water;
 ///  - a fill value is land.
 ///
@@ -196,7 +232,8 @@ struct NetCdfCurrents
 /// mean of the v points south and north of it, read at their own points. A face that mask_u/mask_v marks as land,
 /// or whose value is a fill value, counts as zero flow (no flow through a coast); a rho point whose two u faces or
 /// two v faces are both fill values is land, as is a rho point that mask_rho marks as land. A B grid (POP, MOM: u and
-/// v together on the velocity points, ULONG/ULAT) is an ordinary curvilinear grid with an angle. Terrain-following
+/// v together on the velocity points, ULONG/ULAT) is an ordinary curvilinear grid with an angle (its land: the
+/// tracer cells around each velocity point, and its still nodes, above). Terrain-following
 /// levels of ROMS (CF ocean_s_coordinate_g1/_g2) become depth levels in metres per water column (level depths
 /// from formula_terms or ROMS' Cs_r, h, hc, zeta; linear in depth between levels; below the floor h is land; the
 /// standard levels 0, 2, 5, 10, ... m down to maxDepth plus two); other sigma coordinates are an Error.
@@ -292,9 +329,9 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const std::string &ti
 /// - Gaps: a step between two files' records within the records read longer than twice the forecast's typical
 ///   step (the median step of the joined axis) is refused, naming both files and the dates: interpolating across
 ///   a missing day is not what a pilot expects. Gaps outside the trip's records do not matter.
-/// - Land: a node is land when it is land in any file's records of the trip (fill values, a mask); zero-velocity
-///   land (NetCdfCurrentOptions::zeroVelocityLand) is decided on all the trip's records of all files, after the
-///   mask.
+/// - Land: a node is land when it is land in any file's records of the trip (fill values, a mask, a tracer);
+///   zero-velocity land (NetCdfCurrentOptions::zeroVelocityLand) is decided on all the trip's records of all
+///   files, after the others. The files must agree on the mask and tracer variables.
 /// One path: exactly loadNetCdfCurrents(path, options).
 /// @throws Error naming the file(s) for: no file; a file without time dimension or without dated time axis
 /// (undated files cannot be ordered or joined); different calendars; two files with the same first time (the

@@ -162,13 +162,13 @@ std::vector<std::size_t> usedColumns(const std::vector<char> &used, std::size_t 
     return cols;
 }
 
-/// The index box of the nodes in the region, widened by the margin nodes; the whole grid without region.
-IndexBox regionBox(const NcFile &f, const Layout &l, const RegionOfInterest &r)
+/// The index box of the nodes in the region, widened by the margin nodes; the whole grid without region. period:
+/// columnPeriod() of the grid (0 for a staggered one).
+IndexBox regionBox(const NcFile &f, const Layout &l, const RegionOfInterest &r, std::size_t period)
 {
     const std::size_t nx = f.dimLen(l.dims[std::size_t(l.dimX)]), ny = f.dimLen(l.dims[std::size_t(l.dimY)]);
     if (!r.given)
         return {0, ny - 1, range(0, nx - 1)};
-    const std::size_t period = l.staggered ? 0 : columnPeriod(f, l, nx, ny);
     IndexBox box{ny, 0, {}};
     std::vector<char> used(period > 0 ? period : nx, 0);
     const std::size_t block = std::max<std::size_t>(1, 1000000 / std::max<std::size_t>(1, nx));
@@ -210,7 +210,11 @@ HorizontalSubset curvilinearSubset(const NcFile &f, const Layout &l, const Regio
                                    const AxisSelection &t)
 {
     HorizontalSubset h;
-    IndexBox box = regionBox(f, l, r);
+    const std::size_t period =
+        l.staggered ? 0
+                    : columnPeriod(f, l, f.dimLen(l.dims[std::size_t(l.dimX)]), f.dimLen(l.dims[std::size_t(l.dimY)]));
+    IndexBox box = regionBox(f, l, r, period);
+    h.xPeriod = period;
     if (l.staggered)
     {
         // a C grid's u and v surround its interior cell centres only: rows and columns 1 .. n - 2

@@ -189,6 +189,10 @@ std::string gridDifference(const ForecastPiece &a, const ForecastPiece &b)
         return "land/sea mask variable: " +
                (a.out.maskVariable.empty() ? std::string("none") : "'" + a.out.maskVariable + "'") + " against " +
                (b.out.maskVariable.empty() ? std::string("none") : "'" + b.out.maskVariable + "'");
+    if (a.out.tracerVariable != b.out.tracerVariable)
+        return "tracer variable marking land: " +
+               (a.out.tracerVariable.empty() ? std::string("none") : "'" + a.out.tracerVariable + "'") + " against " +
+               (b.out.tracerVariable.empty() ? std::string("none") : "'" + b.out.tracerVariable + "'");
     if (a.g.nx != b.g.nx || a.g.ny != b.g.ny)
         return "nodes in the region: " + std::to_string(a.g.nx) + " x " + std::to_string(a.g.ny) + " against " +
                std::to_string(b.g.nx) + " x " + std::to_string(b.g.ny) + " (x by y)";
@@ -384,26 +388,31 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
         {
             p.g.water[n] = p.g.water[n] && b.g.water[n];
             p.fillWater[n] = p.fillWater[n] && b.fillWater[n];
+            p.maskWater[n] = p.maskWater[n] && b.maskWater[n];
         }
+        p.cornerGrid = p.cornerGrid || b.cornerGrid;
     }
     GriddedData &g = p.g;
     g.time = sel.values;
     p.t = sel;
     NetCdfCurrents &out = p.out;
-    out.fillLandNodes = out.maskLandNodes = out.zeroLandNodes = 0;
+    // each node counted for the first signal that marks it in any file: fill values, the mask, the tracer
+    out.fillLandNodes = out.maskLandNodes = out.tracerLandNodes = out.zeroLandNodes = 0;
     for (std::size_t n = 0; n < g.water.size(); ++n)
     {
         out.fillLandNodes += !p.fillWater[n];
-        out.maskLandNodes += p.fillWater[n] && !g.water[n];
+        out.maskLandNodes += p.fillWater[n] && !p.maskWater[n];
+        out.tracerLandNodes += p.maskWater[n] && !g.water[n];
     }
-    if (opt.zeroVelocityLand && out.fillLandNodes == 0 && out.maskLandNodes == 0)  // the file says nothing of land
-        out.zeroLandNodes = zeroVelocityLand(g, sel, packed);
+    out.cornerGrid = p.cornerGrid;
+    if (opt.zeroVelocityLand)
+    {
+        const bool otherLand = out.fillLandNodes + out.maskLandNodes + out.tracerLandNodes > 0;
+        out.zeroLandNodes =
+            zeroVelocityLand(g, sel, packed, zeroLandRule(*p.file, p.layout, p.h, otherLand, p.cornerGrid));
+    }
     out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
-    // as after the mask stage of one file: a land node keeps no velocity in any record
-    const std::size_t perTime = g.water.size();
-    for (std::size_t idx = 0; idx < g.u.size(); ++idx)
-        if (!g.water[idx % perTime])
-            g.u[idx] = g.v[idx] = 0.0f;
+    zeroLandVelocities(g);  // as in one file: a land node keeps no velocity in any record
     out.dated = true;
     out.steady = false;
     out.calendar = a.calendar;

@@ -34,13 +34,16 @@ struct ForecastPiece
     AxisSelection z, t;
     HorizontalSubset h;
     GriddedData g;                       ///< nx, ny, depth, time, u, v, water (no coordinates yet)
-    std::vector<std::uint8_t> fillWater;  ///< g.water before the mask stage (land from fill values, zero velocity)
+    std::vector<std::uint8_t> fillWater;  ///< g.water before the mask stage (land from fill values)
+    std::vector<std::uint8_t> maskWater;  ///< g.water after the mask stage, before the tracer's
+    bool cornerGrid{false};               ///< NetCdfCurrents::cornerGrid (a B grid: every still node is land)
     NetCdfCurrents out;                   ///< what is known so far (variables, time fields, land counts, values)
 };
 
-/// Opens the file and runs the stages up to the land mask. times null: the records are chosen by selectTimes()
-/// (the single-file path); else they are `*times` (positions in idx are file indices, values the field times of
-/// the whole forecast) and totalTimes, the records of the whole forecast, is what the memory check counts.
+/// Opens the file and runs the stages up to the land: fill values, the mask, the tracer, and (one file: times null)
+/// zero velocity. times null: the records are chosen by selectTimes() (the single-file path); else they are
+/// `*times` (positions in idx are file indices, values the field times of the whole forecast), totalTimes, the
+/// records of the whole forecast, is what the memory check counts, and zero-velocity land is left to the caller.
 ForecastPiece readForecastPiece(const std::string &path, const NetCdfCurrentOptions &opt,
                                 const AxisSelection *times = nullptr, std::size_t totalTimes = 0);
 

@@ -1,7 +1,8 @@
 // Reading the velocities and the land: u and v over the hyperslab plan, unpacked to m/s; a node (per depth layer)
 // is land where u or v is a fill value (or outside the valid range, or NaN) in a record of the trip, where a
-// land/sea mask variable says land, and (NetCdfCurrentOptions::zeroVelocityLand) where u = v = 0 exactly in
-// every record of the trip. The rules of the mask variable are documented at loadNetCdfCurrents() (NetCdfCurrents.h).
+// land/sea mask variable says land, where a tracer is missing (TracerLand.cpp), and (NetCdfCurrentOptions::
+// zeroVelocityLand) where u = v = 0 exactly in every record of the trip next to that land. The rules are
+// documented at loadNetCdfCurrents() (NetCdfCurrents.h).
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -68,11 +69,26 @@ void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv,
     }
 }
 
-/// NetCdfCurrentOptions::zeroVelocityLand (see NetCdfInternal.h).
-std::size_t zeroVelocityLand(GriddedData &g, const AxisSelection &t, bool packed)
+ZeroLandRule zeroLandRule(const NcFile &f, const Layout &l, const HorizontalSubset &h, bool otherLand,
+                          bool cornerGrid)
 {
-    const std::size_t perTime = g.water.size();
-    std::vector<std::uint8_t> allZero(perTime, 1);
+    ZeroLandRule r;
+    r.everyStillNode = !otherLand || cornerGrid;
+    const std::size_t nx = f.dimLen(l.dims[std::size_t(l.dimX)]), ny = f.dimLen(l.dims[std::size_t(l.dimY)]);
+    // an edge is open unless it is the file's own (the loaded nodes are a contiguous block, or a run of columns
+    // across a periodic grid's seam, whose end columns are then not the file's first or last)
+    auto open = [](std::size_t idx, std::size_t n) { return idx != 0 && idx + 1 != n; };
+    r.openEdge[0] = open(h.xIdx.front(), nx);
+    r.openEdge[1] = open(h.xIdx.back(), nx);
+    r.openEdge[2] = open(h.yIdx.front(), ny);
+    r.openEdge[3] = open(h.yIdx.back(), ny);
+    return r;
+}
+
+std::size_t zeroVelocityLand(GriddedData &g, const AxisSelection &t, bool packed, const ZeroLandRule &rule)
+{
+    const std::size_t perTime = g.water.size(), nx = g.nx, ny = g.ny, nh = nx * ny;
+    std::vector<std::uint8_t> still(perTime, 1);
     std::size_t tripRecords = 0;
     for (std::size_t it = 0; it < g.time.size(); ++it)
     {
@@ -81,25 +97,159 @@ std::size_t zeroVelocityLand(GriddedData &g, const AxisSelection &t, bool packed
         ++tripRecords;
         for (std::size_t n = 0; n < perTime; ++n)
             if (g.u[it * perTime + n] != 0.0f || g.v[it * perTime + n] != 0.0f)
-                allZero[n] = 0;
+                still[n] = 0;
     }
     std::size_t zeros = 0, wet = 0;
     for (std::size_t n = 0; n < perTime; ++n)
-        if (g.water[n])
-        {
-            ++wet;
-            zeros += allZero[n];
-        }
-    if (!(zeros < wet) || (packed && tripRecords < 2))
+    {
+        still[n] = still[n] && g.water[n];
+        wet += g.water[n];
+        zeros += still[n];
+    }
+    if (zeros == 0 || !(zeros < wet) || (packed && tripRecords < 2))
         return 0;
+    std::vector<std::uint8_t> land(perTime, 0);
+    if (rule.everyStillNode)
+        land = still;
+    else
+    {
+        // per layer, the blocks of still nodes (8-connected): land when one of them touches land or an open edge
+        std::vector<std::size_t> block, stack;
+        std::vector<std::uint8_t> seen(perTime, 0);
+        for (std::size_t n0 = 0; n0 < perTime; ++n0)
+        {
+            if (!still[n0] || seen[n0])
+                continue;
+            const std::size_t layer = n0 / nh * nh;
+            block.clear();
+            stack.assign(1, n0);
+            seen[n0] = 1;
+            bool coast = false;
+            while (!stack.empty())
+            {
+                const std::size_t n = stack.back();
+                stack.pop_back();
+                block.push_back(n);
+                const std::size_t j = (n - layer) / nx, i = (n - layer) % nx;
+                coast = coast || (i == 0 && rule.openEdge[0]) || (i + 1 == nx && rule.openEdge[1]) ||
+                        (j == 0 && rule.openEdge[2]) || (j + 1 == ny && rule.openEdge[3]);
+                for (std::size_t jj = j > 0 ? j - 1 : 0; jj <= std::min(ny - 1, j + 1); ++jj)
+                    for (std::size_t ii = i > 0 ? i - 1 : 0; ii <= std::min(nx - 1, i + 1); ++ii)
+                    {
+                        const std::size_t m = layer + jj * nx + ii;
+                        if (!g.water[m])
+                            coast = true;
+                        else if (still[m] && !seen[m])
+                        {
+                            seen[m] = 1;
+                            stack.push_back(m);
+                        }
+                    }
+            }
+            if (coast)
+                for (std::size_t n : block)
+                    land[n] = 1;
+        }
+    }
     std::size_t made = 0;
     for (std::size_t n = 0; n < perTime; ++n)
-        if (g.water[n] && allZero[n])
+        if (land[n])
         {
             g.water[n] = 0;
             ++made;
         }
     return made;
+}
+
+void zeroLandVelocities(GriddedData &g)
+{
+    const std::size_t perTime = g.water.size();
+    for (std::size_t idx = 0; idx < g.u.size(); ++idx)
+        if (!g.water[idx % perTime])
+            g.u[idx] = g.v[idx] = 0.0f;
+}
+
+void GridFit::setHorizontal(const std::vector<std::size_t> &yIdx, const std::vector<std::size_t> &xIdx)
+{
+    for (std::size_t d = 0; d < role.size(); ++d)
+        if (role[d] == Role::Y)
+            reads[d] = makeDimRead(yIdx);
+        else if (role[d] == Role::X)
+            reads[d] = makeDimRead(xIdx);
+}
+
+std::optional<GridFit> fitToGrid(const NcFile &f, const Layout &l, int var, const HorizontalSubset &h,
+                                 const AxisSelection &z, const AxisSelection &t, std::string &why)
+{
+    const std::vector<int> md = f.varDims(var);
+    if (md.size() < 2)
+    {
+        why = "it has " + std::to_string(md.size()) + " dimension(s), at least 2 (y, x) are needed";
+        return std::nullopt;
+    }
+    const int uy = l.dims[l.dimY], ux = l.dims[l.dimX];
+    GridFit m;
+    m.reads.resize(md.size());
+    std::vector<Role> &role = m.role;
+    role.assign(md.size(), Role::None);
+    for (std::size_t d = 0; d < md.size(); ++d)
+        for (std::size_t e = 0; e < l.dims.size(); ++e)
+            if (md[d] == l.dims[e])
+                role[d] = l.role[e];
+    // the last two dimensions stand for u's y and x when their lengths agree (a variable on dimensions of its own)
+    const std::size_t a = md.size() - 2, b = md.size() - 1;
+    if (role[a] == Role::None && role[b] == Role::None && f.dimLen(md[a]) == f.dimLen(uy) &&
+        f.dimLen(md[b]) == f.dimLen(ux))
+    {
+        role[a] = Role::Y;
+        role[b] = Role::X;
+    }
+    if (std::count(role.begin(), role.end(), Role::Y) != 1 || std::count(role.begin(), role.end(), Role::X) != 1)
+    {
+        why = "its dimensions (";
+        for (std::size_t d = 0; d < md.size(); ++d)
+            why += (d ? ", " : "") + f.dimName(md[d]) + " = " + std::to_string(f.dimLen(md[d]));
+        why += ") are not the horizontal grid of '" + l.uName + "' (" + f.dimName(uy) + " = " +
+               std::to_string(f.dimLen(uy)) + ", " + f.dimName(ux) + " = " + std::to_string(f.dimLen(ux)) + ")";
+        return std::nullopt;
+    }
+    const std::size_t nx = h.xIdx.size(), nh = nx * h.yIdx.size();
+    for (std::size_t d = 0; d < md.size(); ++d)
+    {
+        m.hasTime = m.hasTime || role[d] == Role::Time;
+        m.hasDepth = m.hasDepth || role[d] == Role::Depth;
+        if (role[d] == Role::None && f.dimLen(md[d]) != 1)
+        {
+            why = "its dimension " + f.dimName(md[d]) + " (" + std::to_string(f.dimLen(md[d])) +
+                  ") is not a dimension of '" + l.uName + "'";
+            return std::nullopt;
+        }
+    }
+    const std::size_t nz = m.hasDepth ? z.idx.size() : 1;
+    m.stride.assign(md.size(), 0);
+    for (std::size_t d = 0; d < md.size(); ++d)
+        switch (role[d])
+        {
+            case Role::Time:
+                m.reads[d] = makeDimRead(t.idx);
+                m.stride[d] = nz * nh;
+                break;
+            case Role::Depth:
+                m.reads[d] = makeDimRead(z.idx);
+                m.stride[d] = nh;
+                break;
+            case Role::Y:
+                m.stride[d] = nx;
+                break;
+            case Role::X:
+                m.stride[d] = 1;
+                break;
+            case Role::None:
+                m.reads[d] = makeDimRead({0});
+                break;
+        }
+    m.setHorizontal(h.yIdx, h.xIdx);
+    return m;
 }
 
 namespace
@@ -168,96 +318,12 @@ Mask maskOf(const NcFile &f, int var)
     return m;
 }
 
-/// How one dimension of the mask is read: the selection of u's dimension it stands for, and its stride in the
-/// mask's internal array (t, z, y, x with only the mask's own axes).
-struct MaskDims
-{
-    std::vector<DimRead> reads;
-    std::vector<std::size_t> stride;
-    bool hasTime{false}, hasDepth{false};
-};
-
-/// Where each dimension of the mask sits, or nullopt with the reason when it does not fit u's grid.
-std::optional<MaskDims> fitMask(const NcFile &f, const Layout &l, int var, const HorizontalSubset &h,
-                                const AxisSelection &z, const AxisSelection &t, std::string &why)
-{
-    const std::vector<int> md = f.varDims(var);
-    if (md.size() < 2)
-    {
-        why = "it has " + std::to_string(md.size()) + " dimension(s), a mask needs at least 2 (y, x)";
-        return std::nullopt;
-    }
-    const int uy = l.dims[l.dimY], ux = l.dims[l.dimX];
-    MaskDims m;
-    m.reads.resize(md.size());
-    std::vector<Role> role(md.size(), Role::None);
-    for (std::size_t d = 0; d < md.size(); ++d)
-        for (std::size_t e = 0; e < l.dims.size(); ++e)
-            if (md[d] == l.dims[e])
-                role[d] = l.role[e];
-    // the last two dimensions stand for u's y and x when their lengths agree (a mask on dimensions of its own)
-    const std::size_t a = md.size() - 2, b = md.size() - 1;
-    if (role[a] == Role::None && role[b] == Role::None && f.dimLen(md[a]) == f.dimLen(uy) &&
-        f.dimLen(md[b]) == f.dimLen(ux))
-    {
-        role[a] = Role::Y;
-        role[b] = Role::X;
-    }
-    if (std::count(role.begin(), role.end(), Role::Y) != 1 || std::count(role.begin(), role.end(), Role::X) != 1)
-    {
-        why = "its dimensions (";
-        for (std::size_t d = 0; d < md.size(); ++d)
-            why += (d ? ", " : "") + f.dimName(md[d]) + " = " + std::to_string(f.dimLen(md[d]));
-        why += ") are not the horizontal grid of '" + l.uName + "' (" + f.dimName(uy) + " = " +
-               std::to_string(f.dimLen(uy)) + ", " + f.dimName(ux) + " = " + std::to_string(f.dimLen(ux)) + ")";
-        return std::nullopt;
-    }
-    const std::size_t nx = h.xIdx.size(), nh = nx * h.yIdx.size();
-    for (std::size_t d = 0; d < md.size(); ++d)
-    {
-        m.hasTime = m.hasTime || role[d] == Role::Time;
-        m.hasDepth = m.hasDepth || role[d] == Role::Depth;
-        if (role[d] == Role::None && f.dimLen(md[d]) != 1)
-        {
-            why = "its dimension " + f.dimName(md[d]) + " (" + std::to_string(f.dimLen(md[d])) +
-                  ") is not a dimension of '" + l.uName + "'";
-            return std::nullopt;
-        }
-    }
-    const std::size_t nz = m.hasDepth ? z.idx.size() : 1;
-    m.stride.assign(md.size(), 0);
-    for (std::size_t d = 0; d < md.size(); ++d)
-        switch (role[d])
-        {
-            case Role::Time:
-                m.reads[d] = makeDimRead(t.idx);
-                m.stride[d] = nz * nh;
-                break;
-            case Role::Depth:
-                m.reads[d] = makeDimRead(z.idx);
-                m.stride[d] = nh;
-                break;
-            case Role::Y:
-                m.reads[d] = makeDimRead(h.yIdx);
-                m.stride[d] = nx;
-                break;
-            case Role::X:
-                m.reads[d] = makeDimRead(h.xIdx);
-                m.stride[d] = 1;
-                break;
-            case Role::None:
-                m.reads[d] = makeDimRead({0});
-                break;
-        }
-    return m;
-}
-
 const char *const kMaskNames[] = {"mask_rho", "mask", "tmask", "landmask", "land_mask", "lsm",
                                   "land_sea_mask", "seamask", "sea_mask", "kmu", "kmt"};
 
 /// The mask variable: the given one (which must fit), else the first candidate that fits; -1 for none.
 int findMask(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, const HorizontalSubset &h,
-             const AxisSelection &z, const AxisSelection &t, std::optional<MaskDims> &dims)
+             const AxisSelection &z, const AxisSelection &t, std::optional<GridFit> &dims)
 {
     std::string why;
     if (lower(opt.maskName) == "none")
@@ -268,7 +334,7 @@ int findMask(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, 
         if (!v)
             throw f.error("no mask variable '" + opt.maskName +
                           "' (given as the land/sea mask: --mask-var, current.variables.mask)");
-        dims = fitMask(f, l, *v, h, z, t, why);
+        dims = fitToGrid(f, l, *v, h, z, t, why);
         if (!dims)
             throw f.error("mask variable '" + opt.maskName +
                           "' (--mask-var, current.variables.mask) does not fit the velocities: " + why);
@@ -299,7 +365,7 @@ int findMask(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, 
             if (lowerName(f, var) == name)
                 order.push_back(var);
     for (int var : order)
-        if (var != l.uVar && var != l.vVar && (dims = fitMask(f, l, var, h, z, t, why)))
+        if (var != l.uVar && var != l.vVar && (dims = fitToGrid(f, l, var, h, z, t, why)))
             return var;
     return -1;
 }
@@ -319,7 +385,7 @@ void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan,
 void applyLandMask(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                    const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
 {
-    std::optional<MaskDims> dims;
+    std::optional<GridFit> dims;
     const int var = findMask(f, l, opt, h, z, t, dims);
     if (var >= 0)
     {
@@ -366,11 +432,6 @@ void applyLandMask(const NcFile &f, const Layout &l, const HorizontalSubset &h, 
                 }
     }
     out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
-    // a node that is land by the mask keeps no velocity: the field treats land nodes as zero current
-    const std::size_t perTime = g.water.size();
-    for (std::size_t idx = 0; idx < g.u.size(); ++idx)
-        if (!g.water[idx % perTime])
-            g.u[idx] = g.v[idx] = 0.0f;
 }
 void averageOverDepth(double top, double bottom, GriddedData &g)
 {

@@ -16,7 +16,8 @@
 ///  - CurvilinearSubset.cpp  index box of a 2-D grid for the region and its node coordinates
 ///  - Hyperslab.cpp          contiguous runs per dimension and the scattered nc_get_vara reads
 ///  - UnitsAndPacking.cpp    velocity and axis units, scale_factor/add_offset and fill/valid-range rules
-///  - LandMask.cpp           reading u/v: unpacking, unit conversion; land from fill values, zero velocity, a mask
+///  - LandMask.cpp           reading u/v: unpacking, unit conversion; land from fill values, a mask, zero velocity
+///  - TracerLand.cpp         land from a tracer's missing values (temperature, salinity), B grid corners
 ///  - Staggered.cpp          a ROMS C grid's u/v read at their own points onto the rho points; grid angle rotation
 ///  - SigmaLevels.cpp        terrain-following s-levels (ROMS) interpolated onto depth levels in metres
 ///  - NodeCoordinates.cpp    projected (and rotated) or Cartesian node coordinates
@@ -226,6 +227,9 @@ struct HorizontalSubset
     std::vector<double> nodeLon, nodeLat;  ///< curvilinear: coordinates per internal j * nx + i
     double centreLon{kNaN}, centreLat{kNaN};
     double lonLo{kNaN}, lonHi{kNaN}, latLo{kNaN}, latHi{kNaN};  ///< bounds of the nodes (longitudes unwrapped)
+    /// curvilinear grids: the period of the file's columns when they wrap round the globe (column P is column 0
+    /// again: a displaced-pole or tripolar grid's seam), else 0; the tracer stage reads across it
+    std::size_t xPeriod{0};
 };
 
 /// Indices [a, b] (inclusive) of an axis (ascending or descending) whose values lie in [lo, hi], widened by
@@ -337,21 +341,49 @@ Packing packingOf(const NcFile &f, int var);
 void unpackCoordinates(const NcFile &f, int var, std::vector<double> &values);
 
 /// Unpacks raw u/v (internal order t, z, y, x; packings pu/pv, converted to m/s by vel) into g.u / g.v and marks
-/// land in g.water (per z, y, x) as readVelocities() says, deciding on the trip's records only (t.inTrip()).
+/// land in g.water (per z, y, x) where u or v is a fill value (or NaN, or outside the valid range) in any of the
+/// trip's records (t.inTrip()), counted in out.fillLandNodes; with zeroIsLand also where u = v = 0 exactly in all
+/// of them (counted in out.zeroLandNodes; not when every water node is zero). The loader passes zeroIsLand = false
+/// and decides zero-velocity land after every other stage (zeroVelocityLand()).
 void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv, const Packing &pu,
                    const Packing &pv, const LinearConversion &vel, bool zeroIsLand, const AxisSelection &t,
                    GriddedData &g, NetCdfCurrents &out);
-/// Reads u and v over the plan into g.u / g.v (unpacked, converted to m/s by vel) and g.water (land where u or v is a fill value at
-/// any of the trip's records (t.inTrip()), or, with opt.zeroVelocityLand, where both are exactly 0 at all of
-/// them; counted in
-/// Zero velocity as land (NetCdfCurrentOptions::zeroVelocityLand): the water nodes (per z, y, x) whose u and v are
-/// exactly 0 in every record of the trip (t.inTrip()) become land in g.water; not when every water node is zero (a
-/// calm field is water) nor for packed data seen in one record. Called after the mask stage, and only when neither
-/// fill values nor a mask marked land in the region. Returns the nodes it made land.
-std::size_t zeroVelocityLand(GriddedData &g, const AxisSelection &t, bool packed);
-/// out.fillLandNodes / out.zeroLandNodes). g.nx, g.ny, g.depth and g.time must be set.
+/// Reads u and v over the plan into g.u / g.v (unpacked, converted to m/s by vel) and g.water (unpackAndMask()
+/// with opt.zeroVelocityLand). g.nx, g.ny, g.depth and g.time must be set.
 void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
                     const LinearConversion &vel, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
+
+/// How zero velocity becomes land (NetCdfCurrentOptions::zeroVelocityLand), decided after the fill values, the
+/// mask and the tracer.
+struct ZeroLandRule
+{
+    /// every still node is land: the file marks no other land in the region, or the velocities are a B grid's
+    /// (cornerVelocities(): a model such as POP writes every velocity point that touches a land tracer cell as
+    /// zero, an island's too)
+    bool everyStillNode{false};
+    /// the file has nodes beyond this edge of the loaded ones (west, east, south, north in internal order): a
+    /// still block reaching it may belong to land beyond the region
+    bool openEdge[4]{false, false, false, false};
+};
+
+/// The ZeroLandRule of a loaded subset: everyStillNode when `otherLand` is false (no fill, mask or tracer land in
+/// the region) or cornerGrid; openEdge from the subset's file indices (an edge is open unless its row or column is
+/// the first or last of the file).
+ZeroLandRule zeroLandRule(const NcFile &f, const Layout &l, const HorizontalSubset &h, bool otherLand,
+                          bool cornerGrid);
+
+/// Zero velocity as land: a water node (per z, y, x) whose u and v are exactly 0 in every record of the trip
+/// (t.inTrip()) is "still". Still nodes become land in g.water where rule.everyStillNode; else a still node is land
+/// when its block of still nodes (8-connected in its layer) touches a land node (8 neighbours: the coast's ring of
+/// zero velocities around land marked by fill values, a mask or a tracer) or an open edge of the loaded nodes, and
+/// calm water when the block lies in open water away from any land. Never when every water node is still (a still
+/// field is water), nor for packed data seen in a single record (rounding can zero a calm node). Returns the nodes
+/// it made land.
+std::size_t zeroVelocityLand(GriddedData &g, const AxisSelection &t, bool packed, const ZeroLandRule &rule);
+/// Sets the velocities of every land node of g (g.water 0) to 0 in every record: the field treats land as zero
+/// current (a no-slip coast).
+void zeroLandVelocities(GriddedData &g);
+
 /// readVelocities() for a staggered (C) grid (Layout::staggered): u read at the u points west and east of each
 /// loaded rho point and averaged, v at the v points south and north of it; faces marked land by mask_u/mask_v or
 /// holding fill values count as zero flow, a rho point with both faces of a component fill values is land.
@@ -410,11 +442,53 @@ std::string gridAngleNote(const DerivedGridAngle &a, const std::string &coordina
 /// piecewise-linear profile, constant outside the layers; NetCdfCurrentOptions::depthAverage); a node is land when
 /// it is land at a layer that carries weight. g.depth becomes {top}.
 void averageOverDepth(double top, double bottom, GriddedData &g);
+
+// ---- land variables on the velocities' grid (LandMask.cpp, TracerLand.cpp) ----
+
+/// How a variable on the velocities' horizontal grid (a mask, a tracer) is read onto the loaded nodes: per
+/// dimension of the variable its role among u's (a dimension of its own whose length is u's y or x stands for it),
+/// the reads and the strides into an array (t, z, y, x) with only the variable's own axes.
+struct GridFit
+{
+    std::vector<Role> role;      ///< per dimension of the variable
+    std::vector<DimRead> reads;
+    std::vector<std::size_t> stride;
+    bool hasTime{false}, hasDepth{false};
+    /// The reads for rows yIdx and columns xIdx (file indices, one per loaded node; the tracer's neighbours) in
+    /// place of the loaded ones.
+    void setHorizontal(const std::vector<std::size_t> &yIdx, const std::vector<std::size_t> &xIdx);
+};
+
+/// Where each dimension of `var` sits on u's loaded grid (nodes h, depths z, times t), or nullopt with the reason
+/// in `why` when it does not fit: at least (y, x), u's own horizontal dimensions or dimensions of their lengths; a
+/// time or depth dimension must be u's; any other dimension must have length 1.
+std::optional<GridFit> fitToGrid(const NcFile &f, const Layout &l, int var, const HorizontalSubset &h,
+                                 const AxisSelection &z, const AxisSelection &t, std::string &why);
+
 /// The land/sea mask variable (the given one, or one found automatically: rules at loadNetCdfCurrents()) applied
-/// to g.water over the loaded nodes, depths and times; sets out.maskVariable and the land counts, and zeroes the
-/// velocities of every land node. @throws Error when a given mask is missing or does not fit u's grid.
+/// to g.water over the loaded nodes, depths and times; sets out.maskVariable and out.maskLandNodes.
+/// @throws Error when a given mask is missing or does not fit u's grid.
 void applyLandMask(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                    const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
+
+/// True when the velocities' coordinates say they are a B grid's velocity points (the corners of the tracer
+/// cells): named ULAT/ULONG/ULON (POP) or xu_ocean/yu_ocean (MOM), or described as the "u-grid" in their
+/// long_name (NCL's POP files: "array of u-grid latitudes"). Not for a staggered (C) layout.
+bool cornerVelocities(const NcFile &f, const Layout &l);
+
+/// The tracer stage: a tracer variable on the velocities' grid (the given NetCdfCurrentOptions::tracerName, else
+/// found automatically: standard_name sea_water_temperature, sea_water_potential_temperature,
+/// sea_water_conservative_temperature, sea_water_salinity, sea_water_practical_salinity or
+/// sea_water_absolute_salinity, then the names temp, t, salt, theta, thetao, so, votemper, vosaline, water_temp,
+/// salinity in any case) is land where it holds a fill value, missing_value, NaN or a value outside its valid
+/// range, in any of the trip's records (a tracer with a depth dimension per layer, else at every layer). On a B
+/// grid (the tracer's coordinates offset half a cell from the velocities', or shared with velocities that
+/// cornerVelocities() says are a B grid's) a velocity point is land when any of the 4 tracer cells around it is;
+/// else the tracer cell at the same index. A tracer holding no valid value in the loaded region is not read (a
+/// variable never written). Sets out.tracerVariable, out.tracerPlacement, out.tracerLandNodes, out.cornerGrid.
+/// @throws Error when a given tracer is missing or does not fit u's grid.
+void applyTracerLand(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+                     const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
 
 // ---- coordinates (NodeCoordinates.cpp) ----
 
