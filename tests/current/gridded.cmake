@@ -8,6 +8,7 @@ glider_add_test(test_current_netcdf
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLayouts.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLand.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfTracerLand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfUnitsAndNames.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfMultiFile.cpp
 
@@ -33,4 +34,8 @@ if(TARGET glider_plan)
   add_test(NAME current.glider_plan_forecast_glob
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_glider_plan_forecast_glob.sh $<TARGET_FILE:glider_plan>)
   set_tests_properties(current.glider_plan_forecast_glob PROPERTIES TIMEOUT 600)
+  # glider_plan on NCL's POP sample (libncarg-data): coastal routes checked against the model's own tracer mask
+  add_test(NAME current.glider_plan_pop_land
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_glider_plan_pop_land.sh $<TARGET_FILE:glider_plan>)
+  set_tests_properties(current.glider_plan_pop_land PROPERTIES TIMEOUT 600)
 endif()
