@@ -21,6 +21,7 @@ PACKAGES=(
   libopenmpi-dev openmpi-bin
   python3 python3-matplotlib
   gmt gmt-gshhg-low ferret-datasets
+  libncarg-data
   pybind11-dev python3-dev python3-numpy python3-pytest
   clang-14 libfuzzer-14-dev
 )
