@@ -96,7 +96,7 @@ TEST(NetCdfMultiFile, DailyFilesGiveTheCombinedFileField)
     EXPECT_EQ(many.isoTime(48.0 * 3600.0), "2026-03-03T00:00:00Z");
     EXPECT_EQ(many.fillLandNodes, one.fillLandNodes);
     EXPECT_EQ(many.zeroLandNodes, one.zeroLandNodes);
-    EXPECT_EQ(many.zeroLandNodes, 0u);  // fill values mark the land: the still nodes are calm water
+    EXPECT_EQ(many.zeroLandNodes, 0u);  // the still node lies away from the fill-value land: calm water
     EXPECT_GT(many.fillLandNodes, 0u);
     expectSameField(one, many, 0.0, 93.0 * 3600.0);
     // the overlapping record: the later file's values (the true ones), not day 1's biased copy
