@@ -167,7 +167,9 @@ PlannedPath headingsAlong(const MissionProblem &problem, const std::shared_ptr<c
 PlannedPath checkGlobally(const MissionProblem &problem, double departure, const PlanOptions &o, PlannedPath r)
 {
     const MissionSpec &m = problem.getSpec();
-    if (!o.globalCheck.value_or(m.planner.globalCheck) || !o.planner.empty() || !r.badInput.empty() ||
+    // the check belongs to the post-processing: without refinement the planner's own path is what was asked for
+    if (!o.globalCheck.value_or(m.planner.globalCheck) || !o.refinement.value_or(m.planner.refinement) ||
+        !o.planner.empty() || !r.badInput.empty() ||
         !problem.getMembers().empty() || (r.stints && !r.stints->converted))
         return r;
     const PlannerEntry &asked = plannerEntry(r.switchedFrom.empty() ? r.planner : r.switchedFrom);
@@ -236,6 +238,15 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
             if (c.solved && !(c.travelTime >= best.travelTime && best.solved))
             {
                 c.currentModelCalls = best.currentModelCalls;
+                if (!best.raw.empty())
+                {
+                    // raw and smoothed stay the planner's own stages; the route is the extremal's
+                    c.raw = best.raw;
+                    c.smoothed = best.smoothed;
+                    c.rawTravelTime = best.rawTravelTime;
+                    c.smoothedTravelTime = best.smoothedTravelTime;
+                    c.rawPathLength = best.rawPathLength;
+                }
                 best = std::move(c);
                 check.winner = name;
             }

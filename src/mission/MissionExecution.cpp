@@ -94,6 +94,7 @@ Replanner replanner(const MissionProblem &problem, Point2 goal, double margin)
             return rest;  // drifted out of the planning box: no new plan
         PlanOptions o;
         o.refinement = false;
+        o.globalCheck = false;  // a replan at every surfacing: the lattice alone, judged against the plan being flown
         try
         {
             const PlannedPath p = planRoute(problem.withEndpoints({x, y}, goal), t, o);

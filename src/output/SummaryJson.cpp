@@ -208,6 +208,28 @@ void safetyJson(const MissionResult &r, json &j)
                             : json(nullptr);
     j["closest_land_m"] = std::isfinite(c.distance) && metres ? json(c.distance * mpu) : json(nullptr);
 }
+
+/// The global check of the route class (GlobalCheck): its candidates and the winner; null when it did not run.
+json globalCheckJson(const PlannedPath &p)
+{
+    if (!p.globalCheck)
+        return nullptr;
+    const GlobalCheck &g = *p.globalCheck;
+    json candidates = json::array();
+    for (const RouteCandidate &c : g.candidates)
+        candidates.push_back({{"name", c.name},
+                              {"solved", c.solved},
+                              {"travel_time", c.solved ? jnum(c.travelTime) : json(nullptr)},
+                              {"why", jtext(c.why)}});
+    return {{"headings", g.headings},
+            {"extremal_found", g.extremalFound},
+            {"extremal_travel_time", g.extremalFound ? jnum(g.extremalTime) : json(nullptr)},
+            {"candidates", candidates},
+            {"winner", jtext(g.winner)},
+            {"gain", jnum(g.gain)},
+            {"current_model_calls", g.currentModelCalls},
+            {"wall_time_s", g.seconds}};
+}
 }  // namespace
 
 std::string summaryJson(const MissionResult &r, const MissionProblem &problem, const std::vector<std::string> &files)
@@ -269,26 +291,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["switched_from"] = jtext(p.switchedFrom);
     j["switch_reason"] = jtext(p.switchReason);
     // the global check of the route class: extremals shot from the start beside the planner's route
-    if (p.globalCheck)
-    {
-        const GlobalCheck &g = *p.globalCheck;
-        json candidates = json::array();
-        for (const RouteCandidate &c : g.candidates)
-            candidates.push_back({{"name", c.name},
-                                  {"solved", c.solved},
-                                  {"travel_time", c.solved ? jnum(c.travelTime) : json(nullptr)},
-                                  {"why", jtext(c.why)}});
-        j["global_check"] = {{"headings", g.headings},
-                             {"extremal_found", g.extremalFound},
-                             {"extremal_travel_time", g.extremalFound ? jnum(g.extremalTime) : json(nullptr)},
-                             {"candidates", candidates},
-                             {"winner", jtext(g.winner)},
-                             {"gain", jnum(g.gain)},
-                             {"current_model_calls", g.currentModelCalls},
-                             {"wall_time_s", g.seconds}};
-    }
-    else
-        j["global_check"] = nullptr;
+    j["global_check"] = globalCheckJson(p);
     // honest times (issue 24): the accurate Dormand-Prince re-flight of the reported route
     if (p.reflown)
         j["reflight"] = {{"method", "Dormand-Prince 5(4), rtol 1e-10"},
