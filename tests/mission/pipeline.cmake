@@ -45,3 +45,6 @@ gtest_discover_tests(test_trust TEST_FILTER "TrustFast.*" DISCOVERY_TIMEOUT 60 N
                      PROPERTIES TIMEOUT 600)
 gtest_discover_tests(test_trust TEST_FILTER "TrustProperty.*" DISCOVERY_TIMEOUT 60 NO_PRETTY_VALUES
                      PROPERTIES TIMEOUT 1800 LABELS ci)
+# the global check of the route class: the upstream crossing of the jet, V = 0.1, --optimum inside the region
+glider_add_test(test_global_check ${CMAKE_CURRENT_LIST_DIR}/TestGlobalCheck.cpp)
+target_link_libraries(test_global_check PRIVATE nlohmann_json::nlohmann_json)

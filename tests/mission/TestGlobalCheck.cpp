@@ -1,0 +1,145 @@
+// The global check of the route class: the default finds the route of another class that the lattice misses (against
+// the jet), says which candidate won in the report and summary.json, and the optimal-control reference (--optimum)
+// keeps to the region. References: the independent extremal sweep (ExtremalSweep.h, its own RK4) and closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <ompl/util/Console.h>
+
+#include "TrustCases.h"
+#include "ompl_glider/output/Report.h"
+#include "ompl_glider/output/SummaryJson.h"
+
+namespace
+{
+using namespace ompl_glider;
+
+MissionSpec jetPair(Point2 s, Point2 g, double speed, double departure)
+{
+    MissionSpec m = defaultGulfStreamMission();
+    m.start.xy = s;
+    m.goal.xy = g;
+    m.vehicle.speed = m.travel.speed = speed;
+    m.departure.time = departure;
+    return m;
+}
+
+/// The independent sweep's fastest extremal through the goal of @p m, up to @p maxTime.
+extremal_sweep::Best reference(const MissionProblem &problem, double maxTime)
+{
+    const MissionSpec &m = problem.getSpec();
+    const GliderProblem gp = problem.gliderProblem(m.departure.time, m.vehicle.speed);
+    extremal_sweep::Setup s;
+    const std::shared_ptr<const CurrentField> field = problem.getField();
+    s.current = [field](double x, double y, double t, double &u, double &v) {
+        const Velocity c = field->velocity(x, y, 0.0, t);
+        u = c.u;
+        v = c.v;
+    };
+    s.speed = m.vehicle.speed;
+    s.xMin = gp.xMin;
+    s.xMax = gp.xMax;
+    s.yMin = gp.yMin;
+    s.yMax = gp.yMax;
+    s.maxTime = maxTime;
+    s.steps = static_cast<int>(std::ceil(maxTime / 0.01));
+    return extremal_sweep::fastest(s, problem.getStart().x, problem.getStart().y, m.departure.time,
+                                   problem.getGoal().x, problem.getGoal().y);
+}
+}  // namespace
+
+TEST(GlobalCheck, UpstreamCrossingOfTheJetComesOutInTheBestRouteClass)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    // Against the jet: the lattice path crosses where the optimum does not (8.8 % slower after its refinement).
+    MissionSpec m = jetPair({5.66, 1.20}, {1.58, -2.61}, 0.5, 0.0);
+    const MissionProblem problem(m);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    const extremal_sweep::Best best = reference(problem, 1.25 * r.plan.travelTime);
+    ASSERT_TRUE(best.found);
+    EXPECT_LE(r.plan.travelTime, 1.005 * best.time) << "reference " << best.time;
+    // an honest time: no flyable route is faster than the optimum by more than the reference's own accuracy
+    EXPECT_GE(r.plan.travelTime, (1.0 - 1e-4) * best.time);
+    ASSERT_TRUE(r.plan.globalCheck.has_value());
+    const GlobalCheck &g = *r.plan.globalCheck;
+    EXPECT_TRUE(g.extremalFound);
+    EXPECT_EQ(g.candidates.front().name, "ZA*TVE");
+    EXPECT_NE(g.winner, "ZA*TVE");
+    EXPECT_GT(g.gain, 0.05);  // the planner's route was more than 5 % slower
+    EXPECT_NEAR(g.gain, 1.0 - r.plan.travelTime / g.candidates.front().travelTime, 1e-12);
+    // raw and smoothed remain the planner's own stages
+    EXPECT_NEAR(r.plan.rawTravelTime, r.plan.raw.back().t - r.plan.departure, 1e-12);
+    EXPECT_GT(r.plan.smoothedTravelTime, 1.05 * r.plan.travelTime);
+
+    // without the check: the planner's route, in the other class
+    m.planner.globalCheck = false;
+    const MissionResult off = runMission(MissionProblem(m));
+    ASSERT_TRUE(off.plan.solved);
+    EXPECT_FALSE(off.plan.globalCheck.has_value());
+    EXPECT_GT(off.plan.travelTime, 1.05 * best.time);
+    EXPECT_NEAR(off.plan.travelTime, g.candidates.front().travelTime, 1e-9 * off.plan.travelTime);
+
+    // the pilot is told: the report and summary.json name the candidates and the winner
+    std::ostringstream report;
+    printReport(report, r);
+    EXPECT_NE(report.str().find("Global check:"), std::string::npos);
+    EXPECT_NE(report.str().find("<- the route"), std::string::npos);
+    const nlohmann::json j = nlohmann::json::parse(summaryJson(r, problem));
+    EXPECT_EQ(j["global_check"]["winner"], g.winner);
+    EXPECT_EQ(j["global_check"]["candidates"].size(), g.candidates.size());
+    EXPECT_NEAR(j["global_check"]["gain"].get<double>(), g.gain, 1e-12);
+    EXPECT_TRUE(nlohmann::json::parse(summaryJson(off, problem))["global_check"].is_null());
+}
+
+TEST(GlobalCheck, StrongCurrentAtSpeedPointOneWithinOnePointFivePercentOfTheBestExtremal)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    // V = 0.1 across the jet (the issue: the default 48.22 where an extremal reaches the goal in 47.67)
+    const MissionProblem problem(jetPair({1.0, -3.0}, {8.0, 3.0}, 0.1, 0.0));
+    const PlannedPath p = planRoute(problem, 0.0);
+    ASSERT_TRUE(p.solved) << p.reason;
+    const extremal_sweep::Best best = reference(problem, 1.25 * p.travelTime);
+    ASSERT_TRUE(best.found);
+    EXPECT_LE(p.travelTime, 1.015 * best.time) << "reference " << best.time;
+    EXPECT_GE(p.travelTime, (1.0 - 1e-4) * best.time);
+}
+
+TEST(GlobalCheck, OptimumReferenceKeepsToTheRegion)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    // Zermelo's shear u = -y: the fast lane for a trip to +x lies at y < 0, below a region that ends at y = -1. The
+    // reference in open water dips below it; the one the program prints must stay inside.
+    MissionSpec m = trust::analytic("linear_shear", {{"a", -1.0}}, Box{-1.0, 9.0, -1.0, 2.0});
+    m.start.xy = {0.0, -0.8};
+    m.goal.xy = {8.0, -0.8};
+    m.vehicle.speed = m.travel.speed = 0.5;
+    const MissionProblem problem(m);
+    const OptimumReference inside = optimumReference(problem, 0.0, 0.5, 40.0);
+    for (const TimedPoint &q : inside.path)
+        EXPECT_GE(q.y, -1.0 - 1e-9) << "the optimal-control path leaves the region at t = " << q.t;
+    // the same problem in a region wide enough for the fast lane: the extremal through the goal dips below y = -1,
+    // so the narrow region's reference is not it (none at all here: every extremal through the goal leaves)
+    MissionSpec wide = m;
+    wide.region.xy = Box{-1.0, 9.0, -4.0, 2.0};
+    const OptimumReference open = optimumReference(MissionProblem(wide), 0.0, 0.5, 40.0);
+    ASSERT_TRUE(open.found);
+    double lowest = 0.0;
+    for (const TimedPoint &q : open.path)
+        lowest = std::min(lowest, q.y);
+    EXPECT_LT(lowest, -1.0);
+    EXPECT_FALSE(inside.found && std::abs(inside.travelTime - open.travelTime) < 1e-6 * open.travelTime);
+    // the default keeps to the region too, and is no faster than the open-water optimum
+    const PlannedPath p = planRoute(problem, 0.0);
+    ASSERT_TRUE(p.solved) << p.reason;
+    EXPECT_GT(p.travelTime, open.travelTime);
+    if (inside.found)
+    {
+        EXPECT_LE(p.travelTime, 1.005 * inside.travelTime);
+    }
+    for (const TimedPoint &q : p.track.empty() ? p.path : p.track)
+        EXPECT_GE(q.y, -1.0 - 1e-9);
+}
