@@ -166,7 +166,8 @@ std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, doubl
     Y sNew{};
     auto g = [&](const Y &st, const Y &d) { return (st.x - gx) * d.x + (st.y - gy) * d.y; };
     double gPrev = g(s, k1);
-    bool stopped = false;
+    bool left = false, stopped = false;  // left the admissible set; too far from the goal since
+    const double D = std::hypot(gx - x1, gy - y1);
     auto attempt = [&](double t, double h, double &err) {
         if (stopped || t0 + t + h > tEndField)
             return false;
@@ -174,11 +175,10 @@ std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, doubl
         return true;
     };
     auto accept = [&](double t, double h) {
-        if (params_.admissible && !params_.admissible(s.x, s.y, t0 + t, sNew.x, sNew.y, t0 + t + h))
-        {
-            stopped = true;  // the extremal ends where it leaves the admissible set
-            return;
-        }
+        if (params_.admissible && !left && !params_.admissible(s.x, s.y, t0 + t, sNew.x, sNew.y, t0 + t + h))
+            left = true;  // no solution past here; approaches near the goal still bracket the headings
+        if (left && std::hypot(sNew.x - gx, sNew.y - gy) > D)
+            stopped = true;
         const Y kNew = rhs(t0 + t + h, sNew);
         const double gNew = g(sNew, kNew);
         if (gPrev < 0.0 && gNew >= 0.0)
@@ -217,6 +217,7 @@ std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, doubl
             else
                 e.miss = dist;
             e.state = {t0 + e.t, sAt.x, sAt.y, sAt.th};
+            e.admissible = !left;
             events.push_back(e);
         }
         s = sNew;
@@ -335,9 +336,11 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
             continue;
         ClosestApproach cur = std::abs(fa) < std::abs(fb) ? la : lb;
         double curTh = std::abs(fa) < std::abs(fb) ? a : b;
+        bool collapsed = false;
         for (int it = 0; it < 200; ++it)
         {
-            if (std::abs(cur.miss) <= 0.1 * params_.goalTolerance || std::abs(b - a) < 1e-15)
+            collapsed = std::abs(b - a) < 1e-15;
+            if (std::abs(cur.miss) <= 0.1 * params_.goalTolerance || collapsed)
                 break;
             const double c = illinoisPoint(a, fa, b, fb);
             double fc;
@@ -348,7 +351,8 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
             curTh = c;
             illinoisUpdate(a, fa, b, fb, c, fc);
         }
-        if (!(std::abs(cur.miss) <= params_.goalTolerance))
+        const double tolerance = collapsed ? std::max(params_.goalTolerance, 1e-7 * D) : params_.goalTolerance;
+        if (!(std::abs(cur.miss) <= tolerance) || !cur.admissible)
             continue;
         ++sol.extremalsThroughGoal;
         if (cur.t < sol.travelTime)

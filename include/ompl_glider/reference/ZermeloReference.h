@@ -22,11 +22,14 @@ struct ZermeloParams
     double maxTime{0.0};          ///< longest trajectory to follow (an upper bound of the optimal time, e.g. the
                                   ///< travel time of any feasible path); <= 0: 6 * |goal - start| / V
     int headingSamples{720};      ///< initial headings scanned uniformly over [0, 2 pi) to bracket the solutions
-    double goalTolerance{1e-9};   ///< largest miss distance accepted as "passes through the goal"
+    double goalTolerance{1e-9};   ///< largest miss distance accepted as "passes through the goal" (where the
+                                  ///< heading bracket has shrunk to rounding, 1e-7 of the start-goal distance: in a
+                                  ///< sensitive flow the miss of the nearest representable heading can exceed it)
     int maxSteps{2000000};        ///< safety bound on integrator steps per trajectory
     /// Where an extremal may go: called with every accepted integrator step (from (x1, y1) at t1 to (x2, y2) at
-    /// t2, absolute times); false ends the extremal there (land, a forbidden region, outside the planning region),
-    /// so that no closest approach after it counts. Empty: everywhere (open water).
+    /// t2, absolute times); once it is false (land, a forbidden region, outside the planning region) no later
+    /// closest approach of the extremal is a solution: such approaches only bracket the headings, and the extremal
+    /// is followed only while it stays within the start-goal distance of the goal. Empty: everywhere (open water).
     std::function<bool(double x1, double y1, double t1, double x2, double y2, double t2)> admissible;
     unsigned threads{1};          ///< threads of the heading scan (0: all cores); the field must be thread-safe
 };
@@ -46,6 +49,9 @@ struct ClosestApproach
     double t{0.0};     ///< time since departure
     double miss{0.0};  ///< signed distance to the goal (sign: side of the track the goal lies on)
     ZermeloState state;
+    /// The extremal stayed in the admissible set (ZermeloParams::admissible) up to here; an approach after it left
+    /// is kept to bracket the headings (a neighbour that misses the goal on the far side of a nearby coast or edge)
+    bool admissible{true};
 };
 
 /// @brief The time-optimal solution found by shooting.
