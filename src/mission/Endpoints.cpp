@@ -138,9 +138,14 @@ std::vector<std::string> forecastNotes(const NetCdfCurrents &nc)
     else if (!nc.gridAngle.empty())
         notes.push_back("grid angle " + nc.gridAngle + " (the file has no angle variable and its velocities do not "
                         "say they are eastward/northward)");
+    const std::string loaded =
+        std::to_string(nc.loadedValues / std::max<std::size_t>(1, nc.loadedShape.empty() ? 1 : nc.loadedShape[0]));
+    if (nc.tracerLandNodes > 0)
+        notes.push_back(std::to_string(nc.tracerLandNodes) + " of the " + loaded +
+                        " nodes loaded are land because the tracer '" + nc.tracerVariable + "' is missing there (" +
+                        nc.tracerPlacement + ")");
     if (nc.zeroLandNodes > 0)
-        notes.push_back(std::to_string(nc.zeroLandNodes) + " of the " + std::to_string(nc.loadedValues /
-                        std::max<std::size_t>(1, nc.loadedShape.empty() ? 1 : nc.loadedShape[0])) +
+        notes.push_back(std::to_string(nc.zeroLandNodes) + " of the " + loaded +
                         " nodes loaded are land only because u = v = 0 in every record of the trip "
                         "(current.zero_velocity_land: false, --no-zero-land, takes them as water)");
     return notes;

@@ -261,6 +261,9 @@ void checkEndpoints(const NetCdfCurrents &nc, const ForecastInput &q, const std:
                 add("fill values of '" + nc.uVariable + "'/'" + nc.vVariable + "'");
             if (nc.maskLandNodes > 0)
                 add("the mask variable '" + nc.maskVariable + "'");
+            if (nc.tracerLandNodes > 0)
+                add("missing values of the tracer '" + nc.tracerVariable + "'" +
+                    (nc.cornerGrid ? " (any of the 4 tracer cells around a velocity point)" : ""));
             if (nc.zeroLandNodes > 0)
                 add("u = v = 0 in every record (--no-zero-land turns this off)");
             const std::string at = q.current.depthAverage ? "in the depth average over " + text::number(q.current.depthAverage->first) + ".." +
