@@ -194,11 +194,11 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     ZermeloParams zp = checkedExtremalParams(problem, ctx, r.speed, bound);
     const Point2 s = problem.getStart(), g = problem.getGoal();
     ZermeloSolution sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
-    if (!sol.found && !r.solved)
+    if (!sol.found)
     {
-        // no route at all: in strong currents the headings that reach a far goal can lie within a fraction of a
-        // degree, so sweep eight times finer before giving up
-        zp.headingSamples *= 8;
+        // in strong or sensitive currents the headings that reach a far goal can lie within a fraction of a degree:
+        // sweep finer before giving up (eight times where there is no route at all, else four)
+        zp.headingSamples *= r.solved ? 4 : 8;
         sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
     }
     check.headings = static_cast<unsigned>(zp.headingSamples);

@@ -130,8 +130,14 @@ void findAngle(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
     }
     else
     {
-        // velocities that say they are eastward (standard_name, or a name such as ROMS' u_eastward) are not turned
-        if (stdName(f, l.uVar).find("eastward") != std::string::npos || lower(l.uName).find("east") != std::string::npos)
+        // velocities that say they are eastward (standard_name, a name such as ROMS' u_eastward, or a long_name
+        // "zonal"/"eastward" where no standard_name calls them grid-relative, as POP's rotated urot) are not turned
+        const std::string sn = stdName(f, l.uVar);
+        const std::string longName = lower(f.attText(l.uVar, "long_name").value_or(""));
+        const bool gridRelative = sn.find("x_velocity") != std::string::npos || sn.find("grid") != std::string::npos;
+        if (sn.find("eastward") != std::string::npos || lower(l.uName).find("east") != std::string::npos ||
+            (!gridRelative && (longName.find("zonal") != std::string::npos ||
+                               longName.find("eastward") != std::string::npos)))
             return;
         for (int var = 0; var < f.nvars() && l.angleVar < 0; ++var)
             if (lower(f.varName(var)) == "angle")
