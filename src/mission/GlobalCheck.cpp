@@ -48,8 +48,9 @@ ZermeloParams checkedExtremalParams(const MissionProblem &problem, const std::sh
     zp.threads = 0;
     // a seed for the routes flown after it, not a reference to 1e-10: half the reference's headings, looser tolerances
     zp.headingSamples = 360;
-    zp.scanRelTol = 1e-6;
+    zp.scanRelTol = 1e-5;
     zp.relTol = 1e-9;
+    zp.groundSpeedBound = speed + 1.1 * ctx->maxCurrent();  // a margin for interpolation overshoot
     const Point2 s = problem.getStart(), g = problem.getGoal();
     // the miss accepted as "through the goal": far below the goal tolerance, relative to the trip in metres too
     zp.goalTolerance = std::max(1e-9, 1e-9 * std::hypot(g.x - s.x, g.y - s.y));

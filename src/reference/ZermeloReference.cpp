@@ -177,8 +177,10 @@ std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, doubl
     auto accept = [&](double t, double h) {
         if (params_.admissible && !left && !params_.admissible(s.x, s.y, t0 + t, sNew.x, sNew.y, t0 + t + h))
             left = true;  // no solution past here; approaches near the goal still bracket the headings
-        if (left && std::hypot(sNew.x - gx, sNew.y - gy) > D)
-            stopped = true;
+        const double away = std::hypot(sNew.x - gx, sNew.y - gy);
+        if ((left && away > D) ||
+            (params_.groundSpeedBound > 0.0 && away > params_.groundSpeedBound * (maxTime - t - h)))
+            stopped = true;  // too far from the goal to bracket it, or to reach it in the time left
         const Y kNew = rhs(t0 + t + h, sNew);
         const double gNew = g(sNew, kNew);
         if (gPrev < 0.0 && gNew >= 0.0)

@@ -32,6 +32,9 @@ struct ZermeloParams
     /// is followed only while it stays within the start-goal distance of the goal. Empty: everywhere (open water).
     std::function<bool(double x1, double y1, double t1, double x2, double y2, double t2)> admissible;
     unsigned threads{1};          ///< threads of the heading scan (0: all cores); the field must be thread-safe
+    /// An upper bound of the ground speed V + max|c| over the region and time (0: none). With it an extremal is no
+    /// longer followed once the goal lies farther than this speed times the time left: it cannot reach it in time.
+    double groundSpeedBound{0.0};
 };
 
 /// @brief One point of an extremal: time, position and heading (direction of the vehicle's velocity through water).
