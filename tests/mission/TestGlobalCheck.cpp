@@ -143,3 +143,22 @@ TEST(GlobalCheck, OptimumReferenceKeepsToTheRegion)
     for (const TimedPoint &q : p.track.empty() ? p.path : p.track)
         EXPECT_GE(q.y, -1.0 - 1e-9);
 }
+
+TEST(GlobalCheck, NoPathReasonGivesTheHorizonInTheMissionsOwnUnits)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    // the built-in trip cannot be made in 2 time units: the reason names the horizon as the mission counts time
+    MissionSpec m = defaultGulfStreamMission();
+    m.planner.horizon = 2.0;
+    const PlannedPath dimensionless = planRoute(MissionProblem(m), 0.0);
+    ASSERT_FALSE(dimensionless.solved);
+    EXPECT_NE(dimensionless.reason.find("2 time units after departure"), std::string::npos) << dimensionless.reason;
+    EXPECT_EQ(dimensionless.reason.find(" h)"), std::string::npos) << dimensionless.reason;
+    // a mission whose time unit is a day: days and hours
+    m.lengthUnitMetres = 50000.0;
+    m.timeUnitSeconds = 86400.0;
+    const PlannedPath days = planRoute(MissionProblem(m), 0.0);
+    ASSERT_FALSE(days.solved);
+    EXPECT_NE(days.reason.find("2 d"), std::string::npos) << days.reason;
+    EXPECT_EQ(days.reason.find("time units"), std::string::npos) << days.reason;
+}
