@@ -323,7 +323,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
          forbidden: Optional[Sequence[Any]] = None, planner: Optional[str] = None,
          planner_params: Optional[Dict[str, Any]] = None, grid_size: Optional[float] = None,
          sectors: Optional[int] = None, time_limit: Optional[float] = None, smoothing: Optional[bool] = None,
-         refinement: Optional[bool] = None, horizon: Optional[float] = None,
+         refinement: Optional[bool] = None, global_check: Optional[bool] = None, horizon: Optional[float] = None,
          goal_tolerance: Optional[float] = None, isochrones: bool = False,
          isochrone_interval: Optional[float] = None, speeds: Optional[Sequence[float]] = None,
          optimum: bool = False, progress: Optional[ProgressCallback] = None) -> Result:
@@ -339,7 +339,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     x_max, y_max), or lon/lat in that order), forbidden (polygons, each a list of points or a dict with points,
     name, kind, and windows for a time-windowed zone or max_submerged_time, t_ref, drift for an ice zone),
     planner (a registry name, :func:`planner_names`) and planner_params (its OMPL parameters by name), grid_size,
-    sectors, time_limit (s), smoothing, refinement, horizon, goal_tolerance; isochrones / isochrone_interval add
+    sectors, time_limit (s), smoothing, refinement, global_check (False: no global check of the route class,
+    docs/TRUST.md), horizon, goal_tolerance; isochrones / isochrone_interval add
     the reachable-set contours (:attr:`Result.isochrones`); speeds a speed sweep; optimum the optimal-control
     reference. progress(line, done) receives the progress lines of long runs (the GIL is released while planning).
 
@@ -348,8 +349,9 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     """
     keywords = dict(start=start, goal=goal, speed=speed, departure=departure, region=region,
                     forbidden=_forbidden(forbidden), planner=planner, grid_size=grid_size, sectors=sectors,
-                    time_limit=time_limit, smoothing=smoothing, refinement=refinement, horizon=horizon,
-                    goal_tolerance=goal_tolerance, isochrones=isochrones, isochrone_interval=isochrone_interval)
+                    time_limit=time_limit, smoothing=smoothing, refinement=refinement,
+                    global_check=global_check, horizon=horizon, goal_tolerance=goal_tolerance, isochrones=isochrones,
+                    isochrone_interval=isochrone_interval)
     if planner_params is not None:
         keywords["planner_params"] = {k: (str(v).lower() if isinstance(v, bool) else str(v))
                                       for k, v in planner_params.items()}

@@ -54,6 +54,18 @@ def test_keywords_change_the_mission():
     assert ompl_glider.plan(SHEAR, planner="TVE").planner == "TVE"
 
 
+def test_global_check_keyword():
+    # against the jet the lattice's route is in another route class: the global check finds a faster one
+    checked = ompl_glider.plan(start=(5.66, 1.20), goal=(1.58, -2.61))
+    plain = ompl_glider.plan(start=(5.66, 1.20), goal=(1.58, -2.61), global_check=False)
+    assert checked.solved and plain.solved
+    g = checked.summary["global_check"]
+    assert g["winner"] != "ZA*TVE" and g["gain"] > 0.05
+    assert plain.summary["global_check"] is None
+    assert checked.travel_time < 0.95 * plain.travel_time
+    assert g["candidates"][0]["travel_time"] == pytest.approx(plain.travel_time, rel=1e-9)
+
+
 def test_analytic_field_uniform_current_along_the_trip():
     r = ompl_glider.plan(field=ompl_glider.Field.analytic("uniform", u=0.2, v=0.0), start=(1, 0), goal=(9, 0),
                          speed=0.5)
