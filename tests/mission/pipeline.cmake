@@ -48,3 +48,10 @@ gtest_discover_tests(test_trust TEST_FILTER "TrustProperty.*" DISCOVERY_TIMEOUT 
 # the global check of the route class: the upstream crossing of the jet, V = 0.1, --optimum inside the region
 glider_add_test(test_global_check ${CMAKE_CURRENT_LIST_DIR}/TestGlobalCheck.cpp)
 target_link_libraries(test_global_check PRIVATE nlohmann_json::nlohmann_json)
+if(TARGET glider_plan)
+  # every real forecast file bundled (examples/*.nc) or installed (NCL's pop.nc): coastal trips, each route sample
+  # checked against the file's own land read with ncdump (fill values, masks, POP's tracer); fails if a file is missing
+  add_test(NAME mission.bundled_files_land
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_bundled_files_land.sh $<TARGET_FILE:glider_plan> ${PROJECT_SOURCE_DIR})
+  set_tests_properties(mission.bundled_files_land PROPERTIES TIMEOUT 300)
+endif()
