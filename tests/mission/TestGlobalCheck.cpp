@@ -27,25 +27,11 @@ MissionSpec jetPair(Point2 s, Point2 g, double speed, double departure)
     return m;
 }
 
-/// The independent sweep's fastest extremal through the goal of @p m, up to @p maxTime.
+/// The independent sweep's fastest extremal through the goal of @p problem, up to @p maxTime.
 extremal_sweep::Best reference(const MissionProblem &problem, double maxTime)
 {
     const MissionSpec &m = problem.getSpec();
-    const GliderProblem gp = problem.gliderProblem(m.departure.time, m.vehicle.speed);
-    extremal_sweep::Setup s;
-    const std::shared_ptr<const CurrentField> field = problem.getField();
-    s.current = [field](double x, double y, double t, double &u, double &v) {
-        const Velocity c = field->velocity(x, y, 0.0, t);
-        u = c.u;
-        v = c.v;
-    };
-    s.speed = m.vehicle.speed;
-    s.xMin = gp.xMin;
-    s.xMax = gp.xMax;
-    s.yMin = gp.yMin;
-    s.yMax = gp.yMax;
-    s.maxTime = maxTime;
-    s.steps = static_cast<int>(std::ceil(maxTime / 0.01));
+    const extremal_sweep::Setup s = trust::sweepSetup(problem, m.departure.time, m.vehicle.speed, maxTime, 0.01);
     return extremal_sweep::fastest(s, problem.getStart().x, problem.getStart().y, m.departure.time,
                                    problem.getGoal().x, problem.getGoal().y);
 }

@@ -108,6 +108,29 @@ inline std::vector<Trial> draw(const Flow &flow, double speed, int count, std::m
     return out;
 }
 
+/// The independent sweep's setup for @p problem: the field's velocity at depth 0, the speed, the planning box, the
+/// longest extremal @p maxTime and a fixed RK4 step of about @p step.
+inline extremal_sweep::Setup sweepSetup(const MissionProblem &problem, double departure, double speed, double maxTime,
+                                        double step)
+{
+    const GliderProblem gp = problem.gliderProblem(departure, speed);
+    extremal_sweep::Setup s;
+    const std::shared_ptr<const CurrentField> field = problem.getField();
+    s.current = [field](double x, double y, double tt, double &u, double &v) {
+        const Velocity c = field->velocity(x, y, 0.0, tt);
+        u = c.u;
+        v = c.v;
+    };
+    s.speed = speed;
+    s.xMin = gp.xMin;
+    s.xMax = gp.xMax;
+    s.yMin = gp.yMin;
+    s.yMax = gp.yMax;
+    s.maxTime = maxTime;
+    s.steps = std::max(400, static_cast<int>(std::ceil(maxTime / step)));
+    return s;
+}
+
 /// Plans the trial with the default pipeline and sweeps the reference up to the default's time (or the planning
 /// window when the default has no route).
 inline void run(const Flow &flow, Trial &t)
@@ -124,22 +147,11 @@ inline void run(const Flow &flow, Trial &t)
     t.defaultSolved = p.solved;
     t.defaultTime = p.solved ? p.travelTime : std::numeric_limits<double>::infinity();
     t.winner = p.globalCheck ? p.globalCheck->winner : std::string();
-    const GliderProblem gp = problem.gliderProblem(t.departure, t.speed);
-    extremal_sweep::Setup s;
-    const std::shared_ptr<const CurrentField> field = problem.getField();
-    s.current = [field](double x, double y, double tt, double &u, double &v) {
-        const Velocity c = field->velocity(x, y, 0.0, tt);
-        u = c.u;
-        v = c.v;
-    };
-    s.speed = t.speed;
-    s.xMin = gp.xMin;
-    s.xMax = gp.xMax;
-    s.yMin = gp.yMin;
-    s.yMax = gp.yMax;
     // a quarter past the default's time: the neighbours of an extremal through the goal pass it later
-    s.maxTime = p.solved ? std::min(1.25 * p.travelTime, gp.horizon) : gp.horizon;
-    s.steps = std::max(400, static_cast<int>(std::ceil(s.maxTime / flow.referenceStep)));
+    const double horizon = problem.gliderProblem(t.departure, t.speed).horizon;
+    const extremal_sweep::Setup s = sweepSetup(problem, t.departure, t.speed,
+                                               p.solved ? std::min(1.25 * p.travelTime, horizon) : horizon,
+                                               flow.referenceStep);
     const extremal_sweep::Best best = extremal_sweep::fastest(s, t.start.x, t.start.y, t.departure, t.goal.x, t.goal.y);
     t.referenceFound = best.found;
     t.referenceTime = best.time;
