@@ -14,10 +14,12 @@ cd "$root/build-fuzz"
 # ordinary build (scripts/run_tests.sh), not here.
 # StrongCurrentsFine: the slow references (a level set at a fine resolution, 5 min sanitized) that the ordinary run
 # already covers; the same code runs sanitized in the faster StrongCurrents cases
+# mission.bundled_files_land, current.glider_plan_pop_land: glider_plan on real model files, minutes each sanitized;
+# the same reading and planning code runs sanitized in the NetCDF and forecast suites (the ordinary run has them)
 # TrustProperty: more than a hundred random plans against the extremal sweep (the ordinary run has it; TrustFast,
 # the same code on a dozen pairs, runs here)
 # demo.benchmark_ice: OMPL's Benchmark gives every planner a fixed time, which ZA*TVE does not meet sanitized; the
 # other demos run here, the benchmark in the ordinary run
 # badinput.resource_limits: ulimit -v and -t on glider_plan; AddressSanitizer reserves terabytes of address space for
 # its shadow memory and runs several times slower, so the limits mean something else here (the ordinary run has it)
-ctest --output-on-failure -j"$(nproc)" -E '^(package|StrongCurrentsFine|TrustProperty)\.|^demo\.benchmark_ice$|^badinput\.resource_limits$' "$@"
+ctest --output-on-failure -j"$(nproc)" -E '^(package|StrongCurrentsFine|TrustProperty)\.|^demo\.benchmark_ice$|^badinput\.resource_limits$|^mission\.bundled_files_land$|^current\.glider_plan_pop_land$' "$@"
