@@ -37,7 +37,7 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "current"))
-from pop_route_check import Cells  # noqa: E402  (the quadrilaterals of POP's velocity points)
+from pop_route_check import Cells, samples  # noqa: E402  (the quadrilaterals of POP's velocity points)
 
 KM_PER_DEG = 111.195
 POP = "/usr/share/ncarg/data/cdf/pop.nc"
@@ -390,14 +390,8 @@ def route_points(out):
 
 
 def densify(points, step_km):
-    out = []
-    for (a, b), (c, d) in zip(points, points[1:]):
-        dlon = (c - a + 180.0) % 360.0 - 180.0
-        km = math.hypot(dlon * math.cos(math.radians(0.5 * (b + d))), d - b) * KM_PER_DEG
-        n = max(1, int(math.ceil(km / step_km)))
-        out += [(a + dlon * k / n, b + (d - b) * k / n) for k in range(n)]
-    out.append(points[-1])
-    return [((lon + 180.0) % 360.0 - 180.0, lat) for lon, lat in out]
+    """pop_route_check.samples(), longitudes wrapped to -180..180."""
+    return [((lon + 180.0) % 360.0 - 180.0, lat) for lon, lat in samples(points, step_km)]
 
 
 def check_route(model, out):
