@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <mutex>
 
@@ -76,6 +77,57 @@ void collect(const OGRGeometry &g, std::vector<LandPolygon> &out)
 std::string lonLat(double lon, double lat)
 {
     return "lon " + text::number(lon) + ", lat " + text::number(lat);
+}
+
+/// The land of one feature's geometry as a multipolygon: polygons as they are, closed lines (a shoreline written as
+/// lines) as the outline of land, and the members of a geometry collection likewise, at any depth. An open line, a
+/// point or any other kind is refused, naming the member: a shoreline is never dropped in silence.
+std::unique_ptr<OGRGeometry> landGeometry(std::unique_ptr<OGRGeometry> g, const std::string &which)
+{
+    auto out = std::make_unique<OGRMultiPolygon>();
+    const std::function<void(const OGRGeometry &, const std::string &)> add = [&](const OGRGeometry &m,
+                                                                                const std::string &where) {
+        switch (wkbFlatten(m.getGeometryType()))
+        {
+            case wkbPolygon:
+                out->addGeometry(&m);
+                break;
+            case wkbLineString:
+            {
+                const OGRLineString &l = *m.toLineString();
+                const int n = l.getNumPoints();
+                if (n < 4 || !l.get_IsClosed())
+                    throw Error(which + where + ": an open line" +
+                                (n > 0 ? " from " + lonLat(l.getX(0), l.getY(0)) + " to " +
+                                             lonLat(l.getX(n - 1), l.getY(n - 1))
+                                       : std::string()) +
+                                "; expected land polygons (or closed shorelines)");
+                OGRLinearRing r;
+                r.addSubLineString(&l);
+                OGRPolygon p;
+                p.addRing(&r);
+                out->addGeometry(&p);
+                break;
+            }
+            case wkbMultiPolygon:
+            case wkbMultiLineString:
+            case wkbGeometryCollection:
+            {
+                const auto &c = *m.toGeometryCollection();
+                const bool collection = wkbFlatten(m.getGeometryType()) == wkbGeometryCollection;
+                for (int k = 0; k < c.getNumGeometries(); ++k)
+                    if (!c.getGeometryRef(k)->IsEmpty())
+                        add(*c.getGeometryRef(k),
+                            collection ? where + ", member " + std::to_string(k + 1) + " of its collection" : where);
+                break;
+            }
+            default:
+                throw Error(which + where + ": a " + OGRGeometryTypeToName(m.getGeometryType()) +
+                            "; expected land polygons (or closed shorelines)");
+        }
+    };
+    add(*g, "");
+    return out;
 }
 
 /// GEOS's reason why @p g is invalid (OGR reports it as a warning), or "" when it is valid.
@@ -173,35 +225,7 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin
             const std::string which = who + ", layer '" + layer->GetName() + "', feature " + name;
             if (toLonLat && g->transform(toLonLat.get()) != OGRERR_NONE)
                 throw Error(which + ": its coordinates cannot be transformed to lon/lat");
-            const OGRwkbGeometryType type = wkbFlatten(g->getGeometryType());
-            if (type == wkbLineString || type == wkbMultiLineString)
-            {
-                // a shoreline written as closed lines: each closed line is the outline of land
-                auto lines = std::unique_ptr<OGRGeometry>(OGRGeometryFactory::forceToMultiLineString(g.release()));
-                auto *polys = new OGRMultiPolygon;
-                for (const OGRLineString *l : *lines->toMultiLineString())
-                {
-                    if (l->getNumPoints() < 4 || !l->get_IsClosed())
-                    {
-                        delete polys;
-                        const int n = l->getNumPoints();
-                        throw Error(which + ": an open line" +
-                                    (n > 0 ? " from " + lonLat(l->getX(0), l->getY(0)) + " to " +
-                                                 lonLat(l->getX(n - 1), l->getY(n - 1))
-                                           : std::string()) +
-                                    "; expected land polygons (or closed shorelines)");
-                    }
-                    OGRLinearRing r;
-                    r.addSubLineString(l);
-                    OGRPolygon p;
-                    p.addRing(&r);
-                    polys->addGeometry(&p);
-                }
-                g.reset(polys);
-            }
-            else if (type != wkbPolygon && type != wkbMultiPolygon && type != wkbGeometryCollection)
-                throw Error(which + ": a " + OGRGeometryTypeToName(g->getGeometryType()) +
-                            "; expected land polygons");
+            g = landGeometry(std::move(g), which);
             OGREnvelope e;
             g->getEnvelope(&e);
             if (!(e.MinX >= -180.0 && e.MaxX <= 360.0 && e.MinY >= -90.0 && e.MaxY <= 90.0))

@@ -321,6 +321,82 @@ TEST(Coastline, AnInvalidPolygonIsRepairedAndTheRepairIsReported)
     EXPECT_EQ(east, 1);
 }
 
+TEST(Coastline, ShorelinesInAGeometryCollectionAreLandOrRefusedNeverDropped)
+{
+    // Jamaica's GSHHG shoreline written as a closed LineString inside a GeometryCollection (as coastline extracts
+    // often write it), beside a small square island as a polygon
+    TempDir dir;
+    const auto jamaica = readLandPolygons(kJamaica, -80, 16, -75, 20);
+    ASSERT_EQ(jamaica.size(), 1u);
+    std::string ring;
+    for (std::size_t k = 0; k <= jamaica[0].outer.size(); ++k)
+    {
+        const LonLat &p = jamaica[0].outer[k % jamaica[0].outer.size()];
+        ring += (k ? "," : "") + std::string("[") + std::to_string(p.lon) + "," + std::to_string(p.lat) + "]";
+    }
+    const std::string coast = dir.file("collection.geojson");
+    std::ofstream(coast) << oneFeature(
+        "Shores", R"({"type":"GeometryCollection","geometries":[{"type":"LineString","coordinates":[)" + ring +
+                      R"(]},{"type":"Polygon","coordinates":[[[-79,16.5],[-78.8,16.5],[-78.8,16.7],[-79,16.7],)"
+                      R"([-79,16.5]]]}]})");
+    const auto land = readLandPolygons(coast, -80, 16, -75, 20);
+    ASSERT_EQ(land.size(), 2u);
+    int onJamaica = 0, onSquare = 0;
+    for (const LandPolygon &p : land)
+    {
+        onJamaica += inside(p.outer, -77.3, 18.1);
+        onSquare += inside(p.outer, -78.9, 16.6);
+    }
+    EXPECT_EQ(onJamaica, 1);
+    EXPECT_EQ(onSquare, 1);
+    // the route from west to east of the island goes around it: every ~200 m outside the GSHHG ring
+    const std::string nc = dir.file("caribbean.nc");
+    writeCaribbean(nc);
+    ForecastInput in;
+    in.current.file = nc;
+    in.start = {-78.8, 18.2};
+    in.goal = {-75.8, 18.1};
+    in.speed = 0.4;
+    MissionSpec spec = forecastMission(in);
+    spec.forbidden.coastline = coast;
+    const MissionProblem problem(spec);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.status << " " << r.plan.reason;
+    EXPECT_TRUE(std::isinf(r.plan.straightLineTime));
+    for (std::size_t k = 0; k + 1 < r.plan.path.size(); ++k)
+    {
+        const TimedPoint &a = r.plan.path[k], &b = r.plan.path[k + 1];
+        const int n = std::max(2, int(std::hypot(b.x - a.x, b.y - a.y) / 200.0));
+        for (int q = 0; q <= n; ++q)
+        {
+            const double f = double(q) / n;
+            const LonLat g = problem.toGeographic({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)});
+            ASSERT_FALSE(inside(jamaica[0].outer, g.lon, g.lat)) << "leg " << k << " at " << g.lon << ", " << g.lat;
+        }
+    }
+    // an open line or a point in a collection is refused, naming the feature and the member
+    for (const auto &[member, phrase] : std::vector<std::pair<std::string, std::string>>{
+             {R"({"type":"LineString","coordinates":[[-77,18],[-76,18.5],[-75.5,18]]})", "open line from lon -77"},
+             {R"({"type":"Point","coordinates":[-77,18]})", "a Point"}})
+    {
+        const std::string bad = dir.file("bad_collection.geojson");
+        std::ofstream(bad) << oneFeature(
+            "Mixed", R"({"type":"GeometryCollection","geometries":[{"type":"Polygon","coordinates":[[[-79,16.5],)"
+                     R"([-78.8,16.5],[-78.8,16.7],[-79,16.7],[-79,16.5]]]},)" + member + "]}");
+        try
+        {
+            readLandPolygons(bad, -80, 16, -75, 20);
+            ADD_FAILURE() << member << " was dropped in silence";
+        }
+        catch (const Error &e)
+        {
+            const std::string msg = e.what();
+            EXPECT_NE(msg.find("'Mixed', member 2 of its collection"), std::string::npos) << msg;
+            EXPECT_NE(msg.find(phrase), std::string::npos) << msg;
+        }
+    }
+}
+
 TEST(Coastline, ErrorsNameTheCoastlineFileTheFeatureAndLonLat)
 {
     TempDir dir;
