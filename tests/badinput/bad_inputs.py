@@ -754,6 +754,44 @@ case("forbidden-geojson-mercator-without-crs", ["--mission", "m.yaml", "--out", 
 case("forbidden-geojson-lon-lat-swapped", ["--mission", "m.yaml", "--out", "{out}"], 2,
      "none of its 1 forbidden regions lies in or near the planning region; they lie within lon 47.45..47.55",
      {"f.cdl": forecast(), "m.yaml": GJ_MISSION, "r.geojson": island_geojson(SWAPPED)})
+
+
+def zone_geojson(properties):
+    return ('{"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {%s}, "geometry": '
+            '{"type": "Polygon", "coordinates": [[[4, -1], [6, -1], [6, 1], [4, 1], [4, -1]]]}}]}\n' % properties)
+
+
+XY_GJ = mission(append="forbidden: {geojson: r.geojson, geojson_coordinates: local}\n")
+for name, props, phrase in [
+        ("forbidden-geojson-windows-on-an-island", '"kind": "island", "windows": [[0, 5]]',
+         "r.geojson:1: field 'features[0].properties.windows': belongs to a zone of kind 'closure', but this "
+         "feature's kind is 'island'"),
+        ("forbidden-geojson-windows-without-kind", '"windows": [[0, 5]]', "'island' (the default): give kind: closure"),
+        ("forbidden-geojson-drift-on-a-closure", '"kind": "closure", "windows": [[0, 5]], "drift": [1, 0]',
+         "field 'features[0].properties.drift': belongs to a zone of kind 'ice'"),
+        ("forbidden-geojson-windows-flat-list", '"kind": "closure", "windows": [0, 5]',
+         "field 'features[0].properties.windows[0]': expected a pair [a, b]"),
+        ("forbidden-geojson-windows-a-number", '"kind": "closure", "windows": 3',
+         "field 'features[0].properties.windows': a closure needs windows: [[from, to], ...]")]:
+    case(name, ["--mission", "m.yaml", "--out", "{out}"], 2, phrase, {"m.yaml": XY_GJ, "r.geojson": zone_geojson(props)})
+# a coastline collection: a closed shoreline is land (the route goes around it), an open one is refused
+SHORE = ", ".join("[%.3f, %.3f]" % p for p in ISLAND)
+OPEN_SHORE = ", ".join("[%.3f, %.3f]" % p for p in ISLAND[:-1])
+
+
+def collection_geojson(ring):
+    return ('{"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"name": "Shores"}, '
+            '"geometry": {"type": "GeometryCollection", "geometries": [{"type": "LineString", "coordinates": [%s]}]}}]}'
+            '\n' % ring)
+
+
+case("coastline-collection-closed-shoreline-is-land",
+     ["--currents", "f.nc", "--start=-52.6,47.5", "--goal=-52.4,47.5", "--coastline", "c.geojson", "--speed", "1",
+      "--out", "{out}"], 0, "Straight line:      impassable", {"f.cdl": forecast(), "c.geojson": collection_geojson(SHORE)})
+case("coastline-collection-open-shoreline",
+     ["--currents", "f.nc", START, GOAL, "--coastline", "c.geojson", "--out", "{out}"], 2,
+     "feature 'Shores', member 1 of its collection: an open line from lon -52.55, lat 47.45 to lon -52.55, lat 47.55",
+     {"f.cdl": forecast(), "c.geojson": collection_geojson(OPEN_SHORE)})
 # --- NetCDF: attributes and axes that were taken in silence, packed coordinates, groups ---------------------------
 NOT_EASTWARD = [('u:standard_name = "eastward_sea_water_velocity" ;', ""),
                 ('v:standard_name = "northward_sea_water_velocity" ;', "")]

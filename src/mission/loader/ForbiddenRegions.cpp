@@ -2,6 +2,8 @@
 // FeatureCollection ([IsernObstacles] Sec. II; ice: [EichhornIce]).
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "MissionReader.h"
 #include "ompl_glider/io/Length.h"
@@ -100,6 +102,15 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
             if (props["kind"])
                 kind = g.oneOf(props["kind"], fld + ".properties.kind",
                                {"island", "land", "restricted area", "closure", "ice"});
+            // a property of another kind would be ignored: refused, saying which kind it belongs to
+            for (const auto &[key, owner] : std::vector<std::pair<const char *, const char *>>{
+                     {"windows", "closure"}, {"max_submerged_time", "ice"}, {"drift", "ice"}, {"t_ref", "ice"},
+                     {"carried", "ice"}})
+                if (props[key] && kind != owner)
+                    g.fail(props[key], fld + ".properties." + key,
+                           std::string("belongs to a zone of kind '") + owner + "', but this feature's kind is '" +
+                               kind + "'" + (props["kind"] ? "" : " (the default)") + ": give kind: " + owner +
+                               " or leave " + key + " out");
         }
         std::vector<YAML::Node> polys;
         if (type == "Polygon")
