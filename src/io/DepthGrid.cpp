@@ -10,6 +10,7 @@
 
 #include "NcFile.h"
 #include "ompl_glider/Exception.h"
+#include "NumberText.h"
 
 namespace ompl_glider
 {
@@ -151,6 +152,36 @@ bool coordinates2D(const NcFile &f, int var, std::vector<double> &lon, std::vect
     return true;
 }
 
+/// Which horizontal axis dimension @p dim is, by its coordinate variable: +1 x (longitude), -1 y (latitude), 0 when
+/// nothing says (its units, standard_name, axis attribute, then its name).
+int axisKind(const NcFile &f, int dim)
+{
+    const std::string name = lower(f.dimName(dim));
+    if (const std::optional<int> v = f.findVar(f.dimName(dim)))
+    {
+        const std::string units = lower(f.attText(*v, "units").value_or(""));
+        if (units == "degrees_east" || units == "degree_east" || units == "degrees_e" || units == "degree_e")
+            return 1;
+        if (units == "degrees_north" || units == "degree_north" || units == "degrees_n" || units == "degree_n")
+            return -1;
+        const std::string sn = lower(f.attText(*v, "standard_name").value_or(""));
+        if (sn == "longitude" || sn == "grid_longitude" || sn == "projection_x_coordinate")
+            return 1;
+        if (sn == "latitude" || sn == "grid_latitude" || sn == "projection_y_coordinate")
+            return -1;
+        const std::string axis = lower(f.attText(*v, "axis").value_or(""));
+        if (axis == "x")
+            return 1;
+        if (axis == "y")
+            return -1;
+    }
+    if (name.rfind("lon", 0) == 0 || name == "x" || name.rfind("x_", 0) == 0 || name == "easting")
+        return 1;
+    if (name.rfind("lat", 0) == 0 || name == "y" || name.rfind("y_", 0) == 0 || name == "northing")
+        return -1;
+    return 0;
+}
+
 /// Indices of a 1-D axis within [lo, hi] plus one node beyond each side, in ascending order of their values.
 std::vector<std::size_t> cut(const std::vector<double> &v, double lo, double hi)
 {
@@ -165,6 +196,31 @@ std::vector<std::size_t> cut(const std::vector<double> &v, double lo, double hi)
     a = a > 0 ? a - 1 : a;
     b = b < idx.size() ? b + 1 : b;
     return {idx.begin() + static_cast<long>(a), idx.begin() + static_cast<long>(b)};
+}
+/// Refuses a grid that has no water over the region: only fill values, or land everywhere (a depth read with the
+/// wrong sign), naming the convention it was read with and what to set if the values mean the other.
+void checkHasWater(const NcFile &f, const DepthGrid &g)
+{
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (double d : g.depth)
+        if (!std::isnan(d))
+        {
+            lo = std::min(lo, d);
+            hi = std::max(hi, d);
+        }
+    if (lo > hi)
+        throw f.error("variable '" + g.variable + "' holds only fill values over the mission's region: no seafloor "
+                      "depth there");
+    if (hi > 0.0)
+        return;
+    const bool up = g.convention.rfind("elevation", 0) == 0;
+    const double vLo = up ? -hi : lo, vHi = up ? -lo : hi;  // the file's values
+    throw f.error("variable '" + g.variable + "' read as " + g.convention + " makes every node over the mission's "
+                  "region land (values " + text::number(vLo) + ".." + text::number(vHi) + " m in the file); expected "
+                  "a seafloor below the trip: if its values are " +
+                  (up ? "depths, positive down" : "elevations, positive up") + ", mark the variable positive = \"" +
+                  (up ? "down" : "up") + "\" (ncatted -a positive," + g.variable + ",o,c," + (up ? "down" : "up") +
+                  " FILE)");
 }
 }  // namespace
 
@@ -197,13 +253,24 @@ DepthGrid readDepthGrid(const std::string &path, const std::string &variable, co
         return sign * (v * (scale.empty() ? 1.0 : scale[0]) + (offset.empty() ? 0.0 : offset[0]));
     };
     std::vector<double> lon2, lat2;
-    const auto ax = axisOf(f, dims[1]), ay = axisOf(f, dims[0]);
-    if (ax && ay)
+    if (axisOf(f, dims[0]) && axisOf(f, dims[1]))
     {
-        const std::string xn = lower(f.dimName(dims[1]));
-        const std::optional<int> xv = f.findVar(f.dimName(dims[1]));
-        const std::string units = lower(f.attText(*xv, "units").value_or(""));
+        // the dimension order (lat, lon) or (lon, lat), told by the axes themselves, never by their ranges
+        const int k0 = axisKind(f, dims[0]), k1 = axisKind(f, dims[1]);
+        const std::string d0 = f.dimName(dims[0]), d1 = f.dimName(dims[1]);
+        if (k0 == k1)
+            throw f.error("variable '" + g.variable + "' on dimensions (" + d0 + ", " + d1 + "): " +
+                          (k0 == 0 ? "cannot tell which is longitude/x and which latitude/y"
+                                   : std::string("both axes say they are ") + (k0 > 0 ? "longitude/x" : "latitude/y")) +
+                          "; give the coordinate variables units degrees_east and degrees_north (or standard_name, "
+                          "or axis X and Y), or name the dimensions lon and lat (x and y)");
+        const bool transposed = k0 > 0 || k1 < 0;
+        const int dx = transposed ? dims[0] : dims[1], dy = transposed ? dims[1] : dims[0];
+        const auto ax = axisOf(f, dx), ay = axisOf(f, dy);
+        const std::string xn = lower(f.dimName(dx));
+        const std::string units = lower(f.attText(*f.findVar(f.dimName(dx)), "units").value_or(""));
         g.geographic = units.find("degree") != std::string::npos || xn.find("lon") != std::string::npos;
+        g.rectilinear = true;
         std::vector<double> xs = *ax;
         std::vector<std::size_t> ci, rj;
         if (g.geographic)
@@ -222,6 +289,14 @@ DepthGrid readDepthGrid(const std::string &path, const std::string &variable, co
         }
         if (ci.size() < 2 || rj.size() < 2)
             throw f.error("variable '" + g.variable + "' has fewer than 2 x 2 nodes over the mission's region");
+        const auto strict = [&](const std::vector<std::size_t> &idx, const std::vector<double> &values, int dim) {
+            for (std::size_t k = 1; k < idx.size(); ++k)
+                if (!(values[idx[k]] > values[idx[k - 1]]))
+                    throw f.error("axis '" + f.dimName(dim) + "' of the bathymetry '" + g.variable +
+                                  "' is not strictly monotonic (" + text::number(values[idx[k]]) + " twice)");
+        };
+        strict(ci, xs, dx);
+        strict(rj, *ay, dy);
         g.nx = ci.size();
         g.ny = rj.size();
         for (std::size_t j = 0; j < g.ny; ++j)
@@ -229,8 +304,9 @@ DepthGrid readDepthGrid(const std::string &path, const std::string &variable, co
             {
                 g.a.push_back(xs[ci[i]]);
                 g.b.push_back((*ay)[rj[j]]);
-                g.depth.push_back(value(rj[j] * n1 + ci[i]));
+                g.depth.push_back(value(transposed ? ci[i] * n1 + rj[j] : rj[j] * n1 + ci[i]));
             }
+        checkHasWater(f, g);
         return g;
     }
     if (!coordinates2D(f, var, lon2, lat2))
@@ -245,6 +321,7 @@ DepthGrid readDepthGrid(const std::string &path, const std::string &variable, co
         g.b.push_back(lat2[n]);
         g.depth.push_back(value(n));
     }
+    checkHasWater(f, g);
     return g;
 }
 }  // namespace ompl_glider

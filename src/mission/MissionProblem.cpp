@@ -678,7 +678,8 @@ std::shared_ptr<const DiveProfileTravelTime> MissionProblem::diveProfiles(double
         try
         {
             bathymetry =
-                std::make_shared<NetCdfBathymetry>(spec_.dive.bathymetryFile, spec_.dive.bathymetryVariable, geo);
+                std::make_shared<NetCdfBathymetry>(spec_.dive.bathymetryFile, spec_.dive.bathymetryVariable, geo,
+                                                   bathymetryRegion());
         }
         catch (const Error &e)
         {

@@ -32,6 +32,20 @@ std::string at(const MissionSpec &m, const std::string &field)
 }
 }  // namespace
 
+#if OMPL_GLIDER_WITH_NETCDF
+DepthRegion MissionProblem::bathymetryRegion() const
+{
+    DepthRegion region;
+    if (isGeographic())
+    {
+        const GeoBox gb = frameBounds(box_, [this](Point2 p) { return toGeographic(p); });
+        const double pad = 0.05 * std::max(gb.lonMax - gb.lonMin, gb.latMax - gb.latMin);
+        region = {gb.lonMin - pad, gb.lonMax + pad, std::max(-90.0, gb.latMin - pad), std::min(90.0, gb.latMax + pad)};
+    }
+    return region;
+}
+#endif
+
 std::shared_ptr<const ForbiddenCells> MissionProblem::shallowWater()
 {
     const MissionSpec &m = spec_;
@@ -47,14 +61,8 @@ std::shared_ptr<const ForbiddenCells> MissionProblem::shallowWater()
         file = forecastFiles_.front();  // the model's own bathymetry (ROMS h)
     }
 #if OMPL_GLIDER_WITH_NETCDF
-    DepthRegion region;
+    const DepthRegion region = bathymetryRegion();
     const bool geo = isGeographic();
-    if (geo)
-    {
-        const GeoBox gb = frameBounds(box_, [this](Point2 p) { return toGeographic(p); });
-        const double pad = 0.05 * std::max(gb.lonMax - gb.lonMin, gb.latMax - gb.latMin);
-        region = {gb.lonMin - pad, gb.lonMax + pad, std::max(-90.0, gb.latMin - pad), std::min(90.0, gb.latMax + pad)};
-    }
     DepthGrid g;
     try
     {

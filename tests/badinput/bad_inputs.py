@@ -713,6 +713,36 @@ case("bathymetry-sign-ambiguous", ["--currents", "f.nc", START, GOAL, "--bathyme
 case("bathymetry-variable-missing", ["--currents", "f.nc", START, GOAL, "--bathymetry", "b.nc", "--bathymetry-variable",
                                      "depth", "--out", "{out}"], 2, "--bathymetry: NetCDF file",
      {"f.cdl": forecast(), "b.cdl": BATHY.replace("VAR", "elevation").replace("ATTRS", "elevation:positive = \"up\" ;")})
+BATHY_100 = BATHY.replace("-100", "100")
+for name, var, attrs, data, phrase in [
+        ("bathymetry-elevation-holding-depths", "elevation", 'elevation:units = "m" ;', "100",
+         "variable 'elevation' read as elevation, positive up (by its name) makes every node over the mission's "
+         "region land (values 100..100 m in the file); expected a seafloor below the trip: if its values are "
+         "depths, positive down, mark the variable positive = \"down\""),
+        ("bathymetry-depth-marked-positive-up", "depth", 'depth:units = "m" ; depth:positive = "up" ;', "100",
+         "variable 'depth' read as elevation, positive up (attribute positive) makes every node"),
+        ("bathymetry-fill-values-only", "depth", 'depth:units = "m" ; depth:_FillValue = -999.f ;', "-999",
+         "variable 'depth' holds only fill values over the mission's region"),
+        ("bathymetry-land-everywhere", "depth", 'depth:units = "m" ; depth:positive = "down" ;', "-5",
+         "read as depth, positive down (attribute positive) makes every node over the mission's region land (values "
+         "-5..-5 m in the file); expected a seafloor below the trip: if its values are elevations, positive up")]:
+    case(name, ["--currents", "f.nc", START, GOAL, "--bathymetry", "b.nc", "--min-depth", "50m", "--out", "{out}"], 2,
+         phrase, {"f.cdl": forecast(), "b.cdl": BATHY.replace("VAR", var).replace("ATTRS", attrs).replace("-100", data)})
+# (lon, lat) dimensions, axes over the same numbers, nothing that says which is which: refused, never guessed
+ANON_BATHY = """netcdf b {
+dimensions: p = 3 ; q = 3 ;
+variables:
+  double p(p) ; double q(q) ;
+  float depth(p, q) ; depth:positive = "down" ;
+data:
+  p = 47, 47.5, 48 ; q = 47, 47.5, 48 ;
+  depth = 100, 100, 100, 100, 100, 100, 100, 100, 100 ;
+}
+"""
+case("bathymetry-axis-order-unknown", ["--currents", "f.nc", START, GOAL, "--bathymetry", "b.nc", "--min-depth", "50m",
+                                       "--out", "{out}"], 2,
+     "variable 'depth' on dimensions (p, q): cannot tell which is longitude/x and which latitude/y",
+     {"f.cdl": forecast(), "b.cdl": ANON_BATHY})
 nc_case("depth-average-single-level", forecast(), "needs several depth levels", extra=("--depth-average", "0,200"))
 
 # --- coastline and forbidden-region files: their CRS, coordinates that are not lon/lat, files nowhere near -------

@@ -8,6 +8,8 @@
 #include "../current/TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/environment/KeepOffZone.h"
+#include "ompl_glider/io/DepthGrid.h"
+#include "ompl_glider/io/NetCdfBathymetry.h"
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -140,7 +142,8 @@ double bankDepth(double lon, double lat)
         return 20.0;
     return 500.0;
 }
-void writeGebco(const std::string &path)
+/// Written as GEBCO does, elevation(lat, lon); @p transposed: elevation(lon, lat), as some tools write it.
+void writeGebco(const std::string &path, bool transposed = false)
 {
     NcWriter w(path, NC_CLOBBER);
     const std::size_t nx = 101, ny = 81;  // lon -80..-75, lat 24..28
@@ -148,7 +151,7 @@ void writeGebco(const std::string &path)
     const int vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
     w.text(vy, "units", "degrees_north");
     w.text(vx, "units", "degrees_east");
-    const int ve = w.var("elevation", NC_FLOAT, {dy, dx});
+    const int ve = w.var("elevation", NC_FLOAT, transposed ? std::vector<int>{dx, dy} : std::vector<int>{dy, dx});
     w.text(ve, "standard_name", "height_above_mean_sea_level");
     w.text(ve, "units", "m");
     w.enddef();
@@ -157,9 +160,9 @@ void writeGebco(const std::string &path)
         lat[j] = 24.0 + 0.05 * double(j);
     for (std::size_t i = 0; i < nx; ++i)
         lon[i] = -80.0 + 0.05 * double(i);
-    for (std::size_t j = 0; j < ny; ++j)
-        for (std::size_t i = 0; i < nx; ++i)
-            e.push_back(-bankDepth(lon[i], lat[j]));
+    for (std::size_t p = 0; p < (transposed ? nx : ny); ++p)
+        for (std::size_t q = 0; q < (transposed ? ny : nx); ++q)
+            e.push_back(transposed ? -bankDepth(lon[p], lat[q]) : -bankDepth(lon[q], lat[p]));
     w.put(vy, lat);
     w.put(vx, lon);
     w.put(ve, e);
@@ -200,12 +203,15 @@ TEST(Safety, KeepOffFromAForecastsLandCells)
     EXPECT_GT(r.plan.travelTime, open.plan.travelTime);
 }
 
-TEST(Safety, DepthLimitFromAGebcoLikeFile)
+TEST(Safety, DepthLimitFromAGebcoLikeFileInEitherDimensionOrder)
 {
+  for (bool transposed : {false, true})
+  {
+    SCOPED_TRACE(transposed ? "elevation(lon, lat)" : "elevation(lat, lon)");
     TempDir dir;
     const std::string file = dir.file("coast.nc"), gebco = dir.file("gebco.nc");
     writeForecast(file);
-    writeGebco(gebco);
+    writeGebco(gebco, transposed);
     ForecastInput in;
     in.current.file = file;
     in.start = {-79.4, 26.4};
@@ -244,4 +250,50 @@ TEST(Safety, DepthLimitFromAGebcoLikeFile)
             ASSERT_FALSE(onBank) << "leg " << k << " at " << g.lon << ", " << g.lat;
         }
     EXPECT_GT(r.plan.travelTime, a.plan.travelTime);
+  }
+}
+
+TEST(Safety, BathymetryAxesThatDoNotSayWhichIsLongitudeAreRefusedNamingThem)
+{
+    // axes with the same numeric range and nothing that says which is longitude: never guessed
+    TempDir dir;
+    const std::string path = dir.file("anonymous.nc");
+    {
+        NcWriter w(path, NC_CLOBBER);
+        const int d0 = w.dim("p", 5), d1 = w.dim("q", 5);
+        const int v0 = w.var("p", NC_DOUBLE, {d0}), v1 = w.var("q", NC_DOUBLE, {d1});
+        const int ve = w.var("depth", NC_FLOAT, {d0, d1});
+        w.text(ve, "positive", "down");
+        w.enddef();
+        w.put(v0, std::vector<double>{10, 11, 12, 13, 14});
+        w.put(v1, std::vector<double>{10, 11, 12, 13, 14});
+        w.put(ve, std::vector<double>(25, 100.0));
+    }
+    try
+    {
+        readDepthGrid(path, "", DepthRegion{});
+        ADD_FAILURE() << "an axis order was guessed";
+    }
+    catch (const Error &e)
+    {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find(path), std::string::npos) << msg;
+        EXPECT_NE(msg.find("dimensions (p, q): cannot tell which is longitude/x"), std::string::npos) << msg;
+    }
+    // the dive profiles' reader is the same reader: the same refusal
+    EXPECT_THROW(NetCdfBathymetry(path, "depth", [](double x, double y) { return LonLat{x, y}; }), Error);
+}
+
+TEST(Safety, DiveProfilesAndTheDepthLimitReadOneFileAlike)
+{
+    // the same transposed GEBCO-like file through the dive profiles' reader: the bank's depths at its nodes
+    TempDir dir;
+    const std::string gebco = dir.file("gebco_t.nc");
+    writeGebco(gebco, true);
+    const NetCdfBathymetry b(gebco, "", [](double x, double y) { return LonLat{x, y}; });
+    EXPECT_EQ(b.variable(), "elevation");
+    EXPECT_NE(b.convention().find("elevation, positive up"), std::string::npos) << b.convention();
+    for (double lon : {-79.5, -78.0, -77.75, -76.0})
+        for (double lat : {24.5, 26.4, 27.5})
+            EXPECT_NEAR(b.seafloorDepth(lon, lat), bankDepth(lon, lat), 1e-3) << lon << " " << lat;
 }

@@ -16,6 +16,7 @@ struct DepthGrid
     std::vector<double> a, b;  ///< node coordinates [j * nx + i]: lon/lat (degrees) when geographic, else x/y
     std::vector<double> depth; ///< seafloor depth, metres positive down (negative on land); NaN for fill values
     bool geographic{true};     ///< the coordinates are lon/lat
+    bool rectilinear{false};   ///< on 1-D axes: a ascends along i (the same for every j), b along j
     std::string variable;      ///< the variable read
     std::string convention;    ///< how its sign was decided ("elevation, positive up (attribute positive)")
 };
@@ -32,9 +33,13 @@ struct DepthRegion
 /// rose) on 1-D axes (coordinate variables of its two dimensions) or 2-D lon/lat (its `coordinates` attribute, or
 /// lon_rho/lat_rho). Its sign is decided by the attribute `positive`, else its standard_name, else its name, else
 /// its long_name ("depth"/"bathymetry" down; "elevation", "height", "altitude", "relief" up); a variable none of
-/// these settle is refused. 1-D geographic axes are cut to @p region (one node beyond each side; a global axis
-/// across its seam); 2-D grids are kept whole.
+/// these settle is refused. Which of its two dimensions is longitude/x is told by the coordinate variables (units
+/// degrees_east/north, standard_name, axis X/Y, then the names lon*/lat*, x/y), so (lat, lon) and (lon, lat) are
+/// both read right; axes that do not say are refused, never guessed from their ranges. 1-D geographic axes are cut to
+/// @p region (one node beyond each side; a global axis across its seam); 2-D grids are kept whole.
 /// @throws Error "NetCDF file '<path>': ..." naming the variable when the file, the variable or its coordinates
-/// cannot be read, none is found, its sign is ambiguous or no node lies in the region.
+/// cannot be read, none is found, its sign is ambiguous, its axis order cannot be told, an axis repeats a value, no
+/// node lies in the region, or the region holds only fill values or only land (the message names the sign
+/// convention it was read with and the attribute that states the other).
 DepthGrid readDepthGrid(const std::string &path, const std::string &variable, const DepthRegion &region);
 }  // namespace ompl_glider
