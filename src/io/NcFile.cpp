@@ -1,14 +1,30 @@
 // The open NetCDF file and its queries (see NcFile.h).
 #include "NcFile.h"
 
+#include <hdf5.h>
+
 #include "TextUtil.h"
 
 namespace ompl_glider
 {
 namespace netcdf_detail
 {
+namespace
+{
+/// HDF5 keeps an error stack, and its automatic printing, per thread; NetCDF-C switches the printing off only on the
+/// thread that first opens a NetCDF-4 file. Every thread that opens one switches it off for itself: NetCDF-C's
+/// probes for optional attributes fail inside HDF5 by design, and the errors that matter reach the user through
+/// NetCDF-C's status codes.
+void quietHdf5OnThisThread()
+{
+    thread_local const bool quiet = H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr) >= 0;
+    (void)quiet;
+}
+}  // namespace
+
 NcFile::NcFile(const std::string &path) : path_(path)
 {
+    quietHdf5OnThisThread();
     // A classic file is checked against its header before NetCDF-C opens it: NetCDF-C reads a cut file as if it
     // were complete, and allocates whatever a corrupt header declares (an attribute of 2^31 values) before reading.
     if (auto cut = classicTruncation(path))

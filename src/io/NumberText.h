@@ -17,20 +17,20 @@ inline std::string number(double v, int digits = 10)
     return buf;
 }
 
-/// @brief A number for a CSV cell: empty for NaN, "inf" or "-inf" for an infinity, else number(v, 10).
+/// @brief A number for a CSV cell: empty for NaN or an infinity (no value), else number(v, 10).
 inline std::string csvNumber(double v)
 {
-    if (std::isnan(v))
-        return "";
-    if (std::isinf(v))
-        return v > 0 ? "inf" : "-inf";
+    if (!std::isfinite(v))
+        return "";  // no value (summary.json's null): "inf" is no number to a CSV reader
     return number(v, 10);
 }
 
 /// @brief A duration for people with its SI value beside it: "15 d 9.1 h (1328826.6 s)", "9.1 h (32760.0 s)",
-/// "12.5 min (750.0 s)"; csvNumber() for a non-finite or negative value.
+/// "12.5 min (750.0 s)"; "inf" for an infinity, csvNumber() for NaN or a negative value.
 inline std::string durationText(double seconds)
 {
+    if (std::isinf(seconds))
+        return seconds > 0 ? "inf" : "-inf";
     if (!std::isfinite(seconds) || seconds < 0.0)
         return csvNumber(seconds);
     char buf[96];

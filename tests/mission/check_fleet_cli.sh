@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # glider_plan --mission with a fleet: the example (exit 0, a folder per glider, fleet.csv, the table), a glider
-# without a route (exit 1 naming it, every folder written), a bad entry (exit 2 with file:line, nothing written),
+# without a route (exit 1 naming it, every folder written, an empty travel time in fleet.csv), a NetCDF-4 forecast
+# read on the fleet's threads without HDF5 diagnostics, a bad entry (exit 2 with file:line, nothing written),
 # and --start refused with a fleet.
 #   check_fleet_cli.sh GLIDER_PLAN SOURCE_DIR
 set -uo pipefail
@@ -44,6 +45,13 @@ sed -e '/^fleet:/,/^outputs/{/^outputs/!d}' -e 's/^outputs: {directory: fc/start
   "$WORK/forecast.yaml" >"$WORK/west.yaml"
 "$PLAN" --mission "$WORK/west.yaml" >/dev/null 2>"$WORK/stderr" || fail "west alone: exit $?"
 cmp "$WORK/fc/west/waypoints.csv" "$WORK/alone/waypoints.csv" || fail "the fleet's west differs from its own mission"
+# the same forecast as NetCDF-4 (HDF5 underneath), read on the fleet's threads: no HDF5 diagnostics on the console
+nccopy -k nc4 "$SRC/examples/labrador_forecast.nc" "$WORK/labrador4.nc" || fail "nccopy"
+sed -e "s|file: .*labrador_forecast.nc|file: $WORK/labrador4.nc|" -e 's/directory: fc/directory: fc4/' \
+  "$WORK/forecast.yaml" >"$WORK/forecast4.yaml"
+"$PLAN" --mission "$WORK/forecast4.yaml" >"$WORK/stdout" 2>"$WORK/stderr" || fail "NetCDF-4 fleet: exit $?"
+grep -q "HDF5" "$WORK/stdout" "$WORK/stderr" && fail "HDF5 diagnostics printed: $(grep -c HDF5 "$WORK/stderr") lines"
+cmp "$WORK/fc/west/waypoints.csv" "$WORK/fc4/west/waypoints.csv" || fail "the NetCDF-4 fleet's west differs"
 
 # a glider that cannot make headway against the current: exit 1, named; the others' routes are written
 cat >"$WORK/nopath.yaml" <<'Y'
@@ -61,6 +69,14 @@ Y
 grep -q "glider 'against' has no route" "$WORK/stderr" || fail "the glider without a route is not named"
 [ -f "$WORK/out/with/waypoints.csv" ] && [ -f "$WORK/out/against/summary.json" ] || fail "folders not written"
 [ -e "$WORK/out/against/waypoints.csv" ] && fail "a route file for the glider without a route"
+# fleet.csv: no travel time for it (an empty cell, as summary.json's null), never "inf"
+python3 - "$WORK/out/fleet.csv" <<'PY' || fail "fleet.csv of the glider without a route"
+import csv, sys
+rows = {r["name"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert rows["against"]["travel_time"] == "" and rows["against"]["arrival_time"] == "", rows["against"]
+assert float(rows["with"]["travel_time"]) > 0, rows["with"]
+assert "inf" not in open(sys.argv[1]).read().lower()
+PY
 
 # a bad entry: exit 2 with file:line, nothing written
 sed 's/- {name: against, start: {x: 9, y: 1}, /- {name: against, /' "$WORK/nopath.yaml" >"$WORK/bad.yaml"
