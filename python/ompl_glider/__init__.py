@@ -21,6 +21,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import numbers
 import os
 import shutil
 import tempfile
@@ -36,6 +37,28 @@ __all__ = ["plan", "plan_fleet", "Field", "Result", "Route", "Error", "planner_n
 
 Pair = Tuple[float, float]
 ProgressCallback = Callable[[str, bool], None]
+
+
+def _bad(who: str, value: Any, expected: str) -> Error:
+    """The Error of a keyword of the wrong type: who ("plan(): keyword 'speed'"), what it expects, what it got."""
+    text = repr(value)
+    return Error(f"{who}: expected {expected}, got {type(value).__name__} {text if len(text) <= 60 else text[:57] + '...'}")
+
+
+def _real(who: str, value: Any) -> float:
+    """A number (not a bool), as a float, or an Error naming who."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise _bad(who, value, "a number")
+    return float(value)
+
+
+def _pair(who: str, value: Any) -> Pair:
+    """Two numbers, as a tuple of floats, or an Error naming who."""
+    try:
+        a, b = value
+        return (_real(who, a), _real(who, b))
+    except (TypeError, ValueError, Error):
+        raise _bad(who, value, "a pair (x, y) or (lon, lat) of numbers") from None
 
 
 def planner_names() -> List[str]:
@@ -75,7 +98,14 @@ class Field:
         The other options are those of the mission format's ``current`` section (examples/MISSION_FORMAT.md).
         """
         files = path if isinstance(path, (str, os.PathLike)) else ",".join(os.fspath(p) for p in path)
-        return Field("netcdf", files=os.fspath(files), variables=dict(variables or {}), depth=float(depth),
+        if steady_record is not None and (isinstance(steady_record, (bool, np.bool_)) or
+                                          not isinstance(steady_record, numbers.Integral) or steady_record < 0):
+            raise _bad("Field.netcdf(): steady_record", steady_record,
+                       "the index of the record to hold as a steady field, an integer >= 0 (0: the first record)")
+        if depth_average is not None:
+            depth_average = _pair("Field.netcdf(): depth_average", depth_average)
+        return Field("netcdf", files=os.fspath(files), variables=dict(variables or {}),
+                     depth=_real("Field.netcdf(): depth", depth),
                      xy_interpolation=xy_interpolation, depth_interpolation=depth_interpolation,
                      time_interpolation=time_interpolation, horizon=horizon, velocity_units=velocity_units,
                      time_units=time_units, steady_record=steady_record, zero_velocity_land=zero_velocity_land,
@@ -121,7 +151,8 @@ class Field:
         """An analytic flow by its registry name (meandering_jet, uniform, linear_shear, double_gyre, ...) and
         parameters (missing ones take their defaults; :func:`analytic_fields` lists them). Dimensionless units;
         the region is the built-in mission's (x in [0, 10], y in [-4, 4]) unless ``region=`` is given."""
-        return Field("analytic", name=name, parameters={k: float(p) for k, p in parameters.items()})
+        return Field("analytic", name=name,
+                     parameters={k: _real(f"Field.analytic(): parameter '{k}'", p) for k, p in parameters.items()})
 
 
 class Route(NamedTuple):
@@ -260,6 +291,8 @@ class Result:
     def write(self, out_dir: Union[str, os.PathLike]) -> List[str]:
         """Writes the command line's files (summary.json and the mission's output formats) into out_dir, all or
         nothing; returns the paths written."""
+        if not isinstance(out_dir, (str, os.PathLike)) or os.fspath(out_dir) == "":
+            raise _bad("Result.write(): out_dir", out_dir, "the path of an output directory")
         return list(self._core.write(os.fspath(out_dir)))
 
     def __getattr__(self, name: str) -> Any:  # the rest of the C++ result: path_length, box, start, goal, ...
@@ -361,9 +394,18 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
         if start is None or goal is None:
             raise TypeError("plan(): a NetCDF field needs start and goal (lon, lat, or x, y on a Cartesian grid)")
         s = field.settings
-        spec = _core.forecast_mission(s["files"], tuple(start), tuple(goal),
+        if region is not None:
+            try:
+                region = tuple(_real("plan(): keyword 'region'", c) for c in region)
+            except TypeError:
+                raise _bad("plan(): keyword 'region'", region, "four numbers (lon_min, lat_min, lon_max, lat_max)")
+            if len(region) != 4:
+                raise _bad("plan(): keyword 'region'", region, "four numbers (lon_min, lat_min, lon_max, lat_max)")
+        spec = _core.forecast_mission(s["files"], _pair("plan(): keyword 'start'", start),
+                                      _pair("plan(): keyword 'goal'", goal),
                                       "" if departure is None else str(departure),
-                                      0.3 if speed is None else float(speed), s["depth"], region, s["variables"],
+                                      0.3 if speed is None else _real("plan(): keyword 'speed'", speed), s["depth"],
+                                      region, s["variables"],
                                       s["xy_interpolation"], s["depth_interpolation"], s["time_interpolation"],
                                       s["horizon"], s["velocity_units"], s["time_units"], s["steady_record"],
                                       s["zero_velocity_land"], s["depth_average"])
@@ -377,5 +419,10 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     else:
         spec = _load(mission)
     spec = spec.with_keywords(**keywords)
-    core = _core.run(spec, progress, None if speeds is None else [float(v) for v in speeds], optimum)
+    if speeds is not None:
+        try:
+            speeds = [_real("plan(): keyword 'speeds'", v) for v in speeds]
+        except TypeError:
+            raise _bad("plan(): keyword 'speeds'", speeds, "a list of numbers") from None
+    core = _core.run(spec, progress, speeds, optimum)
     return Result(core)

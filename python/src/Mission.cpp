@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <tuple>
+#include <type_traits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -35,6 +36,34 @@ using Quad = std::tuple<double, double, double, double>;
 SourceMark keyword(const std::string &name)
 {
     return SourceMark{"plan(): keyword '" + name + "'", 0};
+}
+
+/// "str 'fast'": the Python type and a short repr of a value, for messages.
+std::string describe(const py::handle &v)
+{
+    std::string r = py::repr(v).cast<std::string>();
+    if (r.size() > 60)
+        r = r.substr(0, 57) + "...";
+    return std::string(Py_TYPE(v.ptr())->tp_name) + " " + r;
+}
+
+/// The value of keyword @p name as a T, or an Error naming the keyword, what it expects and what it got: a bool is
+/// no number, and a number no bool (smoothing=1 is refused, as smoothing="no" is).
+template <class T>
+T value(const py::handle &v, const std::string &name, const char *expected)
+{
+    const bool isBool = py::isinstance<py::bool_>(v) || std::string(Py_TYPE(v.ptr())->tp_name) == "numpy.bool_";
+    bool ok = std::is_same_v<T, bool> ? isBool : !isBool;
+    if (ok)
+        try
+        {
+            return v.cast<T>();
+        }
+        catch (const py::cast_error &)
+        {
+            ok = false;
+        }
+    throw Error("plan(): keyword '" + name + "': expected " + expected + ", got " + describe(v));
 }
 
 void checkFinite(const std::string &name, double v, bool positive)
@@ -89,11 +118,13 @@ void addForbidden(MissionSpec &m, const py::dict &item, std::size_t index)
 {
     const std::string where = "plan(): keyword 'forbidden' [" + std::to_string(index) + "]";
     PolygonSpec poly;
-    poly.name = item.contains("name") ? item["name"].cast<std::string>() : "region " + std::to_string(index + 1);
-    poly.geographic = item.contains("lonlat") ? item["lonlat"].cast<bool>() : m.start.geographic;
+    const std::string kw = "forbidden[" + std::to_string(index) + "]";
+    poly.name = item.contains("name") ? value<std::string>(item["name"], kw + ".name", "a text")
+                                      : "region " + std::to_string(index + 1);
+    poly.geographic = item.contains("lonlat") ? value<bool>(item["lonlat"], kw + ".lonlat", "True or False") : m.start.geographic;
     if (!item.contains("points"))
         throw Error(where + ": expected 'points', a list of (x, y) or (lon, lat) pairs");
-    poly.points = item["points"].cast<std::vector<Pair>>();
+    poly.points = value<std::vector<Pair>>(item["points"], kw + ".points", "a list of (x, y) or (lon, lat) pairs");
     if (poly.points.size() < 3)
         throw Error(where + ": a polygon needs at least 3 points, got " + std::to_string(poly.points.size()));
     for (const Pair &p : poly.points)
@@ -102,7 +133,7 @@ void addForbidden(MissionSpec &m, const py::dict &item, std::size_t index)
     poly.mark = keyword("forbidden");
     if (item.contains("windows"))
     {
-        TimeWindowSpec w{poly, item["windows"].cast<std::vector<Pair>>()};
+        TimeWindowSpec w{poly, value<std::vector<Pair>>(item["windows"], kw + ".windows", "a list of (begin, end) pairs")};
         for (const Pair &p : w.windows)
             if (!(p.second >= p.first))
                 throw Error(where + ": a window's end must not be before its begin");
@@ -112,12 +143,12 @@ void addForbidden(MissionSpec &m, const py::dict &item, std::size_t index)
     {
         IceSpec ice;
         ice.polygon = poly;
-        ice.maxSubmergedTime = item["max_submerged_time"].cast<double>();
+        ice.maxSubmergedTime = value<double>(item["max_submerged_time"], kw + ".max_submerged_time", "a number");
         checkFinite("forbidden.max_submerged_time", ice.maxSubmergedTime, false);
-        ice.tRef = item.contains("t_ref") ? item["t_ref"].cast<double>() : 0.0;
+        ice.tRef = item.contains("t_ref") ? value<double>(item["t_ref"], kw + ".t_ref", "a number") : 0.0;
         if (item.contains("drift"))
-            std::tie(ice.vx, ice.vy) = item["drift"].cast<Pair>();
-        ice.carried = item.contains("carried") && item["carried"].cast<bool>();
+            std::tie(ice.vx, ice.vy) = value<Pair>(item["drift"], kw + ".drift", "a pair (vx, vy) of numbers");
+        ice.carried = item.contains("carried") && value<bool>(item["carried"], kw + ".carried", "True or False");
         m.forbidden.ice.push_back(std::move(ice));
     }
     else
@@ -125,7 +156,7 @@ void addForbidden(MissionSpec &m, const py::dict &item, std::size_t index)
         ObstacleSpec o;
         o.polygon = poly;
         if (item.contains("kind"))
-            o.kind = item["kind"].cast<std::string>();
+            o.kind = value<std::string>(item["kind"], kw + ".kind", "a text");
         if (o.kind != "island" && o.kind != "land" && o.kind != "restricted area")
             throw Error(where + ": kind must be island, land or restricted area, got '" + o.kind + "'");
         m.forbidden.obstacles.push_back(std::move(o));
@@ -194,60 +225,62 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     }
     if (auto v = get("analytic"))
     {
-        const auto [type, params] = v->cast<std::pair<std::string, std::map<std::string, double>>>();
+        const auto [type, params] = value<std::pair<std::string, std::map<std::string, double>>>(
+            *v, "field", "(name, {parameter: number})");
         setAnalytic(m, type, params);
     }
     if (auto v = get("planner"))
     {
-        m.planner.name = plannerEntry(v->cast<std::string>()).name;
+        m.planner.name = plannerEntry(value<std::string>(*v, "planner", "a planner name")).name;
         m.marks["planner.name"] = keyword("planner");
     }
     if (auto v = get("planner_params"))
-        for (const auto &[name, value] : v->cast<std::map<std::string, std::string>>())
+        for (const auto &[name, text] :
+             value<std::map<std::string, std::string>>(*v, "planner_params", "a dict of parameter names to values"))
         {
-            m.planner.parameters[name] = value;
+            m.planner.parameters[name] = text;
             m.planner.parameterMarks[name] = keyword("planner_params");
         }
     if (auto v = get("grid_size"))
     {
-        m.planner.gridSize = v->cast<double>();
+        m.planner.gridSize = value<double>(*v, "grid_size", "a number");
         checkFinite("grid_size", m.planner.gridSize, true);
         m.marks["planner.grid_size"] = keyword("grid_size");
     }
     if (auto v = get("sectors"))
     {
-        m.planner.sectors = v->cast<int>();
+        m.planner.sectors = value<int>(*v, "sectors", "an integer 1..5");
         if (m.planner.sectors < 1 || m.planner.sectors > 5)
             throw Error("plan(): keyword 'sectors' expects 1..5, got " + std::to_string(m.planner.sectors));
         m.marks["planner.sectors"] = keyword("sectors");
     }
     if (auto v = get("time_limit"))
     {
-        m.planner.timeLimit = v->cast<double>();
+        m.planner.timeLimit = value<double>(*v, "time_limit", "a number of seconds");
         checkFinite("time_limit", m.planner.timeLimit, true);
         m.marks["planner.time_limit"] = keyword("time_limit");
     }
     if (auto v = get("horizon"))
     {
-        m.planner.horizon = v->cast<double>();
+        m.planner.horizon = value<double>(*v, "horizon", "a number");
         checkFinite("horizon", m.planner.horizon, true);
         m.marks["planner.horizon"] = keyword("horizon");
     }
     if (auto v = get("goal_tolerance"))
     {
-        m.planner.goalTolerance = v->cast<double>();
+        m.planner.goalTolerance = value<double>(*v, "goal_tolerance", "a number");
         checkFinite("goal_tolerance", m.planner.goalTolerance, true);
         m.marks["planner.goal_tolerance"] = keyword("goal_tolerance");
     }
     if (auto v = get("smoothing"))
-        m.planner.smoothing = v->cast<bool>();
+        m.planner.smoothing = value<bool>(*v, "smoothing", "True or False");
     if (auto v = get("refinement"))
-        m.planner.refinement = v->cast<bool>();
+        m.planner.refinement = value<bool>(*v, "refinement", "True or False");
     if (auto v = get("global_check"))
-        m.planner.globalCheck = v->cast<bool>();
+        m.planner.globalCheck = value<bool>(*v, "global_check", "True or False");
     if (auto v = get("speed"))
     {
-        const double s = v->cast<double>();
+        const double s = value<double>(*v, "speed", "a number");
         checkFinite("speed", s, true);
         m.vehicle.speed = m.travel.speed = s;
         m.marks["vehicle.speed"] = keyword("speed");
@@ -267,12 +300,12 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
         m.marks["departure.time"] = keyword("departure");
     }
     if (auto v = get("start"))
-        setPoint(m, m.start, "start", v->cast<Pair>());
+        setPoint(m, m.start, "start", value<Pair>(*v, "start", "a pair (x, y) or (lon, lat) of numbers"));
     if (auto v = get("goal"))
-        setPoint(m, m.goal, "goal", v->cast<Pair>());
+        setPoint(m, m.goal, "goal", value<Pair>(*v, "goal", "a pair (x, y) or (lon, lat) of numbers"));
     if (auto v = get("region"))
     {
-        const auto [a, b, c, d] = v->cast<Quad>();
+        const auto [a, b, c, d] = value<Quad>(*v, "region", "four numbers (x_min, y_min, x_max, y_max)");
         m.region.set = true;
         m.region.geographic = m.start.geographic;
         if (m.region.geographic)
@@ -289,15 +322,15 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     if (auto v = get("forbidden"))
     {
         std::size_t k = 0;
-        for (const py::handle item : v->cast<py::list>())
-            addForbidden(m, item.cast<py::dict>(), k++);
+        for (const py::handle item : value<py::list>(*v, "forbidden", "a list of polygons"))
+            addForbidden(m, value<py::dict>(item, "forbidden", "a polygon as a dict with points"), k++);
     }
     if (auto v = get("isochrone_interval"))
     {
-        m.outputs.isochroneInterval = v->cast<double>();
+        m.outputs.isochroneInterval = value<double>(*v, "isochrone_interval", "a number");
         checkFinite("isochrone_interval", m.outputs.isochroneInterval, true);
     }
-    const bool isochrones = get("isochrones") ? get("isochrones")->cast<bool>() : false;
+    const bool isochrones = get("isochrones") ? value<bool>(*get("isochrones"), "isochrones", "True or False") : false;
     if ((isochrones || get("isochrone_interval")) && !m.outputs.wants(OutputFormatId::Isochrones))
         m.outputs.files.push_back(OutputFormatId::Isochrones);
     return m;

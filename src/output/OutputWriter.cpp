@@ -1,6 +1,7 @@
 #include "ompl_glider/output/OutputWriter.h"
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -214,10 +215,11 @@ void checkOutputDirectory(const std::string &directory)
         throw Error("output directory '" + directory + "' is not writable (" + std::strerror(errno) + ")");
     // access() says yes to root everywhere (even in /proc or on a read-only mount): make and remove a directory
     // where the staging directory will go.
-    const fs::path probe = work / (".ompl_glider-probe-" + std::to_string(::getpid()));
-    if (!fs::create_directory(probe, ec))
+    // (a unique name: threads of one process may check sibling directories at once)
+    std::string probe = (work / ".ompl_glider-probe-XXXXXX").string();
+    if (!::mkdtemp(&probe[0]))
         throw Error("output directory '" + directory + "' cannot be written: no directory can be made in '" +
-                    work.string() + "'" + (ec ? " (" + ec.message() + ")" : std::string()));
+                    work.string() + "' (" + std::strerror(errno) + ")");
     fs::remove(probe, ec);
 }
 

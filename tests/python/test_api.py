@@ -127,6 +127,69 @@ def test_errors_are_python_exceptions_naming_the_input():
     assert issubclass(ompl_glider.Error, ValueError)
 
 
+@pytest.mark.parametrize("keywords, phrase", [
+    (dict(speed="fast"), "plan(): keyword 'speed': expected a number, got str 'fast'"),
+    (dict(speed=True), "keyword 'speed': expected a number, got bool True"),
+    (dict(sectors=2.5), "keyword 'sectors': expected an integer 1..5, got float 2.5"),
+    (dict(smoothing="no"), "keyword 'smoothing': expected True or False, got str 'no'"),
+    (dict(refinement=1), "keyword 'refinement': expected True or False, got int 1"),
+    (dict(start=(1, 2, 3)), "keyword 'start': expected a pair (x, y) or (lon, lat) of numbers, got tuple (1, 2, 3)"),
+    (dict(goal="8,3"), "keyword 'goal': expected a pair"),
+    (dict(region=(0, 1)), "keyword 'region': expected four numbers"),
+    (dict(grid_size=[1]), "keyword 'grid_size': expected a number, got list [1]"),
+    (dict(forbidden=[{"points": "abc"}]), "keyword 'forbidden[0].points': expected a list of (x, y)"),
+    (dict(forbidden=[{"points": [(4, -1), (6, -1), (6, 1)], "windows": 5}]),
+     "keyword 'forbidden[0].windows': expected a list of (begin, end) pairs, got int 5"),
+    (dict(speeds=[0.3, "x"]), "keyword 'speeds': expected a number, got str 'x'"),
+])
+def test_wrong_types_are_errors_naming_the_keyword(keywords, phrase):
+    with pytest.raises(ompl_glider.Error) as e:
+        ompl_glider.plan(**keywords)
+    assert phrase in str(e.value)
+
+
+def test_field_and_write_arguments_are_checked():
+    f = os.path.join(EXAMPLES, "labrador_forecast.nc")
+    with pytest.raises(ompl_glider.Error, match=r"steady_record: expected the index of the record .* integer >= 0 .* "
+                                                r"got int -1"):
+        ompl_glider.Field.netcdf(f, steady_record=-1)
+    with pytest.raises(ompl_glider.Error, match="steady_record: .* got float 1.5"):
+        ompl_glider.Field.netcdf(f, steady_record=1.5)
+    with pytest.raises(ompl_glider.Error, match="Field.netcdf\\(\\): depth: expected a number, got str 'deep'"):
+        ompl_glider.Field.netcdf(f, depth="deep")
+    field = ompl_glider.Field.netcdf(f)
+    with pytest.raises(ompl_glider.Error, match="keyword 'start': expected a pair .* got str 'ab'"):
+        ompl_glider.plan(field=field, start="ab", goal=(-51.5, 48.45))
+    with pytest.raises(ompl_glider.Error, match="keyword 'speed': expected a number, got str 'x'"):
+        ompl_glider.plan(field=field, start=(-52.7, 47.9), goal=(-51.5, 48.45), speed="x")
+    r = ompl_glider.plan(grid_size=0.8, refinement=False)
+    with pytest.raises(ompl_glider.Error, match="Result.write\\(\\): out_dir: expected the path of an output "
+                                                "directory, got str ''"):
+        r.write("")
+
+
+def test_writes_from_threads_into_sibling_directories(tmp_path):
+    r = ompl_glider.plan(grid_size=0.8, refinement=False)
+    errors, written = [], {}
+
+    def write(k):
+        try:
+            written[k] = r.write(tmp_path / f"out{k}")
+        except Exception as e:  # noqa: BLE001 (collected and asserted below)
+            errors.append(str(e))
+
+    threads = [threading.Thread(target=write, args=(k,)) for k in range(6)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert errors == []
+    for k in range(6):
+        assert (tmp_path / f"out{k}" / "summary.json").read_bytes() == (tmp_path / "out0" / "summary.json").read_bytes()
+    # no staging directory left (the lock files .outK.lock stay by design: removing one would race a waiting run)
+    assert sorted(p.name for p in tmp_path.iterdir() if not p.name.endswith(".lock")) == [f"out{k}" for k in range(6)]
+
+
 def test_isochrones_and_arrival_time_field():
     r = ompl_glider.plan(SHEAR, isochrones=True)
     contours = r.isochrones
