@@ -64,11 +64,24 @@ FleetGlider unpack(const std::string &bytes)
 }
 }  // namespace
 
-MissionSpec fleetGliderMission(const MissionSpec &mission, std::size_t i)
+namespace
+{
+/// The mission without its fleet and the fleet entries' marks: what every glider's mission starts from (made once
+/// per fleet, so that a glider's mission costs the same whatever the fleet's size).
+MissionSpec fleetBase(const MissionSpec &mission)
+{
+    MissionSpec m = mission;  // once per fleet
+    m.fleet.clear();
+    for (auto it = m.marks.lower_bound("fleet["); it != m.marks.end() && it->first.rfind("fleet[", 0) == 0;)
+        it = m.marks.erase(it);
+    return m;
+}
+
+/// Glider @p i's mission from the fleet's base (fleetBase()) and the whole mission (its entry and marks).
+MissionSpec gliderMission(const MissionSpec &base, const MissionSpec &mission, std::size_t i)
 {
     const FleetGliderSpec &g = mission.fleet.at(i);
-    MissionSpec m = mission;
-    m.fleet.clear();
+    MissionSpec m = base;
     m.name = g.name;
     m.start = g.start;
     m.goal = g.goal;
@@ -103,15 +116,22 @@ MissionSpec fleetGliderMission(const MissionSpec &mission, std::size_t i)
     }
     return m;
 }
+}  // namespace
+
+MissionSpec fleetGliderMission(const MissionSpec &mission, std::size_t i)
+{
+    return gliderMission(fleetBase(mission), mission, i);
+}
 
 std::vector<FleetGlider> runFleet(const MissionSpec &mission, const RunOptions &options, const FleetKeep &keep)
 {
     const std::size_t n = mission.fleet.size();
     RunOptions each = options;
     each.progress = {};  // one line per glider instead of each glider's own
+    const MissionSpec base = fleetBase(mission);
     std::mutex loading;
     const auto plan = [&](std::size_t i) {
-        const MissionSpec spec = fleetGliderMission(mission, i);
+        const MissionSpec spec = gliderMission(base, mission, i);
         try
         {
             // the problems are built one at a time: they read the forecast, bathymetry and coastline files, and the

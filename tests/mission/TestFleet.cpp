@@ -119,6 +119,36 @@ TEST(Fleet, BadEntriesNameTheirLine)
               std::string::npos);
 }
 
+TEST(Fleet, AGlidersMissionDoesNotGrowWithTheFleet)
+{
+    // a glider's mission holds no fleet list and no marks of other entries, so planning a fleet of n gliders costs n
+    // times one glider (its mission was once a copy of the whole fleet: quadratic in n)
+    const std::string head = kFleet.substr(0, kFleet.find("fleet:"));
+    auto fleetOf = [&](std::size_t n) {
+        std::string text = head + "fleet:\n";
+        for (std::size_t i = 0; i < n; ++i)
+            text += "  - {name: g" + std::to_string(i) + ", start: {x: 1, y: 0}, goal: {x: 9, y: " +
+                    std::to_string(i % 3) + "}, speed: 0.4}\n";
+        return parseMission(text, "m.yaml");
+    };
+    const MissionSpec small = fleetOf(3), large = fleetOf(3000);
+    const MissionSpec a = fleetGliderMission(small, 2), b = fleetGliderMission(large, 2);
+    EXPECT_TRUE(a.fleet.empty());
+    EXPECT_TRUE(b.fleet.empty());
+    EXPECT_EQ(a.marks.size(), b.marks.size());
+    for (const auto &[key, mark] : b.marks)
+        EXPECT_NE(key.rfind("fleet[", 0), 0u) << key;
+    // the glider's own values keep their lines: fleet[2] is on line 10 of either file
+    EXPECT_EQ(b.place("vehicle.speed"), "m.yaml:10: field 'vehicle.speed'");
+    EXPECT_EQ(b.vehicle.speed, 0.4);
+    // beyond the limit the fleet is refused before any plan, naming the field
+    std::string huge = head + "fleet:\n";
+    for (std::size_t i = 0; i <= 50000; ++i)
+        huge += "  - {name: g" + std::to_string(i) + ", start: {x: 1, y: 0}, goal: {x: 9, y: 0}}\n";
+    EXPECT_NE(errorOf(huge).find("field 'fleet': a fleet of 50001 gliders, more than the limit of 50000"),
+              std::string::npos);
+}
+
 TEST(Fleet, EachGliderIsItsOwnMissionThroughThePipeline)
 {
     const MissionSpec m = parseMission(kFleet, "m.yaml", "/tmp/fl");

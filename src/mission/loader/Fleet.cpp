@@ -26,6 +26,14 @@ void readFleet(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (!n.IsSequence() || n.size() == 0)
         r.fail(n, "fleet", "expected a list of gliders, each {name, start, goal} (speed and departure optional)");
     r.mark(n, "fleet");
+    // the fleet's work, estimated before any plan: a folder of files per glider and one plan each (each plan's own
+    // work is checked as a single mission's)
+    constexpr std::size_t kMaxFleetGliders = 50000;
+    if (n.size() > kMaxFleetGliders)
+        r.fail(n, "fleet",
+               "a fleet of " + std::to_string(n.size()) + " gliders, more than the limit of " +
+                   std::to_string(kMaxFleetGliders) + " (a plan and a folder of files each): split it into missions "
+                   "of fewer gliders");
     std::set<std::string> names;
     for (std::size_t i = 0; i < n.size(); ++i)
     {
