@@ -2,12 +2,17 @@
 // fleet.csv and the fleet's summary.json in one transaction.
 #include "ompl_glider/output/FleetFiles.h"
 
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <mutex>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -51,6 +56,26 @@ std::vector<std::pair<std::string, std::string>> filesOf(const std::string &kept
     return out;
 }
 
+/// The rendering directories ("ompl_glider-fleet-PID-XXXXXX" in the temporary directory) that a process no longer
+/// running left (a signal or a kill while it rendered a glider's files), once per process.
+void removeStaleRenderDirectories()
+{
+    static std::once_flag once;
+    std::call_once(once, [] {
+        std::error_code ec;
+        const std::string head = "ompl_glider-fleet-";
+        for (const fs::directory_entry &e : fs::directory_iterator(fs::temp_directory_path(ec), ec))
+        {
+            const std::string name = e.path().filename().string();
+            if (name.compare(0, head.size(), head) != 0)
+                continue;
+            const long pid = std::strtol(name.c_str() + head.size(), nullptr, 10);
+            if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+                fs::remove_all(e.path(), ec);
+        }
+    });
+}
+
 std::string fleetSummaryJson(const MissionSpec &m, const std::vector<FleetGlider> &gliders,
                              const std::vector<std::string> &files, double wallSeconds)
 {
@@ -88,7 +113,9 @@ std::string fleetSummaryJson(const MissionSpec &m, const std::vector<FleetGlider
 
 std::string renderOutputFiles(const MissionResult &result, const MissionProblem &problem)
 {
-    std::string pattern = (fs::temp_directory_path() / "ompl_glider-fleet-XXXXXX").string();
+    removeStaleRenderDirectories();
+    std::string pattern =
+        (fs::temp_directory_path() / ("ompl_glider-fleet-" + std::to_string(::getpid()) + "-XXXXXX")).string();
     if (!::mkdtemp(&pattern[0]))
         throw Error("cannot create a temporary directory in '" + fs::temp_directory_path().string() +
                     "' for a glider's files");

@@ -364,16 +364,25 @@ void commitStaging(const fs::path &staging, const fs::path &target, const std::v
         if (!folderOf(n).empty())
             syncDirectory(staging / folderOf(n));
     syncDirectory(staging);
+    // A signal that arrived while the files were staged or swapped in (held until now) takes the swap back in one
+    // more rename, before the earlier files are removed: the earlier outputs stay, as for a signal while staging.
     if (!fs::exists(fs::symlink_status(target, ec)))
     {
         if (::rename(staging.c_str(), target.c_str()) != 0)
             throw Error("cannot create the output directory '" + shown + "': " + systemReason(errno));
         stepHook("committed");
+        if (g_pending.load() != 0 && ::rename(target.c_str(), staging.c_str()) == 0)
+            interruptIfSignalled(staging);
     }
     else if (holdsOnlyOutputs(target, previous) &&
              (fs::permissions(staging, fs::status(target, ec).permissions(), ec), true) &&
              ::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0)
+    {
         stepHook("committed");  // the staging directory now holds the earlier run's files
+        if (g_pending.load() != 0 &&
+            ::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0)
+            interruptIfSignalled(staging);
+    }
     else
         moveFileByFile(staging, target, names, previous, shown);
     syncDirectory(target.parent_path());

@@ -173,6 +173,42 @@ TEST(OutputFaults, SignalWhileStagingKeepsTheEarlierOutputs)
     EXPECT_EQ(stagingDirectories(root), 0u);
 }
 
+TEST(OutputFaults, SignalWhileSwappingInKeepsTheEarlierOutputs)
+{
+    // a signal held while a fleet's files are swapped in (it arrives at the commit): the swap is taken back, so the
+    // earlier outputs stay (an earlier run's fleet, and no directory at all when there was none)
+    const fs::path root = freshDirectory("signal_commit");
+    for (const bool earlier : {true, false})
+    {
+        SCOPED_TRACE(earlier ? "over an earlier fleet" : "no earlier outputs");
+        const fs::path dir = root / (earlier ? "fleet" : "fresh");
+        if (earlier)
+            writeOutputFiles(dir.string(), runFiles("old", {"alpha/waypoints.csv", "bravo/waypoints.csv"}));
+        const auto before = earlier ? snapshot(dir) : std::map<std::string, std::string>{};
+        const pid_t child = ::fork();
+        ASSERT_GE(child, 0);
+        if (child == 0)
+        {
+            installOutputSignalHandlers();
+            output_detail::setStepHook([](const char *step) {
+                if (std::string(step) == "committed")
+                    ::raise(SIGINT);
+            });
+            writeOutputFiles(dir.string(), runFiles("new", {"alpha/waypoints.csv", "charlie/waypoints.csv"}));
+            ::_exit(0);  // not reached: the signal ends the process once the swap is taken back
+        }
+        int status = 0;
+        ::waitpid(child, &status, 0);
+        ASSERT_TRUE(WIFSIGNALED(status));
+        EXPECT_EQ(WTERMSIG(status), SIGINT);
+        if (earlier)
+            EXPECT_EQ(snapshot(dir), before);
+        else
+            EXPECT_FALSE(fs::exists(dir));
+        EXPECT_EQ(stagingDirectories(root), 0u);
+    }
+}
+
 TEST(OutputFaults, AWriteThatFailsNamesTheFileAndKeepsTheEarlierOutputs)
 {
     const fs::path root = freshDirectory("fsize");
