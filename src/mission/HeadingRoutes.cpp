@@ -187,6 +187,8 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     const std::string why = asked.name + " found no path of straight legs: " + lattice;
     PlanOptions h = o;
     h.planner = "Isochrone";
+    const MissionSpec &m = problem.getSpec();
+    h.timeLimit = o.timeLimit > 0 ? o.timeLimit : m.planner.timeLimit > 0 ? m.planner.timeLimit : kFallbackTimeLimit;
     PlannedPath r = planOnField(problem, departure, h);
     if (!r.solved)
     {
@@ -209,7 +211,15 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     const std::size_t note = failed.reason.find("; the path must arrive");
     const std::string bound = note == std::string::npos ? std::string() : failed.reason.substr(note);
     const bool proven = r.reason.find("never reaches the goal") != std::string::npos;
-    failed.reason = (proven ? "no path exists: " : "no path found: ") + r.reason + " (" + asked.name +
+    const bool timedOut = r.reason.rfind("the time limit", 0) == 0;
+    failed.reason = (proven ? "no path exists: " : "no path found: ") +
+                    (timedOut ? "the level set, after Isochrone, each with " +
+                                    std::string(o.timeLimit > 0 || m.planner.timeLimit > 0
+                                                    ? "the time limit"
+                                                    : "the fallback's default time limit") +
+                                    ": "
+                              : std::string()) +
+                    r.reason + " (" + asked.name +
                     " found none on its lattice, nor Isochrone with held headings)" + bound;
     failed.status = kNoPathStatus;
     failed.planningSeconds = r.planningSeconds;

@@ -35,7 +35,7 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
                 return "no path exists on this lattice (" + std::to_string(r.expansions) +
                        " vertices expanded; a finer grid, more sectors or a higher speed may find one)";
             case TveOutcome::Terminated:
-                return "the time limit (" + std::to_string(timeLimit) + " s) ended the search: raise it";
+                return "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
             default:
                 break;
         }
@@ -65,7 +65,7 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
             case WavefrontOutcome::BadWindow:
                 return w->lastMessage();
             case WavefrontOutcome::Terminated:
-                return "the time limit (" + std::to_string(timeLimit) + " s) ended the search: raise it";
+                return "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
             default:
                 break;
         }
@@ -73,7 +73,8 @@ std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::ba
     if (status == ompl::base::PlannerStatus::APPROXIMATE_SOLUTION)
         return "the planner reached only an approximate solution within the time limit";
     if (status == ompl::base::PlannerStatus::TIMEOUT)
-        return "the planner found no path within the time limit";
+        return "the time limit (" + text::number(timeLimit) + " s) ended the search before a path was found: raise it "
+               "(planner.time_limit, --time-limit) or shorten the planning horizon (planner.horizon)";
     return std::string("planner status: ") + status.asString();
 }
 

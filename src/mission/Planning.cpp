@@ -174,8 +174,9 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     ss->setPlanner(planner);
     r.straightLineTime = legTravelTime(*ctx, s.x, s.y, g.x, g.y, departure);
 
-    const double limit = m.planner.timeLimit > 0 ? m.planner.timeLimit :
-                         (entry.runsToItsEnd() ? 0.0 : kDefaultSamplingTimeLimit);
+    const double limit = o.timeLimit > 0        ? o.timeLimit
+                         : m.planner.timeLimit > 0 ? m.planner.timeLimit
+                         : (entry.runsToItsEnd() ? 0.0 : kDefaultSamplingTimeLimit);
     const std::uint64_t cfc0 = ctx->travel->costFunctionCalls(), cmc0 = ctx->field->callCount();
     const auto tA = std::chrono::steady_clock::now();
     const ompl::base::PlannerStatus status =

@@ -41,6 +41,9 @@ inline constexpr const char *kNoPathStatus = "No path";
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 /// Time limit of planners that use all the time they get (sampling planners) when the mission gives none.
 inline constexpr double kDefaultSamplingTimeLimit = 10.0;
+/// Time limit of each heading planner (Isochrone, then LevelSet) that the pipeline runs after a lattice planner found
+/// no path, when the mission gives none: an unbounded front in a strong circulating current would run for hours.
+inline constexpr double kFallbackTimeLimit = 30.0;
 
 /// Wall time in seconds since @p a.
 inline double secondsSince(std::chrono::steady_clock::time_point a)

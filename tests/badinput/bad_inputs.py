@@ -876,6 +876,14 @@ case("name-bad-utf8", ["--mission", "m.yaml", "--out", "{out}"], 2,
 # --- well-formed problems without a path: exit 1 with the reason ------------------------------------------------
 case("no-path-slow-in-jet", ["--speed", "0.05", "--out", "{out}"], 1, "Status:             No path")
 case("no-path-horizon-named", ["--speed", "0.05", "--out", "{out}"], 1, "within the planning horizon")
+# a start in a Rankine vortex three times the glider's speed: the heading planners after the lattice run under a time
+# limit (here the mission's 2 s) and say so, never for hours
+yaml_case("no-path-vortex-fallback-time-limit",
+          mission("current: {type: rankine_vortex, parameters: {x0: 5, y0: 0, radius: 4, vmax: 1.5}}",
+                  "start: {x: 4, y: 0}", "goal: {x: 9.5, y: -3.5}",
+                  "planner: {name: zastartve, grid_size: 0.5, time_limit: 2}"),
+          "no path found: the level set, after Isochrone, each with the time limit: the time limit (2 s) ended the "
+          "search before a path was found: raise it (planner.time_limit, --time-limit)", status=1)
 
 
 # ---------------------------------------------------------------------------------------------------------------

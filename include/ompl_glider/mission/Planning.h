@@ -37,6 +37,9 @@ struct PlanOptions
     /// the pipeline's switch to a heading planner; empty: the mission's
     std::string planner;
     std::optional<bool> globalCheck;  ///< the global check of the route class (PlannerSpec::globalCheck)
+    /// The planner's time limit in seconds (0: the mission's planner.time_limit, else the planner's default); the
+    /// pipeline's switch to heading planners bounds them so (PlanningInternal.h kFallbackTimeLimit)
+    double timeLimit{0.0};
 };
 
 /// @brief One candidate route of the global check: the planner's own, or one made from an extremal.
