@@ -408,14 +408,14 @@ std::string kmlLines(const std::vector<std::vector<LonLat>> &pieces)
     return s + (pieces.size() == 1 ? "" : "</MultiGeometry>");
 }
 
-/// Whether the mission's dates are Gregorian ones (KML's TimeStamp is xsd:dateTime): an epoch, or a forecast on
-/// the standard or proleptic Gregorian calendar after 1582.
+/// Whether the mission's dates are Gregorian ones (KML's TimeStamp is xsd:dateTime, which has no year 0): an epoch
+/// from year 1 on, or a forecast on the standard or proleptic Gregorian calendar after 1582.
 bool gregorianDates(const MissionResult &r, const std::string &iso)
 {
     if (iso.empty())
         return false;
     if (!r.spec.fileCalendar)
-        return true;
+        return iso.compare(0, 4, "0001") >= 0;
     const Calendar c = r.spec.fileCalendar->calendar;
     return (c == Calendar::Standard || c == Calendar::ProlepticGregorian) && iso.compare(0, 4, "1583") >= 0;
 }
@@ -438,8 +438,13 @@ std::string routeKml(const MissionResult &r, const MissionProblem *problem)
         ", path length " +
         (units.length ? text::number(r.plan.pathLength * r.spec.metresPerUnit() / 1000.0, 6) + " km" :
                         text::number(r.plan.pathLength));
+    const bool stamped = !r.waypoints.empty() && gregorianDates(r, r.waypoints.front().iso);
     k += "<Placemark>\n<name>route</name>\n<description>" + xmlEscaped(about) +
          (r.plan.headingRoute() ? " (the flown track of held headings)" : "") +
+         (!stamped && !r.waypoints.empty() && !r.waypoints.front().iso.empty()
+              ? "; the waypoints' dates are in their descriptions, without KML time stamps (not Gregorian dates of "
+                "years 1-9999: a climatology's or a model calendar's)"
+              : "") +
          "</description>\n<styleUrl>#route</styleUrl>\n" + kmlLines(pieces) + "\n</Placemark>\n";
     k += "<Folder>\n<name>waypoints</name>\n";
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)

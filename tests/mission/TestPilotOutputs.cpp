@@ -345,6 +345,34 @@ outputs: {files: [path, geojson, isochrones, summary]}
     EXPECT_HAS(kml, "<name>jet &amp; kml</name>");
     EXPECT_HAS(kml, "<TimeStamp><when>" + r.waypoints.back().iso + "</when></TimeStamp>");
     EXPECT_HAS(kml, "arrival " + r.waypoints.back().iso);
+    EXPECT_HAS_NOT(kml, "without KML time stamps");
+}
+
+TEST(PilotKml, AYearZeroEpochGivesNoTimeStampsAndSaysSo)
+{
+    // xsd:dateTime (KML's TimeStamp) has no year 0: a climatology epoch's dates stay in the descriptions only
+    const fs::path dir = scratch("kml0");
+    MissionSpec m = parseMission(R"(name: climatology
+units: {length_m: 10000, time_s: 86400}
+epoch: "0000-03-01T00:00:00Z"
+projection: {lon0: -60.0, lat0: 30.0}
+current: {type: meandering_jet}
+region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}
+start: {x: 1, y: -3}
+goal: {x: 8, y: 3}
+vehicle: {speed: 0.5}
+outputs: {files: [summary]}
+)",
+                                 "kml0.yaml");
+    m.outputs.directory = (dir / "out").string();
+    const MissionProblem problem(m);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    ASSERT_EQ(r.waypoints.front().iso.substr(0, 10), "0000-03-01");
+    const std::string kml = routeKml(r, &problem);
+    EXPECT_HAS_NOT(kml, "<TimeStamp>");
+    EXPECT_HAS(kml, "departure " + r.waypoints.front().iso);
+    EXPECT_HAS(kml, "the waypoints' dates are in their descriptions, without KML time stamps");
 }
 
 namespace
