@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds (Release, with tests) and runs the test suite with ctest.
 # Usage: scripts/run_tests.sh [--all] [CTEST_ARGS...]
-#   Without --all the cases labelled "ci" (minutes each: a second, static build of the library) are left out;
-#   --all, or CI=true in the environment (.ci/run), runs every case. Other arguments go to ctest.
+#   Without --all the cases labelled "ci" (minutes each: a second, static build of the library) and the slow cases
+#   listed in tests/ci_only.txt are left out; --all, or CI=true in the environment (.ci/run), runs every case.
+#   Other arguments go to ctest.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-select=(-LE ci)
+select=(-LE ci -E "$(bash "$root/scripts/ci_only_regex.sh")")
 if [ "${1:-}" = "--all" ]; then
   select=(); shift
 elif [ "${CI:-}" = "true" ]; then

@@ -8,3 +8,8 @@ add_test(NAME structure.checker_selftest
 # The README as a front page: its snippets are lines of a demo and of docs/PYTHON.md, its links and docs/'s resolve.
 add_test(NAME structure.readme_and_docs
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_LIST_DIR}/check_docs.py ${PROJECT_SOURCE_DIR})
+# Every name in tests/ci_only.txt (the slow cases CI alone runs) is a test of this build: a renamed test does not
+# slip back into the README's command or the sanitizer run, and a typo does not leave one out of it.
+add_test(NAME structure.ci_only_list
+  COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_ci_only_list.sh ${CMAKE_CTEST_COMMAND} ${PROJECT_SOURCE_DIR}
+  WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
