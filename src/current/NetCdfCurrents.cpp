@@ -138,6 +138,7 @@ netcdf_detail::ForecastPiece netcdf_detail::readForecastPiece(const std::string 
     // what is in the file: velocities, their grid, units
     const Layout &l = p.layout = detectLayout(f, opt);
     out.uVariable = l.uName;
+    out.depthAxis = l.dimZ >= 0;
     out.vVariable = l.vName;
     out.geographic = l.geographic;
     const LinearConversion vel = velocityConversionOf(f, l, opt);

@@ -119,6 +119,8 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
     m.goal.xy = q.goal;
     m.goal.lonLat = {q.goal.x, q.goal.y};
     m.vehicle.depth = m.travel.depth = q.depth;
+    if (q.depth > 0.0)
+        m.marks["vehicle.depth"] = SourceMark{"--depth", 0};
     return m;
 }
 
@@ -317,6 +319,8 @@ void finishSpec(MissionSpec &m, const NetCdfCurrents &nc, const std::optional<do
     m.departure.time = nc.departureTime;
     m.vehicle.speed = q.speed;
     m.vehicle.depth = q.depth;
+    if (q.depth > 0.0)
+        m.marks["vehicle.depth"] = SourceMark{"--depth", 0};
     m.travel.speed = q.speed;
     m.travel.depth = q.depth;
     m.travel.eps = 1.0;  // one second per integration step on trips of hours to days (as the example mission)

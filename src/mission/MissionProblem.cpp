@@ -247,6 +247,18 @@ void MissionProblem::buildField()
             throw Error(where(m, m.current.mark) + netCdfMissionMessage(e.what()));
         throw;
     }
+    if (!nc.depthAxis && m.vehicle.depth > 0.0 && !m.dive.enabled)
+    {
+        // the glider's depth asked for currents that the file does not hold: never planned at the surface in silence
+        const auto it = m.marks.find("vehicle.depth");
+        const std::string at = it == m.marks.end() ? m.place("vehicle.depth") + ": "
+                               : it->second.line == 0 ? it->second.file + ": "
+                                                      : where(m, it->second) + "field 'vehicle.depth': ";
+        throw Error(at + "the glider's depth of " + text::number(m.vehicle.depth) + " m: the forecast's '" +
+                    nc.uVariable + "' has no depth dimension, so its currents are of one level (the surface's, or a "
+                    "depth average), not of " + text::number(m.vehicle.depth) + " m; plan at depth 0 on it, or on a "
+                    "forecast with depth levels");
+    }
     field_ = nc.field;
     projection_ = nc.projection;
     projectionScale_ = 1.0;
@@ -333,6 +345,34 @@ void MissionProblem::buildMembers()
     members_.push_back(field_);  // the first member, read as the forecast
     for (std::size_t i = 1; i < members.size(); ++i)
         members_.push_back(loadSource(members[i], "current.ensemble[" + std::to_string(i) + "]"));
+    // the ensemble is planned where every member holds currents: members without a common time are refused, each
+    // named with its span
+    double begin = -std::numeric_limits<double>::infinity(), end = std::numeric_limits<double>::infinity();
+    for (const auto &f : members_)
+    {
+        begin = std::max(begin, f->timeBegin());
+        end = std::min(end, f->timeEnd());
+    }
+    if (!(begin < end))
+    {
+        const auto when = [this](double t) {
+            if (!std::isfinite(t))
+                return std::string(t > 0 ? "on" : "ever");
+            const std::string iso = isoTime(t);
+            return iso.empty() ? text::number(t) : iso;
+        };
+        std::string spans;
+        for (std::size_t i = 0; i < members_.size(); ++i)
+        {
+            const CurrentSpec &c = members[i];
+            const std::string name = c.file.empty() ? c.type : "'" + c.file + "'";
+            spans += (i ? ", " : "") + std::string("[") + std::to_string(i) + "] " + name + " from " +
+                     when(members_[i]->timeBegin()) + " to " + when(members_[i]->timeEnd());
+        }
+        throw Error(where(spec_, spec_.current.mark) + "field 'current.ensemble': the members hold currents at no "
+                    "common time (" + spans + "); an ensemble is planned where all of them do: give members that "
+                    "cover the trip's days");
+    }
     field_ = std::make_shared<EnsembleMeanField>(members_);
 }
 

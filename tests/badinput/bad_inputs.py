@@ -121,6 +121,14 @@ case("cli-truth-overflows", ["--truth", "B0=1e300", "--out", "{out}"], 2,
 yaml_case("yaml-current-overflows",
           mission("current: {type: meandering_jet, parameters: {B0: 1e300}}"),
           "m.yaml:2: field 'current.parameters': the current is not a finite number")
+yaml_case("yaml-mapping-as-key", "name: x\n? {a: 1}\n: 2\n" + MISSION.split("\n", 1)[1],
+          "m.yaml:2: a key is a mapping: keys are plain names (allowed here: current")
+yaml_case("yaml-mapping-as-key-nested", mission("vehicle: {? [1, 2] : 3, speed: 0.5}"),
+          "m.yaml:6: a key in 'vehicle' is a list: keys are plain names")
+yaml_case("yaml-start-without-value", MISSION.replace("start: {x: 1, y: 0}", "start:\n\n"),
+          "m.yaml:4: field 'start': has no value; expected a mapping")
+yaml_case("yaml-last-key-without-value", MISSION + "outputs:\n",
+          "m.yaml:8: field 'outputs': has no value")
 yaml_case("yaml-binary-garbage", "\x00\x01\x02\xff\xfe", "m.yaml")
 case("mission-is-a-directory", ["--mission", "sub", "--out", "{out}"], 2, "is a directory", {"sub/x": "x"})
 case("mission-missing", ["--mission", "nope.yaml", "--out", "{out}"], 2, "cannot read mission file 'nope.yaml'")
@@ -237,6 +245,12 @@ yaml_case("execution-truth-parameter", mission("execution: {truth: {type: unifor
 yaml_case("execution-batch-negative", mission("execution: {batch: {pairs: -3}}"), "execution.batch.pairs")
 yaml_case("execution-batch-min-distance-huge",
           mission("execution: {batch: {pairs: 3, min_distance: 100}}"), "execution.batch")
+case("ensemble-members-without-common-time", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:1: field 'current.ensemble': the members hold currents at no common time ([0] 'e1.nc' from "
+     "2026-03-15T00:00:00Z to 2026-03-17T00:00:00Z, [1] 'e2.nc' from 2026-03-20T00:00:00Z to 2026-03-22T00:00:00Z)",
+     {"e1.cdl": forecast(), "e2.cdl": forecast(replace=[("2026-03-15 00:00:00", "2026-03-20 00:00:00")]),
+      "m.yaml": "current: {ensemble: [{type: netcdf, file: e1.nc}, {type: netcdf, file: e2.nc}]}\n"
+                "start: {lon: -52.9, lat: 47.1}\ngoal: {lon: -52.1, lat: 47.9}\n"})
 yaml_case("ensemble-one-member", mission("current: {ensemble: [{type: uniform}]}"), "field 'current.ensemble'")
 yaml_case("ensemble-mixed", mission("current: {ensemble: [{type: uniform}, {type: netcdf, file: f.nc}]}"),
           "current.ensemble[1]")
@@ -743,6 +757,14 @@ case("bathymetry-axis-order-unknown", ["--currents", "f.nc", START, GOAL, "--bat
                                        "--out", "{out}"], 2,
      "variable 'depth' on dimensions (p, q): cannot tell which is longitude/x and which latitude/y",
      {"f.cdl": forecast(), "b.cdl": ANON_BATHY})
+# --depth on a forecast without a depth dimension (a scalar 'depth' variable, or none): refused, never planned at the
+# surface in silence
+for name, cdl in [("depth-on-a-scalar-depth-variable",
+                   forecast(replace=[("variables:", 'variables:\n  double depth ; depth:units = "m" ; depth:positive = "down" ;'),
+                                     ("data:", "data:\n  depth = 10 ;")])),
+                  ("depth-on-a-forecast-without-depth", forecast())]:
+    nc_case(name, cdl, "--depth: the glider's depth of 50 m: the forecast's 'u' has no depth dimension",
+            extra=("--depth", "50"))
 nc_case("depth-average-single-level", forecast(), "needs several depth levels", extra=("--depth-average", "0,200"))
 
 # --- coastline and forbidden-region files: their CRS, coordinates that are not lon/lat, files nowhere near -------

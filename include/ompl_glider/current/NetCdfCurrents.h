@@ -107,6 +107,7 @@ struct NetCdfCurrents
     double forecastBegin{0.0};       ///< first forecast time of the file, field time
     double forecastEnd{0.0};         ///< last forecast time of the file, field time
     std::string uVariable, vVariable;  ///< variables read
+    bool depthAxis{false};           ///< u has a depth dimension (else its currents are of one level)
     std::vector<std::size_t> loadedShape;  ///< nt, nz, ny, nx actually loaded
     std::string maskVariable;        ///< the land/sea mask read ("" when none)
     /// How grid-relative velocities were turned to eastward/northward: "" (the velocities are eastward/northward,

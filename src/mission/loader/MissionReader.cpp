@@ -34,6 +34,10 @@ std::string yamlErrorMessage(const std::string &file, const YAML::ParserExceptio
 
 void Reader::fail(const YAML::Node &node, const std::string &field, const std::string &what) const
 {
+    // an empty value ("start:" and nothing) carries the mark of the next token, lines below: its key's line
+    const auto key = keyLines_.find(field);
+    if (node.IsNull() && key != keyLines_.end())
+        failAt(key->second, field, what);
     throw Error(where(node) + "field '" + field + "': " + what);
 }
 
@@ -53,20 +57,28 @@ std::string Reader::where(const YAML::Node &node) const
 void Reader::checkMap(const YAML::Node &node, const std::string &path, const std::set<std::string> &allowed) const
 {
     if (!node.IsMap())
-        fail(node, path, "expected a mapping (key: value lines)");
+        fail(node, path, node.IsNull() ? "has no value; expected a mapping (key: value lines)"
+                                       : "expected a mapping (key: value lines)");
     std::set<std::string> seen;
+    auto allowedList = [&allowed] {
+        std::string list;
+        for (const auto &a : allowed)
+            list += (list.empty() ? "" : ", ") + a;
+        return list;
+    };
     for (auto it = node.begin(); it != node.end(); ++it)
     {
+        if (!it->first.IsScalar())
+            throw Error(where(it->first) + (path.empty() ? std::string("a key") : "a key in '" + path + "'") +
+                        " is " + (it->first.IsMap() ? "a mapping" : it->first.IsSequence() ? "a list" : "empty") +
+                        ": keys are plain names (allowed here: " + allowedList() + ")");
         const std::string key = it->first.Scalar();
+        keyLines_[sub(path, key)] = it->first.Mark().line + 1;
         if (!seen.insert(key).second)
             throw Error(where(it->first) + "field '" + sub(path, key) + "' is given twice");
         if (!allowed.count(key))
-        {
-            std::string list;
-            for (const auto &a : allowed)
-                list += (list.empty() ? "" : ", ") + a;
-            throw Error(where(it->first) + "unknown field '" + sub(path, key) + "' (allowed here: " + list + ")");
-        }
+            throw Error(where(it->first) + "unknown field '" + sub(path, key) + "' (allowed here: " + allowedList() +
+                        ")");
     }
 }
 

@@ -82,11 +82,13 @@ public:
 private:
     void remember(const YAML::Node &node, const std::string &field) const
     {
-        marks_[field] = SourceMark{file_, line(node)};
+        const auto key = keyLines_.find(field);  // an empty value's own mark is the next token's
+        marks_[field] = SourceMark{file_, node.IsNull() && key != keyLines_.end() ? key->second : line(node)};
     }
 
     std::string file_, dir_;
     mutable std::map<std::string, SourceMark> marks_;
+    mutable std::map<std::string, int> keyLines_;  // the line of each key checkMap() saw, by its dotted field
 };
 
 // Readers of the mission's parts; each validates its node and fills its part of @p m.
