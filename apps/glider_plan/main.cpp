@@ -26,6 +26,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/mission/Fleet.h"
+#include "ompl_glider/mission/InputDigest.h"
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/output/FleetFiles.h"
 #include "ompl_glider/output/OutputWriter.h"
@@ -94,6 +95,9 @@ int run(const Flags &f)
                                              : builtInMission(f);
     applyOutputFlags(f, spec);
     applySafetyFlags(f, spec);
+    // the processes of a job agree on what they read before any plan (a node-local copy of another version)
+    if (TaskSpreader *job = activeTaskSpreader())
+        job->agree("the mission (its file and the files it reads)", inputDigest(spec));
     const bool write = !f.mission.empty() || !f.out.empty();
     std::optional<OutputLock> lock;  // held from here: a second run into the directory is refused at once
     if (write)

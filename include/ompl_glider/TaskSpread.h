@@ -160,6 +160,11 @@ public:
     /// ("rank 2, ensemble candidate 7: ...").
     virtual std::vector<std::string> run(const std::string &what, std::size_t n, const Task &task,
                                          const Progress &progress = {}) = 0;
+    /// @brief Called by every process once with a digest of what it read (@p what: "the mission"): every process
+    /// throws ompl_glider::Error naming the processes whose digest differs from process 0's, so that a job whose
+    /// processes read different inputs (a node-local copy) stops instead of mixing their results. The default (one
+    /// process) does nothing.
+    virtual void agree(const std::string & /*what*/, std::uint64_t /*digest*/) {}
 };
 
 /// @brief Makes @p spreader the process's (null: none; the executables set it once, before planning).

@@ -20,6 +20,7 @@ namespace
 constexpr int kTagResult = 7101;  // worker -> rank 0: the finished task (or -1) and its result, asking for the next
 constexpr int kTagTask = 7102;    // rank 0 -> worker: the next task index, -1: no more
 constexpr int kTagFailed = 7103;  // a rank that failed outside the tasks -> every other rank: its status and reason
+constexpr int kTagDigest = 7104;  // agree(): every rank -> rank 0 its digest; rank 0 -> every rank all of them
 using Clock = std::chrono::steady_clock;
 
 /// Ends the job when another rank said it failed outside the tasks (MpiTaskSpreader::endJob()): this rank waits for
@@ -151,6 +152,46 @@ std::vector<std::string> MpiTaskSpreader::run(const std::string &what, std::size
     else
         worker(what, n, task);
     return share(what, std::move(results));
+}
+
+void MpiTaskSpreader::agree(const std::string &what, std::uint64_t digest)
+{
+    // point to point, not a collective: a rank that failed before it got here is in endJob()'s collective, and the
+    // waits below end the job on its notice (waitFor())
+    std::vector<std::uint64_t> all(static_cast<std::size_t>(size_), digest);
+    if (rank_ == 0)
+    {
+        for (int r = 1; r < size_; ++r)
+        {
+            MPI_Request q;
+            MPI_Irecv(&all[static_cast<std::size_t>(r)], 1, MPI_UINT64_T, r, kTagDigest, MPI_COMM_WORLD, &q);
+            waitFor(q);
+        }
+        for (int r = 1; r < size_; ++r)
+        {
+            MPI_Request q;
+            MPI_Isend(all.data(), size_, MPI_UINT64_T, r, kTagDigest, MPI_COMM_WORLD, &q);
+            waitFor(q);
+        }
+    }
+    else
+    {
+        MPI_Request q;
+        MPI_Isend(&digest, 1, MPI_UINT64_T, 0, kTagDigest, MPI_COMM_WORLD, &q);
+        waitFor(q);
+        MPI_Irecv(all.data(), size_, MPI_UINT64_T, 0, kTagDigest, MPI_COMM_WORLD, &q);
+        waitFor(q);
+    }
+    bytes_ += 8.0 * static_cast<double>(rank_ == 0 ? 2 * (size_ - 1) : 1 + size_);
+    std::string differ;
+    for (int r = 1; r < size_; ++r)
+        if (all[static_cast<std::size_t>(r)] != all[0])
+            differ += (differ.empty() ? "" : ", ") + std::to_string(r);
+    if (!differ.empty())
+        throw Error("the job's ranks read different inputs: " + what + " of rank" +
+                    (differ.find(',') != std::string::npos ? "s " : " ") + differ + " differs from rank 0's (a "
+                    "node-local copy of another version?); every rank must read the same files: the job is stopped, "
+                    "nothing planned or written");
 }
 
 std::vector<std::string> MpiTaskSpreader::master(const std::string &what, std::size_t n, const Task &task,

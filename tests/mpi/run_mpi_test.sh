@@ -58,12 +58,26 @@ case "$MODE" in
     ;;
   fail_outside)
     # one rank cannot read its mission (a file on one node only): the job ends, naming the rank, instead of hanging
-    expect_failure "rank 1 failed outside the tasks: cannot read mission file" "$WORK/fl" \
+    expect_failure "rank [1-9][0-9]* failed outside the tasks: cannot read mission file" "$WORK/fl" \
       timeout 60 "$MPIEXEC" --oversubscribe -np 1 "$PLAN" --mission "$HERE/fleet.yaml" --out "$WORK/fl" \
       : -np $((NP - 1)) "$PLAN" --mission "$WORK/missing.yaml" --out "$WORK/fl"
     expect_failure "rank 0 failed outside the tasks: cannot read mission file" "$WORK/fl" \
       timeout 60 "$MPIEXEC" --oversubscribe -np 1 "$PLAN" --mission "$WORK/missing.yaml" --out "$WORK/fl" \
       : -np $((NP - 1)) "$PLAN" --mission "$HERE/fleet.yaml" --out "$WORK/fl"
+    # the other ranks read another version of the mission (a node-local copy): the job stops before any plan,
+    # naming them, instead of mixing their gliders into rank 0's table
+    mkdir -p "$WORK/node0" "$WORK/node1"
+    cp "$HERE/fleet.yaml" "$WORK/node0/fleet.yaml"
+    sed 's/speed: 0.5/speed: 0.45/' "$HERE/fleet.yaml" >"$WORK/node1/fleet.yaml"
+    cmp -s "$WORK/node0/fleet.yaml" "$WORK/node1/fleet.yaml" && fail "the copies do not differ"
+    expect_failure "the job's ranks read different inputs: the mission (its file and the files it reads) of ranks\? 1" \
+      "$WORK/fl" timeout 60 "$MPIEXEC" --oversubscribe -np 1 "$PLAN" --mission "$WORK/node0/fleet.yaml" --out "$WORK/fl" \
+      : -np $((NP - 1)) "$PLAN" --mission "$WORK/node1/fleet.yaml" --out "$WORK/fl"
+    # the same contents at other paths are the same mission
+    sed 's/speed: 0.45/speed: 0.5/' "$WORK/node1/fleet.yaml" >"$WORK/node1/same.yaml"
+    timeout 60 "$MPIEXEC" --oversubscribe -np 1 "$PLAN" --mission "$WORK/node0/fleet.yaml" --out "$WORK/same" \
+      : -np $((NP - 1)) "$PLAN" --mission "$WORK/node1/same.yaml" --out "$WORK/same" >/dev/null 2>"$WORK/stderr" ||
+      { cat "$WORK/stderr"; fail "copies of the same mission at other paths were refused"; }
     ;;
   fail_plan)
     OMPL_GLIDER_FAIL_TASK="ensemble candidate:3" expect_failure "rank [0-9]*, ensemble candidate 3: failure injected" \

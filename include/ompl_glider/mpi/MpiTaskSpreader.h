@@ -36,6 +36,9 @@ public:
     }
     std::vector<std::string> run(const std::string &what, std::size_t n, const Task &task,
                                  const Progress &progress = {}) override;
+    /// @brief Every rank's digest gathered on every rank (MPI_Allgather); every rank throws the same Error when one
+    /// differs from rank 0's.
+    void agree(const std::string &what, std::uint64_t digest) override;
 
     /// @brief Bytes sent and received by this rank in run() so far (task indices, results, broadcasts).
     double bytesMoved() const
