@@ -1,11 +1,15 @@
 // The Python module's run() and Result: runMission() with the GIL released, its MissionResult read back as numpy
 // arrays and as the output layer's texts (summary.json, GeoJSON, execution.csv), and written by the output layer.
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -14,6 +18,7 @@
 
 #include "Bindings.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/StopRequest.h"
 #include "ompl_glider/output/ExecutionFiles.h"
 #include "ompl_glider/output/OutputWriter.h"
 #include "ompl_glider/output/Report.h"
@@ -212,12 +217,48 @@ std::shared_ptr<PyResult> run(const MissionSpec &spec, const py::object &progres
                 raised = std::move(e);
             }
         };
+    // the plan runs in a thread of its own while this one, every 50 ms, lets Python handle its signals: Ctrl-C
+    // (KeyboardInterrupt, raised by Python's handler on the main thread) asks the plans to stop (StopRequest.h), and
+    // is raised here once the plan has returned, within a moment instead of when the plan would have finished
+    std::exception_ptr failed;
+    std::atomic<bool> done{false};
+    std::optional<py::error_already_set> interrupted;
     {
         const py::gil_scoped_release release;
-        out->problem = std::make_shared<const MissionProblem>(spec);
-        out->result = runMission(*out->problem, options);
+        std::thread worker([&] {
+            try
+            {
+                out->problem = std::make_shared<const MissionProblem>(spec);
+                out->result = runMission(*out->problem, options);
+            }
+            catch (...)
+            {
+                failed = std::current_exception();
+            }
+            done.store(true);
+        });
+        while (!done.load())
+        {
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            if (interrupted)
+                continue;
+            const py::gil_scoped_acquire gil;
+            if (PyErr_CheckSignals() != 0)
+            {
+                interrupted.emplace();  // the KeyboardInterrupt (or the handler's exception), kept for after the run
+                requestStop();
+            }
+        }
+        worker.join();
         options.progress = nullptr;
     }
+    if (interrupted)
+    {
+        clearStop();
+        throw *interrupted;
+    }
+    if (failed)
+        std::rethrow_exception(failed);
     if (raised)
         throw *raised;
     const PlannedPath &p = out->result.plan;

@@ -12,6 +12,7 @@
 
 #include "PlanningInternal.h"
 #include "ompl_glider/ompl/GliderSetup.h"
+#include "ompl_glider/StopRequest.h"
 #include "ompl_glider/planners/HeadingRefiner.h"
 #include "ompl_glider/planners/HeadingTracker.h"
 #include "ompl_glider/planners/PathSmoother.h"
@@ -176,8 +177,8 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     const PlannerEntry &asked = plannerEntry(r.switchedFrom.empty() ? r.planner : r.switchedFrom);
     if (!asked.lattice())
         return r;
-    // a front that never reaches the goal proves that no route exists: nothing to look for
-    if (!r.solved && r.reason.rfind("no path exists", 0) == 0)
+    // a front that never reaches the goal proves that no route exists: nothing to look for; nor after a stop request
+    if ((!r.solved && r.reason.rfind("no path exists", 0) == 0) || stopRequested())
         return r;
     const auto t0 = std::chrono::steady_clock::now();
     const GliderProblem gp = problem.gliderProblem(departure, r.speed);

@@ -14,6 +14,7 @@
 
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/StopRequest.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
@@ -179,9 +180,10 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
                          : (entry.runsToItsEnd() ? 0.0 : kDefaultSamplingTimeLimit);
     const std::uint64_t cfc0 = ctx->travel->costFunctionCalls(), cmc0 = ctx->field->callCount();
     const auto tA = std::chrono::steady_clock::now();
-    const ompl::base::PlannerStatus status =
-        ss->solve(limit > 0 ? ompl::base::timedPlannerTerminationCondition(limit)
-                            : ompl::base::plannerNonTerminatingCondition());
+    // the time limit, or a stop request (StopRequest.h: Python's Ctrl-C)
+    const ompl::base::PlannerStatus status = ss->solve(ompl::base::plannerOrTerminationCondition(
+        limit > 0 ? ompl::base::timedPlannerTerminationCondition(limit) : ompl::base::plannerNonTerminatingCondition(),
+        ompl::base::PlannerTerminationCondition([] { return stopRequested(); })));
     r.planningSeconds = secondsSince(tA);
     r.status = status.asString();
     r.searchCostFunctionCalls = ctx->travel->costFunctionCalls() - cfc0;
@@ -214,6 +216,12 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
             reflyRoute(problem, *ctx, r);
             return r;
         }
+    if (!r.solved && stopRequested())
+    {
+        r.status = "Stopped";
+        r.reason = "stopped on request (Ctrl-C) before a path was found";
+        return r;
+    }
     if (!r.solved)
     {
         r.reason = noPathReason(status, *planner, dynamic_cast<const GliderSimpleSetup *>(ss.get()), limit);

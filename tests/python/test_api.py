@@ -253,3 +253,20 @@ def test_planner_names_and_fields():
     names = ompl_glider.planner_names()
     assert "ZA*TVE" in names and "LevelSet" in names and "RRTstar" in names
     assert "meandering_jet" in ompl_glider.analytic_fields()
+
+
+def test_ctrl_c_stops_a_long_plan_at_once():
+    # a level set at 1/100 of the region: about a minute of planning; SIGINT after a second raises KeyboardInterrupt
+    # while the plan runs (its searches stop at their next check), not when it would have finished
+    import signal
+    import time
+
+    timer = threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        ompl_glider.plan(planner="LevelSet", planner_params={"resolution": "0.01"})
+    assert time.monotonic() - start < 15.0
+    timer.join()
+    r = ompl_glider.plan(grid_size=0.8, refinement=False)  # the next plan runs to its end
+    assert r.solved
