@@ -1,6 +1,8 @@
 // glider_plan's command line: flags, their checks, and the MissionSpec of the built-in and --currents modes.
 #include "Flags.h"
+#include "ompl_glider/planners/Sectors.h"
 
+#include <cstdio>
 #include <algorithm>
 #include <cctype>
 #include <array>
@@ -299,8 +301,11 @@ void applyOutputFlags(const Flags &f, MissionSpec &m)
     if (f.gotoTurn)
     {
         if (!(*f.gotoTurn >= 0.0 && *f.gotoTurn <= 180.0))
-            throw UsageError{"--goto-turn: expected degrees in 0..180 (0: every waypoint), got " +
-                             std::to_string(*f.gotoTurn)};
+        {
+            char got[32];
+            std::snprintf(got, sizeof got, "%.10g", *f.gotoTurn);
+            throw UsageError{std::string("--goto-turn: expected degrees in 0..180 (0: every waypoint), got ") + got};
+        }
         m.outputs.gotoTurnDeg = *f.gotoTurn;
     }
     if ((f.isochrones || !f.isochroneInterval.empty()) &&
@@ -393,7 +398,7 @@ void defineFlags(CLI::App &app, Flags &f)
         ->check(kPositiveFinite)
         ->group(built);
     app.add_option("--sectors", f.sectors, "lattice connectivity 1..5 (default 3)")
-        ->check(CLI::Range(1, 5))
+        ->check(CLI::Range(kMinSectors, kMaxSectors))
         ->group(built);
     app.add_option("--time-limit", f.timeLimit,
                    "planner time limit in seconds, at most 1e6 (default: none for the lattice planners, 10 s for the "

@@ -29,7 +29,7 @@ struct Flags
     std::optional<double> speed, gridSize, timeLimit, depth;
     std::optional<int> sectors;
     bool noSmooth{false}, noRefine{false}, noGlobalCheck{false}, optimum{false}, verbose{false};
-    // reachable-set contours (issue 12): --isochrones, --isochrone-interval
+    // reachable-set contours: --isochrones, --isochrone-interval
     bool isochrones{false};
     std::string isochroneInterval;
     std::optional<double> gotoTurn;  // --goto-turn: the goto list's turn threshold in degrees

@@ -330,24 +330,24 @@ def _load(mission: Union[str, os.PathLike, Dict[str, Any]]) -> Any:
     return _core.load_mission(os.fspath(mission))
 
 
-def plan_fleet(mission: Union[str, os.PathLike, Dict[str, Any]],
-               progress: Optional[ProgressCallback] = None) -> Dict[str, "Result"]:
+def plan_fleet(mission: Union[str, os.PathLike, Dict[str, Any]], progress: Optional[ProgressCallback] = None,
+               out_dir: Union[None, str, os.PathLike] = None) -> Dict[str, "Result"]:
     """Plans every glider of a mission's ``fleet`` (examples/MISSION_FORMAT.md, Fleets) and returns their results by
     name, in the fleet's order.
 
-    Each glider's mission is the one ``glider_plan --mission`` plans for it (its start, goal, speed and departure in
-    place of the mission's), planned one after the other by the same pipeline as :func:`plan`; a glider without a
-    path has ``solved`` False. Raises :class:`Error` for a mission without a fleet, and for bad input (naming the
-    glider's fleet entry).
+    The library's fleet runner plans them, as ``glider_plan --mission`` does: each glider's mission is the mission
+    with its start, goal, speed and departure, planned by the same pipeline as :func:`plan`, the gliders in
+    parallel; a glider without a path has ``solved`` False. With ``out_dir``, the command line's fleet files are
+    written there (a folder per glider, ``fleet.csv``, ``summary.json``; all or nothing). Raises :class:`Error` for a
+    mission without a fleet, and for bad input (naming the glider's fleet entry).
     """
     spec = _load(mission)
     if spec.fleet_size == 0:
         raise Error("plan_fleet(): the mission has no fleet (a 'fleet:' list of gliders); use plan()")
-    results: Dict[str, Result] = {}
-    for i in range(spec.fleet_size):
-        glider = spec.fleet_glider(i)
-        results[glider.name] = Result(_core.run(glider, progress, None, False))
-    return results
+    if out_dir is not None and (not isinstance(out_dir, (str, os.PathLike)) or os.fspath(out_dir) == ""):
+        raise _bad("plan_fleet(): out_dir", out_dir, "the path of an output directory")
+    gliders, _ = _core.run_fleet(spec, progress, "" if out_dir is None else os.fspath(out_dir))
+    return {name: Result(core) for name, core in gliders}
 
 
 def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field: Optional[Field] = None,

@@ -2,6 +2,7 @@
 // forecast) and the keyword arguments of plan() applied to it as the command line applies its flags.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <tuple>
 #include <type_traits>
@@ -13,6 +14,7 @@
 #include <pybind11/stl.h>
 
 #include "Bindings.h"
+#include "ompl_glider/planners/Sectors.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/current/GeoBox.h"
@@ -69,8 +71,12 @@ T value(const py::handle &v, const std::string &name, const char *expected)
 void checkFinite(const std::string &name, double v, bool positive)
 {
     if (!std::isfinite(v) || (positive && !(v > 0.0)))
+    {
+        char got[32];
+        std::snprintf(got, sizeof got, "%.10g", v);  // as the library's messages write numbers
         throw Error("plan(): keyword '" + name + "' expects a finite number" + (positive ? " > 0" : "") + ", got " +
-                    std::to_string(v));
+                    got);
+    }
 }
 
 /// The forecast of a NetCDF path (a file, or a comma-separated list of files and glob patterns) with the
@@ -231,7 +237,13 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     }
     if (auto v = get("planner"))
     {
-        m.planner.name = plannerEntry(value<std::string>(*v, "planner", "a planner name")).name;
+        const std::string name = plannerEntry(value<std::string>(*v, "planner", "a planner name")).name;
+        if (name != m.planner.name)
+        {
+            m.planner.parameters.clear();  // the file's parameters are the other planner's (as glider_plan --planner)
+            m.planner.parameterMarks.clear();
+        }
+        m.planner.name = name;
         m.marks["planner.name"] = keyword("planner");
     }
     if (auto v = get("planner_params"))
@@ -250,8 +262,9 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     if (auto v = get("sectors"))
     {
         m.planner.sectors = value<int>(*v, "sectors", "an integer 1..5");
-        if (m.planner.sectors < 1 || m.planner.sectors > 5)
-            throw Error("plan(): keyword 'sectors' expects 1..5, got " + std::to_string(m.planner.sectors));
+        if (m.planner.sectors < kMinSectors || m.planner.sectors > kMaxSectors)
+            throw Error("plan(): keyword 'sectors' expects " + std::to_string(kMinSectors) + ".." +
+                        std::to_string(kMaxSectors) + ", got " + std::to_string(m.planner.sectors));
         m.marks["planner.sectors"] = keyword("sectors");
     }
     if (auto v = get("time_limit"))

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -19,7 +20,9 @@
 #include "Bindings.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/StopRequest.h"
+#include "ompl_glider/mission/Fleet.h"
 #include "ompl_glider/output/ExecutionFiles.h"
+#include "ompl_glider/output/FleetFiles.h"
 #include "ompl_glider/output/OutputWriter.h"
 #include "ompl_glider/output/Report.h"
 #include "ompl_glider/output/RouteFiles.h"
@@ -267,6 +270,66 @@ std::shared_ptr<PyResult> run(const MissionSpec &spec, const py::object &progres
     return out;
 }
 
+/// runFleet() (the library's fleet runner, as glider_plan --mission runs a fleet) on @p spec, the GIL released: each
+/// glider's result by name in the fleet's order, and when @p directory is given the command line's fleet files
+/// (a folder per glider, fleet.csv, summary.json, all or nothing) with the paths written.
+std::pair<std::vector<std::pair<std::string, std::shared_ptr<PyResult>>>, std::vector<std::string>>
+runFleetPy(const MissionSpec &spec, const py::object &progress, const std::string &directory)
+{
+    PyObject *callback = progress.is_none() ? nullptr : progress.ptr();
+    std::optional<py::error_already_set> raised;
+    std::mutex guard;
+    RunOptions options;
+    if (callback)
+        options.progress = [callback, &raised, &guard](const std::string &line, bool done) {
+            const py::gil_scoped_acquire gil;
+            const std::lock_guard<std::mutex> lock(guard);
+            if (raised)
+                return;
+            try
+            {
+                py::handle(callback)(line, done);
+            }
+            catch (py::error_already_set &e)
+            {
+                raised = std::move(e);
+            }
+        };
+    std::map<std::string, std::shared_ptr<PyResult>> byName;
+    std::vector<FleetGlider> gliders;
+    std::vector<std::string> written;
+    {
+        const py::gil_scoped_release release;
+        const auto start = std::chrono::steady_clock::now();
+        const FleetKeep keep = [&](const MissionResult &result, const MissionProblem &problem) {
+            auto r = std::make_shared<PyResult>();
+            r->problem = std::make_shared<const MissionProblem>(problem);
+            r->result = result;
+            {
+                const std::lock_guard<std::mutex> lock(guard);
+                byName[result.spec.name] = r;
+            }
+            return directory.empty() ? std::string() : renderOutputFiles(result, problem);
+        };
+        gliders = runFleet(spec, options, keep);
+        for (const FleetGlider &g : gliders)
+            if (!g.row.badInput.empty())
+                throw Error("glider '" + g.row.name + "': " + g.row.badInput + ": " + g.row.reason);
+        if (!directory.empty())
+        {
+            const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            written = writeOutputFiles(directory, fleetOutputFiles(spec, gliders, wall));
+        }
+        options.progress = nullptr;
+    }
+    if (raised)
+        throw *raised;
+    std::vector<std::pair<std::string, std::shared_ptr<PyResult>>> out;
+    for (const FleetGlider &g : gliders)
+        out.emplace_back(g.row.name, byName.at(g.row.name));
+    return {out, written};
+}
+
 std::vector<std::string> write(const PyResult &r, const std::string &directory)
 {
     const py::gil_scoped_release release;
@@ -355,5 +418,9 @@ void bindResult(py::module_ &m)
         .def("write", &write, py::arg("directory"));
     m.def("run", &run, py::arg("mission"), py::arg("progress") = py::none(), py::arg("speeds") = py::none(),
           py::arg("optimum") = false, "runMission() on a mission (the GIL released).");
+    m.def("run_fleet", &runFleetPy, py::arg("mission"), py::arg("progress") = py::none(),
+          py::arg("directory") = std::string(),
+          "runFleet() on a mission with a fleet (the GIL released): [(name, result)], and the files written to "
+          "directory (none when empty).");
 }
 }  // namespace ompl_glider_py

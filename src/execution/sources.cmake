@@ -1,5 +1,5 @@
-# execution/: flying a plan in another ocean (surfacings, control strategies; issue 13), OMPL control planning
-# with the dive integrator (GliderControl, issue 24)
+# execution/: flying a plan in another ocean (surfacings, control strategies), OMPL control planning
+# with the dive integrator (GliderControl)
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Dive.cpp
   ${CMAKE_CURRENT_LIST_DIR}/HeadingRoute.cpp

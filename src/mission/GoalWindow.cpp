@@ -1,5 +1,5 @@
 /// @file GoalWindow.cpp
-/// @brief Goals in time (issue 12; [ThompsonICRA] Sec. III): the arrival of a solved plan moved into the mission's
+/// @brief Goals in time ([ThompsonICRA] Sec. III): the arrival of a solved plan moved into the mission's
 /// goal window (timeArrival()) by a hold at the goal, a hold at an earlier waypoint or a slower leg.
 
 #include <algorithm>
@@ -255,7 +255,7 @@ std::string timeText(const MissionProblem &problem, double t)
     return iso.empty() ? std::string(text) : std::string(text) + " (" + iso + ")";
 }
 
-/// Goals in time (issue 12; [ThompsonICRA] Sec. III, the earliest valid arrival): moves the arrival of a solved plan
+/// Goals in time ([ThompsonICRA] Sec. III, the earliest valid arrival): moves the arrival of a solved plan
 /// into the goal window [begin, end] of the mission. Early: hold at the goal where the glider can (|c| < V over the
 /// hold, TravelTimeMotionValidator::canHold); else time the arrival: from the last waypoint before the goal back to
 /// the start, hold there (where |c| < V) or fly the leg leaving it slower (any pace in its arrival window), the rest of the path flown

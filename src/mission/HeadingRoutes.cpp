@@ -1,5 +1,5 @@
 /// @file HeadingRoutes.cpp
-/// @brief Heading routes in the pipeline (issue 24): the result of a heading planner, and the default's switch to
+/// @brief Heading routes in the pipeline: the result of a heading planner, and the default's switch to
 /// one when straight legs find no path.
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "PlanningInternal.h"
+#include "../io/NumberText.h"
 #include "ompl_glider/execution/Reflight.h"
 #include "ompl_glider/planners/HeadingRefiner.h"
 #include "ompl_glider/planners/HeadingTracker.h"
@@ -100,8 +101,8 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
             r.solved = false;
             r.status = kNoPathStatus;
             r.reason = "the heading route fails its accurate re-flight: " +
-                       (f.grounded || !f.ok ? f.why : "it ends " + std::to_string(r.reflownEndDistance) +
-                                                          " from the goal (goal radius " + std::to_string(radius) + ")");
+                       (f.grounded || !f.ok ? f.why : "it ends " + text::number(r.reflownEndDistance) +
+                                                          " from the goal (goal radius " + text::number(radius) + ")");
         }
         return;
     }

@@ -1,4 +1,4 @@
-// The mission's execution in another ocean (issue 13): plans flown with each control strategy in the truth field,
+// The mission's execution in another ocean: plans flown with each control strategy in the truth field,
 // for the mission's own pair and a batch of random pairs, in parallel (in threads, or spread over the ranks of an MPI
 // job: TaskSpread.h).
 #include "ompl_glider/mission/MissionExecution.h"
@@ -143,7 +143,7 @@ void checkTruthTimes(const MissionProblem &problem, const PlannedPath &plan, dou
     const CurrentField &truth = *problem.getTruth();
     const auto at = [&](double t) {
         const std::string iso = problem.isoTime(t);
-        return "t = " + std::to_string(t) + (iso.empty() ? "" : " (" + iso + ")");
+        return "t = " + text::number(t) + (iso.empty() ? "" : " (" + iso + ")");
     };
     if (truth.timeBegin() > plan.departure)
         throw Error(m.place("execution.truth") + ": the truth begins at " + at(truth.timeBegin()) +
@@ -373,7 +373,7 @@ std::vector<std::pair<Point2, Point2>> executionPairs(const MissionProblem &prob
         }
         if (!found)
             throw Error(problem.getSpec().place("execution.batch") + ": no start/goal pair " +
-                        std::to_string(minDistance) + " or more apart with both ends in water found in 1000 tries "
+                        text::number(minDistance) + " or more apart with both ends in water found in 1000 tries "
                         "(pair " + std::to_string(k + 1) + "): lower execution.batch.min_distance");
     }
     return pairs;

@@ -183,8 +183,8 @@ double defaultForecastGridSize(double minCellSize, double distance)
     if (distance > 0.0)
         g = std::clamp(g, distance / 200.0, distance / 25.0);
     if (!(g > 0.0) || !std::isfinite(g))
-        throw Error("cannot choose a grid size (cell size " + std::to_string(minCellSize) + ", start-goal distance " +
-                    std::to_string(distance) + "): give planner.grid_size (--grid-size)");
+        throw Error("cannot choose a grid size (cell size " + text::number(minCellSize) + ", start-goal distance " +
+                    text::number(distance) + "): give planner.grid_size (--grid-size)");
     const double scale = std::pow(10.0, std::floor(std::log10(g)) - 1.0);  // two significant digits
     return std::round(g / scale) * scale;
 }
@@ -247,18 +247,7 @@ void MissionProblem::buildField()
             throw Error(where(m, m.current.mark) + netCdfMissionMessage(e.what()));
         throw;
     }
-    if (!nc.depthAxis && m.vehicle.depth > 0.0 && !m.dive.enabled)
-    {
-        // the glider's depth asked for currents that the file does not hold: never planned at the surface in silence
-        const auto it = m.marks.find("vehicle.depth");
-        const std::string at = it == m.marks.end() ? m.place("vehicle.depth") + ": "
-                               : it->second.line == 0 ? it->second.file + ": "
-                                                      : where(m, it->second) + "field 'vehicle.depth': ";
-        throw Error(at + "the glider's depth of " + text::number(m.vehicle.depth) + " m: the forecast's '" +
-                    nc.uVariable + "' has no depth dimension, so its currents are of one level (the surface's, or a "
-                    "depth average), not of " + text::number(m.vehicle.depth) + " m; plan at depth 0 on it, or on a "
-                    "forecast with depth levels");
-    }
+    checkDepthAxis(nc);
     field_ = nc.field;
     projection_ = nc.projection;
     projectionScale_ = 1.0;
@@ -345,34 +334,7 @@ void MissionProblem::buildMembers()
     members_.push_back(field_);  // the first member, read as the forecast
     for (std::size_t i = 1; i < members.size(); ++i)
         members_.push_back(loadSource(members[i], "current.ensemble[" + std::to_string(i) + "]"));
-    // the ensemble is planned where every member holds currents: members without a common time are refused, each
-    // named with its span
-    double begin = -std::numeric_limits<double>::infinity(), end = std::numeric_limits<double>::infinity();
-    for (const auto &f : members_)
-    {
-        begin = std::max(begin, f->timeBegin());
-        end = std::min(end, f->timeEnd());
-    }
-    if (!(begin < end))
-    {
-        const auto when = [this](double t) {
-            if (!std::isfinite(t))
-                return std::string(t > 0 ? "on" : "ever");
-            const std::string iso = isoTime(t);
-            return iso.empty() ? text::number(t) : iso;
-        };
-        std::string spans;
-        for (std::size_t i = 0; i < members_.size(); ++i)
-        {
-            const CurrentSpec &c = members[i];
-            const std::string name = c.file.empty() ? c.type : "'" + c.file + "'";
-            spans += (i ? ", " : "") + std::string("[") + std::to_string(i) + "] " + name + " from " +
-                     when(members_[i]->timeBegin()) + " to " + when(members_[i]->timeEnd());
-        }
-        throw Error(where(spec_, spec_.current.mark) + "field 'current.ensemble': the members hold currents at no "
-                    "common time (" + spans + "); an ensemble is planned where all of them do: give members that "
-                    "cover the trip's days");
-    }
+    checkCommonTime();
     field_ = std::make_shared<EnsembleMeanField>(members_);
 }
 

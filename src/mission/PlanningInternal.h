@@ -146,12 +146,12 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
 PlannedPath headingResult(const MissionProblem &problem, const GliderContext &ctx, const HeadingRoute &route,
                           PlannedPath r);
 
-/// Honest times (issue 24): re-flies the final route of a solved plan with the accurate re-flight (Reflight.h) and
+/// Honest times: re-flies the final route of a solved plan with the accurate re-flight (Reflight.h) and
 /// makes the plan's times the re-flight's (PlannedPath::reflown); a straight leg or heading route the re-flight
 /// cannot fly makes the plan fail with the reason.
 void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, PlannedPath &r);
 
-/// The default's switch (issue 24): a lattice planner that found no path on a well-formed problem hands over to the
+/// The default's switch: a lattice planner that found no path on a well-formed problem hands over to the
 /// heading planner (Isochrone), and that one to the level set; "no path" stays only when the level set's front
 /// never reaches the goal within the time window. Returns @p failed unchanged for other planners and outcomes.
 PlannedPath switchToHeadings(const MissionProblem &problem, double departure, const PlanOptions &o,

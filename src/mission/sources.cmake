@@ -9,6 +9,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/loader/Fleet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Safety.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/FieldChecks.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Endpoints.cpp
   # the planning pipeline, one concern per file (see PlanningInternal.h)
   ${CMAKE_CURRENT_LIST_DIR}/Planning.cpp

@@ -1,4 +1,4 @@
-// Box plots of an execution's measures per strategy (issue 13; the shape of [ThompsonICRA] Fig. 8).
+// Box plots of an execution's measures per strategy (the shape of [ThompsonICRA] Fig. 8).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

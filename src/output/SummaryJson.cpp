@@ -257,7 +257,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                       {"iso", r.waypoints.empty() ? jtext(r.departureIso) : jtext(r.waypoints.front().iso)}};
     j["arrival"] = {{"time", r.waypoints.empty() ? json(nullptr) : jnum(r.waypoints.back().time)},
                     {"iso", r.waypoints.empty() ? json(nullptr) : jtext(r.waypoints.back().iso)}};
-    // goals in time (issue 12): the time at the goal in the window, the holds, the window
+    // goals in time: the time at the goal in the window, the holds, the window
     j["arrival_time"] = r.waypoints.empty() ? json(nullptr) : jnum(r.waypoints.back().time);
     j["hold_time"] = p.solved ? jnum(p.holdTime) : json(nullptr);
     if (m.goalWindow.set)
@@ -285,14 +285,14 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["expanded_vertices"] = p.expandedVertices;
     j["wall_time_s"] = {{"planning", p.planningSeconds}, {"postprocess", p.postprocessSeconds}, {"total", r.wallSeconds}};
     j["path_checked"] = p.pathChecked;
-    // heading routes (issue 24): what the glider holds, and the switch from a planner without a path
+    // heading routes: what the glider holds, and the switch from a planner without a path
     j["route_model"] = p.headingRoute() ? "headings" : "straight_legs";
     j["headings"] = headingsJson(r, problem);
     j["switched_from"] = jtext(p.switchedFrom);
     j["switch_reason"] = jtext(p.switchReason);
     // the global check of the route class: extremals shot from the start beside the planner's route
     j["global_check"] = globalCheckJson(p);
-    // honest times (issue 24): the accurate Dormand-Prince re-flight of the reported route
+    // honest times: the accurate Dormand-Prince re-flight of the reported route
     if (p.reflown)
         j["reflight"] = {{"method", "Dormand-Prince 5(4), rtol 1e-10"},
                          {"travel_time", jnum(p.reflownTravelTime)},

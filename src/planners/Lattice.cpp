@@ -1,4 +1,5 @@
 #include "ompl_glider/planners/detail/Lattice.h"
+#include "ompl_glider/planners/Sectors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,8 +29,9 @@ Lattice::Lattice(double xMin, double xMax, double yMin, double yMax, double grid
                     std::to_string(yMax) + "])");
     if (!(gridSize > 0.0) || !std::isfinite(gridSize))
         throw Error("Lattice: grid_size must be a finite number > 0 (got " + std::to_string(gridSize) + ")");
-    if (sectors < 1 || sectors > 5)
-        throw Error("Lattice: sectors must be in 1..5 (got " + std::to_string(sectors) + ")");
+    if (sectors < kMinSectors || sectors > kMaxSectors)
+        throw Error("Lattice: sectors must be in " + std::to_string(kMinSectors) + ".." + std::to_string(kMaxSectors) +
+                    " (got " + std::to_string(sectors) + ")");
     const double cx = std::floor((xMax - xMin) / gridSize + 1e-9) + 1.0;
     const double cy = std::floor((yMax - yMin) / gridSize + 1e-9) + 1.0;
     if (cx * cy > 2147483648.0)

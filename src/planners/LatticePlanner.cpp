@@ -1,4 +1,5 @@
 #include "ompl_glider/planners/LatticePlanner.h"
+#include "ompl_glider/planners/Sectors.h"
 
 #include <cmath>
 #include <utility>
@@ -28,8 +29,9 @@ void LatticePlanner::setGridSize(double g)
 
 void LatticePlanner::setSectors(unsigned n)
 {
-    if (n < 1 || n > 5)
-        throw Error(className_ + ": sectors must be in 1..5 (got " + std::to_string(n) + ")");
+    if (n < static_cast<unsigned>(kMinSectors) || n > static_cast<unsigned>(kMaxSectors))
+        throw Error(className_ + ": sectors must be in " + std::to_string(kMinSectors) + ".." +
+                    std::to_string(kMaxSectors) + " (got " + std::to_string(n) + ")");
     const bool changed = n != sectors_;
     sectors_ = n;
     if (changed)

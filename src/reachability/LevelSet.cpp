@@ -4,6 +4,7 @@
 /// queries in LevelSetBacktrack.cpp.
 
 #include "ompl_glider/reachability/LevelSet.h"
+#include "../io/NumberText.h"
 
 #include <algorithm>
 #include <chrono>
@@ -476,11 +477,11 @@ LevelSetSolver::LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSe
     if (!ctx_ || !ctx_->field || !ctx_->travel)
         throw Error("LevelSetSolver: the problem context is null or has no field");
     if (!(params_.cellSize > 0.0) || !std::isfinite(params_.cellSize))
-        throw Error("LevelSet: resolution (cell size) must be > 0, got " + std::to_string(params_.cellSize));
+        throw Error("LevelSet: resolution (cell size) must be > 0, got " + text::number(params_.cellSize));
     if (!(params_.cfl > 0.0 && params_.cfl <= 2.0))
-        throw Error("LevelSet: cfl must be in (0, 2], got " + std::to_string(params_.cfl));
+        throw Error("LevelSet: cfl must be in (0, 2], got " + text::number(params_.cfl));
     if (!(params_.clearance >= 0.0) || !std::isfinite(params_.clearance))
-        throw Error("LevelSet: clearance must be >= 0, got " + std::to_string(params_.clearance));
+        throw Error("LevelSet: clearance must be >= 0, got " + text::number(params_.clearance));
     if (!(params_.band >= 4.0 && params_.band <= 50.0))
         throw Error("LevelSet: band must be in [4, 50] cells, got " + std::to_string(params_.band));
     const Region &r = ctx_->region;
@@ -492,9 +493,9 @@ LevelSetSolver::LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSe
     g.y0 = r.yMin;
     const double cx = std::floor((r.xMax - r.xMin) / g.h + 1e-9), cy = std::floor((r.yMax - r.yMin) / g.h + 1e-9);
     if (cx < 4 || cy < 4)
-        throw Error("LevelSet: resolution " + std::to_string(g.h) + " leaves fewer than 4 cells across the region");
+        throw Error("LevelSet: resolution " + text::number(g.h) + " leaves fewer than 4 cells across the region");
     if (cx * cy > 2e8)
-        throw Error("LevelSet: resolution " + std::to_string(g.h) + " gives more than 2e8 grid nodes");
+        throw Error("LevelSet: resolution " + text::number(g.h) + " gives more than 2e8 grid nodes");
     g.nx = static_cast<int>(cx) + 1;
     g.ny = static_cast<int>(cy) + 1;
     checkMemory(static_cast<double>(g.size()) * (3 * sizeof(double) + 2 * sizeof(double) + 2),

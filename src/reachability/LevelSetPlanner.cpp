@@ -1,4 +1,5 @@
 #include "ompl_glider/reachability/LevelSetPlanner.h"
+#include "../io/NumberText.h"
 
 #include <algorithm>
 #include <cmath>
@@ -69,12 +70,12 @@ std::string infeasibleLegReason(const GliderContext &ctx, const std::vector<Time
     const std::string env = ctx.environment ? ctx.environment->whyLegBlocked(path[a].x, path[a].y, t, path[a + 1].x,
                                                                              path[a + 1].y, t + 1e-9)
                                             : std::string();
-    return "leg from (" + std::to_string(path[a].x) + ", " + std::to_string(path[a].y) + ") at time " +
-           std::to_string(t) + " (level set " + std::to_string(path[a].t) + ") to the next point is infeasible" +
+    return "leg from (" + text::number(path[a].x) + ", " + text::number(path[a].y) + ") at time " +
+           text::number(t) + " (level set " + text::number(path[a].t) + ") to the next point is infeasible" +
            (env.empty() ? "" : ": " + env);
 }
 
-/// The steering directions along a backtracked level-set path (issue 24): the path followed by held headings piece
+/// The steering directions along a backtracked level-set path: the path followed by held headings piece
 /// by piece (targets about @p spacing apart; where a piece cannot be flown, e.g. where the backtrack broke off near
 /// the start, an isochrone search from where the glider stopped links it to the goal: followWithRestarts()), then
 /// refined whole by direct shooting where that is faster and still valid. When the path cannot be followed, the steering directions themselves (the bearing
@@ -241,14 +242,14 @@ LevelSetPlanner::~LevelSetPlanner() = default;
 void LevelSetPlanner::setResolution(double h)
 {
     if (!(h >= 0.0) || !std::isfinite(h))
-        throw Error("LevelSet: resolution must be >= 0 (0: automatic), got " + std::to_string(h));
+        throw Error("LevelSet: resolution must be >= 0 (0: automatic), got " + text::number(h));
     resolution_ = h;
 }
 
 void LevelSetPlanner::setCfl(double c)
 {
     if (!(c > 0.0 && c <= 2.0))
-        throw Error("LevelSet: cfl must be in (0, 2], got " + std::to_string(c));
+        throw Error("LevelSet: cfl must be in (0, 2], got " + text::number(c));
     params_.cfl = c;
 }
 

@@ -1,4 +1,4 @@
-# reachability/: the level-set solver (reachable sets, first-arrival times, optimal paths, isochrones; issue 12)
+# reachability/: the level-set solver (reachable sets, first-arrival times, optimal paths, isochrones)
 # LevelSetInternal.h (internal, not installed) describes how the solver is split over the LevelSet*.cpp files.
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/LevelSet.cpp

@@ -52,6 +52,11 @@ def test_keywords_change_the_mission():
     fast = ompl_glider.plan(SHEAR, speed=1.0)
     assert fast.travel_time < slow.travel_time
     assert ompl_glider.plan(SHEAR, planner="TVE").planner == "TVE"
+    # another planner than the file's drops the file's planner parameters, as glider_plan --planner does
+    tuned = dict(SHEAR, planner=dict(SHEAR["planner"], parameters={"delta_phi_max": 0.5}))
+    assert ompl_glider.plan(tuned, planner="LevelSet", grid_size=None).planner == "LevelSet"
+    with pytest.raises(ompl_glider.Error, match="delta_phi_max"):  # the file's own planner keeps them, checked
+        ompl_glider.plan(tuned, planner_params={"delta_phi_max": "not a number"})
 
 
 def test_global_check_keyword():

@@ -102,6 +102,15 @@ def test_fleet_same_travel_times_as_glider_plan(tmp_path):
         assert abs(results[name].travel_time - float(rows[name]["travel_time"])) <= 1e-6 * results[name].travel_time
     assert results["alpha"].route.x[0] == 1 and results["bravo"].route.y[0] == 3
     assert results["bravo"].travel_time != results["alpha"].travel_time
+    # with out_dir: the command line's fleet files, by the library's fleet runner (the same names, the same fleet.csv)
+    again = ompl_glider.plan_fleet(mission, out_dir=tmp_path / "py")
+    assert [r.travel_time for r in again.values()] == [r.travel_time for r in results.values()]
+
+    def names(root):
+        return sorted(os.path.relpath(os.path.join(d, f), root) for d, _, fs in os.walk(root) for f in fs)
+
+    assert names(tmp_path / "py") == names(tmp_path / "cli")
+    assert (tmp_path / "py" / "fleet.csv").read_bytes() == (tmp_path / "cli" / "fleet.csv").read_bytes()
 
     # a glider whose goal is in the island: bad input for both, the island named
     mission["fleet"].append({"name": "charlie", "start": {"x": 2, "y": 0}, "goal": {"x": 7, "y": -1}})

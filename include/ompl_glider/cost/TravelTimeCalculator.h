@@ -35,7 +35,7 @@ struct TravelTimeParams
     double hMin{1e-3};  ///< smallest step, fraction of the leg length
     double hMax{0.5};   ///< largest step, fraction of the leg length
     double eps{1e-3};   ///< tolerance of the local error |t_rough - t_improved| per step (time units)
-    /// Optional tolerance relative to the leg (issue 24, "honest times"): > 0, a step is judged against
+    /// Optional tolerance relative to the leg ("honest times"): > 0, a step is judged against
     /// min(eps, rtol * t_step) instead of eps, t_step being the step's own (improved) time, so that the errors
     /// accepted along a leg add up to at most rtol times the leg's time whatever the field's time unit. 0: off, the
     /// absolute eps alone (bit-identical to the behaviour without it). Steps at hMin are still accepted whatever

@@ -66,7 +66,7 @@ public:
     /// @brief Local bounds of the current components over a region of space and time, where the field can give
     /// them cheaply without sampling itself (no CMC): true with every velocity() value over the region (x, y,
     /// the time window, any depth) inside [uMin, uMax] x [vMin, vMax]; false = no local bound (the caller falls
-    /// back to maxSpeed()). Used by the lattice search's lower bounds (LatticeHeuristic, issue 15).
+    /// back to maxSpeed()). Used by the lattice search's lower bounds (LatticeHeuristic).
     virtual bool velocityBounds(const Region & /*region*/, double & /*uMin*/, double & /*uMax*/, double & /*vMin*/,
                                 double & /*vMax*/) const
     {

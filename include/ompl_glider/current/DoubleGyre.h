@@ -13,7 +13,7 @@ namespace ompl_glider
 /// epsilon = 0 or omega = 0 gives the steady field psi = A sin(pi x/L) sin(pi y/L), evaluated with exactly the
 /// same floating-point operations as before the time dependence was added (bit-identical values).
 /// A standard test flow for planners in currents; with the flow several times the glider's speed, a strong-current
-/// test (issue 24).
+/// test.
 class DoubleGyre : public CurrentField
 {
 public:

@@ -1,7 +1,7 @@
 #pragma once
 /// @file EnsembleField.h
 /// @brief The mean of an ensemble of current fields (members: forecasts of several models or runs, or an analytic
-/// flow with several parameter sets; issue 13). The planner's heuristics and the maps use the mean; robust plans
+/// flow with several parameter sets). The planner's heuristics and the maps use the mean; robust plans
 /// are judged member by member (mission/Planning.h, planRoute()).
 
 #include <memory>

@@ -1,7 +1,7 @@
 #pragma once
 /// @file ShiftedTimeField.h
 /// @brief A field read on another time axis: field time t of this field is time t + shift of the wrapped one. Used
-/// where a second source (the "truth" of an execution, issue 13) counts its time from another origin than the
+/// where a second source (the "truth" of an execution) counts its time from another origin than the
 /// mission's forecast: both are then asked at the same dates.
 
 #include <memory>

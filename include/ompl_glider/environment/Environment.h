@@ -25,7 +25,7 @@ public:
     virtual bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const = 0;
 
     /// @brief The times at which a timed restriction ends: the ends of the closed windows of time-windowed zones,
-    /// sorted, without repeats. A planner that waits (TveSearch, issue 12) tries departing just after them when a leg
+    /// sorted, without repeats. A planner that waits (TveSearch) tries departing just after them when a leg
     /// is blocked. Empty by default (static regions; drifting ice has no end).
     virtual std::vector<double> releaseTimes() const
     {

@@ -1,6 +1,6 @@
 #pragma once
 /// @file Execution.h
-/// @brief Flying a plan in an ocean other than the one it was planned in ([ThompsonICRA] Sec. III-IV; issue 13).
+/// @brief Flying a plan in an ocean other than the one it was planned in ([ThompsonICRA] Sec. III-IV).
 ///
 /// A glider dives with a fixed heading and corrects it only at the surface: at every surfacing (every
 /// ExecutionOptions::surfacingInterval) it takes a GPS fix, a control strategy chooses the heading from the fix,
@@ -40,7 +40,7 @@ enum class ControlStrategy
     /// A new plan from the fix at every ExecutionOptions::replanEvery-th surfacing (ExecutionOptions::replan, e.g.
     /// the planner on the forecast), then flown as CurrentSensitive. Not in [ThompsonICRA]; what operators do.
     Replan,
-    /// The plan's own held headings (a heading route, issue 24): each segment's heading from its start to its end
+    /// The plan's own held headings (a heading route): each segment's heading from its start to its end
     /// (a surfacing also at every segment end), the last one held after the plan's end. For a plan of straight legs
     /// (no ExecutionOptions::headings) it flies as CurrentSensitive.
     PlannedHeadings

@@ -1,6 +1,6 @@
 #pragma once
 /// @file GliderControl.h
-/// @brief OMPL control-based planning on the glider problems (issue 24): a heading control space, a state
+/// @brief OMPL control-based planning on the glider problems: a heading control space, a state
 /// propagator that flies the held heading with the one dive integrator (flyHeading(), Dive.h), a travel-time
 /// objective for propagated motions, and makeControlSetup(), the ompl::control counterpart of makeSimpleSetup(), so
 /// that OMPL's control planners (oc::SST, oc::RRT, oc::KPIECE1, ...) plan on the same problems with the same dynamics.

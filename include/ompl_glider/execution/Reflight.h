@@ -1,6 +1,6 @@
 #pragma once
 /// @file Reflight.h
-/// @brief An accurate re-flight of a reported route, the yardstick of "honest times" (issue 24): a reported travel
+/// @brief An accurate re-flight of a reported route, the yardstick of "honest times": a reported travel
 /// time is honest when it is within 1e-5 relative of the re-flight of the route it reports.
 ///
 /// The re-flight has its own integrator, an embedded Dormand-Prince 5(4) Runge-Kutta pair with an adaptive step

@@ -1,6 +1,6 @@
 #pragma once
 /// @file Isochrones.h
-/// @brief Reachable-set contours for pilots ([ThompsonICRA] Fig. 4 and Sec. III; issue 12): where the glider can be
+/// @brief Reachable-set contours for pilots ([ThompsonICRA] Fig. 4 and Sec. III): where the glider can be
 /// by each of a few times after the departure, from the level-set solver.
 
 #include <string>

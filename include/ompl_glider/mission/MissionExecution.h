@@ -1,6 +1,6 @@
 #pragma once
 /// @file MissionExecution.h
-/// @brief The mission's execution in another ocean (issue 13, [ThompsonICRA]): the plan of the pipeline is flown
+/// @brief The mission's execution in another ocean ([ThompsonICRA]): the plan of the pipeline is flown
 /// with every control strategy of MissionSpec::execution in the "truth" current (MissionProblem::getTruth()),
 /// and, for a batch, so are plans between random start/goal pairs of the region. Part of the one pipeline:
 /// runMission() calls executeMission() when the mission has an `execution` section; the result is a member of
@@ -30,7 +30,7 @@ struct ExecutionRun
     double departure{0.0};    ///< departure (field units)
     double radius{0.0};       ///< goal radius used (length units)
     std::vector<TimedPoint> plan;  ///< the plan flown (the final path of planRoute())
-    std::optional<HeadingRoute> headings;  ///< the plan's held headings when it is a heading route (issue 24)
+    std::optional<HeadingRoute> headings;  ///< the plan's held headings when it is a heading route
     std::vector<FlownTrack> flown;    ///< one per ExecutionResult::strategies
 };
 

@@ -164,6 +164,10 @@ private:
     void buildField();
     void buildTruth();
     void buildMembers();
+    /// A glider's depth on a forecast without a depth dimension is refused (FieldChecks.cpp).
+    void checkDepthAxis(const NetCdfCurrents &nc) const;
+    /// Ensemble members without a common time are refused, each named with its span (FieldChecks.cpp).
+    void checkCommonTime() const;
     /// A current source other than the forecast (a truth, an ensemble member) on the forecast's frame and dates.
     std::shared_ptr<const CurrentField> loadSource(const CurrentSpec &source, const std::string &field) const;
     void buildBox();

@@ -20,7 +20,7 @@
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/current/Interpolation.h"
-#include "ompl_glider/stints/StintSimulator.h"
+#include "ompl_glider/stints/StintObjective.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/OutputFormats.h"
 
@@ -136,7 +136,7 @@ struct DepartureSpec
     unsigned threads{0};        ///< parallel searches (0: all cores)
 };
 
-/// @brief The goal's arrival window (issue 12, "goals in time"; [ThompsonICRA] Sec. III: a spatiotemporal goal, reached
+/// @brief The goal's arrival window ("goals in time"; [ThompsonICRA] Sec. III: a spatiotemporal goal, reached
 /// at its earliest valid arrival): the glider must be at the goal at a time in [begin, end] (field time units).
 struct GoalWindowSpec
 {
@@ -312,7 +312,7 @@ struct FleetGliderSpec
     int line{0};                      ///< the entry's line in the mission file
 };
 
-/// @brief Flying the plan in another ocean (issue 13; [ThompsonICRA]): the "truth" current, the surfacings, the
+/// @brief Flying the plan in another ocean ([ThompsonICRA]): the "truth" current, the surfacings, the
 /// control strategies compared, and a batch of other start/goal pairs.
 struct ExecutionSpec
 {
@@ -370,7 +370,7 @@ struct MissionSpec
     StintSpec stints;
     OutputSpec outputs;
     std::vector<double> speeds;    ///< speed sweep ([EichhornOceans] Table VI); empty = none
-    ExecutionSpec execution;       ///< flying the plan in another ocean (issue 13)
+    ExecutionSpec execution;       ///< flying the plan in another ocean
     /// A fleet: one plan per glider, each from its own start to its own goal (empty: one plan, start to goal)
     std::vector<FleetGliderSpec> fleet;
     /// Where each value was given, by dotted field name ("planner.grid_size"): a line of the mission file, or the

@@ -20,7 +20,6 @@
 #include "ompl_glider/mission/Isochrones.h"
 #include "ompl_glider/mission/MissionExecution.h"
 #include "ompl_glider/mission/MissionProblem.h"
-#include "ompl_glider/planners/TveSearch.h"
 #include "ompl_glider/stints/StintSimulator.h"
 
 namespace ompl_glider
@@ -157,15 +156,15 @@ struct PlannedPath
     /// Stints: the plan of a stint planner (then path holds its surfacings), or the path converted to stints
     std::optional<StintOutcome> stints;
     std::optional<EnsemblePlan> ensemble;  ///< with an ensemble current: how the plan fares per member
-    /// A route of held headings (issue 24: IsochronePlanner, LevelSet in strong currents): the headings flown from the
+    /// A route of held headings (IsochronePlanner, LevelSet in strong currents): the headings flown from the
     /// start; then path holds the segment ends (with their times) and track the flown track. Unset for straight legs.
     std::optional<HeadingRoute> headings;
     std::vector<TimedPoint> track;  ///< the flown track of a heading route (every integration step; start first)
-    /// The planner first asked when the pipeline switched to another one (a lattice without a path, issue 24), and
+    /// The planner first asked when the pipeline switched to another one (a lattice without a path), and
     /// why; both empty when it did not switch
     std::string switchedFrom;
     std::string switchReason;  ///< see switchedFrom
-    /// Honest times (issue 24): the route re-flown by the accurate Dormand-Prince re-flight (execution/Reflight.h).
+    /// Honest times: the route re-flown by the accurate Dormand-Prince re-flight (execution/Reflight.h).
     /// Straight legs are re-timed leg by leg by it (full speed; holds and legs the plan flies slower on purpose keep
     /// their planned arrival when the re-flight is earlier), so path and travelTime are the re-flight's; a leg it
     /// cannot fly makes the plan fail. Heading routes are re-flown whole: their end must lie within the goal tolerance,
@@ -293,7 +292,7 @@ std::vector<TimedPoint> retimePath(const MissionProblem &problem, std::shared_pt
 /// smoothed or refined), solved when a plan was flown (exactly reaching the goal or not: PlannedPath::stints has the
 /// remaining distance). With another planner and a `stints` section, the final path is converted to stints
 /// (stintsFromPath()).
-/// Goals in time (MissionSpec::goalWindow, issue 12; [ThompsonICRA] Sec. III): after any planner, post-processing and
+/// Goals in time (MissionSpec::goalWindow; [ThompsonICRA] Sec. III): after any planner, post-processing and
 /// the ensemble's choice, an arrival before the window is moved into it (a hold at the goal where the glider can hold
 /// there, else a hold at an earlier waypoint or a slower leg, latest first; PlannedPath::holdTime, arrivalTiming); an
 /// arrival after it, or one that cannot be delayed, is no path (solved false, reason says why). The stint conversion

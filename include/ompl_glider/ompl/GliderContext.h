@@ -22,7 +22,7 @@ struct GliderContext
     std::shared_ptr<const TravelTimeCalculator> travel;   ///< travel time of legs (counts CFC); holds V
     std::shared_ptr<const Environment> environment;       ///< forbidden regions; null when there are none
     Region region;                                        ///< x/y bounds, time bounds [t0, t0 + horizon]
-    /// Arrival window at the goal (issue 12, "goals in time", [ThompsonICRA] Sec. III): the goal counts as reached
+    /// Arrival window at the goal ("goals in time", [ThompsonICRA] Sec. III): the goal counts as reached
     /// only at a time in [arriveNotBefore, arriveNotAfter] (absolute times, the field's unit). Unbounded by default.
     double arriveNotBefore{-std::numeric_limits<double>::infinity()};
     double arriveNotAfter{std::numeric_limits<double>::infinity()};

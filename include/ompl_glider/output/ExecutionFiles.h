@@ -1,6 +1,6 @@
 #pragma once
 /// @file ExecutionFiles.h
-/// @brief Files of a mission's execution (issue 13): execution.csv (one row per run and strategy),
+/// @brief Files of a mission's execution: execution.csv (one row per run and strategy),
 /// execution_tracks.csv (the surfacings of the mission's own run, per strategy) and the box plot of the measures
 /// per strategy over the runs (execution.svg / .png, like [ThompsonICRA] Fig. 8).
 

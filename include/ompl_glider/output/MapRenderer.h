@@ -11,7 +11,6 @@
 
 #include "ompl_glider/Geometry.h"
 #include "ompl_glider/current/CurrentField.h"
-#include "ompl_glider/planners/TveSearch.h"
 
 namespace ompl_glider
 {

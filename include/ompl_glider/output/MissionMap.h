@@ -13,7 +13,7 @@ namespace ompl_glider
 /// then refers to @p problem, which must outlive it.
 MapRenderer missionMap(const MissionResult &result, const MissionProblem &problem);
 
-/// @brief The model-difference map of an execution with a truth (issue 13): RMS over the runs' time window of
+/// @brief The model-difference map of an execution with a truth: RMS over the runs' time window of
 /// |c_truth - c_forecast| shaded over the box, the plan, the regions. Requires result.execution.
 MapRenderer modelDifferenceMap(const MissionResult &result, const MissionProblem &problem);
 }  // namespace ompl_glider

@@ -45,7 +45,7 @@ std::string routeGeoJson(const MissionResult &result, const MissionProblem *prob
 
 /// @brief isochrones.geojson: one Feature per isochrone time (MultiLineString, lon/lat where the problem is
 /// geographic, else the planning frame) with properties time (the mission's unit), time_s, time_iso (null without
-/// dates) and since_departure ([ThompsonICRA] Fig. 4; issue 12).
+/// dates) and since_departure ([ThompsonICRA] Fig. 4).
 std::string isochronesGeoJson(const MissionResult &result);
 
 /// @brief The Slocum goto list of the final path, thinned to gotoWaypointIndices() (without the start unless

@@ -1,6 +1,6 @@
 #pragma once
 /// @file IsochronePlanner.h
-/// @brief A heading planner for strong currents ("Isochrone", issue 24): the isochrone method of weather routing on a
+/// @brief A heading planner for strong currents ("Isochrone"): the isochrone method of weather routing on a
 /// heading lattice, then a refinement of the headings by direct shooting (HeadingRefiner.h).
 ///
 /// The search (IsochroneSearch.h) keeps, step by step, the boundary of the cells that held headings reach from the

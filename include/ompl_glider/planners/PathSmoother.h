@@ -12,7 +12,6 @@
 #include <ompl/geometric/PathGeometric.h>
 
 #include "ompl_glider/ompl/GliderContext.h"
-#include "ompl_glider/planners/TveSearch.h"
 
 namespace ompl_glider
 {
@@ -37,7 +36,7 @@ double pathLength(const std::vector<TimedPoint> &waypoints);
 std::size_t lastHoldEnd(const std::vector<TimedPoint> &waypoints);
 
 /// @brief Post-processing of a path that holds position (a lattice wait at a time-windowed zone, a hold for the goal
-/// window; issue 12): @p improve (smoothing or refinement, which fly every leg at full speed from the departure and
+/// window): @p improve (smoothing or refinement, which fly every leg at full speed from the departure and
 /// would drop the holds) is applied only to hold-free pieces, the holds kept: the piece after the last hold (from the
 /// hold's end, its time fixed) or, when the path ends with a hold (at the goal), the part before it, the hold then
 /// lengthened to its old end where the glider can hold from the new arrival (GliderContext::canHold and the

@@ -109,7 +109,7 @@ struct TveOptions
     unsigned windowRounds{1};
     /// Weight w of the heuristic in the queue key d + w h (1 = A*; > 1 = weighted A*, which gives up exactness).
     double heuristicWeight{1.0};
-    /// Holding in the search (issue 12; [ThompsonICRA] Sec. III, hold-position actions; default on): when a leg from
+    /// Holding in the search ([ThompsonICRA] Sec. III, hold-position actions; default on): when a leg from
     /// u is blocked by the environment at u's arrival time d[u] (a time-windowed zone closes the lane, or the end
     /// vertex is closed then) and the glider can hold at u (|c| < V over the hold, GliderContext::canHold), the leg is
     /// also tried departing just after each release time of the environment (Environment::releaseTimes(): the ends of

@@ -1,7 +1,7 @@
 #pragma once
 /// @file LevelSet.h
 /// @brief Reachability by a level-set equation: the set a glider can reach from a start by each time, its first
-/// arrival time everywhere, the time-optimal path by backtracking, and isochrones ([LollaLevelSet], issue 12).
+/// arrival time everywhere, the time-optimal path by backtracking, and isochrones ([LollaLevelSet]).
 
 #include <cstdint>
 #include <functional>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file LevelSetPlanner.h
-/// @brief The level-set solver as an OMPL planner ("LevelSet", issue 12).
+/// @brief The level-set solver as an OMPL planner ("LevelSet").
 
 #include <memory>
 #include <string>
@@ -25,7 +25,7 @@ namespace ompl_glider
 /// close to, not equal to, the front's arrival time getLevelSetTime() (the continuous optimum at this resolution,
 /// with the clearance).
 ///
-/// Where no straight legs can follow the backtracked path (a cross current stronger than the vehicle, issue 24) the
+/// Where no straight legs can follow the backtracked path (a cross current stronger than the vehicle) the
 /// result is a heading route instead (HeadingRouteSource): the steering direction along the path, the direction of
 /// the velocity through the water (dx/dt - c) between backtracked points ([LollaLevelSet]: "a sequence of steering
 /// directions"), refined by direct shooting (HeadingRefiner.h) so that its flight ends at the goal. The returned
@@ -82,7 +82,7 @@ public:
         return last_;
     }
     /// @brief The heading route of the last solve when its backtracked path could not be flown as straight legs
-    /// (issue 24): the steering directions along the backtracked path, refined to end at the goal; null otherwise.
+    /// (in strong currents): the steering directions along the backtracked path, refined to end at the goal; null otherwise.
     const HeadingRoute *lastHeadingRoute() const override
     {
         return headings_.segments.empty() ? nullptr : &headings_;

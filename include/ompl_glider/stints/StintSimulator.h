@@ -22,24 +22,10 @@
 #include "ompl_glider/environment/Environment.h"
 #include "ompl_glider/execution/Dive.h"
 #include "ompl_glider/execution/HeadingRoute.h"
+#include "ompl_glider/stints/StintObjective.h"
 
 namespace ompl_glider
 {
-/// @brief What a stint plan is judged by.
-enum class StintObjective
-{
-    /// Distance to the goal at the end of the mission ([IsernObstacles] Sec. II.A: the Euclidean distance between
-    /// the last surfacing and the target).
-    RemainingDistance,
-    /// Earliest arrival within StintSettings::radius of the goal (the stints end there).
-    EarliestArrival
-};
-
-/// @brief "remaining_distance" / "earliest_arrival".
-std::string stintObjectiveName(StintObjective o);
-/// @brief The objective named @p name ("remaining_distance" / "earliest_arrival"). @throws Error for another name.
-StintObjective parseStintObjective(const std::string &name);
-
 /// @brief Stint settings (times in field units).
 struct StintSettings
 {

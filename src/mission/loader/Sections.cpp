@@ -8,6 +8,7 @@
 #include <set>
 
 #include "MissionReader.h"
+#include "ompl_glider/planners/Sectors.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Time.h"
@@ -339,7 +340,7 @@ void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (w["coarse_grid_size"])
         d.coarseGridSize = r.positive(w["coarse_grid_size"], g + ".coarse_grid_size");
     if (w["coarse_sectors"])
-        d.coarseSectors = static_cast<int>(r.integer(w["coarse_sectors"], g + ".coarse_sectors", 1, 5));
+        d.coarseSectors = static_cast<int>(r.integer(w["coarse_sectors"], g + ".coarse_sectors", kMinSectors, kMaxSectors));
     readThreads(r, w, g, d.threads);
 }
 
@@ -459,7 +460,7 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (n["grid_size"])
         p.gridSize = r.positive(n["grid_size"], f + ".grid_size");
     if (n["sectors"])
-        p.sectors = static_cast<int>(r.integer(n["sectors"], f + ".sectors", 1, 5));
+        p.sectors = static_cast<int>(r.integer(n["sectors"], f + ".sectors", kMinSectors, kMaxSectors));
     if (n["smoothing"])
         p.smoothing = r.boolean(n["smoothing"], f + ".smoothing");
     if (n["refinement"])

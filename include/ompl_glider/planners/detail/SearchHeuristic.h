@@ -1,7 +1,7 @@
 #pragma once
 /// @file detail/SearchHeuristic.h (an internal of the lattice search, installed because TveSearch.h needs it; not API)
 /// @brief A tight admissible and consistent A* heuristic for the lattice search: an optimistic backward search over
-/// the lattice with per-cell, per-direction speed bounds (issue 15), and the per-edge lower bound it is built from.
+/// the lattice with per-cell, per-direction speed bounds, and the per-edge lower bound it is built from.
 
 #include <cstddef>
 #include <cstdint>

@@ -2,7 +2,7 @@
 /// @file detail/VertexPages.h (an internal of the lattice search, installed because TveSearch.h needs it; not API)
 /// @brief Per-vertex values of a lattice search kept in pages of 32 x 32 grid vertices, allocated when a vertex of
 /// the page is first written: O(1) access like a dense array, memory in proportion to the area the search visits
-/// (issue 15: no array over the whole lattice unless it is visited).
+/// (no array over the whole lattice unless it is visited).
 
 #include <cstddef>
 #include <memory>
