@@ -288,7 +288,8 @@ runFleetPy(const MissionSpec &spec, const py::object &progress, const std::strin
                 return;
             try
             {
-                py::handle(callback)(line, done);
+                const py::handle function(callback);
+                function(line, done);
             }
             catch (py::error_already_set &e)
             {

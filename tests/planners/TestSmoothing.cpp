@@ -14,6 +14,7 @@
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
 #include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/planners/TveSearch.h"
 
 using namespace ompl_glider;
 using namespace ompl_glider::test;
