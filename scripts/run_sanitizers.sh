@@ -11,13 +11,13 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
 cd "$root/build-fuzz"
 # Left out here, run in CI's ordinary build (.ci/run: run_tests.sh --all):
-# - the cases labelled ci: the package tests (a second copy of the library built with the system's flags),
-#   StrongCurrentsFine and TrustProperty (minutes of planning each);
+# - the package tests (a second copy of the library built and installed with the system's flags) and the cases
+#   labelled ci, StrongCurrentsFine and TrustProperty (minutes of planning each);
 # - the slow cases listed in tests/ci_only.txt (2 s or more in the ordinary build, or 15 s or more here: planning
 #   runs 10 to 60 times slower under ASan+UBSan at -O1); the same code runs here in the faster cases;
 # - demo.benchmark_ice: OMPL's Benchmark gives every planner a fixed time, which ZA*TVE does not meet sanitized;
 # - badinput.resource_limits: ulimit -v and -t on glider_plan; AddressSanitizer reserves terabytes of address space
 #   for its shadow memory and runs several times slower, so the limits mean something else here;
 # - mission.bundled_files_land, current.glider_plan_pop_land: glider_plan on real model files, minutes each.
-sanitized_out='^(demo\.benchmark_ice|badinput\.resource_limits|mission\.bundled_files_land|current\.glider_plan_pop_land)$'
+sanitized_out='^package\.|^(demo\.benchmark_ice|badinput\.resource_limits|mission\.bundled_files_land|current\.glider_plan_pop_land)$'
 ctest --output-on-failure -j"$(nproc)" -LE ci -E "$(bash "$root/scripts/ci_only_regex.sh")|$sanitized_out" "$@"
