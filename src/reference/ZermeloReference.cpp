@@ -1,4 +1,5 @@
 #include "ompl_glider/reference/ZermeloReference.h"
+#include "../execution/DormandPrince.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,17 +16,7 @@ namespace
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kTwoPi = 6.283185307179586;
 
-// Dormand-Prince RK5(4) tableau.
-constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
-constexpr double a21 = 1.0 / 5;
-constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
-constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
-constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729;
-constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176,
-                 a65 = -5103.0 / 18656;
-constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84;
-constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
-                 e6 = 22.0 / 525, e7 = -1.0 / 40;
+using namespace dormand_prince;  // the tableau (execution/DormandPrince.h)
 
 /// Step-size control after a rejected step (scaled error err > 1, or not finite): shrinks h; false when h became
 /// too small to proceed at time t (a singular field).
@@ -134,16 +125,16 @@ ZermeloReference::Y ZermeloReference::step(double t, const Y &s, const Y &k1, do
         }
         return r;
     };
-    const Y k2 = rhs(t + c2 * h, comb({{a21, &k1}}));
-    const Y k3 = rhs(t + c3 * h, comb({{a31, &k1}, {a32, &k2}}));
-    const Y k4 = rhs(t + c4 * h, comb({{a41, &k1}, {a42, &k2}, {a43, &k3}}));
-    const Y k5 = rhs(t + c5 * h, comb({{a51, &k1}, {a52, &k2}, {a53, &k3}, {a54, &k4}}));
-    const Y k6 = rhs(t + h, comb({{a61, &k1}, {a62, &k2}, {a63, &k3}, {a64, &k4}, {a65, &k5}}));
-    const Y y5 = comb({{b1, &k1}, {b3, &k3}, {b4, &k4}, {b5, &k5}, {b6, &k6}});
+    const Y k2 = rhs(t + kC2 * h, comb({{kA21, &k1}}));
+    const Y k3 = rhs(t + kC3 * h, comb({{kA31, &k1}, {kA32, &k2}}));
+    const Y k4 = rhs(t + kC4 * h, comb({{kA41, &k1}, {kA42, &k2}, {kA43, &k3}}));
+    const Y k5 = rhs(t + kC5 * h, comb({{kA51, &k1}, {kA52, &k2}, {kA53, &k3}, {kA54, &k4}}));
+    const Y k6 = rhs(t + h, comb({{kA61, &k1}, {kA62, &k2}, {kA63, &k3}, {kA64, &k4}, {kA65, &k5}}));
+    const Y y5 = comb({{kB1, &k1}, {kB3, &k3}, {kB4, &k4}, {kB5, &k5}, {kB6, &k6}});
     const Y k7 = rhs(t + h, y5);
-    const double ex = h * (e1 * k1.x + e3 * k3.x + e4 * k4.x + e5 * k5.x + e6 * k6.x + e7 * k7.x);
-    const double ey = h * (e1 * k1.y + e3 * k3.y + e4 * k4.y + e5 * k5.y + e6 * k6.y + e7 * k7.y);
-    const double et = h * (e1 * k1.th + e3 * k3.th + e4 * k4.th + e5 * k5.th + e6 * k6.th + e7 * k7.th);
+    const double ex = h * (kE1 * k1.x + kE3 * k3.x + kE4 * k4.x + kE5 * k5.x + kE6 * k6.x + kE7 * k7.x);
+    const double ey = h * (kE1 * k1.y + kE3 * k3.y + kE4 * k4.y + kE5 * k5.y + kE6 * k6.y + kE7 * k7.y);
+    const double et = h * (kE1 * k1.th + kE3 * k3.th + kE4 * k4.th + kE5 * k5.th + kE6 * k6.th + kE7 * k7.th);
     const double a = params_.absTol;
     const double sx = a + relTol * std::max(std::abs(s.x), std::abs(y5.x));
     const double sy = a + relTol * std::max(std::abs(s.y), std::abs(y5.y));
