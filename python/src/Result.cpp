@@ -192,34 +192,43 @@ py::list polygons(const PyResult &r)
     return out;
 }
 
+/// The progress sink of a run for the Python callback @p progress (none: no sink): called with the GIL held from
+/// whichever thread reports; the first exception it raises is kept in @p raised (guarded by @p guard) and raised
+/// after the run.
+ProgressSink progressSink(const py::object &progress, std::optional<py::error_already_set> &raised, std::mutex &guard)
+{
+    if (progress.is_none())
+        return {};
+    PyObject *callback = progress.ptr();  // kept alive by the caller's reference
+    return [callback, &raised, &guard](const std::string &line, bool done) {
+        const py::gil_scoped_acquire gil;
+        const std::lock_guard<std::mutex> lock(guard);
+        if (raised)
+            return;
+        try
+        {
+            const py::handle function(callback);
+            function(line, done);
+        }
+        catch (py::error_already_set &e)
+        {
+            raised = std::move(e);
+        }
+    };
+}
+
 /// runMission() on @p spec, the GIL released; progress lines go to @p progress (called with the GIL held; an
 /// exception it raises is raised after the run). Bad input is raised as Error with glider_plan's message.
 std::shared_ptr<PyResult> run(const MissionSpec &spec, const py::object &progress,
                               std::optional<std::vector<double>> speeds, bool optimum)
 {
     auto out = std::make_shared<PyResult>();
-    PyObject *callback = progress.is_none() ? nullptr : progress.ptr();  // kept alive by the caller's reference
     std::optional<py::error_already_set> raised;
     std::mutex guard;
     RunOptions options;
     options.speeds = std::move(speeds);
     options.optimum = optimum;
-    if (callback)
-        options.progress = [callback, &raised, &guard](const std::string &line, bool done) {
-            const py::gil_scoped_acquire gil;
-            const std::lock_guard<std::mutex> lock(guard);
-            if (raised)
-                return;
-            try
-            {
-                const py::handle function(callback);
-                function(line, done);
-            }
-            catch (py::error_already_set &e)
-            {
-                raised = std::move(e);
-            }
-        };
+    options.progress = progressSink(progress, raised, guard);
     // the plan runs in a thread of its own while this one, every 50 ms, lets Python handle its signals: Ctrl-C
     // (KeyboardInterrupt, raised by Python's handler on the main thread) asks the plans to stop (StopRequest.h), and
     // is raised here once the plan has returned, within a moment instead of when the plan would have finished
@@ -276,26 +285,10 @@ std::shared_ptr<PyResult> run(const MissionSpec &spec, const py::object &progres
 std::pair<std::vector<std::pair<std::string, std::shared_ptr<PyResult>>>, std::vector<std::string>>
 runFleetPy(const MissionSpec &spec, const py::object &progress, const std::string &directory)
 {
-    PyObject *callback = progress.is_none() ? nullptr : progress.ptr();
     std::optional<py::error_already_set> raised;
     std::mutex guard;
     RunOptions options;
-    if (callback)
-        options.progress = [callback, &raised, &guard](const std::string &line, bool done) {
-            const py::gil_scoped_acquire gil;
-            const std::lock_guard<std::mutex> lock(guard);
-            if (raised)
-                return;
-            try
-            {
-                const py::handle function(callback);
-                function(line, done);
-            }
-            catch (py::error_already_set &e)
-            {
-                raised = std::move(e);
-            }
-        };
+    options.progress = progressSink(progress, raised, guard);
     std::map<std::string, std::shared_ptr<PyResult>> byName;
     std::vector<FleetGlider> gliders;
     std::vector<std::string> written;

@@ -45,6 +45,32 @@ double ringArea(const std::vector<LonLat> &r)
     return std::abs(0.5 * a);
 }
 
+/// How many of @p land's outer rings hold (lon, lat) (each land point should be in exactly one).
+int polygonsHolding(const std::vector<LandPolygon> &land, double lon, double lat)
+{
+    int n = 0;
+    for (const LandPolygon &p : land)
+        n += inside(p.outer, lon, lat);
+    return n;
+}
+
+/// Every ~200 m of the path's legs lies outside @p ring (lon/lat, the independent point-in-polygon above).
+void expectPathOutside(const MissionProblem &problem, const std::vector<TimedPoint> &path,
+                       const std::vector<LonLat> &ring)
+{
+    for (std::size_t k = 0; k + 1 < path.size(); ++k)
+    {
+        const TimedPoint &a = path[k], &b = path[k + 1];
+        const int n = std::max(2, int(std::hypot(b.x - a.x, b.y - a.y) / 200.0));
+        for (int q = 0; q <= n; ++q)
+        {
+            const double f = double(q) / n;
+            const LonLat g = problem.toGeographic({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)});
+            ASSERT_FALSE(inside(ring, g.lon, g.lat)) << "leg " << k << " at " << g.lon << ", " << g.lat;
+        }
+    }
+}
+
 /// Writes the polygons to a GDAL vector file of the given driver, in the given EPSG code.
 void writeWithGdal(const std::string &path, const char *driver, int epsg, const std::vector<LandPolygon> &land,
                    bool asLines = false)
@@ -229,17 +255,7 @@ TEST(Coastline, RouteGoesAroundJamaicaAndAStartOnItIsBadInput)
     EXPECT_GT(r.plan.travelTime, rb.plan.travelTime);
     // every ~200 m of the route lies outside the island (independent point-in-polygon on lon/lat)
     const auto land = readLandPolygons(kJamaica, -80, 16, -75, 20);
-    for (std::size_t k = 0; k + 1 < r.plan.path.size(); ++k)
-    {
-        const TimedPoint &a = r.plan.path[k], &b = r.plan.path[k + 1];
-        const int n = std::max(2, int(std::hypot(b.x - a.x, b.y - a.y) / 200.0));
-        for (int q = 0; q <= n; ++q)
-        {
-            const double s = double(q) / n;
-            const LonLat g = problem.toGeographic({a.x + s * (b.x - a.x), a.y + s * (b.y - a.y)});
-            ASSERT_FALSE(inside(land[0].outer, g.lon, g.lat)) << "leg " << k << " at " << g.lon << ", " << g.lat;
-        }
-    }
+    expectPathOutside(problem, r.plan.path, land[0].outer);
     // a start on the island is bad input
     MissionSpec onLand = spec;
     onLand.start.lonLat.lon = onLand.start.xy.x = -77.3;
@@ -311,14 +327,8 @@ TEST(Coastline, AnInvalidPolygonIsRepairedAndTheRepairIsReported)
     EXPECT_NE(repairs[0].find("-77"), std::string::npos) << repairs[0];  // where, in lon/lat
     // both triangles are land after the repair
     ASSERT_EQ(land.size(), 2u);
-    int west = 0, east = 0;
-    for (const LandPolygon &p : land)
-    {
-        west += inside(p.outer, -77.4, 18.2);
-        east += inside(p.outer, -76.6, 18.2);
-    }
-    EXPECT_EQ(west, 1);
-    EXPECT_EQ(east, 1);
+    EXPECT_EQ(polygonsHolding(land, -77.4, 18.2), 1);  // west
+    EXPECT_EQ(polygonsHolding(land, -76.6, 18.2), 1);  // east
 }
 
 TEST(Coastline, ShorelinesInAGeometryCollectionAreLandOrRefusedNeverDropped)
@@ -341,14 +351,8 @@ TEST(Coastline, ShorelinesInAGeometryCollectionAreLandOrRefusedNeverDropped)
                       R"([-79,16.5]]]}]})");
     const auto land = readLandPolygons(coast, -80, 16, -75, 20);
     ASSERT_EQ(land.size(), 2u);
-    int onJamaica = 0, onSquare = 0;
-    for (const LandPolygon &p : land)
-    {
-        onJamaica += inside(p.outer, -77.3, 18.1);
-        onSquare += inside(p.outer, -78.9, 16.6);
-    }
-    EXPECT_EQ(onJamaica, 1);
-    EXPECT_EQ(onSquare, 1);
+    EXPECT_EQ(polygonsHolding(land, -77.3, 18.1), 1);  // Jamaica, from the closed line
+    EXPECT_EQ(polygonsHolding(land, -78.9, 16.6), 1);  // the square
     // the route from west to east of the island goes around it: every ~200 m outside the GSHHG ring
     const std::string nc = dir.file("caribbean.nc");
     writeCaribbean(nc);
@@ -363,17 +367,7 @@ TEST(Coastline, ShorelinesInAGeometryCollectionAreLandOrRefusedNeverDropped)
     const MissionResult r = runMission(problem);
     ASSERT_TRUE(r.plan.solved) << r.plan.status << " " << r.plan.reason;
     EXPECT_TRUE(std::isinf(r.plan.straightLineTime));
-    for (std::size_t k = 0; k + 1 < r.plan.path.size(); ++k)
-    {
-        const TimedPoint &a = r.plan.path[k], &b = r.plan.path[k + 1];
-        const int n = std::max(2, int(std::hypot(b.x - a.x, b.y - a.y) / 200.0));
-        for (int q = 0; q <= n; ++q)
-        {
-            const double f = double(q) / n;
-            const LonLat g = problem.toGeographic({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)});
-            ASSERT_FALSE(inside(jamaica[0].outer, g.lon, g.lat)) << "leg " << k << " at " << g.lon << ", " << g.lat;
-        }
-    }
+    expectPathOutside(problem, r.plan.path, jamaica[0].outer);
     // an open line or a point in a collection is refused, naming the feature and the member
     for (const auto &[member, phrase] : std::vector<std::pair<std::string, std::string>>{
              {R"({"type":"LineString","coordinates":[[-77,18],[-76,18.5],[-75.5,18]]})", "open line from lon -77"},
