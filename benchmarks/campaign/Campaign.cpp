@@ -50,6 +50,7 @@
 #include <ompl/util/Console.h>
 #include <ompl/util/RandomNumbers.h>
 
+#include "ompl_glider/ompl/PipelinePlanner.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/environment/ForbiddenRegions.h"
 #include "ompl_glider/environment/IceZone.h"
@@ -319,13 +320,13 @@ void recordGeometricRun(const ob::PlannerPtr &planner, ot::Benchmark::RunPropert
     const auto *last = path->getStates().back()->as<TimeSE2StateSpace::StateType>();
     const bool atGoal = std::hypot(last->getX() - pr.goal.x, last->getY() - pr.goal.y) <= pr.goalTolerance;
     PathResimulation r = resimulatePath(ctx, *path, pr.t0);
-    if (const auto *source = dynamic_cast<const HeadingRouteSource *>(planner.get()); source && source->lastHeadingRoute())
+    if (const HeadingRoute *route = pipelineView(*planner).lastHeadingRoute())
     {
         // a route of held headings (Isochrone, LevelSet in strong currents): re-flown as headings, accurately
         ReflightSettings rs;
         rs.speed = ctx.speed();
         rs.depth = ctx.travel->params().depth;
-        const HeadingReflight f = reflyHeadingRoute(*source->lastHeadingRoute(), *ctx.field, ctx.environment.get(), rs);
+        const HeadingReflight f = reflyHeadingRoute(*route, *ctx.field, ctx.environment.get(), rs);
         r.finite = f.ok && !f.grounded;
         r.valid = r.finite && std::hypot(f.end.x - pr.goal.x, f.end.y - pr.goal.y) <= pr.goalTolerance;
         r.travelTime = f.end.t - pr.t0;

@@ -8,6 +8,13 @@
 
 namespace ompl_glider
 {
+// The work a planner parameter controls, refused before the search with the estimate (PipelinePlanner::prepare())
+inline constexpr double kMaxLevelSetSteps = 1e6;   ///< level-set time steps over the planning window
+inline constexpr double kMaxLevelSetWork = 2e11;   ///< level-set grid nodes x time steps
+inline constexpr double kMaxWavefrontNodes = 1e7;  ///< Wavefront space-time nodes before the fastest arrival
+inline constexpr double kMaxStintBearings = 360;   ///< CTS-A* bearings per expansion (1 degree)
+inline constexpr double kMaxStintFlights = 7.2e7;  ///< CTS-A* bearings x its expansion cap
+
 /// @brief The memory limit in bytes: the environment variable OMPL_GLIDER_MEMORY_LIMIT (bytes, or a number with
 /// the suffix K, M, G or T, powers of 1024) when set, else half of the physical memory, and never more than three
 /// quarters of the address-space limit (ulimit -v) when one is set.

@@ -17,6 +17,16 @@ inline std::string number(double v, int digits = 10)
     return buf;
 }
 
+/// @brief printf's formatting of up to five numbers into a message ("%.3g time steps of %.3g"): estimates and
+/// limits quoted with the precision the message chooses.
+inline std::string formatted(const char *fmt, double a, double b = 0.0, double c = 0.0, double d = 0.0,
+                             double e = 0.0)
+{
+    char buf[512];
+    std::snprintf(buf, sizeof buf, fmt, a, b, c, d, e);
+    return buf;
+}
+
 /// @brief A number for a CSV cell: empty for NaN or an infinity (no value), else number(v, 10).
 inline std::string csvNumber(double v)
 {

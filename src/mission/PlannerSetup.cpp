@@ -1,21 +1,21 @@
 /// @file PlannerSetup.cpp
 /// @brief The planner of the mission and the problem of one departure: makePlanner() (the one place where the
-/// pipeline's grid size, sectors and stint settings reach the planner types), the mission's planner parameters set
-/// through OMPL's ParamSet, the checked problem of a departure, the lattice size check, and stintSettings().
+/// pipeline's grid size, sectors and stint settings reach a planner: OMPL's ParamSet, then PipelinePlanner::prepare(),
+/// which refuses the work a planner cannot do), the mission's planner parameters, the checked problem of a departure,
+/// and stintSettings().
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 
 #include "../io/NumberText.h"
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ResourceLimits.h"
-#include "ompl_glider/planners/detail/Lattice.h"
-#include "ompl_glider/planners/Wavefront.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
-#include "ompl_glider/stints/StintPlanner.h"
+#include "ompl_glider/ompl/PipelinePlanner.h"
 
 namespace ompl_glider
 {
@@ -131,18 +131,11 @@ RefinerParams refinerParams(const MissionSpec &m)
 /// The configured planner of the mission on the setup's space information.
 ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::base::SpaceInformationPtr &si,
                                    const std::shared_ptr<const GliderContext> &ctx, double grid, int sectors,
-                                   double departure, const std::string &other)
+                                   double departure, const std::string &other, const std::string &gridField)
 {
     const MissionSpec &m = problem.getSpec();
     const PlannerEntry &entry = plannerEntry(other.empty() ? m.planner.name : other);
     ompl::base::PlannerPtr planner = entry.make(si, ctx);
-    if (auto st = std::dynamic_pointer_cast<StintPlanner>(planner))
-    {
-        if (!m.stints.set)
-            throw Error(m.place("planner.name") + ": planner '" + entry.name +
-                        "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
-        st->setStintSettings(stintSettings(problem, departure));
-    }
     // The lattice planners (LatticePlanner) declare grid_size and sectors, ZAStarTVE also smooth and refine: set by
     // name through OMPL's ParamSet. The pipeline smooths and refines every planner's path alike, so the planner's own
     // smoothing and refinement are off.
@@ -158,21 +151,29 @@ ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::ba
                         " = " + value);
     if (other.empty())
         applyParameters(m, *planner);
-    if (auto w = std::dynamic_pointer_cast<Wavefront>(planner))
-    {
-        // the interval count its search would refuse, named here by the field that set the interval
-        const double intervals = (ctx->region.tMax - departure) / w->effectiveTimeStep();
-        if (!(intervals <= Wavefront::kMaxIntervals))
-        {
-            const bool given = m.planner.parameters.count("time_step") > 0;
-            char text[160];
-            std::snprintf(text, sizeof text, ": %.4g time intervals of %g over the planning window (at most %g)",
-                          intervals, w->effectiveTimeStep(), Wavefront::kMaxIntervals);
-            throw Error((given ? parameterPlace(m, "time_step") : m.place("planner.grid_size")) + text +
-                        ": use a larger time_step");
-        }
-    }
-    checkPlannerWork(problem, *ctx, *planner, departure);
+    // what the planner itself needs to know and refuses (PipelinePlanner::prepare()), its messages naming the
+    // mission's fields: planner.grid_size is the coarse search's field when the departure search runs one
+    const std::optional<StintSettings> stints =
+        m.stints.set ? std::optional<StintSettings>(stintSettings(problem, departure)) : std::nullopt;
+    PipelineSetup setup;
+    setup.departure = departure;
+    setup.start = problem.getStart();
+    setup.goal = problem.getGoal();
+    setup.region = ctx->region;
+    setup.stints = stints ? &*stints : nullptr;
+    setup.place = [&m, &gridField](const std::string &field) {
+        const std::string prefix = "planner.parameters.";
+        if (field.rfind(prefix, 0) == 0)
+            return parameterPlace(m, field.substr(prefix.size()));
+        return m.place(field == "planner.grid_size" ? gridField : field);
+    };
+    setup.given = [&m, other](const std::string &field) {
+        const std::string prefix = "planner.parameters.";
+        if (field.rfind(prefix, 0) == 0)
+            return other.empty() && m.planner.parameters.count(field.substr(prefix.size())) > 0;
+        return m.marks.count(field) > 0;
+    };
+    pipelineView(*planner).prepare(setup);
     return planner;
 }
 
@@ -185,20 +186,6 @@ GliderProblem checkedProblem(const MissionProblem &problem, double departure, do
     return gp;
 }
 
-/// The lattice planners keep dense arrays over the whole lattice (a travel time and a predecessor per vertex,
-/// TveSearch): refuse, naming the field or flag, a spacing whose lattice would not fit in memory.
-void checkLatticeSize(const MissionSpec &m, const GliderProblem &gp, double grid, const std::string &field)
-{
-    const double nx = std::floor((gp.xMax - gp.xMin) / grid + 1e-9) + 1.0;
-    const double ny = std::floor((gp.yMax - gp.yMin) / grid + 1e-9) + 1.0;
-    char what[160];
-    std::snprintf(what, sizeof what, ": a lattice spacing of %g gives %.0f x %.0f = %.3g vertices, which", grid, nx,
-                  ny, nx * ny);
-    if (nx * ny > 2147483648.0)
-        throw Error(m.place(field) + what + " is more than the 2^31 a lattice can hold: use a larger spacing");
-    checkMemory(nx * ny * static_cast<double>(sizeof(double) + sizeof(Lattice::VertexId)), m.place(field) + what,
-                "use a larger spacing");
-}
 }  // namespace planning_detail
 
 StintSettings stintSettings(const MissionProblem &problem, double departure)

@@ -17,10 +17,9 @@
 #include "ompl_glider/StopRequest.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
-#include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/stints/PathToStints.h"
-#include "ompl_glider/stints/StintPlanner.h"
+#include "ompl_glider/ompl/PipelinePlanner.h"
 
 namespace ompl_glider
 {
@@ -142,8 +141,6 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     const Point2 s = problem.getStart(), g = problem.getGoal();
     r.straightLineLength = std::hypot(g.x - s.x, g.y - s.y);
     const GliderProblem gp = checkedProblem(problem, departure, r.speed);
-    if (entry.lattice() && grid > 0)
-        checkLatticeSize(m, gp, grid, o.gridSize > 0 ? "departure.window.coarse_grid_size" : "planner.grid_size");
     if (!(gp.horizon > 0))
     {
         r.status = "Invalid start";
@@ -169,9 +166,11 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
             return r;
         }
     std::shared_ptr<GliderContext> ctx;
-    const ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(gp, &ctx);
-    const ompl::base::PlannerPtr planner = makePlanner(problem, ss->getSpaceInformation(), ctx, grid, sectors, departure,
-                                                         o.planner);
+    const std::shared_ptr<GliderSimpleSetup> ss = makeSimpleSetup(gp, &ctx);
+    const ompl::base::PlannerPtr planner =
+        makePlanner(problem, ss->getSpaceInformation(), ctx, grid, sectors, departure, o.planner,
+                    o.gridSize > 0 ? "departure.window.coarse_grid_size" : "planner.grid_size");
+    const PipelinePlanner &answers = pipelineView(*planner);
     ss->setPlanner(planner);
     r.straightLineTime = legTravelTime(*ctx, s.x, s.y, g.x, g.y, departure);
 
@@ -188,14 +187,13 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     r.status = status.asString();
     r.searchCostFunctionCalls = ctx->travel->costFunctionCalls() - cfc0;
     r.currentModelCalls = ctx->field->callCount() - cmc0;
-    if (auto z = std::dynamic_pointer_cast<ZAStarTVE>(planner))
-        r.expandedVertices = z->getExpandedVertices();
-    if (auto st = std::dynamic_pointer_cast<StintPlanner>(planner))
-        if (ss->haveSolutionPath() && !st->lastPlan().surfacings.empty())
+    r.expandedVertices = answers.expandedVertices();
+    if (const StintPlan *plan = answers.lastStintPlan())
+        if (ss->haveSolutionPath())
         {
             // a stint plan is flown, not smoothed: its surfacings are the path
             StintOutcome o;
-            o.plan = st->lastPlan();
+            o.plan = *plan;
             o.duration = m.stints.duration;
             o.missionDuration = m.stints.missionDuration;
             o.objective = m.stints.objective;
@@ -209,10 +207,10 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
             return r;
         }
     r.solved = ss->haveExactSolutionPath();
-    if (const auto *source = dynamic_cast<const HeadingRouteSource *>(planner.get()))
-        if (r.solved && source->lastHeadingRoute())
+    if (const HeadingRoute *route = answers.lastHeadingRoute())
+        if (r.solved)
         {
-            r = headingResult(problem, *ctx, *source->lastHeadingRoute(), std::move(r));
+            r = headingResult(problem, *ctx, *route, std::move(r));
             reflyRoute(problem, *ctx, r);
             return r;
         }
@@ -224,7 +222,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     }
     if (!r.solved)
     {
-        r.reason = noPathReason(status, *planner, dynamic_cast<const GliderSimpleSetup *>(ss.get()), limit);
+        r.reason = noPathReason(status, *planner, *ss, limit);
         if (status == ompl::base::PlannerStatus::INVALID_START || status == ompl::base::PlannerStatus::INVALID_GOAL)
         {
             const bool start = status == ompl::base::PlannerStatus::INVALID_START;

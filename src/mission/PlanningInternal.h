@@ -6,7 +6,7 @@
 ///  - Planning.cpp       planRoute() and runMission(): one plan on a field (planOnField()), the departure, the checks
 ///                       made before any search, departureFunction()
 ///  - PlannerSetup.cpp   the planner of the mission (makePlanner()), its parameters, the checked problem of one
-///                       departure, the lattice size check, stintSettings()
+///                       departure, stintSettings()
 ///  - NoPathReason.cpp   why a search ended without a path (noPathReason(), horizonNote())
 ///  - NoPathDiagnosis.cpp what blocks the route, for the pilot (diagnoseNoPath())
 ///  - Ensembles.cpp      robust plans over the members of an ensemble (planRobust()), ensembleObjective(),
@@ -60,33 +60,23 @@ std::string parameterPlace(const MissionSpec &m, const std::string &name);
 /// @throws Error naming the parameter when its value is not an integer in 1..100000000.
 RefinerParams refinerParams(const MissionSpec &m);
 
-/// The configured planner of the mission on the setup's space information.
+/// The configured planner of the mission on the setup's space information (@p other: another planner of the
+/// registry in place of the mission's, without its parameters): its parameters set, then prepared
+/// (PipelinePlanner::prepare()), which refuses work beyond the limits naming the field; @p gridField is the field
+/// that gave @p grid.
 ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::base::SpaceInformationPtr &si,
                                    const std::shared_ptr<const GliderContext> &ctx, double grid, int sectors,
-                                   double departure, const std::string &other = "");
+                                   double departure, const std::string &other = "",
+                                   const std::string &gridField = "planner.grid_size");
 
 /// The problem of one departure, its departure time checked first so that the error names where it was given.
 GliderProblem checkedProblem(const MissionProblem &problem, double departure, double speed);
 
-/// The lattice planners keep dense arrays over the whole lattice (a travel time and a predecessor per vertex,
-/// TveSearch): refuse, naming the field or flag, a spacing whose lattice would not fit in memory.
-void checkLatticeSize(const MissionSpec &m, const GliderProblem &gp, double grid, const std::string &field);
-
 // WorkEstimates.cpp: the limits of the work a parameter controls (refused up front, with the estimate)
 
-inline constexpr double kMaxLevelSetSteps = 1e6;        ///< level-set time steps over the planning window
-inline constexpr double kMaxLevelSetWork = 2e11;        ///< level-set grid nodes x time steps
-inline constexpr double kMaxWavefrontNodes = 1e7;       ///< Wavefront space-time nodes before the fastest arrival
-inline constexpr double kMaxStintBearings = 360;        ///< CTS-A* bearings per expansion (1 degree)
-inline constexpr double kMaxStintFlights = 7.2e7;       ///< CTS-A* bearings x its expansion cap
 inline constexpr double kMaxSurfacingsPerFlight = 1e5;  ///< surfacings of one flown execution
 inline constexpr double kMaxSurfacings = 2e7;           ///< surfacings of all runs and strategies of an execution
 inline constexpr std::size_t kMaxIsochrones = 1000;     ///< isochrones of the isochrone output
-
-/// Refuses, naming the field with the estimate and the limit, a planner whose parameters make its work explode
-/// (LevelSet, Wavefront, the stint planners); called by makePlanner() once the parameters are set.
-void checkPlannerWork(const MissionProblem &problem, const GliderContext &ctx, const ompl::base::Planner &planner,
-                      double departure);
 
 /// Refuses an execution whose surfacing interval gives too many surfacings over @p window per flight, or in all.
 void checkExecutionWork(const MissionSpec &m, double interval, double window, std::size_t runs,
@@ -94,9 +84,10 @@ void checkExecutionWork(const MissionSpec &m, double interval, double window, st
 
 // NoPathReason.cpp
 
-/// Why a search ended without an exact path: the setup's own check, the planner's outcome, or OMPL's status.
+/// Why a search ended without an exact path: the setup's own check, the planner's own words
+/// (PipelinePlanner::noPathReason()), or OMPL's status.
 std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::Planner &planner,
-                         const GliderSimpleSetup *setup, double timeLimit);
+                         const GliderSimpleSetup &setup, double timeLimit);
 
 /// What bounds the arrival of an exhausted search: the end of the forecast or the planning horizon.
 std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp);
@@ -141,7 +132,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
 
 // HeadingRoutes.cpp
 
-/// The result of a planner that returned a heading route (HeadingRouteSource): the route flown once more by the one
+/// The result of a planner that returned a heading route (PipelinePlanner::lastHeadingRoute()): the route flown once more by the one
 /// integrator at a fine step, its segment ends as the path, its track kept; no smoothing or waypoint refinement.
 PlannedPath headingResult(const MissionProblem &problem, const GliderContext &ctx, const HeadingRoute &route,
                           PlannedPath r);

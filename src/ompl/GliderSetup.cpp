@@ -195,7 +195,7 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &p)
     return ctx;
 }
 
-og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<GliderContext> *ctxOut)
+std::shared_ptr<GliderSimpleSetup> makeSimpleSetup(const GliderProblem &p, std::shared_ptr<GliderContext> *ctxOut)
 {
     auto ctx = makeGliderContext(p);
     if (ctxOut)
@@ -203,7 +203,7 @@ og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<Glide
     return makeSimpleSetup(p, ctx);
 }
 
-og::SimpleSetupPtr makeSimpleSetup(const GliderProblem &p, std::shared_ptr<GliderContext> ctx)
+std::shared_ptr<GliderSimpleSetup> makeSimpleSetup(const GliderProblem &p, std::shared_ptr<GliderContext> ctx)
 {
     if (!ctx)
         throw Error("makeSimpleSetup: the GliderContext is null");

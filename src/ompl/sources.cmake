@@ -8,4 +8,5 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/GliderSetup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PathResimulation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/GliderStateSampler.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/PipelinePlanner.cpp
 )

@@ -5,9 +5,27 @@
 #include <utility>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/ResourceLimits.h"
+#include "ompl_glider/planners/detail/Lattice.h"
+#include "../io/NumberText.h"
 
 namespace ompl_glider
 {
+void LatticePlanner::prepare(const PipelineSetup &setup)
+{
+    const Region &r = setup.region;
+    const double grid = gridSize_;
+    const double nx = std::floor((r.xMax - r.xMin) / grid + 1e-9) + 1.0;
+    const double ny = std::floor((r.yMax - r.yMin) / grid + 1e-9) + 1.0;
+    const std::string what =
+        setup.place("planner.grid_size") +
+        text::formatted(": a lattice spacing of %g gives %.0f x %.0f = %.3g vertices, which", grid, nx, ny, nx * ny);
+    if (nx * ny > 2147483648.0)
+        throw Error(what + " is more than the 2^31 a lattice can hold: use a larger spacing");
+    checkMemory(nx * ny * static_cast<double>(sizeof(double) + sizeof(Lattice::VertexId)), what,
+                "use a larger spacing");
+}
+
 LatticePlanner::LatticePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name,
                                std::string className)
   : ompl::base::Planner(si, name), className_(std::move(className))

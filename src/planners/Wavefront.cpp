@@ -1,5 +1,6 @@
 #include "ompl_glider/planners/Wavefront.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -19,6 +20,8 @@
 #include "ompl_glider/planners/detail/Lattice.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "SearchSetting.h"
+#include "ompl_glider/ResourceLimits.h"
+#include "../io/NumberText.h"
 
 namespace ompl_glider
 {
@@ -111,6 +114,57 @@ void Wavefront::setTimeStep(double dt)
         throw Error("Wavefront: time_step must be a finite number >= 0 (0 = grid_size / V; got " +
                     std::to_string(dt) + ")");
     timeStep_ = dt;
+}
+
+void Wavefront::prepare(const PipelineSetup &setup)
+{
+    LatticePlanner::prepare(setup);
+    const Region &r = setup.region;
+    const std::string where = setup.placeOfFirstGiven({"planner.parameters.time_step"}, "planner.grid_size");
+    const double dt = effectiveTimeStep();
+    const double window = (r.tMax - setup.departure) / dt;
+    if (!(window <= kMaxIntervals))
+        throw Error(where + text::formatted(": %.4g time intervals of %g over the planning window (at most %g)",
+                                            window, dt, kMaxIntervals) +
+                    ": use a larger time_step");
+    const double vertices =
+        (std::floor((r.xMax - r.xMin) / getGridSize() + 1e-9) + 1.0) *
+        (std::floor((r.yMax - r.yMin) / getGridSize() + 1e-9) + 1.0);
+    const double tEnd = std::min(r.tMax, ctx_->arriveNotAfter);
+    const double intervals = std::floor(std::max(tEnd - setup.departure, 0.0) / dt) + 1.0;
+    // the search ends no earlier than the fastest conceivable arrival: every vertex reachable by then holds into
+    // each interval up to it
+    const double fastest = std::hypot(setup.goal.x - setup.start.x, setup.goal.y - setup.start.y) /
+                           (ctx_->speed() + std::max(ctx_->maxCurrent(), 0.0));
+    const double least = vertices * std::min(intervals, std::max(1.0, fastest / dt));
+    if (least <= kMaxWavefrontNodes)
+        return;
+    throw Error(where +
+                text::formatted(": the Wavefront search settles %.3g lattice vertices in each of its time intervals "
+                                "of %g (at least %.3g space-time nodes before the fastest conceivable arrival, %.3g in "
+                                "the window)",
+                                vertices, dt, least, vertices * intervals) +
+                text::formatted(", more than the limit of %.3g: use a larger planner.grid_size or time_step",
+                                kMaxWavefrontNodes));
+}
+
+std::string Wavefront::noPathReason(const ompl::base::PlannerStatus &, double timeLimit) const
+{
+    switch (outcome_)
+    {
+        case WavefrontOutcome::InvalidStart:
+            return "invalid start: " + message_;
+        case WavefrontOutcome::InvalidGoal:
+            return "invalid goal: " + message_;
+        case WavefrontOutcome::Exhausted:
+            return "no path exists on this lattice: " + message_;
+        case WavefrontOutcome::BadWindow:
+            return message_;
+        case WavefrontOutcome::Terminated:
+            return "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
+        default:
+            return {};
+    }
 }
 
 double Wavefront::effectiveTimeStep() const

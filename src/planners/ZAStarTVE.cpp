@@ -16,9 +16,28 @@
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/planners/PathSmoother.h"
 #include "ompl_glider/planners/WaypointRefiner.h"
+#include "../io/NumberText.h"
 
 namespace ompl_glider
 {
+std::string ZAStarTVE::noPathReason(const ompl::base::PlannerStatus &, double timeLimit) const
+{
+    switch (last_.outcome)
+    {
+        case TveOutcome::InvalidStart:
+            return "invalid start: " + last_.message;
+        case TveOutcome::InvalidGoal:
+            return "invalid goal: " + last_.message;
+        case TveOutcome::Exhausted:
+            return "no path exists on this lattice (" + std::to_string(last_.expansions) +
+                   " vertices expanded; a finer grid, more sectors or a higher speed may find one)";
+        case TveOutcome::Terminated:
+            return "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
+        default:
+            return {};
+    }
+}
+
 namespace
 {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;

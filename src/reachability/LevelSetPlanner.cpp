@@ -10,6 +10,7 @@
 #include <ompl/util/Console.h>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/ResourceLimits.h"
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/execution/Reflight.h"
@@ -127,6 +128,47 @@ RefinedHeadings levelSetHeadings(const GliderContext &ctx, const std::vector<Tim
     return refined;
 }
 }  // namespace
+
+void LevelSetPlanner::prepare(const PipelineSetup &setup)
+{
+    const Region &r = setup.region;
+    const double h = resolution_ > 0.0 ? resolution_ : defaultLevelSetResolution(*ctx_);
+    const double nodes =
+        (std::floor((r.xMax - r.xMin) / h + 1e-9) + 1.0) * (std::floor((r.yMax - r.yMin) / h + 1e-9) + 1.0);
+    const double dt = params_.cfl * h / (ctx_->speed() + std::max(ctx_->maxCurrent(), 0.0));
+    const double tEnd = std::min(r.tMax, ctx_->field->timeEnd());
+    const double steps = std::isfinite(tEnd) ? std::ceil(std::max(tEnd - setup.departure, 0.0) / dt)
+                                             : std::numeric_limits<double>::infinity();
+    const double work = nodes * steps;
+    if (steps <= kMaxLevelSetSteps && work <= kMaxLevelSetWork)
+        return;
+    // too many steps: the window is at fault first; too much work: the resolution
+    const std::string where =
+        !(steps <= kMaxLevelSetSteps) && setup.given && setup.given("planner.horizon")
+            ? setup.place("planner.horizon")
+            : setup.placeOfFirstGiven({"planner.parameters.resolution", "planner.parameters.cfl", "planner.horizon"},
+                                      "planner.name");
+    throw Error(where +
+                text::formatted(": the level set would take up to %.3g time steps of %.3g over the planning window "
+                                "of %.4g, on %.4g grid nodes (%.3g node updates)",
+                                steps, dt, tEnd - setup.departure, nodes, work) +
+                text::formatted(", more than the limit of %.3g steps and %.3g node updates: use a coarser "
+                                "resolution, a larger cfl or a shorter planner.horizon",
+                                kMaxLevelSetSteps, kMaxLevelSetWork));
+}
+
+std::string LevelSetPlanner::noPathReason(const ompl::base::PlannerStatus &status, double) const
+{
+    if (status != ompl::base::PlannerStatus::ABORT)
+        return {};
+    if (last_.goalReached)
+        return reason_;
+    if (last_.goalWalledOff)
+        return "the reachable front never reaches the goal: no water links it to the start (land or forbidden "
+               "regions wall it in; a flood fill of the level set's grid, before any step)";
+    return "the reachable front never reaches the goal within the time window (the current carries the glider off "
+           "faster than it makes way, or land, forbidden regions or a closure wall it in)";
+}
 
 double defaultLevelSetResolution(const GliderContext &ctx)
 {

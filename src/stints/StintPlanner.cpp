@@ -1,11 +1,14 @@
 // The stint planners as one OMPL planner; see StintPlanner.h.
 #include "ompl_glider/stints/StintPlanner.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <ompl/geometric/PathGeometric.h>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/ResourceLimits.h"
+#include "../io/NumberText.h"
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/stints/BearingOptimizer.h"
@@ -45,6 +48,28 @@ StintPlanner::StintPlanner(const ompl::base::SpaceInformationPtr &si, std::share
                            &StintPlanner::getMaxEvaluations, "1:100:100000000");
     addPlannerProgressProperty("remaining distance REAL",
                                [this] { return std::to_string(plan_.remainingDistance); });
+}
+
+void StintPlanner::prepare(const PipelineSetup &setup)
+{
+    if (!setup.stints)
+        throw Error(setup.place("planner.name") + ": planner '" + getName() +
+                    "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
+    setStintSettings(*setup.stints);
+    if (method_ != StintMethod::CtsAStar && method_ != StintMethod::InitOptim)
+        return;  // only CTS-A* flies a rose of bearings
+    const double rose = std::max(1.0, std::round(360.0 / settings_.bearingStep));
+    const double flights = rose * static_cast<double>(maxExpansions_);
+    if (rose <= kMaxStintBearings && flights <= kMaxStintFlights)
+        return;
+    const bool byExpansions = rose <= kMaxStintBearings && setup.given("planner.parameters.max_expansions");
+    throw Error(setup.place(byExpansions ? "planner.parameters.max_expansions" : "stints.bearing_step") +
+                text::formatted(": a bearing step of %g degrees flies %.4g stints from every surfacing the search "
+                                "expands, up to %.3g stints over its %.3g expansions",
+                                settings_.bearingStep, rose, flights, static_cast<double>(maxExpansions_)) +
+                text::formatted(", more than the limit of %.4g bearings and %.3g stints: use a bearing step of at "
+                                "least %g degrees (or fewer max_expansions)",
+                                kMaxStintBearings, kMaxStintFlights, 360.0 / kMaxStintBearings));
 }
 
 void StintPlanner::setStintSettings(const StintSettings &s)

@@ -72,16 +72,6 @@ struct HeadingFlight
 HeadingFlight flyHeadingRoute(const HeadingRoute &route, const CurrentField &field, const Environment *forbidden,
                               const DiveSettings &settings, bool keepTrack = true);
 
-/// @brief A planner whose result is a heading route (IsochronePlanner, LevelSetPlanner in strong currents): the
-/// pipeline asks it for the route after a solve and uses it instead of straight legs between the path's states.
-class HeadingRouteSource
-{
-public:
-    virtual ~HeadingRouteSource() = default;
-    /// @brief The last solve's heading route; null when it returned straight legs or nothing.
-    virtual const HeadingRoute *lastHeadingRoute() const = 0;
-};
-
 /// @brief Degrees clockwise from north -> unit heading (hx, hy) = (sin b, cos b).
 inline Point2 bearingVector(double bearingDeg)
 {

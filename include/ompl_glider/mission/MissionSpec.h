@@ -20,7 +20,7 @@
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/current/Interpolation.h"
-#include "ompl_glider/stints/StintObjective.h"
+#include "ompl_glider/execution/Stints.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/OutputFormats.h"
 

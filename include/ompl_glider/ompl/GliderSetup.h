@@ -93,11 +93,11 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &problem);
 /// INVALID_START / INVALID_GOAL with a message naming the region, whatever the planner.
 /// @param ctxOut if non-null, receives the context (shared with the validator and the objective).
 /// @throws ompl_glider::Error as makeGliderContext().
-ompl::geometric::SimpleSetupPtr makeSimpleSetup(const GliderProblem &problem,
+std::shared_ptr<GliderSimpleSetup> makeSimpleSetup(const GliderProblem &problem,
                                                 std::shared_ptr<GliderContext> *ctxOut = nullptr);
 
 /// @brief The same for an existing context (e.g. one shared by several setups). The start state's time is
 /// problem.t0. @throws ompl_glider::Error also when ctx is null or problem.t0 lies outside
 /// [ctx->region.tMin, ctx->region.tMax].
-ompl::geometric::SimpleSetupPtr makeSimpleSetup(const GliderProblem &problem, std::shared_ptr<GliderContext> ctx);
+std::shared_ptr<GliderSimpleSetup> makeSimpleSetup(const GliderProblem &problem, std::shared_ptr<GliderContext> ctx);
 }  // namespace ompl_glider

@@ -13,7 +13,7 @@
 ///
 /// Unlike the straight-leg planners it needs no leg to be flyable against the current: a held heading that drifts
 /// is a valid motion whatever the ratio of the current to the speed. Its result is a heading route
-/// (HeadingRouteSource); the PathGeometric it returns holds the segment ends.
+/// (PipelinePlanner::lastHeadingRoute()); the PathGeometric it returns holds the segment ends.
 ///
 /// Parameters: "resolution" (cell size, length units; 0: 1/150 of the region's larger side), "headings" (K, default
 /// 36), "time_step" (0: 2.5 cells at the speed),
@@ -28,11 +28,12 @@
 
 #include "ompl_glider/execution/HeadingRoute.h"
 #include "ompl_glider/ompl/GliderContext.h"
+#include "ompl_glider/ompl/PipelinePlanner.h"
 
 namespace ompl_glider
 {
 /// @brief The isochrone heading planner (see the file comment).
-class IsochronePlanner : public ompl::base::Planner, public HeadingRouteSource
+class IsochronePlanner : public ompl::base::Planner, public PipelinePlanner
 {
 public:
     IsochronePlanner(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx);
@@ -43,6 +44,11 @@ public:
     const HeadingRoute *lastHeadingRoute() const override
     {
         return route_.segments.empty() ? nullptr : &route_;
+    }
+    /// @brief PipelinePlanner: lastReason() after an ABORT (no route), else nothing to add.
+    std::string noPathReason(const ompl::base::PlannerStatus &status, double) const override
+    {
+        return status == ompl::base::PlannerStatus::ABORT ? reason_ : std::string();
     }
 
     void setResolution(double h);  ///< @throws Error when negative or not finite

@@ -7,15 +7,21 @@
 
 #include <ompl/base/Planner.h>
 
+#include "ompl_glider/ompl/PipelinePlanner.h"
+
 namespace ompl_glider
 {
 /// @brief An ompl::base::Planner that searches the rectangular Lattice over the planning region. It owns the lattice
 /// spacing and connectivity and declares them once as the OMPL parameters "grid_size" (range "0.:0.01:1000.",
 /// default 0.4, the spacing of [EichhornRAS]) and "sectors" (range "1:1:5", default 3), so that a caller can set both
 /// on any lattice planner by name: planner->params().setParam("grid_size", "0.2").
-class LatticePlanner : public ompl::base::Planner
+class LatticePlanner : public ompl::base::Planner, public PipelinePlanner
 {
 public:
+    /// @brief Refuses, naming planner.grid_size, a spacing whose lattice over the setup's region would not fit in
+    /// memory (a travel time and a predecessor per vertex) or exceed the 2^31 vertices a lattice can hold.
+    void prepare(const PipelineSetup &setup) override;
+
     /// @brief Lattice spacing (param "grid_size", default 0.4). Throws ompl_glider::Error unless g is finite and > 0.
     void setGridSize(double g);
     /// @brief Lattice spacing.

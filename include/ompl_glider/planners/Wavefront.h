@@ -103,6 +103,12 @@ public:
     void clear() override;
     /// @brief Checks the state space and finds the motion validator.
     void setup() override;
+    /// @brief PipelinePlanner: the lattice's size (LatticePlanner::prepare()), then the time intervals over the
+    /// window (at most kMaxIntervals) and the space-time nodes the search must settle before the fastest
+    /// conceivable arrival (at most kMaxWavefrontNodes, ResourceLimits.h), refused naming time_step or grid_size.
+    void prepare(const PipelineSetup &setup) override;
+    /// @brief PipelinePlanner: lastOutcome() and lastMessage() in words.
+    std::string noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const override;
     /// @brief The settled nodes of the last search: (x, y, yaw 0, A) with an edge from each node's parent weighted
     /// by the difference of their arrival times (0 for a hold).
     void getPlannerData(ompl::base::PlannerData &data) const override;

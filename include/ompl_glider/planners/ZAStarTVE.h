@@ -132,6 +132,11 @@ public:
     std::uint64_t getCurrentModelCalls() const { return last_.currentModelCalls; }
     /// @brief Vertices expanded (extracted from the queue) in the last solve.
     std::uint64_t getExpandedVertices() const { return last_.expansions; }
+    /// @brief PipelinePlanner: getExpandedVertices().
+    std::uint64_t expandedVertices() const override { return last_.expansions; }
+    /// @brief PipelinePlanner: the last search's outcome in words (invalid start or goal, an exhausted lattice,
+    /// the time limit).
+    std::string noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const override;
     /// @brief Waypoints (x, y, arrival time) of the last solve's lattice path, before smoothing and refinement
     /// (empty when none).
     const std::vector<TimedPoint> &getWaypoints() const { return last_.waypoints; }

@@ -9,6 +9,7 @@
 
 #include "ompl_glider/execution/HeadingRoute.h"
 #include "ompl_glider/ompl/GliderContext.h"
+#include "ompl_glider/ompl/PipelinePlanner.h"
 #include "ompl_glider/reachability/LevelSet.h"
 
 namespace ompl_glider
@@ -26,7 +27,7 @@ namespace ompl_glider
 /// with the clearance).
 ///
 /// Where no straight legs can follow the backtracked path (a cross current stronger than the vehicle) the
-/// result is a heading route instead (HeadingRouteSource): the steering direction along the path, the direction of
+/// result is a heading route instead (PipelinePlanner::lastHeadingRoute()): the steering direction along the path, the direction of
 /// the velocity through the water (dx/dt - c) between backtracked points ([LollaLevelSet]: "a sequence of steering
 /// directions"), refined by direct shooting (HeadingRefiner.h) so that its flight ends at the goal. The returned
 /// PathGeometric then holds the segment ends.
@@ -35,7 +36,7 @@ namespace ompl_glider
 /// "cfl", "threads". Outcomes: EXACT_SOLUTION; ABORT when the front never reaches the goal within the region's time
 /// window (no path: walled in, a lane that never opens); TIMEOUT when the termination condition stopped it;
 /// INVALID_START / INVALID_GOAL outside the region; UNRECOGNIZED_GOAL_TYPE for goals without a position.
-class LevelSetPlanner : public ompl::base::Planner, public HeadingRouteSource
+class LevelSetPlanner : public ompl::base::Planner, public PipelinePlanner
 {
 public:
     LevelSetPlanner(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx);
@@ -43,6 +44,11 @@ public:
 
     ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
     void clear() override;
+    /// @brief PipelinePlanner: refuses, naming resolution, cfl or planner.horizon, a front that would take more than
+    /// kMaxLevelSetSteps time steps or kMaxLevelSetWork node updates (ResourceLimits.h) over the planning window.
+    void prepare(const PipelineSetup &setup) override;
+    /// @brief PipelinePlanner: why the front found no path (walled in, never reaching the goal, or lastReason()).
+    std::string noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const override;
 
     /// @brief Cell size (0: automatic). @throws Error when negative or not finite.
     void setResolution(double h);

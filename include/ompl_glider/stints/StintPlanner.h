@@ -17,6 +17,7 @@
 #include <ompl/base/Planner.h>
 
 #include "ompl_glider/ompl/GliderContext.h"
+#include "ompl_glider/ompl/PipelinePlanner.h"
 #include "ompl_glider/stints/CtsAStar.h"
 #include "ompl_glider/stints/StintSimulator.h"
 
@@ -37,7 +38,7 @@ std::string stintMethodName(StintMethod m);
 /// @brief Constant-bearing stint planner. Parameters (declareParam): cell_size (CTS-A* duplicate grid, 0: auto),
 /// max_expansions (CTS-A*), max_evaluations (optimisation). The stint settings (duration, mission duration,
 /// bearing step, objective, radius) come from setStintSettings() (a mission's `stints` section).
-class StintPlanner : public ompl::base::Planner
+class StintPlanner : public ompl::base::Planner, public PipelinePlanner
 {
 public:
     /// @brief Planner on @p si for the problem of @p ctx with @p method.
@@ -51,6 +52,15 @@ public:
     /// @brief Planner::getPlannerData() (progress properties); the surfacings are in lastPlan().
     void getPlannerData(ompl::base::PlannerData &data) const override;
 
+    /// @brief PipelinePlanner: takes the mission's stint settings (refusing a mission without a `stints` section)
+    /// and refuses a CTS-A* search that would fly more than kMaxStintBearings bearings per expansion or
+    /// kMaxStintFlights stints in all (ResourceLimits.h), naming stints.bearing_step or max_expansions.
+    void prepare(const PipelineSetup &setup) override;
+    /// @brief PipelinePlanner: lastPlan() when the last solve flew one, else null.
+    const StintPlan *lastStintPlan() const override
+    {
+        return plan_.surfacings.empty() ? nullptr : &plan_;
+    }
     /// @brief Stint settings. @throws Error naming the bad setting.
     void setStintSettings(const StintSettings &s);
     /// @brief The stint settings.

@@ -1,0 +1,95 @@
+#pragma once
+/// @file PipelinePlanner.h
+/// @brief What the planning pipeline (mission/Planning.h) asks of a planner beyond OMPL's Planner: to take the
+/// mission's settings and refuse work beyond the limits before the search, its counters, the route model of its
+/// result (a heading route, a stint plan) and, after a search without a path, why, in words for the user. A planner
+/// of this project implements PipelinePlanner beside ompl::base::Planner; OMPL's own planners do not, and
+/// pipelineView() answers for them with the defaults. The pipeline asks every planner through this interface only,
+/// so adding a planner is its class, its row in the registry (registry/PlannerRegistry.h) and its tests.
+
+#include <cstdint>
+#include <functional>
+#include <initializer_list>
+#include <string>
+
+#include <ompl/base/Planner.h>
+
+#include "ompl_glider/Geometry.h"
+#include "ompl_glider/current/CurrentField.h"
+
+namespace ompl_glider
+{
+struct HeadingRoute;   // execution/HeadingRoute.h
+struct StintPlan;      // execution/Stints.h
+struct StintSettings;  // execution/Stints.h
+
+/// @brief What the pipeline tells a planner before its search, and how to name the mission's fields in a message.
+struct PipelineSetup
+{
+    double departure{0.0};  ///< departure time (field units)
+    Point2 start{}, goal{};  ///< in the planning frame
+    Region region;           ///< the planning region and time window (GliderContext::region)
+    /// The mission's `stints` section (surfacing interval, mission duration, bearing step, ...); null without one.
+    const StintSettings *stints{nullptr};
+    /// Where a field of the mission was given, for messages: "file:line: field 'planner.grid_size'", or the flag
+    /// or keyword that set it. Planner parameters are named "planner.parameters.NAME".
+    std::function<std::string(const std::string &field)> place;
+    /// True when the mission (or a flag, a keyword) gave the field or parameter itself, not its default.
+    std::function<bool(const std::string &field)> given;
+
+    /// @brief place() of the first of @p fields that was given; else of @p fallback.
+    std::string placeOfFirstGiven(std::initializer_list<const char *> fields, const std::string &fallback) const;
+};
+
+/// @brief The pipeline's questions to a planner. Every answer has a default, so a planner overrides only what it
+/// has to say.
+class PipelinePlanner
+{
+public:
+    virtual ~PipelinePlanner() = default;
+
+    /// @brief Takes the pipeline's settings before the search (called once the planner's parameters are set) and
+    /// refuses a problem it cannot plan or work beyond the limits of ResourceLimits.h: throws Error naming the field
+    /// through PipelineSetup::place().
+    virtual void prepare(const PipelineSetup &setup)
+    {
+        (void)setup;
+    }
+
+    /// @brief Vertices (states) the last solve expanded; 0 when the planner does not count them.
+    virtual std::uint64_t expandedVertices() const
+    {
+        return 0;
+    }
+
+    /// @brief Why the last solve ended without a path, for the user; empty when the planner has nothing to add to
+    /// OMPL's status (the pipeline then says what the status says). @p timeLimit: the limit it was given (s).
+    virtual std::string noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const
+    {
+        (void)status;
+        (void)timeLimit;
+        return {};
+    }
+
+    /// @brief The last solve's route as held headings (execution/HeadingRoute.h), which the pipeline flies instead
+    /// of straight legs between the path's states; null when the result is straight legs (the default) or nothing.
+    virtual const HeadingRoute *lastHeadingRoute() const
+    {
+        return nullptr;
+    }
+
+    /// @brief The last solve's constant-bearing stint plan ([IsernObstacles]): its surfacings are the path and it is
+    /// flown as it is, not smoothed; null for any other planner (the default).
+    virtual const StintPlan *lastStintPlan() const
+    {
+        return nullptr;
+    }
+};
+
+/// @brief @p planner as the pipeline sees it: itself when it implements PipelinePlanner, else a view whose answers
+/// are the defaults (OMPL's own planners).
+const PipelinePlanner &pipelineView(const ompl::base::Planner &planner);
+
+/// @brief As above, for prepare().
+PipelinePlanner &pipelineView(ompl::base::Planner &planner);
+}  // namespace ompl_glider
