@@ -107,10 +107,13 @@ PlannerEntry stint(StintMethod method, std::vector<std::string> aliases, const s
 }
 }  // namespace
 
-const std::vector<PlannerEntry> &plannerRegistry()
+namespace
+{
+/// The registry: the built-in planners, then those of registerPlanner(); a deque, so that an entry never moves.
+std::deque<PlannerEntry> &entries()
 {
     namespace og = ompl::geometric;
-    static const std::vector<PlannerEntry> entries = {
+    static std::deque<PlannerEntry> entries = {
         lattice("TVE", {"tve"}, "time-dependent Dijkstra on the lattice"),
         lattice("A*TVE", {"astartve", "AStarTVE"}, "TVE with the admissible A* heuristic"),
         lattice("ZTVE", {"ztve"}, "TVE with Zermelo pruning"),
@@ -134,6 +137,26 @@ const std::vector<PlannerEntry> &plannerRegistry()
         stint(StintMethod::Direct, {"direct_to_goal"}, "stints: the bearing to the goal at every surfacing"),
     };
     return entries;
+}
+}  // namespace
+
+const std::deque<PlannerEntry> &plannerRegistry()
+{
+    return entries();
+}
+
+void registerPlanner(PlannerEntry entry)
+{
+    if (entry.name.empty() || !entry.make)
+        throw Error("registerPlanner: a planner needs a name and a make function");
+    for (const std::string &name : [&entry] {
+             std::vector<std::string> all{entry.name};
+             all.insert(all.end(), entry.aliases.begin(), entry.aliases.end());
+             return all;
+         }())
+        if (const PlannerEntry *taken = findPlanner(name))
+            throw Error("registerPlanner: the name '" + name + "' is taken by planner " + taken->name);
+    entries().push_back(std::move(entry));
 }
 
 const PlannerEntry *findPlanner(const std::string &name)

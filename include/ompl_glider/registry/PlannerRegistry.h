@@ -1,8 +1,11 @@
 #pragma once
 /// @file PlannerRegistry.h
 /// @brief The planners known by name: one list used by the command line, mission files, the Benchmark campaign
-/// and the documentation. Adding a planner is one entry here (see docs/ARCHITECTURE.md).
+/// and the documentation. Adding a planner is its class (an ompl::base::Planner that implements PipelinePlanner,
+/// ompl/PipelinePlanner.h, for what the pipeline asks of it), one entry here or a registerPlanner() call, and its
+/// tests: nothing in mission/ names a planner (see docs/ARCHITECTURE.md).
 
+#include <deque>
 #include <functional>
 #include <memory>
 #include <string>
@@ -23,8 +26,10 @@ enum class PlannerFamily
     Headings,  ///< a heading planner (IsochronePlanner): routes of held headings, for currents stronger than the
                ///< vehicle; runs to its own end
     Sampling,  ///< an OMPL sampling planner: uses all the time it is given (10 s by default)
-    Stints     ///< a StintPlanner method: flies constant-bearing stints (a mission's `stints` section applies;
+    Stints,    ///< a StintPlanner method: flies constant-bearing stints (a mission's `stints` section applies;
                ///< [IsernObstacles]); its own caps bound the work
+    Other      ///< any other planner that runs to its own end (no default time limit); what it needs of the
+               ///< mission it takes in PipelinePlanner::prepare()
 };
 
 /// @brief One planner that can be asked for by name.
@@ -58,7 +63,13 @@ struct PlannerEntry
 /// @brief Every registered planner, in the order of the documentation: the ZAStarTVE configurations TVE, A*TVE,
 /// ZTVE, ZA*TVE ([EichhornRAS] Sec. 2.2), the Wavefront ([ThompsonICRA] Sec. III), then OMPL's geometric planners on the time-augmented space, then the
 /// constant-bearing stint planners init_optim, optim, cts_astar, direct ([IsernObstacles]).
-const std::vector<PlannerEntry> &plannerRegistry();
+const std::deque<PlannerEntry> &plannerRegistry();
+
+/// @brief Adds @p entry to the registry, so that mission files, the command line, Python and the Benchmark campaign
+/// can ask for it by name like a built-in planner (a planner of an application, or one registered by a test).
+/// Call it before planning starts, not while other threads plan; pointers from findPlanner() stay valid.
+/// @throws Error when the entry has no name or no make function, or its name or an alias is already taken.
+void registerPlanner(PlannerEntry entry);
 
 /// @brief The entry whose name or alias equals @p name (case-insensitive); null when there is none.
 const PlannerEntry *findPlanner(const std::string &name);
