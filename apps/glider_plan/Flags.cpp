@@ -1,38 +1,27 @@
-// glider_plan's command line: flags, their checks, and the MissionSpec of the built-in and --currents modes.
+// glider_plan's command line: the flags and their checks (the missions they describe: FlagMissions.cpp).
 #include "Flags.h"
-#include "ompl_glider/planners/Sectors.h"
 
-#include <cstdio>
 #include <algorithm>
-#include <cctype>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <exception>
 #include <optional>
 #include <string>
-#include <tuple>
 #include <utility>
 #include <vector>
 
+#include "FlagText.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/CurrentFieldRegistry.h"
-#include "ompl_glider/current/GeoBox.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/current/UnitConversion.h"
-#include "ompl_glider/execution/Execution.h"
-#include "ompl_glider/mission/ForecastMission.h"
-#include "ompl_glider/io/Length.h"
-#include "ompl_glider/io/Time.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace glider_plan
 {
 using namespace ompl_glider;
 
-namespace
-{
-/// The whole of @p text as a finite number, or nullopt.
 std::optional<double> finiteNumber(const std::string &text)
 {
     std::size_t used = 0;
@@ -66,7 +55,6 @@ Point2 pair(const std::string &flag, const std::string &text)
     return {number(flag, text.substr(0, comma)), number(flag, text.substr(comma + 1))};
 }
 
-/// The comma-separated items of a flag's value, empty ones included ("a,,b" -> a, "", b).
 std::vector<std::string> commaItems(const std::string &text)
 {
     std::vector<std::string> items;
@@ -80,8 +68,6 @@ std::vector<std::string> commaItems(const std::string &text)
     return items;
 }
 
-/// Four numbers separated by commas (--region), in GeoJSON bbox order: x_min,y_min,x_max,y_max (for a geographic
-/// file lon_min,lat_min,lon_max,lat_max), as given (ForecastMission checks them).
 Box quad(const std::string &flag, const std::string &text)
 {
     std::array<double, 4> v{};
@@ -98,6 +84,8 @@ Box quad(const std::string &flag, const std::string &text)
     return {v[0], v[2], v[1], v[3]};
 }
 
+namespace
+{
 /// A finite number > 0, not denormal (CLI11's PositiveNumber lets "nan" and "inf" through; 1e-310 overflows
 /// every division).
 const CLI::Validator kPositiveFinite(
@@ -112,260 +100,8 @@ const CLI::Validator kPositiveFinite(
 const std::vector<std::string> kSchemes2D = {"nearest", "bilinear", "bicubic"};
 const std::vector<std::string> kSchemes1D = {"nearest", "linear", "cubic", "akima"};
 
-/// The execution flags (--truth, --surfacing-interval, --strategies, --radius, --execution-pairs/-seed).
-void applyExecution(const Flags &f, MissionSpec &m)
-{
-    ExecutionSpec &e = m.execution;
-    if (f.truth.empty() && f.surfacingInterval.empty() && f.strategies.empty() && !f.radius && !f.executionPairs &&
-        !f.executionSeed)
-        return;  // a mission file's execution section stays as it is
-    e.enabled = true;
-    e.mark = SourceMark{"--truth", 0};
-    if (!f.truth.empty() && f.truth != "forecast")
-    {
-        CurrentSpec t = m.current;
-        t.mark = SourceMark{"--truth", 0};
-        if (m.current.isForecast())
-        {
-            // another forecast file (or list / glob) read with the forecast's variable names and options
-            std::vector<std::string> files;
-            try
-            {
-                files = ompl_glider::forecastFileList(f.truth);
-            }
-            catch (const ompl_glider::Error &err)
-            {
-                throw UsageError{"--truth " + f.truth + ": " + err.what()};
-            }
-            t.file = files.front();
-            t.files = files.size() > 1 ? files : std::vector<std::string>{};
-        }
-        else
-        {
-            // the built-in flow with other parameters: NAME=VALUE,... (e.g. B0=1.3,c=0.14)
-            const CurrentFieldKind *kind = findCurrentFieldKind(m.current.type);
-            for (const std::string &item : commaItems(f.truth))
-            {
-                const std::size_t eq = item.find('=');
-                bool known = false;
-                if (eq != std::string::npos && kind)
-                    for (const auto &[name, value] : kind->parameters)
-                        known = known || name == item.substr(0, eq);
-                if (!known)
-                {
-                    std::string names;
-                    if (kind)
-                        for (const auto &[name, value] : kind->parameters)
-                            names += (names.empty() ? "" : ", ") + name;
-                    throw UsageError{"--truth: expected 'forecast' or NAME=VALUE,... with the " + m.current.type +
-                                     "'s parameters (" + names + "), got '" + item + "'"};
-                }
-                t.parameters[item.substr(0, eq)] = number("--truth", item.substr(eq + 1));
-            }
-        }
-        e.truth = t;
-    }
-    if (!f.surfacingInterval.empty())
-    {
-        try
-        {
-            e.surfacingInterval =
-                parseDuration(f.surfacingInterval, m.timeUnitSeconds, m.hasTimeUnit());
-        }
-        catch (const ompl_glider::Error &err)
-        {
-            throw UsageError{std::string("--surfacing-interval: ") + err.what()};
-        }
-        m.marks["execution.surfacing_interval"] = SourceMark{"--surfacing-interval", 0};
-    }
-    if (!f.strategies.empty())
-    {
-        e.strategies.clear();
-        for (const std::string &name : commaItems(f.strategies))
-        {
-            if (!parseControlStrategy(name))
-                throw UsageError{"--strategies: unknown strategy '" + name +
-                                 "' (expected a comma-separated list of current_sensitive, current_blind, greedy, "
-                                 "replan)"};
-            if (std::find(e.strategies.begin(), e.strategies.end(), name) != e.strategies.end())
-                throw UsageError{"--strategies: '" + name + "' is listed twice"};
-            e.strategies.push_back(name);
-        }
-    }
-    if (f.radius)
-        e.radius = *f.radius;
-    if (f.executionPairs)
-        e.pairs = *f.executionPairs;
-    if (f.executionSeed)
-        e.seed = *f.executionSeed;
-}
-
-/// --arrive-between t1,t2: the goal's arrival window, each time read as the mission reads its departure (a number
-/// in field units, or a date with the forecast's calendar or the mission's epoch).
-void applyArrivalWindow(const Flags &f, MissionSpec &m)
-{
-    if (f.arriveBetween.empty())
-        return;
-    const std::vector<std::string> items = commaItems(f.arriveBetween);
-    if (items.size() != 2 || items[0].empty() || items[1].empty())
-        throw UsageError{"--arrive-between expects two times separated by a comma, begin,end (numbers in the "
-                         "mission's time unit, or ISO 8601 dates with --currents), got '" + f.arriveBetween + "'"};
-    double t[2];
-    for (int k = 0; k < 2; ++k)
-    {
-        try
-        {
-            t[k] = m.timeOf(items[k]);
-        }
-        catch (const ompl_glider::Error &e)
-        {
-            throw UsageError{std::string("--arrive-between: ") + (k == 0 ? "begin" : "end") + ": " + e.what()};
-        }
-    }
-    if (!(t[1] >= t[0]))
-        throw UsageError{"--arrive-between: the end (" + items[1] + ") must not be before the begin (" + items[0] +
-                         ")"};
-    if (const PlannerEntry *planner = findPlanner(m.planner.name); planner && planner->stints())
-        throw UsageError{"--arrive-between: the stint planner '" + m.planner.name +
-                         "' flies fixed stints and cannot time its arrival"};
-    m.goalWindow = {true, t[0], t[1]};
-    for (const char *key : {"goal.window", "goal.window.begin", "goal.window.end"})
-        m.marks[key] = SourceMark{"--arrive-between", 0};
-}
-
-/// The settings common to every mode: a flag given replaces the mission's field (of the built-in mission, the
-/// --currents forecast's or the mission file's).
-void applySettings(const Flags &f, MissionSpec &m)
-{
-    // checks after loading name the flag that gave the value (MissionSpec::place)
-    const std::pair<bool, const char *> given[] = {{!f.planner.empty(), "planner.name=--planner"},
-                                                   {f.gridSize.has_value(), "planner.grid_size=--grid-size"},
-                                                   {f.sectors.has_value(), "planner.sectors=--sectors"},
-                                                   {f.timeLimit.has_value(), "planner.time_limit=--time-limit"},
-                                                   {f.speed.has_value(), "vehicle.speed=--speed"},
-                                                   {!f.departure.empty(), "departure.time=--departure"},
-                                                   {!f.start.empty(), "start=--start"},
-                                                   {!f.goal.empty(), "goal=--goal"},
-                                                   {!f.region.empty(), "region=--region"}};
-    for (const auto &[set, pair] : given)
-        if (set)
-        {
-            const std::string text = pair;
-            const std::size_t eq = text.find('=');
-            m.marks[text.substr(0, eq)] = SourceMark{text.substr(eq + 1), 0};
-        }
-    if (!f.planner.empty())
-        m.planner.name = findPlanner(f.planner)->name;
-    if (f.gridSize)
-        m.planner.gridSize = *f.gridSize;
-    if (f.sectors)
-        m.planner.sectors = *f.sectors;
-    if (f.timeLimit)
-        m.planner.timeLimit = *f.timeLimit;
-    if (f.noSmooth)
-        m.planner.smoothing = false;
-    if (f.noRefine)
-        m.planner.refinement = false;
-    if (f.noGlobalCheck)
-        m.planner.globalCheck = false;
-    if (f.speed)
-        m.vehicle.speed = m.travel.speed = *f.speed;
-    if (!f.out.empty() || f.mission.empty())  // a mission file keeps its outputs.directory unless --out is given
-        m.outputs.directory = f.out;
-    applyExecution(f, m);
-    applyArrivalWindow(f, m);
-    if (!f.coastline.empty())
-    {
-        m.forbidden.coastline = f.coastline;
-        m.forbidden.coastlineMark = SourceMark{"--coastline", 0};
-    }
-}
-}  // namespace
-
-void applyOutputFlags(const Flags &f, MissionSpec &m)
-{
-    if (!f.isochroneInterval.empty())
-    {
-        try
-        {
-            m.outputs.isochroneInterval = parseDuration(f.isochroneInterval, m.timeUnitSeconds, m.hasTimeUnit());
-        }
-        catch (const ompl_glider::Error &err)
-        {
-            throw UsageError{std::string("--isochrone-interval: ") + err.what()};
-        }
-        if (!(m.outputs.isochroneInterval > 0.0))
-            throw UsageError{"--isochrone-interval: must be > 0, got '" + f.isochroneInterval + "'"};
-        m.marks["outputs.isochrone_interval"] = SourceMark{"--isochrone-interval", 0};
-    }
-    if (f.gotoTurn)
-    {
-        if (!(*f.gotoTurn >= 0.0 && *f.gotoTurn <= 180.0))
-        {
-            char got[32];
-            std::snprintf(got, sizeof got, "%.10g", *f.gotoTurn);
-            throw UsageError{std::string("--goto-turn: expected degrees in 0..180 (0: every waypoint), got ") + got};
-        }
-        m.outputs.gotoTurnDeg = *f.gotoTurn;
-    }
-    if ((f.isochrones || !f.isochroneInterval.empty()) &&
-        !m.outputs.wants(OutputFormatId::Isochrones))
-        m.outputs.files.push_back(OutputFormatId::Isochrones);
-}
-
-void applySafetyFlags(const Flags &f, MissionSpec &m)
-{
-    auto length = [](const char *flag, const std::string &text, double metresPerUnit, bool known) {
-        try
-        {
-            return parseLength(text, metresPerUnit, known);
-        }
-        catch (const ompl_glider::Error &err)
-        {
-            throw UsageError{std::string(flag) + ": " + err.what()};
-        }
-    };
-    if (!f.keepOff.empty())
-    {
-        m.safety.keepOff = length("--keep-off", f.keepOff, m.metresPerUnit(), m.physicalUnits().length);
-        m.marks["safety.keep_off"] = SourceMark{"--keep-off", 0};
-    }
-    if (!f.minDepth.empty())
-    {
-        m.safety.minDepth = length("--min-depth", f.minDepth, 1.0, true);
-        m.marks["safety.min_depth"] = SourceMark{"--min-depth", 0};
-    }
-    if (!f.bathymetry.empty())
-    {
-        m.safety.bathymetry = f.bathymetry;
-        m.marks["safety.bathymetry"] = SourceMark{"--bathymetry", 0};
-    }
-    m.safety.bathymetryVariable = f.bathymetryVariable;
-    if (f.snapToWater)
-    {
-        m.safety.snapToWater = true;
-        m.marks["safety.snap_to_water"] = SourceMark{"--snap-to-water", 0};
-    }
-    if (!f.bathymetryVariable.empty() && f.bathymetry.empty() && !m.current.isForecast())
-        throw UsageError{"--bathymetry-variable needs --bathymetry FILE"};
-    if (!f.minDepth.empty() && f.bathymetry.empty() && !m.current.isForecast())
-        throw UsageError{"--min-depth needs --bathymetry FILE (a NetCDF file of seafloor depth or elevation)"};
-}
-
-std::vector<double> speedList(const std::string &text)
-{
-    std::vector<double> v;
-    for (const std::string &item : commaItems(text))
-    {
-        const double x = number("--speeds", item);
-        if (!(x > 0.0))
-            throw UsageError{"--speeds: every speed must be > 0, got " + item};
-        v.push_back(x);
-    }
-    return v;
-}
-
-void defineFlags(CLI::App &app, Flags &f)
+/// The flags of the route and the planner.
+void defineRouteFlags(CLI::App &app, Flags &f)
 {
     auto *built = "Route and planner";
     app.add_option("--start", f.start, "start x,y (built-in default 1,-3); lon,lat with --currents (write "
@@ -397,9 +133,8 @@ void defineFlags(CLI::App &app, Flags &f)
                    "bounds)")
         ->check(kPositiveFinite)
         ->group(built);
-    app.add_option("--sectors", f.sectors, "lattice connectivity 1..5 (default 3)")
-        ->check(CLI::Range(kMinSectors, kMaxSectors))
-        ->group(built);
+    // the range is checked once, in the library's overrides (Overrides.h), for the flag and Python's keyword alike
+    app.add_option("--sectors", f.sectors, "lattice connectivity 1..5 (default 3)")->group(built);
     app.add_option("--time-limit", f.timeLimit,
                    "planner time limit in seconds, at most 1e6 (default: none for the lattice planners, 10 s for the "
                    "sampling planners, which use all of it)")
@@ -414,6 +149,11 @@ void defineFlags(CLI::App &app, Flags &f)
                  "also solve Zermelo's optimal-control problem by shooting (extremals that stay in the region's water "
                  "and out of forbidden regions) and compare")
         ->group(built);
+}
+
+/// The flags of input and output.
+void defineIoFlags(CLI::App &app, Flags &f)
+{
     auto *io = "Input and output";
     app.add_option("--mission", f.mission, "run a YAML mission file (examples/MISSION_FORMAT.md); the other flags "
                                            "(not --currents and its options) override its fields")
@@ -432,6 +172,28 @@ void defineFlags(CLI::App &app, Flags &f)
                    "forbidden to the glider and drawn on the map")
         ->check(CLI::ExistingFile)
         ->group(io);
+    app.add_flag("--verbose", f.verbose, "show OMPL's log messages")->group(io);
+    app.add_flag("--show-mission", f.showMission,
+                 "print the mission's fields that flags can change (planner, grid, speed, start, goal, departure, "
+                 "region, ...) as the flags leave them, and the fields given, then exit without planning")
+        ->group(io);
+    app.add_flag("--isochrones", f.isochrones,
+                 "also write isochrones.geojson: where the glider can be by times after the departure (level-set "
+                 "reachable set), drawn on the map too")
+        ->group(io);
+    app.add_option("--goto-turn", f.gotoTurn,
+                   "the goto list names a waypoint where the course turns by more than this many degrees, or where "
+                   "leaving it out strays from the route or crosses land (default 10; 0: every waypoint)")
+        ->group(io);
+    app.add_option("--isochrone-interval", f.isochroneInterval,
+                   "time between isochrones: a number in the mission's time unit, or e.g. '12 h' (default: eight up "
+                   "to the arrival); implies --isochrones")
+        ->group(io);
+}
+
+/// The flags of safety margins.
+void defineSafetyFlags(CLI::App &app, Flags &f)
+{
     auto *safe = "Safety margins";
     app.add_option("--keep-off", f.keepOff,
                    "keep this far from land (land cells, --coastline polygons, islands): e.g. '2km', '500m', or a "
@@ -452,19 +214,11 @@ void defineFlags(CLI::App &app, Flags &f)
                  "a start or goal on the forecast's land is moved to the nearest water (the report says where); "
                  "without it such a start or goal is refused, naming the nearest water")
         ->group(safe);
-    app.add_flag("--verbose", f.verbose, "show OMPL's log messages")->group(io);
-    app.add_flag("--isochrones", f.isochrones,
-                 "also write isochrones.geojson: where the glider can be by times after the departure (level-set "
-                 "reachable set), drawn on the map too")
-        ->group(io);
-    app.add_option("--goto-turn", f.gotoTurn,
-                   "the goto list names a waypoint where the course turns by more than this many degrees, or where "
-                   "leaving it out strays from the route or crosses land (default 10; 0: every waypoint)")
-        ->group(io);
-    app.add_option("--isochrone-interval", f.isochroneInterval,
-                   "time between isochrones: a number in the mission's time unit, or e.g. '12 h' (default: eight up "
-                   "to the arrival); implies --isochrones")
-        ->group(io);
+}
+
+/// The flags of execution in another ocean.
+void defineExecutionFlags(CLI::App &app, Flags &f)
+{
     auto *ex = "Execution in another ocean (any of these flies the plan; with --mission they override its execution "
                "section)";
     app.add_option("--truth", f.truth,
@@ -489,6 +243,11 @@ void defineFlags(CLI::App &app, Flags &f)
         ->check(CLI::Range(0u, 100000u))
         ->group(ex);
     app.add_option("--execution-seed", f.executionSeed, "seed of the random pairs (default 1)")->group(ex);
+}
+
+/// The flags of reading a NetCDF forecast (with --currents).
+void defineForecastFlags(CLI::App &app, Flags &f)
+{
     auto *nc = "NetCDF forecast (with --currents)";
     ForecastInput &fc = f.forecast;
     for (const char *role : {"u", "v", "lon", "lat", "depth", "time"})
@@ -588,6 +347,17 @@ void defineFlags(CLI::App &app, Flags &f)
            "plan on this time record only (0 the first), as a steady field")
         ->check(CLI::Range(std::size_t(0), std::size_t(1000000000)))
         ->group(nc);
+}
+
+}  // namespace
+
+void defineFlags(CLI::App &app, Flags &f)
+{
+    defineRouteFlags(app, f);
+    defineIoFlags(app, f);
+    defineSafetyFlags(app, f);
+    defineExecutionFlags(app, f);
+    defineForecastFlags(app, f);
     app.footer("Exit status: 0 path found, 1 no path (the reason is printed), 2 bad arguments or input (a message "
                "says what and where; nothing is written).");
 }
@@ -623,100 +393,4 @@ void parseFlags(CLI::App &app, const Flags &f, int argc, const char *const *argv
     checkCombinations(app, f);
 }
 
-MissionSpec builtInMission(const Flags &f)
-{
-    MissionSpec m = defaultGulfStreamMission();
-    if (!f.start.empty())
-    {
-        const Point2 p = pair("--start", f.start);
-        m.start.xy = p;
-    }
-    if (!f.goal.empty())
-    {
-        const Point2 p = pair("--goal", f.goal);
-        m.goal.xy = p;
-    }
-    if (!f.departure.empty())
-        m.departure.time = number("--departure", f.departure);
-    applySettings(f, m);
-    return m;
-}
-
-MissionSpec missionFileOf(const Flags &f)
-{
-    MissionSpec m = loadMission(f.mission);
-    for (auto [flag, text, point] : {std::make_tuple("--start", &f.start, &m.start),
-                                     std::make_tuple("--goal", &f.goal, &m.goal)})
-        if (!text->empty())
-        {
-            const Point2 p = pair(flag, *text);  // in the mission's terms: lon,lat where it gives lon/lat
-            if (point->geographic)
-                point->lonLat = {p.x, p.y};
-            else
-                point->xy = p;
-        }
-    if (!f.departure.empty())
-    {
-        try
-        {
-            m.departure.time = m.timeOf(f.departure);
-        }
-        catch (const ompl_glider::Error &e)
-        {
-            throw UsageError{std::string("--departure: ") + e.what()};
-        }
-        m.departure.window = false;  // one departure in place of the file's window
-    }
-    if (!f.region.empty())
-    {
-        const Box b = quad("--region", f.region);
-        m.region.set = true;
-        m.region.geographic = m.start.geographic;
-        if (m.region.geographic)
-            m.region.lonLat = geoBox(b.xMin, b.yMin, b.xMax, b.yMax);
-        else if (!(b.xMax > b.xMin && b.yMax > b.yMin))
-            throw UsageError{"--region expects x_min,y_min,x_max,y_max with x_max > x_min and y_max > y_min, got '" +
-                             f.region + "'"};
-        else
-            m.region.xy = b;
-    }
-    if (!f.planner.empty() && findPlanner(f.planner)->name != m.planner.name)
-    {
-        m.planner.parameters.clear();  // the file's parameters are the other planner's
-        m.planner.parameterMarks.clear();
-    }
-    applySettings(f, m);
-    return m;
-}
-
-MissionSpec forecastMissionOf(Flags f)
-{
-    // one file, or several read as one forecast: a comma-separated list of files and glob patterns
-    std::vector<std::string> files;
-    try
-    {
-        files = ompl_glider::forecastFileList(f.currents);
-    }
-    catch (const ompl_glider::Error &e)
-    {
-        throw UsageError{"--currents " + f.currents + ": " + e.what()};
-    }
-    if (files.size() == 1)
-        f.forecast.current.file = files.front();
-    else
-        f.forecast.current.files = files;
-    f.forecast.start = pair("--start", f.start);
-    f.forecast.goal = pair("--goal", f.goal);
-    f.forecast.departure = f.departure;
-    if (!f.region.empty())
-        f.forecast.region = quad("--region", f.region);
-    if (f.speed)
-        f.forecast.speed = *f.speed;
-    if (f.depth)
-        f.forecast.depth = *f.depth;
-    f.forecast.snapToWater = f.snapToWater;
-    MissionSpec m = forecastMission(f.forecast);
-    applySettings(f, m);
-    return m;
-}
 }  // namespace glider_plan

@@ -12,6 +12,7 @@
 
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/mission/Overrides.h"
 
 namespace glider_plan
 {
@@ -41,11 +42,12 @@ struct Flags
     // safety margins: --keep-off, --bathymetry, --bathymetry-variable, --min-depth
     std::string keepOff, bathymetry, bathymetryVariable, minDepth;
     bool snapToWater{false};  ///< --snap-to-water
+    bool showMission{false};  ///< --show-mission: print the fields the flags can change, plan nothing
 };
 
-/// @brief The output requests that go with every mode, --mission included: --isochrones and --isochrone-interval
-/// (which implies --isochrones) add the format "isochrones" to @p m's outputs. @throws UsageError naming the flag.
-void applyOutputFlags(const Flags &f, ompl_glider::MissionSpec &m);
+/// @brief The flags that Python's keywords share, as the library's typed overrides (Overrides.h), each named by its
+/// flag. @throws UsageError for a malformed pair, box or window.
+ompl_glider::MissionOverrides overridesOf(const Flags &f);
 
 /// @brief The safety flags (--keep-off, --bathymetry, --bathymetry-variable, --min-depth) applied to
 /// @p m (lengths read in its units, marks naming the flags). @throws UsageError naming the flag.

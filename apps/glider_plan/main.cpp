@@ -93,8 +93,14 @@ int run(const Flags &f)
     MissionSpec spec = !f.mission.empty() ? missionFileOf(f)
                        : !f.currents.empty() ? forecastMissionOf(f)
                                              : builtInMission(f);
-    applyOutputFlags(f, spec);
     applySafetyFlags(f, spec);
+    if (f.showMission)
+    {
+        // what the flags made of the mission, as Python's Mission.fields() shows it for the same keywords
+        for (const auto &[field, value] : overridableFields(spec))
+            std::cout << field << " = " << value << "\n";
+        return 0;
+    }
     // the processes of a job agree on what they read before any plan (a node-local copy of another version)
     if (TaskSpreader *job = activeTaskSpreader())
         job->agree("the mission (its file and the files it reads)", inputDigest(spec));

@@ -358,7 +358,9 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
          sectors: Optional[int] = None, time_limit: Optional[float] = None, smoothing: Optional[bool] = None,
          refinement: Optional[bool] = None, global_check: Optional[bool] = None, horizon: Optional[float] = None,
          goal_tolerance: Optional[float] = None, isochrones: bool = False,
-         isochrone_interval: Optional[float] = None, speeds: Optional[Sequence[float]] = None,
+         isochrone_interval: Union[None, float, str] = None, arrive_between: Optional[Tuple[Any, Any]] = None,
+         coastline: Union[None, str, os.PathLike] = None, goto_turn: Optional[float] = None,
+         speeds: Optional[Sequence[float]] = None,
          optimum: bool = False, progress: Optional[ProgressCallback] = None) -> Result:
     """Plans a mission with the library's one pipeline and returns its :class:`Result`.
 
@@ -373,9 +375,12 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     name, kind, and windows for a time-windowed zone or max_submerged_time, t_ref, drift for an ice zone),
     planner (a registry name, :func:`planner_names`) and planner_params (its OMPL parameters by name), grid_size,
     sectors, time_limit (s), smoothing, refinement, global_check (False: no global check of the route class,
-    docs/TRUST.md), horizon, goal_tolerance; isochrones / isochrone_interval add
-    the reachable-set contours (:attr:`Result.isochrones`); speeds a speed sweep; optimum the optimal-control
-    reference. progress(line, done) receives the progress lines of long runs (the GIL is released while planning).
+    docs/TRUST.md), horizon, goal_tolerance, arrive_between ((begin, end): the goal's arrival window, times as
+    departure), coastline (a GIS file of land), goto_turn (the goto list's turn threshold, degrees); isochrones /
+    isochrone_interval (a number in the mission's time unit, or a duration such as "6 h") add the reachable-set
+    contours (:attr:`Result.isochrones`); speeds a speed sweep; optimum the optimal-control reference. These
+    keywords and glider_plan's flags are one set of overrides in the library (Overrides.h): the same values give
+    the same mission (``Mission.fields()``, ``glider_plan --show-mission``). progress(line, done) receives the progress lines of long runs (the GIL is released while planning).
 
     Raises :class:`Error` with glider_plan's message for bad input (exit status 2 there); a problem without a
     path returns a result with ``solved`` False (exit status 1 there).
@@ -384,7 +389,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                     forbidden=_forbidden(forbidden), planner=planner, grid_size=grid_size, sectors=sectors,
                     time_limit=time_limit, smoothing=smoothing, refinement=refinement,
                     global_check=global_check, horizon=horizon, goal_tolerance=goal_tolerance, isochrones=isochrones,
-                    isochrone_interval=isochrone_interval)
+                    isochrone_interval=isochrone_interval, arrive_between=arrive_between,
+                    coastline=None if coastline is None else os.fspath(coastline), goto_turn=goto_turn)
     if planner_params is not None:
         keywords["planner_params"] = {k: (str(v).lower() if isinstance(v, bool) else str(v))
                                       for k, v in planner_params.items()}

@@ -1,6 +1,7 @@
 // Missions for the Python module: the MissionSpec of each way in (built-in, mission file, mission text, NetCDF
 // forecast) and the keyword arguments of plan() applied to it as the command line applies its flags.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -14,7 +15,6 @@
 #include <pybind11/stl.h>
 
 #include "Bindings.h"
-#include "ompl_glider/planners/Sectors.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/current/GeoBox.h"
@@ -22,6 +22,7 @@
 #include "ompl_glider/mission/Fleet.h"
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/mission/Overrides.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace py = pybind11;
@@ -169,17 +170,6 @@ void addForbidden(MissionSpec &m, const py::dict &item, std::size_t index)
     }
 }
 
-void setPoint(MissionSpec &m, PointSpec &p, const char *name, Pair v)
-{
-    checkFinite(name, v.first, false);
-    checkFinite(name, v.second, false);
-    if (p.geographic)
-        p.lonLat = {v.first, v.second};
-    else
-        p.xy = {v.first, v.second};
-    m.marks[name] = keyword(name);
-}
-
 /// The current of an analytic flow by its registry name, its parameters checked against the registry.
 void setAnalytic(MissionSpec &m, const std::string &type, const std::map<std::string, double> &parameters)
 {
@@ -222,7 +212,7 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     static const char *known[] = {"planner", "planner_params", "grid_size", "sectors", "time_limit", "smoothing",
                                   "refinement", "speed", "departure", "start", "goal", "region", "forbidden",
                                   "isochrones", "isochrone_interval", "analytic", "horizon", "goal_tolerance",
-                                  "global_check"};
+                                  "global_check", "arrive_between", "coastline", "goto_turn"};
     for (const auto &item : kw)
     {
         const std::string name = item.first.cast<std::string>();
@@ -235,117 +225,72 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
             *v, "field", "(name, {parameter: number})");
         setAnalytic(m, type, params);
     }
+    // the keywords the command line shares as flags: the library's typed overrides, each named by its keyword
+    MissionOverrides o;
+    auto text = [](const std::string &name) { return "plan(): keyword '" + name + "'"; };
     if (auto v = get("planner"))
-    {
-        const std::string name = plannerEntry(value<std::string>(*v, "planner", "a planner name")).name;
-        if (name != m.planner.name)
-        {
-            m.planner.parameters.clear();  // the file's parameters are the other planner's (as glider_plan --planner)
-            m.planner.parameterMarks.clear();
-        }
-        m.planner.name = name;
-        m.marks["planner.name"] = keyword("planner");
-    }
+        o.planner = Given<std::string>{value<std::string>(*v, "planner", "a planner name"), text("planner")};
     if (auto v = get("planner_params"))
-        for (const auto &[name, text] :
-             value<std::map<std::string, std::string>>(*v, "planner_params", "a dict of parameter names to values"))
-        {
-            m.planner.parameters[name] = text;
-            m.planner.parameterMarks[name] = keyword("planner_params");
-        }
-    if (auto v = get("grid_size"))
-    {
-        m.planner.gridSize = value<double>(*v, "grid_size", "a number");
-        checkFinite("grid_size", m.planner.gridSize, true);
-        m.marks["planner.grid_size"] = keyword("grid_size");
-    }
+        o.plannerParameters = Given<std::map<std::string, std::string>>{
+            value<std::map<std::string, std::string>>(*v, "planner_params", "a dict of parameter names to values"),
+            text("planner_params")};
+    for (const auto &[name, target] :
+         {std::make_pair("grid_size", &o.gridSize), std::make_pair("time_limit", &o.timeLimit),
+          std::make_pair("horizon", &o.horizon), std::make_pair("goal_tolerance", &o.goalTolerance),
+          std::make_pair("speed", &o.speed), std::make_pair("goto_turn", &o.gotoTurn)})
+        if (auto v = get(name))
+            *target = Given<double>{value<double>(*v, name, "a number"), text(name)};
     if (auto v = get("sectors"))
-    {
-        m.planner.sectors = value<int>(*v, "sectors", "an integer 1..5");
-        if (m.planner.sectors < kMinSectors || m.planner.sectors > kMaxSectors)
-            throw Error("plan(): keyword 'sectors' expects " + std::to_string(kMinSectors) + ".." +
-                        std::to_string(kMaxSectors) + ", got " + std::to_string(m.planner.sectors));
-        m.marks["planner.sectors"] = keyword("sectors");
-    }
-    if (auto v = get("time_limit"))
-    {
-        m.planner.timeLimit = value<double>(*v, "time_limit", "a number of seconds");
-        checkFinite("time_limit", m.planner.timeLimit, true);
-        m.marks["planner.time_limit"] = keyword("time_limit");
-    }
-    if (auto v = get("horizon"))
-    {
-        m.planner.horizon = value<double>(*v, "horizon", "a number");
-        checkFinite("horizon", m.planner.horizon, true);
-        m.marks["planner.horizon"] = keyword("horizon");
-    }
-    if (auto v = get("goal_tolerance"))
-    {
-        m.planner.goalTolerance = value<double>(*v, "goal_tolerance", "a number");
-        checkFinite("goal_tolerance", m.planner.goalTolerance, true);
-        m.marks["planner.goal_tolerance"] = keyword("goal_tolerance");
-    }
-    if (auto v = get("smoothing"))
-        m.planner.smoothing = value<bool>(*v, "smoothing", "True or False");
-    if (auto v = get("refinement"))
-        m.planner.refinement = value<bool>(*v, "refinement", "True or False");
-    if (auto v = get("global_check"))
-        m.planner.globalCheck = value<bool>(*v, "global_check", "True or False");
-    if (auto v = get("speed"))
-    {
-        const double s = value<double>(*v, "speed", "a number");
-        checkFinite("speed", s, true);
-        m.vehicle.speed = m.travel.speed = s;
-        m.marks["vehicle.speed"] = keyword("speed");
-    }
+        o.sectors = Given<int>{value<int>(*v, "sectors", "an integer 1..5"), text("sectors")};
+    for (const auto &[name, target] : {std::make_pair("smoothing", &o.smoothing),
+                                       std::make_pair("refinement", &o.refinement),
+                                       std::make_pair("global_check", &o.globalCheck),
+                                       std::make_pair("isochrones", &o.isochrones)})
+        if (auto v = get(name))
+            *target = Given<bool>{value<bool>(*v, name, "True or False"), text(name)};
     if (auto v = get("departure"))
-    {
-        const std::string text = py::str(*v).cast<std::string>();
-        try
+        o.departure = Given<std::string>{py::str(*v).cast<std::string>(), text("departure")};
+    for (const auto &[name, target] : {std::make_pair("start", &o.start), std::make_pair("goal", &o.goal)})
+        if (auto v = get(name))
         {
-            m.departure.time = m.timeOf(text);
+            const Pair p = value<Pair>(*v, name, "a pair (x, y) or (lon, lat) of numbers");
+            *target = Given<Point2>{{p.first, p.second}, text(name)};
         }
-        catch (const Error &e)
-        {
-            throw Error(std::string("plan(): keyword 'departure': ") + e.what());
-        }
-        m.departure.window = false;
-        m.marks["departure.time"] = keyword("departure");
-    }
-    if (auto v = get("start"))
-        setPoint(m, m.start, "start", value<Pair>(*v, "start", "a pair (x, y) or (lon, lat) of numbers"));
-    if (auto v = get("goal"))
-        setPoint(m, m.goal, "goal", value<Pair>(*v, "goal", "a pair (x, y) or (lon, lat) of numbers"));
     if (auto v = get("region"))
     {
         const auto [a, b, c, d] = value<Quad>(*v, "region", "four numbers (x_min, y_min, x_max, y_max)");
-        m.region.set = true;
-        m.region.geographic = m.start.geographic;
-        if (m.region.geographic)
-            m.region.lonLat = geoBox(a, b, c, d);
+        o.region = Given<std::array<double, 4>>{{a, b, c, d}, text("region")};
+    }
+    if (auto v = get("arrive_between"))
+    {
+        const auto [begin, end] = value<std::pair<py::object, py::object>>(*v, "arrive_between", "a pair (begin, end) of times");
+        o.arrivalWindow = Given<std::pair<std::string, std::string>>{
+            {py::str(begin).cast<std::string>(), py::str(end).cast<std::string>()}, text("arrive_between")};
+    }
+    if (auto v = get("coastline"))
+        o.coastline = Given<std::string>{value<std::string>(*v, "coastline", "a file name"), text("coastline")};
+    if (auto v = get("isochrone_interval"))
+    {
+        // a number in the mission's time unit, or a duration such as "6 h"
+        std::string interval;
+        if (py::isinstance<py::str>(*v))
+            interval = v->cast<std::string>();
         else
         {
-            if (!(c > a) || !(d > b))
-                throw Error("plan(): keyword 'region' expects (x_min, y_min, x_max, y_max) with x_max > x_min and "
-                            "y_max > y_min");
-            m.region.xy = Box{a, c, b, d};
+            char digits[40];  // 17 digits: the same double back
+            std::snprintf(digits, sizeof digits, "%.17g",
+                          value<double>(*v, "isochrone_interval", "a number or a duration ('6 h')"));
+            interval = digits;
         }
-        m.marks["region"] = keyword("region");
+        o.isochroneInterval = Given<std::string>{interval, text("isochrone_interval")};
     }
+    applyOverrides(o, m);
     if (auto v = get("forbidden"))
     {
         std::size_t k = 0;
         for (const py::handle item : value<py::list>(*v, "forbidden", "a list of polygons"))
             addForbidden(m, value<py::dict>(item, "forbidden", "a polygon as a dict with points"), k++);
     }
-    if (auto v = get("isochrone_interval"))
-    {
-        m.outputs.isochroneInterval = value<double>(*v, "isochrone_interval", "a number");
-        checkFinite("isochrone_interval", m.outputs.isochroneInterval, true);
-    }
-    const bool isochrones = get("isochrones") ? value<bool>(*get("isochrones"), "isochrones", "True or False") : false;
-    if ((isochrones || get("isochrone_interval")) && !m.outputs.wants(OutputFormatId::Isochrones))
-        m.outputs.files.push_back(OutputFormatId::Isochrones);
     return m;
 }
 }  // namespace
@@ -359,6 +304,9 @@ void bindMission(py::module_ &m)
         .def_property_readonly("is_forecast", [](const MissionSpec &s) { return s.current.isForecast(); })
         .def_property_readonly("geographic", [](const MissionSpec &s) { return s.start.geographic; })
         .def("with_keywords", &withKeywords, "The mission with plan()'s keyword arguments applied.")
+        .def("fields", &overridableFields,
+             "The fields plan()'s keywords (and glider_plan's flags) can change, as text, and the fields given: "
+             "overridableFields(), as glider_plan --show-mission prints them.")
         .def_property_readonly("fleet_size", [](const MissionSpec &s) { return s.fleet.size(); })
         .def("fleet_glider", &fleetGliderMission, py::arg("i"),
              "The mission of glider i of the fleet (fleetGliderMission(): as glider_plan plans it).");

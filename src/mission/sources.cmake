@@ -3,6 +3,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/DepartureTimeSearch.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionLoader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputFormats.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/Overrides.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/MissionReader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Sections.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/ForbiddenRegions.cpp

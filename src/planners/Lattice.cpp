@@ -1,5 +1,5 @@
 #include "ompl_glider/planners/detail/Lattice.h"
-#include "ompl_glider/planners/Sectors.h"
+#include "ompl_glider/ompl/Sectors.h"
 
 #include <algorithm>
 #include <cmath>

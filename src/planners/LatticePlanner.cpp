@@ -1,5 +1,5 @@
 #include "ompl_glider/planners/LatticePlanner.h"
-#include "ompl_glider/planners/Sectors.h"
+#include "ompl_glider/ompl/Sectors.h"
 
 #include <cmath>
 #include <utility>

@@ -123,3 +123,70 @@ def test_fleet_same_travel_times_as_glider_plan(tmp_path):
     with pytest.raises(ompl_glider.Error, match="no fleet"):
         ompl_glider.plan_fleet({k: v for k, v in mission.items() if k != "fleet"} | {"start": {"x": 1, "y": -3},
                                                                                    "goal": {"x": 8, "y": 3}})
+
+
+def _cli_fields(*args):
+    rc, out, err, _ = glider_plan(*args, "--show-mission")
+    assert rc == 0, err
+    fields = dict(line.split(" = ", 1) for line in out.splitlines() if " = " in line)
+    assert "planner.name" in fields and "marked" in fields
+    return fields
+
+
+@pytest.mark.parametrize("mission", [None, "islands_ice.yaml", "shear_goal_window.yaml"])
+def test_the_same_overrides_give_the_same_mission_field_by_field(mission, tmp_path):
+    """The flags and the keywords are one override set (Overrides.h): every field it can change, and which fields
+    are marked as given, agree between glider_plan and Python."""
+    coast = os.path.join(EXAMPLES, "jamaica_coast.geojson")
+    flags = ["--planner", "LevelSet", "--grid-size", "0.3", "--sectors", "4", "--time-limit", "12", "--speed",
+             "0.45", "--departure", "1.5", "--start", "1.25,-2", "--goal", "8.5,2.75", "--region=0,-4,10,4",
+             "--no-smooth", "--no-refine", "--no-global-check", "--arrive-between", "20,30",
+             "--coastline", coast, "--isochrone-interval", "2.5", "--goto-turn", "15"]
+    keywords = dict(planner="LevelSet", grid_size=0.3, sectors=4, time_limit=12, speed=0.45, departure=1.5,
+                    start=(1.25, -2), goal=(8.5, 2.75), region=(0, -4, 10, 4), smoothing=False, refinement=False,
+                    global_check=False, arrive_between=(20, 30), coastline=coast, isochrone_interval=2.5,
+                    goto_turn=15)
+    if mission is None:
+        # the built-in mission's region is fixed (--region belongs to --currents and --mission)
+        flags.remove("--region=0,-4,10,4")
+        del keywords["region"]
+        cli = _cli_fields(*flags)
+        spec = ompl_glider._core.builtin_mission()
+    else:
+        path = os.path.join(EXAMPLES, mission)
+        cli = _cli_fields("--mission", path, *flags)
+        spec = ompl_glider._core.load_mission(path)
+    before = dict(spec.fields())
+    py = dict(spec.with_keywords(**keywords).fields())
+    if mission is None:
+        py["outputs.directory"] = cli["outputs.directory"]  # the built-in mode writes where --out says ("" here)
+    assert py == cli
+    # the overrides did change the mission: the two front ends do not merely agree on leaving it alone
+    changed = {k for k in py if py[k] != before[k]}
+    assert {"planner.name", "planner.grid_size", "planner.sectors", "vehicle.speed", "start", "goal",
+            "goal.window", "forbidden.coastline", "outputs.isochrone_interval"} <= changed
+
+
+def test_planner_keyword_drops_the_files_planner_parameters_like_the_flag():
+    path = os.path.join(EXAMPLES, "campaign_islands.yaml")  # LevelSet with resolution: 0.05
+    cli = _cli_fields("--mission", path, "--planner", "ZA*TVE")
+    py = dict(ompl_glider._core.load_mission(path).with_keywords(planner="ZA*TVE").fields())
+    assert cli["planner.parameters"] == py["planner.parameters"] == ""
+    same = dict(ompl_glider._core.load_mission(path).with_keywords(planner="LevelSet").fields())
+    assert same["planner.parameters"] == "resolution=0.05"
+
+
+@pytest.mark.parametrize("flag, keyword, value, says", [
+    ("--sectors", "sectors", "7", "1..5"),
+    ("--arrive-between", "arrive_between", "30,20", "must not be before the begin"),
+    ("--goto-turn", "goto_turn", "200", "0..180"),
+])
+def test_a_bad_override_is_refused_alike(flag, keyword, value, says):
+    rc, _, err, _ = glider_plan(flag, value, "--show-mission")
+    assert rc == 2 and says in err, err
+    py_value = tuple(float(v) for v in value.split(",")) if "," in value else float(value)
+    if keyword == "sectors":
+        py_value = int(py_value)
+    with pytest.raises(ompl_glider.Error) as e:
+        ompl_glider._core.builtin_mission().with_keywords(**{keyword: py_value})
+    assert says in str(e.value) and f"keyword '{keyword}'" in str(e.value)

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "MissionReader.h"
-#include "ompl_glider/planners/Sectors.h"
+#include "ompl_glider/ompl/Sectors.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Time.h"

@@ -1,0 +1,64 @@
+#pragma once
+/// @file Overrides.h
+/// @brief What a front end may change in a mission: one typed set for glider_plan's flags and the Python module's
+/// keywords, checked once here. Each value carries the name the user gave it by (a flag, "--speed", or a keyword,
+/// "plan(): keyword 'speed'"), so that this check and every later one (MissionSpec::place()) name it.
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ompl_glider/Geometry.h"
+#include "ompl_glider/mission/MissionSpec.h"
+
+namespace ompl_glider
+{
+/// @brief A value a front end gives, with the name it was given by.
+template <class T>
+struct Given
+{
+    T value{};
+    std::string source;  ///< "--speed", "plan(): keyword 'speed'"
+};
+
+/// @brief The changes a front end asks of a mission; what is not set stays as the mission has it.
+struct MissionOverrides
+{
+    std::optional<Given<std::string>> planner;  ///< a name or alias of the registry
+    /// planner parameters by name (merged over the mission's; a planner other than the mission's drops them first)
+    std::optional<Given<std::map<std::string, std::string>>> plannerParameters;
+    std::optional<Given<double>> gridSize;     ///< > 0, finite
+    std::optional<Given<int>> sectors;         ///< kMinSectors..kMaxSectors
+    std::optional<Given<double>> timeLimit;    ///< seconds > 0
+    std::optional<Given<double>> horizon;      ///< > 0, in the mission's time unit
+    std::optional<Given<double>> goalTolerance;  ///< > 0, in the mission's length unit
+    std::optional<Given<bool>> smoothing, refinement, globalCheck;
+    std::optional<Given<double>> speed;  ///< through the water, > 0 (vehicle and travel-time speed)
+    /// one departure (a number in the mission's time unit, or an ISO 8601 date): replaces a departure window
+    std::optional<Given<std::string>> departure;
+    /// lon, lat where the mission gives lon/lat, else x, y
+    std::optional<Given<Point2>> start, goal;
+    /// x_min, y_min, x_max, y_max (lon/lat likewise)
+    std::optional<Given<std::array<double, 4>>> region;
+    std::optional<Given<std::string>> coastline;     ///< a coastline file (GeoJSON, shapefile, ...)
+    std::optional<Given<std::string>> outDirectory;  ///< outputs.directory
+    /// the goal's arrival window: begin and end, each read as the departure is
+    std::optional<Given<std::pair<std::string, std::string>>> arrivalWindow;
+    std::optional<Given<bool>> isochrones;             ///< add the isochrone output
+    std::optional<Given<std::string>> isochroneInterval;  ///< a duration ("6 h", or a number in the time unit)
+    std::optional<Given<double>> gotoTurn;  ///< the goto list's turn threshold, degrees in 0..180
+};
+
+/// @brief Applies @p o to @p m: each value checked (finite, in its range, a planner of the registry, a time the
+/// mission can read), the mission's marks set to the value's source so that later checks name it.
+/// @throws Error "SOURCE: what was wrong" for the first bad value; @p m is then unchanged.
+void applyOverrides(const MissionOverrides &o, MissionSpec &m);
+
+/// @brief The fields MissionOverrides can change, as text (numbers with 17 digits), by their dotted names, plus
+/// "marked" (the names of the fields a front end or the file gave, sorted): what two front ends must agree on
+/// when given the same overrides (glider_plan --show-mission, Python's Mission.fields()).
+std::vector<std::pair<std::string, std::string>> overridableFields(const MissionSpec &m);
+}  // namespace ompl_glider

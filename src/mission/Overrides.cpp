@@ -1,0 +1,258 @@
+/// @file Overrides.cpp
+/// @brief applyOverrides() and overridableFields() (Overrides.h): the one place where a flag or a keyword changes a
+/// mission.
+
+#include "ompl_glider/mission/Overrides.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "../io/NumberText.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/io/Time.h"
+#include "ompl_glider/ompl/Sectors.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
+
+namespace ompl_glider
+{
+namespace
+{
+/// @p v, refused naming @p source unless it is finite (and > 0 when @p positive).
+double finite(const Given<double> &v, bool positive)
+{
+    if (!std::isfinite(v.value) || (positive && !(v.value > 0.0)))
+        throw Error(v.source + ": expected a finite number" + (positive ? " > 0" : "") + ", got " +
+                    text::number(v.value));
+    return v.value;
+}
+
+void mark(MissionSpec &m, const char *field, const std::string &source)
+{
+    m.marks[field] = SourceMark{source, 0};
+}
+
+/// A time read as the mission reads its departure, refused naming @p source.
+double timeOf(const MissionSpec &m, const std::string &text, const std::string &source)
+{
+    try
+    {
+        return m.timeOf(text);
+    }
+    catch (const Error &e)
+    {
+        throw Error(source + ": " + e.what());
+    }
+}
+
+void applyPlanner(const MissionOverrides &o, MissionSpec &m)
+{
+    if (o.planner)
+    {
+        const PlannerEntry *entry = findPlanner(o.planner->value);
+        if (!entry)
+            throw Error(o.planner->source + ": unknown planner '" + o.planner->value + "' (expected one of " +
+                        plannerNameList() + ")");
+        if (entry->name != m.planner.name)
+        {
+            m.planner.parameters.clear();  // the mission's parameters are the other planner's
+            m.planner.parameterMarks.clear();
+        }
+        m.planner.name = entry->name;
+        mark(m, "planner.name", o.planner->source);
+    }
+    if (o.plannerParameters)
+        for (const auto &[name, value] : o.plannerParameters->value)
+        {
+            m.planner.parameters[name] = value;
+            m.planner.parameterMarks[name] = SourceMark{o.plannerParameters->source, 0};
+        }
+    if (o.gridSize)
+    {
+        m.planner.gridSize = finite(*o.gridSize, true);
+        mark(m, "planner.grid_size", o.gridSize->source);
+    }
+    if (o.sectors)
+    {
+        if (o.sectors->value < kMinSectors || o.sectors->value > kMaxSectors)
+            throw Error(o.sectors->source + ": expected an integer " + std::to_string(kMinSectors) + ".." +
+                        std::to_string(kMaxSectors) + ", got " + std::to_string(o.sectors->value));
+        m.planner.sectors = o.sectors->value;
+        mark(m, "planner.sectors", o.sectors->source);
+    }
+    const std::pair<const std::optional<Given<double>> *, std::pair<double *, const char *>> positives[] = {
+        {&o.timeLimit, {&m.planner.timeLimit, "planner.time_limit"}},
+        {&o.horizon, {&m.planner.horizon, "planner.horizon"}},
+        {&o.goalTolerance, {&m.planner.goalTolerance, "planner.goal_tolerance"}}};
+    for (const auto &[given, target] : positives)
+        if (*given)
+        {
+            *target.first = finite(**given, true);
+            mark(m, target.second, (*given)->source);
+        }
+    if (o.smoothing)
+        m.planner.smoothing = o.smoothing->value;
+    if (o.refinement)
+        m.planner.refinement = o.refinement->value;
+    if (o.globalCheck)
+        m.planner.globalCheck = o.globalCheck->value;
+}
+
+void applyPoint(const std::optional<Given<Point2>> &p, PointSpec &point, const char *field, MissionSpec &m)
+{
+    if (!p)
+        return;
+    for (const double v : {p->value.x, p->value.y})
+        finite(Given<double>{v, p->source}, false);
+    if (point.geographic)
+        point.lonLat = {p->value.x, p->value.y};
+    else
+        point.xy = p->value;
+    mark(m, field, p->source);
+}
+
+void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
+{
+    if (o.speed)
+    {
+        m.vehicle.speed = m.travel.speed = finite(*o.speed, true);
+        mark(m, "vehicle.speed", o.speed->source);
+    }
+    if (o.departure)
+    {
+        m.departure.time = timeOf(m, o.departure->value, o.departure->source);
+        m.departure.window = false;  // one departure in place of a window
+        mark(m, "departure.time", o.departure->source);
+    }
+    applyPoint(o.start, m.start, "start", m);
+    applyPoint(o.goal, m.goal, "goal", m);
+    if (o.region)
+    {
+        const auto [a, b, c, d] = o.region->value;
+        for (const double v : o.region->value)
+            finite(Given<double>{v, o.region->source}, false);
+        m.region.set = true;
+        m.region.geographic = m.start.geographic;
+        if (m.region.geographic)
+            try
+            {
+                m.region.lonLat = geoBox(a, b, c, d);
+            }
+            catch (const Error &e)
+            {
+                throw Error(o.region->source + ": " + e.what());
+            }
+        else if (!(c > a && d > b))
+            throw Error(o.region->source + " expects x_min,y_min,x_max,y_max with x_max > x_min and y_max > y_min, "
+                                           "got " + text::number(a) + "," + text::number(b) + "," +
+                        text::number(c) + "," + text::number(d));
+        else
+            m.region.xy = Box{a, c, b, d};
+        mark(m, "region", o.region->source);
+    }
+    if (o.arrivalWindow)
+    {
+        const std::string &source = o.arrivalWindow->source;
+        const double begin = timeOf(m, o.arrivalWindow->value.first, source + ": begin");
+        const double end = timeOf(m, o.arrivalWindow->value.second, source + ": end");
+        if (!(end >= begin))
+            throw Error(source + ": the end (" + o.arrivalWindow->value.second + ") must not be before the begin (" +
+                        o.arrivalWindow->value.first + ")");
+        if (const PlannerEntry *planner = findPlanner(m.planner.name); planner && planner->stints())
+            throw Error(source + ": the stint planner '" + m.planner.name +
+                        "' flies fixed stints and cannot time its arrival");
+        m.goalWindow = {true, begin, end};
+        for (const char *key : {"goal.window", "goal.window.begin", "goal.window.end"})
+            mark(m, key, source);
+    }
+}
+
+void applyOutputs(const MissionOverrides &o, MissionSpec &m)
+{
+    if (o.coastline)
+    {
+        m.forbidden.coastline = o.coastline->value;
+        m.forbidden.coastlineMark = SourceMark{o.coastline->source, 0};
+    }
+    if (o.outDirectory)
+        m.outputs.directory = o.outDirectory->value;
+    if (o.isochroneInterval)
+    {
+        try
+        {
+            m.outputs.isochroneInterval = parseDuration(o.isochroneInterval->value, m.timeUnitSeconds, m.hasTimeUnit());
+        }
+        catch (const Error &e)
+        {
+            throw Error(o.isochroneInterval->source + ": " + e.what());
+        }
+        if (!(m.outputs.isochroneInterval > 0.0) || !std::isfinite(m.outputs.isochroneInterval))
+            throw Error(o.isochroneInterval->source + ": must be > 0, got '" + o.isochroneInterval->value + "'");
+        mark(m, "outputs.isochrone_interval", o.isochroneInterval->source);
+    }
+    if (o.gotoTurn)
+    {
+        if (!(o.gotoTurn->value >= 0.0 && o.gotoTurn->value <= 180.0))
+            throw Error(o.gotoTurn->source + ": expected degrees in 0..180 (0: every waypoint), got " +
+                        text::number(o.gotoTurn->value));
+        m.outputs.gotoTurnDeg = o.gotoTurn->value;
+    }
+    if (((o.isochrones && o.isochrones->value) || o.isochroneInterval) && !m.outputs.wants(OutputFormatId::Isochrones))
+        m.outputs.files.push_back(OutputFormatId::Isochrones);
+}
+}  // namespace
+
+void applyOverrides(const MissionOverrides &o, MissionSpec &m)
+{
+    MissionSpec changed = m;  // all or nothing
+    applyPlanner(o, changed);
+    applyWhereAndWhen(o, changed);
+    applyOutputs(o, changed);
+    m = std::move(changed);
+}
+
+std::vector<std::pair<std::string, std::string>> overridableFields(const MissionSpec &m)
+{
+    const auto num = [](double v) { return text::number(v, 17); };
+    const auto point = [&](const PointSpec &p) {
+        return p.geographic ? num(p.lonLat.lon) + "," + num(p.lonLat.lat) : num(p.xy.x) + "," + num(p.xy.y);
+    };
+    std::string parameters, marked, files;
+    for (const auto &[name, value] : m.planner.parameters)
+        parameters += (parameters.empty() ? "" : ",") + name + "=" + value;
+    for (const auto &[name, where] : m.marks)
+        marked += (marked.empty() ? "" : ",") + name;
+    for (const OutputFormatId id : m.outputs.files)
+        files += (files.empty() ? "" : ",") + std::to_string(static_cast<int>(id));
+    std::string region = "unset";
+    if (m.region.set)
+        region = m.region.geographic ? num(m.region.lonLat.lonMin) + "," + num(m.region.lonLat.latMin) + "," +
+                                           num(m.region.lonLat.lonMax) + "," + num(m.region.lonLat.latMax)
+                                     : num(m.region.xy.xMin) + "," + num(m.region.xy.yMin) + "," +
+                                           num(m.region.xy.xMax) + "," + num(m.region.xy.yMax);
+    return {{"planner.name", m.planner.name},
+            {"planner.parameters", parameters},
+            {"planner.grid_size", num(m.planner.gridSize)},
+            {"planner.sectors", std::to_string(m.planner.sectors)},
+            {"planner.time_limit", num(m.planner.timeLimit)},
+            {"planner.horizon", num(m.planner.horizon)},
+            {"planner.goal_tolerance", num(m.planner.goalTolerance)},
+            {"planner.smoothing", m.planner.smoothing ? "true" : "false"},
+            {"planner.refinement", m.planner.refinement ? "true" : "false"},
+            {"planner.global_check", m.planner.globalCheck ? "true" : "false"},
+            {"vehicle.speed", num(m.vehicle.speed)},
+            {"travel.speed", num(m.travel.speed)},
+            {"departure.time", num(m.departure.time)},
+            {"departure.window", m.departure.window ? "true" : "false"},
+            {"start", point(m.start)},
+            {"goal", point(m.goal)},
+            {"region", region},
+            {"goal.window", m.goalWindow.set ? num(m.goalWindow.begin) + "," + num(m.goalWindow.end) : "unset"},
+            {"forbidden.coastline", m.forbidden.coastline},
+            {"outputs.directory", m.outputs.directory},
+            {"outputs.files", files},
+            {"outputs.isochrone_interval", num(m.outputs.isochroneInterval)},
+            {"outputs.goto_turn_deg", num(m.outputs.gotoTurnDeg)},
+            {"marked", marked}};
+}
+}  // namespace ompl_glider
