@@ -7,8 +7,9 @@ Rules:
   layers     a file of layer L (include/ompl_glider/L/ or src/L/) includes only headers of L, of the layers below
              L in LAYERS, and the top-level headers (ompl_glider/*.h); so no include runs up a layer and no two
              folders include each other. apps/ may include every layer.
-  size       no file in src/ over MAX_FILE_LINES lines.
-  functions  no function in src/ over MAX_FUNCTION_LINES lines (from its opening to its closing brace).
+  size       no file in src/, apps/ or python/src over MAX_FILE_LINES lines.
+  functions  no function there over MAX_FUNCTION_LINES lines (from its opening to its closing brace).
+  no-issues  no "issue N" in the code or the installed headers: the code says what it does and cites the literature.
   citations  sources cite by the keys of docs/REFERENCES.md ("[EichhornRAS] Eq. 5"), not by author and year.
 """
 import os
@@ -19,6 +20,8 @@ import sys
 LAYERS = ["mpi", "output", "mission", "registry", "reachability", "stints", "planners", "reference", "execution", "ompl",
           "cost", "environment", "current", "io", "core"]
 MAX_FILE_LINES = 700
+SIZED = ["src", "apps", "python/src"]  # the size rules cover the library and both front ends
+ISSUE_WORD = re.compile(r"\bissues? #?\d+", re.I)
 MAX_FUNCTION_LINES = 150
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]ompl_glider/([^/">]+)/')
 RELATIVE_INCLUDE = re.compile(r'^\s*#\s*include\s*"((?:\.\./)+[^"]+)"')
@@ -133,7 +136,7 @@ def functions(path):
 
 def check_sizes(root):
     breaches = []
-    for path, rel in source_files(root, ["src"]):
+    for path, rel in source_files(root, SIZED):
         with open(path, encoding="utf-8", errors="replace") as f:
             count = sum(1 for _ in f)
         if count > MAX_FILE_LINES:
@@ -156,10 +159,22 @@ def check_citations(root):
     return breaches
 
 
+def check_no_issue_numbers(root):
+    breaches = []
+    for path, rel in source_files(root, ["include/ompl_glider"] + SIZED, (".h", ".cpp", ".py", ".pyi")):
+        with open(path, encoding="utf-8", errors="replace") as f:
+            for number, line in enumerate(f, 1):
+                m = ISSUE_WORD.search(line)
+                if m:
+                    breaches.append(f"{rel}:{number}: '{m.group(0)}': say what the code does, not which issue asked")
+    return breaches
+
+
 def main():
     root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
     failed = False
-    for rule, check in (("layers", check_layers), ("size", check_sizes), ("citations", check_citations)):
+    for rule, check in (("layers", check_layers), ("size", check_sizes), ("citations", check_citations),
+                        ("no-issues", check_no_issue_numbers)):
         breaches = check(root)
         print(f"{rule}: {'ok' if not breaches else str(len(breaches)) + ' breach(es)'}")
         for b in breaches:

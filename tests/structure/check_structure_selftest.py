@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The structure checker catches what it claims to: an upward include, a long file, a long function, an
-author-year citation; and passes a tree that keeps the rules. Run by ctest (structure.checker_selftest)."""
+"""The structure checker catches what it claims to: an upward include, a long file, a long function (in the library
+and in the front ends), an author-year citation, an issue number; and passes a tree that keeps the rules. Run by ctest (structure.checker_selftest)."""
 import os
 import subprocess
 import sys
@@ -72,6 +72,19 @@ citation = dict(good)
 citation["src/current/Cite.cpp"] = "// the spline of Akima (1970)\n"
 code, out = run(tree(citation))
 expect(code == 1 and "Akima (1970)" in out, "an author-year citation must fail", out)
+
+front_ends = dict(good)
+front_ends["apps/tool/Flags.cpp"] = function("defineEverything", 160)
+front_ends["python/src/Big.cpp"] = "".join(function(f"h{i}", 10) for i in range(60))
+code, out = run(tree(front_ends))
+expect(code == 1 and "apps/tool/Flags.cpp:2: function defineEverything has 163 lines" in out and
+       "python/src/Big.cpp: 840 lines" in out, "the size rules must cover apps/ and python/src", out)
+
+bookkeeping = dict(good)
+bookkeeping["include/ompl_glider/current/Old.h"] = "/// @brief The jet of issue 12.\n"
+code, out = run(tree(bookkeeping))
+expect(code == 1 and "include/ompl_glider/current/Old.h:1: 'issue 12'" in out,
+       "an issue number in an installed header must fail", out)
 
 unknown = dict(good)
 unknown["src/gadgets/G.cpp"] = "\n"

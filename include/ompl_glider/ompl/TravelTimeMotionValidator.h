@@ -1,6 +1,6 @@
 #pragma once
 /// @file TravelTimeMotionValidator.h
-/// @brief Which time-stamped straight legs a glider can fly (issue #3).
+/// @brief Which time-stamped straight legs a glider can fly.
 
 #include <cstdint>
 #include <memory>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file TravelTimeObjective.h
-/// @brief Arrival-time objective on the time-augmented space (issue #3).
+/// @brief Arrival-time objective on the time-augmented space.
 
 #include <memory>
 
