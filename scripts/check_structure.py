@@ -17,8 +17,8 @@ import re
 import sys
 
 # Top to bottom: a layer may include the layers after it.
-LAYERS = ["mpi", "output", "mission", "registry", "reachability", "stints", "planners", "reference", "execution", "ompl",
-          "cost", "environment", "current", "io", "core"]
+LAYERS = ["mpi", "output", "mission", "registry", "reachability", "stints", "planners", "routes", "reference",
+          "execution", "ompl", "cost", "environment", "current", "io", "core"]
 MAX_FILE_LINES = 700
 SIZED = ["src", "apps", "python/src"]  # the size rules cover the library and both front ends
 ISSUE_WORD = re.compile(r"\bissues? #?\d+", re.I)

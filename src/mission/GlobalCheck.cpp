@@ -13,11 +13,11 @@
 #include "PlanningInternal.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/StopRequest.h"
-#include "ompl_glider/planners/HeadingRefiner.h"
-#include "ompl_glider/planners/HeadingTracker.h"
-#include "ompl_glider/planners/PathSmoother.h"
-#include "ompl_glider/planners/WaypointRefiner.h"
-#include "ompl_glider/reachability/LevelSetPlanner.h"
+#include "ompl_glider/routes/HeadingRefiner.h"
+#include "ompl_glider/routes/HeadingTracker.h"
+#include "ompl_glider/routes/PathSmoother.h"
+#include "ompl_glider/routes/WaypointRefiner.h"
+#include "ompl_glider/routes/CurveLegs.h"
 #include "ompl_glider/reference/ZermeloReference.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
@@ -76,7 +76,7 @@ RouteCandidate plannerCandidate(const PlannedPath &r)
 }
 
 /// The extremal's track (start first, ending on the goal) flown as straight legs: thinned within a small tolerance of
-/// the curve (levelSetWaypoints(): timed by the travel-time code, holds where needed), refined as the planner's path
+/// the curve (legsAlongCurve(): timed by the travel-time code, holds where needed), refined as the planner's path
 /// is, checked as an OMPL path and re-flown accurately.
 PlannedPath straightLegsAlong(const MissionProblem &problem, const std::shared_ptr<const GliderContext> &ctx,
                               const ompl::base::SpaceInformationPtr &si, const std::vector<TimedPoint> &curve,
@@ -86,7 +86,7 @@ PlannedPath straightLegsAlong(const MissionProblem &problem, const std::shared_p
     PlannedPath c = std::move(base);
     std::string why;
     const double tolerance = 2e-3 * c.straightLineLength;
-    std::vector<TimedPoint> legs = levelSetWaypoints(*ctx, curve, tolerance, &why);
+    std::vector<TimedPoint> legs = legsAlongCurve(*ctx, curve, tolerance, &why);
     if (legs.size() < 2)
     {
         c.solved = false;

@@ -13,7 +13,7 @@
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
-#include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/routes/PathSmoother.h"
 
 namespace ompl_glider
 {

@@ -9,9 +9,9 @@
 #include "PlanningInternal.h"
 #include "../io/NumberText.h"
 #include "ompl_glider/execution/Reflight.h"
-#include "ompl_glider/planners/HeadingRefiner.h"
-#include "ompl_glider/planners/HeadingTracker.h"
-#include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/routes/HeadingRefiner.h"
+#include "ompl_glider/routes/HeadingTracker.h"
+#include "ompl_glider/routes/PathSmoother.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace ompl_glider

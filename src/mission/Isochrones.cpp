@@ -10,7 +10,6 @@
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/reachability/LevelSet.h"
-#include "ompl_glider/reachability/LevelSetPlanner.h"
 
 namespace ompl_glider
 {

@@ -28,7 +28,7 @@
 #include <ompl/base/SpaceInformation.h>
 
 #include "ompl_glider/mission/Planning.h"
-#include "ompl_glider/planners/WaypointRefiner.h"
+#include "ompl_glider/routes/WaypointRefiner.h"
 #include "ompl_glider/reference/ZermeloReference.h"
 
 namespace ompl_glider

@@ -13,9 +13,9 @@
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/execution/Dive.h"
 #include "ompl_glider/ompl/PositionGoal.h"
-#include "ompl_glider/planners/HeadingRefiner.h"
+#include "ompl_glider/routes/HeadingRefiner.h"
 #include "ompl_glider/planners/IsochroneSearch.h"
-#include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/routes/PathSmoother.h"
 
 namespace ompl_glider
 {

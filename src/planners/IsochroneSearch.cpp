@@ -6,7 +6,7 @@
 
 #include <ompl/util/Console.h>
 
-#include "ompl_glider/planners/HeadingTracker.h"
+#include "ompl_glider/routes/HeadingTracker.h"
 
 namespace ompl_glider
 {

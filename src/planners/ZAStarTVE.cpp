@@ -14,8 +14,8 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
-#include "ompl_glider/planners/PathSmoother.h"
-#include "ompl_glider/planners/WaypointRefiner.h"
+#include "ompl_glider/routes/PathSmoother.h"
+#include "ompl_glider/routes/WaypointRefiner.h"
 #include "../io/NumberText.h"
 
 namespace ompl_glider

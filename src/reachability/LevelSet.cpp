@@ -604,4 +604,10 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
     out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     return out;
 }
+double defaultLevelSetResolution(const GliderContext &ctx)
+{
+    const Region &r = ctx.region;
+    return std::max(r.xMax - r.xMin, r.yMax - r.yMin) / 200.0;
+}
+
 }  // namespace ompl_glider

@@ -16,7 +16,7 @@
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
 #include "ompl_glider/output/SummaryJson.h"
-#include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/routes/PathSmoother.h"
 
 using namespace ompl_glider;
 using json = nlohmann::json;

@@ -22,7 +22,7 @@
 #include "ompl_glider/output/Report.h"
 #include "ompl_glider/output/SlocumGoto.h"
 #include "ompl_glider/output/SummaryJson.h"
-#include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/routes/PathSmoother.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/planners/Wavefront.h"
 #include "ompl_glider/planners/ZAStarTVE.h"

@@ -9,7 +9,7 @@
 #include "PostprocessTestUtil.h"
 #include "ompl_glider/current/DoubleGyre.h"
 #include "ompl_glider/current/UniformCurrent.h"
-#include "ompl_glider/planners/HeadingTracker.h"
+#include "ompl_glider/routes/HeadingTracker.h"
 #include "ompl_glider/planners/IsochroneSearch.h"
 
 using namespace ompl_glider;

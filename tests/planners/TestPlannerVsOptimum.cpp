@@ -14,8 +14,8 @@
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/ompl/PathResimulation.h"
-#include "ompl_glider/planners/PathSmoother.h"
-#include "ompl_glider/planners/WaypointRefiner.h"
+#include "ompl_glider/routes/PathSmoother.h"
+#include "ompl_glider/routes/WaypointRefiner.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 #include "ompl_glider/reference/ZermeloReference.h"
 

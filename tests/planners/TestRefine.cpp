@@ -11,8 +11,8 @@
 #include "ompl_glider/current/LinearShear.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/current/UniformCurrent.h"
-#include "ompl_glider/planners/PathSmoother.h"
-#include "ompl_glider/planners/WaypointRefiner.h"
+#include "ompl_glider/routes/PathSmoother.h"
+#include "ompl_glider/routes/WaypointRefiner.h"
 
 using namespace ompl_glider;
 using namespace ompl_glider::test;

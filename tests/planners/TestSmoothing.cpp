@@ -13,7 +13,7 @@
 #include "ompl_glider/current/UniformCurrent.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
-#include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/routes/PathSmoother.h"
 #include "ompl_glider/planners/TveSearch.h"
 
 using namespace ompl_glider;

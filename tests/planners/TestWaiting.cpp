@@ -20,7 +20,7 @@
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
-#include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/routes/PathSmoother.h"
 #include "ompl_glider/planners/TveSearch.h"
 #include "ompl_glider/planners/ZAStarTVE.h"
 

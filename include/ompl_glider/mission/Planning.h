@@ -20,7 +20,7 @@
 #include "ompl_glider/mission/Isochrones.h"
 #include "ompl_glider/mission/MissionExecution.h"
 #include "ompl_glider/mission/MissionProblem.h"
-#include "ompl_glider/stints/StintSimulator.h"
+#include "ompl_glider/execution/Stints.h"
 
 namespace ompl_glider
 {

@@ -23,7 +23,7 @@
 #include "ompl_glider/execution/Dive.h"
 #include "ompl_glider/execution/HeadingRoute.h"
 #include "ompl_glider/ompl/GliderContext.h"
-#include "ompl_glider/planners/HeadingRefiner.h"
+#include "ompl_glider/routes/HeadingRefiner.h"
 
 namespace ompl_glider
 {

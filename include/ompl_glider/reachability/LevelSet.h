@@ -131,4 +131,6 @@ private:
     LevelSetParams params_;
     std::unique_ptr<Impl> impl_;
 };
+/// @brief The cell size LevelSetPlanner uses for resolution 0: 1/200 of the region's larger side.
+double defaultLevelSetResolution(const GliderContext &ctx);
 }  // namespace ompl_glider

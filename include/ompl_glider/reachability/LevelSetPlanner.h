@@ -116,12 +116,5 @@ private:
     std::string reason_;
 };
 
-/// @brief The cell size LevelSetPlanner uses for resolution 0: 1/200 of the region's larger side.
-double defaultLevelSetResolution(const GliderContext &ctx);
 
-/// @brief A backtracked level-set path (LevelSetSolver) as waypoints a glider flies: thinned to straight legs within
-/// @p tolerance of the curve and free of forbidden regions, timed by the travel-time code from the first point's
-/// time; holds kept where the glider can hold. Empty when no timing is feasible (@p why, if given, says where).
-std::vector<TimedPoint> levelSetWaypoints(const GliderContext &ctx, const std::vector<TimedPoint> &path,
-                                             double tolerance, std::string *why = nullptr);
 }  // namespace ompl_glider

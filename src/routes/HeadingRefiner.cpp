@@ -1,5 +1,5 @@
 // Refinement of heading routes by direct shooting (see HeadingRefiner.h).
-#include "ompl_glider/planners/HeadingRefiner.h"
+#include "ompl_glider/routes/HeadingRefiner.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/routes/PathSmoother.h"
 
 #include <cmath>
 #include <limits>

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ompl_glider/execution/Reflight.h"
-#include "ompl_glider/planners/HeadingRefiner.h"
+#include "ompl_glider/routes/HeadingRefiner.h"
 
 namespace ompl_glider
 {

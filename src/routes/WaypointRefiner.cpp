@@ -1,4 +1,4 @@
-#include "ompl_glider/planners/WaypointRefiner.h"
+#include "ompl_glider/routes/WaypointRefiner.h"
 
 #include <algorithm>
 #include <cmath>

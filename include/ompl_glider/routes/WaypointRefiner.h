@@ -13,7 +13,7 @@
 #include <ompl/geometric/PathGeometric.h>
 
 #include "ompl_glider/ompl/GliderContext.h"
-#include "ompl_glider/planners/PathSmoother.h"
+#include "ompl_glider/routes/PathSmoother.h"
 
 namespace ompl_glider
 {

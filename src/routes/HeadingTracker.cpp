@@ -1,5 +1,5 @@
 // A timed path followed by held headings, piece by piece (see HeadingTracker.h).
-#include "ompl_glider/planners/HeadingTracker.h"
+#include "ompl_glider/routes/HeadingTracker.h"
 
 #include <algorithm>
 #include <cmath>
