@@ -9,7 +9,8 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bash "$root/scripts/setup.sh"
 build="$root/build-fuzz"
-flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=all -fno-omit-frame-pointer -O1 -g"
+# line tables only: the reports name file:line, and a clean build compiles and links faster than with full -g
+flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=all -fno-omit-frame-pointer -O1 -gline-tables-only"
 CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Debug -DOMPL_GLIDER_BUILD_TESTS=ON \
   -DOMPL_GLIDER_BUILD_BENCHMARKS=OFF -DOMPL_GLIDER_BUILD_FUZZERS=ON \
   -DOMPL_GLIDER_BUILD_PYTHON=OFF -DOMPL_GLIDER_WITH_MPI=OFF -DCMAKE_CXX_FLAGS="$flags" \

@@ -10,6 +10,8 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:dete
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
 cd "$root/build-fuzz"
+mkdir -p Testing/Temporary  # the longest cases first (as scripts/run_tests.sh)
+[ -s Testing/Temporary/CTestCostData.txt ] || cp "$root/tests/ctest_costs.txt" Testing/Temporary/CTestCostData.txt
 # Left out here, run in CI's ordinary build (.ci/run: run_tests.sh --all):
 # - the package tests (a second copy of the library built and installed with the system's flags) and the cases
 #   labelled ci, StrongCurrentsFine and TrustProperty (minutes of planning each);

@@ -16,4 +16,8 @@ bash "$root/scripts/setup.sh"
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DOMPL_GLIDER_BUILD_TESTS=ON >/dev/null
 cmake --build "$root/build" -j"$(nproc)"
 cd "$root/build"
+# a fresh build has no test times: seed ctest's cost data with the measured ones (tests/ctest_costs.txt: name, runs,
+# seconds), so that -j starts the longest cases first instead of leaving one of them to run alone at the end
+mkdir -p Testing/Temporary
+[ -s Testing/Temporary/CTestCostData.txt ] || cp "$root/tests/ctest_costs.txt" Testing/Temporary/CTestCostData.txt
 ctest --output-on-failure -j"$(nproc)" ${select[@]+"${select[@]}"} "$@"
