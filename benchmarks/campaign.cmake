@@ -1,4 +1,4 @@
-# benchmarks of campaign: the OMPL Benchmark campaign of issue #4 (run it with benchmarks/run_campaign.sh)
+# benchmarks of campaign: the OMPL Benchmark campaign (run it with benchmarks/run_campaign.sh)
 add_executable(glider_campaign ${CMAKE_CURRENT_LIST_DIR}/campaign/Campaign.cpp)
 target_link_libraries(glider_campaign PRIVATE ompl_glider::ompl_glider)
 target_compile_options(glider_campaign PRIVATE -Wall -Wextra)

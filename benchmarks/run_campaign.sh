@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The OMPL Benchmark campaign of issue #4 in one command.
+# The OMPL Benchmark campaign in one command.
 #
 #   benchmarks/run_campaign.sh [--quick] OUTDIR
 #
@@ -10,7 +10,7 @@
 # into OUTDIR/campaign.db (load it in Planner Arena), and writes the plots OUTDIR/travel_time.png,
 # solve_time.png, success_rate.png, maps.png and the Markdown table OUTDIR/table.md (also printed).
 # Extra arguments after OUTDIR are passed to glider_campaign (e.g. --runs 3 --time 1 --problems islands).
-# The strong-current set of issue 24 (the jet at V = 0.2 and 0.15, a double gyre six times V; ZA*TVE, LevelSet,
+# The strong-current set (the jet at V = 0.2 and 0.15, a double gyre six times V; ZA*TVE, LevelSet,
 # Isochrone and OMPL's control planners oc::SST, oc::RRT, oc::KPIECE1), alone and quickly:
 #   benchmarks/run_campaign.sh --quick OUTDIR --runs 3 --time 5 --problems strong
 # (the maps of maps.png stay those of the four classic problems).

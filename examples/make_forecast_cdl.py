@@ -3,7 +3,7 @@
 form (lon, lat, depth, time; u/v in m/s with _FillValue on an island). Build the NetCDF file with
     ncgen -o examples/labrador_forecast.nc examples/labrador_forecast.cdl
 With --nowcast it writes examples/labrador_nowcast.cdl instead: "another model" of the same ocean for flying plans
-in (issue 13): the jet 0.1 degree further north and 20 % weaker, the tide 1.5 h later and 25 % stronger, the
+in: the jet 0.1 degree further north and 20 % weaker, the tide 1.5 h later and 25 % stronger, the
 drift reversed; its times in minutes since 2026-03-15 06:00 every 3 h (another origin and units).
 The field: an eastward shelf-break jet centred at 48.2 N that weakens with depth, a semi-diurnal tide (M2,
 12.42 h) and a slow northward drift that grows during the forecast."""

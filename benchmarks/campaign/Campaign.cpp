@@ -1,6 +1,6 @@
-// The OMPL Benchmark campaign of issue #4: ZA*TVE and its relatives against OMPL's sampling planners on four
+// The OMPL Benchmark campaign: ZA*TVE and its relatives against OMPL's sampling planners on four
 // meandering-jet problems (open water, islands, drifting ice, a time-windowed closure), every planner on the
-// identical SpaceInformation of one SimpleSetup per problem; and the strong-current set of issue 24 (the jet at
+// identical SpaceInformation of one SimpleSetup per problem; and the strong-current set (the jet at
 // V = 0.2 and 0.15, a double gyre six times the speed), where ZA*TVE, LevelSet and the heading planner Isochrone (when
 // the registry has it) run beside OMPL's control planners oc::SST, oc::RRT and oc::KPIECE1 on the heading-control
 // setup of the same problem (CampaignControl.h: one more experiment per problem, its own log).
@@ -233,7 +233,7 @@ double discArrival(const Reachability &r, Point2 goal, double radius)
     return best;
 }
 
-/// The optimum of one problem (issue 12) as a line of reference.csv (and the line printed): the level-set front (LevelSetSolver,
+/// The optimum of one problem as a line of reference.csv (and the line printed): the level-set front (LevelSetSolver,
 /// [LollaLevelSet]) at cells 4h, 2h, h (the convergence study; h = referenceCell), in open water also Zermelo
 /// shooting. The reference is shooting where it exists, else the level set extrapolated to cell 0. Ice zones are
 /// kept out of the front (the glider cannot surface there), an upper bound of the optimum; the same front with the

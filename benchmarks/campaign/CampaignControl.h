@@ -1,6 +1,6 @@
 #pragma once
 /// @file CampaignControl.h
-/// @brief The control-planning part of the benchmark campaign (issue 24): OMPL's control planners (oc::SST, oc::RRT,
+/// @brief The control-planning part of the benchmark campaign: OMPL's control planners (oc::SST, oc::RRT,
 /// oc::KPIECE1) on the heading-control setup of a campaign problem (makeControlSetup(), GliderControl.h), run by
 /// ompl::tools::Benchmark's constructor for oc::SimpleSetup into their own log (one more experiment of the database).
 ///

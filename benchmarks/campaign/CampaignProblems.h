@@ -1,8 +1,8 @@
 #pragma once
 /// @file CampaignProblems.h
-/// @brief The problems of the benchmark campaign. The "classic" set (issue #4): four problems on the meandering jet of
+/// @brief The problems of the benchmark campaign. The "classic" set: four problems on the meandering jet of
 /// [EichhornRAS] Sec. 6.1, region x in [0, 10], y in [-4, 4], V = 0.5, t0 = 0, from the south-west to the north-east
-/// across the jet. The "strong" set (issue 24): currents several times the glider's speed, where straight legs fail
+/// across the jet. The "strong" set: currents several times the glider's speed, where straight legs fail
 /// and OMPL's control planners (heading controls, GliderControl.h) run beside the registry's planners.
 
 #include <memory>
@@ -28,7 +28,7 @@ struct CampaignProblem
     std::string description;                        ///< one line
     GliderProblem problem;                          ///< field, box, t0, horizon, start, goal, V
     std::shared_ptr<ForbiddenRegions> environment;  ///< forbidden regions (also in problem.environment)
-    std::string set{"classic"};                     ///< "classic" (issue #4) or "strong" (issue 24)
+    std::string set{"classic"};                     ///< "classic" or "strong"
     /// Finest cell of the level-set reference (the campaign also solves at 2x and 4x this cell and extrapolates)
     double referenceCell{0.025};
     /// The optimum also by Zermelo shooting (ZermeloReference; open water of the classic set only)
@@ -46,7 +46,7 @@ inline std::vector<std::string> strongCurrentPlanners()
     return {"ZA*TVE", "LevelSet", "Isochrone"};
 }
 
-/// @brief The strong-current problems (issue 24):
+/// @brief The strong-current problems:
 ///   - jet_v020, jet_v015: the built-in Gulf Stream mission (meandering jet, peak speed about 1, box [0, 10] x
 ///     [-4, 4], horizon 60) from (1, -3) to (8, 3) across the jet at V = 0.2 and 0.15, as `glider_plan --speed V`;
 ///   - gyre: the double gyre of the registry ("double_gyre", amplitude 0.5, length 1: two gyres on [0, 2] x [0, 1],

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots and the Markdown table of the benchmark campaign (issue #4) from the Planner Arena SQLite database written
+"""Plots and the Markdown table of the benchmark campaign from the Planner Arena SQLite database written
 by ompl_benchmark_statistics.
 
 Usage: report.py DB OUTDIR [REFERENCE_CSV]

@@ -4,7 +4,7 @@
 // without smoothing or refinement). The brute force searches
 // at every departure of a fine grid over the window; the optimal-departure scheme uses supporting points every
 // `spacing`, Akima interpolation and Brent's method. Prints both counts and wall times and checks the claim of
-// issue 6: the departure found is within 1 % (travel time) of the brute-force best with at most a fifth of its
+// The departure found is within 1 % (travel time) of the brute-force best with at most a fifth of its
 // searches.
 //
 // Usage: bench_departure [--begin 5] [--end 21] [--fine 0.02] [--spacing 1] [--tol 0.001] [--threads 0]

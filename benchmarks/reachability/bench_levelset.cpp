@@ -1,4 +1,4 @@
-// Level-set planner (issue 12): error against the shooting optimum versus wall time, beside ZA*TVE + refinement, on
+// Level-set planner: error against the shooting optimum versus wall time, beside ZA*TVE + refinement, on
 // the eight meandering-jet crossings of test_planner_vs_optimum (region x in [0, 10], y in [-4, 4], V = 0.5,
 // t0 = 0); then what the narrow band, the gradient heading and the threads each buy at cell 0.05.
 //   bench_levelset [--quick]

@@ -1,4 +1,4 @@
-// Strong currents (issue 24): per vehicle speed V and per planner, the travel time against a fine level set, the wall
+// Strong currents: per vehicle speed V and per planner, the travel time against a fine level set, the wall
 // time, and the share of random start/goal pairs each planner solves, on the meandering jet (peak speed about 1;
 // region x in [0, 10], y in [-4, 4]) and on a time-dependent double gyre whose flow is about six times V.
 // "default" is the pipeline as glider_plan runs it (ZA*TVE, switching to Isochrone, then LevelSet, when the lattice

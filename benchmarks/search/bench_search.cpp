@@ -1,4 +1,4 @@
-// bench_search (issue 15): cost-function calls (CFC), current-model calls (CMC), expanded vertices, wall time and
+// bench_search: cost-function calls (CFC), current-model calls (CMC), expanded vertices, wall time and
 // travel time against TVE of the lattice search configurations, on
 //   - the repository's problems: the five Table 4 starts ([EichhornRAS] Table 4, goal (7.6, 1.2)) and the four
 //     campaign problems (benchmarks/campaign/CampaignProblems.h), meandering jet, grid 0.4, 3 sectors;
@@ -29,7 +29,7 @@
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "planners/TveSearch.h"  // internal to the library (src/)
 
 using namespace ompl_glider;
 
@@ -52,7 +52,7 @@ std::vector<Config> makeConfigs()
     astarEq1.coarseFactor = 1;
     astarEq1.tightBounds = false;
     c.push_back({"A*TVE, Eq. 1", astarEq1});
-    TveOptions before;  // the default before issue 15: Eq. 1 bounds, certify_tolerance 0.1, full search
+    TveOptions before;  // the earlier default: Eq. 1 bounds, certify_tolerance 0.1, full search
     before.coarseFactor = 1;
     before.tightBounds = false;
     before.certifyTolerance = 0.1;

@@ -1,4 +1,4 @@
-// Issue 14: the comparison of [IsernObstacles] Tables I-III in shape, on our own scenarios: remaining distance to
+// The comparison of [IsernObstacles] Tables I-III in shape, on our own scenarios: remaining distance to
 // the goal after a 4-day mission of 8 h stints for direct to goal, CTS-A*, Optim and Init-Optim, relative to
 // Init-Optim (mean and standard deviation over random start/goal pairs with islands near the route), and the
 // computing time of each, at 0.4 and 0.2 m/s; on the meandering jet (10 km per length unit, 12500 s per time unit:

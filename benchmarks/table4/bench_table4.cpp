@@ -25,7 +25,7 @@
 #include "../campaign/CampaignProblems.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "planners/TveSearch.h"  // internal to the library (src/)
 #include "ompl_glider/planners/ZAStarTVE.h"
 
 using namespace ompl_glider;

@@ -191,19 +191,13 @@ GliderProblem checkedProblem(const MissionProblem &problem, double departure, do
 StintSettings stintSettings(const MissionProblem &problem, double departure)
 {
     const MissionSpec &m = problem.getSpec();
-    StintSettings s;
-    s.duration = m.stints.duration;
-    s.missionDuration = m.stints.missionDuration;
-    s.bearingStep = m.stints.bearingStep;
-    s.objective = m.stints.objective;
-    s.radius = m.stints.radius;
-    s.step = m.stints.step;
+    StintSettings s = m.stints;  // the section's settings, read at the vehicle's depth
     s.depth = m.vehicle.depth;
     const double end = problem.getField()->timeEnd();
     if (std::isfinite(end) && departure + s.missionDuration > end * (1.0 + 1e-12))
         throw Error(m.place("stints.mission_duration") + ": the mission would end at t = " +
-                    std::to_string(departure + s.missionDuration) + ", after the forecast (it ends at t = " +
-                    std::to_string(end) + "): shorten it, depart earlier, or hold the last forecast time "
+                    text::number(departure + s.missionDuration) + ", after the forecast (it ends at t = " +
+                    text::number(end) + "): shorten it, depart earlier, or hold the last forecast time "
                     "(current.horizon: hold_last)");
     return s;
 }

@@ -18,7 +18,7 @@
 #include "ompl_glider/routes/PathSmoother.h"
 #include "ompl_glider/routes/WaypointRefiner.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
-#include "ompl_glider/stints/PathToStints.h"
+#include "ompl_glider/routes/PathToStints.h"
 #include "ompl_glider/ompl/PipelinePlanner.h"
 
 namespace ompl_glider
@@ -48,10 +48,7 @@ StintOutcome convertToStints(const MissionProblem &problem, const PlannedPath &r
     StintOutcome o;
     o.plan = c.plan;
     o.converted = true;
-    o.duration = s.duration;
-    o.missionDuration = s.missionDuration;
-    o.objective = s.objective;
-    o.radius = s.radius;
+    o.settings = s;
     o.pathTravelTime = c.pathTravelTime;
     o.stintTravelTime = c.stintTravelTime;
     o.loss = c.loss;
@@ -194,10 +191,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
             // a stint plan is flown, not smoothed: its surfacings are the path
             StintOutcome o;
             o.plan = *plan;
-            o.duration = m.stints.duration;
-            o.missionDuration = m.stints.missionDuration;
-            o.objective = m.stints.objective;
-            o.radius = m.stints.radius;
+            o.settings = stintSettings(problem, departure);
             r.solved = true;
             r.raw = r.smoothed = r.path = o.plan.surfacings;
             r.rawTravelTime = r.smoothedTravelTime = r.travelTime = r.path.back().t - departure;

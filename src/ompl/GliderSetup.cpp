@@ -57,8 +57,8 @@ ob::PlannerStatus checkStartAndGoal(const ob::ProblemDefinition &pdef, std::stri
             std::ostringstream os;
             os << "invalid start: "
                << (checker ? checker->whyInvalid(st)
-                           : "(" + std::to_string(s->getX()) + ", " + std::to_string(s->getY()) + ") at time " +
-                                 std::to_string(s->getTime()) + " is rejected by the state validity checker");
+                           : "(" + text::number(s->getX()) + ", " + text::number(s->getY()) + ") at time " +
+                                 text::number(s->getTime()) + " is rejected by the state validity checker");
             *why = os.str();
         }
         return ob::PlannerStatus::INVALID_START;

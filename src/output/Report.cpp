@@ -209,7 +209,8 @@ void printReport(std::ostream &out, const MissionResult &r)
         // constant-bearing stints ([IsernObstacles]): what the glider flies
         const StintOutcome &st = *p.stints;
         out << format("Stints:             %zu of %g (%s), remaining distance %.4f%s%s\n", st.plan.bearings.size(),
-                      st.duration, st.converted ? "the path converted" : stintObjectiveName(st.objective).c_str(),
+                      st.settings.duration,
+                      st.converted ? "the path converted" : stintObjectiveName(st.settings.objective).c_str(),
                       st.plan.remainingDistance, st.plan.reached ? ", goal reached" : "",
                       st.plan.grounded ? ", stopped on land" : "");
         if (st.converted)

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../io/NumberText.h"
 #include "JsonValues.h"
 #include "ompl_glider/Exception.h"
 
@@ -39,7 +40,7 @@ void checkFinite(const json &j, const std::string &field)
                     "); nothing was written");
     };
     if (j.is_number_float() && !std::isfinite(j.get<double>()))
-        fail(std::to_string(j.get<double>()));
+        fail(text::number(j.get<double>()));
     if (j.is_string())
     {
         const std::string key = field.substr(field.find_last_of('.') + 1);
@@ -310,10 +311,10 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     {
         const StintOutcome &s = *p.stints;
         j["stints"] = {{"converted", s.converted},
-                       {"duration", s.duration},
-                       {"mission_duration", s.missionDuration},
-                       {"objective", stintObjectiveName(s.objective)},
-                       {"radius", s.radius},
+                       {"duration", s.settings.duration},
+                       {"mission_duration", s.settings.missionDuration},
+                       {"objective", stintObjectiveName(s.settings.objective)},
+                       {"radius", s.settings.radius},
                        {"count", s.plan.bearings.size()},
                        {"reached", s.plan.reached},
                        {"arrival_time", jnum(s.plan.arrivalTime)},

@@ -1,4 +1,4 @@
-#include "ompl_glider/planners/detail/Lattice.h"
+#include "detail/Lattice.h"
 #include "ompl_glider/ompl/Sectors.h"
 
 #include <algorithm>

@@ -6,7 +6,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ResourceLimits.h"
-#include "ompl_glider/planners/detail/Lattice.h"
+#include "detail/Lattice.h"
 #include "../io/NumberText.h"
 
 namespace ompl_glider

@@ -1,4 +1,4 @@
-#include "ompl_glider/planners/detail/SearchHeuristic.h"
+#include "detail/SearchHeuristic.h"
 
 #include <algorithm>
 #include <cmath>

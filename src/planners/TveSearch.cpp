@@ -3,7 +3,7 @@
 /// phases of greedyDeadline (runPhases()) and coarse-to-fine (runCoarseToFine()); CALC-OPTDIR (calcOptimalCourse());
 /// the path and the tree of a search.
 
-#include "ompl_glider/planners/TveSearch.h"
+#include "TveSearch.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 /// @brief One search of TveSearch ([EichhornRAS] Table 2 with the switches of TveOptions): TveSearch::runCore() and
 /// its steps (TveSearch::Core).
 
-#include "ompl_glider/planners/TveSearch.h"
+#include "TveSearch.h"
 
 #include <algorithm>
 #include <cmath>

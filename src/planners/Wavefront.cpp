@@ -17,7 +17,7 @@
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
-#include "ompl_glider/planners/detail/Lattice.h"
+#include "detail/Lattice.h"
 #include "ompl_glider/routes/PathSmoother.h"
 #include "SearchSetting.h"
 #include "ompl_glider/ResourceLimits.h"

@@ -1,4 +1,5 @@
 #include "ompl_glider/planners/ZAStarTVE.h"
+#include "TveSearch.h"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,5 @@
 #include "ompl_glider/reference/ZermeloReference.h"
+#include "../io/NumberText.h"
 #include "../execution/DormandPrince.h"
 
 #include <algorithm>
@@ -92,7 +93,7 @@ ZermeloReference::ZermeloReference(std::shared_ptr<const CurrentField> field, Ze
     if (!field_)
         throw Error("ZermeloReference: no current field given");
     if (!(params_.speed > 0.0))
-        throw Error("ZermeloReference: speed must be > 0 (got " + std::to_string(params_.speed) + ")");
+        throw Error("ZermeloReference: speed must be > 0 (got " + text::number(params_.speed) + ")");
     if (!(params_.relTol > 0.0) || !(params_.absTol > 0.0) || !(params_.scanRelTol > 0.0))
         throw Error("ZermeloReference: integrator tolerances relTol, scanRelTol and absTol must be > 0");
     if (params_.headingSamples < 8)

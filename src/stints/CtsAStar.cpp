@@ -6,7 +6,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "StintStep.h"
+#include "../routes/StintStep.h"
 
 namespace ompl_glider
 {

@@ -11,7 +11,7 @@
 #include "../io/NumberText.h"
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
-#include "ompl_glider/stints/BearingOptimizer.h"
+#include "ompl_glider/routes/BearingOptimizer.h"
 
 namespace ompl_glider
 {

@@ -1,9 +1,6 @@
-# stints/: constant-bearing stints between surfacings ([IsernObstacles]): the stint simulator, CTS-A*, the bearing
-# optimisation (NLopt), the stint planners and the conversion of any timed path to stints
+# stints/: the stint planners ([IsernObstacles]): CTS-A* and StintPlanner (its methods), on the stint simulator and
+# the bearing optimisation of routes/
 list(APPEND OMPL_GLIDER_SOURCES
-  ${CMAKE_CURRENT_LIST_DIR}/StintSimulator.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CtsAStar.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/BearingOptimizer.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/PathToStints.cpp
   ${CMAKE_CURRENT_LIST_DIR}/StintPlanner.cpp
 )

@@ -176,7 +176,7 @@ yaml_case("wavefront-time-step-negative",
           "planner.parameters.time_step")
 yaml_case("wavefront-time-step-tiny", mission("planner: {name: Wavefront, grid_size: 0.5, parameters: {time_step: 1e-9}}"),
           "m.yaml:7: field 'planner.parameters.time_step': 2.081e+12 time intervals")
-# constant-bearing stints (issue 14)
+# constant-bearing stints
 yaml_case("stints-planner-without-section", mission("planner: {name: init_optim}"), "m.yaml:7: field 'planner.name'")
 yaml_case("stints-duration-zero", mission("stints: {duration: 0, mission_duration: 10}"),
           "m.yaml:8: field 'stints.duration'")
@@ -202,7 +202,7 @@ yaml_case("stints-not-a-map", mission("stints: 8"), "stints")
 yaml_case("stints-window-remaining-distance",
           mission("planner: {name: optim}", "departure: {window: {begin: 0, end: 5}}",
                   "stints: {duration: 1, mission_duration: 10}"), "departure.window")
-# level set and isochrones (issue 12)
+# level set and isochrones
 yaml_case("levelset-resolution-negative", mission("planner: {name: LevelSet, parameters: {resolution: -1}}"),
           "resolution")
 yaml_case("levelset-cfl-huge", mission("planner: {name: LevelSet, parameters: {cfl: 5}}"), "cfl")
@@ -223,7 +223,7 @@ case("cli-goto-turn-negative", ["--goto-turn=-5", "--out", "{out}"], 2, "--goto-
 case("cli-isochrone-interval-zero", ["--isochrone-interval", "0", "--out", "{out}"], 2, "--isochrone-interval")
 case("cli-isochrone-interval-fortnight", ["--isochrone-interval", "1 fortnight", "--out", "{out}"], 2,
      "--isochrone-interval")
-# execution in another ocean, ensembles (issue 13)
+# execution in another ocean, ensembles
 yaml_case("execution-unknown-field", mission("execution: {surfacing: 1}"), "m.yaml:8: unknown field 'execution.surfacing'")
 yaml_case("execution-strategy-unknown", mission("execution: {strategies: [current_sensitive, zigzag]}"),
           "m.yaml:8: field 'execution.strategies[1]'")
@@ -447,7 +447,7 @@ variables:
 data: y = 0, 10000, 20000, 30000 ; x = 0, 10000, 20000, 30000, 40000 ;
 }
 """
-# the NetCDF flags of issue 10: units (checked with UDUNITS-2 before the file is read), the time record, the time units
+# the NetCDF flags : units (checked with UDUNITS-2 before the file is read), the time record, the time units
 nc_case("flag-velocity-units-unparseable", forecast(), "--velocity-units: units 'parsecs per thingy' not understood",
         extra=("--velocity-units", "parsecs per thingy"))
 nc_case("flag-velocity-units-not-velocity", forecast(), "--velocity-units: units 'degC' are not a velocity",
@@ -650,7 +650,7 @@ case("memory-limit-env-bad", ["--out", "{out}"], 2, "OMPL_GLIDER_MEMORY_LIMIT", 
 case("out-is-a-file", ["--out", "afile"], 2, "afile")
 case("out-unwritable", ["--out", "/proc/glider_out"], 2, "/proc/glider_out")
 
-# --- goals in time (issue 12): goal.window and --arrive-between ---------------------------------------------------
+# --- goals in time: goal.window and --arrive-between ---------------------------------------------------
 yaml_case("goal-window-reversed", mission("goal: {x: 9, y: 0, window: {begin: 20, end: 10}}"),
           "m.yaml:5: field 'goal.window.end': must not be before begin")
 yaml_case("goal-window-missing-end", mission("goal: {x: 9, y: 0, window: {begin: 20}}"),

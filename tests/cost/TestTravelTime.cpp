@@ -366,7 +366,7 @@ const JetLeg kJetLegs[] = {{1.0, -1.0, 1.4, 0.2, 0.0}, {2.0, 2.0, 3.5, -0.5, 4.5
                            {3.0, 1.0, 3.4, -0.2, 9.0}, {1.0, -1.0, 1.4, 0.2, 7.5}};
 }  // namespace
 
-// Issue 24, "leg tolerances relative to the leg": with rtol > 0 a step is judged against min(eps, rtol * its time).
+// "leg tolerances relative to the leg": with rtol > 0 a step is judged against min(eps, rtol * its time).
 TEST(TravelTime, RelativeToleranceOffIsTheAbsoluteOneBitForBit)
 {
     // rtol so large that rtol * t_step >= eps on every step: the same steps, the same bits, as rtol = 0

@@ -1,5 +1,5 @@
 #pragma once
-// Model grids as ocean models write them, written with NetCDF-C for the tests (issue 10): a global curvilinear
+// Model grids as ocean models write them, written with NetCDF-C for the tests: a global curvilinear
 // grid whose i-index wraps (WrapGrid) and a ROMS-like Arakawa C grid (RomsGrid). Both come from an analytic
 // eastward/northward current, so that the loaded field and the planned routes can be checked against it.
 #include <algorithm>

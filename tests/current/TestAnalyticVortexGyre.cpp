@@ -1,4 +1,4 @@
-// Closed-form checks of the two strong-current test flows (issue 24): the time-dependent double gyre
+// Closed-form checks of the two strong-current test flows: the time-dependent double gyre
 // ([ShaddenLCS]) and the Rankine vortex ([LollaLevelSet]'s benchmark), and the closed-form travel times in the
 // vortex that the planners' tests use as independent references.
 //

@@ -1,4 +1,4 @@
-// Agreement of the gridded model with the analytic field it samples (issue 5 "Proof"): the meandering jet
+// Agreement of the gridded model with the analytic field it samples : the meandering jet
 // ([EichhornRAS] Sec. 6.1) sampled to a Cartesian NetCDF grid (spacing 0.1, time step 0.25, its own dimensionless
 // units), loaded with bilinear/linear interpolation, gives travel times within 1 % of the analytic field along fixed
 // multi-leg paths, and ZA*TVE (grid 0.4, 3 sectors, region x [0, 10], y [-4, 4], V = 0.5) plans routes whose
@@ -18,7 +18,7 @@
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "planners/TveSearch.h"  // internal to the library (src/)
 #include "ompl_glider/planners/ZAStarTVE.h"
 
 using namespace ompl_glider;

@@ -1,4 +1,4 @@
-// Model grids as ocean models write them (issue 10): a global curvilinear grid whose i-index wraps (a displaced-pole
+// Model grids as ocean models write them: a global curvilinear grid whose i-index wraps (a displaced-pole
 // grid's seam in the ocean), with and without a repeated seam column; a ROMS-like Arakawa C grid (u and v on their
 // own points, rotated by `angle`, masks mask_rho/mask_u/mask_v); a POP-like B grid (UVEL/VVEL along the grid in cm/s
 // on ULONG/ULAT, ANGLE, KMU). Every file is written here with NetCDF-C; the loaded field is compared at nodes with

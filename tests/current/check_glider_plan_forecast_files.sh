@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# glider_plan on forecast files as pilots have them (issue 10), written with ncgen as models write them:
+# glider_plan on forecast files as pilots have them, written with ncgen as models write them:
 #  1. a steady file (u/v without time dimension, in cm/s) plans from --currents and from a mission file with exit 0,
 #     without --beyond hold, with the travel time of the uniform current's closed form; a date as --departure
 #     (or a mission's epoch) dates the undated steady field;

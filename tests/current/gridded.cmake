@@ -25,7 +25,7 @@ glider_add_test(test_current_netcdf_checks
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfGridAngle.cpp)
 target_link_libraries(test_current_netcdf_checks PRIVATE netCDF::netcdf)
 target_include_directories(test_current_netcdf_checks PRIVATE ${PROJECT_SOURCE_DIR}/src/current)
-# glider_plan on steady files, undated time axes and mislabelled velocity units (issue 10)
+# glider_plan on steady files, undated time axes and mislabelled velocity units
 if(TARGET glider_plan)
   add_test(NAME current.glider_plan_forecast_files
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_glider_plan_forecast_files.sh $<TARGET_FILE:glider_plan>)

@@ -1,4 +1,4 @@
-// Flying plans in another ocean (issue 13): the crab heading, closed forms in uniform currents (the track of a
+// Flying plans in another ocean: the crab heading, closed forms in uniform currents (the track of a
 // current-sensitive glider on its line, the drift of a current-blind one between surfacings, a forecast that misses
 // the current), a grounding on an island, and a ZA*TVE plan on the Gulf Stream jet flown in its own field.
 #include <gtest/gtest.h>
@@ -138,7 +138,7 @@ TEST(Execution, AGliderCarriedOntoAnIslandIsGroundedThere)
 
 TEST(Execution, AZaStarTvePlanOnTheJetFlownInItsOwnFieldArrivesOnTime)
 {
-    // issue 13's target: truth = forecast, hourly surfacings, current-sensitive control: within 1 % of the planned
+    // the target: truth = forecast, hourly surfacings, current-sensitive control: within 1 % of the planned
     // time and 0.05 length units of the goal
     const MissionSpec spec = defaultGulfStreamMission();
     const MissionProblem problem(spec);

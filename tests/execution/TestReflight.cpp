@@ -1,4 +1,4 @@
-// The accurate re-flight (issue 24, "honest times"): closed forms in uniform currents (a straight leg, a heading route's
+// The accurate re-flight ("honest times"): closed forms in uniform currents (a straight leg, a heading route's
 // end point and its first entry into the goal circle), a current three times the speed (the reachable cone), linear
 // shear (closed forms of both kinds of route), the meandering jet against flyHeadingRoute at a tiny RK4 step and
 // against TravelTimeCalculator at a tight tolerance, the convergence of the integrator as its tolerance shrinks,

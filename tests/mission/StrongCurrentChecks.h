@@ -1,5 +1,5 @@
 #pragma once
-// Shared checks of the strong-current tests (issue 24): re-flights of a planned route that are independent of the
+// Shared checks of the strong-current tests: re-flights of a planned route that are independent of the
 // planner (a heading route flown again at a much smaller RK4 step; straight legs re-timed at a tight tolerance).
 #include <gtest/gtest.h>
 

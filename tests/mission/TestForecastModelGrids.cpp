@@ -1,4 +1,4 @@
-// Routes on model grids (issue 10): across the index seam of a global curvilinear grid round an island that sits on
+// Routes on model grids: across the index seam of a global curvilinear grid round an island that sits on
 // the seam, and across a ROMS-like C grid round a masked island. Land clearance is checked independently of the
 // planner: every leg is sampled every ~200 m (cells are 5 km and 300 km) and no sample may lie inside a cell with
 // a land corner, found from the sample's lon/lat through the grid's own formulas.

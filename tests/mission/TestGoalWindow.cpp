@@ -1,4 +1,4 @@
-// Goals in time (issue 12; [ThompsonICRA] Sec. III, the earliest valid arrival): a goal window met by holding at
+// Goals in time ([ThompsonICRA] Sec. III, the earliest valid arrival): a goal window met by holding at
 // the goal, by timing the arrival earlier on the path where the goal cannot be held, and a window that cannot be met.
 #include <gtest/gtest.h>
 

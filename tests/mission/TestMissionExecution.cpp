@@ -1,4 +1,4 @@
-// A mission's execution in another ocean (issue 13) through the one pipeline: the `execution` section, the truth
+// A mission's execution in another ocean through the one pipeline: the `execution` section, the truth
 // on the forecast's frame and dates, runMission() flying the plan with each strategy, the batch, the output files.
 #include <gtest/gtest.h>
 

@@ -393,7 +393,7 @@ TEST(MissionRun, IslandsAndIceAreAvoided)
     ASSERT_TRUE(r.plan.solved) << r.plan.status << ": " << r.plan.reason;
     ASSERT_TRUE(problem.getEnvironment());
     // what the glider flies: straight legs between the waypoints, or the flown track of a route of held headings (the
-    // lattice's path touches the drifting floe when timed accurately, issue 24: the pipeline switches to headings)
+    // lattice's path touches the drifting floe when timed accurately: the pipeline switches to headings)
     const auto &p = r.plan.headingRoute() ? r.plan.track : r.plan.path;
     ASSERT_GE(p.size(), 2u);
     for (std::size_t i = 1; i < p.size(); ++i)

@@ -166,7 +166,7 @@ TEST(Pipeline, LibraryMissionFileAndOmplBenchmarkGiveIdenticalAnswers)
     ss->setPlanner(planner);
     ASSERT_EQ(ss->solve(30.0), ompl::base::PlannerStatus::EXACT_SOLUTION);
     const auto path = waypointsFromPath(ss->getSolutionPath());
-    // the same path, timed by the planner's integrator; the pipeline reports its accurate re-flight (issue 24)
+    // the same path, timed by the planner's integrator; the pipeline reports its accurate re-flight
     EXPECT_EQ(path.back().t - path.front().t, a.plan.plannerTravelTime);
     EXPECT_TRUE(a.plan.reflown);
     EXPECT_NEAR(a.plan.travelTime, a.plan.plannerTravelTime, 1e-3 * a.plan.travelTime);
@@ -501,7 +501,7 @@ std::string readText(const fs::path &p)
 
 TEST(Output, HeadingRouteFilesCarryTheHeadingsAndTheSwitch)
 {
-    // The Gulf Stream crossing at V = 0.2, a fifth of the jet's core speed (issue 24): ZA*TVE finds no path of
+    // The Gulf Stream crossing at V = 0.2, a fifth of the jet's core speed: ZA*TVE finds no path of
     // straight legs, the pipeline switches to Isochrone, whose plan is a route of held headings. Geographic (50 km,
     // one day per unit) so that every file has lon/lat, ISO times and hours.
     MissionSpec m = parseMission(R"(name: jet_headings

@@ -1,4 +1,4 @@
-// The strong-current planners (issue 24) against answers found without them: a uniform current three times the
+// The strong-current planners against answers found without them: a uniform current three times the
 // speed (the reachable set is a drifting disc: closed form), the Rankine vortex (radial spirals: closed form), the
 // linear shear u = a y (a two-heading route found by brute force in closed form: an upper bound of the optimum),
 // and the meandering jet at low speeds (the level set). Every route is flown again independently of the planner

@@ -1,4 +1,4 @@
-// The meandering jet at low speeds (issue 24) against the level set at a fine resolution (0.025, 400 x 320
+// The meandering jet at low speeds against the level set at a fine resolution (0.025, 400 x 320
 // cells): slow, labelled ci. The default pipeline's travel time is within 1 % of the fine level set's, and both
 // routes fly again to the goal independently of their planners (StrongCurrentChecks.h).
 #include <gtest/gtest.h>

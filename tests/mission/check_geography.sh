@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # glider_plan --currents on real-sized global forecasts (0.5 degrees, float32, Copernicus-Marine layout, written by
-# make_global_forecast with NetCDF-C) in both longitude conventions (issue 10, geography):
+# make_global_forecast with NetCDF-C) in both longitude conventions (geography):
 #   files     write the forecasts once (the ctest fixture of the other scenarios)
 #   dateline  175E -> 175W on a -180..180 file, round a land block on the antimeridian; the goal as -175 and as 185
 #             give the same route; outputs in -180..180, the GeoJSON path split at the antimeridian, the goto list

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# glider_plan's mission and forecast modes (issues 5 and 6): --mission writes the mission's files with fixed names
+# glider_plan's mission and forecast modes: --mission writes the mission's files with fixed names
 # (summary.json in the one schema of docs/SUMMARY_JSON.md, waypoints.csv, path.geojson, the goto list, map.svg and
 # map.png) into --out or the mission's outputs.directory, plus <prefix>_<name> copies when outputs.prefix is set;
 # --currents plans on the example NetCDF forecast in lon/lat (path.csv t,x,y,lon,lat inside the file's bounds,
@@ -254,7 +254,7 @@ expect_error "bad2.yaml:7: field 'planner.name': unknown planner 'dijkstra'" --m
 sed 's/delta_phi_max: 20/delta_phi_max_deg: 20/' "$dir/m/trip.yaml" > "$dir/bad3.yaml"
 expect_error "bad3.yaml:7: field 'planner.parameters.delta_phi_max_deg': planner ZTVE has no parameter" \
     --mission "$dir/bad3.yaml"
-# the plan flown in another ocean from the command line (issue 13): the built-in jet with another amplitude as the
+# the plan flown in another ocean from the command line: the built-in jet with another amplitude as the
 # truth, two strategies, a small batch; the second run of the same directory without --truth removes the files
 "$exe" --truth B0=1.38,c=0.138 --surfacing-interval 0.25 --strategies current_sensitive,greedy --radius 0.1 \
     --execution-pairs 3 --out "$dir/exec" > "$dir/exec.txt" 2> "$dir/exec.err"

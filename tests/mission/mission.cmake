@@ -7,7 +7,7 @@ glider_add_test(test_mission_run ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp ${
   ${CMAKE_CURRENT_LIST_DIR}/TestCoastline.cpp)
 target_link_libraries(test_mission_run PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)
 glider_add_test(test_mission_bathymetry ${CMAKE_CURRENT_LIST_DIR}/TestBathymetry.cpp)
-# the plan flown in another ocean through the pipeline (issue 13)
+# the plan flown in another ocean through the pipeline
 glider_add_test(test_mission_execution ${CMAKE_CURRENT_LIST_DIR}/TestMissionExecution.cpp)
 target_link_libraries(test_mission_execution PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf)
 # the many-plan modes through a TaskSpreader (TaskSpread.h) equal the threaded run bit for bit
@@ -22,13 +22,13 @@ endif()
 # a forecast in several files (--currents LIST, current.file list or glob) planned as the combined file
 glider_add_test(test_mission_forecast_files ${CMAKE_CURRENT_LIST_DIR}/TestForecastFiles.cpp)
 target_link_libraries(test_mission_forecast_files PRIVATE netCDF::netcdf)
-# glider_plan --mission / --currents / --speeds and its error cases (issues 5, 6)
+# glider_plan --mission / --currents / --speeds and its error cases
 if(TARGET glider_plan)
   add_test(NAME mission.glider_plan_cli
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_glider_plan_cli.sh $<TARGET_FILE:glider_plan> ${PROJECT_SOURCE_DIR})
   set_tests_properties(mission.glider_plan_cli PROPERTIES TIMEOUT 300)
 endif()
-# glider_plan on real-sized global forecasts in both longitude conventions (issue 10): the forecasts are written
+# glider_plan on real-sized global forecasts in both longitude conventions: the forecasts are written
 # once by make_global_forecast (NetCDF-C) as a fixture, then one test per scenario (check_geography.sh)
 if(TARGET glider_plan)
   add_executable(make_global_forecast ${CMAKE_CURRENT_LIST_DIR}/MakeGlobalForecast.cpp)
@@ -45,7 +45,7 @@ if(TARGET glider_plan)
     set_tests_properties(mission.geography.${scenario} PROPERTIES FIXTURES_REQUIRED geography_files TIMEOUT 300)
   endforeach()
 endif()
-# goals in time (issue 12): a goal window met by holding at the goal or by timing the arrival, or not at all
+# goals in time: a goal window met by holding at the goal or by timing the arrival, or not at all
 glider_add_test(test_mission_goal_window ${CMAKE_CURRENT_LIST_DIR}/TestGoalWindow.cpp)
 target_link_libraries(test_mission_goal_window PRIVATE nlohmann_json::nlohmann_json)
 # safety margins (keep-off distance, depth limit) through the pipeline

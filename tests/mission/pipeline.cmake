@@ -7,7 +7,7 @@ if(TARGET glider_plan)
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_three_modes.sh $<TARGET_FILE:glider_plan> ${PROJECT_SOURCE_DIR})
   set_tests_properties(mission.three_modes PROPERTIES TIMEOUT 300)
 endif()
-# strong currents (issue 24): the heading planners against closed forms, a brute-force bound and the level set
+# strong currents: the heading planners against closed forms, a brute-force bound and the level set
 glider_add_test(test_strong_currents ${CMAKE_CURRENT_LIST_DIR}/TestStrongCurrents.cpp)
 # the same against the level set at a fine resolution: slow
 add_executable(test_strong_currents_fine ${CMAKE_CURRENT_LIST_DIR}/TestStrongCurrentsFine.cpp)

@@ -1,4 +1,4 @@
-// OMPL control-based planning (issue 24, GliderControl.h): the heading propagator against closed forms in a uniform
+// OMPL control-based planning (GliderControl.h): the heading propagator against closed forms in a uniform
 // current, groundings on land, on a forbidden region and at the planning box making the motion invalid, and oc::SST
 // reaching the goal in a uniform current twice the glider's speed with a travel time that the re-flight of its
 // controls confirms and that no path can beat (the closed-form earliest entry into the goal disc).

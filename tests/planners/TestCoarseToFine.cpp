@@ -1,4 +1,4 @@
-// Issue 15, on a gridded forecast (two meanders, one reversed, and two islands; non-uniform x axis; six records):
+// On a gridded forecast (two meanders, one reversed, and two islands; non-uniform x axis; six records):
 // - the gridded field's local bounds (GriddedCurrentField::velocityBounds, rectilinear and curvilinear) enclose every velocity() value of their
 //   region, and are refused where the schemes could overshoot the nodes;
 // - the lattice heuristic built from them never exceeds the true remaining time (TVE from the vertex) and the
@@ -15,8 +15,8 @@
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "ompl_glider/planners/detail/SearchHeuristic.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "planners/detail/SearchHeuristic.h"  // internal to the library (src/)
+#include "planners/TveSearch.h"  // internal to the library (src/)
 
 using namespace ompl_glider;
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/planners/detail/Lattice.h"
+#include "planners/detail/Lattice.h"  // internal to the library (src/)
 
 using namespace ompl_glider;
 

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "PostprocessTestUtil.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "planners/TveSearch.h"  // internal to the library (src/)
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/LinearShear.h"
 #include "ompl_glider/current/MeanderingJet.h"

@@ -1,4 +1,4 @@
-// LatticeHeuristic (issue 15): the jet's velocity boxes enclose sampled currents; the edge bounds never exceed the
+// LatticeHeuristic: the jet's velocity boxes enclose sampled currents; the edge bounds never exceed the
 // travel time; the heuristic never exceeds the true remaining time (TVE from the vertex, an independent exact search)
 // and is consistent; and the default search (tight bounds, certified pruning) equals TVE on random pairs.
 #include <gtest/gtest.h>
@@ -13,8 +13,8 @@
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/current/UniformCurrent.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "ompl_glider/planners/detail/SearchHeuristic.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "planners/detail/SearchHeuristic.h"  // internal to the library (src/)
+#include "planners/TveSearch.h"  // internal to the library (src/)
 
 using namespace ompl_glider;
 

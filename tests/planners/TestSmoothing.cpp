@@ -14,7 +14,7 @@
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
 #include "ompl_glider/routes/PathSmoother.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "planners/TveSearch.h"  // internal to the library (src/)
 
 using namespace ompl_glider;
 using namespace ompl_glider::test;

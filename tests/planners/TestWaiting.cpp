@@ -1,4 +1,4 @@
-// Holding in the lattice search (issue 12; TveOptions::waiting; [ThompsonICRA] Sec. III hold-position actions, the
+// Holding in the lattice search (TveOptions::waiting; [ThompsonICRA] Sec. III hold-position actions, the
 // earliest valid arrival): a start walled in by a lane closed until T is left by waiting (TVE and ZA*TVE agree, the
 // OMPL path checks), goal windows met by holding at the goal or before the goal edge, and a window that cannot be met.
 #include <gtest/gtest.h>
@@ -21,7 +21,7 @@
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
 #include "ompl_glider/routes/PathSmoother.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "planners/TveSearch.h"  // internal to the library (src/)
 #include "ompl_glider/planners/ZAStarTVE.h"
 
 using namespace ompl_glider;

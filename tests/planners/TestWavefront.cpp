@@ -218,7 +218,7 @@ TEST(Wavefront, WaitsOutALaneClosedAroundTheStart)
             break;
         }
 
-    // TVE and ZA*TVE wait too since their waiting edges (TveOptions::waiting, issue 12), but only where a leg is
+    // TVE and ZA*TVE wait too since their waiting edges (TveOptions::waiting), but only where a leg is
     // blocked, at a vertex, until a window's end: they hold at the start until 10 and then fly the whole 4.8 at 0.6,
     // 18 = T* + 0.2 / 0.6 (the wavefront holds at the band's edge instead and is earlier).
     for (const std::string conf : {"TVE", "ZA*TVE"})

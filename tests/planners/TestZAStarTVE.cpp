@@ -21,7 +21,7 @@
 #include "ompl_glider/current/UniformCurrent.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "planners/TveSearch.h"  // internal to the library (src/)
 #include "ompl_glider/planners/ZAStarTVE.h"
 
 using namespace ompl_glider;

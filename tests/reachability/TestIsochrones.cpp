@@ -1,4 +1,4 @@
-// Isochrones through the pipeline (issue 12): a mission with the output format "isochrones" writes
+// Isochrones through the pipeline: a mission with the output format "isochrones" writes
 // isochrones.geojson with one feature per time; in a uniform current every contour is the closed-form circle; on a
 // NetCDF forecast (geographic) the coordinates are lon/lat inside the forecast's box and the times are dates.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The level-set solver (issue 12) against closed forms and independent references: the reachable disc of a uniform
+// The level-set solver against closed forms and independent references: the reachable disc of a uniform
 // current (also faster than the vehicle), Betts' shear problem, the shooting optimum on the meandering jet, a
 // walled-in start, a lane that must be waited out, and isochrones.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The LevelSet planner through OMPL's SimpleSetup (issue 12): exact solutions whose paths pass
+// The LevelSet planner through OMPL's SimpleSetup: exact solutions whose paths pass
 // PathGeometric::check() and whose travel time is the front's within the resolution, around islands, waiting out a
 // closed lane, and no path for a walled-in start; the name is in the planner registry.
 #include <gtest/gtest.h>

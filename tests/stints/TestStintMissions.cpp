@@ -1,4 +1,4 @@
-// The stint planners through the one pipeline (issue 14): mission files with a `stints` section, summary.json's
+// The stint planners through the one pipeline: mission files with a `stints` section, summary.json's
 // remaining_distance and bearings, stints.csv, errors naming file:line and field, and lattice paths flown as stints
 // on the jet problems of test_planner_vs_optimum.
 #include <gtest/gtest.h>

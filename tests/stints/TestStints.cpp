@@ -1,4 +1,4 @@
-// Constant-bearing stints (issue 14, [IsernObstacles]): closed forms in a uniform current, a stint into an island
+// Constant-bearing stints ([IsernObstacles]): closed forms in a uniform current, a stint into an island
 // stops there, CTS-A* on a problem whose optimum is known, the optimisers never worse than their start, identical
 // results for identical inputs, the stint planners through the one pipeline, and lattice paths flown as stints.
 #include <gtest/gtest.h>
@@ -14,10 +14,10 @@
 #include "ompl_glider/environment/Polygon.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
-#include "ompl_glider/stints/BearingOptimizer.h"
+#include "ompl_glider/routes/BearingOptimizer.h"
 #include "ompl_glider/stints/CtsAStar.h"
-#include "ompl_glider/stints/PathToStints.h"
-#include "ompl_glider/stints/StintSimulator.h"
+#include "ompl_glider/routes/PathToStints.h"
+#include "ompl_glider/routes/StintSimulator.h"
 
 using namespace ompl_glider;
 

@@ -260,15 +260,16 @@ struct PlannerSpec
 /// @brief Constant-bearing stints ([IsernObstacles]): the settings of the stint planners (init_optim, optim,
 /// cts_astar, direct), and, with any other planner, the conversion of its path to stints (a heading per surfacing).
 /// Times in field units.
-struct StintSpec
+struct StintSpec : StintSettings
 {
-    bool set{false};               ///< a `stints` section was given
-    double duration{0.0};          ///< time between surfacings (required)
-    double missionDuration{0.0};   ///< the mission ends this long after departure (required)
-    double bearingStep{20.0};      ///< degrees between the bearings of the CTS-A* rose
-    StintObjective objective{StintObjective::RemainingDistance};  ///< remaining_distance | earliest_arrival
-    double radius{0.0};            ///< goal radius (> 0 required by earliest_arrival); 0 for a conversion: automatic
-    double step{0.0};              ///< RK4 step; 0: duration / 24
+    bool set{false};  ///< a `stints` section was given (its duration and mission_duration are required)
+    /// The section's settings (execution/Stints.h: the one stint settings struct of the mission, the stint planners
+    /// and the conversion); without a section nothing is set. A radius of 0 gives a conversion an automatic one.
+    StintSpec()
+    {
+        duration = 0.0;
+        missionDuration = 0.0;
+    }
 };
 
 /// @brief What to write.

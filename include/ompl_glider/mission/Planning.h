@@ -103,10 +103,9 @@ struct StintOutcome
 {
     StintPlan plan;          ///< bearings (degrees clockwise from north), surfacings, track, remaining distance
     bool converted{false};   ///< converted from the planner's path (stintsFromPath()), not planned on stints
-    double duration{0.0};    ///< time between surfacings
-    double missionDuration{0.0};  ///< the mission length flown (a conversion: long enough to arrive)
-    StintObjective objective{StintObjective::RemainingDistance};  ///< what the stints minimise
-    double radius{0.0};      ///< goal radius of the stints
+    /// The stints flown: time between surfacings, the mission length (a conversion: long enough to arrive), what
+    /// they minimise, the goal radius
+    StintSettings settings;
     /// Conversion: the path's travel time, the stints' (+inf: they do not arrive) and the loss
     /// stintTravelTime / pathTravelTime - 1
     double pathTravelTime{std::numeric_limits<double>::infinity()};

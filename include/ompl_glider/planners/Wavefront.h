@@ -14,7 +14,6 @@
 
 #include "ompl_glider/ompl/GliderContext.h"
 #include "ompl_glider/planners/LatticePlanner.h"
-#include "ompl_glider/planners/TveSearch.h"
 
 namespace ompl_glider
 {

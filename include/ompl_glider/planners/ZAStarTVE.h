@@ -12,10 +12,12 @@
 
 #include "ompl_glider/ompl/GliderContext.h"
 #include "ompl_glider/planners/LatticePlanner.h"
-#include "ompl_glider/planners/TveSearch.h"
+#include "ompl_glider/planners/TveTypes.h"
 
 namespace ompl_glider
 {
+class TveSearch;  // the search (internal to the library)
+
 /// @brief Time-optimal lattice search in a time-varying current with the edge weights computed during the search.
 ///
 /// The configuration picks the acceleration methods of [EichhornRAS] Sec. 2.2: "TVE" (time-dependent Dijkstra),

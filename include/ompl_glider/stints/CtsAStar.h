@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "ompl_glider/stints/StintSimulator.h"
+#include "ompl_glider/routes/StintSimulator.h"
 
 namespace ompl_glider
 {

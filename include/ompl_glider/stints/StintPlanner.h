@@ -19,7 +19,7 @@
 #include "ompl_glider/ompl/GliderContext.h"
 #include "ompl_glider/ompl/PipelinePlanner.h"
 #include "ompl_glider/stints/CtsAStar.h"
-#include "ompl_glider/stints/StintSimulator.h"
+#include "ompl_glider/routes/StintSimulator.h"
 
 namespace ompl_glider
 {

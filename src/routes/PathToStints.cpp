@@ -1,5 +1,5 @@
 // From a timed path to constant-bearing stints; see PathToStints.h.
-#include "ompl_glider/stints/PathToStints.h"
+#include "ompl_glider/routes/PathToStints.h"
 
 #include <algorithm>
 #include <cmath>

@@ -12,8 +12,8 @@
 #include <limits>
 #include <vector>
 
-#include "ompl_glider/stints/BearingOptimizer.h"
-#include "ompl_glider/stints/StintSimulator.h"
+#include "ompl_glider/routes/BearingOptimizer.h"
+#include "ompl_glider/routes/StintSimulator.h"
 
 namespace ompl_glider
 {

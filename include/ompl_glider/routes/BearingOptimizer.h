@@ -15,7 +15,7 @@
 #include <functional>
 #include <vector>
 
-#include "ompl_glider/stints/StintSimulator.h"
+#include "ompl_glider/routes/StintSimulator.h"
 
 namespace ompl_glider
 {

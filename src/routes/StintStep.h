@@ -3,7 +3,7 @@
 /// @brief Internal to the library (not installed): one stint flown from a running position, the step of the
 /// bearing loops of CtsAStar and PathToStints.
 
-#include "ompl_glider/stints/StintSimulator.h"
+#include "ompl_glider/routes/StintSimulator.h"
 
 namespace ompl_glider
 {

@@ -1,5 +1,5 @@
 // Bearing optimisation with NLopt's Subplex ([IsernObstacles] Sec. II.2); see BearingOptimizer.h.
-#include "ompl_glider/stints/BearingOptimizer.h"
+#include "ompl_glider/routes/BearingOptimizer.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,5 +1,5 @@
 // Constant-bearing stints ([IsernObstacles] Sec. II): flying a list of bearings, one per surfacing.
-#include "ompl_glider/stints/StintSimulator.h"
+#include "ompl_glider/routes/StintSimulator.h"
 
 #include <algorithm>
 #include <cmath>

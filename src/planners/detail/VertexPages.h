@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "ompl_glider/planners/detail/Lattice.h"
+#include "Lattice.h"
 
 namespace ompl_glider
 {

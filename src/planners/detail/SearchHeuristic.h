@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "ompl_glider/current/CurrentField.h"
-#include "ompl_glider/planners/detail/Lattice.h"
-#include "ompl_glider/planners/detail/VertexPages.h"
+#include "Lattice.h"
+#include "VertexPages.h"
 
 namespace ompl_glider
 {
