@@ -5,6 +5,7 @@
 #include "ompl_glider/mission/Overrides.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 
 #include "../io/NumberText.h"
@@ -213,46 +214,64 @@ void applyOverrides(const MissionOverrides &o, MissionSpec &m)
 
 std::vector<std::pair<std::string, std::string>> overridableFields(const MissionSpec &m)
 {
-    const auto num = [](double v) { return text::number(v, 17); };
+    // the shortest text that reads back as the same double: equal texts are equal values, and 0.6 stays "0.6"
+    const auto num = [](double v) {
+        char buf[32];
+        const auto r = std::to_chars(buf, buf + sizeof buf, v);
+        return std::string(buf, r.ptr);
+    };
     const auto point = [&](const PointSpec &p) {
         return p.geographic ? num(p.lonLat.lon) + "," + num(p.lonLat.lat) : num(p.xy.x) + "," + num(p.xy.y);
     };
-    std::string parameters, marked, files;
+    std::string parameters, files;
     for (const auto &[name, value] : m.planner.parameters)
         parameters += (parameters.empty() ? "" : ",") + name + "=" + value;
-    for (const auto &[name, where] : m.marks)
-        marked += (marked.empty() ? "" : ",") + name;
     for (const OutputFormatId id : m.outputs.files)
-        files += (files.empty() ? "" : ",") + std::to_string(static_cast<int>(id));
+        for (const OutputFormat &f : outputFormats())
+            if (f.id == id)
+                files += (files.empty() ? "" : ",") + f.name;
     std::string region = "unset";
     if (m.region.set)
         region = m.region.geographic ? num(m.region.lonLat.lonMin) + "," + num(m.region.lonLat.latMin) + "," +
                                            num(m.region.lonLat.lonMax) + "," + num(m.region.lonLat.latMax)
                                      : num(m.region.xy.xMin) + "," + num(m.region.xy.yMin) + "," +
                                            num(m.region.xy.xMax) + "," + num(m.region.xy.yMax);
-    return {{"planner.name", m.planner.name},
-            {"planner.parameters", parameters},
-            {"planner.grid_size", num(m.planner.gridSize)},
-            {"planner.sectors", std::to_string(m.planner.sectors)},
-            {"planner.time_limit", num(m.planner.timeLimit)},
-            {"planner.horizon", num(m.planner.horizon)},
-            {"planner.goal_tolerance", num(m.planner.goalTolerance)},
-            {"planner.smoothing", m.planner.smoothing ? "true" : "false"},
-            {"planner.refinement", m.planner.refinement ? "true" : "false"},
-            {"planner.global_check", m.planner.globalCheck ? "true" : "false"},
-            {"vehicle.speed", num(m.vehicle.speed)},
-            {"travel.speed", num(m.travel.speed)},
-            {"departure.time", num(m.departure.time)},
-            {"departure.window", m.departure.window ? "true" : "false"},
-            {"start", point(m.start)},
-            {"goal", point(m.goal)},
-            {"region", region},
-            {"goal.window", m.goalWindow.set ? num(m.goalWindow.begin) + "," + num(m.goalWindow.end) : "unset"},
-            {"forbidden.coastline", m.forbidden.coastline},
-            {"outputs.directory", m.outputs.directory},
-            {"outputs.files", files},
-            {"outputs.isochrone_interval", num(m.outputs.isochroneInterval)},
-            {"outputs.goto_turn_deg", num(m.outputs.gotoTurnDeg)},
-            {"marked", marked}};
+    std::vector<std::pair<std::string, std::string>> fields = {
+        {"planner.name", m.planner.name},
+        {"planner.parameters", parameters},
+        {"planner.grid_size", num(m.planner.gridSize)},
+        {"planner.sectors", std::to_string(m.planner.sectors)},
+        {"planner.time_limit", num(m.planner.timeLimit)},
+        {"planner.horizon", num(m.planner.horizon)},
+        {"planner.goal_tolerance", num(m.planner.goalTolerance)},
+        {"planner.smoothing", m.planner.smoothing ? "true" : "false"},
+        {"planner.refinement", m.planner.refinement ? "true" : "false"},
+        {"planner.global_check", m.planner.globalCheck ? "true" : "false"},
+        {"vehicle.speed", num(m.vehicle.speed)},
+        {"travel.speed", num(m.travel.speed)},
+        {"departure.time", num(m.departure.time)},
+        {"departure.window", m.departure.window ? "true" : "false"},
+        {"start", point(m.start)},
+        {"goal", point(m.goal)},
+        {"region", region},
+        {"goal.window", m.goalWindow.set ? num(m.goalWindow.begin) + "," + num(m.goalWindow.end) : "unset"},
+        {"forbidden.coastline", m.forbidden.coastline},
+        {"outputs.directory", m.outputs.directory},
+        {"outputs.files", files},
+        {"outputs.isochrone_interval", num(m.outputs.isochroneInterval)},
+        {"outputs.goto_turn_deg", num(m.outputs.gotoTurnDeg)}};
+    // which of these the file, a flag or a keyword gave (a field, or a value inside it: start.x, outputs.files[0])
+    std::string marked;
+    for (const auto &[name, value] : fields)
+    {
+        const auto it = m.marks.lower_bound(name);
+        const bool given = it != m.marks.end() && (it->first == name || it->first.rfind(name + ".", 0) == 0 ||
+                                                   it->first.rfind(name + "[", 0) == 0);
+        const bool parameters = name == "planner.parameters" && !m.planner.parameterMarks.empty();
+        if (given || parameters)
+            marked += (marked.empty() ? "" : ",") + name;
+    }
+    fields.emplace_back("given", marked);
+    return fields;
 }
 }  // namespace ompl_glider

@@ -57,8 +57,8 @@ struct MissionOverrides
 /// @throws Error "SOURCE: what was wrong" for the first bad value; @p m is then unchanged.
 void applyOverrides(const MissionOverrides &o, MissionSpec &m);
 
-/// @brief The fields MissionOverrides can change, as text (numbers with 17 digits), by their dotted names, plus
-/// "marked" (the names of the fields a front end or the file gave, sorted): what two front ends must agree on
-/// when given the same overrides (glider_plan --show-mission, Python's Mission.fields()).
+/// @brief The fields MissionOverrides can change, as text (numbers in the shortest form that reads back as the same
+/// double), by their dotted names, then "given": those of them the file, a flag or a keyword gave. What two front
+/// ends must agree on when given the same overrides (glider_plan --show-mission, Python's Mission.fields()).
 std::vector<std::pair<std::string, std::string>> overridableFields(const MissionSpec &m);
 }  // namespace ompl_glider
