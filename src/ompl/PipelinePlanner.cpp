@@ -13,13 +13,23 @@ class DefaultAnswers final : public PipelinePlanner
 };
 }  // namespace
 
+std::string PipelineSetup::where(const std::string &field) const
+{
+    return place ? place(field) : "field '" + field + "'";
+}
+
+bool PipelineSetup::isGiven(const std::string &field) const
+{
+    return given && given(field);
+}
+
 std::string PipelineSetup::placeOfFirstGiven(std::initializer_list<const char *> fields,
                                              const std::string &fallback) const
 {
     for (const char *f : fields)
-        if (given && given(f))
-            return place(f);
-    return place(fallback);
+        if (isGiven(f))
+            return where(f);
+    return where(fallback);
 }
 
 const PipelinePlanner &pipelineView(const ompl::base::Planner &planner)

@@ -18,7 +18,7 @@ void LatticePlanner::prepare(const PipelineSetup &setup)
     const double nx = std::floor((r.xMax - r.xMin) / grid + 1e-9) + 1.0;
     const double ny = std::floor((r.yMax - r.yMin) / grid + 1e-9) + 1.0;
     const std::string what =
-        setup.place("planner.grid_size") +
+        setup.where("planner.grid_size") +
         text::formatted(": a lattice spacing of %g gives %.0f x %.0f = %.3g vertices, which", grid, nx, ny, nx * ny);
     if (nx * ny > 2147483648.0)
         throw Error(what + " is more than the 2^31 a lattice can hold: use a larger spacing");

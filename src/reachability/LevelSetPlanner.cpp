@@ -93,8 +93,8 @@ void LevelSetPlanner::prepare(const PipelineSetup &setup)
         return;
     // too many steps: the window is at fault first; too much work: the resolution
     const std::string where =
-        !(steps <= kMaxLevelSetSteps) && setup.given && setup.given("planner.horizon")
-            ? setup.place("planner.horizon")
+        !(steps <= kMaxLevelSetSteps) && setup.isGiven("planner.horizon")
+            ? setup.where("planner.horizon")
             : setup.placeOfFirstGiven({"planner.parameters.resolution", "planner.parameters.cfl", "planner.horizon"},
                                       "planner.name");
     throw Error(where +

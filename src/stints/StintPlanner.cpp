@@ -53,7 +53,7 @@ StintPlanner::StintPlanner(const ompl::base::SpaceInformationPtr &si, std::share
 void StintPlanner::prepare(const PipelineSetup &setup)
 {
     if (!setup.stints)
-        throw Error(setup.place("planner.name") + ": planner '" + getName() +
+        throw Error(setup.where("planner.name") + ": planner '" + getName() +
                     "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
     setStintSettings(*setup.stints);
     if (method_ != StintMethod::CtsAStar && method_ != StintMethod::InitOptim)
@@ -62,8 +62,8 @@ void StintPlanner::prepare(const PipelineSetup &setup)
     const double flights = rose * static_cast<double>(maxExpansions_);
     if (rose <= kMaxStintBearings && flights <= kMaxStintFlights)
         return;
-    const bool byExpansions = rose <= kMaxStintBearings && setup.given("planner.parameters.max_expansions");
-    throw Error(setup.place(byExpansions ? "planner.parameters.max_expansions" : "stints.bearing_step") +
+    const bool byExpansions = rose <= kMaxStintBearings && setup.isGiven("planner.parameters.max_expansions");
+    throw Error(setup.where(byExpansions ? "planner.parameters.max_expansions" : "stints.bearing_step") +
                 text::formatted(": a bearing step of %g degrees flies %.4g stints from every surfacing the search "
                                 "expands, up to %.3g stints over its %.3g expansions",
                                 settings_.bearingStep, rose, flights, static_cast<double>(maxExpansions_)) +

@@ -44,7 +44,7 @@ public:
     {
         const double d = std::hypot(setup.goal.x - setup.start.x, setup.goal.y - setup.start.y);
         if (maxLength_ > 0.0 && d > maxLength_)
-            throw Error(setup.place("planner.parameters.max_length") + ": the leg is " + std::to_string(d) +
+            throw Error(setup.where("planner.parameters.max_length") + ": the leg is " + std::to_string(d) +
                         " long, longer than the test planner's max_length");
     }
     std::uint64_t expandedVertices() const override { return expanded_; }

@@ -37,7 +37,11 @@ struct PipelineSetup
     /// True when the mission (or a flag, a keyword) gave the field or parameter itself, not its default.
     std::function<bool(const std::string &field)> given;
 
-    /// @brief place() of the first of @p fields that was given; else of @p fallback.
+    /// @brief place(@p field), or "field '@p field'" when no place() is set (a setup made by hand).
+    std::string where(const std::string &field) const;
+    /// @brief given(@p field); false when no given() is set.
+    bool isGiven(const std::string &field) const;
+    /// @brief where() of the first of @p fields that was given; else of @p fallback.
     std::string placeOfFirstGiven(std::initializer_list<const char *> fields, const std::string &fallback) const;
 };
 
