@@ -17,7 +17,7 @@
 #include "Bindings.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
-#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/io/GeoBox.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/mission/Fleet.h"
 #include "ompl_glider/mission/ForecastMission.h"

@@ -337,7 +337,7 @@ void bindResult(py::module_ &m)
     using R = PyResult;
     py::class_<R, std::shared_ptr<R>>(m, "Result", "The result of one run (MissionResult and its problem).")
         .def_property_readonly("solved", [](const R &r) { return r.result.plan.solved; })
-        .def_property_readonly("status", [](const R &r) { return r.result.plan.status; })
+        .def_property_readonly("status", [](const R &r) { return statusText(r.result.plan.status); })
         .def_property_readonly("reason", [](const R &r) { return r.result.plan.reason; })
         .def_property_readonly("planner", [](const R &r) { return r.result.plan.planner; })
         .def_property_readonly("switched_from", [](const R &r) { return r.result.plan.switchedFrom; })

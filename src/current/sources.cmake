@@ -6,7 +6,6 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/DoubleGyre.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RankineVortex.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CurrentFieldRegistry.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/GeoBox.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ShiftedTimeField.cpp
   ${CMAKE_CURRENT_LIST_DIR}/EnsembleField.cpp
 )

@@ -167,9 +167,10 @@ std::string polygonFault(const std::vector<Point2> &outer, const std::vector<std
     return invalidity(p);
 }
 
-std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin, double latMin, double lonMax,
-                                          double latMax, std::vector<std::string> *repairs, CoastlineCount *count)
+std::vector<LandPolygon> readLandPolygons(const std::string &path, const GeoBox &box, std::vector<std::string> *repairs,
+                                          CoastlineCount *count)
 {
+    const double lonMin = box.lonMin, latMin = box.latMin, lonMax = box.lonMax, latMax = box.latMax;
     registerDrivers();
     const std::string who = "coastline file '" + path + "'";
     if (!(lonMin < lonMax) || !(latMin < latMax))

@@ -224,7 +224,7 @@ void checkHasWater(const NcFile &f, const DepthGrid &g)
 }
 }  // namespace
 
-DepthGrid readDepthGrid(const std::string &path, const std::string &variable, const DepthRegion &region)
+DepthGrid readDepthGrid(const std::string &path, const std::string &variable, const GeoBox &region)
 {
     const NcFile f(path);
     const int var = findDepthVariable(f, variable);

@@ -27,7 +27,7 @@ void locate(const std::vector<double> &a, double q, std::size_t &k, double &f)
 }  // namespace
 
 NetCdfBathymetry::NetCdfBathymetry(const std::string &path, const std::string &variable,
-                                   std::function<LonLat(double, double)> toGeographic, const DepthRegion &region)
+                                   std::function<LonLat(double, double)> toGeographic, const GeoBox &region)
   : toGeographic_(std::move(toGeographic))
 {
     // the one reader of seafloor depths (its sign rule, axis order and checks are the depth limit's too)

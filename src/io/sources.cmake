@@ -3,6 +3,7 @@
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Time.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Length.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/GeoBox.cpp  # lon/lat boxes: regions, the trip's box, great circles
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES

@@ -12,7 +12,7 @@
 #include "ompl_glider/current/BeyondForecast.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/current/NetCdfCurrents.h"
@@ -66,7 +66,8 @@ std::optional<Point2> nearestWater(const CurrentField &field, Point2 p, double z
 
 void MissionProblem::snapEndpoints()
 {
-    const auto grid = std::dynamic_pointer_cast<const GriddedCurrentField>(members_.empty() ? field_ : members_.front());
+    const CurrentField &field = *(members_.empty() ? field_ : members_.front());
+    const FieldGrid *grid = field.grid();
     if (!grid)
         return;
     const MissionSpec &m = spec_;
@@ -79,10 +80,9 @@ void MissionProblem::snapEndpoints()
     };
     for (const auto &[name, p] : {std::pair<const char *, Point2 *>{"start", &start_}, {"goal", &goal_}})
     {
-        double fi, fj;
-        if (!grid->locate(p->x, p->y, fi, fj) || grid->inWater(p->x, p->y, z))
+        if (!grid->covers(p->x, p->y) || field.inWater(p->x, p->y, z))
             continue;  // (outside the grid: the planning box's check names it)
-        const std::optional<Point2> w = nearestWater(*grid, *p, z, 0.01 * grid->minCellSize());
+        const std::optional<Point2> w = nearestWater(field, *p, z, 0.01 * grid->minCellSize());
         if (!w)
             throw Error(m.place(name) + ": " + text(*p) + " is on land in the forecast at depth " + text::number(z) +
                         " m, and the forecast has no water there");
@@ -104,11 +104,10 @@ std::string planning_detail::frozenFieldNote(const MissionProblem &problem, cons
     if (!plan.solved || plan.path.empty() || m.current.horizonPolicy != BeyondForecast::HoldLast || m.current.steady)
         return "";
     const auto &members = problem.getMembers();
-    const auto grid = std::dynamic_pointer_cast<const GriddedCurrentField>(members.empty() ? problem.getField()
-                                                                                           : members.front());
-    if (!grid || grid->nt() < 2)
+    const FieldGrid *grid = (members.empty() ? problem.getField() : members.front())->grid();
+    if (!grid || grid->recordTimes().size() < 2)
         return "";
-    const double last = grid->timeAxis().back(), arrival = plan.path.back().t;
+    const double last = grid->recordTimes().back(), arrival = plan.path.back().t;
     if (!(arrival > last))
         return "";
     const double held = arrival - std::max(last, plan.departure);

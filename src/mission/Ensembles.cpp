@@ -157,7 +157,7 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
                 failing += (failing.empty() ? "" : ", ") + std::string("member ") + std::to_string(k) + " (" +
                            members[k]->name() + ")";
         r.solved = false;
-        r.status = kNoPathStatus;
+        r.status = PlanStatus::NoPath;
         r.reason = std::string("not robust: no candidate plan can be flown in every member of the ensemble (objective ") +
                    ensembleObjectiveName(e.objective) + "); the best, planned on the " + e.chosen +
                    ", is impassable in " + failing;

@@ -42,8 +42,9 @@ std::string pack(const FleetGlider &g)
 {
     ByteWriter w;
     const FleetRow &r = g.row;
-    for (const std::string *s : {&r.name, &r.status, &r.reason, &r.badInput, &r.departureIso, &r.arrivalIso, &g.kept})
+    for (const std::string *s : {&r.name, &r.reason, &r.badInput, &r.departureIso, &r.arrivalIso, &g.kept})
         w.put(*s);
+    w.put(r.status);
     w.put(r.solved);
     for (const double v : {r.departure, r.travelTime, r.pathLength, r.arrival})
         w.put(v);
@@ -55,8 +56,9 @@ FleetGlider unpack(const std::string &bytes)
     FleetGlider g;
     FleetRow &r = g.row;
     ByteReader in(bytes);
-    for (std::string *s : {&r.name, &r.status, &r.reason, &r.badInput, &r.departureIso, &r.arrivalIso, &g.kept})
+    for (std::string *s : {&r.name, &r.reason, &r.badInput, &r.departureIso, &r.arrivalIso, &g.kept})
         in.get(*s);
+    in.get(r.status);
     in.get(r.solved);
     for (double *v : {&r.departure, &r.travelTime, &r.pathLength, &r.arrival})
         in.get(*v);

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/io/GeoBox.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/io/Time.h"

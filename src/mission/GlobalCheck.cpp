@@ -222,7 +222,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
         base.departure = departure;
         base.speed = best.speed;
         base.planner = best.planner;
-        base.status = "Exact solution";
+        base.status = PlanStatus::ExactSolution;
         base.straightLineTime = best.straightLineTime;
         base.straightLineLength = best.straightLineLength;
         base.planningSeconds = best.planningSeconds;
@@ -268,7 +268,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
         check.gain = 1.0;
     if (best.solved && check.winner != check.candidates.front().name)
     {
-        best.status = "Exact solution";
+        best.status = PlanStatus::ExactSolution;
         best.reason.clear();
         if (m.stints.set)
         {

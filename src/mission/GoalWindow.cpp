@@ -25,7 +25,7 @@ namespace
 void failArrival(PlannedPath &r, const std::string &why)
 {
     r.solved = false;
-    r.status = kNoPathStatus;
+    r.status = PlanStatus::NoPath;
     r.reason = why;
     r.pathChecked = false;
 }

@@ -39,7 +39,7 @@ PlannedPath headingResult(const MissionProblem &problem, const GliderContext &ct
     r.solved = f.reached;
     if (!f.reached)
     {
-        r.status = kNoPathStatus;
+        r.status = PlanStatus::NoPath;
         r.reason = "the heading route fails its check: " + why;
     }
     return r;
@@ -99,7 +99,7 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
         if (!f.ok || f.grounded || !(r.reflownEndDistance <= radius))
         {
             r.solved = false;
-            r.status = kNoPathStatus;
+            r.status = PlanStatus::NoPath;
             r.reason = "the heading route fails its accurate re-flight: " +
                        (f.grounded || !f.ok ? f.why : "it ends " + text::number(r.reflownEndDistance) +
                                                           " from the goal (goal radius " + text::number(radius) + ")");
@@ -146,7 +146,7 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
     if (path.empty())
     {
         r.solved = false;
-        r.status = kNoPathStatus;
+        r.status = PlanStatus::NoPath;
         r.reason = "the path cannot be flown when re-flown accurately: " + why;
         return;
     }
@@ -222,7 +222,7 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
                               : std::string()) +
                     r.reason + " (" + asked.name +
                     " found none on its lattice, nor Isochrone with held headings)" + bound;
-    failed.status = kNoPathStatus;
+    failed.status = PlanStatus::NoPath;
     failed.planningSeconds = r.planningSeconds;
     return failed;
 }

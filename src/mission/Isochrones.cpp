@@ -2,17 +2,44 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "PlanningInternal.h"
+#include "../io/NumberText.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "ompl_glider/reachability/LevelSet.h"
+#include "ompl_glider/ompl/PipelinePlanner.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace ompl_glider
 {
+namespace
+{
+/// The reachable set from the registry's first planner that computes one (PipelinePlanner::reachableSet(): the
+/// level set's family).
+std::optional<ReachableSet> reachableSetOf(const MissionProblem &problem, const GliderProblem &gp, double departure,
+                                           const std::vector<double> &times, double cellScale)
+{
+    std::shared_ptr<GliderContext> ctx;
+    const std::shared_ptr<GliderSimpleSetup> ss = makeSimpleSetup(gp, &ctx);
+    PipelineSetup setup;
+    setup.departure = departure;
+    setup.start = problem.getStart();
+    setup.goal = problem.getGoal();
+    setup.region = ctx->region;
+    for (const PlannerEntry &entry : plannerRegistry())
+    {
+        if (entry.family != PlannerFamily::LevelSet)
+            continue;
+        const ompl::base::PlannerPtr planner = entry.make(ss->getSpaceInformation(), ctx);
+        if (std::optional<ReachableSet> r = pipelineView(*planner).reachableSet(setup, times, cellScale))
+            return r;
+    }
+    throw Error("isochrones: no registered planner computes the reachable set");
+}
+} // namespace
+
 IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath &plan, double departure,
                                double interval)
 {
@@ -28,12 +55,10 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
         const double count = std::floor(span * (1 + 1e-9) / interval);
         if (count > static_cast<double>(planning_detail::kMaxIsochrones))
         {
-            char text[200];
-            std::snprintf(text, sizeof text,
-                          ": an interval of %g gives %.4g isochrones over the %.4g the plan takes, more than the "
-                          "limit of %zu: use a longer interval",
-                          interval, count, span, planning_detail::kMaxIsochrones);
-            throw Error(m.place("outputs.isochrone_interval") + text);
+            throw Error(m.place("outputs.isochrone_interval") + ": an interval of " + text::number(interval) +
+                        " gives " + text::number(count, 4) + " isochrones over the " + text::number(span, 4) +
+                        " the plan takes, more than the limit of " + std::to_string(planning_detail::kMaxIsochrones) +
+                        ": use a longer interval");
         }
         for (double t = interval; t <= span * (1 + 1e-9); t += interval)
             times.push_back(t);
@@ -42,29 +67,28 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
         for (int k = 1; k <= 8; ++k)
             times.push_back(span * k / 8.0);
 
-    IsochroneSet out;
-    LevelSetParams lp;
-    // Contours for a pilot's map: a cell of 1/100 of the region's larger side (the planner's default is 1/200; this
-    // is eight times less work, about 1 % of the region's size in position)
-    lp.cellSize = 2.0 * defaultLevelSetResolution(*ctx);
-    out.resolution = lp.cellSize;
-    const LevelSetSolver solver(ctx, lp);
-    const Point2 s = problem.getStart();
-    const Reachability r = solver.solve(s.x, s.y, departure, departure + (times.empty() ? 0.0 : times.back()),
-                                        std::nullopt);
-    out.seconds = r.stats.seconds;
-    out.x0 = r.x0;
-    out.y0 = r.y0;
-    out.h = r.h;
-    out.nx = r.nx;
-    out.ny = r.ny;
-    out.arrival = r.arrival;
+    // the reachable set is the level-set planner's answer: asked through the registry and PipelinePlanner, so the
+    // pipeline names no planner type. Contours for a pilot's map: a cell of 1/100 of the region's larger side (the
+    // planner's default is 1/200; this is eight times less work, about 1 % of the region's size in position)
+    std::vector<double> absolute;
     for (double dt : times)
+        absolute.push_back(departure + dt);
+    const std::optional<ReachableSet> r = reachableSetOf(problem, gp, departure, absolute, 2.0);
+    IsochroneSet out;
+    out.resolution = r->resolution;
+    out.seconds = r->seconds;
+    out.x0 = r->x0;
+    out.y0 = r->y0;
+    out.h = r->h;
+    out.nx = r->nx;
+    out.ny = r->ny;
+    out.arrival = r->arrival;
+    for (std::size_t k = 0; k < absolute.size(); ++k)
     {
         Isochrone c;
-        c.time = departure + dt;
-        c.lines = r.isochrone(c.time);
-        c.iso = problem.isoTime(c.time);  // empty without dates
+        c.time = absolute[k];
+        c.lines = r->lines[k];
+        c.iso = problem.isoTime(c.time); // empty without dates
         if (problem.isGeographic())
         {
             for (const auto &line : c.lines)
@@ -80,4 +104,4 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
     }
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

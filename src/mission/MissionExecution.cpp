@@ -15,7 +15,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/TaskSpread.h"
-#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -162,7 +162,7 @@ void checkTruthTimes(const MissionProblem &problem, const PlannedPath &plan, dou
 void checkTruthSpace(const MissionProblem &problem, const PlannedPath &plan, ExecutionResult &r)
 {
     const MissionSpec &m = problem.getSpec();
-    const auto grid = std::dynamic_pointer_cast<const GriddedCurrentField>(problem.getTruth());
+    const FieldGrid *grid = problem.getTruth() ? problem.getTruth()->grid() : nullptr;
     if (!m.execution.truth || !grid)
         return;
     const Region e = grid->extent(), &box = problem.getBox();

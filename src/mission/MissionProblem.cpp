@@ -15,8 +15,8 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/io/Coastline.h"
-#include "ompl_glider/current/GeoBox.h"
-#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/io/GeoBox.h"
+#include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/current/Interpolation.h"
 #include "ompl_glider/current/LocalProjection.h"
 #if OMPL_GLIDER_WITH_NETCDF
@@ -208,7 +208,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     buildBox();
     checkAnalyticFields();
     buildRegions();
-    const auto grid = std::dynamic_pointer_cast<const GriddedCurrentField>(members_.empty() ? field_ : members_.front());
+    const FieldGrid *grid = (members_.empty() ? field_ : members_.front())->grid();
     if (grid)
         spec_.travel.maxStep = 0.5 * grid->minCellSize();  // no travel-time step passes over a grid node
     if (!(spec_.planner.gridSize > 0))
@@ -421,7 +421,7 @@ void MissionProblem::buildBox()
                 box_.yMax = std::max(box_.yMax, q.y);
             }
     }
-    else if (auto g = std::dynamic_pointer_cast<const GriddedCurrentField>(members_.empty() ? field_ : members_.front()))
+    else if (const FieldGrid *g = (members_.empty() ? field_ : members_.front())->grid())
     {
         const Region e = g->extent();
         box_.xMin = e.xMin;

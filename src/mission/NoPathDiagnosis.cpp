@@ -10,7 +10,7 @@
 #include <deque>
 
 #include "PlanningInternal.h"
-#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/current/CurrentField.h"
 #include "../io/NumberText.h"
 
 namespace ompl_glider
@@ -148,7 +148,7 @@ std::string enclosure(const MissionProblem &problem, double t0, bool *byModelLan
     const MissionSpec &m = problem.getSpec();
     const Region &box = problem.getBox();
     const CurrentField &field = *problem.getField();
-    const auto *gridded = dynamic_cast<const GriddedCurrentField *>(&field);
+    const FieldGrid *gridded = field.grid();
     const double side = std::max(box.xMax - box.xMin, box.yMax - box.yMin);
     double h = side / 250.0;
     if (gridded)

@@ -10,7 +10,7 @@
 
 #include "../io/NumberText.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/io/GeoBox.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/ompl/Sectors.h"
 #include "ompl_glider/registry/PlannerRegistry.h"

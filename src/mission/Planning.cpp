@@ -140,7 +140,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     const GliderProblem gp = checkedProblem(problem, departure, r.speed);
     if (!(gp.horizon > 0))
     {
-        r.status = "Invalid start";
+        r.status = PlanStatus::InvalidStart;
         r.reason = "departure after the end of the forecast";
         r.badInput = "departure.time";
         return r;
@@ -157,7 +157,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
             const LonLat p = problem.toGeographic(q);
             char where[96];
             std::snprintf(where, sizeof where, " (lon %.5f, lat %.5f)", p.lon, p.lat);
-            r.status = start ? "Invalid start" : "Invalid goal";
+            r.status = start ? PlanStatus::InvalidStart : PlanStatus::InvalidGoal;
             r.badInput = start ? "start" : "goal";
             r.reason = "the " + r.badInput + where + " is " + why;
             return r;
@@ -181,7 +181,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
         limit > 0 ? ompl::base::timedPlannerTerminationCondition(limit) : ompl::base::plannerNonTerminatingCondition(),
         ompl::base::PlannerTerminationCondition([] { return stopRequested(); })));
     r.planningSeconds = secondsSince(tA);
-    r.status = status.asString();
+    r.status = r.plannerStatus = planStatusOfOmpl(ompl::base::PlannerStatus::StatusType(status));
     r.searchCostFunctionCalls = ctx->travel->costFunctionCalls() - cfc0;
     r.currentModelCalls = ctx->field->callCount() - cmc0;
     r.expandedVertices = answers.expandedVertices();
@@ -210,7 +210,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
         }
     if (!r.solved && stopRequested())
     {
-        r.status = "Stopped";
+        r.status = PlanStatus::Stopped;
         r.reason = "stopped on request (Ctrl-C) before a path was found";
         return r;
     }
@@ -232,7 +232,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
         }
         if (r.reason.rfind("no path exists", 0) == 0)
         {
-            r.status = kNoPathStatus;  // OMPL's ABORT or TIMEOUT would send the user after a longer time limit
+            r.status = PlanStatus::NoPath;  // OMPL's ABORT or TIMEOUT would send the user after a longer time limit
             r.reason += horizonNote(problem, gp);
         }
         return r;
@@ -322,7 +322,7 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
         result.plan.departure = m.departure.begin;
         result.plan.speed = m.vehicle.speed;
         result.plan.planner = plannerEntry(m.planner.name).name;
-        result.plan.status = kNoPathStatus;
+        result.plan.status = PlanStatus::NoPath;
         result.plan.reason = "no departure in the window has a path within the forecast";
         result.departureIso = problem.isoTime(result.plan.departure);
         result.wallSeconds = secondsSince(start);

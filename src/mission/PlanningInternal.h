@@ -35,8 +35,6 @@ namespace ompl_glider
 {
 namespace planning_detail
 {
-/// The status of a well-formed problem whose search ended without a path for want of one, not of time.
-inline constexpr const char *kNoPathStatus = "No path";
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 /// Time limit of planners that use all the time they get (sampling planners) when the mission gives none.

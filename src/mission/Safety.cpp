@@ -9,7 +9,7 @@
 #include "../io/NumberText.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/io/GeoBox.h"
 #include "ompl_glider/environment/ForbiddenCells.h"
 #include "ompl_glider/environment/ForbiddenRegions.h"
 #include "ompl_glider/environment/KeepOffZone.h"
@@ -33,12 +33,13 @@ std::string at(const MissionSpec &m, const std::string &field)
 }  // namespace
 
 #if OMPL_GLIDER_WITH_NETCDF
-DepthRegion MissionProblem::bathymetryRegion() const
+GeoBox MissionProblem::bathymetryRegion() const
 {
-    DepthRegion region;
+    GeoBox region = GeoBox::world();
     if (isGeographic())
     {
-        const GeoBox gb = frameBounds(box_, [this](Point2 p) { return toGeographic(p); });
+        const GeoBox gb =
+            frameBounds(Box{box_.xMin, box_.xMax, box_.yMin, box_.yMax}, [this](Point2 p) { return toGeographic(p); });
         const double pad = 0.05 * std::max(gb.lonMax - gb.lonMin, gb.latMax - gb.latMin);
         region = {gb.lonMin - pad, gb.lonMax + pad, std::max(-90.0, gb.latMin - pad), std::min(90.0, gb.latMax + pad)};
     }
@@ -61,7 +62,7 @@ std::shared_ptr<const ForbiddenCells> MissionProblem::shallowWater()
         file = forecastFiles_.front();  // the model's own bathymetry (ROMS h)
     }
 #if OMPL_GLIDER_WITH_NETCDF
-    const DepthRegion region = bathymetryRegion();
+    const GeoBox region = bathymetryRegion();
     const bool geo = isGeographic();
     DepthGrid g;
     try
@@ -178,7 +179,8 @@ std::vector<LandPolygon> MissionProblem::readCoastline(const std::string &at)
 {
     // the coastline's land polygons that meet the box (with a margin of a tenth of its size)
     const MissionSpec &m = spec_;
-    const GeoBox gb = frameBounds(box_, [this](Point2 p) { return toGeographic(p); });
+    const GeoBox gb =
+        frameBounds(Box{box_.xMin, box_.xMax, box_.yMin, box_.yMax}, [this](Point2 p) { return toGeographic(p); });
     const double lon0 = gb.lonMin, lon1 = gb.lonMax, lat0 = gb.latMin, lat1 = gb.latMax;
     const double pad = 0.1 * std::max(lon1 - lon0, lat1 - lat0);
     std::vector<LandPolygon> land;
@@ -201,7 +203,7 @@ std::vector<LandPolygon> MissionProblem::readCoastline(const std::string &at)
         for (const auto &[w, e] : spans)
         {
             count = {};
-            for (LandPolygon &p : readLandPolygons(m.forbidden.coastline, w, s, e, n, &repairs, &count))
+            for (LandPolygon &p : readLandPolygons(m.forbidden.coastline, GeoBox{w, e, s, n}, &repairs, &count))
                 land.push_back(std::move(p));
             usedFeatures.insert(count.usedFeatures.begin(), count.usedFeatures.end());
         }

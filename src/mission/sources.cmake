@@ -26,6 +26,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Isochrones.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionExecution.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Fleet.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/PlanStatus.cpp
   ${CMAKE_CURRENT_LIST_DIR}/InputDigest.cpp
 )
 if(OMPL_GLIDER_WITH_NETCDF)

@@ -88,7 +88,7 @@ std::string fleetSummaryJson(const MissionSpec &m, const std::vector<FleetGlider
         fleet.push_back({{"name", r.name},
                          {"directory", r.name},
                          {"solved", r.solved},
-                         {"status", r.status},
+                         {"status", statusText(r.status)},
                          {"reason", jtext(r.reason)},
                          {"travel_time", jnum(r.travelTime)},
                          {"path_length", jnum(r.pathLength)},
@@ -157,7 +157,7 @@ std::string fleetCsv(const std::vector<FleetGlider> &gliders)
     for (const FleetGlider &g : gliders)
     {
         const FleetRow &r = g.row;
-        out += csvText(r.name) + "," + csvText(r.status) + "," + text::csvNumber(r.travelTime) + "," +
+        out += csvText(r.name) + "," + csvText(statusText(r.status)) + "," + text::csvNumber(r.travelTime) + "," +
                text::csvNumber(r.pathLength) + "," + text::csvNumber(r.departure) + "," + text::csvNumber(r.arrival) +
                "," + r.departureIso + "," + r.arrivalIso + "," + csvText(r.reason) + "\n";
     }

@@ -13,7 +13,7 @@
 #include <cairo.h>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/current/CurrentField.h"
 #include "MapPainter.h"
 #include "OutputDirectory.h"
 
@@ -292,7 +292,7 @@ std::vector<double> MapPainter::sampleSpeeds(int cell, int nx, int ny)
     const double depth = map.fieldDepth_, time = map.fieldTime_;
     std::vector<double> sp(static_cast<std::size_t>(nx) * ny, 0.0);
     // a gridded forecast tells land (closed nodes of its grid) from no data (outside its grid)
-    const auto *grid = dynamic_cast<const GriddedCurrentField *>(&field);
+    const FieldGrid *grid = field.grid();
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i)
         {
@@ -307,8 +307,7 @@ std::vector<double> MapPainter::sampleSpeeds(int cell, int nx, int ny)
             }
             else
             {
-                double fi, fj;
-                s = grid && !grid->locate(x, y, fi, fj) ? kNoData : kLand;
+                s = grid && !grid->covers(x, y) ? kNoData : kLand;
                 (s == kLand ? landShown_ : noDataShown_) = true;
             }
             sp[static_cast<std::size_t>(j) * nx + i] = s;

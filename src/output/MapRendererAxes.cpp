@@ -8,7 +8,7 @@
 
 #include <cairo.h>
 
-#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/io/GeoBox.h"
 #include "MapPainter.h"
 
 namespace ompl_glider
@@ -31,7 +31,7 @@ struct Graticule
 {
     Graticule(const Region &reg, const MapOptions &o) : options(o)
     {
-        const GeoBox gb = frameBounds(reg, o.toGeographic);
+        const GeoBox gb = frameBounds(Box{reg.xMin, reg.xMax, reg.yMin, reg.yMax}, o.toGeographic);
         lon0 = gb.lonMin;
         lon1 = gb.lonMax;
         lat0 = gb.latMin;

@@ -135,7 +135,8 @@ void printReport(std::ostream &out, const MissionResult &r)
     }
     const std::string iso = r.waypoints.empty() ? r.departureIso : r.waypoints.front().iso;
     out << "Departure:          " << num(p.departure) << (iso.empty() ? "" : " (" + iso + ")") << "\n";
-    out << "Status:             " << p.status << (p.solved ? "" : "\nReason:             " + p.reason) << "\n";
+    out << "Status:             " << statusText(p.status) << (p.solved ? "" : "\nReason:             " + p.reason)
+        << "\n";
     printRouteModel(out, p, m);
     printGlobalCheck(out, p, m);
     if (!r.safetyNote.empty())

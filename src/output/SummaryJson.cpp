@@ -247,7 +247,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     for (const std::string &note : r.forecastNotes)
         j["forecast_notes"].push_back(jtext(note));
     j["solved"] = p.solved;
-    j["status"] = p.status;
+    j["status"] = statusText(p.status);
     j["reason"] = jtext(p.reason);
     j["planner"] = plannerJson(m, p);
     j["units"] = {{"length_m", m.lengthUnitMetres}, {"time_s", m.timeUnitSeconds}};

@@ -242,4 +242,26 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
     pdef_->addSolutionPath(sol);
     return ompl::base::PlannerStatus::EXACT_SOLUTION;
 }
+
+std::optional<ReachableSet> LevelSetPlanner::reachableSet(const PipelineSetup &setup, const std::vector<double> &times,
+                                                          double cellScale) const
+{
+    LevelSetParams lp;
+    lp.cellSize = cellScale * defaultLevelSetResolution(*ctx_);
+    const LevelSetSolver solver(ctx_, lp);
+    const Reachability r = solver.solve(setup.start.x, setup.start.y, setup.departure,
+                                        times.empty() ? setup.departure : times.back(), std::nullopt);
+    ReachableSet out;
+    out.resolution = lp.cellSize;
+    out.seconds = r.stats.seconds;
+    out.x0 = r.x0;
+    out.y0 = r.y0;
+    out.h = r.h;
+    out.nx = r.nx;
+    out.ny = r.ny;
+    out.arrival = r.arrival;
+    for (const double t : times)
+        out.lines.push_back(r.isochrone(t));
+    return out;
+}
 }  // namespace ompl_glider

@@ -1,9 +1,7 @@
 # gridded / NetCDF tests (current model from forecasts)
 glider_add_test(test_current_interpolation ${CMAKE_CURRENT_LIST_DIR}/TestInterpolation.cpp)
 glider_add_test(test_current_gridded ${CMAKE_CURRENT_LIST_DIR}/TestGriddedField.cpp)
-glider_add_test(test_current_projection
-  ${CMAKE_CURRENT_LIST_DIR}/TestProjection.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/TestGeoBox.cpp)
+glider_add_test(test_current_projection ${CMAKE_CURRENT_LIST_DIR}/TestProjection.cpp)
 glider_add_test(test_current_netcdf
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfTime.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfLayouts.cpp

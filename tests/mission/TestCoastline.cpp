@@ -140,7 +140,7 @@ void writeCaribbean(const std::string &path)
 
 TEST(Coastline, GshhgExtractOfJamaicaIsOneLandPolygon)
 {
-    const auto land = readLandPolygons(kJamaica, -80, 16, -75, 20);
+    const auto land = readLandPolygons(kJamaica, geoBox(-80, 16, -75, 20));
     ASSERT_EQ(land.size(), 1u);
     // Jamaica: about 11,000 km^2, 1.0 square degree at 18N (1 deg^2 = 111 x 105.6 km^2); GSHHG's low resolution
     // keeps the outline within a few per cent
@@ -148,19 +148,19 @@ TEST(Coastline, GshhgExtractOfJamaicaIsOneLandPolygon)
     EXPECT_TRUE(inside(land[0].outer, -77.3, 18.1));   // the island's interior
     EXPECT_FALSE(inside(land[0].outer, -77.3, 17.5));  // south of it
     // a box that holds only the eastern half: clipped to it
-    const auto east = readLandPolygons(kJamaica, -77.0, 16, -75, 20);
+    const auto east = readLandPolygons(kJamaica, geoBox(-77.0, 16, -75, 20));
     ASSERT_EQ(east.size(), 1u);
     for (const LonLat &g : east[0].outer)
         EXPECT_GE(g.lon, -77.0 - 1e-9);
     EXPECT_LT(ringArea(east[0].outer), ringArea(land[0].outer));
     // a box away from it: nothing
-    EXPECT_TRUE(readLandPolygons(kJamaica, -70, 10, -65, 12).empty());
+    EXPECT_TRUE(readLandPolygons(kJamaica, geoBox(-70, 10, -65, 12)).empty());
 }
 
 TEST(Coastline, ShapefileInWebMercatorKmlAndClosedShorelinesReadTheSame)
 {
     TempDir dir;
-    const auto land = readLandPolygons(kJamaica, -80, 16, -75, 20);
+    const auto land = readLandPolygons(kJamaica, geoBox(-80, 16, -75, 20));
     ASSERT_EQ(land.size(), 1u);
     const double area = ringArea(land[0].outer);
     const std::string shp = dir.file("jamaica_3857.shp"), kml = dir.file("jamaica.kml"),
@@ -170,7 +170,7 @@ TEST(Coastline, ShapefileInWebMercatorKmlAndClosedShorelinesReadTheSame)
     writeWithGdal(lines, "GeoJSON", 4326, land, true);
     for (const std::string &f : {shp, kml, lines})
     {
-        const auto again = readLandPolygons(f, -80, 16, -75, 20);
+        const auto again = readLandPolygons(f, geoBox(-80, 16, -75, 20));
         ASSERT_EQ(again.size(), 1u) << f;
         EXPECT_NEAR(ringArea(again[0].outer), area, 1e-6 * area) << f;
         EXPECT_TRUE(inside(again[0].outer, -77.3, 18.1)) << f;
@@ -188,14 +188,15 @@ TEST(Coastline, ALayerIn0To360LongitudesGivesItsLandInMinus180To180)
         [[[200, 20], [202, 20], [202, 22], [200, 22], [200, 20]]]}},
       {"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates":
         [[[179, 30], [181, 30], [181, 31], [179, 31], [179, 30]]]}}]})";
-    const auto east = readLandPolygons(path, -165, 15, -150, 25);
+    const auto east = readLandPolygons(path, geoBox(-165, 15, -150, 25));
     ASSERT_EQ(east.size(), 1u);
     EXPECT_NEAR(ringArea(east[0].outer), 4.0, 1e-9);
     EXPECT_TRUE(inside(east[0].outer, -159.0, 21.0));
     for (const LonLat &p : east[0].outer)
         EXPECT_TRUE(p.lon >= -180 && p.lon <= 180) << p.lon;
     // the box split at the antimeridian (as MissionProblem asks for it): both halves of the second island
-    const auto west = readLandPolygons(path, 175, 25, 180, 35), across = readLandPolygons(path, -180, 25, -175, 35);
+    const auto west = readLandPolygons(path, geoBox(175, 25, 180, 35)),
+               across = readLandPolygons(path, geoBox(-180, 25, -175, 35));
     ASSERT_EQ(west.size(), 1u);
     ASSERT_EQ(across.size(), 1u);
     EXPECT_NEAR(ringArea(west[0].outer), 1.0, 1e-9);
@@ -217,7 +218,7 @@ TEST(Coastline, BadFilesAreErrorsNamingTheFile)
     {
         try
         {
-            readLandPolygons(file, -80, 16, -75, 20);
+            readLandPolygons(file, geoBox(-80, 16, -75, 20));
             ADD_FAILURE() << file;
         }
         catch (const Error &e)
@@ -254,7 +255,7 @@ TEST(Coastline, RouteGoesAroundJamaicaAndAStartOnItIsBadInput)
     EXPECT_TRUE(std::isinf(r.plan.straightLineTime));
     EXPECT_GT(r.plan.travelTime, rb.plan.travelTime);
     // every ~200 m of the route lies outside the island (independent point-in-polygon on lon/lat)
-    const auto land = readLandPolygons(kJamaica, -80, 16, -75, 20);
+    const auto land = readLandPolygons(kJamaica, geoBox(-80, 16, -75, 20));
     expectPathOutside(problem, r.plan.path, land[0].outer);
     // a start on the island is bad input
     MissionSpec onLand = spec;
@@ -288,7 +289,7 @@ TEST(Coastline, AHoleTouchingItsOuterRingAtAVertexIsTakenAsItIs)
     const std::string coast = dir.file("lagoon.geojson"), nc = dir.file("caribbean.nc");
     std::ofstream(coast) << oneFeature("Isla Laguna", kTouchingLagoon);
     std::vector<std::string> repairs;
-    const auto land = readLandPolygons(coast, -80, 16, -75, 20, &repairs);
+    const auto land = readLandPolygons(coast, geoBox(-80, 16, -75, 20), &repairs);
     ASSERT_EQ(land.size(), 1u);
     EXPECT_EQ(land[0].holes.size(), 1u);
     EXPECT_EQ(land[0].name, "Isla Laguna");
@@ -320,7 +321,7 @@ TEST(Coastline, AnInvalidPolygonIsRepairedAndTheRepairIsReported)
     std::ofstream(coast) << oneFeature(
         "Bow Tie", R"({"type":"Polygon","coordinates":[[[-77.5,17.8],[-76.5,18.6],[-76.5,17.8],[-77.5,18.6],[-77.5,17.8]]]})");
     std::vector<std::string> repairs;
-    const auto land = readLandPolygons(coast, -80, 16, -75, 20, &repairs);
+    const auto land = readLandPolygons(coast, geoBox(-80, 16, -75, 20), &repairs);
     ASSERT_EQ(repairs.size(), 1u);
     EXPECT_NE(repairs[0].find("'Bow Tie'"), std::string::npos) << repairs[0];
     EXPECT_NE(repairs[0].find("Self-intersection"), std::string::npos) << repairs[0];
@@ -336,7 +337,7 @@ TEST(Coastline, ShorelinesInAGeometryCollectionAreLandOrRefusedNeverDropped)
     // Jamaica's GSHHG shoreline written as a closed LineString inside a GeometryCollection (as coastline extracts
     // often write it), beside a small square island as a polygon
     TempDir dir;
-    const auto jamaica = readLandPolygons(kJamaica, -80, 16, -75, 20);
+    const auto jamaica = readLandPolygons(kJamaica, geoBox(-80, 16, -75, 20));
     ASSERT_EQ(jamaica.size(), 1u);
     std::string ring;
     for (std::size_t k = 0; k <= jamaica[0].outer.size(); ++k)
@@ -349,7 +350,7 @@ TEST(Coastline, ShorelinesInAGeometryCollectionAreLandOrRefusedNeverDropped)
         "Shores", R"({"type":"GeometryCollection","geometries":[{"type":"LineString","coordinates":[)" + ring +
                       R"(]},{"type":"Polygon","coordinates":[[[-79,16.5],[-78.8,16.5],[-78.8,16.7],[-79,16.7],)"
                       R"([-79,16.5]]]}]})");
-    const auto land = readLandPolygons(coast, -80, 16, -75, 20);
+    const auto land = readLandPolygons(coast, geoBox(-80, 16, -75, 20));
     ASSERT_EQ(land.size(), 2u);
     EXPECT_EQ(polygonsHolding(land, -77.3, 18.1), 1);  // Jamaica, from the closed line
     EXPECT_EQ(polygonsHolding(land, -78.9, 16.6), 1);  // the square
@@ -379,7 +380,7 @@ TEST(Coastline, ShorelinesInAGeometryCollectionAreLandOrRefusedNeverDropped)
                      R"([-78.8,16.5],[-78.8,16.7],[-79,16.7],[-79,16.5]]]},)" + member + "]}");
         try
         {
-            readLandPolygons(bad, -80, 16, -75, 20);
+            readLandPolygons(bad, geoBox(-80, 16, -75, 20));
             ADD_FAILURE() << member << " was dropped in silence";
         }
         catch (const Error &e)

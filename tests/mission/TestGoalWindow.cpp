@@ -171,7 +171,7 @@ TEST(GoalWindow, WindowThatCannotBeMet)
     const MissionProblem problem(withWindow(kUniform, 1.0, 2.0));
     const MissionResult r = runMission(problem);
     EXPECT_FALSE(r.plan.solved);
-    EXPECT_EQ(r.plan.status, "No path");
+    EXPECT_EQ(r.plan.status, PlanStatus::NoPath);
     EXPECT_NE(r.plan.reason.find("after the end of the goal's arrival window"), std::string::npos) << r.plan.reason;
     EXPECT_TRUE(r.plan.badInput.empty());
     EXPECT_TRUE(r.waypoints.empty());

@@ -417,7 +417,7 @@ TEST(MissionRun, StartOnAnIslandIsAnOutcomeNotAnException)
     const MissionProblem problem(spec);
     const MissionResult r = runMission(problem);
     EXPECT_FALSE(r.plan.solved);
-    EXPECT_EQ(r.plan.status, "Invalid start");
+    EXPECT_EQ(r.plan.status, PlanStatus::InvalidStart);
     EXPECT_HAS(r.plan.reason, "North Island");
     EXPECT_TRUE(r.waypoints.empty());
     const json s = json::parse(summaryJson(r, problem));

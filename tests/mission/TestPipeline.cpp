@@ -100,7 +100,7 @@ TEST(Pipeline, GulfStreamStagesNeverArriveLaterAndApproachTheOptimum)
     plain.refinement = false;
     const PlannedPath a = planRoute(problem, 0.0, plain);
     ASSERT_TRUE(a.solved) << a.reason;
-    EXPECT_EQ(a.status, "Exact solution");
+    EXPECT_EQ(a.status, PlanStatus::ExactSolution);
     EXPECT_EQ(a.planner, "ZA*TVE");
     EXPECT_EQ(a.path.size(), a.raw.size());
     EXPECT_EQ(a.travelTime, a.rawTravelTime);

@@ -271,7 +271,7 @@ TEST(Safety, BathymetryAxesThatDoNotSayWhichIsLongitudeAreRefusedNamingThem)
     }
     try
     {
-        readDepthGrid(path, "", DepthRegion{});
+        readDepthGrid(path, "", GeoBox::world());
         ADD_FAILURE() << "an axis order was guessed";
     }
     catch (const Error &e)

@@ -84,7 +84,7 @@ TEST(StrongCurrents, UniformCurrentThreeTimesTheSpeedUpstreamGoalHasNoPath)
     const PlannedPath plan = planRoute(problem, 0.0);
     EXPECT_FALSE(plan.solved);
     EXPECT_EQ(plan.planner, "ZA*TVE");  // no route of any planner: the asked one's outcome, with what the others found
-    EXPECT_EQ(plan.status, "No path");
+    EXPECT_EQ(plan.status, PlanStatus::NoPath);
     EXPECT_NE(plan.reason.find("no path exists"), std::string::npos) << plan.reason;  // proven by the level set
     EXPECT_NE(plan.reason.find("nor Isochrone"), std::string::npos) << plan.reason;
     std::printf("uniform 3V upstream: planner %s, reason: %s\n", plan.planner.c_str(), plan.reason.c_str());

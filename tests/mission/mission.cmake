@@ -1,19 +1,17 @@
 # mission tests
-glider_add_test(test_mission_goto ${CMAKE_CURRENT_LIST_DIR}/TestSlocumGoto.cpp)
 glider_add_test(test_mission_departure ${CMAKE_CURRENT_LIST_DIR}/TestDepartureTime.cpp)
 glider_add_test(test_mission_file ${CMAKE_CURRENT_LIST_DIR}/TestMissionFile.cpp)
 glider_add_test(test_mission_run ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp ${CMAKE_CURRENT_LIST_DIR}/TestForecastLand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestForecastModelGrids.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestCoastline.cpp)
 target_link_libraries(test_mission_run PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)
-glider_add_test(test_mission_bathymetry ${CMAKE_CURRENT_LIST_DIR}/TestBathymetry.cpp)
 # the plan flown in another ocean through the pipeline
 glider_add_test(test_mission_execution ${CMAKE_CURRENT_LIST_DIR}/TestMissionExecution.cpp)
 target_link_libraries(test_mission_execution PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf)
 # the many-plan modes through a TaskSpreader (TaskSpread.h) equal the threaded run bit for bit
 glider_add_test(test_mission_task_spread ${CMAKE_CURRENT_LIST_DIR}/TestTaskSpread.cpp)
 # a fleet: one plan per glider through the pipeline, one folder per glider, all or nothing
-glider_add_test(test_mission_fleet ${CMAKE_CURRENT_LIST_DIR}/TestFleet.cpp)
+glider_add_test(test_mission_fleet ${CMAKE_CURRENT_LIST_DIR}/TestFleet.cpp ${CMAKE_CURRENT_LIST_DIR}/TestPlanStatus.cpp)
 target_link_libraries(test_mission_fleet PRIVATE nlohmann_json::nlohmann_json)
 if(TARGET glider_plan)
   add_test(NAME mission.fleet_cli

@@ -15,15 +15,6 @@ target_link_libraries(test_strong_currents_fine PRIVATE ompl_glider::ompl_glider
 target_compile_options(test_strong_currents_fine PRIVATE -Wall -Wextra)
 gtest_discover_tests(test_strong_currents_fine DISCOVERY_TIMEOUT 60 NO_PRETTY_VALUES
                      PROPERTIES TIMEOUT 1800 LABELS ci)
-# the output directory under faults: SIGKILL at every step, a signal while staging, a failing write, a lock
-glider_add_test(test_output_faults ${CMAKE_CURRENT_LIST_DIR}/TestOutputFaults.cpp)
-target_include_directories(test_output_faults PRIVATE ${PROJECT_SOURCE_DIR}/src/output)
-if(TARGET glider_plan)
-  # glider_plan under SIGINT/SIGTERM, a second run, a dangling link, a full and a read-only tmpfs
-  add_test(NAME mission.output_faults
-    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_output_faults.sh $<TARGET_FILE:glider_plan>)
-  set_tests_properties(mission.output_faults PROPERTIES TIMEOUT 300)
-endif()
 if(TARGET glider_plan)
   # flags override a mission file's fields: --mission m.yaml --speed 0.6 plans the mission edited to 0.6
   add_test(NAME mission.flags_override_mission_file

@@ -1,4 +1,3 @@
 # tests of mission/
 include(${CMAKE_CURRENT_LIST_DIR}/mission.cmake)
-include(${CMAKE_CURRENT_LIST_DIR}/map.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/pipeline.cmake)

@@ -155,3 +155,59 @@ TEST(LevelSetPlanner, ParametersAreChecked)
     EXPECT_THROW(planner.setCfl(3.0), Error);
     EXPECT_NE(findPlanner("levelset"), nullptr);
 }
+
+// The reachable set as the pipeline asks it (PipelinePlanner::reachableSet(), no planner type named): the level
+// set's isochrones in a uniform current are the circles of radius V t about start + c t; every planner of another
+// family answers that it computes none.
+TEST(LevelSetPlanner, ReachableSetThroughThePipelineInterfaceIsTheDriftingCircle)
+{
+    GliderProblem p;
+    p.field = std::make_shared<UniformCurrent>(0.2, -0.1);
+    p.travel.speed = 1.0;
+    p.xMin = -6;
+    p.xMax = 6;
+    p.yMin = -6;
+    p.yMax = 6;
+    p.start = {-1.0, 0.5};
+    p.goal = {3.0, 0.0};
+    std::shared_ptr<GliderContext> ctx;
+    const auto ss = makeSimpleSetup(p, &ctx);
+    PipelineSetup setup;
+    setup.start = p.start;
+    setup.goal = p.goal;
+    setup.departure = p.t0;
+    setup.region = ctx->region;
+    const std::vector<double> times{1.5, 3.0};
+    int levelSets = 0;
+    for (const PlannerEntry &entry : plannerRegistry())
+    {
+        // stint planners need the mission's stints section; of OMPL's own planners (the default answers) one is asked
+        if (entry.family == PlannerFamily::Stints || (entry.family == PlannerFamily::Sampling && entry.name != "RRTstar"))
+            continue;
+        const auto planner = entry.make(ss->getSpaceInformation(), ctx);
+        const std::optional<ReachableSet> r = pipelineView(*planner).reachableSet(setup, times, 1.0);
+        if (entry.family != PlannerFamily::LevelSet)
+        {
+            EXPECT_FALSE(r) << entry.name;
+            continue;
+        }
+        ++levelSets;
+        ASSERT_TRUE(r) << entry.name;
+        ASSERT_EQ(r->lines.size(), times.size());
+        EXPECT_GT(r->resolution, 0.0);
+        EXPECT_EQ(r->arrival.size(), static_cast<std::size_t>(r->nx) * r->ny);
+        for (std::size_t k = 0; k < times.size(); ++k)
+        {
+            const double t = times[k], cx = p.start.x + 0.2 * t, cy = p.start.y - 0.1 * t;
+            std::size_t points = 0;
+            for (const auto &line : r->lines[k])
+                for (const Point2 &q : line)
+                {
+                    ++points;
+                    EXPECT_NEAR(std::hypot(q.x - cx, q.y - cy), t, 2.0 * r->resolution) << "t = " << t;
+                }
+            EXPECT_GT(points, 20u);
+        }
+    }
+    EXPECT_EQ(levelSets, 1);
+}

@@ -35,6 +35,22 @@ struct Region
     double tMax{std::numeric_limits<double>::infinity()};
 };
 
+/// @brief What a field given on a grid of nodes tells of its grid: what the pipeline asks of any gridded source (a
+/// forecast file read by the NetCDF reader, or data built in memory), never its concrete type.
+class FieldGrid
+{
+public:
+    virtual ~FieldGrid() = default;
+    /// @brief Bounding box of the nodes in x/y (z: the depth range, t: the time range).
+    virtual Region extent() const = 0;
+    /// @brief Smallest distance between neighbouring nodes (x/y units).
+    virtual double minCellSize() const = 0;
+    /// @brief The times of the records, ascending (one record: a steady field).
+    virtual const std::vector<double> &recordTimes() const = 0;
+    /// @brief True when (x, y) lies on the grid (within its outer edge), whether land or water there.
+    virtual bool covers(double x, double y) const = 0;
+};
+
 /// @brief A horizontal current field c(x, y, z, t) in a local Cartesian frame.
 ///
 /// Coordinates are metres and seconds for real forecasts, dimensionless for analytic test flows.
@@ -128,6 +144,12 @@ public:
 
     /// @brief Short human-readable name ("meandering jet", "netcdf:file.nc", ...).
     virtual std::string name() const = 0;
+
+    /// @brief The grid of nodes the field is given on; null for a field given by formulas (the default).
+    virtual const FieldGrid *grid() const
+    {
+        return nullptr;
+    }
 
     /// @brief Number of current-model calls (CMC) so far.
     std::uint64_t callCount() const

@@ -76,7 +76,7 @@ struct GriddedData
 ///   stencil box, L the stages' overshoot factors and K = (L - 1) / 2 (see maxSpeed() in GriddedBounds.cpp for the
 ///   argument): both are true upper bounds of what velocity() can return; the second is close to M for
 ///   smooth data even with cubic/Akima schemes on uneven axes.
-class GriddedCurrentField : public CurrentField
+class GriddedCurrentField : public CurrentField, public FieldGrid
 {
 public:
     /// @brief Validates the data (sizes, monotone axes, finite values at water nodes) and builds the locator.
@@ -101,6 +101,19 @@ public:
     std::string name() const override
     {
         return options_.name;
+    }
+    const FieldGrid *grid() const override
+    {
+        return this;
+    }
+    const std::vector<double> &recordTimes() const override
+    {
+        return time_.nodes();
+    }
+    bool covers(double x, double y) const override
+    {
+        double fi, fj;
+        return locate(x, y, fi, fj);
     }
 
     /// @brief The options in use.
@@ -140,7 +153,7 @@ public:
         return time_;
     }
     /// @brief Bounding box of the grid nodes in x/y (z and t: depth and time ranges).
-    Region extent() const;
+    Region extent() const override;
     /// @brief Bytes held by the velocity arrays, mask and node positions.
     std::size_t memoryBytes() const;
     /// @brief The product of the schemes' overshoot factors used by maxSpeed().
@@ -159,7 +172,7 @@ public:
     /// layer that carries weight at z, as inWater() decides), straight between their nodes.
     std::vector<Segment2> landBoundary(double z) const override;
     /// @brief Smallest distance between neighbouring grid nodes (x/y units).
-    double minCellSize() const
+    double minCellSize() const override
     {
         return minCell_;
     }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/io/GeoBox.h"
 #include "ompl_glider/Geometry.h"
 
 namespace ompl_glider
@@ -30,7 +31,7 @@ struct CoastlineCount
     double lonMin{1e300}, lonMax{-1e300}, latMin{1e300}, latMax{-1e300};  ///< the features' extent
 };
 
-/// @brief The land polygons of every layer of @p path that meet the box [lonMin, lonMax] x [latMin, latMax],
+/// @brief The land polygons of every layer of @p path that meet @p box ([lonMin, lonMax] x [latMin, latMax]),
 /// clipped to it (GEOS intersection through OGR), so that only what the trip can meet is kept.
 ///
 /// Polygons and multi-polygons are read as they are; closed line strings (a shoreline written as a line, as GMT's
@@ -45,9 +46,8 @@ struct CoastlineCount
 /// coordinates that cannot be transformed to lon/lat, or coordinates (after the transformation) outside lon
 /// -180..360, lat -90..90 (a projected file without a spatial reference: a GeoJSON without a `crs` member, a
 /// shapefile without its `.prj`). @p count (when given) is added to.
-std::vector<LandPolygon> readLandPolygons(const std::string &path, double lonMin, double latMin, double lonMax,
-                                          double latMax, std::vector<std::string> *repairs = nullptr,
-                                          CoastlineCount *count = nullptr);
+std::vector<LandPolygon> readLandPolygons(const std::string &path, const GeoBox &box,
+                                          std::vector<std::string> *repairs = nullptr, CoastlineCount *count = nullptr);
 
 /// @brief Why GEOS (through OGR) calls the polygon with outer ring @p outer and @p holes invalid ("Self-intersection
 /// at or near point 1 2", in the rings' own coordinates), or "" when it is valid.

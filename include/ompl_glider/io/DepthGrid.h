@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/io/GeoBox.h"
+
 namespace ompl_glider
 {
 /// @brief Nodes and seafloor depths of a bathymetry file, cut to a region.
@@ -19,13 +21,6 @@ struct DepthGrid
     bool rectilinear{false};   ///< on 1-D axes: a ascends along i (the same for every j), b along j
     std::string variable;      ///< the variable read
     std::string convention;    ///< how its sign was decided ("elevation, positive up (attribute positive)")
-};
-
-/// @brief The region of a DepthGrid to read: lon in [lonMin, lonMax] (any convention; lonMax < lonMin + 360) and
-/// lat in [latMin, latMax], or x/y for a file on planning coordinates.
-struct DepthRegion
-{
-    double lonMin{-180.0}, lonMax{180.0}, latMin{-90.0}, latMax{90.0};
 };
 
 /// @brief Reads the depth variable @p variable (empty: the first 2-D variable whose standard_name or name says it is
@@ -41,5 +36,5 @@ struct DepthRegion
 /// cannot be read, none is found, its sign is ambiguous, its axis order cannot be told, an axis repeats a value, no
 /// node lies in the region, or the region holds only fill values or only land (the message names the sign
 /// convention it was read with and the attribute that states the other).
-DepthGrid readDepthGrid(const std::string &path, const std::string &variable, const DepthRegion &region);
+DepthGrid readDepthGrid(const std::string &path, const std::string &variable, const GeoBox &region);
 }  // namespace ompl_glider

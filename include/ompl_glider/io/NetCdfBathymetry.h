@@ -28,7 +28,8 @@ public:
     /// @throws Error "NetCDF file '<path>': ..." naming the variable as readDepthGrid() does, or when the grid is on
     /// 2-D longitude/latitude, or on longitude/latitude without @p toGeographic.
     NetCdfBathymetry(const std::string &path, const std::string &variable,
-                     std::function<LonLat(double x, double y)> toGeographic = {}, const DepthRegion &region = {});
+                     std::function<LonLat(double x, double y)> toGeographic = {},
+                     const GeoBox &region = GeoBox::world());
 
     double seafloorDepth(double x, double y) const override;
 

@@ -19,7 +19,7 @@ struct FleetRow
 {
     std::string name;      ///< the glider's name (its folder)
     bool solved{false};    ///< a route was found
-    std::string status;    ///< the planner's status (PlannedPath::status)
+    PlanStatus status{PlanStatus::Unknown};  ///< how the glider's plan ended (PlannedPath::status)
     std::string reason;    ///< why there is no route (empty when solved)
     /// The bad input when the glider's problem itself is bad (PlannedPath::badInput placed by MissionSpec::place():
     /// "m.yaml:12: field 'start'"); empty for a well-formed problem

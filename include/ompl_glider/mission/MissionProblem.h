@@ -26,7 +26,7 @@ struct NetCdfCurrentOptions;
 struct NetCdfCurrents;
 class LocalProjection;
 struct LandPolygon;
-struct DepthRegion;
+struct GeoBox;
 
 /// @brief A forbidden region in the planning frame (for maps and outputs).
 struct MissionPolygon
@@ -187,7 +187,7 @@ private:
     std::shared_ptr<const ForbiddenCells> shallowWater();
     /// The lon/lat box a bathymetry grid is read over: the box with a margin (Safety.cpp); the whole grid when the
     /// mission is not geographic.
-    DepthRegion bathymetryRegion() const;
+    GeoBox bathymetryRegion() const;
     /// A point given (lon/lat, or x/y in a Cartesian forecast's own axis units) in the planning frame (Endpoints.cpp).
     Point2 localPoint(const PointSpec &p, const std::string &what) const;
     std::vector<Point2> ring(const std::vector<std::pair<double, double>> &pts, bool geographic,

@@ -18,7 +18,7 @@
 #include "ompl_glider/cost/TravelTimeCalculator.h"
 #include "ompl_glider/current/BeyondForecast.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
-#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/io/GeoBox.h"
 #include "ompl_glider/current/Interpolation.h"
 #include "ompl_glider/execution/Stints.h"
 #include "ompl_glider/io/Time.h"

@@ -20,6 +20,7 @@
 #include "ompl_glider/mission/Isochrones.h"
 #include "ompl_glider/mission/MissionExecution.h"
 #include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/PlanStatus.h"
 #include "ompl_glider/execution/Stints.h"
 
 namespace ompl_glider
@@ -118,7 +119,10 @@ struct StintOutcome
 struct PlannedPath
 {
     bool solved{false};       ///< an exact path to the goal was found
-    std::string status;       ///< OMPL's planner status ("Exact solution", "Timeout", "Invalid start", ...)
+    PlanStatus status{PlanStatus::Unknown};  ///< how the plan ended (statusText(): "Exact solution", "No path", ...)
+    /// What OMPL's solve() returned (Unknown when no planner ran: a start or goal refused before); status differs
+    /// where the pipeline knows more (NoPath for a planner's Abort or Timeout that proved no path exists, Stopped)
+    PlanStatus plannerStatus{PlanStatus::Unknown};
     std::string reason;       ///< why there is no path (empty when solved)
     /// The input at fault when the problem itself is bad (start, goal, departure): its dotted field name
     /// ("start", "goal", "departure.time", for MissionSpec::place()); empty when there is a path or the problem is

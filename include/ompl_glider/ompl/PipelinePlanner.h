@@ -10,7 +10,9 @@
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <ompl/base/Planner.h>
 
@@ -45,6 +47,21 @@ struct PipelineSetup
     std::string placeOfFirstGiven(std::initializer_list<const char *> fields, const std::string &fallback) const;
 };
 
+/// @brief The set reachable from the start by each of a few times ([LollaLevelSet]): first-arrival times on a grid
+/// and the boundary of the set at each time (the isochrones of mission/Isochrones.h).
+struct ReachableSet
+{
+    double resolution{0.0}; ///< cell size of the grid (the field's length unit)
+    double seconds{0.0};    ///< wall time of the computation
+    /// Node (i, j) at (x0 + i h, y0 + j h) in the planning frame; arrival[j * nx + i] the absolute first-arrival time
+    /// (+inf where the set never came)
+    double x0{0.0}, y0{0.0}, h{0.0};
+    int nx{0}, ny{0};            ///< node counts
+    std::vector<double> arrival; ///< see x0
+    /// The boundary at each asked time, in the order asked: polylines in the planning frame
+    std::vector<std::vector<std::vector<Point2>>> lines;
+};
+
 /// @brief The pipeline's questions to a planner. Every answer has a default, so a planner overrides only what it
 /// has to say.
 class PipelinePlanner
@@ -76,6 +93,18 @@ public:
     }
 
     /// @brief The last solve's route as held headings (execution/HeadingRoute.h), which the pipeline flies instead
+
+    /// @brief The set reachable from @p setup's start, departing at its departure, up to the last of @p times
+    /// (absolute, ascending), on a grid @p cellScale times the planner's default cell; nullopt when the planner does
+    /// not compute reachable sets (the default). The pipeline asks the registry's level-set planner for isochrones.
+    virtual std::optional<ReachableSet> reachableSet(const PipelineSetup &setup, const std::vector<double> &times,
+                                                     double cellScale) const
+    {
+        (void)setup;
+        (void)times;
+        (void)cellScale;
+        return std::nullopt;
+    }
     /// of straight legs between the path's states; null when the result is straight legs (the default) or nothing.
     virtual const HeadingRoute *lastHeadingRoute() const
     {

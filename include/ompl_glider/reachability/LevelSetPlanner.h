@@ -49,6 +49,10 @@ public:
     void prepare(const PipelineSetup &setup) override;
     /// @brief PipelinePlanner: why the front found no path (walled in, never reaching the goal, or lastReason()).
     std::string noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const override;
+    /// @brief The level set's reachable set from the setup's start (default LevelSetParams, the cell
+    /// @p cellScale times defaultLevelSetResolution()) and its isochrones at @p times.
+    std::optional<ReachableSet> reachableSet(const PipelineSetup &setup, const std::vector<double> &times,
+                                             double cellScale) const override;
 
     /// @brief Cell size (0: automatic). @throws Error when negative or not finite.
     void setResolution(double h);

@@ -6,7 +6,7 @@
 
 #include "NetCdfInternal.h"
 #include "ompl_glider/ResourceLimits.h"
-#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/io/GeoBox.h"
 
 namespace ompl_glider
 {

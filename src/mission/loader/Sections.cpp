@@ -13,7 +13,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
-#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/io/GeoBox.h"
 #include "ompl_glider/execution/Execution.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/OutputFormats.h"

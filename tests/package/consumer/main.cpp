@@ -34,7 +34,7 @@ int main()
 #if OMPL_GLIDER_WITH_MISSION
     const ompl_glider::MissionProblem problem(ompl_glider::defaultGulfStreamMission());
     const ompl_glider::MissionResult r = ompl_glider::runMission(problem);
-    std::printf("Gulf Stream mission: %s, travel time %.4f\n", r.plan.status.c_str(), r.plan.travelTime);
+    std::printf("Gulf Stream mission: %s, travel time %.4f\n", statusText(r.plan.status).c_str(), r.plan.travelTime);
     if (!r.plan.solved || !(r.plan.travelTime > 10.0 && r.plan.travelTime < 12.0))
         return 1;
 #endif

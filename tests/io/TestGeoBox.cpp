@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/GeoBox.h"
+#include "ompl_glider/io/GeoBox.h"
 
 using namespace ompl_glider;
 
