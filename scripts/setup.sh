@@ -24,6 +24,7 @@ PACKAGES=(
   libncarg-data
   pybind11-dev python3-dev python3-numpy python3-pytest
   clang-14 libfuzzer-14-dev
+  libjs-leaflet chromium python3-websocket python3-netcdf4
 )
 
 missing=()

@@ -16,6 +16,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/current/UnitConversion.h"
+#include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace glider_plan
@@ -161,7 +162,21 @@ void defineIoFlags(CLI::App &app, Flags &f)
     app.add_option("--currents", f.currents,
                    "plan on the u/v currents of a NetCDF forecast: a file, or several read as one forecast (a "
                    "comma-separated list of files and glob patterns, e.g. 'hycom_202603*.nc'; ordered by their "
-                   "dates, the later file wins where two overlap)")
+                   "dates, the later file wins where two overlap); an http(s):// URL is an OPeNDAP dataset (HYCOM, "
+                   "RTOFS, CMEMS THREDDS servers), read for the trip's region, levels and records only")
+        ->group(io);
+    app.add_option("--cache", f.cache,
+                   "keep what is fetched from OPeNDAP URLs in this folder (a NetCDF file per URL), so that a later "
+                   "plan over the same window reads no network (remove a file to fetch a newer forecast)")
+        ->group(io);
+    app.add_option("--request-timeout", f.requestTimeout,
+                   "time limit of every request to an OPeNDAP server, seconds (default 60)")
+        ->check(CLI::PositiveNumber)
+        ->group(io);
+    app.add_option("--retries", f.retries,
+                   "further attempts after a request to an OPeNDAP server fails for the network or the server, 1 s, "
+                   "2 s, ... apart (0..10, default 2)")
+        ->check(CLI::Range(0, 10))
         ->group(io);
     app.add_option("--out", f.out,
                    "write summary.json and the route files (waypoints.csv, path.csv, path.geojson, goto_l10.ma, "
@@ -391,6 +406,22 @@ void parseFlags(CLI::App &app, const Flags &f, int argc, const char *const *argv
 {
     app.parse(argc, argv);
     checkCombinations(app, f);
+    // how OPeNDAP URLs are fetched, set before any NetCDF access (NetCDF-C reads its time limit once)
+    ompl_glider::RemoteAccess access;
+    access.cacheDir = f.cache;
+    if (f.requestTimeout)
+        access.requestTimeout = *f.requestTimeout;
+    if (f.retries)
+        access.retries = *f.retries;
+    try
+    {
+        ompl_glider::setRemoteAccess(access);
+        ompl_glider::prepareRemoteAccess();
+    }
+    catch (const ompl_glider::Error &e)
+    {
+        throw UsageError{std::string("--request-timeout/--retries: ") + e.what()};
+    }
 }
 
 }  // namespace glider_plan

@@ -34,6 +34,10 @@ struct Flags
     bool isochrones{false};
     std::string isochroneInterval;
     std::optional<double> gotoTurn;  // --goto-turn: the goto list's turn threshold in degrees
+    // forecasts from OPeNDAP servers: --cache, --request-timeout, --retries (io/RemoteSource.h)
+    std::string cache;
+    std::optional<double> requestTimeout;
+    std::optional<int> retries;
     // execution in another ocean (any of these enables it)
     std::string truth, surfacingInterval, strategies;
     std::optional<double> radius;

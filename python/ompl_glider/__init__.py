@@ -31,9 +31,10 @@ from typing import Any, Callable, Dict, List, NamedTuple, Optional, Sequence, Tu
 import numpy as np
 
 from . import _core
-from ._core import Error, set_verbose
+from ._core import Error, set_verbose, set_remote_access as _set_remote_access
 
-__all__ = ["plan", "plan_fleet", "Field", "Result", "Route", "Error", "planner_names", "analytic_fields", "set_verbose"]
+__all__ = ["plan", "plan_fleet", "Field", "Result", "Route", "Error", "planner_names", "analytic_fields", "set_verbose",
+           "set_remote_access"]
 
 Pair = Tuple[float, float]
 ProgressCallback = Callable[[str, bool], None]
@@ -59,6 +60,19 @@ def _pair(who: str, value: Any) -> Pair:
         return (_real(who, a), _real(who, b))
     except (TypeError, ValueError, Error):
         raise _bad(who, value, "a pair (x, y) or (lon, lat) of numbers") from None
+
+
+def set_remote_access(cache: Optional[Union[str, os.PathLike]] = None, request_timeout: float = 60.0,
+                      retries: int = 2) -> None:
+    """How forecasts given as OPeNDAP URLs (``Field.netcdf("https://...")``) are fetched, as glider_plan's flags.
+
+    cache: a folder that keeps what is fetched (a NetCDF file per URL), so that a later plan over the same window
+    reads no network (``--cache``); None: no cache. request_timeout: seconds each request may take; it is fixed by the
+    process's first NetCDF access, so set it before the first plan (``--request-timeout``). retries: further attempts
+    after a request fails for the network or the server, 0..10 (``--retries``).
+    """
+    _set_remote_access(os.fspath(cache) if cache is not None else "", _real("set_remote_access(): request_timeout",
+                                                                            request_timeout), int(retries))
 
 
 def planner_names() -> List[str]:
@@ -179,6 +193,16 @@ class Result:
     def __repr__(self) -> str:
         return (f"<ompl_glider.Result planner={self.planner!r} status={self.status!r} "
                 f"travel_time={self.travel_time!r}>")
+
+    def map_html(self) -> str:
+        """The interactive map of the plan (the command line's map.html): one HTML page that works offline."""
+        return self._core.map_html()
+
+    def _repr_html_(self) -> str:
+        """Jupyter shows the interactive map inline (map.html in a sandboxed iframe)."""
+        import html
+        return ('<iframe style="width:100%;height:560px;border:0" sandbox="allow-scripts allow-popups" '
+                f'srcdoc="{html.escape(self.map_html(), quote=True)}"></iframe>')
 
     @property
     def travel_time(self) -> float:

@@ -5,6 +5,7 @@
 
 #include "Bindings.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/RemoteSource.h"
 
 namespace py = pybind11;
 
@@ -17,6 +18,17 @@ PYBIND11_MODULE(_core, m)
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);  // as glider_plan without --verbose
     m.def("set_verbose", [](bool on) { ompl::msg::setLogLevel(on ? ompl::msg::LOG_INFO : ompl::msg::LOG_WARN); },
           py::arg("on"), "Shows OMPL's log messages (as glider_plan --verbose).");
+    m.def(
+        "set_remote_access",
+        [](const std::string &cache, double requestTimeout, int retries) {
+            ompl_glider::RemoteAccess a;
+            a.cacheDir = cache;
+            a.requestTimeout = requestTimeout;
+            a.retries = retries;
+            ompl_glider::setRemoteAccess(a);
+        },
+        py::arg("cache"), py::arg("request_timeout"), py::arg("retries"),
+        "How OPeNDAP URLs are fetched (glider_plan's --cache, --request-timeout, --retries).");
     ompl_glider_py::bindMission(m);
     ompl_glider_py::bindResult(m);
     ompl_glider_py::bindArrays(m);

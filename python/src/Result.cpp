@@ -18,6 +18,8 @@
 #include <pybind11/stl.h>
 
 #include "Bindings.h"
+#include "ompl_glider/Config.h"
+#include "ompl_glider/output/MapHtml.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/StopRequest.h"
 #include "ompl_glider/mission/Fleet.h"
@@ -371,6 +373,9 @@ void bindResult(py::module_ &m)
         .def("arrival_field", &arrivalField)
         .def("current_grid", &currentGrid, py::arg("n") = 25, py::arg("t") = kNaN)
         .def("summary_json", [](const R &r) { return summaryJson(r.result, *r.problem, {}); })
+#if OMPL_GLIDER_WITH_MAP
+        .def("map_html", [](const R &r) { return mapHtml(r.result, *r.problem); })
+#endif
         .def("route_geojson", [](const R &r) { return routeGeoJson(r.result, r.problem.get()); })
         .def("isochrones_geojson", [](const R &r) { return isochronesGeoJson(r.result); })
         .def("report",

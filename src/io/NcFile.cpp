@@ -3,6 +3,7 @@
 
 #include <hdf5.h>
 
+#include "RemoteDataset.h"
 #include "TextUtil.h"
 
 namespace ompl_glider
@@ -25,6 +26,14 @@ void quietHdf5OnThisThread()
 NcFile::NcFile(const std::string &path) : path_(path)
 {
     quietHdf5OnThisThread();
+    const RemoteAccess access = remoteAccess();
+    prepareNetcdfAccess(access);
+    if (isRemoteSource(path))
+    {
+        remote_ = RemoteDataset::open(path, access);
+        id_ = remote_->metadataId();
+        return;
+    }
     // A classic file is checked against its header before NetCDF-C opens it: NetCDF-C reads a cut file as if it
     // were complete, and allocates whatever a corrupt header declares (an attribute of 2^31 values) before reading.
     if (auto cut = classicTruncation(path))
@@ -36,12 +45,15 @@ NcFile::NcFile(const std::string &path) : path_(path)
 
 NcFile::~NcFile()
 {
-    nc_close(id_);
+    if (remote_)
+        remote_->flush();  // the dataset stays open for the process's next reader
+    else
+        nc_close(id_);
 }
 
 Error NcFile::error(const std::string &what) const
 {
-    return Error("NetCDF file '" + path_ + "': " + what);
+    return Error((remote_ ? remote_->who() : "NetCDF file '" + path_ + "'") + ": " + what);
 }
 
 void NcFile::check(int status, const std::string &what) const
@@ -150,8 +162,22 @@ std::vector<double> NcFile::readAll1D(int var) const
         n *= dimLen(x);
     std::vector<double> v(n);
     if (n > 0)
-        check(nc_get_var_double(id_, var, v.data()), "read variable '" + varName(var) + "'");
+    {
+        std::vector<std::size_t> start(d.size(), 0), count(d.size());
+        for (std::size_t k = 0; k < d.size(); ++k)
+            count[k] = dimLen(d[k]);
+        readBlock(var, start, count, v.data());
+    }
     return v;
+}
+
+void NcFile::readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
+                       double *out) const
+{
+    if (remote_)
+        remote_->read(var, start, count, out);
+    else
+        check(nc_get_vara_double(id_, var, start.data(), count.data(), out), "read variable '" + varName(var) + "'");
 }
 }  // namespace netcdf_detail
 }  // namespace ompl_glider

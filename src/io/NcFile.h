@@ -12,11 +12,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <istream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/RemoteSource.h"
 
 namespace ompl_glider
 {
@@ -25,12 +27,17 @@ namespace netcdf_detail
 // ---- the open file (NcFile.cpp) ----
 
 /// The open file, closed on scope exit; its queries throw Errors that name the file.
+class RemoteDataset;
+
 class NcFile
 {
 public:
     /// @throws Error "NetCDF file '<path>': cannot open: ..." when the file is missing or not NetCDF, and
     /// "NetCDF file '<path>' is truncated: ..." when it is a classic-format file shorter than its header declares
     /// (classicTruncation(); netCDF-4/HDF5 files are not checked).
+    /// A URL (isRemoteSource()) is read through NetCDF-C's DAP client as the process's remoteAccess() says
+    /// (RemoteDataset.h): its description from the cache file when there is one, its values through
+    /// readBlock()/readAll1D().
     explicit NcFile(const std::string &path);
     ~NcFile();
     NcFile(const NcFile &) = delete;
@@ -44,7 +51,7 @@ public:
     {
         return path_;
     }
-    /// An Error "NetCDF file '<path>': <what>".
+    /// An Error "NetCDF file '<path>': <what>" ("OPeNDAP source '<url>': <what>" for a URL).
     Error error(const std::string &what) const;
     /// Throws error(what + ": " + nc_strerror(status)) unless status is NC_NOERR.
     void check(int status, const std::string &what) const;
@@ -63,10 +70,15 @@ public:
     std::vector<double> attDoubles(int var, const char *name) const;
     /// All values of a variable (any number of dimensions), as doubles.
     std::vector<double> readAll1D(int var) const;
+    /// The values of @p var in the block at @p start of @p count, as doubles (nc_get_vara_double), into @p out;
+    /// from the file, or for a URL from its cache or the server.
+    void readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
+                   double *out) const;
 
 private:
     std::string path_;
     int id_{-1};
+    std::shared_ptr<RemoteDataset> remote_;  ///< a URL's dataset (null for a file)
 };
 
 // ---- classic-format files (ClassicSize.cpp) ----

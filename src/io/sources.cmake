@@ -3,12 +3,14 @@
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Time.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Length.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/RemoteSource.cpp  # remote sources: settings, the record of what came from where
   ${CMAKE_CURRENT_LIST_DIR}/GeoBox.cpp  # lon/lat boxes: regions, the trip's box, great circles
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
     # the open NetCDF file (NcFile.h, internal) of the forecast reader (current/netcdf/) and the bathymetry
     ${CMAKE_CURRENT_LIST_DIR}/NcFile.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/RemoteDataset.cpp  # OPeNDAP: time limits, retries, the cache
     ${CMAKE_CURRENT_LIST_DIR}/ClassicSize.cpp
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
     ${CMAKE_CURRENT_LIST_DIR}/DepthGrid.cpp

@@ -15,7 +15,8 @@ const std::vector<OutputFormat> &outputFormats()
         {OutputFormatId::Goto, "goto", "goto_lNN.ma", "Slocum goto list (geographic missions)", true},
         {OutputFormatId::Stints, "stints", "stints.csv",
          "heading per surfacing: time, position, heading, expected drift (missions with stints)", true},
-        {OutputFormatId::Map, "map", "map.svg, map.png", "map of the current, regions and paths", false},
+        {OutputFormatId::Map, "map", "map.svg, map.png, map.html",
+         "map of the current, regions and paths; map.html: the same to explore in a browser", false},
         {OutputFormatId::Execution, "execution",
          "execution.csv, execution_tracks.csv, execution.svg/png, model_difference.svg/png",
          "the plan flown in the truth per strategy, and the box plot of a batch (written whenever the mission has "

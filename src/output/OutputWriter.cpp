@@ -15,6 +15,7 @@
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #if OMPL_GLIDER_WITH_MAP
+#include "ompl_glider/output/MapHtml.h"
 #include "ompl_glider/output/MissionMap.h"
 #endif
 #include "ompl_glider/output/ExecutionFiles.h"
@@ -112,7 +113,8 @@ std::vector<OutputFile> formatFiles(OutputFormatId format, const MissionResult &
             return **map;
         };
         return {{"map.svg", [draw](const std::string &p) { draw().writeSvg(p); }},
-                {"map.png", [draw](const std::string &p) { draw().writePng(p); }}};
+                {"map.png", [draw](const std::string &p) { draw().writePng(p); }},
+                {"map.html", [res, prob](const std::string &p) { writeText(p, mapHtml(*res, *prob)); }}};
     }
 #else
     if (format == OutputFormatId::Map)

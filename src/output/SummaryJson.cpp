@@ -243,6 +243,15 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["source"] = m.file;
     j["current"] = m.current.type;
     j["forecast_files"] = problem.forecastFiles();
+    j["forecast_sources"] = json::array();  // OPeNDAP URLs: what came from the network, what from the cache
+    for (const RemoteFetch &f : problem.remoteSources())
+        j["forecast_sources"].push_back({{"source", f.source},
+                                         {"cache_file", f.cacheFile},
+                                         {"bytes_fetched", f.bytesFetched},
+                                         {"bytes_from_cache", f.bytesFromCache},
+                                         {"requests", f.requests},
+                                         {"network", f.opened},
+                                         {"cache_problem", jtext(f.cacheProblem)}});
     j["forecast_notes"] = json::array();
     for (const std::string &note : r.forecastNotes)
         j["forecast_notes"].push_back(jtext(note));

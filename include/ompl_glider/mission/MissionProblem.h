@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/Geometry.h"
 #include "ompl_glider/cost/DiveProfile.h"
 #include "ompl_glider/current/CurrentField.h"
@@ -62,6 +63,12 @@ public:
     const std::vector<std::string> &forecastFiles() const
     {
         return forecastFiles_;
+    }
+    /// @brief The forecast's OPeNDAP sources (io/RemoteSource.h): what came from the network and from the cache,
+    /// as read when the problem was built; empty for files.
+    const std::vector<RemoteFetch> &remoteSources() const
+    {
+        return remoteSources_;
     }
     /// @brief The ocean an execution flies in (MissionSpec::execution.truth, on the forecast's frame and time
     /// axis); the forecast itself when no truth is given.
@@ -203,6 +210,7 @@ private:
     double xyScale_{1.0};          // planning units per x/y unit given (a Cartesian forecast's axes in km: 1000)
     std::vector<std::string> forecastFiles_;
     std::vector<std::string> forecastNotes_;
+    std::vector<RemoteFetch> remoteSources_;
     std::vector<std::string> endpointNotes_;
     std::vector<MissionPolygon> polygons_;
     Region box_;

@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "ForecastFiles.h"
+#include "ompl_glider/io/RemoteSource.h"
 
 namespace ompl_glider
 {
@@ -227,6 +228,11 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
         if (item.empty())
             throw Error("forecast files: an empty name in the list (expected file names or glob patterns, "
                         "separated by commas)");
+        if (isRemoteSource(item))
+        {  // an OPeNDAP URL: one dataset, read as a file is (io/RemoteSource.h)
+            out.push_back(item);
+            continue;
+        }
         const std::string path =
             baseDir.empty() || fs::path(item).is_absolute() ? item : (fs::path(baseDir) / item).string();
         std::error_code ec;

@@ -84,8 +84,7 @@ void readScatter(const NcFile &f, int var, const std::vector<DimRead> &dims, con
         }
         buf.resize(n);
         if (n > 0)
-            f.check(nc_get_vara_double(f.id(), var, start.data(), count.data(), buf.data()),
-                    "read variable '" + f.varName(var) + "'");
+            f.readBlock(var, start, count, buf.data());
         scatterBlock(dims, stride, runIdx, count, buf, out);
     } while (nextRuns(dims, runIdx));
 }

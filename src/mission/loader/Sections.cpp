@@ -11,6 +11,7 @@
 #include "ompl_glider/ompl/Sectors.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/io/GeoBox.h"
@@ -124,19 +125,22 @@ void readThreads(const Reader &r, const YAML::Node &n, const std::string &f, uns
 namespace
 {
 /// current.file: a path or a glob pattern, or a list of them (a forecast in several files), relative to the
-/// mission file; every file must exist.
+/// mission file; every file must exist. An OPeNDAP URL (io/RemoteSource.h) is taken as it is.
 void readForecastFiles(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c)
 {
+    const auto resolved = [&](const std::string &item) {
+        return isRemoteSource(item) ? item : joinPath(r.dir(), item);
+    };
     std::vector<std::string> items;
     if (n.IsSequence())
     {
         if (n.size() == 0)
             r.fail(n, f, "an empty list: expected NetCDF files or glob patterns");
         for (std::size_t k = 0; k < n.size(); ++k)
-            items.push_back(joinPath(r.dir(), r.text(n[k], f)));
+            items.push_back(resolved(r.text(n[k], f)));
     }
     else
-        items.push_back(joinPath(r.dir(), r.text(n, f)));
+        items.push_back(resolved(r.text(n, f)));
     std::vector<std::string> files = items;
 #if OMPL_GLIDER_WITH_NETCDF
     try
@@ -149,7 +153,7 @@ void readForecastFiles(const Reader &r, const YAML::Node &n, const std::string &
     }
 #endif
     for (const std::string &file : files)
-        if (!fileExists(file))
+        if (!isRemoteSource(file) && !fileExists(file))
             r.fail(n, f, "cannot open '" + file + "'");
     c.file = files.front();
     if (files.size() > 1)

@@ -1,0 +1,401 @@
+// Remote (OPeNDAP) datasets for NcFile: the process's record of what came from where, NetCDF-C's HTTP time limits,
+// requests retried a bounded number of times, and the cache file (see RemoteDataset.h, io/RemoteSource.h).
+#include "RemoteDataset.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include <unistd.h>
+
+#include "NumberText.h"
+#include "RemoteRecord.h"
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace
+{
+/// A name for the cache file: the URL's host and path in safe characters, then a 64-bit FNV-1a digest of the URL.
+std::string cacheName(const std::string &url)
+{
+    std::uint64_t h = 1469598103934665603ull;
+    for (const unsigned char c : url)
+        h = (h ^ c) * 1099511628211ull;
+    std::string stem;
+    for (std::size_t i = url.find("://") == std::string::npos ? 0 : url.find("://") + 3; i < url.size(); ++i)
+    {
+        const char c = url[i];
+        stem += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_') ? c : '_';
+    }
+    if (stem.size() > 80)
+        stem = stem.substr(stem.size() - 80);
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+    return stem + "-" + hex + ".nc";
+}
+
+bool transient(int status)
+{
+    return status == NC_EIO || status == NC_ECURL || status == NC_EDAPSVC;
+}
+
+/// True when the block at (s, c) lies inside the block at (bs, bc).
+bool inside(const std::vector<std::size_t> &s, const std::vector<std::size_t> &c, const std::vector<std::size_t> &bs,
+            const std::vector<std::size_t> &bc)
+{
+    if (s.size() != bs.size())
+        return false;
+    for (std::size_t d = 0; d < s.size(); ++d)
+        if (s[d] < bs[d] || s[d] + c[d] > bs[d] + bc[d])
+            return false;
+    return true;
+}
+
+/// Copies the block (s, c) out of the values of the enclosing block (bs, bc) (row-major, last index fastest).
+void copyOut(const std::vector<double> &from, const std::vector<std::size_t> &bs, const std::vector<std::size_t> &bc,
+             const std::vector<std::size_t> &s, const std::vector<std::size_t> &c, double *out)
+{
+    const std::size_t nd = s.size();
+    if (nd == 0)
+    {
+        out[0] = from[0];
+        return;
+    }
+    std::vector<std::size_t> idx(nd, 0);
+    std::size_t n = 1;
+    for (const std::size_t x : c)
+        n *= x;
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        std::size_t off = 0;
+        for (std::size_t d = 0; d < nd; ++d)
+            off = off * bc[d] + (s[d] - bs[d] + idx[d]);
+        out[k] = from[off];
+        for (std::size_t d = nd; d-- > 0;)
+        {
+            if (++idx[d] < c[d])
+                break;
+            idx[d] = 0;
+        }
+    }
+}
+
+/// "u[0:3][2:40]": the DAP constraint a block answers (inclusive stops).
+std::string constraintOf(const std::string &name, const std::vector<std::size_t> &s, const std::vector<std::size_t> &c)
+{
+    std::string out = name;
+    for (std::size_t d = 0; d < s.size(); ++d)
+        out += "[" + std::to_string(s[d]) + ":" + std::to_string(s[d] + c[d] - 1) + "]";
+    return out;
+}
+
+/// Reads "ompl_glider_blocks" of a cache file: one block per line, "var start... / count...".
+std::vector<std::pair<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>>> cachedBlocks(int ncid)
+{
+    std::vector<std::pair<int, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>>> out;
+    std::size_t len = 0;
+    if (nc_inq_attlen(ncid, NC_GLOBAL, "ompl_glider_blocks", &len) != NC_NOERR)
+        return out;
+    std::string text(len, '\0');
+    if (len > 0 && nc_get_att_text(ncid, NC_GLOBAL, "ompl_glider_blocks", &text[0]) != NC_NOERR)
+        return out;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+    {
+        std::istringstream in(line);
+        int var = -1, nd = -1;
+        if (!(in >> var >> nd) || var < 0 || nd < 0 || nd > NC_MAX_VAR_DIMS)
+            continue;
+        std::vector<std::size_t> s(static_cast<std::size_t>(nd)), c(static_cast<std::size_t>(nd));
+        for (auto &x : s)
+            in >> x;
+        for (auto &x : c)
+            in >> x;
+        if (in)
+            out.push_back({var, {s, c}});
+    }
+    return out;
+}
+
+std::string readText(const std::filesystem::path &p)
+{
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+}  // namespace
+
+namespace netcdf_detail
+{
+void prepareNetcdfAccess(const RemoteAccess &access)
+{
+    static std::once_flag once;
+    std::call_once(once, [&] {
+        if (std::getenv("NCRCENV_RC"))
+            return;  // the user's own rc file
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        const fs::path dir = fs::temp_directory_path(ec) / ("ompl_glider_ncrc_" + std::to_string(::getpid()));
+        fs::create_directories(dir, ec);
+        // what NetCDF-C would have read without NCRCENV_RC (credentials, proxies), then the time limits
+        std::string text;
+        const char *home = std::getenv("HOME");
+        for (const fs::path &base : {home ? fs::path(home) : fs::path(), fs::current_path(ec)})
+            for (const char *name : {".ncrc", ".daprc", ".dodsrc"})
+                if (!base.empty() && fs::is_regular_file(base / name, ec))
+                    text += readText(base / name) + "\n";
+        const long seconds = std::max(1L, static_cast<long>(std::ceil(access.requestTimeout)));
+        text += "HTTP.TIMEOUT=" + std::to_string(seconds) + "\nHTTP.CONNECTTIMEOUT=" + std::to_string(seconds) + "\n";
+        const fs::path rc = dir / "ncrc";
+        std::ofstream(rc) << text;
+        if (fs::is_regular_file(rc, ec))
+        {
+            ::setenv("NCRCENV_RC", rc.c_str(), 0);
+            static const std::string removeAtExit = dir.string();
+            std::atexit([] {
+                std::error_code e;
+                std::filesystem::remove_all(removeAtExit, e);
+            });
+        }
+    });
+}
+
+std::shared_ptr<RemoteDataset> RemoteDataset::open(const std::string &url, const RemoteAccess &access)
+{
+    static std::mutex m;
+    // kept for the process (never destroyed: no NetCDF call after NetCDF-C's own end at exit)
+    static auto &open = *new std::map<std::string, std::shared_ptr<RemoteDataset>>();
+    std::lock_guard<std::mutex> lock(m);
+    const std::string key = url + '\n' + access.cacheDir;
+    if (auto it = open.find(key); it != open.end())
+        return it->second;
+    const std::size_t k = remote_detail::newFetchRecord(url);
+    std::shared_ptr<RemoteDataset> d(new RemoteDataset(url, access, k));
+    open[key] = d;
+    return d;
+}
+
+RemoteDataset::RemoteDataset(std::string url, RemoteAccess access, std::size_t record)
+    : url_(std::move(url)), access_(std::move(access)), record_(record)
+{
+    if (!access_.cacheDir.empty())
+    {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        fs::create_directories(access_.cacheDir, ec);
+        if (!fs::is_directory(access_.cacheDir, ec))
+            throw Error(who() + ": the cache folder '" + access_.cacheDir + "' cannot be made");
+        cachePath_ = (fs::path(access_.cacheDir) / cacheName(url_)).string();
+        remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.cacheFile = cachePath_; });
+        if (fs::is_regular_file(cachePath_, ec))
+        {
+            if (nc_open(cachePath_.c_str(), NC_NOWRITE, &cacheId_) != NC_NOERR)
+                cacheId_ = -1;  // an unreadable cache file is fetched anew and replaced
+            else
+                for (const auto &[var, sc] : cachedBlocks(cacheId_))
+                    blocks_.push_back(Block{var, sc.first, sc.second, {}});
+        }
+    }
+    if (cacheId_ < 0)
+        remoteId();
+}
+
+RemoteDataset::~RemoteDataset()
+{
+    if (cacheId_ >= 0)
+        nc_close(cacheId_);
+    if (remoteId_ >= 0)
+        nc_close(remoteId_);
+}
+
+std::string RemoteDataset::who() const
+{
+    return "OPeNDAP source '" + url_ + "'";
+}
+
+int RemoteDataset::attempt(const std::string &what, const std::function<int()> &call)
+{
+    for (int k = 0;; ++k)
+    {
+        remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { ++f.requests; });
+        const int st = call();
+        if (st == NC_NOERR)
+            return st;
+        if (!transient(st) || k >= access_.retries)
+        {
+            std::string why = nc_strerror(st);
+            if (st == NC_EIO || st == NC_ECURL)
+                why += " (no answer within the request time limit of " + text::number(access_.requestTimeout) +
+                       " s, or the server cannot be reached)";
+            if (transient(st))
+                why += "; " + std::to_string(k + 1) + (k == 0 ? " attempt" : " attempts");
+            throw Error(who() + ": " + what + ": " + why);
+        }
+        std::this_thread::sleep_for(std::chrono::seconds(k + 1));
+    }
+}
+
+int RemoteDataset::remoteId()
+{
+    if (remoteId_ < 0)
+    {
+        prepareNetcdfAccess(access_);
+        attempt("cannot open", [&] { return nc_open(url_.c_str(), NC_NOWRITE, &remoteId_); });
+        remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.opened = true; });
+    }
+    return remoteId_;
+}
+
+std::uint64_t RemoteDataset::valueBytes(int var, std::size_t values) const
+{
+    nc_type t = NC_DOUBLE;
+    std::size_t size = 8;
+    if (nc_inq_vartype(metadataId(), var, &t) == NC_NOERR)
+        nc_inq_type(metadataId(), t, nullptr, &size);
+    return static_cast<std::uint64_t>(values) * size;
+}
+
+void RemoteDataset::read(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
+                         double *out)
+{
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::size_t n = 1;
+    for (const std::size_t c : count)
+        n *= c;
+    for (const Block &b : blocks_)
+        if (b.var == var && inside(start, count, b.start, b.count))
+        {
+            if (!b.values.empty())
+                copyOut(b.values, b.start, b.count, start, count, out);
+            else if (nc_get_vara_double(cacheId_, var, start.data(), count.data(), out) != NC_NOERR)
+                continue;  // a cache file that does not hold what it says: fetched anew below
+            else
+                remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.bytesFromCache += valueBytes(var, n); });
+            return;
+        }
+    Block b{var, start, count, std::vector<double>(n)};
+    char name[NC_MAX_NAME + 1] = "";
+    nc_inq_varname(metadataId(), var, name);
+    const int id = remoteId();
+    attempt("reading " + constraintOf(name, start, count),
+            [&] { return nc_get_vara_double(id, var, start.data(), count.data(), b.values.data()); });
+    std::copy(b.values.begin(), b.values.end(), out);
+    remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.bytesFetched += valueBytes(var, n); });
+    blocks_.push_back(std::move(b));
+    dirty_ = !cachePath_.empty();
+}
+
+void RemoteDataset::flush()
+{
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!dirty_)
+        return;
+    dirty_ = false;
+    const std::string tmp = cachePath_ + ".part" + std::to_string(::getpid());
+    try
+    {
+        writeCache(tmp);
+        std::error_code ec;
+        std::filesystem::rename(tmp, cachePath_, ec);
+        if (ec)
+            throw Error("cannot rename '" + tmp + "' to '" + cachePath_ + "': " + ec.message());
+        remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.cacheProblem.clear(); });
+    }
+    catch (const std::exception &e)
+    {
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.cacheProblem = e.what(); });
+    }
+}
+
+void RemoteDataset::writeCache(const std::string &tmp)
+{
+    const int src = metadataId();
+    int out = -1;
+    auto check = [&](int st, const std::string &what) {
+        if (st != NC_NOERR)
+        {
+            if (out >= 0)
+                nc_close(out);
+            throw Error("cache file '" + tmp + "': " + what + ": " + nc_strerror(st));
+        }
+    };
+    // a whole block held only by the old cache file is read before the new file replaces it
+    for (Block &b : blocks_)
+        if (b.values.empty())
+        {
+            std::size_t n = 1;
+            for (const std::size_t c : b.count)
+                n *= c;
+            b.values.resize(n);
+            check(nc_get_vara_double(cacheId_, b.var, b.start.data(), b.count.data(), b.values.data()),
+                  "reading the old cache file");
+        }
+    check(nc_create(tmp.c_str(), NC_NETCDF4 | NC_CLOBBER, &out), "create");
+    int ndims = 0, nvars = 0, natts = 0;
+    check(nc_inq(src, &ndims, &nvars, &natts, nullptr), "inquire the source");
+    for (int d = 0; d < ndims; ++d)  // fixed sizes: the cache holds the remote lengths whatever was fetched
+    {
+        char name[NC_MAX_NAME + 1];
+        std::size_t len = 0;
+        int id = -1;
+        check(nc_inq_dim(src, d, name, &len), "inquire a dimension");
+        check(nc_def_dim(out, name, len, &id), std::string("define dimension ") + name);
+    }
+    auto copyAtts = [&](int var, int n) {
+        for (int a = 0; a < n; ++a)
+        {
+            char name[NC_MAX_NAME + 1];
+            check(nc_inq_attname(src, var, a, name), "inquire an attribute");
+            if (std::string(name).rfind("ompl_glider_", 0) == 0)
+                continue;
+            check(nc_copy_att(src, var, name, out, var), std::string("copy attribute ") + name);
+        }
+    };
+    copyAtts(NC_GLOBAL, natts);
+    for (int v = 0; v < nvars; ++v)
+    {
+        char name[NC_MAX_NAME + 1];
+        nc_type type;
+        int nd = 0, dims[NC_MAX_VAR_DIMS], na = 0, id = -1;
+        check(nc_inq_var(src, v, name, &type, &nd, dims, &na), "inquire a variable");
+        check(nc_def_var(out, name, type, nd, dims, &id), std::string("define variable ") + name);
+        if (nd > 0)
+            check(nc_def_var_deflate(out, id, 1, 1, 1), std::string("compress variable ") + name);
+        copyAtts(v, na);
+    }
+    std::string blocks, fetched;
+    for (const Block &b : blocks_)
+    {
+        blocks += std::to_string(b.var) + " " + std::to_string(b.start.size());
+        for (const std::size_t x : b.start)
+            blocks += " " + std::to_string(x);
+        for (const std::size_t x : b.count)
+            blocks += " " + std::to_string(x);
+        blocks += "\n";
+        char name[NC_MAX_NAME + 1] = "";
+        nc_inq_varname(src, b.var, name);
+        fetched += constraintOf(name, b.start, b.count) + "\n";
+    }
+    check(nc_put_att_text(out, NC_GLOBAL, "ompl_glider_source", url_.size(), url_.c_str()), "write the source");
+    check(nc_put_att_text(out, NC_GLOBAL, "ompl_glider_fetched", fetched.size(), fetched.c_str()),
+          "write the constraints");
+    check(nc_put_att_text(out, NC_GLOBAL, "ompl_glider_blocks", blocks.size(), blocks.c_str()), "write the blocks");
+    check(nc_enddef(out), "end the definitions");
+    for (const Block &b : blocks_)
+        check(nc_put_vara_double(out, b.var, b.start.data(), b.count.data(), b.values.data()), "write values");
+    check(nc_close(out), "close");
+    out = -1;
+}
+}  // namespace netcdf_detail
+}  // namespace ompl_glider

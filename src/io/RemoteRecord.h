@@ -1,0 +1,21 @@
+#pragma once
+/// @file RemoteRecord.h
+/// @brief Internal to the library (not installed): the process's record of remote sources (remoteFetches()), kept by
+/// RemoteSource.cpp and written by the remote reader (RemoteDataset.cpp).
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "ompl_glider/io/RemoteSource.h"
+
+namespace ompl_glider
+{
+namespace remote_detail
+{
+/// A new entry of the record for @p source; its index.
+std::size_t newFetchRecord(const std::string &source);
+/// Applies @p change to entry @p k under the record's lock.
+void updateFetchRecord(std::size_t k, const std::function<void(RemoteFetch &)> &change);
+}  // namespace remote_detail
+}  // namespace ompl_glider

@@ -1,0 +1,113 @@
+// The settings of remote (OPeNDAP) sources and the process's record of what came from where (io/RemoteSource.h);
+// the reading itself is RemoteDataset.cpp's (NetCDF builds only).
+#include "ompl_glider/io/RemoteSource.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+
+#include "NumberText.h"
+#include "RemoteRecord.h"
+#include "ompl_glider/Config.h"
+#include "ompl_glider/Exception.h"
+#if OMPL_GLIDER_WITH_NETCDF
+#include "RemoteDataset.h"
+#endif
+
+namespace ompl_glider
+{
+namespace
+{
+std::mutex &recordMutex()
+{
+    static std::mutex m;
+    return m;
+}
+
+std::vector<RemoteFetch> &record()
+{
+    static std::vector<RemoteFetch> r;
+    return r;
+}
+
+std::mutex &accessMutex()
+{
+    static std::mutex m;
+    return m;
+}
+
+RemoteAccess &accessInForce()
+{
+    static RemoteAccess a;
+    return a;
+}
+}  // namespace
+
+namespace remote_detail
+{
+std::size_t newFetchRecord(const std::string &source)
+{
+    std::lock_guard<std::mutex> lock(recordMutex());
+    record().push_back(RemoteFetch{source, "", 0, 0, 0, false, ""});
+    return record().size() - 1;
+}
+
+void updateFetchRecord(std::size_t k, const std::function<void(RemoteFetch &)> &change)
+{
+    std::lock_guard<std::mutex> lock(recordMutex());
+    change(record().at(k));
+}
+}  // namespace remote_detail
+
+void setRemoteAccess(const RemoteAccess &access)
+{
+    if (!(access.requestTimeout > 0) || !std::isfinite(access.requestTimeout))
+        throw Error("the request time limit must be a number of seconds > 0, got " +
+                    text::number(access.requestTimeout));
+    if (access.retries < 0 || access.retries > 10)
+        throw Error("retries must be 0..10, got " + std::to_string(access.retries));
+    std::lock_guard<std::mutex> lock(accessMutex());
+    accessInForce() = access;
+}
+
+RemoteAccess remoteAccess()
+{
+    std::lock_guard<std::mutex> lock(accessMutex());
+    return accessInForce();
+}
+
+void prepareRemoteAccess()
+{
+#if OMPL_GLIDER_WITH_NETCDF
+    netcdf_detail::prepareNetcdfAccess(remoteAccess());
+#endif
+}
+
+bool isRemoteSource(const std::string &source)
+{
+    std::string s = source;
+    while (!s.empty() && s.front() == '[')  // NetCDF-C's [mode=dap4] / [noprefetch] prefixes
+    {
+        const std::size_t close = s.find(']');
+        if (close == std::string::npos)
+            return false;
+        s = s.substr(close + 1);
+    }
+    return s.rfind("http://", 0) == 0 || s.rfind("https://", 0) == 0;
+}
+
+std::vector<RemoteFetch> remoteFetches()
+{
+    std::lock_guard<std::mutex> lock(recordMutex());
+    return record();
+}
+
+std::vector<RemoteFetch> remoteFetchesOf(const std::vector<std::string> &sources)
+{
+    std::vector<RemoteFetch> out;
+    for (const RemoteFetch &f : remoteFetches())
+        if (std::find(sources.begin(), sources.end(), f.source) != sources.end())
+            out.push_back(f);
+    return out;
+}
+}  // namespace ompl_glider

@@ -1,0 +1,423 @@
+// map.html (MapHtml.h): the map's data as JSON, from the result and its problem, and the page: the template
+// (maphtml/map_template.html) with Leaflet and the data put in its three places.
+#include "ompl_glider/output/MapHtml.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "../io/NumberText.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/environment/KeepOffZone.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/Planning.h"
+
+namespace ompl_glider
+{
+namespace maphtml
+{
+// generated from maphtml/map_template.html and Debian's Leaflet (src/output/sources.cmake): pieces, null-terminated
+extern const char *const kTemplate[];
+extern const char *const kLeafletJs[];
+extern const char *const kLeafletCss[];
+}  // namespace maphtml
+
+namespace
+{
+using json = nlohmann::json;
+
+std::string joined(const char *const *pieces)
+{
+    std::string s;
+    for (; *pieces; ++pieces)
+        s += *pieces;
+    return s;
+}
+
+double rounded(double v, double step)
+{
+    return std::isfinite(v) ? std::round(v / step) * step : v;
+}
+
+/// The map's frame: [lat, lon] (longitudes unwrapped about the region's centre, so that a trip across the antimeridian
+/// stays one piece) or, without lon/lat, [y, x] in km (a forecast on metres) or the field's units.
+class Frame
+{
+public:
+    explicit Frame(const MissionProblem &p) : p_(p), geographic_(p.isGeographic())
+    {
+        const MissionSpec &m = p.getSpec();
+        const Region &b = p.getBox();
+        if (geographic_)
+            lon0_ = p.toGeographic({0.5 * (b.xMin + b.xMax), 0.5 * (b.yMin + b.yMax)}).lon;
+        else if (m.physicalUnits().length)
+        {
+            scale_ = m.metresPerUnit() / 1000.0;
+            units_ = "km";
+        }
+    }
+    json at(Point2 q) const
+    {
+        if (!geographic_)
+            return json::array({rounded(q.y * scale_, 1e-6), rounded(q.x * scale_, 1e-6)});
+        const LonLat g = p_.toGeographic(q);
+        return json::array({rounded(g.lat, 1e-6), rounded(lon0_ + std::remainder(g.lon - lon0_, 360.0), 1e-6)});
+    }
+    json line(const std::vector<Point2> &ps) const
+    {
+        json out = json::array();
+        for (const Point2 &q : ps)
+            out.push_back(at(q));
+        return out;
+    }
+    json line(const std::vector<TimedPoint> &ps) const
+    {
+        json out = json::array();
+        for (const TimedPoint &q : ps)
+            out.push_back(at({q.x, q.y}));
+        return out;
+    }
+    /// The planning frame's point at map coordinates (@p a, @p o): (lat, lon), or (y, x) in the map's units.
+    Point2 local(double a, double o) const
+    {
+        return geographic_ ? p_.toLocal(LonLat{o, a}) : Point2{o / scale_, a / scale_};
+    }
+    bool geographic() const
+    {
+        return geographic_;
+    }
+    const std::string &units() const
+    {
+        return units_;
+    }
+    /// A length of the planning frame in the map's units (metres on a lon/lat map: Leaflet's circles).
+    double length(double d) const
+    {
+        return geographic_ ? d * p_.getSpec().metresPerUnit() : d * scale_;
+    }
+
+private:
+    const MissionProblem &p_;
+    bool geographic_;
+    double lon0_{0.0}, scale_{1.0};
+    std::string units_;
+};
+
+std::string timeText(const MissionProblem &p, double t)
+{
+    const std::string iso = p.isoTime(t);
+    return iso.empty() ? "t = " + text::number(t, 6) : iso;
+}
+
+/// "3 d 4.2 h", "9.1 h", "12.5 min" (durationText() without its seconds), or the field's number.
+std::string elapsedText(const MissionSpec &m, double dt)
+{
+    if (!m.physicalUnits().time)
+        return text::number(dt, 6);
+    const std::string s = text::durationText(dt * m.timeUnitSeconds);
+    return s.substr(0, s.find(" ("));
+}
+
+/// Degrees clockwise from north of the vector (east, north).
+double bearing(double e, double n)
+{
+    const double b = std::atan2(e, n) * 180.0 / M_PI;
+    return b < 0.0 ? b + 360.0 : b;
+}
+
+/// The heading to hold at @p a for the straight leg to @p b in the current @p c at speed @p v (through the water: the
+/// crab angle whose velocity cancels the current across the leg); NaN when the current across is the stronger.
+double legHeading(Point2 a, Point2 b, Velocity c, double v)
+{
+    const double dx = b.x - a.x, dy = b.y - a.y, d = std::hypot(dx, dy);
+    if (!(d > 0.0) || !(v > 0.0))
+        return std::numeric_limits<double>::quiet_NaN();
+    const double ex = dx / d, ey = dy / d, cross = -c.u * ey + c.v * ex;  // current across the leg (left positive)
+    if (std::abs(cross) >= v)
+        return std::numeric_limits<double>::quiet_NaN();
+    const double hp = -cross / v, ha = std::sqrt(1.0 - hp * hp);  // across and along the leg, through the water
+    return bearing(ha * ex - hp * ey, ha * ey + hp * ex);
+}
+
+json routeJson(const MissionResult &r, const MissionProblem &p, const Frame &f)
+{
+    const MissionSpec &m = r.spec;
+    const PlannedPath &plan = r.plan;
+    json route;
+    route["name"] = m.name.empty() ? plan.planner : m.name;
+    route["planner"] = plan.planner;
+    route["travel_time"] = plan.solved ? elapsedText(m, plan.travelTime) : "no path";
+    route["points"] = plan.solved ? f.line(plan.headingRoute() ? plan.track : plan.path) : json::array();
+    json wps = json::array();
+    const CurrentField &field = *p.getField();
+    const double z = m.vehicle.depth;
+    for (std::size_t k = 0; k < r.waypoints.size(); ++k)
+    {
+        const MissionWaypoint &w = r.waypoints[k];
+        const json pos = f.at(w.position);
+        json wp{{"index", k}, {"lat", pos[0]}, {"lon", pos[1]}, {"arrival", w.iso.empty() ? timeText(p, w.time) : w.iso},
+                {"elapsed", elapsedText(m, w.time - plan.departure)}};
+        Velocity c{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+        if (field.inWater(w.position.x, w.position.y, z) && w.time <= field.timeEnd())
+            c = field.velocity(w.position.x, w.position.y, z, w.time);
+        double heading = w.heading;
+        if (!std::isfinite(heading) && k + 1 < r.waypoints.size() && std::isfinite(c.u))
+            heading = legHeading(w.position, r.waypoints[k + 1].position, c, plan.speed);
+        wp["heading_deg"] = std::isfinite(heading) ? json(rounded(heading, 0.1)) : json(nullptr);
+        if (std::isfinite(c.u) && std::isfinite(c.v))
+            wp["current"] = {{"u", rounded(c.u, 1e-4)},
+                             {"v", rounded(c.v, 1e-4)},
+                             {"speed", rounded(std::hypot(c.u, c.v), 1e-4)},
+                             {"dir_deg", rounded(bearing(c.u, c.v), 0.1)}};
+        else
+            wp["current"] = nullptr;
+        wps.push_back(std::move(wp));
+    }
+    route["waypoints"] = std::move(wps);
+    return route;
+}
+
+/// The land of the field (cells sampled about 150 across the region whose centre is not water) and the keep-off
+/// band (water within the pilot's distance of land), each as row runs of cells.
+void landAndBand(const MissionProblem &p, const Frame &f, json &land, json &band)
+{
+    const Region &b = p.getBox();
+    const double w = b.xMax - b.xMin, h = b.yMax - b.yMin;
+    if (!(w > 0.0) || !(h > 0.0))
+        return;
+    const double cell = std::max(w, h) / 150.0;
+    const int nx = std::max(1, static_cast<int>(std::ceil(w / cell))), ny = std::max(1, static_cast<int>(std::ceil(h / cell)));
+    const CurrentField &field = *p.getField();
+    const FieldGrid *grid = field.grid();
+    const KeepOffZone *keep = p.getLand() && p.getLand()->distance() > 0.0 ? p.getLand().get() : nullptr;
+    const double z = p.getSpec().vehicle.depth, dx = w / nx, dy = h / ny;
+    auto rect = [&](int i0, int i1, int j) {
+        const double x0 = b.xMin + i0 * dx, x1 = b.xMin + i1 * dx, y0 = b.yMin + j * dy, y1 = y0 + dy;
+        return f.line(std::vector<Point2>{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+    };
+    for (int j = 0; j < ny; ++j)
+    {
+        int runStart[2] = {-1, -1};
+        for (int i = 0; i <= nx; ++i)
+        {
+            int kind = -1;  // 0 land, 1 keep-off band
+            if (i < nx)
+            {
+                const double x = b.xMin + (i + 0.5) * dx, y = b.yMin + (j + 0.5) * dy;
+                if (!field.inWater(x, y, z))
+                    kind = !grid || grid->covers(x, y) ? 0 : -1;  // outside a forecast's grid: no data, not land
+                else if (keep && keep->distanceTo(x, y) < keep->distance())
+                    kind = 1;
+            }
+            for (int k = 0; k < 2; ++k)
+                if (kind != k && runStart[k] >= 0)
+                {
+                    (k == 0 ? land : band).push_back(rect(runStart[k], i, j));
+                    runStart[k] = -1;
+                }
+                else if (kind == k && runStart[k] < 0)
+                    runStart[k] = i;
+        }
+    }
+}
+
+/// The current as arrows at six times from the departure to the arrival, on a grid regular in the map's
+/// coordinates (lon/lat, or the frame's) of about 24 across @p bounds ([[south, west], [north, east]]), so that the
+/// page can thin it by index when zoomed out.
+json currentsJson(const MissionResult &r, const MissionProblem &p, const Frame &f, const json &bounds)
+{
+    const Region &b = p.getBox();
+    const CurrentField &field = *p.getField();
+    const MissionSpec &m = r.spec;
+    const double w = b.xMax - b.xMin, h = b.yMax - b.yMin;
+    json out{{"units", m.current.isForecast() ? "m/s" : ""}, {"frames", json::array()}};
+    if (!(w > 0.0) || !(h > 0.0))
+        return out;
+    const double t0 = r.plan.departure;
+    const double s0 = bounds[0][0].get<double>(), w0 = bounds[0][1].get<double>(), n1 = bounds[1][0].get<double>(),
+                 e1 = bounds[1][1].get<double>();
+    const double step = std::max(n1 - s0, e1 - w0) / 24.0;
+    double span = r.plan.solved ? r.plan.travelTime : m.planner.horizon;
+    span = std::min(span, field.timeEnd() - t0);
+    if (!std::isfinite(span) || span < 0.0)
+        span = 0.0;
+    const int frames = span > 0.0 ? 6 : 1;
+    const double z = m.vehicle.depth;
+    double vmax = 0.0;
+    for (int k = 0; k < frames; ++k)
+    {
+        const double t = t0 + (frames > 1 ? span * k / (frames - 1) : 0.0);
+        json arrows = json::array();
+        for (int j = 0; s0 + (j + 0.5) * step < n1; ++j)
+            for (int i = 0; w0 + (i + 0.5) * step < e1; ++i)
+            {
+                const double a = s0 + (j + 0.5) * step, o = w0 + (i + 0.5) * step;  // map coordinates
+                const Point2 q = f.local(a, o);
+                const double x = q.x, y = q.y;
+                if (!(x >= b.xMin && x <= b.xMax && y >= b.yMin && y <= b.yMax) || !field.inWater(x, y, z))
+                    continue;
+                const Velocity c = field.velocity(x, y, z, t);
+                if (!std::isfinite(c.u) || !std::isfinite(c.v))
+                    continue;
+                vmax = std::max(vmax, std::hypot(c.u, c.v));
+                arrows.push_back(json::array({rounded(a, 1e-6), rounded(o, 1e-6), rounded(c.u, 1e-4), rounded(c.v, 1e-4)}));
+            }
+        out["frames"].push_back({{"time", timeText(p, t)}, {"arrows", std::move(arrows)}});
+    }
+    out["max_speed"] = vmax;
+    return out;
+}
+
+json isochronesJson(const MissionResult &r, const MissionProblem &p, const Frame &f)
+{
+    json out = json::array();
+    if (!r.isochrones)
+        return out;
+    for (const Isochrone &c : r.isochrones->contours)
+    {
+        json lines = json::array();
+        for (const auto &l : c.lines)
+            lines.push_back(f.line(l));
+        out.push_back({{"time", c.iso.empty() ? timeText(p, c.time) : c.iso}, {"lines", std::move(lines)}});
+    }
+    return out;
+}
+
+json tracksJson(const MissionResult &r, const Frame &f)
+{
+    json out = json::array();
+    if (!r.execution || r.execution->runs.empty() || !r.execution->runs.front().planned)
+        return out;
+    const ExecutionResult &e = *r.execution;
+    for (std::size_t k = 0; k < e.strategies.size() && k < e.runs.front().flown.size(); ++k)
+        out.push_back({{"name", "flown (" + controlStrategyName(e.strategies[k]) + ")"},
+                       {"points", f.line(e.runs.front().flown[k].fixes)}});
+    return out;
+}
+
+/// JSON as a <script> may hold it: '<' written \u003c (no "</script" nor "<!--"), U+2028/U+2029 escaped.
+std::string scriptSafe(const std::string &s)
+{
+    std::string out;
+    out.reserve(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i)
+    {
+        if (s[i] == '<')
+            out += "\\u003c";
+        else if (s.compare(i, 3, "\xE2\x80\xA8") == 0 || s.compare(i, 3, "\xE2\x80\xA9") == 0)
+        {
+            out += s[i + 2] == '\xA8' ? "\\u2028" : "\\u2029";
+            i += 2;
+        }
+        else
+            out += s[i];
+    }
+    return out;
+}
+}  // namespace
+
+std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
+{
+    const Frame f(p);
+    const MissionSpec &m = r.spec;
+    json d;
+    d["title"] = m.name;
+    d["geographic"] = f.geographic();
+    d["units"] = f.units();
+    d["routes"] = json::array({routeJson(r, p, f)});
+    const Point2 s = p.getStart(), g = p.getGoal();
+    d["start"] = f.at(s);
+    d["goal"] = f.at(g);
+    d["goal_tolerance"] = f.length(m.planner.goalTolerance);
+    d["isochrones"] = isochronesJson(r, p, f);
+    json land = json::array(), band = json::array(), coast = json::array(), forbidden = json::array();
+    landAndBand(p, f, land, band);
+    for (const MissionPolygon &poly : p.getPolygons())
+    {
+        if (poly.coastline)
+            coast.push_back(f.line(poly.points));
+        else if (poly.kind == "island" || poly.kind == "land")
+            land.push_back(f.line(poly.points));
+        else
+            forbidden.push_back({{"name", poly.name + " (" + poly.kind + ")"},
+                                 {"window", ""},
+                                 {"rings", json::array({f.line(poly.points)})}});
+    }
+    for (auto &ring : coast)
+        land.push_back(ring);  // a coastline's land, filled
+    d["land"] = std::move(land);
+    d["coastlines"] = std::move(coast);
+    d["keep_off"] = std::move(band);
+    d["forbidden"] = std::move(forbidden);
+    d["tracks"] = tracksJson(r, f);
+    const Region &b = p.getBox();
+    json lo = f.at({b.xMin, b.yMin}), hi = f.at({b.xMax, b.yMax});
+    for (const Point2 q : {Point2{b.xMin, b.yMax}, Point2{b.xMax, b.yMin}, Point2{0.5 * (b.xMin + b.xMax), b.yMin},
+                           Point2{0.5 * (b.xMin + b.xMax), b.yMax}})
+    {
+        const json c = f.at(q);
+        lo = json::array({std::min(lo[0].get<double>(), c[0].get<double>()), std::min(lo[1].get<double>(), c[1].get<double>())});
+        hi = json::array({std::max(hi[0].get<double>(), c[0].get<double>()), std::max(hi[1].get<double>(), c[1].get<double>())});
+    }
+    d["bounds"] = json::array({lo, hi});
+    d["currents"] = currentsJson(r, p, f, d["bounds"]);
+    return d.dump();
+}
+
+std::string mapHtmlPage(const std::vector<std::string> &data, const std::string &title)
+{
+    if (data.empty())
+        throw Error("map.html: no plan to draw");
+    json d = json::parse(data.front(), nullptr, false);
+    if (d.is_discarded() || !d.is_object() || !d.contains("routes"))
+        throw Error("map.html: the map data is not what mapHtmlData() writes");
+    for (std::size_t k = 1; k < data.size(); ++k)
+    {
+        const json more = json::parse(data[k], nullptr, false);
+        if (more.is_discarded() || !more.is_object() || !more.contains("routes"))
+            throw Error("map.html: the map data is not what mapHtmlData() writes");
+        for (const json &route : more["routes"])
+            d["routes"].push_back(route);
+        for (const char *key : {"isochrones", "tracks"})
+            if (more.contains(key))
+                for (const json &x : more[key])
+                    d[key].push_back(x);
+    }
+    d["title"] = title;
+    // the template's three places, found first and filled in one pass (a placeholder-like text in what is put in
+    // is never looked at again); Leaflet is put in as Debian ships it (a "</script" in it would end the element)
+    const std::string page = joined(maphtml::kTemplate);
+    std::string js = joined(maphtml::kLeafletJs);
+    for (std::size_t at = js.find("</script"); at != std::string::npos; at = js.find("</script", at + 2))
+        js.replace(at, 2, "<\\/");
+    const std::pair<const char *, std::string> parts[] = {{"/*LEAFLET_CSS*/", joined(maphtml::kLeafletCss)},
+                                                         {"/*LEAFLET_JS*/", js},
+                                                         {"/*MAP_DATA*/", scriptSafe(d.dump())}};
+    std::vector<std::pair<std::size_t, const std::pair<const char *, std::string> *>> at;
+    for (const auto &part : parts)
+    {
+        const std::size_t k = page.find(part.first);
+        if (k == std::string::npos || page.find(part.first, k + 1) != std::string::npos)
+            throw Error(std::string("map.html: the page template must hold ") + part.first + " once");
+        at.push_back({k, &part});
+    }
+    std::sort(at.begin(), at.end());
+    std::string out;
+    std::size_t from = 0;
+    for (const auto &[k, part] : at)
+    {
+        out.append(page, from, k - from);
+        out += part->second;
+        from = k + std::string(part->first).size();
+    }
+    out.append(page, from, std::string::npos);
+    return out;
+}
+
+std::string mapHtml(const MissionResult &r, const MissionProblem &p)
+{
+    return mapHtmlPage({mapHtmlData(r, p)}, r.spec.name);
+}
+}  // namespace ompl_glider

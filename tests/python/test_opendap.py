@@ -1,0 +1,74 @@
+"""Python's Field.netcdf() on an OPeNDAP URL (tests/opendap/dap2_server.py on 127.0.0.1): the plan of the file's
+travel time, the source in the summary, a cache that serves a second plan, and the inline map of a Result."""
+import importlib.util
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+import ompl_glider
+
+SOURCE = os.environ.get("OMPL_GLIDER_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+SERVER = os.path.join(SOURCE, "tests", "opendap", "dap2_server.py")
+
+
+def _checker():
+    spec = importlib.util.spec_from_file_location("check_opendap", os.path.join(SOURCE, "tests", "opendap",
+                                                                               "check_opendap.py"))
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+@pytest.fixture()
+def served(tmp_path):
+    import netCDF4  # Debian's python3-netcdf4, installed by scripts/setup.sh
+    root = tmp_path / "srv"
+    root.mkdir()
+    _checker().write_forecast(str(root / "f.nc"))
+    port_file, log = tmp_path / "port", tmp_path / "log.jsonl"
+    proc = subprocess.Popen([sys.executable, SERVER, "--root", str(root), "--port", "0", "--port-file",
+                             str(port_file), "--log", str(log), "--lifetime", "200"], start_new_session=True,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 30
+    while not port_file.exists():
+        assert proc.poll() is None and time.monotonic() < deadline, "the DAP2 server did not start"
+        time.sleep(0.05)
+    depart = netCDF4.num2date(230003.0, "hours since 2000-01-01 00:00:00").strftime("%Y-%m-%dT%H:%M:%SZ")
+    yield str(root / "f.nc"), "http://127.0.0.1:%s/f.nc" % port_file.read_text().strip(), log, depart
+    os.killpg(proc.pid, signal.SIGTERM)
+    proc.wait(10)
+
+
+def test_url_plans_as_the_file_and_the_cache_serves_a_second_plan(served, tmp_path):
+    path, url, log, depart = served
+    trip = dict(start=(-74.2, 30.4), goal=(-71.6, 31.2), speed=0.5, departure=depart)
+    a = ompl_glider.plan(field=ompl_glider.Field.netcdf(path), **trip)
+    ompl_glider.set_remote_access(cache=tmp_path / "cache")
+    try:
+        b = ompl_glider.plan(field=ompl_glider.Field.netcdf(url), **trip)
+        assert a.solved and abs(a.travel_time - b.travel_time) <= 1e-12 * a.travel_time
+        src = b.summary["forecast_sources"]
+        assert len(src) == 1 and src[0]["source"] == url and src[0]["bytes_fetched"] > 0
+        requests = len(log.read_text().splitlines())
+        c = ompl_glider.plan(field=ompl_glider.Field.netcdf(url), **trip)
+        assert c.travel_time == b.travel_time
+        assert len(log.read_text().splitlines()) == requests  # all from the process's memory and the cache
+    finally:
+        ompl_glider.set_remote_access()
+    with pytest.raises(ompl_glider.Error, match="request time limit"):
+        ompl_glider.set_remote_access(request_timeout=0)
+
+
+def test_result_shows_its_map_inline():
+    r = ompl_glider.plan()
+    page = r.map_html()
+    assert page.startswith("<!DOCTYPE html>") and "window.GLIDER_MAP = {" in page
+    data = json.loads(page.split("window.GLIDER_MAP = ", 1)[1].split(";\n", 1)[0])
+    assert len(data["routes"][0]["points"]) == len(r.route.x)
+    frame = r._repr_html_()
+    assert frame.startswith("<iframe") and "srcdoc=" in frame and "&lt;!DOCTYPE html&gt;" in frame
