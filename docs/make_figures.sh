@@ -29,6 +29,13 @@ cp "$work/main/map.png" docs/main_job_map.png
   --coastline examples/jamaica_coast.geojson --out "$work/jamaica" > /dev/null
 cp "$work/jamaica/map.png" "$images/jamaica_coastline_map.png"
 
+# the interactive map (map.html) of the same trip with a keep-off band and isochrones, as headless Chromium shows it
+# offline (README, docs/MAP_HTML.md)
+"$plan" --currents examples/caribbean_forecast.nc --start=-78.8,18.2 --goal=-75.8,18.1 --speed 0.4 \
+  --coastline examples/jamaica_coast.geojson --keep-off 5km --isochrones --out "$work/jamaica_html" > /dev/null
+python3 tests/maphtml/check_map_html.py "$work/jamaica_html/map.html" --screenshot "$images/jamaica_map_html.png" \
+  > /dev/null
+
 # the level-set optimum and isochrones around islands (docs/REACHABILITY.md)
 "$plan" --mission examples/campaign_islands.yaml --out "$work/islands" > /dev/null
 cp "$work/islands/map.png" "$images/campaign_islands_isochrones.png"

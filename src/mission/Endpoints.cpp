@@ -126,6 +126,29 @@ Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) c
 }
 
 #if OMPL_GLIDER_WITH_NETCDF
+namespace
+{
+/// What came from where for one OPeNDAP source, in the report's words.
+std::string remoteNote(const RemoteFetch &f)
+{
+    const auto bytes = [](std::uint64_t b) {
+        return b >= 1000000 ? text::number(b / 1e6, 4) + " MB" : b >= 1000 ? text::number(b / 1e3, 4) + " kB"
+                                                                           : std::to_string(b) + " B";
+    };
+    std::string note = "OPeNDAP '" + f.source + "': ";
+    if (!f.opened)
+        note += "read from the cache, no network (" + bytes(f.bytesFromCache) + " of values)";
+    else
+        note += bytes(f.bytesFetched) + " of values fetched in " + std::to_string(f.requests) + " requests" +
+                (f.bytesFromCache > 0 ? ", " + bytes(f.bytesFromCache) + " from the cache" : "");
+    if (!f.cacheFile.empty())
+        note += f.cacheProblem.empty() ? "; cache file '" + f.cacheFile + "'"
+                                       : "; the cache file could not be written: " + f.cacheProblem;
+    return note;
+}
+
+}  // namespace
+
 std::vector<std::string> forecastNotes(const NetCdfCurrents &nc)
 {
     std::vector<std::string> notes;
@@ -147,6 +170,8 @@ std::vector<std::string> forecastNotes(const NetCdfCurrents &nc)
         notes.push_back(std::to_string(nc.zeroLandNodes) + " of the " + loaded +
                         " nodes loaded are land only because u = v = 0 in every record of the trip "
                         "(current.zero_velocity_land: false, --no-zero-land, takes them as water)");
+    for (const RemoteFetch &f : remoteFetchesOf(nc.files))  // OPeNDAP: what came from the network, the cache
+        notes.push_back(remoteNote(f));
     return notes;
 }
 #endif

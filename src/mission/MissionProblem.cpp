@@ -66,25 +66,6 @@ double tripMarginKm(LonLat start, LonLat goal)
 }
 
 #if OMPL_GLIDER_WITH_NETCDF
-/// What came from where for one OPeNDAP source, in the report's words.
-std::string remoteNote(const RemoteFetch &f)
-{
-    const auto bytes = [](std::uint64_t b) {
-        return b >= 1000000 ? text::number(b / 1e6, 4) + " MB" : b >= 1000 ? text::number(b / 1e3, 4) + " kB"
-                                                                           : std::to_string(b) + " B";
-    };
-    std::string note = "OPeNDAP '" + f.source + "': ";
-    if (!f.opened)
-        note += "read from the cache, no network (" + bytes(f.bytesFromCache) + " of values)";
-    else
-        note += bytes(f.bytesFetched) + " of values fetched in " + std::to_string(f.requests) + " requests" +
-                (f.bytesFromCache > 0 ? ", " + bytes(f.bytesFromCache) + " from the cache" : "");
-    if (!f.cacheFile.empty())
-        note += f.cacheProblem.empty() ? "; cache file '" + f.cacheFile + "'"
-                                       : "; the cache file could not be written: " + f.cacheProblem;
-    return note;
-}
-
 NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
 {
     const CurrentSpec &c = m.current;
@@ -274,8 +255,6 @@ void MissionProblem::buildField()
     forecastFiles_ = nc.files;
     forecastNotes_ = ompl_glider::forecastNotes(nc);
     remoteSources_ = remoteFetchesOf(nc.files);
-    for (const RemoteFetch &f : remoteSources_)
-        forecastNotes_.push_back(remoteNote(f));
     std::string u = nc.uVariable;  // a wind (uwnd, u10, eastward_wind...) is called so on the map
     std::transform(u.begin(), u.end(), u.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
     if (u == "uwnd" || u == "u10" || u.find("wind") != std::string::npos)

@@ -1,5 +1,7 @@
 // The outputs of a fleet (FleetFiles.h): each glider's files rendered where it was planned, then written with
 // fleet.csv and the fleet's summary.json in one transaction.
+#include "ompl_glider/Config.h"
+#include "ompl_glider/output/MapHtml.h"
 #include "ompl_glider/output/FleetFiles.h"
 
 #include <cerrno>
@@ -175,6 +177,20 @@ std::vector<OutputFile> fleetOutputFiles(const MissionSpec &mission, const std::
                              }});
     const std::string csv = fleetCsv(gliders);
     files.push_back({"fleet.csv", [csv](const std::string &p) { output_detail::writeFileChecked(p, csv); }});
+#if OMPL_GLIDER_WITH_MAP
+    // every glider's route on one interactive map (the first glider's frame, land and currents)
+    std::vector<std::string> maps;
+    for (const FleetGlider &g : gliders)
+        for (auto &[name, bytes] : filesOf(g.kept))
+            if (name == "map.html")
+                if (std::string data = mapHtmlDataOf(bytes); !data.empty())
+                    maps.push_back(std::move(data));
+    if (!maps.empty())
+    {
+        const std::string page = mapHtmlPage(maps, mission.name + " (fleet of " + std::to_string(gliders.size()) + ")");
+        files.push_back({"map.html", [page](const std::string &p) { output_detail::writeFileChecked(p, page); }});
+    }
+#endif
     std::vector<std::string> names = {"summary.json"};
     for (const OutputFile &f : files)
         names.push_back(f.name);

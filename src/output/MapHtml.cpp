@@ -416,6 +416,17 @@ std::string mapHtmlPage(const std::vector<std::string> &data, const std::string 
     return out;
 }
 
+std::string mapHtmlDataOf(const std::string &page)
+{
+    const std::string begin = "window.GLIDER_MAP = ";
+    const std::size_t a = page.find(begin);
+    const std::size_t b = a == std::string::npos ? a : page.find(";\n", a);
+    if (b == std::string::npos)
+        return "";
+    const json d = json::parse(page.substr(a + begin.size(), b - a - begin.size()), nullptr, false);
+    return d.is_discarded() || !d.is_object() || !d.contains("routes") ? std::string() : d.dump();
+}
+
 std::string mapHtml(const MissionResult &r, const MissionProblem &p)
 {
     return mapHtmlPage({mapHtmlData(r, p)}, r.spec.name);

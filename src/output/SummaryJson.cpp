@@ -211,6 +211,21 @@ void safetyJson(const MissionResult &r, json &j)
 }
 
 /// The global check of the route class (GlobalCheck): its candidates and the winner; null when it did not run.
+/// The forecast's OPeNDAP sources: what came from the network, what from the cache.
+json forecastSourcesJson(const MissionProblem &problem)
+{
+    json out = json::array();
+    for (const RemoteFetch &f : problem.remoteSources())
+        out.push_back({{"source", f.source},
+                       {"cache_file", f.cacheFile},
+                       {"bytes_fetched", f.bytesFetched},
+                       {"bytes_from_cache", f.bytesFromCache},
+                       {"requests", f.requests},
+                       {"network", f.opened},
+                       {"cache_problem", jtext(f.cacheProblem)}});
+    return out;
+}
+
 json globalCheckJson(const PlannedPath &p)
 {
     if (!p.globalCheck)
@@ -243,15 +258,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["source"] = m.file;
     j["current"] = m.current.type;
     j["forecast_files"] = problem.forecastFiles();
-    j["forecast_sources"] = json::array();  // OPeNDAP URLs: what came from the network, what from the cache
-    for (const RemoteFetch &f : problem.remoteSources())
-        j["forecast_sources"].push_back({{"source", f.source},
-                                         {"cache_file", f.cacheFile},
-                                         {"bytes_fetched", f.bytesFetched},
-                                         {"bytes_from_cache", f.bytesFromCache},
-                                         {"requests", f.requests},
-                                         {"network", f.opened},
-                                         {"cache_problem", jtext(f.cacheProblem)}});
+    j["forecast_sources"] = forecastSourcesJson(problem);
     j["forecast_notes"] = json::array();
     for (const std::string &note : r.forecastNotes)
         j["forecast_notes"].push_back(jtext(note));

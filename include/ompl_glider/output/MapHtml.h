@@ -23,6 +23,10 @@ std::string mapHtmlData(const MissionResult &result, const MissionProblem &probl
 /// @throws Error when @p data is empty or not what mapHtmlData() writes.
 std::string mapHtmlPage(const std::vector<std::string> &data, const std::string &title);
 
+/// @brief The data of a page mapHtml() or mapHtmlPage() wrote (what a fleet's glider rendered where it was planned);
+/// empty when @p page is not such a page.
+std::string mapHtmlDataOf(const std::string &page);
+
 /// @brief mapHtmlPage() of one plan, titled by its mission.
 std::string mapHtml(const MissionResult &result, const MissionProblem &problem);
 }  // namespace ompl_glider
