@@ -23,8 +23,6 @@ import io
 import json
 import numbers
 import os
-import shutil
-import tempfile
 import weakref
 from typing import Any, Callable, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
 
@@ -94,7 +92,6 @@ class Field:
     def __init__(self, kind: str, **settings: Any) -> None:
         self.kind = kind
         self.settings = settings
-        self._tempdir: Optional[str] = None
 
     def __repr__(self) -> str:
         return f"Field({self.kind!r}, {self.settings!r})"
@@ -133,8 +130,8 @@ class Field:
         u, v: (time, lat, lon) or, for a steady field, (lat, lon) arrays in m/s; NaN marks land.
         lon, lat: 1-D axes in degrees (a geographic field), or x, y: 1-D axes in metres (a Cartesian one).
         t: the times, numbers in ``time_units`` (e.g. "seconds since 2026-03-15 00:00:00") or numpy datetime64.
-        The arrays are written as a CF NetCDF file in a temporary directory (removed with the Field) and read by the
-        forecast reader, so they get the same checks, interpolation and land handling as any forecast.
+        The arrays become a CF NetCDF dataset in memory (no file; released with the Field) read by the forecast
+        reader, so they get the same checks, interpolation and land handling as any forecast.
         ``options`` are those of :meth:`netcdf`.
         """
         geographic = lon is not None or lat is not None
@@ -150,14 +147,11 @@ class Field:
                 times = (times - np.datetime64("1970-01-01T00:00:00")) / np.timedelta64(1, "s")
                 time_units = "seconds since 1970-01-01 00:00:00"
             times = np.asarray(times, dtype=float)
-        tempdir = tempfile.mkdtemp(prefix="ompl_glider_")
-        path = os.path.join(tempdir, "currents.nc")
-        _core.write_forecast(path, np.asarray(u, dtype=float), np.asarray(v, dtype=float),
-                             np.asarray(ax, dtype=float), np.asarray(ay, dtype=float), times, geographic,
-                             time_units, velocity_units)
-        field = Field.netcdf(path, variables={"u": "u", "v": "v"}, **options)
-        field._tempdir = tempdir
-        weakref.finalize(field, shutil.rmtree, tempdir, True)
+        name = _core.memory_forecast(np.asarray(u, dtype=float), np.asarray(v, dtype=float),
+                                     np.asarray(ax, dtype=float), np.asarray(ay, dtype=float), times, geographic,
+                                     time_units, velocity_units)
+        field = Field.netcdf(name, variables={"u": "u", "v": "v"}, **options)
+        weakref.finalize(field, _core.release_memory_dataset, name)
         return field
 
     @staticmethod

@@ -40,9 +40,10 @@ def forecast_mission(files: str, start: Tuple[float, float], goal: Tuple[float, 
                      horizon: str = "refuse", velocity_units: str = "", time_units: str = "",
                      steady_record: Optional[int] = None, zero_velocity_land: bool = True,
                      depth_average: Optional[Tuple[float, float]] = None) -> Mission: ...
-def write_forecast(path: str, u: np.ndarray, v: np.ndarray, x: np.ndarray, y: np.ndarray,
-                   t: Optional[np.ndarray] = None, geographic: bool = True, time_units: str = "",
-                   velocity_units: str = "m s-1") -> None: ...
+def memory_forecast(u: np.ndarray, v: np.ndarray, x: np.ndarray, y: np.ndarray,
+                    t: Optional[np.ndarray] = None, geographic: bool = True, time_units: str = "",
+                    velocity_units: str = "m s-1") -> str: ...
+def release_memory_dataset(name: str) -> None: ...
 
 class Result:
     """The result of one run (the library's MissionResult and its problem)."""

@@ -1,6 +1,10 @@
-// Currents given as numpy arrays: written as a CF NetCDF file, so that they reach the pipeline the way every
-// forecast does (the NetCDF reader's checks, land from NaN, units, interpolation), not by a second path.
+// Currents given as numpy arrays: a CF NetCDF dataset built in memory (nc_create_mem) and registered with the
+// library (io/MemoryDataset.h), so that they reach the pipeline the way every forecast does (the NetCDF reader's
+// checks, land from NaN, units, interpolation), not by a second path, and without a file on disk.
 #include <netcdf.h>
+#include <netcdf_mem.h>
+
+#include <cstdlib>
 
 #include <cmath>
 #include <optional>
@@ -12,6 +16,7 @@
 
 #include "Bindings.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/MemoryDataset.h"
 
 namespace py = pybind11;
 using ompl_glider::Error;
@@ -26,9 +31,10 @@ constexpr double kFill = 1e20;
 class Writer
 {
 public:
-    explicit Writer(const std::string &path) : path_(path)
+    /// A dataset in memory (CDF-5: 64-bit sizes, no HDF5 image needed)
+    explicit Writer(const std::string &name) : path_(name)
     {
-        check(nc_create(path.c_str(), NC_CLOBBER | NC_NETCDF4, &id_));
+        check(nc_create_mem(name.c_str(), NC_64BIT_DATA, 1 << 16, &id_));
     }
     ~Writer()
     {
@@ -71,10 +77,16 @@ public:
     {
         check(nc_enddef(id_));
     }
-    void close()
+    /// Closes the dataset and registers its bytes: the name the reader opens it by.
+    std::string close()
     {
-        check(nc_close(id_));
+        NC_memio io{};
+        const int st = nc_close_memio(id_, &io);
         id_ = -1;
+        check(st);
+        std::string bytes(static_cast<const char *>(io.memory), io.size);
+        std::free(io.memory);
+        return ompl_glider::registerMemoryDataset(std::move(bytes));
     }
 
 private:
@@ -95,9 +107,9 @@ std::vector<double> values(const Array &a, const char *name, std::size_t n)
     return v;
 }
 
-/// Writes u and v ((time, y, x) or steady (y, x); NaN: land) on the axes x (lon) and y (lat) and the times t
-/// (in @p timeUnits; none for a steady field) as a CF NetCDF-4 file at @p path.
-void writeForecast(const std::string &path, const Array &u, const Array &v, const Array &x, const Array &y,
+/// Builds u and v ((time, y, x) or steady (y, x); NaN: land) on the axes x (lon) and y (lat) and the times t
+/// (in @p timeUnits; none for a steady field) as a CF NetCDF dataset in memory; returns its name ("memory:N").
+std::string memoryForecast(const Array &u, const Array &v, const Array &x, const Array &y,
                    const std::optional<Array> &t, bool geographic, const std::string &timeUnits,
                    const std::string &velocityUnits)
 {
@@ -122,7 +134,7 @@ void writeForecast(const std::string &path, const Array &u, const Array &v, cons
         else if (!std::isfinite(uu[k]) || !std::isfinite(vv[k]))
             throw Error("currents from arrays: u and v must be finite or NaN (land)");
 
-    Writer w(path);
+    Writer w("currents_from_arrays");
     std::vector<int> dims;
     int tv = -1;
     if (t)
@@ -148,15 +160,17 @@ void writeForecast(const std::string &path, const Array &u, const Array &v, cons
     w.put(xv, xs.data());
     w.put(uv, uu.data());
     w.put(vv_, vv.data());
-    w.close();
+    return w.close();
 }
 }  // namespace
 
 void bindArrays(py::module_ &m)
 {
-    m.def("write_forecast", &writeForecast, py::arg("path"), py::arg("u"), py::arg("v"), py::arg("x"), py::arg("y"),
+    m.def("memory_forecast", &memoryForecast, py::arg("u"), py::arg("v"), py::arg("x"), py::arg("y"),
           py::arg("t") = py::none(), py::arg("geographic") = true, py::arg("time_units") = "",
           py::arg("velocity_units") = "m s-1",
-          "Writes numpy currents as a CF NetCDF file that the forecast reader reads.");
+          "Builds numpy currents as a CF NetCDF dataset in memory that the forecast reader reads; its name.");
+    m.def("release_memory_dataset", &ompl_glider::releaseMemoryDataset, py::arg("name"),
+          "Forgets a dataset of memory_forecast().");
 }
 }  // namespace ompl_glider_py

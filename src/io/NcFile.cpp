@@ -2,8 +2,11 @@
 #include "NcFile.h"
 
 #include <hdf5.h>
+#include <netcdf_mem.h>
 
 #include "RemoteDataset.h"
+#include "RemoteRecord.h"
+#include "ompl_glider/io/MemoryDataset.h"
 #include "TextUtil.h"
 
 namespace ompl_glider
@@ -32,6 +35,17 @@ NcFile::NcFile(const std::string &path) : path_(path)
     {
         remote_ = RemoteDataset::open(path, access);
         id_ = remote_->metadataId();
+        return;
+    }
+    if (isMemoryDataset(path))
+    {
+        memory_ = remote_detail::memoryDataset(path);
+        if (!memory_)
+            throw Error("NetCDF dataset '" + path + "': no such dataset in memory (released)");
+        // NetCDF-C reads the bytes in place (NC_INMEMORY without NC_WRITE): they stay alive while the file is open
+        const int st = nc_open_mem(path.c_str(), NC_NOWRITE, memory_->size(), const_cast<char *>(memory_->data()), &id_);
+        if (st != NC_NOERR)
+            throw Error("NetCDF dataset '" + path + "': cannot open: " + nc_strerror(st));
         return;
     }
     // A classic file is checked against its header before NetCDF-C opens it: NetCDF-C reads a cut file as if it

@@ -78,7 +78,8 @@ public:
 private:
     std::string path_;
     int id_{-1};
-    std::shared_ptr<RemoteDataset> remote_;  ///< a URL's dataset (null for a file)
+    std::shared_ptr<RemoteDataset> remote_;           ///< a URL's dataset (null for a file)
+    std::shared_ptr<const std::string> memory_;      ///< an in-memory dataset's bytes (MemoryDataset.h)
 };
 
 // ---- classic-format files (ClassicSize.cpp) ----

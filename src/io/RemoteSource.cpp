@@ -4,12 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <mutex>
 
 #include "NumberText.h"
 #include "RemoteRecord.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/MemoryDataset.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "RemoteDataset.h"
 #endif
@@ -95,6 +98,52 @@ bool isRemoteSource(const std::string &source)
     }
     return s.rfind("http://", 0) == 0 || s.rfind("https://", 0) == 0;
 }
+
+namespace
+{
+std::mutex &memoryMutex()
+{
+    static std::mutex m;
+    return m;
+}
+
+std::map<std::string, std::shared_ptr<const std::string>> &memoryDatasets()
+{
+    static std::map<std::string, std::shared_ptr<const std::string>> d;
+    return d;
+}
+}  // namespace
+
+std::string registerMemoryDataset(std::string bytes)
+{
+    static std::size_t count = 0;
+    std::lock_guard<std::mutex> lock(memoryMutex());
+    const std::string name = "memory:" + std::to_string(++count);
+    memoryDatasets()[name] = std::make_shared<const std::string>(std::move(bytes));
+    return name;
+}
+
+void releaseMemoryDataset(const std::string &name)
+{
+    std::lock_guard<std::mutex> lock(memoryMutex());
+    memoryDatasets().erase(name);
+}
+
+bool isMemoryDataset(const std::string &source)
+{
+    return source.rfind("memory:", 0) == 0 && source.size() > 7 &&
+           source.find_first_not_of("0123456789", 7) == std::string::npos;
+}
+
+namespace remote_detail
+{
+std::shared_ptr<const std::string> memoryDataset(const std::string &name)
+{
+    std::lock_guard<std::mutex> lock(memoryMutex());
+    const auto it = memoryDatasets().find(name);
+    return it == memoryDatasets().end() ? nullptr : it->second;
+}
+}  // namespace remote_detail
 
 std::vector<RemoteFetch> remoteFetches()
 {

@@ -11,6 +11,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/GeoBox.h"
+#include "ompl_glider/io/MemoryDataset.h"
 #include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
@@ -93,7 +94,7 @@ std::vector<std::string> forecastFiles(const ForecastInput &q)
     const std::vector<std::string> files = q.current.forecastFiles();
     std::error_code ec;
     for (const std::string &p : files)
-        if (!isRemoteSource(p) && !fs::is_regular_file(p, ec))
+        if (!isRemoteSource(p) && !isMemoryDataset(p) && !fs::is_regular_file(p, ec))
             throw Error("--currents: cannot open '" + p + "' (no such file)");
     return files;
 }

@@ -547,11 +547,12 @@ TEST(MissionRun, ExampleMissionsRunEndToEnd)
         const MissionResult r = runMission(problem);
         EXPECT_TRUE(r.plan.solved) << name << ": " << r.plan.status << ": " << r.plan.reason;
         const std::vector<std::string> files = writeOutputs(r, problem);
-        // summary.json, waypoints.csv, path.geojson, route.kml, goto list, map.svg + map.png
-        EXPECT_EQ(files.size(), 7u) << name;
+        // summary.json, waypoints.csv, path.geojson, route.kml, goto list, map.svg + map.png + map.html
+        EXPECT_EQ(files.size(), 8u) << name;
         for (const auto &f : files)
             EXPECT_TRUE(std::ifstream(f).good()) << f;
-        for (const char *f : {"summary.json", "waypoints.csv", "path.geojson", "route.kml", "map.svg", "map.png"})
+        for (const char *f : {"summary.json", "waypoints.csv", "path.geojson", "route.kml", "map.svg", "map.png",
+                              "map.html"})
             EXPECT_TRUE(fs::is_regular_file(spec.outputs.directory + "/" + f)) << name << ": " << f;
         // The goto list is the path's turns after the start (gotoWaypointIndices()), in the order flown.
         const GotoList g = readGotoFile(spec.outputs.directory + "/" + gotoFileName(spec.outputs.gotoNumber));

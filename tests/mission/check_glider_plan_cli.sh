@@ -49,7 +49,7 @@ assert abs(rows[0.5]["travel_time"] - s["travel_time"]) <= 1e-9 * s["travel_time
 # fixed file names, all listed in the summary
 names = sorted(os.listdir(d))
 assert names == sorted(["summary.json", "waypoints.csv", "path.geojson", "route.kml", "goto_l11.ma", "map.svg",
-                        "map.png"]), names
+                        "map.png", "map.html"]), names
 assert sorted(s["files"]) == names and s["files"][0] == "summary.json", s["files"]
 head = open(os.path.join(d, "waypoints.csv")).readline().strip()
 assert head.startswith("index,x,y,lon,lat,time"), head
@@ -129,8 +129,8 @@ assert all(b[0] > a[0] for a, b in zip(rows, rows[1:]))
 dist = ((rows[-1][1] - rows[0][1]) ** 2 + (rows[-1][2] - rows[0][2]) ** 2) ** 0.5
 assert dist / (0.3 + 0.6) < s["travel_time"] < 5 * 86400
 names = sorted(os.listdir(d))
-assert names == sorted(["summary.json", "path.csv", "map.png", "map.svg", "waypoints.csv", "path.geojson",
-                        "route.kml", "goto_l10.ma"]), names
+assert names == sorted(["summary.json", "path.csv", "map.png", "map.svg", "map.html", "waypoints.csv",
+                        "path.geojson", "route.kml", "goto_l10.ma"]), names
 assert sorted(s["files"]) == names, s["files"]
 assert open(os.path.join(d, "map.png"), "rb").read()[:8] == b"\x89PNG\r\n\x1a\n"
 print("--currents OK")

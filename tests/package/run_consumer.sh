@@ -25,6 +25,16 @@ for internal in $(cd "$root/src" && find . -name '*.h' | sed 's|^\./||'); do
     echo "internal header src/$internal was installed"; exit 1
   fi
 done
+# Headers per component: a build without NetCDF and maps installs none of their headers (their functions are not in
+# the library); the full build installs them.
+for h in current/NetCdfCurrents.h io/NetCdfBathymetry.h io/DepthGrid.h mission/ForecastMission.h \
+         output/MapRenderer.h output/MissionMap.h output/MapHtml.h; do
+  if [ -n "$project_src" ] && [ -e "$work/prefix/include/ompl_glider/$h" ]; then
+    echo "the build without NetCDF and maps installed $h"; exit 1
+  elif [ -z "$project_src" ] && [ ! -e "$work/prefix/include/ompl_glider/$h" ]; then
+    echo "the full build did not install $h"; exit 1
+  fi
+done
 # The installed glider_plan runs from its prefix, and from the prefix moved elsewhere, with no library path set:
 # its RPATH ($ORIGIN/../lib) finds libompl_glider.
 if [ -x "$work/prefix/bin/glider_plan" ]; then

@@ -2,6 +2,7 @@
 import json
 import math
 import os
+import tempfile
 import threading
 
 import numpy as np
@@ -94,6 +95,40 @@ def test_arrays_field_is_read_as_a_forecast():
     r2 = ompl_glider.plan(field=field2, start=(-59.8, 40.3), goal=(-59.2, 40.3), speed=0.4)
     assert r2.travel_time == pytest.approx(r.travel_time, rel=1e-9)
     assert r2.waypoints["time_iso"][0].startswith("2026-03-15")
+
+
+def test_arrays_field_is_held_in_memory_and_plans_as_the_same_file(tmp_path):
+    """from_arrays writes no file (a NetCDF dataset in memory, io/MemoryDataset.h); the same arrays written as a
+    file with netCDF4 give the same travel time."""
+    import netCDF4  # Debian's python3-netcdf4 (scripts/setup.sh)
+    lon = np.linspace(-60.0, -59.0, 21)
+    lat = np.linspace(40.0, 40.6, 13)
+    X, Y = np.meshgrid(lon, lat)
+    u = 0.25 * np.sin(3.0 * (Y - 40.0)) + 0.05
+    v = 0.1 * np.cos(2.0 * (X + 60.0))
+    u[5:7, 9:11] = np.nan  # a small island
+    v[5:7, 9:11] = np.nan
+    before = set(os.listdir(tempfile.gettempdir()))
+    field = ompl_glider.Field.from_arrays(u, v, lon=lon, lat=lat)
+    r = ompl_glider.plan(field=field, start=(-59.8, 40.3), goal=(-59.2, 40.35), speed=0.4)
+    assert r.solved and r.summary["forecast_files"][0].startswith("memory:")
+    assert not [n for n in set(os.listdir(tempfile.gettempdir())) - before if n.startswith("ompl_glider_")]
+    path = tmp_path / "same.nc"
+    with netCDF4.Dataset(path, "w") as d:
+        d.createDimension("lat", lat.size)
+        d.createDimension("lon", lon.size)
+        for name, values, units in (("lat", lat, "degrees_north"), ("lon", lon, "degrees_east")):
+            var = d.createVariable(name, "f8", (name,))
+            var.units = units
+            var[:] = values
+        for name, values, std in (("u", u, "eastward_sea_water_velocity"), ("v", v, "northward_sea_water_velocity")):
+            var = d.createVariable(name, "f8", ("lat", "lon"), fill_value=1e20)
+            var.units = "m s-1"
+            var.standard_name = std
+            var[:] = np.ma.masked_invalid(values)
+    f = ompl_glider.plan(field=ompl_glider.Field.netcdf(str(path)), start=(-59.8, 40.3), goal=(-59.2, 40.35),
+                         speed=0.4)
+    assert f.solved and abs(f.travel_time - r.travel_time) <= 1e-12 * r.travel_time
 
 
 def test_arrays_field_rejects_mismatched_axes():

@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "ForecastFiles.h"
+#include "ompl_glider/io/MemoryDataset.h"
 #include "ompl_glider/io/RemoteSource.h"
 
 namespace ompl_glider
@@ -228,8 +229,8 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
         if (item.empty())
             throw Error("forecast files: an empty name in the list (expected file names or glob patterns, "
                         "separated by commas)");
-        if (isRemoteSource(item))
-        {  // an OPeNDAP URL: one dataset, read as a file is (io/RemoteSource.h)
+        if (isRemoteSource(item) || isMemoryDataset(item))
+        {  // an OPeNDAP URL, a dataset in memory: one dataset each, read as a file is (io/RemoteSource.h)
             out.push_back(item);
             continue;
         }
