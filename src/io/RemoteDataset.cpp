@@ -1,8 +1,11 @@
-// Remote (OPeNDAP) datasets for NcFile: the process's record of what came from where, NetCDF-C's HTTP time limits,
-// requests retried a bounded number of times, and the cache file (see RemoteDataset.h, io/RemoteSource.h).
+// Remote (OPeNDAP) datasets for NcFile: NetCDF-C's HTTP time limits, requests retried a bounded number of times,
+// the values fetched kept in memory and in the cache file, what was read noted in the process's record
+// (RemoteRecord.h; see RemoteDataset.h, io/RemoteSource.h).
 #include "RemoteDataset.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,7 +18,6 @@
 
 #include <unistd.h>
 
-#include "NumberText.h"
 #include "RemoteRecord.h"
 #include "ompl_glider/Exception.h"
 
@@ -136,6 +138,16 @@ std::string readText(const std::filesystem::path &p)
 
 namespace netcdf_detail
 {
+namespace
+{
+/// The request time limit NetCDF-C was given (seconds; 0: the user's own NCRCENV_RC file, or not set yet).
+std::atomic<long> &limitInForce()
+{
+    static std::atomic<long> seconds{0};
+    return seconds;
+}
+}  // namespace
+
 void prepareNetcdfAccess(const RemoteAccess &access)
 {
     static std::once_flag once;
@@ -160,6 +172,7 @@ void prepareNetcdfAccess(const RemoteAccess &access)
         if (fs::is_regular_file(rc, ec))
         {
             ::setenv("NCRCENV_RC", rc.c_str(), 0);
+            limitInForce() = seconds;
             static const std::string removeAtExit = dir.string();
             std::atexit([] {
                 std::error_code e;
@@ -234,8 +247,10 @@ int RemoteDataset::attempt(const std::string &what, const std::function<int()> &
         {
             std::string why = nc_strerror(st);
             if (st == NC_EIO || st == NC_ECURL)
-                why += " (no answer within the request time limit of " + text::number(access_.requestTimeout) +
-                       " s, or the server cannot be reached)";
+                why += limitInForce() > 0 ? " (no answer within the request time limit of " +
+                                                std::to_string(limitInForce().load()) +
+                                                " s, or the server cannot be reached)"
+                                          : " (no answer in time, or the server cannot be reached)";
             if (transient(st))
                 why += "; " + std::to_string(k + 1) + (k == 0 ? " attempt" : " attempts");
             throw Error(who() + ": " + what + ": " + why);
@@ -271,6 +286,8 @@ void RemoteDataset::read(int var, const std::vector<std::size_t> &start, const s
     std::size_t n = 1;
     for (const std::size_t c : count)
         n *= c;
+    if (n == 0)
+        return;
     for (const Block &b : blocks_)
         if (b.var == var && inside(start, count, b.start, b.count))
         {

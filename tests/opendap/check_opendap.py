@@ -13,7 +13,8 @@ island of fill values) is written with NetCDF-C (python3-netcdf4) and served. Ch
   4. a stopped server: exit 2 naming the URL, within the request time limit;
   5. a server that does not answer in time: exit 2 naming the URL and the time limit, bounded by the retries;
   6. a server that answers an error (HTTP 500): exit 2 naming the URL;
-  7. a mission file whose current.file is the URL plans like --currents URL.
+  7. a mission file whose current.file is the URL plans like --currents URL;
+  8. two daily files served as two URLs plan as the two files do (one forecast).
 """
 import json
 import math
@@ -101,6 +102,23 @@ def write_forecast(path):
                     data[k, m] = packed
             v[:] = data
     return nt * nz * ny * nx
+
+
+def split_forecast(path, first, second, at):
+    """The records of @p path before @p at into @p first, the rest into @p second (daily files of one forecast)."""
+    with netCDF4.Dataset(path) as src:
+        for out, sl in ((first, slice(0, at)), (second, slice(at, None))):
+            with netCDF4.Dataset(out, "w", format="NETCDF4_CLASSIC") as d:
+                for name, dim in src.dimensions.items():
+                    d.createDimension(name, None if dim.isunlimited() else len(dim))
+                d.setncatts({k: src.getncattr(k) for k in src.ncattrs()})
+                for name, var in src.variables.items():
+                    fill = var.getncattr("_FillValue") if "_FillValue" in var.ncattrs() else None
+                    v = d.createVariable(name, var.dtype, var.dimensions, fill_value=fill)
+                    v.setncatts({k: var.getncattr(k) for k in var.ncattrs() if k != "_FillValue"})
+                    var.set_auto_maskandscale(False)
+                    v.set_auto_maskandscale(False)
+                    v[:] = var[sl] if "time" in var.dimensions else var[:]
 
 
 def start_server(root, log, *extra):
@@ -232,6 +250,21 @@ def main():
         if p_m.returncode == 0:
             src = summary(os.path.join(work, "o_mission")).get("forecast_sources", [])
             check(len(src) == 1 and src[0]["source"] == url and src[0]["network"], "the mission's source is the URL")
+
+        # 8. several URLs form one forecast as several files do
+        split_forecast(nc, os.path.join(root, "day1.nc"), os.path.join(root, "day2.nc"), 6)
+        files = ",".join(os.path.join(root, n) for n in ("day1.nc", "day2.nc"))
+        urls = ",".join("http://127.0.0.1:%d/%s" % (port, n) for n in ("day1.nc", "day2.nc"))
+        p_files, _ = plan(glider, ["--currents", files, "--out", os.path.join(work, "o_files")] + trip)
+        p_urls, _ = plan(glider, ["--currents", urls, "--out", os.path.join(work, "o_urls")] + trip)
+        check(p_files.returncode == 0 and p_urls.returncode == 0,
+              "two daily files and their two URLs plan (exit %d, %d: %s)" %
+              (p_files.returncode, p_urls.returncode, p_urls.stderr[-300:]))
+        if p_files.returncode == 0 and p_urls.returncode == 0:
+            tf = summary(os.path.join(work, "o_files"))["travel_time"]
+            tu = summary(os.path.join(work, "o_urls"))
+            check(tf == tu["travel_time"], "two URLs give the two files' travel time (%r, %r)" % (tf, tu["travel_time"]))
+            check(len(tu["forecast_sources"]) == 2, "the report names both URLs")
 
         # 4. a stopped server
         stop(server)
