@@ -149,6 +149,8 @@ json routeJson(const MissionResult &r, const MissionProblem &p, const Frame &f)
     route["name"] = m.name.empty() ? plan.planner : m.name;
     route["planner"] = plan.planner;
     route["travel_time"] = plan.solved ? elapsedText(m, plan.travelTime) : "no path";
+    route["start"] = f.at(p.getStart());
+    route["goal"] = f.at(p.getGoal());
     route["points"] = plan.solved ? f.line(plan.headingRoute() ? plan.track : plan.path) : json::array();
     json wps = json::array();
     const CurrentField &field = *p.getField();

@@ -4,7 +4,7 @@
   1. the built-in mission with isochrones (planning frame, no dates);
   2. the Caribbean forecast around Jamaica with a coastline, a keep-off band and isochrones (lon/lat, dates);
   3. an execution run on the built-in mission flown in another jet (two strategies: two flown tracks);
-  4. a fleet: the fleet's map.html holds every glider's route.
+  4. a fleet: the fleet's map.html holds every glider's route, and the other gliders' own starts and goals.
 
 For each: no console error, the route layer has the route's vertex count (path.csv, or the flown track of a heading
 route), the popups hold the waypoints' arrival dates (waypoints.csv), the isochrones and land are drawn, the time
@@ -77,7 +77,8 @@ def main():
                            timeout=600)
         gliders = rows(os.path.join(out, "fleet.csv")) if p.returncode == 0 else []
         c = subprocess.run([sys.executable, os.path.join(HERE, "check_map_html.py"), os.path.join(out, "map.html"),
-                            "--expect-routes", str(len(gliders)), "--screenshot", os.path.join(work, "fleet.png")],
+                            "--expect-routes", str(len(gliders)), "--expect-fleet-ends-min", "2",
+                            "--screenshot", os.path.join(work, "fleet.png")],
                            capture_output=True, text=True, timeout=180)
         print(c.stdout.strip() or c.stderr.strip())
         if p.returncode != 0 or len(gliders) < 2 or c.returncode != 0:

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """check_map_html.py MAP.html [--expect-routes N] [--expect-route-vertices N,N..]
     [--expect-popup-text TEXT]... [--expect-isochrones N] [--expect-land-min N]
-    [--expect-current-frames N] [--expect-tracks N] [--screenshot OUT.png] [--timeout S]
+    [--expect-current-frames N] [--expect-tracks N] [--expect-fleet-ends-min N] [--screenshot OUT.png] [--timeout S]
 
 Opens MAP.html in Debian's headless Chromium, offline (DevTools network
 emulation), over the Chrome DevTools Protocol (python3-websocket). Fails on any
@@ -229,7 +229,8 @@ def run(a):
                 fails.append('no waypoint popup contains %r (%d popups)' % (t, len(popups)))
         for key, want, cmp in (('isochroneCount', a.expect_isochrones, 'eq'), ('landCount', a.expect_land_min, 'min'),
                                ('currentFrames', a.expect_current_frames, 'eq'),
-                               ('trackCount', a.expect_tracks, 'eq')):
+                               ('trackCount', a.expect_tracks, 'eq'),
+                               ('fleetEnds', a.expect_fleet_ends_min, 'min')):
             got = state.get(key)
             if want is not None and (got is None or (got != want if cmp == 'eq' else got < want)):
                 fails.append('%s: expected %s%d, page has %s' % (key, '>= ' if cmp == 'min' else '', want, got))
@@ -275,6 +276,7 @@ def main():
     ap.add_argument('--expect-popup-text', action='append', metavar='TEXT')
     ap.add_argument('--expect-isochrones', type=int)
     ap.add_argument('--expect-tracks', type=int, help='flown tracks drawn (an execution run)')
+    ap.add_argument('--expect-fleet-ends-min', type=int, help="other gliders' own start and goal markers (a fleet)")
     ap.add_argument('--expect-land-min', type=int)
     ap.add_argument('--expect-current-frames', type=int)
     ap.add_argument('--screenshot')
