@@ -14,7 +14,8 @@ island of fill values) is written with NetCDF-C (python3-netcdf4) and served. Ch
   5. a server that does not answer in time: exit 2 naming the URL and the time limit, bounded by the retries;
   6. a server that answers an error (HTTP 500): exit 2 naming the URL;
   7. a mission file whose current.file is the URL plans like --currents URL;
-  8. two daily files served as two URLs plan as the two files do (one forecast).
+  8. two daily files served as two URLs plan as the two files do (one forecast);
+  9. a real model file (NCL's POP sample: curvilinear, global, cm/s, tracer land) from its URL plans as the file.
 """
 import json
 import math
@@ -265,6 +266,27 @@ def main():
             tu = summary(os.path.join(work, "o_urls"))
             check(tf == tu["travel_time"], "two URLs give the two files' travel time (%r, %r)" % (tf, tu["travel_time"]))
             check(len(tu["forecast_sources"]) == 2, "the report names both URLs")
+
+        # 9. a real model file served: NCL's POP sample (Debian's libncarg-data; curvilinear B grid, global, velocities
+        # in cm/s, land from a tracer): the route past Jamaica from the URL is the file's
+        pop = "/usr/share/ncarg/data/cdf/pop.nc"
+        shutil.copy(pop, os.path.join(root, "pop.nc"))
+        pop_trip = ["--u-var", "urot", "--v-var", "vrot", "--start=-79.5,18.6", "--goal=-74.5,17.6", "--speed", "0.5"]
+        p_pf, _ = plan(glider, ["--currents", pop, "--out", os.path.join(work, "o_pop_file")] + pop_trip)
+        pop_url = "http://127.0.0.1:%d/pop.nc" % port
+        p_pu, _ = plan(glider, ["--currents", pop_url, "--out", os.path.join(work, "o_pop_url")] + pop_trip)
+        check(p_pf.returncode == 0 and p_pu.returncode == 0, "POP: the file and its URL plan (exit %d, %d: %s)" %
+              (p_pf.returncode, p_pu.returncode, p_pu.stderr[-300:]))
+        if p_pf.returncode == 0 and p_pu.returncode == 0:
+            sf, su = summary(os.path.join(work, "o_pop_file")), summary(os.path.join(work, "o_pop_url"))
+            check(sf["travel_time"] == su["travel_time"], "POP: the URL's travel time is the file's (%r, %r)" %
+                  (sf["travel_time"], su["travel_time"]))
+            with netCDF4.Dataset(pop) as d:
+                whole = sum(d.variables[n].size * 4 + 8 for n in ("urot", "vrot"))  # XDR Float32 + length words
+            sent = sum(e.get("data_bytes", 0) for e in log_lines(log) if e["path"] == "/pop.nc.dods"
+                       and set(e.get("variables", {})) & {"urot", "vrot"})
+            check(0 < sent < whole / 5, "POP: velocity bytes the server sent %d < a fifth of the whole variables' %d "
+                  "(a regional trip on a global grid)" % (sent, whole))
 
         # 4. a stopped server
         stop(server)
