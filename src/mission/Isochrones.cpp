@@ -38,7 +38,7 @@ std::optional<ReachableSet> reachableSetOf(const MissionProblem &problem, const 
     }
     throw Error("isochrones: no registered planner computes the reachable set");
 }
-} // namespace
+}  // namespace
 
 IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath &plan, double departure,
                                double interval)
@@ -88,7 +88,7 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
         Isochrone c;
         c.time = absolute[k];
         c.lines = r->lines[k];
-        c.iso = problem.isoTime(c.time); // empty without dates
+        c.iso = problem.isoTime(c.time);  // empty without dates
         if (problem.isGeographic())
         {
             for (const auto &line : c.lines)
@@ -104,4 +104,4 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
     }
     return out;
 }
-} // namespace ompl_glider
+}  // namespace ompl_glider
