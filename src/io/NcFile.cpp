@@ -43,7 +43,8 @@ NcFile::NcFile(const std::string &path) : path_(path)
         if (!memory_)
             throw Error("NetCDF dataset '" + path + "': no such dataset in memory (released)");
         // NetCDF-C reads the bytes in place (NC_INMEMORY without NC_WRITE): they stay alive while the file is open
-        const int st = nc_open_mem(path.c_str(), NC_NOWRITE, memory_->size(), const_cast<char *>(memory_->data()), &id_);
+        char *bytes = const_cast<char *>(memory_->data());
+        const int st = nc_open_mem(path.c_str(), NC_NOWRITE, memory_->size(), bytes, &id_);
         if (st != NC_NOERR)
             throw Error("NetCDF dataset '" + path + "': cannot open: " + nc_strerror(st));
         return;

@@ -296,7 +296,10 @@ void RemoteDataset::read(int var, const std::vector<std::size_t> &start, const s
             else if (nc_get_vara_double(cacheId_, var, start.data(), count.data(), out) != NC_NOERR)
                 continue;  // a cache file that does not hold what it says: fetched anew below
             else
-                remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.bytesFromCache += valueBytes(var, n); });
+            {
+                const std::uint64_t bytes = valueBytes(var, n);
+                remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.bytesFromCache += bytes; });
+            }
             return;
         }
     Block b{var, start, count, std::vector<double>(n)};
