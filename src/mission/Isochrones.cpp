@@ -18,11 +18,10 @@ namespace
 {
 /// The reachable set from the registry's first planner that computes one (PipelinePlanner::reachableSet(): the
 /// level set's family).
-std::optional<ReachableSet> reachableSetOf(const MissionProblem &problem, const GliderProblem &gp, double departure,
+std::optional<ReachableSet> reachableSetOf(const MissionProblem &problem, const GliderSimpleSetup &ss,
+                                           const std::shared_ptr<GliderContext> &ctx, double departure,
                                            const std::vector<double> &times, double cellScale)
 {
-    std::shared_ptr<GliderContext> ctx;
-    const std::shared_ptr<GliderSimpleSetup> ss = makeSimpleSetup(gp, &ctx);
     PipelineSetup setup;
     setup.departure = departure;
     setup.start = problem.getStart();
@@ -32,7 +31,7 @@ std::optional<ReachableSet> reachableSetOf(const MissionProblem &problem, const 
     {
         if (entry.family != PlannerFamily::LevelSet)
             continue;
-        const ompl::base::PlannerPtr planner = entry.make(ss->getSpaceInformation(), ctx);
+        const ompl::base::PlannerPtr planner = entry.make(ss.getSpaceInformation(), ctx);
         if (std::optional<ReachableSet> r = pipelineView(*planner).reachableSet(setup, times, cellScale))
             return r;
     }
@@ -46,7 +45,8 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
     const MissionSpec &m = problem.getSpec();
     const double speed = plan.speed > 0.0 ? plan.speed : m.vehicle.speed;
     const GliderProblem gp = problem.gliderProblem(departure, speed);
-    const auto ctx = makeGliderContext(gp);
+    std::shared_ptr<GliderContext> ctx;  // one context: the horizon's and the planner's
+    const std::shared_ptr<GliderSimpleSetup> ss = makeSimpleSetup(gp, &ctx);
     const double horizon = std::min(gp.horizon, ctx->field->timeEnd() - departure);
     const double span = plan.solved && std::isfinite(plan.travelTime) ? std::min(plan.travelTime, horizon) : horizon;
     std::vector<double> times;
@@ -73,7 +73,7 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
     std::vector<double> absolute;
     for (double dt : times)
         absolute.push_back(departure + dt);
-    const std::optional<ReachableSet> r = reachableSetOf(problem, gp, departure, absolute, 2.0);
+    const std::optional<ReachableSet> r = reachableSetOf(problem, *ss, ctx, departure, absolute, 2.0);
     IsochroneSet out;
     out.resolution = r->resolution;
     out.seconds = r->seconds;
