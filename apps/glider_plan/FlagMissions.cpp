@@ -188,6 +188,22 @@ MissionOverrides overridesOf(const Flags &f)
                              "mission's time unit, or ISO 8601 dates with --currents), got '" + f.arriveBetween + "'"};
         o.arrivalWindow = Given<std::pair<std::string, std::string>>{{items[0], items[1]}, "--arrive-between"};
     }
+    if (!f.via.empty())
+    {
+        std::vector<ViaPointSpec> via;
+        std::size_t from = 0;
+        while (from <= f.via.size())
+        {
+            const std::size_t end = std::min(f.via.find(';', from), f.via.size());
+            ViaPointSpec v;
+            v.position.xy = pair("--via", f.via.substr(from, end - from));  // lon,lat where the mission gives lon/lat
+            via.push_back(v);
+            from = end + 1;
+        }
+        o.via = Given<std::vector<ViaPointSpec>>{via, "--via"};
+    }
+    if (!f.order.empty())
+        o.order = Given<std::string>{f.order, "--order"};
     if (!f.coastline.empty())
         o.coastline = Given<std::string>{f.coastline, "--coastline"};
     if (f.isochrones)

@@ -113,6 +113,15 @@ void defineRouteFlags(CLI::App &app, Flags &f)
                    "departure: a time (built-in, default 0); with --currents an ISO 8601 date "
                    "(2026-03-15T06:00:00Z) or seconds after the first forecast time (default: the first)")
         ->group(built);
+    app.add_option("--via", f.via,
+                   "via points between start and goal, 'x,y;x,y' (lon,lat with --currents or a geographic mission): "
+                   "a mission of several legs, planned in turn on one clock (names WP1, WP2, ...; radii, windows and "
+                   "stays in a mission file's waypoints list)")
+        ->group(built);
+    app.add_option("--order", f.order,
+                   "given (default): visit the via points as listed; free: the fastest order of up to 8 via points "
+                   "(branch and bound over the orders with the planned leg times)")
+        ->group(built);
     app.add_option("--arrive-between", f.arriveBetween,
                    "arrive at the goal within begin,end (built-in: times; --currents: ISO 8601 dates or seconds after "
                    "the first forecast time): arrive early and hold at the goal where the current allows, else time "

@@ -78,7 +78,10 @@ void MissionProblem::snapEndpoints()
         const LonLat g = toGeographic(p);
         return "lon,lat " + text::number(g.lon, 8) + "," + text::number(g.lat, 8);
     };
-    for (const auto &[name, p] : {std::pair<const char *, Point2 *>{"start", &start_}, {"goal", &goal_}})
+    std::vector<std::pair<std::string, Point2 *>> points{{"start", &start_}, {"goal", &goal_}};
+    for (std::size_t i = 0; i < via_.size(); ++i)
+        points.emplace_back("waypoints[" + std::to_string(i) + "]", &via_[i]);
+    for (const auto &[name, p] : points)
     {
         if (!grid->covers(p->x, p->y) || field.inWater(p->x, p->y, z))
             continue;  // (outside the grid: the planning box's check names it)
@@ -92,9 +95,30 @@ void MissionProblem::snapEndpoints()
             throw Error(m.place(name) + ": " + text(*p) + " is on land in the forecast at depth " + text::number(z) +
                         " m; the nearest water is " + text(*w) + ", " + away +
                         " away: give that, or --snap-to-water (safety.snap_to_water: true) to use it");
-        endpointNotes_.push_back(std::string(name) + " " + text(*p) + " is on land: moved to the nearest water " +
+        endpointNotes_.push_back(name + " " + text(*p) + " is on land: moved to the nearest water " +
                                  text(*w) + " (" + away + " away; safety.snap_to_water)");
         *p = *w;
+    }
+}
+
+void MissionProblem::checkViaPoints() const
+{
+    const MissionSpec &m = spec_;
+    const double span = field_->timeEnd() - field_->timeBegin();
+    for (std::size_t i = 0; i < via_.size(); ++i)
+    {
+        const ViaPointSpec &v = m.waypoints[i];
+        const std::string field = "waypoints[" + std::to_string(i) + "]";
+        const std::string named = " (via point '" + v.name + "')";
+        // land's keep-off band, shallow water, an island or a restricted area: the leg could never end there
+        if (environment_ && environment_->isStatic())
+            if (const std::string why = environment_->whyBlocked(via_[i].x, via_[i].y, m.departure.time); !why.empty())
+                throw Error(m.place(field) + named + ": the point is " + why);
+        if (std::isfinite(span) && v.stay > span)
+            throw Error(m.place(field + ".stay") + named + ": a stay of " + planning_detail::durationText(*this, v.stay) +
+                        " is longer than the whole forecast");
+        if (!(std::isnan(v.radius) || v.radius > 0.0))
+            throw Error(m.place(field + ".radius") + named + ": the radius must be > 0");
     }
 }
 

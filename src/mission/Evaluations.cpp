@@ -2,6 +2,7 @@
 /// @brief The evaluations of a plan made by runMission(): the speed sweep, the waypoints for the pilot (with dive
 /// profiles) and the optimal-control reference.
 
+#include "ompl_glider/mission/MissionLegs.h"
 #include <cmath>
 #include <cstdio>
 #include <mutex>
@@ -30,7 +31,7 @@ std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep
     const auto row = [&](std::size_t i) {
         PlanOptions o;
         o.speed = speeds[i];
-        const PlannedPath p = planRoute(problem, tDep, o);
+        const PlannedPath p = planMission(problem, tDep, o).plan;
         return SpeedSweepRow{speeds[i], p.solved, p.travelTime, p.pathLength, p.straightLineTime, p.straightLineLength};
     };
     if (TaskSpreader *spread = activeTaskSpreader())

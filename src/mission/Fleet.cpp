@@ -94,6 +94,19 @@ MissionSpec gliderMission(const MissionSpec &base, const MissionSpec &mission, s
         m.departure.time = *g.departure;
         m.departure.window = false;
     }
+    if (!g.waypoints.empty())
+    {
+        // its own via points (a glider without any flies the mission's, if the mission lists some)
+        m.waypoints = g.waypoints;
+        m.order = VisitOrder::Given;
+        for (auto it = m.marks.lower_bound("waypoints"); it != m.marks.end() && it->first.rfind("waypoints", 0) == 0;)
+            it = m.marks.erase(it);
+        const std::string own = "fleet[" + std::to_string(i) + "].waypoints";
+        for (auto it = mission.marks.lower_bound(own); it != mission.marks.end() && it->first.rfind(own, 0) == 0; ++it)
+            m.marks[it->first.substr(own.size() - std::string("waypoints").size())] = it->second;
+    }
+    if (g.order)
+        m.order = *g.order;
     m.outputs.directory = (std::filesystem::path(mission.outputs.directory) / g.name).string();
     // the glider's values were given in its fleet entry: messages name those lines
     const std::string entry = "fleet[" + std::to_string(i) + "].";

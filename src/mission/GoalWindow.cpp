@@ -10,6 +10,7 @@
 
 #include <ompl/geometric/PathGeometric.h>
 
+#include "../io/NumberText.h"
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
@@ -253,6 +254,12 @@ std::string timeText(const MissionProblem &problem, double t)
     std::snprintf(text, sizeof text, "t = %.6g", t);
     const std::string iso = problem.isoTime(t);
     return iso.empty() ? std::string(text) : std::string(text) + " (" + iso + ")";
+}
+
+std::string durationText(const MissionProblem &problem, double d)
+{
+    const MissionSpec &m = problem.getSpec();
+    return m.physicalUnits().time ? text::durationText(d * m.timeUnitSeconds) : text::number(d);
 }
 
 /// Goals in time ([ThompsonICRA] Sec. III, the earliest valid arrival): moves the arrival of a solved plan

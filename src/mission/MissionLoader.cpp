@@ -137,7 +137,7 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     r.checkMap(root, "",
                {"name", "units", "epoch", "projection", "current", "region", "start", "goal", "departure", "vehicle",
                 "travel_time", "dive_profile", "forbidden", "safety", "planner", "stints", "outputs", "speeds", "execution",
-                "fleet"});
+                "fleet", "waypoints", "order"});
     readHeader(r, root, m);
     if (!root["current"])
         r.fail(root, "current", "missing: the current source (type: meandering_jet | uniform | ... | netcdf)");
@@ -175,6 +175,10 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     }
     if (root["goal"] && root["goal"]["window"])
         readGoalWindow(r, root["goal"]["window"], m);
+    if (root["waypoints"])
+        readViaPoints(r, root["waypoints"], "waypoints", m.waypoints, m);
+    if (root["order"])
+        m.order = readVisitOrder(r, root["order"], "order", m.waypoints.size());
     readVehicleAndTravel(r, root, m);
     if (root["dive_profile"])
         readDive(r, root["dive_profile"], m);

@@ -122,18 +122,31 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     }
     else if (m.region.set)
         ;  // an x/y region is in the planning frame, not the file's coordinates: the whole file is loaded
-    else if (m.start.geographic && m.goal.geographic)
+    else if (m.start.geographic && m.goal.geographic &&
+             std::all_of(m.waypoints.begin(), m.waypoints.end(),
+                         [](const ViaPointSpec &v) { return v.position.geographic; }))
     {
-        // The trip's region in geographic terms (never from projected corners): the lon/lat box of start and goal
-        // across the shorter way round, widened by a geodesic margin.
+        // The trip's region in geographic terms (never from projected corners): the lon/lat box of start, via points
+        // and goal across the shorter way round, widened by a geodesic margin (half the longest distance between two
+        // of them, at least kMinTripMarginKm).
         const LonLat a = m.start.lonLat, b = m.goal.lonLat;
-        for (const auto &[field, p] : {std::pair<const char *, LonLat>{"start", a}, {"goal", b}})
+        std::vector<std::pair<std::string, LonLat>> points{{"start", a}, {"goal", b}};
+        for (std::size_t i = 0; i < m.waypoints.size(); ++i)
+            points.emplace_back("waypoints[" + std::to_string(i) + "]", m.waypoints[i].position.lonLat);
+        std::vector<LonLat> corners;
+        double margin = kMinTripMarginKm;
+        for (const auto &[field, p] : points)
+        {
             if (std::abs(p.lat) > kMaxGridLatitude && std::abs(p.lat) <= 90.0)
                 throw Error(m.place(field) + ": latitude " + text::number(p.lat) + " is within " +
                             text::number(90.0 - kMaxGridLatitude) +
                             " degrees of a pole, where a longitude/latitude grid degenerates (|lat| <= " +
                             text::number(kMaxGridLatitude) + " can be planned)");
-        const GeoBox box = tripBox({a, b}, tripMarginKm(a, b));
+            for (const LonLat &q : corners)
+                margin = std::max(margin, tripMarginKm(p, q));
+            corners.push_back(p);
+        }
+        const GeoBox box = tripBox(corners, margin);
         o.lonMin = box.lonMin;
         o.lonMax = box.lonMax;
         o.latMin = box.latMin;
@@ -141,14 +154,24 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     }
     else if (!m.start.geographic && !m.goal.geographic)
     {
-        // A Cartesian file: the start-goal box plus half its larger side (at least 0.2 units) on each side.
-        const Point2 a = m.start.xy, b = m.goal.xy;
-        const double spanA = std::abs(b.x - a.x), spanB = std::abs(b.y - a.y);
-        const double pad = std::max(0.5 * std::max(spanA, spanB), 0.2);
-        o.lonMin = std::min(a.x, b.x) - pad;
-        o.lonMax = std::max(a.x, b.x) + pad;
-        o.latMin = std::min(a.y, b.y) - pad;
-        o.latMax = std::max(a.y, b.y) + pad;
+        // A Cartesian file: the box of start, via points and goal plus half its larger side (at least 0.2 units)
+        // on each side.
+        Box b{m.start.xy.x, m.start.xy.x, m.start.xy.y, m.start.xy.y};
+        std::vector<Point2> points{m.goal.xy};
+        for (const ViaPointSpec &v : m.waypoints)
+            points.push_back(v.position.xy);
+        for (const Point2 &p : points)
+        {
+            b.xMin = std::min(b.xMin, p.x);
+            b.xMax = std::max(b.xMax, p.x);
+            b.yMin = std::min(b.yMin, p.y);
+            b.yMax = std::max(b.yMax, p.y);
+        }
+        const double pad = std::max(0.5 * std::max(b.xMax - b.xMin, b.yMax - b.yMin), 0.2);
+        o.lonMin = b.xMin - pad;
+        o.lonMax = b.xMax + pad;
+        o.latMin = b.yMin - pad;
+        o.latMax = b.yMax + pad;
     }
     return o;
 }
@@ -204,6 +227,8 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     buildTruth();
     start_ = localPoint(spec_.start, "start");
     goal_ = localPoint(spec_.goal, "goal");
+    for (std::size_t i = 0; i < spec_.waypoints.size(); ++i)
+        via_.push_back(localPoint(spec_.waypoints[i].position, "waypoints[" + std::to_string(i) + "]"));
     snapEndpoints();
     buildBox();
     checkAnalyticFields();
@@ -211,7 +236,9 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     const FieldGrid *grid = (members_.empty() ? field_ : members_.front())->grid();
     if (grid)
         spec_.travel.maxStep = 0.5 * grid->minCellSize();  // no travel-time step passes over a grid node
-    if (!(spec_.planner.gridSize > 0))
+    checkViaPoints();
+    gridSizeAutomatic_ = !(spec_.planner.gridSize > 0);
+    if (gridSizeAutomatic_)
     {
         const double d = std::hypot(goal_.x - start_.x, goal_.y - start_.y);
         spec_.planner.gridSize =
@@ -374,6 +401,26 @@ MissionProblem MissionProblem::withMember(std::size_t member) const
     return p;
 }
 
+MissionProblem MissionProblem::withLeg(Point2 start, Point2 goal, const GoalWindowSpec &window) const
+{
+    MissionProblem p(*this);
+    p.start_ = start;
+    p.goal_ = goal;
+    p.spec_.goalWindow = window;
+    p.spec_.waypoints.clear();
+    p.via_.clear();
+    if (gridSizeAutomatic_)
+    {
+        // the automatic lattice spacing follows the leg's own length, as a one-leg mission's does
+        const FieldGrid *grid = (members_.empty() ? field_ : members_.front())->grid();
+        const double d = std::hypot(goal.x - start.x, goal.y - start.y);
+        if (d > 0.0)
+            p.spec_.planner.gridSize =
+                grid ? defaultForecastGridSize(grid->minCellSize(), d) : defaultAnalyticGridSize(p.spec_, d);
+    }
+    return p;
+}
+
 MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
 {
     MissionProblem p(*this);
@@ -436,7 +483,10 @@ void MissionProblem::buildBox()
     box_.tMax = field_->timeEnd();
     box_.zMin = 0.0;
     box_.zMax = m.dive.enabled ? m.dive.params.zMax : m.vehicle.depth;
-    for (const auto &[name, p] : {std::pair<const char *, Point2>{"start", start_}, {"goal", goal_}})
+    std::vector<std::pair<std::string, Point2>> points{{"start", start_}, {"goal", goal_}};
+    for (std::size_t i = 0; i < via_.size(); ++i)
+        points.emplace_back("waypoints[" + std::to_string(i) + "]", via_[i]);
+    for (const auto &[name, p] : points)
         if (!(p.x >= box_.xMin && p.x <= box_.xMax && p.y >= box_.yMin && p.y <= box_.yMax))
         {
             char box[160];

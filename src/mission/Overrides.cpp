@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cctype>
 #include <cmath>
+#include <set>
 
 #include "../io/NumberText.h"
 #include "ompl_glider/Exception.h"
@@ -168,6 +170,76 @@ void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
     }
 }
 
+/// A via point's name: a letter, then letters, digits, '_' or '-', at most 16 characters (it is written into the
+/// Seaglider targets file).
+bool plainName(const std::string &name)
+{
+    if (name.empty() || name.size() > 16 || !std::isalpha(static_cast<unsigned char>(name[0])))
+        return false;
+    return std::all_of(name.begin(), name.end(),
+                       [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; });
+}
+
+void applyVia(const MissionOverrides &o, MissionSpec &m)
+{
+    if (o.via)
+    {
+        const std::string &source = o.via->source;
+        std::vector<ViaPointSpec> via = o.via->value;
+        std::set<std::string> names{"start", "goal"};
+        for (std::size_t i = 0; i < via.size(); ++i)
+        {
+            ViaPointSpec &v = via[i];
+            const std::string at = source + ": via point " + std::to_string(i + 1);
+            for (const double c : {v.position.xy.x, v.position.xy.y})
+                finite(Given<double>{c, at}, false);
+            if (m.start.geographic)
+            {
+                v.position.geographic = true;
+                v.position.lonLat = {v.position.xy.x, v.position.xy.y};
+                if (std::abs(v.position.lonLat.lat) > 90.0 || v.position.lonLat.lon < -180.0 ||
+                    v.position.lonLat.lon > 360.0)
+                    throw Error(at + ": lon,lat " + text::number(v.position.lonLat.lon) + "," +
+                                text::number(v.position.lonLat.lat) +
+                                " is not a position (longitude -180..180 or 0..360, latitude -90..90)");
+            }
+            if (v.name.empty())
+                v.name = "WP" + std::to_string(i + 1);
+            if (!plainName(v.name))
+                throw Error(at + ": '" + v.name + "' is not a plain name (a letter, then letters, digits, '_' or '-'; "
+                                 "at most 16 characters)");
+            if (!names.insert(v.name).second)
+                throw Error(at + ": the name '" + v.name + "' is used twice");
+            if (!(std::isnan(v.radius) || (v.radius > 0.0 && std::isfinite(v.radius))))
+                throw Error(at + ": the radius must be > 0, got " + text::number(v.radius));
+            if (!(v.stay >= 0.0 && std::isfinite(v.stay)))
+                throw Error(at + ": the stay must be a duration >= 0, got " + text::number(v.stay));
+            if (v.arrive.set && !(v.arrive.end >= v.arrive.begin))
+                throw Error(at + ": the arrival window ends before it begins");
+        }
+        for (auto it = m.marks.lower_bound("waypoints"); it != m.marks.end() && it->first.rfind("waypoints", 0) == 0;)
+            it = m.marks.erase(it);
+        m.waypoints = std::move(via);
+        mark(m, "waypoints", source);
+    }
+    if (o.order)
+    {
+        try
+        {
+            m.order = parseVisitOrder(o.order->value);
+        }
+        catch (const Error &e)
+        {
+            throw Error(o.order->source + ": " + e.what());
+        }
+        mark(m, "order", o.order->source);
+    }
+    if (m.order == VisitOrder::Free && m.waypoints.size() > kMaxFreeOrderViaPoints)
+        throw Error((o.order ? o.order->source : o.via ? o.via->source : m.place("order")) + ": free order over " +
+                    std::to_string(m.waypoints.size()) + " via points: at most " +
+                    std::to_string(kMaxFreeOrderViaPoints) + " (the search is exponential in their number)");
+}
+
 void applyOutputs(const MissionOverrides &o, MissionSpec &m)
 {
     if (o.coastline)
@@ -208,6 +280,7 @@ void applyOverrides(const MissionOverrides &o, MissionSpec &m)
     MissionSpec changed = m;  // all or nothing
     applyPlanner(o, changed);
     applyWhereAndWhen(o, changed);
+    applyVia(o, changed);
     applyOutputs(o, changed);
     m = std::move(changed);
 }
@@ -230,6 +303,11 @@ std::vector<std::pair<std::string, std::string>> overridableFields(const Mission
         for (const OutputFormat &f : outputFormats())
             if (f.id == id)
                 files += (files.empty() ? "" : ",") + f.name;
+    std::string via;
+    for (const ViaPointSpec &v : m.waypoints)
+        via += (via.empty() ? "" : ";") + v.name + "@" + point(v.position) +
+               (std::isnan(v.radius) ? "" : ",radius=" + num(v.radius)) + (v.stay > 0.0 ? ",stay=" + num(v.stay) : "") +
+               (v.arrive.set ? ",arrive=" + num(v.arrive.begin) + ".." + num(v.arrive.end) : "");
     std::string region = "unset";
     if (m.region.set)
         region = m.region.geographic ? num(m.region.lonLat.lonMin) + "," + num(m.region.lonLat.latMin) + "," +
@@ -255,6 +333,8 @@ std::vector<std::pair<std::string, std::string>> overridableFields(const Mission
         {"goal", point(m.goal)},
         {"region", region},
         {"goal.window", m.goalWindow.set ? num(m.goalWindow.begin) + "," + num(m.goalWindow.end) : "unset"},
+        {"waypoints", via},
+        {"order", visitOrderName(m.order)},
         {"forbidden.coastline", m.forbidden.coastline},
         {"outputs.directory", m.outputs.directory},
         {"outputs.files", files},

@@ -20,6 +20,7 @@
 #include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/routes/PathToStints.h"
 #include "ompl_glider/ompl/PipelinePlanner.h"
+#include "ompl_glider/mission/MissionLegs.h"
 
 namespace ompl_glider
 {
@@ -97,6 +98,37 @@ void checkGoalWindow(const MissionProblem &problem)
                          ? ": the end of the forecast"
                          : ": planner.horizon") +
                     ")");
+}
+
+/// A via point's arrival window must not close before the mission could get there: the straight line through the
+/// via points before it at the glider's speed plus the fastest current, and their stays.
+void checkViaWindows(const MissionProblem &problem)
+{
+    const MissionSpec &m = problem.getSpec();
+    if (m.waypoints.empty())
+        return;
+    Region box = problem.getBox();
+    const double fastest = m.vehicle.speed + problem.getField()->maxSpeed(box);
+    const double departure = m.departure.window ? m.departure.begin : m.departure.time;
+    double t = departure;
+    Point2 at = problem.getStart();
+    for (std::size_t i = 0; i < m.waypoints.size(); ++i)
+    {
+        const ViaPointSpec &v = m.waypoints[i];
+        const Point2 p = problem.getViaPoints()[i];
+        // in the listed order the via points before it come first; in a free order it may be the first one
+        if (m.order == VisitOrder::Free)
+            t = departure + std::hypot(p.x - problem.getStart().x, p.y - problem.getStart().y) / fastest;
+        else
+            t += std::hypot(p.x - at.x, p.y - at.y) / fastest;
+        const std::string field = "waypoints[" + std::to_string(i) + "]";
+        if (v.arrive.set && v.arrive.end < t)
+            throw Error(m.place(field + ".arrive.end") + " (via point '" + v.name + "'): the arrival window closes at " +
+                        timeText(problem, v.arrive.end) + ", before the glider can get there (no earlier than " +
+                        timeText(problem, t) + " at its speed plus the fastest current)");
+        t = std::max(t, v.arrive.set ? v.arrive.begin : t) + v.stay;
+        at = p;
+    }
 }
 
 double chooseDeparture(const MissionProblem &problem, const RunOptions &options, MissionResult &result)
@@ -293,9 +325,11 @@ TravelTimeOfDeparture departureFunction(const MissionProblem &problem, double gr
         o.globalCheck = false;  // the departure's supporting points compare the planner's raw times
         try
         {
-            const PlannedPath p = planRoute(problem, tDep, o);
-            // with a goal window the travel time includes the holds that move the arrival into it
-            return !p.solved ? kInf : problem.getSpec().goalWindow.set ? p.travelTime : p.rawTravelTime;
+            const PlannedPath p = planMission(problem, tDep, o).plan;
+            // with a goal window the travel time includes the holds that move the arrival into it, and a mission of
+            // several legs is timed as flown (each leg departs at the previous one's arrival)
+            const MissionSpec &m = problem.getSpec();
+            return !p.solved ? kInf : m.goalWindow.set || !m.waypoints.empty() ? p.travelTime : p.rawTravelTime;
         }
         catch (const Error &)
         {
@@ -316,6 +350,11 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
                                        "glider_plan --mission");
     checkPlanner(problem, m.departure.window ? m.departure.begin : m.departure.time);
     checkGoalWindow(problem);
+    checkViaWindows(problem);
+    if (!m.waypoints.empty() && m.execution.enabled)
+        throw Error(m.place("execution") + ": flying a plan in another ocean follows one leg to the goal; a mission "
+                                           "with via points ('waypoints') is not flown by the execution strategies "
+                                           "yet: plan it without 'execution', or fly each leg as its own mission");
     const double tDep = chooseDeparture(problem, options, result);
     if (result.departureSearch && !result.departureSearch->found)
     {
@@ -328,13 +367,22 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
         result.wallSeconds = secondsSince(start);
         return result;
     }
-    result.plan = planRoute(problem, tDep);
+    MissionPlan mission = planMission(problem, tDep);
+    result.plan = std::move(mission.plan);
+    result.legs = std::move(mission.legs);
+    result.order = std::move(mission.order);
+    result.orderSearch = std::move(mission.orderSearch);
     result.departureIso = problem.isoTime(result.plan.departure);
-    diagnoseNoPath(problem, tDep, result.plan);
+    if (result.legs.empty())
+        diagnoseNoPath(problem, tDep, result.plan);  // (each leg of a longer mission was diagnosed as planned)
     if (result.plan.solved)
     {
         PilotWaypoints w = missionWaypoints(problem, result.plan);
         result.waypoints = std::move(w.waypoints);
+        for (const PlannedLeg &l : result.legs)
+            for (std::size_t i = l.firstPoint; i <= l.lastPoint && i < result.waypoints.size(); ++i)
+                if (result.waypoints[i].missionLeg == 0)
+                    result.waypoints[i].missionLeg = static_cast<int>(l.index + 1);
         result.diveProfiles = m.dive.enabled;
         if (m.dive.enabled)
             result.profileSet = makeDiveProfiles(m.dive.params);
@@ -355,7 +403,9 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
         if (problem.isGeographic() && std::isfinite(result.closestLand.distance))
             result.closestLandLonLat = problem.toGeographic(result.closestLand.where);
     }
-    if (options.optimum)
+    if (options.optimum && !result.legs.empty())
+        result.optimum = missionOptimumReference(problem, result);
+    else if (options.optimum)
     {
         // Any flown path bounds the optimum; without one, the planning horizon does.
         const double horizon = problem.gliderProblem(tDep, result.plan.speed).horizon;

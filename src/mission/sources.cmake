@@ -8,12 +8,14 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/loader/Sections.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/ForbiddenRegions.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Fleet.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Waypoints.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Safety.cpp
   ${CMAKE_CURRENT_LIST_DIR}/FieldChecks.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Endpoints.cpp
   # the planning pipeline, one concern per file (see PlanningInternal.h)
   ${CMAKE_CURRENT_LIST_DIR}/Planning.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/MissionLegs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/GlobalCheck.cpp
   ${CMAKE_CURRENT_LIST_DIR}/HeadingRoutes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PlannerSetup.cpp

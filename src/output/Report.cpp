@@ -55,6 +55,51 @@ void printWaypoints(std::ostream &out, const MissionResult &r)
     }
 }
 
+/// A mission of several legs: the order of the via points (and the free-order search), then one line per leg.
+void printLegs(std::ostream &out, const MissionResult &r)
+{
+    if (r.legs.empty())
+        return;
+    const MissionSpec &m = r.spec;
+    const auto span = [&](double t) {
+        return m.physicalUnits().time ? text::durationText(t * m.timeUnitSeconds) : format("%.6g", t);
+    };
+    std::string order;
+    for (const std::size_t i : r.order)
+        order += (order.empty() ? "" : " -> ") + m.waypoints[i].name;
+    out << "Via points:         " << m.waypoints.size() << ", visited " << order << " (order " << visitOrderName(m.order)
+        << ")\n";
+    if (r.orderSearch)
+    {
+        const OrderSearch &s = *r.orderSearch;
+        out << "Order search:       " << s.ordersEvaluated << " of " << s.ordersTotal << " orders planned to the goal ("
+            << s.legsPlanned << " legs planned); the given order "
+            << (std::isfinite(s.givenTime) ? span(s.givenTime) : std::string("has no route"))
+            << (std::isfinite(s.chosenTime) ? format(", the chosen one %s (%.2f%% faster)", span(s.chosenTime).c_str(),
+                                                     100.0 * s.gain)
+                                            : std::string(", no order has a route"))
+            << "\n";
+    }
+    out << format("%4s  %-28s %22s %22s %14s %10s  %-10s %s\n", "leg", "from -> to", "departure", "arrival",
+                  "travel time", "stay", "planner", "status (global check)");
+    for (const PlannedLeg &l : r.legs)
+    {
+        const PlannedPath &p = l.plan;
+        // the date of a waypoint of the whole route where the mission has dates, else the field time
+        const auto when = [&](std::size_t i, double t) {
+            return i < r.waypoints.size() && !r.waypoints[i].iso.empty() ? r.waypoints[i].iso : format("%.6g", t);
+        };
+        std::string check = p.globalCheck ? " (winner " + p.globalCheck->winner + ")" : "";
+        out << format("%4zu  %-28s %22s %22s %14s %10s  %-10s %s%s\n", l.index + 1, (l.from + " -> " + l.to).c_str(),
+                      when(p.solved ? l.firstPoint : r.waypoints.size(), p.departure).c_str(),
+                      p.solved ? when(l.lastPoint, l.arrival()).c_str() : "-",
+                      p.solved ? span(p.travelTime).c_str() : "-", l.stay > 0.0 ? span(l.stay).c_str() : "",
+                      p.planner.c_str(), statusText(p.status).c_str(), check.c_str());
+        if (!p.solved)
+            out << "      " << p.reason << "\n";
+    }
+}
+
 /// The route's kind: held headings or straight legs, and the switch to another planner.
 void printRouteModel(std::ostream &out, const PlannedPath &p, const MissionSpec &m)
 {
@@ -233,6 +278,7 @@ void printReport(std::ostream &out, const MissionResult &r)
         for (const std::string &note : e.notes)
             out << "Execution note:     " << note << "\n";
     }
+    printLegs(out, r);
     if (p.solved)
         printWaypoints(out, r);
     if (!r.speedSweep.empty())

@@ -39,10 +39,29 @@ std::string heldFor(const MissionResult &r, double t)
 }
 }  // namespace
 
+std::string stopName(const MissionResult &r, std::size_t i)
+{
+    if (r.legs.empty())
+        return "";
+    if (i == 0)
+        return "start";
+    for (const PlannedLeg &l : r.legs)
+    {
+        if (i == l.lastPoint)
+            return l.to;
+        if (i == l.firstPoint && l.index > 0)
+            return r.legs[l.index - 1].to;  // the end of the stay at the previous leg's via point
+    }
+    return "";
+}
+
 std::string waypointsCsv(const MissionResult &r)
 {
-    std::string s = "index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to,heading_deg,"
-                    "segment_duration\n";
+    // a mission of several legs: the leg each waypoint belongs to and the via point it is (empty between them)
+    const bool legs = !r.legs.empty();
+    std::string s = std::string("index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to,heading_deg,"
+                                "segment_duration") +
+                    (legs ? ",leg,stop\n" : "\n");
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];
@@ -57,6 +76,8 @@ std::string waypointsCsv(const MissionResult &r)
         // a heading route: the heading held from here and for how long (empty for straight legs)
         s += "," + (std::isfinite(w.heading) ? text::csvNumber(w.heading) : std::string()) + "," +
              (std::isfinite(w.headingDuration) ? text::csvNumber(w.headingDuration) : std::string());
+        if (legs)
+            s += "," + std::to_string(w.missionLeg) + "," + stopName(r, i);
         s += "\n";
     }
     return s;
@@ -64,12 +85,13 @@ std::string waypointsCsv(const MissionResult &r)
 
 std::string pathCsv(const MissionResult &r)
 {
-    std::string s = "t,x,y,lon,lat\n";
+    const bool legs = !r.legs.empty();
+    std::string s = legs ? "t,x,y,lon,lat,leg\n" : "t,x,y,lon,lat\n";
     for (const MissionWaypoint &w : r.waypoints)
     {
         s += text::csvNumber(w.time) + "," + text::csvNumber(w.position.x) + "," + text::csvNumber(w.position.y) + ",";
         s += w.geographic ? text::csvNumber(w.lonLat.lon) + "," + text::csvNumber(w.lonLat.lat) : std::string(",");
-        s += "\n";
+        s += legs ? "," + std::to_string(w.missionLeg) + "\n" : "\n";
     }
     return s;
 }

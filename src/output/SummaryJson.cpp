@@ -246,6 +246,75 @@ json globalCheckJson(const PlannedPath &p)
             {"current_model_calls", g.currentModelCalls},
             {"wall_time_s", g.seconds}};
 }
+/// A mission of several legs: each leg's ends, times, planner, status and global check; the via points; the order.
+void legsJson(const MissionResult &r, const MissionProblem &problem, json &j)
+{
+    const MissionSpec &m = r.spec;
+    if (m.waypoints.empty())
+        return;
+    json via = json::array();
+    for (std::size_t i = 0; i < m.waypoints.size(); ++i)
+    {
+        const ViaPointSpec &v = m.waypoints[i];
+        via.push_back({{"name", v.name},
+                       {"position", position(problem, problem.getViaPoints()[i])},
+                       {"radius", jnum(v.radius)},
+                       {"stay", v.stay},
+                       {"arrive_begin", v.arrive.set ? jnum(v.arrive.begin) : json(nullptr)},
+                       {"arrive_end", v.arrive.set ? jnum(v.arrive.end) : json(nullptr)}});
+    }
+    j["via_points"] = via;
+    json order = json::array();
+    for (const std::size_t i : r.order)
+        order.push_back(m.waypoints[i].name);
+    j["order"] = {{"mode", visitOrderName(m.order)}, {"visited", order}};
+    if (r.orderSearch)
+    {
+        const OrderSearch &s = *r.orderSearch;
+        json chosen = json::array();
+        for (const std::size_t i : s.chosen)
+            chosen.push_back(m.waypoints[i].name);
+        j["order"]["search"] = {{"orders_total", s.ordersTotal},
+                                {"orders_evaluated", s.ordersEvaluated},
+                                {"legs_planned", s.legsPlanned},
+                                {"given_travel_time", jnum(s.givenTime)},
+                                {"chosen_travel_time", jnum(s.chosenTime)},
+                                {"chosen", chosen},
+                                {"gain", jnum(s.gain)}};
+    }
+    json legs = json::array();
+    for (const PlannedLeg &l : r.legs)
+    {
+        const PlannedPath &p = l.plan;
+        const double arrival = l.arrival();
+        json g = globalCheckJson(p);
+        legs.push_back({{"leg", l.index + 1},
+                        {"from", l.from},
+                        {"to", l.to},
+                        {"departure", p.departure},
+                        {"departure_iso", jtext(problem.isoTime(p.departure))},
+                        {"arrival", jnum(arrival)},
+                        {"arrival_iso", p.solved ? jtext(problem.isoTime(arrival)) : json(nullptr)},
+                        {"travel_time", jnum(p.travelTime)},
+                        {"stay", l.stay},
+                        {"path_length", p.solved ? json(p.pathLength) : json(nullptr)},
+                        {"planner", p.planner},
+                        {"status", statusText(p.status)},
+                        {"solved", p.solved},
+                        {"reason", jtext(p.reason)},
+                        {"route_model", p.headingRoute() ? "headings" : "straight_legs"},
+                        {"hold_time", p.holdTime},
+                        {"arrival_timing", jtext(p.arrivalTiming)},
+                        {"global_check", g.is_null() ? json(nullptr)
+                                                     : json{{"winner", g["winner"]},
+                                                            {"gain", g["gain"]},
+                                                            {"extremal_found", g["extremal_found"]},
+                                                            {"headings", g["headings"]}}},
+                        {"first_waypoint", l.firstPoint},
+                        {"last_waypoint", l.lastPoint}});
+    }
+    j["legs"] = legs;
+}
 }  // namespace
 
 std::string summaryJson(const MissionResult &r, const MissionProblem &problem, const std::vector<std::string> &files)
@@ -395,6 +464,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     }
     if (r.execution)
         j["execution"] = executionJson(*r.execution, problem);
+    legsJson(r, problem, j);
     j["files"] = files;
     checkFinite(j, "");
     return j.dump(2) + "\n";

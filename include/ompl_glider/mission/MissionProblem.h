@@ -88,6 +88,15 @@ public:
     /// The spec's start and goal stay the mission's. The goal's arrival window (MissionSpec::goalWindow) is kept for
     /// the mission's goal (a replan from a fix) and dropped for another goal (the execution batch's random pairs).
     MissionProblem withEndpoints(Point2 start, Point2 goal) const;
+    /// @brief One leg of a mission of several legs: the same problem from @p start to @p goal (planning frame) with
+    /// @p window as the goal's arrival window and no via points; field, truth, regions and box are shared, and an
+    /// automatic lattice spacing (planner.grid_size 0) is chosen for the leg's length as for a one-leg mission.
+    MissionProblem withLeg(Point2 start, Point2 goal, const GoalWindowSpec &window) const;
+    /// @brief The via points (MissionSpec::waypoints) in the planning frame, in the mission's order.
+    const std::vector<Point2> &getViaPoints() const
+    {
+        return via_;
+    }
     /// @brief The forbidden regions (null when there are none).
     const std::shared_ptr<const Environment> &getEnvironment() const
     {
@@ -182,6 +191,8 @@ private:
     /// with MissionSpec::safety.snapToWater.
     void snapEndpoints();
     void checkAnalyticFields() const;  ///< analytic fields are finite over the box (parameters do not overflow)
+    /// Via points in the region, in water, their stays within the forecast (Endpoints.cpp).
+    void checkViaPoints() const;
     void buildRegions();
     /// The coastline's land polygons about the box (Safety.cpp); errors begin with @p at.
     std::vector<LandPolygon> readCoastline(const std::string &at);
@@ -215,6 +226,8 @@ private:
     std::vector<MissionPolygon> polygons_;
     Region box_;
     Point2 start_, goal_;
+    std::vector<Point2> via_;          // via points, planning frame
+    bool gridSizeAutomatic_{false};    // planner.grid_size was 0: chosen from the trip's length
     std::shared_ptr<const KeepOffZone> land_;  // land's boundary and the keep-off distance (null: no land)
     std::string safetyNote_;                   // what the depth limit read, and how
     std::string fieldWord_{"current"};         // "current" or "wind"

@@ -145,6 +145,35 @@ struct GoalWindowSpec
     double end{0.0};    ///< latest accepted arrival
 };
 
+/// @brief A via point of a mission of several legs: a station the glider visits
+/// between the start and the goal. The leg that ends at it is planned to its position; `radius` is where the glider
+/// counts it as reached (the Seaglider targets file's `radius=`, the goto list's waypoint distance).
+struct ViaPointSpec
+{
+    std::string name;    ///< its name in reasons, outputs and the targets file (default "WP1", "WP2", ...)
+    PointSpec position;  ///< lon/lat or x/y, as the start and the goal
+    /// Reached within this distance (planning units, metres for a forecast); NaN: the goal's tolerance
+    double radius{std::numeric_limits<double>::quiet_NaN()};
+    GoalWindowSpec arrive;  ///< arrival window at this point (unset: any time), as the goal's window works
+    /// Hold here for this long after the arrival (field time units): a "virtual mooring", possible only where the
+    /// current is slower than the glider; 0: leave at once
+    double stay{0.0};
+    int line{0};  ///< its line in the mission file (0: a flag or a keyword)
+};
+
+/// @brief The order in which a mission's via points are visited.
+enum class VisitOrder
+{
+    Given,  ///< "given": in the order listed
+    Free    ///< "free": the fastest order (branch and bound over orders, MissionLegs.h)
+};
+/// @brief "given" or "free".
+const char *visitOrderName(VisitOrder o);
+/// @brief The order named @p name. @throws Error for another name (saying which are known).
+VisitOrder parseVisitOrder(const std::string &name);
+/// @brief The most via points `order: free` accepts (the search is exponential in their number).
+constexpr std::size_t kMaxFreeOrderViaPoints = 8;
+
 /// @brief Vehicle.
 struct VehicleSpec
 {
@@ -310,6 +339,8 @@ struct FleetGliderSpec
     PointSpec goal;
     std::optional<double> speed;      ///< vehicle speed (unset: the mission's)
     std::optional<double> departure;  ///< fixed departure time, field units (unset: the mission's departure)
+    std::vector<ViaPointSpec> waypoints;  ///< its via points (MissionSpec::waypoints), visited between start and goal
+    std::optional<VisitOrder> order;      ///< its visiting order (unset: the mission's)
     int line{0};                      ///< the entry's line in the mission file
 };
 
@@ -361,6 +392,10 @@ struct MissionSpec
     PointSpec start;
     PointSpec goal;
     GoalWindowSpec goalWindow;     ///< arrival window at the goal (unset: any time)
+    /// Via points between start and goal (a mission of several legs, one leg per pair of consecutive points, planned
+    /// in sequence on one clock: runMission()); empty: one leg from start to goal
+    std::vector<ViaPointSpec> waypoints;
+    VisitOrder order{VisitOrder::Given};  ///< the via points' visiting order
     DepartureSpec departure;
     VehicleSpec vehicle;
     TravelTimeParams travel;       ///< integration parameters (speed and depth are copied from vehicle)

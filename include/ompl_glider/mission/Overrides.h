@@ -50,6 +50,10 @@ struct MissionOverrides
     std::optional<Given<bool>> isochrones;             ///< add the isochrone output
     std::optional<Given<std::string>> isochroneInterval;  ///< a duration ("6 h", or a number in the time unit)
     std::optional<Given<double>> gotoTurn;  ///< the goto list's turn threshold, degrees in 0..180
+    /// via points in place of the mission's (positions lon, lat where the mission gives lon/lat, else x, y; names,
+    /// radii, windows and stays as the front end gives them: an empty name becomes "WP1", "WP2", ...)
+    std::optional<Given<std::vector<ViaPointSpec>>> via;
+    std::optional<Given<std::string>> order;  ///< "given" or "free"
 };
 
 /// @brief Applies @p o to @p m: each value checked (finite, in its range, a planner of the registry, a time the

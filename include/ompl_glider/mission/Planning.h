@@ -208,6 +208,9 @@ struct MissionWaypoint
     int profile{-1};                  ///< dive profile index of the leg that reaches this waypoint (-1: none)
     DiveProfile dive;                 ///< that profile (climb-to / dive-to depths)
     double legTime{0.0};              ///< travel time of the leg that reaches it
+    /// The mission's leg (1-based, MissionResult::legs) this waypoint belongs to: a via point closes its leg (its stay's
+    /// end opens the next); 0 for a mission of one leg
+    int missionLeg{0};
     /// Heading routes (PlannedPath::headingRoute()): the heading to hold FROM this waypoint, the bearing of the
     /// segment that leaves it (degrees clockwise from north in [0, 360), through the water), and how long it is held
     /// (field time units, as flown: the last segment ends at the arrival). The leaving segment is what the pilot sets
@@ -247,11 +250,58 @@ struct RunOptions
     ProgressSink progress;                      ///< progress lines (departure search, speed sweep)
 };
 
+/// @brief One leg of a mission's plan.
+struct PlannedLeg
+{
+    std::size_t index{0};   ///< 0-based leg number
+    std::string from, to;   ///< names: "start", the via points' names, "goal"
+    /// The via point index (MissionSpec::waypoints) the leg leaves from / goes to; -1 for the start / the goal
+    int fromVia{-1}, toVia{-1};
+    Point2 fromPoint, toPoint;  ///< planning frame
+    GoalWindowSpec window;      ///< arrival window at the leg's end (the via point's `arrive`, the goal's window)
+    double stay{0.0};           ///< held at the leg's end after the arrival (the via point's stay; 0 at the goal)
+    PlannedPath plan;           ///< the leg's own plan (planRoute() from its departure)
+    /// Indices of the leg's first and last point in the mission's whole path (PlannedPath::path of the mission)
+    std::size_t firstPoint{0}, lastPoint{0};
+
+    /// @brief The leg's departure (its plan's departure).
+    double departure() const
+    {
+        return plan.departure;
+    }
+    /// @brief The arrival at the leg's end (before the stay); NaN without a route.
+    double arrival() const
+    {
+        return plan.solved && !plan.path.empty() ? plan.path.back().t : std::numeric_limits<double>::quiet_NaN();
+    }
+};
+
+/// @brief What the free-order search (`order: free`) did.
+struct OrderSearch
+{
+    std::vector<std::size_t> given;   ///< the order listed (indices into MissionSpec::waypoints)
+    std::vector<std::size_t> chosen;  ///< the fastest order found (empty when no order has a route)
+    std::size_t ordersTotal{0};       ///< n! orders of n via points
+    std::size_t ordersEvaluated{0};   ///< complete orders planned to the goal (the rest were pruned by the bound)
+    std::size_t legsPlanned{0};       ///< leg plans made (each a planRoute())
+    /// Travel time of the given order (+inf without a route) and of the chosen one
+    double givenTime{std::numeric_limits<double>::infinity()};
+    double chosenTime{std::numeric_limits<double>::infinity()};  ///< see givenTime
+    /// 1 - chosenTime / givenTime (1 when only the chosen order has a route; 0 when the given order is the fastest)
+    double gain{0.0};
+};
+
 /// @brief Everything a run produced: the one result type of the pipeline.
 struct MissionResult
 {
     MissionSpec spec;                       ///< the mission
-    PlannedPath plan;                       ///< the path at the chosen departure
+    /// The path at the chosen departure; with via points the whole route (legs in turn, stays as holds, MissionLegs.h)
+    PlannedPath plan;
+    /// A mission with via points: its legs in the order flown (each with its own plan); empty for a one-leg mission
+    std::vector<PlannedLeg> legs;
+    /// The via points in the order visited (indices into MissionSpec::waypoints); empty without via points
+    std::vector<std::size_t> order;
+    std::optional<OrderSearch> orderSearch;  ///< with `order: free`: what the search did
     std::vector<MissionWaypoint> waypoints; ///< final path for the pilot (start first; empty without a path)
     std::string departureIso;               ///< the departure's date (empty without dates), also without a path
     bool diveProfiles{false};               ///< dive profiles evaluated

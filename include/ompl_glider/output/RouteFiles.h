@@ -19,6 +19,9 @@ namespace ompl_glider
 /// through the water) and segment_duration how long it is held, as flown (field time units); both are empty for
 /// straight legs and at the last waypoint. Numbers with 10 significant digits.
 std::string waypointsCsv(const MissionResult &result);
+/// @brief The stop waypoint @p i of a mission of several legs is: "start", a via point's name (its arrival, and the
+/// end of its stay), "goal"; empty between stops and for a mission of one leg.
+std::string stopName(const MissionResult &result, std::size_t i);
 
 /// @brief The final path as CSV with header `t,x,y,lon,lat` (t in field time units; lon/lat empty without a
 /// projection).

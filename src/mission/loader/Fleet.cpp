@@ -39,7 +39,7 @@ void readFleet(const Reader &r, const YAML::Node &n, MissionSpec &m)
     {
         const YAML::Node &g = n[i];
         const std::string f = "fleet[" + std::to_string(i) + "]";
-        r.checkMap(g, f, {"name", "start", "goal", "speed", "departure"});
+        r.checkMap(g, f, {"name", "start", "goal", "speed", "departure", "waypoints", "order"});
         FleetGliderSpec glider;
         glider.line = r.line(g);
         for (const char *key : {"name", "start", "goal"})
@@ -58,6 +58,10 @@ void readFleet(const Reader &r, const YAML::Node &n, MissionSpec &m)
             glider.speed = r.positive(g["speed"], f + ".speed");
         if (g["departure"])
             glider.departure = r.time(g["departure"], f + ".departure", m);
+        if (g["waypoints"])
+            readViaPoints(r, g["waypoints"], f + ".waypoints", glider.waypoints, m);
+        if (g["order"])
+            glider.order = readVisitOrder(r, g["order"], f + ".order", glider.waypoints.size());
         for (const PointSpec *p : {&glider.start, &glider.goal})
             if (!p->geographic && m.region.set && !m.region.geographic &&
                 (p->xy.x < m.region.xy.xMin || p->xy.x > m.region.xy.xMax || p->xy.y < m.region.xy.yMin ||

@@ -223,12 +223,14 @@ std::vector<std::pair<double, double>> Reader::ring(const YAML::Node &node, cons
     return out;
 }
 
-void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, PointSpec &p, const MissionSpec &m)
+void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, PointSpec &p, const MissionSpec &m,
+               const std::set<std::string> &extraKeys)
 {
+    std::set<std::string> keys{"x", "y", "lon", "lat"};
+    keys.insert(extraKeys.begin(), extraKeys.end());
     if (field == "goal")
-        r.checkMap(n, field, {"x", "y", "lon", "lat", "window"});  // goal.window: readGoalWindow()
-    else
-        r.checkMap(n, field, {"x", "y", "lon", "lat"});
+        keys.insert("window");  // goal.window: readGoalWindow()
+    r.checkMap(n, field, keys);
     const bool xy = n["x"] || n["y"], geo = n["lon"] || n["lat"];
     if (xy == geo)
         r.fail(n, field, "give either x and y, or lon and lat");

@@ -92,7 +92,15 @@ private:
 };
 
 // Readers of the mission's parts; each validates its node and fills its part of @p m.
-void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, PointSpec &p, const MissionSpec &m);
+/// A point {x, y} or {lon, lat}; @p extraKeys are further keys the node may hold (read by the caller).
+void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, PointSpec &p, const MissionSpec &m,
+               const std::set<std::string> &extraKeys = {});
+/// A list of via points under @p field ("waypoints", "fleet[2].waypoints"): each {name, lon/lat or x/y, radius,
+/// arrive: {begin, end}, stay}; names unique and plain (letters, digits, '_', '-'), after the departure.
+void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &field, std::vector<ViaPointSpec> &out,
+                   const MissionSpec &m);
+/// The visiting order ("given" or "free") of @p field, checked against the number of via points @p count.
+VisitOrder readVisitOrder(const Reader &r, const YAML::Node &n, const std::string &field, std::size_t count);
 void readPolygon(const Reader &r, const YAML::Node &n, const std::string &field, PolygonSpec &poly,
                  const MissionSpec &m);
 void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m);

@@ -1,0 +1,145 @@
+// The mission's `waypoints` list (via points between start and goal) and `order`: read and checked field by field.
+#include <cctype>
+#include <cmath>
+#include <set>
+
+#include "MissionReader.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/io/Length.h"
+#include "ompl_glider/io/Time.h"
+
+namespace ompl_glider
+{
+const char *visitOrderName(VisitOrder o)
+{
+    return o == VisitOrder::Free ? "free" : "given";
+}
+
+VisitOrder parseVisitOrder(const std::string &name)
+{
+    if (name == "given")
+        return VisitOrder::Given;
+    if (name == "free")
+        return VisitOrder::Free;
+    throw Error("unknown order '" + name + "' (expected given or free)");
+}
+
+namespace mission_loader
+{
+namespace
+{
+/// A via point's name is written into the Seaglider targets file and the goto list's comments: a plain word.
+bool plainName(const std::string &name)
+{
+    if (name.empty() || name.size() > 16 || !std::isalpha(static_cast<unsigned char>(name[0])))
+        return false;
+    for (const char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
+            return false;
+    return true;
+}
+
+/// A scalar read by @p parse (a length or a duration with its unit), refused naming the field.
+template <class Parse>
+double scalar(const Reader &r, const YAML::Node &n, const std::string &f, const char *expected, Parse parse)
+{
+    if (!n.IsScalar())
+        r.fail(n, f, expected);
+    r.mark(n, f);
+    try
+    {
+        return parse(n.Scalar());
+    }
+    catch (const Error &e)
+    {
+        r.fail(n, f, e.what());
+    }
+}
+}  // namespace
+
+void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &field, std::vector<ViaPointSpec> &out,
+                   const MissionSpec &m)
+{
+    if (!n.IsSequence() || n.size() == 0)
+        r.fail(n, field, "expected a list of via points, each {name, lon, lat} or {name, x, y} (radius, arrive, "
+                         "stay optional)");
+    r.mark(n, field);
+    constexpr std::size_t kMaxViaPoints = 1000;
+    if (n.size() > kMaxViaPoints)
+        r.fail(n, field, std::to_string(n.size()) + " via points, more than the limit of " +
+                             std::to_string(kMaxViaPoints) + " (a planned leg each)");
+    std::set<std::string> names{"start", "goal"};
+    out.clear();
+    for (std::size_t i = 0; i < n.size(); ++i)
+    {
+        const YAML::Node &w = n[i];
+        const std::string f = field + "[" + std::to_string(i) + "]";
+        if (!w.IsMap())
+            r.fail(w, f, "expected a via point {name, lon, lat} or {name, x, y}");
+        ViaPointSpec v;
+        v.line = r.line(w);
+        readPoint(r, w, f, v.position, m, {"name", "radius", "arrive", "stay"});
+        v.name = w["name"] ? r.text(w["name"], f + ".name") : "WP" + std::to_string(i + 1);
+        if (!plainName(v.name))
+            r.fail(w["name"], f + ".name",
+                   "'" + v.name + "' is not a plain name (a letter, then letters, digits, '_' or '-'; at most 16 "
+                   "characters: it is written into the Seaglider targets file)");
+        if (!names.insert(v.name).second)
+            r.fail(w["name"] ? w["name"] : w, f + ".name",
+                   "'" + v.name + "' names " + (v.name == "start" || v.name == "goal" ? "the mission's " + v.name
+                                                                                   : "another via point") +
+                       " too: give every via point its own name");
+        if (w["radius"])
+        {
+            const bool metres = m.physicalUnits().length;
+            v.radius = scalar(r, w["radius"], f + ".radius", "expected a length: a number, or e.g. '500 m', '2 km'",
+                              [&](const std::string &t) { return parseLength(t, m.metresPerUnit(), metres); });
+            if (!(v.radius > 0.0) || !std::isfinite(v.radius))
+                r.fail(w["radius"], f + ".radius", "must be a length > 0 (the glider counts the point as reached "
+                                                   "within it)");
+        }
+        if (w["stay"])
+        {
+            v.stay = scalar(r, w["stay"], f + ".stay",
+                            "expected a duration: a number in the mission's time unit, or e.g. '6 h', '1 d'",
+                            [&](const std::string &t) {
+                                return parseDuration(t, m.timeUnitSeconds, m.hasTimeUnit());
+                            });
+            if (!(v.stay >= 0.0) || !std::isfinite(v.stay))
+                r.fail(w["stay"], f + ".stay", "must be a duration >= 0");
+        }
+        if (w["arrive"])
+        {
+            const YAML::Node &a = w["arrive"];
+            const std::string g = f + ".arrive";
+            r.checkMap(a, g, {"begin", "end"});
+            if (!a["begin"] && !a["end"])
+                r.fail(a, g, "give begin, end or both (the earliest and the latest accepted arrival)");
+            v.arrive.set = true;
+            v.arrive.begin = a["begin"] ? r.time(a["begin"], g + ".begin", m) : -1e300;
+            v.arrive.end = a["end"] ? r.time(a["end"], g + ".end", m) : 1e300;
+            if (!(v.arrive.end >= v.arrive.begin))
+                r.fail(a["end"], g + ".end", "the window ends before it begins");
+            const double departure = m.departure.window ? m.departure.begin : m.departure.time;
+            if (a["end"] && v.arrive.end < departure)
+                r.fail(a["end"], g + ".end", "the window ends before the departure: no plan can arrive in it");
+        }
+        if (!v.position.geographic && m.region.set && !m.region.geographic &&
+            (v.position.xy.x < m.region.xy.xMin || v.position.xy.x > m.region.xy.xMax ||
+             v.position.xy.y < m.region.xy.yMin || v.position.xy.y > m.region.xy.yMax))
+            r.fail(w, f, "lies outside the region");
+        out.push_back(std::move(v));
+    }
+}
+
+VisitOrder readVisitOrder(const Reader &r, const YAML::Node &n, const std::string &field, std::size_t count)
+{
+    const VisitOrder o = r.oneOf(n, field, {"given", "free"}) == "free" ? VisitOrder::Free : VisitOrder::Given;
+    if (o == VisitOrder::Free && count > kMaxFreeOrderViaPoints)
+        r.fail(n, field, "free order over " + std::to_string(count) + " via points: at most " +
+                             std::to_string(kMaxFreeOrderViaPoints) +
+                             " (the search is exponential in their number); give the order, or split the mission");
+    return o;
+}
+}  // namespace mission_loader
+}  // namespace ompl_glider
