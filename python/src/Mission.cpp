@@ -212,7 +212,7 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     static const char *known[] = {"planner", "planner_params", "grid_size", "sectors", "time_limit", "smoothing",
                                   "refinement", "speed", "departure", "start", "goal", "region", "forbidden",
                                   "isochrones", "isochrone_interval", "analytic", "horizon", "goal_tolerance",
-                                  "global_check", "arrive_between", "coastline", "goto_turn"};
+                                  "global_check", "arrive_between", "coastline", "goto_turn", "via", "order"};
     for (const auto &item : kw)
     {
         const std::string name = item.first.cast<std::string>();
@@ -267,6 +267,61 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
         o.arrivalWindow = Given<std::pair<std::string, std::string>>{
             {py::str(begin).cast<std::string>(), py::str(end).cast<std::string>()}, text("arrive_between")};
     }
+    if (auto v = get("via"))
+    {
+        // each via point a pair (x, y) / (lon, lat), or a dict {at: pair, name, radius, stay, arrive: (begin, end)}
+        std::vector<ViaPointSpec> via;
+        std::size_t k = 0;
+        for (const py::handle item : value<py::list>(*v, "via", "a list of via points"))
+        {
+            const std::string at = "via[" + std::to_string(k++) + "]";
+            ViaPointSpec p;
+            if (py::isinstance<py::dict>(item))
+            {
+                const py::dict d = py::reinterpret_borrow<py::dict>(item);
+                for (const auto &key : d)
+                {
+                    const std::string name = key.first.cast<std::string>();
+                    if (name != "at" && name != "name" && name != "radius" && name != "stay" && name != "arrive")
+                        throw Error("plan(): keyword 'via': " + at + ": unknown key '" + name +
+                                    "' (at, name, radius, stay, arrive)");
+                }
+                if (!d.contains("at"))
+                    throw Error("plan(): keyword 'via': " + at + ": 'at' (x, y) or (lon, lat) is required");
+                const Pair xy = value<Pair>(d["at"], at + ".at", "a pair (x, y) or (lon, lat) of numbers");
+                p.position.xy = {xy.first, xy.second};
+                if (d.contains("name"))
+                    p.name = value<std::string>(d["name"], at + ".name", "a text");
+                if (d.contains("radius"))
+                    p.radius = value<double>(d["radius"], at + ".radius", "a number (the mission's length unit)");
+                if (d.contains("stay"))
+                    p.stay = value<double>(d["stay"], at + ".stay", "a number (the mission's time unit)");
+                if (d.contains("arrive"))
+                {
+                    const auto [b, e] = value<std::pair<py::object, py::object>>(d["arrive"], at + ".arrive",
+                                                                                  "a pair (begin, end) of times");
+                    try
+                    {
+                        p.arrive = {true, m.timeOf(py::str(b).cast<std::string>()),
+                                    m.timeOf(py::str(e).cast<std::string>())};
+                    }
+                    catch (const Error &e)
+                    {
+                        throw Error("plan(): keyword 'via': " + at + ".arrive: " + e.what());
+                    }
+                }
+            }
+            else
+            {
+                const Pair xy = value<Pair>(item, at, "a pair (x, y) or (lon, lat) of numbers, or a dict");
+                p.position.xy = {xy.first, xy.second};
+            }
+            via.push_back(p);
+        }
+        o.via = Given<std::vector<ViaPointSpec>>{via, text("via")};
+    }
+    if (auto v = get("order"))
+        o.order = Given<std::string>{value<std::string>(*v, "order", "'given' or 'free'"), text("order")};
     if (auto v = get("coastline"))
         o.coastline = Given<std::string>{value<std::string>(*v, "coastline", "a file name"), text("coastline")};
     if (auto v = get("isochrone_interval"))

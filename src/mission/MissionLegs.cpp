@@ -189,12 +189,14 @@ std::vector<PlannedLeg> flyOrder(LegPlanner &planner, const std::vector<std::siz
     return legs;
 }
 
-/// Appends @p add to @p to, leaving out a first point equal (place and time) to the last one there.
-void append(std::vector<TimedPoint> &to, const std::vector<TimedPoint> &add)
+/// Appends @p add to @p to, leaving out a first point at the time of the last one there and within @p gap of it (a
+/// heading route ends within its goal tolerance of the via point the next leg leaves from).
+void append(std::vector<TimedPoint> &to, const std::vector<TimedPoint> &add, double gap = 0.0)
 {
     for (std::size_t i = 0; i < add.size(); ++i)
     {
-        if (i == 0 && !to.empty() && to.back().x == add[i].x && to.back().y == add[i].y && to.back().t == add[i].t)
+        if (i == 0 && !to.empty() && to.back().t == add[i].t &&
+            std::hypot(to.back().x - add[i].x, to.back().y - add[i].y) <= gap)
             continue;
         to.push_back(add[i]);
     }
@@ -249,12 +251,13 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
         l.firstPoint = r.path.empty() ? 0 : r.path.size() - 1;
         if (!r.path.empty() && r.path.back().t != p.path.front().t)
             l.firstPoint = r.path.size();  // after a stay the leg starts with a hold's end
-        append(r.path, p.path);
+        const double gap = problem.gliderProblem(p.departure, r.speed).goalTolerance + 1e-9 * r.pathLength;
+        append(r.path, p.path, gap);
         l.lastPoint = r.path.size() - 1;
-        append(r.raw, p.raw);
-        append(r.smoothed, p.smoothed);
+        append(r.raw, p.raw, gap);
+        append(r.smoothed, p.smoothed, gap);
         if (anyHeadings)
-            append(r.track, p.headingRoute() ? p.track : p.path);
+            append(r.track, p.headingRoute() ? p.track : p.path, gap);
         rawTime += p.rawTravelTime;
         smoothedTime += p.smoothedTravelTime;
         r.rawPathLength += p.rawPathLength;

@@ -409,6 +409,12 @@ MissionProblem MissionProblem::withLeg(Point2 start, Point2 goal, const GoalWind
     p.spec_.goalWindow = window;
     p.spec_.waypoints.clear();
     p.via_.clear();
+    // the spec's ends are the leg's (x/y in the file's units, or lon/lat), as a one-leg mission between them has
+    for (const auto &[spec, q] : {std::pair<PointSpec *, Point2>{&p.spec_.start, start}, {&p.spec_.goal, goal}})
+        if (spec->geographic)
+            spec->lonLat = toGeographic(q);
+        else
+            spec->xy = {q.x / xyScale_, q.y / xyScale_};
     if (gridSizeAutomatic_)
     {
         // the automatic lattice spacing follows the leg's own length, as a one-leg mission's does

@@ -21,6 +21,7 @@
 #include "ompl_glider/output/ExecutionFiles.h"
 #include "ompl_glider/output/RouteFiles.h"
 #include "ompl_glider/output/SlocumGoto.h"
+#include "ompl_glider/output/SeagliderTargets.h"
 #include "ompl_glider/output/SummaryJson.h"
 #include "OutputDirectory.h"
 
@@ -70,8 +71,12 @@ std::vector<OutputFile> formatFiles(OutputFormatId format, const MissionResult &
         if (!problem.isGeographic())
             return {};
         const MissionProblem *prob = &problem;  // checks the thinned list's legs
+        // the Seaglider's targets file of the same turns beside the Slocum's goto list
         return {{gotoFileName(r.spec.outputs.gotoNumber),
-                 [res, prob](const std::string &p) { writeGotoFile(p, gotoList(*res, prob)); }}};
+                 [res, prob](const std::string &p) { writeGotoFile(p, gotoList(*res, prob)); }},
+                {"targets", [res, prob](const std::string &p) {
+                     writeText(p, formatSeagliderTargets(seagliderTargets(*res, prob), res->spec.name));
+                 }}};
     }
     if (format == OutputFormatId::Execution)
     {

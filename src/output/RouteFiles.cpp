@@ -321,6 +321,18 @@ bool legAllowed(const MissionResult &r, const MissionProblem *problem, std::size
 }
 }  // namespace
 
+namespace
+{
+/// Waypoint @p i is a via point's arrival (the end of a leg other than the last).
+bool isViaArrival(const MissionResult &r, std::size_t i)
+{
+    for (std::size_t k = 0; k + 1 < r.legs.size(); ++k)
+        if (r.legs[k].lastPoint == i)
+            return true;
+    return false;
+}
+}  // namespace
+
 std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const MissionProblem *problem)
 {
     const std::size_t n = r.waypoints.size();
@@ -335,6 +347,11 @@ std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const Missi
     for (std::size_t i = 1; i + 1 < n; ++i)
     {
         const std::size_t k = kept.back();
+        if (isViaArrival(r, i) && !same(i, k))  // a station of the mission is always listed
+        {
+            kept.push_back(i);
+            continue;
+        }
         if (r.plan.headingRoute() || !(turn > 0.0))  // every segment end of held headings, or every waypoint
         {
             kept.push_back(i);

@@ -1,6 +1,7 @@
 # output/: the one output layer (summary.json, route files, goto list, map; all-or-nothing writing)
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/SlocumGoto.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/SeagliderTargets.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RouteFiles.cpp
   ${CMAKE_CURRENT_LIST_DIR}/SummaryJson.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Report.cpp

@@ -46,6 +46,9 @@ endif()
 # goals in time: a goal window met by holding at the goal or by timing the arrival, or not at all
 glider_add_test(test_mission_goal_window ${CMAKE_CURRENT_LIST_DIR}/TestGoalWindow.cpp)
 target_link_libraries(test_mission_goal_window PRIVATE nlohmann_json::nlohmann_json)
+# missions of several legs: the chain of legs, the free order against all orders, stays, bad via points, targets
+glider_add_test(test_mission_legs ${CMAKE_CURRENT_LIST_DIR}/TestMissionLegs.cpp
+                ${CMAKE_CURRENT_LIST_DIR}/TestSeagliderTargets.cpp)
 # safety margins (keep-off distance, depth limit) through the pipeline
 glider_add_test(test_mission_safety ${CMAKE_CURRENT_LIST_DIR}/TestSafety.cpp)
 target_link_libraries(test_mission_safety PRIVATE netCDF::netcdf)

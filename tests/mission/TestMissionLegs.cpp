@@ -1,0 +1,258 @@
+// Missions of several legs: the chain of legs is the mission and flies as planned, the free order is the best of all
+// orders, stays hold in weak currents and are refused in strong ones, and the loader refuses bad via points.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/execution/Reflight.h"
+#include "ompl_glider/mission/MissionLegs.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/mission/Planning.h"
+
+using namespace ompl_glider;
+
+namespace
+{
+std::string point(double x, double y)
+{
+    return "{x: " + std::to_string(x) + ", y: " + std::to_string(y) + "}";
+}
+
+/// A mission on @p current over @p region from @p s to @p g with the via points @p via (x, y).
+MissionSpec mission(const std::string &current, const std::string &region, Point2 s, Point2 g,
+                    const std::vector<Point2> &via, const std::string &extra = "")
+{
+    std::string y = "current: " + current + "\nregion: " + region + "\nstart: " + point(s.x, s.y) +
+                    "\ngoal: " + point(g.x, g.y) + "\nvehicle: {speed: 0.5}\n";
+    if (!via.empty())
+    {
+        y += "waypoints:\n";
+        for (std::size_t i = 0; i < via.size(); ++i)
+            y += "  - {name: S" + std::to_string(i + 1) + ", x: " + std::to_string(via[i].x) +
+                 ", y: " + std::to_string(via[i].y) + "}\n";
+    }
+    return parseMission(y + extra);
+}
+
+const char *kJet = "{type: meandering_jet}";
+const char *kJetRegion = "{x_min: 0, x_max: 10, y_min: -4, y_max: 4}";
+}  // namespace
+
+// The mission's time is the chain of its legs, each planned as a mission of its own from the previous leg's arrival,
+// and its whole route re-flown by the accurate integrator arrives when the mission says.
+TEST(MissionLegs, ChainOfLegsIsTheMissionAndFliesAsPlanned)
+{
+    const std::vector<Point2> via{{3.0, -2.5}, {5.5, -1.5}};
+    const std::string grid = "planner: {grid_size: 0.4}\n";
+    const MissionSpec m = mission(kJet, kJetRegion, {1, -3}, {8, 3}, via, grid);
+    const MissionProblem problem(m);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    ASSERT_EQ(r.legs.size(), 3u);
+    std::vector<Point2> stops{{1, -3}, via[0], via[1], {8, 3}};
+    double t = 0.0;
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+        MissionSpec leg = mission(kJet, kJetRegion, stops[k], stops[k + 1], {}, grid);
+        leg.departure.time = t;
+        const MissionResult one = runMission(MissionProblem(leg));
+        ASSERT_TRUE(one.plan.solved) << "leg " << k + 1 << ": " << one.plan.reason;
+        EXPECT_NEAR(one.plan.travelTime, r.legs[k].plan.travelTime, 1e-9) << "leg " << k + 1;
+        EXPECT_DOUBLE_EQ(r.legs[k].departure(), t);
+        t = one.plan.path.back().t;
+    }
+    EXPECT_NEAR(r.plan.path.back().t, t, 1e-9);
+    EXPECT_NEAR(r.plan.travelTime, t, 1e-9);
+    // the legs follow each other on one clock and the via points are on the route
+    for (std::size_t k = 0; k + 1 < r.legs.size(); ++k)
+    {
+        EXPECT_DOUBLE_EQ(r.legs[k + 1].departure(), r.legs[k].arrival() + r.legs[k].stay);
+        const TimedPoint &end = r.plan.path[r.legs[k].lastPoint];
+        EXPECT_LT(std::hypot(end.x - via[k].x, end.y - via[k].y), 1e-6);
+    }
+    // the whole route flown by the accurate Dormand-Prince re-flight (straight legs, as planned)
+    for (const PlannedLeg &l : r.legs)
+        ASSERT_FALSE(l.plan.headingRoute()) << "this case is planned as straight legs";
+    ReflightSettings s;
+    s.speed = 0.5;
+    s.keepSlowLegs = true;
+    const PathReflight f = reflyPath(r.plan.path, *problem.getField(), problem.getEnvironment().get(), s);
+    ASSERT_TRUE(f.feasible) << f.why;
+    EXPECT_LT(std::abs(relativeDifference(r.plan.travelTime, f.arrivalTime - r.plan.departure)), 1e-6);
+    // and waypoints carry their leg
+    EXPECT_EQ(r.waypoints.front().missionLeg, 1);
+    EXPECT_EQ(r.waypoints.back().missionLeg, 3);
+}
+
+namespace
+{
+/// Every order of @p m's via points planned by the same pipeline (given order each): the fastest time.
+double bestOfAllOrders(const MissionSpec &m, std::size_t &orders)
+{
+    std::vector<std::size_t> perm(m.waypoints.size());
+    std::iota(perm.begin(), perm.end(), std::size_t{0});
+    double best = std::numeric_limits<double>::infinity();
+    orders = 0;
+    do
+    {
+        MissionSpec p = m;
+        p.order = VisitOrder::Given;
+        for (std::size_t i = 0; i < perm.size(); ++i)
+            p.waypoints[i] = m.waypoints[perm[i]];
+        const MissionPlan plan = planMission(MissionProblem(p), 0.0);
+        ++orders;
+        if (plan.plan.solved)
+            best = std::min(best, plan.plan.travelTime);
+    } while (std::next_permutation(perm.begin(), perm.end()));
+    return best;
+}
+
+void checkFreeOrder(const std::string &current, const std::string &region, Box box, std::size_t n, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> ux(box.xMin + 0.1 * (box.xMax - box.xMin), box.xMax - 0.1 * (box.xMax - box.xMin));
+    std::uniform_real_distribution<double> uy(box.yMin + 0.1 * (box.yMax - box.yMin), box.yMax - 0.1 * (box.yMax - box.yMin));
+    std::vector<Point2> via;
+    for (std::size_t i = 0; i < n; ++i)
+        via.push_back({ux(rng), uy(rng)});
+    MissionSpec m = mission(current, region, {ux(rng), uy(rng)}, {ux(rng), uy(rng)}, via,
+                            "planner: {grid_size: " + std::to_string(0.08 * (box.xMax - box.xMin)) + "}\n");
+    m.order = VisitOrder::Free;
+    const MissionPlan free = planMission(MissionProblem(m), 0.0);
+    std::size_t orders = 0;
+    const double best = bestOfAllOrders(m, orders);
+    ASSERT_TRUE(std::isfinite(best)) << "no order has a route (seed " << seed << ")";
+    ASSERT_TRUE(free.plan.solved) << free.plan.reason;
+    ASSERT_TRUE(free.orderSearch.has_value());
+    EXPECT_NEAR(free.plan.travelTime, best, 1e-9 * best) << "seed " << seed;
+    EXPECT_EQ(free.orderSearch->ordersTotal, orders);
+    EXPECT_LE(free.orderSearch->ordersEvaluated, orders);
+    EXPECT_GE(free.orderSearch->gain, 0.0);
+    EXPECT_NEAR(free.orderSearch->chosenTime, free.plan.travelTime, 1e-12);
+    // the chosen order visits every via point once
+    std::vector<std::size_t> sorted = free.order;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t i = 0; i < n; ++i)
+        EXPECT_EQ(sorted[i], i);
+}
+}  // namespace
+
+// Branch and bound over orders returns the fastest of all n! orders, each planned by the same pipeline.
+TEST(MissionLegsFreeOrder, BestOfAllOrdersOnTheJetAndTheDoubleGyre)
+{
+    checkFreeOrder(kJet, kJetRegion, Box{0, 10, -4, 4}, 4, 7);
+    checkFreeOrder("{type: double_gyre}", "{x_min: 0, x_max: 2, y_min: 0, y_max: 1}", Box{0, 2, 0, 1}, 4, 11);
+}
+
+// The bound never exceeds a planned time: it is admissible on every prefix the search may drop.
+TEST(MissionLegsFreeOrder, BoundIsBelowThePlannedTime)
+{
+    MissionSpec m = mission(kJet, kJetRegion, {1, -3}, {8, 3}, {{3, 2}, {6, -2}, {5, 0.5}},
+                            "planner: {grid_size: 0.4}\n");
+    const MissionProblem problem(m);
+    const MissionPlan plan = planMission(problem, 0.0);
+    ASSERT_TRUE(plan.plan.solved);
+    Region box = problem.getBox();
+    const double c = problem.getField()->maxSpeed(box);
+    EXPECT_LE(remainingTimeBound(problem, problem.getStart(), 0.0, {0, 1, 2}, 0.5, c), plan.plan.travelTime);
+    EXPECT_LE(remainingTimeBound(problem, problem.getViaPoints()[0], plan.legs[0].arrival(), {1, 2}, 0.5, c),
+              plan.plan.path.back().t);
+    // a closed form: no current, no via points left: the straight distance at V
+    MissionSpec still = mission("{type: uniform, parameters: {u: 0, v: 0}}", "{x_min: 0, x_max: 10, y_min: -4, y_max: 4}", {1, 0},
+                                {9, 0}, {{5, 3}});
+    const MissionProblem p2(still);
+    EXPECT_NEAR(remainingTimeBound(p2, {1, 0}, 0.0, {0}, 0.5, 0.0), (5.0 + 5.0) / 0.5, 1e-12);  // two 3-4-5 legs
+}
+
+// A stay in a weak current holds in place for its duration; the next leg leaves when it ends.
+TEST(MissionLegs, StayHoldsInPlaceInAWeakCurrent)
+{
+    MissionSpec m = parseMission("current: {type: uniform, parameters: {u: 0.1, v: 0}}\n"
+                                 "region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
+                                 "start: {x: 1, y: 0}\ngoal: {x: 9, y: 1}\nvehicle: {speed: 0.5}\n"
+                                 "waypoints:\n  - {name: M, x: 5, y: -2, stay: 3}\n");
+    const MissionProblem problem(m);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    ASSERT_EQ(r.legs.size(), 2u);
+    const TimedPoint a = r.plan.path[r.legs[0].lastPoint], b = r.plan.path[r.legs[1].firstPoint];
+    EXPECT_EQ(a.x, b.x);
+    EXPECT_EQ(a.y, b.y);
+    EXPECT_NEAR(b.t - a.t, 3.0, 1e-12);
+    EXPECT_NEAR(r.plan.holdTime, 3.0, 1e-9);
+    // closed form: a straight leg in a uniform current, |d| / (c.p + sqrt(V^2 - |c x p|^2)), twice, plus the stay
+    auto leg = [](Point2 p, Point2 q) {
+        const double d = std::hypot(q.x - p.x, q.y - p.y), ux = (q.x - p.x) / d, uy = (q.y - p.y) / d;
+        const double along = 0.1 * ux, cross = 0.1 * uy;
+        return d / (along + std::sqrt(0.25 - cross * cross));
+    };
+    EXPECT_NEAR(r.plan.travelTime, leg({1, 0}, {5, -2}) + 3.0 + leg({5, -2}, {9, 1}), 1e-6);
+    ReflightSettings s;
+    s.speed = 0.5;
+    s.keepSlowLegs = true;
+    const PathReflight f = reflyPath(r.plan.path, *problem.getField(), nullptr, s);
+    ASSERT_TRUE(f.feasible) << f.why;
+    EXPECT_NEAR(f.arrivalTime, r.plan.path.back().t, 1e-6);
+}
+
+// Where the current is faster than the glider, no stay is invented: the reason names the leg and the current.
+TEST(MissionLegs, StayInACurrentFasterThanTheGliderIsRefused)
+{
+    MissionSpec m = parseMission("current: {type: uniform, parameters: {u: 0.8, v: 0}}\n"
+                                 "region: {x_min: 0, x_max: 20, y_min: -4, y_max: 4}\n"
+                                 "start: {x: 1, y: 0}\ngoal: {x: 15, y: 0}\nvehicle: {speed: 0.5}\n"
+                                 "waypoints:\n  - {name: M, x: 6, y: 0, stay: 2}\n");
+    const MissionResult r = runMission(MissionProblem(m));
+    EXPECT_FALSE(r.plan.solved);
+    EXPECT_EQ(r.plan.status, PlanStatus::NoPath);
+    EXPECT_NE(r.plan.reason.find("leg 1, start to M"), std::string::npos) << r.plan.reason;
+    EXPECT_NE(r.plan.reason.find("cannot hold position"), std::string::npos) << r.plan.reason;
+    EXPECT_TRUE(r.plan.badInput.empty());
+    EXPECT_TRUE(r.waypoints.empty());  // never a partial plan presented as whole
+    // without the stay the same mission plans
+    m.waypoints[0].stay = 0.0;
+    EXPECT_TRUE(runMission(MissionProblem(m)).plan.solved);
+}
+
+// Bad via points are refused naming the field and line.
+TEST(MissionLegs, BadViaPointsNameTheFieldAndLine)
+{
+    const std::string head = "current: {type: meandering_jet}\nregion: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
+                             "start: {x: 1, y: -3}\ngoal: {x: 8, y: 3}\n";
+    const auto refused = [&](const std::string &tail, const std::string &what) {
+        try
+        {
+            const MissionProblem p(parseMission(head + tail, "m.yaml"));
+            runMission(p);
+        }
+        catch (const Error &e)
+        {
+            EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+            return;
+        }
+        ADD_FAILURE() << "accepted: " << tail;
+    };
+    refused("waypoints:\n  - {x: 3, y: 0, radius: 0}\n", "m.yaml:6: field 'waypoints[0].radius'");
+    refused("waypoints:\n  - {x: 3, y: 0, radius: -5}\n", "waypoints[0].radius");
+    refused("waypoints:\n  - {name: A, x: 3, y: 0}\n  - {name: A, x: 4, y: 0}\n", "m.yaml:7: field 'waypoints[1].name'");
+    refused("waypoints:\n  - {name: start, x: 3, y: 0}\n", "waypoints[0].name");
+    refused("waypoints:\n  - {name: 'A B', x: 3, y: 0}\n", "not a plain name");
+    refused("waypoints:\n  - {x: 30, y: 0}\n", "waypoints[0]");
+    refused("waypoints:\n  - {x: 3, y: 0, arrive: {begin: 5, end: 2}}\n", "waypoints[0].arrive.end");
+    refused("waypoints:\n  - {x: 3, y: 0, arrive: {end: 0.1}}\n", "before the glider can get there");
+    refused("waypoints:\n  - {x: 3, y: 0}\norder: sideways\n", "field 'order'");
+    std::string nine = "waypoints:\n";
+    for (int i = 0; i < 9; ++i)
+        nine += "  - {x: " + std::to_string(1 + i) + ", y: 1}\n";
+    refused(nine + "order: free\n", "at most 8");
+    refused("waypoints:\n  - {x: 3, y: 0}\nforbidden:\n  obstacles:\n    - {name: rock, points: [[2, -1], [4, -1], "
+            "[4, 1], [2, 1]]}\n",
+            "waypoints[0]");
+}
