@@ -101,6 +101,50 @@ void MissionProblem::snapEndpoints()
     }
 }
 
+MissionProblem MissionProblem::withMember(std::size_t member) const
+{
+    MissionProblem p(*this);
+    p.field_ = members_.at(member);
+    p.members_.clear();
+    return p;
+}
+
+MissionProblem MissionProblem::withLeg(Point2 start, Point2 goal, const GoalWindowSpec &window) const
+{
+    MissionProblem p(*this);
+    p.start_ = start;
+    p.goal_ = goal;
+    p.spec_.goalWindow = window;
+    p.spec_.waypoints.clear();
+    p.via_.clear();
+    // the spec's ends are the leg's (x/y in the file's units, or lon/lat), as a one-leg mission between them has
+    for (const auto &[spec, q] : {std::pair<PointSpec *, Point2>{&p.spec_.start, start}, {&p.spec_.goal, goal}})
+        if (spec->geographic)
+            spec->lonLat = toGeographic(q);
+        else
+            spec->xy = {q.x / xyScale_, q.y / xyScale_};
+    if (gridSizeAutomatic_)
+    {
+        // the automatic lattice spacing follows the leg's own length, as a one-leg mission's does
+        const FieldGrid *grid = (members_.empty() ? field_ : members_.front())->grid();
+        const double d = std::hypot(goal.x - start.x, goal.y - start.y);
+        if (d > 0.0)
+            p.spec_.planner.gridSize =
+                grid ? defaultForecastGridSize(grid->minCellSize(), d) : defaultAnalyticGridSize(p.spec_, d);
+    }
+    return p;
+}
+
+MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
+{
+    MissionProblem p(*this);
+    p.start_ = start;
+    if (goal.x != goal_.x || goal.y != goal_.y)
+        p.spec_.goalWindow = {};  // the window belongs to the mission's goal
+    p.goal_ = goal;
+    return p;
+}
+
 void MissionProblem::checkViaPoints() const
 {
     const MissionSpec &m = spec_;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../io/NumberText.h"
 #include "loader/MissionReader.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Time.h"
@@ -383,6 +384,18 @@ MissionSpec defaultGulfStreamMission()
     m.outputs.files = {OutputFormatId::Summary, OutputFormatId::Path, OutputFormatId::Csv, OutputFormatId::GeoJson,
                        OutputFormatId::Map};
     return m;
+}
+
+double defaultForecastGridSize(double minCellSize, double distance)
+{
+    double g = 0.5 * minCellSize;
+    if (distance > 0.0)
+        g = std::clamp(g, distance / 200.0, distance / 25.0);
+    if (!(g > 0.0) || !std::isfinite(g))
+        throw Error("cannot choose a grid size (cell size " + text::number(minCellSize) + ", start-goal distance " +
+                    text::number(distance) + "): give planner.grid_size (--grid-size)");
+    const double scale = std::pow(10.0, std::floor(std::log10(g)) - 1.0);  // two significant digits
+    return std::round(g / scale) * scale;
 }
 
 double defaultAnalyticGridSize(const MissionSpec &m, double distance)

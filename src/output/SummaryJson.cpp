@@ -246,6 +246,15 @@ json globalCheckJson(const PlannedPath &p)
             {"current_model_calls", g.currentModelCalls},
             {"wall_time_s", g.seconds}};
 }
+/// The dive profiles generated for the mission and how one is chosen per leg.
+json diveProfilesJson(const MissionResult &r)
+{
+    json profiles = json::array();
+    for (const DiveProfile &d : r.profileSet)
+        profiles.push_back({{"climb_to", d.climbTo}, {"dive_to", d.diveTo}});
+    return {{"selection", toString(r.spec.dive.params.selection)}, {"profiles", profiles}};
+}
+
 /// A mission of several legs: each leg's ends, times, planner, status and global check; the via points; the order.
 void legsJson(const MissionResult &r, const MissionProblem &problem, json &j)
 {
@@ -414,12 +423,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                                 {"travel_time", jnum(r.optimum->travelTime)},
                                 {"ratio", jnum(p.travelTime / r.optimum->travelTime)}};
     if (r.diveProfiles)
-    {
-        json profiles = json::array();
-        for (const DiveProfile &d : r.profileSet)
-            profiles.push_back({{"climb_to", d.climbTo}, {"dive_to", d.diveTo}});
-        j["dive_profiles"] = {{"selection", toString(m.dive.params.selection)}, {"profiles", profiles}};
-    }
+        j["dive_profiles"] = diveProfilesJson(r);
     if (r.departureSearch)
         j["departure_search"] = departureSearchJson(m, *r.departureSearch);
     if (!r.speedSweep.empty())
