@@ -4,3 +4,5 @@ glider_add_benchmark(bench_dive_profiles ${CMAKE_CURRENT_LIST_DIR}/mission/bench
 # the trust benchmark: the default against an independent extremal sweep over random pairs (docs/TRUST.md)
 glider_add_benchmark(bench_trust ${CMAKE_CURRENT_LIST_DIR}/mission/bench_trust.cpp)
 target_include_directories(bench_trust PRIVATE ${PROJECT_SOURCE_DIR}/tests/mission)
+# missions of several legs: legs on one clock against guessed departures; the free order against n!
+glider_add_benchmark(bench_legs ${CMAKE_CURRENT_LIST_DIR}/mission/bench_legs.cpp)

@@ -333,6 +333,23 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
     d["start"] = f.at(s);
     d["goal"] = f.at(g);
     d["goal_tolerance"] = f.length(m.planner.goalTolerance);
+    // a mission's via points: position, radius, arrival (a date where the field has dates) and stay
+    json stations = json::array();
+    for (std::size_t i = 0; i < p.getViaPoints().size(); ++i)
+    {
+        const ViaPointSpec &v = m.waypoints[i];
+        json st{{"name", v.name}, {"at", f.at(p.getViaPoints()[i])},
+                {"radius", std::isfinite(v.radius) ? f.length(v.radius) : json(nullptr)},
+                {"stay", v.stay > 0.0 ? json(v.stay) : json(nullptr)}, {"arrival", nullptr}};
+        for (const PlannedLeg &l : r.legs)
+            if (l.toVia == static_cast<int>(i) && l.plan.solved)
+            {
+                const std::string iso = p.isoTime(l.arrival());
+                st["arrival"] = iso.empty() ? json(l.arrival()) : json(iso);
+            }
+        stations.push_back(st);
+    }
+    d["stations"] = stations;
     d["isochrones"] = isochronesJson(r, p, f);
     json land = json::array(), band = json::array(), coast = json::array(), forbidden = json::array();
     landAndBand(p, f, land, band);

@@ -117,6 +117,7 @@ private:
     void drawTimeTicks(const MapPath &p) const;
     /// The start disc and the goal star, labelled.
     void drawStartGoal() const;
+    void drawStations() const;  ///< via points: marker, radius, name and arrival
 
     // --- grid, frame and axes (MapRendererAxes.cpp)
     /// The light x/y grid, or the graticule in a geographic frame, inside the plot.

@@ -278,6 +278,7 @@ void MapPainter::paint()
         drawRegion(poly);
     for (const MapPath &p : map.paths_)
         drawPath(p);
+    drawStations();
     if (map.hasStartGoal_)
         drawStartGoal();
     cairo_restore(cr);
@@ -461,6 +462,26 @@ void MapPainter::drawTimeTicks(const MapPath &p) const
     }
 }
 
+void MapPainter::drawStations() const
+{
+    for (const auto &st : map.stations_)
+    {
+        const double x = X(st.at.x), y = Y(st.at.y), r = std::max(7.0, st.radius * scale);
+        cairo_new_path(cr);
+        cairo_arc(cr, x, y, r, 0, 2 * kPi);
+        cairo_set_source_rgba(cr, 0.95, 0.55, 0.0, 0.9);
+        cairo_set_line_width(cr, 1.5);
+        cairo_stroke(cr);
+        cairo_rectangle(cr, x - 4.5, y - 4.5, 9, 9);
+        cairo_set_source_rgb(cr, 0.95, 0.55, 0.0);
+        cairo_fill_preserve(cr);
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_set_line_width(cr, 1.2);
+        cairo_stroke(cr);
+        haloText(cr, x + 10, y + 14, st.label, {0.55, 0.30, 0.0, 1}, 11, true);
+    }
+}
+
 void MapPainter::drawStartGoal() const
 {
     cairo_new_path(cr);
@@ -538,6 +559,11 @@ void MapRenderer::addPath(MapPath path)
 {
     if (!path.waypoints.empty())
         paths_.push_back(std::move(path));
+}
+
+void MapRenderer::addStation(Point2 at, double radius, std::string label)
+{
+    stations_.push_back({at, std::isfinite(radius) ? radius : 0.0, std::move(label)});
 }
 
 void MapRenderer::setStartGoal(double sx, double sy, double gx, double gy)

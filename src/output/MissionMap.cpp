@@ -314,6 +314,20 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
     }
     const Point2 s = problem.getStart(), g = problem.getGoal();
     map.setStartGoal(s.x, s.y, g.x, g.y);
+    // a mission's via points: their radius, name and arrival (a date where the field has dates)
+    for (std::size_t i = 0; i < problem.getViaPoints().size(); ++i)
+    {
+        const ViaPointSpec &v = m.waypoints[i];
+        std::string label = v.name;
+        for (const PlannedLeg &l : r.legs)
+            if (l.toVia == static_cast<int>(i) && l.plan.solved)
+            {
+                const std::string iso = problem.isoTime(l.arrival());
+                label += " " + (iso.empty() ? "t=" + fmt(l.arrival()) : iso.substr(0, 16) + "Z") +
+                         (l.stay > 0.0 ? " (stay " + duration(r, l.stay) + ")" : "");
+            }
+        map.addStation(problem.getViaPoints()[i], v.radius, label);
+    }
     // the departure as a date when the field has dates (also without a path)
     const std::string iso = problem.isoTime(r.plan.departure);
     map.addNote("departure " + (iso.empty() ? fmt(r.plan.departure) : iso));

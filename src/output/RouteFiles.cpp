@@ -485,19 +485,47 @@ std::string routeKml(const MissionResult &r, const MissionProblem *problem)
                 "years 1-9999: a climatology's or a model calendar's)"
               : "") +
          "</description>\n<styleUrl>#route</styleUrl>\n" + kmlLines(pieces) + "\n</Placemark>\n";
-    k += "<Folder>\n<name>waypoints</name>\n";
-    for (std::size_t i = 0; i < r.waypoints.size(); ++i)
+    // the waypoints first..last: a placemark each (a mission's stops by their names)
+    const auto placemarks = [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i <= last && i < r.waypoints.size(); ++i)
+        {
+            const MissionWaypoint &w = r.waypoints[i];
+            const std::string stop = stopName(r, i);
+            const std::string name = !stop.empty()                ? stop
+                                     : i == 0                     ? "start"
+                                     : i + 1 == r.waypoints.size() ? "goal"
+                                                                  : "WP " + std::to_string(i);
+            k += "<Placemark>\n<name>" + xmlEscaped(name) + "</name>\n";
+            if (gregorianDates(r, w.iso))
+                k += "<TimeStamp><when>" + w.iso + "</when></TimeStamp>\n";
+            k += "<description>" +
+                 xmlEscaped(w.iso.empty() ? "t = " + text::number(w.time, 10) : (i == 0 ? "departure " : "arrival ") + w.iso) +
+                 "</description>\n<Point><coordinates>" + kmlCoordinates({w.lonLat}) + "</coordinates></Point>\n"
+                 "</Placemark>\n";
+        }
+    };
+    if (r.legs.empty())
     {
-        const MissionWaypoint &w = r.waypoints[i];
-        const std::string name = i == 0 ? "start" : i + 1 == r.waypoints.size() ? "goal" : "WP " + std::to_string(i);
-        k += "<Placemark>\n<name>" + name + "</name>\n";
-        if (gregorianDates(r, w.iso))
-            k += "<TimeStamp><when>" + w.iso + "</when></TimeStamp>\n";
-        k += "<description>" + xmlEscaped(w.iso.empty() ? "t = " + text::number(w.time, 10) : (i == 0 ? "departure " : "arrival ") + w.iso) +
-             "</description>\n<Point><coordinates>" + kmlCoordinates({w.lonLat}) + "</coordinates></Point>\n"
-             "</Placemark>\n";
+        k += "<Folder>\n<name>waypoints</name>\n";
+        placemarks(0, r.waypoints.size() - 1);
+        k += "</Folder>\n";
     }
-    k += "</Folder>\n";
+    // a mission of several legs: a folder per leg, its line and its waypoints
+    for (const PlannedLeg &l : r.legs)
+    {
+        std::vector<LonLat> line;
+        for (std::size_t i = l.firstPoint; i <= l.lastPoint && i < r.waypoints.size(); ++i)
+            line.push_back(r.waypoints[i].lonLat);
+        const double legTime = l.plan.travelTime;
+        k += "<Folder>\n<name>" + xmlEscaped("leg " + std::to_string(l.index + 1) + ": " + l.from + " to " + l.to) +
+             "</name>\n<Placemark>\n<name>" + xmlEscaped("leg " + std::to_string(l.index + 1)) + "</name>\n<description>" +
+             xmlEscaped("travel time " + (units.time ? text::durationText(legTime * r.spec.timeUnitSeconds)
+                                                     : text::number(legTime)) +
+                        (l.stay > 0.0 ? ", then a stay at " + l.to : std::string())) +
+             "</description>\n<styleUrl>#route</styleUrl>\n" + kmlLines(splitAtAntimeridian(line)) + "\n</Placemark>\n";
+        placemarks(l.firstPoint, l.lastPoint);
+        k += "</Folder>\n";
+    }
     if (r.isochrones && !r.isochrones->contours.empty())
     {
         k += "<Folder>\n<name>isochrones</name>\n";

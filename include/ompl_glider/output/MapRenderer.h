@@ -104,6 +104,9 @@ public:
     void addPath(MapPath path);
     /// @brief Start and goal markers.
     void setStartGoal(double sx, double sy, double gx, double gy);
+    /// @brief A station of a mission of several legs (a via point): a square marker, its radius as a circle (in the
+    /// frame's units; at least the marker's size on the page) and @p label beside it (its name and arrival date).
+    void addStation(Point2 at, double radius, std::string label);
     /// @brief A free text line under the legend (e.g. "travel time 12.3").
     void addNote(std::string note);
 
@@ -138,5 +141,12 @@ private:
     bool hasStartGoal_{false};
     double sx_{0.0}, sy_{0.0}, gx_{0.0}, gy_{0.0};
     std::vector<std::string> notes_;
+    struct Station
+    {
+        Point2 at;
+        double radius;
+        std::string label;
+    };
+    std::vector<Station> stations_;
 };
 }  // namespace ompl_glider
