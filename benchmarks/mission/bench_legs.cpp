@@ -56,8 +56,9 @@ double guessedLegsFlown(const MissionProblem &problem)
         const MissionProblem leg = problem.withLeg(stops[k], stops[k + 1], {});
         const PlannedPath p = planRoute(leg, guess, {});
         guess += std::hypot(stops[k + 1].x - stops[k].x, stops[k + 1].y - stops[k].y) / V;
-        if (!p.solved || p.headingRoute())
-            return std::numeric_limits<double>::infinity();  // (a heading route is not re-timed here)
+        if (!p.solved)
+            return std::numeric_limits<double>::infinity();
+        // the waypoints a pilot uploads (a heading route's segment ends) flown as straight legs
         std::vector<TimedPoint> path = p.path;
         const double t0 = path.front().t;
         for (TimedPoint &q : path)

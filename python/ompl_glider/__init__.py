@@ -378,6 +378,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
          goal_tolerance: Optional[float] = None, isochrones: bool = False,
          isochrone_interval: Union[None, float, str] = None, arrive_between: Optional[Tuple[Any, Any]] = None,
          coastline: Union[None, str, os.PathLike] = None, goto_turn: Optional[float] = None,
+         via: Optional[Sequence[Any]] = None, order: Optional[str] = None,
          speeds: Optional[Sequence[float]] = None,
          optimum: bool = False, progress: Optional[ProgressCallback] = None) -> Result:
     """Plans a mission with the library's one pipeline and returns its :class:`Result`.
@@ -394,7 +395,10 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     planner (a registry name, :func:`planner_names`) and planner_params (its OMPL parameters by name), grid_size,
     sectors, time_limit (s), smoothing, refinement, global_check (False: no global check of the route class,
     docs/TRUST.md), horizon, goal_tolerance, arrive_between ((begin, end): the goal's arrival window, times as
-    departure), coastline (a GIS file of land), goto_turn (the goto list's turn threshold, degrees); isochrones /
+    departure), coastline (a GIS file of land), goto_turn (the goto list's turn threshold, degrees), via (via points
+    between start and goal, a mission of several legs: each a pair (x, y) / (lon, lat), or a dict with ``at`` (the
+    pair), ``name``, ``radius``, ``stay`` (the mission's units) and ``arrive`` ((begin, end), times as departure)),
+    order ("given" or "free": the fastest order of up to 8 via points); isochrones /
     isochrone_interval (a number in the mission's time unit, or a duration such as "6 h") add the reachable-set
     contours (:attr:`Result.isochrones`); speeds a speed sweep; optimum the optimal-control reference. These
     keywords and glider_plan's flags are one set of overrides in the library (Overrides.h): the same values give
@@ -408,7 +412,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                     time_limit=time_limit, smoothing=smoothing, refinement=refinement,
                     global_check=global_check, horizon=horizon, goal_tolerance=goal_tolerance, isochrones=isochrones,
                     isochrone_interval=isochrone_interval, arrive_between=arrive_between,
-                    coastline=None if coastline is None else os.fspath(coastline), goto_turn=goto_turn)
+                    coastline=None if coastline is None else os.fspath(coastline), goto_turn=goto_turn,
+                    via=None if via is None else list(via), order=order)
     if planner_params is not None:
         keywords["planner_params"] = {k: (str(v).lower() if isinstance(v, bool) else str(v))
                                       for k, v in planner_params.items()}

@@ -170,16 +170,6 @@ void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
     }
 }
 
-/// A via point's name: a letter, then letters, digits, '_' or '-', at most 16 characters (it is written into the
-/// Seaglider targets file).
-bool plainName(const std::string &name)
-{
-    if (name.empty() || name.size() > 16 || !std::isalpha(static_cast<unsigned char>(name[0])))
-        return false;
-    return std::all_of(name.begin(), name.end(),
-                       [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; });
-}
-
 void applyVia(const MissionOverrides &o, MissionSpec &m)
 {
     if (o.via)
@@ -205,7 +195,7 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
             }
             if (v.name.empty())
                 v.name = "WP" + std::to_string(i + 1);
-            if (!plainName(v.name))
+            if (!plainViaPointName(v.name))
                 throw Error(at + ": '" + v.name + "' is not a plain name (a letter, then letters, digits, '_' or '-'; "
                                  "at most 16 characters)");
             if (!names.insert(v.name).second)

@@ -339,7 +339,7 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
     {
         const ViaPointSpec &v = m.waypoints[i];
         json st{{"name", v.name}, {"at", f.at(p.getViaPoints()[i])},
-                {"radius", std::isfinite(v.radius) ? f.length(v.radius) : json(nullptr)},
+                {"radius", std::isfinite(v.radius) ? json(f.length(v.radius)) : json(nullptr)},
                 {"stay", v.stay > 0.0 ? json(v.stay) : json(nullptr)}, {"arrival", nullptr}};
         for (const PlannedLeg &l : r.legs)
             if (l.toVia == static_cast<int>(i) && l.plan.solved)

@@ -212,7 +212,7 @@ TEST(MissionRun, GeographicOutputsGotoAndIsoTimes)
     // 13.333... hours later.
     EXPECT_EQ(r.waypoints.back().iso, "2026-01-01T13:20:00Z");
     const std::vector<std::string> files = writeOutputs(r, problem);
-    EXPECT_EQ(files.size(), 5u);  // summary.json, waypoints.csv, path.geojson, route.kml, goto_l03.ma
+    EXPECT_EQ(files.size(), 6u);  // summary.json, waypoints.csv, path.geojson, route.kml, goto_l03.ma, targets
     const GotoList back = readGotoFile(spec.outputs.directory + "/goto_l03.ma");
     EXPECT_EQ(back.number, 3);
     ASSERT_EQ(back.waypoints.size(), r.waypoints.size() - 1);  // the start is where the glider already is

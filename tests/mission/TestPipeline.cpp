@@ -553,7 +553,7 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
     for (const auto &f : files)
         written.insert(fs::path(f).filename().string());
     EXPECT_EQ(written, (std::set<std::string>{"summary.json", "waypoints.csv", "path.geojson", "route.kml",
-                                              "goto_l05.ma", "stints.csv", "map.svg", "map.png",
+                                              "goto_l05.ma", "targets", "stints.csv", "map.svg", "map.png",
                                               "map.html"}));
 
     // waypoints.csv: the heading held from each waypoint and its duration, empty at the last one.

@@ -171,6 +171,9 @@ enum class VisitOrder
 const char *visitOrderName(VisitOrder o);
 /// @brief The order named @p name. @throws Error for another name (saying which are known).
 VisitOrder parseVisitOrder(const std::string &name);
+/// @brief True for a via point's name: a letter, then letters, digits, '_' or '-', at most 16 characters (it is
+/// written into the Seaglider targets file).
+bool plainViaPointName(const std::string &name);
 /// @brief The most via points `order: free` accepts (the search is exponential in their number).
 constexpr std::size_t kMaxFreeOrderViaPoints = 8;
 

@@ -15,6 +15,16 @@ const char *visitOrderName(VisitOrder o)
     return o == VisitOrder::Free ? "free" : "given";
 }
 
+bool plainViaPointName(const std::string &name)
+{
+    if (name.empty() || name.size() > 16 || !std::isalpha(static_cast<unsigned char>(name[0])))
+        return false;
+    for (const char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
+            return false;
+    return true;
+}
+
 VisitOrder parseVisitOrder(const std::string &name)
 {
     if (name == "given")
@@ -28,17 +38,6 @@ namespace mission_loader
 {
 namespace
 {
-/// A via point's name is written into the Seaglider targets file and the goto list's comments: a plain word.
-bool plainName(const std::string &name)
-{
-    if (name.empty() || name.size() > 16 || !std::isalpha(static_cast<unsigned char>(name[0])))
-        return false;
-    for (const char c : name)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'))
-            return false;
-    return true;
-}
-
 /// A scalar read by @p parse (a length or a duration with its unit), refused naming the field.
 template <class Parse>
 double scalar(const Reader &r, const YAML::Node &n, const std::string &f, const char *expected, Parse parse)
@@ -80,7 +79,7 @@ void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &fiel
         v.line = r.line(w);
         readPoint(r, w, f, v.position, m, {"name", "radius", "arrive", "stay"});
         v.name = w["name"] ? r.text(w["name"], f + ".name") : "WP" + std::to_string(i + 1);
-        if (!plainName(v.name))
+        if (!plainViaPointName(v.name))
             r.fail(w["name"], f + ".name",
                    "'" + v.name + "' is not a plain name (a letter, then letters, digits, '_' or '-'; at most 16 "
                    "characters: it is written into the Seaglider targets file)");
