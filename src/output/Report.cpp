@@ -61,8 +61,9 @@ void printLegs(std::ostream &out, const MissionResult &r)
     if (r.legs.empty())
         return;
     const MissionSpec &m = r.spec;
+    // durations in the table: hours where the unit is known (a column's width), else the field's number
     const auto span = [&](double t) {
-        return m.physicalUnits().time ? text::durationText(t * m.timeUnitSeconds) : format("%.6g", t);
+        return m.physicalUnits().time ? format("%.2f h", t * m.timeUnitSeconds / 3600.0) : format("%.6g", t);
     };
     std::string order;
     for (const std::size_t i : r.order)
