@@ -11,6 +11,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/execution/Reflight.h"
+#include "ompl_glider/mission/Fleet.h"
 #include "ompl_glider/mission/MissionLegs.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/MissionSpec.h"
@@ -255,4 +256,49 @@ TEST(MissionLegs, BadViaPointsNameTheFieldAndLine)
     refused("waypoints:\n  - {x: 3, y: 0}\nforbidden:\n  obstacles:\n    - {name: rock, points: [[2, -1], [4, -1], "
             "[4, 1], [2, 1]]}\n",
             "waypoints[0]");
+}
+
+// A via point on a forecast's land is refused naming it and the nearest water, as a start or goal is; outside the
+// forecast it is refused too.
+TEST(MissionLegs, ViaPointOnLandOrOutsideTheForecastIsRefused)
+{
+    const std::string nc = std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/labrador_forecast.nc";
+    const auto refused = [&](const std::string &via, const std::string &what) {
+        try
+        {
+            MissionProblem p(parseMission("current: {type: netcdf, file: '" + nc + "'}\nstart: {lon: -52.7, lat: 47.9}\n"
+                                          "goal: {lon: -51.5, lat: 48.45}\nwaypoints:\n  - " + via + "\n",
+                                          "m.yaml"));
+        }
+        catch (const Error &e)
+        {
+            EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+            return;
+        }
+        ADD_FAILURE() << "accepted " << via;
+    };
+    refused("{name: L, lon: -51.9, lat: 48.62}", "m.yaml:5: field 'waypoints[0]'");
+    refused("{name: L, lon: -51.9, lat: 48.62}", "on land");
+    refused("{name: F, lon: -40.0, lat: 48.2}", "waypoints[0]");
+}
+
+// A fleet glider with its own via points plans as the same mission planned alone.
+TEST(MissionLegs, FleetGliderWithViaPointsPlansAsItsOwnMission)
+{
+    const MissionSpec m = parseMission(
+        "current: {type: meandering_jet}\nregion: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
+        "vehicle: {speed: 0.5}\nplanner: {grid_size: 0.4}\noutputs: {directory: /tmp/og_fleet_legs}\n"
+        "fleet:\n"
+        "  - {name: a, start: {x: 1, y: -3}, goal: {x: 8, y: 3}, waypoints: [{name: P, x: 3, y: -2.5}]}\n"
+        "  - {name: b, start: {x: 2, y: -3}, goal: {x: 8, y: -3}}\n");
+    const std::vector<FleetGlider> fleet = runFleet(m, {});
+    ASSERT_EQ(fleet.size(), 2u);
+    ASSERT_TRUE(fleet[0].row.solved) << fleet[0].row.reason;
+    const MissionSpec alone = fleetGliderMission(m, 0);
+    ASSERT_EQ(alone.waypoints.size(), 1u);
+    EXPECT_EQ(alone.waypoints[0].name, "P");
+    const MissionResult r = runMission(MissionProblem(alone));
+    ASSERT_EQ(r.legs.size(), 2u);
+    EXPECT_DOUBLE_EQ(fleet[0].row.travelTime, r.plan.travelTime);
+    EXPECT_TRUE(fleetGliderMission(m, 1).waypoints.empty());
 }

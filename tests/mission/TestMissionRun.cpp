@@ -480,7 +480,7 @@ TEST(MissionRun, NetCdfForecastMission)
     // The trip fits in the 5-day forecast.
     EXPECT_LE(r.waypoints.back().time, 5 * 86400.0);
     const std::vector<std::string> files = writeOutputs(r, problem);
-    EXPECT_EQ(files.size(), 3u);  // summary.json, waypoints.csv, goto_l13.ma
+    EXPECT_EQ(files.size(), 4u);  // summary.json, waypoints.csv, goto_l13.ma, targets
     const GotoList g = readGotoFile(spec.outputs.directory + "/goto_l13.ma");
     EXPECT_NEAR(g.waypoints.back().lon, -51.5, 1e-9);
     EXPECT_NEAR(g.waypoints.back().lat, 48.45, 1e-9);
@@ -547,8 +547,8 @@ TEST(MissionRun, ExampleMissionsRunEndToEnd)
         const MissionResult r = runMission(problem);
         EXPECT_TRUE(r.plan.solved) << name << ": " << r.plan.status << ": " << r.plan.reason;
         const std::vector<std::string> files = writeOutputs(r, problem);
-        // summary.json, waypoints.csv, path.geojson, route.kml, goto list, map.svg + map.png + map.html
-        EXPECT_EQ(files.size(), 8u) << name;
+        // summary.json, waypoints.csv, path.geojson, route.kml, goto list, targets, map.svg + map.png + map.html
+        EXPECT_EQ(files.size(), 9u) << name;
         for (const auto &f : files)
             EXPECT_TRUE(std::ifstream(f).good()) << f;
         for (const char *f : {"summary.json", "waypoints.csv", "path.geojson", "route.kml", "map.svg", "map.png",

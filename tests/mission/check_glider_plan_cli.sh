@@ -48,8 +48,8 @@ assert rows[0.4]["travel_time"] > rows[0.5]["travel_time"] > rows[0.6]["travel_t
 assert abs(rows[0.5]["travel_time"] - s["travel_time"]) <= 1e-9 * s["travel_time"], (rows[0.5], s["travel_time"])
 # fixed file names, all listed in the summary
 names = sorted(os.listdir(d))
-assert names == sorted(["summary.json", "waypoints.csv", "path.geojson", "route.kml", "goto_l11.ma", "map.svg",
-                        "map.png", "map.html"]), names
+assert names == sorted(["summary.json", "waypoints.csv", "path.geojson", "route.kml", "goto_l11.ma", "targets",
+                        "map.svg", "map.png", "map.html"]), names
 assert sorted(s["files"]) == names and s["files"][0] == "summary.json", s["files"]
 head = open(os.path.join(d, "waypoints.csv")).readline().strip()
 assert head.startswith("index,x,y,lon,lat,time"), head
@@ -130,7 +130,7 @@ dist = ((rows[-1][1] - rows[0][1]) ** 2 + (rows[-1][2] - rows[0][2]) ** 2) ** 0.
 assert dist / (0.3 + 0.6) < s["travel_time"] < 5 * 86400
 names = sorted(os.listdir(d))
 assert names == sorted(["summary.json", "path.csv", "map.png", "map.svg", "map.html", "waypoints.csv",
-                        "path.geojson", "route.kml", "goto_l10.ma"]), names
+                        "path.geojson", "route.kml", "goto_l10.ma", "targets"]), names
 assert sorted(s["files"]) == names, s["files"]
 assert open(os.path.join(d, "map.png"), "rb").read()[:8] == b"\x89PNG\r\n\x1a\n"
 print("--currents OK")
