@@ -151,7 +151,8 @@ json routeJson(const MissionResult &r, const MissionProblem &p, const Frame &f)
     route["travel_time"] = plan.solved ? elapsedText(m, plan.travelTime) : "no path";
     route["start"] = f.at(p.getStart());
     route["goal"] = f.at(p.getGoal());
-    route["points"] = plan.solved ? f.line(plan.headingRoute() ? plan.track : plan.path) : json::array();
+    // a heading route's flown track (also a mission whose legs mix straight legs and held headings)
+    route["points"] = plan.solved ? f.line(plan.track.size() > 1 ? plan.track : plan.path) : json::array();
     json wps = json::array();
     const CurrentField &field = *p.getField();
     const double z = m.vehicle.depth;

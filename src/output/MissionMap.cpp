@@ -107,6 +107,14 @@ void addPaths(MapRenderer &map, const MissionResult &r)
     if (finalDiffers)
         map.addPath(MapRenderer::refinedPathStyle(
             "refined: " + std::to_string(p.path.size()) + " wp, T=" + duration(r, p.travelTime, true), fin));
+    if (p.track.size() > 1)
+    {
+        // a mission whose legs mix straight legs and held headings: the flown track over the waypoints
+        MapPath t = MapRenderer::refinedPathStyle("flown track (legs of held headings drift)", p.track);
+        t.waypointMarkers = false;
+        t.width = 1.5;
+        map.addPath(t);
+    }
 }
 /// A heading route: the flown track of held headings (time ticks), the segment ends marked.
 void addHeadingRoute(MapRenderer &map, const MissionResult &r)
@@ -205,7 +213,7 @@ MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &pro
         map.addPolygon(mapPolygon(p));
     if (r.plan.solved)
     {
-        MapPath plan = MapRenderer::refinedPathStyle("plan", r.plan.headingRoute() ? r.plan.track : r.plan.path);
+        MapPath plan = MapRenderer::refinedPathStyle("plan", r.plan.track.size() > 1 ? r.plan.track : r.plan.path);
         plan.waypointMarkers = !r.plan.headingRoute();  // a heading route's track: a point per integration step
         map.addPath(plan);
     }

@@ -331,6 +331,15 @@ bool isViaArrival(const MissionResult &r, std::size_t i)
             return true;
     return false;
 }
+
+/// Waypoint @p i ends a segment of a leg flown as held headings (a mission whose legs mix both kinds).
+bool inHeadingLeg(const MissionResult &r, std::size_t i)
+{
+    for (const PlannedLeg &l : r.legs)
+        if (l.plan.headingRoute() && i > l.firstPoint && i <= l.lastPoint)
+            return true;
+    return false;
+}
 }  // namespace
 
 std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const MissionProblem *problem)
@@ -347,7 +356,7 @@ std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const Missi
     for (std::size_t i = 1; i + 1 < n; ++i)
     {
         const std::size_t k = kept.back();
-        if (isViaArrival(r, i) && !same(i, k))  // a station of the mission is always listed
+        if ((isViaArrival(r, i) && !same(i, k)) || inHeadingLeg(r, i))  // stations, and held headings' segment ends
         {
             kept.push_back(i);
             continue;

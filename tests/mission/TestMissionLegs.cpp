@@ -280,6 +280,8 @@ TEST(MissionLegs, ViaPointOnLandOrOutsideTheForecastIsRefused)
     refused("{name: L, lon: -51.9, lat: 48.62}", "m.yaml:5: field 'waypoints[0]'");
     refused("{name: L, lon: -51.9, lat: 48.62}", "on land");
     refused("{name: F, lon: -40.0, lat: 48.2}", "waypoints[0]");
+    refused("{name: S, lon: -52.2, lat: 48.0, stay: 10 d}", "m.yaml:5: field 'waypoints[0].stay'");
+    refused("{name: S, lon: -52.2, lat: 48.0, stay: 10 d}", "longer than the whole forecast");
 }
 
 // A fleet glider with its own via points plans as the same mission planned alone.
