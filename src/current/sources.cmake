@@ -8,5 +8,6 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/CurrentFieldRegistry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ShiftedTimeField.cpp
   ${CMAKE_CURRENT_LIST_DIR}/EnsembleField.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/CorrectedField.cpp
 )
 include(${CMAKE_CURRENT_LIST_DIR}/gridded.cmake)

@@ -1,0 +1,171 @@
+/// @file CorrectedField.cpp
+/// @brief Optimal interpolation of a glider's depth-averaged currents onto a forecast (CorrectedField.h).
+
+#include "ompl_glider/current/CorrectedField.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Dense>
+
+#include "ompl_glider/Exception.h"
+
+namespace ompl_glider
+{
+namespace
+{
+/// Past this many scales a Gaussian weight is below exp(-12.5) (4e-6): left out.
+constexpr double kCutoff = 5.0;
+}  // namespace
+
+CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base, const std::vector<DacObservation> &observations,
+                               CorrectionParams params)
+    : base_(std::move(base)), params_(params)
+{
+    if (!base_)
+        throw Error("CorrectedField: no forecast");
+    for (const double v : {params_.lengthScale, params_.timeScale, params_.errorRatio})
+        if (!(v > 0.0) || !std::isfinite(v))
+            throw Error("CorrectedField: the length scale, time scale and error ratio must be finite and > 0");
+    summary_.given = observations.size();
+    std::vector<DacObservation> kept;
+    const FieldGrid *grid = base_->grid();
+    for (const DacObservation &o : observations)
+    {
+        if (!std::isfinite(o.t) || !std::isfinite(o.at.x) || !std::isfinite(o.at.y) || !std::isfinite(o.dac.u) ||
+            !std::isfinite(o.dac.v))
+            ++summary_.notFinite;
+        else if (o.t < base_->timeBegin() || o.t > base_->timeEnd() || (grid && !grid->covers(o.at.x, o.at.y)) ||
+                 !base_->inWater(o.at.x, o.at.y, params_.depthTop))
+            ++summary_.outsideForecast;
+        else
+            kept.push_back(o);
+    }
+    std::stable_sort(kept.begin(), kept.end(), [](const DacObservation &a, const DacObservation &b) { return a.t < b.t; });
+    if (kept.size() > params_.maxObservations)
+    {
+        summary_.older = kept.size() - params_.maxObservations;
+        kept.erase(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(summary_.older));
+    }
+    used_ = std::move(kept);
+    summary_.used = used_.size();
+    const std::size_t n = used_.size();
+    if (n == 0)
+        return;
+    // innovations against the depth-averaged forecast, and the covariance of the observations
+    Eigen::VectorXd du(n), dv(n);
+    double before = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const Velocity f = depthAveraged(used_[i].at.x, used_[i].at.y, used_[i].t);
+        du[i] = used_[i].dac.u - f.u;
+        dv[i] = used_[i].dac.v - f.v;
+        before += du[i] * du[i] + dv[i] * dv[i];
+    }
+    summary_.rmsBefore = std::sqrt(before / n);
+    const double L2 = params_.lengthScale * params_.lengthScale, T2 = params_.timeScale * params_.timeScale;
+    Eigen::MatrixXd C(n, n);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+        {
+            const double dx = used_[i].at.x - used_[j].at.x, dy = used_[i].at.y - used_[j].at.y;
+            const double dt = used_[i].t - used_[j].t;
+            C(i, j) = std::exp(-(dx * dx + dy * dy) / (2.0 * L2) - dt * dt / (2.0 * T2));
+        }
+    C.diagonal().array() += params_.errorRatio * params_.errorRatio;
+    const Eigen::LDLT<Eigen::MatrixXd> solver(C);
+    const Eigen::VectorXd au = solver.solve(du), av = solver.solve(dv);
+    alphaU_.assign(au.data(), au.data() + n);
+    alphaV_.assign(av.data(), av.data() + n);
+    for (std::size_t i = 0; i < n; ++i)
+        alphaNorm_ += std::hypot(alphaU_[i], alphaV_[i]);
+    double after = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        Velocity c = depthAveraged(used_[i].at.x, used_[i].at.y, used_[i].t);
+        addCorrection(used_[i].at.x, used_[i].at.y, used_[i].t, c, nullptr);
+        after += std::pow(used_[i].dac.u - c.u, 2) + std::pow(used_[i].dac.v - c.v, 2);
+    }
+    summary_.rmsAfter = std::sqrt(after / n);
+}
+
+Velocity CorrectedField::depthAveraged(double x, double y, double t) const
+{
+    const double top = params_.depthTop, bottom = std::max(params_.depthTop, params_.depthBottom);
+    if (!(bottom > top))
+        return base_->velocity(x, y, top, t);
+    // the trapezoidal rule over 8 intervals of the depth range
+    constexpr int kIntervals = 8;
+    Velocity sum;
+    for (int k = 0; k <= kIntervals; ++k)
+    {
+        const double w = (k == 0 || k == kIntervals) ? 0.5 : 1.0;
+        const Velocity c = base_->velocity(x, y, top + (bottom - top) * k / kIntervals, t);
+        sum.u += w * c.u;
+        sum.v += w * c.v;
+    }
+    return {sum.u / kIntervals, sum.v / kIntervals};
+}
+
+void CorrectedField::addCorrection(double x, double y, double t, Velocity &c, Jacobian *j) const
+{
+    if (used_.empty())
+        return;
+    const double L2 = params_.lengthScale * params_.lengthScale, T2 = params_.timeScale * params_.timeScale;
+    const double window = kCutoff * params_.timeScale, reach2 = kCutoff * kCutoff * L2;
+    auto first = std::lower_bound(used_.begin(), used_.end(), t - window,
+                                  [](const DacObservation &o, double v) { return o.t < v; });
+    for (auto it = first; it != used_.end() && it->t <= t + window; ++it)
+    {
+        const double dx = x - it->at.x, dy = y - it->at.y, r2 = dx * dx + dy * dy;
+        if (r2 > reach2)
+            continue;
+        const double dt = t - it->t;
+        const double w = std::exp(-r2 / (2.0 * L2) - dt * dt / (2.0 * T2));
+        const std::size_t i = static_cast<std::size_t>(it - used_.begin());
+        c.u += w * alphaU_[i];
+        c.v += w * alphaV_[i];
+        if (j)
+        {
+            // d w / dx = -w dx / L^2
+            j->ux -= w * alphaU_[i] * dx / L2;
+            j->uy -= w * alphaU_[i] * dy / L2;
+            j->vx -= w * alphaV_[i] * dx / L2;
+            j->vy -= w * alphaV_[i] * dy / L2;
+        }
+    }
+}
+
+Velocity CorrectedField::correction(double x, double y, double t) const
+{
+    Velocity c;
+    addCorrection(x, y, t, c, nullptr);
+    return c;
+}
+
+Velocity CorrectedField::evaluate(double x, double y, double z, double t) const
+{
+    Velocity c = base_->velocity(x, y, z, t);
+    addCorrection(x, y, t, c, nullptr);
+    return c;
+}
+
+Jacobian CorrectedField::evaluateJacobian(double x, double y, double z, double t) const
+{
+    Jacobian j = base_->jacobian(x, y, z, t);
+    Velocity unused;
+    addCorrection(x, y, t, unused, &j);
+    return j;
+}
+
+double CorrectedField::maxSpeed(const Region &region) const
+{
+    // every weight is at most 1: the correction is no faster than the sum of the |alpha_i|
+    return base_->maxSpeed(region) + alphaNorm_;
+}
+
+std::string CorrectedField::name() const
+{
+    return base_->name() + " corrected by " + std::to_string(summary_.used) + " glider DAC";
+}
+}  // namespace ompl_glider

@@ -1,0 +1,158 @@
+// A forecast corrected by glider DAC (optimal interpolation): no innovation, no change to the bit; a uniform error
+// is recovered near the observations and fades far away and long after; the correction fits its observations.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "ompl_glider/current/CorrectedField.h"
+#include "ompl_glider/current/MeanderingJet.h"
+#include "ompl_glider/current/UniformCurrent.h"
+
+using namespace ompl_glider;
+
+namespace
+{
+/// DAC along a track across the jet, each the truth @p truth at the dive's middle plus noise of @p sigma.
+std::vector<DacObservation> track(const CurrentField &truth, int n, double sigma, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> noise(0.0, sigma);
+    std::vector<DacObservation> obs;
+    for (int k = 0; k < n; ++k)
+    {
+        const double t = 0.5 * k, x = 2.0 + 0.2 * k, y = -2.0 + 0.1 * k;
+        const Velocity c = truth.velocity(x, y, 0.0, t);
+        obs.push_back({t, {x, y}, {c.u + (sigma > 0 ? noise(rng) : 0.0), c.v + (sigma > 0 ? noise(rng) : 0.0)}});
+    }
+    return obs;
+}
+
+/// The jet plus a uniform drift: a truth the forecast misses by (du, dv).
+class DriftedJet : public CurrentField
+{
+public:
+    DriftedJet(double du, double dv) : du_(du), dv_(dv)
+    {
+    }
+    double maxSpeed(const Region &r) const override
+    {
+        return jet_.maxSpeed(r) + std::hypot(du_, dv_);
+    }
+    std::string name() const override
+    {
+        return "drifted jet";
+    }
+
+protected:
+    Velocity evaluate(double x, double y, double z, double t) const override
+    {
+        const Velocity c = jet_.velocity(x, y, z, t);
+        return {c.u + du_, c.v + dv_};
+    }
+    Jacobian evaluateJacobian(double x, double y, double z, double t) const override
+    {
+        return jet_.jacobian(x, y, z, t);
+    }
+
+private:
+    MeanderingJet jet_;
+    double du_, dv_;
+};
+}  // namespace
+
+TEST(CorrectedField, NoInnovationChangesNothingToTheBit)
+{
+    auto jet = std::make_shared<MeanderingJet>();
+    const CorrectedField corrected(jet, track(*jet, 20, 0.0, 1), {1.0, 3.0, 0.5});
+    EXPECT_EQ(corrected.summary().used, 20u);
+    EXPECT_EQ(corrected.summary().rmsBefore, 0.0);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> ux(0, 10), uy(-4, 4), ut(0, 20);
+    for (int i = 0; i < 2000; ++i)
+    {
+        const double x = ux(rng), y = uy(rng), t = ut(rng);
+        const Velocity a = jet->velocity(x, y, 0, t), b = corrected.velocity(x, y, 0, t);
+        EXPECT_EQ(a.u, b.u);
+        EXPECT_EQ(a.v, b.v);
+        const Jacobian ja = jet->jacobian(x, y, 0, t), jb = corrected.jacobian(x, y, 0, t);
+        EXPECT_EQ(ja.ux, jb.ux);
+        EXPECT_EQ(ja.vy, jb.vy);
+    }
+}
+
+TEST(CorrectedField, RecoversAUniformErrorNearTheGliderAndFadesAway)
+{
+    auto jet = std::make_shared<MeanderingJet>();
+    const DriftedJet truth(0.12, -0.08);
+    const double sigma = 0.01;
+    const std::vector<DacObservation> obs = track(truth, 20, sigma, 7);
+    CorrectionParams p;
+    p.lengthScale = 1.0;
+    p.timeScale = 3.0;
+    p.errorRatio = 0.3;
+    const CorrectedField corrected(jet, obs, p);
+    const DacObservation &last = obs.back();
+    const Velocity c = corrected.velocity(last.at.x, last.at.y, 0, last.t);
+    const Velocity w = truth.velocity(last.at.x, last.at.y, 0, last.t);
+    // within the noise (and the OI's shrinkage towards the forecast, ratio^2 / n of the error)
+    EXPECT_LT(std::hypot(c.u - w.u, c.v - w.v), 3.0 * sigma + 0.01);
+    // the forecast alone is 0.144 off there
+    const Velocity f = jet->velocity(last.at.x, last.at.y, 0, last.t);
+    EXPECT_GT(std::hypot(f.u - w.u, f.v - w.v), 0.14);
+    EXPECT_LT(corrected.summary().rmsAfter, 0.3 * corrected.summary().rmsBefore);
+    // far away (10 length scales) and long after (10 time scales): the forecast itself
+    const Velocity far = corrected.correction(last.at.x + 10.0, last.at.y, last.t);
+    EXPECT_EQ(far.u, 0.0);
+    EXPECT_EQ(far.v, 0.0);
+    const Velocity later = corrected.correction(last.at.x, last.at.y, last.t + 30.0);
+    EXPECT_EQ(later.u, 0.0);
+    EXPECT_EQ(later.v, 0.0);
+}
+
+TEST(CorrectedField, RejectsObservationsOutsideTheForecastAndNotFinite)
+{
+    auto uniform = std::make_shared<UniformCurrent>(0.1, 0.0);
+    std::vector<DacObservation> obs{{0.0, {0, 0}, {0.2, 0.0}},
+                                    {1.0, {1, 0}, {std::nan(""), 0.0}},
+                                    {2.0, {2, 0}, {0.2, 0.0}}};
+    CorrectionParams p{1.0, 5.0, 0.5};
+    p.maxObservations = 1;
+    const CorrectedField c(uniform, obs, p);
+    EXPECT_EQ(c.summary().given, 3u);
+    EXPECT_EQ(c.summary().notFinite, 1u);
+    EXPECT_EQ(c.summary().older, 1u);  // the most recent one is kept
+    EXPECT_EQ(c.summary().used, 1u);
+    // one observation: the weight is 1 / (1 + ratio^2) of its innovation at its own place and time
+    EXPECT_NEAR(c.correction(2.0, 0.0, 2.0).u, 0.1 / 1.25, 1e-15);
+    EXPECT_THROW(CorrectedField(uniform, obs, CorrectionParams{0.0, 1.0, 0.5}), std::exception);
+}
+
+// The Jacobian against central differences, and the speed bound above every sampled speed.
+TEST(CorrectedField, JacobianMatchesFiniteDifferencesAndTheBoundHolds)
+{
+    auto jet = std::make_shared<MeanderingJet>();
+    const DriftedJet truth(0.15, -0.1);
+    CorrectionParams p{1.5, 6.0, 0.5};
+    const CorrectedField f(jet, track(truth, 12, 0.02, 5), p);
+    const double h = 1e-5;
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> ux(0, 10), uy(-4, 4), ut(0, 10);
+    const Region r{0.0, 10.0, -4.0, 4.0, 0.0, 0.0, 0.0, 40.0};
+    const double bound = f.maxSpeed(r);
+    for (int i = 0; i < 500; ++i)
+    {
+        const double x = ux(rng), y = uy(rng), t = ut(rng);
+        const Jacobian J = f.jacobian(x, y, 0, t);
+        const Velocity px = f.velocity(x + h, y, 0, t), mx = f.velocity(x - h, y, 0, t);
+        const Velocity py = f.velocity(x, y + h, 0, t), my = f.velocity(x, y - h, 0, t);
+        EXPECT_NEAR(J.ux, (px.u - mx.u) / (2 * h), 1e-6);
+        EXPECT_NEAR(J.vx, (px.v - mx.v) / (2 * h), 1e-6);
+        EXPECT_NEAR(J.uy, (py.u - my.u) / (2 * h), 1e-6);
+        EXPECT_NEAR(J.vy, (py.v - my.v) / (2 * h), 1e-6);
+        const Velocity c = f.velocity(x, y, 0, t);
+        EXPECT_LE(std::hypot(c.u, c.v), bound);
+    }
+}
