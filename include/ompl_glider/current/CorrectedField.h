@@ -1,6 +1,6 @@
 #pragma once
 /// @file CorrectedField.h
-/// @brief A forecast corrected by a glider's depth-averaged currents (DAC) by optimal interpolation: innovations
+/// @brief A forecast corrected by a glider's depth-averaged currents (DAC) by optimal interpolation ([BrethertonOI]): innovations
 /// d_i = DAC_i - F(x_i, t_i) (F averaged over the glider's depth range), spread with a space-time Gaussian covariance
 /// C = exp(-r^2 / (2 L^2)) exp(-dt^2 / (2 T^2)) (the forecast error variance s_f^2 factored out), weights
 /// alpha = (C_obs,obs + (s_o / s_f)^2 I)^-1 d, and F'(x, t) = F(x, t) + sum_i C(x, t; x_i, t_i) alpha_i. Far from the
