@@ -14,6 +14,7 @@ if(OMPL_GLIDER_WITH_NETCDF)
     ${CMAKE_CURRENT_LIST_DIR}/ClassicSize.cpp
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
     ${CMAKE_CURRENT_LIST_DIR}/DepthGrid.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/GliderObservations.cpp  # a glider's DAC: IOOS profile files, CSV
   )
 endif()
 if(OMPL_GLIDER_WITH_MISSION)

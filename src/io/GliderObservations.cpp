@@ -1,0 +1,316 @@
+/// @file GliderObservations.cpp
+/// @brief A glider deployment's DAC records from IOOS profile NetCDF files or a CSV (GliderObservations.h).
+
+#include "ompl_glider/io/GliderObservations.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <glob.h>
+#include <sstream>
+
+#include "NcFile.h"
+#include "NumberText.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/io/Time.h"
+
+namespace ompl_glider
+{
+namespace fs = std::filesystem;
+using netcdf_detail::NcFile;
+
+namespace
+{
+/// The files of @p path: the file, a folder's *.nc files, or a glob pattern's matches, sorted.
+std::vector<std::string> filesOf(const std::string &path)
+{
+    std::vector<std::string> out;
+    std::error_code ec;
+    if (fs::is_directory(path, ec))
+    {
+        for (const auto &e : fs::directory_iterator(path, ec))
+            if (e.is_regular_file() && e.path().extension() == ".nc")
+                out.push_back(e.path().string());
+        if (out.empty())
+            throw Error("observations '" + path + "': the folder holds no NetCDF (.nc) file");
+    }
+    else if (path.find_first_of("*?[") != std::string::npos)
+    {
+        glob_t g{};
+        if (::glob(path.c_str(), 0, nullptr, &g) == 0)
+            for (std::size_t i = 0; i < g.gl_pathc; ++i)
+                out.push_back(g.gl_pathv[i]);
+        globfree(&g);
+        if (out.empty())
+            throw Error("observations '" + path + "': the pattern matches no file");
+    }
+    else
+    {
+        if (!fs::is_regular_file(path, ec))
+            throw Error("observations '" + path + "': no such file or folder");
+        out.push_back(path);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::vector<std::string> splitCsv(const std::string &line)
+{
+    std::vector<std::string> out;
+    std::string cell;
+    std::istringstream in(line);
+    while (std::getline(in, cell, ','))
+    {
+        cell.erase(0, cell.find_first_not_of(" \t\r"));
+        cell.erase(cell.find_last_not_of(" \t\r") + 1);
+        out.push_back(cell);
+    }
+    if (!line.empty() && line.back() == ',')
+        out.emplace_back();
+    return out;
+}
+
+/// A record's checks shared by both formats; empty when it is usable, else the reason.
+std::string check(const DacRecord &r)
+{
+    if (!std::isfinite(r.time) || !std::isfinite(r.at.lon) || !std::isfinite(r.at.lat))
+        return "no time or position";
+    if (std::abs(r.at.lat) > 90.0 || r.at.lon < -180.0 || r.at.lon > 360.0)
+        return "position out of range";
+    if (std::hypot(r.u, r.v) > kMaxPlausibleDac)
+        return "faster than " + text::number(kMaxPlausibleDac) + " m/s";
+    return "";
+}
+
+void readCsv(const std::string &file, GliderObservations &o)
+{
+    std::ifstream in(file);
+    if (!in)
+        throw Error("observations '" + file + "': cannot open the file");
+    std::string line;
+    int n = 0;
+    std::map<std::string, std::size_t> col;
+    while (std::getline(in, line))
+    {
+        ++n;
+        if (line.empty() || line[0] == '#')
+            continue;
+        const std::vector<std::string> cells = splitCsv(line);
+        if (col.empty())
+        {
+            for (std::size_t i = 0; i < cells.size(); ++i)
+                col[cells[i]] = i;
+            for (const char *k : {"time", "lon", "lat", "u", "v"})
+                if (!col.count(k))
+                    throw Error(file + ":" + std::to_string(n) + ": the header must name the columns time, lon, lat, "
+                                                                  "u, v (missing '" + std::string(k) + "')");
+            continue;
+        }
+        const auto cell = [&](const char *k) { return col[k] < cells.size() ? cells[col[k]] : std::string(); };
+        const auto number = [&](const char *k) {
+            const std::string c = cell(k);
+            std::size_t used = 0;
+            double v = 0.0;
+            try
+            {
+                v = std::stod(c, &used);
+            }
+            catch (const std::exception &)
+            {
+                used = 0;
+            }
+            if (used != c.size() || c.empty())
+                throw Error(file + ":" + std::to_string(n) + ": column '" + k + "': expected a number, got '" + c + "'");
+            return v;
+        };
+        DacRecord r;
+        r.file = file;
+        const std::string t = cell("time");
+        try
+        {
+            r.time = t.find_first_of("T-:") != std::string::npos && t.find('T') != std::string::npos ? parseIsoTime(t)
+                                                                                                    : number("time");
+        }
+        catch (const Error &e)
+        {
+            throw Error(file + ":" + std::to_string(n) + ": column 'time': " + e.what());
+        }
+        r.at = {number("lon"), number("lat")};
+        if (r.at.lon > 180.0)
+            r.at.lon -= 360.0;
+        if (!o.lastFix || r.time >= o.lastFix->time)
+            o.lastFix = GliderFix{r.time, r.at};
+        if (cell("u").empty() && cell("v").empty())
+            continue;  // a fix without a DAC
+        r.u = number("u");
+        r.v = number("v");
+        const std::string why = check(r);
+        if (!why.empty())
+        {
+            ++o.rejected[why];
+            continue;
+        }
+        o.dac.push_back(r);
+    }
+    if (col.empty())
+        throw Error("observations '" + file + "': empty (a header time,lon,lat,u,v and one row per DAC expected)");
+}
+
+/// One IOOS profile file: its DAC (or the reason it is rejected), its profile's fix, its glider.
+struct ProfileFile
+{
+    std::optional<DacRecord> dac;
+    std::string rejected;
+    std::optional<GliderFix> fix;
+    std::string platform;
+};
+
+ProfileFile readProfile(const std::string &file)
+{
+    const NcFile nc(file);
+    ProfileFile p;
+    const auto var = [&](const char *name) -> std::optional<int> { return nc.findVar(name); };
+    for (const char *name : {"time_uv", "lat_uv", "lon_uv", "u", "v"})
+        if (!var(name))
+            throw nc.error("variable '" + std::string(name) +
+                           "' is missing (an IOOS glider profile file holds the depth-averaged current in time_uv, "
+                           "lat_uv, lon_uv, u, v)");
+    // a scalar's value, NaN where it is a fill value
+    const auto value = [&](int id) {
+        const std::vector<double> v = nc.readAll1D(id);
+        if (v.empty())
+            return std::nan("");
+        std::vector<double> fills = nc.attDoubles(id, "_FillValue");
+        for (const double m : nc.attDoubles(id, "missing_value"))
+            fills.push_back(m);
+        if (fills.empty())
+            fills.push_back(-999.0);
+        for (const double f : fills)
+            if (v[0] == f)
+                return std::nan("");
+        return v[0];
+    };
+    // seconds since 1970 of a time variable (CF units)
+    const auto seconds = [&](int id) {
+        const double t = value(id);
+        const std::string units = nc.attText(id, "units").value_or("seconds since 1970-01-01T00:00:00Z");
+        const CfTimeUnits u = parseCfTimeUnits(units, nc.attText(id, "calendar").value_or("standard"));
+        const double epoch1970 = secondsSinceCalendarEpoch(parseDateTime("1970-01-01T00:00:00Z"), u.calendar);
+        return t * u.secondsPerUnit + u.reference - epoch1970;
+    };
+    if (const auto id = var("platform"))
+        p.platform = nc.attText(*id, "id").value_or("");
+    if (p.platform.empty())
+        if (const auto id = var("trajectory"))
+        {
+            std::vector<char> name(nc.dimLen(nc.varDims(*id).empty() ? 0 : nc.varDims(*id)[0]) + 1, '\0');
+            if (nc.varType(*id) == NC_CHAR && !nc.varDims(*id).empty())
+                nc_get_var_text(nc.id(), *id, name.data());
+            p.platform = name.data();
+        }
+    if (const auto t = var("profile_time"), la = var("profile_lat"), lo = var("profile_lon"); t && la && lo)
+    {
+        const GliderFix f{seconds(*t), {value(*lo), value(*la)}};
+        if (std::isfinite(f.time) && std::isfinite(f.at.lon) && std::isfinite(f.at.lat))
+            p.fix = f;
+    }
+    DacRecord r;
+    r.file = file;
+    r.time = seconds(*var("time_uv"));
+    r.at = {value(*var("lon_uv")), value(*var("lat_uv"))};
+    r.u = value(*var("u"));
+    r.v = value(*var("v"));
+    if (r.at.lon > 180.0)
+        r.at.lon -= 360.0;
+    for (const char *qc : {"u_qc", "v_qc", "time_uv_qc", "lat_uv_qc", "lon_uv_qc"})
+        if (const auto id = var(qc))
+        {
+            const double flag = nc.readAll1D(*id).empty() ? 0.0 : nc.readAll1D(*id)[0];
+            if (flag == 3.0 || flag == 4.0 || flag == 9.0)
+            {
+                p.rejected = "QC flag " + text::number(flag) + " (" + qc + ")";
+                return p;
+            }
+        }
+    if (!std::isfinite(r.u) || !std::isfinite(r.v))
+        p.rejected = "fill value";
+    else
+        p.rejected = check(r);
+    if (p.rejected.empty())
+    {
+        p.dac = r;
+        if (!p.fix || r.time > p.fix->time)
+            p.fix = GliderFix{r.time, r.at};
+    }
+    return p;
+}
+}  // namespace
+
+GliderObservations readGliderObservations(const std::string &path)
+{
+    GliderObservations o;
+    o.source = path;
+    const std::vector<std::string> files = filesOf(path);
+    o.files = files.size();
+    const bool csv = files.size() == 1 && fs::path(files[0]).extension() == ".csv";
+    if (csv)
+        readCsv(files[0], o);
+    else
+    {
+        std::vector<ProfileFile> profiles;
+        std::map<std::string, std::size_t> gliders;
+        for (const std::string &f : files)
+        {
+            profiles.push_back(readProfile(f));
+            ++gliders[profiles.back().platform];
+        }
+        // the deployment's glider: the one most files name
+        for (const auto &[name, count] : gliders)
+            if (o.platform.empty() || count > gliders[o.platform])
+                o.platform = name;
+        for (const ProfileFile &p : profiles)
+        {
+            if (p.platform != o.platform)
+            {
+                ++o.rejected["another glider ('" + p.platform + "')"];
+                continue;
+            }
+            if (p.fix && (!o.lastFix || p.fix->time > o.lastFix->time))
+                o.lastFix = p.fix;
+            if (p.dac)
+                o.dac.push_back(*p.dac);
+            else
+                ++o.rejected[p.rejected];
+        }
+    }
+    std::stable_sort(o.dac.begin(), o.dac.end(), [](const DacRecord &a, const DacRecord &b) { return a.time < b.time; });
+    // a record at the time of the one before it is a repeat (a profile file sent twice)
+    std::vector<DacRecord> unique;
+    for (const DacRecord &r : o.dac)
+        if (!unique.empty() && unique.back().time == r.time)
+            ++o.rejected["repeated time"];
+        else
+            unique.push_back(r);
+    o.dac = std::move(unique);
+    if (o.dac.empty())
+    {
+        std::string why;
+        for (const auto &[reason, count] : o.rejected)
+            why += (why.empty() ? "" : ", ") + std::to_string(count) + " " + reason;
+        throw Error("observations '" + path + "': no usable depth-averaged current (variables u, v" +
+                    (why.empty() ? std::string(")") : "; rejected: " + why + ")"));
+    }
+    return o;
+}
+
+std::string observationsText(const GliderObservations &o)
+{
+    std::string s = std::to_string(o.dac.size()) + " DAC from " + std::to_string(o.files) + " file(s)" +
+                    (o.platform.empty() ? "" : " of glider '" + o.platform + "'");
+    std::string why;
+    for (const auto &[reason, count] : o.rejected)
+        why += (why.empty() ? "" : ", ") + std::to_string(count) + " " + reason;
+    return s + (why.empty() ? "" : "; rejected: " + why);
+}
+}  // namespace ompl_glider
