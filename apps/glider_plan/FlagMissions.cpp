@@ -2,6 +2,7 @@
 // library's applyOverrides()), the command line's own execution and safety flags, and the missions of the built-in,
 // --mission and --currents modes.
 #include <algorithm>
+#include <cstdio>
 #include <array>
 #include <string>
 #include <tuple>
@@ -14,6 +15,7 @@
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/execution/Execution.h"
+#include "ompl_glider/io/GliderObservations.h"
 #include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/Overrides.h"
@@ -204,6 +206,8 @@ MissionOverrides overridesOf(const Flags &f)
     }
     if (!f.order.empty())
         o.order = Given<std::string>{f.order, "--order"};
+    if (!f.observations.empty())
+        o.observations = Given<std::string>{f.observations, "--observations"};
     if (!f.coastline.empty())
         o.coastline = Given<std::string>{f.coastline, "--coastline"};
     if (f.isochrones)
@@ -297,6 +301,26 @@ MissionSpec forecastMissionOf(Flags f)
         f.forecast.current.file = files.front();
     else
         f.forecast.current.files = files;
+    const bool fromFix = f.start.empty(), departureFromFix = fromFix && f.departure.empty();
+    if (fromFix)
+    {
+        // the glider's last fix (and its time without --departure): --observations
+        try
+        {
+            const ompl_glider::GliderObservations o = ompl_glider::readGliderObservations(f.observations);
+            if (!o.lastFix)
+                throw ompl_glider::Error("they report no position to start from");
+            char start[64];
+            std::snprintf(start, sizeof start, "%.17g,%.17g", o.lastFix->at.lon, o.lastFix->at.lat);
+            f.start = start;
+            if (f.departure.empty())
+                f.departure = ompl_glider::formatIsoTime(o.lastFix->time);
+        }
+        catch (const ompl_glider::Error &e)
+        {
+            throw UsageError{"--observations " + f.observations + ": " + e.what()};
+        }
+    }
     f.forecast.start = pair("--start", f.start);
     f.forecast.goal = pair("--goal", f.goal);
     f.forecast.departure = f.departure;
@@ -309,6 +333,10 @@ MissionSpec forecastMissionOf(Flags f)
     f.forecast.snapToWater = f.snapToWater;
     MissionSpec m = forecastMission(f.forecast);
     applyFlags(f, m, true);
+    if (fromFix)
+        m.marks["start"] = SourceMark{"--observations", 0};  // the last fix
+    if (departureFromFix)
+        m.marks["departure.time"] = SourceMark{"--observations", 0};
     return m;
 }
 }  // namespace glider_plan

@@ -122,6 +122,11 @@ void defineRouteFlags(CLI::App &app, Flags &f)
                    "given (default): visit the via points as listed; free: the fastest order of up to 8 via points "
                    "(branch and bound over the orders with the planned leg times)")
         ->group(built);
+    app.add_option("--observations", f.observations,
+                   "the glider's depth-averaged currents: IOOS glider profile NetCDF files (a file, folder or glob "
+                   "pattern) or a CSV time,lon,lat,u,v; the forecast is corrected by them (optimal interpolation) and, "
+                   "without --start, the plan starts at the last fix (and at its time without --departure)")
+        ->group(built);
     app.add_option("--arrive-between", f.arriveBetween,
                    "arrive at the goal within begin,end (built-in: times; --currents: ISO 8601 dates or seconds after "
                    "the first forecast time): arrive early and hold at the goal where the current allows, else time "
@@ -406,9 +411,9 @@ void checkCombinations(const CLI::App &app, const Flags &f)
         for (const CLI::Option *o : app.get_options())
             if (o->count() > 0 && o->get_group() == "NetCDF forecast (with --currents)")
                 throw UsageError{o->get_name() + " needs --currents FILE"};
-    if (!f.currents.empty() && (f.start.empty() || f.goal.empty()))
-        throw UsageError{"--currents needs --start and --goal (lon,lat for a geographic file, x,y for a Cartesian "
-                         "one)"};
+    if (!f.currents.empty() && ((f.start.empty() && f.observations.empty()) || f.goal.empty()))
+        throw UsageError{"--currents needs --start (or --observations: the last fix) and --goal (lon,lat for a "
+                         "geographic file, x,y for a Cartesian one)"};
 }
 
 void parseFlags(CLI::App &app, const Flags &f, int argc, const char *const *argv)

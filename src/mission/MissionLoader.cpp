@@ -14,6 +14,10 @@
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/Config.h"
+#if OMPL_GLIDER_WITH_NETCDF
+#include "ompl_glider/mission/Observations.h"
+#endif
 #include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace ompl_glider
@@ -138,7 +142,7 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     r.checkMap(root, "",
                {"name", "units", "epoch", "projection", "current", "region", "start", "goal", "departure", "vehicle",
                 "travel_time", "dive_profile", "forbidden", "safety", "planner", "stints", "outputs", "speeds", "execution",
-                "fleet", "waypoints", "order"});
+                "fleet", "waypoints", "order", "observations"});
     readHeader(r, root, m);
     if (!root["current"])
         r.fail(root, "current", "missing: the current source (type: meandering_jet | uniform | ... | netcdf)");
@@ -160,12 +164,34 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     {
         if (!root[key] && root["fleet"])
             continue;  // a fleet's gliders give theirs
+        if (!root[key] && root["observations"] && std::string(key) == "start")
+            continue;  // the glider's last fix
         if (!root[key])
             r.fail(root, key, "missing");
         readPoint(r, root[key], key, std::string(key) == "start" ? m.start : m.goal, m);
     }
     if (root["departure"])
         readDeparture(r, root["departure"], m);
+    if (root["observations"])
+    {
+        readObservations(r, root["observations"], m);
+        if (!root["start"] && !root["fleet"])
+        {
+#if OMPL_GLIDER_WITH_NETCDF
+            try
+            {
+                startAtLastFix(m, SourceMark{r.file(), r.line(root["observations"])},
+                               static_cast<bool>(root["departure"]));
+            }
+            catch (const Error &e)
+            {
+                r.fail(root["observations"], "observations", e.what());
+            }
+#else
+            r.fail(root["observations"], "observations", "this build reads no glider files (no NetCDF)");
+#endif
+        }
+    }
     if (root["fleet"])
     {
         readFleet(r, root["fleet"], m);

@@ -220,6 +220,9 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     snapEndpoints();
     buildBox();
     checkAnalyticFields();
+#if OMPL_GLIDER_WITH_NETCDF
+    applyObservations();  // (after the box: analytic flows' default length scale)
+#endif
     buildRegions();
     const FieldGrid *grid = (members_.empty() ? field_ : members_.front())->grid();
     if (grid)

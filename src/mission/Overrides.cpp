@@ -224,6 +224,14 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
         }
         mark(m, "order", o.order->source);
     }
+    if (o.observations)
+    {
+        ObservationsSpec spec = m.observations.value_or(ObservationsSpec{});
+        spec.path = o.observations->value;
+        spec.mark = SourceMark{o.observations->source, 0};
+        m.observations = spec;
+        mark(m, "observations", o.observations->source);
+    }
     if (m.order == VisitOrder::Free && m.waypoints.size() > kMaxFreeOrderViaPoints)
         throw Error((o.order ? o.order->source : o.via ? o.via->source : m.place("order")) + ": free order over " +
                     std::to_string(m.waypoints.size()) + " via points: at most " +
@@ -325,6 +333,7 @@ std::vector<std::pair<std::string, std::string>> overridableFields(const Mission
         {"goal.window", m.goalWindow.set ? num(m.goalWindow.begin) + "," + num(m.goalWindow.end) : "unset"},
         {"waypoints", via},
         {"order", visitOrderName(m.order)},
+        {"observations", m.observations ? m.observations->path : std::string("unset")},
         {"forbidden.coastline", m.forbidden.coastline},
         {"outputs.directory", m.outputs.directory},
         {"outputs.files", files},

@@ -21,6 +21,10 @@
 #include "ompl_glider/routes/PathToStints.h"
 #include "ompl_glider/ompl/PipelinePlanner.h"
 #include "ompl_glider/mission/MissionLegs.h"
+#include "ompl_glider/Config.h"
+#if OMPL_GLIDER_WITH_NETCDF
+#include "ompl_glider/mission/Observations.h"
+#endif
 
 namespace ompl_glider
 {
@@ -393,6 +397,10 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     result.forecastNotes = problem.forecastNotes();
     for (const std::string &note : problem.endpointNotes())
         result.forecastNotes.push_back(note);
+#if OMPL_GLIDER_WITH_NETCDF
+    if (const std::string note = observationNote(problem); !note.empty())
+        result.forecastNotes.push_back(note);  // how the glider's DAC corrected the forecast
+#endif
     if (const std::string frozen = planning_detail::frozenFieldNote(problem, result.plan); !frozen.empty())
         result.forecastNotes.push_back(frozen);
     result.coastlineNote = problem.coastlineNote();

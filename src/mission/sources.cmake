@@ -34,5 +34,6 @@ list(APPEND OMPL_GLIDER_SOURCES
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/ForecastMission.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/Observations.cpp  # a glider's measurements: the last fix, the corrected forecast
   )
 endif()

@@ -7,6 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "../io/NumberText.h"
+#include "ompl_glider/Config.h"
+#if OMPL_GLIDER_WITH_NETCDF
+#include "ompl_glider/mission/Observations.h"
+#endif
 #include "JsonValues.h"
 #include "ompl_glider/Exception.h"
 
@@ -246,6 +250,42 @@ json globalCheckJson(const PlannedPath &p)
             {"current_model_calls", g.currentModelCalls},
             {"wall_time_s", g.seconds}};
 }
+/// The glider's observations: what was read, rejected and used, and the correction's size (null without them).
+json observationsJson(const MissionProblem &problem)
+{
+#if OMPL_GLIDER_WITH_NETCDF
+    const auto &o = problem.observations();
+    if (!o)
+        return nullptr;
+    json rejected = json::object();
+    for (const auto &[why, n] : o->rejected)
+        rejected[why] = n;
+    if (o->future > 0)
+        rejected["after the departure"] = o->future;
+    if (o->correction.outsideForecast > 0)
+        rejected["outside the forecast"] = o->correction.outsideForecast;
+    if (o->correction.older > 0)
+        rejected["older than the most recent kept"] = o->correction.older;
+    json fix = nullptr;
+    if (o->lastFix)
+        fix = {{"lon", o->lastFix->at.lon}, {"lat", o->lastFix->at.lat}, {"time_iso", formatIsoTime(o->lastFix->time)}};
+    return {{"source", o->source},
+            {"files", o->files},
+            {"platform", jtext(o->platform)},
+            {"used", o->correction.used},
+            {"rejected", rejected},
+            {"rms_innovation_before", jnum(o->correction.rmsBefore)},
+            {"rms_innovation_after", jnum(o->correction.rmsAfter)},
+            {"length_scale", o->params.lengthScale},
+            {"time_scale", o->params.timeScale},
+            {"error_ratio", o->params.errorRatio},
+            {"last_fix", fix}};
+#else
+    (void)problem;
+    return nullptr;
+#endif
+}
+
 /// The dive profiles generated for the mission and how one is chosen per leg.
 json diveProfilesJson(const MissionResult &r)
 {
@@ -469,6 +509,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     if (r.execution)
         j["execution"] = executionJson(*r.execution, problem);
     legsJson(r, problem, j);
+    j["observations"] = observationsJson(problem);
     j["files"] = files;
     checkFinite(j, "");
     return j.dump(2) + "\n";

@@ -22,6 +22,7 @@
 namespace ompl_glider
 {
 class ForbiddenRegions;
+struct ObservationReport;
 class ForbiddenCells;
 struct NetCdfCurrentOptions;
 struct NetCdfCurrents;
@@ -96,6 +97,12 @@ public:
     const std::vector<Point2> &getViaPoints() const
     {
         return via_;
+    }
+    /// @brief What the glider's observations (MissionSpec::observations) gave and how they corrected the forecast;
+    /// unset without observations (getField() is then the forecast itself, else the corrected one).
+    const std::shared_ptr<const ObservationReport> &observations() const
+    {
+        return observations_;
     }
     /// @brief The forbidden regions (null when there are none).
     const std::shared_ptr<const Environment> &getEnvironment() const
@@ -191,6 +198,8 @@ private:
     /// with MissionSpec::safety.snapToWater.
     void snapEndpoints();
     void checkAnalyticFields() const;  ///< analytic fields are finite over the box (parameters do not overflow)
+    /// The forecast corrected by the glider's DAC (Observations.cpp); nothing without observations.
+    void applyObservations();
     /// Via points in the region, in water, their stays within the forecast (Endpoints.cpp).
     void checkViaPoints() const;
     void buildRegions();
@@ -227,6 +236,7 @@ private:
     Region box_;
     Point2 start_, goal_;
     std::vector<Point2> via_;          // via points, planning frame
+    std::shared_ptr<const ObservationReport> observations_;  // what the observations gave (null: none)
     bool gridSizeAutomatic_{false};    // planner.grid_size was 0: chosen from the trip's length
     std::shared_ptr<const KeepOffZone> land_;  // land's boundary and the keep-off distance (null: no land)
     std::string safetyNote_;                   // what the depth limit read, and how

@@ -373,6 +373,19 @@ struct ExecutionSpec
     SourceMark mark;          ///< where the section is
 };
 
+/// @brief A glider's own measurements (its depth-averaged currents, DAC) and how they correct the forecast
+/// (current/CorrectedField.h: optimal interpolation, [BrethertonOI]).
+struct ObservationsSpec
+{
+    std::string path;  ///< IOOS profile files (a file, folder or glob pattern) or a CSV; resolved
+    /// L (planning units); NaN: 20 km for a forecast, a tenth of the region's larger side for an analytic flow
+    double lengthScale{std::numeric_limits<double>::quiet_NaN()};
+    /// T (field time units); NaN: one day where the time unit is known, else a tenth of the planning horizon
+    double timeScale{std::numeric_limits<double>::quiet_NaN()};
+    double errorRatio{0.5};  ///< s_o / s_f: the DAC's error over the forecast's (> 0)
+    SourceMark mark;         ///< where it was given
+};
+
 /// @brief A complete mission.
 struct MissionSpec
 {
@@ -410,6 +423,9 @@ struct MissionSpec
     OutputSpec outputs;
     std::vector<double> speeds;    ///< speed sweep ([EichhornOceans] Table VI); empty = none
     ExecutionSpec execution;       ///< flying the plan in another ocean
+    /// The glider's measurements: the forecast is corrected by them, and without a start the plan starts at the last
+    /// fix (and without a departure at its time)
+    std::optional<ObservationsSpec> observations;
     /// A fleet: one plan per glider, each from its own start to its own goal (empty: one plan, start to goal)
     std::vector<FleetGliderSpec> fleet;
     /// Where each value was given, by dotted field name ("planner.grid_size"): a line of the mission file, or the

@@ -54,6 +54,9 @@ struct MissionOverrides
     /// radii, windows and stays as the front end gives them: an empty name becomes "WP1", "WP2", ...)
     std::optional<Given<std::vector<ViaPointSpec>>> via;
     std::optional<Given<std::string>> order;  ///< "given" or "free"
+    /// the glider's observations (IOOS profile files or a CSV: MissionSpec::observations; the mission's correction
+    /// parameters kept, else the defaults)
+    std::optional<Given<std::string>> observations;
 };
 
 /// @brief Applies @p o to @p m: each value checked (finite, in its range, a planner of the registry, a time the

@@ -99,6 +99,8 @@ void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, P
 /// arrive: {begin, end}, stay}; names unique and plain (letters, digits, '_', '-'), after the departure.
 void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &field, std::vector<ViaPointSpec> &out,
                    const MissionSpec &m);
+/// The `observations` section: a path, or {file, length_scale, time_scale, error_ratio}.
+void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m);
 /// The visiting order ("given" or "free") of @p field, checked against the number of via points @p count.
 VisitOrder readVisitOrder(const Reader &r, const YAML::Node &n, const std::string &field, std::size_t count);
 void readPolygon(const Reader &r, const YAML::Node &n, const std::string &field, PolygonSpec &poly,

@@ -131,6 +131,43 @@ void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &fiel
     }
 }
 
+void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const std::string f = "observations";
+    ObservationsSpec o;
+    o.mark = {r.file(), r.line(n)};
+    YAML::Node file = n;
+    if (n.IsMap())
+    {
+        r.checkMap(n, f, {"file", "length_scale", "time_scale", "error_ratio"});
+        if (!n["file"])
+            r.fail(n, f + ".file", "missing: the glider's files (IOOS profile files: a file, folder or pattern; or a CSV)");
+        file = n["file"];
+        if (n["length_scale"])
+        {
+            const bool metres = m.physicalUnits().length;
+            o.lengthScale = scalar(r, n["length_scale"], f + ".length_scale", "expected a length: '20 km', or a number",
+                                   [&](const std::string &t) { return parseLength(t, m.metresPerUnit(), metres); });
+            if (!(o.lengthScale > 0.0) || !std::isfinite(o.lengthScale))
+                r.fail(n["length_scale"], f + ".length_scale", "must be > 0");
+        }
+        if (n["time_scale"])
+        {
+            o.timeScale = scalar(r, n["time_scale"], f + ".time_scale", "expected a duration: '1 d', or a number",
+                                 [&](const std::string &t) {
+                                     return parseDuration(t, m.timeUnitSeconds, m.hasTimeUnit());
+                                 });
+            if (!(o.timeScale > 0.0) || !std::isfinite(o.timeScale))
+                r.fail(n["time_scale"], f + ".time_scale", "must be > 0");
+        }
+        if (n["error_ratio"])
+            o.errorRatio = r.positive(n["error_ratio"], f + ".error_ratio");
+    }
+    const std::string path = r.text(file, n.IsMap() ? f + ".file" : f);
+    o.path = joinPath(r.dir(), path);  // a file, folder or glob pattern next to the mission
+    m.observations = std::move(o);
+}
+
 VisitOrder readVisitOrder(const Reader &r, const YAML::Node &n, const std::string &field, std::size_t count)
 {
     const VisitOrder o = r.oneOf(n, field, {"given", "free"}) == "free" ? VisitOrder::Free : VisitOrder::Given;
