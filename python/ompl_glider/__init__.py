@@ -379,6 +379,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
          isochrone_interval: Union[None, float, str] = None, arrive_between: Optional[Tuple[Any, Any]] = None,
          coastline: Union[None, str, os.PathLike] = None, goto_turn: Optional[float] = None,
          via: Optional[Sequence[Any]] = None, order: Optional[str] = None,
+         observations: Union[None, str, os.PathLike] = None,
          speeds: Optional[Sequence[float]] = None,
          optimum: bool = False, progress: Optional[ProgressCallback] = None) -> Result:
     """Plans a mission with the library's one pipeline and returns its :class:`Result`.
@@ -398,7 +399,9 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     departure), coastline (a GIS file of land), goto_turn (the goto list's turn threshold, degrees), via (via points
     between start and goal, a mission of several legs: each a pair (x, y) / (lon, lat), or a dict with ``at`` (the
     pair), ``name``, ``radius``, ``stay`` (the mission's units) and ``arrive`` ((begin, end), times as departure)),
-    order ("given" or "free": the fastest order of up to 8 via points); isochrones /
+    order ("given" or "free": the fastest order of up to 8 via points), observations (the glider's depth-averaged
+    currents: IOOS glider profile files, a folder or glob of them, or a CSV time,lon,lat,u,v: the forecast is
+    corrected by them and, without start, the plan starts at the last fix, at its time without departure); isochrones /
     isochrone_interval (a number in the mission's time unit, or a duration such as "6 h") add the reachable-set
     contours (:attr:`Result.isochrones`); speeds a speed sweep; optimum the optimal-control reference. These
     keywords and glider_plan's flags are one set of overrides in the library (Overrides.h): the same values give
@@ -413,12 +416,20 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                     global_check=global_check, horizon=horizon, goal_tolerance=goal_tolerance, isochrones=isochrones,
                     isochrone_interval=isochrone_interval, arrive_between=arrive_between,
                     coastline=None if coastline is None else os.fspath(coastline), goto_turn=goto_turn,
-                    via=None if via is None else list(via), order=order)
+                    via=None if via is None else list(via), order=order,
+                    observations=None if observations is None else os.fspath(observations))
     if planner_params is not None:
         keywords["planner_params"] = {k: (str(v).lower() if isinstance(v, bool) else str(v))
                                       for k, v in planner_params.items()}
     if field is not None and mission is not None:
         raise TypeError("plan(): give a mission or a field, not both")
+    if field is not None and field.kind == "netcdf" and start is None and observations is not None:
+        fix = _core.last_fix(os.fspath(observations))  # the glider's last fix, and its time
+        if fix is None:
+            raise Error("plan(): keyword 'observations': they report no position to start from")
+        start = (fix[0], fix[1])
+        if departure is None:
+            departure = fix[2]
     if field is not None and field.kind == "netcdf":
         if start is None or goal is None:
             raise TypeError("plan(): a NetCDF field needs start and goal (lon, lat, or x, y on a Cartesian grid)")

@@ -15,6 +15,8 @@
 #include <pybind11/stl.h>
 
 #include "Bindings.h"
+#include "ompl_glider/io/GliderObservations.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/io/GeoBox.h"
@@ -212,7 +214,8 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     static const char *known[] = {"planner", "planner_params", "grid_size", "sectors", "time_limit", "smoothing",
                                   "refinement", "speed", "departure", "start", "goal", "region", "forbidden",
                                   "isochrones", "isochrone_interval", "analytic", "horizon", "goal_tolerance",
-                                  "global_check", "arrive_between", "coastline", "goto_turn", "via", "order"};
+                                  "global_check", "arrive_between", "coastline", "goto_turn", "via", "order",
+                                  "observations"};
     for (const auto &item : kw)
     {
         const std::string name = item.first.cast<std::string>();
@@ -322,6 +325,8 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     }
     if (auto v = get("order"))
         o.order = Given<std::string>{value<std::string>(*v, "order", "'given' or 'free'"), text("order")};
+    if (auto v = get("observations"))
+        o.observations = Given<std::string>{py::str(*v).cast<std::string>(), text("observations")};
     if (auto v = get("coastline"))
         o.coastline = Given<std::string>{value<std::string>(*v, "coastline", "a file name"), text("coastline")};
     if (auto v = get("isochrone_interval"))
@@ -366,6 +371,15 @@ void bindMission(py::module_ &m)
         .def("fleet_glider", &fleetGliderMission, py::arg("i"),
              "The mission of glider i of the fleet (fleetGliderMission(): as glider_plan plans it).");
     m.def("builtin_mission", &defaultGulfStreamMission, "The built-in Gulf Stream mission (as glider_plan).");
+    m.def(
+        "last_fix",
+        [](const std::string &path) -> py::object {
+            const GliderObservations o = readGliderObservations(path);
+            if (!o.lastFix)
+                return py::none();
+            return py::make_tuple(o.lastFix->at.lon, o.lastFix->at.lat, formatIsoTime(o.lastFix->time));
+        },
+        py::arg("path"), "The last fix (lon, lat, ISO 8601 time) of a glider's observations (IOOS files or CSV).");
     m.def("load_mission", &loadMission, py::arg("path"), "A YAML mission file (examples/MISSION_FORMAT.md).");
     m.def("parse_mission", &parseMission, py::arg("text"), py::arg("file") = "<mission>",
           py::arg("directory") = ".", "A mission from YAML (or JSON) text.");

@@ -60,6 +60,12 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base, const s
         const Velocity f = depthAveraged(used_[i].at.x, used_[i].at.y, used_[i].t);
         du[i] = used_[i].dac.u - f.u;
         dv[i] = used_[i].dac.v - f.v;
+        // a DAC equal to the forecast but for the rounding of its numbers (a float file, a CSV): no innovation
+        const double noise = 1e-12 * std::max({1.0, std::abs(f.u), std::abs(f.v)});
+        if (std::abs(du[i]) < noise)
+            du[i] = 0.0;
+        if (std::abs(dv[i]) < noise)
+            dv[i] = 0.0;
         before += du[i] * du[i] + dv[i] * dv[i];
     }
     summary_.rmsBefore = std::sqrt(before / n);

@@ -145,6 +145,14 @@ MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
     return p;
 }
 
+#if !OMPL_GLIDER_WITH_NETCDF
+void MissionProblem::applyObservations()
+{
+    if (spec_.observations)
+        throw Error(spec_.place("observations") + ": this build reads no glider files (it has no NetCDF)");
+}
+#endif
+
 void MissionProblem::checkViaPoints() const
 {
     const MissionSpec &m = spec_;

@@ -88,7 +88,8 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     // (only under the 'refuse' policy: with hold_last a departure may lie after the forecast, and then every
     // record counts, which errs towards land)
     const double departure = m.departure.window ? m.departure.begin : m.departure.time;
-    if (std::isfinite(departure) && departure >= 0.0 && c.horizonPolicy == BeyondForecast::Refuse)
+    if (std::isfinite(departure) && departure >= 0.0 && c.horizonPolicy == BeyondForecast::Refuse &&
+        !m.observations)  // (a glider's DAC lie before the departure: with observations every record is read)
     {
         if (departure > 0.0)
             o.departure = text::number(departure, 17);
@@ -220,9 +221,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     snapEndpoints();
     buildBox();
     checkAnalyticFields();
-#if OMPL_GLIDER_WITH_NETCDF
-    applyObservations();  // (after the box: analytic flows' default length scale)
-#endif
+    applyObservations();  // (after the box: analytic flows' default length scale; nothing without NetCDF)
     buildRegions();
     const FieldGrid *grid = (members_.empty() ? field_ : members_.front())->grid();
     if (grid)

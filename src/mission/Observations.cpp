@@ -8,6 +8,7 @@
 
 #include "../io/NumberText.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/LocalProjection.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
 
@@ -81,7 +82,14 @@ void MissionProblem::applyObservations()
         }
         // velocities in field units (a forecast's m/s; an analytic flow's units per time unit)
         const double scale = m.metresPerUnit() / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds);
-        dac.push_back({t, toLocal(r.at), {r.u / scale, r.v / scale}});
+        // east/north turned into the planning frame's x/y there, as the forecast's velocities are
+        double ex = 1.0, ey = 0.0, nx = 0.0, ny = 1.0;
+        if (projection_)
+        {
+            projection_->eastDirection(r.at.lon, r.at.lat, ex, ey);
+            projection_->northDirection(r.at.lon, r.at.lat, nx, ny);
+        }
+        dac.push_back({t, toLocal(r.at), {(r.u * ex + r.v * nx) / scale, (r.u * ey + r.v * ny) / scale}});
     }
     CorrectionParams p;
     const double side = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);

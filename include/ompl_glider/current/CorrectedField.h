@@ -29,7 +29,9 @@ struct CorrectionParams
 {
     double lengthScale{20000.0};  ///< L: the distance over which forecast errors are alike (20 km for a forecast)
     double timeScale{86400.0};    ///< T: the time over which they persist (1 day for a forecast)
-    double errorRatio{0.5};       ///< s_o / s_f: observation error over forecast error (> 0)
+    /// s_o / s_f: observation error over forecast error (> 0); 0.2: a DAC is good to about 2 cm/s, a forecast's current
+    /// to about 10 cm/s
+    double errorRatio{0.2};
     double depthTop{0.0};         ///< the glider's depth range, averaged over to compare with a DAC (m)
     double depthBottom{0.0};      ///< see depthTop (equal: the forecast at that depth)
     std::size_t maxObservations{2000};  ///< the most recent ones kept (the system is solved once, O(n^3))

@@ -382,7 +382,7 @@ struct ObservationsSpec
     double lengthScale{std::numeric_limits<double>::quiet_NaN()};
     /// T (field time units); NaN: one day where the time unit is known, else a tenth of the planning horizon
     double timeScale{std::numeric_limits<double>::quiet_NaN()};
-    double errorRatio{0.5};  ///< s_o / s_f: the DAC's error over the forecast's (> 0)
+    double errorRatio{0.2};  ///< s_o / s_f: the DAC's error over the forecast's (> 0; CorrectionParams)
     SourceMark mark;         ///< where it was given
 };
 

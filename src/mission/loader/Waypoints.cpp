@@ -142,7 +142,7 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
         r.checkMap(n, f, {"file", "length_scale", "time_scale", "error_ratio"});
         if (!n["file"])
             r.fail(n, f + ".file", "missing: the glider's files (IOOS profile files: a file, folder or pattern; or a CSV)");
-        file = n["file"];
+        file.reset(n["file"]);  // (yaml-cpp: operator= would write into n itself)
         if (n["length_scale"])
         {
             const bool metres = m.physicalUnits().length;
