@@ -57,7 +57,8 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base, const s
     double before = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
-        const Velocity f = depthAveraged(used_[i].at.x, used_[i].at.y, used_[i].t);
+        const Velocity f = used_[i].forecast ? *used_[i].forecast
+                                             : depthAveraged(used_[i].at.x, used_[i].at.y, used_[i].t);
         du[i] = used_[i].dac.u - f.u;
         dv[i] = used_[i].dac.v - f.v;
         // a DAC equal to the forecast but for the rounding of its numbers (a float file, a CSV): no innovation

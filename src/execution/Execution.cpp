@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/execution/Dive.h"
@@ -24,6 +25,10 @@ std::string controlStrategyName(ControlStrategy s)
             return "replan";
         case ControlStrategy::PlannedHeadings:
             return "planned_headings";
+        case ControlStrategy::Dac:
+            return "dac";
+        case ControlStrategy::ReplanObserved:
+            return "replan_observed";
     }
     return "unknown";
 }
@@ -32,7 +37,8 @@ const std::vector<ControlStrategy> &controlStrategies()
 {
     static const std::vector<ControlStrategy> all{ControlStrategy::CurrentSensitive, ControlStrategy::CurrentBlind,
                                                   ControlStrategy::Greedy, ControlStrategy::Replan,
-                                                  ControlStrategy::PlannedHeadings};
+                                                  ControlStrategy::PlannedHeadings, ControlStrategy::Dac,
+                                                  ControlStrategy::ReplanObserved};
     return all;
 }
 
@@ -85,6 +91,45 @@ TimedPoint activeWaypoint(const std::vector<TimedPoint> &plan, double t)
     return plan.back();
 }
 
+/// The depth-averaged current of the dive flown over track[from..]: the truth's mean along it (trapezoids in time),
+/// with noise, and the forecast's mean along the same points, tagged at the dive's middle.
+DacObservation measureDive(const std::vector<TimedPoint> &track, std::size_t from, const CurrentField &truth,
+                           const CurrentField &forecast, double depth, double noise, std::mt19937 &rng)
+{
+    DacObservation d;
+    Velocity w, f;
+    double span = 0.0;
+    for (std::size_t i = from; i + 1 < track.size(); ++i)
+    {
+        const TimedPoint &a = track[i], &b = track[i + 1];
+        const double dt = b.t - a.t;
+        if (!(dt > 0.0))
+            continue;
+        const Velocity wa = truth.velocity(a.x, a.y, depth, a.t), wb = truth.velocity(b.x, b.y, depth, b.t);
+        const Velocity fa = forecast.velocity(a.x, a.y, depth, a.t), fb = forecast.velocity(b.x, b.y, depth, b.t);
+        w.u += 0.5 * dt * (wa.u + wb.u);
+        w.v += 0.5 * dt * (wa.v + wb.v);
+        f.u += 0.5 * dt * (fa.u + fb.u);
+        f.v += 0.5 * dt * (fa.v + fb.v);
+        span += dt;
+    }
+    const TimedPoint mid = planAt(std::vector<TimedPoint>(track.begin() + static_cast<std::ptrdiff_t>(from), track.end()),
+                                  0.5 * (track[from].t + track.back().t));
+    d.t = mid.t;
+    d.at = {mid.x, mid.y};
+    if (span > 0.0)
+    {
+        d.dac = {w.u / span, w.v / span};
+        d.forecast = Velocity{f.u / span, f.v / span};
+    }
+    if (noise > 0.0)
+    {
+        std::normal_distribution<double> n(0.0, noise);
+        d.dac.u += n(rng);
+        d.dac.v += n(rng);
+    }
+    return d;
+}
 }  // namespace
 
 FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const CurrentField &forecast,
@@ -100,6 +145,10 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         throw Error("flyPlan: the surfacing interval and the step must be positive and finite");
     if (strategy == ControlStrategy::Replan && (!o.replan || o.replanEvery == 0))
         throw Error("flyPlan: the replan strategy needs a replanner and replanEvery >= 1");
+    if (strategy == ControlStrategy::ReplanObserved && (!o.replanObserved || o.replanEvery == 0))
+        throw Error("flyPlan: the replan_observed strategy needs an observed replanner and replanEvery >= 1");
+    const bool measuring = strategy == ControlStrategy::Dac || strategy == ControlStrategy::ReplanObserved;
+    std::mt19937 rng(o.dacSeed);
     FlownTrack r;
     std::vector<TimedPoint> active = plan;  // the plan flown now (replaced by each new plan)
     unsigned surfacings = 0;
@@ -120,9 +169,11 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
     while (!r.reached && !r.grounded && t < end)
     {
         // at the surface: a new plan (replanning), then the heading for the next dive
-        if (strategy == ControlStrategy::Replan && surfacings++ % o.replanEvery == 0)
+        const bool replanning = strategy == ControlStrategy::Replan || strategy == ControlStrategy::ReplanObserved;
+        if (replanning && surfacings++ % o.replanEvery == 0)
         {
-            std::vector<TimedPoint> fresh = o.replan(x, y, t, active);
+            std::vector<TimedPoint> fresh = strategy == ControlStrategy::Replan ? o.replan(x, y, t, active)
+                                                                                : o.replanObserved(x, y, t, active, r.measured);
             if (!fresh.empty())
             {
                 fresh.back() = {goal.x, goal.y, fresh.back().t};
@@ -159,7 +210,9 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         {
             dx /= len;
             dy /= len;
-            if (strategy != ControlStrategy::CurrentBlind && strategy != ControlStrategy::Greedy)
+            if (strategy == ControlStrategy::Dac && !r.measured.empty())
+                crabHeading(dx, dy, r.measured.back().dac, speed, hx, hy);  // the last dive's measured current
+            else if (strategy != ControlStrategy::CurrentBlind && strategy != ControlStrategy::Greedy)
                 crabHeading(dx, dy, forecast.velocity(x, y, o.depth, t), speed, hx, hy);
             else
             {
@@ -176,7 +229,10 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         ds.radius = r.reached ? 0.0 : o.radius;
         ds.goal.x = goal.x;
         ds.goal.y = goal.y;
+        const std::size_t diveStart = r.track.size() - 1;
         const DiveEnd dive = flyHeading(x, y, t, hx, hy, surface, truth, forbidden, ds, &r.track);
+        if (measuring && r.track.size() > diveStart + 1)
+            r.measured.push_back(measureDive(r.track, diveStart, truth, forecast, o.depth, o.dacNoise, rng));
         x = dive.x;
         y = dive.y;
         t = dive.t;

@@ -135,6 +135,37 @@ MissionProblem MissionProblem::withLeg(Point2 start, Point2 goal, const GoalWind
     return p;
 }
 
+MissionProblem MissionProblem::withField(std::shared_ptr<const CurrentField> field) const
+{
+    MissionProblem p(*this);
+    p.field_ = std::move(field);
+    p.members_.clear();
+    return p;
+}
+
+CorrectionParams MissionProblem::correctionParams() const
+{
+    const MissionSpec &m = spec_;
+    const ObservationsSpec s = m.observations.value_or(ObservationsSpec{});
+    CorrectionParams p;
+    const double side = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
+    p.lengthScale = std::isfinite(s.lengthScale) ? s.lengthScale : m.current.isForecast() ? 20000.0 : 0.1 * side;
+    const double span = field_->timeEnd() - field_->timeBegin();
+    p.timeScale = std::isfinite(s.timeScale) ? s.timeScale
+                  : m.hasTimeUnit()          ? 86400.0 / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds)
+                  : std::isfinite(span)      ? 0.1 * span
+                                             : side / m.vehicle.speed;
+    p.errorRatio = s.errorRatio;
+    if (m.dive.enabled)
+    {
+        p.depthTop = m.dive.params.zMin;
+        p.depthBottom = m.dive.params.zMax;
+    }
+    else
+        p.depthTop = p.depthBottom = m.vehicle.depth;
+    return p;
+}
+
 MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
 {
     MissionProblem p(*this);

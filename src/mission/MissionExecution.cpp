@@ -109,6 +109,20 @@ Replanner replanner(const MissionProblem &problem, Point2 goal, double margin)
     };
 }
 
+/// Plans of the replan_observed strategy: as replanner(), on the forecast corrected by every DAC the glider measured
+/// so far (CorrectedField, the mission's correction parameters). Without a measurement, or with innovations that are
+/// all zero (a truth equal to the forecast), the corrected field is the forecast to the bit.
+ObservedReplanner observedReplanner(const MissionProblem &problem, Point2 goal, double margin)
+{
+    const CorrectionParams params = problem.correctionParams();
+    return [&problem, goal, margin, params](double x, double y, double t, const std::vector<TimedPoint> &current,
+                                            const std::vector<DacObservation> &measured) {
+        const MissionProblem corrected =
+            problem.withField(std::make_shared<CorrectedField>(problem.getField(), measured, params));
+        return replanner(corrected, goal, margin)(x, y, t, current);
+    };
+}
+
 /// Flies one planned run with every strategy.
 void flyRun(const MissionProblem &problem, const ExecutionResult &settings, ExecutionRun &run)
 {
@@ -129,6 +143,9 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
     {
         if (s == ControlStrategy::Replan)
             o.replan = replanner(problem, run.goal, settings.surfacingInterval);
+        if (s == ControlStrategy::ReplanObserved)
+            o.replanObserved = observedReplanner(problem, run.goal, settings.surfacingInterval);
+        o.dacNoise = e.dacNoise;
         run.flown.push_back(flyPlan(run.plan, speed, *problem.getField(), *problem.getTruth(),
                                     problem.getEnvironment().get(), s, o));
     }

@@ -91,24 +91,9 @@ void MissionProblem::applyObservations()
         }
         dac.push_back({t, toLocal(r.at), {(r.u * ex + r.v * nx) / scale, (r.u * ey + r.v * ny) / scale}});
     }
-    CorrectionParams p;
-    const double side = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
-    p.lengthScale = std::isfinite(s.lengthScale) ? s.lengthScale
-                    : m.current.isForecast()     ? 20000.0
-                                                 : 0.1 * side;
-    p.timeScale = std::isfinite(s.timeScale) ? s.timeScale
-                  : m.hasTimeUnit()          ? 86400.0 / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds)
-                                             : 0.1 * (field_->timeEnd() - field_->timeBegin());
+    const CorrectionParams p = correctionParams();
     if (!(p.timeScale > 0.0) || !std::isfinite(p.timeScale))
-        throw Error(at + ": give observations.time_scale (the forecast has no finite time span to take a tenth of)");
-    p.errorRatio = s.errorRatio;
-    if (m.dive.enabled)
-    {
-        p.depthTop = m.dive.params.zMin;
-        p.depthBottom = m.dive.params.zMax;
-    }
-    else
-        p.depthTop = p.depthBottom = m.vehicle.depth;
+        throw Error(at + ": give observations.time_scale (no default time scale for this field)");
     auto corrected = std::make_shared<CorrectedField>(field_, dac, p);
     report.correction = corrected->summary();
     report.params = p;

@@ -118,7 +118,7 @@ json executionJson(const ExecutionResult &e, const MissionProblem &problem)
             o["grounded_why"] = jtext(f.groundedWhy);
             o["made_good_speed"] = f.madeGoodSpeed;
             o["surfacings"] = f.fixes.empty() ? 0 : f.fixes.size() - 1;
-            if (e.strategies[k] == ControlStrategy::Replan)
+            if (e.strategies[k] == ControlStrategy::Replan || e.strategies[k] == ControlStrategy::ReplanObserved)
                 o["replans"] = f.replans;
         }
         else

@@ -50,7 +50,8 @@ target_link_libraries(test_mission_goal_window PRIVATE nlohmann_json::nlohmann_j
 glider_add_test(test_mission_legs ${CMAKE_CURRENT_LIST_DIR}/TestMissionLegs.cpp
                 ${CMAKE_CURRENT_LIST_DIR}/TestSeagliderTargets.cpp)
 # the glider's measurements: the forecast corrected by its DAC, the plan from the last fix
-glider_add_test(test_mission_observations ${CMAKE_CURRENT_LIST_DIR}/TestObservations.cpp)
+glider_add_test(test_mission_observations ${CMAKE_CURRENT_LIST_DIR}/TestObservations.cpp
+                ${CMAKE_CURRENT_LIST_DIR}/TestExecutionObserved.cpp)
 target_link_libraries(test_mission_observations PRIVATE netCDF::netcdf)
 # safety margins (keep-off distance, depth limit) through the pipeline
 glider_add_test(test_mission_safety ${CMAKE_CURRENT_LIST_DIR}/TestSafety.cpp)

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ struct DacObservation
     double t{0.0};  ///< time (field units): the middle of the dive it averages
     Point2 at;      ///< where (planning frame): the middle of the dive
     Velocity dac;   ///< the depth-averaged current (field units)
+    /// The forecast averaged as the DAC was (along the same dive: a simulated glider knows its track); unset: the
+    /// forecast at (at, t) over the depth range (CorrectedField::depthAveraged())
+    std::optional<Velocity> forecast;
 };
 
 /// @brief The correction's parameters (field units).

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/current/CorrectedField.h"
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/environment/Environment.h"
 #include "ompl_glider/execution/HeadingRoute.h"
@@ -43,7 +44,13 @@ enum class ControlStrategy
     /// The plan's own held headings (a heading route): each segment's heading from its start to its end
     /// (a surfacing also at every segment end), the last one held after the plan's end. For a plan of straight legs
     /// (no ExecutionOptions::headings) it flies as CurrentSensitive.
-    PlannedHeadings
+    PlannedHeadings,
+    /// Toward the end of the active segment with the crab angle for the depth-averaged current the glider measured
+    /// over its last dive (as Slocum and Seaglider steer); the first dive, before any measurement, on the forecast
+    /// at the fix.
+    Dac,
+    /// As Replan, on the forecast corrected by every DAC measured so far (ExecutionOptions::replanObserved).
+    ReplanObserved
 };
 
 /// @brief The name of a strategy as outputs write it: "current_sensitive", "current_blind", "greedy", "replan",
@@ -59,6 +66,10 @@ std::optional<ControlStrategy> parseControlStrategy(const std::string &name);
 using Replanner = std::function<std::vector<TimedPoint>(double x, double y, double t,
                                                            const std::vector<TimedPoint> &current)>;
 
+/// @brief A new plan as Replanner, given also the depth-averaged currents the glider measured so far.
+using ObservedReplanner = std::function<std::vector<TimedPoint>(
+    double x, double y, double t, const std::vector<TimedPoint> &current, const std::vector<DacObservation> &measured)>;
+
 /// @brief Options of flyPlan().
 struct ExecutionOptions
 {
@@ -73,6 +84,10 @@ struct ExecutionOptions
     unsigned replanEvery{1}; ///< ControlStrategy::Replan: replan at every n-th surfacing (the start counts)
     /// ControlStrategy::PlannedHeadings: the plan's held headings (null: the plan is straight legs)
     const HeadingRoute *headings{nullptr};
+    ObservedReplanner replanObserved;  ///< ControlStrategy::ReplanObserved: makes the new plans (required by it)
+    /// Dac, ReplanObserved: the standard deviation of the noise on each measured DAC component (field units; 0: none)
+    double dacNoise{0.0};
+    unsigned dacSeed{1};  ///< seed of that noise
 };
 
 /// @brief One flown run.
@@ -92,6 +107,9 @@ struct FlownTrack
     double madeGoodSpeed{0.0}; ///< straight distance start -> last position divided by the time flown
     unsigned replans{0};       ///< ControlStrategy::Replan: surfacings that renewed the plan (a new plan, or the
                                ///< replanner's re-timed rest of the current one)
+    /// Dac, ReplanObserved: the depth-averaged current measured over each dive (the mean of the truth along the dive,
+    /// plus noise), with the forecast averaged along the same dive
+    std::vector<DacObservation> measured;
 };
 
 /// @brief Flies `plan` (waypoints with planned times; the last is the goal) at `speed` through `truth`, choosing

@@ -13,6 +13,7 @@
 #include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/Geometry.h"
 #include "ompl_glider/cost/DiveProfile.h"
+#include "ompl_glider/current/CorrectedField.h"
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/environment/KeepOffZone.h"
 #include "ompl_glider/environment/Environment.h"
@@ -93,6 +94,13 @@ public:
     /// @p window as the goal's arrival window and no via points; field, truth, regions and box are shared, and an
     /// automatic lattice spacing (planner.grid_size 0) is chosen for the leg's length as for a one-leg mission.
     MissionProblem withLeg(Point2 start, Point2 goal, const GoalWindowSpec &window) const;
+    /// @brief The same problem on another field (the forecast corrected by a glider's measurements while it flies).
+    MissionProblem withField(std::shared_ptr<const CurrentField> field) const;
+    /// @brief The correction of the forecast by a glider's DAC as the mission sets it (MissionSpec::observations),
+    /// its defaults resolved: L 20 km for a forecast (a tenth of the box's larger side for an analytic flow), T one
+    /// day where the time unit is known (else a tenth of the field's span, or of the box's crossing at the
+    /// vehicle's speed when the field has no end), the depth range of the dive profile or the vehicle's depth.
+    CorrectionParams correctionParams() const;
     /// @brief The via points (MissionSpec::waypoints) in the planning frame, in the mission's order.
     const std::vector<Point2> &getViaPoints() const
     {

@@ -358,11 +358,15 @@ struct ExecutionSpec
     /// Time between surfacings (field units); NaN: one hour (3600 s / units.time_s, or 3600 for a forecast), or
     /// for a mission without a time unit (no units.time_s, no epoch, not a forecast) a twentieth of the planned trip.
     double surfacingInterval{std::numeric_limits<double>::quiet_NaN()};
-    /// Strategies by name (current_sensitive, current_blind, greedy, replan), in the order given.
+    /// Strategies by name (current_sensitive, current_blind, greedy, replan, planned_headings, dac, replan_observed),
+    /// in the order given.
     std::vector<std::string> strategies{"current_sensitive", "current_blind", "greedy", "replan"};
     /// The goal counts as reached within this distance (length units); NaN: 1 % of the start-goal distance.
     double radius{std::numeric_limits<double>::quiet_NaN()};
     unsigned replanEvery{1};  ///< replan at every n-th surfacing
+    /// Strategies dac and replan_observed: the standard deviation of the noise on each measured DAC component
+    /// (field units: m/s for a forecast); 0: none
+    double dacNoise{0.0};
     /// The run ends at departure + this (field units); NaN: twice the planned travel time.
     double duration{std::numeric_limits<double>::quiet_NaN()};
     unsigned pairs{0};        ///< batch: random start/goal pairs besides the mission's own (0: none)

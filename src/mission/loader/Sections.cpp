@@ -628,7 +628,8 @@ namespace
 void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "execution";
-    r.checkMap(n, f, {"truth", "surfacing_interval", "strategies", "radius", "replan_every", "duration", "batch"});
+    r.checkMap(n, f,
+               {"truth", "surfacing_interval", "strategies", "radius", "replan_every", "duration", "batch", "dac_noise"});
     ExecutionSpec &e = m.execution;
     e.enabled = true;
     e.mark = {r.file(), r.line(n)};
@@ -678,6 +679,8 @@ void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
         e.radius = r.positive(n["radius"], f + ".radius");
     if (n["replan_every"])
         e.replanEvery = static_cast<unsigned>(r.integer(n["replan_every"], f + ".replan_every", 1, 100000));
+    if (n["dac_noise"])
+        e.dacNoise = r.nonNegative(n["dac_noise"], f + ".dac_noise");
     if (n["batch"])
     {
         const YAML::Node &b = n["batch"];
