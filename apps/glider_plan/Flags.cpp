@@ -260,7 +260,9 @@ void defineExecutionFlags(CLI::App &app, Flags &f)
                    "1 h; without a time unit a twentieth of the planned trip)")
         ->group(ex);
     app.add_option("--strategies", f.strategies,
-                   "control strategies compared, e.g. current_sensitive,current_blind,greedy,replan (default: all)")
+                   "control strategies compared, e.g. current_sensitive,current_blind,greedy,replan; also planned_headings, "
+                   "dac (steer with the last dive's measured DAC) and replan_observed (replan on the forecast corrected "
+                   "by the DAC measured so far) (default: all)")
         ->group(ex);
     app.add_option("--radius", f.radius,
                    "the goal counts as reached within this distance (mission length unit; default 1 % of the "
