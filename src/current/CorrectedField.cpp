@@ -84,8 +84,6 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base, const s
     const Eigen::VectorXd au = solver.solve(du), av = solver.solve(dv);
     alphaU_.assign(au.data(), au.data() + n);
     alphaV_.assign(av.data(), av.data() + n);
-    for (std::size_t i = 0; i < n; ++i)
-        alphaNorm_ += std::hypot(alphaU_[i], alphaV_[i]);
     double after = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
@@ -165,10 +163,46 @@ Jacobian CorrectedField::evaluateJacobian(double x, double y, double z, double t
     return j;
 }
 
+void CorrectedField::reach(const Region &region, double &su, double &sv, double &s) const
+{
+    // every weight is at most 1: the correction is no faster than the sums of the |alpha_i| of the observations that
+    // reach the region (within the cut-off in time and space)
+    su = sv = s = 0.0;
+    const double window = kCutoff * params_.timeScale, far = kCutoff * params_.lengthScale;
+    for (std::size_t i = 0; i < used_.size(); ++i)
+    {
+        const DacObservation &o = used_[i];
+        if (o.t < region.tMin - window || o.t > region.tMax + window)
+            continue;
+        const double dx = std::max({region.xMin - o.at.x, 0.0, o.at.x - region.xMax});
+        const double dy = std::max({region.yMin - o.at.y, 0.0, o.at.y - region.yMax});
+        if (dx * dx + dy * dy > far * far)
+            continue;
+        su += std::abs(alphaU_[i]);
+        sv += std::abs(alphaV_[i]);
+        s += std::hypot(alphaU_[i], alphaV_[i]);
+    }
+}
+
 double CorrectedField::maxSpeed(const Region &region) const
 {
-    // every weight is at most 1: the correction is no faster than the sum of the |alpha_i|
-    return base_->maxSpeed(region) + alphaNorm_;
+    double su = 0.0, sv = 0.0, s = 0.0;
+    reach(region, su, sv, s);
+    return base_->maxSpeed(region) + s;
+}
+
+bool CorrectedField::velocityBounds(const Region &region, double &uMin, double &uMax, double &vMin,
+                                    double &vMax) const
+{
+    if (!base_->velocityBounds(region, uMin, uMax, vMin, vMax))
+        return false;
+    double su = 0.0, sv = 0.0, s = 0.0;
+    reach(region, su, sv, s);
+    uMin -= su;
+    uMax += su;
+    vMin -= sv;
+    vMax += sv;
+    return true;
 }
 
 std::string CorrectedField::name() const

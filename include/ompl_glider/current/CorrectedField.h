@@ -72,6 +72,12 @@ public:
     Velocity correction(double x, double y, double t) const;
 
     double maxSpeed(const Region &region) const override;
+    /// @brief The forecast's local bounds widened by the correction's largest reach over the region.
+    bool velocityBounds(const Region &region, double &uMin, double &uMax, double &vMin, double &vMax) const override;
+    bool hasVelocityBounds() const override
+    {
+        return base_->hasVelocityBounds();
+    }
     bool inWater(double x, double y, double z) const override
     {
         return base_->inWater(x, y, z);
@@ -103,6 +109,8 @@ protected:
     Jacobian evaluateJacobian(double x, double y, double z, double t) const override;
 
 private:
+    /// The sums of |alpha_u| and |alpha_v| (and of |alpha|) over the observations that reach @p region.
+    void reach(const Region &region, double &su, double &sv, double &s) const;
     /// Adds the correction (and, with @p j, its Jacobian) at (x, y, t).
     void addCorrection(double x, double y, double t, Velocity &c, Jacobian *j) const;
 
@@ -110,7 +118,6 @@ private:
     CorrectionParams params_;
     std::vector<DacObservation> used_;       // by time
     std::vector<double> alphaU_, alphaV_;    // weights of the innovations
-    double alphaNorm_{0.0};                  // sum_i |alpha_i|: bounds the correction's speed
     CorrectionSummary summary_;
 };
 }  // namespace ompl_glider
