@@ -202,11 +202,10 @@ ProfileFile readProfile(const std::string &file)
     if (const auto id = var("platform"))
         p.platform = nc.attText(*id, "id").value_or("");
     if (p.platform.empty())
-        if (const auto id = var("trajectory"))
+        if (const auto id = var("trajectory"); id && nc.varType(*id) == NC_CHAR && nc.varDims(*id).size() == 1)
         {
-            std::vector<char> name(nc.dimLen(nc.varDims(*id).empty() ? 0 : nc.varDims(*id)[0]) + 1, '\0');
-            if (nc.varType(*id) == NC_CHAR && !nc.varDims(*id).empty())
-                nc_get_var_text(nc.id(), *id, name.data());
+            std::vector<char> name(nc.dimLen(nc.varDims(*id)[0]) + 1, '\0');
+            nc_get_var_text(nc.id(), *id, name.data());
             p.platform = name.data();
         }
     if (const auto t = var("profile_time"), la = var("profile_lat"), lo = var("profile_lon"); t && la && lo)
