@@ -70,7 +70,7 @@ double guessedLegsFlown(const MissionProblem &problem)
     }
     return actual;
 }
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {
@@ -124,8 +124,8 @@ int main(int argc, char **argv)
                     both, sumChain, sumGuess, 100.0 * (sumGuess / sumChain - 1.0), guessFails);
 
     std::printf("\n2. free order: branch and bound against all n! orders (grid %.2f)\n", 2.0 * grid);
-    std::printf("%3s %8s %16s %13s %14s %10s %9s\n", "n", "n!", "orders planned", "legs planned",
-                "legs of all n!", "gain", "seconds");
+    std::printf("%3s %8s %16s %13s %14s %10s %9s\n", "n", "n!", "orders planned", "legs planned", "legs of all n!",
+                "gain", "seconds");
     for (std::size_t n = 3; n <= maxFree; ++n)
     {
         MissionSpec m = jetMission(rng, n, 2.0 * grid);

@@ -16,10 +16,10 @@ namespace
 {
 /// Past this many scales a Gaussian weight is below exp(-12.5) (4e-6): left out.
 constexpr double kCutoff = 5.0;
-}  // namespace
+} // namespace
 
-CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base, const std::vector<DacObservation> &observations,
-                               CorrectionParams params)
+CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
+                               const std::vector<DacObservation> &observations, CorrectionParams params)
     : base_(std::move(base)), params_(params)
 {
     if (!base_)
@@ -41,7 +41,8 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base, const s
         else
             kept.push_back(o);
     }
-    std::stable_sort(kept.begin(), kept.end(), [](const DacObservation &a, const DacObservation &b) { return a.t < b.t; });
+    std::stable_sort(kept.begin(), kept.end(),
+                     [](const DacObservation &a, const DacObservation &b) { return a.t < b.t; });
     if (kept.size() > params_.maxObservations)
     {
         summary_.older = kept.size() - params_.maxObservations;
@@ -57,8 +58,8 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base, const s
     double before = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
-        const Velocity f = used_[i].forecast ? *used_[i].forecast
-                                             : depthAveraged(used_[i].at.x, used_[i].at.y, used_[i].t);
+        const Velocity f =
+            used_[i].forecast ? *used_[i].forecast : depthAveraged(used_[i].at.x, used_[i].at.y, used_[i].t);
         du[i] = used_[i].dac.u - f.u;
         dv[i] = used_[i].dac.v - f.v;
         // a DAC equal to the forecast but for the rounding of its numbers (a float file, a CSV): no innovation
@@ -191,8 +192,7 @@ double CorrectedField::maxSpeed(const Region &region) const
     return base_->maxSpeed(region) + s;
 }
 
-bool CorrectedField::velocityBounds(const Region &region, double &uMin, double &uMax, double &vMin,
-                                    double &vMax) const
+bool CorrectedField::velocityBounds(const Region &region, double &uMin, double &uMax, double &vMin, double &vMax) const
 {
     if (!base_->velocityBounds(region, uMin, uMax, vMin, vMax))
         return false;
@@ -209,4 +209,4 @@ std::string CorrectedField::name() const
 {
     return base_->name() + " corrected by " + std::to_string(summary_.used) + " glider DAC";
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

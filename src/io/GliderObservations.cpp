@@ -103,8 +103,10 @@ void readCsv(const std::string &file, GliderObservations &o)
                 col[cells[i]] = i;
             for (const char *k : {"time", "lon", "lat", "u", "v"})
                 if (!col.count(k))
-                    throw Error(file + ":" + std::to_string(n) + ": the header must name the columns time, lon, lat, "
-                                                                  "u, v (missing '" + std::string(k) + "')");
+                    throw Error(file + ":" + std::to_string(n) +
+                                ": the header must name the columns time, lon, lat, "
+                                "u, v (missing '" +
+                                std::string(k) + "')");
             continue;
         }
         const auto cell = [&](const char *k) { return col[k] < cells.size() ? cells[col[k]] : std::string(); };
@@ -121,7 +123,8 @@ void readCsv(const std::string &file, GliderObservations &o)
                 used = 0;
             }
             if (used != c.size() || c.empty())
-                throw Error(file + ":" + std::to_string(n) + ": column '" + k + "': expected a number, got '" + c + "'");
+                throw Error(file + ":" + std::to_string(n) + ": column '" + k + "': expected a number, got '" + c +
+                            "'");
             return v;
         };
         DacRecord r;
@@ -130,7 +133,7 @@ void readCsv(const std::string &file, GliderObservations &o)
         try
         {
             r.time = t.find_first_of("T-:") != std::string::npos && t.find('T') != std::string::npos ? parseIsoTime(t)
-                                                                                                    : number("time");
+                                                                                                     : number("time");
         }
         catch (const Error &e)
         {
@@ -142,7 +145,7 @@ void readCsv(const std::string &file, GliderObservations &o)
         if (!o.lastFix || r.time >= o.lastFix->time)
             o.lastFix = GliderFix{r.time, r.at};
         if (cell("u").empty() && cell("v").empty())
-            continue;  // a fix without a DAC
+            continue; // a fix without a DAC
         r.u = number("u");
         r.v = number("v");
         const std::string why = check(r);
@@ -244,7 +247,7 @@ ProfileFile readProfile(const std::string &file)
     }
     return p;
 }
-}  // namespace
+} // namespace
 
 GliderObservations readGliderObservations(const std::string &path)
 {
@@ -283,7 +286,8 @@ GliderObservations readGliderObservations(const std::string &path)
                 ++o.rejected[p.rejected];
         }
     }
-    std::stable_sort(o.dac.begin(), o.dac.end(), [](const DacRecord &a, const DacRecord &b) { return a.time < b.time; });
+    std::stable_sort(o.dac.begin(), o.dac.end(),
+                     [](const DacRecord &a, const DacRecord &b) { return a.time < b.time; });
     // a record at the time of the one before it is a repeat (a profile file sent twice)
     std::vector<DacRecord> unique;
     for (const DacRecord &r : o.dac)
@@ -312,4 +316,4 @@ std::string observationsText(const GliderObservations &o)
         why += (why.empty() ? "" : ", ") + std::to_string(count) + " " + reason;
     return s + (why.empty() ? "" : "; rejected: " + why);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -33,9 +33,7 @@ struct Stops
 {
     const MissionProblem &problem;
     std::size_t n;
-    explicit Stops(const MissionProblem &p) : problem(p), n(p.getViaPoints().size())
-    {
-    }
+    explicit Stops(const MissionProblem &p) : problem(p), n(p.getViaPoints().size()) {}
     Point2 point(int i) const
     {
         return i < 0 ? problem.getStart() : i >= static_cast<int>(n) ? problem.getGoal() : problem.getViaPoints()[i];
@@ -48,10 +46,7 @@ struct Stops
     {
         return i >= static_cast<int>(n) ? problem.getSpec().goalWindow : problem.getSpec().waypoints[i].arrive;
     }
-    double stay(int i) const
-    {
-        return i < 0 || i >= static_cast<int>(n) ? 0.0 : problem.getSpec().waypoints[i].stay;
-    }
+    double stay(int i) const { return i < 0 || i >= static_cast<int>(n) ? 0.0 : problem.getSpec().waypoints[i].stay; }
 };
 
 /// Why the glider cannot hold at @p p over [t1, t2] (the motion validator's hold test: in water, within the forecast,
@@ -100,7 +95,7 @@ std::string legBadInput(const std::string &badInput, int from, int to, std::size
         return from < 0 ? "start" : "waypoints[" + std::to_string(from) + "]";
     if (badInput == "goal")
         return to >= static_cast<int>(n) ? "goal" : "waypoints[" + std::to_string(to) + "]";
-    return leg == 0 ? badInput : "";  // a later leg's departure after the forecast: no path, not bad input
+    return leg == 0 ? badInput : ""; // a later leg's departure after the forecast: no path, not bad input
 }
 
 /// Plans the legs of the stops in @p order (via indices) from @p departure; each leg planned once per (from, to,
@@ -144,14 +139,8 @@ public:
         return whyNoStay(problem_, l.toPoint, l.arrival(), l.arrival() + l.stay, l.plan.speed);
     }
 
-    std::size_t planned() const
-    {
-        return planned_;
-    }
-    const Stops &stops() const
-    {
-        return stops_;
-    }
+    std::size_t planned() const { return planned_; }
+    const Stops &stops() const { return stops_; }
 
 private:
     const MissionProblem &problem_;
@@ -225,9 +214,9 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
         r.status = bad.plan.status == PlanStatus::ExactSolution ? PlanStatus::NoPath : bad.plan.status;
         r.plannerStatus = bad.plan.plannerStatus;
         r.reason = "leg " + std::to_string(bad.index + 1) + ", " + bad.from + " to " + bad.to + ": " + bad.plan.reason;
-        r.badInput = legBadInput(bad.plan.badInput, bad.fromVia, bad.toVia < 0 ? static_cast<int>(m.waypoints.size())
-                                                                                 : bad.toVia,
-                                 m.waypoints.size(), bad.index);
+        r.badInput = legBadInput(bad.plan.badInput, bad.fromVia,
+                                 bad.toVia < 0 ? static_cast<int>(m.waypoints.size()) : bad.toVia, m.waypoints.size(),
+                                 bad.index);
         if (bad.plan.badInput == "departure.time" && bad.index > 0)
             r.reason = "leg " + std::to_string(bad.index + 1) + ", " + bad.from + " to " + bad.to +
                        ": it would depart at " + timeText(problem, bad.plan.departure) +
@@ -250,7 +239,7 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
         const PlannedPath &p = l.plan;
         l.firstPoint = r.path.empty() ? 0 : r.path.size() - 1;
         if (!r.path.empty() && r.path.back().t != p.path.front().t)
-            l.firstPoint = r.path.size();  // after a stay the leg starts with a hold's end
+            l.firstPoint = r.path.size(); // after a stay the leg starts with a hold's end
         const double gap = problem.gliderProblem(p.departure, r.speed).goalTolerance + 1e-9 * r.pathLength;
         append(r.path, p.path, gap);
         l.lastPoint = r.path.size() - 1;
@@ -283,7 +272,7 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
         {
             TimedPoint hold = r.path.back();
             hold.t += l.stay;
-            r.path.push_back(hold);  // the stay: a hold, flown as the motion validator's hold
+            r.path.push_back(hold); // the stay: a hold, flown as the motion validator's hold
             r.raw.push_back(hold);
             r.smoothed.push_back(hold);
             if (anyHeadings)
@@ -336,9 +325,7 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
 class TourBound
 {
 public:
-    explicit TourBound(const Stops &s) : s_(s), n_(s.n), memo_((std::size_t{1} << n_) * n_, -1.0)
-    {
-    }
+    explicit TourBound(const Stops &s) : s_(s), n_(s.n), memo_((std::size_t{1} << n_) * n_, -1.0) {}
 
     /// Shortest straight tour from @p at through the via points of @p mask (any order) ending at the goal.
     double from(Point2 at, unsigned mask)
@@ -353,10 +340,7 @@ public:
     }
 
 private:
-    static double dist(Point2 a, Point2 b)
-    {
-        return std::hypot(b.x - a.x, b.y - a.y);
-    }
+    static double dist(Point2 a, Point2 b) { return std::hypot(b.x - a.x, b.y - a.y); }
     /// From via point @p i through @p mask to the goal.
     double tail(std::size_t i, unsigned mask)
     {
@@ -417,7 +401,7 @@ public:
         }
         else
         {
-            bestLegs = std::move(given);  // no order has a route: the given order's failure is the reason
+            bestLegs = std::move(given); // no order has a route: the given order's failure is the reason
             bestOrder = s.given;
         }
         return s;
@@ -456,7 +440,7 @@ private:
             PlannedLeg l = planner_.leg(from, static_cast<int>(j), t);
             l.index = legs.size();
             if (!l.plan.solved || !planner_.stayProblem(l).empty())
-                continue;  // this prefix has no route
+                continue; // this prefix has no route
             const double next = l.arrival() + l.stay;
             if (bound(j, l.arrival(), rest) >= best_)
                 continue;
@@ -496,7 +480,7 @@ private:
     std::size_t evaluated_{0};
     std::set<std::vector<std::size_t>> evaluatedOrders_;
 };
-}  // namespace
+} // namespace
 
 double remainingTimeBound(const MissionProblem &problem, Point2 at, double t, const std::vector<std::size_t> &remaining,
                           double speed, double maxCurrent)
@@ -520,8 +504,8 @@ double remainingTimeBound(const MissionProblem &problem, Point2 at, double t, co
         if (w.set)
         {
             const Point2 p = s.point(static_cast<int>(i));
-            bound = std::max(bound, w.begin + s.stay(static_cast<int>(i)) + std::hypot(goal.x - p.x, goal.y - p.y) /
-                                                                                  fastest);
+            bound = std::max(bound,
+                             w.begin + s.stay(static_cast<int>(i)) + std::hypot(goal.x - p.x, goal.y - p.y) / fastest);
         }
     }
     const GoalWindowSpec &g = problem.getSpec().goalWindow;
@@ -569,8 +553,7 @@ MissionPlan planMission(const MissionProblem &problem, double departure, const P
     LegPlanner planner(problem, options);
     if (m.order == VisitOrder::Free)
     {
-        OrderSearcher search(problem, planner, departure,
-                             std::isnan(options.speed) ? m.vehicle.speed : options.speed);
+        OrderSearcher search(problem, planner, departure, std::isnan(options.speed) ? m.vehicle.speed : options.speed);
         out.orderSearch = search.run(out.legs, out.order);
     }
     else
@@ -582,4 +565,4 @@ MissionPlan planMission(const MissionProblem &problem, double departure, const P
     out.plan = assemble(problem, out.legs, departure);
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

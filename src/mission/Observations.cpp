@@ -77,7 +77,7 @@ void MissionProblem::applyObservations()
         }
         if (t > departure)
         {
-            ++report.future;  // measured after the plan departs: not known when it is made
+            ++report.future; // measured after the plan departs: not known when it is made
             continue;
         }
         // velocities in field units (a forecast's m/s; an analytic flow's units per time unit)
@@ -89,7 +89,8 @@ void MissionProblem::applyObservations()
             projection_->eastDirection(r.at.lon, r.at.lat, ex, ey);
             projection_->northDirection(r.at.lon, r.at.lat, nx, ny);
         }
-        dac.push_back({t, toLocal(r.at), {(r.u * ex + r.v * nx) / scale, (r.u * ey + r.v * ny) / scale}});
+        const Velocity c{(r.u * ex + r.v * nx) / scale, (r.u * ey + r.v * ny) / scale};
+        dac.push_back({t, toLocal(r.at), c, std::nullopt});
     }
     const CorrectionParams p = correctionParams();
     if (!(p.timeScale > 0.0) || !std::isfinite(p.timeScale))
@@ -130,4 +131,4 @@ std::string observationNote(const MissionProblem &problem)
            text::number(r->correction.rmsBefore, 3) + (ms ? " m/s" : "") + " before, " +
            text::number(r->correction.rmsAfter, 3) + (ms ? " m/s" : "") + " after the correction";
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

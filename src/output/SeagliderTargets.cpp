@@ -29,7 +29,7 @@ std::string degreesMinutes(double degrees, int degreeDigits)
                   static_cast<long long>(rest % 10000));
     return buf;
 }
-}  // namespace
+} // namespace
 
 std::string seagliderLatitude(double degrees)
 {
@@ -54,7 +54,7 @@ std::vector<SeagliderTarget> seagliderTargets(const MissionResult &r, const Miss
     for (const std::size_t i : turns)
     {
         if (i == 0)
-            continue;  // the start: where the glider is
+            continue; // the start: where the glider is
         SeagliderTarget t;
         t.position = r.waypoints[i].lonLat;
         t.radius = r.spec.outputs.gotoWptDist;
@@ -73,7 +73,7 @@ std::vector<SeagliderTarget> seagliderTargets(const MissionResult &r, const Miss
                 t.name = "T" + std::to_string(++turn);
             while (used.count(t.name));
         if (!out.empty() && out.back().name == t.name)
-            continue;  // the end of a stay at the via point just listed
+            continue; // the end of a stay at the via point just listed
         used.insert(t.name);
         out.push_back(t);
     }
@@ -84,8 +84,9 @@ std::vector<SeagliderTarget> seagliderTargets(const MissionResult &r, const Miss
 
 std::string formatSeagliderTargets(const std::vector<SeagliderTarget> &targets, const std::string &mission)
 {
-    std::string s = "/ Seaglider targets: " + mission + " (ompl_glider)\n/ name lat=DDMM.MMMM lon=DDDMM.MMMM "
-                                                        "radius=metres goto=next\n";
+    std::string s = "/ Seaglider targets: " + mission +
+                    " (ompl_glider)\n/ name lat=DDMM.MMMM lon=DDDMM.MMMM "
+                    "radius=metres goto=next\n";
     for (const SeagliderTarget &t : targets)
     {
         char radius[32];
@@ -95,4 +96,4 @@ std::string formatSeagliderTargets(const std::vector<SeagliderTarget> &targets, 
     }
     return s;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -25,7 +25,8 @@ std::vector<DacObservation> track(const CurrentField &truth, int n, double sigma
     {
         const double t = 0.5 * k, x = 2.0 + 0.2 * k, y = -2.0 + 0.1 * k;
         const Velocity c = truth.velocity(x, y, 0.0, t);
-        obs.push_back({t, {x, y}, {c.u + (sigma > 0 ? noise(rng) : 0.0), c.v + (sigma > 0 ? noise(rng) : 0.0)}});
+        obs.push_back(
+            {t, {x, y}, {c.u + (sigma > 0 ? noise(rng) : 0.0), c.v + (sigma > 0 ? noise(rng) : 0.0)}, std::nullopt});
     }
     return obs;
 }
@@ -34,17 +35,9 @@ std::vector<DacObservation> track(const CurrentField &truth, int n, double sigma
 class DriftedJet : public CurrentField
 {
 public:
-    DriftedJet(double du, double dv) : du_(du), dv_(dv)
-    {
-    }
-    double maxSpeed(const Region &r) const override
-    {
-        return jet_.maxSpeed(r) + std::hypot(du_, dv_);
-    }
-    std::string name() const override
-    {
-        return "drifted jet";
-    }
+    DriftedJet(double du, double dv) : du_(du), dv_(dv) {}
+    double maxSpeed(const Region &r) const override { return jet_.maxSpeed(r) + std::hypot(du_, dv_); }
+    std::string name() const override { return "drifted jet"; }
 
 protected:
     Velocity evaluate(double x, double y, double z, double t) const override
@@ -61,7 +54,7 @@ private:
     MeanderingJet jet_;
     double du_, dv_;
 };
-}  // namespace
+} // namespace
 
 TEST(CorrectedField, NoInnovationChangesNothingToTheBit)
 {
@@ -115,15 +108,15 @@ TEST(CorrectedField, RecoversAUniformErrorNearTheGliderAndFadesAway)
 TEST(CorrectedField, RejectsObservationsOutsideTheForecastAndNotFinite)
 {
     auto uniform = std::make_shared<UniformCurrent>(0.1, 0.0);
-    std::vector<DacObservation> obs{{0.0, {0, 0}, {0.2, 0.0}},
-                                    {1.0, {1, 0}, {std::nan(""), 0.0}},
-                                    {2.0, {2, 0}, {0.2, 0.0}}};
+    std::vector<DacObservation> obs{{0.0, {0, 0}, {0.2, 0.0}, std::nullopt},
+                                    {1.0, {1, 0}, {std::nan(""), 0.0}, std::nullopt},
+                                    {2.0, {2, 0}, {0.2, 0.0}, std::nullopt}};
     CorrectionParams p{1.0, 5.0, 0.5};
     p.maxObservations = 1;
     const CorrectedField c(uniform, obs, p);
     EXPECT_EQ(c.summary().given, 3u);
     EXPECT_EQ(c.summary().notFinite, 1u);
-    EXPECT_EQ(c.summary().older, 1u);  // the most recent one is kept
+    EXPECT_EQ(c.summary().older, 1u); // the most recent one is kept
     EXPECT_EQ(c.summary().used, 1u);
     // one observation: the weight is 1 / (1 + ratio^2) of its innovation at its own place and time
     EXPECT_NEAR(c.correction(2.0, 0.0, 2.0).u, 0.1 / 1.25, 1e-15);

@@ -12,11 +12,11 @@ namespace ioos_test
 {
 struct Profile
 {
-    double time;      // seconds since 1970
-    double lon, lat;  // degrees
-    double u, v;      // m/s (-999: fill)
-    signed char qc{1};           // u_qc / v_qc
-    std::string glider{"ru29"};  // platform:id
+    double time;                // seconds since 1970
+    double lon, lat;            // degrees
+    double u, v;                // m/s (-999: fill)
+    signed char qc{1};          // u_qc / v_qc
+    std::string glider{"ru29"}; // platform:id
 };
 
 inline void check(int status, const std::string &what)
@@ -62,14 +62,16 @@ inline void writeProfile(const std::string &path, const Profile &p)
     int uqc = 0, vqc = 0, platform = 0;
     check(nc_def_var(nc, "u_qc", NC_BYTE, 0, nullptr, &uqc), "u_qc");
     check(nc_def_var(nc, "v_qc", NC_BYTE, 0, nullptr, &vqc), "v_qc");
-    text(uqc, "flag_meanings", "no_qc_performed good_data probably_good_data bad_data_that_are_potentially_correctable "
-                               "bad_data value_changed not_used not_used interpolated_value missing_value");
+    text(uqc, "flag_meanings",
+         "no_qc_performed good_data probably_good_data bad_data_that_are_potentially_correctable "
+         "bad_data value_changed not_used not_used interpolated_value missing_value");
     check(nc_def_var(nc, "platform", NC_INT, 0, nullptr, &platform), "platform");
     text(platform, "id", p.glider);
     text(platform, "type", "platform");
     check(nc_enddef(nc), "enddef");
     char name[20] = {0};
-    std::strncpy(name, (p.glider + "-20261115T0000").c_str(), sizeof name);
+    const std::string id = (p.glider + "-20261115T0000").substr(0, sizeof name);
+    std::memcpy(name, id.data(), id.size());
     check(nc_put_var_text(nc, traj, name), "trajectory");
     for (const auto &[id, value] : vars)
         check(nc_put_var_double(nc, id, &value), "value");
@@ -77,4 +79,4 @@ inline void writeProfile(const std::string &path, const Profile &p)
     check(nc_put_var_schar(nc, vqc, &p.qc), "v_qc");
     check(nc_close(nc), "close");
 }
-}  // namespace ioos_test
+} // namespace ioos_test

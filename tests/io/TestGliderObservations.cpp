@@ -37,13 +37,13 @@ std::string errorOf(const std::string &path)
     }
     return "";
 }
-}  // namespace
+} // namespace
 
 TEST(GliderObservations, IoosDeploymentFolder)
 {
     const fs::path d = freshDir("ioos_deployment");
     const double t0 = parseIsoTime("2026-03-15T06:00:00Z");
-    for (int k = 0; k < 6; ++k)  // six good profiles, written out of order
+    for (int k = 0; k < 6; ++k) // six good profiles, written out of order
     {
         const int i = (k * 5) % 6;
         ioos_test::writeProfile((d / ("ru29_" + std::to_string(i) + ".nc")).string(),
@@ -65,7 +65,7 @@ TEST(GliderObservations, IoosDeploymentFolder)
     ASSERT_EQ(o.dac.size(), 6u);
     for (std::size_t i = 0; i < o.dac.size(); ++i)
     {
-        EXPECT_DOUBLE_EQ(o.dac[i].time, t0 + 7200.0 * i - 1800.0);  // the dive's middle, in time order
+        EXPECT_DOUBLE_EQ(o.dac[i].time, t0 + 7200.0 * i - 1800.0); // the dive's middle, in time order
         EXPECT_NEAR(o.dac[i].u, 0.1 * i, 1e-12);
         EXPECT_NEAR(o.dac[i].at.lon, -52.5 + 0.02 * i - 0.001, 1e-9);
     }
@@ -110,7 +110,7 @@ TEST(GliderObservations, CsvRowsFixesAndErrors)
     std::ofstream(f) << "time,lon,lat,u,v\n"
                         "2026-03-15T06:00:00Z,-52.7,47.9,0.10,-0.02\n"
                         "1773561600,307.5,48.0,0.12,-0.01\n"  // seconds since 1970, longitude 0..360
-                        "2026-03-15T12:00:00Z,-52.4,48.1,,\n"  // a fix without a DAC
+                        "2026-03-15T12:00:00Z,-52.4,48.1,,\n" // a fix without a DAC
                         "2026-03-15T09:00:00Z,-52.5,48.0,9.0,0.0\n";
     const GliderObservations o = readGliderObservations(f);
     ASSERT_EQ(o.dac.size(), 2u);

@@ -20,13 +20,13 @@ namespace
 const char *kJetMission = "current: {type: meandering_jet}\nregion: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
                           "start: {x: 1, y: -3}\ngoal: {x: 8, y: 3}\nvehicle: {speed: 0.5}\n"
                           "planner: {grid_size: 0.4}\n";
-}  // namespace
+} // namespace
 
 TEST(ExecutionObserved, TruthEqualToTheForecastReplanObservedIsReplanToTheBit)
 {
-    const MissionSpec m = parseMission(std::string(kJetMission) +
-                                       "execution: {surfacing_interval: 0.5, replan_every: 4, radius: 0.1, "
-                                       "strategies: [replan, replan_observed, current_sensitive, dac]}\n");
+    const MissionSpec m =
+        parseMission(std::string(kJetMission) + "execution: {surfacing_interval: 0.5, replan_every: 4, radius: 0.1, "
+                                                "strategies: [replan, replan_observed, current_sensitive, dac]}\n");
     const MissionResult r = runMission(MissionProblem(m));
     ASSERT_TRUE(r.execution.has_value());
     const ExecutionRun &run = r.execution->runs.front();
@@ -49,7 +49,7 @@ TEST(ExecutionObserved, TruthEqualToTheForecastReplanObservedIsReplanToTheBit)
         EXPECT_EQ(d.dac.u, d.forecast->u);
         EXPECT_EQ(d.dac.v, d.forecast->v);
     }
-    EXPECT_TRUE(replan.measured.empty());  // the forecast-only strategies measure nothing
+    EXPECT_TRUE(replan.measured.empty()); // the forecast-only strategies measure nothing
 }
 
 TEST(ExecutionObserved, MeasuredDacIsTheTruthsMeanAlongTheDive)

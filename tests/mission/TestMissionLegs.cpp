@@ -44,7 +44,7 @@ MissionSpec mission(const std::string &current, const std::string &region, Point
 
 const char *kJet = "{type: meandering_jet}";
 const char *kJetRegion = "{x_min: 0, x_max: 10, y_min: -4, y_max: 4}";
-}  // namespace
+} // namespace
 
 // The mission's time is the chain of its legs, each planned as a mission of its own from the previous leg's arrival,
 // and its whole route re-flown by the accurate integrator arrives when the mission says.
@@ -118,8 +118,10 @@ double bestOfAllOrders(const MissionSpec &m, std::size_t &orders)
 void checkFreeOrder(const std::string &current, const std::string &region, Box box, std::size_t n, unsigned seed)
 {
     std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> ux(box.xMin + 0.1 * (box.xMax - box.xMin), box.xMax - 0.1 * (box.xMax - box.xMin));
-    std::uniform_real_distribution<double> uy(box.yMin + 0.1 * (box.yMax - box.yMin), box.yMax - 0.1 * (box.yMax - box.yMin));
+    std::uniform_real_distribution<double> ux(box.xMin + 0.1 * (box.xMax - box.xMin),
+                                              box.xMax - 0.1 * (box.xMax - box.xMin));
+    std::uniform_real_distribution<double> uy(box.yMin + 0.1 * (box.yMax - box.yMin),
+                                              box.yMax - 0.1 * (box.yMax - box.yMin));
     std::vector<Point2> via;
     for (std::size_t i = 0; i < n; ++i)
         via.push_back({ux(rng), uy(rng)});
@@ -143,7 +145,7 @@ void checkFreeOrder(const std::string &current, const std::string &region, Box b
     for (std::size_t i = 0; i < n; ++i)
         EXPECT_EQ(sorted[i], i);
 }
-}  // namespace
+} // namespace
 
 // Branch and bound over orders returns the fastest of all n! orders, each planned by the same pipeline.
 TEST(MissionLegsFreeOrder, BestOfAllOrdersOnTheJetAndTheDoubleGyre)
@@ -155,8 +157,8 @@ TEST(MissionLegsFreeOrder, BestOfAllOrdersOnTheJetAndTheDoubleGyre)
 // The bound never exceeds a planned time: it is admissible on every prefix the search may drop.
 TEST(MissionLegsFreeOrder, BoundIsBelowThePlannedTime)
 {
-    MissionSpec m = mission(kJet, kJetRegion, {1, -3}, {8, 3}, {{3, 2}, {6, -2}, {5, 0.5}},
-                            "planner: {grid_size: 0.4}\n");
+    MissionSpec m =
+        mission(kJet, kJetRegion, {1, -3}, {8, 3}, {{3, 2}, {6, -2}, {5, 0.5}}, "planner: {grid_size: 0.4}\n");
     const MissionProblem problem(m);
     const MissionPlan plan = planMission(problem, 0.0);
     ASSERT_TRUE(plan.plan.solved);
@@ -166,10 +168,10 @@ TEST(MissionLegsFreeOrder, BoundIsBelowThePlannedTime)
     EXPECT_LE(remainingTimeBound(problem, problem.getViaPoints()[0], plan.legs[0].arrival(), {1, 2}, 0.5, c),
               plan.plan.path.back().t);
     // a closed form: no current, no via points left: the straight distance at V
-    MissionSpec still = mission("{type: uniform, parameters: {u: 0, v: 0}}", "{x_min: 0, x_max: 10, y_min: -4, y_max: 4}", {1, 0},
-                                {9, 0}, {{5, 3}});
+    MissionSpec still = mission("{type: uniform, parameters: {u: 0, v: 0}}",
+                                "{x_min: 0, x_max: 10, y_min: -4, y_max: 4}", {1, 0}, {9, 0}, {{5, 3}});
     const MissionProblem p2(still);
-    EXPECT_NEAR(remainingTimeBound(p2, {1, 0}, 0.0, {0}, 0.5, 0.0), (5.0 + 5.0) / 0.5, 1e-12);  // two 3-4-5 legs
+    EXPECT_NEAR(remainingTimeBound(p2, {1, 0}, 0.0, {0}, 0.5, 0.0), (5.0 + 5.0) / 0.5, 1e-12); // two 3-4-5 legs
 }
 
 // A stay in a weak current holds in place for its duration; the next leg leaves when it ends.
@@ -216,7 +218,7 @@ TEST(MissionLegs, StayInACurrentFasterThanTheGliderIsRefused)
     EXPECT_NE(r.plan.reason.find("leg 1, start to M"), std::string::npos) << r.plan.reason;
     EXPECT_NE(r.plan.reason.find("cannot hold position"), std::string::npos) << r.plan.reason;
     EXPECT_TRUE(r.plan.badInput.empty());
-    EXPECT_TRUE(r.waypoints.empty());  // never a partial plan presented as whole
+    EXPECT_TRUE(r.waypoints.empty()); // never a partial plan presented as whole
     // without the stay the same mission plans
     m.waypoints[0].stay = 0.0;
     EXPECT_TRUE(runMission(MissionProblem(m)).plan.solved);
@@ -242,7 +244,8 @@ TEST(MissionLegs, BadViaPointsNameTheFieldAndLine)
     };
     refused("waypoints:\n  - {x: 3, y: 0, radius: 0}\n", "m.yaml:6: field 'waypoints[0].radius'");
     refused("waypoints:\n  - {x: 3, y: 0, radius: -5}\n", "waypoints[0].radius");
-    refused("waypoints:\n  - {name: A, x: 3, y: 0}\n  - {name: A, x: 4, y: 0}\n", "m.yaml:7: field 'waypoints[1].name'");
+    refused("waypoints:\n  - {name: A, x: 3, y: 0}\n  - {name: A, x: 4, y: 0}\n",
+            "m.yaml:7: field 'waypoints[1].name'");
     refused("waypoints:\n  - {name: start, x: 3, y: 0}\n", "waypoints[0].name");
     refused("waypoints:\n  - {name: 'A B', x: 3, y: 0}\n", "not a plain name");
     refused("waypoints:\n  - {x: 30, y: 0}\n", "waypoints[0]");
@@ -266,8 +269,10 @@ TEST(MissionLegs, ViaPointOnLandOrOutsideTheForecastIsRefused)
     const auto refused = [&](const std::string &via, const std::string &what) {
         try
         {
-            MissionProblem p(parseMission("current: {type: netcdf, file: '" + nc + "'}\nstart: {lon: -52.7, lat: 47.9}\n"
-                                          "goal: {lon: -51.5, lat: 48.45}\nwaypoints:\n  - " + via + "\n",
+            MissionProblem p(parseMission("current: {type: netcdf, file: '" + nc +
+                                              "'}\nstart: {lon: -52.7, lat: 47.9}\n"
+                                              "goal: {lon: -51.5, lat: 48.45}\nwaypoints:\n  - " +
+                                              via + "\n",
                                           "m.yaml"));
         }
         catch (const Error &e)
@@ -287,12 +292,12 @@ TEST(MissionLegs, ViaPointOnLandOrOutsideTheForecastIsRefused)
 // A fleet glider with its own via points plans as the same mission planned alone.
 TEST(MissionLegs, FleetGliderWithViaPointsPlansAsItsOwnMission)
 {
-    const MissionSpec m = parseMission(
-        "current: {type: meandering_jet}\nregion: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
-        "vehicle: {speed: 0.5}\nplanner: {grid_size: 0.4}\noutputs: {directory: /tmp/og_fleet_legs}\n"
-        "fleet:\n"
-        "  - {name: a, start: {x: 1, y: -3}, goal: {x: 8, y: 3}, waypoints: [{name: P, x: 3, y: -2.5}]}\n"
-        "  - {name: b, start: {x: 2, y: -3}, goal: {x: 8, y: -3}}\n");
+    const MissionSpec m =
+        parseMission("current: {type: meandering_jet}\nregion: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
+                     "vehicle: {speed: 0.5}\nplanner: {grid_size: 0.4}\noutputs: {directory: /tmp/og_fleet_legs}\n"
+                     "fleet:\n"
+                     "  - {name: a, start: {x: 1, y: -3}, goal: {x: 8, y: 3}, waypoints: [{name: P, x: 3, y: -2.5}]}\n"
+                     "  - {name: b, start: {x: 2, y: -3}, goal: {x: 8, y: -3}}\n");
     const std::vector<FleetGlider> fleet = runFleet(m, {});
     ASSERT_EQ(fleet.size(), 2u);
     ASSERT_TRUE(fleet[0].row.solved) << fleet[0].row.reason;

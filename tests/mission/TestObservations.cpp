@@ -47,7 +47,9 @@ std::string uniformForecast(const std::string &name, double u, double v)
     const int dims[] = {dt, dy, dx};
     nc_def_var(nc, "u", NC_FLOAT, 3, dims, &vu);
     nc_def_var(nc, "v", NC_FLOAT, 3, dims, &vv);
-    const auto text = [&](int var, const char *k, const std::string &s) { nc_put_att_text(nc, var, k, s.size(), s.c_str()); };
+    const auto text = [&](int var, const char *k, const std::string &s) {
+        nc_put_att_text(nc, var, k, s.size(), s.c_str());
+    };
     text(vt, "units", "hours since 2026-03-15 00:00:00");
     text(vt, "standard_name", "time");
     text(vy, "units", "degrees_north");
@@ -67,7 +69,8 @@ std::string uniformForecast(const std::string &name, double u, double v)
     nc_put_var_double(nc, vt, t.data());
     nc_put_var_double(nc, vy, y.data());
     nc_put_var_double(nc, vx, x.data());
-    std::vector<float> U(static_cast<std::size_t>(nt) * ny * nx, static_cast<float>(u)), V(U.size(), static_cast<float>(v));
+    std::vector<float> U(static_cast<std::size_t>(nt) * ny * nx, static_cast<float>(u)),
+        V(U.size(), static_cast<float>(v));
     nc_put_var_float(nc, vu, U.data());
     nc_put_var_float(nc, vv, V.data());
     nc_close(nc);
@@ -84,17 +87,19 @@ std::string dacCsv(const std::string &name, double u, double v)
     for (int k = 0; k < 8; ++k)
         f << formatIsoTime(end - 12 * 3600.0 + 1.5 * 3600.0 * k) << "," << -52.30 + 0.03 * k << ",48.0,"
           << std::setprecision(17) << u << "," << v << std::setprecision(6) << "\n";
-    f << formatIsoTime(end) << ",-52.09,48.0,,\n";  // the last fix
+    f << formatIsoTime(end) << ",-52.09,48.0,,\n"; // the last fix
     return path;
 }
 
 MissionSpec missionOn(const std::string &forecast, const std::string &extra)
 {
-    return parseMission("name: obs\ncurrent: {type: netcdf, file: '" + forecast + "'}\n"
-                        "goal: {lon: -51.95, lat: 48.08}\nvehicle: {speed: 0.3}\nplanner: {grid_size: 500}\n" + extra,
+    return parseMission("name: obs\ncurrent: {type: netcdf, file: '" + forecast +
+                            "'}\n"
+                            "goal: {lon: -51.95, lat: 48.08}\nvehicle: {speed: 0.3}\nplanner: {grid_size: 500}\n" +
+                            extra,
                         "obs.yaml");
 }
-}  // namespace
+} // namespace
 
 TEST(Observations, ReplanFromTheLastFixOnTheCorrectedForecastFliesAsThePlanOnTheTruth)
 {
@@ -109,7 +114,7 @@ TEST(Observations, ReplanFromTheLastFixOnTheCorrectedForecastFliesAsThePlanOnThe
     const MissionProblem pc(corrected);
     ASSERT_TRUE(pc.observations());
     EXPECT_EQ(pc.observations()->correction.used, 8u);
-    EXPECT_NEAR(pc.observations()->correction.rmsBefore, std::hypot(0.1, 0.05), 1e-6 + 1e-7 * 8);  // float file
+    EXPECT_NEAR(pc.observations()->correction.rmsBefore, std::hypot(0.1, 0.05), 1e-6 + 1e-7 * 8); // float file
     EXPECT_LT(pc.observations()->correction.rmsAfter, 0.1 * pc.observations()->correction.rmsBefore);
     const MissionSpec onTruth = missionOn(truth, "start: {lon: -52.09, lat: 48.0}\ndeparture: {time: 86400}\n");
     const MissionProblem pt(onTruth);
@@ -137,7 +142,7 @@ TEST(Observations, ReplanFromTheLastFixOnTheCorrectedForecastFliesAsThePlanOnThe
 TEST(Observations, DacEqualToTheForecastChangeAlmostNothing)
 {
     const std::string forecast = uniformForecast("same.nc", 0.1, 0.0);
-    const std::string dac = dacCsv("same.csv", static_cast<double>(0.1f), 0.0);  // the file's float, as a CSV has it
+    const std::string dac = dacCsv("same.csv", static_cast<double>(0.1f), 0.0); // the file's float, as a CSV has it
     const std::string start = "start: {lon: -52.09, lat: 48.0}\ndeparture: {time: 86400}\n";
     const MissionResult with = runMission(MissionProblem(missionOn(forecast, start + "observations: '" + dac + "'\n")));
     const MissionResult without = runMission(MissionProblem(missionOn(forecast, start)));
@@ -166,7 +171,8 @@ TEST(Observations, BadObservationsNameTheField)
     try
     {
         MissionProblem p(missionOn(forecast, "start: {lon: -52.09, lat: 48.0}\ndeparture: {time: 3600}\n"
-                                             "observations: '" + dac + "'\n"));
+                                             "observations: '" +
+                                                 dac + "'\n"));
         FAIL() << "accepted observations from the future";
     }
     catch (const Error &e)

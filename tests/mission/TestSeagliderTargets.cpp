@@ -47,7 +47,8 @@ std::vector<Target> readTargets(const std::string &text)
     std::vector<Target> out;
     std::istringstream in(text);
     std::string line;
-    const std::regex re(R"(^([A-Za-z][A-Za-z0-9_-]*) lat=(-?\d{4}\.\d{4}) lon=(-?\d{5}\.\d{4}) radius=(\d+) goto=([A-Za-z][A-Za-z0-9_-]*)$)");
+    const std::regex re(
+        R"(^([A-Za-z][A-Za-z0-9_-]*) lat=(-?\d{4}\.\d{4}) lon=(-?\d{5}\.\d{4}) radius=(\d+) goto=([A-Za-z][A-Za-z0-9_-]*)$)");
     while (std::getline(in, line))
     {
         if (line.empty() || line[0] == '/')
@@ -68,7 +69,7 @@ double metres(double lat1, double lon1, double lat2, double lon2)
                      std::cos(lat1 * d) * std::cos(lat2 * d) * std::pow(std::sin((lon2 - lon1) * d / 2), 2);
     return 2 * r * std::asin(std::sqrt(a));
 }
-}  // namespace
+} // namespace
 
 TEST(SeagliderTargets, SignsAndDigitsNearTheEquatorAndThePrimeMeridian)
 {
@@ -78,7 +79,7 @@ TEST(SeagliderTargets, SignsAndDigitsNearTheEquatorAndThePrimeMeridian)
     EXPECT_EQ(seagliderLongitude(0.0), "00000.0000");
     EXPECT_EQ(seagliderLatitude(41.99999999), "4200.0000");
     EXPECT_EQ(seagliderLongitude(-122.5), "-12230.0000");
-    EXPECT_EQ(seagliderLongitude(359.5), "-00030.0000");  // written in -180..180
+    EXPECT_EQ(seagliderLongitude(359.5), "-00030.0000"); // written in -180..180
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> lat(-2.0, 2.0), lon(-2.0, 2.0);
     for (int i = 0; i < 2000; ++i)
@@ -99,7 +100,7 @@ TEST(SeagliderTargets, ReadBackMatchesTheRoutesTurns)
     ASSERT_TRUE(r.plan.solved) << r.plan.reason;
     const std::vector<Target> t = readTargets(formatSeagliderTargets(seagliderTargets(r, &problem), m.name));
     std::vector<std::size_t> turns = gotoWaypointIndices(r, &problem);
-    turns.erase(turns.begin());  // the start is where the glider is
+    turns.erase(turns.begin()); // the start is where the glider is
     ASSERT_EQ(t.size(), turns.size());
     std::set<std::string> names;
     for (std::size_t k = 0; k < t.size(); ++k)

@@ -1,8 +1,8 @@
 #pragma once
 /// @file CorrectedField.h
-/// @brief A forecast corrected by a glider's depth-averaged currents (DAC) by optimal interpolation ([BrethertonOI]): innovations
-/// d_i = DAC_i - F(x_i, t_i) (F averaged over the glider's depth range), spread with a space-time Gaussian covariance
-/// C = exp(-r^2 / (2 L^2)) exp(-dt^2 / (2 T^2)) (the forecast error variance s_f^2 factored out), weights
+/// @brief A forecast corrected by a glider's depth-averaged currents (DAC) by optimal interpolation ([BrethertonOI]):
+/// innovations d_i = DAC_i - F(x_i, t_i) (F averaged over the glider's depth range), spread with a space-time Gaussian
+/// covariance C = exp(-r^2 / (2 L^2)) exp(-dt^2 / (2 T^2)) (the forecast error variance s_f^2 factored out), weights
 /// alpha = (C_obs,obs + (s_o / s_f)^2 I)^-1 d, and F'(x, t) = F(x, t) + sum_i C(x, t; x_i, t_i) alpha_i. Far from the
 /// observations and long after the last one F' = F. A current field like any other: every planner, the level set,
 /// isochrones and the execution fly it.
@@ -20,9 +20,9 @@ namespace ompl_glider
 /// @brief One depth-averaged current measured by a glider, in the planning frame.
 struct DacObservation
 {
-    double t{0.0};  ///< time (field units): the middle of the dive it averages
-    Point2 at;      ///< where (planning frame): the middle of the dive
-    Velocity dac;   ///< the depth-averaged current (field units)
+    double t{0.0}; ///< time (field units): the middle of the dive it averages
+    Point2 at;     ///< where (planning frame): the middle of the dive
+    Velocity dac;  ///< the depth-averaged current (field units)
     /// The forecast averaged as the DAC was (along the same dive: a simulated glider knows its track); unset: the
     /// forecast at (at, t) over the depth range (CorrectedField::depthAveraged())
     std::optional<Velocity> forecast;
@@ -31,26 +31,26 @@ struct DacObservation
 /// @brief The correction's parameters (field units).
 struct CorrectionParams
 {
-    double lengthScale{20000.0};  ///< L: the distance over which forecast errors are alike (20 km for a forecast)
-    double timeScale{86400.0};    ///< T: the time over which they persist (1 day for a forecast)
+    double lengthScale{20000.0}; ///< L: the distance over which forecast errors are alike (20 km for a forecast)
+    double timeScale{86400.0};   ///< T: the time over which they persist (1 day for a forecast)
     /// s_o / s_f: observation error over forecast error (> 0); 0.2: a DAC is good to about 2 cm/s, a forecast's current
     /// to about 10 cm/s
     double errorRatio{0.2};
-    double depthTop{0.0};         ///< the glider's depth range, averaged over to compare with a DAC (m)
-    double depthBottom{0.0};      ///< see depthTop (equal: the forecast at that depth)
-    std::size_t maxObservations{2000};  ///< the most recent ones kept (the system is solved once, O(n^3))
+    double depthTop{0.0};              ///< the glider's depth range, averaged over to compare with a DAC (m)
+    double depthBottom{0.0};           ///< see depthTop (equal: the forecast at that depth)
+    std::size_t maxObservations{2000}; ///< the most recent ones kept (the system is solved once, O(n^3))
 };
 
 /// @brief What the correction used and what it did.
 struct CorrectionSummary
 {
-    std::size_t given{0};            ///< observations given
-    std::size_t used{0};             ///< used in the correction
-    std::size_t outsideForecast{0};  ///< rejected: outside the forecast's time, on land or off its grid
-    std::size_t older{0};            ///< rejected: older than the maxObservations most recent
-    std::size_t notFinite{0};        ///< rejected: a coordinate or a component not finite
-    double rmsBefore{0.0};           ///< RMS |d_i| against the forecast (field units)
-    double rmsAfter{0.0};            ///< RMS |DAC_i - F'(x_i, t_i)| against the corrected field
+    std::size_t given{0};           ///< observations given
+    std::size_t used{0};            ///< used in the correction
+    std::size_t outsideForecast{0}; ///< rejected: outside the forecast's time, on land or off its grid
+    std::size_t older{0};           ///< rejected: older than the maxObservations most recent
+    std::size_t notFinite{0};       ///< rejected: a coordinate or a component not finite
+    double rmsBefore{0.0};          ///< RMS |d_i| against the forecast (field units)
+    double rmsAfter{0.0};           ///< RMS |DAC_i - F'(x_i, t_i)| against the corrected field
 };
 
 /// @brief The forecast @p base corrected by @p observations (see the file comment).
@@ -64,44 +64,23 @@ public:
     /// @brief The base forecast averaged over the glider's depth range at (x, y, t).
     Velocity depthAveraged(double x, double y, double t) const;
     /// @brief What the correction used and did.
-    const CorrectionSummary &summary() const
-    {
-        return summary_;
-    }
+    const CorrectionSummary &summary() const { return summary_; }
     /// @brief The correction alone at (x, y, t): F' - F.
     Velocity correction(double x, double y, double t) const;
 
     double maxSpeed(const Region &region) const override;
     /// @brief The forecast's local bounds widened by the correction's largest reach over the region.
     bool velocityBounds(const Region &region, double &uMin, double &uMax, double &vMin, double &vMax) const override;
-    bool hasVelocityBounds() const override
-    {
-        return base_->hasVelocityBounds();
-    }
-    bool inWater(double x, double y, double z) const override
-    {
-        return base_->inWater(x, y, z);
-    }
+    bool hasVelocityBounds() const override { return base_->hasVelocityBounds(); }
+    bool inWater(double x, double y, double z) const override { return base_->inWater(x, y, z); }
     bool segmentInWater(double x1, double y1, double x2, double y2, double z) const override
     {
         return base_->segmentInWater(x1, y1, x2, y2, z);
     }
-    std::vector<Segment2> landBoundary(double z) const override
-    {
-        return base_->landBoundary(z);
-    }
-    double timeBegin() const override
-    {
-        return base_->timeBegin();
-    }
-    double timeEnd() const override
-    {
-        return base_->timeEnd();
-    }
-    const FieldGrid *grid() const override
-    {
-        return base_->grid();
-    }
+    std::vector<Segment2> landBoundary(double z) const override { return base_->landBoundary(z); }
+    double timeBegin() const override { return base_->timeBegin(); }
+    double timeEnd() const override { return base_->timeEnd(); }
+    const FieldGrid *grid() const override { return base_->grid(); }
     std::string name() const override;
 
 protected:
@@ -116,8 +95,8 @@ private:
 
     std::shared_ptr<const CurrentField> base_;
     CorrectionParams params_;
-    std::vector<DacObservation> used_;       // by time
-    std::vector<double> alphaU_, alphaV_;    // weights of the innovations
+    std::vector<DacObservation> used_;    // by time
+    std::vector<double> alphaU_, alphaV_; // weights of the innovations
     CorrectionSummary summary_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -18,29 +18,29 @@ namespace ompl_glider
 /// @brief One depth-averaged current.
 struct DacRecord
 {
-    double time{0.0};  ///< seconds since 1970-01-01T00:00:00Z: the middle of the dive it averages
-    LonLat at;         ///< degrees (longitude -180..180): the middle of the dive
-    double u{0.0};     ///< eastward, m/s
-    double v{0.0};     ///< northward, m/s
-    std::string file;  ///< the file it came from
+    double time{0.0}; ///< seconds since 1970-01-01T00:00:00Z: the middle of the dive it averages
+    LonLat at;        ///< degrees (longitude -180..180): the middle of the dive
+    double u{0.0};    ///< eastward, m/s
+    double v{0.0};    ///< northward, m/s
+    std::string file; ///< the file it came from
 };
 
 /// @brief A position the glider reported.
 struct GliderFix
 {
-    double time{0.0};  ///< seconds since 1970-01-01T00:00:00Z
-    LonLat at;         ///< degrees (longitude -180..180)
+    double time{0.0}; ///< seconds since 1970-01-01T00:00:00Z
+    LonLat at;        ///< degrees (longitude -180..180)
 };
 
 /// @brief What a deployment's files gave.
 struct GliderObservations
 {
-    std::string source;            ///< the path given (file, folder or glob pattern)
-    std::size_t files{0};          ///< files read
-    std::string platform;          ///< the glider (IOOS `platform:id`, else `trajectory`); empty for a CSV
-    std::vector<DacRecord> dac;    ///< usable records, in time order
-    std::optional<GliderFix> lastFix;  ///< the latest position reported (a profile's or a DAC's, a CSV row's)
-    std::map<std::string, std::size_t> rejected;  ///< rejected records by reason ("QC flag 4", "fill value", ...)
+    std::string source;               ///< the path given (file, folder or glob pattern)
+    std::size_t files{0};             ///< files read
+    std::string platform;             ///< the glider (IOOS `platform:id`, else `trajectory`); empty for a CSV
+    std::vector<DacRecord> dac;       ///< usable records, in time order
+    std::optional<GliderFix> lastFix; ///< the latest position reported (a profile's or a DAC's, a CSV row's)
+    std::map<std::string, std::size_t> rejected; ///< rejected records by reason ("QC flag 4", "fill value", ...)
 };
 
 /// @brief The most a DAC may be (m/s): faster records are rejected as implausible.
@@ -55,4 +55,4 @@ GliderObservations readGliderObservations(const std::string &path);
 
 /// @brief "12 used; rejected: 2 QC flag 4, 1 fill value" of what @p o holds.
 std::string observationsText(const GliderObservations &o);
-}  // namespace ompl_glider
+} // namespace ompl_glider

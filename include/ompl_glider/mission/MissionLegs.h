@@ -22,9 +22,9 @@ struct MissionPlan
     /// The whole route: the legs' paths in turn, a stay as a hold (a zero-length leg), times on one clock; solved only
     /// when every leg is. Without via points: planRoute()'s plan itself.
     PlannedPath plan;
-    std::vector<PlannedLeg> legs;  ///< every leg planned, in the order flown (empty without via points)
-    std::vector<std::size_t> order;  ///< the via points in the order visited (indices into MissionSpec::waypoints)
-    std::optional<OrderSearch> orderSearch;  ///< with `order: free`
+    std::vector<PlannedLeg> legs;   ///< every leg planned, in the order flown (empty without via points)
+    std::vector<std::size_t> order; ///< the via points in the order visited (indices into MissionSpec::waypoints)
+    std::optional<OrderSearch> orderSearch; ///< with `order: free`
 };
 
 /// @brief The one planning function of a mission from @p departure: planRoute() for a mission of one leg; with via
@@ -47,4 +47,4 @@ OptimumReference missionOptimumReference(const MissionProblem &problem, const Mi
 /// search; exposed for tests.
 double remainingTimeBound(const MissionProblem &problem, Point2 at, double t, const std::vector<std::size_t> &remaining,
                           double speed, double maxCurrent);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -18,10 +18,10 @@ class MissionProblem;
 /// @brief One target of the file.
 struct SeagliderTarget
 {
-    std::string name;      ///< letters, digits, '_' and '-'
-    LonLat position;       ///< degrees (longitude in -180..180)
-    double radius{100.0};  ///< metres: the target counts as reached within it
-    std::string next;      ///< the target flown to after this one (its own name for the last)
+    std::string name;     ///< letters, digits, '_' and '-'
+    LonLat position;      ///< degrees (longitude in -180..180)
+    double radius{100.0}; ///< metres: the target counts as reached within it
+    std::string next;     ///< the target flown to after this one (its own name for the last)
 };
 
 /// @brief Signed degrees as the targets file's latitude, [-]DDMM.MMMM (two digits of degrees, minutes rounded to
@@ -38,4 +38,4 @@ std::vector<SeagliderTarget> seagliderTargets(const MissionResult &result, const
 
 /// @brief The file's text: a comment header naming the mission, then one line per target.
 std::string formatSeagliderTargets(const std::vector<SeagliderTarget> &targets, const std::string &mission);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -54,19 +54,21 @@ double scalar(const Reader &r, const YAML::Node &n, const std::string &f, const 
         r.fail(n, f, e.what());
     }
 }
-}  // namespace
+} // namespace
 
 void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &field, std::vector<ViaPointSpec> &out,
                    const MissionSpec &m)
 {
     if (!n.IsSequence() || n.size() == 0)
-        r.fail(n, field, "expected a list of via points, each {name, lon, lat} or {name, x, y} (radius, arrive, "
-                         "stay optional)");
+        r.fail(n, field,
+               "expected a list of via points, each {name, lon, lat} or {name, x, y} (radius, arrive, "
+               "stay optional)");
     r.mark(n, field);
     constexpr std::size_t kMaxViaPoints = 1000;
     if (n.size() > kMaxViaPoints)
-        r.fail(n, field, std::to_string(n.size()) + " via points, more than the limit of " +
-                             std::to_string(kMaxViaPoints) + " (a planned leg each)");
+        r.fail(n, field,
+               std::to_string(n.size()) + " via points, more than the limit of " + std::to_string(kMaxViaPoints) +
+                   " (a planned leg each)");
     std::set<std::string> names{"start", "goal"};
     out.clear();
     for (std::size_t i = 0; i < n.size(); ++i)
@@ -81,12 +83,13 @@ void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &fiel
         v.name = w["name"] ? r.text(w["name"], f + ".name") : "WP" + std::to_string(i + 1);
         if (!plainViaPointName(v.name))
             r.fail(w["name"], f + ".name",
-                   "'" + v.name + "' is not a plain name (a letter, then letters, digits, '_' or '-'; at most 16 "
-                   "characters: it is written into the Seaglider targets file)");
+                   "'" + v.name +
+                       "' is not a plain name (a letter, then letters, digits, '_' or '-'; at most 16 "
+                       "characters: it is written into the Seaglider targets file)");
         if (!names.insert(v.name).second)
             r.fail(w["name"] ? w["name"] : w, f + ".name",
-                   "'" + v.name + "' names " + (v.name == "start" || v.name == "goal" ? "the mission's " + v.name
-                                                                                   : "another via point") +
+                   "'" + v.name + "' names " +
+                       (v.name == "start" || v.name == "goal" ? "the mission's " + v.name : "another via point") +
                        " too: give every via point its own name");
         if (w["radius"])
         {
@@ -94,16 +97,15 @@ void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &fiel
             v.radius = scalar(r, w["radius"], f + ".radius", "expected a length: a number, or e.g. '500 m', '2 km'",
                               [&](const std::string &t) { return parseLength(t, m.metresPerUnit(), metres); });
             if (!(v.radius > 0.0) || !std::isfinite(v.radius))
-                r.fail(w["radius"], f + ".radius", "must be a length > 0 (the glider counts the point as reached "
-                                                   "within it)");
+                r.fail(w["radius"], f + ".radius",
+                       "must be a length > 0 (the glider counts the point as reached "
+                       "within it)");
         }
         if (w["stay"])
         {
             v.stay = scalar(r, w["stay"], f + ".stay",
                             "expected a duration: a number in the mission's time unit, or e.g. '6 h', '1 d'",
-                            [&](const std::string &t) {
-                                return parseDuration(t, m.timeUnitSeconds, m.hasTimeUnit());
-                            });
+                            [&](const std::string &t) { return parseDuration(t, m.timeUnitSeconds, m.hasTimeUnit()); });
             if (!(v.stay >= 0.0) || !std::isfinite(v.stay))
                 r.fail(w["stay"], f + ".stay", "must be a duration >= 0");
         }
@@ -141,8 +143,9 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
     {
         r.checkMap(n, f, {"file", "length_scale", "time_scale", "error_ratio"});
         if (!n["file"])
-            r.fail(n, f + ".file", "missing: the glider's files (IOOS profile files: a file, folder or pattern; or a CSV)");
-        file.reset(n["file"]);  // (yaml-cpp: operator= would write into n itself)
+            r.fail(n, f + ".file",
+                   "missing: the glider's files (IOOS profile files: a file, folder or pattern; or a CSV)");
+        file.reset(n["file"]); // (yaml-cpp: operator= would write into n itself)
         if (n["length_scale"])
         {
             const bool metres = m.physicalUnits().length;
@@ -153,10 +156,9 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
         }
         if (n["time_scale"])
         {
-            o.timeScale = scalar(r, n["time_scale"], f + ".time_scale", "expected a duration: '1 d', or a number",
-                                 [&](const std::string &t) {
-                                     return parseDuration(t, m.timeUnitSeconds, m.hasTimeUnit());
-                                 });
+            o.timeScale =
+                scalar(r, n["time_scale"], f + ".time_scale", "expected a duration: '1 d', or a number",
+                       [&](const std::string &t) { return parseDuration(t, m.timeUnitSeconds, m.hasTimeUnit()); });
             if (!(o.timeScale > 0.0) || !std::isfinite(o.timeScale))
                 r.fail(n["time_scale"], f + ".time_scale", "must be > 0");
         }
@@ -164,7 +166,7 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
             o.errorRatio = r.positive(n["error_ratio"], f + ".error_ratio");
     }
     const std::string path = r.text(file, n.IsMap() ? f + ".file" : f);
-    o.path = joinPath(r.dir(), path);  // a file, folder or glob pattern next to the mission
+    o.path = joinPath(r.dir(), path); // a file, folder or glob pattern next to the mission
     m.observations = std::move(o);
 }
 
@@ -172,10 +174,11 @@ VisitOrder readVisitOrder(const Reader &r, const YAML::Node &n, const std::strin
 {
     const VisitOrder o = r.oneOf(n, field, {"given", "free"}) == "free" ? VisitOrder::Free : VisitOrder::Given;
     if (o == VisitOrder::Free && count > kMaxFreeOrderViaPoints)
-        r.fail(n, field, "free order over " + std::to_string(count) + " via points: at most " +
-                             std::to_string(kMaxFreeOrderViaPoints) +
-                             " (the search is exponential in their number); give the order, or split the mission");
+        r.fail(n, field,
+               "free order over " + std::to_string(count) + " via points: at most " +
+                   std::to_string(kMaxFreeOrderViaPoints) +
+                   " (the search is exponential in their number); give the order, or split the mission");
     return o;
 }
-}  // namespace mission_loader
-}  // namespace ompl_glider
+} // namespace mission_loader
+} // namespace ompl_glider
