@@ -132,8 +132,8 @@ void readCsv(const std::string &file, GliderObservations &o)
         const std::string t = cell("time");
         try
         {
-            r.time = t.find_first_of("T-:") != std::string::npos && t.find('T') != std::string::npos ? parseIsoTime(t)
-                                                                                                     : number("time");
+            r.time =
+                t.find('T') != std::string::npos ? parseIsoTime(t) : number("time"); // a date, or seconds since 1970
         }
         catch (const Error &e)
         {
@@ -228,7 +228,8 @@ ProfileFile readProfile(const std::string &file)
     for (const char *qc : {"u_qc", "v_qc", "time_uv_qc", "lat_uv_qc", "lon_uv_qc"})
         if (const auto id = var(qc))
         {
-            const double flag = nc.readAll1D(*id).empty() ? 0.0 : nc.readAll1D(*id)[0];
+            const std::vector<double> flags = nc.readAll1D(*id);
+            const double flag = flags.empty() ? 0.0 : flags[0];
             if (flag == 3.0 || flag == 4.0 || flag == 9.0)
             {
                 p.rejected = "QC flag " + text::number(flag) + " (" + qc + ")";

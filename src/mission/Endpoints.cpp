@@ -205,6 +205,16 @@ void MissionProblem::checkViaPoints() const
     }
 }
 
+void planning_detail::addPlanningWork(PlannedPath &to, const PlannedPath &from)
+{
+    to.searchCostFunctionCalls += from.searchCostFunctionCalls;
+    to.postprocessCostFunctionCalls += from.postprocessCostFunctionCalls;
+    to.currentModelCalls += from.currentModelCalls;
+    to.expandedVertices += from.expandedVertices;
+    to.planningSeconds += from.planningSeconds;
+    to.postprocessSeconds += from.postprocessSeconds;
+}
+
 std::string planning_detail::frozenFieldNote(const MissionProblem &problem, const PlannedPath &plan)
 {
     const MissionSpec &m = problem.getSpec();

@@ -130,14 +130,7 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
     r.searchCostFunctionCalls = r.postprocessCostFunctionCalls = r.currentModelCalls = r.expandedVertices = 0;
     r.planningSeconds = r.postprocessSeconds = 0.0;
     for (const PlannedPath &p : plans)
-    {
-        r.searchCostFunctionCalls += p.searchCostFunctionCalls;
-        r.postprocessCostFunctionCalls += p.postprocessCostFunctionCalls;
-        r.currentModelCalls += p.currentModelCalls;
-        r.expandedVertices += p.expandedVertices;
-        r.planningSeconds += p.planningSeconds;
-        r.postprocessSeconds += p.postprocessSeconds;
-    }
+        addPlanningWork(r, p);
     if (best > 0 && r.solved)
     {
         // a member's plan: its times on the mean field, which the outputs describe

@@ -222,11 +222,7 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
                        ": it would depart at " + timeText(problem, bad.plan.departure) +
                        ", after the end of the forecast";
         for (const PlannedLeg &l : legs)
-        {
-            r.searchCostFunctionCalls += l.plan.searchCostFunctionCalls;
-            r.currentModelCalls += l.plan.currentModelCalls;
-            r.planningSeconds += l.plan.planningSeconds;
-        }
+            planning_detail::addPlanningWork(r, l.plan);
         return r;
     }
     r.solved = true;
@@ -251,12 +247,7 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
         smoothedTime += p.smoothedTravelTime;
         r.rawPathLength += p.rawPathLength;
         r.pathLength += p.pathLength;
-        r.searchCostFunctionCalls += p.searchCostFunctionCalls;
-        r.postprocessCostFunctionCalls += p.postprocessCostFunctionCalls;
-        r.currentModelCalls += p.currentModelCalls;
-        r.expandedVertices += p.expandedVertices;
-        r.planningSeconds += p.planningSeconds;
-        r.postprocessSeconds += p.postprocessSeconds;
+        planning_detail::addPlanningWork(r, p);
         r.pathChecked = r.pathChecked && p.pathChecked;
         r.reflown = r.reflown && p.reflown;
         if (r.switchedFrom.empty() && !p.switchedFrom.empty())
@@ -354,14 +345,38 @@ private:
     std::vector<double> memo_;
 };
 
+/// remainingTimeBound() over the via points of @p mask, with the search's @p tour (its memo kept between calls).
+double timeBound(const Stops &s, TourBound &tour, Point2 at, double t, unsigned mask, double fastest)
+{
+    double stays = 0.0;
+    for (std::size_t i = 0; i < s.n; ++i)
+        if (mask & (1u << i))
+            stays += s.stay(static_cast<int>(i));
+    double bound = t + tour.from(at, mask) / fastest + stays;
+    // a point's window opens at its begin: the rest of the tour cannot start from it earlier
+    const Point2 goal = s.problem.getGoal();
+    for (std::size_t i = 0; i < s.n; ++i)
+    {
+        const GoalWindowSpec w = s.window(static_cast<int>(i));
+        if ((mask & (1u << i)) && w.set)
+        {
+            const Point2 p = s.point(static_cast<int>(i));
+            bound = std::max(bound,
+                             w.begin + s.stay(static_cast<int>(i)) + std::hypot(goal.x - p.x, goal.y - p.y) / fastest);
+        }
+    }
+    const GoalWindowSpec &g = s.problem.getSpec().goalWindow;
+    return g.set ? std::max(bound, g.begin) : bound;
+}
+
 /// The free-order search: depth first over orders, each prefix's legs planned once (the cache), a prefix dropped as
-/// soon as its arrival plus remainingTimeBound() cannot beat the best complete order so far. The given order is
+/// soon as its arrival plus the time bound (timeBound()) cannot beat the best complete order so far. The given order is
 /// planned first: its time is the first bound and the reference of the gain.
 class OrderSearcher
 {
 public:
     OrderSearcher(const MissionProblem &problem, LegPlanner &planner, double departure, double speed)
-        : problem_(problem), planner_(planner), departure_(departure), speed_(speed)
+        : planner_(planner), departure_(departure), speed_(speed), tour_(planner.stops())
     {
         Region box = problem.getBox();
         maxCurrent_ = problem.getField()->maxSpeed(box);
@@ -378,7 +393,6 @@ public:
             s.ordersTotal *= k;
         std::vector<PlannedLeg> given = flyOrder(planner_, s.given, departure_);
         evaluatedOrders_.insert(s.given);
-        ++evaluated_;
         if (given.back().plan.solved && given.size() == n + 1)
         {
             s.givenTime = given.back().arrival() - departure_;
@@ -389,7 +403,7 @@ public:
         std::vector<std::size_t> prefix;
         std::vector<PlannedLeg> legs;
         search(-1, departure_, (1u << n) - 1u, prefix, legs);
-        s.ordersEvaluated = evaluated_;
+        s.ordersEvaluated = evaluatedOrders_.size();
         s.legsPlanned = planner_.planned();
         if (std::isfinite(best_))
         {
@@ -415,8 +429,7 @@ private:
         {
             PlannedLeg l = planner_.leg(from, static_cast<int>(n), t);
             l.index = legs.size();
-            if (evaluatedOrders_.insert(prefix).second)
-                ++evaluated_;
+            evaluatedOrders_.insert(prefix);
             if (l.plan.solved && l.arrival() - departure_ < best_)
             {
                 best_ = l.arrival() - departure_;
@@ -461,24 +474,18 @@ private:
     /// Lower bound of the mission's travel time arriving at via point @p j at @p t with @p rest still to visit.
     double bound(std::size_t j, double t, unsigned rest)
     {
-        std::vector<std::size_t> remaining;
-        for (std::size_t i = 0; i < planner_.stops().n; ++i)
-            if (rest & (1u << i))
-                remaining.push_back(i);
-        const double after = t + planner_.stops().stay(static_cast<int>(j));
-        return remainingTimeBound(problem_, planner_.stops().point(static_cast<int>(j)), after, remaining, speed_,
-                                  maxCurrent_) -
-               departure_;
+        const Stops &s = planner_.stops();
+        const double after = t + s.stay(static_cast<int>(j));
+        return timeBound(s, tour_, s.point(static_cast<int>(j)), after, rest, speed_ + maxCurrent_) - departure_;
     }
 
-    const MissionProblem &problem_;
     LegPlanner &planner_;
     double departure_, speed_, maxCurrent_{0.0};
+    TourBound tour_; // the shortest straight tours, memoised over the whole search
     double best_{kInf};
     std::vector<std::size_t> bestOrder_;
     std::vector<PlannedLeg> bestLegs_;
-    std::size_t evaluated_{0};
-    std::set<std::vector<std::size_t>> evaluatedOrders_;
+    std::set<std::vector<std::size_t>> evaluatedOrders_; // complete orders planned to the goal
 };
 } // namespace
 
@@ -486,32 +493,11 @@ double remainingTimeBound(const MissionProblem &problem, Point2 at, double t, co
                           double speed, double maxCurrent)
 {
     const Stops s(problem);
-    unsigned mask = 0;
-    double stays = 0.0;
-    for (const std::size_t i : remaining)
-    {
-        mask |= 1u << i;
-        stays += s.stay(static_cast<int>(i));
-    }
-    const double fastest = speed + maxCurrent;
     TourBound tour(s);
-    double bound = t + tour.from(at, mask) / fastest + stays;
-    // a point's window opens at its begin: the rest of the tour cannot start from it earlier
-    const Point2 goal = problem.getGoal();
+    unsigned mask = 0;
     for (const std::size_t i : remaining)
-    {
-        const GoalWindowSpec w = s.window(static_cast<int>(i));
-        if (w.set)
-        {
-            const Point2 p = s.point(static_cast<int>(i));
-            bound = std::max(bound,
-                             w.begin + s.stay(static_cast<int>(i)) + std::hypot(goal.x - p.x, goal.y - p.y) / fastest);
-        }
-    }
-    const GoalWindowSpec &g = problem.getSpec().goalWindow;
-    if (g.set)
-        bound = std::max(bound, g.begin);
-    return bound;
+        mask |= 1u << i;
+    return timeBound(s, tour, at, t, mask, speed + maxCurrent);
 }
 
 OptimumReference missionOptimumReference(const MissionProblem &problem, const MissionResult &result)

@@ -286,9 +286,17 @@ std::string MissionSpec::place(const std::string &field) const
         if (it != marks.end() && it->first.rfind(field + ".", 0) != 0)
             it = marks.end();
     }
+    // a list a flag or a keyword gave whole ("waypoints" by --via): an item of it is placed by the list's mark
+    const std::size_t item = field.find('[');
+    if (it == marks.end() && item != std::string::npos)
+    {
+        const auto whole = marks.find(field.substr(0, item));
+        if (whole != marks.end() && whole->second.line == 0)
+            it = whole;
+    }
     // a command-line flag ("--grid-size") or a keyword of the Python module ("plan(): keyword 'speed'") names itself
     if (it != marks.end() && (it->second.file.rfind("--", 0) == 0 || it->second.file.rfind("plan(", 0) == 0))
-        return it->second.file;
+        return it->second.file + (item != std::string::npos ? " (" + field + ")" : "");
     if (it != marks.end() && it->second.line > 0)
         return it->second.file + ":" + std::to_string(it->second.line) + ": field '" + field + "'";
     return file + ": field '" + field + "'";

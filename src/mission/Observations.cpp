@@ -63,6 +63,8 @@ void MissionProblem::applyObservations()
     report.lastFix = o.lastFix;
     const MissionSpec &m = spec_;
     const double departure = m.departure.window ? m.departure.begin : m.departure.time;
+    // velocities in field units (a forecast's m/s; an analytic flow's units per time unit)
+    const double scale = m.metresPerUnit() / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds);
     std::vector<DacObservation> dac;
     for (const DacRecord &r : o.dac)
     {
@@ -80,8 +82,6 @@ void MissionProblem::applyObservations()
             ++report.future; // measured after the plan departs: not known when it is made
             continue;
         }
-        // velocities in field units (a forecast's m/s; an analytic flow's units per time unit)
-        const double scale = m.metresPerUnit() / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds);
         // east/north turned into the planning frame's x/y there, as the forecast's velocities are
         double ex = 1.0, ey = 0.0, nx = 0.0, ny = 1.0;
         if (projection_)

@@ -167,6 +167,10 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r);
 
 // Endpoints.cpp
 
+/// Adds @p from's search and post-processing work (CFC, CMC, expanded vertices, wall times) to @p to: the work of
+/// several plans reported as one (an ensemble's candidates, a mission's legs).
+void addPlanningWork(PlannedPath &to, const PlannedPath &from);
+
 /// A solved plan that arrives after the forecast's last time under current.horizon hold_last (--beyond hold):
 /// "planned past the forecast's last time (DATE) on its last field, held frozen for the last 5 d 2.0 h of the route
 /// (...)"; empty otherwise.

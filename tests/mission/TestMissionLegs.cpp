@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -43,6 +44,21 @@ MissionSpec mission(const std::string &current, const std::string &region, Point
 }
 
 const char *kJet = "{type: meandering_jet}";
+
+/// @p run must throw an Error whose message holds @p what (@p input names the case).
+void expectRefused(const std::function<void()> &run, const std::string &what, const std::string &input)
+{
+    try
+    {
+        run();
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+        return;
+    }
+    ADD_FAILURE() << "accepted: " << input;
+}
 const char *kJetRegion = "{x_min: 0, x_max: 10, y_min: -4, y_max: 4}";
 } // namespace
 
@@ -230,17 +246,7 @@ TEST(MissionLegs, BadViaPointsNameTheFieldAndLine)
     const std::string head = "current: {type: meandering_jet}\nregion: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
                              "start: {x: 1, y: -3}\ngoal: {x: 8, y: 3}\n";
     const auto refused = [&](const std::string &tail, const std::string &what) {
-        try
-        {
-            const MissionProblem p(parseMission(head + tail, "m.yaml"));
-            runMission(p);
-        }
-        catch (const Error &e)
-        {
-            EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
-            return;
-        }
-        ADD_FAILURE() << "accepted: " << tail;
+        expectRefused([&] { runMission(MissionProblem(parseMission(head + tail, "m.yaml"))); }, what, tail);
     };
     refused("waypoints:\n  - {x: 3, y: 0, radius: 0}\n", "m.yaml:6: field 'waypoints[0].radius'");
     refused("waypoints:\n  - {x: 3, y: 0, radius: -5}\n", "waypoints[0].radius");
@@ -248,7 +254,7 @@ TEST(MissionLegs, BadViaPointsNameTheFieldAndLine)
             "m.yaml:7: field 'waypoints[1].name'");
     refused("waypoints:\n  - {name: start, x: 3, y: 0}\n", "waypoints[0].name");
     refused("waypoints:\n  - {name: 'A B', x: 3, y: 0}\n", "not a plain name");
-    refused("waypoints:\n  - {x: 30, y: 0}\n", "waypoints[0]");
+    refused("waypoints:\n  - {x: 30, y: 0}\n", "m.yaml:6: field 'waypoints[0]': lies outside the region");
     refused("waypoints:\n  - {x: 3, y: 0, arrive: {begin: 5, end: 2}}\n", "waypoints[0].arrive.end");
     refused("waypoints:\n  - {x: 3, y: 0, arrive: {end: 0.1}}\n", "before the glider can get there");
     refused("waypoints:\n  - {x: 3, y: 0}\norder: sideways\n", "field 'order'");
@@ -258,7 +264,7 @@ TEST(MissionLegs, BadViaPointsNameTheFieldAndLine)
     refused(nine + "order: free\n", "at most 8");
     refused("waypoints:\n  - {x: 3, y: 0}\nforbidden:\n  obstacles:\n    - {name: rock, points: [[2, -1], [4, -1], "
             "[4, 1], [2, 1]]}\n",
-            "waypoints[0]");
+            "(via point 'WP1'): the point is");
 }
 
 // A via point on a forecast's land is refused naming it and the nearest water, as a start or goal is; outside the
@@ -267,24 +273,20 @@ TEST(MissionLegs, ViaPointOnLandOrOutsideTheForecastIsRefused)
 {
     const std::string nc = std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/labrador_forecast.nc";
     const auto refused = [&](const std::string &via, const std::string &what) {
-        try
-        {
-            MissionProblem p(parseMission("current: {type: netcdf, file: '" + nc +
-                                              "'}\nstart: {lon: -52.7, lat: 47.9}\n"
-                                              "goal: {lon: -51.5, lat: 48.45}\nwaypoints:\n  - " +
-                                              via + "\n",
-                                          "m.yaml"));
-        }
-        catch (const Error &e)
-        {
-            EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
-            return;
-        }
-        ADD_FAILURE() << "accepted " << via;
+        expectRefused(
+            [&] {
+                MissionProblem(parseMission("current: {type: netcdf, file: '" + nc +
+                                                "'}\nstart: {lon: -52.7, lat: 47.9}\ngoal: {lon: -51.5, lat: 48.45}\n"
+                                                "waypoints:\n  - " +
+                                                via + "\n",
+                                            "m.yaml"));
+            },
+            what, via);
     };
     refused("{name: L, lon: -51.9, lat: 48.62}", "m.yaml:5: field 'waypoints[0]'");
     refused("{name: L, lon: -51.9, lat: 48.62}", "on land");
-    refused("{name: F, lon: -40.0, lat: 48.2}", "waypoints[0]");
+    refused("{name: F, lon: -40.0, lat: 48.2}", "m.yaml:5: field 'waypoints[0]': (");
+    refused("{name: F, lon: -40.0, lat: 48.2}", "lies outside the planning region");
     refused("{name: S, lon: -52.2, lat: 48.0, stay: 10 d}", "m.yaml:5: field 'waypoints[0].stay'");
     refused("{name: S, lon: -52.2, lat: 48.0, stay: 10 d}", "longer than the whole forecast");
 }
