@@ -185,12 +185,18 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     std::shared_ptr<GliderContext> ctx;
     const ompl::geometric::SimpleSetupPtr ss = makeSimpleSetup(gp, &ctx);
     const double fieldEnd = ctx->field->timeEnd();
-    const double window = std::min(gp.horizon, std::isfinite(fieldEnd) ? fieldEnd - departure : kInf);
+    const double span = std::min(gp.horizon, std::isfinite(fieldEnd) ? fieldEnd - departure : kInf);
     // extremals followed a quarter past the planner's time: a neighbour of the extremal through the goal passes it
     // later, and the sign change between the two brackets it
-    const double bound = r.solved ? std::min(1.25 * r.travelTime, window) : window;
+    const double bound = r.solved ? std::min(1.25 * r.travelTime, span) : span;
     const std::uint64_t cmc0 = ctx->field->callCount();
 
+    // with an arrival window every candidate is judged as it would be flown: timed into the window (a hold, a slower
+    // leg) or not a route; the planner's own route first, so that a route meeting the window is never lost to a
+    // faster one that cannot meet it
+    const bool window = m.goalWindow.set;
+    if (window)
+        timeArrival(problem, r);
     GlobalCheck check;
     check.candidates.push_back(plannerCandidate(r));
     ZermeloParams zp = checkedExtremalParams(problem, ctx, r.speed, bound);
@@ -231,6 +237,8 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
         base.switchedFrom = best.switchedFrom;
         base.switchReason = best.switchReason;
         const auto consider = [&](PlannedPath c, const std::string &name) {
+            if (window)
+                timeArrival(problem, c);
             RouteCandidate row;
             row.name = name;
             row.solved = c.solved;
