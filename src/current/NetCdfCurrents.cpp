@@ -22,7 +22,7 @@ double NetCdfCurrents::fieldTime(const std::string &text) const
         return v;
     if (!dated)
         throw Error("time '" + text + "': the forecast has no dated time axis; give a number (field time units)");
-    return secondsSinceCalendarEpoch(parseDateTime(s), calendar) - originSeconds;
+    return secondsSinceCalendarEpoch(s, calendar) - originSeconds;
 }
 
 std::string NetCdfCurrents::isoTime(double t) const

@@ -237,6 +237,8 @@ WrittenDate readWrittenDate(const std::string &text)
             }
             else if (pos + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[pos])))
                 mm = readInt(2, 2);
+            if (hh > 23 || mm > 59)  // (ISO 8601: an offset is less than a day; 24:00 or 01:75 is a typing error)
+                throw dateError(text, "time zone offset out of range (hours 0-23, minutes 0-59)");
             w.zoneOffset = sign * (hh * 3600.0 + mm * 60.0);
         }
         if (pos != s.size())
@@ -249,12 +251,29 @@ WrittenDate readWrittenDate(const std::string &text)
 constexpr long kUnixEpochDay = 719162;
 }  // namespace
 
-DateTime parseDateTime(const std::string &text)
+namespace
+{
+/// readWrittenDate() with its fields range-checked (not yet against a calendar).
+WrittenDate readCheckedDate(const std::string &text)
 {
     const WrittenDate w = readWrittenDate(text);
-    DateTime d = w.fields;
+    const DateTime &d = w.fields;
     if (d.month < 1 || d.month > 12 || d.day < 1 || d.day > 31 || d.hour > 24 || d.minute > 59 || d.second >= 61)
         throw dateError(text, "field out of range");
+    return w;
+}
+}  // namespace
+
+double secondsSinceCalendarEpoch(const std::string &text, Calendar cal)
+{
+    const WrittenDate w = readCheckedDate(text);
+    return secondsSinceCalendarEpoch(w.fields, cal) - w.zoneOffset;
+}
+
+DateTime parseDateTime(const std::string &text)
+{
+    const WrittenDate w = readCheckedDate(text);
+    DateTime d = w.fields;
     if (w.zoneOffset != 0.0)
     {
         // shift to UTC with proleptic Gregorian arithmetic (time zones only appear with real-world calendars)
@@ -359,7 +378,7 @@ CfTimeUnits parseCfTimeUnits(const std::string &units, const std::string &calend
         throw Error("time units '" + units + "': unit '" + unit +
                     "' not supported; expected seconds, minutes, hours or days since <date>");
     u.calendar = parseCalendar(calendar);
-    u.reference = secondsSinceCalendarEpoch(parseDateTime(s.substr(since + 7)), u.calendar);
+    u.reference = secondsSinceCalendarEpoch(s.substr(since + 7), u.calendar);
     return u;
 }
 

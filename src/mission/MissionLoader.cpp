@@ -164,7 +164,8 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     {
         if (!root[key] && root["fleet"])
             continue;  // a fleet's gliders give theirs
-        if (!root[key] && root["observations"] && std::string(key) == "start")
+        if (!root[key] && root["observations"] && std::string(key) == "start" &&
+            !(root["observations"].IsMap() && !root["observations"]["file"]))
             continue;  // the glider's last fix
         if (!root[key])
             r.fail(root, key, "missing");
@@ -175,7 +176,7 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     if (root["observations"])
     {
         readObservations(r, root["observations"], m);
-        if (!root["start"] && !root["fleet"])
+        if (!root["start"] && !root["fleet"] && m.observations->hasFiles())
         {
 #if OMPL_GLIDER_WITH_NETCDF
             try
@@ -270,7 +271,7 @@ double MissionSpec::timeOf(const std::string &text) const
         }
     }
     if (fileCalendar)
-        return secondsSinceCalendarEpoch(parseDateTime(text), fileCalendar->calendar) - fileCalendar->originSeconds;
+        return secondsSinceCalendarEpoch(text, fileCalendar->calendar) - fileCalendar->originSeconds;
     if (!epoch)
         throw Error("expected a number (an ISO 8601 date needs 'epoch' at the top of the mission), got '" + text +
                     "'");

@@ -69,6 +69,23 @@ TEST(Time, ParsesUnitsAndIsoVariants)
     // time zones are converted to UTC
     EXPECT_EQ(formatDateTime(parseDateTime("2020-06-01T02:00:00+03:00")), "2020-05-31T23:00:00Z");
     EXPECT_EQ(formatDateTime(parseDateTime("2020-06-01 10:00 UTC")), "2020-06-01T10:00:00Z");
+    // an offset is less than a day: +24:00, +99:00 or 01:75 is refused, not a shift of days
+    for (const char *bad : {"2026-06-01T00:00+24:00", "2026-06-01T00:00+99:00", "2026-06-01T00:00+01:75",
+                            "2026-06-01T00:00-2400", "2026-06-01T00:00+0160"})
+    {
+        EXPECT_THROW(parseDateTime(bad), Error) << bad;
+        EXPECT_THROW(parseIsoTime(bad), Error) << bad;
+    }
+    EXPECT_EQ(parseIsoTime("2026-06-01T00:00-23:59") - parseIsoTime("2026-06-01T00:00Z"), 23.0 * 3600 + 59 * 60);
+    // a zone in a calendar without the Gregorian months: the offset is subtracted in that calendar's own days
+    // (2026-02-30 exists in 360_day; an hour east of UTC it is 2026-02-29T23:00 there)
+    EXPECT_EQ(secondsSinceCalendarEpoch("2026-02-30T00:00:00+01:00", Calendar::Day360),
+              secondsSinceCalendarEpoch(parseDateTime("2026-02-29T23:00:00"), Calendar::Day360));
+    EXPECT_EQ(formatDateTime(dateFromCalendarEpoch(
+                  parseCfTimeUnits("days since 2026-02-30 00:00 +01:00", "360_day").reference, Calendar::Day360)),
+              "2026-02-29T23:00:00Z");
+    EXPECT_EQ(secondsSinceCalendarEpoch("2020-06-01T02:00:00+03:00", Calendar::Standard),
+              secondsSinceCalendarEpoch(parseDateTime("2020-05-31T23:00:00"), Calendar::Standard));
     for (const char *bad : {"hours after 2000-01-01", "months since 2000-01-01", "fortnights since 2000-01-01",
                             "days since yesterday"})
     {

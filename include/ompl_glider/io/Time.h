@@ -45,6 +45,10 @@ DateTime parseDateTime(const std::string &text);
 /// @brief Seconds from the calendar's epoch (0001-01-01 00:00 in that calendar) to the date; exact in the
 /// calendar's own day count. @throws Error when the day does not exist in the calendar (Feb 29 in noleap, ...).
 double secondsSinceCalendarEpoch(const DateTime &d, Calendar cal);
+/// @brief The date @p text (as parseDateTime() reads it) in seconds from the epoch of @p cal, its time zone offset
+/// subtracted in seconds, so that a zone works in every calendar (a 360_day date "2026-02-30T00:00+01:00" is
+/// 2026-02-29T23:00 UTC there). @throws Error naming the text, or when the day does not exist in the calendar.
+double secondsSinceCalendarEpoch(const std::string &text, Calendar cal);
 /// @brief Inverse of secondsSinceCalendarEpoch().
 DateTime dateFromCalendarEpoch(double seconds, Calendar cal);
 
