@@ -153,7 +153,7 @@ void defineRouteFlags(CLI::App &app, Flags &f)
     app.add_option("--time-limit", f.timeLimit,
                    "planner time limit in seconds, at most 1e6 (default: none for the lattice planners, 10 s for the "
                    "sampling planners, which use all of it)")
-        ->check(CLI::Range(1e-3, 1e6))
+        ->check(CLI::Range(1e-3, ompl_glider::kMaxTimeLimit))
         ->group(built);
     app.add_flag("--no-smooth", f.noSmooth, "skip path smoothing")->group(built);
     app.add_flag("--no-refine", f.noRefine, "skip waypoint refinement")->group(built);

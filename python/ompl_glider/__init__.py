@@ -51,6 +51,13 @@ def _real(who: str, value: Any) -> float:
     return float(value)
 
 
+def _integer(who: str, value: Any) -> int:
+    """A whole number (not a bool, not a float or text that would be truncated or parsed), or an Error naming who."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        raise _bad(who, value, "an integer")
+    return int(value)
+
+
 def _pair(who: str, value: Any) -> Pair:
     """Two numbers, as a tuple of floats, or an Error naming who."""
     try:
@@ -70,7 +77,7 @@ def set_remote_access(cache: Optional[Union[str, os.PathLike]] = None, request_t
     after a request fails for the network or the server, 0..10 (``--retries``).
     """
     _set_remote_access(os.fspath(cache) if cache is not None else "", _real("set_remote_access(): request_timeout",
-                                                                            request_timeout), int(retries))
+                                                                            request_timeout), _integer("set_remote_access(): retries", retries))
 
 
 def planner_names() -> List[str]:

@@ -93,6 +93,8 @@ void applyPlanner(const MissionOverrides &o, MissionSpec &m)
             *target.first = finite(**given, true);
             mark(m, target.second, (*given)->source);
         }
+    if (o.timeLimit && o.timeLimit->value > kMaxTimeLimit)
+        throw Error(o.timeLimit->source + ": at most 1e6 s (11.6 days), got " + text::number(o.timeLimit->value));
     if (o.smoothing)
         m.planner.smoothing = o.smoothing->value;
     if (o.refinement)
@@ -333,7 +335,7 @@ std::vector<std::pair<std::string, std::string>> overridableFields(const Mission
         {"goal.window", m.goalWindow.set ? num(m.goalWindow.begin) + "," + num(m.goalWindow.end) : "unset"},
         {"waypoints", via},
         {"order", visitOrderName(m.order)},
-        {"observations", m.observations ? m.observations->path : std::string("unset")},
+        {"observations", m.observations && m.observations->hasFiles() ? m.observations->path : std::string("unset")},
         {"forbidden.coastline", m.forbidden.coastline},
         {"outputs.directory", m.outputs.directory},
         {"outputs.files", files},

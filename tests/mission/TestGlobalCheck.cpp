@@ -194,7 +194,11 @@ TEST(GlobalCheck, NeverLosesARouteThatMeetsTheArrivalWindow)
         EXPECT_LE(p.path.back().t, off.path.back().t + 1e-9);
         ASSERT_TRUE(p.globalCheck.has_value());
         for (const RouteCandidate &k : p.globalCheck->candidates)  // a candidate that is a route meets the window
+        {
             if (k.solved)
+            {
                 EXPECT_GE(k.travelTime, c.begin - 1e-9) << k.name;
+            }
+        }
     }
 }

@@ -169,6 +169,7 @@ def test_errors_are_python_exceptions_naming_the_input():
 @pytest.mark.parametrize("keywords, phrase", [
     (dict(speed="fast"), "plan(): keyword 'speed': expected a number, got str 'fast'"),
     (dict(speed=True), "keyword 'speed': expected a number, got bool True"),
+    (dict(time_limit=2e6), "keyword 'time_limit': at most 1e6 s"),  # as --time-limit and planner.time_limit
     (dict(sectors=2.5), "keyword 'sectors': expected an integer 1..5, got float 2.5"),
     (dict(smoothing="no"), "keyword 'smoothing': expected True or False, got str 'no'"),
     (dict(refinement=1), "keyword 'refinement': expected True or False, got int 1"),

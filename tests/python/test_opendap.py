@@ -62,6 +62,10 @@ def test_url_plans_as_the_file_and_the_cache_serves_a_second_plan(served, tmp_pa
         ompl_glider.set_remote_access()
     with pytest.raises(ompl_glider.Error, match="request time limit"):
         ompl_glider.set_remote_access(request_timeout=0)
+    # retries is a count: a float, a text or a bool is refused, not truncated or converted
+    for bad in (2.9, "3", True):
+        with pytest.raises(ompl_glider.Error, match=r"set_remote_access\(\): retries: expected an integer"):
+            ompl_glider.set_remote_access(retries=bad)
 
 
 def test_result_shows_its_map_inline():

@@ -259,6 +259,10 @@ struct SafetySpec
     bool snapToWater{false};
 };
 
+/// The longest planner time limit (seconds): beyond it OMPL's time point arithmetic overflows. The mission file,
+/// the command line and Python check it alike (through the overrides).
+constexpr double kMaxTimeLimit = 1e6;
+
 /// @brief The planner and its parameters.
 struct PlannerSpec
 {
@@ -381,13 +385,17 @@ struct ExecutionSpec
 /// (current/CorrectedField.h: optimal interpolation, [BrethertonOI]).
 struct ObservationsSpec
 {
-    std::string path;  ///< IOOS profile files (a file, folder or glob pattern) or a CSV; resolved
+    /// IOOS profile files (a file, folder or glob pattern) or a CSV; resolved. Empty: no files, the section only sets
+    /// the correction's parameters (those of the execution's replan_observed)
+    std::string path;
     /// L (planning units); NaN: 20 km for a forecast, a tenth of the region's larger side for an analytic flow
     double lengthScale{std::numeric_limits<double>::quiet_NaN()};
     /// T (field time units); NaN: one day where the time unit is known, else a tenth of the planning horizon
     double timeScale{std::numeric_limits<double>::quiet_NaN()};
     double errorRatio{0.2};  ///< s_o / s_f: the DAC's error over the forecast's (> 0; CorrectionParams)
     SourceMark mark;         ///< where it was given
+    /// @brief Whether a glider's files are given (not only the correction's parameters).
+    bool hasFiles() const { return !path.empty(); }
 };
 
 /// @brief A complete mission.

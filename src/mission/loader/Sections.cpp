@@ -29,7 +29,6 @@ namespace ompl_glider::mission_loader
 namespace
 {
 constexpr double kMaxSupportingPoints = 10000.0;  ///< departure-window samples, each a whole search
-constexpr double kMaxTimeLimit = 1e6;             ///< seconds: beyond it OMPL's time point arithmetic overflows
 /// Time origin of a NetCDF forecast (its first time, as the loader uses it): ISO dates of the mission are field
 /// times in the file's calendar, and the outputs get calendar dates. The time axis is found by the loader's own
 /// detection (readNetCdfTimeAxis(): variables.time, else axis "T", standard_name "time" or "<unit> since <date>").
