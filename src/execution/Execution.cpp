@@ -130,6 +130,38 @@ DacObservation measureDive(const std::vector<TimedPoint> &track, std::size_t fro
     }
     return d;
 }
+/// The heading of the dac strategy: at the active waypoint, seen from the fix, aimed off upstream by the drift
+/// that the current c gives over the dive of duration dt: the unit vector along w - c dt (w the waypoint relative to
+/// the fix), the heading that brings the dive's end nearest the waypoint if the current is c. Far from the waypoint it
+/// is nearly the bearing to it (the drift of one dive is a small part of the way); near it, the whole correction.
+void aimOffHeading(double wx, double wy, Velocity c, double dt, double &hx, double &hy)
+{
+    const double ax = wx - c.u * dt, ay = wy - c.v * dt, len = std::hypot(ax, ay);
+    const double w = std::hypot(wx, wy);
+    if (len > 0.0)
+    {
+        hx = ax / len;
+        hy = ay / len;
+    }
+    else  // the current alone carries the glider to the waypoint: head at it
+    {
+        hx = wx / w;
+        hy = wy / w;
+    }
+}
+
+/// The corrected forecast's current at (x, y, t) from the measurements of the last 5 time scales (older ones weigh
+/// less than exp(-12.5) there); the forecast's own where there are none.
+Velocity correctedCurrent(const CurrentField &forecast, const std::vector<DacObservation> &measured,
+                          const CorrectionParams &params, double x, double y, double depth, double t)
+{
+    const double since = t - 5.0 * params.timeScale;
+    auto first = std::find_if(measured.begin(), measured.end(), [since](const DacObservation &d) { return d.t >= since; });
+    if (first == measured.end())
+        return forecast.velocity(x, y, depth, t);
+    const std::shared_ptr<const CurrentField> base(std::shared_ptr<const CurrentField>(), &forecast);  // not owned
+    return CorrectedField(base, std::vector<DacObservation>(first, measured.end()), params).velocity(x, y, depth, t);
+}
 }  // namespace
 
 FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const CurrentField &forecast,
@@ -210,8 +242,11 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         {
             dx /= len;
             dy /= len;
-            if (strategy == ControlStrategy::Dac && !r.measured.empty())
-                crabHeading(dx, dy, r.measured.back().dac, speed, hx, hy);  // the last dive's measured current
+            if (strategy == ControlStrategy::Dac && !r.measured.empty())  // the last dive's measured current
+                aimOffHeading(target.x - x, target.y - y, r.measured.back().dac, surface - t, hx, hy);
+            else if (strategy == ControlStrategy::ReplanObserved)
+                crabHeading(dx, dy, correctedCurrent(forecast, r.measured, o.correction, x, y, o.depth, t), speed, hx,
+                            hy);
             else if (strategy != ControlStrategy::CurrentBlind && strategy != ControlStrategy::Greedy)
                 crabHeading(dx, dy, forecast.velocity(x, y, o.depth, t), speed, hx, hy);
             else

@@ -79,7 +79,8 @@ std::vector<TimedPoint> continuation(const MissionProblem &problem, double x, do
 }
 
 /// Plans of the replan strategy: from the fix to the run's goal on the forecast (smoothing as the mission asks,
-/// no refinement: a plan per surfacing must be quick). The new plan is taken only when the forecast says it
+/// no refinement, no global check, no switch to heading planners where straight legs find none: a plan per
+/// surfacing must be quick, and the plan being flown is kept when there is no new one). The new plan is taken only when the forecast says it
 /// arrives earlier, by more than @p margin (the surfacing interval), than the rest of the current plan flown from
 /// the fix (re-timed on the forecast): a lattice anchored at an arbitrary fix can be much coarser than the plan it
 /// would replace, and a plan's times assume a heading adjusted all along each leg, which a glider holding one
@@ -95,6 +96,7 @@ Replanner replanner(const MissionProblem &problem, Point2 goal, double margin)
         PlanOptions o;
         o.refinement = false;
         o.globalCheck = false;  // a replan at every surfacing: the lattice alone, judged against the plan being flown
+        o.headingFallback = false;  // nor the heading planners where it finds none (the level set can take minutes)
         try
         {
             const PlannedPath p = planRoute(problem.withEndpoints({x, y}, goal), t, o);
@@ -146,6 +148,7 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
         if (s == ControlStrategy::ReplanObserved)
             o.replanObserved = observedReplanner(problem, run.goal, settings.surfacingInterval);
         o.dacNoise = e.dacNoise;
+        o.correction = problem.correctionParams();
         run.flown.push_back(flyPlan(run.plan, speed, *problem.getField(), *problem.getTruth(),
                                     problem.getEnvironment().get(), s, o));
     }

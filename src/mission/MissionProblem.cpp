@@ -34,6 +34,9 @@ namespace ompl_glider
 namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+/// The widest planning region (planning length units): a billion kilometres in metres; wider is a typing error and
+/// overflows the planner's arithmetic.
+constexpr double kMaxRegionSpan = 1e12;
 
 std::string where(const MissionSpec &m, const SourceMark &mark = {})
 {
@@ -49,8 +52,8 @@ void checkFiniteField(const CurrentField &f, const Region &box, double t0, const
         for (int i = 0; i <= 8; ++i)
             for (int j = 0; j <= 8; ++j)
             {
-                const double x = box.xMin + (box.xMax - box.xMin) * i / 8.0;
-                const double y = box.yMin + (box.yMax - box.yMin) * j / 8.0;
+                const double x = box.xMin + (box.xMax - box.xMin) * (i / 8.0);
+                const double y = box.yMin + (box.yMax - box.yMin) * (j / 8.0);
                 const Velocity v = f.velocity(x, y, 0.0, t);  // CMC are counted as differences: no effect
                 if (!std::isfinite(v.u) || !std::isfinite(v.v))
                     throw Error(at + "the current is not a finite number at (" + text::number(x, 6) + ", " +
@@ -89,7 +92,7 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     // record counts, which errs towards land)
     const double departure = m.departure.window ? m.departure.begin : m.departure.time;
     if (std::isfinite(departure) && departure >= 0.0 && c.horizonPolicy == BeyondForecast::Refuse &&
-        !m.observations)  // (a glider's DAC lie before the departure: with observations every record is read)
+        !(m.observations && m.observations->hasFiles()))  // (a glider's DAC lie before the departure: with observations every record is read)
     {
         if (departure > 0.0)
             o.departure = text::number(departure, 17);
@@ -359,6 +362,11 @@ void MissionProblem::buildMembers()
 void MissionProblem::checkAnalyticFields() const
 {
     const MissionSpec &m = spec_;
+    // a region too wide for the planner's numbers (x_max: 1e308) is the region's fault, not the field's
+    const double span = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
+    if (!(span <= kMaxRegionSpan))
+        throw Error(m.place("region") + ": the region spans " + text::number(span) + " units; at most " +
+                    text::number(kMaxRegionSpan) + " (give its bounds in the mission's length unit)");
     auto check = [&](const std::shared_ptr<const CurrentField> &f, const CurrentSpec &c, const std::string &field) {
         const CurrentFieldKind *kind = findCurrentFieldKind(c.type);
         if (!f || !kind || kind->gridded)
@@ -640,6 +648,14 @@ GliderProblem MissionProblem::gliderProblem(double tDep, double speed) const
         if (std::isfinite(field_->timeEnd()))
             horizon = std::min(horizon, field_->timeEnd() - tDep);
     }
+    // a speed so high that the trip takes no time at the planner's time resolution (a typing error: 1e308)
+    const double crossing = std::hypot(box_.xMax - box_.xMin, box_.yMax - box_.yMin) / speed;
+    if (!(crossing >= 1e-9 * std::max(1.0, std::abs(tDep))))
+        throw Error((speed == spec_.vehicle.speed ? spec_.place("vehicle.speed") : "speed " + text::number(speed)) +
+                    ": " + text::number(speed) + " crosses the planning region (diagonal " +
+                    text::number(crossing * speed) + ") in " + text::number(crossing) +
+                    " time units, below the planner's time resolution: give the vehicle's speed in the mission's "
+                    "units");
     p.horizon = horizon;
     p.start.x = start_.x;
     p.start.y = start_.y;

@@ -39,7 +39,7 @@ void startAtLastFix(MissionSpec &m, const SourceMark &mark, bool keepDeparture)
 
 void MissionProblem::applyObservations()
 {
-    if (!spec_.observations)
+    if (!spec_.observations || !spec_.observations->hasFiles())
         return;
     const ObservationsSpec &s = *spec_.observations;
     const std::string at = spec_.place("observations");

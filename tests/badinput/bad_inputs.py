@@ -143,6 +143,8 @@ yaml_case("double-gyre-length-0", mission("current: {type: double_gyre, paramete
 yaml_case("netcdf-file-missing", mission("current: {type: netcdf, file: none.nc}"), "cannot open")
 yaml_case("region-reversed", mission("region: {x_min: 10, x_max: 0, y_min: -4, y_max: 4}"), "region")
 yaml_case("region-inf", mission("region: {x_min: 0, x_max: .inf, y_min: -4, y_max: 4}"), "finite")
+yaml_case("region-1e308", mission("region: {x_min: 0, x_max: 1e308, y_min: -4, y_max: 4}"),
+          "m.yaml:3: field 'region': the region spans 1e+308 units")
 yaml_case("region-mixed", mission("region: {x_min: 0, x_max: 10, lat_min: 1, lat_max: 2}"), "either")
 yaml_case("start-outside-region", mission("start: {x: 11, y: 0}"), "m.yaml:4: field 'start': lies outside")
 yaml_case("start-missing", MISSION.replace("start: {x: 1, y: 0}\n", ""), "'start': missing")
@@ -150,6 +152,7 @@ yaml_case("start-text", mission("start: {x: one, y: 0}"), "start.x")
 yaml_case("speed-zero", mission("vehicle: {speed: 0}"), "vehicle.speed")
 yaml_case("speed-negative", mission("vehicle: {speed: -0.5}"), "vehicle.speed")
 yaml_case("speed-inf", mission("vehicle: {speed: .inf}"), "vehicle.speed")
+yaml_case("speed-1e308", mission("vehicle: {speed: 1e308}"), "m.yaml:6: field 'vehicle.speed': 1e+308 crosses")
 yaml_case("depth-negative", mission("vehicle: {speed: 0.5, depth: -3}"), "vehicle.depth")
 yaml_case("units-zero", mission("units: {length_m: 0, time_s: 1}"), "units.length_m")
 yaml_case("projection-pole", mission("projection: {lon0: 0, lat0: 95}"), "projection.lat0")
@@ -622,6 +625,7 @@ for name, args, phrase in [
         ("flag-speed-zero", ["--speed", "0"], "--speed"),
         ("flag-speed-nan", ["--speed", "nan"], "--speed"),
         ("flag-speed-text", ["--speed", "fast"], "--speed"),
+        ("flag-speed-1e308", ["--speed", "1e308"], "--speed: 1e+308 crosses the planning region"),
         ("flag-start-one-number", ["--start", "1"], "--start"),
         ("flag-start-three-numbers", ["--start", "1,2,3"], "--start"),
         ("flag-start-text", ["--start", "a,b"], "--start"),

@@ -45,11 +45,13 @@ enum class ControlStrategy
     /// (a surfacing also at every segment end), the last one held after the plan's end. For a plan of straight legs
     /// (no ExecutionOptions::headings) it flies as CurrentSensitive.
     PlannedHeadings,
-    /// Toward the end of the active segment with the crab angle for the depth-averaged current the glider measured
-    /// over its last dive (as Slocum and Seaglider steer); the first dive, before any measurement, on the forecast
-    /// at the fix.
+    /// Toward the end of the active segment corrected for the depth-averaged current the glider measured over its
+    /// last dive (as Slocum and Seaglider correct their heading with it): aimed off upstream by the drift that current
+    /// gives over the coming dive (the heading that brings the dive's end nearest the waypoint if the current holds);
+    /// the first dive, before any measurement, with the crab angle for the forecast at the fix.
     Dac,
-    /// As Replan, on the forecast corrected by every DAC measured so far (ExecutionOptions::replanObserved).
+    /// As Replan, on the forecast corrected by every DAC measured so far (ExecutionOptions::replanObserved), and
+    /// steered between plans with the crab angle for that corrected forecast's current at the fix.
     ReplanObserved
 };
 
@@ -88,6 +90,9 @@ struct ExecutionOptions
     /// Dac, ReplanObserved: the standard deviation of the noise on each measured DAC component (field units; 0: none)
     double dacNoise{0.0};
     unsigned dacSeed{1};  ///< seed of that noise
+    /// ReplanObserved: the correction it plans on, also steered with between plans (the crab angle for the corrected
+    /// forecast's current at the fix, from the DAC of the last CorrectionParams::timeScale times 5)
+    CorrectionParams correction;
 };
 
 /// @brief One flown run.

@@ -40,6 +40,9 @@ struct PlanOptions
     /// The planner's time limit in seconds (0: the mission's planner.time_limit, else the planner's default); the
     /// pipeline's switch to heading planners bounds them so (PlanningInternal.h kFallbackTimeLimit)
     double timeLimit{0.0};
+    /// The switch to heading planners (Isochrone, then the level set) where straight legs find no path (default on);
+    /// off, the planner's own outcome stands (replans at sea: the plan being flown is kept, at once)
+    std::optional<bool> headingFallback;
 };
 
 /// @brief One candidate route of the global check: the planner's own, or one made from an extremal.

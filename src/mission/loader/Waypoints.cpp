@@ -1,6 +1,7 @@
 // The mission's `waypoints` list (via points between start and goal) and `order`: read and checked field by field.
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <set>
 
 #include "MissionReader.h"
@@ -138,14 +139,18 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
     const std::string f = "observations";
     ObservationsSpec o;
     o.mark = {r.file(), r.line(n)};
-    YAML::Node file = n;
+    std::optional<YAML::Node> file;  // none: only the correction's parameters
+    if (!n.IsMap())
+        file = n;
     if (n.IsMap())
     {
         r.checkMap(n, f, {"file", "length_scale", "time_scale", "error_ratio"});
-        if (!n["file"])
+        if (!n["file"] && !n["length_scale"] && !n["time_scale"] && !n["error_ratio"])
             r.fail(n, f + ".file",
-                   "missing: the glider's files (IOOS profile files: a file, folder or pattern; or a CSV)");
-        file.reset(n["file"]); // (yaml-cpp: operator= would write into n itself)
+                   "missing: the glider's files (IOOS profile files: a file, folder or pattern; or a CSV), or the "
+                   "correction's parameters alone (for an execution's replan_observed)");
+        if (n["file"])
+            file = n["file"];
         if (n["length_scale"])
         {
             const bool metres = m.physicalUnits().length;
@@ -165,8 +170,8 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
         if (n["error_ratio"])
             o.errorRatio = r.positive(n["error_ratio"], f + ".error_ratio");
     }
-    const std::string path = r.text(file, n.IsMap() ? f + ".file" : f);
-    o.path = joinPath(r.dir(), path); // a file, folder or glob pattern next to the mission
+    if (file)
+        o.path = joinPath(r.dir(), r.text(*file, n.IsMap() ? f + ".file" : f)); // a file, folder or pattern
     m.observations = std::move(o);
 }
 
