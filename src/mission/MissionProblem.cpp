@@ -34,32 +34,12 @@ namespace ompl_glider
 namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-/// The widest planning region (planning length units): a billion kilometres in metres; wider is a typing error and
-/// overflows the planner's arithmetic.
-constexpr double kMaxRegionSpan = 1e12;
 
 std::string where(const MissionSpec &m, const SourceMark &mark = {})
 {
     if (!mark.file.empty() && mark.line > 0)
         return mark.file + ":" + std::to_string(mark.line) + ": ";
     return m.file + ": ";
-}
-/// An analytic field whose parameters overflow its formulas (a meandering jet with B0 = 1e300) gives NaN or
-/// infinity: refused, naming where the parameters were given. Sampled on 9 x 9 points of the box at three times.
-void checkFiniteField(const CurrentField &f, const Region &box, double t0, const std::string &at)
-{
-    for (const double t : {t0, t0 + 1.0, t0 + 10.0})
-        for (int i = 0; i <= 8; ++i)
-            for (int j = 0; j <= 8; ++j)
-            {
-                const double x = box.xMin + (box.xMax - box.xMin) * (i / 8.0);
-                const double y = box.yMin + (box.yMax - box.yMin) * (j / 8.0);
-                const Velocity v = f.velocity(x, y, 0.0, t);  // CMC are counted as differences: no effect
-                if (!std::isfinite(v.u) || !std::isfinite(v.v))
-                    throw Error(at + "the current is not a finite number at (" + text::number(x, 6) + ", " +
-                                text::number(y, 6) + ") at t = " + text::number(t, 6) +
-                                ": its parameters overflow the field's formulas");
-            }
 }
 }  // namespace
 
@@ -357,31 +337,6 @@ void MissionProblem::buildMembers()
         members_.push_back(loadSource(members[i], "current.ensemble[" + std::to_string(i) + "]"));
     checkCommonTime();
     field_ = std::make_shared<EnsembleMeanField>(members_);
-}
-
-void MissionProblem::checkAnalyticFields() const
-{
-    const MissionSpec &m = spec_;
-    // a region too wide for the planner's numbers (x_max: 1e308) is the region's fault, not the field's
-    const double span = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
-    if (!(span <= kMaxRegionSpan))
-        throw Error(m.place("region") + ": the region spans " + text::number(span) + " units; at most " +
-                    text::number(kMaxRegionSpan) + " (give its bounds in the mission's length unit)");
-    auto check = [&](const std::shared_ptr<const CurrentField> &f, const CurrentSpec &c, const std::string &field) {
-        const CurrentFieldKind *kind = findCurrentFieldKind(c.type);
-        if (!f || !kind || kind->gridded)
-            return;
-        const std::string at = c.mark.file.rfind("--", 0) == 0 ? c.mark.file + ": "
-                                                                 : where(m, c.mark) + "field '" + field + "': ";
-        checkFiniteField(*f, box_, m.departure.time, at);
-    };
-    if (members_.empty())
-        check(field_, m.current, "current.parameters");
-    for (std::size_t i = 0; i < members_.size(); ++i)
-        check(members_[i], i == 0 ? m.current : m.current.members[i],
-              i == 0 ? std::string("current.parameters") : "current.ensemble[" + std::to_string(i) + "].parameters");
-    if (truth_ && m.execution.truth)
-        check(truth_, *m.execution.truth, "execution.truth.parameters");
 }
 
 void MissionProblem::buildTruth()
