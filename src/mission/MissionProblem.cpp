@@ -450,7 +450,7 @@ void MissionProblem::buildRegions()
             for (const auto &h : p.holes)
                 holes.push_back(ring(h, p.geographic, p.name));
             std::vector<Point2> outer = ring(p.points, p.geographic, p.name);
-            polygons_.push_back({p.name, kind, outer});
+            polygons_.push_back({p.name, kind, outer, false, {}});
             return Polygon(outer, holes, p.name, RingCheck::validated);
         }
         catch (const Error &e)
@@ -507,6 +507,7 @@ void MissionProblem::buildRegions()
         try
         {
             regions->add(std::make_shared<TimeWindowedZone>(t.polygon.name, polygon(t.polygon, "closure"), w));
+            polygons_.back().windows = t.windows;
         }
         catch (const Error &e)
         {

@@ -361,9 +361,17 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
         else if (poly.kind == "island" || poly.kind == "land")
             land.push_back(f.line(poly.points));
         else
+        {
+            json windows = json::array();  // a closure's: when it is closed (as dates where the mission has them)
+            for (const auto &[from, to] : poly.windows)
+            {
+                const std::string a = p.isoTime(from), b = p.isoTime(to);
+                windows.push_back({a.empty() ? json(from) : json(a), b.empty() ? json(to) : json(b)});
+            }
             forbidden.push_back({{"name", poly.name + " (" + poly.kind + ")"},
-                                 {"window", ""},
+                                 {"windows", windows},
                                  {"rings", json::array({f.line(poly.points)})}});
+        }
     }
     for (auto &ring : coast)
         land.push_back(ring);  // a coastline's land, filled

@@ -137,9 +137,9 @@ def geographic():
         'land': [[[round(a, 5), round(b, 5)] for a, b in isl] for isl in ISLANDS],
         'coastlines': [[[round(a, 5), round(b, 5)] for a, b in isl + isl[:1]] for isl in ISLANDS],
         'forbidden': [
-            {'name': 'Military exercise area R-71', 'window': iso(T0 + dt.timedelta(hours=18)) + ' .. ' + iso(T0 + dt.timedelta(hours=54)),
+            {'name': 'Military exercise area R-71', 'windows': [[iso(T0 + dt.timedelta(hours=18)), iso(T0 + dt.timedelta(hours=54))]],
              'rings': [[[39.6, 1.75], [39.8, 1.75], [39.8, 2.0], [39.6, 2.0]]]},
-            {'name': 'Cabrera marine reserve </script><!-- escaping test', 'window': '',
+            {'name': 'Cabrera marine reserve </script><!-- escaping test', 'windows': [],
              'rings': [[[39.08, 2.85], [39.25, 2.85], [39.25, 3.05], [39.08, 3.05]]]},
         ],
         'keep_off': [inflate(isl, 0.05, 1 / k) for isl in ISLANDS],

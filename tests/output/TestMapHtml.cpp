@@ -97,3 +97,39 @@ TEST(MapHtml, PlannedMissionsPageCarriesItsRouteAndWaypoints)
     // six frames of arrows from the departure to the arrival
     EXPECT_EQ(d["currents"]["frames"].size(), 6u);
 }
+
+TEST(MapHtml, AClosureSaysWhenItIsClosed)
+{
+    // a zone closed only in [0, 5] and [8, 9]: the page gives those windows (as dates with an epoch), not "always";
+    // a permanent restricted area has none
+    const std::string yaml = "epoch: 2026-06-01T00:00:00Z\nunits: {length_m: 50000, time_s: 86400}\n"
+                             "current: {type: uniform, parameters: {u: 0.1, v: 0}}\n"
+                             "region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
+                             "start: {x: 1, y: -3}\ngoal: {x: 8, y: 3}\nvehicle: {speed: 0.5}\n"
+                             "planner: {grid_size: 0.4}\nforbidden:\n"
+                             "  time_windows:\n"
+                             "    - {name: exercise, points: [[4, -1], [5, -1], [5, 0], [4, 0]], "
+                             "windows: [[0, 5], [8, 9]]}\n"
+                             "  obstacles:\n"
+                             "    - {name: reserve, kind: restricted area, points: [[6, 1], [7, 1], [7, 2], [6, 2]]}\n";
+    const MissionProblem problem(parseMission(yaml));
+    const MissionResult r = runMission(problem);
+    const json d = json::parse(mapHtmlDataOf(mapHtml(r, problem)));
+    ASSERT_EQ(d["forbidden"].size(), 2u);
+    for (const json &f : d["forbidden"])
+    {
+        const std::string name = f["name"].get<std::string>();
+        if (name.rfind("exercise", 0) == 0)
+        {
+            ASSERT_EQ(f["windows"].size(), 2u);
+            EXPECT_EQ(f["windows"][0][0], "2026-06-01T00:00:00Z");
+            EXPECT_EQ(f["windows"][0][1], "2026-06-06T00:00:00Z");
+            EXPECT_EQ(f["windows"][1][0], "2026-06-09T00:00:00Z");
+            EXPECT_EQ(f["windows"][1][1], "2026-06-10T00:00:00Z");
+        }
+        else
+        {
+            EXPECT_TRUE(f["windows"].empty()) << name;
+        }
+    }
+}

@@ -38,6 +38,9 @@ struct MissionPolygon
     std::string kind;            ///< island / land / restricted area / closure / ice
     std::vector<Point2> points;  ///< outer ring, planning frame
     bool coastline{false};       ///< one of the coastline file's land polygons
+    /// A closure's windows: the closed [from, to] intervals (field time units) in which it is forbidden; empty: at
+    /// all times
+    std::vector<std::pair<double, double>> windows;
 };
 
 /// @brief The problem of a mission: field, forbidden regions, frame conversions. Thread-safe for const use (the
