@@ -146,6 +146,13 @@ std::atomic<long> &limitInForce()
     static std::atomic<long> seconds{0};
     return seconds;
 }
+
+/// Why the time limit could not be given to NetCDF-C (empty: it was, or the user's own NCRCENV_RC file rules).
+std::string &limitProblem()
+{
+    static std::string why;
+    return why;
+}
 }  // namespace
 
 void prepareNetcdfAccess(const RemoteAccess &access)
@@ -156,7 +163,17 @@ void prepareNetcdfAccess(const RemoteAccess &access)
             return;  // the user's own rc file
         namespace fs = std::filesystem;
         std::error_code ec;
-        const fs::path dir = fs::temp_directory_path(ec) / ("ompl_glider_ncrc_" + std::to_string(::getpid()));
+        fs::path tmp;
+        try
+        {
+            tmp = temporaryFolder();
+        }
+        catch (const Error &e)
+        {
+            limitProblem() = e.what();
+            return;
+        }
+        const fs::path dir = tmp / ("ompl_glider_ncrc_" + std::to_string(::getpid()));
         fs::create_directories(dir, ec);
         // what NetCDF-C would have read without NCRCENV_RC (credentials, proxies), then the time limits
         std::string text;
@@ -169,7 +186,9 @@ void prepareNetcdfAccess(const RemoteAccess &access)
         text += "HTTP.TIMEOUT=" + std::to_string(seconds) + "\nHTTP.CONNECTTIMEOUT=" + std::to_string(seconds) + "\n";
         const fs::path rc = dir / "ncrc";
         std::ofstream(rc) << text;
-        if (fs::is_regular_file(rc, ec))
+        if (!fs::is_regular_file(rc, ec))
+            limitProblem() = "cannot write '" + rc.string() + "' (set TMPDIR to a writable folder)";
+        else
         {
             ::setenv("NCRCENV_RC", rc.c_str(), 0);
             limitInForce() = seconds;
@@ -180,6 +199,11 @@ void prepareNetcdfAccess(const RemoteAccess &access)
             });
         }
     });
+}
+
+long requestLimitInForce()
+{
+    return limitInForce();
 }
 
 std::shared_ptr<RemoteDataset> RemoteDataset::open(const std::string &url, const RemoteAccess &access)
@@ -264,6 +288,10 @@ int RemoteDataset::remoteId()
     if (remoteId_ < 0)
     {
         prepareNetcdfAccess(access_);
+        if (limitInForce() == 0 && !std::getenv("NCRCENV_RC"))  // a server must not hold the plan without a limit
+            throw Error(url_ + ": the request time limit cannot be given to NetCDF-C: " +
+                        (limitProblem().empty() ? std::string("its settings file could not be written")
+                                                : limitProblem()));
         attempt("cannot open", [&] { return nc_open(url_.c_str(), NC_NOWRITE, &remoteId_); });
         remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.opened = true; });
     }

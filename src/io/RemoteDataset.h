@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ompl_glider/io/RemoteSource.h"
+#include "ompl_glider/io/TempFolder.h"
 
 namespace ompl_glider
 {
@@ -23,6 +24,9 @@ namespace netcdf_detail
 /// HTTP.CONNECTTIMEOUT) before the process's first NetCDF access; later calls do nothing (NetCDF-C reads its rc
 /// files once). A user who set NCRCENV_RC keeps that file.
 void prepareNetcdfAccess(const RemoteAccess &access);
+/// The request time limit given to NetCDF-C (whole seconds), 0 before the first NetCDF access or where the user's
+/// own NCRCENV_RC file rules.
+long requestLimitInForce();
 
 /// One remote dataset: its description read from the cache file when there is one (no network), else from the URL;
 /// its values from the cache file, from what this process fetched already, or from the server.

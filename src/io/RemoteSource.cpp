@@ -64,9 +64,16 @@ void updateFetchRecord(std::size_t k, const std::function<void(RemoteFetch &)> &
 
 void setRemoteAccess(const RemoteAccess &access)
 {
-    if (!(access.requestTimeout > 0) || !std::isfinite(access.requestTimeout))
-        throw Error("the request time limit must be a number of seconds > 0, got " +
+    if (!(access.requestTimeout > 0) || !(access.requestTimeout <= 1e6))
+        throw Error("the request time limit must be a number of seconds > 0 and at most 1e6 (11.6 days), got " +
                     text::number(access.requestTimeout));
+#if OMPL_GLIDER_WITH_NETCDF
+    // NetCDF-C reads its time limit once, at the process's first access: a change after it would be ignored
+    const long inForce = netcdf_detail::requestLimitInForce();
+    if (inForce > 0 && std::max(1L, static_cast<long>(std::ceil(access.requestTimeout))) != inForce)
+        throw Error("the request time limit is fixed at " + std::to_string(inForce) +
+                    " s by the process's first NetCDF access (NetCDF-C reads it once): set it before the first plan");
+#endif
     if (access.retries < 0 || access.retries > 10)
         throw Error("retries must be 0..10, got " + std::to_string(access.retries));
     std::lock_guard<std::mutex> lock(accessMutex());

@@ -5,6 +5,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Length.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RemoteSource.cpp  # remote sources: settings, the record of what came from where
   ${CMAKE_CURRENT_LIST_DIR}/GeoBox.cpp  # lon/lat boxes: regions, the trip's box, great circles
+  ${CMAKE_CURRENT_LIST_DIR}/TempFolder.cpp  # the folder for temporary files (TMPDIR), checked
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -23,6 +24,7 @@
 #include "OutputDirectory.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/TaskSpread.h"
+#include "ompl_glider/io/TempFolder.h"
 #include "ompl_glider/output/SummaryJson.h"
 
 namespace ompl_glider
@@ -66,7 +68,16 @@ void removeStaleRenderDirectories()
     std::call_once(once, [] {
         std::error_code ec;
         const std::string head = "ompl_glider-fleet-";
-        for (const fs::directory_entry &e : fs::directory_iterator(fs::temp_directory_path(ec), ec))
+        fs::path tmp;
+        try
+        {
+            tmp = temporaryFolder();
+        }
+        catch (const Error &)
+        {
+            return;  // said by renderOutputFiles()
+        }
+        for (const fs::directory_entry &e : fs::directory_iterator(tmp, ec))
         {
             const std::string name = e.path().filename().string();
             if (name.compare(0, head.size(), head) != 0)
@@ -116,11 +127,11 @@ std::string fleetSummaryJson(const MissionSpec &m, const std::vector<FleetGlider
 std::string renderOutputFiles(const MissionResult &result, const MissionProblem &problem)
 {
     removeStaleRenderDirectories();
-    std::string pattern =
-        (fs::temp_directory_path() / ("ompl_glider-fleet-" + std::to_string(::getpid()) + "-XXXXXX")).string();
+    const fs::path tmp = temporaryFolder();
+    std::string pattern = (tmp / ("ompl_glider-fleet-" + std::to_string(::getpid()) + "-XXXXXX")).string();
     if (!::mkdtemp(&pattern[0]))
-        throw Error("cannot create a temporary directory in '" + fs::temp_directory_path().string() +
-                    "' for a glider's files");
+        throw Error("cannot create a temporary directory in '" + tmp.string() + "' for a glider's files (" +
+                    std::strerror(errno) + "): set TMPDIR to a writable folder");
     const fs::path dir(pattern);
     std::vector<std::string> names, bytes;
     try

@@ -635,6 +635,7 @@ for name, args, phrase in [
         ("flag-grid-tiny", ["--grid-size", "1e-4"], "--grid-size"),
         ("flag-sectors-0", ["--sectors", "0"], "--sectors"),
         ("flag-time-limit-huge", ["--time-limit", "1e10"], "--time-limit"),
+        ("flag-request-timeout-huge", ["--request-timeout", "9.3e18"], "at most 1e6"),
         ("flag-departure-huge", ["--departure", "1e16"], "departure"),
         ("flag-departure-text", ["--departure", "noon"], "--departure"),
         ("flag-planner-unknown", ["--planner", "Dijkstra"], "Dijkstra"),
@@ -650,6 +651,10 @@ for name, args, phrase in [
     case(name, args + ["--out", "{out}"], 2, phrase, {"m.yaml": MISSION})
 case("flag-grid-fine-memory-limit", ["--grid-size", "1e-3", "--out", "{out}"], 2, "--grid-size: a lattice spacing",
      env={"OMPL_GLIDER_MEMORY_LIMIT": "500M"})
+case("tmpdir-missing-fleet", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "the folder for temporary files '/nonexistent/tmp' (the environment variable TMPDIR) does not exist",
+     {"m.yaml": mission(append="fleet:\n  - {name: a, start: {x: 1, y: 0}, goal: {x: 9, y: 0}}\n")},
+     env={"TMPDIR": "/nonexistent/tmp"})
 case("memory-limit-env-bad", ["--out", "{out}"], 2, "OMPL_GLIDER_MEMORY_LIMIT", env={"OMPL_GLIDER_MEMORY_LIMIT": "lots"})
 case("out-is-a-file", ["--out", "afile"], 2, "afile")
 case("out-unwritable", ["--out", "/proc/glider_out"], 2, "/proc/glider_out")

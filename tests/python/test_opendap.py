@@ -62,6 +62,11 @@ def test_url_plans_as_the_file_and_the_cache_serves_a_second_plan(served, tmp_pa
         ompl_glider.set_remote_access()
     with pytest.raises(ompl_glider.Error, match="request time limit"):
         ompl_glider.set_remote_access(request_timeout=0)
+    # a limit NetCDF-C cannot take, or one set after the process's first NetCDF access (which fixed it), is refused
+    with pytest.raises(ompl_glider.Error, match="at most 1e6"):
+        ompl_glider.set_remote_access(request_timeout=9.3e18)
+    with pytest.raises(ompl_glider.Error, match="fixed at .* s by the process's first NetCDF access"):
+        ompl_glider.set_remote_access(request_timeout=7777)
     # retries is a count: a float, a text or a bool is refused, not truncated or converted
     for bad in (2.9, "3", True):
         with pytest.raises(ompl_glider.Error, match=r"set_remote_access\(\): retries: expected an integer"):
