@@ -7,6 +7,16 @@
 
 namespace ompl_glider::text
 {
+/// The text on one line, as line-based files hold it (a goto list's comment, a targets file's header): every control
+/// character (a line break, a tab, NUL, DEL) becomes a space, so a name cannot end its line and start another.
+inline std::string oneLine(std::string s)
+{
+    for (char &c : s)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+            c = ' ';
+    return s;
+}
+
 /// ASCII lower case.
 inline std::string lower(std::string s)
 {

@@ -391,7 +391,7 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
     }
     d["bounds"] = json::array({lo, hi});
     d["currents"] = currentsJson(r, p, f, d["bounds"]);
-    return d.dump();
+    return d.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string mapHtmlPage(const std::vector<std::string> &data, const std::string &title)
@@ -422,7 +422,7 @@ std::string mapHtmlPage(const std::vector<std::string> &data, const std::string 
         js.replace(at, 2, "<\\/");
     const std::pair<const char *, std::string> parts[] = {{"/*LEAFLET_CSS*/", joined(maphtml::kLeafletCss)},
                                                          {"/*LEAFLET_JS*/", js},
-                                                         {"/*MAP_DATA*/", scriptSafe(d.dump())}};
+                                                         {"/*MAP_DATA*/", scriptSafe(d.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace))}};
     std::vector<std::pair<std::size_t, const std::pair<const char *, std::string> *>> at;
     for (const auto &part : parts)
     {
@@ -452,7 +452,7 @@ std::string mapHtmlDataOf(const std::string &page)
     if (b == std::string::npos)
         return "";
     const json d = json::parse(page.substr(a + begin.size(), b - a - begin.size()), nullptr, false);
-    return d.is_discarded() || !d.is_object() || !d.contains("routes") ? std::string() : d.dump();
+    return d.is_discarded() || !d.is_object() || !d.contains("routes") ? std::string() : d.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string mapHtml(const MissionResult &r, const MissionProblem &p)

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <set>
 
+#include "../io/TextUtil.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/output/RouteFiles.h"
@@ -84,7 +85,7 @@ std::vector<SeagliderTarget> seagliderTargets(const MissionResult &r, const Miss
 
 std::string formatSeagliderTargets(const std::vector<SeagliderTarget> &targets, const std::string &mission)
 {
-    std::string s = "/ Seaglider targets: " + mission +
+    std::string s = "/ Seaglider targets: " + text::oneLine(mission) +
                     " (ompl_glider)\n/ name lat=DDMM.MMMM lon=DDDMM.MMMM "
                     "radius=metres goto=next\n";
     for (const SeagliderTarget &t : targets)

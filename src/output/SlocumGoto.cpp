@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../io/TextUtil.h"
 #include "ompl_glider/Exception.h"
 #include "OutputDirectory.h"
 
@@ -62,7 +63,12 @@ std::string formatGotoList(const GotoList &list)
     s << "behavior_name=goto_list\n";
     s << "# " << gotoFileName(list.number) << " written by ompl_glider";
     if (!list.comment.empty())
-        s << ": " << list.comment;
+    {
+        std::string comment = text::oneLine(list.comment);  // on its line, and no tag of the file's own in it
+        for (char &c : comment)
+            c = c == '<' ? '(' : c == '>' ? ')' : c;
+        s << ": " << comment;
+    }
     s << "\n";
     s << "<start:b_arg>\n";
     s << "    b_arg: num_legs_to_run(nodim) " << list.numLegsToRun << "\n";

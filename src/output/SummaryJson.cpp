@@ -512,6 +512,6 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["observations"] = observationsJson(problem);
     j["files"] = files;
     checkFinite(j, "");
-    return j.dump(2) + "\n";
+    return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 }  // namespace ompl_glider

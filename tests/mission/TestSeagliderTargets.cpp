@@ -124,3 +124,18 @@ TEST(SeagliderTargets, ReadBackMatchesTheRoutesTurns)
     EXPECT_EQ(t.back().name, "GOAL");
     EXPECT_LT(metres(t.back().lat, t.back().lon, m.goal.lonLat.lat, m.goal.lonLat.lon), 1.0);
 }
+
+TEST(SeagliderTargets, AMissionNameWithLineBreaksStaysInTheHeader)
+{
+    // the name is written in the header comment: its line breaks must not start target lines of their own
+    SeagliderTarget a;
+    a.name = "GOAL";
+    a.next = "GOAL";
+    a.position = {-51.5, 48.45};
+    a.radius = 500.0;
+    const std::string text = formatSeagliderTargets({a}, "evil\nX lat=0000.0000 lon=00000.0000 radius=1 goto=X");
+    const std::vector<Target> t = readTargets(text);
+    ASSERT_EQ(t.size(), 1u);
+    EXPECT_EQ(t[0].name, "GOAL");
+    EXPECT_NEAR(t[0].lat, 48.45, 1e-6);
+}

@@ -13,6 +13,7 @@
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/output/MapHtml.h"
+#include "ompl_glider/output/SummaryJson.h"
 
 using namespace ompl_glider;
 using json = nlohmann::json;
@@ -132,4 +133,19 @@ TEST(MapHtml, AClosureSaysWhenItIsClosed)
             EXPECT_TRUE(f["windows"].empty()) << name;
         }
     }
+}
+
+TEST(MapHtml, NamesThatAreNotUtf8AreWrittenNotThrown)
+{
+    // a mission (or a forecast file) named in Latin-1: summary.json, map.html and the GeoJSON are written, with the
+    // byte replaced by U+FFFD (nlohmann's type_error.316 ended a finished plan with exit 2)
+    MissionSpec m = defaultGulfStreamMission();
+    m.name = "caf\xe9 crossing";
+    const MissionProblem problem(m);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved);
+    const json summary = json::parse(summaryJson(r, problem));
+    EXPECT_EQ(summary["mission"], "caf\xef\xbf\xbd crossing");
+    const json d = json::parse(mapHtmlDataOf(mapHtml(r, problem)));
+    EXPECT_EQ(d["title"], "caf\xef\xbf\xbd crossing");
 }

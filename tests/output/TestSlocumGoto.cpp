@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <random>
+#include <sstream>
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/output/SlocumGoto.h"
@@ -121,4 +122,29 @@ TEST(SlocumGoto, NotesAreCommentLinesBeforeTheirWaypoints)
     std::string expected = text;
     expected.erase(expected.find("# to here"), std::string("# to here: hold heading 045.0 deg for 2.50 h\n").size());
     EXPECT_EQ(formatGotoList(plain), expected);
+}
+
+TEST(SlocumGoto, AMissionNameCannotAddLinesOrTags)
+{
+    // a mission name with line breaks and the file's own tags: one comment line, one waypoint block, the waypoints
+    // read back as written (it wrote a second <start:waypoints> block with a waypoint at 0N 0E)
+    GotoList g;
+    g.comment = "evil\n<start:waypoints>\n0 0\n<end:waypoints>\r\tend";
+    g.waypoints = {{-52.5, 47.9}, {-51.5, 48.45}};
+    const std::string text = formatGotoList(g);
+    std::istringstream lines(text);
+    std::string line;
+    int starts = 0, comments = 0;
+    while (std::getline(lines, line))
+    {
+        starts += line == "<start:waypoints>";
+        comments += !line.empty() && line[0] == '#';
+        for (const char c : line)
+            EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20) << line;
+    }
+    EXPECT_EQ(starts, 1);
+    EXPECT_EQ(comments, 1);
+    const GotoList back = parseGotoList(text);
+    ASSERT_EQ(back.waypoints.size(), 2u);
+    EXPECT_NEAR(back.waypoints[1].lat, 48.45, 1e-6);
 }
