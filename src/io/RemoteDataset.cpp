@@ -215,7 +215,7 @@ std::shared_ptr<RemoteDataset> RemoteDataset::open(const std::string &url, const
     const std::string key = url + '\n' + access.cacheDir;
     if (auto it = open.find(key); it != open.end())
         return it->second;
-    const std::size_t k = remote_detail::newFetchRecord(url);
+    const std::size_t k = remote_detail::newFetchRecord(withoutCredentials(url));  // what the outputs show
     std::shared_ptr<RemoteDataset> d(new RemoteDataset(url, access, k));
     open[key] = d;
     return d;
@@ -231,7 +231,7 @@ RemoteDataset::RemoteDataset(std::string url, RemoteAccess access, std::size_t r
         fs::create_directories(access_.cacheDir, ec);
         if (!fs::is_directory(access_.cacheDir, ec))
             throw Error(who() + ": the cache folder '" + access_.cacheDir + "' cannot be made");
-        cachePath_ = (fs::path(access_.cacheDir) / cacheName(url_)).string();
+        cachePath_ = (fs::path(access_.cacheDir) / cacheName(withoutCredentials(url_))).string();
         remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.cacheFile = cachePath_; });
         if (fs::is_regular_file(cachePath_, ec))
         {
@@ -256,7 +256,7 @@ RemoteDataset::~RemoteDataset()
 
 std::string RemoteDataset::who() const
 {
-    return "OPeNDAP source '" + url_ + "'";
+    return "OPeNDAP source '" + withoutCredentials(url_) + "'";
 }
 
 int RemoteDataset::attempt(const std::string &what, const std::function<int()> &call)
@@ -289,7 +289,7 @@ int RemoteDataset::remoteId()
     {
         prepareNetcdfAccess(access_);
         if (limitInForce() == 0 && !std::getenv("NCRCENV_RC"))  // a server must not hold the plan without a limit
-            throw Error(url_ + ": the request time limit cannot be given to NetCDF-C: " +
+            throw Error(withoutCredentials(url_) + ": the request time limit cannot be given to NetCDF-C: " +
                         (limitProblem().empty() ? std::string("its settings file could not be written")
                                                 : limitProblem()));
         attempt("cannot open", [&] { return nc_open(url_.c_str(), NC_NOWRITE, &remoteId_); });
@@ -435,7 +435,8 @@ void RemoteDataset::writeCache(const std::string &tmp)
         nc_inq_varname(src, b.var, name);
         fetched += constraintOf(name, b.start, b.count) + "\n";
     }
-    check(nc_put_att_text(out, NC_GLOBAL, "ompl_glider_source", url_.size(), url_.c_str()), "write the source");
+    const std::string shown = withoutCredentials(url_);
+    check(nc_put_att_text(out, NC_GLOBAL, "ompl_glider_source", shown.size(), shown.c_str()), "write the source");
     check(nc_put_att_text(out, NC_GLOBAL, "ompl_glider_fetched", fetched.size(), fetched.c_str()),
           "write the constraints");
     check(nc_put_att_text(out, NC_GLOBAL, "ompl_glider_blocks", blocks.size(), blocks.c_str()), "write the blocks");

@@ -93,6 +93,19 @@ void prepareRemoteAccess()
 #endif
 }
 
+std::string withoutCredentials(const std::string &source)
+{
+    const std::size_t scheme = source.find("://");
+    if (scheme == std::string::npos)
+        return source;
+    const std::size_t host = scheme + 3;
+    const std::size_t end = source.find_first_of("/?#", host);
+    const std::size_t at = source.rfind('@', end == std::string::npos ? std::string::npos : end);
+    if (at == std::string::npos || at < host)
+        return source;
+    return source.substr(0, host) + source.substr(at + 1);
+}
+
 bool isRemoteSource(const std::string &source)
 {
     std::string s = source;
@@ -161,8 +174,9 @@ std::vector<RemoteFetch> remoteFetches()
 std::vector<RemoteFetch> remoteFetchesOf(const std::vector<std::string> &sources)
 {
     std::vector<RemoteFetch> out;
-    for (const RemoteFetch &f : remoteFetches())
-        if (std::find(sources.begin(), sources.end(), f.source) != sources.end())
+    for (const RemoteFetch &f : remoteFetches())  // (a record holds the source without its credentials)
+        if (std::any_of(sources.begin(), sources.end(),
+                        [&](const std::string &s) { return withoutCredentials(s) == f.source; }))
             out.push_back(f);
     return out;
 }

@@ -105,9 +105,9 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
 {
     namespace fs = std::filesystem;
     MissionSpec m;
-    m.file = file;
+    m.file = withoutCredentials(file);  // names the forecast in messages and outputs: never a URL's password
     m.directory = ".";
-    m.name = fs::path(files.front()).stem().string();
+    m.name = fs::path(withoutCredentials(files.front())).stem().string();
     m.current = q.current;
     m.current.type = "netcdf";
     m.current.file = files.front();

@@ -27,6 +27,7 @@
 #include "ompl_glider/environment/IceZone.h"
 #include "ompl_glider/environment/StaticRegion.h"
 #include "ompl_glider/environment/TimeWindowedZone.h"
+#include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/io/Time.h"
 
 namespace ompl_glider
@@ -87,9 +88,9 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     o.field.depth = c.depthInterpolation;
     o.field.time = c.timeInterpolation;
     o.field.beyond = c.horizonPolicy;
-    o.field.name = "netcdf:" + c.file;
+    o.field.name = "netcdf:" + withoutCredentials(c.file);  // shown in maps and messages: no URL's password
     for (std::size_t k = 1; k < c.files.size(); ++k)
-        o.field.name += "," + c.files[k];
+        o.field.name += "," + withoutCredentials(c.files[k]);
     o.maxDepth = m.dive.enabled ? m.dive.params.zMax : m.vehicle.depth;
     if (m.projection.set)
     {

@@ -13,6 +13,7 @@
 #endif
 #include "JsonValues.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/RemoteSource.h"
 
 namespace ompl_glider
 {
@@ -375,7 +376,10 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["mission"] = m.name;
     j["source"] = m.file;
     j["current"] = m.current.type;
-    j["forecast_files"] = problem.forecastFiles();
+    json forecastFiles = json::array();
+    for (const std::string &f : problem.forecastFiles())
+        forecastFiles.push_back(withoutCredentials(f));  // a URL's user:password never reaches an output
+    j["forecast_files"] = forecastFiles;
     j["forecast_sources"] = forecastSourcesJson(problem);
     j["forecast_notes"] = json::array();
     for (const std::string &note : r.forecastNotes)

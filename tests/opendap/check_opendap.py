@@ -267,6 +267,25 @@ def main():
             check(tf == tu["travel_time"], "two URLs give the two files' travel time (%r, %r)" % (tf, tu["travel_time"]))
             check(len(tu["forecast_sources"]) == 2, "the report names both URLs")
 
+        # 10. a URL with a user and a password: planned, and the password reaches no output, message or cache name
+        secret_url = "http://pilot:s3cretPW@127.0.0.1:%d/forecast.nc" % port
+        secret_cache = os.path.join(work, "cache_secret")
+        p_s, _ = plan(glider, ["--currents", secret_url, "--cache", secret_cache, "--out",
+                               os.path.join(work, "o_secret")] + trip)
+        check(p_s.returncode == 0, "a URL with credentials plans (exit %d: %s)" % (p_s.returncode, p_s.stderr[-300:]))
+        if p_s.returncode == 0:
+            seen = {"stdout": p_s.stdout, "stderr": p_s.stderr, "cache names": "".join(os.listdir(secret_cache))}
+            for name in os.listdir(os.path.join(work, "o_secret")):
+                with open(os.path.join(work, "o_secret", name), "rb") as f:
+                    seen[name] = f.read().decode("utf-8", "replace")
+            for name in os.listdir(secret_cache):
+                with netCDF4.Dataset(os.path.join(secret_cache, name)) as d:
+                    seen["cache attribute"] = d.getncattr("ompl_glider_source")
+            leaks = [k for k, v in seen.items() if "s3cretPW" in v]
+            check(not leaks, "the password is in no output, message, cache name or cache attribute (in %s)" % leaks)
+            src = summary(os.path.join(work, "o_secret")).get("forecast_sources", [])
+            check(len(src) == 1 and src[0]["source"] == url, "the source is shown without its credentials: %s" % src)
+
         # 9. a real model file served: NCL's POP sample (Debian's libncarg-data; curvilinear B grid, global, velocities
         # in cm/s, land from a tracer): the route past Jamaica from the URL is the file's
         pop = "/usr/share/ncarg/data/cdf/pop.nc"

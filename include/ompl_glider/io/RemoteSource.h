@@ -46,6 +46,11 @@ RemoteAccess remoteAccess();
 /// otherwise); a later call does nothing.
 void prepareRemoteAccess();
 
+/// @brief @p source with the user information of a URL left out ("https://user:password@host/x" gives
+/// "https://host/x"), as every output, message and cache file name shows a source: secrets never reach them. Other
+/// text is returned as it is.
+std::string withoutCredentials(const std::string &source);
+
 /// @brief True when @p source is a URL (http://, https://, or NetCDF-C's [mode]http:// prefixes), not a file path.
 bool isRemoteSource(const std::string &source);
 
