@@ -76,8 +76,9 @@ def set_remote_access(cache: Optional[Union[str, os.PathLike]] = None, request_t
     process's first NetCDF access, so set it before the first plan (``--request-timeout``). retries: further attempts
     after a request fails for the network or the server, 0..10 (``--retries``).
     """
-    _set_remote_access(os.fspath(cache) if cache is not None else "", _real("set_remote_access(): request_timeout",
-                                                                            request_timeout), _integer("set_remote_access(): retries", retries))
+    _set_remote_access(os.fspath(cache) if cache is not None else "",
+                       _real("set_remote_access(): request_timeout", request_timeout),
+                       _integer("set_remote_access(): retries", retries))
 
 
 def planner_names() -> List[str]:

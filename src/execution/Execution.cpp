@@ -156,7 +156,8 @@ Velocity correctedCurrent(const CurrentField &forecast, const std::vector<DacObs
                           const CorrectionParams &params, double x, double y, double depth, double t)
 {
     const double since = t - 5.0 * params.timeScale;
-    auto first = std::find_if(measured.begin(), measured.end(), [since](const DacObservation &d) { return d.t >= since; });
+    const auto first =
+        std::find_if(measured.begin(), measured.end(), [since](const DacObservation &d) { return d.t >= since; });
     if (first == measured.end())
         return forecast.velocity(x, y, depth, t);
     const std::shared_ptr<const CurrentField> base(std::shared_ptr<const CurrentField>(), &forecast);  // not owned

@@ -80,11 +80,11 @@ std::vector<TimedPoint> continuation(const MissionProblem &problem, double x, do
 
 /// Plans of the replan strategy: from the fix to the run's goal on the forecast (smoothing as the mission asks,
 /// no refinement, no global check, no switch to heading planners where straight legs find none: a plan per
-/// surfacing must be quick, and the plan being flown is kept when there is no new one). The new plan is taken only when the forecast says it
-/// arrives earlier, by more than @p margin (the surfacing interval), than the rest of the current plan flown from
-/// the fix (re-timed on the forecast): a lattice anchored at an arbitrary fix can be much coarser than the plan it
-/// would replace, and a plan's times assume a heading adjusted all along each leg, which a glider holding one
-/// heading per dive cannot fly exactly (a new plan that gains less than a dive on paper is noise).
+/// surfacing must be quick, and the plan being flown is kept when there is no new one). The new plan is taken only
+/// when the forecast says it arrives earlier, by more than @p margin (the surfacing interval), than the rest of the
+/// current plan flown from the fix (re-timed on the forecast): a lattice anchored at an arbitrary fix can be much
+/// coarser than the plan it would replace, and a plan's times assume a heading adjusted all along each leg, which a
+/// glider holding one heading per dive cannot fly exactly (a new plan that gains less than a dive on paper is noise).
 Replanner replanner(const MissionProblem &problem, Point2 goal, double margin)
 {
     return [&problem, goal, margin](double x, double y, double t,

@@ -73,7 +73,7 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     // record counts, which errs towards land)
     const double departure = m.departure.window ? m.departure.begin : m.departure.time;
     if (std::isfinite(departure) && departure >= 0.0 && c.horizonPolicy == BeyondForecast::Refuse &&
-        !(m.observations && m.observations->hasFiles()))  // (a glider's DAC lie before the departure: with observations every record is read)
+        !(m.observations && m.observations->hasFiles()))  // (a glider's DAC lie before the departure: every record)
     {
         if (departure > 0.0)
             o.departure = text::number(departure, 17);

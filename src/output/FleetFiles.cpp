@@ -120,7 +120,7 @@ std::string fleetSummaryJson(const MissionSpec &m, const std::vector<FleetGlider
     j["wall_time_s"] = jnum(wallSeconds);
     j["processes"] = taskProcesses();
     j["files"] = files;
-    return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    return output_json::utf8Dump(j, 2) + "\n";
 }
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../io/NumberText.h"
+#include "JsonValues.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/environment/KeepOffZone.h"
@@ -391,7 +392,7 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
     }
     d["bounds"] = json::array({lo, hi});
     d["currents"] = currentsJson(r, p, f, d["bounds"]);
-    return d.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    return output_json::utf8Dump(d);
 }
 
 std::string mapHtmlPage(const std::vector<std::string> &data, const std::string &title)
@@ -422,7 +423,7 @@ std::string mapHtmlPage(const std::vector<std::string> &data, const std::string 
         js.replace(at, 2, "<\\/");
     const std::pair<const char *, std::string> parts[] = {{"/*LEAFLET_CSS*/", joined(maphtml::kLeafletCss)},
                                                          {"/*LEAFLET_JS*/", js},
-                                                         {"/*MAP_DATA*/", scriptSafe(d.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace))}};
+                                                         {"/*MAP_DATA*/", scriptSafe(output_json::utf8Dump(d))}};
     std::vector<std::pair<std::size_t, const std::pair<const char *, std::string> *>> at;
     for (const auto &part : parts)
     {
@@ -452,7 +453,7 @@ std::string mapHtmlDataOf(const std::string &page)
     if (b == std::string::npos)
         return "";
     const json d = json::parse(page.substr(a + begin.size(), b - a - begin.size()), nullptr, false);
-    return d.is_discarded() || !d.is_object() || !d.contains("routes") ? std::string() : d.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    return d.is_discarded() || !d.is_object() || !d.contains("routes") ? std::string() : output_json::utf8Dump(d);
 }
 
 std::string mapHtml(const MissionResult &r, const MissionProblem &p)

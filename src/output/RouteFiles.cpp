@@ -181,7 +181,7 @@ std::string isochronesGeoJson(const MissionResult &r)
                                   {"name", r.spec.name + " isochrones"},
                                   {"resolution", r.isochrones ? jnum(r.isochrones->resolution) : jnum(0.0)},
                                   {"features", features}};
-    return doc.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    return output_json::utf8Dump(doc, 1) + "\n";
 }
 
 namespace
@@ -287,7 +287,7 @@ std::string routeGeoJson(const MissionResult &r, const MissionProblem *problem)
     nlohmann::ordered_json doc = {{"type", "FeatureCollection"}, {"features", features}};
     if (!geo)
         doc["coordinates"] = "local";
-    return doc.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    return output_json::utf8Dump(doc, 1) + "\n";
 }
 
 namespace

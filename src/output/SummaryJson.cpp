@@ -516,6 +516,6 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["observations"] = observationsJson(problem);
     j["files"] = files;
     checkFinite(j, "");
-    return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    return output_json::utf8Dump(j, 2) + "\n";
 }
 }  // namespace ompl_glider

@@ -100,9 +100,9 @@ TEST(ExecutionObserved, MeasuredDacIsTheTruthsMeanAlongTheDive)
 TEST(ExecutionObserved, ReplanObservedSteersWithTheCorrectedCurrentAtTheFix)
 {
     // still water forecast, a uniform truth: between plans replan_observed crabs with the corrected forecast at the
-    // fix, which after the first dive is near the measured current (the OI weight: 1 / (1 + 0.2^2) for one DAC at the fix;
-    // less ahead of the DAC, which lie behind the glider), so it keeps close to its course to the goal; replan, steering with
-    // the forecast's zero current, drifts off it in every dive
+    // fix, which after the first dive is near the measured current (the OI weight: 1 / (1 + 0.2^2) for one DAC at
+    // the fix; less ahead of the DAC, which lie behind the glider), so it keeps close to its course to the goal;
+    // replan, steering with the forecast's zero current, drifts off it in every dive
     const UniformCurrent forecast(0.0, 0.0), truth(0.2, -0.1);
     const std::vector<TimedPoint> plan{{0.0, 0.0, 0.0}, {10.0, 0.0, 20.0}};
     ExecutionOptions o;
