@@ -72,8 +72,9 @@ def set_remote_access(cache: Optional[Union[str, os.PathLike]] = None, request_t
     """How forecasts given as OPeNDAP URLs (``Field.netcdf("https://...")``) are fetched, as glider_plan's flags.
 
     cache: a folder that keeps what is fetched (a NetCDF file per URL), so that a later plan over the same window
-    reads no network (``--cache``); None: no cache. request_timeout: seconds each request may take; it is fixed by the
-    process's first NetCDF access, so set it before the first plan (``--request-timeout``). retries: further attempts
+    reads no network (``--cache``); None: no cache. request_timeout: seconds each request may take (at most 1e6); it
+    is fixed by the process's first NetCDF access, so set it before the first plan: another one after it raises Error
+    (``--request-timeout``). retries: further attempts
     after a request fails for the network or the server, 0..10 (``--retries``).
     """
     _set_remote_access(os.fspath(cache) if cache is not None else "",
