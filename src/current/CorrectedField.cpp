@@ -12,12 +12,6 @@
 
 namespace ompl_glider
 {
-namespace
-{
-/// Past this many scales a Gaussian weight is below exp(-12.5) (4e-6): left out.
-constexpr double kCutoff = 5.0;
-} // namespace
-
 CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
                                const std::vector<DacObservation> &observations, CorrectionParams params)
     : base_(std::move(base)), params_(params)

@@ -150,12 +150,12 @@ void aimOffHeading(double wx, double wy, Velocity c, double dt, double &hx, doub
     }
 }
 
-/// The corrected forecast's current at (x, y, t) from the measurements of the last 5 time scales (older ones weigh
-/// less than exp(-12.5) there); the forecast's own where there are none.
+/// The corrected forecast's current at (x, y, t) from the measurements of the last CorrectedField::kCutoff time
+/// scales (older ones weigh less than exp(-12.5) there); the forecast's own where there are none.
 Velocity correctedCurrent(const CurrentField &forecast, const std::vector<DacObservation> &measured,
                           const CorrectionParams &params, double x, double y, double depth, double t)
 {
-    const double since = t - 5.0 * params.timeScale;
+    const double since = t - CorrectedField::kCutoff * params.timeScale;
     const auto first =
         std::find_if(measured.begin(), measured.end(), [since](const DacObservation &d) { return d.t >= since; });
     if (first == measured.end())

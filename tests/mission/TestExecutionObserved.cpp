@@ -21,6 +21,20 @@ namespace
 const char *kJetMission = "current: {type: meandering_jet}\nregion: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
                           "start: {x: 1, y: -3}\ngoal: {x: 8, y: 3}\nvehicle: {speed: 0.5}\n"
                           "planner: {grid_size: 0.4}\n";
+
+/// The uniform case of the tests below: a still-water forecast, a truth drifting (0.2, -0.1), a straight plan 10
+/// units east in 20 time units, flown at 0.5 surfacing every time unit, the goal reached within 0.05.
+const UniformCurrent kStillWater(0.0, 0.0), kDrift(0.2, -0.1);
+const std::vector<TimedPoint> kEastPlan{{0.0, 0.0, 0.0}, {10.0, 0.0, 20.0}};
+
+ExecutionOptions surfacingEveryUnit()
+{
+    ExecutionOptions o;
+    o.surfacingInterval = 1.0;
+    o.step = 0.05;
+    o.radius = 0.05;
+    return o;
+}
 } // namespace
 
 TEST(ExecutionObserved, TruthEqualToTheForecastReplanObservedIsReplanToTheBit)
@@ -55,13 +69,10 @@ TEST(ExecutionObserved, TruthEqualToTheForecastReplanObservedIsReplanToTheBit)
 
 TEST(ExecutionObserved, MeasuredDacIsTheTruthsMeanAlongTheDive)
 {
-    // a uniform truth: every DAC is that current exactly (no noise), and the dac strategy crabs into it
-    const UniformCurrent forecast(0.0, 0.0), truth(0.2, -0.1);
-    const std::vector<TimedPoint> plan{{0.0, 0.0, 0.0}, {10.0, 0.0, 20.0}};
-    ExecutionOptions o;
-    o.surfacingInterval = 1.0;
-    o.step = 0.05;
-    o.radius = 0.05;
+    // a uniform truth: every DAC is that current exactly (no noise), and the dac strategy aims off by it
+    const UniformCurrent &forecast = kStillWater, &truth = kDrift;
+    const std::vector<TimedPoint> &plan = kEastPlan;
+    ExecutionOptions o = surfacingEveryUnit();
     const FlownTrack dac = flyPlan(plan, 0.5, forecast, truth, nullptr, ControlStrategy::Dac, o);
     ASSERT_FALSE(dac.measured.empty());
     for (const DacObservation &d : dac.measured)
@@ -103,12 +114,9 @@ TEST(ExecutionObserved, ReplanObservedSteersWithTheCorrectedCurrentAtTheFix)
     // fix, which after the first dive is near the measured current (the OI weight: 1 / (1 + 0.2^2) for one DAC at
     // the fix; less ahead of the DAC, which lie behind the glider), so it keeps close to its course to the goal;
     // replan, steering with the forecast's zero current, drifts off it in every dive
-    const UniformCurrent forecast(0.0, 0.0), truth(0.2, -0.1);
-    const std::vector<TimedPoint> plan{{0.0, 0.0, 0.0}, {10.0, 0.0, 20.0}};
-    ExecutionOptions o;
-    o.surfacingInterval = 1.0;
-    o.step = 0.05;
-    o.radius = 0.05;
+    const UniformCurrent &forecast = kStillWater, &truth = kDrift;
+    const std::vector<TimedPoint> &plan = kEastPlan;
+    ExecutionOptions o = surfacingEveryUnit();
     o.replanEvery = 1000;  // the start's plan only: the plans keep the current one
     o.replan = [](double, double, double, const std::vector<TimedPoint> &) { return std::vector<TimedPoint>{}; };
     o.replanObserved = [](double, double, double, const std::vector<TimedPoint> &,

@@ -57,6 +57,9 @@ struct CorrectionSummary
 class CorrectedField : public CurrentField
 {
 public:
+    /// Past this many length or time scales an observation's Gaussian weight is below exp(-12.5) (4e-6): left out.
+    static constexpr double kCutoff = 5.0;
+
     /// @throws Error for a null base, or scales / ratio not finite and > 0.
     CorrectedField(std::shared_ptr<const CurrentField> base, const std::vector<DacObservation> &observations,
                    CorrectionParams params = {});

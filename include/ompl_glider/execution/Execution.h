@@ -91,7 +91,7 @@ struct ExecutionOptions
     double dacNoise{0.0};
     unsigned dacSeed{1};  ///< seed of that noise
     /// ReplanObserved: the correction it plans on, also steered with between plans (the crab angle for the corrected
-    /// forecast's current at the fix, from the DAC of the last CorrectionParams::timeScale times 5)
+    /// forecast's current at the fix, from the DAC of the last CorrectedField::kCutoff time scales)
     CorrectionParams correction;
 };
 
