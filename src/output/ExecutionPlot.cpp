@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include <cairo.h>
 
@@ -18,6 +20,24 @@ constexpr int kPanelW = 520, kPanelH = 420, kMarginL = 70, kMarginT = 60, kMargi
 void drawText(cairo_t *cr, double x, double y, const std::string &s, double size, double align, bool bold = false)
 {
     drawCairoText(cr, x, y, s, size, bold, align, {0.0, 0.0, 0.0, 1.0});
+}
+
+/// A strategy's name under its box: one line where it fits @p width (12 px type, about 7.2 px a character), else
+/// split at the '_' that balances two lines ("replan_observed": "replan" over "observed"), so that six or seven
+/// names side by side do not run into each other.
+std::vector<std::string> labelLines(const std::string &name, double width)
+{
+    const double perChar = 7.2;
+    if (static_cast<double>(name.size()) * perChar <= width || name.find('_') == std::string::npos)
+        return {name};
+    std::size_t best = std::string::npos, longest = name.size();
+    for (std::size_t at = name.find('_'); at != std::string::npos; at = name.find('_', at + 1))
+        if (std::max(at, name.size() - at - 1) < longest)
+        {
+            longest = std::max(at, name.size() - at - 1);
+            best = at;
+        }
+    return {name.substr(0, best), name.substr(best + 1)};
 }
 
 /// One panel at (x0, y0): a box per strategy of the measure chosen by @p pick, scaled by @p scale.
@@ -62,19 +82,27 @@ void panel(cairo_t *cr, double x0, double y0, const ExecutionResult &e, const st
     drawText(cr, 0, 0, axis, 12, 0.5);
     cairo_restore(cr);
 
-    const double colours[4][3] = {{0.20, 0.45, 0.75}, {0.30, 0.65, 0.35}, {0.85, 0.45, 0.15}, {0.60, 0.35, 0.70}};
+    // a colour per strategy (seven: controlStrategies())
+    const double colours[7][3] = {{0.20, 0.45, 0.75}, {0.30, 0.65, 0.35}, {0.85, 0.45, 0.15}, {0.60, 0.35, 0.70},
+                                  {0.55, 0.40, 0.25}, {0.80, 0.30, 0.50}, {0.35, 0.65, 0.70}};
     const std::size_t n = e.spread.size();
+    std::size_t lines = 1;  // the counts in one row under the tallest name
+    for (const StrategySpread &sp : e.spread)
+        lines = std::max(lines, labelLines(sp.strategy, plotW / static_cast<double>(n) - 6.0).size());
     for (std::size_t k = 0; k < n; ++k)
     {
         const MeasureSpread &m = e.spread[k].*pick;
         const double cx = px + plotW * (static_cast<double>(k) + 0.5) / static_cast<double>(n);
         const double bw = std::min(70.0, 0.5 * plotW / static_cast<double>(n));
         cairo_set_source_rgb(cr, 0, 0, 0);
-        drawText(cr, cx, py + plotH + 20, e.spread[k].strategy, 12, 0.5);
-        drawText(cr, cx, py + plotH + 38, "n = " + std::to_string(m.count), 11, 0.5);
+        const std::vector<std::string> label = labelLines(e.spread[k].strategy, plotW / static_cast<double>(n) - 6.0);
+        for (std::size_t l = 0; l < label.size(); ++l)
+            drawText(cr, cx, py + plotH + 20 + 14.0 * static_cast<double>(l), label[l], 12, 0.5);
+        drawText(cr, cx, py + plotH + 38 + 14.0 * static_cast<double>(lines - 1), "n = " + std::to_string(m.count), 11,
+                 0.5);
         if (m.count == 0)
             continue;
-        const double *c = colours[k % 4];
+        const double *c = colours[k % 7];
         cairo_set_line_width(cr, 1.5);
         cairo_set_source_rgb(cr, c[0], c[1], c[2]);
         // whiskers to the extremes
