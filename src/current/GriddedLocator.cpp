@@ -184,6 +184,19 @@ bool GriddedCurrentField::locate(double x, double y, double &fi, double &fj) con
         const int dj = b < -tol ? -1 : (b > 1 + tol ? 1 : 0);
         if (di == 0 && dj == 0)
         {
+            // on (within tol of) an edge shared with the next cell, the next cell: the answer is the same whichever
+            // cell the walk started from (the thread's hint), so results do not depend on the order of queries
+            double a2 = a, b2 = b;
+            const std::size_t ui = a > 1.0 - tol && ci + 1 < cx ? ci + 1 : ci;
+            const std::size_t uj = b > 1.0 - tol && cj + 1 < cy ? cj + 1 : cj;
+            if ((ui != ci || uj != cj) && cellInside(ui, uj, x, y, a2, b2) && a2 >= -tol && a2 <= 1.0 + tol &&
+                b2 >= -tol && b2 <= 1.0 + tol)
+            {
+                ci = ui;
+                cj = uj;
+                a = a2;
+                b = b2;
+            }
             fi = double(ci) + std::clamp(a, 0.0, 1.0);
             fj = double(cj) + std::clamp(b, 0.0, 1.0);
             hint = {id_, ci, cj};
