@@ -19,6 +19,7 @@
 #include "ompl_glider/routes/WaypointRefiner.h"
 #include "ompl_glider/routes/CurveLegs.h"
 #include "ompl_glider/reference/ZermeloReference.h"
+#include "ompl_glider/reachability/LevelSet.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace ompl_glider
@@ -63,6 +64,136 @@ namespace
 /// The relative gain below which the planner's route is kept without building the extremal's routes: the
 /// refinement's own resolution.
 constexpr double kCheckTolerance = 1e-3;
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Headings of each finer scan, and how many times a scan is narrowed about its nearest miss.
+constexpr int kWindowHeadings = 360;
+constexpr int kZoomLevels = 5;
+
+/// A finer scan where the sweep found no extremal through the goal: windows of kWindowHeadings headings about
+/// @p centre, each sixteen times narrower than the last and centred on the heading whose extremal came nearest the
+/// goal, until one brackets an extremal through it. In strong currents the family of extremals through a far goal
+/// can be far narrower than the sweep's spacing: the miss changes fast there, and the scan follows it down.
+ZermeloSolution zoomOn(const std::shared_ptr<const CurrentField> &field, ZermeloParams zp, double centre, double width,
+                       Point2 s, Point2 g, double departure, unsigned &shot)
+{
+    zp.headingSamples = kWindowHeadings;
+    ZermeloSolution sol;
+    sol.travelTime = kInf;
+    for (int level = 0; level < kZoomLevels && !stopRequested(); ++level)
+    {
+        zp.headingFrom = centre - 0.5 * width;
+        zp.headingSpan = std::min(width, 2.0 * kPi);
+        sol = ZermeloReference(field, zp).solve(s.x, s.y, g.x, g.y, departure);
+        shot += static_cast<unsigned>(zp.headingSamples) + 1;
+        if (sol.found || !std::isfinite(sol.nearestMiss))
+            break;
+        centre = sol.nearestHeading;
+        width /= 16.0;
+    }
+    return sol;
+}
+
+/// The level set's help where the sweep finds none: its first arrival at the goal and the steering directions of
+/// its backtracked path's first steps ((p1 - p0) / dt - c: the front's normal is undefined at the start itself,
+/// so the first few), the centres of finer scans.
+struct LevelSetAid
+{
+    double time{kInf};
+    std::vector<double> seeds;
+};
+
+LevelSetAid levelSetAid(const std::shared_ptr<const GliderContext> &ctx, Point2 s, Point2 g, double departure,
+                        double tEnd)
+{
+    LevelSetParams p;
+    p.cellSize = defaultLevelSetResolution(*ctx);
+    p.clearance = 0.5 * p.cellSize;
+    const Reachability r =
+        LevelSetSolver(ctx, p).solve(s.x, s.y, departure, tEnd, g, true, [] { return stopRequested(); });
+    LevelSetAid aid;
+    if (!r.goalReached)
+        return aid;
+    aid.time = r.goalTime - departure;
+    const double depth = ctx->travel->params().depth;
+    for (std::size_t i = 0; i + 1 < r.path.size() && aid.seeds.size() < 3; ++i)
+    {
+        const TimedPoint &a = r.path[i], &b = r.path[i + 1];
+        const double dt = b.t - a.t;
+        if (!(dt > 0.0))
+            continue;
+        const Velocity c = ctx->field->velocity(0.5 * (a.x + b.x), 0.5 * (a.y + b.y), depth, 0.5 * (a.t + b.t));
+        const double wx = (b.x - a.x) / dt - c.u, wy = (b.y - a.y) / dt - c.v;
+        if (std::hypot(wx, wy) > 1e-9 * ctx->speed())
+            aid.seeds.push_back(std::atan2(wy, wx));
+    }
+    return aid;
+}
+
+/// The extremal through the goal: the sweep over the circle (360 headings, then four or eight times as many), then
+/// finer scans about its nearest miss and, with the level set's first arrival, about the level set's initial
+/// headings. Fills the check's counts.
+ZermeloSolution findExtremal(const std::shared_ptr<GliderContext> &ctx, ZermeloParams &zp, bool planned, Point2 s,
+                             Point2 g, double departure, double span, GlobalCheck &check)
+{
+    ZermeloSolution sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
+    if (!sol.found)
+    {
+        // in strong or sensitive currents the headings that reach a far goal can lie within a fraction of a degree:
+        // sweep finer before giving up (eight times where there is no route at all, else four)
+        zp.headingSamples *= planned ? 4 : 8;
+        sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
+    }
+    check.headings = static_cast<unsigned>(zp.headingSamples);
+    if (sol.found || stopRequested())
+        return sol;
+    const double spacing = 2.0 * kPi / zp.headingSamples;
+    if (std::isfinite(sol.nearestMiss))
+    {
+        const ZermeloSolution z =
+            zoomOn(ctx->field, zp, sol.nearestHeading, 16.0 * spacing, s, g, departure, check.finerHeadings);
+        if (z.found)
+            return z;
+    }
+    // the level set over the whole window (the extremal may be slower than the planner's route's bound)
+    const LevelSetAid aid = levelSetAid(ctx, s, g, departure, departure + span);
+    check.levelSetTime = aid.time;
+    ZermeloParams wide = zp;
+    wide.maxTime = std::isfinite(aid.time) ? std::min(span, 1.25 * aid.time) : zp.maxTime;
+    for (const double seed : aid.seeds)
+    {
+        const ZermeloSolution z =
+            zoomOn(ctx->field, wide, seed, 40.0 * kPi / 180.0, s, g, departure, check.finerHeadings);
+        if (z.found && (!sol.found || z.travelTime < sol.travelTime))
+            sol = z;
+    }
+    return sol;
+}
+
+/// The level set's first arrival is first order in its cell and never early by much: a route within this fraction of it
+/// is kept without planning the level set's route.
+constexpr double kLevelSetMargin = 0.02;
+
+/// The level set's route through the pipeline (the LevelSet planner, its time limit the plan's or the fallback's),
+/// carrying the planner's outcome's identity like the extremal's routes.
+PlannedPath levelSetRoute(const MissionProblem &problem, double departure, const PlanOptions &o,
+                          const PlannedPath &base)
+{
+    const MissionSpec &m = problem.getSpec();
+    PlanOptions h = o;
+    h.planner = "LevelSet";
+    h.timeLimit = o.timeLimit > 0 ? o.timeLimit : m.planner.timeLimit > 0 ? m.planner.timeLimit : kFallbackTimeLimit;
+    PlannedPath c = planOnField(problem, departure, h);
+    c.planner = base.planner;
+    c.switchedFrom = base.switchedFrom;
+    c.switchReason = base.switchReason;
+    c.straightLineTime = base.straightLineTime;
+    c.straightLineLength = base.straightLineLength;
+    if (c.solved)
+        c.status = PlanStatus::ExactSolution;
+    return c;
+}
 
 /// The planner's route's candidate row.
 RouteCandidate plannerCandidate(const PlannedPath &r)
@@ -201,20 +332,50 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     check.candidates.push_back(plannerCandidate(r));
     ZermeloParams zp = checkedExtremalParams(problem, ctx, r.speed, bound);
     const Point2 s = problem.getStart(), g = problem.getGoal();
-    ZermeloSolution sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
-    if (!sol.found)
-    {
-        // in strong or sensitive currents the headings that reach a far goal can lie within a fraction of a degree:
-        // sweep finer before giving up (eight times where there is no route at all, else four)
-        zp.headingSamples *= r.solved ? 4 : 8;
-        sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
-    }
-    check.headings = static_cast<unsigned>(zp.headingSamples);
+    const ZermeloSolution sol = findExtremal(ctx, zp, r.solved, s, g, departure, span, check);
     const ZermeloReference ref(ctx->field, zp);
     check.extremalFound = sol.found;
     check.extremalTime = sol.found ? sol.travelTime : kInf;
     PlannedPath best = std::move(r);
     const double planned = best.solved ? best.travelTime : kInf;
+    PlannedPath base; // what a candidate route inherits from the planner's outcome
+    base.departure = departure;
+    base.speed = best.speed;
+    base.planner = best.planner;
+    base.status = PlanStatus::ExactSolution;
+    base.straightLineTime = best.straightLineTime;
+    base.straightLineLength = best.straightLineLength;
+    base.planningSeconds = best.planningSeconds;
+    base.searchCostFunctionCalls = best.searchCostFunctionCalls;
+    base.expandedVertices = best.expandedVertices;
+    base.switchedFrom = best.switchedFrom;
+    base.switchReason = best.switchReason;
+    const auto consider = [&](PlannedPath c, const std::string &name) {
+        if (window)
+            timeArrival(problem, c);
+        RouteCandidate row;
+        row.name = name;
+        row.solved = c.solved;
+        row.travelTime = c.solved ? c.travelTime : kInf;
+        row.why = c.solved ? std::string() : c.reason;
+        check.candidates.push_back(row);
+        if (c.solved && !(c.travelTime >= best.travelTime && best.solved))
+        {
+            c.currentModelCalls = best.currentModelCalls;
+            if (!best.raw.empty())
+            {
+                // raw and smoothed stay the planner's own stages; the route is the candidate's
+                c.raw = best.raw;
+                c.smoothed = best.smoothed;
+                c.rawTravelTime = best.rawTravelTime;
+                c.smoothedTravelTime = best.smoothedTravelTime;
+                c.rawPathLength = best.rawPathLength;
+            }
+            best = std::move(c);
+            check.winner = name;
+        }
+        return row.solved;
+    };
     if (sol.found && sol.travelTime < planned * (1.0 - kCheckTolerance))
     {
         const std::vector<ZermeloState> extremal =
@@ -224,50 +385,17 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
             curve.push_back({z.x, z.y, z.t});
         curve.back().x = g.x;  // within the goal tolerance of it: the route ends on the goal
         curve.back().y = g.y;
-        PlannedPath base;
-        base.departure = departure;
-        base.speed = best.speed;
-        base.planner = best.planner;
-        base.status = PlanStatus::ExactSolution;
-        base.straightLineTime = best.straightLineTime;
-        base.straightLineLength = best.straightLineLength;
-        base.planningSeconds = best.planningSeconds;
-        base.searchCostFunctionCalls = best.searchCostFunctionCalls;
-        base.expandedVertices = best.expandedVertices;
-        base.switchedFrom = best.switchedFrom;
-        base.switchReason = best.switchReason;
-        const auto consider = [&](PlannedPath c, const std::string &name) {
-            if (window)
-                timeArrival(problem, c);
-            RouteCandidate row;
-            row.name = name;
-            row.solved = c.solved;
-            row.travelTime = c.solved ? c.travelTime : kInf;
-            row.why = c.solved ? std::string() : c.reason;
-            check.candidates.push_back(row);
-            if (c.solved && !(c.travelTime >= best.travelTime && best.solved))
-            {
-                c.currentModelCalls = best.currentModelCalls;
-                if (!best.raw.empty())
-                {
-                    // raw and smoothed stay the planner's own stages; the route is the extremal's
-                    c.raw = best.raw;
-                    c.smoothed = best.smoothed;
-                    c.rawTravelTime = best.rawTravelTime;
-                    c.smoothedTravelTime = best.smoothedTravelTime;
-                    c.rawPathLength = best.rawPathLength;
-                }
-                best = std::move(c);
-                check.winner = name;
-            }
-            return row.solved;
-        };
         const bool legs = consider(straightLegsAlong(problem, ctx, ss->getSpaceInformation(), curve, base),
                                    "extremal as straight legs");
         // held headings where straight legs cannot follow the extremal, or arrive clearly later than it
         if (!legs || best.travelTime > sol.travelTime * (1.0 + 2.0 * kCheckTolerance))
             consider(headingsAlong(problem, ctx, extremal, curve, base), "extremal as headings");
     }
+    // no extremal through the goal and the level set's front reached it earlier than the route in hand: the level
+    // set's own route (its backtracked path as straight legs, or flown by its headings) is a candidate
+    if (!sol.found && std::isfinite(check.levelSetTime) && !stopRequested() &&
+        !(best.solved && best.travelTime <= check.levelSetTime * (1.0 + kLevelSetMargin)))
+        consider(levelSetRoute(problem, departure, o, base), "level set");
     if (check.winner.empty() && best.solved)
         check.winner = check.candidates.front().name;
     if (best.solved && std::isfinite(planned))

@@ -138,6 +138,11 @@ void printGlobalCheck(std::ostream &out, const PlannedPath &p, const MissionSpec
     out << "Global check:       " << g.headings << " extremals shot from the start, "
         << (g.extremalFound ? "the fastest through the goal " + span(g.extremalTime) : std::string("none through the goal"))
         << format(" (%.2f s)\n", g.seconds);
+    if (g.finerHeadings > 0)
+        out << "  finer scans       " << g.finerHeadings << " headings in narrowing windows"
+            << (std::isfinite(g.levelSetTime) ? "; the level set's first arrival " + span(g.levelSetTime)
+                                              : std::string())
+            << "\n";
     for (const RouteCandidate &c : g.candidates)
         out << "  candidate         " << c.name << ": "
             << (c.solved ? span(c.travelTime) : "no route (" + c.why + ")")

@@ -243,6 +243,8 @@ json globalCheckJson(const PlannedPath &p)
                               {"travel_time", c.solved ? jnum(c.travelTime) : json(nullptr)},
                               {"why", jtext(c.why)}});
     return {{"headings", g.headings},
+            {"finer_headings", g.finerHeadings},
+            {"level_set_travel_time", std::isfinite(g.levelSetTime) ? jnum(g.levelSetTime) : json(nullptr)},
             {"extremal_found", g.extremalFound},
             {"extremal_travel_time", g.extremalFound ? jnum(g.extremalTime) : json(nullptr)},
             {"candidates", candidates},

@@ -101,6 +101,8 @@ ZermeloReference::ZermeloReference(std::shared_ptr<const CurrentField> field, Ze
                     ")");
     if (!(params_.goalTolerance > 0.0))
         throw Error("ZermeloReference: goalTolerance must be > 0");
+    if (!(params_.headingSpan > 0.0 && params_.headingSpan <= kTwoPi) || !std::isfinite(params_.headingFrom))
+        throw Error("ZermeloReference: headingSpan must be in (0, 2 pi] and headingFrom finite");
 }
 
 ZermeloReference::Y ZermeloReference::rhs(double t, const Y &s) const
@@ -259,19 +261,30 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
         return sol;
     }
     const double tMax = params_.maxTime > 0.0 ? params_.maxTime : 6.0 * D / params_.speed;
+    // the whole circle (the last heading neighbours the first) or a window with both ends scanned
+    const bool circle = params_.headingSpan >= kTwoPi;
     const int n = params_.headingSamples;
-    const double dTheta = kTwoPi / n;
+    const int shotsCount = circle ? n : n + 1;
+    const double dTheta = params_.headingSpan / n;
+    const double from = params_.headingFrom;
 
     // 1. Scan: closest approaches of n extremals (loose tolerance: only brackets are needed).
-    std::vector<std::vector<ClosestApproach>> shots(n);
+    std::vector<std::vector<ClosestApproach>> shots(shotsCount);
     const auto scan = [&](std::size_t j) {
-        shots[j] = shoot(x1, y1, double(j) * dTheta, t0, x2, y2, tMax, params_.scanRelTol);
+        shots[j] = shoot(x1, y1, from + double(j) * dTheta, t0, x2, y2, tMax, params_.scanRelTol);
     };
     if (params_.threads == 1)
-        for (int j = 0; j < n; ++j)
+        for (int j = 0; j < shotsCount; ++j)
             scan(std::size_t(j));
     else
-        ThreadPool(params_.threads).parallelFor(std::size_t(n), scan);
+        ThreadPool(params_.threads).parallelFor(std::size_t(shotsCount), scan);
+    for (int j = 0; j < shotsCount; ++j)
+        for (const ClosestApproach &e : shots[j])
+            if (e.admissible && std::abs(e.miss) < sol.nearestMiss)
+            {
+                sol.nearestMiss = std::abs(e.miss);
+                sol.nearestHeading = std::remainder(from + double(j) * dTheta, kTwoPi);
+            }
 
     // 2. Brackets: a closest approach whose signed miss changes sign between neighbouring headings (matched by
     // the nearest approach time).
@@ -280,9 +293,9 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
         double a, fa, b, fb, tEst;
     };
     std::vector<Bracket> brackets;
-    for (int j = 0; j < n; ++j)
+    for (int j = 0; j + (circle ? 0 : 1) < shotsCount; ++j)
     {
-        const int k = (j + 1) % n;
+        const int k = (j + 1) % shotsCount;
         for (const ClosestApproach &e : shots[j])
         {
             const ClosestApproach *best = nullptr;
@@ -294,7 +307,8 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
             // A sign flip far from the goal is the swap of two sides of a loop, not a crossing.
             if (std::abs(e.miss) + std::abs(best->miss) > 0.5 * D + 10.0 * dTheta * params_.speed * e.t)
                 continue;
-            brackets.push_back({j * dTheta, e.miss, (j + 1) * dTheta, best->miss, std::min(e.t, best->t)});
+            brackets.push_back(
+                {from + j * dTheta, e.miss, from + (j + 1) * dTheta, best->miss, std::min(e.t, best->t)});
         }
     }
     std::sort(brackets.begin(), brackets.end(), [](const Bracket &p, const Bracket &q) { return p.tEst < q.tEst; });

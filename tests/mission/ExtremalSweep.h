@@ -26,10 +26,11 @@ struct Setup
 {
     Velocity2 current;
     double speed{0.5};
-    double xMin{0}, xMax{0}, yMin{0}, yMax{0};  ///< an extremal that leaves the box ends there
-    double maxTime{0.0};                         ///< longest extremal followed
-    int headings{360};                           ///< initial headings swept over [0, 2 pi)
-    int steps{2000};                             ///< RK4 steps over maxTime
+    double xMin{0}, xMax{0}, yMin{0}, yMax{0}; ///< an extremal that leaves the box ends there
+    double maxTime{0.0};                       ///< longest extremal followed
+    int headings{360};                         ///< initial headings swept over [0, 2 pi)
+    int steps{2000};                           ///< RK4 steps over maxTime
+    int zoom{0}; ///< finer windows about the nearest miss where the sweep finds no extremal through the goal
 };
 
 /// The fastest extremal found through the goal.
@@ -127,37 +128,45 @@ inline const Pass *nearest(const std::vector<Pass> &v, double t)
             b = &p;
     return b;
 }
-}  // namespace detail
-
-/// The fastest extremal from (x0, y0) at t0 through (gx, gy) within the setup's time and box: sign changes of the
-/// miss between neighbouring headings, each refined by bisection on the heading until the miss is below 1e-7 of the
-/// trip (else not counted).
-inline Best fastest(const Setup &s, double x0, double y0, double t0, double gx, double gy)
+/// The fastest extremal through the goal among the headings from + j (span / n), j = 0..n (the whole circle, its
+/// last heading next to its first, when span is 2 pi): sign changes of the miss between neighbouring headings, each
+/// refined by bisection on the heading until the miss is below 1e-7 of the trip (else not counted). Also the heading
+/// whose pass came nearest the goal.
+inline Best window(const Setup &s, double x0, double y0, double t0, double gx, double gy, double from, double span,
+                   double &nearestHeading, double &nearestMiss)
 {
-    using namespace detail;
-    const int n = s.headings;
-    const double dth = 2 * M_PI / n;
-    std::vector<std::vector<Pass>> shots(n);
+    const bool circle = span >= 2 * M_PI;
+    const int n = s.headings, count = circle ? n : n + 1;
+    const double dth = span / n;
+    std::vector<std::vector<Pass>> shots(count);
     const unsigned workers = std::max(1u, std::thread::hardware_concurrency());
     std::vector<std::future<void>> jobs;
     for (unsigned w = 0; w < workers; ++w)
         jobs.push_back(std::async(std::launch::async, [&, w] {
-            for (int j = static_cast<int>(w); j < n; j += static_cast<int>(workers))
-                shots[j] = shoot(s, x0, y0, t0, j * dth, gx, gy);
+            for (int j = static_cast<int>(w); j < count; j += static_cast<int>(workers))
+                shots[j] = shoot(s, x0, y0, t0, from + j * dth, gx, gy);
         }));
     for (auto &j : jobs)
         j.get();
+    nearestMiss = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < count; ++j)
+        for (const Pass &e : shots[j])
+            if (std::abs(e.miss) < nearestMiss)
+            {
+                nearestMiss = std::abs(e.miss);
+                nearestHeading = from + j * dth;
+            }
     const double D = std::hypot(gx - x0, gy - y0);
     Best best;
-    for (int j = 0; j < n; ++j)
+    for (int j = 0; j + (circle ? 0 : 1) < count; ++j)
         for (const Pass &e : shots[j])
         {
-            const Pass *f = nearest(shots[(j + 1) % n], e.t);
+            const Pass *f = nearest(shots[(j + 1) % count], e.t);
             if (!f || (e.miss < 0) == (f->miss < 0) || std::abs(e.miss) + std::abs(f->miss) > 0.5 * D)
                 continue;
             if (best.found && std::min(e.t, f->t) > 1.2 * best.time)
                 continue;
-            double a = j * dth, fa = e.miss, b = (j + 1) * dth;
+            double a = from + j * dth, fa = e.miss, b = from + (j + 1) * dth;
             double tRef = std::min(e.t, f->t), miss = std::abs(fa);
             Pass at = e;
             for (int it = 0; it < 60 && miss > 1e-7 * D; ++it)
@@ -188,6 +197,21 @@ inline Best fastest(const Setup &s, double x0, double y0, double t0, double gx, 
                 best.heading = 0.5 * (a + b);
             }
         }
+    return best;
+}
+}  // namespace detail
+
+/// The fastest extremal from (x0, y0) at t0 through (gx, gy) within the setup's time and box: a sweep of the whole
+/// circle; where it finds none, Setup::zoom windows of the same number of headings, each a tenth as wide as the last
+/// (the first ten sweep spacings), about the heading whose pass came nearest the goal (in strong currents the
+/// extremals through a far goal can lie within a fraction of the sweep's spacing).
+inline Best fastest(const Setup &s, double x0, double y0, double t0, double gx, double gy)
+{
+    double heading = 0.0, miss = 0.0;
+    Best best = detail::window(s, x0, y0, t0, gx, gy, 0.0, 2 * M_PI, heading, miss);
+    double width = 10.0 * 2 * M_PI / s.headings;
+    for (int level = 0; level < s.zoom && !best.found && std::isfinite(miss); ++level, width /= 10.0)
+        best = detail::window(s, x0, y0, t0, gx, gy, heading - 0.5 * width, width, heading, miss);
     return best;
 }
 }  // namespace extremal_sweep

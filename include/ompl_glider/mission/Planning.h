@@ -64,7 +64,13 @@ struct RouteCandidate
 /// through the goal is a flyable route.
 struct GlobalCheck
 {
-    unsigned headings{0};     ///< initial headings swept
+    unsigned headings{0};     ///< initial headings swept over the circle
+    /// Headings shot in finer scans of narrow windows, where the sweep found no extremal through the goal: about the
+    /// heading whose extremal came nearest it, and about the level set's initial headings
+    unsigned finerHeadings{0};
+    /// The level set's first arrival at the goal (travel time, an estimate first order in its cell), computed where
+    /// the sweep found no extremal through the goal; +inf when not computed or the front never reached the goal
+    double levelSetTime{std::numeric_limits<double>::infinity()};
     bool extremalFound{false};  ///< an admissible extremal reaches the goal within the time bound
     /// Its travel time (the integrator's, a flyable schedule of continuous headings), +inf when none; the bound was
     /// the planner's route's travel time (or the planning window without a route)

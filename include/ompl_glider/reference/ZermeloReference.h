@@ -4,6 +4,7 @@
 /// problem solved by shooting over the initial heading ([EichhornRAS] Sec. 6.1, Eq. 2 and Eq. 10).
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -21,7 +22,13 @@ struct ZermeloParams
     double absTol{1e-12};         ///< absolute tolerance of the integrator
     double maxTime{0.0};          ///< longest trajectory to follow (an upper bound of the optimal time, e.g. the
                                   ///< travel time of any feasible path); <= 0: 6 * |goal - start| / V
-    int headingSamples{720};      ///< initial headings scanned uniformly over [0, 2 pi) to bracket the solutions
+    int headingSamples{720};      ///< initial headings scanned uniformly over the window below to bracket the
+                                  ///< solutions
+    double headingFrom{0.0};      ///< first heading of the scan (radians)
+    /// Width of the scanned window (radians, in (0, 2 pi]): 2 pi scans the whole circle (the last heading neighbours
+    /// the first); less, a window about a guess (headingSamples + 1 headings from headingFrom to
+    /// headingFrom + headingSpan)
+    double headingSpan{6.283185307179586};
     double goalTolerance{1e-9};   ///< largest miss distance accepted as "passes through the goal" (where the
                                   ///< heading bracket has shrunk to rounding, 1e-7 of the start-goal distance: in a
                                   ///< sensitive flow the miss of the nearest representable heading can exceed it)
@@ -65,6 +72,10 @@ struct ZermeloSolution
     double initialHeading{0.0};  ///< heading at departure of the fastest extremal through the goal (radians)
     double missDistance{0.0};    ///< distance between the extremal and the goal at arrival
     int extremalsThroughGoal{0}; ///< number of distinct extremals found that pass through the goal
+    /// The scanned heading whose extremal came nearest the goal while in the admissible set, and that distance (+inf
+    /// when none came near): where no extremal through the goal was found, the centre of a finer scan.
+    double nearestHeading{0.0};
+    double nearestMiss{std::numeric_limits<double>::infinity()};
 };
 
 /// @brief Zermelo's navigation problem by shooting: the state (x, y, theta) obeys the equations of motion
