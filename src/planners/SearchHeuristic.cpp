@@ -189,7 +189,7 @@ std::shared_ptr<CellBoxCache> CellBoxCache::shared(const std::shared_ptr<const C
     return caches.back();
 }
 
-VelocityBox CellBoxCache::box(long I, long J, double ta, double tb)
+VelocityBox CellBoxCache::box(long I, long J, double ta, double tb, const std::function<bool()> &stop)
 {
     const std::lock_guard<std::mutex> lock(mutex_);
     const long k0 = static_cast<long>(std::floor((ta - origin_) / dt_));
@@ -199,6 +199,8 @@ VelocityBox CellBoxCache::box(long I, long J, double ta, double tb)
     const long f = static_cast<long>(f_);
     for (long k = k0; k <= k1; ++k)
     {
+        if (slices_.find(k) == slices_.end() && stop && stop())
+            return {-kInf, kInf, -kInf, kInf};
         auto [it, inserted] = slices_.try_emplace(k);
         if (inserted)
         {
@@ -234,7 +236,7 @@ VelocityBox LatticeHeuristic::box(long I, long J, double ta, double tb, const Re
 {
     if (cache_ && std::isfinite(ta) && std::isfinite(tb) && tb - ta <= 1e6)
     {
-        VelocityBox b = cache_->box(I, J, ta, tb);
+        VelocityBox b = cache_->box(I, J, ta, tb, stop_);
         const double M = vCap_ - V_;
         b = {std::max(b.uMin, -M), std::min(b.uMax, M), std::max(b.vMin, -M), std::min(b.vMax, M)};
         return b;
@@ -243,7 +245,8 @@ VelocityBox LatticeHeuristic::box(long I, long J, double ta, double tb, const Re
 }
 
 LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &field, double speed, double depth,
-                                   double tBegin, double tEnd, unsigned cellFactor, CellBoxCache *cache)
+                                   double tBegin, double tEnd, unsigned cellFactor, CellBoxCache *cache,
+                                   std::function<bool()> stop)
   : lat_(lattice)
   , field_(field)
   , depth_(depth)
@@ -251,6 +254,7 @@ LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &f
   , tBegin_(tBegin)
   , tEnd_(tEnd)
   , n_(static_cast<int>(lattice.sectors()))
+  , stop_(std::move(stop))
 {
     if (!(speed > 0.0) || !std::isfinite(speed))
         throw Error("LatticeHeuristic: the vehicle speed must be finite and > 0");
@@ -282,7 +286,7 @@ LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &f
     const unsigned slices =
         std::isfinite(tEnd - tBegin) ? static_cast<unsigned>(std::clamp(std::ceil(tEnd - tBegin), 1.0, 64.0)) : 1u;
     boxes_.assign(static_cast<std::size_t>(NX_ * NY_), VelocityBox{-M, M, -M, M});
-    for (long J = 0; J < NY_ && hasLocalBounds(field); ++J)
+    for (long J = 0; J < NY_ && hasLocalBounds(field) && !stopped(); ++J)
         for (long I = 0; I < NX_; ++I)
         {
             Region r = whole;
@@ -472,7 +476,7 @@ void LatticeHeuristic::refineWindows(unsigned rounds, const std::function<bool(L
     const long rc = n_ / static_cast<long>(f_) + 1;
     const double g = lat_.gridSize();
     const long f = static_cast<long>(f_);
-    for (unsigned r = 0; r < rounds; ++r)
+    for (unsigned r = 0; r < rounds && !stopped(); ++r)
     {
         const std::vector<double> a = staticSearch(true, inWater);
         std::vector<double> h = staticSearch(false, inWater);
@@ -556,8 +560,10 @@ double LatticeHeuristic::operator()(Lattice::VertexId v)
         if (l.settled)
             return l.d;
     }
-    while (!queue_.empty())
+    for (unsigned pops = 1; !queue_.empty(); ++pops)
     {
+        if (pops % 4096 == 0 && stopped())
+            return 0.0;  // a lower bound; the search that asked is stopping
         const QEntry e = queue_.top();
         queue_.pop();
         Label &lab = labels_.ref(e.v);

@@ -285,11 +285,17 @@ void TveSearch::Core::setUpBounds()
     if (refine || ts.boundsRefined_ || !ts.bounds_ || ts.bounds_->tBegin() != t0 || ts.bounds_->tEnd() != tEnd ||
         ts.bounds_->cellFactor() != f)
         ts.bounds_ = std::make_unique<LatticeHeuristic>(lattice, field, ctx.speed(), z, t0, tEnd, f,
-                                                        ts.boxCache_.get());
+                                                        ts.boxCache_.get(), terminate);
+    ts.bounds_->setStop(terminate);
     ts.boundsRefined_ = refine;
     const auto landTest = [this](Lattice::VertexId v) { return inWater(v); };
     if (refine)
         ts.bounds_->refineWindows(options.windowRounds, landTest);
+    if (terminated())
+    {
+        ts.bounds_.reset();  // built in part: not kept for the next search (the search stops before it uses them)
+        return;
+    }
     ts.bounds_->reset(landTest);
     if (ts.bounds_->informative())
         bounds = ts.bounds_.get();  // else the bounds are Eq. 1's: the code below uses it directly

@@ -235,3 +235,41 @@ TEST(SearchHeuristic, DeadlineKeepsTheOptimumOrExhausts)
         EXPECT_EQ(search.run(sx, sy, 0.0, gx, gy, o).outcome, TveOutcome::Exhausted) << tight;
     }
 }
+
+TEST(SearchHeuristic, StopRequestEndsTheSetupAndLeavesLowerBounds)
+{
+    // A stop answered during the bounds' setup (the cell boxes, the backward search) ends it: no further box is
+    // computed, h() answers 0 for a vertex it has not settled (a lower bound), and a search whose stop answers true
+    // once the setup has begun ends Terminated before any backward search or expansion (it used to build every box
+    // and settle the backward search first, a minute on a fine lattice).
+    GliderProblem p = jetProblem();
+    auto ctx = makeGliderContext(p);
+    Lattice lat(ctx->region.xMin, ctx->region.xMax, ctx->region.yMin, ctx->region.yMax, 0.1, 3);
+    lat.setStart(0.5, -3.0);
+    ASSERT_NE(lat.setGoal(9.5, 3.0), Lattice::kNone);
+    const LatticeHeuristic full(lat, *ctx->field, ctx->speed(), 0.0, 0.0, 60.0);
+    ASSERT_TRUE(full.informative());  // the jet's local boxes are narrower than its global bound
+    int asked = 0;
+    LatticeHeuristic stopped(lat, *ctx->field, ctx->speed(), 0.0, 0.0, 60.0, 0, nullptr, [&asked] {
+        ++asked;
+        return true;
+    });
+    EXPECT_FALSE(stopped.informative()) << "boxes were computed after the stop";
+    EXPECT_EQ(asked, 1);
+    stopped.reset({});
+    const Lattice::VertexId far = lat.gridVertex(0, 0);
+    EXPECT_EQ(stopped(far), 0.0);
+    EXPECT_LT(stopped.settled(), 4096u);  // the backward search asked the stop and ended
+    // the search: its stop turns true on its first question after the setup began
+    TveSearch search(ctx, 0.1, 3);
+    TveOptions o;  // the default: A* with the lattice's bounds
+    int questions = 0;
+    const TveResult r = search.run(0.5, -3.0, 0.0, 9.5, 3.0, o, [&questions] { return ++questions > 1; });
+    EXPECT_EQ(r.outcome, TveOutcome::Terminated);
+    EXPECT_EQ(r.heuristicSettled, 0u);  // no backward search, no expansion after the stop
+    EXPECT_EQ(r.expansions, 0u);
+    // and a search after it, not stopped, builds its bounds afresh and finds the route
+    const TveResult again = search.run(0.5, -3.0, 0.0, 9.5, 3.0, o);
+    EXPECT_EQ(again.outcome, TveOutcome::Exact);
+    EXPECT_GT(again.heuristicSettled, 0u);
+}

@@ -46,8 +46,9 @@ class CellBoxCache
 public:
     CellBoxCache(std::shared_ptr<const CurrentField> field, const Lattice &lattice, double depth, unsigned cellFactor,
                  double origin, double dt);
-    /// @brief Box of cell (I, J) over [ta, tb] (finite, ta <= tb). Thread-safe.
-    VelocityBox box(long I, long J, double ta, double tb);
+    /// @brief Box of cell (I, J) over [ta, tb] (finite, ta <= tb). Thread-safe. Once @p stop answers true no new
+    /// slice is computed: the box is then unbounded (the caller's global bound applies).
+    VelocityBox box(long I, long J, double ta, double tb, const std::function<bool()> &stop = {});
     /// @brief Origin and length of the time slices.
     double origin() const
     {
@@ -108,8 +109,12 @@ class LatticeHeuristic
 public:
     /// @brief Bounds for @p lattice (its start/goal need not be set yet) over the time window [tBegin, tEnd] at the
     /// travel depth z, vehicle speed V. cellFactor 0 picks one so that there are at most about 2^16 cells.
+    /// @p stop (if any) is asked between rows of cells, slices and rounds, and by the backward search: once it answers
+    /// true the bounds built so far stand (the rest are the global bound, still lower bounds) and h() answers 0 where
+    /// it has not settled a vertex yet, so that the search that asked can stop within a second.
     LatticeHeuristic(const Lattice &lattice, const CurrentField &field, double speed, double depth, double tBegin,
-                     double tEnd, unsigned cellFactor = 0, CellBoxCache *cache = nullptr);
+                     double tEnd, unsigned cellFactor = 0, CellBoxCache *cache = nullptr,
+                     std::function<bool()> stop = {});
     /// @brief The cell factor LatticeHeuristic picks for @p lattice when asked for 0.
     static unsigned autoCellFactor(const Lattice &lattice);
 
@@ -131,10 +136,16 @@ public:
     /// whether a vertex may be used (the search's land test); it must stay valid until the next reset().
     void reset(std::function<bool(Lattice::VertexId)> inWater);
 
-    /// @brief Forgets the land test given to reset() (call before it goes out of scope).
+    /// @brief Forgets the land test given to reset() and the stop test (call before they go out of scope).
     void releaseLandTest()
     {
         inWater_ = nullptr;
+        stop_ = nullptr;
+    }
+    /// @brief The stop test of the search that uses these bounds now (see the constructor).
+    void setStop(std::function<bool()> stop)
+    {
+        stop_ = std::move(stop);
     }
 
     /// @brief h(v): lower bound of the remaining travel time from v to the goal (+inf when even the optimistic
@@ -225,6 +236,11 @@ private:
     std::vector<double> len_;               // per offset: |o| g
     std::vector<int> offsetIndex_;          // (dx + n) + (dy + n) (2n + 1) -> offset index
     std::function<bool(Lattice::VertexId)> inWater_;
+    std::function<bool()> stop_;
+    bool stopped() const
+    {
+        return stop_ && stop_();
+    }
 
     struct Label
     {
