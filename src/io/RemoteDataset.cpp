@@ -18,6 +18,7 @@
 
 #include <unistd.h>
 
+#include "NumberText.h"
 #include "RemoteRecord.h"
 #include "ompl_glider/Exception.h"
 
@@ -125,6 +126,52 @@ std::vector<std::pair<int, std::pair<std::vector<std::size_t>, std::vector<std::
             out.push_back({var, {s, c}});
     }
     return out;
+}
+
+/// A text attribute of @p var ("" when absent or not text).
+std::string textAttribute(int ncid, int var, const char *name)
+{
+    std::size_t len = 0;
+    nc_type type = NC_NAT;
+    if (nc_inq_att(ncid, var, name, &type, &len) != NC_NOERR || type != NC_CHAR)
+        return {};
+    std::string text(len, '\0');
+    if (len > 0 && nc_get_att_text(ncid, var, name, &text[0]) != NC_NOERR)
+        return {};
+    while (!text.empty() && text.back() == '\0')
+        text.pop_back();
+    return text;
+}
+
+/// Where the descriptions of two NetCDF datasets differ in their dimensions or in their coordinate variables' units
+/// and calendars ("" when they agree).
+std::string describedDifferently(int a, int b)
+{
+    int na = 0, nb = 0;
+    nc_inq_ndims(a, &na);
+    nc_inq_ndims(b, &nb);
+    if (na != nb)
+        return std::to_string(na) + " dimensions cached, " + std::to_string(nb) + " now";
+    for (int d = 0; d < na; ++d)
+    {
+        char name[NC_MAX_NAME + 1] = "", other[NC_MAX_NAME + 1] = "";
+        std::size_t la = 0, lb = 0;
+        nc_inq_dim(a, d, name, &la);
+        nc_inq_dim(b, d, other, &lb);
+        if (std::string(name) != other || la != lb)
+            return std::string("dimension ") + name + " of " + std::to_string(la) + " cached, " + other + " of " +
+                   std::to_string(lb) + " now";
+        int va = -1, vb = -1;
+        if (nc_inq_varid(a, name, &va) != NC_NOERR || nc_inq_varid(b, name, &vb) != NC_NOERR)
+            continue;
+        for (const char *att : {"units", "calendar"})
+        {
+            const std::string ta = textAttribute(a, va, att), tb = textAttribute(b, vb, att);
+            if (ta != tb)
+                return std::string(name) + ":" + att + " '" + ta + "' cached, '" + tb + "' now";
+        }
+    }
+    return {};
 }
 
 std::string readText(const std::filesystem::path &p)
@@ -237,6 +284,17 @@ RemoteDataset::RemoteDataset(std::string url, RemoteAccess access, std::size_t r
         {
             if (nc_open(cachePath_.c_str(), NC_NOWRITE, &cacheId_) != NC_NOERR)
                 cacheId_ = -1;  // an unreadable cache file is fetched anew and replaced
+            else if (const std::string held = textAttribute(cacheId_, NC_GLOBAL, "ompl_glider_source");
+                     held != withoutCredentials(url_))
+            {
+                // another source's cache file (copied into place, or a name shared by two URLs): not this forecast
+                nc_close(cacheId_);
+                cacheId_ = -1;
+                const std::string why = "the file found at the cache file's place holds " +
+                                        (held.empty() ? std::string("no source name") : "'" + held + "'") +
+                                        ": fetched anew, the file replaced";
+                remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.cacheIgnored = why; });
+            }
             else
                 for (const auto &[var, sc] : cachedBlocks(cacheId_))
                     blocks_.push_back(Block{var, sc.first, sc.second, {}});
@@ -294,8 +352,41 @@ int RemoteDataset::remoteId()
                                                 : limitProblem()));
         attempt("cannot open", [&] { return nc_open(url_.c_str(), NC_NOWRITE, &remoteId_); });
         remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.opened = true; });
+        if (cacheId_ >= 0)
+            checkCacheAnswers();
     }
     return remoteId_;
+}
+
+void RemoteDataset::checkCacheAnswers()
+{
+    std::string what = describedDifferently(cacheId_, remoteId_);
+    // the coordinate values cached (a forecast republished at the same URL keeps its shape and moves its dates)
+    for (const Block &b : blocks_)
+    {
+        if (!what.empty())
+            break;
+        char name[NC_MAX_NAME + 1] = "";
+        int nd = 0, dim = -1;
+        if (b.start.size() != 1 || nc_inq_var(cacheId_, b.var, name, nullptr, &nd, &dim, nullptr) != NC_NOERR)
+            continue;
+        char dimName[NC_MAX_NAME + 1] = "";
+        if (nd != 1 || nc_inq_dimname(cacheId_, dim, dimName) != NC_NOERR || std::string(name) != dimName)
+            continue;  // not a coordinate variable
+        std::vector<double> cached(b.count[0]), now(b.count[0]);
+        if (nc_get_vara_double(cacheId_, b.var, b.start.data(), b.count.data(), cached.data()) != NC_NOERR)
+            continue;
+        attempt("reading " + constraintOf(name, b.start, b.count),
+                [&] { return nc_get_vara_double(remoteId_, b.var, b.start.data(), b.count.data(), now.data()); });
+        for (std::size_t k = 0; k < cached.size() && what.empty(); ++k)
+            if (!(cached[k] == now[k]) && !(std::isnan(cached[k]) && std::isnan(now[k])))
+                what = std::string(name) + "[" + std::to_string(b.start[0] + k) + "] " + text::number(cached[k]) +
+                       " cached, " + text::number(now[k]) + " now";
+    }
+    if (!what.empty())
+        throw Error(who() + " is not the dataset its cache file '" + cachePath_ + "' holds (" + what +
+                    "): republished since it was cached? Its cached values cannot be mixed with the new ones: "
+                    "remove the cache file, or plan with another cache folder, to fetch the forecast anew");
 }
 
 std::uint64_t RemoteDataset::valueBytes(int var, std::size_t values) const

@@ -63,6 +63,9 @@ private:
     };
     RemoteDataset(std::string url, RemoteAccess access, std::size_t record);
     int remoteId();
+    /// Where the cache file describes the dataset (before the URL was opened): throws when the URL's dataset is not
+    /// the one cached (its dimensions, its coordinates' units and calendars, or the cached coordinate values differ).
+    void checkCacheAnswers();
     int attempt(const std::string &what, const std::function<int()> &call);
     std::uint64_t valueBytes(int var, std::size_t values) const;
     void writeCache(const std::string &tmp);

@@ -261,6 +261,8 @@ std::string remoteNote(const RemoteFetch &f)
     if (!f.cacheFile.empty())
         note += f.cacheProblem.empty() ? "; cache file '" + f.cacheFile + "'"
                                        : "; the cache file could not be written: " + f.cacheProblem;
+    if (!f.cacheIgnored.empty())
+        note += " (" + f.cacheIgnored + ")";
     return note;
 }
 

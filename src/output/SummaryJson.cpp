@@ -227,7 +227,8 @@ json forecastSourcesJson(const MissionProblem &problem)
                        {"bytes_from_cache", f.bytesFromCache},
                        {"requests", f.requests},
                        {"network", f.opened},
-                       {"cache_problem", jtext(f.cacheProblem)}});
+                       {"cache_problem", jtext(f.cacheProblem)},
+                       {"cache_ignored", jtext(f.cacheIgnored)}});
     return out;
 }
 

@@ -15,7 +15,10 @@ island of fill values) is written with NetCDF-C (python3-netcdf4) and served. Ch
   6. a server that answers an error (HTTP 500): exit 2 naming the URL;
   7. a mission file whose current.file is the URL plans like --currents URL;
   8. two daily files served as two URLs plan as the two files do (one forecast);
-  9. a real model file (NCL's POP sample: curvilinear, global, cm/s, tracer land) from its URL plans as the file.
+  9. a real model file (NCL's POP sample: curvilinear, global, cm/s, tracer land) from its URL plans as the file;
+ 10. a URL with a user and a password: the password reaches no output, message or cache name;
+ 11. another URL's cache file copied into place is not used (the URL's own travel time, the file replaced);
+ 12. a forecast republished at the URL with other dates is refused when a plan needs more than the cache holds.
 """
 import json
 import math
@@ -235,6 +238,62 @@ def main():
                   "the report says all came from the cache: %s" % s)
         check(len(log_lines(log)) == before, "no request reached the server on the second plan (%d new)" %
               (len(log_lines(log)) - before))
+
+        # 11. another URL's cache file copied into place: not used, the URL's own forecast fetched and the file replaced
+        other_nc = os.path.join(root, "other.nc")
+        shutil.copy(nc, other_nc)
+        with netCDF4.Dataset(other_nc, "a") as d:
+            for name in ("water_u", "water_v"):
+                v = d.variables[name]
+                v.set_auto_maskandscale(False)
+                data = v[:]
+                v[:] = np.where(data == -30000, data, (data * 0.7).astype(np.int16))
+        other_url = "http://127.0.0.1:%d/other.nc" % port
+        p_of, _ = plan(glider, ["--currents", other_nc, "--out", os.path.join(work, "o_other_file")] + trip)
+        other_cache = os.path.join(work, "cache_other")
+        p_o1, _ = plan(glider, ["--currents", other_url, "--cache", other_cache, "--out",
+                                os.path.join(work, "o_other_1")] + trip)
+        other_files = os.listdir(other_cache) if os.path.isdir(other_cache) else []
+        check(p_of.returncode == 0 and p_o1.returncode == 0 and len(other_files) == 1 and files,
+              "the second dataset plans from its file and its URL (exit %d, %d: %s)" %
+              (p_of.returncode, p_o1.returncode, p_o1.stderr[-300:]))
+        if p_of.returncode == 0 and p_o1.returncode == 0 and len(other_files) == 1 and files:
+            shutil.copy(os.path.join(cache, files[0]), os.path.join(other_cache, other_files[0]))
+            p_o2, _ = plan(glider, ["--currents", other_url, "--cache", other_cache, "--out",
+                                    os.path.join(work, "o_other_2")] + trip)
+            check(p_o2.returncode == 0, "a copied-in cache file of another URL (exit %d: %s)" %
+                  (p_o2.returncode, p_o2.stderr[-300:]))
+            if p_o2.returncode == 0:
+                t_file = summary(os.path.join(work, "o_other_file"))["travel_time"]
+                o2 = summary(os.path.join(work, "o_other_2"))
+                check(o2["travel_time"] == t_file and t_file != tb,
+                      "another URL's cache file is not used: the URL's own travel time (%r, file %r, other %r)" %
+                      (o2["travel_time"], t_file, tb))
+                src = o2["forecast_sources"][0]
+                check(src["network"] is True and url in (src.get("cache_ignored") or ""),
+                      "the report says the file found was another URL's: %s" % src.get("cache_ignored"))
+                with netCDF4.Dataset(os.path.join(other_cache, other_files[0])) as d:
+                    check(d.getncattr("ompl_glider_source") == other_url, "the cache file was replaced by the URL's")
+
+        # 12. a forecast republished at the same URL with its dates 5 days later: a plan that needs more than the
+        # cache holds is refused naming the URL and the cache file (never the new values on the cached dates)
+        repub_nc = os.path.join(root, "repub.nc")
+        shutil.copy(nc, repub_nc)
+        repub_url = "http://127.0.0.1:%d/repub.nc" % port
+        repub_cache = os.path.join(work, "cache_repub")
+        p_r1, _ = plan(glider, ["--currents", repub_url, "--cache", repub_cache, "--out",
+                                os.path.join(work, "o_repub_1")] + trip)
+        check(p_r1.returncode == 0, "republished: the first plan (exit %d: %s)" % (p_r1.returncode, p_r1.stderr[-300:]))
+        with netCDF4.Dataset(repub_nc, "a") as d:
+            d.variables["time"][:] = d.variables["time"][:] + 120.0
+        # another trip (a region the cache does not hold), the same departure
+        east_trip = ["--start=-66.2,30.4", "--goal=-63.6,31.2"] + trip[2:]
+        p_r2, _ = plan(glider, ["--currents", repub_url, "--cache", repub_cache, "--out",
+                                os.path.join(work, "o_repub_2")] + east_trip)
+        check(p_r2.returncode == 2 and repub_url in p_r2.stderr and "cache file" in p_r2.stderr and
+              "time[" in p_r2.stderr, "republished with other dates: exit 2 naming the URL, the cache file and the "
+              "date (exit %d: %s)" % (p_r2.returncode, p_r2.stderr[-400:]))
+        check(not os.path.exists(os.path.join(work, "o_repub_2")), "republished: no output directory")
 
         # 7. a mission file whose current.file is the URL (its region: the whole grid; no cache)
         mission = os.path.join(work, "m.yaml")

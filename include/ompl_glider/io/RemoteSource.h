@@ -64,6 +64,9 @@ struct RemoteFetch
     std::uint64_t requests{0};       ///< data requests sent (opens and reads, retries included)
     bool opened{false};              ///< the URL itself was opened (its description fetched); false: all from cache
     std::string cacheProblem;        ///< why the cache file could not be written (empty when it was, or no cache)
+    /// Why a file found at the cache file's place was not used (it names another source, or none): the forecast was
+    /// fetched anew and the file replaced; empty otherwise
+    std::string cacheIgnored;
 };
 
 /// @brief Every remote source read in this process so far, in the order first read.
