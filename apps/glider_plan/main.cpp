@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -232,6 +233,9 @@ int main(int argc, char **argv)
             (void)::setrlimit(RLIMIT_CPU, &cpu);
         }
         status = runAndReport(f, failure);
+        if (const int sig = signalAfterOutputs(); sig != 0 && taskRank() == 0)
+            std::cerr << "glider_plan: " << strsignal(sig)
+                      << " arrived after the outputs were written in full: they stand, and the run ends as finished\n";
     }
 #if OMPL_GLIDER_WITH_MPI
     // a rank that failed alone must not leave the others waiting for it (MpiTaskSpreader::endJob())

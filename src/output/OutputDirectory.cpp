@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/StopRequest.h"
 #include "ompl_glider/output/OutputWriter.h"
 
 namespace ompl_glider
@@ -25,6 +26,7 @@ namespace fs = std::filesystem;
 namespace
 {
 std::atomic<bool> g_staging{false};
+std::atomic<bool> g_final{false};  // the last write's outputs stand for good (its commit cannot be taken back)
 std::atomic<int> g_pending{0};
 std::atomic<void (*)(const char *)> g_hook{nullptr};
 
@@ -47,12 +49,19 @@ void endBySignal(int sig)
 
 extern "C" void onTerminatingSignal(int sig)
 {
+    if (g_final.load() && !g_staging.load())
+    {
+        // the new outputs stand: the run is stopped, not undone (the caller must not read "nothing was written")
+        g_pending.store(sig);
+        requestStop();
+        return;
+    }
     if (!g_staging.load())
     {
         endBySignal(sig);  // end the process as the signal would have (nothing is half written)
         return;
     }
-    g_pending.store(sig);  // answered at the next file (interruptIfSignalled) or after the commit
+    g_pending.store(sig);  // answered at the next file (interruptIfSignalled), or after the commit if it is final
 }
 
 std::string systemReason(int err)
@@ -149,6 +158,11 @@ std::map<std::string, HeldLock> &heldLocks()
     return held;
 }
 }  // namespace
+
+int signalAfterOutputs()
+{
+    return g_final.load() ? g_pending.exchange(0) : 0;
+}
 
 void installOutputSignalHandlers()
 {
@@ -385,17 +399,27 @@ void commitStaging(const fs::path &staging, const fs::path &target, const std::v
     }
     else
         moveFileByFile(staging, target, names, previous, shown);
+    g_final.store(true);  // a signal from here on no longer takes the new outputs back
+    stepHook("final");
     syncDirectory(target.parent_path());
     fs::remove_all(staging, ec);
 }
 
 void setStaging(bool on)
 {
+    if (on)
+        g_final.store(false);
     g_staging.store(on);
 }
 
 void raisePendingSignal()
 {
+    if (g_final.load())
+    {
+        if (g_pending.load() != 0)
+            requestStop();  // kept for signalAfterOutputs(); the outputs stand
+        return;
+    }
     if (const int sig = g_pending.exchange(0))
         endBySignal(sig);
 }

@@ -43,10 +43,12 @@ void setStaging(bool on);
 /// @brief When a signal arrived while staging: removes @p staging and ends the process by that signal.
 void interruptIfSignalled(const std::filesystem::path &staging);
 
-/// @brief Ends the process by a signal that arrived during the commit (after it completed).
+/// @brief Ends the process by a signal that arrived during the commit (after it completed), unless the commit is
+/// final: then the signal stays for signalAfterOutputs() and the plans under way are asked to stop.
 void raisePendingSignal();
 
-/// @brief For tests: a function called at each named step of writeOutputFiles() ("staged", "committed").
+/// @brief For tests: a function called at each named step of writeOutputFiles() ("staged", "committed": the new
+/// outputs in place, "final": no longer taken back by a signal).
 void setStepHook(void (*hook)(const char *step));
 void stepHook(const char *step);
 }  // namespace ompl_glider::output_detail

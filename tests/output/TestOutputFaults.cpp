@@ -18,6 +18,7 @@
 
 #include "OutputDirectory.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/StopRequest.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/output/OutputWriter.h"
@@ -100,7 +101,7 @@ TEST(OutputFaults, KilledAtEveryStepLeavesOneCompleteRun)
     const auto oldSet = expected(oldFiles, root / "scratch_old");
     const auto newSet = expected(newFiles, root / "scratch_new");
     // file k of the new run being written (k = 0..2), all written, committed
-    const std::vector<std::string> steps = {"file0", "file1", "file2", "staged", "committed"};
+    const std::vector<std::string> steps = {"file0", "file1", "file2", "staged", "committed", "final"};
     for (const std::string &step : steps)
     {
         SCOPED_TRACE(step);
@@ -137,7 +138,7 @@ TEST(OutputFaults, KilledAtEveryStepLeavesOneCompleteRun)
         ::close(fds[0]);
         ::close(fds[1]);
         ASSERT_TRUE(WIFSIGNALED(status));
-        EXPECT_EQ(snapshot(dir), step == "committed" ? newSet : oldSet);
+        EXPECT_EQ(snapshot(dir), step == "committed" || step == "final" ? newSet : oldSet);
         EXPECT_LE(stagingDirectories(root), 1u);
         // The next run removes what the killed one left.
         writeOutputFiles(dir.string(), newFiles);
@@ -207,6 +208,59 @@ TEST(OutputFaults, SignalWhileSwappingInKeepsTheEarlierOutputs)
             EXPECT_FALSE(fs::exists(dir));
         EXPECT_EQ(stagingDirectories(root), 0u);
     }
+}
+
+TEST(OutputFaults, SignalAfterTheFinalCommitKeepsTheNewOutputsAndEndsAsFinished)
+{
+    // SIGTERM once the new outputs stand for good: ending by the signal would tell the caller that nothing was
+    // written. The write completes, the signal is given by signalAfterOutputs() and the plans are asked to stop; a
+    // signal while the next run's files are staged still ends the process and keeps that run's outputs out.
+    const fs::path root = freshDirectory("signal_final");
+    const fs::path dir = root / "out";
+    writeOutputFiles(dir.string(), runFiles("old", {"waypoints.csv"}));
+    const auto newFiles = runFiles("new", {"waypoints.csv", "path.csv"});
+    const auto newSet = expected(newFiles, root / "scratch_new");
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0)
+    {
+        installOutputSignalHandlers();
+        clearStop();
+        output_detail::setStepHook([](const char *step) {
+            if (std::string(step) == "final")
+                ::raise(SIGTERM);
+        });
+        writeOutputFiles(dir.string(), newFiles);
+        const bool told = stopRequested() && signalAfterOutputs() == SIGTERM && signalAfterOutputs() == 0;
+        ::raise(SIGTERM);  // after the final commit, outside any write: noted again, the process goes on
+        ::_exit(told && signalAfterOutputs() == SIGTERM ? 0 : 3);
+    }
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    EXPECT_EQ(snapshot(dir), newSet);
+    EXPECT_EQ(stagingDirectories(root), 0u);
+    // the next write is staged anew: a signal while its files are written takes it back and ends the process
+    const pid_t second = ::fork();
+    ASSERT_GE(second, 0);
+    if (second == 0)
+    {
+        installOutputSignalHandlers();
+        writeOutputFiles(dir.string(), runFiles("later", {"waypoints.csv"}));  // committed for good
+        std::vector<OutputFile> files = runFiles("last", {"waypoints.csv", "path.csv"});
+        files[1].write = [](const std::string &p) {
+            output_detail::writeFileChecked(p, "last");
+            ::raise(SIGTERM);
+        };
+        writeOutputFiles(dir.string(), files);
+        ::_exit(0);  // not reached
+    }
+    ::waitpid(second, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status));
+    EXPECT_EQ(WTERMSIG(status), SIGTERM);
+    const auto after = snapshot(dir);
+    EXPECT_EQ(after, expected(runFiles("later", {"waypoints.csv"}), root / "scratch_later"));
 }
 
 TEST(OutputFaults, AWriteThatFailsNamesTheFileAndKeepsTheEarlierOutputs)

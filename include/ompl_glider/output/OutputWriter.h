@@ -45,10 +45,16 @@ private:
 };
 
 /// @brief SIGINT, SIGTERM and SIGHUP (unless ignored) end the process at once, except while writeOutputFiles()
-/// writes its staging directory: then that directory is removed first (the earlier outputs stay), or, once the
-/// commit has begun, it is completed; then the process ends by the signal. SIGXCPU (the CPU time limit, ulimit -t)
-/// likewise, ending with a message and exit status 128 + SIGXCPU instead of a core dump. For programs (glider_plan).
+/// writes its staging directory: then that directory is removed first (the earlier outputs stay), or, where the
+/// commit has begun, it is taken back; then the process ends by the signal. A signal once the new outputs stand for
+/// good (the commit is final) no longer ends the process by the signal, which would tell a caller that nothing was
+/// written: it asks the plans still under way to stop (requestStop()) and is given by signalAfterOutputs(); the
+/// program ends as finished. SIGXCPU (the CPU time limit, ulimit -t) likewise, ending with a message and exit status
+/// 128 + SIGXCPU instead of a core dump. For programs (glider_plan).
 void installOutputSignalHandlers();
+
+/// @brief The signal that arrived after the last outputs were committed for good (0: none); cleared by the call.
+int signalAfterOutputs();
 
 /// @brief The files of @p result: summary.json always, then the formats of result.spec.outputs.files that apply
 /// (route files only with a path; the goto list only with geographic coordinates), each also as
