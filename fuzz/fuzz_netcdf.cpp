@@ -25,8 +25,6 @@
 #include <string>
 
 #include <netcdf.h>
-#include <sanitizer/lsan_interface.h>
-
 #include "netcdf/NetCdfInternal.h"
 #include "FuzzUtil.h"
 #include "ompl_glider/Exception.h"
@@ -131,16 +129,27 @@ bool absurdClassicHeader(const std::uint8_t *data, std::size_t size)
     return absurd;
 }
 
+}  // namespace
+
+// LeakSanitizer's interface, weak: a fuzzer built without AddressSanitizer (OMPL_GLIDER_BUILD_FUZZERS alone) has no
+// leak checker to switch off, and links
+extern "C" __attribute__((weak)) void __lsan_disable();
+extern "C" __attribute__((weak)) void __lsan_enable();
+
+namespace
+{
 /// Leak detection off for the life of the object (allocations made meanwhile are never reported).
 struct LeaksIgnored
 {
     LeaksIgnored()
     {
-        __lsan_disable();
+        if (__lsan_disable)
+            __lsan_disable();
     }
     ~LeaksIgnored()
     {
-        __lsan_enable();
+        if (__lsan_enable)
+            __lsan_enable();
     }
 };
 

@@ -338,7 +338,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     check.extremalTime = sol.found ? sol.travelTime : kInf;
     PlannedPath best = std::move(r);
     const double planned = best.solved ? best.travelTime : kInf;
-    PlannedPath base; // what a candidate route inherits from the planner's outcome
+    PlannedPath base;  // what a candidate route inherits from the planner's outcome
     base.departure = departure;
     base.speed = best.speed;
     base.planner = best.planner;

@@ -14,6 +14,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentField.h"
+#include "../io/TextUtil.h"
 #include "MapPainter.h"
 #include "OutputDirectory.h"
 
@@ -35,21 +36,6 @@ void selectFont(cairo_t *cr, double size, bool bold)
 /// outlines: attached to the SVG surface as user data; the text helpers write to it instead of drawing.
 cairo_user_data_key_t svgTextKey;
 
-std::string xmlEscaped(const std::string &s)
-{
-    std::string out;
-    for (char ch : s)
-        switch (ch)
-        {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += ch;
-        }
-    return out;
-}
-
 /// Writes @p s as an SVG <text> element when @p cr draws on an SVG surface with a text buffer; false otherwise.
 bool svgText(cairo_t *cr, double x, double y, const std::string &s, double size, bool bold, double alignX,
              const Rgba &c, bool halo)
@@ -69,7 +55,7 @@ bool svgText(cairo_t *cr, double x, double y, const std::string &s, double size,
                   halo ? " stroke=\"white\" stroke-opacity=\"0.85\" stroke-width=\"3\" stroke-linejoin=\"round\" "
                          "paint-order=\"stroke\""
                        : "");
-    *out += head + xmlEscaped(s) + "</text>\n";
+    *out += head + text::xmlEscaped(s) + "</text>\n";
     return true;
 }
 
@@ -77,7 +63,7 @@ bool svgText(cairo_t *cr, double x, double y, const std::string &s, double size,
 double textAdvance(cairo_t *cr, const std::string &s)
 {
     cairo_text_extents_t ext;
-    cairo_text_extents(cr, s.c_str(), &ext);
+    cairo_text_extents(cr, text::validUtf8(s).c_str(), &ext);  // cairo stops drawing after invalid UTF-8
     return ext.x_advance;
 }
 }  // namespace
@@ -135,9 +121,10 @@ void setDash(cairo_t *cr, bool dashed)
     }
 }
 
-void haloText(cairo_t *cr, double x, double y, const std::string &s, const Rgba &c, double size, bool bold,
+void haloText(cairo_t *cr, double x, double y, const std::string &raw, const Rgba &c, double size, bool bold,
               double alignX)
 {
+    const std::string s = text::validUtf8(raw);  // cairo stops drawing after invalid UTF-8
     if (svgText(cr, x, y, s, size, bold, alignX, c, true))
         return;
     selectFont(cr, size, bold);
@@ -154,8 +141,10 @@ void haloText(cairo_t *cr, double x, double y, const std::string &s, const Rgba 
     cairo_new_path(cr);  // show_text leaves a current point: do not let the next arc connect to it
 }
 
-void plainText(cairo_t *cr, double x, double y, const std::string &s, double size, bool bold, double alignX, Rgba c)
+void plainText(cairo_t *cr, double x, double y, const std::string &raw, double size, bool bold, double alignX,
+               Rgba c)
 {
+    const std::string s = text::validUtf8(raw);  // cairo stops drawing after invalid UTF-8
     if (svgText(cr, x, y, s, size, bold, alignX, c, false))
         return;
     selectFont(cr, size, bold);

@@ -10,6 +10,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "../io/NumberText.h"
+#include "../io/TextUtil.h"
 
 namespace ompl_glider
 {
@@ -417,22 +418,6 @@ GotoList gotoList(const MissionResult &r, const MissionProblem *problem)
 
 namespace
 {
-/// Text for XML character data and attributes.
-std::string xmlEscaped(const std::string &t)
-{
-    std::string out;
-    for (char c : t)
-        switch (c)
-        {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    return out;
-}
-
 /// A KML coordinates list "lon,lat,0 lon,lat,0 ...".
 std::string kmlCoordinates(const std::vector<LonLat> &line)
 {
@@ -474,7 +459,7 @@ std::string routeKml(const MissionResult &r, const MissionProblem *problem)
     if (!geographic(r))
         throw Error(r.spec.file + ": route.kml needs longitudes and latitudes (give a 'projection')");
     std::string k = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<kml xmlns=\"http://www.opengis.net/kml/2.2\">\n"
-                    "<Document>\n<name>" + xmlEscaped(r.spec.name) + "</name>\n"
+                    "<Document>\n<name>" + text::xmlEscaped(r.spec.name) + "</name>\n"
                     "<Style id=\"route\"><LineStyle><color>ff0000ff</color><width>3</width></LineStyle></Style>\n"
                     "<Style id=\"isochrone\"><LineStyle><color>ff00aaff</color><width>1</width></LineStyle></Style>\n";
     const RouteLine route = routeLine(r, problem, true);
@@ -487,7 +472,7 @@ std::string routeKml(const MissionResult &r, const MissionProblem *problem)
         (units.length ? text::number(r.plan.pathLength * r.spec.metresPerUnit() / 1000.0, 6) + " km" :
                         text::number(r.plan.pathLength));
     const bool stamped = !r.waypoints.empty() && gregorianDates(r, r.waypoints.front().iso);
-    k += "<Placemark>\n<name>route</name>\n<description>" + xmlEscaped(about) +
+    k += "<Placemark>\n<name>route</name>\n<description>" + text::xmlEscaped(about) +
          (r.plan.headingRoute() ? " (the flown track of held headings)" : "") +
          (!stamped && !r.waypoints.empty() && !r.waypoints.front().iso.empty()
               ? "; the waypoints' dates are in their descriptions, without KML time stamps (not Gregorian dates of "
@@ -504,11 +489,11 @@ std::string routeKml(const MissionResult &r, const MissionProblem *problem)
                                      : i == 0                     ? "start"
                                      : i + 1 == r.waypoints.size() ? "goal"
                                                                   : "WP " + std::to_string(i);
-            k += "<Placemark>\n<name>" + xmlEscaped(name) + "</name>\n";
+            k += "<Placemark>\n<name>" + text::xmlEscaped(name) + "</name>\n";
             if (gregorianDates(r, w.iso))
                 k += "<TimeStamp><when>" + w.iso + "</when></TimeStamp>\n";
             k += "<description>" +
-                 xmlEscaped(w.iso.empty() ? "t = " + text::number(w.time, 10) : (i == 0 ? "departure " : "arrival ") + w.iso) +
+                 text::xmlEscaped(w.iso.empty() ? "t = " + text::number(w.time, 10) : (i == 0 ? "departure " : "arrival ") + w.iso) +
                  "</description>\n<Point><coordinates>" + kmlCoordinates({w.lonLat}) + "</coordinates></Point>\n"
                  "</Placemark>\n";
         }
@@ -526,9 +511,9 @@ std::string routeKml(const MissionResult &r, const MissionProblem *problem)
         for (std::size_t i = l.firstPoint; i <= l.lastPoint && i < r.waypoints.size(); ++i)
             line.push_back(r.waypoints[i].lonLat);
         const double legTime = l.plan.travelTime;
-        k += "<Folder>\n<name>" + xmlEscaped("leg " + std::to_string(l.index + 1) + ": " + l.from + " to " + l.to) +
-             "</name>\n<Placemark>\n<name>" + xmlEscaped("leg " + std::to_string(l.index + 1)) + "</name>\n<description>" +
-             xmlEscaped("travel time " + (units.time ? text::durationText(legTime * r.spec.timeUnitSeconds)
+        k += "<Folder>\n<name>" + text::xmlEscaped("leg " + std::to_string(l.index + 1) + ": " + l.from + " to " + l.to) +
+             "</name>\n<Placemark>\n<name>" + text::xmlEscaped("leg " + std::to_string(l.index + 1)) + "</name>\n<description>" +
+             text::xmlEscaped("travel time " + (units.time ? text::durationText(legTime * r.spec.timeUnitSeconds)
                                                      : text::number(legTime)) +
                         (l.stay > 0.0 ? ", then a stay at " + l.to : std::string())) +
              "</description>\n<styleUrl>#route</styleUrl>\n" + kmlLines(splitAtAntimeridian(line)) + "\n</Placemark>\n";
@@ -546,7 +531,7 @@ std::string routeKml(const MissionResult &r, const MissionProblem *problem)
                     lines.push_back(part);
             if (lines.empty())
                 continue;
-            k += "<Placemark>\n<name>" + xmlEscaped(c.iso.empty() ? "t = " + text::number(c.time, 10) : c.iso) +
+            k += "<Placemark>\n<name>" + text::xmlEscaped(c.iso.empty() ? "t = " + text::number(c.time, 10) : c.iso) +
                  "</name>\n<styleUrl>#isochrone</styleUrl>\n<MultiGeometry>";
             for (const auto &line : lines)
                 k += kmlLines({line});

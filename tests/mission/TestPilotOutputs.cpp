@@ -673,3 +673,48 @@ TEST(PilotLand, ZeroVelocityIsLandOnlyWhereTheFileMarksNoLand)
     o.zeroVelocityLand = false;
     EXPECT_EQ(loadNetCdfCurrents((dir / "plain.nc").string(), o).zeroLandNodes, 0u);
 }
+
+TEST(PilotKml, ANameOfAnyBytesStillMakesWellFormedFiles)
+{
+    // a mission name in Latin-1 with a control character and a line break: route.kml stays well-formed UTF-8 XML
+    // (GDAL/OGR's KML driver, expat underneath, reads it), the name's bad bytes as U+FFFD; summary.json and the map
+    // are written too
+    const fs::path dir = scratch("kml_bytes");
+    MissionSpec m = parseMission(R"(units: {length_m: 10000, time_s: 3600}
+epoch: "2026-06-01T00:00:00Z"
+projection: {lon0: -70.0, lat0: 36.0}
+current: {type: meandering_jet}
+region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}
+start: {x: 1, y: -3}
+goal: {x: 8, y: 3}
+vehicle: {speed: 0.5}
+outputs: {files: [path, geojson, summary, map]}
+)",
+                                 "bytes.yaml");
+    m.name = std::string("Gl\xe9ne\x01 fjord\n<b>");
+    m.outputs.directory = (dir / "out").string();
+    const MissionProblem problem(m);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    writeOutputs(r, problem);
+    const std::string kml = readText(dir / "out" / "route.kml");
+    EXPECT_HAS(kml, "<name>Gl\xEF\xBF\xBDne  fjord\n&lt;b&gt;</name>");
+    GDALAllRegister();
+    GDALDataset *ds = static_cast<GDALDataset *>(
+        GDALOpenEx((dir / "out" / "route.kml").c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
+    ASSERT_NE(ds, nullptr) << "route.kml is not well-formed:\n" << kml.substr(0, 400);
+    std::size_t features = 0;
+    for (OGRLayer *layer : ds->GetLayers())
+        features += static_cast<std::size_t>(layer->GetFeatureCount());
+    GDALClose(ds);
+    EXPECT_EQ(features, r.waypoints.size() + 1);  // the waypoints and the route line
+    const nlohmann::json summary = nlohmann::json::parse(readText(dir / "out" / "summary.json"));
+    EXPECT_EQ(summary["mission"].get<std::string>().substr(0, 5), "Gl\xEF\xBF\xBD");
+    EXPECT_TRUE(fs::exists(dir / "out" / "map.png"));
+    // map.svg: the same name in its title, well-formed (the SVG driver of GDAL is not built in Debian's: the
+    // bytes are checked here, one character at a time, against UTF-8's own rules)
+    const std::string svg = readText(dir / "out" / "map.svg");
+    EXPECT_HAS(svg, ">Gl\xEF\xBF\xBDne  fjord\n&lt;b&gt;");
+    EXPECT_HAS_NOT(svg, "\xe9");
+    EXPECT_HAS_NOT(svg, "\x01");
+}
