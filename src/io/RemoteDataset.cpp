@@ -20,6 +20,7 @@
 
 #include "NumberText.h"
 #include "RemoteRecord.h"
+#include "TextUtil.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
@@ -45,9 +46,51 @@ std::string cacheName(const std::string &url)
     return stem + "-" + hex + ".nc";
 }
 
+/// Failures worth another attempt: the network, the server, and an answer that is malformed or cut short (a slow
+/// answer cut by the time limit, a server that closes the connection early).
 bool transient(int status)
 {
-    return status == NC_EIO || status == NC_ECURL || status == NC_EDAPSVC;
+    return status == NC_EIO || status == NC_ECURL || status == NC_EDAPSVC || status == NC_EDAS || status == NC_EDDS ||
+           status == NC_EDATADDS;
+}
+
+/// The text NetCDF-C's DAP client prints for an answer shorter than its description: it then returns the values
+/// zero-filled with NC_NOERR, so the text is the only sign.
+bool cutShort(const std::string &log)
+{
+    return log.find("apparently too short") != std::string::npos;
+}
+
+/// Runs @p call with the process's standard error taken into a temporary file, which is returned in @p log; what it
+/// caught is written on to standard error unless it is NetCDF-C's note of an answer cut short (then the caller says
+/// what happened). One call at a time (the error stream is the process's).
+int callWatchingLog(const std::function<int()> &call, std::string &log)
+{
+    static std::mutex m;
+    const std::lock_guard<std::mutex> lock(m);
+    std::fflush(stderr);
+    std::FILE *tmp = std::tmpfile();
+    const int saved = tmp ? ::dup(STDERR_FILENO) : -1;
+    if (saved < 0 || ::dup2(::fileno(tmp), STDERR_FILENO) < 0)
+    {
+        if (saved >= 0)
+            ::close(saved);
+        if (tmp)
+            std::fclose(tmp);
+        return call();  // no temporary file: unwatched (the complaint reaches the terminal)
+    }
+    const int st = call();
+    std::fflush(stderr);
+    ::dup2(saved, STDERR_FILENO);
+    ::close(saved);
+    std::rewind(tmp);
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, tmp)) > 0;)
+        log.append(buf, n);
+    std::fclose(tmp);
+    if (!log.empty() && !cutShort(log))
+        (void)!::write(STDERR_FILENO, log.data(), log.size());
+    return st;
 }
 
 /// True when the block at (s, c) lies inside the block at (bs, bc).
@@ -322,13 +365,19 @@ int RemoteDataset::attempt(const std::string &what, const std::function<int()> &
     for (int k = 0;; ++k)
     {
         remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { ++f.requests; });
-        const int st = call();
+        std::string log;
+        int st = callWatchingLog(call, log);
+        const bool cut = cutShort(log);
+        if (cut)
+            st = NC_EDATADDS;  // zero-filled values, never planned on
         if (st == NC_NOERR)
             return st;
         if (!transient(st) || k >= access_.retries)
         {
-            std::string why = nc_strerror(st);
-            if (st == NC_EIO || st == NC_ECURL)
+            std::string why = cut ? "the server's answer was cut short (NetCDF-C: \"" + text::trim(log) +
+                                        "\"): its values are not used"
+                                  : nc_strerror(st);
+            if (st == NC_EIO || st == NC_ECURL || st == NC_EDAS || st == NC_EDDS || (st == NC_EDATADDS && !cut))
                 why += limitInForce() > 0 ? " (no answer within the request time limit of " +
                                                 std::to_string(limitInForce().load()) +
                                                 " s, or the server cannot be reached)"

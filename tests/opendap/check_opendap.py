@@ -18,7 +18,8 @@ island of fill values) is written with NetCDF-C (python3-netcdf4) and served. Ch
   9. a real model file (NCL's POP sample: curvilinear, global, cm/s, tracer land) from its URL plans as the file;
  10. a URL with a user and a password: the password reaches no output, message or cache name;
  11. another URL's cache file copied into place is not used (the URL's own travel time, the file replaced);
- 12. a forecast republished at the URL with other dates is refused when a plan needs more than the cache holds.
+ 12. a forecast republished at the URL with other dates is refused when a plan needs more than the cache holds;
+ 13. data answers cut short (the length header says so, or promises more) are refused, never planned on.
 """
 import json
 import math
@@ -294,6 +295,21 @@ def main():
               "time[" in p_r2.stderr, "republished with other dates: exit 2 naming the URL, the cache file and the "
               "date (exit %d: %s)" % (p_r2.returncode, p_r2.stderr[-400:]))
         check(not os.path.exists(os.path.join(work, "o_repub_2")), "republished: no output directory")
+
+        # 13. data answers cut short (NetCDF-C fills the missing values with zeros and returns success): refused,
+        # naming the URL, after the retries; whether the length header gives the cut length or promises the whole
+        for mode in ("short", "cut"):
+            cut_srv, cut_port = start_server(root, os.path.join(work, "cut_%s.jsonl" % mode), "--truncate", "0.3",
+                                             "--truncate-mode", mode)
+            servers.append(cut_srv)
+            cut_url = "http://127.0.0.1:%d/forecast.nc" % cut_port
+            p_cut, _ = plan(glider, ["--currents", cut_url, "--retries", "1", "--out",
+                                     os.path.join(work, "o_cut_" + mode)] + trip)
+            check(p_cut.returncode == 2 and cut_url in p_cut.stderr and "cut short" in p_cut.stderr and
+                  "2 attempts" in p_cut.stderr, "answers cut short (%s): exit 2 naming the URL after 2 attempts "
+                  "(exit %d: %s)" % (mode, p_cut.returncode, p_cut.stderr[-300:]))
+            check(not os.path.exists(os.path.join(work, "o_cut_" + mode)), "answers cut short: no output directory")
+            stop(cut_srv)
 
         # 7. a mission file whose current.file is the URL (its region: the whole grid; no cache)
         mission = os.path.join(work, "m.yaml")

@@ -287,6 +287,18 @@ class Handler(BaseHTTPRequestHandler):
             self.send_header("XDAP", "2.0")
             for k, v in headers.items():
                 self.send_header(k, v)
+            if cfg.truncate > 0 and desc == "dods_data":
+                # a data answer cut short: the XDR part ends early, the length header says so ("short") or
+                # promises the whole ("cut": the connection closes before it)
+                cut = body[:len(body) - max(1, int(cfg.truncate * data_bytes))]
+                self.send_header("Content-Length", str(len(cut) if cfg.truncate_mode == "short" else len(body)))
+                self.end_headers()
+                if send_body:
+                    self.wfile.write(cut)
+                self.wfile.flush()
+                self.close_connection = True
+                self.server.record(dict(rec, truncated=len(body) - len(cut)))
+                return
             self.send_header("Content-Length", str(len(body)))
             self.end_headers()
             if send_body:
@@ -407,6 +419,10 @@ def main(argv=None):
     ap.add_argument("--log", help="append one JSON line per request to this file")
     ap.add_argument("--delay", type=float, default=0.0, help="sleep this many seconds before each .dods answer")
     ap.add_argument("--fail-status", type=int, default=0, help="answer every request with this HTTP status")
+    ap.add_argument("--truncate", type=float, default=0.0,
+                    help="cut this fraction of the XDR data off each .dods answer (0: whole answers)")
+    ap.add_argument("--truncate-mode", choices=("short", "cut"), default="short",
+                    help="short: the Content-Length header gives the cut length; cut: it promises the whole")
     ap.add_argument("--max-requests", type=int, default=0, help="exit after this many requests (0: no limit)")
     ap.add_argument("--lifetime", type=float, default=600.0, help="exit after this many seconds (default 600)")
     cfg = ap.parse_args(argv)
