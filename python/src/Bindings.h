@@ -7,6 +7,8 @@
 #include <pybind11/pybind11.h>
 
 #include "ompl_glider/mission/MissionProblem.h"
+#include <functional>
+
 #include "ompl_glider/mission/Planning.h"
 
 namespace ompl_glider_py
@@ -17,6 +19,11 @@ struct PyResult
     std::shared_ptr<const ompl_glider::MissionProblem> problem;
     ompl_glider::MissionResult result;
 };
+
+/// @brief Runs @p work in a thread of its own, the GIL released, while the calling thread lets Python handle its
+/// signals every 50 ms: Ctrl-C asks the plans and fetches to stop (StopRequest.h) and raises KeyboardInterrupt once
+/// @p work has returned; an exception of @p work is rethrown. Called with the GIL held.
+void runStoppable(const std::function<void()> &work);
 
 /// @brief Binds MissionSpec (as Mission), the ways to build one and the keyword overrides.
 void bindMission(pybind11::module_ &m);

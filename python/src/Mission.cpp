@@ -118,7 +118,9 @@ MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std:
         const auto [a, b, c, d] = *region;
         in.region = Box{a, c, b, d};  // (lon_min, lat_min, lon_max, lat_max) as --region
     }
-    return forecastMission(in);
+    MissionSpec out;  // the forecast's description is read here (a URL: fetched, stopped by Ctrl-C)
+    runStoppable([&] { out = forecastMission(in); });
+    return out;
 }
 
 /// A polygon of the `forbidden` keyword: a dict with "points" and optional "name", "kind", "lonlat", "windows"

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -231,48 +232,11 @@ std::shared_ptr<PyResult> run(const MissionSpec &spec, const py::object &progres
     options.speeds = std::move(speeds);
     options.optimum = optimum;
     options.progress = progressSink(progress, raised, guard);
-    // the plan runs in a thread of its own while this one, every 50 ms, lets Python handle its signals: Ctrl-C
-    // (KeyboardInterrupt, raised by Python's handler on the main thread) asks the plans to stop (StopRequest.h), and
-    // is raised here once the plan has returned, within a moment instead of when the plan would have finished
-    std::exception_ptr failed;
-    std::atomic<bool> done{false};
-    std::optional<py::error_already_set> interrupted;
-    {
-        const py::gil_scoped_release release;
-        std::thread worker([&] {
-            try
-            {
-                out->problem = std::make_shared<const MissionProblem>(spec);
-                out->result = runMission(*out->problem, options);
-            }
-            catch (...)
-            {
-                failed = std::current_exception();
-            }
-            done.store(true);
-        });
-        while (!done.load())
-        {
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
-            if (interrupted)
-                continue;
-            const py::gil_scoped_acquire gil;
-            if (PyErr_CheckSignals() != 0)
-            {
-                interrupted.emplace();  // the KeyboardInterrupt (or the handler's exception), kept for after the run
-                requestStop();
-            }
-        }
-        worker.join();
-        options.progress = nullptr;
-    }
-    if (interrupted)
-    {
-        clearStop();
-        throw *interrupted;
-    }
-    if (failed)
-        std::rethrow_exception(failed);
+    runStoppable([&] {
+        out->problem = std::make_shared<const MissionProblem>(spec);
+        out->result = runMission(*out->problem, options);
+    });
+    options.progress = nullptr;
     if (raised)
         throw *raised;
     const PlannedPath &p = out->result.plan;
@@ -294,8 +258,7 @@ runFleetPy(const MissionSpec &spec, const py::object &progress, const std::strin
     std::map<std::string, std::shared_ptr<PyResult>> byName;
     std::vector<FleetGlider> gliders;
     std::vector<std::string> written;
-    {
-        const py::gil_scoped_release release;
+    runStoppable([&] {
         const auto start = std::chrono::steady_clock::now();
         const FleetKeep keep = [&](const MissionResult &result, const MissionProblem &problem) {
             auto r = std::make_shared<PyResult>();
@@ -311,13 +274,13 @@ runFleetPy(const MissionSpec &spec, const py::object &progress, const std::strin
         for (const FleetGlider &g : gliders)
             if (!g.row.badInput.empty())
                 throw Error("glider '" + g.row.name + "': " + g.row.badInput + ": " + g.row.reason);
-        if (!directory.empty())
+        if (!directory.empty() && !stopRequested())  // Ctrl-C: nothing written (writeOutputFiles checks too)
         {
             const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             written = writeOutputFiles(directory, fleetOutputFiles(spec, gliders, wall));
         }
-        options.progress = nullptr;
-    }
+    });
+    options.progress = nullptr;
     if (raised)
         throw *raised;
     std::vector<std::pair<std::string, std::shared_ptr<PyResult>>> out;
@@ -333,6 +296,49 @@ std::vector<std::string> write(const PyResult &r, const std::string &directory)
     return writeOutputFiles(directory, outputFiles(r.result, *r.problem));
 }
 }  // namespace
+
+// KeyboardInterrupt is raised by Python's handler on the main thread (this one); it is raised here once the work
+// has returned, within a moment instead of when the work would have finished
+void runStoppable(const std::function<void()> &work)
+{
+    std::exception_ptr failed;
+    std::atomic<bool> done{false};
+    std::optional<py::error_already_set> interrupted;
+    {
+        const py::gil_scoped_release release;
+        std::thread worker([&] {
+            try
+            {
+                work();
+            }
+            catch (...)
+            {
+                failed = std::current_exception();
+            }
+            done.store(true);
+        });
+        while (!done.load())
+        {
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            if (interrupted)
+                continue;
+            const py::gil_scoped_acquire gil;
+            if (PyErr_CheckSignals() != 0)
+            {
+                interrupted.emplace();  // the KeyboardInterrupt (or the handler's exception), kept for after the run
+                requestStop();
+            }
+        }
+        worker.join();
+    }
+    if (interrupted)
+    {
+        clearStop();
+        throw *interrupted;
+    }
+    if (failed)
+        std::rethrow_exception(failed);
+}
 
 void bindResult(py::module_ &m)
 {

@@ -22,6 +22,7 @@
 #include "RemoteRecord.h"
 #include "TextUtil.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/StopRequest.h"
 
 namespace ompl_glider
 {
@@ -386,7 +387,13 @@ int RemoteDataset::attempt(const std::string &what, const std::function<int()> &
                 why += "; " + std::to_string(k + 1) + (k == 0 ? " attempt" : " attempts");
             throw Error(who() + ": " + what + ": " + why);
         }
-        std::this_thread::sleep_for(std::chrono::seconds(k + 1));
+        // the pause before the next attempt, cut short by a stop request (Python's Ctrl-C)
+        const auto resume = std::chrono::steady_clock::now() + std::chrono::seconds(k + 1);
+        while (std::chrono::steady_clock::now() < resume && !stopRequested())
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        if (stopRequested())
+            throw Error(who() + ": " + what + ": stopped (a stop was requested) after " + std::to_string(k + 1) +
+                        (k == 0 ? " attempt: " : " attempts: ") + nc_strerror(st));
     }
 }
 

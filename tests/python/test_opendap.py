@@ -81,3 +81,53 @@ def test_result_shows_its_map_inline():
     assert len(data["routes"][0]["points"]) == len(r.route.x)
     frame = r._repr_html_()
     assert frame.startswith("<iframe") and "srcdoc=" in frame and "&lt;!DOCTYPE html&gt;" in frame
+
+
+def test_ctrl_c_stops_a_fetch_between_its_retries(tmp_path):
+    # a server that answers every request with HTTP 500 and 8 retries (pauses of 1 + 2 + ... + 8 s): Ctrl-C a second
+    # in raises KeyboardInterrupt within a few seconds, not after the retries
+    import threading
+
+    root = tmp_path / "srv"
+    root.mkdir()
+    port_file = tmp_path / "port"
+    proc = subprocess.Popen([sys.executable, SERVER, "--root", str(root), "--port", "0", "--port-file", str(port_file),
+                             "--fail-status", "500", "--lifetime", "100"], start_new_session=True,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        deadline = time.monotonic() + 30
+        while not port_file.exists():
+            assert proc.poll() is None and time.monotonic() < deadline, "the DAP2 server did not start"
+            time.sleep(0.05)
+        url = "http://127.0.0.1:%s/f.nc" % port_file.read_text().strip()
+        ompl_glider.set_remote_access(retries=8)
+        timer = threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT))
+        start = time.monotonic()
+        timer.start()
+        with pytest.raises(KeyboardInterrupt):
+            ompl_glider.plan(field=ompl_glider.Field.netcdf(url), start=(-74.2, 30.4), goal=(-71.6, 31.2))
+        assert time.monotonic() - start < 6.0
+        timer.join()
+    finally:
+        ompl_glider.set_remote_access()
+        os.killpg(proc.pid, signal.SIGTERM)
+        proc.wait(10)
+
+
+def test_ctrl_c_during_a_fleet_writes_no_folder(tmp_path):
+    # a fleet of fine level sets (about a minute): Ctrl-C a second in raises KeyboardInterrupt at once, and out_dir
+    # is not written
+    import threading
+
+    mission = {"current": {"type": "meandering_jet"}, "region": {"x_min": 0, "x_max": 10, "y_min": -4, "y_max": 4},
+               "vehicle": {"speed": 0.5}, "planner": {"name": "LevelSet", "parameters": {"resolution": 0.01}},
+               "fleet": [{"name": "alpha", "start": {"x": 1, "y": -3}, "goal": {"x": 8, "y": 3}},
+                         {"name": "bravo", "start": {"x": 1, "y": 3}, "goal": {"x": 8, "y": -3}}]}
+    timer = threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        ompl_glider.plan_fleet(mission, out_dir=tmp_path / "fleet")
+    assert time.monotonic() - start < 15.0
+    timer.join()
+    assert not (tmp_path / "fleet").exists()
