@@ -51,7 +51,7 @@ namespace remote_detail
 std::size_t newFetchRecord(const std::string &source)
 {
     std::lock_guard<std::mutex> lock(recordMutex());
-    record().push_back(RemoteFetch{source, "", 0, 0, 0, false, ""});
+    record().push_back(RemoteFetch{source, "", 0, 0, 0, false, "", ""});
     return record().size() - 1;
 }
 
