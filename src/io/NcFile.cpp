@@ -8,6 +8,10 @@
 #include "RemoteRecord.h"
 #include "ompl_glider/io/MemoryDataset.h"
 #include "TextUtil.h"
+#include "ompl_glider/Config.h"
+#if OMPL_GLIDER_WITH_MISSION
+#include "GdalGrid.h"
+#endif
 
 namespace ompl_glider
 {
@@ -28,6 +32,13 @@ void quietHdf5OnThisThread()
 
 NcFile::NcFile(const std::string &path) : path_(path)
 {
+#if OMPL_GLIDER_WITH_MISSION
+    if (isGdalSource(path))
+    {
+        gdal_ = std::make_shared<GdalGrid>(path);
+        return;
+    }
+#endif
     quietHdf5OnThisThread();
     const RemoteAccess access = remoteAccess();
     prepareNetcdfAccess(access);
@@ -60,6 +71,8 @@ NcFile::NcFile(const std::string &path) : path_(path)
 
 NcFile::~NcFile()
 {
+    if (gdal_)
+        return;
     if (remote_)
         remote_->flush();  // the dataset stays open for the process's next reader
     else
@@ -68,7 +81,7 @@ NcFile::~NcFile()
 
 Error NcFile::error(const std::string &what) const
 {
-    return Error((remote_ ? remote_->who() : "NetCDF file '" + path_ + "'") + ": " + what);
+    return Error((gdal_ ? gdal_->who() : remote_ ? remote_->who() : "NetCDF file '" + path_ + "'") + ": " + what);
 }
 
 void NcFile::check(int status, const std::string &what) const
@@ -79,6 +92,8 @@ void NcFile::check(int status, const std::string &what) const
 
 int NcFile::nvars() const
 {
+    if (gdal_)
+        return gdal_->nvars();
     int n = 0;
     check(nc_inq_nvars(id_, &n), "inquire variables");
     return n;
@@ -86,6 +101,8 @@ int NcFile::nvars() const
 
 std::string NcFile::varName(int var) const
 {
+    if (gdal_)
+        return gdal_->varName(var);
     char buf[NC_MAX_NAME + 1];
     check(nc_inq_varname(id_, var, buf), "inquire variable name");
     return buf;
@@ -93,6 +110,8 @@ std::string NcFile::varName(int var) const
 
 std::string NcFile::dimName(int dim) const
 {
+    if (gdal_)
+        return gdal_->dimName(dim);
     char buf[NC_MAX_NAME + 1];
     check(nc_inq_dimname(id_, dim, buf), "inquire dimension name");
     return buf;
@@ -100,6 +119,8 @@ std::string NcFile::dimName(int dim) const
 
 std::size_t NcFile::dimLen(int dim) const
 {
+    if (gdal_)
+        return gdal_->dimLen(dim);
     std::size_t n = 0;
     check(nc_inq_dimlen(id_, dim, &n), "inquire dimension length");
     return n;
@@ -107,6 +128,8 @@ std::size_t NcFile::dimLen(int dim) const
 
 std::optional<int> NcFile::findVar(const std::string &name) const
 {
+    if (gdal_)
+        return gdal_->findVar(name);
     int v;
     if (nc_inq_varid(id_, name.c_str(), &v) == NC_NOERR)
         return v;
@@ -115,6 +138,8 @@ std::optional<int> NcFile::findVar(const std::string &name) const
 
 std::vector<int> NcFile::varDims(int var) const
 {
+    if (gdal_)
+        return gdal_->varDims(var);
     int nd = 0;
     check(nc_inq_varndims(id_, var, &nd), "inquire dimensions of '" + varName(var) + "'");
     std::vector<int> d(static_cast<std::size_t>(nd));
@@ -125,6 +150,8 @@ std::vector<int> NcFile::varDims(int var) const
 
 nc_type NcFile::varType(int var) const
 {
+    if (gdal_)
+        return gdal_->varType(var);
     nc_type t;
     check(nc_inq_vartype(id_, var, &t), "inquire type of '" + varName(var) + "'");
     return t;
@@ -132,6 +159,8 @@ nc_type NcFile::varType(int var) const
 
 std::optional<std::string> NcFile::attText(int var, const char *name) const
 {
+    if (gdal_)
+        return gdal_->attText(var, name);
     nc_type t;
     std::size_t len;
     if (nc_inq_att(id_, var, name, &t, &len) != NC_NOERR)
@@ -156,11 +185,18 @@ std::optional<std::string> NcFile::attText(int var, const char *name) const
 
 std::vector<double> NcFile::attDoubles(int var, const char *name) const
 {
-    nc_type t;
-    std::size_t len;
-    if (nc_inq_att(id_, var, name, &t, &len) != NC_NOERR)
+    nc_type t = NC_DOUBLE;
+    std::size_t len = 0;
+    bool gdalText = false;
+    if (gdal_)
+    {
+        std::vector<double> v = gdal_->attDoubles(var, name, gdalText);
+        if (!gdalText)
+            return v;
+    }
+    else if (nc_inq_att(id_, var, name, &t, &len) != NC_NOERR)
         return {};
-    if (t == NC_CHAR || t == NC_STRING)  // CF: these attributes are numbers; text would be ignored in silence
+    if (gdalText || t == NC_CHAR || t == NC_STRING)  // CF: these attributes are numbers; text would be ignored
         throw error((var == NC_GLOBAL ? std::string("global") : "variable '" + varName(var) + "':") +
                     " attribute '" + name + "' is text ('" + attText(var, name).value_or("") +
                     "'); it must be numeric");
@@ -189,7 +225,9 @@ std::vector<double> NcFile::readAll1D(int var) const
 void NcFile::readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
                        double *out) const
 {
-    if (remote_)
+    if (gdal_)
+        gdal_->readBlock(var, start, count, out);
+    else if (remote_)
         remote_->read(var, start, count, out);
     else
         check(nc_get_vara_double(id_, var, start.data(), count.data(), out), "read variable '" + varName(var) + "'");

@@ -28,6 +28,7 @@ namespace netcdf_detail
 
 /// The open file, closed on scope exit; its queries throw Errors that name the file.
 class RemoteDataset;
+class GdalGrid;
 
 class NcFile
 {
@@ -37,7 +38,8 @@ public:
     /// (classicTruncation(); netCDF-4/HDF5 files are not checked).
     /// A URL (isRemoteSource()) is read through NetCDF-C's DAP client as the process's remoteAccess() says
     /// (RemoteDataset.h): its description from the cache file when there is one, its values through
-    /// readBlock()/readAll1D().
+    /// readBlock()/readAll1D(). A Zarr store or a GRIB file (isGdalSource(), GdalGrid.h) is read through GDAL's
+    /// multidimensional API, queried the same way (id() is then -1: no NetCDF group to ask).
     explicit NcFile(const std::string &path);
     ~NcFile();
     NcFile(const NcFile &) = delete;
@@ -79,6 +81,7 @@ private:
     std::string path_;
     int id_{-1};
     std::shared_ptr<RemoteDataset> remote_;           ///< a URL's dataset (null for a file)
+    std::shared_ptr<GdalGrid> gdal_;                  ///< a Zarr store or GRIB file (null for NetCDF)
     std::shared_ptr<const std::string> memory_;      ///< an in-memory dataset's bytes (MemoryDataset.h)
 };
 

@@ -22,4 +22,8 @@ if(OMPL_GLIDER_WITH_MISSION)
   list(APPEND OMPL_GLIDER_SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/Coastline.cpp  # GDAL/OGR
   )
+  if(OMPL_GLIDER_WITH_NETCDF)
+    # Zarr stores and GRIB files through GDAL's multidimensional API, read as NcFile reads NetCDF (GdalGrid.h)
+    list(APPEND OMPL_GLIDER_SOURCES ${CMAKE_CURRENT_LIST_DIR}/GdalGrid.cpp)
+  endif()
 endif()

@@ -84,7 +84,7 @@ std::string flagMessage(std::string what, const ForecastInput &q)
     return what;
 }
 
-/// The forecast's files (file or files, each an existing regular file).
+/// The forecast's files (file or files, each an existing regular file, or a folder: a Zarr store).
 /// @throws Error when both or a missing file are given.
 std::vector<std::string> forecastFiles(const ForecastInput &q)
 {
@@ -94,7 +94,7 @@ std::vector<std::string> forecastFiles(const ForecastInput &q)
     const std::vector<std::string> files = q.current.forecastFiles();
     std::error_code ec;
     for (const std::string &p : files)
-        if (!isRemoteSource(p) && !isMemoryDataset(p) && !fs::is_regular_file(p, ec))
+        if (!isRemoteSource(p) && !isMemoryDataset(p) && !fs::is_regular_file(p, ec) && !fs::is_directory(p, ec))
             throw Error("--currents: cannot open '" + p + "' (no such file)");
     return files;
 }

@@ -1,0 +1,289 @@
+// A gridded dataset through GDAL's multidimensional API (see GdalGrid.h).
+#include "GdalGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+
+#include <gdal_priv.h>
+
+#include "NumberText.h"
+#include "TextUtil.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/io/RemoteSource.h"
+
+namespace ompl_glider
+{
+namespace netcdf_detail
+{
+namespace
+{
+bool endsWith(const std::string &s, const std::string &tail)
+{
+    return s.size() >= tail.size() && text::lower(s.substr(s.size() - tail.size())) == tail;
+}
+
+bool isUrl(const std::string &s)
+{
+    return s.rfind("http://", 0) == 0 || s.rfind("https://", 0) == 0;
+}
+
+std::string withoutSlash(std::string s)
+{
+    while (s.size() > 1 && s.back() == '/')
+        s.pop_back();
+    return s;
+}
+
+bool isGribFile(const std::string &path)
+{
+    for (const char *ext : {".grib2", ".grb2", ".grib", ".grb"})
+        if (endsWith(path, ext))
+            return true;
+    std::error_code ec;
+    if (isUrl(path) || !std::filesystem::is_regular_file(path, ec))
+        return false;
+    char magic[4] = {};
+    std::ifstream in(path, std::ios::binary);
+    return in.read(magic, 4) && std::memcmp(magic, "GRIB", 4) == 0;
+}
+
+/// GDAL's HTTP settings from the process's remote access (RemoteSource.h): the request time limit and the retries.
+void applyRemoteAccess()
+{
+    const RemoteAccess a = remoteAccess();
+    const std::string limit = std::to_string(std::max(1L, std::lround(a.requestTimeout)));
+    CPLSetConfigOption("GDAL_HTTP_TIMEOUT", limit.c_str());
+    CPLSetConfigOption("GDAL_HTTP_CONNECTTIMEOUT", limit.c_str());
+    CPLSetConfigOption("GDAL_HTTP_MAX_RETRY", std::to_string(a.retries).c_str());
+    CPLSetConfigOption("GDAL_HTTP_RETRY_DELAY", "1");
+    CPLSetConfigOption("GDAL_DISABLE_READDIR_ON_OPEN", "EMPTY_DIR");  // a store's listing is its .zmetadata
+}
+
+nc_type ncTypeOf(GDALDataType t)
+{
+    switch (t)
+    {
+        case GDT_Byte: return NC_UBYTE;
+        case GDT_UInt16: return NC_USHORT;
+        case GDT_Int16: return NC_SHORT;
+        case GDT_UInt32: return NC_UINT;
+        case GDT_Int32: return NC_INT;
+        case GDT_UInt64: return NC_UINT64;
+        case GDT_Int64: return NC_INT64;
+        case GDT_Float32: return NC_FLOAT;
+        default: return NC_DOUBLE;
+    }
+}
+}  // namespace
+
+bool isZarrStore(const std::string &path)
+{
+    if (path.rfind("ZARR:", 0) == 0 || endsWith(withoutSlash(path), ".zarr"))
+        return true;
+    if (isUrl(path))
+        return false;
+    std::error_code ec;
+    for (const char *marker : {".zgroup", ".zmetadata", ".zarray"})
+        if (std::filesystem::is_regular_file(std::filesystem::path(path) / marker, ec))
+            return true;
+    return false;
+}
+
+bool isGdalSource(const std::string &path)
+{
+    return isZarrStore(path) || isGribFile(path);
+}
+
+struct GdalGrid::Impl
+{
+    std::string path, kind;
+    std::unique_ptr<GDALDataset> dataset;
+    std::shared_ptr<GDALGroup> root;
+    std::vector<std::shared_ptr<GDALMDArray>> vars;
+    std::vector<std::shared_ptr<GDALDimension>> dims;
+    std::map<std::string, int> dimIndex;  // by full name
+    mutable std::mutex mutex;             // GDAL's datasets are not thread-safe
+
+    int dimOf(const std::shared_ptr<GDALDimension> &d)
+    {
+        const auto [it, added] = dimIndex.emplace(d->GetFullName(), static_cast<int>(dims.size()));
+        if (added)
+            dims.push_back(d);
+        return it->second;
+    }
+
+    void addGroup(const std::shared_ptr<GDALGroup> &g)
+    {
+        for (const std::string &name : g->GetMDArrayNames())
+            if (auto a = g->OpenMDArray(name))
+                vars.push_back(a);
+        for (const std::string &name : g->GetGroupNames())  // GRIB: none; a store's subgroups
+            if (auto sub = g->OpenGroup(name))
+                addGroup(sub);
+    }
+
+    std::shared_ptr<GDALAttribute> attribute(int var, const char *name) const
+    {
+        return var == NC_GLOBAL ? root->GetAttribute(name) : vars.at(static_cast<std::size_t>(var))->GetAttribute(name);
+    }
+};
+
+GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
+{
+    Impl &d = *impl_;
+    d.path = path;
+    d.kind = isZarrStore(path) ? "Zarr store" : "GRIB file";
+    GDALAllRegister();
+    std::string open = path;
+    if (isUrl(path))
+    {
+        applyRemoteAccess();
+        open = "/vsicurl/" + path;
+    }
+    if (d.kind == "Zarr store" && open.rfind("ZARR:", 0) != 0)
+        open = "ZARR:\"" + withoutSlash(open) + "\"";
+    CPLErrorReset();
+    d.dataset.reset(GDALDataset::Open(open.c_str(), GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY));
+    if (!d.dataset || !(d.root = d.dataset->GetRootGroup()))
+    {
+        const std::string why = CPLGetLastErrorMsg();
+        throw Error(who() + ": cannot open" + (why.empty() ? std::string() : ": " + why));
+    }
+    d.addGroup(d.root);
+    for (const auto &g : d.root->GetDimensions())
+        d.dimOf(g);
+    for (const auto &a : d.vars)
+        for (const auto &g : a->GetDimensions())
+            d.dimOf(g);
+    if (d.vars.empty())
+        throw Error(who() + ": holds no arrays");
+}
+
+GdalGrid::~GdalGrid() = default;
+
+std::string GdalGrid::who() const
+{
+    return impl_->kind + " '" + withoutCredentials(impl_->path) + "'";
+}
+
+int GdalGrid::nvars() const
+{
+    return static_cast<int>(impl_->vars.size());
+}
+
+std::string GdalGrid::varName(int var) const
+{
+    return impl_->vars.at(static_cast<std::size_t>(var))->GetName();
+}
+
+std::string GdalGrid::dimName(int dim) const
+{
+    return impl_->dims.at(static_cast<std::size_t>(dim))->GetName();
+}
+
+std::size_t GdalGrid::dimLen(int dim) const
+{
+    return static_cast<std::size_t>(impl_->dims.at(static_cast<std::size_t>(dim))->GetSize());
+}
+
+std::optional<int> GdalGrid::findVar(const std::string &name) const
+{
+    for (std::size_t k = 0; k < impl_->vars.size(); ++k)
+        if (impl_->vars[k]->GetName() == name)
+            return static_cast<int>(k);
+    return std::nullopt;
+}
+
+std::vector<int> GdalGrid::varDims(int var) const
+{
+    std::vector<int> out;
+    for (const auto &g : impl_->vars.at(static_cast<std::size_t>(var))->GetDimensions())
+        out.push_back(impl_->dimIndex.at(g->GetFullName()));
+    return out;
+}
+
+nc_type GdalGrid::varType(int var) const
+{
+    const GDALExtendedDataType &t = impl_->vars.at(static_cast<std::size_t>(var))->GetDataType();
+    if (t.GetClass() == GEDTC_STRING)
+        return NC_STRING;
+    return ncTypeOf(t.GetNumericDataType());
+}
+
+std::optional<std::string> GdalGrid::attText(int var, const char *name) const
+{
+    const std::lock_guard<std::mutex> lock(impl_->mutex);
+    if (auto a = impl_->attribute(var, name))
+    {
+        if (a->GetDataType().GetClass() != GEDTC_STRING)
+            return std::nullopt;
+        const char *s = a->ReadAsString();
+        return text::trim(s ? s : "");
+    }
+    if (var != NC_GLOBAL && std::strcmp(name, "units") == 0)
+    {
+        const std::string unit = impl_->vars.at(static_cast<std::size_t>(var))->GetUnit();
+        if (!unit.empty())
+            return text::trim(unit);
+    }
+    return std::nullopt;
+}
+
+std::vector<double> GdalGrid::attDoubles(int var, const char *name, bool &isText) const
+{
+    const std::lock_guard<std::mutex> lock(impl_->mutex);
+    isText = false;
+    if (auto a = impl_->attribute(var, name))
+    {
+        if (a->GetDataType().GetClass() == GEDTC_STRING)
+        {
+            isText = true;
+            return {};
+        }
+        return a->ReadAsDoubleArray();
+    }
+    if (var == NC_GLOBAL)
+        return {};
+    const GDALMDArray &array = *impl_->vars.at(static_cast<std::size_t>(var));
+    bool has = false;
+    if (std::strcmp(name, "_FillValue") == 0)
+    {
+        const double v = array.GetNoDataValueAsDouble(&has);
+        return has ? std::vector<double>{v} : std::vector<double>{};
+    }
+    if (std::strcmp(name, "scale_factor") == 0)
+    {
+        const double v = array.GetScale(&has);
+        return has ? std::vector<double>{v} : std::vector<double>{};
+    }
+    if (std::strcmp(name, "add_offset") == 0)
+    {
+        const double v = array.GetOffset(&has);
+        return has ? std::vector<double>{v} : std::vector<double>{};
+    }
+    return {};
+}
+
+void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
+                         double *out) const
+{
+    const std::lock_guard<std::mutex> lock(impl_->mutex);
+    const GDALMDArray &array = *impl_->vars.at(static_cast<std::size_t>(var));
+    std::vector<GUInt64> first(start.begin(), start.end());
+    CPLErrorReset();
+    if (!array.Read(first.data(), count.data(), nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), out))
+    {
+        std::string block;
+        for (std::size_t k = 0; k < start.size(); ++k)
+            block += "[" + std::to_string(start[k]) + ":" + std::to_string(start[k] + count[k] - 1) + "]";
+        const std::string why = CPLGetLastErrorMsg();
+        throw Error(who() + ": cannot read " + array.GetName() + block + (why.empty() ? std::string() : ": " + why));
+    }
+}
+}  // namespace netcdf_detail
+}  // namespace ompl_glider

@@ -1,0 +1,66 @@
+#pragma once
+/// @file GdalGrid.h
+/// @brief Internal to the library (not installed): a gridded dataset read through GDAL's multidimensional API (Zarr v2
+/// stores on disk or over HTTP, GRIB2 files), seen as NcFile sees a NetCDF file: variables and dimensions by index,
+/// CF attributes by name, values as doubles by hyperslab. So the forecast reader (current/netcdf/) applies the same
+/// rules to every layout: CF units and time, longitude conventions, land from fill values, the trip's region, only
+/// the records and levels it needs read.
+///
+/// GDAL folds some CF attributes into properties of an array; they are given back under their CF names: `units`
+/// (GDALMDArray::GetUnit()), `_FillValue` (the no-data value: Zarr's `fill_value`), `scale_factor` and `add_offset`
+/// (GetScale()/GetOffset()). The values read are the stored ones (not unpacked), as nc_get_vara_double gives them.
+
+#include <netcdf.h>
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ompl_glider
+{
+namespace netcdf_detail
+{
+/// True for a source GDAL reads (GdalGrid): a Zarr store (a folder holding `.zgroup`, `.zmetadata` or `.zarray`, a
+/// name ending in `.zarr`, also as an http(s) URL, or GDAL's `ZARR:` prefix) or a GRIB file (`.grib2`, `.grb2`,
+/// `.grib`, `.grb`, or a file whose first bytes are "GRIB").
+bool isGdalSource(const std::string &path);
+
+/// A Zarr store (see isGdalSource()).
+bool isZarrStore(const std::string &path);
+
+class GdalGrid
+{
+public:
+    /// Opens @p path (an http(s) URL through /vsicurl/, with the process's request time limit and retries,
+    /// RemoteSource.h). @throws Error naming the source when GDAL cannot open it as a multidimensional dataset.
+    explicit GdalGrid(const std::string &path);
+    ~GdalGrid();
+    GdalGrid(const GdalGrid &) = delete;
+    GdalGrid &operator=(const GdalGrid &) = delete;
+
+    /// "Zarr store '<path>'" or "GRIB file '<path>'".
+    std::string who() const;
+    int nvars() const;
+    std::string varName(int var) const;
+    std::string dimName(int dim) const;
+    std::size_t dimLen(int dim) const;
+    std::optional<int> findVar(const std::string &name) const;
+    std::vector<int> varDims(int var) const;
+    nc_type varType(int var) const;
+    /// A text attribute of @p var (NC_GLOBAL: the root group's); nullopt when absent or numeric.
+    std::optional<std::string> attText(int var, const char *name) const;
+    /// A numeric attribute's values (empty when absent); text yields {} and sets @p isText.
+    std::vector<double> attDoubles(int var, const char *name, bool &isText) const;
+    /// The stored values of @p var in the block at @p start of @p count, as doubles. @throws Error naming the source
+    /// and the variable when GDAL cannot read them (a missing or corrupt chunk, the server).
+    void readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
+                   double *out) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+}  // namespace netcdf_detail
+}  // namespace ompl_glider
