@@ -25,6 +25,7 @@ PACKAGES=(
   pybind11-dev python3-dev python3-numpy python3-pytest
   clang-14 libfuzzer-14-dev
   libjs-leaflet chromium python3-websocket python3-netcdf4
+  python3-zarr python3-numcodecs python3-xarray python3-gdal gdal-bin
 )
 
 missing=()

@@ -11,6 +11,7 @@
 
 #include <gdal_priv.h>
 
+#include "BlockCopy.h"
 #include "NumberText.h"
 #include "TextUtil.h"
 #include "ompl_glider/Exception.h"
@@ -99,15 +100,35 @@ bool isGdalSource(const std::string &path)
     return isZarrStore(path) || isGribFile(path);
 }
 
+/// CF's standard name of a GRIB2 parameter (its short name, as GDAL's "name" attribute gives it): the currents of
+/// ocean models (RTOFS) and the winds of weather models (for vehicles in wind).
+std::optional<std::string> gribStandardName(const std::string &shortName)
+{
+    static const std::map<std::string, std::string> names = {{"UOGRD", "eastward_sea_water_velocity"},
+                                                             {"VOGRD", "northward_sea_water_velocity"},
+                                                             {"UGRD", "eastward_wind"},
+                                                             {"VGRD", "northward_wind"}};
+    const auto it = names.find(shortName);
+    return it == names.end() ? std::nullopt : std::optional<std::string>(it->second);
+}
+
 struct GdalGrid::Impl
 {
     std::string path, kind;
+    bool geographic{false};  // GRIB: the arrays' grid is in longitude and latitude
     std::unique_ptr<GDALDataset> dataset;
     std::shared_ptr<GDALGroup> root;
     std::vector<std::shared_ptr<GDALMDArray>> vars;
     std::vector<std::shared_ptr<GDALDimension>> dims;
     std::map<std::string, int> dimIndex;  // by full name
     mutable std::mutex mutex;             // GDAL's datasets are not thread-safe
+    struct Block
+    {
+        int var;
+        std::vector<std::size_t> start, count;
+        std::vector<double> values;
+    };
+    std::vector<Block> blocks;  // the blocks read so far (a URL's chunks fetched, a GRIB message decoded, once)
 
     int dimOf(const std::shared_ptr<GDALDimension> &d)
     {
@@ -155,6 +176,9 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
         throw Error(who() + ": cannot open" + (why.empty() ? std::string() : ": " + why));
     }
     d.addGroup(d.root);
+    for (const auto &a : d.vars)
+        if (auto srs = a->GetSpatialRef())
+            d.geographic = d.geographic || srs->IsGeographic();
     for (const auto &g : d.root->GetDimensions())
         d.dimOf(g);
     for (const auto &a : d.vars)
@@ -165,6 +189,20 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
 }
 
 GdalGrid::~GdalGrid() = default;
+
+std::shared_ptr<GdalGrid> GdalGrid::open(const std::string &path)
+{
+    if (!isUrl(path))
+        return std::make_shared<GdalGrid>(path);
+    static std::mutex m;
+    // kept for the process, as the OPeNDAP datasets are (RemoteDataset::open())
+    static auto &opened = *new std::map<std::string, std::shared_ptr<GdalGrid>>();
+    const std::lock_guard<std::mutex> lock(m);
+    auto &g = opened[path];
+    if (!g)
+        g = std::make_shared<GdalGrid>(path);
+    return g;
+}
 
 std::string GdalGrid::who() const
 {
@@ -196,7 +234,17 @@ std::optional<int> GdalGrid::findVar(const std::string &name) const
     for (std::size_t k = 0; k < impl_->vars.size(); ++k)
         if (impl_->vars[k]->GetName() == name)
             return static_cast<int>(k);
-    return std::nullopt;
+    // a GRIB parameter by its short name (UOGRD for the array UOGRD_0-DBSL), where one array has it
+    std::optional<int> found;
+    for (std::size_t k = 0; k < impl_->vars.size(); ++k)
+        if (auto a = impl_->vars[k]->GetAttribute("name"); a && a->GetDataType().GetClass() == GEDTC_STRING &&
+                                                           a->ReadAsString() && name == a->ReadAsString())
+        {
+            if (found)
+                return std::nullopt;  // several levels or times: the array's own name is needed
+            found = static_cast<int>(k);
+        }
+    return found;
 }
 
 std::vector<int> GdalGrid::varDims(int var) const
@@ -225,12 +273,29 @@ std::optional<std::string> GdalGrid::attText(int var, const char *name) const
         const char *s = a->ReadAsString();
         return text::trim(s ? s : "");
     }
-    if (var != NC_GLOBAL && std::strcmp(name, "units") == 0)
+    if (var == NC_GLOBAL)
+        return std::nullopt;
+    const GDALMDArray &array = *impl_->vars.at(static_cast<std::size_t>(var));
+    if (std::strcmp(name, "units") == 0)
     {
-        const std::string unit = impl_->vars.at(static_cast<std::size_t>(var))->GetUnit();
+        const std::string unit = text::trim(array.GetUnit());
+        if (unit == "sec UTC")  // GDAL's GRIB times: seconds of the Unix epoch
+            return std::string("seconds since 1970-01-01 00:00:00");
         if (!unit.empty())
-            return text::trim(unit);
+            return unit;
+        // GDAL's GRIB gives the axes of a longitude/latitude grid without units
+        const auto &dims = array.GetDimensions();
+        if (impl_->geographic && dims.size() == 1 && dims[0]->GetName() == array.GetName())
+        {
+            if (dims[0]->GetType() == GDAL_DIM_TYPE_HORIZONTAL_X)
+                return std::string("degrees_east");
+            if (dims[0]->GetType() == GDAL_DIM_TYPE_HORIZONTAL_Y)
+                return std::string("degrees_north");
+        }
     }
+    if (std::strcmp(name, "standard_name") == 0)
+        if (auto a = array.GetAttribute("name"); a && a->GetDataType().GetClass() == GEDTC_STRING && a->ReadAsString())
+            return gribStandardName(a->ReadAsString());
     return std::nullopt;
 }
 
@@ -273,10 +338,25 @@ void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const s
                          double *out) const
 {
     const std::lock_guard<std::mutex> lock(impl_->mutex);
+    for (const Impl::Block &b : impl_->blocks)
+        if (b.var == var && inside(start, count, b.start, b.count))
+        {
+            copyOut(b.values, b.start, b.count, start, count, out);
+            return;
+        }
     const GDALMDArray &array = *impl_->vars.at(static_cast<std::size_t>(var));
     std::vector<GUInt64> first(start.begin(), start.end());
     CPLErrorReset();
-    if (!array.Read(first.data(), count.data(), nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), out))
+    const bool read =
+        array.Read(first.data(), count.data(), nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), out);
+    if (read)
+    {
+        std::size_t n = 1;
+        for (const std::size_t c : count)
+            n *= c;
+        impl_->blocks.push_back({var, start, count, std::vector<double>(out, out + n)});
+    }
+    if (!read)
     {
         std::string block;
         for (std::size_t k = 0; k < start.size(); ++k)

@@ -33,6 +33,10 @@ bool isZarrStore(const std::string &path);
 class GdalGrid
 {
 public:
+    /// The dataset of @p path: a URL's is opened once per process, a file's anew. Each keeps the blocks it read in
+    /// memory (the reader asks for some twice: the grid's land, then its values; a GRIB message is decoded whole).
+    static std::shared_ptr<GdalGrid> open(const std::string &path);
+
     /// Opens @p path (an http(s) URL through /vsicurl/, with the process's request time limit and retries,
     /// RemoteSource.h). @throws Error naming the source when GDAL cannot open it as a multidimensional dataset.
     explicit GdalGrid(const std::string &path);

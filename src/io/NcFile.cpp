@@ -35,7 +35,7 @@ NcFile::NcFile(const std::string &path) : path_(path)
 #if OMPL_GLIDER_WITH_MISSION
     if (isGdalSource(path))
     {
-        gdal_ = std::make_shared<GdalGrid>(path);
+        gdal_ = GdalGrid::open(path);
         return;
     }
 #endif

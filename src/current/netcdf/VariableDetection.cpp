@@ -127,13 +127,13 @@ int findVelocity(const NcFile &f, const std::string &given, bool east, const std
                                         "baroclinic_eastward_sea_water_velocity",
                                         "barotropic_eastward_sea_water_velocity",
                                         "surface_geostrophic_eastward_sea_water_velocity", "eastward_current",
-                                        "sea_water_x_velocity"}
+                                        "sea_water_x_velocity", "eastward_wind"}
              : std::vector<std::string>{"northward_sea_water_velocity", "surface_northward_sea_water_velocity",
                                         "northward_sea_water_velocity_assuming_no_tide",
                                         "baroclinic_northward_sea_water_velocity",
                                         "barotropic_northward_sea_water_velocity",
                                         "surface_geostrophic_northward_sea_water_velocity", "northward_current",
-                                        "sea_water_y_velocity"};
+                                        "sea_water_y_velocity", "northward_wind"};
     // Usual names of files without CF standard names, matched without regard to case (UVEL, UWND, U10): Copernicus
     // and NEMO (uo, vozocrtx), HYCOM (water_u), POP (uvel; urot rotated to east/north), ROMS post-processed
     // (u_eastward), winds of reanalyses and weather models (uwnd, u10) for vehicles in wind.

@@ -1,0 +1,253 @@
+#!/usr/bin/env python3
+"""glider_plan --currents on a Zarr store and a GRIB2 file, read through GDAL's multidimensional API.
+
+Usage: check_gdal_sources.py GLIDER_PLAN
+
+One forecast (a CMEMS-like layout: uo/vo in m s-1 on time, depth, latitude, longitude, float32, an island of NaN) is
+written by xarray (Debian's python3-xarray, python3-zarr) as NetCDF and as two Zarr v2 stores with consolidated
+metadata, as Copernicus Marine publishes them: time-chunked (1, 1, ny, nx), blosc/zstd, and geo-chunked
+(nt, 1, 8, 8), blosc/lz4. Checked:
+  1. each store plans with the NetCDF file's travel time (1e-12) and the same waypoints;
+  2. the geo-chunked store served by a loopback HTTP server plans the same, and the trip's chunks only are requested
+     (fewer than half of the store's velocity chunks);
+  3. a server that is down: exit 2 naming the URL; nothing written;
+  4. a GRIB2 file written by GDAL's GRIB driver (UOGRD/VOGRD, discipline 10, complex packing with a missing value,
+     the records of a parameter in a row) plans with the travel time of the same decoded values in NetCDF (1e-12),
+     found by the GRIB parameters' standard names and by --u-var UOGRD --v-var VOGRD alike.
+"""
+import functools
+import http.server
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+
+if __name__ == "__main__" and os.environ.get("OMPL_GLIDER_REEXEC") is None:
+    try:
+        import xarray  # noqa: F401
+        import zarr  # noqa: F401
+    except ImportError:  # pyenv's python3 first on PATH: Debian's has python3-xarray and python3-zarr
+        if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
+            os.environ["OMPL_GLIDER_REEXEC"] = "1"
+            os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+        raise
+
+import numcodecs
+import numpy as np
+import pandas as pd
+import xarray as xr
+
+failures = []
+TRIP = ["--start=-74.2,30.4", "--goal=-72.1,32.3", "--speed", "0.5", "--departure", "2026-06-01T03:00:00Z", "--beyond", "hold"]
+
+
+def check(cond, what):
+    print(("ok   " if cond else "FAIL ") + what, flush=True)
+    if not cond:
+        failures.append(what)
+
+
+def forecast(nt=6, ny=81, nx=97):
+    """A meandering jet over 6 days on a 1/8 degree grid of 12 x 10 degrees, two levels, an island of NaN."""
+    lon = -76.0 + 0.125 * np.arange(nx)
+    lat = 29.0 + 0.125 * np.arange(ny)
+    X, Y = np.meshgrid(lon, lat)
+    u = np.empty((nt, 2, ny, nx), "f4")
+    v = np.empty((nt, 2, ny, nx), "f4")
+    for k in range(nt):
+        jet = 0.8 * np.exp(-((Y - 31.0 - 0.8 * np.sin(0.9 * X + 0.3 * k)) / 0.9) ** 2)
+        for m in range(2):
+            u[k, m] = (jet + 0.05) * (1.0 - 0.3 * m)
+            v[k, m] = 0.3 * np.cos(0.9 * X + 0.3 * k) * jet * (1.0 - 0.3 * m)
+    island = np.hypot(X + 73.0, (Y - 31.6) * 1.2) < 0.35
+    u[:, :, island] = np.nan
+    v[:, :, island] = np.nan
+    return xr.Dataset(
+        {"uo": (("time", "depth", "latitude", "longitude"), u,
+                {"units": "m s-1", "standard_name": "eastward_sea_water_velocity"}),
+         "vo": (("time", "depth", "latitude", "longitude"), v,
+                {"units": "m s-1", "standard_name": "northward_sea_water_velocity"})},
+        coords={"time": pd.date_range("2026-06-01", periods=nt, freq="D"),
+                "depth": ("depth", np.array([0.494, 1.541]), {"units": "m", "positive": "down"}),
+                "latitude": ("latitude", lat, {"units": "degrees_north", "standard_name": "latitude"}),
+                "longitude": ("longitude", lon, {"units": "degrees_east", "standard_name": "longitude"})})
+
+
+def write_store(ds, path, chunks, cname):
+    comp = numcodecs.Blosc(cname=cname, clevel=5, shuffle=numcodecs.Blosc.SHUFFLE)
+    enc = {n: {"chunks": chunks, "compressor": comp} for n in ("uo", "vo")}
+    enc["time"] = {"units": "hours since 1950-01-01", "dtype": "f8"}
+    ds.to_zarr(path, encoding=enc, consolidated=True, mode="w")
+
+
+def plan(glider, args, timeout=120):
+    return subprocess.run([glider] + args, capture_output=True, text=True, timeout=timeout)
+
+
+def travel_time(out):
+    with open(os.path.join(out, "summary.json")) as f:
+        return json.load(f)["travel_time"]
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+class Logged(http.server.SimpleHTTPRequestHandler):
+    """Serves a folder and keeps the paths asked for."""
+
+    def log_message(self, *args):
+        pass
+
+    def do_GET(self):
+        self.server.asked.append(self.path)
+        super().do_GET()
+
+
+def serve(root):
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(Logged, directory=root))
+    server.asked = []
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    return server
+
+
+def write_grib(ds, path):
+    """The surface level of @p ds as GRIB2 through GDAL's GRIB driver: UOGRD for each time, then VOGRD (discipline 10,
+    category 1, parameters 2 and 3), complex packing with a missing value for the island (1 mm/s steps), latitude
+    rows north first, as RTOFS writes them."""
+    from osgeo import gdal, osr
+    gdal.UseExceptions()
+    nt, ny, nx = ds.sizes["time"], ds.sizes["latitude"], ds.sizes["longitude"]
+    lon, lat = ds.longitude.values, ds.latitude.values
+    mem = gdal.GetDriverByName("MEM").Create("", nx, ny, 2 * nt, gdal.GDT_Float32)
+    mem.SetGeoTransform((lon[0] - 0.0625, 0.125, 0.0, lat[-1] + 0.0625, 0.0, -0.125))
+    srs = osr.SpatialReference()
+    srs.ImportFromEPSG(4326)
+    mem.SetProjection(srs.ExportToWkt())
+    options = ["DATA_ENCODING=COMPLEX_PACKING", "DECIMAL_SCALE_FACTOR=3"]
+    hours = (ds.time.values - ds.time.values[0]) / np.timedelta64(1, "h")
+    for j, (name, parameter) in enumerate((("uo", 2), ("vo", 3))):
+        for k in range(nt):
+            band = 1 + j * nt + k
+            values = ds[name].values[k, 0][::-1]  # north first
+            mem.GetRasterBand(band).WriteArray(np.where(np.isnan(values), 9999.0, values).astype("f4"))
+            mem.GetRasterBand(band).SetNoDataValue(9999.0)
+            options += ["BAND_%d_DISCIPLINE=10" % band,
+                        "BAND_%d_IDS=CENTER=7 SUBCENTER=0 MASTER_TABLE=2 LOCAL_TABLE=0 SIGNF_REF_TIME=1 "
+                        "REF_TIME=2026-06-01T00:00:00Z PROD_STATUS=0 TYPE=1" % band,
+                        "BAND_%d_PDS_PDTN=0" % band,
+                        "BAND_%d_PDS_TEMPLATE_ASSEMBLED_VALUES=1 %d 2 0 0 0 0 1 %d 160 0 0 255 0 0"
+                        % (band, parameter, int(hours[k]))]
+    gdal.GetDriverByName("GRIB").CreateCopy(path, mem, options=options)
+
+
+def grib_as_netcdf(grib, like, path):
+    """The values GDAL decodes from @p grib (NaN where missing) on the grid and times of @p like, as NetCDF: the same
+    data as the GRIB file, whatever its packing rounded."""
+    from osgeo import gdal
+    gdal.UseExceptions()
+    g = gdal.OpenEx(grib, gdal.OF_MULTIDIM_RASTER).GetRootGroup()
+    out = like.isel(depth=[0]).copy(deep=True)
+    for name, array in (("uo", "UOGRD_0-DBSL"), ("vo", "VOGRD_0-DBSL")):
+        a = g.OpenMDArray(array)
+        values = a.ReadAsArray().astype("f8")
+        nodata = a.GetNoDataValueAsDouble()
+        if nodata is not None:
+            values[values == nodata] = np.nan
+        out[name] = (("time", "depth", "latitude", "longitude"), values[:, None], out[name].attrs)  # Y south first
+    out.to_netcdf(path, encoding={n: {"dtype": "f8"} for n in ("uo", "vo")})
+
+
+def main():
+    glider = sys.argv[1]
+    work = tempfile.mkdtemp(prefix="ompl_glider_gdal_")
+    server = None
+    try:
+        ds = forecast()
+        nc = os.path.join(work, "cmems.nc")
+        ds.to_netcdf(nc)
+        root = os.path.join(work, "srv")
+        os.makedirs(root)
+        time_chunked, geo_chunked = os.path.join(root, "time.zarr"), os.path.join(root, "geo.zarr")
+        write_store(ds, time_chunked, (1, 1, ds.sizes["latitude"], ds.sizes["longitude"]), "zstd")
+        write_store(ds, geo_chunked, (ds.sizes["time"], 1, 8, 8), "lz4")
+
+        # 1. each store plans as the NetCDF file
+        p_nc = plan(glider, ["--currents", nc, "--out", os.path.join(work, "o_nc")] + TRIP)
+        check(p_nc.returncode == 0, "the NetCDF file plans (exit %d: %s)" % (p_nc.returncode, p_nc.stderr[-300:]))
+        if p_nc.returncode:
+            return
+        t_nc = travel_time(os.path.join(work, "o_nc"))
+        for name, store in (("time-chunked", time_chunked), ("geo-chunked", geo_chunked)):
+            out = os.path.join(work, "o_" + name)
+            p = plan(glider, ["--currents", store, "--out", out] + TRIP)
+            check(p.returncode == 0, "%s store plans (exit %d: %s)" % (name, p.returncode, p.stderr[-300:]))
+            if p.returncode == 0:
+                t = travel_time(out)
+                check(abs(t - t_nc) <= 1e-12 * t_nc, "%s store: the NetCDF file's travel time (%r, %r)" %
+                      (name, t, t_nc))
+                check(read(os.path.join(out, "waypoints.csv")) == read(os.path.join(work, "o_nc", "waypoints.csv")),
+                      "%s store: the same waypoints.csv" % name)
+
+        # 2. the geo-chunked store over HTTP: the same plan, only the trip's chunks asked for
+        server = serve(root)
+        url = "http://127.0.0.1:%d/geo.zarr" % server.server_address[1]
+        out = os.path.join(work, "o_url")
+        p = plan(glider, ["--currents", url, "--out", out] + TRIP)
+        check(p.returncode == 0, "the store over HTTP plans (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
+        if p.returncode == 0:
+            t = travel_time(out)
+            check(abs(t - t_nc) <= 1e-12 * t_nc, "over HTTP: the NetCDF file's travel time (%r, %r)" % (t, t_nc))
+            chunks = [a for a in server.asked if a.startswith("/geo.zarr/uo/") or a.startswith("/geo.zarr/vo/")]
+            chunks = [a for a in chunks if not a.rsplit("/", 1)[-1].startswith(".")]
+            total = sum(len([f for f in os.listdir(os.path.join(geo_chunked, v)) if not f.startswith(".")])
+                        for v in ("uo", "vo"))
+            check(0 < len(chunks) < total / 2, "over HTTP: %d velocity chunks asked for of the store's %d" %
+                  (len(chunks), total))
+            check(len(set(chunks)) == len(chunks), "over HTTP: no chunk asked for twice (%d, %d distinct)" %
+                  (len(chunks), len(set(chunks))))
+
+        # 3. a server that is down
+        server.shutdown()
+        server.server_close()
+        server = None
+        down = os.path.join(work, "o_down")
+        p = plan(glider, ["--currents", url, "--request-timeout", "5", "--retries", "1", "--out", down] + TRIP,
+                 timeout=120)
+        check(p.returncode == 2 and url in p.stderr, "server down: exit 2 naming the URL (exit %d: %s)" %
+              (p.returncode, p.stderr[-300:]))
+        check(not os.path.exists(down), "server down: no output directory")
+
+        # 4. GRIB2: the surface level of the same forecast, against the same values in NetCDF
+        grib = os.path.join(work, "rtofs.grib2")
+        write_grib(ds, grib)
+        grib_nc = os.path.join(work, "surface.nc")
+        grib_as_netcdf(grib, ds, grib_nc)
+        p_gnc = plan(glider, ["--currents", grib_nc, "--out", os.path.join(work, "o_gnc")] + TRIP)
+        check(p_gnc.returncode == 0, "the surface NetCDF plans (exit %d: %s)" % (p_gnc.returncode,
+                                                                                p_gnc.stderr[-300:]))
+        for label, extra in (("by standard names", []), ("by --u-var UOGRD", ["--u-var", "UOGRD", "--v-var",
+                                                                              "VOGRD"])):
+            out = os.path.join(work, "o_grib_" + str(len(extra)))
+            p = plan(glider, ["--currents", grib, "--out", out] + extra + TRIP)
+            check(p.returncode == 0, "GRIB2 %s plans (exit %d: %s)" % (label, p.returncode, p.stderr[-300:]))
+            if p.returncode == 0 and p_gnc.returncode == 0:
+                t, tg = travel_time(out), travel_time(os.path.join(work, "o_gnc"))
+                check(abs(t - tg) <= 1e-12 * tg, "GRIB2 %s: the NetCDF file's travel time (%r, %r)" % (label, t, tg))
+    finally:
+        if server:
+            server.shutdown()
+        shutil.rmtree(work, ignore_errors=True)
+    if failures:
+        print("%d check(s) failed" % len(failures))
+        sys.exit(1)
+    print("all checks passed")
+
+
+if __name__ == "__main__":
+    main()
