@@ -65,6 +65,23 @@ void applyRemoteAccess()
     CPLSetConfigOption("GDAL_DISABLE_READDIR_ON_OPEN", "EMPTY_DIR");  // a store's listing is its .zmetadata
 }
 
+/// GDAL's own printing of its errors off for the life of the object: they reach the user in this reader's messages
+/// (CPLGetLastErrorMsg()), which name the source.
+struct QuietGdal
+{
+    QuietGdal()
+    {
+        CPLPushErrorHandler(CPLQuietErrorHandler);
+        CPLErrorReset();
+    }
+    ~QuietGdal()
+    {
+        CPLPopErrorHandler();
+    }
+    QuietGdal(const QuietGdal &) = delete;
+    QuietGdal &operator=(const QuietGdal &) = delete;
+};
+
 nc_type ncTypeOf(GDALDataType t)
 {
     switch (t)
@@ -168,7 +185,7 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
     }
     if (d.kind == "Zarr store" && open.rfind("ZARR:", 0) != 0)
         open = "ZARR:\"" + withoutSlash(open) + "\"";
-    CPLErrorReset();
+    const QuietGdal quiet;
     d.dataset.reset(GDALDataset::Open(open.c_str(), GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY));
     if (!d.dataset || !(d.root = d.dataset->GetRootGroup()))
     {
@@ -346,7 +363,7 @@ void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const s
         }
     const GDALMDArray &array = *impl_->vars.at(static_cast<std::size_t>(var));
     std::vector<GUInt64> first(start.begin(), start.end());
-    CPLErrorReset();
+    const QuietGdal quiet;
     const bool read =
         array.Read(first.data(), count.data(), nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), out);
     if (read)

@@ -10,8 +10,10 @@ metadata, as Copernicus Marine publishes them: time-chunked (1, 1, ny, nx), blos
   1. each store plans with the NetCDF file's travel time (1e-12) and the same waypoints;
   2. the geo-chunked store served by a loopback HTTP server plans the same, and the trip's chunks only are requested
      (fewer than half of the store's velocity chunks);
-  3. a server that is down: exit 2 naming the URL; nothing written;
-  4. a GRIB2 file written by GDAL's GRIB driver (UOGRD/VOGRD, discipline 10, complex packing with a missing value,
+  3. garbage: a store whose metadata is not JSON (served), a chunk that is not blosc (on disk): exit 2 naming the
+     URL, or the store and the variable;
+  4. a server that is down: exit 2 naming the URL; nothing written;
+  5. a GRIB2 file written by GDAL's GRIB driver (UOGRD/VOGRD, discipline 10, complex packing with a missing value,
      the records of a parameter in a row) plans with the travel time of the same decoded values in NetCDF (1e-12),
      found by the GRIB parameters' standard names and by --u-var UOGRD --v-var VOGRD alike.
 """
@@ -212,7 +214,28 @@ def main():
             check(len(set(chunks)) == len(chunks), "over HTTP: no chunk asked for twice (%d, %d distinct)" %
                   (len(chunks), len(set(chunks))))
 
-        # 3. a server that is down
+        # 3. garbage: a store whose metadata is not JSON, served; a chunk that is not blosc, on disk
+        bad = os.path.join(root, "bad.zarr")
+        os.makedirs(bad)
+        for name in (".zmetadata", ".zgroup"):
+            with open(os.path.join(bad, name), "w") as f:
+                f.write("<html>502 Bad Gateway</html>")
+        bad_url = "http://127.0.0.1:%d/bad.zarr" % server.server_address[1]
+        p = plan(glider, ["--currents", bad_url, "--out", os.path.join(work, "o_bad")] + TRIP)
+        check(p.returncode == 2 and bad_url in p.stderr, "garbage metadata over HTTP: exit 2 naming the URL (exit %d: "
+              "%s)" % (p.returncode, p.stderr[-300:]))
+        broken = os.path.join(work, "broken.zarr")
+        shutil.copytree(time_chunked, broken)
+        for k in range(ds.sizes["time"]):
+            with open(os.path.join(broken, "uo", "%d.0.0.0" % k), "wb") as f:
+                f.write(b"not a blosc chunk")
+        p = plan(glider, ["--currents", broken, "--out", os.path.join(work, "o_broken")] + TRIP)
+        check(p.returncode == 2 and broken in p.stderr and "uo" in p.stderr,
+              "a corrupt chunk: exit 2 naming the store and the variable (exit %d: %s)" % (p.returncode,
+                                                                                         p.stderr[-300:]))
+        check(not os.path.exists(os.path.join(work, "o_broken")), "a corrupt chunk: no output directory")
+
+        # 4. a server that is down
         server.shutdown()
         server.server_close()
         server = None
@@ -223,7 +246,7 @@ def main():
               (p.returncode, p.stderr[-300:]))
         check(not os.path.exists(down), "server down: no output directory")
 
-        # 4. GRIB2: the surface level of the same forecast, against the same values in NetCDF
+        # 5. GRIB2: the surface level of the same forecast, against the same values in NetCDF
         grib = os.path.join(work, "rtofs.grib2")
         write_grib(ds, grib)
         grib_nc = os.path.join(work, "surface.nc")
