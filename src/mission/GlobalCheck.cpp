@@ -81,12 +81,12 @@ ZermeloSolution zoomOn(const std::shared_ptr<const CurrentField> &field, Zermelo
     zp.headingSamples = kWindowHeadings;
     ZermeloSolution sol;
     sol.travelTime = kInf;
-    for (int level = 0; level < kZoomLevels && !stopRequested(); ++level)
+    for (int level = 0; level < kZoomLevels && !zp.stop(); ++level)
     {
         zp.headingFrom = centre - 0.5 * width;
         zp.headingSpan = std::min(width, 2.0 * kPi);
         sol = ZermeloReference(field, zp).solve(s.x, s.y, g.x, g.y, departure);
-        shot += static_cast<unsigned>(zp.headingSamples) + 1;
+        shot += static_cast<unsigned>(sol.headingsShot);
         if (sol.found || !std::isfinite(sol.nearestMiss))
             break;
         centre = sol.nearestHeading;
@@ -105,15 +105,15 @@ struct LevelSetAid
 };
 
 LevelSetAid levelSetAid(const std::shared_ptr<const GliderContext> &ctx, Point2 s, Point2 g, double departure,
-                        double tEnd)
+                        double tEnd, const std::function<bool()> &stop)
 {
     LevelSetParams p;
     p.cellSize = defaultLevelSetResolution(*ctx);
     p.clearance = 0.5 * p.cellSize;
     const Reachability r =
-        LevelSetSolver(ctx, p).solve(s.x, s.y, departure, tEnd, g, true, [] { return stopRequested(); });
+        LevelSetSolver(ctx, p).solve(s.x, s.y, departure, tEnd, g, true, stop);
     LevelSetAid aid;
-    if (!r.goalReached)
+    if (!r.goalReached || stop())
         return aid;
     aid.time = r.goalTime - departure;
     const double depth = ctx->travel->params().depth;
@@ -138,15 +138,16 @@ ZermeloSolution findExtremal(const std::shared_ptr<GliderContext> &ctx, ZermeloP
                              Point2 g, double departure, double span, GlobalCheck &check)
 {
     ZermeloSolution sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
-    if (!sol.found)
+    check.headings = static_cast<unsigned>(sol.headingsShot);
+    if (!sol.found && !zp.stop())
     {
         // in strong or sensitive currents the headings that reach a far goal can lie within a fraction of a degree:
         // sweep finer before giving up (eight times where there is no route at all, else four)
         zp.headingSamples *= planned ? 4 : 8;
         sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
+        check.headings = static_cast<unsigned>(sol.headingsShot);
     }
-    check.headings = static_cast<unsigned>(zp.headingSamples);
-    if (sol.found || stopRequested())
+    if (sol.found || zp.stop())
         return sol;
     const double spacing = 2.0 * kPi / zp.headingSamples;
     if (std::isfinite(sol.nearestMiss))
@@ -157,7 +158,9 @@ ZermeloSolution findExtremal(const std::shared_ptr<GliderContext> &ctx, ZermeloP
             return z;
     }
     // the level set over the whole window (the extremal may be slower than the planner's route's bound)
-    const LevelSetAid aid = levelSetAid(ctx, s, g, departure, departure + span);
+    if (zp.stop())
+        return sol;
+    const LevelSetAid aid = levelSetAid(ctx, s, g, departure, departure + span, zp.stop);
     check.levelSetTime = aid.time;
     ZermeloParams wide = zp;
     wide.maxTime = std::isfinite(aid.time) ? std::min(span, 1.25 * aid.time) : zp.maxTime;
@@ -331,6 +334,18 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     GlobalCheck check;
     check.candidates.push_back(plannerCandidate(r));
     ZermeloParams zp = checkedExtremalParams(problem, ctx, r.speed, bound);
+    // the check keeps to the plan's time limit (the fallbacks' where none is set): its scans and its level set stop
+    check.timeLimit = o.timeLimit > 0 ? o.timeLimit : m.planner.timeLimit > 0 ? m.planner.timeLimit : kFallbackTimeLimit;
+    const auto deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                   std::chrono::duration<double>(check.timeLimit));
+    zp.stop = [deadline, &check] {
+        if (stopRequested())
+            return true;
+        if (std::chrono::steady_clock::now() < deadline)
+            return false;
+        check.timedOut = true;
+        return true;
+    };
     const Point2 s = problem.getStart(), g = problem.getGoal();
     const ZermeloSolution sol = findExtremal(ctx, zp, r.solved, s, g, departure, span, check);
     const ZermeloReference ref(ctx->field, zp);
@@ -393,7 +408,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     }
     // no extremal through the goal and the level set's front reached it earlier than the route in hand: the level
     // set's own route (its backtracked path as straight legs, or flown by its headings) is a candidate
-    if (!sol.found && std::isfinite(check.levelSetTime) && !stopRequested() &&
+    if (!sol.found && std::isfinite(check.levelSetTime) && !zp.stop() &&
         !(best.solved && best.travelTime <= check.levelSetTime * (1.0 + kLevelSetMargin)))
         consider(levelSetRoute(problem, departure, o, base), "level set");
     if (check.winner.empty() && best.solved)

@@ -138,6 +138,8 @@ void printGlobalCheck(std::ostream &out, const PlannedPath &p, const MissionSpec
     out << "Global check:       " << g.headings << " extremals shot from the start, "
         << (g.extremalFound ? "the fastest through the goal " + span(g.extremalTime) : std::string("none through the goal"))
         << format(" (%.2f s)\n", g.seconds);
+    if (g.timedOut)
+        out << format("  time limit        the check's %g s ended its scans before they were done\n", g.timeLimit);
     if (g.finerHeadings > 0)
         out << "  finer scans       " << g.finerHeadings << " headings in narrowing windows"
             << (std::isfinite(g.levelSetTime) ? "; the level set's first arrival " + span(g.levelSetTime)

@@ -245,6 +245,7 @@ json globalCheckJson(const PlannedPath &p)
                               {"why", jtext(c.why)}});
     return {{"headings", g.headings},
             {"finer_headings", g.finerHeadings},
+            {"timed_out", g.timedOut},
             {"level_set_travel_time", std::isfinite(g.levelSetTime) ? jnum(g.levelSetTime) : json(nullptr)},
             {"extremal_found", g.extremalFound},
             {"extremal_travel_time", g.extremalFound ? jnum(g.extremalTime) : json(nullptr)},

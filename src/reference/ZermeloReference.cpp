@@ -3,6 +3,7 @@
 #include "../execution/DormandPrince.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -270,14 +271,20 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
 
     // 1. Scan: closest approaches of n extremals (loose tolerance: only brackets are needed).
     std::vector<std::vector<ClosestApproach>> shots(shotsCount);
+    const auto stopped = [this] { return params_.stop && params_.stop(); };
+    std::atomic<int> shot{0};
     const auto scan = [&](std::size_t j) {
+        if (stopped())
+            return;
         shots[j] = shoot(x1, y1, from + double(j) * dTheta, t0, x2, y2, tMax, params_.scanRelTol);
+        ++shot;
     };
     if (params_.threads == 1)
         for (int j = 0; j < shotsCount; ++j)
             scan(std::size_t(j));
     else
         ThreadPool(params_.threads).parallelFor(std::size_t(shotsCount), scan);
+    sol.headingsShot = shot.load();
     for (int j = 0; j < shotsCount; ++j)
         for (const ClosestApproach &e : shots[j])
             if (e.admissible && std::abs(e.miss) < sol.nearestMiss)
@@ -316,7 +323,7 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
     // 3. Refine each bracket (Illinois on the initial heading), keep the fastest extremal through the goal.
     for (Bracket br : brackets)
     {
-        if (sol.found && br.tEst > 1.1 * sol.travelTime + 1e-9)
+        if ((sol.found && br.tEst > 1.1 * sol.travelTime + 1e-9) || stopped())
             break;
         const double horizon = std::min(tMax, 1.5 * br.tEst + 10.0 * dTheta * D / params_.speed) + 1e-9;
         double tRef = br.tEst;

@@ -71,6 +71,10 @@ struct GlobalCheck
     /// The level set's first arrival at the goal (travel time, an estimate first order in its cell), computed where
     /// the sweep found no extremal through the goal; +inf when not computed or the front never reached the goal
     double levelSetTime{std::numeric_limits<double>::infinity()};
+    /// The check's time limit (the plan's, else the fallbacks' 30 s) ended its scans before they were done: an
+    /// extremal or a level-set route it would have found may be missing
+    bool timedOut{false};
+    double timeLimit{0.0};  ///< that limit (s)
     bool extremalFound{false};  ///< an admissible extremal reaches the goal within the time bound
     /// Its travel time (the integrator's, a flyable schedule of continuous headings), +inf when none; the bound was
     /// the planner's route's travel time (or the planning window without a route)

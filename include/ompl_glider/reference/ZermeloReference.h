@@ -39,6 +39,9 @@ struct ZermeloParams
     /// is followed only while it stays within the start-goal distance of the goal. Empty: everywhere (open water).
     std::function<bool(double x1, double y1, double t1, double x2, double y2, double t2)> admissible;
     unsigned threads{1};          ///< threads of the heading scan (0: all cores); the field must be thread-safe
+    /// Asked before each extremal is shot (empty: never): once it answers true, solve() returns what it has found so
+    /// far (a caller's time limit, a stop request)
+    std::function<bool()> stop;
     /// An upper bound of the ground speed V + max|c| over the region and time (0: none). With it an extremal is no
     /// longer followed once the goal lies farther than this speed times the time left: it cannot reach it in time.
     double groundSpeedBound{0.0};
@@ -76,6 +79,7 @@ struct ZermeloSolution
     /// when none came near): where no extremal through the goal was found, the centre of a finer scan.
     double nearestHeading{0.0};
     double nearestMiss{std::numeric_limits<double>::infinity()};
+    int headingsShot{0};  ///< extremals of the scan shot (fewer than asked where ZermeloParams::stop answered true)
 };
 
 /// @brief Zermelo's navigation problem by shooting: the state (x, y, theta) obeys the equations of motion
