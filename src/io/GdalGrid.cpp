@@ -136,6 +136,9 @@ struct GdalGrid::Impl
     std::unique_ptr<GDALDataset> dataset;
     std::shared_ptr<GDALGroup> root;
     std::vector<std::shared_ptr<GDALMDArray>> vars;
+    std::vector<bool> timeAdded;  // per var: a GRIB field of one time, given the file's time dimension first
+    int timeDim{-1};              // that dimension (length 1), -1 without
+    std::unique_ptr<GDALDataset> timeHolder;  // the in-memory dataset of that time coordinate
     std::vector<std::shared_ptr<GDALDimension>> dims;
     std::map<std::string, int> dimIndex;  // by full name
     mutable std::mutex mutex;             // GDAL's datasets are not thread-safe
@@ -163,6 +166,50 @@ struct GdalGrid::Impl
         for (const std::string &name : g->GetGroupNames())  // GRIB: none; a store's subgroups
             if (auto sub = g->OpenGroup(name))
                 addGroup(sub);
+    }
+
+    /// A GRIB file of one forecast time (RTOFS writes one file per forecast hour): GDAL gives its fields as 2-D
+    /// arrays with the time only in attributes. They get a time dimension of length 1 and a time coordinate (the
+    /// fields' common validity time, seconds of the Unix epoch), so that several such files read as one forecast.
+    void addFileTime()
+    {
+        std::optional<double> valid;
+        for (const auto &a : vars)
+        {
+            for (const auto &dim : a->GetDimensions())
+                if (dim->GetType() == GDAL_DIM_TYPE_TEMPORAL)
+                    return;  // GDAL grouped the records along a TIME dimension already
+            if (auto t = a->GetAttribute("validity_time"))
+            {
+                const double v = t->ReadAsDouble();
+                if (valid && *valid != v)
+                    return;  // fields of several times, each its own array: GDAL's arrays as they are
+                valid = v;
+            }
+        }
+        GDALDriver *mem = GetGDALDriverManager()->GetDriverByName("MEM");
+        if (!valid || !mem)
+            return;
+        timeHolder.reset(mem->CreateMultiDimensional("time", nullptr, nullptr));
+        auto group = timeHolder ? timeHolder->GetRootGroup() : nullptr;
+        auto dim = group ? group->CreateDimension("time", GDAL_DIM_TYPE_TEMPORAL, "", 1) : nullptr;
+        auto array = dim ? group->CreateMDArray("time", {dim}, GDALExtendedDataType::Create(GDT_Float64)) : nullptr;
+        const GUInt64 first = 0;
+        const std::size_t one = 1;
+        if (!array || !array->Write(&first, &one, nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64),
+                                    &*valid) || !array->SetUnit("sec UTC"))
+            return;
+        timeAdded.assign(vars.size(), false);
+        for (std::size_t k = 0; k < vars.size(); ++k)
+            timeAdded[k] = vars[k]->GetAttribute("validity_time") != nullptr;
+        timeDim = dimOf(dim);
+        vars.push_back(array);
+        timeAdded.push_back(false);
+    }
+
+    bool hasAddedTime(int var) const
+    {
+        return static_cast<std::size_t>(var) < timeAdded.size() && timeAdded[static_cast<std::size_t>(var)];
     }
 
     std::shared_ptr<GDALAttribute> attribute(int var, const char *name) const
@@ -201,6 +248,8 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
     for (const auto &a : d.vars)
         for (const auto &g : a->GetDimensions())
             d.dimOf(g);
+    if (d.kind == "GRIB file")
+        d.addFileTime();
     if (d.vars.empty())
         throw Error(who() + ": holds no arrays");
 }
@@ -267,6 +316,8 @@ std::optional<int> GdalGrid::findVar(const std::string &name) const
 std::vector<int> GdalGrid::varDims(int var) const
 {
     std::vector<int> out;
+    if (impl_->hasAddedTime(var))
+        out.push_back(impl_->timeDim);
     for (const auto &g : impl_->vars.at(static_cast<std::size_t>(var))->GetDimensions())
         out.push_back(impl_->dimIndex.at(g->GetFullName()));
     return out;
@@ -362,10 +413,15 @@ void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const s
             return;
         }
     const GDALMDArray &array = *impl_->vars.at(static_cast<std::size_t>(var));
-    std::vector<GUInt64> first(start.begin(), start.end());
+    // a field given the file's time dimension: its one record, the rest of the block from the 2-D array
+    const std::size_t skip = impl_->hasAddedTime(var) ? 1 : 0;
+    if (skip && (start.empty() || start[0] != 0 || count[0] != 1))
+        throw Error(who() + ": " + array.GetName() + " has one time (the file's)");
+    std::vector<GUInt64> first(start.begin() + static_cast<std::ptrdiff_t>(skip), start.end());
+    const std::vector<std::size_t> size(count.begin() + static_cast<std::ptrdiff_t>(skip), count.end());
     const QuietGdal quiet;
     const bool read =
-        array.Read(first.data(), count.data(), nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), out);
+        array.Read(first.data(), size.data(), nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), out);
     if (read)
     {
         std::size_t n = 1;

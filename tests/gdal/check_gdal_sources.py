@@ -15,7 +15,8 @@ metadata, as Copernicus Marine publishes them: time-chunked (1, 1, ny, nx), blos
   4. a server that is down: exit 2 naming the URL; nothing written;
   5. a GRIB2 file written by GDAL's GRIB driver (UOGRD/VOGRD, discipline 10, complex packing with a missing value,
      the records of a parameter in a row) plans with the travel time of the same decoded values in NetCDF (1e-12),
-     found by the GRIB parameters' standard names and by --u-var UOGRD --v-var VOGRD alike.
+     found by the GRIB parameters' standard names and by --u-var UOGRD --v-var VOGRD alike;
+  6. the same as one GRIB2 file per forecast time (RTOFS's layout), given by a pattern: the same travel time.
 """
 import functools
 import http.server
@@ -118,7 +119,19 @@ def serve(root):
     return server
 
 
-def write_grib(ds, path):
+def write_grib_hours(ds, folder):
+    """The surface level of @p ds as RTOFS lays it out: one GRIB2 file per forecast time (f000.grib2, f024.grib2,
+    ...), each holding UOGRD then VOGRD of that time; returns the file names."""
+    names = []
+    for k in range(ds.sizes["time"]):
+        hours = int((ds.time.values[k] - ds.time.values[0]) / np.timedelta64(1, "h"))
+        name = os.path.join(folder, "f%03d.grib2" % hours)
+        write_grib(ds.isel(time=[k]), name, first_hour=hours)
+        names.append(name)
+    return names
+
+
+def write_grib(ds, path, first_hour=0):
     """The surface level of @p ds as GRIB2 through GDAL's GRIB driver: UOGRD for each time, then VOGRD (discipline 10,
     category 1, parameters 2 and 3), complex packing with a missing value for the island (1 mm/s steps), latitude
     rows north first, as RTOFS writes them."""
@@ -132,7 +145,7 @@ def write_grib(ds, path):
     srs.ImportFromEPSG(4326)
     mem.SetProjection(srs.ExportToWkt())
     options = ["DATA_ENCODING=COMPLEX_PACKING", "DECIMAL_SCALE_FACTOR=3"]
-    hours = (ds.time.values - ds.time.values[0]) / np.timedelta64(1, "h")
+    hours = first_hour + (ds.time.values - ds.time.values[0]) / np.timedelta64(1, "h")
     for j, (name, parameter) in enumerate((("uo", 2), ("vo", 3))):
         for k in range(nt):
             band = 1 + j * nt + k
@@ -262,6 +275,18 @@ def main():
             if p.returncode == 0 and p_gnc.returncode == 0:
                 t, tg = travel_time(out), travel_time(os.path.join(work, "o_gnc"))
                 check(abs(t - tg) <= 1e-12 * tg, "GRIB2 %s: the NetCDF file's travel time (%r, %r)" % (label, t, tg))
+        # 6. RTOFS's layout: one GRIB2 file per forecast time, given as one forecast by a pattern
+        hourly = os.path.join(work, "hourly")
+        os.makedirs(hourly)
+        write_grib_hours(ds, hourly)
+        out = os.path.join(work, "o_hourly")
+        p = plan(glider, ["--currents", os.path.join(hourly, "f*.grib2"), "--out", out] + TRIP)
+        check(p.returncode == 0, "GRIB2 one file per forecast time plans (exit %d: %s)" % (p.returncode,
+                                                                                         p.stderr[-300:]))
+        if p.returncode == 0 and p_gnc.returncode == 0:
+            t, tg = travel_time(out), travel_time(os.path.join(work, "o_gnc"))
+            check(abs(t - tg) <= 1e-12 * tg, "GRIB2 one file per time: the single file's travel time (%r, %r)" %
+                  (t, tg))
     finally:
         if server:
             server.shutdown()
