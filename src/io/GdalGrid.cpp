@@ -134,11 +134,11 @@ struct GdalGrid::Impl
     std::string path, kind;
     bool geographic{false};  // GRIB: the arrays' grid is in longitude and latitude
     std::unique_ptr<GDALDataset> dataset;
+    std::unique_ptr<GDALDataset> timeHolder;  // the in-memory dataset of an added time coordinate (addFileTime())
     std::shared_ptr<GDALGroup> root;
     std::vector<std::shared_ptr<GDALMDArray>> vars;
     std::vector<bool> timeAdded;  // per var: a GRIB field of one time, given the file's time dimension first
     int timeDim{-1};              // that dimension (length 1), -1 without
-    std::unique_ptr<GDALDataset> timeHolder;  // the in-memory dataset of that time coordinate
     std::vector<std::shared_ptr<GDALDimension>> dims;
     std::map<std::string, int> dimIndex;  // by full name
     mutable std::mutex mutex;             // GDAL's datasets are not thread-safe
