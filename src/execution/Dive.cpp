@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "ompl_glider/current/GriddedCurrentField.h"
+#include "ompl_glider/current/CurrentField.h"
 
 namespace ompl_glider
 {
@@ -21,7 +21,7 @@ std::string where(double x, double y, double t)
 /// True when (x, y) lies outside a gridded field's nodes: the grid's edge, where the field ends, not its land.
 bool leavesGrid(const CurrentField &field, double x, double y)
 {
-    const auto *g = dynamic_cast<const GriddedCurrentField *>(&field);
+    const FieldGrid *g = field.grid();  // any gridded source, whatever reads it (CurrentField.h)
     if (!g)
         return false;
     const Region e = g->extent();
