@@ -236,7 +236,12 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
     d.dataset.reset(GDALDataset::Open(open.c_str(), GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY));
     if (!d.dataset || !(d.root = d.dataset->GetRootGroup()))
     {
-        const std::string why = CPLGetLastErrorMsg();
+        std::string why = CPLGetLastErrorMsg();
+        if (isUrl(path))  // GDAL says only what it did not find
+            why += std::string(why.empty() ? "" : " ") + "(no answer within the request time limit of " +
+                   std::to_string(std::max(1L, std::lround(remoteAccess().requestTimeout))) + " s, after " +
+                   std::to_string(remoteAccess().retries) + " retries; the server cannot be reached; or no " +
+                   (d.kind == "Zarr store" ? "Zarr store" : "GRIB file") + " there)";
         throw Error(who() + ": cannot open" + (why.empty() ? std::string() : ": " + why));
     }
     d.addGroup(d.root);

@@ -12,7 +12,7 @@ metadata, as Copernicus Marine publishes them: time-chunked (1, 1, ny, nx), blos
      (fewer than half of the store's velocity chunks);
   3. garbage: a store whose metadata is not JSON (served), a chunk that is not blosc (on disk): exit 2 naming the
      URL, or the store and the variable;
-  4. a server that is down: exit 2 naming the URL; nothing written;
+  4. a server too slow (2 s limit, one retry) or down: exit 2 naming the URL, soon; nothing written;
   5. a GRIB2 file written by GDAL's GRIB driver (UOGRD/VOGRD, discipline 10, complex packing with a missing value,
      the records of a parameter in a row) plans with the travel time of the same decoded values in NetCDF (1e-12),
      found by the GRIB parameters' standard names and by --u-var UOGRD --v-var VOGRD alike;
@@ -28,6 +28,7 @@ import subprocess
 import sys
 import tempfile
 import threading
+import time
 
 if __name__ == "__main__" and os.environ.get("OMPL_GLIDER_REEXEC") is None:
     try:
@@ -112,8 +113,21 @@ class Logged(http.server.SimpleHTTPRequestHandler):
         super().do_GET()
 
 
-def serve(root):
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(Logged, directory=root))
+class Slow(Logged):
+    """Answers every request after 30 s."""
+
+    def do_GET(self):
+        time.sleep(30)
+        super().do_GET()
+
+    def do_HEAD(self):
+        time.sleep(30)
+        super().do_HEAD()
+
+
+def serve(root, handler=Logged):
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(handler, directory=root))
+    server.daemon_threads = True
     server.asked = []
     threading.Thread(target=server.serve_forever, daemon=True).start()
     return server
@@ -247,6 +261,19 @@ def main():
               "a corrupt chunk: exit 2 naming the store and the variable (exit %d: %s)" % (p.returncode,
                                                                                          p.stderr[-300:]))
         check(not os.path.exists(os.path.join(work, "o_broken")), "a corrupt chunk: no output directory")
+
+        # 3b. a server too slow: every answer after 30 s, a request time limit of 2 s and one retry
+        slow = serve(root, Slow)
+        slow_url = "http://127.0.0.1:%d/geo.zarr" % slow.server_address[1]
+        started = time.monotonic()
+        p = plan(glider, ["--currents", slow_url, "--request-timeout", "2", "--retries", "1", "--out",
+                          os.path.join(work, "o_slow")] + TRIP)
+        waited = time.monotonic() - started
+        check(p.returncode == 2 and slow_url in p.stderr, "slow server: exit 2 naming the URL (exit %d: %s)" %
+              (p.returncode, p.stderr[-300:]))
+        check(waited < 20, "slow server: gave up within the time limit and its retry (%.1f s)" % waited)
+        slow.shutdown()
+        slow.server_close()
 
         # 4. a server that is down
         server.shutdown()
