@@ -70,7 +70,7 @@ constexpr double kPi = 3.14159265358979323846;
 /// The budget of the rescue where the sweep finds no extremal (finer scans, the level set): this many times the
 /// time the plan took before the check, at least kRescueMinimum seconds, at most the check's time limit.
 constexpr double kRescueFactor = 10.0;
-constexpr double kRescueMinimum = 2.0;
+constexpr double kRescueMinimum = 1.0;
 
 /// Headings of each finer scan, and how many times a scan is narrowed about its nearest miss.
 constexpr int kWindowHeadings = 360;

@@ -100,7 +100,7 @@ TEST(TrustProperty, StrongCurrentsOnSeveralSeeds)
     for (unsigned k = 0; k < 3; ++k)
     {
         // goals east of the start (along the core: elsewhere most goals at these speeds are out of reach)
-        const auto [n, r] = checkTrials({{"jet", {{0.2, 3}, {0.15, 3}}}}, base + k, true);
+        const auto [n, r] = checkTrials({{"jet", {{0.2, 2}, {0.15, 3}}}}, base + k, true);
         trials += n;
         reachable += r;
     }
