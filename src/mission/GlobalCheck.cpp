@@ -115,8 +115,7 @@ LevelSetAid levelSetAid(const std::shared_ptr<const GliderContext> &ctx, Point2 
     LevelSetParams p;
     p.cellSize = defaultLevelSetResolution(*ctx);
     p.clearance = 0.5 * p.cellSize;
-    const Reachability r =
-        LevelSetSolver(ctx, p).solve(s.x, s.y, departure, tEnd, g, true, stop);
+    const Reachability r = LevelSetSolver(ctx, p).solve(s.x, s.y, departure, tEnd, g, true, stop);
     LevelSetAid aid;
     if (!r.goalReached || stop())
         return aid;
@@ -183,8 +182,8 @@ ZermeloSolution findExtremal(const std::shared_ptr<GliderContext> &ctx, ZermeloP
     return sol;
 }
 
-/// The level set's first arrival is first order in its cell and never early by much: a route within this fraction of it
-/// is kept without planning the level set's route.
+/// The level set's first arrival is first order in its cell and never early by much: a route within this fraction of
+/// it is kept without planning the level set's route.
 constexpr double kLevelSetMargin = 0.02;
 
 /// The level set's route through the pipeline (the LevelSet planner, its time limit the plan's or the fallback's),
@@ -344,7 +343,8 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     check.candidates.push_back(plannerCandidate(r));
     ZermeloParams zp = checkedExtremalParams(problem, ctx, r.speed, bound);
     // the check keeps to the plan's time limit (the fallbacks' where none is set): its scans and its level set stop
-    check.timeLimit = o.timeLimit > 0 ? o.timeLimit : m.planner.timeLimit > 0 ? m.planner.timeLimit : kFallbackTimeLimit;
+    check.timeLimit =
+        o.timeLimit > 0 ? o.timeLimit : m.planner.timeLimit > 0 ? m.planner.timeLimit : kFallbackTimeLimit;
     const auto deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                    std::chrono::duration<double>(check.timeLimit));
     zp.stop = [deadline, &check] {

@@ -46,7 +46,8 @@ import pandas as pd
 import xarray as xr
 
 failures = []
-TRIP = ["--start=-74.2,30.4", "--goal=-72.1,32.3", "--speed", "0.5", "--departure", "2026-06-01T03:00:00Z", "--beyond", "hold"]
+TRIP = ["--start=-74.2,30.4", "--goal=-72.1,32.3", "--speed", "0.5", "--departure", "2026-06-01T03:00:00Z",
+        "--beyond", "hold"]
 
 
 def check(cond, what):
