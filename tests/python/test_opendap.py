@@ -131,3 +131,20 @@ def test_ctrl_c_during_a_fleet_writes_no_folder(tmp_path):
     assert time.monotonic() - start < 15.0
     timer.join()
     assert not (tmp_path / "fleet").exists()
+
+
+def test_zarr_store_plans_as_its_netcdf(tmp_path):
+    # Field.netcdf() takes a Zarr store (read through GDAL): a Copernicus-like store written by xarray plans with the
+    # travel time of the same data in NetCDF, to the bit
+    spec = importlib.util.spec_from_file_location("check_gdal_sources", os.path.join(SOURCE, "tests", "gdal",
+                                                                                   "check_gdal_sources.py"))
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    ds = mod.forecast(nt=3, ny=41, nx=49)
+    mod.write_store(ds, str(tmp_path / "f.zarr"), (1, 1, 16, 16), "zstd")
+    ds.to_netcdf(str(tmp_path / "f.nc"))
+    trip = dict(start=(-74.2, 30.4), goal=(-72.1, 32.3), speed=0.5, departure="2026-06-01T03:00:00Z")
+    a = ompl_glider.plan(field=ompl_glider.Field.netcdf(tmp_path / "f.zarr", horizon="hold"), **trip)
+    b = ompl_glider.plan(field=ompl_glider.Field.netcdf(tmp_path / "f.nc", horizon="hold"), **trip)
+    assert a.solved and b.solved, (a.reason, b.reason)
+    assert a.travel_time == b.travel_time
