@@ -180,9 +180,9 @@ void setAnalytic(MissionSpec &m, const std::string &type, const std::map<std::st
     const CurrentFieldKind *kind = findCurrentFieldKind(type);
     std::string names;
     for (const CurrentFieldKind &k : currentFieldKinds())
-        if (!k.gridded)
+        if (!k.gridded())
             names += (names.empty() ? "" : ", ") + k.name;
-    if (!kind || kind->gridded)
+    if (!kind || kind->gridded())
         throw Error("analytic field: unknown flow '" + type + "' (expected one of " + names + ")");
     for (const auto &[name, value] : parameters)
     {
@@ -402,7 +402,7 @@ void bindMission(py::module_ &m)
     m.def("analytic_fields", []() {
         std::map<std::string, std::map<std::string, double>> out;
         for (const CurrentFieldKind &k : currentFieldKinds())
-            if (!k.gridded)
+            if (!k.gridded())
                 out[k.name] = std::map<std::string, double>(k.parameters.begin(), k.parameters.end());
         return out;
     });

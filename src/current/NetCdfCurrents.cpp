@@ -13,67 +13,10 @@
 
 namespace ompl_glider
 {
-double NetCdfCurrents::fieldTime(const std::string &text) const
-{
-    const std::string s = netcdf_detail::trim(text);
-    char *end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if (!s.empty() && end && *end == '\0' && std::isfinite(v))
-        return v;
-    if (!dated)
-        throw Error("time '" + text + "': the forecast has no dated time axis; give a number (field time units)");
-    return secondsSinceCalendarEpoch(s, calendar) - originSeconds;
-}
-
-std::string NetCdfCurrents::isoTime(double t) const
-{
-    if (!dated)
-    {
-        std::ostringstream os;
-        os << t;
-        return os.str();
-    }
-    return formatDateTime(dateFromCalendarEpoch(originSeconds + t, calendar));
-}
-
-LonLat NetCdfCurrents::toGeographic(Point2 p) const
-{
-    if (projection)
-        return projection->inverse(p.x, p.y);
-    return {p.x / xyMetres, p.y / xyMetres};  // the file's own x/y units
-}
-
-Point2 NetCdfCurrents::toLocal(LonLat g) const
-{
-    if (projection)
-        return projection->forward(g.lon, g.lat);
-    return {g.lon * xyMetres, g.lat * xyMetres};
-}
-
 bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &opt)
 {
     netcdf_detail::NcFile f(path);
     return netcdf_detail::detectLayout(f, opt).geographic;
-}
-
-bool NetCdfExtent::contains(double a, double b) const
-{
-    if (!(b >= latMin && b <= latMax))
-        return false;
-    if (!geographic)
-        return a >= lonMin && a <= lonMax;
-    const double lon = netcdf_detail::wrapTo(a, 0.5 * (lonMin + lonMax));
-    return allLongitudes || (lon >= lonMin - 1e-9 && lon <= lonMax + 1e-9);
-}
-
-std::string NetCdfExtent::text() const
-{
-    using ompl_glider::text::number;
-    if (!geographic)
-        return xName + " " + number(lonMin) + ".." + number(lonMax) + ", " + yName + " " + number(latMin) + ".." +
-               number(latMax);
-    return (allLongitudes ? std::string("lon all") : "lon " + number(lonMin) + ".." + number(lonMax)) + ", lat " +
-           number(latMin) + ".." + number(latMax);
 }
 
 NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOptions &opt)

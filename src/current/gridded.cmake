@@ -8,6 +8,8 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/GriddedLocator.cpp
   ${CMAKE_CURRENT_LIST_DIR}/GriddedBounds.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CoastEdges.cpp
+  # the seam of gridded sources (ForecastSource.h)
+  ${CMAKE_CURRENT_LIST_DIR}/ForecastSource.cpp
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
@@ -31,5 +33,7 @@ if(OMPL_GLIDER_WITH_NETCDF)
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/TracerLand.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/NodeCoordinates.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/ForecastFiles.cpp
+    # the reader as the registry's gridded source `netcdf`
+    ${CMAKE_CURRENT_LIST_DIR}/netcdf/NetCdfSource.cpp
   )
 endif()

@@ -6,6 +6,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/RemoteSource.cpp  # remote sources: settings, the record of what came from where
   ${CMAKE_CURRENT_LIST_DIR}/GeoBox.cpp  # lon/lat boxes: regions, the trip's box, great circles
   ${CMAKE_CURRENT_LIST_DIR}/TempFolder.cpp  # the folder for temporary files (TMPDIR), checked
+  ${CMAKE_CURRENT_LIST_DIR}/FileList.cpp  # a forecast's files: paths, glob patterns, URLs
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES

@@ -1,6 +1,5 @@
 // A start or goal on a forecast's land: the nearest water, named in the refusal or taken as the endpoint
-// (safety.snap_to_water, --snap-to-water); and what reading the forecast decided that a pilot should know
-// (forecastNotes()).
+// (safety.snap_to_water, --snap-to-water).
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -14,9 +13,6 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/mission/MissionProblem.h"
-#if OMPL_GLIDER_WITH_NETCDF
-#include "ompl_glider/current/NetCdfCurrents.h"
-#endif
 
 namespace ompl_glider
 {
@@ -242,56 +238,4 @@ Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) c
     return toLocal(p.lonLat);
 }
 
-#if OMPL_GLIDER_WITH_NETCDF
-namespace
-{
-/// What came from where for one OPeNDAP source, in the report's words.
-std::string remoteNote(const RemoteFetch &f)
-{
-    const auto bytes = [](std::uint64_t b) {
-        return b >= 1000000 ? text::number(b / 1e6, 4) + " MB" : b >= 1000 ? text::number(b / 1e3, 4) + " kB"
-                                                                           : std::to_string(b) + " B";
-    };
-    std::string note = "OPeNDAP '" + f.source + "': ";
-    if (!f.opened)
-        note += "read from the cache, no network (" + bytes(f.bytesFromCache) + " of values)";
-    else
-        note += bytes(f.bytesFetched) + " of values fetched in " + std::to_string(f.requests) + " requests" +
-                (f.bytesFromCache > 0 ? ", " + bytes(f.bytesFromCache) + " from the cache" : "");
-    if (!f.cacheFile.empty())
-        note += f.cacheProblem.empty() ? "; cache file '" + f.cacheFile + "'"
-                                       : "; the cache file could not be written: " + f.cacheProblem;
-    if (!f.cacheIgnored.empty())
-        note += " (" + f.cacheIgnored + ")";
-    return note;
-}
-
-}  // namespace
-
-std::vector<std::string> forecastNotes(const NetCdfCurrents &nc)
-{
-    std::vector<std::string> notes;
-    if (!nc.projection && nc.xyMetres != 1.0)
-        notes.push_back("x/y (start, goal, region, polygons) are read in the file's axis units (" +
-                        text::number(nc.xyMetres) + " m each); the planning frame and the outputs' x/y are metres");
-    if (nc.gridAngle.rfind("variable ", 0) == 0)
-        notes.push_back("grid angle from the " + nc.gridAngle + " (velocities along the grid turned to east/north)");
-    else if (!nc.gridAngle.empty())
-        notes.push_back("grid angle " + nc.gridAngle + " (the file has no angle variable and its velocities do not "
-                        "say they are eastward/northward)");
-    const std::string loaded =
-        std::to_string(nc.loadedValues / std::max<std::size_t>(1, nc.loadedShape.empty() ? 1 : nc.loadedShape[0]));
-    if (nc.tracerLandNodes > 0)
-        notes.push_back(std::to_string(nc.tracerLandNodes) + " of the " + loaded +
-                        " nodes loaded are land because the tracer '" + nc.tracerVariable + "' is missing there (" +
-                        nc.tracerPlacement + ")");
-    if (nc.zeroLandNodes > 0)
-        notes.push_back(std::to_string(nc.zeroLandNodes) + " of the " + loaded +
-                        " nodes loaded are land only because u = v = 0 in every record of the trip "
-                        "(current.zero_velocity_land: false, --no-zero-land, takes them as water)");
-    for (const RemoteFetch &f : remoteFetchesOf(nc.files))  // OPeNDAP: what came from the network, the cache
-        notes.push_back(remoteNote(f));
-    return notes;
-}
-#endif
 }  // namespace ompl_glider

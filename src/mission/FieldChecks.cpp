@@ -10,9 +10,6 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/mission/MissionProblem.h"
-#if OMPL_GLIDER_WITH_NETCDF
-#include "ompl_glider/current/NetCdfCurrents.h"
-#endif
 
 namespace ompl_glider
 {
@@ -59,7 +56,7 @@ void MissionProblem::checkAnalyticFields() const
                     text::number(kMaxRegionSpan) + " (give its bounds in the mission's length unit)");
     auto check = [&](const std::shared_ptr<const CurrentField> &f, const CurrentSpec &c, const std::string &field) {
         const CurrentFieldKind *kind = findCurrentFieldKind(c.type);
-        if (!f || !kind || kind->gridded)
+        if (!f || !kind || kind->gridded())
             return;
         const std::string at = c.mark.file.rfind("--", 0) == 0 ? c.mark.file + ": "
                                                                  : where(m, c.mark) + "field '" + field + "': ";
@@ -74,11 +71,10 @@ void MissionProblem::checkAnalyticFields() const
         check(truth_, *m.execution.truth, "execution.truth.parameters");
 }
 
-#if OMPL_GLIDER_WITH_NETCDF
-void MissionProblem::checkDepthAxis(const NetCdfCurrents &nc) const
+void MissionProblem::checkDepthAxis(const LoadedForecast &nc) const
 {
     const MissionSpec &m = spec_;
-    if (nc.depthAxis || !(m.vehicle.depth > 0.0) || m.dive.enabled)
+    if (nc.depthLevels || !(m.vehicle.depth > 0.0) || m.dive.enabled)
         return;
     // the glider's depth asked for currents that the file does not hold: never planned at the surface in silence
     const auto it = m.marks.find("vehicle.depth");
@@ -90,7 +86,6 @@ void MissionProblem::checkDepthAxis(const NetCdfCurrents &nc) const
                 "depth average), not of " + text::number(m.vehicle.depth) + " m; plan at depth 0 on it, or on a "
                 "forecast with depth levels");
 }
-#endif
 
 void MissionProblem::checkCommonTime() const
 {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <tuple>
 #include <vector>
@@ -13,18 +14,14 @@
 #include "ompl_glider/io/GeoBox.h"
 #include "ompl_glider/io/MemoryDataset.h"
 #include "ompl_glider/io/RemoteSource.h"
-#include "ompl_glider/current/GriddedCurrentField.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/current/ForecastSource.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "../io/NumberText.h"
 
 namespace ompl_glider
 {
-namespace
-{
-}  // namespace
-
 namespace
 {
 /// A plain number (seconds after the first forecast time), not a date.
@@ -48,29 +45,40 @@ std::string regionText(const Box &r)
     return text::number(r.xMin) + "," + text::number(r.yMin) + "," + text::number(r.xMax) + "," +
            text::number(r.yMax);
 }
-/// The reader's message in the command line's words: its option fields become the flags, and a departure or
-/// region fault is prefixed with the flags that gave it.
+/// How the command line calls a forecast request's settings.
+std::map<ForecastOption, std::string> flagNames()
+{
+    return {{ForecastOption::U, "--u-var"},
+            {ForecastOption::V, "--v-var"},
+            {ForecastOption::Lon, "--lon-var"},
+            {ForecastOption::Lat, "--lat-var"},
+            {ForecastOption::Depth, "--depth-var"},
+            {ForecastOption::Time, "--time-var"},
+            {ForecastOption::VelocityUnits, "--velocity-units"},
+            {ForecastOption::TimeUnits, "--time-units"},
+            {ForecastOption::SteadyRecord, "--steady-record"},
+            {ForecastOption::Departure, "--departure"},
+            {ForecastOption::MaxDepth, "--depth"},
+            {ForecastOption::ZeroVelocityLand, "--no-zero-land"}};
+}
+
+/// The mission's request to its source, its settings named as the command line's flags.
+ForecastRequest flagRequest(const MissionSpec &m)
+{
+    ForecastRequest o = forecastRequest(m);
+    o.optionNames = flagNames();
+    return o;
+}
+
+/// The mission's gridded source.
+const GriddedSource &sourceOf(const MissionSpec &m)
+{
+    return *findCurrentFieldKind(m.current.type)->source;
+}
+
+/// A departure or region fault prefixed with the flags that gave it.
 std::string flagMessage(std::string what, const ForecastInput &q)
 {
-    // Name the command-line flags instead of the library's option fields.
-    for (const auto &[field, flag] : std::vector<std::pair<std::string, std::string>>{
-             {"NetCdfCurrentOptions::timeName/depthName/lonName/latName",
-              "--time-var/--depth-var/--lon-var/--lat-var"},
-             {"NetCdfCurrentOptions::lonName/latName", "--lon-var/--lat-var"},
-             {"NetCdfCurrentOptions::uName/vName", "--u-var/--v-var"},
-             {"NetCdfCurrentOptions::velocityUnits", "--velocity-units"},
-             {"NetCdfCurrentOptions::timeUnits", "--time-units"},
-             {"NetCdfCurrentOptions::steadyRecord", "--steady-record"},
-             {"NetCdfCurrentOptions::uName", "--u-var"},
-             {"NetCdfCurrentOptions::vName", "--v-var"},
-             {"NetCdfCurrentOptions::lonName", "--lon-var"},
-             {"NetCdfCurrentOptions::latName", "--lat-var"},
-             {"NetCdfCurrentOptions::depthName", "--depth-var"},
-             {"NetCdfCurrentOptions::timeName", "--time-var"},
-             {"NetCdfCurrentOptions::departure", "--departure"},
-             {"NetCdfCurrentOptions::maxDepth", "--depth"}})
-        for (std::size_t at = what.find(field); at != std::string::npos; at = what.find(field, at))
-            what.replace(at, field.size(), flag);
     const bool departure = what.find("depart") != std::string::npos;
     if (!q.departure.empty() && departure && what.find("--departure") == std::string::npos)
         what = "--departure " + q.departure + ": " + what;
@@ -109,7 +117,10 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
     m.directory = ".";
     m.name = fs::path(withoutCredentials(files.front())).stem().string();
     m.current = q.current;
-    m.current.type = "netcdf";
+    // the source the caller names (a registered gridded kind), else NetCDF's
+    const CurrentFieldKind *kind = findCurrentFieldKind(q.current.type);
+    if (!kind || !kind->gridded())
+        m.current.type = "netcdf";
     m.current.file = files.front();
     m.current.files = files.size() > 1 ? files : std::vector<std::string>{};
     m.current.mark = SourceMark{file, 0};
@@ -132,7 +143,9 @@ bool forecastIsGeographic(const std::vector<std::string> &list, const MissionSpe
     bool geographic = true;
     try
     {
-        geographic = netCdfIsGeographic(list, netCdfLoadOptions(m));
+        ForecastRequest o = flagRequest(m);
+        o.files = list;
+        geographic = sourceOf(m).geographic(o);
     }
     catch (const Error &e)
     {
@@ -191,18 +204,20 @@ void setRegion(MissionSpec &m, const ForecastInput &q, bool geographic)
     }
 }
 
-/// Loads the trip's region as the mission will (netCdfLoadOptions) to check the request and convert the departure;
+/// Loads the trip's region as the mission will (forecastRequest()) to check the request and convert the departure;
 /// @p epoch is set to the date of field time 0 of a steady file without dates when the departure is a date.
-NetCdfCurrents loadForecast(const std::vector<std::string> &list, const MissionSpec &m, const ForecastInput &q,
+LoadedForecast loadForecast(const std::vector<std::string> &list, const MissionSpec &m, const ForecastInput &q,
                             std::optional<double> &epoch)
 {
-    NetCdfCurrentOptions o = netCdfLoadOptions(m);
+    ForecastRequest o = flagRequest(m);
+    o.files = list;
     o.departure = q.departure;
-    NetCdfCurrents nc;
+    const GriddedSource &source = sourceOf(m);
+    LoadedForecast nc;
     try
     {
         // start and goal within the file's coordinates, before its data are read (the files' grids agree)
-        const NetCdfExtent e = readNetCdfExtent(list.front(), o);
+        const ForecastExtent e = source.extent(o);
         for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
             if (!e.contains(p.x, p.y))
                 throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (" +
@@ -210,7 +225,7 @@ NetCdfCurrents loadForecast(const std::vector<std::string> &list, const MissionS
                             (e.geographic ? ")" : "; start and goal are in the file's own x/y units)"));
         if (!q.departure.empty() && !isNumber(q.departure))
         {
-            const NetCdfTimeAxis axis = readNetCdfTimeAxis(list, o);
+            const ForecastTimeAxis axis = source.timeAxis(o);
             if (axis.steady && !axis.dated)
             {
                 try
@@ -224,7 +239,7 @@ NetCdfCurrents loadForecast(const std::vector<std::string> &list, const MissionS
                 o.departure.clear();  // departs at field time 0, which is that date
             }
         }
-        nc = loadNetCdfCurrents(list, o);
+        nc = source.load(o);
     }
     catch (const Error &e)
     {
@@ -234,22 +249,25 @@ NetCdfCurrents loadForecast(const std::vector<std::string> &list, const MissionS
 }
 
 /// The depth lies within the forecast's layers, and start and goal lie on its grid and in water.
-void checkEndpoints(const NetCdfCurrents &nc, const ForecastInput &q, const std::string &file, bool geographic)
+void checkEndpoints(const LoadedForecast &nc, const ForecastInput &q, const std::string &file, bool geographic)
 {
     const char *coords = geographic ? "lon,lat" : "x,y";
-    const GriddedCurrentField &g = *nc.field;
+    const CurrentField &g = *nc.field;
+    const FieldGrid *grid = g.grid();
+    if (!grid)
+        throw Error("'" + file + "': its source gave a field without a grid");
     // (Above the first layer is the surface layer's value, as forecasts put their first layer just below it.)
-    if (g.nz() > 1 && q.depth > g.depthAxis().back())
+    const Region extent = grid->extent();
+    if (extent.zMax > extent.zMin && q.depth > extent.zMax)
         throw Error("--depth " + text::number(q.depth) + " m lies below the deepest layer of '" + file + "' (" +
-                    text::number(g.depthAxis().back()) + " m)");
+                    text::number(extent.zMax) + " m)");
     const Point2 start = nc.toLocal({q.start.x, q.start.y});
     const Point2 goal = nc.toLocal({q.goal.x, q.goal.y});
     for (const auto &[flag, a, b, x, y] :
          {std::tuple<const char *, double, double, double, double>{"--start", q.start.x, q.start.y, start.x, start.y},
           std::tuple<const char *, double, double, double, double>{"--goal", q.goal.x, q.goal.y, goal.x, goal.y}})
     {
-        double fi, fj;
-        if (!std::isfinite(x) || !std::isfinite(y) || !g.locate(x, y, fi, fj))
+        if (!std::isfinite(x) || !std::isfinite(y) || !grid->covers(x, y))
         {
             // the loaded nodes' own bounds, in the file's coordinates (longitudes from west to east)
             throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") lies outside the grid of '" +
@@ -260,22 +278,14 @@ void checkEndpoints(const NetCdfCurrents &nc, const ForecastInput &q, const std:
         {
             // what makes land in this forecast (a cell with a land corner is land)
             std::string why;
-            auto add = [&why](const std::string &s) { why += (why.empty() ? "" : ", ") + s; };
-            if (nc.fillLandNodes > 0)
-                add("fill values of '" + nc.uVariable + "'/'" + nc.vVariable + "'");
-            if (nc.maskLandNodes > 0)
-                add("the mask variable '" + nc.maskVariable + "'");
-            if (nc.tracerLandNodes > 0)
-                add("missing values of the tracer '" + nc.tracerVariable + "'" +
-                    (nc.cornerGrid ? " (any of the 4 tracer cells around a velocity point)" : ""));
-            if (nc.zeroLandNodes > 0)
-                add("u = v = 0 in every record (--no-zero-land turns this off)");
+            for (const std::string &cause : nc.landCauses)
+                why += (why.empty() ? "" : ", ") + cause;
             const std::string at = q.current.depthAverage ? "in the depth average over " + text::number(q.current.depthAverage->first) + ".." +
                                                         text::number(q.current.depthAverage->second) +
                                                         " m (land where any depth in it is land or below the sea floor)"
                                                   : "at depth " + text::number(q.depth) + " m";
             std::string nearest;
-            if (const std::optional<Point2> w = nearestWater(g, {x, y}, q.depth, 0.01 * g.minCellSize()))
+            if (const std::optional<Point2> w = nearestWater(g, {x, y}, q.depth, 0.01 * grid->minCellSize()))
             {
                 const LonLat ll = nc.toGeographic(*w);
                 const double d = std::hypot(w->x - x, w->y - y);
@@ -291,7 +301,7 @@ void checkEndpoints(const NetCdfCurrents &nc, const ForecastInput &q, const std:
 }
 
 /// The departure lies within the forecast and leaves time to travel (a steady field takes any departure).
-void checkDeparture(const NetCdfCurrents &nc, const ForecastInput &q)
+void checkDeparture(const LoadedForecast &nc, const ForecastInput &q)
 {
     const double tDep = nc.departureTime;
     // a steady field (no time dimension, a single record, --steady-record) is the same at every time
@@ -304,7 +314,7 @@ void checkDeparture(const NetCdfCurrents &nc, const ForecastInput &q)
 }
 
 /// The forecast's calendar, the departure, the vehicle and the outputs (every format) of the mission.
-void finishSpec(MissionSpec &m, const NetCdfCurrents &nc, const std::optional<double> &epoch, const ForecastInput &q)
+void finishSpec(MissionSpec &m, const LoadedForecast &nc, const std::optional<double> &epoch, const ForecastInput &q)
 {
     if (nc.dated)
     {
@@ -353,7 +363,7 @@ MissionSpec forecastMission(const ForecastInput &q)
         checkLonLat(q);
     setRegion(m, q, geographic);
     std::optional<double> epoch;  // the date of field time 0 of a steady file without dates
-    const NetCdfCurrents nc = loadForecast(list, m, q, epoch);
+    const LoadedForecast nc = loadForecast(list, m, q, epoch);
     checkEndpoints(nc, q, file, geographic);
     checkDeparture(nc, q);
     finishSpec(m, nc, epoch, q);

@@ -20,7 +20,6 @@
 #include "ompl_glider/current/Interpolation.h"
 #include "ompl_glider/current/LocalProjection.h"
 #if OMPL_GLIDER_WITH_NETCDF
-#include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/io/NetCdfBathymetry.h"
 #endif
 #include "ompl_glider/environment/ForbiddenRegions.h"
@@ -49,23 +48,28 @@ double tripMarginKm(LonLat start, LonLat goal)
     return std::max(kMinTripMarginKm, 0.5 * greatCircleKm(start, goal));
 }
 
-#if OMPL_GLIDER_WITH_NETCDF
-NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
+std::map<ForecastOption, std::string> forecastFieldNames(const std::string &section)
+{
+    const std::string v = section + ".variables.";
+    return {{ForecastOption::U, v + "u"},
+            {ForecastOption::V, v + "v"},
+            {ForecastOption::Lon, v + "lon"},
+            {ForecastOption::Lat, v + "lat"},
+            {ForecastOption::Depth, v + "depth"},
+            {ForecastOption::Time, v + "time"},
+            {ForecastOption::VelocityUnits, section + ".velocity_units"},
+            {ForecastOption::TimeUnits, section + ".time_units"},
+            {ForecastOption::SteadyRecord, section + ".steady_record"},
+            {ForecastOption::ZeroVelocityLand, section + ".zero_velocity_land"}};
+}
+
+ForecastRequest forecastRequest(const MissionSpec &m)
 {
     const CurrentSpec &c = m.current;
-    NetCdfCurrentOptions o;
-    auto var = [&](const char *role) {
-        const auto it = c.variables.find(role);
-        return it == c.variables.end() ? std::string() : it->second;
-    };
-    o.uName = var("u");
-    o.vName = var("v");
-    o.lonName = !var("lon").empty() ? var("lon") : var("x");
-    o.latName = !var("lat").empty() ? var("lat") : var("y");
-    o.depthName = var("depth");
-    o.timeName = var("time");
-    o.maskName = var("mask");
-    o.angleName = var("angle");
+    ForecastRequest o;
+    o.files = c.forecastFiles();
+    o.variables = c.variables;
+    o.optionNames = forecastFieldNames("current");
     o.zeroVelocityLand = c.zeroVelocityLand;
     o.depthAverage = c.depthAverage;
     // the trip's records (land is decided on them): from the departure (or the window's first) to the horizon
@@ -84,13 +88,13 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     o.velocityUnits = c.velocityUnits;
     o.timeUnits = c.timeUnits;
     o.steadyRecord = c.steadyRecord;
-    o.field.xy = c.xyInterpolation;
-    o.field.depth = c.depthInterpolation;
-    o.field.time = c.timeInterpolation;
-    o.field.beyond = c.horizonPolicy;
-    o.field.name = "netcdf:" + withoutCredentials(c.file);  // shown in maps and messages: no URL's password
+    o.xy = c.xyInterpolation;
+    o.depth = c.depthInterpolation;
+    o.time = c.timeInterpolation;
+    o.beyond = c.horizonPolicy;
+    o.name = c.type + ":" + withoutCredentials(c.file);  // shown in maps and messages: no URL's password
     for (std::size_t k = 1; k < c.files.size(); ++k)
-        o.field.name += "," + withoutCredentials(c.files[k]);
+        o.name += "," + withoutCredentials(c.files[k]);
     o.maxDepth = m.dive.enabled ? m.dive.params.zMax : m.vehicle.depth;
     if (m.projection.set)
     {
@@ -161,29 +165,6 @@ NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &m)
     return o;
 }
 
-#endif
-
-std::string netCdfMissionMessage(std::string what)
-{
-    // the longer names first ("uName/vName" before "uName")
-    for (const auto &[option, field] : std::vector<std::pair<std::string, std::string>>{
-             {"NetCdfCurrentOptions::timeName/depthName/lonName/latName",
-              "current.variables.time/depth/lon/lat"},
-             {"NetCdfCurrentOptions::lonName/latName", "current.variables.lon/lat"},
-             {"NetCdfCurrentOptions::uName/vName", "current.variables.u/v"},
-             {"NetCdfCurrentOptions::uName", "current.variables.u"},
-             {"NetCdfCurrentOptions::vName", "current.variables.v"},
-             {"NetCdfCurrentOptions::lonName", "current.variables.lon"},
-             {"NetCdfCurrentOptions::latName", "current.variables.lat"},
-             {"NetCdfCurrentOptions::depthName", "current.variables.depth"},
-             {"NetCdfCurrentOptions::timeName", "current.variables.time"},
-             {"NetCdfCurrentOptions::velocityUnits", "current.velocity_units"},
-             {"NetCdfCurrentOptions::timeUnits", "current.time_units"},
-             {"NetCdfCurrentOptions::steadyRecord", "current.steady_record"}})
-        for (std::size_t at = what.find(option); at != std::string::npos; at = what.find(option, at))
-            what.replace(at, option.size(), field);
-    return what;
-}
 
 GliderProblem gulfStreamProblem()
 {
@@ -227,7 +208,7 @@ void MissionProblem::buildField()
     if (!kind)
         throw Error(where(m, m.current.mark) + "field 'current.type': unknown '" + m.current.type +
                     "' (expected one of " + currentFieldKindList() + ")");
-    if (!kind->gridded)
+    if (!kind->gridded())
     {
         field_ = makeAnalyticField(m.current.type, m.current.parameters);
         if (m.projection.set)
@@ -235,35 +216,28 @@ void MissionProblem::buildField()
         projectionScale_ = m.lengthUnitMetres;
         return;
     }
-#if OMPL_GLIDER_WITH_NETCDF
-    NetCdfCurrents nc;
+    LoadedForecast forecast;
     try
     {
-        nc = loadNetCdfCurrents(m.current.forecastFiles(), netCdfLoadOptions(m));
+        forecast = kind->source->load(forecastRequest(m));
     }
     catch (const Error &e)
     {
         // a mission file's current section (the command line's forecastMission() words its own messages)
         if (m.current.mark.line > 0)
-            throw Error(where(m, m.current.mark) + netCdfMissionMessage(e.what()));
+            throw Error(where(m, m.current.mark) + e.what());
         throw;
     }
-    checkDepthAxis(nc);
-    field_ = nc.field;
-    projection_ = nc.projection;
+    checkDepthAxis(forecast);
+    field_ = forecast.field;
+    projection_ = forecast.projection;
     projectionScale_ = 1.0;
-    xyScale_ = nc.projection ? 1.0 : nc.xyMetres;
-    forecastFiles_ = nc.files;
-    forecastNotes_ = ompl_glider::forecastNotes(nc);
-    remoteSources_ = remoteFetchesOf(nc.files);
-    std::string u = nc.uVariable;  // a wind (uwnd, u10, eastward_wind...) is called so on the map
-    std::transform(u.begin(), u.end(), u.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
-    if (u == "uwnd" || u == "u10" || u.find("wind") != std::string::npos)
+    xyScale_ = forecast.projection ? 1.0 : forecast.xyMetres;
+    forecastFiles_ = forecast.files;
+    forecastNotes_ = forecast.notes;
+    remoteSources_ = remoteFetchesOf(forecast.files);
+    if (forecast.wind)
         fieldWord_ = "wind";
-#else
-    throw Error(where(m, m.current.mark) + "field 'current.type': this build of ompl_glider has no NetCDF "
-                                           "support (OMPL_GLIDER_WITH_NETCDF=OFF)");
-#endif
 }
 
 std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec &t, const std::string &field) const
@@ -275,14 +249,14 @@ std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec
     const CurrentFieldKind *kind = findCurrentFieldKind(t.type);
     if (!kind)
         throw Error(at + "unknown type '" + t.type + "' (expected one of " + currentFieldKindList() + ")");
-    if (!kind->gridded)
+    if (!kind->gridded())
         return makeAnalyticField(t.type, t.parameters);
-#if OMPL_GLIDER_WITH_NETCDF
     // Read like the forecast (same region and projection centre), every record of the region: its time axis may
     // start at another date, so the trip's records are not known in its own time.
     MissionSpec tm = m;
     tm.current = t;
-    NetCdfCurrentOptions o = netCdfLoadOptions(tm);
+    ForecastRequest o = forecastRequest(tm);
+    o.optionNames = forecastFieldNames(field);  // the source's settings are this section's
     o.departure.clear();
     o.horizon = std::numeric_limits<double>::infinity();
     if (projection_)
@@ -290,42 +264,31 @@ std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec
         o.refLon = projection_->lon0();
         o.refLat = projection_->lat0();
     }
-    NetCdfCurrents nc;
+    LoadedForecast f;
     try
     {
-        nc = loadNetCdfCurrents(t.forecastFiles(), o);
+        f = kind->source->load(o);
     }
     catch (const Error &e)
     {
-        // the loader's hints name the forecast's options: here they are this source's
-        std::string what = netCdfMissionMessage(e.what());
-        for (std::size_t k = what.find("current."); k != std::string::npos; k = what.find("current.", k))
-        {
-            what.replace(k, 8, field + ".");
-            k += field.size() + 1;
-        }
-        throw Error(at + what);
+        throw Error(at + e.what());
     }
-    if (!nc.projection != !projection_)
+    if (!f.projection != !projection_)
         throw Error(at + (projection_ ? "it has no longitude/latitude but the forecast has"
                                       : "it has longitude/latitude but the forecast is Cartesian"));
     // Field time 0 of each file is its first time: shifted so that both are asked at the same date.
     double shift = 0.0;
-    if (m.fileCalendar && nc.dated && !nc.steady)
+    if (m.fileCalendar && f.dated && !f.steady)
     {
-        if (nc.calendar != m.fileCalendar->calendar)
-            throw Error(at + "its calendar (" + calendarName(nc.calendar) + ") differs from the forecast's (" +
+        if (f.calendar != m.fileCalendar->calendar)
+            throw Error(at + "its calendar (" + calendarName(f.calendar) + ") differs from the forecast's (" +
                         calendarName(m.fileCalendar->calendar) + ")");
-        shift = m.fileCalendar->originSeconds - nc.originSeconds;
+        shift = m.fileCalendar->originSeconds - f.originSeconds;
     }
-    else if (m.fileCalendar && !nc.dated && !nc.steady)
+    else if (m.fileCalendar && !f.dated && !f.steady)
         throw Error(at + "its time axis has no dates ('<unit> since <date>') but the forecast's has: the two cannot "
                          "be aligned");
-    return shift == 0.0 ? std::shared_ptr<const CurrentField>(nc.field)
-                        : std::make_shared<ShiftedTimeField>(nc.field, shift);
-#else
-    throw Error(at + "this build of ompl_glider has no NetCDF support (OMPL_GLIDER_WITH_NETCDF=OFF)");
-#endif
+    return shift == 0.0 ? f.field : std::make_shared<ShiftedTimeField>(f.field, shift);
 }
 
 void MissionProblem::buildMembers()

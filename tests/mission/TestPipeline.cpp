@@ -303,7 +303,7 @@ TEST(Registry, AnalyticCurrentKindsWithDefaultsAndErrors)
 {
     for (const CurrentFieldKind &k : currentFieldKinds())
     {
-        if (k.gridded)
+        if (k.gridded())
         {
             EXPECT_THROW(makeAnalyticField(k.name), Error);
             continue;

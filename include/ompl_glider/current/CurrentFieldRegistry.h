@@ -1,8 +1,11 @@
 #pragma once
 /// @file CurrentFieldRegistry.h
-/// @brief The kinds of current field known by name (mission files' `current.type`, the command line, the docs).
-/// Adding an analytic flow is one entry here (see docs/ARCHITECTURE.md).
+/// @brief The kinds of current field known by name (mission files' `current.type`, the command line, the docs):
+/// analytic flows made from parameters, and gridded sources that read a forecast (ForecastSource.h). Adding an
+/// analytic flow is one entry here; adding a gridded source is a GriddedSource and one entry here or a
+/// registerCurrentFieldKind() call (see docs/ARCHITECTURE.md).
 
+#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -11,6 +14,7 @@
 #include <vector>
 
 #include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/current/ForecastSource.h"
 
 namespace ompl_glider
 {
@@ -21,20 +25,38 @@ struct CurrentFieldKind
     std::string description;  ///< one line for the docs and messages
     /// Parameters of an analytic kind with their defaults (empty for gridded kinds, which take a file).
     std::vector<std::pair<std::string, double>> parameters;
-    bool gridded{false};  ///< read from a file (NetCDF); made by the NetCDF loader, not by make
     /// Makes an analytic field from a complete parameter map (every name of `parameters`); null for gridded kinds.
     std::function<std::shared_ptr<const CurrentField>(const std::map<std::string, double> &)> make;
+    /// The source that reads a gridded kind's forecast (files, folders or URLs); null for analytic kinds.
+    std::shared_ptr<const GriddedSource> source;
+
+    /// @brief Read from files by a source (not made from parameters).
+    bool gridded() const
+    {
+        return source != nullptr;
+    }
 };
 
 /// @brief Every kind: meandering_jet ([EichhornRAS] Sec. 6.1), uniform, linear_shear, double_gyre ([ShaddenLCS]),
-/// rankine_vortex ([LollaLevelSet]), netcdf.
-const std::vector<CurrentFieldKind> &currentFieldKinds();
+/// rankine_vortex ([LollaLevelSet]), netcdf (NetCDF files, OPeNDAP, Zarr and GRIB: netCdfSource()), then those of
+/// registerCurrentFieldKind(). A deque: an entry never moves.
+const std::deque<CurrentFieldKind> &currentFieldKinds();
+
+/// @brief Adds @p kind, so that mission files, the command line's forecast missions (ForecastInput::current.type)
+/// and Python can ask for it by name like a built-in kind (a source of an application, or one a test registers).
+/// Call it before planning starts, not while other threads plan; pointers from findCurrentFieldKind() stay valid.
+/// @throws Error when the kind has no name, has neither a make function nor a source (or both), or its name is
+/// taken.
+void registerCurrentFieldKind(CurrentFieldKind kind);
 
 /// @brief The kind called @p name; null when there is none.
 const CurrentFieldKind *findCurrentFieldKind(const std::string &name);
 
 /// @brief The names of all kinds joined by @p separator.
 std::string currentFieldKindList(const std::string &separator = ", ");
+
+/// @brief The names of the gridded kinds joined by @p separator ("netcdf").
+std::string griddedKindList(const std::string &separator = ", ");
 
 /// @brief Makes an analytic field of kind @p name; missing parameters take their defaults.
 /// @throws Error for an unknown kind, a gridded kind or a parameter the kind does not have.

@@ -11,8 +11,10 @@
 
 #include "ompl_glider/Geometry.h"
 #include "ompl_glider/io/Time.h"
+#include "ompl_glider/current/ForecastSource.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/LocalProjection.h"
+#include "ompl_glider/io/FileList.h"
 
 namespace ompl_glider
 {
@@ -90,22 +92,12 @@ struct NetCdfCurrentOptions
 };
 
 /// @brief A loaded forecast: the field (x east / y north in metres, t in seconds since the first forecast time of
-/// the file, or of the earliest file of a forecast in several files; raw units in Cartesian mode) and what is needed to convert coordinates and times for output.
-struct NetCdfCurrents
+/// the file, or of the earliest file of a forecast in several files; raw units in Cartesian mode), its frame and
+/// clock (ForecastFrame: projection, calendar, departure, the loaded bounds, the files read) and what the reader
+/// decided.
+struct NetCdfCurrents : ForecastFrame
 {
     std::shared_ptr<GriddedCurrentField> field;       ///< ready to plan on
-    std::shared_ptr<const LocalProjection> projection;  ///< null in Cartesian mode
-    double xyMetres{1.0};  ///< Cartesian mode: metres per unit of the file's x/y axes (1000 for km)
-    bool geographic{false};          ///< true when x/y come from longitude/latitude
-    bool dated{false};               ///< true when the time axis has CF units "<unit> since <date>"
-    bool steady{false};              ///< one time: no time dimension, a single record, or steadyRecord; the field
-                                     ///< is the same at all times (timeEnd() = +inf) and any departure is inside it
-    Calendar calendar{Calendar::Standard};  ///< the file's calendar (dated files)
-    double originSeconds{0.0};       ///< first forecast time (steadyRecord: the record's time), seconds since the
-                                     ///< calendar epoch (dated files)
-    double departureTime{0.0};       ///< the departure in field time (0 when none was given)
-    double forecastBegin{0.0};       ///< first forecast time of the file, field time
-    double forecastEnd{0.0};         ///< last forecast time of the file, field time
     std::string uVariable, vVariable;  ///< variables read
     bool depthAxis{false};           ///< u has a depth dimension (else its currents are of one level)
     std::vector<std::size_t> loadedShape;  ///< nt, nz, ny, nx actually loaded
@@ -127,29 +119,11 @@ struct NetCdfCurrents
     std::size_t maskLandNodes{0};    ///<   land in the mask (in some record of the trip, for a mask with a time axis)
     std::size_t tracerLandNodes{0};  ///<   a tracer's missing value (tracerVariable) in some record of the trip
     std::size_t zeroLandNodes{0};    ///<   u = v = 0 exactly in every record of the trip (zeroVelocityLand)
-    /// Bounds of the loaded nodes in the file's coordinates: longitudes from lonMin in [-180, 180) east to lonMax
-    /// (beyond 180 when the nodes cross the antimeridian), latitudes; x and y in Cartesian mode (file units).
-    double lonMin{0.0}, lonMax{0.0}, latMin{0.0}, latMax{0.0};
     std::size_t fileValues{0};       ///< values per component in the file variable (summed over the files read)
     std::size_t loadedValues{0};     ///< values per component loaded
-    /// The files read, in time order: the one file, or those of a forecast in several files that hold records
-    /// of the trip's time window (with its stencil margin).
-    std::vector<std::string> files;
     /// Forecast in several files: records of a file left out because a later file (the newer forecast) starts
     /// at or before their time, counted over all the files given; 0 for one file.
     std::size_t droppedRecords{0};
-
-    /// @brief Field time (seconds after the first forecast time) of an ISO 8601 date in the file's calendar, or
-    /// of a plain number (seconds after the first forecast time). @throws Error for undated files given a date.
-    double fieldTime(const std::string &isoOrSeconds) const;
-    /// @brief ISO 8601 date of a field time (dated files; else the number).
-    std::string isoTime(double t) const;
-    /// @brief Planning-frame point (x, y) in metres -> (lon, lat) in degrees, longitude in [-180, 180) whatever
-    /// the file's convention (LocalProjection::inverse()); identity (lon = x, lat = y) in Cartesian mode.
-    LonLat toGeographic(Point2 p) const;
-    /// @brief (lon, lat) in degrees, longitude in either convention (0..360 or -180..180) -> planning-frame point
-    /// (x, y) in metres; identity (x = lon, y = lat) in Cartesian mode.
-    Point2 toLocal(LonLat g) const;
 };
 
 /// @brief Loads u/v from a NetCDF file into a GriddedCurrentField (see NetCdfCurrentOptions for what is found
@@ -253,43 +227,16 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
 /// velocities or grid cannot be found.
 bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &options = {});
 
-/// @brief The horizontal extent of a forecast file, from its coordinate variables alone (the velocities are not read).
-struct NetCdfExtent
-{
-    bool geographic{false};  ///< longitude/latitude (else Cartesian x/y in the file's units)
-    bool allLongitudes{false};  ///< the longitudes go round the globe: every longitude lies in the file
-    double lonMin{0.0}, lonMax{0.0};  ///< lonMin in [-180, 180), lonMax = lonMin + width (x in Cartesian files)
-    double latMin{0.0}, latMax{0.0};  ///< (y in Cartesian files)
-    std::string xName, yName;         ///< the coordinate variables
-    /// True when (a, b) (lon/lat in either convention, or x/y) lies within the bounds (a curvilinear grid's bounds are
-    /// those of its nodes: a point inside them may still lie outside the grid).
-    bool contains(double a, double b) const;
-    /// "lon -80..-76, lat 25..28" (or "x 0..100, y 0..50").
-    std::string text() const;
-};
+/// @brief The horizontal extent of a forecast file (ForecastSource.h).
+using NetCdfExtent = ForecastExtent;
 
 /// @brief The extent of the velocities' grid with the loader's own detection (the names of `options`), reading the
 /// coordinate variables only: what the command line checks the start and goal against before a forecast's data are
 /// read. @throws Error as loadNetCdfCurrents() does for a file whose velocities or grid cannot be found.
 NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOptions &options = {});
 
-/// @brief The time axis of a forecast file as loadNetCdfCurrents() reads it, without its velocities: what a
-/// mission needs to turn ISO dates into field times before the forecast is loaded.
-///
-/// For a dated axis, calendar and originSeconds are the values NetCdfCurrents::calendar / originSeconds of the
-/// loaded forecast take, so field time t is the date dateFromCalendarEpoch(originSeconds + t, calendar).
-struct NetCdfTimeAxis
-{
-    bool found{false};      ///< the velocities have a time dimension with a coordinate variable (else a steady field)
-    bool steady{false};     ///< the loaded field is steady: no time dimension, a single record, or steadyRecord
-    bool dated{false};      ///< CF units "<unit> since <date>" (else raw values: loadNetCdfCurrents() accepts
-                            ///< them only in Cartesian files)
-    std::string variable;   ///< the time coordinate variable
-    Calendar calendar{Calendar::Standard};  ///< its calendar attribute (dated axes)
-    double originSeconds{0.0};  ///< first time, seconds since the calendar epoch (dated axes; 0 otherwise)
-    std::size_t size{0};        ///< number of forecast times
-    double span{0.0};           ///< last minus first time: seconds (dated axes) or the file's units (raw values)
-};
+/// @brief The time axis of a forecast file as loadNetCdfCurrents() reads it (ForecastSource.h).
+using NetCdfTimeAxis = ForecastTimeAxis;
 
 /// @brief Finds and reads the time axis of the forecast's velocities with the loader's own detection (the same
 /// code): the eastward velocity (NetCdfCurrentOptions::uName, else its CF standard_name or usual names), then
@@ -349,12 +296,8 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::vector<std::string> &paths, const N
 /// @brief netCdfIsGeographic() of every file; @throws Error naming two files that disagree.
 bool netCdfIsGeographic(const std::vector<std::string> &paths, const NetCdfCurrentOptions &options = {});
 
-/// @brief The files of a list: each item a path, or a shell-style pattern (an item with `*`, `?` or `[`) expanded
-/// with glob(3) (its matches in glob's order: by name). Relative items are taken relative to baseDir (empty: as
-/// they are). @throws Error for an empty item, a pattern that matches nothing (naming it) or cannot be expanded,
-/// and an empty list. Existence of plain paths is not checked.
-std::vector<std::string> expandForecastFiles(const std::vector<std::string> &items, const std::string &baseDir = "");
-
-/// @brief expandForecastFiles() of a comma-separated list ("a.nc,b.nc", "hycom_202603*.nc", "a.nc, b_*.nc").
-std::vector<std::string> forecastFileList(const std::string &commaSeparated, const std::string &baseDir = "");
+/// @brief The NetCDF reader as the registry's gridded source `netcdf` (ForecastSource.h): one file, several files
+/// read as one, OPeNDAP URLs, and Zarr stores and GRIB files (through GDAL); its messages name the request's
+/// settings in the caller's words (ForecastRequest::optionNames).
+std::shared_ptr<const GriddedSource> netCdfSource();
 }  // namespace ompl_glider

@@ -4,6 +4,7 @@
 /// forbidden regions, the planning frame (and its geographic projection), start and goal. The planning pipeline
 /// (Planning.h) plans on it; the output layer (output/) writes from it.
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,6 +16,7 @@
 #include "ompl_glider/cost/DiveProfile.h"
 #include "ompl_glider/current/CorrectedField.h"
 #include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/current/ForecastSource.h"
 #include "ompl_glider/environment/KeepOffZone.h"
 #include "ompl_glider/environment/Environment.h"
 #include "ompl_glider/mission/MissionSpec.h"
@@ -25,8 +27,7 @@ namespace ompl_glider
 class ForbiddenRegions;
 struct ObservationReport;
 class ForbiddenCells;
-struct NetCdfCurrentOptions;
-struct NetCdfCurrents;
+struct LoadedForecast;
 class LocalProjection;
 struct LandPolygon;
 struct GeoBox;
@@ -48,7 +49,7 @@ struct MissionPolygon
 class MissionProblem
 {
 public:
-    /// @brief Builds the field (analytic or NetCDF), the projection, the box, start/goal and the environment.
+    /// @brief Builds the field (analytic, or a gridded source's forecast), the projection, the box, start/goal and the environment.
     /// @throws Error naming the mission file and field when something does not fit (start outside the box, ...).
     explicit MissionProblem(MissionSpec spec);
     ~MissionProblem();
@@ -63,7 +64,7 @@ public:
     {
         return field_;
     }
-    /// @brief The NetCDF files read for the current, in time order (the one file, or those of a forecast in several
+    /// @brief The forecast's files (or URLs) read for the current, in time order (the one file, or those of a forecast in several
     /// files that hold the trip's records); empty for an analytic current.
     const std::vector<std::string> &forecastFiles() const
     {
@@ -198,8 +199,8 @@ private:
     void buildField();
     void buildTruth();
     void buildMembers();
-    /// A glider's depth on a forecast without a depth dimension is refused (FieldChecks.cpp).
-    void checkDepthAxis(const NetCdfCurrents &nc) const;
+    /// A glider's depth on a forecast without depth levels is refused (FieldChecks.cpp).
+    void checkDepthAxis(const LoadedForecast &forecast) const;
     /// Ensemble members without a common time are refused, each named with its span (FieldChecks.cpp).
     void checkCommonTime() const;
     /// A current source other than the forecast (a truth, an ensemble member) on the forecast's frame and dates.
@@ -266,8 +267,9 @@ constexpr double kMinTripMarginKm = 25.0;
 /// least kMinTripMarginKm (room for the detours a current forces).
 double tripMarginKm(LonLat start, LonLat goal);
 
-/// @brief How a NetCDF mission reads its forecast: variable names (lon/lat, else x/y), interpolation schemes,
-/// horizon policy, depth range, projection and the region to load: the mission's region, else the trip's. For
+/// @brief What a mission asks of its gridded source (ForecastSource.h): the files, variable names (lon/lat, else
+/// x/y), interpolation schemes, horizon policy, depth range, projection, the settings' names in the mission file's
+/// words (forecastFieldNames("current")) and the region to load: the mission's region, else the trip's. For
 /// lon/lat start and goal that is tripBox() of the two with tripMarginKm(): their lon/lat box the shorter way
 /// round (across the antimeridian or Greenwich when that is shorter, in whatever convention they are written),
 /// widened by the margin converted to degrees of latitude and of longitude at the box's highest |latitude|, up to
@@ -275,22 +277,16 @@ double tripMarginKm(LonLat start, LonLat goal);
 /// plus half its larger side (at least 0.2 units) on each side. The projection's reference is the region's
 /// centre. Shared by MissionProblem and forecastMission() so that a forecast from the command line and the same
 /// forecast in a mission file are the same problem.
-/// @throws Error for an unknown interpolation scheme, or a lon/lat start or goal within 90 - kMaxGridLatitude
-/// degrees of a pole (naming it). (Only with OMPL_GLIDER_WITH_NETCDF.)
-NetCdfCurrentOptions netCdfLoadOptions(const MissionSpec &mission);
+/// @throws Error for a lon/lat start or goal within 90 - kMaxGridLatitude degrees of a pole (naming it).
+ForecastRequest forecastRequest(const MissionSpec &mission);
 
-/// @brief What a loaded forecast decided that a pilot should know (MissionProblem::forecastNotes()), one sentence
-/// each: the grid angle (NetCdfCurrents::gridAngle), land from zero velocities. (Only with OMPL_GLIDER_WITH_NETCDF.)
-std::vector<std::string> forecastNotes(const NetCdfCurrents &forecast);
+/// @brief How a mission file calls the settings of a forecast request in its section @p section ("current",
+/// "execution.truth", "current.ensemble[1]"): "current.variables.u", "current.time_units", ...
+std::map<ForecastOption, std::string> forecastFieldNames(const std::string &section);
 
 /// @brief The water point nearest to @p p at depth z: just beyond (by @p step, in planning units) the closest point
 /// of the field's land boundary (CurrentField::landBoundary()), checked with inWater(); nullopt when none is found.
 std::optional<Point2> nearestWater(const CurrentField &field, Point2 p, double z, double step);
-
-/// @brief The NetCDF reader's message in a mission file's words: its option fields (NetCdfCurrentOptions::uName,
-/// ::timeUnits, ::steadyRecord, ...) become the fields of the mission's current section (current.variables.u,
-/// current.time_units, current.steady_record, ...).
-std::string netCdfMissionMessage(std::string readerMessage);
 
 /// @brief Default lattice spacing (metres) on a forecast: half the smallest grid cell, but no coarser than 1/25
 /// of the start-goal distance and no finer than 1/200 of it, rounded to two significant digits. (Half a cell

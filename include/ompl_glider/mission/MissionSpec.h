@@ -73,7 +73,7 @@ struct CurrentSpec
     bool isForecast() const
     {
         const CurrentFieldKind *kind = findCurrentFieldKind(type);
-        return kind && kind->gridded;
+        return kind && kind->gridded();
     }
     /// Analytic parameters (names per type: meandering_jet B0 epsilon omega theta k c; uniform u v;
     /// linear_shear a; double_gyre amplitude length). Missing ones take the class defaults.

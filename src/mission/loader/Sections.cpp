@@ -1,4 +1,4 @@
-// Readers of the mission's sections: current (with the NetCDF file's calendar), region, departure, dive profile,
+// Readers of the mission's sections: current (with the forecast's calendar), region, departure, dive profile,
 // planner and outputs ([EichhornOceans] Sec. IV mission contents).
 #include <algorithm>
 #include <cctype>
@@ -19,8 +19,8 @@
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/OutputFormats.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
+#include "ompl_glider/io/FileList.h"
 #if OMPL_GLIDER_WITH_NETCDF
-#include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/current/UnitConversion.h"
 #endif
 
@@ -29,35 +29,30 @@ namespace ompl_glider::mission_loader
 namespace
 {
 constexpr double kMaxSupportingPoints = 10000.0;  ///< departure-window samples, each a whole search
-/// Time origin of a NetCDF forecast (its first time, as the loader uses it): ISO dates of the mission are field
-/// times in the file's calendar, and the outputs get calendar dates. The time axis is found by the loader's own
-/// detection (readNetCdfTimeAxis(): variables.time, else axis "T", standard_name "time" or "<unit> since <date>").
+/// Time origin of a gridded forecast (its first time, as its source loads it): ISO dates of the mission are field
+/// times in the file's calendar, and the outputs get calendar dates. The time axis is found by the source's own
+/// detection (GriddedSource::timeAxis(): variables.time, else the source's rules).
 void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
-#if !OMPL_GLIDER_WITH_NETCDF
-    (void)m;
-    r.fail(n["type"], "current.type",
-           "netcdf: this build of ompl_glider has no NetCDF support (OMPL_GLIDER_WITH_NETCDF=OFF)");
-#else
-    auto given = [&](const char *role) {
-        const auto it = m.current.variables.find(role);
-        return it == m.current.variables.end() ? std::string() : it->second;
-    };
-    const std::string timeName = given("time"), uName = given("u");
-    NetCdfCurrentOptions o;
-    o.timeName = timeName;
-    o.uName = uName;
+    const CurrentFieldKind &kind = *findCurrentFieldKind(m.current.type);
+    ForecastRequest o;
+    o.files = m.current.forecastFiles();
+    for (const char *role : {"time", "u"})
+        if (m.current.variables.count(role))
+            o.variables[role] = m.current.variables.at(role);
     o.timeUnits = m.current.timeUnits;
     o.steadyRecord = m.current.steadyRecord;
-    NetCdfTimeAxis axis;
+    o.optionNames = forecastFieldNames("current");
+    const std::string timeName = o.variable("time"), uName = o.variable("u");
+    ForecastTimeAxis axis;
     try
     {
-        axis = readNetCdfTimeAxis(m.current.forecastFiles(), o);
+        axis = kind.source->timeAxis(o);
     }
     catch (const Error &e)
     {
         // on the option or the variable the message names when the mission gave it, else on the file
-        const std::string what = netCdfMissionMessage(e.what());
+        const std::string what = e.what();
         if (n["time_units"] && what.find("current.time_units") != std::string::npos)
             r.fail(n["time_units"], "current.time_units", what);
         if (n["steady_record"] && what.find("current.steady_record") != std::string::npos)
@@ -76,7 +71,6 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
     fc.originSeconds = axis.originSeconds;
     m.fileCalendar = fc;
     m.epoch = fc.originSeconds - secondsSinceCalendarEpoch(DateTime{}, axis.calendar);
-#endif
 }
 
 /// current.velocity_units (checked with UDUNITS-2 now: it does not depend on the file), current.time_units
@@ -134,14 +128,13 @@ void readForecastFiles(const Reader &r, const YAML::Node &n, const std::string &
     if (n.IsSequence())
     {
         if (n.size() == 0)
-            r.fail(n, f, "an empty list: expected NetCDF files or glob patterns");
+            r.fail(n, f, "an empty list: expected forecast files or glob patterns");
         for (std::size_t k = 0; k < n.size(); ++k)
             items.push_back(resolved(r.text(n[k], f)));
     }
     else
         items.push_back(resolved(r.text(n, f)));
     std::vector<std::string> files = items;
-#if OMPL_GLIDER_WITH_NETCDF
     try
     {
         files = expandForecastFiles(items);
@@ -150,7 +143,6 @@ void readForecastFiles(const Reader &r, const YAML::Node &n, const std::string &
     {
         r.fail(n, f, e.what());
     }
-#endif
     for (const std::string &file : files)
         if (!isRemoteSource(file) && !fileExists(file))
             r.fail(n, f, "cannot open '" + file + "'");
@@ -164,7 +156,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     if (n.IsMap() && n["ensemble"])
     {
-        // members of one kind (analytic flows, or NetCDF files on one calendar); the first sets names and dates
+        // members of one kind (analytic flows, or forecasts on one calendar); the first sets names and dates
         r.checkMap(n, "current", {"ensemble"});
         const YAML::Node &l = n["ensemble"];
         if (!l.IsSequence() || l.size() < 2)
@@ -178,7 +170,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
             c.mark = {r.file(), r.line(l[i])};
             if (i > 0 && (c.isForecast()) != (members.front().isForecast()))
                 r.fail(l[i]["type"], f + ".type",
-                       "every member must be of one kind: all NetCDF files or all analytic flows (the first is " +
+                       "every member must be of one kind: all forecasts read from files or all analytic flows (the first is " +
                            members.front().type + ")");
             members.push_back(c);
         }
@@ -223,15 +215,15 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
         r.fail(n["parameters"]["length"], f + ".parameters.length", "expected a number > 0");
     if (c.type == "rankine_vortex" && c.parameters.count("radius") && !(c.parameters["radius"] > 0))
         r.fail(n["parameters"]["radius"], f + ".parameters.radius", "expected a number > 0 (the core radius)");
-    const bool netcdf = kind.gridded;
+    const bool gridded = kind.gridded();
     for (const char *key : {"file", "variables", "interpolation", "horizon", "velocity_units", "time_units",
                             "steady_record", "zero_velocity_land", "depth_average"})
-        if (n[key] && !netcdf)
-            r.fail(n[key], f + "." + key, "only for type netcdf");
-    if (!netcdf)
+        if (n[key] && !gridded)
+            r.fail(n[key], f + "." + key, "only for type " + griddedKindList(" or ") + " (a forecast read from files)");
+    if (!gridded)
         return;
     if (!n["file"])
-        r.fail(n, f + ".file", "missing: the NetCDF forecast file");
+        r.fail(n, f + ".file", "missing: the forecast's file (type " + c.type + ")");
     readForecastFiles(r, n["file"], f + ".file", c);
     if (n["variables"])
     {
