@@ -13,7 +13,7 @@
 #include "FlagText.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/io/FileList.h"
 #include "ompl_glider/execution/Execution.h"
 #include "ompl_glider/io/GliderObservations.h"
 #include "ompl_glider/io/Length.h"

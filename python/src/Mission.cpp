@@ -20,7 +20,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/io/GeoBox.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/io/FileList.h"
 #include "ompl_glider/mission/Fleet.h"
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/mission/MissionSpec.h"

@@ -70,11 +70,14 @@ std::deque<CurrentFieldKind> &kinds()
                          q.k = p.at("k");
                          q.c = p.at("c");
                          return std::make_shared<MeanderingJet>(q);
-                     }});
+                     },
+                     nullptr});
         k.push_back({"uniform", "uniform current (u, v)", {{"u", 0.0}, {"v", 0.0}},
-                     [](const P &p) { return std::make_shared<UniformCurrent>(p.at("u"), p.at("v")); }});
+                     [](const P &p) { return std::make_shared<UniformCurrent>(p.at("u"), p.at("v")); },
+                     nullptr});
         k.push_back({"linear_shear", "linear shear u = a y (Zermelo's problem)", {{"a", -1.0}},
-                     [](const P &p) { return std::make_shared<LinearShear>(p.at("a")); }});
+                     [](const P &p) { return std::make_shared<LinearShear>(p.at("a")); },
+                     nullptr});
         k.push_back({"double_gyre",
                      "double gyre on [0, 2 length] x [0, length], steady, or time-dependent when epsilon and omega "
                      "are not 0 ([ShaddenLCS])",
@@ -82,7 +85,8 @@ std::deque<CurrentFieldKind> &kinds()
                      [](const P &p) {
                          return std::make_shared<DoubleGyre>(p.at("amplitude"), p.at("length"), p.at("epsilon"),
                                                              p.at("omega"));
-                     }});
+                     },
+                     nullptr});
         const RankineVortexParams rv;
         k.push_back({"rankine_vortex",
                      "Rankine vortex centred at (x0, y0), core radius radius, azimuthal speed vmax at the core "
@@ -97,7 +101,8 @@ std::deque<CurrentFieldKind> &kinds()
                          q.u = p.at("u");
                          q.v = p.at("v");
                          return std::make_shared<RankineVortex>(q);
-                     }});
+                     },
+                     nullptr});
         k.push_back({"netcdf",
                      "gridded forecast read from NetCDF files, OPeNDAP datasets, Zarr stores or GRIB files",
                      {},

@@ -14,6 +14,7 @@
 #include "BlockCopy.h"
 #include "NumberText.h"
 #include "TextUtil.h"
+#include "ZarrMirror.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/RemoteSource.h"
 
@@ -134,6 +135,7 @@ struct GdalGrid::Impl
     std::string path, kind;
     bool geographic{false};  // GRIB: the arrays' grid is in longitude and latitude
     std::unique_ptr<GDALDataset> dataset;
+    std::unique_ptr<ZarrMirror> mirror;      // a store over HTTP: what was fetched of it (GDAL reads the mirror)
     std::unique_ptr<GDALDataset> timeHolder;  // the in-memory dataset of an added time coordinate (addFileTime())
     std::shared_ptr<GDALGroup> root;
     std::vector<std::shared_ptr<GDALMDArray>> vars;
@@ -225,7 +227,14 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
     d.kind = isZarrStore(path) ? "Zarr store" : "GRIB file";
     GDALAllRegister();
     std::string open = path;
-    if (isUrl(path))
+    if (isUrl(path) && d.kind == "Zarr store")
+    {
+        // the store's metadata and chunks fetched into a mirror as the reader asks for them (the cache's, or
+        // GDAL's memory): each once, with the time limit and retries; a second run with the cache asks nothing
+        d.mirror = std::make_unique<ZarrMirror>(path);
+        open = d.mirror->folder();
+    }
+    else if (isUrl(path))
     {
         applyRemoteAccess();
         open = "/vsicurl/" + path;
@@ -266,10 +275,10 @@ std::shared_ptr<GdalGrid> GdalGrid::open(const std::string &path)
     if (!isUrl(path))
         return std::make_shared<GdalGrid>(path);
     static std::mutex m;
-    // kept for the process, as the OPeNDAP datasets are (RemoteDataset::open())
+    // kept for the process, as the OPeNDAP datasets are (RemoteDataset::open()), one per URL and cache folder
     static auto &opened = *new std::map<std::string, std::shared_ptr<GdalGrid>>();
     const std::lock_guard<std::mutex> lock(m);
-    auto &g = opened[path];
+    auto &g = opened[path + '\n' + remoteAccess().cacheDir];
     if (!g)
         g = std::make_shared<GdalGrid>(path);
     return g;
@@ -424,6 +433,13 @@ void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const s
         throw Error(who() + ": " + array.GetName() + " has one time (the file's)");
     std::vector<GUInt64> first(start.begin() + static_cast<std::ptrdiff_t>(skip), start.end());
     const std::vector<std::size_t> size(count.begin() + static_cast<std::ptrdiff_t>(skip), count.end());
+    if (impl_->mirror)
+    {
+        std::string path = array.GetFullName();
+        if (!path.empty() && path.front() == '/')
+            path.erase(0, 1);
+        impl_->mirror->ensure(path, std::vector<std::size_t>(first.begin(), first.end()), size);
+    }
     const QuietGdal quiet;
     const bool read =
         array.Read(first.data(), size.data(), nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), out);

@@ -70,4 +70,10 @@ double NetCdfBathymetry::seafloorDepth(double x, double y) const
     const double mid = 0.5 * (ax_.front() + ax_.back());
     return atAxes(mid + std::remainder(g.lon - mid, 360.0), g.lat);
 }
+std::shared_ptr<const Bathymetry> readBathymetry(const std::string &path, const std::string &variable,
+                                                 std::function<LonLat(double x, double y)> toGeographic,
+                                                 const GeoBox &region)
+{
+    return std::make_shared<NetCdfBathymetry>(path, variable, std::move(toGeographic), region);
+}
 }  // namespace ompl_glider

@@ -29,25 +29,6 @@ namespace ompl_glider
 {
 namespace
 {
-/// A name for the cache file: the URL's host and path in safe characters, then a 64-bit FNV-1a digest of the URL.
-std::string cacheName(const std::string &url)
-{
-    std::uint64_t h = 1469598103934665603ull;
-    for (const unsigned char c : url)
-        h = (h ^ c) * 1099511628211ull;
-    std::string stem;
-    for (std::size_t i = url.find("://") == std::string::npos ? 0 : url.find("://") + 3; i < url.size(); ++i)
-    {
-        const char c = url[i];
-        stem += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_') ? c : '_';
-    }
-    if (stem.size() > 80)
-        stem = stem.substr(stem.size() - 80);
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
-    return stem + "-" + hex + ".nc";
-}
-
 /// Failures worth another attempt: the network, the server, and an answer that is malformed or cut short (a slow
 /// answer cut by the time limit, a server that closes the connection early).
 bool transient(int status)
@@ -282,7 +263,7 @@ RemoteDataset::RemoteDataset(std::string url, RemoteAccess access, std::size_t r
         fs::create_directories(access_.cacheDir, ec);
         if (!fs::is_directory(access_.cacheDir, ec))
             throw Error(who() + ": the cache folder '" + access_.cacheDir + "' cannot be made");
-        cachePath_ = (fs::path(access_.cacheDir) / cacheName(withoutCredentials(url_))).string();
+        cachePath_ = (fs::path(access_.cacheDir) / remote_detail::cacheName(withoutCredentials(url_), ".nc")).string();
         remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.cacheFile = cachePath_; });
         if (fs::is_regular_file(cachePath_, ec))
         {

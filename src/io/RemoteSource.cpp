@@ -3,6 +3,9 @@
 #include "ompl_glider/io/RemoteSource.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstdio>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -51,8 +54,26 @@ namespace remote_detail
 std::size_t newFetchRecord(const std::string &source)
 {
     std::lock_guard<std::mutex> lock(recordMutex());
-    record().push_back(RemoteFetch{source, "", 0, 0, 0, false, "", ""});
+    record().push_back(RemoteFetch{source, "", 0, 0, 0, false, "", "", "OPeNDAP"});
     return record().size() - 1;
+}
+
+std::string cacheName(const std::string &url, const std::string &extension)
+{
+    std::uint64_t h = 1469598103934665603ull;
+    for (const unsigned char c : url)
+        h = (h ^ c) * 1099511628211ull;
+    std::string stem;
+    for (std::size_t i = url.find("://") == std::string::npos ? 0 : url.find("://") + 3; i < url.size(); ++i)
+    {
+        const char c = url[i];
+        stem += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_') ? c : '_';
+    }
+    if (stem.size() > 80)
+        stem = stem.substr(stem.size() - 80);
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+    return stem + "-" + hex + extension;
 }
 
 void updateFetchRecord(std::size_t k, const std::function<void(RemoteFetch &)> &change)

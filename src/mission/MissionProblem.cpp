@@ -19,9 +19,7 @@
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/current/Interpolation.h"
 #include "ompl_glider/current/LocalProjection.h"
-#if OMPL_GLIDER_WITH_NETCDF
-#include "ompl_glider/io/NetCdfBathymetry.h"
-#endif
+#include "ompl_glider/io/Bathymetry.h"
 #include "ompl_glider/environment/ForbiddenRegions.h"
 #include "ompl_glider/environment/IceZone.h"
 #include "ompl_glider/environment/StaticRegion.h"
@@ -619,8 +617,7 @@ std::shared_ptr<const DiveProfileTravelTime> MissionProblem::diveProfiles(double
         try
         {
             bathymetry =
-                std::make_shared<NetCdfBathymetry>(spec_.dive.bathymetryFile, spec_.dive.bathymetryVariable, geo,
-                                                   bathymetryRegion());
+                readBathymetry(spec_.dive.bathymetryFile, spec_.dive.bathymetryVariable, geo, bathymetryRegion());
         }
         catch (const Error &e)
         {

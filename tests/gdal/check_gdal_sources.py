@@ -10,6 +10,12 @@ metadata, as Copernicus Marine publishes them: time-chunked (1, 1, ny, nx), blos
   1. each store plans with the NetCDF file's travel time (1e-12) and the same waypoints;
   2. the geo-chunked store served by a loopback HTTP server plans the same, and the trip's chunks only are requested
      (fewer than half of the store's velocity chunks);
+     With --cache: a second run asks the server nothing and plans to the bit (the report says so); a store
+     republished at the URL (its metadata changed) is refused for a trip that needs chunks the cache lacks, naming
+     the URL and the cache folder; a folder of another URL at the cache's place is replaced;
+     With --cache: a second run asks the server nothing and plans to the bit (the report says so); a store
+     republished at the URL (its metadata changed) is refused for a trip that needs chunks the cache lacks, naming
+     the URL and the cache folder; a folder of another URL at the cache's place is replaced;
   3. garbage: a store whose metadata is not JSON (served), a chunk that is not blosc (on disk): exit 2 naming the
      URL, or the store and the variable;
   4. a server too slow (2 s limit, one retry) or down: exit 2 naming the URL, soon; nothing written;
@@ -241,6 +247,54 @@ def main():
                   (len(chunks), total))
             check(len(set(chunks)) == len(chunks), "over HTTP: no chunk asked for twice (%d, %d distinct)" %
                   (len(chunks), len(set(chunks))))
+
+        # 2b. the cache: the first run fills it, the second asks the server nothing; a republished store is refused
+        cache = os.path.join(work, "cache")
+        cached_times = []
+        for run in ("first", "second"):
+            out = os.path.join(work, "o_cache_" + run)
+            before = len(server.asked)
+            p = plan(glider, ["--currents", url, "--cache", cache, "--out", out] + TRIP)
+            check(p.returncode == 0 and "ERROR" not in p.stderr, "cache, %s run plans, no stray message (exit %d: %s)" %
+                  (run, p.returncode, p.stderr[-300:]))
+            if p.returncode:
+                continue
+            cached_times.append(travel_time(out))
+            asked = server.asked[before:]
+            if run == "first":
+                check(len(asked) > 0, "cache, first run: the store fetched (%d requests)" % len(asked))
+            else:
+                check(asked == [], "cache, second run: no request to the server (%d: %s)" % (len(asked), asked[:3]))
+                notes = json.dumps(json.load(open(os.path.join(out, "summary.json"))))
+                check("read from the cache, no network" in notes, "cache, second run: the report says so")
+        check(len(cached_times) == 2 and cached_times[0] == cached_times[1] and abs(cached_times[0] - t_nc) <= 1e-12
+              * t_nc, "cache: both runs plan the NetCDF file's travel time (%r, %r)" % (cached_times, t_nc))
+        folders = os.listdir(cache)
+        check(len(folders) == 1 and folders[0].endswith(".zarr"), "cache: one folder for the store (%s)" % folders)
+        meta = os.path.join(geo_chunked, ".zmetadata")
+        kept = read(meta)
+        doc = json.loads(kept)
+        doc["metadata"][".zattrs"]["history"] = "republished with new values"
+        with open(meta, "w") as f:
+            json.dump(doc, f)
+        out = os.path.join(work, "o_republished")
+        p = plan(glider, ["--currents", url, "--cache", cache, "--out", out, "--start=-75.5,29.5", "--goal=-66.5,37.5",
+                          "--speed", "0.5", "--departure", "2026-06-01T03:00:00Z", "--beyond", "hold"])
+        check(p.returncode == 2 and "republished" in p.stderr and url in p.stderr and cache in p.stderr,
+              "cache: a republished store is refused for a trip beyond the cache (exit %d: %s)" %
+              (p.returncode, p.stderr[-300:]))
+        check(not os.path.exists(out), "cache: republished, no output directory")
+        with open(meta, "w") as f:
+            f.write(kept)
+        with open(os.path.join(cache, folders[0], ".ompl_glider_source"), "w") as f:
+            f.write("http://elsewhere.example/other.zarr")
+        out = os.path.join(work, "o_cache_other")
+        p = plan(glider, ["--currents", url, "--cache", cache, "--out", out] + TRIP)
+        check(p.returncode == 0 and travel_time(out) == t_nc, "cache: another URL's folder is replaced, the plan "
+              "the same (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
+        if p.returncode == 0:
+            notes = json.dumps(json.load(open(os.path.join(out, "summary.json"))))
+            check("elsewhere.example" in notes, "cache: the report names the folder's other source")
 
         # 3. garbage: a store whose metadata is not JSON, served; a chunk that is not blosc, on disk
         bad = os.path.join(root, "bad.zarr")

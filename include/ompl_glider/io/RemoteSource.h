@@ -67,6 +67,10 @@ struct RemoteFetch
     /// Why a file found at the cache file's place was not used (it names another source, or none): the forecast was
     /// fetched anew and the file replaced; empty otherwise
     std::string cacheIgnored;
+    /// What the source is: "OPeNDAP" (a DAP dataset; values in bytesFetched/bytesFromCache), or "Zarr store" (a
+    /// Zarr store over HTTP; its chunks' bytes as stored, compressed, in bytesFetched/bytesFromCache; its cache a
+    /// folder, a copy of the store's consolidated metadata and of the chunks fetched)
+    std::string kind{"OPeNDAP"};
 };
 
 /// @brief Every remote source read in this process so far, in the order first read.

@@ -116,18 +116,19 @@ NetCdfCurrentOptions readerOptions(const ForecastRequest &r)
     return o;
 }
 
-/// What came from where for one OPeNDAP source, in the report's words.
+/// What came from where for one remote source (OPeNDAP, a Zarr store), in the report's words.
 std::string remoteNote(const RemoteFetch &f)
 {
     const auto bytes = [](std::uint64_t b) {
         return b >= 1000000 ? text::number(b / 1e6, 4) + " MB" : b >= 1000 ? text::number(b / 1e3, 4) + " kB"
                                                                            : std::to_string(b) + " B";
     };
-    std::string note = "OPeNDAP '" + f.source + "': ";
+    const std::string of = f.kind == "OPeNDAP" ? " of values" : " of chunks";
+    std::string note = f.kind + " '" + f.source + "': ";
     if (!f.opened)
-        note += "read from the cache, no network (" + bytes(f.bytesFromCache) + " of values)";
+        note += "read from the cache, no network (" + bytes(f.bytesFromCache) + of + ")";
     else
-        note += bytes(f.bytesFetched) + " of values fetched in " + std::to_string(f.requests) + " requests" +
+        note += bytes(f.bytesFetched) + of + " fetched in " + std::to_string(f.requests) + " requests" +
                 (f.bytesFromCache > 0 ? ", " + bytes(f.bytesFromCache) + " from the cache" : "");
     if (!f.cacheFile.empty())
         note += f.cacheProblem.empty() ? "; cache file '" + f.cacheFile + "'"

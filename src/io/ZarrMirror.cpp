@@ -1,0 +1,367 @@
+// A Zarr store over HTTP through a mirror of what was fetched (see ZarrMirror.h).
+#include "ZarrMirror.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <thread>
+
+#include <cpl_error.h>
+#include <cpl_http.h>
+#include <cpl_json.h>
+#include <cpl_vsi.h>
+
+#include "RemoteRecord.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/StopRequest.h"
+#include "ompl_glider/io/RemoteSource.h"
+
+namespace ompl_glider
+{
+namespace netcdf_detail
+{
+namespace
+{
+const char *const kMarker = ".ompl_glider_source";  // the URL the mirror holds (without credentials)
+const char *const kAbsent = ".ompl_glider_absent";  // keys the server does not hold, one a line
+
+bool exists(const std::string &path)
+{
+    VSIStatBufL st;
+    return VSIStatL(path.c_str(), &st) == 0;
+}
+
+std::uint64_t sizeOf(const std::string &path)
+{
+    VSIStatBufL st;
+    return VSIStatL(path.c_str(), &st) == 0 ? static_cast<std::uint64_t>(st.st_size) : 0;
+}
+
+/// The whole file at @p path; false when it cannot be read.
+bool slurp(const std::string &path, std::string &out)
+{
+    GByte *bytes = nullptr;
+    vsi_l_offset size = 0;
+    CPLPushErrorHandler(CPLQuietErrorHandler);  // a missing file is an answer here, not a message
+    const bool read = VSIIngestFile(nullptr, path.c_str(), &bytes, &size, 1ll << 30);
+    CPLPopErrorHandler();
+    CPLErrorReset();
+    if (!read)
+        return false;
+    out.assign(reinterpret_cast<const char *>(bytes), static_cast<std::size_t>(size));
+    VSIFree(bytes);
+    return true;
+}
+
+/// @p url with @p key appended to its path (before a query string: "https://h/s.zarr?t=1" -> "https://h/s.zarr/k?t=1").
+std::string keyUrl(const std::string &url, const std::string &key)
+{
+    const std::size_t q = url.find('?');
+    std::string base = url.substr(0, q);
+    while (!base.empty() && base.back() == '/')
+        base.pop_back();
+    return base + "/" + key + (q == std::string::npos ? "" : url.substr(q));
+}
+
+std::string limitText()
+{
+    const RemoteAccess a = remoteAccess();
+    return "request time limit " + std::to_string(std::max(1L, std::lround(a.requestTimeout))) + " s, " +
+           std::to_string(a.retries) + " retries";
+}
+}  // namespace
+
+ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
+{
+    const std::string source = withoutCredentials(url_);
+    const std::string name = remote_detail::cacheName(source, ".zarr");
+    record_ = remote_detail::newFetchRecord(source);
+    remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.kind = "Zarr store"; });
+    const RemoteAccess access = remoteAccess();
+    if (!access.cacheDir.empty())
+    {
+        std::error_code ec;
+        std::filesystem::create_directories(access.cacheDir, ec);
+        if (!std::filesystem::is_directory(access.cacheDir, ec))
+            throw Error("Zarr store '" + source + "': the cache folder '" + access.cacheDir + "' cannot be made");
+        cached_ = true;
+        folder_ = (std::filesystem::path(access.cacheDir) / name).string();
+        remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.cacheFile = folder_; });
+        std::string held;
+        if (exists(folder_ + "/.zmetadata") && slurp(folder_ + "/" + kMarker, held) && held == source)
+            fromCache_ = true;
+        else if (exists(folder_))
+        {
+            // another source's folder, or one left half-made: not this store
+            const std::string why = "the folder found at the cache's place holds " +
+                                    (held.empty() ? std::string("no complete store") : "'" + held + "'") +
+                                    ": fetched anew, the folder replaced";
+            remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.cacheIgnored = why; });
+            VSIRmdirRecursive(folder_.c_str());
+        }
+    }
+    else
+    {
+        static std::atomic<int> serial{0};
+        folder_ = "/vsimem/ompl_glider_zarr/" + std::to_string(++serial) + "/" + name;
+    }
+    std::string metadata;
+    if (fromCache_)
+    {
+        if (!slurp(folder_ + "/.zmetadata", metadata))
+            throw Error("Zarr store '" + source + "': the cache's copy '" + folder_ + "/.zmetadata' cannot be read");
+        std::string absent;
+        if (slurp(folder_ + "/" + kAbsent, absent))
+            for (std::size_t at = 0; at < absent.size();)
+            {
+                const std::size_t end = std::min(absent.find('\n', at), absent.size());
+                if (end > at)
+                    absent_.insert(absent.substr(at, end - at));
+                at = end + 1;
+            }
+    }
+    else
+    {
+        if (!fetch(".zmetadata", metadata))
+            throw Error("Zarr store '" + source + "': the server holds no consolidated metadata ('.zmetadata'); a "
+                        "store is read over HTTP by it (zarr.consolidate_metadata() writes it)");
+        remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.opened = true; });
+    }
+    readArrays(metadata);
+    if (!fromCache_)
+    {
+        if (VSIMkdirRecursive(folder_.c_str(), 0755) != 0 && !exists(folder_))
+            throw Error("Zarr store '" + source + "': the folder '" + folder_ + "' cannot be made");
+        store(".zmetadata", metadata);
+        // GDAL knows a store by its .zgroup: the consolidated metadata's copy (a store whose root is an array has
+        // its .zarray there instead)
+        CPLJSONDocument doc;
+        doc.LoadMemory(metadata);
+        const CPLJSONObject meta = doc.GetRoot().GetObj("metadata");
+        if (meta.GetObj(".zgroup").IsValid())
+            store(".zgroup", meta.GetObj(".zgroup").Format(CPLJSONObject::PrettyFormat::Plain));
+        else if (meta.GetObj(".zarray").IsValid())
+            store(".zarray", meta.GetObj(".zarray").Format(CPLJSONObject::PrettyFormat::Plain));
+        store(kMarker, source);  // last: a folder without it is not taken as this store's
+    }
+}
+
+ZarrMirror::~ZarrMirror()
+{
+    if (!cached_)
+        VSIRmdirRecursive(folder_.c_str());
+}
+
+void ZarrMirror::readArrays(const std::string &metadata)
+{
+    const std::string source = withoutCredentials(url_);
+    CPLJSONDocument doc;
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    const bool parsed = doc.LoadMemory(metadata);
+    CPLPopErrorHandler();
+    if (!parsed || !doc.GetRoot().GetObj("metadata").IsValid())
+        throw Error("Zarr store '" + source + "': its '.zmetadata' is not a store's consolidated metadata (it begins '" +
+                    metadata.substr(0, 40) + "')");
+    for (const CPLJSONObject &entry : doc.GetRoot().GetObj("metadata").GetChildren())
+    {
+        const std::string key = entry.GetName();
+        if (key != ".zarray" && (key.size() < 8 || key.compare(key.size() - 8, 8, "/.zarray") != 0))
+            continue;
+        Array a;
+        const CPLJSONArray shape = entry.GetArray("shape"), chunks = entry.GetArray("chunks");
+        if (!shape.IsValid() || !chunks.IsValid() || shape.Size() != chunks.Size())
+            throw Error("Zarr store '" + source + "': '" + key + "' has no shape and chunks of one length");
+        for (int k = 0; k < shape.Size(); ++k)
+        {
+            const long long n = shape[k].ToLong(-1), c = chunks[k].ToLong(0);
+            if (n < 0 || c <= 0)
+                throw Error("Zarr store '" + source + "': '" + key + "' has a shape or chunk size that is not a count");
+            a.shape.push_back(static_cast<std::size_t>(n));
+            a.chunks.push_back(static_cast<std::size_t>(c));
+        }
+        a.separator = entry.GetString("dimension_separator", ".");
+        arrays_[key == ".zarray" ? "" : key.substr(0, key.size() - 8)] = a;
+    }
+    if (arrays_.empty())
+        throw Error("Zarr store '" + source + "': its consolidated metadata names no array");
+}
+
+std::vector<std::string> ZarrMirror::keys(const std::string &path, const std::vector<std::size_t> &start,
+                                          const std::vector<std::size_t> &count) const
+{
+    const auto it = arrays_.find(path);
+    if (it == arrays_.end() || it->second.shape.size() != start.size() || start.size() != count.size())
+        throw Error("Zarr store '" + withoutCredentials(url_) + "': no array '" + path + "' of " +
+                    std::to_string(start.size()) + " dimensions in its metadata");
+    const Array &a = it->second;
+    const std::string prefix = path.empty() ? "" : path + "/";
+    if (a.shape.empty())
+        return {prefix + "0"};
+    std::vector<std::size_t> first(start.size()), last(start.size());
+    for (std::size_t d = 0; d < start.size(); ++d)
+    {
+        if (count[d] == 0)
+            return {};
+        first[d] = start[d] / a.chunks[d];
+        last[d] = (start[d] + count[d] - 1) / a.chunks[d];
+    }
+    std::vector<std::string> out;
+    std::vector<std::size_t> idx = first;
+    while (true)
+    {
+        std::string key = prefix;
+        for (std::size_t d = 0; d < idx.size(); ++d)
+            key += (d ? a.separator : "") + std::to_string(idx[d]);
+        out.push_back(key);
+        std::size_t d = idx.size();
+        while (d > 0 && idx[d - 1] == last[d - 1])
+        {
+            idx[d - 1] = first[d - 1];
+            --d;
+        }
+        if (d == 0)
+            return out;
+        ++idx[d - 1];
+    }
+}
+
+bool ZarrMirror::held(const std::string &key) const
+{
+    return absent_.count(key) > 0 || exists(folder_ + "/" + key);
+}
+
+void ZarrMirror::ensure(const std::string &path, const std::vector<std::size_t> &start,
+                        const std::vector<std::size_t> &count)
+{
+    bool newAbsent = false;
+    std::uint64_t fromCache = 0;
+    for (const std::string &key : keys(path, start, count))
+    {
+        if (held(key))
+        {
+            if (seen_.insert(key).second && !absent_.count(key))
+                fromCache += sizeOf(folder_ + "/" + key);  // held before this process asked for it: the cache's
+            continue;
+        }
+        seen_.insert(key);
+        if (fromCache_ && !checked_)
+            checkRepublished();
+        std::string body;
+        if (fetch(key, body))
+            store(key, body);
+        else
+        {
+            absent_.insert(key);  // Zarr: a chunk not written holds the fill value
+            newAbsent = true;
+        }
+    }
+    if (fromCache > 0)
+        remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.bytesFromCache += fromCache; });
+    if (newAbsent)
+    {
+        std::string list;
+        for (const std::string &key : absent_)
+            list += key + "\n";
+        store(kAbsent, list);
+    }
+}
+
+void ZarrMirror::checkRepublished()
+{
+    checked_ = true;
+    const std::string source = withoutCredentials(url_);
+    const std::string advice = "; remove the cache folder '" + folder_ + "' to plan on the store as it is now";
+    std::string now, cached;
+    if (!fetch(".zmetadata", now) || !slurp(folder_ + "/.zmetadata", cached) || now != cached)
+        throw Error("Zarr store '" + source + "': the store was republished since the cache was written (its "
+                    "metadata differs from the cache's), and the plan needs chunks the cache does not hold" + advice);
+    remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.opened = true; });
+    // the coordinates (the one-dimensional arrays) as cached: the same times and positions
+    for (const auto &[path, a] : arrays_)
+    {
+        if (a.shape.size() != 1 || a.shape[0] == 0)
+            continue;
+        for (const std::string &key : keys(path, {0}, {a.shape[0]}))
+        {
+            std::string mine;
+            if (absent_.count(key) || !slurp(folder_ + "/" + key, mine))
+                continue;
+            if (!fetch(key, now) || now != mine)
+                throw Error("Zarr store '" + source + "': the store was republished since the cache was written "
+                            "(its chunk '" + key + "' differs from the cache's), and the plan needs chunks the cache "
+                            "does not hold" + advice);
+        }
+    }
+}
+
+bool ZarrMirror::fetch(const std::string &key, std::string &body)
+{
+    const RemoteAccess a = remoteAccess();
+    const std::string limit = std::to_string(std::max(1L, std::lround(a.requestTimeout)));
+    const std::string timeout = "TIMEOUT=" + limit, connect = "CONNECTTIMEOUT=" + limit;
+    const char *options[] = {timeout.c_str(), connect.c_str(), "MAX_RETRY=0", nullptr};
+    const std::string target = keyUrl(url_, key);
+    std::string why;
+    for (int attempt = 0; attempt <= a.retries; ++attempt)
+    {
+        if (attempt > 0)
+        {
+            // the pause before the next attempt (1 s, 2 s, ...), cut short by a stop request (Python's Ctrl-C)
+            const auto resume = std::chrono::steady_clock::now() + std::chrono::seconds(attempt);
+            while (std::chrono::steady_clock::now() < resume && !stopRequested())
+                std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+        if (stopRequested())
+            throw Error("Zarr store '" + withoutCredentials(url_) + "': stopped while fetching '" + key + "'");
+        remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { ++f.requests; });
+        CPLPushErrorHandler(CPLQuietErrorHandler);
+        CPLHTTPResult *r = CPLHTTPFetch(target.c_str(), options);
+        CPLPopErrorHandler();
+        CPLErrorReset();
+        const std::string errors = r && r->pszErrBuf ? r->pszErrBuf : "";
+        const int curl = r ? r->nStatus : -1;
+        int http = 0;
+        if (errors.rfind("HTTP error code : ", 0) == 0)
+            http = std::atoi(errors.c_str() + 18);
+        if (r && curl == 0 && http == 0)
+        {
+            body.assign(reinterpret_cast<const char *>(r->pabyData), static_cast<std::size_t>(r->nDataLen));
+            CPLHTTPDestroyResult(r);
+            remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.bytesFetched += body.size(); });
+            return true;
+        }
+        if (r)
+            CPLHTTPDestroyResult(r);
+        if (curl == 0 && http == 404)
+            return false;
+        why = http ? "the server answered HTTP " + std::to_string(http) : errors.empty() ? "no answer" : errors;
+        const bool transient = curl != 0 || http >= 500 || http == 408 || http == 429;
+        if (!transient)
+            break;
+    }
+    throw Error("Zarr store '" + withoutCredentials(url_) + "': cannot fetch '" + key + "': " + why + " (" +
+                limitText() + ")");
+}
+
+void ZarrMirror::store(const std::string &key, const std::string &bytes)
+{
+    const std::string full = folder_ + "/" + key;
+    const std::string parent = full.substr(0, full.rfind('/'));
+    if (!exists(parent))
+        VSIMkdirRecursive(parent.c_str(), 0755);
+    const std::string part = full + ".part";
+    VSILFILE *f = VSIFOpenL(part.c_str(), "wb");
+    const bool written = f && VSIFWriteL(bytes.data(), 1, bytes.size(), f) == bytes.size();
+    const bool closed = f && VSIFCloseL(f) == 0;
+    if (!written || !closed || VSIRename(part.c_str(), full.c_str()) != 0)
+    {
+        VSIUnlink(part.c_str());
+        throw Error("Zarr store '" + withoutCredentials(url_) + "': '" + full + "' cannot be written" +
+                    (cached_ ? " (the cache folder: full, or not writable)" : ""));
+    }
+}
+}  // namespace netcdf_detail
+}  // namespace ompl_glider

@@ -1,0 +1,74 @@
+#pragma once
+/// @file ZarrMirror.h
+/// @brief Internal to the library (not installed): a Zarr v2 store over HTTP read through a mirror of it (GdalGrid
+/// opens the mirror): the store's consolidated metadata (`.zmetadata`) and each chunk the reader needs are fetched
+/// once, with the process's request time limit and retries (RemoteSource.h), into a folder: the cache's, where a
+/// later run reads what it holds without any request, or GDAL's memory (`/vsimem/`) without a cache. A chunk the
+/// server does not hold (404) is the array's fill value, as Zarr defines it, and is remembered as absent.
+///
+/// Before a cached store is read further from the server, its metadata and the chunks of its one-dimensional arrays
+/// (the coordinates) are fetched again and compared: a store republished at the same URL is refused rather than
+/// mixed with the cached one.
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace ompl_glider
+{
+namespace netcdf_detail
+{
+class ZarrMirror
+{
+public:
+    /// The mirror of the store at @p url: the cache folder's copy when it holds one for this URL, else a new one
+    /// (the metadata fetched). @throws Error naming the URL when the metadata cannot be fetched or is not JSON.
+    explicit ZarrMirror(const std::string &url);
+    ~ZarrMirror();
+    ZarrMirror(const ZarrMirror &) = delete;
+    ZarrMirror &operator=(const ZarrMirror &) = delete;
+
+    /// The folder GDAL opens.
+    const std::string &folder() const
+    {
+        return folder_;
+    }
+    /// Makes sure the mirror holds every chunk of the array at @p path ("uo", "grp/uo") covering the block at
+    /// @p start of @p count (fetching those it lacks). @throws Error naming the URL and the chunk when one cannot be
+    /// fetched, or when the store was republished since the cache was written.
+    void ensure(const std::string &path, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count);
+
+private:
+    struct Array
+    {
+        std::vector<std::size_t> shape, chunks;
+        std::string separator{"."};
+    };
+    /// The arrays of the consolidated metadata (its `<path>/.zarray` entries). @throws Error when it has none.
+    void readArrays(const std::string &metadata);
+    /// The chunks' keys of @p path covering the block.
+    std::vector<std::string> keys(const std::string &path, const std::vector<std::size_t> &start,
+                                  const std::vector<std::size_t> &count) const;
+    /// GETs @p key of the store: its bytes into @p body; false when the server does not hold it (404).
+    /// @throws Error after the retries for the network or the server.
+    bool fetch(const std::string &key, std::string &body);
+    /// Writes @p bytes at @p key of the mirror (a temporary name renamed: never half a file).
+    void store(const std::string &key, const std::string &bytes);
+    /// The first time the cache is found short: the server's metadata and coordinate chunks are the cached ones.
+    void checkRepublished();
+    bool held(const std::string &key) const;
+
+    std::string url_, folder_;
+    bool cached_{false};       // the folder is the cache's (else GDAL's memory)
+    bool fromCache_{false};    // the metadata came from the cache (no request yet)
+    bool checked_{false};      // checkRepublished() done
+    std::size_t record_{0};    // the source's entry in the process's record (remoteFetches())
+    std::map<std::string, Array> arrays_;
+    std::set<std::string> absent_;  // keys the server does not hold
+    std::set<std::string> seen_;    // keys this process asked for (fetched, or counted as the cache's)
+};
+}  // namespace netcdf_detail
+}  // namespace ompl_glider
