@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <mutex>
 
 #include <gdal_priv.h>
@@ -139,8 +141,16 @@ struct GdalGrid::Impl
     std::unique_ptr<GDALDataset> timeHolder;  // the in-memory dataset of an added time coordinate (addFileTime())
     std::shared_ptr<GDALGroup> root;
     std::vector<std::shared_ptr<GDALMDArray>> vars;
-    std::vector<bool> timeAdded;  // per var: a GRIB field of one time, given the file's time dimension first
-    int timeDim{-1};              // that dimension (length 1), -1 without
+    /// A GRIB field: a 2-D array (record -1), or record `record` of a 3-D array over GDAL's TIME dimension.
+    struct Field
+    {
+        std::shared_ptr<GDALMDArray> array;
+        long record{-1};
+    };
+    /// per var: the GRIB fields of one parameter and level, one per time of the added time dimension (empty: the
+    /// array as GDAL gives it)
+    std::vector<std::vector<Field>> series;
+    int timeDim{-1};              // that dimension, -1 without
     std::vector<std::shared_ptr<GDALDimension>> dims;
     std::map<std::string, int> dimIndex;  // by full name
     mutable std::mutex mutex;             // GDAL's datasets are not thread-safe
@@ -170,48 +180,148 @@ struct GdalGrid::Impl
                 addGroup(sub);
     }
 
-    /// A GRIB file of one forecast time (RTOFS writes one file per forecast hour): GDAL gives its fields as 2-D
-    /// arrays with the time only in attributes. They get a time dimension of length 1 and a time coordinate (the
-    /// fields' common validity time, seconds of the Unix epoch), so that several such files read as one forecast.
+    /// The fields of a GRIB file over one time dimension, where GDAL gives some field of some time its own 2-D array
+    /// with the time only in attributes: a file of one forecast time (RTOFS writes one per forecast hour), or several
+    /// times with the parameters interleaved (U, V of one time, then of the next: ERA5-like downloads), which GDAL
+    /// gives as 2-D arrays and, where records of one parameter follow each other, 3-D arrays over a TIME dimension.
+    /// The fields of one parameter and level (attributes `name`, `first_level`), wherever GDAL put them, become one
+    /// variable over the file's times (`validity_time`, or the TIME coordinate: seconds of the Unix epoch); several
+    /// files of one time each then read as one forecast. A velocity parameter missing at one of the times is refused
+    /// (its fields alone would plan on one time in silence); another parameter missing somewhere stays as GDAL gives
+    /// it. A file whose fields GDAL gave all as TIME arrays is read as GDAL gives it.
     void addFileTime()
     {
-        std::optional<double> valid;
-        for (const auto &a : vars)
+        std::map<std::string, std::map<double, Field>> fields;  // name|level -> time -> field
+        std::vector<std::string> order;                          // the parameters in the file's order
+        std::set<std::size_t> used;                              // the vars that hold fields
+        std::set<double> times;
+        bool loose = false;  // some field is a 2-D array of its own
+        for (std::size_t k = 0; k < vars.size(); ++k)
         {
-            for (const auto &dim : a->GetDimensions())
-                if (dim->GetType() == GDAL_DIM_TYPE_TEMPORAL)
-                    return;  // GDAL grouped the records along a TIME dimension already
-            if (auto t = a->GetAttribute("validity_time"))
+            const auto &a = vars[k];
+            std::string key;
+            for (const char *name : {"name", "first_level"})
+                if (auto text = a->GetAttribute(name); text && text->GetDataType().GetClass() == GEDTC_STRING)
+                    key += std::string(text->ReadAsString() ? text->ReadAsString() : "") + "|";
+            std::vector<std::pair<double, long>> at;  // (time, record; -1: the 2-D array itself)
+            const auto &d = a->GetDimensions();
+            if (!d.empty() && d[0]->GetType() == GDAL_DIM_TYPE_TEMPORAL && d.size() == 3)
             {
-                const double v = t->ReadAsDouble();
-                if (valid && *valid != v)
-                    return;  // fields of several times, each its own array: GDAL's arrays as they are
-                valid = v;
+                const auto axis = d[0]->GetIndexingVariable();
+                const std::vector<double> values = axis ? readAll(*axis) : std::vector<double>{};
+                if (values.size() != d[0]->GetSize())
+                    return;
+                for (std::size_t r = 0; r < values.size(); ++r)
+                    at.emplace_back(values[r], static_cast<long>(r));
             }
+            else if (const auto t = a->GetAttribute("validity_time"); t && d.size() == 2)
+            {
+                at.emplace_back(t->ReadAsDouble(), -1);
+                loose = true;
+            }
+            if (at.empty() || key.empty())
+                continue;
+            if (!fields.count(key))
+                order.push_back(key);
+            for (const auto &[time, record] : at)
+            {
+                if (!fields[key].emplace(time, Field{a, record}).second)
+                    return;  // two fields of one parameter, level and time: GDAL's arrays as they are
+                times.insert(time);
+            }
+            used.insert(k);
+        }
+        if (!loose)
+            return;
+        for (auto it = fields.begin(); it != fields.end();)
+        {
+            if (it->second.size() == times.size())
+            {
+                ++it;
+                continue;
+            }
+            refuseGap(it->first, it->second, times);
+            for (const auto &[time, f] : it->second)  // not a velocity: its arrays as GDAL gives them
+                for (std::size_t k = 0; k < vars.size(); ++k)
+                    if (vars[k] == f.array)
+                        used.erase(k);
+            order.erase(std::find(order.begin(), order.end(), it->first));
+            it = fields.erase(it);
         }
         GDALDriver *mem = GetGDALDriverManager()->GetDriverByName("MEM");
-        if (!valid || !mem)
+        if (fields.empty() || !mem)
             return;
+        const std::vector<double> values(times.begin(), times.end());
         timeHolder.reset(mem->CreateMultiDimensional("time", nullptr, nullptr));
         auto group = timeHolder ? timeHolder->GetRootGroup() : nullptr;
-        auto dim = group ? group->CreateDimension("time", GDAL_DIM_TYPE_TEMPORAL, "", 1) : nullptr;
+        auto dim = group ? group->CreateDimension("time", GDAL_DIM_TYPE_TEMPORAL, "", values.size()) : nullptr;
         auto array = dim ? group->CreateMDArray("time", {dim}, GDALExtendedDataType::Create(GDT_Float64)) : nullptr;
         const GUInt64 first = 0;
-        const std::size_t one = 1;
-        if (!array || !array->Write(&first, &one, nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64),
-                                    &*valid) || !array->SetUnit("sec UTC"))
+        const std::size_t n = values.size();
+        if (!array || !array->Write(&first, &n, nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64),
+                                    values.data()) || !array->SetUnit("sec UTC"))
             return;
-        timeAdded.assign(vars.size(), false);
+        // one variable per parameter and level, its earliest field standing for it (name, attributes, type); the
+        // arrays of other parameters as GDAL gives them
+        std::vector<std::shared_ptr<GDALMDArray>> kept;
+        std::vector<std::vector<Field>> keptSeries;
         for (std::size_t k = 0; k < vars.size(); ++k)
-            timeAdded[k] = vars[k]->GetAttribute("validity_time") != nullptr;
+            if (!used.count(k))
+            {
+                kept.push_back(vars[k]);
+                keptSeries.emplace_back();
+            }
+        for (const std::string &key : order)
+        {
+            std::vector<Field> one;
+            for (const auto &[time, f] : fields.at(key))
+                one.push_back(f);
+            kept.push_back(one.front().array);
+            keptSeries.push_back(one);
+        }
         timeDim = dimOf(dim);
-        vars.push_back(array);
-        timeAdded.push_back(false);
+        kept.push_back(array);
+        keptSeries.emplace_back();
+        vars = kept;
+        series = keptSeries;
+    }
+
+    /// A velocity parameter (UOGRD, VOGRD, UGRD, VGRD) missing at one of @p times is refused, naming the time.
+    void refuseGap(const std::string &key, const std::map<double, Field> &byTime, const std::set<double> &times) const
+    {
+        const std::string parameter = key.substr(0, key.find('|'));
+        if (!gribStandardName(parameter))
+            return;
+        double missing = 0.0;
+        for (const double t : times)
+            if (!byTime.count(t))
+            {
+                missing = t;
+                break;
+            }
+        const std::time_t when = static_cast<std::time_t>(missing);
+        char date[32] = "?";
+        if (const std::tm *tm = std::gmtime(&when))
+            std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", tm);
+        throw Error(kind + " '" + withoutCredentials(path) + "': " + parameter + " has fields at " +
+                    std::to_string(byTime.size()) + " of the " + std::to_string(times.size()) +
+                    " times of the file (none at " + date + "): a forecast needs its currents at every time");
+    }
+
+    static std::vector<double> readAll(const GDALMDArray &a)
+    {
+        std::vector<double> v(a.GetTotalElementsCount());
+        const GUInt64 first = 0;
+        const std::size_t n = v.size();
+        if (a.GetDimensionCount() != 1 ||
+            !a.Read(&first, &n, nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), v.data()))
+            return {};
+        return v;
     }
 
     bool hasAddedTime(int var) const
     {
-        return static_cast<std::size_t>(var) < timeAdded.size() && timeAdded[static_cast<std::size_t>(var)];
+        return static_cast<std::size_t>(var) < series.size() && !series[static_cast<std::size_t>(var)].empty();
     }
 
     std::shared_ptr<GDALAttribute> attribute(int var, const char *name) const
@@ -427,10 +537,12 @@ void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const s
             return;
         }
     const GDALMDArray &array = *impl_->vars.at(static_cast<std::size_t>(var));
-    // a field given the file's time dimension: its one record, the rest of the block from the 2-D array
+    // a GRIB field given the file's time dimension: each record from its own 2-D array
     const std::size_t skip = impl_->hasAddedTime(var) ? 1 : 0;
-    if (skip && (start.empty() || start[0] != 0 || count[0] != 1))
-        throw Error(who() + ": " + array.GetName() + " has one time (the file's)");
+    static const std::vector<Impl::Field> none;
+    const auto &series = skip ? impl_->series[static_cast<std::size_t>(var)] : none;
+    if (skip && (start.empty() || count[0] == 0 || start[0] + count[0] > series.size()))
+        throw Error(who() + ": " + array.GetName() + " has " + std::to_string(series.size()) + " times");
     std::vector<GUInt64> first(start.begin() + static_cast<std::ptrdiff_t>(skip), start.end());
     const std::vector<std::size_t> size(count.begin() + static_cast<std::ptrdiff_t>(skip), count.end());
     if (impl_->mirror)
@@ -441,8 +553,28 @@ void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const s
         impl_->mirror->ensure(path, std::vector<std::size_t>(first.begin(), first.end()), size);
     }
     const QuietGdal quiet;
-    const bool read =
-        array.Read(first.data(), size.data(), nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), out);
+    bool read = true;
+    if (!skip)
+        read = array.Read(first.data(), size.data(), nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), out);
+    else
+    {
+        std::size_t plane = 1;
+        for (const std::size_t c : size)
+            plane *= c;
+        for (std::size_t t = 0; t < count[0] && read; ++t)
+        {
+            const Impl::Field &f = series[start[0] + t];
+            std::vector<GUInt64> at = first;
+            std::vector<std::size_t> span = size;
+            if (f.record >= 0)  // a record of GDAL's TIME array
+            {
+                at.insert(at.begin(), static_cast<GUInt64>(f.record));
+                span.insert(span.begin(), 1);
+            }
+            read = f.array->Read(at.data(), span.data(), nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64),
+                                 out + t * plane);
+        }
+    }
     if (read)
     {
         std::size_t n = 1;

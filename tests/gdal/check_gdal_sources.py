@@ -22,7 +22,9 @@ metadata, as Copernicus Marine publishes them: time-chunked (1, 1, ny, nx), blos
   5. a GRIB2 file written by GDAL's GRIB driver (UOGRD/VOGRD, discipline 10, complex packing with a missing value,
      the records of a parameter in a row) plans with the travel time of the same decoded values in NetCDF (1e-12),
      found by the GRIB parameters' standard names and by --u-var UOGRD --v-var VOGRD alike;
-  6. the same as one GRIB2 file per forecast time (RTOFS's layout), given by a pattern: the same travel time.
+  6. the same as one GRIB2 file per forecast time (RTOFS's layout), given by a pattern: the same travel time;
+  7. the same in one file whose fields of each time are interleaved (U, V, U, V): the same travel time;
+  8. such a file with one field missing at one time: exit 2 naming the file.
 """
 import functools
 import http.server
@@ -152,8 +154,9 @@ def write_grib_hours(ds, folder):
     return names
 
 
-def write_grib(ds, path, first_hour=0):
-    """The surface level of @p ds as GRIB2 through GDAL's GRIB driver: UOGRD for each time, then VOGRD (discipline 10,
+def write_grib(ds, path, first_hour=0, interleaved=False):
+    """The surface level of @p ds as GRIB2 through GDAL's GRIB driver: UOGRD for each time, then VOGRD (interleaved:
+    UOGRD and VOGRD of each time in turn, as an ERA5-like download orders its fields) (discipline 10,
     category 1, parameters 2 and 3), complex packing with a missing value for the island (1 mm/s steps), latitude
     rows north first, as RTOFS writes them."""
     from osgeo import gdal, osr
@@ -169,7 +172,7 @@ def write_grib(ds, path, first_hour=0):
     hours = first_hour + (ds.time.values - ds.time.values[0]) / np.timedelta64(1, "h")
     for j, (name, parameter) in enumerate((("uo", 2), ("vo", 3))):
         for k in range(nt):
-            band = 1 + j * nt + k
+            band = 1 + (2 * k + j if interleaved else j * nt + k)
             values = ds[name].values[k, 0][::-1]  # north first
             mem.GetRasterBand(band).WriteArray(np.where(np.isnan(values), 9999.0, values).astype("f4"))
             mem.GetRasterBand(band).SetNoDataValue(9999.0)
@@ -369,6 +372,27 @@ def main():
             t, tg = travel_time(out), travel_time(os.path.join(work, "o_gnc"))
             check(abs(t - tg) <= 1e-12 * tg, "GRIB2 one file per time: the single file's travel time (%r, %r)" %
                   (t, tg))
+        # 7. the fields of several times interleaved in one file (U, V of each time in turn)
+        mixed = os.path.join(work, "interleaved.grib2")
+        write_grib(ds, mixed, interleaved=True)
+        out = os.path.join(work, "o_interleaved")
+        p = plan(glider, ["--currents", mixed, "--out", out] + TRIP)
+        check(p.returncode == 0, "GRIB2 with interleaved times plans (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
+        if p.returncode == 0 and p_gnc.returncode == 0:
+            t, tg = travel_time(out), travel_time(os.path.join(work, "o_gnc"))
+            check(abs(t - tg) <= 1e-12 * tg, "GRIB2 interleaved: the single file's travel time (%r, %r)" % (t, tg))
+        # 8. a parameter missing at one time: GDAL's arrays as they are, refused with a message naming the file
+        gappy = os.path.join(work, "gappy.grib2")
+        write_grib(ds.isel(time=[0, 1, 2]), gappy, interleaved=True)
+        from osgeo import gdal
+        src = gdal.Open(gappy)
+        keep = [b for b in range(1, src.RasterCount + 1) if b != 4]  # VOGRD of the second time left out
+        gdal.Translate(os.path.join(work, "gappy_cut.grib2"), src, bandList=keep, format="GRIB")
+        src = None
+        p = plan(glider, ["--currents", os.path.join(work, "gappy_cut.grib2"), "--out", os.path.join(work, "o_gap")] +
+                 TRIP)
+        check(p.returncode == 2 and "gappy_cut.grib2" in p.stderr, "GRIB2 with a field missing at one time: exit 2 "
+              "naming the file (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
     finally:
         if server:
             server.shutdown()
