@@ -16,7 +16,7 @@
 #include "BlockCopy.h"
 #include "NumberText.h"
 #include "TextUtil.h"
-#include "ZarrMirror.h"
+#include "HttpMirror.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/RemoteSource.h"
 
@@ -54,18 +54,6 @@ bool isGribFile(const std::string &path)
     char magic[4] = {};
     std::ifstream in(path, std::ios::binary);
     return in.read(magic, 4) && std::memcmp(magic, "GRIB", 4) == 0;
-}
-
-/// GDAL's HTTP settings from the process's remote access (RemoteSource.h): the request time limit and the retries.
-void applyRemoteAccess()
-{
-    const RemoteAccess a = remoteAccess();
-    const std::string limit = std::to_string(std::max(1L, std::lround(a.requestTimeout)));
-    CPLSetConfigOption("GDAL_HTTP_TIMEOUT", limit.c_str());
-    CPLSetConfigOption("GDAL_HTTP_CONNECTTIMEOUT", limit.c_str());
-    CPLSetConfigOption("GDAL_HTTP_MAX_RETRY", std::to_string(a.retries).c_str());
-    CPLSetConfigOption("GDAL_HTTP_RETRY_DELAY", "1");
-    CPLSetConfigOption("GDAL_DISABLE_READDIR_ON_OPEN", "EMPTY_DIR");  // a store's listing is its .zmetadata
 }
 
 /// GDAL's own printing of its errors off for the life of the object: they reach the user in this reader's messages
@@ -136,8 +124,10 @@ struct GdalGrid::Impl
 {
     std::string path, kind;
     bool geographic{false};  // GRIB: the arrays' grid is in longitude and latitude
-    std::unique_ptr<GDALDataset> dataset;
+    // (declared before the dataset: destroyed after it)
     std::unique_ptr<ZarrMirror> mirror;      // a store over HTTP: what was fetched of it (GDAL reads the mirror)
+    std::unique_ptr<FileMirror> file;        // a GRIB file over HTTP: its copy (GDAL reads the copy)
+    std::unique_ptr<GDALDataset> dataset;
     std::unique_ptr<GDALDataset> timeHolder;  // the in-memory dataset of an added time coordinate (addFileTime())
     std::shared_ptr<GDALGroup> root;
     std::vector<std::shared_ptr<GDALMDArray>> vars;
@@ -346,8 +336,9 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
     }
     else if (isUrl(path))
     {
-        applyRemoteAccess();
-        open = "/vsicurl/" + path;
+        // a GRIB file over HTTP: fetched whole, once (its messages are decoded whole anyway), into the cache
+        d.file = std::make_unique<FileMirror>(path, ".grib2", "GRIB file");
+        open = d.file->file();
     }
     if (d.kind == "Zarr store" && open.rfind("ZARR:", 0) != 0)
         open = "ZARR:\"" + withoutSlash(open) + "\"";
@@ -355,12 +346,7 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
     d.dataset.reset(GDALDataset::Open(open.c_str(), GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY));
     if (!d.dataset || !(d.root = d.dataset->GetRootGroup()))
     {
-        std::string why = CPLGetLastErrorMsg();
-        if (isUrl(path))  // GDAL says only what it did not find
-            why += std::string(why.empty() ? "" : " ") + "(no answer within the request time limit of " +
-                   std::to_string(std::max(1L, std::lround(remoteAccess().requestTimeout))) + " s, after " +
-                   std::to_string(remoteAccess().retries) + " retries; the server cannot be reached; or no " +
-                   (d.kind == "Zarr store" ? "Zarr store" : "GRIB file") + " there)";
+        const std::string why = CPLGetLastErrorMsg();
         throw Error(who() + ": cannot open" + (why.empty() ? std::string() : ": " + why));
     }
     d.addGroup(d.root);

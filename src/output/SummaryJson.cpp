@@ -216,12 +216,14 @@ void safetyJson(const MissionResult &r, json &j)
 }
 
 /// The global check of the route class (GlobalCheck): its candidates and the winner; null when it did not run.
-/// The forecast's OPeNDAP sources: what came from the network, what from the cache.
+/// The forecast's remote sources (OPeNDAP datasets, Zarr stores, GRIB files over HTTP): what came from the network,
+/// what from the cache.
 json forecastSourcesJson(const MissionProblem &problem)
 {
     json out = json::array();
     for (const RemoteFetch &f : problem.remoteSources())
         out.push_back({{"source", f.source},
+                       {"kind", f.kind},
                        {"cache_file", f.cacheFile},
                        {"bytes_fetched", f.bytesFetched},
                        {"bytes_from_cache", f.bytesFromCache},

@@ -23,6 +23,8 @@ metadata, as Copernicus Marine publishes them: time-chunked (1, 1, ny, nx), blos
      the records of a parameter in a row) plans with the travel time of the same decoded values in NetCDF (1e-12),
      found by the GRIB parameters' standard names and by --u-var UOGRD --v-var VOGRD alike;
   6. the same as one GRIB2 file per forecast time (RTOFS's layout), given by a pattern: the same travel time;
+     the single GRIB2 file served over HTTP: fetched whole in one request, the same travel time; with --cache the
+     second run asks nothing;
   7. the same in one file whose fields of each time are interleaved (U, V, U, V): the same travel time;
   8. such a file with one field missing at one time: exit 2 naming the file.
 """
@@ -372,6 +374,25 @@ def main():
             t, tg = travel_time(out), travel_time(os.path.join(work, "o_gnc"))
             check(abs(t - tg) <= 1e-12 * tg, "GRIB2 one file per time: the single file's travel time (%r, %r)" %
                   (t, tg))
+        # 6b. a GRIB2 file over HTTP: fetched whole once; with --cache a second run asks nothing
+        grib_server = serve(work)
+        grib_url = "http://127.0.0.1:%d/rtofs.grib2" % grib_server.server_address[1]
+        grib_cache = os.path.join(work, "grib_cache")
+        for run, extra in (("no cache", []), ("cache, first", ["--cache", grib_cache]),
+                           ("cache, second", ["--cache", grib_cache])):
+            out = os.path.join(work, "o_grib_url_" + str(len(grib_server.asked)))
+            before = len(grib_server.asked)
+            p = plan(glider, ["--currents", grib_url, "--out", out] + extra + TRIP)
+            asked = grib_server.asked[before:]
+            check(p.returncode == 0, "GRIB2 over HTTP, %s: plans (exit %d: %s)" % (run, p.returncode,
+                                                                                  p.stderr[-300:]))
+            if p.returncode == 0 and p_gnc.returncode == 0:
+                t, tg = travel_time(out), travel_time(os.path.join(work, "o_gnc"))
+                check(t == tg, "GRIB2 over HTTP, %s: the file's travel time (%r, %r)" % (run, t, tg))
+            expected = 0 if run == "cache, second" else 1
+            check(len(asked) == expected, "GRIB2 over HTTP, %s: %d request(s) (%s)" % (run, expected, asked))
+        grib_server.shutdown()
+        grib_server.server_close()
         # 7. the fields of several times interleaved in one file (U, V of each time in turn)
         mixed = os.path.join(work, "interleaved.grib2")
         write_grib(ds, mixed, interleaved=True)

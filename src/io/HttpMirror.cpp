@@ -1,5 +1,5 @@
-// A Zarr store over HTTP through a mirror of what was fetched (see ZarrMirror.h).
-#include "ZarrMirror.h"
+// Sources over HTTP through a mirror of what was fetched (see HttpMirror.h).
+#include "HttpMirror.h"
 
 #include <algorithm>
 #include <atomic>
@@ -64,6 +64,23 @@ std::string keyUrl(const std::string &url, const std::string &key)
     while (!base.empty() && base.back() == '/')
         base.pop_back();
     return base + "/" + key + (q == std::string::npos ? "" : url.substr(q));
+}
+
+/// Writes @p bytes at @p path through a temporary name renamed (never half a file); the folder made first.
+void writeWhole(const std::string &path, const std::string &bytes, const std::string &who)
+{
+    const std::string parent = path.substr(0, path.rfind('/'));
+    if (!exists(parent))
+        VSIMkdirRecursive(parent.c_str(), 0755);
+    const std::string part = path + ".part";
+    VSILFILE *f = VSIFOpenL(part.c_str(), "wb");
+    const bool written = f && VSIFWriteL(bytes.data(), 1, bytes.size(), f) == bytes.size();
+    const bool closed = f && VSIFCloseL(f) == 0;
+    if (!written || !closed || VSIRename(part.c_str(), path.c_str()) != 0)
+    {
+        VSIUnlink(part.c_str());
+        throw Error(who + ": '" + path + "' cannot be written (the disk full, or the folder not writable)");
+    }
 }
 
 std::string limitText()
@@ -297,13 +314,13 @@ void ZarrMirror::checkRepublished()
     }
 }
 
-bool ZarrMirror::fetch(const std::string &key, std::string &body)
+bool httpGet(const std::string &url, std::size_t record, const std::string &who, const std::string &what,
+             std::string &body)
 {
     const RemoteAccess a = remoteAccess();
     const std::string limit = std::to_string(std::max(1L, std::lround(a.requestTimeout)));
     const std::string timeout = "TIMEOUT=" + limit, connect = "CONNECTTIMEOUT=" + limit;
     const char *options[] = {timeout.c_str(), connect.c_str(), "MAX_RETRY=0", nullptr};
-    const std::string target = keyUrl(url_, key);
     std::string why;
     for (int attempt = 0; attempt <= a.retries; ++attempt)
     {
@@ -315,10 +332,10 @@ bool ZarrMirror::fetch(const std::string &key, std::string &body)
                 std::this_thread::sleep_for(std::chrono::milliseconds(20));
         }
         if (stopRequested())
-            throw Error("Zarr store '" + withoutCredentials(url_) + "': stopped while fetching '" + key + "'");
-        remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { ++f.requests; });
+            throw Error(who + ": stopped while fetching '" + what + "'");
+        remote_detail::updateFetchRecord(record, [](RemoteFetch &f) { ++f.requests; });
         CPLPushErrorHandler(CPLQuietErrorHandler);
-        CPLHTTPResult *r = CPLHTTPFetch(target.c_str(), options);
+        CPLHTTPResult *r = CPLHTTPFetch(url.c_str(), options);
         CPLPopErrorHandler();
         CPLErrorReset();
         const std::string errors = r && r->pszErrBuf ? r->pszErrBuf : "";
@@ -330,7 +347,7 @@ bool ZarrMirror::fetch(const std::string &key, std::string &body)
         {
             body.assign(reinterpret_cast<const char *>(r->pabyData), static_cast<std::size_t>(r->nDataLen));
             CPLHTTPDestroyResult(r);
-            remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.bytesFetched += body.size(); });
+            remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) { f.bytesFetched += body.size(); });
             return true;
         }
         if (r)
@@ -342,26 +359,70 @@ bool ZarrMirror::fetch(const std::string &key, std::string &body)
         if (!transient)
             break;
     }
-    throw Error("Zarr store '" + withoutCredentials(url_) + "': cannot fetch '" + key + "': " + why + " (" +
-                limitText() + ")");
+    throw Error(who + ": cannot fetch '" + what + "': " + why + " (" + limitText() + ")");
+}
+
+FileMirror::FileMirror(const std::string &url, const std::string &extension, const std::string &kind)
+{
+    const std::string source = withoutCredentials(url);
+    const std::string who = kind + " '" + source + "'";
+    const std::size_t record = remote_detail::newFetchRecord(source);
+    remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) { f.kind = kind; });
+    const RemoteAccess access = remoteAccess();
+    const std::string name = remote_detail::cacheName(source, extension);
+    if (!access.cacheDir.empty())
+    {
+        std::error_code ec;
+        std::filesystem::create_directories(access.cacheDir, ec);
+        if (!std::filesystem::is_directory(access.cacheDir, ec))
+            throw Error(who + ": the cache folder '" + access.cacheDir + "' cannot be made");
+        cached_ = true;
+        file_ = (std::filesystem::path(access.cacheDir) / name).string();
+        remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) { f.cacheFile = file_; });
+        std::string held;
+        if (exists(file_) && slurp(file_ + kMarker, held) && held == source)
+        {
+            // the cache's copy, whole (written by a rename): no request
+            remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) { f.bytesFromCache = sizeOf(file_); });
+            return;
+        }
+        if (exists(file_))
+        {
+            const std::string why = "the file found at the cache's place holds " +
+                                    (held.empty() ? std::string("no source name") : "'" + held + "'") +
+                                    ": fetched anew, the file replaced";
+            remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) { f.cacheIgnored = why; });
+        }
+    }
+    else
+    {
+        static std::atomic<int> serial{0};
+        file_ = "/vsimem/ompl_glider_file/" + std::to_string(++serial) + "/" + name;
+    }
+    std::string body;
+    if (!httpGet(url, record, who, source, body))
+        throw Error(who + ": the server holds no such file (HTTP 404)");
+    remote_detail::updateFetchRecord(record, [](RemoteFetch &f) { f.opened = true; });
+    writeWhole(file_, body, who);
+    if (cached_)
+        writeWhole(file_ + kMarker, source, who);
+}
+
+FileMirror::~FileMirror()
+{
+    if (!cached_)
+        VSIUnlink(file_.c_str());
+}
+
+bool ZarrMirror::fetch(const std::string &key, std::string &body)
+{
+    return httpGet(keyUrl(url_, key), record_, "Zarr store '" + withoutCredentials(url_) + "'", key, body);
 }
 
 void ZarrMirror::store(const std::string &key, const std::string &bytes)
 {
-    const std::string full = folder_ + "/" + key;
-    const std::string parent = full.substr(0, full.rfind('/'));
-    if (!exists(parent))
-        VSIMkdirRecursive(parent.c_str(), 0755);
-    const std::string part = full + ".part";
-    VSILFILE *f = VSIFOpenL(part.c_str(), "wb");
-    const bool written = f && VSIFWriteL(bytes.data(), 1, bytes.size(), f) == bytes.size();
-    const bool closed = f && VSIFCloseL(f) == 0;
-    if (!written || !closed || VSIRename(part.c_str(), full.c_str()) != 0)
-    {
-        VSIUnlink(part.c_str());
-        throw Error("Zarr store '" + withoutCredentials(url_) + "': '" + full + "' cannot be written" +
-                    (cached_ ? " (the cache folder: full, or not writable)" : ""));
-    }
+    writeWhole(folder_ + "/" + key, bytes,
+               "Zarr store '" + withoutCredentials(url_) + "'" + (cached_ ? " (the cache folder)" : ""));
 }
 }  // namespace netcdf_detail
 }  // namespace ompl_glider

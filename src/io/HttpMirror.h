@@ -1,7 +1,7 @@
 #pragma once
-/// @file ZarrMirror.h
-/// @brief Internal to the library (not installed): a Zarr v2 store over HTTP read through a mirror of it (GdalGrid
-/// opens the mirror): the store's consolidated metadata (`.zmetadata`) and each chunk the reader needs are fetched
+/// @file HttpMirror.h
+/// @brief Internal to the library (not installed): sources GDAL reads over HTTP, through a mirror of what was fetched
+/// (GdalGrid opens the mirror). A GRIB file is fetched whole, once (FileMirror). A Zarr v2 store (ZarrMirror): the store's consolidated metadata (`.zmetadata`) and each chunk the reader needs are fetched
 /// once, with the process's request time limit and retries (RemoteSource.h), into a folder: the cache's, where a
 /// later run reads what it holds without any request, or GDAL's memory (`/vsimem/`) without a cache. A chunk the
 /// server does not hold (404) is the array's fill value, as Zarr defines it, and is remembered as absent.
@@ -21,6 +21,35 @@ namespace ompl_glider
 {
 namespace netcdf_detail
 {
+/// GETs @p url with the process's request time limit and retries (RemoteSource.h), counting each request and the
+/// bytes in entry @p record of the process's record: its bytes into @p body; false when the server does not hold it
+/// (404). @throws Error "<who>: cannot fetch '<what>': <why> (request time limit N s, R retries)" after the retries for
+/// the network or the server, and at a stop request.
+bool httpGet(const std::string &url, std::size_t record, const std::string &who, const std::string &what,
+             std::string &body);
+
+/// A file over HTTP (a GRIB file) fetched whole, once: into the cache folder (a later run reads it there, no
+/// request), or GDAL's memory without a cache.
+class FileMirror
+{
+public:
+    /// @p extension names the cached copy (".grib2"); @p kind names the source in messages ("GRIB file").
+    /// @throws Error naming the URL when it cannot be fetched.
+    FileMirror(const std::string &url, const std::string &extension, const std::string &kind);
+    ~FileMirror();
+    FileMirror(const FileMirror &) = delete;
+    FileMirror &operator=(const FileMirror &) = delete;
+    /// The local copy GDAL opens.
+    const std::string &file() const
+    {
+        return file_;
+    }
+
+private:
+    std::string file_;
+    bool cached_{false};
+};
+
 class ZarrMirror
 {
 public:
@@ -52,8 +81,7 @@ private:
     /// The chunks' keys of @p path covering the block.
     std::vector<std::string> keys(const std::string &path, const std::vector<std::size_t> &start,
                                   const std::vector<std::size_t> &count) const;
-    /// GETs @p key of the store: its bytes into @p body; false when the server does not hold it (404).
-    /// @throws Error after the retries for the network or the server.
+    /// GETs @p key of the store (httpGet()).
     bool fetch(const std::string &key, std::string &body);
     /// Writes @p bytes at @p key of the mirror (a temporary name renamed: never half a file).
     void store(const std::string &key, const std::string &bytes);
