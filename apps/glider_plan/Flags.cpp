@@ -179,9 +179,9 @@ void defineIoFlags(CLI::App &app, Flags &f)
                    "RTOFS, CMEMS THREDDS servers), read for the trip's region, levels and records only")
         ->group(io);
     app.add_option("--cache", f.cache,
-                   "keep what is fetched from URLs in this folder (an OPeNDAP dataset's values as a NetCDF file, a Zarr "
-                   "store's metadata and chunks as a folder, a GRIB file whole), so that a later plan over the same "
-                   "window reads no network (remove a file or folder to fetch a newer forecast)")
+                   "keep what is fetched from URLs in this folder (an OPeNDAP dataset's values as a NetCDF file, a "
+                   "Zarr store's metadata and chunks as a folder, a GRIB file whole), so that a later plan over the "
+                   "same window reads no network (remove a file or folder to fetch a newer forecast)")
         ->group(io);
     app.add_option("--request-timeout", f.requestTimeout,
                    "time limit of every request to a server (OPeNDAP, Zarr, GRIB over HTTP), seconds (default 60)")

@@ -180,8 +180,8 @@ void ZarrMirror::readArrays(const std::string &metadata)
     const bool parsed = doc.LoadMemory(metadata);
     CPLPopErrorHandler();
     if (!parsed || !doc.GetRoot().GetObj("metadata").IsValid())
-        throw Error("Zarr store '" + source + "': its '.zmetadata' is not a store's consolidated metadata (it begins '" +
-                    metadata.substr(0, 40) + "')");
+        throw Error("Zarr store '" + source + "': its '.zmetadata' is not a store's consolidated metadata (it "
+                    "begins '" + metadata.substr(0, 40) + "')");
     for (const CPLJSONObject &entry : doc.GetRoot().GetObj("metadata").GetChildren())
     {
         const std::string key = entry.GetName();

@@ -1,10 +1,11 @@
 #pragma once
 /// @file HttpMirror.h
 /// @brief Internal to the library (not installed): sources GDAL reads over HTTP, through a mirror of what was fetched
-/// (GdalGrid opens the mirror). A GRIB file is fetched whole, once (FileMirror). A Zarr v2 store (ZarrMirror): the store's consolidated metadata (`.zmetadata`) and each chunk the reader needs are fetched
-/// once, with the process's request time limit and retries (RemoteSource.h), into a folder: the cache's, where a
-/// later run reads what it holds without any request, or GDAL's memory (`/vsimem/`) without a cache. A chunk the
-/// server does not hold (404) is the array's fill value, as Zarr defines it, and is remembered as absent.
+/// (GdalGrid opens the mirror). A GRIB file is fetched whole, once (FileMirror). A Zarr v2 store (ZarrMirror): its
+/// consolidated metadata (`.zmetadata`) and each chunk the reader needs are fetched once, with the process's request
+/// time limit and retries (RemoteSource.h), into a folder: the cache's, where a later run reads what it holds without
+/// any request, or GDAL's memory (`/vsimem/`) without a cache. A chunk the server does not hold (404) is the array's
+/// fill value, as Zarr defines it, and is remembered as absent.
 ///
 /// Before a cached store is read further from the server, its metadata and the chunks of its one-dimensional arrays
 /// (the coordinates) are fetched again and compared: a store republished at the same URL is refused rather than

@@ -9,7 +9,7 @@ metadata, as Copernicus Marine publishes them: time-chunked (1, 1, ny, nx), blos
 (nt, 1, 8, 8), blosc/lz4. Checked:
   1. each store plans with the NetCDF file's travel time (1e-12) and the same waypoints;
   2. the geo-chunked store served by a loopback HTTP server plans the same, and the trip's chunks only are requested
-     (fewer than half of the store's velocity chunks);
+     (fewer than half of the store's velocity chunks); a store whose chunk keys nest in folders plans the same;
      With --cache: a second run asks the server nothing and plans to the bit (the report says so); a store
      republished at the URL (its metadata changed) is refused for a trip that needs chunks the cache lacks, naming
      the URL and the cache folder; a folder of another URL at the cache's place is replaced;
@@ -90,6 +90,13 @@ def forecast(nt=6, ny=81, nx=97):
                 "depth": ("depth", np.array([0.494, 1.541]), {"units": "m", "positive": "down"}),
                 "latitude": ("latitude", lat, {"units": "degrees_north", "standard_name": "latitude"}),
                 "longitude": ("longitude", lon, {"units": "degrees_east", "standard_name": "longitude"})})
+
+
+def write_nested_store(ds, path, chunks):
+    """@p ds as a Zarr v2 store whose chunk keys nest in folders (dimension_separator "/": uo/0/0/1/2)."""
+    import zarr
+    encoding = {v: {"chunks": chunks, "compressor": numcodecs.Blosc(cname="zstd")} for v in ("uo", "vo")}
+    ds.to_zarr(zarr.storage.NestedDirectoryStore(path), encoding=encoding, consolidated=True)
 
 
 def write_store(ds, path, chunks, cname):
@@ -252,6 +259,15 @@ def main():
                   (len(chunks), total))
             check(len(set(chunks)) == len(chunks), "over HTTP: no chunk asked for twice (%d, %d distinct)" %
                   (len(chunks), len(set(chunks))))
+
+        # 2a. a store whose chunk keys nest in folders (dimension_separator "/"), over HTTP: the same plan
+        nested = os.path.join(root, "nested.zarr")
+        write_nested_store(ds, nested, (ds.sizes["time"], 1, 8, 8))
+        out = os.path.join(work, "o_nested")
+        nested_url = "http://127.0.0.1:%d/nested.zarr" % server.server_address[1]
+        p = plan(glider, ["--currents", nested_url, "--out", out] + TRIP)
+        check(p.returncode == 0 and travel_time(out) == t_nc, "a nested store over HTTP: the NetCDF file's travel "
+              "time (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
 
         # 2b. the cache: the first run fills it, the second asks the server nothing; a republished store is refused
         cache = os.path.join(work, "cache")

@@ -49,7 +49,8 @@ struct MissionPolygon
 class MissionProblem
 {
 public:
-    /// @brief Builds the field (analytic, or a gridded source's forecast), the projection, the box, start/goal and the environment.
+    /// @brief Builds the field (analytic, or a gridded source's forecast), the projection, the box, start/goal and
+    /// the environment.
     /// @throws Error naming the mission file and field when something does not fit (start outside the box, ...).
     explicit MissionProblem(MissionSpec spec);
     ~MissionProblem();
@@ -64,8 +65,8 @@ public:
     {
         return field_;
     }
-    /// @brief The forecast's files (or URLs) read for the current, in time order (the one file, or those of a forecast in several
-    /// files that hold the trip's records); empty for an analytic current.
+    /// @brief The forecast's files (or URLs) read for the current, in time order (the one file, or those of a
+    /// forecast in several files that hold the trip's records); empty for an analytic current.
     const std::vector<std::string> &forecastFiles() const
     {
         return forecastFiles_;

@@ -62,13 +62,14 @@ const char *ensembleObjectiveName(EnsembleObjective o);
 /// @brief The objective named @p name. @throws Error for another name (saying which are known).
 EnsembleObjective parseEnsembleObjective(const std::string &name);
 
-/// @brief Source of the current: an analytic flow or a NetCDF forecast (loaded by the gridded-field reader).
+/// @brief Source of the current: an analytic flow, or a forecast read by a gridded source of the registry (NetCDF,
+/// OPeNDAP, Zarr, GRIB: `netcdf`; ForecastSource.h), asked through a ForecastRequest (forecastRequest()).
 struct CurrentSpec
 {
     /// The registry's name of the kind (currentFieldKinds(): meandering_jet, uniform, linear_shear, double_gyre,
     /// netcdf); the registry says whether it is read from a file (CurrentFieldKind::gridded).
     std::string type{"meandering_jet"};
-    /// @brief True for a kind read from a file, a NetCDF forecast (planning in metres and seconds, positions in
+    /// @brief True for a kind read from files by a gridded source (planning in metres and seconds, positions in
     /// lon/lat); false for an analytic flow or an unknown name (refused by the loader and MissionProblem).
     bool isForecast() const
     {
@@ -78,9 +79,10 @@ struct CurrentSpec
     /// Analytic parameters (names per type: meandering_jet B0 epsilon omega theta k c; uniform u v;
     /// linear_shear a; double_gyre amplitude length). Missing ones take the class defaults.
     std::map<std::string, double> parameters;
-    std::string file;                              ///< netcdf: path (relative paths resolved against the mission);
-                                                   ///< with several files, the first given (for names and messages)
-    /// netcdf: a forecast in several files read as one (loadNetCdfCurrents() on a list: ordered by their dates),
+    /// gridded: path or URL (relative paths resolved against the mission); with several files, the first given
+    /// (for names and messages)
+    std::string file;
+    /// gridded: a forecast in several files read as one (ordered by their dates),
     /// resolved and glob patterns expanded; empty: `file` alone
     std::vector<std::string> files;
     /// @brief The forecast's files: `files`, else `file` alone.
@@ -88,24 +90,25 @@ struct CurrentSpec
     {
         return files.empty() ? std::vector<std::string>{file} : files;
     }
-    std::map<std::string, std::string> variables;  ///< netcdf: role (u, v, lon, lat, x, y, depth, time, mask, angle) -> name
-                                                   ///< (mask "none": no land/sea mask variable; angle "none": no grid angle)
+    /// gridded: role (u, v, lon, lat, x, y, depth, time, mask, angle) -> name (mask "none": no land/sea mask
+    /// variable; angle "none": no grid angle)
+    std::map<std::string, std::string> variables;
     Interp2D xyInterpolation{Interp2D::Bilinear};  ///< nearest | bilinear | bicubic (parseInterp2D())
     Interp1D depthInterpolation{Interp1D::Linear};  ///< nearest | linear | cubic | akima (parseInterp1D())
     Interp1D timeInterpolation{Interp1D::Linear};   ///< nearest | linear | cubic | akima (parseInterp1D())
     /// Refuse (trips past the forecast are infeasible; `horizon: refuse`) or HoldLast (`horizon: hold_last`)
     BeyondForecast horizonPolicy{BeyondForecast::Refuse};
-    bool zeroVelocityLand{true};  ///< netcdf: nodes with u = v = 0 exactly at every loaded time are land
-    /// netcdf: the current averaged over [top, bottom] metres (NetCdfCurrentOptions::depthAverage)
+    bool zeroVelocityLand{true};  ///< gridded: nodes with u = v = 0 exactly at every loaded time are land
+    /// gridded: the current averaged over [top, bottom] metres (ForecastRequest::depthAverage)
     std::optional<std::pair<double, double>> depthAverage;
-    std::string velocityUnits;  ///< netcdf: overrides the units of u and v (any velocity UDUNITS-2 reads)
-    std::string timeUnits;      ///< netcdf: overrides the units of the time variable ("days since 2026-01-15")
-    std::optional<std::size_t> steadyRecord;  ///< netcdf: plan on this time record only, as a steady field
+    std::string velocityUnits;  ///< gridded: overrides the units of u and v (any velocity UDUNITS-2 reads)
+    std::string timeUnits;      ///< gridded: overrides the units of the time variable ("days since 2026-01-15")
+    std::optional<std::size_t> steadyRecord;  ///< gridded: plan on this time record only, as a steady field
     /// An ensemble (`current: {ensemble: [...]}`): its members, each a source of this kind (the first is also this
     /// spec's own fields, for names, calendar and messages); empty: a single source. The planning field is the
     /// members' mean; planner.objective judges plans member by member.
     std::vector<CurrentSpec> members;
-    /// netcdf, set when the mission is read: the field is steady (no time dimension, a single record, or
+    /// gridded, set when the mission is read: the field is steady (no time dimension, a single record, or
     /// steadyRecord); a steady file without dated time axis takes the mission's `epoch`.
     bool steady{false};
     SourceMark mark;                               ///< where the current block is

@@ -131,8 +131,9 @@ std::string remoteNote(const RemoteFetch &f)
         note += bytes(f.bytesFetched) + of + " fetched in " + std::to_string(f.requests) + " requests" +
                 (f.bytesFromCache > 0 ? ", " + bytes(f.bytesFromCache) + " from the cache" : "");
     if (!f.cacheFile.empty())
-        note += f.cacheProblem.empty() ? "; cache file '" + f.cacheFile + "'"
-                                       : "; the cache file could not be written: " + f.cacheProblem;
+        note += f.cacheProblem.empty()
+                    ? (f.kind == "Zarr store" ? "; cache folder '" : "; cache file '") + f.cacheFile + "'"
+                    : "; the cache file could not be written: " + f.cacheProblem;
     if (!f.cacheIgnored.empty())
         note += " (" + f.cacheIgnored + ")";
     return note;

@@ -170,7 +170,8 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
             c.mark = {r.file(), r.line(l[i])};
             if (i > 0 && (c.isForecast()) != (members.front().isForecast()))
                 r.fail(l[i]["type"], f + ".type",
-                       "every member must be of one kind: all forecasts read from files or all analytic flows (the first is " +
+                       "every member must be of one kind: all forecasts read from files or all analytic flows (the "
+                       "first is " +
                            members.front().type + ")");
             members.push_back(c);
         }
