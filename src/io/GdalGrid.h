@@ -12,6 +12,8 @@
 
 #include <netcdf.h>
 
+#include "Dataset.h"
+
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -30,7 +32,7 @@ bool isGdalSource(const std::string &path);
 /// A Zarr store (see isGdalSource()).
 bool isZarrStore(const std::string &path);
 
-class GdalGrid
+class GdalGrid final : public Dataset
 {
 public:
     /// The dataset of @p path: a URL's is opened once per process, a file's anew. Each keeps the blocks it read in
@@ -40,27 +42,27 @@ public:
     /// Opens @p path (an http(s) URL through /vsicurl/, with the process's request time limit and retries,
     /// RemoteSource.h). @throws Error naming the source when GDAL cannot open it as a multidimensional dataset.
     explicit GdalGrid(const std::string &path);
-    ~GdalGrid();
+    ~GdalGrid() override;
     GdalGrid(const GdalGrid &) = delete;
     GdalGrid &operator=(const GdalGrid &) = delete;
 
     /// "Zarr store '<path>'" or "GRIB file '<path>'".
-    std::string who() const;
-    int nvars() const;
-    std::string varName(int var) const;
-    std::string dimName(int dim) const;
-    std::size_t dimLen(int dim) const;
-    std::optional<int> findVar(const std::string &name) const;
-    std::vector<int> varDims(int var) const;
-    nc_type varType(int var) const;
+    std::string who() const override;
+    int nvars() const override;
+    std::string varName(int var) const override;
+    std::string dimName(int dim) const override;
+    std::size_t dimLen(int dim) const override;
+    std::optional<int> findVar(const std::string &name) const override;
+    std::vector<int> varDims(int var) const override;
+    nc_type varType(int var) const override;
     /// A text attribute of @p var (NC_GLOBAL: the root group's); nullopt when absent or numeric.
-    std::optional<std::string> attText(int var, const char *name) const;
+    std::optional<std::string> attText(int var, const char *name) const override;
     /// A numeric attribute's values (empty when absent); text yields {} and sets @p isText.
-    std::vector<double> attDoubles(int var, const char *name, bool &isText) const;
+    std::vector<double> attDoubles(int var, const char *name, bool &isText) const override;
     /// The stored values of @p var in the block at @p start of @p count, as doubles. @throws Error naming the source
     /// and the variable when GDAL cannot read them (a missing or corrupt chunk, the server).
     void readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
-                   double *out) const;
+                   double *out) const override;
 
 private:
     struct Impl;

@@ -26,9 +26,9 @@ namespace netcdf_detail
 {
 // ---- the open file (NcFile.cpp) ----
 
-/// The open file, closed on scope exit; its queries throw Errors that name the file.
-class RemoteDataset;
-class GdalGrid;
+/// The open file, closed on scope exit; its queries throw Errors that name the file. What reads it is a Dataset
+/// (Dataset.h): NetCDF-C's, or GDAL's (GdalGrid).
+class Dataset;
 
 class NcFile
 {
@@ -45,10 +45,8 @@ public:
     NcFile(const NcFile &) = delete;
     NcFile &operator=(const NcFile &) = delete;
 
-    int id() const
-    {
-        return id_;
-    }
+    /// The NetCDF id (for the groups of a NetCDF-4 file); -1 for a dataset GDAL reads.
+    int id() const;
     const std::string &path() const
     {
         return path_;
@@ -79,10 +77,7 @@ public:
 
 private:
     std::string path_;
-    int id_{-1};
-    std::shared_ptr<RemoteDataset> remote_;           ///< a URL's dataset (null for a file)
-    std::shared_ptr<GdalGrid> gdal_;                  ///< a Zarr store or GRIB file (null for NetCDF)
-    std::shared_ptr<const std::string> memory_;      ///< an in-memory dataset's bytes (MemoryDataset.h)
+    std::shared_ptr<Dataset> data_;  ///< what reads it: NetCDF-C (a file, in memory, OPeNDAP) or GDAL
 };
 
 // ---- classic-format files (ClassicSize.cpp) ----
