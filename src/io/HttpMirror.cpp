@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <thread>
 
+#include <unistd.h>
+
 #include <cpl_error.h>
 #include <cpl_http.h>
 #include <cpl_json.h>
@@ -72,7 +74,10 @@ void writeWhole(const std::string &path, const std::string &bytes, const std::st
     const std::string parent = path.substr(0, path.rfind('/'));
     if (!exists(parent))
         VSIMkdirRecursive(parent.c_str(), 0755);
-    const std::string part = path + ".part";
+    // a name of this process and call: two runs filling one cache never write the same temporary file
+    static std::atomic<unsigned long> serial{0};
+    const std::string part = path + ".part" + std::to_string(static_cast<long>(::getpid())) + "-" +
+                             std::to_string(++serial);
     VSILFILE *f = VSIFOpenL(part.c_str(), "wb");
     const bool written = f && VSIFWriteL(bytes.data(), 1, bytes.size(), f) == bytes.size();
     const bool closed = f && VSIFCloseL(f) == 0;

@@ -92,8 +92,6 @@ public:
         return {};
     }
 
-    /// @brief The last solve's route as held headings (execution/HeadingRoute.h), which the pipeline flies instead
-
     /// @brief The set reachable from @p setup's start, departing at its departure, up to the last of @p times
     /// (absolute, ascending), on a grid @p cellScale times the planner's default cell; nullopt when the planner does
     /// not compute reachable sets (the default). The pipeline asks the registry's level-set planner for isochrones.
@@ -105,6 +103,8 @@ public:
         (void)cellScale;
         return std::nullopt;
     }
+
+    /// @brief The last solve's route as held headings (execution/HeadingRoute.h), which the pipeline flies instead
     /// of straight legs between the path's states; null when the result is straight legs (the default) or nothing.
     virtual const HeadingRoute *lastHeadingRoute() const
     {
