@@ -26,19 +26,27 @@ void LatticePlanner::prepare(const PipelineSetup &setup)
                 "use a larger spacing");
 }
 
+namespace
+{
+constexpr double kMinGridSize = 1e-9;  ///< the lattice spacing's range, in planning units
+constexpr double kMaxGridSize = 1e12;
+}  // namespace
+
 LatticePlanner::LatticePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name,
                                std::string className)
   : ompl::base::Planner(si, name), className_(std::move(className))
 {
+    // one statement of the range, declared and checked (planning units: dimensionless, or metres on a forecast)
     declareParam<double>("grid_size", this, &LatticePlanner::setGridSize, &LatticePlanner::getGridSize,
-                         "0.:0.01:1000.");
+                         text::number(kMinGridSize) + ":0.01:" + text::number(kMaxGridSize));
     declareParam<unsigned>("sectors", this, &LatticePlanner::setSectors, &LatticePlanner::getSectors, "1:1:5");
 }
 
 void LatticePlanner::setGridSize(double g)
 {
-    if (!(g > 0.0) || !std::isfinite(g))
-        throw Error(className_ + ": grid_size must be a finite number > 0 (got " + std::to_string(g) + ")");
+    if (!(g >= kMinGridSize && g <= kMaxGridSize))
+        throw Error(className_ + ": grid_size must be in " + text::number(kMinGridSize) + ".." +
+                    text::number(kMaxGridSize) + " (got " + text::number(g) + ")");
     const bool changed = g != gridSize_;
     gridSize_ = g;
     if (changed)

@@ -2,6 +2,7 @@
 #include "TveSearch.h"
 
 #include <cmath>
+#include <map>
 #include <cstdio>
 #include <limits>
 #include <optional>
@@ -51,12 +52,48 @@ double legYaw(double x1, double y1, double x2, double y2)
     return yaw >= 3.14159265358979323846 ? yaw - 2.0 * 3.14159265358979323846 : yaw;
 }
 
-/// n when lo <= n <= hi; else throws "ZAStarTVE: <name> must be an integer in lo..hi (<note>got n)".
-unsigned checkedInteger(const char *name, unsigned n, unsigned lo, unsigned hi, const char *note = "")
+/// The range of a numeric parameter, stated once: what declareParam suggests ("lo:step:hi", which mission files and
+/// the command line check) and what the setter accepts.
+struct Range
 {
-    if (n < lo || n > hi)
-        throw Error(std::string("ZAStarTVE: ") + name + " must be an integer in " + std::to_string(lo) + ".." +
-                    std::to_string(hi) + " (" + note + "got " + std::to_string(n) + ")");
+    double lo, step, hi;
+    std::string suggestion() const
+    {
+        return text::number(lo) + ":" + text::number(step) + ":" + text::number(hi);
+    }
+};
+
+const Range &rangeOf(const std::string &name)
+{
+    static const std::map<std::string, Range> ranges = {
+        {"delta_phi_max", {0.1, 1.0, 180.0}},        // degrees, half-width of the accepted courses
+        {"course_extrapolation", {0.0, 0.25, 2.0}},  // k of the predicted course
+        {"turn_widening", {0.0, 0.25, 5.0}},         // cone widening with the predicted turn
+        {"certify_tolerance", {-1.0, 0.05, 1.0}},    // relative; < 0: off
+        {"coarse_factor", {0.0, 1.0, 64.0}},         // 0 automatic, 1 off
+        {"corridor_blocks", {1.0, 1.0, 1000.0}},
+        {"zermelo_steps", {1.0, 1.0, 10000.0}},
+        {"refiner_max_evaluations", {1.0, 1000.0, 100000000.0}}};
+    return ranges.at(name);
+}
+
+/// v when it lies in the parameter's range; else throws "ZAStarTVE: <name> must be in lo..hi (<note>got v)".
+double checkedReal(const char *name, double v, const char *note = "")
+{
+    const Range &r = rangeOf(name);
+    if (!(v >= r.lo && v <= r.hi))
+        throw Error(std::string("ZAStarTVE: ") + name + " must be in " + text::number(r.lo) + ".." +
+                    text::number(r.hi) + " (" + note + "got " + text::number(v) + ")");
+    return v;
+}
+
+/// n when it lies in the parameter's range; else throws "ZAStarTVE: <name> must be an integer in lo..hi (...)".
+unsigned checkedInteger(const char *name, unsigned n, const char *note = "")
+{
+    const Range &r = rangeOf(name);
+    if (n < r.lo || n > r.hi)
+        throw Error(std::string("ZAStarTVE: ") + name + " must be an integer in " + text::number(r.lo) + ".." +
+                    text::number(r.hi) + " (" + note + "got " + std::to_string(n) + ")");
     return n;
 }
 }  // namespace
@@ -93,24 +130,24 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
     declareParam<bool>("heuristic", this, &ZAStarTVE::setHeuristic, &ZAStarTVE::getHeuristic, "0,1");
     declareParam<bool>("zermelo", this, &ZAStarTVE::setZermelo, &ZAStarTVE::getZermelo, "0,1");
     declareParam<double>("delta_phi_max", this, &ZAStarTVE::setDeltaPhiMax, &ZAStarTVE::getDeltaPhiMax,
-                         "1.:1.:180.");
+                         rangeOf("delta_phi_max").suggestion());
     declareParam<double>("course_extrapolation", this, &ZAStarTVE::setCourseExtrapolation,
-                         &ZAStarTVE::getCourseExtrapolation, "0.:0.25:2.");
+                         &ZAStarTVE::getCourseExtrapolation, rangeOf("course_extrapolation").suggestion());
     declareParam<double>("turn_widening", this, &ZAStarTVE::setTurnWidening, &ZAStarTVE::getTurnWidening,
-                         "0.:0.25:5.");
+                         rangeOf("turn_widening").suggestion());
     declareParam<double>("certify_tolerance", this, &ZAStarTVE::setCertifyTolerance,
-                         &ZAStarTVE::getCertifyTolerance, "-1.:0.05:1.");
+                         &ZAStarTVE::getCertifyTolerance, rangeOf("certify_tolerance").suggestion());
     declareParam<bool>("tight_bounds", this, &ZAStarTVE::setTightBounds, &ZAStarTVE::getTightBounds, "0,1");
     declareParam<unsigned>("coarse_factor", this, &ZAStarTVE::setCoarseFactor, &ZAStarTVE::getCoarseFactor,
-                           "0:1:64");
+                           rangeOf("coarse_factor").suggestion());
     declareParam<unsigned>("corridor_blocks", this, &ZAStarTVE::setCorridorBlocks, &ZAStarTVE::getCorridorBlocks,
-                           "1:1:1000");
+                           rangeOf("corridor_blocks").suggestion());
     declareParam<unsigned>("zermelo_steps", this, &ZAStarTVE::setZermeloSteps, &ZAStarTVE::getZermeloSteps,
-                           "1:1:64");
+                           rangeOf("zermelo_steps").suggestion());
     declareParam<bool>("smooth", this, &ZAStarTVE::setSmooth, &ZAStarTVE::getSmooth, "0,1");
     declareParam<bool>("refine", this, &ZAStarTVE::setRefine, &ZAStarTVE::getRefine, "0,1");
     declareParam<unsigned>("refiner_max_evaluations", this, &ZAStarTVE::setRefinerMaxEvaluations,
-                           &ZAStarTVE::getRefinerMaxEvaluations, "1000:1000:100000");
+                           &ZAStarTVE::getRefinerMaxEvaluations, rangeOf("refiner_max_evaluations").suggestion());
 
     const TravelTimeCalculator *travel = ctx_->travel.get();
     const CurrentField *field = ctx_->field.get();
@@ -145,9 +182,12 @@ ompl::base::PlannerAllocator ZAStarTVE::allocator(std::shared_ptr<const GliderCo
 
 void ZAStarTVE::setDeltaPhiMax(double degrees)
 {
-    if (!(degrees > 0.0) || !(degrees <= 180.0))
-        throw Error("ZAStarTVE: delta_phi_max must be in (0, 180] degrees (got " + std::to_string(degrees) + ")");
-    options_.deltaPhiMax = degrees * kDeg;
+    options_.deltaPhiMax = checkedReal("delta_phi_max", degrees, "degrees; ") * kDeg;
+}
+
+void ZAStarTVE::setCourseExtrapolation(double k)
+{
+    options_.courseExtrapolation = checkedReal("course_extrapolation", k);
 }
 
 double ZAStarTVE::getDeltaPhiMax() const
@@ -157,37 +197,32 @@ double ZAStarTVE::getDeltaPhiMax() const
 
 void ZAStarTVE::setTurnWidening(double w)
 {
-    if (!(w >= 0.0) || !std::isfinite(w))
-        throw Error("ZAStarTVE: turn_widening must be finite and >= 0 (got " + std::to_string(w) + ")");
-    options_.turnWidening = w;
+    options_.turnWidening = checkedReal("turn_widening", w);
 }
 
 void ZAStarTVE::setCertifyTolerance(double tol)
 {
-    if (!std::isfinite(tol))
-        throw Error("ZAStarTVE: certify_tolerance must be finite (>= 0, or < 0 for off; got " + std::to_string(tol) +
-                    ")");
-    options_.certifyTolerance = tol;
+    options_.certifyTolerance = checkedReal("certify_tolerance", tol, "< 0 for off; ");
 }
 
 void ZAStarTVE::setZermeloSteps(unsigned n)
 {
-    options_.zermeloSteps = checkedInteger("zermelo_steps", n, 1, 10000);
+    options_.zermeloSteps = checkedInteger("zermelo_steps", n);
 }
 
 void ZAStarTVE::setCoarseFactor(unsigned f)
 {
-    options_.coarseFactor = checkedInteger("coarse_factor", f, 0, 64, "0 automatic, 1 off; ");
+    options_.coarseFactor = checkedInteger("coarse_factor", f, "0 automatic, 1 off; ");
 }
 
 void ZAStarTVE::setCorridorBlocks(unsigned b)
 {
-    options_.corridorBlocks = checkedInteger("corridor_blocks", b, 1, 1000);
+    options_.corridorBlocks = checkedInteger("corridor_blocks", b);
 }
 
 void ZAStarTVE::setRefinerMaxEvaluations(unsigned n)
 {
-    refinerMaxEvaluations_ = checkedInteger("refiner_max_evaluations", n, 1, 100000000u);
+    refinerMaxEvaluations_ = checkedInteger("refiner_max_evaluations", n);
 }
 
 void ZAStarTVE::latticeChanged()

@@ -240,7 +240,7 @@ TEST(Pipeline, PlannerParametersByTheirOmplNames)
     msg = errorOf(kGulfStreamYaml + "  parameters: {delta_phi_max: 400}\n");  // the planner's own check
     EXPECT_HAS(msg, "m.yaml:11");
     EXPECT_HAS(msg, "planner.parameters.delta_phi_max");
-    EXPECT_HAS(msg, "(0, 180]");
+    EXPECT_HAS(msg, "0.1..180");  // its one range, declared and checked
     msg = errorOf(kGulfStreamYaml + "  parameters: {heuristic: maybe}\n");  // OMPL would read it as false
     EXPECT_HAS(msg, "planner.parameters.heuristic");
     EXPECT_HAS(msg, "true or false");

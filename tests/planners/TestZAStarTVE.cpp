@@ -3,6 +3,10 @@
 // the termination condition, solve/clear cycles, forbidden regions, planner data, parameters and CALC-OPTDIR.
 #include <gtest/gtest.h>
 
+#include <sstream>
+
+#include <map>
+
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -435,6 +439,59 @@ TEST(ZAStarTVE, ConfigurationsAndParameters)
     EXPECT_THROW(ZAStarTVE(si, ctx, "RRT"), Error);
     EXPECT_THROW(za.setSectors(0), Error);
     EXPECT_THROW(za.setGridSize(-1.0), Error);
+}
+
+TEST(ZAStarTVE, EveryNumericParameterTakesItsDeclaredRangeAndNothingBeyond)
+{
+    // One statement of each range: the suggestion mission files and the command line check ("lo:step:hi") is what
+    // the setter accepts, both ends in, just beyond either end refused (by the setter itself: the C++ API).
+    std::shared_ptr<GliderContext> ctx;
+    auto ss = makeSimpleSetup(jetProblem(4.8, -0.4, 7.6, 1.2), &ctx);
+    ZAStarTVE za(ss->getSpaceInformation(), ctx);
+    const std::map<std::string, ompl::base::GenericParamPtr> params = za.params().getParams();
+    int checked = 0;
+    for (const auto &[name, param] : params)
+    {
+        const std::string range = param->getRangeSuggestion();
+        const std::size_t a = range.find(':'), b = range.rfind(':');
+        if (a == std::string::npos || a == b)
+            continue;  // "0,1": a switch
+        const double lo = std::stod(range.substr(0, a)), hi = std::stod(range.substr(b + 1));
+        ASSERT_LT(lo, hi) << name << " " << range;
+        const bool integer = name == "sectors" || name == "coarse_factor" || name == "corridor_blocks" ||
+                             name == "zermelo_steps" || name == "refiner_max_evaluations";
+        const auto text = [&](double v) {
+            std::ostringstream os;
+            os.precision(17);
+            os << (integer ? std::round(v) : v);
+            return os.str();
+        };
+        for (const double v : {lo, hi})
+        {
+            EXPECT_TRUE(za.params().setParam(name, text(v))) << name << " = " << text(v) << " (range " << range << ")";
+            EXPECT_EQ(std::stod(za.params().getParam(name)->getValue()), std::stod(text(v))) << name;
+        }
+        const double beyond = integer ? 1.0 : 1e-6 * std::max(1.0, hi - lo);
+        for (const double v : {lo - beyond, hi + beyond})
+        {
+            if (integer && v < 0.0)
+                continue;  // an unsigned parameter cannot be given a negative number
+            bool taken = false;
+            try
+            {
+                taken = za.params().setParam(name, text(v));
+            }
+            catch (const Error &)
+            {
+            }
+            EXPECT_FALSE(taken) << name << " = " << text(v) << " taken beyond its range " << range;
+        }
+        ++checked;
+    }
+    EXPECT_GE(checked, 9);  // grid_size, sectors and ZA*TVE's own numbers
+    // a value the C++ API and the declared range both take (1..64 declared against 1..10000 accepted before)
+    EXPECT_TRUE(za.params().setParam("zermelo_steps", "100"));
+    EXPECT_EQ(za.getZermeloSteps(), 100u);
 }
 
 TEST(ZAStarTVE, CoarserConnectivityIsNeverFaster)

@@ -83,14 +83,15 @@ public:
     /// @brief Zermelo pruning on/off (param "zermelo").
     void setZermelo(bool on) { options_.zermelo = on; }
     bool getZermelo() const { return options_.zermelo; }
-    /// @brief Half-width of the accepted course range, degrees in (0, 180] (param "delta_phi_max", default 18).
+    /// @brief Half-width of the accepted course range, degrees in 0.1..180 (param "delta_phi_max", default 18).
+    /// Every numeric parameter's range is stated once: declareParam's suggestion is what its setter accepts.
     void setDeltaPhiMax(double degrees);
     double getDeltaPhiMax() const;
     /// @brief Extrapolation k of the predicted course (param "course_extrapolation", default 1; 0 = [EichhornRAS]
     /// Table 2).
-    void setCourseExtrapolation(double k) { options_.courseExtrapolation = k; }
+    void setCourseExtrapolation(double k);
     double getCourseExtrapolation() const { return options_.courseExtrapolation; }
-    /// @brief Cone widening w >= 0 with the predicted turn (param "turn_widening", default 1.5; 0 = [EichhornRAS]
+    /// @brief Cone widening w in 0..5 with the predicted turn (param "turn_widening", default 1.5; 0 = [EichhornRAS]
     /// Table 2).
     void setTurnWidening(double w);
     double getTurnWidening() const { return options_.turnWidening; }
