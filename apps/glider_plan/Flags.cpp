@@ -173,10 +173,11 @@ void defineIoFlags(CLI::App &app, Flags &f)
                                            "(not --currents and its options) override its fields")
         ->group(io);
     app.add_option("--currents", f.currents,
-                   "plan on the u/v currents of a NetCDF forecast: a file, or several read as one forecast (a "
+                   "plan on the u/v currents of a forecast: a NetCDF file, or several read as one forecast (a "
                    "comma-separated list of files and glob patterns, e.g. 'hycom_202603*.nc'; ordered by their "
-                   "dates, the later file wins where two overlap); an http(s):// URL is an OPeNDAP dataset (HYCOM, "
-                   "RTOFS, CMEMS THREDDS servers), read for the trip's region, levels and records only")
+                   "dates, the later file wins where two overlap); a Zarr store (a folder, or a URL ending .zarr: "
+                   "Copernicus Marine) or GRIB2 files (RTOFS, weather models' winds); an http(s):// URL is otherwise "
+                   "an OPeNDAP dataset (HYCOM, THREDDS servers); only the trip's region, levels and records are read")
         ->group(io);
     app.add_option("--cache", f.cache,
                    "keep what is fetched from URLs in this folder (an OPeNDAP dataset's values as a NetCDF file, a "
