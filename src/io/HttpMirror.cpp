@@ -159,14 +159,9 @@ ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
             throw Error("Zarr store '" + source + "': the folder '" + folder_ + "' cannot be made");
         store(".zmetadata", metadata);
         // GDAL knows a store by its .zgroup: the consolidated metadata's copy (a store whose root is an array has
-        // its .zarray there instead)
-        CPLJSONDocument doc;
-        doc.LoadMemory(metadata);
-        const CPLJSONObject meta = doc.GetRoot().GetObj("metadata");
-        if (meta.GetObj(".zgroup").IsValid())
-            store(".zgroup", meta.GetObj(".zgroup").Format(CPLJSONObject::PrettyFormat::Plain));
-        else if (meta.GetObj(".zarray").IsValid())
-            store(".zarray", meta.GetObj(".zarray").Format(CPLJSONObject::PrettyFormat::Plain));
+        // its .zarray there instead), kept by readArrays()
+        if (!rootKey_.empty())
+            store(rootKey_, rootText_);
         store(kMarker, source);  // last: a folder without it is not taken as this store's
     }
 }
@@ -187,7 +182,14 @@ void ZarrMirror::readArrays(const std::string &metadata)
     if (!parsed || !doc.GetRoot().GetObj("metadata").IsValid())
         throw Error("Zarr store '" + source + "': its '.zmetadata' is not a store's consolidated metadata (it "
                     "begins '" + metadata.substr(0, 40) + "')");
-    for (const CPLJSONObject &entry : doc.GetRoot().GetObj("metadata").GetChildren())
+    const CPLJSONObject meta = doc.GetRoot().GetObj("metadata");
+    for (const char *root : {".zgroup", ".zarray"})
+        if (rootKey_.empty() && meta.GetObj(root).IsValid())
+        {
+            rootKey_ = root;
+            rootText_ = meta.GetObj(root).Format(CPLJSONObject::PrettyFormat::Plain);
+        }
+    for (const CPLJSONObject &entry : meta.GetChildren())
     {
         const std::string key = entry.GetName();
         if (key != ".zarray" && (key.size() < 8 || key.compare(key.size() - 8, 8, "/.zarray") != 0))

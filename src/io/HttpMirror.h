@@ -96,6 +96,7 @@ private:
     bool checked_{false};      // checkRepublished() done
     std::size_t record_{0};    // the source's entry in the process's record (remoteFetches())
     std::map<std::string, Array> arrays_;
+    std::string rootKey_, rootText_;  // the store's root entry (.zgroup, or .zarray) in the consolidated metadata
     std::set<std::string> absent_;  // keys the server does not hold
     std::set<std::string> seen_;    // keys this process asked for (fetched, or counted as the cache's)
 };
