@@ -11,6 +11,8 @@ Rules:
   functions  no function there over MAX_FUNCTION_LINES lines (from its opening to its closing brace).
   no-issues  no "issue N" in the code or the installed headers: the code says what it does and cites the literature.
   citations  sources cite by the keys of docs/REFERENCES.md ("[EichhornRAS] Eq. 5"), not by author and year.
+  outcomes   no code searches the words of an outcome (a no-path reason, a switch reason, a re-flight note) or
+             compares them to a text: it branches on the typed cause (ompl/NoPath.h's NoPathCause).
 """
 import os
 import re
@@ -26,6 +28,12 @@ MAX_FUNCTION_LINES = 150
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"]ompl_glider/([^/">]+)/')
 RELATIVE_INCLUDE = re.compile(r'^\s*#\s*include\s*"((?:\.\./)+[^"]+)"')
 # an author-year citation: "Akima (1970)", "Brent 1973", "Lolla et al. 2014"
+# a search in, a cut of, or a comparison with the words of an outcome
+OUTCOME_TEXT = re.compile(r"\b(?:reason|why_?|switchReason|reflightNote|noPath\.what)\w*\s*(?:\(\))?\s*(?:\.|->)\s*"
+                          r"(?:r?find|find_first_of|find_last_of|substr|compare|starts_with|ends_with)\s*\(|"
+                          r"\b(?:reason|switchReason|reflightNote)\s*[!=]=\s*\"")
+OUTCOME_FOLDERS = ["src/mission", "src/planners", "src/reachability", "src/ompl", "src/routes", "src/stints",
+                   "src/execution", "src/output"]
 AUTHOR_YEAR = re.compile(r"\b[A-Z][a-z]+(?: et al\.)?,? \(?(19|20)\d\d\)?")
 
 
@@ -170,11 +178,28 @@ def check_no_issue_numbers(root):
     return breaches
 
 
+def check_outcomes(root):
+    breaches = []
+    for path, rel in source_files(root, OUTCOME_FOLDERS):
+        with open(path, encoding="utf-8", errors="replace") as f:
+            text = f.read()
+        for number, line in enumerate(strip_outcome_comments(text).split("\n"), 1):
+            m = OUTCOME_TEXT.search(line)
+            if m:
+                breaches.append(f"{rel}:{number}: '{m.group(0)}' reads an outcome's words: branch on its cause")
+    return breaches
+
+
+def strip_outcome_comments(text):
+    """The text without // comments (strings kept: a comparison with a string literal is what the rule looks for)."""
+    return "\n".join(line.split("//", 1)[0] for line in text.split("\n"))
+
+
 def main():
     root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
     failed = False
     for rule, check in (("layers", check_layers), ("size", check_sizes), ("citations", check_citations),
-                        ("no-issues", check_no_issue_numbers)):
+                        ("no-issues", check_no_issue_numbers), ("outcomes", check_outcomes)):
         breaches = check(root)
         print(f"{rule}: {'ok' if not breaches else str(len(breaches)) + ' breach(es)'}")
         for b in breaches:

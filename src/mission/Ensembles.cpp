@@ -151,9 +151,10 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
                            members[k]->name() + ")";
         r.solved = false;
         r.status = PlanStatus::NoPath;
-        r.reason = std::string("not robust: no candidate plan can be flown in every member of the ensemble (objective ") +
-                   ensembleObjectiveName(e.objective) + "); the best, planned on the " + e.chosen +
-                   ", is impassable in " + failing;
+        const std::string objective = ensembleObjectiveName(e.objective);
+        r.setNoPath({NoPathCause::NotRobust, "not robust: no candidate plan can be flown in every member of the "
+                                             "ensemble (objective " + objective + "); the best, planned on the " +
+                                                 e.chosen + ", is impassable in " + failing});
     }
     r.ensemble = e;
     return r;

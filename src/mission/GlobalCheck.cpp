@@ -232,7 +232,7 @@ PlannedPath straightLegsAlong(const MissionProblem &problem, const std::shared_p
     if (legs.size() < 2)
     {
         c.solved = false;
-        c.reason = "its track cannot be flown as straight legs: " + why;
+        c.setNoPath({NoPathCause::NotFlyable, "its track cannot be flown as straight legs: " + why});
         return c;
     }
     c.raw = c.smoothed = legs;
@@ -254,7 +254,7 @@ PlannedPath straightLegsAlong(const MissionProblem &problem, const std::shared_p
     c.solved = c.pathChecked;
     if (!c.solved)
     {
-        c.reason = "its straight legs fail the path check";
+        c.setNoPath({NoPathCause::NotFlyable, "its straight legs fail the path check"});
         return c;
     }
     reflyRoute(problem, *ctx, c);
@@ -294,8 +294,9 @@ PlannedPath headingsAlong(const MissionProblem &problem, const std::shared_ptr<c
         if (!tracked.ok)
         {
             c.solved = false;
-            c.reason = "its headings cannot be closed on the goal (" + h.why + "), nor its track followed by held "
-                       "headings (" + tracked.why + ")";
+            c.setNoPath({NoPathCause::NotFlyable, "its headings cannot be closed on the goal (" + h.why +
+                                                      "), nor its track followed by held headings (" + tracked.why +
+                                                      ")"});
             return c;
         }
         h = tracked;
@@ -319,8 +320,9 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     const PlannerEntry &asked = plannerEntry(r.switchedFrom.empty() ? r.planner : r.switchedFrom);
     if (!asked.lattice())
         return r;
-    // a front that never reaches the goal proves that no route exists: nothing to look for; nor after a stop request
-    if ((!r.solved && r.reason.rfind("no path exists", 0) == 0) || stopRequested())
+    // a front that never reaches the goal proves that no route exists: nothing to look for; nor where the lattice was
+    // exhausted and no heading planner asked after it, nor after a stop request
+    if ((!r.solved && (r.noPath.cause == NoPathCause::LatticeExhausted || r.noPath.proven())) || stopRequested())
         return r;
     const auto t0 = std::chrono::steady_clock::now();
     const GliderProblem gp = problem.gliderProblem(departure, r.speed);

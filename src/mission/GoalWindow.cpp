@@ -27,7 +27,7 @@ void failArrival(PlannedPath &r, const std::string &why)
 {
     r.solved = false;
     r.status = PlanStatus::NoPath;
-    r.reason = why;
+    r.setNoPath({NoPathCause::ArrivalWindow, why});
     r.pathChecked = false;
 }
 

@@ -40,7 +40,7 @@ PlannedPath headingResult(const MissionProblem &problem, const GliderContext &ct
     if (!f.reached)
     {
         r.status = PlanStatus::NoPath;
-        r.reason = "the heading route fails its check: " + why;
+        r.setNoPath({NoPathCause::NotFlyable, "the heading route fails its check: " + why});
     }
     return r;
 }
@@ -100,9 +100,11 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
         {
             r.solved = false;
             r.status = PlanStatus::NoPath;
-            r.reason = "the heading route fails its accurate re-flight: " +
-                       (f.grounded || !f.ok ? f.why : "it ends " + text::number(r.reflownEndDistance) +
-                                                          " from the goal (goal radius " + text::number(radius) + ")");
+            r.setNoPath({NoPathCause::NotFlyable,
+                         "the heading route fails its accurate re-flight: " +
+                             (f.grounded || !f.ok ? f.why
+                                                  : "it ends " + text::number(r.reflownEndDistance) +
+                                                        " from the goal (goal radius " + text::number(radius) + ")")});
         }
         return;
     }
@@ -147,7 +149,7 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
     {
         r.solved = false;
         r.status = PlanStatus::NoPath;
-        r.reason = "the path cannot be flown when re-flown accurately: " + why;
+        r.setNoPath({NoPathCause::NotFlyable, "the path cannot be flown when re-flown accurately: " + why});
         return;
     }
     r.plannerTravelTime = planner;
@@ -180,13 +182,8 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     bool byModelLand = false;  // no heading reaches water the forecast's land cuts off
     if (!enclosure(problem, departure, &byModelLand).empty() && byModelLand)
         return failed;
-    const std::size_t cut = failed.reason.find("; the path must arrive");
-    std::string lattice = failed.reason.substr(0, cut);
     // the lattice's advice (a finer grid, ...) is moot once another planner has been asked
-    const std::size_t advice = lattice.find("; a finer grid");
-    if (advice != std::string::npos)
-        lattice = lattice.substr(0, advice) + ")";
-    const std::string why = asked.name + " found no path of straight legs: " + lattice;
+    const std::string why = asked.name + " found no path of straight legs: " + failed.noPath.what;
     PlanOptions h = o;
     h.planner = "Isochrone";
     const MissionSpec &m = problem.getSpec();
@@ -195,7 +192,7 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     if (!r.solved)
     {
         // the level set decides: a route of its headings, or the proof that the front never reaches the goal
-        const std::string isochrone = r.reason;
+        const std::string isochrone = r.noPath.text();
         h.planner = "LevelSet";
         r = planOnField(problem, departure, h);
         if (r.solved)
@@ -207,22 +204,25 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     if (r.solved)
     {
         r.switchedFrom = asked.name;
+        r.switchCause = failed.noPath.cause;
         return r;
     }
-    // no route of either kind: the asked planner's outcome, with what the level set found
-    const std::size_t note = failed.reason.find("; the path must arrive");
-    const std::string bound = note == std::string::npos ? std::string() : failed.reason.substr(note);
-    const bool proven = r.reason.find("never reaches the goal") != std::string::npos;
-    const bool timedOut = r.reason.rfind("the time limit", 0) == 0;
-    failed.reason = (proven ? "no path exists: " : "no path found: ") +
-                    (timedOut ? "the level set, after Isochrone, each with " +
-                                    std::string(o.timeLimit > 0 || m.planner.timeLimit > 0
-                                                    ? "the time limit"
-                                                    : "the fallback's default time limit") +
-                                    ": "
-                              : std::string()) +
-                    r.reason + " (" + asked.name +
-                    " found none on its lattice, nor Isochrone with held headings)" + bound;
+    // no route of either kind: the level set's cause and findings, with what the asked planner's search bounds
+    const bool timedOut = r.noPath.cause == NoPathCause::TimeLimit;
+    NoPath none = r.noPath;
+    none.what = (none.proven() ? "no path exists: " : "no path found: ") +
+                (timedOut ? "the level set, after Isochrone, each with " +
+                                std::string(o.timeLimit > 0 || m.planner.timeLimit > 0
+                                                ? "the time limit"
+                                                : "the fallback's default time limit") +
+                                ": "
+                          : std::string()) +
+                r.noPath.text() + " (" + asked.name + " found none on its lattice, nor Isochrone with held headings)";
+    none.advice.clear();
+    none.bound = failed.noPath.bound;
+    none.boundSpan = failed.noPath.boundSpan;
+    none.boundText = failed.noPath.boundText;
+    failed.setNoPath(std::move(none));
     failed.status = PlanStatus::NoPath;
     failed.planningSeconds = r.planningSeconds;
     return failed;

@@ -167,7 +167,8 @@ std::vector<PlannedLeg> flyOrder(LegPlanner &planner, const std::vector<std::siz
         {
             l.plan.solved = false;
             l.plan.status = PlanStatus::NoPath;
-            l.plan.reason = "stay at " + l.to + " for " + durationText(planner.stops().problem, l.stay) + ": " + why;
+            l.plan.setNoPath({NoPathCause::ArrivalWindow,
+                              "stay at " + l.to + " for " + durationText(planner.stops().problem, l.stay) + ": " + why});
         }
         legs.push_back(std::move(l));
         if (!legs.back().plan.solved)
@@ -213,14 +214,18 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
         const PlannedLeg &bad = last;
         r.status = bad.plan.status == PlanStatus::ExactSolution ? PlanStatus::NoPath : bad.plan.status;
         r.plannerStatus = bad.plan.plannerStatus;
-        r.reason = "leg " + std::to_string(bad.index + 1) + ", " + bad.from + " to " + bad.to + ": " + bad.plan.reason;
+        // the leg's cause and figures, its words after the leg's name
+        const std::string leg = "leg " + std::to_string(bad.index + 1) + ", " + bad.from + " to " + bad.to + ": ";
+        NoPath why = bad.plan.noPath;
+        why.leg = bad.index + 1;
+        why.what = leg + why.what;
+        if (bad.plan.badInput == "departure.time" && bad.index > 0)
+            why.what = leg + "it would depart at " + timeText(problem, bad.plan.departure) +
+                       ", after the end of the forecast";
+        r.setNoPath(std::move(why));
         r.badInput = legBadInput(bad.plan.badInput, bad.fromVia,
                                  bad.toVia < 0 ? static_cast<int>(m.waypoints.size()) : bad.toVia, m.waypoints.size(),
                                  bad.index);
-        if (bad.plan.badInput == "departure.time" && bad.index > 0)
-            r.reason = "leg " + std::to_string(bad.index + 1) + ", " + bad.from + " to " + bad.to +
-                       ": it would depart at " + timeText(problem, bad.plan.departure) +
-                       ", after the end of the forecast";
         for (const PlannedLeg &l : legs)
             planning_detail::addPlanningWork(r, l.plan);
         return r;

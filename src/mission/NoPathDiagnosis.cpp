@@ -192,24 +192,11 @@ std::string enclosure(const MissionProblem &problem, double t0, bool *byModelLan
     return what;
 }
 
-namespace
-{
-/// The generic advice of a planner's reason, removed once the diagnosis says what helps.
-std::string withoutGenericAdvice(std::string reason, bool dropHorizon)
-{
-    const std::string lattice = "; a finer grid, more sectors or a higher speed may find one";
-    if (const std::size_t at = reason.find(lattice); at != std::string::npos)
-        reason.erase(at, lattice.size());
-    if (const std::size_t at = reason.find("; the path must arrive"); dropHorizon && at != std::string::npos)
-        reason.erase(at);
-    return reason;
-}
-}  // namespace
-
 void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
 {
     // a search stopped by its time limit is not diagnosed: more time is the advice
-    if (r.solved || !r.badInput.empty() || r.reason.find("time limit") != std::string::npos)
+    const NoPathCause cause = r.noPath.cause;
+    if (r.solved || !r.badInput.empty() || cause == NoPathCause::TimeLimit || cause == NoPathCause::Approximate)
         return;
     const MissionSpec &m = problem.getSpec();
     const GliderProblem gp = problem.gliderProblem(tDep, r.speed > 0.0 ? r.speed : m.vehicle.speed);
@@ -261,7 +248,12 @@ void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
     std::string why;
     for (const std::string &f : findings)
         why += (why.empty() ? "" : "; ") + f;
-    r.reason = why + " (" + withoutGenericAdvice(r.reason, !enclosed.empty() || forecastBound) + ")";
+    // the planner's generic advice gives way to the findings, and so does the bound where they name it
+    NoPath n = r.noPath;
+    n.what = why + " (" + n.what + (!enclosed.empty() || forecastBound ? std::string() : n.boundText) + ")";
+    n.advice.clear();
+    n.boundText.clear();
+    r.setNoPath(std::move(n));
 }
 }  // namespace planning_detail
 }  // namespace ompl_glider

@@ -14,34 +14,47 @@ namespace ompl_glider
 {
 namespace planning_detail
 {
-std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::Planner &planner,
-                         const GliderSimpleSetup &setup, double timeLimit)
+NoPath noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::Planner &planner,
+                    const GliderSimpleSetup &setup, double timeLimit)
 {
     if (!setup.lastCheckMessage().empty())
-        return setup.lastCheckMessage();
-    if (std::string own = pipelineView(planner).noPathReason(status, timeLimit); !own.empty())
+        return {NoPathCause::BadInput, setup.lastCheckMessage()};
+    if (NoPath own = pipelineView(planner).noPathReason(status, timeLimit); own.cause != NoPathCause::None)
         return own;
     if (status == ompl::base::PlannerStatus::APPROXIMATE_SOLUTION)
-        return "the planner reached only an approximate solution within the time limit";
+        return {NoPathCause::Approximate, "the planner reached only an approximate solution within the time limit"};
     if (status == ompl::base::PlannerStatus::TIMEOUT)
-        return "the time limit (" + text::number(timeLimit) + " s) ended the search before a path was found: raise it "
-               "(planner.time_limit, --time-limit) or shorten the planning horizon (planner.horizon)";
-    return std::string("planner status: ") + status.asString();
+    {
+        NoPath n{NoPathCause::TimeLimit, "the time limit (" + text::number(timeLimit) + " s) ended the search before "
+                                         "a path was found: raise it (planner.time_limit, --time-limit) or shorten "
+                                         "the planning horizon (planner.horizon)"};
+        n.timeLimit = timeLimit;
+        return n;
+    }
+    const bool bad = status == ompl::base::PlannerStatus::INVALID_START ||
+                     status == ompl::base::PlannerStatus::INVALID_GOAL;
+    return {bad ? NoPathCause::BadInput : NoPathCause::Other, std::string("planner status: ") + status.asString()};
 }
 
 /// What bounds the arrival of an exhausted search: the end of the forecast or the planning horizon.
-std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp)
+void boundArrival(const MissionProblem &problem, const GliderProblem &gp, NoPath &n)
 {
     // in the mission's own units: days and hours where it has a time unit, else the field's number
     const MissionSpec &m = problem.getSpec();
     const std::string span = m.physicalUnits().time ? text::durationText(gp.horizon * m.timeUnitSeconds) :
                                                       text::number(gp.horizon, 6) + " time units";
     const double fieldEnd = problem.getField()->timeEnd();
+    n.boundSpan = gp.horizon;
     if (std::isfinite(fieldEnd) && gp.t0 + gp.horizon >= fieldEnd - 1e-9 * std::max(1.0, std::abs(fieldEnd)))
-        return std::string("; the path must arrive before the forecast ends, ") + span +
-               " after departure: depart earlier, or hold the last forecast time past its end (current.horizon: hold_last, --beyond hold)";
-    return std::string("; the path must arrive within the planning horizon, ") + span +
-           " after departure (planner.horizon)";
+    {
+        n.bound = ArrivalBound::ForecastEnd;
+        n.boundText = "; the path must arrive before the forecast ends, " + span +
+                      " after departure: depart earlier, or hold the last forecast time past its end (current.horizon: "
+                      "hold_last, --beyond hold)";
+        return;
+    }
+    n.bound = ArrivalBound::PlanningHorizon;
+    n.boundText = "; the path must arrive within the planning horizon, " + span + " after departure (planner.horizon)";
 }
 }  // namespace planning_detail
 }  // namespace ompl_glider

@@ -177,7 +177,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     if (!(gp.horizon > 0))
     {
         r.status = PlanStatus::InvalidStart;
-        r.reason = "departure after the end of the forecast";
+        r.setNoPath({NoPathCause::BadInput, "departure after the end of the forecast"});
         r.badInput = "departure.time";
         return r;
     }
@@ -195,7 +195,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
             std::snprintf(where, sizeof where, " (lon %.5f, lat %.5f)", p.lon, p.lat);
             r.status = start ? PlanStatus::InvalidStart : PlanStatus::InvalidGoal;
             r.badInput = start ? "start" : "goal";
-            r.reason = "the " + r.badInput + where + " is " + why;
+            r.setNoPath({NoPathCause::BadInput, "the " + r.badInput + where + " is " + why});
             return r;
         }
     std::shared_ptr<GliderContext> ctx;
@@ -247,30 +247,32 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     if (!r.solved && stopRequested())
     {
         r.status = PlanStatus::Stopped;
-        r.reason = "stopped on request (Ctrl-C) before a path was found";
+        r.setNoPath({NoPathCause::Stopped, "stopped on request (Ctrl-C) before a path was found"});
         return r;
     }
     if (!r.solved)
     {
-        r.reason = noPathReason(status, *planner, *ss, limit);
+        NoPath why = noPathReason(status, *planner, *ss, limit);
         if (status == ompl::base::PlannerStatus::INVALID_START || status == ompl::base::PlannerStatus::INVALID_GOAL)
         {
             const bool start = status == ompl::base::PlannerStatus::INVALID_START;
             r.badInput = start ? "start" : "goal";
+            why.cause = NoPathCause::BadInput;
             if (problem.isGeographic())
             {
                 // the planner speaks in its plane; the pilot gave lon/lat
                 const LonLat p = problem.toGeographic(start ? s : g);
                 char where[96];
                 std::snprintf(where, sizeof where, " (lon %.5f, lat %.5f)", p.lon, p.lat);
-                r.reason += std::string("; the ") + r.badInput + where;
+                why.what += std::string("; the ") + r.badInput + where;
             }
         }
-        if (r.reason.rfind("no path exists", 0) == 0)
+        if (why.cause == NoPathCause::LatticeExhausted)
         {
             r.status = PlanStatus::NoPath;  // OMPL's ABORT or TIMEOUT would send the user after a longer time limit
-            r.reason += horizonNote(problem, gp);
+            boundArrival(problem, gp, why);
         }
+        r.setNoPath(std::move(why));
         return r;
     }
     ompl::geometric::PathGeometric path = ss->getSolutionPath();
@@ -366,7 +368,7 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
         result.plan.speed = m.vehicle.speed;
         result.plan.planner = plannerEntry(m.planner.name).name;
         result.plan.status = PlanStatus::NoPath;
-        result.plan.reason = "no departure in the window has a path within the forecast";
+        result.plan.setNoPath({NoPathCause::NoDeparture, "no departure in the window has a path within the forecast"});
         result.departureIso = problem.isoTime(result.plan.departure);
         result.wallSeconds = secondsSince(start);
         return result;

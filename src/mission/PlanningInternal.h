@@ -7,7 +7,7 @@
 ///                       made before any search, departureFunction()
 ///  - PlannerSetup.cpp   the planner of the mission (makePlanner()), its parameters, the checked problem of one
 ///                       departure, stintSettings()
-///  - NoPathReason.cpp   why a search ended without a path (noPathReason(), horizonNote())
+///  - NoPathReason.cpp   why a search ended without a path (noPathReason(), boundArrival())
 ///  - NoPathDiagnosis.cpp what blocks the route, for the pilot (diagnoseNoPath())
 ///  - Ensembles.cpp      robust plans over the members of an ensemble (planRobust()), ensembleObjective(),
 ///                       retimePath()
@@ -82,13 +82,14 @@ void checkExecutionWork(const MissionSpec &m, double interval, double window, st
 
 // NoPathReason.cpp
 
-/// Why a search ended without an exact path: the setup's own check, the planner's own words
+/// Why a search ended without an exact path: the setup's own check, the planner's own cause and words
 /// (PipelinePlanner::noPathReason()), or OMPL's status.
-std::string noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::Planner &planner,
-                         const GliderSimpleSetup &setup, double timeLimit);
+NoPath noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::Planner &planner,
+                    const GliderSimpleSetup &setup, double timeLimit);
 
-/// What bounds the arrival of an exhausted search: the end of the forecast or the planning horizon.
-std::string horizonNote(const MissionProblem &problem, const GliderProblem &gp);
+/// What bounds the arrival of an exhausted search (the end of the forecast or the planning horizon): sets @p n's
+/// bound, boundSpan and boundText.
+void boundArrival(const MissionProblem &problem, const GliderProblem &gp, NoPath &n);
 
 // NoPathDiagnosis.cpp
 

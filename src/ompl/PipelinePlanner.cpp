@@ -32,6 +32,28 @@ std::string PipelineSetup::placeOfFirstGiven(std::initializer_list<const char *>
     return where(fallback);
 }
 
+std::string causeName(NoPathCause cause)
+{
+    switch (cause)
+    {
+        case NoPathCause::None: return "";
+        case NoPathCause::BadInput: return "bad_input";
+        case NoPathCause::Stopped: return "stopped";
+        case NoPathCause::TimeLimit: return "time_limit";
+        case NoPathCause::Approximate: return "approximate";
+        case NoPathCause::LatticeExhausted: return "lattice_exhausted";
+        case NoPathCause::SearchEnded: return "search_ended";
+        case NoPathCause::Unreachable: return "unreachable";
+        case NoPathCause::WalledOff: return "walled_off";
+        case NoPathCause::NotFlyable: return "not_flyable";
+        case NoPathCause::NotRobust: return "not_robust";
+        case NoPathCause::ArrivalWindow: return "arrival_window";
+        case NoPathCause::NoDeparture: return "no_departure";
+        case NoPathCause::Other: return "other";
+    }
+    return "other";
+}
+
 const PipelinePlanner &pipelineView(const ompl::base::Planner &planner)
 {
     static const DefaultAnswers none;

@@ -358,6 +358,7 @@ void legsJson(const MissionResult &r, const MissionProblem &problem, json &j)
                         {"status", statusText(p.status)},
                         {"solved", p.solved},
                         {"reason", jtext(p.reason)},
+                        {"no_path_cause", jtext(causeName(p.noPath.cause))},
                         {"route_model", p.headingRoute() ? "headings" : "straight_legs"},
                         {"hold_time", p.holdTime},
                         {"arrival_timing", jtext(p.arrivalTiming)},
@@ -370,6 +371,19 @@ void legsJson(const MissionResult &r, const MissionProblem &problem, json &j)
                         {"last_waypoint", l.lastPoint}});
     }
     j["legs"] = legs;
+}
+
+/// How the plan ended: solved, its status, why there is no path (words and cause) and the switch to another planner.
+void outcomeJson(const PlannedPath &p, json &j)
+{
+    j["solved"] = p.solved;
+    j["status"] = statusText(p.status);
+    j["reason"] = jtext(p.reason);
+    j["no_path_cause"] = jtext(causeName(p.noPath.cause));
+    j["no_path_leg"] = p.noPath.leg > 0 ? json(p.noPath.leg) : json(nullptr);
+    j["switched_from"] = jtext(p.switchedFrom);
+    j["switch_reason"] = jtext(p.switchReason);
+    j["switch_cause"] = jtext(causeName(p.switchCause));
 }
 }  // namespace
 
@@ -390,9 +404,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["forecast_notes"] = json::array();
     for (const std::string &note : r.forecastNotes)
         j["forecast_notes"].push_back(jtext(note));
-    j["solved"] = p.solved;
-    j["status"] = statusText(p.status);
-    j["reason"] = jtext(p.reason);
+    outcomeJson(p, j);
     j["planner"] = plannerJson(m, p);
     j["units"] = {{"length_m", m.lengthUnitMetres}, {"time_s", m.timeUnitSeconds}};
     j["speed"] = p.speed;
@@ -430,11 +442,9 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["expanded_vertices"] = p.expandedVertices;
     j["wall_time_s"] = {{"planning", p.planningSeconds}, {"postprocess", p.postprocessSeconds}, {"total", r.wallSeconds}};
     j["path_checked"] = p.pathChecked;
-    // heading routes: what the glider holds, and the switch from a planner without a path
+    // heading routes: what the glider holds (the switch from a planner without a path: outcomeJson())
     j["route_model"] = p.headingRoute() ? "headings" : "straight_legs";
     j["headings"] = headingsJson(r, problem);
-    j["switched_from"] = jtext(p.switchedFrom);
-    j["switch_reason"] = jtext(p.switchReason);
     // the global check of the route class: extremals shot from the start beside the planner's route
     j["global_check"] = globalCheckJson(p);
     // honest times: the accurate Dormand-Prince re-flight of the reported route

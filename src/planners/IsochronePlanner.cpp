@@ -111,6 +111,7 @@ void IsochronePlanner::clear()
     Planner::clear();
     route_ = HeadingRoute();
     reason_.clear();
+    reasonCause_ = NoPathCause::None;
     expanded_ = 0;
     searchTime_ = kInf;
 }
@@ -120,6 +121,7 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
     checkValidity();
     route_ = HeadingRoute();
     reason_.clear();
+    reasonCause_ = NoPathCause::None;
     expanded_ = 0;
     searchTime_ = kInf;
     ompl::base::PlannerStatus status;
@@ -146,6 +148,7 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
         if (search.timedOut)
             return ompl::base::PlannerStatus::TIMEOUT;
         reason_ = search.why;
+        reasonCause_ = NoPathCause::SearchEnded;
         OMPL_INFORM("%s: %s (%zu points)", getName().c_str(), reason_.c_str(), search.points.size());
         return ompl::base::PlannerStatus::ABORT;
     }
@@ -166,6 +169,7 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
         if (!closeOnGoal(setup, search, goal, rs, pool, ptc, route_, why))
         {
             reason_ = "the route could not be closed on the goal: " + why;
+            reasonCause_ = NoPathCause::NotFlyable;
             OMPL_INFORM("%s: %s", getName().c_str(), reason_.c_str());
             return ompl::base::PlannerStatus::ABORT;
         }
@@ -180,6 +184,7 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
     if (!flight.reached && refine_)
     {
         reason_ = "the refined route fails its check: " + why;
+        reasonCause_ = NoPathCause::NotFlyable;
         route_ = HeadingRoute();
         return ompl::base::PlannerStatus::ABORT;
     }

@@ -148,23 +148,36 @@ void Wavefront::prepare(const PipelineSetup &setup)
                                 kMaxWavefrontNodes));
 }
 
-std::string Wavefront::noPathReason(const ompl::base::PlannerStatus &, double timeLimit) const
+NoPath Wavefront::noPathReason(const ompl::base::PlannerStatus &, double timeLimit) const
 {
+    NoPath n;
     switch (outcome_)
     {
         case WavefrontOutcome::InvalidStart:
-            return "invalid start: " + message_;
+            n.cause = NoPathCause::BadInput;
+            n.what = "invalid start: " + message_;
+            break;
         case WavefrontOutcome::InvalidGoal:
-            return "invalid goal: " + message_;
+            n.cause = NoPathCause::BadInput;
+            n.what = "invalid goal: " + message_;
+            break;
         case WavefrontOutcome::Exhausted:
-            return "no path exists on this lattice: " + message_;
+            n.cause = NoPathCause::LatticeExhausted;
+            n.what = "no path exists on this lattice: " + message_;
+            break;
         case WavefrontOutcome::BadWindow:
-            return message_;
+            n.cause = NoPathCause::BadInput;
+            n.what = message_;
+            break;
         case WavefrontOutcome::Terminated:
-            return "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
+            n.cause = NoPathCause::TimeLimit;
+            n.timeLimit = timeLimit;
+            n.what = "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
+            break;
         default:
-            return {};
+            break;
     }
+    return n;
 }
 
 double Wavefront::effectiveTimeStep() const

@@ -22,22 +22,34 @@
 
 namespace ompl_glider
 {
-std::string ZAStarTVE::noPathReason(const ompl::base::PlannerStatus &, double timeLimit) const
+NoPath ZAStarTVE::noPathReason(const ompl::base::PlannerStatus &, double timeLimit) const
 {
+    NoPath n;
     switch (last_.outcome)
     {
         case TveOutcome::InvalidStart:
-            return "invalid start: " + last_.message;
+            n.cause = NoPathCause::BadInput;
+            n.what = "invalid start: " + last_.message;
+            break;
         case TveOutcome::InvalidGoal:
-            return "invalid goal: " + last_.message;
+            n.cause = NoPathCause::BadInput;
+            n.what = "invalid goal: " + last_.message;
+            break;
         case TveOutcome::Exhausted:
-            return "no path exists on this lattice (" + std::to_string(last_.expansions) +
-                   " vertices expanded; a finer grid, more sectors or a higher speed may find one)";
+            n.cause = NoPathCause::LatticeExhausted;
+            n.expanded = last_.expansions;
+            n.what = "no path exists on this lattice (" + std::to_string(last_.expansions) + " vertices expanded)";
+            n.advice = ": a finer grid, more sectors or a higher speed may find one";
+            break;
         case TveOutcome::Terminated:
-            return "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
+            n.cause = NoPathCause::TimeLimit;
+            n.timeLimit = timeLimit;
+            n.what = "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
+            break;
         default:
-            return {};
+            break;
     }
+    return n;
 }
 
 namespace

@@ -106,17 +106,29 @@ void LevelSetPlanner::prepare(const PipelineSetup &setup)
                                 kMaxLevelSetSteps, kMaxLevelSetWork));
 }
 
-std::string LevelSetPlanner::noPathReason(const ompl::base::PlannerStatus &status, double) const
+NoPath LevelSetPlanner::noPathReason(const ompl::base::PlannerStatus &status, double) const
 {
+    NoPath n;
     if (status != ompl::base::PlannerStatus::ABORT)
-        return {};
+        return n;
     if (last_.goalReached)
-        return reason_;
-    if (last_.goalWalledOff)
-        return "the reachable front never reaches the goal: no water links it to the start (land or forbidden "
-               "regions wall it in; a flood fill of the level set's grid, before any step)";
-    return "the reachable front never reaches the goal within the time window (the current carries the glider off "
-           "faster than it makes way, or land, forbidden regions or a closure wall it in)";
+    {
+        n.cause = NoPathCause::NotFlyable;
+        n.what = reason_;
+    }
+    else if (last_.goalWalledOff)
+    {
+        n.cause = NoPathCause::WalledOff;
+        n.what = "the reachable front never reaches the goal: no water links it to the start (land or forbidden "
+                 "regions wall it in; a flood fill of the level set's grid, before any step)";
+    }
+    else
+    {
+        n.cause = NoPathCause::Unreachable;
+        n.what = "the reachable front never reaches the goal within the time window (the current carries the glider "
+                 "off faster than it makes way, or land, forbidden regions or a closure wall it in)";
+    }
+    return n;
 }
 
 

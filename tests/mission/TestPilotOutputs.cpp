@@ -501,6 +501,12 @@ TEST(PilotNoPath, AForecastTooShortNamesItsEndAndBeyondHold)
     EXPECT_HAS(r.plan.reason, "the forecast ends at 2026-03-20T00:00:00Z, 1 d 0.0 h (86400.0 s) after the departure");
     EXPECT_HAS(r.plan.reason, "--beyond hold");
     EXPECT_HAS_NOT(r.plan.reason, "a finer grid");
+    // typed: the forecast's end bounds the arrival, one day after the departure; the words are the parts'
+    EXPECT_EQ(r.plan.noPath.bound, ArrivalBound::ForecastEnd);
+    EXPECT_DOUBLE_EQ(r.plan.noPath.boundSpan, 86400.0);
+    EXPECT_EQ(r.plan.noPath.cause, NoPathCause::Unreachable);
+    EXPECT_TRUE(r.plan.noPath.advice.empty());
+    EXPECT_EQ(r.plan.reason, r.plan.noPath.text());
     EXPECT_EQ(r.departureIso, "2026-03-19T00:00:00Z");
     EXPECT_HAS(reportOf(r), "Departure:          345600 (2026-03-19T00:00:00Z)\n");
     // the same with --beyond hold: a route, on the frozen last field, said in the report and summary.json
@@ -538,6 +544,10 @@ planner: {horizon: 100}
                               "0.40 m/s (0.8 kn)");
     EXPECT_HAS_NOT(r.plan.reason, "a finer grid");
     EXPECT_HAS_NOT(r.plan.reason, "is enclosed");
+    // the level set after the lattice proves it: no route exists, and the pipeline knows it by the cause
+    EXPECT_EQ(r.plan.noPath.cause, NoPathCause::Unreachable);
+    EXPECT_TRUE(r.plan.noPath.proven());
+    EXPECT_EQ(r.plan.status, PlanStatus::NoPath);
 }
 
 TEST(PilotNoPath, AnEnclosedStartIsNamedWithWhatEnclosesIt)
@@ -563,6 +573,7 @@ forbidden:
     EXPECT_HAS(r.plan.reason, "the start is enclosed: the water around it (");
     EXPECT_HAS(r.plan.reason, "closed by forbidden regions, coastline polygons or the keep-off distance");
     EXPECT_HAS_NOT(r.plan.reason, "a finer grid");
+    EXPECT_EQ(r.plan.noPath.cause, NoPathCause::WalledOff);
 }
 
 TEST(PilotNoPath, APassageClosedAtTheModelsResolutionIsNamed)

@@ -592,6 +592,9 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
     EXPECT_EQ(s["route_model"], "headings");
     EXPECT_EQ(s["switched_from"], "ZA*TVE");
     EXPECT_HAS(s["switch_reason"].get<std::string>(), "ZA*TVE found no path");
+    EXPECT_EQ(s["switch_cause"], causeName(p.switchCause));
+    EXPECT_NE(p.switchCause, NoPathCause::None);
+    EXPECT_TRUE(s["no_path_cause"].is_null());
     ASSERT_EQ(s["headings"].size(), n - 1);
     double total = 0.0;
     for (std::size_t i = 0; i + 1 < n; ++i)

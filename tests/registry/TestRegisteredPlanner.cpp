@@ -36,9 +36,13 @@ public:
     {
         declareParam<double>("max_length", this, &StraightLegPlanner::setMaxLength, &StraightLegPlanner::maxLength,
                              "0:1:1000000");
+        // the cause it gives when it has no path (NoPathCause; 0: Other), its words the same whatever the cause
+        declareParam<int>("cause", this, &StraightLegPlanner::setCause, &StraightLegPlanner::cause, "0:1:13");
     }
     void setMaxLength(double v) { maxLength_ = v; }
     double maxLength() const { return maxLength_; }
+    void setCause(int c) { cause_ = c == 0 ? NoPathCause::Other : static_cast<NoPathCause>(c); }
+    int cause() const { return cause_ == NoPathCause::Other ? 0 : static_cast<int>(cause_); }
 
     void prepare(const PipelineSetup &setup) override
     {
@@ -48,7 +52,10 @@ public:
                         " long, longer than the test planner's max_length");
     }
     std::uint64_t expandedVertices() const override { return expanded_; }
-    std::string noPathReason(const ompl::base::PlannerStatus &, double) const override { return why_; }
+    NoPath noPathReason(const ompl::base::PlannerStatus &, double) const override
+    {
+        return {why_.empty() ? NoPathCause::None : cause_, why_};
+    }
 
     ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &) override
     {
@@ -80,6 +87,7 @@ private:
     double maxLength_{0.0};
     std::uint64_t expanded_{0};
     std::string why_;
+    NoPathCause cause_{NoPathCause::Other};
 };
 
 void registerOnce()
@@ -150,6 +158,43 @@ TEST(RegisteredPlanner, ItsNoPathReasonReachesTheResult)
     EXPECT_NE(r.plan.reason.find("StraightLeg: the straight leg from the start to the goal cannot be flown"),
               std::string::npos)
         << r.plan.reason;
+}
+
+TEST(RegisteredPlanner, ThePipelineActsOnItsCauseNotItsWords)
+{
+    // the same words under three causes; the pipeline's handling follows the cause alone
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    registerOnce();
+    const std::string rock = "forbidden:\n  obstacles:\n    - {name: rock, points: [[3, -1], [5, -1], [5, 1], [3, 1]]}\n";
+    const auto run = [&](NoPathCause c, const std::string &current) {
+        std::string text = mission("  parameters: {cause: " + std::to_string(static_cast<int>(c)) + "}\n" + rock);
+        if (!current.empty())
+            text.replace(text.find("u: 0.1"), 6, current);
+        return runMission(MissionProblem(parseMission(text, "s.yaml"))).plan;
+    };
+    // an exhausted search: "No path" and what bounds the arrival (the planning horizon of 60), after the words
+    const PlannedPath exhausted = run(NoPathCause::LatticeExhausted, "");
+    ASSERT_FALSE(exhausted.solved);
+    EXPECT_EQ(exhausted.status, PlanStatus::NoPath);
+    EXPECT_EQ(exhausted.noPath.cause, NoPathCause::LatticeExhausted);
+    EXPECT_EQ(exhausted.noPath.bound, ArrivalBound::PlanningHorizon);
+    EXPECT_DOUBLE_EQ(exhausted.noPath.boundSpan, 60.0);
+    EXPECT_EQ(exhausted.reason.rfind("StraightLeg: the straight leg", 0), 0u) << exhausted.reason;
+    EXPECT_NE(exhausted.reason.find("; the path must arrive within the planning horizon"), std::string::npos);
+    // another cause: OMPL's status stands (Abort), no bound
+    const PlannedPath other = run(NoPathCause::SearchEnded, "");
+    EXPECT_EQ(other.status, PlanStatus::Abort);
+    EXPECT_EQ(other.noPath.bound, ArrivalBound::None);
+    EXPECT_EQ(other.noPath.cause, NoPathCause::SearchEnded);
+    // a current of 1 against the glider's 0.5: the diagnosis names it, unless the cause is the time limit (more
+    // time is then the advice) although the words do not say "time limit"
+    const PlannedPath diagnosed = run(NoPathCause::SearchEnded, "u: -1.0");
+    EXPECT_NE(diagnosed.reason.find("the current reaches up to"), std::string::npos) << diagnosed.reason;
+    const PlannedPath timed = run(NoPathCause::TimeLimit, "u: -1.0");
+    EXPECT_EQ(timed.reason.find("the current reaches up to"), std::string::npos) << timed.reason;
+    EXPECT_EQ(timed.noPath.cause, NoPathCause::TimeLimit);
+    for (const PlannedPath *p : {&exhausted, &other, &diagnosed, &timed})
+        EXPECT_EQ(p->reason, p->noPath.text());
 }
 
 TEST(RegisteredPlanner, ItsRefusalNamesTheMissionField)

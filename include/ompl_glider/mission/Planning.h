@@ -21,6 +21,7 @@
 #include "ompl_glider/mission/MissionExecution.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/PlanStatus.h"
+#include "ompl_glider/ompl/NoPath.h"
 #include "ompl_glider/execution/Stints.h"
 
 namespace ompl_glider
@@ -136,7 +137,9 @@ struct PlannedPath
     /// What OMPL's solve() returned (Unknown when no planner ran: a start or goal refused before); status differs
     /// where the pipeline knows more (NoPath for a planner's Abort or Timeout that proved no path exists, Stopped)
     PlanStatus plannerStatus{PlanStatus::Unknown};
-    std::string reason;       ///< why there is no path (empty when solved)
+    std::string reason;       ///< why there is no path, in words (empty when solved): noPath.text()
+    /// Why there is no path, typed: its cause (what code branches on), figures and the parts of reason
+    NoPath noPath;
     /// The input at fault when the problem itself is bad (start, goal, departure): its dotted field name
     /// ("start", "goal", "departure.time", for MissionSpec::place()); empty when there is a path or the problem is
     /// well-formed and has none.
@@ -180,6 +183,7 @@ struct PlannedPath
     /// why; both empty when it did not switch
     std::string switchedFrom;
     std::string switchReason;  ///< see switchedFrom
+    NoPathCause switchCause{NoPathCause::None};  ///< why the planner first asked found none (None: no switch)
     /// Honest times: the route re-flown by the accurate Dormand-Prince re-flight (execution/Reflight.h).
     /// Straight legs are re-timed leg by leg by it (full speed; holds and legs the plan flies slower on purpose keep
     /// their planned arrival when the re-flight is earlier), so path and travelTime are the re-flight's; a leg it
@@ -196,6 +200,13 @@ struct PlannedPath
     double reflownEndDistance{std::numeric_limits<double>::quiet_NaN()};
     /// The global check of the route class (lattice planners in the default pipeline); unset when it did not run
     std::optional<GlobalCheck> globalCheck;
+
+    /// @brief Sets noPath to @p why and reason to its words.
+    void setNoPath(NoPath why)
+    {
+        noPath = std::move(why);
+        reason = noPath.text();
+    }
 
     /// @brief True for a route of held headings.
     bool headingRoute() const

@@ -2,10 +2,10 @@
 /// @file PipelinePlanner.h
 /// @brief What the planning pipeline (mission/Planning.h) asks of a planner beyond OMPL's Planner: to take the
 /// mission's settings and refuse work beyond the limits before the search, its counters, the route model of its
-/// result (a heading route, a stint plan) and, after a search without a path, why, in words for the user. A planner
-/// of this project implements PipelinePlanner beside ompl::base::Planner; OMPL's own planners do not, and
-/// pipelineView() answers for them with the defaults. The pipeline asks every planner through this interface only,
-/// so adding a planner is its class, its row in the registry (registry/PlannerRegistry.h) and its tests.
+/// result (a heading route, a stint plan) and, after a search without a path, why (its cause and its words,
+/// NoPath.h). A planner of this project implements PipelinePlanner beside ompl::base::Planner; OMPL's own planners do
+/// not, and pipelineView() answers for them with the defaults. The pipeline asks every planner through this interface
+/// only, so adding a planner is its class, its row in the registry (registry/PlannerRegistry.h) and its tests.
 
 #include <cstdint>
 #include <functional>
@@ -18,6 +18,7 @@
 
 #include "ompl_glider/Geometry.h"
 #include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/ompl/NoPath.h"
 
 namespace ompl_glider
 {
@@ -83,9 +84,10 @@ public:
         return 0;
     }
 
-    /// @brief Why the last solve ended without a path, for the user; empty when the planner has nothing to add to
-    /// OMPL's status (the pipeline then says what the status says). @p timeLimit: the limit it was given (s).
-    virtual std::string noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const
+    /// @brief Why the last solve ended without a path: its cause, figures and words (NoPath.h); cause None when the
+    /// planner has nothing to add to OMPL's status (the pipeline then says what the status says). @p timeLimit: the
+    /// limit it was given (s).
+    virtual NoPath noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const
     {
         (void)status;
         (void)timeLimit;

@@ -46,9 +46,12 @@ public:
         return route_.segments.empty() ? nullptr : &route_;
     }
     /// @brief PipelinePlanner: lastReason() after an ABORT (no route), else nothing to add.
-    std::string noPathReason(const ompl::base::PlannerStatus &status, double) const override
+    NoPath noPathReason(const ompl::base::PlannerStatus &status, double) const override
     {
-        return status == ompl::base::PlannerStatus::ABORT ? reason_ : std::string();
+        NoPath n;
+        if (status == ompl::base::PlannerStatus::ABORT)
+            n = {reasonCause_, reason_};
+        return n;
     }
 
     void setResolution(double h);  ///< @throws Error when negative or not finite
@@ -81,6 +84,7 @@ private:
     unsigned threads_{0};
     HeadingRoute route_;
     std::string reason_;
+    NoPathCause reasonCause_{NoPathCause::None};  ///< the cause of reason_
     std::size_t expanded_{0};
     double searchTime_{0.0};
 };

@@ -107,7 +107,7 @@ public:
     /// conceivable arrival (at most kMaxWavefrontNodes, ResourceLimits.h), refused naming time_step or grid_size.
     void prepare(const PipelineSetup &setup) override;
     /// @brief PipelinePlanner: lastOutcome() and lastMessage() in words.
-    std::string noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const override;
+    NoPath noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const override;
     /// @brief The settled nodes of the last search: (x, y, yaw 0, A) with an edge from each node's parent weighted
     /// by the difference of their arrival times (0 for a hold).
     void getPlannerData(ompl::base::PlannerData &data) const override;

@@ -139,7 +139,7 @@ public:
     std::uint64_t expandedVertices() const override { return last_.expansions; }
     /// @brief PipelinePlanner: the last search's outcome in words (invalid start or goal, an exhausted lattice,
     /// the time limit).
-    std::string noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const override;
+    NoPath noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const override;
     /// @brief Waypoints (x, y, arrival time) of the last solve's lattice path, before smoothing and refinement
     /// (empty when none).
     const std::vector<TimedPoint> &getWaypoints() const { return last_.waypoints; }

@@ -48,7 +48,7 @@ public:
     /// kMaxLevelSetSteps time steps or kMaxLevelSetWork node updates (ResourceLimits.h) over the planning window.
     void prepare(const PipelineSetup &setup) override;
     /// @brief PipelinePlanner: why the front found no path (walled in, never reaching the goal, or lastReason()).
-    std::string noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const override;
+    NoPath noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const override;
     /// @brief The level set's reachable set from the setup's start (default LevelSetParams, the cell
     /// @p cellScale times defaultLevelSetResolution()) and its isochrones at @p times.
     std::optional<ReachableSet> reachableSet(const PipelineSetup &setup, const std::vector<double> &times,
