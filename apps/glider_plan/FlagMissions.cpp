@@ -1,6 +1,6 @@
 // glider_plan's flags applied to a mission: the overrides Python's keywords share (MissionOverrides, applied by the
-// library's applyOverrides()), the command line's own execution and safety flags, and the missions of the built-in,
-// --mission and --currents modes.
+// library's applyOverrides(): planner, place and time, via points, outputs, safety, execution), and the missions of
+// the built-in, --mission and --currents modes.
 #include <algorithm>
 #include <cstdio>
 #include <array>
@@ -26,94 +26,6 @@ using namespace ompl_glider;
 
 namespace
 {
-/// The execution flags (--truth, --surfacing-interval, --strategies, --radius, --execution-pairs/-seed).
-void applyExecution(const Flags &f, MissionSpec &m)
-{
-    ExecutionSpec &e = m.execution;
-    if (f.truth.empty() && f.surfacingInterval.empty() && f.strategies.empty() && !f.radius && !f.executionPairs &&
-        !f.executionSeed)
-        return;  // a mission file's execution section stays as it is
-    e.enabled = true;
-    e.mark = SourceMark{"--truth", 0};
-    if (!f.truth.empty() && f.truth != "forecast")
-    {
-        CurrentSpec t = m.current;
-        t.mark = SourceMark{"--truth", 0};
-        if (m.current.isForecast())
-        {
-            // another forecast file (or list / glob) read with the forecast's variable names and options
-            std::vector<std::string> files;
-            try
-            {
-                files = ompl_glider::forecastFileList(f.truth);
-            }
-            catch (const ompl_glider::Error &err)
-            {
-                throw UsageError{"--truth " + f.truth + ": " + err.what()};
-            }
-            t.file = files.front();
-            t.files = files.size() > 1 ? files : std::vector<std::string>{};
-        }
-        else
-        {
-            // the built-in flow with other parameters: NAME=VALUE,... (e.g. B0=1.3,c=0.14)
-            const CurrentFieldKind *kind = findCurrentFieldKind(m.current.type);
-            for (const std::string &item : commaItems(f.truth))
-            {
-                const std::size_t eq = item.find('=');
-                bool known = false;
-                if (eq != std::string::npos && kind)
-                    for (const auto &[name, value] : kind->parameters)
-                        known = known || name == item.substr(0, eq);
-                if (!known)
-                {
-                    std::string names;
-                    if (kind)
-                        for (const auto &[name, value] : kind->parameters)
-                            names += (names.empty() ? "" : ", ") + name;
-                    throw UsageError{"--truth: expected 'forecast' or NAME=VALUE,... with the " + m.current.type +
-                                     "'s parameters (" + names + "), got '" + item + "'"};
-                }
-                t.parameters[item.substr(0, eq)] = number("--truth", item.substr(eq + 1));
-            }
-        }
-        e.truth = t;
-    }
-    if (!f.surfacingInterval.empty())
-    {
-        try
-        {
-            e.surfacingInterval =
-                parseDuration(f.surfacingInterval, m.timeUnitSeconds, m.hasTimeUnit());
-        }
-        catch (const ompl_glider::Error &err)
-        {
-            throw UsageError{std::string("--surfacing-interval: ") + err.what()};
-        }
-        m.marks["execution.surfacing_interval"] = SourceMark{"--surfacing-interval", 0};
-    }
-    if (!f.strategies.empty())
-    {
-        e.strategies.clear();
-        for (const std::string &name : commaItems(f.strategies))
-        {
-            if (!parseControlStrategy(name))
-                throw UsageError{"--strategies: unknown strategy '" + name +
-                                 "' (expected a comma-separated list of current_sensitive, current_blind, greedy, "
-                                 "replan)"};
-            if (std::find(e.strategies.begin(), e.strategies.end(), name) != e.strategies.end())
-                throw UsageError{"--strategies: '" + name + "' is listed twice"};
-            e.strategies.push_back(name);
-        }
-    }
-    if (f.radius)
-        e.radius = *f.radius;
-    if (f.executionPairs)
-        e.pairs = *f.executionPairs;
-    if (f.executionSeed)
-        e.seed = *f.executionSeed;
-}
-
 /// A library refusal of a flag's value as the command line's (exit 2, with the hint to --help).
 void applyOrRefuse(const MissionOverrides &o, MissionSpec &m)
 {
@@ -127,7 +39,7 @@ void applyOrRefuse(const MissionOverrides &o, MissionSpec &m)
     }
 }
 
-/// The flags of every mode applied to @p m: the overrides Python shares, then the execution flags. @p placed: the
+/// The flags of every mode applied to @p m: the overrides Python shares. @p placed: the
 /// start, goal, departure and region already made the mission (--currents: forecastMission()); they are marked.
 void applyFlags(const Flags &f, MissionSpec &m, bool placed)
 {
@@ -139,20 +51,54 @@ void applyFlags(const Flags &f, MissionSpec &m, bool placed)
                                                  std::make_tuple(!f.departure.empty(), "departure.time", "--departure"),
                                                  std::make_tuple(!f.region.empty(), "region", "--region")})
             if (given)
-                m.marks[field] = SourceMark{flag, 0};
+                m.marks[field] = SourceMark{flag, 0, Origin::Flag};
         o.start.reset();
         o.goal.reset();
         o.departure.reset();
         o.region.reset();
     }
     applyOrRefuse(o, m);
-    applyExecution(f, m);
 }
 }  // namespace
+
+std::shared_ptr<const ompl_glider::SettingWords> flagWords()
+{
+    static const auto words = std::make_shared<const SettingWords>(SettingWords{{
+        {"planner.name", "--planner"},
+        {"planner.grid_size", "--grid-size"},
+        {"planner.sectors", "--sectors"},
+        {"planner.time_limit", "--time-limit"},
+        {"vehicle.speed", "--speed"},
+        {"vehicle.depth", "--depth"},
+        {"departure.time", "--departure"},
+        {"start", "--start"},
+        {"goal", "--goal"},
+        {"region", "--region"},
+        {"current.file", "--currents"},
+        {"current.horizon: hold_last", "--beyond hold"},
+        {"current.zero_velocity_land: false", "--no-zero-land"},
+        {"current.depth_average", "--depth-average"},
+        {"current.variables.angle", "--angle-var"},
+        {"current.variables.angle: none", "--angle-var none"},
+        {"current.variables.mask", "--mask-var"},
+        {"forbidden.coastline", "--coastline"},
+        {"safety.keep_off", "--keep-off"},
+        {"safety.min_depth", "--min-depth"},
+        {"safety.bathymetry", "--bathymetry"},
+        {"safety.bathymetry_variable", "--bathymetry-variable"},
+        {"safety.snap_to_water: true", "--snap-to-water"},
+        {"execution.truth", "--truth"},
+        {"execution.surfacing_interval", "--surfacing-interval"},
+        {"execution.strategies", "--strategies"},
+        {"execution.radius", "--radius"}}});
+    return words;
+}
 
 MissionOverrides overridesOf(const Flags &f)
 {
     MissionOverrides o;
+    o.origin = Origin::Flag;
+    o.words = flagWords();
     if (!f.planner.empty())
         o.planner = Given<std::string>{f.planner, "--planner"};
     if (f.gridSize)
@@ -216,46 +162,30 @@ MissionOverrides overridesOf(const Flags &f)
         o.isochroneInterval = Given<std::string>{f.isochroneInterval, "--isochrone-interval"};
     if (f.gotoTurn)
         o.gotoTurn = Given<double>{*f.gotoTurn, "--goto-turn"};
-    return o;
-}
-
-void applySafetyFlags(const Flags &f, MissionSpec &m)
-{
-    auto length = [](const char *flag, const std::string &text, double metresPerUnit, bool known) {
-        try
-        {
-            return parseLength(text, metresPerUnit, known);
-        }
-        catch (const ompl_glider::Error &err)
-        {
-            throw UsageError{std::string(flag) + ": " + err.what()};
-        }
-    };
-    if (!f.keepOff.empty())
-    {
-        m.safety.keepOff = length("--keep-off", f.keepOff, m.metresPerUnit(), m.physicalUnits().length);
-        m.marks["safety.keep_off"] = SourceMark{"--keep-off", 0};
-    }
-    if (!f.minDepth.empty())
-    {
-        m.safety.minDepth = length("--min-depth", f.minDepth, 1.0, true);
-        m.marks["safety.min_depth"] = SourceMark{"--min-depth", 0};
-    }
-    if (!f.bathymetry.empty())
-    {
-        m.safety.bathymetry = f.bathymetry;
-        m.marks["safety.bathymetry"] = SourceMark{"--bathymetry", 0};
-    }
-    m.safety.bathymetryVariable = f.bathymetryVariable;
+    // safety
+    for (const auto &[text, target, flag] :
+         {std::make_tuple(&f.keepOff, &o.keepOff, "--keep-off"),
+          std::make_tuple(&f.minDepth, &o.minDepth, "--min-depth"),
+          std::make_tuple(&f.bathymetry, &o.bathymetry, "--bathymetry"),
+          std::make_tuple(&f.bathymetryVariable, &o.bathymetryVariable, "--bathymetry-variable")})
+        if (!text->empty())
+            *target = Given<std::string>{*text, flag};
     if (f.snapToWater)
-    {
-        m.safety.snapToWater = true;
-        m.marks["safety.snap_to_water"] = SourceMark{"--snap-to-water", 0};
-    }
-    if (!f.bathymetryVariable.empty() && f.bathymetry.empty() && !m.current.isForecast())
-        throw UsageError{"--bathymetry-variable needs --bathymetry FILE"};
-    if (!f.minDepth.empty() && f.bathymetry.empty() && !m.current.isForecast())
-        throw UsageError{"--min-depth needs --bathymetry FILE (a NetCDF file of seafloor depth or elevation)"};
+        o.snapToWater = Given<bool>{true, "--snap-to-water"};
+    // execution in another ocean
+    if (!f.truth.empty())
+        o.truth = Given<std::string>{f.truth, "--truth"};
+    if (!f.surfacingInterval.empty())
+        o.surfacingInterval = Given<std::string>{f.surfacingInterval, "--surfacing-interval"};
+    if (!f.strategies.empty())
+        o.strategies = Given<std::vector<std::string>>{commaItems(f.strategies), "--strategies"};
+    if (f.radius)
+        o.radius = Given<double>{*f.radius, "--radius"};
+    if (f.executionPairs)
+        o.executionPairs = Given<long long>{*f.executionPairs, "--execution-pairs"};
+    if (f.executionSeed)
+        o.executionSeed = Given<long long>{*f.executionSeed, "--execution-seed"};
+    return o;
 }
 
 std::vector<double> speedList(const std::string &text)
@@ -334,9 +264,9 @@ MissionSpec forecastMissionOf(Flags f)
     MissionSpec m = forecastMission(f.forecast);
     applyFlags(f, m, true);
     if (fromFix)
-        m.marks["start"] = SourceMark{"--observations", 0};  // the last fix
+        m.marks["start"] = SourceMark{"--observations", 0, Origin::Flag};  // the last fix
     if (departureFromFix)
-        m.marks["departure.time"] = SourceMark{"--observations", 0};
+        m.marks["departure.time"] = SourceMark{"--observations", 0, Origin::Flag};
     return m;
 }
 }  // namespace glider_plan

@@ -51,13 +51,12 @@ struct Flags
     bool showMission{false};  ///< --show-mission: print the fields the flags can change, plan nothing
 };
 
+/// @brief How the command line names the mission's settings in messages (MissionSpec::term()): its flags.
+std::shared_ptr<const ompl_glider::SettingWords> flagWords();
+
 /// @brief The flags that Python's keywords share, as the library's typed overrides (Overrides.h), each named by its
 /// flag. @throws UsageError for a malformed pair, box or window.
 ompl_glider::MissionOverrides overridesOf(const Flags &f);
-
-/// @brief The safety flags (--keep-off, --bathymetry, --bathymetry-variable, --min-depth) applied to
-/// @p m (lengths read in its units, marks naming the flags). @throws UsageError naming the flag.
-void applySafetyFlags(const Flags &f, ompl_glider::MissionSpec &m);
 
 /// @brief Declares every flag on @p app, storing into @p f (which must outlive @p app).
 void defineFlags(CLI::App &app, Flags &f);

@@ -94,7 +94,6 @@ int run(const Flags &f)
     MissionSpec spec = !f.mission.empty() ? missionFileOf(f)
                        : !f.currents.empty() ? forecastMissionOf(f)
                                              : builtInMission(f);
-    applySafetyFlags(f, spec);
     if (f.showMission)
     {
         // what the flags made of the mission, as Python's Mission.fields() shows it for the same keywords

@@ -389,6 +389,12 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
          coastline: Union[None, str, os.PathLike] = None, goto_turn: Optional[float] = None,
          via: Optional[Sequence[Any]] = None, order: Optional[str] = None,
          observations: Union[None, str, os.PathLike] = None,
+         keep_off: Union[None, float, str] = None, min_depth: Union[None, float, str] = None,
+         bathymetry: Union[None, str, os.PathLike] = None, bathymetry_variable: Optional[str] = None,
+         snap_to_water: Optional[bool] = None,
+         truth: Union[None, str, Sequence[str], Dict[str, float]] = None,
+         surfacing_interval: Union[None, float, str] = None, strategies: Optional[Sequence[str]] = None,
+         radius: Optional[float] = None, execution_pairs: Optional[int] = None, execution_seed: Optional[int] = None,
          speeds: Optional[Sequence[float]] = None,
          optimum: bool = False, progress: Optional[ProgressCallback] = None) -> Result:
     """Plans a mission with the library's one pipeline and returns its :class:`Result`.
@@ -412,7 +418,14 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     currents: IOOS glider profile files, a folder or glob of them, or a CSV time,lon,lat,u,v: the forecast is
     corrected by them and, without start, the plan starts at the last fix, at its time without departure); isochrones /
     isochrone_interval (a number in the mission's time unit, or a duration such as "6 h") add the reachable-set
-    contours (:attr:`Result.isochrones`); speeds a speed sweep; optimum the optimal-control reference. These
+    contours (:attr:`Result.isochrones`); speeds a speed sweep; optimum the optimal-control reference.
+    Safety: keep_off (the distance kept from land: a number in the mission's length unit, or "2 km"), min_depth (the
+    shallowest water allowed: metres, or "50 m"; needs bathymetry or a forecast with the seafloor depth), bathymetry (a
+    NetCDF file of seafloor depth or elevation) and bathymetry_variable (its variable), snap_to_water (a start or
+    goal on the forecast's land moved to the nearest water). Execution in another ocean (docs/EXECUTION.md; any of
+    these flies the plan): truth ("forecast", another forecast's files, or {parameter: value} of the analytic flow),
+    surfacing_interval (a number in the mission's time unit, or "1 h"), strategies (names), radius (the goal radius),
+    execution_pairs and execution_seed (random start/goal pairs, :attr:`Result.execution`). These
     keywords and glider_plan's flags are one set of overrides in the library (Overrides.h): the same values give
     the same mission (``Mission.fields()``, ``glider_plan --show-mission``). progress(line, done) receives the progress lines of long runs (the GIL is released while planning).
 
@@ -426,7 +439,14 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                     isochrone_interval=isochrone_interval, arrive_between=arrive_between,
                     coastline=None if coastline is None else os.fspath(coastline), goto_turn=goto_turn,
                     via=None if via is None else list(via), order=order,
-                    observations=None if observations is None else os.fspath(observations))
+                    observations=None if observations is None else os.fspath(observations),
+                    keep_off=keep_off, min_depth=min_depth,
+                    bathymetry=os.fspath(bathymetry) if isinstance(bathymetry, os.PathLike) else bathymetry,
+                    bathymetry_variable=bathymetry_variable, snap_to_water=snap_to_water,
+                    truth=[os.fspath(t) for t in truth] if isinstance(truth, (list, tuple)) else truth,
+                    surfacing_interval=surfacing_interval,
+                    strategies=None if strategies is None else list(strategies), radius=radius,
+                    execution_pairs=execution_pairs, execution_seed=execution_seed)
     if planner_params is not None:
         keywords["planner_params"] = {k: (str(v).lower() if isinstance(v, bool) else str(v))
                                       for k, v in planner_params.items()}
@@ -457,7 +477,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                                       region, s["variables"],
                                       s["xy_interpolation"], s["depth_interpolation"], s["time_interpolation"],
                                       s["horizon"], s["velocity_units"], s["time_units"], s["steady_record"],
-                                      s["zero_velocity_land"], s["depth_average"])
+                                      s["zero_velocity_land"], s["depth_average"], bool(snap_to_water))
         for used in ("start", "goal", "departure", "speed", "region"):
             keywords.pop(used)
     elif field is not None:

@@ -40,7 +40,8 @@ def forecast_mission(files: str, start: Tuple[float, float], goal: Tuple[float, 
                      depth_interpolation: str = "linear", time_interpolation: str = "linear",
                      horizon: str = "refuse", velocity_units: str = "", time_units: str = "",
                      steady_record: Optional[int] = None, zero_velocity_land: bool = True,
-                     depth_average: Optional[Tuple[float, float]] = None) -> Mission: ...
+                     depth_average: Optional[Tuple[float, float]] = None,
+                     snap_to_water: bool = False) -> Mission: ...
 def memory_forecast(u: np.ndarray, v: np.ndarray, x: np.ndarray, y: np.ndarray,
                     t: Optional[np.ndarray] = None, geographic: bool = True, time_units: str = "",
                     velocity_units: str = "m s-1") -> str: ...

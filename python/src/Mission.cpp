@@ -37,10 +37,10 @@ namespace
 using Pair = std::pair<double, double>;
 using Quad = std::tuple<double, double, double, double>;
 
-/// Where a keyword's value came from, for MissionSpec::place() (a mark starting "plan(" names itself).
+/// Where a keyword's value came from, for MissionSpec::place() (a keyword's mark names itself).
 SourceMark keyword(const std::string &name)
 {
-    return SourceMark{"plan(): keyword '" + name + "'", 0};
+    return SourceMark{"plan(): keyword '" + name + "'", 0, Origin::Keyword};
 }
 
 /// "str 'fast'": the Python type and a short repr of a value, for messages.
@@ -89,9 +89,10 @@ MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std:
                      const std::string &xy, const std::string &depthScheme, const std::string &timeScheme,
                      const std::string &horizon, const std::string &velocityUnits, const std::string &timeUnits,
                      std::optional<std::size_t> steadyRecord, bool zeroVelocityLand,
-                     std::optional<Pair> depthAverage)
+                     std::optional<Pair> depthAverage, bool snapToWater)
 {
     ForecastInput in;
+    in.snapToWater = snapToWater;
     const std::vector<std::string> list = forecastFileList(files);
     if (list.size() == 1)
         in.current.file = list.front();
@@ -205,6 +206,97 @@ void setAnalytic(MissionSpec &m, const std::string &type, const std::map<std::st
     m.marks["current"] = keyword("field");
 }
 
+/// How the Python module names the mission's settings in messages (MissionSpec::term()): its keywords.
+std::shared_ptr<const SettingWords> keywordWords()
+{
+    static const auto words = std::make_shared<const SettingWords>(SettingWords{{
+        {"planner.name", "planner="},
+        {"planner.grid_size", "grid_size="},
+        {"planner.sectors", "sectors="},
+        {"planner.time_limit", "time_limit="},
+        {"planner.horizon", "horizon="},
+        {"vehicle.speed", "speed="},
+        {"vehicle.depth", "forecast_mission(depth=)"},
+        {"departure.time", "departure="},
+        {"start", "start="},
+        {"goal", "goal="},
+        {"region", "region="},
+        {"current.file", "Field.netcdf()"},
+        {"current.horizon: hold_last", "forecast_mission(horizon='hold')"},
+        {"current.zero_velocity_land: false", "zero_velocity_land=False"},
+        {"current.depth_average", "depth_average="},
+        {"current.variables.angle", "variables={'angle': ...}"},
+        {"current.variables.angle: none", "variables={'angle': 'none'}"},
+        {"current.variables.mask", "variables={'mask': ...}"},
+        {"forbidden.coastline", "coastline="},
+        {"safety.keep_off", "keep_off="},
+        {"safety.min_depth", "min_depth="},
+        {"safety.bathymetry", "bathymetry="},
+        {"safety.bathymetry_variable", "bathymetry_variable="},
+        {"safety.snap_to_water: true", "snap_to_water=True"},
+        {"execution.truth", "truth="},
+        {"execution.surfacing_interval", "surfacing_interval="},
+        {"execution.strategies", "strategies="},
+        {"execution.radius", "radius="}}});
+    return words;
+}
+
+/// The keywords of plan() with a unit (isochrone_interval, surfacing_interval, keep_off, min_depth), the other
+/// safety keywords (bathymetry, bathymetry_variable, snap_to_water) and the execution keywords: truth ("forecast", forecast files, or {parameter: number} of the analytic flow),
+/// surfacing_interval (with the quantities), strategies (a list of names), radius, execution_pairs, execution_seed.
+template <class Get, class Text>
+void applySafetyAndExecutionKeywords(const Get &get, const Text &text, MissionOverrides &o)
+{
+    // a number in the mission's unit, or a text with its unit ("6 h", "2 km"): as the command line reads it
+    const auto quantity = [&](const char *name, const char *expected) {
+        const py::object v = *get(name);
+        if (py::isinstance<py::str>(v))
+            return Given<std::string>{v.cast<std::string>(), text(name)};
+        char digits[40];  // 17 digits: the same double back
+        std::snprintf(digits, sizeof digits, "%.17g", value<double>(v, name, expected));
+        return Given<std::string>{digits, text(name)};
+    };
+    for (const auto &[name, target, expected] :
+         {std::make_tuple("isochrone_interval", &o.isochroneInterval, "a number or a duration ('6 h')"),
+          std::make_tuple("surfacing_interval", &o.surfacingInterval, "a number or a duration ('1 h')"),
+          std::make_tuple("keep_off", &o.keepOff, "a number or a length ('2 km')"),
+          std::make_tuple("min_depth", &o.minDepth, "a number of metres or a length ('50 m')")})
+        if (get(name))
+            *target = quantity(name, expected);
+    for (const auto &[name, target] : {std::make_pair("bathymetry", &o.bathymetry),
+                                       std::make_pair("bathymetry_variable", &o.bathymetryVariable)})
+        if (auto v = get(name))
+            *target = Given<std::string>{value<std::string>(*v, name, "a text"), text(name)};
+    if (auto v = get("snap_to_water"))
+        o.snapToWater = Given<bool>{value<bool>(*v, "snap_to_water", "True or False"), text("snap_to_water")};
+    if (auto v = get("truth"))
+    {
+        std::string truth;
+        if (py::isinstance<py::dict>(*v))
+            for (const auto &[name, x] : value<std::map<std::string, double>>(*v, "truth", "a dict of numbers"))
+            {
+                char digits[40];
+                std::snprintf(digits, sizeof digits, "%.17g", x);
+                truth += (truth.empty() ? "" : ",") + name + "=" + digits;
+            }
+        else if (py::isinstance<py::list>(*v) || py::isinstance<py::tuple>(*v))
+            for (const std::string &file : value<std::vector<std::string>>(*v, "truth", "a list of file names"))
+                truth += (truth.empty() ? "" : ",") + file;
+        else
+            truth = value<std::string>(*v, "truth", "'forecast', forecast files or a dict of the flow's parameters");
+        o.truth = Given<std::string>{truth, text("truth")};
+    }
+    if (auto v = get("strategies"))
+        o.strategies = Given<std::vector<std::string>>{
+            value<std::vector<std::string>>(*v, "strategies", "a list of strategy names"), text("strategies")};
+    if (auto v = get("radius"))
+        o.radius = Given<double>{value<double>(*v, "radius", "a number"), text("radius")};
+    for (const auto &[name, target] : {std::make_pair("execution_pairs", &o.executionPairs),
+                                       std::make_pair("execution_seed", &o.executionSeed)})
+        if (auto v = get(name))
+            *target = Given<long long>{value<long long>(*v, name, "an integer"), text(name)};
+}
+
 /// The keyword arguments of plan(), applied as glider_plan applies its flags (applySettings()).
 MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
 {
@@ -217,7 +309,9 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
                                   "refinement", "speed", "departure", "start", "goal", "region", "forbidden",
                                   "isochrones", "isochrone_interval", "analytic", "horizon", "goal_tolerance",
                                   "global_check", "arrive_between", "coastline", "goto_turn", "via", "order",
-                                  "observations"};
+                                  "observations", "keep_off", "min_depth", "bathymetry", "bathymetry_variable",
+                                  "snap_to_water", "truth", "surfacing_interval", "strategies", "radius",
+                                  "execution_pairs", "execution_seed"};
     for (const auto &item : kw)
     {
         const std::string name = item.first.cast<std::string>();
@@ -232,6 +326,8 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     }
     // the keywords the command line shares as flags: the library's typed overrides, each named by its keyword
     MissionOverrides o;
+    o.origin = Origin::Keyword;
+    o.words = keywordWords();
     auto text = [](const std::string &name) { return "plan(): keyword '" + name + "'"; };
     if (auto v = get("planner"))
         o.planner = Given<std::string>{value<std::string>(*v, "planner", "a planner name"), text("planner")};
@@ -331,21 +427,7 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
         o.observations = Given<std::string>{py::str(*v).cast<std::string>(), text("observations")};
     if (auto v = get("coastline"))
         o.coastline = Given<std::string>{value<std::string>(*v, "coastline", "a file name"), text("coastline")};
-    if (auto v = get("isochrone_interval"))
-    {
-        // a number in the mission's time unit, or a duration such as "6 h"
-        std::string interval;
-        if (py::isinstance<py::str>(*v))
-            interval = v->cast<std::string>();
-        else
-        {
-            char digits[40];  // 17 digits: the same double back
-            std::snprintf(digits, sizeof digits, "%.17g",
-                          value<double>(*v, "isochrone_interval", "a number or a duration ('6 h')"));
-            interval = digits;
-        }
-        o.isochroneInterval = Given<std::string>{interval, text("isochrone_interval")};
-    }
+    applySafetyAndExecutionKeywords(get, text, o);
     applyOverrides(o, m);
     if (auto v = get("forbidden"))
     {
@@ -391,7 +473,7 @@ void bindMission(py::module_ &m)
           py::arg("depth_interpolation") = "linear", py::arg("time_interpolation") = "linear",
           py::arg("horizon") = "refuse", py::arg("velocity_units") = "", py::arg("time_units") = "",
           py::arg("steady_record") = py::none(), py::arg("zero_velocity_land") = true,
-          py::arg("depth_average") = py::none(),
+          py::arg("depth_average") = py::none(), py::arg("snap_to_water") = false,
           "The mission of a NetCDF forecast, as glider_plan --currents builds it.");
     m.def("planner_names", []() {
         std::vector<std::string> names;

@@ -90,7 +90,7 @@ void MissionProblem::snapEndpoints()
         if (!m.safety.snapToWater)
             throw Error(m.place(name) + ": " + text(*p) + " is on land in the forecast at depth " + text::number(z) +
                         " m; the nearest water is " + text(*w) + ", " + away +
-                        " away: give that, or --snap-to-water (safety.snap_to_water: true) to use it");
+                        " away: give that, or " + m.term("safety.snap_to_water: true") + " to use it");
         endpointNotes_.push_back(name + " " + text(*p) + " is on land: moved to the nearest water " +
                                  text(*w) + " (" + away + " away; safety.snap_to_water)");
         *p = *w;
@@ -225,7 +225,7 @@ std::string planning_detail::frozenFieldNote(const MissionProblem &problem, cons
         return "";
     const double held = arrival - std::max(last, plan.departure);
     return "planned past the forecast's last time (" + timeText(problem, last) +
-           ") on its last field, held frozen (current.horizon: hold_last, --beyond hold) for the last " +
+           ") on its last field, held frozen (" + m.term("current.horizon: hold_last") + ") for the last " +
            (m.physicalUnits().time ? text::durationText(held * m.timeUnitSeconds) : text::number(held)) + " of the route";
 }
 

@@ -58,7 +58,7 @@ void MissionProblem::checkAnalyticFields() const
         const CurrentFieldKind *kind = findCurrentFieldKind(c.type);
         if (!f || !kind || kind->gridded())
             return;
-        const std::string at = c.mark.file.rfind("--", 0) == 0 ? c.mark.file + ": "
+        const std::string at = c.mark.namesItself() ? c.mark.file + ": "
                                                                  : where(m, c.mark) + "field '" + field + "': ";
         checkFiniteField(*f, box_, m.departure.time, at);
     };

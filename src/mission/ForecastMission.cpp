@@ -125,15 +125,15 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
     m.current.files = files.size() > 1 ? files : std::vector<std::string>{};
     m.current.mark = SourceMark{file, 0};
 
-    m.marks["start"] = SourceMark{"--start", 0};
-    m.marks["goal"] = SourceMark{"--goal", 0};
+    m.marks["start"] = SourceMark{"--start", 0, Origin::Flag};
+    m.marks["goal"] = SourceMark{"--goal", 0, Origin::Flag};
     m.start.xy = q.start;
     m.start.lonLat = {q.start.x, q.start.y};
     m.goal.xy = q.goal;
     m.goal.lonLat = {q.goal.x, q.goal.y};
     m.vehicle.depth = m.travel.depth = q.depth;
     if (q.depth > 0.0)
-        m.marks["vehicle.depth"] = SourceMark{"--depth", 0};
+        m.marks["vehicle.depth"] = SourceMark{"--depth", 0, Origin::Flag};
     return m;
 }
 
@@ -175,7 +175,7 @@ void setRegion(MissionSpec &m, const ForecastInput &q, bool geographic)
     if (!q.region)
         return;
     const Box &r = *q.region;
-    m.marks["region"] = SourceMark{"--region", 0};
+    m.marks["region"] = SourceMark{"--region", 0, Origin::Flag};
     m.region.set = true;
     m.region.geographic = geographic;
     if (geographic)
@@ -332,7 +332,7 @@ void finishSpec(MissionSpec &m, const LoadedForecast &nc, const std::optional<do
     m.vehicle.speed = q.speed;
     m.vehicle.depth = q.depth;
     if (q.depth > 0.0)
-        m.marks["vehicle.depth"] = SourceMark{"--depth", 0};
+        m.marks["vehicle.depth"] = SourceMark{"--depth", 0, Origin::Flag};
     m.travel.speed = q.speed;
     m.travel.depth = q.depth;
     m.travel.eps = 1.0;  // one second per integration step on trips of hours to days (as the example mission)

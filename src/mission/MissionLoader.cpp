@@ -278,6 +278,17 @@ double MissionSpec::timeOf(const std::string &text) const
     return (parseIsoTime(text) - *epoch) / timeUnitSeconds;
 }
 
+std::string SettingWords::operator()(const std::string &setting) const
+{
+    const auto it = words.find(setting);
+    return it == words.end() ? setting : setting + ", " + it->second;
+}
+
+std::string MissionSpec::term(const std::string &setting) const
+{
+    return words ? (*words)(setting) : setting;
+}
+
 std::string MissionSpec::place(const std::string &field) const
 {
     auto it = marks.find(field);
@@ -295,8 +306,8 @@ std::string MissionSpec::place(const std::string &field) const
         if (whole != marks.end() && whole->second.line == 0)
             it = whole;
     }
-    // a command-line flag ("--grid-size") or a keyword of the Python module ("plan(): keyword 'speed'") names itself
-    if (it != marks.end() && (it->second.file.rfind("--", 0) == 0 || it->second.file.rfind("plan(", 0) == 0))
+    // a command-line flag or a keyword of the Python module names itself, as its front end gave it
+    if (it != marks.end() && it->second.namesItself())
         return it->second.file + (item != std::string::npos ? " (" + field + ")" : "");
     if (it != marks.end() && it->second.line > 0)
         return it->second.file + ":" + std::to_string(it->second.line) + ": field '" + field + "'";
@@ -428,7 +439,7 @@ double defaultForecastGridSize(double minCellSize, double distance)
         g = std::clamp(g, distance / 200.0, distance / 25.0);
     if (!(g > 0.0) || !std::isfinite(g))
         throw Error("cannot choose a grid size (cell size " + text::number(minCellSize) + ", start-goal distance " +
-                    text::number(distance) + "): give planner.grid_size (--grid-size)");
+                    text::number(distance) + "): give planner.grid_size");
     const double scale = std::pow(10.0, std::floor(std::log10(g)) - 1.0);  // two significant digits
     return std::round(g / scale) * scale;
 }

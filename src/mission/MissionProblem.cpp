@@ -242,7 +242,7 @@ std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec
 {
     const MissionSpec &m = spec_;
     // a command-line flag gave the source (--truth): name the flag, else the mission file's line and field
-    const std::string at = t.mark.file.rfind("--", 0) == 0 ? t.mark.file + ": "
+    const std::string at = t.mark.namesItself() ? t.mark.file + ": "
                                                              : where(m, t.mark) + "field '" + field + "': ";
     const CurrentFieldKind *kind = findCurrentFieldKind(t.type);
     if (!kind)
@@ -427,7 +427,7 @@ void MissionProblem::buildRegions()
     {
         // the coastline's land polygons that meet the box (with a margin of a tenth of its size)
         const SourceMark &mk = m.forbidden.coastlineMark;
-        const std::string at = mk.line == 0 && mk.file.rfind("--", 0) == 0 ? mk.file + ": " : where(m, mk);
+        const std::string at = mk.namesItself() ? mk.file + ": " : where(m, mk);
         if (!isGeographic())
             throw Error(at + "forbidden.coastline: the coastline is in lon/lat; give a 'projection' in the mission");
         const std::vector<LandPolygon> land = readCoastline(at);

@@ -225,8 +225,8 @@ void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
                  "strongest current behind it (at least " + durationOf(m, distance / (speed + cMax)) + ")";
         else
             f += ", before the glider reaches the goal";
-        findings.push_back(f + ": plan on its last field past its end (--beyond hold, current.horizon: hold_last), "
-                               "depart earlier, or use a forecast that runs longer");
+        findings.push_back(f + ": plan on its last field past its end (" + m.term("current.horizon: hold_last") +
+                           "), depart earlier, or use a forecast that runs longer");
     }
     // the current is named where time is not what is short: the glider would cross still water twice over
     if (enclosed.empty() && cMax > speed && gp.horizon >= 2.0 * distance / speed)
@@ -235,9 +235,9 @@ void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
         char buf[320];
         std::snprintf(buf, sizeof buf,
                       "the current reaches up to %.2f m/s (%.1f kn) on the way, faster than the glider's V = %.2f m/s "
-                      "(%.1f kn): it carries the glider off faster than it makes way; a faster vehicle (--speed, "
-                      "vehicle.speed) or another departure may help",
-                      cMax * ms, cMax * ms * kn, speed * ms, speed * ms * kn);
+                      "(%.1f kn): it carries the glider off faster than it makes way; a faster vehicle (%s) or "
+                      "another departure may help",
+                      cMax * ms, cMax * ms * kn, speed * ms, speed * ms * kn, m.term("vehicle.speed").c_str());
         findings.push_back(m.physicalUnits().length && m.physicalUnits().time ?
                                std::string(buf) :
                                "the current reaches up to " + text::number(cMax, 4) + " against the glider's V = " +

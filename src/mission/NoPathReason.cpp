@@ -15,7 +15,7 @@ namespace ompl_glider
 namespace planning_detail
 {
 NoPath noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::Planner &planner,
-                    const GliderSimpleSetup &setup, double timeLimit)
+                    const GliderSimpleSetup &setup, double timeLimit, const MissionSpec &m)
 {
     if (!setup.lastCheckMessage().empty())
         return {NoPathCause::BadInput, setup.lastCheckMessage()};
@@ -26,8 +26,8 @@ NoPath noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::P
     if (status == ompl::base::PlannerStatus::TIMEOUT)
     {
         NoPath n{NoPathCause::TimeLimit, "the time limit (" + text::number(timeLimit) + " s) ended the search before "
-                                         "a path was found: raise it (planner.time_limit, --time-limit) or shorten "
-                                         "the planning horizon (planner.horizon)"};
+                                         "a path was found: raise it (" + m.term("planner.time_limit") +
+                                         ") or shorten the planning horizon (" + m.term("planner.horizon") + ")"};
         n.timeLimit = timeLimit;
         return n;
     }
@@ -49,12 +49,13 @@ void boundArrival(const MissionProblem &problem, const GliderProblem &gp, NoPath
     {
         n.bound = ArrivalBound::ForecastEnd;
         n.boundText = "; the path must arrive before the forecast ends, " + span +
-                      " after departure: depart earlier, or hold the last forecast time past its end (current.horizon: "
-                      "hold_last, --beyond hold)";
+                      " after departure: depart earlier, or hold the last forecast time past its end (" +
+                      m.term("current.horizon: hold_last") + ")";
         return;
     }
     n.bound = ArrivalBound::PlanningHorizon;
-    n.boundText = "; the path must arrive within the planning horizon, " + span + " after departure (planner.horizon)";
+    n.boundText = "; the path must arrive within the planning horizon, " + span + " after departure (" +
+                  m.term("planner.horizon") + ")";
 }
 }  // namespace planning_detail
 }  // namespace ompl_glider

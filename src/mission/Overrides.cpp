@@ -12,7 +12,11 @@
 
 #include "../io/NumberText.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/execution/Execution.h"
+#include "ompl_glider/io/FileList.h"
 #include "ompl_glider/io/GeoBox.h"
+#include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/ompl/Sectors.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
@@ -30,9 +34,9 @@ double finite(const Given<double> &v, bool positive)
     return v.value;
 }
 
-void mark(MissionSpec &m, const char *field, const std::string &source)
+void mark(MissionSpec &m, const char *field, const std::string &source, Origin origin)
 {
-    m.marks[field] = SourceMark{source, 0};
+    m.marks[field] = SourceMark{source, 0, origin};
 }
 
 /// A time read as the mission reads its departure, refused naming @p source.
@@ -62,18 +66,18 @@ void applyPlanner(const MissionOverrides &o, MissionSpec &m)
             m.planner.parameterMarks.clear();
         }
         m.planner.name = entry->name;
-        mark(m, "planner.name", o.planner->source);
+        mark(m, "planner.name", o.planner->source, o.origin);
     }
     if (o.plannerParameters)
         for (const auto &[name, value] : o.plannerParameters->value)
         {
             m.planner.parameters[name] = value;
-            m.planner.parameterMarks[name] = SourceMark{o.plannerParameters->source, 0};
+            m.planner.parameterMarks[name] = SourceMark{o.plannerParameters->source, 0, o.origin};
         }
     if (o.gridSize)
     {
         m.planner.gridSize = finite(*o.gridSize, true);
-        mark(m, "planner.grid_size", o.gridSize->source);
+        mark(m, "planner.grid_size", o.gridSize->source, o.origin);
     }
     if (o.sectors)
     {
@@ -81,7 +85,7 @@ void applyPlanner(const MissionOverrides &o, MissionSpec &m)
             throw Error(o.sectors->source + ": expected an integer " + std::to_string(kMinSectors) + ".." +
                         std::to_string(kMaxSectors) + ", got " + std::to_string(o.sectors->value));
         m.planner.sectors = o.sectors->value;
-        mark(m, "planner.sectors", o.sectors->source);
+        mark(m, "planner.sectors", o.sectors->source, o.origin);
     }
     const std::pair<const std::optional<Given<double>> *, std::pair<double *, const char *>> positives[] = {
         {&o.timeLimit, {&m.planner.timeLimit, "planner.time_limit"}},
@@ -91,7 +95,7 @@ void applyPlanner(const MissionOverrides &o, MissionSpec &m)
         if (*given)
         {
             *target.first = finite(**given, true);
-            mark(m, target.second, (*given)->source);
+            mark(m, target.second, (*given)->source, o.origin);
         }
     if (o.timeLimit && o.timeLimit->value > kMaxTimeLimit)
         throw Error(o.timeLimit->source + ": at most 1e6 s (11.6 days), got " + text::number(o.timeLimit->value));
@@ -103,7 +107,8 @@ void applyPlanner(const MissionOverrides &o, MissionSpec &m)
         m.planner.globalCheck = o.globalCheck->value;
 }
 
-void applyPoint(const std::optional<Given<Point2>> &p, PointSpec &point, const char *field, MissionSpec &m)
+void applyPoint(const std::optional<Given<Point2>> &p, PointSpec &point, const char *field, MissionSpec &m,
+                Origin origin)
 {
     if (!p)
         return;
@@ -113,7 +118,7 @@ void applyPoint(const std::optional<Given<Point2>> &p, PointSpec &point, const c
         point.lonLat = {p->value.x, p->value.y};
     else
         point.xy = p->value;
-    mark(m, field, p->source);
+    mark(m, field, p->source, origin);
 }
 
 void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
@@ -121,16 +126,16 @@ void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
     if (o.speed)
     {
         m.vehicle.speed = m.travel.speed = finite(*o.speed, true);
-        mark(m, "vehicle.speed", o.speed->source);
+        mark(m, "vehicle.speed", o.speed->source, o.origin);
     }
     if (o.departure)
     {
         m.departure.time = timeOf(m, o.departure->value, o.departure->source);
         m.departure.window = false;  // one departure in place of a window
-        mark(m, "departure.time", o.departure->source);
+        mark(m, "departure.time", o.departure->source, o.origin);
     }
-    applyPoint(o.start, m.start, "start", m);
-    applyPoint(o.goal, m.goal, "goal", m);
+    applyPoint(o.start, m.start, "start", m, o.origin);
+    applyPoint(o.goal, m.goal, "goal", m, o.origin);
     if (o.region)
     {
         const auto [a, b, c, d] = o.region->value;
@@ -153,7 +158,7 @@ void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
                         text::number(c) + "," + text::number(d));
         else
             m.region.xy = Box{a, c, b, d};
-        mark(m, "region", o.region->source);
+        mark(m, "region", o.region->source, o.origin);
     }
     if (o.arrivalWindow)
     {
@@ -168,7 +173,7 @@ void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
                         "' flies fixed stints and cannot time its arrival");
         m.goalWindow = {true, begin, end};
         for (const char *key : {"goal.window", "goal.window.begin", "goal.window.end"})
-            mark(m, key, source);
+            mark(m, key, source, o.origin);
     }
 }
 
@@ -212,7 +217,7 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
         for (auto it = m.marks.lower_bound("waypoints"); it != m.marks.end() && it->first.rfind("waypoints", 0) == 0;)
             it = m.marks.erase(it);
         m.waypoints = std::move(via);
-        mark(m, "waypoints", source);
+        mark(m, "waypoints", source, o.origin);
     }
     if (o.order)
     {
@@ -224,15 +229,15 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
         {
             throw Error(o.order->source + ": " + e.what());
         }
-        mark(m, "order", o.order->source);
+        mark(m, "order", o.order->source, o.origin);
     }
     if (o.observations)
     {
         ObservationsSpec spec = m.observations.value_or(ObservationsSpec{});
         spec.path = o.observations->value;
-        spec.mark = SourceMark{o.observations->source, 0};
+        spec.mark = SourceMark{o.observations->source, 0, o.origin};
         m.observations = spec;
-        mark(m, "observations", o.observations->source);
+        mark(m, "observations", o.observations->source, o.origin);
     }
     if (m.order == VisitOrder::Free && m.waypoints.size() > kMaxFreeOrderViaPoints)
         throw Error((o.order ? o.order->source : o.via ? o.via->source : m.place("order")) + ": free order over " +
@@ -245,7 +250,7 @@ void applyOutputs(const MissionOverrides &o, MissionSpec &m)
     if (o.coastline)
     {
         m.forbidden.coastline = o.coastline->value;
-        m.forbidden.coastlineMark = SourceMark{o.coastline->source, 0};
+        m.forbidden.coastlineMark = SourceMark{o.coastline->source, 0, o.origin};
     }
     if (o.outDirectory)
         m.outputs.directory = o.outDirectory->value;
@@ -261,7 +266,7 @@ void applyOutputs(const MissionOverrides &o, MissionSpec &m)
         }
         if (!(m.outputs.isochroneInterval > 0.0) || !std::isfinite(m.outputs.isochroneInterval))
             throw Error(o.isochroneInterval->source + ": must be > 0, got '" + o.isochroneInterval->value + "'");
-        mark(m, "outputs.isochrone_interval", o.isochroneInterval->source);
+        mark(m, "outputs.isochrone_interval", o.isochroneInterval->source, o.origin);
     }
     if (o.gotoTurn)
     {
@@ -273,6 +278,179 @@ void applyOutputs(const MissionOverrides &o, MissionSpec &m)
     if (((o.isochrones && o.isochrones->value) || o.isochroneInterval) && !m.outputs.wants(OutputFormatId::Isochrones))
         m.outputs.files.push_back(OutputFormatId::Isochrones);
 }
+/// A length of @p v (a number in units of @p metresPerUnit, or with a unit), >= 0, refused naming its source.
+double lengthOf(const Given<std::string> &v, double metresPerUnit, bool unitKnown)
+{
+    double x = 0.0;
+    try
+    {
+        x = parseLength(v.value, metresPerUnit, unitKnown);
+    }
+    catch (const Error &e)
+    {
+        throw Error(v.source + ": " + e.what());
+    }
+    if (!(x >= 0.0) || !std::isfinite(x))
+        throw Error(v.source + ": expected a length >= 0, got '" + v.value + "'");
+    return x;
+}
+
+void applySafety(const MissionOverrides &o, MissionSpec &m)
+{
+    SafetySpec &s = m.safety;
+    if (o.keepOff)
+    {
+        s.keepOff = lengthOf(*o.keepOff, m.metresPerUnit(), m.physicalUnits().length);
+        mark(m, "safety.keep_off", o.keepOff->source, o.origin);
+    }
+    if (o.minDepth)
+    {
+        s.minDepth = lengthOf(*o.minDepth, 1.0, true);  // a bare number is metres
+        mark(m, "safety.min_depth", o.minDepth->source, o.origin);
+    }
+    if (o.bathymetry)
+    {
+        if (o.bathymetry->value.empty())
+            throw Error(o.bathymetry->source + ": expected a file name, got an empty text");
+        s.bathymetry = o.bathymetry->value;
+        mark(m, "safety.bathymetry", o.bathymetry->source, o.origin);
+    }
+    if (o.bathymetryVariable)
+    {
+        s.bathymetryVariable = o.bathymetryVariable->value;
+        mark(m, "safety.bathymetry_variable", o.bathymetryVariable->source, o.origin);
+    }
+    if (o.snapToWater)
+    {
+        s.snapToWater = o.snapToWater->value;
+        mark(m, "safety.snap_to_water", o.snapToWater->source, o.origin);
+    }
+    // a depth limit reads the bathymetry file, or a forecast's own seafloor depth
+    const bool seafloor = !s.bathymetry.empty() || m.current.isForecast();
+    const std::string file = o.words ? (*o.words)("safety.bathymetry") : "safety.bathymetry";
+    if (o.bathymetryVariable && !seafloor)
+        throw Error(o.bathymetryVariable->source + ": the bathymetry variable needs a bathymetry file (" + file + ")");
+    if (o.minDepth && s.minDepth > 0.0 && !seafloor)
+        throw Error(o.minDepth->source + ": a depth limit needs a bathymetry file, a NetCDF file of seafloor depth or "
+                                         "elevation (" + file + ")");
+}
+
+/// The truth of an execution: another forecast (the forecast's variables and options), or the analytic flow with
+/// other parameters.
+CurrentSpec truthOf(const Given<std::string> &t, const MissionSpec &m, Origin origin)
+{
+    CurrentSpec c = m.current;
+    c.mark = SourceMark{t.source, 0, origin};
+    if (m.current.isForecast())
+    {
+        std::vector<std::string> files;
+        try
+        {
+            files = forecastFileList(t.value);
+        }
+        catch (const Error &e)
+        {
+            throw Error(t.source + ": " + e.what());
+        }
+        c.file = files.front();
+        c.files = files.size() > 1 ? files : std::vector<std::string>{};
+        return c;
+    }
+    const CurrentFieldKind *kind = findCurrentFieldKind(m.current.type);
+    std::string names;
+    std::set<std::string> known;
+    if (kind)
+        for (const auto &[name, value] : kind->parameters)
+        {
+            names += (names.empty() ? "" : ", ") + name;
+            known.insert(name);
+        }
+    std::size_t from = 0;
+    while (from <= t.value.size())
+    {
+        const std::size_t end = std::min(t.value.find(',', from), t.value.size());
+        const std::string item = t.value.substr(from, end - from);
+        from = end + 1;
+        const std::size_t eq = item.find('=');
+        const std::string name = eq == std::string::npos ? item : item.substr(0, eq);
+        if (eq == std::string::npos || !known.count(name))
+            throw Error(t.source + ": expected 'forecast' or NAME=VALUE,... with the " + m.current.type +
+                        "'s parameters (" + names + "), got '" + item + "'");
+        const std::string number = item.substr(eq + 1);
+        double value = 0.0;
+        const char *first = number.data(), *last = number.data() + number.size();
+        const auto r = std::from_chars(first, last, value);
+        if (number.empty() || r.ec != std::errc() || r.ptr != last || !std::isfinite(value))
+            throw Error(t.source + ": " + name + ": expected a finite number, got '" + number + "'");
+        c.parameters[name] = value;
+    }
+    return c;
+}
+
+void applyExecution(const MissionOverrides &o, MissionSpec &m)
+{
+    if (!o.truth && !o.surfacingInterval && !o.strategies && !o.radius && !o.executionPairs && !o.executionSeed)
+        return;  // the mission's execution section stays as it is
+    ExecutionSpec &e = m.execution;
+    const std::string &first = (o.truth                ? o.truth->source
+                                : o.surfacingInterval  ? o.surfacingInterval->source
+                                : o.strategies         ? o.strategies->source
+                                : o.radius             ? o.radius->source
+                                : o.executionPairs     ? o.executionPairs->source
+                                                       : o.executionSeed->source);
+    e.enabled = true;
+    e.mark = SourceMark{first, 0, o.origin};
+    if (o.truth && o.truth->value != "forecast")
+        e.truth = truthOf(*o.truth, m, o.origin);
+    else if (o.truth)
+        e.truth.reset();
+    if (o.surfacingInterval)
+    {
+        try
+        {
+            e.surfacingInterval = parseDuration(o.surfacingInterval->value, m.timeUnitSeconds, m.hasTimeUnit());
+        }
+        catch (const Error &err)
+        {
+            throw Error(o.surfacingInterval->source + ": " + err.what());
+        }
+        mark(m, "execution.surfacing_interval", o.surfacingInterval->source, o.origin);
+    }
+    if (o.strategies)
+    {
+        std::string known;
+        for (const ControlStrategy s : controlStrategies())
+            known += (known.empty() ? "" : ", ") + std::string(controlStrategyName(s));
+        std::vector<std::string> names;
+        for (const std::string &name : o.strategies->value)
+        {
+            if (!parseControlStrategy(name))
+                throw Error(o.strategies->source + ": unknown strategy '" + name + "' (expected " + known + ")");
+            if (std::find(names.begin(), names.end(), name) != names.end())
+                throw Error(o.strategies->source + ": '" + name + "' is listed twice");
+            names.push_back(name);
+        }
+        if (names.empty())
+            throw Error(o.strategies->source + ": expected at least one strategy (" + known + ")");
+        e.strategies = names;
+        mark(m, "execution.strategies", o.strategies->source, o.origin);
+    }
+    if (o.radius)
+    {
+        e.radius = finite(*o.radius, true);
+        mark(m, "execution.radius", o.radius->source, o.origin);
+    }
+    const std::pair<const std::optional<Given<long long>> *, std::pair<unsigned *, long long>> counts[] = {
+        {&o.executionPairs, {&e.pairs, 100000}}, {&o.executionSeed, {&e.seed, 4294967295LL}}};
+    for (const auto &[given, target] : counts)
+        if (*given)
+        {
+            if ((*given)->value < 0 || (*given)->value > target.second)
+                throw Error((*given)->source + ": expected an integer 0.." + std::to_string(target.second) +
+                            ", got " + std::to_string((*given)->value));
+            *target.first = static_cast<unsigned>((*given)->value);
+        }
+}
 }  // namespace
 
 void applyOverrides(const MissionOverrides &o, MissionSpec &m)
@@ -282,6 +460,10 @@ void applyOverrides(const MissionOverrides &o, MissionSpec &m)
     applyWhereAndWhen(o, changed);
     applyVia(o, changed);
     applyOutputs(o, changed);
+    applySafety(o, changed);
+    applyExecution(o, changed);
+    if (o.words)
+        changed.words = o.words;
     m = std::move(changed);
 }
 

@@ -252,7 +252,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     }
     if (!r.solved)
     {
-        NoPath why = noPathReason(status, *planner, *ss, limit);
+        NoPath why = noPathReason(status, *planner, *ss, limit, m);
         if (status == ompl::base::PlannerStatus::INVALID_START || status == ompl::base::PlannerStatus::INVALID_GOAL)
         {
             const bool start = status == ompl::base::PlannerStatus::INVALID_START;
@@ -352,8 +352,7 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     result.spec = problem.getSpec();
     const MissionSpec &m = result.spec;
     if (!m.fleet.empty())
-        throw Error(m.place("fleet") + ": a fleet is planned glider by glider: runFleet() (mission/Fleet.h), or "
-                                       "glider_plan --mission");
+        throw Error(m.place("fleet") + ": a fleet is planned glider by glider: runFleet() (mission/Fleet.h)");
     checkPlanner(problem, m.departure.window ? m.departure.begin : m.departure.time);
     checkGoalWindow(problem);
     checkViaWindows(problem);

@@ -85,7 +85,7 @@ void checkExecutionWork(const MissionSpec &m, double interval, double window, st
 /// Why a search ended without an exact path: the setup's own check, the planner's own cause and words
 /// (PipelinePlanner::noPathReason()), or OMPL's status.
 NoPath noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::Planner &planner,
-                    const GliderSimpleSetup &setup, double timeLimit);
+                    const GliderSimpleSetup &setup, double timeLimit, const MissionSpec &m);
 
 /// What bounds the arrival of an exhausted search (the end of the forecast or the planning horizon): sets @p n's
 /// bound, boundSpan and boundText.

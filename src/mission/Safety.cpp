@@ -26,7 +26,7 @@ namespace
 std::string at(const MissionSpec &m, const std::string &field)
 {
     const auto it = m.marks.find(field);
-    if (it != m.marks.end() && it->second.line == 0 && it->second.file.rfind("--", 0) == 0)
+    if (it != m.marks.end() && it->second.namesItself())
         return it->second.file + ": ";
     return m.place(field) + ": ";
 }
@@ -58,7 +58,7 @@ std::shared_ptr<const ForbiddenCells> MissionProblem::shallowWater()
     if (file.empty())
     {
         if (forecastFiles_.empty())
-            throw Error(at(m, field) + "a depth limit needs a bathymetry file (safety.bathymetry, --bathymetry)");
+            throw Error(at(m, field) + "a depth limit needs a bathymetry file (" + m.term("safety.bathymetry") + ")");
         file = forecastFiles_.front();  // the model's own bathymetry (ROMS h)
     }
 #if OMPL_GLIDER_WITH_NETCDF

@@ -715,7 +715,9 @@ for name, args, phrase in [
         ("flag-keep-off-negative", ["--keep-off=-2"], "--keep-off: expected a length >= 0"),
         ("flag-keep-off-unknown-unit", ["--keep-off", "2 parsecs"], "--keep-off: expected a length"),
         ("flag-keep-off-km-without-units", ["--keep-off", "2km"], "needs the mission's length unit"),
-        ("flag-min-depth-without-bathymetry", ["--min-depth", "50m"], "--min-depth needs --bathymetry"),
+        ("flag-min-depth-without-bathymetry", ["--min-depth", "50m"],
+         "--min-depth: a depth limit needs a bathymetry file, a NetCDF file of seafloor depth or elevation "
+         "(safety.bathymetry, --bathymetry)"),
 ]:
     case(name, args + ["--out", "{out}"], 2, phrase, {"m.yaml": MISSION})
 yaml_case("safety-keep-off-negative", mission(append="safety: {keep_off: -1}\n"), "m.yaml:8: field 'safety.keep_off'")

@@ -303,7 +303,7 @@ TEST(Coastline, AHoleTouchingItsOuterRingAtAVertexIsTakenAsItIs)
     in.speed = 0.4;
     MissionSpec spec = forecastMission(in);
     spec.forbidden.coastline = coast;
-    spec.forbidden.coastlineMark = {"--coastline", 0};
+    spec.forbidden.coastlineMark = {"--coastline", 0, Origin::Flag};
     const MissionProblem problem(spec);
     ASSERT_EQ(problem.getPolygons().size(), 1u);
     EXPECT_EQ(problem.getPolygons()[0].name, "Isla Laguna");
@@ -405,7 +405,7 @@ TEST(Coastline, ErrorsNameTheCoastlineFileTheFeatureAndLonLat)
     in.goal = {-75.8, 18.1};
     MissionSpec spec = forecastMission(in);
     spec.forbidden.coastline = coast;
-    spec.forbidden.coastlineMark = {"--coastline", 0};
+    spec.forbidden.coastlineMark = {"--coastline", 0, Origin::Flag};
     try
     {
         const MissionProblem problem(spec);

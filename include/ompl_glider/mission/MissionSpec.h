@@ -7,8 +7,10 @@
 /// dimensionless for the analytic flows. `units.length_m` / `units.time_s` say how many metres / seconds one
 /// unit is, so that geographic and calendar outputs are possible for analytic flows too.
 
+#include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,10 +29,38 @@
 namespace ompl_glider
 {
 /// @brief Where a value came from in the mission file (for messages after loading).
+/// @brief What gave a value: a mission file (or a default), a command-line flag or a keyword of the Python module.
+enum class Origin : std::uint8_t
+{
+    File = 0,
+    Flag,
+    Keyword
+};
+
+/// @brief Where a value was given.
 struct SourceMark
 {
-    std::string file;  ///< mission file, or the command-line flag ("--grid-size") that gave the value
-    int line{0};       ///< 1-based line (0 = unknown, or a flag)
+    /// mission file; for a flag or a keyword, how the front end names it ("--grid-size", "plan(): keyword 'speed'")
+    std::string file;
+    int line{0};       ///< 1-based line (0 = unknown, or a flag or keyword)
+    Origin origin{Origin::File};
+
+    /// @brief True for a flag or a keyword: its name says where, without a line.
+    bool namesItself() const
+    {
+        return origin != Origin::File;
+    }
+};
+
+/// @brief How a front end names the mission's settings to its user: a setting ("planner.time_limit", or a setting
+/// with its value, "current.horizon: hold_last") mapped to the front end's word ("--time-limit" on the command line,
+/// "time_limit=" in Python). A setting without a word is named as a mission file names it.
+struct SettingWords
+{
+    std::map<std::string, std::string> words;  ///< by setting
+
+    /// @brief @p setting and the front end's word for it ("planner.time_limit, --time-limit"), else @p setting.
+    std::string operator()(const std::string &setting) const;
 };
 
 /// @brief A point given as x/y (planning frame) or lon/lat (degrees; needs a projection).
@@ -446,6 +476,8 @@ struct MissionSpec
     /// Where each value was given, by dotted field name ("planner.grid_size"): a line of the mission file, or the
     /// command-line flag. Checks made after loading (those that need the field or the region) name it with place().
     std::map<std::string, SourceMark> marks;
+    /// How the front end that made the mission names its settings (SettingWords); null: as a mission file does.
+    std::shared_ptr<const SettingWords> words;
 
     /// @brief True when the mission's time unit is known in seconds (a forecast, units.time_s, or an epoch), so that
     /// durations such as "1 h" can be converted (parseDuration()).
@@ -482,6 +514,10 @@ struct MissionSpec
     /// @brief "m.yaml:12: field 'planner.grid_size'", "--grid-size" for a flag, "plan(): keyword 'speed'" for a
     /// keyword of the Python module, or "m.yaml: field '...'" when the value was not given (a default).
     std::string place(const std::string &field) const;
+
+    /// @brief @p setting with the front end's word for it (SettingWords): "planner.time_limit, --time-limit" from
+    /// the command line, "planner.time_limit, time_limit=" from Python, "planner.time_limit" from a mission file.
+    std::string term(const std::string &setting) const;
 };
 
 /// @brief Reads and validates a YAML mission file. Every field is checked: an unknown field, a wrong type, a

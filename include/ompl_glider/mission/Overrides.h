@@ -27,6 +27,9 @@ struct Given
 /// @brief The changes a front end asks of a mission; what is not set stays as the mission has it.
 struct MissionOverrides
 {
+    Origin origin{Origin::Flag};  ///< what gives the values: a flag or a keyword (their sources name them)
+    /// How the front end names the mission's settings; set on the mission (MissionSpec::words) when given
+    std::shared_ptr<const SettingWords> words;
     std::optional<Given<std::string>> planner;  ///< a name or alias of the registry
     /// planner parameters by name (merged over the mission's; a planner other than the mission's drops them first)
     std::optional<Given<std::map<std::string, std::string>>> plannerParameters;
@@ -57,6 +60,23 @@ struct MissionOverrides
     /// the glider's observations (IOOS profile files or a CSV: MissionSpec::observations; the mission's correction
     /// parameters kept, else the defaults)
     std::optional<Given<std::string>> observations;
+
+    // safety (safety.*): lengths as text, a number in the mission's length unit or with a unit ("2 km", "500 m")
+    std::optional<Given<std::string>> keepOff;             ///< the keep-off distance from land, >= 0
+    std::optional<Given<std::string>> minDepth;            ///< the depth limit (a bare number is metres), >= 0
+    std::optional<Given<std::string>> bathymetry;          ///< a NetCDF file of seafloor depth or elevation
+    std::optional<Given<std::string>> bathymetryVariable;  ///< its depth variable (needs a bathymetry or forecast)
+    std::optional<Given<bool>> snapToWater;                ///< a start or goal on land moved to the nearest water
+
+    // execution in another ocean (execution.*): any of these flies the plan
+    /// the ocean flown in: "forecast", another forecast (files: a comma-separated list or glob, read with the
+    /// forecast's variables) for a forecast mission, NAME=VALUE,... of the analytic flow's parameters otherwise
+    std::optional<Given<std::string>> truth;
+    std::optional<Given<std::string>> surfacingInterval;  ///< a duration ("1 h", or a number in the time unit)
+    std::optional<Given<std::vector<std::string>>> strategies;  ///< ExecutionStrategy names, each once
+    std::optional<Given<double>> radius;                   ///< the goal radius, > 0 (length unit)
+    std::optional<Given<long long>> executionPairs;        ///< random start/goal pairs, 0..100000
+    std::optional<Given<long long>> executionSeed;         ///< their seed, 0..4294967295
 };
 
 /// @brief Applies @p o to @p m: each value checked (finite, in its range, a planner of the registry, a time the
