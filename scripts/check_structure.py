@@ -11,8 +11,11 @@ Rules:
   functions  no function there over MAX_FUNCTION_LINES lines (from its opening to its closing brace).
   no-issues  no "issue N" in the code or the installed headers: the code says what it does and cites the literature.
   citations  sources cite by the keys of docs/REFERENCES.md ("[EichhornRAS] Eq. 5"), not by author and year.
+  no-flags   no command-line flag ("--grid-size") in a string of the library (src/, include/): the library names
+             settings by their mission fields, and each front end words them (MissionSpec::term(), SettingWords).
   outcomes   no code searches the words of an outcome (a no-path reason, a switch reason, a re-flight note) or
-             compares them to a text: it branches on the typed cause (ompl/NoPath.h's NoPathCause).
+             compares them to a text: it branches on the typed cause (ompl/NoPath.h's NoPathCause); nor does the
+             mission layer or a front end search an error's message to place it: Error::field() says the setting.
 """
 import os
 import re
@@ -32,6 +35,12 @@ RELATIVE_INCLUDE = re.compile(r'^\s*#\s*include\s*"((?:\.\./)+[^"]+)"')
 OUTCOME_TEXT = re.compile(r"\b(?:reason|why_?|switchReason|reflightNote|noPath\.what)\w*\s*(?:\(\))?\s*(?:\.|->)\s*"
                           r"(?:r?find|find_first_of|find_last_of|substr|compare|starts_with|ends_with)\s*\(|"
                           r"\b(?:reason|switchReason|reflightNote)\s*[!=]=\s*\"")
+# a flag inside a string literal of code
+FLAG_IN_STRING = re.compile(r'"(?:[^"\\\n]|\\.)*?(?<![\w-])(--[a-z][a-z0-9-]*)')
+# a search in an error's message
+ERROR_TEXT = re.compile(r"\bwhat\w*\s*(?:\(\))?\s*(?:\.|->)\s*(?:r?find|find_first_of|substr|compare|starts_with)\s*\(|"
+                        r"\.what\(\)\)\.(?:r?find|substr|compare)\s*\(")
+ERROR_FOLDERS = ["src/mission", "src/registry", "apps", "python/src"]
 OUTCOME_FOLDERS = ["src/mission", "src/planners", "src/reachability", "src/ompl", "src/routes", "src/stints",
                    "src/execution", "src/output"]
 AUTHOR_YEAR = re.compile(r"\b[A-Z][a-z]+(?: et al\.)?,? \(?(19|20)\d\d\)?")
@@ -187,6 +196,25 @@ def check_outcomes(root):
             m = OUTCOME_TEXT.search(line)
             if m:
                 breaches.append(f"{rel}:{number}: '{m.group(0)}' reads an outcome's words: branch on its cause")
+    for path, rel in source_files(root, ERROR_FOLDERS):
+        with open(path, encoding="utf-8", errors="replace") as f:
+            text = f.read()
+        for number, line in enumerate(strip_outcome_comments(text).split("\n"), 1):
+            m = ERROR_TEXT.search(line)
+            if m:
+                breaches.append(f"{rel}:{number}: '{m.group(0)}' reads an error's message: use Error::field()")
+    return breaches
+
+
+def check_no_flags(root):
+    breaches = []
+    for path, rel in source_files(root, ["src", "include/ompl_glider"]):
+        with open(path, encoding="utf-8", errors="replace") as f:
+            text = f.read()
+        for number, line in enumerate(strip_outcome_comments(text).split("\n"), 1):
+            m = FLAG_IN_STRING.search(line)
+            if m:
+                breaches.append(f"{rel}:{number}: '{m.group(1)}': name the setting (MissionSpec::term()), not a flag")
     return breaches
 
 
@@ -199,7 +227,8 @@ def main():
     root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
     failed = False
     for rule, check in (("layers", check_layers), ("size", check_sizes), ("citations", check_citations),
-                        ("no-issues", check_no_issue_numbers), ("outcomes", check_outcomes)):
+                        ("no-issues", check_no_issue_numbers), ("outcomes", check_outcomes),
+                        ("no-flags", check_no_flags)):
         breaches = check(root)
         print(f"{rule}: {'ok' if not breaches else str(len(breaches)) + ' breach(es)'}")
         for b in breaches:

@@ -81,6 +81,16 @@ std::shared_ptr<const ompl_glider::SettingWords> flagWords()
         {"current.variables.angle", "--angle-var"},
         {"current.variables.angle: none", "--angle-var none"},
         {"current.variables.mask", "--mask-var"},
+        {"current.variables.u", "--u-var"},
+        {"current.variables.v", "--v-var"},
+        {"current.variables.lon", "--lon-var"},
+        {"current.variables.lat", "--lat-var"},
+        {"current.variables.depth", "--depth-var"},
+        {"current.variables.time", "--time-var"},
+        {"current.velocity_units", "--velocity-units"},
+        {"current.time_units", "--time-units"},
+        {"current.steady_record", "--steady-record"},
+        {"current.zero_velocity_land", "--no-zero-land"},
         {"forbidden.coastline", "--coastline"},
         {"safety.keep_off", "--keep-off"},
         {"safety.min_depth", "--min-depth"},
@@ -90,7 +100,7 @@ std::shared_ptr<const ompl_glider::SettingWords> flagWords()
         {"execution.truth", "--truth"},
         {"execution.surfacing_interval", "--surfacing-interval"},
         {"execution.strategies", "--strategies"},
-        {"execution.radius", "--radius"}}});
+        {"execution.radius", "--radius"}}, {}, Origin::Flag});
     return words;
 }
 
@@ -261,6 +271,7 @@ MissionSpec forecastMissionOf(Flags f)
     if (f.depth)
         f.forecast.depth = *f.depth;
     f.forecast.snapToWater = f.snapToWater;
+    f.forecast.words = flagWords();
     MissionSpec m = forecastMission(f.forecast);
     applyFlags(f, m, true);
     if (fromFix)

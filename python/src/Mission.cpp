@@ -82,6 +82,8 @@ void checkFinite(const std::string &name, double v, bool positive)
     }
 }
 
+std::shared_ptr<const SettingWords> keywordWords();
+
 /// The forecast of a NetCDF path (a file, or a comma-separated list of files and glob patterns) with the
 /// command line's options, as `--currents FILE --start ... --goal ...` builds it (forecastMission()).
 MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std::string &departure, double speed,
@@ -93,6 +95,7 @@ MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std:
 {
     ForecastInput in;
     in.snapToWater = snapToWater;
+    in.words = keywordWords();
     const std::vector<std::string> list = forecastFileList(files);
     if (list.size() == 1)
         in.current.file = list.front();
@@ -187,15 +190,9 @@ void setAnalytic(MissionSpec &m, const std::string &type, const std::map<std::st
         throw Error("analytic field: unknown flow '" + type + "' (expected one of " + names + ")");
     for (const auto &[name, value] : parameters)
     {
-        bool known = false;
-        std::string list;
-        for (const auto &[pname, def] : kind->parameters)
-        {
-            known = known || pname == name;
-            list += (list.empty() ? "" : ", ") + pname;
-        }
-        if (!known)
-            throw Error("analytic field '" + type + "': unknown parameter '" + name + "' (expected " + list + ")");
+        if (!hasParameter(*kind, name))
+            throw Error("analytic field '" + type + "': unknown parameter '" + name + "' (expected " +
+                        parameterNameList(*kind) + ")");
         checkFinite(name, value, false);
     }
     if (m.current.isForecast())
@@ -237,7 +234,26 @@ std::shared_ptr<const SettingWords> keywordWords()
         {"execution.truth", "truth="},
         {"execution.surfacing_interval", "surfacing_interval="},
         {"execution.strategies", "strategies="},
-        {"execution.radius", "radius="}}});
+        {"execution.radius", "radius="}},
+        // a value given: by its keyword (of plan(), or of Field.netcdf() for the forecast's reading)
+        {{"start", "plan(): keyword 'start'"},
+         {"goal", "plan(): keyword 'goal'"},
+         {"region", "plan(): keyword 'region'"},
+         {"departure.time", "plan(): keyword 'departure'"},
+         {"vehicle.speed", "plan(): keyword 'speed'"},
+         {"vehicle.depth", "Field.netcdf(): keyword 'depth'"},
+         {"current.file", "Field.netcdf(): path"},
+         {"current.variables.u", "Field.netcdf(): keyword 'variables' (u)"},
+         {"current.variables.v", "Field.netcdf(): keyword 'variables' (v)"},
+         {"current.variables.lon", "Field.netcdf(): keyword 'variables' (lon)"},
+         {"current.variables.lat", "Field.netcdf(): keyword 'variables' (lat)"},
+         {"current.variables.depth", "Field.netcdf(): keyword 'variables' (depth)"},
+         {"current.variables.time", "Field.netcdf(): keyword 'variables' (time)"},
+         {"current.velocity_units", "Field.netcdf(): keyword 'velocity_units'"},
+         {"current.time_units", "Field.netcdf(): keyword 'time_units'"},
+         {"current.steady_record", "Field.netcdf(): keyword 'steady_record'"},
+         {"current.zero_velocity_land", "Field.netcdf(): keyword 'zero_velocity_land'"}},
+        Origin::Keyword});
     return words;
 }
 

@@ -156,6 +156,22 @@ std::string griddedKindList(const std::string &separator)
     return out;
 }
 
+bool hasParameter(const CurrentFieldKind &kind, const std::string &name)
+{
+    for (const auto &[key, value] : kind.parameters)
+        if (key == name)
+            return true;
+    return false;
+}
+
+std::string parameterNameList(const CurrentFieldKind &kind)
+{
+    std::string out;
+    for (const auto &[key, value] : kind.parameters)
+        out += (out.empty() ? "" : ", ") + key;
+    return out;
+}
+
 std::shared_ptr<const CurrentField> makeAnalyticField(const std::string &name,
                                                       const std::map<std::string, double> &parameters)
 {
@@ -169,8 +185,9 @@ std::shared_ptr<const CurrentField> makeAnalyticField(const std::string &name,
         full[key] = value;
     for (const auto &[key, value] : parameters)
     {
-        if (!full.count(key))
-            throw Error("current type '" + name + "' has no parameter '" + key + "'");
+        if (!hasParameter(*kind, key))
+            throw Error("current type '" + name + "' has no parameter '" + key + "' (expected " +
+                        parameterNameList(*kind) + ")");
         full[key] = value;
     }
     return kind->make(full);

@@ -92,7 +92,7 @@ netcdf_detail::ForecastPiece netcdf_detail::readForecastPiece(const std::string 
         throw f.error("depth average over " + std::to_string(opt.depthAverage->first) + ".." +
                       std::to_string(opt.depthAverage->second) + " m: expected 0 <= top <= bottom, finite");
     if (opt.depthAverage && (l.dimZ < 0 || f.dimLen(l.dims[std::size_t(l.dimZ)]) < 2))
-        throw f.error("a depth average (--depth-average, current.depth_average) needs several depth levels, but '" +
+        throw f.error("a depth average (NetCdfCurrentOptions::depthAverage) needs several depth levels, but '" +
                       l.uName + "' has " + (l.dimZ < 0 ? std::string("no depth dimension") : "a single depth level") +
                       ": remove the depth average to plan on this level");
     const AxisSelection &z = p.z = selectDepths(f, l, opt.depthAverage ? opt.depthAverage->second : opt.maxDepth);

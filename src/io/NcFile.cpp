@@ -216,6 +216,11 @@ Error NcFile::error(const std::string &what) const
     return Error(data_->who() + ": " + what);
 }
 
+Error NcFile::error(const std::string &what, const std::string &field) const
+{
+    return Error(data_->who() + ": " + what, field);
+}
+
 void NcFile::check(int status, const std::string &what) const
 {
     if (status != NC_NOERR)

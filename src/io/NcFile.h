@@ -53,6 +53,8 @@ public:
     }
     /// An Error "NetCDF file '<path>': <what>" ("OPeNDAP source '<url>': <what>" for a URL).
     Error error(const std::string &what) const;
+    /// @brief error() about the setting @p field (Error::field()).
+    Error error(const std::string &what, const std::string &field) const;
     /// Throws error(what + ": " + nc_strerror(status)) unless status is NC_NOERR.
     void check(int status, const std::string &what) const;
 

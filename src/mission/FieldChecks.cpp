@@ -10,19 +10,12 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/mission/MissionProblem.h"
+#include "ProblemParts.h"
 
 namespace ompl_glider
 {
 namespace
 {
-/// "FILE:LINE: " of a mark from a file, else "MISSION_FILE: " (as MissionProblem.cpp's messages).
-std::string where(const MissionSpec &m, const SourceMark &mark)
-{
-    if (!mark.file.empty() && mark.line > 0)
-        return mark.file + ":" + std::to_string(mark.line) + ": ";
-    return m.file + ": ";
-}
-
 /// The widest planning region (planning length units): a billion kilometres in metres; wider is a typing error and
 /// overflows the planner's arithmetic.
 constexpr double kMaxRegionSpan = 1e12;
@@ -59,7 +52,7 @@ void MissionProblem::checkAnalyticFields() const
         if (!f || !kind || kind->gridded())
             return;
         const std::string at = c.mark.namesItself() ? c.mark.file + ": "
-                                                                 : where(m, c.mark) + "field '" + field + "': ";
+                                                                 : sourcePlace(m, c.mark) + "field '" + field + "': ";
         checkFiniteField(*f, box_, m.departure.time, at);
     };
     if (members_.empty())
@@ -80,7 +73,7 @@ void MissionProblem::checkDepthAxis(const LoadedForecast &nc) const
     const auto it = m.marks.find("vehicle.depth");
     const std::string at = it == m.marks.end() ? m.place("vehicle.depth") + ": "
                            : it->second.line == 0 ? it->second.file + ": "
-                                                  : where(m, it->second) + "field 'vehicle.depth': ";
+                                                  : sourcePlace(m, it->second) + "field 'vehicle.depth': ";
     throw Error(at + "the glider's depth of " + text::number(m.vehicle.depth) + " m: the forecast's '" +
                 nc.uVariable + "' has no depth dimension, so its currents are of one level (the surface's, or a "
                 "depth average), not of " + text::number(m.vehicle.depth) + " m; plan at depth 0 on it, or on a "
@@ -114,8 +107,8 @@ void MissionProblem::checkCommonTime() const
             spans += (i ? ", " : "") + std::string("[") + std::to_string(i) + "] " + name + " from " +
                      when(members_[i]->timeBegin()) + " to " + when(members_[i]->timeEnd());
         }
-        throw Error(where(spec_, spec_.current.mark) + "field 'current.ensemble': the members hold currents at no "
-                    "common time (" + spans + "); an ensemble is planned where all of them do: give members that "
+        throw Error(sourcePlace(spec_, spec_.current.mark) + "field 'current.ensemble': the members hold currents at "
+                    "no common time (" + spans + "); an ensemble is planned where all of them do: give members that "
                     "cover the trip's days");
     }
 }

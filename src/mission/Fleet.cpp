@@ -88,7 +88,7 @@ MissionSpec gliderMission(const MissionSpec &base, const MissionSpec &mission, s
     m.start = g.start;
     m.goal = g.goal;
     if (g.speed)
-        m.vehicle.speed = m.travel.speed = *g.speed;
+        m.vehicle.speed = *g.speed;
     if (g.departure)
     {
         m.departure.time = *g.departure;

@@ -45,28 +45,39 @@ std::string regionText(const Box &r)
     return text::number(r.xMin) + "," + text::number(r.yMin) + "," + text::number(r.xMax) + "," +
            text::number(r.yMax);
 }
-/// How the command line calls a forecast request's settings.
-std::map<ForecastOption, std::string> flagNames()
+/// How the caller names a value it gave for @p field ("--start", "plan(): keyword 'start'"), else the field.
+std::string named(const ForecastInput &q, const std::string &field)
 {
-    return {{ForecastOption::U, "--u-var"},
-            {ForecastOption::V, "--v-var"},
-            {ForecastOption::Lon, "--lon-var"},
-            {ForecastOption::Lat, "--lat-var"},
-            {ForecastOption::Depth, "--depth-var"},
-            {ForecastOption::Time, "--time-var"},
-            {ForecastOption::VelocityUnits, "--velocity-units"},
-            {ForecastOption::TimeUnits, "--time-units"},
-            {ForecastOption::SteadyRecord, "--steady-record"},
-            {ForecastOption::Departure, "--departure"},
-            {ForecastOption::MaxDepth, "--depth"},
-            {ForecastOption::ZeroVelocityLand, "--no-zero-land"}};
+    return q.words ? q.words->givenName(field) : field;
 }
 
-/// The mission's request to its source, its settings named as the command line's flags.
-ForecastRequest flagRequest(const MissionSpec &m)
+/// The setting @p setting with the caller's word for it (SettingWords), else as a mission file names it.
+std::string term(const ForecastInput &q, const std::string &setting)
+{
+    return q.words ? (*q.words)(setting) : setting;
+}
+
+/// Start and goal, each with the caller's name for it.
+std::vector<std::pair<std::string, Point2>> endpoints(const ForecastInput &q)
+{
+    return {{named(q, "start"), q.start}, {named(q, "goal"), q.goal}};
+}
+
+/// Where the caller gave @p field.
+SourceMark markOf(const ForecastInput &q, const std::string &field)
+{
+    return SourceMark{named(q, field), 0, q.words ? q.words->origin : Origin::Program};
+}
+
+/// The mission's request to its source, its settings named as the caller names them.
+ForecastRequest callerRequest(const MissionSpec &m, const ForecastInput &q)
 {
     ForecastRequest o = forecastRequest(m);
-    o.optionNames = flagNames();
+    for (auto &[option, field] : forecastFieldNames("current"))
+        o.optionNames[option] = named(q, field);
+    o.optionNames[ForecastOption::Departure] = named(q, "departure.time");
+    o.optionNames[ForecastOption::MaxDepth] = named(q, "vehicle.depth");
+    o.optionNames[ForecastOption::Region] = named(q, "region");
     return o;
 }
 
@@ -76,18 +87,20 @@ const GriddedSource &sourceOf(const MissionSpec &m)
     return *findCurrentFieldKind(m.current.type)->source;
 }
 
-/// A departure or region fault prefixed with the flags that gave it.
-std::string flagMessage(std::string what, const ForecastInput &q)
+/// A departure or region fault (by the setting the source names, Error::field()) prefixed with what gave it.
+std::string callerMessage(const Error &e, const ForecastInput &q, const ForecastRequest &o)
 {
-    const bool departure = what.find("depart") != std::string::npos;
-    if (!q.departure.empty() && departure && what.find("--departure") == std::string::npos)
-        what = "--departure " + q.departure + ": " + what;
-    else if (what.find("region ") != std::string::npos && what.find("] is outside '") != std::string::npos)
+    const std::string what = e.what();
+    if (e.field().empty())
+        return what;
+    if (!q.departure.empty() && e.field() == o.optionName(ForecastOption::Departure, ""))
+        return named(q, "departure.time") + " " + q.departure + ": " + what;
+    if (e.field() == o.optionName(ForecastOption::Region, ""))
     {
-        const std::string given = q.region ? "--region " + regionText(*q.region)
-                                           : "--start " + pointText(q.start.x, q.start.y) + " / --goal " +
-                                                 pointText(q.goal.x, q.goal.y);
-        what = given + ": not on the grid: " + what;
+        const std::string given = q.region ? named(q, "region") + " " + regionText(*q.region)
+                                           : named(q, "start") + " " + pointText(q.start.x, q.start.y) + " / " +
+                                                 named(q, "goal") + " " + pointText(q.goal.x, q.goal.y);
+        return given + ": not on the grid: " + what;
     }
     return what;
 }
@@ -103,11 +116,11 @@ std::vector<std::string> forecastFiles(const ForecastInput &q)
     std::error_code ec;
     for (const std::string &p : files)
         if (!isRemoteSource(p) && !isMemoryDataset(p) && !fs::is_regular_file(p, ec) && !fs::is_directory(p, ec))
-            throw Error("--currents: cannot open '" + p + "' (no such file)");
+            throw Error(named(q, "current.file") + ": cannot open '" + p + "' (no such file)");
     return files;
 }
 
-/// The mission's current, start, goal and depth as the flags give them (the current section as a mission file's
+/// The mission's current, start, goal and depth as the caller gives them (the current section as a mission file's
 /// `current: type netcdf`); @p file names the forecast in messages.
 MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> &files, const std::string &file)
 {
@@ -125,15 +138,16 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
     m.current.files = files.size() > 1 ? files : std::vector<std::string>{};
     m.current.mark = SourceMark{file, 0};
 
-    m.marks["start"] = SourceMark{"--start", 0, Origin::Flag};
-    m.marks["goal"] = SourceMark{"--goal", 0, Origin::Flag};
+    m.words = q.words;
+    m.marks["start"] = markOf(q, "start");
+    m.marks["goal"] = markOf(q, "goal");
     m.start.xy = q.start;
     m.start.lonLat = {q.start.x, q.start.y};
     m.goal.xy = q.goal;
     m.goal.lonLat = {q.goal.x, q.goal.y};
-    m.vehicle.depth = m.travel.depth = q.depth;
+    m.vehicle.depth = q.depth;
     if (q.depth > 0.0)
-        m.marks["vehicle.depth"] = SourceMark{"--depth", 0, Origin::Flag};
+        m.marks["vehicle.depth"] = markOf(q, "vehicle.depth");
     return m;
 }
 
@@ -141,15 +155,15 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
 bool forecastIsGeographic(const std::vector<std::string> &list, const MissionSpec &m, const ForecastInput &q)
 {
     bool geographic = true;
+    ForecastRequest o = callerRequest(m, q);
     try
     {
-        ForecastRequest o = flagRequest(m);
         o.files = list;
         geographic = sourceOf(m).geographic(o);
     }
     catch (const Error &e)
     {
-        throw Error(flagMessage(e.what(), q));
+        throw Error(callerMessage(e, q, o));
     }
     return geographic;
 }
@@ -157,13 +171,13 @@ bool forecastIsGeographic(const std::vector<std::string> &list, const MissionSpe
 /// Start and goal of a geographic file: longitudes in -180..180 or 0..360, latitudes in -90..90.
 void checkLonLat(const ForecastInput &q)
 {
-    for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
+    for (const auto &[name, p] : endpoints(q))
     {
         if (p.x < -180.0 || p.x > 360.0)
-            throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": longitude " + text::number(p.x) +
+            throw Error(name + " " + pointText(p.x, p.y) + ": longitude " + text::number(p.x) +
                         " is not in -180..180 or 0..360");
         if (std::abs(p.y) > 90.0)
-            throw Error(std::string(flag) + " " + pointText(p.x, p.y) + ": latitude " + text::number(p.y) +
+            throw Error(name + " " + pointText(p.x, p.y) + ": latitude " + text::number(p.y) +
                         " is not in -90..90");
     }
 }
@@ -175,31 +189,31 @@ void setRegion(MissionSpec &m, const ForecastInput &q, bool geographic)
     if (!q.region)
         return;
     const Box &r = *q.region;
-    m.marks["region"] = SourceMark{"--region", 0, Origin::Flag};
+    m.marks["region"] = markOf(q, "region");
     m.region.set = true;
     m.region.geographic = geographic;
     if (geographic)
     {
         if (const auto fault = regionFault(r.xMin, r.yMin, r.xMax, r.yMax))
-            throw Error("--region " + regionText(r) + ": " + fault->bound + " " + fault->what);
+            throw Error(named(q, "region") + " " + regionText(r) + ": " + fault->bound + " " + fault->what);
         const GeoBox box = geoBox(r.xMin, r.yMin, r.xMax, r.yMax);
         m.region.lonLat = box;
-        for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
+        for (const auto &[name, p] : endpoints(q))
             if (!box.contains({p.x, p.y}))
-                throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (lon,lat) lies outside --region " +
+                throw Error(name + " " + pointText(p.x, p.y) + " (lon,lat) lies outside " + named(q, "region") + " " +
                             regionText(r) + " (" + box.text() + ")");
     }
     else
     {
         if (!(r.xMax > r.xMin) || !(r.yMax > r.yMin) || !std::isfinite(r.xMax - r.xMin) ||
             !std::isfinite(r.yMax - r.yMin))
-            throw Error("--region " + regionText(r) +
+            throw Error(named(q, "region") + " " + regionText(r) +
                         ": a Cartesian file's region is x_min,y_min,x_max,y_max with x_max > x_min and "
                         "y_max > y_min");
         m.region.xy = r;
-        for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
+        for (const auto &[name, p] : endpoints(q))
             if (!(p.x >= r.xMin && p.x <= r.xMax && p.y >= r.yMin && p.y <= r.yMax))
-                throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (x,y) lies outside --region " +
+                throw Error(name + " " + pointText(p.x, p.y) + " (x,y) lies outside " + named(q, "region") + " " +
                             regionText(r));
     }
 }
@@ -209,7 +223,7 @@ void setRegion(MissionSpec &m, const ForecastInput &q, bool geographic)
 LoadedForecast loadForecast(const std::vector<std::string> &list, const MissionSpec &m, const ForecastInput &q,
                             std::optional<double> &epoch)
 {
-    ForecastRequest o = flagRequest(m);
+    ForecastRequest o = callerRequest(m, q);
     o.files = list;
     o.departure = q.departure;
     const GriddedSource &source = sourceOf(m);
@@ -218,9 +232,9 @@ LoadedForecast loadForecast(const std::vector<std::string> &list, const MissionS
     {
         // start and goal within the file's coordinates, before its data are read (the files' grids agree)
         const ForecastExtent e = source.extent(o);
-        for (const auto &[flag, p] : {std::pair<const char *, Point2>{"--start", q.start}, {"--goal", q.goal}})
+        for (const auto &[name, p] : endpoints(q))
             if (!e.contains(p.x, p.y))
-                throw Error(std::string(flag) + " " + pointText(p.x, p.y) + " (" +
+                throw Error(name + " " + pointText(p.x, p.y) + " (" +
                             (e.geographic ? "lon,lat" : "x,y") + ") lies outside the grid of '" + list.front() + "' (" + e.text() +
                             (e.geographic ? ")" : "; start and goal are in the file's own x/y units)"));
         if (!q.departure.empty() && !isNumber(q.departure))
@@ -234,7 +248,7 @@ LoadedForecast loadForecast(const std::vector<std::string> &list, const MissionS
                 }
                 catch (const Error &e)
                 {
-                    throw Error("--departure " + q.departure + ": " + e.what());
+                    throw Error(named(q, "departure.time") + " " + q.departure + ": " + e.what());
                 }
                 o.departure.clear();  // departs at field time 0, which is that date
             }
@@ -243,7 +257,7 @@ LoadedForecast loadForecast(const std::vector<std::string> &list, const MissionS
     }
     catch (const Error &e)
     {
-        throw Error(flagMessage(e.what(), q));
+        throw Error(callerMessage(e, q, o));
     }
     return nc;
 }
@@ -259,18 +273,19 @@ void checkEndpoints(const LoadedForecast &nc, const ForecastInput &q, const std:
     // (Above the first layer is the surface layer's value, as forecasts put their first layer just below it.)
     const Region extent = grid->extent();
     if (extent.zMax > extent.zMin && q.depth > extent.zMax)
-        throw Error("--depth " + text::number(q.depth) + " m lies below the deepest layer of '" + file + "' (" +
+        throw Error(named(q, "vehicle.depth") + " " + text::number(q.depth) + " m lies below the deepest layer of '" +
+                    file + "' (" +
                     text::number(extent.zMax) + " m)");
     const Point2 start = nc.toLocal({q.start.x, q.start.y});
     const Point2 goal = nc.toLocal({q.goal.x, q.goal.y});
-    for (const auto &[flag, a, b, x, y] :
-         {std::tuple<const char *, double, double, double, double>{"--start", q.start.x, q.start.y, start.x, start.y},
-          std::tuple<const char *, double, double, double, double>{"--goal", q.goal.x, q.goal.y, goal.x, goal.y}})
+    using Endpoint = std::tuple<std::string, double, double, double, double>;
+    for (const auto &[name, a, b, x, y] : {Endpoint{named(q, "start"), q.start.x, q.start.y, start.x, start.y},
+                                           Endpoint{named(q, "goal"), q.goal.x, q.goal.y, goal.x, goal.y}})
     {
         if (!std::isfinite(x) || !std::isfinite(y) || !grid->covers(x, y))
         {
             // the loaded nodes' own bounds, in the file's coordinates (longitudes from west to east)
-            throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") lies outside the grid of '" +
+            throw Error(name + " " + pointText(a, b) + " (" + coords + ") lies outside the grid of '" +
                         file + "' (" + (geographic ? "lon " : "x ") + text::number(nc.lonMin) + ".." + text::number(nc.lonMax) +
                         (geographic ? ", lat " : ", y ") + text::number(nc.latMin) + ".." + text::number(nc.latMax) + ")");
         }
@@ -292,9 +307,9 @@ void checkEndpoints(const LoadedForecast &nc, const ForecastInput &q, const std:
                 nearest = "; the nearest water is " + text::number(ll.lon, 8) + "," + text::number(ll.lat, 8) + " (" +
                           coords + "), " +
                           (geographic ? text::number(d / 1000.0, 4) + " km" : text::number(d, 6)) +
-                          " away (--snap-to-water uses it)";
+                          " away (" + term(q, "safety.snap_to_water: true") + " uses it)";
             }
-            throw Error(std::string(flag) + " " + pointText(a, b) + " (" + coords + ") is on land in '" + file +
+            throw Error(name + " " + pointText(a, b) + " (" + coords + ") is on land in '" + file +
                         "' " + at + (why.empty() ? "" : "; the forecast's land is where it has " + why) + nearest);
         }
     }
@@ -306,11 +321,13 @@ void checkDeparture(const LoadedForecast &nc, const ForecastInput &q)
     const double tDep = nc.departureTime;
     // a steady field (no time dimension, a single record, --steady-record) is the same at every time
     if (!nc.steady && (tDep < nc.forecastBegin || tDep > nc.forecastEnd))
-        throw Error("--departure " + q.departure + " is outside the forecast (" + nc.isoTime(nc.forecastBegin) +
+        throw Error(named(q, "departure.time") + " " + q.departure + " is outside the forecast (" +
+                    nc.isoTime(nc.forecastBegin) +
                     " to " + nc.isoTime(nc.forecastEnd) + ")");
     if (!nc.steady && tDep >= nc.forecastEnd && q.current.horizonPolicy == BeyondForecast::Refuse)
-        throw Error("--departure " + (q.departure.empty() ? std::string("(default)") : q.departure) +
-                    " is the last forecast time: no time is left to travel (use an earlier departure or --beyond hold)");
+        throw Error(named(q, "departure.time") + " " + (q.departure.empty() ? std::string("(default)") : q.departure) +
+                    " is the last forecast time: no time is left to travel (use an earlier departure or " +
+                    term(q, "current.horizon: hold_last") + ")");
 }
 
 /// The forecast's calendar, the departure, the vehicle and the outputs (every format) of the mission.
@@ -332,9 +349,7 @@ void finishSpec(MissionSpec &m, const LoadedForecast &nc, const std::optional<do
     m.vehicle.speed = q.speed;
     m.vehicle.depth = q.depth;
     if (q.depth > 0.0)
-        m.marks["vehicle.depth"] = SourceMark{"--depth", 0, Origin::Flag};
-    m.travel.speed = q.speed;
-    m.travel.depth = q.depth;
+        m.marks["vehicle.depth"] = markOf(q, "vehicle.depth");
     m.travel.eps = 1.0;  // one second per integration step on trips of hours to days (as the example mission)
     m.outputs.files = {OutputFormatId::Summary, OutputFormatId::Path, OutputFormatId::Csv, OutputFormatId::GeoJson,
                        OutputFormatId::Goto, OutputFormatId::Map};
@@ -351,9 +366,9 @@ MissionSpec forecastMission(const ForecastInput &q)
     for (std::size_t k = 1; k < files.size(); ++k)
         file += "," + files[k];
     if (!(q.speed > 0.0) || !std::isfinite(q.speed))
-        throw Error("--speed must be > 0 (m/s)");
+        throw Error(named(q, "vehicle.speed") + " must be > 0 (m/s)");
     if (!(q.depth >= 0.0))
-        throw Error("--depth must be >= 0 (metres, positive down)");
+        throw Error(named(q, "vehicle.depth") + " must be >= 0 (metres, positive down)");
 
     MissionSpec m = forecastSpec(q, files, file);
     const std::vector<std::string> list = m.current.forecastFiles();

@@ -94,8 +94,6 @@ void readVehicleAndTravel(const Reader &r, const YAML::Node &root, MissionSpec &
     // eps is absolute in the field's time unit: 1 s for forecasts in seconds, unless given.
     if (m.current.isForecast() && !(root["travel_time"] && root["travel_time"]["eps"]))
         m.travel.eps = 1.0;
-    m.travel.speed = m.vehicle.speed;
-    m.travel.depth = m.vehicle.depth;
     try
     {
         TravelTimeParams check = m.travel;
@@ -284,6 +282,14 @@ std::string SettingWords::operator()(const std::string &setting) const
     return it == words.end() ? setting : setting + ", " + it->second;
 }
 
+std::string SettingWords::givenName(const std::string &setting) const
+{
+    if (const auto it = given.find(setting); it != given.end())
+        return it->second;
+    const auto it = words.find(setting);
+    return it == words.end() ? setting : it->second;
+}
+
 std::string MissionSpec::term(const std::string &setting) const
 {
     return words ? (*words)(setting) : setting;
@@ -424,7 +430,6 @@ MissionSpec defaultGulfStreamMission()
     m.start.xy = {1.0, -3.0};
     m.goal.xy = {8.0, 3.0};
     m.vehicle.speed = 0.5;
-    m.travel.speed = 0.5;
     m.planner.horizon = 60.0;
     m.planner.goalTolerance = 1e-3;
     m.outputs.files = {OutputFormatId::Summary, OutputFormatId::Path, OutputFormatId::Csv, OutputFormatId::GeoJson,

@@ -1,4 +1,5 @@
 #include "ompl_glider/mission/MissionProblem.h"
+#include "ProblemParts.h"
 #include "../io/NumberText.h"
 #include "ompl_glider/current/EnsembleField.h"
 #include "ompl_glider/current/ShiftedTimeField.h"
@@ -32,14 +33,14 @@ namespace ompl_glider
 namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+}  // namespace
 
-std::string where(const MissionSpec &m, const SourceMark &mark = {})
+std::string sourcePlace(const MissionSpec &m, const SourceMark &mark)
 {
     if (!mark.file.empty() && mark.line > 0)
         return mark.file + ":" + std::to_string(mark.line) + ": ";
     return m.file + ": ";
 }
-}  // namespace
 
 double tripMarginKm(LonLat start, LonLat goal)
 {
@@ -58,7 +59,10 @@ std::map<ForecastOption, std::string> forecastFieldNames(const std::string &sect
             {ForecastOption::VelocityUnits, section + ".velocity_units"},
             {ForecastOption::TimeUnits, section + ".time_units"},
             {ForecastOption::SteadyRecord, section + ".steady_record"},
-            {ForecastOption::ZeroVelocityLand, section + ".zero_velocity_land"}};
+            {ForecastOption::ZeroVelocityLand, section + ".zero_velocity_land"},
+            {ForecastOption::Angle, v + "angle"},
+            {ForecastOption::Mask, v + "mask"},
+            {ForecastOption::DepthAverage, section + ".depth_average"}};
 }
 
 ForecastRequest forecastRequest(const MissionSpec &m)
@@ -199,115 +203,6 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     }
 }
 
-void MissionProblem::buildField()
-{
-    const MissionSpec &m = spec_;
-    const CurrentFieldKind *kind = findCurrentFieldKind(m.current.type);
-    if (!kind)
-        throw Error(where(m, m.current.mark) + "field 'current.type': unknown '" + m.current.type +
-                    "' (expected one of " + currentFieldKindList() + ")");
-    if (!kind->gridded())
-    {
-        field_ = makeAnalyticField(m.current.type, m.current.parameters);
-        if (m.projection.set)
-            projection_ = std::make_shared<LocalProjection>(m.projection.lon0, m.projection.lat0);
-        projectionScale_ = m.lengthUnitMetres;
-        return;
-    }
-    LoadedForecast forecast;
-    try
-    {
-        forecast = kind->source->load(forecastRequest(m));
-    }
-    catch (const Error &e)
-    {
-        // a mission file's current section (the command line's forecastMission() words its own messages)
-        if (m.current.mark.line > 0)
-            throw Error(where(m, m.current.mark) + e.what());
-        throw;
-    }
-    checkDepthAxis(forecast);
-    field_ = forecast.field;
-    projection_ = forecast.projection;
-    projectionScale_ = 1.0;
-    xyScale_ = forecast.projection ? 1.0 : forecast.xyMetres;
-    forecastFiles_ = forecast.files;
-    forecastNotes_ = forecast.notes;
-    remoteSources_ = remoteFetchesOf(forecast.files);
-    if (forecast.wind)
-        fieldWord_ = "wind";
-}
-
-std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec &t, const std::string &field) const
-{
-    const MissionSpec &m = spec_;
-    // a command-line flag gave the source (--truth): name the flag, else the mission file's line and field
-    const std::string at = t.mark.namesItself() ? t.mark.file + ": "
-                                                             : where(m, t.mark) + "field '" + field + "': ";
-    const CurrentFieldKind *kind = findCurrentFieldKind(t.type);
-    if (!kind)
-        throw Error(at + "unknown type '" + t.type + "' (expected one of " + currentFieldKindList() + ")");
-    if (!kind->gridded())
-        return makeAnalyticField(t.type, t.parameters);
-    // Read like the forecast (same region and projection centre), every record of the region: its time axis may
-    // start at another date, so the trip's records are not known in its own time.
-    MissionSpec tm = m;
-    tm.current = t;
-    ForecastRequest o = forecastRequest(tm);
-    o.optionNames = forecastFieldNames(field);  // the source's settings are this section's
-    o.departure.clear();
-    o.horizon = std::numeric_limits<double>::infinity();
-    if (projection_)
-    {
-        o.refLon = projection_->lon0();
-        o.refLat = projection_->lat0();
-    }
-    LoadedForecast f;
-    try
-    {
-        f = kind->source->load(o);
-    }
-    catch (const Error &e)
-    {
-        throw Error(at + e.what());
-    }
-    if (!f.projection != !projection_)
-        throw Error(at + (projection_ ? "it has no longitude/latitude but the forecast has"
-                                      : "it has longitude/latitude but the forecast is Cartesian"));
-    // Field time 0 of each file is its first time: shifted so that both are asked at the same date.
-    double shift = 0.0;
-    if (m.fileCalendar && f.dated && !f.steady)
-    {
-        if (f.calendar != m.fileCalendar->calendar)
-            throw Error(at + "its calendar (" + calendarName(f.calendar) + ") differs from the forecast's (" +
-                        calendarName(m.fileCalendar->calendar) + ")");
-        shift = m.fileCalendar->originSeconds - f.originSeconds;
-    }
-    else if (m.fileCalendar && !f.dated && !f.steady)
-        throw Error(at + "its time axis has no dates ('<unit> since <date>') but the forecast's has: the two cannot "
-                         "be aligned");
-    return shift == 0.0 ? f.field : std::make_shared<ShiftedTimeField>(f.field, shift);
-}
-
-void MissionProblem::buildMembers()
-{
-    const std::vector<CurrentSpec> &members = spec_.current.members;
-    if (members.empty())
-        return;
-    members_.push_back(field_);  // the first member, read as the forecast
-    for (std::size_t i = 1; i < members.size(); ++i)
-        members_.push_back(loadSource(members[i], "current.ensemble[" + std::to_string(i) + "]"));
-    checkCommonTime();
-    field_ = std::make_shared<EnsembleMeanField>(members_);
-}
-
-void MissionProblem::buildTruth()
-{
-    const MissionSpec &m = spec_;
-    if (m.execution.enabled && m.execution.truth)
-        truth_ = loadSource(*m.execution.truth, "execution.truth");
-}
-
 void MissionProblem::buildBox()
 {
     const MissionSpec &m = spec_;
@@ -355,7 +250,7 @@ void MissionProblem::buildBox()
         box_.yMax = e.yMax;
     }
     else
-        throw Error(where(m) + "field 'region': missing");
+        throw Error(sourcePlace(m) + "field 'region': missing");
     box_.tMin = field_->timeBegin();
     box_.tMax = field_->timeEnd();
     box_.zMin = 0.0;
@@ -372,142 +267,6 @@ void MissionProblem::buildBox()
             std::snprintf(point, sizeof point, "(%g, %g)", p.x, p.y);
             throw Error(m.place(name) + ": " + point + " lies outside the planning region (" + box + ")");
         }
-}
-
-std::vector<Point2> MissionProblem::ring(const std::vector<std::pair<double, double>> &pts, bool geographic,
-                                         const std::string &what) const
-{
-    std::vector<Point2> out;
-    for (const auto &[a, b] : pts)
-    {
-        PointSpec p;
-        p.geographic = geographic;
-        p.xy.x = p.lonLat.lon = a;
-        p.xy.y = p.lonLat.lat = b;
-        out.push_back(localPoint(p, what));
-    }
-    return out;
-}
-
-void MissionProblem::buildRegions()
-{
-    const MissionSpec &m = spec_;
-    auto polygon = [&](const PolygonSpec &p, const std::string &kind) {
-        try
-        {
-            // every polygon GEOS calls valid (a hole may touch its outer ring at a point), checked as given
-            auto given = [](const std::vector<std::pair<double, double>> &r) {
-                std::vector<Point2> out;
-                for (const auto &[a, b] : r)
-                    out.push_back({a, b});
-                return out;
-            };
-            std::vector<std::vector<Point2>> holes;
-            for (const auto &h : p.holes)
-                holes.push_back(given(h));
-            const std::string fault = polygonFault(given(p.points), holes);
-            if (!fault.empty())
-                throw Error("an invalid polygon: " + fault + (p.geographic ? " (lon lat)" : " (x y as given)"));
-            holes.clear();
-            for (const auto &h : p.holes)
-                holes.push_back(ring(h, p.geographic, p.name));
-            std::vector<Point2> outer = ring(p.points, p.geographic, p.name);
-            polygons_.push_back({p.name, kind, outer, false, {}});
-            return Polygon(outer, holes, p.name, RingCheck::validated);
-        }
-        catch (const Error &e)
-        {
-            throw Error(where(m, p.mark) + "forbidden region '" + p.name + "': " + e.what());
-        }
-    };
-    auto regions = std::make_shared<ForbiddenRegions>();
-    for (const auto &o : m.forbidden.obstacles)
-        regions->add(std::make_shared<StaticRegion>(o.polygon.name, polygon(o.polygon, o.kind), o.kind));
-    if (!m.forbidden.coastline.empty())
-    {
-        // the coastline's land polygons that meet the box (with a margin of a tenth of its size)
-        const SourceMark &mk = m.forbidden.coastlineMark;
-        const std::string at = mk.namesItself() ? mk.file + ": " : where(m, mk);
-        if (!isGeographic())
-            throw Error(at + "forbidden.coastline: the coastline is in lon/lat; give a 'projection' in the mission");
-        const std::vector<LandPolygon> land = readCoastline(at);
-        for (std::size_t k = 0; k < land.size(); ++k)
-        {
-            PolygonSpec p;
-            p.name = land[k].name;
-            p.geographic = true;
-            p.mark = m.forbidden.coastlineMark;
-            for (const LonLat &g : land[k].outer)
-                p.points.emplace_back(g.lon, g.lat);
-            for (const auto &h : land[k].holes)
-            {
-                p.holes.emplace_back();
-                for (const LonLat &g : h)
-                    p.holes.back().emplace_back(g.lon, g.lat);
-            }
-            try
-            {
-                regions->add(std::make_shared<StaticRegion>(p.name, polygon(p, "land"), "land"));
-                polygons_.back().coastline = true;
-            }
-            catch (const Error &e)
-            {
-                // (polygon() names the forecast's file for a flag: name the coastline file and the feature)
-                std::string what = e.what();
-                const std::string head = where(m, p.mark) + "forbidden region '" + p.name + "': ";
-                if (what.rfind(head, 0) == 0)
-                    what = what.substr(head.size());
-                throw Error(at + "coastline file '" + m.forbidden.coastline + "', feature '" + p.name + "': " + what);
-            }
-        }
-    }
-    for (const auto &t : m.forbidden.timeWindows)
-    {
-        std::vector<Interval> w;
-        for (const auto &p : t.windows)
-            w.push_back({p.first, p.second});
-        try
-        {
-            regions->add(std::make_shared<TimeWindowedZone>(t.polygon.name, polygon(t.polygon, "closure"), w));
-            polygons_.back().windows = t.windows;
-        }
-        catch (const Error &e)
-        {
-            throw Error(where(m, t.polygon.mark) + e.what());
-        }
-    }
-    for (const auto &i : m.forbidden.ice)
-    {
-        Polygon shape = polygon(i.polygon, "ice");
-        try
-        {
-            if (i.carried)
-            {
-                // Advected over the mission's time span: from the earliest departure (or t_ref) to the latest
-                // departure plus five straight-line crossings of the box at the vehicle speed, within the field's time.
-                const Point2 ref = shape.outer().front();
-                const double diag = std::hypot(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
-                const double firstDep = m.departure.window ? m.departure.begin : m.departure.time;
-                const double lastDep = m.departure.window ? m.departure.end : m.departure.time;
-                double t0 = std::min(i.tRef, firstDep), t1 = std::max(i.tRef, lastDep + 5.0 * diag / m.vehicle.speed);
-                t0 = std::max(t0, field_->timeBegin());
-                t1 = std::min(t1, field_->timeEnd());
-                regions->add(std::make_shared<IceZone>(i.polygon.name, shape, i.tRef, *field_, ref, t0,
-                                                       std::max(t1, t0), i.maxSubmergedTime));
-            }
-            else
-                regions->add(
-                    std::make_shared<IceZone>(i.polygon.name, shape, i.tRef, i.vx, i.vy, i.maxSubmergedTime));
-        }
-        catch (const Error &e)
-        {
-            throw Error(where(m, i.polygon.mark) + e.what());
-        }
-    }
-    checkGeoJsonNearBox();
-    addSafety(*regions);
-    if (regions->size() > 0)
-        environment_ = regions;
 }
 
 bool MissionProblem::isGeographic() const
@@ -551,7 +310,8 @@ GliderProblem MissionProblem::gliderProblem(double tDep, double speed) const
     GliderProblem p;
     p.field = field_;
     p.travel = spec_.travel;
-    p.travel.speed = speed;
+    p.travel.speed = speed;  // the vehicle's (MissionSpec::travel holds the integration's settings only)
+    p.travel.depth = spec_.vehicle.depth;
     p.environment = environment_;
     p.xMin = box_.xMin;
     p.xMax = box_.xMax;
@@ -627,6 +387,7 @@ std::shared_ptr<const DiveProfileTravelTime> MissionProblem::diveProfiles(double
     }
     TravelTimeParams t = spec_.travel;
     t.speed = speed;
+    t.depth = spec_.vehicle.depth;
     return std::make_shared<DiveProfileTravelTime>(field_, t, spec_.dive.params, bathymetry, spec_.dive.threads);
 }
 }  // namespace ompl_glider

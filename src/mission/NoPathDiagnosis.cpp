@@ -156,7 +156,7 @@ std::string enclosure(const MissionProblem &problem, double t0, bool *byModelLan
     h = std::max(h, std::sqrt((box.xMax - box.xMin) * (box.yMax - box.yMin) / 250000.0));  // at most 250000 points
     if (!(h > 0.0) || !std::isfinite(h))
         return "";
-    const double z = m.travel.depth;
+    const double z = m.vehicle.depth;
     const Environment *env = problem.getEnvironment() && problem.getEnvironment()->isStatic() ?
                                  problem.getEnvironment().get() : nullptr;
     const Point2 s = problem.getStart(), g = problem.getGoal();
@@ -206,7 +206,7 @@ void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
     if (!enclosed.empty())
         findings.push_back(enclosed);
     Region window = problem.getBox();
-    window.zMin = window.zMax = m.travel.depth;
+    window.zMin = window.zMax = m.vehicle.depth;
     window.tMin = tDep;
     window.tMax = tDep + gp.horizon;
     const double cMax = problem.getField()->maxSpeed(window);

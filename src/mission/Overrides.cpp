@@ -125,7 +125,7 @@ void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
 {
     if (o.speed)
     {
-        m.vehicle.speed = m.travel.speed = finite(*o.speed, true);
+        m.vehicle.speed = finite(*o.speed, true);
         mark(m, "vehicle.speed", o.speed->source, o.origin);
     }
     if (o.departure)
@@ -278,21 +278,18 @@ void applyOutputs(const MissionOverrides &o, MissionSpec &m)
     if (((o.isochrones && o.isochrones->value) || o.isochroneInterval) && !m.outputs.wants(OutputFormatId::Isochrones))
         m.outputs.files.push_back(OutputFormatId::Isochrones);
 }
-/// A length of @p v (a number in units of @p metresPerUnit, or with a unit), >= 0, refused naming its source.
+/// A length of @p v (a number in units of @p metresPerUnit, or with a unit), refused naming its source when it is
+/// none; its range is checked with the mission's safety (MissionProblem), as a mission file's is.
 double lengthOf(const Given<std::string> &v, double metresPerUnit, bool unitKnown)
 {
-    double x = 0.0;
     try
     {
-        x = parseLength(v.value, metresPerUnit, unitKnown);
+        return parseLength(v.value, metresPerUnit, unitKnown);
     }
     catch (const Error &e)
     {
         throw Error(v.source + ": " + e.what());
     }
-    if (!(x >= 0.0) || !std::isfinite(x))
-        throw Error(v.source + ": expected a length >= 0, got '" + v.value + "'");
-    return x;
 }
 
 void applySafety(const MissionOverrides &o, MissionSpec &m)
@@ -357,14 +354,7 @@ CurrentSpec truthOf(const Given<std::string> &t, const MissionSpec &m, Origin or
         return c;
     }
     const CurrentFieldKind *kind = findCurrentFieldKind(m.current.type);
-    std::string names;
-    std::set<std::string> known;
-    if (kind)
-        for (const auto &[name, value] : kind->parameters)
-        {
-            names += (names.empty() ? "" : ", ") + name;
-            known.insert(name);
-        }
+    const std::string names = kind ? parameterNameList(*kind) : std::string();
     std::size_t from = 0;
     while (from <= t.value.size())
     {
@@ -373,7 +363,7 @@ CurrentSpec truthOf(const Given<std::string> &t, const MissionSpec &m, Origin or
         from = end + 1;
         const std::size_t eq = item.find('=');
         const std::string name = eq == std::string::npos ? item : item.substr(0, eq);
-        if (eq == std::string::npos || !known.count(name))
+        if (eq == std::string::npos || !kind || !hasParameter(*kind, name))
             throw Error(t.source + ": expected 'forecast' or NAME=VALUE,... with the " + m.current.type +
                         "'s parameters (" + names + "), got '" + item + "'");
         const std::string number = item.substr(eq + 1);
@@ -508,7 +498,6 @@ std::vector<std::pair<std::string, std::string>> overridableFields(const Mission
         {"planner.refinement", m.planner.refinement ? "true" : "false"},
         {"planner.global_check", m.planner.globalCheck ? "true" : "false"},
         {"vehicle.speed", num(m.vehicle.speed)},
-        {"travel.speed", num(m.travel.speed)},
         {"departure.time", num(m.departure.time)},
         {"departure.window", m.departure.window ? "true" : "false"},
         {"start", point(m.start)},

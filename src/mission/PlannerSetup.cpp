@@ -120,9 +120,11 @@ RefinerParams refinerParams(const MissionSpec &m)
     {
         char *end = nullptr;
         const double v = std::strtod(it->second.c_str(), &end);
-        if (end == it->second.c_str() || *end != '\0' || !(v >= 1.0 && v <= 1e8) || v != std::floor(v))
-            throw Error(parameterPlace(m, it->first) + ": expected an integer in 1..100000000, got '" + it->second +
-                        "'");
+        const bool inRange = v >= kMinRefinerEvaluations && v <= kMaxRefinerEvaluations;
+        if (end == it->second.c_str() || *end != '\0' || !inRange || v != std::floor(v))
+            throw Error(parameterPlace(m, it->first) + ": expected an integer in " +
+                        text::number(kMinRefinerEvaluations) + ".." + text::number(kMaxRefinerEvaluations) +
+                        ", got '" + it->second + "'");
         rp.maxEvaluations = static_cast<unsigned>(v);
     }
     return rp;

@@ -393,7 +393,6 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
             result.profileSet = makeDiveProfiles(m.dive.params);
         result.diveTravelTime = w.travelTime;
     }
-    result.keepOff = m.safety.keepOff;
     result.safetyNote = problem.safetyNote();
     result.forecastNotes = problem.forecastNotes();
     for (const std::string &note : problem.endpointNotes())

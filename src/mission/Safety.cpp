@@ -115,7 +115,7 @@ void MissionProblem::addSafety(ForbiddenRegions &regions)
         throw Error(at(m, "safety.min_depth") + "the depth limit must be finite and >= 0 m, got " +
                     text::number(m.safety.minDepth));
     // land's boundary: the field's land cells, the land polygons (coastline, islands, land obstacles)
-    std::vector<Segment2> edges = field_->landBoundary(m.travel.depth);
+    std::vector<Segment2> edges = field_->landBoundary(m.vehicle.depth);
     for (const auto &r : regions.regions())
         if (const auto *s = dynamic_cast<const StaticRegion *>(r.get()))
             if (s->kind() == "land" || s->kind() == "island")

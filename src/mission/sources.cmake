@@ -10,6 +10,8 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/loader/Fleet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Waypoints.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ProblemField.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ProblemLand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Safety.cpp
   ${CMAKE_CURRENT_LIST_DIR}/FieldChecks.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Endpoints.cpp

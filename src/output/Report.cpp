@@ -231,9 +231,9 @@ void printReport(std::ostream &out, const MissionResult &r)
                 out << format(" at %.5f, %.5f", r.closestLandLonLat->lon, r.closestLandLonLat->lat);
             else
                 out << " at (" << num(r.closestLand.where.x) << ", " << num(r.closestLand.where.y) << ")";
-            if (r.keepOff > 0.0)
+            if (const double keepOff = m.safety.keepOff; keepOff > 0.0)
                 out << " (keep-off "
-                    << (m.physicalUnits().length ? format("%.3f km", r.keepOff * mpu / 1000.0) : num(r.keepOff)) << ")";
+                    << (m.physicalUnits().length ? format("%.3f km", keepOff * mpu / 1000.0) : num(keepOff)) << ")";
             out << "\n";
         }
         out << "Straight line:      "

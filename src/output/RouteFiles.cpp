@@ -315,7 +315,7 @@ bool legAllowed(const MissionResult &r, const MissionProblem *problem, std::size
         return true;
     const MissionWaypoint &p = r.waypoints[a], &q = r.waypoints[b];
     if (!problem->getField()->segmentInWater(p.position.x, p.position.y, q.position.x, q.position.y,
-                                             r.spec.travel.depth))
+                                             r.spec.vehicle.depth))
         return false;
     const auto &env = problem->getEnvironment();
     return !env || env->legFree(p.position.x, p.position.y, p.time, q.position.x, q.position.y, q.time);

@@ -85,7 +85,7 @@ const Range &rangeOf(const std::string &name)
         {"coarse_factor", {0.0, 1.0, 64.0}},         // 0 automatic, 1 off
         {"corridor_blocks", {1.0, 1.0, 1000.0}},
         {"zermelo_steps", {1.0, 1.0, 10000.0}},
-        {"refiner_max_evaluations", {1.0, 1000.0, 100000000.0}}};
+        {"refiner_max_evaluations", {kMinRefinerEvaluations, 1000.0, kMaxRefinerEvaluations}}};
     return ranges.at(name);
 }
 

@@ -461,8 +461,8 @@ nc_case("flag-steady-record-out-of-range", forecast(), "--steady-record 3 is out
 nc_case("flag-steady-record-negative", forecast(), "--steady-record", extra=("--steady-record", "-1"))
 nc_case("flag-steady-record-text", forecast(), "--steady-record", extra=("--steady-record", "first"))
 nc_case("flag-angle-var-missing", forecast(), "no grid angle variable 'theta'", extra=("--angle-var", "theta"))
-nc_case("flag-angle-var-not-on-grid", forecast(), "grid angle variable 'time' (--angle-var, current.variables.angle) "
-        "is not on the grid", extra=("--angle-var", "time"))
+nc_case("flag-angle-var-not-on-grid", forecast(), "grid angle variable 'time' (--angle-var) is not on the grid",
+        extra=("--angle-var", "time"))
 nc_case("flag-time-units-without-since", forecast(), "--time-units", extra=("--time-units", "hours"))
 nc_case("flag-time-units-bad-date", forecast(), "--time-units 'days since the flood'",
         extra=("--time-units", "days since the flood"))

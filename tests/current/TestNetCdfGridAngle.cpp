@@ -198,7 +198,7 @@ TEST(NetCdfGridAngle, AmbiguousGridsAreRefused)
         EXPECT_NE(m.find("no grid angle variable"), std::string::npos) << m;
         EXPECT_NE(m.find("'lon_rho'/'lat_rho' gives no clear angle: at (j, i) = (0, 0)"), std::string::npos) << m;
         EXPECT_NE(m.find("j direction lies -"), std::string::npos) << m;
-        EXPECT_NE(m.find("--angle-var none"), std::string::npos) << m;
+        EXPECT_NE(m.find("NetCdfCurrentOptions::angleName 'none'"), std::string::npos) << m;
     }
     // the way out the message names: the velocities declared eastward/northward
     NetCdfCurrentOptions none;

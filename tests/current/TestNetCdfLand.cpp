@@ -301,7 +301,7 @@ TEST(NetCdfLand, AGivenMaskMustExistAndFitTheGrid)
         const std::string msg = e.what();
         EXPECT_NE(msg.find("mask variable 'mask_u'"), std::string::npos) << msg;
         EXPECT_NE(msg.find("does not fit"), std::string::npos) << msg;
-        EXPECT_NE(msg.find("--mask-var"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("NetCdfCurrentOptions::maskName"), std::string::npos) << msg;
         EXPECT_NE(msg.find("xi_u = 20"), std::string::npos) << msg;
         EXPECT_NE(msg.find("staggered_mask.nc"), std::string::npos) << msg;
     }

@@ -74,7 +74,6 @@ TEST(Fleet, ReadWithEachGlidersOwnValuesAndPlaces)
     EXPECT_EQ(west.start.xy.x, 9.0);
     EXPECT_EQ(west.goal.xy.y, 1.0);
     EXPECT_EQ(west.vehicle.speed, 0.3);
-    EXPECT_EQ(west.travel.speed, 0.3);
     EXPECT_EQ(west.departure.time, 1.0);
     EXPECT_EQ(west.outputs.directory, "/tmp/fl/out/west");
     EXPECT_EQ(west.place("start"), "m.yaml:10: field 'start'");

@@ -147,10 +147,10 @@ TEST(ForecastLand, StartOnLandNamesTheNearestWaterAndSnapsToItOnRequest)
     catch (const Error &e)
     {
         const std::string m = e.what();
-        EXPECT_NE(m.find("--start -78.4,25.6 (lon,lat) is on land"), std::string::npos) << m;
+        EXPECT_NE(m.find("start -78.4,25.6 (lon,lat) is on land"), std::string::npos) << m;
         EXPECT_NE(m.find("the nearest water is -78.80"), std::string::npos) << m;
         EXPECT_NE(m.find(",25.6"), std::string::npos) << m;
-        EXPECT_NE(m.find("km away (--snap-to-water uses it)"), std::string::npos) << m;
+        EXPECT_NE(m.find("km away (safety.snap_to_water: true uses it)"), std::string::npos) << m;
     }
     in.snapToWater = true;
     MissionSpec spec = forecastMission(in);

@@ -67,7 +67,7 @@ TEST(MissionFile, ExamplesLoad)
     EXPECT_DOUBLE_EQ(*g.epoch, 1780272000.0);
     EXPECT_EQ(g.outputs.gotoNumber, 11);
     EXPECT_EQ(g.speeds, (std::vector<double>{0.4, 0.5, 0.6}));
-    EXPECT_DOUBLE_EQ(g.travel.speed, 0.5);
+    EXPECT_DOUBLE_EQ(g.vehicle.speed, 0.5);
 
     const MissionSpec i = loadMission(kExamples + "islands_ice.yaml");
     ASSERT_EQ(i.forbidden.obstacles.size(), 2u);

@@ -150,6 +150,7 @@ def test_execution_keywords_give_the_flags_answers(tmp_path):
 @pytest.mark.parametrize("keyword,value,says", [
     ("keep_off", "2 parsecs", "expected a length"),
     ("keep_off", -1.0, "expected a length >= 0"),
+    ("min_depth", "-5 m", "expected a length >= 0"),
     ("min_depth", "deep", "expected a length"),
     ("bathymetry", 42, "expected a text"),
     ("bathymetry_variable", "elevation", "needs a bathymetry file (safety.bathymetry, bathymetry=)"),
@@ -170,3 +171,31 @@ def test_a_bad_value_of_each_keyword_names_the_keyword(keyword, value, says):
     message = str(e.value)
     assert message.startswith(f"plan(): keyword '{keyword}'"), message
     assert says in message, message
+
+
+@pytest.mark.parametrize("keywords,flags,names", [
+    (dict(goal=(-70.0, 18.0)), ["--goal=-70,18"], ("plan(): keyword 'goal'", "--goal")),
+    (dict(departure="2027-01-01T00:00:00Z"), ["--departure", "2027-01-01T00:00:00Z"],
+     ("plan(): keyword 'departure'", "--departure")),
+    (dict(region=(-79.0, 19.0, -77.0, 18.0)), ["--region=-79,19,-77,18"], ("plan(): keyword 'region'", "--region")),
+])
+def test_forecast_errors_name_the_keyword_in_python_and_the_flag_on_the_command_line(keywords, flags, names):
+    """forecastMission() words its refusals in the caller's terms (ForecastInput::words): no flag reaches Python."""
+    trip = dict(start=START, goal=GOAL) | keywords
+    with pytest.raises(ompl_glider.Error) as e:
+        ompl_glider.plan(field=ompl_glider.Field.netcdf(CARIBBEAN), **trip)
+    message = str(e.value)
+    assert message.startswith(names[0]) and "--" not in message, message
+    args = [a for a in TRIP if not any(a.startswith(f.split("=")[0]) for f in flags)]
+    rc, out, err, _ = glider_plan(*args, *flags)
+    assert rc == 2 and err.startswith("glider_plan: " + names[1]), err
+    # the same words after the name
+    assert err.split(names[1], 1)[1].splitlines()[0] == message.split(names[0], 1)[1]
+
+
+def test_a_forecast_variable_missing_names_its_keyword():
+    with pytest.raises(ompl_glider.Error) as e:
+        ompl_glider.plan(field=ompl_glider.Field.netcdf(CARIBBEAN, variables={"u": "nope"}), start=START, goal=GOAL)
+    message = str(e.value)
+    assert "no variable 'nope'" in message and "Field.netcdf(): keyword 'variables' (u)" in message, message
+    assert "--" not in message, message

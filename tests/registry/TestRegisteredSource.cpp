@@ -279,7 +279,7 @@ TEST(RegisteredSource, TheCommandLinesForecastMissionTakesItByName)
     }
     catch (const Error &e)
     {
-        EXPECT_NE(std::string(e.what()).find("--goal 25000,12000 (x,y) lies outside the grid"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("goal 25000,12000 (x,y) lies outside the grid"), std::string::npos)
             << e.what();
     }
     q.current.file = writeGrid("land_cli.csv", {{16, 11}, {17, 11}, {16, 12}, {17, 12}});
@@ -292,7 +292,7 @@ TEST(RegisteredSource, TheCommandLinesForecastMissionTakesItByName)
     catch (const Error &e)
     {
         const std::string what = e.what();
-        EXPECT_NE(what.find("--goal 17000,12000 (x,y) is on land"), std::string::npos) << what;
+        EXPECT_NE(what.find("goal 17000,12000 (x,y) is on land"), std::string::npos) << what;
         EXPECT_NE(what.find("rows of '" + q.current.file + "' without u and v"), std::string::npos) << what;
         EXPECT_NE(what.find("the nearest water is"), std::string::npos) << what;
     }

@@ -55,6 +55,13 @@ const CurrentFieldKind *findCurrentFieldKind(const std::string &name);
 /// @brief The names of all kinds joined by @p separator.
 std::string currentFieldKindList(const std::string &separator = ", ");
 
+/// @brief True when the analytic flow @p kind has the parameter @p name.
+bool hasParameter(const CurrentFieldKind &kind, const std::string &name);
+
+/// @brief The parameters of @p kind by name, comma-separated ("B0, c, k, omega, eps, L"): what a message about an
+/// unknown parameter lists.
+std::string parameterNameList(const CurrentFieldKind &kind);
+
 /// @brief The names of the gridded kinds joined by @p separator ("netcdf").
 std::string griddedKindList(const std::string &separator = ", ");
 

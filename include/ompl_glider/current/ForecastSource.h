@@ -40,6 +40,10 @@ enum class ForecastOption
     Departure,         ///< the departure
     MaxDepth,          ///< the glider's deepest depth
     ZeroVelocityLand,  ///< still nodes taken as land
+    Region,            ///< the region to load
+    Angle,             ///< the grid angle's variable
+    Mask,              ///< the land/sea mask's variable
+    DepthAverage,      ///< the depth average's bounds
 };
 
 /// @brief What a mission asks of a gridded source: where the forecast is, how to read it, and which part (the

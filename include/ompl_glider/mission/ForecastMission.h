@@ -39,6 +39,10 @@ struct ForecastInput
     /// a start or goal on the forecast's land is moved to the nearest water (MissionSpec::safety.snapToWater); else
     /// it is refused, the message naming the nearest water
     bool snapToWater{false};
+    /// How the caller names the settings in messages and marks ("start" -> "--start" on the command line,
+    /// "plan(): keyword 'start'" in Python; MissionSpec::words of the mission made); null: by their mission fields,
+    /// as values the calling program gave (Origin::Program)
+    std::shared_ptr<const SettingWords> words;
 };
 
 /// @brief The MissionSpec of a forecast, the same as a mission file with the same current, region, start, goal,
@@ -48,6 +52,7 @@ struct ForecastInput
 /// dimension, with a single record or with steadyRecord, takes any departure), and to convert the departure; sets
 /// the outputs to every format. The planner settings are the defaults of
 /// PlannerSpec (grid size automatic): change them in the returned spec. Writes nothing.
-/// @throws Error with a one-line message naming the input (as its command-line flag), file or variable at fault.
+/// @throws Error with a one-line message naming the input (in the caller's words, ForecastInput::words), file or
+/// variable at fault.
 MissionSpec forecastMission(const ForecastInput &input);
 }  // namespace ompl_glider

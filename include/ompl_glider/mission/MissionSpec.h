@@ -34,7 +34,8 @@ enum class Origin : std::uint8_t
 {
     File = 0,
     Flag,
-    Keyword
+    Keyword,
+    Program  ///< the calling program through the C++ API (ForecastInput without SettingWords)
 };
 
 /// @brief Where a value was given.
@@ -58,6 +59,13 @@ struct SourceMark
 struct SettingWords
 {
     std::map<std::string, std::string> words;  ///< by setting
+    /// How the front end names a value it gave for a setting ("start" -> "--start", "plan(): keyword 'start'");
+    /// where missing, the word of `words`, else the setting
+    std::map<std::string, std::string> given;
+    Origin origin{Origin::Flag};  ///< what the front end's values are: flags or keywords
+
+    /// @brief How the front end names a value it gave for @p setting (see `given`).
+    std::string givenName(const std::string &setting) const;
 
     /// @brief @p setting and the front end's word for it ("planner.time_limit, --time-limit"), else @p setting.
     std::string operator()(const std::string &setting) const;
@@ -459,7 +467,9 @@ struct MissionSpec
     VisitOrder order{VisitOrder::Given};  ///< the via points' visiting order
     DepartureSpec departure;
     VehicleSpec vehicle;
-    TravelTimeParams travel;       ///< integration parameters (speed and depth are copied from vehicle)
+    /// The travel-time integration's settings (h, h_min, h_max, eps, tau, max step); its speed and depth are not
+    /// read: the vehicle's are flown (MissionProblem::gliderProblem() sets them)
+    TravelTimeParams travel;
     DiveSpec dive;
     ForbiddenSpec forbidden;
     SafetySpec safety;             ///< keep-off distance and depth limit

@@ -340,7 +340,6 @@ struct MissionResult
     /// planning units (NaN without land or path) and where; lonLat set when the mission is geographic
     LandApproach closestLand;
     std::optional<LonLat> closestLandLonLat;
-    double keepOff{0.0};      ///< the keep-off distance kept (MissionSpec::safety.keepOff)
     std::string safetyNote;   ///< what the depth limit read (MissionProblem::safetyNote())
     /// what the forecast's reading decided that a pilot should know (MissionProblem::forecastNotes()): a derived
     /// grid angle, land from zero velocities, planning on a frozen last field

@@ -17,6 +17,10 @@
 
 namespace ompl_glider
 {
+/// The range of RefinerParams::maxEvaluations a mission may give (planner.parameters.refiner_max_evaluations):
+/// stated here once, read by the pipeline and by the planners that declare the parameter.
+constexpr double kMinRefinerEvaluations = 1.0, kMaxRefinerEvaluations = 1e8;
+
 /// @brief Tunables of WaypointRefiner; the defaults suit paths of a few to a few tens of legs.
 struct RefinerParams
 {

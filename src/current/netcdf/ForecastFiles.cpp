@@ -81,7 +81,8 @@ JoinedAxis joinTimeAxes(const std::vector<std::string> &paths, const NetCdfCurre
 {
     if (opt.steadyRecord)
         throw Error("NetCdfCurrentOptions::steadyRecord given with " + std::to_string(paths.size()) +
-                    " NetCDF files: a steady record is one record of one file; give that file alone");
+                        " NetCDF files: a steady record is one record of one file; give that file alone",
+                    "NetCdfCurrentOptions::steadyRecord");
     JoinedAxis a;
     for (const std::string &p : paths)
     {
@@ -157,7 +158,8 @@ void checkGaps(const JoinedAxis &a, const AxisSelection &sel)
                         iso(a.originSeconds + a.times[c0], a.calendar) + " in the first, then " +
                         iso(a.originSeconds + a.times[c1], a.calendar) +
                         " in the second), more than twice the forecast's typical step of " + hoursText(step) +
-                        ": a file missing? Give it, or choose a departure and horizon that avoid the gap");
+                        ": a file missing? Give it, or choose a departure and horizon that avoid the gap",
+                        "NetCdfCurrentOptions::departure");
     }
 }
 

@@ -121,11 +121,12 @@ void findAngle(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
     {
         const auto v = f.findVar(opt.angleName);
         if (!v)
-            throw f.error("no grid angle variable '" + opt.angleName + "' (given as --angle-var, "
-                          "current.variables.angle)");
+            throw f.error("no grid angle variable '" + opt.angleName + "' (given as NetCdfCurrentOptions::angleName)",
+                          "NetCdfCurrentOptions::angleName");
         if (f.varDims(*v) != grid)
-            throw f.error("grid angle variable '" + opt.angleName + "' (--angle-var, current.variables.angle) is not "
-                          "on the grid of the velocities (" + dimText(f, grid[0]) + ", " + dimText(f, grid[1]) + ")");
+            throw f.error("grid angle variable '" + opt.angleName + "' (NetCdfCurrentOptions::angleName) is not on "
+                          "the grid of the velocities (" + dimText(f, grid[0]) + ", " + dimText(f, grid[1]) + ")",
+                          "NetCdfCurrentOptions::angleName");
         l.angleVar = *v;
     }
     else
@@ -145,8 +146,8 @@ void findAngle(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
                 if (f.varDims(var) != grid)  // (a 1-D angle on a 2-D grid would turn nothing, in silence)
                     throw f.error("grid angle variable '" + f.varName(var) + "' is not on the grid of the "
                                   "velocities (" + dimText(f, grid[0]) + ", " + dimText(f, grid[1]) +
-                                  "): give the grid's angle with --angle-var (current.variables.angle), or 'none' "
-                                  "when the velocities are east/north");
+                                  "): give the grid's angle with NetCdfCurrentOptions::angleName, or 'none' when "
+                                  "the velocities are east/north");
                 l.angleVar = var;
             }
         if (l.angleVar < 0)

@@ -333,11 +333,13 @@ int findMask(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, 
         const auto v = f.findVar(opt.maskName);
         if (!v)
             throw f.error("no mask variable '" + opt.maskName +
-                          "' (given as the land/sea mask: --mask-var, current.variables.mask)");
+                              "' (given as the land/sea mask: NetCdfCurrentOptions::maskName)",
+                          "NetCdfCurrentOptions::maskName");
         dims = fitToGrid(f, l, *v, h, z, t, why);
         if (!dims)
             throw f.error("mask variable '" + opt.maskName +
-                          "' (--mask-var, current.variables.mask) does not fit the velocities: " + why);
+                              "' (NetCdfCurrentOptions::maskName) does not fit the velocities: " + why,
+                          "NetCdfCurrentOptions::maskName");
         return *v;
     }
     std::vector<int> order;

@@ -32,7 +32,11 @@ const std::vector<std::pair<std::string, ForecastOption>> &readerFields()
         {"steadyRecord", ForecastOption::SteadyRecord},
         {"departure", ForecastOption::Departure},
         {"maxDepth", ForecastOption::MaxDepth},
-        {"zeroVelocityLand", ForecastOption::ZeroVelocityLand}};
+        {"zeroVelocityLand", ForecastOption::ZeroVelocityLand},
+        {"region", ForecastOption::Region},
+        {"angleName", ForecastOption::Angle},
+        {"maskName", ForecastOption::Mask},
+        {"depthAverage", ForecastOption::DepthAverage}};
     return fields;
 }
 
@@ -47,6 +51,17 @@ std::string joinNames(const std::vector<std::string> &names)
     for (std::size_t k = 0; k < names.size(); ++k)
         out += (k ? "/" : "") + (k && !prefix.empty() ? names[k].substr(prefix.size()) : names[k]);
     return out;
+}
+
+/// The setting at fault of a reader's error ("NetCdfCurrentOptions::timeUnits") in the caller's words; as it is
+/// when the caller has no name for it.
+std::string callerField(const std::string &field, const ForecastRequest &request)
+{
+    static const std::string tag = "NetCdfCurrentOptions::";
+    for (const auto &[name, option] : readerFields())
+        if (field == tag + name)
+            return request.optionName(option, field);
+    return field;
 }
 
 /// The reader's message with its option fields ("NetCdfCurrentOptions::uName/vName") in the caller's words.
@@ -140,7 +155,7 @@ std::string remoteNote(const RemoteFetch &f)
 }
 
 /// What a loaded forecast decided that a pilot should know, one sentence each.
-std::vector<std::string> readerNotes(const NetCdfCurrents &nc)
+std::vector<std::string> readerNotes(const NetCdfCurrents &nc, const ForecastRequest &r)
 {
     std::vector<std::string> notes;
     if (!nc.projection && nc.xyMetres != 1.0)
@@ -160,7 +175,8 @@ std::vector<std::string> readerNotes(const NetCdfCurrents &nc)
     if (nc.zeroLandNodes > 0)
         notes.push_back(std::to_string(nc.zeroLandNodes) + " of the " + loaded +
                         " nodes loaded are land only because u = v = 0 in every record of the trip "
-                        "(current.zero_velocity_land: false, --no-zero-land, takes them as water)");
+                        "(" + r.optionName(ForecastOption::ZeroVelocityLand, "NetCdfCurrentOptions::zeroVelocityLand") +
+                        " turns this off, taking them as water)");
     for (const RemoteFetch &f : remoteFetchesOf(nc.files))  // OPeNDAP: what came from the network, the cache
         notes.push_back(remoteNote(f));
     return notes;
@@ -210,7 +226,7 @@ public:
         std::string u = nc.uVariable;  // a wind (uwnd, u10, eastward_wind...) is called so on the map
         std::transform(u.begin(), u.end(), u.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
         f.wind = u == "uwnd" || u == "u10" || u.find("wind") != std::string::npos;
-        f.notes = readerNotes(nc);
+        f.notes = readerNotes(nc, r);
         f.landCauses = landCauses(nc, r);
         return f;
     }
@@ -234,7 +250,7 @@ private:
         }
         catch (const Error &e)
         {
-            throw Error(callerWords(e.what(), r));
+            throw Error(callerWords(e.what(), r), callerField(e.field(), r));
         }
     }
 };

@@ -51,7 +51,8 @@ void subsetY(const NcFile &f, const Layout &l, const RegionOfInterest &r, const 
             throw f.error("region " + std::string(l.geographic ? "latitude" : "y") + " [" +
                           std::to_string(r.latMin) + ", " + std::to_string(r.latMax) + "] is outside '" + l.yName +
                           "' [" + std::to_string(*std::min_element(ys.begin(), ys.end())) + ", " +
-                          std::to_string(*std::max_element(ys.begin(), ys.end())) + "]");
+                          std::to_string(*std::max_element(ys.begin(), ys.end())) + "]",
+                          "NetCdfCurrentOptions::region");
         ya = range->first;
         yb = range->second;
     }
@@ -123,7 +124,8 @@ void subsetXLinear(const NcFile &f, const Layout &l, const RegionOfInterest &r, 
     if (!range)
         throw f.error("region " + std::string(l.geographic ? "longitude" : "x") + " [" + std::to_string(r.lonMin) +
                       ", " + std::to_string(r.lonMax) + "] is outside '" + l.xName + "' [" +
-                      std::to_string(xa.front()) + ", " + std::to_string(xa.back()) + "]");
+                      std::to_string(xa.front()) + ", " + std::to_string(xa.back()) + "]",
+                      "NetCdfCurrentOptions::region");
     for (std::size_t k = range->first; k <= range->second; ++k)
     {
         h.xIdx.push_back(x.xmap[k]);

@@ -144,8 +144,8 @@ std::vector<double> derivedAngle(const NcFile &f, const Layout &l, const Horizon
                       l.xName + "'/'" + l.yName + "' gives no clear angle: at (j, i) = (" +
                       std::to_string(h.yIdx[a.faultJ]) + ", " + std::to_string(h.xIdx[a.faultI]) + "), " +
                       l.xName + " " + text::number(h.nodeLon[n]) + ", " + l.yName + " " + text::number(h.nodeLat[n]) +
-                      ", " + a.fault + "; name the angle variable (--angle-var, current.variables.angle), or give "
-                      "--angle-var none (current.variables.angle: none) if the velocities are eastward/northward");
+                      ", " + a.fault + "; name the angle variable (NetCdfCurrentOptions::angleName), or give "
+                      "NetCdfCurrentOptions::angleName 'none' if the velocities are eastward/northward");
     }
     if (!a.rotated)
         return {};

@@ -49,7 +49,7 @@ TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated, const std:
     const std::string units = overridden ? trim(unitsOverride) : unitsOf(f, tv);
     if (overridden && !hasSince(units))
         throw f.error("NetCdfCurrentOptions::timeUnits '" + unitsOverride + "' (for time variable '" + tn +
-                      "'): expected '<seconds|minutes|hours|days> since <date>'");
+                      "'): expected '<seconds|minutes|hours|days> since <date>'", "NetCdfCurrentOptions::timeUnits");
     if (!hasSince(units) && !allowUndated)
         throw f.error(undatedMessage(tn, units));
     const std::vector<double> raw = f.readAll1D(tv);
@@ -75,7 +75,7 @@ TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated, const std:
         {
             if (overridden)
                 throw f.error("NetCdfCurrentOptions::timeUnits '" + unitsOverride + "' (for time variable '" + tn +
-                              "'): " + e.what());
+                              "'): " + e.what(), "NetCdfCurrentOptions::timeUnits");
             throw f.error("time variable '" + tn + "': " + e.what());
         }
         out.dated = true;
@@ -102,7 +102,7 @@ std::optional<SteadyRecord> steadyRecordOf(const NcFile &f, int timeDim, int tv,
     if (k >= n)
         throw f.error("NetCdfCurrentOptions::steadyRecord " + std::to_string(k) + " is out of range: time variable '" +
                       tn + "' has " + std::to_string(n) + " record" + (n == 1 ? "" : "s") +
-                      (n > 0 ? " (0 to " + std::to_string(n - 1) + ")" : ""));
+                      (n > 0 ? " (0 to " + std::to_string(n - 1) + ")" : ""), "NetCdfCurrentOptions::steadyRecord");
     SteadyRecord r;
     r.index = k;
     // dated by the record's time when the axis (or NetCdfCurrentOptions::timeUnits) has dates; else undated, and
@@ -149,12 +149,14 @@ double departureOf(const std::function<Error(const std::string &)> &error, const
     }
     catch (const Error &e)
     {
-        throw error(std::string("departure: ") + e.what());
+        throw Error(error(std::string("departure: ") + e.what()).what(), "NetCdfCurrentOptions::departure");
     }
     if (!out.steady && (dep < ts.front() || dep > ts.back()))
-        throw error("departure " + opt.departure + " (" + out.isoTime(dep) +
-                      ") is outside the forecast of variable '" + tn + "' [" + out.isoTime(ts.front()) + ", " +
-                      out.isoTime(ts.back()) + "]" + climatologyHint(out, ts));
+        throw Error(error("departure " + opt.departure + " (" + out.isoTime(dep) +
+                          ") is outside the forecast of variable '" + tn + "' [" + out.isoTime(ts.front()) + ", " +
+                          out.isoTime(ts.back()) + "]" + climatologyHint(out, ts))
+                        .what(),
+                    "NetCdfCurrentOptions::departure");
     return dep;
 }
 
@@ -172,9 +174,10 @@ AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentO
     {
         const std::string what = "variable '" + l.uName + "' has no time dimension (a steady field)";
         if (!opt.timeUnits.empty())
-            throw f.error("NetCdfCurrentOptions::timeUnits given, but " + what);
+            throw f.error("NetCdfCurrentOptions::timeUnits given, but " + what, "NetCdfCurrentOptions::timeUnits");
         if (opt.steadyRecord)
-            throw f.error("NetCdfCurrentOptions::steadyRecord given, but " + what);
+            throw f.error("NetCdfCurrentOptions::steadyRecord given, but " + what,
+                          "NetCdfCurrentOptions::steadyRecord");
         out.steady = true;
         out.departureTime = departureOf(fileErrors(f), opt, "", {0.0}, out);
         return s;
@@ -258,9 +261,10 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const NetCdfCurrentOp
     {
         const std::string what = "variable '" + f.varName(uVar) + "' has no time dimension (a steady field)";
         if (!options.timeUnits.empty())
-            throw f.error("NetCdfCurrentOptions::timeUnits given, but " + what);
+            throw f.error("NetCdfCurrentOptions::timeUnits given, but " + what, "NetCdfCurrentOptions::timeUnits");
         if (options.steadyRecord)
-            throw f.error("NetCdfCurrentOptions::steadyRecord given, but " + what);
+            throw f.error("NetCdfCurrentOptions::steadyRecord given, but " + what,
+                          "NetCdfCurrentOptions::steadyRecord");
         axis.steady = true;
         return axis;
     }

@@ -115,10 +115,12 @@ int findVelocity(const NcFile &f, const std::string &given, bool east, const std
     {
         auto v = f.findVar(given);
         if (!v && !groups.empty())
-            throw f.error("no variable '" + given + "' in the root group: " + groups);
+            throw f.error("no variable '" + given + "' in the root group: " + groups,
+                          "NetCdfCurrentOptions::" + optionName);
         if (!v)
             throw f.error("no variable '" + given + "' (given with NetCdfCurrentOptions::" + optionName +
-                          "); candidates: " + candidateList(f));
+                              "); candidates: " + candidateList(f),
+                          "NetCdfCurrentOptions::" + optionName);
         return *v;
     }
     const std::vector<std::string> stdNames =

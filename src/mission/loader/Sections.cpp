@@ -51,16 +51,16 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
     }
     catch (const Error &e)
     {
-        // on the option or the variable the message names when the mission gave it, else on the file
-        const std::string what = e.what();
-        if (n["time_units"] && what.find("current.time_units") != std::string::npos)
-            r.fail(n["time_units"], "current.time_units", what);
-        if (n["steady_record"] && what.find("current.steady_record") != std::string::npos)
-            r.fail(n["steady_record"], "current.steady_record", what);
-        if (!timeName.empty() && what.find("'" + timeName + "'") != std::string::npos)
-            r.fail(n["variables"]["time"], "current.variables.time", what);
-        if (!uName.empty() && what.find("'" + uName + "'") != std::string::npos)
-            r.fail(n["variables"]["u"], "current.variables.u", what);
+        // on the setting the source names as at fault (Error::field()) when the mission gave it, else on the file
+        const std::string what = e.what(), &field = e.field();
+        if (n["time_units"] && field == "current.time_units")
+            r.fail(n["time_units"], field, what);
+        if (n["steady_record"] && field == "current.steady_record")
+            r.fail(n["steady_record"], field, what);
+        if (!timeName.empty() && field == "current.variables.time")
+            r.fail(n["variables"]["time"], field, what);
+        if (!uName.empty() && field == "current.variables.u")
+            r.fail(n["variables"]["u"], field, what);
         r.fail(n["file"], "current.file", what);
     }
     m.current.steady = axis.steady;
@@ -203,7 +203,7 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
     if (n["parameters"])
     {
         std::set<std::string> names;
-        for (const auto &[key, value] : kind.parameters)
+        for (const auto &[key, value] : kind.parameters)  // (the set checkMap() takes; hasParameter() decides alike)
             names.insert(key);
         r.checkMap(n["parameters"], f + ".parameters", names);
         for (auto it = n["parameters"].begin(); it != n["parameters"].end(); ++it)
