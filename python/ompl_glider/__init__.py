@@ -24,6 +24,7 @@ import json
 import numbers
 import os
 import weakref
+from collections.abc import Iterable
 from typing import Any, Callable, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -346,7 +347,28 @@ def _json_default(value: Any) -> Any:
 def _forbidden(items: Optional[Sequence[Any]]) -> Optional[List[Dict[str, Any]]]:
     if items is None:
         return None
-    return [dict(item) if isinstance(item, dict) else {"points": [tuple(p) for p in item]} for item in items]
+    try:
+        return [dict(item) if isinstance(item, dict) else {"points": [tuple(p) for p in item]} for item in items]
+    except TypeError:
+        raise _bad("plan(): keyword 'forbidden'", items, "a list of polygons (point lists or dicts with points)")
+
+
+def _path_keyword(name: str, value: Any) -> Optional[str]:
+    """A file name of keyword @p name, or an Error naming the keyword."""
+    if value is None:
+        return None
+    if not isinstance(value, (str, os.PathLike)):
+        raise _bad(f"plan(): keyword '{name}'", value, "a file name")
+    return os.fspath(value)
+
+
+def _list_keyword(name: str, value: Any, expected: str) -> Optional[List[Any]]:
+    """The items of keyword @p name as a list, or an Error naming the keyword."""
+    if value is None:
+        return None
+    if isinstance(value, (str, bytes, dict)) or not isinstance(value, Iterable):
+        raise _bad(f"plan(): keyword '{name}'", value, expected)
+    return list(value)
 
 
 def _load(mission: Union[str, os.PathLike, Dict[str, Any]]) -> Any:
@@ -437,16 +459,20 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                     time_limit=time_limit, smoothing=smoothing, refinement=refinement,
                     global_check=global_check, horizon=horizon, goal_tolerance=goal_tolerance, isochrones=isochrones,
                     isochrone_interval=isochrone_interval, arrive_between=arrive_between,
-                    coastline=None if coastline is None else os.fspath(coastline), goto_turn=goto_turn,
-                    via=None if via is None else list(via), order=order,
-                    observations=None if observations is None else os.fspath(observations),
+                    coastline=_path_keyword("coastline", coastline), goto_turn=goto_turn,
+                    via=_list_keyword("via", via, "a list of via points"), order=order,
+                    observations=_path_keyword("observations", observations),
                     keep_off=keep_off, min_depth=min_depth,
                     bathymetry=os.fspath(bathymetry) if isinstance(bathymetry, os.PathLike) else bathymetry,
                     bathymetry_variable=bathymetry_variable, snap_to_water=snap_to_water,
                     truth=[os.fspath(t) for t in truth] if isinstance(truth, (list, tuple)) else truth,
                     surfacing_interval=surfacing_interval,
-                    strategies=None if strategies is None else list(strategies), radius=radius,
+                    strategies=_list_keyword("strategies", strategies, "a list of strategy names"), radius=radius,
                     execution_pairs=execution_pairs, execution_seed=execution_seed)
+    if planner_params is not None and not isinstance(planner_params, dict):
+        raise _bad("plan(): keyword 'planner_params'", planner_params, "a dict of parameter names to values")
+    if not isinstance(optimum, (bool, np.bool_)):
+        raise _bad("plan(): keyword 'optimum'", optimum, "True or False")
     if planner_params is not None:
         keywords["planner_params"] = {k: (str(v).lower() if isinstance(v, bool) else str(v))
                                       for k, v in planner_params.items()}

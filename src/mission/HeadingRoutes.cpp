@@ -65,6 +65,7 @@ bool reaimLastSegment(const MissionProblem &problem, const GliderContext &ctx, c
                   route.segments.back().bearing - before.bearing, route.segments.back().duration - before.duration,
                   r.reflownEndDistance);
     r.reflightNote = note;
+    r.reflightFallback = ReflightFallback::Reaimed;
     r.plannerTravelTime = r.travelTime;
     r.headings = route;
     r.path = r.raw = r.smoothed = f.ends;
@@ -142,6 +143,7 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
         r.reflightNote = path.empty() ? "the final path fails its accurate re-flight (" + why + ")" :
                                         "the final path arrives later than the path before it when re-flown";
         r.reflightNote += "; the earlier stage is flown instead";
+        r.reflightFallback = ReflightFallback::EarlierStage;
         planner = smoothed.size() == r.smoothed.size() ? r.smoothedTravelTime : r.rawTravelTime;
         path = smoothed;
     }

@@ -455,7 +455,10 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                               jnum((p.travelTime - p.reflownTravelTime) / p.reflownTravelTime) : json(nullptr)},
                          {"end_distance_to_goal", jnum(p.reflownEndDistance)},
                          {"planner_travel_time", jnum(p.plannerTravelTime)},
-                         {"note", jtext(p.reflightNote)}};
+                         {"note", jtext(p.reflightNote)},
+                         {"fallback", p.reflightFallback == ReflightFallback::EarlierStage ? json("earlier_stage")
+                                      : p.reflightFallback == ReflightFallback::Reaimed    ? json("reaimed")
+                                                                                            : json(nullptr)}};
     else
         j["reflight"] = nullptr;
     // constant-bearing stints ([IsernObstacles]): null without a stints section

@@ -546,6 +546,8 @@ TEST(MissionRun, ExampleMissionsRunEndToEnd)
         const MissionProblem problem(spec);
         const MissionResult r = runMission(problem);
         EXPECT_TRUE(r.plan.solved) << name << ": " << r.plan.status << ": " << r.plan.reason;
+        // a fallback of the re-flight is typed and said in words, or neither
+        EXPECT_EQ(r.plan.reflightFallback == ReflightFallback::None, r.plan.reflightNote.empty()) << name;
         const std::vector<std::string> files = writeOutputs(r, problem);
         // summary.json, waypoints.csv, path.geojson, route.kml, goto list, targets, map.svg + map.png + map.html
         EXPECT_EQ(files.size(), 9u) << name;

@@ -169,6 +169,8 @@ TEST(Pipeline, LibraryMissionFileAndOmplBenchmarkGiveIdenticalAnswers)
     // the same path, timed by the planner's integrator; the pipeline reports its accurate re-flight
     EXPECT_EQ(path.back().t - path.front().t, a.plan.plannerTravelTime);
     EXPECT_TRUE(a.plan.reflown);
+    EXPECT_EQ(a.plan.reflightFallback, ReflightFallback::None);  // the final path flies: no fallback, no note
+    EXPECT_TRUE(a.plan.reflightNote.empty());
     EXPECT_NEAR(a.plan.travelTime, a.plan.plannerTravelTime, 1e-3 * a.plan.travelTime);
     EXPECT_EQ(path.size(), a.plan.path.size());
     EXPECT_EQ(planner->getCostFunctionCalls(), a.plan.searchCostFunctionCalls);

@@ -199,3 +199,13 @@ def test_a_forecast_variable_missing_names_its_keyword():
     message = str(e.value)
     assert "no variable 'nope'" in message and "Field.netcdf(): keyword 'variables' (u)" in message, message
     assert "--" not in message, message
+
+
+def test_every_plan_keyword_refuses_a_value_of_the_wrong_type_naming_itself():
+    """Whatever the keyword, a value of no type it takes is an Error that names that keyword."""
+    for name in inspect.signature(ompl_glider.plan).parameters:
+        if name in ("mission", "field", "progress"):
+            continue  # the mission itself, the field (its own checks: Field.netcdf()...), and a callback
+        with pytest.raises(ompl_glider.Error) as e:
+            ompl_glider.plan(**{name: object()})
+        assert str(e.value).startswith(f"plan(): keyword '{name}': expected "), str(e.value)

@@ -129,6 +129,14 @@ struct StintOutcome
     double seconds{0.0};  ///< wall time of the conversion (the planning time of a stint planner is planningSeconds)
 };
 
+/// @brief What the accurate re-flight made the pipeline fall back on (PlannedPath::reflightFallback).
+enum class ReflightFallback : std::uint8_t
+{
+    None = 0,      ///< the final path flies as planned
+    EarlierStage,  ///< the final path failed its re-flight or arrived later: the smoothed (or planner's) is flown
+    Reaimed        ///< a heading route's last segment re-aimed to end on the goal when flown accurately
+};
+
 /// @brief One planned path: what planRoute() returns.
 struct PlannedPath
 {
@@ -196,6 +204,9 @@ struct PlannedPath
     double reflownTravelTime{std::numeric_limits<double>::quiet_NaN()};  ///< the re-flight's travel time
     /// Set when the final path failed its re-flight and an earlier stage (smoothed, or the planner's) is flown: why
     std::string reflightNote;
+    /// What the re-flight changed, typed: nothing, an earlier stage flown in place of the final path, or a heading
+    /// route's last segment re-aimed (reflightNote says it in words)
+    ReflightFallback reflightFallback{ReflightFallback::None};
     /// Heading routes: the distance from the goal at which the re-flight ends (straight legs end on it: 0)
     double reflownEndDistance{std::numeric_limits<double>::quiet_NaN()};
     /// The global check of the route class (lattice planners in the default pipeline); unset when it did not run
