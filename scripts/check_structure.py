@@ -187,40 +187,31 @@ def check_no_issue_numbers(root):
     return breaches
 
 
+def code_lines(root, folders):
+    """(rel, line number, line) of the code in @p folders, // comments left out (strings kept: a comparison with a
+    string literal is what the rules look for)."""
+    for path, rel in source_files(root, folders):
+        with open(path, encoding="utf-8", errors="replace") as f:
+            for number, line in enumerate(f, 1):
+                yield rel, number, line.split("//", 1)[0]
+
+
+def pattern_breaches(root, folders, pattern, why):
+    """Each line of @p folders that @p pattern matches, with why(match)."""
+    return [f"{rel}:{number}: {why(m)}" for rel, number, line in code_lines(root, folders)
+            for m in [pattern.search(line)] if m]
+
+
 def check_outcomes(root):
-    breaches = []
-    for path, rel in source_files(root, OUTCOME_FOLDERS):
-        with open(path, encoding="utf-8", errors="replace") as f:
-            text = f.read()
-        for number, line in enumerate(strip_outcome_comments(text).split("\n"), 1):
-            m = OUTCOME_TEXT.search(line)
-            if m:
-                breaches.append(f"{rel}:{number}: '{m.group(0)}' reads an outcome's words: branch on its cause")
-    for path, rel in source_files(root, ERROR_FOLDERS):
-        with open(path, encoding="utf-8", errors="replace") as f:
-            text = f.read()
-        for number, line in enumerate(strip_outcome_comments(text).split("\n"), 1):
-            m = ERROR_TEXT.search(line)
-            if m:
-                breaches.append(f"{rel}:{number}: '{m.group(0)}' reads an error's message: use Error::field()")
-    return breaches
+    return (pattern_breaches(root, OUTCOME_FOLDERS, OUTCOME_TEXT,
+                             lambda m: f"'{m.group(0)}' reads an outcome's words: branch on its cause") +
+            pattern_breaches(root, ERROR_FOLDERS, ERROR_TEXT,
+                             lambda m: f"'{m.group(0)}' reads an error's message: use Error::field()"))
 
 
 def check_no_flags(root):
-    breaches = []
-    for path, rel in source_files(root, ["src", "include/ompl_glider"]):
-        with open(path, encoding="utf-8", errors="replace") as f:
-            text = f.read()
-        for number, line in enumerate(strip_outcome_comments(text).split("\n"), 1):
-            m = FLAG_IN_STRING.search(line)
-            if m:
-                breaches.append(f"{rel}:{number}: '{m.group(1)}': name the setting (MissionSpec::term()), not a flag")
-    return breaches
-
-
-def strip_outcome_comments(text):
-    """The text without // comments (strings kept: a comparison with a string literal is what the rule looks for)."""
-    return "\n".join(line.split("//", 1)[0] for line in text.split("\n"))
+    return pattern_breaches(root, ["src", "include/ompl_glider"], FLAG_IN_STRING,
+                            lambda m: f"'{m.group(1)}': name the setting (MissionSpec::term()), not a flag")
 
 
 def main():
