@@ -163,7 +163,7 @@ bool forecastIsGeographic(const std::vector<std::string> &list, const MissionSpe
     }
     catch (const Error &e)
     {
-        throw Error(callerMessage(e, q, o));
+        throw Error(callerMessage(e, q, o), e.field());
     }
     return geographic;
 }
@@ -257,7 +257,7 @@ LoadedForecast loadForecast(const std::vector<std::string> &list, const MissionS
     }
     catch (const Error &e)
     {
-        throw Error(callerMessage(e, q, o));
+        throw Error(callerMessage(e, q, o), e.field());
     }
     return nc;
 }

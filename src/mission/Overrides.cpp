@@ -278,8 +278,8 @@ void applyOutputs(const MissionOverrides &o, MissionSpec &m)
     if (((o.isochrones && o.isochrones->value) || o.isochroneInterval) && !m.outputs.wants(OutputFormatId::Isochrones))
         m.outputs.files.push_back(OutputFormatId::Isochrones);
 }
-/// A length of @p v (a number in units of @p metresPerUnit, or with a unit), refused naming its source when it is
-/// none; its range is checked with the mission's safety (MissionProblem), as a mission file's is.
+/// A length of @p v (a number in units of @p metresPerUnit, or with a unit; parseLength() refuses a negative one),
+/// refused naming its source.
 double lengthOf(const Given<std::string> &v, double metresPerUnit, bool unitKnown)
 {
     try

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The structure checker catches what it claims to: an upward include, a long file, a long function (in the library
-and in the front ends), an author-year citation, an issue number; and passes a tree that keeps the rules. Run by ctest (structure.checker_selftest)."""
+and in the front ends), an author-year citation, an issue number, a search in an outcome's words or an error's
+message, a command-line flag in the library's strings; and passes a tree that keeps the rules. Run by ctest (structure.checker_selftest)."""
 import os
 import subprocess
 import sys
@@ -91,7 +92,36 @@ unknown["src/gadgets/G.cpp"] = "\n"
 code, out = run(tree(unknown))
 expect(code == 1 and "layer 'gadgets' is not in the list" in out, "a folder outside the layer list must fail", out)
 
+outcome = dict(good)
+outcome["src/mission/Switch.cpp"] = ('bool proven(const std::string &reason)\n{\n'
+                                     '    return reason.find("never reaches") != std::string::npos;\n}\n'
+                                     '// a comment may say r.reason.find("x")\n')
+outcome["src/output/Note.cpp"] = 'bool same(const P &p)\n{\n    return p.switchReason == "lattice";\n}\n'
+code, out = run(tree(outcome))
+expect(code == 1 and "src/mission/Switch.cpp:3: 'reason.find('" in out and "Switch.cpp:5" not in out and
+       "src/output/Note.cpp:3: 'switchReason == \"'" in out,
+       "a search in or a comparison with an outcome's words must fail (a comment may mention one)", out)
+
+error_text = dict(good)
+error_text["apps/tool/Place.cpp"] = ('void place(const Error &e)\n{\n'
+                                     '    if (std::string(e.what()).find("time_units") != std::string::npos) {}\n'
+                                     '    const std::string what = e.what();\n'
+                                     '    if (what.rfind("--", 0) == 0) {}\n}\n')
+code, out = run(tree(error_text))
+expect(code == 1 and "apps/tool/Place.cpp:3:" in out and "apps/tool/Place.cpp:5: 'what.rfind('" in out,
+       "a search in an error's message must fail in the front ends", out)
+
+flags = dict(good)
+flags["src/mission/Advice.cpp"] = ('std::string advice()\n{\n    return "raise it (--time-limit)";\n}\n'
+                                   '// the command line calls it --time-limit\n'
+                                   'const char *range = "a--b";\n')
+flags["include/ompl_glider/mission/Words.h"] = 'const char *w = "give \\"--depth\\" here";\n'
+code, out = run(tree(flags))
+expect(code == 1 and "src/mission/Advice.cpp:3: '--time-limit'" in out and "Advice.cpp:5" not in out and
+       "Advice.cpp:6" not in out and "include/ompl_glider/mission/Words.h:1: '--depth'" in out,
+       "a command-line flag in a string of the library must fail (not in a comment, not inside a word)", out)
+
 for f in failures:
     print("FAILED: " + f)
-print(f"{7 - len(failures)} passed, {len(failures)} failed")
+print(f"{10 - len(failures)} passed, {len(failures)} failed")
 sys.exit(1 if failures else 0)
