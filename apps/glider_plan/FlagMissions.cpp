@@ -12,11 +12,8 @@
 #include "Flags.h"
 #include "FlagText.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/io/FileList.h"
-#include "ompl_glider/execution/Execution.h"
 #include "ompl_glider/io/GliderObservations.h"
-#include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/Overrides.h"
 
