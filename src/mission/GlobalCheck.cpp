@@ -67,10 +67,13 @@ constexpr double kCheckTolerance = 1e-3;
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// The budget of the rescue where the sweep finds no extremal (finer scans, the level set): this many times the
-/// time the plan took before the check, at least kRescueMinimum seconds, at most the check's time limit.
-constexpr double kRescueFactor = 10.0;
-constexpr double kRescueMinimum = 1.0;
+/// The rescue where the sweep finds no extremal is bounded by its work, not by a clock, so that a problem gets the
+/// same answer on any machine and under any load: the finer scans by construction (kZoomLevels windows of
+/// kWindowHeadings headings about each centre), the level set by its node updates: this many per cost-function call
+/// of the plan (a coastal trip the lattice planned in a second does not wait half a minute for a level set), at least
+/// kLevelSetMinimumUpdates (about 125 steps of the whole 200-cell grid: enough for a front to cross it).
+constexpr std::uint64_t kLevelSetUpdatesPerCall = 100;
+constexpr std::uint64_t kLevelSetMinimumUpdates = 5000000;
 
 /// Headings of each finer scan, and how many times a scan is narrowed about its nearest miss.
 constexpr int kWindowHeadings = 360;
@@ -110,12 +113,15 @@ struct LevelSetAid
 };
 
 LevelSetAid levelSetAid(const std::shared_ptr<const GliderContext> &ctx, Point2 s, Point2 g, double departure,
-                        double tEnd, const std::function<bool()> &stop)
+                        double tEnd, const std::function<bool()> &stop, GlobalCheck &check)
 {
     LevelSetParams p;
     p.cellSize = defaultLevelSetResolution(*ctx);
     p.clearance = 0.5 * p.cellSize;
+    p.maxNodeUpdates = check.levelSetBudget;
     const Reachability r = LevelSetSolver(ctx, p).solve(s.x, s.y, departure, tEnd, g, true, stop);
+    check.levelSetUpdates = r.stats.nodeUpdates;
+    check.levelSetBudgetSpent = r.stats.budgetSpent;
     LevelSetAid aid;
     if (!r.goalReached || stop())
         return aid;
@@ -139,8 +145,7 @@ LevelSetAid levelSetAid(const std::shared_ptr<const GliderContext> &ctx, Point2 
 /// finer scans about its nearest miss and, with the level set's first arrival, about the level set's initial
 /// headings. Fills the check's counts.
 ZermeloSolution findExtremal(const std::shared_ptr<GliderContext> &ctx, ZermeloParams &zp, bool planned, Point2 s,
-                             Point2 g, double departure, double span, const std::function<bool()> &rescueStop,
-                             GlobalCheck &check)
+                             Point2 g, double departure, double span, GlobalCheck &check)
 {
     ZermeloSolution sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
     check.headings = static_cast<unsigned>(sol.headingsShot);
@@ -154,23 +159,21 @@ ZermeloSolution findExtremal(const std::shared_ptr<GliderContext> &ctx, ZermeloP
     }
     if (sol.found || zp.stop())
         return sol;
-    // the rescue (finer scans, the level set) within its own budget (rescueStop)
-    ZermeloParams fine = zp;
-    fine.stop = rescueStop;
+    // the rescue (finer scans, the level set) within its work budget (kLevelSetUpdatesPerCall)
     const double spacing = 2.0 * kPi / zp.headingSamples;
     if (std::isfinite(sol.nearestMiss))
     {
         const ZermeloSolution z =
-            zoomOn(ctx->field, fine, sol.nearestHeading, 16.0 * spacing, s, g, departure, check.finerHeadings);
+            zoomOn(ctx->field, zp, sol.nearestHeading, 16.0 * spacing, s, g, departure, check.finerHeadings);
         if (z.found)
             return z;
     }
     // the level set over the whole window (the extremal may be slower than the planner's route's bound)
-    if (rescueStop())
+    if (zp.stop())
         return sol;
-    const LevelSetAid aid = levelSetAid(ctx, s, g, departure, departure + span, rescueStop);
+    const LevelSetAid aid = levelSetAid(ctx, s, g, departure, departure + span, zp.stop, check);
     check.levelSetTime = aid.time;
-    ZermeloParams wide = fine;
+    ZermeloParams wide = zp;
     wide.maxTime = std::isfinite(aid.time) ? std::min(span, 1.25 * aid.time) : zp.maxTime;
     for (const double seed : aid.seeds)
     {
@@ -357,24 +360,11 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
         check.timedOut = true;
         return true;
     };
-    // the rescue where the sweep finds none has at most kRescueFactor times the plan's own time (kRescueMinimum at
-    // least): a coastal trip the lattice planned in a second does not wait half a minute for a level set
-    const double rescue =
-        std::min(check.timeLimit, std::max(kRescueMinimum, kRescueFactor * (r.planningSeconds + r.postprocessSeconds)));
-    const auto rescueDeadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                         std::chrono::duration<double>(rescue));
-    const std::function<bool()> whole = zp.stop;
-    const std::function<bool()> rescueStop = [whole, rescueDeadline, rescue, &check] {
-        if (whole())
-            return true;
-        if (std::chrono::steady_clock::now() < rescueDeadline)
-            return false;
-        check.timedOut = true;
-        check.timeLimit = rescue;
-        return true;
-    };
+    // the level set's budget: in proportion to the plan's own work (its cost-function calls)
+    check.levelSetBudget = std::max(kLevelSetMinimumUpdates,
+                                    kLevelSetUpdatesPerCall * (r.searchCostFunctionCalls + r.postprocessCostFunctionCalls));
     const Point2 s = problem.getStart(), g = problem.getGoal();
-    const ZermeloSolution sol = findExtremal(ctx, zp, r.solved, s, g, departure, span, rescueStop, check);
+    const ZermeloSolution sol = findExtremal(ctx, zp, r.solved, s, g, departure, span, check);
     const ZermeloReference ref(ctx->field, zp);
     check.extremalFound = sol.found;
     check.extremalTime = sol.found ? sol.travelTime : kInf;
@@ -435,7 +425,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     }
     // no extremal through the goal and the level set's front reached it earlier than the route in hand: the level
     // set's own route (its backtracked path as straight legs, or flown by its headings) is a candidate
-    if (!sol.found && std::isfinite(check.levelSetTime) && !rescueStop() &&
+    if (!sol.found && std::isfinite(check.levelSetTime) && !zp.stop() &&
         !(best.solved && best.travelTime <= check.levelSetTime * (1.0 + kLevelSetMargin)))
         consider(levelSetRoute(problem, departure, o, base), "level set");
     if (check.winner.empty() && best.solved)

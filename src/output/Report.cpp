@@ -143,6 +143,9 @@ void printGlobalCheck(std::ostream &out, const PlannedPath &p, const MissionSpec
     if (g.finerHeadings > 0)
         out << "  finer scans       " << g.finerHeadings << " headings in narrowing windows"
             << (std::isfinite(g.levelSetTime) ? "; the level set's first arrival " + span(g.levelSetTime)
+                : g.levelSetBudgetSpent       ? format("; the level set's budget of %llu node updates spent before "
+                                                       "its front reached the goal",
+                                                       static_cast<unsigned long long>(g.levelSetBudget))
                                               : std::string())
             << "\n";
     for (const RouteCandidate &c : g.candidates)

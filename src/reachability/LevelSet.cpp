@@ -450,6 +450,11 @@ void FrontPropagation::propagate(double tEnd, bool stopAtGoal, const std::functi
     {
         if (stop && stop())
             break;
+        if (params_.maxNodeUpdates > 0 && updates_ >= params_.maxNodeUpdates)
+        {
+            out_.stats.budgetSpent = true;
+            break;
+        }
         ds_ = stepLength(events);
         r_ = V_ * ds_;
         const double t1 = t_ + ds_, tm = t_ + 0.5 * ds_;

@@ -3,6 +3,8 @@
 // keeps to the region. References: the independent extremal sweep (ExtremalSweep.h, its own RK4) and closed forms.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -14,6 +16,7 @@
 #include <ompl/util/Console.h>
 
 #include "TrustCases.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/output/Report.h"
 #include "ompl_glider/output/SummaryJson.h"
 
@@ -28,6 +31,102 @@ MissionSpec jetPair(Point2 s, Point2 g, double speed, double departure)
     m.goal.xy = g;
     m.vehicle.speed = m.travel.speed = speed;
     m.departure.time = departure;
+    return m;
+}
+
+/// An analytic flow with a busy wait of @p waitNs nanoseconds before each velocity and Jacobian after its first
+/// @p after calls: the same flow on a machine that other work slows down from then on.
+class SlowedField : public CurrentField
+{
+public:
+    SlowedField(std::shared_ptr<const CurrentField> inner, double waitNs, double after)
+        : inner_(std::move(inner)), wait_(static_cast<long>(waitNs)), after_(static_cast<std::uint64_t>(after))
+    {
+    }
+    double maxSpeed(const Region &r) const override
+    {
+        return inner_->maxSpeed(r);
+    }
+    bool velocityBounds(const Region &r, double &uMin, double &uMax, double &vMin, double &vMax) const override
+    {
+        return inner_->velocityBounds(r, uMin, uMax, vMin, vMax);
+    }
+    bool hasVelocityBounds() const override
+    {
+        return inner_->hasVelocityBounds();
+    }
+    std::optional<double> streamFunction(double x, double y, double z, double t) const override
+    {
+        return inner_->streamFunction(x, y, z, t);
+    }
+    bool divergenceFree() const override
+    {
+        return inner_->divergenceFree();
+    }
+    double timeBegin() const override
+    {
+        return inner_->timeBegin();
+    }
+    double timeEnd() const override
+    {
+        return inner_->timeEnd();
+    }
+    std::string name() const override
+    {
+        return "slowed " + inner_->name();
+    }
+
+protected:
+    Velocity evaluate(double x, double y, double z, double t) const override
+    {
+        wait();
+        return inner_->velocity(x, y, z, t);
+    }
+    Jacobian evaluateJacobian(double x, double y, double z, double t) const override
+    {
+        wait();
+        return inner_->jacobian(x, y, z, t);
+    }
+
+private:
+    void wait() const
+    {
+        if (seen_.fetch_add(1) < after_)
+            return;
+        const auto until = std::chrono::steady_clock::now() + std::chrono::nanoseconds(wait_);
+        while (std::chrono::steady_clock::now() < until)
+        {
+        }
+    }
+    std::shared_ptr<const CurrentField> inner_;
+    long wait_;
+    std::uint64_t after_;
+    mutable std::atomic<std::uint64_t> seen_{0};
+};
+
+/// @p m with its analytic flow slowed by @p waitNs per velocity after its first @p after calls (the kind
+/// "slowed_<type>", registered once).
+MissionSpec slowed(MissionSpec m, double waitNs, std::uint64_t after)
+{
+    const std::string inner = m.current.type, name = "slowed_" + inner;
+    if (!findCurrentFieldKind(name))
+    {
+        CurrentFieldKind k = *findCurrentFieldKind(inner);
+        k.name = name;
+        k.description = "the " + inner + " flow, each velocity after a busy wait (a test's)";
+        k.parameters.push_back({"wait_ns", 0.0});
+        k.parameters.push_back({"after_calls", 0.0});
+        k.make = [inner](std::map<std::string, double> p) {
+            const double w = p.at("wait_ns"), after = p.at("after_calls");
+            p.erase("wait_ns");
+            p.erase("after_calls");
+            return std::make_shared<SlowedField>(makeAnalyticField(inner, p), w, after);
+        };
+        registerCurrentFieldKind(k);
+    }
+    m.current.type = name;
+    m.current.parameters["wait_ns"] = waitNs;
+    m.current.parameters["after_calls"] = static_cast<double>(after);
     return m;
 }
 
@@ -237,4 +336,52 @@ TEST(GlobalCheck, NeverLosesARouteThatMeetsTheArrivalWindow)
     }
     std::printf("cases checked: %d of %zu\n", checked, cases.size());
     EXPECT_EQ(checked, static_cast<int>(cases.size()));  // every case has a route without the check: none is vacuous
+}
+
+TEST(GlobalCheck, TheRescueGivesTheSameAnswerOnASlowerMachine)
+{
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
+    // Around the Rankine vortex at V = 0.3 the sweep finds no extremal through the goal: the rescue scans finer and
+    // runs the level set, and its extremal wins. The rescue is bounded by its work (the level set's node updates),
+    // not by a clock: the same problem on a machine that other work slows down once the plan is made (every velocity
+    // of the check 100 ns slower: the check takes about twice as long) gets the same check and the same route, to the bit. (With a budget in
+    // seconds, ten times the plan's, the slowed run's level set was cut before its front reached the goal.)
+    const trust::Flow vortex = trust::flows()[2];
+    MissionSpec m = vortex.mission;
+    m.start.xy = {0.55, -0.16};
+    m.goal.xy = {2.89, 3.49};
+    m.vehicle.speed = m.travel.speed = 0.3;
+    const MissionProblem plain(m);
+    const PlannedPath fast = planRoute(plain, 0.0);
+    ASSERT_TRUE(fast.globalCheck);
+    const std::uint64_t beforeCheck = plain.getField()->callCount() - fast.globalCheck->currentModelCalls;
+    const PlannedPath slow = planRoute(MissionProblem(slowed(m, 100.0, beforeCheck)), 0.0);
+    ASSERT_TRUE(fast.solved) << fast.reason;
+    ASSERT_TRUE(slow.solved) << slow.reason;
+    ASSERT_TRUE(fast.globalCheck && slow.globalCheck);
+    const GlobalCheck &a = *fast.globalCheck, &b = *slow.globalCheck;
+    std::printf("plan %.2f s before the check (%llu velocities); ", fast.planningSeconds + fast.postprocessSeconds,
+                static_cast<unsigned long long>(beforeCheck));
+    std::printf("check: %.2f s, slowed %.2f s; level set %llu of %llu node updates, first arrival %.6f; winner %s\n",
+                a.seconds, b.seconds, static_cast<unsigned long long>(a.levelSetUpdates),
+                static_cast<unsigned long long>(a.levelSetBudget), a.levelSetTime, a.winner.c_str());
+    EXPECT_GT(b.seconds, 2.0 * a.seconds);  // the slowdown took effect
+    EXPECT_GT(a.finerHeadings, 0u);
+    EXPECT_GT(a.levelSetUpdates, 0u);  // the rescue ran its level set
+    EXPECT_TRUE(std::isfinite(a.levelSetTime));
+    EXPECT_FALSE(a.timedOut);
+    EXPECT_FALSE(b.timedOut);
+    EXPECT_EQ(a.finerHeadings, b.finerHeadings);
+    EXPECT_EQ(a.levelSetUpdates, b.levelSetUpdates);
+    EXPECT_EQ(a.levelSetTime, b.levelSetTime);
+    EXPECT_EQ(a.extremalFound, b.extremalFound);
+    EXPECT_EQ(a.extremalTime, b.extremalTime);
+    EXPECT_EQ(a.winner, b.winner);
+    EXPECT_EQ(fast.travelTime, slow.travelTime);
+    ASSERT_EQ(fast.path.size(), slow.path.size());
+    for (std::size_t i = 0; i < fast.path.size(); ++i)
+    {
+        EXPECT_EQ(fast.path[i].x, slow.path[i].x);
+        EXPECT_EQ(fast.path[i].y, slow.path[i].y);
+    }
 }

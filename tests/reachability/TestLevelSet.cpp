@@ -218,3 +218,30 @@ TEST(LevelSet, ClosedLaneIsWaitedOut)
             held += r.path[k].t - r.path[k - 1].t;
     EXPECT_GT(held, 5.0);
 }
+
+TEST(LevelSet, NodeUpdateBudgetEndsTheSameSolveAtTheSameStep)
+{
+    // A budget of work, not time: the solve stops at the first step that starts with the budget spent, so it ends
+    // with at least that many updates and less than one step more, says so, and does the same every time (threads
+    // included); the front is then short of the goal that the solve without a budget reaches.
+    auto ctx = context(std::make_shared<UniformCurrent>(0.3, 0.1), 0.5, 0, 10, -5, 5);
+    LevelSetParams lp;
+    lp.cellSize = 0.05;
+    const Reachability whole = LevelSetSolver(ctx, lp).solve(1.0, 0.0, 0.0, 30.0, Point2{9.0, 0.0});
+    ASSERT_TRUE(whole.goalReached);
+    EXPECT_FALSE(whole.stats.budgetSpent);
+    lp.maxNodeUpdates = whole.stats.nodeUpdates / 3;
+    const Reachability a = LevelSetSolver(ctx, lp).solve(1.0, 0.0, 0.0, 30.0, Point2{9.0, 0.0});
+    const Reachability b = LevelSetSolver(ctx, lp).solve(1.0, 0.0, 0.0, 30.0, Point2{9.0, 0.0});
+    EXPECT_TRUE(a.stats.budgetSpent);
+    EXPECT_FALSE(a.goalReached);
+    EXPECT_GE(a.stats.nodeUpdates, lp.maxNodeUpdates);
+    EXPECT_LT(a.stats.steps, whole.stats.steps);
+    // one step updates at most every node
+    EXPECT_LT(a.stats.nodeUpdates, lp.maxNodeUpdates + a.stats.nodes);
+    EXPECT_EQ(a.stats.steps, b.stats.steps);
+    EXPECT_EQ(a.stats.nodeUpdates, b.stats.nodeUpdates);
+    ASSERT_EQ(a.arrival.size(), b.arrival.size());
+    for (std::size_t k = 0; k < a.arrival.size(); ++k)
+        ASSERT_EQ(a.arrival[k], b.arrival[k]) << "node " << k;
+}

@@ -72,8 +72,15 @@ struct GlobalCheck
     /// The level set's first arrival at the goal (travel time, an estimate first order in its cell), computed where
     /// the sweep found no extremal through the goal; +inf when not computed or the front never reached the goal
     double levelSetTime{std::numeric_limits<double>::infinity()};
+    /// The level set's budget of node updates (in proportion to the plan's cost-function calls: work, not time, so
+    /// that the check gives the same answer on any machine), the updates it did, and whether the budget ended it
+    /// before its front reached the goal
+    std::uint64_t levelSetBudget{0};
+    std::uint64_t levelSetUpdates{0};
+    bool levelSetBudgetSpent{false};
     /// The check's time limit (the plan's, else the fallbacks' 30 s) ended its scans before they were done: an
-    /// extremal or a level-set route it would have found may be missing
+    /// extremal or a level-set route it would have found may be missing (the one part of the check that depends on
+    /// the machine's speed)
     bool timedOut{false};
     double timeLimit{0.0};  ///< that limit (s)
     bool extremalFound{false};  ///< an admissible extremal reaches the goal within the time bound

@@ -30,6 +30,9 @@ struct LevelSetParams
                             ///< N evenly spaced headings instead (for measuring what the gradient buys)
     bool iceForbidden{true};  ///< ice zones are kept out of the front (the glider cannot surface there); false: they
                               ///< are ignored (the limit on the time under ice is not modelled either way)
+    /// Stop once this many node updates are done (0: no limit): a budget of work that, unlike a time limit, ends the
+    /// same solve at the same step on any machine and under any load
+    std::uint64_t maxNodeUpdates{0};
 };
 
 /// @brief Work done by one solve.
@@ -42,6 +45,7 @@ struct LevelSetStats
     unsigned threads{1};           ///< threads used
     double dt{0.0};                ///< time step
     std::size_t nodes{0};          ///< grid nodes
+    bool budgetSpent{false};       ///< LevelSetParams::maxNodeUpdates ended the propagation
 };
 
 /// @brief What one solve gives: the first-arrival field on the grid, the goal's arrival and the optimal path.
