@@ -69,11 +69,22 @@ constexpr double kPi = 3.14159265358979323846;
 
 /// The rescue where the sweep finds no extremal is bounded by its work, not by a clock, so that a problem gets the
 /// same answer on any machine and under any load: the finer scans by construction (kZoomLevels windows of
-/// kWindowHeadings headings about each centre), the level set by its node updates: this many per cost-function call
-/// of the plan (a coastal trip the lattice planned in a second does not wait half a minute for a level set), at least
+/// kWindowHeadings headings about each centre), the level set by its node updates, in proportion to the plan's own
+/// work (a coastal trip the lattice planned in a second does not wait half a minute for a level set): this many per
+/// cost-function call of a lattice planner and per front point of the heading planner it switched to, at least
 /// kLevelSetMinimumUpdates (about 125 steps of the whole 200-cell grid: enough for a front to cross it).
 constexpr std::uint64_t kLevelSetUpdatesPerCall = 100;
+constexpr std::uint64_t kLevelSetUpdatesPerPoint = 2000;
 constexpr std::uint64_t kLevelSetMinimumUpdates = 5000000;
+
+/// The level set's budget after the plan @p r (its counts are its own, whichever threads share the field).
+std::uint64_t levelSetBudget(const PlannedPath &r)
+{
+    std::uint64_t work = kLevelSetUpdatesPerCall * (r.searchCostFunctionCalls + r.postprocessCostFunctionCalls);
+    if (!r.switchedFrom.empty())  // the heading planner's front points (the lattice's search is its own count)
+        work += kLevelSetUpdatesPerPoint * r.expandedVertices;
+    return std::max(kLevelSetMinimumUpdates, work);
+}
 
 /// Headings of each finer scan, and how many times a scan is narrowed about its nearest miss.
 constexpr int kWindowHeadings = 360;
@@ -360,9 +371,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
         check.timedOut = true;
         return true;
     };
-    // the level set's budget: in proportion to the plan's own work (its cost-function calls)
-    check.levelSetBudget = std::max(kLevelSetMinimumUpdates,
-                                    kLevelSetUpdatesPerCall * (r.searchCostFunctionCalls + r.postprocessCostFunctionCalls));
+    check.levelSetBudget = levelSetBudget(r);
     const Point2 s = problem.getStart(), g = problem.getGoal();
     const ZermeloSolution sol = findExtremal(ctx, zp, r.solved, s, g, departure, span, check);
     const ZermeloReference ref(ctx->field, zp);

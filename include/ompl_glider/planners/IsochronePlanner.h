@@ -45,6 +45,11 @@ public:
     {
         return route_.segments.empty() ? nullptr : &route_;
     }
+    /// @brief PipelinePlanner: the front points the last solve expanded (expandedPoints()).
+    std::uint64_t expandedVertices() const override
+    {
+        return expanded_;
+    }
     /// @brief PipelinePlanner: lastReason() after an ABORT (no route), else nothing to add.
     NoPath noPathReason(const ompl::base::PlannerStatus &status, double) const override
     {
