@@ -170,7 +170,7 @@ ZermeloSolution findExtremal(const std::shared_ptr<GliderContext> &ctx, ZermeloP
     }
     if (sol.found || zp.stop())
         return sol;
-    // the rescue (finer scans, the level set) within its work budget (kLevelSetUpdatesPerCall)
+    // the rescue (finer scans, the level set) within its work budget (levelSetBudget())
     const double spacing = 2.0 * kPi / zp.headingSamples;
     if (std::isfinite(sol.nearestMiss))
     {

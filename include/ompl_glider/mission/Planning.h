@@ -72,9 +72,9 @@ struct GlobalCheck
     /// The level set's first arrival at the goal (travel time, an estimate first order in its cell), computed where
     /// the sweep found no extremal through the goal; +inf when not computed or the front never reached the goal
     double levelSetTime{std::numeric_limits<double>::infinity()};
-    /// The level set's budget of node updates (in proportion to the plan's cost-function calls: work, not time, so
-    /// that the check gives the same answer on any machine), the updates it did, and whether the budget ended it
-    /// before its front reached the goal
+    /// The level set's budget of node updates (in proportion to the plan's own work, its cost-function calls and the
+    /// front points of a heading planner it switched to: work, not time, so that the check gives the same answer on
+    /// any machine), the updates it did, and whether the budget ended it before its front reached the goal
     std::uint64_t levelSetBudget{0};
     std::uint64_t levelSetUpdates{0};
     bool levelSetBudgetSpent{false};
