@@ -72,10 +72,11 @@ constexpr double kPi = 3.14159265358979323846;
 /// kWindowHeadings headings about each centre), the level set by its node updates, in proportion to the plan's own
 /// work (a coastal trip the lattice planned in a second does not wait half a minute for a level set): this many per
 /// cost-function call of a lattice planner and per front point of the heading planner it switched to, at least
-/// kLevelSetMinimumUpdates (about 125 steps of the whole 200-cell grid: enough for a front to cross it).
+/// kLevelSetMinimumUpdates (about a second of the level set on two cores: the narrow band of a front that crosses a
+/// 200-cell grid over some hundred steps).
 constexpr std::uint64_t kLevelSetUpdatesPerCall = 100;
 constexpr std::uint64_t kLevelSetUpdatesPerPoint = 2000;
-constexpr std::uint64_t kLevelSetMinimumUpdates = 5000000;
+constexpr std::uint64_t kLevelSetMinimumUpdates = 2500000;
 
 /// The level set's budget after the plan @p r (its counts are its own, whichever threads share the field).
 std::uint64_t levelSetBudget(const PlannedPath &r)

@@ -226,7 +226,7 @@ TEST(LevelSet, NodeUpdateBudgetEndsTheSameSolveAtTheSameStep)
     // included); the front is then short of the goal that the solve without a budget reaches.
     auto ctx = context(std::make_shared<UniformCurrent>(0.3, 0.1), 0.5, 0, 10, -5, 5);
     LevelSetParams lp;
-    lp.cellSize = 0.05;
+    lp.cellSize = 0.1;
     const Reachability whole = LevelSetSolver(ctx, lp).solve(1.0, 0.0, 0.0, 30.0, Point2{9.0, 0.0});
     ASSERT_TRUE(whole.goalReached);
     EXPECT_FALSE(whole.stats.budgetSpent);
