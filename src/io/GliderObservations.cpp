@@ -71,6 +71,16 @@ std::vector<std::string> splitCsv(const std::string &line)
     return out;
 }
 
+/// @p fixes in time order, one per time (the first reported of a time kept)
+void sortFixes(std::vector<GliderFix> &fixes)
+{
+    std::stable_sort(fixes.begin(), fixes.end(),
+                     [](const GliderFix &a, const GliderFix &b) { return a.time < b.time; });
+    fixes.erase(std::unique(fixes.begin(), fixes.end(),
+                            [](const GliderFix &a, const GliderFix &b) { return a.time == b.time; }),
+                fixes.end());
+}
+
 /// A record's checks shared by both formats; empty when it is usable, else the reason.
 std::string check(const DacRecord &r)
 {
@@ -144,6 +154,8 @@ void readCsv(const std::string &file, GliderObservations &o)
             r.at.lon -= 360.0;
         if (!o.lastFix || r.time >= o.lastFix->time)
             o.lastFix = GliderFix{r.time, r.at};
+        if (std::isfinite(r.time) && std::isfinite(r.at.lon) && std::isfinite(r.at.lat))
+            o.fixes.push_back(GliderFix{r.time, r.at});
         if (cell("u").empty() && cell("v").empty())
             continue; // a fix without a DAC
         r.u = number("u");
@@ -281,8 +293,13 @@ GliderObservations readGliderObservations(const std::string &path)
             }
             if (p.fix && (!o.lastFix || p.fix->time > o.lastFix->time))
                 o.lastFix = p.fix;
+            if (p.fix)
+                o.fixes.push_back(*p.fix);
             if (p.dac)
+            {
                 o.dac.push_back(*p.dac);
+                o.fixes.push_back(GliderFix{p.dac->time, p.dac->at});
+            }
             else
                 ++o.rejected[p.rejected];
         }
@@ -297,6 +314,7 @@ GliderObservations readGliderObservations(const std::string &path)
         else
             unique.push_back(r);
     o.dac = std::move(unique);
+    sortFixes(o.fixes);
     if (o.dac.empty())
     {
         std::string why;

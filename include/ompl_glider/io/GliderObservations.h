@@ -40,6 +40,9 @@ struct GliderObservations
     std::string platform;             ///< the glider (IOOS `platform:id`, else `trajectory`); empty for a CSV
     std::vector<DacRecord> dac;       ///< usable records, in time order
     std::optional<GliderFix> lastFix; ///< the latest position reported (a profile's or a DAC's, a CSV row's)
+    /// every position reported (profiles' fixes, usable DAC's positions, CSV rows), in time order, one per time:
+    /// where the glider has been (the stations a resumed mission has reached, the glider's track on the map)
+    std::vector<GliderFix> fixes;
     std::map<std::string, std::size_t> rejected; ///< rejected records by reason ("QC flag 4", "fill value", ...)
 };
 
