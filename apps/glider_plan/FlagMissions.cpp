@@ -271,10 +271,11 @@ MissionSpec forecastMissionOf(Flags f)
     f.forecast.words = flagWords();
     MissionSpec m = forecastMission(f.forecast);
     applyFlags(f, m, true);
+    // the last fix as a first guess, until the mission resumes there (resumeAtLastFix())
     if (fromFix)
-        m.marks["start"] = SourceMark{"--observations", 0, Origin::Flag};  // the last fix
+        m.marks["start"] = SourceMark{"--observations", 0, Origin::Observations};
     if (departureFromFix)
-        m.marks["departure.time"] = SourceMark{"--observations", 0, Origin::Flag};
+        m.marks["departure.time"] = SourceMark{"--observations", 0, Origin::Observations};
     return m;
 }
 }  // namespace glider_plan

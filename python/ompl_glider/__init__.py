@@ -478,13 +478,17 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                                       for k, v in planner_params.items()}
     if field is not None and mission is not None:
         raise TypeError("plan(): give a mission or a field, not both")
+    start_from_fix = departure_from_fix = False
     if field is not None and field.kind == "netcdf" and start is None and observations is not None:
-        fix = _core.last_fix(os.fspath(observations))  # the glider's last fix, and its time
+        # the glider's last fix, and its time: a first guess, until the mission resumes there (the library)
+        fix = _core.last_fix(os.fspath(observations))
         if fix is None:
             raise Error("plan(): keyword 'observations': they report no position to start from")
         start = (fix[0], fix[1])
+        start_from_fix = True
         if departure is None:
             departure = fix[2]
+            departure_from_fix = True
     if field is not None and field.kind == "netcdf":
         if start is None or goal is None:
             raise TypeError("plan(): a NetCDF field needs start and goal (lon, lat, or x, y on a Cartesian grid)")
@@ -503,7 +507,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                                       region, s["variables"],
                                       s["xy_interpolation"], s["depth_interpolation"], s["time_interpolation"],
                                       s["horizon"], s["velocity_units"], s["time_units"], s["steady_record"],
-                                      s["zero_velocity_land"], s["depth_average"], bool(snap_to_water))
+                                      s["zero_velocity_land"], s["depth_average"], bool(snap_to_water),
+                                      start_from_fix, departure_from_fix)
         for used in ("start", "goal", "departure", "speed", "region"):
             keywords.pop(used)
     elif field is not None:

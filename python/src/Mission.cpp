@@ -16,6 +16,7 @@
 
 #include "Bindings.h"
 #include "ompl_glider/io/GliderObservations.h"
+#include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
@@ -91,7 +92,8 @@ MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std:
                      const std::string &xy, const std::string &depthScheme, const std::string &timeScheme,
                      const std::string &horizon, const std::string &velocityUnits, const std::string &timeUnits,
                      std::optional<std::size_t> steadyRecord, bool zeroVelocityLand,
-                     std::optional<Pair> depthAverage, bool snapToWater)
+                     std::optional<Pair> depthAverage, bool snapToWater, bool startFromFix,
+                     bool departureFromFix)
 {
     ForecastInput in;
     in.snapToWater = snapToWater;
@@ -124,6 +126,11 @@ MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std:
     }
     MissionSpec out;  // the forecast's description is read here (a URL: fetched, stopped by Ctrl-C)
     runStoppable([&] { out = forecastMission(in); });
+    // the last fix as a first guess (plan() read it from the observations), until the mission resumes there
+    if (startFromFix)
+        out.marks["start"] = SourceMark{"plan(): keyword 'observations'", 0, Origin::Observations};
+    if (departureFromFix)
+        out.marks["departure.time"] = SourceMark{"plan(): keyword 'observations'", 0, Origin::Observations};
     return out;
 }
 
@@ -409,10 +416,33 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
                 p.position.xy = {xy.first, xy.second};
                 if (d.contains("name"))
                     p.name = value<std::string>(d["name"], at + ".name", "a text");
-                if (d.contains("radius"))
-                    p.radius = value<double>(d["radius"], at + ".radius", "a number (the mission's length unit)");
-                if (d.contains("stay"))
-                    p.stay = value<double>(d["stay"], at + ".stay", "a number (the mission's time unit)");
+                // a radius and a stay as a mission file gives them: a number in the mission's unit, or a text with
+                // its unit ("500 m", "6 h")
+                if (d.contains("radius") && py::isinstance<py::str>(d["radius"]))
+                    try
+                    {
+                        p.radius = parseLength(d["radius"].cast<std::string>(), m.metresPerUnit(),
+                                               m.physicalUnits().length);
+                    }
+                    catch (const Error &e)
+                    {
+                        throw Error("plan(): keyword 'via': " + at + ".radius: " + e.what());
+                    }
+                else if (d.contains("radius"))
+                    p.radius = value<double>(d["radius"], at + ".radius",
+                                             "a number (the mission's length unit) or a length (\"500 m\")");
+                if (d.contains("stay") && py::isinstance<py::str>(d["stay"]))
+                    try
+                    {
+                        p.stay = parseDuration(d["stay"].cast<std::string>(), m.timeUnitSeconds, m.hasTimeUnit());
+                    }
+                    catch (const Error &e)
+                    {
+                        throw Error("plan(): keyword 'via': " + at + ".stay: " + e.what());
+                    }
+                else if (d.contains("stay"))
+                    p.stay = value<double>(d["stay"], at + ".stay",
+                                           "a number (the mission's time unit) or a duration (\"6 h\")");
                 if (d.contains("arrive"))
                 {
                     const auto [b, e] = value<std::pair<py::object, py::object>>(d["arrive"], at + ".arrive",
@@ -490,7 +520,9 @@ void bindMission(py::module_ &m)
           py::arg("horizon") = "refuse", py::arg("velocity_units") = "", py::arg("time_units") = "",
           py::arg("steady_record") = py::none(), py::arg("zero_velocity_land") = true,
           py::arg("depth_average") = py::none(), py::arg("snap_to_water") = false,
-          "The mission of a NetCDF forecast, as glider_plan --currents builds it.");
+          py::arg("start_from_fix") = false, py::arg("departure_from_fix") = false,
+          "The mission of a NetCDF forecast, as glider_plan --currents builds it (start and departure from the "
+          "observations' last fix: marked so, until the mission resumes there).");
     m.def("planner_names", []() {
         std::vector<std::string> names;
         for (const PlannerEntry &e : plannerRegistry())

@@ -183,6 +183,8 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
     const bool measuring = strategy == ControlStrategy::Dac || strategy == ControlStrategy::ReplanObserved;
     std::mt19937 rng(o.dacSeed);
     FlownTrack r;
+    if (measuring)
+        r.measured = o.measuredBefore;  // the earlier legs' dives
     std::vector<TimedPoint> active = plan;  // the plan flown now (replaced by each new plan)
     unsigned surfacings = 0;
     const TimedPoint &goal = plan.back();

@@ -73,13 +73,42 @@ std::vector<SpeedSweepRow> speedSweep(const MissionProblem &problem, double tDep
     return rows;
 }
 
-PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath &plan)
+namespace
+{
+/// The headings of @p route onto the waypoints @p first..@p last of @p out (the route's segment ends in turn): the
+/// heading held from each waypoint and for how long; a step that stays in place (a hold a goal window added) takes
+/// none.
+void assignHeadings(const HeadingRoute &route, const std::vector<TimedPoint> &path, std::size_t first,
+                    std::size_t last, std::vector<MissionWaypoint> &out)
+{
+    std::size_t k = 0;
+    for (std::size_t i = first; i < last && i + 1 < path.size() && k < route.segments.size(); ++i)
+    {
+        const TimedPoint &a = path[i], &b = path[i + 1];
+        if (a.x == b.x && a.y == b.y)
+            continue;
+        const double bearing = route.segments[k++].bearing;  // a planner's bearing may be < 0 or >= 360
+        out[i].heading = bearing - 360.0 * std::floor(bearing / 360.0);
+        out[i].headingDuration = b.t - a.t;
+    }
+}
+}  // namespace
+
+PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath &plan,
+                                const std::vector<PlannedLeg> &legs)
 {
     PilotWaypoints out;
     // a stint plan's legs between surfacings are not straight, nor are a heading route's: their times are the
-    // flown ones
+    // flown ones; in a mission of several legs, those of its legs flown as held headings
     const bool flown = (plan.stints && !plan.stints->converted) || plan.headingRoute();
     const auto dive = flown ? nullptr : problem.diveProfiles(plan.speed);
+    // waypoint i is reached on a leg of held headings (its time is the flown one)
+    const auto headingLeg = [&](std::size_t i) {
+        for (const PlannedLeg &l : legs)
+            if (l.plan.headingRoute() && i > l.firstPoint && i <= l.lastPoint)
+                return true;
+        return false;
+    };
     double t = plan.departure;
     for (std::size_t i = 0; i < plan.path.size(); ++i)
     {
@@ -90,16 +119,17 @@ PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath
             w.geographic = true;
             w.lonLat = problem.toGeographic(w.position);
         }
+        const bool straight = dive && !headingLeg(i);
         if (i == 0)
             w.time = plan.departure;
-        else if (dive && plan.path[i].x == plan.path[i - 1].x && plan.path[i].y == plan.path[i - 1].y)
+        else if (straight && plan.path[i].x == plan.path[i - 1].x && plan.path[i].y == plan.path[i - 1].y)
         {
-            // a hold (goal window, a lattice wait): as long as planned
+            // a hold (goal window, a lattice wait, a stay): as long as planned
             w.legTime = plan.path[i].t - plan.path[i - 1].t;
             t += w.legTime;
             w.time = t;
         }
-        else if (dive)
+        else if (straight)
         {
             const DiveLegResult leg =
                 dive->bestProfile(plan.path[i - 1].x, plan.path[i - 1].y, w.position.x, w.position.y, t);
@@ -112,27 +142,20 @@ PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath
         }
         else
         {
+            // flown as planned: a heading leg keeps its flown times (a delay before it would change its current)
             w.time = plan.path[i].t;
             w.legTime = plan.path[i].t - plan.path[i - 1].t;
+            t = std::max(t, w.time);
         }
         w.iso = problem.isoTime(w.time);
         out.waypoints.push_back(w);
     }
     if (plan.headingRoute())
-    {
-        // the heading held from each waypoint: the legs in order take the segments in order; a leg that stays in
-        // place (a hold the goal window added) takes none
-        std::size_t k = 0;
-        for (std::size_t i = 0; i + 1 < plan.path.size() && k < plan.headings->segments.size(); ++i)
-        {
-            const TimedPoint &a = plan.path[i], &b = plan.path[i + 1];
-            if (a.x == b.x && a.y == b.y)
-                continue;
-            const double bearing = plan.headings->segments[k++].bearing;  // a planner's bearing may be < 0 or >= 360
-            out.waypoints[i].heading = bearing - 360.0 * std::floor(bearing / 360.0);
-            out.waypoints[i].headingDuration = b.t - a.t;
-        }
-    }
+        assignHeadings(*plan.headings, plan.path, 0, plan.path.size() - 1, out.waypoints);
+    else
+        for (const PlannedLeg &l : legs)
+            if (l.plan.headingRoute())
+                assignHeadings(*l.plan.headings, plan.path, l.firstPoint, l.lastPoint, out.waypoints);
     out.travelTime = out.waypoints.empty() ? planning_detail::kInf : out.waypoints.back().time - plan.departure;
     return out;
 }

@@ -2,6 +2,7 @@
 // for the mission's own pair and a batch of random pairs, in parallel (in threads, or spread over the ranks of an MPI
 // job: TaskSpread.h).
 #include "ompl_glider/mission/MissionExecution.h"
+#include "ompl_glider/mission/MissionLegs.h"
 
 #include <algorithm>
 #include <atomic>
@@ -125,6 +126,113 @@ ObservedReplanner observedReplanner(const MissionProblem &problem, Point2 goal, 
     };
 }
 
+/// The settings of one flight of @p run's plan (or a leg of it) with @p settings.
+ExecutionOptions flightOptions(const MissionProblem &problem, const ExecutionResult &settings, double radius)
+{
+    const MissionSpec &m = problem.getSpec();
+    ExecutionOptions o;
+    o.surfacingInterval = settings.surfacingInterval;
+    o.step = settings.step;
+    o.radius = radius;
+    o.depth = m.vehicle.depth;
+    o.replanEvery = settings.replanEvery;
+    o.dacNoise = m.execution.dacNoise;
+    o.correction = problem.correctionParams();
+    return o;
+}
+
+/// Flies a mission of several legs with strategy @p s: each leg's plan re-timed from the glider's fix, its station
+/// the goal, holds at the stations (window, stay), the legs' flights joined into one track.
+FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &settings, const ExecutionRun &run,
+                      ControlStrategy s)
+{
+    const MissionSpec &m = problem.getSpec();
+    const ExecutionSpec &e = m.execution;
+    const double speed = m.vehicle.speed;
+    const double planned = run.plan.back().t - run.plan.front().t;
+    const double end = std::min(run.plan.front().t + (std::isnan(e.duration) ? 2.0 * planned : e.duration),
+                                problem.getTruth()->timeEnd());
+    FlownTrack out;
+    out.plannedArrival = run.plan.back().t;
+    out.fixes.push_back(run.plan.front());
+    out.track.push_back(run.plan.front());
+    std::vector<DacObservation> measured;
+    TimedPoint at = run.plan.front();
+    std::size_t first = 0;  // the leg's first point in the plan
+    for (std::size_t k = 0; k < run.legs.size(); ++k)
+    {
+        const bool last = k + 1 == run.legs.size();
+        const ExecutionLeg &leg = run.legs[k];
+        const Point2 to = last ? run.goal : settings.stops[k].at;
+        const double radius = last ? run.radius : settings.stops[k].radius;
+        // the leg as planned, flown from where and when the glider is (the plan's own times where it is on time)
+        std::vector<TimedPoint> legPlan(run.plan.begin() + static_cast<std::ptrdiff_t>(first),
+                                        run.plan.begin() + static_cast<std::ptrdiff_t>(leg.end) + 1);
+        if (at.x != legPlan.front().x || at.y != legPlan.front().y || at.t != legPlan.front().t)
+        {
+            std::vector<TimedPoint> moved = continuation(problem, at.x, at.y, at.t, legPlan);
+            legPlan = !moved.empty() ? std::move(moved)
+                                     : std::vector<TimedPoint>{at, {to.x, to.y, at.t + (legPlan.back().t -
+                                                                                        legPlan.front().t)}};
+        }
+        ExecutionOptions o = flightOptions(problem, settings, radius);
+        o.endTime = end;
+        o.headings = leg.headings && at.x == leg.headings->start.x && at.y == leg.headings->start.y &&
+                             at.t == leg.headings->departure
+                         ? &*leg.headings
+                         : nullptr;  // held headings from where they were planned to begin
+        o.measuredBefore = measured;
+        if (s == ControlStrategy::Replan)
+            o.replan = replanner(problem, to, settings.surfacingInterval);
+        if (s == ControlStrategy::ReplanObserved)
+            o.replanObserved = observedReplanner(problem, to, settings.surfacingInterval);
+        // planned_headings on a leg of straight legs (or one begun elsewhere) steers as current_sensitive does
+        const ControlStrategy flown = s == ControlStrategy::PlannedHeadings && !o.headings
+                                          ? ControlStrategy::CurrentSensitive
+                                          : s;
+        const FlownTrack f = flyPlan(legPlan, speed, *problem.getField(), *problem.getTruth(),
+                                     problem.getEnvironment().get(), flown, o);
+        out.fixes.insert(out.fixes.end(), f.fixes.begin() + 1, f.fixes.end());
+        out.track.insert(out.track.end(), f.track.begin() + 1, f.track.end());
+        out.headings.insert(out.headings.end(), f.headings.begin(), f.headings.end());
+        out.replans += f.replans;
+        measured = f.measured;
+        out.grounded = f.grounded;
+        out.groundedWhy = f.groundedWhy;
+        if (!f.reached)
+            break;
+        at = f.track.back();
+        if (last)
+        {
+            out.reached = out.windowsMissed == 0;
+            out.arrivalTime = f.arrivalTime;
+            break;
+        }
+        const ExecutionStop &stop = settings.stops[k];
+        ++out.stationsReached;
+        if (stop.window && f.arrivalTime > stop.windowEnd)
+            ++out.windowsMissed;
+        // held in place until the window opens, then for the stay
+        const double leave = std::max(at.t, stop.window ? stop.windowBegin : at.t) + stop.stay;
+        if (leave > at.t)
+        {
+            at.t = leave;
+            out.fixes.push_back(at);
+            out.track.push_back(at);
+        }
+        first = leg.end;
+    }
+    out.measured = std::move(measured);
+    const TimedPoint endPoint = out.track.back();
+    const TimedPoint then = planAt(out.track, out.plannedArrival);
+    out.finalDistance = std::hypot(then.x - run.goal.x, then.y - run.goal.y);
+    const double flownFor = endPoint.t - run.plan.front().t;
+    out.madeGoodSpeed = flownFor > 0.0 ? std::hypot(endPoint.x - run.plan.front().x, endPoint.y - run.plan.front().y) /
+                                             flownFor
+                                       : 0.0;
+    return out;
+}
+
 /// Flies one planned run with every strategy.
 void flyRun(const MissionProblem &problem, const ExecutionResult &settings, ExecutionRun &run)
 {
@@ -132,14 +240,15 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
     const ExecutionSpec &e = m.execution;
     const double speed = m.vehicle.speed;
     const double planned = run.plan.back().t - run.plan.front().t;
-    ExecutionOptions o;
-    o.surfacingInterval = settings.surfacingInterval;
-    o.step = settings.step;
-    o.radius = run.radius;
-    o.depth = m.vehicle.depth;
+    if (!run.legs.empty())
+    {
+        for (ControlStrategy s : settings.strategies)
+            run.flown.push_back(flyMission(problem, settings, run, s));
+        return;
+    }
+    ExecutionOptions o = flightOptions(problem, settings, run.radius);
     o.endTime = std::min(run.plan.front().t + (std::isnan(e.duration) ? 2.0 * planned : e.duration),
                          problem.getTruth()->timeEnd());  // never beyond the truth (checkTruthTimes())
-    o.replanEvery = settings.replanEvery;
     o.headings = run.headings ? &*run.headings : nullptr;
     for (ControlStrategy s : settings.strategies)
     {
@@ -147,8 +256,6 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
             o.replan = replanner(problem, run.goal, settings.surfacingInterval);
         if (s == ControlStrategy::ReplanObserved)
             o.replanObserved = observedReplanner(problem, run.goal, settings.surfacingInterval);
-        o.dacNoise = e.dacNoise;
-        o.correction = problem.correctionParams();
         run.flown.push_back(flyPlan(run.plan, speed, *problem.getField(), *problem.getTruth(),
                                     problem.getEnvironment().get(), s, o));
     }
@@ -230,6 +337,30 @@ void getPoints(ByteReader &r, std::vector<TimedPoint> &v)
     });
 }
 
+void putHeadings(ByteWriter &w, const HeadingRoute &h)
+{
+    w.put(h.start.x);
+    w.put(h.start.y);
+    w.put(h.departure);
+    w.put(h.step);
+    w.putEach(h.segments, [](ByteWriter &o, const HeadingSegment &g) {
+        o.put(g.bearing);
+        o.put(g.duration);
+    });
+}
+
+void getHeadings(ByteReader &r, HeadingRoute &h)
+{
+    r.get(h.start.x);
+    r.get(h.start.y);
+    r.get(h.departure);
+    r.get(h.step);
+    r.getEach(h.segments, [](ByteReader &i, HeadingSegment &g) {
+        i.get(g.bearing);
+        i.get(g.duration);
+    });
+}
+
 /// An execution run as bytes (every bit of its numbers), for the processes of a job.
 std::string packRun(const ExecutionRun &run)
 {
@@ -239,17 +370,13 @@ std::string packRun(const ExecutionRun &run)
     putPoints(w, run.plan);
     w.put(run.headings.has_value());
     if (run.headings)
-    {
-        const HeadingRoute &h = *run.headings;
-        w.put(h.start.x);
-        w.put(h.start.y);
-        w.put(h.departure);
-        w.put(h.step);
-        w.putEach(h.segments, [](ByteWriter &o, const HeadingSegment &g) {
-            o.put(g.bearing);
-            o.put(g.duration);
-        });
-    }
+        putHeadings(w, *run.headings);
+    w.putEach(run.legs, [](ByteWriter &o, const ExecutionLeg &l) {
+        o.put(static_cast<std::uint64_t>(l.end));
+        o.put(l.headings.has_value());
+        if (l.headings)
+            putHeadings(o, *l.headings);
+    });
     w.putEach(run.flown, [](ByteWriter &o, const FlownTrack &f) {
         putPoints(o, f.fixes);
         putPoints(o, f.track);
@@ -262,6 +389,8 @@ std::string packRun(const ExecutionRun &run)
         o.put(f.groundedWhy);
         o.put(f.madeGoodSpeed);
         o.put(f.replans);
+        o.put(static_cast<std::uint64_t>(f.stationsReached));
+        o.put(static_cast<std::uint64_t>(f.windowsMissed));
     });
     return w.take();
 }
@@ -275,16 +404,18 @@ void unpackRun(const std::string &bytes, ExecutionRun &run)
     if (r.value<bool>())
     {
         HeadingRoute h;
-        r.get(h.start.x);
-        r.get(h.start.y);
-        r.get(h.departure);
-        r.get(h.step);
-        r.getEach(h.segments, [](ByteReader &i, HeadingSegment &g) {
-            i.get(g.bearing);
-            i.get(g.duration);
-        });
+        getHeadings(r, h);
         run.headings = h;
     }
+    r.getEach(run.legs, [](ByteReader &i, ExecutionLeg &l) {
+        l.end = static_cast<std::size_t>(i.value<std::uint64_t>());
+        if (i.value<bool>())
+        {
+            HeadingRoute h;
+            getHeadings(i, h);
+            l.headings = h;
+        }
+    });
     r.getEach(run.flown, [](ByteReader &i, FlownTrack &f) {
         getPoints(i, f.fixes);
         getPoints(i, f.track);
@@ -297,6 +428,8 @@ void unpackRun(const std::string &bytes, ExecutionRun &run)
         i.get(f.groundedWhy);
         i.get(f.madeGoodSpeed);
         i.get(f.replans);
+        f.stationsReached = static_cast<std::size_t>(i.value<std::uint64_t>());
+        f.windowsMissed = static_cast<std::size_t>(i.value<std::uint64_t>());
     });
 }
 /// What each strategy did over the runs flown.
@@ -399,7 +532,8 @@ std::vector<std::pair<Point2, Point2>> executionPairs(const MissionProblem &prob
     return pairs;
 }
 
-ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath &plan, const ProgressSink &progress)
+ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath &plan,
+                               const std::vector<ExecutionLeg> &legs, const ProgressSink &progress)
 {
     const auto t0 = std::chrono::steady_clock::now();
     const MissionSpec &m = problem.getSpec();
@@ -413,7 +547,10 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         r.strategies.push_back(*s);
     }
     // a heading route is flown by its own headings too, unless the mission lists its strategies
-    if (plan.headingRoute() && e.strategies == ExecutionSpec().strategies)
+    bool headingLegs = false;
+    for (const ExecutionLeg &l : legs)
+        headingLegs = headingLegs || l.headings.has_value();
+    if ((plan.headingRoute() || headingLegs) && e.strategies == ExecutionSpec().strategies)
         r.strategies.insert(r.strategies.begin(), ControlStrategy::PlannedHeadings);
     r.truth = e.truth ? problem.getTruth()->name() : "forecast";
     const double trip = plan.solved ? plan.path.back().t - plan.departure : problem.minTripDuration(m.vehicle.speed);
@@ -452,17 +589,48 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         const double d = std::hypot(run.goal.x - run.start.x, run.goal.y - run.start.y);
         run.radius = std::isnan(e.radius) ? 0.01 * d : e.radius;
     }
+    // a mission of several legs: its via points are the stations of every run
+    const std::vector<Point2> &via = problem.getViaPoints();
+    if (!m.waypoints.empty())
+        for (std::size_t i = 0; i < via.size(); ++i)
+        {
+            const ViaPointSpec &v = m.waypoints[i];
+            ExecutionStop stop;
+            stop.name = v.name;
+            stop.at = via[i];
+            // the via point's radius, else the goal's (execution.radius, or 1 % of the start-goal distance)
+            stop.radius = std::isfinite(v.radius) ? v.radius : r.runs[0].radius;
+            stop.window = v.arrive.set;
+            stop.windowBegin = v.arrive.begin;
+            stop.windowEnd = v.arrive.end;
+            stop.stay = v.stay;
+            r.stops.push_back(stop);
+        }
     if (plan.solved)
     {
         r.runs[0].planned = true;
         r.runs[0].plan = plan.path;
         r.runs[0].headings = plan.headings;
+        r.runs[0].legs = legs;
     }
     else
         r.runs[0].reason = plan.reason;
 
     const auto planAndFly = [&](ExecutionRun &run) {
-        if (run.index > 0)
+        if (run.index > 0 && !r.stops.empty())
+        {
+            // a pair of the batch planned as the mission is: through the same stations, in the mission's order
+            const MissionPlan p = planMission(problem.withEndpoints(run.start, run.goal), run.departure);
+            run.planned = p.plan.solved;
+            run.reason = p.plan.reason;
+            if (p.plan.solved)
+            {
+                run.plan = p.plan.path;
+                for (const PlannedLeg &l : p.legs)
+                    run.legs.push_back({l.lastPoint, l.plan.headings});
+            }
+        }
+        else if (run.index > 0)
         {
             const PlannedPath p = planRoute(problem.withEndpoints(run.start, run.goal), run.departure);
             run.planned = p.solved;

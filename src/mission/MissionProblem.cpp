@@ -27,6 +27,9 @@
 #include "ompl_glider/environment/TimeWindowedZone.h"
 #include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/io/Time.h"
+#if OMPL_GLIDER_WITH_NETCDF
+#include "ompl_glider/mission/Observations.h"
+#endif
 
 namespace ompl_glider
 {
@@ -178,6 +181,16 @@ MissionProblem::~MissionProblem() = default;
 
 MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
 {
+#if OMPL_GLIDER_WITH_NETCDF
+    try
+    {
+        resumeAtLastFix(spec_);  // replanning at sea: from the glider's last fix, through the stations left
+    }
+    catch (const Error &e)
+    {
+        throw Error(spec_.place("observations") + ": " + e.what());
+    }
+#endif
     buildField();
     buildMembers();
     buildTruth();
@@ -293,14 +306,18 @@ Point2 MissionProblem::toLocal(LonLat g) const
 
 std::string MissionProblem::isoTime(double t) const
 {
-    if (!spec_.epoch || !std::isfinite(t))
+    return spec_.isoTime(t);
+}
+
+std::string MissionSpec::isoTime(double t) const
+{
+    if (!epoch || !std::isfinite(t))
         return "";
-    const double s = (spec_.fileCalendar ? spec_.fileCalendar->originSeconds : *spec_.epoch) +
-                     t * spec_.timeUnitSeconds;
-    if (spec_.fileCalendar)  // a dated forecast's own calendar: a climatology's year 0, a noleap or 360_day year
-        return formatCalendarTime(s, spec_.fileCalendar->calendar);
+    const double s = (fileCalendar ? fileCalendar->originSeconds : *epoch) + t * timeUnitSeconds;
+    if (fileCalendar)  // a dated forecast's own calendar: a climatology's year 0, a noleap or 360_day year
+        return formatCalendarTime(s, fileCalendar->calendar);
     if (!isoYearInRange(s))
-        throw Error(spec_.place("epoch") + ": t = " + text::number(t) + " falls outside the years 0000-9999, which "
+        throw Error(place("epoch") + ": t = " + text::number(t) + " falls outside the years 0000-9999, which "
                     "ISO 8601 dates are written in (choose an earlier epoch or a shorter horizon)");
     return formatIsoTime(s);
 }

@@ -356,10 +356,6 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     checkPlanner(problem, m.departure.window ? m.departure.begin : m.departure.time);
     checkGoalWindow(problem);
     checkViaWindows(problem);
-    if (!m.waypoints.empty() && m.execution.enabled)
-        throw Error(m.place("execution") + ": flying a plan in another ocean follows one leg to the goal; a mission "
-                                           "with via points ('waypoints') is not flown by the execution strategies "
-                                           "yet: plan it without 'execution', or fly each leg as its own mission");
     const double tDep = chooseDeparture(problem, options, result);
     if (result.departureSearch && !result.departureSearch->found)
     {
@@ -382,7 +378,7 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
         diagnoseNoPath(problem, tDep, result.plan);  // (each leg of a longer mission was diagnosed as planned)
     if (result.plan.solved)
     {
-        PilotWaypoints w = missionWaypoints(problem, result.plan);
+        PilotWaypoints w = missionWaypoints(problem, result.plan, result.legs);
         result.waypoints = std::move(w.waypoints);
         for (const PlannedLeg &l : result.legs)
             for (std::size_t i = l.firstPoint; i <= l.lastPoint && i < result.waypoints.size(); ++i)
@@ -425,7 +421,12 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     if (!speeds.empty())
         result.speedSweep = speedSweep(problem, tDep, speeds, options.progress);
     if (m.execution.enabled)
-        result.execution = executeMission(problem, result.plan, options.progress);
+    {
+        std::vector<ExecutionLeg> legs;  // a mission of several legs: each leg's end and held headings
+        for (const PlannedLeg &l : result.legs)
+            legs.push_back({l.lastPoint, l.plan.headings});
+        result.execution = executeMission(problem, result.plan, legs, options.progress);
+    }
     if (m.outputs.wants(OutputFormatId::Isochrones))
         result.isochrones = computeIsochrones(problem, result.plan, tDep, m.outputs.isochroneInterval);
     result.wallSeconds = secondsSince(start);

@@ -40,7 +40,7 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
 {
     std::string s = "run,strategy,start_x,start_y,start_lon,start_lat,goal_x,goal_y,goal_lon,goal_lat,departure,"
                     "planned_arrival,final_distance,arrival_time,arrival_iso,reached,grounded,made_good_speed,"
-                    "surfacings,replans,radius,reason\n";
+                    "surfacings,replans,radius,reason,stations_reached,windows_missed\n";
     for (const ExecutionRun &run : e.runs)
     {
         const std::string head = std::to_string(run.index) + ",";
@@ -52,7 +52,7 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
             for (char &c : reason)
                 if (c == ',' || c == '\n' || c == '"')
                     c = ';';
-            s += head + "none," + ends + ",,,,,,,,,," + num(run.radius) + "," + reason + "\n";
+            s += head + "none," + ends + ",,,,,,,,,," + num(run.radius) + "," + reason + ",,\n";
             continue;
         }
         for (std::size_t k = 0; k < e.strategies.size(); ++k)
@@ -63,7 +63,10 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
                  (std::isfinite(f.arrivalTime) ? problem.isoTime(f.arrivalTime) : std::string()) + "," +
                  (f.reached ? "1" : "0") + "," + (f.grounded ? "1" : "0") + "," + num(f.madeGoodSpeed) + "," +
                  std::to_string(f.fixes.empty() ? 0 : f.fixes.size() - 1) + "," + std::to_string(f.replans) + "," +
-                 num(run.radius) + ",\n";
+                 num(run.radius) + ",," +
+                 (e.stops.empty() ? std::string(",") : std::to_string(f.stationsReached) + "," +
+                                                       std::to_string(f.windowsMissed)) +
+                 "\n";
         }
     }
     return s;

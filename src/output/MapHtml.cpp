@@ -14,6 +14,11 @@
 #include "ompl_glider/environment/KeepOffZone.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
+#include "ompl_glider/Config.h"
+#include "ompl_glider/io/Time.h"
+#if OMPL_GLIDER_WITH_NETCDF
+#include "ompl_glider/mission/Observations.h"
+#endif
 
 namespace ompl_glider
 {
@@ -301,6 +306,35 @@ json tracksJson(const MissionResult &r, const Frame &f)
     return out;
 }
 
+/// The glider's history with observations: its past fixes and the DAC it measured (lon/lat), and the arrows' scale:
+/// the fastest DAC drawn a twelfth of the region's height long. Null without observations.
+json gliderJson(const MissionProblem &p)
+{
+#if OMPL_GLIDER_WITH_NETCDF
+    const auto &o = p.observations();
+    if (!o || !p.isGeographic())
+        return nullptr;
+    json fixes = json::array(), dac = json::array();
+    for (const GliderFix &g : o->fixes)
+        fixes.push_back({{"lat", g.at.lat}, {"lon", g.at.lon}, {"time", formatIsoTime(g.time)}});
+    double fastest = 0.0;
+    for (const DacRecord &d : o->dac)
+    {
+        dac.push_back({{"lat", d.at.lat}, {"lon", d.at.lon}, {"u", d.u}, {"v", d.v}, {"time", formatIsoTime(d.time)}});
+        fastest = std::max(fastest, std::hypot(d.u, d.v));
+    }
+    const Region &b = p.getBox();
+    const double height = std::abs(p.toGeographic({0.5 * (b.xMin + b.xMax), b.yMax}).lat -
+                                   p.toGeographic({0.5 * (b.xMin + b.xMax), b.yMin}).lat);
+    return {{"fixes", fixes},
+            {"dac", dac},
+            {"arrow_deg_per_ms", fastest > 0.0 ? height / 12.0 / fastest : 0.05}};
+#else
+    (void)p;
+    return nullptr;
+#endif
+}
+
 /// JSON as a <script> may hold it: '<' written \u003c (no "</script" nor "<!--"), U+2028/U+2029 escaped.
 std::string scriptSafe(const std::string &s)
 {
@@ -381,6 +415,7 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
     d["keep_off"] = std::move(band);
     d["forbidden"] = std::move(forbidden);
     d["tracks"] = tracksJson(r, f);
+    d["glider"] = gliderJson(p);
     const Region &b = p.getBox();
     json lo = f.at({b.xMin, b.yMin}), hi = f.at({b.xMax, b.yMax});
     for (const Point2 q : {Point2{b.xMin, b.yMax}, Point2{b.xMax, b.yMin}, Point2{0.5 * (b.xMin + b.xMax), b.yMin},

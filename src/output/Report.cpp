@@ -3,7 +3,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ompl_glider/Config.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
+#if OMPL_GLIDER_WITH_NETCDF
+#include "ompl_glider/mission/Observations.h"
+#endif
 #include "../io/NumberText.h"
 
 namespace ompl_glider
@@ -33,8 +37,10 @@ std::string lengthText(const MissionSpec &m, double d)
 
 void printWaypoints(std::ostream &out, const MissionResult &r)
 {
-    // a heading route: the heading held from each waypoint and for how long
-    const bool headings = r.plan.headingRoute();
+    // a heading route (or a mission's legs of held headings): the heading held from each waypoint and for how long
+    bool headings = false;
+    for (const MissionWaypoint &w : r.waypoints)
+        headings = headings || std::isfinite(w.heading);
     out << format("%4s %12s %12s %11s %10s %14s %22s %16s", "#", "x", "y", "lon", "lat", "arrival", "arrival (UTC)",
                   "dive profile");
     out << (headings ? format(" %11s %12s\n", "heading", "held for") : std::string("\n"));
@@ -49,7 +55,10 @@ void printWaypoints(std::ostream &out, const MissionResult &r)
                       w.geographic ? format("%.6f", w.lonLat.lat).c_str() : "", num(w.time).c_str(), w.iso.c_str(),
                       prof.c_str());
         if (headings && std::isfinite(w.heading))
-            out << format(" %11s %12s\n", format("%.1f deg", w.heading).c_str(), num(w.headingDuration).c_str());
+            out << format(" %11s %12s\n", format("%.1f deg", w.heading).c_str(),
+                          (r.spec.physicalUnits().time ? format("%.2f h", w.headingDuration * r.spec.timeUnitSeconds / 3600.0)
+                                                       : num(w.headingDuration))
+                              .c_str());
         else
             out << "\n";
     }
@@ -101,9 +110,20 @@ void printLegs(std::ostream &out, const MissionResult &r)
     }
 }
 
-/// The route's kind: held headings or straight legs, and the switch to another planner.
-void printRouteModel(std::ostream &out, const PlannedPath &p, const MissionSpec &m)
+/// A plan's route kind: "held headings (63 segments)" or "straight legs (12 legs)".
+std::string routeKind(const PlannedPath &p)
 {
+    if (p.headingRoute())
+        return format("held headings (%zu segments)", p.headings->segments.size());
+    return format("straight legs (%zu legs)", p.path.empty() ? std::size_t{0} : p.path.size() - 1);
+}
+
+/// The route's kind (of each leg in a mission of several legs): held headings or straight legs, and the switch to
+/// another planner.
+void printRouteModel(std::ostream &out, const MissionResult &r)
+{
+    const PlannedPath &p = r.plan;
+    const MissionSpec &m = r.spec;
     // a duration as a pilot reads it (days and hours, the seconds beside them) where the mission has a time unit
     const auto span = [&](double t) {
         return m.physicalUnits().time ? text::durationText(t * m.timeUnitSeconds) : format("%.6f", t);
@@ -112,16 +132,20 @@ void printRouteModel(std::ostream &out, const PlannedPath &p, const MissionSpec 
         out << "Switched:           " << p.switchReason << "; planned with " << p.planner << "\n";
     if (!p.solved)
         return;
-    if (p.headingRoute())
-        out << "Route:              held headings (" << p.headings->segments.size() << " segments)\n";
-    else
-        out << "Route:              straight legs (" << (p.path.empty() ? 0 : p.path.size() - 1) << " legs)\n";
+    if (r.legs.empty())
+        out << "Route:              " << routeKind(p) << "\n";
+    for (const PlannedLeg &l : r.legs)  // each leg as it is flown (and written in the pilot files)
+        out << (l.index == 0 ? "Route:              " : "                    ") << "leg " << l.index + 1 << " ("
+            << l.from << " -> " << l.to << "): " << routeKind(l.plan) << "\n";
     if (p.solved && p.reflown && std::isfinite(p.plannerTravelTime))
         out << "Re-flight:          " << span(p.reflownTravelTime) << " (the planner's own legs: "
             << span(p.plannerTravelTime)
             << format(", %+.2e relative)\n", (p.plannerTravelTime - p.reflownTravelTime) / p.reflownTravelTime);
     else if (p.solved && p.reflown)
-        out << "Re-flight:          " << span(p.reflownTravelTime) << format(", ends %.3g from the goal\n", p.reflownEndDistance);
+        out << "Re-flight:          " << span(p.reflownTravelTime) << ", ends " +
+                   (m.physicalUnits().length ? format("%.3g m", p.reflownEndDistance * m.metresPerUnit())
+                                             : format("%.3g", p.reflownEndDistance)) +
+                   " from the goal\n";
     if (p.solved && !p.reflightNote.empty())
         out << "Re-flight note:     " << p.reflightNote << "\n";
 }
@@ -191,9 +215,13 @@ void printReport(std::ostream &out, const MissionResult &r)
     }
     const std::string iso = r.waypoints.empty() ? r.departureIso : r.waypoints.front().iso;
     out << "Departure:          " << num(p.departure) << (iso.empty() ? "" : " (" + iso + ")") << "\n";
+#if OMPL_GLIDER_WITH_NETCDF
+    if (const std::string resumed = resumeNote(m); !resumed.empty())
+        out << "Resumed:            " << resumed << "\n";
+#endif
     out << "Status:             " << statusText(p.status) << (p.solved ? "" : "\nReason:             " + p.reason)
         << "\n";
-    printRouteModel(out, p, m);
+    printRouteModel(out, r);
     printGlobalCheck(out, p, m);
     if (!r.safetyNote.empty())
         out << "Depth limit:        " << r.safetyNote << "\n";
@@ -216,7 +244,8 @@ void printReport(std::ostream &out, const MissionResult &r)
             if (m.goalWindow.set)
                 out << " in the window [" << num(m.goalWindow.begin) << ", " << num(m.goalWindow.end) << "]";
             out << "\n";
-            out << "Holding:            " << num(p.holdTime)
+            out << "Holding:            "
+                << (m.physicalUnits().time ? text::durationText(p.holdTime * m.timeUnitSeconds) : num(p.holdTime))
                 << (p.arrivalTiming.empty() ? std::string() : " (" + p.arrivalTiming + ")") << "\n";
         }
         if (r.diveProfiles)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -35,7 +36,7 @@ std::string heldFor(const MissionResult &r, double t)
     if (!r.spec.physicalUnits().time)
         return text::number(t, 4);
     char buf[48];
-    std::snprintf(buf, sizeof buf, "%.2f h", t * r.spec.timeUnitSeconds / 3600.0);
+    std::snprintf(buf, sizeof buf, "%.4f h", t * r.spec.timeUnitSeconds / 3600.0);  // to a third of a second
     return buf;
 }
 }  // namespace
@@ -276,9 +277,9 @@ std::string routeGeoJson(const MissionResult &r, const MissionProblem *problem)
             props["climb_to"] = jnum(w.dive.climbTo);
             props["dive_to"] = jnum(w.dive.diveTo);
         }
-        if (r.plan.headingRoute())
+        if (r.plan.headingRoute() || std::isfinite(w.heading))
         {
-            // the heading held from this waypoint (null at the last one)
+            // the heading held from this waypoint (null at the last one; a mission's legs of held headings)
             props["heading_deg"] = jnum(w.heading);
             props["segment_duration"] = jnum(w.headingDuration);
         }
@@ -319,6 +320,24 @@ bool legAllowed(const MissionResult &r, const MissionProblem *problem, std::size
         return false;
     const auto &env = problem->getEnvironment();
     return !env || env->legFree(p.position.x, p.position.y, p.time, q.position.x, q.position.y, q.time);
+}
+
+/// The straight leg from waypoint @p a to @p b, flown as the glider flies a goto list's leg (the fastest straight
+/// travel time, retimePath()), arrives when the planned waypoints do: within 0.1 % of their time or half a minute, so
+/// that a thinned list still arrives when the summary says (nothing to check without the problem).
+bool legKeepsTime(const MissionResult &r, const MissionProblem *problem, std::size_t a, std::size_t b)
+{
+    if (!problem)
+        return true;
+    const MissionWaypoint &p = r.waypoints[a], &q = r.waypoints[b];
+    const std::vector<TimedPoint> flown = retimePath(*problem, problem->getField(), r.plan.speed,
+                                                     {{p.position.x, p.position.y, p.time},
+                                                      {q.position.x, q.position.y, q.time}});
+    if (flown.size() != 2)
+        return false;
+    const double planned = q.time - p.time;
+    const double tolerance = std::max(1e-3 * planned, 30.0 / r.spec.timeUnitSeconds);
+    return std::abs((flown.back().t - flown.front().t) - planned) <= tolerance;
 }
 }  // namespace
 
@@ -372,12 +391,55 @@ std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const Missi
         bool drop = std::abs(std::remainder(courseDeg(at(i), at(i + 1)) - courseDeg(at(k), at(i)), 360.0)) <= turn;
         for (std::size_t j = k + 1; drop && j <= i; ++j)
             drop = offsetFrom(at(j), at(k), at(i + 1)) <= tolerance;
-        if (!(drop && legAllowed(r, problem, k, i + 1)))
+        if (!(drop && legAllowed(r, problem, k, i + 1) && legKeepsTime(r, problem, k, i + 1)))
             kept.push_back(i);
     }
     if (n > 1)
         kept.push_back(n - 1);
     return kept;
+}
+
+std::string headingNote(const MissionResult &r, std::size_t i)
+{
+    // the heading held on the way to waypoint i: the one held from the waypoint before
+    if (i == 0 || i >= r.waypoints.size() || !std::isfinite(r.waypoints[i - 1].heading))
+        return "";
+    const MissionWaypoint &from = r.waypoints[i - 1];
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "to here: hold heading %05.1f deg for %s", from.heading,
+                  heldFor(r, from.headingDuration).c_str());
+    return buf;
+}
+
+std::optional<StationStay> stayAt(const MissionResult &r, std::size_t i)
+{
+    for (std::size_t k = 0; k + 1 < r.legs.size(); ++k)
+    {
+        const PlannedLeg &l = r.legs[k];
+        if (l.lastPoint != i || !(l.stay > 0.0) || i + 1 >= r.waypoints.size())
+            continue;
+        StationStay s;
+        s.name = l.to;
+        s.arrival = r.waypoints[i].time;
+        s.duration = l.stay;
+        s.leave = r.waypoints[i + 1].time; // the hold's end: the next waypoint, at the same place
+        s.leaveIso = r.waypoints[i + 1].iso;
+        s.radius = r.spec.outputs.gotoWptDist;
+        if (l.toVia >= 0 && std::isfinite(r.spec.waypoints[l.toVia].radius))
+            s.radius = r.spec.waypoints[l.toVia].radius * r.spec.metresPerUnit();
+        return s;
+    }
+    return std::nullopt;
+}
+
+std::string stayNote(const MissionResult &r, const StationStay &s)
+{
+    char radius[32];
+    std::snprintf(radius, sizeof radius, "%.0f m", std::max(1.0, std::round(s.radius)));
+    return "stay at " + s.name + ": hold within " + (r.spec.physicalUnits().length ? std::string(radius) :
+                                                     text::number(s.radius / r.spec.metresPerUnit()))
+           + " for " + heldFor(r, s.duration) + ", leave at " +
+           (s.leaveIso.empty() ? text::number(s.leave, 10) : s.leaveIso);
 }
 
 GotoList gotoList(const MissionResult &r, const MissionProblem *problem)
@@ -394,24 +456,14 @@ GotoList gotoList(const MissionResult &r, const MissionProblem *problem)
         if (i == 0 && !r.spec.outputs.gotoIncludeStart)
             continue;
         g.waypoints.push_back({r.waypoints[i].lonLat.lon, r.waypoints[i].lonLat.lat});
-        if (r.plan.headingRoute())
-        {
-            // the heading held on the way to this waypoint: the one held from the waypoint before
-            const MissionWaypoint *from = i > 0 ? &r.waypoints[i - 1] : nullptr;
-            std::string note;
-            if (from && std::isfinite(from->heading))
-            {
-                char buf[128];
-                std::snprintf(buf, sizeof buf, "to here: hold heading %05.1f deg for %s", from->heading,
-                              heldFor(r, from->headingDuration).c_str());
-                note = buf;
-            }
-            else if (i == 0)
-                note = "start";
-            else
-                note = "hold in place";
-            g.notes.push_back(note);
-        }
+        // how the glider flies to this waypoint where it is not a straight leg: the heading to hold
+        std::string note = headingNote(r, i);
+        if (note.empty() && r.plan.headingRoute())
+            note = i == 0 ? "start" : "hold in place";
+        if (const auto stay = stayAt(r, i))
+            note += (note.empty() ? "" : "; then ") + stayNote(r, *stay);
+        g.notes.resize(g.waypoints.size());
+        g.notes.back() = note;
     }
     return g;
 }

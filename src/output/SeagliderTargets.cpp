@@ -75,6 +75,9 @@ std::vector<SeagliderTarget> seagliderTargets(const MissionResult &r, const Miss
             while (used.count(t.name));
         if (!out.empty() && out.back().name == t.name)
             continue; // the end of a stay at the via point just listed
+        t.note = headingNote(r, i);
+        if (const auto stay = stayAt(r, i))
+            t.note += (t.note.empty() ? "" : "; then ") + stayNote(r, *stay);
         used.insert(t.name);
         out.push_back(t);
     }
@@ -92,6 +95,8 @@ std::string formatSeagliderTargets(const std::vector<SeagliderTarget> &targets, 
     {
         char radius[32];
         std::snprintf(radius, sizeof radius, "%.0f", std::max(1.0, std::round(t.radius)));
+        if (!t.note.empty())
+            s += "/ " + text::oneLine(t.note) + "\n";
         s += t.name + " lat=" + seagliderLatitude(t.position.lat) + " lon=" + seagliderLongitude(t.position.lon) +
              " radius=" + radius + " goto=" + t.next + "\n";
     }

@@ -108,12 +108,26 @@ GotoList parseGotoList(const std::string &text, const std::string &source)
     int lineNo = 0;
     long declared = -1;
     bool sawBehavior = false;
+    std::string pending;  // a comment line just before a waypoint: its note
     auto fail = [&](const std::string &what) {
         throw Error(source + ":" + std::to_string(lineNo) + ": " + what);
     };
     while (std::getline(in, line))
     {
         ++lineNo;
+        if (block == Block::Waypoints)
+        {
+            const auto first = line.find_first_not_of(" \t");
+            if (first != std::string::npos && line[first] == '#')
+            {
+                pending = line.substr(line.find_first_not_of(" \t", first + 1) == std::string::npos
+                                          ? line.size()
+                                          : line.find_first_not_of(" \t", first + 1));
+                while (!pending.empty() && (pending.back() == '\r' || pending.back() == ' '))
+                    pending.pop_back();
+                continue;
+            }
+        }
         const auto hash = line.find('#');
         if (hash != std::string::npos)
             line.erase(hash);
@@ -177,6 +191,12 @@ GotoList parseGotoList(const std::string &text, const std::string &source)
             try
             {
                 list.waypoints.push_back({parseDegMin(first), parseDegMin(lat)});
+                if (!pending.empty())
+                {
+                    list.notes.resize(list.waypoints.size());
+                    list.notes.back() = pending;
+                }
+                pending.clear();
             }
             catch (const Error &e)
             {

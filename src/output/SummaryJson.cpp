@@ -121,6 +121,11 @@ json executionJson(const ExecutionResult &e, const MissionProblem &problem)
             o["surfacings"] = f.fixes.empty() ? 0 : f.fixes.size() - 1;
             if (e.strategies[k] == ControlStrategy::Replan || e.strategies[k] == ControlStrategy::ReplanObserved)
                 o["replans"] = f.replans;
+            if (!e.stops.empty())  // a mission of several legs: its stations reached (in their windows)
+            {
+                o["stations_reached"] = f.stationsReached;
+                o["windows_missed"] = f.windowsMissed;
+            }
         }
         else
             for (const char *key : {"final_distance", "arrival_time", "reached", "grounded"})
@@ -154,11 +159,16 @@ json plannerJson(const MissionSpec &m, const PlannedPath &p)
 /// duration (also in hours with physical time units) and where and when it is begun; null for straight legs.
 json headingsJson(const MissionResult &r, const MissionProblem &problem)
 {
-    if (!r.plan.headingRoute())
+    // a heading route's segments, or those of a mission's legs flown as held headings
+    bool any = false;
+    for (const MissionWaypoint &w : r.waypoints)
+        any = any || std::isfinite(w.heading);
+    if (!r.plan.headingRoute() && !any)
         return nullptr;
     json a = json::array();
-    for (const MissionWaypoint &w : r.waypoints)
+    for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
+        const MissionWaypoint &w = r.waypoints[i];
         if (!std::isfinite(w.heading))
             continue;
         json start = position(problem, w.position);
@@ -168,6 +178,8 @@ json headingsJson(const MissionResult &r, const MissionProblem &problem)
         if (r.spec.physicalUnits().time)
             seg["duration_h"] = w.headingDuration * r.spec.timeUnitSeconds / 3600.0;
         seg["start"] = start;
+        if (!r.legs.empty() && i + 1 < r.waypoints.size())
+            seg["leg"] = r.waypoints[i + 1].missionLeg; // the leg of the segment's end (a via point closes its leg)
         a.push_back(seg);
     }
     return a;
@@ -279,6 +291,25 @@ json observationsJson(const MissionProblem &problem)
     json fix = nullptr;
     if (o->lastFix)
         fix = {{"lon", o->lastFix->at.lon}, {"lat", o->lastFix->at.lat}, {"time_iso", formatIsoTime(o->lastFix->time)}};
+    // the mission resumed at the last fix: what it replaced and which stations it dropped
+    json resumed = nullptr;
+    const MissionSpec &m = problem.getSpec();
+    if (m.observations && m.observations->resumed)
+    {
+        const MissionResume &r = *m.observations->resumed;
+        json dropped = json::array();
+        for (const DroppedStation &d : r.dropped)
+            dropped.push_back({{"name", d.name},
+                               {"why", "reached"},
+                               {"reached_iso", d.reachedIso},
+                               {"distance_m", d.distance},
+                               {"stay_left", d.stayLeft}});
+        resumed = {{"fix", {{"lon", r.fix.lon}, {"lat", r.fix.lat}, {"time_iso", r.fixIso}}},
+                   {"replaced_start", jtext(r.replacedStart)},
+                   {"replaced_departure", jtext(r.replacedDeparture)},
+                   {"dropped", dropped},
+                   {"stay_ends", jtext(r.stayEnds)}};
+    }
     return {{"source", o->source},
             {"files", o->files},
             {"platform", jtext(o->platform)},
@@ -289,7 +320,8 @@ json observationsJson(const MissionProblem &problem)
             {"length_scale", o->params.lengthScale},
             {"time_scale", o->params.timeScale},
             {"error_ratio", o->params.errorRatio},
-            {"last_fix", fix}};
+            {"last_fix", fix},
+            {"resumed", resumed}};
 #else
     (void)problem;
     return nullptr;
@@ -446,7 +478,10 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["wall_time_s"] = {{"planning", p.planningSeconds}, {"postprocess", p.postprocessSeconds}, {"total", r.wallSeconds}};
     j["path_checked"] = p.pathChecked;
     // heading routes: what the glider holds (the switch from a planner without a path: outcomeJson())
-    j["route_model"] = p.headingRoute() ? "headings" : "straight_legs";
+    bool mixed = false;  // a mission whose legs are flown some as straight legs, some as held headings
+    for (const PlannedLeg &l : r.legs)
+        mixed = mixed || l.plan.headingRoute();
+    j["route_model"] = p.headingRoute() ? "headings" : mixed ? "mixed" : "straight_legs";
     j["headings"] = headingsJson(r, problem);
     // the global check of the route class: extremals shot from the start beside the planner's route
     j["global_check"] = globalCheckJson(p);

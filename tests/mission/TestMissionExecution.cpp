@@ -519,3 +519,94 @@ TEST(MissionEnsemble, ObjectivesAndBadSections)
         EXPECT_NE(msg.find(c.phrase), std::string::npos) << c.yaml << "\n-> " << msg;
     }
 }
+
+// A mission of several legs flown in a uniform truth: every strategy flies the legs in turn, holds at the station
+// for its stay and until its window opens, and arrives at the closed-form times.
+TEST(MissionExecutionLegs, StationsInTurnWithTheirStayAndWindowInClosedForm)
+{
+    // stations on the x axis downstream: at V 0.5 in the truth's 0.3 every leg is flown at 0.8 over ground
+    const MissionSpec spec = parseMission(R"(name: legs
+units: {length_m: 1000, time_s: 3600}
+current: {type: uniform, parameters: {u: 0.1, v: 0.0}}
+region: {x_min: 0, x_max: 14, y_min: -4, y_max: 4}
+start: {x: 1, y: 0}
+waypoints:
+  - {name: A, x: 4, y: 0, radius: 0.1, stay: 2}
+  - {name: B, x: 7, y: 0, radius: 0.1, arrive: {begin: 15, end: 40}}
+goal: {x: 12, y: 0}
+vehicle: {speed: 0.5}
+planner: {name: zastartve, grid_size: 0.5}
+execution:
+  truth: {type: uniform, parameters: {u: 0.3, v: 0.0}}
+  surfacing_interval: 15 min
+  strategies: [current_sensitive, current_blind, greedy, replan, dac, replan_observed]
+  radius: 0.2
+)",
+                                          "m.yaml");
+    const MissionProblem problem(spec);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    ASSERT_TRUE(r.execution.has_value());
+    const ExecutionResult &e = *r.execution;
+    ASSERT_EQ(e.stops.size(), 2u);
+    EXPECT_EQ(e.stops[1].name, "B");
+    ASSERT_EQ(e.runs[0].legs.size(), 3u);
+    for (ControlStrategy s : e.strategies)
+    {
+        const FlownTrack &f = flown(e, 0, s);
+        EXPECT_TRUE(f.reached) << controlStrategyName(s);
+        EXPECT_EQ(f.stationsReached, 2u) << controlStrategyName(s);
+        EXPECT_EQ(f.windowsMissed, 0u) << controlStrategyName(s);
+        // A's radius (x = 3.9) after 2.9 / 0.8, held there for the stay of 2; B's radius (x = 6.9) at 9.375, held
+        // until its window opens at 15; then 4.9 / 0.8 to the goal's radius (x = 11.8)
+        EXPECT_NEAR(f.arrivalTime, 15.0 + (12.0 - 6.9 - 0.2) / 0.8, 1e-3) << controlStrategyName(s);
+        // time never runs backwards along the flown track, and the glider stays on the axis
+        for (std::size_t i = 1; i < f.track.size(); ++i)
+            EXPECT_GE(f.track[i].t, f.track[i - 1].t);
+        for (const TimedPoint &w : f.fixes)
+            EXPECT_NEAR(w.y, 0.0, 1e-6);
+    }
+}
+
+// truth = forecast on the jet: a mission of three stations flown by current_sensitive arrives where and when it was
+// planned, through every station; the batch's pairs are missions through the same stations.
+TEST(MissionExecutionLegs, TruthEqualToTheForecastFliesTheMissionOnTheJet)
+{
+    MissionSpec spec = defaultGulfStreamMission();
+    spec.waypoints.resize(3);
+    const Point2 via[3] = {{3.0, -2.0}, {5.0, 0.5}, {6.5, 2.0}};
+    for (int i = 0; i < 3; ++i)
+    {
+        spec.waypoints[i].name = std::string(1, static_cast<char>('A' + i));
+        spec.waypoints[i].position.xy = via[i];
+        spec.waypoints[i].radius = 0.05;
+    }
+    spec.execution.enabled = true;
+    spec.execution.surfacingInterval = 1.0 / 24.0;
+    spec.execution.strategies = {"current_sensitive", "replan"};
+    spec.execution.radius = 0.05;
+    spec.execution.pairs = 2;
+    const MissionProblem problem(spec);
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    const ExecutionResult &e = *r.execution;
+    ASSERT_EQ(e.runs.size(), 3u);
+    const FlownTrack &f = flown(e, 0, ControlStrategy::CurrentSensitive);
+    EXPECT_TRUE(f.reached);
+    EXPECT_EQ(f.stationsReached, 3u);
+    EXPECT_LT(std::abs(f.arrivalTime - f.plannedArrival), 0.01 * r.plan.travelTime);
+    for (std::size_t i = 1; i < e.runs.size(); ++i)
+    {
+        const ExecutionRun &run = e.runs[i];
+        if (!run.planned)
+            continue;
+        EXPECT_EQ(run.legs.size(), 4u);
+        // each leg of the pair's plan ends on its station
+        for (std::size_t k = 0; k < 3; ++k)
+            EXPECT_LT(std::hypot(run.plan[run.legs[k].end].x - via[k].x, run.plan[run.legs[k].end].y - via[k].y),
+                      1e-6);
+        const FlownTrack &g = flown(e, i, ControlStrategy::CurrentSensitive);
+        EXPECT_TRUE(g.reached) << "pair " << i;
+        EXPECT_LT(std::abs(g.arrivalTime - g.plannedArrival), 0.02 * (g.plannedArrival - run.departure)) << i;
+    }
+}

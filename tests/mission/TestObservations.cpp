@@ -15,6 +15,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/Overrides.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/mission/Observations.h"
 #include "ompl_glider/mission/Planning.h"
@@ -166,13 +167,17 @@ TEST(Observations, BadObservationsNameTheField)
         EXPECT_NE(std::string(e.what()).find("no such file or folder"), std::string::npos) << e.what();
     }
     EXPECT_THROW(missionOn(forecast, "observations: {file: x.csv, error_ratio: 0}\n"), Error);
-    // DAC all after the departure: nothing to correct with, said so
+    // DAC all after the departure: nothing to correct with, said so (a start given by the caller: the mission is
+    // not resumed at the last fix, the observations only correct the forecast)
     const std::string dac = dacCsv("late.csv", 0.2, 0.0);
     try
     {
-        MissionProblem p(missionOn(forecast, "start: {lon: -52.09, lat: 48.0}\ndeparture: {time: 3600}\n"
-                                             "observations: '" +
-                                                 dac + "'\n"));
+        MissionSpec m = missionOn(forecast, "departure: {time: 3600}\nobservations: '" + dac + "'\n");
+        MissionOverrides o;
+        o.start = Given<Point2>{{-52.09, 48.0}, "--start"};
+        o.departure = Given<std::string>{"3600", "--departure"};
+        applyOverrides(o, m);
+        MissionProblem p(m);
         FAIL() << "accepted observations from the future";
     }
     catch (const Error &e)

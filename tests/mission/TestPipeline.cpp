@@ -660,7 +660,7 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
         else if (inList && gline[0] != '#')
         {
             char want[64];
-            std::snprintf(want, sizeof want, "# to here: hold heading %05.1f deg for %.2f h", seg[k].bearing,
+            std::snprintf(want, sizeof want, "# to here: hold heading %05.1f deg for %.4f h", seg[k].bearing,
                           24.0 * (p.path[k + 1].t - p.path[k].t));
             EXPECT_EQ(previous, want) << "waypoint " << k;
             ++k;

@@ -93,6 +93,9 @@ struct ExecutionOptions
     /// ReplanObserved: the correction it plans on, also steered with between plans (the crab angle for the corrected
     /// forecast's current at the fix, from the DAC of the last CorrectedField::kCutoff time scales)
     CorrectionParams correction;
+    /// Dac, ReplanObserved: what the glider measured before this flight (the earlier legs of a mission): the flight
+    /// starts from it (FlownTrack::measured begins with it)
+    std::vector<DacObservation> measuredBefore;
 };
 
 /// @brief One flown run.
@@ -107,6 +110,9 @@ struct FlownTrack
     double finalDistance{std::numeric_limits<double>::infinity()};
     double arrivalTime{std::numeric_limits<double>::quiet_NaN()};  ///< first time within radius of the goal (NaN: never)
     bool reached{false};       ///< the goal was reached within radius before the run ended
+    /// A mission of several legs (MissionExecution.h): its stations reached, and those reached after their window
+    std::size_t stationsReached{0};
+    std::size_t windowsMissed{0};  ///< see stationsReached
     bool grounded{false};      ///< the run ended on land or in a forbidden region
     std::string groundedWhy;   ///< what was met, and where (planning frame)
     double madeGoodSpeed{0.0}; ///< straight distance start -> last position divided by the time flown

@@ -20,6 +20,25 @@ namespace ompl_glider
 class MissionProblem;
 struct PlannedPath;
 
+/// @brief A station of a mission of several legs as the execution flies to it (a via point): reached within its
+/// radius, not before its window opens (the glider holds until then), then held for its stay.
+struct ExecutionStop
+{
+    std::string name;     ///< the via point's name
+    Point2 at;            ///< planning frame
+    double radius{0.0};   ///< length units
+    bool window{false};   ///< an arrival window is set
+    double windowBegin{0.0}, windowEnd{0.0};  ///< field time
+    double stay{0.0};     ///< held after the arrival (field time units)
+};
+
+/// @brief One leg of a planned mission as the execution needs it: where it ends in the plan, its held headings.
+struct ExecutionLeg
+{
+    std::size_t end{0};                    ///< index in the plan's path of the leg's end (its via point, the goal)
+    std::optional<HeadingRoute> headings;  ///< the leg's held headings where it is a heading route
+};
+
 /// @brief One start/goal pair, planned on the forecast and flown with each strategy.
 struct ExecutionRun
 {
@@ -31,6 +50,9 @@ struct ExecutionRun
     double radius{0.0};       ///< goal radius used (length units)
     std::vector<TimedPoint> plan;  ///< the plan flown (the final path of planRoute())
     std::optional<HeadingRoute> headings;  ///< the plan's held headings when it is a heading route
+    /// A mission of several legs: its legs in the plan (the stations are ExecutionResult::stops, the same for every
+    /// run); empty for a mission of one leg
+    std::vector<ExecutionLeg> legs;
     std::vector<FlownTrack> flown;    ///< one per ExecutionResult::strategies
 };
 
@@ -76,6 +98,9 @@ struct ExecutionResult
     double step{0.0};             ///< integration step while submerged (field units)
     unsigned replanEvery{1};      ///< replan strategy: surfacings between plans
     std::vector<ExecutionRun> runs;  ///< runs[0] is the mission's own pair
+    /// A mission of several legs: its via points, flown to in order by every strategy of every run (each run's own
+    /// start and goal, the same stations); empty for a mission of one leg
+    std::vector<ExecutionStop> stops;
     std::vector<StrategySpread> spread;  ///< one per strategy, over every run flown
     /// The truth against the forecast over the planning box and the time window of the runs (departure to twice
     /// the latest planned travel time after it, within both fields; 24 times, a 40 x 40 grid of water points): RMS over space and time of
@@ -94,8 +119,14 @@ double rmsDifference(const CurrentField &a, const CurrentField &b, double x, dou
 
 /// @brief Flies @p plan (the pipeline's plan of the mission; when not solved, run 0 is reported without flights)
 /// and the batch's pairs with every strategy of problem.getSpec().execution. @throws Error for bad settings.
+/// A mission of several legs (@p legs, its via points the stations): every strategy flies the legs in turn, each
+/// leg's plan re-timed from where and when the glider is (its held headings for planned_headings), with the leg's
+/// station as the goal its replans aim at; at a station it holds until the window opens and for the stay (in place:
+/// a stay is planned only where the current is slower than the glider), then flies on. A run is reached when every
+/// station and the goal were, each in its window; the batch's pairs are planned as missions through the same
+/// stations (planMission()).
 ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath &plan,
-                               const ProgressSink &progress = {});
+                               const std::vector<ExecutionLeg> &legs = {}, const ProgressSink &progress = {});
 
 /// @brief The batch's start/goal pairs: uniform in the planning box, both ends in water in the forecast and the
 /// truth and outside the forbidden regions at the departure, at least @p minDistance apart; deterministic for a

@@ -35,7 +35,9 @@ enum class Origin : std::uint8_t
     File = 0,
     Flag,
     Keyword,
-    Program  ///< the calling program through the C++ API (ForecastInput without SettingWords)
+    Program, ///< the calling program through the C++ API (ForecastInput without SettingWords)
+    /// the glider's last fix, put in by a front end until the mission resumes there (resumeAtLastFix())
+    Observations
 };
 
 /// @brief Where a value was given.
@@ -422,6 +424,27 @@ struct ExecutionSpec
     SourceMark mark;          ///< where the section is
 };
 
+/// @brief A via point a resumed mission dropped: the glider reached it before its last fix.
+struct DroppedStation
+{
+    std::string name;       ///< the via point
+    std::string reachedIso; ///< the first fix within its radius (ISO 8601)
+    double distance{0.0};   ///< that fix's distance from it, metres
+    double stayLeft{0.0};   ///< of its stay, what was still to hold at the last fix (field time units; 0: none)
+};
+
+/// @brief What resuming a mission at the glider's last fix did (resumeAtLastFix()).
+struct MissionResume
+{
+    LonLat fix;                  ///< the last fix
+    std::string fixIso;          ///< its time
+    std::string replacedStart;   ///< "lon, lat" of the start it replaced (the deployment's), empty when none was given
+    std::string replacedDeparture; ///< the departure it replaced (ISO 8601 or field time), empty when none
+    std::vector<DroppedStation> dropped; ///< the stations reached, in the order reached
+    /// a stay under way at the last fix: the plan departs at its end (ISO 8601 or field time), else empty
+    std::string stayEnds;
+};
+
 /// @brief A glider's own measurements (its depth-averaged currents, DAC) and how they correct the forecast
 /// (current/CorrectedField.h: optimal interpolation, [BrethertonOI]).
 struct ObservationsSpec
@@ -435,6 +458,8 @@ struct ObservationsSpec
     double timeScale{std::numeric_limits<double>::quiet_NaN()};
     double errorRatio{0.2};  ///< s_o / s_f: the DAC's error over the forecast's (> 0; CorrectionParams)
     SourceMark mark;         ///< where it was given
+    /// set once the mission was resumed at the last fix (resumeAtLastFix()): what it replaced and dropped
+    std::optional<MissionResume> resumed;
     /// @brief Whether a glider's files are given (not only the correction's parameters).
     bool hasFiles() const { return !path.empty(); }
 };
@@ -520,6 +545,9 @@ struct MissionSpec
     /// date converted with the dated forecast's calendar or the mission's epoch. @throws Error saying what was
     /// expected (the caller adds where).
     double timeOf(const std::string &text) const;
+    /// @brief Field time @p t as an ISO 8601 date in the mission's calendar (the dated forecast's, or the epoch's);
+    /// empty without dates or for a time that is not finite. @throws Error outside the years 0000-9999.
+    std::string isoTime(double t) const;
 
     /// @brief "m.yaml:12: field 'planner.grid_size'", "--grid-size" for a flag, "plan(): keyword 'speed'" for a
     /// keyword of the Python module, or "m.yaml: field '...'" when the value was not given (a default).

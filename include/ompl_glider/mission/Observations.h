@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ompl_glider/current/CorrectedField.h"
 #include "ompl_glider/io/GliderObservations.h"
@@ -25,13 +26,31 @@ struct ObservationReport
     CorrectionSummary correction;     ///< what the correction used, rejected and did (RMS innovation before / after)
     CorrectionParams params;          ///< L, T, s_o / s_f as used
     std::optional<GliderFix> lastFix; ///< the latest position reported
+    std::vector<GliderFix> fixes;     ///< every position reported, in time order (the glider's track on the maps)
+    std::vector<DacRecord> dac;       ///< every DAC read (before the departure's cut), in time order
 };
 
 /// @brief Where @p m starts when it gives no start: its observations' last fix (lon/lat), and its departure at the
-/// fix's time unless @p keepDeparture. The start and departure are marked as given at @p mark (the observations'
-/// line, or the flag or keyword that gave them).
+/// fix's time unless @p keepDeparture, marked as the observations' (Origin::Observations, at @p mark's place) until
+/// the mission resumes there (resumeAtLastFix()): a front end's first guess, so that a forecast's region and
+/// departure can be checked before the mission is made.
 /// @throws Error (without the place: the caller names it) when they cannot be read or report no fix.
 void startAtLastFix(MissionSpec &m, const SourceMark &mark, bool keepDeparture);
+
+/// @brief The one place a mission resumes at the glider's last fix (MissionProblem does it for every front end): with
+/// observations that have files, a mission of one glider starts at the last fix unless a flag, a keyword or the
+/// calling program gave the start (a mission file's start is the deployment's: replaced), and departs at the fix's
+/// time unless they gave the departure (which may then not be before the fix). Via points already reached (a fix
+/// after the mission's departure within their radius; in the order listed, any order with `order: free`) are
+/// dropped; a stay under way at the last fix is finished first (the plan departs at its end); the others keep their
+/// names, radii, windows and stays. What it did is kept in MissionSpec::observations->resumed. Done once.
+/// @throws Error (without the place) when the observations cannot be read, report no fix, a given departure is before
+/// the last fix, or the glider has already reached every via point and the goal (nothing is left to plan).
+void resumeAtLastFix(MissionSpec &m);
+
+/// @brief "from the last fix -52.1, 48.0 at 2026-03-16T12:00:00Z (replacing the start -52.7, 47.9, the deployment's);
+/// stations reached: A (2026-03-15T18:02:11Z, 120 m from it)"; empty when the mission was not resumed.
+std::string resumeNote(const MissionSpec &m);
 
 class MissionProblem;
 /// @brief "glider observations 'PATH' (ru29): 12 DAC used; rejected 1 QC flag 4 (u_qc), 2 after the departure; RMS

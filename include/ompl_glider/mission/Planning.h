@@ -416,8 +416,11 @@ struct PilotWaypoints
 
 /// @brief Waypoints for the pilot from a planned path: geographic coordinates, ISO times and, with dive profiles
 /// ([EichhornOceans] Sec. III), the profile chosen for each leg (evaluated in parallel) and the arrival times flying
-/// it.
-PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath &plan);
+/// it. A mission of several legs (@p legs, MissionPlan::legs, with their places in @p plan's path) is written leg by
+/// leg: a leg flown as held headings keeps its headings and flown times (MissionWaypoint::heading), a leg of straight
+/// legs its dive profiles, so that a mission whose legs mix both kinds says for each leg how it is flown.
+PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath &plan,
+                                const std::vector<PlannedLeg> &legs = {});
 
 /// @brief The optimal-control reference from the start at @p departure (shooting; no forbidden regions).
 OptimumReference optimumReference(const MissionProblem &problem, double departure, double speed,

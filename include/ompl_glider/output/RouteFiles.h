@@ -2,6 +2,7 @@
 /// @file RouteFiles.h
 /// @brief The route as text files a pilot or a GIS loads: waypoints CSV, path CSV, GeoJSON, the Slocum goto list.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,10 +52,31 @@ std::string routeGeoJson(const MissionResult &result, const MissionProblem *prob
 /// dates) and since_departure ([ThompsonICRA] Fig. 4).
 std::string isochronesGeoJson(const MissionResult &result);
 
+/// @brief "to here: hold heading 348.3 deg for 0.3172 h" where waypoint @p i is reached by a held heading (a heading
+/// route, or a leg of a mission flown as held headings): the heading of the waypoint before and how long it is held;
+/// empty where a straight leg reaches it.
+std::string headingNote(const MissionResult &result, std::size_t i);
+
+/// @brief A stay at a via point of a mission (a "virtual mooring"): where, from when, how long, until when.
+struct StationStay
+{
+    std::string name;    ///< the via point
+    double arrival{0.0}; ///< field time
+    double duration{0.0};///< field time units
+    double leave{0.0};   ///< the stay's end (field time)
+    std::string leaveIso;///< its date (empty without a calendar)
+    double radius{0.0};  ///< metres: held within it (the via point's radius, else outputs.goto_wpt_dist)
+};
+/// @brief The stay that begins at waypoint @p i (a via point's arrival), if any.
+std::optional<StationStay> stayAt(const MissionResult &result, std::size_t i);
+/// @brief "stay at A: hold within 500 m for 6.0000 h, leave at 2026-03-16T02:41:12Z".
+std::string stayNote(const MissionResult &result, const StationStay &stay);
+
 /// @brief The Slocum goto list of the final path, thinned to gotoWaypointIndices() (without the start unless
-/// outputs.goto_include_start), list_when_wpt_dist from outputs.goto_wpt_dist. For a heading
-/// route the waypoints are the segment ends, each with a note (GotoList::notes) naming the heading held on the way to
-/// it (the heading of the waypoint before) and for how long.
+/// outputs.goto_include_start), list_when_wpt_dist from outputs.goto_wpt_dist. A waypoint reached by a held heading
+/// (a heading route's segment ends; the segment ends of a mission's legs flown as held headings) carries a note
+/// (GotoList::notes, headingNote()) naming the heading held on the way to it and for how long; a via point with a
+/// stay, the stay (stayNote()): hold there, how long, when to leave.
 /// @throws Error when the waypoints have no geographic coordinates.
 GotoList gotoList(const MissionResult &result, const MissionProblem *problem = nullptr);
 

@@ -22,6 +22,9 @@ struct SeagliderTarget
     LonLat position;      ///< degrees (longitude in -180..180)
     double radius{100.0}; ///< metres: the target counts as reached within it
     std::string next;     ///< the target flown to after this one (its own name for the last)
+    /// How the glider gets here where it is not by steering to the target, and what it does here: the heading to
+    /// hold (headingNote()), the stay (stayNote()); written as a comment line before the target, empty: none
+    std::string note;
 };
 
 /// @brief Signed degrees as the targets file's latitude, [-]DDMM.MMMM (two digits of degrees, minutes rounded to
@@ -33,9 +36,12 @@ std::string seagliderLongitude(double degrees);
 /// @brief The targets of a planned route: one per turn the goto list keeps (gotoWaypointIndices(), every via point
 /// among them) after the start, named after the via points (their radius where given), the other turns "T1", "T2",
 /// ... and the goal "GOAL" (outputs.goto_wpt_dist as their radius), each pointing to the next, the last to itself.
+/// A target reached by a held heading carries the heading and how long (the pilot sets $HEADING for that time), a via
+/// point with a stay the stay (SeagliderTarget::note).
 /// @throws Error when the mission has no longitudes and latitudes.
 std::vector<SeagliderTarget> seagliderTargets(const MissionResult &result, const MissionProblem *problem);
 
-/// @brief The file's text: a comment header naming the mission, then one line per target.
+/// @brief The file's text: a comment header naming the mission, then one line per target, each after its note as a
+/// comment line ("/ to here: hold heading ...", "/ stay at A: ...").
 std::string formatSeagliderTargets(const std::vector<SeagliderTarget> &targets, const std::string &mission);
 } // namespace ompl_glider

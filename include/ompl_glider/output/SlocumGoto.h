@@ -30,7 +30,7 @@ struct GotoList
     double listWhenWptDist{100.0};  ///< b_arg list_when_wpt_dist (m): a waypoint is reached this close (stop when 7)
     std::string comment;     ///< free comment written under the behavior line (one line)
     /// Per waypoint (same index; shorter or empty: none): a comment line written just before its waypoint line
-    /// (a heading route's heading to hold, gotoList()); one line each, not read back by parseGotoList()
+    /// (a heading route's heading to hold, a stay: gotoList()); one line each, read back by parseGotoList()
     std::vector<std::string> notes;
 };
 
@@ -46,7 +46,8 @@ std::string formatGotoList(const GotoList &list);
 /// @brief Writes formatGotoList() to @p path (throws Error when the file cannot be written).
 void writeGotoFile(const std::string &path, const GotoList &list);
 
-/// @brief Parses goto-list text (comments after '#' ignored); checks that num_waypoints matches the waypoint lines.
+/// @brief Parses goto-list text (comments after '#' ignored, but for a comment line just before a waypoint line:
+/// its note); checks that num_waypoints matches the waypoint lines.
 /// @p source names the text in error messages.
 GotoList parseGotoList(const std::string &text, const std::string &source = "goto list");
 

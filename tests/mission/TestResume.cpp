@@ -1,0 +1,192 @@
+// A mission resumed at sea from the glider's last fix (resumeAtLastFix(), done by MissionProblem for every front
+// end): the start and departure replaced, the stations already reached dropped (in the order listed), a stay under
+// way finished first, the others kept whole; what cannot be resumed refused plainly.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/io/Time.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/mission/Observations.h"
+#include "ompl_glider/mission/Overrides.h"
+#include "ompl_glider/mission/Planning.h"
+
+using namespace ompl_glider;
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kSurvey = std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/survey_labrador.yaml";
+const double kT0 = 1773554400.0;  // 2026-03-15T06:00:00Z, the survey's departure
+
+/// A CSV deployment of fixes (hours after the survey's departure, lon, lat), each with a small DAC.
+std::string deployment(const std::string &name, const std::vector<std::array<double, 3>> &fixes)
+{
+    const fs::path dir = fs::temp_directory_path() / ("ompl_glider_resume_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path file = dir / (name + ".csv");
+    std::ofstream out(file);
+    out << "time,lon,lat,u,v\n";
+    for (const auto &[h, lon, lat] : fixes)
+        out << formatIsoTime(kT0 + 3600.0 * h) << "," << lon << "," << lat << ",0.05,0.02\n";
+    return file.string();
+}
+
+/// The survey with @p observations given as glider_plan's flag gives them (and @p more overrides).
+MissionSpec survey(const std::string &observations, MissionOverrides o = {})
+{
+    MissionSpec m = loadMission(kSurvey);
+    o.origin = Origin::Flag;
+    o.observations = Given<std::string>{observations, "--observations"};
+    applyOverrides(o, m);
+    return m;
+}
+
+/// Metres between two lon/lat points (a sphere; this file's own).
+double metres(LonLat a, LonLat b)
+{
+    const double d = M_PI / 180.0;
+    const double x = (b.lon - a.lon) * d * std::cos(0.5 * (a.lat + b.lat) * d), y = (b.lat - a.lat) * d;
+    return 6371000.0 * std::hypot(x, y);
+}
+} // namespace
+
+TEST(Resume, FromTheDeploymentsLastFixKeepingEveryStationNotYetReached)
+{
+    const MissionSpec given = loadMission(kSurvey);
+    const MissionProblem p(survey(std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/deployment_ru29"));
+    const MissionSpec &m = p.getSpec();
+    ASSERT_TRUE(m.observations && m.observations->resumed);
+    const MissionResume &r = *m.observations->resumed;
+    // ru29's last profile: the eighth dive, 24 h after the departure, 8 x (0.045, 0.02) degrees north-east
+    EXPECT_EQ(r.fixIso, "2026-03-16T06:00:00Z");
+    EXPECT_NEAR(m.start.lonLat.lon, -52.7 + 8 * 0.045, 1e-9);
+    EXPECT_NEAR(m.start.lonLat.lat, 47.9 + 8 * 0.02, 1e-9);
+    EXPECT_EQ(m.isoTime(m.departure.time), "2026-03-16T06:00:00Z");
+    EXPECT_FALSE(r.replacedStart.empty());
+    EXPECT_TRUE(r.dropped.empty());
+    // every station kept whole: names, radii, windows, stays
+    ASSERT_EQ(m.waypoints.size(), given.waypoints.size());
+    for (std::size_t i = 0; i < m.waypoints.size(); ++i)
+    {
+        EXPECT_EQ(m.waypoints[i].name, given.waypoints[i].name);
+        EXPECT_EQ(m.waypoints[i].radius, given.waypoints[i].radius);
+        EXPECT_EQ(m.waypoints[i].stay, given.waypoints[i].stay);
+        EXPECT_EQ(m.waypoints[i].arrive.set, given.waypoints[i].arrive.set);
+        EXPECT_EQ(m.waypoints[i].arrive.end, given.waypoints[i].arrive.end);
+    }
+    EXPECT_NE(resumeNote(m).find("replacing the mission's start -52.7, 47.9"), std::string::npos) << resumeNote(m);
+}
+
+TEST(Resume, AReachedStationIsDroppedAndItsStayFinishedFirst)
+{
+    // toward A (-52.2, 48.0; radius 500 m, a 6 h stay), 200 m from it at hour 20, held there until hour 22
+    const std::string obs = deployment("at_a", {{4, -52.6, 47.93}, {12, -52.4, 47.97}, {20, -52.2018, 48.0008},
+                                                {21, -52.2010, 47.9995}, {22, -52.2005, 48.0004}});
+    const MissionProblem p(survey(obs));
+    const MissionSpec &m = p.getSpec();
+    ASSERT_TRUE(m.observations->resumed);
+    const MissionResume &r = *m.observations->resumed;
+    ASSERT_EQ(r.dropped.size(), 1u);
+    EXPECT_EQ(r.dropped[0].name, "A");
+    EXPECT_EQ(r.dropped[0].reachedIso, "2026-03-16T02:00:00Z");
+    EXPECT_NEAR(r.dropped[0].distance, metres({-52.2018, 48.0008}, {-52.2, 48.0}), 2.0);
+    // the stay began at the first fix within the radius (hour 20): 4 of its 6 h are left at the last fix
+    EXPECT_NEAR(r.dropped[0].stayLeft, 4 * 3600.0, 1e-6);
+    EXPECT_EQ(m.isoTime(m.departure.time), "2026-03-16T08:00:00Z");
+    ASSERT_EQ(m.waypoints.size(), 2u);
+    EXPECT_EQ(m.waypoints[0].name, "B");
+    EXPECT_EQ(m.waypoints[1].name, "C");
+    EXPECT_TRUE(m.waypoints[1].arrive.set);
+    // and it plans: from the last fix, through B and C
+    const MissionResult res = runMission(p);
+    ASSERT_TRUE(res.plan.solved) << res.plan.reason;
+    ASSERT_EQ(res.legs.size(), 3u);
+    EXPECT_EQ(res.legs[0].from, "start");
+    EXPECT_EQ(res.legs[0].to, "B");
+    EXPECT_NEAR(res.waypoints.front().lonLat.lon, -52.2005, 1e-9);
+    EXPECT_EQ(res.waypoints.front().iso, "2026-03-16T08:00:00Z");
+}
+
+TEST(Resume, StationsCountOnlyInTheOrderListed)
+{
+    // the glider passes within B's radius before it reached A: with the order given B is not visited yet
+    const std::string obs = deployment("b_first", {{2, -52.6, 47.93}, {10, -51.9005, 48.2003}, {12, -51.95, 48.15}});
+    const MissionProblem p(survey(obs));
+    EXPECT_TRUE(p.getSpec().observations->resumed->dropped.empty());
+    EXPECT_EQ(p.getSpec().waypoints.size(), 3u);
+    // with the order free, B counts
+    MissionOverrides free;
+    free.order = Given<std::string>{"free", "--order"};
+    const MissionProblem q(survey(obs, free));
+    ASSERT_EQ(q.getSpec().observations->resumed->dropped.size(), 1u);
+    EXPECT_EQ(q.getSpec().observations->resumed->dropped[0].name, "B");
+}
+
+TEST(Resume, WhatCannotBeResumedIsRefusedPlainly)
+{
+    // every station and the goal reached: nothing is left to plan
+    const std::string done = deployment("done", {{10, -52.2, 48.0}, {20, -51.9, 48.2}, {40, -51.65, 48.3},
+                                                 {50, -51.5, 48.45}});
+    try
+    {
+        const MissionProblem p(survey(done));
+        ADD_FAILURE() << "a finished mission was planned";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("nothing is left to plan"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("--observations"), std::string::npos) << e.what();
+    }
+    // a departure given before the last fix: the glider was elsewhere then
+    const std::string obs = deployment("early", {{4, -52.6, 47.93}, {12, -52.4, 47.97}});
+    MissionOverrides o;
+    o.departure = Given<std::string>{"2026-03-15T12:00:00Z", "--departure"};
+    try
+    {
+        const MissionProblem p(survey(obs, o));
+        ADD_FAILURE() << "a departure before the last fix was taken";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("before the last fix (2026-03-15T18:00:00Z)"), std::string::npos)
+            << e.what();
+    }
+    // a departure after it is kept
+    o.departure = Given<std::string>{"2026-03-15T20:00:00Z", "--departure"};
+    const MissionProblem later(survey(obs, o));
+    EXPECT_EQ(later.getSpec().isoTime(later.getSpec().departure.time), "2026-03-15T20:00:00Z");
+    // C's window has closed at the last fix: refused naming the station's window
+    const std::string late = deployment("late", {{4, -52.6, 47.93}, {90, -52.4, 47.97}});
+    try
+    {
+        const MissionProblem p(survey(late));
+        ADD_FAILURE() << "a station whose window closed before the last fix was planned";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("field 'waypoints[2].arrive.end' (via point 'C')"), std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("before the glider can get there"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Resume, AStartGivenByTheCallerWins)
+{
+    MissionOverrides o;
+    o.start = Given<Point2>{{-52.5, 47.95}, "--start"};
+    o.departure = Given<std::string>{"2026-03-16T06:00:00Z", "--departure"};
+    const MissionProblem p(survey(std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/deployment_ru29", o));
+    EXPECT_FALSE(p.getSpec().observations->resumed);
+    EXPECT_NEAR(p.getSpec().start.lonLat.lon, -52.5, 1e-12);
+    EXPECT_EQ(p.getSpec().waypoints.size(), 3u);
+}
