@@ -85,6 +85,77 @@ void checkFinite(const std::string &name, double v, bool positive)
 
 std::shared_ptr<const SettingWords> keywordWords();
 
+/// One item of the `via` keyword: a pair (x, y) / (lon, lat), or a dict {at: pair, name, radius, stay,
+/// arrive: (begin, end)}; a radius and a stay as a number in the mission's unit or a text with its unit.
+ViaPointSpec viaPoint(const py::handle item, const std::string &at, const MissionSpec &m)
+{
+    ViaPointSpec p;
+    if (py::isinstance<py::dict>(item))
+    {
+        const py::dict d = py::reinterpret_borrow<py::dict>(item);
+        for (const auto &key : d)
+        {
+            const std::string name = key.first.cast<std::string>();
+            if (name != "at" && name != "name" && name != "radius" && name != "stay" && name != "arrive")
+                throw Error("plan(): keyword 'via': " + at + ": unknown key '" + name +
+                            "' (at, name, radius, stay, arrive)");
+        }
+        if (!d.contains("at"))
+            throw Error("plan(): keyword 'via': " + at + ": 'at' (x, y) or (lon, lat) is required");
+        const Pair xy = value<Pair>(d["at"], at + ".at", "a pair (x, y) or (lon, lat) of numbers");
+        p.position.xy = {xy.first, xy.second};
+        if (d.contains("name"))
+            p.name = value<std::string>(d["name"], at + ".name", "a text");
+        // a radius and a stay as a mission file gives them: a number in the mission's unit, or a text with
+        // its unit ("500 m", "6 h")
+        if (d.contains("radius") && py::isinstance<py::str>(d["radius"]))
+            try
+            {
+                p.radius = parseLength(d["radius"].cast<std::string>(), m.metresPerUnit(),
+                                       m.physicalUnits().length);
+            }
+            catch (const Error &e)
+            {
+                throw Error("plan(): keyword 'via': " + at + ".radius: " + e.what());
+            }
+        else if (d.contains("radius"))
+            p.radius = value<double>(d["radius"], at + ".radius",
+                                     "a number (the mission's length unit) or a length (\"500 m\")");
+        if (d.contains("stay") && py::isinstance<py::str>(d["stay"]))
+            try
+            {
+                p.stay = parseDuration(d["stay"].cast<std::string>(), m.timeUnitSeconds, m.hasTimeUnit());
+            }
+            catch (const Error &e)
+            {
+                throw Error("plan(): keyword 'via': " + at + ".stay: " + e.what());
+            }
+        else if (d.contains("stay"))
+            p.stay = value<double>(d["stay"], at + ".stay",
+                                   "a number (the mission's time unit) or a duration (\"6 h\")");
+        if (d.contains("arrive"))
+        {
+            const auto [b, e] = value<std::pair<py::object, py::object>>(d["arrive"], at + ".arrive",
+                                                                          "a pair (begin, end) of times");
+            try
+            {
+                p.arrive = {true, m.timeOf(py::str(b).cast<std::string>()),
+                            m.timeOf(py::str(e).cast<std::string>())};
+            }
+            catch (const Error &e)
+            {
+                throw Error("plan(): keyword 'via': " + at + ".arrive: " + e.what());
+            }
+        }
+    }
+    else
+    {
+        const Pair xy = value<Pair>(item, at, "a pair (x, y) or (lon, lat) of numbers, or a dict");
+        p.position.xy = {xy.first, xy.second};
+    }
+    return p;
+}
+
 /// The forecast of a NetCDF path (a file, or a comma-separated list of files and glob patterns) with the
 /// command line's options, as `--currents FILE --start ... --goal ...` builds it (forecastMission()).
 MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std::string &departure, double speed,
@@ -399,71 +470,7 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
         for (const py::handle item : value<py::list>(*v, "via", "a list of via points"))
         {
             const std::string at = "via[" + std::to_string(k++) + "]";
-            ViaPointSpec p;
-            if (py::isinstance<py::dict>(item))
-            {
-                const py::dict d = py::reinterpret_borrow<py::dict>(item);
-                for (const auto &key : d)
-                {
-                    const std::string name = key.first.cast<std::string>();
-                    if (name != "at" && name != "name" && name != "radius" && name != "stay" && name != "arrive")
-                        throw Error("plan(): keyword 'via': " + at + ": unknown key '" + name +
-                                    "' (at, name, radius, stay, arrive)");
-                }
-                if (!d.contains("at"))
-                    throw Error("plan(): keyword 'via': " + at + ": 'at' (x, y) or (lon, lat) is required");
-                const Pair xy = value<Pair>(d["at"], at + ".at", "a pair (x, y) or (lon, lat) of numbers");
-                p.position.xy = {xy.first, xy.second};
-                if (d.contains("name"))
-                    p.name = value<std::string>(d["name"], at + ".name", "a text");
-                // a radius and a stay as a mission file gives them: a number in the mission's unit, or a text with
-                // its unit ("500 m", "6 h")
-                if (d.contains("radius") && py::isinstance<py::str>(d["radius"]))
-                    try
-                    {
-                        p.radius = parseLength(d["radius"].cast<std::string>(), m.metresPerUnit(),
-                                               m.physicalUnits().length);
-                    }
-                    catch (const Error &e)
-                    {
-                        throw Error("plan(): keyword 'via': " + at + ".radius: " + e.what());
-                    }
-                else if (d.contains("radius"))
-                    p.radius = value<double>(d["radius"], at + ".radius",
-                                             "a number (the mission's length unit) or a length (\"500 m\")");
-                if (d.contains("stay") && py::isinstance<py::str>(d["stay"]))
-                    try
-                    {
-                        p.stay = parseDuration(d["stay"].cast<std::string>(), m.timeUnitSeconds, m.hasTimeUnit());
-                    }
-                    catch (const Error &e)
-                    {
-                        throw Error("plan(): keyword 'via': " + at + ".stay: " + e.what());
-                    }
-                else if (d.contains("stay"))
-                    p.stay = value<double>(d["stay"], at + ".stay",
-                                           "a number (the mission's time unit) or a duration (\"6 h\")");
-                if (d.contains("arrive"))
-                {
-                    const auto [b, e] = value<std::pair<py::object, py::object>>(d["arrive"], at + ".arrive",
-                                                                                  "a pair (begin, end) of times");
-                    try
-                    {
-                        p.arrive = {true, m.timeOf(py::str(b).cast<std::string>()),
-                                    m.timeOf(py::str(e).cast<std::string>())};
-                    }
-                    catch (const Error &e)
-                    {
-                        throw Error("plan(): keyword 'via': " + at + ".arrive: " + e.what());
-                    }
-                }
-            }
-            else
-            {
-                const Pair xy = value<Pair>(item, at, "a pair (x, y) or (lon, lat) of numbers, or a dict");
-                p.position.xy = {xy.first, xy.second};
-            }
-            via.push_back(p);
+            via.push_back(viaPoint(item, at, m));
         }
         o.via = Given<std::vector<ViaPointSpec>>{via, text("via")};
     }

@@ -21,6 +21,7 @@
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
 #include "../io/NumberText.h"
+#include "ExecutionPacking.h"
 #include "PlanningInternal.h"
 
 namespace ompl_glider
@@ -141,6 +142,32 @@ ExecutionOptions flightOptions(const MissionProblem &problem, const ExecutionRes
     return o;
 }
 
+/// The plan of a leg from where and when the glider is (@p at): the planned leg re-timed from there (continuation()),
+/// else, where the current of the new hour makes its legs impassable, a new plan of the leg as a pilot would make it
+/// at the surfacing (the lattice, as the replan strategy plans), else the straight line at the planned pace.
+std::vector<TimedPoint> legFrom(const MissionProblem &problem, TimedPoint at, Point2 to,
+                                const std::vector<TimedPoint> &planned)
+{
+    std::vector<TimedPoint> moved = continuation(problem, at.x, at.y, at.t, planned);
+    if (!moved.empty())
+        return moved;
+    PlanOptions o;
+    o.refinement = false;
+    o.globalCheck = false;
+    o.headingFallback = false;
+    try
+    {
+        const PlannedPath p = planRoute(problem.withEndpoints({at.x, at.y}, to), at.t, o);
+        if (p.solved)
+            return p.path;
+    }
+    catch (const Error &)
+    {
+        // e.g. the fix lies where the lattice cannot start: the straight line below
+    }
+    return {at, {to.x, to.y, at.t + (planned.back().t - planned.front().t)}};
+}
+
 /// Flies a mission of several legs with strategy @p s: each leg's plan re-timed from the glider's fix, its station
 /// the goal, holds at the stations (window, stay), the legs' flights joined into one track.
 FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &settings, const ExecutionRun &run,
@@ -169,12 +196,7 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
         std::vector<TimedPoint> legPlan(run.plan.begin() + static_cast<std::ptrdiff_t>(first),
                                         run.plan.begin() + static_cast<std::ptrdiff_t>(leg.end) + 1);
         if (at.x != legPlan.front().x || at.y != legPlan.front().y || at.t != legPlan.front().t)
-        {
-            std::vector<TimedPoint> moved = continuation(problem, at.x, at.y, at.t, legPlan);
-            legPlan = !moved.empty() ? std::move(moved)
-                                     : std::vector<TimedPoint>{at, {to.x, to.y, at.t + (legPlan.back().t -
-                                                                                        legPlan.front().t)}};
-        }
+            legPlan = legFrom(problem, at, to, legPlan);
         ExecutionOptions o = flightOptions(problem, settings, radius);
         o.endTime = end;
         o.headings = leg.headings && at.x == leg.headings->start.x && at.y == leg.headings->start.y &&
@@ -319,119 +341,67 @@ void checkTruthSpace(const MissionProblem &problem, const PlannedPath &plan, Exe
                           place(box.xMax, box.yMax) + "): a flight that leaves it stops there (not land)");
 }
 
-void putPoints(ByteWriter &w, const std::vector<TimedPoint> &v)
+/// A mission of several legs: its via points as the stations every run flies to (empty for one leg).
+std::vector<ExecutionStop> executionStops(const MissionProblem &problem, double goalRadius)
 {
-    w.putEach(v, [](ByteWriter &o, const TimedPoint &p) {
-        o.put(p.x);
-        o.put(p.y);
-        o.put(p.t);
-    });
-}
-
-void getPoints(ByteReader &r, std::vector<TimedPoint> &v)
-{
-    r.getEach(v, [](ByteReader &i, TimedPoint &p) {
-        i.get(p.x);
-        i.get(p.y);
-        i.get(p.t);
-    });
-}
-
-void putHeadings(ByteWriter &w, const HeadingRoute &h)
-{
-    w.put(h.start.x);
-    w.put(h.start.y);
-    w.put(h.departure);
-    w.put(h.step);
-    w.putEach(h.segments, [](ByteWriter &o, const HeadingSegment &g) {
-        o.put(g.bearing);
-        o.put(g.duration);
-    });
-}
-
-void getHeadings(ByteReader &r, HeadingRoute &h)
-{
-    r.get(h.start.x);
-    r.get(h.start.y);
-    r.get(h.departure);
-    r.get(h.step);
-    r.getEach(h.segments, [](ByteReader &i, HeadingSegment &g) {
-        i.get(g.bearing);
-        i.get(g.duration);
-    });
-}
-
-/// An execution run as bytes (every bit of its numbers), for the processes of a job.
-std::string packRun(const ExecutionRun &run)
-{
-    ByteWriter w;
-    w.put(run.planned);
-    w.put(run.reason);
-    putPoints(w, run.plan);
-    w.put(run.headings.has_value());
-    if (run.headings)
-        putHeadings(w, *run.headings);
-    w.putEach(run.legs, [](ByteWriter &o, const ExecutionLeg &l) {
-        o.put(static_cast<std::uint64_t>(l.end));
-        o.put(l.headings.has_value());
-        if (l.headings)
-            putHeadings(o, *l.headings);
-    });
-    w.putEach(run.flown, [](ByteWriter &o, const FlownTrack &f) {
-        putPoints(o, f.fixes);
-        putPoints(o, f.track);
-        o.put(f.headings);
-        o.put(f.plannedArrival);
-        o.put(f.finalDistance);
-        o.put(f.arrivalTime);
-        o.put(f.reached);
-        o.put(f.grounded);
-        o.put(f.groundedWhy);
-        o.put(f.madeGoodSpeed);
-        o.put(f.replans);
-        o.put(static_cast<std::uint64_t>(f.stationsReached));
-        o.put(static_cast<std::uint64_t>(f.windowsMissed));
-    });
-    return w.take();
-}
-
-void unpackRun(const std::string &bytes, ExecutionRun &run)
-{
-    ByteReader r(bytes);
-    r.get(run.planned);
-    r.get(run.reason);
-    getPoints(r, run.plan);
-    if (r.value<bool>())
+    const MissionSpec &m = problem.getSpec();
+    const std::vector<Point2> &via = problem.getViaPoints();
+    std::vector<ExecutionStop> stops;
+    if (m.waypoints.empty())
+        return stops;
+    for (std::size_t i = 0; i < via.size(); ++i)
     {
-        HeadingRoute h;
-        getHeadings(r, h);
-        run.headings = h;
+        const ViaPointSpec &v = m.waypoints[i];
+        ExecutionStop stop;
+        stop.name = v.name;
+        stop.at = via[i];
+        // the via point's radius, else the goal's (execution.radius, or 1 % of the start-goal distance)
+        stop.radius = std::isfinite(v.radius) ? v.radius : goalRadius;
+        stop.window = v.arrive.set;
+        stop.windowBegin = v.arrive.begin;
+        stop.windowEnd = v.arrive.end;
+        stop.stay = v.stay;
+        stops.push_back(stop);
     }
-    r.getEach(run.legs, [](ByteReader &i, ExecutionLeg &l) {
-        l.end = static_cast<std::size_t>(i.value<std::uint64_t>());
-        if (i.value<bool>())
-        {
-            HeadingRoute h;
-            getHeadings(i, h);
-            l.headings = h;
-        }
-    });
-    r.getEach(run.flown, [](ByteReader &i, FlownTrack &f) {
-        getPoints(i, f.fixes);
-        getPoints(i, f.track);
-        i.get(f.headings);
-        i.get(f.plannedArrival);
-        i.get(f.finalDistance);
-        i.get(f.arrivalTime);
-        i.get(f.reached);
-        i.get(f.grounded);
-        i.get(f.groundedWhy);
-        i.get(f.madeGoodSpeed);
-        i.get(f.replans);
-        f.stationsReached = static_cast<std::size_t>(i.value<std::uint64_t>());
-        f.windowsMissed = static_cast<std::size_t>(i.value<std::uint64_t>());
-    });
+    return stops;
 }
+
+/// The truth against the forecast over the planning box and the time window of the runs (ExecutionResult's
+/// rmsDifference, maxPointRmsDifference and their window).
+void modelDifference(const MissionProblem &problem, const PlannedPath &plan, ExecutionResult &r)
+{
+    const MissionSpec &m = problem.getSpec();
+    const ExecutionSpec &e = m.execution;
+    const Region &box = problem.getBox();
+    double latest = plan.departure;
+    for (const ExecutionRun &run : r.runs)
+        if (run.planned)
+            latest = std::max(latest, run.plan.back().t);
+    r.differenceBegin = plan.departure;
+    r.differenceEnd = plan.departure + 2.0 * (latest - plan.departure);
+    if (e.truth)
+    {
+        const CurrentField &f = *problem.getField(), &tr = *problem.getTruth();
+        const double tEnd = std::max(r.differenceBegin, std::min({r.differenceEnd, f.timeEnd(), tr.timeEnd()}));
+        r.differenceEnd = tEnd;  // within both fields
+        double sum = 0.0;
+        std::size_t count = 0;
+        for (int j = 0; j < 40; ++j)
+            for (int i = 0; i < 40; ++i)
+            {
+                const double x = box.xMin + (i + 0.5) * (box.xMax - box.xMin) / 40.0;
+                const double y = box.yMin + (j + 0.5) * (box.yMax - box.yMin) / 40.0;
+                const double d = rmsDifference(f, tr, x, y, m.vehicle.depth, r.differenceBegin, tEnd);
+                if (std::isnan(d))
+                    continue;
+                sum += d * d;
+                ++count;
+                r.maxPointRmsDifference = std::max(r.maxPointRmsDifference, d);
+            }
+        r.rmsDifference = count > 0 ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
+    }
+}
+
 /// What each strategy did over the runs flown.
 std::vector<StrategySpread> strategySpreads(const ExecutionResult &r)
 {
@@ -589,23 +559,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         const double d = std::hypot(run.goal.x - run.start.x, run.goal.y - run.start.y);
         run.radius = std::isnan(e.radius) ? 0.01 * d : e.radius;
     }
-    // a mission of several legs: its via points are the stations of every run
-    const std::vector<Point2> &via = problem.getViaPoints();
-    if (!m.waypoints.empty())
-        for (std::size_t i = 0; i < via.size(); ++i)
-        {
-            const ViaPointSpec &v = m.waypoints[i];
-            ExecutionStop stop;
-            stop.name = v.name;
-            stop.at = via[i];
-            // the via point's radius, else the goal's (execution.radius, or 1 % of the start-goal distance)
-            stop.radius = std::isfinite(v.radius) ? v.radius : r.runs[0].radius;
-            stop.window = v.arrive.set;
-            stop.windowBegin = v.arrive.begin;
-            stop.windowEnd = v.arrive.end;
-            stop.stay = v.stay;
-            r.stops.push_back(stop);
-        }
+    r.stops = executionStops(problem, r.runs[0].radius);  // a mission of several legs: the stations of every run
     if (plan.solved)
     {
         r.runs[0].planned = true;
@@ -657,14 +611,14 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
             [&](std::size_t i) {
                 ExecutionRun run = r.runs[i];
                 planAndFly(run);
-                return packRun(run);
+                return execution_detail::packRun(run);
             },
             [&](std::size_t n, std::size_t) {
                 if (progress)
                     report(n);
             });
         for (std::size_t i = 0; i < out.size(); ++i)
-            unpackRun(out[i], r.runs[i]);
+            execution_detail::unpackRun(out[i], r.runs[i]);
         r.threads = static_cast<unsigned>(std::min<std::size_t>(static_cast<std::size_t>(spread->size()),
                                                                 r.runs.size()));
     }
@@ -685,34 +639,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     }
 
     r.spread = strategySpreads(r);
-    // the truth against the forecast over the box and the runs' time window
-    double latest = plan.departure;
-    for (const ExecutionRun &run : r.runs)
-        if (run.planned)
-            latest = std::max(latest, run.plan.back().t);
-    r.differenceBegin = plan.departure;
-    r.differenceEnd = plan.departure + 2.0 * (latest - plan.departure);
-    if (e.truth)
-    {
-        const CurrentField &f = *problem.getField(), &tr = *problem.getTruth();
-        const double tEnd = std::max(r.differenceBegin, std::min({r.differenceEnd, f.timeEnd(), tr.timeEnd()}));
-        r.differenceEnd = tEnd;  // within both fields
-        double sum = 0.0;
-        std::size_t count = 0;
-        for (int j = 0; j < 40; ++j)
-            for (int i = 0; i < 40; ++i)
-            {
-                const double x = box.xMin + (i + 0.5) * (box.xMax - box.xMin) / 40.0;
-                const double y = box.yMin + (j + 0.5) * (box.yMax - box.yMin) / 40.0;
-                const double d = rmsDifference(f, tr, x, y, m.vehicle.depth, r.differenceBegin, tEnd);
-                if (std::isnan(d))
-                    continue;
-                sum += d * d;
-                ++count;
-                r.maxPointRmsDifference = std::max(r.maxPointRmsDifference, d);
-            }
-        r.rmsDifference = count > 0 ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
-    }
+    modelDifference(problem, plan, r);  // the truth against the forecast over the box and the runs' time window
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
 }

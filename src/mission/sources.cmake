@@ -29,6 +29,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/WorkEstimates.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Isochrones.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionExecution.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ExecutionPacking.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Fleet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PlanStatus.cpp
   ${CMAKE_CURRENT_LIST_DIR}/InputDigest.cpp

@@ -157,6 +157,18 @@ json plannerJson(const MissionSpec &m, const PlannedPath &p)
 
 /// A heading route's segments as flown, from the waypoints (each begun where the one before ended): bearing,
 /// duration (also in hours with physical time units) and where and when it is begun; null for straight legs.
+/// "headings", "straight_legs", or "mixed" for a mission whose legs are flown some as straight legs, some as held
+/// headings.
+const char *routeModel(const MissionResult &r)
+{
+    if (r.plan.headingRoute())
+        return "headings";
+    for (const PlannedLeg &l : r.legs)
+        if (l.plan.headingRoute())
+            return "mixed";
+    return "straight_legs";
+}
+
 json headingsJson(const MissionResult &r, const MissionProblem &problem)
 {
     // a heading route's segments, or those of a mission's legs flown as held headings
@@ -478,10 +490,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["wall_time_s"] = {{"planning", p.planningSeconds}, {"postprocess", p.postprocessSeconds}, {"total", r.wallSeconds}};
     j["path_checked"] = p.pathChecked;
     // heading routes: what the glider holds (the switch from a planner without a path: outcomeJson())
-    bool mixed = false;  // a mission whose legs are flown some as straight legs, some as held headings
-    for (const PlannedLeg &l : r.legs)
-        mixed = mixed || l.plan.headingRoute();
-    j["route_model"] = p.headingRoute() ? "headings" : mixed ? "mixed" : "straight_legs";
+    j["route_model"] = routeModel(r);
     j["headings"] = headingsJson(r, problem);
     // the global check of the route class: extremals shot from the start beside the planner's route
     j["global_check"] = globalCheckJson(p);

@@ -170,7 +170,8 @@ TEST(Resume, WhatCannotBeResumedIsRefusedPlainly)
     try
     {
         const MissionProblem p(survey(late));
-        ADD_FAILURE() << "a station whose window closed before the last fix was planned";
+        const MissionResult r = runMission(p);
+        ADD_FAILURE() << "a station whose window closed before the last fix was planned: " << r.plan.reason;
     }
     catch (const Error &e)
     {

@@ -34,7 +34,8 @@ def test_resumed_survey_same_from_cli_and_python(tmp_path):
 
 
 def test_a_start_given_as_a_keyword_is_kept():
-    r = ompl_glider.plan(SURVEY, observations=DEPLOYMENT, start=(-52.6, 47.92))
+    # (the departure too: the file's is the deployment's, before the DAC)
+    r = ompl_glider.plan(SURVEY, observations=DEPLOYMENT, start=(-52.6, 47.92), departure="2026-03-16T06:00:00Z")
     assert r.solved
     assert r.summary["observations"]["resumed"] is None
     assert r.route.lon[0] == pytest.approx(-52.6, abs=1e-9)
