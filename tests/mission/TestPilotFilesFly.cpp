@@ -223,7 +223,9 @@ void flyAndCheck(const MissionProblem &problem, const MissionResult &r, const st
         else
             ASSERT_TRUE(flyStraight(f, s, to, speed, depth)) << what << ": a straight leg the current forbids";
         // a station listed here: reached within its radius at the summary's time
-        if (next < stops.size() && std::hypot(to.x - stops[next].at.x, to.y - stops[next].at.y) < 1.0)
+        // (a station's point is written to 1e-4 minutes: within 0.2 m)
+        if (next < stops.size() &&
+            std::hypot(to.x - stops[next].at.x, to.y - stops[next].at.y) * m.metresPerUnit() < 1.0)
         {
             const Stop &st = stops[next];
             const double off = std::hypot(s.p.x - st.at.x, s.p.y - st.at.y) * m.metresPerUnit();
@@ -231,6 +233,8 @@ void flyAndCheck(const MissionProblem &problem, const MissionResult &r, const st
             const double elapsed = st.arrival - r.waypoints.front().time;
             EXPECT_NEAR(s.t, st.arrival, std::max(120.0 / m.timeUnitSeconds, 2e-3 * elapsed))
                 << what << ": " << st.name << " reached at " << s.t << ", the summary says " << st.arrival;
+            std::printf("%s: %s reached %.1f m from it, %+.1f s against the summary\n", what.c_str(), st.name.c_str(),
+                        off, (s.t - st.arrival) * m.timeUnitSeconds);
             if (targets && next + 1 < stops.size())
                 EXPECT_EQ(in.name, st.name) << what;
             ++next;
@@ -281,5 +285,33 @@ TEST(PilotFilesFly, SurveyGotoListAndTargetsReachEveryStationWhenTheSummarySays)
     for (const MissionWaypoint &w : r.waypoints)
         headed += std::isfinite(w.heading);
     EXPECT_GT(headed, 0u);
+    checkPilotFiles(problem, r);
+}
+
+// A mission in a linear shear (u = y, V = 0.5, a 10 km unit, a projection for lon/lat): leg 1 east in the slack water
+// (straight legs), leg 2 north across currents up to four times the glider's speed (held headings: no straight leg
+// exists), leg 3 downstream (straight legs); a 2 h stay at A.
+TEST(PilotFilesFly, ShearMissionWithAHeadingLegReachesEveryStationWhenTheSummarySays)
+{
+    const MissionProblem problem(parseMission(R"(name: shear_mixed
+units: {length_m: 10000, time_s: 3600}
+epoch: "2026-06-01T00:00:00Z"
+projection: {lon0: -70.0, lat0: 36.0}
+current: {type: linear_shear, parameters: {a: 1}}
+region: {x_min: -6, x_max: 10, y_min: -4, y_max: 4}
+start: {x: 0, y: 0.1}
+waypoints:
+  - {name: A, x: 1.5, y: 0.1, radius: 500 m, stay: 2 h}
+  - {name: B, x: 2.5, y: 2.0, radius: 500 m}
+goal: {x: 5.0, y: 2.0}
+vehicle: {speed: 0.5}
+)",
+                                              "shear.yaml"));
+    const MissionResult r = runMission(problem);
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    ASSERT_EQ(r.legs.size(), 3u);
+    EXPECT_FALSE(r.legs[0].plan.headingRoute());
+    EXPECT_TRUE(r.legs[1].plan.headingRoute());
+    EXPECT_FALSE(r.legs[2].plan.headingRoute());
     checkPilotFiles(problem, r);
 }
