@@ -199,6 +199,67 @@ private:
 };
 }  // namespace
 
+namespace
+{
+/// The glider's history with observations: its past fixes (a grey line with circles) and the DAC it measured (purple
+/// arrows from where each was measured; the fastest a twelfth of the region's height).
+void addGliderHistory(MapRenderer &map, const MissionProblem &problem)
+{
+#if OMPL_GLIDER_WITH_NETCDF
+    const auto &o = problem.observations();
+    if (!o || !problem.isGeographic())
+        return;
+    MapPath fixes;
+    fixes.label = "glider: " + std::to_string(o->fixes.size()) + " past fixes";
+    for (const GliderFix &f : o->fixes)
+    {
+        const Point2 q = problem.toLocal(f.at);
+        fixes.waypoints.push_back({q.x, q.y, 0.0});
+    }
+    fixes.colour = {0.22, 0.28, 0.31, 0.95};
+    fixes.width = 1.2;
+    if (fixes.waypoints.size() >= 2)
+        map.addPath(fixes);
+    double fastest = 0.0;
+    for (const DacRecord &d : o->dac)
+        fastest = std::max(fastest, std::hypot(d.u, d.v));
+    const Region &b = problem.getBox();
+    const double scale = fastest > 0.0 ? (b.yMax - b.yMin) / 12.0 / fastest : 0.0;  // length units per m/s
+    bool labelled = false;
+    for (const DacRecord &d : o->dac)
+    {
+        const Point2 q = problem.toLocal(d.at);
+        // east and north turned into the frame there
+        const Point2 e = problem.toLocal({d.at.lon + 0.01, d.at.lat}), n = problem.toLocal({d.at.lon, d.at.lat + 0.01});
+        const double el = std::hypot(e.x - q.x, e.y - q.y), nl = std::hypot(n.x - q.x, n.y - q.y);
+        const Point2 dir{d.u * (e.x - q.x) / el + d.v * (n.x - q.x) / nl,
+                         d.u * (e.y - q.y) / el + d.v * (n.y - q.y) / nl};
+        const Point2 tip{q.x + scale * dir.x, q.y + scale * dir.y};
+        const double len = std::hypot(tip.x - q.x, tip.y - q.y);
+        if (!(len > 0.0))
+            continue;
+        const double ux = (tip.x - q.x) / len, uy = (tip.y - q.y) / len, h = 0.3 * len;
+        MapPath arrow;
+        if (!labelled)
+            arrow.label = "glider: " + std::to_string(o->dac.size()) + " measured DAC";
+        labelled = true;
+        arrow.waypoints = {{q.x, q.y, 0.0},
+                           {tip.x, tip.y, 0.0},
+                           {tip.x - h * (ux * 0.87 - uy * 0.5), tip.y - h * (uy * 0.87 + ux * 0.5), 0.0},
+                           {tip.x, tip.y, 0.0},
+                           {tip.x - h * (ux * 0.87 + uy * 0.5), tip.y - h * (uy * 0.87 - ux * 0.5), 0.0}};
+        arrow.colour = {0.42, 0.11, 0.60, 0.95};
+        arrow.width = 1.6;
+        arrow.waypointMarkers = false;
+        map.addPath(arrow);
+    }
+#else
+    (void)map;
+    (void)problem;
+#endif
+}
+}  // namespace
+
 MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &problem)
 {
     const MissionSpec &m = r.spec;
@@ -221,57 +282,6 @@ MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &pro
         plan.waypointMarkers = !r.plan.headingRoute();  // a heading route's track: a point per integration step
         map.addPath(plan);
     }
-#if OMPL_GLIDER_WITH_NETCDF
-    if (const auto &o = problem.observations(); o && problem.isGeographic())
-    {
-        // the glider's history: its past fixes (a grey line with circles) and the DAC it measured (purple arrows
-        // from where each was measured; the fastest a twelfth of the region's height)
-        MapPath fixes;
-        fixes.label = "glider: " + std::to_string(o->fixes.size()) + " past fixes";
-        for (const GliderFix &f : o->fixes)
-        {
-            const Point2 q = problem.toLocal(f.at);
-            fixes.waypoints.push_back({q.x, q.y, 0.0});
-        }
-        fixes.colour = {0.22, 0.28, 0.31, 0.95};
-        fixes.width = 1.2;
-        if (fixes.waypoints.size() >= 2)
-            map.addPath(fixes);
-        double fastest = 0.0;
-        for (const DacRecord &d : o->dac)
-            fastest = std::max(fastest, std::hypot(d.u, d.v));
-        const Region &b = problem.getBox();
-        const double scale = fastest > 0.0 ? (b.yMax - b.yMin) / 12.0 / fastest : 0.0;  // length units per m/s
-        bool labelled = false;
-        for (const DacRecord &d : o->dac)
-        {
-            const Point2 q = problem.toLocal(d.at);
-            // east/north turned into the frame there (a forecast's frame is metres: the velocity as a length)
-            const Point2 e = problem.toLocal({d.at.lon + 0.01, d.at.lat}), n = problem.toLocal({d.at.lon, d.at.lat + 0.01});
-            const double el = std::hypot(e.x - q.x, e.y - q.y), nl = std::hypot(n.x - q.x, n.y - q.y);
-            const Point2 dir{d.u * (e.x - q.x) / el + d.v * (n.x - q.x) / nl, d.u * (e.y - q.y) / el + d.v * (n.y - q.y) / nl};
-            const Point2 tip{q.x + scale * dir.x, q.y + scale * dir.y};
-            const double len = std::hypot(tip.x - q.x, tip.y - q.y);
-            if (!(len > 0.0))
-                continue;
-            const double ux = (tip.x - q.x) / len, uy = (tip.y - q.y) / len, h = 0.3 * len;
-            MapPath arrow;
-            if (!labelled)
-                arrow.label = "glider: measured DAC (" + std::to_string(o->dac.size()) + ", fastest " +
-                              text::number(fastest, 3) + " m/s)";
-            labelled = true;
-            arrow.waypoints = {{q.x, q.y, 0.0},
-                               {tip.x, tip.y, 0.0},
-                               {tip.x - h * (ux * 0.87 - uy * 0.5), tip.y - h * (uy * 0.87 + ux * 0.5), 0.0},
-                               {tip.x, tip.y, 0.0},
-                               {tip.x - h * (ux * 0.87 + uy * 0.5), tip.y - h * (uy * 0.87 - ux * 0.5), 0.0}};
-            arrow.colour = {0.42, 0.11, 0.60, 0.95};
-            arrow.width = 1.6;
-            arrow.waypointMarkers = false;
-            map.addPath(arrow);
-        }
-    }
-#endif
     const Point2 s = problem.getStart(), g = problem.getGoal();
     map.setStartGoal(s.x, s.y, g.x, g.y);
     map.addNote("truth: " + e.truth);
@@ -375,6 +385,7 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
         map.addNote("dashed: the plan flown in the truth (" + e.truth + "), surfacing every " +
                     duration(r, e.surfacingInterval) + "; arrival, distance off the goal at the planned arrival");
     }
+    addGliderHistory(map, problem);
     const Point2 s = problem.getStart(), g = problem.getGoal();
     map.setStartGoal(s.x, s.y, g.x, g.y);
     // a mission's via points: their radius, name and arrival (a date where the field has dates)

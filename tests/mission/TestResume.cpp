@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
@@ -19,6 +21,8 @@
 #include "ompl_glider/mission/Observations.h"
 #include "ompl_glider/mission/Overrides.h"
 #include "ompl_glider/mission/Planning.h"
+#include "ompl_glider/output/MapHtml.h"
+#include "ompl_glider/output/MissionMap.h"
 
 using namespace ompl_glider;
 namespace fs = std::filesystem;
@@ -190,4 +194,31 @@ TEST(Resume, AStartGivenByTheCallerWins)
     EXPECT_FALSE(p.getSpec().observations->resumed);
     EXPECT_NEAR(p.getSpec().start.lonLat.lon, -52.5, 1e-12);
     EXPECT_EQ(p.getSpec().waypoints.size(), 3u);
+}
+
+// The maps of a resumed plan show the glider's history: its past fixes and the DAC it measured (map.png's legend,
+// map.html's glider layer), at the places the deployment reported them.
+TEST(Resume, TheMapsShowThePastFixesAndTheMeasuredDac)
+{
+    const MissionProblem p(survey(std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/deployment_ru29"));
+    const MissionResult r = runMission(p);
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    const nlohmann::json d = nlohmann::json::parse(mapHtmlData(r, p));
+    ASSERT_TRUE(d.contains("glider") && d["glider"].is_object());
+    const auto &fixes = d["glider"]["fixes"];
+    const auto &dac = d["glider"]["dac"];
+    // eight profiles, each with its fix and its DAC's own place and time (half an hour earlier)
+    ASSERT_EQ(fixes.size(), 16u);
+    ASSERT_EQ(dac.size(), 8u);
+    EXPECT_NEAR(fixes.back()["lon"].get<double>(), -52.7 + 8 * 0.045, 1e-9);
+    EXPECT_EQ(fixes.back()["time"], "2026-03-16T06:00:00Z");
+    EXPECT_NEAR(dac[0]["lon"].get<double>(), -52.7 + 0.045 - 0.004, 1e-9);
+    EXPECT_GT(d["glider"]["arrow_deg_per_ms"].get<double>(), 0.0);
+    const fs::path svg = fs::temp_directory_path() / ("ompl_glider_resume_map_" + std::to_string(::getpid()) + ".svg");
+    missionMap(r, p).writeSvg(svg.string());
+    std::ifstream in(svg);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    fs::remove(svg);
+    EXPECT_NE(text.find("glider: 16 past fixes"), std::string::npos);
+    EXPECT_NE(text.find("glider: 8 measured DAC"), std::string::npos);
 }

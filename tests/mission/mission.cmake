@@ -50,6 +50,7 @@ target_link_libraries(test_mission_goal_window PRIVATE nlohmann_json::nlohmann_j
 glider_add_test(test_mission_legs ${CMAKE_CURRENT_LIST_DIR}/TestMissionLegs.cpp
                 ${CMAKE_CURRENT_LIST_DIR}/TestSeagliderTargets.cpp ${CMAKE_CURRENT_LIST_DIR}/TestPilotFilesFly.cpp
                 ${CMAKE_CURRENT_LIST_DIR}/TestResume.cpp)
+target_link_libraries(test_mission_legs PRIVATE nlohmann_json::nlohmann_json)
 # the glider's measurements: the forecast corrected by its DAC, the plan from the last fix
 glider_add_test(test_mission_observations ${CMAKE_CURRENT_LIST_DIR}/TestObservations.cpp
                 ${CMAKE_CURRENT_LIST_DIR}/TestExecutionObserved.cpp)
