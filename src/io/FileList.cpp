@@ -3,7 +3,9 @@
 
 #include <glob.h>
 
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 
 #include "TextUtil.h"
 #include "ompl_glider/Exception.h"
@@ -81,5 +83,59 @@ std::vector<std::string> forecastFileList(const std::string &text, const std::st
         from = at + 1;
     }
     return expandForecastFiles(items, baseDir);
+}
+namespace
+{
+bool endsWithLower(const std::string &s, const std::string &tail)
+{
+    return s.size() >= tail.size() && text::lower(s.substr(s.size() - tail.size())) == tail;
+}
+
+bool isHttp(const std::string &s)
+{
+    return s.rfind("http://", 0) == 0 || s.rfind("https://", 0) == 0;
+}
+}  // namespace
+
+bool isZarrStore(const std::string &path)
+{
+    std::string p = path;
+    while (p.size() > 1 && p.back() == '/')
+        p.pop_back();
+    if (path.rfind("ZARR:", 0) == 0 || endsWithLower(p, ".zarr"))
+        return true;
+    if (isHttp(path))
+        return false;
+    std::error_code ec;
+    for (const char *marker : {".zgroup", ".zmetadata", ".zarray"})
+        if (std::filesystem::is_regular_file(std::filesystem::path(path) / marker, ec))
+            return true;
+    return false;
+}
+
+bool isGribFile(const std::string &path)
+{
+    for (const char *ext : {".grib2", ".grb2", ".grib", ".grb"})
+        if (endsWithLower(path, ext))
+            return true;
+    std::error_code ec;
+    if (isHttp(path) || !std::filesystem::is_regular_file(path, ec))
+        return false;
+    char magic[4] = {};
+    std::ifstream in(path, std::ios::binary);
+    return in.read(magic, 4) && std::memcmp(magic, "GRIB", 4) == 0;
+}
+
+std::string forecastSourceKind(const std::string &path)
+{
+    if (isZarrStore(path))
+        return "Zarr store";
+    if (isGribFile(path))
+        return "GRIB file";
+    if (isRemoteSource(path))
+        return "OPeNDAP dataset";
+    if (isMemoryDataset(path))
+        return "in-memory dataset";
+    return "NetCDF file";
 }
 }  // namespace ompl_glider

@@ -18,6 +18,7 @@
 #include "TextUtil.h"
 #include "HttpMirror.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/FileList.h"
 #include "ompl_glider/io/RemoteSource.h"
 
 namespace ompl_glider
@@ -26,11 +27,6 @@ namespace netcdf_detail
 {
 namespace
 {
-bool endsWith(const std::string &s, const std::string &tail)
-{
-    return s.size() >= tail.size() && text::lower(s.substr(s.size() - tail.size())) == tail;
-}
-
 bool isUrl(const std::string &s)
 {
     return s.rfind("http://", 0) == 0 || s.rfind("https://", 0) == 0;
@@ -43,18 +39,6 @@ std::string withoutSlash(std::string s)
     return s;
 }
 
-bool isGribFile(const std::string &path)
-{
-    for (const char *ext : {".grib2", ".grb2", ".grib", ".grb"})
-        if (endsWith(path, ext))
-            return true;
-    std::error_code ec;
-    if (isUrl(path) || !std::filesystem::is_regular_file(path, ec))
-        return false;
-    char magic[4] = {};
-    std::ifstream in(path, std::ios::binary);
-    return in.read(magic, 4) && std::memcmp(magic, "GRIB", 4) == 0;
-}
 
 /// GDAL's own printing of its errors off for the life of the object: they reach the user in this reader's messages
 /// (CPLGetLastErrorMsg()), which name the source.
@@ -90,18 +74,6 @@ nc_type ncTypeOf(GDALDataType t)
 }
 }  // namespace
 
-bool isZarrStore(const std::string &path)
-{
-    if (path.rfind("ZARR:", 0) == 0 || endsWith(withoutSlash(path), ".zarr"))
-        return true;
-    if (isUrl(path))
-        return false;
-    std::error_code ec;
-    for (const char *marker : {".zgroup", ".zmetadata", ".zarray"})
-        if (std::filesystem::is_regular_file(std::filesystem::path(path) / marker, ec))
-            return true;
-    return false;
-}
 
 bool isGdalSource(const std::string &path)
 {

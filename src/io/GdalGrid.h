@@ -29,8 +29,6 @@ namespace netcdf_detail
 /// `.grib`, `.grb`, or a file whose first bytes are "GRIB").
 bool isGdalSource(const std::string &path);
 
-/// A Zarr store (see isGdalSource()).
-bool isZarrStore(const std::string &path);
 
 class GdalGrid final : public Dataset
 {

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "ompl_glider/Config.h"
+#include "ompl_glider/io/FileList.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/mission/Observations.h"
@@ -199,7 +200,10 @@ void printReport(std::ostream &out, const MissionResult &r)
 {
     const PlannedPath &p = r.plan;
     const MissionSpec &m = r.spec;
-    out << "Mission:            " << m.name << " (" << m.file << "), current " << m.current.type << "\n";
+    out << "Mission:            " << m.name << " (" << m.file << "), current " << m.current.type;
+    if (m.current.isForecast() && !m.current.file.empty())  // a Zarr store, a GRIB file, an OPeNDAP dataset...
+        out << " (" << forecastSourceKind(m.current.file) << (m.current.files.size() > 1 ? "s" : "") << ")";
+    out << "\n";
     out << "Planner:            " << p.planner;
     const PlannerEntry *entry = findPlanner(p.planner.empty() ? m.planner.name : p.planner);
     if (m.planner.gridSize > 0 && entry && entry->lattice())  // grid and sectors are the lattice's

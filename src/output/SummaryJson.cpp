@@ -13,6 +13,7 @@
 #endif
 #include "JsonValues.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/FileList.h"
 #include "ompl_glider/io/RemoteSource.h"
 
 namespace ompl_glider
@@ -443,6 +444,10 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["mission"] = m.name;
     j["source"] = m.file;
     j["current"] = m.current.type;
+    // what the forecast's files are (a Zarr store, a GRIB file, an OPeNDAP dataset, NetCDF files); null otherwise
+    j["current_source"] = m.current.isForecast() && !m.current.file.empty()
+                              ? json(forecastSourceKind(m.current.file))
+                              : json(nullptr);
     json forecastFiles = json::array();
     for (const std::string &f : problem.forecastFiles())
         forecastFiles.push_back(withoutCredentials(f));  // a URL's user:password never reaches an output

@@ -241,6 +241,10 @@ def main():
                       (name, t, t_nc))
                 check(read(os.path.join(out, "waypoints.csv")) == read(os.path.join(work, "o_nc", "waypoints.csv")),
                       "%s store: the same waypoints.csv" % name)
+                # named as what it is, in the report and summary.json
+                check("current netcdf (Zarr store)" in p.stdout, "%s store: the report says Zarr store" % name)
+                check(json.load(open(os.path.join(out, "summary.json")))["current_source"] == "Zarr store",
+                      "%s store: summary.json current_source" % name)
 
         # 2. the geo-chunked store over HTTP: the same plan, only the trip's chunks asked for
         server = serve(root)
@@ -378,6 +382,9 @@ def main():
             if p.returncode == 0 and p_gnc.returncode == 0:
                 t, tg = travel_time(out), travel_time(os.path.join(work, "o_gnc"))
                 check(abs(t - tg) <= 1e-12 * tg, "GRIB2 %s: the NetCDF file's travel time (%r, %r)" % (label, t, tg))
+                check("current netcdf (GRIB file)" in p.stdout, "GRIB2 %s: the report says GRIB file" % label)
+                check(json.load(open(os.path.join(out, "summary.json")))["current_source"] == "GRIB file",
+                      "GRIB2 %s: summary.json current_source" % label)
         # 6. RTOFS's layout: one GRIB2 file per forecast time, given as one forecast by a pattern
         hourly = os.path.join(work, "hourly")
         os.makedirs(hourly)

@@ -15,4 +15,13 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
 
 /// @brief expandForecastFiles() of a comma-separated list ("a.nc,b.nc", "hycom_202603*.nc", "a.nc, b_*.nc").
 std::vector<std::string> forecastFileList(const std::string &commaSeparated, const std::string &baseDir = "");
+
+/// @brief A Zarr store: a folder holding `.zgroup`, `.zmetadata` or `.zarray`, a name ending in `.zarr` (also as an
+/// http(s) URL), or GDAL's `ZARR:` prefix.
+bool isZarrStore(const std::string &path);
+/// @brief A GRIB file: `.grib2`, `.grb2`, `.grib`, `.grb` (also as a URL), or a file whose first bytes are "GRIB".
+bool isGribFile(const std::string &path);
+/// @brief What a forecast source is, as the report and summary.json name it: "Zarr store", "GRIB file", "OPeNDAP
+/// dataset" (another URL), "in-memory dataset", else "NetCDF file".
+std::string forecastSourceKind(const std::string &path);
 }  // namespace ompl_glider
