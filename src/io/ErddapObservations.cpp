@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <iterator>
 #include <set>
+#include <sstream>
 
 #include "HttpMirror.h"
 #include "NcFile.h"
@@ -354,6 +355,17 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who)
     if (!netcdf)
         throw Error(who + ": the answer is not NetCDF (it begins '" +
                     text::validUtf8(text::oneLine(body.substr(0, 40))) + "')");
+    if (body.rfind("CDF", 0) == 0) // a classic file: whole, as its header declares (NetCDF-C reads past a cut one)
+    {
+        std::istringstream in(body);
+        const netcdf_detail::ClassicExtent e = netcdf_detail::classicExtent(in, body.size());
+        if (!e.corrupt.empty() || e.headerCut || e.dataEnd() > body.size())
+            throw Error(who + ": the .ncCF answer is cut short or corrupt (" +
+                        (e.corrupt.empty() ? std::to_string(body.size()) + " bytes, its header declares " +
+                                                 (e.headerCut ? std::string("more") : std::to_string(e.dataEnd()))
+                                           : e.corrupt) +
+                        ")");
+    }
     const MemoryName memory{registerMemoryDataset(body)};
     std::map<std::string, std::vector<double>> values;
     std::vector<std::string> names, profiles;

@@ -291,6 +291,11 @@ TEST_F(GliderRealtime, ErddapAnswersWithoutTheColumnsAreRefusedNamingThem)
 {
     const fs::path scratch = freshDir("realtime_columns") / "answer.nc";
     const loopback_test::Server server([&](const loopback_test::Request &r) -> loopback_test::Response {
+        if (r.path.find("cut.ncCF") != std::string::npos) // the answer cut short (a dropped connection)
+        {
+            const std::string whole = ncCfAnswer(deployment(), false, scratch);
+            return {200, whole.substr(0, whole.size() - 100)};
+        }
         if (r.path.find(".ncCF") != std::string::npos)
             return {200, ncCfAnswer(deployment(), false, scratch, {"v", "lat_uv"})};
         if (r.path.find("cms") != std::string::npos) // u and v in cm/s
@@ -315,6 +320,9 @@ TEST_F(GliderRealtime, ErddapAnswersWithoutTheColumnsAreRefusedNamingThem)
     const std::string nccf = server.url("/erddap/tabledap/ru29.ncCF?time");
     EXPECT_NE(errorOf(nccf).find("ERDDAP '" + nccf + "': the answer has no variable 'lat_uv', 'v'"), std::string::npos)
         << errorOf(nccf);
+    const std::string cut = server.url("/erddap/tabledap/cut.ncCF");
+    EXPECT_NE(errorOf(cut).find("ERDDAP '" + cut + "': the .ncCF answer is cut short or corrupt"), std::string::npos)
+        << errorOf(cut);
     const std::string cms = server.url("/erddap/tabledap/cms.csvp");
     EXPECT_NE(errorOf(cms).find("ERDDAP '" + cms + "': 'u' is in 'cm s-1': m/s expected"), std::string::npos)
         << errorOf(cms);
