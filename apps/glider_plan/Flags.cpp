@@ -122,8 +122,9 @@ void defineRouteFlags(CLI::App &app, Flags &f)
                    "(branch and bound over the orders with the planned leg times)")
         ->group(built);
     app.add_option("--observations", f.observations,
-                   "the glider's depth-averaged currents: IOOS glider profile NetCDF files (a file, folder or glob "
-                   "pattern) or a CSV time,lon,lat,u,v; the forecast is corrected by them (optimal interpolation) and, "
+                   "the glider's depth-averaged currents: IOOS glider profile NetCDF files or Slocum dba files (a "
+                   "file, folder or glob pattern), a CSV time,lon,lat,u,v, or an ERDDAP tabledap URL (.csvp, .csv or "
+                   ".ncCF of time,latitude,longitude,profile_id,time_uv,lat_uv,lon_uv,u,v,u_qc,v_qc); the forecast is corrected by them (optimal interpolation) and, "
                    "without --start, the plan starts at the last fix (and at its time without --departure)")
         ->group(built);
     app.add_option("--arrive-between", f.arriveBetween,

@@ -437,8 +437,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     between start and goal, a mission of several legs: each a pair (x, y) / (lon, lat), or a dict with ``at`` (the
     pair), ``name``, ``radius``, ``stay`` (the mission's units) and ``arrive`` ((begin, end), times as departure)),
     order ("given" or "free": the fastest order of up to 8 via points), observations (the glider's depth-averaged
-    currents: IOOS glider profile files, a folder or glob of them, or a CSV time,lon,lat,u,v: the forecast is
-    corrected by them and, without start, the plan starts at the last fix, at its time without departure); isochrones /
+    currents: IOOS glider profile files or Slocum dba files, a folder or glob of them, a CSV time,lon,lat,u,v, or an
+    ERDDAP tabledap URL (.csvp, .csv, .ncCF): the forecast is corrected by them and, without start, the plan starts at the last fix, at its time without departure); isochrones /
     isochrone_interval (a number in the mission's time unit, or a duration such as "6 h") add the reachable-set
     contours (:attr:`Result.isochrones`); speeds a speed sweep; optimum the optimal-control reference.
     Safety: keep_off (the distance kept from land: a number in the mission's length unit, or "2 km"), min_depth (the

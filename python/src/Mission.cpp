@@ -516,7 +516,8 @@ void bindMission(py::module_ &m)
                 return py::none();
             return py::make_tuple(o.lastFix->at.lon, o.lastFix->at.lat, formatIsoTime(o.lastFix->time));
         },
-        py::arg("path"), "The last fix (lon, lat, ISO 8601 time) of a glider's observations (IOOS files or CSV).");
+        py::arg("path"), "The last fix (lon, lat, ISO 8601 time) of a glider's observations (IOOS files, Slocum dba files, a CSV, "
+                         "or an ERDDAP URL).");
     m.def("load_mission", &loadMission, py::arg("path"), "A YAML mission file (examples/MISSION_FORMAT.md).");
     m.def("parse_mission", &parseMission, py::arg("text"), py::arg("file") = "<mission>",
           py::arg("directory") = ".", "A mission from YAML (or JSON) text.");

@@ -1,9 +1,11 @@
 /// @file GliderObservations.cpp
-/// @brief A glider deployment's DAC records from IOOS profile NetCDF files or a CSV (GliderObservations.h).
+/// @brief A glider deployment's DAC records from IOOS profile NetCDF files or a CSV (GliderObservations.h); the entry
+/// point of every source (ERDDAP URLs and Slocum dba files: ObservationReaders.h).
 
 #include "ompl_glider/io/GliderObservations.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,28 +14,84 @@
 
 #include "NcFile.h"
 #include "NumberText.h"
+#include "ObservationReaders.h"
+#include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/io/Time.h"
 
 namespace ompl_glider
 {
 namespace fs = std::filesystem;
 using netcdf_detail::NcFile;
+using observations_detail::dacProblem;
+using observations_detail::isDbaFile;
+using observations_detail::kFillValue;
+
+namespace observations_detail
+{
+std::string dacProblem(const DacRecord &r)
+{
+    if (!std::isfinite(r.time) || !std::isfinite(r.at.lon) || !std::isfinite(r.at.lat))
+        return "no time or position";
+    if (std::abs(r.at.lat) > 90.0 || r.at.lon < -180.0 || r.at.lon > 360.0)
+        return "position out of range";
+    if (std::hypot(r.u, r.v) > kMaxPlausibleDac)
+        return "faster than " + text::number(kMaxPlausibleDac) + " m/s";
+    return "";
+}
+
+bool isMetresPerSecond(const std::string &units)
+{
+    std::string u;
+    for (const char c : units)
+        if (c != ' ' || (!u.empty() && u.back() != ' '))
+            u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    while (!u.empty() && u.back() == ' ')
+        u.pop_back();
+    for (const char *m : {"", "m/s", "m s-1", "m.s-1", "m s^-1", "m.s^-1", "m/sec", "meters/second", "metres/second",
+                          "meter second-1", "meters second-1", "metre second-1", "metres second-1"})
+        if (u == m)
+            return true;
+    return false;
+}
+
+bool isDbaFile(const std::string &file)
+{
+    if (fs::path(file).extension() == ".dba")
+        return true;
+    std::ifstream in(file);
+    std::string first;
+    std::getline(in, first);
+    return first.rfind("dbd_label:", 0) == 0;
+}
+} // namespace observations_detail
 
 namespace
 {
-/// The files of @p path: the file, a folder's *.nc files, or a glob pattern's matches, sorted.
+/// The files of @p path: the file, a folder's *.nc files (or its Slocum *.dba files), or a glob pattern's matches,
+/// sorted.
 std::vector<std::string> filesOf(const std::string &path)
 {
     std::vector<std::string> out;
     std::error_code ec;
     if (fs::is_directory(path, ec))
     {
+        std::vector<std::string> dba;
         for (const auto &e : fs::directory_iterator(path, ec))
             if (e.is_regular_file() && e.path().extension() == ".nc")
                 out.push_back(e.path().string());
+            else if (e.is_regular_file() && e.path().extension() == ".dba")
+                dba.push_back(e.path().string());
+        if (!out.empty() && !dba.empty())
+            throw Error("observations '" + path +
+                        "': the folder holds both NetCDF (.nc) and Slocum dba (.dba) "
+                        "files: give a pattern of one kind ('" +
+                        (fs::path(path) / "*.dba").string() + "')");
         if (out.empty())
-            throw Error("observations '" + path + "': the folder holds no NetCDF (.nc) file");
+            out = std::move(dba);
+        if (out.empty())
+            throw Error("observations '" + path + "': the folder holds no NetCDF (.nc) or Slocum dba (.dba) file");
     }
     else if (path.find_first_of("*?[") != std::string::npos)
     {
@@ -79,18 +137,6 @@ void sortFixes(std::vector<GliderFix> &fixes)
     fixes.erase(std::unique(fixes.begin(), fixes.end(),
                             [](const GliderFix &a, const GliderFix &b) { return a.time == b.time; }),
                 fixes.end());
-}
-
-/// A record's checks shared by both formats; empty when it is usable, else the reason.
-std::string check(const DacRecord &r)
-{
-    if (!std::isfinite(r.time) || !std::isfinite(r.at.lon) || !std::isfinite(r.at.lat))
-        return "no time or position";
-    if (std::abs(r.at.lat) > 90.0 || r.at.lon < -180.0 || r.at.lon > 360.0)
-        return "position out of range";
-    if (std::hypot(r.u, r.v) > kMaxPlausibleDac)
-        return "faster than " + text::number(kMaxPlausibleDac) + " m/s";
-    return "";
 }
 
 void readCsv(const std::string &file, GliderObservations &o)
@@ -160,7 +206,7 @@ void readCsv(const std::string &file, GliderObservations &o)
             continue; // a fix without a DAC
         r.u = number("u");
         r.v = number("v");
-        const std::string why = check(r);
+        const std::string why = dacProblem(r);
         if (!why.empty())
         {
             ++o.rejected[why];
@@ -249,9 +295,9 @@ ProfileFile readProfile(const std::string &file)
             }
         }
     if (!std::isfinite(r.u) || !std::isfinite(r.v))
-        p.rejected = "fill value";
+        p.rejected = kFillValue;
     else
-        p.rejected = check(r);
+        p.rejected = dacProblem(r);
     if (p.rejected.empty())
     {
         p.dac = r;
@@ -260,49 +306,78 @@ ProfileFile readProfile(const std::string &file)
     }
     return p;
 }
+
+/// The IOOS profile files @p files (one deployment) into @p o.
+void readProfiles(const std::vector<std::string> &files, GliderObservations &o)
+{
+    std::vector<ProfileFile> profiles;
+    std::map<std::string, std::size_t> gliders;
+    for (const std::string &f : files)
+    {
+        profiles.push_back(readProfile(f));
+        ++gliders[profiles.back().platform];
+    }
+    o.platform = observations_detail::mostNamed(gliders);
+    for (const ProfileFile &p : profiles)
+    {
+        if (p.platform != o.platform)
+        {
+            ++o.rejected["another glider ('" + p.platform + "')"];
+            continue;
+        }
+        if (p.fix && (!o.lastFix || p.fix->time > o.lastFix->time))
+            o.lastFix = p.fix;
+        if (p.fix)
+            o.fixes.push_back(*p.fix);
+        if (p.dac)
+        {
+            o.dac.push_back(*p.dac);
+            o.fixes.push_back(GliderFix{p.dac->time, p.dac->at});
+        }
+        else
+            ++o.rejected[p.rejected];
+    }
+}
 } // namespace
 
 GliderObservations readGliderObservations(const std::string &path)
 {
     GliderObservations o;
-    o.source = path;
-    const std::vector<std::string> files = filesOf(path);
-    o.files = files.size();
-    const bool csv = files.size() == 1 && fs::path(files[0]).extension() == ".csv";
-    if (csv)
-        readCsv(files[0], o);
+    o.source = withoutCredentials(path);
+    std::string variables = "variables u, v"; // where the DAC is, for the message when none is usable
+    if (isRemoteSource(path))
+    {
+#if OMPL_GLIDER_WITH_MISSION
+        observations_detail::readErddap(path, o);
+#else
+        throw Error("observations '" + o.source + "': this build reads no URL (built without GDAL's HTTP client)");
+#endif
+    }
     else
     {
-        std::vector<ProfileFile> profiles;
-        std::map<std::string, std::size_t> gliders;
-        for (const std::string &f : files)
+        const std::vector<std::string> files = filesOf(path);
+        o.files = files.size();
+        const bool csv = files.size() == 1 && fs::path(files[0]).extension() == ".csv";
+        const bool dba = std::all_of(files.begin(), files.end(), isDbaFile);
+        if (csv)
+            readCsv(files[0], o);
+        else if (dba)
         {
-            profiles.push_back(readProfile(f));
-            ++gliders[profiles.back().platform];
+#if OMPL_GLIDER_WITH_MISSION
+            observations_detail::readDbaFiles(files, o);
+            variables = "sensors m_water_vx, m_water_vy";
+#else
+            throw Error("observations '" + path +
+                        "': this build reads no Slocum dba file (built without the "
+                        "mission layer)");
+#endif
         }
-        // the deployment's glider: the one most files name
-        for (const auto &[name, count] : gliders)
-            if (o.platform.empty() || count > gliders[o.platform])
-                o.platform = name;
-        for (const ProfileFile &p : profiles)
-        {
-            if (p.platform != o.platform)
-            {
-                ++o.rejected["another glider ('" + p.platform + "')"];
-                continue;
-            }
-            if (p.fix && (!o.lastFix || p.fix->time > o.lastFix->time))
-                o.lastFix = p.fix;
-            if (p.fix)
-                o.fixes.push_back(*p.fix);
-            if (p.dac)
-            {
-                o.dac.push_back(*p.dac);
-                o.fixes.push_back(GliderFix{p.dac->time, p.dac->at});
-            }
-            else
-                ++o.rejected[p.rejected];
-        }
+        else if (std::any_of(files.begin(), files.end(), isDbaFile))
+            throw Error("observations '" + path +
+                        "': the pattern matches both Slocum dba files and others: give a "
+                        "pattern of one kind");
+        else
+            readProfiles(files, o);
     }
     std::stable_sort(o.dac.begin(), o.dac.end(),
                      [](const DacRecord &a, const DacRecord &b) { return a.time < b.time; });
@@ -315,12 +390,14 @@ GliderObservations readGliderObservations(const std::string &path)
             unique.push_back(r);
     o.dac = std::move(unique);
     sortFixes(o.fixes);
+    if (!o.lastFix && !o.fixes.empty())
+        o.lastFix = o.fixes.back(); // the readers of ObservationReaders.h: the latest fix reported
     if (o.dac.empty())
     {
         std::string why;
         for (const auto &[reason, count] : o.rejected)
             why += (why.empty() ? "" : ", ") + std::to_string(count) + " " + reason;
-        throw Error("observations '" + path + "': no usable depth-averaged current (variables u, v" +
+        throw Error("observations '" + o.source + "': no usable depth-averaged current (" + variables +
                     (why.empty() ? std::string(")") : "; rejected: " + why + ")"));
     }
     return o;

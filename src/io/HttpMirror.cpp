@@ -322,7 +322,7 @@ void ZarrMirror::checkRepublished()
 }
 
 bool httpGet(const std::string &url, std::size_t record, const std::string &who, const std::string &what,
-             std::string &body)
+             std::string &body, HttpFailure *failure)
 {
     const RemoteAccess a = remoteAccess();
     const std::string limit = std::to_string(std::max(1L, std::lround(a.requestTimeout)));
@@ -356,6 +356,12 @@ bool httpGet(const std::string &url, std::size_t record, const std::string &who,
             CPLHTTPDestroyResult(r);
             remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) { f.bytesFetched += body.size(); });
             return true;
+        }
+        if (failure)
+        {
+            failure->status = curl == 0 ? http : 0;
+            failure->body.assign(r && r->pabyData ? reinterpret_cast<const char *>(r->pabyData) : "",
+                                 r && r->pabyData ? static_cast<std::size_t>(r->nDataLen) : 0);
         }
         if (r)
             CPLHTTPDestroyResult(r);

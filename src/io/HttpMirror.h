@@ -22,12 +22,21 @@ namespace ompl_glider
 {
 namespace netcdf_detail
 {
+/// What the server answered to a request that failed: its HTTP status (0: no answer) and body (a server's own words:
+/// ERDDAP's `Error { ... message="..."; }`, an HTML page).
+struct HttpFailure
+{
+    int status{0};
+    std::string body;
+};
+
 /// GETs @p url with the process's request time limit and retries (RemoteSource.h), counting each request and the
 /// bytes in entry @p record of the process's record: its bytes into @p body; false when the server does not hold it
 /// (404). @throws Error "<who>: cannot fetch '<what>': <why> (request time limit N s, R retries)" after the retries for
-/// the network or the server, and at a stop request.
+/// the network or the server, and at a stop request. When the request fails (404 included), @p failure (if given)
+/// receives the last answer's status and body.
 bool httpGet(const std::string &url, std::size_t record, const std::string &who, const std::string &what,
-             std::string &body);
+             std::string &body, HttpFailure *failure = nullptr);
 
 /// A file over HTTP (a GRIB file) fetched whole, once: into the cache folder (a later run reads it there, no
 /// request), or GDAL's memory without a cache.

@@ -906,6 +906,32 @@ case("name-bad-utf8", ["--mission", "m.yaml", "--out", "{out}"], 2,
      "m.yaml:1: the text is not UTF-8 (byte 0xff at column 7)",
      {"m.yaml": ("bytes", b"name: \xff\xfe glider\n" + mission().split("\n", 1)[1].encode())})
 
+# --- the glider's observations in real time: Slocum dba files, an ERDDAP URL ----------------------------------------
+DBA = ("dbd_label: DBD_ASC(dinkum_binary_data_ascii)file\nencoding_ver: 2\nnum_ascii_tags: 5\n"
+       "filename: ru29-2026-074-0-0\nsensors_per_cycle: 5\n"
+       "m_present_time m_gps_lat m_gps_lon m_water_vx m_water_vy\ntimestamp lat lon m/s m/s\n8 8 8 4 4\n")
+
+
+def observations_case(name, observations, phrase, files=None, extra=()):
+    case(name, ["--currents", "f.nc", "--observations", observations, GOAL, *extra, "--out", "{out}"], 2, phrase,
+         {"f.cdl": forecast(), **(files or {})})
+
+
+observations_case("observations-dba-not-a-number", "g.dba", "g.dba:9: sensor 'm_gps_lat': '47x0.0' is not a number",
+                  {"g.dba": DBA + "1773554400 47x0.0 -5230.0 NaN NaN\n"})
+observations_case("observations-dba-row-too-short", "g.dba", "g.dba:10: 3 values, the label line (6) names 5 sensors",
+                  {"g.dba": DBA + "1773554400 4730.0 -5230.0 NaN NaN\n1773554430 NaN NaN\n"})
+observations_case("observations-dba-no-water-velocity", "g.dba", "g.dba:6: no sensor 'm_water_vy'",
+                  {"g.dba": DBA.replace(" m_water_vy", " m_depth")})
+observations_case("observations-dba-cm-per-s", "g.dba", "g.dba:7: sensor 'm_water_vx' is in 'cm/s': m/s expected",
+                  {"g.dba": DBA.replace("lon m/s m/s", "lon cm/s cm/s")})
+observations_case("observations-dba-no-dac", "g.dba", "no usable depth-averaged current (sensors m_water_vx, m_water_vy",
+                  {"g.dba": DBA + "1773554400 4730.0 -5230.0 NaN NaN\n"})
+observations_case("observations-erddap-server-down", "http://127.0.0.1:1/erddap/tabledap/ru29.csvp?time,u",
+                  "ERDDAP: cannot fetch 'http://127.0.0.1:1/erddap/tabledap/ru29.csvp?time,u'", extra=("--retries", "0"))
+observations_case("observations-erddap-file-type", "http://127.0.0.1:1/erddap/tabledap/ru29.htmlTable?time",
+                  "not an ERDDAP tabledap answer this reader knows (the file type '.htmlTable'")
+
 # --- well-formed problems without a path: exit 1 with the reason ------------------------------------------------
 case("no-path-slow-in-jet", ["--speed", "0.05", "--out", "{out}"], 1, "Status:             No path")
 case("no-path-horizon-named", ["--speed", "0.05", "--out", "{out}"], 1, "within the planning horizon")

@@ -4,6 +4,7 @@
 // *_qc flags, the platform variable and the trajectory name.
 #include <netcdf.h>
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,8 @@ struct Profile
     double u, v;                // m/s (-999: fill)
     signed char qc{1};          // u_qc / v_qc
     std::string glider{"ru29"}; // platform:id
+    // the DAC's time and position; NaN: 30 min before the profile, 0.001 degrees south-west of it
+    double timeUv{std::nan("")}, lonUv{std::nan("")}, latUv{std::nan("")};
 };
 
 inline void check(int status, const std::string &what)
@@ -54,9 +57,10 @@ inline void writeProfile(const std::string &path, const Profile &p)
         scalar("profile_time", "seconds since 1970-01-01T00:00:00Z", "time", p.time),
         scalar("profile_lat", "degrees_north", "latitude", p.lat),
         scalar("profile_lon", "degrees_east", "longitude", p.lon),
-        scalar("time_uv", "seconds since 1970-01-01T00:00:00Z", "time", p.time - 1800.0),
-        scalar("lat_uv", "degrees_north", "latitude", p.lat - 0.001),
-        scalar("lon_uv", "degrees_east", "longitude", p.lon - 0.001),
+        scalar("time_uv", "seconds since 1970-01-01T00:00:00Z", "time",
+               std::isnan(p.timeUv) ? p.time - 1800.0 : p.timeUv),
+        scalar("lat_uv", "degrees_north", "latitude", std::isnan(p.latUv) ? p.lat - 0.001 : p.latUv),
+        scalar("lon_uv", "degrees_east", "longitude", std::isnan(p.lonUv) ? p.lon - 0.001 : p.lonUv),
         scalar("u", "m s-1", "eastward_sea_water_velocity", p.u),
         scalar("v", "m s-1", "northward_sea_water_velocity", p.v)};
     int uqc = 0, vqc = 0, platform = 0;

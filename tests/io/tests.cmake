@@ -4,3 +4,14 @@ glider_add_test(test_mission_bathymetry ${CMAKE_CURRENT_LIST_DIR}/TestBathymetry
 # a glider deployment's depth-averaged currents: IOOS profile files written in the template's layout, CSV
 glider_add_test(test_io_glider_observations ${CMAKE_CURRENT_LIST_DIR}/TestGliderObservations.cpp)
 target_link_libraries(test_io_glider_observations PRIVATE netCDF::netcdf)
+# a glider's real-time sources: an ERDDAP answer (.csvp, .csv, .ncCF) from a loopback server of the test
+# (LoopbackHttp.h), Slocum dba files; each the same DAC and fixes as the deployment's IOOS files (RealtimeDeployment.h)
+glider_add_test(test_io_glider_realtime ${CMAKE_CURRENT_LIST_DIR}/TestGliderRealtime.cpp)
+target_link_libraries(test_io_glider_realtime PRIVATE netCDF::netcdf)
+if(TARGET glider_plan)
+  # glider_plan --observations with a dba folder and an ERDDAP URL
+  glider_add_test(test_io_glider_realtime_cli ${CMAKE_CURRENT_LIST_DIR}/TestGliderRealtimeCli.cpp)
+  target_link_libraries(test_io_glider_realtime_cli PRIVATE netCDF::netcdf)
+  target_compile_definitions(test_io_glider_realtime_cli PRIVATE GLIDER_PLAN_EXE="$<TARGET_FILE:glider_plan>")
+  add_dependencies(test_io_glider_realtime_cli glider_plan)
+endif()

@@ -2,8 +2,10 @@
 /// @file GliderObservations.h
 /// @brief A glider deployment's depth-averaged currents (DAC) and fixes, read from the IOOS glider DAC profile NetCDF
 /// files (templates v2.0 to v4.0: one file per profile, scalars `time_uv`, `lat_uv`, `lon_uv`, `u`, `v`,
-/// `profile_time/lat/lon`, fill values, `*_qc` flags) or from a plain CSV (`time,lon,lat,u,v`). Bad records are
-/// rejected and counted by reason; a source with nothing usable is refused naming the file and variable.
+/// `profile_time/lat/lon`, fill values, `*_qc` flags), from a plain CSV (`time,lon,lat,u,v`), and in real time from
+/// the IOOS Glider DAC's ERDDAP (a tabledap URL answering .csvp, .csv or .ncCF) or a Slocum glider's own dba files
+/// (dbd2asc's ASCII tables: m_present_time, m_gps_lat/lon, m_gps_status, m_water_vx/vy). Bad records are rejected and
+/// counted by reason; a source with nothing usable is refused naming the file and variable, or the URL.
 
 #include <cstddef>
 #include <map>
@@ -35,9 +37,12 @@ struct GliderFix
 /// @brief What a deployment's files gave.
 struct GliderObservations
 {
-    std::string source;               ///< the path given (file, folder or glob pattern)
-    std::size_t files{0};             ///< files read
-    std::string platform;             ///< the glider (IOOS `platform:id`, else `trajectory`); empty for a CSV
+    std::string source;               ///< the path given (file, folder or glob pattern), or the URL (no credentials)
+    std::size_t files{0};             ///< files read (1 for a URL: its answer)
+    /// the glider (IOOS `platform:id`, else `trajectory`; ERDDAP: the dataset id without its deployment date,
+    /// "ru29-20260315T0000" -> "ru29"; dba: the header's `filename` without its year, day, mission and segment,
+    /// "ru29-2026-074-0-12" -> "ru29"); empty for a CSV
+    std::string platform;
     std::vector<DacRecord> dac;       ///< usable records, in time order
     std::optional<GliderFix> lastFix; ///< the latest position reported (a profile's or a DAC's, a CSV row's)
     /// every position reported (profiles' fixes, usable DAC's positions, CSV rows), in time order, one per time:
@@ -49,11 +54,31 @@ struct GliderObservations
 /// @brief The most a DAC may be (m/s): faster records are rejected as implausible.
 constexpr double kMaxPlausibleDac = 3.0;
 
-/// @brief Reads @p path: a .csv file, a NetCDF file, a folder of NetCDF (.nc) files, or a glob pattern of them (one
-/// deployment). IOOS files of another glider than most of them are rejected with the reason. CSV: a header naming
-/// the columns time, lon, lat, u, v (any order); time an ISO 8601 date or seconds since 1970; u and v empty for a fix
-/// without a DAC. @throws Error naming the file (and line or variable) for a file that cannot be read, a CSV line that
-/// is not numbers, a NetCDF file without the DAC variables, or when no record is usable.
+/// @brief Reads @p path (one deployment): a .csv file; a NetCDF file, a folder of NetCDF (.nc) files, or a glob
+/// pattern of them; a Slocum dba file (.dba, or a first line `dbd_label:`), a folder of .dba files or a glob pattern
+/// of them; or an ERDDAP tabledap URL (http:// or https://). Files of another glider than most of them are rejected
+/// with the reason.
+///
+/// CSV: a header naming the columns time, lon, lat, u, v (any order); time an ISO 8601 date or seconds since 1970;
+/// u and v empty for a fix without a DAC.
+///
+/// ERDDAP (the IOOS Glider DAC's, e.g. `https://gliders.ioos.us/erddap/tabledap/ru29-20260315T0000.csvp?time,latitude,
+/// longitude,profile_id,time_uv,lat_uv,lon_uv,u,v,u_qc,v_qc&time>=2026-03-15T00:00:00Z`): the answer's kind from the
+/// URL's file type, .csvp (units in the header's parentheses), .csv (a line of units) or .ncCF (read in memory; the
+/// variables by name, all on one dimension: a contiguous ragged profile dimension or flat rows). Each row's time,
+/// latitude, longitude is a fix; a profile's DAC (time_uv, lat_uv, lon_uv, u, v) is taken once, from its first row
+/// (by profile_id, else by time_uv), and rejected for a fill value (empty, NaN, -999) or a QC flag 3, 4 or 9. Fetched
+/// with the process's request time limit and retries (RemoteSource.h), never cached (real-time data).
+///
+/// Slocum dba: fixes from m_gps_lat/m_gps_lon ([-]DDMM.MMMM) at m_present_time, rejected for the placeholder
+/// 69696969, half a position, or a latest m_gps_status other than 0; a DAC from a row with m_water_vx, m_water_vy (m/s;
+/// other units refused), given the time and position of the latest valid fix at or before it, at most 30 min before
+/// (the surfacing's fix where the dive ended; none: rejected).
+///
+/// @throws Error naming the file (and line or variable) for a file that cannot be read, a CSV or dba line that is not
+/// numbers, a NetCDF file without the DAC variables, a dba file without its label lines or a sensor; naming the URL
+/// for a server down, too slow or refusing (ERDDAP's own message), an HTML page, an answer without the columns; or
+/// when no record is usable.
 GliderObservations readGliderObservations(const std::string &path);
 
 /// @brief "12 used; rejected: 2 QC flag 4, 1 fill value" of what @p o holds.

@@ -69,7 +69,8 @@ struct RemoteFetch
     std::string cacheIgnored;
     /// What the source is: "OPeNDAP" (a DAP dataset; values in bytesFetched/bytesFromCache), or "Zarr store" (a
     /// Zarr store over HTTP; its chunks' bytes as stored, compressed, in bytesFetched/bytesFromCache; its cache a
-    /// folder, a copy of the store's consolidated metadata and of the chunks fetched)
+    /// folder, a copy of the store's consolidated metadata and of the chunks fetched), "GRIB file" (fetched whole), or
+    /// "ERDDAP" (a glider's observations, readGliderObservations(): the answer's bytes in bytesFetched; never cached)
     std::string kind{"OPeNDAP"};
 };
 

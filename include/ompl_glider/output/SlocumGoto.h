@@ -7,16 +7,13 @@
 #include <vector>
 
 #include "ompl_glider/Geometry.h"
+#include "ompl_glider/io/DegMin.h"  // parseDegMin(): the inverse of formatDegMin()
 
 namespace ompl_glider
 {
 /// @brief Decimal degrees as the Slocum [-]DDDMM.MMMM text: degrees * 100 + minutes, minutes rounded to 1e-4.
 /// The rounding is done on whole 1e-4 minutes so that 41.99999999 gives "4200.0000", never "4160.0000".
 std::string formatDegMin(double degrees);
-
-/// @brief Inverse of formatDegMin(): "-7030.5000" -> -70.508333...; throws Error on text that is not a number or
-/// whose minutes are >= 60.
-double parseDegMin(const std::string &text);
 
 /// @brief Contents of a goto list file.
 struct GotoList

@@ -7,6 +7,7 @@
 #include "MissionReader.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Length.h"
+#include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/io/Time.h"
 
 namespace ompl_glider
@@ -147,7 +148,8 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
         r.checkMap(n, f, {"file", "length_scale", "time_scale", "error_ratio"});
         if (!n["file"] && !n["length_scale"] && !n["time_scale"] && !n["error_ratio"])
             r.fail(n, f + ".file",
-                   "missing: the glider's files (IOOS profile files: a file, folder or pattern; or a CSV), or the "
+                   "missing: the glider's files (IOOS profile files or Slocum dba files: a file, folder or pattern; a "
+                   "CSV; or an ERDDAP URL), or the "
                    "correction's parameters alone (for an execution's replan_observed)");
         if (n["file"])
             file = n["file"];
@@ -171,7 +173,10 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
             o.errorRatio = r.positive(n["error_ratio"], f + ".error_ratio");
     }
     if (file)
-        o.path = joinPath(r.dir(), r.text(*file, n.IsMap() ? f + ".file" : f)); // a file, folder or pattern
+    {
+        const std::string given = r.text(*file, n.IsMap() ? f + ".file" : f);
+        o.path = isRemoteSource(given) ? given : joinPath(r.dir(), given); // a URL, or a file, folder or pattern
+    }
     m.observations = std::move(o);
 }
 
