@@ -113,18 +113,18 @@ std::vector<std::string> filesOf(const std::string &path)
     return out;
 }
 
-std::vector<std::string> splitCsv(const std::string &line)
+std::vector<std::string> splitCsv(const std::string &line, char separator = ',')
 {
     std::vector<std::string> out;
     std::string cell;
     std::istringstream in(line);
-    while (std::getline(in, cell, ','))
+    while (std::getline(in, cell, separator))
     {
         cell.erase(0, cell.find_first_not_of(" \t\r"));
         cell.erase(cell.find_last_not_of(" \t\r") + 1);
         out.push_back(cell);
     }
-    if (!line.empty() && line.back() == ',')
+    if (!line.empty() && line.back() == separator)
         out.emplace_back();
     return out;
 }
@@ -146,13 +146,16 @@ void readCsv(const std::string &file, GliderObservations &o)
         throw Error("observations '" + file + "': cannot open the file");
     std::string line;
     int n = 0;
+    char separator = ',';
     std::map<std::string, std::size_t> col;
     while (std::getline(in, line))
     {
         ++n;
         if (line.empty() || line[0] == '#')
             continue;
-        const std::vector<std::string> cells = splitCsv(line);
+        if (col.empty() && line.find(',') == std::string::npos && line.find(';') != std::string::npos)
+            separator = ';';  // a ';'-separated CSV (a spreadsheet's in a decimal-comma locale)
+        const std::vector<std::string> cells = splitCsv(line, separator);
         if (col.empty())
         {
             for (std::size_t i = 0; i < cells.size(); ++i)
@@ -162,7 +165,9 @@ void readCsv(const std::string &file, GliderObservations &o)
                     throw Error(file + ":" + std::to_string(n) +
                                 ": the header must name the columns time, lon, lat, "
                                 "u, v (missing '" +
-                                std::string(k) + "')");
+                                std::string(k) + "'" +
+                                (separator == ';' ? std::string(" in this ';'-separated header") : std::string()) +
+                                ")");
             continue;
         }
         const auto cell = [&](const char *k) { return col[k] < cells.size() ? cells[col[k]] : std::string(); };
@@ -180,7 +185,10 @@ void readCsv(const std::string &file, GliderObservations &o)
             }
             if (used != c.size() || c.empty())
                 throw Error(file + ":" + std::to_string(n) + ": column '" + k + "': expected a number, got '" + c +
-                            "'");
+                            "'" +
+                            (separator == ';' && c.find(',') != std::string::npos
+                                 ? " (a ';'-separated CSV with a decimal comma: write the numbers with a point)"
+                                 : ""));
             return v;
         };
         DacRecord r;

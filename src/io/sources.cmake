@@ -7,6 +7,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/GeoBox.cpp  # lon/lat boxes: regions, the trip's box, great circles
   ${CMAKE_CURRENT_LIST_DIR}/TempFolder.cpp  # the folder for temporary files (TMPDIR), checked
   ${CMAKE_CURRENT_LIST_DIR}/FileList.cpp  # a forecast's files: paths, glob patterns, URLs
+  ${CMAKE_CURRENT_LIST_DIR}/DegMin.cpp  # the Slocum's [-]DDDMM.MMMM coordinates (goto lists, dba files)
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
@@ -27,8 +28,7 @@ if(OMPL_GLIDER_WITH_MISSION)
     # Zarr stores and GRIB files through GDAL's multidimensional API, read as NcFile reads NetCDF (GdalGrid.h)
     list(APPEND OMPL_GLIDER_SOURCES ${CMAKE_CURRENT_LIST_DIR}/GdalGrid.cpp
       ${CMAKE_CURRENT_LIST_DIR}/HttpMirror.cpp  # a store or a GRIB file over HTTP: its mirror, the cache
-      # a glider's real-time data: an ERDDAP answer over HTTP, Slocum dba files (their [-]DDMM.MMMM positions parsed
-      # by output/SlocumGoto.cpp's parseDegMin(), io/DegMin.h)
+      # a glider's real-time data: an ERDDAP answer over HTTP, Slocum dba files
       ${CMAKE_CURRENT_LIST_DIR}/ErddapObservations.cpp
       ${CMAKE_CURRENT_LIST_DIR}/SlocumDba.cpp)
   endif()

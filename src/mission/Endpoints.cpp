@@ -173,7 +173,7 @@ MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
 }
 
 #if !OMPL_GLIDER_WITH_NETCDF
-void MissionProblem::applyObservations()
+void MissionProblem::applyObservations(const GliderObservations *)
 {
     if (spec_.observations && spec_.observations->hasFiles())
         throw Error(spec_.place("observations") + ": this build reads no glider files (it has no NetCDF)");

@@ -27,6 +27,7 @@
 #include "ompl_glider/environment/TimeWindowedZone.h"
 #include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/io/Time.h"
+#include "ompl_glider/io/GliderObservations.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/mission/Observations.h"
 #endif
@@ -181,10 +182,11 @@ MissionProblem::~MissionProblem() = default;
 
 MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
 {
+    std::optional<GliderObservations> read;  // what resuming read: corrected with below, a URL fetched once
 #if OMPL_GLIDER_WITH_NETCDF
     try
     {
-        resumeAtLastFix(spec_);  // replanning at sea: from the glider's last fix, through the stations left
+        read = resumeAtLastFix(spec_);  // replanning at sea: from the glider's last fix, through the stations left
     }
     catch (const Error &e)
     {
@@ -201,7 +203,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     snapEndpoints();
     buildBox();
     checkAnalyticFields();
-    applyObservations();  // (after the box: analytic flows' default length scale; nothing without NetCDF)
+    applyObservations(read ? &*read : nullptr);  // (after the box: analytic flows' default length scale; nothing without NetCDF)
     buildRegions();
     const FieldGrid *grid = (members_.empty() ? field_ : members_.front())->grid();
     if (grid)

@@ -75,13 +75,13 @@ std::string whenText(const MissionSpec &m, double t)
 }
 } // namespace
 
-void resumeAtLastFix(MissionSpec &m)
+std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
 {
     if (!m.observations || !m.observations->hasFiles() || m.observations->resumed || !m.fleet.empty())
-        return;
+        return std::nullopt;
     if (givenByCaller(m, "start"))
-        return;  // the caller says where the glider is: the observations only correct the forecast
-    const GliderObservations o = readGliderObservations(m.observations->path);
+        return std::nullopt;  // the caller says where the glider is: the observations only correct the forecast
+    GliderObservations o = readGliderObservations(m.observations->path);
     if (!o.lastFix)
         throw Error("the observations '" + m.observations->path + "' report no position to start from");
     MissionResume r;
@@ -187,6 +187,7 @@ void resumeAtLastFix(MissionSpec &m)
     m.marks["start"] = SourceMark{m.observations->mark.file, m.observations->mark.line, Origin::Observations};
     m.waypoints = std::move(left);
     m.observations->resumed = std::move(r);
+    return o;
 }
 
 std::string resumeNote(const MissionSpec &m)
@@ -213,7 +214,7 @@ std::string resumeNote(const MissionSpec &m)
     return s;
 }
 
-void MissionProblem::applyObservations()
+void MissionProblem::applyObservations(const GliderObservations *read)
 {
     if (!spec_.observations || !spec_.observations->hasFiles())
         return;
@@ -225,7 +226,7 @@ void MissionProblem::applyObservations()
     GliderObservations o;
     try
     {
-        o = readGliderObservations(s.path);
+        o = read ? *read : readGliderObservations(s.path);
     }
     catch (const Error &e)
     {

@@ -259,6 +259,21 @@ json forecastSourcesJson(const MissionProblem &problem)
     return out;
 }
 
+/// The forecast's files: what they are (a Zarr store, a GRIB file, an OPeNDAP dataset, NetCDF files; null for an
+/// analytic flow), their names and what came from the network.
+void forecastJson(const MissionProblem &problem, json &j)
+{
+    const MissionSpec &m = problem.getSpec();
+    j["current_source"] = m.current.isForecast() && !m.current.file.empty()
+                              ? json(forecastSourceKind(m.current.file))
+                              : json(nullptr);
+    json forecastFiles = json::array();
+    for (const std::string &f : problem.forecastFiles())
+        forecastFiles.push_back(withoutCredentials(f));  // a URL's user:password never reaches an output
+    j["forecast_files"] = forecastFiles;
+    j["forecast_sources"] = forecastSourcesJson(problem);
+}
+
 json globalCheckJson(const PlannedPath &p)
 {
     if (!p.globalCheck)
@@ -444,15 +459,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["mission"] = m.name;
     j["source"] = m.file;
     j["current"] = m.current.type;
-    // what the forecast's files are (a Zarr store, a GRIB file, an OPeNDAP dataset, NetCDF files); null otherwise
-    j["current_source"] = m.current.isForecast() && !m.current.file.empty()
-                              ? json(forecastSourceKind(m.current.file))
-                              : json(nullptr);
-    json forecastFiles = json::array();
-    for (const std::string &f : problem.forecastFiles())
-        forecastFiles.push_back(withoutCredentials(f));  // a URL's user:password never reaches an output
-    j["forecast_files"] = forecastFiles;
-    j["forecast_sources"] = forecastSourcesJson(problem);
+    forecastJson(problem, j);
     j["forecast_notes"] = json::array();
     for (const std::string &note : r.forecastNotes)
         j["forecast_notes"].push_back(jtext(note));

@@ -124,3 +124,32 @@ TEST(GliderObservations, CsvRowsFixesAndErrors)
     std::ofstream(f) << "when,lon,lat,u,v\n";
     EXPECT_NE(errorOf(f).find(f + ":1: the header must name the columns"), std::string::npos) << errorOf(f);
 }
+
+// A ';'-separated CSV (a spreadsheet's in a decimal-comma locale) reads as the ','-separated one; a decimal comma is
+// named as such.
+TEST(GliderObservations, SemicolonSeparatedCsvReadsAsTheCommaSeparatedOne)
+{
+    const fs::path d = freshDir("dac_semicolon");
+    const std::string comma = (d / "comma.csv").string(), semi = (d / "semi.csv").string();
+    std::ofstream(comma) << "time,lon,lat,u,v\n2026-03-15T06:00:00Z,-52.7,47.9,0.10,-0.02\n"
+                            "2026-03-15T09:00:00Z,-52.5,48.0,0.12,-0.01\n2026-03-15T12:00:00Z,-52.4,48.1,,\n";
+    std::ofstream(semi) << "time;lon;lat;u;v\n2026-03-15T06:00:00Z;-52.7;47.9;0.10;-0.02\n"
+                           "2026-03-15T09:00:00Z;-52.5;48.0;0.12;-0.01\n2026-03-15T12:00:00Z;-52.4;48.1;;\n";
+    const GliderObservations a = readGliderObservations(comma), b = readGliderObservations(semi);
+    ASSERT_EQ(a.dac.size(), b.dac.size());
+    for (std::size_t i = 0; i < a.dac.size(); ++i)
+    {
+        EXPECT_EQ(a.dac[i].time, b.dac[i].time);
+        EXPECT_EQ(a.dac[i].u, b.dac[i].u);
+        EXPECT_EQ(a.dac[i].at.lat, b.dac[i].at.lat);
+    }
+    EXPECT_EQ(a.fixes.size(), b.fixes.size());
+    EXPECT_EQ(a.lastFix->time, b.lastFix->time);
+    std::ofstream(semi) << "time;lon;lat;u;v\n2026-03-15T06:00:00Z;-52,7;47,9;0,10;-0,02\n";
+    EXPECT_NE(errorOf(semi).find(semi + ":2: column 'lon': expected a number, got '-52,7' (a ';'-separated CSV with "
+                                        "a decimal comma"),
+              std::string::npos)
+        << errorOf(semi);
+    std::ofstream(semi) << "when;lon;lat;u;v\n";
+    EXPECT_NE(errorOf(semi).find("(missing 'time' in this ';'-separated header)"), std::string::npos) << errorOf(semi);
+}

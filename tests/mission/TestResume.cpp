@@ -151,6 +151,15 @@ TEST(Resume, WhatCannotBeResumedIsRefusedPlainly)
         EXPECT_NE(std::string(e.what()).find("nothing is left to plan"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("--observations"), std::string::npos) << e.what();
     }
+    // every station reached, the goal not yet: a plan of one leg from the last fix to the goal, the three named
+    const std::string stations = deployment("stations", {{10, -52.2, 48.0}, {20, -51.9, 48.2}, {40, -51.65, 48.3},
+                                                         {42, -51.62, 48.33}});
+    {
+        const MissionProblem p(survey(stations));
+        ASSERT_EQ(p.getSpec().observations->resumed->dropped.size(), 3u);
+        EXPECT_TRUE(p.getSpec().waypoints.empty());
+        EXPECT_NE(resumeNote(p.getSpec()).find("stations reached and dropped: A ("), std::string::npos);
+    }
     // a departure given before the last fix: the glider was elsewhere then
     const std::string obs = deployment("early", {{4, -52.6, 47.93}, {12, -52.4, 47.97}});
     MissionOverrides o;

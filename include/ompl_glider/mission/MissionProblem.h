@@ -26,6 +26,7 @@ namespace ompl_glider
 {
 class ForbiddenRegions;
 struct ObservationReport;
+struct GliderObservations;
 class ForbiddenCells;
 struct LoadedForecast;
 class LocalProjection;
@@ -211,8 +212,9 @@ private:
     /// with MissionSpec::safety.snapToWater.
     void snapEndpoints();
     void checkAnalyticFields() const;  ///< analytic fields are finite over the box (parameters do not overflow)
-    /// The forecast corrected by the glider's DAC (Observations.cpp); nothing without observations.
-    void applyObservations();
+    /// The forecast corrected by the glider's DAC (Observations.cpp); nothing without observations. @p read: the
+    /// observations resumeAtLastFix() read already (null: read them here), so that a URL is fetched once.
+    void applyObservations(const GliderObservations *read);
     /// Via points in the region, in water, their stays within the forecast (Endpoints.cpp).
     void checkViaPoints() const;
     void buildRegions();

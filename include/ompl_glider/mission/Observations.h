@@ -44,9 +44,11 @@ void startAtLastFix(MissionSpec &m, const SourceMark &mark, bool keepDeparture);
 /// after the mission's departure within their radius; in the order listed, any order with `order: free`) are
 /// dropped; a stay under way at the last fix is finished first (the plan departs at its end); the others keep their
 /// names, radii, windows and stays. What it did is kept in MissionSpec::observations->resumed. Done once.
+/// Returns the observations it read (to be used again, so that a URL is fetched once), nothing when it did not read
+/// them.
 /// @throws Error (without the place) when the observations cannot be read, report no fix, a given departure is before
 /// the last fix, or the glider has already reached every via point and the goal (nothing is left to plan).
-void resumeAtLastFix(MissionSpec &m);
+std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m);
 
 /// @brief "from the last fix -52.1, 48.0 at 2026-03-16T12:00:00Z (replacing the start -52.7, 47.9, the deployment's);
 /// stations reached: A (2026-03-15T18:02:11Z, 120 m from it)"; empty when the mission was not resumed.
