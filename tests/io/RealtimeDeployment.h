@@ -5,6 +5,7 @@
 //
 // Positions lie on a 1/64 degree lattice, so that the dba files' [-]DDMM.MMMM text (minutes multiples of 0.9375)
 // gives back the very same doubles; u and v are written with 17 digits; times are whole seconds.
+#include <gtest/gtest.h>
 #include <netcdf.h>
 
 #include <algorithm>
@@ -38,6 +39,17 @@ struct Surfacing
     Kind kind;
     int id; // profile_id
 };
+
+/// A new folder of @p name for the running case (ctest runs the cases at once: each its own folders).
+inline std::filesystem::path freshDir(const std::string &name)
+{
+    const std::filesystem::path d =
+        std::filesystem::path(::testing::TempDir()) /
+        (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" + name);
+    std::filesystem::remove_all(d);
+    std::filesystem::create_directories(d);
+    return d;
+}
 
 inline double t0()
 {

@@ -18,15 +18,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-/// A new folder of @p name for the running case (ctest runs the cases at once: each its own folders).
-fs::path freshDir(const std::string &name)
-{
-    const fs::path d = fs::path(::testing::TempDir()) /
-                       (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" + name);
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
 
 struct PlanRun
 {
