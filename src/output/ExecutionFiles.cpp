@@ -52,7 +52,7 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
             for (char &c : reason)
                 if (c == ',' || c == '\n' || c == '"')
                     c = ';';
-            s += head + "none," + ends + ",,,,,,,,,," + num(run.radius) + "," + reason + ",,\n";
+            s += head + "none," + ends + ",,,,,,,,," + num(run.radius) + "," + reason + ",,\n";
             continue;
         }
         for (std::size_t k = 0; k < e.strategies.size(); ++k)
