@@ -258,7 +258,7 @@ PlannedPath straightLegsAlong(const MissionProblem &problem, const std::shared_p
         const RefinementResult rr = WaypointRefiner(ctx, refinerParams(m)).refine(legs);
         if (rr.waypoints.size() >= 2 && rr.arrivalAfter <= legs.back().t)
             legs = rr.waypoints;
-        c.postprocessCostFunctionCalls = rr.costFunctionCalls;
+        c.postprocessCostFunctionCalls += rr.costFunctionCalls;
     }
     c.path = legs;
     c.travelTime = legs.back().t - c.departure;
@@ -388,6 +388,9 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     base.straightLineTime = best.straightLineTime;
     base.straightLineLength = best.straightLineLength;
     base.planningSeconds = best.planningSeconds;
+    // the planner's smoothing and refinement were done whichever route wins (a mission's legs add them up)
+    base.postprocessSeconds = best.postprocessSeconds;
+    base.postprocessCostFunctionCalls = best.postprocessCostFunctionCalls;
     base.searchCostFunctionCalls = best.searchCostFunctionCalls;
     base.expandedVertices = best.expandedVertices;
     base.switchedFrom = best.switchedFrom;
