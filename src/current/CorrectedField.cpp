@@ -9,9 +9,69 @@
 #include <Eigen/Dense>
 
 #include "ompl_glider/Exception.h"
+#include "CorrectionFit.h"
 
 namespace ompl_glider
 {
+double InnovationMean::Constituent::amplitude(bool u) const
+{
+    return u ? std::hypot(cosine.u, sine.u) : std::hypot(cosine.v, sine.v);
+}
+
+double InnovationMean::Constituent::phase(bool u) const
+{
+    return u ? std::atan2(sine.u, cosine.u) : std::atan2(sine.v, cosine.v);
+}
+
+Velocity InnovationMean::at(double x, double y, double t, Jacobian *j) const
+{
+    if (!active())
+        return {};
+    Velocity m = bias;
+    for (const Constituent &c : tides)
+    {
+        const double co = std::cos(c.omega * (t - tRef)), si = std::sin(c.omega * (t - tRef));
+        m.u += c.cosine.u * co + c.sine.u * si;
+        m.v += c.cosine.v * co + c.sine.v * si;
+    }
+    // outside the data's box and span the mean fades with its long scales
+    const double dx = x < xMin ? x - xMin : x > xMax ? x - xMax : 0.0;
+    const double dy = y < yMin ? y - yMin : y > yMax ? y - yMax : 0.0;
+    const double dt = t < tBegin ? tBegin - t : t > tEnd ? t - tEnd : 0.0;
+    const double L2 = lengthScale * lengthScale, T2 = timeScale * timeScale;
+    const double fade = std::exp(-(dx * dx + dy * dy) / (2.0 * L2) - dt * dt / (2.0 * T2));
+    if (j)
+    {
+        j->ux -= m.u * fade * dx / L2;
+        j->uy -= m.u * fade * dy / L2;
+        j->vx -= m.v * fade * dx / L2;
+        j->vy -= m.v * fade * dy / L2;
+    }
+    return {m.u * fade, m.v * fade};
+}
+
+void InnovationMean::bound(double &u, double &v) const
+{
+    u = v = 0.0;
+    if (!active())
+        return;
+    u = std::abs(bias.u);
+    v = std::abs(bias.v);
+    for (const Constituent &c : tides)
+    {
+        u += c.amplitude(true);
+        v += c.amplitude(false);
+    }
+}
+
+namespace
+{
+std::string sourceOf(bool given, bool learn)
+{
+    return given ? "given" : learn ? "default (too few DAC to estimate)" : "default";
+}
+}  // namespace
+
 CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
                                const std::vector<DacObservation> &observations, CorrectionParams params)
     : base_(std::move(base)), params_(params)
@@ -21,6 +81,10 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
     for (const double v : {params_.lengthScale, params_.timeScale, params_.errorRatio})
         if (!(v > 0.0) || !std::isfinite(v))
             throw Error("CorrectedField: the length scale, time scale and error ratio must be finite and > 0");
+    summary_.params = params_;
+    summary_.lengthSource = sourceOf(params_.lengthGiven, params_.learn);
+    summary_.timeSource = sourceOf(params_.timeGiven, params_.learn);
+    summary_.ratioSource = sourceOf(params_.ratioGiven, params_.learn);
     summary_.given = observations.size();
     std::vector<DacObservation> kept;
     const FieldGrid *grid = base_->grid();
@@ -65,6 +129,18 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
         before += du[i] * du[i] + dv[i] * dv[i];
     }
     summary_.rmsBefore = std::sqrt(before / n);
+    if (params_.learn && n >= params_.minLearn && before > 0.0)
+    {
+        // learn the scales not given, and the innovations' mean; the interpolation spreads what is left
+        correction_fit::learn(used_, du, dv, summary_);
+        params_ = summary_.params;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const Velocity m = summary_.mean.at(used_[i].at.x, used_[i].at.y, used_[i].t);
+            du[i] -= m.u;
+            dv[i] -= m.v;
+        }
+    }
     const double L2 = params_.lengthScale * params_.lengthScale, T2 = params_.timeScale * params_.timeScale;
     Eigen::MatrixXd C(n, n);
     for (std::size_t i = 0; i < n; ++i)
@@ -111,6 +187,12 @@ void CorrectedField::addCorrection(double x, double y, double t, Velocity &c, Ja
 {
     if (used_.empty())
         return;
+    if (summary_.mean.active())
+    {
+        const Velocity m = summary_.mean.at(x, y, t, j);
+        c.u += m.u;
+        c.v += m.v;
+    }
     const double L2 = params_.lengthScale * params_.lengthScale, T2 = params_.timeScale * params_.timeScale;
     const double window = kCutoff * params_.timeScale, reach2 = kCutoff * kCutoff * L2;
     auto first = std::lower_bound(used_.begin(), used_.end(), t - window,
@@ -162,7 +244,8 @@ void CorrectedField::reach(const Region &region, double &su, double &sv, double 
 {
     // every weight is at most 1: the correction is no faster than the sums of the |alpha_i| of the observations that
     // reach the region (within the cut-off in time and space)
-    su = sv = s = 0.0;
+    summary_.mean.bound(su, sv);
+    s = std::hypot(su, sv);
     const double window = kCutoff * params_.timeScale, far = kCutoff * params_.lengthScale;
     for (std::size_t i = 0; i < used_.size(); ++i)
     {

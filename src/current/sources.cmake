@@ -9,5 +9,6 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/ShiftedTimeField.cpp
   ${CMAKE_CURRENT_LIST_DIR}/EnsembleField.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CorrectedField.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/CorrectionFit.cpp
 )
 include(${CMAKE_CURRENT_LIST_DIR}/gridded.cmake)

@@ -6,6 +6,11 @@
 /// alpha = (C_obs,obs + (s_o / s_f)^2 I)^-1 d, and F'(x, t) = F(x, t) + sum_i C(x, t; x_i, t_i) alpha_i. Far from the
 /// observations and long after the last one F' = F. A current field like any other: every planner, the level set,
 /// isochrones and the execution fly it.
+///
+/// Learning from the data (CorrectionParams::learn, current/CorrectionFit.h): with enough DAC the scales not given
+/// are estimated by maximising the innovations' marginal likelihood ([RasmussenGP] Eq. 5.8), and a mean of the
+/// innovations (a bias, and the main tidal constituents where the record resolves them, [MerckelbachDAC]) is carried
+/// ahead with long scales of its own (InnovationMean); the optimal interpolation then spreads what is left.
 
 #include <cstddef>
 #include <memory>
@@ -39,8 +44,50 @@ struct CorrectionParams
     double depthTop{0.0};              ///< the glider's depth range, averaged over to compare with a DAC (m)
     double depthBottom{0.0};           ///< see depthTop (equal: the forecast at that depth)
     std::size_t maxObservations{2000}; ///< the most recent ones kept (the system is solved once, O(n^3))
+    /// Learn from the DAC: with at least minLearn of them and innovations not all zero, estimate the scales not given
+    /// (lengthGiven, timeGiven, ratioGiven false) and the innovations' mean (bias, tides); false: the values above
+    bool learn{false};
+    bool lengthGiven{true}; ///< lengthScale was given (kept); false: a prior, estimated when learning
+    bool timeGiven{true};   ///< see lengthGiven
+    bool ratioGiven{true};  ///< see lengthGiven
+    std::size_t minLearn{6}; ///< fewer DAC than this: the priors stand and no mean is fitted
+    /// The DAC's own error (field units; > 0 when learning): the observation error is never estimated below it
+    double dacError{0.0};
+    /// Seconds per field time unit, to fit the tides (whose periods are in hours); 0: the time unit is unknown, no
+    /// tidal fit
+    double secondsPerTimeUnit{0.0};
 };
 
+/// @brief The innovations' large-scale mean, carried ahead of the glider: a bias and tidal constituents, fading with
+/// long scales of their own outside the data's box and time span.
+struct InnovationMean
+{
+    /// One tidal constituent: cos(omega (t - tRef)) * cosine + sin(omega (t - tRef)) * sine, per component.
+    struct Constituent
+    {
+        std::string name;   ///< "M2", "S2", "K1", "O1"
+        double omega{0.0};  ///< angular frequency, radians per field time unit
+        Velocity cosine;    ///< the coefficients of the cosine (u, v)
+        Velocity sine;      ///< the coefficients of the sine
+        /// @brief The amplitude of component u (v: false), field units.
+        double amplitude(bool u) const;
+        /// @brief The phase of component u (v: false): the angle phi with c cos(w t - phi), radians.
+        double phase(bool u) const;
+    };
+    Velocity bias;                       ///< the mean of the innovations (field units)
+    std::vector<Constituent> tides;      ///< fitted constituents (empty: none)
+    double tRef{0.0};                    ///< the tides' time origin
+    double tBegin{0.0}, tEnd{0.0};       ///< the span of the DAC it was fitted to
+    double xMin{0.0}, xMax{0.0}, yMin{0.0}, yMax{0.0};  ///< their box
+    double lengthScale{0.0};  ///< fading outside the box (planning units; 0: no mean)
+    double timeScale{0.0};    ///< fading outside the span (field time units)
+    /// @brief Whether there is a mean to add.
+    bool active() const { return lengthScale > 0.0; }
+    /// @brief The mean at (x, y, t), and with @p j its spatial derivatives added.
+    Velocity at(double x, double y, double t, Jacobian *j = nullptr) const;
+    /// @brief A bound of |u| and |v| of the mean anywhere.
+    void bound(double &u, double &v) const;
+};
 /// @brief What the correction used and what it did.
 struct CorrectionSummary
 {
@@ -51,6 +98,13 @@ struct CorrectionSummary
     std::size_t notFinite{0};       ///< rejected: a coordinate or a component not finite
     double rmsBefore{0.0};          ///< RMS |d_i| against the forecast (field units)
     double rmsAfter{0.0};           ///< RMS |DAC_i - F'(x_i, t_i)| against the corrected field
+    CorrectionParams params;        ///< the parameters as used (estimated ones in place of their priors)
+    /// Where L, T and the ratio came from: "given", "default", or "estimated from N DAC"
+    std::string lengthSource, timeSource, ratioSource;
+    std::size_t learnedFrom{0};     ///< DAC the estimate used (0: nothing was estimated)
+    /// ln of the marginal likelihood at the estimate minus at the priors (>= 0; 0: nothing was estimated)
+    double likelihoodGain{0.0};
+    InnovationMean mean;            ///< the innovations' mean carried ahead (inactive: none)
 };
 
 /// @brief The forecast @p base corrected by @p observations (see the file comment).
@@ -99,7 +153,7 @@ private:
     std::shared_ptr<const CurrentField> base_;
     CorrectionParams params_;
     std::vector<DacObservation> used_;    // by time
-    std::vector<double> alphaU_, alphaV_; // weights of the innovations
+    std::vector<double> alphaU_, alphaV_; // weights of the innovations (less their mean)
     CorrectionSummary summary_;
 };
 } // namespace ompl_glider

@@ -1,0 +1,258 @@
+/// @file CorrectionFit.cpp
+/// @brief The correction's scales, bias and tides learned from the glider's DAC (CorrectionFit.h).
+
+#include "CorrectionFit.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+
+#include <nlopt.hpp>
+
+namespace ompl_glider::correction_fit
+{
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+
+/// The main constituents, by priority ([PawlowiczTide]: periods in hours): the semidiurnal lunar, the diurnal
+/// luni-solar, the semidiurnal solar, the diurnal lunar.
+struct TidalPeriod
+{
+    const char *name;
+    double hours;
+};
+constexpr std::array<TidalPeriod, 4> kConstituents{
+    {{"M2", 12.4206012}, {"K1", 23.9344697}, {"S2", 12.0}, {"O1", 25.8193417}}};
+
+/// The constituents a record of @p spanHours resolves: each at least one period long, and each pair apart by the
+/// Rayleigh criterion (span >= 1 / |f1 - f2|).
+std::vector<TidalPeriod> resolvedConstituents(double spanHours)
+{
+    std::vector<TidalPeriod> out;
+    if (!(spanHours > 24.0))
+        return out;  // a day or less: no tide is told from a bias or a trend
+    for (const TidalPeriod &c : kConstituents)
+    {
+        bool apart = spanHours >= c.hours;
+        for (const TidalPeriod &o : out)
+            apart = apart && spanHours * std::abs(1.0 / c.hours - 1.0 / o.hours) >= 1.0;
+        if (apart)
+            out.push_back(c);
+    }
+    return out;
+}
+
+/// The restricted log marginal likelihood of the innovations (both components, one covariance) and the mean's
+/// coefficients at given scales.
+struct Likelihood
+{
+    const std::vector<DacObservation> *obs{nullptr};  // the fitted ones
+    Eigen::MatrixXd G;       // basis of the mean (columns), one row per fitted observation
+    Eigen::MatrixXd D;       // the innovations, u then v
+    double floor2{0.0};      // the smallest observation error variance allowed (field units^2)
+
+    /// ln p(d | L, T, ratio) up to a constant, the forecast error variance at its maximum; @p beta: the mean's
+    /// coefficients (p x 2). -infinity where the covariance cannot be factored.
+    double operator()(double L, double T, double ratio, Eigen::MatrixXd *beta = nullptr) const
+    {
+        const std::size_t n = obs->size();
+        const Eigen::Index p = G.cols();
+        const double L2 = L * L, T2 = T * T;
+        Eigen::MatrixXd K(n, n);
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j <= i; ++j)
+                K(i, j) = K(j, i) = correlation((*obs)[i], (*obs)[j], L2, T2);
+        K.diagonal().array() += ratio * ratio;
+        const Eigen::LLT<Eigen::MatrixXd> llt(K);
+        if (llt.info() != Eigen::Success)
+            return -std::numeric_limits<double>::infinity();
+        double logDet = 0.0;
+        for (Eigen::Index i = 0; i < K.rows(); ++i)
+            logDet += 2.0 * std::log(llt.matrixL()(i, i));
+        const Eigen::MatrixXd KiD = llt.solve(D);
+        double q = (D.transpose() * KiD).trace();
+        double logDetG = 0.0;
+        Eigen::MatrixXd b = Eigen::MatrixXd::Zero(p, 2);
+        if (p > 0)
+        {
+            const Eigen::MatrixXd KiG = llt.solve(G);
+            const Eigen::MatrixXd A = G.transpose() * KiG;
+            const Eigen::LLT<Eigen::MatrixXd> a(A);
+            if (a.info() != Eigen::Success)
+                return -std::numeric_limits<double>::infinity();
+            for (Eigen::Index i = 0; i < p; ++i)
+                logDetG += 2.0 * std::log(a.matrixL()(i, i));
+            const Eigen::MatrixXd GtKiD = KiG.transpose() * D;
+            b = a.solve(GtKiD);
+            q -= (GtKiD.transpose() * b).trace();
+        }
+        if (beta)
+            *beta = b;
+        const double dof = static_cast<double>(static_cast<Eigen::Index>(n) - p);
+        // the forecast error variance s_f^2 at its maximum (q / (2 dof)), the observation error s_o = ratio s_f
+        // kept at or above the DAC's own error
+        const double s2 = std::max({q / (2.0 * dof), floor2 / (ratio * ratio), 1e-300});
+        return -dof * std::log(s2) - logDet - logDetG - std::max(q, 0.0) / (2.0 * s2);
+    }
+};
+
+/// The box, span and long scales of the mean fitted to @p obs with scales L, T.
+void meanExtent(const std::vector<DacObservation> &obs, double L, double T, InnovationMean &m)
+{
+    m.tBegin = obs.front().t;
+    m.tEnd = obs.back().t;
+    m.xMin = m.xMax = obs.front().at.x;
+    m.yMin = m.yMax = obs.front().at.y;
+    for (const DacObservation &o : obs)
+    {
+        m.xMin = std::min(m.xMin, o.at.x);
+        m.xMax = std::max(m.xMax, o.at.x);
+        m.yMin = std::min(m.yMin, o.at.y);
+        m.yMax = std::max(m.yMax, o.at.y);
+    }
+    // the mean is a large-scale error: it fades over ten of the correction's own scales, never less than the data's
+    // own extent
+    m.lengthScale = std::max(10.0 * L, std::hypot(m.xMax - m.xMin, m.yMax - m.yMin));
+    m.timeScale = std::max(10.0 * T, m.tEnd - m.tBegin);
+}
+}  // namespace
+
+void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, const Eigen::VectorXd &dv,
+           CorrectionSummary &summary)
+{
+    CorrectionParams &p = summary.params;
+    const std::size_t n = used.size(), m = std::min(n, kMaxFitted), first = n - m;
+    const std::vector<DacObservation> fitted(used.begin() + static_cast<std::ptrdiff_t>(first), used.end());
+    InnovationMean mean;
+    mean.tRef = fitted.back().t;
+    const double spanHours = (fitted.back().t - fitted.front().t) * p.secondsPerTimeUnit / 3600.0;
+    std::vector<TidalPeriod> tides = p.secondsPerTimeUnit > 0.0 ? resolvedConstituents(spanHours) : std::vector<TidalPeriod>{};
+    while (!tides.empty() && m < 1 + 2 * tides.size() + 4)
+        tides.pop_back();  // each constituent costs two coefficients: keep four degrees of freedom at least
+    Likelihood like;
+    like.obs = &fitted;
+    like.G.resize(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(1 + 2 * tides.size()));
+    like.D.resize(static_cast<Eigen::Index>(m), 2);
+    for (std::size_t i = 0; i < m; ++i)
+    {
+        const auto r = static_cast<Eigen::Index>(i);
+        like.D(r, 0) = du[static_cast<Eigen::Index>(first + i)];
+        like.D(r, 1) = dv[static_cast<Eigen::Index>(first + i)];
+        like.G(r, 0) = 1.0;
+        for (std::size_t k = 0; k < tides.size(); ++k)
+        {
+            const double w = 2.0 * kPi * p.secondsPerTimeUnit / (tides[k].hours * 3600.0);
+            like.G(r, static_cast<Eigen::Index>(1 + 2 * k)) = std::cos(w * (fitted[i].t - mean.tRef));
+            like.G(r, static_cast<Eigen::Index>(2 + 2 * k)) = std::sin(w * (fitted[i].t - mean.tRef));
+        }
+    }
+    like.floor2 = p.dacError * p.dacError;
+    // the free scales in logarithms, within bounds around their priors
+    struct Free
+    {
+        double *value;
+        double lo, hi;
+        std::string *source;
+    };
+    std::vector<Free> free;
+    if (!p.lengthGiven)
+        free.push_back({&p.lengthScale, p.lengthScale / 10.0, p.lengthScale * 50.0, &summary.lengthSource});
+    if (!p.timeGiven)
+        free.push_back({&p.timeScale, p.timeScale / 10.0, p.timeScale * 50.0, &summary.timeSource});
+    if (!p.ratioGiven)
+        free.push_back({&p.errorRatio, std::min(0.02, p.errorRatio), std::max(5.0, p.errorRatio), &summary.ratioSource});
+    const auto at = [&](const std::vector<double> &x) {
+        for (std::size_t k = 0; k < free.size(); ++k)
+            *free[k].value = std::exp(x[k]);
+        return like(p.lengthScale, p.timeScale, p.errorRatio);
+    };
+    std::vector<double> x(free.size());
+    for (std::size_t k = 0; k < free.size(); ++k)
+        x[k] = std::log(*free[k].value);
+    const double prior = at(x);
+    double best = prior;
+    if (!free.empty())
+    {
+        // a coarse grid first (the likelihood has broad ridges and a local optimiser alone can stall on one), then a
+        // local search from its best point
+        std::vector<double> lo(free.size()), hi(free.size()), trial(free.size()), bestX = x;
+        for (std::size_t k = 0; k < free.size(); ++k)
+        {
+            lo[k] = std::log(free[k].lo);
+            hi[k] = std::log(free[k].hi);
+        }
+        constexpr int kGrid = 4;
+        std::size_t cells = 1;
+        for (std::size_t k = 0; k < free.size(); ++k)
+            cells *= kGrid;
+        for (std::size_t c = 0; c < cells; ++c)
+        {
+            std::size_t rest = c;
+            for (std::size_t k = 0; k < free.size(); ++k, rest /= kGrid)
+                trial[k] = lo[k] + (hi[k] - lo[k]) * static_cast<double>(rest % kGrid) / (kGrid - 1);
+            const double v = at(trial);
+            if (v > best)
+            {
+                best = v;
+                bestX = trial;
+            }
+        }
+        nlopt::opt opt(nlopt::LN_SBPLX, static_cast<unsigned>(free.size()));
+        opt.set_lower_bounds(lo);
+        opt.set_upper_bounds(hi);
+        opt.set_xtol_rel(1e-4);
+        opt.set_maxeval(300);
+        std::function<double(const std::vector<double> &)> objective = at;
+        opt.set_max_objective(
+            [](const std::vector<double> &v, std::vector<double> &, void *data) {
+                const double l = (*static_cast<std::function<double(const std::vector<double> &)> *>(data))(v);
+                return std::isfinite(l) ? l : -1e300;
+            },
+            &objective);
+        std::vector<double> y = bestX;
+        double found = best;
+        try
+        {
+            opt.optimize(y, found);
+        }
+        catch (const std::exception &)
+        {
+            found = -std::numeric_limits<double>::infinity();  // a failed search: the grid's best point stands
+        }
+        x = found > best ? y : bestX;
+        best = std::max(found, best);
+        for (std::size_t k = 0; k < free.size(); ++k)
+            *free[k].source = "estimated from " + std::to_string(m) + " DAC";
+    }
+    if (!std::isfinite(best))
+    {
+        for (std::size_t k = 0; k < free.size(); ++k)
+            x[k] = std::log(free[k].lo * 10.0);  // the priors (each lower bound is a tenth of its prior)
+        best = prior;
+    }
+    for (std::size_t k = 0; k < free.size(); ++k)
+        *free[k].value = std::exp(x[k]);
+    Eigen::MatrixXd beta;
+    if (!std::isfinite(like(p.lengthScale, p.timeScale, p.errorRatio, &beta)))
+        return;  // nothing factors: no mean
+    summary.learnedFrom = m;
+    summary.likelihoodGain = std::isfinite(prior) ? std::max(0.0, best - prior) : 0.0;
+    mean.bias = {beta(0, 0), beta(0, 1)};
+    for (std::size_t k = 0; k < tides.size(); ++k)
+    {
+        InnovationMean::Constituent c;
+        c.name = tides[k].name;
+        c.omega = 2.0 * kPi * p.secondsPerTimeUnit / (tides[k].hours * 3600.0);
+        const auto r = static_cast<Eigen::Index>(1 + 2 * k);
+        c.cosine = {beta(r, 0), beta(r, 1)};
+        c.sine = {beta(r + 1, 0), beta(r + 1, 1)};
+        mean.tides.push_back(c);
+    }
+    meanExtent(fitted, p.lengthScale, p.timeScale, mean);
+    summary.mean = mean;
+}
+}  // namespace ompl_glider::correction_fit
