@@ -165,22 +165,27 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
     summary_.rmsAfter = std::sqrt(after / n);
 }
 
-Velocity CorrectedField::depthAveraged(double x, double y, double t) const
+Velocity depthAveragedCurrent(const CurrentField &field, double x, double y, double t, double top, double bottom)
 {
-    const double top = params_.depthTop, bottom = std::max(params_.depthTop, params_.depthBottom);
+    bottom = std::max(top, bottom);
     if (!(bottom > top))
-        return base_->velocity(x, y, top, t);
+        return field.velocity(x, y, top, t);
     // the trapezoidal rule over 8 intervals of the depth range
     constexpr int kIntervals = 8;
     Velocity sum;
     for (int k = 0; k <= kIntervals; ++k)
     {
         const double w = (k == 0 || k == kIntervals) ? 0.5 : 1.0;
-        const Velocity c = base_->velocity(x, y, top + (bottom - top) * k / kIntervals, t);
+        const Velocity c = field.velocity(x, y, top + (bottom - top) * k / kIntervals, t);
         sum.u += w * c.u;
         sum.v += w * c.v;
     }
     return {sum.u / kIntervals, sum.v / kIntervals};
+}
+
+Velocity CorrectedField::depthAveraged(double x, double y, double t) const
+{
+    return depthAveragedCurrent(*base_, x, y, t, params_.depthTop, params_.depthBottom);
 }
 
 void CorrectedField::addCorrection(double x, double y, double t, Velocity &c, Jacobian *j) const

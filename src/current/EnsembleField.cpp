@@ -1,6 +1,7 @@
 #include "ompl_glider/current/EnsembleField.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "ompl_glider/Exception.h"
@@ -17,8 +18,27 @@ EnsembleMeanField::EnsembleMeanField(std::vector<std::shared_ptr<const CurrentFi
             throw Error("EnsembleMeanField: a member is null");
 }
 
+EnsembleMeanField::EnsembleMeanField(std::vector<std::shared_ptr<const CurrentField>> members,
+                                     std::vector<double> coefficients)
+    : EnsembleMeanField(std::move(members))
+{
+    if (coefficients.size() != members_.size())
+        throw Error("EnsembleMeanField: one coefficient per member");
+    for (const double a : coefficients)
+        if (!std::isfinite(a))
+            throw Error("EnsembleMeanField: a coefficient is not finite");
+    coefficients_ = std::move(coefficients);
+}
+
 double EnsembleMeanField::maxSpeed(const Region &region) const
 {
+    if (!coefficients_.empty())
+    {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < members_.size(); ++i)
+            sum += std::abs(coefficients_[i]) * members_[i]->maxSpeed(region);
+        return sum;
+    }
     double s = 0.0;
     for (const auto &m : members_)
         s = std::max(s, m->maxSpeed(region));
@@ -70,12 +90,25 @@ double EnsembleMeanField::timeEnd() const
 
 std::string EnsembleMeanField::name() const
 {
+    if (!coefficients_.empty())
+        return "ensemble of " + std::to_string(members_.size()) + " weighted by the glider's DAC (" +
+               members_.front()->name() + ", ...)";
     return "ensemble mean of " + std::to_string(members_.size()) + " (" + members_.front()->name() + ", ...)";
 }
 
 Velocity EnsembleMeanField::evaluate(double x, double y, double z, double t) const
 {
     Velocity s{0.0, 0.0};
+    if (!coefficients_.empty())
+    {
+        for (std::size_t i = 0; i < members_.size(); ++i)
+        {
+            const Velocity c = members_[i]->velocity(x, y, z, t);
+            s.u += coefficients_[i] * c.u;
+            s.v += coefficients_[i] * c.v;
+        }
+        return s;
+    }
     for (const auto &m : members_)
     {
         const Velocity c = m->velocity(x, y, z, t);
@@ -89,6 +122,19 @@ Velocity EnsembleMeanField::evaluate(double x, double y, double z, double t) con
 Jacobian EnsembleMeanField::evaluateJacobian(double x, double y, double z, double t) const
 {
     Jacobian s;
+    if (!coefficients_.empty())
+    {
+        for (std::size_t i = 0; i < members_.size(); ++i)
+        {
+            const Jacobian j = members_[i]->jacobian(x, y, z, t);
+            const double a = coefficients_[i];
+            s.ux += a * j.ux;
+            s.uy += a * j.uy;
+            s.vx += a * j.vx;
+            s.vy += a * j.vy;
+        }
+        return s;
+    }
     for (const auto &m : members_)
     {
         const Jacobian j = m->jacobian(x, y, z, t);

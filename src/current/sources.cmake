@@ -10,5 +10,6 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/EnsembleField.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CorrectedField.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CorrectionFit.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/EnsembleLearning.cpp
 )
 include(${CMAKE_CURRENT_LIST_DIR}/gridded.cmake)

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <random>
 
 #include "ompl_glider/Exception.h"
@@ -150,18 +152,15 @@ void aimOffHeading(double wx, double wy, Velocity c, double dt, double &hx, doub
     }
 }
 
-/// The corrected forecast's current at (x, y, t) from the measurements of the last CorrectedField::kCutoff time
-/// scales (older ones weigh less than exp(-12.5) there); the forecast's own where there are none.
-Velocity correctedCurrent(const CurrentField &forecast, const std::vector<DacObservation> &measured,
-                          const CorrectionParams &params, double x, double y, double depth, double t)
+/// The forecast corrected by @p measured with @p params (the default of ExecutionOptions::learn).
+std::shared_ptr<const CurrentField> correctedForecast(const CurrentField &forecast,
+                                                      const std::vector<DacObservation> &measured,
+                                                      const CorrectionParams &params)
 {
-    const double since = t - CorrectedField::kCutoff * params.timeScale;
-    const auto first =
-        std::find_if(measured.begin(), measured.end(), [since](const DacObservation &d) { return d.t >= since; });
-    if (first == measured.end())
-        return forecast.velocity(x, y, depth, t);
     const std::shared_ptr<const CurrentField> base(std::shared_ptr<const CurrentField>(), &forecast);  // not owned
-    return CorrectedField(base, std::vector<DacObservation>(first, measured.end()), params).velocity(x, y, depth, t);
+    if (measured.empty())
+        return base;
+    return std::make_shared<CorrectedField>(base, measured, params);
 }
 }  // namespace
 
@@ -186,6 +185,18 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
     if (measuring)
         r.measured = o.measuredBefore;  // the earlier legs' dives
     std::vector<TimedPoint> active = plan;  // the plan flown now (replaced by each new plan)
+    // the forecast the DAC make, renewed at a surfacing that brought a new one (one solve shared by the steering and
+    // the replanning)
+    std::shared_ptr<const CurrentField> learned;
+    std::size_t learnedFrom = std::numeric_limits<std::size_t>::max();
+    const auto learnedNow = [&]() -> const std::shared_ptr<const CurrentField> & {
+        if (r.measured.size() != learnedFrom)
+        {
+            learned = o.learn ? o.learn(r.measured) : correctedForecast(forecast, r.measured, o.correction);
+            learnedFrom = r.measured.size();
+        }
+        return learned;
+    };
     unsigned surfacings = 0;
     const TimedPoint &goal = plan.back();
     const double t0 = plan.front().t;
@@ -208,7 +219,7 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         if (replanning && surfacings++ % o.replanEvery == 0)
         {
             std::vector<TimedPoint> fresh = strategy == ControlStrategy::Replan ? o.replan(x, y, t, active)
-                                                                                : o.replanObserved(x, y, t, active, r.measured);
+                                                                                : o.replanObserved(x, y, t, active, learnedNow());
             if (!fresh.empty())
             {
                 fresh.back() = {goal.x, goal.y, fresh.back().t};
@@ -246,10 +257,11 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
             dx /= len;
             dy /= len;
             if (strategy == ControlStrategy::Dac && !r.measured.empty())  // the last dive's measured current
-                aimOffHeading(target.x - x, target.y - y, r.measured.back().dac, surface - t, hx, hy);
+                aimOffHeading(target.x - x, target.y - y,
+                              o.learnSteersDac ? learnedNow()->velocity(x, y, o.depth, t) : r.measured.back().dac,
+                              surface - t, hx, hy);
             else if (strategy == ControlStrategy::ReplanObserved)
-                crabHeading(dx, dy, correctedCurrent(forecast, r.measured, o.correction, x, y, o.depth, t), speed, hx,
-                            hy);
+                crabHeading(dx, dy, learnedNow()->velocity(x, y, o.depth, t), speed, hx, hy);
             else if (strategy != ControlStrategy::CurrentBlind && strategy != ControlStrategy::Greedy)
                 crabHeading(dx, dy, forecast.velocity(x, y, o.depth, t), speed, hx, hy);
             else

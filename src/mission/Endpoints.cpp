@@ -151,7 +151,17 @@ CorrectionParams MissionProblem::correctionParams() const
                   : m.hasTimeUnit()          ? 86400.0 / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds)
                   : std::isfinite(span)      ? 0.1 * span
                                              : side / m.vehicle.speed;
-    p.errorRatio = s.errorRatio;
+    p.errorRatio = std::isfinite(s.errorRatio) ? s.errorRatio : 0.2;
+    // what is given is kept; the rest are priors the DAC may improve on ([RasmussenGP] Sec. 5.4.1)
+    p.learn = s.learn;
+    p.lengthGiven = std::isfinite(s.lengthScale);
+    p.timeGiven = std::isfinite(s.timeScale);
+    p.ratioGiven = std::isfinite(s.errorRatio);
+    // a DAC is good to about 1 cm/s (its error is never estimated below that); in field units
+    const double seconds = !m.hasTimeUnit() ? 0.0 : m.current.isForecast() ? 1.0 : m.timeUnitSeconds;
+    const double metresPerSecond = m.physicalUnits().length && seconds > 0.0 ? m.metresPerUnit() / seconds : 0.0;
+    p.dacError = metresPerSecond > 0.0 ? 0.01 / metresPerSecond : 0.03 * m.vehicle.speed;
+    p.secondsPerTimeUnit = seconds;
     if (m.dive.enabled)
     {
         p.depthTop = m.dive.params.zMin;

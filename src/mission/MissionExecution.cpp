@@ -17,6 +17,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/current/EnsembleLearning.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -113,18 +114,24 @@ Replanner replanner(const MissionProblem &problem, Point2 goal, double margin)
     };
 }
 
-/// Plans of the replan_observed strategy: as replanner(), on the forecast corrected by every DAC the glider measured
-/// so far (CorrectedField, the mission's correction parameters). Without a measurement, or with innovations that are
-/// all zero (a truth equal to the forecast), the corrected field is the forecast to the bit.
+/// Plans of the replan_observed strategy: as replanner(), on the forecast the DAC measured so far make (the flight's
+/// learning: flightLearning()). Without a measurement, or with innovations that are all zero (a truth equal to the
+/// forecast), that forecast is the forecast to the bit.
 ObservedReplanner observedReplanner(const MissionProblem &problem, Point2 goal, double margin)
 {
-    const CorrectionParams params = problem.correctionParams();
-    return [&problem, goal, margin, params](double x, double y, double t, const std::vector<TimedPoint> &current,
-                                            const std::vector<DacObservation> &measured) {
-        const MissionProblem corrected =
-            problem.withField(std::make_shared<CorrectedField>(problem.getField(), measured, params));
-        return replanner(corrected, goal, margin)(x, y, t, current);
+    return [&problem, goal, margin](double x, double y, double t, const std::vector<TimedPoint> &current,
+                                    const std::shared_ptr<const CurrentField> &learned) {
+        return replanner(problem.withField(learned), goal, margin)(x, y, t, current);
     };
+}
+
+/// The forecast the DAC of one flight make, learned as they arrive (FlightLearning: the mission's correction
+/// parameters; an ensemble's members weighed and updated); a new one for each flight (its estimates are the flight's).
+DacLearning flightLearning(const MissionProblem &problem)
+{
+    auto learning =
+        std::make_shared<FlightLearning>(problem.getField(), problem.getMembers(), problem.correctionParams());
+    return [learning](const std::vector<DacObservation> &measured) { return (*learning)(measured); };
 }
 
 /// The settings of one flight of @p run's plan (or a leg of it) with @p settings.
@@ -139,6 +146,9 @@ ExecutionOptions flightOptions(const MissionProblem &problem, const ExecutionRes
     o.replanEvery = settings.replanEvery;
     o.dacNoise = m.execution.dacNoise;
     o.correction = problem.correctionParams();
+    o.learn = flightLearning(problem);
+    // with an ensemble the dac strategy aims off with the members weighed by the DAC, not the last DAC alone
+    o.learnSteersDac = !problem.getMembers().empty();
     return o;
 }
 
@@ -186,6 +196,7 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
     std::vector<DacObservation> measured;
     TimedPoint at = run.plan.front();
     std::size_t first = 0;  // the leg's first point in the plan
+    const DacLearning learning = flightLearning(problem);  // one for the whole flight: the DAC of every leg
     for (std::size_t k = 0; k < run.legs.size(); ++k)
     {
         const bool last = k + 1 == run.legs.size();
@@ -204,6 +215,7 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
                          ? &*leg.headings
                          : nullptr;  // held headings from where they were planned to begin
         o.measuredBefore = measured;
+        o.learn = learning;
         if (s == ControlStrategy::Replan)
             o.replan = replanner(problem, to, settings.surfacingInterval);
         if (s == ControlStrategy::ReplanObserved)
@@ -274,6 +286,7 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
     o.headings = run.headings ? &*run.headings : nullptr;
     for (ControlStrategy s : settings.strategies)
     {
+        o.learn = flightLearning(problem);  // each flight learns from its own DAC
         if (s == ControlStrategy::Replan)
             o.replan = replanner(problem, run.goal, settings.surfacingInterval);
         if (s == ControlStrategy::ReplanObserved)

@@ -13,6 +13,7 @@
 #include "ompl_glider/current/LocalProjection.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
+#include "PlanningInternal.h"
 
 namespace ompl_glider
 {
@@ -274,9 +275,11 @@ void MissionProblem::applyObservations(const GliderObservations *read)
     const CorrectionParams p = correctionParams();
     if (!(p.timeScale > 0.0) || !std::isfinite(p.timeScale))
         throw Error(at + ": give observations.time_scale (no default time scale for this field)");
-    auto corrected = std::make_shared<CorrectedField>(field_, dac, p);
-    report.correction = corrected->summary();
-    report.params = p;
+    // the forecast the DAC make: corrected; an ensemble's members weighed by them and updated, then corrected
+    const LearnedForecast learned = learnForecast(field_, members_, dac, p);
+    report.correction = learned.correction;
+    report.params = learned.correction.params;
+    report.members = learned.members;
     if (report.correction.used == 0)
     {
         std::string why = std::to_string(report.future) + " after the departure, " +
@@ -284,7 +287,9 @@ void MissionProblem::applyObservations(const GliderObservations *read)
         throw Error(at + ": none of the " + std::to_string(o.dac.size()) +
                     " depth-averaged currents can correct the forecast (" + why + ")");
     }
-    field_ = corrected;
+    field_ = learned.field;
+    // the members have spoken through the DAC: the plan is made on the forecast they make (not judged member by member)
+    members_.clear();
     observations_ = std::make_shared<ObservationReport>(std::move(report));
 }
 
@@ -309,5 +314,45 @@ std::string observationNote(const MissionProblem &problem)
            (rejected.empty() ? "" : "; rejected" + rejected.substr(1)) + "; RMS innovation " +
            text::number(r->correction.rmsBefore, 3) + (ms ? " m/s" : "") + " before, " +
            text::number(r->correction.rmsAfter, 3) + (ms ? " m/s" : "") + " after the correction";
+}
+
+std::string correctionNote(const MissionProblem &problem)
+{
+    const auto &r = problem.observations();
+    if (!r)
+        return "";
+    const MissionSpec &m = problem.getSpec();
+    const CorrectionSummary &c = r->correction;
+    const bool km = m.physicalUnits().length, time = m.hasTimeUnit();
+    const double seconds = !time ? 0.0 : m.current.isForecast() ? 1.0 : m.timeUnitSeconds;
+    const double ms = km && seconds > 0.0 ? m.metresPerUnit() / seconds : 0.0;  // metres per second per field unit
+    const auto speed = [&](double v) { return ms > 0.0 ? text::number(v * ms, 3) + " m/s" : text::number(v, 3); };
+    std::string out = "L " + (km ? text::number(c.params.lengthScale * m.metresPerUnit() / 1000.0, 4) + " km"
+                                 : text::number(c.params.lengthScale, 4)) +
+                      " (" + c.lengthSource + "), T " + planning_detail::durationText(problem, c.params.timeScale) + " (" +
+                      c.timeSource + "), ratio " + text::number(c.params.errorRatio, 3) + " (" + c.ratioSource + ")";
+    if (c.learnedFrom > 0)
+        out += "; ln likelihood +" + text::number(c.likelihoodGain, 4) + " over the priors";
+    if (c.mean.active())
+    {
+        out += "; bias (" + speed(c.mean.bias.u) + ", " + speed(c.mean.bias.v) + ")";
+        for (const InnovationMean::Constituent &k : c.mean.tides)
+            out += ", " + k.name + " " + speed(std::hypot(k.amplitude(true), k.amplitude(false)));
+    }
+    if (!r->members.empty())
+    {
+        // the members that agree best with the glider, as the pilots trust the model that does
+        std::vector<std::size_t> order(r->members.size());
+        for (std::size_t i = 0; i < order.size(); ++i)
+            order[i] = i;
+        std::stable_sort(order.begin(), order.end(),
+                         [&](std::size_t a, std::size_t b) { return r->members[a].weight > r->members[b].weight; });
+        out += "; members by weight:";
+        for (std::size_t k = 0; k < std::min<std::size_t>(3, order.size()); ++k)
+            out += std::string(k ? "," : "") + " #" + std::to_string(order[k]) + " " +
+                   text::number(r->members[order[k]].weight, 3) + " (RMS " +
+                   speed(r->members[order[k]].rmsInnovation) + ")";
+    }
+    return out;
 }
 } // namespace ompl_glider

@@ -396,6 +396,8 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
 #if OMPL_GLIDER_WITH_NETCDF
     if (const std::string note = observationNote(problem); !note.empty())
         result.forecastNotes.push_back(note);  // how the glider's DAC corrected the forecast
+    if (const std::string note = correctionNote(problem); !note.empty())
+        result.forecastNotes.push_back("the correction learned from the DAC: " + note);
 #endif
     if (const std::string frozen = planning_detail::frozenFieldNote(problem, result.plan); !frozen.empty())
         result.forecastNotes.push_back(frozen);

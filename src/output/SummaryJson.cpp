@@ -300,6 +300,34 @@ json globalCheckJson(const PlannedPath &p)
             {"current_model_calls", g.currentModelCalls},
             {"wall_time_s", g.seconds}};
 }
+#if OMPL_GLIDER_WITH_NETCDF
+/// What the correction learned from the DAC: each scale's source, the likelihood gained, the innovations' mean (bias,
+/// tides) and an ensemble's member weights.
+json learnedJson(const ObservationReport &o)
+{
+    const CorrectionSummary &c = o.correction;
+    json tides = json::array();
+    for (const InnovationMean::Constituent &k : c.mean.tides)
+        tides.push_back({{"name", k.name},
+                         {"u_amplitude", k.amplitude(true)},
+                         {"u_phase_deg", k.phase(true) * 180.0 / 3.14159265358979323846},
+                         {"v_amplitude", k.amplitude(false)},
+                         {"v_phase_deg", k.phase(false) * 180.0 / 3.14159265358979323846}});
+    json members = json::array();
+    for (const MemberScore &s : o.members)
+        members.push_back({{"weight", s.weight}, {"rms_innovation", s.rmsInnovation}, {"coefficient", s.coefficient}});
+    return {{"length_scale_source", c.lengthSource},
+            {"time_scale_source", c.timeSource},
+            {"error_ratio_source", c.ratioSource},
+            {"dac_estimated_from", c.learnedFrom},
+            {"log_likelihood_gain", c.likelihoodGain},
+            {"bias", c.mean.active() ? json{{"u", c.mean.bias.u}, {"v", c.mean.bias.v}} : json(nullptr)},
+            {"tides", tides},
+            {"tides_time_origin", c.mean.active() ? json(c.mean.tRef) : json(nullptr)},
+            {"members", members}};
+}
+#endif
+
 /// The glider's observations: what was read, rejected and used, and the correction's size (null without them).
 json observationsJson(const MissionProblem &problem)
 {
@@ -348,6 +376,7 @@ json observationsJson(const MissionProblem &problem)
             {"length_scale", o->params.lengthScale},
             {"time_scale", o->params.timeScale},
             {"error_ratio", o->params.errorRatio},
+            {"learned", learnedJson(*o)},
             {"last_fix", fix},
             {"resumed", resumed}};
 #else

@@ -120,7 +120,7 @@ TEST(ExecutionObserved, ReplanObservedSteersWithTheCorrectedCurrentAtTheFix)
     o.replanEvery = 1000;  // the start's plan only: the plans keep the current one
     o.replan = [](double, double, double, const std::vector<TimedPoint> &) { return std::vector<TimedPoint>{}; };
     o.replanObserved = [](double, double, double, const std::vector<TimedPoint> &,
-                          const std::vector<DacObservation> &) { return std::vector<TimedPoint>{}; };
+                          const std::shared_ptr<const CurrentField> &) { return std::vector<TimedPoint>{}; };
     o.correction.lengthScale = 5.0;
     o.correction.timeScale = 10.0;
     const FlownTrack seen = flyPlan(plan, 0.5, forecast, truth, nullptr, ControlStrategy::ReplanObserved, o);

@@ -107,6 +107,10 @@ struct CorrectionSummary
     InnovationMean mean;            ///< the innovations' mean carried ahead (inactive: none)
 };
 
+/// @brief @p field's current averaged over the depths @p top to @p bottom (m; equal: the current at that depth) at
+/// (x, y, t): what a DAC measured there is compared with.
+Velocity depthAveragedCurrent(const CurrentField &field, double x, double y, double t, double top, double bottom);
+
 /// @brief The forecast @p base corrected by @p observations (see the file comment).
 class CorrectedField : public CurrentField
 {

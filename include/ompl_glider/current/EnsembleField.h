@@ -12,14 +12,19 @@
 
 namespace ompl_glider
 {
-/// @brief c(x, t) = (1/M) sum_m c_m(x, t). Water where every member has water; defined where every member is.
+/// @brief c(x, t) = (1/M) sum_m c_m(x, t), or a combination sum_m a_m c_m(x, t). Water where every member has water; defined where every member is.
 class EnsembleMeanField : public CurrentField
 {
 public:
     /// @brief @p members: at least one, none null. @throws Error otherwise.
     explicit EnsembleMeanField(std::vector<std::shared_ptr<const CurrentField>> members);
+    /// @brief A combination sum_m a_m c_m of the members (the members weighted by what a glider measured, and
+    /// updated from their anomalies: current/EnsembleLearning.h); @p coefficients: one per member, finite.
+    /// @throws Error otherwise.
+    EnsembleMeanField(std::vector<std::shared_ptr<const CurrentField>> members, std::vector<double> coefficients);
 
-    /// |mean| <= max over members of |c_m|, so the largest member bound bounds the mean.
+    /// |mean| <= max over members of |c_m|, so the largest member bound bounds the mean (a combination: the sum of
+    /// |a_m| times the members' bounds).
     double maxSpeed(const Region &region) const override;
     bool divergenceFree() const override;
     bool inWater(double x, double y, double z) const override;
@@ -30,6 +35,8 @@ public:
     double timeEnd() const override;
     std::string name() const override;
 
+    /// @brief The coefficients a_m of a combination (empty: the plain mean).
+    const std::vector<double> &coefficients() const { return coefficients_; }
     /// @brief The members.
     const std::vector<std::shared_ptr<const CurrentField>> &members() const
     {
@@ -42,5 +49,6 @@ protected:
 
 private:
     std::vector<std::shared_ptr<const CurrentField>> members_;
+    std::vector<double> coefficients_;  // empty: the mean
 };
 }  // namespace ompl_glider

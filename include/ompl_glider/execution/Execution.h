@@ -68,9 +68,15 @@ std::optional<ControlStrategy> parseControlStrategy(const std::string &name);
 using Replanner = std::function<std::vector<TimedPoint>(double x, double y, double t,
                                                            const std::vector<TimedPoint> &current)>;
 
-/// @brief A new plan as Replanner, given also the depth-averaged currents the glider measured so far.
-using ObservedReplanner = std::function<std::vector<TimedPoint>(
-    double x, double y, double t, const std::vector<TimedPoint> &current, const std::vector<DacObservation> &measured)>;
+/// @brief A new plan as Replanner, on the forecast the depth-averaged currents measured so far make
+/// (@p learned: ExecutionOptions::learn's, made once per surfacing and shared with the steering).
+using ObservedReplanner =
+    std::function<std::vector<TimedPoint>(double x, double y, double t, const std::vector<TimedPoint> &current,
+                                          const std::shared_ptr<const CurrentField> &learned)>;
+
+/// @brief The forecast the DAC measured so far make (e.g. learnForecast(): the forecast corrected, an ensemble's
+/// members weighed and updated).
+using DacLearning = std::function<std::shared_ptr<const CurrentField>(const std::vector<DacObservation> &measured)>;
 
 /// @brief Options of flyPlan().
 struct ExecutionOptions
@@ -91,8 +97,14 @@ struct ExecutionOptions
     double dacNoise{0.0};
     unsigned dacSeed{1};  ///< seed of that noise
     /// ReplanObserved: the correction it plans on, also steered with between plans (the crab angle for the corrected
-    /// forecast's current at the fix, from the DAC of the last CorrectedField::kCutoff time scales)
+    /// forecast's current at the fix), when no `learn` is given: CorrectedField(forecast, measured, correction)
     CorrectionParams correction;
+    /// ReplanObserved (and Dac with learnSteersDac): the forecast the DAC make, once per surfacing that brought a new
+    /// one, shared by the steering and the replanning; empty: the forecast corrected with `correction`
+    DacLearning learn;
+    /// Dac: aim off with the learned forecast's current at the fix (an ensemble's members weighed by the DAC) instead
+    /// of the last dive's DAC alone
+    bool learnSteersDac{false};
     /// Dac, ReplanObserved: what the glider measured before this flight (the earlier legs of a mission): the flight
     /// starts from it (FlownTrack::measured begins with it)
     std::vector<DacObservation> measuredBefore;

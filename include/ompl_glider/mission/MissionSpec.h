@@ -456,7 +456,12 @@ struct ObservationsSpec
     double lengthScale{std::numeric_limits<double>::quiet_NaN()};
     /// T (field time units); NaN: one day where the time unit is known, else a tenth of the planning horizon
     double timeScale{std::numeric_limits<double>::quiet_NaN()};
-    double errorRatio{0.2};  ///< s_o / s_f: the DAC's error over the forecast's (> 0; CorrectionParams)
+    /// s_o / s_f: the DAC's error over the forecast's (> 0; CorrectionParams); NaN: 0.2
+    double errorRatio{std::numeric_limits<double>::quiet_NaN()};
+    /// Learn from the DAC (CorrectionParams::learn): the scales not given estimated from them, a bias and the tides
+    /// carried ahead, an ensemble's members weighed and updated (current/EnsembleLearning.h); false: the given
+    /// values and the defaults as they are
+    bool learn{true};
     SourceMark mark;         ///< where it was given
     /// set once the mission was resumed at the last fix (resumeAtLastFix()): what it replaced and dropped
     std::optional<MissionResume> resumed;

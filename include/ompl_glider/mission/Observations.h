@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ompl_glider/current/CorrectedField.h"
+#include "ompl_glider/current/EnsembleLearning.h"
 #include "ompl_glider/io/GliderObservations.h"
 #include "ompl_glider/mission/MissionSpec.h"
 
@@ -24,7 +25,9 @@ struct ObservationReport
     std::map<std::string, std::size_t> rejected; ///< by the reader, by reason
     std::size_t future{0};                       ///< rejected: measured after the plan's departure
     CorrectionSummary correction;     ///< what the correction used, rejected and did (RMS innovation before / after)
-    CorrectionParams params;          ///< L, T, s_o / s_f as used
+    CorrectionParams params;          ///< L, T, s_o / s_f as used (estimated ones in place of their priors)
+    /// An ensemble forecast: each member's weight, RMS innovation and coefficient (EnsembleLearning.h); empty: none
+    std::vector<MemberScore> members;
     std::optional<GliderFix> lastFix; ///< the latest position reported
     std::vector<GliderFix> fixes;     ///< every position reported, in time order (the glider's track on the maps)
     std::vector<DacRecord> dac;       ///< every DAC read (before the departure's cut), in time order
@@ -58,4 +61,9 @@ class MissionProblem;
 /// @brief "glider observations 'PATH' (ru29): 12 DAC used; rejected 1 QC flag 4 (u_qc), 2 after the departure; RMS
 /// innovation 0.12 m/s before, 0.01 m/s after the correction"; empty without observations.
 std::string observationNote(const MissionProblem &problem);
+
+/// @brief "L 31.2 km (estimated from 120 DAC), T 1 d 4 h (default), ratio 0.2 (given); ln likelihood +12.3 over the
+/// priors; bias (0.05 m/s, -0.02 m/s), M2 0.11 m/s; members by weight: #3 0.61 (RMS 0.02 m/s), ..."; empty without
+/// observations.
+std::string correctionNote(const MissionProblem &problem);
 } // namespace ompl_glider

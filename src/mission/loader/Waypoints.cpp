@@ -145,8 +145,8 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
         file = n;
     if (n.IsMap())
     {
-        r.checkMap(n, f, {"file", "length_scale", "time_scale", "error_ratio"});
-        if (!n["file"] && !n["length_scale"] && !n["time_scale"] && !n["error_ratio"])
+        r.checkMap(n, f, {"file", "length_scale", "time_scale", "error_ratio", "learn"});
+        if (!n["file"] && !n["length_scale"] && !n["time_scale"] && !n["error_ratio"] && !n["learn"])
             r.fail(n, f + ".file",
                    "missing: the glider's files (IOOS profile files or Slocum dba files: a file, folder or pattern; a "
                    "CSV; or an ERDDAP URL), or the "
@@ -171,6 +171,8 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
         }
         if (n["error_ratio"])
             o.errorRatio = r.positive(n["error_ratio"], f + ".error_ratio");
+        if (n["learn"])
+            o.learn = r.boolean(n["learn"], f + ".learn");
     }
     if (file)
     {
