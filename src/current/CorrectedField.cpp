@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
 
 #include <Eigen/Dense>
 
@@ -141,20 +143,69 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
             dv[i] -= m.v;
         }
     }
-    const double L2 = params_.lengthScale * params_.lengthScale, T2 = params_.timeScale * params_.timeScale;
-    Eigen::MatrixXd C(n, n);
+    // superobservations: DAC within a quarter of the scales of each other in space and time (correlated above 0.9)
+    // are averaged into one whose error variance is divided by their number; many nearly equal rows would leave the
+    // system ill-conditioned and cost each evaluation of the field a term per DAC
+    const double cellL = params_.lengthScale / 4.0, cellT = params_.timeScale / 4.0;
+    std::map<std::tuple<long long, long long, long long>, std::size_t> cells;
+    std::vector<double> count, su, sv;
     for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
+    {
+        const auto key = std::make_tuple(static_cast<long long>(std::floor(used_[i].at.x / cellL)),
+                                         static_cast<long long>(std::floor(used_[i].at.y / cellL)),
+                                         static_cast<long long>(std::floor(used_[i].t / cellT)));
+        const auto [it, added] = cells.emplace(key, nodes_.size());
+        if (added)
         {
-            const double dx = used_[i].at.x - used_[j].at.x, dy = used_[i].at.y - used_[j].at.y;
-            const double dt = used_[i].t - used_[j].t;
+            nodes_.push_back({0.0, {0.0, 0.0}});
+            count.push_back(0.0);
+            su.push_back(0.0);
+            sv.push_back(0.0);
+        }
+        const std::size_t k = it->second;
+        nodes_[k].t += used_[i].t;
+        nodes_[k].at.x += used_[i].at.x;
+        nodes_[k].at.y += used_[i].at.y;
+        su[k] += du[i];
+        sv[k] += dv[i];
+        count[k] += 1.0;
+    }
+    const std::size_t m = nodes_.size();
+    for (std::size_t k = 0; k < m; ++k)
+    {
+        nodes_[k].t /= count[k];
+        nodes_[k].at.x /= count[k];
+        nodes_[k].at.y /= count[k];
+    }
+    std::vector<std::size_t> order(m);
+    for (std::size_t k = 0; k < m; ++k)
+        order[k] = k;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return nodes_[a].t < nodes_[b].t; });
+    std::vector<Node> sorted(m);
+    Eigen::VectorXd nu(m), nv(m), noise(m);
+    for (std::size_t k = 0; k < m; ++k)
+    {
+        const std::size_t j = order[k];
+        sorted[k] = nodes_[j];
+        nu[static_cast<Eigen::Index>(k)] = su[j] / count[j];
+        nv[static_cast<Eigen::Index>(k)] = sv[j] / count[j];
+        noise[static_cast<Eigen::Index>(k)] = params_.errorRatio * params_.errorRatio / count[j];
+    }
+    nodes_ = std::move(sorted);
+    const double L2 = params_.lengthScale * params_.lengthScale, T2 = params_.timeScale * params_.timeScale;
+    Eigen::MatrixXd C(m, m);
+    for (std::size_t i = 0; i < m; ++i)
+        for (std::size_t j = 0; j < m; ++j)
+        {
+            const double dx = nodes_[i].at.x - nodes_[j].at.x, dy = nodes_[i].at.y - nodes_[j].at.y;
+            const double dt = nodes_[i].t - nodes_[j].t;
             C(i, j) = std::exp(-(dx * dx + dy * dy) / (2.0 * L2) - dt * dt / (2.0 * T2));
         }
-    C.diagonal().array() += params_.errorRatio * params_.errorRatio;
+    C.diagonal() += noise;
     const Eigen::LDLT<Eigen::MatrixXd> solver(C);
-    const Eigen::VectorXd au = solver.solve(du), av = solver.solve(dv);
-    alphaU_.assign(au.data(), au.data() + n);
-    alphaV_.assign(av.data(), av.data() + n);
+    const Eigen::VectorXd au = solver.solve(nu), av = solver.solve(nv);
+    alphaU_.assign(au.data(), au.data() + m);
+    alphaV_.assign(av.data(), av.data() + m);
     double after = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
@@ -200,16 +251,16 @@ void CorrectedField::addCorrection(double x, double y, double t, Velocity &c, Ja
     }
     const double L2 = params_.lengthScale * params_.lengthScale, T2 = params_.timeScale * params_.timeScale;
     const double window = kCutoff * params_.timeScale, reach2 = kCutoff * kCutoff * L2;
-    auto first = std::lower_bound(used_.begin(), used_.end(), t - window,
-                                  [](const DacObservation &o, double v) { return o.t < v; });
-    for (auto it = first; it != used_.end() && it->t <= t + window; ++it)
+    auto first = std::lower_bound(nodes_.begin(), nodes_.end(), t - window,
+                                  [](const Node &o, double v) { return o.t < v; });
+    for (auto it = first; it != nodes_.end() && it->t <= t + window; ++it)
     {
         const double dx = x - it->at.x, dy = y - it->at.y, r2 = dx * dx + dy * dy;
         if (r2 > reach2)
             continue;
         const double dt = t - it->t;
         const double w = std::exp(-r2 / (2.0 * L2) - dt * dt / (2.0 * T2));
-        const std::size_t i = static_cast<std::size_t>(it - used_.begin());
+        const std::size_t i = static_cast<std::size_t>(it - nodes_.begin());
         c.u += w * alphaU_[i];
         c.v += w * alphaV_[i];
         if (j)
@@ -252,9 +303,9 @@ void CorrectedField::reach(const Region &region, double &su, double &sv, double 
     summary_.mean.bound(su, sv);
     s = std::hypot(su, sv);
     const double window = kCutoff * params_.timeScale, far = kCutoff * params_.lengthScale;
-    for (std::size_t i = 0; i < used_.size(); ++i)
+    for (std::size_t i = 0; i < nodes_.size(); ++i)
     {
-        const DacObservation &o = used_[i];
+        const Node &o = nodes_[i];
         if (o.t < region.tMin - window || o.t > region.tMax + window)
             continue;
         const double dx = std::max({region.xMin - o.at.x, 0.0, o.at.x - region.xMax});

@@ -156,8 +156,15 @@ private:
 
     std::shared_ptr<const CurrentField> base_;
     CorrectionParams params_;
+    /// A superobservation: the DAC of one cell of a quarter of the scales, averaged (their mean time and place).
+    struct Node
+    {
+        double t;
+        Point2 at;
+    };
     std::vector<DacObservation> used_;    // by time
-    std::vector<double> alphaU_, alphaV_; // weights of the innovations (less their mean)
+    std::vector<Node> nodes_;             // the superobservations, by time
+    std::vector<double> alphaU_, alphaV_; // their weights (innovations less their mean)
     CorrectionSummary summary_;
 };
 } // namespace ompl_glider
