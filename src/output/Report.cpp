@@ -5,6 +5,7 @@
 
 #include "ompl_glider/Config.h"
 #include "ompl_glider/io/FileList.h"
+#include "ompl_glider/mission/EnsembleDraw.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/mission/Observations.h"
@@ -231,6 +232,8 @@ void printReport(std::ostream &out, const MissionResult &r)
         out << "Depth limit:        " << r.safetyNote << "\n";
     for (const std::string &note : r.forecastNotes)
         out << "Forecast:           " << note << "\n";
+    if (!m.current.members.empty())  // an ensemble: how many members, and how they were drawn
+        out << "Current:            " << ensembleDescription(m.current) << "\n";
     if (!r.coastlineNote.empty())
         out << "Coastline:          " << r.coastlineNote << "\n";
     if (p.solved)

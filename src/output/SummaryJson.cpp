@@ -13,6 +13,7 @@
 #endif
 #include "JsonValues.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/io/FileList.h"
 #include "ompl_glider/io/RemoteSource.h"
 
@@ -273,6 +274,35 @@ void forecastJson(const MissionProblem &problem, json &j)
     j["forecast_files"] = forecastFiles;
     j["forecast_sources"] = forecastSourcesJson(problem);
 }
+/// The current's ensemble (null without one): each member's parameters (an analytic flow's, its kind's defaults
+/// filled in: what the member flew) or files, and for members drawn from one source (CurrentSpec::drawn) the seed
+/// and each parameter's relative spread, member 0 being the control run.
+json currentEnsembleJson(const CurrentSpec &c)
+{
+    if (c.members.empty())
+        return nullptr;
+    json members = json::array();
+    for (const CurrentSpec &member : c.members)
+    {
+        const CurrentFieldKind *kind = findCurrentFieldKind(member.type);
+        json o = json::object();
+        if (kind && !kind->gridded())
+            for (const auto &[name, value] : kind->parameters)
+                o[name] = member.parameters.count(name) ? member.parameters.at(name) : value;
+        else
+            o["files"] = member.forecastFiles();
+        members.push_back(o);
+    }
+    json j = {{"type", c.type}, {"count", c.members.size()}, {"drawn", c.drawn.has_value()}};
+    j["seed"] = c.drawn ? json(c.drawn->seed) : json(nullptr);
+    j["spread"] = json::object();
+    if (c.drawn)
+        for (const auto &[name, spread] : c.drawn->spread)
+            j["spread"][name] = spread;
+    j["members"] = members;
+    return j;
+}
+
 
 json globalCheckJson(const PlannedPath &p)
 {
@@ -473,6 +503,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                       {"iso", r.waypoints.empty() ? jtext(r.departureIso) : jtext(r.waypoints.front().iso)}};
     j["arrival"] = {{"time", r.waypoints.empty() ? json(nullptr) : jnum(r.waypoints.back().time)},
                     {"iso", r.waypoints.empty() ? json(nullptr) : jtext(r.waypoints.back().iso)}};
+    j["current_ensemble"] = currentEnsembleJson(m.current);
     // goals in time: the time at the goal in the window, the holds, the window
     j["arrival_time"] = r.waypoints.empty() ? json(nullptr) : jnum(r.waypoints.back().time);
     j["hold_time"] = p.solved ? jnum(p.holdTime) : json(nullptr);

@@ -1,6 +1,9 @@
 # mission tests
 glider_add_test(test_mission_departure ${CMAKE_CURRENT_LIST_DIR}/TestDepartureTime.cpp)
 glider_add_test(test_mission_file ${CMAKE_CURRENT_LIST_DIR}/TestMissionFile.cpp)
+# an analytic flow's ensemble drawn from one set of parameters (members, spread, seed)
+glider_add_test(test_mission_drawn_ensemble ${CMAKE_CURRENT_LIST_DIR}/TestDrawnEnsemble.cpp)
+target_link_libraries(test_mission_drawn_ensemble PRIVATE nlohmann_json::nlohmann_json)
 glider_add_test(test_mission_run ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp ${CMAKE_CURRENT_LIST_DIR}/TestForecastLand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestForecastModelGrids.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestCoastline.cpp)
