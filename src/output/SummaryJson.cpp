@@ -103,6 +103,19 @@ json executionJson(const ExecutionResult &e, const MissionProblem &problem)
                              {"to", e.differenceEnd}};
     j["threads"] = e.threads;
     j["wall_time_s"] = e.wallSeconds;
+    if (e.oracle)  // each pair planned on the truth and flown in it: the yardstick of `over_oracle`
+    {
+        std::size_t reached = 0;
+        for (const ExecutionRun &run : e.runs)
+            reached += std::isfinite(run.oracleArrival) ? 1 : 0;
+        j["oracle"] = {{"arrival_time", jnum(own.oracleArrival)},
+                       {"arrival_iso", std::isfinite(own.oracleArrival) ? jtext(problem.isoTime(own.oracleArrival))
+                                                                        : json(nullptr)},
+                       {"runs_reached", reached},
+                       {"wall_time_s", e.oracleSeconds}};
+    }
+    else
+        j["oracle"] = nullptr;  // the truth is the forecast: nothing to measure against
     j["planned"] = own.planned;
     j["reason"] = jtext(own.reason);
     for (std::size_t k = 0; k < e.strategies.size(); ++k)
@@ -137,7 +150,8 @@ json executionJson(const ExecutionResult &e, const MissionProblem &problem)
                       {"grounded", s.grounded},
                       {"final_distance", spreadJson(s.finalDistance)},
                       {"arrival_delay", spreadJson(s.arrivalDelay)},
-                      {"made_good_speed", spreadJson(s.madeGoodSpeed)}};
+                      {"made_good_speed", spreadJson(s.madeGoodSpeed)},
+                      {"over_oracle", e.oracle ? spreadJson(s.overOracle) : json(nullptr)}};
         j[s.strategy] = o;
     }
     return j;
@@ -260,20 +274,6 @@ json forecastSourcesJson(const MissionProblem &problem)
     return out;
 }
 
-/// The forecast's files: what they are (a Zarr store, a GRIB file, an OPeNDAP dataset, NetCDF files; null for an
-/// analytic flow), their names and what came from the network.
-void forecastJson(const MissionProblem &problem, json &j)
-{
-    const MissionSpec &m = problem.getSpec();
-    j["current_source"] = m.current.isForecast() && !m.current.file.empty()
-                              ? json(forecastSourceKind(m.current.file))
-                              : json(nullptr);
-    json forecastFiles = json::array();
-    for (const std::string &f : problem.forecastFiles())
-        forecastFiles.push_back(withoutCredentials(f));  // a URL's user:password never reaches an output
-    j["forecast_files"] = forecastFiles;
-    j["forecast_sources"] = forecastSourcesJson(problem);
-}
 /// The current's ensemble (null without one): each member's parameters (an analytic flow's, its kind's defaults
 /// filled in: what the member flew) or files, and for members drawn from one source (CurrentSpec::drawn) the seed
 /// and each parameter's relative spread, member 0 being the control run.
@@ -303,6 +303,20 @@ json currentEnsembleJson(const CurrentSpec &c)
     return j;
 }
 
+/// The forecast's files: what they are (a Zarr store, a GRIB file, an OPeNDAP dataset, NetCDF files; null for an
+/// analytic flow), their names and what came from the network.
+void forecastJson(const MissionProblem &problem, json &j)
+{
+    const MissionSpec &m = problem.getSpec();
+    j["current_source"] = m.current.isForecast() && !m.current.file.empty()
+                              ? json(forecastSourceKind(m.current.file))
+                              : json(nullptr);
+    json forecastFiles = json::array();
+    for (const std::string &f : problem.forecastFiles())
+        forecastFiles.push_back(withoutCredentials(f));  // a URL's user:password never reaches an output
+    j["forecast_files"] = forecastFiles;
+    j["forecast_sources"] = forecastSourcesJson(problem);
+}
 
 json globalCheckJson(const PlannedPath &p)
 {
@@ -489,6 +503,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["mission"] = m.name;
     j["source"] = m.file;
     j["current"] = m.current.type;
+    j["current_ensemble"] = currentEnsembleJson(m.current);
     forecastJson(problem, j);
     j["forecast_notes"] = json::array();
     for (const std::string &note : r.forecastNotes)
@@ -503,7 +518,6 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                       {"iso", r.waypoints.empty() ? jtext(r.departureIso) : jtext(r.waypoints.front().iso)}};
     j["arrival"] = {{"time", r.waypoints.empty() ? json(nullptr) : jnum(r.waypoints.back().time)},
                     {"iso", r.waypoints.empty() ? json(nullptr) : jtext(r.waypoints.back().iso)}};
-    j["current_ensemble"] = currentEnsembleJson(m.current);
     // goals in time: the time at the goal in the window, the holds, the window
     j["arrival_time"] = r.waypoints.empty() ? json(nullptr) : jnum(r.waypoints.back().time);
     j["hold_time"] = p.solved ? jnum(p.holdTime) : json(nullptr);
