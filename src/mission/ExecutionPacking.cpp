@@ -85,6 +85,8 @@ std::string execution_detail::packRun(const ExecutionRun &run)
         o.put(static_cast<std::uint64_t>(f.stationsReached));
         o.put(static_cast<std::uint64_t>(f.windowsMissed));
     });
+    w.put(run.oracleArrival);
+    w.put(run.oracleSeconds);
     return w.take();
 }
 
@@ -124,5 +126,7 @@ void execution_detail::unpackRun(const std::string &bytes, ExecutionRun &run)
         f.stationsReached = static_cast<std::size_t>(i.value<std::uint64_t>());
         f.windowsMissed = static_cast<std::size_t>(i.value<std::uint64_t>());
     });
+    r.get(run.oracleArrival);
+    r.get(run.oracleSeconds);
 }
 }  // namespace ompl_glider

@@ -22,6 +22,7 @@
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
 #include "../io/NumberText.h"
+#include "ExecutionOracle.h"
 #include "ExecutionPacking.h"
 #include "PlanningInternal.h"
 
@@ -295,6 +296,35 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
                                     problem.getEnvironment().get(), s, o));
     }
 }
+/// The oracle of @p run (ExecutionRun::oracleArrival): its pair planned on the truth as the run was on the forecast,
+/// flown in the truth with the truth as its forecast by @p oracle's one strategy (current_sensitive); the arrival
+/// when it reached the goal, else NaN.
+void flyOracle(const MissionProblem &problem, const ExecutionResult &oracle, ExecutionRun &run)
+{
+    const auto t0 = std::chrono::steady_clock::now();
+    const MissionProblem onTruth = problem.withField(problem.getTruth());
+    ExecutionRun o = execution_detail::oraclePlan(onTruth, run, !oracle.stops.empty());
+    if (o.planned)
+    {
+        flyRun(onTruth, oracle, o);
+        if (o.flown.front().reached)
+            run.oracleArrival = o.flown.front().arrivalTime;
+    }
+    run.oracleSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// The settings of the oracle's flights (flyOracle()): @p r's, with current_sensitive its one strategy.
+ExecutionResult oracleSettings(const ExecutionResult &r)
+{
+    ExecutionResult oracle;
+    oracle.strategies = {ControlStrategy::CurrentSensitive};
+    oracle.surfacingInterval = r.surfacingInterval;
+    oracle.step = r.step;
+    oracle.replanEvery = r.replanEvery;
+    oracle.stops = r.stops;
+    return oracle;
+}
+
 /// A truth that does not cover the flights in time is never extrapolated: refused when it starts after the
 /// departure or ends before the plan arrives, else the flights stop at its end and a note says so.
 void checkTruthTimes(const MissionProblem &problem, const PlannedPath &plan, double window, ExecutionResult &r)
@@ -440,6 +470,7 @@ std::vector<StrategySpread> strategySpreads(const ExecutionResult &r)
         s.finalDistance = measureSpread(dist);
         s.arrivalDelay = measureSpread(delay);
         s.madeGoodSpeed = measureSpread(speed);
+        s.overOracle = execution_detail::overOracle(r, k);  // empty without an oracle
         out.push_back(s);
     }
     return out;
@@ -582,6 +613,8 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     }
     else
         r.runs[0].reason = plan.reason;
+    r.oracle = e.truth.has_value();  // where the truth is the forecast there is nothing to measure against
+    const ExecutionResult oracle = oracleSettings(r);
 
     const auto planAndFly = [&](ExecutionRun &run) {
         if (run.index > 0 && !r.stops.empty())
@@ -610,6 +643,8 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         }
         if (run.planned)
             flyRun(problem, r, run);
+        if (r.oracle)
+            flyOracle(problem, oracle, run);
     };
     const auto report = [&](std::size_t n) {
         char line[96];
@@ -651,6 +686,8 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         });
     }
 
+    for (const ExecutionRun &run : r.runs)
+        r.oracleSeconds += run.oracleSeconds;
     r.spread = strategySpreads(r);
     modelDifference(problem, plan, r);  // the truth against the forecast over the box and the runs' time window
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

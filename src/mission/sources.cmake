@@ -9,6 +9,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/loader/ForbiddenRegions.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Fleet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Waypoints.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/DrawnEnsemble.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ProblemField.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ProblemLand.cpp
@@ -30,6 +31,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Isochrones.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionExecution.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ExecutionPacking.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ExecutionOracle.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Fleet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PlanStatus.cpp
   ${CMAKE_CURRENT_LIST_DIR}/InputDigest.cpp

@@ -40,19 +40,21 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
 {
     std::string s = "run,strategy,start_x,start_y,start_lon,start_lat,goal_x,goal_y,goal_lon,goal_lat,departure,"
                     "planned_arrival,final_distance,arrival_time,arrival_iso,reached,grounded,made_good_speed,"
-                    "surfacings,replans,radius,reason,stations_reached,windows_missed\n";
+                    "surfacings,replans,radius,reason,stations_reached,windows_missed,oracle_arrival\n";
     for (const ExecutionRun &run : e.runs)
     {
         const std::string head = std::to_string(run.index) + ",";
         const std::string ends = where(problem, run.start) + "," + where(problem, run.goal) + "," +
                                  num(run.departure) + ",";
+        // the oracle's arrival (empty without an oracle, or where it did not reach), the same on each strategy's row
+        const std::string oracle = "," + num(run.oracleArrival) + "\n";
         if (!run.planned)
         {
             std::string reason = run.reason;
             for (char &c : reason)
                 if (c == ',' || c == '\n' || c == '"')
                     c = ';';
-            s += head + "none," + ends + ",,,,,,,,," + num(run.radius) + "," + reason + ",,\n";
+            s += head + "none," + ends + ",,,,,,,,," + num(run.radius) + "," + reason + ",," + oracle;
             continue;
         }
         for (std::size_t k = 0; k < e.strategies.size(); ++k)
@@ -66,7 +68,7 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
                  num(run.radius) + ",," +
                  (e.stops.empty() ? std::string(",") : std::to_string(f.stationsReached) + "," +
                                                        std::to_string(f.windowsMissed)) +
-                 "\n";
+                 oracle;
         }
     }
     return s;

@@ -5,6 +5,7 @@
 
 #include "ompl_glider/Config.h"
 #include "ompl_glider/io/FileList.h"
+#include "ompl_glider/mission/EnsembleDraw.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/mission/Observations.h"
@@ -151,6 +152,33 @@ void printRouteModel(std::ostream &out, const MissionResult &r)
         out << "Re-flight note:     " << p.reflightNote << "\n";
 }
 
+/// The execution's strategies over its runs: reached, grounded, the median distance to the goal at the planned
+/// arrival and, where the truth is not the forecast, the arrival over the oracle's (ExecutionResult::oracle).
+void printExecutionTable(std::ostream &out, const ExecutionResult &e, const MissionSpec &m)
+{
+    out << format("  %-22s %9s %8s %16s", "strategy", "reached", "grounded", "distance median");
+    out << (e.oracle ? "  over oracle median / q3 (runs)\n" : "\n");
+    for (const StrategySpread &s : e.spread)
+    {
+        const std::string reached = format("%zu / %zu", s.reached, s.runs);
+        const std::string distance = s.finalDistance.count ? lengthText(m, s.finalDistance.median) : "-";
+        out << format("  %-22s %9s %8zu %16s", s.strategy.c_str(), reached.c_str(), s.grounded, distance.c_str());
+        if (e.oracle)
+            out << (s.overOracle.count ? format("  %.3f / %.3f (%zu)", s.overOracle.median, s.overOracle.q3,
+                                                s.overOracle.count)
+                                       : std::string("  - (0)"));
+        out << "\n";
+    }
+    if (e.oracle)
+    {
+        std::size_t reached = 0;
+        for (const ExecutionRun &run : e.runs)
+            reached += std::isfinite(run.oracleArrival) ? 1 : 0;
+        out << format("  oracle (planned and flown on the truth) reached %zu / %zu runs (%.1f s)\n", reached,
+                      e.runs.size(), e.oracleSeconds);
+    }
+}
+
 /// The global check of the route class: the candidates and which one won, by how much.
 void printGlobalCheck(std::ostream &out, const PlannedPath &p, const MissionSpec &m)
 {
@@ -204,6 +232,8 @@ void printReport(std::ostream &out, const MissionResult &r)
     if (m.current.isForecast() && !m.current.file.empty())  // a Zarr store, a GRIB file, an OPeNDAP dataset...
         out << " (" << forecastSourceKind(m.current.file) << (m.current.files.size() > 1 ? "s" : "") << ")";
     out << "\n";
+    if (!m.current.members.empty())  // an ensemble: how many members, and how they were drawn
+        out << "Current:            " << ensembleDescription(m.current) << "\n";
     out << "Planner:            " << p.planner;
     const PlannerEntry *entry = findPlanner(p.planner.empty() ? m.planner.name : p.planner);
     if (m.planner.gridSize > 0 && entry && entry->lattice())  // grid and sectors are the lattice's
@@ -321,6 +351,7 @@ void printReport(std::ostream &out, const MissionResult &r)
             << ")\n";
         for (const std::string &note : e.notes)
             out << "Execution note:     " << note << "\n";
+        printExecutionTable(out, e, m);
     }
     printLegs(out, r);
     if (p.solved)

@@ -13,6 +13,7 @@
 #endif
 #include "JsonValues.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/io/FileList.h"
 #include "ompl_glider/io/RemoteSource.h"
 
@@ -102,6 +103,19 @@ json executionJson(const ExecutionResult &e, const MissionProblem &problem)
                              {"to", e.differenceEnd}};
     j["threads"] = e.threads;
     j["wall_time_s"] = e.wallSeconds;
+    if (e.oracle)  // each pair planned on the truth and flown in it: the yardstick of `over_oracle`
+    {
+        std::size_t reached = 0;
+        for (const ExecutionRun &run : e.runs)
+            reached += std::isfinite(run.oracleArrival) ? 1 : 0;
+        j["oracle"] = {{"arrival_time", jnum(own.oracleArrival)},
+                       {"arrival_iso", std::isfinite(own.oracleArrival) ? jtext(problem.isoTime(own.oracleArrival))
+                                                                        : json(nullptr)},
+                       {"runs_reached", reached},
+                       {"wall_time_s", e.oracleSeconds}};
+    }
+    else
+        j["oracle"] = nullptr;  // the truth is the forecast: nothing to measure against
     j["planned"] = own.planned;
     j["reason"] = jtext(own.reason);
     for (std::size_t k = 0; k < e.strategies.size(); ++k)
@@ -136,7 +150,8 @@ json executionJson(const ExecutionResult &e, const MissionProblem &problem)
                       {"grounded", s.grounded},
                       {"final_distance", spreadJson(s.finalDistance)},
                       {"arrival_delay", spreadJson(s.arrivalDelay)},
-                      {"made_good_speed", spreadJson(s.madeGoodSpeed)}};
+                      {"made_good_speed", spreadJson(s.madeGoodSpeed)},
+                      {"over_oracle", e.oracle ? spreadJson(s.overOracle) : json(nullptr)}};
         j[s.strategy] = o;
     }
     return j;
@@ -257,6 +272,35 @@ json forecastSourcesJson(const MissionProblem &problem)
                        {"cache_problem", jtext(f.cacheProblem)},
                        {"cache_ignored", jtext(f.cacheIgnored)}});
     return out;
+}
+
+/// The current's ensemble (null without one): each member's parameters (an analytic flow's, its kind's defaults
+/// filled in: what the member flew) or files, and for members drawn from one source (CurrentSpec::drawn) the seed
+/// and each parameter's relative spread, member 0 being the control run.
+json currentEnsembleJson(const CurrentSpec &c)
+{
+    if (c.members.empty())
+        return nullptr;
+    json members = json::array();
+    for (const CurrentSpec &member : c.members)
+    {
+        const CurrentFieldKind *kind = findCurrentFieldKind(member.type);
+        json o = json::object();
+        if (kind && !kind->gridded())
+            for (const auto &[name, value] : kind->parameters)
+                o[name] = member.parameters.count(name) ? member.parameters.at(name) : value;
+        else
+            o["files"] = member.forecastFiles();
+        members.push_back(o);
+    }
+    json j = {{"type", c.type}, {"count", c.members.size()}, {"drawn", c.drawn.has_value()}};
+    j["seed"] = c.drawn ? json(c.drawn->seed) : json(nullptr);
+    j["spread"] = json::object();
+    if (c.drawn)
+        for (const auto &[name, spread] : c.drawn->spread)
+            j["spread"][name] = spread;
+    j["members"] = members;
+    return j;
 }
 
 /// The forecast's files: what they are (a Zarr store, a GRIB file, an OPeNDAP dataset, NetCDF files; null for an
@@ -488,6 +532,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["mission"] = m.name;
     j["source"] = m.file;
     j["current"] = m.current.type;
+    j["current_ensemble"] = currentEnsembleJson(m.current);
     forecastJson(problem, j);
     j["forecast_notes"] = json::array();
     for (const std::string &note : r.forecastNotes)

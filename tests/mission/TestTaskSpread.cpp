@@ -117,9 +117,21 @@ TEST(TaskSpread, ExecutionBatchEqualsThreaded)
             EXPECT_EQ(a.flown[k].reached, b.flown[k].reached);
             EXPECT_EQ(a.flown[k].headings, b.flown[k].headings);
         }
+        // the oracle travels with its run (both NaN where it did not reach)
+        EXPECT_EQ(std::isnan(a.oracleArrival), std::isnan(b.oracleArrival)) << i;
+        if (!std::isnan(a.oracleArrival))
+        {
+            EXPECT_EQ(a.oracleArrival, b.oracleArrival) << i;
+        }
+        EXPECT_GT(b.oracleSeconds, 0.0) << i;
     }
+    ASSERT_TRUE(two.execution->oracle);
     for (std::size_t k = 0; k < one.execution->spread.size(); ++k)
+    {
         EXPECT_EQ(one.execution->spread[k].finalDistance.median, two.execution->spread[k].finalDistance.median);
+        EXPECT_GT(two.execution->spread[k].overOracle.count, 0u);
+        EXPECT_EQ(one.execution->spread[k].overOracle.median, two.execution->spread[k].overOracle.median);
+    }
 }
 
 TEST(TaskSpread, DepartureSearchAndSpeedSweepEqualThreaded)

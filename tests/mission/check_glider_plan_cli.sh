@@ -254,6 +254,12 @@ expect_error "bad2.yaml:7: field 'planner.name': unknown planner 'dijkstra'" --m
 sed 's/delta_phi_max: 20/delta_phi_max_deg: 20/' "$dir/m/trip.yaml" > "$dir/bad3.yaml"
 expect_error "bad3.yaml:7: field 'planner.parameters.delta_phi_max_deg': planner ZTVE has no parameter" \
     --mission "$dir/bad3.yaml"
+# an ensemble drawn from one flow's parameters: a spread outside [0, 1) and members without the spread
+printf 'current: {type: meandering_jet, parameters: {B0: 1.2}, members: 24,\n  spread: {B0: 1.5}}\n'\
+'region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\nstart: {x: 1, y: -3}\ngoal: {x: 8, y: 3}\n' > "$dir/bad4.yaml"
+expect_error "bad4.yaml:2: field 'current.spread.B0': expected a relative spread in \[0, 1)" --mission "$dir/bad4.yaml"
+sed 's/members: 24,/members: 1001,/' "$dir/bad4.yaml" > "$dir/bad5.yaml"
+expect_error "bad5.yaml:1: field 'current.members': expected an integer in 2..1000" --mission "$dir/bad5.yaml"
 # the plan flown in another ocean from the command line: the built-in jet with another amplitude as the
 # truth, two strategies, a small batch; the second run of the same directory without --truth removes the files
 "$exe" --truth B0=1.38,c=0.138 --surfacing-interval 0.25 --strategies current_sensitive,greedy --radius 0.1 \

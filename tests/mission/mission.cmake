@@ -1,6 +1,9 @@
 # mission tests
 glider_add_test(test_mission_departure ${CMAKE_CURRENT_LIST_DIR}/TestDepartureTime.cpp)
 glider_add_test(test_mission_file ${CMAKE_CURRENT_LIST_DIR}/TestMissionFile.cpp)
+# an analytic flow's ensemble drawn from one set of parameters (members, spread, seed)
+glider_add_test(test_mission_drawn_ensemble ${CMAKE_CURRENT_LIST_DIR}/TestDrawnEnsemble.cpp)
+target_link_libraries(test_mission_drawn_ensemble PRIVATE nlohmann_json::nlohmann_json)
 glider_add_test(test_mission_run ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp ${CMAKE_CURRENT_LIST_DIR}/TestForecastLand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestForecastModelGrids.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestCoastline.cpp)
@@ -8,6 +11,9 @@ target_link_libraries(test_mission_run PRIVATE nlohmann_json::nlohmann_json netC
 # the plan flown in another ocean through the pipeline
 glider_add_test(test_mission_execution ${CMAKE_CURRENT_LIST_DIR}/TestMissionExecution.cpp)
 target_link_libraries(test_mission_execution PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf)
+# the execution's oracle: each pair planned and flown on the truth, the strategies' arrivals over its
+glider_add_test(test_mission_execution_oracle ${CMAKE_CURRENT_LIST_DIR}/TestExecutionOracle.cpp)
+target_link_libraries(test_mission_execution_oracle PRIVATE nlohmann_json::nlohmann_json)
 # the many-plan modes through a TaskSpreader (TaskSpread.h) equal the threaded run bit for bit
 glider_add_test(test_mission_task_spread ${CMAKE_CURRENT_LIST_DIR}/TestTaskSpread.cpp)
 # a fleet: one plan per glider through the pipeline, one folder per glider, all or nothing

@@ -54,6 +54,10 @@ struct ExecutionRun
     /// run); empty for a mission of one leg
     std::vector<ExecutionLeg> legs;
     std::vector<FlownTrack> flown;    ///< one per ExecutionResult::strategies
+    /// The oracle (ExecutionResult::oracle): the pair planned on the truth and flown in it with the truth as its
+    /// forecast (current_sensitive); its arrival (field time), NaN when it had no plan or did not reach
+    double oracleArrival{std::numeric_limits<double>::quiet_NaN()};
+    double oracleSeconds{0.0};  ///< wall time of the oracle's plan and flight (0 without an oracle)
 };
 
 /// @brief Quartiles of one measure over the runs of a strategy.
@@ -81,6 +85,9 @@ struct StrategySpread
     std::size_t runs{0};          ///< runs flown
     std::size_t reached{0};       ///< runs that reached the goal within radius
     std::size_t grounded{0};      ///< runs that ended on land or in a forbidden region
+    /// (arrival - departure) / (oracle's arrival - departure) over the runs this strategy and the oracle reached;
+    /// empty (count 0) without an oracle (the truth is the forecast)
+    MeasureSpread overOracle;
 };
 
 /// @brief Every run of an execution.
@@ -102,6 +109,11 @@ struct ExecutionResult
     /// start and goal, the same stations); empty for a mission of one leg
     std::vector<ExecutionStop> stops;
     std::vector<StrategySpread> spread;  ///< one per strategy, over every run flown
+    /// The oracle was computed: every run's pair also planned on the truth and flown in it with the truth as its
+    /// forecast (ExecutionRun::oracleArrival), the fair yardstick of StrategySpread::overOracle. False when the
+    /// truth is the forecast (nothing to compare against).
+    bool oracle{false};
+    double oracleSeconds{0.0};    ///< wall time of the oracle's plans and flights, summed over the runs
     /// The truth against the forecast over the planning box and the time window of the runs (departure to twice
     /// the latest planned travel time after it, within both fields; 24 times, a 40 x 40 grid of water points): RMS over space and time of
     /// |c_truth - c_forecast|, and the largest RMS over time at one point. 0 when the truth is the forecast.

@@ -148,6 +148,16 @@ struct CurrentSpec
     /// spec's own fields, for names, calendar and messages); empty: a single source. The planning field is the
     /// members' mean; planner.objective judges plans member by member.
     std::vector<CurrentSpec> members;
+    /// @brief How an ensemble of an analytic flow was drawn from one set of parameters
+    /// (`current: {type: ..., parameters: ..., members: N, spread: {...}, seed: S}`): member 0 is the parameters as
+    /// given (the control run), members 1..N-1 draw each spread parameter p as p (1 + s U(-1, 1)).
+    struct EnsembleDraw
+    {
+        std::map<std::string, double> spread;  ///< relative half-width s in [0, 1) by parameter
+        unsigned seed{1};                      ///< std::mt19937's seed
+    };
+    /// Set when `members` were drawn (drawEnsembleMembers()); unset for a listed ensemble or a single source
+    std::optional<EnsembleDraw> drawn;
     /// gridded, set when the mission is read: the field is steady (no time dimension, a single record, or
     /// steadyRecord); a steady file without dated time axis takes the mission's `epoch`.
     bool steady{false};

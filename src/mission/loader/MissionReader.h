@@ -106,8 +106,15 @@ VisitOrder readVisitOrder(const Reader &r, const YAML::Node &n, const std::strin
 void readPolygon(const Reader &r, const YAML::Node &n, const std::string &field, PolygonSpec &poly,
                  const MissionSpec &m);
 void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m);
-/// A current source (the `current` section's keys) under the dotted field @p field, without the file calendar.
-void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &field, CurrentSpec &c);
+/// A current source (the `current` section's keys) under the dotted field @p field, without the file calendar;
+/// @p extraKeys are further keys the node may hold (read by the caller).
+void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &field, CurrentSpec &c,
+                       const std::set<std::string> &extraKeys = {});
+/// True when the `current` node @p n is the short form of a drawn ensemble (members, spread or seed given).
+bool isDrawnEnsemble(const YAML::Node &n);
+/// `current: {type, parameters, members: N, spread: {...}, seed: S}`: the members drawn (drawEnsembleMembers())
+/// into MissionSpec::current as a listed ensemble's, CurrentSpec::drawn set.
+void readDrawnEnsemble(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readRegion(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m);

@@ -154,6 +154,8 @@ void readForecastFiles(const Reader &r, const YAML::Node &n, const std::string &
 
 void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
+    if (isDrawnEnsemble(n))
+        return readDrawnEnsemble(r, n, m);  // members drawn from one source (DrawnEnsemble.cpp)
     if (n.IsMap() && n["ensemble"])
     {
         // members of one kind (analytic flows, or forecasts on one calendar); the first sets names and dates
@@ -187,11 +189,13 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
         readFileCalendar(r, n, m);
 }
 
-void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c)
+void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c,
+                       const std::set<std::string> &extraKeys)
 {
-    r.checkMap(n, f,
-               {"type", "parameters", "file", "variables", "interpolation", "horizon", "velocity_units", "time_units",
-                "steady_record", "zero_velocity_land", "depth_average"});
+    std::set<std::string> keys{"type", "parameters", "file", "variables", "interpolation", "horizon",
+                               "velocity_units", "time_units", "steady_record", "zero_velocity_land", "depth_average"};
+    keys.insert(extraKeys.begin(), extraKeys.end());
+    r.checkMap(n, f, keys);
     c.mark = {r.file(), r.line(n)};
     std::set<std::string> kinds;
     for (const CurrentFieldKind &k : currentFieldKinds())
