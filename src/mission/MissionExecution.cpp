@@ -24,6 +24,7 @@
 #include "../io/NumberText.h"
 #include "ExecutionOracle.h"
 #include "ExecutionPacking.h"
+#include "ExecutionTruth.h"
 #include "PlanningInternal.h"
 
 namespace ompl_glider
@@ -115,6 +116,12 @@ Replanner replanner(const MissionProblem &problem, Point2 goal, double margin)
     };
 }
 
+/// @p problem without its ensemble's members (planned on their mean), or itself for one forecast.
+MissionProblem planningOnMean(const MissionProblem &problem)
+{
+    return problem.getMembers().empty() ? problem : problem.withField(problem.getField());
+}
+
 /// Plans of the replan_observed strategy: as replanner(), on the forecast the DAC measured so far make (the flight's
 /// learning: flightLearning()). Without a measurement, or with innovations that are all zero (a truth equal to the
 /// forecast), that forecast is the forecast to the bit.
@@ -184,6 +191,9 @@ std::vector<TimedPoint> legFrom(const MissionProblem &problem, TimedPoint at, Po
 FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &settings, const ExecutionRun &run,
                       ControlStrategy s)
 {
+    // an ensemble's forecast-only flights and plans are on the members' mean (MissionProblem::withField() leaves the
+    // members out); the learning of the DAC strategies weighs the members themselves
+    const MissionProblem onMean = planningOnMean(problem);
     const MissionSpec &m = problem.getSpec();
     const ExecutionSpec &e = m.execution;
     const double speed = m.vehicle.speed;
@@ -218,7 +228,7 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
         o.measuredBefore = measured;
         o.learn = learning;
         if (s == ControlStrategy::Replan)
-            o.replan = replanner(problem, to, settings.surfacingInterval);
+            o.replan = replanner(onMean, to, settings.surfacingInterval);
         if (s == ControlStrategy::ReplanObserved)
             o.replanObserved = observedReplanner(problem, to, settings.surfacingInterval);
         // planned_headings on a leg of straight legs (or one begun elsewhere) steers as current_sensitive does
@@ -271,6 +281,9 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
 /// Flies one planned run with every strategy.
 void flyRun(const MissionProblem &problem, const ExecutionResult &settings, ExecutionRun &run)
 {
+    // an ensemble's forecast-only flights and plans are on the members' mean (MissionProblem::withField() leaves the
+    // members out); the learning of the DAC strategies weighs the members themselves
+    const MissionProblem onMean = planningOnMean(problem);
     const MissionSpec &m = problem.getSpec();
     const ExecutionSpec &e = m.execution;
     const double speed = m.vehicle.speed;
@@ -289,7 +302,7 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
     {
         o.learn = flightLearning(problem);  // each flight learns from its own DAC
         if (s == ControlStrategy::Replan)
-            o.replan = replanner(problem, run.goal, settings.surfacingInterval);
+            o.replan = replanner(onMean, run.goal, settings.surfacingInterval);
         if (s == ControlStrategy::ReplanObserved)
             o.replanObserved = observedReplanner(problem, run.goal, settings.surfacingInterval);
         run.flown.push_back(flyPlan(run.plan, speed, *problem.getField(), *problem.getTruth(),
@@ -325,65 +338,6 @@ ExecutionResult oracleSettings(const ExecutionResult &r)
     return oracle;
 }
 
-/// A truth that does not cover the flights in time is never extrapolated: refused when it starts after the
-/// departure or ends before the plan arrives, else the flights stop at its end and a note says so.
-void checkTruthTimes(const MissionProblem &problem, const PlannedPath &plan, double window, ExecutionResult &r)
-{
-    const MissionSpec &m = problem.getSpec();
-    if (!m.execution.truth)
-        return;
-    const CurrentField &truth = *problem.getTruth();
-    const auto at = [&](double t) {
-        const std::string iso = problem.isoTime(t);
-        return "t = " + text::number(t) + (iso.empty() ? "" : " (" + iso + ")");
-    };
-    if (truth.timeBegin() > plan.departure)
-        throw Error(m.place("execution.truth") + ": the truth begins at " + at(truth.timeBegin()) +
-                    ", after the departure at " + at(plan.departure) + ": give a truth that covers the flights");
-    const double arrival = plan.solved ? plan.path.back().t : plan.departure;
-    if (truth.timeEnd() < arrival)
-        throw Error(m.place("execution.truth") + ": the truth ends at " + at(truth.timeEnd()) +
-                    ", before the plan arrives at " + at(arrival) + ": give a truth that covers the flights");
-    if (truth.timeEnd() < plan.departure + window)
-        r.notes.push_back("the truth ends at " + at(truth.timeEnd()) + ", before the flights' window ends at " +
-                          at(plan.departure + window) + ": every flight stops there (not extrapolated)");
-}
-
-/// A gridded truth that covers only part of the region: refused when the plan leaves its grid (where, when);
-/// else a note says that a flight leaving the grid stops there (it is not land).
-void checkTruthSpace(const MissionProblem &problem, const PlannedPath &plan, ExecutionResult &r)
-{
-    const MissionSpec &m = problem.getSpec();
-    const FieldGrid *grid = problem.getTruth() ? problem.getTruth()->grid() : nullptr;
-    if (!m.execution.truth || !grid)
-        return;
-    const Region e = grid->extent(), &box = problem.getBox();
-    auto inside = [&](double x, double y) { return x >= e.xMin && x <= e.xMax && y >= e.yMin && y <= e.yMax; };
-    auto place = [&](double x, double y) {
-        if (problem.isGeographic())
-        {
-            const LonLat g = problem.toGeographic({x, y});
-            return "lon " + text::number(g.lon, 6) + ", lat " + text::number(g.lat, 6);
-        }
-        return "(" + text::number(x, 6) + ", " + text::number(y, 6) + ")";
-    };
-    const std::string covers = "the truth's grid covers " + place(e.xMin, e.yMin) + " to " + place(e.xMax, e.yMax);
-    const std::vector<TimedPoint> &p = plan.path;
-    for (std::size_t k = 0; plan.solved && k < p.size(); ++k)
-        for (int s = 0; s <= (k + 1 < p.size() ? 8 : 0); ++s)
-        {
-            const TimedPoint a = p[k], b = k + 1 < p.size() ? p[k + 1] : p[k];
-            const double q = s / 8.0, x = a.x + q * (b.x - a.x), y = a.y + q * (b.y - a.y);
-            if (!inside(x, y))
-                throw Error(m.place("execution.truth") + ": " + covers + "; the plan leaves it at " + place(x, y) +
-                            ", t = " + text::number(a.t + q * (b.t - a.t), 6) +
-                            ": give a truth that covers the flights");
-        }
-    if (!inside(box.xMin, box.yMin) || !inside(box.xMax, box.yMax))
-        r.notes.push_back(covers + ", less than the planning region (" + place(box.xMin, box.yMin) + " to " +
-                          place(box.xMax, box.yMax) + "): a flight that leaves it stops there (not land)");
-}
-
 /// A mission of several legs: its via points as the stations every run flies to (empty for one leg).
 std::vector<ExecutionStop> executionStops(const MissionProblem &problem, double goalRadius)
 {
@@ -407,42 +361,6 @@ std::vector<ExecutionStop> executionStops(const MissionProblem &problem, double 
         stops.push_back(stop);
     }
     return stops;
-}
-
-/// The truth against the forecast over the planning box and the time window of the runs (ExecutionResult's
-/// rmsDifference, maxPointRmsDifference and their window).
-void modelDifference(const MissionProblem &problem, const PlannedPath &plan, ExecutionResult &r)
-{
-    const MissionSpec &m = problem.getSpec();
-    const ExecutionSpec &e = m.execution;
-    const Region &box = problem.getBox();
-    double latest = plan.departure;
-    for (const ExecutionRun &run : r.runs)
-        if (run.planned)
-            latest = std::max(latest, run.plan.back().t);
-    r.differenceBegin = plan.departure;
-    r.differenceEnd = plan.departure + 2.0 * (latest - plan.departure);
-    if (e.truth)
-    {
-        const CurrentField &f = *problem.getField(), &tr = *problem.getTruth();
-        const double tEnd = std::max(r.differenceBegin, std::min({r.differenceEnd, f.timeEnd(), tr.timeEnd()}));
-        r.differenceEnd = tEnd;  // within both fields
-        double sum = 0.0;
-        std::size_t count = 0;
-        for (int j = 0; j < 40; ++j)
-            for (int i = 0; i < 40; ++i)
-            {
-                const double x = box.xMin + (i + 0.5) * (box.xMax - box.xMin) / 40.0;
-                const double y = box.yMin + (j + 0.5) * (box.yMax - box.yMin) / 40.0;
-                const double d = rmsDifference(f, tr, x, y, m.vehicle.depth, r.differenceBegin, tEnd);
-                if (std::isnan(d))
-                    continue;
-                sum += d * d;
-                ++count;
-                r.maxPointRmsDifference = std::max(r.maxPointRmsDifference, d);
-            }
-        r.rmsDifference = count > 0 ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
-    }
 }
 
 /// What each strategy did over the runs flown.
@@ -549,6 +467,9 @@ std::vector<std::pair<Point2, Point2>> executionPairs(const MissionProblem &prob
 ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath &plan,
                                const std::vector<ExecutionLeg> &legs, const ProgressSink &progress)
 {
+    // an ensemble's forecast-only flights and plans are on the members' mean (MissionProblem::withField() leaves the
+    // members out); the learning of the DAC strategies weighs the members themselves
+    const MissionProblem onMean = planningOnMean(problem);
     const auto t0 = std::chrono::steady_clock::now();
     const MissionSpec &m = problem.getSpec();
     const ExecutionSpec &e = m.execution;
@@ -589,8 +510,8 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         // surfacings per flight over its window (the mission's duration, else twice the planned trip)
         const double window = std::isnan(e.duration) ? 2.0 * trip : e.duration;
         planning_detail::checkExecutionWork(m, r.surfacingInterval, window, pairs.size(), r.strategies.size());
-        checkTruthTimes(problem, plan, window, r);
-        checkTruthSpace(problem, plan, r);
+        execution_truth::checkTruthTimes(problem, plan, window, r);
+        execution_truth::checkTruthSpace(problem, plan, r);
     }
     r.runs.resize(pairs.size());
     for (std::size_t i = 0; i < pairs.size(); ++i)
@@ -620,7 +541,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         if (run.index > 0 && !r.stops.empty())
         {
             // a pair of the batch planned as the mission is: through the same stations, in the mission's order
-            const MissionPlan p = planMission(problem.withEndpoints(run.start, run.goal), run.departure);
+            const MissionPlan p = planMission(onMean.withEndpoints(run.start, run.goal), run.departure);
             run.planned = p.plan.solved;
             run.reason = p.plan.reason;
             if (p.plan.solved)
@@ -632,7 +553,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         }
         else if (run.index > 0)
         {
-            const PlannedPath p = planRoute(problem.withEndpoints(run.start, run.goal), run.departure);
+            const PlannedPath p = planRoute(onMean.withEndpoints(run.start, run.goal), run.departure);
             run.planned = p.solved;
             run.reason = p.reason;
             if (p.solved)
@@ -689,7 +610,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     for (const ExecutionRun &run : r.runs)
         r.oracleSeconds += run.oracleSeconds;
     r.spread = strategySpreads(r);
-    modelDifference(problem, plan, r);  // the truth against the forecast over the box and the runs' time window
+    execution_truth::modelDifference(problem, plan, r);  // the truth against the forecast over the box and the runs' time window
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
 }

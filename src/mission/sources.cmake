@@ -31,6 +31,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/Isochrones.cpp
   ${CMAKE_CURRENT_LIST_DIR}/MissionExecution.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ExecutionPacking.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ExecutionTruth.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ExecutionOracle.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Fleet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/PlanStatus.cpp
