@@ -411,6 +411,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
          coastline: Union[None, str, os.PathLike] = None, goto_turn: Optional[float] = None,
          via: Optional[Sequence[Any]] = None, order: Optional[str] = None,
          observations: Union[None, str, os.PathLike] = None,
+         correction_length: Union[None, float, str] = None, correction_time: Union[None, float, str] = None,
+         error_ratio: Optional[float] = None, learn: Optional[bool] = None,
          keep_off: Union[None, float, str] = None, min_depth: Union[None, float, str] = None,
          bathymetry: Union[None, str, os.PathLike] = None, bathymetry_variable: Optional[str] = None,
          snap_to_water: Optional[bool] = None,
@@ -438,7 +440,10 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     pair), ``name``, ``radius``, ``stay`` (the mission's units) and ``arrive`` ((begin, end), times as departure)),
     order ("given" or "free": the fastest order of up to 8 via points), observations (the glider's depth-averaged
     currents: IOOS glider profile files or Slocum dba files, a folder or glob of them, a CSV time,lon,lat,u,v, or an
-    ERDDAP tabledap URL (.csvp, .csv, .ncCF): the forecast is corrected by them and, without start, the plan starts at the last fix, at its time without departure); isochrones /
+    ERDDAP tabledap URL (.csvp, .csv, .ncCF): the forecast is corrected by them and, without start, the plan starts at the last fix, at its time without departure); correction_length ("20 km"), correction_time
+    ("1 d"), error_ratio and learn (False: the values and defaults as they are) set the correction by the DAC
+    (observations.length_scale, time_scale, error_ratio, learn; a scale not given is learned from the DAC, and an
+    ensemble's members are weighed by them: :meth:`Result.correction`); isochrones /
     isochrone_interval (a number in the mission's time unit, or a duration such as "6 h") add the reachable-set
     contours (:attr:`Result.isochrones`); speeds a speed sweep; optimum the optimal-control reference.
     Safety: keep_off (the distance kept from land: a number in the mission's length unit, or "2 km"), min_depth (the
@@ -462,6 +467,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                     coastline=_path_keyword("coastline", coastline), goto_turn=goto_turn,
                     via=_list_keyword("via", via, "a list of via points"), order=order,
                     observations=_path_keyword("observations", observations),
+                    correction_length=correction_length, correction_time=correction_time, error_ratio=error_ratio,
+                    learn=learn,
                     keep_off=keep_off, min_depth=min_depth,
                     bathymetry=os.fspath(bathymetry) if isinstance(bathymetry, os.PathLike) else bathymetry,
                     bathymetry_variable=bathymetry_variable, snap_to_water=snap_to_water,

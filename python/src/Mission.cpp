@@ -305,6 +305,10 @@ std::shared_ptr<const SettingWords> keywordWords()
         {"current.variables.mask", "variables={'mask': ...}"},
         {"forbidden.coastline", "coastline="},
         {"safety.keep_off", "keep_off="},
+        {"observations.length_scale", "correction_length="},
+        {"observations.time_scale", "correction_time="},
+        {"observations.error_ratio", "error_ratio="},
+        {"observations.learn", "learn="},
         {"safety.min_depth", "min_depth="},
         {"safety.bathymetry", "bathymetry="},
         {"safety.bathymetry_variable", "bathymetry_variable="},
@@ -354,7 +358,9 @@ void applySafetyAndExecutionKeywords(const Get &get, const Text &text, MissionOv
          {std::make_tuple("isochrone_interval", &o.isochroneInterval, "a number or a duration ('6 h')"),
           std::make_tuple("surfacing_interval", &o.surfacingInterval, "a number or a duration ('1 h')"),
           std::make_tuple("keep_off", &o.keepOff, "a number or a length ('2 km')"),
-          std::make_tuple("min_depth", &o.minDepth, "a number of metres or a length ('50 m')")})
+          std::make_tuple("min_depth", &o.minDepth, "a number of metres or a length ('50 m')"),
+          std::make_tuple("correction_length", &o.correctionLength, "a number or a length ('20 km')"),
+          std::make_tuple("correction_time", &o.correctionTime, "a number or a duration ('1 d')")})
         if (get(name))
             *target = quantity(name, expected);
     for (const auto &[name, target] : {std::make_pair("bathymetry", &o.bathymetry),
@@ -363,6 +369,10 @@ void applySafetyAndExecutionKeywords(const Get &get, const Text &text, MissionOv
             *target = Given<std::string>{value<std::string>(*v, name, "a text"), text(name)};
     if (auto v = get("snap_to_water"))
         o.snapToWater = Given<bool>{value<bool>(*v, "snap_to_water", "True or False"), text("snap_to_water")};
+    if (auto v = get("error_ratio"))
+        o.errorRatio = Given<double>{value<double>(*v, "error_ratio", "a number > 0"), text("error_ratio")};
+    if (auto v = get("learn"))
+        o.learn = Given<bool>{value<bool>(*v, "learn", "True or False"), text("learn")};
     if (auto v = get("truth"))
     {
         std::string truth;
@@ -405,7 +415,8 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
                                   "global_check", "arrive_between", "coastline", "goto_turn", "via", "order",
                                   "observations", "keep_off", "min_depth", "bathymetry", "bathymetry_variable",
                                   "snap_to_water", "truth", "surfacing_interval", "strategies", "radius",
-                                  "execution_pairs", "execution_seed"};
+                                  "execution_pairs", "execution_seed", "correction_length", "correction_time",
+                                  "error_ratio", "learn"};
     for (const auto &item : kw)
     {
         const std::string name = item.first.cast<std::string>();

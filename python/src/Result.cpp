@@ -24,6 +24,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/StopRequest.h"
 #include "ompl_glider/mission/Fleet.h"
+#include "ompl_glider/mission/Observations.h"
 #include "ompl_glider/output/ExecutionFiles.h"
 #include "ompl_glider/output/FleetFiles.h"
 #include "ompl_glider/output/OutputWriter.h"
@@ -130,6 +131,46 @@ py::object isochrones(const PyResult &r)
     }
     return std::move(out);
 }
+
+/// What the glider's DAC did to the forecast (Result.correction()): the scales as used and where each came from, the
+/// likelihood gained, the innovations' bias and tides, an ensemble's member weights; None without observations.
+py::object correction(const PyResult &r)
+{
+#if OMPL_GLIDER_WITH_NETCDF
+    const auto &o = r.problem->observations();
+    if (!o)
+        return py::none();
+    const CorrectionSummary &c = o->correction;
+    py::dict d;
+    d["used"] = c.used;
+    d["length_scale"] = c.params.lengthScale;
+    d["time_scale"] = c.params.timeScale;
+    d["error_ratio"] = c.params.errorRatio;
+    d["length_scale_source"] = c.lengthSource;
+    d["time_scale_source"] = c.timeSource;
+    d["error_ratio_source"] = c.ratioSource;
+    d["dac_estimated_from"] = c.learnedFrom;
+    d["log_likelihood_gain"] = c.likelihoodGain;
+    d["bias"] = c.mean.active() ? py::object(py::make_tuple(c.mean.bias.u, c.mean.bias.v)) : py::object(py::none());
+    py::list tides;
+    for (const InnovationMean::Constituent &k : c.mean.tides)
+        tides.append(py::dict(py::arg("name") = k.name, py::arg("u_amplitude") = k.amplitude(true),
+                              py::arg("u_phase") = k.phase(true), py::arg("v_amplitude") = k.amplitude(false),
+                              py::arg("v_phase") = k.phase(false), py::arg("omega") = k.omega));
+    d["tides"] = tides;
+    std::vector<double> w, rms, a;
+    for (const MemberScore &m : o->members)
+        w.push_back(m.weight), rms.push_back(m.rmsInnovation), a.push_back(m.coefficient);
+    d["member_weights"] = array(w);
+    d["member_rms_innovation"] = array(rms);
+    d["member_coefficients"] = array(a);
+    return std::move(d);
+#else
+    (void)r;
+    return py::none();
+#endif
+}
+
 
 py::object arrivalField(const PyResult &r)
 {
@@ -380,6 +421,7 @@ void bindResult(py::module_ &m)
         .def("arrival_field", &arrivalField)
         .def("current_grid", &currentGrid, py::arg("n") = 25, py::arg("t") = kNaN)
         .def("summary_json", [](const R &r) { return summaryJson(r.result, *r.problem, {}); })
+        .def("correction", &correction)
 #if OMPL_GLIDER_WITH_MAP
         .def("map_html", [](const R &r) { return mapHtml(r.result, *r.problem); })
 #endif

@@ -165,15 +165,22 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
         free.push_back({&p.timeScale, p.timeScale / 10.0, p.timeScale * 50.0, &summary.timeSource});
     if (!p.ratioGiven)
         free.push_back({&p.errorRatio, std::min(0.02, p.errorRatio), std::max(5.0, p.errorRatio), &summary.ratioSource});
-    const auto at = [&](const std::vector<double> &x) {
-        for (std::size_t k = 0; k < free.size(); ++k)
-            *free[k].value = std::exp(x[k]);
-        return like(p.lengthScale, p.timeScale, p.errorRatio);
-    };
-    std::vector<double> x(free.size());
+    std::vector<double> x(free.size()), x0(free.size());
     for (std::size_t k = 0; k < free.size(); ++k)
-        x[k] = std::log(*free[k].value);
-    const double prior = at(x);
+        x[k] = x0[k] = std::log(*free[k].value);
+    // the maximum a posteriori: the likelihood times a log-normal prior about each default (a factor of 3 one standard
+    // deviation), so that a few DAC move the scales a little and many DAC as far as they say ([RasmussenGP] Sec. 5.2)
+    const double spread = std::log(3.0);
+    const auto at = [&](const std::vector<double> &v) {
+        double penalty = 0.0;
+        for (std::size_t k = 0; k < free.size(); ++k)
+        {
+            *free[k].value = std::exp(v[k]);
+            penalty += 0.5 * std::pow((v[k] - x0[k]) / spread, 2);
+        }
+        return like(p.lengthScale, p.timeScale, p.errorRatio) - penalty;
+    };
+    const double prior = at(x), priorLikelihood = like(p.lengthScale, p.timeScale, p.errorRatio);
     double best = prior;
     if (!free.empty())
     {
@@ -221,7 +228,10 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
         }
         catch (const std::exception &)
         {
-            found = -std::numeric_limits<double>::infinity();  // a failed search: the grid's best point stands
+            // stopped by round-off or a failure: the best point it reached, if any, else the grid's
+            found = at(y);
+            if (!std::isfinite(found))
+                found = -std::numeric_limits<double>::infinity();
         }
         x = found > best ? y : bestX;
         best = std::max(found, best);
@@ -237,10 +247,11 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
     for (std::size_t k = 0; k < free.size(); ++k)
         *free[k].value = std::exp(x[k]);
     Eigen::MatrixXd beta;
-    if (!std::isfinite(like(p.lengthScale, p.timeScale, p.errorRatio, &beta)))
+    const double final = like(p.lengthScale, p.timeScale, p.errorRatio, &beta);
+    if (!std::isfinite(final))
         return;  // nothing factors: no mean
     summary.learnedFrom = m;
-    summary.likelihoodGain = std::isfinite(prior) ? std::max(0.0, best - prior) : 0.0;
+    summary.likelihoodGain = std::isfinite(priorLikelihood) ? final - priorLikelihood : 0.0;
     mean.bias = {beta(0, 0), beta(0, 1)};
     for (std::size_t k = 0; k < tides.size(); ++k)
     {

@@ -25,6 +25,9 @@ namespace ompl_glider
 {
 namespace
 {
+double lengthOf(const Given<std::string> &v, double metresPerUnit, bool unitKnown);
+void applyCorrectionSettings(const MissionOverrides &o, MissionSpec &m);
+
 /// @p v, refused naming @p source unless it is finite (and > 0 when @p positive).
 double finite(const Given<double> &v, bool positive)
 {
@@ -239,6 +242,7 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
         m.observations = spec;
         mark(m, "observations", o.observations->source, o.origin);
     }
+    applyCorrectionSettings(o, m);
     if (m.order == VisitOrder::Free && m.waypoints.size() > kMaxFreeOrderViaPoints)
         throw Error((o.order ? o.order->source : o.via ? o.via->source : m.place("order")) + ": free order over " +
                     std::to_string(m.waypoints.size()) + " via points: at most " +
@@ -278,6 +282,50 @@ void applyOutputs(const MissionOverrides &o, MissionSpec &m)
     if (((o.isochrones && o.isochrones->value) || o.isochroneInterval) && !m.outputs.wants(OutputFormatId::Isochrones))
         m.outputs.files.push_back(OutputFormatId::Isochrones);
 }
+/// The correction's settings given by a front end (MissionOverrides::correctionLength, ...), each refused naming its
+/// source; they need the observations section (made empty, the correction's settings alone, when there is none).
+void applyCorrectionSettings(const MissionOverrides &o, MissionSpec &m)
+{
+    if (!o.correctionLength && !o.correctionTime && !o.errorRatio && !o.learn)
+        return;
+    ObservationsSpec spec = m.observations.value_or(ObservationsSpec{});
+    if (o.correctionLength)
+    {
+        spec.lengthScale = lengthOf(*o.correctionLength, m.metresPerUnit(), m.physicalUnits().length);
+        if (!(spec.lengthScale > 0.0) || !std::isfinite(spec.lengthScale))
+            throw Error(o.correctionLength->source + ": must be > 0, got '" + o.correctionLength->value + "'");
+        mark(m, "observations.length_scale", o.correctionLength->source, o.origin);
+    }
+    if (o.correctionTime)
+    {
+        try
+        {
+            spec.timeScale = parseDuration(o.correctionTime->value, m.timeUnitSeconds, m.hasTimeUnit());
+        }
+        catch (const Error &e)
+        {
+            throw Error(o.correctionTime->source + ": " + e.what());
+        }
+        if (!(spec.timeScale > 0.0) || !std::isfinite(spec.timeScale))
+            throw Error(o.correctionTime->source + ": must be > 0, got '" + o.correctionTime->value + "'");
+        mark(m, "observations.time_scale", o.correctionTime->source, o.origin);
+    }
+    if (o.errorRatio)
+    {
+        if (!(o.errorRatio->value > 0.0) || !std::isfinite(o.errorRatio->value))
+            throw Error(o.errorRatio->source + ": expected a number > 0 (the DAC's error over the forecast's), got " +
+                        text::number(o.errorRatio->value));
+        spec.errorRatio = o.errorRatio->value;
+        mark(m, "observations.error_ratio", o.errorRatio->source, o.origin);
+    }
+    if (o.learn)
+    {
+        spec.learn = o.learn->value;
+        mark(m, "observations.learn", o.learn->source, o.origin);
+    }
+    m.observations = spec;
+}
+
 /// A length of @p v (a number in units of @p metresPerUnit, or with a unit; parseLength() refuses a negative one),
 /// refused naming its source.
 double lengthOf(const Given<std::string> &v, double metresPerUnit, bool unitKnown)

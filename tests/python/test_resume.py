@@ -34,8 +34,10 @@ def test_resumed_survey_same_from_cli_and_python(tmp_path):
 
 
 def test_a_start_given_as_a_keyword_is_kept():
-    # (the departure too: the file's is the deployment's, before the DAC)
-    r = ompl_glider.plan(SURVEY, observations=DEPLOYMENT, start=(-52.6, 47.92), departure="2026-03-16T06:00:00Z")
+    # (the departure too: the file's is the deployment's, before the DAC; learn=False: the bias of -0.17 m/s the eight
+    # DAC show, carried ahead, leaves no arrival in C's window from this start, a right answer but not this test's)
+    r = ompl_glider.plan(SURVEY, observations=DEPLOYMENT, start=(-52.6, 47.92), departure="2026-03-16T06:00:00Z",
+                         learn=False)
     assert r.solved
     assert r.summary["observations"]["resumed"] is None
     assert r.route.lon[0] == pytest.approx(-52.6, abs=1e-9)

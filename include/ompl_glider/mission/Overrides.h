@@ -60,6 +60,12 @@ struct MissionOverrides
     /// the glider's observations (IOOS profile files or a CSV: MissionSpec::observations; the mission's correction
     /// parameters kept, else the defaults)
     std::optional<Given<std::string>> observations;
+    /// the correction's settings (ObservationsSpec): length and time scales as text (a number in the mission's units,
+    /// or with a unit: "20 km", "1 d"), the error ratio (> 0), whether to learn from the DAC
+    std::optional<Given<std::string>> correctionLength;
+    std::optional<Given<std::string>> correctionTime;  ///< see correctionLength
+    std::optional<Given<double>> errorRatio;           ///< see correctionLength
+    std::optional<Given<bool>> learn;                  ///< see correctionLength
 
     // safety (safety.*): lengths as text, a number in the mission's length unit or with a unit ("2 km", "500 m")
     std::optional<Given<std::string>> keepOff;             ///< the keep-off distance from land, >= 0
