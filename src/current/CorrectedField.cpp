@@ -151,9 +151,12 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
     std::vector<double> count, su, sv;
     for (std::size_t i = 0; i < n; ++i)
     {
-        const auto key = std::make_tuple(static_cast<long long>(std::floor(used_[i].at.x / cellL)),
-                                         static_cast<long long>(std::floor(used_[i].at.y / cellL)),
-                                         static_cast<long long>(std::floor(used_[i].t / cellT)));
+        // (the cell's index kept within what a long long holds, whatever the scale's size)
+        const auto cell = [](double v, double size) {
+            return static_cast<long long>(std::clamp(std::floor(v / size), -1e18, 1e18));
+        };
+        const auto key =
+            std::make_tuple(cell(used_[i].at.x, cellL), cell(used_[i].at.y, cellL), cell(used_[i].t, cellT));
         const auto [it, added] = cells.emplace(key, nodes_.size());
         if (added)
         {
