@@ -143,10 +143,10 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
             dv[i] -= m.v;
         }
     }
-    // superobservations: DAC within a quarter of the scales of each other in space and time (correlated above 0.9)
+    // superobservations: DAC within an eighth of the scales of each other in space and time (correlated above 0.98)
     // are averaged into one whose error variance is divided by their number; many nearly equal rows would leave the
     // system ill-conditioned and cost each evaluation of the field a term per DAC
-    const double cellL = params_.lengthScale / 4.0, cellT = params_.timeScale / 4.0;
+    const double cellL = params_.lengthScale / 8.0, cellT = params_.timeScale / 8.0;
     std::map<std::tuple<long long, long long, long long>, std::size_t> cells;
     std::vector<double> count, su, sv;
     for (std::size_t i = 0; i < n; ++i)

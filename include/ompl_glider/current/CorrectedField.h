@@ -156,7 +156,7 @@ private:
 
     std::shared_ptr<const CurrentField> base_;
     CorrectionParams params_;
-    /// A superobservation: the DAC of one cell of a quarter of the scales, averaged (their mean time and place).
+    /// A superobservation: the DAC of one cell of an eighth of the scales, averaged (their mean time and place).
     struct Node
     {
         double t;
