@@ -11,6 +11,32 @@
 
 namespace ompl_glider::execution_detail
 {
+void planPair(const MissionProblem &problem, ExecutionRun &run, bool stations)
+{
+    const MissionProblem pair = problem.withEndpoints(run.start, run.goal);
+    if (stations)
+    {
+        const MissionPlan p = planMission(pair, run.departure);
+        run.planned = p.plan.solved;
+        run.reason = p.plan.reason;
+        if (p.plan.solved)
+        {
+            run.plan = p.plan.path;
+            for (const PlannedLeg &l : p.legs)
+                run.legs.push_back({l.lastPoint, l.plan.headings});
+        }
+        return;
+    }
+    const PlannedPath p = planRoute(pair, run.departure);
+    run.planned = p.solved;
+    run.reason = p.reason;
+    if (p.solved)
+    {
+        run.plan = p.path;
+        run.headings = p.headings;
+    }
+}
+
 ExecutionRun oraclePlan(const MissionProblem &onTruth, const ExecutionRun &run, bool stations)
 {
     ExecutionRun o;
@@ -21,28 +47,7 @@ ExecutionRun oraclePlan(const MissionProblem &onTruth, const ExecutionRun &run, 
     o.radius = run.radius;
     try
     {
-        const MissionProblem pair = onTruth.withEndpoints(run.start, run.goal);
-        if (stations)
-        {
-            const MissionPlan p = planMission(pair, run.departure);
-            o.planned = p.plan.solved;
-            o.reason = p.plan.reason;
-            if (p.plan.solved)
-            {
-                o.plan = p.plan.path;
-                for (const PlannedLeg &l : p.legs)
-                    o.legs.push_back({l.lastPoint, l.plan.headings});
-            }
-            return o;
-        }
-        const PlannedPath p = planRoute(pair, run.departure);
-        o.planned = p.solved;
-        o.reason = p.reason;
-        if (p.solved)
-        {
-            o.plan = p.path;
-            o.headings = p.headings;
-        }
+        planPair(onTruth, o, stations);
     }
     catch (const Error &e)
     {

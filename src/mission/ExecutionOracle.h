@@ -12,6 +12,12 @@ class MissionProblem;
 
 namespace execution_detail
 {
+/// @p run's pair (its start, goal and departure) planned on @p problem: as a mission through the stations when
+/// @p stations (planMission()), else one leg (planRoute()); sets its `planned`, `reason`, `plan` and `legs` or
+/// `headings`. The one way an execution plans a pair (the batch's on the forecast, the oracle's on the truth).
+/// @throws Error as planning does.
+void planPair(const MissionProblem &problem, ExecutionRun &run, bool stations);
+
 /// @p run's pair (its start, goal, departure and radius) planned on @p onTruth (the mission's problem with the truth
 /// as its field): as a mission through the stations when @p stations (planMission()), else one leg (planRoute()),
 /// with the mission's planner and settings, as the batch's pairs are planned. Not flown; `planned` false and a

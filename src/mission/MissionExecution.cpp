@@ -538,30 +538,8 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     const ExecutionResult oracle = oracleSettings(r);
 
     const auto planAndFly = [&](ExecutionRun &run) {
-        if (run.index > 0 && !r.stops.empty())
-        {
-            // a pair of the batch planned as the mission is: through the same stations, in the mission's order
-            const MissionPlan p = planMission(onMean.withEndpoints(run.start, run.goal), run.departure);
-            run.planned = p.plan.solved;
-            run.reason = p.plan.reason;
-            if (p.plan.solved)
-            {
-                run.plan = p.plan.path;
-                for (const PlannedLeg &l : p.legs)
-                    run.legs.push_back({l.lastPoint, l.plan.headings});
-            }
-        }
-        else if (run.index > 0)
-        {
-            const PlannedPath p = planRoute(onMean.withEndpoints(run.start, run.goal), run.departure);
-            run.planned = p.solved;
-            run.reason = p.reason;
-            if (p.solved)
-            {
-                run.plan = p.path;
-                run.headings = p.headings;
-            }
-        }
+        if (run.index > 0)  // a pair of the batch, planned as the mission is (through its stations, in its order)
+            execution_detail::planPair(onMean, run, !r.stops.empty());
         if (run.planned)
             flyRun(problem, r, run);
         if (r.oracle)
