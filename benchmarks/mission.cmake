@@ -6,3 +6,5 @@ glider_add_benchmark(bench_trust ${CMAKE_CURRENT_LIST_DIR}/mission/bench_trust.c
 target_include_directories(bench_trust PRIVATE ${PROJECT_SOURCE_DIR}/tests/mission)
 # missions of several legs: legs on one clock against guessed departures; the free order against n!
 glider_add_benchmark(bench_legs ${CMAKE_CURRENT_LIST_DIR}/mission/bench_legs.cpp)
+# many DAC correcting the forecast: the correction's and the plan's time against the uncorrected plan's
+glider_add_benchmark(bench_many_dac ${CMAKE_CURRENT_LIST_DIR}/mission/bench_many_dac.cpp)

@@ -123,9 +123,9 @@ MissionOverrides overridesOf(const Flags &f)
     if (f.speed)
         o.speed = Given<double>{*f.speed, "--speed"};
     if (!f.departure.empty())
-        o.departure = Given<std::string>{f.departure, "--departure"};
-    if (!f.start.empty())
-        o.start = Given<Point2>{pair("--start", f.start), "--start"};  // lon,lat where the mission gives lon/lat
+        o.departure = Given<std::string>{f.departure, f.departureFrom.empty() ? "--departure" : f.departureFrom};
+    if (!f.start.empty())  // lon,lat where the mission gives lon/lat
+        o.start = Given<Point2>{pair("--start", f.start), f.startFrom.empty() ? "--start" : f.startFrom};
     if (!f.goal.empty())
         o.goal = Given<Point2>{pair("--goal", f.goal), "--goal"};
     if (!f.region.empty())
@@ -250,8 +250,12 @@ MissionSpec forecastMissionOf(Flags f)
             char start[64];
             std::snprintf(start, sizeof start, "%.17g,%.17g", o.lastFix->at.lon, o.lastFix->at.lat);
             f.start = start;
+            f.startFrom = "the last fix of --observations";
             if (f.departure.empty())
+            {
                 f.departure = ompl_glider::formatIsoTime(o.lastFix->time);
+                f.departureFrom = "the last fix's time (--observations)";
+            }
         }
         catch (const ompl_glider::Error &e)
         {
@@ -269,6 +273,15 @@ MissionSpec forecastMissionOf(Flags f)
         f.forecast.depth = *f.depth;
     f.forecast.snapToWater = f.snapToWater;
     f.forecast.words = flagWords();
+    if (fromFix)
+    {
+        // an error about the start or the departure names the observations that gave them, not an absent flag
+        auto words = std::make_shared<ompl_glider::SettingWords>(*flagWords());
+        words->given["start"] = f.startFrom;
+        if (departureFromFix)
+            words->given["departure.time"] = f.departureFrom;
+        f.forecast.words = words;
+    }
     MissionSpec m = forecastMission(f.forecast);
     applyFlags(f, m, true);
     // the last fix as a first guess, until the mission resumes there (resumeAtLastFix())

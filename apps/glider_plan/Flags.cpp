@@ -14,7 +14,7 @@
 
 #include "FlagText.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/UnitConversion.h"
+#include "ompl_glider/io/UnitConversion.h"
 #include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 

@@ -192,7 +192,13 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
         sorted[k] = nodes_[j];
         nu[static_cast<Eigen::Index>(k)] = su[j] / count[j];
         nv[static_cast<Eigen::Index>(k)] = sv[j] / count[j];
-        noise[static_cast<Eigen::Index>(k)] = params_.errorRatio * params_.errorRatio / count[j];
+        // a nugget of 1e-6 of the forecast error's variance keeps the system solvable for a tiny error ratio (below
+        // 1e-3) and superobservations that nearly coincide
+        noise[static_cast<Eigen::Index>(k)] = std::max(params_.errorRatio * params_.errorRatio / count[j], 1e-6);
+        uLow_ = std::min(uLow_, nu[static_cast<Eigen::Index>(k)]);
+        uHigh_ = std::max(uHigh_, nu[static_cast<Eigen::Index>(k)]);
+        vLow_ = std::min(vLow_, nv[static_cast<Eigen::Index>(k)]);
+        vHigh_ = std::max(vHigh_, nv[static_cast<Eigen::Index>(k)]);
     }
     nodes_ = std::move(sorted);
     const double L2 = params_.lengthScale * params_.lengthScale, T2 = params_.timeScale * params_.timeScale;
@@ -256,6 +262,8 @@ void CorrectedField::addCorrection(double x, double y, double t, Velocity &c, Ja
     const double window = kCutoff * params_.timeScale, reach2 = kCutoff * kCutoff * L2;
     auto first = std::lower_bound(nodes_.begin(), nodes_.end(), t - window,
                                   [](const Node &o, double v) { return o.t < v; });
+    Velocity g;   // the interpolated part
+    Jacobian dg;  // and its derivatives
     for (auto it = first; it != nodes_.end() && it->t <= t + window; ++it)
     {
         const double dx = x - it->at.x, dy = y - it->at.y, r2 = dx * dx + dy * dy;
@@ -264,16 +272,25 @@ void CorrectedField::addCorrection(double x, double y, double t, Velocity &c, Ja
         const double dt = t - it->t;
         const double w = std::exp(-r2 / (2.0 * L2) - dt * dt / (2.0 * T2));
         const std::size_t i = static_cast<std::size_t>(it - nodes_.begin());
-        c.u += w * alphaU_[i];
-        c.v += w * alphaV_[i];
-        if (j)
-        {
-            // d w / dx = -w dx / L^2
-            j->ux -= w * alphaU_[i] * dx / L2;
-            j->uy -= w * alphaU_[i] * dy / L2;
-            j->vx -= w * alphaV_[i] * dx / L2;
-            j->vy -= w * alphaV_[i] * dy / L2;
-        }
+        g.u += w * alphaU_[i];
+        g.v += w * alphaV_[i];
+        // d w / dx = -w dx / L^2
+        dg.ux -= w * alphaU_[i] * dx / L2;
+        dg.uy -= w * alphaU_[i] * dy / L2;
+        dg.vx -= w * alphaV_[i] * dx / L2;
+        dg.vy -= w * alphaV_[i] * dy / L2;
+    }
+    // never beyond what the data support: where the sum leaves the innovations' range it is held at its edge (and
+    // does not vary there)
+    const bool uHeld = g.u < uLow_ || g.u > uHigh_, vHeld = g.v < vLow_ || g.v > vHigh_;
+    c.u += std::clamp(g.u, uLow_, uHigh_);
+    c.v += std::clamp(g.v, vLow_, vHigh_);
+    if (j)
+    {
+        j->ux += uHeld ? 0.0 : dg.ux;
+        j->uy += uHeld ? 0.0 : dg.uy;
+        j->vx += vHeld ? 0.0 : dg.vx;
+        j->vy += vHeld ? 0.0 : dg.vy;
     }
 }
 
@@ -303,8 +320,9 @@ void CorrectedField::reach(const Region &region, double &su, double &sv, double 
 {
     // every weight is at most 1: the correction is no faster than the sums of the |alpha_i| of the observations that
     // reach the region (within the cut-off in time and space)
-    summary_.mean.bound(su, sv);
-    s = std::hypot(su, sv);
+    double meanU = 0.0, meanV = 0.0;
+    summary_.mean.bound(meanU, meanV);
+    su = sv = s = 0.0;
     const double window = kCutoff * params_.timeScale, far = kCutoff * params_.lengthScale;
     for (std::size_t i = 0; i < nodes_.size(); ++i)
     {
@@ -319,6 +337,11 @@ void CorrectedField::reach(const Region &region, double &su, double &sv, double 
         sv += std::abs(alphaV_[i]);
         s += std::hypot(alphaU_[i], alphaV_[i]);
     }
+    // the interpolated part is held within the data's range (addCorrection())
+    const double heldU = std::max(-uLow_, uHigh_), heldV = std::max(-vLow_, vHigh_);
+    su = std::min(su, heldU) + meanU;
+    sv = std::min(sv, heldV) + meanV;
+    s = std::min(s, std::hypot(heldU, heldV)) + std::hypot(meanU, meanV);
 }
 
 double CorrectedField::maxSpeed(const Region &region) const

@@ -15,7 +15,6 @@ if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
     # the NetCDF reader: loadNetCdfCurrents() composing the stages in netcdf/ (see netcdf/NetCdfInternal.h)
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfCurrents.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/UnitConversion.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/AxisChecks.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/VariableDetection.cpp
     ${CMAKE_CURRENT_LIST_DIR}/netcdf/GridLayout.cpp

@@ -272,15 +272,16 @@ std::map<std::string, std::size_t> columnsOf(const std::vector<std::string> &nam
     return col;
 }
 
-void checkVelocityUnits(const std::string &name, const std::string &units, const std::string &who)
+/// The unit of u and v (one for both); @throws Error naming the URL for a unit that is no velocity, or two units.
+VelocityUnits velocityOf(const std::string &unitsU, const std::string &unitsV, const std::string &who)
 {
-    if (!isMetresPerSecond(units))
-        throw Error(who + ": '" + name + "' is in '" + units +
-                    "': m/s expected (m s-1, as the IOOS Glider DAC "
-                    "publishes it)");
+    VelocityUnits velocity = velocityUnits("u", unitsU, who);
+    if (velocityUnits("v", unitsV, who).toMetres.factor != velocity.toMetres.factor)
+        throw Error(who + ": 'u' is in '" + unitsU + "' and 'v' in '" + unitsV + "': one unit for both expected");
+    return velocity;
 }
 
-std::vector<Row> csvRows(const std::string &body, Answer kind, const std::string &who)
+std::vector<Row> csvRows(const std::string &body, Answer kind, const std::string &who, VelocityUnits &velocity)
 {
     std::vector<std::string> lines;
     for (std::size_t at = 0; at < body.size();)
@@ -306,8 +307,7 @@ std::vector<Row> csvRows(const std::string &body, Answer kind, const std::string
             units[i] = u[i];
         first = 2;
     }
-    for (const char *k : {"u", "v"})
-        checkVelocityUnits(k, units[col.at(k)], who);
+    velocity = velocityOf(units[col.at("u")], units[col.at("v")], who);
     std::vector<Row> rows;
     for (std::size_t n = first; n < lines.size(); ++n)
     {
@@ -329,8 +329,8 @@ std::vector<Row> csvRows(const std::string &body, Answer kind, const std::string
         r.lon = number("longitude");
         r.latUv = number("lat_uv");
         r.lonUv = number("lon_uv");
-        r.u = number("u");
-        r.v = number("v");
+        r.u = velocity(number("u"));
+        r.v = velocity(number("v"));
         if (const auto p = col.find("profile_id"); p != col.end())
             r.profile = cells[p->second];
         for (const char *k : kFlags)
@@ -348,7 +348,7 @@ struct MemoryName
     ~MemoryName() { releaseMemoryDataset(name); }
 };
 
-std::vector<Row> ncCfRows(const std::string &body, const std::string &who)
+std::vector<Row> ncCfRows(const std::string &body, const std::string &who, VelocityUnits &velocity)
 {
     const bool netcdf = body.rfind("CDF\x01", 0) == 0 || body.rfind("CDF\x02", 0) == 0 ||
                         body.rfind("CDF\x05", 0) == 0 || body.rfind("\x89HDF\r\n\x1a\n", 0) == 0;
@@ -369,6 +369,7 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who)
     const MemoryName memory{registerMemoryDataset(body)};
     std::map<std::string, std::vector<double>> values;
     std::vector<std::string> names, profiles;
+    std::string unitsU, unitsV;
     try
     {
         const netcdf_detail::NcFile nc(memory.name);
@@ -403,7 +404,7 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who)
                 for (const double x : v)
                     profiles.push_back(std::isfinite(x) ? text::number(x, 17) : "");
             else if (name == "u" || name == "v")
-                checkVelocityUnits(name, units, who);
+                (name == "u" ? unitsU : unitsV) = units;
             else if (name == "time" || name == "time_uv")
                 for (double &x : v)
                     x = secondsOf(x, units);
@@ -416,6 +417,7 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who)
         throw Error(who + ": the .ncCF answer: " + e.what());
     }
     columnsOf(names, who, "variable");
+    velocity = velocityOf(unitsU, unitsV, who);
     const std::size_t n = values.at("time").size();
     for (const auto &[name, v] : values)
         if (v.size() != n)
@@ -436,8 +438,8 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who)
         r.lon = values["longitude"][i];
         r.latUv = values["lat_uv"][i];
         r.lonUv = values["lon_uv"][i];
-        r.u = values["u"][i];
-        r.v = values["v"][i];
+        r.u = velocity(values["u"][i]);
+        r.v = velocity(values["v"][i]);
         r.profile = profiles.empty() ? "" : profiles[i];
         for (const char *k : kFlags)
             if (values.count(k))
@@ -447,7 +449,8 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who)
 }
 
 /// The rows into @p o: every row's fix; each profile's DAC once (its first row), rejected with the reason.
-void useRows(const std::vector<Row> &rows, const std::string &source, GliderObservations &o)
+void useRows(const std::vector<Row> &rows, const VelocityUnits &velocity, const std::string &source,
+             GliderObservations &o)
 {
     std::set<std::string> seen;                                        // the profiles whose DAC is taken (or rejected)
     const auto value = [](double x) { return x == -999.0 ? NAN : x; }; // the glider DAC's fill value
@@ -476,7 +479,7 @@ void useRows(const std::vector<Row> &rows, const std::string &source, GliderObse
         if (why.empty() && (!std::isfinite(r.u) || !std::isfinite(r.v)))
             why = kFillValue;
         if (why.empty())
-            why = dacProblem(r);
+            why = dacProblem(r, velocity);
         if (!why.empty())
         {
             ++o.rejected[why];
@@ -496,9 +499,11 @@ void readErddap(const std::string &url, GliderObservations &o)
         throw Error(who + ": an ERDDAP URL begins http:// or https://");
     const Answer kind = answerOf(url, who);
     const std::string body = fetch(url, source);
-    const std::vector<Row> rows = kind == Answer::NcCf ? ncCfRows(body, who) : csvRows(body, kind, who);
+    VelocityUnits velocity;
+    const std::vector<Row> rows =
+        kind == Answer::NcCf ? ncCfRows(body, who, velocity) : csvRows(body, kind, who, velocity);
     o.files = 1;
     o.platform = platformOf(url);
-    useRows(rows, source, o);
+    useRows(rows, velocity, source, o);
 }
 } // namespace ompl_glider::observations_detail

@@ -15,6 +15,7 @@
 #include "NcFile.h"
 #include "NumberText.h"
 #include "ObservationReaders.h"
+#include "TextUtil.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/RemoteSource.h"
@@ -27,33 +28,38 @@ using netcdf_detail::NcFile;
 using observations_detail::dacProblem;
 using observations_detail::isDbaFile;
 using observations_detail::kFillValue;
+using observations_detail::VelocityUnits;
 
 namespace observations_detail
 {
-std::string dacProblem(const DacRecord &r)
+VelocityUnits velocityUnits(const std::string &name, const std::string &units, const std::string &where)
+{
+    VelocityUnits out{units, {}};
+    if (text::trim(units).empty())
+        return out;
+    try
+    {
+        out.toMetres = velocityToMetresPerSecond(units);
+    }
+    catch (const Error &e)
+    {
+        throw Error(where + ": '" + name + "' is in '" + units + "': " + e.what());
+    }
+    return out;
+}
+
+std::string dacProblem(const DacRecord &r, const VelocityUnits &units)
 {
     if (!std::isfinite(r.time) || !std::isfinite(r.at.lon) || !std::isfinite(r.at.lat))
         return "no time or position";
     if (std::abs(r.at.lat) > 90.0 || r.at.lon < -180.0 || r.at.lon > 360.0)
         return "position out of range";
     if (std::hypot(r.u, r.v) > kMaxPlausibleDac)
-        return "faster than " + text::number(kMaxPlausibleDac) + " m/s";
+        return "faster than " + text::number(kMaxPlausibleDac) + " m/s (u, v read " +
+               (text::trim(units.units).empty() ? std::string("without units, as m/s")
+                                                : "in '" + units.units + "'") +
+               ")";
     return "";
-}
-
-bool isMetresPerSecond(const std::string &units)
-{
-    std::string u;
-    for (const char c : units)
-        if (c != ' ' || (!u.empty() && u.back() != ' '))
-            u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    while (!u.empty() && u.back() == ' ')
-        u.pop_back();
-    for (const char *m : {"", "m/s", "m s-1", "m.s-1", "m s^-1", "m.s^-1", "m/sec", "meters/second", "metres/second",
-                          "meter second-1", "meters second-1", "metre second-1", "metres second-1"})
-        if (u == m)
-            return true;
-    return false;
 }
 
 bool isDbaFile(const std::string &file)
@@ -148,6 +154,7 @@ void readCsv(const std::string &file, GliderObservations &o)
     int n = 0;
     char separator = ',';
     std::map<std::string, std::size_t> col;
+    VelocityUnits velocity;  // of u and v: a header "u (cm/s)" gives the unit, "u" alone is m/s
     while (std::getline(in, line))
     {
         ++n;
@@ -158,8 +165,17 @@ void readCsv(const std::string &file, GliderObservations &o)
         const std::vector<std::string> cells = splitCsv(line, separator);
         if (col.empty())
         {
+            std::map<std::string, std::string> units;
             for (std::size_t i = 0; i < cells.size(); ++i)
-                col[cells[i]] = i;
+            {
+                std::string name = cells[i];
+                if (const std::size_t open = name.rfind('('); open != std::string::npos && name.back() == ')')
+                {
+                    units[text::trim(name.substr(0, open))] = name.substr(open + 1, name.size() - open - 2);
+                    name = text::trim(name.substr(0, open));
+                }
+                col[name] = i;
+            }
             for (const char *k : {"time", "lon", "lat", "u", "v"})
                 if (!col.count(k))
                     throw Error(file + ":" + std::to_string(n) +
@@ -168,6 +184,11 @@ void readCsv(const std::string &file, GliderObservations &o)
                                 std::string(k) + "'" +
                                 (separator == ';' ? std::string(" in this ';'-separated header") : std::string()) +
                                 ")");
+            const std::string where = file + ":" + std::to_string(n);
+            velocity = observations_detail::velocityUnits("u", units["u"], where);
+            if (units["v"] != units["u"])
+                throw Error(where + ": 'u' is in '" + units["u"] + "' and 'v' in '" + units["v"] +
+                            "': give both in one unit");
             continue;
         }
         const auto cell = [&](const char *k) { return col[k] < cells.size() ? cells[col[k]] : std::string(); };
@@ -212,9 +233,9 @@ void readCsv(const std::string &file, GliderObservations &o)
             o.fixes.push_back(GliderFix{r.time, r.at});
         if (cell("u").empty() && cell("v").empty())
             continue; // a fix without a DAC
-        r.u = number("u");
-        r.v = number("v");
-        const std::string why = dacProblem(r);
+        r.u = velocity(number("u"));
+        r.v = velocity(number("v"));
+        const std::string why = dacProblem(r, velocity);
         if (!why.empty())
         {
             ++o.rejected[why];
@@ -226,12 +247,13 @@ void readCsv(const std::string &file, GliderObservations &o)
         throw Error("observations '" + file + "': empty (a header time,lon,lat,u,v and one row per DAC expected)");
 }
 
-/// One IOOS profile file: its DAC (or the reason it is rejected), its profile's fix, its glider.
+/// One IOOS profile file: its DAC (the template's scalars; a file holding several, each variable a list of the same
+/// length, gives them all), the reasons of those rejected, its profiles' fixes, its glider.
 struct ProfileFile
 {
-    std::optional<DacRecord> dac;
-    std::string rejected;
-    std::optional<GliderFix> fix;
+    std::vector<DacRecord> dac;
+    std::vector<std::string> rejected;
+    std::vector<GliderFix> fixes;
     std::string platform;
 };
 
@@ -245,28 +267,39 @@ ProfileFile readProfile(const std::string &file)
             throw nc.error("variable '" + std::string(name) +
                            "' is missing (an IOOS glider profile file holds the depth-averaged current in time_uv, "
                            "lat_uv, lon_uv, u, v)");
-    // a scalar's value, NaN where it is a fill value
-    const auto value = [&](int id) {
-        const std::vector<double> v = nc.readAll1D(id);
-        if (v.empty())
-            return std::nan("");
+    // a variable's values, NaN where they are fill values
+    const auto values = [&](int id) {
+        std::vector<double> v = nc.readAll1D(id);
         std::vector<double> fills = nc.attDoubles(id, "_FillValue");
         for (const double m : nc.attDoubles(id, "missing_value"))
             fills.push_back(m);
         if (fills.empty())
             fills.push_back(-999.0);
-        for (const double f : fills)
-            if (v[0] == f)
-                return std::nan("");
-        return v[0];
+        for (double &x : v)
+            if (std::find(fills.begin(), fills.end(), x) != fills.end())
+                x = std::nan("");
+        return v;
     };
     // seconds since 1970 of a time variable (CF units)
     const auto seconds = [&](int id) {
-        const double t = value(id);
+        std::vector<double> t = values(id);
         const std::string units = nc.attText(id, "units").value_or("seconds since 1970-01-01T00:00:00Z");
         const CfTimeUnits u = parseCfTimeUnits(units, nc.attText(id, "calendar").value_or("standard"));
         const double epoch1970 = secondsSinceCalendarEpoch(parseDateTime("1970-01-01T00:00:00Z"), u.calendar);
-        return t * u.secondsPerUnit + u.reference - epoch1970;
+        for (double &x : t)
+            x = x * u.secondsPerUnit + u.reference - epoch1970;
+        return t;
+    };
+    // the variables of one record each, all of one length (@p what names them in the error)
+    const auto sameLength = [&](const std::vector<std::pair<const char *, std::vector<double>>> &vars,
+                                const char *what) {
+        const std::size_t n = vars.front().second.size();
+        for (const auto &[name, v] : vars)
+            if (v.size() != n)
+                throw nc.error("the " + std::string(what) + " variables hold lists of different lengths ('" +
+                               vars.front().first + "' " + std::to_string(n) + " values, '" + name + "' " +
+                               std::to_string(v.size()) + ")");
+        return n;
     };
     if (const auto id = var("platform"))
         p.platform = nc.attText(*id, "id").value_or("");
@@ -274,43 +307,63 @@ ProfileFile readProfile(const std::string &file)
         if (const auto id = var("trajectory"); id && nc.varType(*id) == NC_CHAR && nc.varDims(*id).size() == 1)
         {
             std::vector<char> name(nc.dimLen(nc.varDims(*id)[0]) + 1, '\0');
-            nc_get_var_text(nc.id(), *id, name.data());
+            nc.check(nc_get_var_text(nc.id(), *id, name.data()), "read 'trajectory'");
             p.platform = name.data();
         }
     if (const auto t = var("profile_time"), la = var("profile_lat"), lo = var("profile_lon"); t && la && lo)
     {
-        const GliderFix f{seconds(*t), {value(*lo), value(*la)}};
-        if (std::isfinite(f.time) && std::isfinite(f.at.lon) && std::isfinite(f.at.lat))
-            p.fix = f;
+        const std::vector<double> time = seconds(*t), lat = values(*la), lon = values(*lo);
+        const std::size_t n = sameLength({{"profile_time", time}, {"profile_lat", lat}, {"profile_lon", lon}},
+                                         "profile fix");
+        for (std::size_t i = 0; i < n; ++i)
+            if (std::isfinite(time[i]) && std::isfinite(lon[i]) && std::isfinite(lat[i]))
+                p.fixes.push_back(GliderFix{time[i], {lon[i] > 180.0 ? lon[i] - 360.0 : lon[i], lat[i]}});
     }
-    DacRecord r;
-    r.file = file;
-    r.time = seconds(*var("time_uv"));
-    r.at = {value(*var("lon_uv")), value(*var("lat_uv"))};
-    r.u = value(*var("u"));
-    r.v = value(*var("v"));
-    if (r.at.lon > 180.0)
-        r.at.lon -= 360.0;
+    const auto units = [&](const char *name) {
+        const int id = *var(name);
+        return observations_detail::velocityUnits(name, nc.attText(id, "units").value_or(""),
+                                                  "NetCDF file '" + file + "'");
+    };
+    const VelocityUnits velocity = units("u");
+    if (units("v").toMetres.factor != velocity.toMetres.factor)
+        throw nc.error("'u' is in '" + velocity.units + "' and 'v' in '" + units("v").units +
+                       "': give both in one unit");
+    const std::vector<double> time = seconds(*var("time_uv")), lon = values(*var("lon_uv")),
+                              lat = values(*var("lat_uv")), u = values(*var("u")), v = values(*var("v"));
+    const std::size_t n =
+        sameLength({{"time_uv", time}, {"lat_uv", lat}, {"lon_uv", lon}, {"u", u}, {"v", v}}, "DAC");
+    // the QC flags: one for the file's records, or one per record
+    std::vector<std::pair<const char *, std::vector<double>>> flags;
     for (const char *qc : {"u_qc", "v_qc", "time_uv_qc", "lat_uv_qc", "lon_uv_qc"})
         if (const auto id = var(qc))
         {
-            const std::vector<double> flags = nc.readAll1D(*id);
-            const double flag = flags.empty() ? 0.0 : flags[0];
-            if (flag == 3.0 || flag == 4.0 || flag == 9.0)
-            {
-                p.rejected = "QC flag " + text::number(flag) + " (" + qc + ")";
-                return p;
-            }
+            flags.emplace_back(qc, nc.readAll1D(*id));
+            if (flags.back().second.size() != 1 && flags.back().second.size() != n)
+                throw nc.error("variable '" + std::string(qc) + "' holds " +
+                               std::to_string(flags.back().second.size()) + " flags for " + std::to_string(n) +
+                               " DAC (one, or one each, expected)");
         }
-    if (!std::isfinite(r.u) || !std::isfinite(r.v))
-        p.rejected = kFillValue;
-    else
-        p.rejected = dacProblem(r);
-    if (p.rejected.empty())
+    for (std::size_t i = 0; i < n; ++i)
     {
-        p.dac = r;
-        if (!p.fix || r.time > p.fix->time)
-            p.fix = GliderFix{r.time, r.at};
+        DacRecord r;
+        r.file = file;
+        r.time = time[i];
+        r.at = {lon[i] > 180.0 ? lon[i] - 360.0 : lon[i], lat[i]};
+        r.u = velocity(u[i]);
+        r.v = velocity(v[i]);
+        std::string why;
+        for (const auto &[qc, f] : flags)
+        {
+            const double flag = f.empty() ? 0.0 : f[f.size() == 1 ? 0 : i];
+            if (why.empty() && (flag == 3.0 || flag == 4.0 || flag == 9.0))
+                why = "QC flag " + text::number(flag) + " (" + qc + ")";
+        }
+        if (why.empty())
+            why = !std::isfinite(r.u) || !std::isfinite(r.v) ? kFillValue : dacProblem(r, velocity);
+        if (why.empty())
+            p.dac.push_back(r);
+        else
+            p.rejected.push_back(why);
     }
     return p;
 }
@@ -325,25 +378,24 @@ void readProfiles(const std::vector<std::string> &files, GliderObservations &o)
         profiles.push_back(readProfile(f));
         ++gliders[profiles.back().platform];
     }
-    o.platform = observations_detail::mostNamed(gliders);
+    o.platform = observations_detail::mostNamed(gliders, o.source);
     for (const ProfileFile &p : profiles)
     {
         if (p.platform != o.platform)
         {
-            ++o.rejected["another glider ('" + p.platform + "')"];
+            o.rejected["another glider ('" + p.platform + "')"] +=
+                std::max<std::size_t>(1, p.dac.size() + p.rejected.size());
             continue;
         }
-        if (p.fix && (!o.lastFix || p.fix->time > o.lastFix->time))
-            o.lastFix = p.fix;
-        if (p.fix)
-            o.fixes.push_back(*p.fix);
-        if (p.dac)
+        for (const GliderFix &f : p.fixes)
+            o.fixes.push_back(f);
+        for (const DacRecord &r : p.dac)
         {
-            o.dac.push_back(*p.dac);
-            o.fixes.push_back(GliderFix{p.dac->time, p.dac->at});
+            o.dac.push_back(r);
+            o.fixes.push_back(GliderFix{r.time, r.at});
         }
-        else
-            ++o.rejected[p.rejected];
+        for (const std::string &why : p.rejected)
+            ++o.rejected[why];
     }
 }
 } // namespace

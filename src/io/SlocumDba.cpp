@@ -52,6 +52,7 @@ struct DbaFile
 {
     std::string file, platform;
     std::vector<DbaRow> rows;
+    VelocityUnits velocity; ///< of m_water_vx, m_water_vy (the rows' vx, vy are in m/s)
 };
 
 /// The glider of a Slocum file name "<glider>-<year>-<day>-<mission>-<segment>" ("ru29-2026-074-0-12" -> "ru29").
@@ -172,9 +173,11 @@ DbaFile readDba(const std::string &file)
         refuseUnit(lat, "'lat' ([-]DDMM.MMMM)");
     if (h.units[lon] != "lon")
         refuseUnit(lon, "'lon' ([-]DDMM.MMMM)");
-    for (const std::size_t k : {vx, vy})
-        if (!isMetresPerSecond(h.units[k]))
-            refuseUnit(k, "m/s");
+    const std::string where = file + ":" + std::to_string(h.namesLine + 1);
+    d.velocity = velocityUnits(names[vx], h.units[vx], where);
+    if (velocityUnits(names[vy], h.units[vy], where).toMetres.factor != d.velocity.toMetres.factor)
+        throw Error(where + ": sensor 'm_water_vx' is in '" + h.units[vx] + "' and 'm_water_vy' in '" + h.units[vy] +
+                    "': one unit for both expected");
     const auto statusAt = std::find(names.begin(), names.end(), "m_gps_status");
     double status = 0.0;
     std::string line;
@@ -203,8 +206,8 @@ DbaFile readDba(const std::string &file)
         r.lat = w[lat];
         r.lon = w[lon];
         r.status = status;
-        r.vx = values[vx];
-        r.vy = values[vy];
+        r.vx = d.velocity(values[vx]);
+        r.vy = d.velocity(values[vy]);
         r.fix = !std::isnan(values[lat]) || !std::isnan(values[lon]);
         r.dac = !std::isnan(r.vx) || !std::isnan(r.vy);
         if (r.fix || r.dac)
@@ -248,9 +251,10 @@ void readDbaFiles(const std::vector<std::string> &files, GliderObservations &o)
         dba.push_back(readDba(f));
         ++gliders[dba.back().platform];
     }
-    o.platform = mostNamed(gliders);
+    o.platform = mostNamed(gliders, o.source);
     std::vector<GliderFix> fixes; // the valid fixes of every file
     std::vector<DacRecord> dac;   // the DAC rows (their time; the position to be found)
+    std::map<std::string, VelocityUnits> units; // of each file's DAC
     for (const DbaFile &d : dba)
     {
         if (d.platform != o.platform)
@@ -258,6 +262,7 @@ void readDbaFiles(const std::vector<std::string> &files, GliderObservations &o)
             ++o.rejected["another glider ('" + d.platform + "')"];
             continue;
         }
+        units[d.file] = d.velocity;
         for (const DbaRow &r : d.rows)
         {
             if (r.fix)
@@ -291,7 +296,7 @@ void readDbaFiles(const std::vector<std::string> &files, GliderObservations &o)
         }
         r.time = std::prev(after)->time;
         r.at = std::prev(after)->at;
-        const std::string why = dacProblem(r);
+        const std::string why = dacProblem(r, units[r.file]);
         if (why.empty())
             o.dac.push_back(r);
         else

@@ -18,6 +18,7 @@ if(OMPL_GLIDER_WITH_NETCDF)
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
     ${CMAKE_CURRENT_LIST_DIR}/DepthGrid.cpp
     ${CMAKE_CURRENT_LIST_DIR}/GliderObservations.cpp  # a glider's DAC: IOOS profile files, CSV
+    ${CMAKE_CURRENT_LIST_DIR}/UnitConversion.cpp  # unit strings (UDUNITS-2): forecasts, depths, DAC
   )
 endif()
 if(OMPL_GLIDER_WITH_MISSION)

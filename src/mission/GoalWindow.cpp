@@ -276,8 +276,13 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
     if (!w.set || !r.solved || r.path.empty() || (r.stints && !r.stints->converted))
         return;
     const double B = w.begin, E = w.end;
-    const double tol = 1e-9 * std::max({1.0, std::abs(B), std::abs(E)});
-    const std::string window = "the goal's arrival window [" + timeText(problem, B) + ", " + timeText(problem, E) + "]";
+    // the rounding tolerance of the ends given (a via point's window may give one end only, the other infinite)
+    const double tol =
+        1e-9 * std::max({1.0, std::isfinite(B) ? std::abs(B) : 0.0, std::isfinite(E) ? std::abs(E) : 0.0});
+    const std::string window = !std::isfinite(E)   ? "the arrival window opening at " + timeText(problem, B)
+                               : !std::isfinite(B) ? "the arrival window closing at " + timeText(problem, E)
+                                                   : "the goal's arrival window [" + timeText(problem, B) + ", " +
+                                                         timeText(problem, E) + "]";
     const double ta = r.path.back().t;
     if (ta > E + tol)
     {

@@ -5,6 +5,7 @@
 #include "ompl_glider/mission/MissionLegs.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -16,6 +17,7 @@
 #include "../io/NumberText.h"
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/StopRequest.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/routes/PathSmoother.h"
@@ -374,14 +376,20 @@ double timeBound(const Stops &s, TourBound &tour, Point2 at, double t, unsigned 
     return g.set ? std::max(bound, g.begin) : bound;
 }
 
+/// The most leg plans the free-order search makes without a time limit (its work bounded by a count, so that two
+/// runs agree on any machine): a few minutes of legs on a fine lattice; a pilot who wants more sets a time limit.
+constexpr std::size_t kMaxOrderLegs = 1000;
+
 /// The free-order search: depth first over orders, each prefix's legs planned once (the cache), a prefix dropped as
 /// soon as its arrival plus the time bound (timeBound()) cannot beat the best complete order so far. The given order is
 /// planned first: its time is the first bound and the reference of the gain.
 class OrderSearcher
 {
 public:
-    OrderSearcher(const MissionProblem &problem, LegPlanner &planner, double departure, double speed)
-        : planner_(planner), departure_(departure), speed_(speed), tour_(planner.stops())
+    /// @p timeLimit: the pilot's time limit for the whole search (seconds; 0: none, the budget of leg plans bounds it)
+    OrderSearcher(const MissionProblem &problem, LegPlanner &planner, double departure, double speed, double timeLimit)
+        : planner_(planner), departure_(departure), speed_(speed), tour_(planner.stops()), timeLimit_(timeLimit),
+          started_(std::chrono::steady_clock::now())
     {
         Region box = problem.getBox();
         maxCurrent_ = problem.getField()->maxSpeed(box);
@@ -408,6 +416,7 @@ public:
         std::vector<std::size_t> prefix;
         std::vector<PlannedLeg> legs;
         search(-1, departure_, (1u << n) - 1u, prefix, legs);
+        s.stopped = stopped_;
         s.ordersEvaluated = evaluatedOrders_.size();
         s.legsPlanned = planner_.planned();
         if (std::isfinite(best_))
@@ -432,6 +441,8 @@ private:
         const std::size_t n = planner_.stops().n;
         if (remaining == 0)
         {
+            if (outOfTime())
+                return;
             PlannedLeg l = planner_.leg(from, static_cast<int>(n), t);
             l.index = legs.size();
             evaluatedOrders_.insert(prefix);
@@ -453,14 +464,16 @@ private:
             const Point2 here = planner_.stops().point(from);
             const Point2 pj = planner_.stops().point(static_cast<int>(j));
             const double reach = t + std::hypot(pj.x - here.x, pj.y - here.y) / (speed_ + maxCurrent_);
-            if (bound(j, std::max(reach, windowBegin(j)), rest) >= best_)
+            if (bound(j, std::max(reach, windowBegin(j)), rest) >= best_ || windowMissed(j, reach, rest))
                 continue;
+            if (outOfTime())
+                return;
             PlannedLeg l = planner_.leg(from, static_cast<int>(j), t);
             l.index = legs.size();
             if (!l.plan.solved || !planner_.stayProblem(l).empty())
                 continue; // this prefix has no route
             const double next = l.arrival() + l.stay;
-            if (bound(j, l.arrival(), rest) >= best_)
+            if (bound(j, l.arrival(), rest) >= best_ || windowMissed(j, l.arrival(), rest))
                 continue;
             prefix.push_back(j);
             legs.push_back(std::move(l));
@@ -468,6 +481,45 @@ private:
             legs.pop_back();
             prefix.pop_back();
         }
+    }
+
+    /// True when the search must stop (the reason in stopped_): a stop request, the pilot's time limit, or the budget
+    /// of leg plans spent. The best order so far stands.
+    bool outOfTime()
+    {
+        if (!stopped_.empty())
+            return true;
+        if (stopRequested())
+            stopped_ = "a stop request";
+        else if (timeLimit_ > 0.0 &&
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count() > timeLimit_)
+            stopped_ = "the time limit of " + text::number(timeLimit_) + " s";
+        else if (planner_.planned() >= kMaxOrderLegs)
+            stopped_ = "the budget of " + std::to_string(kMaxOrderLegs) + " leg plans";
+        return !stopped_.empty();
+    }
+
+    /// True when arriving at via point @p j at @p t (or later) misses its window's end, or leaves a via point of
+    /// @p rest or the goal no time to be reached before its window ends (straight at the fastest speed, after the stay
+    /// at j): no order through this prefix keeps its windows.
+    bool windowMissed(std::size_t j, double t, unsigned rest) const
+    {
+        const Stops &s = planner_.stops();
+        const GoalWindowSpec wj = s.window(static_cast<int>(j));
+        if (wj.set && t > wj.end)
+            return true;
+        const double leave = (wj.set ? std::max(t, wj.begin) : t) + s.stay(static_cast<int>(j));
+        const Point2 pj = s.point(static_cast<int>(j));
+        for (std::size_t i = 0; i <= s.n; ++i)
+        {
+            if (i < s.n && !(rest & (1u << i)))
+                continue;
+            const GoalWindowSpec w = s.window(static_cast<int>(i));
+            const Point2 p = s.point(static_cast<int>(i));
+            if (w.set && leave + std::hypot(p.x - pj.x, p.y - pj.y) / (speed_ + maxCurrent_) > w.end)
+                return true;
+        }
+        return false;
     }
 
     double windowBegin(std::size_t j) const
@@ -487,6 +539,9 @@ private:
     LegPlanner &planner_;
     double departure_, speed_, maxCurrent_{0.0};
     TourBound tour_; // the shortest straight tours, memoised over the whole search
+    double timeLimit_;
+    std::chrono::steady_clock::time_point started_;
+    std::string stopped_; // why the search stopped early (empty: it finished)
     double best_{kInf};
     std::vector<std::size_t> bestOrder_;
     std::vector<PlannedLeg> bestLegs_;
@@ -544,7 +599,8 @@ MissionPlan planMission(const MissionProblem &problem, double departure, const P
     LegPlanner planner(problem, options);
     if (m.order == VisitOrder::Free)
     {
-        OrderSearcher search(problem, planner, departure, std::isnan(options.speed) ? m.vehicle.speed : options.speed);
+        OrderSearcher search(problem, planner, departure, std::isnan(options.speed) ? m.vehicle.speed : options.speed,
+                             options.timeLimit > 0.0 ? options.timeLimit : m.planner.timeLimit);
         out.orderSearch = search.run(out.legs, out.order);
     }
     else

@@ -74,6 +74,15 @@ std::string whenText(const MissionSpec &m, double t)
     }
     return text::number(t, 10);
 }
+
+/// "farther than 200 km from the mission's area (10 length scales)"
+std::string farText(const MissionSpec &m, double distance)
+{
+    return "farther than " +
+           (m.physicalUnits().length ? text::number(distance * m.metresPerUnit() / 1000.0, 4) + " km"
+                                     : text::number(distance, 4)) +
+           " from the mission's area (10 length scales)";
+}
 } // namespace
 
 std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
@@ -100,7 +109,9 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
     };
     const double fixTime = fieldTime(o.lastFix->time, "the last fix's time");
     const auto mark = m.marks.find("start");
-    if (mark == m.marks.end() || mark->second.origin != Origin::Observations)
+    const bool startIsTheFix = m.start.geographic && m.start.lonLat.lon == o.lastFix->at.lon &&
+                               m.start.lonLat.lat == o.lastFix->at.lat;  // the loader's first guess
+    if ((mark == m.marks.end() || mark->second.origin != Origin::Observations) && !startIsTheFix)
         r.replacedStart = m.start.geographic ? text::number(m.start.lonLat.lon, 8) + ", " +
                                                    text::number(m.start.lonLat.lat, 8)
                                              : text::number(m.start.xy.x, 8) + ", " + text::number(m.start.xy.y, 8);
@@ -201,6 +212,9 @@ std::string resumeNote(const MissionSpec &m)
     if (!r.replacedStart.empty())
         s += " (replacing the mission's start " + r.replacedStart + ", the deployment's" +
              (r.replacedDeparture.empty() ? std::string() : ", and its departure " + r.replacedDeparture) + ")";
+    else if (!r.replacedDeparture.empty())
+        s += " (replacing the mission's departure " + r.replacedDeparture +
+             ": the glider was elsewhere then, the plan departs from where and when it was last seen)";
     if (r.dropped.empty())
         s += "; no station reached yet";
     else
@@ -245,6 +259,12 @@ void MissionProblem::applyObservations(const GliderObservations *read)
     const double departure = m.departure.window ? m.departure.begin : m.departure.time;
     // velocities in field units (a forecast's m/s; an analytic flow's units per time unit)
     const double scale = m.metresPerUnit() / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds);
+    const CorrectionParams p = correctionParams();
+    if (!(p.timeScale > 0.0) || !std::isfinite(p.timeScale))
+        throw Error(at + ": give observations.time_scale (no default time scale for this field)");
+    // a DAC farther from the mission's area than 10 length scales (the given or the prior one) says nothing of its
+    // currents: left out before anything is learned, and counted as such
+    report.farDistance = 10.0 * p.lengthScale;
     std::vector<DacObservation> dac;
     for (const DacRecord &r : o.dac)
     {
@@ -270,11 +290,16 @@ void MissionProblem::applyObservations(const GliderObservations *read)
             projection_->northDirection(r.at.lon, r.at.lat, nx, ny);
         }
         const Velocity c{(r.u * ex + r.v * nx) / scale, (r.u * ey + r.v * ny) / scale};
-        dac.push_back({t, toLocal(r.at), c, std::nullopt});
+        const Point2 q = toLocal(r.at);
+        const double dx = std::max({box_.xMin - q.x, 0.0, q.x - box_.xMax});
+        const double dy = std::max({box_.yMin - q.y, 0.0, q.y - box_.yMax});
+        if (std::hypot(dx, dy) > report.farDistance)
+        {
+            ++report.far;
+            continue;
+        }
+        dac.push_back({t, q, c, std::nullopt});
     }
-    const CorrectionParams p = correctionParams();
-    if (!(p.timeScale > 0.0) || !std::isfinite(p.timeScale))
-        throw Error(at + ": give observations.time_scale (no default time scale for this field)");
     // the forecast the DAC make: corrected; an ensemble's members weighed by them and updated, then corrected
     const LearnedForecast learned = learnForecast(field_, members_, dac, p);
     report.correction = learned.correction;
@@ -284,6 +309,8 @@ void MissionProblem::applyObservations(const GliderObservations *read)
     {
         std::string why = std::to_string(report.future) + " after the departure, " +
                           std::to_string(report.correction.outsideForecast) + " outside the forecast";
+        if (report.far > 0)
+            why += ", " + std::to_string(report.far) + " " + farText(m, report.farDistance);
         throw Error(at + ": none of the " + std::to_string(o.dac.size()) +
                     " depth-averaged currents can correct the forecast (" + why + ")");
     }
@@ -307,6 +334,8 @@ std::string observationNote(const MissionProblem &problem)
         rejected += ", " + std::to_string(r->future) + " after the departure";
     if (r->correction.outsideForecast > 0)
         rejected += ", " + std::to_string(r->correction.outsideForecast) + " outside the forecast";
+    if (r->far > 0)
+        rejected += ", " + std::to_string(r->far) + " " + farText(m, r->farDistance);
     if (r->correction.older > 0)
         rejected += ", " + std::to_string(r->correction.older) + " older than the most recent kept";
     return "glider observations '" + r->source + "'" + (r->platform.empty() ? "" : " (" + r->platform + ")") + ": " +

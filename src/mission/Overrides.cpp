@@ -208,8 +208,10 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
             if (!plainViaPointName(v.name))
                 throw Error(at + ": '" + v.name + "' is not a plain name (a letter, then letters, digits, '_' or '-'; "
                                  "at most 16 characters)");
-            if (!names.insert(v.name).second)
-                throw Error(at + ": the name '" + v.name + "' is used twice");
+            if (const std::string key = viaPointKey(v.name); !names.insert(key).second)
+                throw Error(at + ": the name '" + v.name + "' is used twice" +
+                            (key == "start" || key == "goal" ? " (it names the mission's " + key + ")" : "") +
+                            " (names are compared without case)");
             if (!(std::isnan(v.radius) || (v.radius > 0.0 && std::isfinite(v.radius))))
                 throw Error(at + ": the radius must be > 0, got " + text::number(v.radius));
             if (!(v.stay >= 0.0 && std::isfinite(v.stay)))

@@ -25,8 +25,18 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::atomic<bool> g_staging{false};
-std::atomic<bool> g_final{false};  // the last write's outputs stand for good (its commit cannot be taken back)
+/// Where the process is in writing its outputs, one value read at once by the signal handler (which may run on any
+/// thread while the main one moves on): no write under way (a signal ends the process), files being staged or
+/// swapped in (a signal is held and takes the write back), or the last write's outputs standing for good (a signal
+/// stops the run but no longer undoes them). Two separate flags let a handler on another thread see "not final" then
+/// "not staging" around the commit, and end the process after the new outputs stood.
+enum class WriteState : int
+{
+    Idle,
+    Staging,
+    Final
+};
+std::atomic<WriteState> g_state{WriteState::Idle};
 std::atomic<int> g_pending{0};
 std::atomic<void (*)(const char *)> g_hook{nullptr};
 
@@ -49,14 +59,15 @@ void endBySignal(int sig)
 
 extern "C" void onTerminatingSignal(int sig)
 {
-    if (g_final.load() && !g_staging.load())
+    const WriteState state = g_state.load();
+    if (state == WriteState::Final)
     {
         // the new outputs stand: the run is stopped, not undone (the caller must not read "nothing was written")
         g_pending.store(sig);
         requestStop();
         return;
     }
-    if (!g_staging.load())
+    if (state == WriteState::Idle)
     {
         endBySignal(sig);  // end the process as the signal would have (nothing is half written)
         return;
@@ -161,7 +172,7 @@ std::map<std::string, HeldLock> &heldLocks()
 
 int signalAfterOutputs()
 {
-    return g_final.load() ? g_pending.exchange(0) : 0;
+    return g_state.load() == WriteState::Final ? g_pending.exchange(0) : 0;
 }
 
 void installOutputSignalHandlers()
@@ -399,7 +410,7 @@ void commitStaging(const fs::path &staging, const fs::path &target, const std::v
     }
     else
         moveFileByFile(staging, target, names, previous, shown);
-    g_final.store(true);  // a signal from here on no longer takes the new outputs back
+    g_state.store(WriteState::Final);  // a signal from here on no longer takes the new outputs back
     stepHook("final");
     syncDirectory(target.parent_path());
     fs::remove_all(staging, ec);
@@ -408,13 +419,17 @@ void commitStaging(const fs::path &staging, const fs::path &target, const std::v
 void setStaging(bool on)
 {
     if (on)
-        g_final.store(false);
-    g_staging.store(on);
+        g_state.store(WriteState::Staging);
+    else
+    {
+        WriteState staging = WriteState::Staging;  // a final write stays final
+        g_state.compare_exchange_strong(staging, WriteState::Idle);
+    }
 }
 
 void raisePendingSignal()
 {
-    if (g_final.load())
+    if (g_state.load() == WriteState::Final)
     {
         if (g_pending.load() != 0)
             requestStop();  // kept for signalAfterOutputs(); the outputs stand
@@ -430,7 +445,7 @@ void interruptIfSignalled(const fs::path &staging)
         return;
     std::error_code ec;
     fs::remove_all(staging, ec);
-    g_staging.store(false);
+    g_state.store(WriteState::Idle);
     raisePendingSignal();
 }
 

@@ -90,6 +90,9 @@ void printLegs(std::ostream &out, const MissionResult &r)
             << (std::isfinite(s.chosenTime) ? format(", the chosen one %s (%.2f%% faster)", span(s.chosenTime).c_str(),
                                                      100.0 * s.gain)
                                             : std::string(", no order has a route"))
+            << (s.stopped.empty() ? std::string()
+                                  : "; the search stopped at " + s.stopped +
+                                        ": the chosen order is the fastest of those planned, not proven the fastest")
             << "\n";
     }
     out << format("%4s  %-28s %22s %22s %14s %10s  %-10s %s\n", "leg", "from -> to", "departure", "arrival",

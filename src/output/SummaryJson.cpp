@@ -386,6 +386,8 @@ json observationsJson(const MissionProblem &problem)
         rejected["after the departure"] = o->future;
     if (o->correction.outsideForecast > 0)
         rejected["outside the forecast"] = o->correction.outsideForecast;
+    if (o->far > 0)
+        rejected["far from the mission"] = o->far;
     if (o->correction.older > 0)
         rejected["older than the most recent kept"] = o->correction.older;
     json fix = nullptr;
@@ -472,7 +474,9 @@ void legsJson(const MissionResult &r, const MissionProblem &problem, json &j)
                                 {"given_travel_time", jnum(s.givenTime)},
                                 {"chosen_travel_time", jnum(s.chosenTime)},
                                 {"chosen", chosen},
-                                {"gain", jnum(s.gain)}};
+                                {"gain", jnum(s.gain)},
+                                {"complete", s.stopped.empty()},
+                                {"stopped", s.stopped.empty() ? json(nullptr) : json(s.stopped)}};
     }
     json legs = json::array();
     for (const PlannedLeg &l : r.legs)

@@ -239,6 +239,14 @@ yaml_case("execution-interval-fortnight", mission("units: {length_m: 1000, time_
                                                    "execution: {surfacing_interval: 1 fortnight}"),
           "execution.surfacing_interval")
 yaml_case("execution-radius-zero", mission("execution: {radius: 0}"), "execution.radius")
+yaml_case("execution-dac-noise-without-dac", mission("execution: {strategies: [replan, greedy], dac_noise: 0.01}"),
+          "m.yaml:8: field 'execution.dac_noise': no strategy measures a DAC")
+yaml_case("via-empty-list", mission(append="waypoints: []\n"),
+          "m.yaml:8: field 'waypoints': the list is empty: give at least one via point, or leave 'waypoints' out")
+yaml_case("via-named-goal-upper", mission(append="waypoints:\n  - {name: GOAL, x: 5, y: 1}\n"),
+          "field 'waypoints[0].name': 'GOAL' names the mission's goal too")
+yaml_case("via-names-differ-in-case", mission(append="waypoints:\n  - {name: A, x: 5, y: 1}\n  - {name: a, x: 6, y: 1}\n"),
+          "field 'waypoints[1].name': 'a' names another via point too")
 yaml_case("execution-replan-every-zero", mission("execution: {replan_every: 0}"), "execution.replan_every")
 yaml_case("execution-truth-netcdf-for-analytic", mission("execution: {truth: {type: netcdf, file: f.nc}}"),
           "execution.truth")
@@ -923,8 +931,12 @@ observations_case("observations-dba-row-too-short", "g.dba", "g.dba:10: 3 values
                   {"g.dba": DBA + "1773554400 4730.0 -5230.0 NaN NaN\n1773554430 NaN NaN\n"})
 observations_case("observations-dba-no-water-velocity", "g.dba", "g.dba:6: no sensor 'm_water_vy'",
                   {"g.dba": DBA.replace(" m_water_vy", " m_depth")})
-observations_case("observations-dba-cm-per-s", "g.dba", "g.dba:7: sensor 'm_water_vx' is in 'cm/s': m/s expected",
-                  {"g.dba": DBA.replace("lon m/s m/s", "lon cm/s cm/s")})
+observations_case("observations-dba-degc", "g.dba", "g.dba:7: 'm_water_vx' is in 'degC': units 'degC' are not a velocity",
+                  {"g.dba": DBA.replace("lon m/s m/s", "lon degC degC")})
+observations_case("observations-fix-after-forecast", "d.csv", "the last fix's time (--observations) 2030-01-01",
+                  {"d.csv": "time,lon,lat,u,v\n2030-01-01T00:00:00Z,-52.5,47.5,0.1,0\n"})
+observations_case("observations-csv-degc", "d.csv", "d.csv:1: 'u' is in 'degC': units 'degC' are not a velocity",
+                  {"d.csv": "time,lon,lat,u (degC),v (degC)\n2026-03-15T06:00:00Z,-52.5,47.5,12,11\n"})
 observations_case("observations-dba-no-dac", "g.dba", "no usable depth-averaged current (sensors m_water_vx, m_water_vy",
                   {"g.dba": DBA + "1773554400 4730.0 -5230.0 NaN NaN\n"})
 observations_case("observations-erddap-server-down", "http://127.0.0.1:1/erddap/tabledap/ru29.csvp?time,u",

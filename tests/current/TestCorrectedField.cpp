@@ -149,3 +149,85 @@ TEST(CorrectedField, JacobianMatchesFiniteDifferencesAndTheBoundHolds)
         EXPECT_LE(std::hypot(c.u, c.v), bound);
     }
 }
+
+// The same current measured 8, 200 or 2000 times along one track (DAC a few metres and seconds apart, as a glider's
+// repeated readings are), with the error ratio of the defaults and a tiny one: the correction recovers the error
+// along the track and never exceeds it anywhere, however ill-conditioned the system; the speed bound holds and stays
+// within the forecast's bound plus the error.
+TEST(CorrectedField, ManyCopiesOfOneCurrentNeverCorrectBeyondTheData)
+{
+    auto forecast = std::make_shared<UniformCurrent>(0.1, 0.0);
+    const double error = 0.05;  // every DAC: the forecast plus (0.05, 0)
+    const Region r{-5.0, 15.0, -5.0, 5.0, 0.0, 0.0, -5.0, 20.0};
+    for (const int n : {8, 200, 2000})
+        for (const double ratio : {0.2, 1e-6})
+        {
+            std::vector<DacObservation> obs;
+            for (int k = 0; k < n; ++k)
+            {
+                const double s = static_cast<double>(k) / (n - 1);  // along the track, 0..1
+                obs.push_back({10.0 * s, {10.0 * s + 1e-4 * std::sin(7.0 * k), 1e-4 * std::cos(5.0 * k)},
+                               {0.1 + error, 0.0}, std::nullopt});
+            }
+            CorrectionParams p{2.0, 4.0, ratio};
+            const CorrectedField f(forecast, obs, p);
+            SCOPED_TRACE(std::to_string(n) + " DAC, ratio " + std::to_string(ratio));
+            std::mt19937 rng(11);
+            std::uniform_real_distribution<double> ux(-5, 15), uy(-5, 5), ut(-5, 20);
+            for (int i = 0; i < 3000; ++i)
+            {
+                const double x = ux(rng), y = uy(rng), t = ut(rng);
+                const Velocity c = f.correction(x, y, t);
+                ASSERT_GE(c.u, 0.0);
+                ASSERT_LE(c.u, error + 1e-12) << "at " << x << ", " << y << ", " << t;
+                ASSERT_EQ(c.v, 0.0);
+            }
+            // along the track the error is recovered (the interpolation's shrinkage is ratio^2 / readings at most)
+            for (int k = 1; k < 10; ++k)
+                EXPECT_NEAR(f.correction(k, 0.0, k).u, error, 0.003) << "at " << k;
+            EXPECT_LE(f.maxSpeed(r), forecast->maxSpeed(r) + error + 1e-12);
+            EXPECT_GE(f.maxSpeed(r), 0.1 + error - 0.003);
+        }
+}
+
+// Varied readings (the truth's drift plus noise), many of them: the interpolated correction stays within the range of
+// the innovations, and the speed bound holds at every sampled point.
+TEST(CorrectedField, ManyNoisyReadingsStayWithinTheirRange)
+{
+    auto jet = std::make_shared<MeanderingJet>();
+    const DriftedJet truth(0.1, -0.05);
+    std::mt19937 rng(21);
+    std::normal_distribution<double> noise(0.0, 0.03);
+    std::vector<DacObservation> obs;
+    double uLow = 0.0, uHigh = 0.0, vLow = 0.0, vHigh = 0.0;
+    for (int k = 0; k < 1000; ++k)
+    {
+        const double t = 0.01 * k, x = 2.0 + 0.006 * k, y = -2.0 + 0.003 * k;
+        const Velocity c = truth.velocity(x, y, 0.0, t), fc = jet->velocity(x, y, 0.0, t);
+        DacObservation o{t, {x, y}, {c.u + noise(rng), c.v + noise(rng)}, std::nullopt};
+        uLow = std::min(uLow, o.dac.u - fc.u);
+        uHigh = std::max(uHigh, o.dac.u - fc.u);
+        vLow = std::min(vLow, o.dac.v - fc.v);
+        vHigh = std::max(vHigh, o.dac.v - fc.v);
+        obs.push_back(o);
+    }
+    const CorrectedField f(jet, obs, CorrectionParams{1.0, 3.0, 0.05});
+    std::uniform_real_distribution<double> ux(0, 10), uy(-4, 4), ut(0, 15);
+    const Region r{0.0, 10.0, -4.0, 4.0, 0.0, 0.0, 0.0, 15.0};
+    const double bound = f.maxSpeed(r);
+    for (int i = 0; i < 3000; ++i)
+    {
+        const double x = ux(rng), y = uy(rng), t = ut(rng);
+        const Velocity c = f.correction(x, y, t);
+        ASSERT_GE(c.u, uLow - 1e-12);
+        ASSERT_LE(c.u, uHigh + 1e-12);
+        ASSERT_GE(c.v, vLow - 1e-12);
+        ASSERT_LE(c.v, vHigh + 1e-12);
+        const Velocity w = f.velocity(x, y, 0, t);
+        ASSERT_LE(std::hypot(w.u, w.v), bound + 1e-12);
+    }
+    // near the track the drift is recovered far better than the forecast knows it
+    const Velocity c = f.correction(4.0, -1.0, 3.33);
+    EXPECT_NEAR(c.u, 0.1, 0.03);
+    EXPECT_NEAR(c.v, -0.05, 0.03);
+}

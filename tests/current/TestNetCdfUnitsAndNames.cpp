@@ -16,7 +16,7 @@
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
-#include "ompl_glider/current/UnitConversion.h"
+#include "ompl_glider/io/UnitConversion.h"
 
 using namespace ompl_glider;
 using glider_test::linspace;

@@ -15,11 +15,12 @@ struct Profile
 {
     double time;                // seconds since 1970
     double lon, lat;            // degrees
-    double u, v;                // m/s (-999: fill)
+    double u, v;                // in velocityUnits (-999: fill)
     signed char qc{1};          // u_qc / v_qc
     std::string glider{"ru29"}; // platform:id
     // the DAC's time and position; NaN: 30 min before the profile, 0.001 degrees south-west of it
     double timeUv{std::nan("")}, lonUv{std::nan("")}, latUv{std::nan("")};
+    std::string velocityUnits{"m s-1"}; // the units of u and v
 };
 
 inline void check(int status, const std::string &what)
@@ -61,8 +62,8 @@ inline void writeProfile(const std::string &path, const Profile &p)
                std::isnan(p.timeUv) ? p.time - 1800.0 : p.timeUv),
         scalar("lat_uv", "degrees_north", "latitude", std::isnan(p.latUv) ? p.lat - 0.001 : p.latUv),
         scalar("lon_uv", "degrees_east", "longitude", std::isnan(p.lonUv) ? p.lon - 0.001 : p.lonUv),
-        scalar("u", "m s-1", "eastward_sea_water_velocity", p.u),
-        scalar("v", "m s-1", "northward_sea_water_velocity", p.v)};
+        scalar("u", p.velocityUnits.c_str(), "eastward_sea_water_velocity", p.u),
+        scalar("v", p.velocityUnits.c_str(), "northward_sea_water_velocity", p.v)};
     int uqc = 0, vqc = 0, platform = 0;
     check(nc_def_var(nc, "u_qc", NC_BYTE, 0, nullptr, &uqc), "u_qc");
     check(nc_def_var(nc, "v_qc", NC_BYTE, 0, nullptr, &vqc), "v_qc");

@@ -2,10 +2,14 @@
 // time order, bad ones rejected with the reason counted, the last fix, and clear errors where nothing is usable.
 #include <gtest/gtest.h>
 
+#include <netcdf.h>
+
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "IoosProfiles.h"
 #include "ompl_glider/Exception.h"
@@ -71,7 +75,7 @@ TEST(GliderObservations, IoosDeploymentFolder)
     }
     EXPECT_EQ(o.rejected.at("fill value"), 1u);
     EXPECT_EQ(o.rejected.at("QC flag 4 (u_qc)"), 1u);
-    EXPECT_EQ(o.rejected.at("faster than 3 m/s"), 1u);
+    EXPECT_EQ(o.rejected.at("faster than 3 m/s (u, v read in 'm s-1')"), 1u);
     EXPECT_EQ(o.rejected.at("another glider ('sg512')"), 1u);
     EXPECT_EQ(o.rejected.at("repeated time"), 1u);
     // the last fix: the latest profile of this glider (the QC-rejected one still reports where it was)
@@ -116,13 +120,65 @@ TEST(GliderObservations, CsvRowsFixesAndErrors)
     ASSERT_EQ(o.dac.size(), 2u);
     EXPECT_LT(o.dac[0].time, o.dac[1].time);
     EXPECT_NEAR(o.dac[1].at.lon, -52.5, 1e-12);
-    EXPECT_EQ(o.rejected.at("faster than 3 m/s"), 1u);
+    EXPECT_EQ(o.rejected.at("faster than 3 m/s (u, v read without units, as m/s)"), 1u);
     ASSERT_TRUE(o.lastFix.has_value());
     EXPECT_DOUBLE_EQ(o.lastFix->time, parseIsoTime("2026-03-15T12:00:00Z"));
     std::ofstream(f) << "time,lon,lat,u,v\n2026-03-15T06:00:00Z,-52.7,north,0.1,0.1\n";
     EXPECT_NE(errorOf(f).find(f + ":2: column 'lat': expected a number, got 'north'"), std::string::npos) << errorOf(f);
     std::ofstream(f) << "when,lon,lat,u,v\n";
     EXPECT_NE(errorOf(f).find(f + ":1: the header must name the columns"), std::string::npos) << errorOf(f);
+}
+
+// The DAC's units, as the file writes them (UDUNITS-2, as for the forecasts): profiles in cm s-1 or knots read as
+// the same currents in m s-1; a unit that is no velocity is refused naming the file and variable; a CSV header gives
+// the unit as "u (cm/s)"; the rejection of implausibly fast values names the unit read.
+TEST(GliderObservations, VelocityUnitsAreConvertedOrRefused)
+{
+    const fs::path d = freshDir("dac_units");
+    const double t0 = parseIsoTime("2026-03-15T06:00:00Z");
+    const double knot = 1852.0 / 3600.0;
+    const struct
+    {
+        const char *units;
+        double perMetre;  // the file's value of 1 m/s
+    } cases[] = {{"m s-1", 1.0}, {"cm s-1", 100.0}, {"cm/s", 100.0}, {"knots", 1.0 / knot}, {"mm s-1", 1000.0}};
+    for (const auto &c : cases)
+    {
+        const fs::path f = d / (std::string("p_") + std::to_string(&c - cases) + ".nc");
+        ioos_test::Profile p{t0, -52.5, 47.95, 0.25 * c.perMetre, -0.1 * c.perMetre};
+        p.velocityUnits = c.units;
+        ioos_test::writeProfile(f.string(), p);
+        const GliderObservations o = readGliderObservations(f.string());
+        ASSERT_EQ(o.dac.size(), 1u) << c.units;
+        EXPECT_NEAR(o.dac[0].u, 0.25, 1e-12) << c.units;
+        EXPECT_NEAR(o.dac[0].v, -0.1, 1e-12) << c.units;
+    }
+    // 10 knots is no glider's DAC: rejected, and the reason says what unit the file gave
+    ioos_test::Profile fast{t0, -52.5, 47.95, 10.0, 0.0};
+    fast.velocityUnits = "knots";
+    ioos_test::writeProfile((d / "fast.nc").string(), fast);
+    const std::string e = errorOf((d / "fast.nc").string());
+    EXPECT_NE(e.find("faster than 3 m/s (u, v read in 'knots')"), std::string::npos) << e;
+    // a temperature is no velocity
+    ioos_test::Profile warm{t0, -52.5, 47.95, 12.0, 11.0};
+    warm.velocityUnits = "degC";
+    const std::string w = (d / "warm.nc").string();
+    ioos_test::writeProfile(w, warm);
+    EXPECT_NE(errorOf(w).find("NetCDF file '" + w + "': 'u' is in 'degC': units 'degC' are not a velocity"),
+              std::string::npos)
+        << errorOf(w);
+    // a CSV with units in its header
+    const std::string csv = (d / "dac.csv").string();
+    std::ofstream(csv) << "time,lon,lat,u (cm/s),v (cm/s)\n2026-03-15T06:00:00Z,-52.7,47.9,25,-10\n";
+    const GliderObservations o = readGliderObservations(csv);
+    ASSERT_EQ(o.dac.size(), 1u);
+    EXPECT_NEAR(o.dac[0].u, 0.25, 1e-12);
+    EXPECT_NEAR(o.dac[0].v, -0.1, 1e-12);
+    std::ofstream(csv) << "time,lon,lat,u (degC),v (degC)\n2026-03-15T06:00:00Z,-52.7,47.9,25,-10\n";
+    EXPECT_NE(errorOf(csv).find(csv + ":1: 'u' is in 'degC': units 'degC' are not a velocity"), std::string::npos)
+        << errorOf(csv);
+    std::ofstream(csv) << "time,lon,lat,u (cm/s),v (m/s)\n2026-03-15T06:00:00Z,-52.7,47.9,25,-10\n";
+    EXPECT_NE(errorOf(csv).find(csv + ":1: 'u' is in 'cm/s' and 'v' in 'm/s'"), std::string::npos) << errorOf(csv);
 }
 
 // A ';'-separated CSV (a spreadsheet's in a decimal-comma locale) reads as the ','-separated one; a decimal comma is
@@ -152,4 +208,71 @@ TEST(GliderObservations, SemicolonSeparatedCsvReadsAsTheCommaSeparatedOne)
         << errorOf(semi);
     std::ofstream(semi) << "when;lon;lat;u;v\n";
     EXPECT_NE(errorOf(semi).find("(missing 'time' in this ';'-separated header)"), std::string::npos) << errorOf(semi);
+}
+
+namespace
+{
+/// A file of several DAC (each variable a list, as a glider's trajectory file holds them), in m s-1.
+void writeDacList(const std::string &path, const std::string &glider, const std::vector<double> &t,
+                  const std::vector<double> &u, int qcBad = -1)
+{
+    int nc = 0, dim = 0;
+    ASSERT_EQ(nc_create(path.c_str(), NC_CLOBBER | NC_NETCDF4, &nc), NC_NOERR);
+    const std::size_t n = t.size();
+    ASSERT_EQ(nc_def_dim(nc, "profile", n, &dim), NC_NOERR);
+    const auto def = [&](const char *name, const char *units) {
+        int id = 0;
+        nc_def_var(nc, name, NC_DOUBLE, 1, &dim, &id);
+        nc_put_att_text(nc, id, "units", std::strlen(units), units);
+        return id;
+    };
+    const int vt = def("time_uv", "seconds since 1970-01-01T00:00:00Z"), vla = def("lat_uv", "degrees_north"),
+              vlo = def("lon_uv", "degrees_east"), vu = def("u", "m s-1"), vv = def("v", "m s-1");
+    int qc = 0, platform = 0;
+    nc_def_var(nc, "u_qc", NC_BYTE, 1, &dim, &qc);
+    nc_def_var(nc, "platform", NC_INT, 0, nullptr, &platform);
+    nc_put_att_text(nc, platform, "id", glider.size(), glider.c_str());
+    nc_enddef(nc);
+    std::vector<double> lat(n, 48.0), lon(n), v(n, 0.0);
+    std::vector<signed char> flags(n, 1);
+    for (std::size_t i = 0; i < n; ++i)
+        lon[i] = -52.5 + 0.01 * static_cast<double>(i);
+    if (qcBad >= 0)
+        flags[static_cast<std::size_t>(qcBad)] = 4;
+    nc_put_var_double(nc, vt, t.data());
+    nc_put_var_double(nc, vla, lat.data());
+    nc_put_var_double(nc, vlo, lon.data());
+    nc_put_var_double(nc, vu, u.data());
+    nc_put_var_double(nc, vv, v.data());
+    nc_put_var_schar(nc, qc, flags.data());
+    nc_close(nc);
+}
+} // namespace
+
+// A file holding several DAC gives them all (each with its own QC flag), not its first alone; files of two gliders in
+// equal numbers are refused naming both, where one glider's files are the most they are read without the other's.
+TEST(GliderObservations, FilesOfSeveralDacAndTiesBetweenGliders)
+{
+    const fs::path d = freshDir("dac_lists");
+    const double t0 = parseIsoTime("2026-03-15T06:00:00Z");
+    writeDacList((d / "ru29_a.nc").string(), "ru29", {t0, t0 + 3600, t0 + 7200}, {0.1, 0.2, 0.3});
+    writeDacList((d / "ru29_b.nc").string(), "ru29", {t0 + 10800, t0 + 14400, t0 + 18000}, {0.4, 0.5, 0.6}, 1);
+    GliderObservations o = readGliderObservations(d.string());
+    ASSERT_EQ(o.dac.size(), 5u);  // six, one flagged bad
+    EXPECT_EQ(o.rejected.at("QC flag 4 (u_qc)"), 1u);
+    const double expected[] = {0.1, 0.2, 0.3, 0.4, 0.6};
+    for (std::size_t i = 0; i < 5; ++i)
+        EXPECT_DOUBLE_EQ(o.dac[i].u, expected[i]);
+    EXPECT_DOUBLE_EQ(o.lastFix->time, t0 + 18000);
+    // two files of another glider: as many as ru29's, a tie
+    writeDacList((d / "sg512_a.nc").string(), "sg512", {t0 + 500}, {0.1});
+    writeDacList((d / "sg512_b.nc").string(), "sg512", {t0 + 900}, {0.1});
+    const std::string e = errorOf(d.string());
+    EXPECT_NE(e.find("as many files of glider 'ru29' as of 'sg512' (2 each)"), std::string::npos) << e;
+    // one more of ru29: ru29's deployment, sg512's files counted as rejected
+    writeDacList((d / "ru29_c.nc").string(), "ru29", {t0 + 21600}, {0.7});
+    o = readGliderObservations(d.string());
+    EXPECT_EQ(o.platform, "ru29");
+    EXPECT_EQ(o.dac.size(), 6u);
+    EXPECT_EQ(o.rejected.at("another glider ('sg512')"), 2u);
 }

@@ -289,11 +289,14 @@ TEST_F(GliderRealtime, ErddapAnswersWithoutTheColumnsAreRefusedNamingThem)
         }
         if (r.path.find(".ncCF") != std::string::npos)
             return {200, ncCfAnswer(deployment(), false, scratch, {"v", "lat_uv"})};
-        if (r.path.find("cms") != std::string::npos) // u and v in cm/s
+        if (r.path.find("good") != std::string::npos) // the same answer in m s-1
+            return {200, csvAnswer(deployment(), true)};
+        if (r.path.find("cms") != std::string::npos || r.path.find("degc") != std::string::npos) // cm/s, degC
         {
             std::string body = csvAnswer(deployment(), true);
+            const std::string unit = r.path.find("cms") != std::string::npos ? "cm s-1" : "degC";
             for (const char *k : {"u (m s-1)", "v (m s-1)"})
-                body.replace(body.find(k), std::strlen(k), std::string(k).replace(3, 5, "cm s-1"));
+                body.replace(body.find(k), std::strlen(k), std::string(k).replace(3, 5, unit));
             return {200, body};
         }
         if (r.path.find("notanumber") != std::string::npos)
@@ -314,9 +317,17 @@ TEST_F(GliderRealtime, ErddapAnswersWithoutTheColumnsAreRefusedNamingThem)
     const std::string cut = server.url("/erddap/tabledap/cut.ncCF");
     EXPECT_NE(errorOf(cut).find("ERDDAP '" + cut + "': the .ncCF answer is cut short or corrupt"), std::string::npos)
         << errorOf(cut);
+    // the same numbers in cm s-1: a hundredth of the DAC in m s-1; in degC: refused
     const std::string cms = server.url("/erddap/tabledap/cms.csvp");
-    EXPECT_NE(errorOf(cms).find("ERDDAP '" + cms + "': 'u' is in 'cm s-1': m/s expected"), std::string::npos)
-        << errorOf(cms);
+    const GliderObservations inCm = readGliderObservations(cms);
+    const GliderObservations inM = readGliderObservations(server.url("/erddap/tabledap/good.csvp"));
+    ASSERT_EQ(inCm.dac.size(), inM.dac.size());
+    for (std::size_t i = 0; i < inM.dac.size(); ++i)
+        EXPECT_NEAR(inCm.dac[i].u, inM.dac[i].u / 100.0, 1e-15);
+    const std::string degc = server.url("/erddap/tabledap/degc.csvp");
+    EXPECT_NE(errorOf(degc).find("ERDDAP '" + degc + "': 'u' is in 'degC': units 'degC' are not a velocity"),
+              std::string::npos)
+        << errorOf(degc);
     const std::string nan = server.url("/erddap/tabledap/notanumber.csvp");
     EXPECT_NE(errorOf(nan).find("ERDDAP '" + nan + "': answer line 2: 'u': expected a number, got 'east'"),
               std::string::npos)
@@ -346,8 +357,8 @@ TEST_F(GliderRealtime, BadDbaFilesAreRefusedNamingFileAndLine)
     check(dbaHeader("ru29-2026-074-0-0", "m_present_time m_lat m_lon m_water_vx m_water_vy",
                     "timestamp lat lon m/s m/s", "8 8 8 4 4"),
           "15: no sensor 'm_gps_lat'");
-    check(dbaHeader("ru29-2026-074-0-0", kSensors, "timestamp lat lon enum cm/s cm/s m"),
-          "16: sensor 'm_water_vx' is in 'cm/s': m/s expected");
+    check(dbaHeader("ru29-2026-074-0-0", kSensors, "timestamp lat lon enum degC degC m"),
+          "16: 'm_water_vx' is in 'degC': units 'degC' are not a velocity");
     check("the_label: x\n" + header.substr(header.find('\n') + 1), "1: not a Slocum dba file");
     check(header.substr(0, header.find("num_ascii_tags")) + "all_sensors 0\n",
           "3: the header has no num_ascii_tags line");
@@ -389,7 +400,7 @@ TEST_F(GliderRealtime, DbaRejectsPlaceholdersHalfFixesAndOtherGliders)
     EXPECT_EQ(o.lastFix->time, t + 9600);
     EXPECT_EQ(o.rejected, (std::map<std::string, std::size_t>{{"GPS status 1 (m_gps_status)", 1},
                                                               {"another glider ('sg512')", 1},
-                                                              {"faster than 3 m/s", 1},
+                                                              {"faster than 3 m/s (u, v read in 'm/s')", 1},
                                                               {"fill value", 1},
                                                               {"no GPS fix (69696969)", 1},
                                                               {"no GPS fix (m_gps_lat or m_gps_lon NaN)", 1},

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/StopRequest.h"
 #include "ompl_glider/execution/Reflight.h"
 #include "ompl_glider/mission/Fleet.h"
 #include "ompl_glider/mission/MissionLegs.h"
@@ -311,4 +312,98 @@ TEST(MissionLegs, FleetGliderWithViaPointsPlansAsItsOwnMission)
     ASSERT_EQ(r.legs.size(), 2u);
     EXPECT_DOUBLE_EQ(fleet[0].row.travelTime, r.plan.travelTime);
     EXPECT_TRUE(fleetGliderMission(m, 1).waypoints.empty());
+}
+
+// A via point's window may give one end only. With only its begin, the glider does not arrive before it (it holds
+// where the current lets it, here in a weak uniform current); with only its end, an arrival before it is kept. The
+// same window dated against an epoch is no error. Closed forms: straight legs in a uniform current.
+TEST(MissionLegs, AWindowWithOneEndOnlyIsKept)
+{
+    const std::string base = "current: {type: uniform, parameters: {u: 0.1, v: 0}}\n"
+                             "region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
+                             "start: {x: 1, y: 0}\ngoal: {x: 9, y: 0}\nvehicle: {speed: 0.5}\n";
+    // the straight leg to M (5, 0) takes 4 / 0.6 = 6.67: the window opens at 20
+    for (const std::string &begin : {std::string("20"), std::string("'2026-06-01T20:00:00Z'")})
+    {
+        const std::string epoch = begin == "20" ? "" : "units: {time_s: 3600}\nepoch: '2026-06-01T00:00:00Z'\n";
+        const MissionSpec m =
+            parseMission(base + epoch + "waypoints:\n  - {name: M, x: 5, y: 0, arrive: {begin: " + begin + "}}\n");
+        const MissionResult r = runMission(MissionProblem(m));
+        ASSERT_TRUE(r.plan.solved) << begin << ": " << r.plan.reason;
+        ASSERT_EQ(r.legs.size(), 2u);
+        EXPECT_GE(r.legs[0].arrival(), 20.0 - 1e-9) << begin;
+        EXPECT_LT(r.legs[0].arrival(), 20.0 + 1e-6) << begin;  // the earliest arrival in the window
+        EXPECT_NEAR(r.plan.travelTime, 20.0 + 4.0 / 0.6, 1e-6) << begin;
+    }
+    // an end only: the fastest arrival (6.67) is within it
+    const MissionSpec e = parseMission(base + "waypoints:\n  - {name: M, x: 5, y: 0, arrive: {end: 10}}\n");
+    const MissionResult r = runMission(MissionProblem(e));
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    EXPECT_NEAR(r.legs[0].arrival(), 4.0 / 0.6, 1e-6);
+    // and one that closes before the glider can get there is refused naming it
+    expectRefused([&] { runMission(MissionProblem(parseMission(
+                            base + "waypoints:\n  - {name: M, x: 5, y: 0, arrive: {end: 3}}\n"))); },
+                  "waypoints[0].arrive.end", "a window closing at 3");
+}
+
+// A via point may not be named as the goal or the start in any case: the Seaglider targets file would hold two GOAL
+// targets (goto=GOAL ambiguous).
+TEST(MissionLegs, ViaPointNamesAreComparedWithoutCase)
+{
+    for (const char *name : {"GOAL", "Goal", "START"})
+        expectRefused([&] { mission(kJet, kJetRegion, {1, -3}, {8, 3}, {}, "waypoints:\n  - {name: " +
+                                                                                std::string(name) + ", x: 3, y: 2}\n"); },
+                      "names the mission's", name);
+    expectRefused([&] { mission(kJet, kJetRegion, {1, -3}, {8, 3}, {},
+                                "waypoints:\n  - {name: A1, x: 3, y: 2}\n  - {name: a1, x: 5, y: 0}\n"); },
+                  "names another via point", "A1 and a1");
+}
+
+// The free order with stays and windows (begin only, end only, both) is still the best of all orders planned by the
+// same pipeline: the bounds that prune (a window that closes before the glider can reach it, one that opens late)
+// hold with them.
+TEST(MissionLegsFreeOrder, BestOfAllOrdersWithStaysAndWindows)
+{
+    MissionSpec m = parseMission("current: {type: meandering_jet}\nregion: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
+                                 "start: {x: 1, y: -3}\ngoal: {x: 8, y: 3}\nvehicle: {speed: 0.5}\n"
+                                 "planner: {grid_size: 0.8, global_check: false}\n"
+                                 "waypoints:\n"
+                                 "  - {name: A, x: 3, y: 3, stay: 1}\n"
+                                 "  - {name: B, x: 6, y: -3, arrive: {begin: 12}}\n"
+                                 "  - {name: C, x: 5, y: 3, arrive: {end: 30}}\n"
+                                 "  - {name: D, x: 2, y: -3, stay: 0.5, arrive: {begin: 2, end: 40}}\n");
+    m.order = VisitOrder::Free;
+    const MissionPlan free = planMission(MissionProblem(m), 0.0);
+    std::size_t orders = 0;
+    const double best = bestOfAllOrders(m, orders);
+    ASSERT_TRUE(std::isfinite(best)) << "no order keeps the windows";
+    ASSERT_TRUE(free.plan.solved) << free.plan.reason;
+    ASSERT_TRUE(free.orderSearch.has_value());
+    EXPECT_TRUE(free.orderSearch->stopped.empty()) << free.orderSearch->stopped;
+    EXPECT_NEAR(free.plan.travelTime, best, 1e-9 * best);
+    EXPECT_LT(free.orderSearch->ordersEvaluated, orders);  // the windows pruned some orders unplanned
+}
+
+// A stop request (Ctrl-C in Python, a signal on the command line) ends the free-order search at its next leg: the
+// given order's plan stands, and the search says it was not finished.
+TEST(MissionLegsFreeOrder, AStopRequestEndsTheSearchWithTheBestSoFar)
+{
+    MissionSpec m = mission(kJet, kJetRegion, {1, -3}, {8, 3}, {{3, 2}, {6, -2}, {5, 0.5}, {2, 0}},
+                            "planner: {grid_size: 0.8, global_check: false}\n");
+    m.order = VisitOrder::Free;
+    const MissionProblem problem(m);
+    struct Clear
+    {
+        ~Clear() { clearStop(); }
+    } clear;
+    requestStop();
+    const MissionPlan stopped = planMission(problem, 0.0);
+    clearStop();
+    ASSERT_TRUE(stopped.orderSearch.has_value());
+    EXPECT_EQ(stopped.orderSearch->stopped, "a stop request");
+    EXPECT_EQ(stopped.orderSearch->ordersEvaluated, 1u);  // the given order only
+    const MissionPlan whole = planMission(problem, 0.0);
+    ASSERT_TRUE(whole.orderSearch.has_value());
+    EXPECT_TRUE(whole.orderSearch->stopped.empty());
+    EXPECT_GT(whole.orderSearch->ordersEvaluated, 1u);
 }

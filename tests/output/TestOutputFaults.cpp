@@ -9,9 +9,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <sstream>
 #include <string>
+#include <thread>
 
+#include <pthread.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -383,4 +386,65 @@ TEST(OutputFaults, DatesOutsideTheYears0To9999AreRefused)
     EXPECT_EQ(formatIsoTime(-62167219200.0), "0000-01-01T00:00:00Z");
     EXPECT_THROW(formatIsoTime(253402300800.0), Error);  // would be 10000-01-01T00:00:00Z
     EXPECT_THROW(formatIsoTime(-62167219201.0), Error);
+}
+
+// A SIGTERM at any moment of a write, taken by another thread of the process than the one writing (a planner's
+// worker: a process-directed signal goes to any thread that does not block it), never ends the process by the signal
+// once the new outputs stand: ended by SIGTERM, the directory holds the earlier run's complete outputs; ended
+// normally, the new ones. The handler reads the write's state once (one atomic), so the main thread's commit cannot
+// change it between two of its reads. Random moments over the write's span, many times.
+TEST(OutputFaults, ASignalOnAnotherThreadAtAnyMomentLeavesOneCompleteRun)
+{
+    const fs::path root = freshDirectory("signal_any_thread");
+    const fs::path dir = root / "out";
+    const auto oldFiles = runFiles("old", {"waypoints.csv"});
+    const auto newFiles = runFiles("new", {"waypoints.csv", "path.csv", "track.csv"});
+    const auto oldSet = expected(oldFiles, root / "scratch_old");
+    const auto newSet = expected(newFiles, root / "scratch_new");
+    std::mt19937 rng(17);
+    std::uniform_int_distribution<int> delay(0, 3000);  // microseconds after the write begins
+    int bySignal = 0, finished = 0;
+    for (int run = 0; run < 60; ++run)
+    {
+        fs::remove_all(dir);
+        writeOutputFiles(dir.string(), oldFiles);
+        const int wait = delay(rng);
+        const pid_t child = ::fork();
+        ASSERT_GE(child, 0);
+        if (child == 0)
+        {
+            installOutputSignalHandlers();
+            clearStop();
+            // the worker takes the signal while the main thread writes
+            std::thread worker([wait] {
+                ::usleep(static_cast<useconds_t>(wait));
+                ::pthread_kill(::pthread_self(), SIGTERM);
+                for (;;)
+                    ::pause();
+            });
+            worker.detach();
+            writeOutputFiles(dir.string(), newFiles);
+            ::usleep(5000);  // the worker's signal, if not yet sent, comes while the outputs stand
+            ::_exit(0);
+        }
+        int status = 0;
+        ::waitpid(child, &status, 0);
+        if (WIFSIGNALED(status))
+        {
+            ASSERT_EQ(WTERMSIG(status), SIGTERM);
+            ++bySignal;
+            EXPECT_EQ(snapshot(dir), oldSet) << "run " << run << ": ended by the signal, yet the outputs changed";
+        }
+        else
+        {
+            ASSERT_TRUE(WIFEXITED(status));
+            EXPECT_EQ(WEXITSTATUS(status), 0);
+            ++finished;
+            EXPECT_EQ(snapshot(dir), newSet) << "run " << run << ": finished, yet the new outputs are not whole";
+        }
+        EXPECT_EQ(stagingDirectories(root), 0u) << "run " << run;
+    }
+    // both outcomes met: the moments spanned the write
+    EXPECT_GT(bySignal, 0);
+    EXPECT_GT(finished, 0);
 }

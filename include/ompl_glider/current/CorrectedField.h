@@ -149,7 +149,8 @@ protected:
     Jacobian evaluateJacobian(double x, double y, double z, double t) const override;
 
 private:
-    /// The sums of |alpha_u| and |alpha_v| (and of |alpha|) over the observations that reach @p region.
+    /// The sums of |alpha_u| and |alpha_v| (and of |alpha|) over the observations that reach @p region, each at most
+    /// what the data support (uLow_ ... vHigh_), plus the mean's bound.
     void reach(const Region &region, double &su, double &sv, double &s) const;
     /// Adds the correction (and, with @p j, its Jacobian) at (x, y, t).
     void addCorrection(double x, double y, double t, Velocity &c, Jacobian *j) const;
@@ -165,6 +166,9 @@ private:
     std::vector<DacObservation> used_;    // by time
     std::vector<Node> nodes_;             // the superobservations, by time
     std::vector<double> alphaU_, alphaV_; // their weights (innovations less their mean)
+    /// What the data support: the interpolated part of the correction stays within the range of the superobservations'
+    /// innovations (less their mean) and zero, per component, however ill-conditioned their system
+    double uLow_{0.0}, uHigh_{0.0}, vLow_{0.0}, vHigh_{0.0};
     CorrectionSummary summary_;
 };
 } // namespace ompl_glider

@@ -227,6 +227,9 @@ VisitOrder parseVisitOrder(const std::string &name);
 /// @brief True for a via point's name: a letter, then letters, digits, '_' or '-', at most 16 characters (it is
 /// written into the Seaglider targets file).
 bool plainViaPointName(const std::string &name);
+/// @brief @p name as names are compared (in lower case: the Seaglider's targets file and a pilot reading it do not
+/// tell GOAL from goal); no via point's key may be another's, "start" or "goal".
+std::string viaPointKey(const std::string &name);
 /// @brief The most via points `order: free` accepts (the search is exponential in their number).
 constexpr std::size_t kMaxFreeOrderViaPoints = 8;
 

@@ -43,7 +43,7 @@
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/LocalProjection.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
-#include "ompl_glider/current/UnitConversion.h"
+#include "ompl_glider/io/UnitConversion.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider

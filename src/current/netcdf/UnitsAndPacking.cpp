@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "NetCdfInternal.h"
-#include "ompl_glider/current/UnitConversion.h"
+#include "ompl_glider/io/UnitConversion.h"
 
 namespace ompl_glider
 {

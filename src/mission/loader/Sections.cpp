@@ -21,7 +21,7 @@
 #include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/io/FileList.h"
 #if OMPL_GLIDER_WITH_NETCDF
-#include "ompl_glider/current/UnitConversion.h"
+#include "ompl_glider/io/UnitConversion.h"
 #endif
 
 namespace ompl_glider::mission_loader
@@ -676,7 +676,14 @@ void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (n["replan_every"])
         e.replanEvery = static_cast<unsigned>(r.integer(n["replan_every"], f + ".replan_every", 1, 100000));
     if (n["dac_noise"])
+    {
         e.dacNoise = r.nonNegative(n["dac_noise"], f + ".dac_noise");
+        if (std::find(e.strategies.begin(), e.strategies.end(), "dac") == e.strategies.end() &&
+            std::find(e.strategies.begin(), e.strategies.end(), "replan_observed") == e.strategies.end())
+            r.fail(n["dac_noise"], f + ".dac_noise",
+                   "no strategy measures a DAC, so the noise on it would change nothing: add dac or replan_observed "
+                   "to execution.strategies, or leave dac_noise out");
+    }
     if (n["batch"])
     {
         const YAML::Node &b = n["batch"];

@@ -1,6 +1,7 @@
 // The mission's `waypoints` list (via points between start and goal) and `order`: read and checked field by field.
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <set>
 
@@ -15,6 +16,16 @@ namespace ompl_glider
 const char *visitOrderName(VisitOrder o)
 {
     return o == VisitOrder::Free ? "free" : "given";
+}
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+std::string viaPointKey(const std::string &name)
+{
+    std::string key = name;
+    for (char &c : key)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return key;
 }
 
 bool plainViaPointName(const std::string &name)
@@ -61,7 +72,9 @@ double scalar(const Reader &r, const YAML::Node &n, const std::string &f, const 
 void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &field, std::vector<ViaPointSpec> &out,
                    const MissionSpec &m)
 {
-    if (!n.IsSequence() || n.size() == 0)
+    if (n.IsSequence() && n.size() == 0)
+        r.fail(n, field, "the list is empty: give at least one via point, or leave '" + field + "' out");
+    if (!n.IsSequence())
         r.fail(n, field,
                "expected a list of via points, each {name, lon, lat} or {name, x, y} (radius, arrive, "
                "stay optional)");
@@ -88,11 +101,11 @@ void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &fiel
                    "'" + v.name +
                        "' is not a plain name (a letter, then letters, digits, '_' or '-'; at most 16 "
                        "characters: it is written into the Seaglider targets file)");
-        if (!names.insert(v.name).second)
+        if (const std::string key = viaPointKey(v.name); !names.insert(key).second)
             r.fail(w["name"] ? w["name"] : w, f + ".name",
                    "'" + v.name + "' names " +
-                       (v.name == "start" || v.name == "goal" ? "the mission's " + v.name : "another via point") +
-                       " too: give every via point its own name");
+                       (key == "start" || key == "goal" ? "the mission's " + key : "another via point") +
+                       " too (names are compared without case): give every via point its own name");
         if (w["radius"])
         {
             const bool metres = m.physicalUnits().length;
@@ -119,8 +132,9 @@ void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &fiel
             if (!a["begin"] && !a["end"])
                 r.fail(a, g, "give begin, end or both (the earliest and the latest accepted arrival)");
             v.arrive.set = true;
-            v.arrive.begin = a["begin"] ? r.time(a["begin"], g + ".begin", m) : -1e300;
-            v.arrive.end = a["end"] ? r.time(a["end"], g + ".end", m) : 1e300;
+            // an end not given is open (infinite): any arrival after the begin, or before the end, is accepted
+            v.arrive.begin = a["begin"] ? r.time(a["begin"], g + ".begin", m) : -kInfinity;
+            v.arrive.end = a["end"] ? r.time(a["end"], g + ".end", m) : kInfinity;
             if (!(v.arrive.end >= v.arrive.begin))
                 r.fail(a["end"], g + ".end", "the window ends before it begins");
             const double departure = m.departure.window ? m.departure.begin : m.departure.time;

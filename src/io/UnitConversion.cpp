@@ -1,6 +1,6 @@
 // Unit strings read with UDUNITS-2: the database loaded once, every call serialised (UDUNITS-2's parser keeps
 // global state), its error messages silenced while it runs.
-#include "ompl_glider/current/UnitConversion.h"
+#include "ompl_glider/io/UnitConversion.h"
 
 #include <udunits2.h>
 
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "../io/TextUtil.h"
+#include "TextUtil.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
