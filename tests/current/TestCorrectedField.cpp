@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 #include <vector>
@@ -230,4 +231,33 @@ TEST(CorrectedField, ManyNoisyReadingsStayWithinTheirRange)
     const Velocity c = f.correction(4.0, -1.0, 3.33);
     EXPECT_NEAR(c.u, 0.1, 0.03);
     EXPECT_NEAR(c.v, -0.05, 0.03);
+}
+
+// Many superobservations: the correction sampled on a grid of a quarter of the scales reads as the exact sum over the
+// superobservations (to a small fraction of the innovations), and its Jacobian as the exact one's.
+TEST(CorrectedField, TheSampledCorrectionIsTheExactSum)
+{
+    auto jet = std::make_shared<MeanderingJet>();
+    const DriftedJet truth(0.1, -0.05);
+    const std::vector<DacObservation> obs = track(truth, 120, 0.03, 23);
+    CorrectionParams sampled{1.0, 3.0, 0.2};
+    CorrectionParams exact = sampled;
+    exact.sampleAbove = std::numeric_limits<std::size_t>::max();
+    const CorrectedField a(jet, obs, sampled), b(jet, obs, exact);
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> ux(-2, 30), uy(-6, 12), ut(-10, 75);
+    double worst = 0.0, worstJ = 0.0, largest = 0.0;
+    for (int i = 0; i < 4000; ++i)
+    {
+        const double x = ux(rng), y = uy(rng), t = ut(rng);
+        const Velocity ca = a.correction(x, y, t), cb = b.correction(x, y, t);
+        worst = std::max({worst, std::abs(ca.u - cb.u), std::abs(ca.v - cb.v)});
+        largest = std::max({largest, std::abs(cb.u), std::abs(cb.v)});
+        const Jacobian ja = a.jacobian(x, y, 0, t), jb = b.jacobian(x, y, 0, t);
+        worstJ = std::max({worstJ, std::abs(ja.ux - jb.ux), std::abs(ja.uy - jb.uy), std::abs(ja.vx - jb.vx),
+                           std::abs(ja.vy - jb.vy)});
+    }
+    EXPECT_GT(largest, 0.05);           // the points met the correction
+    EXPECT_LT(worst, 0.01 * largest);   // linear in time over a quarter of T: about 1 % at most
+    EXPECT_LT(worstJ, 0.05 * largest);  // per length scale (L = 1)
 }

@@ -22,6 +22,8 @@
 
 namespace ompl_glider
 {
+class GriddedCurrentField;
+
 /// @brief One depth-averaged current measured by a glider, in the planning frame.
 struct DacObservation
 {
@@ -56,6 +58,10 @@ struct CorrectionParams
     /// Seconds per field time unit, to fit the tides (whose periods are in hours); 0: the time unit is unknown, no
     /// tidal fit
     double secondsPerTimeUnit{0.0};
+    /// With more superobservations than this, the interpolated correction is sampled once on a grid of a quarter of
+    /// the scales (bicubic in space, linear in time) and read from it: a velocity then costs the same whatever the
+    /// number of DAC. At or below it, the exact sum over the superobservations.
+    std::size_t sampleAbove{24};
 };
 
 /// @brief The innovations' large-scale mean, carried ahead of the glider: a bias and tidal constituents, fading with
@@ -166,6 +172,13 @@ private:
     std::vector<DacObservation> used_;    // by time
     std::vector<Node> nodes_;             // the superobservations, by time
     std::vector<double> alphaU_, alphaV_; // their weights (innovations less their mean)
+    /// The interpolated part sampled on a grid (CorrectionParams::sampleAbove; null: the exact sum), and the box
+    /// and span it covers (the superobservations' extent and the cut-off beyond it: zero outside)
+    std::shared_ptr<const GriddedCurrentField> sampled_;
+    double sampleXMin_{0.0}, sampleXMax_{0.0}, sampleYMin_{0.0}, sampleYMax_{0.0}, sampleTMin_{0.0}, sampleTMax_{0.0};
+    /// Samples the interpolated part on its grid (sampled_), when there are more superobservations than
+    /// CorrectionParams::sampleAbove and the grid stays within a few million nodes.
+    void sample();
     /// What the data support: the interpolated part of the correction stays within the range of the superobservations'
     /// innovations (less their mean) and zero, per component, however ill-conditioned their system
     double uLow_{0.0}, uHigh_{0.0}, vLow_{0.0}, vHigh_{0.0};
