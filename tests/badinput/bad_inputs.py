@@ -945,6 +945,24 @@ yaml_case("no-path-vortex-fallback-time-limit",
           "search before a path was found: raise it (planner.time_limit, --time-limit)", status=1)
 
 
+# --- forecast values and sources that are not what they seem: the message names the source, not a planner field --
+# velocities no current reaches, not fill values (a fill value not declared): the file, the variable, the value, where
+nc_case("nc-velocity-1e30", forecast(u="1e30"), "NetCDF file 'f.nc': variable 'u' holds 1e+30 m/s at (j, i) = (0, 0)")
+nc_case("nc-velocity-1e38-one-node", forecast(u=", ".join(["0.1"] * 50 + ["1e38"] + ["0.1"] * 57)),
+        "variable 'u' holds 1e+38 m/s at (j, i) = (2, 2), lon -52.6, lat 47.4, record 1 of 'time'")
+case("yaml-velocity-1e30", ["--mission", "m.yaml", "--out", "{out}"], 2, "variable 'u' holds 1e+30 m/s",
+     {"f.cdl": forecast(u="1e30"), "m.yaml": "current: {type: netcdf, file: f.nc}\nstart: {lon: -52.9, lat: 47.1}\n"
+                                             "goal: {lon: -52.1, lat: 47.9}\n"})
+# a flow within that bound yet far faster than the glider: the level set's step count blames the current
+case("levelset-current-far-faster", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:2: field 'current': the currents reach 200 (400 times the vehicle's speed of 0.5): the level set would "
+     "take up to 5.56e+06 time steps",
+     {"m.yaml": mission("current: {type: uniform, parameters: {u: 200, v: 0.0}}", "planner: {name: LevelSet}")})
+nc_case("nc-currents-far-faster-levelset", forecast(u="250"),
+        "f.nc: field 'current': the currents reach 250 (833 times the vehicle's speed of 0.3)",
+        extra=("--planner", "LevelSet", "--beyond", "hold"))
+
+
 # ---------------------------------------------------------------------------------------------------------------
 def snapshot(root):
     """Every file below root with its content hash (the output directory must not change)."""
