@@ -211,6 +211,76 @@ def grib_as_netcdf(grib, like, path):
     out.to_netcdf(path, encoding={n: {"dtype": "f8"} for n in ("uo", "vo")})
 
 
+WIDE = ["--start=-75.5,29.5", "--goal=-66.5,37.5", "--speed", "0.5", "--departure", "2026-06-01T03:00:00Z",
+        "--beyond", "hold"]
+
+
+def rewrite_values(store, ds):
+    """Writes the velocities of @p ds into @p store in place: its .zarray/.zattrs/.zmetadata and coordinates kept
+    to the byte (checked)."""
+    import zarr
+    names = [os.path.join(d, f) for d in (store, os.path.join(store, "uo"), os.path.join(store, "time"))
+             for f in (".zmetadata", ".zarray", ".zattrs") if os.path.exists(os.path.join(d, f))]
+    names += [os.path.join(store, "time", f) for f in os.listdir(os.path.join(store, "time")) if f[0] != "."]
+    before = {n: open(n, "rb").read() for n in names}
+    group = zarr.open_group(store, mode="r+")
+    for name in ("uo", "vo"):
+        group[name][...] = ds[name].values
+    return all(open(n, "rb").read() == b for n, b in before.items())
+
+
+def check_rewritten_values(glider, work, root, geo_chunked, time_chunked, server, ds):
+    """A store whose values are rewritten (same metadata, same coordinates): over HTTP with --cache, a trip beyond
+    the cache is refused naming the chunk that changed and the folder to remove (the plan would mix the cached
+    chunks with the new ones), then, the folder removed, plans as the new values in NetCDF; on disk (no cache) the
+    new values are read at once."""
+    new = ds.copy(deep=True)
+    # another flow: the jet and the island moved 10 rows north, v reversed
+    new["uo"].values[...] = np.roll(ds["uo"].values, 10, axis=2)
+    new["vo"].values[...] = -np.roll(ds["vo"].values, 10, axis=2)
+    new_nc = os.path.join(work, "rewritten.nc")
+    new.to_netcdf(new_nc)
+    p = plan(glider, ["--currents", new_nc, "--out", os.path.join(work, "o_rw_nc")] + WIDE)
+    check(p.returncode == 0, "rewritten values in NetCDF plan (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
+    if p.returncode:
+        return
+    t_new = travel_time(os.path.join(work, "o_rw_nc"))
+    store = os.path.join(root, "rewritten.zarr")
+    shutil.copytree(geo_chunked, store)
+    url = "http://127.0.0.1:%d/rewritten.zarr" % server.server_address[1]
+    cache = os.path.join(work, "cache_rw")
+    p = plan(glider, ["--currents", url, "--cache", cache, "--out", os.path.join(work, "o_rw_first")] + TRIP)
+    check(p.returncode == 0, "rewritten: the first run fills the cache (exit %d: %s)" % (p.returncode,
+                                                                                       p.stderr[-300:]))
+    time.sleep(1.1)  # a Last-Modified of another second (the loopback server gives no ETag)
+    check(rewrite_values(store, new), "rewritten: the store's metadata and coordinates unchanged to the byte")
+    out = os.path.join(work, "o_rw_mixed")
+    p = plan(glider, ["--currents", url, "--cache", cache, "--out", out] + WIDE)
+    check(p.returncode == 2 and "differs from the cache's" in p.stderr and "would be mixed" in p.stderr and
+          url in p.stderr and cache in p.stderr, "rewritten values over HTTP, a trip beyond the cache: exit 2 naming "
+          "the chunk, the URL and the cache folder (exit %d: %s)" % (p.returncode, p.stderr[-400:]))
+    check(not os.path.exists(out), "rewritten values over HTTP: no output directory")
+    # the same trip within the cache: the cached forecast as a whole (a snapshot), no request
+    before = len(server.asked)
+    p = plan(glider, ["--currents", url, "--cache", cache, "--out", os.path.join(work, "o_rw_snapshot")] + TRIP)
+    check(p.returncode == 0 and server.asked[before:] == [] and
+          travel_time(os.path.join(work, "o_rw_snapshot")) == travel_time(os.path.join(work, "o_rw_first")),
+          "rewritten values, a trip within the cache: the cached snapshot, no request (exit %d)" % p.returncode)
+    shutil.rmtree(cache)
+    p = plan(glider, ["--currents", url, "--cache", cache, "--out", os.path.join(work, "o_rw_fresh")] + WIDE)
+    check(p.returncode == 0 and abs(travel_time(os.path.join(work, "o_rw_fresh")) - t_new) <= 1e-12 * t_new,
+          "rewritten values over HTTP, the cache removed: the new values' travel time (exit %d: %s)" %
+          (p.returncode, p.stderr[-300:]))
+    # on disk: no cache, the values as they are now
+    local = os.path.join(work, "local_rw.zarr")
+    shutil.copytree(time_chunked, local)
+    p = plan(glider, ["--currents", local, "--out", os.path.join(work, "o_rw_local0")] + WIDE)
+    check(rewrite_values(local, new), "rewritten on disk: metadata and coordinates unchanged to the byte")
+    p = plan(glider, ["--currents", local, "--out", os.path.join(work, "o_rw_local")] + WIDE)
+    check(p.returncode == 0 and abs(travel_time(os.path.join(work, "o_rw_local")) - t_new) <= 1e-12 * t_new,
+          "rewritten values on disk: the new values' travel time (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
+
+
 def main():
     glider = sys.argv[1]
     work = tempfile.mkdtemp(prefix="ompl_glider_gdal_")
@@ -320,6 +390,9 @@ def main():
         if p.returncode == 0:
             notes = json.dumps(json.load(open(os.path.join(out, "summary.json"))))
             check("elsewhere.example" in notes, "cache: the report names the folder's other source")
+
+        # 2c. values rewritten under the same metadata and coordinates: never old chunks beside new ones
+        check_rewritten_values(glider, work, root, geo_chunked, time_chunked, server, ds)
 
         # 3. garbage: a store whose metadata is not JSON, served; a chunk that is not blosc, on disk
         bad = os.path.join(root, "bad.zarr")
