@@ -2,6 +2,7 @@
 #include "HttpMirror.h"
 
 #include <algorithm>
+#include <cctype>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -504,6 +505,77 @@ std::optional<bool> httpHead(const std::string &url, std::size_t record, std::st
     if (r)
         CPLHTTPDestroyResult(r);
     return held;
+}
+
+namespace
+{
+/// One GET of @p url (one attempt, the request time limit, nothing counted): its HTTP status (0: no answer; 200 for
+/// an answer without error), body and content type.
+int probe(const std::string &url, std::string &body, std::string &type)
+{
+    const std::string limit = std::to_string(std::max(1L, std::lround(remoteAccess().requestTimeout)));
+    const std::string timeout = "TIMEOUT=" + limit, connect = "CONNECTTIMEOUT=" + limit;
+    const char *options[] = {timeout.c_str(), connect.c_str(), "MAX_RETRY=0", nullptr};
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    CPLHTTPResult *r = CPLHTTPFetch(url.c_str(), options);
+    CPLPopErrorHandler();
+    CPLErrorReset();
+    if (!r)
+        return 0;
+    const std::string errors = r->pszErrBuf ? r->pszErrBuf : "";
+    const int status = r->nStatus != 0 ? 0
+                       : errors.rfind("HTTP error code : ", 0) == 0 ? std::atoi(errors.c_str() + 18) : 200;
+    body.assign(r->pabyData ? reinterpret_cast<const char *>(r->pabyData) : "",
+                r->pabyData ? static_cast<std::size_t>(std::min(r->nDataLen, 65536)) : 0);
+    type = r->pszContentType ? r->pszContentType : "";
+    CPLHTTPDestroyResult(r);
+    return status;
+}
+
+bool looksHtml(const std::string &body, const std::string &type)
+{
+    std::string head;
+    for (const char c : body.substr(0, 256))
+        head += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::size_t at = head.find_first_not_of(" \t\r\n");
+    head = at == std::string::npos ? "" : head.substr(at);
+    std::string t;
+    for (const char c : type)
+        t += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return t.find("html") != std::string::npos || head.rfind("<!doctype html", 0) == 0 || head.rfind("<html", 0) == 0;
+}
+}  // namespace
+
+std::string notDapAnswer(const std::string &given)
+{
+    std::string url = given;
+    while (!url.empty() && url.front() == '[')  // NetCDF-C's [mode=dap4] prefixes
+    {
+        const std::size_t close = url.find(']');
+        if (close == std::string::npos)
+            return "";
+        url = url.substr(close + 1);
+    }
+    const std::string shown = withoutCredentials(url);
+    for (const char *key : {".zmetadata", ".zgroup", ".zarray"})
+    {
+        std::string body, type;
+        if (probe(keyUrl(url, key), body, type) == 200 && !looksHtml(body, type) &&
+            body.find_first_not_of(" \t\r\n") != std::string::npos &&
+            body[body.find_first_not_of(" \t\r\n")] == '{')
+            return std::string("the server holds a Zarr store there (its '") + key + "' found), not an OPeNDAP "
+                   "dataset: give it as 'ZARR:" + shown + "' (a store's URL ending in .zarr is read as one)";
+    }
+    std::string body, type;
+    const std::size_t q = url.find('?');
+    const std::string ddsUrl = url.substr(0, q) + ".dds" + (q == std::string::npos ? "" : url.substr(q));
+    const int status = probe(ddsUrl, body, type);
+    if (status == 0 || !looksHtml(body, type))
+        return "";
+    return "the server answered an HTML page" + (status != 200 ? " (HTTP " + std::to_string(status) + ")" : "") +
+           ", not an OPeNDAP description, for '" + withoutCredentials(ddsUrl) + "': expected an OPeNDAP (DAP2) "
+           "dataset URL (THREDDS dodsC, Hyrax, ERDDAP griddap), a Zarr store's URL ending in .zarr (or given as "
+           "ZARR:URL), or a GRIB file's URL ending in .grib2";
 }
 
 FileMirror::FileMirror(const std::string &url, const std::string &extension, const std::string &kind)

@@ -48,6 +48,12 @@ bool httpGet(const std::string &url, std::size_t record, const std::string &who,
 /// server holds it, false for 404; nullopt when the server gives no usable answer (no HEAD, the network).
 std::optional<bool> httpHead(const std::string &url, std::size_t record, std::string &validator);
 
+/// Why the server at @p url is no OPeNDAP (DAP2/DAP4) endpoint, asked once after NetCDF-C failed to open it: its
+/// answer to the DAP2 description ("<url>.dds") is an HTML page (a web page, a listing, an error page), or it holds
+/// a Zarr store there (its `.zmetadata`, `.zgroup` or `.zarray`); "" when neither (NetCDF-C's own message stands).
+/// Never quotes the page.
+std::string notDapAnswer(const std::string &url);
+
 /// A file over HTTP (a GRIB file) fetched whole, once: into the cache folder (a later run reads it there, no
 /// request), or GDAL's memory without a cache.
 class FileMirror

@@ -281,6 +281,57 @@ def check_rewritten_values(glider, work, root, geo_chunked, time_chunked, server
           "rewritten values on disk: the new values' travel time (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
 
 
+def check_cut_grib(glider, work, grib):
+    """A GRIB2 file cut inside a message, and at the end of a message (the VOGRD messages after it lost): exit 2
+    naming the file and what is wrong with it, never "no northward (v) velocity"."""
+    import struct
+    data = open(grib, "rb").read()
+    ends, at = [], 0
+    while at < len(data):
+        at += struct.unpack(">Q", data[at + 8:at + 16])[0]
+        ends.append(at)
+    cut = os.path.join(work, "cut.grib2")
+    for label, size, phrase in (("inside a message", len(data) // 2 + 7, "the file is truncated"),
+                                ("at a message's end", ends[len(ends) // 2 - 1], "holds UOGRD but no VOGRD")):
+        with open(cut, "wb") as f:
+            f.write(data[:size])
+        p = plan(glider, ["--currents", cut, "--out", os.path.join(work, "o_cut")] + TRIP)
+        check(p.returncode == 2 and "GRIB file '%s'" % cut in p.stderr and phrase in p.stderr and
+              "velocity found" not in p.stderr, "GRIB2 cut %s: exit 2 naming the file, '%s' (exit %d: %s)" %
+              (label, phrase, p.returncode, p.stderr[-300:]))
+        check(not os.path.exists(os.path.join(work, "o_cut")), "GRIB2 cut %s: no output directory" % label)
+
+
+def check_not_dap(glider, work, root, server, t_nc):
+    """A Zarr store served at a URL without .zarr (taken for OPeNDAP) and a web page: exit 2 saying what the server
+    holds and what was expected, the page never printed; the store given as ZARR:URL plans as the NetCDF file."""
+    port = server.server_address[1]
+    os.symlink("geo.zarr", os.path.join(root, "geostore"))
+    bare = "http://127.0.0.1:%d/geostore" % port
+    page = "http://127.0.0.1:%d/page" % port
+    with open(os.path.join(root, "page"), "w") as f:
+        f.write("<html><body>a landing page</body></html>")
+    mission = os.path.join(work, "bare.yaml")
+    with open(mission, "w") as f:
+        f.write("current: {type: netcdf, file: '%s'}\nstart: {lon: -74.2, lat: 30.4}\ngoal: {lon: -72.1, lat: 32.3}\n"
+                "vehicle: {speed: 0.5}\ndeparture: {time: 2026-06-01T03:00:00Z}\n" % bare)
+    for label, args, phrases in (
+            ("a store's URL without .zarr", ["--currents", bare] + TRIP, [bare, "ZARR:" + bare, "Zarr store"]),
+            ("the same in a mission file", ["--mission", mission], ["bare.yaml", "ZARR:" + bare]),
+            ("a web page", ["--currents", page] + TRIP, [page, "HTML page", "ending in .zarr"])):
+        out = os.path.join(work, "o_notdap")
+        p = plan(glider, args + ["--out", out])
+        lines = p.stderr.strip().splitlines()
+        check(p.returncode == 2 and all(x in p.stderr for x in phrases) and "<html" not in p.stderr.lower() and
+              "<!doctype" not in p.stderr.lower() and len(lines) <= 3 and not os.path.exists(out),
+              "%s: exit 2 saying what the server holds, no HTML, no output (exit %d: %s)" %
+              (label, p.returncode, p.stderr[-400:]))
+    out = os.path.join(work, "o_zarr_prefix")
+    p = plan(glider, ["--currents", "ZARR:" + bare, "--out", out] + TRIP)
+    check(p.returncode == 0 and travel_time(out) == t_nc, "the store as ZARR:URL plans as the NetCDF file (exit %d: "
+          "%s)" % (p.returncode, p.stderr[-300:]))
+
+
 def main():
     glider = sys.argv[1]
     work = tempfile.mkdtemp(prefix="ompl_glider_gdal_")
@@ -342,6 +393,9 @@ def main():
         p = plan(glider, ["--currents", nested_url, "--out", out] + TRIP)
         check(p.returncode == 0 and travel_time(out) == t_nc, "a nested store over HTTP: the NetCDF file's travel "
               "time (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
+
+        # 2a'. a store's URL without .zarr, and a web page, where NetCDF-C expects OPeNDAP
+        check_not_dap(glider, work, root, server, t_nc)
 
         # 2b. the cache: the first run fills it, the second asks the server nothing; a republished store is refused
         cache = os.path.join(work, "cache")
@@ -458,6 +512,8 @@ def main():
                 check("current netcdf (GRIB file)" in p.stdout, "GRIB2 %s: the report says GRIB file" % label)
                 check(json.load(open(os.path.join(out, "summary.json")))["current_source"] == "GRIB file",
                       "GRIB2 %s: summary.json current_source" % label)
+        # 5b. a GRIB2 file cut short: inside a message (GDAL reads none), at a message's end (VOGRD lost)
+        check_cut_grib(glider, work, grib)
         # 6. RTOFS's layout: one GRIB2 file per forecast time, given as one forecast by a pattern
         hourly = os.path.join(work, "hourly")
         os.makedirs(hourly)
