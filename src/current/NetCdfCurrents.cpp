@@ -134,6 +134,7 @@ netcdf_detail::ForecastPiece netcdf_detail::readForecastPiece(const std::string 
         out.zeroLandNodes = zeroVelocityLand(g, t, packed, zeroLandRule(f, l, h, otherLand, out.cornerGrid));
     }
     zeroLandVelocities(g);
+    checkVelocityMagnitudes(f, l, h, t, opt, g);
     out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
     if (z.sigma)
     {

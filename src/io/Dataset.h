@@ -38,6 +38,12 @@ public:
     /// them), into @p out. @throws Error naming the dataset and the variable.
     virtual void readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
                            double *out) const = 0;
+    /// What the dataset holds but cannot be read (arrays GDAL cannot open, with its reason), for messages; "" when
+    /// nothing.
+    virtual std::string unreadable() const
+    {
+        return {};
+    }
     /// The NetCDF id of the dataset (its groups are asked through it); -1 when NetCDF-C does not read it.
     virtual int netcdfId() const
     {

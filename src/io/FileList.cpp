@@ -14,6 +14,37 @@
 
 namespace ompl_glider
 {
+namespace
+{
+/// Why the folder @p path (given as @p item) is no forecast: no Zarr store's metadata in it; what it holds instead
+/// (NetCDF or GRIB files: give them; a Zarr v3 store: not read).
+std::string folderIsNoStore(const std::string &item, const std::string &path)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    std::size_t netcdf = 0, grib = 0, shown = 0;
+    bool v3 = fs::is_regular_file(fs::path(path) / "zarr.json", ec);
+    for (fs::directory_iterator it(path, ec), end; !ec && it != end && shown < 100000; it.increment(ec), ++shown)
+    {
+        const std::string ext = text::lower(it->path().extension().string());
+        netcdf += ext == ".nc" || ext == ".nc4" || ext == ".cdf";
+        grib += ext == ".grib2" || ext == ".grb2" || ext == ".grib" || ext == ".grb";
+    }
+    std::string why = "forecast files: '" + item + "' is a folder, not a forecast file nor a Zarr v2 store (it holds "
+                      "no .zgroup, .zarray or .zmetadata)";
+    const std::string dir = item.empty() || item.back() == '/' ? item : item + "/";
+    if (v3)
+        return why + "; its zarr.json makes it a Zarr v3 store, which is not read: write it as Zarr v2 (zarr_format=2)";
+    if (netcdf > 0)
+        return why + "; it holds " + std::to_string(netcdf) + " NetCDF file(s): give them as one forecast by a "
+               "pattern ('" + dir + "*.nc', quoted) or a list of files separated by commas";
+    if (grib > 0)
+        return why + "; it holds " + std::to_string(grib) + " GRIB file(s): give them as one forecast by a pattern "
+               "('" + dir + "*.grib2', quoted) or a list of files separated by commas";
+    return why + "; give the forecast's files (a pattern such as '" + dir + "*.nc', or a list separated by commas)";
+}
+}  // namespace
+
 std::vector<std::string> expandForecastFiles(const std::vector<std::string> &items, const std::string &baseDir)
 {
     namespace fs = std::filesystem;
@@ -24,8 +55,8 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
         if (item.empty())
             throw Error("forecast files: an empty name in the list (expected file names or glob patterns, "
                         "separated by commas)");
-        if (isRemoteSource(item) || isMemoryDataset(item))
-        {  // an OPeNDAP URL, a dataset in memory: one dataset each, read as a file is (io/RemoteSource.h)
+        if (isRemoteSource(item) || isMemoryDataset(item) || item.rfind("ZARR:", 0) == 0)
+        {  // an OPeNDAP URL, a dataset in memory, GDAL's name of a store: one dataset each (io/RemoteSource.h)
             out.push_back(item);
             continue;
         }
@@ -34,6 +65,8 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
         std::error_code ec;
         if (item.find_first_of("*?[") == std::string::npos || fs::is_regular_file(path, ec))
         {  // (a file that exists is that file, even when its name holds brackets: a[1].nc)
+            if (fs::is_directory(path, ec) && !isZarrStore(path))
+                throw Error(folderIsNoStore(item, path));
             out.push_back(path);
             continue;
         }

@@ -16,6 +16,7 @@
 #include "BlockCopy.h"
 #include "NumberText.h"
 #include "TextUtil.h"
+#include "GdalFaults.h"
 #include "HttpMirror.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/FileList.h"
@@ -39,6 +40,30 @@ std::string withoutSlash(std::string s)
     return s;
 }
 
+
+/// The http(s) URL of a Zarr store given as a URL (ending in .zarr) or as GDAL's `ZARR:URL` / `ZARR:"URL"`; "" for
+/// anything else.
+std::string zarrUrl(const std::string &path)
+{
+    std::string s = path;
+    if (s.rfind("ZARR:", 0) == 0)
+    {
+        s = s.substr(5);
+        if (s.size() >= 2 && s.front() == '"' && s.back() == '"')
+            s = s.substr(1, s.size() - 2);
+        return isUrl(s) ? s : "";
+    }
+    return isUrl(s) && isZarrStore(s) ? s : "";
+}
+
+/// The folder of a store given as a folder or as GDAL's `ZARR:folder` / `ZARR:"folder"`.
+std::string zarrFolder(const std::string &path)
+{
+    std::string s = path.rfind("ZARR:", 0) == 0 ? path.substr(5) : path;
+    if (s.size() >= 2 && s.front() == '"' && s.back() == '"')
+        s = s.substr(1, s.size() - 2);
+    return s;
+}
 
 /// GDAL's own printing of its errors off for the life of the object: they reach the user in this reader's messages
 /// (CPLGetLastErrorMsg()), which name the source.
@@ -132,14 +157,25 @@ struct GdalGrid::Impl
         return it->second;
     }
 
-    void addGroup(const std::shared_ptr<GDALGroup> &g)
+    std::vector<std::string> unreadable;  // "array 'uo': <GDAL's reason>", the arrays GDAL lists but cannot open
+
+    void addGroup(const std::shared_ptr<GDALGroup> &g, CollectGdalErrors &errors)
     {
         for (const std::string &name : g->GetMDArrayNames())
+        {
+            const std::size_t before = errors.count();
             if (auto a = g->OpenMDArray(name))
                 vars.push_back(a);
+            else
+            {
+                const std::string why = errors.since(before);
+                unreadable.push_back("array '" + (g->GetFullName() == "/" ? "" : g->GetFullName().substr(1) + "/") +
+                                     name + "' cannot be opened" + (why.empty() ? std::string() : ": " + why));
+            }
+        }
         for (const std::string &name : g->GetGroupNames())  // GRIB: none; a store's subgroups
             if (auto sub = g->OpenGroup(name))
-                addGroup(sub);
+                addGroup(sub, errors);
     }
 
     /// The fields of a GRIB file over one time dimension, where GDAL gives some field of some time its own 2-D array
@@ -270,6 +306,19 @@ struct GdalGrid::Impl
                     " times of the file (none at " + date + "): a forecast needs its currents at every time");
     }
 
+    /// The arrays of the store's consolidated metadata at @p folder that GDAL left out, with @p why.
+    void addDropped(const std::string &folder, const std::string &why)
+    {
+        std::set<std::string> opened;
+        for (const auto &a : vars)
+            opened.insert(a->GetFullName().substr(1));
+        for (const std::string &name : droppedArrays(folder, opened))
+            if (std::none_of(unreadable.begin(), unreadable.end(),
+                             [&](const std::string &u) { return u.rfind("array '" + name + "'", 0) == 0; }))
+                unreadable.push_back("array '" + name + "' of its consolidated metadata cannot be opened" +
+                                     (why.empty() ? std::string() : ": " + why));
+    }
+
     static std::vector<double> readAll(const GDALMDArray &a)
     {
         std::vector<double> v(a.GetTotalElementsCount());
@@ -299,11 +348,12 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
     d.kind = isZarrStore(path) ? "Zarr store" : "GRIB file";
     GDALAllRegister();
     std::string open = path;
-    if (isUrl(path) && d.kind == "Zarr store")
+    const std::string url = zarrUrl(path);
+    if (!url.empty())
     {
         // the store's metadata and chunks fetched into a mirror as the reader asks for them (the cache's, or
         // GDAL's memory): each once, with the time limit and retries; a second run with the cache asks nothing
-        d.mirror = std::make_unique<ZarrMirror>(path);
+        d.mirror = std::make_unique<ZarrMirror>(url);
         open = d.mirror->folder();
     }
     else if (isUrl(path))
@@ -312,16 +362,21 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
         d.file = std::make_unique<FileMirror>(path, ".grib2", "GRIB file");
         open = d.file->file();
     }
+    const std::string local = open;  // the store's folder or the file GDAL reads
     if (d.kind == "Zarr store" && open.rfind("ZARR:", 0) != 0)
         open = "ZARR:\"" + withoutSlash(open) + "\"";
-    const QuietGdal quiet;
+    CollectGdalErrors errors;
     d.dataset.reset(GDALDataset::Open(open.c_str(), GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY));
     if (!d.dataset || !(d.root = d.dataset->GetRootGroup()))
     {
-        const std::string why = CPLGetLastErrorMsg();
+        const std::string cut = d.kind == "GRIB file" ? gribTruncation(local) : "";
+        const std::string why = !cut.empty() ? cut : errors.since(0);
         throw Error(who() + ": cannot open" + (why.empty() ? std::string() : ": " + why));
     }
-    d.addGroup(d.root);
+    const std::string opening = errors.since(0);  // GDAL's messages on the store as a whole
+    d.addGroup(d.root, errors);
+    if (d.kind == "Zarr store")
+        d.addDropped(zarrFolder(local), opening);
     for (const auto &a : d.vars)
         if (auto srs = a->GetSpatialRef())
             d.geographic = d.geographic || srs->IsGeographic();
@@ -331,16 +386,28 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
         for (const auto &g : a->GetDimensions())
             d.dimOf(g);
     if (d.kind == "GRIB file")
+    {
         d.addFileTime();
+        if (const std::string lone = loneVelocityComponent(d.vars, local); !lone.empty())
+            throw Error(who() + ": " + lone);
+    }
     if (d.vars.empty())
-        throw Error(who() + ": holds no arrays");
+        throw Error(who() + ": holds no arrays" + (d.unreadable.empty() ? "" : " that can be read: " + unreadable()));
+}
+
+std::string GdalGrid::unreadable() const
+{
+    std::string out;
+    for (const std::string &u : impl_->unreadable)
+        out += (out.empty() ? "" : "; ") + u;
+    return out;
 }
 
 GdalGrid::~GdalGrid() = default;
 
 std::shared_ptr<GdalGrid> GdalGrid::open(const std::string &path)
 {
-    if (!isUrl(path))
+    if (!isUrl(path) && zarrUrl(path).empty())
         return std::make_shared<GdalGrid>(path);
     static std::mutex m;
     // kept for the process, as the OPeNDAP datasets are (RemoteDataset::open()), one per URL and cache folder

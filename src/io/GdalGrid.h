@@ -57,6 +57,9 @@ public:
     std::optional<std::string> attText(int var, const char *name) const override;
     /// A numeric attribute's values (empty when absent); text yields {} and sets @p isText.
     std::vector<double> attDoubles(int var, const char *name, bool &isText) const override;
+    /// The arrays GDAL lists (or the store's consolidated metadata names) but cannot open, each with GDAL's reason
+    /// ("array 'uo' cannot be opened: Decompressor foo not handled"), joined; "" when every array opened.
+    std::string unreadable() const override;
     /// The stored values of @p var in the block at @p start of @p count, as doubles. @throws Error naming the source
     /// and the variable when GDAL cannot read them (a missing or corrupt chunk, the server).
     void readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,

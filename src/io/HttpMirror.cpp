@@ -2,6 +2,7 @@
 #include "HttpMirror.h"
 
 #include <algorithm>
+#include <cctype>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include <cpl_error.h>
 #include <cpl_http.h>
 #include <cpl_json.h>
+#include <cpl_string.h>
 #include <cpl_vsi.h>
 
 #include "RemoteRecord.h"
@@ -29,6 +31,26 @@ namespace
 {
 const char *const kMarker = ".ompl_glider_source";  // the URL the mirror holds (without credentials)
 const char *const kAbsent = ".ompl_glider_absent";  // keys the server does not hold, one a line
+const char *const kValidators = ".ompl_glider_validators";  // "key<TAB>validator" of the chunks held, one a line
+
+/// The server's validator of an answer (httpGet()): its ETag, else its Last-Modified time and size; "" without
+/// either. @p size: the body's bytes, or -1 for a HEAD answer (its Content-Length then).
+std::string validatorOf(char **headers, long long size)
+{
+    const auto header = [&](const char *name) {
+        const char *v = CSLFetchNameValue(headers, name);
+        std::string s = v ? v : "";
+        while (!s.empty() && (s.back() == '\r' || s.back() == '\n' || s.back() == ' '))
+            s.pop_back();
+        return s;
+    };
+    if (const std::string tag = header("ETag"); !tag.empty())
+        return "ETag " + tag;
+    const std::string modified = header("Last-Modified"), length = header("Content-Length");
+    if (modified.empty() || (size < 0 && length.empty()))
+        return "";
+    return "Last-Modified " + modified + ", " + (size < 0 ? length : std::to_string(size)) + " bytes";
+}
 
 bool exists(const std::string &path)
 {
@@ -142,6 +164,16 @@ ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
                 const std::size_t end = std::min(absent.find('\n', at), absent.size());
                 if (end > at)
                     absent_.insert(absent.substr(at, end - at));
+                at = end + 1;
+            }
+        std::string lines;
+        if (slurp(folder_ + "/" + kValidators, lines))
+            for (std::size_t at = 0; at < lines.size();)
+            {
+                const std::size_t end = std::min(lines.find('\n', at), lines.size());
+                const std::size_t tab = lines.find('\t', at);
+                if (tab < end)
+                    validators_[lines.substr(at, tab - at)] = lines.substr(tab + 1, end - tab - 1);
                 at = end + 1;
             }
     }
@@ -291,6 +323,66 @@ void ZarrMirror::ensure(const std::string &path, const std::vector<std::size_t> 
             list += key + "\n";
         store(kAbsent, list);
     }
+    if (validatorsChanged_ && cached_)
+        storeValidators();
+}
+
+void ZarrMirror::storeValidators()
+{
+    std::string lines;
+    for (const auto &[key, validator] : validators_)
+        if (!validator.empty() && key.find_first_of("\t\n") == std::string::npos)
+            lines += key + "\t" + validator + "\n";
+    store(kValidators, lines);
+    validatorsChanged_ = false;
+}
+
+std::vector<std::string> ZarrMirror::cachedChunks() const
+{
+    namespace fs = std::filesystem;
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(folder_, ec), end; !ec && it != end; it.increment(ec))
+    {
+        if (!it->is_regular_file(ec))
+            continue;
+        const std::string key = fs::relative(it->path(), folder_, ec).generic_string();
+        const std::string name = it->path().filename().string();
+        // a chunk's key ends in its indices ("uo/0.1.2", "uo/0/1/2"); metadata, the mirror's own files and
+        // temporary names do not
+        if (!ec && !name.empty() && name.find_first_not_of("0123456789.") == std::string::npos && name[0] != '.')
+            out.push_back(key);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::string ZarrMirror::chunkChanged(const std::string &key)
+{
+    const std::string url = keyUrl(url_, key);
+    std::string now;
+    const auto it = validators_.find(key);
+    const std::string cached = it == validators_.end() ? "" : it->second;
+    if (absent_.count(key))
+    {
+        const std::optional<bool> held = httpHead(url, record_, now);
+        std::string body;
+        if (held ? !*held : !fetch(key, body))
+            return "";
+        return "the server holds it now, absent when the cache was written";
+    }
+    if (!cached.empty() && httpHead(url, record_, now).value_or(false) && now == cached)
+        return "";  // the same validator: the same bytes
+    std::string mine, body;
+    if (!slurp(folder_ + "/" + key, mine))
+        return "";
+    if (!fetch(key, body))
+        return "the server no longer holds it";
+    if (body == mine)
+        return "";  // a new validator, the same bytes (kept by fetch())
+    return std::to_string(mine.size()) + " bytes cached" + (cached.empty() ? "" : " (" + cached + ")") + ", " +
+           std::to_string(body.size()) + " bytes now" +
+           (validators_[key].empty() ? "" : " (" + validators_[key] + ")");
 }
 
 void ZarrMirror::checkRepublished()
@@ -319,10 +411,21 @@ void ZarrMirror::checkRepublished()
                             "does not hold" + advice);
         }
     }
+    // the values: every chunk the cache holds is the server's still (a store rewritten under the same metadata and
+    // coordinates would otherwise be planned on as old chunks beside new ones)
+    std::vector<std::string> held = cachedChunks();
+    held.insert(held.end(), absent_.begin(), absent_.end());
+    for (const std::string &key : held)
+        if (const std::string what = chunkChanged(key); !what.empty())
+            throw Error("Zarr store '" + source + "': the store was republished since the cache was written (its "
+                        "chunk '" + key + "' differs from the cache's: " + what + "), and the plan needs chunks the "
+                        "cache does not hold: the cached and the new values would be mixed" + advice);
+    if (validatorsChanged_)
+        storeValidators();
 }
 
 bool httpGet(const std::string &url, std::size_t record, const std::string &who, const std::string &what,
-             std::string &body, HttpFailure *failure)
+             std::string &body, HttpFailure *failure, std::string *validator)
 {
     const RemoteAccess a = remoteAccess();
     const std::string limit = std::to_string(std::max(1L, std::lround(a.requestTimeout)));
@@ -353,6 +456,8 @@ bool httpGet(const std::string &url, std::size_t record, const std::string &who,
         if (r && curl == 0 && http == 0)
         {
             body.assign(reinterpret_cast<const char *>(r->pabyData), static_cast<std::size_t>(r->nDataLen));
+            if (validator)
+                *validator = validatorOf(r->papszHeaders, static_cast<long long>(body.size()));
             CPLHTTPDestroyResult(r);
             remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) { f.bytesFetched += body.size(); });
             return true;
@@ -373,6 +478,104 @@ bool httpGet(const std::string &url, std::size_t record, const std::string &who,
             break;
     }
     throw Error(who + ": cannot fetch '" + what + "': " + why + " (" + limitText() + ")");
+}
+
+std::optional<bool> httpHead(const std::string &url, std::size_t record, std::string &validator)
+{
+    const std::string limit = std::to_string(std::max(1L, std::lround(remoteAccess().requestTimeout)));
+    const std::string timeout = "TIMEOUT=" + limit, connect = "CONNECTTIMEOUT=" + limit;
+    const char *options[] = {timeout.c_str(), connect.c_str(), "MAX_RETRY=0", "NO_BODY=YES", nullptr};
+    if (stopRequested())
+        return std::nullopt;
+    remote_detail::updateFetchRecord(record, [](RemoteFetch &f) { ++f.requests; });
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    CPLHTTPResult *r = CPLHTTPFetch(url.c_str(), options);
+    CPLPopErrorHandler();
+    CPLErrorReset();
+    const std::string errors = r && r->pszErrBuf ? r->pszErrBuf : "";
+    const int http = errors.rfind("HTTP error code : ", 0) == 0 ? std::atoi(errors.c_str() + 18) : 0;
+    std::optional<bool> held;
+    if (r && r->nStatus == 0 && http == 0)
+    {
+        validator = validatorOf(r->papszHeaders, -1);
+        held = true;
+    }
+    else if (r && r->nStatus == 0 && http == 404)
+        held = false;
+    if (r)
+        CPLHTTPDestroyResult(r);
+    return held;
+}
+
+namespace
+{
+/// One GET of @p url (one attempt, the request time limit, nothing counted): its HTTP status (0: no answer; 200 for
+/// an answer without error), body and content type.
+int probe(const std::string &url, std::string &body, std::string &type)
+{
+    const std::string limit = std::to_string(std::max(1L, std::lround(remoteAccess().requestTimeout)));
+    const std::string timeout = "TIMEOUT=" + limit, connect = "CONNECTTIMEOUT=" + limit;
+    const char *options[] = {timeout.c_str(), connect.c_str(), "MAX_RETRY=0", nullptr};
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    CPLHTTPResult *r = CPLHTTPFetch(url.c_str(), options);
+    CPLPopErrorHandler();
+    CPLErrorReset();
+    if (!r)
+        return 0;
+    const std::string errors = r->pszErrBuf ? r->pszErrBuf : "";
+    const int status = r->nStatus != 0 ? 0
+                       : errors.rfind("HTTP error code : ", 0) == 0 ? std::atoi(errors.c_str() + 18) : 200;
+    body.assign(r->pabyData ? reinterpret_cast<const char *>(r->pabyData) : "",
+                r->pabyData ? static_cast<std::size_t>(std::min(r->nDataLen, 65536)) : 0);
+    type = r->pszContentType ? r->pszContentType : "";
+    CPLHTTPDestroyResult(r);
+    return status;
+}
+
+bool looksHtml(const std::string &body, const std::string &type)
+{
+    std::string head;
+    for (const char c : body.substr(0, 256))
+        head += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::size_t at = head.find_first_not_of(" \t\r\n");
+    head = at == std::string::npos ? "" : head.substr(at);
+    std::string t;
+    for (const char c : type)
+        t += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return t.find("html") != std::string::npos || head.rfind("<!doctype html", 0) == 0 || head.rfind("<html", 0) == 0;
+}
+}  // namespace
+
+std::string notDapAnswer(const std::string &given)
+{
+    std::string url = given;
+    while (!url.empty() && url.front() == '[')  // NetCDF-C's [mode=dap4] prefixes
+    {
+        const std::size_t close = url.find(']');
+        if (close == std::string::npos)
+            return "";
+        url = url.substr(close + 1);
+    }
+    const std::string shown = withoutCredentials(url);
+    for (const char *key : {".zmetadata", ".zgroup", ".zarray"})
+    {
+        std::string body, type;
+        if (probe(keyUrl(url, key), body, type) == 200 && !looksHtml(body, type) &&
+            body.find_first_not_of(" \t\r\n") != std::string::npos &&
+            body[body.find_first_not_of(" \t\r\n")] == '{')
+            return std::string("the server holds a Zarr store there (its '") + key + "' found), not an OPeNDAP "
+                   "dataset: give it as 'ZARR:" + shown + "' (a store's URL ending in .zarr is read as one)";
+    }
+    std::string body, type;
+    const std::size_t q = url.find('?');
+    const std::string ddsUrl = url.substr(0, q) + ".dds" + (q == std::string::npos ? "" : url.substr(q));
+    const int status = probe(ddsUrl, body, type);
+    if (status == 0 || !looksHtml(body, type))
+        return "";
+    return "the server answered an HTML page" + (status != 200 ? " (HTTP " + std::to_string(status) + ")" : "") +
+           ", not an OPeNDAP description, for '" + withoutCredentials(ddsUrl) + "': expected an OPeNDAP (DAP2) "
+           "dataset URL (THREDDS dodsC, Hyrax, ERDDAP griddap), a Zarr store's URL ending in .zarr (or given as "
+           "ZARR:URL), or a GRIB file's URL ending in .grib2";
 }
 
 FileMirror::FileMirror(const std::string &url, const std::string &extension, const std::string &kind)
@@ -429,7 +632,16 @@ FileMirror::~FileMirror()
 
 bool ZarrMirror::fetch(const std::string &key, std::string &body)
 {
-    return httpGet(keyUrl(url_, key), record_, "Zarr store '" + withoutCredentials(url_) + "'", key, body);
+    std::string validator;
+    const bool found =
+        httpGet(keyUrl(url_, key), record_, "Zarr store '" + withoutCredentials(url_) + "'", key, body, nullptr,
+                &validator);
+    if (found && key.rfind(".z", 0) != 0 && validators_[key] != validator)
+    {
+        validators_[key] = validator;
+        validatorsChanged_ = true;
+    }
+    return found;
 }
 
 void ZarrMirror::store(const std::string &key, const std::string &bytes)

@@ -7,13 +7,17 @@
 /// any request, or GDAL's memory (`/vsimem/`) without a cache. A chunk the server does not hold (404) is the array's
 /// fill value, as Zarr defines it, and is remembered as absent.
 ///
+/// Each chunk fetched is kept with the server's validator of it (its ETag, else its Last-Modified time and size).
 /// Before a cached store is read further from the server, its metadata and the chunks of its one-dimensional arrays
-/// (the coordinates) are fetched again and compared: a store republished at the same URL is refused rather than
-/// mixed with the cached one.
+/// (the coordinates) are fetched again and compared, and every chunk the cache holds is asked again (a HEAD request:
+/// the same validator, else its bytes fetched and compared; a chunk absent then must be absent still): a store
+/// republished at the same URL, its values rewritten under the same metadata included, is refused rather than mixed
+/// with the cached one.
 
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -35,8 +39,20 @@ struct HttpFailure
 /// (404). @throws Error "<who>: cannot fetch '<what>': <why> (request time limit N s, R retries)" after the retries for
 /// the network or the server, and at a stop request. When the request fails (404 included), @p failure (if given)
 /// receives the last answer's status and body.
+/// @p validator (if given) receives the server's validator of the answer: "ETag <tag>", else "Last-Modified <date>,
+/// <size> bytes", else "" (the server gives neither).
 bool httpGet(const std::string &url, std::size_t record, const std::string &who, const std::string &what,
-             std::string &body, HttpFailure *failure = nullptr);
+             std::string &body, HttpFailure *failure = nullptr, std::string *validator = nullptr);
+
+/// A HEAD request of @p url (one attempt, the request time limit): true and its validator (as httpGet()'s) when the
+/// server holds it, false for 404; nullopt when the server gives no usable answer (no HEAD, the network).
+std::optional<bool> httpHead(const std::string &url, std::size_t record, std::string &validator);
+
+/// Why the server at @p url is no OPeNDAP (DAP2/DAP4) endpoint, asked once after NetCDF-C failed to open it: its
+/// answer to the DAP2 description ("<url>.dds") is an HTML page (a web page, a listing, an error page), or it holds
+/// a Zarr store there (its `.zmetadata`, `.zgroup` or `.zarray`); "" when neither (NetCDF-C's own message stands).
+/// Never quotes the page.
+std::string notDapAnswer(const std::string &url);
 
 /// A file over HTTP (a GRIB file) fetched whole, once: into the cache folder (a later run reads it there, no
 /// request), or GDAL's memory without a cache.
@@ -91,8 +107,14 @@ private:
     /// The chunks' keys of @p path covering the block.
     std::vector<std::string> keys(const std::string &path, const std::vector<std::size_t> &start,
                                   const std::vector<std::size_t> &count) const;
-    /// GETs @p key of the store (httpGet()).
+    /// GETs @p key of the store (httpGet()), its validator kept (validators_).
     bool fetch(const std::string &key, std::string &body);
+    /// "" when the cached chunk @p key is the server's still; else what differs.
+    std::string chunkChanged(const std::string &key);
+    /// The keys of the chunks held in the cache folder (not the store's metadata, not the mirror's own files).
+    std::vector<std::string> cachedChunks() const;
+    /// Writes the validators of the chunks held (validators_) into the cache folder.
+    void storeValidators();
     /// Writes @p bytes at @p key of the mirror (a temporary name renamed: never half a file).
     void store(const std::string &key, const std::string &bytes);
     /// The first time the cache is found short: the server's metadata and coordinate chunks are the cached ones.
@@ -108,6 +130,8 @@ private:
     std::string rootKey_, rootText_;  // the store's root entry (.zgroup, or .zarray) in the consolidated metadata
     std::set<std::string> absent_;  // keys the server does not hold
     std::set<std::string> seen_;    // keys this process asked for (fetched, or counted as the cache's)
+    std::map<std::string, std::string> validators_;  // key -> the server's validator when it was fetched
+    bool validatorsChanged_{false};
 };
 }  // namespace netcdf_detail
 }  // namespace ompl_glider

@@ -227,6 +227,11 @@ void NcFile::check(int status, const std::string &what) const
         throw error(what + ": " + nc_strerror(status));
 }
 
+std::string NcFile::unreadable() const
+{
+    return data_->unreadable();
+}
+
 int NcFile::nvars() const
 {
     return data_->nvars();

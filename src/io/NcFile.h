@@ -70,6 +70,8 @@ public:
     /// A numeric attribute's values; empty when absent. @throws Error naming the variable and the attribute when it
     /// is text (a `scale_factor` of "0.01" is not applied in silence).
     std::vector<double> attDoubles(int var, const char *name) const;
+    /// What the dataset holds but cannot be read ("array 'uo' cannot be opened: <GDAL's reason>"); "" when nothing.
+    std::string unreadable() const;
     /// All values of a variable (any number of dimensions), as doubles.
     std::vector<double> readAll1D(int var) const;
     /// The values of @p var in the block at @p start of @p count, as doubles (nc_get_vara_double), into @p out;

@@ -22,8 +22,12 @@
 #include "NumberText.h"
 #include "RemoteRecord.h"
 #include "TextUtil.h"
+#include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/StopRequest.h"
+#if OMPL_GLIDER_WITH_MISSION
+#include "HttpMirror.h"
+#endif
 
 namespace ompl_glider
 {
@@ -43,6 +47,16 @@ bool cutShort(const std::string &log)
 {
     return log.find("apparently too short") != std::string::npos;
 }
+
+/// NetCDF-C's DAP parser on an answer that is not DAP (an HTML page: "syntax error ... context: <!DOCTYPE^ HTML>..."):
+/// not echoed (the page), the open's failure explained instead (notDapAnswer()).
+bool foreignAnswer(const std::string &log)
+{
+    return log.find("context: <") != std::string::npos || log.find("context: \n<") != std::string::npos;
+}
+
+/// Set by the last failed attempt of this thread: NetCDF-C's parser met an answer that is not DAP.
+thread_local bool lastAnswerForeign = false;
 
 /// Runs @p call with the process's standard error taken into a temporary file, which is returned in @p log; what it
 /// caught is written on to standard error unless it is NetCDF-C's note of an answer cut short (then the caller says
@@ -71,7 +85,7 @@ int callWatchingLog(const std::function<int()> &call, std::string &log)
     for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, tmp)) > 0;)
         log.append(buf, n);
     std::fclose(tmp);
-    if (!log.empty() && !cutShort(log))
+    if (!log.empty() && !cutShort(log) && !foreignAnswer(log))
         (void)!::write(STDERR_FILENO, log.data(), log.size());
     return st;
 }
@@ -310,6 +324,7 @@ int RemoteDataset::attempt(const std::string &what, const std::function<int()> &
         std::string log;
         int st = callWatchingLog(call, log);
         const bool cut = cutShort(log);
+        lastAnswerForeign = foreignAnswer(log);
         if (cut)
             st = NC_EDATADDS;  // zero-filled values, never planned on
         if (st == NC_NOERR)
@@ -347,7 +362,24 @@ int RemoteDataset::remoteId()
             throw Error(withoutCredentials(url_) + ": the request time limit cannot be given to NetCDF-C: " +
                         (limitProblem().empty() ? std::string("its settings file could not be written")
                                                 : limitProblem()));
-        attempt("cannot open", [&] { return nc_open(url_.c_str(), NC_NOWRITE, &remoteId_); });
+        try
+        {
+            attempt("cannot open", [&] { return nc_open(url_.c_str(), NC_NOWRITE, &remoteId_); });
+        }
+        catch (const Error &)
+        {
+#if OMPL_GLIDER_WITH_MISSION
+            // an answer that is not DAP: what the server is instead (a web page, a Zarr store), the page unquoted
+            if (lastAnswerForeign)
+                if (const std::string why = notDapAnswer(url_); !why.empty())
+                    throw Error(who() + ": cannot open: " + why);
+#endif
+            if (lastAnswerForeign)
+                throw Error(who() + ": cannot open: the server's answer is not OPeNDAP (NetCDF-C's DAP parser could "
+                                    "not read it): expected an OPeNDAP dataset URL (THREDDS dodsC, Hyrax, ERDDAP "
+                                    "griddap), a Zarr store's URL ending in .zarr (or ZARR:URL), or a GRIB file's URL");
+            throw;
+        }
         remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.opened = true; });
         if (cacheId_ >= 0)
             checkCacheAnswers();

@@ -130,6 +130,8 @@ std::string withoutCredentials(const std::string &source)
 bool isRemoteSource(const std::string &source)
 {
     std::string s = source;
+    if (s.rfind("ZARR:", 0) == 0)  // GDAL's name of a Zarr store: ZARR:URL, ZARR:"URL"
+        s = s.substr(s.size() > 5 && s[5] == '"' ? 6 : 5);
     while (!s.empty() && s.front() == '[')  // NetCDF-C's [mode=dap4] / [noprefetch] prefixes
     {
         const std::size_t close = s.find(']');
@@ -195,9 +197,16 @@ std::vector<RemoteFetch> remoteFetches()
 std::vector<RemoteFetch> remoteFetchesOf(const std::vector<std::string> &sources)
 {
     std::vector<RemoteFetch> out;
-    for (const RemoteFetch &f : remoteFetches())  // (a record holds the source without its credentials)
-        if (std::any_of(sources.begin(), sources.end(),
-                        [&](const std::string &s) { return withoutCredentials(s) == f.source; }))
+    // (a record holds the source without its credentials, a store given as ZARR:URL by its URL)
+    const auto plain = [](std::string s) {
+        if (s.rfind("ZARR:", 0) == 0)
+            s = s.substr(5);
+        if (s.size() >= 2 && s.front() == '"' && s.back() == '"')
+            s = s.substr(1, s.size() - 2);
+        return withoutCredentials(s);
+    };
+    for (const RemoteFetch &f : remoteFetches())
+        if (std::any_of(sources.begin(), sources.end(), [&](const std::string &s) { return plain(s) == f.source; }))
             out.push_back(f);
     return out;
 }

@@ -28,6 +28,7 @@ if(OMPL_GLIDER_WITH_MISSION)
   if(OMPL_GLIDER_WITH_NETCDF)
     # Zarr stores and GRIB files through GDAL's multidimensional API, read as NcFile reads NetCDF (GdalGrid.h)
     list(APPEND OMPL_GLIDER_SOURCES ${CMAKE_CURRENT_LIST_DIR}/GdalGrid.cpp
+      ${CMAKE_CURRENT_LIST_DIR}/GdalFaults.cpp  # what is wrong with such a source, in its own words
       ${CMAKE_CURRENT_LIST_DIR}/HttpMirror.cpp  # a store or a GRIB file over HTTP: its mirror, the cache
       # a glider's real-time data: an ERDDAP answer over HTTP, Slocum dba files
       ${CMAKE_CURRENT_LIST_DIR}/ErddapObservations.cpp

@@ -91,6 +91,20 @@ void LevelSetPlanner::prepare(const PipelineSetup &setup)
     const double work = nodes * steps;
     if (steps <= kMaxLevelSetSteps && work <= kMaxLevelSetWork)
         return;
+    // the steps the glider's own speed needs: within the limits, the currents are at fault (a forecast's velocities
+    // read wrong: units, scale_factor, a fill value not declared), not the planner's settings
+    const double calmSteps = std::isfinite(tEnd) && ctx_->speed() > 0.0
+                                 ? std::ceil(std::max(tEnd - setup.departure, 0.0) /
+                                             (params_.cfl * h / ctx_->speed()))
+                                 : std::numeric_limits<double>::infinity();
+    if (calmSteps <= kMaxLevelSetSteps && nodes * calmSteps <= kMaxLevelSetWork && ctx_->maxCurrent() > ctx_->speed())
+        throw Error(setup.where("current") +
+                    text::formatted(": the currents reach %.3g (%.3g times the vehicle's speed of %.3g): the level "
+                                    "set would take up to %.3g time steps",
+                                    ctx_->maxCurrent(), ctx_->maxCurrent() / ctx_->speed(), ctx_->speed(), steps) +
+                    text::formatted(", more than the limit of %.3g steps and %.3g node updates; check the current's "
+                                    "velocities (their units, scale_factor, fill values)",
+                                    kMaxLevelSetSteps, kMaxLevelSetWork));
     // too many steps: the window is at fault first; too much work: the resolution
     const std::string where =
         !(steps <= kMaxLevelSetSteps) && setup.isGiven("planner.horizon")

@@ -8,9 +8,11 @@ unchanged, byte for byte. Usage: bad_inputs.py GLIDER_PLAN [-k SUBSTRING] [-v]
 """
 import base64
 import hashlib
+import json
 import os
 import shutil
 import subprocess
+import struct
 import sys
 import tempfile
 
@@ -955,6 +957,75 @@ yaml_case("no-path-vortex-fallback-time-limit",
                   "planner: {name: zastartve, grid_size: 0.5, time_limit: 2}"),
           "no path found: the level set, after Isochrone, each with the time limit: the time limit (2 s) ended the "
           "search before a path was found: raise it (planner.time_limit, --time-limit)", status=1)
+
+
+# --- forecast values and sources that are not what they seem: the message names the source, not a planner field --
+# velocities no current reaches, not fill values (a fill value not declared): the file, the variable, the value, where
+nc_case("nc-velocity-1e30", forecast(u="1e30"), "NetCDF file 'f.nc': variable 'u' holds 1e+30 m/s at (j, i) = (0, 0)")
+nc_case("nc-velocity-1e38-one-node", forecast(u=", ".join(["0.1"] * 50 + ["1e38"] + ["0.1"] * 57)),
+        "variable 'u' holds 1e+38 m/s at (j, i) = (2, 2), lon -52.6, lat 47.4, record 1 of 'time'")
+case("yaml-velocity-1e30", ["--mission", "m.yaml", "--out", "{out}"], 2, "variable 'u' holds 1e+30 m/s",
+     {"f.cdl": forecast(u="1e30"), "m.yaml": "current: {type: netcdf, file: f.nc}\nstart: {lon: -52.9, lat: 47.1}\n"
+                                             "goal: {lon: -52.1, lat: 47.9}\n"})
+# a flow within that bound yet far faster than the glider: the level set's step count blames the current
+case("levelset-current-far-faster", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:2: field 'current': the currents reach 200 (400 times the vehicle's speed of 0.5): the level set would "
+     "take up to 5.56e+06 time steps",
+     {"m.yaml": mission("current: {type: uniform, parameters: {u: 200, v: 0.0}}", "planner: {name: LevelSet}")})
+nc_case("nc-currents-far-faster-levelset", forecast(u="250"),
+        "f.nc: field 'current': the currents reach 250 (833 times the vehicle's speed of 0.3)",
+        extra=("--planner", "LevelSet", "--beyond", "hold"))
+
+
+def zarr_store(name, u_zarray=None, u_compressor=None):
+    """A Zarr v2 store (no consolidated metadata, no compressor) of forecast()'s grid: u = 0.1, v = 0 m s-1."""
+    files = {name + "/.zgroup": json.dumps({"zarr_format": 2})}
+
+    def array(var, dims, dtype, values, attrs, compressor=None):
+        shape = [len(values)] if len(dims) == 1 else [3, 6, 6]
+        zarray = {"zarr_format": 2, "shape": shape, "chunks": shape, "dtype": dtype, "compressor": compressor,
+                  "fill_value": "NaN", "order": "C", "filters": None}
+        files["%s/%s/.zarray" % (name, var)] = zarray if var != "u" or u_zarray is None else u_zarray
+        files["%s/%s/.zattrs" % (name, var)] = json.dumps(dict(attrs, _ARRAY_DIMENSIONS=dims))
+        fmt = "<%d%s" % (len(values), "d" if dtype == "<f8" else "f")
+        files["%s/%s/%s" % (name, var, ".".join(["0"] * len(dims)))] = ("bytes", struct.pack(fmt, *values))
+
+    array("time", ["time"], "<f8", [0, 24, 48], {"units": "hours since 2026-03-15 00:00:00", "standard_name": "time"})
+    array("lat", ["lat"], "<f8", [47.0 + 0.2 * k for k in range(6)], {"units": "degrees_north"})
+    array("lon", ["lon"], "<f8", [-53.0 + 0.2 * k for k in range(6)], {"units": "degrees_east"})
+    array("u", ["time", "lat", "lon"], "<f4", [0.1] * 108, {"units": "m s-1"}, u_compressor)
+    array("v", ["time", "lat", "lon"], "<f4", [0.0] * 108, {"units": "m s-1"})
+    for key, value in list(files.items()):
+        if isinstance(value, dict):
+            files[key] = json.dumps(value)
+    return files
+
+
+def store_case(name, files, phrase, store="s.zarr"):
+    case(name, ["--currents", store, START, GOAL, "--out", "{out}"], 2, phrase, files)
+    case(name + "-yaml", ["--mission", "m.yaml", "--out", "{out}"], 2, phrase,
+         dict(files, **{"m.yaml": "current: {type: netcdf, file: %s}\nstart: {lon: -52.9, lat: 47.1}\n"
+                                  "goal: {lon: -52.1, lat: 47.9}\n" % store}))
+
+
+case("zarr-store-plans", ["--currents", "s.zarr", START, GOAL, "--beyond", "hold", "--out", "o2"], 0,
+     "current netcdf (Zarr store)", zarr_store("s.zarr"))  # (the store of the rows below, whole: it plans)
+store_case("zarr-codec-unknown", zarr_store("s.zarr", u_compressor={"id": "foo"}),
+           "Zarr store 's.zarr': no eastward (u) velocity among the arrays that can be read, and array 'u' cannot be "
+           "opened: Decompressor foo not handled")
+store_case("zarr-zarray-not-json", zarr_store("s.zarr", u_zarray="{not json"),
+           "array 'u' cannot be opened: JSON parsing error")
+store_case("zarr-zarray-no-shape", zarr_store("s.zarr", u_zarray={"zarr_format": 2, "chunks": [3, 6, 6],
+                                                                   "dtype": "<f4", "compressor": None,
+                                                                   "fill_value": "NaN", "order": "C",
+                                                                   "filters": None}),
+           "array 'u' cannot be opened: shape missing or not an array")
+# a folder of NetCDF files is no Zarr store: say so, and how to give its files
+store_case("currents-folder-of-netcdf", {"d/a.cdl": forecast(), "d/b.cdl": forecast()},
+           "'d' is a folder, not a forecast file nor a Zarr v2 store (it holds no .zgroup, .zarray or .zmetadata); "
+           "it holds 2 NetCDF file(s): give them as one forecast by a pattern ('d/*.nc', quoted)", store="d")
+store_case("currents-empty-folder", {"e/.keep": ""}, "'e' is a folder, not a forecast file nor a Zarr v2 store",
+           store="e")
 
 
 # ---------------------------------------------------------------------------------------------------------------

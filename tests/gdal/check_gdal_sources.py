@@ -211,6 +211,127 @@ def grib_as_netcdf(grib, like, path):
     out.to_netcdf(path, encoding={n: {"dtype": "f8"} for n in ("uo", "vo")})
 
 
+WIDE = ["--start=-75.5,29.5", "--goal=-66.5,37.5", "--speed", "0.5", "--departure", "2026-06-01T03:00:00Z",
+        "--beyond", "hold"]
+
+
+def rewrite_values(store, ds):
+    """Writes the velocities of @p ds into @p store in place: its .zarray/.zattrs/.zmetadata and coordinates kept
+    to the byte (checked)."""
+    import zarr
+    names = [os.path.join(d, f) for d in (store, os.path.join(store, "uo"), os.path.join(store, "time"))
+             for f in (".zmetadata", ".zarray", ".zattrs") if os.path.exists(os.path.join(d, f))]
+    names += [os.path.join(store, "time", f) for f in os.listdir(os.path.join(store, "time")) if f[0] != "."]
+    before = {n: open(n, "rb").read() for n in names}
+    group = zarr.open_group(store, mode="r+")
+    for name in ("uo", "vo"):
+        group[name][...] = ds[name].values
+    return all(open(n, "rb").read() == b for n, b in before.items())
+
+
+def check_rewritten_values(glider, work, root, geo_chunked, time_chunked, server, ds):
+    """A store whose values are rewritten (same metadata, same coordinates): over HTTP with --cache, a trip beyond
+    the cache is refused naming the chunk that changed and the folder to remove (the plan would mix the cached
+    chunks with the new ones), then, the folder removed, plans as the new values in NetCDF; on disk (no cache) the
+    new values are read at once."""
+    new = ds.copy(deep=True)
+    # another flow: the jet and the island moved 10 rows north, v reversed
+    new["uo"].values[...] = np.roll(ds["uo"].values, 10, axis=2)
+    new["vo"].values[...] = -np.roll(ds["vo"].values, 10, axis=2)
+    new_nc = os.path.join(work, "rewritten.nc")
+    new.to_netcdf(new_nc)
+    p = plan(glider, ["--currents", new_nc, "--out", os.path.join(work, "o_rw_nc")] + WIDE)
+    check(p.returncode == 0, "rewritten values in NetCDF plan (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
+    if p.returncode:
+        return
+    t_new = travel_time(os.path.join(work, "o_rw_nc"))
+    store = os.path.join(root, "rewritten.zarr")
+    shutil.copytree(geo_chunked, store)
+    url = "http://127.0.0.1:%d/rewritten.zarr" % server.server_address[1]
+    cache = os.path.join(work, "cache_rw")
+    p = plan(glider, ["--currents", url, "--cache", cache, "--out", os.path.join(work, "o_rw_first")] + TRIP)
+    check(p.returncode == 0, "rewritten: the first run fills the cache (exit %d: %s)" % (p.returncode,
+                                                                                       p.stderr[-300:]))
+    time.sleep(1.1)  # a Last-Modified of another second (the loopback server gives no ETag)
+    check(rewrite_values(store, new), "rewritten: the store's metadata and coordinates unchanged to the byte")
+    out = os.path.join(work, "o_rw_mixed")
+    p = plan(glider, ["--currents", url, "--cache", cache, "--out", out] + WIDE)
+    check(p.returncode == 2 and "differs from the cache's" in p.stderr and "would be mixed" in p.stderr and
+          url in p.stderr and cache in p.stderr, "rewritten values over HTTP, a trip beyond the cache: exit 2 naming "
+          "the chunk, the URL and the cache folder (exit %d: %s)" % (p.returncode, p.stderr[-400:]))
+    check(not os.path.exists(out), "rewritten values over HTTP: no output directory")
+    # the same trip within the cache: the cached forecast as a whole (a snapshot), no request
+    before = len(server.asked)
+    p = plan(glider, ["--currents", url, "--cache", cache, "--out", os.path.join(work, "o_rw_snapshot")] + TRIP)
+    check(p.returncode == 0 and server.asked[before:] == [] and
+          travel_time(os.path.join(work, "o_rw_snapshot")) == travel_time(os.path.join(work, "o_rw_first")),
+          "rewritten values, a trip within the cache: the cached snapshot, no request (exit %d)" % p.returncode)
+    shutil.rmtree(cache)
+    p = plan(glider, ["--currents", url, "--cache", cache, "--out", os.path.join(work, "o_rw_fresh")] + WIDE)
+    check(p.returncode == 0 and abs(travel_time(os.path.join(work, "o_rw_fresh")) - t_new) <= 1e-12 * t_new,
+          "rewritten values over HTTP, the cache removed: the new values' travel time (exit %d: %s)" %
+          (p.returncode, p.stderr[-300:]))
+    # on disk: no cache, the values as they are now
+    local = os.path.join(work, "local_rw.zarr")
+    shutil.copytree(time_chunked, local)
+    p = plan(glider, ["--currents", local, "--out", os.path.join(work, "o_rw_local0")] + WIDE)
+    check(rewrite_values(local, new), "rewritten on disk: metadata and coordinates unchanged to the byte")
+    p = plan(glider, ["--currents", local, "--out", os.path.join(work, "o_rw_local")] + WIDE)
+    check(p.returncode == 0 and abs(travel_time(os.path.join(work, "o_rw_local")) - t_new) <= 1e-12 * t_new,
+          "rewritten values on disk: the new values' travel time (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
+
+
+def check_cut_grib(glider, work, grib):
+    """A GRIB2 file cut inside a message, and at the end of a message (the VOGRD messages after it lost): exit 2
+    naming the file and what is wrong with it, never "no northward (v) velocity"."""
+    import struct
+    data = open(grib, "rb").read()
+    ends, at = [], 0
+    while at < len(data):
+        at += struct.unpack(">Q", data[at + 8:at + 16])[0]
+        ends.append(at)
+    cut = os.path.join(work, "cut.grib2")
+    for label, size, phrase in (("inside a message", len(data) // 2 + 7, "the file is truncated"),
+                                ("at a message's end", ends[len(ends) // 2 - 1], "holds UOGRD but no VOGRD")):
+        with open(cut, "wb") as f:
+            f.write(data[:size])
+        p = plan(glider, ["--currents", cut, "--out", os.path.join(work, "o_cut")] + TRIP)
+        check(p.returncode == 2 and "GRIB file '%s'" % cut in p.stderr and phrase in p.stderr and
+              "velocity found" not in p.stderr, "GRIB2 cut %s: exit 2 naming the file, '%s' (exit %d: %s)" %
+              (label, phrase, p.returncode, p.stderr[-300:]))
+        check(not os.path.exists(os.path.join(work, "o_cut")), "GRIB2 cut %s: no output directory" % label)
+
+
+def check_not_dap(glider, work, root, server, t_nc):
+    """A Zarr store served at a URL without .zarr (taken for OPeNDAP) and a web page: exit 2 saying what the server
+    holds and what was expected, the page never printed; the store given as ZARR:URL plans as the NetCDF file."""
+    port = server.server_address[1]
+    os.symlink("geo.zarr", os.path.join(root, "geostore"))
+    bare = "http://127.0.0.1:%d/geostore" % port
+    page = "http://127.0.0.1:%d/page" % port
+    with open(os.path.join(root, "page"), "w") as f:
+        f.write("<html><body>a landing page</body></html>")
+    mission = os.path.join(work, "bare.yaml")
+    with open(mission, "w") as f:
+        f.write("current: {type: netcdf, file: '%s'}\nstart: {lon: -74.2, lat: 30.4}\ngoal: {lon: -72.1, lat: 32.3}\n"
+                "vehicle: {speed: 0.5}\ndeparture: {time: 2026-06-01T03:00:00Z}\n" % bare)
+    for label, args, phrases in (
+            ("a store's URL without .zarr", ["--currents", bare] + TRIP, [bare, "ZARR:" + bare, "Zarr store"]),
+            ("the same in a mission file", ["--mission", mission], ["bare.yaml", "ZARR:" + bare]),
+            ("a web page", ["--currents", page] + TRIP, [page, "HTML page", "ending in .zarr"])):
+        out = os.path.join(work, "o_notdap")
+        p = plan(glider, args + ["--out", out])
+        lines = p.stderr.strip().splitlines()
+        check(p.returncode == 2 and all(x in p.stderr for x in phrases) and "<html" not in p.stderr.lower() and
+              "<!doctype" not in p.stderr.lower() and len(lines) <= 3 and not os.path.exists(out),
+              "%s: exit 2 saying what the server holds, no HTML, no output (exit %d: %s)" %
+              (label, p.returncode, p.stderr[-400:]))
+    out = os.path.join(work, "o_zarr_prefix")
+    p = plan(glider, ["--currents", "ZARR:" + bare, "--out", out] + TRIP)
+    check(p.returncode == 0 and travel_time(out) == t_nc, "the store as ZARR:URL plans as the NetCDF file (exit %d: "
+          "%s)" % (p.returncode, p.stderr[-300:]))
+
+
 def main():
     glider = sys.argv[1]
     work = tempfile.mkdtemp(prefix="ompl_glider_gdal_")
@@ -273,6 +394,9 @@ def main():
         check(p.returncode == 0 and travel_time(out) == t_nc, "a nested store over HTTP: the NetCDF file's travel "
               "time (exit %d: %s)" % (p.returncode, p.stderr[-300:]))
 
+        # 2a'. a store's URL without .zarr, and a web page, where NetCDF-C expects OPeNDAP
+        check_not_dap(glider, work, root, server, t_nc)
+
         # 2b. the cache: the first run fills it, the second asks the server nothing; a republished store is refused
         cache = os.path.join(work, "cache")
         cached_times = []
@@ -320,6 +444,9 @@ def main():
         if p.returncode == 0:
             notes = json.dumps(json.load(open(os.path.join(out, "summary.json"))))
             check("elsewhere.example" in notes, "cache: the report names the folder's other source")
+
+        # 2c. values rewritten under the same metadata and coordinates: never old chunks beside new ones
+        check_rewritten_values(glider, work, root, geo_chunked, time_chunked, server, ds)
 
         # 3. garbage: a store whose metadata is not JSON, served; a chunk that is not blosc, on disk
         bad = os.path.join(root, "bad.zarr")
@@ -385,6 +512,8 @@ def main():
                 check("current netcdf (GRIB file)" in p.stdout, "GRIB2 %s: the report says GRIB file" % label)
                 check(json.load(open(os.path.join(out, "summary.json")))["current_source"] == "GRIB file",
                       "GRIB2 %s: summary.json current_source" % label)
+        # 5b. a GRIB2 file cut short: inside a message (GDAL reads none), at a message's end (VOGRD lost)
+        check_cut_grib(glider, work, grib)
         # 6. RTOFS's layout: one GRIB2 file per forecast time, given as one forecast by a pattern
         hourly = os.path.join(work, "hourly")
         os.makedirs(hourly)

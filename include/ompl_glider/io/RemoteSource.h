@@ -51,7 +51,8 @@ void prepareRemoteAccess();
 /// text is returned as it is.
 std::string withoutCredentials(const std::string &source);
 
-/// @brief True when @p source is a URL (http://, https://, or NetCDF-C's [mode]http:// prefixes), not a file path.
+/// @brief True when @p source is a URL (http://, https://, NetCDF-C's [mode]http:// prefixes, or GDAL's ZARR:http://
+/// of a Zarr store), not a file path.
 bool isRemoteSource(const std::string &source);
 
 /// @brief What was read from one remote source in this process.

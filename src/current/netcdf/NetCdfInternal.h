@@ -319,6 +319,12 @@ HyperslabPlan planHyperslab(const NcFile &f, const Layout &l, const HorizontalSu
 /// @throws Error naming the file, the variable (or NetCdfCurrentOptions::velocityUnits) and the units when they
 /// are missing, not understood, not a velocity, or different for u and v.
 LinearConversion velocityConversionOf(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt);
+/// Refuses a velocity no current or wind reaches at a water node of any record loaded (g.u/g.v in m/s: more than
+/// 300 m/s, or not finite in single precision; in a Cartesian file's units without units, more than 1e6), naming
+/// the variable, the value, the node (file indices, coordinates) and the record: values read as fill values, a
+/// scale_factor or units that are wrong, never planned on.
+void checkVelocityMagnitudes(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &t,
+                             const NetCdfCurrentOptions &opt, const GriddedData &g);
 /// The conversion to metres of a Cartesian axis' units (UDUNITS-2, lengthToMetres()); the identity without
 /// units or for dimensionless ones (degrees included). @throws Error naming the file, the variable and the units
 /// when they are not a length.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "NetCdfInternal.h"
+#include "../../io/NumberText.h"
 #include "ompl_glider/io/UnitConversion.h"
 
 namespace ompl_glider
@@ -40,6 +41,43 @@ LinearConversion velocityConversionOf(const NcFile &f, const Layout &l, const Ne
         throw f.error("variables '" + l.uName + "' and '" + l.vName + "' have different units ('" + uu + "' and '" +
                       vu + "')");
     return cu;
+}
+
+void checkVelocityMagnitudes(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &t,
+                             const NetCdfCurrentOptions &opt, const GriddedData &g)
+{
+    const auto noUnits = [](const std::string &u) { return trim(u).empty() || trim(u) == "1"; };
+    const bool physical = !opt.velocityUnits.empty() || l.geographic || !noUnits(unitsOf(f, l.uVar)) ||
+                          !noUnits(unitsOf(f, l.vVar));
+    const double limit = physical ? 300.0 : 1e6;
+    const std::size_t nh = g.nx * g.ny, perTime = g.water.size();
+    if (nh == 0 || perTime == 0)
+        return;
+    for (std::size_t idx = 0; idx < g.u.size(); ++idx)
+    {
+        const std::size_t n = idx % perTime;
+        const bool badU = !(std::abs(g.u[idx]) <= limit), badV = !(std::abs(g.v[idx]) <= limit);
+        if (!g.water[n] || (!badU && !badV))
+            continue;
+        const std::size_t it = idx / perTime, q = n % nh, j = q / g.nx, i = q % g.nx;
+        std::string at;
+        if (q < h.nodeLon.size() && q < h.nodeLat.size())
+            at = text::number(h.nodeLon[q]) + (l.geographic ? ", lat " : ", y ") + text::number(h.nodeLat[q]);
+        else if (i < h.lon1D.size() && j < h.lat1D.size())
+            at = text::number(h.lon1D[i]) + (l.geographic ? ", lat " : ", y ") + text::number(h.lat1D[j]);
+        if (!at.empty())
+            at = (l.geographic ? ", lon " : ", x ") + at;
+        const std::string name = badU ? l.uName : l.vName;
+        const double value = badU ? g.u[idx] : g.v[idx];
+        std::string record;
+        if (l.dimT >= 0 && it < t.idx.size())
+            record = ", record " + std::to_string(t.idx[it]) + " of '" + f.dimName(l.dims[std::size_t(l.dimT)]) + "'";
+        throw f.error("variable '" + name + "' holds " + text::number(value, 7) + (physical ? " m/s" : "") +
+                      " at (j, i) = (" + std::to_string(j < h.yIdx.size() ? h.yIdx[j] : j) + ", " +
+                      std::to_string(i < h.xIdx.size() ? h.xIdx[i] : i) + ")" + at + record + ": faster than any current or wind (more than " +
+                      text::number(limit) + (physical ? " m/s" : "") + "), and not a fill value (_FillValue, " +
+                      "missing_value, valid_range): a fill value not declared, or wrong units or scale_factor?");
+    }
 }
 
 LinearConversion axisConversion(const NcFile &f, int var)

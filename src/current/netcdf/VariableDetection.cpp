@@ -119,7 +119,8 @@ int findVelocity(const NcFile &f, const std::string &given, bool east, const std
                           "NetCdfCurrentOptions::" + optionName);
         if (!v)
             throw f.error("no variable '" + given + "' (given with NetCdfCurrentOptions::" + optionName +
-                              "); candidates: " + candidateList(f),
+                              "); candidates: " + candidateList(f) +
+                              (f.unreadable().empty() ? std::string() : "; and " + f.unreadable()),
                           "NetCdfCurrentOptions::" + optionName);
         return *v;
     }
@@ -159,6 +160,9 @@ int findVelocity(const NcFile &f, const std::string &given, bool east, const std
     }
     if (!groups.empty())
         throw f.error(groups);
+    if (const std::string broken = f.unreadable(); !broken.empty())  // the velocity may be the array that is broken
+        throw f.error(std::string("no ") + (east ? "eastward (u)" : "northward (v)") + " velocity among the arrays "
+                      "that can be read, and " + broken + "; candidates: " + candidateList(f));
     throw f.error(std::string("no ") + (east ? "eastward (u)" : "northward (v)") +
                   " velocity found: no variable with standard_name one of {" + joinNames(stdNames) +
                   "} or named one of {" + joinNames(names) + "} (in any case); candidates: " + candidateList(f) +

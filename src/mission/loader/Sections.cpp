@@ -122,7 +122,7 @@ namespace
 void readForecastFiles(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c)
 {
     const auto resolved = [&](const std::string &item) {
-        return isRemoteSource(item) ? item : joinPath(r.dir(), item);
+        return isRemoteSource(item) || item.rfind("ZARR:", 0) == 0 ? item : joinPath(r.dir(), item);
     };
     std::vector<std::string> items;
     if (n.IsSequence())
