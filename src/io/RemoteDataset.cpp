@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "BlockCopy.h"
+#include "NetCdfLock.h"
 #include "NumberText.h"
 #include "RemoteRecord.h"
 #include "TextUtil.h"
@@ -189,6 +190,7 @@ std::string &limitProblem()
 
 void prepareNetcdfAccess(const RemoteAccess &access)
 {
+    const NetCdfLock lock;  // NetCDF-C reads the environment at its first call
     static std::once_flag once;
     std::call_once(once, [&] {
         if (std::getenv("NCRCENV_RC"))
@@ -240,6 +242,7 @@ long requestLimitInForce()
 
 std::shared_ptr<RemoteDataset> RemoteDataset::open(const std::string &url, const RemoteAccess &access)
 {
+    const NetCdfLock netcdf;  // before this function's own lock (NetCdfLock.h: its lock order)
     static std::mutex m;
     // kept for the process (never destroyed: no NetCDF call after NetCDF-C's own end at exit)
     static auto &open = *new std::map<std::string, std::shared_ptr<RemoteDataset>>();
@@ -291,6 +294,7 @@ RemoteDataset::RemoteDataset(std::string url, RemoteAccess access, std::size_t r
 
 RemoteDataset::~RemoteDataset()
 {
+    const NetCdfLock lock;
     if (cacheId_ >= 0)
         nc_close(cacheId_);
     if (remoteId_ >= 0)
@@ -398,6 +402,7 @@ std::uint64_t RemoteDataset::valueBytes(int var, std::size_t values) const
 void RemoteDataset::read(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
                          double *out)
 {
+    const NetCdfLock netcdf;  // before the dataset's own lock (NetCdfLock.h: its lock order)
     std::lock_guard<std::mutex> lock(mutex_);
     std::size_t n = 1;
     for (const std::size_t c : count)
@@ -432,6 +437,7 @@ void RemoteDataset::read(int var, const std::vector<std::size_t> &start, const s
 
 void RemoteDataset::flush()
 {
+    const NetCdfLock netcdf;  // before the dataset's own lock (NetCdfLock.h: its lock order)
     std::lock_guard<std::mutex> lock(mutex_);
     if (!dirty_)
         return;

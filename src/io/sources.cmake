@@ -8,6 +8,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/TempFolder.cpp  # the folder for temporary files (TMPDIR), checked
   ${CMAKE_CURRENT_LIST_DIR}/FileList.cpp  # a forecast's files: paths, glob patterns, URLs
   ${CMAKE_CURRENT_LIST_DIR}/DegMin.cpp  # the Slocum's [-]DDDMM.MMMM coordinates (goto lists, dba files)
+  ${CMAKE_CURRENT_LIST_DIR}/NetCdfLock.cpp  # the one lock of NetCDF-C and GDAL's datasets (NetCdfLock.h)
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
