@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "BlockCopy.h"
+#include "FetchStop.h"
 #include "NetCdfLock.h"
 #include "NumberText.h"
 #include "RemoteRecord.h"
@@ -312,7 +313,14 @@ int RemoteDataset::attempt(const std::string &what, const std::function<int()> &
     {
         remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { ++f.requests; });
         std::string log;
-        int st = callWatchingLog(call, log);
+        int st = NC_NOERR;
+        {
+            const FetchStopWatch watch(url_);
+            st = callWatchingLog(call, log);
+        }
+        if (stopRequested())  // the request cut by the stop request, or ended as it came: its values are not used
+            throw Error(who() + ": " + what + ": stopped (a stop was requested) during attempt " +
+                        std::to_string(k + 1));
         const bool cut = cutShort(log);
         if (cut)
             st = NC_EDATADDS;  // zero-filled values, never planned on

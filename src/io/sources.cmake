@@ -15,6 +15,7 @@ if(OMPL_GLIDER_WITH_NETCDF)
     # the open NetCDF file (NcFile.h, internal) of the forecast reader (current/netcdf/) and the bathymetry
     ${CMAKE_CURRENT_LIST_DIR}/NcFile.cpp
     ${CMAKE_CURRENT_LIST_DIR}/RemoteDataset.cpp  # OPeNDAP: time limits, retries, the cache
+    ${CMAKE_CURRENT_LIST_DIR}/FetchStop.cpp  # a stop request cuts a blocking HTTP request (FetchStop.h)
     ${CMAKE_CURRENT_LIST_DIR}/ClassicSize.cpp
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
     ${CMAKE_CURRENT_LIST_DIR}/DepthGrid.cpp
