@@ -21,6 +21,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 import numbers
 import os
 import weakref
@@ -46,9 +47,11 @@ def _bad(who: str, value: Any, expected: str) -> Error:
 
 
 def _real(who: str, value: Any) -> float:
-    """A number (not a bool), as a float, or an Error naming who."""
+    """A finite number (not a bool; NaN would read as "not given"), as a float, or an Error naming who."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         raise _bad(who, value, "a number")
+    if not math.isfinite(value):
+        raise _bad(who, value, "a finite number")
     return float(value)
 
 
@@ -359,6 +362,8 @@ def _path_keyword(name: str, value: Any) -> Optional[str]:
         return None
     if not isinstance(value, (str, os.PathLike)):
         raise _bad(f"plan(): keyword '{name}'", value, "a file name")
+    if os.fspath(value) == "":  # not "none": None is
+        raise _bad(f"plan(): keyword '{name}'", value, "a file name, not an empty one")
     return os.fspath(value)
 
 
