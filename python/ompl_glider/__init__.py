@@ -249,9 +249,17 @@ class Result:
 
     @property
     def waypoints(self) -> Dict[str, Any]:
-        """The waypoints with every column of waypoints.csv (x, y, lon, lat, t, time_iso, leg_time, heading,
-        heading_duration)."""
-        return self._core.waypoints()
+        """The waypoints with every column of waypoints.csv: x, y, lon, lat, t, time_iso, leg_time, heading,
+        heading_duration as the result holds them, leg (the leg of a mission of several legs, 0 for one leg) and
+        stop (the via point a waypoint is: "start", a via point's name, the goal's; "" between them, and in a
+        mission of one leg), and the file's other columns (index, time, time_s, profile, climb_to, dive_to,
+        heading_deg, segment_duration: NaN where the file has no value) as the output layer writes them."""
+        w = self._core.waypoints()
+        rows = list(csv.DictReader(io.StringIO(self._core.waypoints_csv())))
+        for key in (rows[0].keys() if rows else []):
+            if key not in w:
+                w[key] = np.array([_number(row[key]) for row in rows])
+        return w
 
     @property
     def path(self) -> Dict[str, np.ndarray]:
