@@ -21,6 +21,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 import numbers
 import os
 import weakref
@@ -46,9 +47,11 @@ def _bad(who: str, value: Any, expected: str) -> Error:
 
 
 def _real(who: str, value: Any) -> float:
-    """A number (not a bool), as a float, or an Error naming who."""
+    """A finite number (not a bool; NaN would read as "not given"), as a float, or an Error naming who."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         raise _bad(who, value, "a number")
+    if not math.isfinite(value):
+        raise _bad(who, value, "a finite number")
     return float(value)
 
 
@@ -246,9 +249,17 @@ class Result:
 
     @property
     def waypoints(self) -> Dict[str, Any]:
-        """The waypoints with every column of waypoints.csv (x, y, lon, lat, t, time_iso, leg_time, heading,
-        heading_duration)."""
-        return self._core.waypoints()
+        """The waypoints with every column of waypoints.csv: x, y, lon, lat, t, time_iso, leg_time, heading,
+        heading_duration as the result holds them, leg (the leg of a mission of several legs, 0 for one leg) and
+        stop (the via point a waypoint is: "start", a via point's name, the goal's; "" between them, and in a
+        mission of one leg), and the file's other columns (index, time, time_s, profile, climb_to, dive_to,
+        heading_deg, segment_duration: NaN where the file has no value) as the output layer writes them."""
+        w = self._core.waypoints()
+        rows = list(csv.DictReader(io.StringIO(self._core.waypoints_csv())))
+        for key in (rows[0].keys() if rows else []):
+            if key not in w:
+                w[key] = np.array([_number(row[key]) for row in rows])
+        return w
 
     @property
     def path(self) -> Dict[str, np.ndarray]:
@@ -359,6 +370,8 @@ def _path_keyword(name: str, value: Any) -> Optional[str]:
         return None
     if not isinstance(value, (str, os.PathLike)):
         raise _bad(f"plan(): keyword '{name}'", value, "a file name")
+    if os.fspath(value) == "":  # not "none": None is
+        raise _bad(f"plan(): keyword '{name}'", value, "a file name, not an empty one")
     return os.fspath(value)
 
 

@@ -53,23 +53,75 @@ std::string describe(const py::handle &v)
     return std::string(Py_TYPE(v.ptr())->tp_name) + " " + r;
 }
 
+bool isBool(const py::handle &v)
+{
+    return py::isinstance<py::bool_>(v) || std::string(Py_TYPE(v.ptr())->tp_name) == "numpy.bool_";
+}
+
+/// What keeps @p v, or an item of it at any depth (of a tuple, a list, a dict's values), from being the numbers a
+/// keyword takes: a bool (True is no 1.0) or a number that is not finite (NaN would read as "not given"); "" when
+/// nothing does. Texts are left to the keyword's own reading.
+std::string badNumber(const py::handle &v, const std::string &item = "")
+{
+    const std::string what = item.empty() ? "it" : "item " + item;
+    if (isBool(v))
+        return what + " is a bool";
+    if (py::isinstance<py::str>(v) || py::isinstance<py::bytes>(v))
+        return "";
+    if (py::isinstance<py::dict>(v))
+    {
+        for (const auto &kv : py::reinterpret_borrow<py::dict>(v))
+            if (std::string bad = badNumber(kv.second, item + "[" + py::repr(kv.first).cast<std::string>() + "]");
+                !bad.empty())
+                return bad;
+        return "";
+    }
+    if (py::isinstance<py::tuple>(v) || py::isinstance<py::list>(v))
+    {
+        std::size_t k = 0;
+        for (const py::handle x : v)
+            if (std::string bad = badNumber(x, item + "[" + std::to_string(k++) + "]"); !bad.empty())
+                return bad;
+        return "";
+    }
+    if (PyFloat_Check(v.ptr()) || (PyNumber_Check(v.ptr()) && !PyLong_Check(v.ptr()) && py::hasattr(v, "dtype")))
+    {
+        const double x = PyFloat_AsDouble(v.ptr());
+        if (PyErr_Occurred())
+            PyErr_Clear();
+        else if (!std::isfinite(x))
+            return what + " is not finite";
+    }
+    return "";
+}
+
 /// The value of keyword @p name as a T, or an Error naming the keyword, what it expects and what it got: a bool is
-/// no number, and a number no bool (smoothing=1 is refused, as smoothing="no" is).
+/// no number, and a number no bool (smoothing=1 is refused, as smoothing="no" is), also as an item of a pair or a
+/// list (via=[(True, False)]); a number is finite (radius=nan is refused, not read as "not given"); a text is not
+/// empty (observations="" is refused, not read as "none").
 template <class T>
 T value(const py::handle &v, const std::string &name, const char *expected)
 {
-    const bool isBool = py::isinstance<py::bool_>(v) || std::string(Py_TYPE(v.ptr())->tp_name) == "numpy.bool_";
-    bool ok = std::is_same_v<T, bool> ? isBool : !isBool;
+    bool ok = std::is_same_v<T, bool> ? isBool(v) : !isBool(v);
+    std::string why;
+    if constexpr (!std::is_same_v<T, bool> && !std::is_same_v<T, std::string> && !std::is_base_of_v<py::handle, T>)
+        if (ok && !(why = badNumber(v)).empty())
+            ok = false;
     if (ok)
         try
         {
-            return v.cast<T>();
+            T out = v.cast<T>();
+            if constexpr (std::is_same_v<T, std::string>)
+                if (out.empty())
+                    throw Error("plan(): keyword '" + name + "': expected " + expected + ", got an empty text");
+            return out;
         }
         catch (const py::cast_error &)
         {
             ok = false;
         }
-    throw Error("plan(): keyword '" + name + "': expected " + expected + ", got " + describe(v));
+    throw Error("plan(): keyword '" + name + "': expected " + expected + ", got " + describe(v) +
+                (why.empty() ? std::string() : " (" + why + ")"));
 }
 
 void checkFinite(const std::string &name, double v, bool positive)
@@ -455,7 +507,12 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
         if (auto v = get(name))
             *target = Given<bool>{value<bool>(*v, name, "True or False"), text(name)};
     if (auto v = get("departure"))
+    {
+        if (const std::string why = badNumber(*v); !why.empty() || py::str(*v).cast<std::string>().empty())
+            throw Error("plan(): keyword 'departure': expected a number or an ISO 8601 date, got " + describe(*v) +
+                        (why.empty() ? std::string() : " (" + why + ")"));
         o.departure = Given<std::string>{py::str(*v).cast<std::string>(), text("departure")};
+    }
     for (const auto &[name, target] : {std::make_pair("start", &o.start), std::make_pair("goal", &o.goal)})
         if (auto v = get(name))
         {
@@ -488,7 +545,8 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     if (auto v = get("order"))
         o.order = Given<std::string>{value<std::string>(*v, "order", "'given' or 'free'"), text("order")};
     if (auto v = get("observations"))
-        o.observations = Given<std::string>{py::str(*v).cast<std::string>(), text("observations")};
+        o.observations = Given<std::string>{
+            value<std::string>(*v, "observations", "a file, a folder, a glob or a URL"), text("observations")};
     if (auto v = get("coastline"))
         o.coastline = Given<std::string>{value<std::string>(*v, "coastline", "a file name"), text("coastline")};
     applySafetyAndExecutionKeywords(get, text, o);
@@ -522,16 +580,22 @@ void bindMission(py::module_ &m)
     m.def(
         "last_fix",
         [](const std::string &path) -> py::object {
-            const GliderObservations o = readGliderObservations(path);
+            GliderObservations o;
+            {
+                const py::gil_scoped_release release;  // files and URLs read without the GIL (NetCdfLock.h)
+                o = readGliderObservations(path);
+            }
             if (!o.lastFix)
                 return py::none();
             return py::make_tuple(o.lastFix->at.lon, o.lastFix->at.lat, formatIsoTime(o.lastFix->time));
         },
         py::arg("path"), "The last fix (lon, lat, ISO 8601 time) of a glider's observations (IOOS files, Slocum dba files, a CSV, "
                          "or an ERDDAP URL).");
-    m.def("load_mission", &loadMission, py::arg("path"), "A YAML mission file (examples/MISSION_FORMAT.md).");
+    // (read with the GIL released: a mission's forecast files are asked for their time axis)
+    m.def("load_mission", &loadMission, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
+          "A YAML mission file (examples/MISSION_FORMAT.md).");
     m.def("parse_mission", &parseMission, py::arg("text"), py::arg("file") = "<mission>",
-          py::arg("directory") = ".", "A mission from YAML (or JSON) text.");
+          py::arg("directory") = ".", py::call_guard<py::gil_scoped_release>(), "A mission from YAML (or JSON) text.");
     m.def("forecast_mission", &forecast, py::arg("files"), py::arg("start"), py::arg("goal"),
           py::arg("departure") = "", py::arg("speed") = 0.3, py::arg("depth") = 0.0, py::arg("region") = py::none(),
           py::arg("variables") = std::map<std::string, std::string>{}, py::arg("xy_interpolation") = "bilinear",

@@ -69,12 +69,19 @@ py::dict points(const PyResult &r, const std::vector<TimedPoint> &pts)
     return d;
 }
 
+/// The waypoints as columns: the numbers as the result holds them, and the leg and stop of each as the output
+/// layer writes them in waypoints.csv (stopName(): "start", a via point's name, the goal's; "" between them and
+/// in a mission of one leg).
 py::dict waypoints(const PyResult &r)
 {
     std::vector<double> x, y, lon, lat, t, heading, duration, leg;
-    std::vector<std::string> iso;
-    for (const MissionWaypoint &w : r.result.waypoints)
+    std::vector<std::string> iso, stop;
+    py::array_t<long long> legIndex(static_cast<py::ssize_t>(r.result.waypoints.size()));
+    for (std::size_t i = 0; i < r.result.waypoints.size(); ++i)
     {
+        const MissionWaypoint &w = r.result.waypoints[i];
+        legIndex.mutable_at(static_cast<py::ssize_t>(i)) = w.missionLeg;
+        stop.push_back(stopName(r.result, i));
         x.push_back(w.position.x);
         y.push_back(w.position.y);
         lon.push_back(w.geographic ? w.lonLat.lon : kNaN);
@@ -95,6 +102,8 @@ py::dict waypoints(const PyResult &r)
     d["heading_duration"] = array(duration);
     d["leg_time"] = array(leg);
     d["time_iso"] = iso;
+    d["leg"] = legIndex;
+    d["stop"] = stop;
     return d;
 }
 
@@ -414,6 +423,7 @@ void bindResult(py::module_ &m)
         .def_property_readonly("goal", [](const R &r) { return py::make_tuple(r.problem->getGoal().x,
                                                                               r.problem->getGoal().y); })
         .def("waypoints", &waypoints)
+        .def("waypoints_csv", [](const R &r) { return waypointsCsv(r.result); })
         .def("path", [](const R &r) { return points(r, r.result.plan.path); })
         .def("track", [](const R &r) { return points(r, r.result.plan.track); })
         .def("polygons", &polygons)

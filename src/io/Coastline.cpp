@@ -14,6 +14,7 @@
 #include <ogrsf_frmts.h>
 
 #include "ompl_glider/Exception.h"
+#include "NetCdfLock.h"
 #include "NumberText.h"
 
 namespace ompl_glider
@@ -170,6 +171,9 @@ std::string polygonFault(const std::vector<Point2> &outer, const std::vector<std
 std::vector<LandPolygon> readLandPolygons(const std::string &path, const GeoBox &box, std::vector<std::string> *repairs,
                                           CoastlineCount *count)
 {
+    // the GDAL dataset, from its opening to its closing at the end of this function, under the process's one lock
+    // of GDAL's datasets and NetCDF-C (NetCdfLock.h: GDAL's netCDF driver reads vector NetCDF files too)
+    const netcdf_detail::NetCdfLock lock;
     const double lonMin = box.lonMin, latMin = box.latMin, lonMax = box.lonMax, latMax = box.latMax;
     registerDrivers();
     const std::string who = "coastline file '" + path + "'";

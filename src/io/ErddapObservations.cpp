@@ -20,6 +20,7 @@
 
 #include "HttpMirror.h"
 #include "NcFile.h"
+#include "NetCdfLock.h"
 #include "NumberText.h"
 #include "ObservationReaders.h"
 #include "RemoteRecord.h"
@@ -386,7 +387,10 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who, Veloc
             {
                 const std::size_t n = nc.dimLen(nc.varDims(id)[0]), len = nc.dimLen(nc.varDims(id)[1]);
                 std::vector<char> chars(n * len + 1, '\0');
-                nc.check(nc_get_var_text(nc.id(), id, chars.data()), "read 'profile_id'");
+                {
+                    const netcdf_detail::NetCdfLock lock;  // every NetCDF-C call under the one lock
+                    nc.check(nc_get_var_text(nc.id(), id, chars.data()), "read 'profile_id'");
+                }
                 for (std::size_t i = 0; i < n; ++i)
                     profiles.push_back(text::trim(std::string(chars.data() + i * len, len)));
                 continue;

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "NcFile.h"
+#include "NetCdfLock.h"
 #include "NumberText.h"
 #include "ObservationReaders.h"
 #include "TextUtil.h"
@@ -307,6 +308,7 @@ ProfileFile readProfile(const std::string &file)
         if (const auto id = var("trajectory"); id && nc.varType(*id) == NC_CHAR && nc.varDims(*id).size() == 1)
         {
             std::vector<char> name(nc.dimLen(nc.varDims(*id)[0]) + 1, '\0');
+            const netcdf_detail::NetCdfLock lock;  // every NetCDF-C call under the one lock
             nc.check(nc_get_var_text(nc.id(), *id, name.data()), "read 'trajectory'");
             p.platform = name.data();
         }

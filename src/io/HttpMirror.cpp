@@ -18,6 +18,7 @@
 #include <cpl_string.h>
 #include <cpl_vsi.h>
 
+#include "FetchStop.h"
 #include "RemoteRecord.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/StopRequest.h"
@@ -445,9 +446,19 @@ bool httpGet(const std::string &url, std::size_t record, const std::string &who,
             throw Error(who + ": stopped while fetching '" + what + "'");
         remote_detail::updateFetchRecord(record, [](RemoteFetch &f) { ++f.requests; });
         CPLPushErrorHandler(CPLQuietErrorHandler);
-        CPLHTTPResult *r = CPLHTTPFetch(url.c_str(), options);
+        CPLHTTPResult *r = nullptr;
+        {
+            const FetchStopWatch watch(url);  // a stop request cuts the request at once (FetchStop.h)
+            r = CPLHTTPFetch(url.c_str(), options);
+        }
         CPLPopErrorHandler();
         CPLErrorReset();
+        if (stopRequested())
+        {
+            if (r)
+                CPLHTTPDestroyResult(r);
+            throw Error(who + ": stopped while fetching '" + what + "'");
+        }
         const std::string errors = r && r->pszErrBuf ? r->pszErrBuf : "";
         const int curl = r ? r->nStatus : -1;
         int http = 0;

@@ -5,6 +5,7 @@
 #include <netcdf_mem.h>
 
 #include "Dataset.h"
+#include "NetCdfLock.h"
 #include "RemoteDataset.h"
 #include "RemoteRecord.h"
 #include "ompl_glider/io/MemoryDataset.h"
@@ -36,6 +37,7 @@ class NetCdfDataset final : public Dataset
 public:
     explicit NetCdfDataset(const std::string &path) : path_(path)
     {
+        const NetCdfLock lock;
         quietHdf5OnThisThread();
         const RemoteAccess access = remoteAccess();
         prepareNetcdfAccess(access);
@@ -67,6 +69,7 @@ public:
     }
     ~NetCdfDataset() override
     {
+        const NetCdfLock lock;
         if (remote_)
             remote_->flush();  // the dataset stays open for the process's next reader
         else
@@ -85,30 +88,35 @@ public:
     }
     int nvars() const override
     {
+        const NetCdfLock lock;
         int n = 0;
         check(nc_inq_nvars(id_, &n), "inquire variables");
         return n;
     }
     std::string varName(int var) const override
     {
+        const NetCdfLock lock;
         char buf[NC_MAX_NAME + 1];
         check(nc_inq_varname(id_, var, buf), "inquire variable name");
         return buf;
     }
     std::string dimName(int dim) const override
     {
+        const NetCdfLock lock;
         char buf[NC_MAX_NAME + 1];
         check(nc_inq_dimname(id_, dim, buf), "inquire dimension name");
         return buf;
     }
     std::size_t dimLen(int dim) const override
     {
+        const NetCdfLock lock;
         std::size_t n = 0;
         check(nc_inq_dimlen(id_, dim, &n), "inquire dimension length");
         return n;
     }
     std::optional<int> findVar(const std::string &name) const override
     {
+        const NetCdfLock lock;
         int v;
         if (nc_inq_varid(id_, name.c_str(), &v) == NC_NOERR)
             return v;
@@ -116,6 +124,7 @@ public:
     }
     std::vector<int> varDims(int var) const override
     {
+        const NetCdfLock lock;
         int nd = 0;
         check(nc_inq_varndims(id_, var, &nd), "inquire dimensions of '" + varName(var) + "'");
         std::vector<int> d(static_cast<std::size_t>(nd));
@@ -125,12 +134,14 @@ public:
     }
     nc_type varType(int var) const override
     {
+        const NetCdfLock lock;
         nc_type t;
         check(nc_inq_vartype(id_, var, &t), "inquire type of '" + varName(var) + "'");
         return t;
     }
     std::optional<std::string> attText(int var, const char *name) const override
     {
+        const NetCdfLock lock;
         nc_type t;
         std::size_t len;
         if (nc_inq_att(id_, var, name, &t, &len) != NC_NOERR)
@@ -154,6 +165,7 @@ public:
     }
     std::vector<double> attDoubles(int var, const char *name, bool &isText) const override
     {
+        const NetCdfLock lock;
         nc_type t = NC_DOUBLE;
         std::size_t len = 0;
         isText = false;
@@ -171,6 +183,7 @@ public:
     void readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
                    double *out) const override
     {
+        const NetCdfLock lock;
         if (remote_)
             remote_->read(var, start, count, out);
         else
@@ -181,6 +194,7 @@ public:
 private:
     void check(int status, const std::string &what) const
     {
+        const NetCdfLock lock;
         if (status != NC_NOERR)
             throw Error(who() + ": " + what + ": " + nc_strerror(status));
     }
@@ -223,6 +237,7 @@ Error NcFile::error(const std::string &what, const std::string &field) const
 
 void NcFile::check(int status, const std::string &what) const
 {
+    const NetCdfLock lock;
     if (status != NC_NOERR)
         throw error(what + ": " + nc_strerror(status));
 }

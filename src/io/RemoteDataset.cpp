@@ -19,6 +19,8 @@
 #include <unistd.h>
 
 #include "BlockCopy.h"
+#include "FetchStop.h"
+#include "NetCdfLock.h"
 #include "NumberText.h"
 #include "RemoteRecord.h"
 #include "TextUtil.h"
@@ -203,6 +205,7 @@ std::string &limitProblem()
 
 void prepareNetcdfAccess(const RemoteAccess &access)
 {
+    const NetCdfLock lock;  // NetCDF-C reads the environment at its first call
     static std::once_flag once;
     std::call_once(once, [&] {
         if (std::getenv("NCRCENV_RC"))
@@ -254,6 +257,7 @@ long requestLimitInForce()
 
 std::shared_ptr<RemoteDataset> RemoteDataset::open(const std::string &url, const RemoteAccess &access)
 {
+    const NetCdfLock netcdf;  // before this function's own lock (NetCdfLock.h: its lock order)
     static std::mutex m;
     // kept for the process (never destroyed: no NetCDF call after NetCDF-C's own end at exit)
     static auto &open = *new std::map<std::string, std::shared_ptr<RemoteDataset>>();
@@ -305,6 +309,7 @@ RemoteDataset::RemoteDataset(std::string url, RemoteAccess access, std::size_t r
 
 RemoteDataset::~RemoteDataset()
 {
+    const NetCdfLock lock;
     if (cacheId_ >= 0)
         nc_close(cacheId_);
     if (remoteId_ >= 0)
@@ -322,7 +327,14 @@ int RemoteDataset::attempt(const std::string &what, const std::function<int()> &
     {
         remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { ++f.requests; });
         std::string log;
-        int st = callWatchingLog(call, log);
+        int st = NC_NOERR;
+        {
+            const FetchStopWatch watch(url_);
+            st = callWatchingLog(call, log);
+        }
+        if (stopRequested())  // the request cut by the stop request, or ended as it came: its values are not used
+            throw Error(who() + ": " + what + ": stopped (a stop was requested) during attempt " +
+                        std::to_string(k + 1));
         const bool cut = cutShort(log);
         lastAnswerForeign = foreignAnswer(log);
         if (cut)
@@ -430,6 +442,7 @@ std::uint64_t RemoteDataset::valueBytes(int var, std::size_t values) const
 void RemoteDataset::read(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
                          double *out)
 {
+    const NetCdfLock netcdf;  // before the dataset's own lock (NetCdfLock.h: its lock order)
     std::lock_guard<std::mutex> lock(mutex_);
     std::size_t n = 1;
     for (const std::size_t c : count)
@@ -464,6 +477,7 @@ void RemoteDataset::read(int var, const std::vector<std::size_t> &start, const s
 
 void RemoteDataset::flush()
 {
+    const NetCdfLock netcdf;  // before the dataset's own lock (NetCdfLock.h: its lock order)
     std::lock_guard<std::mutex> lock(mutex_);
     if (!dirty_)
         return;

@@ -8,12 +8,14 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/TempFolder.cpp  # the folder for temporary files (TMPDIR), checked
   ${CMAKE_CURRENT_LIST_DIR}/FileList.cpp  # a forecast's files: paths, glob patterns, URLs
   ${CMAKE_CURRENT_LIST_DIR}/DegMin.cpp  # the Slocum's [-]DDDMM.MMMM coordinates (goto lists, dba files)
+  ${CMAKE_CURRENT_LIST_DIR}/NetCdfLock.cpp  # the one lock of NetCDF-C and GDAL's datasets (NetCdfLock.h)
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
     # the open NetCDF file (NcFile.h, internal) of the forecast reader (current/netcdf/) and the bathymetry
     ${CMAKE_CURRENT_LIST_DIR}/NcFile.cpp
     ${CMAKE_CURRENT_LIST_DIR}/RemoteDataset.cpp  # OPeNDAP: time limits, retries, the cache
+    ${CMAKE_CURRENT_LIST_DIR}/FetchStop.cpp  # a stop request cuts a blocking HTTP request (FetchStop.h)
     ${CMAKE_CURRENT_LIST_DIR}/ClassicSize.cpp
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
     ${CMAKE_CURRENT_LIST_DIR}/DepthGrid.cpp

@@ -238,6 +238,8 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
     }
     if (o.observations)
     {
+        if (o.observations->value.empty())  // not "no observations": a caller that has none gives none
+            throw Error(o.observations->source + ": expected a file, a folder, a glob or a URL, got an empty text");
         ObservationsSpec spec = m.observations.value_or(ObservationsSpec{});
         spec.path = o.observations->value;
         spec.mark = SourceMark{o.observations->source, 0, o.origin};
@@ -255,6 +257,8 @@ void applyOutputs(const MissionOverrides &o, MissionSpec &m)
 {
     if (o.coastline)
     {
+        if (o.coastline->value.empty())
+            throw Error(o.coastline->source + ": expected a file name, got an empty text");
         m.forbidden.coastline = o.coastline->value;
         m.forbidden.coastlineMark = SourceMark{o.coastline->source, 0, o.origin};
     }

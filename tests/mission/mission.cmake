@@ -8,6 +8,10 @@ glider_add_test(test_mission_run ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp ${
   ${CMAKE_CURRENT_LIST_DIR}/TestForecastModelGrids.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestCoastline.cpp)
 target_link_libraries(test_mission_run PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)
+# eight threads plan at once on forecasts in memory, in files, in Zarr stores and at URLs, with coastlines, writing
+# their outputs: each answer the same plan's alone, to the bit (src/io/NetCdfLock.h)
+glider_add_test(test_mission_concurrent_sources ${CMAKE_CURRENT_LIST_DIR}/TestConcurrentSources.cpp)
+target_link_libraries(test_mission_concurrent_sources PRIVATE netCDF::netcdf)
 # the plan flown in another ocean through the pipeline
 glider_add_test(test_mission_execution ${CMAKE_CURRENT_LIST_DIR}/TestMissionExecution.cpp)
 target_link_libraries(test_mission_execution PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf)

@@ -181,6 +181,27 @@ def test_errors_are_python_exceptions_naming_the_input():
     (dict(forbidden=[{"points": [(4, -1), (6, -1), (6, 1)], "windows": 5}]),
      "keyword 'forbidden[0].windows': expected a list of (begin, end) pairs, got int 5"),
     (dict(speeds=[0.3, "x"]), "keyword 'speeds': expected a number, got str 'x'"),
+    # a bool is no number, also inside a pair or a list; NaN is no "not given"; an empty text no "none"
+    (dict(via=[(True, False)]), "keyword 'via[0]': expected a pair (x, y) or (lon, lat) of numbers, or a dict, got tuple "
+                                "(True, False) (item [0] is a bool)"),
+    (dict(via=[{"at": (4, 1), "radius": float("nan")}]), "keyword 'via[0].radius': expected a number"),
+    (dict(via=[(4, float("inf"))]), "(item [1] is not finite)"),
+    (dict(start=(1, True)), "keyword 'start': expected a pair (x, y) or (lon, lat) of numbers, got tuple (1, True) "
+                            "(item [1] is a bool)"),
+    (dict(region=(0, -4, float("nan"), 4)), "keyword 'region': expected four numbers"),
+    (dict(radius=float("nan")), "keyword 'radius': expected a number, got float nan (it is not finite)"),
+    (dict(goal_tolerance=float("inf")), "keyword 'goal_tolerance': expected a number, got float inf"),
+    (dict(keep_off=float("nan")), "keyword 'keep_off': expected a number or a length"),
+    (dict(departure=True), "keyword 'departure': expected a number or an ISO 8601 date, got bool True"),
+    (dict(departure=float("nan")), "keyword 'departure': expected a number or an ISO 8601 date, got float nan"),
+    (dict(arrive_between=(False, 5)), "keyword 'arrive_between': expected a pair (begin, end) of times"),
+    (dict(forbidden=[{"points": [(4, -1), (6, -1), (6, True)]}]), "(item [2][1] is a bool)"),
+    (dict(observations=""), "keyword 'observations': expected a file name, not an empty one, got str ''"),
+    (dict(coastline=""), "keyword 'coastline': expected a file name, not an empty one, got str ''"),
+    (dict(truth=""), "keyword 'truth': expected 'forecast', forecast files or a dict of the flow's parameters, got "
+                     "an empty text"),
+    (dict(truth={"velocity": float("nan")}), "keyword 'truth': expected a dict of numbers"),
+    (dict(bathymetry_variable=""), "keyword 'bathymetry_variable': expected a text, got an empty text"),
 ])
 def test_wrong_types_are_errors_naming_the_keyword(keywords, phrase):
     with pytest.raises(ompl_glider.Error) as e:
@@ -197,6 +218,8 @@ def test_field_and_write_arguments_are_checked():
         ompl_glider.Field.netcdf(f, steady_record=1.5)
     with pytest.raises(ompl_glider.Error, match="Field.netcdf\\(\\): depth: expected a number, got str 'deep'"):
         ompl_glider.Field.netcdf(f, depth="deep")
+    with pytest.raises(ompl_glider.Error, match="Field.netcdf\\(\\): depth: expected a finite number, got float nan"):
+        ompl_glider.Field.netcdf(f, depth=float("nan"))
     field = ompl_glider.Field.netcdf(f)
     with pytest.raises(ompl_glider.Error, match="keyword 'start': expected a pair .* got str 'ab'"):
         ompl_glider.plan(field=field, start="ab", goal=(-51.5, 48.45))

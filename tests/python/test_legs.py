@@ -57,6 +57,19 @@ def test_survey_same_from_cli_mission_file_and_python(tmp_path):
     for a, b in zip(legs, legs[1:]):
         assert b["departure"] == pytest.approx(a["arrival"] + a["stay"], rel=1e-12)
 
+    # Result.waypoints: the leg and stop of each waypoint, as the result's own waypoints.csv has them
+    py.write(tmp_path / "py")
+    with open(tmp_path / "py" / "waypoints.csv") as f:
+        written = list(csv.DictReader(f))
+    w = py.waypoints
+    assert list(w["leg"]) == [int(r["leg"]) for r in written] and sorted(set(w["leg"])) == [1, 2, 3, 4]
+    assert list(w["stop"]) == [r["stop"] for r in written]
+    assert [s for s in w["stop"] if s] == ["start", "WP1", "WP2", "WP3", "goal"]
+    assert list(w["index"]) == list(range(len(written)))  # the file's other columns too
+    single = ompl_glider.plan(field=ompl_glider.Field.netcdf(NC), start=START, goal=GOAL, departure=DEPARTURE,
+                              speed=0.3).waypoints
+    assert set(single["leg"]) == {0} and set(single["stop"]) == {""}
+
     d = tmp_path / "file"
     # waypoints.csv and path.csv: a leg column, every leg, the stops by name
     with open(d / "waypoints.csv") as f:

@@ -114,6 +114,38 @@ def test_ctrl_c_stops_a_fetch_between_its_retries(tmp_path):
         proc.wait(10)
 
 
+def test_ctrl_c_stops_a_fetch_the_server_stalls(tmp_path):
+    # a server that holds every data answer for 100 s (longer than the request time limit, 60 s): Ctrl-C a second
+    # and a half in raises KeyboardInterrupt within a few seconds, not when the request's time limit ends
+    import threading
+    import netCDF4  # noqa: F401  (the server's)
+
+    root = tmp_path / "srv"
+    root.mkdir()
+    _checker().write_forecast(str(root / "f.nc"))
+    port_file = tmp_path / "port"
+    proc = subprocess.Popen([sys.executable, SERVER, "--root", str(root), "--port", "0", "--port-file", str(port_file),
+                             "--delay", "100", "--lifetime", "150"], start_new_session=True,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        deadline = time.monotonic() + 30
+        while not port_file.exists():
+            assert proc.poll() is None and time.monotonic() < deadline, "the DAP2 server did not start"
+            time.sleep(0.05)
+        url = "http://127.0.0.1:%s/f.nc" % port_file.read_text().strip()
+        timer = threading.Timer(1.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+        start = time.monotonic()
+        timer.start()
+        with pytest.raises(KeyboardInterrupt):
+            ompl_glider.plan(field=ompl_glider.Field.netcdf(url), start=(-74.2, 30.4), goal=(-71.6, 31.2))
+        elapsed = time.monotonic() - start
+        timer.join()
+        assert elapsed < 5.0, elapsed
+    finally:
+        os.killpg(proc.pid, signal.SIGTERM)
+        proc.wait(10)
+
+
 def test_ctrl_c_during_a_fleet_writes_no_folder(tmp_path):
     # a fleet of fine level sets (about a minute): Ctrl-C a second in raises KeyboardInterrupt at once, and out_dir
     # is not written

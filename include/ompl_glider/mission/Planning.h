@@ -332,7 +332,7 @@ struct OrderSearch
     /// 1 - chosenTime / givenTime (1 when only the chosen order has a route; 0 when the given order is the fastest)
     double gain{0.0};
     /// Why the search stopped before it proved its order the fastest ("the time limit of 5 s", "a stop request", "the
-    /// budget of 20000 leg plans"): the chosen order is the fastest of those planned; empty when the search finished
+    /// budget of 1000 leg plans"): the chosen order is the fastest of those planned; empty when the search finished
     std::string stopped;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "NetCdfInternal.h"
+#include "../../io/NetCdfLock.h"
 
 namespace ompl_glider
 {
@@ -92,6 +93,7 @@ std::string candidateList(const NcFile &f)
 /// refused naming the groups (not as a missing variable). "" without groups.
 std::string groupNote(const NcFile &f)
 {
+    const NetCdfLock lock;  // every NetCDF-C call under the process's one lock
     int n = 0;
     if (nc_inq_grps(f.id(), &n, nullptr) != NC_NOERR || n <= 0)
         return "";

@@ -1,0 +1,15 @@
+// The process's one lock of NetCDF-C, HDF5 and GDAL's datasets (see NetCdfLock.h).
+#include "NetCdfLock.h"
+
+namespace ompl_glider
+{
+namespace netcdf_detail
+{
+std::recursive_mutex &libraryMutex()
+{
+    // never destroyed: a reader closing its dataset at the process's exit still finds it
+    static auto *m = new std::recursive_mutex();
+    return *m;
+}
+}  // namespace netcdf_detail
+}  // namespace ompl_glider
