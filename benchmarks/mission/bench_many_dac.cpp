@@ -1,11 +1,13 @@
-// A deployment's many DAC correcting the forecast ([EvensenEnKF] Sec. 2, optimal interpolation): the time to build
-// the corrected problem and plan on it, against the same plan on the uncorrected forecast, as the DAC grow from 8 to
-// 5000. The DAC come from a fleet of gliders crossing the Labrador forecast's region over the day before the departure
-// (examples/labrador_forecast.nc), each the forecast plus a uniform error of (0.05, -0.03) m/s and 2 cm/s of noise,
-// and the same current measured many times over (repeated readings of one dive). Prints, for each count, the DAC the
-// correction used, its superobservations, the wall time of correction and plan, the ratio to the uncorrected plan's
-// time, the travel time, and the largest correction met along a line through the region (never above what the data
-// say: 0.05 + noise in u).
+// A deployment's many DAC correcting the forecast (optimal interpolation, [BrethertonOI]): the time to build the
+// corrected problem and plan on it, against the plan on the uncorrected forecast, as the DAC grow from 8 to 5000. The
+// DAC come from ten gliders crossing the Labrador forecast's region over the day before the departure
+// (examples/labrador_forecast.nc), each the forecast there plus a uniform error of (0.05, -0.03) m/s and 2 cm/s of
+// noise; with --repeat N each reading is written N times a second apart (the same current measured again). Prints, for
+// each count, the DAC the correction used (at most its 2000 most recent), the wall time of the correction and of the
+// plan, their ratio to the uncorrected forecast's, the cost of one velocity (200000 random points over the box and
+// three days), the travel time, and the largest eastward correction along the region's middle line (never above the
+// innovations' range: the error plus its noise). The plans differ (the corrected current moves the route), so the
+// plan times compare searches of different problems; the cost of a velocity compares the fields.
 //
 // Usage: bench_many_dac [--counts 0,8,200,1000,2000,5000] [--forecast examples/labrador_forecast.nc] [--repeat 1]
 #include <chrono>
@@ -35,7 +37,7 @@ namespace
 {
 /// @p n DAC over the day before 2026-03-16T00:00Z, from ten gliders on straight tracks across the region, in a CSV;
 /// with @p repeat > 1 each reading is written that many times (the same current measured again).
-std::string writeDac(const fs::path &dir, int n, int repeat)
+std::string writeDac(const fs::path &dir, int n, int repeat, const MissionProblem &forecast)
 {
     const fs::path f = dir / ("dac_" + std::to_string(n) + "_" + std::to_string(repeat) + ".csv");
     std::ofstream out(f);
@@ -50,7 +52,10 @@ std::string writeDac(const fs::path &dir, int n, int repeat)
             const double s = each > 1 ? static_cast<double>(k) / (each - 1) : 1.0;
             const double lon = -52.8 + 1.6 * s, lat = 47.75 + 0.09 * g + 0.05 * s;
             const double t = end - 86400.0 * (1.0 - s) - 60.0 * g;
-            const double u = 0.05 + noise(rng), v = -0.03 + noise(rng);
+            // the forecast there (its local x/y is east/north to within the projection's small turn) plus the error
+            const Point2 at = forecast.toLocal({lon, lat});
+            const Velocity f = forecast.getField()->velocity(at.x, at.y, 0.0, t);
+            const double u = f.u + 0.05 + noise(rng), v = f.v - 0.03 + noise(rng);
             for (int r = 0; r < repeat; ++r)
                 out << formatIsoTime(t - r) << "," << lon << "," << lat << "," << u << "," << v << "\n";
         }
@@ -94,15 +99,21 @@ int main(int argc, char **argv)
     const std::string base = "name: many_dac\ncurrent: {type: netcdf, file: '" + fs::absolute(forecast).string() +
                              "'}\nregion: {lon_min: -52.9, lon_max: -51.1, lat_min: 47.7, lat_max: 48.7}\n"
                              "goal: {lon: -51.5, lat: 48.45}\nvehicle: {speed: 0.3}\nplanner: {grid_size: 4000}\n";
-    std::printf("%6s %6s %10s %10s %8s %12s %12s\n", "DAC", "used", "correct s", "plan s", "ratio", "travel h",
-                "max du m/s");
+    std::printf("%6s %6s %10s %10s %8s %10s %12s %12s\n", "DAC", "used", "correct s", "plan s", "ratio", "eval ns",
+                "travel h", "max du m/s");
     double plain = 0.0;
     std::shared_ptr<const CurrentField> forecastField;
+    std::unique_ptr<MissionProblem> plainProblem;
     for (const int n : counts)
     {
+        if (n > 0 && !plainProblem)
+        {
+            std::fprintf(stderr, "bench_many_dac: the counts begin with 0 (the uncorrected forecast)\n");
+            return 2;
+        }
         const std::string yaml =
             n == 0 ? base + "start: {lon: -52.7, lat: 47.9}\ndeparture: {time: '2026-03-16T00:00:00Z'}\n"
-                   : base + "observations: '" + writeDac(dir, n, repeat) + "'\n";
+                   : base + "observations: '" + writeDac(dir, n, repeat, *plainProblem) + "'\n";
         const auto t0 = std::chrono::steady_clock::now();
         const MissionProblem problem(parseMission(yaml, "many_dac.yaml"));
         const auto t1 = std::chrono::steady_clock::now();
@@ -114,25 +125,39 @@ int main(int argc, char **argv)
         {
             plain = correct + plan;
             forecastField = problem.getField();
+            plainProblem = std::make_unique<MissionProblem>(parseMission(yaml, "many_dac.yaml"));
         }
+        // the cost of one velocity: 200000 points over the box and the plan's span
+        const Region box = problem.getBox();
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<double> ux(box.xMin, box.xMax), uy(box.yMin, box.yMax), ut(0.0, 1.0);
+        const double from = problem.getSpec().departure.time, span = 3.0 * 86400.0;
+        double sink = 0.0;
+        const auto e0 = std::chrono::steady_clock::now();
+        for (int i = 0; i < 200000; ++i)
+            sink += problem.getField()->velocity(ux(rng), uy(rng), 0.0, from + span * ut(rng)).u;
+        const double evalNs = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - e0).count() /
+                              200000.0;
+        if (!std::isfinite(sink))
+            std::printf("(a velocity not finite)\n");
         // the largest eastward correction along the region's middle line at the departure (the corrected field less
         // the forecast's)
         double largest = 0.0;
         if (forecastField && n > 0)
         {
-            const Region box = problem.getBox();
             const double y = 0.5 * (box.yMin + box.yMax), t = r.plan.departure;
             for (int i = 0; i <= 200; ++i)
             {
                 const double x = box.xMin + (box.xMax - box.xMin) * i / 200.0;
-                const double du = problem.getField()->velocity(x, y, 0.0, t).u - forecastField->velocity(x, y, 0.0, t).u;
+                const double du =
+                    problem.getField()->velocity(x, y, 0.0, t).u - forecastField->velocity(x, y, 0.0, t).u;
                 largest = std::max(largest, std::abs(du));
             }
         }
         const auto &o = problem.observations();
-        std::printf("%6d %6zu %10.2f %10.2f %8.2f %12.2f %12.3f\n", n, o ? o->correction.used : 0, correct, plan,
-                    plain > 0.0 ? (correct + plan) / plain : NAN, r.plan.solved ? r.plan.travelTime / 3600.0 : NAN,
-                    largest);
+        std::printf("%6d %6zu %10.2f %10.2f %8.2f %10.0f %12.2f %12.3f\n", n, o ? o->correction.used : 0, correct,
+                    plan, plain > 0.0 ? (correct + plan) / plain : NAN, evalNs,
+                    r.plan.solved ? r.plan.travelTime / 3600.0 : NAN, largest);
     }
     return 0;
 }

@@ -402,9 +402,9 @@ TEST(OutputFaults, ASignalOnAnotherThreadAtAnyMomentLeavesOneCompleteRun)
     const auto oldSet = expected(oldFiles, root / "scratch_old");
     const auto newSet = expected(newFiles, root / "scratch_new");
     std::mt19937 rng(17);
-    std::uniform_int_distribution<int> delay(0, 3000);  // microseconds after the write begins
+    std::uniform_int_distribution<int> delay(0, 20000);  // microseconds after the write begins
     int bySignal = 0, finished = 0;
-    for (int run = 0; run < 60; ++run)
+    for (int run = 0; run < 40; ++run)
     {
         fs::remove_all(dir);
         writeOutputFiles(dir.string(), oldFiles);
@@ -424,7 +424,7 @@ TEST(OutputFaults, ASignalOnAnotherThreadAtAnyMomentLeavesOneCompleteRun)
             });
             worker.detach();
             writeOutputFiles(dir.string(), newFiles);
-            ::usleep(5000);  // the worker's signal, if not yet sent, comes while the outputs stand
+            ::usleep(25000);  // the worker's signal, if not yet sent, comes while the outputs stand
             ::_exit(0);
         }
         int status = 0;
