@@ -281,17 +281,34 @@ void CorrectedField::sample()
             Y(static_cast<Eigen::Index>(j), k) =
                 std::abs(d.y[j] - n.at.y) > reach ? 0.0 : weight(std::pow(d.y[j] - n.at.y, 2), L * L);
     }
-    Eigen::VectorXd wu(M), wv(M);
+    // each time slice sums the superobservations within the cut-off of it (the nodes are in time order): the work is
+    // the grid's nodes times those, bounded so that sampling never costs more than about a second
+    const auto reachOf = [&](double t) {
+        const auto lo = std::lower_bound(nodes_.begin(), nodes_.end(), t - window,
+                                         [](const Node &o, double v) { return o.t < v; });
+        const auto hi = std::upper_bound(nodes_.begin(), nodes_.end(), t + window,
+                                         [](double v, const Node &o) { return v < o.t; });
+        return std::make_pair(static_cast<Eigen::Index>(lo - nodes_.begin()), static_cast<Eigen::Index>(hi - lo));
+    };
+    double work = 0.0;
+    for (std::size_t it = 0; it < nt; ++it)
+        work += static_cast<double>(nx * ny) * static_cast<double>(reachOf(d.time[it]).second);
+    if (work > 2e9)
+        return;  // the exact sum
     for (std::size_t it = 0; it < nt; ++it)
     {
-        for (Eigen::Index k = 0; k < M; ++k)
+        const auto [first, count] = reachOf(d.time[it]);
+        Eigen::VectorXd wu(count), wv(count);
+        for (Eigen::Index k = 0; k < count; ++k)
         {
-            const double dt = d.time[it] - nodes_[static_cast<std::size_t>(k)].t;
-            const double w = std::abs(dt) > window ? 0.0 : weight(dt * dt, T * T);
-            wu[k] = w * alphaU_[static_cast<std::size_t>(k)];
-            wv[k] = w * alphaV_[static_cast<std::size_t>(k)];
+            const std::size_t n = static_cast<std::size_t>(first + k);
+            const double dt = d.time[it] - nodes_[n].t;
+            const double w = weight(dt * dt, T * T);
+            wu[k] = w * alphaU_[n];
+            wv[k] = w * alphaV_[n];
         }
-        const Eigen::MatrixXd gu = X * wu.asDiagonal() * Y.transpose(), gv = X * wv.asDiagonal() * Y.transpose();
+        const auto Xs = X.middleCols(first, count), Ys = Y.middleCols(first, count);
+        const Eigen::MatrixXd gu = Xs * wu.asDiagonal() * Ys.transpose(), gv = Xs * wv.asDiagonal() * Ys.transpose();
         for (std::size_t j = 0; j < ny; ++j)
             for (std::size_t i = 0; i < nx; ++i)
             {
