@@ -218,3 +218,25 @@ TEST(Observations, BadObservationsNameTheField)
         EXPECT_NE(std::string(e.what()).find("8 after the departure"), std::string::npos) << e.what();
     }
 }
+
+// DAC far from the mission (here 1700 km east, of another glider's ocean) say nothing of its currents: counted apart
+// as such, never reported as used.
+TEST(Observations, DacFarFromTheMissionAreCountedApartNotUsed)
+{
+    const std::string forecast = uniformForecast("far_forecast.nc", 0.1, 0.0);
+    const std::string dac = dacCsv("far_dac.csv", 0.2, 0.05);
+    {
+        std::ofstream f(dac, std::ios::app);
+        for (int k = 0; k < 3; ++k)
+            f << formatIsoTime(parseIsoTime("2026-03-15T20:00:00Z") + 600.0 * k) << ",-30.0," << 48.0 + 0.1 * k
+              << ",0.2,0.05\n";
+    }
+    const MissionProblem p(missionOn(forecast, "observations: '" + dac + "'\n"));
+    ASSERT_TRUE(p.observations());
+    EXPECT_EQ(p.observations()->far, 3u);
+    EXPECT_EQ(p.observations()->correction.used, 8u);
+    EXPECT_EQ(p.observations()->correction.outsideForecast, 0u);
+    const std::string note = observationNote(p);
+    EXPECT_NE(note.find("8 DAC used"), std::string::npos) << note;
+    EXPECT_NE(note.find("3 farther than 200 km from the mission's area"), std::string::npos) << note;
+}
