@@ -326,9 +326,9 @@ ProfileFile readProfile(const std::string &file)
         return observations_detail::velocityUnits(name, nc.attText(id, "units").value_or(""),
                                                   "NetCDF file '" + file + "'");
     };
-    const VelocityUnits velocity = units("u");
-    if (units("v").toMetres.factor != velocity.toMetres.factor)
-        throw nc.error("'u' is in '" + velocity.units + "' and 'v' in '" + units("v").units +
+    const VelocityUnits velocity = units("u"), velocityV = units("v");
+    if (velocityV.toMetres.factor != velocity.toMetres.factor)
+        throw nc.error("'u' is in '" + velocity.units + "' and 'v' in '" + velocityV.units +
                        "': give both in one unit");
     const std::vector<double> time = seconds(*var("time_uv")), lon = values(*var("lon_uv")),
                               lat = values(*var("lat_uv")), u = values(*var("u")), v = values(*var("v"));
