@@ -252,6 +252,23 @@ void CorrectedField::sample()
     const std::size_t nx = count(x1 - x0, L / 4.0), ny = count(y1 - y0, L / 4.0), nt = count(t1 - t0, T / 4.0);
     if (static_cast<double>(nx) * static_cast<double>(ny) * static_cast<double>(nt) > 4e6)
         return;  // a correction spread too wide for a grid: the exact sum
+    // each time slice sums the superobservations within the cut-off of it (the nodes are in time order): the work is
+    // the grid's nodes times those, bounded so that sampling never costs more than about a second
+    const auto reachOf = [&](double t) {
+        const auto lo = std::lower_bound(nodes_.begin(), nodes_.end(), t - window,
+                                         [](const Node &o, double v) { return o.t < v; });
+        const auto hi = std::upper_bound(nodes_.begin(), nodes_.end(), t + window,
+                                         [](double v, const Node &o) { return v < o.t; });
+        return std::make_pair(static_cast<Eigen::Index>(lo - nodes_.begin()), static_cast<Eigen::Index>(hi - lo));
+    };
+    double work = 0.0;
+    for (std::size_t it = 0; it < nt; ++it)
+    {
+        const double t = t0 + (t1 - t0) * static_cast<double>(it) / static_cast<double>(nt - 1);  // as d.time below
+        work += static_cast<double>(nx * ny) * static_cast<double>(reachOf(t).second);
+    }
+    if (work > 2e9)
+        return;  // the exact sum
     GriddedData d;
     d.nx = nx;
     d.ny = ny;
@@ -281,20 +298,6 @@ void CorrectedField::sample()
             Y(static_cast<Eigen::Index>(j), k) =
                 std::abs(d.y[j] - n.at.y) > reach ? 0.0 : weight(std::pow(d.y[j] - n.at.y, 2), L * L);
     }
-    // each time slice sums the superobservations within the cut-off of it (the nodes are in time order): the work is
-    // the grid's nodes times those, bounded so that sampling never costs more than about a second
-    const auto reachOf = [&](double t) {
-        const auto lo = std::lower_bound(nodes_.begin(), nodes_.end(), t - window,
-                                         [](const Node &o, double v) { return o.t < v; });
-        const auto hi = std::upper_bound(nodes_.begin(), nodes_.end(), t + window,
-                                         [](double v, const Node &o) { return v < o.t; });
-        return std::make_pair(static_cast<Eigen::Index>(lo - nodes_.begin()), static_cast<Eigen::Index>(hi - lo));
-    };
-    double work = 0.0;
-    for (std::size_t it = 0; it < nt; ++it)
-        work += static_cast<double>(nx * ny) * static_cast<double>(reachOf(d.time[it]).second);
-    if (work > 2e9)
-        return;  // the exact sum
     for (std::size_t it = 0; it < nt; ++it)
     {
         const auto [first, count] = reachOf(d.time[it]);
