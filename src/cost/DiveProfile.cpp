@@ -6,12 +6,12 @@
 #include <sstream>
 
 #include "ompl_glider/Exception.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::vector<double> levels(double lo, double hi, int n)
 {

@@ -5,12 +5,12 @@
 #include <limits>
 
 #include "ompl_glider/Exception.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 }
 
 AlongTrackSpeeds alongTrackSpeeds(double px, double py, const Velocity &c, double V)

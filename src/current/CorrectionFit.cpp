@@ -11,12 +11,12 @@
 #include <string>
 
 #include <nlopt.hpp>
+#include "../core/Numbers.h"
 
 namespace ompl_glider::correction_fit
 {
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
 
 /// The main constituents, by priority ([PawlowiczTide]: periods in hours): the semidiurnal lunar, the diurnal
 /// luni-solar, the semidiurnal solar, the diurnal lunar.

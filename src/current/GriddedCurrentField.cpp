@@ -9,12 +9,12 @@
 #include <limits>
 
 #include "ompl_glider/Exception.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 std::atomic<std::uint64_t> nextFieldId{1};
 
 std::vector<double> indexAxis(std::size_t n)

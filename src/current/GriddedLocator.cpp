@@ -8,12 +8,12 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// The bilinear map (a, b) -> p00 + a e + b f + a b g of the curvilinear cell (ci, cj) with corners p00, p10 = p00 +
 /// e, p01 = p00 + f and p11 = p00 + e + f + g.

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
@@ -11,7 +12,6 @@ namespace environment_detail
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double orient(Point2 a, Point2 b, Point2 c)
 {

@@ -11,7 +11,7 @@ namespace ompl_glider
 {
 namespace
 {
-std::string where(double x, double y, double t)
+std::string divePointText(double x, double y, double t)
 {
     std::ostringstream os;
     os << "(" << x << ", " << y << ") at t = " << t;
@@ -52,14 +52,14 @@ DiveEnd flyHeading(double x, double y, double t, double hx, double hy, double tE
             e.grounded = true;
             e.why = (leavesGrid(field, nx, ny) ? "the edge of the current field's grid (not land) between "
                                                : "land of the current field between ") +
-                    where(x, y, t) + " and " + where(nx, ny, nt);
+                    divePointText(x, y, t) + " and " + divePointText(nx, ny, nt);
             break;
         }
         if (forbidden && !forbidden->legFree(x, y, t, nx, ny, nt))
         {
             e.grounded = true;
-            e.why = forbidden->whyLegBlocked(x, y, t, nx, ny, nt) + " between " + where(x, y, t) + " and " +
-                    where(nx, ny, nt);
+            e.why = forbidden->whyLegBlocked(x, y, t, nx, ny, nt) + " between " + divePointText(x, y, t) + " and " +
+                    divePointText(nx, ny, nt);
             break;
         }
         // the goal reached within this step: the first point of the step within radius (its chord)

@@ -16,6 +16,7 @@
 #include "ompl_glider/ompl/GliderStateValidityChecker.h"
 #include "ompl_glider/ompl/PositionGoal.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "../core/Numbers.h"
 
 namespace ob = ompl::base;
 namespace oc = ompl::control;
@@ -24,7 +25,6 @@ namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void requireContext(const std::shared_ptr<const GliderContext> &ctx, const char *who)
 {

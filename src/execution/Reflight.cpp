@@ -10,12 +10,12 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/cost/TravelTimeCalculator.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 using namespace dormand_prince;  // the tableau (DormandPrince.h)
 

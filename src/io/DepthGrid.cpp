@@ -18,7 +18,7 @@ namespace
 {
 using netcdf_detail::NcFile;
 
-std::string lower(std::string s)
+std::string lowerCase(std::string s)
 {
     for (char &c : s)
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -36,7 +36,7 @@ int signOfStandardName(const std::string &sn)
 }
 int signOfName(const std::string &name)
 {
-    const std::string n = lower(name);
+    const std::string n = lowerCase(name);
     if (n == "depth" || n == "h" || n == "bathymetry" || n == "bathy" || n == "deptho" || n == "hraw")
         return 1;
     if (n == "elevation" || n == "z" || n == "topo" || n == "rose" || n == "altitude" || n == "height" ||
@@ -46,7 +46,7 @@ int signOfName(const std::string &name)
 }
 int signOfLongName(const std::string &longName)
 {
-    const std::string n = lower(longName);
+    const std::string n = lowerCase(longName);
     if (n.find("elevation") != std::string::npos || n.find("height") != std::string::npos ||
         n.find("altitude") != std::string::npos || n.find("relief") != std::string::npos)
         return -1;
@@ -58,7 +58,7 @@ int signOfLongName(const std::string &longName)
 /// The sign that turns the variable's values into depths (positive down) and why; 0 when nothing settles it.
 int depthSign(const NcFile &f, int var, std::string &why)
 {
-    const std::string positive = lower(f.attText(var, "positive").value_or(""));
+    const std::string positive = lowerCase(f.attText(var, "positive").value_or(""));
     if (positive == "up" || positive == "down")
     {
         why = positive == "up" ? "elevation, positive up (attribute positive)" : "depth, positive down (attribute positive)";
@@ -139,7 +139,7 @@ bool coordinates2D(const NcFile &f, int var, std::vector<double> &lon, std::vect
         const std::optional<int> v = f.findVar(n);
         if (!v || f.varDims(*v) != f.varDims(var))
             continue;
-        const std::string l = lower(n), units = lower(f.attText(*v, "units").value_or(""));
+        const std::string l = lowerCase(n), units = lowerCase(f.attText(*v, "units").value_or(""));
         if (!lo && (l.rfind("lon", 0) == 0 || units == "degrees_east" || units == "degree_east"))
             lo = v;
         else if (!la && (l.rfind("lat", 0) == 0 || units == "degrees_north" || units == "degree_north"))
@@ -156,20 +156,20 @@ bool coordinates2D(const NcFile &f, int var, std::vector<double> &lon, std::vect
 /// nothing says (its units, standard_name, axis attribute, then its name).
 int axisKind(const NcFile &f, int dim)
 {
-    const std::string name = lower(f.dimName(dim));
+    const std::string name = lowerCase(f.dimName(dim));
     if (const std::optional<int> v = f.findVar(f.dimName(dim)))
     {
-        const std::string units = lower(f.attText(*v, "units").value_or(""));
+        const std::string units = lowerCase(f.attText(*v, "units").value_or(""));
         if (units == "degrees_east" || units == "degree_east" || units == "degrees_e" || units == "degree_e")
             return 1;
         if (units == "degrees_north" || units == "degree_north" || units == "degrees_n" || units == "degree_n")
             return -1;
-        const std::string sn = lower(f.attText(*v, "standard_name").value_or(""));
+        const std::string sn = lowerCase(f.attText(*v, "standard_name").value_or(""));
         if (sn == "longitude" || sn == "grid_longitude" || sn == "projection_x_coordinate")
             return 1;
         if (sn == "latitude" || sn == "grid_latitude" || sn == "projection_y_coordinate")
             return -1;
-        const std::string axis = lower(f.attText(*v, "axis").value_or(""));
+        const std::string axis = lowerCase(f.attText(*v, "axis").value_or(""));
         if (axis == "x")
             return 1;
         if (axis == "y")
@@ -267,8 +267,8 @@ DepthGrid readDepthGrid(const std::string &path, const std::string &variable, co
         const bool transposed = k0 > 0 || k1 < 0;
         const int dx = transposed ? dims[0] : dims[1], dy = transposed ? dims[1] : dims[0];
         const auto ax = axisOf(f, dx), ay = axisOf(f, dy);
-        const std::string xn = lower(f.dimName(dx));
-        const std::string units = lower(f.attText(*f.findVar(f.dimName(dx)), "units").value_or(""));
+        const std::string xn = lowerCase(f.dimName(dx));
+        const std::string units = lowerCase(f.attText(*f.findVar(f.dimName(dx)), "units").value_or(""));
         g.geographic = units.find("degree") != std::string::npos || xn.find("lon") != std::string::npos;
         g.rectilinear = true;
         std::vector<double> xs = *ax;

@@ -7,12 +7,12 @@
 #include <cstdio>
 
 #include "ompl_glider/Exception.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kDeg = M_PI / 180.0;
 
 }  // namespace
 
@@ -77,9 +77,9 @@ GeoBox geoBox(double lonMin, double latMin, double lonMax, double latMax)
 
 double greatCircleKm(LonLat a, LonLat b)
 {
-    const double dLat = (b.lat - a.lat) * kDeg, dLon = normalizeLongitude(b.lon - a.lon) * kDeg;
+    const double dLat = (b.lat - a.lat) * kRadPerDeg, dLon = normalizeLongitude(b.lon - a.lon) * kRadPerDeg;
     const double h = std::sin(dLat / 2) * std::sin(dLat / 2) +
-                     std::cos(a.lat * kDeg) * std::cos(b.lat * kDeg) * std::sin(dLon / 2) * std::sin(dLon / 2);
+                     std::cos(a.lat * kRadPerDeg) * std::cos(b.lat * kRadPerDeg) * std::sin(dLon / 2) * std::sin(dLon / 2);
     return 2.0 * kEarthRadiusKm * std::asin(std::min(1.0, std::sqrt(h)));
 }
 
@@ -121,7 +121,7 @@ GeoBox tripBox(const std::vector<LonLat> &points, double marginKm)
     b.latMin = std::max(b.latMin - dLat, -kMaxGridLatitude);
     b.latMax = std::min(b.latMax + dLat, kMaxGridLatitude);
     const double phi = std::max(std::abs(b.latMin), std::abs(b.latMax));
-    const double dLon = marginKm / (kKmPerDegree * std::cos(phi * kDeg));
+    const double dLon = marginKm / (kKmPerDegree * std::cos(phi * kRadPerDeg));
     if (width + 2.0 * dLon >= 360.0 || !std::isfinite(dLon))
     {
         lon0 += 0.5 * width - 180.0;  // the whole circle, centred on the trip

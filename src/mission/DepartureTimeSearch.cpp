@@ -11,12 +11,12 @@
 #include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/current/AkimaSpline.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void validate(const DepartureSearchParams &p)
 {

@@ -186,10 +186,10 @@ EnsembleObjective parseEnsembleObjective(const std::string &name)
 double ensembleObjective(const std::vector<double> &t, EnsembleObjective objective, double q)
 {
     if (t.empty())
-        return planning_detail::kInf;
+        return kInf;
     for (double x : t)
         if (!std::isfinite(x))
-            return planning_detail::kInf;
+            return kInf;
     if (objective == EnsembleObjective::Worst)
         return *std::max_element(t.begin(), t.end());
     if (objective == EnsembleObjective::Quantile)

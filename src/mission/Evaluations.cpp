@@ -156,7 +156,7 @@ PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath
         for (const PlannedLeg &l : legs)
             if (l.plan.headingRoute())
                 assignHeadings(*l.plan.headings, plan.path, l.firstPoint, l.lastPoint, out.waypoints);
-    out.travelTime = out.waypoints.empty() ? planning_detail::kInf : out.waypoints.back().time - plan.departure;
+    out.travelTime = out.waypoints.empty() ? kInf : out.waypoints.back().time - plan.departure;
     return out;
 }
 

@@ -21,6 +21,7 @@
 #include "ompl_glider/reference/ZermeloReference.h"
 #include "ompl_glider/reachability/LevelSet.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
@@ -65,7 +66,6 @@ namespace
 /// refinement's own resolution.
 constexpr double kCheckTolerance = 1e-3;
 
-constexpr double kPi = 3.14159265358979323846;
 
 /// The rescue where the sweep finds no extremal is bounded by its work, not by a clock, so that a problem gets the
 /// same answer on any machine and under any load: the finer scans by construction (kZoomLevels windows of

@@ -27,7 +27,6 @@ namespace ompl_glider
 namespace
 {
 using planning_detail::durationText;
-using planning_detail::kInf;
 using planning_detail::timeText;
 
 /// Names and places of the mission's points: index -1 the start, n the goal, 0..n-1 the via points.

@@ -30,13 +30,13 @@
 #include "ompl_glider/io/GliderObservations.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/mission/Observations.h"
+#include "../core/Numbers.h"
 #endif
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
 std::string sourcePlace(const MissionSpec &m, const SourceMark &mark)

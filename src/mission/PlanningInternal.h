@@ -30,13 +30,13 @@
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/routes/WaypointRefiner.h"
 #include "ompl_glider/reference/ZermeloReference.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace planning_detail
 {
 
-inline constexpr double kInf = std::numeric_limits<double>::infinity();
 /// Time limit of planners that use all the time they get (sampling planners) when the mission gives none.
 inline constexpr double kDefaultSamplingTimeLimit = 10.0;
 /// Time limit of each heading planner (Isochrone, then LevelSet) that the pipeline runs after a lattice planner found

@@ -6,12 +6,12 @@
 #include <sstream>
 
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// Empty when (x, y, t) is a valid point of the context, else why not.
 std::string pointProblem(const GliderContext &ctx, double x, double y, double t)
@@ -97,16 +97,16 @@ PathResimulation flyDirect(const GliderContext &ctx, const std::vector<std::arra
     return r;
 }
 
-struct Interval
+struct HoldInterval
 {
     double a, b;  // reachable times [a, b] at a waypoint
 };
 
-void merge(std::vector<Interval> &v)
+void merge(std::vector<HoldInterval> &v)
 {
-    std::sort(v.begin(), v.end(), [](const Interval &p, const Interval &q) { return p.a < q.a; });
-    std::vector<Interval> out;
-    for (const Interval &iv : v)
+    std::sort(v.begin(), v.end(), [](const HoldInterval &p, const HoldInterval &q) { return p.a < q.a; });
+    std::vector<HoldInterval> out;
+    for (const HoldInterval &iv : v)
     {
         if (!out.empty() && iv.a <= out.back().b)
             out.back().b = std::max(out.back().b, iv.b);
@@ -117,9 +117,9 @@ void merge(std::vector<Interval> &v)
 }
 
 /// Extends each interval by holding at (x, y) on a grid of step while |c| < V there.
-void hold(const GliderContext &ctx, double x, double y, double step, std::vector<Interval> &v)
+void hold(const GliderContext &ctx, double x, double y, double step, std::vector<HoldInterval> &v)
 {
-    for (Interval &iv : v)
+    for (HoldInterval &iv : v)
     {
         if (!holdable(ctx, x, y, iv.b))
             continue;
@@ -138,14 +138,14 @@ PathResimulation flyWaiting(const GliderContext &ctx, const std::vector<std::arr
     r.departureTime = t0;
     r.times.assign(wp.size(), kInf);
     r.times[0] = t0;
-    std::vector<Interval> reach{{t0, t0}};
+    std::vector<HoldInterval> reach{{t0, t0}};
     hold(ctx, wp[0][0], wp[0][1], step, reach);
     for (std::size_t i = 0; i + 1 < wp.size(); ++i)
     {
         const auto &a = wp[i];
         const auto &b = wp[i + 1];
-        std::vector<Interval> next;
-        for (const Interval &iv : reach)
+        std::vector<HoldInterval> next;
+        for (const HoldInterval &iv : reach)
         {
             for (double td = iv.a;; td = std::min(iv.b, td + step))
             {

@@ -8,19 +8,19 @@ namespace ompl_glider
 {
 namespace
 {
-std::string num(double v)
+std::string csvCell(double v)
 {
     return std::isfinite(v) ? text::number(v, 10) : "";
 }
 
 /// "x,y,lon,lat" of a point (lon/lat empty without a projection).
-std::string where(const MissionProblem &problem, Point2 p)
+std::string csvPoint(const MissionProblem &problem, Point2 p)
 {
-    std::string s = num(p.x) + "," + num(p.y) + ",";
+    std::string s = csvCell(p.x) + "," + csvCell(p.y) + ",";
     if (problem.isGeographic())
     {
         const LonLat g = problem.toGeographic(p);
-        s += num(g.lon) + "," + num(g.lat);
+        s += csvCell(g.lon) + "," + csvCell(g.lat);
     }
     else
         s += ",";
@@ -44,28 +44,28 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
     for (const ExecutionRun &run : e.runs)
     {
         const std::string head = std::to_string(run.index) + ",";
-        const std::string ends = where(problem, run.start) + "," + where(problem, run.goal) + "," +
-                                 num(run.departure) + ",";
+        const std::string ends = csvPoint(problem, run.start) + "," + csvPoint(problem, run.goal) + "," +
+                                 csvCell(run.departure) + ",";
         // the oracle's arrival (empty without an oracle, or where it did not reach), the same on each strategy's row
-        const std::string oracle = "," + num(run.oracleArrival) + "\n";
+        const std::string oracle = "," + csvCell(run.oracleArrival) + "\n";
         if (!run.planned)
         {
             std::string reason = run.reason;
             for (char &c : reason)
                 if (c == ',' || c == '\n' || c == '"')
                     c = ';';
-            s += head + "none," + ends + ",,,,,,,,," + num(run.radius) + "," + reason + ",," + oracle;
+            s += head + "none," + ends + ",,,,,,,,," + csvCell(run.radius) + "," + reason + ",," + oracle;
             continue;
         }
         for (std::size_t k = 0; k < e.strategies.size(); ++k)
         {
             const FlownTrack &f = run.flown[k];
-            s += head + controlStrategyName(e.strategies[k]) + "," + ends + num(f.plannedArrival) + "," +
-                 num(f.finalDistance) + "," + num(f.arrivalTime) + "," +
+            s += head + controlStrategyName(e.strategies[k]) + "," + ends + csvCell(f.plannedArrival) + "," +
+                 csvCell(f.finalDistance) + "," + csvCell(f.arrivalTime) + "," +
                  (std::isfinite(f.arrivalTime) ? problem.isoTime(f.arrivalTime) : std::string()) + "," +
-                 (f.reached ? "1" : "0") + "," + (f.grounded ? "1" : "0") + "," + num(f.madeGoodSpeed) + "," +
+                 (f.reached ? "1" : "0") + "," + (f.grounded ? "1" : "0") + "," + csvCell(f.madeGoodSpeed) + "," +
                  std::to_string(f.fixes.empty() ? 0 : f.fixes.size() - 1) + "," + std::to_string(f.replans) + "," +
-                 num(run.radius) + ",," +
+                 csvCell(run.radius) + ",," +
                  (e.stops.empty() ? std::string(",") : std::to_string(f.stationsReached) + "," +
                                                        std::to_string(f.windowsMissed)) +
                  oracle;
@@ -81,15 +81,15 @@ std::string executionTracksCsv(const ExecutionResult &e, const MissionProblem &p
     if (!run.planned)
         return s;
     for (std::size_t i = 0; i < run.plan.size(); ++i)
-        s += "plan," + std::to_string(i) + "," + num(run.plan[i].t) + "," + problem.isoTime(run.plan[i].t) + "," +
-             where(problem, {run.plan[i].x, run.plan[i].y}) + ",\n";
+        s += "plan," + std::to_string(i) + "," + csvCell(run.plan[i].t) + "," + problem.isoTime(run.plan[i].t) + "," +
+             csvPoint(problem, {run.plan[i].x, run.plan[i].y}) + ",\n";
     for (std::size_t k = 0; k < e.strategies.size(); ++k)
     {
         const FlownTrack &f = run.flown[k];
         for (std::size_t i = 0; i < f.fixes.size(); ++i)
-            s += controlStrategyName(e.strategies[k]) + "," + std::to_string(i) + "," + num(f.fixes[i].t) + "," +
-                 problem.isoTime(f.fixes[i].t) + "," + where(problem, {f.fixes[i].x, f.fixes[i].y}) + "," +
-                 (i < f.headings.size() ? num(compassDegrees(f.headings[i])) : std::string()) + "\n";
+            s += controlStrategyName(e.strategies[k]) + "," + std::to_string(i) + "," + csvCell(f.fixes[i].t) + "," +
+                 problem.isoTime(f.fixes[i].t) + "," + csvPoint(problem, {f.fixes[i].x, f.fixes[i].y}) + "," +
+                 (i < f.headings.size() ? csvCell(compassDegrees(f.headings[i])) : std::string()) + "\n";
     }
     return s;
 }

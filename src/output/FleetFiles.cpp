@@ -48,7 +48,7 @@ std::string csvText(const std::string &s)
 }
 
 /// A glider's rendered files: (name, bytes) pairs.
-std::vector<std::pair<std::string, std::string>> filesOf(const std::string &kept)
+std::vector<std::pair<std::string, std::string>> keptFiles(const std::string &kept)
 {
     std::vector<std::string> names, bytes;
     ByteReader in(kept);
@@ -182,7 +182,7 @@ std::vector<OutputFile> fleetOutputFiles(const MissionSpec &mission, const std::
 {
     std::vector<OutputFile> files;
     for (const FleetGlider &g : gliders)
-        for (auto &[name, bytes] : filesOf(g.kept))
+        for (auto &[name, bytes] : keptFiles(g.kept))
             files.push_back({g.row.name + "/" + name, [bytes = bytes](const std::string &p) {
                                  output_detail::writeFileChecked(p, bytes);
                              }});
@@ -192,7 +192,7 @@ std::vector<OutputFile> fleetOutputFiles(const MissionSpec &mission, const std::
     // every glider's route on one interactive map (the first glider's frame, land and currents)
     std::vector<std::string> maps;
     for (const FleetGlider &g : gliders)
-        for (auto &[name, bytes] : filesOf(g.kept))
+        for (auto &[name, bytes] : keptFiles(g.kept))
             if (name == "map.html")
                 if (std::string data = mapHtmlDataOf(bytes); !data.empty())
                     maps.push_back(std::move(data));

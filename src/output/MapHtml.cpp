@@ -32,7 +32,7 @@ extern const char *const kLeafletCss[];
 
 namespace
 {
-using json = nlohmann::json;
+using PageJson = nlohmann::json;
 
 std::string joined(const char *const *pieces)
 {
@@ -64,23 +64,23 @@ public:
             units_ = "km";
         }
     }
-    json at(Point2 q) const
+    PageJson at(Point2 q) const
     {
         if (!geographic_)
-            return json::array({rounded(q.y * scale_, 1e-6), rounded(q.x * scale_, 1e-6)});
+            return PageJson::array({rounded(q.y * scale_, 1e-6), rounded(q.x * scale_, 1e-6)});
         const LonLat g = p_.toGeographic(q);
-        return json::array({rounded(g.lat, 1e-6), rounded(lon0_ + std::remainder(g.lon - lon0_, 360.0), 1e-6)});
+        return PageJson::array({rounded(g.lat, 1e-6), rounded(lon0_ + std::remainder(g.lon - lon0_, 360.0), 1e-6)});
     }
-    json line(const std::vector<Point2> &ps) const
+    PageJson line(const std::vector<Point2> &ps) const
     {
-        json out = json::array();
+        PageJson out = PageJson::array();
         for (const Point2 &q : ps)
             out.push_back(at(q));
         return out;
     }
-    json line(const std::vector<TimedPoint> &ps) const
+    PageJson line(const std::vector<TimedPoint> &ps) const
     {
-        json out = json::array();
+        PageJson out = PageJson::array();
         for (const TimedPoint &q : ps)
             out.push_back(at({q.x, q.y}));
         return out;
@@ -111,7 +111,7 @@ private:
     std::string units_;
 };
 
-std::string timeText(const MissionProblem &p, double t)
+std::string pageTime(const MissionProblem &p, double t)
 {
     const std::string iso = p.isoTime(t);
     return iso.empty() ? "t = " + text::number(t, 6) : iso;
@@ -147,26 +147,26 @@ double legHeading(Point2 a, Point2 b, Velocity c, double v)
     return bearing(ha * ex - hp * ey, ha * ey + hp * ex);
 }
 
-json routeJson(const MissionResult &r, const MissionProblem &p, const Frame &f)
+PageJson routeJson(const MissionResult &r, const MissionProblem &p, const Frame &f)
 {
     const MissionSpec &m = r.spec;
     const PlannedPath &plan = r.plan;
-    json route;
+    PageJson route;
     route["name"] = m.name.empty() ? plan.planner : m.name;
     route["planner"] = plan.planner;
     route["travel_time"] = plan.solved ? elapsedText(m, plan.travelTime) : "no path";
     route["start"] = f.at(p.getStart());
     route["goal"] = f.at(p.getGoal());
     // a heading route's flown track (also a mission whose legs mix straight legs and held headings)
-    route["points"] = plan.solved ? f.line(plan.track.size() > 1 ? plan.track : plan.path) : json::array();
-    json wps = json::array();
+    route["points"] = plan.solved ? f.line(plan.track.size() > 1 ? plan.track : plan.path) : PageJson::array();
+    PageJson wps = PageJson::array();
     const CurrentField &field = *p.getField();
     const double z = m.vehicle.depth;
     for (std::size_t k = 0; k < r.waypoints.size(); ++k)
     {
         const MissionWaypoint &w = r.waypoints[k];
-        const json pos = f.at(w.position);
-        json wp{{"index", k}, {"lat", pos[0]}, {"lon", pos[1]}, {"arrival", w.iso.empty() ? timeText(p, w.time) : w.iso},
+        const PageJson pos = f.at(w.position);
+        PageJson wp{{"index", k}, {"lat", pos[0]}, {"lon", pos[1]}, {"arrival", w.iso.empty() ? pageTime(p, w.time) : w.iso},
                 {"elapsed", elapsedText(m, w.time - plan.departure)}};
         Velocity c{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
         if (field.inWater(w.position.x, w.position.y, z) && w.time <= field.timeEnd())
@@ -174,7 +174,7 @@ json routeJson(const MissionResult &r, const MissionProblem &p, const Frame &f)
         double heading = w.heading;
         if (!std::isfinite(heading) && k + 1 < r.waypoints.size() && std::isfinite(c.u))
             heading = legHeading(w.position, r.waypoints[k + 1].position, c, plan.speed);
-        wp["heading_deg"] = std::isfinite(heading) ? json(rounded(heading, 0.1)) : json(nullptr);
+        wp["heading_deg"] = std::isfinite(heading) ? PageJson(rounded(heading, 0.1)) : PageJson(nullptr);
         if (std::isfinite(c.u) && std::isfinite(c.v))
             wp["current"] = {{"u", rounded(c.u, 1e-4)},
                              {"v", rounded(c.v, 1e-4)},
@@ -190,7 +190,7 @@ json routeJson(const MissionResult &r, const MissionProblem &p, const Frame &f)
 
 /// The land of the field (cells sampled about 150 across the region whose centre is not water) and the keep-off
 /// band (water within the pilot's distance of land), each as row runs of cells.
-void landAndBand(const MissionProblem &p, const Frame &f, json &land, json &band)
+void landAndBand(const MissionProblem &p, const Frame &f, PageJson &land, PageJson &band)
 {
     const Region &b = p.getBox();
     const double w = b.xMax - b.xMin, h = b.yMax - b.yMin;
@@ -235,13 +235,13 @@ void landAndBand(const MissionProblem &p, const Frame &f, json &land, json &band
 /// The current as arrows at six times from the departure to the arrival, on a grid regular in the map's
 /// coordinates (lon/lat, or the frame's) of about 24 across @p bounds ([[south, west], [north, east]]), so that the
 /// page can thin it by index when zoomed out.
-json currentsJson(const MissionResult &r, const MissionProblem &p, const Frame &f, const json &bounds)
+PageJson currentsJson(const MissionResult &r, const MissionProblem &p, const Frame &f, const PageJson &bounds)
 {
     const Region &b = p.getBox();
     const CurrentField &field = *p.getField();
     const MissionSpec &m = r.spec;
     const double w = b.xMax - b.xMin, h = b.yMax - b.yMin;
-    json out{{"units", m.current.isForecast() ? "m/s" : ""}, {"frames", json::array()}};
+    PageJson out{{"units", m.current.isForecast() ? "m/s" : ""}, {"frames", PageJson::array()}};
     if (!(w > 0.0) || !(h > 0.0))
         return out;
     const double t0 = r.plan.departure;
@@ -258,7 +258,7 @@ json currentsJson(const MissionResult &r, const MissionProblem &p, const Frame &
     for (int k = 0; k < frames; ++k)
     {
         const double t = t0 + (frames > 1 ? span * k / (frames - 1) : 0.0);
-        json arrows = json::array();
+        PageJson arrows = PageJson::array();
         for (int j = 0; s0 + (j + 0.5) * step < n1; ++j)
             for (int i = 0; w0 + (i + 0.5) * step < e1; ++i)
             {
@@ -271,32 +271,32 @@ json currentsJson(const MissionResult &r, const MissionProblem &p, const Frame &
                 if (!std::isfinite(c.u) || !std::isfinite(c.v))
                     continue;
                 vmax = std::max(vmax, std::hypot(c.u, c.v));
-                arrows.push_back(json::array({rounded(a, 1e-6), rounded(o, 1e-6), rounded(c.u, 1e-4), rounded(c.v, 1e-4)}));
+                arrows.push_back(PageJson::array({rounded(a, 1e-6), rounded(o, 1e-6), rounded(c.u, 1e-4), rounded(c.v, 1e-4)}));
             }
-        out["frames"].push_back({{"time", timeText(p, t)}, {"arrows", std::move(arrows)}});
+        out["frames"].push_back({{"time", pageTime(p, t)}, {"arrows", std::move(arrows)}});
     }
     out["max_speed"] = vmax;
     return out;
 }
 
-json isochronesJson(const MissionResult &r, const MissionProblem &p, const Frame &f)
+PageJson isochronesJson(const MissionResult &r, const MissionProblem &p, const Frame &f)
 {
-    json out = json::array();
+    PageJson out = PageJson::array();
     if (!r.isochrones)
         return out;
     for (const Isochrone &c : r.isochrones->contours)
     {
-        json lines = json::array();
+        PageJson lines = PageJson::array();
         for (const auto &l : c.lines)
             lines.push_back(f.line(l));
-        out.push_back({{"time", c.iso.empty() ? timeText(p, c.time) : c.iso}, {"lines", std::move(lines)}});
+        out.push_back({{"time", c.iso.empty() ? pageTime(p, c.time) : c.iso}, {"lines", std::move(lines)}});
     }
     return out;
 }
 
-json tracksJson(const MissionResult &r, const Frame &f)
+PageJson tracksJson(const MissionResult &r, const Frame &f)
 {
-    json out = json::array();
+    PageJson out = PageJson::array();
     if (!r.execution || r.execution->runs.empty() || !r.execution->runs.front().planned)
         return out;
     const ExecutionResult &e = *r.execution;
@@ -308,13 +308,13 @@ json tracksJson(const MissionResult &r, const Frame &f)
 
 /// The glider's history with observations: its past fixes and the DAC it measured (lon/lat), and the arrows' scale:
 /// the fastest DAC drawn a twelfth of the region's height long. Null without observations.
-json gliderJson(const MissionProblem &p)
+PageJson gliderJson(const MissionProblem &p)
 {
 #if OMPL_GLIDER_WITH_NETCDF
     const auto &o = p.observations();
     if (!o || !p.isGeographic())
         return nullptr;
-    json fixes = json::array(), dac = json::array();
+    PageJson fixes = PageJson::array(), dac = PageJson::array();
     for (const GliderFix &g : o->fixes)
         fixes.push_back({{"lat", g.at.lat}, {"lon", g.at.lon}, {"time", formatIsoTime(g.time)}});
     double fastest = 0.0;
@@ -360,34 +360,34 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
 {
     const Frame f(p);
     const MissionSpec &m = r.spec;
-    json d;
+    PageJson d;
     d["title"] = m.name;
     d["geographic"] = f.geographic();
     d["units"] = f.units();
-    d["routes"] = json::array({routeJson(r, p, f)});
+    d["routes"] = PageJson::array({routeJson(r, p, f)});
     const Point2 s = p.getStart(), g = p.getGoal();
     d["start"] = f.at(s);
     d["goal"] = f.at(g);
     d["goal_tolerance"] = f.length(m.planner.goalTolerance);
     // a mission's via points: position, radius, arrival (a date where the field has dates) and stay
-    json stations = json::array();
+    PageJson stations = PageJson::array();
     for (std::size_t i = 0; i < p.getViaPoints().size(); ++i)
     {
         const ViaPointSpec &v = m.waypoints[i];
-        json st{{"name", v.name}, {"at", f.at(p.getViaPoints()[i])},
-                {"radius", std::isfinite(v.radius) ? json(f.length(v.radius)) : json(nullptr)},
-                {"stay", v.stay > 0.0 ? json(v.stay) : json(nullptr)}, {"arrival", nullptr}};
+        PageJson st{{"name", v.name}, {"at", f.at(p.getViaPoints()[i])},
+                {"radius", std::isfinite(v.radius) ? PageJson(f.length(v.radius)) : PageJson(nullptr)},
+                {"stay", v.stay > 0.0 ? PageJson(v.stay) : PageJson(nullptr)}, {"arrival", nullptr}};
         for (const PlannedLeg &l : r.legs)
             if (l.toVia == static_cast<int>(i) && l.plan.solved)
             {
                 const std::string iso = p.isoTime(l.arrival());
-                st["arrival"] = iso.empty() ? json(l.arrival()) : json(iso);
+                st["arrival"] = iso.empty() ? PageJson(l.arrival()) : PageJson(iso);
             }
         stations.push_back(st);
     }
     d["stations"] = stations;
     d["isochrones"] = isochronesJson(r, p, f);
-    json land = json::array(), band = json::array(), coast = json::array(), forbidden = json::array();
+    PageJson land = PageJson::array(), band = PageJson::array(), coast = PageJson::array(), forbidden = PageJson::array();
     landAndBand(p, f, land, band);
     for (const MissionPolygon &poly : p.getPolygons())
     {
@@ -397,15 +397,15 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
             land.push_back(f.line(poly.points));
         else
         {
-            json windows = json::array();  // a closure's: when it is closed (as dates where the mission has them)
+            PageJson windows = PageJson::array();  // a closure's: when it is closed (as dates where the mission has them)
             for (const auto &[from, to] : poly.windows)
             {
                 const std::string a = p.isoTime(from), b = p.isoTime(to);
-                windows.push_back({a.empty() ? json(from) : json(a), b.empty() ? json(to) : json(b)});
+                windows.push_back({a.empty() ? PageJson(from) : PageJson(a), b.empty() ? PageJson(to) : PageJson(b)});
             }
             forbidden.push_back({{"name", poly.name + " (" + poly.kind + ")"},
                                  {"windows", windows},
-                                 {"rings", json::array({f.line(poly.points)})}});
+                                 {"rings", PageJson::array({f.line(poly.points)})}});
         }
     }
     for (auto &ring : coast)
@@ -417,15 +417,15 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
     d["tracks"] = tracksJson(r, f);
     d["glider"] = gliderJson(p);
     const Region &b = p.getBox();
-    json lo = f.at({b.xMin, b.yMin}), hi = f.at({b.xMax, b.yMax});
+    PageJson lo = f.at({b.xMin, b.yMin}), hi = f.at({b.xMax, b.yMax});
     for (const Point2 q : {Point2{b.xMin, b.yMax}, Point2{b.xMax, b.yMin}, Point2{0.5 * (b.xMin + b.xMax), b.yMin},
                            Point2{0.5 * (b.xMin + b.xMax), b.yMax}})
     {
-        const json c = f.at(q);
-        lo = json::array({std::min(lo[0].get<double>(), c[0].get<double>()), std::min(lo[1].get<double>(), c[1].get<double>())});
-        hi = json::array({std::max(hi[0].get<double>(), c[0].get<double>()), std::max(hi[1].get<double>(), c[1].get<double>())});
+        const PageJson c = f.at(q);
+        lo = PageJson::array({std::min(lo[0].get<double>(), c[0].get<double>()), std::min(lo[1].get<double>(), c[1].get<double>())});
+        hi = PageJson::array({std::max(hi[0].get<double>(), c[0].get<double>()), std::max(hi[1].get<double>(), c[1].get<double>())});
     }
-    d["bounds"] = json::array({lo, hi});
+    d["bounds"] = PageJson::array({lo, hi});
     d["currents"] = currentsJson(r, p, f, d["bounds"]);
     return output_json::utf8Dump(d);
 }
@@ -434,19 +434,19 @@ std::string mapHtmlPage(const std::vector<std::string> &data, const std::string 
 {
     if (data.empty())
         throw Error("map.html: no plan to draw");
-    json d = json::parse(data.front(), nullptr, false);
+    PageJson d = PageJson::parse(data.front(), nullptr, false);
     if (d.is_discarded() || !d.is_object() || !d.contains("routes"))
         throw Error("map.html: the map data is not what mapHtmlData() writes");
     for (std::size_t k = 1; k < data.size(); ++k)
     {
-        const json more = json::parse(data[k], nullptr, false);
+        const PageJson more = PageJson::parse(data[k], nullptr, false);
         if (more.is_discarded() || !more.is_object() || !more.contains("routes"))
             throw Error("map.html: the map data is not what mapHtmlData() writes");
-        for (const json &route : more["routes"])
+        for (const PageJson &route : more["routes"])
             d["routes"].push_back(route);
         for (const char *key : {"isochrones", "tracks"})
             if (more.contains(key))
-                for (const json &x : more[key])
+                for (const PageJson &x : more[key])
                     d[key].push_back(x);
     }
     d["title"] = title;
@@ -487,7 +487,7 @@ std::string mapHtmlDataOf(const std::string &page)
     const std::size_t b = a == std::string::npos ? a : page.find(";\n", a);
     if (b == std::string::npos)
         return "";
-    const json d = json::parse(page.substr(a + begin.size(), b - a - begin.size()), nullptr, false);
+    const PageJson d = PageJson::parse(page.substr(a + begin.size(), b - a - begin.size()), nullptr, false);
     return d.is_discarded() || !d.is_object() || !d.contains("routes") ? std::string() : output_json::utf8Dump(d);
 }
 

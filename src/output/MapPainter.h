@@ -12,6 +12,7 @@
 #include <cairo.h>
 
 #include "ompl_glider/output/MapRenderer.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
@@ -19,7 +20,6 @@ namespace map_detail
 {
 /// Page margins around the plot in pixels (the legend is drawn in the right margin).
 constexpr double kLeft = 72, kRight = 270, kTop = 52, kBottom = 58;
-constexpr double kPi = 3.14159265358979323846;
 /// Speed-shading values of the points without a current: land of the field (closed cells of a gridded forecast,
 /// or wherever an analytic field has no water) and no data (outside a gridded forecast's grid).
 constexpr double kLand = -1.0, kNoData = -2.0;

@@ -17,7 +17,7 @@ namespace ompl_glider
 namespace
 {
 /// Empty for NaN, "inf" for either infinity, else text::csvNumber().
-std::string num(double v)
+std::string reportNumber(double v)
 {
     return std::isinf(v) ? "inf" : text::csvNumber(v);
 }
@@ -51,15 +51,15 @@ void printWaypoints(std::ostream &out, const MissionResult &r)
         const MissionWaypoint &w = r.waypoints[i];
         std::string prof;
         if (r.diveProfiles && i > 0 && w.profile >= 0)
-            prof = num(w.dive.climbTo) + "-" + num(w.dive.diveTo);
+            prof = reportNumber(w.dive.climbTo) + "-" + reportNumber(w.dive.diveTo);
         out << format("%4zu %12.6g %12.6g %11s %10s %14s %22s %16s", i, w.position.x, w.position.y,
                       w.geographic ? format("%.6f", w.lonLat.lon).c_str() : "",
-                      w.geographic ? format("%.6f", w.lonLat.lat).c_str() : "", num(w.time).c_str(), w.iso.c_str(),
+                      w.geographic ? format("%.6f", w.lonLat.lat).c_str() : "", reportNumber(w.time).c_str(), w.iso.c_str(),
                       prof.c_str());
         if (headings && std::isfinite(w.heading))
             out << format(" %11s %12s\n", format("%.1f deg", w.heading).c_str(),
                           (r.spec.physicalUnits().time ? format("%.2f h", w.headingDuration * r.spec.timeUnitSeconds / 3600.0)
-                                                       : num(w.headingDuration))
+                                                       : reportNumber(w.headingDuration))
                               .c_str());
         else
             out << "\n";
@@ -219,8 +219,8 @@ std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows)
                            "straight length");
     for (const auto &r : rows)
     {
-        const std::string tt = r.solved ? num(r.travelTime) : "no path";
-        const std::string st = std::isfinite(r.straightLineTime) ? num(r.straightLineTime) : "impassable";
+        const std::string tt = r.solved ? reportNumber(r.travelTime) : "no path";
+        const std::string st = std::isfinite(r.straightLineTime) ? reportNumber(r.straightLineTime) : "impassable";
         s += format("%8.4g %14s %12.6g %18s %14.6g\n", r.speed, tt.c_str(), r.pathLength, st.c_str(),
                     r.straightLineLength);
     }
@@ -242,16 +242,16 @@ void printReport(std::ostream &out, const MissionResult &r)
     if (m.planner.gridSize > 0 && entry && entry->lattice())  // grid and sectors are the lattice's
         out << " (grid " << (m.physicalUnits().length ? lengthText(m, m.planner.gridSize) : format("%g", m.planner.gridSize))
             << format(", %d sectors)", m.planner.sectors);
-    out << ", V = " << num(p.speed) << "\n";
+    out << ", V = " << reportNumber(p.speed) << "\n";
     if (r.departureSearch)
     {
         const DepartureSearchResult &d = *r.departureSearch;
         out << format("Departure search:   [%g, %g], %zu fine + %zu coarse searches in %.3f s, best %s\n",
                       m.departure.begin, d.windowEnd, d.fineEvaluations, d.coarseEvaluations, d.wallSeconds,
-                      d.found ? num(d.departure).c_str() : "none");
+                      d.found ? reportNumber(d.departure).c_str() : "none");
     }
     const std::string iso = r.waypoints.empty() ? r.departureIso : r.waypoints.front().iso;
-    out << "Departure:          " << num(p.departure) << (iso.empty() ? "" : " (" + iso + ")") << "\n";
+    out << "Departure:          " << reportNumber(p.departure) << (iso.empty() ? "" : " (" + iso + ")") << "\n";
 #if OMPL_GLIDER_WITH_NETCDF
     if (const std::string resumed = resumeNote(m); !resumed.empty())
         out << "Resumed:            " << resumed << "\n";
@@ -277,16 +277,16 @@ void printReport(std::ostream &out, const MissionResult &r)
         if (m.goalWindow.set || p.holdTime > 0.0)
         {
             const std::string at = r.waypoints.empty() ? "" : r.waypoints.back().iso;
-            out << "Arrival at goal:    " << num(p.path.back().t) << (at.empty() ? "" : " (" + at + ")");
+            out << "Arrival at goal:    " << reportNumber(p.path.back().t) << (at.empty() ? "" : " (" + at + ")");
             if (m.goalWindow.set)
-                out << " in the window [" << num(m.goalWindow.begin) << ", " << num(m.goalWindow.end) << "]";
+                out << " in the window [" << reportNumber(m.goalWindow.begin) << ", " << reportNumber(m.goalWindow.end) << "]";
             out << "\n";
             out << "Holding:            "
-                << (m.physicalUnits().time ? text::durationText(p.holdTime * m.timeUnitSeconds) : num(p.holdTime))
+                << (m.physicalUnits().time ? text::durationText(p.holdTime * m.timeUnitSeconds) : reportNumber(p.holdTime))
                 << (p.arrivalTiming.empty() ? std::string() : " (" + p.arrivalTiming + ")") << "\n";
         }
         if (r.diveProfiles)
-            out << "With dive profiles: " << (std::isfinite(r.diveTravelTime) ? num(r.diveTravelTime) : "impassable")
+            out << "With dive profiles: " << (std::isfinite(r.diveTravelTime) ? reportNumber(r.diveTravelTime) : "impassable")
                 << "\n";
         out << "Path length:        " << lengthText(m, p.pathLength) << " (straight " << lengthText(m, p.straightLineLength)
             << ")\n";
@@ -294,15 +294,15 @@ void printReport(std::ostream &out, const MissionResult &r)
         {
             const double mpu = m.metresPerUnit();
             const std::string d = m.physicalUnits().length ? format("%.3f km", r.closestLand.distance * mpu / 1000.0)
-                                                           : num(r.closestLand.distance);
+                                                           : reportNumber(r.closestLand.distance);
             out << "Closest to land:    " << d;
             if (r.closestLandLonLat)
                 out << format(" at %.5f, %.5f", r.closestLandLonLat->lon, r.closestLandLonLat->lat);
             else
-                out << " at (" << num(r.closestLand.where.x) << ", " << num(r.closestLand.where.y) << ")";
+                out << " at (" << reportNumber(r.closestLand.where.x) << ", " << reportNumber(r.closestLand.where.y) << ")";
             if (const double keepOff = m.safety.keepOff; keepOff > 0.0)
                 out << " (keep-off "
-                    << (m.physicalUnits().length ? format("%.3f km", keepOff * mpu / 1000.0) : num(keepOff)) << ")";
+                    << (m.physicalUnits().length ? format("%.3f km", keepOff * mpu / 1000.0) : reportNumber(keepOff)) << ")";
             out << "\n";
         }
         out << "Straight line:      "
@@ -349,7 +349,7 @@ void printReport(std::ostream &out, const MissionResult &r)
         const ExecutionResult &e = *r.execution;
         out << "Execution:          truth " << e.truth << ", " << e.runs.size() << " run(s) x " << e.strategies.size()
             << " strategies, surfacing every "
-            << (m.physicalUnits().time ? text::durationText(e.surfacingInterval * m.timeUnitSeconds) : num(e.surfacingInterval))
+            << (m.physicalUnits().time ? text::durationText(e.surfacingInterval * m.timeUnitSeconds) : reportNumber(e.surfacingInterval))
             << " (" << e.surfacingIntervalSource
             << ")\n";
         for (const std::string &note : e.notes)

@@ -56,4 +56,7 @@ if(OMPL_GLIDER_WITH_MAP)
   file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/generated/MapHtmlAssets.cpp.in "${ompl_glider_map_assets}")
   configure_file(${CMAKE_CURRENT_BINARY_DIR}/generated/MapHtmlAssets.cpp.in
                  ${CMAKE_CURRENT_BINARY_DIR}/generated/MapHtmlAssets.cpp COPYONLY)
+  # megabytes of string literals: compiled alone, not in a unity batch with the code
+  set_source_files_properties(${CMAKE_CURRENT_BINARY_DIR}/generated/MapHtmlAssets.cpp PROPERTIES
+                              SKIP_UNITY_BUILD_INCLUSION ON)
 endif()

@@ -16,12 +16,12 @@
 #include "ompl_glider/routes/HeadingRefiner.h"
 #include "ompl_glider/planners/IsochroneSearch.h"
 #include "ompl_glider/routes/PathSmoother.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// Closes the route on the goal: the search's points followed by held headings (searching again from where following
 /// stops, followWithRestarts()), and the search's own route shot whole in N segments; the faster valid one.

@@ -6,13 +6,12 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/MeanderingJet.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 
 /// A closed interval [lo, hi] (interval arithmetic: every operation encloses all values of the operation on members
 /// of its operands; rounding is covered by the relative margin applied to the final box).

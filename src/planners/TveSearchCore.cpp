@@ -12,13 +12,12 @@
 
 #include "ompl_glider/Exception.h"
 #include "SearchSetting.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 
 /// Angle difference wrapped to [-pi, pi].
 double angleDiff(double a, double b)

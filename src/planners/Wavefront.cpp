@@ -22,12 +22,12 @@
 #include "SearchSetting.h"
 #include "ompl_glider/ResourceLimits.h"
 #include "../io/NumberText.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 using TimeState = TimeSE2StateSpace::StateType;
 
 /// Node (v, k) as one key: the vertex in the high 32 bits (a lattice holds at most 2^31 + 2 vertices), k below.
@@ -59,12 +59,12 @@ struct NodeLabel
 };
 
 /// Queue entry: key = the time the node is occupied, max(A, start of its interval); A (stale-entry test); node.
-struct QueueEntry
+struct WaveEntry
 {
     double key;
     double a;
     NodeKey n;
-    bool operator>(const QueueEntry &o) const
+    bool operator>(const WaveEntry &o) const
     {
         return key > o.key || (key == o.key && n > o.n);
     }
@@ -244,7 +244,7 @@ public:
     WavefrontOutcome run();
 
 private:
-    using Queue = std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>>;
+    using Queue = std::priority_queue<WaveEntry, std::vector<WaveEntry>, std::greater<WaveEntry>>;
 
     std::optional<WavefrontOutcome> checkEndpoints();
     std::optional<WavefrontOutcome> setUpIntervals();
@@ -437,7 +437,7 @@ WavefrontOutcome Wavefront::Search::sweep()
 {
     while (!queue.empty())
     {
-        const QueueEntry e = queue.top();
+        const WaveEntry e = queue.top();
         queue.pop();
         NodeLabel &label = labels[e.n];
         if (label.closed || e.a != label.a)

@@ -19,6 +19,7 @@
 #include "ompl_glider/routes/PathSmoother.h"
 #include "ompl_glider/routes/WaypointRefiner.h"
 #include "../io/NumberText.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
@@ -54,7 +55,6 @@ NoPath ZAStarTVE::noPathReason(const ompl::base::PlannerStatus &, double timeLim
 
 namespace
 {
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 using TimeState = TimeSE2StateSpace::StateType;
 
 /// Heading of the leg (x1, y1) -> (x2, y2) in SO(2)'s range [-pi, pi) (atan2 may return +pi).
@@ -194,7 +194,7 @@ ompl::base::PlannerAllocator ZAStarTVE::allocator(std::shared_ptr<const GliderCo
 
 void ZAStarTVE::setDeltaPhiMax(double degrees)
 {
-    options_.deltaPhiMax = checkedReal("delta_phi_max", degrees, "degrees; ") * kDeg;
+    options_.deltaPhiMax = checkedReal("delta_phi_max", degrees, "degrees; ") * kRadPerDeg;
 }
 
 void ZAStarTVE::setCourseExtrapolation(double k)
@@ -204,7 +204,7 @@ void ZAStarTVE::setCourseExtrapolation(double k)
 
 double ZAStarTVE::getDeltaPhiMax() const
 {
-    return options_.deltaPhiMax / kDeg;
+    return options_.deltaPhiMax / kRadPerDeg;
 }
 
 void ZAStarTVE::setTurnWidening(double w)

@@ -24,7 +24,6 @@ namespace ompl_glider
 namespace
 {
 using levelset_detail::Grid;
-using levelset_detail::kInf;
 using levelset_detail::kTile;
 using levelset_detail::maskDistance;
 using levelset_detail::polygonDistance;

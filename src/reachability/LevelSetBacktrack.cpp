@@ -174,7 +174,7 @@ double Reachability::arrivalAt(double x, double y) const
 {
     const double gx = (x - x0) / h, gy = (y - y0) / h;
     if (!(gx >= 0.0 && gy >= 0.0 && gx <= nx - 1 && gy <= ny - 1))
-        return levelset_detail::kInf;
+        return kInf;
     const int i = std::min(static_cast<int>(gx), nx - 2), j = std::min(static_cast<int>(gy), ny - 2);
     const double fx = gx - i, fy = gy - j;
     const auto at = [&](int a, int b) { return arrival[static_cast<std::size_t>(b) * nx + a]; };
@@ -185,7 +185,7 @@ double Reachability::arrivalAt(double x, double y) const
         const double cand[4] = {a, b, c, d};
         const double dist[4] = {fx * fx + fy * fy, (1 - fx) * (1 - fx) + fy * fy, fx * fx + (1 - fy) * (1 - fy),
                                 (1 - fx) * (1 - fx) + (1 - fy) * (1 - fy)};
-        double best = levelset_detail::kInf, bd = levelset_detail::kInf;
+        double best = kInf, bd = kInf;
         for (int k = 0; k < 4; ++k)
             if (std::isfinite(cand[k]) && dist[k] < bd && dist[k] <= 0.5)
             {

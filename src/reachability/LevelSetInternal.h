@@ -18,6 +18,7 @@
 
 #include "ompl_glider/Geometry.h"
 #include "ompl_glider/reachability/LevelSet.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
@@ -31,7 +32,6 @@ namespace levelset_detail
 {
 /// Side of the square tiles of the narrow band, in nodes.
 constexpr int kTile = 16;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// The grid's geometry and the interpolation of a node field.
 struct Grid

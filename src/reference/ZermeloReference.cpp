@@ -10,12 +10,12 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ThreadPool.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kTwoPi = 6.283185307179586;
 
 using namespace dormand_prince;  // the tableau (execution/DormandPrince.h)

@@ -25,7 +25,7 @@ namespace ompl_glider
 {
 namespace
 {
-std::string lower(std::string s)
+std::string lowerName(std::string s)
 {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
     return s;
@@ -161,13 +161,13 @@ void registerPlanner(PlannerEntry entry)
 
 const PlannerEntry *findPlanner(const std::string &name)
 {
-    const std::string key = lower(name);
+    const std::string key = lowerName(name);
     for (const PlannerEntry &e : plannerRegistry())
     {
-        if (lower(e.name) == key)
+        if (lowerName(e.name) == key)
             return &e;
         for (const std::string &a : e.aliases)
-            if (lower(a) == key)
+            if (lowerName(a) == key)
                 return &e;
     }
     return nullptr;

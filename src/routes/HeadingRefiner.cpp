@@ -10,13 +10,12 @@
 #include <nlopt.hpp>
 
 #include "ompl_glider/ThreadPool.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = 180.0 / kPi;
 
 /// The shooting problem: variables are the free segments' headings (radians) and T / T0.
 struct Shooting
@@ -39,7 +38,7 @@ struct Shooting
         {
             r.segments[i].duration = T / static_cast<double>(r.segments.size());
             if (i >= firstFree)
-                r.segments[i].bearing = x[i - firstFree] * kDeg;
+                r.segments[i].bearing = x[i - firstFree] * kDegPerRad;
         }
         return r;
     }
@@ -295,7 +294,7 @@ RefinedHeadings refineHeadingRoute(const HeadingRoute &initial, Point2 goal, con
         for (unsigned i = 0; i < freeCount; ++i)
         {
             // headings measured in radians, unwrapped around the initial bearing
-            x[i] = s.base.segments[s.firstFree + i].bearing / kDeg;
+            x[i] = s.base.segments[s.firstFree + i].bearing / kDegPerRad;
             lo[i] = x[i] - 2.0 * kPi;
             hi[i] = x[i] + 2.0 * kPi;
         }

@@ -7,12 +7,12 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace
 {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 const TimeSE2StateSpace &timeSpace(const ompl::geometric::PathGeometric &path, const char *who)
 {

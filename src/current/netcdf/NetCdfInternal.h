@@ -45,13 +45,13 @@
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/io/UnitConversion.h"
 #include "ompl_glider/Exception.h"
+#include "../../core/Numbers.h"
 
 namespace ompl_glider
 {
 namespace netcdf_detail
 {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // ---- strings (io/TextUtil.h) and the open file (io/NcFile.h: NcFile, ClassicExtent, classicTruncation()) ----
 
