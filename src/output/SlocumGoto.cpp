@@ -142,7 +142,7 @@ GotoList parseGotoList(const std::string &text, const std::string &source)
         if (block == Block::Args)
         {
             std::string name;
-            double number;
+            double number = 0.0;
             if (first != "b_arg:" || !(ls >> name >> number) || !std::isfinite(number))
                 fail("expected 'b_arg: name(unit) value'");
             const long value = std::lround(number);
