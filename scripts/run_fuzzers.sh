@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets of fuzz/ (fuzz_mission, fuzz_netcdf, fuzz_cli) on the clang-14 sanitizer build
-# (build-fuzz, scripts/build_sanitized.sh), one after the other, each for SECONDS from a fresh copy of its seed
+# (build-fuzz, scripts/build_sanitized.sh), all at once, each for SECONDS from a fresh copy of its seed
 # corpus (build-fuzz/corpus/<target>; fuzz/corpus/<target>, plus the NetCDF seeds made from fuzz/corpus/netcdf/*.cdl
 # and examples/labrador_forecast.nc). A crash, a sanitizer report, a leak, an input slower than 10 s or one using
 # more than 2 GB is a finding: its reproducer goes to build-fuzz/findings/<target>/ and the script exits with
@@ -28,6 +28,7 @@ for i in "${!targets[@]}"; do
     *) echo "run_fuzzers: unknown target '${targets[$i]}' (mission, netcdf, cli)" >&2; exit 2 ;;
   esac
 done
+mapfile -t targets < <(printf '%s\n' "${targets[@]}" | awk '!seen[$0]++')  # each target once
 
 bash "$root/scripts/build_sanitized.sh"
 build="$root/build-fuzz"
@@ -41,6 +42,8 @@ export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppres
 
 status=0
 summary=()
+# the targets run at once (each is one process on one core): SECONDS of wall time each, the machine's cores shared
+declare -A pid
 for t in "${targets[@]}"; do
   corpus="$build/corpus/$t"
   findings="$build/findings/$t"
@@ -55,9 +58,16 @@ for t in "${targets[@]}"; do
   dict=()
   [ -f "$root/fuzz/$t.dict" ] && dict=(-dict="$root/fuzz/$t.dict")
   echo "run_fuzzers: fuzz_$t for ${seconds}s ($(ls "$corpus" | wc -l) seeds)"
-  set +e
   "$build/fuzz/fuzz_$t" "$corpus" -max_total_time="$seconds" -timeout="$unit_timeout" -rss_limit_mb=2048 -malloc_limit_mb=2048 \
-    "${dict[@]}" -artifact_prefix="$findings/" -print_final_stats=1 > "$log" 2>&1
+    "${dict[@]}" -artifact_prefix="$findings/" -print_final_stats=1 > "$log" 2>&1 &
+  pid[$t]=$!
+done
+for t in "${targets[@]}"; do
+  corpus="$build/corpus/$t"
+  findings="$build/findings/$t"
+  log="$build/findings/$t.log"
+  set +e
+  wait "${pid[$t]}"
   rc=$?
   set -e
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
@@ -72,6 +82,6 @@ for t in "${targets[@]}"; do
   fi
   summary+=("$line")
 done
-echo "run_fuzzers: ${seconds}s per target"
+echo "run_fuzzers: ${seconds}s per target, the targets at once"
 printf '%s\n' "${summary[@]}"
 exit "$status"

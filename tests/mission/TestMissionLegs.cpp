@@ -142,9 +142,10 @@ void checkFreeOrder(const std::string &current, const std::string &region, Box b
     std::vector<Point2> via;
     for (std::size_t i = 0; i < n; ++i)
         via.push_back({ux(rng), uy(rng)});
+    // the property holds for any one pipeline: here the lattice search alone, the cheapest
     MissionSpec m = mission(current, region, {ux(rng), uy(rng)}, {ux(rng), uy(rng)}, via,
                             "planner: {grid_size: " + std::to_string(0.08 * (box.xMax - box.xMin)) +
-                                ", global_check: false}\n");  // (the property holds for any one pipeline)
+                                ", global_check: false, refinement: false, smoothing: false}\n");
     m.order = VisitOrder::Free;
     const MissionPlan free = planMission(MissionProblem(m), 0.0);
     std::size_t orders = 0;
@@ -366,7 +367,7 @@ TEST(MissionLegsFreeOrder, BestOfAllOrdersWithStaysAndWindows)
 {
     MissionSpec m = parseMission("current: {type: meandering_jet}\nregion: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
                                  "start: {x: 1, y: -3}\ngoal: {x: 8, y: 3}\nvehicle: {speed: 0.5}\n"
-                                 "planner: {grid_size: 0.8, global_check: false}\n"
+                                 "planner: {grid_size: 0.8, global_check: false, refinement: false, smoothing: false}\n"
                                  "waypoints:\n"
                                  "  - {name: A, x: 3, y: 3, stay: 1, arrive: {end: 30}}\n"
                                  "  - {name: B, x: 6, y: -3, arrive: {begin: 12}}\n"
@@ -388,7 +389,7 @@ TEST(MissionLegsFreeOrder, BestOfAllOrdersWithStaysAndWindows)
 TEST(MissionLegsFreeOrder, AStopRequestEndsTheSearchWithTheBestSoFar)
 {
     MissionSpec m = mission(kJet, kJetRegion, {1, -3}, {8, 3}, {{3, 2}, {6, -2}, {5, 0.5}, {2, 0}},
-                            "planner: {grid_size: 0.8, global_check: false}\n");
+                            "planner: {grid_size: 0.8, global_check: false, refinement: false, smoothing: false}\n");
     m.order = VisitOrder::Free;
     const MissionProblem problem(m);
     struct Clear

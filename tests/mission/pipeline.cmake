@@ -28,7 +28,8 @@ if(TARGET glider_plan)
   set_tests_properties(mission.real_coast_trial PROPERTIES TIMEOUT 300 SKIP_RETURN_CODE 77)
 endif()
 # the trust property: the default against an independent extremal sweep on random pairs (TrustFast: a dozen pairs;
-# TrustProperty: more than a hundred, CI only)
+# TrustProperty: more than a hundred, CI only). Not glider_add_test: its independent extremal sweep, in this file, is
+# most of its work and keeps the build type's optimisation (no OMPL_GLIDER_TEST_CXX_FLAGS)
 add_executable(test_trust ${CMAKE_CURRENT_LIST_DIR}/TestTrust.cpp)
 target_link_libraries(test_trust PRIVATE ompl_glider::ompl_glider GTest::gtest GTest::gtest_main)
 target_compile_options(test_trust PRIVATE -Wall -Wextra)

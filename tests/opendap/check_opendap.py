@@ -184,9 +184,10 @@ def main():
         servers.append(server)
         url = "http://127.0.0.1:%d/forecast.nc" % port
         depart = netCDF4.num2date(230003.0, "hours since 2000-01-01 00:00:00").strftime("%Y-%m-%dT%H:%M:%SZ")
-        # (no global check: the reader is what is checked here, and the case runs sanitized in CI too)
+        # (the lattice search alone, no global check and no refinement: the reader is what is checked here, and the
+        # case runs sanitized in CI too)
         trip = ["--start=-74.2,30.4", "--goal=-71.6,31.2", "--speed", "0.5", "--departure", depart,
-                "--no-global-check"]
+                "--no-global-check", "--no-refine"]
 
         # 1. the file and the URL give the same plan
         p_file, _ = plan(glider, ["--currents", nc, "--out", os.path.join(work, "o_file")] + trip)
@@ -368,7 +369,7 @@ def main():
         pop = "/usr/share/ncarg/data/cdf/pop.nc"
         shutil.copy(pop, os.path.join(root, "pop.nc"))
         pop_trip = ["--u-var", "urot", "--v-var", "vrot", "--start=-79.5,18.6", "--goal=-74.5,17.6", "--speed", "0.5",
-                    "--no-global-check"]
+                    "--no-global-check", "--no-refine"]
         p_pf, _ = plan(glider, ["--currents", pop, "--out", os.path.join(work, "o_pop_file")] + pop_trip)
         pop_url = "http://127.0.0.1:%d/pop.nc" % port
         p_pu, _ = plan(glider, ["--currents", pop_url, "--out", os.path.join(work, "o_pop_url")] + pop_trip)
