@@ -9,10 +9,6 @@
 
 namespace ompl_glider
 {
-namespace
-{
-}
-
 AlongTrackSpeeds alongTrackSpeeds(double px, double py, const Velocity &c, double V)
 {
     AlongTrackSpeeds r;

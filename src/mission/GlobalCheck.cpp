@@ -290,7 +290,6 @@ PlannedPath headingsAlong(const MissionProblem &problem, const std::shared_ptr<c
     s.depth = ctx->travel->params().depth;
     s.radius = problem.gliderProblem(c.departure, c.speed).goalTolerance;
     s.tEnd = std::min(ctx->region.tMax, ctx->field->timeEnd());
-    constexpr double kDeg = 180.0 / 3.14159265358979323846;
     HeadingRoute schedule;
     schedule.start = {extremal.front().x, extremal.front().y};
     schedule.departure = extremal.front().t;
@@ -298,7 +297,7 @@ PlannedPath headingsAlong(const MissionProblem &problem, const std::shared_ptr<c
     {
         const double dt = extremal[i + 1].t - extremal[i].t;
         if (dt > 0.0)  // heading theta from +x, counter-clockwise -> bearing clockwise from north
-            schedule.segments.push_back({90.0 - 0.5 * (extremal[i].theta + extremal[i + 1].theta) * kDeg, dt});
+            schedule.segments.push_back({90.0 - 0.5 * (extremal[i].theta + extremal[i + 1].theta) * kDegPerRad, dt});
     }
     s.segments = 64;
     RefinedHeadings h = refineHeadingRoute(schedule, g, *ctx, s);

@@ -30,15 +30,11 @@
 #include "ompl_glider/io/GliderObservations.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/mission/Observations.h"
-#include "../core/Numbers.h"
 #endif
+#include "../core/Numbers.h"
 
 namespace ompl_glider
 {
-namespace
-{
-}  // namespace
-
 std::string sourcePlace(const MissionSpec &m, const SourceMark &mark)
 {
     if (!mark.file.empty() && mark.line > 0)
