@@ -14,6 +14,7 @@
 #include <ogrsf_frmts.h>
 
 #include "ompl_glider/Exception.h"
+#include "GdalModule.h"
 #include "NetCdfLock.h"
 #include "NumberText.h"
 
@@ -151,7 +152,7 @@ std::string featureName(const OGRFeature &f)
 }
 }  // namespace
 
-std::string polygonFault(const std::vector<Point2> &outer, const std::vector<std::vector<Point2>> &holes)
+std::string gdal_detail::polygonFault(const std::vector<Point2> &outer, const std::vector<std::vector<Point2>> &holes)
 {
     registerDrivers();
     OGRPolygon p;
@@ -168,8 +169,8 @@ std::string polygonFault(const std::vector<Point2> &outer, const std::vector<std
     return invalidity(p);
 }
 
-std::vector<LandPolygon> readLandPolygons(const std::string &path, const GeoBox &box, std::vector<std::string> *repairs,
-                                          CoastlineCount *count)
+std::vector<LandPolygon> gdal_detail::readLandPolygons(const std::string &path, const GeoBox &box,
+                                                       std::vector<std::string> *repairs, CoastlineCount *count)
 {
     // the GDAL dataset, from its opening to its closing at the end of this function, under the process's one lock
     // of GDAL's datasets and NetCDF-C (NetCdfLock.h: GDAL's netCDF driver reads vector NetCDF files too)

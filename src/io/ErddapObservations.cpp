@@ -18,6 +18,7 @@
 #include <set>
 #include <sstream>
 
+#include "GdalModule.h"
 #include "HttpMirror.h"
 #include "NcFile.h"
 #include "NetCdfLock.h"
@@ -162,7 +163,7 @@ std::string fetch(const std::string &url, const std::string &source)
     bool found = false;
     try
     {
-        found = netcdf_detail::httpGet(url, record, "ERDDAP", source, body, &failure);
+        found = gdal_detail::gdalPart().httpGet(url, record, "ERDDAP", source, body, &failure, nullptr);
     }
     catch (const Error &)
     {

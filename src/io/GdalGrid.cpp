@@ -101,10 +101,6 @@ nc_type ncTypeOf(GDALDataType t)
 }  // namespace
 
 
-bool isGdalSource(const std::string &path)
-{
-    return isZarrStore(path) || isGribFile(path);
-}
 
 /// CF's standard name of a GRIB2 parameter (its short name, as GDAL's "name" attribute gives it): the currents of
 /// ocean models (RTOFS) and the winds of weather models (for vehicles in wind).

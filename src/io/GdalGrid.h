@@ -24,12 +24,7 @@ namespace ompl_glider
 {
 namespace netcdf_detail
 {
-/// True for a source GDAL reads (GdalGrid): a Zarr store (a folder holding `.zgroup`, `.zmetadata` or `.zarray`, a
-/// name ending in `.zarr`, also as an http(s) URL, or GDAL's `ZARR:` prefix) or a GRIB file (`.grib2`, `.grb2`,
-/// `.grib`, `.grb`, or a file whose first bytes are "GRIB").
-bool isGdalSource(const std::string &path);
-
-
+/// (isGdalSource(), which sources are read here: GdalModule.h)
 class GdalGrid final : public Dataset
 {
 public:

@@ -12,7 +12,7 @@
 #include "TextUtil.h"
 #include "ompl_glider/Config.h"
 #if OMPL_GLIDER_WITH_MISSION
-#include "GdalGrid.h"
+#include "GdalModule.h"
 #endif
 
 namespace ompl_glider
@@ -211,7 +211,7 @@ NcFile::NcFile(const std::string &path) : path_(path)
 #if OMPL_GLIDER_WITH_MISSION
     if (isGdalSource(path))
     {
-        data_ = GdalGrid::open(path);
+        data_ = gdal_detail::gdalPart().openGrid(path);  // GDAL loaded here (GdalModule.h)
         return;
     }
 #endif

@@ -28,7 +28,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/StopRequest.h"
 #if OMPL_GLIDER_WITH_MISSION
-#include "HttpMirror.h"
+#include "GdalModule.h"  // the DAP answer explained (HttpMirror.h), GDAL loaded then
 #endif
 
 namespace ompl_glider
@@ -383,7 +383,7 @@ int RemoteDataset::remoteId()
 #if OMPL_GLIDER_WITH_MISSION
             // an answer that is not DAP: what the server is instead (a web page, a Zarr store), the page unquoted
             if (lastAnswerForeign)
-                if (const std::string why = notDapAnswer(url_); !why.empty())
+                if (const std::string why = gdal_detail::gdalPart().notDapAnswer(url_); !why.empty())
                     throw Error(who() + ": cannot open: " + why);
 #endif
             if (lastAnswerForeign)

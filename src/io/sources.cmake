@@ -24,14 +24,20 @@ if(OMPL_GLIDER_WITH_NETCDF)
   )
 endif()
 if(OMPL_GLIDER_WITH_MISSION)
-  list(APPEND OMPL_GLIDER_SOURCES
+  # the library's GDAL part, loaded when first needed (GdalModule.h): the module libompl_glider_gdal.so beside a
+  # shared library (CMakeLists.txt), inside a static one
+  list(APPEND OMPL_GLIDER_SOURCES ${CMAKE_CURRENT_LIST_DIR}/GdalModule.cpp)
+  set(OMPL_GLIDER_GDAL_SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/GdalEntryPoints.cpp  # the module's table of functions
     ${CMAKE_CURRENT_LIST_DIR}/Coastline.cpp  # GDAL/OGR
   )
   if(OMPL_GLIDER_WITH_NETCDF)
     # Zarr stores and GRIB files through GDAL's multidimensional API, read as NcFile reads NetCDF (GdalGrid.h)
-    list(APPEND OMPL_GLIDER_SOURCES ${CMAKE_CURRENT_LIST_DIR}/GdalGrid.cpp
+    list(APPEND OMPL_GLIDER_GDAL_SOURCES ${CMAKE_CURRENT_LIST_DIR}/GdalGrid.cpp
       ${CMAKE_CURRENT_LIST_DIR}/GdalFaults.cpp  # what is wrong with such a source, in its own words
       ${CMAKE_CURRENT_LIST_DIR}/HttpMirror.cpp  # a store or a GRIB file over HTTP: its mirror, the cache
+    )
+    list(APPEND OMPL_GLIDER_SOURCES
       # a glider's real-time data: an ERDDAP answer over HTTP, Slocum dba files
       ${CMAKE_CURRENT_LIST_DIR}/ErddapObservations.cpp
       ${CMAKE_CURRENT_LIST_DIR}/SlocumDba.cpp)

@@ -13,7 +13,7 @@ trap 'rm -rf "$out"' EXIT
 deb=$(ls "$out"/ompl-glider_*.deb)
 echo "built $(basename "$deb")"
 dpkg-deb -c "$deb" > "$out/contents.txt"
-for f in ./usr/bin/glider_plan 'libompl_glider.so.0' ./usr/include/ompl_glider/mission/Planning.h \
+for f in ./usr/bin/glider_plan 'libompl_glider.so.0' 'libompl_glider_gdal.so' ./usr/include/ompl_glider/mission/Planning.h \
          ompl_gliderConfig.cmake; do
   grep -q -- "$f" "$out/contents.txt" || { echo "the package lacks $f"; exit 1; }
 done

@@ -43,7 +43,15 @@ if [ -x "$work/prefix/bin/glider_plan" ]; then
         --out "$work/route" 2>&1) || { echo "installed glider_plan failed: $out"; exit 1; }
   grep -q "Travel time" <<<"$out" || { echo "installed glider_plan printed no travel time: $out"; exit 1; }
   [ -s "$work/route/summary.json" ] || { echo "installed glider_plan wrote no summary.json"; exit 1; }
-  echo "installed glider_plan ran from $work/moved_prefix"
+  # a polygon's check loads the library's GDAL module (src/io/GdalModule.h), found beside the moved library
+  printf '%s\n' 'name: island' 'current: {type: uniform, parameters: {u: 0.1, v: 0.0}}' \
+    'region: {x_min: 0, x_max: 10, y_min: -5, y_max: 5}' 'start: {x: 1, y: 0}' 'goal: {x: 9, y: 0}' \
+    'vehicle: {speed: 1.0}' 'forbidden:' '  obstacles:' '    - {name: Rock, points: [[4, -1], [6, -1], [6, 1], [4, 1]]}' \
+    > "$work/island.yaml"
+  out=$(env -u LD_LIBRARY_PATH "$work/moved_prefix/bin/glider_plan" --mission "$work/island.yaml" \
+        --out "$work/island" 2>&1) || { echo "installed glider_plan failed on a polygon: $out"; exit 1; }
+  grep -q "Travel time" <<<"$out" || { echo "installed glider_plan printed no travel time: $out"; exit 1; }
+  echo "installed glider_plan ran from $work/moved_prefix (a polygon checked through the GDAL module)"
   mv "$work/moved_prefix" "$work/prefix"
 fi
 cmake -S "$src_dir" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release

@@ -13,3 +13,8 @@ set_tests_properties(package.static_without_netcdf_and_map PROPERTIES TIMEOUT 12
 # with apt only as root with CI=true (a throwaway environment). cpack reinstalls the whole build: CI only.
 add_test(NAME package.deb COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_deb.sh ${PROJECT_BINARY_DIR} "${Python3_EXECUTABLE}")
 set_tests_properties(package.deb PROPERTIES TIMEOUT 900 LABELS ci RUN_SERIAL TRUE)
+# the GDAL part loaded only when needed (src/io/GdalModule.h); a missing module named
+if(TARGET glider_plan AND TARGET ompl_glider_gdal)
+  add_test(NAME package.gdal_module_on_demand
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_gdal_module.sh $<TARGET_FILE:glider_plan> $<TARGET_FILE_DIR:ompl_glider>)
+endif()
