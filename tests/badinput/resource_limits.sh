@@ -29,8 +29,9 @@ run() {
 # CPU time: two seconds of CPU (soft and hard) for a plan that needs more: glider_plan lowers the soft limit by a
 # second, and SIGXCPU is answered with a message (exit 128 + 24), not the hard limit's SIGKILL
 run cpu-time "ulimit -t 2" 0.004 "the CPU time limit (ulimit -t) was reached" 152
-# address space: too small for the lattice: refused with the estimate, or out of memory named as such
-run address-space "ulimit -v 400000" 0.004 "memory" 2
+# address space: too small for the lattice: refused with the estimate, or out of memory named as such (the plan needs
+# between 300 and 400 MB of address space since GDAL is loaded only when needed, src/io/GdalModule.h)
+run address-space "ulimit -v 250000" 0.004 "memory" 2
 # threads: no new thread may start (the user's processes already fill the limit): done with fewer threads, or a
 # message that names the thread limit
 run threads "ulimit -u 1" 0.05 "ulimit -u" 0 2
