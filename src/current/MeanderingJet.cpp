@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ompl_glider
 {
@@ -21,9 +22,35 @@ struct JetTerms
     double sx;   // ds/dx
 };
 
+/// B(t) = B0 + eps cos(omega t + theta). The planners ask for many points at one time (a front, a lattice layer, the
+/// stages of a step), so each thread keeps its last time and amplitude: one cosine per time, not per point.
+double amplitude(const MeanderingJetParams &p, double t)
+{
+    if (p.epsilon == 0.0)
+        return p.B0;
+    struct Last
+    {
+        double t, B0, epsilon, omega, theta, B;
+    };
+    thread_local Last last{std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0, 0.0, 0.0, 0.0};
+    if (t != last.t || p.B0 != last.B0 || p.epsilon != last.epsilon || p.omega != last.omega || p.theta != last.theta)
+        last = {t, p.B0, p.epsilon, p.omega, p.theta, p.B0 + p.epsilon * std::cos(p.omega * t + p.theta)};
+    return last.B;
+}
+
+/// tanh(s) and sech^2(s) = 1 - tanh^2(s) from one exponential, a = exp(-2|s|): tanh = sign(s) (1 - a) / (1 + a),
+/// sech^2 = 4 a / (1 + a)^2 (no cancellation; glibc's tanh takes an expm1, about twice an exp).
+void tanhSech2(double s, double &th, double &sech2)
+{
+    const double a = std::exp(-2.0 * std::abs(s));
+    const double d = 1.0 / (1.0 + a);
+    th = std::copysign((1.0 - a) * d, s);
+    sech2 = 4.0 * a * d * d;
+}
+
 JetTerms jetTerms(const MeanderingJetParams &p, double x, double y, double t)
 {
-    const double B = p.B0 + p.epsilon * std::cos(p.omega * t + p.theta);
+    const double B = amplitude(p, t);
     const double th = p.k * (x - p.c * t);
     const double sn = std::sin(th), cs = std::cos(th);
     JetTerms j{};
@@ -36,8 +63,8 @@ JetTerms jetTerms(const MeanderingJetParams &p, double x, double y, double t)
     j.Dx = P / j.D;
     j.Dxx = Px / j.D - P * j.Dx / (j.D * j.D);
     const double s = j.N / j.D;
-    const double th_s = std::tanh(s);
-    j.g = 1.0 - th_s * th_s;
+    double th_s = 0.0;
+    tanhSech2(s, th_s, j.g);
     j.gp = -2.0 * j.g * th_s;
     j.sx = j.Nx / j.D - j.N * j.Dx / (j.D * j.D);
     return j;

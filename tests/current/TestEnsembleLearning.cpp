@@ -34,7 +34,7 @@ std::vector<std::shared_ptr<const CurrentField>> jets()
 }
 
 /// One DAC per 0.1 time units for two time units along a track across the jet, each @p truth at the dive's middle.
-std::vector<DacObservation> track(const CurrentField &truth)
+std::vector<DacObservation> ensembleTrack(const CurrentField &truth)
 {
     std::vector<DacObservation> obs;
     for (int k = 0; k < 20; ++k)
@@ -77,7 +77,7 @@ TEST(EnsembleLearning, WeightsConcentrateOnTheMemberThatMadeTheDac)
     const auto mean = std::make_shared<EnsembleMeanField>(members);
     for (std::size_t maker : {1u, 3u, 4u})
     {
-        const LearnedForecast l = learnForecast(mean, members, track(*members[maker]), params());
+        const LearnedForecast l = learnForecast(mean, members, ensembleTrack(*members[maker]), params());
         ASSERT_EQ(l.members.size(), members.size());
         EXPECT_GT(l.members[maker].weight, 0.99) << maker;
         EXPECT_EQ(l.weighedBy, 20u);
@@ -106,7 +106,7 @@ TEST(EnsembleLearning, ATruthBetweenTheMembersIsForecastBetterAheadThanByTheirMe
     const MeanderingJet truth(p);
     const auto members = jets();
     const auto mean = std::make_shared<EnsembleMeanField>(members);
-    const LearnedForecast l = learnForecast(mean, members, track(truth), params());
+    const LearnedForecast l = learnForecast(mean, members, ensembleTrack(truth), params());
     for (const double t : {2.0, 3.0, 4.0})
     {
         const double learned = rmsAhead(*l.field, truth, t), plain = rmsAhead(*mean, truth, t);
@@ -121,14 +121,14 @@ TEST(EnsembleLearning, DacEveryMemberMatchesLeaveTheWeightsEqualAndOneForecastIs
                                                          std::make_shared<UniformCurrent>(0.1, 0.0),
                                                          std::make_shared<UniformCurrent>(0.1, 0.0)};
     const auto mean = std::make_shared<EnsembleMeanField>(same);
-    const LearnedForecast l = learnForecast(mean, same, track(*same[0]), params());
+    const LearnedForecast l = learnForecast(mean, same, ensembleTrack(*same[0]), params());
     for (const MemberScore &m : l.members)
         EXPECT_NEAR(m.weight, 1.0 / 3.0, 1e-12);
     const Velocity c = l.field->velocity(5.0, 1.0, 0.0, 2.0);
     EXPECT_DOUBLE_EQ(c.u, 0.1);
     EXPECT_DOUBLE_EQ(c.v, 0.0);
     // one forecast (no members): the forecast corrected by optimal interpolation alone
-    const LearnedForecast one = learnForecast(same[0], {}, track(UniformCurrent(0.2, 0.0)), params());
+    const LearnedForecast one = learnForecast(same[0], {}, ensembleTrack(UniformCurrent(0.2, 0.0)), params());
     EXPECT_TRUE(one.members.empty());
     EXPECT_GT(one.field->velocity(1.5, -1.0, 0.0, 1.0).u, 0.15);
 }

@@ -156,7 +156,7 @@ void writeTimeAxisFile(const std::string &path, const TimeAxisFile &spec)
     w.put(v, std::vector<double>(n, -0.2));
 }
 
-std::string errorOf(const std::function<void()> &f)
+std::string timeErrorOf(const std::function<void()> &f)
 {
     try
     {
@@ -253,23 +253,23 @@ TEST(NetCdfTimeAxis, SteadyFilesHaveNoTimeAxisAndErrorsNameTheFile)
     ASSERT_NE(fp, nullptr);
     std::fputs("not netcdf\n", fp);
     std::fclose(fp);
-    std::string m = errorOf([&] { readNetCdfTimeAxis(text); });
+    std::string m = timeErrorOf([&] { readNetCdfTimeAxis(text); });
     EXPECT_NE(m.find("'" + text + "'"), std::string::npos) << m;
     EXPECT_NE(m.find("cannot open"), std::string::npos) << m;
 
     // a time variable named but missing; a velocity named but missing
     const std::string nemo = tmp.file("nemo.nc");
     writeTimeAxisFile(nemo, {"time_counter", "days since 1950-01-01", "noleap", "time", "T", {0.0, 1.0}});
-    m = errorOf([&] { readNetCdfTimeAxis(nemo, "time"); });
+    m = timeErrorOf([&] { readNetCdfTimeAxis(nemo, "time"); });
     EXPECT_NE(m.find("'time'"), std::string::npos) << m;
     EXPECT_NE(m.find(nemo), std::string::npos) << m;
-    m = errorOf([&] { readNetCdfTimeAxis(nemo, "", "water_u"); });
+    m = timeErrorOf([&] { readNetCdfTimeAxis(nemo, "", "water_u"); });
     EXPECT_NE(m.find("'water_u'"), std::string::npos) << m;
 
     // units the loader does not accept
     const std::string months = tmp.file("months.nc");
     writeTimeAxisFile(months, {"time", "months since 2000-01-01", "", "", "", {0.0, 1.0}});
-    m = errorOf([&] { readNetCdfTimeAxis(months); });
+    m = timeErrorOf([&] { readNetCdfTimeAxis(months); });
     EXPECT_NE(m.find("time variable 'time'"), std::string::npos) << m;
     EXPECT_NE(m.find(months), std::string::npos) << m;
 }

@@ -25,7 +25,7 @@ using glider_test::TempDir;
 
 namespace
 {
-std::string errorOf(const std::function<void()> &f)
+std::string unitsErrorOf(const std::function<void()> &f)
 {
     try
     {
@@ -186,7 +186,7 @@ TEST(NetCdfUnits, NonVelocityUnitsAreRefusedNamingFileVariableAndUnits)
     {
         const std::string path = tmp.file("bad.nc");
         writeCartesian(path, units, 1.0, 1.0);
-        const std::string m = errorOf([&] { loadNetCdfCurrents(path); });
+        const std::string m = unitsErrorOf([&] { loadNetCdfCurrents(path); });
         EXPECT_NE(m.find(path), std::string::npos) << m;
         EXPECT_NE(m.find("variable 'u'"), std::string::npos) << m;
         EXPECT_NE(m.find("'" + units + "'"), std::string::npos) << m;
@@ -195,14 +195,14 @@ TEST(NetCdfUnits, NonVelocityUnitsAreRefusedNamingFileVariableAndUnits)
     }
     const std::string path = tmp.file("gibberish.nc");
     writeCartesian(path, "parsecs per thingy", 1.0, 1.0);
-    std::string m = errorOf([&] { loadNetCdfCurrents(path); });
+    std::string m = unitsErrorOf([&] { loadNetCdfCurrents(path); });
     EXPECT_NE(m.find("'parsecs per thingy'"), std::string::npos) << m;
     EXPECT_NE(m.find("not understood"), std::string::npos) << m;
     // the library function alone says what UDUNITS-2 made of them
-    m = errorOf([] { velocityToMetresPerSecond("degC"); });
+    m = unitsErrorOf([] { velocityToMetresPerSecond("degC"); });
     EXPECT_NE(m.find("not a velocity"), std::string::npos) << m;
     EXPECT_NE(m.find("K @ 273.15"), std::string::npos) << m;
-    m = errorOf([] { lengthToMetres("s"); });
+    m = unitsErrorOf([] { lengthToMetres("s"); });
     EXPECT_NE(m.find("not a length"), std::string::npos) << m;
 }
 
@@ -235,7 +235,7 @@ TEST(NetCdfUnits, OverrideReplacesTheFilesUnitsAndIsChecked)
         w.put(u, {50, 50, 50, 50});
         w.put(v, {0, 0, 0, 0});
     }
-    std::string m = errorOf([&] { loadNetCdfCurrents(geo); });
+    std::string m = unitsErrorOf([&] { loadNetCdfCurrents(geo); });
     EXPECT_NE(m.find("variable 'u' has no units"), std::string::npos) << m;
     EXPECT_NE(m.find("velocityUnits"), std::string::npos) << m;
     NetCdfCurrentOptions g;
@@ -244,12 +244,12 @@ TEST(NetCdfUnits, OverrideReplacesTheFilesUnitsAndIsChecked)
     EXPECT_NEAR(std::hypot(gv.u, gv.v), 0.5, 1e-6);
     // a bad override names the option and the units
     o.velocityUnits = "degC";
-    m = errorOf([&] { loadNetCdfCurrents(path, o); });
+    m = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
     EXPECT_NE(m.find("NetCdfCurrentOptions::velocityUnits"), std::string::npos) << m;
     EXPECT_NE(m.find("'degC'"), std::string::npos) << m;
     EXPECT_NE(m.find("not a velocity"), std::string::npos) << m;
     o.velocityUnits = "furlongs per blink";
-    m = errorOf([&] { loadNetCdfCurrents(path, o); });
+    m = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
     EXPECT_NE(m.find("not understood"), std::string::npos) << m;
 }
 
@@ -328,7 +328,7 @@ TEST(NetCdfNames, NoVelocityFoundListsTheCandidatesWithUnitsAndDimensions)
         w.var("mask", NC_INT, {dj, di});
         w.enddef();
     }
-    const std::string m = errorOf([&] { loadNetCdfCurrents(path); });
+    const std::string m = unitsErrorOf([&] { loadNetCdfCurrents(path); });
     EXPECT_NE(m.find(path), std::string::npos) << m;
     EXPECT_NE(m.find("no eastward (u) velocity found"), std::string::npos) << m;
     EXPECT_NE(m.find("candidates: temp(time,lat,lon) [degC], UVEL2(time,z_t,nlat,nlon) [cm/s], "
@@ -340,11 +340,11 @@ TEST(NetCdfNames, NoVelocityFoundListsTheCandidatesWithUnitsAndDimensions)
     // named, they load (UVEL2 has no v partner here: the v error lists the same candidates)
     NetCdfCurrentOptions o;
     o.uName = "UVEL2";
-    const std::string mv = errorOf([&] { loadNetCdfCurrents(path, o); });
+    const std::string mv = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
     EXPECT_NE(mv.find("no northward (v) velocity found"), std::string::npos) << mv;
     EXPECT_NE(mv.find("UVEL2(time,z_t,nlat,nlon) [cm/s]"), std::string::npos) << mv;
     o.uName = "uvel3";
-    const std::string mg = errorOf([&] { loadNetCdfCurrents(path, o); });
+    const std::string mg = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
     EXPECT_NE(mg.find("no variable 'uvel3'"), std::string::npos) << mg;
     EXPECT_NE(mg.find("temp(time,lat,lon) [degC]"), std::string::npos) << mg;
 }
@@ -364,7 +364,7 @@ TEST(NetCdfSteady, NoTimeAxisOrOneRecordIsASteadyFieldTakingAnyDeparture)
     EXPECT_EQ(nc.departureTime, 86400.0);
     EXPECT_NEAR(centreU(nc, 1e7), 0.1, 1e-6);
     o.departure = "2026-03-01T00:00:00Z";  // a date needs dates in the file
-    std::string m = errorOf([&] { loadNetCdfCurrents(none, o); });
+    std::string m = unitsErrorOf([&] { loadNetCdfCurrents(none, o); });
     EXPECT_NE(m.find("departure"), std::string::npos) << m;
     EXPECT_NE(m.find("no dated time axis"), std::string::npos) << m;
     const NetCdfTimeAxis a = readNetCdfTimeAxis(none);
@@ -373,13 +373,13 @@ TEST(NetCdfSteady, NoTimeAxisOrOneRecordIsASteadyFieldTakingAnyDeparture)
     // the options for a time axis make no sense without one
     NetCdfCurrentOptions t;
     t.timeUnits = "days since 2026-01-01";
-    m = errorOf([&] { loadNetCdfCurrents(none, t); });
+    m = unitsErrorOf([&] { loadNetCdfCurrents(none, t); });
     EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits given, but variable 'u' has no time dimension"),
               std::string::npos)
         << m;
     t = {};
     t.steadyRecord = 0;
-    m = errorOf([&] { readNetCdfTimeAxis(none, t); });
+    m = unitsErrorOf([&] { readNetCdfTimeAxis(none, t); });
     EXPECT_NE(m.find("NetCdfCurrentOptions::steadyRecord given"), std::string::npos) << m;
 
     // one record: steady, dated by it, any date accepted
@@ -398,7 +398,7 @@ TEST(NetCdfSteady, NoTimeAxisOrOneRecordIsASteadyFieldTakingAnyDeparture)
     const std::string two = tmp.file("two_records.nc");
     writeGeographic(two, "u", "v", 2);
     EXPECT_FALSE(loadNetCdfCurrents(two).steady);
-    m = errorOf([&] { loadNetCdfCurrents(two, o); });
+    m = unitsErrorOf([&] { loadNetCdfCurrents(two, o); });
     EXPECT_NE(m.find("outside the forecast"), std::string::npos) << m;
 }
 
@@ -408,7 +408,7 @@ TEST(NetCdfTime, AxisWithoutSinceNamesBothOptionsAndEachGetsThrough)
     // a climatology-like axis in "month": records 0, 6, 12 with u = 0.1, 0.2, 0.3
     const std::string path = tmp.file("months.nc");
     writeGeographic(path, "uo", "vo", 3, "month", {0.1, 0.2, 0.3});
-    std::string m = errorOf([&] { loadNetCdfCurrents(path); });
+    std::string m = unitsErrorOf([&] { loadNetCdfCurrents(path); });
     EXPECT_NE(m.find(path), std::string::npos) << m;
     EXPECT_NE(m.find("time variable 'time': units 'month'"), std::string::npos) << m;
     EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits"), std::string::npos) << m;
@@ -418,7 +418,7 @@ TEST(NetCdfTime, AxisWithoutSinceNamesBothOptionsAndEachGetsThrough)
     {
         const std::string p = tmp.file("undated.nc");
         writeGeographic(p, "uo", "vo", 3, units);
-        m = errorOf([&] { loadNetCdfCurrents(p); });
+        m = unitsErrorOf([&] { loadNetCdfCurrents(p); });
         EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits"), std::string::npos) << "'" << units << "': " << m;
     }
 
@@ -435,10 +435,10 @@ TEST(NetCdfTime, AxisWithoutSinceNamesBothOptionsAndEachGetsThrough)
     EXPECT_EQ(readNetCdfTimeAxis(path, o).span, 12.0 * 86400);
     // checked: a units text without "since", or one the calendar parser refuses
     o.timeUnits = "days";
-    m = errorOf([&] { loadNetCdfCurrents(path, o); });
+    m = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
     EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits 'days'"), std::string::npos) << m;
     o.timeUnits = "fortnights since 2026-01-15";
-    m = errorOf([&] { loadNetCdfCurrents(path, o); });
+    m = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
     EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits 'fortnights since 2026-01-15'"), std::string::npos) << m;
 
     // steadyRecord: only that record, a steady field (undated here: the axis has no dates)
@@ -467,7 +467,7 @@ TEST(NetCdfTime, AxisWithoutSinceNamesBothOptionsAndEachGetsThrough)
     // out of range
     s = {};
     s.steadyRecord = 3;
-    m = errorOf([&] { loadNetCdfCurrents(path, s); });
+    m = unitsErrorOf([&] { loadNetCdfCurrents(path, s); });
     EXPECT_NE(m.find("NetCdfCurrentOptions::steadyRecord 3 is out of range: time variable 'time' has 3 records "
                      "(0 to 2)"),
               std::string::npos)

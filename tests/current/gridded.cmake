@@ -12,17 +12,17 @@ glider_add_test(test_current_netcdf
 
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfGlobal.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfModelGrids.cpp)
-target_link_libraries(test_current_netcdf PRIVATE netCDF::netcdf)
+target_link_libraries(test_current_netcdf INTERFACE netCDF::netcdf)
 glider_add_test(test_current_gridded_agreement ${CMAKE_CURRENT_LIST_DIR}/TestGriddedAgreement.cpp)
-target_link_libraries(test_current_gridded_agreement PRIVATE netCDF::netcdf)
+target_link_libraries(test_current_gridded_agreement INTERFACE netCDF::netcdf)
 # bad forecast files refused with a clear Error; the classic-format size check and the derived grid angle (internals
 # of the reader)
 glider_add_test(test_current_netcdf_checks
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfBadFiles.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfClassicSize.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfGridAngle.cpp)
-target_link_libraries(test_current_netcdf_checks PRIVATE netCDF::netcdf)
-target_include_directories(test_current_netcdf_checks PRIVATE ${PROJECT_SOURCE_DIR}/src/current)
+target_link_libraries(test_current_netcdf_checks INTERFACE netCDF::netcdf)
+target_include_directories(test_current_netcdf_checks INTERFACE ${PROJECT_SOURCE_DIR}/src/current)
 # glider_plan on steady files, undated time axes and mislabelled velocity units
 if(TARGET glider_plan)
   add_test(NAME current.glider_plan_forecast_files

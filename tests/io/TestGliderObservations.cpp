@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 namespace
 {
-fs::path freshDir(const std::string &name)
+fs::path freshObservationDir(const std::string &name)
 {
     const fs::path d = fs::path(::testing::TempDir()) / name;
     fs::remove_all(d);
@@ -45,7 +45,7 @@ std::string errorOf(const std::string &path)
 
 TEST(GliderObservations, IoosDeploymentFolder)
 {
-    const fs::path d = freshDir("ioos_deployment");
+    const fs::path d = freshObservationDir("ioos_deployment");
     const double t0 = parseIsoTime("2026-03-15T06:00:00Z");
     for (int k = 0; k < 6; ++k) // six good profiles, written out of order
     {
@@ -89,7 +89,7 @@ TEST(GliderObservations, IoosDeploymentFolder)
 
 TEST(GliderObservations, NothingUsableIsRefusedNamingTheFileAndVariable)
 {
-    const fs::path d = freshDir("ioos_bad");
+    const fs::path d = freshObservationDir("ioos_bad");
     ioos_test::writeProfile((d / "a.nc").string(), {1.8e9, -52.0, 48.0, -999.0, -999.0});
     const std::string e = errorOf(d.string());
     EXPECT_NE(e.find("no usable depth-averaged current (variables u, v; rejected: 1 fill value)"), std::string::npos)
@@ -109,7 +109,7 @@ TEST(GliderObservations, NothingUsableIsRefusedNamingTheFileAndVariable)
 
 TEST(GliderObservations, CsvRowsFixesAndErrors)
 {
-    const fs::path d = freshDir("dac_csv");
+    const fs::path d = freshObservationDir("dac_csv");
     const std::string f = (d / "dac.csv").string();
     std::ofstream(f) << "time,lon,lat,u,v\n"
                         "2026-03-15T06:00:00Z,-52.7,47.9,0.10,-0.02\n"
@@ -134,7 +134,7 @@ TEST(GliderObservations, CsvRowsFixesAndErrors)
 // the unit as "u (cm/s)"; the rejection of implausibly fast values names the unit read.
 TEST(GliderObservations, VelocityUnitsAreConvertedOrRefused)
 {
-    const fs::path d = freshDir("dac_units");
+    const fs::path d = freshObservationDir("dac_units");
     const double t0 = parseIsoTime("2026-03-15T06:00:00Z");
     const double knot = 1852.0 / 3600.0;
     const struct
@@ -185,7 +185,7 @@ TEST(GliderObservations, VelocityUnitsAreConvertedOrRefused)
 // named as such.
 TEST(GliderObservations, SemicolonSeparatedCsvReadsAsTheCommaSeparatedOne)
 {
-    const fs::path d = freshDir("dac_semicolon");
+    const fs::path d = freshObservationDir("dac_semicolon");
     const std::string comma = (d / "comma.csv").string(), semi = (d / "semi.csv").string();
     std::ofstream(comma) << "time,lon,lat,u,v\n2026-03-15T06:00:00Z,-52.7,47.9,0.10,-0.02\n"
                             "2026-03-15T09:00:00Z,-52.5,48.0,0.12,-0.01\n2026-03-15T12:00:00Z,-52.4,48.1,,\n";
@@ -253,7 +253,7 @@ void writeDacList(const std::string &path, const std::string &glider, const std:
 // equal numbers are refused naming both, where one glider's files are the most they are read without the other's.
 TEST(GliderObservations, FilesOfSeveralDacAndTiesBetweenGliders)
 {
-    const fs::path d = freshDir("dac_lists");
+    const fs::path d = freshObservationDir("dac_lists");
     const double t0 = parseIsoTime("2026-03-15T06:00:00Z");
     writeDacList((d / "ru29_a.nc").string(), "ru29", {t0, t0 + 3600, t0 + 7200}, {0.1, 0.2, 0.3});
     writeDacList((d / "ru29_b.nc").string(), "ru29", {t0 + 10800, t0 + 14400, t0 + 18000}, {0.4, 0.5, 0.6}, 1);

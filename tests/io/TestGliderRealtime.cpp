@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 namespace
 {
 
-std::string errorOf(const std::string &source)
+std::string realtimeErrorOf(const std::string &source)
 {
     try
     {
@@ -219,7 +219,7 @@ TEST_F(GliderRealtime, ErddapServerDownIsRefusedNamingTheUrl)
 {
     const std::string url = "http://127.0.0.1:" + std::to_string(loopback_test::closedPort()) +
                             "/erddap/tabledap/ru29-20260315T0000.csvp?" + kColumns;
-    const std::string e = errorOf(url);
+    const std::string e = realtimeErrorOf(url);
     EXPECT_NE(e.find("cannot fetch '" + url + "'"), std::string::npos) << e;
     EXPECT_NE(e.find("0 retries"), std::string::npos) << e;
 }
@@ -233,7 +233,7 @@ TEST_F(GliderRealtime, ErddapTooSlowIsRefusedAtTheTimeLimit)
     });
     const std::string url = slow.url("/erddap/tabledap/ru29-20260315T0000.csvp");
     const auto begin = std::chrono::steady_clock::now();
-    const std::string e = errorOf(url);
+    const std::string e = realtimeErrorOf(url);
     const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     EXPECT_NE(e.find("cannot fetch '" + url + "'"), std::string::npos) << e;
     EXPECT_NE(e.find("request time limit 1 s"), std::string::npos) << e;
@@ -258,7 +258,7 @@ TEST_F(GliderRealtime, ErddapErrorPagesAndHtmlAreRefusedWithTheServersWords)
     });
     const auto check = [&](const std::string &dataset, const std::string &words) {
         const std::string url = server.url("/erddap/tabledap/" + dataset + ".csvp?time,u&time>=2026-03-15T00:00:00Z");
-        const std::string e = errorOf(url);
+        const std::string e = realtimeErrorOf(url);
         EXPECT_NE(e.find("ERDDAP '" + url + "'"), std::string::npos) << e;
         EXPECT_NE(e.find(words), std::string::npos) << e;
     };
@@ -268,14 +268,14 @@ TEST_F(GliderRealtime, ErddapErrorPagesAndHtmlAreRefusedWithTheServersWords)
     check("portal", "the answer is an HTML page ('Sign in to the portal'), not ERDDAP data");
     // .ncCF: an HTML page where NetCDF was expected
     const std::string url = server.url("/erddap/tabledap/portal.ncCF");
-    EXPECT_NE(errorOf(url).find("ERDDAP '" + url + "': the answer is an HTML page"), std::string::npos) << errorOf(url);
+    EXPECT_NE(realtimeErrorOf(url).find("ERDDAP '" + url + "': the answer is an HTML page"), std::string::npos) << realtimeErrorOf(url);
     // a URL of another file type
     const std::string json = server.url("/erddap/tabledap/ru29.json?time");
-    EXPECT_NE(errorOf(json).find("ERDDAP '" + json +
+    EXPECT_NE(realtimeErrorOf(json).find("ERDDAP '" + json +
                                  "': not an ERDDAP tabledap answer this reader knows (the file "
                                  "type '.json'; expected .csvp, .csv or .ncCF"),
               std::string::npos)
-        << errorOf(json);
+        << realtimeErrorOf(json);
 }
 
 TEST_F(GliderRealtime, ErddapAnswersWithoutTheColumnsAreRefusedNamingThem)
@@ -306,17 +306,17 @@ TEST_F(GliderRealtime, ErddapAnswersWithoutTheColumnsAreRefusedNamingThem)
                      "2026-03-15T06:00:00Z,48.0,-52.0,1\n"};
     });
     const std::string csvp = server.url("/erddap/tabledap/ru29.csvp?time,latitude,longitude,profile_id");
-    EXPECT_NE(errorOf(csvp).find("ERDDAP '" + csvp +
+    EXPECT_NE(realtimeErrorOf(csvp).find("ERDDAP '" + csvp +
                                  "': the answer has no column 'time_uv', 'lat_uv', 'lon_uv', "
                                  "'u', 'v'"),
               std::string::npos)
-        << errorOf(csvp);
+        << realtimeErrorOf(csvp);
     const std::string nccf = server.url("/erddap/tabledap/ru29.ncCF?time");
-    EXPECT_NE(errorOf(nccf).find("ERDDAP '" + nccf + "': the answer has no variable 'lat_uv', 'v'"), std::string::npos)
-        << errorOf(nccf);
+    EXPECT_NE(realtimeErrorOf(nccf).find("ERDDAP '" + nccf + "': the answer has no variable 'lat_uv', 'v'"), std::string::npos)
+        << realtimeErrorOf(nccf);
     const std::string cut = server.url("/erddap/tabledap/cut.ncCF");
-    EXPECT_NE(errorOf(cut).find("ERDDAP '" + cut + "': the .ncCF answer is cut short or corrupt"), std::string::npos)
-        << errorOf(cut);
+    EXPECT_NE(realtimeErrorOf(cut).find("ERDDAP '" + cut + "': the .ncCF answer is cut short or corrupt"), std::string::npos)
+        << realtimeErrorOf(cut);
     // the same numbers in cm s-1: a hundredth of the DAC in m s-1; in degC: refused
     const std::string cms = server.url("/erddap/tabledap/cms.csvp");
     const GliderObservations inCm = readGliderObservations(cms);
@@ -325,13 +325,13 @@ TEST_F(GliderRealtime, ErddapAnswersWithoutTheColumnsAreRefusedNamingThem)
     for (std::size_t i = 0; i < inM.dac.size(); ++i)
         EXPECT_NEAR(inCm.dac[i].u, inM.dac[i].u / 100.0, 1e-15);
     const std::string degc = server.url("/erddap/tabledap/degc.csvp");
-    EXPECT_NE(errorOf(degc).find("ERDDAP '" + degc + "': 'u' is in 'degC': units 'degC' are not a velocity"),
+    EXPECT_NE(realtimeErrorOf(degc).find("ERDDAP '" + degc + "': 'u' is in 'degC': units 'degC' are not a velocity"),
               std::string::npos)
-        << errorOf(degc);
+        << realtimeErrorOf(degc);
     const std::string nan = server.url("/erddap/tabledap/notanumber.csvp");
-    EXPECT_NE(errorOf(nan).find("ERDDAP '" + nan + "': answer line 2: 'u': expected a number, got 'east'"),
+    EXPECT_NE(realtimeErrorOf(nan).find("ERDDAP '" + nan + "': answer line 2: 'u': expected a number, got 'east'"),
               std::string::npos)
-        << errorOf(nan);
+        << realtimeErrorOf(nan);
 }
 
 TEST_F(GliderRealtime, BadDbaFilesAreRefusedNamingFileAndLine)
@@ -342,7 +342,7 @@ TEST_F(GliderRealtime, BadDbaFilesAreRefusedNamingFileAndLine)
     const std::string row = dbaRow(t0(), 47.875, -52.625, 0.0, NAN, NAN, 0.1);
     const auto check = [&](const std::string &text, const std::string &words) {
         std::ofstream(f) << text;
-        const std::string e = errorOf(f);
+        const std::string e = realtimeErrorOf(f);
         EXPECT_NE(e.find(f + ":" + words), std::string::npos) << e;
     };
     // the header's 14 lines, then the file ends: no label lines
@@ -364,9 +364,9 @@ TEST_F(GliderRealtime, BadDbaFilesAreRefusedNamingFileAndLine)
           "3: the header has no num_ascii_tags line");
     // a folder of dba files without any DAC: nothing usable, the sensors named
     std::ofstream(f) << header << row;
-    EXPECT_NE(errorOf(d.string()).find("no usable depth-averaged current (sensors m_water_vx, m_water_vy)"),
+    EXPECT_NE(realtimeErrorOf(d.string()).find("no usable depth-averaged current (sensors m_water_vx, m_water_vy)"),
               std::string::npos)
-        << errorOf(d.string());
+        << realtimeErrorOf(d.string());
 }
 
 TEST_F(GliderRealtime, DbaRejectsPlaceholdersHalfFixesAndOtherGliders)
@@ -418,11 +418,11 @@ TEST_F(GliderRealtime, DbaFilesAreFoundByNameOrFirstLineAndNotMixedWithNetCdf)
     EXPECT_EQ(one.platform, "ru29");
     // a pattern matching a dba file and a NetCDF file, a folder holding both: refused
     writeIoos(d, {deployment()[1]});
-    EXPECT_NE(errorOf((d / "ru29*").string()).find("matches both Slocum dba files and others"), std::string::npos)
-        << errorOf((d / "ru29*").string());
-    EXPECT_NE(errorOf(d.string()).find("the folder holds both NetCDF (.nc) and Slocum dba (.dba) files"),
+    EXPECT_NE(realtimeErrorOf((d / "ru29*").string()).find("matches both Slocum dba files and others"), std::string::npos)
+        << realtimeErrorOf((d / "ru29*").string());
+    EXPECT_NE(realtimeErrorOf(d.string()).find("the folder holds both NetCDF (.nc) and Slocum dba (.dba) files"),
               std::string::npos)
-        << errorOf(d.string());
+        << realtimeErrorOf(d.string());
 }
 
 TEST_F(GliderRealtime, MissionFileKeepsAnErddapUrlAsGiven)

@@ -40,8 +40,8 @@ using glider_test::NcWriter;
 using glider_test::TempDir;
 namespace fs = std::filesystem;
 
-const std::string kJamaica = std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/jamaica_coast.geojson";
-constexpr std::size_t kNx = 26, kNy = 16, kNt = 2;
+const std::string kJamaicaCoast = std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/jamaica_coast.geojson";
+constexpr std::size_t kSourceNx = 26, kNy = 16, kNt = 2;
 
 /// The currents of forecast @p k (each thread its own): a westward stream with a meander, stronger for larger k.
 std::vector<double> velocity(int k, bool east)
@@ -49,20 +49,20 @@ std::vector<double> velocity(int k, bool east)
     std::vector<double> out;
     for (std::size_t t = 0; t < kNt; ++t)
         for (std::size_t j = 0; j < kNy; ++j)
-            for (std::size_t i = 0; i < kNx; ++i)
+            for (std::size_t i = 0; i < kSourceNx; ++i)
                 out.push_back(east ? -0.05 - 0.02 * k + 0.04 * std::sin(0.5 * double(j) + double(t))
                                    : 0.03 * std::cos(0.4 * double(i)) + 0.005 * k);
     return out;
 }
 
 const std::vector<double> kTime{0.0, 30.0};
-const std::vector<double> kLat = linspace(17.3, 0.08, kNy), kLon = linspace(-79.2, 0.08, kNx);
+const std::vector<double> kLat = linspace(17.3, 0.08, kNy), kLon = linspace(-79.2, 0.08, kSourceNx);
 
 /// Forecast @p k as a CDF-5 NetCDF file (a classic file: its bytes are also a dataset NetCDF-C opens in memory).
 void writeNetCdf(const std::string &path, int k)
 {
     NcWriter w(path, NC_CLOBBER | NC_64BIT_DATA);
-    const int dt = w.dim("time", kNt), dy = w.dim("lat", kNy), dx = w.dim("lon", kNx);
+    const int dt = w.dim("time", kNt), dy = w.dim("lat", kNy), dx = w.dim("lon", kSourceNx);
     const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
     w.text(vt, "units", "days since 2026-06-01");
     w.text(vy, "units", "degrees_north");
@@ -107,10 +107,10 @@ void writeZarr(const fs::path &store, int k)
     std::ofstream(store / ".zgroup") << "{\"zarr_format\": 2}";
     writeZarrArray(store, "time", {"time"}, {kNt}, kTime, ", \"units\": \"days since 2026-06-01\"");
     writeZarrArray(store, "lat", {"lat"}, {kNy}, kLat, ", \"units\": \"degrees_north\"");
-    writeZarrArray(store, "lon", {"lon"}, {kNx}, kLon, ", \"units\": \"degrees_east\"");
-    writeZarrArray(store, "uo", {"time", "lat", "lon"}, {kNt, kNy, kNx}, velocity(k, true),
+    writeZarrArray(store, "lon", {"lon"}, {kSourceNx}, kLon, ", \"units\": \"degrees_east\"");
+    writeZarrArray(store, "uo", {"time", "lat", "lon"}, {kNt, kNy, kSourceNx}, velocity(k, true),
                    ", \"units\": \"m s-1\", \"standard_name\": \"eastward_sea_water_velocity\"");
-    writeZarrArray(store, "vo", {"time", "lat", "lon"}, {kNt, kNy, kNx}, velocity(k, false),
+    writeZarrArray(store, "vo", {"time", "lat", "lon"}, {kNt, kNy, kSourceNx}, velocity(k, false),
                    ", \"units\": \"m s-1\", \"standard_name\": \"northward_sea_water_velocity\"");
 }
 
@@ -186,7 +186,7 @@ Answer planOn(int k, const std::string &source, const std::string &bytes, const 
         in.speed = 0.4;
         MissionSpec spec = forecastMission(in);
         if (k % 2 == 1)
-            spec.forbidden.coastline = kJamaica;
+            spec.forbidden.coastline = kJamaicaCoast;
         spec.planner.globalCheck = false;
         spec.outputs.files = {OutputFormatId::Summary, OutputFormatId::Csv, OutputFormatId::GeoJson,
                               OutputFormatId::Path};

@@ -39,7 +39,7 @@ fleet:
 outputs: {directory: out, files: [csv, summary]}
 )";
 
-std::string errorOf(const std::string &text)
+std::string fleetErrorOf(const std::string &text)
 {
     try
     {
@@ -100,20 +100,20 @@ TEST(Fleet, ReadWithEachGlidersOwnValuesAndPlaces)
 TEST(Fleet, BadEntriesNameTheirLine)
 {
     const std::string head = kFleet.substr(0, kFleet.find("fleet:"));
-    EXPECT_NE(errorOf(head + "fleet:\n  - {name: a, start: {x: 1, y: 0}}\n").find("m.yaml:8: field 'fleet[0].goal': missing"),
+    EXPECT_NE(fleetErrorOf(head + "fleet:\n  - {name: a, start: {x: 1, y: 0}}\n").find("m.yaml:8: field 'fleet[0].goal': missing"),
               std::string::npos);
-    EXPECT_NE(errorOf(head + "fleet:\n  - {name: a, start: {x: 1, y: 0}, goal: {x: 2, y: 0}}\n"
+    EXPECT_NE(fleetErrorOf(head + "fleet:\n  - {name: a, start: {x: 1, y: 0}, goal: {x: 2, y: 0}}\n"
                              "  - {name: a, start: {x: 1, y: 1}, goal: {x: 2, y: 1}}\n")
                   .find("m.yaml:9: field 'fleet[1].name': 'a' names another glider"),
               std::string::npos);
-    EXPECT_NE(errorOf(head + "fleet:\n  - {name: ../x, start: {x: 1, y: 0}, goal: {x: 2, y: 0}}\n")
+    EXPECT_NE(fleetErrorOf(head + "fleet:\n  - {name: ../x, start: {x: 1, y: 0}, goal: {x: 2, y: 0}}\n")
                   .find("field 'fleet[0].name': '../x' is not a folder name"),
               std::string::npos);
-    EXPECT_NE(errorOf(head + "fleet:\n  - {name: a, start: {x: 11, y: 0}, goal: {x: 2, y: 0}}\n")
+    EXPECT_NE(fleetErrorOf(head + "fleet:\n  - {name: a, start: {x: 11, y: 0}, goal: {x: 2, y: 0}}\n")
                   .find("m.yaml:8: field 'fleet[0].start': lies outside the region"),
               std::string::npos);
-    EXPECT_NE(errorOf(head + "fleet: []\n").find("field 'fleet': expected a list of gliders"), std::string::npos);
-    EXPECT_NE(errorOf(head + "fleet:\n  - {name: a, start: {x: 1, y: 0}, goal: {x: 2, y: 0}, colour: red}\n")
+    EXPECT_NE(fleetErrorOf(head + "fleet: []\n").find("field 'fleet': expected a list of gliders"), std::string::npos);
+    EXPECT_NE(fleetErrorOf(head + "fleet:\n  - {name: a, start: {x: 1, y: 0}, goal: {x: 2, y: 0}, colour: red}\n")
                   .find("colour"),
               std::string::npos);
 }
@@ -144,7 +144,7 @@ TEST(Fleet, AGlidersMissionDoesNotGrowWithTheFleet)
     std::string huge = head + "fleet:\n";
     for (std::size_t i = 0; i <= 50000; ++i)
         huge += "  - {name: g" + std::to_string(i) + ", start: {x: 1, y: 0}, goal: {x: 9, y: 0}}\n";
-    EXPECT_NE(errorOf(huge).find("field 'fleet': a fleet of 50001 gliders, more than the limit of 50000"),
+    EXPECT_NE(fleetErrorOf(huge).find("field 'fleet': a fleet of 50001 gliders, more than the limit of 50000"),
               std::string::npos);
 }
 

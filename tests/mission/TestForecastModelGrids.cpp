@@ -42,7 +42,7 @@ void expectClearOfLand(const MissionProblem &problem, const std::vector<TimedPoi
 /// four corners, column i + 1 taken modulo `columns` for a grid whose index wraps), at least `margin` of a cell
 /// from the cell's edges: the planner's cells have straight projected edges, the grid's follow its own formula.
 template <typename Land>
-bool inLandCell(double fi, double fj, Land land, std::size_t columns, double margin = 0.01)
+bool inModelLandCell(double fi, double fj, Land land, std::size_t columns, double margin = 0.01)
 {
     const std::size_t i = std::size_t(std::floor(fi)), j = std::size_t(std::floor(fj)), i1 = (i + 1) % columns;
     const bool corner = land(j, i) || land(j + 1, i) || land(j, i1) || land(j + 1, i1);
@@ -79,7 +79,7 @@ TEST(ForecastModelGrids, RouteAcrossTheIndexSeamOfAWrappingCurvilinearGridGoesRo
         double fi = std::fmod(lon + 40.0 - 0.2 * fj, 360.0) / 3.0;
         if (fi < 0)
             fi += 120.0;
-        return inLandCell(fi, fj, [&](std::size_t j, std::size_t i) { return grid.land(j, i); }, 120);
+        return inModelLandCell(fi, fj, [&](std::size_t j, std::size_t i) { return grid.land(j, i); }, 120);
     };
     expectClearOfLand(problem, r.plan.path, 200.0, bad);
     // the route went round the island: north of row 31 or south of row 29 somewhere
@@ -118,7 +118,7 @@ TEST(ForecastModelGrids, RouteOnARomsCGridGoesRoundItsMaskedIsland)
         const Point2 p = grid.proj.forward(lon, lat);
         const double a = (p.x * std::cos(grid.theta) + p.y * std::sin(grid.theta)) / grid.d + 0.5 * RomsGrid::kXi;
         const double b = (-p.x * std::sin(grid.theta) + p.y * std::cos(grid.theta)) / grid.d + 0.5 * RomsGrid::kEta;
-        return inLandCell(a, b, RomsGrid::land, RomsGrid::kXi);
+        return inModelLandCell(a, b, RomsGrid::land, RomsGrid::kXi);
     };
     expectClearOfLand(problem, r.plan.path, 200.0, bad);
 }

@@ -24,7 +24,7 @@ using json = nlohmann::json;
 namespace
 {
 // uniform current 0.1 along x, V = 0.5: the goal can be held (|c| < V), earliest arrival about 8 / 0.6
-const char *kUniform = R"(name: uniform_window
+const char *kUniformWindow = R"(name: uniform_window
 current: {type: uniform, parameters: {u: 0.1, v: 0.0}}
 region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}
 start: {x: 1, y: 0}
@@ -77,13 +77,13 @@ void expectValidPath(const MissionProblem &problem, const PlannedPath &p)
 
 TEST(GoalWindow, HoldAtTheGoal)
 {
-    const MissionProblem free(parseMission(kUniform, "m.yaml"));
+    const MissionProblem free(parseMission(kUniformWindow, "m.yaml"));
     const PlannedPath early = planRoute(free, 0.0);
     ASSERT_TRUE(early.solved);
     const double earliest = early.path.back().t;
     ASSERT_LT(earliest, 15.0);
 
-    const MissionProblem problem(withWindow(kUniform, 20.0, 25.0));
+    const MissionProblem problem(withWindow(kUniformWindow, 20.0, 25.0));
     const MissionResult r = runMission(problem);
     const PlannedPath &p = r.plan;
     ASSERT_TRUE(p.solved) << p.reason;
@@ -119,9 +119,9 @@ TEST(GoalWindow, HoldAtTheGoal)
 
 TEST(GoalWindow, ArrivalInsideTheWindowIsKept)
 {
-    const MissionProblem free(parseMission(kUniform, "m.yaml"));
+    const MissionProblem free(parseMission(kUniformWindow, "m.yaml"));
     const double earliest = planRoute(free, 0.0).path.back().t;
-    const MissionProblem problem(withWindow(kUniform, earliest - 1.0, earliest + 1.0));
+    const MissionProblem problem(withWindow(kUniformWindow, earliest - 1.0, earliest + 1.0));
     const PlannedPath p = planRoute(problem, 0.0);
     ASSERT_TRUE(p.solved);
     EXPECT_DOUBLE_EQ(p.path.back().t, earliest);
@@ -168,7 +168,7 @@ TEST(GoalWindow, TimingWhereTheGoalCannotBeHeld)
 TEST(GoalWindow, WindowThatCannotBeMet)
 {
     // the window closes before the earliest arrival: no path in the window, with the reason
-    const MissionProblem problem(withWindow(kUniform, 1.0, 2.0));
+    const MissionProblem problem(withWindow(kUniformWindow, 1.0, 2.0));
     const MissionResult r = runMission(problem);
     EXPECT_FALSE(r.plan.solved);
     EXPECT_EQ(r.plan.status, PlanStatus::NoPath);
@@ -179,18 +179,18 @@ TEST(GoalWindow, WindowThatCannotBeMet)
 
 TEST(GoalWindow, WindowOutsideTheHorizonIsBadInput)
 {
-    MissionSpec m = withWindow(kUniform, 100.0, 200.0);
+    MissionSpec m = withWindow(kUniformWindow, 100.0, 200.0);
     m.planner.horizon = 30.0;
     const MissionProblem problem(m);
     EXPECT_THROW(runMission(problem), Error);
-    MissionSpec before = withWindow(kUniform, 1.0, 2.0);
+    MissionSpec before = withWindow(kUniformWindow, 1.0, 2.0);
     before.departure.time = 5.0;
     EXPECT_THROW(runMission(MissionProblem(before)), Error);
 }
 
 TEST(GoalWindow, MissionFileAndTimes)
 {
-    const MissionSpec m = parseMission(std::string(kUniform).replace(std::string(kUniform).find("goal: {x: 9, y: 0}"),
+    const MissionSpec m = parseMission(std::string(kUniformWindow).replace(std::string(kUniformWindow).find("goal: {x: 9, y: 0}"),
                                                                      18, "goal: {x: 9, y: 0, window: {begin: 20, end: 25}}"),
                                        "m.yaml");
     EXPECT_TRUE(m.goalWindow.set);
@@ -201,20 +201,20 @@ TEST(GoalWindow, MissionFileAndTimes)
     EXPECT_EQ(gp.arriveNotBefore, 20.0);
     EXPECT_EQ(gp.arriveNotAfter, 25.0);
     // dates with an epoch, read as the departure's
-    MissionSpec dated = parseMission(std::string(kUniform) + "units: {length_m: 1000, time_s: 3600}\n"
+    MissionSpec dated = parseMission(std::string(kUniformWindow) + "units: {length_m: 1000, time_s: 3600}\n"
                                                              "epoch: \"2026-01-01T00:00:00Z\"\n",
                                      "m.yaml");
     EXPECT_DOUBLE_EQ(dated.timeOf("2026-01-02T00:00:00Z"), 24.0);
     EXPECT_DOUBLE_EQ(dated.timeOf("7.5"), 7.5);
     EXPECT_THROW(dated.timeOf("soon"), Error);
-    EXPECT_THROW(parseMission(kUniform, "m.yaml").timeOf("2026-01-02"), Error);
+    EXPECT_THROW(parseMission(kUniformWindow, "m.yaml").timeOf("2026-01-02"), Error);
 }
 
 TEST(GoalWindow, DepartureSearchCountsTheHold)
 {
     // with a departure window, the arrival is the window's begin whatever the departure: the search prefers the
     // latest departure that still arrives by then (the least travel time, holding included)
-    MissionSpec m = withWindow(kUniform, 30.0, 31.0);
+    MissionSpec m = withWindow(kUniformWindow, 30.0, 31.0);
     m.departure.window = true;
     m.departure.begin = 0.0;
     m.departure.end = 10.0;

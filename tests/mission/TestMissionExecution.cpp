@@ -23,7 +23,7 @@ using namespace glider_test;
 namespace
 {
 // Uniform current along +x, goal straight downstream: every strategy flies the x axis, in closed form.
-const std::string kUniform = R"(name: uniform
+const std::string kUniformExecution = R"(name: uniform
 units: {length_m: 1000, time_s: 3600}
 current: {type: uniform, parameters: {u: 0.1, v: 0.0}}
 region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}
@@ -33,7 +33,7 @@ vehicle: {speed: 0.5}
 planner: {name: zastartve, grid_size: 0.5}
 )";
 
-std::string messageOf(const std::string &yaml)
+std::string executionMessageOf(const std::string &yaml)
 {
     try
     {
@@ -57,7 +57,7 @@ const FlownTrack &flown(const ExecutionResult &e, std::size_t run, ControlStrate
 
 TEST(MissionExecution, SectionIsReadWithUnitsAndDefaults)
 {
-    const MissionSpec m = parseMission(kUniform + R"(execution:
+    const MissionSpec m = parseMission(kUniformExecution + R"(execution:
   truth: {type: uniform, parameters: {u: 0.2, v: 0.0}}
   surfacing_interval: 30 min
   strategies: [greedy, current_sensitive]
@@ -80,12 +80,12 @@ TEST(MissionExecution, SectionIsReadWithUnitsAndDefaults)
     EXPECT_DOUBLE_EQ(e.minDistance, 2.0);
     EXPECT_EQ(e.threads, 2u);
 
-    const MissionSpec d = parseMission(kUniform + "execution: {truth: forecast}\n", "m.yaml");
+    const MissionSpec d = parseMission(kUniformExecution + "execution: {truth: forecast}\n", "m.yaml");
     EXPECT_TRUE(d.execution.enabled);
     EXPECT_FALSE(d.execution.truth.has_value());
     EXPECT_EQ(d.execution.strategies.size(), 4u);
     EXPECT_TRUE(std::isnan(d.execution.surfacingInterval));  // one hour, resolved when flying
-    EXPECT_FALSE(parseMission(kUniform, "m.yaml").execution.enabled);
+    EXPECT_FALSE(parseMission(kUniformExecution, "m.yaml").execution.enabled);
 }
 
 TEST(MissionExecution, BadSectionsNameFileLineAndField)
@@ -101,28 +101,28 @@ goal: {x: 9, y: 0}
         std::string yaml, phrase;
     };
     const Case cases[] = {
-        {kUniform + "execution: {surfacing: 1}\n", "m.yaml:9: unknown field 'execution.surfacing'"},
-        {kUniform + "execution: {strategies: [current_sensitive, zigzag]}\n",
+        {kUniformExecution + "execution: {surfacing: 1}\n", "m.yaml:9: unknown field 'execution.surfacing'"},
+        {kUniformExecution + "execution: {strategies: [current_sensitive, zigzag]}\n",
          "m.yaml:9: field 'execution.strategies[1]'"},
-        {kUniform + "execution: {strategies: [greedy, greedy]}\n", "listed twice"},
-        {kUniform + "execution: {strategies: []}\n", "field 'execution.strategies'"},
-        {kUniform + "execution: {surfacing_interval: -1}\n", "field 'execution.surfacing_interval'"},
-        {kUniform + "execution: {surfacing_interval: 1 fortnight}\n", "field 'execution.surfacing_interval'"},
-        {kUniform + "execution: {surfacing_interval: nan}\n", "field 'execution.surfacing_interval'"},
+        {kUniformExecution + "execution: {strategies: [greedy, greedy]}\n", "listed twice"},
+        {kUniformExecution + "execution: {strategies: []}\n", "field 'execution.strategies'"},
+        {kUniformExecution + "execution: {surfacing_interval: -1}\n", "field 'execution.surfacing_interval'"},
+        {kUniformExecution + "execution: {surfacing_interval: 1 fortnight}\n", "field 'execution.surfacing_interval'"},
+        {kUniformExecution + "execution: {surfacing_interval: nan}\n", "field 'execution.surfacing_interval'"},
         {noUnits + "execution: {surfacing_interval: 1 h}\n", "needs the mission's time unit"},
-        {kUniform + "execution: {radius: 0}\n", "field 'execution.radius'"},
-        {kUniform + "execution: {replan_every: 0}\n", "field 'execution.replan_every'"},
-        {kUniform + "execution: {truth: {type: netcdf, file: x.nc}}\n", "field 'execution.truth"},
-        {kUniform + "execution: {truth: {type: vortex}}\n", "field 'execution.truth.type'"},
-        {kUniform + "execution: {truth: {type: uniform, parameters: {w: 1}}}\n",
+        {kUniformExecution + "execution: {radius: 0}\n", "field 'execution.radius'"},
+        {kUniformExecution + "execution: {replan_every: 0}\n", "field 'execution.replan_every'"},
+        {kUniformExecution + "execution: {truth: {type: netcdf, file: x.nc}}\n", "field 'execution.truth"},
+        {kUniformExecution + "execution: {truth: {type: vortex}}\n", "field 'execution.truth.type'"},
+        {kUniformExecution + "execution: {truth: {type: uniform, parameters: {w: 1}}}\n",
          "field 'execution.truth.parameters.w'"},
-        {kUniform + "execution: {truth: nowcast}\n", "field 'execution.truth'"},
-        {kUniform + "execution: {batch: {pairs: -3}}\n", "field 'execution.batch.pairs'"},
-        {kUniform + "execution: {batch: {size: 3}}\n", "field 'execution.batch.size'"},
+        {kUniformExecution + "execution: {truth: nowcast}\n", "field 'execution.truth'"},
+        {kUniformExecution + "execution: {batch: {pairs: -3}}\n", "field 'execution.batch.pairs'"},
+        {kUniformExecution + "execution: {batch: {size: 3}}\n", "field 'execution.batch.size'"},
     };
     for (const Case &c : cases)
     {
-        const std::string msg = messageOf(c.yaml);
+        const std::string msg = executionMessageOf(c.yaml);
         EXPECT_NE(msg.find(c.phrase), std::string::npos) << c.yaml << "\n-> " << msg;
     }
 }
@@ -148,7 +148,7 @@ TEST(MissionExecution, ShiftedTimeFieldReadsTheInnerFieldAtTheShiftedTime)
 // planned arrival d / (V + 0.1); the run ends there, within R of the goal.
 TEST(MissionExecution, UniformTruthArrivesAtTheClosedFormTime)
 {
-    const MissionSpec spec = parseMission(kUniform + R"(execution:
+    const MissionSpec spec = parseMission(kUniformExecution + R"(execution:
   truth: {type: uniform, parameters: {u: 0.3, v: 0.0}}
   surfacing_interval: 15 min
   strategies: [current_sensitive, current_blind, greedy, replan]
@@ -267,7 +267,7 @@ TEST(MissionExecution, MeasureSpreadQuartiles)
 TEST(MissionExecution, OutputFilesAndSummarySection)
 {
     TempDir dir;
-    MissionSpec spec = parseMission(kUniform + R"(execution:
+    MissionSpec spec = parseMission(kUniformExecution + R"(execution:
   truth: {type: uniform, parameters: {u: 0.3, v: 0.0}}
   surfacing_interval: 1 h
   strategies: [current_sensitive, greedy]
@@ -515,7 +515,7 @@ TEST(MissionEnsemble, ObjectivesAndBadSections)
     };
     for (const Case &c : cases)
     {
-        const std::string msg = messageOf(c.yaml);
+        const std::string msg = executionMessageOf(c.yaml);
         EXPECT_NE(msg.find(c.phrase), std::string::npos) << c.yaml << "\n-> " << msg;
     }
 }

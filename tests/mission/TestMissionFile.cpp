@@ -12,7 +12,7 @@ using namespace ompl_glider;
 
 namespace
 {
-const std::string kExamples = std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/";
+const std::string kMissionExamples = std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/";
 
 const std::string kBase = R"(name: t
 current:
@@ -24,7 +24,7 @@ goal: {x: 9, y: 0}
 )";
 
 /// The error message of parsing @p text, or "" when it parses.
-std::string errorOf(const std::string &text)
+std::string missionFileErrorOf(const std::string &text)
 {
     try
     {
@@ -54,7 +54,7 @@ TEST(Time, IsoDatesRoundTripWithOffsets)
 
 TEST(MissionFile, ExamplesLoad)
 {
-    const MissionSpec g = loadMission(kExamples + "gulf_stream_window.yaml");
+    const MissionSpec g = loadMission(kMissionExamples + "gulf_stream_window.yaml");
     EXPECT_EQ(g.current.type, "meandering_jet");
     EXPECT_DOUBLE_EQ(g.current.parameters.at("omega"), 0.4);
     EXPECT_TRUE(g.departure.window);
@@ -69,7 +69,7 @@ TEST(MissionFile, ExamplesLoad)
     EXPECT_EQ(g.speeds, (std::vector<double>{0.4, 0.5, 0.6}));
     EXPECT_DOUBLE_EQ(g.vehicle.speed, 0.5);
 
-    const MissionSpec i = loadMission(kExamples + "islands_ice.yaml");
+    const MissionSpec i = loadMission(kMissionExamples + "islands_ice.yaml");
     ASSERT_EQ(i.forbidden.obstacles.size(), 2u);
     EXPECT_EQ(i.forbidden.obstacles[0].polygon.name, "North Island");
     EXPECT_EQ(i.forbidden.obstacles[0].polygon.points.size(), 5u);
@@ -81,9 +81,9 @@ TEST(MissionFile, ExamplesLoad)
     EXPECT_TRUE(i.dive.enabled);
     EXPECT_EQ(makeDiveProfiles(i.dive.params).size(), 5u);  // (5,105) (5,152.5) (5,200) (30,152.5) (30,200)
 
-    const MissionSpec l = loadMission(kExamples + "labrador_forecast.yaml");
+    const MissionSpec l = loadMission(kMissionExamples + "labrador_forecast.yaml");
     EXPECT_EQ(l.current.type, "netcdf");
-    EXPECT_EQ(l.current.file, kExamples + "labrador_forecast.nc");
+    EXPECT_EQ(l.current.file, kMissionExamples + "labrador_forecast.nc");
     EXPECT_EQ(l.current.xyInterpolation, Interp2D::Bicubic);
     EXPECT_EQ(l.current.timeInterpolation, Interp1D::Akima);
     ASSERT_TRUE(l.fileCalendar.has_value());
@@ -111,60 +111,60 @@ TEST(MissionFile, MinimalMissionAndDefaults)
 
 TEST(MissionFile, UnknownFieldsAreRejectedWithTheirLine)
 {
-    std::string msg = errorOf(kBase + "vehicel:\n  speed: 0.3\n");
+    std::string msg = missionFileErrorOf(kBase + "vehicel:\n  speed: 0.3\n");
     EXPECT_HAS(msg, "m.yaml:8:");
     EXPECT_HAS(msg, "unknown field 'vehicel'");
-    msg = errorOf(kBase + "planner:\n  name: zastartve\n  grid_sise: 0.2\n");
+    msg = missionFileErrorOf(kBase + "planner:\n  name: zastartve\n  grid_sise: 0.2\n");
     EXPECT_HAS(msg, "m.yaml:10:");
     EXPECT_HAS(msg, "unknown field 'planner.grid_sise'");
     EXPECT_HAS(msg, "grid_size");  // the allowed names are listed
-    msg = errorOf(kBase + "departure:\n  window: {begin: 0, end: 5, spacin: 1}\n");
+    msg = missionFileErrorOf(kBase + "departure:\n  window: {begin: 0, end: 5, spacin: 1}\n");
     EXPECT_HAS(msg, "m.yaml:9:");
     EXPECT_HAS(msg, "departure.window.spacin");
-    msg = errorOf(kBase + "vehicle:\n  speed: 0.3\n  speed: 0.4\n");
+    msg = missionFileErrorOf(kBase + "vehicle:\n  speed: 0.3\n  speed: 0.4\n");
     EXPECT_HAS(msg, "m.yaml:10:");
     EXPECT_HAS(msg, "'vehicle.speed' is given twice");
-    msg = errorOf(std::string(kBase).replace(kBase.find("{u: 0.1"), 1, "{w: 1, "));
+    msg = missionFileErrorOf(std::string(kBase).replace(kBase.find("{u: 0.1"), 1, "{w: 1, "));
     EXPECT_HAS(msg, "m.yaml:4:");
     EXPECT_HAS(msg, "current.parameters.w");
 }
 
 TEST(MissionFile, WrongTypesAndValuesNameTheFieldAndLine)
 {
-    std::string msg = errorOf(kBase + "vehicle:\n  speed: fast\n");
+    std::string msg = missionFileErrorOf(kBase + "vehicle:\n  speed: fast\n");
     EXPECT_HAS(msg, "m.yaml:9:");
     EXPECT_HAS(msg, "field 'vehicle.speed'");
     EXPECT_HAS(msg, "expected a number");
-    msg = errorOf(kBase + "vehicle:\n  speed: -0.3\n");
+    msg = missionFileErrorOf(kBase + "vehicle:\n  speed: -0.3\n");
     EXPECT_HAS(msg, "m.yaml:9:");
     EXPECT_HAS(msg, "> 0");
-    msg = errorOf(kBase + "planner: {sectors: 9}\n");
+    msg = missionFileErrorOf(kBase + "planner: {sectors: 9}\n");
     EXPECT_HAS(msg, "m.yaml:8:");
     EXPECT_HAS(msg, "planner.sectors");
     EXPECT_HAS(msg, "1..5");
-    msg = errorOf(kBase + "planner: {name: dijkstra}\n");
+    msg = missionFileErrorOf(kBase + "planner: {name: dijkstra}\n");
     EXPECT_HAS(msg, "planner.name");
     EXPECT_HAS(msg, "ZA*TVE");
-    msg = errorOf(kBase + "outputs: {files: [csv, kml]}\n");
+    msg = missionFileErrorOf(kBase + "outputs: {files: [csv, kml]}\n");
     EXPECT_HAS(msg, "outputs.files[1]");
-    msg = errorOf(kBase + "outputs: {files: [goto]}\n");
+    msg = missionFileErrorOf(kBase + "outputs: {files: [goto]}\n");
     EXPECT_HAS(msg, "projection");
-    msg = errorOf(kBase + "dive_profile: {z_min: 10, z_max: 5}\n");
+    msg = missionFileErrorOf(kBase + "dive_profile: {z_min: 10, z_max: 5}\n");
     EXPECT_HAS(msg, "m.yaml:8:");
     EXPECT_HAS(msg, "dive_profile");
     EXPECT_HAS(msg, "z_max");
-    msg = errorOf(kBase + "departure: {time: \"2026-01-01T00:00:00Z\"}\n");
+    msg = missionFileErrorOf(kBase + "departure: {time: \"2026-01-01T00:00:00Z\"}\n");
     EXPECT_HAS(msg, "departure.time");
     EXPECT_HAS(msg, "epoch");
-    msg = errorOf(kBase + "departure:\n  window: {begin: 5, end: 1}\n");
+    msg = missionFileErrorOf(kBase + "departure:\n  window: {begin: 5, end: 1}\n");
     EXPECT_HAS(msg, "m.yaml:9:");
     EXPECT_HAS(msg, "departure.window.end");
-    msg = errorOf(kBase + "forbidden:\n  obstacles:\n    - name: A\n      points: [[1, 1], [2, 1]]\n");
+    msg = missionFileErrorOf(kBase + "forbidden:\n  obstacles:\n    - name: A\n      points: [[1, 1], [2, 1]]\n");
     EXPECT_HAS(msg, "m.yaml:11:");
     EXPECT_HAS(msg, "forbidden.obstacles[0].points");
-    msg = errorOf(kBase + "forbidden:\n  ice:\n    - points: [[1, 1], [2, 1], [2, 2]]\n");
+    msg = missionFileErrorOf(kBase + "forbidden:\n  ice:\n    - points: [[1, 1], [2, 1], [2, 2]]\n");
     EXPECT_HAS(msg, "forbidden.ice[0].max_submerged_time");
-    msg = errorOf(kBase + "planner: {goal_tolerance: .inf}\n");
+    msg = missionFileErrorOf(kBase + "planner: {goal_tolerance: .inf}\n");
     EXPECT_HAS(msg, "m.yaml:8:");
     EXPECT_HAS(msg, "planner.goal_tolerance");
     EXPECT_HAS(msg, "finite");
@@ -172,23 +172,23 @@ TEST(MissionFile, WrongTypesAndValuesNameTheFieldAndLine)
 
 TEST(MissionFile, MissingRequiredFieldsAndSyntaxErrors)
 {
-    std::string msg = errorOf("current: {type: uniform}\nregion: {x_min: 0, x_max: 1, y_min: 0, y_max: 1}\n"
+    std::string msg = missionFileErrorOf("current: {type: uniform}\nregion: {x_min: 0, x_max: 1, y_min: 0, y_max: 1}\n"
                               "goal: {x: 1, y: 1}\n");
     EXPECT_HAS(msg, "field 'start'");
     EXPECT_HAS(msg, "missing");
-    msg = errorOf("current: {type: uniform}\nstart: {x: 0, y: 0}\ngoal: {x: 1, y: 1}\n");
+    msg = missionFileErrorOf("current: {type: uniform}\nstart: {x: 0, y: 0}\ngoal: {x: 1, y: 1}\n");
     EXPECT_HAS(msg, "field 'region'");
-    msg = errorOf("current: {type: uniform}\nregion: {x_min: 0, x_max: 1, y_min: 0, y_max: 1}\n"
+    msg = missionFileErrorOf("current: {type: uniform}\nregion: {x_min: 0, x_max: 1, y_min: 0, y_max: 1}\n"
                   "start: {lon: -50, lat: 40}\ngoal: {x: 1, y: 1}\n");
     EXPECT_HAS(msg, "m.yaml:3:");
     EXPECT_HAS(msg, "projection");
-    msg = errorOf(kBase + "goal: {x: 1\n");
+    msg = missionFileErrorOf(kBase + "goal: {x: 1\n");
     EXPECT_HAS(msg, "YAML syntax error");
-    msg = errorOf(std::string(kBase).replace(kBase.find("x: 9"), 4, "x: 19"));
+    msg = missionFileErrorOf(std::string(kBase).replace(kBase.find("x: 9"), 4, "x: 19"));
     EXPECT_HAS(msg, "m.yaml:7:");
     EXPECT_HAS(msg, "outside the region");
     EXPECT_THROW(loadMission("/nonexistent/mission.yaml"), Error);
-    msg = errorOf("current: {type: netcdf, file: /nonexistent.nc}\nstart: {x: 0, y: 0}\ngoal: {x: 1, y: 1}\n");
+    msg = missionFileErrorOf("current: {type: netcdf, file: /nonexistent.nc}\nstart: {x: 0, y: 0}\ngoal: {x: 1, y: 1}\n");
     EXPECT_HAS(msg, "current.file");
     EXPECT_HAS(msg, "/nonexistent.nc");
 }
@@ -211,22 +211,22 @@ TEST(MissionFile, GeographicRegionsInEitherConvention)
     EXPECT_EQ(g.lonLat.lonMin, -10.0);
     EXPECT_EQ(g.lonLat.lonMax, 10.0);
     // bad bounds name the bound and its line
-    std::string msg = errorOf(geo + "region:\n  lon_min: 170\n  lon_max: -170\n  lat_min: -5\n  lat_max: 95\n");
+    std::string msg = missionFileErrorOf(geo + "region:\n  lon_min: 170\n  lon_max: -170\n  lat_min: -5\n  lat_max: 95\n");
     EXPECT_HAS(msg, "m.yaml:9:");
     EXPECT_HAS(msg, "field 'region.lat_max'");
     EXPECT_HAS(msg, "95");
-    msg = errorOf(geo + "region: {lon_min: -190, lon_max: -170, lat_min: -5, lat_max: 5}\n");
+    msg = missionFileErrorOf(geo + "region: {lon_min: -190, lon_max: -170, lat_min: -5, lat_max: 5}\n");
     EXPECT_HAS(msg, "field 'region.lon_min'");
     EXPECT_HAS(msg, "-180..180 or 0..360");
-    msg = errorOf(geo + "region: {lon_min: -180, lon_max: 180, lat_min: -5, lat_max: 5}\n");
+    msg = missionFileErrorOf(geo + "region: {lon_min: -180, lon_max: 180, lat_min: -5, lat_max: 5}\n");
     EXPECT_HAS(msg, "field 'region.lon_max'");
     EXPECT_HAS(msg, "less than 360");
-    msg = errorOf(geo + "region: {lon_min: 10, lon_max: 10, lat_min: -5, lat_max: 5}\n");
+    msg = missionFileErrorOf(geo + "region: {lon_min: 10, lon_max: 10, lat_min: -5, lat_max: 5}\n");
     EXPECT_HAS(msg, "field 'region.lon_max'");
-    msg = errorOf(geo + "region: {lon_min: 10, lon_max: 20, lat_min: 5, lat_max: -5}\n");
+    msg = missionFileErrorOf(geo + "region: {lon_min: 10, lon_max: 20, lat_min: 5, lat_max: -5}\n");
     EXPECT_HAS(msg, "field 'region.lat_max'");
     // start and goal longitudes in either convention, nothing else
-    msg = errorOf("current: {type: uniform}\nprojection: {lon0: 180, lat0: 0}\n"
+    msg = missionFileErrorOf("current: {type: uniform}\nprojection: {lon0: 180, lat0: 0}\n"
                   "start: {lon: 400, lat: 0}\ngoal: {lon: 185, lat: 1}\n"
                   "region: {lon_min: 170, lon_max: -170, lat_min: -5, lat_max: 5}\n");
     EXPECT_HAS(msg, "m.yaml:3:");
@@ -259,13 +259,13 @@ TEST(MissionFile, GeoJsonForbiddenRegions)
     ASSERT_EQ(m.forbidden.ice.size(), 1u);
     EXPECT_DOUBLE_EQ(m.forbidden.ice[0].maxSubmergedTime, 2.0);
     // Geographic (default) coordinates need a projection.
-    EXPECT_HAS(errorOf(kBase + "forbidden:\n  geojson: " + dir + "mission_regions.geojson\n"), "projection");
+    EXPECT_HAS(missionFileErrorOf(kBase + "forbidden:\n  geojson: " + dir + "mission_regions.geojson\n"), "projection");
     {
         std::ofstream f(dir + "mission_bad.geojson");
         f << "{\"type\": \"FeatureCollection\", \"features\": [\n {\"type\": \"Feature\", \"properties\": "
              "{\"nmae\": \"x\"},\n  \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[[0,0],[1,0],[1,1]]]}}]}\n";
     }
-    const std::string msg = errorOf(kBase + "forbidden:\n  geojson: " + dir + "mission_bad.geojson\n  geojson_coordinates: local\n");
+    const std::string msg = missionFileErrorOf(kBase + "forbidden:\n  geojson: " + dir + "mission_bad.geojson\n  geojson_coordinates: local\n");
     EXPECT_HAS(msg, "mission_bad.geojson:2:");
     EXPECT_HAS(msg, "features[0].properties.nmae");
 }

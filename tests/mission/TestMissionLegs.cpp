@@ -44,7 +44,7 @@ MissionSpec mission(const std::string &current, const std::string &region, Point
     return parseMission(y + extra);
 }
 
-const char *kJet = "{type: meandering_jet}";
+const char *kJetCurrent = "{type: meandering_jet}";
 
 /// @p run must throw an Error whose message holds @p what (@p input names the case).
 void expectRefused(const std::function<void()> &run, const std::string &what, const std::string &input)
@@ -69,7 +69,7 @@ TEST(MissionLegs, ChainOfLegsIsTheMissionAndFliesAsPlanned)
 {
     const std::vector<Point2> via{{3.0, -2.5}, {5.5, -1.5}};
     const std::string grid = "planner: {grid_size: 0.4}\n";
-    const MissionSpec m = mission(kJet, kJetRegion, {1, -3}, {8, 3}, via, grid);
+    const MissionSpec m = mission(kJetCurrent, kJetRegion, {1, -3}, {8, 3}, via, grid);
     const MissionProblem problem(m);
     const MissionResult r = runMission(problem);
     ASSERT_TRUE(r.plan.solved) << r.plan.reason;
@@ -78,7 +78,7 @@ TEST(MissionLegs, ChainOfLegsIsTheMissionAndFliesAsPlanned)
     double t = 0.0;
     for (std::size_t k = 0; k < 3; ++k)
     {
-        MissionSpec leg = mission(kJet, kJetRegion, stops[k], stops[k + 1], {}, grid);
+        MissionSpec leg = mission(kJetCurrent, kJetRegion, stops[k], stops[k + 1], {}, grid);
         leg.departure.time = t;
         const MissionResult one = runMission(MissionProblem(leg));
         ASSERT_TRUE(one.plan.solved) << "leg " << k + 1 << ": " << one.plan.reason;
@@ -169,7 +169,7 @@ void checkFreeOrder(const std::string &current, const std::string &region, Box b
 // Branch and bound over orders returns the fastest of all n! orders, each planned by the same pipeline.
 TEST(MissionLegsFreeOrder, BestOfAllOrdersOnTheJetAndTheDoubleGyre)
 {
-    checkFreeOrder(kJet, kJetRegion, Box{0, 10, -4, 4}, 4, 7);
+    checkFreeOrder(kJetCurrent, kJetRegion, Box{0, 10, -4, 4}, 4, 7);
     checkFreeOrder("{type: double_gyre}", "{x_min: 0, x_max: 2, y_min: 0, y_max: 1}", Box{0, 2, 0, 1}, 4, 11);
 }
 
@@ -177,7 +177,7 @@ TEST(MissionLegsFreeOrder, BestOfAllOrdersOnTheJetAndTheDoubleGyre)
 TEST(MissionLegsFreeOrder, BoundIsBelowThePlannedTime)
 {
     MissionSpec m =
-        mission(kJet, kJetRegion, {1, -3}, {8, 3}, {{3, 2}, {6, -2}, {5, 0.5}}, "planner: {grid_size: 0.4}\n");
+        mission(kJetCurrent, kJetRegion, {1, -3}, {8, 3}, {{3, 2}, {6, -2}, {5, 0.5}}, "planner: {grid_size: 0.4}\n");
     const MissionProblem problem(m);
     const MissionPlan plan = planMission(problem, 0.0);
     ASSERT_TRUE(plan.plan.solved);
@@ -352,10 +352,10 @@ TEST(MissionLegs, AWindowWithOneEndOnlyIsKept)
 TEST(MissionLegs, ViaPointNamesAreComparedWithoutCase)
 {
     for (const char *name : {"GOAL", "Goal", "START"})
-        expectRefused([&] { mission(kJet, kJetRegion, {1, -3}, {8, 3}, {}, "waypoints:\n  - {name: " +
+        expectRefused([&] { mission(kJetCurrent, kJetRegion, {1, -3}, {8, 3}, {}, "waypoints:\n  - {name: " +
                                                                                 std::string(name) + ", x: 3, y: 2}\n"); },
                       "names the mission's", name);
-    expectRefused([&] { mission(kJet, kJetRegion, {1, -3}, {8, 3}, {},
+    expectRefused([&] { mission(kJetCurrent, kJetRegion, {1, -3}, {8, 3}, {},
                                 "waypoints:\n  - {name: A1, x: 3, y: 2}\n  - {name: a1, x: 5, y: 0}\n"); },
                   "names another via point", "A1 and a1");
 }
@@ -388,7 +388,7 @@ TEST(MissionLegsFreeOrder, BestOfAllOrdersWithStaysAndWindows)
 // given order's plan stands, and the search says it was not finished.
 TEST(MissionLegsFreeOrder, AStopRequestEndsTheSearchWithTheBestSoFar)
 {
-    MissionSpec m = mission(kJet, kJetRegion, {1, -3}, {8, 3}, {{3, 2}, {6, -2}, {5, 0.5}, {2, 0}},
+    MissionSpec m = mission(kJetCurrent, kJetRegion, {1, -3}, {8, 3}, {{3, 2}, {6, -2}, {5, 0.5}, {2, 0}},
                             "planner: {grid_size: 0.8, global_check: false, refinement: false, smoothing: false}\n");
     m.order = VisitOrder::Free;
     const MissionProblem problem(m);

@@ -58,7 +58,7 @@ std::string readFile(const std::string &path)
     return s.str();
 }
 
-json readJson(const std::string &path)
+json readJsonFile(const std::string &path)
 {
     std::ifstream in(path);
     EXPECT_TRUE(in.good()) << path;
@@ -135,7 +135,7 @@ TEST(MissionRun, UniformCurrentClosedFormAndOutputsRoundTrip)
     EXPECT_EQ(rows[2][11], "50");
 
     // GeoJSON: local coordinates.
-    const json g = readJson(spec.outputs.directory + "/path.geojson");
+    const json g = readJsonFile(spec.outputs.directory + "/path.geojson");
     EXPECT_EQ(g["type"], "FeatureCollection");
     EXPECT_EQ(g["coordinates"], "local");
     const std::size_t n = r.waypoints.size();
@@ -155,7 +155,7 @@ TEST(MissionRun, UniformCurrentClosedFormAndOutputsRoundTrip)
     EXPECT_NEAR(g["features"][n]["properties"]["time"].get<double>(), 8.0 / 0.6, 1e-8);
 
     // Summary.
-    const json s = readJson(spec.outputs.directory + "/summary.json");
+    const json s = readJsonFile(spec.outputs.directory + "/summary.json");
     EXPECT_EQ(s["schema"], kSummarySchema);
     EXPECT_EQ(s["solved"], true);
     EXPECT_NEAR(s["travel_time"].get<double>(), 8.0 / 0.6, 1e-8);
@@ -221,7 +221,7 @@ TEST(MissionRun, GeographicOutputsGotoAndIsoTimes)
         EXPECT_LE(std::abs(back.waypoints[i].lon - r.waypoints[i + 1].lonLat.lon) * 60, 0.5e-4 + 1e-9);
         EXPECT_LE(std::abs(back.waypoints[i].lat - r.waypoints[i + 1].lonLat.lat) * 60, 0.5e-4 + 1e-9);
     }
-    const json g = readJson(spec.outputs.directory + "/path.geojson");
+    const json g = readJsonFile(spec.outputs.directory + "/path.geojson");
     EXPECT_FALSE(g.contains("coordinates"));  // RFC 7946 lon/lat
     const json &c = g["features"][0]["geometry"]["coordinates"];
     EXPECT_NEAR(c[0][0].get<double>(), r.waypoints[0].lonLat.lon, 1e-8);
@@ -229,7 +229,7 @@ TEST(MissionRun, GeographicOutputsGotoAndIsoTimes)
     EXPECT_EQ(g["features"][r.waypoints.size()]["properties"]["time_iso"], "2026-01-01T13:20:00Z");
     EXPECT_NEAR(g["features"][r.waypoints.size()]["properties"]["time_s"].get<double>(), 8.0 / 0.6 * 3600.0, 1e-5);
     // The summary's start / goal / departure / arrival carry lon/lat and ISO times.
-    const json s = readJson(spec.outputs.directory + "/summary.json");
+    const json s = readJsonFile(spec.outputs.directory + "/summary.json");
     EXPECT_NEAR(s["start"]["lon"].get<double>(), r.waypoints.front().lonLat.lon, 1e-12);
     EXPECT_NEAR(s["goal"]["lat"].get<double>(), r.waypoints.back().lonLat.lat, 1e-12);
     EXPECT_EQ(s["departure"]["iso"], "2026-01-01T00:00:00Z");
@@ -278,7 +278,7 @@ TEST(MissionRun, AcrossTheAntimeridianInEitherConvention)
                     EXPECT_GE(std::stod(row[3]), -180.0) << csv;
                     EXPECT_LE(std::stod(row[3]), 180.0) << csv;
                 }
-            const json g = readJson(dir + "/path.geojson");
+            const json g = readJsonFile(dir + "/path.geojson");
             const json &geometry = g["features"][0]["geometry"];
             ASSERT_EQ(geometry["type"], "MultiLineString");
             ASSERT_EQ(geometry["coordinates"].size(), 2u);
@@ -288,7 +288,7 @@ TEST(MissionRun, AcrossTheAntimeridianInEitherConvention)
             EXPECT_EQ(east[0][0].get<double>(), -180.0);      // ... and on from the other side
             EXPECT_NEAR(west.back()[1].get<double>(), 0.0, 1e-6);
             EXPECT_NEAR(east.back()[0].get<double>(), -175.0, 1e-9);
-            const json s = readJson(dir + "/summary.json");
+            const json s = readJsonFile(dir + "/summary.json");
             EXPECT_NEAR(s["goal"]["lon"].get<double>(), -175.0, 1e-9);
             // the goto list: 175W is -17500.0000 (never 18500.0000)
             const std::string gotoText = readFile(dir + "/goto_l10.ma");
@@ -617,7 +617,7 @@ TEST(MissionRun, BadMissionNamesFileLineAndFieldAndGoodOneReports)
     for (const auto &f : files)
         gotoWritten = gotoWritten || fs::path(f).filename().string() == "goto_l12.ma";
     EXPECT_TRUE(gotoWritten);
-    const json s = readJson(spec.outputs.directory + "/summary.json");
+    const json s = readJsonFile(spec.outputs.directory + "/summary.json");
     ASSERT_EQ(s["speed_sweep"].size(), 2u);
     EXPECT_EQ(s["speed_sweep"][0]["speed"].get<double>(), 0.4);
     EXPECT_EQ(s["speed_sweep"][0]["travel_time"].get<double>(), r.speedSweep[0].travelTime);

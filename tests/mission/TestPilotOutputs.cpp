@@ -157,7 +157,7 @@ fs::path climatology(const fs::path &dir, const std::string &calendar)
     return p;
 }
 
-std::string readText(const fs::path &p)
+std::string readPilotText(const fs::path &p)
 {
     std::ifstream in(p);
     std::ostringstream s;
@@ -182,7 +182,7 @@ std::string reportOf(const MissionResult &r)
     return out.str();
 }
 
-std::string errorOf(const std::function<void()> &f)
+std::string pilotErrorOf(const std::function<void()> &f)
 {
     try
     {
@@ -233,12 +233,12 @@ TEST(PilotCalendar, ClimatologyDatesRoundTripInEveryCalendar)
             EXPECT_EQ(r.departureIso, date);
             EXPECT_HAS(reportOf(r), "(" + date + ")");
             writeOutputs(r, problem);
-            const nlohmann::json s = nlohmann::json::parse(readText(fs::path(m.outputs.directory) / "summary.json"));
+            const nlohmann::json s = nlohmann::json::parse(readPilotText(fs::path(m.outputs.directory) / "summary.json"));
             EXPECT_EQ(s["departure"]["iso"], date);
-            EXPECT_HAS(readText(fs::path(m.outputs.directory) / "waypoints.csv"), "," + date + ",");
-            EXPECT_HAS(readText(fs::path(m.outputs.directory) / "route.kml"), "departure " + date);
+            EXPECT_HAS(readPilotText(fs::path(m.outputs.directory) / "waypoints.csv"), "," + date + ",");
+            EXPECT_HAS(readPilotText(fs::path(m.outputs.directory) / "route.kml"), "departure " + date);
             // a year-0 date is not a Gregorian one for Google Earth: no TimeStamp
-            EXPECT_HAS_NOT(readText(fs::path(m.outputs.directory) / "route.kml"), "<TimeStamp>");
+            EXPECT_HAS_NOT(readPilotText(fs::path(m.outputs.directory) / "route.kml"), "<TimeStamp>");
         }
     }
 }
@@ -248,12 +248,12 @@ TEST(PilotCalendar, ADateOutsideAClimatologySaysItIsOne)
     const fs::path dir = scratch("outside");
     const fs::path file = climatology(dir, "noleap");
     const std::string e =
-        errorOf([&] { forecastMission(forecastOf(file, {-59.8, 30.2}, {-59.6, 30.4}, "2024-01-20T00:00:00Z")); });
+        pilotErrorOf([&] { forecastMission(forecastOf(file, {-59.8, 30.2}, {-59.6, 30.4}, "2024-01-20T00:00:00Z")); });
     EXPECT_HAS(e, "is outside the forecast");
     EXPECT_HAS(e, "the file is a climatology (its dates are in year 0000, noleap calendar)");
     EXPECT_HAS(e, "0000-01-01T00:00:00Z");
     // a day the calendar does not have is refused, naming the calendar
-    EXPECT_HAS(errorOf([&] { forecastMission(forecastOf(file, {-59.8, 30.2}, {-59.6, 30.4}, "0000-02-29")); }),
+    EXPECT_HAS(pilotErrorOf([&] { forecastMission(forecastOf(file, {-59.8, 30.2}, {-59.6, 30.4}, "0000-02-29")); }),
                "does not exist in the noleap calendar");
     // the 360_day calendar has a 30 February
     const fs::path d360 = climatology(dir, "360_day");
@@ -286,7 +286,7 @@ outputs: {files: [path, geojson, isochrones, summary]}
     // path.csv: lon/lat of every waypoint
     std::vector<LonLat> csv;
     {
-        std::istringstream in(readText(dir / "out" / "path.csv"));
+        std::istringstream in(readPilotText(dir / "out" / "path.csv"));
         std::string line;
         std::getline(in, line);
         while (std::getline(in, line))
@@ -341,7 +341,7 @@ outputs: {files: [path, geojson, isochrones, summary]}
         if (next < csv.size() && std::abs(p.lon - csv[next].lon) < 1e-7 && std::abs(p.lat - csv[next].lat) < 1e-7)
             ++next;
     EXPECT_EQ(next, csv.size());
-    const std::string kml = readText(dir / "out" / "route.kml");
+    const std::string kml = readPilotText(dir / "out" / "route.kml");
     EXPECT_HAS(kml, "<name>jet &amp; kml</name>");
     EXPECT_HAS(kml, "<TimeStamp><when>" + r.waypoints.back().iso + "</when></TimeStamp>");
     EXPECT_HAS(kml, "arrival " + r.waypoints.back().iso);
@@ -530,7 +530,7 @@ TEST(PilotNoPath, AForecastTooShortNamesItsEndAndBeyondHold)
     ASSERT_TRUE(rh.plan.solved) << rh.plan.reason;
     EXPECT_HAS(reportOf(rh), "Forecast:           planned past the forecast's last time");
     writeOutputs(rh, held);
-    const nlohmann::json s = nlohmann::json::parse(readText(fs::path(h.outputs.directory) / "summary.json"));
+    const nlohmann::json s = nlohmann::json::parse(readPilotText(fs::path(h.outputs.directory) / "summary.json"));
     ASSERT_TRUE(s.contains("forecast_notes"));
     EXPECT_HAS(s["forecast_notes"].dump(), "held frozen (current.horizon: hold_last)");
 }
@@ -640,7 +640,7 @@ TEST(PilotUnits, ACartesianFileInKmTakesStartAndGoalInKm)
     EXPECT_HAS(report, "Travel time:        1 d ");
     EXPECT_HAS(report, "Straight line:      1 d ");
     // a point outside the grid is named in the file's units
-    EXPECT_HAS(errorOf([&] { forecastMission(forecastOf(dir / "km.nc", {10.0, 10.0}, {90.0, 50.0})); }),
+    EXPECT_HAS(pilotErrorOf([&] { forecastMission(forecastOf(dir / "km.nc", {10.0, 10.0}, {90.0, 50.0})); }),
                "lies outside the grid");
 }
 
@@ -718,7 +718,7 @@ outputs: {files: [path, geojson, summary, map]}
     const MissionResult r = runMission(problem);
     ASSERT_TRUE(r.plan.solved) << r.plan.reason;
     writeOutputs(r, problem);
-    const std::string kml = readText(dir / "out" / "route.kml");
+    const std::string kml = readPilotText(dir / "out" / "route.kml");
     EXPECT_HAS(kml, "<name>Gl\xEF\xBF\xBDne  fjord\n&lt;b&gt;</name>");
     GDALAllRegister();
     GDALDataset *ds = static_cast<GDALDataset *>(
@@ -729,12 +729,12 @@ outputs: {files: [path, geojson, summary, map]}
         features += static_cast<std::size_t>(layer->GetFeatureCount());
     GDALClose(ds);
     EXPECT_EQ(features, r.waypoints.size() + 1);  // the waypoints and the route line
-    const nlohmann::json summary = nlohmann::json::parse(readText(dir / "out" / "summary.json"));
+    const nlohmann::json summary = nlohmann::json::parse(readPilotText(dir / "out" / "summary.json"));
     EXPECT_EQ(summary["mission"].get<std::string>().substr(0, 5), "Gl\xEF\xBF\xBD");
     EXPECT_TRUE(fs::exists(dir / "out" / "map.png"));
     // map.svg: the same name in its title, well-formed (the SVG driver of GDAL is not built in Debian's: the
     // bytes are checked here, one character at a time, against UTF-8's own rules)
-    const std::string svg = readText(dir / "out" / "map.svg");
+    const std::string svg = readPilotText(dir / "out" / "map.svg");
     EXPECT_HAS(svg, ">Gl\xEF\xBF\xBDne  fjord\n&lt;b&gt;");
     EXPECT_HAS_NOT(svg, "\xe9");
     EXPECT_HAS_NOT(svg, "\x01");

@@ -98,7 +98,7 @@ TEST(Safety, KeepOffLengthsAndTheirUnits)
 namespace
 {
 // 0.2-degree grid, lon -80..-76, lat 25..28; a land block (i 9..11, j 0..6) attached to the south edge
-constexpr std::size_t kNx = 21, kNy = 16;
+constexpr std::size_t kSafetyNx = 21, kNy = 16;
 bool land(std::size_t i, std::size_t j)
 {
     return i >= 9 && i <= 11 && j <= 6;
@@ -107,7 +107,7 @@ bool land(std::size_t i, std::size_t j)
 void writeForecast(const std::string &path)
 {
     NcWriter w(path, NC_CLOBBER);
-    const int dy = w.dim("lat", kNy), dx = w.dim("lon", kNx);
+    const int dy = w.dim("lat", kNy), dx = w.dim("lon", kSafetyNx);
     const int vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
     w.text(vy, "units", "degrees_north");
     w.text(vx, "units", "degrees_east");
@@ -117,13 +117,13 @@ void writeForecast(const std::string &path)
     w.text(vu, "standard_name", "eastward_sea_water_velocity");
     w.text(vv, "standard_name", "northward_sea_water_velocity");
     w.enddef();
-    std::vector<double> lat(kNy), lon(kNx), u, v;
+    std::vector<double> lat(kNy), lon(kSafetyNx), u, v;
     for (std::size_t j = 0; j < kNy; ++j)
         lat[j] = 25.0 + 0.2 * double(j);
-    for (std::size_t i = 0; i < kNx; ++i)
+    for (std::size_t i = 0; i < kSafetyNx; ++i)
         lon[i] = -80.0 + 0.2 * double(i);
     for (std::size_t j = 0; j < kNy; ++j)
-        for (std::size_t i = 0; i < kNx; ++i)
+        for (std::size_t i = 0; i < kSafetyNx; ++i)
         {
             u.push_back(land(i, j) ? 0.0 : 0.05);
             v.push_back(0.0);

@@ -62,7 +62,7 @@ std::vector<Target> readTargets(const std::string &text)
     return out;
 }
 
-double metres(double lat1, double lon1, double lat2, double lon2)
+double metresBetween(double lat1, double lon1, double lat2, double lon2)
 {
     constexpr double r = 6371000.0, d = M_PI / 180.0;
     const double a = std::pow(std::sin((lat2 - lat1) * d / 2), 2) +
@@ -106,7 +106,7 @@ TEST(SeagliderTargets, ReadBackMatchesTheRoutesTurns)
     for (std::size_t k = 0; k < t.size(); ++k)
     {
         const MissionWaypoint &w = r.waypoints[turns[k]];
-        EXPECT_LT(metres(t[k].lat, t[k].lon, w.lonLat.lat, w.lonLat.lon), 1.0) << t[k].name;
+        EXPECT_LT(metresBetween(t[k].lat, t[k].lon, w.lonLat.lat, w.lonLat.lon), 1.0) << t[k].name;
         EXPECT_TRUE(names.insert(t[k].name).second) << "name used twice: " << t[k].name;
         EXPECT_EQ(t[k].next, k + 1 < t.size() ? t[k + 1].name : t[k].name);
     }
@@ -119,10 +119,10 @@ TEST(SeagliderTargets, ReadBackMatchesTheRoutesTurns)
             ++at;
         ASSERT_LT(at, t.size()) << v.name << " is not a target (in order)";
         EXPECT_NEAR(t[at].radius, v.radius, 0.5);
-        EXPECT_LT(metres(t[at].lat, t[at].lon, v.position.lonLat.lat, v.position.lonLat.lon), 1.0);
+        EXPECT_LT(metresBetween(t[at].lat, t[at].lon, v.position.lonLat.lat, v.position.lonLat.lon), 1.0);
     }
     EXPECT_EQ(t.back().name, "GOAL");
-    EXPECT_LT(metres(t.back().lat, t.back().lon, m.goal.lonLat.lat, m.goal.lonLat.lon), 1.0);
+    EXPECT_LT(metresBetween(t.back().lat, t.back().lon, m.goal.lonLat.lat, m.goal.lonLat.lon), 1.0);
 }
 
 TEST(SeagliderTargets, AMissionNameWithLineBreaksStaysInTheHeader)

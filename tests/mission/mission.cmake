@@ -3,33 +3,33 @@ glider_add_test(test_mission_departure ${CMAKE_CURRENT_LIST_DIR}/TestDepartureTi
 glider_add_test(test_mission_file ${CMAKE_CURRENT_LIST_DIR}/TestMissionFile.cpp)
 # an analytic flow's ensemble drawn from one set of parameters (members, spread, seed)
 glider_add_test(test_mission_drawn_ensemble ${CMAKE_CURRENT_LIST_DIR}/TestDrawnEnsemble.cpp)
-target_link_libraries(test_mission_drawn_ensemble PRIVATE nlohmann_json::nlohmann_json)
-glider_add_test(test_mission_run ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp ${CMAKE_CURRENT_LIST_DIR}/TestForecastLand.cpp
+target_link_libraries(test_mission_drawn_ensemble INTERFACE nlohmann_json::nlohmann_json)
+glider_add_test(test_mission_run EXECUTABLE tests_mission_gis ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp ${CMAKE_CURRENT_LIST_DIR}/TestForecastLand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestForecastModelGrids.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestCoastline.cpp)
-target_link_libraries(test_mission_run PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)
+target_link_libraries(test_mission_run INTERFACE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)
 # eight threads plan at once on forecasts in memory, in files, in Zarr stores and at URLs, with coastlines, writing
 # their outputs: each answer the same plan's alone, to the bit (src/io/NetCdfLock.h)
 glider_add_test(test_mission_concurrent_sources ${CMAKE_CURRENT_LIST_DIR}/TestConcurrentSources.cpp)
-target_link_libraries(test_mission_concurrent_sources PRIVATE netCDF::netcdf)
+target_link_libraries(test_mission_concurrent_sources INTERFACE netCDF::netcdf)
 # the plan flown in another ocean through the pipeline
 glider_add_test(test_mission_execution ${CMAKE_CURRENT_LIST_DIR}/TestMissionExecution.cpp)
-target_link_libraries(test_mission_execution PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf)
+target_link_libraries(test_mission_execution INTERFACE nlohmann_json::nlohmann_json netCDF::netcdf)
 # the execution's oracle: each pair planned and flown on the truth, the strategies' arrivals over its
 glider_add_test(test_mission_execution_oracle ${CMAKE_CURRENT_LIST_DIR}/TestExecutionOracle.cpp)
-target_link_libraries(test_mission_execution_oracle PRIVATE nlohmann_json::nlohmann_json)
+target_link_libraries(test_mission_execution_oracle INTERFACE nlohmann_json::nlohmann_json)
 # the many-plan modes through a TaskSpreader (TaskSpread.h) equal the threaded run bit for bit
 glider_add_test(test_mission_task_spread ${CMAKE_CURRENT_LIST_DIR}/TestTaskSpread.cpp)
 # a fleet: one plan per glider through the pipeline, one folder per glider, all or nothing
 glider_add_test(test_mission_fleet ${CMAKE_CURRENT_LIST_DIR}/TestFleet.cpp ${CMAKE_CURRENT_LIST_DIR}/TestPlanStatus.cpp)
-target_link_libraries(test_mission_fleet PRIVATE nlohmann_json::nlohmann_json)
+target_link_libraries(test_mission_fleet INTERFACE nlohmann_json::nlohmann_json)
 if(TARGET glider_plan)
   add_test(NAME mission.fleet_cli
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_fleet_cli.sh $<TARGET_FILE:glider_plan> ${PROJECT_SOURCE_DIR})
 endif()
 # a forecast in several files (--currents LIST, current.file list or glob) planned as the combined file
 glider_add_test(test_mission_forecast_files ${CMAKE_CURRENT_LIST_DIR}/TestForecastFiles.cpp)
-target_link_libraries(test_mission_forecast_files PRIVATE netCDF::netcdf)
+target_link_libraries(test_mission_forecast_files INTERFACE netCDF::netcdf)
 # glider_plan --mission / --currents / --speeds and its error cases
 if(TARGET glider_plan)
   add_test(NAME mission.glider_plan_cli
@@ -55,23 +55,23 @@ if(TARGET glider_plan)
 endif()
 # goals in time: a goal window met by holding at the goal or by timing the arrival, or not at all
 glider_add_test(test_mission_goal_window ${CMAKE_CURRENT_LIST_DIR}/TestGoalWindow.cpp)
-target_link_libraries(test_mission_goal_window PRIVATE nlohmann_json::nlohmann_json)
+target_link_libraries(test_mission_goal_window INTERFACE nlohmann_json::nlohmann_json)
 # missions of several legs: the chain of legs, the free order against all orders, stays, bad via points, targets
 glider_add_test(test_mission_legs ${CMAKE_CURRENT_LIST_DIR}/TestMissionLegs.cpp
                 ${CMAKE_CURRENT_LIST_DIR}/TestSeagliderTargets.cpp ${CMAKE_CURRENT_LIST_DIR}/TestPilotFilesFly.cpp
                 ${CMAKE_CURRENT_LIST_DIR}/TestResume.cpp)
-target_link_libraries(test_mission_legs PRIVATE nlohmann_json::nlohmann_json)
+target_link_libraries(test_mission_legs INTERFACE nlohmann_json::nlohmann_json)
 # the glider's measurements: the forecast corrected by its DAC, the plan from the last fix
 glider_add_test(test_mission_observations ${CMAKE_CURRENT_LIST_DIR}/TestObservations.cpp
                 ${CMAKE_CURRENT_LIST_DIR}/TestExecutionObserved.cpp)
-target_link_libraries(test_mission_observations PRIVATE netCDF::netcdf)
+target_link_libraries(test_mission_observations INTERFACE netCDF::netcdf)
 # safety margins (keep-off distance, depth limit) through the pipeline
 glider_add_test(test_mission_safety ${CMAKE_CURRENT_LIST_DIR}/TestSafety.cpp)
-target_link_libraries(test_mission_safety PRIVATE netCDF::netcdf)
+target_link_libraries(test_mission_safety INTERFACE netCDF::netcdf)
 # shorelines cut by the box closed along its edges (scripts/close_shorelines.py, used by make_coastline.sh)
 add_test(NAME mission.close_shorelines
   COMMAND python3 ${CMAKE_CURRENT_LIST_DIR}/check_close_shorelines.py ${PROJECT_SOURCE_DIR}/scripts/close_shorelines.py)
 # what a pilot reads and loads: calendars of climatologies, route.kml, the thinned goto list, no-path reasons,
 # units for people, zero velocity as land
-glider_add_test(test_mission_pilot ${CMAKE_CURRENT_LIST_DIR}/TestPilotOutputs.cpp)
-target_link_libraries(test_mission_pilot PRIVATE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)
+glider_add_test(test_mission_pilot EXECUTABLE tests_mission_gis ${CMAKE_CURRENT_LIST_DIR}/TestPilotOutputs.cpp)
+target_link_libraries(test_mission_pilot INTERFACE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)

@@ -1,6 +1,6 @@
 # the one planning pipeline and the one output layer
 glider_add_test(test_pipeline ${CMAKE_CURRENT_LIST_DIR}/TestPipeline.cpp)
-target_link_libraries(test_pipeline PRIVATE nlohmann_json::nlohmann_json)
+target_link_libraries(test_pipeline INTERFACE nlohmann_json::nlohmann_json)
 
 if(TARGET glider_plan)
   add_test(NAME mission.three_modes
@@ -39,7 +39,7 @@ gtest_discover_tests(test_trust TEST_FILTER "TrustProperty.*" DISCOVERY_TIMEOUT 
                      PROPERTIES TIMEOUT 1800 LABELS ci)
 # the global check of the route class: the upstream crossing of the jet, V = 0.1, --optimum inside the region
 glider_add_test(test_global_check ${CMAKE_CURRENT_LIST_DIR}/TestGlobalCheck.cpp)
-target_link_libraries(test_global_check PRIVATE nlohmann_json::nlohmann_json)
+target_link_libraries(test_global_check INTERFACE nlohmann_json::nlohmann_json)
 if(TARGET glider_plan)
   # every real forecast file bundled (examples/*.nc) or installed (NCL's pop.nc): coastal trips, each route sample
   # checked against the file's own land read with ncdump (fill values, masks, POP's tracer); fails if a file is missing

@@ -47,7 +47,7 @@ private:
 };
 
 /// Box [0, 10] x [0, 5], horizon 12, V = 0.5, current (cu, cv).
-GliderProblem uniformProblem(std::shared_ptr<const CurrentField> field)
+GliderProblem uniformControlProblem(std::shared_ptr<const CurrentField> field)
 {
     GliderProblem p;
     p.field = std::move(field);
@@ -105,7 +105,7 @@ struct Propagation
 TEST(GliderControl, SetupHasHeadingControlsPropagatorAndDiscGoal)
 {
     const auto field = std::make_shared<UniformCurrent>(1.0, 0.0);
-    auto ss = makeControlSetup(uniformProblem(field));
+    auto ss = makeControlSetup(uniformControlProblem(field));
     const oc::SpaceInformationPtr &si = ss->getSpaceInformation();
     ASSERT_NE(std::dynamic_pointer_cast<HeadingControlSpace>(si->getControlSpace()), nullptr);
     auto prop = std::dynamic_pointer_cast<GliderStatePropagator>(si->getStatePropagator());
@@ -129,7 +129,7 @@ TEST(GliderControl, SetupHasHeadingControlsPropagatorAndDiscGoal)
     ControlSettings bad;
     bad.minSteps = 5;
     bad.maxSteps = 2;
-    EXPECT_THROW(makeControlSetup(uniformProblem(field), bad), Error);
+    EXPECT_THROW(makeControlSetup(uniformControlProblem(field), bad), Error);
 }
 
 TEST(GliderControl, PropagatorInUniformCurrentMatchesTheClosedForm)
@@ -137,7 +137,7 @@ TEST(GliderControl, PropagatorInUniformCurrentMatchesTheClosedForm)
     // dx/dt = V h + c is constant: the end point is start + (V h + c) T, h = (sin b, cos b); time advances by T
     const Velocity c{0.8, -0.35};
     const double V = 0.5;
-    Propagation p(uniformProblem(std::make_shared<UniformCurrent>(c.u, c.v)));
+    Propagation p(uniformControlProblem(std::make_shared<UniformCurrent>(c.u, c.v)));
     for (double bearing : {0.0, 37.0, 90.0, 200.0, 301.5})
         for (double T : {0.05, 0.4, 1.3})
         {
@@ -169,7 +169,7 @@ TEST(GliderControl, PropagatorInUniformCurrentMatchesTheClosedForm)
 TEST(GliderControl, GroundingOnLandMakesTheMotionInvalid)
 {
     // current (1, 0), heading east: ground speed 1.5 towards the coast at x = 5
-    Propagation p(uniformProblem(std::make_shared<UniformWithLand>(1.0, 0.0, 5.0)));
+    Propagation p(uniformControlProblem(std::make_shared<UniformWithLand>(1.0, 0.0, 5.0)));
     p.fly(4.0, 2.5, 0.0, 90.0, 2.0);
     EXPECT_FALSE(p.si->isValid(p.to.get()));
     EXPECT_TRUE(std::isinf(p.to->getTime()));
@@ -197,7 +197,7 @@ TEST(GliderControl, CrossingAForbiddenRegionWithinOneStepMakesTheMotionInvalid)
     // free, the motion is not
     auto walls = std::make_shared<ForbiddenRegions>();
     walls->add(std::make_shared<StaticRegion>("wall", Polygon::rectangle(6.0, 0.0, 6.02, 5.0, "wall"), "island"));
-    GliderProblem prob = uniformProblem(std::make_shared<UniformCurrent>(1.0, 0.0));
+    GliderProblem prob = uniformControlProblem(std::make_shared<UniformCurrent>(1.0, 0.0));
     prob.environment = walls;
     Propagation p(prob);
     const double dt = p.si->getPropagationStepSize();
@@ -217,7 +217,7 @@ TEST(GliderControl, CrossingAForbiddenRegionWithinOneStepMakesTheMotionInvalid)
 TEST(GliderControl, LeavingThePlanningBoxMakesTheMotionInvalid)
 {
     // heading north in current (1, 0): ground velocity (1, 0.5) crosses y = 5 after 0.2
-    Propagation p(uniformProblem(std::make_shared<UniformCurrent>(1.0, 0.0)));
+    Propagation p(uniformControlProblem(std::make_shared<UniformCurrent>(1.0, 0.0)));
     p.fly(5.0, 4.9, 0.0, 0.0, 1.0);
     EXPECT_FALSE(p.si->isValid(p.to.get()));
     EXPECT_LE(p.to->getY(), 5.0);
@@ -227,7 +227,7 @@ TEST(GliderControl, StartInForbiddenRegionIsRefused)
 {
     auto regions = std::make_shared<ForbiddenRegions>();
     regions->add(std::make_shared<StaticRegion>("A", Polygon::regular(1.0, 2.5, 0.3, 12, 0.0, "A"), "island"));
-    GliderProblem prob = uniformProblem(std::make_shared<UniformCurrent>(1.0, 0.0));
+    GliderProblem prob = uniformControlProblem(std::make_shared<UniformCurrent>(1.0, 0.0));
     prob.environment = regions;
     auto ss = makeControlSetup(prob);
     ss->setPlanner(std::make_shared<oc::SST>(ss->getSpaceInformation()));
@@ -242,7 +242,7 @@ TEST(GliderControl, SSTReachesTheGoalInACurrentTwiceTheSpeedAndItsTimeIsTheRefli
     ompl::RNG::setSeed(24);
     const Velocity c{1.0, 0.0};
     const auto field = std::make_shared<UniformCurrent>(c.u, c.v);
-    const GliderProblem prob = uniformProblem(field);
+    const GliderProblem prob = uniformControlProblem(field);
     auto ss = makeControlSetup(prob);
     const oc::SpaceInformationPtr &si = ss->getSpaceInformation();
     ss->setPlanner(std::make_shared<oc::SST>(si));

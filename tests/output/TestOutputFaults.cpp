@@ -4,6 +4,8 @@
 // device) is an error naming the file; a directory locked by another process is refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <filesystem>
@@ -401,14 +403,20 @@ TEST(OutputFaults, ASignalOnAnotherThreadAtAnyMomentLeavesOneCompleteRun)
     const auto newFiles = runFiles("new", {"waypoints.csv", "path.csv", "track.csv"});
     const auto oldSet = expected(oldFiles, root / "scratch_old");
     const auto newSet = expected(newFiles, root / "scratch_new");
+    // the moments are drawn over twice the write's own span, timed here (a sanitized build beside other tests takes
+    // several times as long as an idle optimised one), at least 20 ms; more runs while one outcome is still missing
+    const auto begin = std::chrono::steady_clock::now();
+    writeOutputFiles((root / "timed").string(), newFiles);
+    const long span = static_cast<long>(
+        std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - begin).count());
     std::mt19937 rng(17);
-    std::uniform_int_distribution<int> delay(0, 20000);  // microseconds after the write begins
+    std::uniform_int_distribution<long> delay(0, std::max(20000L, 2 * span));  // microseconds after the write begins
     int bySignal = 0, finished = 0;
-    for (int run = 0; run < 40; ++run)
+    for (int run = 0; run < 40 || (run < 200 && (bySignal == 0 || finished == 0)); ++run)
     {
         fs::remove_all(dir);
         writeOutputFiles(dir.string(), oldFiles);
-        const int wait = delay(rng);
+        const long wait = delay(rng);
         const pid_t child = ::fork();
         ASSERT_GE(child, 0);
         if (child == 0)

@@ -20,7 +20,7 @@ using namespace ompl_glider;
 
 namespace
 {
-GliderProblem jetProblem()
+GliderProblem heuristicJetProblem()
 {
     GliderProblem p;
     p.field = std::make_shared<MeanderingJet>();
@@ -28,7 +28,7 @@ GliderProblem jetProblem()
     return p;
 }
 
-TveOptions tveOptions()
+TveOptions heuristicTveOptions()
 {
     TveOptions o;
     o.heuristic = o.zermelo = false;
@@ -71,7 +71,7 @@ TEST(SearchHeuristic, JetBoxesEncloseSampledCurrents)
 
 TEST(SearchHeuristic, EdgeBoundsNeverExceedTheTravelTime)
 {
-    GliderProblem p = jetProblem();
+    GliderProblem p = heuristicJetProblem();
     auto ctx = makeGliderContext(p);
     Lattice lat(ctx->region.xMin, ctx->region.xMax, ctx->region.yMin, ctx->region.yMax, 0.4, 3);
     lat.setStart(1.1, 0.3);  // off-grid start and goal: their edges use the generic bound
@@ -107,7 +107,7 @@ TEST(SearchHeuristic, NeverAboveTheTrueRemainingTimeAndConsistent)
 {
     // Admissibility: h(v) <= the lattice optimum from v to the goal, which TVE (an exact search that does not use
     // the bounds) computes, on random vertices and departure times. Consistency: h(u) <= w(u, v, t) + h(v).
-    GliderProblem p = jetProblem();
+    GliderProblem p = heuristicJetProblem();
     auto ctx = makeGliderContext(p);
     TveSearch exact(ctx, 0.4, 3);
     std::mt19937 rng(11);
@@ -128,7 +128,7 @@ TEST(SearchHeuristic, NeverAboveTheTrueRemainingTimeAndConsistent)
         {
             const Lattice::VertexId v = lat.gridVertex(ci(rng) % lat.nx(), cj(rng) % lat.ny());
             const double t = ut(rng);
-            const TveResult r = exact.run(lat.x(v), lat.y(v), t, gx, gy, tveOptions());
+            const TveResult r = exact.run(lat.x(v), lat.y(v), t, gx, gy, heuristicTveOptions());
             const double h = hb(v);
             if (r.outcome != TveOutcome::Exact)
                 continue;
@@ -160,7 +160,7 @@ TEST(SearchHeuristic, DefaultSearchEqualsTveOnRandomPairs)
 {
     // The default options (tight bounds, certified Zermelo pruning with tolerance 0) return TVE's lattice optimum
     // within 1e-9 relative, on random pairs (grid and off-grid points) and departure times, with fewer CFC in total.
-    GliderProblem p = jetProblem();
+    GliderProblem p = heuristicJetProblem();
     auto ctx = makeGliderContext(p);
     TveSearch search(ctx, 0.4, 3);
     TveOptions astar;  // A* with the tight heuristic, no pruning
@@ -176,7 +176,7 @@ TEST(SearchHeuristic, DefaultSearchEqualsTveOnRandomPairs)
         const double sx = grid ? 0.4 * ci(rng) : ux(rng), sy = grid ? -4.0 + 0.4 * cj(rng) : uy(rng);
         const double gx = grid ? 0.4 * ci(rng) : ux(rng), gy = grid ? -4.0 + 0.4 * cj(rng) : uy(rng);
         const double t0 = i % 3 == 0 ? ut(rng) : 0.0;
-        const TveResult a = search.run(sx, sy, t0, gx, gy, tveOptions());
+        const TveResult a = search.run(sx, sy, t0, gx, gy, heuristicTveOptions());
         const TveResult b = search.run(sx, sy, t0, gx, gy, TveOptions{});
         const TveResult c = search.run(sx, sy, t0, gx, gy, astar);
         ASSERT_EQ(a.outcome, b.outcome);
@@ -217,11 +217,11 @@ TEST(SearchHeuristic, DeadlineKeepsTheOptimumOrExhausts)
 {
     // A deadline at TVE's arrival gives TVE's travel time (the labels up to the deadline do not depend on later
     // arrivals); one just below it leaves no path. Also with the bounds narrowed to the deadline's corridor.
-    GliderProblem p = jetProblem();
+    GliderProblem p = heuristicJetProblem();
     auto ctx = makeGliderContext(p);
     TveSearch search(ctx, 0.4, 3);
     const double sx = 8.8, sy = -1.2, gx = 1.6, gy = 0.4;  // goal upstream of the start
-    const TveResult tve = search.run(sx, sy, 0.0, gx, gy, tveOptions());
+    const TveResult tve = search.run(sx, sy, 0.0, gx, gy, heuristicTveOptions());
     ASSERT_EQ(tve.outcome, TveOutcome::Exact);
     for (bool tight : {false, true})
     {
@@ -242,7 +242,7 @@ TEST(SearchHeuristic, StopRequestEndsTheSetupAndLeavesLowerBounds)
     // computed, h() answers 0 for a vertex it has not settled (a lower bound), and a search whose stop answers true
     // once the setup has begun ends Terminated before any backward search or expansion (it used to build every box
     // and settle the backward search first, a minute on a fine lattice).
-    GliderProblem p = jetProblem();
+    GliderProblem p = heuristicJetProblem();
     auto ctx = makeGliderContext(p);
     Lattice lat(ctx->region.xMin, ctx->region.xMax, ctx->region.yMin, ctx->region.yMax, 0.1, 3);
     lat.setStart(0.5, -3.0);

@@ -46,7 +46,7 @@ protected:
     }
 };
 
-double uniformTime(double L, double px, double py, double cu, double cv, double V)
+double smoothingUniformTime(double L, double px, double py, double cu, double cv, double V)
 {
     const double pc = px * cu + py * cv;
     return L / (pc + std::sqrt(pc * pc + V * V - cu * cu - cv * cv));
@@ -68,7 +68,7 @@ TEST(PathSmoother, StaircaseInUniformCurrentBecomesStraightLeg)
     EXPECT_EQ(r.waypoints.back().x, 2.0);
     EXPECT_EQ(r.waypoints.back().y, 2.0);
     const double L = std::hypot(2.0, 2.0);
-    EXPECT_NEAR(r.arrivalAfter, uniformTime(L, 2 / L, 2 / L, 0.2, 0.1, 0.5), 1e-9);
+    EXPECT_NEAR(r.arrivalAfter, smoothingUniformTime(L, 2 / L, 2 / L, 0.2, 0.1, 0.5), 1e-9);
     EXPECT_LT(r.arrivalAfter, r.arrivalBefore);
     EXPECT_EQ(r.costFunctionCalls, cfc);   // the calculator's own count
     EXPECT_GE(r.costFunctionCalls, 8u + 1u);  // at least the retiming of the 8 input legs and the merged leg

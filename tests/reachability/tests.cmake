@@ -1,4 +1,4 @@
 # tests of reachability/
 glider_add_test(test_reachability ${CMAKE_CURRENT_LIST_DIR}/TestLevelSet.cpp
                 ${CMAKE_CURRENT_LIST_DIR}/TestLevelSetPlanner.cpp ${CMAKE_CURRENT_LIST_DIR}/TestIsochrones.cpp)
-target_link_libraries(test_reachability PRIVATE nlohmann_json::nlohmann_json)
+target_link_libraries(test_reachability INTERFACE nlohmann_json::nlohmann_json)

@@ -163,7 +163,7 @@ public:
     }
 };
 
-void registerOnce()
+void registerSourceOnce()
 {
     if (findCurrentFieldKind("csv_grid"))
         return;
@@ -207,7 +207,7 @@ double straightTime(Point2 a, Point2 b)
     return len / (along + std::sqrt(kSpeed * kSpeed - u * u - v * v + along * along));
 }
 
-std::string mission(const std::string &grid, const std::string &extra = "")
+std::string sourceMission(const std::string &grid, const std::string &extra = "")
 {
     return "name: csv\ncurrent: {type: csv_grid, file: " + grid +
            "}\nstart: {x: 2000, y: 3000}\ngoal: {x: 17000, y: 12000}\nvehicle: {speed: 0.3}\n" + extra;
@@ -223,7 +223,7 @@ std::string readText(const fs::path &p)
 TEST(RegisteredSource, PlansThroughTheWholePipelineLikeTheBuiltInOne)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-    registerOnce();
+    registerSourceOnce();
     ASSERT_NE(findCurrentFieldKind("csv_grid"), nullptr);
     EXPECT_TRUE(findCurrentFieldKind("csv_grid")->gridded());
     EXPECT_NE(griddedKindList().find("csv_grid"), std::string::npos);
@@ -232,7 +232,7 @@ TEST(RegisteredSource, PlansThroughTheWholePipelineLikeTheBuiltInOne)
     fs::remove_all(out);
     const std::string grid = writeGrid("uniform.csv");
     const MissionSpec spec =
-        parseMission(mission(grid, "outputs: {directory: " + out.string() + ", files: [summary, csv]}\n"), "c.yaml");
+        parseMission(sourceMission(grid, "outputs: {directory: " + out.string() + ", files: [summary, csv]}\n"), "c.yaml");
     EXPECT_TRUE(spec.current.isForecast());
     const MissionProblem problem(spec);
     ASSERT_NE(problem.getField()->grid(), nullptr);
@@ -256,7 +256,7 @@ TEST(RegisteredSource, PlansThroughTheWholePipelineLikeTheBuiltInOne)
 TEST(RegisteredSource, TheCommandLinesForecastMissionTakesItByName)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-    registerOnce();
+    registerSourceOnce();
     ForecastInput q;
     q.current.type = "csv_grid";
     q.current.file = writeGrid("uniform_cli.csv");
@@ -301,12 +301,12 @@ TEST(RegisteredSource, TheCommandLinesForecastMissionTakesItByName)
 TEST(RegisteredSource, LandAcrossTheWayIsGoneAroundAndTheSourcesErrorsNameTheMissionLine)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-    registerOnce();
+    registerSourceOnce();
     // a wall of land across the straight leg, open to the north
     std::vector<std::pair<int, int>> wall;
     for (int j = 0; j <= 13; ++j)
         wall.emplace_back(10, j);
-    const MissionProblem problem(parseMission(mission(writeGrid("wall.csv", wall)), "c.yaml"));
+    const MissionProblem problem(parseMission(sourceMission(writeGrid("wall.csv", wall)), "c.yaml"));
     const MissionResult r = runMission(problem);
     ASSERT_TRUE(r.plan.solved) << r.plan.reason;
     EXPECT_GT(r.plan.travelTime, straightTime({2000, 3000}, {17000, 12000}) * 1.01);
@@ -334,7 +334,7 @@ TEST(RegisteredSource, LandAcrossTheWayIsGoneAroundAndTheSourcesErrorsNameTheMis
     }
     try
     {
-        MissionProblem p(parseMission(mission(bad), "c.yaml"));
+        MissionProblem p(parseMission(sourceMission(bad), "c.yaml"));
         FAIL() << "a malformed row must be refused";
     }
     catch (const Error &e)
@@ -347,7 +347,7 @@ TEST(RegisteredSource, LandAcrossTheWayIsGoneAroundAndTheSourcesErrorsNameTheMis
 
 TEST(RegisteredSource, RegistrationRefusesWhatIsNotAKind)
 {
-    registerOnce();
+    registerSourceOnce();
     CurrentFieldKind twin = *findCurrentFieldKind("csv_grid");
     EXPECT_THROW(registerCurrentFieldKind(twin), Error);  // the name is taken
     twin.name = "csv_grid_2";
