@@ -236,7 +236,9 @@ void flyAndCheck(const MissionProblem &problem, const MissionResult &r, const st
             std::printf("%s: %s reached %.1f m from it, %+.1f s against the summary\n", what.c_str(), st.name.c_str(),
                         off, (s.t - st.arrival) * m.timeUnitSeconds);
             if (targets && next + 1 < stops.size())
+            {
                 EXPECT_EQ(in.name, st.name) << what;
+            }
             ++next;
         }
         if (!in.leaveIso.empty())
@@ -256,7 +258,9 @@ void flyAndCheck(const MissionProblem &problem, const MissionResult &r, const st
     }
     EXPECT_EQ(stays, stayLegs) << what << ": a stay missing from the file";
     if (headingLegs > 0)
+    {
         EXPECT_GT(headings, 0) << what << ": a leg of held headings written as straight legs";
+    }
 }
 
 void checkPilotFiles(const MissionProblem &problem, const MissionResult &r)

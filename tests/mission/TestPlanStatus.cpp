@@ -18,7 +18,9 @@ TEST(PlanStatus, OmplStatusesKeepOmplsTextsAndTheTextsNameOneStatusEach)
         const PlanStatus s = planStatusOfOmpl(omplStatus);
         EXPECT_EQ(static_cast<int>(s), i);
         if (s != PlanStatus::Abort)  // OMPL 1.5 writes ABORT "Unknown status", like UNKNOWN: ours is "Abort"
+        {
             EXPECT_EQ(statusText(s), ompl::base::PlannerStatus(omplStatus).asString());
+        }
         EXPECT_EQ(planStatusNamed(statusText(s)), s) << statusText(s);
     }
     EXPECT_EQ(planStatusOfOmpl(ompl::base::PlannerStatus::EXACT_SOLUTION), PlanStatus::ExactSolution);
