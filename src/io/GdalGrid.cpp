@@ -100,8 +100,6 @@ nc_type ncTypeOf(GDALDataType t)
 }
 }  // namespace
 
-
-
 /// CF's standard name of a GRIB2 parameter (its short name, as GDAL's "name" attribute gives it): the currents of
 /// ocean models (RTOFS) and the winds of weather models (for vehicles in wind).
 std::optional<std::string> gribStandardName(const std::string &shortName)

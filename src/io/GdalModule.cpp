@@ -34,7 +34,8 @@ const EntryPoints *loadModule()
                     ": Zarr stores, GRIB2 files, coastline files, polygon checks, ERDDAP) cannot be found: the "
                     "loader does not say which file libompl_glider was loaded from");
     const std::filesystem::path dir = std::filesystem::path(self.dli_fname).parent_path();
-    const std::string file = (dir.empty() ? std::filesystem::path(".") : dir).string() + "/" OMPL_GLIDER_GDAL_MODULE_FILE;
+    const std::string file =
+        (dir.empty() ? std::filesystem::path(".") : dir).string() + "/" OMPL_GLIDER_GDAL_MODULE_FILE;
     void *handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (handle == nullptr)
     {
