@@ -203,6 +203,40 @@ TEST(MeanderingJet, PaperParametersPeakSpeedIsAboutOne)
     EXPECT_LT(jet.maxSpeed({}), 1.2);
 }
 
+TEST(MeanderingJet, JetsThatDifferInOneParameterEvaluatedInTurnAtOneTimeEachKeepTheirOwnAmplitude)
+{
+    // each thread keeps the amplitude B(t) of its last evaluation (MeanderingJet.cpp): jets that differ only in B0,
+    // epsilon, omega or theta, asked in turn at the same time on one thread, must each give the curl of their own
+    // stream function (which computes B(t) itself), and the same value as when asked alone
+    std::vector<MeanderingJetParams> params(5);
+    params[1].B0 = 0.7;
+    params[2].epsilon = -0.5;
+    params[3].omega = 1.3;
+    params[4].theta = 0.2;
+    std::vector<std::unique_ptr<MeanderingJet>> jets;
+    for (const MeanderingJetParams &p : params)
+        jets.push_back(std::make_unique<MeanderingJet>(p));
+    const double h = 1e-5;
+    for (const double t : {0.0, 3.7, 11.25})
+        for (const double x : {0.4, 2.9, 6.1})
+            for (const double y : {-1.5, 0.3, 1.1})
+                for (int round = 0; round < 2; ++round)
+                    for (std::size_t k = 0; k < jets.size(); ++k)
+                    {
+                        const MeanderingJet &f = *jets[k];
+                        const Velocity c = f.velocity(x, y, 0, t);
+                        const double psiX =
+                            (*f.streamFunction(x + h, y, 0, t) - *f.streamFunction(x - h, y, 0, t)) / (2 * h);
+                        const double psiY =
+                            (*f.streamFunction(x, y + h, 0, t) - *f.streamFunction(x, y - h, 0, t)) / (2 * h);
+                        EXPECT_NEAR(c.u, -psiY, 1e-6) << "jet " << k << " at " << x << "," << y << "," << t;
+                        EXPECT_NEAR(c.v, psiX, 1e-6) << "jet " << k << " at " << x << "," << y << "," << t;
+                        const Velocity alone = MeanderingJet(params[k]).velocity(x, y, 0, t);
+                        EXPECT_EQ(c.u, alone.u);
+                        EXPECT_EQ(c.v, alone.v);
+                    }
+}
+
 TEST(MeanderingJet, FlowsEastOnTheAxisAndDecaysAway)
 {
     MeanderingJet jet;
