@@ -267,8 +267,7 @@ MissionSpec forecastMissionOf(Flags f)
     f.forecast.departure = f.departure;
     if (!f.region.empty())
         f.forecast.region = quad("--region", f.region);
-    if (f.speed)
-        f.forecast.speed = *f.speed;
+    // the speed, as every other planning setting, is the flags' (applyFlags(): checked once, marked "--speed")
     if (f.depth)
         f.forecast.depth = *f.depth;
     f.forecast.snapToWater = f.snapToWater;

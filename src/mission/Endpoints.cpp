@@ -143,15 +143,18 @@ CorrectionParams MissionProblem::correctionParams() const
 {
     const MissionSpec &m = spec_;
     const ObservationsSpec s = m.observations.value_or(ObservationsSpec{});
+    const CorrectionParams forecast;  // a forecast's defaults (metres, seconds), stated once in CorrectedField.h
     CorrectionParams p;
     const double side = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
-    p.lengthScale = std::isfinite(s.lengthScale) ? s.lengthScale : m.current.isForecast() ? 20000.0 : 0.1 * side;
+    p.lengthScale = std::isfinite(s.lengthScale)  ? s.lengthScale
+                    : m.current.isForecast()      ? forecast.lengthScale
+                                                  : 0.1 * side;
     const double span = field_->timeEnd() - field_->timeBegin();
     p.timeScale = std::isfinite(s.timeScale) ? s.timeScale
-                  : m.hasTimeUnit()          ? 86400.0 / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds)
+                  : m.hasTimeUnit()          ? forecast.timeScale / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds)
                   : std::isfinite(span)      ? 0.1 * span
                                              : side / m.vehicle.speed;
-    p.errorRatio = std::isfinite(s.errorRatio) ? s.errorRatio : 0.2;
+    p.errorRatio = std::isfinite(s.errorRatio) ? s.errorRatio : forecast.errorRatio;
     // what is given is kept; the rest are priors the DAC may improve on ([RasmussenGP] Sec. 5.4.1)
     p.learn = s.learn;
     p.lengthGiven = std::isfinite(s.lengthScale);

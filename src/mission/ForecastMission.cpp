@@ -18,6 +18,7 @@
 #include "ompl_glider/current/ForecastSource.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/SettingRanges.h"
 #include "../io/NumberText.h"
 
 namespace ompl_glider
@@ -365,8 +366,14 @@ MissionSpec forecastMission(const ForecastInput &q)
     std::string file = files.front();
     for (std::size_t k = 1; k < files.size(); ++k)
         file += "," + files[k];
-    if (!(q.speed > 0.0) || !std::isfinite(q.speed))
-        throw Error(named(q, "vehicle.speed") + " must be > 0 (m/s)");
+    try
+    {
+        checkSetting("vehicle.speed", q.speed, text::number(q.speed));
+    }
+    catch (const Error &e)
+    {
+        throw Error(named(q, "vehicle.speed") + ": " + e.what() + " (m/s)");
+    }
     if (!(q.depth >= 0.0))
         throw Error(named(q, "vehicle.depth") + " must be >= 0 (metres, positive down)");
 

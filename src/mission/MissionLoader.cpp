@@ -72,7 +72,7 @@ void readVehicleAndTravel(const Reader &r, const YAML::Node &root, MissionSpec &
         const YAML::Node &v = root["vehicle"];
         r.checkMap(v, "vehicle", {"speed", "depth"});
         if (v["speed"])
-            m.vehicle.speed = r.positive(v["speed"], "vehicle.speed");
+            m.vehicle.speed = r.setting(v["speed"], "vehicle.speed", m);
         if (v["depth"])
             m.vehicle.depth = r.nonNegative(v["depth"], "vehicle.depth");
     }

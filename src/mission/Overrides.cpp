@@ -18,23 +18,50 @@
 #include "ompl_glider/io/GeoBox.h"
 #include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/Time.h"
-#include "ompl_glider/ompl/Sectors.h"
+#include "ompl_glider/mission/SettingRanges.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace ompl_glider
 {
 namespace
 {
-double lengthOf(const Given<std::string> &v, double metresPerUnit, bool unitKnown);
 void applyCorrectionSettings(const MissionOverrides &o, MissionSpec &m);
 
-/// @p v, refused naming @p source unless it is finite (and > 0 when @p positive).
-double finite(const Given<double> &v, bool positive)
+/// @p v, refused naming its source unless it is finite.
+double finite(const Given<double> &v)
 {
-    if (!std::isfinite(v.value) || (positive && !(v.value > 0.0)))
-        throw Error(v.source + ": expected a finite number" + (positive ? " > 0" : "") + ", got " +
-                    text::number(v.value));
+    if (!std::isfinite(v.value))
+        throw Error(v.source + ": expected a finite number, got " + text::number(v.value));
     return v.value;
+}
+
+/// @p v checked against the declared range of @p field (SettingRanges.h), refused naming its source.
+template <class T>
+T setting(const Given<T> &v, const char *field)
+{
+    try
+    {
+        checkSetting(field, static_cast<double>(v.value), text::number(static_cast<double>(v.value)));
+    }
+    catch (const Error &e)
+    {
+        throw Error(v.source + ": " + e.what());
+    }
+    return v.value;
+}
+
+/// @p v (a number, or a length or duration with its unit) read as @p field of @p m and checked, refused naming its
+/// source.
+double settingOf(const Given<std::string> &v, const char *field, const MissionSpec &m)
+{
+    try
+    {
+        return settingFromText(field, v.value, m);
+    }
+    catch (const Error &e)
+    {
+        throw Error(v.source + ": " + e.what());
+    }
 }
 
 void mark(MissionSpec &m, const char *field, const std::string &source, Origin origin)
@@ -77,31 +104,22 @@ void applyPlanner(const MissionOverrides &o, MissionSpec &m)
             m.planner.parameters[name] = value;
             m.planner.parameterMarks[name] = SourceMark{o.plannerParameters->source, 0, o.origin};
         }
-    if (o.gridSize)
-    {
-        m.planner.gridSize = finite(*o.gridSize, true);
-        mark(m, "planner.grid_size", o.gridSize->source, o.origin);
-    }
     if (o.sectors)
     {
-        if (o.sectors->value < kMinSectors || o.sectors->value > kMaxSectors)
-            throw Error(o.sectors->source + ": expected an integer " + std::to_string(kMinSectors) + ".." +
-                        std::to_string(kMaxSectors) + ", got " + std::to_string(o.sectors->value));
-        m.planner.sectors = o.sectors->value;
+        m.planner.sectors = setting(*o.sectors, "planner.sectors");
         mark(m, "planner.sectors", o.sectors->source, o.origin);
     }
-    const std::pair<const std::optional<Given<double>> *, std::pair<double *, const char *>> positives[] = {
+    const std::pair<const std::optional<Given<double>> *, std::pair<double *, const char *>> numbers[] = {
+        {&o.gridSize, {&m.planner.gridSize, "planner.grid_size"}},
         {&o.timeLimit, {&m.planner.timeLimit, "planner.time_limit"}},
         {&o.horizon, {&m.planner.horizon, "planner.horizon"}},
         {&o.goalTolerance, {&m.planner.goalTolerance, "planner.goal_tolerance"}}};
-    for (const auto &[given, target] : positives)
+    for (const auto &[given, target] : numbers)
         if (*given)
         {
-            *target.first = finite(**given, true);
+            *target.first = setting(**given, target.second);
             mark(m, target.second, (*given)->source, o.origin);
         }
-    if (o.timeLimit && o.timeLimit->value > kMaxTimeLimit)
-        throw Error(o.timeLimit->source + ": at most 1e6 s (11.6 days), got " + text::number(o.timeLimit->value));
     if (o.smoothing)
         m.planner.smoothing = o.smoothing->value;
     if (o.refinement)
@@ -116,7 +134,7 @@ void applyPoint(const std::optional<Given<Point2>> &p, PointSpec &point, const c
     if (!p)
         return;
     for (const double v : {p->value.x, p->value.y})
-        finite(Given<double>{v, p->source}, false);
+        finite(Given<double>{v, p->source});
     if (point.geographic)
         point.lonLat = {p->value.x, p->value.y};
     else
@@ -128,7 +146,7 @@ void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
 {
     if (o.speed)
     {
-        m.vehicle.speed = finite(*o.speed, true);
+        m.vehicle.speed = setting(*o.speed, "vehicle.speed");
         mark(m, "vehicle.speed", o.speed->source, o.origin);
     }
     if (o.departure)
@@ -143,7 +161,7 @@ void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
     {
         const auto [a, b, c, d] = o.region->value;
         for (const double v : o.region->value)
-            finite(Given<double>{v, o.region->source}, false);
+            finite(Given<double>{v, o.region->source});
         m.region.set = true;
         m.region.geographic = m.start.geographic;
         if (m.region.geographic)
@@ -192,7 +210,7 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
             ViaPointSpec &v = via[i];
             const std::string at = source + ": via point " + std::to_string(i + 1);
             for (const double c : {v.position.xy.x, v.position.xy.y})
-                finite(Given<double>{c, at}, false);
+                finite(Given<double>{c, at});
             if (m.start.geographic)
             {
                 v.position.geographic = true;
@@ -212,10 +230,9 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
                 throw Error(at + ": the name '" + v.name + "' is used twice" +
                             (key == "start" || key == "goal" ? " (it names the mission's " + key + ")" : "") +
                             " (names are compared without case)");
-            if (!(std::isnan(v.radius) || (v.radius > 0.0 && std::isfinite(v.radius))))
-                throw Error(at + ": the radius must be > 0, got " + text::number(v.radius));
-            if (!(v.stay >= 0.0 && std::isfinite(v.stay)))
-                throw Error(at + ": the stay must be a duration >= 0, got " + text::number(v.stay));
+            if (!std::isnan(v.radius))
+                setting(Given<double>{v.radius, at + ": the radius"}, "waypoints[].radius");
+            setting(Given<double>{v.stay, at + ": the stay"}, "waypoints[].stay");
             if (v.arrive.set && !(v.arrive.end >= v.arrive.begin))
                 throw Error(at + ": the arrival window ends before it begins");
         }
@@ -266,25 +283,11 @@ void applyOutputs(const MissionOverrides &o, MissionSpec &m)
         m.outputs.directory = o.outDirectory->value;
     if (o.isochroneInterval)
     {
-        try
-        {
-            m.outputs.isochroneInterval = parseDuration(o.isochroneInterval->value, m.timeUnitSeconds, m.hasTimeUnit());
-        }
-        catch (const Error &e)
-        {
-            throw Error(o.isochroneInterval->source + ": " + e.what());
-        }
-        if (!(m.outputs.isochroneInterval > 0.0) || !std::isfinite(m.outputs.isochroneInterval))
-            throw Error(o.isochroneInterval->source + ": must be > 0, got '" + o.isochroneInterval->value + "'");
+        m.outputs.isochroneInterval = settingOf(*o.isochroneInterval, "outputs.isochrone_interval", m);
         mark(m, "outputs.isochrone_interval", o.isochroneInterval->source, o.origin);
     }
     if (o.gotoTurn)
-    {
-        if (!(o.gotoTurn->value >= 0.0 && o.gotoTurn->value <= 180.0))
-            throw Error(o.gotoTurn->source + ": expected degrees in 0..180 (0: every waypoint), got " +
-                        text::number(o.gotoTurn->value));
-        m.outputs.gotoTurnDeg = o.gotoTurn->value;
-    }
+        m.outputs.gotoTurnDeg = setting(*o.gotoTurn, "outputs.goto_turn_deg");
     if (((o.isochrones && o.isochrones->value) || o.isochroneInterval) && !m.outputs.wants(OutputFormatId::Isochrones))
         m.outputs.files.push_back(OutputFormatId::Isochrones);
 }
@@ -297,31 +300,17 @@ void applyCorrectionSettings(const MissionOverrides &o, MissionSpec &m)
     ObservationsSpec spec = m.observations.value_or(ObservationsSpec{});
     if (o.correctionLength)
     {
-        spec.lengthScale = lengthOf(*o.correctionLength, m.metresPerUnit(), m.physicalUnits().length);
-        if (!(spec.lengthScale > 0.0) || !std::isfinite(spec.lengthScale))
-            throw Error(o.correctionLength->source + ": must be > 0, got '" + o.correctionLength->value + "'");
+        spec.lengthScale = settingOf(*o.correctionLength, "observations.length_scale", m);
         mark(m, "observations.length_scale", o.correctionLength->source, o.origin);
     }
     if (o.correctionTime)
     {
-        try
-        {
-            spec.timeScale = parseDuration(o.correctionTime->value, m.timeUnitSeconds, m.hasTimeUnit());
-        }
-        catch (const Error &e)
-        {
-            throw Error(o.correctionTime->source + ": " + e.what());
-        }
-        if (!(spec.timeScale > 0.0) || !std::isfinite(spec.timeScale))
-            throw Error(o.correctionTime->source + ": must be > 0, got '" + o.correctionTime->value + "'");
+        spec.timeScale = settingOf(*o.correctionTime, "observations.time_scale", m);
         mark(m, "observations.time_scale", o.correctionTime->source, o.origin);
     }
     if (o.errorRatio)
     {
-        if (!(o.errorRatio->value > 0.0) || !std::isfinite(o.errorRatio->value))
-            throw Error(o.errorRatio->source + ": expected a number > 0 (the DAC's error over the forecast's), got " +
-                        text::number(o.errorRatio->value));
-        spec.errorRatio = o.errorRatio->value;
+        spec.errorRatio = setting(*o.errorRatio, "observations.error_ratio");
         mark(m, "observations.error_ratio", o.errorRatio->source, o.origin);
     }
     if (o.learn)
@@ -332,31 +321,17 @@ void applyCorrectionSettings(const MissionOverrides &o, MissionSpec &m)
     m.observations = spec;
 }
 
-/// A length of @p v (a number in units of @p metresPerUnit, or with a unit; parseLength() refuses a negative one),
-/// refused naming its source.
-double lengthOf(const Given<std::string> &v, double metresPerUnit, bool unitKnown)
-{
-    try
-    {
-        return parseLength(v.value, metresPerUnit, unitKnown);
-    }
-    catch (const Error &e)
-    {
-        throw Error(v.source + ": " + e.what());
-    }
-}
-
 void applySafety(const MissionOverrides &o, MissionSpec &m)
 {
     SafetySpec &s = m.safety;
     if (o.keepOff)
     {
-        s.keepOff = lengthOf(*o.keepOff, m.metresPerUnit(), m.physicalUnits().length);
+        s.keepOff = settingOf(*o.keepOff, "safety.keep_off", m);
         mark(m, "safety.keep_off", o.keepOff->source, o.origin);
     }
     if (o.minDepth)
     {
-        s.minDepth = lengthOf(*o.minDepth, 1.0, true);  // a bare number is metres
+        s.minDepth = settingOf(*o.minDepth, "safety.min_depth", m);
         mark(m, "safety.min_depth", o.minDepth->source, o.origin);
     }
     if (o.bathymetry)
@@ -450,14 +425,7 @@ void applyExecution(const MissionOverrides &o, MissionSpec &m)
         e.truth.reset();
     if (o.surfacingInterval)
     {
-        try
-        {
-            e.surfacingInterval = parseDuration(o.surfacingInterval->value, m.timeUnitSeconds, m.hasTimeUnit());
-        }
-        catch (const Error &err)
-        {
-            throw Error(o.surfacingInterval->source + ": " + err.what());
-        }
+        e.surfacingInterval = settingOf(*o.surfacingInterval, "execution.surfacing_interval", m);
         mark(m, "execution.surfacing_interval", o.surfacingInterval->source, o.origin);
     }
     if (o.strategies)
@@ -481,19 +449,13 @@ void applyExecution(const MissionOverrides &o, MissionSpec &m)
     }
     if (o.radius)
     {
-        e.radius = finite(*o.radius, true);
+        e.radius = setting(*o.radius, "execution.radius");
         mark(m, "execution.radius", o.radius->source, o.origin);
     }
-    const std::pair<const std::optional<Given<long long>> *, std::pair<unsigned *, long long>> counts[] = {
-        {&o.executionPairs, {&e.pairs, 100000}}, {&o.executionSeed, {&e.seed, 4294967295LL}}};
-    for (const auto &[given, target] : counts)
-        if (*given)
-        {
-            if ((*given)->value < 0 || (*given)->value > target.second)
-                throw Error((*given)->source + ": expected an integer 0.." + std::to_string(target.second) +
-                            ", got " + std::to_string((*given)->value));
-            *target.first = static_cast<unsigned>((*given)->value);
-        }
+    if (o.executionPairs)
+        e.pairs = static_cast<unsigned>(setting(*o.executionPairs, "execution.batch.pairs"));
+    if (o.executionSeed)
+        e.seed = static_cast<unsigned>(setting(*o.executionSeed, "execution.batch.seed"));
 }
 }  // namespace
 

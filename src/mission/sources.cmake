@@ -4,8 +4,18 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/MissionLoader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputFormats.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Overrides.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/SettingRanges.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/MissionReader.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/loader/Sections.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Current.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Region.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Departure.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Dive.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Planner.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Stints.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Outputs.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Execution.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Observations.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Safety.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/ForbiddenRegions.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Fleet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Waypoints.cpp

@@ -1,6 +1,8 @@
 # mission tests
 glider_add_test(test_mission_departure ${CMAKE_CURRENT_LIST_DIR}/TestDepartureTime.cpp)
 glider_add_test(test_mission_file ${CMAKE_CURRENT_LIST_DIR}/TestMissionFile.cpp)
+# the declared ranges of the settings, tried bound by bound in a mission file and as overrides
+glider_add_test(test_mission_setting_ranges ${CMAKE_CURRENT_LIST_DIR}/TestSettingRanges.cpp)
 # an analytic flow's ensemble drawn from one set of parameters (members, spread, seed)
 glider_add_test(test_mission_drawn_ensemble ${CMAKE_CURRENT_LIST_DIR}/TestDrawnEnsemble.cpp)
 target_link_libraries(test_mission_drawn_ensemble INTERFACE nlohmann_json::nlohmann_json)

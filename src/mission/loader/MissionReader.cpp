@@ -8,6 +8,7 @@
 #include "MissionReader.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Time.h"
+#include "ompl_glider/mission/SettingRanges.h"
 
 namespace ompl_glider::mission_loader
 {
@@ -206,6 +207,37 @@ double Reader::time(const YAML::Node &node, const std::string &field, const Miss
     }
 }
 
+double Reader::setting(const YAML::Node &node, const std::string &field, const MissionSpec &m) const
+{
+    const SettingRange &s = settingRange(field);
+    if (s.value == SettingValue::Length || s.value == SettingValue::Depth || s.value == SettingValue::Duration)
+    {
+        if (!node.IsScalar())
+            fail(node, field,
+                 s.value == SettingValue::Duration
+                     ? "expected a duration: a number in the mission's time unit, or e.g. '6 h', '1 d'"
+                     : "expected a length: a number, or e.g. '500 m', '2 km'");
+        remember(node, field);
+        try
+        {
+            return settingFromText(field, node.Scalar(), m);
+        }
+        catch (const Error &e)
+        {
+            fail(node, field, e.what());
+        }
+    }
+    const double v = number(node, field);
+    try
+    {
+        return checkSetting(field, v, node.Scalar());
+    }
+    catch (const Error &e)
+    {
+        fail(node, field, e.what());
+    }
+}
+
 std::pair<double, double> Reader::pair(const YAML::Node &node, const std::string &field) const
 {
     if (!node.IsSequence() || node.size() != 2)
@@ -278,6 +310,30 @@ void readPolygon(const Reader &r, const YAML::Node &n, const std::string &field,
             r.fail(h, field + ".holes", "expected a list of rings");
         for (std::size_t i = 0; i < h.size(); ++i)
             poly.holes.push_back(r.ring(h[i], field + ".holes[" + std::to_string(i) + "]"));
+    }
+}
+
+/// @brief The optional key `threads` of @p n (path @p f + ".threads" in messages): an integer 0 .. 1024 into
+/// @p threads when given (0: all cores); @p threads keeps its value otherwise.
+void readThreads(const Reader &r, const YAML::Node &n, const std::string &f, unsigned &threads)
+{
+    if (n["threads"])
+        threads = static_cast<unsigned>(r.integer(n["threads"], f + ".threads", 0, 1024));
+}
+
+/// A duration: a number in field units, or a text "<number> s|min|h|d" converted with units.time_s.
+double duration(const Reader &r, const YAML::Node &n, const std::string &f, const MissionSpec &m)
+{
+    if (!n.IsScalar())
+        r.fail(n, f, "expected a duration: a number in the mission's time unit, or e.g. '1 h', '30 min', '2 d'");
+    r.mark(n, f);
+    try
+    {
+        return parseDuration(n.Scalar(), m.timeUnitSeconds, m.hasTimeUnit());
+    }
+    catch (const Error &e)
+    {
+        r.fail(n, f, e.what());
     }
 }
 }  // namespace ompl_glider::mission_loader

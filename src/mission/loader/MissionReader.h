@@ -63,6 +63,10 @@ public:
     std::string oneOf(const YAML::Node &node, const std::string &field, const std::set<std::string> &values) const;
     /// A time: a number in field units, or an ISO 8601 date converted with the mission's epoch or file calendar.
     double time(const YAML::Node &node, const std::string &field, const MissionSpec &m) const;
+    /// A setting of the declared ranges (mission/SettingRanges.h): a number, or for a length or a duration a text
+    /// with its unit, read and checked against the setting's row (@p field "waypoints[2].radius" is the row
+    /// "waypoints[].radius").
+    double setting(const YAML::Node &node, const std::string &field, const MissionSpec &m) const;
     /// A [a, b] pair of numbers.
     std::pair<double, double> pair(const YAML::Node &node, const std::string &field) const;
     /// A list of at least 3 pairs.
@@ -103,6 +107,11 @@ void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &fiel
 void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m);
 /// The visiting order ("given" or "free") of @p field, checked against the number of via points @p count.
 VisitOrder readVisitOrder(const Reader &r, const YAML::Node &n, const std::string &field, std::size_t count);
+/// The optional key `threads` of @p n (path @p f + ".threads" in messages): an integer 0 .. 1024 into @p threads
+/// when given (0: all cores); @p threads keeps its value otherwise.
+void readThreads(const Reader &r, const YAML::Node &n, const std::string &f, unsigned &threads);
+/// A duration: a number in field units, or a text "<number> s|min|h|d" converted with units.time_s.
+double duration(const Reader &r, const YAML::Node &n, const std::string &f, const MissionSpec &m);
 void readPolygon(const Reader &r, const YAML::Node &n, const std::string &field, PolygonSpec &poly,
                  const MissionSpec &m);
 void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m);

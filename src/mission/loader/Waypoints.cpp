@@ -49,25 +49,6 @@ VisitOrder parseVisitOrder(const std::string &name)
 
 namespace mission_loader
 {
-namespace
-{
-/// A scalar read by @p parse (a length or a duration with its unit), refused naming the field.
-template <class Parse>
-double scalar(const Reader &r, const YAML::Node &n, const std::string &f, const char *expected, Parse parse)
-{
-    if (!n.IsScalar())
-        r.fail(n, f, expected);
-    r.mark(n, f);
-    try
-    {
-        return parse(n.Scalar());
-    }
-    catch (const Error &e)
-    {
-        r.fail(n, f, e.what());
-    }
-}
-} // namespace
 
 void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &field, std::vector<ViaPointSpec> &out,
                    const MissionSpec &m)
@@ -107,23 +88,9 @@ void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &fiel
                        (key == "start" || key == "goal" ? "the mission's " + key : "another via point") +
                        " too (names are compared without case): give every via point its own name");
         if (w["radius"])
-        {
-            const bool metres = m.physicalUnits().length;
-            v.radius = scalar(r, w["radius"], f + ".radius", "expected a length: a number, or e.g. '500 m', '2 km'",
-                              [&](const std::string &t) { return parseLength(t, m.metresPerUnit(), metres); });
-            if (!(v.radius > 0.0) || !std::isfinite(v.radius))
-                r.fail(w["radius"], f + ".radius",
-                       "must be a length > 0 (the glider counts the point as reached "
-                       "within it)");
-        }
+            v.radius = r.setting(w["radius"], f + ".radius", m);
         if (w["stay"])
-        {
-            v.stay = scalar(r, w["stay"], f + ".stay",
-                            "expected a duration: a number in the mission's time unit, or e.g. '6 h', '1 d'",
-                            [&](const std::string &t) { return parseDuration(t, m.timeUnitSeconds, m.hasTimeUnit()); });
-            if (!(v.stay >= 0.0) || !std::isfinite(v.stay))
-                r.fail(w["stay"], f + ".stay", "must be a duration >= 0");
-        }
+            v.stay = r.setting(w["stay"], f + ".stay", m);
         if (w["arrive"])
         {
             const YAML::Node &a = w["arrive"];
@@ -147,53 +114,6 @@ void readViaPoints(const Reader &r, const YAML::Node &n, const std::string &fiel
             r.fail(w, f, "lies outside the region");
         out.push_back(std::move(v));
     }
-}
-
-void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
-{
-    const std::string f = "observations";
-    ObservationsSpec o;
-    o.mark = {r.file(), r.line(n)};
-    std::optional<YAML::Node> file;  // none: only the correction's parameters
-    if (!n.IsMap())
-        file = n;
-    if (n.IsMap())
-    {
-        r.checkMap(n, f, {"file", "length_scale", "time_scale", "error_ratio", "learn"});
-        if (!n["file"] && !n["length_scale"] && !n["time_scale"] && !n["error_ratio"] && !n["learn"])
-            r.fail(n, f + ".file",
-                   "missing: the glider's files (IOOS profile files or Slocum dba files: a file, folder or pattern; a "
-                   "CSV; or an ERDDAP URL), or the "
-                   "correction's parameters alone (for an execution's replan_observed)");
-        if (n["file"])
-            file = n["file"];
-        if (n["length_scale"])
-        {
-            const bool metres = m.physicalUnits().length;
-            o.lengthScale = scalar(r, n["length_scale"], f + ".length_scale", "expected a length: '20 km', or a number",
-                                   [&](const std::string &t) { return parseLength(t, m.metresPerUnit(), metres); });
-            if (!(o.lengthScale > 0.0) || !std::isfinite(o.lengthScale))
-                r.fail(n["length_scale"], f + ".length_scale", "must be > 0");
-        }
-        if (n["time_scale"])
-        {
-            o.timeScale =
-                scalar(r, n["time_scale"], f + ".time_scale", "expected a duration: '1 d', or a number",
-                       [&](const std::string &t) { return parseDuration(t, m.timeUnitSeconds, m.hasTimeUnit()); });
-            if (!(o.timeScale > 0.0) || !std::isfinite(o.timeScale))
-                r.fail(n["time_scale"], f + ".time_scale", "must be > 0");
-        }
-        if (n["error_ratio"])
-            o.errorRatio = r.positive(n["error_ratio"], f + ".error_ratio");
-        if (n["learn"])
-            o.learn = r.boolean(n["learn"], f + ".learn");
-    }
-    if (file)
-    {
-        const std::string given = r.text(*file, n.IsMap() ? f + ".file" : f);
-        o.path = isRemoteSource(given) ? given : joinPath(r.dir(), given); // a URL, or a file, folder or pattern
-    }
-    m.observations = std::move(o);
 }
 
 VisitOrder readVisitOrder(const Reader &r, const YAML::Node &n, const std::string &field, std::size_t count)

@@ -1,0 +1,254 @@
+// The `current` section: the source of the currents (a kind of the registry and its parameters, or forecast
+// files with their variables, units and calendar) and an ensemble of them ([EichhornOceans] Sec. IV).
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "MissionReader.h"
+#include "ompl_glider/ompl/Sectors.h"
+#include "ompl_glider/Config.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/io/RemoteSource.h"
+#include "ompl_glider/io/Time.h"
+#include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/io/GeoBox.h"
+#include "ompl_glider/execution/Execution.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/OutputFormats.h"
+#include "ompl_glider/registry/PlannerRegistry.h"
+#include "ompl_glider/io/FileList.h"
+#if OMPL_GLIDER_WITH_NETCDF
+#include "ompl_glider/io/UnitConversion.h"
+#endif
+
+namespace ompl_glider::mission_loader
+{
+namespace
+{
+/// Time origin of a gridded forecast (its first time, as its source loads it): ISO dates of the mission are field
+/// times in the file's calendar, and the outputs get calendar dates. The time axis is found by the source's own
+/// detection (GriddedSource::timeAxis(): variables.time, else the source's rules).
+void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    const CurrentFieldKind &kind = *findCurrentFieldKind(m.current.type);
+    ForecastRequest o;
+    o.files = m.current.forecastFiles();
+    for (const char *role : {"time", "u"})
+        if (m.current.variables.count(role))
+            o.variables[role] = m.current.variables.at(role);
+    o.timeUnits = m.current.timeUnits;
+    o.steadyRecord = m.current.steadyRecord;
+    o.optionNames = forecastFieldNames("current");
+    const std::string timeName = o.variable("time"), uName = o.variable("u");
+    ForecastTimeAxis axis;
+    try
+    {
+        axis = kind.source->timeAxis(o);
+    }
+    catch (const Error &e)
+    {
+        // on the setting the source names as at fault (Error::field()) when the mission gave it, else on the file
+        const std::string what = e.what(), &field = e.field();
+        if (n["time_units"] && field == "current.time_units")
+            r.fail(n["time_units"], field, what);
+        if (n["steady_record"] && field == "current.steady_record")
+            r.fail(n["steady_record"], field, what);
+        if (!timeName.empty() && field == "current.variables.time")
+            r.fail(n["variables"]["time"], field, what);
+        if (!uName.empty() && field == "current.variables.u")
+            r.fail(n["variables"]["u"], field, what);
+        r.fail(n["file"], "current.file", what);
+    }
+    m.current.steady = axis.steady;
+    if (!axis.found || !axis.dated)
+        return;  // a steady field without dates, or raw times of a Cartesian file: no calendar
+    MissionSpec::FileCalendar fc;
+    fc.calendar = axis.calendar;
+    fc.originSeconds = axis.originSeconds;
+    m.fileCalendar = fc;
+    m.epoch = fc.originSeconds - secondsSinceCalendarEpoch(DateTime{}, axis.calendar);
+}
+
+/// current.velocity_units (checked with UDUNITS-2 now: it does not depend on the file), current.time_units
+/// (checked against the file's calendar by readFileCalendar) and current.steady_record.
+void readUnitsAndRecord(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c)
+{
+    if (n["velocity_units"])
+    {
+        c.velocityUnits = r.text(n["velocity_units"], f + ".velocity_units");
+#if OMPL_GLIDER_WITH_NETCDF
+        try
+        {
+            (void)velocityToMetresPerSecond(c.velocityUnits);
+        }
+        catch (const Error &e)
+        {
+            r.fail(n["velocity_units"], f + ".velocity_units", e.what());
+        }
+#endif
+    }
+    if (n["time_units"])
+    {
+        c.timeUnits = r.text(n["time_units"], f + ".time_units");
+        std::string lower = c.timeUnits;
+        for (char &ch : lower)
+            ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        if (lower.find(" since ") == std::string::npos)
+            r.fail(n["time_units"], f + ".time_units",
+                   "expected '<seconds|minutes|hours|days> since <date>', got '" + c.timeUnits + "'");
+    }
+    if (n["steady_record"])
+        c.steadyRecord =
+            static_cast<std::size_t>(r.integer(n["steady_record"], f + ".steady_record", 0, 1000000000L));
+}
+
+/// current.file: a path or a glob pattern, or a list of them (a forecast in several files), relative to the
+/// mission file; every file must exist. An OPeNDAP URL (io/RemoteSource.h) is taken as it is.
+void readForecastFiles(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c)
+{
+    const auto resolved = [&](const std::string &item) {
+        return isRemoteSource(item) || item.rfind("ZARR:", 0) == 0 ? item : joinPath(r.dir(), item);
+    };
+    std::vector<std::string> items;
+    if (n.IsSequence())
+    {
+        if (n.size() == 0)
+            r.fail(n, f, "an empty list: expected forecast files or glob patterns");
+        for (std::size_t k = 0; k < n.size(); ++k)
+            items.push_back(resolved(r.text(n[k], f)));
+    }
+    else
+        items.push_back(resolved(r.text(n, f)));
+    std::vector<std::string> files = items;
+    try
+    {
+        files = expandForecastFiles(items);
+    }
+    catch (const Error &e)
+    {
+        r.fail(n, f, e.what());
+    }
+    for (const std::string &file : files)
+        if (!isRemoteSource(file) && !fileExists(file))
+            r.fail(n, f, "cannot open '" + file + "'");
+    c.file = files.front();
+    if (files.size() > 1)
+        c.files = files;
+}
+}  // namespace
+
+void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    if (isDrawnEnsemble(n))
+        return readDrawnEnsemble(r, n, m);  // members drawn from one source (DrawnEnsemble.cpp)
+    if (n.IsMap() && n["ensemble"])
+    {
+        // members of one kind (analytic flows, or forecasts on one calendar); the first sets names and dates
+        r.checkMap(n, "current", {"ensemble"});
+        const YAML::Node &l = n["ensemble"];
+        if (!l.IsSequence() || l.size() < 2)
+            r.fail(l, "current.ensemble", "expected a list of 2 or more current sources (type: ..., as in 'current')");
+        std::vector<CurrentSpec> members;
+        for (std::size_t i = 0; i < l.size(); ++i)
+        {
+            const std::string f = "current.ensemble[" + std::to_string(i) + "]";
+            CurrentSpec c;
+            readCurrentSource(r, l[i], f, c);
+            c.mark = {r.file(), r.line(l[i])};
+            if (i > 0 && (c.isForecast()) != (members.front().isForecast()))
+                r.fail(l[i]["type"], f + ".type",
+                       "every member must be of one kind: all forecasts read from files or all analytic flows (the "
+                       "first is " +
+                           members.front().type + ")");
+            members.push_back(c);
+        }
+        m.current = members.front();
+        m.current.mark = {r.file(), r.line(n)};
+        m.current.members = members;
+        if (m.current.isForecast())
+            readFileCalendar(r, l[0], m);
+        return;
+    }
+    readCurrentSource(r, n, "current", m.current);
+    if (m.current.isForecast())
+        readFileCalendar(r, n, m);
+}
+
+void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c,
+                       const std::set<std::string> &extraKeys)
+{
+    std::set<std::string> keys{"type", "parameters", "file", "variables", "interpolation", "horizon",
+                               "velocity_units", "time_units", "steady_record", "zero_velocity_land", "depth_average"};
+    keys.insert(extraKeys.begin(), extraKeys.end());
+    r.checkMap(n, f, keys);
+    c.mark = {r.file(), r.line(n)};
+    std::set<std::string> kinds;
+    for (const CurrentFieldKind &k : currentFieldKinds())
+        kinds.insert(k.name);
+    if (!n["type"])
+        r.fail(n, f + ".type", "missing (" + currentFieldKindList() + ")");
+    c.type = r.oneOf(n["type"], f + ".type", kinds);
+    const CurrentFieldKind &kind = *findCurrentFieldKind(c.type);
+    if (n["parameters"])
+    {
+        std::set<std::string> names;
+        for (const auto &[key, value] : kind.parameters)  // (the set checkMap() takes; hasParameter() decides alike)
+            names.insert(key);
+        r.checkMap(n["parameters"], f + ".parameters", names);
+        for (auto it = n["parameters"].begin(); it != n["parameters"].end(); ++it)
+        {
+            const std::string key = it->first.Scalar();
+            c.parameters[key] = r.finite(it->second, f + ".parameters." + key);
+        }
+    }
+    if (c.type == "double_gyre" && c.parameters.count("length") && !(c.parameters["length"] > 0))
+        r.fail(n["parameters"]["length"], f + ".parameters.length", "expected a number > 0");
+    if (c.type == "rankine_vortex" && c.parameters.count("radius") && !(c.parameters["radius"] > 0))
+        r.fail(n["parameters"]["radius"], f + ".parameters.radius", "expected a number > 0 (the core radius)");
+    const bool gridded = kind.gridded();
+    for (const char *key : {"file", "variables", "interpolation", "horizon", "velocity_units", "time_units",
+                            "steady_record", "zero_velocity_land", "depth_average"})
+        if (n[key] && !gridded)
+            r.fail(n[key], f + "." + key, "only for type " + griddedKindList(" or ") + " (a forecast read from files)");
+    if (!gridded)
+        return;
+    if (!n["file"])
+        r.fail(n, f + ".file", "missing: the forecast's file (type " + c.type + ")");
+    readForecastFiles(r, n["file"], f + ".file", c);
+    if (n["variables"])
+    {
+        r.checkMap(n["variables"], f + ".variables", {"u", "v", "x", "y", "lon", "lat", "depth", "time", "mask", "angle"});
+        for (auto it = n["variables"].begin(); it != n["variables"].end(); ++it)
+            c.variables[it->first.Scalar()] = r.text(it->second, f + ".variables." + it->first.Scalar());
+    }
+    if (n["interpolation"])
+    {
+        const YAML::Node &i = n["interpolation"];
+        r.checkMap(i, f + ".interpolation", {"xy", "depth", "time"});
+        if (i["xy"])
+            c.xyInterpolation = parseInterp2D(r.oneOf(i["xy"], f + ".interpolation.xy", {"nearest", "bilinear", "bicubic"}));
+        if (i["depth"])
+            c.depthInterpolation =
+                parseInterp1D(r.oneOf(i["depth"], f + ".interpolation.depth", {"nearest", "linear", "cubic", "akima"}));
+        if (i["time"])
+            c.timeInterpolation =
+                parseInterp1D(r.oneOf(i["time"], f + ".interpolation.time", {"nearest", "linear", "cubic", "akima"}));
+    }
+    if (n["horizon"])
+        c.horizonPolicy = parseBeyondForecast(r.oneOf(n["horizon"], f + ".horizon", {"refuse", "hold_last"}));
+    if (n["zero_velocity_land"])
+        c.zeroVelocityLand = r.boolean(n["zero_velocity_land"], f + ".zero_velocity_land");
+    if (n["depth_average"])
+    {
+        const auto [top, bottom] = r.pair(n["depth_average"], f + ".depth_average");
+        if (!(top >= 0.0 && top <= bottom && bottom <= 12000.0))
+            r.fail(n["depth_average"], f + ".depth_average",
+                   "expected [top, bottom] in metres, positive down, 0 <= top <= bottom <= 12000");
+        c.depthAverage = std::make_pair(top, bottom);
+    }
+    readUnitsAndRecord(r, n, f, c);
+}
+}  // namespace ompl_glider::mission_loader
