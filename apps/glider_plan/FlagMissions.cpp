@@ -2,7 +2,6 @@
 // library's applyOverrides(): planner, place and time, via points, outputs, safety, execution), and the missions of
 // the built-in, --mission and --currents modes.
 #include <algorithm>
-#include <cstdio>
 #include <array>
 #include <string>
 #include <tuple>
@@ -13,7 +12,6 @@
 #include "FlagText.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/FileList.h"
-#include "ompl_glider/io/GliderObservations.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/Overrides.h"
 
@@ -69,6 +67,7 @@ std::shared_ptr<const ompl_glider::SettingWords> flagWords()
         {"vehicle.depth", "--depth"},
         {"departure.time", "--departure"},
         {"start", "--start"},
+        {"observations", "--observations"},
         {"goal", "--goal"},
         {"region", "--region"},
         {"current.file", "--currents"},
@@ -123,9 +122,9 @@ MissionOverrides overridesOf(const Flags &f)
     if (f.speed)
         o.speed = Given<double>{*f.speed, "--speed"};
     if (!f.departure.empty())
-        o.departure = Given<std::string>{f.departure, f.departureFrom.empty() ? "--departure" : f.departureFrom};
+        o.departure = Given<std::string>{f.departure, "--departure"};
     if (!f.start.empty())  // lon,lat where the mission gives lon/lat
-        o.start = Given<Point2>{pair("--start", f.start), f.startFrom.empty() ? "--start" : f.startFrom};
+        o.start = Given<Point2>{pair("--start", f.start), "--start"};
     if (!f.goal.empty())
         o.goal = Given<Point2>{pair("--goal", f.goal), "--goal"};
     if (!f.region.empty())
@@ -238,31 +237,11 @@ MissionSpec forecastMissionOf(Flags f)
         f.forecast.current.file = files.front();
     else
         f.forecast.current.files = files;
-    const bool fromFix = f.start.empty(), departureFromFix = fromFix && f.departure.empty();
-    if (fromFix)
-    {
-        // the glider's last fix (and its time without --departure): --observations
-        try
-        {
-            const ompl_glider::GliderObservations o = ompl_glider::readGliderObservations(f.observations);
-            if (!o.lastFix)
-                throw ompl_glider::Error("they report no position to start from");
-            char start[64];
-            std::snprintf(start, sizeof start, "%.17g,%.17g", o.lastFix->at.lon, o.lastFix->at.lat);
-            f.start = start;
-            f.startFrom = "the last fix of --observations";
-            if (f.departure.empty())
-            {
-                f.departure = ompl_glider::formatIsoTime(o.lastFix->time);
-                f.departureFrom = "the last fix's time (--observations)";
-            }
-        }
-        catch (const ompl_glider::Error &e)
-        {
-            throw UsageError{"--observations " + f.observations + ": " + e.what()};
-        }
-    }
-    f.forecast.start = pair("--start", f.start);
+    // without --start: the glider's last fix (and its time without --departure), read by the mission
+    f.forecast.startAtLastFix = f.start.empty();
+    f.forecast.observations = f.observations;
+    if (!f.forecast.startAtLastFix)
+        f.forecast.start = pair("--start", f.start);
     f.forecast.goal = pair("--goal", f.goal);
     f.forecast.departure = f.departure;
     if (!f.region.empty())
@@ -272,22 +251,8 @@ MissionSpec forecastMissionOf(Flags f)
         f.forecast.depth = *f.depth;
     f.forecast.snapToWater = f.snapToWater;
     f.forecast.words = flagWords();
-    if (fromFix)
-    {
-        // an error about the start or the departure names the observations that gave them, not an absent flag
-        auto words = std::make_shared<ompl_glider::SettingWords>(*flagWords());
-        words->given["start"] = f.startFrom;
-        if (departureFromFix)
-            words->given["departure.time"] = f.departureFrom;
-        f.forecast.words = words;
-    }
     MissionSpec m = forecastMission(f.forecast);
     applyFlags(f, m, true);
-    // the last fix as a first guess, until the mission resumes there (resumeAtLastFix())
-    if (fromFix)
-        m.marks["start"] = SourceMark{"--observations", 0, Origin::Observations};
-    if (departureFromFix)
-        m.marks["departure.time"] = SourceMark{"--observations", 0, Origin::Observations};
     return m;
 }
 }  // namespace glider_plan

@@ -26,9 +26,6 @@ struct UsageError
 struct Flags
 {
     std::string mission, currents, out, start, goal, departure, planner, coastline, region, arriveBetween;
-    /// Where start and departure came from when no flag gave them (the last fix of --observations): the words of
-    /// an error about them; empty: --start, --departure
-    std::string startFrom, departureFrom;
     std::string via, order;  ///< --via 'lon,lat;lon,lat', --order given|free
     std::string observations;  ///< --observations PATH: the glider's DAC files
     std::optional<std::string> speeds;  // given, even empty, is a sweep request

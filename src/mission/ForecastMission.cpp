@@ -18,6 +18,7 @@
 #include "ompl_glider/current/ForecastSource.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/Observations.h"
 #include "ompl_glider/mission/SettingRanges.h"
 #include "../io/NumberText.h"
 
@@ -357,10 +358,41 @@ void finishSpec(MissionSpec &m, const LoadedForecast &nc, const std::optional<do
     m.outputs.directory.clear();
     m.outputs.gotoNumber = 10;
 }
+
+
+/// @p q with the start (and, where none is given, the departure) at the last fix of its observations, and the words
+/// that name them so.
+ForecastInput atLastFix(const ForecastInput &q)
+{
+    ForecastInput at = q;
+    const std::string source = named(q, "observations");
+    std::optional<GliderFix> fix;
+    try
+    {
+        fix = lastFixOf(q.observations);
+        if (!fix)
+            throw Error("they report no position to start from");
+    }
+    catch (const Error &e)
+    {
+        throw Error(source + " " + q.observations + ": " + e.what());
+    }
+    at.start = {fix->at.lon, fix->at.lat};
+    auto words = std::make_shared<SettingWords>(q.words ? *q.words : SettingWords{{}, {}, Origin::Program});
+    words->given["start"] = "the last fix of " + source;
+    if (q.departure.empty())
+    {
+        at.departure = formatIsoTime(fix->time);
+        words->given["departure.time"] = "the last fix's time (" + source + ")";
+    }
+    at.words = words;
+    return at;
+}
 }  // namespace
 
-MissionSpec forecastMission(const ForecastInput &q)
+MissionSpec forecastMission(const ForecastInput &input)
 {
+    const ForecastInput q = input.startAtLastFix ? atLastFix(input) : input;
     const std::vector<std::string> files = forecastFiles(q);
     // in messages: the file, or the files of a forecast in several
     std::string file = files.front();
@@ -389,6 +421,8 @@ MissionSpec forecastMission(const ForecastInput &q)
     checkEndpoints(nc, q, file, geographic);
     checkDeparture(nc, q);
     finishSpec(m, nc, epoch, q);
+    if (input.startAtLastFix)  // a first guess until the mission resumes at the fix it reads then
+        markLastFixGuess(m, SourceMark{named(input, "observations"), 0}, input.departure.empty());
     return m;
 }
 

@@ -17,27 +17,38 @@
 
 namespace ompl_glider
 {
+std::optional<GliderFix> lastFixOf(const std::string &path)
+{
+    return readGliderObservations(path).lastFix;
+}
+
+void markLastFixGuess(MissionSpec &m, const SourceMark &mark, bool departure)
+{
+    m.marks["start"] = SourceMark{mark.file, mark.line, Origin::Observations};
+    if (departure)
+        m.marks["departure.time"] = SourceMark{mark.file, mark.line, Origin::Observations};
+}
+
 void startAtLastFix(MissionSpec &m, const SourceMark &mark, bool keepDeparture)
 {
-    const GliderObservations o = readGliderObservations(m.observations->path);
-    if (!o.lastFix)
+    const std::optional<GliderFix> fix = lastFixOf(m.observations->path);
+    if (!fix)
         throw Error("the observations '" + m.observations->path + "' report no position to start from");
     m.start.geographic = true;
-    m.start.lonLat = o.lastFix->at;
-    m.marks["start"] = SourceMark{mark.file, mark.line, Origin::Observations};
+    m.start.lonLat = fix->at;
     if (!keepDeparture)
     {
         try
         {
-            m.departure.time = m.timeOf(formatIsoTime(o.lastFix->time));
+            m.departure.time = m.timeOf(formatIsoTime(fix->time));
         }
         catch (const Error &e)
         {
             throw Error(std::string("the last fix's time: ") + e.what());
         }
         m.departure.window = false;
-        m.marks["departure.time"] = SourceMark{mark.file, mark.line, Origin::Observations};
     }
+    markLastFixGuess(m, mark, !keepDeparture);
 }
 
 namespace

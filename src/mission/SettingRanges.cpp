@@ -119,8 +119,10 @@ double checkSetting(const std::string &field, double v, const std::string &given
                     ", got " + given);
     if (std::isnan(v) || (s.lowIncluded ? !(v >= s.low) : !(v > s.low)))
         throw Error("expected " + valueWord(s.value) + " " + rangeWords(s) + meaning + ", got " + given);
+    if (v > s.high && !s.highText.empty())  // a limit of the machine or of the method, said as such
+        throw Error("at most " + s.highText + ", got " + given);
     if (v > s.high)
-        throw Error("at most " + (s.highText.empty() ? text::number(s.high) : s.highText) + ", got " + given);
+        throw Error("expected " + valueWord(s.value) + " " + rangeWords(s) + meaning + ", got " + given);
     if (!s.lowIncluded && s.low == 0.0 && !std::isnormal(v))  // a denormal (1e-310): divisions by it overflow
         throw Error("expected " + valueWord(s.value) + " > 0, got " + given +
                     ", below the smallest normal double (2.2e-308): too small to compute with");

@@ -36,6 +36,16 @@ struct ObservationReport
     std::vector<DacRecord> dac;       ///< every DAC read (before the departure's cut), in time order
 };
 
+/// @brief The last fix of the glider's observations at @p path (IOOS profile files, Slocum dba files, a CSV or an
+/// ERDDAP URL): the one reader of it for the mission loader, forecastMission() (the command line's `--currents`
+/// and Python's plan() without a start); none when they report no position.
+/// @throws Error when they cannot be read (without the place: the caller names it).
+std::optional<GliderFix> lastFixOf(const std::string &path);
+
+/// @brief Marks @p m's start (and its departure when @p departure) as the last fix's first guess (Origin::Observations
+/// at @p mark's place), which resumeAtLastFix() replaces by the fix it reads when the mission is made.
+void markLastFixGuess(MissionSpec &m, const SourceMark &mark, bool departure);
+
 /// @brief Where @p m starts when it gives no start: its observations' last fix (lon/lat), and its departure at the
 /// fix's time unless @p keepDeparture, marked as the observations' (Origin::Observations, at @p mark's place) until
 /// the mission resumes there (resumeAtLastFix()): a front end's first guess, so that a forecast's region and
