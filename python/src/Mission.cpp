@@ -301,9 +301,13 @@ void addForbidden(MissionSpec &m, const py::dict &item, std::size_t index)
         ObstacleSpec o;
         o.polygon = poly;
         if (item.contains("kind"))
-            o.kind = value<std::string>(item["kind"], kw + ".kind", "a text");
-        if (o.kind != "island" && o.kind != "land" && o.kind != "restricted area")
-            throw Error(where + ": kind must be island, land or restricted area, got '" + o.kind + "'");
+        {
+            const std::string kind = value<std::string>(item["kind"], kw + ".kind", "a text");
+            const std::optional<RegionKind> k = parseRegionKind(kind);
+            if (!k || *k == RegionKind::Closure || *k == RegionKind::Ice)
+                throw Error(where + ": kind must be island, land or restricted area, got '" + kind + "'");
+            o.kind = *k;
+        }
         m.forbidden.obstacles.push_back(std::move(o));
     }
 }

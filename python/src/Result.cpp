@@ -238,7 +238,7 @@ py::list polygons(const PyResult &r)
             v(k, 0) = p.points[k].x, v(k, 1) = p.points[k].y;
         py::dict d;
         d["name"] = p.name;
-        d["kind"] = p.kind;
+        d["kind"] = regionKindName(p.kind);
         d["points"] = a;
         out.append(d);
     }

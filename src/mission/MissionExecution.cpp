@@ -487,7 +487,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         headingLegs = headingLegs || l.headings.has_value();
     if ((plan.headingRoute() || headingLegs) && e.strategies == ExecutionSpec().strategies)
         r.strategies.insert(r.strategies.begin(), ControlStrategy::PlannedHeadings);
-    r.truth = e.truth ? problem.getTruth()->name() : "forecast";
+    r.truth = e.truth ? problem.getTruth()->name() : kTruthIsForecast;
     const double trip = plan.solved ? plan.path.back().t - plan.departure : problem.minTripDuration(m.vehicle.speed);
     r.surfacingInterval = surfacingInterval(m, trip, r.surfacingIntervalSource);
     if (!(r.surfacingInterval > 0.0) || !std::isfinite(r.surfacingInterval))

@@ -376,12 +376,12 @@ std::shared_ptr<const DiveProfileTravelTime> MissionProblem::diveProfiles(double
     if (!spec_.dive.enabled)
         return nullptr;
     std::shared_ptr<const Bathymetry> bathymetry;
-    if (spec_.dive.bathymetryType == "constant")
+    if (spec_.dive.bathymetry == DiveSpec::Bathymetry::Constant)
     {
         const double d = spec_.dive.bathymetryDepth;
         bathymetry = std::make_shared<FunctionBathymetry>([d](double, double) { return d; });
     }
-    else if (spec_.dive.bathymetryType == "netcdf")
+    else if (spec_.dive.bathymetry == DiveSpec::Bathymetry::File)
     {
 #if !OMPL_GLIDER_WITH_NETCDF
         throw Error(spec_.file + ": field 'dive_profile.bathymetry': this build has no NetCDF support");

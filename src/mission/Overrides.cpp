@@ -419,7 +419,7 @@ void applyExecution(const MissionOverrides &o, MissionSpec &m)
                                                        : o.executionSeed->source);
     e.enabled = true;
     e.mark = SourceMark{first, 0, o.origin};
-    if (o.truth && o.truth->value != "forecast")
+    if (o.truth && o.truth->value != kTruthIsForecast)
         e.truth = truthOf(*o.truth, m, o.origin);
     else if (o.truth)
         e.truth.reset();

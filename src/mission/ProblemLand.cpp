@@ -44,7 +44,7 @@ void MissionProblem::buildRegions()
 {
     const MissionSpec &m = spec_;
     // the polygon as given, checked: every polygon GEOS calls valid (a hole may touch its outer ring at a point)
-    auto shape = [&](const PolygonSpec &p, const std::string &kind) {
+    auto shape = [&](const PolygonSpec &p, RegionKind kind) {
         auto given = [](const std::vector<std::pair<double, double>> &r) {
             std::vector<Point2> out;
             for (const auto &[a, b] : r)
@@ -65,7 +65,7 @@ void MissionProblem::buildRegions()
         return Polygon(outer, holes, p.name, RingCheck::validated);
     };
     // a mission's polygon: its faults named by its place in the mission
-    auto polygon = [&](const PolygonSpec &p, const std::string &kind) {
+    auto polygon = [&](const PolygonSpec &p, RegionKind kind) {
         try
         {
             return shape(p, kind);
@@ -77,7 +77,7 @@ void MissionProblem::buildRegions()
     };
     auto regions = std::make_shared<ForbiddenRegions>();
     for (const auto &o : m.forbidden.obstacles)
-        regions->add(std::make_shared<StaticRegion>(o.polygon.name, polygon(o.polygon, o.kind), o.kind));
+        regions->add(std::make_shared<StaticRegion>(o.polygon.name, polygon(o.polygon, o.kind), regionKindName(o.kind)));
     if (!m.forbidden.coastline.empty())
     {
         // the coastline's land polygons that meet the box (with a margin of a tenth of its size)
@@ -102,7 +102,7 @@ void MissionProblem::buildRegions()
             }
             try
             {
-                regions->add(std::make_shared<StaticRegion>(p.name, shape(p, "land"), "land"));
+                regions->add(std::make_shared<StaticRegion>(p.name, shape(p, RegionKind::Land), regionKindName(RegionKind::Land)));
                 polygons_.back().coastline = true;
             }
             catch (const Error &e)
@@ -120,7 +120,7 @@ void MissionProblem::buildRegions()
             w.push_back({p.first, p.second});
         try
         {
-            regions->add(std::make_shared<TimeWindowedZone>(t.polygon.name, polygon(t.polygon, "closure"), w));
+            regions->add(std::make_shared<TimeWindowedZone>(t.polygon.name, polygon(t.polygon, RegionKind::Closure), w));
             polygons_.back().windows = t.windows;
         }
         catch (const Error &e)
@@ -130,7 +130,7 @@ void MissionProblem::buildRegions()
     }
     for (const auto &i : m.forbidden.ice)
     {
-        Polygon shape = polygon(i.polygon, "ice");
+        Polygon shape = polygon(i.polygon, RegionKind::Ice);
         try
         {
             if (i.carried)

@@ -17,6 +17,7 @@
 #include "ompl_glider/io/Coastline.h"
 #include "ompl_glider/io/DepthGrid.h"
 #include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/SettingRanges.h"
 
 namespace ompl_glider
 {
@@ -108,17 +109,22 @@ std::shared_ptr<const ForbiddenCells> MissionProblem::shallowWater()
 void MissionProblem::addSafety(ForbiddenRegions &regions)
 {
     const MissionSpec &m = spec_;
-    if (!(m.safety.keepOff >= 0.0) || !std::isfinite(m.safety.keepOff))
-        throw Error(at(m, "safety.keep_off") + "the keep-off distance must be finite and >= 0, got " +
-                    text::number(m.safety.keepOff));
-    if (!(m.safety.minDepth >= 0.0) || !std::isfinite(m.safety.minDepth))
-        throw Error(at(m, "safety.min_depth") + "the depth limit must be finite and >= 0 m, got " +
-                    text::number(m.safety.minDepth));
+    // (a program may set them without the loader or the overrides: their declared ranges, SettingRanges.h)
+    for (const auto &[field, value] : {std::pair<const char *, double>{"safety.keep_off", m.safety.keepOff},
+                                       std::pair<const char *, double>{"safety.min_depth", m.safety.minDepth}})
+        try
+        {
+            checkSetting(field, value, text::number(value));
+        }
+        catch (const Error &e)
+        {
+            throw Error(at(m, field) + e.what());
+        }
     // land's boundary: the field's land cells, the land polygons (coastline, islands, land obstacles)
     std::vector<Segment2> edges = field_->landBoundary(m.vehicle.depth);
     for (const auto &r : regions.regions())
         if (const auto *s = dynamic_cast<const StaticRegion *>(r.get()))
-            if (s->kind() == "land" || s->kind() == "island")
+            if (s->kind() == regionKindName(RegionKind::Land) || s->kind() == regionKindName(RegionKind::Island))
             {
                 const std::vector<Segment2> e = s->polygon().edges();
                 edges.insert(edges.end(), e.begin(), e.end());

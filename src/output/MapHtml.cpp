@@ -393,7 +393,7 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
     {
         if (poly.coastline)
             coast.push_back(f.line(poly.points));
-        else if (poly.kind == "island" || poly.kind == "land")
+        else if (poly.kind == RegionKind::Island || poly.kind == RegionKind::Land)
             land.push_back(f.line(poly.points));
         else
         {
@@ -403,7 +403,7 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
                 const std::string a = p.isoTime(from), b = p.isoTime(to);
                 windows.push_back({a.empty() ? PageJson(from) : PageJson(a), b.empty() ? PageJson(to) : PageJson(b)});
             }
-            forbidden.push_back({{"name", poly.name + " (" + poly.kind + ")"},
+            forbidden.push_back({{"name", poly.name + " (" + regionKindName(poly.kind) + ")"},
                                  {"windows", windows},
                                  {"rings", PageJson::array({f.line(poly.points)})}});
         }

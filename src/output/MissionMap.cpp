@@ -31,13 +31,13 @@ MapPolygon mapPolygon(const MissionPolygon &p)
     }
     for (const Point2 &q : p.points)
         mp.vertices.push_back({q.x, q.y});
-    if (p.kind == "closure")
+    if (p.kind == RegionKind::Closure)
     {
         mp.hatched = true;
         mp.fill = {0.9, 0.6, 0.1, 0.35};
         mp.stroke = {0.7, 0.4, 0.0, 1.0};
     }
-    else if (p.kind == "ice")
+    else if (p.kind == RegionKind::Ice)
     {
         mp.fill = {0.85, 0.93, 1.0, 0.75};
         mp.stroke = {0.3, 0.5, 0.8, 1.0};

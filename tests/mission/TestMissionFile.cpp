@@ -93,7 +93,7 @@ TEST(MissionFile, ExamplesLoad)
     EXPECT_DOUBLE_EQ(*l.epoch, parseIsoTime("2026-03-15T00:00:00Z"));
     EXPECT_TRUE(l.start.geographic);
     EXPECT_DOUBLE_EQ(l.start.lonLat.lon, -52.7);
-    EXPECT_EQ(l.dive.bathymetryType, "constant");
+    EXPECT_EQ(l.dive.bathymetry, DiveSpec::Bathymetry::Constant);
     EXPECT_DOUBLE_EQ(l.dive.bathymetryDepth, 180.0);
     EXPECT_DOUBLE_EQ(l.travel.eps, 1.0);
 }

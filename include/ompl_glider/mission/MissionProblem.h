@@ -37,7 +37,7 @@ struct GeoBox;
 struct MissionPolygon
 {
     std::string name;            ///< its name
-    std::string kind;            ///< island / land / restricted area / closure / ice
+    RegionKind kind{RegionKind::Island};  ///< what it is (its name: regionKindName())
     std::vector<Point2> points;  ///< outer ring, planning frame
     bool coastline{false};       ///< one of the coastline file's land polygons
     /// A closure's windows: the closed [from, to] intervals (field time units) in which it is forbidden; empty: at

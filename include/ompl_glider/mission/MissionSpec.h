@@ -246,9 +246,15 @@ struct DiveSpec
 {
     bool enabled{false};     ///< dive profiles evaluated on the planned legs
     DiveProfileParams params;
-    std::string bathymetryType{"none"};  ///< none | constant | netcdf
+    /// Where the seafloor depth comes from: nowhere, one depth, or a file (the mission file's `type: netcdf`)
+    enum class Bathymetry
+    {
+        None,
+        Constant,
+        File
+    } bathymetry{Bathymetry::None};
     double bathymetryDepth{std::numeric_limits<double>::infinity()};  ///< constant seafloor depth
-    std::string bathymetryFile;      ///< netcdf seafloor depth (positive down)
+    std::string bathymetryFile;      ///< a file of seafloor depth (positive down)
     std::string bathymetryVariable{"depth"};
     unsigned threads{0};             ///< pool for the profiles (0: all cores)
 };
@@ -263,11 +269,29 @@ struct PolygonSpec
     SourceMark mark;                              ///< where it was given
 };
 
+/// @brief What a forbidden polygon of the mission is: an obstacle (forbidden at all times: island, land, restricted
+/// area), a zone closed during time windows, or a drifting ice zone. Its name (regionKindName()) is the mission
+/// file's word for it and what the outputs print.
+enum class RegionKind
+{
+    Island,
+    Land,
+    RestrictedArea,
+    Closure,
+    Ice
+};
+
+/// @brief "island", "land", "restricted area", "closure", "ice".
+const char *regionKindName(RegionKind k);
+
+/// @brief The kind named @p name (regionKindName()); none for another text.
+std::optional<RegionKind> parseRegionKind(const std::string &name);
+
 /// @brief An obstacle forbidden at all times (island, land, restricted area).
 struct ObstacleSpec
 {
     PolygonSpec polygon;
-    std::string kind{"island"};  ///< island | land | restricted area
+    RegionKind kind{RegionKind::Island};  ///< Island, Land or RestrictedArea
 };
 
 /// @brief A zone forbidden during time windows.
@@ -406,6 +430,10 @@ struct FleetGliderSpec
     std::optional<VisitOrder> order;      ///< its visiting order (unset: the mission's)
     int line{0};                      ///< the entry's line in the mission file
 };
+
+/// @brief The word for "the truth is the forecast itself" (`execution.truth: forecast`, --truth forecast, and the
+/// name of that truth in the outputs).
+inline constexpr const char *kTruthIsForecast = "forecast";
 
 /// @brief Flying the plan in another ocean ([ThompsonICRA]): the "truth" current, the surfacings, the
 /// control strategies compared, and a batch of other start/goal pairs.

@@ -72,8 +72,9 @@ void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m)
         r.checkMap(b, g, {"type", "depth", "file", "variable"});
         if (!b["type"])
             r.fail(b, g + ".type", "missing (constant or netcdf)");
-        d.bathymetryType = r.oneOf(b["type"], g + ".type", {"constant", "netcdf"});
-        if (d.bathymetryType == "constant")
+        d.bathymetry = r.oneOf(b["type"], g + ".type", {"constant", "netcdf"}) == "constant" ? DiveSpec::Bathymetry::Constant
+                                                                                             : DiveSpec::Bathymetry::File;
+        if (d.bathymetry == DiveSpec::Bathymetry::Constant)
         {
             if (!b["depth"])
                 r.fail(b, g + ".depth", "missing: the seafloor depth");

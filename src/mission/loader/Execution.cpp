@@ -36,7 +36,7 @@ void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (n["truth"])
     {
         const YAML::Node &t = n["truth"];
-        if (t.IsScalar() && t.Scalar() == "forecast")
+        if (t.IsScalar() && t.Scalar() == kTruthIsForecast)
             e.truth.reset();
         else
         {

@@ -10,6 +10,36 @@
 #include "ompl_glider/Exception.h"
 #include "../../io/NumberText.h"
 
+namespace ompl_glider
+{
+const char *regionKindName(RegionKind k)
+{
+    switch (k)
+    {
+    case RegionKind::Land:
+        return "land";
+    case RegionKind::RestrictedArea:
+        return "restricted area";
+    case RegionKind::Closure:
+        return "closure";
+    case RegionKind::Ice:
+        return "ice";
+    case RegionKind::Island:
+        break;
+    }
+    return "island";
+}
+
+std::optional<RegionKind> parseRegionKind(const std::string &name)
+{
+    for (const RegionKind k :
+         {RegionKind::Island, RegionKind::Land, RegionKind::RestrictedArea, RegionKind::Closure, RegionKind::Ice})
+        if (name == regionKindName(k))
+            return k;
+    return std::nullopt;
+}
+}  // namespace ompl_glider
+
 namespace ompl_glider::mission_loader
 {
 namespace
@@ -92,7 +122,7 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
             g.fail(geom, fld + ".geometry.type",
                    "only Polygon and MultiPolygon are forbidden regions (got " + type + ")");
         YAML::Node props = ft["properties"];
-        std::string name = "feature " + std::to_string(i), kind = "island";
+        std::string name = "feature " + std::to_string(i), kind = regionKindName(RegionKind::Island);
         if (props && props.IsMap())
         {
             g.checkMap(props, fld + ".properties",
@@ -136,7 +166,8 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
                 for (std::size_t h = 0; h < rings.size(); ++h)
                     checkLonLat(g, rings[h], pf + "[" + std::to_string(h) + "]", name,
                                 h == 0 ? poly.points : poly.holes[h - 1]);
-            if (kind == "closure")
+            const RegionKind parsed = *parseRegionKind(kind);  // one of the names oneOf() took
+            if (parsed == RegionKind::Closure)
             {
                 TimeWindowSpec tw;
                 tw.polygon = poly;
@@ -147,7 +178,7 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
                         g.pair(props["windows"][w], fld + ".properties.windows[" + std::to_string(w) + "]"));
                 m.forbidden.timeWindows.push_back(tw);
             }
-            else if (kind == "ice")
+            else if (parsed == RegionKind::Ice)
             {
                 IceSpec ice;
                 ice.polygon = poly;
@@ -164,7 +195,7 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
                 m.forbidden.ice.push_back(ice);
             }
             else
-                m.forbidden.obstacles.push_back({poly, kind});
+                m.forbidden.obstacles.push_back({poly, parsed});
         }
     }
 }
@@ -204,7 +235,7 @@ void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
                                                     {"name", "kind", "points", "lonlat", "holes"}, "obstacle",
                                                     o.polygon, m);
             if (l[i]["kind"])
-                o.kind = r.oneOf(l[i]["kind"], g + ".kind", {"island", "land", "restricted area"});
+                o.kind = *parseRegionKind(r.oneOf(l[i]["kind"], g + ".kind", {"island", "land", "restricted area"}));
             m.forbidden.obstacles.push_back(o);
         }
     if (const YAML::Node l = list("time_windows"))
