@@ -6,6 +6,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/SummaryJson.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Report.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputWriter.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/OutputFormatWriters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputDirectory.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ExecutionFiles.cpp
   ${CMAKE_CURRENT_LIST_DIR}/FleetFiles.cpp
