@@ -4,8 +4,10 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/SeagliderTargets.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RouteFiles.cpp
   ${CMAKE_CURRENT_LIST_DIR}/SummaryJson.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/SummaryInputs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Report.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputWriter.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/OutputFormatWriters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputFormatWriters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputFormatWriters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputDirectory.cpp
@@ -15,6 +17,7 @@ list(APPEND OMPL_GLIDER_SOURCES
 if(OMPL_GLIDER_WITH_MAP)
   list(APPEND OMPL_GLIDER_SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/MapRenderer.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/MapCairo.cpp
     ${CMAKE_CURRENT_LIST_DIR}/MapCairo.cpp
     ${CMAKE_CURRENT_LIST_DIR}/MapRendererAxes.cpp
     ${CMAKE_CURRENT_LIST_DIR}/MapRendererLegend.cpp
