@@ -1,5 +1,7 @@
 #include "ompl_glider/mission/OutputFormats.h"
 
+// Adding a format: its value of OutputFormatId, its row here, and its writer in src/output/OutputFormatWriters.cpp.
+
 namespace ompl_glider
 {
 const std::vector<OutputFormat> &outputFormats()

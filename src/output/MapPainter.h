@@ -1,8 +1,9 @@
 #pragma once
 /// @file MapPainter.h (internal to src/output, not installed)
-/// @brief Internal to src/output/MapRenderer*.cpp, not part of the public API: the map's page layout, the cairo
-/// drawing primitives it shares, and MapPainter, which draws one MapRenderer in steps (the plot area in
-/// MapRenderer.cpp, grid, frame and axes in MapRendererAxes.cpp, the legend in MapRendererLegend.cpp).
+/// @brief Internal to src/output/MapRenderer*.cpp and MapCairo.cpp, not part of the public API: the map's page
+/// layout, the cairo drawing primitives it shares (MapCairo.cpp), and MapPainter, which draws one MapRenderer in steps
+/// (the plot area in MapRenderer.cpp, grid, frame and axes in MapRendererAxes.cpp, the legend in
+/// MapRendererLegend.cpp).
 
 #include <cmath>
 #include <cstddef>

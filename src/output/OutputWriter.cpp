@@ -5,24 +5,14 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <set>
 
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
-#include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
-#if OMPL_GLIDER_WITH_MAP
-#include "ompl_glider/output/MapHtml.h"
-#include "ompl_glider/output/MissionMap.h"
-#endif
-#include "ompl_glider/output/ExecutionFiles.h"
-#include "ompl_glider/output/RouteFiles.h"
-#include "ompl_glider/output/SlocumGoto.h"
-#include "ompl_glider/output/SeagliderTargets.h"
-#include "ompl_glider/output/SummaryJson.h"
+#include "ompl_glider/output/OutputFormatWriters.h"
 #include "OutputDirectory.h"
 
 namespace ompl_glider
@@ -31,104 +21,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-void writeText(const std::string &path, const std::string &text)
-{
-    output_detail::writeFileChecked(path, text);
-}
-
-/// The route and map files of one format (summary.json is added by outputFiles()).
-std::vector<OutputFile> formatFiles(OutputFormatId format, const MissionResult &r, const MissionProblem &problem)
-{
-    const MissionResult *res = &r;
-    if (format == OutputFormatId::Csv)
-        return {{"waypoints.csv", [res](const std::string &p) { writeText(p, waypointsCsv(*res)); }}};
-    if (format == OutputFormatId::Path)
-        return {{"path.csv", [res](const std::string &p) { writeText(p, pathCsv(*res)); }}};
-    if (format == OutputFormatId::GeoJson)
-    {
-        const MissionProblem *prob = &problem;  // projects a heading route's track
-        std::vector<OutputFile> files{
-            {"path.geojson", [res, prob](const std::string &p) { writeText(p, routeGeoJson(*res, prob)); }}};
-        if (problem.isGeographic())  // the same route for Google Earth
-            files.push_back({"route.kml", [res, prob](const std::string &p) { writeText(p, routeKml(*res, prob)); }});
-        return files;
-    }
-    if (format == OutputFormatId::Isochrones)
-    {
-        if (!r.isochrones)
-            return {};
-        return {{"isochrones.geojson", [res](const std::string &p) { writeText(p, isochronesGeoJson(*res)); }}};
-    }
-    if (format == OutputFormatId::Stints)
-    {
-        if (!r.plan.stints && !r.plan.headingRoute())  // a heading route's segments are written as stints
-            return {};
-        const MissionProblem *prob = &problem;
-        return {{"stints.csv", [res, prob](const std::string &p) { writeText(p, stintsCsv(*res, *prob)); }}};
-    }
-    if (format == OutputFormatId::Goto)
-    {
-        if (!problem.isGeographic())
-            return {};
-        const MissionProblem *prob = &problem;  // checks the thinned list's legs
-        // the Seaglider's targets file of the same turns beside the Slocum's goto list
-        return {{gotoFileName(r.spec.outputs.gotoNumber),
-                 [res, prob](const std::string &p) { writeGotoFile(p, gotoList(*res, prob)); }},
-                {"targets", [res, prob](const std::string &p) {
-                     writeText(p, formatSeagliderTargets(seagliderTargets(*res, prob), res->spec.name));
-                 }}};
-    }
-    if (format == OutputFormatId::Execution)
-    {
-        if (!r.execution)
-            return {};
-        const MissionProblem *prob = &problem;
-        std::vector<OutputFile> files{
-            {"execution.csv", [res, prob](const std::string &p) { writeText(p, executionCsv(*res->execution, *prob)); }},
-            {"execution_tracks.csv",
-             [res, prob](const std::string &p) { writeText(p, executionTracksCsv(*res->execution, *prob)); }}};
-#if OMPL_GLIDER_WITH_MAP
-        for (const bool svg : {true, false})
-            files.push_back({svg ? "execution.svg" : "execution.png", [res, svg](const std::string &p) {
-                                 writeExecutionPlot(p, *res->execution, res->spec, svg);
-                             }});
-        if (r.spec.execution.truth)
-        {
-            auto map = std::make_shared<std::unique_ptr<MapRenderer>>();
-            auto draw = [map, res, prob]() -> const MapRenderer & {
-                if (!*map)
-                    *map = std::make_unique<MapRenderer>(modelDifferenceMap(*res, *prob));
-                return **map;
-            };
-            files.push_back({"model_difference.svg", [draw](const std::string &p) { draw().writeSvg(p); }});
-            files.push_back({"model_difference.png", [draw](const std::string &p) { draw().writePng(p); }});
-        }
-#endif
-        return files;
-    }
-#if OMPL_GLIDER_WITH_MAP
-    if (format == OutputFormatId::Map)
-    {
-        // One drawing for both files.
-        auto map = std::make_shared<std::unique_ptr<MapRenderer>>();
-        const MissionProblem *prob = &problem;
-        auto draw = [map, res, prob]() -> const MapRenderer & {
-            if (!*map)
-                *map = std::make_unique<MapRenderer>(missionMap(*res, *prob));
-            return **map;
-        };
-        return {{"map.svg", [draw](const std::string &p) { draw().writeSvg(p); }},
-                {"map.png", [draw](const std::string &p) { draw().writePng(p); }},
-                {"map.html", [res, prob](const std::string &p) { writeText(p, mapHtml(*res, *prob)); }}};
-    }
-#else
-    if (format == OutputFormatId::Map)
-        throw Error(r.spec.file + ": field 'outputs.files': this build of ompl_glider draws no maps "
-                                  "(OMPL_GLIDER_WITH_MAP=OFF)");
-#endif
-    return {};
-}
-
 /// The names an earlier run listed in DIR/summary.json (empty when there is none or it cannot be read).
 std::vector<std::string> previousManifest(const fs::path &dir)
 {
@@ -180,7 +72,7 @@ std::vector<OutputFile> outputFiles(const MissionResult &r, const MissionProblem
         const bool wanted = (format.id == OutputFormatId::Execution && r.execution) || r.spec.outputs.wants(format.id);
         if (!wanted || (format.route && !r.plan.solved))
             continue;
-        for (OutputFile &f : formatFiles(format.id, r, problem))
+        for (OutputFile &f : outputFormatWriter(format.id)(r, problem, {}))
             files.push_back(std::move(f));
     }
     const std::string &prefix = r.spec.outputs.prefix;
@@ -190,11 +82,9 @@ std::vector<OutputFile> outputFiles(const MissionResult &r, const MissionProblem
     if (!prefix.empty())
         for (std::size_t i = 0, n = names.size(); i < n; ++i)
             names.push_back(prefix + "_" + names[i]);
-    const MissionResult *res = &r;
-    const MissionProblem *prob = &problem;
-    files.insert(files.begin(), OutputFile{"summary.json", [res, prob, names](const std::string &p) {
-                                               writeText(p, summaryJson(*res, *prob, names));
-                                           }});
+    // summary.json first, listing every file (its own name and the prefixed copies included)
+    std::vector<OutputFile> summary = outputFormatWriter(OutputFormatId::Summary)(r, problem, names);
+    files.insert(files.begin(), summary.begin(), summary.end());
     if (!prefix.empty())
         for (std::size_t i = 0, n = files.size(); i < n; ++i)
             files.push_back({prefix + "_" + files[i].name, files[i].write});
@@ -236,26 +126,11 @@ void checkOutputNames(const OutputSpec &outputs)
     std::error_code ec;
     if (!fs::is_directory(target, ec))
         return;
-    // Every name a run can write (outputFormats()' file lists: "a.csv, b.svg/png, goto_lNN.ma"), with the prefix.
+    // Every name a run can write (outputFormats()' file lists), with the prefix.
     std::vector<std::string> names;
     for (const OutputFormat &format : outputFormats())
-    {
-        std::string list = format.files + ",";
-        for (std::size_t at = 0, comma; (comma = list.find(',', at)) != std::string::npos; at = comma + 1)
-        {
-            std::string name = list.substr(at, comma - at);
-            name.erase(0, name.find_first_not_of(' '));
-            if (name == "goto_lNN.ma")
-                name = gotoFileName(outputs.gotoNumber);
-            const std::size_t slash = name.find('/');
-            if (slash != std::string::npos)  // "map.svg/png"
-            {
-                names.push_back(name.substr(0, slash));
-                name = name.substr(0, name.rfind('.', slash) + 1) + name.substr(slash + 1);
-            }
-            names.push_back(name);
-        }
-    }
+        for (std::string &name : declaredFileNames(format, outputs.gotoNumber))
+            names.push_back(std::move(name));
     for (std::size_t i = 0, n = names.size(); i < n && !outputs.prefix.empty(); ++i)
         names.push_back(outputs.prefix + "_" + names[i]);
     for (const std::string &name : names)

@@ -3,9 +3,12 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/SlocumGoto.cpp
   ${CMAKE_CURRENT_LIST_DIR}/SeagliderTargets.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RouteFiles.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/GotoWaypoints.cpp
   ${CMAKE_CURRENT_LIST_DIR}/SummaryJson.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/SummaryInputs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Report.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputWriter.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/OutputFormatWriters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputDirectory.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ExecutionFiles.cpp
   ${CMAKE_CURRENT_LIST_DIR}/FleetFiles.cpp
@@ -13,6 +16,7 @@ list(APPEND OMPL_GLIDER_SOURCES
 if(OMPL_GLIDER_WITH_MAP)
   list(APPEND OMPL_GLIDER_SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/MapRenderer.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/MapCairo.cpp
     ${CMAKE_CURRENT_LIST_DIR}/MapRendererAxes.cpp
     ${CMAKE_CURRENT_LIST_DIR}/MapRendererLegend.cpp
     ${CMAKE_CURRENT_LIST_DIR}/MissionMap.cpp

@@ -13,3 +13,5 @@ if(TARGET glider_plan)
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_output_faults.sh $<TARGET_FILE:glider_plan>)
   set_tests_properties(mission.output_faults PROPERTIES TIMEOUT 300)
 endif()
+# the output formats' writers: one per format of outputFormats(), each making the files its format declares
+glider_add_test(test_output_formats ${CMAKE_CURRENT_LIST_DIR}/TestOutputFormats.cpp)

@@ -57,8 +57,9 @@ void installOutputSignalHandlers();
 int signalAfterOutputs();
 
 /// @brief The files of @p result: summary.json always, then the formats of result.spec.outputs.files that apply
-/// (route files only with a path; the goto list only with geographic coordinates), each also as
-/// `<prefix>_<name>` when outputs.prefix is set.
+/// (route files only with a path; the goto list only with geographic coordinates), in the order of outputFormats(),
+/// each format's files made by its writer (OutputFormatWriters.h), each also as `<prefix>_<name>` when
+/// outputs.prefix is set.
 std::vector<OutputFile> outputFiles(const MissionResult &result, const MissionProblem &problem);
 
 /// @brief Checks before planning that @p directory can be written: it is a directory (or can be created) and a
