@@ -7,4 +7,5 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/TveSearchCore.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ZAStarTVE.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Wavefront.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/WavefrontSearch.cpp
 )
