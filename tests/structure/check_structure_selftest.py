@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""The structure checker catches what it claims to: an upward include, a mission/ include of planners/ or
-reachability/, a long file, a long function (in the library and in the front ends), an author-year citation, an issue
-number, a search in an outcome's words or an error's message, a command-line flag in the library's strings; and passes
-a tree that keeps the rules, and the real tree on the planner-free mission rule. Run by ctest
+"""The structure checker catches what it claims to: an upward include, a mission/ include of planners/,
+reachability/ or stints/, a long file, a long function (in the library and in the front ends), an author-year
+citation, an issue number, a search in an outcome's words or an error's message, a command-line flag in the library's
+strings; and passes a tree that keeps the rules, and the real tree on the planner-free mission rule. Run by ctest
 (structure.checker_selftest)."""
 import os
 import subprocess
@@ -70,17 +70,20 @@ planner_named["src/mission/Named.cpp"] = ('#include "ompl_glider/registry/Planne
                                           '// #include "ompl_glider/planners/Wavefront.h" in a comment is no include\n')
 planner_named["include/ompl_glider/mission/Level.h"] = '#include <ompl_glider/reachability/LevelSet.h>\n'
 planner_named["src/mission/sub/Rel.cpp"] = '#include "../../reachability/LevelSetInternal.h"\n'
+planner_named["src/mission/Stint.cpp"] = '#include "ompl_glider/stints/StintPlanner.h"\n'
 planner_named["src/registry/Ok.cpp"] = '#include "ompl_glider/planners/ZAStarTVE.h"\n'  # the registry may
 code, out = run(tree(planner_named))
 expect(code == 1 and "src/mission/Named.cpp:2: mission/ includes a header of planners/" in out and
        "include/ompl_glider/mission/Level.h:1: mission/ includes a header of reachability/" in out and
        "src/mission/sub/Rel.cpp:1: mission/ includes a header of reachability/" in out and
+       "src/mission/Stint.cpp:1: mission/ includes a header of stints/" in out and
        "Named.cpp:3" not in out and "Ok.cpp" not in out and "layers: ok" in out,
-       "a mission/ include of planners/ or reachability/ (relative too) must fail, the registry's not", out)
+       "a mission/ include of planners/, reachability/ or stints/ (relative too) must fail, the registry's not", out)
 
 real = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 code, out = run(real)
-expect("planner-free mission: ok" in out, "the real tree's mission/ must include no planners/ nor reachability/", out)
+expect("planner-free mission: ok" in out,
+       "the real tree's mission/ must include no header of planners/, reachability/ or stints/", out)
 
 long_function = dict(good)
 long_function["src/current/Long.cpp"] = function("tooLong", 160)
