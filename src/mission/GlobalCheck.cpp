@@ -383,7 +383,8 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     };
     check.levelSetBudget = levelSetBudget(r);
     const Point2 s = problem.getStart(), g = problem.getGoal();
-    const ZermeloSolution sol = findExtremal(ss->getSpaceInformation(), ctx, zp, r.solved, s, g, departure, span, check);
+    const ZermeloSolution sol =
+        findExtremal(ss->getSpaceInformation(), ctx, zp, r.solved, s, g, departure, span, check);
     const ZermeloReference ref(ctx->field, zp);
     check.extremalFound = sol.found;
     check.extremalTime = sol.found ? sol.travelTime : kInf;

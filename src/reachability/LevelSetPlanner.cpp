@@ -292,7 +292,8 @@ std::optional<ReachableSet> LevelSetPlanner::reachableSet(const PipelineSetup &s
 }
 
 std::optional<FirstArrival> LevelSetPlanner::firstArrival(const PipelineSetup &setup, double tEnd,
-                                                          std::uint64_t maxWork, const std::function<bool()> &stop) const
+                                                          std::uint64_t maxWork,
+                                                          const std::function<bool()> &stop) const
 {
     LevelSetParams p;
     p.cellSize = defaultLevelSetResolution(*ctx_);
