@@ -7,6 +7,11 @@ Rules:
   layers     a file of layer L (include/ompl_glider/L/ or src/L/) includes only headers of L, of the layers below
              L in LAYERS, and the top-level headers (ompl_glider/*.h); so no include runs up a layer and no two
              folders include each other. apps/ may include every layer.
+  planner-free mission
+             no file of src/mission/ or include/ompl_glider/mission/ includes a header of planners/,
+             reachability/ or stints/ (relative includes too), though they lie below it: the pipeline asks for a
+             planner by name or by family through the registry (registry/PlannerRegistry.h) and speaks to it
+             through ompl/PipelinePlanner.h only.
   size       no file in src/, apps/ or python/src over MAX_FILE_LINES lines.
   functions  no function there over MAX_FUNCTION_LINES lines (from its opening to its closing brace).
   no-issues  no "issue N" in the code or the installed headers: the code says what it does and cites the literature.
@@ -25,6 +30,9 @@ import sys
 LAYERS = ["mpi", "output", "mission", "registry", "reachability", "stints", "planners", "routes", "reference",
           "execution", "ompl", "cost", "environment", "current", "io", "core"]
 MAX_FILE_LINES = 700
+# the mission layer names no planner: the layers whose headers it may not include, though they lie below it
+MISSION = ["src/mission", "include/ompl_glider/mission"]
+PLANNER_LAYERS = ["planners", "reachability", "stints"]
 SIZED = ["src", "apps", "python/src"]  # the size rules cover the library and both front ends
 ISSUE_WORD = re.compile(r"\bissues? #?\d+", re.I)
 MAX_FUNCTION_LINES = 150
@@ -60,6 +68,21 @@ def source_files(root, folders, exts=(".h", ".cpp")):
                     yield path, os.path.relpath(path, root)
 
 
+def included_layers(root, path):
+    """(line number, layer) of each include of @p path that names a layer's header: "ompl_glider/L/..." or a
+    relative include that resolves into include/ompl_glider/L/ or src/L/ (top-level headers left out)."""
+    with open(path, encoding="utf-8", errors="replace") as f:
+        for number, line in enumerate(f, 1):
+            m = INCLUDE.match(line)
+            target = m.group(1) if m else None
+            r = RELATIVE_INCLUDE.match(line)
+            if r:  # a relative include into another folder of src/
+                resolved = os.path.relpath(os.path.normpath(os.path.join(os.path.dirname(path), r.group(1))), root)
+                target = layer_of(resolved)
+            if target and not target.endswith(".h"):  # not a top-level header
+                yield number, target
+
+
 def check_layers(root):
     breaches = []
     for path, rel in source_files(root, ["include/ompl_glider", "src"]):
@@ -70,19 +93,19 @@ def check_layers(root):
             breaches.append(f"{rel}: layer '{own}' is not in the list of layers (scripts/check_structure.py)")
             continue
         allowed = set(LAYERS[LAYERS.index(own):])
-        with open(path, encoding="utf-8", errors="replace") as f:
-            for number, line in enumerate(f, 1):
-                m = INCLUDE.match(line)
-                target = m.group(1) if m else None
-                r = RELATIVE_INCLUDE.match(line)
-                if r:  # a relative include into another folder of src/
-                    resolved = os.path.relpath(os.path.normpath(os.path.join(os.path.dirname(path), r.group(1))),
-                                               root)
-                    target = layer_of(resolved)
-                if target and target.endswith(".h"):
-                    continue  # a top-level header
-                if target and target not in allowed:
-                    breaches.append(f"{rel}:{number}: layer '{own}' includes layer '{target}' above it")
+        for number, target in included_layers(root, path):
+            if target not in allowed:
+                breaches.append(f"{rel}:{number}: layer '{own}' includes layer '{target}' above it")
+    return breaches
+
+
+def check_planner_free_mission(root):
+    breaches = []
+    for path, rel in source_files(root, MISSION):
+        for number, target in included_layers(root, path):
+            if target in PLANNER_LAYERS:
+                breaches.append(f"{rel}:{number}: mission/ includes a header of {target}/: ask the registry for the "
+                                "planner (by name or family) and speak to it through ompl/PipelinePlanner.h")
     return breaches
 
 
@@ -217,7 +240,8 @@ def check_no_flags(root):
 def main():
     root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
     failed = False
-    for rule, check in (("layers", check_layers), ("size", check_sizes), ("citations", check_citations),
+    for rule, check in (("layers", check_layers), ("planner-free mission", check_planner_free_mission),
+                        ("size", check_sizes), ("citations", check_citations),
                         ("no-issues", check_no_issue_numbers), ("outcomes", check_outcomes),
                         ("no-flags", check_no_flags)):
         breaches = check(root)

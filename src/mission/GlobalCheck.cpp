@@ -19,7 +19,7 @@
 #include "ompl_glider/routes/WaypointRefiner.h"
 #include "ompl_glider/routes/CurveLegs.h"
 #include "ompl_glider/reference/ZermeloReference.h"
-#include "ompl_glider/reachability/LevelSet.h"
+#include "ompl_glider/ompl/PipelinePlanner.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #include "../core/Numbers.h"
 
@@ -117,31 +117,40 @@ ZermeloSolution zoomOn(const std::shared_ptr<const CurrentField> &field, Zermelo
 
 /// The level set's help where the sweep finds none: its first arrival at the goal and the steering directions of
 /// its backtracked path's first steps ((p1 - p0) / dt - c: the front's normal is undefined at the start itself,
-/// so the first few), the centres of finer scans.
+/// so the first few), the centres of finer scans. The level set is the registry's planner of that family
+/// (plannerOfFamily()), asked through PipelinePlanner::firstArrival(); none where it has no answer.
 struct LevelSetAid
 {
     double time{kInf};
     std::vector<double> seeds;
 };
 
-LevelSetAid levelSetAid(const std::shared_ptr<const GliderContext> &ctx, Point2 s, Point2 g, double departure,
-                        double tEnd, const std::function<bool()> &stop, GlobalCheck &check)
+LevelSetAid levelSetAid(const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<GliderContext> &ctx,
+                        Point2 s, Point2 g, double departure, double tEnd, const std::function<bool()> &stop,
+                        GlobalCheck &check)
 {
-    LevelSetParams p;
-    p.cellSize = defaultLevelSetResolution(*ctx);
-    p.clearance = 0.5 * p.cellSize;
-    p.maxNodeUpdates = check.levelSetBudget;
-    const Reachability r = LevelSetSolver(ctx, p).solve(s.x, s.y, departure, tEnd, g, true, stop);
-    check.levelSetUpdates = r.stats.nodeUpdates;
-    check.levelSetBudgetSpent = r.stats.budgetSpent;
     LevelSetAid aid;
-    if (!r.goalReached || stop())
+    const PlannerEntry *entry = findPlannerOfFamily(PlannerFamily::LevelSet);
+    if (!entry)
         return aid;
-    aid.time = r.goalTime - departure;
+    const ompl::base::PlannerPtr planner = entry->make(si, ctx);
+    PipelineSetup setup;
+    setup.departure = departure;
+    setup.start = s;
+    setup.goal = g;
+    setup.region = ctx->region;
+    const std::optional<FirstArrival> r = pipelineView(*planner).firstArrival(setup, tEnd, check.levelSetBudget, stop);
+    if (!r)
+        return aid;
+    check.levelSetUpdates = r->work;
+    check.levelSetBudgetSpent = r->budgetSpent;
+    if (!r->reached || stop())
+        return aid;
+    aid.time = r->time - departure;
     const double depth = ctx->travel->params().depth;
-    for (std::size_t i = 0; i + 1 < r.path.size() && aid.seeds.size() < 3; ++i)
+    for (std::size_t i = 0; i + 1 < r->path.size() && aid.seeds.size() < 3; ++i)
     {
-        const TimedPoint &a = r.path[i], &b = r.path[i + 1];
+        const TimedPoint &a = r->path[i], &b = r->path[i + 1];
         const double dt = b.t - a.t;
         if (!(dt > 0.0))
             continue;
@@ -156,8 +165,9 @@ LevelSetAid levelSetAid(const std::shared_ptr<const GliderContext> &ctx, Point2 
 /// The extremal through the goal: the sweep over the circle (360 headings, then four or eight times as many), then
 /// finer scans about its nearest miss and, with the level set's first arrival, about the level set's initial
 /// headings. Fills the check's counts.
-ZermeloSolution findExtremal(const std::shared_ptr<GliderContext> &ctx, ZermeloParams &zp, bool planned, Point2 s,
-                             Point2 g, double departure, double span, GlobalCheck &check)
+ZermeloSolution findExtremal(const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<GliderContext> &ctx,
+                             ZermeloParams &zp, bool planned, Point2 s, Point2 g, double departure, double span,
+                             GlobalCheck &check)
 {
     ZermeloSolution sol = ZermeloReference(ctx->field, zp).solve(s.x, s.y, g.x, g.y, departure);
     check.headings = static_cast<unsigned>(sol.headingsShot);
@@ -183,7 +193,7 @@ ZermeloSolution findExtremal(const std::shared_ptr<GliderContext> &ctx, ZermeloP
     // the level set over the whole window (the extremal may be slower than the planner's route's bound)
     if (zp.stop())
         return sol;
-    const LevelSetAid aid = levelSetAid(ctx, s, g, departure, departure + span, zp.stop, check);
+    const LevelSetAid aid = levelSetAid(si, ctx, s, g, departure, departure + span, zp.stop, check);
     check.levelSetTime = aid.time;
     ZermeloParams wide = zp;
     wide.maxTime = std::isfinite(aid.time) ? std::min(span, 1.25 * aid.time) : zp.maxTime;
@@ -201,14 +211,14 @@ ZermeloSolution findExtremal(const std::shared_ptr<GliderContext> &ctx, ZermeloP
 /// it is kept without planning the level set's route.
 constexpr double kLevelSetMargin = 0.02;
 
-/// The level set's route through the pipeline (the LevelSet planner, its time limit the plan's or the fallback's),
-/// carrying the planner's outcome's identity like the extremal's routes.
+/// The level set's route through the pipeline (the registry's level-set planner, its time limit the plan's or the
+/// fallback's), carrying the planner's outcome's identity like the extremal's routes.
 PlannedPath levelSetRoute(const MissionProblem &problem, double departure, const PlanOptions &o,
                           const PlannedPath &base)
 {
     const MissionSpec &m = problem.getSpec();
     PlanOptions h = o;
-    h.planner = "LevelSet";
+    h.planner = plannerOfFamily(PlannerFamily::LevelSet).name;
     h.timeLimit = o.timeLimit > 0 ? o.timeLimit : m.planner.timeLimit > 0 ? m.planner.timeLimit : kFallbackTimeLimit;
     PlannedPath c = planOnField(problem, departure, h);
     c.planner = base.planner;
@@ -373,7 +383,8 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     };
     check.levelSetBudget = levelSetBudget(r);
     const Point2 s = problem.getStart(), g = problem.getGoal();
-    const ZermeloSolution sol = findExtremal(ctx, zp, r.solved, s, g, departure, span, check);
+    const ZermeloSolution sol =
+        findExtremal(ss->getSpaceInformation(), ctx, zp, r.solved, s, g, departure, span, check);
     const ZermeloReference ref(ctx->field, zp);
     check.extremalFound = sol.found;
     check.extremalTime = sol.found ? sol.travelTime : kInf;

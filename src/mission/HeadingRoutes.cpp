@@ -186,19 +186,22 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
         return failed;
     // the lattice's advice (a finer grid, ...) is moot once another planner has been asked
     const std::string why = asked.name + " found no path of straight legs: " + failed.noPath.what;
+    // the planners asked after it, by family (the registry's first of each): the heading planner, then the level set
+    const PlannerEntry &headings = plannerOfFamily(PlannerFamily::Headings);
+    const PlannerEntry &levelSet = plannerOfFamily(PlannerFamily::LevelSet);
     PlanOptions h = o;
-    h.planner = "Isochrone";
+    h.planner = headings.name;
     const MissionSpec &m = problem.getSpec();
     h.timeLimit = o.timeLimit > 0 ? o.timeLimit : m.planner.timeLimit > 0 ? m.planner.timeLimit : kFallbackTimeLimit;
     PlannedPath r = planOnField(problem, departure, h);
     if (!r.solved)
     {
         // the level set decides: a route of its headings, or the proof that the front never reaches the goal
-        const std::string isochrone = r.noPath.text();
-        h.planner = "LevelSet";
+        const std::string headingsWhy = r.noPath.text();
+        h.planner = levelSet.name;
         r = planOnField(problem, departure, h);
         if (r.solved)
-            r.switchReason = why + "; Isochrone found none (" + isochrone + ")";
+            r.switchReason = why + "; " + headings.name + " found none (" + headingsWhy + ")";
     }
     else
         r.switchReason = why;
@@ -213,13 +216,14 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     const bool timedOut = r.noPath.cause == NoPathCause::TimeLimit;
     NoPath none = r.noPath;
     none.what = (none.proven() ? "no path exists: " : "no path found: ") +
-                (timedOut ? "the level set, after Isochrone, each with " +
+                (timedOut ? "the level set, after " + headings.name + ", each with " +
                                 std::string(o.timeLimit > 0 || m.planner.timeLimit > 0
                                                 ? "the time limit"
                                                 : "the fallback's default time limit") +
                                 ": "
                           : std::string()) +
-                r.noPath.text() + " (" + asked.name + " found none on its lattice, nor Isochrone with held headings)";
+                r.noPath.text() + " (" + asked.name + " found none on its lattice, nor " + headings.name +
+                    " with held headings)";
     none.advice.clear();
     none.bound = failed.noPath.bound;
     none.boundSpan = failed.noPath.boundSpan;

@@ -3,8 +3,10 @@
 /// @brief Internal pieces of the level-set solver (LevelSet.h); not installed.
 ///
 /// The solver is split by concern, one source file each (all in src/reachability/):
-///  - LevelSet.cpp           LevelSetSolver: the grid and forbidden set of a solver, and solve() as a sequence of
-///                           steps (initial front, advection of the narrow band, forbidden set, arrivals, goal)
+///  - LevelSetGrid.cpp       LevelSetSolver's constructor: its parameters checked, the grid and the forbidden set
+///                           of a solver (SolverGrid) prepared once; defaultLevelSetResolution()
+///  - LevelSet.cpp           LevelSetSolver::solve() as a sequence of steps (initial front, advection of the narrow
+///                           band, forbidden set, arrivals, goal)
 ///  - LevelSetDistance.cpp   signed distances to the forbidden set (polygons, node masks) and the reinitialisation
 ///                           of phi to a signed distance
 ///  - LevelSetBacktrack.cpp  the time-optimal path backtracked through the arrival field, and the queries of a
@@ -192,4 +194,10 @@ struct BacktrackSetup
 std::vector<TimedPoint> backtrackPath(const Reachability &r, const Grid &g, Point2 start, Point2 goal,
                                       const BacktrackSetup &s);
 }  // namespace levelset_detail
+
+/// The solver's grid and forbidden set (SolverGrid), prepared by the constructor (LevelSetGrid.cpp) and read by
+/// solve() (LevelSet.cpp).
+struct LevelSetSolver::Impl : levelset_detail::SolverGrid
+{
+};
 }  // namespace ompl_glider

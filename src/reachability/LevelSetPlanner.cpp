@@ -290,4 +290,23 @@ std::optional<ReachableSet> LevelSetPlanner::reachableSet(const PipelineSetup &s
         out.lines.push_back(r.isochrone(t));
     return out;
 }
+
+std::optional<FirstArrival> LevelSetPlanner::firstArrival(const PipelineSetup &setup, double tEnd,
+                                                          std::uint64_t maxWork,
+                                                          const std::function<bool()> &stop) const
+{
+    LevelSetParams p;
+    p.cellSize = defaultLevelSetResolution(*ctx_);
+    p.clearance = 0.5 * p.cellSize;
+    p.maxNodeUpdates = maxWork;
+    const Reachability r =
+        LevelSetSolver(ctx_, p).solve(setup.start.x, setup.start.y, setup.departure, tEnd, setup.goal, true, stop);
+    FirstArrival out;
+    out.reached = r.goalReached;
+    out.time = r.goalTime;
+    out.path = r.path;
+    out.work = r.stats.nodeUpdates;
+    out.budgetSpent = r.stats.budgetSpent;
+    return out;
+}
 }  // namespace ompl_glider

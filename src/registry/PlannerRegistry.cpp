@@ -187,4 +187,39 @@ std::string plannerNameList(const std::string &separator)
         out += (out.empty() ? "" : separator) + e.name;
     return out;
 }
+
+std::string plannerFamilyName(PlannerFamily family)
+{
+    switch (family)
+    {
+    case PlannerFamily::Lattice:
+        return "Lattice";
+    case PlannerFamily::LevelSet:
+        return "LevelSet";
+    case PlannerFamily::Headings:
+        return "Headings";
+    case PlannerFamily::Sampling:
+        return "Sampling";
+    case PlannerFamily::Stints:
+        return "Stints";
+    case PlannerFamily::Other:
+        break;
+    }
+    return "Other";
+}
+
+const PlannerEntry *findPlannerOfFamily(PlannerFamily family)
+{
+    for (const PlannerEntry &e : plannerRegistry())
+        if (e.family == family)
+            return &e;
+    return nullptr;
+}
+
+const PlannerEntry &plannerOfFamily(PlannerFamily family)
+{
+    if (const PlannerEntry *e = findPlannerOfFamily(family))
+        return *e;
+    throw Error("no registered planner of family " + plannerFamilyName(family));
+}
 }  // namespace ompl_glider

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""The structure checker catches what it claims to: an upward include, a long file, a long function (in the library
-and in the front ends), an author-year citation, an issue number, a search in an outcome's words or an error's
-message, a command-line flag in the library's strings; and passes a tree that keeps the rules. Run by ctest (structure.checker_selftest)."""
+"""The structure checker catches what it claims to: an upward include, a mission/ include of planners/,
+reachability/ or stints/, a long file, a long function (in the library and in the front ends), an author-year
+citation, an issue number, a search in an outcome's words or an error's message, a command-line flag in the library's
+strings; and passes a tree that keeps the rules, and the real tree on the planner-free mission rule. Run by ctest
+(structure.checker_selftest)."""
 import os
 import subprocess
 import sys
@@ -30,9 +32,12 @@ def function(name, body_lines):
 
 
 failures = []
+checks = 0
 
 
 def expect(condition, what, output):
+    global checks
+    checks += 1
     if not condition:
         failures.append(what + "\n" + output)
 
@@ -41,7 +46,7 @@ good = {
     "include/ompl_glider/current/Field.h": '#include "ompl_glider/Geometry.h"\n',
     "src/current/Field.cpp": '#include "ompl_glider/current/Field.h"\n#include "ompl_glider/io/Time.h"\n' +
                              function("f", 140),
-    "src/mission/Plan.cpp": '#include "ompl_glider/planners/X.h"\n#include "ompl_glider/current/Field.h"\n'
+    "src/mission/Plan.cpp": '#include "ompl_glider/registry/X.h"\n#include "ompl_glider/current/Field.h"\n'
                             "// the search of [EichhornRAS] Eq. 5\n",
 }
 code, out = run(tree(good))
@@ -58,6 +63,27 @@ relative["src/current/netcdf/Rel.cpp"] = '#include "../../output/Writer.h"\n'
 code, out = run(tree(relative))
 expect(code == 1 and "src/current/netcdf/Rel.cpp:1: layer 'current' includes layer 'output'" in out,
        "a relative upward include must fail", out)
+
+planner_named = dict(good)
+planner_named["src/mission/Named.cpp"] = ('#include "ompl_glider/registry/PlannerRegistry.h"\n'
+                                          '#include "ompl_glider/planners/ZAStarTVE.h"\n'
+                                          '// #include "ompl_glider/planners/Wavefront.h" in a comment is no include\n')
+planner_named["include/ompl_glider/mission/Level.h"] = '#include <ompl_glider/reachability/LevelSet.h>\n'
+planner_named["src/mission/sub/Rel.cpp"] = '#include "../../reachability/LevelSetInternal.h"\n'
+planner_named["src/mission/Stint.cpp"] = '#include "ompl_glider/stints/StintPlanner.h"\n'
+planner_named["src/registry/Ok.cpp"] = '#include "ompl_glider/planners/ZAStarTVE.h"\n'  # the registry may
+code, out = run(tree(planner_named))
+expect(code == 1 and "src/mission/Named.cpp:2: mission/ includes a header of planners/" in out and
+       "include/ompl_glider/mission/Level.h:1: mission/ includes a header of reachability/" in out and
+       "src/mission/sub/Rel.cpp:1: mission/ includes a header of reachability/" in out and
+       "src/mission/Stint.cpp:1: mission/ includes a header of stints/" in out and
+       "Named.cpp:3" not in out and "Ok.cpp" not in out and "layers: ok" in out,
+       "a mission/ include of planners/, reachability/ or stints/ (relative too) must fail, the registry's not", out)
+
+real = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+code, out = run(real)
+expect("planner-free mission: ok" in out,
+       "the real tree's mission/ must include no header of planners/, reachability/ or stints/", out)
 
 long_function = dict(good)
 long_function["src/current/Long.cpp"] = function("tooLong", 160)
@@ -123,5 +149,5 @@ expect(code == 1 and "src/mission/Advice.cpp:3: '--time-limit'" in out and "Advi
 
 for f in failures:
     print("FAILED: " + f)
-print(f"{10 - len(failures)} passed, {len(failures)} failed")
+print(f"{checks - len(failures)} passed, {len(failures)} failed")
 sys.exit(1 if failures else 0)

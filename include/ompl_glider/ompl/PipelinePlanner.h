@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,6 +64,20 @@ struct ReachableSet
     std::vector<std::vector<std::vector<Point2>>> lines;
 };
 
+/// @brief The first arrival at the goal of a front from the start ([LollaLevelSet]) and the time-optimal path to it:
+/// what PipelinePlanner::firstArrival() answers (the default pipeline's global check asks the registry's level-set
+/// planner for it where no extremal reaches the goal).
+struct FirstArrival
+{
+    bool reached{false};  ///< the front reached the goal (before tEnd, a stop and the work budget)
+    double time{std::numeric_limits<double>::infinity()};  ///< absolute first-arrival time at the goal (+inf if not)
+    /// The time-optimal path backtracked from the goal, start first (a hold: two points at one position); empty
+    /// when the goal was not reached
+    std::vector<TimedPoint> path;
+    std::uint64_t work{0};    ///< the work done, in the planner's unit of its budget (the level set: node updates)
+    bool budgetSpent{false};  ///< the work budget ended the computation
+};
+
 /// @brief The pipeline's questions to a planner. Every answer has a default, so a planner overrides only what it
 /// has to say.
 class PipelinePlanner
@@ -103,6 +118,21 @@ public:
         (void)setup;
         (void)times;
         (void)cellScale;
+        return std::nullopt;
+    }
+
+    /// @brief The first arrival at @p setup's goal of the front from its start, departing at its departure, followed
+    /// until the absolute time @p tEnd, with its backtracked path; @p maxWork bounds the work (0: no bound) so that a
+    /// problem gets the same answer on any machine and under any load, and @p stop (if set) ends it early. nullopt
+    /// when the planner does not compute first arrivals (the default). The pipeline asks the registry's level-set
+    /// planner (plannerOfFamily(PlannerFamily::LevelSet), registry/PlannerRegistry.h).
+    virtual std::optional<FirstArrival> firstArrival(const PipelineSetup &setup, double tEnd, std::uint64_t maxWork,
+                                                     const std::function<bool()> &stop) const
+    {
+        (void)setup;
+        (void)tEnd;
+        (void)maxWork;
+        (void)stop;
         return std::nullopt;
     }
 

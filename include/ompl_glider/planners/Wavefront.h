@@ -162,7 +162,7 @@ public:
     }
 
 private:
-    /// One search of search() with its steps ([ThompsonICRA] Algorithm 1; Wavefront.cpp).
+    /// One search of search() with its steps ([ThompsonICRA] Algorithm 1; WavefrontSearch.cpp).
     class Search;
 
     /// One settled node of the last search (for getPlannerData()).

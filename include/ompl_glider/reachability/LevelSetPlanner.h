@@ -53,6 +53,11 @@ public:
     /// @p cellScale times defaultLevelSetResolution()) and its isochrones at @p times.
     std::optional<ReachableSet> reachableSet(const PipelineSetup &setup, const std::vector<double> &times,
                                              double cellScale) const override;
+    /// @brief The level set's first arrival at the setup's goal and its backtracked path (default LevelSetParams, the
+    /// cell defaultLevelSetResolution() and half of it as clearance, as solve() with resolution 0), stopping at the
+    /// goal, at @p tEnd, after @p maxWork node updates (LevelSetParams::maxNodeUpdates) or when @p stop answers true.
+    std::optional<FirstArrival> firstArrival(const PipelineSetup &setup, double tEnd, std::uint64_t maxWork,
+                                             const std::function<bool()> &stop) const override;
 
     /// @brief Cell size (0: automatic). @throws Error when negative or not finite.
     void setResolution(double h);

@@ -79,4 +79,17 @@ const PlannerEntry &plannerEntry(const std::string &name);
 
 /// @brief The canonical names joined by @p separator (for messages and --help).
 std::string plannerNameList(const std::string &separator = ", ");
+
+/// @brief The family's name as the enumerator spells it ("Lattice", "LevelSet", "Headings", ...), for messages.
+std::string plannerFamilyName(PlannerFamily family);
+
+/// @brief The planner the pipeline asks for by family, not by name (the global check's level set, the heading
+/// fallback's heading planner and level set): the first entry of @p family in the registry's order, that is the
+/// built-in one where the family has one (plannerRegistry()'s order), else the first registered by registerPlanner();
+/// null when the family has none. A planner registered into a family that already has a member is asked for by name
+/// only, never in the family's place: a registration cannot change what a mission that names no planner gets.
+const PlannerEntry *findPlannerOfFamily(PlannerFamily family);
+
+/// @brief As findPlannerOfFamily(). @throws Error "no registered planner of family X" when the family has none.
+const PlannerEntry &plannerOfFamily(PlannerFamily family);
 }  // namespace ompl_glider
