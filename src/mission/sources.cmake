@@ -1,55 +1,63 @@
-# mission/: mission files, the problem, the one planning pipeline, departure-time search
+# mission/: a mission as the pilot describes it, the problem it makes, the one planning pipeline and the plan flown.
+# One folder a concept (docs/ARCHITECTURE.md, "mission/ by concept"):
+#   loader/     mission files: the YAML reader and one file a section
+#   spec/       what the front ends give: overrides, the settings' declared ranges, forecast missions, output names
+#   problem/    MissionProblem as a value: its frame, endpoints and variants (a leg, a member, another field)
+#   inputs/     what the problem reads: the forecast and its members and truth, land and forbidden regions, safety
+#               (keep-off, bathymetry), the glider's observations and the correction they make
+#   planning/   the pipeline: planner set-up, legs, global check, heading fallback, ensembles, windows, evaluations
+#   execution/  the plan flown in another ocean, per strategy, once or in a batch
 list(APPEND OMPL_GLIDER_SOURCES
-  ${CMAKE_CURRENT_LIST_DIR}/DepartureTimeSearch.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/MissionLoader.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/OutputFormats.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/Overrides.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/SettingRanges.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/MissionLoader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/MissionReader.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Current.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/DrawnEnsemble.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Region.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Departure.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Waypoints.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Dive.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/ForbiddenRegions.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Safety.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/loader/Observations.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Planner.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Stints.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Outputs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Execution.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/loader/Observations.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/loader/Safety.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/loader/ForbiddenRegions.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Fleet.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/loader/Waypoints.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/loader/DrawnEnsemble.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/MissionProblem.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/ProblemField.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/ProblemLand.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/Safety.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/FieldChecks.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/Endpoints.cpp
-  # the planning pipeline, one concern per file (see PlanningInternal.h)
-  ${CMAKE_CURRENT_LIST_DIR}/Planning.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/MissionLegs.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/GlobalCheck.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/HeadingRoutes.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/PlannerSetup.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/NoPathReason.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/NoPathDiagnosis.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/Ensembles.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/GoalWindow.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/Evaluations.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/WorkEstimates.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/Isochrones.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/MissionExecution.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/ExecutionPacking.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/ExecutionTruth.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/ExecutionOracle.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/Fleet.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/PlanStatus.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/InputDigest.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/spec/Overrides.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/spec/SettingRanges.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/spec/OutputFormats.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/spec/InputDigest.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/problem/MissionProblem.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/problem/Endpoints.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inputs/ProblemField.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inputs/FieldChecks.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inputs/ProblemLand.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inputs/Safety.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inputs/Observations.cpp
+  # the planning pipeline, one concern per file (see planning/PlanningInternal.h)
+  ${CMAKE_CURRENT_LIST_DIR}/planning/Planning.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/PlannerSetup.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/MissionLegs.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/GlobalCheck.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/HeadingRoutes.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/NoPathReason.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/NoPathDiagnosis.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/Ensembles.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/GoalWindow.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/DepartureTimeSearch.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/Evaluations.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/WorkEstimates.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/Isochrones.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/Fleet.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/PlanStatus.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/execution/MissionExecution.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/execution/ExecutionPacking.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/execution/ExecutionTruth.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/execution/ExecutionOracle.cpp
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
-    ${CMAKE_CURRENT_LIST_DIR}/ForecastMission.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/Observations.cpp  # a glider's measurements: the last fix, the corrected forecast
+    ${CMAKE_CURRENT_LIST_DIR}/spec/ForecastMission.cpp  # a mission from a forecast and a handful of inputs
   )
 endif()

@@ -30,7 +30,7 @@
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/routes/WaypointRefiner.h"
 #include "ompl_glider/reference/ZermeloReference.h"
-#include "../core/Numbers.h"
+#include "../../core/Numbers.h"
 
 namespace ompl_glider
 {

@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "PlanningInternal.h"
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "ompl_glider/execution/Reflight.h"
 #include "ompl_glider/routes/HeadingRefiner.h"
 #include "ompl_glider/routes/HeadingTracker.h"

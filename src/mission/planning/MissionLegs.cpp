@@ -14,7 +14,7 @@
 #include <set>
 #include <tuple>
 
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/StopRequest.h"

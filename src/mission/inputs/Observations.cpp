@@ -8,15 +8,52 @@
 #include <cmath>
 #include <limits>
 
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/LocalProjection.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
-#include "PlanningInternal.h"
+#include "../planning/PlanningInternal.h"
 
 namespace ompl_glider
 {
+CorrectionParams MissionProblem::correctionParams() const
+{
+    const MissionSpec &m = spec_;
+    const ObservationsSpec s = m.observations.value_or(ObservationsSpec{});
+    const CorrectionParams forecast;  // a forecast's defaults (metres, seconds), stated once in CorrectedField.h
+    CorrectionParams p;
+    const double side = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
+    p.lengthScale = std::isfinite(s.lengthScale)  ? s.lengthScale
+                    : m.current.isForecast()      ? forecast.lengthScale
+                                                  : 0.1 * side;
+    const double span = field_->timeEnd() - field_->timeBegin();
+    p.timeScale = std::isfinite(s.timeScale) ? s.timeScale
+                  : m.hasTimeUnit()          ? forecast.timeScale / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds)
+                  : std::isfinite(span)      ? 0.1 * span
+                                             : side / m.vehicle.speed;
+    p.errorRatio = std::isfinite(s.errorRatio) ? s.errorRatio : forecast.errorRatio;
+    // what is given is kept; the rest are priors the DAC may improve on ([RasmussenGP] Sec. 5.4.1)
+    p.learn = s.learn;
+    p.lengthGiven = std::isfinite(s.lengthScale);
+    p.timeGiven = std::isfinite(s.timeScale);
+    p.ratioGiven = std::isfinite(s.errorRatio);
+    // a DAC is good to about 1 cm/s (its error is never estimated below that); in field units
+    const double seconds = !m.hasTimeUnit() ? 0.0 : m.current.isForecast() ? 1.0 : m.timeUnitSeconds;
+    const double metresPerSecond = m.physicalUnits().length && seconds > 0.0 ? m.metresPerUnit() / seconds : 0.0;
+    p.dacError = metresPerSecond > 0.0 ? 0.01 / metresPerSecond : 0.03 * m.vehicle.speed;
+    p.secondsPerTimeUnit = seconds;
+    if (m.dive.enabled)
+    {
+        p.depthTop = m.dive.params.zMin;
+        p.depthBottom = m.dive.params.zMax;
+    }
+    else
+        p.depthTop = p.depthBottom = m.vehicle.depth;
+    return p;
+}
+
+#if OMPL_GLIDER_WITH_NETCDF
 std::optional<GliderFix> lastFixOf(const std::string &path)
 {
     return readGliderObservations(path).lastFix;
@@ -395,4 +432,11 @@ std::string correctionNote(const MissionProblem &problem)
     }
     return out;
 }
+#else
+void MissionProblem::applyObservations(const GliderObservations *)
+{
+    if (spec_.observations && spec_.observations->hasFiles())
+        throw Error(spec_.place("observations") + ": this build reads no glider files (it has no NetCDF)");
+}
+#endif
 } // namespace ompl_glider

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "PlanningInternal.h"
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"

@@ -1,8 +1,8 @@
 // The mission's current field (MissionProblem.h, "the field"): the forecast or analytic flow planned on, the
 // members of an ensemble and the truth an execution flies in, each loaded from its source once.
 #include "ompl_glider/mission/MissionProblem.h"
-#include "ProblemParts.h"
-#include "../io/NumberText.h"
+#include "../problem/ProblemParts.h"
+#include "../../io/NumberText.h"
 
 #include <algorithm>
 #include <cmath>

@@ -21,7 +21,7 @@
 #include "ompl_glider/reference/ZermeloReference.h"
 #include "ompl_glider/ompl/PipelinePlanner.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
-#include "../core/Numbers.h"
+#include "../../core/Numbers.h"
 
 namespace ompl_glider
 {

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <set>
 
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/execution/Execution.h"

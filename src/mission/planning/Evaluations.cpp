@@ -184,4 +184,32 @@ OptimumReference optimumReference(const MissionProblem &problem, double departur
         out.path.push_back({z.x, z.y, z.t});
     return out;
 }
+void planning_detail::addPlanningWork(PlannedPath &to, const PlannedPath &from)
+{
+    to.searchCostFunctionCalls += from.searchCostFunctionCalls;
+    to.postprocessCostFunctionCalls += from.postprocessCostFunctionCalls;
+    to.currentModelCalls += from.currentModelCalls;
+    to.expandedVertices += from.expandedVertices;
+    to.planningSeconds += from.planningSeconds;
+    to.postprocessSeconds += from.postprocessSeconds;
+}
+
+std::string planning_detail::frozenFieldNote(const MissionProblem &problem, const PlannedPath &plan)
+{
+    const MissionSpec &m = problem.getSpec();
+    if (!plan.solved || plan.path.empty() || m.current.horizonPolicy != BeyondForecast::HoldLast || m.current.steady)
+        return "";
+    const auto &members = problem.getMembers();
+    const FieldGrid *grid = (members.empty() ? problem.getField() : members.front())->grid();
+    if (!grid || grid->recordTimes().size() < 2)
+        return "";
+    const double last = grid->recordTimes().back(), arrival = plan.path.back().t;
+    if (!(arrival > last))
+        return "";
+    const double held = arrival - std::max(last, plan.departure);
+    return "planned past the forecast's last time (" + timeText(problem, last) +
+           ") on its last field, held frozen (" + m.term("current.horizon: hold_last") + ") for the last " +
+           (m.physicalUnits().time ? text::durationText(held * m.timeUnitSeconds) : text::number(held)) + " of the route";
+}
+
 }  // namespace ompl_glider

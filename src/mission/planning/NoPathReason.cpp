@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "PlanningInternal.h"
 #include "ompl_glider/ompl/PipelinePlanner.h"
 

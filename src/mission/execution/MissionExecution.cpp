@@ -21,11 +21,11 @@
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "ExecutionOracle.h"
 #include "ExecutionPacking.h"
 #include "ExecutionTruth.h"
-#include "PlanningInternal.h"
+#include "../planning/PlanningInternal.h"
 
 namespace ompl_glider
 {

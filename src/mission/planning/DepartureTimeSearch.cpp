@@ -11,7 +11,7 @@
 #include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/current/AkimaSpline.h"
-#include "../core/Numbers.h"
+#include "../../core/Numbers.h"
 
 namespace ompl_glider
 {

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "../io/NumberText.h"
-#include "loader/MissionReader.h"
+#include "../../io/NumberText.h"
+#include "MissionReader.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"

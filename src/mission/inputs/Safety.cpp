@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/GeoBox.h"

@@ -11,7 +11,7 @@
 
 #include "PlanningInternal.h"
 #include "ompl_glider/current/CurrentField.h"
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 
 namespace ompl_glider
 {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ResourceLimits.h"

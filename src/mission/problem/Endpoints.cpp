@@ -6,13 +6,14 @@
 #include <utility>
 #include <vector>
 
-#include "../io/NumberText.h"
-#include "PlanningInternal.h"
+#include "../../io/NumberText.h"
+#include "../planning/PlanningInternal.h"
 #include "ompl_glider/current/BeyondForecast.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/SettingRanges.h"
 
 namespace ompl_glider
 {
@@ -139,42 +140,6 @@ MissionProblem MissionProblem::withField(std::shared_ptr<const CurrentField> fie
     return p;
 }
 
-CorrectionParams MissionProblem::correctionParams() const
-{
-    const MissionSpec &m = spec_;
-    const ObservationsSpec s = m.observations.value_or(ObservationsSpec{});
-    const CorrectionParams forecast;  // a forecast's defaults (metres, seconds), stated once in CorrectedField.h
-    CorrectionParams p;
-    const double side = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
-    p.lengthScale = std::isfinite(s.lengthScale)  ? s.lengthScale
-                    : m.current.isForecast()      ? forecast.lengthScale
-                                                  : 0.1 * side;
-    const double span = field_->timeEnd() - field_->timeBegin();
-    p.timeScale = std::isfinite(s.timeScale) ? s.timeScale
-                  : m.hasTimeUnit()          ? forecast.timeScale / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds)
-                  : std::isfinite(span)      ? 0.1 * span
-                                             : side / m.vehicle.speed;
-    p.errorRatio = std::isfinite(s.errorRatio) ? s.errorRatio : forecast.errorRatio;
-    // what is given is kept; the rest are priors the DAC may improve on ([RasmussenGP] Sec. 5.4.1)
-    p.learn = s.learn;
-    p.lengthGiven = std::isfinite(s.lengthScale);
-    p.timeGiven = std::isfinite(s.timeScale);
-    p.ratioGiven = std::isfinite(s.errorRatio);
-    // a DAC is good to about 1 cm/s (its error is never estimated below that); in field units
-    const double seconds = !m.hasTimeUnit() ? 0.0 : m.current.isForecast() ? 1.0 : m.timeUnitSeconds;
-    const double metresPerSecond = m.physicalUnits().length && seconds > 0.0 ? m.metresPerUnit() / seconds : 0.0;
-    p.dacError = metresPerSecond > 0.0 ? 0.01 / metresPerSecond : 0.03 * m.vehicle.speed;
-    p.secondsPerTimeUnit = seconds;
-    if (m.dive.enabled)
-    {
-        p.depthTop = m.dive.params.zMin;
-        p.depthBottom = m.dive.params.zMax;
-    }
-    else
-        p.depthTop = p.depthBottom = m.vehicle.depth;
-    return p;
-}
-
 MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
 {
     MissionProblem p(*this);
@@ -184,14 +149,6 @@ MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
     p.goal_ = goal;
     return p;
 }
-
-#if !OMPL_GLIDER_WITH_NETCDF
-void MissionProblem::applyObservations(const GliderObservations *)
-{
-    if (spec_.observations && spec_.observations->hasFiles())
-        throw Error(spec_.place("observations") + ": this build reads no glider files (it has no NetCDF)");
-}
-#endif
 
 void MissionProblem::checkViaPoints() const
 {
@@ -209,37 +166,16 @@ void MissionProblem::checkViaPoints() const
         if (std::isfinite(span) && v.stay > span)
             throw Error(m.place(field + ".stay") + named + ": a stay of " + planning_detail::durationText(*this, v.stay) +
                         " is longer than the whole forecast");
-        if (!(std::isnan(v.radius) || v.radius > 0.0))
-            throw Error(m.place(field + ".radius") + named + ": the radius must be > 0");
+        if (!std::isnan(v.radius))  // (a program may set it without the loader: its declared range)
+            try
+            {
+                checkSetting("waypoints[].radius", v.radius, text::number(v.radius));
+            }
+            catch (const Error &err)
+            {
+                throw Error(m.place(field + ".radius") + named + ": " + err.what());
+            }
     }
-}
-
-void planning_detail::addPlanningWork(PlannedPath &to, const PlannedPath &from)
-{
-    to.searchCostFunctionCalls += from.searchCostFunctionCalls;
-    to.postprocessCostFunctionCalls += from.postprocessCostFunctionCalls;
-    to.currentModelCalls += from.currentModelCalls;
-    to.expandedVertices += from.expandedVertices;
-    to.planningSeconds += from.planningSeconds;
-    to.postprocessSeconds += from.postprocessSeconds;
-}
-
-std::string planning_detail::frozenFieldNote(const MissionProblem &problem, const PlannedPath &plan)
-{
-    const MissionSpec &m = problem.getSpec();
-    if (!plan.solved || plan.path.empty() || m.current.horizonPolicy != BeyondForecast::HoldLast || m.current.steady)
-        return "";
-    const auto &members = problem.getMembers();
-    const FieldGrid *grid = (members.empty() ? problem.getField() : members.front())->grid();
-    if (!grid || grid->recordTimes().size() < 2)
-        return "";
-    const double last = grid->recordTimes().back(), arrival = plan.path.back().t;
-    if (!(arrival > last))
-        return "";
-    const double held = arrival - std::max(last, plan.departure);
-    return "planned past the forecast's last time (" + timeText(problem, last) +
-           ") on its last field, held frozen (" + m.term("current.horizon: hold_last") + ") for the last " +
-           (m.physicalUnits().time ? text::durationText(held * m.timeUnitSeconds) : text::number(held)) + " of the route";
 }
 
 Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) const

@@ -5,12 +5,12 @@
 #include <limits>
 #include <string>
 
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/mission/MissionProblem.h"
-#include "ProblemParts.h"
+#include "../problem/ProblemParts.h"
 
 namespace ompl_glider
 {

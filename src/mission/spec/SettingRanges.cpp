@@ -8,7 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/Time.h"

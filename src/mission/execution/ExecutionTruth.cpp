@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "ompl_glider/Exception.h"
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 
 namespace ompl_glider::execution_truth
 {

@@ -2,8 +2,8 @@
 // and ice, each checked as given and placed in the planning frame (the keep-off zone and the depth limit:
 // Safety.cpp).
 #include "ompl_glider/mission/MissionProblem.h"
-#include "ProblemParts.h"
-#include "../io/NumberText.h"
+#include "../problem/ProblemParts.h"
+#include "../../io/NumberText.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ProblemParts.h"
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "ompl_glider/current/EnsembleField.h"
 #include "ompl_glider/current/ShiftedTimeField.h"
 
@@ -31,7 +31,7 @@
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/mission/Observations.h"
 #endif
-#include "../core/Numbers.h"
+#include "../../core/Numbers.h"
 
 namespace ompl_glider
 {

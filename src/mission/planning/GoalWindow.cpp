@@ -10,7 +10,7 @@
 
 #include <ompl/geometric/PathGeometric.h>
 
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"

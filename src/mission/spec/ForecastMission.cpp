@@ -20,7 +20,7 @@
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Observations.h"
 #include "ompl_glider/mission/SettingRanges.h"
-#include "../io/NumberText.h"
+#include "../../io/NumberText.h"
 
 namespace ompl_glider
 {
