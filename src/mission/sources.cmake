@@ -39,6 +39,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/planning/Planning.cpp
   ${CMAKE_CURRENT_LIST_DIR}/planning/PlannerSetup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/planning/MissionLegs.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/planning/FreeOrder.cpp
   ${CMAKE_CURRENT_LIST_DIR}/planning/GlobalCheck.cpp
   ${CMAKE_CURRENT_LIST_DIR}/planning/HeadingRoutes.cpp
   ${CMAKE_CURRENT_LIST_DIR}/planning/NoPathReason.cpp
