@@ -23,7 +23,7 @@ PACKAGES=(
   gmt gmt-gshhg-low ferret-datasets
   libncarg-data
   pybind11-dev python3-dev python3-numpy python3-pytest
-  clang-14 libfuzzer-14-dev
+  clang-14 libfuzzer-14-dev clang-format-14
   libjs-leaflet chromium python3-websocket python3-netcdf4
   python3-zarr python3-numcodecs python3-xarray python3-gdal gdal-bin
 )

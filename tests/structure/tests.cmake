@@ -13,3 +13,5 @@ add_test(NAME structure.readme_and_docs
 add_test(NAME structure.ci_only_list
   COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_ci_only_list.sh ${CMAKE_CTEST_COMMAND} ${PROJECT_SOURCE_DIR}
   WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
+# The C++ formatted as .clang-format says (scripts/check_format.sh; --fix formats the tree).
+add_test(NAME structure.format COMMAND bash ${PROJECT_SOURCE_DIR}/scripts/check_format.sh)
