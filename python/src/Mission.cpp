@@ -208,17 +208,19 @@ ViaPointSpec viaPoint(const py::handle item, const std::string &at, const Missio
     return p;
 }
 
-/// The forecast of a NetCDF path (a file, or a comma-separated list of files and glob patterns) with the
-/// command line's options, as `--currents FILE --start ... --goal ...` builds it (forecastMission()).
+/// The forecast of a gridded path (a file, or a comma-separated list of files and glob patterns) with the
+/// command line's options, as `--currents FILE --start ... --goal ...` builds it (forecastMission()), read by the
+/// gridded source @p kind names (Field.kind: gridded, its alias netcdf, or a registered one).
 MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std::string &departure, double speed,
                      double depth, std::optional<Quad> region, const std::map<std::string, std::string> &variables,
                      const std::string &xy, const std::string &depthScheme, const std::string &timeScheme,
                      const std::string &horizon, const std::string &velocityUnits, const std::string &timeUnits,
                      std::optional<std::size_t> steadyRecord, bool zeroVelocityLand,
                      std::optional<Pair> depthAverage, bool snapToWater, bool startFromFix,
-                     bool departureFromFix)
+                     bool departureFromFix, const std::string &kind)
 {
     ForecastInput in;
+    in.current.type = kind;  // a gridded kind of the registry (or its alias), kept as named; another: netcdf
     in.snapToWater = snapToWater;
     in.words = keywordWords();
     const std::vector<std::string> list = forecastFileList(files);
@@ -603,9 +605,13 @@ void bindMission(py::module_ &m)
           py::arg("horizon") = "refuse", py::arg("velocity_units") = "", py::arg("time_units") = "",
           py::arg("steady_record") = py::none(), py::arg("zero_velocity_land") = true,
           py::arg("depth_average") = py::none(), py::arg("snap_to_water") = false,
-          py::arg("start_from_fix") = false, py::arg("departure_from_fix") = false,
-          "The mission of a NetCDF forecast, as glider_plan --currents builds it (start and departure from the "
-          "observations' last fix: marked so, until the mission resumes there).");
+          py::arg("start_from_fix") = false, py::arg("departure_from_fix") = false, py::arg("kind") = "netcdf",
+          "The mission of a gridded forecast, as glider_plan --currents builds it (start and departure from the "
+          "observations' last fix: marked so, until the mission resumes there), read by the gridded source `kind` "
+          "names (gridded, its alias netcdf, or a registered gridded kind), which the mission keeps as named.");
+    m.def("is_gridded_kind", &isGriddedKind, py::arg("kind"),
+          "True when the registry reads the current kind `kind` (a name or an alias) from files through a gridded "
+          "source (CurrentFieldRegistry.h: isGriddedKind()).");
     m.def("planner_names", []() {
         std::vector<std::string> names;
         for (const PlannerEntry &e : plannerRegistry())

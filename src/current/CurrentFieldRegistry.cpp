@@ -103,11 +103,12 @@ std::deque<CurrentFieldKind> &kinds()
                          return std::make_shared<RankineVortex>(q);
                      },
                      nullptr});
-        k.push_back({"netcdf",
+        k.push_back({"gridded",
                      "gridded forecast read from NetCDF files, OPeNDAP datasets, Zarr stores or GRIB files",
                      {},
                      nullptr,
-                     netCdfSource()});
+                     netCdfSource(),
+                     {"netcdf"}});
         return k;
     }();
     return kinds;
@@ -126,6 +127,10 @@ void registerCurrentFieldKind(CurrentFieldKind kind)
                     "or a source (a gridded forecast)");
     if (findCurrentFieldKind(kind.name))
         throw Error("registerCurrentFieldKind: the name '" + kind.name + "' is taken");
+    for (const std::string &alias : kind.aliases)
+        if (alias.empty() || alias == kind.name || findCurrentFieldKind(alias))
+            throw Error("registerCurrentFieldKind: the alias '" + alias + "' of '" + kind.name + "' is " +
+                        (alias.empty() ? "empty" : "taken"));
     if (kind.source && !kind.parameters.empty())
         throw Error("registerCurrentFieldKind: a gridded kind ('" + kind.name + "') takes a file, not parameters");
     kinds().push_back(std::move(kind));
@@ -136,7 +141,28 @@ const CurrentFieldKind *findCurrentFieldKind(const std::string &name)
     for (const CurrentFieldKind &k : currentFieldKinds())
         if (k.name == name)
             return &k;
+    for (const CurrentFieldKind &k : currentFieldKinds())
+        for (const std::string &alias : k.aliases)
+            if (alias == name)
+                return &k;
     return nullptr;
+}
+
+bool isGriddedKind(const std::string &name)
+{
+    const CurrentFieldKind *kind = findCurrentFieldKind(name);
+    return kind && kind->gridded();
+}
+
+std::vector<std::string> currentFieldKindNames()
+{
+    std::vector<std::string> out;
+    for (const CurrentFieldKind &k : currentFieldKinds())
+    {
+        out.push_back(k.name);
+        out.insert(out.end(), k.aliases.begin(), k.aliases.end());
+    }
+    return out;
 }
 
 std::string currentFieldKindList(const std::string &separator)
