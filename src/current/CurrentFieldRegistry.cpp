@@ -107,11 +107,17 @@ std::deque<CurrentFieldKind> &kinds()
                      "gridded forecast read from NetCDF files, OPeNDAP datasets, Zarr stores or GRIB files",
                      {},
                      nullptr,
-                     netCdfSource(),
-                     {"netcdf"}});
+                     netCdfSource()});
         return k;
     }();
     return kinds;
+}
+
+/// The aliases: (alias, the kind's name), in the order they were added; the built-in "netcdf" for `gridded`.
+std::vector<std::pair<std::string, std::string>> &aliases()
+{
+    static std::vector<std::pair<std::string, std::string>> list{{"netcdf", "gridded"}};
+    return list;
 }
 }  // namespace
 
@@ -127,10 +133,6 @@ void registerCurrentFieldKind(CurrentFieldKind kind)
                     "or a source (a gridded forecast)");
     if (findCurrentFieldKind(kind.name))
         throw Error("registerCurrentFieldKind: the name '" + kind.name + "' is taken");
-    for (const std::string &alias : kind.aliases)
-        if (alias.empty() || alias == kind.name || findCurrentFieldKind(alias))
-            throw Error("registerCurrentFieldKind: the alias '" + alias + "' of '" + kind.name + "' is " +
-                        (alias.empty() ? "empty" : "taken"));
     if (kind.source && !kind.parameters.empty())
         throw Error("registerCurrentFieldKind: a gridded kind ('" + kind.name + "') takes a file, not parameters");
     kinds().push_back(std::move(kind));
@@ -141,11 +143,31 @@ const CurrentFieldKind *findCurrentFieldKind(const std::string &name)
     for (const CurrentFieldKind &k : currentFieldKinds())
         if (k.name == name)
             return &k;
-    for (const CurrentFieldKind &k : currentFieldKinds())
-        for (const std::string &alias : k.aliases)
-            if (alias == name)
-                return &k;
+    for (const auto &[alias, kind] : aliases())
+        if (alias == name)
+            for (const CurrentFieldKind &k : currentFieldKinds())
+                if (k.name == kind)
+                    return &k;
     return nullptr;
+}
+
+void addCurrentFieldKindAlias(const std::string &alias, const std::string &name)
+{
+    const CurrentFieldKind *kind = findCurrentFieldKind(name);
+    if (!kind)
+        throw Error("addCurrentFieldKindAlias: no current kind '" + name + "'");
+    if (alias.empty() || findCurrentFieldKind(alias))
+        throw Error("addCurrentFieldKindAlias: the alias '" + alias + "' is " + (alias.empty() ? "empty" : "taken"));
+    aliases().emplace_back(alias, kind->name);
+}
+
+std::vector<std::string> currentFieldKindAliases(const CurrentFieldKind &kind)
+{
+    std::vector<std::string> out;
+    for (const auto &[alias, name] : aliases())
+        if (name == kind.name)
+            out.push_back(alias);
+    return out;
 }
 
 bool isGriddedKind(const std::string &name)
@@ -160,7 +182,8 @@ std::vector<std::string> currentFieldKindNames()
     for (const CurrentFieldKind &k : currentFieldKinds())
     {
         out.push_back(k.name);
-        out.insert(out.end(), k.aliases.begin(), k.aliases.end());
+        for (const std::string &alias : currentFieldKindAliases(k))
+            out.push_back(alias);
     }
     return out;
 }

@@ -81,16 +81,17 @@ TEST(GriddedKind, RegistryFindsOneKindByNameAndAlias)
 
 TEST(GriddedKind, AnAliasIsNoFreeName)
 {
+    EXPECT_EQ(currentFieldKindAliases(*findCurrentFieldKind("gridded")), std::vector<std::string>{"netcdf"});
+    EXPECT_TRUE(currentFieldKindAliases(*findCurrentFieldKind("uniform")).empty());
     CurrentFieldKind k = *findCurrentFieldKind("gridded");
-    k.name = "netcdf";  // the alias of the built-in kind
-    k.aliases.clear();
+    k.name = "netcdf";  // the alias of the built-in kind: taken
     EXPECT_THROW(registerCurrentFieldKind(k), Error);
-    k.name = "gridded_twin";
-    k.aliases = {"netcdf"};
-    EXPECT_THROW(registerCurrentFieldKind(k), Error);
-    k.aliases = {""};
-    EXPECT_THROW(registerCurrentFieldKind(k), Error);
-    EXPECT_EQ(findCurrentFieldKind("gridded_twin"), nullptr);
+    EXPECT_THROW(addCurrentFieldKindAlias("netcdf", "uniform"), Error);  // taken
+    EXPECT_THROW(addCurrentFieldKindAlias("gridded", "uniform"), Error);  // a kind's name
+    EXPECT_THROW(addCurrentFieldKindAlias("", "gridded"), Error);
+    EXPECT_THROW(addCurrentFieldKindAlias("steady", "no_such_kind"), Error);
+    EXPECT_EQ(findCurrentFieldKind("steady"), nullptr);
+    // (no alias is added here: the registry is the process's, shared by the tests of this executable)
 }
 
 TEST(GriddedKind, MissionFilesSpellingEitherNamePlanTheSameRoute)

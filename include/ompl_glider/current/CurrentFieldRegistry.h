@@ -29,9 +29,6 @@ struct CurrentFieldKind
     std::function<std::shared_ptr<const CurrentField>(const std::map<std::string, double> &)> make;
     /// The source that reads a gridded kind's forecast (files, folders or URLs); null for analytic kinds.
     std::shared_ptr<const GriddedSource> source;
-    /// Other names it answers to (findCurrentFieldKind()): "netcdf", the name `gridded` had before it read more than
-    /// NetCDF. A mission keeps the name it was given (CurrentSpec::type), so outputs say what its file says.
-    std::vector<std::string> aliases;
 
     /// @brief Read from files by a source (not made from parameters).
     bool gridded() const
@@ -48,9 +45,19 @@ const std::deque<CurrentFieldKind> &currentFieldKinds();
 /// @brief Adds @p kind, so that mission files, the command line's forecast missions (ForecastInput::current.type)
 /// and Python can ask for it by name like a built-in kind (a source of an application, or one a test registers).
 /// Call it before planning starts, not while other threads plan; pointers from findCurrentFieldKind() stay valid.
-/// @throws Error when the kind has no name, has neither a make function nor a source (or both), or its name or one
-/// of its aliases is taken (as a name or an alias).
+/// @throws Error when the kind has no name, has neither a make function nor a source (or both), or its name is
+/// taken (as a name or an alias).
 void registerCurrentFieldKind(CurrentFieldKind kind);
+
+/// @brief Makes @p alias another name of the kind called @p name: findCurrentFieldKind(alias) finds it, and mission
+/// files, the command line and Python may give either. A mission keeps the name it was given (CurrentSpec::type), so
+/// its outputs say what its file says. The built-in alias: "netcdf" for `gridded` (its name before it read OPeNDAP,
+/// Zarr and GRIB too). Call it before planning starts, as registerCurrentFieldKind().
+/// @throws Error when there is no kind @p name, or @p alias is empty or taken (as a name or an alias).
+void addCurrentFieldKindAlias(const std::string &alias, const std::string &name);
+
+/// @brief The other names of @p kind (addCurrentFieldKindAlias()), in the order they were added.
+std::vector<std::string> currentFieldKindAliases(const CurrentFieldKind &kind);
 
 /// @brief The kind called @p name, by its name or one of its aliases ("netcdf" finds `gridded`); null when there is
 /// none.
