@@ -32,7 +32,7 @@ if(OMPL_GLIDER_WITH_NETCDF)
     ${CMAKE_CURRENT_LIST_DIR}/gridded/TracerLand.cpp
     ${CMAKE_CURRENT_LIST_DIR}/gridded/NodeCoordinates.cpp
     ${CMAKE_CURRENT_LIST_DIR}/gridded/ForecastFiles.cpp
-    # the reader as the registry's gridded source `netcdf`
+    # the reader as the registry's gridded source `gridded` (alias `netcdf`)
     ${CMAKE_CURRENT_LIST_DIR}/gridded/NetCdfSource.cpp
   )
 endif()

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <limits>
 
+#include <netcdf.h>
+
 #include "GriddedDataset.h"
 
 namespace ompl_glider

@@ -174,7 +174,6 @@ ZarrMirror::~ZarrMirror()
 
 void ZarrMirror::readArrays(const std::string &metadata)
 {
-    const std::string source = withoutCredentials(url_);
     CPLJSONDocument doc;
     CPLPushErrorHandler(CPLQuietErrorHandler);
     const bool parsed = doc.LoadMemory(metadata);
@@ -356,7 +355,6 @@ std::string ZarrMirror::chunkChanged(const std::string &key)
 void ZarrMirror::checkRepublished()
 {
     checked_ = true;
-    const std::string source = withoutCredentials(url_);
     const std::string advice = "; remove the cache folder '" + folder_ + "' to plan on the store as it is now";
     std::string now, cached;
     if (!fetch(".zmetadata", now) || !slurp(folder_ + "/.zmetadata", cached) || now != cached)
