@@ -19,11 +19,11 @@ using namespace ompl_glider;
 
 namespace
 {
-const std::string kExamples = std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/";
+const std::string kGriddedKindExamples = std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/";
 
 /// examples/labrador_forecast.yaml with its current's type spelled @p type, without its departure window and its
 /// dive profile (one departure: a quick plan).
-std::string labradorMission(const std::string &type)
+std::string griddedKindMission(const std::string &type)
 {
     return "name: labrador_" + type +
            "\n"
@@ -44,7 +44,7 @@ std::string labradorMission(const std::string &type)
            "planner: {name: zastartve, grid_size: 4000, sectors: 3}\n";
 }
 
-void expectSamePlan(const MissionResult &a, const MissionResult &b)
+void expectIdenticalPlans(const MissionResult &a, const MissionResult &b)
 {
     ASSERT_TRUE(a.plan.solved) << a.plan.reason;
     ASSERT_TRUE(b.plan.solved) << b.plan.reason;
@@ -96,22 +96,22 @@ TEST(GriddedKind, AnAliasIsNoFreeName)
 
 TEST(GriddedKind, MissionFilesSpellingEitherNamePlanTheSameRoute)
 {
-    const MissionSpec alias = parseMission(labradorMission("netcdf"), "alias.yaml", kExamples);
-    const MissionSpec named = parseMission(labradorMission("gridded"), "named.yaml", kExamples);
+    const MissionSpec alias = parseMission(griddedKindMission("netcdf"), "alias.yaml", kGriddedKindExamples);
+    const MissionSpec named = parseMission(griddedKindMission("gridded"), "named.yaml", kGriddedKindExamples);
     // each keeps the name it was given (the outputs of existing missions stay as they were)
     EXPECT_EQ(alias.current.type, "netcdf");
     EXPECT_EQ(named.current.type, "gridded");
     EXPECT_TRUE(alias.current.isForecast());
     EXPECT_TRUE(named.current.isForecast());
     EXPECT_EQ(alias.departure.time, named.departure.time);
-    expectSamePlan(runMission(MissionProblem(alias)), runMission(MissionProblem(named)));
+    expectIdenticalPlans(runMission(MissionProblem(alias)), runMission(MissionProblem(named)));
 }
 
 TEST(GriddedKind, ForecastInputNamingEitherNamePlansTheSameRoute)
 {
     // the command line's --currents (no kind named: recorded as it always was, netcdf) and a caller naming the kind
     ForecastInput in;
-    in.current.file = kExamples + "labrador_forecast.nc";
+    in.current.file = kGriddedKindExamples + "labrador_forecast.nc";
     in.start = {-52.7, 47.9};
     in.goal = {-51.5, 48.45};
     in.speed = 0.3;
@@ -125,6 +125,6 @@ TEST(GriddedKind, ForecastInputNamingEitherNamePlansTheSameRoute)
     EXPECT_EQ(named.current.type, "gridded");
     EXPECT_EQ(alias.current.type, "netcdf");
     const MissionResult r = runMission(MissionProblem(cli));
-    expectSamePlan(r, runMission(MissionProblem(named)));
-    expectSamePlan(r, runMission(MissionProblem(alias)));
+    expectIdenticalPlans(r, runMission(MissionProblem(named)));
+    expectIdenticalPlans(r, runMission(MissionProblem(alias)));
 }
