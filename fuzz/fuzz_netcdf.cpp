@@ -25,7 +25,7 @@
 #include <string>
 
 #include <netcdf.h>
-#include "netcdf/NetCdfInternal.h"
+#include "gridded/GriddedInternal.h"
 #include "FuzzUtil.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
@@ -158,7 +158,7 @@ struct LeaksIgnored
 /// type it does not know in a CDF-1 header) is not handed to NetCDF-C here either.
 bool netCdfOpens(const std::string &path)
 {
-    if (ompl_glider::netcdf_detail::classicTruncation(path))
+    if (ompl_glider::gridded_detail::classicTruncation(path))
         return false;
     const LeaksIgnored ignored;
     int id = 0;

@@ -34,7 +34,7 @@ from . import _core
 from ._core import Error, set_verbose, set_remote_access as _set_remote_access
 
 __all__ = ["plan", "plan_fleet", "Field", "Result", "Route", "Error", "planner_names", "analytic_fields", "set_verbose",
-           "set_remote_access"]
+           "set_remote_access", "is_gridded_kind"]
 
 Pair = Tuple[float, float]
 ProgressCallback = Callable[[str, bool], None]
@@ -96,10 +96,24 @@ def analytic_fields() -> Dict[str, Dict[str, float]]:
     return dict(_core.analytic_fields())
 
 
-class Field:
-    """A current field for :func:`plan`: a NetCDF forecast, numpy arrays, or an analytic flow by name.
+def is_gridded_kind(kind: str) -> bool:
+    """True when the library's registry reads the current kind ``kind`` from files through a gridded source: the
+    built-in ``gridded`` (NetCDF, OPeNDAP, Zarr, GRIB) and its alias ``netcdf``, and the kinds an application
+    registered as gridded (registerCurrentFieldKind()); False for analytic flows and unknown names."""
+    return _core.is_gridded_kind(kind)
 
-    Build one with :meth:`netcdf`, :meth:`from_arrays` or :meth:`analytic`.
+
+def _is_gridded(field: "Field") -> bool:
+    """A Field planned as a forecast (forecast_mission()): one of a gridded kind of the registry."""
+    return field.kind != "analytic" and isinstance(field.kind, str) and _core.is_gridded_kind(field.kind)
+
+
+class Field:
+    """A current field for :func:`plan`: a gridded forecast (NetCDF, OPeNDAP, Zarr, GRIB, or another gridded source
+    of the registry), numpy arrays, or an analytic flow by name.
+
+    Build one with :meth:`gridded` (or its alias :meth:`netcdf`), :meth:`from_arrays` or :meth:`analytic`. ``kind``
+    is the registry's name of a gridded source (:func:`is_gridded_kind`) or "analytic".
     """
 
     def __init__(self, kind: str, **settings: Any) -> None:
@@ -110,26 +124,59 @@ class Field:
         return f"Field({self.kind!r}, {self.settings!r})"
 
     @staticmethod
-    def netcdf(path: Union[str, os.PathLike, Sequence[str]], *, variables: Optional[Dict[str, str]] = None,
-               depth: float = 0.0, xy_interpolation: str = "bilinear", depth_interpolation: str = "linear",
-               time_interpolation: str = "linear", horizon: str = "refuse", velocity_units: str = "",
-               time_units: str = "", steady_record: Optional[int] = None, zero_velocity_land: bool = True,
-               depth_average: Optional[Pair] = None) -> "Field":
-        """A NetCDF forecast with the command line's options (``glider_plan --currents``).
+    def gridded(path: Union[str, os.PathLike, Sequence[str]], *, kind: str = "gridded",
+                variables: Optional[Dict[str, str]] = None, depth: float = 0.0, xy_interpolation: str = "bilinear",
+                depth_interpolation: str = "linear", time_interpolation: str = "linear", horizon: str = "refuse",
+                velocity_units: str = "", time_units: str = "", steady_record: Optional[int] = None,
+                zero_velocity_land: bool = True, depth_average: Optional[Pair] = None) -> "Field":
+        """A gridded forecast with the command line's options (``glider_plan --currents``): NetCDF files, OPeNDAP
+        URLs, Zarr stores or GRIB files (kind ``gridded``, alias ``netcdf``), or the files of another gridded source
+        the library's registry knows by ``kind`` (:func:`is_gridded_kind`).
 
         path: a file, a list of files read as one forecast, or a comma-separated list of files and glob patterns.
         variables: names by role (u, v, lon, lat, depth, time, mask, angle), found automatically when not given.
         The other options are those of the mission format's ``current`` section (examples/MISSION_FORMAT.md).
         """
+        return Field._forecast("Field.gridded()", kind, path, variables, depth, xy_interpolation,
+                               depth_interpolation, time_interpolation, horizon, velocity_units, time_units,
+                               steady_record, zero_velocity_land, depth_average)
+
+    @staticmethod
+    def netcdf(path: Union[str, os.PathLike, Sequence[str]], *, variables: Optional[Dict[str, str]] = None,
+               depth: float = 0.0, xy_interpolation: str = "bilinear", depth_interpolation: str = "linear",
+               time_interpolation: str = "linear", horizon: str = "refuse", velocity_units: str = "",
+               time_units: str = "", steady_record: Optional[int] = None, zero_velocity_land: bool = True,
+               depth_average: Optional[Pair] = None) -> "Field":
+        """A NetCDF forecast with the command line's options (``glider_plan --currents``): :meth:`gridded` by the
+        kind's alias ``netcdf`` (its results say ``netcdf``, as glider_plan's do). Reads whatever :meth:`gridded`
+        reads (NetCDF files, OPeNDAP URLs, Zarr stores, GRIB files).
+
+        path: a file, a list of files read as one forecast, or a comma-separated list of files and glob patterns.
+        variables: names by role (u, v, lon, lat, depth, time, mask, angle), found automatically when not given.
+        The other options are those of the mission format's ``current`` section (examples/MISSION_FORMAT.md).
+        """
+        return Field._forecast("Field.netcdf()", "netcdf", path, variables, depth, xy_interpolation,
+                               depth_interpolation, time_interpolation, horizon, velocity_units, time_units,
+                               steady_record, zero_velocity_land, depth_average)
+
+    @staticmethod
+    def _forecast(who: str, kind: str, path: Union[str, os.PathLike, Sequence[str]],
+                  variables: Optional[Dict[str, str]], depth: float, xy_interpolation: str, depth_interpolation: str,
+                  time_interpolation: str, horizon: str, velocity_units: str, time_units: str,
+                  steady_record: Optional[int], zero_velocity_land: bool, depth_average: Optional[Pair]) -> "Field":
+        """The Field of :meth:`gridded` and :meth:`netcdf` (who names the method in messages)."""
+        if not isinstance(kind, str) or not _core.is_gridded_kind(kind):
+            raise _bad(f"{who}: kind", kind, "the name of a gridded source (gridded, netcdf, or one registered as "
+                       "gridded)")
         files = path if isinstance(path, (str, os.PathLike)) else ",".join(os.fspath(p) for p in path)
         if steady_record is not None and (isinstance(steady_record, (bool, np.bool_)) or
                                           not isinstance(steady_record, numbers.Integral) or steady_record < 0):
-            raise _bad("Field.netcdf(): steady_record", steady_record,
+            raise _bad(f"{who}: steady_record", steady_record,
                        "the index of the record to hold as a steady field, an integer >= 0 (0: the first record)")
         if depth_average is not None:
-            depth_average = _pair("Field.netcdf(): depth_average", depth_average)
-        return Field("netcdf", files=os.fspath(files), variables=dict(variables or {}),
-                     depth=_real("Field.netcdf(): depth", depth),
+            depth_average = _pair(f"{who}: depth_average", depth_average)
+        return Field(kind, files=os.fspath(files), variables=dict(variables or {}),
+                     depth=_real(f"{who}: depth", depth),
                      xy_interpolation=xy_interpolation, depth_interpolation=depth_interpolation,
                      time_interpolation=time_interpolation, horizon=horizon, velocity_units=velocity_units,
                      time_units=time_units, steady_record=steady_record, zero_velocity_land=zero_velocity_land,
@@ -439,8 +486,9 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     mission: a YAML mission file, a mission as a dict (the keys of the mission format, examples/MISSION_FORMAT.md;
     relative paths are resolved against the working directory), or None: the built-in Gulf Stream mission (as
     ``glider_plan`` without arguments), or the mission of ``field``.
-    field: a :class:`Field` instead of a mission: a NetCDF forecast (needs start and goal as lon, lat) or arrays (as
-    ``glider_plan --currents``), or an analytic flow (the built-in mission on that flow).
+    field: a :class:`Field` instead of a mission: a gridded forecast of any gridded source (NetCDF, OPeNDAP, Zarr,
+    GRIB, a registered one; needs start and goal as lon, lat) or arrays (as ``glider_plan --currents``), or an
+    analytic flow (the built-in mission on that flow).
     The keywords change the mission as glider_plan's flags do: start, goal ((x, y) or (lon, lat) as the mission
     gives them), speed, departure (a number in the mission's time unit or an ISO 8601 date), region ((x_min, y_min,
     x_max, y_max), or lon/lat in that order), forbidden (polygons, each a list of points or a dict with points,
@@ -499,7 +547,11 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     if field is not None and mission is not None:
         raise TypeError("plan(): give a mission or a field, not both")
     start_from_fix = departure_from_fix = False
-    if field is not None and field.kind == "netcdf" and start is None and observations is not None:
+    gridded = field is not None and _is_gridded(field)
+    if field is not None and not gridded and field.kind != "analytic":
+        raise _bad("plan(): keyword 'field'", field, "a Field of a gridded source (Field.gridded(), Field.netcdf(), "
+                   "Field.from_arrays()) or an analytic flow (Field.analytic())")
+    if gridded and start is None and observations is not None:
         # the glider's last fix, and its time: a first guess, until the mission resumes there (the library)
         fix = _core.last_fix(os.fspath(observations))
         if fix is None:
@@ -509,9 +561,9 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
         if departure is None:
             departure = fix[2]
             departure_from_fix = True
-    if field is not None and field.kind == "netcdf":
+    if gridded:
         if start is None or goal is None:
-            raise TypeError("plan(): a NetCDF field needs start and goal (lon, lat, or x, y on a Cartesian grid)")
+            raise TypeError("plan(): a gridded field needs start and goal (lon, lat, or x, y on a Cartesian grid)")
         s = field.settings
         if region is not None:
             try:
@@ -528,7 +580,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                                       s["xy_interpolation"], s["depth_interpolation"], s["time_interpolation"],
                                       s["horizon"], s["velocity_units"], s["time_units"], s["steady_record"],
                                       s["zero_velocity_land"], s["depth_average"], bool(snap_to_water),
-                                      start_from_fix, departure_from_fix)
+                                      start_from_fix, departure_from_fix, field.kind)
         for used in ("start", "goal", "departure", "speed", "region"):
             keywords.pop(used)
     elif field is not None:

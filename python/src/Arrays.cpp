@@ -22,7 +22,7 @@
 
 namespace py = pybind11;
 using ompl_glider::Error;
-using ompl_glider::netcdf_detail::NetCdfLock;
+using ompl_glider::gridded_detail::NetCdfLock;
 
 namespace ompl_glider_py
 {

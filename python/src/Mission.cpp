@@ -15,6 +15,7 @@
 #include <pybind11/stl.h>
 
 #include "Bindings.h"
+#include "KeywordValues.h"
 #include "ompl_glider/io/GliderObservations.h"
 #include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/Time.h"
@@ -37,103 +38,6 @@ namespace
 {
 using Pair = std::pair<double, double>;
 using Quad = std::tuple<double, double, double, double>;
-
-/// Where a keyword's value came from, for MissionSpec::place() (a keyword's mark names itself).
-SourceMark keyword(const std::string &name)
-{
-    return SourceMark{"plan(): keyword '" + name + "'", 0, Origin::Keyword};
-}
-
-/// "str 'fast'": the Python type and a short repr of a value, for messages.
-std::string describe(const py::handle &v)
-{
-    std::string r = py::repr(v).cast<std::string>();
-    if (r.size() > 60)
-        r = r.substr(0, 57) + "...";
-    return std::string(Py_TYPE(v.ptr())->tp_name) + " " + r;
-}
-
-bool isBool(const py::handle &v)
-{
-    return py::isinstance<py::bool_>(v) || std::string(Py_TYPE(v.ptr())->tp_name) == "numpy.bool_";
-}
-
-/// What keeps @p v, or an item of it at any depth (of a tuple, a list, a dict's values), from being the numbers a
-/// keyword takes: a bool (True is no 1.0) or a number that is not finite (NaN would read as "not given"); "" when
-/// nothing does. Texts are left to the keyword's own reading.
-std::string badNumber(const py::handle &v, const std::string &item = "")
-{
-    const std::string what = item.empty() ? "it" : "item " + item;
-    if (isBool(v))
-        return what + " is a bool";
-    if (py::isinstance<py::str>(v) || py::isinstance<py::bytes>(v))
-        return "";
-    if (py::isinstance<py::dict>(v))
-    {
-        for (const auto &kv : py::reinterpret_borrow<py::dict>(v))
-            if (std::string bad = badNumber(kv.second, item + "[" + py::repr(kv.first).cast<std::string>() + "]");
-                !bad.empty())
-                return bad;
-        return "";
-    }
-    if (py::isinstance<py::tuple>(v) || py::isinstance<py::list>(v))
-    {
-        std::size_t k = 0;
-        for (const py::handle x : v)
-            if (std::string bad = badNumber(x, item + "[" + std::to_string(k++) + "]"); !bad.empty())
-                return bad;
-        return "";
-    }
-    if (PyFloat_Check(v.ptr()) || (PyNumber_Check(v.ptr()) && !PyLong_Check(v.ptr()) && py::hasattr(v, "dtype")))
-    {
-        const double x = PyFloat_AsDouble(v.ptr());
-        if (PyErr_Occurred())
-            PyErr_Clear();
-        else if (!std::isfinite(x))
-            return what + " is not finite";
-    }
-    return "";
-}
-
-/// The value of keyword @p name as a T, or an Error naming the keyword, what it expects and what it got: a bool is
-/// no number, and a number no bool (smoothing=1 is refused, as smoothing="no" is), also as an item of a pair or a
-/// list (via=[(True, False)]); a number is finite (radius=nan is refused, not read as "not given"); a text is not
-/// empty (observations="" is refused, not read as "none").
-template <class T>
-T value(const py::handle &v, const std::string &name, const char *expected)
-{
-    bool ok = std::is_same_v<T, bool> ? isBool(v) : !isBool(v);
-    std::string why;
-    if constexpr (!std::is_same_v<T, bool> && !std::is_same_v<T, std::string> && !std::is_base_of_v<py::handle, T>)
-        if (ok && !(why = badNumber(v)).empty())
-            ok = false;
-    if (ok)
-        try
-        {
-            T out = v.cast<T>();
-            if constexpr (std::is_same_v<T, std::string>)
-                if (out.empty())
-                    throw Error("plan(): keyword '" + name + "': expected " + expected + ", got an empty text");
-            return out;
-        }
-        catch (const py::cast_error &)
-        {
-            ok = false;
-        }
-    throw Error("plan(): keyword '" + name + "': expected " + expected + ", got " + describe(v) +
-                (why.empty() ? std::string() : " (" + why + ")"));
-}
-
-void checkFinite(const std::string &name, double v, bool positive)
-{
-    if (!std::isfinite(v) || (positive && !(v > 0.0)))
-    {
-        char got[32];
-        std::snprintf(got, sizeof got, "%.10g", v);  // as the library's messages write numbers
-        throw Error("plan(): keyword '" + name + "' expects a finite number" + (positive ? " > 0" : "") + ", got " +
-                    got);
-    }
-}
 
 std::shared_ptr<const SettingWords> keywordWords();
 
@@ -208,17 +112,19 @@ ViaPointSpec viaPoint(const py::handle item, const std::string &at, const Missio
     return p;
 }
 
-/// The forecast of a NetCDF path (a file, or a comma-separated list of files and glob patterns) with the
-/// command line's options, as `--currents FILE --start ... --goal ...` builds it (forecastMission()).
+/// The forecast of a gridded path (a file, or a comma-separated list of files and glob patterns) with the
+/// command line's options, as `--currents FILE --start ... --goal ...` builds it (forecastMission()), read by the
+/// gridded source @p kind names (Field.kind: gridded, its alias netcdf, or a registered one).
 MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std::string &departure, double speed,
                      double depth, std::optional<Quad> region, const std::map<std::string, std::string> &variables,
                      const std::string &xy, const std::string &depthScheme, const std::string &timeScheme,
                      const std::string &horizon, const std::string &velocityUnits, const std::string &timeUnits,
                      std::optional<std::size_t> steadyRecord, bool zeroVelocityLand,
                      std::optional<Pair> depthAverage, bool snapToWater, bool startFromFix,
-                     bool departureFromFix)
+                     bool departureFromFix, const std::string &kind)
 {
     ForecastInput in;
+    in.current.type = kind;  // a gridded kind of the registry (or its alias), kept as named; another: netcdf
     in.snapToWater = snapToWater;
     in.words = keywordWords();
     const std::vector<std::string> list = forecastFileList(files);
@@ -607,9 +513,13 @@ void bindMission(py::module_ &m)
           py::arg("horizon") = "refuse", py::arg("velocity_units") = "", py::arg("time_units") = "",
           py::arg("steady_record") = py::none(), py::arg("zero_velocity_land") = true,
           py::arg("depth_average") = py::none(), py::arg("snap_to_water") = false,
-          py::arg("start_from_fix") = false, py::arg("departure_from_fix") = false,
-          "The mission of a NetCDF forecast, as glider_plan --currents builds it (start and departure from the "
-          "observations' last fix: marked so, until the mission resumes there).");
+          py::arg("start_from_fix") = false, py::arg("departure_from_fix") = false, py::arg("kind") = "netcdf",
+          "The mission of a gridded forecast, as glider_plan --currents builds it (start and departure from the "
+          "observations' last fix: marked so, until the mission resumes there), read by the gridded source `kind` "
+          "names (gridded, its alias netcdf, or a registered gridded kind), which the mission keeps as named.");
+    m.def("is_gridded_kind", &isGriddedKind, py::arg("kind"),
+          "True when the registry reads the current kind `kind` (a name or an alias) from files through a gridded "
+          "source (CurrentFieldRegistry.h: isGriddedKind()).");
     m.def("planner_names", []() {
         std::vector<std::string> names;
         for (const PlannerEntry &e : plannerRegistry())

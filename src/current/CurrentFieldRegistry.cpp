@@ -103,7 +103,7 @@ std::deque<CurrentFieldKind> &kinds()
                          return std::make_shared<RankineVortex>(q);
                      },
                      nullptr});
-        k.push_back({"netcdf",
+        k.push_back({"gridded",
                      "gridded forecast read from NetCDF files, OPeNDAP datasets, Zarr stores or GRIB files",
                      {},
                      nullptr,
@@ -111,6 +111,13 @@ std::deque<CurrentFieldKind> &kinds()
         return k;
     }();
     return kinds;
+}
+
+/// The aliases: (alias, the kind's name), in the order they were added; the built-in "netcdf" for `gridded`.
+std::vector<std::pair<std::string, std::string>> &aliases()
+{
+    static std::vector<std::pair<std::string, std::string>> list{{"netcdf", "gridded"}};
+    return list;
 }
 }  // namespace
 
@@ -136,7 +143,49 @@ const CurrentFieldKind *findCurrentFieldKind(const std::string &name)
     for (const CurrentFieldKind &k : currentFieldKinds())
         if (k.name == name)
             return &k;
+    for (const auto &[alias, kind] : aliases())
+        if (alias == name)
+            for (const CurrentFieldKind &k : currentFieldKinds())
+                if (k.name == kind)
+                    return &k;
     return nullptr;
+}
+
+void addCurrentFieldKindAlias(const std::string &alias, const std::string &name)
+{
+    const CurrentFieldKind *kind = findCurrentFieldKind(name);
+    if (!kind)
+        throw Error("addCurrentFieldKindAlias: no current kind '" + name + "'");
+    if (alias.empty() || findCurrentFieldKind(alias))
+        throw Error("addCurrentFieldKindAlias: the alias '" + alias + "' is " + (alias.empty() ? "empty" : "taken"));
+    aliases().emplace_back(alias, kind->name);
+}
+
+std::vector<std::string> currentFieldKindAliases(const CurrentFieldKind &kind)
+{
+    std::vector<std::string> out;
+    for (const auto &[alias, name] : aliases())
+        if (name == kind.name)
+            out.push_back(alias);
+    return out;
+}
+
+bool isGriddedKind(const std::string &name)
+{
+    const CurrentFieldKind *kind = findCurrentFieldKind(name);
+    return kind && kind->gridded();
+}
+
+std::vector<std::string> currentFieldKindNames()
+{
+    std::vector<std::string> out;
+    for (const CurrentFieldKind &k : currentFieldKinds())
+    {
+        out.push_back(k.name);
+        for (const std::string &alias : currentFieldKindAliases(k))
+            out.push_back(alias);
+    }
+    return out;
 }
 
 std::string currentFieldKindList(const std::string &separator)

@@ -1,4 +1,4 @@
-// loadNetCdfCurrents(): the stages of the NetCDF reader (src/current/netcdf/, see NetCdfInternal.h) composed,
+// loadNetCdfCurrents(): the stages of the NetCDF reader (src/current/gridded/, see GriddedInternal.h) composed,
 // and the coordinate/time conversions of NetCdfCurrents.
 #include "ompl_glider/current/NetCdfCurrents.h"
 
@@ -7,22 +7,22 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "netcdf/ForecastFiles.h"
-#include "netcdf/NetCdfInternal.h"
+#include "gridded/ForecastFiles.h"
+#include "gridded/GriddedInternal.h"
 #include "ompl_glider/Exception.h"
 
 namespace ompl_glider
 {
 bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &opt)
 {
-    netcdf_detail::NcFile f(path);
-    return netcdf_detail::detectLayout(f, opt).geographic;
+    gridded_detail::GriddedDataset f(path);
+    return gridded_detail::detectLayout(f, opt).geographic;
 }
 
 NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOptions &opt)
 {
-    using namespace netcdf_detail;
-    NcFile f(path);
+    using namespace gridded_detail;
+    GriddedDataset f(path);
     const Layout l = detectLayout(f, opt);
     NetCdfExtent e;
     e.geographic = l.geographic;
@@ -63,19 +63,19 @@ NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOption
 
 NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &opt)
 {
-    netcdf_detail::ForecastPiece p = netcdf_detail::readForecastPiece(path, opt);
-    return netcdf_detail::buildForecast(p, opt, "netcdf:" + path);
+    gridded_detail::ForecastPiece p = gridded_detail::readForecastPiece(path, opt);
+    return gridded_detail::buildForecast(p, opt, "netcdf:" + path);
 }
 
 // The stages of one file up to its land (the forecast in several files reads each file with it: ForecastFiles.cpp),
 // then the field (buildForecast()).
-netcdf_detail::ForecastPiece netcdf_detail::readForecastPiece(const std::string &path, const NetCdfCurrentOptions &opt,
+gridded_detail::ForecastPiece gridded_detail::readForecastPiece(const std::string &path, const NetCdfCurrentOptions &opt,
                                                               const AxisSelection *times, std::size_t totalTimes)
 {
-    using namespace netcdf_detail;
+    using namespace gridded_detail;
     ForecastPiece p;
-    p.file = std::make_unique<NcFile>(path);
-    const NcFile &f = *p.file;
+    p.file = std::make_unique<GriddedDataset>(path);
+    const GriddedDataset &f = *p.file;
     NetCdfCurrents &out = p.out;
     out.files = {path};
     // what is in the file: velocities, their grid, units
@@ -151,21 +151,21 @@ netcdf_detail::ForecastPiece netcdf_detail::readForecastPiece(const std::string 
     return p;
 }
 
-NetCdfCurrents netcdf_detail::buildForecast(ForecastPiece &p, const NetCdfCurrentOptions &opt,
+NetCdfCurrents gridded_detail::buildForecast(ForecastPiece &p, const NetCdfCurrentOptions &opt,
                                             const std::string &fieldName)
 {
-    const NcFile &f = *p.file;
-    const netcdf_detail::Layout &l = p.layout;
-    const netcdf_detail::HorizontalSubset &h = p.h;
-    const netcdf_detail::RegionOfInterest &region = p.region;
-    const netcdf_detail::AxisSelection &z = p.z, &t = p.t;
+    const GriddedDataset &f = *p.file;
+    const gridded_detail::Layout &l = p.layout;
+    const gridded_detail::HorizontalSubset &h = p.h;
+    const gridded_detail::RegionOfInterest &region = p.region;
+    const gridded_detail::AxisSelection &z = p.z, &t = p.t;
     GriddedData &g = p.g;
     NetCdfCurrents out = std::move(p.out);
     if (opt.depthAverage)
         averageOverDepth(opt.depthAverage->first, opt.depthAverage->second, g);
     out.projection = setNodeCoordinates(f, l, h, region, opt, g);
     if (!l.geographic && l.dimX >= 0)
-        out.xyMetres = netcdf_detail::axisConversion(f, l.coordVar[std::size_t(l.dimX)]).factor;
+        out.xyMetres = gridded_detail::axisConversion(f, l.coordVar[std::size_t(l.dimX)]).factor;
     out.lonMin = l.geographic ? normalizeLongitude(h.lonLo) : h.lonLo;
     out.lonMax = out.lonMin + (h.lonHi - h.lonLo);
     out.latMin = h.latLo;

@@ -13,26 +13,26 @@ list(APPEND OMPL_GLIDER_SOURCES
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
-    # the NetCDF reader: loadNetCdfCurrents() composing the stages in netcdf/ (see netcdf/NetCdfInternal.h)
+    # the NetCDF reader: loadNetCdfCurrents() composing the stages in gridded/ (see gridded/GriddedInternal.h)
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfCurrents.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/AxisChecks.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/VariableDetection.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/GridLayout.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/TimeAxis.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/DepthAxis.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/RegionOfInterest.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/RectilinearSubset.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/CurvilinearSubset.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/Staggered.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/GridAngle.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/SigmaLevels.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/Hyperslab.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/UnitsAndPacking.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/LandMask.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/TracerLand.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/NodeCoordinates.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/ForecastFiles.cpp
-    # the reader as the registry's gridded source `netcdf`
-    ${CMAKE_CURRENT_LIST_DIR}/netcdf/NetCdfSource.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/AxisChecks.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/VariableDetection.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/GridLayout.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/TimeAxis.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/DepthAxis.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/RegionOfInterest.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/RectilinearSubset.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/CurvilinearSubset.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/Staggered.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/GridAngle.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/SigmaLevels.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/Hyperslab.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/UnitsAndPacking.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/LandMask.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/TracerLand.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/NodeCoordinates.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/ForecastFiles.cpp
+    # the reader as the registry's gridded source `gridded` (alias `netcdf`)
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/NetCdfSource.cpp
   )
 endif()

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace ompl_glider::netcdf_detail
+namespace ompl_glider::gridded_detail
 {
 /// True when the block at (s, c) lies inside the block at (bs, bc).
 inline bool inside(const std::vector<std::size_t> &s, const std::vector<std::size_t> &c, const std::vector<std::size_t> &bs,
@@ -46,4 +46,4 @@ inline void copyOut(const std::vector<double> &from, const std::vector<std::size
         }
     }
 }
-}  // namespace ompl_glider::netcdf_detail
+}  // namespace ompl_glider::gridded_detail

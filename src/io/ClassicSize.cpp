@@ -7,11 +7,13 @@
 #include <fstream>
 #include <limits>
 
-#include "NcFile.h"
+#include <netcdf.h>
+
+#include "GriddedDataset.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
@@ -284,5 +286,5 @@ std::optional<std::string> classicTruncation(const std::string &path)
            " bytes of data ending at byte " + std::to_string(end) + ", the file has " + s + " bytes (" +
            std::to_string(end - e.fileBytes) + " missing)";
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -174,7 +174,7 @@ std::vector<LandPolygon> gdal_detail::readLandPolygons(const std::string &path, 
 {
     // the GDAL dataset, from its opening to its closing at the end of this function, under the process's one lock
     // of GDAL's datasets and NetCDF-C (NetCdfLock.h: GDAL's netCDF driver reads vector NetCDF files too)
-    const netcdf_detail::NetCdfLock lock;
+    const gridded_detail::NetCdfLock lock;
     const double lonMin = box.lonMin, latMin = box.latMin, lonMax = box.lonMax, latMax = box.latMax;
     registerDrivers();
     const std::string who = "coastline file '" + path + "'";

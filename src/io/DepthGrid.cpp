@@ -1,4 +1,4 @@
-// A seafloor-depth grid for the depth limit (see DepthGrid.h), read through NcFile: every NetCDF-C call checked,
+// A seafloor-depth grid for the depth limit (see DepthGrid.h), read through GriddedDataset: every NetCDF-C call checked,
 // every error naming the file and the variable.
 #include "ompl_glider/io/DepthGrid.h"
 
@@ -8,7 +8,7 @@
 #include <numeric>
 #include <optional>
 
-#include "NcFile.h"
+#include "GriddedDataset.h"
 #include "ompl_glider/Exception.h"
 #include "NumberText.h"
 
@@ -16,7 +16,7 @@ namespace ompl_glider
 {
 namespace
 {
-using netcdf_detail::NcFile;
+using gridded_detail::GriddedDataset;
 
 std::string lowerCase(std::string s)
 {
@@ -56,7 +56,7 @@ int signOfLongName(const std::string &longName)
 }
 
 /// The sign that turns the variable's values into depths (positive down) and why; 0 when nothing settles it.
-int depthSign(const NcFile &f, int var, std::string &why)
+int depthSign(const GriddedDataset &f, int var, std::string &why)
 {
     const std::string positive = lowerCase(f.attText(var, "positive").value_or(""));
     if (positive == "up" || positive == "down")
@@ -85,7 +85,7 @@ int depthSign(const NcFile &f, int var, std::string &why)
 }
 
 /// The depth variable: the one named, else the first 2-D variable whose standard_name or name is a depth's.
-int findDepthVariable(const NcFile &f, const std::string &variable)
+int findDepthVariable(const GriddedDataset &f, const std::string &variable)
 {
     if (!variable.empty())
     {
@@ -110,7 +110,7 @@ int findDepthVariable(const NcFile &f, const std::string &variable)
 }
 
 /// The 1-D coordinate variable of dimension @p dim, or nullopt.
-std::optional<std::vector<double>> axisOf(const NcFile &f, int dim)
+std::optional<std::vector<double>> axisOf(const GriddedDataset &f, int dim)
 {
     const std::optional<int> v = f.findVar(f.dimName(dim));
     if (!v || f.varDims(*v) != std::vector<int>{dim})
@@ -119,7 +119,7 @@ std::optional<std::vector<double>> axisOf(const NcFile &f, int dim)
 }
 
 /// 2-D lon/lat of the variable: its `coordinates` attribute, else lon_rho/lat_rho. Empty when there are none.
-bool coordinates2D(const NcFile &f, int var, std::vector<double> &lon, std::vector<double> &lat)
+bool coordinates2D(const GriddedDataset &f, int var, std::vector<double> &lon, std::vector<double> &lat)
 {
     std::vector<std::string> names;
     const std::string c = f.attText(var, "coordinates").value_or("");
@@ -154,7 +154,7 @@ bool coordinates2D(const NcFile &f, int var, std::vector<double> &lon, std::vect
 
 /// Which horizontal axis dimension @p dim is, by its coordinate variable: +1 x (longitude), -1 y (latitude), 0 when
 /// nothing says (its units, standard_name, axis attribute, then its name).
-int axisKind(const NcFile &f, int dim)
+int axisKind(const GriddedDataset &f, int dim)
 {
     const std::string name = lowerCase(f.dimName(dim));
     if (const std::optional<int> v = f.findVar(f.dimName(dim)))
@@ -199,7 +199,7 @@ std::vector<std::size_t> cut(const std::vector<double> &v, double lo, double hi)
 }
 /// Refuses a grid that has no water over the region: only fill values, or land everywhere (a depth read with the
 /// wrong sign), naming the convention it was read with and what to set if the values mean the other.
-void checkHasWater(const NcFile &f, const DepthGrid &g)
+void checkHasWater(const GriddedDataset &f, const DepthGrid &g)
 {
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (double d : g.depth)
@@ -226,7 +226,7 @@ void checkHasWater(const NcFile &f, const DepthGrid &g)
 
 DepthGrid readDepthGrid(const std::string &path, const std::string &variable, const GeoBox &region)
 {
-    const NcFile f(path);
+    const GriddedDataset f(path);
     const int var = findDepthVariable(f, variable);
     DepthGrid g;
     g.variable = f.varName(var);

@@ -20,8 +20,7 @@
 
 #include "GdalModule.h"
 #include "HttpMirror.h"
-#include "NcFile.h"
-#include "NetCdfLock.h"
+#include "GriddedDataset.h"
 #include "NumberText.h"
 #include "ObservationReaders.h"
 #include "RemoteRecord.h"
@@ -159,7 +158,7 @@ std::string fetch(const std::string &url, const std::string &source)
     remote_detail::updateFetchRecord(record, [](RemoteFetch &f) { f.kind = "ERDDAP"; });
     const std::string who = "ERDDAP '" + source + "'";
     std::string body;
-    netcdf_detail::HttpFailure failure;
+    gridded_detail::HttpFailure failure;
     bool found = false;
     try
     {
@@ -360,7 +359,7 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who, Veloc
     if (body.rfind("CDF", 0) == 0) // a classic file: whole, as its header declares (NetCDF-C reads past a cut one)
     {
         std::istringstream in(body);
-        const netcdf_detail::ClassicExtent e = netcdf_detail::classicExtent(in, body.size());
+        const gridded_detail::ClassicExtent e = gridded_detail::classicExtent(in, body.size());
         if (!e.corrupt.empty() || e.headerCut || e.dataEnd() > body.size())
             throw Error(who + ": the .ncCF answer is cut short or corrupt (" +
                         (e.corrupt.empty() ? std::to_string(body.size()) + " bytes, its header declares " +
@@ -374,7 +373,7 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who, Veloc
     std::string unitsU, unitsV;
     try
     {
-        const netcdf_detail::NcFile nc(memory.name);
+        const gridded_detail::GriddedDataset nc(memory.name);
         for (int v = 0; v < nc.nvars(); ++v)
             names.push_back(nc.varName(v));
         for (const std::string &name : names)
@@ -384,19 +383,16 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who, Veloc
             if (!wanted)
                 continue;
             const int id = *nc.findVar(name);
-            if (name == "profile_id" && nc.varType(id) == NC_CHAR && nc.varDims(id).size() == 2)
+            using gridded_detail::ValueType;
+            if (name == "profile_id" && nc.varType(id) == ValueType::Char && nc.varDims(id).size() == 2)
             {
                 const std::size_t n = nc.dimLen(nc.varDims(id)[0]), len = nc.dimLen(nc.varDims(id)[1]);
-                std::vector<char> chars(n * len + 1, '\0');
-                {
-                    const netcdf_detail::NetCdfLock lock;  // every NetCDF-C call under the one lock
-                    nc.check(nc_get_var_text(nc.id(), id, chars.data()), "read 'profile_id'");
-                }
+                const std::string chars = nc.readChars(id);
                 for (std::size_t i = 0; i < n; ++i)
                     profiles.push_back(text::trim(std::string(chars.data() + i * len, len)));
                 continue;
             }
-            if (nc.varType(id) == NC_CHAR || nc.varType(id) == NC_STRING || nc.varDims(id).size() > 1)
+            if (nc.varType(id) == ValueType::Char || nc.varType(id) == ValueType::String || nc.varDims(id).size() > 1)
                 throw nc.error("variable '" + name + "' is not a list of numbers");
             std::vector<double> v = nc.readAll1D(id);
             std::vector<double> fills = nc.attDoubles(id, "_FillValue");

@@ -18,7 +18,7 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
@@ -142,5 +142,5 @@ void FetchStopWatch::watch()
             wake_.wait_for(lock, std::chrono::milliseconds(20), [this] { return done_; });
     }
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -15,7 +15,7 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 /// Shuts down this process's TCP connections to the server of @p url (http or https, its port or the scheme's): a
 /// transfer on one of them fails at once.
@@ -40,5 +40,5 @@ private:
     bool done_{false};
     std::thread thread_;  // started once the rest is built; none when the system has no thread to spare
 };
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -159,16 +159,39 @@ bool isGribFile(const std::string &path)
     return in.read(magic, 4) && std::memcmp(magic, "GRIB", 4) == 0;
 }
 
-std::string forecastSourceKind(const std::string &path)
+DatasetKind datasetKindOf(const std::string &path)
 {
     if (isZarrStore(path))
-        return "Zarr store";
+        return DatasetKind::ZarrStore;
     if (isGribFile(path))
-        return "GRIB file";
+        return DatasetKind::GribFile;
     if (isRemoteSource(path))
-        return "OPeNDAP dataset";
+        return DatasetKind::Opendap;
     if (isMemoryDataset(path))
-        return "in-memory dataset";
+        return DatasetKind::MemoryDataset;
+    return DatasetKind::NetCdfFile;
+}
+
+const char *datasetKindName(DatasetKind kind)
+{
+    switch (kind)
+    {
+        case DatasetKind::NetCdfFile:
+            return "NetCDF file";
+        case DatasetKind::Opendap:
+            return "OPeNDAP dataset";
+        case DatasetKind::MemoryDataset:
+            return "in-memory dataset";
+        case DatasetKind::ZarrStore:
+            return "Zarr store";
+        case DatasetKind::GribFile:
+            return "GRIB file";
+    }
     return "NetCDF file";
+}
+
+std::string forecastSourceKind(const std::string &path)
+{
+    return datasetKindName(datasetKindOf(path));
 }
 }  // namespace ompl_glider

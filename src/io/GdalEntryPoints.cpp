@@ -13,9 +13,9 @@ namespace
 using namespace ompl_glider;
 
 #if OMPL_GLIDER_WITH_NETCDF
-std::shared_ptr<netcdf_detail::Dataset> openGrid(const std::string &path)
+std::shared_ptr<gridded_detail::Dataset> openGrid(const std::string &path)
 {
-    return netcdf_detail::GdalGrid::open(path);
+    return gridded_detail::GdalGrid::open(path);
 }
 #endif
 }  // namespace
@@ -24,7 +24,7 @@ extern "C" const gdal_detail::EntryPoints *ompl_glider_gdal_entry_points()
 {
 #if OMPL_GLIDER_WITH_NETCDF
     static const gdal_detail::EntryPoints points{&gdal_detail::readLandPolygons, &gdal_detail::polygonFault, &openGrid,
-                                                 &netcdf_detail::httpGet, &netcdf_detail::notDapAnswer};
+                                                 &gridded_detail::httpGet, &gridded_detail::notDapAnswer};
 #else
     static const gdal_detail::EntryPoints points{&gdal_detail::readLandPolygons, &gdal_detail::polygonFault, nullptr,
                                                  nullptr, nullptr};

@@ -11,7 +11,7 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 CollectGdalErrors::CollectGdalErrors()
 {
@@ -123,5 +123,5 @@ std::string loneVelocityComponent(const std::vector<std::shared_ptr<GDALMDArray>
         }
     return "";
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -16,7 +16,7 @@ class GDALMDArray;
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 /// GDAL's errors and warnings for the life of the object, kept in order (GDAL's last error alone would lose the
 /// first), GDAL's own printing of them off.
@@ -52,5 +52,5 @@ std::vector<std::string> droppedArrays(const std::string &folder, const std::set
 /// component of a pair (UOGRD/VOGRD, UGRD/VGRD) without the other, with what gribTruncation() says of @p file;
 /// "" otherwise.
 std::string loneVelocityComponent(const std::vector<std::shared_ptr<GDALMDArray>> &vars, const std::string &file);
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

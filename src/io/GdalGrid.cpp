@@ -1,23 +1,16 @@
-// A gridded dataset through GDAL's multidimensional API (see GdalGrid.h).
+// A gridded dataset through GDAL's multidimensional API (see GdalGrid.h): opening a store or a GRIB file, the
+// queries, reading blocks; a GRIB file's time dimension in GribTimes.cpp (GdalGridImpl.h).
 #include "GdalGrid.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstring>
-#include <ctime>
-#include <filesystem>
-#include <fstream>
 #include <map>
-#include <set>
 #include <mutex>
 
 #include <gdal_priv.h>
 
 #include "BlockCopy.h"
-#include "NumberText.h"
+#include "GdalGridImpl.h"
 #include "TextUtil.h"
-#include "GdalFaults.h"
-#include "HttpMirror.h"
 #include "NetCdfLock.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/FileList.h"
@@ -25,7 +18,7 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
@@ -83,265 +76,29 @@ struct QuietGdal
     QuietGdal &operator=(const QuietGdal &) = delete;
 };
 
-nc_type ncTypeOf(GDALDataType t)
+ValueType valueTypeOf(GDALDataType t)
 {
     switch (t)
     {
-        case GDT_Byte: return NC_UBYTE;
-        case GDT_UInt16: return NC_USHORT;
-        case GDT_Int16: return NC_SHORT;
-        case GDT_UInt32: return NC_UINT;
-        case GDT_Int32: return NC_INT;
-        case GDT_UInt64: return NC_UINT64;
-        case GDT_Int64: return NC_INT64;
-        case GDT_Float32: return NC_FLOAT;
-        default: return NC_DOUBLE;
+        case GDT_Byte: return ValueType::UByte;
+        case GDT_UInt16: return ValueType::UShort;
+        case GDT_Int16: return ValueType::Short;
+        case GDT_UInt32: return ValueType::UInt;
+        case GDT_Int32: return ValueType::Int;
+        case GDT_UInt64: return ValueType::UInt64;
+        case GDT_Int64: return ValueType::Int64;
+        case GDT_Float32: return ValueType::Float;
+        default: return ValueType::Double;
     }
 }
 }  // namespace
-
-/// CF's standard name of a GRIB2 parameter (its short name, as GDAL's "name" attribute gives it): the currents of
-/// ocean models (RTOFS) and the winds of weather models (for vehicles in wind).
-std::optional<std::string> gribStandardName(const std::string &shortName)
-{
-    static const std::map<std::string, std::string> names = {{"UOGRD", "eastward_sea_water_velocity"},
-                                                             {"VOGRD", "northward_sea_water_velocity"},
-                                                             {"UGRD", "eastward_wind"},
-                                                             {"VGRD", "northward_wind"}};
-    const auto it = names.find(shortName);
-    return it == names.end() ? std::nullopt : std::optional<std::string>(it->second);
-}
-
-struct GdalGrid::Impl
-{
-    std::string path, kind;
-    bool geographic{false};  // GRIB: the arrays' grid is in longitude and latitude
-    // (declared before the dataset: destroyed after it)
-    std::unique_ptr<ZarrMirror> mirror;      // a store over HTTP: what was fetched of it (GDAL reads the mirror)
-    std::unique_ptr<FileMirror> file;        // a GRIB file over HTTP: its copy (GDAL reads the copy)
-    std::unique_ptr<GDALDataset> dataset;
-    std::unique_ptr<GDALDataset> timeHolder;  // the in-memory dataset of an added time coordinate (addFileTime())
-    std::shared_ptr<GDALGroup> root;
-    std::vector<std::shared_ptr<GDALMDArray>> vars;
-    /// A GRIB field: a 2-D array (record -1), or record `record` of a 3-D array over GDAL's TIME dimension.
-    struct Field
-    {
-        std::shared_ptr<GDALMDArray> array;
-        long record{-1};
-    };
-    /// per var: the GRIB fields of one parameter and level, one per time of the added time dimension (empty: the
-    /// array as GDAL gives it)
-    std::vector<std::vector<Field>> series;
-    int timeDim{-1};              // that dimension, -1 without
-    std::vector<std::shared_ptr<GDALDimension>> dims;
-    std::map<std::string, int> dimIndex;  // by full name
-    mutable std::mutex mutex;             // GDAL's datasets are not thread-safe
-    struct Block
-    {
-        int var;
-        std::vector<std::size_t> start, count;
-        std::vector<double> values;
-    };
-    std::vector<Block> blocks;  // the blocks read so far (a URL's chunks fetched, a GRIB message decoded, once)
-
-    int dimOf(const std::shared_ptr<GDALDimension> &d)
-    {
-        const auto [it, added] = dimIndex.emplace(d->GetFullName(), static_cast<int>(dims.size()));
-        if (added)
-            dims.push_back(d);
-        return it->second;
-    }
-
-    std::vector<std::string> unreadable;  // "array 'uo': <GDAL's reason>", the arrays GDAL lists but cannot open
-
-    void addGroup(const std::shared_ptr<GDALGroup> &g, CollectGdalErrors &errors)
-    {
-        for (const std::string &name : g->GetMDArrayNames())
-        {
-            const std::size_t before = errors.count();
-            if (auto a = g->OpenMDArray(name))
-                vars.push_back(a);
-            else
-            {
-                const std::string why = errors.since(before);
-                unreadable.push_back("array '" + (g->GetFullName() == "/" ? "" : g->GetFullName().substr(1) + "/") +
-                                     name + "' cannot be opened" + (why.empty() ? std::string() : ": " + why));
-            }
-        }
-        for (const std::string &name : g->GetGroupNames())  // GRIB: none; a store's subgroups
-            if (auto sub = g->OpenGroup(name))
-                addGroup(sub, errors);
-    }
-
-    /// The fields of a GRIB file over one time dimension, where GDAL gives some field of some time its own 2-D array
-    /// with the time only in attributes: a file of one forecast time (RTOFS writes one per forecast hour), or several
-    /// times with the parameters interleaved (U, V of one time, then of the next: ERA5-like downloads), which GDAL
-    /// gives as 2-D arrays and, where records of one parameter follow each other, 3-D arrays over a TIME dimension.
-    /// The fields of one parameter and level (attributes `name`, `first_level`), wherever GDAL put them, become one
-    /// variable over the file's times (`validity_time`, or the TIME coordinate: seconds of the Unix epoch); several
-    /// files of one time each then read as one forecast. A velocity parameter missing at one of the times is refused
-    /// (its fields alone would plan on one time in silence); another parameter missing somewhere stays as GDAL gives
-    /// it. A file whose fields GDAL gave all as TIME arrays is read as GDAL gives it.
-    void addFileTime()
-    {
-        std::map<std::string, std::map<double, Field>> fields;  // name|level -> time -> field
-        std::vector<std::string> order;                          // the parameters in the file's order
-        std::set<std::size_t> used;                              // the vars that hold fields
-        std::set<double> times;
-        bool loose = false;  // some field is a 2-D array of its own
-        for (std::size_t k = 0; k < vars.size(); ++k)
-        {
-            const auto &a = vars[k];
-            std::string key;
-            for (const char *name : {"name", "first_level"})
-                if (auto text = a->GetAttribute(name); text && text->GetDataType().GetClass() == GEDTC_STRING)
-                    key += std::string(text->ReadAsString() ? text->ReadAsString() : "") + "|";
-            std::vector<std::pair<double, long>> at;  // (time, record; -1: the 2-D array itself)
-            const auto &d = a->GetDimensions();
-            if (!d.empty() && d[0]->GetType() == GDAL_DIM_TYPE_TEMPORAL && d.size() == 3)
-            {
-                const auto axis = d[0]->GetIndexingVariable();
-                const std::vector<double> values = axis ? readAll(*axis) : std::vector<double>{};
-                if (values.size() != d[0]->GetSize())
-                    return;
-                for (std::size_t r = 0; r < values.size(); ++r)
-                    at.emplace_back(values[r], static_cast<long>(r));
-            }
-            else if (const auto t = a->GetAttribute("validity_time"); t && d.size() == 2)
-            {
-                at.emplace_back(t->ReadAsDouble(), -1);
-                loose = true;
-            }
-            if (at.empty() || key.empty())
-                continue;
-            if (!fields.count(key))
-                order.push_back(key);
-            for (const auto &[time, record] : at)
-            {
-                if (!fields[key].emplace(time, Field{a, record}).second)
-                    return;  // two fields of one parameter, level and time: GDAL's arrays as they are
-                times.insert(time);
-            }
-            used.insert(k);
-        }
-        if (!loose)
-            return;
-        for (auto it = fields.begin(); it != fields.end();)
-        {
-            if (it->second.size() == times.size())
-            {
-                ++it;
-                continue;
-            }
-            refuseGap(it->first, it->second, times);
-            for (const auto &[time, f] : it->second)  // not a velocity: its arrays as GDAL gives them
-                for (std::size_t k = 0; k < vars.size(); ++k)
-                    if (vars[k] == f.array)
-                        used.erase(k);
-            order.erase(std::find(order.begin(), order.end(), it->first));
-            it = fields.erase(it);
-        }
-        GDALDriver *mem = GetGDALDriverManager()->GetDriverByName("MEM");
-        if (fields.empty() || !mem)
-            return;
-        const std::vector<double> values(times.begin(), times.end());
-        timeHolder.reset(mem->CreateMultiDimensional("time", nullptr, nullptr));
-        auto group = timeHolder ? timeHolder->GetRootGroup() : nullptr;
-        auto dim = group ? group->CreateDimension("time", GDAL_DIM_TYPE_TEMPORAL, "", values.size()) : nullptr;
-        auto array = dim ? group->CreateMDArray("time", {dim}, GDALExtendedDataType::Create(GDT_Float64)) : nullptr;
-        const GUInt64 first = 0;
-        const std::size_t n = values.size();
-        if (!array || !array->Write(&first, &n, nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64),
-                                    values.data()) || !array->SetUnit("sec UTC"))
-            return;
-        // one variable per parameter and level, its earliest field standing for it (name, attributes, type); the
-        // arrays of other parameters as GDAL gives them
-        std::vector<std::shared_ptr<GDALMDArray>> kept;
-        std::vector<std::vector<Field>> keptSeries;
-        for (std::size_t k = 0; k < vars.size(); ++k)
-            if (!used.count(k))
-            {
-                kept.push_back(vars[k]);
-                keptSeries.emplace_back();
-            }
-        for (const std::string &key : order)
-        {
-            std::vector<Field> one;
-            for (const auto &[time, f] : fields.at(key))
-                one.push_back(f);
-            kept.push_back(one.front().array);
-            keptSeries.push_back(one);
-        }
-        timeDim = dimOf(dim);
-        kept.push_back(array);
-        keptSeries.emplace_back();
-        vars = kept;
-        series = keptSeries;
-    }
-
-    /// A velocity parameter (UOGRD, VOGRD, UGRD, VGRD) missing at one of @p times is refused, naming the time.
-    void refuseGap(const std::string &key, const std::map<double, Field> &byTime, const std::set<double> &times) const
-    {
-        const std::string parameter = key.substr(0, key.find('|'));
-        if (!gribStandardName(parameter))
-            return;
-        double missing = 0.0;
-        for (const double t : times)
-            if (!byTime.count(t))
-            {
-                missing = t;
-                break;
-            }
-        const std::time_t when = static_cast<std::time_t>(missing);
-        char date[32] = "?";
-        if (const std::tm *tm = std::gmtime(&when))
-            std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", tm);
-        throw Error(kind + " '" + withoutCredentials(path) + "': " + parameter + " has fields at " +
-                    std::to_string(byTime.size()) + " of the " + std::to_string(times.size()) +
-                    " times of the file (none at " + date + "): a forecast needs its currents at every time");
-    }
-
-    /// The arrays of the store's consolidated metadata at @p folder that GDAL left out, with @p why.
-    void addDropped(const std::string &folder, const std::string &why)
-    {
-        std::set<std::string> opened;
-        for (const auto &a : vars)
-            opened.insert(a->GetFullName().substr(1));
-        for (const std::string &name : droppedArrays(folder, opened))
-            if (std::none_of(unreadable.begin(), unreadable.end(),
-                             [&](const std::string &u) { return u.rfind("array '" + name + "'", 0) == 0; }))
-                unreadable.push_back("array '" + name + "' of its consolidated metadata cannot be opened" +
-                                     (why.empty() ? std::string() : ": " + why));
-    }
-
-    static std::vector<double> readAll(const GDALMDArray &a)
-    {
-        std::vector<double> v(a.GetTotalElementsCount());
-        const GUInt64 first = 0;
-        const std::size_t n = v.size();
-        if (a.GetDimensionCount() != 1 ||
-            !a.Read(&first, &n, nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), v.data()))
-            return {};
-        return v;
-    }
-
-    bool hasAddedTime(int var) const
-    {
-        return static_cast<std::size_t>(var) < series.size() && !series[static_cast<std::size_t>(var)].empty();
-    }
-
-    std::shared_ptr<GDALAttribute> attribute(int var, const char *name) const
-    {
-        return var == NC_GLOBAL ? root->GetAttribute(name) : vars.at(static_cast<std::size_t>(var))->GetAttribute(name);
-    }
-};
 
 GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
 {
     const NetCdfLock lock;  // GDAL's datasets, and its netCDF driver's NetCDF-C calls (NetCdfLock.h)
     Impl &d = *impl_;
     d.path = path;
-    d.kind = isZarrStore(path) ? "Zarr store" : "GRIB file";
+    d.kind = isZarrStore(path) ? DatasetKind::ZarrStore : DatasetKind::GribFile;
     GDALAllRegister();
     std::string open = path;
     const std::string url = zarrUrl(path);
@@ -355,23 +112,23 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
     else if (isUrl(path))
     {
         // a GRIB file over HTTP: fetched whole, once (its messages are decoded whole anyway), into the cache
-        d.file = std::make_unique<FileMirror>(path, ".grib2", "GRIB file");
+        d.file = std::make_unique<FileMirror>(path, ".grib2", DatasetKind::GribFile);
         open = d.file->file();
     }
     const std::string local = open;  // the store's folder or the file GDAL reads
-    if (d.kind == "Zarr store" && open.rfind("ZARR:", 0) != 0)
+    if (d.kind == DatasetKind::ZarrStore && open.rfind("ZARR:", 0) != 0)
         open = "ZARR:\"" + withoutSlash(open) + "\"";
     CollectGdalErrors errors;
     d.dataset.reset(GDALDataset::Open(open.c_str(), GDAL_OF_MULTIDIM_RASTER | GDAL_OF_READONLY));
     if (!d.dataset || !(d.root = d.dataset->GetRootGroup()))
     {
-        const std::string cut = d.kind == "GRIB file" ? gribTruncation(local) : "";
+        const std::string cut = d.kind == DatasetKind::GribFile ? gribTruncation(local) : "";
         const std::string why = !cut.empty() ? cut : errors.since(0);
         throw Error(who() + ": cannot open" + (why.empty() ? std::string() : ": " + why));
     }
     const std::string opening = errors.since(0);  // GDAL's messages on the store as a whole
     d.addGroup(d.root, errors);
-    if (d.kind == "Zarr store")
+    if (d.kind == DatasetKind::ZarrStore)
         d.addDropped(zarrFolder(local), opening);
     for (const auto &a : d.vars)
         if (auto srs = a->GetSpatialRef())
@@ -381,7 +138,7 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
     for (const auto &a : d.vars)
         for (const auto &g : a->GetDimensions())
             d.dimOf(g);
-    if (d.kind == "GRIB file")
+    if (d.kind == DatasetKind::GribFile)
     {
         d.addFileTime();
         if (const std::string lone = loneVelocityComponent(d.vars, local); !lone.empty())
@@ -422,7 +179,7 @@ std::shared_ptr<GdalGrid> GdalGrid::open(const std::string &path)
 
 std::string GdalGrid::who() const
 {
-    return impl_->kind + " '" + withoutCredentials(impl_->path) + "'";
+    return datasetWho(impl_->kind, withoutCredentials(impl_->path));
 }
 
 int GdalGrid::nvars() const
@@ -479,13 +236,13 @@ std::vector<int> GdalGrid::varDims(int var) const
     return out;
 }
 
-nc_type GdalGrid::varType(int var) const
+ValueType GdalGrid::varType(int var) const
 {
     const NetCdfLock lock;
     const GDALExtendedDataType &t = impl_->vars.at(static_cast<std::size_t>(var))->GetDataType();
     if (t.GetClass() == GEDTC_STRING)
-        return NC_STRING;
-    return ncTypeOf(t.GetNumericDataType());
+        return ValueType::String;
+    return valueTypeOf(t.GetNumericDataType());
 }
 
 std::optional<std::string> GdalGrid::attText(int var, const char *name) const
@@ -499,7 +256,7 @@ std::optional<std::string> GdalGrid::attText(int var, const char *name) const
         const char *s = a->ReadAsString();
         return text::trim(s ? s : "");
     }
-    if (var == NC_GLOBAL)
+    if (var == kGlobalAttributes)
         return std::nullopt;
     const GDALMDArray &array = *impl_->vars.at(static_cast<std::size_t>(var));
     if (std::strcmp(name, "units") == 0)
@@ -539,7 +296,7 @@ std::vector<double> GdalGrid::attDoubles(int var, const char *name, bool &isText
         }
         return a->ReadAsDoubleArray();
     }
-    if (var == NC_GLOBAL)
+    if (var == kGlobalAttributes)
         return {};
     const GDALMDArray &array = *impl_->vars.at(static_cast<std::size_t>(var));
     bool has = false;
@@ -627,5 +384,5 @@ void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const s
         throw Error(who() + ": cannot read " + array.GetName() + block + (why.empty() ? std::string() : ": " + why));
     }
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -1,16 +1,14 @@
 #pragma once
 /// @file GdalGrid.h
 /// @brief Internal to the library (not installed): a gridded dataset read through GDAL's multidimensional API (Zarr v2
-/// stores on disk or over HTTP, GRIB2 files), seen as NcFile sees a NetCDF file: variables and dimensions by index,
-/// CF attributes by name, values as doubles by hyperslab. So the forecast reader (current/netcdf/) applies the same
+/// stores on disk or over HTTP, GRIB2 files), seen as GriddedDataset sees a NetCDF file: variables and dimensions by index,
+/// CF attributes by name, values as doubles by hyperslab. So the forecast reader (current/gridded/) applies the same
 /// rules to every layout: CF units and time, longitude conventions, land from fill values, the trip's region, only
 /// the records and levels it needs read.
 ///
 /// GDAL folds some CF attributes into properties of an array; they are given back under their CF names: `units`
 /// (GDALMDArray::GetUnit()), `_FillValue` (the no-data value: Zarr's `fill_value`), `scale_factor` and `add_offset`
 /// (GetScale()/GetOffset()). The values read are the stored ones (not unpacked), as nc_get_vara_double gives them.
-
-#include <netcdf.h>
 
 #include "Dataset.h"
 
@@ -22,7 +20,7 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 /// (isGdalSource(), which sources are read here: GdalModule.h)
 class GdalGrid final : public Dataset
@@ -47,8 +45,8 @@ public:
     std::size_t dimLen(int dim) const override;
     std::optional<int> findVar(const std::string &name) const override;
     std::vector<int> varDims(int var) const override;
-    nc_type varType(int var) const override;
-    /// A text attribute of @p var (NC_GLOBAL: the root group's); nullopt when absent or numeric.
+    ValueType varType(int var) const override;
+    /// A text attribute of @p var (kGlobalAttributes: the root group's); nullopt when absent or numeric.
     std::optional<std::string> attText(int var, const char *name) const override;
     /// A numeric attribute's values (empty when absent); text yields {} and sets @p isText.
     std::vector<double> attDoubles(int var, const char *name, bool &isText) const override;
@@ -61,8 +59,8 @@ public:
                    double *out) const override;
 
 private:
-    struct Impl;
+    struct Impl;  // GdalGridImpl.h
     std::unique_ptr<Impl> impl_;
 };
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -12,13 +12,13 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 bool isGdalSource(const std::string &path)
 {
     return isZarrStore(path) || isGribFile(path);
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 
 namespace gdal_detail
 {

@@ -20,7 +20,7 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 class Dataset;
 struct HttpFailure;
@@ -29,7 +29,7 @@ struct HttpFailure;
 /// name ending in `.zarr`, also as an http(s) URL, or GDAL's `ZARR:` prefix) or a GRIB file (`.grib2`, `.grb2`,
 /// `.grib`, `.grb`, or a file whose first bytes are "GRIB"). Asks no GDAL function (FileList.h's tests).
 bool isGdalSource(const std::string &path);
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 
 namespace gdal_detail
 {
@@ -41,11 +41,11 @@ struct EntryPoints
                                                  std::vector<std::string> *repairs, CoastlineCount *count);
     std::string (*polygonFault)(const std::vector<Point2> &outer, const std::vector<std::vector<Point2>> &holes);
     /// GdalGrid::open()
-    std::shared_ptr<netcdf_detail::Dataset> (*openGrid)(const std::string &path);
-    /// netcdf_detail::httpGet() (HttpMirror.h)
+    std::shared_ptr<gridded_detail::Dataset> (*openGrid)(const std::string &path);
+    /// gridded_detail::httpGet() (HttpMirror.h)
     bool (*httpGet)(const std::string &url, std::size_t record, const std::string &who, const std::string &what,
-                    std::string &body, netcdf_detail::HttpFailure *failure, std::string *validator);
-    /// netcdf_detail::notDapAnswer() (HttpMirror.h)
+                    std::string &body, gridded_detail::HttpFailure *failure, std::string *validator);
+    /// gridded_detail::notDapAnswer() (HttpMirror.h)
     std::string (*notDapAnswer)(const std::string &url);
 };
 

@@ -12,8 +12,7 @@
 #include <glob.h>
 #include <sstream>
 
-#include "NcFile.h"
-#include "NetCdfLock.h"
+#include "GriddedDataset.h"
 #include "NumberText.h"
 #include "ObservationReaders.h"
 #include "TextUtil.h"
@@ -25,7 +24,7 @@
 namespace ompl_glider
 {
 namespace fs = std::filesystem;
-using netcdf_detail::NcFile;
+using gridded_detail::GriddedDataset;
 using observations_detail::dacProblem;
 using observations_detail::isDbaFile;
 using observations_detail::kFillValue;
@@ -260,7 +259,7 @@ struct ProfileFile
 
 ProfileFile readProfile(const std::string &file)
 {
-    const NcFile nc(file);
+    const GriddedDataset nc(file);
     ProfileFile p;
     const auto var = [&](const char *name) -> std::optional<int> { return nc.findVar(name); };
     for (const char *name : {"time_uv", "lat_uv", "lon_uv", "u", "v"})
@@ -305,13 +304,9 @@ ProfileFile readProfile(const std::string &file)
     if (const auto id = var("platform"))
         p.platform = nc.attText(*id, "id").value_or("");
     if (p.platform.empty())
-        if (const auto id = var("trajectory"); id && nc.varType(*id) == NC_CHAR && nc.varDims(*id).size() == 1)
-        {
-            std::vector<char> name(nc.dimLen(nc.varDims(*id)[0]) + 1, '\0');
-            const netcdf_detail::NetCdfLock lock;  // every NetCDF-C call under the one lock
-            nc.check(nc_get_var_text(nc.id(), *id, name.data()), "read 'trajectory'");
-            p.platform = name.data();
-        }
+        if (const auto id = var("trajectory");
+            id && nc.varType(*id) == gridded_detail::ValueType::Char && nc.varDims(*id).size() == 1)
+            p.platform = nc.readChars(*id).c_str();  // up to the first NUL
     if (const auto t = var("profile_time"), la = var("profile_lat"), lo = var("profile_lon"); t && la && lo)
     {
         const std::vector<double> time = seconds(*t), lat = values(*la), lon = values(*lo);

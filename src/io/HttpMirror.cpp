@@ -1,4 +1,5 @@
-// Sources over HTTP through a mirror of what was fetched (see HttpMirror.h).
+// Sources over HTTP through a mirror of what was fetched (see HttpMirror.h): a Zarr store's (ZarrMirror), a GRIB
+// file's (FileMirror). The requests themselves: HttpRequests.cpp.
 #include "HttpMirror.h"
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <cpl_string.h>
 #include <cpl_vsi.h>
 
+#include "Dataset.h"
 #include "FetchStop.h"
 #include "RemoteRecord.h"
 #include "ompl_glider/Exception.h"
@@ -26,32 +28,13 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
 const char *const kMarker = ".ompl_glider_source";  // the URL the mirror holds (without credentials)
 const char *const kAbsent = ".ompl_glider_absent";  // keys the server does not hold, one a line
 const char *const kValidators = ".ompl_glider_validators";  // "key<TAB>validator" of the chunks held, one a line
-
-/// The server's validator of an answer (httpGet()): its ETag, else its Last-Modified time and size; "" without
-/// either. @p size: the body's bytes, or -1 for a HEAD answer (its Content-Length then).
-std::string validatorOf(char **headers, long long size)
-{
-    const auto header = [&](const char *name) {
-        const char *v = CSLFetchNameValue(headers, name);
-        std::string s = v ? v : "";
-        while (!s.empty() && (s.back() == '\r' || s.back() == '\n' || s.back() == ' '))
-            s.pop_back();
-        return s;
-    };
-    if (const std::string tag = header("ETag"); !tag.empty())
-        return "ETag " + tag;
-    const std::string modified = header("Last-Modified"), length = header("Content-Length");
-    if (modified.empty() || (size < 0 && length.empty()))
-        return "";
-    return "Last-Modified " + modified + ", " + (size < 0 ? length : std::to_string(size)) + " bytes";
-}
 
 bool exists(const std::string &path)
 {
@@ -81,16 +64,6 @@ bool slurp(const std::string &path, std::string &out)
     return true;
 }
 
-/// @p url with @p key appended to its path (before a query string: "https://h/s.zarr?t=1" -> "https://h/s.zarr/k?t=1").
-std::string keyUrl(const std::string &url, const std::string &key)
-{
-    const std::size_t q = url.find('?');
-    std::string base = url.substr(0, q);
-    while (!base.empty() && base.back() == '/')
-        base.pop_back();
-    return base + "/" + key + (q == std::string::npos ? "" : url.substr(q));
-}
-
 /// Writes @p bytes at @p path through a temporary name renamed (never half a file); the folder made first.
 void writeWhole(const std::string &path, const std::string &bytes, const std::string &who)
 {
@@ -111,12 +84,6 @@ void writeWhole(const std::string &path, const std::string &bytes, const std::st
     }
 }
 
-std::string limitText()
-{
-    const RemoteAccess a = remoteAccess();
-    return "request time limit " + std::to_string(std::max(1L, std::lround(a.requestTimeout))) + " s, " +
-           std::to_string(a.retries) + " retries";
-}
 }  // namespace
 
 ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
@@ -124,14 +91,14 @@ ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
     const std::string source = withoutCredentials(url_);
     const std::string name = remote_detail::cacheName(source, ".zarr");
     record_ = remote_detail::newFetchRecord(source);
-    remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.kind = "Zarr store"; });
+    remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.kind = datasetKindName(DatasetKind::ZarrStore); });
     const RemoteAccess access = remoteAccess();
     if (!access.cacheDir.empty())
     {
         std::error_code ec;
         std::filesystem::create_directories(access.cacheDir, ec);
         if (!std::filesystem::is_directory(access.cacheDir, ec))
-            throw Error("Zarr store '" + source + "': the cache folder '" + access.cacheDir + "' cannot be made");
+            throw Error(who() + ": the cache folder '" + access.cacheDir + "' cannot be made");
         cached_ = true;
         folder_ = (std::filesystem::path(access.cacheDir) / name).string();
         remote_detail::updateFetchRecord(record_, [&](RemoteFetch &f) { f.cacheFile = folder_; });
@@ -157,7 +124,7 @@ ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
     if (fromCache_)
     {
         if (!slurp(folder_ + "/.zmetadata", metadata))
-            throw Error("Zarr store '" + source + "': the cache's copy '" + folder_ + "/.zmetadata' cannot be read");
+            throw Error(who() + ": the cache's copy '" + folder_ + "/.zmetadata' cannot be read");
         std::string absent;
         if (slurp(folder_ + "/" + kAbsent, absent))
             for (std::size_t at = 0; at < absent.size();)
@@ -181,7 +148,7 @@ ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
     else
     {
         if (!fetch(".zmetadata", metadata))
-            throw Error("Zarr store '" + source + "': the server holds no consolidated metadata ('.zmetadata'); a "
+            throw Error(who() + ": the server holds no consolidated metadata ('.zmetadata'); a "
                         "store is read over HTTP by it (zarr.consolidate_metadata() writes it)");
         remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.opened = true; });
     }
@@ -189,7 +156,7 @@ ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
     if (!fromCache_)
     {
         if (VSIMkdirRecursive(folder_.c_str(), 0755) != 0 && !exists(folder_))
-            throw Error("Zarr store '" + source + "': the folder '" + folder_ + "' cannot be made");
+            throw Error(who() + ": the folder '" + folder_ + "' cannot be made");
         store(".zmetadata", metadata);
         // GDAL knows a store by its .zgroup: the consolidated metadata's copy (a store whose root is an array has
         // its .zarray there instead), kept by readArrays()
@@ -207,13 +174,12 @@ ZarrMirror::~ZarrMirror()
 
 void ZarrMirror::readArrays(const std::string &metadata)
 {
-    const std::string source = withoutCredentials(url_);
     CPLJSONDocument doc;
     CPLPushErrorHandler(CPLQuietErrorHandler);
     const bool parsed = doc.LoadMemory(metadata);
     CPLPopErrorHandler();
     if (!parsed || !doc.GetRoot().GetObj("metadata").IsValid())
-        throw Error("Zarr store '" + source + "': its '.zmetadata' is not a store's consolidated metadata (it "
+        throw Error(who() + ": its '.zmetadata' is not a store's consolidated metadata (it "
                     "begins '" + metadata.substr(0, 40) + "')");
     const CPLJSONObject meta = doc.GetRoot().GetObj("metadata");
     for (const char *root : {".zgroup", ".zarray"})
@@ -230,12 +196,12 @@ void ZarrMirror::readArrays(const std::string &metadata)
         Array a;
         const CPLJSONArray shape = entry.GetArray("shape"), chunks = entry.GetArray("chunks");
         if (!shape.IsValid() || !chunks.IsValid() || shape.Size() != chunks.Size())
-            throw Error("Zarr store '" + source + "': '" + key + "' has no shape and chunks of one length");
+            throw Error(who() + ": '" + key + "' has no shape and chunks of one length");
         for (int k = 0; k < shape.Size(); ++k)
         {
             const long long n = shape[k].ToLong(-1), c = chunks[k].ToLong(0);
             if (n < 0 || c <= 0)
-                throw Error("Zarr store '" + source + "': '" + key + "' has a shape or chunk size that is not a count");
+                throw Error(who() + ": '" + key + "' has a shape or chunk size that is not a count");
             a.shape.push_back(static_cast<std::size_t>(n));
             a.chunks.push_back(static_cast<std::size_t>(c));
         }
@@ -243,7 +209,7 @@ void ZarrMirror::readArrays(const std::string &metadata)
         arrays_[key == ".zarray" ? "" : key.substr(0, key.size() - 8)] = a;
     }
     if (arrays_.empty())
-        throw Error("Zarr store '" + source + "': its consolidated metadata names no array");
+        throw Error(who() + ": its consolidated metadata names no array");
 }
 
 std::vector<std::string> ZarrMirror::keys(const std::string &path, const std::vector<std::size_t> &start,
@@ -251,7 +217,7 @@ std::vector<std::string> ZarrMirror::keys(const std::string &path, const std::ve
 {
     const auto it = arrays_.find(path);
     if (it == arrays_.end() || it->second.shape.size() != start.size() || start.size() != count.size())
-        throw Error("Zarr store '" + withoutCredentials(url_) + "': no array '" + path + "' of " +
+        throw Error(who() + ": no array '" + path + "' of " +
                     std::to_string(start.size()) + " dimensions in its metadata");
     const Array &a = it->second;
     const std::string prefix = path.empty() ? "" : path + "/";
@@ -389,11 +355,10 @@ std::string ZarrMirror::chunkChanged(const std::string &key)
 void ZarrMirror::checkRepublished()
 {
     checked_ = true;
-    const std::string source = withoutCredentials(url_);
     const std::string advice = "; remove the cache folder '" + folder_ + "' to plan on the store as it is now";
     std::string now, cached;
     if (!fetch(".zmetadata", now) || !slurp(folder_ + "/.zmetadata", cached) || now != cached)
-        throw Error("Zarr store '" + source + "': the store was republished since the cache was written (its "
+        throw Error(who() + ": the store was republished since the cache was written (its "
                     "metadata differs from the cache's), and the plan needs chunks the cache does not hold" + advice);
     remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.opened = true; });
     // the coordinates (the one-dimensional arrays) as cached: the same times and positions
@@ -407,7 +372,7 @@ void ZarrMirror::checkRepublished()
             if (absent_.count(key) || !slurp(folder_ + "/" + key, mine))
                 continue;
             if (!fetch(key, now) || now != mine)
-                throw Error("Zarr store '" + source + "': the store was republished since the cache was written "
+                throw Error(who() + ": the store was republished since the cache was written "
                             "(its chunk '" + key + "' differs from the cache's), and the plan needs chunks the cache "
                             "does not hold" + advice);
         }
@@ -418,183 +383,19 @@ void ZarrMirror::checkRepublished()
     held.insert(held.end(), absent_.begin(), absent_.end());
     for (const std::string &key : held)
         if (const std::string what = chunkChanged(key); !what.empty())
-            throw Error("Zarr store '" + source + "': the store was republished since the cache was written (its "
+            throw Error(who() + ": the store was republished since the cache was written (its "
                         "chunk '" + key + "' differs from the cache's: " + what + "), and the plan needs chunks the "
                         "cache does not hold: the cached and the new values would be mixed" + advice);
     if (validatorsChanged_)
         storeValidators();
 }
 
-bool httpGet(const std::string &url, std::size_t record, const std::string &who, const std::string &what,
-             std::string &body, HttpFailure *failure, std::string *validator)
-{
-    const RemoteAccess a = remoteAccess();
-    const std::string limit = std::to_string(std::max(1L, std::lround(a.requestTimeout)));
-    const std::string timeout = "TIMEOUT=" + limit, connect = "CONNECTTIMEOUT=" + limit;
-    const char *options[] = {timeout.c_str(), connect.c_str(), "MAX_RETRY=0", nullptr};
-    std::string why;
-    for (int attempt = 0; attempt <= a.retries; ++attempt)
-    {
-        if (attempt > 0)
-        {
-            // the pause before the next attempt (1 s, 2 s, ...), cut short by a stop request (Python's Ctrl-C)
-            const auto resume = std::chrono::steady_clock::now() + std::chrono::seconds(attempt);
-            while (std::chrono::steady_clock::now() < resume && !stopRequested())
-                std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        }
-        if (stopRequested())
-            throw Error(who + ": stopped while fetching '" + what + "'");
-        remote_detail::updateFetchRecord(record, [](RemoteFetch &f) { ++f.requests; });
-        CPLPushErrorHandler(CPLQuietErrorHandler);
-        CPLHTTPResult *r = nullptr;
-        {
-            const FetchStopWatch watch(url);  // a stop request cuts the request at once (FetchStop.h)
-            r = CPLHTTPFetch(url.c_str(), options);
-        }
-        CPLPopErrorHandler();
-        CPLErrorReset();
-        if (stopRequested())
-        {
-            if (r)
-                CPLHTTPDestroyResult(r);
-            throw Error(who + ": stopped while fetching '" + what + "'");
-        }
-        const std::string errors = r && r->pszErrBuf ? r->pszErrBuf : "";
-        const int curl = r ? r->nStatus : -1;
-        int http = 0;
-        if (errors.rfind("HTTP error code : ", 0) == 0)
-            http = std::atoi(errors.c_str() + 18);
-        if (r && curl == 0 && http == 0)
-        {
-            body.assign(reinterpret_cast<const char *>(r->pabyData), static_cast<std::size_t>(r->nDataLen));
-            if (validator)
-                *validator = validatorOf(r->papszHeaders, static_cast<long long>(body.size()));
-            CPLHTTPDestroyResult(r);
-            remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) { f.bytesFetched += body.size(); });
-            return true;
-        }
-        if (failure)
-        {
-            failure->status = curl == 0 ? http : 0;
-            failure->body.assign(r && r->pabyData ? reinterpret_cast<const char *>(r->pabyData) : "",
-                                 r && r->pabyData ? static_cast<std::size_t>(r->nDataLen) : 0);
-        }
-        if (r)
-            CPLHTTPDestroyResult(r);
-        if (curl == 0 && http == 404)
-            return false;
-        why = http ? "the server answered HTTP " + std::to_string(http) : errors.empty() ? "no answer" : errors;
-        const bool transient = curl != 0 || http >= 500 || http == 408 || http == 429;
-        if (!transient)
-            break;
-    }
-    throw Error(who + ": cannot fetch '" + what + "': " + why + " (" + limitText() + ")");
-}
-
-std::optional<bool> httpHead(const std::string &url, std::size_t record, std::string &validator)
-{
-    const std::string limit = std::to_string(std::max(1L, std::lround(remoteAccess().requestTimeout)));
-    const std::string timeout = "TIMEOUT=" + limit, connect = "CONNECTTIMEOUT=" + limit;
-    const char *options[] = {timeout.c_str(), connect.c_str(), "MAX_RETRY=0", "NO_BODY=YES", nullptr};
-    if (stopRequested())
-        return std::nullopt;
-    remote_detail::updateFetchRecord(record, [](RemoteFetch &f) { ++f.requests; });
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLHTTPResult *r = CPLHTTPFetch(url.c_str(), options);
-    CPLPopErrorHandler();
-    CPLErrorReset();
-    const std::string errors = r && r->pszErrBuf ? r->pszErrBuf : "";
-    const int http = errors.rfind("HTTP error code : ", 0) == 0 ? std::atoi(errors.c_str() + 18) : 0;
-    std::optional<bool> held;
-    if (r && r->nStatus == 0 && http == 0)
-    {
-        validator = validatorOf(r->papszHeaders, -1);
-        held = true;
-    }
-    else if (r && r->nStatus == 0 && http == 404)
-        held = false;
-    if (r)
-        CPLHTTPDestroyResult(r);
-    return held;
-}
-
-namespace
-{
-/// One GET of @p url (one attempt, the request time limit, nothing counted): its HTTP status (0: no answer; 200 for
-/// an answer without error), body and content type.
-int probe(const std::string &url, std::string &body, std::string &type)
-{
-    const std::string limit = std::to_string(std::max(1L, std::lround(remoteAccess().requestTimeout)));
-    const std::string timeout = "TIMEOUT=" + limit, connect = "CONNECTTIMEOUT=" + limit;
-    const char *options[] = {timeout.c_str(), connect.c_str(), "MAX_RETRY=0", nullptr};
-    CPLPushErrorHandler(CPLQuietErrorHandler);
-    CPLHTTPResult *r = CPLHTTPFetch(url.c_str(), options);
-    CPLPopErrorHandler();
-    CPLErrorReset();
-    if (!r)
-        return 0;
-    const std::string errors = r->pszErrBuf ? r->pszErrBuf : "";
-    const int status = r->nStatus != 0 ? 0
-                       : errors.rfind("HTTP error code : ", 0) == 0 ? std::atoi(errors.c_str() + 18) : 200;
-    body.assign(r->pabyData ? reinterpret_cast<const char *>(r->pabyData) : "",
-                r->pabyData ? static_cast<std::size_t>(std::min(r->nDataLen, 65536)) : 0);
-    type = r->pszContentType ? r->pszContentType : "";
-    CPLHTTPDestroyResult(r);
-    return status;
-}
-
-bool looksHtml(const std::string &body, const std::string &type)
-{
-    std::string head;
-    for (const char c : body.substr(0, 256))
-        head += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    const std::size_t at = head.find_first_not_of(" \t\r\n");
-    head = at == std::string::npos ? "" : head.substr(at);
-    std::string t;
-    for (const char c : type)
-        t += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return t.find("html") != std::string::npos || head.rfind("<!doctype html", 0) == 0 || head.rfind("<html", 0) == 0;
-}
-}  // namespace
-
-std::string notDapAnswer(const std::string &given)
-{
-    std::string url = given;
-    while (!url.empty() && url.front() == '[')  // NetCDF-C's [mode=dap4] prefixes
-    {
-        const std::size_t close = url.find(']');
-        if (close == std::string::npos)
-            return "";
-        url = url.substr(close + 1);
-    }
-    const std::string shown = withoutCredentials(url);
-    for (const char *key : {".zmetadata", ".zgroup", ".zarray"})
-    {
-        std::string body, type;
-        if (probe(keyUrl(url, key), body, type) == 200 && !looksHtml(body, type) &&
-            body.find_first_not_of(" \t\r\n") != std::string::npos &&
-            body[body.find_first_not_of(" \t\r\n")] == '{')
-            return std::string("the server holds a Zarr store there (its '") + key + "' found), not an OPeNDAP "
-                   "dataset: give it as 'ZARR:" + shown + "' (a store's URL ending in .zarr is read as one)";
-    }
-    std::string body, type;
-    const std::size_t q = url.find('?');
-    const std::string ddsUrl = url.substr(0, q) + ".dds" + (q == std::string::npos ? "" : url.substr(q));
-    const int status = probe(ddsUrl, body, type);
-    if (status == 0 || !looksHtml(body, type))
-        return "";
-    return "the server answered an HTML page" + (status != 200 ? " (HTTP " + std::to_string(status) + ")" : "") +
-           ", not an OPeNDAP description, for '" + withoutCredentials(ddsUrl) + "': expected an OPeNDAP (DAP2) "
-           "dataset URL (THREDDS dodsC, Hyrax, ERDDAP griddap), a Zarr store's URL ending in .zarr (or given as "
-           "ZARR:URL), or a GRIB file's URL ending in .grib2";
-}
-
-FileMirror::FileMirror(const std::string &url, const std::string &extension, const std::string &kind)
+FileMirror::FileMirror(const std::string &url, const std::string &extension, DatasetKind kind)
 {
     const std::string source = withoutCredentials(url);
-    const std::string who = kind + " '" + source + "'";
+    const std::string who = datasetWho(kind, source);
     const std::size_t record = remote_detail::newFetchRecord(source);
-    remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) { f.kind = kind; });
+    remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) { f.kind = datasetKindName(kind); });
     const RemoteAccess access = remoteAccess();
     const std::string name = remote_detail::cacheName(source, extension);
     if (!access.cacheDir.empty())
@@ -645,7 +446,7 @@ bool ZarrMirror::fetch(const std::string &key, std::string &body)
 {
     std::string validator;
     const bool found =
-        httpGet(keyUrl(url_, key), record_, "Zarr store '" + withoutCredentials(url_) + "'", key, body, nullptr,
+        httpGet(keyUrl(url_, key), record_, who(), key, body, nullptr,
                 &validator);
     if (found && key.rfind(".z", 0) != 0 && validators_[key] != validator)
     {
@@ -655,10 +456,15 @@ bool ZarrMirror::fetch(const std::string &key, std::string &body)
     return found;
 }
 
+std::string ZarrMirror::who() const
+{
+    return datasetWho(DatasetKind::ZarrStore, withoutCredentials(url_));
+}
+
 void ZarrMirror::store(const std::string &key, const std::string &bytes)
 {
     writeWhole(folder_ + "/" + key, bytes,
-               "Zarr store '" + withoutCredentials(url_) + "'" + (cached_ ? " (the cache folder)" : ""));
+               who() + (cached_ ? " (the cache folder)" : ""));
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -13,6 +13,9 @@
 /// the same validator, else its bytes fetched and compared; a chunk absent then must be absent still): a store
 /// republished at the same URL, its values rewritten under the same metadata included, is refused rather than mixed
 /// with the cached one.
+///
+///  - HttpMirror.cpp    the mirrors: ZarrMirror, FileMirror
+///  - HttpRequests.cpp  the requests: httpGet(), httpHead(), notDapAnswer(), keyUrl()
 
 #include <cstddef>
 #include <cstdint>
@@ -22,9 +25,11 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/io/FileList.h"
+
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 /// What the server answered to a request that failed: its HTTP status (0: no answer) and body (a server's own words:
 /// ERDDAP's `Error { ... message="..."; }`, an HTML page).
@@ -54,14 +59,17 @@ std::optional<bool> httpHead(const std::string &url, std::size_t record, std::st
 /// Never quotes the page.
 std::string notDapAnswer(const std::string &url);
 
+/// @p url with @p key appended to its path (before a query string: "https://h/s.zarr?t=1" -> "https://h/s.zarr/k?t=1").
+std::string keyUrl(const std::string &url, const std::string &key);
+
 /// A file over HTTP (a GRIB file) fetched whole, once: into the cache folder (a later run reads it there, no
 /// request), or GDAL's memory without a cache.
 class FileMirror
 {
 public:
-    /// @p extension names the cached copy (".grib2"); @p kind names the source in messages ("GRIB file").
-    /// @throws Error naming the URL when it cannot be fetched.
-    FileMirror(const std::string &url, const std::string &extension, const std::string &kind);
+    /// @p extension names the cached copy (".grib2"); @p kind names the source in messages and the record ("GRIB
+    /// file", datasetKindName()). @throws Error naming the URL when it cannot be fetched.
+    FileMirror(const std::string &url, const std::string &extension, DatasetKind kind);
     ~FileMirror();
     FileMirror(const FileMirror &) = delete;
     FileMirror &operator=(const FileMirror &) = delete;
@@ -120,6 +128,8 @@ private:
     /// The first time the cache is found short: the server's metadata and coordinate chunks are the cached ones.
     void checkRepublished();
     bool held(const std::string &key) const;
+    /// "Zarr store '<url>'" (without credentials): how messages name the store.
+    std::string who() const;
 
     std::string url_, folder_;
     bool cached_{false};       // the folder is the cache's (else GDAL's memory)
@@ -133,5 +143,5 @@ private:
     std::map<std::string, std::string> validators_;  // key -> the server's validator when it was fetched
     bool validatorsChanged_{false};
 };
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

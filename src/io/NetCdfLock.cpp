@@ -3,7 +3,7 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 std::recursive_mutex &libraryMutex()
 {
@@ -11,5 +11,5 @@ std::recursive_mutex &libraryMutex()
     static auto *m = new std::recursive_mutex();
     return *m;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

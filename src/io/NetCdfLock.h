@@ -21,7 +21,7 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 /// The mutex itself (one per process).
 std::recursive_mutex &libraryMutex();
@@ -39,5 +39,5 @@ public:
 private:
     std::lock_guard<std::recursive_mutex> hold_;
 };
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -1,6 +1,6 @@
 #pragma once
 /// @file RemoteDataset.h
-/// @brief Internal to the library (not installed): one OPeNDAP dataset as NcFile reads it (io/RemoteSource.h): opened
+/// @brief Internal to the library (not installed): one OPeNDAP dataset as GriddedDataset reads it (io/RemoteSource.h): opened
 /// once per process, its requests timed and retried, the values fetched kept in memory and in the cache file.
 
 #include <netcdf.h>
@@ -18,7 +18,7 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 /// Sets NetCDF-C's HTTP time limits (an rc file named by NCRCENV_RC: the user's own rc files, then HTTP.TIMEOUT and
 /// HTTP.CONNECTTIMEOUT) before the process's first NetCDF access; later calls do nothing (NetCDF-C reads its rc
@@ -27,6 +27,11 @@ void prepareNetcdfAccess(const RemoteAccess &access);
 /// The request time limit given to NetCDF-C (whole seconds), 0 before the first NetCDF access or where the user's
 /// own NCRCENV_RC file rules.
 long requestLimitInForce();
+
+/// "u[0:3][2:40]": the DAP constraint a block answers (inclusive stops).
+std::string constraintOf(const std::string &name, const std::vector<std::size_t> &s, const std::vector<std::size_t> &c);
+/// A text attribute of @p var in the NetCDF dataset @p ncid ("" when absent or not text).
+std::string textAttribute(int ncid, int var, const char *name);
 
 /// One remote dataset: its description read from the cache file when there is one (no network), else from the URL;
 /// its values from the cache file, from what this process fetched already, or from the server.
@@ -49,7 +54,7 @@ public:
     /// @throws Error naming the URL and the variable when the server fails (after the retries).
     void read(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count, double *out);
     /// Writes the cache file anew (all or nothing: a temporary file renamed) when values were fetched since it was
-    /// last written; a failure is kept in the fetch record (RemoteFetch), the plan goes on.
+    /// last written; a failure is kept in the fetch record (RemoteFetch), the plan goes on (RemoteCache.cpp).
     void flush();
     /// "OPeNDAP source '<url>'".
     std::string who() const;
@@ -79,5 +84,5 @@ private:
     bool dirty_{false};
     std::mutex mutex_;
 };
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -90,7 +90,7 @@ void setRemoteAccess(const RemoteAccess &access)
                     text::number(access.requestTimeout));
 #if OMPL_GLIDER_WITH_NETCDF
     // NetCDF-C reads its time limit once, at the process's first access: a change after it would be ignored
-    const long inForce = netcdf_detail::requestLimitInForce();
+    const long inForce = gridded_detail::requestLimitInForce();
     if (inForce > 0 && std::max(1L, static_cast<long>(std::ceil(access.requestTimeout))) != inForce)
         throw Error("the request time limit is fixed at " + std::to_string(inForce) +
                     " s by the process's first NetCDF access (NetCDF-C reads it once): set it before the first plan");
@@ -110,7 +110,7 @@ RemoteAccess remoteAccess()
 void prepareRemoteAccess()
 {
 #if OMPL_GLIDER_WITH_NETCDF
-    netcdf_detail::prepareNetcdfAccess(remoteAccess());
+    gridded_detail::prepareNetcdfAccess(remoteAccess());
 #endif
 }
 

@@ -12,9 +12,11 @@ list(APPEND OMPL_GLIDER_SOURCES
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
-    # the open NetCDF file (NcFile.h, internal) of the forecast reader (current/netcdf/) and the bathymetry
-    ${CMAKE_CURRENT_LIST_DIR}/NcFile.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/RemoteDataset.cpp  # OPeNDAP: time limits, retries, the cache
+    # the open gridded dataset (GriddedDataset.h, internal) of the forecast reader (current/gridded/), the bathymetry
+    # and the observations; NetCDF-C's reader of files, in-memory datasets and OPeNDAP URLs
+    ${CMAKE_CURRENT_LIST_DIR}/GriddedDataset.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/RemoteDataset.cpp  # OPeNDAP: time limits, retries, the values fetched
+    ${CMAKE_CURRENT_LIST_DIR}/RemoteCache.cpp  # OPeNDAP: the cache file, checked and written (RemoteDataset.h)
     ${CMAKE_CURRENT_LIST_DIR}/FetchStop.cpp  # a stop request cuts a blocking HTTP request (FetchStop.h)
     ${CMAKE_CURRENT_LIST_DIR}/ClassicSize.cpp
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
@@ -32,10 +34,12 @@ if(OMPL_GLIDER_WITH_MISSION)
     ${CMAKE_CURRENT_LIST_DIR}/Coastline.cpp  # GDAL/OGR
   )
   if(OMPL_GLIDER_WITH_NETCDF)
-    # Zarr stores and GRIB files through GDAL's multidimensional API, read as NcFile reads NetCDF (GdalGrid.h)
+    # Zarr stores and GRIB files through GDAL's multidimensional API, read as NetCDF-C's are (GdalGrid.h, Dataset.h)
     list(APPEND OMPL_GLIDER_GDAL_SOURCES ${CMAKE_CURRENT_LIST_DIR}/GdalGrid.cpp
+      ${CMAKE_CURRENT_LIST_DIR}/GribTimes.cpp  # a GRIB file's time dimension from GDAL's arrays (GdalGridImpl.h)
       ${CMAKE_CURRENT_LIST_DIR}/GdalFaults.cpp  # what is wrong with such a source, in its own words
       ${CMAKE_CURRENT_LIST_DIR}/HttpMirror.cpp  # a store or a GRIB file over HTTP: its mirror, the cache
+      ${CMAKE_CURRENT_LIST_DIR}/HttpRequests.cpp  # GET and HEAD with the time limit and retries (HttpMirror.h)
     )
     list(APPEND OMPL_GLIDER_SOURCES
       # a glider's real-time data: an ERDDAP answer over HTTP, Slocum dba files

@@ -495,7 +495,7 @@ case("yaml-time-units-without-since", ["--mission", "m.yaml", "--out", "{out}"],
      "m.yaml:1: field 'current.time_units'",
      {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: f.nc, time_units: days}\n"
                                      "start: {lon: -52.9, lat: 47.1}\ngoal: {lon: -52.1, lat: 47.9}\n"})
-case("yaml-velocity-units-analytic", ["--mission", "m.yaml", "--out", "{out}"], 2, "only for type netcdf",
+case("yaml-velocity-units-analytic", ["--mission", "m.yaml", "--out", "{out}"], 2, "only for type gridded",
      {"m.yaml": mission("current: {type: uniform, velocity_units: knots}")})
 nc_case("nc-cartesian-no-time-records", CARTESIAN, "time", args=("--start", "5000,5000", "--goal", "35000,25000"))
 case("mission-netcdf-departure-after-end", ["--mission", "m.yaml", "--out", "{out}"], 2, "departure",

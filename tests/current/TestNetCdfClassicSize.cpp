@@ -10,12 +10,12 @@
 #include <sstream>
 
 #include "TestNetCdfUtil.h"
-#include "netcdf/NetCdfInternal.h"
+#include "gridded/GriddedInternal.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 
 using namespace ompl_glider;
-using namespace ompl_glider::netcdf_detail;
+using namespace ompl_glider::gridded_detail;
 using glider_test::NcWriter;
 using glider_test::TempDir;
 

@@ -12,7 +12,7 @@
 
 #include "ModelGrids.h"
 #include "TestNetCdfUtil.h"
-#include "netcdf/NetCdfInternal.h"
+#include "gridded/GriddedInternal.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 
@@ -83,8 +83,8 @@ TEST(NetCdfGridAngle, DerivedAngleEqualsTheTrueAngleAtEveryNode)
         g.theta = deg * kDeg;
         std::vector<double> lon, lat;
         rhoNodes(g, lon, lat);
-        const netcdf_detail::DerivedGridAngle a =
-            netcdf_detail::deriveGridAngle(lon, lat, RomsGrid::kXi, RomsGrid::kEta, true);
+        const gridded_detail::DerivedGridAngle a =
+            gridded_detail::deriveGridAngle(lon, lat, RomsGrid::kXi, RomsGrid::kEta, true);
         ASSERT_TRUE(a.fault.empty()) << a.fault;
         ASSERT_TRUE(a.rotated);
         ASSERT_EQ(a.radians.size(), RomsGrid::kEta * RomsGrid::kXi);
@@ -110,7 +110,7 @@ TEST(NetCdfGridAngle, DerivedAngleEqualsTheTrueAngleAtEveryNode)
     for (std::size_t j = 0; j < RomsGrid::kEta; ++j)
         for (std::size_t i = 0; i < RomsGrid::kXi; ++i)
             x.push_back(g.at(double(j), double(i)).x), y.push_back(g.at(double(j), double(i)).y);
-    const auto c = netcdf_detail::deriveGridAngle(x, y, RomsGrid::kXi, RomsGrid::kEta, false);
+    const auto c = gridded_detail::deriveGridAngle(x, y, RomsGrid::kXi, RomsGrid::kEta, false);
     for (double r : c.radians)
         ASSERT_NEAR(r, g.theta, 1e-12);
 }
@@ -214,7 +214,7 @@ TEST(NetCdfGridAngle, AmbiguousGridsAreRefused)
             x.push_back(s * std::cos(20.0 * kDeg) + t * std::cos(a) - double(j) * std::sin(20.0 * kDeg));
             y.push_back(s * std::sin(20.0 * kDeg) + t * std::sin(a) + double(j) * std::cos(20.0 * kDeg));
         }
-    const auto k = netcdf_detail::deriveGridAngle(x, y, 10, 6, false);
+    const auto k = gridded_detail::deriveGridAngle(x, y, 10, 6, false);
     EXPECT_NE(k.fault.find("i direction turns by"), std::string::npos) << k.fault;
     EXPECT_EQ(k.faultI, 4u);
 }

@@ -29,6 +29,8 @@ if(TARGET glider_plan)
   add_test(NAME mission.fleet_cli
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_fleet_cli.sh $<TARGET_FILE:glider_plan> ${PROJECT_SOURCE_DIR})
 endif()
+# the gridded kind by its name and by its alias netcdf: one kind, the same plan to the bit
+glider_add_test(test_mission_gridded_kind ${CMAKE_CURRENT_LIST_DIR}/TestGriddedKind.cpp)
 # a forecast in several files (--currents LIST, current.file list or glob) planned as the combined file
 glider_add_test(test_mission_forecast_files ${CMAKE_CURRENT_LIST_DIR}/TestForecastFiles.cpp)
 target_link_libraries(test_mission_forecast_files INTERFACE netCDF::netcdf)

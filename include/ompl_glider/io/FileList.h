@@ -21,7 +21,23 @@ std::vector<std::string> forecastFileList(const std::string &commaSeparated, con
 bool isZarrStore(const std::string &path);
 /// @brief A GRIB file: `.grib2`, `.grb2`, `.grib`, `.grb` (also as a URL), or a file whose first bytes are "GRIB".
 bool isGribFile(const std::string &path);
-/// @brief What a forecast source is, as the report and summary.json name it: "Zarr store", "GRIB file", "OPeNDAP
-/// dataset" (another URL), "in-memory dataset", else "NetCDF file".
+
+/// @brief What a gridded source is, which says what reads it: NetCDF-C (a file, an OPeNDAP URL, a dataset in memory)
+/// or GDAL (a Zarr store, a GRIB file).
+enum class DatasetKind
+{
+    NetCdfFile,     ///< a NetCDF file
+    Opendap,        ///< an OPeNDAP dataset: an http(s) URL that is no Zarr store or GRIB file
+    MemoryDataset,  ///< an in-memory dataset (MemoryDataset.h)
+    ZarrStore,      ///< a Zarr store, on disk or over HTTP (isZarrStore())
+    GribFile        ///< a GRIB file, on disk or over HTTP (isGribFile())
+};
+/// @brief The kind of the source @p path: a Zarr store, a GRIB file, an OPeNDAP dataset (another URL), an in-memory
+/// dataset, else a NetCDF file.
+DatasetKind datasetKindOf(const std::string &path);
+/// @brief How the report, summary.json and messages name @p kind: "NetCDF file", "OPeNDAP dataset", "in-memory
+/// dataset", "Zarr store", "GRIB file".
+const char *datasetKindName(DatasetKind kind);
+/// @brief What a forecast source is, as the report and summary.json name it: datasetKindName(datasetKindOf(path)).
 std::string forecastSourceKind(const std::string &path);
 }  // namespace ompl_glider

@@ -4,7 +4,7 @@
 /// a request may take, where what was fetched is kept (the cache), and what came from where.
 ///
 /// A forecast given as an http:// or https:// URL is read through NetCDF-C's own DAP client exactly as a file is read
-/// (NcFile: the same layouts, units, land and time rules). Only what the reader asks for crosses the network: the
+/// (GriddedDataset: the same layouts, units, land and time rules). Only what the reader asks for crosses the network: the
 /// dataset's description (DDS and DAS), the coordinate variables, and the hyperslab of the trip's region, levels and
 /// records of the velocities and masks, each variable in a few large requests (NetCDF-C itself fetches every
 /// variable of at most 4096 values, the coordinates, whole with the first read).

@@ -185,9 +185,8 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
     keys.insert(extraKeys.begin(), extraKeys.end());
     r.checkMap(n, f, keys);
     c.mark = {r.file(), r.line(n)};
-    std::set<std::string> kinds;
-    for (const CurrentFieldKind &k : currentFieldKinds())
-        kinds.insert(k.name);
+    const std::vector<std::string> names = currentFieldKindNames();  // with the aliases ("netcdf": gridded)
+    const std::set<std::string> kinds(names.begin(), names.end());
     if (!n["type"])
         r.fail(n, f + ".type", "missing (" + currentFieldKindList() + ")");
     c.type = r.oneOf(n["type"], f + ".type", kinds);

@@ -2,16 +2,16 @@
 // projected nodes) and their eastward/northward velocities rotated into x/y; Cartesian axes scaled to metres.
 #include <cmath>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
 /// Projects every node and rotates its velocities (all loaded times and depths) from east/north into x/y.
-void projectNodes(const NcFile &f, const Layout &l, const HorizontalSubset &h, const LocalProjection &proj,
+void projectNodes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const LocalProjection &proj,
                   GriddedData &g)
 {
     const std::size_t nx = g.nx, ny = g.ny, nh = nx * ny, nz = g.depth.size(), nt = g.time.size();
@@ -44,7 +44,7 @@ void projectNodes(const NcFile &f, const Layout &l, const HorizontalSubset &h, c
 }
 
 /// Cartesian x/y (any length unit -> metres; dimensionless as they are): 1-D axes or curvilinear nodes.
-void cartesianNodes(const NcFile &f, const Layout &l, const HorizontalSubset &h, GriddedData &g)
+void cartesianNodes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, GriddedData &g)
 {
     if (l.curvilinear)
     {
@@ -68,7 +68,7 @@ void cartesianNodes(const NcFile &f, const Layout &l, const HorizontalSubset &h,
 }
 }  // namespace
 
-std::shared_ptr<const LocalProjection> setNodeCoordinates(const NcFile &f, const Layout &l, const HorizontalSubset &h,
+std::shared_ptr<const LocalProjection> setNodeCoordinates(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
                                                           const RegionOfInterest &r, const NetCdfCurrentOptions &opt,
                                                           GriddedData &g)
 {
@@ -84,5 +84,5 @@ std::shared_ptr<const LocalProjection> setNodeCoordinates(const NcFile &f, const
     projectNodes(f, l, h, *proj, g);
     return proj;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

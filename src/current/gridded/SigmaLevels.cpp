@@ -8,11 +8,11 @@
 #include <set>
 #include <sstream>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
@@ -24,7 +24,7 @@ enum class SForm
     G2   ///< ocean_s_coordinate_g2 (ROMS Vtransform = 2)
 };
 
-SForm formOf(const NcFile &f, int zv)
+SForm formOf(const GriddedDataset &f, int zv)
 {
     const std::string sn = stdName(f, zv);
     if (sn == "ocean_s_coordinate_g1")
@@ -35,7 +35,7 @@ SForm formOf(const NcFile &f, int zv)
 }
 
 /// formula_terms "s: s_rho C: Cs_r eta: zeta depth: h depth_c: hc" as a map term -> variable name.
-std::map<std::string, std::string> formulaTerms(const NcFile &f, int zv)
+std::map<std::string, std::string> formulaTerms(const GriddedDataset &f, int zv)
 {
     std::map<std::string, std::string> terms;
     std::istringstream is(f.attText(zv, "formula_terms").value_or(""));
@@ -47,7 +47,7 @@ std::map<std::string, std::string> formulaTerms(const NcFile &f, int zv)
 }
 
 /// The variable of a formula term: formula_terms' name, else the ROMS name; nullopt when neither exists.
-std::optional<int> termVar(const NcFile &f, const std::map<std::string, std::string> &terms, const std::string &term,
+std::optional<int> termVar(const GriddedDataset &f, const std::map<std::string, std::string> &terms, const std::string &term,
                            const char *romsName)
 {
     const auto it = terms.find(term);
@@ -82,13 +82,13 @@ std::vector<double> depthLevels(double deepest, const std::vector<double> &reque
 }
 }  // namespace
 
-bool isSigmaCoordinate(const NcFile &f, int zv)
+bool isSigmaCoordinate(const GriddedDataset &f, int zv)
 {
     const std::string sn = stdName(f, zv);
     return sn.rfind("ocean_s", 0) == 0 || sn.rfind("ocean_sigma", 0) == 0 || sn.rfind("ocean_double_sigma", 0) == 0;
 }
 
-void remapSigmaToDepths(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+void remapSigmaToDepths(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                         const AxisSelection &t, double deepest, const std::vector<double> &requested, GriddedData &g)
 {
     const int zv = l.coordVar[std::size_t(l.dimZ)];
@@ -202,5 +202,5 @@ void remapSigmaToDepths(const NcFile &f, const Layout &l, const HorizontalSubset
     g.water = std::move(water);
     g.depth = levels;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -1,10 +1,10 @@
 #pragma once
-/// @file NetCdfInternal.h
+/// @file GriddedInternal.h
 /// @brief Internal pieces of the NetCDF reader (loadNetCdfCurrents(), readNetCdfTimeAxis()); not installed.
 ///
-/// The reader runs in stages, one source file each (all in src/current/netcdf/ except the composition and the file
+/// The reader runs in stages, one source file each (all in src/current/gridded/ except the composition and the file
 /// access):
-///  - ../../io/NcFile.cpp    the open file, attribute/variable queries, errors that name the file (io/NcFile.h)
+///  - ../../io/GriddedDataset.cpp    the open file, attribute/variable queries, errors that name the file (io/GriddedDataset.h)
 ///  - ../../io/ClassicSize.cpp  the size a classic-format file must have, from its header (refuses truncated files)
 ///  - AxisChecks.cpp         coordinate values: no fill values or non-finite numbers, strictly monotonic axes
 ///  - VariableDetection.cpp  velocities and the role of each of their dimensions (CF standard_name, axis, units)
@@ -36,7 +36,7 @@
 #include <utility>
 #include <vector>
 
-#include "../../io/NcFile.h"
+#include "../../io/GriddedDataset.h"
 #include "../../io/NumberText.h"
 #include "../../io/TextUtil.h"
 #include "ompl_glider/io/Time.h"
@@ -49,11 +49,11 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// ---- strings (io/TextUtil.h) and the open file (io/NcFile.h: NcFile, ClassicExtent, classicTruncation()) ----
+// ---- strings (io/TextUtil.h) and the open file (io/GriddedDataset.h: GriddedDataset, ClassicExtent, classicTruncation()) ----
 
 using text::inList;
 using text::joinNames;
@@ -63,25 +63,25 @@ using text::trim;
 // ---- what a variable is (VariableDetection.cpp) ----
 
 /// The standard_name attribute, lower case ("" when absent).
-std::string stdName(const NcFile &f, int var);
+std::string stdName(const GriddedDataset &f, int var);
 /// The units attribute as written ("" when absent).
-std::string unitsOf(const NcFile &f, int var);
+std::string unitsOf(const GriddedDataset &f, int var);
 /// Longitude: units degrees_east (and variants), standard_name longitude, or a usual name (lon, nav_lon, ...).
-bool isLonVar(const NcFile &f, int var);
+bool isLonVar(const GriddedDataset &f, int var);
 /// Latitude: units degrees_north (and variants), standard_name latitude, or a usual name (lat, nav_lat, ...).
-bool isLatVar(const NcFile &f, int var);
+bool isLatVar(const GriddedDataset &f, int var);
 /// Cartesian x: standard_name projection_x_coordinate, axis = "X", or a usual name (x, xc, easting, ...).
-bool isXVar(const NcFile &f, int var);
+bool isXVar(const GriddedDataset &f, int var);
 /// Cartesian y: standard_name projection_y_coordinate, axis = "Y", or a usual name (y, yc, northing, ...).
-bool isYVar(const NcFile &f, int var);
+bool isYVar(const GriddedDataset &f, int var);
 /// Time: units "<unit> since <date>", standard_name time, axis = "T", or a usual name (time, time_counter, ...).
-bool isTimeVar(const NcFile &f, int var);
+bool isTimeVar(const GriddedDataset &f, int var);
 /// Depth: standard_name depth, axis = "Z", a positive attribute, or a usual name (depth, deptht, lev, ...).
-bool isDepthVar(const NcFile &f, int var);
+bool isDepthVar(const GriddedDataset &f, int var);
 
 /// The eastward (east = true) or northward velocity variable: the given name, else the first CF standard_name
 /// of the known list found, else the first usual name found. @throws Error listing what was looked for.
-int findVelocity(const NcFile &f, const std::string &given, bool east, const std::string &optionName);
+int findVelocity(const GriddedDataset &f, const std::string &given, bool east, const std::string &optionName);
 
 /// What a dimension of the velocity variables is.
 enum class Role
@@ -111,7 +111,7 @@ struct DimensionRoles
 /// Classifies the dimensions of the variable uVar. @throws Error when a given coordinate name is missing or not
 /// on a dimension of u, a dimension named like time has no coordinate variable, or two dimensions have the
 /// same role.
-DimensionRoles classifyDimensions(const NcFile &f, const NetCdfCurrentOptions &opt, int uVar);
+DimensionRoles classifyDimensions(const GriddedDataset &f, const NetCdfCurrentOptions &opt, int uVar);
 
 // ---- the grid (GridLayout.cpp) ----
 
@@ -140,7 +140,7 @@ struct Layout
 };
 
 /// Finds u and v and the grid they are on. @throws Error naming the file, the variable and what was expected.
-Layout detectLayout(const NcFile &f, const NetCdfCurrentOptions &opt);
+Layout detectLayout(const GriddedDataset &f, const NetCdfCurrentOptions &opt);
 
 // ---- time (TimeAxis.cpp) and depth (DepthAxis.cpp) ----
 
@@ -159,7 +159,7 @@ struct TimeValues
 /// not "<unit> since <date>" and allowUndated is false (naming NetCdfCurrentOptions::timeUnits and steadyRecord),
 /// when the units or calendar are not understood, or when the variable has no values, holds fill values or
 /// non-finite numbers, or is not strictly increasing.
-TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated, const std::string &unitsOverride = "");
+TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, const std::string &unitsOverride = "");
 
 /// The one record of NetCdfCurrentOptions::steadyRecord and its date.
 struct SteadyRecord
@@ -174,7 +174,7 @@ struct SteadyRecord
 /// variable tv, -1 if none), dated when its units (or the options' timeUnits) are "<unit> since <date>" (an
 /// undated axis is not read). @throws Error when the index is not below the number of records, or the dated axis
 /// is bad (readTimeValues()).
-std::optional<SteadyRecord> steadyRecordOf(const NcFile &f, int timeDim, int tv, const NetCdfCurrentOptions &opt);
+std::optional<SteadyRecord> steadyRecordOf(const GriddedDataset &f, int timeDim, int tv, const NetCdfCurrentOptions &opt);
 
 /// File indices and coordinate values chosen along one dimension.
 struct AxisSelection
@@ -197,11 +197,11 @@ struct AxisSelection
 /// time fields of out (dated, steady, calendar, origin, forecast begin/end, departure). {0}/{0} without time axis
 /// or with a single record; {steadyRecord}/{0} with NetCdfCurrentOptions::steadyRecord. @throws Error for
 /// timeUnits or steadyRecord given for a file without time dimension.
-AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, NetCdfCurrents &out);
+AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt, NetCdfCurrents &out);
 
 /// The depth layers (metres, positive down, ascending) down to the first at or below maxDepth plus 2;
 /// {0}/{0} without depth axis; every level, with sigma set, for a terrain-following coordinate.
-AxisSelection selectDepths(const NcFile &f, const Layout &l, double maxDepth);
+AxisSelection selectDepths(const GriddedDataset &f, const Layout &l, double maxDepth);
 
 // ---- horizontal subset (RegionOfInterest.cpp, RectilinearSubset.cpp, CurvilinearSubset.cpp) ----
 
@@ -244,12 +244,12 @@ double wrapTo(double lon, double centre);
 /// axis's repeated seam column (-180 and 180, 0 and 360) read once. The nodes x the times t and depths z must fit
 /// the memory limit (checkTripMemory()). @throws Error for axes with fill values or non-finite numbers, axes that
 /// are not strictly monotonic, a region outside the axes or a trip too large for the memory.
-HorizontalSubset rectilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
+HorizontalSubset rectilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
                                    const AxisSelection &t);
 /// 2-D coordinates: the index box of the nodes in the region (+ margin nodes) and their coordinates; the memory
 /// is checked (checkTripMemory()) before they are read. @throws Error also for coordinates with fill values or
 /// non-finite numbers, and for coinciding neighbours or folded cells (checkCurvilinearNodes()).
-HorizontalSubset curvilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
+HorizontalSubset curvilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
                                    const AxisSelection &t);
 
 // ---- coordinate values (AxisChecks.cpp) ----
@@ -258,16 +258,16 @@ HorizontalSubset curvilinearSubset(const NcFile &f, const Layout &l, const Regio
 
 /// Index of the first value that is NaN, infinite or a fill value of var (packingOf(): _FillValue or the netCDF
 /// default fill, missing_value, outside valid_min/valid_max/valid_range); values.size() when there is none.
-std::size_t firstFillOrNonFinite(const NcFile &f, int var, const std::vector<double> &values);
+std::size_t firstFillOrNonFinite(const GriddedDataset &f, int var, const std::vector<double> &values);
 /// @throws Error "<kind> '<var>' holds fill values or non-finite numbers (<value> at index k); expected finite
 /// coordinates" (kind: "coordinate", "time variable", "depth").
-void checkAxisValues(const NcFile &f, int var, const std::vector<double> &values, const std::string &kind);
+void checkAxisValues(const GriddedDataset &f, int var, const std::vector<double> &values, const std::string &kind);
 /// Index k of the first value that breaks strict monotony (v[k] not beyond v[k - 1] in the direction of v[0] to
 /// v[1]); values.size() when strictly increasing or strictly decreasing.
 std::size_t monotonicBreak(const std::vector<double> &values);
 /// @throws Error "<kind> '<name>' is not strictly monotonic: <a> at index k - 1, then <b> at index k" unless values
 /// are strictly monotonic; the numbers shown are those of `shown` (the file's, when values were unwrapped).
-void checkStrictlyMonotonic(const NcFile &f, const std::vector<double> &values, const std::vector<double> &shown,
+void checkStrictlyMonotonic(const GriddedDataset &f, const std::vector<double> &values, const std::vector<double> &shown,
                             const std::string &kind, const std::string &name);
 /// Longitudes that are not monotonic as written but are across one seam (170, 180, -170 or 350, 0, 10): the
 /// values after each jump of more than 180 degrees shifted by a whole turn, when that makes them strictly
@@ -275,7 +275,7 @@ void checkStrictlyMonotonic(const NcFile &f, const std::vector<double> &values, 
 std::vector<double> unwrapLongitudes(const std::vector<double> &lon);
 /// @throws Error "curvilinear coordinates '<lon>'/'<lat>' are not strictly monotonic: ..." when two neighbouring
 /// nodes of h coincide or a cell's orientation differs from the first cell's (a fold or a degenerate cell).
-void checkCurvilinearNodes(const NcFile &f, const Layout &l, const HorizontalSubset &h);
+void checkCurvilinearNodes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h);
 
 // ---- reading (Hyperslab.cpp, UnitsAndPacking.cpp, LandMask.cpp) ----
 
@@ -291,7 +291,7 @@ DimRead makeDimRead(const std::vector<std::size_t> &fileIdx);
 
 /// Reads `var` restricted to the per-dimension reads, scattering into `out` at internal offsets
 /// sum_d pos * stride[d]. Values are raw (packed) doubles.
-void readScatter(const NcFile &f, int var, const std::vector<DimRead> &dims, const std::vector<std::size_t> &stride,
+void readScatter(const GriddedDataset &f, int var, const std::vector<DimRead> &dims, const std::vector<std::size_t> &stride,
                  std::vector<double> &out);
 
 /// The reads of u/v: per file dimension the runs and the internal stride (internal order t, z, y, x).
@@ -309,26 +309,26 @@ struct HyperslabPlan
 double tripBytes(std::size_t ni, std::size_t nj, std::size_t nt, std::size_t nz);
 /// checkMemory() of tripBytes(): @throws Error "NetCDF file '<path>': the trip's region (I x J nodes, T times,
 /// K depths) needs about ..." with a hint to restrict the region or the time window, or use a coarser file.
-void checkTripMemory(const NcFile &f, std::size_t ni, std::size_t nj, std::size_t nt, std::size_t nz);
+void checkTripMemory(const GriddedDataset &f, std::size_t ni, std::size_t nj, std::size_t nt, std::size_t nz);
 
-HyperslabPlan planHyperslab(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+HyperslabPlan planHyperslab(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                             const AxisSelection &t);
 
 /// The conversion to m/s of u and v (UDUNITS-2, velocityToMetresPerSecond()): the options' velocityUnits, else
 /// their units attributes; the identity for velocities without units ("" or "1") in a Cartesian file.
 /// @throws Error naming the file, the variable (or NetCdfCurrentOptions::velocityUnits) and the units when they
 /// are missing, not understood, not a velocity, or different for u and v.
-LinearConversion velocityConversionOf(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt);
+LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt);
 /// Refuses a velocity no current or wind reaches at a water node of any record loaded (g.u/g.v in m/s: more than
 /// 300 m/s, or not finite in single precision; in a Cartesian file's units without units, more than 1e6), naming
 /// the variable, the value, the node (file indices, coordinates) and the record: values read as fill values, a
 /// scale_factor or units that are wrong, never planned on.
-void checkVelocityMagnitudes(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &t,
+void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &t,
                              const NetCdfCurrentOptions &opt, const GriddedData &g);
 /// The conversion to metres of a Cartesian axis' units (UDUNITS-2, lengthToMetres()); the identity without
 /// units or for dimensionless ones (degrees included). @throws Error naming the file, the variable and the units
 /// when they are not a length.
-LinearConversion axisConversion(const NcFile &f, int var);
+LinearConversion axisConversion(const GriddedDataset &f, int var);
 
 /// Packing and missing-value rules of a variable (compared on the packed value).
 struct Packing
@@ -341,10 +341,10 @@ struct Packing
 
 /// scale_factor / add_offset, _FillValue (else the netCDF default fill of the type), missing_value,
 /// valid_range / valid_min / valid_max. @throws Error for a zero or non-finite scale or offset.
-Packing packingOf(const NcFile &f, int var);
+Packing packingOf(const GriddedDataset &f, int var);
 /// Coordinates as CF packs them (int16 lon/lat with scale_factor / add_offset): @p values, read raw and checked
 /// for fill values, unpacked in place.
-void unpackCoordinates(const NcFile &f, int var, std::vector<double> &values);
+void unpackCoordinates(const GriddedDataset &f, int var, std::vector<double> &values);
 
 /// Unpacks raw u/v (internal order t, z, y, x; packings pu/pv, converted to m/s by vel) into g.u / g.v and marks
 /// land in g.water (per z, y, x) where u or v is a fill value (or NaN, or outside the valid range) in any of the
@@ -356,7 +356,7 @@ void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv,
                    GriddedData &g, NetCdfCurrents &out);
 /// Reads u and v over the plan into g.u / g.v (unpacked, converted to m/s by vel) and g.water (unpackAndMask()
 /// with opt.zeroVelocityLand). g.nx, g.ny, g.depth and g.time must be set.
-void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
+void readVelocities(const GriddedDataset &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
                     const LinearConversion &vel, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
 
 /// How zero velocity becomes land (NetCdfCurrentOptions::zeroVelocityLand), decided after the fill values, the
@@ -375,7 +375,7 @@ struct ZeroLandRule
 /// The ZeroLandRule of a loaded subset: everyStillNode when `otherLand` is false (no fill, mask or tracer land in
 /// the region) or cornerGrid; openEdge from the subset's file indices (an edge is open unless its row or column is
 /// the first or last of the file).
-ZeroLandRule zeroLandRule(const NcFile &f, const Layout &l, const HorizontalSubset &h, bool otherLand,
+ZeroLandRule zeroLandRule(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, bool otherLand,
                           bool cornerGrid);
 
 /// Zero velocity as land: a water node (per z, y, x) whose u and v are exactly 0 in every record of the trip
@@ -394,24 +394,24 @@ void zeroLandVelocities(GriddedData &g);
 /// loaded rho point and averaged, v at the v points south and north of it; faces marked land by mask_u/mask_v or
 /// holding fill values count as zero flow, a rho point with both faces of a component fill values is land.
 /// @throws Error when the loaded rho points are not one contiguous, interior block.
-void readStaggeredVelocities(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+void readStaggeredVelocities(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                              const AxisSelection &t, const LinearConversion &vel, const NetCdfCurrentOptions &opt,
                              GriddedData &g, NetCdfCurrents &out);
 /// True when the depth variable zv is terrain-following (standard_name ocean_s_*, ocean_sigma_*,
 /// ocean_double_sigma_*).
-bool isSigmaCoordinate(const NcFile &f, int zv);
+bool isSigmaCoordinate(const GriddedDataset &f, int zv);
 /// Turns the s-levels of g (all of them, read by selectDepths() with AxisSelection::sigma) into fixed depth levels
 /// in metres down to `deepest` (plus the depths `requested`): the depth of each s-level per node and record from
 /// the CF formula of ocean_s_coordinate_g1/_g2 (formula_terms, else ROMS' Cs_r, h, hc, zeta; zeta 0 without it),
 /// each column interpolated linearly in depth; a level below the node's floor (h) is land there, one above the top
 /// s-level takes its value. @throws Error for other terrain-following coordinates or missing formula terms.
-void remapSigmaToDepths(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+void remapSigmaToDepths(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                         const AxisSelection &t, double deepest, const std::vector<double> &requested, GriddedData &g);
 /// Rotates grid-relative velocities (Layout::angleVar, or the angle derived from the nodes' coordinates with
 /// Layout::deriveAngle) into eastward/northward at every loaded node; says how in out.gridAngle.
 /// @throws Error when the angle holds fill values or non-finite numbers, or a derived angle is ambiguous (naming the
 /// node, the coordinates and what to give instead).
-void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSubset &h, GriddedData &g,
+void rotateGridToEastNorth(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, GriddedData &g,
                            NetCdfCurrents &out);
 
 // ---- the grid angle from the coordinates (GridAngle.cpp) ----
@@ -468,19 +468,19 @@ struct GridFit
 /// Where each dimension of `var` sits on u's loaded grid (nodes h, depths z, times t), or nullopt with the reason
 /// in `why` when it does not fit: at least (y, x), u's own horizontal dimensions or dimensions of their lengths; a
 /// time or depth dimension must be u's; any other dimension must have length 1.
-std::optional<GridFit> fitToGrid(const NcFile &f, const Layout &l, int var, const HorizontalSubset &h,
+std::optional<GridFit> fitToGrid(const GriddedDataset &f, const Layout &l, int var, const HorizontalSubset &h,
                                  const AxisSelection &z, const AxisSelection &t, std::string &why);
 
 /// The land/sea mask variable (the given one, or one found automatically: rules at loadNetCdfCurrents()) applied
 /// to g.water over the loaded nodes, depths and times; sets out.maskVariable and out.maskLandNodes.
 /// @throws Error when a given mask is missing or does not fit u's grid.
-void applyLandMask(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+void applyLandMask(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                    const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
 
 /// True when the velocities' coordinates say they are a B grid's velocity points (the corners of the tracer
 /// cells): named ULAT/ULONG/ULON (POP) or xu_ocean/yu_ocean (MOM), or described as the "u-grid" in their
 /// long_name (NCL's POP files: "array of u-grid latitudes"). Not for a staggered (C) layout.
-bool cornerVelocities(const NcFile &f, const Layout &l);
+bool cornerVelocities(const GriddedDataset &f, const Layout &l);
 
 /// The tracer stage: a tracer variable on the velocities' grid (the given NetCdfCurrentOptions::tracerName, else
 /// found automatically: standard_name sea_water_temperature, sea_water_potential_temperature,
@@ -493,7 +493,7 @@ bool cornerVelocities(const NcFile &f, const Layout &l);
 /// else the tracer cell at the same index. A tracer holding no valid value in the loaded region is not read (a
 /// variable never written). Sets out.tracerVariable, out.tracerPlacement, out.tracerLandNodes, out.cornerGrid.
 /// @throws Error when a given tracer is missing or does not fit u's grid.
-void applyTracerLand(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+void applyTracerLand(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                      const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
 
 // ---- coordinates (NodeCoordinates.cpp) ----
@@ -501,8 +501,8 @@ void applyTracerLand(const NcFile &f, const Layout &l, const HorizontalSubset &h
 /// Sets the node coordinates of g: geographic grids are projected about the reference point (options, else the
 /// region's centre, else the grid's) and their velocities rotated into x/y; Cartesian axes are scaled to
 /// metres. Returns the projection (null in Cartesian mode).
-std::shared_ptr<const LocalProjection> setNodeCoordinates(const NcFile &f, const Layout &l, const HorizontalSubset &h,
+std::shared_ptr<const LocalProjection> setNodeCoordinates(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
                                                           const RegionOfInterest &r, const NetCdfCurrentOptions &opt,
                                                           GriddedData &g);
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

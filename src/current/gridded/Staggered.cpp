@@ -4,16 +4,16 @@
 #include <cmath>
 #include <optional>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
 /// The file indices first - 1, first, ..., last of a contiguous ascending list (the faces around its points).
-std::vector<std::size_t> withFaceBefore(const NcFile &f, const std::vector<std::size_t> &idx, const std::string &what)
+std::vector<std::size_t> withFaceBefore(const GriddedDataset &f, const std::vector<std::size_t> &idx, const std::string &what)
 {
     for (std::size_t k = 1; k < idx.size(); ++k)
         if (idx[k] != idx[k - 1] + 1)
@@ -27,7 +27,7 @@ std::vector<std::size_t> withFaceBefore(const NcFile &f, const std::vector<std::
 
 /// The reads of a velocity variable on its own dimensions: time and depth as in plan, rows yIdx, columns xIdx;
 /// internal order (t, z, y, x) with ny x nx horizontal points.
-std::vector<double> readComponent(const NcFile &f, int var, const Layout &l, const AxisSelection &z,
+std::vector<double> readComponent(const GriddedDataset &f, int var, const Layout &l, const AxisSelection &z,
                                   const AxisSelection &t, const std::vector<std::size_t> &yIdx,
                                   const std::vector<std::size_t> &xIdx)
 {
@@ -64,7 +64,7 @@ std::vector<double> readComponent(const NcFile &f, int var, const Layout &l, con
 
 /// The face mask mask_u / mask_v (>= 0.5 water) on the component's own 2-D dimensions, read at rows x cols;
 /// nullopt when the file has none of that shape.
-std::optional<std::vector<double>> faceMask(const NcFile &f, const char *name, const std::vector<int> &compDims,
+std::optional<std::vector<double>> faceMask(const GriddedDataset &f, const char *name, const std::vector<int> &compDims,
                                             const std::vector<std::size_t> &yIdx, const std::vector<std::size_t> &xIdx)
 {
     const auto v = f.findVar(name);
@@ -80,7 +80,7 @@ std::optional<std::vector<double>> faceMask(const NcFile &f, const char *name, c
 }
 }  // namespace
 
-void readStaggeredVelocities(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+void readStaggeredVelocities(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                              const AxisSelection &t, const LinearConversion &vel, const NetCdfCurrentOptions &opt,
                              GriddedData &g, NetCdfCurrents &out)
 {
@@ -132,7 +132,7 @@ namespace
 {
 /// The angle derived from the loaded nodes' coordinates (Layout::deriveAngle), per node; empty when the grid is not
 /// rotated. @throws Error naming the node when the angle is ambiguous.
-std::vector<double> derivedAngle(const NcFile &f, const Layout &l, const HorizontalSubset &h, NetCdfCurrents &out)
+std::vector<double> derivedAngle(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, NetCdfCurrents &out)
 {
     const std::size_t nx = h.xIdx.size(), ny = h.yIdx.size();
     const DerivedGridAngle a = deriveGridAngle(h.nodeLon, h.nodeLat, nx, ny, l.geographic);
@@ -154,7 +154,7 @@ std::vector<double> derivedAngle(const NcFile &f, const Layout &l, const Horizon
 }
 
 /// The angle of the variable Layout::angleVar, per loaded node, in radians.
-std::vector<double> angleOfVariable(const NcFile &f, const Layout &l, const HorizontalSubset &h, NetCdfCurrents &out)
+std::vector<double> angleOfVariable(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, NetCdfCurrents &out)
 {
     const std::size_t nx = h.xIdx.size(), nh = nx * h.yIdx.size();
     std::vector<double> a(nh);
@@ -173,7 +173,7 @@ std::vector<double> angleOfVariable(const NcFile &f, const Layout &l, const Hori
 }
 }  // namespace
 
-void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSubset &h, GriddedData &g,
+void rotateGridToEastNorth(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, GriddedData &g,
                            NetCdfCurrents &out)
 {
     if (l.angleVar < 0 && !l.deriveAngle)
@@ -197,5 +197,5 @@ void rotateGridToEastNorth(const NcFile &f, const Layout &l, const HorizontalSub
         g.v[idx] = static_cast<float>(u * s + v * c);
     }
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -2,12 +2,12 @@
 // runs is one nc_get_vara read, scattered into the internal (t, z, y, x) order.
 #include <algorithm>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 #include "ompl_glider/ResourceLimits.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 DimRead makeDimRead(const std::vector<std::size_t> &fileIdx)
 {
@@ -66,7 +66,7 @@ bool nextRuns(const std::vector<DimRead> &dims, std::vector<std::size_t> &runIdx
 }
 }  // namespace
 
-void readScatter(const NcFile &f, int var, const std::vector<DimRead> &dims, const std::vector<std::size_t> &stride,
+void readScatter(const GriddedDataset &f, int var, const std::vector<DimRead> &dims, const std::vector<std::size_t> &stride,
                  std::vector<double> &out)
 {
     const std::size_t nd = dims.size();
@@ -101,7 +101,7 @@ double tripBytes(std::size_t ni, std::size_t nj, std::size_t nt, std::size_t nz)
     return values * perValue + nodes * perNode;
 }
 
-void checkTripMemory(const NcFile &f, std::size_t ni, std::size_t nj, std::size_t nt, std::size_t nz)
+void checkTripMemory(const GriddedDataset &f, std::size_t ni, std::size_t nj, std::size_t nt, std::size_t nz)
 {
     checkMemory(tripBytes(ni, nj, nt, nz),
                 "NetCDF file '" + f.path() + "': the trip's region (" + std::to_string(ni) + " x " +
@@ -110,7 +110,7 @@ void checkTripMemory(const NcFile &f, std::size_t ni, std::size_t nj, std::size_
                 "restrict the region or the time window, or use a coarser file");
 }
 
-HyperslabPlan planHyperslab(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+HyperslabPlan planHyperslab(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                             const AxisSelection &t)
 {
     const std::size_t nd = l.dims.size(), nx = h.xIdx.size(), nh = nx * h.yIdx.size(), nz = z.idx.size();
@@ -146,5 +146,5 @@ HyperslabPlan planHyperslab(const NcFile &f, const Layout &l, const HorizontalSu
     }
     return p;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
@@ -21,7 +21,7 @@ struct IndexBox
 
 /// @throws Error when a value of the 2-D coordinate var read as rows rows[] and columns cols[] (row-major) is a
 /// fill value or not finite.
-void checkNodeValues(const NcFile &f, int var, const std::vector<double> &v, const std::vector<std::size_t> &rows,
+void checkNodeValues(const GriddedDataset &f, int var, const std::vector<double> &v, const std::vector<std::size_t> &rows,
                      const std::vector<std::size_t> &cols)
 {
     const std::size_t k = firstFillOrNonFinite(f, var, v);
@@ -40,7 +40,7 @@ std::vector<std::size_t> range(std::size_t a, std::size_t b)
 }
 
 /// Reads the 2-D coordinate var at rows x cols (any order, row-major) and checks its values.
-std::vector<double> readNodes(const NcFile &f, int var, const std::vector<std::size_t> &rows,
+std::vector<double> readNodes(const GriddedDataset &f, int var, const std::vector<std::size_t> &rows,
                               const std::vector<std::size_t> &cols)
 {
     std::vector<double> out(rows.size() * cols.size());
@@ -63,7 +63,7 @@ double nodeDistance(double lon1, double lat1, double lon2, double lat2)
 /// the columns from P on repeating columns 0, 1, ... (P = nx - 1: one repeated column; nx - 2: NEMO's two halo
 /// columns); 0 when the index does not wrap. Decided on the rows where the grid is regular enough to tell (at
 /// least half of them must agree: the rows of a north fold need not).
-std::size_t columnPeriod(const NcFile &f, const Layout &l, std::size_t nx, std::size_t ny)
+std::size_t columnPeriod(const GriddedDataset &f, const Layout &l, std::size_t nx, std::size_t ny)
 {
     if (!l.geographic || nx < 4)
         return 0;
@@ -105,7 +105,7 @@ std::size_t columnPeriod(const NcFile &f, const Layout &l, std::size_t nx, std::
 
 /// Grows the rows [j0, j1] and marks in `used` the columns (below used.size()) of the nodes of rows
 /// [r0, r0 + rows) that lie in the region (+ margin).
-void scanRows(const NcFile &f, const Layout &l, const RegionOfInterest &r, std::size_t r0, std::size_t rows,
+void scanRows(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, std::size_t r0, std::size_t rows,
               std::size_t nx, IndexBox &box, std::vector<char> &used)
 {
     const double cLon = 0.5 * (r.lon0 + r.lon1), m = r.margin;
@@ -164,7 +164,7 @@ std::vector<std::size_t> usedColumns(const std::vector<char> &used, std::size_t 
 
 /// The index box of the nodes in the region, widened by the margin nodes; the whole grid without region. period:
 /// columnPeriod() of the grid (0 for a staggered one).
-IndexBox regionBox(const NcFile &f, const Layout &l, const RegionOfInterest &r, std::size_t period)
+IndexBox regionBox(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, std::size_t period)
 {
     const std::size_t nx = f.dimLen(l.dims[std::size_t(l.dimX)]), ny = f.dimLen(l.dims[std::size_t(l.dimY)]);
     if (!r.given)
@@ -206,7 +206,7 @@ void setCentre(bool geographic, double ref, HorizontalSubset &h)
 }
 }  // namespace
 
-HorizontalSubset curvilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
+HorizontalSubset curvilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
                                    const AxisSelection &t)
 {
     HorizontalSubset h;
@@ -243,5 +243,5 @@ HorizontalSubset curvilinearSubset(const NcFile &f, const Layout &l, const Regio
     setCentre(l.geographic, ref, h);
     return h;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -8,11 +8,11 @@
 #include <set>
 #include <sstream>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 /// Unpacks raw u/v (internal order t, z, y, x) into g.u / g.v and marks land in g.water (per z, y, x), deciding on
 /// the trip's records only (t.inTrip()). Fill values become velocity 0 (a fill in a margin record only reaches
@@ -69,7 +69,7 @@ void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv,
     }
 }
 
-ZeroLandRule zeroLandRule(const NcFile &f, const Layout &l, const HorizontalSubset &h, bool otherLand,
+ZeroLandRule zeroLandRule(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, bool otherLand,
                           bool cornerGrid)
 {
     ZeroLandRule r;
@@ -178,7 +178,7 @@ void GridFit::setHorizontal(const std::vector<std::size_t> &yIdx, const std::vec
             reads[d] = makeDimRead(xIdx);
 }
 
-std::optional<GridFit> fitToGrid(const NcFile &f, const Layout &l, int var, const HorizontalSubset &h,
+std::optional<GridFit> fitToGrid(const GriddedDataset &f, const Layout &l, int var, const HorizontalSubset &h,
                                  const AxisSelection &z, const AxisSelection &t, std::string &why)
 {
     const std::vector<int> md = f.varDims(var);
@@ -272,13 +272,13 @@ struct Mask
     std::set<double> waterFlags;  ///< Flags: the values meaning water
 };
 
-std::string lowerName(const NcFile &f, int var)
+std::string lowerName(const GriddedDataset &f, int var)
 {
     return lower(f.varName(var));
 }
 
 /// The rule of a mask variable from its attributes and name.
-Mask maskOf(const NcFile &f, int var)
+Mask maskOf(const GriddedDataset &f, int var)
 {
     Mask m;
     m.var = var;
@@ -322,7 +322,7 @@ const char *const kMaskNames[] = {"mask_rho", "mask", "tmask", "landmask", "land
                                   "land_sea_mask", "seamask", "sea_mask", "kmu", "kmt"};
 
 /// The mask variable: the given one (which must fit), else the first candidate that fits; -1 for none.
-int findMask(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, const HorizontalSubset &h,
+int findMask(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt, const HorizontalSubset &h,
              const AxisSelection &z, const AxisSelection &t, std::optional<GridFit> &dims)
 {
     std::string why;
@@ -373,7 +373,7 @@ int findMask(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, 
 }
 }  // namespace
 
-void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
+void readVelocities(const GriddedDataset &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
                     const LinearConversion &vel, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
 {
     const std::size_t total = g.time.size() * g.depth.size() * g.ny * g.nx;
@@ -384,7 +384,7 @@ void readVelocities(const NcFile &f, const Layout &l, const HyperslabPlan &plan,
     unpackAndMask(ru, rv, pu, pv, vel, opt.zeroVelocityLand, t, g, out);
 }
 
-void applyLandMask(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+void applyLandMask(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                    const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
 {
     std::optional<GridFit> dims;
@@ -495,5 +495,5 @@ void averageOverDepth(double top, double bottom, GriddedData &g)
     g.water = std::move(water);
     g.depth = {top};
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -4,19 +4,19 @@
 #include <algorithm>
 #include <cmath>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 #include "ompl_glider/ResourceLimits.h"
 #include "ompl_glider/io/GeoBox.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
 /// Reads the 1-D axis var after the memory check of both axes. @throws Error for fill values, non-finite numbers
 /// or values that are not strictly monotonic (longitudes: also across one seam, returned unwrapped).
-std::vector<double> readAxis(const NcFile &f, int var, bool longitude)
+std::vector<double> readAxis(const GriddedDataset &f, int var, bool longitude)
 {
     std::vector<double> raw = f.readAll1D(var);
     checkAxisValues(f, var, raw, "coordinate");
@@ -27,7 +27,7 @@ std::vector<double> readAxis(const NcFile &f, int var, bool longitude)
 }
 
 /// The x and y axes (the memory they need checked first: the value, a copy and an index each).
-void readAxes(const NcFile &f, const Layout &l, std::vector<double> &xs, std::vector<double> &ys)
+void readAxes(const GriddedDataset &f, const Layout &l, std::vector<double> &xs, std::vector<double> &ys)
 {
     const int xv = l.coordVar[std::size_t(l.dimX)], yv = l.coordVar[std::size_t(l.dimY)];
     const std::size_t nx = f.dimLen(l.dims[std::size_t(l.dimX)]), ny = f.dimLen(l.dims[std::size_t(l.dimY)]);
@@ -40,7 +40,7 @@ void readAxes(const NcFile &f, const Layout &l, std::vector<double> &xs, std::ve
 }
 
 /// y: the range covering the region (all without region), stored ascending.
-void subsetY(const NcFile &f, const Layout &l, const RegionOfInterest &r, const std::vector<double> &ys,
+void subsetY(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, const std::vector<double> &ys,
              HorizontalSubset &h)
 {
     std::size_t ya = 0, yb = ys.size() - 1;
@@ -107,7 +107,7 @@ AscendingX ascendingX(const std::vector<double> &xs, bool geographic)
 
 /// x of a non-cyclic axis: the range covering the region, the region shifted by whole turns into the axis's
 /// convention (0..360 or -180..180) when geographic.
-void subsetXLinear(const NcFile &f, const Layout &l, const RegionOfInterest &r, const AscendingX &x,
+void subsetXLinear(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, const AscendingX &x,
                    HorizontalSubset &h)
 {
     const std::vector<double> &xa = x.xa;
@@ -135,7 +135,7 @@ void subsetXLinear(const NcFile &f, const Layout &l, const RegionOfInterest &r, 
 
 /// x of a cyclic (global) longitude axis: virtual index v, file position v mod n, value xa[v mod n] + 360
 /// floor(v / n), so that a region across the seam is one increasing run.
-void subsetXCyclic(const NcFile &f, const Layout &l, const RegionOfInterest &r, const AscendingX &x,
+void subsetXCyclic(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, const AscendingX &x,
                    HorizontalSubset &h)
 {
     const std::vector<double> &xa = x.xa;
@@ -161,7 +161,7 @@ void subsetXCyclic(const NcFile &f, const Layout &l, const RegionOfInterest &r, 
 }
 }  // namespace
 
-HorizontalSubset rectilinearSubset(const NcFile &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
+HorizontalSubset rectilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
                                    const AxisSelection &t)
 {
     HorizontalSubset h;
@@ -192,5 +192,5 @@ HorizontalSubset rectilinearSubset(const NcFile &f, const Layout &l, const Regio
     h.centreLat = 0.5 * (h.latLo + h.latHi);
     return h;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

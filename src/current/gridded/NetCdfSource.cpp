@@ -1,5 +1,5 @@
 // The NetCDF reader as a gridded source of the registry (ForecastSource.h): files, a forecast in several files,
-// OPeNDAP datasets, and the Zarr stores and GRIB files that NcFile reads through GDAL. The request becomes the
+// OPeNDAP datasets, and the Zarr stores and GRIB files that GriddedDataset reads through GDAL. The request becomes the
 // reader's options; the reader's messages name the settings in the caller's words.
 #include <algorithm>
 #include <cctype>

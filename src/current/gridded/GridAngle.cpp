@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
@@ -125,5 +125,5 @@ std::string gridAngleNote(const DerivedGridAngle &a, const std::string &coordina
     return "derived from " + coordinates + ": the grid's i direction " + text::number(a.minDegrees, 4) + ".." +
            text::number(a.maxDegrees, 4) + " degrees counter-clockwise from east";
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

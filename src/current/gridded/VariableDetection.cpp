@@ -2,65 +2,64 @@
 // units, then usual names).
 #include <algorithm>
 
-#include "NetCdfInternal.h"
-#include "../../io/NetCdfLock.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
-std::string stdName(const NcFile &f, int var)
+std::string stdName(const GriddedDataset &f, int var)
 {
     return lower(f.attText(var, "standard_name").value_or(""));
 }
 
-std::string unitsOf(const NcFile &f, int var)
+std::string unitsOf(const GriddedDataset &f, int var)
 {
     return f.attText(var, "units").value_or("");
 }
 
 namespace
 {
-std::string axisOf(const NcFile &f, int var)
+std::string axisOf(const GriddedDataset &f, int var)
 {
     return lower(f.attText(var, "axis").value_or(""));
 }
 }  // namespace
 
-bool isLonVar(const NcFile &f, int var)
+bool isLonVar(const GriddedDataset &f, int var)
 {
     const std::string u = lower(unitsOf(f, var)), sn = stdName(f, var), n = lower(f.varName(var));
     return inList(u, {"degrees_east", "degree_east", "degrees_e", "degree_e", "degreese", "degreee"}) ||
            sn == "longitude" || inList(n, {"lon", "longitude", "nav_lon", "glamt", "tlong", "lon_rho", "longitudes"});
 }
 
-bool isLatVar(const NcFile &f, int var)
+bool isLatVar(const GriddedDataset &f, int var)
 {
     const std::string u = lower(unitsOf(f, var)), sn = stdName(f, var), n = lower(f.varName(var));
     return inList(u, {"degrees_north", "degree_north", "degrees_n", "degree_n", "degreesn", "degreen"}) ||
            sn == "latitude" || inList(n, {"lat", "latitude", "nav_lat", "gphit", "tlat", "lat_rho", "latitudes"});
 }
 
-bool isXVar(const NcFile &f, int var)
+bool isXVar(const GriddedDataset &f, int var)
 {
     const std::string sn = stdName(f, var), n = lower(f.varName(var));
     return sn == "projection_x_coordinate" || axisOf(f, var) == "x" || inList(n, {"x", "xc", "x_rho", "easting"});
 }
 
-bool isYVar(const NcFile &f, int var)
+bool isYVar(const GriddedDataset &f, int var)
 {
     const std::string sn = stdName(f, var), n = lower(f.varName(var));
     return sn == "projection_y_coordinate" || axisOf(f, var) == "y" || inList(n, {"y", "yc", "y_rho", "northing"});
 }
 
-bool isTimeVar(const NcFile &f, int var)
+bool isTimeVar(const GriddedDataset &f, int var)
 {
     const std::string u = lower(unitsOf(f, var)), sn = stdName(f, var), n = lower(f.varName(var));
     return u.find(" since ") != std::string::npos || sn == "time" || axisOf(f, var) == "t" ||
            inList(n, {"time", "t", "time_counter", "ocean_time", "valid_time", "mt"});
 }
 
-bool isDepthVar(const NcFile &f, int var)
+bool isDepthVar(const GriddedDataset &f, int var)
 {
     const std::string sn = stdName(f, var), n = lower(f.varName(var));
     return sn == "depth" || axisOf(f, var) == "z" || f.attText(var, "positive") ||
@@ -70,7 +69,7 @@ bool isDepthVar(const NcFile &f, int var)
 namespace
 {
 /// "name(dim,dim,...) [units]" of every variable with 2 or more dimensions: what the user may mean by u and v.
-std::string candidateList(const NcFile &f)
+std::string candidateList(const GriddedDataset &f)
 {
     std::string out;
     for (int var = 0; var < f.nvars(); ++var)
@@ -91,26 +90,18 @@ std::string candidateList(const NcFile &f)
 
 /// A NetCDF-4 file whose variables lie in groups: only the root group is read, so a velocity not found there is
 /// refused naming the groups (not as a missing variable). "" without groups.
-std::string groupNote(const NcFile &f)
+std::string groupNote(const GriddedDataset &f)
 {
-    const NetCdfLock lock;  // every NetCDF-C call under the process's one lock
-    int n = 0;
-    if (nc_inq_grps(f.id(), &n, nullptr) != NC_NOERR || n <= 0)
-        return "";
-    std::vector<int> ids(static_cast<std::size_t>(n));
-    nc_inq_grps(f.id(), &n, ids.data());
     std::string names;
-    for (int g : ids)
-    {
-        char name[NC_MAX_NAME + 1] = {0};
-        nc_inq_grpname(g, name);
-        names += (names.empty() ? "'" : ", '") + std::string(name) + "'";
-    }
+    for (const std::string &name : f.groupNames())
+        names += (names.empty() ? "'" : ", '") + name + "'";
+    if (names.empty())
+        return "";
     return "the velocities are not in the root group, and the file has NetCDF-4 groups (" + names +
            "): only the root group is read; copy the group's variables out first (nccopy -G or ncks -G : -g NAME)";
 }
 
-int findVelocity(const NcFile &f, const std::string &given, bool east, const std::string &optionName)
+int findVelocity(const GriddedDataset &f, const std::string &given, bool east, const std::string &optionName)
 {
     const std::string groups = groupNote(f);
     if (!given.empty())
@@ -183,7 +174,7 @@ namespace
 {
 /// A coordinate variable named in the options: its dimension gets the role (2-D coordinates are left to the
 /// curvilinear grid).
-void assignGiven(const NcFile &f, const std::string &name, Role r, const std::string &uName, DimensionRoles &dr)
+void assignGiven(const GriddedDataset &f, const std::string &name, Role r, const std::string &uName, DimensionRoles &dr)
 {
     if (name.empty())
         return;
@@ -204,7 +195,7 @@ void assignGiven(const NcFile &f, const std::string &name, Role r, const std::st
 }
 
 /// The role of a 1-D coordinate variable from its attributes and name (time first).
-Role roleOf(const NcFile &f, int cv, CoordinateMode mode, bool &geoAxes, bool &cartAxes)
+Role roleOf(const GriddedDataset &f, int cv, CoordinateMode mode, bool &geoAxes, bool &cartAxes)
 {
     const bool cartesian = mode == CoordinateMode::Cartesian;
     if (isTimeVar(f, cv))
@@ -223,7 +214,7 @@ Role roleOf(const NcFile &f, int cv, CoordinateMode mode, bool &geoAxes, bool &c
 }
 
 /// Dimensions not named in the options, classified by their coordinate variable (same name, 1-D on it).
-void assignDetected(const NcFile &f, CoordinateMode mode, const std::string &uName, DimensionRoles &dr)
+void assignDetected(const GriddedDataset &f, CoordinateMode mode, const std::string &uName, DimensionRoles &dr)
 {
     for (std::size_t d = 0; d < dr.dims.size(); ++d)
     {
@@ -245,7 +236,7 @@ void assignDetected(const NcFile &f, CoordinateMode mode, const std::string &uNa
 }
 
 /// Axes named by the user: geographic when their attributes say degrees, else Cartesian.
-void markNamedAxes(const NcFile &f, const NetCdfCurrentOptions &opt, DimensionRoles &dr)
+void markNamedAxes(const GriddedDataset &f, const NetCdfCurrentOptions &opt, DimensionRoles &dr)
 {
     for (std::size_t d = 0; d < dr.dims.size(); ++d)
     {
@@ -259,7 +250,7 @@ void markNamedAxes(const NcFile &f, const NetCdfCurrentOptions &opt, DimensionRo
 }
 }  // namespace
 
-DimensionRoles classifyDimensions(const NcFile &f, const NetCdfCurrentOptions &opt, int uVar)
+DimensionRoles classifyDimensions(const GriddedDataset &f, const NetCdfCurrentOptions &opt, int uVar)
 {
     DimensionRoles dr;
     dr.dims = f.varDims(uVar);
@@ -278,5 +269,5 @@ DimensionRoles classifyDimensions(const NcFile &f, const NetCdfCurrentOptions &o
                           "with NetCdfCurrentOptions::timeName/depthName/lonName/latName");
     return dr;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -4,16 +4,16 @@
 #include <cmath>
 #include <sstream>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
 /// u and v, with the same 2 to 4 dimensions.
-void findVelocities(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
+void findVelocities(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Layout &l)
 {
     l.uVar = findVelocity(f, opt.uName, true, "uName");
     l.vVar = findVelocity(f, opt.vName, false, "vName");
@@ -34,7 +34,7 @@ void findVelocities(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
 }
 
 /// Candidate 2-D coordinate variables on (j, i): those of u's `coordinates` attribute first, then all.
-std::vector<int> curvilinearCandidates(const NcFile &f, int uVar, const std::vector<int> &want)
+std::vector<int> curvilinearCandidates(const GriddedDataset &f, int uVar, const std::vector<int> &want)
 {
     std::vector<int> cands;
     auto consider = [&](int var) {
@@ -55,7 +55,7 @@ std::vector<int> curvilinearCandidates(const NcFile &f, int uVar, const std::vec
 }
 
 /// The 2-D longitude/latitude (x/y in Cartesian mode) variables of a curvilinear grid on (j, i) = want.
-void findCurvilinearCoordinates(const NcFile &f, const NetCdfCurrentOptions &opt, const std::vector<int> &want,
+void findCurvilinearCoordinates(const GriddedDataset &f, const NetCdfCurrentOptions &opt, const std::vector<int> &want,
                                 Layout &l)
 {
     const bool cartesian = opt.coordinates == CoordinateMode::Cartesian;
@@ -80,7 +80,7 @@ void findCurvilinearCoordinates(const NcFile &f, const NetCdfCurrentOptions &opt
 }
 
 /// The describing text "name = length" of a dimension.
-std::string dimText(const NcFile &f, int dim)
+std::string dimText(const GriddedDataset &f, int dim)
 {
     return f.dimName(dim) + " = " + std::to_string(f.dimLen(dim));
 }
@@ -88,7 +88,7 @@ std::string dimText(const NcFile &f, int dim)
 /// The rho (cell centre) dimensions (eta_rho, xi_rho) of a ROMS-like C grid: u on (eta_u, xi_u) with
 /// eta_u = eta_rho and xi_u = xi_rho - 1, v on (eta_v, xi_v) with eta_v = eta_rho - 1 and xi_v = xi_rho; found
 /// from the 2-D longitude/latitude (x/y) variables of that shape. @throws Error when the staggering is another.
-std::vector<int> rhoDimensions(const NcFile &f, const NetCdfCurrentOptions &opt, const Layout &l)
+std::vector<int> rhoDimensions(const GriddedDataset &f, const NetCdfCurrentOptions &opt, const Layout &l)
 {
     const std::size_t n = l.uDims.size();
     const int ueta = l.uDims[n - 2], uxi = l.uDims[n - 1], veta = l.vDims[n - 2], vxi = l.vDims[n - 1];
@@ -112,7 +112,7 @@ std::vector<int> rhoDimensions(const NcFile &f, const NetCdfCurrentOptions &opt,
 /// The grid angle variable: the given one (which must be 2-D on the grid), else one named "angle" on the grid,
 /// unless u is named eastward; its unit (radians or degrees). -1 when none: then a curvilinear grid's angle is
 /// derived from its coordinates (Layout::deriveAngle) unless u is named eastward or the angle is "none".
-void findAngle(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
+void findAngle(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Layout &l)
 {
     const std::vector<int> grid = {l.dims[std::size_t(l.dimY)], l.dims[std::size_t(l.dimX)]};
     if (lower(opt.angleName) == "none")
@@ -169,7 +169,7 @@ void findAngle(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l)
 
 /// Without 1-D x/y axes: the two remaining dimensions of length > 1 are (j, i) in file order, with 2-D
 /// coordinates. Updates the roles and geoAxes/cartAxes.
-void makeCurvilinear(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l, bool &geoAxes, bool &cartAxes)
+void makeCurvilinear(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Layout &l, bool &geoAxes, bool &cartAxes)
 {
     std::vector<int> rest;
     for (std::size_t d = 0; d < l.dims.size(); ++d)
@@ -197,7 +197,7 @@ void makeCurvilinear(const NcFile &f, const NetCdfCurrentOptions &opt, Layout &l
 
 /// @throws Error when a dimension of the velocities has length 0 (an UNLIMITED dimension without records, say):
 /// naming its coordinate variable when it has one.
-void checkNoEmptyDimension(const NcFile &f, const Layout &l)
+void checkNoEmptyDimension(const GriddedDataset &f, const Layout &l)
 {
     for (std::size_t d = 0; d < l.dims.size(); ++d)
     {
@@ -212,7 +212,7 @@ void checkNoEmptyDimension(const NcFile &f, const Layout &l)
 }
 
 /// Geographic or Cartesian, from the options and what the axes looked like.
-bool decideGeographic(const NcFile &f, const NetCdfCurrentOptions &opt, const Layout &l, bool geoAxes,
+bool decideGeographic(const GriddedDataset &f, const NetCdfCurrentOptions &opt, const Layout &l, bool geoAxes,
                       bool cartAxes)
 {
     if (opt.coordinates == CoordinateMode::Geographic)
@@ -228,7 +228,7 @@ bool decideGeographic(const NcFile &f, const NetCdfCurrentOptions &opt, const La
 }
 }  // namespace
 
-Layout detectLayout(const NcFile &f, const NetCdfCurrentOptions &opt)
+Layout detectLayout(const GriddedDataset &f, const NetCdfCurrentOptions &opt)
 {
     Layout l;
     findVelocities(f, opt, l);
@@ -259,5 +259,5 @@ Layout detectLayout(const NcFile &f, const NetCdfCurrentOptions &opt)
     findAngle(f, opt, l);
     return l;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -4,14 +4,14 @@
 #include <cmath>
 #include <sstream>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 
-std::size_t firstFillOrNonFinite(const NcFile &f, int var, const std::vector<double> &values)
+std::size_t firstFillOrNonFinite(const GriddedDataset &f, int var, const std::vector<double> &values)
 {
     const Packing p = packingOf(f, var);
     for (std::size_t k = 0; k < values.size(); ++k)
@@ -20,7 +20,7 @@ std::size_t firstFillOrNonFinite(const NcFile &f, int var, const std::vector<dou
     return values.size();
 }
 
-void checkAxisValues(const NcFile &f, int var, const std::vector<double> &values, const std::string &kind)
+void checkAxisValues(const GriddedDataset &f, int var, const std::vector<double> &values, const std::string &kind)
 {
     const std::size_t k = firstFillOrNonFinite(f, var, values);
     if (k < values.size())
@@ -39,7 +39,7 @@ std::size_t monotonicBreak(const std::vector<double> &values)
     return values.size();
 }
 
-void checkStrictlyMonotonic(const NcFile &f, const std::vector<double> &values, const std::vector<double> &shown,
+void checkStrictlyMonotonic(const GriddedDataset &f, const std::vector<double> &values, const std::vector<double> &shown,
                             const std::string &kind, const std::string &name)
 {
     const std::size_t k = monotonicBreak(values);
@@ -98,7 +98,7 @@ std::string nodeText(const HorizontalSubset &h, std::size_t n)
 }
 }  // namespace
 
-void checkCurvilinearNodes(const NcFile &f, const Layout &l, const HorizontalSubset &h)
+void checkCurvilinearNodes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h)
 {
     const std::size_t nx = h.xIdx.size(), ny = h.yIdx.size();
     const std::string who = "curvilinear coordinates '" + l.xName + "'/'" + l.yName + "' are not strictly monotonic: ";
@@ -124,5 +124,5 @@ void checkCurvilinearNodes(const NcFile &f, const Layout &l, const HorizontalSub
                               " is folded or degenerate (its orientation differs from the first cell's)");
         }
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

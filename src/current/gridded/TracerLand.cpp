@@ -1,16 +1,16 @@
 // Land from a tracer: where a model's temperature or salinity holds its missing value, the model has no ocean. On a
 // B grid (POP, MOM) the velocity points are the corners of the tracer cells, and a velocity point is land when any
 // of the four tracer cells around it is: the model itself holds the velocity there at zero. The rules are
-// documented at applyTracerLand() (NetCdfInternal.h) and loadNetCdfCurrents() (NetCdfCurrents.h).
+// documented at applyTracerLand() (GriddedInternal.h) and loadNetCdfCurrents() (NetCdfCurrents.h).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
@@ -21,7 +21,7 @@ const char *const kTracerNames[] = {"temp",     "t",        "salt",       "theta
                                     "so",       "votemper", "vosaline",   "water_temp", "salinity"};
 
 /// The tracer variable: the given one (which must fit), else the first candidate that fits; -1 for none.
-int findTracer(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, const HorizontalSubset &h,
+int findTracer(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt, const HorizontalSubset &h,
                const AxisSelection &z, const AxisSelection &t, std::optional<GridFit> &fit)
 {
     std::string why;
@@ -64,7 +64,7 @@ std::pair<int, int> velocityCoordinates(const Layout &l)
 
 /// The tracer's own longitude/latitude (x/y) variables: from its `coordinates` attribute (variables on its
 /// horizontal dimensions), else the 1-D coordinate variables of its horizontal dimensions; -1 where none.
-std::pair<int, int> tracerCoordinates(const NcFile &f, const Layout &l, int var, const GridFit &fit)
+std::pair<int, int> tracerCoordinates(const GriddedDataset &f, const Layout &l, int var, const GridFit &fit)
 {
     const std::vector<int> dims = f.varDims(var);
     std::vector<int> horizontal;
@@ -107,7 +107,7 @@ std::pair<int, int> tracerCoordinates(const NcFile &f, const Layout &l, int var,
 }
 
 /// Value of coordinate variable c (1-D on the tracer's y or x dimension, or 2-D on both) at file row j, column i.
-double coordinateAt(const NcFile &f, int c, int yDim, std::size_t j, std::size_t i)
+double coordinateAt(const GriddedDataset &f, int c, int yDim, std::size_t j, std::size_t i)
 {
     const std::vector<int> cd = f.varDims(c);
     std::vector<double> v(1);
@@ -129,7 +129,7 @@ enum class Corner
 /// Where velocity point (j, i) lies relative to the tracer points, from their coordinates at up to 9 loaded nodes:
 /// the offset (a, b) of the velocity point from tracer point (j, i) in steps of the tracer grid's i and j; NorthEast
 /// when every node gives (1/2, 1/2), SouthWest for (-1/2, -1/2), else Same.
-Corner measuredCorner(const NcFile &f, const Layout &l, int var, const GridFit &fit, const HorizontalSubset &h,
+Corner measuredCorner(const GriddedDataset &f, const Layout &l, int var, const GridFit &fit, const HorizontalSubset &h,
                       int tLon, int tLat)
 {
     const std::vector<int> dims = f.varDims(var);
@@ -191,7 +191,7 @@ std::size_t neighbour(std::size_t k, int d, std::size_t n, std::size_t p)
 }
 }  // namespace
 
-bool cornerVelocities(const NcFile &f, const Layout &l)
+bool cornerVelocities(const GriddedDataset &f, const Layout &l)
 {
     if (l.staggered)
         return false;
@@ -209,7 +209,7 @@ bool cornerVelocities(const NcFile &f, const Layout &l)
     return false;
 }
 
-void applyTracerLand(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
+void applyTracerLand(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
                      const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
 {
     out.cornerGrid = cornerVelocities(f, l);
@@ -293,5 +293,5 @@ void applyTracerLand(const NcFile &f, const Layout &l, const HorizontalSubset &h
         }
     out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

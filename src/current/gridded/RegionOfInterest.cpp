@@ -2,11 +2,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 RegionOfInterest regionOfInterest(const NetCdfCurrentOptions &opt, bool geographic)
 {
@@ -70,5 +70,5 @@ double wrapTo(double lon, double centre)
         d += 360.0;
     return centre + d - 180.0;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -15,7 +15,7 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
@@ -29,7 +29,7 @@ struct FileTimes
 /// The time axis of the velocities of one file, found as readNetCdfTimeAxis() finds it; it must be dated.
 FileTimes readFileTimes(const std::string &path, const NetCdfCurrentOptions &opt)
 {
-    NcFile f(path);
+    GriddedDataset f(path);
     const int uVar = findVelocity(f, opt.uName, true, "uName");
     const DimensionRoles dr = classifyDimensions(f, opt, uVar);
     const int dimT = dr.find(Role::Time);
@@ -218,7 +218,7 @@ bool isPacked(const ForecastPiece &p)
 }
 
 }  // namespace
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 
 bool netCdfIsGeographic(const std::vector<std::string> &paths, const NetCdfCurrentOptions &options)
 {
@@ -240,7 +240,7 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::vector<std::string> &paths, const N
         throw Error("NetCDF forecast: no file given");
     if (paths.size() == 1)
         return readNetCdfTimeAxis(paths.front(), options);
-    const netcdf_detail::JoinedAxis a = netcdf_detail::joinTimeAxes(paths, options);
+    const gridded_detail::JoinedAxis a = gridded_detail::joinTimeAxes(paths, options);
     NetCdfTimeAxis axis;
     axis.found = true;
     axis.steady = false;
@@ -255,7 +255,7 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::vector<std::string> &paths, const N
 
 NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const NetCdfCurrentOptions &opt)
 {
-    using namespace netcdf_detail;
+    using namespace gridded_detail;
     if (paths.empty())
         throw Error("NetCDF forecast: no file given");
     if (paths.size() == 1)

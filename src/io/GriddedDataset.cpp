@@ -1,7 +1,9 @@
-// The open NetCDF file and its queries (see NcFile.h).
-#include "NcFile.h"
+// The open gridded dataset and its queries (see GriddedDataset.h), and NetCDF-C's reader of files, in-memory datasets
+// and OPeNDAP URLs: the one place that holds a NetCDF id.
+#include "GriddedDataset.h"
 
 #include <hdf5.h>
+#include <netcdf.h>
 #include <netcdf_mem.h>
 
 #include "Dataset.h"
@@ -17,7 +19,7 @@
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
@@ -82,10 +84,6 @@ public:
     {
         return remote_ ? remote_->who() : "NetCDF file '" + path_ + "'";
     }
-    int netcdfId() const override
-    {
-        return id_;
-    }
     int nvars() const override
     {
         const NetCdfLock lock;
@@ -132,12 +130,12 @@ public:
             check(nc_inq_vardimid(id_, var, d.data()), "inquire dimensions of '" + varName(var) + "'");
         return d;
     }
-    nc_type varType(int var) const override
+    ValueType varType(int var) const override
     {
         const NetCdfLock lock;
         nc_type t;
         check(nc_inq_vartype(id_, var, &t), "inquire type of '" + varName(var) + "'");
-        return t;
+        return valueTypeOf(t);
     }
     std::optional<std::string> attText(int var, const char *name) const override
     {
@@ -191,7 +189,54 @@ public:
                   "read variable '" + varName(var) + "'");
     }
 
+    std::vector<std::string> groupNames() const override
+    {
+        const NetCdfLock lock;
+        int n = 0;
+        if (nc_inq_grps(id_, &n, nullptr) != NC_NOERR || n <= 0)
+            return {};
+        std::vector<int> ids(static_cast<std::size_t>(n));
+        nc_inq_grps(id_, &n, ids.data());
+        std::vector<std::string> names;
+        for (int g : ids)
+        {
+            char name[NC_MAX_NAME + 1] = {0};
+            nc_inq_grpname(g, name);
+            names.emplace_back(name);
+        }
+        return names;
+    }
+    std::string readChars(int var) const override
+    {
+        const NetCdfLock lock;
+        std::size_t n = 1;
+        for (int d : varDims(var))
+            n *= dimLen(d);
+        std::vector<char> chars(n + 1, '\0');
+        check(nc_get_var_text(id_, var, chars.data()), "read '" + varName(var) + "'");
+        return std::string(chars.data(), n);
+    }
+
 private:
+    static ValueType valueTypeOf(nc_type t)
+    {
+        switch (t)
+        {
+            case NC_BYTE: return ValueType::Byte;
+            case NC_UBYTE: return ValueType::UByte;
+            case NC_SHORT: return ValueType::Short;
+            case NC_USHORT: return ValueType::UShort;
+            case NC_INT: return ValueType::Int;
+            case NC_UINT: return ValueType::UInt;
+            case NC_INT64: return ValueType::Int64;
+            case NC_UINT64: return ValueType::UInt64;
+            case NC_FLOAT: return ValueType::Float;
+            case NC_DOUBLE: return ValueType::Double;
+            case NC_CHAR: return ValueType::Char;
+            case NC_STRING: return ValueType::String;
+            default: return ValueType::Other;
+        }
+    }
     void check(int status, const std::string &what) const
     {
         const NetCdfLock lock;
@@ -206,7 +251,7 @@ private:
 };
 }  // namespace
 
-NcFile::NcFile(const std::string &path) : path_(path)
+GriddedDataset::GriddedDataset(const std::string &path) : path_(path)
 {
 #if OMPL_GLIDER_WITH_MISSION
     if (isGdalSource(path))
@@ -218,87 +263,85 @@ NcFile::NcFile(const std::string &path) : path_(path)
     data_ = std::make_shared<NetCdfDataset>(path);
 }
 
-NcFile::~NcFile() = default;
+GriddedDataset::~GriddedDataset() = default;
 
-int NcFile::id() const
-{
-    return data_->netcdfId();
-}
-
-Error NcFile::error(const std::string &what) const
+Error GriddedDataset::error(const std::string &what) const
 {
     return Error(data_->who() + ": " + what);
 }
 
-Error NcFile::error(const std::string &what, const std::string &field) const
+Error GriddedDataset::error(const std::string &what, const std::string &field) const
 {
     return Error(data_->who() + ": " + what, field);
 }
 
-void NcFile::check(int status, const std::string &what) const
-{
-    const NetCdfLock lock;
-    if (status != NC_NOERR)
-        throw error(what + ": " + nc_strerror(status));
-}
-
-std::string NcFile::unreadable() const
+std::string GriddedDataset::unreadable() const
 {
     return data_->unreadable();
 }
 
-int NcFile::nvars() const
+std::vector<std::string> GriddedDataset::groupNames() const
+{
+    return data_->groupNames();
+}
+
+std::string GriddedDataset::readChars(int var) const
+{
+    return data_->readChars(var);
+}
+
+int GriddedDataset::nvars() const
 {
     return data_->nvars();
 }
 
-std::string NcFile::varName(int var) const
+std::string GriddedDataset::varName(int var) const
 {
     return data_->varName(var);
 }
 
-std::string NcFile::dimName(int dim) const
+std::string GriddedDataset::dimName(int dim) const
 {
     return data_->dimName(dim);
 }
 
-std::size_t NcFile::dimLen(int dim) const
+std::size_t GriddedDataset::dimLen(int dim) const
 {
     return data_->dimLen(dim);
 }
 
-std::optional<int> NcFile::findVar(const std::string &name) const
+std::optional<int> GriddedDataset::findVar(const std::string &name) const
 {
     return data_->findVar(name);
 }
 
-std::vector<int> NcFile::varDims(int var) const
+std::vector<int> GriddedDataset::varDims(int var) const
 {
     return data_->varDims(var);
 }
 
-nc_type NcFile::varType(int var) const
+ValueType GriddedDataset::varType(int var) const
 {
     return data_->varType(var);
 }
 
-std::optional<std::string> NcFile::attText(int var, const char *name) const
+std::optional<std::string> GriddedDataset::attText(int var, const char *name) const
 {
     return data_->attText(var, name);
 }
 
-std::vector<double> NcFile::attDoubles(int var, const char *name) const
+std::vector<double> GriddedDataset::attDoubles(int var, const char *name) const
 {
     bool isText = false;
     std::vector<double> v = data_->attDoubles(var, name, isText);
     if (isText)  // CF: these attributes are numbers; text would be ignored
-        throw error((var == NC_GLOBAL ? std::string("global") : "variable '" + varName(var) + "':") +
+        throw error((var == kGlobalAttributes ? std::string("global") : "variable '" + varName(var) + "':") +
                     " attribute '" + name + "' is text ('" + attText(var, name).value_or("") +
                     "'); it must be numeric");
     return v;
 }
 
-std::vector<double> NcFile::readAll1D(int var) const
+std::vector<double> GriddedDataset::readAll1D(int var) const
 {
     const std::vector<int> d = varDims(var);
     std::size_t n = 1;
@@ -315,10 +358,10 @@ std::vector<double> NcFile::readAll1D(int var) const
     return v;
 }
 
-void NcFile::readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
+void GriddedDataset::readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
                        double *out) const
 {
     data_->readBlock(var, start, count, out);
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

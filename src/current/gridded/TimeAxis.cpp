@@ -5,11 +5,11 @@
 #include <functional>
 
 #include "ForecastFiles.h"
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
@@ -40,7 +40,7 @@ std::string undatedMessage(const std::string &tn, const std::string &units)
 }
 }  // namespace
 
-TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated, const std::string &unitsOverride)
+TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, const std::string &unitsOverride)
 {
     TimeValues out;
     out.name = f.varName(tv);
@@ -93,7 +93,7 @@ TimeValues readTimeValues(const NcFile &f, int tv, bool allowUndated, const std:
     return out;
 }
 
-std::optional<SteadyRecord> steadyRecordOf(const NcFile &f, int timeDim, int tv, const NetCdfCurrentOptions &opt)
+std::optional<SteadyRecord> steadyRecordOf(const GriddedDataset &f, int timeDim, int tv, const NetCdfCurrentOptions &opt)
 {
     if (!opt.steadyRecord)
         return std::nullopt;
@@ -161,13 +161,13 @@ double departureOf(const std::function<Error(const std::string &)> &error, const
 }
 
 /// The errors of one file.
-std::function<Error(const std::string &)> fileErrors(const NcFile &f)
+std::function<Error(const std::string &)> fileErrors(const GriddedDataset &f)
 {
     return [&f](const std::string &what) { return f.error(what); };
 }
 }  // namespace
 
-AxisSelection selectTimes(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt, NetCdfCurrents &out)
+AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt, NetCdfCurrents &out)
 {
     AxisSelection s;
     if (l.dimT < 0)
@@ -247,12 +247,12 @@ AxisSelection selectForecastTimes(const std::vector<double> &ts, const std::stri
     }
     return s;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 
 NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const NetCdfCurrentOptions &options)
 {
-    using namespace netcdf_detail;
-    NcFile f(path);
+    using namespace gridded_detail;
+    GriddedDataset f(path);
     const int uVar = findVelocity(f, options.uName, true, "uName");
     const DimensionRoles dr = classifyDimensions(f, options, uVar);
     NetCdfTimeAxis axis;

@@ -1,13 +1,12 @@
 #pragma once
-/// @file NcFile.h
-/// @brief Internal to the library (not installed): the open NetCDF file of every NetCDF reader (the forecasts of
-/// current/netcdf/, the bathymetry of io/NetCdfBathymetry.cpp), its queries whose errors name the file, and the size
-/// check of classic-format files done before NetCDF-C opens one.
+/// @file GriddedDataset.h
+/// @brief Internal to the library (not installed): the open gridded dataset of every gridded reader (the forecasts of
+/// current/gridded/, the bathymetry of io/NetCdfBathymetry.cpp, a glider's NetCDF observations), whatever reads it
+/// (a NetCDF file, an OPeNDAP URL, a dataset in memory, a Zarr store, a GRIB file), its queries whose errors name it,
+/// and the size check of classic-format NetCDF files done before NetCDF-C opens one.
 ///
-///  - NcFile.cpp       the open file, attribute/variable queries, errors that name the file
-///  - ClassicSize.cpp  the size a classic-format file must have, from its header (refuses truncated files)
-
-#include <netcdf.h>
+///  - GriddedDataset.cpp  the open dataset, attribute/variable queries, errors that name it; NetCDF-C's reader
+///  - ClassicSize.cpp     the size a classic-format file must have, from its header (refuses truncated files)
 
 #include <cstddef>
 #include <cstdint>
@@ -17,20 +16,19 @@
 #include <string>
 #include <vector>
 
+#include "Dataset.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/RemoteSource.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
-// ---- the open file (NcFile.cpp) ----
+// ---- the open dataset (GriddedDataset.cpp) ----
 
-/// The open file, closed on scope exit; its queries throw Errors that name the file. What reads it is a Dataset
+/// The open dataset, closed on scope exit; its queries throw Errors that name it. What reads it is a Dataset
 /// (Dataset.h): NetCDF-C's, or GDAL's (GdalGrid).
-class Dataset;
-
-class NcFile
+class GriddedDataset
 {
 public:
     /// @throws Error "NetCDF file '<path>': cannot open: ..." when the file is missing or not NetCDF, and
@@ -39,14 +37,12 @@ public:
     /// A URL (isRemoteSource()) is read through NetCDF-C's DAP client as the process's remoteAccess() says
     /// (RemoteDataset.h): its description from the cache file when there is one, its values through
     /// readBlock()/readAll1D(). A Zarr store or a GRIB file (isGdalSource(), GdalGrid.h) is read through GDAL's
-    /// multidimensional API, queried the same way (id() is then -1: no NetCDF group to ask).
-    explicit NcFile(const std::string &path);
-    ~NcFile();
-    NcFile(const NcFile &) = delete;
-    NcFile &operator=(const NcFile &) = delete;
+    /// multidimensional API, queried the same way.
+    explicit GriddedDataset(const std::string &path);
+    ~GriddedDataset();
+    GriddedDataset(const GriddedDataset &) = delete;
+    GriddedDataset &operator=(const GriddedDataset &) = delete;
 
-    /// The NetCDF id (for the groups of a NetCDF-4 file); -1 for a dataset GDAL reads.
-    int id() const;
     const std::string &path() const
     {
         return path_;
@@ -55,8 +51,6 @@ public:
     Error error(const std::string &what) const;
     /// @brief error() about the setting @p field (Error::field()).
     Error error(const std::string &what, const std::string &field) const;
-    /// Throws error(what + ": " + nc_strerror(status)) unless status is NC_NOERR.
-    void check(int status, const std::string &what) const;
 
     int nvars() const;
     std::string varName(int var) const;
@@ -64,14 +58,19 @@ public:
     std::size_t dimLen(int dim) const;
     std::optional<int> findVar(const std::string &name) const;
     std::vector<int> varDims(int var) const;
-    nc_type varType(int var) const;
-    /// A text attribute (NC_CHAR or the first NC_STRING), trimmed; nullopt when absent or numeric.
+    ValueType varType(int var) const;
+    /// A text attribute (characters, or the first of strings), trimmed; nullopt when absent or numeric
+    /// (@p var: kGlobalAttributes for the dataset's own).
     std::optional<std::string> attText(int var, const char *name) const;
     /// A numeric attribute's values; empty when absent. @throws Error naming the variable and the attribute when it
     /// is text (a `scale_factor` of "0.01" is not applied in silence).
     std::vector<double> attDoubles(int var, const char *name) const;
     /// What the dataset holds but cannot be read ("array 'uo' cannot be opened: <GDAL's reason>"); "" when nothing.
     std::string unreadable() const;
+    /// The names of a NetCDF-4 file's groups under the root (only the root group is read); empty when none.
+    std::vector<std::string> groupNames() const;
+    /// All the characters of the text variable @p var (ValueType::Char), row after row (NULs included).
+    std::string readChars(int var) const;
     /// All values of a variable (any number of dimensions), as doubles.
     std::vector<double> readAll1D(int var) const;
     /// The values of @p var in the block at @p start of @p count, as doubles (nc_get_vara_double), into @p out;
@@ -113,5 +112,5 @@ ClassicExtent classicExtent(std::istream &in, std::uint64_t size);
 /// N bytes of data ending at byte B, the file has S bytes (M missing)", or "is truncated: it ends inside its
 /// header, after S bytes"); nullopt when it is complete, not a classic file, or cannot be read.
 std::optional<std::string> classicTruncation(const std::string &path);
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -3,17 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 namespace
 {
 /// Depth values of zv in metres, positive down, in file order. @throws Error for an unknown positive attribute or
 /// units, fill values or non-finite numbers.
-std::vector<double> readDepthMetres(const NcFile &f, int zv)
+std::vector<double> readDepthMetres(const GriddedDataset &f, int zv)
 {
     const std::string zn = f.varName(zv);
     std::vector<double> zs = f.readAll1D(zv);
@@ -42,7 +42,7 @@ std::vector<double> readDepthMetres(const NcFile &f, int zv)
 }
 }  // namespace
 
-AxisSelection selectDepths(const NcFile &f, const Layout &l, double maxDepth)
+AxisSelection selectDepths(const GriddedDataset &f, const Layout &l, double maxDepth)
 {
     AxisSelection s;
     if (l.dimZ < 0)
@@ -87,5 +87,5 @@ AxisSelection selectDepths(const NcFile &f, const Layout &l, double maxDepth)
     }
     return s;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
 /// The record selection of selectTimes() on given times (seconds after the forecast's first time, strictly
 /// increasing, at least 2): sets out.steady (false), forecastBegin/End and departureTime (out.dated, calendar and
@@ -28,7 +28,7 @@ AxisSelection selectForecastTimes(const std::vector<double> &ts, const std::stri
 /// land, before the depth average, the node coordinates and the field.
 struct ForecastPiece
 {
-    std::unique_ptr<NcFile> file;
+    std::unique_ptr<GriddedDataset> file;
     Layout layout;
     RegionOfInterest region;
     AxisSelection z, t;
@@ -50,5 +50,5 @@ ForecastPiece readForecastPiece(const std::string &path, const NetCdfCurrentOpti
 /// The rest of loadNetCdfCurrents(): depth average, node coordinates, bounds, the GriddedCurrentField (named
 /// opt.field.name, else fieldName).
 NetCdfCurrents buildForecast(ForecastPiece &p, const NetCdfCurrentOptions &opt, const std::string &fieldName);
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider

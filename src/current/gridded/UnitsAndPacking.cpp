@@ -3,15 +3,15 @@
 #include <cctype>
 #include <cmath>
 
-#include "NetCdfInternal.h"
+#include "GriddedInternal.h"
 #include "../../io/NumberText.h"
 #include "ompl_glider/io/UnitConversion.h"
 
 namespace ompl_glider
 {
-namespace netcdf_detail
+namespace gridded_detail
 {
-LinearConversion velocityConversionOf(const NcFile &f, const Layout &l, const NetCdfCurrentOptions &opt)
+LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt)
 {
     const bool given = !opt.velocityUnits.empty();
     const std::string uu = given ? opt.velocityUnits : unitsOf(f, l.uVar);
@@ -43,7 +43,7 @@ LinearConversion velocityConversionOf(const NcFile &f, const Layout &l, const Ne
     return cu;
 }
 
-void checkVelocityMagnitudes(const NcFile &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &t,
+void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &t,
                              const NetCdfCurrentOptions &opt, const GriddedData &g)
 {
     const auto noUnits = [](const std::string &u) { return trim(u).empty() || trim(u) == "1"; };
@@ -80,7 +80,7 @@ void checkVelocityMagnitudes(const NcFile &f, const Layout &l, const HorizontalS
     }
 }
 
-LinearConversion axisConversion(const NcFile &f, int var)
+LinearConversion axisConversion(const GriddedDataset &f, int var)
 {
     const std::string units = trim(unitsOf(f, var));
     // No units, UDUNITS-2's dimensionless ones ("1", "count", angles such as degrees_east, read as x/y in
@@ -112,17 +112,17 @@ bool Packing::isFill(double raw) const
 namespace
 {
 /// The netCDF default fill value of a variable's type (used when _FillValue is absent).
-std::optional<double> defaultFill(nc_type type)
+std::optional<double> defaultFill(ValueType type)
 {
     switch (type)
     {
-        case NC_SHORT:
+        case ValueType::Short:
             return NC_FILL_SHORT;
-        case NC_INT:
+        case ValueType::Int:
             return NC_FILL_INT;
-        case NC_FLOAT:
+        case ValueType::Float:
             return static_cast<double>(NC_FILL_FLOAT);
-        case NC_DOUBLE:
+        case ValueType::Double:
             return NC_FILL_DOUBLE;
         default:
             return std::nullopt;
@@ -130,7 +130,7 @@ std::optional<double> defaultFill(nc_type type)
 }
 }  // namespace
 
-Packing packingOf(const NcFile &f, int var)
+Packing packingOf(const GriddedDataset &f, int var)
 {
     Packing p;
     const std::string name = f.varName(var);
@@ -162,7 +162,7 @@ Packing packingOf(const NcFile &f, int var)
     return p;
 }
 
-void unpackCoordinates(const NcFile &f, int var, std::vector<double> &values)
+void unpackCoordinates(const GriddedDataset &f, int var, std::vector<double> &values)
 {
     const Packing p = packingOf(f, var);
     if (p.scale == 1.0 && p.offset == 0.0)
@@ -170,5 +170,5 @@ void unpackCoordinates(const NcFile &f, int var, std::vector<double> &values)
     for (double &v : values)
         v = v * p.scale + p.offset;
 }
-}  // namespace netcdf_detail
+}  // namespace gridded_detail
 }  // namespace ompl_glider
