@@ -546,23 +546,13 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                                       for k, v in planner_params.items()}
     if field is not None and mission is not None:
         raise TypeError("plan(): give a mission or a field, not both")
-    start_from_fix = departure_from_fix = False
     gridded = field is not None and _is_gridded(field)
     if field is not None and not gridded and field.kind != "analytic":
         raise _bad("plan(): keyword 'field'", field, "a Field of a gridded source (Field.gridded(), Field.netcdf(), "
                    "Field.from_arrays()) or an analytic flow (Field.analytic())")
-    if gridded and start is None and observations is not None:
-        # the glider's last fix, and its time: a first guess, until the mission resumes there (the library)
-        fix = _core.last_fix(os.fspath(observations))
-        if fix is None:
-            raise Error("plan(): keyword 'observations': they report no position to start from")
-        start = (fix[0], fix[1])
-        start_from_fix = True
-        if departure is None:
-            departure = fix[2]
-            departure_from_fix = True
     if gridded:
-        if start is None or goal is None:
+        # without a start: the glider's last fix (and its time), read by the library (forecastMission())
+        if (start is None and observations is None) or goal is None:
             raise TypeError("plan(): a gridded field needs start and goal (lon, lat, or x, y on a Cartesian grid)")
         s = field.settings
         if region is not None:
@@ -572,15 +562,15 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                 raise _bad("plan(): keyword 'region'", region, "four numbers (lon_min, lat_min, lon_max, lat_max)")
             if len(region) != 4:
                 raise _bad("plan(): keyword 'region'", region, "four numbers (lon_min, lat_min, lon_max, lat_max)")
-        spec = _core.forecast_mission(s["files"], _pair("plan(): keyword 'start'", start),
+        spec = _core.forecast_mission(s["files"], None if start is None else _pair("plan(): keyword 'start'", start),
                                       _pair("plan(): keyword 'goal'", goal),
                                       "" if departure is None else str(departure),
-                                      0.3 if speed is None else _real("plan(): keyword 'speed'", speed), s["depth"],
+                                      None if speed is None else _real("plan(): keyword 'speed'", speed), s["depth"],
                                       region, s["variables"],
                                       s["xy_interpolation"], s["depth_interpolation"], s["time_interpolation"],
                                       s["horizon"], s["velocity_units"], s["time_units"], s["steady_record"],
                                       s["zero_velocity_land"], s["depth_average"], bool(snap_to_water),
-                                      start_from_fix, departure_from_fix, field.kind)
+                                      "" if observations is None else os.fspath(observations), field.kind)
         for used in ("start", "goal", "departure", "speed", "region"):
             keywords.pop(used)
     elif field is not None:

@@ -16,7 +16,6 @@
 
 #include "Bindings.h"
 #include "KeywordValues.h"
-#include "ompl_glider/io/GliderObservations.h"
 #include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/Exception.h"
@@ -115,13 +114,14 @@ ViaPointSpec viaPoint(const py::handle item, const std::string &at, const Missio
 /// The forecast of a gridded path (a file, or a comma-separated list of files and glob patterns) with the
 /// command line's options, as `--currents FILE --start ... --goal ...` builds it (forecastMission()), read by the
 /// gridded source @p kind names (Field.kind: gridded, its alias netcdf, or a registered one).
-MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std::string &departure, double speed,
+MissionSpec forecast(const std::string &files, std::optional<Pair> start, Pair goal, const std::string &departure,
+                     std::optional<double> speed,
                      double depth, std::optional<Quad> region, const std::map<std::string, std::string> &variables,
                      const std::string &xy, const std::string &depthScheme, const std::string &timeScheme,
                      const std::string &horizon, const std::string &velocityUnits, const std::string &timeUnits,
                      std::optional<std::size_t> steadyRecord, bool zeroVelocityLand,
-                     std::optional<Pair> depthAverage, bool snapToWater, bool startFromFix,
-                     bool departureFromFix, const std::string &kind)
+                     std::optional<Pair> depthAverage, bool snapToWater, const std::string &observations,
+                     const std::string &kind)
 {
     ForecastInput in;
     in.current.type = kind;  // a gridded kind of the registry (or its alias), kept as named; another: netcdf
@@ -142,11 +142,18 @@ MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std:
     in.current.steadyRecord = steadyRecord;
     in.current.zeroVelocityLand = zeroVelocityLand;
     in.current.depthAverage = depthAverage;
-    in.start = {start.first, start.second};
+    // without a start: the glider's last fix (and its time without a departure), read by the mission
+    in.startAtLastFix = !start;
+    in.observations = observations;
+    if (start)
+        in.start = {start->first, start->second};
     in.goal = {goal.first, goal.second};
     in.departure = departure;
-    checkFinite("speed", speed, true);
-    in.speed = speed;
+    if (speed)  // else ForecastInput's
+    {
+        checkFinite("speed", *speed, true);
+        in.speed = *speed;
+    }
     in.depth = depth;
     if (region)
     {
@@ -155,11 +162,6 @@ MissionSpec forecast(const std::string &files, Pair start, Pair goal, const std:
     }
     MissionSpec out;  // the forecast's description is read here (a URL: fetched, stopped by Ctrl-C)
     runStoppable([&] { out = forecastMission(in); });
-    // the last fix as a first guess (plan() read it from the observations), until the mission resumes there
-    if (startFromFix)
-        out.marks["start"] = SourceMark{"plan(): keyword 'observations'", 0, Origin::Observations};
-    if (departureFromFix)
-        out.marks["departure.time"] = SourceMark{"plan(): keyword 'observations'", 0, Origin::Observations};
     return out;
 }
 
@@ -256,6 +258,7 @@ std::shared_ptr<const SettingWords> keywordWords()
         {"vehicle.depth", "Field.netcdf(depth=)"},
         {"departure.time", "departure="},
         {"start", "start="},
+        {"observations", "observations="},
         {"goal", "goal="},
         {"region", "region="},
         {"current.file", "Field.netcdf()"},
@@ -281,6 +284,7 @@ std::shared_ptr<const SettingWords> keywordWords()
         {"execution.radius", "radius="}},
         // a value given: by its keyword (of plan(), or of Field.netcdf() for the forecast's reading)
         {{"start", "plan(): keyword 'start'"},
+         {"observations", "plan(): keyword 'observations'"},
          {"goal", "plan(): keyword 'goal'"},
          {"region", "plan(): keyword 'region'"},
          {"departure.time", "plan(): keyword 'departure'"},
@@ -487,35 +491,22 @@ void bindMission(py::module_ &m)
         .def("fleet_glider", &fleetGliderMission, py::arg("i"),
              "The mission of glider i of the fleet (fleetGliderMission(): as glider_plan plans it).");
     m.def("builtin_mission", &defaultGulfStreamMission, "The built-in Gulf Stream mission (as glider_plan).");
-    m.def(
-        "last_fix",
-        [](const std::string &path) -> py::object {
-            GliderObservations o;
-            {
-                const py::gil_scoped_release release;  // files and URLs read without the GIL (NetCdfLock.h)
-                o = readGliderObservations(path);
-            }
-            if (!o.lastFix)
-                return py::none();
-            return py::make_tuple(o.lastFix->at.lon, o.lastFix->at.lat, formatIsoTime(o.lastFix->time));
-        },
-        py::arg("path"), "The last fix (lon, lat, ISO 8601 time) of a glider's observations (IOOS files, Slocum dba files, a CSV, "
-                         "or an ERDDAP URL).");
     // (read with the GIL released: a mission's forecast files are asked for their time axis)
     m.def("load_mission", &loadMission, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
           "A YAML mission file (examples/MISSION_FORMAT.md).");
     m.def("parse_mission", &parseMission, py::arg("text"), py::arg("file") = "<mission>",
           py::arg("directory") = ".", py::call_guard<py::gil_scoped_release>(), "A mission from YAML (or JSON) text.");
     m.def("forecast_mission", &forecast, py::arg("files"), py::arg("start"), py::arg("goal"),
-          py::arg("departure") = "", py::arg("speed") = 0.3, py::arg("depth") = 0.0, py::arg("region") = py::none(),
+          py::arg("departure") = "", py::arg("speed") = py::none(), py::arg("depth") = 0.0, py::arg("region") = py::none(),
           py::arg("variables") = std::map<std::string, std::string>{}, py::arg("xy_interpolation") = "bilinear",
           py::arg("depth_interpolation") = "linear", py::arg("time_interpolation") = "linear",
           py::arg("horizon") = "refuse", py::arg("velocity_units") = "", py::arg("time_units") = "",
           py::arg("steady_record") = py::none(), py::arg("zero_velocity_land") = true,
           py::arg("depth_average") = py::none(), py::arg("snap_to_water") = false,
-          py::arg("start_from_fix") = false, py::arg("departure_from_fix") = false, py::arg("kind") = "netcdf",
-          "The mission of a gridded forecast, as glider_plan --currents builds it (start and departure from the "
-          "observations' last fix: marked so, until the mission resumes there), read by the gridded source `kind` "
+          py::arg("observations") = "", py::arg("kind") = "netcdf",
+          "The mission of a gridded forecast, as glider_plan --currents builds it (start None: at the last fix of "
+          "`observations`, and its time without a departure, marked so until the mission resumes there; speed None: "
+          "the forecast mission's default), read by the gridded source `kind` "
           "names (gridded, its alias netcdf, or a registered gridded kind), which the mission keeps as named.");
     m.def("is_gridded_kind", &isGriddedKind, py::arg("kind"),
           "True when the registry reads the current kind `kind` (a name or an alias) from files through a gridded "
