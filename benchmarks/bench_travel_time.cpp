@@ -65,6 +65,6 @@ void BM_CurrentModelJet(benchmark::State &state)
     state.counters["calls_per_s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_CurrentModelJet);
-}  // namespace
+} // namespace
 
 BENCHMARK_MAIN();

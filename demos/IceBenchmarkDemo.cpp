@@ -40,7 +40,7 @@ forbidden:
       drift: [0.05, -0.02]
       max_submerged_time: 0.5
 )";
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {

@@ -39,4 +39,4 @@ inline void quietOmpl()
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
 }
-}  // namespace ompl_glider_fuzz
+} // namespace ompl_glider_fuzz

@@ -17,7 +17,7 @@
 
 namespace
 {
-std::string gMissing;  // a path in an empty directory
+std::string gMissing; // a path in an empty directory
 }
 
 extern "C" int LLVMFuzzerInitialize(int *, char ***)
@@ -54,7 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         if (f.speeds)
             (void)speedList(*f.speeds);
         if (!f.mission.empty())
-            return 0;  // a mission file: loading it is fuzz_mission's part
+            return 0; // a mission file: loading it is fuzz_mission's part
         if (!f.currents.empty())
         {
             f.currents = gMissing;

@@ -18,7 +18,7 @@
 
 namespace
 {
-std::string gDir;  // the empty working directory
+std::string gDir; // the empty working directory
 
 /// True when @p path names nothing or a place inside the empty directory.
 bool insideScratch(const std::string &path)
@@ -29,7 +29,7 @@ bool insideScratch(const std::string &path)
         return false;
     return path.find("/..") == std::string::npos;
 }
-}  // namespace
+} // namespace
 
 extern "C" int LLVMFuzzerInitialize(int *, char ***)
 {

@@ -34,19 +34,14 @@ namespace
 {
 using namespace ompl_glider;
 
-std::string gFile;  // the input, written for the reader
+std::string gFile; // the input, written for the reader
 
 /// The bytes of the classic (CDF-1, CDF-2, CDF-5) header read in order, for absurdClassicHeader().
 class HeaderWalk
 {
 public:
-    HeaderWalk(const std::uint8_t *data, std::size_t size) : data_(data), size_(size)
-    {
-    }
-    std::size_t remaining() const
-    {
-        return size_ - at_;
-    }
+    HeaderWalk(const std::uint8_t *data, std::size_t size) : data_(data), size_(size) {}
+    std::size_t remaining() const { return size_ - at_; }
     /// A big-endian integer of @p bytes bytes; false past the end.
     bool integer(int bytes, std::uint64_t &v)
     {
@@ -80,7 +75,7 @@ bool absurdClassicHeader(const std::uint8_t *data, std::size_t size)
     if (size < 4 || data[0] != 'C' || data[1] != 'D' || data[2] != 'F')
         return false;
     const int version = data[3];
-    const int big = version == 5 ? 8 : 4;  // NON_NEG
+    const int big = version == 5 ? 8 : 4; // NON_NEG
     HeaderWalk h(data + 4, size - 4);
     std::uint64_t v = 0, tag = 0, n = 0;
     // a count of items that each take at least one byte; sets absurd when the rest of the file is shorter
@@ -108,12 +103,12 @@ bool absurdClassicHeader(const std::uint8_t *data, std::size_t size)
         }
         return true;
     };
-    if (!h.integer(big, v) || !h.integer(4, tag) || !count(n))  // numrecs, dimensions
+    if (!h.integer(big, v) || !h.integer(4, tag) || !count(n)) // numrecs, dimensions
         return absurd;
     for (std::uint64_t d = n, i = 0; i < d; ++i)
         if (!name() || !h.integer(big, v))
             return absurd;
-    if (!attributes() || !h.integer(4, tag) || !count(n))  // global attributes, variables
+    if (!attributes() || !h.integer(4, tag) || !count(n)) // global attributes, variables
         return absurd;
     for (std::uint64_t vars = n, i = 0; i < vars; ++i)
     {
@@ -129,7 +124,7 @@ bool absurdClassicHeader(const std::uint8_t *data, std::size_t size)
     return absurd;
 }
 
-}  // namespace
+} // namespace
 
 // LeakSanitizer's interface, weak: a fuzzer built without AddressSanitizer (OMPL_GLIDER_BUILD_FUZZERS alone) has no
 // leak checker to switch off, and links
@@ -184,8 +179,8 @@ void probe(const NetCdfCurrents &nc)
         (void)field.jacobian(x, y, z, t);
         if (water && !(std::isfinite(v.u) && std::isfinite(v.v)))
         {
-            std::fprintf(stderr, "fuzz_netcdf: velocity (%g, %g) at (%g, %g, %g, %g), a point in water\n", v.u, v.v,
-                         x, y, z, t);
+            std::fprintf(stderr, "fuzz_netcdf: velocity (%g, %g) at (%g, %g, %g, %g), a point in water\n", v.u, v.v, x,
+                         y, z, t);
             std::abort();
         }
     }
@@ -214,7 +209,7 @@ bool load(const NetCdfCurrentOptions &o, double &a, double &b)
         return false;
     }
 }
-}  // namespace
+} // namespace
 
 extern "C" int LLVMFuzzerInitialize(int *, char ***)
 {
@@ -227,7 +222,7 @@ extern "C" int LLVMFuzzerInitialize(int *, char ***)
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {
     if (absurdClassicHeader(data, size))
-        return -1;  // not added to the corpus
+        return -1; // not added to the corpus
     {
         std::ofstream out(gFile, std::ios::binary | std::ios::trunc);
         out.write(reinterpret_cast<const char *>(data), static_cast<std::streamsize>(size));

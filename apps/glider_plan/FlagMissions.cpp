@@ -41,10 +41,10 @@ void applyFlags(const Flags &f, MissionSpec &m, bool placed)
     MissionOverrides o = overridesOf(f);
     if (placed)
     {
-        for (const auto &[given, field, flag] : {std::make_tuple(!f.start.empty(), "start", "--start"),
-                                                 std::make_tuple(!f.goal.empty(), "goal", "--goal"),
-                                                 std::make_tuple(!f.departure.empty(), "departure.time", "--departure"),
-                                                 std::make_tuple(!f.region.empty(), "region", "--region")})
+        for (const auto &[given, field, flag] :
+             {std::make_tuple(!f.start.empty(), "start", "--start"), std::make_tuple(!f.goal.empty(), "goal", "--goal"),
+              std::make_tuple(!f.departure.empty(), "departure.time", "--departure"),
+              std::make_tuple(!f.region.empty(), "region", "--region")})
             if (given)
                 m.marks[field] = SourceMark{flag, 0, Origin::Flag};
         o.start.reset();
@@ -54,49 +54,51 @@ void applyFlags(const Flags &f, MissionSpec &m, bool placed)
     }
     applyOrRefuse(o, m);
 }
-}  // namespace
+} // namespace
 
 std::shared_ptr<const ompl_glider::SettingWords> flagWords()
 {
-    static const auto words = std::make_shared<const SettingWords>(SettingWords{{
-        {"planner.name", "--planner"},
-        {"planner.grid_size", "--grid-size"},
-        {"planner.sectors", "--sectors"},
-        {"planner.time_limit", "--time-limit"},
-        {"vehicle.speed", "--speed"},
-        {"vehicle.depth", "--depth"},
-        {"departure.time", "--departure"},
-        {"start", "--start"},
-        {"observations", "--observations"},
-        {"goal", "--goal"},
-        {"region", "--region"},
-        {"current.file", "--currents"},
-        {"current.horizon: hold_last", "--beyond hold"},
-        {"current.zero_velocity_land: false", "--no-zero-land"},
-        {"current.depth_average", "--depth-average"},
-        {"current.variables.angle", "--angle-var"},
-        {"current.variables.angle: none", "--angle-var none"},
-        {"current.variables.mask", "--mask-var"},
-        {"current.variables.u", "--u-var"},
-        {"current.variables.v", "--v-var"},
-        {"current.variables.lon", "--lon-var"},
-        {"current.variables.lat", "--lat-var"},
-        {"current.variables.depth", "--depth-var"},
-        {"current.variables.time", "--time-var"},
-        {"current.velocity_units", "--velocity-units"},
-        {"current.time_units", "--time-units"},
-        {"current.steady_record", "--steady-record"},
-        {"current.zero_velocity_land", "--no-zero-land"},
-        {"forbidden.coastline", "--coastline"},
-        {"safety.keep_off", "--keep-off"},
-        {"safety.min_depth", "--min-depth"},
-        {"safety.bathymetry", "--bathymetry"},
-        {"safety.bathymetry_variable", "--bathymetry-variable"},
-        {"safety.snap_to_water: true", "--snap-to-water"},
-        {"execution.truth", "--truth"},
-        {"execution.surfacing_interval", "--surfacing-interval"},
-        {"execution.strategies", "--strategies"},
-        {"execution.radius", "--radius"}}, {}, Origin::Flag});
+    static const auto words =
+        std::make_shared<const SettingWords>(SettingWords{{{"planner.name", "--planner"},
+                                                           {"planner.grid_size", "--grid-size"},
+                                                           {"planner.sectors", "--sectors"},
+                                                           {"planner.time_limit", "--time-limit"},
+                                                           {"vehicle.speed", "--speed"},
+                                                           {"vehicle.depth", "--depth"},
+                                                           {"departure.time", "--departure"},
+                                                           {"start", "--start"},
+                                                           {"observations", "--observations"},
+                                                           {"goal", "--goal"},
+                                                           {"region", "--region"},
+                                                           {"current.file", "--currents"},
+                                                           {"current.horizon: hold_last", "--beyond hold"},
+                                                           {"current.zero_velocity_land: false", "--no-zero-land"},
+                                                           {"current.depth_average", "--depth-average"},
+                                                           {"current.variables.angle", "--angle-var"},
+                                                           {"current.variables.angle: none", "--angle-var none"},
+                                                           {"current.variables.mask", "--mask-var"},
+                                                           {"current.variables.u", "--u-var"},
+                                                           {"current.variables.v", "--v-var"},
+                                                           {"current.variables.lon", "--lon-var"},
+                                                           {"current.variables.lat", "--lat-var"},
+                                                           {"current.variables.depth", "--depth-var"},
+                                                           {"current.variables.time", "--time-var"},
+                                                           {"current.velocity_units", "--velocity-units"},
+                                                           {"current.time_units", "--time-units"},
+                                                           {"current.steady_record", "--steady-record"},
+                                                           {"current.zero_velocity_land", "--no-zero-land"},
+                                                           {"forbidden.coastline", "--coastline"},
+                                                           {"safety.keep_off", "--keep-off"},
+                                                           {"safety.min_depth", "--min-depth"},
+                                                           {"safety.bathymetry", "--bathymetry"},
+                                                           {"safety.bathymetry_variable", "--bathymetry-variable"},
+                                                           {"safety.snap_to_water: true", "--snap-to-water"},
+                                                           {"execution.truth", "--truth"},
+                                                           {"execution.surfacing_interval", "--surfacing-interval"},
+                                                           {"execution.strategies", "--strategies"},
+                                                           {"execution.radius", "--radius"}},
+                                                          {},
+                                                          Origin::Flag});
     return words;
 }
 
@@ -123,7 +125,7 @@ MissionOverrides overridesOf(const Flags &f)
         o.speed = Given<double>{*f.speed, "--speed"};
     if (!f.departure.empty())
         o.departure = Given<std::string>{f.departure, "--departure"};
-    if (!f.start.empty())  // lon,lat where the mission gives lon/lat
+    if (!f.start.empty()) // lon,lat where the mission gives lon/lat
         o.start = Given<Point2>{pair("--start", f.start), "--start"};
     if (!f.goal.empty())
         o.goal = Given<Point2>{pair("--goal", f.goal), "--goal"};
@@ -132,14 +134,15 @@ MissionOverrides overridesOf(const Flags &f)
         const Box b = quad("--region", f.region);
         o.region = Given<std::array<double, 4>>{{b.xMin, b.yMin, b.xMax, b.yMax}, "--region"};
     }
-    if (!f.out.empty() || f.mission.empty())  // a mission file keeps its outputs.directory unless --out is given
+    if (!f.out.empty() || f.mission.empty()) // a mission file keeps its outputs.directory unless --out is given
         o.outDirectory = Given<std::string>{f.out, "--out"};
     if (!f.arriveBetween.empty())
     {
         const std::vector<std::string> items = commaItems(f.arriveBetween);
         if (items.size() != 2 || items[0].empty() || items[1].empty())
             throw UsageError{"--arrive-between expects two times separated by a comma, begin,end (numbers in the "
-                             "mission's time unit, or ISO 8601 dates with --currents), got '" + f.arriveBetween + "'"};
+                             "mission's time unit, or ISO 8601 dates with --currents), got '" +
+                             f.arriveBetween + "'"};
         o.arrivalWindow = Given<std::pair<std::string, std::string>>{{items[0], items[1]}, "--arrive-between"};
     }
     if (!f.via.empty())
@@ -150,7 +153,7 @@ MissionOverrides overridesOf(const Flags &f)
         {
             const std::size_t end = std::min(f.via.find(';', from), f.via.size());
             ViaPointSpec v;
-            v.position.xy = pair("--via", f.via.substr(from, end - from));  // lon,lat where the mission gives lon/lat
+            v.position.xy = pair("--via", f.via.substr(from, end - from)); // lon,lat where the mission gives lon/lat
             via.push_back(v);
             from = end + 1;
         }
@@ -255,4 +258,4 @@ MissionSpec forecastMissionOf(Flags f)
     applyFlags(f, m, true);
     return m;
 }
-}  // namespace glider_plan
+} // namespace glider_plan

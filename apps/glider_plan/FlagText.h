@@ -23,4 +23,4 @@ std::vector<std::string> commaItems(const std::string &text);
 /// @brief Four numbers separated by commas (--region), in GeoJSON bbox order: x_min,y_min,x_max,y_max (for a
 /// geographic file lon_min,lat_min,lon_max,lat_max), as given. @throws UsageError naming @p flag.
 ompl_glider::Box quad(const std::string &flag, const std::string &text);
-}  // namespace glider_plan
+} // namespace glider_plan

@@ -104,8 +104,9 @@ const std::vector<std::string> kSchemes1D = {"nearest", "linear", "cubic", "akim
 void defineRouteFlags(CLI::App &app, Flags &f)
 {
     auto *built = "Route and planner";
-    app.add_option("--start", f.start, "start x,y (built-in default 1,-3); lon,lat with --currents (write "
-                                       "--start=-52.7,47.9 for a negative first value)")
+    app.add_option("--start", f.start,
+                   "start x,y (built-in default 1,-3); lon,lat with --currents (write "
+                   "--start=-52.7,47.9 for a negative first value)")
         ->group(built);
     app.add_option("--goal", f.goal, "goal x,y (built-in default 8,3); lon,lat with --currents")->group(built);
     app.add_option("--departure", f.departure,
@@ -124,7 +125,8 @@ void defineRouteFlags(CLI::App &app, Flags &f)
     app.add_option("--observations", f.observations,
                    "the glider's depth-averaged currents: IOOS glider profile NetCDF files or Slocum dba files (a "
                    "file, folder or glob pattern), a CSV time,lon,lat,u,v, or an ERDDAP tabledap URL (.csvp, .csv or "
-                   ".ncCF of time,latitude,longitude,profile_id,time_uv,lat_uv,lon_uv,u,v,u_qc,v_qc); the forecast is corrected by them (optimal interpolation) and, "
+                   ".ncCF of time,latitude,longitude,profile_id,time_uv,lat_uv,lon_uv,u,v,u_qc,v_qc); the forecast is "
+                   "corrected by them (optimal interpolation) and, "
                    "without --start, the plan starts at the last fix (and at its time without --departure)")
         ->group(built);
     app.add_option("--arrive-between", f.arriveBetween,
@@ -170,8 +172,9 @@ void defineRouteFlags(CLI::App &app, Flags &f)
 void defineIoFlags(CLI::App &app, Flags &f)
 {
     auto *io = "Input and output";
-    app.add_option("--mission", f.mission, "run a YAML mission file (examples/MISSION_FORMAT.md); the other flags "
-                                           "(not --currents and its options) override its fields")
+    app.add_option("--mission", f.mission,
+                   "run a YAML mission file (examples/MISSION_FORMAT.md); the other flags "
+                   "(not --currents and its options) override its fields")
         ->group(io);
     app.add_option("--currents", f.currents,
                    "plan on the u/v currents of a forecast: a NetCDF file, or several read as one forecast (a "
@@ -261,10 +264,11 @@ void defineExecutionFlags(CLI::App &app, Flags &f)
                    "time between surfacings: a number in the mission's time unit, or e.g. '1 h', '30 min' (default "
                    "1 h; without a time unit a twentieth of the planned trip)")
         ->group(ex);
-    app.add_option("--strategies", f.strategies,
-                   "control strategies compared, e.g. current_sensitive,current_blind,greedy,replan; also planned_headings, "
-                   "dac (steer with the last dive's measured DAC) and replan_observed (replan on the forecast corrected "
-                   "by the DAC measured so far) (default: all)")
+    app.add_option(
+           "--strategies", f.strategies,
+           "control strategies compared, e.g. current_sensitive,current_blind,greedy,replan; also planned_headings, "
+           "dac (steer with the last dive's measured DAC) and replan_observed (replan on the forecast corrected "
+           "by the DAC measured so far) (default: all)")
         ->group(ex);
     app.add_option("--radius", f.radius,
                    "the goal counts as reached within this distance (mission length unit; default 1 % of the "
@@ -336,7 +340,8 @@ void defineForecastFlags(CLI::App &app, Flags &f)
                const Point2 p = pair("--depth-average", v);
                if (!(p.x >= 0.0 && p.x <= p.y && p.y <= 12000.0))
                    throw UsageError{"--depth-average expects top,bottom in metres with 0 <= top <= bottom <= 12000, "
-                                    "got '" + v + "'"};
+                                    "got '" +
+                                    v + "'"};
                fc.current.depthAverage = std::make_pair(p.x, p.y);
            },
            "plan on the current averaged over the glider's working depth, top,bottom in metres (e.g. 0,200)")
@@ -382,7 +387,7 @@ void defineForecastFlags(CLI::App &app, Flags &f)
         ->group(nc);
 }
 
-}  // namespace
+} // namespace
 
 void defineFlags(CLI::App &app, Flags &f)
 {
@@ -442,4 +447,4 @@ void parseFlags(CLI::App &app, const Flags &f, int argc, const char *const *argv
     }
 }
 
-}  // namespace glider_plan
+} // namespace glider_plan

@@ -26,16 +26,16 @@ struct UsageError
 struct Flags
 {
     std::string mission, currents, out, start, goal, departure, planner, coastline, region, arriveBetween;
-    std::string via, order;  ///< --via 'lon,lat;lon,lat', --order given|free
-    std::string observations;  ///< --observations PATH: the glider's DAC files
-    std::optional<std::string> speeds;  // given, even empty, is a sweep request
+    std::string via, order;            ///< --via 'lon,lat;lon,lat', --order given|free
+    std::string observations;          ///< --observations PATH: the glider's DAC files
+    std::optional<std::string> speeds; // given, even empty, is a sweep request
     std::optional<double> speed, gridSize, timeLimit, depth;
     std::optional<int> sectors;
     bool noSmooth{false}, noRefine{false}, noGlobalCheck{false}, optimum{false}, verbose{false};
     // reachable-set contours: --isochrones, --isochrone-interval
     bool isochrones{false};
     std::string isochroneInterval;
-    std::optional<double> gotoTurn;  // --goto-turn: the goto list's turn threshold in degrees
+    std::optional<double> gotoTurn; // --goto-turn: the goto list's turn threshold in degrees
     // forecasts from OPeNDAP servers: --cache, --request-timeout, --retries (io/RemoteSource.h)
     std::string cache;
     std::optional<double> requestTimeout;
@@ -47,8 +47,8 @@ struct Flags
     ompl_glider::ForecastInput forecast;
     // safety margins: --keep-off, --bathymetry, --bathymetry-variable, --min-depth
     std::string keepOff, bathymetry, bathymetryVariable, minDepth;
-    bool snapToWater{false};  ///< --snap-to-water
-    bool showMission{false};  ///< --show-mission: print the fields the flags can change, plan nothing
+    bool snapToWater{false}; ///< --snap-to-water
+    bool showMission{false}; ///< --show-mission: print the fields the flags can change, plan nothing
 };
 
 /// @brief How the command line names the mission's settings in messages (MissionSpec::term()): its flags.
@@ -84,4 +84,4 @@ ompl_glider::MissionSpec missionFileOf(const Flags &f);
 /// @brief The mission of a --currents forecast (reads the file's time axis and grid: forecastMission()).
 /// @throws UsageError for a malformed --start/--goal, ompl_glider::Error for the file and the request.
 ompl_glider::MissionSpec forecastMissionOf(Flags f);
-}  // namespace glider_plan
+} // namespace glider_plan

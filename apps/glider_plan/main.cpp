@@ -59,7 +59,7 @@ int runFleetMode(const Flags &f, const MissionSpec &spec, RunOptions options)
     if (!f.start.empty() || !f.goal.empty())
         throw UsageError{"--start and --goal cannot be combined with a mission file's fleet: each glider gives its "
                          "own (fleet[i].start, fleet[i].goal)"};
-    if (::isatty(STDERR_FILENO))  // a line per glider on a terminal; a log gets the table
+    if (::isatty(STDERR_FILENO)) // a line per glider on a terminal; a log gets the table
         options.progress = printProgress;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<FleetGlider> gliders = runFleet(spec, options, renderOutputFiles);
@@ -74,13 +74,14 @@ int runFleetMode(const Flags &f, const MissionSpec &spec, RunOptions options)
             if (!g.row.badInput.empty())
                 std::cerr << "glider_plan: glider '" << g.row.name << "': " << g.row.badInput << ": " << g.row.reason
                           << "\n";
-        return kBadInput;  // bad input: nothing is written
+        return kBadInput; // bad input: nothing is written
     }
     printFleetTable(std::cout, spec, gliders);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::vector<std::string> written =
         writeOutputFiles(spec.outputs.directory, fleetOutputFiles(spec, gliders, wall));
-    std::cout << "wrote " << written.size() << " files: " << (spec.outputs.directory.empty() ? "." : spec.outputs.directory)
+    std::cout << "wrote " << written.size()
+              << " files: " << (spec.outputs.directory.empty() ? "." : spec.outputs.directory)
               << "/summary.json, fleet.csv and a folder per glider\n";
     for (const FleetGlider &g : gliders)
         if (!g.row.solved)
@@ -91,7 +92,7 @@ int runFleetMode(const Flags &f, const MissionSpec &spec, RunOptions options)
 /// Plans, reports and writes. Returns the exit status.
 int run(const Flags &f)
 {
-    MissionSpec spec = !f.mission.empty() ? missionFileOf(f)
+    MissionSpec spec = !f.mission.empty()    ? missionFileOf(f)
                        : !f.currents.empty() ? forecastMissionOf(f)
                                              : builtInMission(f);
     if (f.showMission)
@@ -105,12 +106,12 @@ int run(const Flags &f)
     if (TaskSpreader *job = activeTaskSpreader())
         job->agree("the mission (its file and the files it reads)", inputDigest(spec));
     const bool write = !f.mission.empty() || !f.out.empty();
-    std::optional<OutputLock> lock;  // held from here: a second run into the directory is refused at once
+    std::optional<OutputLock> lock; // held from here: a second run into the directory is refused at once
     if (write)
     {
         checkOutputDirectory(spec.outputs.directory);
         checkOutputNames(spec.outputs);
-        if (taskRank() == 0)  // an MPI job writes from rank 0 only
+        if (taskRank() == 0) // an MPI job writes from rank 0 only
             lock.emplace(spec.outputs.directory);
     }
     RunOptions options;
@@ -123,13 +124,13 @@ int run(const Flags &f)
     if (!f.mission.empty() || !f.currents.empty())
         options.progress = printProgress;
     const MissionResult result = runMission(problem, options);
-    if (taskRank() != 0)  // an MPI job's other ranks: rank 0 reports and writes
+    if (taskRank() != 0) // an MPI job's other ranks: rank 0 reports and writes
         return result.plan.solved || result.plan.badInput.empty() ? (result.plan.solved ? 0 : kNoPath) : kBadInput;
     if (!result.plan.solved && !result.plan.badInput.empty())
     {
         std::cerr << "glider_plan: " << problem.getSpec().place(result.plan.badInput) << ": " << result.plan.reason
                   << "\n";
-        return kBadInput;  // bad input: nothing is written
+        return kBadInput; // bad input: nothing is written
     }
     printReport(std::cout, result);
     if (write)
@@ -177,7 +178,7 @@ int runAndReport(const Flags &f, std::string &failure)
     failure = message;
     return kBadInput;
 }
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {
@@ -219,7 +220,7 @@ int main(int argc, char **argv)
     {
         if (!f.verbose)
             ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
-        installOutputSignalHandlers();  // SIGINT/SIGTERM while files are written: the earlier outputs stay
+        installOutputSignalHandlers(); // SIGINT/SIGTERM while files are written: the earlier outputs stay
         // a CPU time limit whose soft and hard values agree (ulimit -t) kills at once; one second less of soft limit
         // first sends SIGXCPU, answered with a message
         struct rlimit cpu

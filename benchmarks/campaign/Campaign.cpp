@@ -90,20 +90,20 @@ const char *const kReferenceHeader =
     "reference_disc\n";
 
 /// The planners of the campaign, by their registry names (PlannerRegistry.h).
-const std::vector<std::string> kCampaignPlanners = {"TVE",     "A*TVE",   "ZTVE",       "ZA*TVE", "Wavefront",
-                                                    "LevelSet", "RRTstar", "PRM",        "PRMstar", "RRTConnect",
-                                                    "RRT#",    "LBTRRT",  "BITstar",    "SST"};
+const std::vector<std::string> kCampaignPlanners = {"TVE",      "A*TVE",   "ZTVE",    "ZA*TVE",  "Wavefront",
+                                                    "LevelSet", "RRTstar", "PRM",     "PRMstar", "RRTConnect",
+                                                    "RRT#",     "LBTRRT",  "BITstar", "SST"};
 
 struct Options
 {
     bool quick{false};
-    bool reference{true};  ///< --no-reference: no reference.csv (its level sets take tens of seconds)
+    bool reference{true}; ///< --no-reference: no reference.csv (its level sets take tens of seconds)
     unsigned runs{0};
     double time{0.0};
     double grid{0.4};
-    double ownEnd{60.0};  ///< time limit of a benchmark whose planners all run to their own end
+    double ownEnd{60.0}; ///< time limit of a benchmark whose planners all run to their own end
     std::uint32_t seed{20240601};
-    std::set<std::string> problems;  ///< names and set names; empty: the classic set
+    std::set<std::string> problems; ///< names and set names; empty: the classic set
     std::set<std::string> planners;
     std::set<std::string> control{campaignControlPlanners()};
     std::string outdir;
@@ -112,7 +112,8 @@ struct Options
 [[noreturn]] void usage(const std::string &why)
 {
     std::cerr << "glider_campaign: " << why << "\n"
-              << "usage: glider_campaign [--quick] [--no-reference] [--runs N] [--time SECONDS] [--grid G] [--own-end-time S] [--seed S] "
+              << "usage: glider_campaign [--quick] [--no-reference] [--runs N] [--time SECONDS] [--grid G] "
+                 "[--own-end-time S] [--seed S] "
                  "[--problems classic|strong|all|open_water,islands,ice,closure,jet_v020,jet_v015,gyre] "
                  "[--planners TVE,RRTstar,...] [--control SST,RRT,KPIECE1|none] OUTDIR\n";
     std::exit(2);
@@ -137,7 +138,7 @@ void addList(Options &o, const std::string &a, const std::string &list)
                 usage("unknown control planner '" + p + "' (SST, RRT, KPIECE1 or none)");
             o.control.insert(p);
         }
-        else if (const PlannerEntry *e = findPlanner(p))  // any accepted spelling: "BIT*", "zastartve"
+        else if (const PlannerEntry *e = findPlanner(p)) // any accepted spelling: "BIT*", "zastartve"
             o.planners.insert(e->name);
         else
             usage("unknown planner '" + p + "' (" + plannerNameList() + ")");
@@ -214,8 +215,7 @@ void setParameter(ob::Planner &planner, const std::string &name, const std::stri
 {
     if (!planner.params().setParam(name, value))
     {
-        std::cerr << "glider_campaign: planner " << planner.getName() << " refuses " << name << " = " << value
-                  << "\n";
+        std::cerr << "glider_campaign: planner " << planner.getName() << " refuses " << name << " = " << value << "\n";
         std::exit(2);
     }
 }
@@ -271,9 +271,9 @@ std::pair<std::string, std::string> referenceLines(const CampaignProblem &p)
         ZermeloParams zp;
         zp.speed = p.problem.travel.speed;
         zp.maxTime = p.problem.horizon;
-        const ZermeloSolution s = ZermeloReference(p.problem.field, zp)
-                                      .solve(p.problem.start.x, p.problem.start.y, p.problem.goal.x, p.problem.goal.y,
-                                             p.problem.t0);
+        const ZermeloSolution s =
+            ZermeloReference(p.problem.field, zp)
+                .solve(p.problem.start.x, p.problem.start.y, p.problem.goal.x, p.problem.goal.y, p.problem.t0);
         if (s.found)
             shooting = s.travelTime;
     }
@@ -287,11 +287,11 @@ std::pair<std::string, std::string> referenceLines(const CampaignProblem &p)
         << ls[0] << "," << ls[1] << "," << ls[2] << "," << extrapolated << "," << lsSeconds << "," << shooting << ","
         << passable << "," << tolerance << "," << discExtrapolated << "\n";
     console << "optimum " << p.name << ": " << std::setprecision(6) << best
-              << (shot ? " (shooting)" : " (level set extrapolated)") << "; level set cells " << hs[0] << " / "
-              << hs[1] << " / " << hs[2] << ": " << ls[0] << " / " << ls[1] << " / " << ls[2] << ", extrapolated "
-              << extrapolated << " (" << lsSeconds << " s at " << hs[2] << "); first entry into the goal disc of "
-              << tolerance << ": " << discExtrapolated
-              << (std::isfinite(passable) ? "; with the ice passable " + std::to_string(passable) : "");
+            << (shot ? " (shooting)" : " (level set extrapolated)") << "; level set cells " << hs[0] << " / " << hs[1]
+            << " / " << hs[2] << ": " << ls[0] << " / " << ls[1] << " / " << ls[2] << ", extrapolated " << extrapolated
+            << " (" << lsSeconds << " s at " << hs[2] << "); first entry into the goal disc of " << tolerance << ": "
+            << discExtrapolated
+            << (std::isfinite(passable) ? "; with the ice passable " + std::to_string(passable) : "");
     return {ref.str(), console.str()};
 }
 
@@ -379,7 +379,7 @@ std::unique_ptr<BuiltBenchmark> buildRegistryBenchmark(const Options &opt, const
     b.addExperimentParameter("campaign_seed", "INTEGER", std::to_string(opt.seed));
 
     std::size_t nPlanners = 0;
-    bool allOwnEnd = true;  // every planner runs to its own end (lattice, level set, heading planners)
+    bool allOwnEnd = true; // every planner runs to its own end (lattice, level set, heading planners)
     // BIT* (OMPL names it kBITstar) draws goal states up to PositionGoal::maxSampleCount() in its setup: finite
     // (the valid goal times).
     for (const std::string &name : p.planners.empty() ? kCampaignPlanners : p.planners)
@@ -452,22 +452,21 @@ void runHere(const Options &opt, const std::vector<CampaignProblem> &problems)
 /// then every (benchmark, planner, run); rank 0 writes reference.csv and the logs once everything succeeded.
 void runSpread(TaskSpreader &spread, const Options &opt, const std::vector<CampaignProblem> &problems)
 {
-    const std::vector<std::string> refs = spread.run("reference problem", opt.reference ? problems.size() : 0,
-                                                     [&](std::size_t i) {
-        const auto lines = referenceLines(problems[i]);
-        ByteWriter w;
-        w.put(lines.first);
-        w.put(lines.second);
-        return w.take();
-    });
+    const std::vector<std::string> refs =
+        spread.run("reference problem", opt.reference ? problems.size() : 0, [&](std::size_t i) {
+            const auto lines = referenceLines(problems[i]);
+            ByteWriter w;
+            w.put(lines.first);
+            w.put(lines.second);
+            return w.take();
+        });
     std::vector<campaign_spread::Maker> makers;
     for (const CampaignProblem &p : problems)
     {
         makers.push_back([&opt, &p] { return buildRegistryBenchmark(opt, p); });
         if (p.control && !opt.control.empty())
-            makers.push_back([&opt, &p] {
-                return buildControlBenchmark(p, opt.control, opt.runs, opt.time, opt.seed, opt.outdir);
-            });
+            makers.push_back(
+                [&opt, &p] { return buildControlBenchmark(p, opt.control, opt.runs, opt.time, opt.seed, opt.outdir); });
     }
     std::string csv = kReferenceHeader;
     for (const std::string &r : refs)
@@ -486,7 +485,7 @@ void runSpread(TaskSpreader &spread, const Options &opt, const std::vector<Campa
         std::rename(part.c_str(), (opt.outdir + "/reference.csv").c_str());
     }
 }
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {
@@ -495,7 +494,7 @@ int main(int argc, char **argv)
     const MpiLaunchScope mpi(argc, argv);
 #endif
     const Options opt = parse(argc, argv);
-    ompl::RNG::setSeed(opt.seed);  // before any RNG exists: fixed seeds for every planner and run
+    ompl::RNG::setSeed(opt.seed); // before any RNG exists: fixed seeds for every planner and run
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
 
     const auto field = std::make_shared<MeanderingJet>();
@@ -506,7 +505,7 @@ int main(int argc, char **argv)
     for (const CampaignProblem &p : makeStrongCurrentProblems())
         if (selected(opt, p))
             problems.push_back(p);
-    for (const std::string &name : opt.problems)  // a misspelt name must not be dropped in silence
+    for (const std::string &name : opt.problems) // a misspelt name must not be dropped in silence
     {
         bool known = name == "all";
         for (const auto &list : {makeCampaignProblems(field), makeStrongCurrentProblems()})
@@ -518,14 +517,14 @@ int main(int argc, char **argv)
     if (problems.empty())
         usage("no problem selected");
     {
-        std::error_code ec;  // the logs go into OUTDIR: made here, or refused before any run
+        std::error_code ec; // the logs go into OUTDIR: made here, or refused before any run
         std::filesystem::create_directories(opt.outdir, ec);
         if (ec || !std::filesystem::is_directory(opt.outdir))
             usage("cannot make the output directory '" + opt.outdir + "': " + (ec ? ec.message() : "a file is there"));
     }
     int status = 0;
     std::string failure;
-    TaskSpreader *spread = activeTaskSpreader();  // an MPI job of several ranks, or null
+    TaskSpreader *spread = activeTaskSpreader(); // an MPI job of several ranks, or null
     try
     {
         if (spread)

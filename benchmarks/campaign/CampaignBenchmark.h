@@ -16,11 +16,11 @@ namespace ompl_glider
 {
 struct BuiltBenchmark
 {
-    std::shared_ptr<void> setup;  ///< the SimpleSetup the benchmark refers to (kept alive)
+    std::shared_ptr<void> setup; ///< the SimpleSetup the benchmark refers to (kept alive)
     std::unique_ptr<ompl::tools::Benchmark> benchmark;
     ompl::tools::Benchmark::Request request;
-    std::string banner;  ///< printed before it runs ("problem islands: 5 runs x 12 planners, ...")
-    std::string log;     ///< OUTDIR/<problem>.log
+    std::string banner; ///< printed before it runs ("problem islands: 5 runs x 12 planners, ...")
+    std::string log;    ///< OUTDIR/<problem>.log
 };
 
 /// Runs a benchmark in this process, as the campaign always has, and writes its log.
@@ -32,4 +32,4 @@ inline void runBenchmark(BuiltBenchmark &b)
         throw std::runtime_error("cannot write " + b.log);
     std::cout << "  -> " << b.log << std::endl;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

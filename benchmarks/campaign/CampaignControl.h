@@ -91,16 +91,15 @@ inline void recordControlRun(const ompl::base::PlannerPtr &planner, ompl::tools:
     if (!path || path->getStateCount() == 0)
         return;
     const auto *last = path->getState(path->getStateCount() - 1)->as<TimeSE2StateSpace::StateType>();
-    const bool reached = !pdef->hasApproximateSolution() &&
-                         std::hypot(last->getX() - pr.goal.x, last->getY() - pr.goal.y) <= tolerance;
-    const double duration = path->length();  // the sum of the control durations
-    const HeadingFlight f = flyHeadingRoute(controlPathToHeadingRoute(*path), *ctx.field, ctx.environment.get(),
-                                            prop.diveSettings(), true);
+    const bool reached =
+        !pdef->hasApproximateSolution() && std::hypot(last->getX() - pr.goal.x, last->getY() - pr.goal.y) <= tolerance;
+    const double duration = path->length(); // the sum of the control durations
+    const HeadingFlight f =
+        flyHeadingRoute(controlPathToHeadingRoute(*path), *ctx.field, ctx.environment.get(), prop.diveSettings(), true);
     const Region &box = ctx.region;
     bool valid = !f.grounded && !f.ends.empty();
     for (const TimedPoint &q : f.track)
-        valid = valid && q.x >= box.xMin && q.x <= box.xMax && q.y >= box.yMin && q.y <= box.yMax &&
-                q.t <= box.tMax;
+        valid = valid && q.x >= box.xMin && q.x <= box.xMax && q.y >= box.yMin && q.y <= box.yMax && q.t <= box.tMax;
     if (valid)
     {
         const TimedPoint &e = f.ends.back();
@@ -128,9 +127,9 @@ inline void recordControlRun(const ompl::base::PlannerPtr &planner, ompl::tools:
 /// @p seconds each; writes OUTDIR/<problem>_control.log. Experiment parameters as the geometric experiment's, plus the
 /// control discretisation (propagation step, control durations, RK4 substeps, goal tolerance).
 inline std::unique_ptr<BuiltBenchmark> buildControlBenchmark(const CampaignProblem &p,
-                                                              const std::set<std::string> &names, unsigned runs,
-                                                              double seconds, std::uint32_t seed,
-                                                              const std::string &outdir)
+                                                             const std::set<std::string> &names, unsigned runs,
+                                                             double seconds, std::uint32_t seed,
+                                                             const std::string &outdir)
 {
     namespace ob = ompl::base;
     namespace ot = ompl::tools;
@@ -146,8 +145,8 @@ inline std::unique_ptr<BuiltBenchmark> buildControlBenchmark(const CampaignProbl
 
     auto built = std::make_unique<BuiltBenchmark>();
     built->setup = css;
-    built->benchmark = std::make_unique<ot::Benchmark>(*css, "glider " + p.name + "_control");  // the statistics
-    ot::Benchmark &b = *built->benchmark;                                 // script keeps the last word
+    built->benchmark = std::make_unique<ot::Benchmark>(*css, "glider " + p.name + "_control"); // the statistics
+    ot::Benchmark &b = *built->benchmark; // script keeps the last word
     b.addExperimentParameter("problem", "VARCHAR(64)", p.name);
     b.addExperimentParameter("description", "VARCHAR(256)", p.description);
     b.addExperimentParameter("field", "VARCHAR(64)", p.problem.field->name());
@@ -189,4 +188,4 @@ inline std::unique_ptr<BuiltBenchmark> buildControlBenchmark(const CampaignProbl
     built->log = outdir + "/" + p.name + "_control.log";
     return built;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -50,7 +50,7 @@ std::string pathJson(const og::PathGeometric &p)
     os << "]";
     return os.str();
 }
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {
@@ -86,8 +86,8 @@ int main(int argc, char **argv)
         og::SimpleSetupPtr ss = makeSimpleSetup(p.problem, &ctx);
         js << (firstProblem ? "" : ",") << "\"" << p.name << "\":{";
         firstProblem = false;
-        js << "\"start\":[" << p.problem.start.x << "," << p.problem.start.y << "],\"goal\":[" << p.problem.goal.x << ","
-           << p.problem.goal.y << "],\"regions\":[";
+        js << "\"start\":[" << p.problem.start.x << "," << p.problem.start.y << "],\"goal\":[" << p.problem.goal.x
+           << "," << p.problem.goal.y << "],\"regions\":[";
         bool firstRegion = true;
         if (p.environment)
             for (const auto &r : p.environment->regions())
@@ -144,8 +144,7 @@ int main(int argc, char **argv)
                     js << r.travelTime;
                 else
                     js << "null";
-                js
-                   << ",\"valid\":" << (r.valid ? "true" : "false") << ",\"states\":" << pathJson(ss->getSolutionPath())
+                js << ",\"valid\":" << (r.valid ? "true" : "false") << ",\"states\":" << pathJson(ss->getSolutionPath())
                    << "}";
                 firstPath = false;
             }

@@ -24,11 +24,11 @@ namespace ompl_glider
 /// @brief One campaign problem: the GliderProblem and its forbidden regions (null for open water).
 struct CampaignProblem
 {
-    std::string name;                               ///< "open_water", "islands", "ice", "closure", "jet_v020", ...
-    std::string description;                        ///< one line
-    GliderProblem problem;                          ///< field, box, t0, horizon, start, goal, V
-    std::shared_ptr<ForbiddenRegions> environment;  ///< forbidden regions (also in problem.environment)
-    std::string set{"classic"};                     ///< "classic" or "strong"
+    std::string name;                              ///< "open_water", "islands", "ice", "closure", "jet_v020", ...
+    std::string description;                       ///< one line
+    GliderProblem problem;                         ///< field, box, t0, horizon, start, goal, V
+    std::shared_ptr<ForbiddenRegions> environment; ///< forbidden regions (also in problem.environment)
+    std::string set{"classic"};                    ///< "classic" or "strong"
     /// Finest cell of the level-set reference (the campaign also solves at 2x and 4x this cell and extrapolates)
     double referenceCell{0.025};
     /// The optimum also by Zermelo shooting (ZermeloReference; open water of the classic set only)
@@ -161,11 +161,11 @@ inline std::vector<CampaignProblem> makeCampaignProblems(std::shared_ptr<const C
         c.description = "shipping lane x in [4.6, 5.4], y <= 2.2 closed during t in [0, 8]";
         c.problem = campaignBaseProblem(field);
         c.environment = std::make_shared<ForbiddenRegions>();
-        c.environment->add(std::make_shared<TimeWindowedZone>(
-            "lane", Polygon::rectangle(4.6, -4.0, 5.4, 2.2, "lane"), std::vector<Interval>{{0.0, 8.0}}));
+        c.environment->add(std::make_shared<TimeWindowedZone>("lane", Polygon::rectangle(4.6, -4.0, 5.4, 2.2, "lane"),
+                                                              std::vector<Interval>{{0.0, 8.0}}));
         c.problem.environment = c.environment;
         out.push_back(c);
     }
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -30,14 +30,8 @@ namespace campaign_spread
 /// The recorded experiment and the planners of a Benchmark (protected members, reached through a derived class).
 struct Access : ompl::tools::Benchmark
 {
-    static CompleteExperiment &experiment(ompl::tools::Benchmark &b)
-    {
-        return b.*(&Access::exp_);
-    }
-    static std::vector<ompl::base::PlannerPtr> &planners(ompl::tools::Benchmark &b)
-    {
-        return b.*(&Access::planners_);
-    }
+    static CompleteExperiment &experiment(ompl::tools::Benchmark &b) { return b.*(&Access::exp_); }
+    static std::vector<ompl::base::PlannerPtr> &planners(ompl::tools::Benchmark &b) { return b.*(&Access::planners_); }
 };
 
 inline void putMap(ByteWriter &w, const std::map<std::string, std::string> &m)
@@ -173,5 +167,5 @@ inline void spreadBenchmarks(TaskSpreader &spread, const std::vector<Maker> &mak
         std::cout << "  -> " << log << std::endl;
     }
 }
-}  // namespace campaign_spread
-}  // namespace ompl_glider
+} // namespace campaign_spread
+} // namespace ompl_glider

@@ -49,13 +49,14 @@ bool bruteForce(const std::vector<Point2> &r, const std::array<double, 4> &s)
     for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
     {
         const double o1 = o(s[0], s[1], s[2], s[3], r[j].x, r[j].y), o2 = o(s[0], s[1], s[2], s[3], r[i].x, r[i].y);
-        const double o3 = o(r[j].x, r[j].y, r[i].x, r[i].y, s[0], s[1]), o4 = o(r[j].x, r[j].y, r[i].x, r[i].y, s[2], s[3]);
+        const double o3 = o(r[j].x, r[j].y, r[i].x, r[i].y, s[0], s[1]),
+                     o4 = o(r[j].x, r[j].y, r[i].x, r[i].y, s[2], s[3]);
         if (o1 * o2 <= 0 && o3 * o4 <= 0)
             return true;
     }
     return false;
 }
-}  // namespace
+} // namespace
 
 static void BM_SegmentIndexed(benchmark::State &state)
 {

@@ -16,7 +16,7 @@ using namespace ompl_glider;
 
 namespace
 {
-constexpr std::size_t kNx = 120, kNy = 100, kNt = 41;  // ~ a 600 x 500 km region at 5 km, 10 days every 6 h
+constexpr std::size_t kNx = 120, kNy = 100, kNt = 41; // ~ a 600 x 500 km region at 5 km, 10 days every 6 h
 
 /// A smooth synthetic field on the mission-sized subset; nz depth layers (1 = surface forecast).
 GriddedData makeData(bool curvilinear, std::size_t nz)
@@ -32,7 +32,7 @@ GriddedData makeData(bool curvilinear, std::size_t nz)
             for (std::size_t i = 0; i < kNx; ++i)
             {
                 const double x = (double(i) - 60.0) * h, y = (double(j) - 50.0) * h;
-                const double a = 2e-7 * x;  // convergence angle grows with x
+                const double a = 2e-7 * x; // convergence angle grows with x
                 d.nodeX.push_back(x * std::cos(a) - y * std::sin(a));
                 d.nodeY.push_back(x * std::sin(a) + y * std::cos(a));
             }
@@ -126,10 +126,22 @@ void run(benchmark::State &state, bool curvilinear, std::size_t nz, bool jacobia
                    (jacobian ? " jacobian" : ""));
 }
 
-void BM_Rectilinear(benchmark::State &s) { run(s, false, 1, false); }
-void BM_Rectilinear3D(benchmark::State &s) { run(s, false, 6, false); }
-void BM_Projected(benchmark::State &s) { run(s, true, 1, false); }
-void BM_RectilinearJacobian(benchmark::State &s) { run(s, false, 1, true); }
+void BM_Rectilinear(benchmark::State &s)
+{
+    run(s, false, 1, false);
+}
+void BM_Rectilinear3D(benchmark::State &s)
+{
+    run(s, false, 6, false);
+}
+void BM_Projected(benchmark::State &s)
+{
+    run(s, true, 1, false);
+}
+void BM_RectilinearJacobian(benchmark::State &s)
+{
+    run(s, false, 1, true);
+}
 
 void allPairs(benchmark::internal::Benchmark *b)
 {
@@ -137,7 +149,7 @@ void allPairs(benchmark::internal::Benchmark *b)
         for (int t = 0; t < 4; ++t)
             b->Args({xy, t});
 }
-}  // namespace
+} // namespace
 
 BENCHMARK(BM_Rectilinear)->Apply(allPairs);
 BENCHMARK(BM_Rectilinear3D)->Args({1, 1})->Args({2, 2})->Args({1, 3});

@@ -26,7 +26,7 @@ using namespace ompl_glider;
 
 int main(int argc, char **argv)
 {
-    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);  // one "Solution found" line per search would bury the table
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN); // one "Solution found" line per search would bury the table
     double begin = 5.0, end = 21.0, fine = 0.02, spacing = 1.0, tol = 1e-3, coarseGrid = 0.0, grid = 0.4;
     double sx = 0.5, sy = -3.0, gx = 9.5, gy = 3.0;
     unsigned threads = 0;
@@ -85,7 +85,7 @@ int main(int argc, char **argv)
     p.windowBegin = begin;
     p.windowEnd = end;
     p.threads = threads;
-    p.progress = [](const std::string &line, bool done) {  // progress lines on stderr, as glider_plan prints them
+    p.progress = [](const std::string &line, bool done) { // progress lines on stderr, as glider_plan prints them
         std::fprintf(stderr, "\r%s%s", line.c_str(), done ? "\n" : "   ");
         std::fflush(stderr);
     };
@@ -107,8 +107,8 @@ int main(int argc, char **argv)
             out << s.tDep << "," << s.travelTime << "\n";
     }
     const double rel = (opt.travelTime - brute.travelTime) / brute.travelTime;
-    std::printf("meandering jet, start (%g, %g) -> goal (%g, %g), ZA*TVE grid %g, 3 sectors, V = 0.5\n", sx, sy, gx,
-                gy, grid);
+    std::printf("meandering jet, start (%g, %g) -> goal (%g, %g), ZA*TVE grid %g, 3 sectors, V = 0.5\n", sx, sy, gx, gy,
+                grid);
     std::printf("departure window [%g, %g] (flow period 2 pi / 0.4 = %.3f)\n", begin, end, 2 * M_PI / 0.4);
     std::printf("brute force : %zu searches (spacing %g), %.3f s wall: best departure %.4f, travel time %.6f\n",
                 bruteCalls, fine, brute.wallSeconds, brute.departure, brute.travelTime);

@@ -25,14 +25,8 @@ namespace
 class LayeredJet : public CurrentField
 {
 public:
-    double maxSpeed(const Region &r) const override
-    {
-        return jet_.maxSpeed(r) + 0.15;
-    }
-    std::string name() const override
-    {
-        return "layered jet";
-    }
+    double maxSpeed(const Region &r) const override { return jet_.maxSpeed(r) + 0.15; }
+    std::string name() const override { return "layered jet"; }
 
 protected:
     Velocity evaluate(double x, double y, double z, double t) const override
@@ -64,13 +58,13 @@ double now()
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {
     const int legs = argc > 1 ? std::atoi(argv[1]) : 400;
-    const unsigned maxThreads = argc > 2 ? static_cast<unsigned>(std::atoi(argv[2]))
-                                         : std::max(2u, std::thread::hardware_concurrency());
+    const unsigned maxThreads =
+        argc > 2 ? static_cast<unsigned>(std::atoi(argv[2])) : std::max(2u, std::thread::hardware_concurrency());
     DiveProfileParams d;
     d.zMin = 5;
     d.zMax = 1000;

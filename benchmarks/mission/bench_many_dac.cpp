@@ -59,7 +59,7 @@ std::string writeDac(const fs::path &dir, int n, int repeat, const MissionProble
             for (int r = 0; r < repeat; ++r)
                 out << formatIsoTime(t - r) << "," << lon << "," << lat << "," << u << "," << v << "\n";
         }
-    out << formatIsoTime(end) << ",-52.7,47.9,,\n";  // the last fix: where the mission starts
+    out << formatIsoTime(end) << ",-52.7,47.9,,\n"; // the last fix: where the mission starts
     return f.string();
 }
 } // namespace
@@ -136,8 +136,8 @@ int main(int argc, char **argv)
         const auto e0 = std::chrono::steady_clock::now();
         for (int i = 0; i < 200000; ++i)
             sink += problem.getField()->velocity(ux(rng), uy(rng), 0.0, from + span * ut(rng)).u;
-        const double evalNs = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - e0).count() /
-                              200000.0;
+        const double evalNs =
+            std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - e0).count() / 200000.0;
         if (!std::isfinite(sink))
             std::printf("(a velocity not finite)\n");
         // the largest eastward correction along the region's middle line at the departure (the corrected field less
@@ -155,8 +155,8 @@ int main(int argc, char **argv)
             }
         }
         const auto &o = problem.observations();
-        std::printf("%6d %6zu %10.2f %10.2f %8.2f %10.0f %12.2f %12.3f\n", n, o ? o->correction.used : 0, correct,
-                    plan, plain > 0.0 ? (correct + plan) / plain : NAN, evalNs,
+        std::printf("%6d %6zu %10.2f %10.2f %8.2f %10.0f %12.2f %12.3f\n", n, o ? o->correction.used : 0, correct, plan,
+                    plain > 0.0 ? (correct + plan) / plain : NAN, evalNs,
                     r.plan.solved ? r.plan.travelTime / 3600.0 : NAN, largest);
     }
     return 0;

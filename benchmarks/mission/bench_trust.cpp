@@ -48,9 +48,10 @@ int main(int argc, char **argv)
                 check ? "on" : "off");
     std::printf("| flow | V | pairs | reachable | given a route | median | p95 | worst | within 0.5 %% | "
                 "default wall time (median, max s) |\n|---|---|---|---|---|---|---|---|---|---|\n");
-    const std::vector<std::pair<std::string, std::vector<double>>> speeds = {
-        {"jet", {0.5, 0.3, 0.2, 0.15, 0.1}}, {"double gyre", {0.5, 0.3}}, {"Rankine vortex", {0.5, 0.3}},
-        {"shear", {0.5, 0.3}}};
+    const std::vector<std::pair<std::string, std::vector<double>>> speeds = {{"jet", {0.5, 0.3, 0.2, 0.15, 0.1}},
+                                                                             {"double gyre", {0.5, 0.3}},
+                                                                             {"Rankine vortex", {0.5, 0.3}},
+                                                                             {"shear", {0.5, 0.3}}};
     for (trust::Flow flow : trust::flows())
     {
         flow.mission.planner.globalCheck = check;

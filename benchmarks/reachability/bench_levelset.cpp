@@ -46,8 +46,7 @@ struct Row
     double meanErr{0}, maxErr{0}, meanSeconds{0};
 };
 
-template <class F>
-Row measure(const std::vector<Pair> &pairs, F &&solve)
+template <class F> Row measure(const std::vector<Pair> &pairs, F &&solve)
 {
     Row r;
     for (const Pair &p : pairs)
@@ -61,7 +60,7 @@ Row measure(const std::vector<Pair> &pairs, F &&solve)
     }
     return r;
 }
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {
@@ -83,8 +82,8 @@ int main(int argc, char **argv)
     std::printf("Error against the shooting optimum vs wall time, %zu jet crossings (mean over pairs)\n\n",
                 pairs.size());
     std::printf("| method | resolution | mean error | max error | mean time (s) |\n|---|---|---|---|---|\n");
-    const std::vector<double> cells = quick ? std::vector<double>{0.1, 0.05} :
-                                              std::vector<double>{0.1, 0.07, 0.05, 0.035, 0.025};
+    const std::vector<double> cells =
+        quick ? std::vector<double>{0.1, 0.05} : std::vector<double>{0.1, 0.07, 0.05, 0.035, 0.025};
     for (double h : cells)
     {
         LevelSetParams lp;

@@ -82,7 +82,7 @@ const char *planners[][2] = {{"default", "{name: ZA*TVE}"},
                              {"ZA*TVE", "{name: ZA*TVE}"},
                              {"Isochrone", "{name: Isochrone}"},
                              {"LevelSet", "{name: LevelSet}"}};
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {
@@ -107,7 +107,8 @@ int main(int argc, char **argv)
     if (onlyPairs)
         goto randomPairs;
     std::printf("Jet crossing (1,-3) -> (8,3); reference: LevelSet at cell %g\n\n", fine);
-    std::printf("| V | reference | planner | used | travel time | vs reference | wall s |\n|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| V | reference | planner | used | travel time | vs reference | wall s |\n|---|---|---|---|---|---|---|\n");
     for (double V : {0.3, 0.2, 0.15, 0.1})
     {
         const Outcome r = plan(jetMission(V, 1, -3, 8, 3, ref), true, "LevelSet");
@@ -116,16 +117,18 @@ int main(int argc, char **argv)
             const bool alone = std::strcmp(p[0], "default") != 0;
             const Outcome o = plan(jetMission(V, 1, -3, 8, 3, p[1]), alone, alone ? p[0] : "");
             std::printf("| %.2f | %.4f | %s | %s | %s | %s | %.2f |\n", V, r.travelTime, p[0],
-                        o.solved ? o.planner.c_str() : "-",
-                        o.solved ? std::to_string(o.travelTime).c_str() : "no path",
-                        o.solved && r.solved ? (std::to_string(100.0 * (o.travelTime / r.travelTime - 1.0)) + " %").c_str() : "-",
+                        o.solved ? o.planner.c_str() : "-", o.solved ? std::to_string(o.travelTime).c_str() : "no path",
+                        o.solved && r.solved
+                            ? (std::to_string(100.0 * (o.travelTime / r.travelTime - 1.0)) + " %").c_str()
+                            : "-",
                         o.seconds);
         }
     }
 
     std::printf("\nTime-dependent double gyre (A 0.3, eps 0.25, omega 2 pi / 10; flow up to about 0.94), (0.3,0.3) -> "
                 "(1.6,0.7); reference: LevelSet at cell 0.005\n\n");
-    std::printf("| V | reference | planner | used | travel time | vs reference | wall s |\n|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| V | reference | planner | used | travel time | vs reference | wall s |\n|---|---|---|---|---|---|---|\n");
     for (double V : {0.15})
     {
         const Outcome r = plan(gyreMission(V, "{name: LevelSet, parameters: {resolution: 0.005}}"), true, "LevelSet");
@@ -134,15 +137,17 @@ int main(int argc, char **argv)
             const bool alone = std::strcmp(p[0], "default") != 0;
             const Outcome o = plan(gyreMission(V, p[1]), alone, alone ? p[0] : "");
             std::printf("| %.2f | %.4f | %s | %s | %s | %s | %.2f |\n", V, r.travelTime, p[0],
-                        o.solved ? o.planner.c_str() : "-",
-                        o.solved ? std::to_string(o.travelTime).c_str() : "no path",
-                        o.solved && r.solved ? (std::to_string(100.0 * (o.travelTime / r.travelTime - 1.0)) + " %").c_str() : "-",
+                        o.solved ? o.planner.c_str() : "-", o.solved ? std::to_string(o.travelTime).c_str() : "no path",
+                        o.solved && r.solved
+                            ? (std::to_string(100.0 * (o.travelTime / r.travelTime - 1.0)) + " %").c_str()
+                            : "-",
                         o.seconds);
         }
     }
 
 randomPairs:
-    std::printf("\nRandom jet pairs (start in y < -1, goal in y > 1, across the jet; seed 7): share solved, mean wall s\n\n");
+    std::printf(
+        "\nRandom jet pairs (start in y < -1, goal in y > 1, across the jet; seed 7): share solved, mean wall s\n\n");
     std::printf("| V | planner | solved | mean wall s |\n|---|---|---|---|\n");
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> ux(0.5, 9.5), uys(-3.5, -1.0), uyg(1.0, 3.5);

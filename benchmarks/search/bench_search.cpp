@@ -29,7 +29,7 @@
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "planners/TveSearch.h"  // internal to the library (src/)
+#include "planners/TveSearch.h" // internal to the library (src/)
 
 using namespace ompl_glider;
 
@@ -52,7 +52,7 @@ std::vector<Config> makeConfigs()
     astarEq1.coarseFactor = 1;
     astarEq1.tightBounds = false;
     c.push_back({"A*TVE, Eq. 1", astarEq1});
-    TveOptions before;  // the earlier default: Eq. 1 bounds, certify_tolerance 0.1, full search
+    TveOptions before; // the earlier default: Eq. 1 bounds, certify_tolerance 0.1, full search
     before.coarseFactor = 1;
     before.tightBounds = false;
     before.certifyTolerance = 0.1;
@@ -94,8 +94,8 @@ struct Run
     TveOutcome outcome{TveOutcome::Exhausted};
     double time{0.0};
     std::uint64_t cfc{0}, cmc{0}, expanded{0};
-    double wall{0.0};  // seconds
-    unsigned rounds{0}, blocks{0};  // coarse-to-fine: fine searches and the final corridor (0: full search)
+    double wall{0.0};              // seconds
+    unsigned rounds{0}, blocks{0}; // coarse-to-fine: fine searches and the final corridor (0: full search)
 };
 
 Run runOnce(TveSearch &search, double sx, double sy, double t0, double gx, double gy, const TveOptions &o)
@@ -193,7 +193,7 @@ std::shared_ptr<GriddedCurrentField> makeForecast()
     d.time.clear();
     for (int t = 0; t <= 10; ++t)
         d.time.push_back(10.0 * t);
-    const MeanderingJet jet;  // two jets: the jet's closed form at y - 8 and (reversed) at y + 8
+    const MeanderingJet jet; // two jets: the jet's closed form at y - 8 and (reversed) at y + 8
     for (double t : d.time)
         for (std::size_t j = 0; j < d.ny; ++j)
             for (std::size_t i = 0; i < d.nx; ++i)
@@ -213,16 +213,16 @@ std::shared_ptr<GriddedCurrentField> makeForecast()
     o.beyond = BeyondForecast::HoldLast;
     return std::make_shared<GriddedCurrentField>(std::move(d), o);
 }
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     int randomPairs = 100;
     bool perPair = false, gridded = true, griddedTve = false, jetProblems = true;
-    std::string griddedOnly;  // --gridded-config NAME: only that configuration on the gridded problem
+    std::string griddedOnly; // --gridded-config NAME: only that configuration on the gridded problem
     double griddedGrid = 0.045;
-    int griddedPairs = 0;  // --gridded-pairs N: coarse-to-fine against the full search on N random water pairs
+    int griddedPairs = 0; // --gridded-pairs N: coarse-to-fine against the full search on N random water pairs
     for (int i = 1; i < argc; ++i)
     {
         const std::string a = argv[i];
@@ -260,48 +260,49 @@ int main(int argc, char **argv)
         randomPairs = 0;
     if (jetProblems)
     {
-    std::printf("Meandering jet ([EichhornRAS] Sec. 6.1), V = 0.5, grid 0.4, 3 sectors, horizon 60.\n"
-                "CFC = travel-time calls, CMC = current-model calls (velocity + Jacobian), expanded = vertices taken "
-                "from the queue.\n\n");
-    std::printf("| problem | configuration | CFC | CMC | expanded | wall [ms] | travel time | rel. deviation from TVE "
-                "|\n|---|---|---|---|---|---|---|---|\n");
-    {
-        GliderProblem p;
-        p.field = jet;
-        p.start.x = p.start.y = p.goal.x = p.goal.y = 0.0;
-        auto ctx = makeGliderContext(p);
-        TveSearch search(ctx, 0.4, 3);
-        const double starts[5][2] = {{0.4, -3.2}, {2.0, -2.4}, {3.2, -1.6}, {4.8, -0.4}, {6.0, 0.4}};
-        for (int s = 0; s < 5; ++s)
+        std::printf(
+            "Meandering jet ([EichhornRAS] Sec. 6.1), V = 0.5, grid 0.4, 3 sectors, horizon 60.\n"
+            "CFC = travel-time calls, CMC = current-model calls (velocity + Jacobian), expanded = vertices taken "
+            "from the queue.\n\n");
+        std::printf(
+            "| problem | configuration | CFC | CMC | expanded | wall [ms] | travel time | rel. deviation from TVE "
+            "|\n|---|---|---|---|---|---|---|---|\n");
         {
-            char name[64];
-            std::snprintf(name, sizeof name, "Table 4 SP%d", s + 1);
+            GliderProblem p;
+            p.field = jet;
+            p.start.x = p.start.y = p.goal.x = p.goal.y = 0.0;
+            auto ctx = makeGliderContext(p);
+            TveSearch search(ctx, 0.4, 3);
+            const double starts[5][2] = {{0.4, -3.2}, {2.0, -2.4}, {3.2, -1.6}, {4.8, -0.4}, {6.0, 0.4}};
+            for (int s = 0; s < 5; ++s)
+            {
+                char name[64];
+                std::snprintf(name, sizeof name, "Table 4 SP%d", s + 1);
+                Run tve;
+                for (std::size_t c = 0; c < configs.size(); ++c)
+                {
+                    const Run r = runOnce(search, starts[s][0], starts[s][1], 0.0, 7.6, 1.2, configs[c].options);
+                    if (c == 0)
+                        tve = r;
+                    printRow(name, configs[c].name, r, tve);
+                }
+            }
+        }
+        for (const CampaignProblem &cp : makeCampaignProblems(jet))
+        {
+            auto ctx = makeGliderContext(cp.problem);
+            TveSearch search(ctx, 0.4, 3);
             Run tve;
             for (std::size_t c = 0; c < configs.size(); ++c)
             {
-                const Run r = runOnce(search, starts[s][0], starts[s][1], 0.0, 7.6, 1.2, configs[c].options);
+                const Run r = runOnce(search, cp.problem.start.x, cp.problem.start.y, cp.problem.t0, cp.problem.goal.x,
+                                      cp.problem.goal.y, configs[c].options);
                 if (c == 0)
                     tve = r;
-                printRow(name, configs[c].name, r, tve);
+                const std::string name = "campaign " + cp.name;
+                printRow(name.c_str(), configs[c].name, r, tve);
             }
         }
-    }
-    for (const CampaignProblem &cp : makeCampaignProblems(jet))
-    {
-        auto ctx = makeGliderContext(cp.problem);
-        TveSearch search(ctx, 0.4, 3);
-        Run tve;
-        for (std::size_t c = 0; c < configs.size(); ++c)
-        {
-            const Run r = runOnce(search, cp.problem.start.x, cp.problem.start.y, cp.problem.t0, cp.problem.goal.x,
-                                  cp.problem.goal.y, configs[c].options);
-            if (c == 0)
-                tve = r;
-            const std::string name = "campaign " + cp.name;
-            printRow(name.c_str(), configs[c].name, r, tve);
-        }
-    }
-
     }
     if (randomPairs > 0)
     {
@@ -340,19 +341,19 @@ int main(int argc, char **argv)
                     allEqual = false;
                 if (perPair)
                 {
-                    std::printf("| %d%s | (%.1f, %.1f) | (%.1f, %.1f) | %s | %llu | %llu | %llu | %.1f | %.9f | %.1e |\n",
-                                n, upstream ? " up" : "", sx, sy, gx, gy, configs[c].name,
-                                static_cast<unsigned long long>(r.cfc), static_cast<unsigned long long>(r.cmc),
-                                static_cast<unsigned long long>(r.expanded), 1e3 * r.wall, r.time,
-                                relDev(r, tve));
+                    std::printf(
+                        "| %d%s | (%.1f, %.1f) | (%.1f, %.1f) | %s | %llu | %llu | %llu | %.1f | %.9f | %.1e |\n", n,
+                        upstream ? " up" : "", sx, sy, gx, gy, configs[c].name, static_cast<unsigned long long>(r.cfc),
+                        static_cast<unsigned long long>(r.cmc), static_cast<unsigned long long>(r.expanded),
+                        1e3 * r.wall, r.time, relDev(r, tve));
                 }
             }
         }
         char title[160];
         std::snprintf(title, sizeof title, "Totals over %d random jet pairs (lattice points, seed 1):", randomPairs);
         printTotals(title, configs, all);
-        std::snprintf(title, sizeof title, "Totals over the %d of them whose goal lies upstream (west) of the start:",
-                      up[0].pairs);
+        std::snprintf(title, sizeof title,
+                      "Totals over the %d of them whose goal lies upstream (west) of the start:", up[0].pairs);
         printTotals(title, configs, up);
     }
 
@@ -381,7 +382,7 @@ int main(int argc, char **argv)
         std::printf("| problem | configuration | CFC | CMC | expanded | wall [ms] | travel time | rel. deviation from "
                     "TVE |\n|---|---|---|---|---|---|---|---|\n");
         Run tve;
-        tve.outcome = TveOutcome::Terminated;  // not run
+        tve.outcome = TveOutcome::Terminated; // not run
         for (std::size_t c = griddedTve ? 0 : 1; c < configs.size(); ++c)
         {
             if (!griddedOnly.empty() && griddedOnly != configs[c].name)
@@ -458,8 +459,8 @@ int main(int argc, char **argv)
                 if (dev <= 1e-9)
                     ++equal;
             }
-            std::printf("| %d | (%.2f, %.2f) | (%.2f, %.2f) | %llu | %.0f | %llu | %.0f | %u | %u | %.6f | %.1e |\n", k + 1,
-                        sx, sy, gx, gy, static_cast<unsigned long long>(a.cfc), 1e3 * a.wall,
+            std::printf("| %d | (%.2f, %.2f) | (%.2f, %.2f) | %llu | %.0f | %llu | %.0f | %u | %u | %.6f | %.1e |\n",
+                        k + 1, sx, sy, gx, gy, static_cast<unsigned long long>(a.cfc), 1e3 * a.wall,
                         static_cast<unsigned long long>(b.cfc), 1e3 * b.wall, b.rounds, b.blocks, a.time, dev);
         }
         std::printf("\nTotals: full search %llu CFC / %llu CMC / %.1f s; coarse-to-fine %llu CFC / %llu CMC / %.1f s "

@@ -31,8 +31,8 @@ using namespace ompl_glider;
 namespace
 {
 const std::vector<std::string> kMethods = {"init_optim", "optim", "cts_astar", "direct"};
-constexpr double kLengthUnit = 10000.0;  // jet: metres per length unit
-constexpr double kTimeUnit = 12500.0;    // jet: seconds per time unit (V = 0.5 -> 0.4 m/s)
+constexpr double kLengthUnit = 10000.0; // jet: metres per length unit
+constexpr double kTimeUnit = 12500.0;   // jet: seconds per time unit (V = 0.5 -> 0.4 m/s)
 
 struct Pair
 {
@@ -52,8 +52,8 @@ bool inside(const std::vector<std::pair<double, double>> &b, Point2 p, double ma
 }
 
 /// Jet pairs: start in x 2..8, goal 20..28 units away (200-280 km: 4 days at 0.4 m/s cover 138 km in still water,
-/// the jet adds up to 0.8 m/s) within 60 degrees of east, two islands of 15 x 10 km near the straight line (at 35 % and 65 %, offset
-/// up to 10 km).
+/// the jet adds up to 0.8 m/s) within 60 degrees of east, two islands of 15 x 10 km near the straight line (at 35 % and
+/// 65 %, offset up to 10 km).
 std::vector<Pair> jetPairs(int n, unsigned seed)
 {
     std::mt19937 rng(seed);
@@ -148,7 +148,8 @@ ForecastIslands writeForecast(const std::string &path)
                 const Velocity c = jet.velocity(xs[i] / kLengthUnit, ys[j] / kLengthUnit, 0.0, ts[k] / kTimeUnit);
                 double uu = 0.8 * c.u, vv = 0.8 * c.v;
                 // two eddies (Gaussian vortices of 30 km radius, 0.3 m/s), drifting west at 2 km/h
-                for (const auto &[ex, ey, s] : {std::array<double, 3>{260e3, -70e3, 1.0}, std::array<double, 3>{120e3, 80e3, -1.0}})
+                for (const auto &[ex, ey, s] :
+                     {std::array<double, 3>{260e3, -70e3, 1.0}, std::array<double, 3>{120e3, 80e3, -1.0}})
                 {
                     const double cx = ex - 0.55 * ts[k], dx = xs[i] - cx, dy = ys[j] - ey;
                     const double g = 0.3 * s * std::exp(-(dx * dx + dy * dy) / (2.0 * 30e3 * 30e3)) / 30e3 * 1.65;
@@ -221,7 +222,8 @@ std::vector<Pair> forecastPairs(int n, unsigned seed, const ForecastIslands &isl
         {
             const double cx = 0.5 * (b[0].first + b[1].first), cy = 0.5 * (b[0].second + b[2].second);
             const double ex = p.goal.x - p.start.x, ey = p.goal.y - p.start.y;
-            const double q = std::clamp(((cx - p.start.x) * ex + (cy - p.start.y) * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+            const double q =
+                std::clamp(((cx - p.start.x) * ex + (cy - p.start.y) * ey) / (ex * ex + ey * ey), 0.0, 1.0);
             near = near || std::hypot(p.start.x + q * ex - cx, p.start.y + q * ey - cy) < 25e3;
             clear = clear && !inside(b, p.start, 8e3) && !inside(b, p.goal, 8e3);
         }
@@ -255,7 +257,7 @@ MissionSpec forecastMission(const Pair &p, double speedMs, const std::string &fi
 struct Stat
 {
     std::vector<double> diff, time, remaining;
-    int grounded{0}, better{0};  // stopped on land; pairs where the method leaves less than Init-Optim
+    int grounded{0}, better{0}; // stopped on land; pairs where the method leaves less than Init-Optim
 };
 
 double mean(const std::vector<double> &v)
@@ -306,23 +308,24 @@ void runScenario(const char *title, const std::vector<MissionSpec> &missions, do
         std::fprintf(stderr, "%s: pair %zu/%zu done\n", title, i + 1, missions.size());
     }
     std::printf("\n%s (%zu start/goal pairs)\n\n", title, missions.size());
-    std::printf("| method | remaining distance, km: mean (std) | difference to Init-Optim, km: mean (std) | "
-                "pairs it beats Init-Optim | stopped on land | computing time, s: mean (std) |\n|---|---|---|---|---|---|\n");
+    std::printf(
+        "| method | remaining distance, km: mean (std) | difference to Init-Optim, km: mean (std) | "
+        "pairs it beats Init-Optim | stopped on land | computing time, s: mean (std) |\n|---|---|---|---|---|---|\n");
     const char *names[] = {"Init-Optim", "Optim", "CTS-A*", "Direct to goal"};
     for (std::size_t k = 0; k < kMethods.size(); ++k)
     {
         const Stat &s = stats[kMethods[k]];
         std::printf("| %s | %.1f (%.1f) | %.1f (%.1f) | %d | %d | %.2f (%.2f) |\n", names[k], mean(s.remaining),
-                    stdev(s.remaining), mean(s.diff), stdev(s.diff), s.better, s.grounded, mean(s.time),
-                    stdev(s.time));
+                    stdev(s.remaining), mean(s.diff), stdev(s.diff), s.better, s.grounded, mean(s.time), stdev(s.time));
     }
     std::fflush(stdout);
 }
 
 void conversion()
 {
-    const std::vector<std::array<double, 4>> rows = {{1.0, -3.0, 8.0, 3.0}, {1.0, 3.0, 9.0, -2.5}, {2.0, -3.5, 7.0, 3.5},
-                                                     {0.5, -2.0, 9.5, 2.0}, {2.0, 3.5, 8.0, -3.5}, {0.5, 3.0, 5.0, -3.0}};
+    const std::vector<std::array<double, 4>> rows = {{1.0, -3.0, 8.0, 3.0}, {1.0, 3.0, 9.0, -2.5},
+                                                     {2.0, -3.5, 7.0, 3.5}, {0.5, -2.0, 9.5, 2.0},
+                                                     {2.0, 3.5, 8.0, -3.5}, {0.5, 3.0, 5.0, -3.0}};
     std::printf("Lattice (ZA*TVE + smoothing + refinement) paths flown as stints, the unstarred jet problems of "
                 "test_planner_vs_optimum (1 h = 0.288 time units)\n\n| stint length | mean loss | worst loss | "
                 "stints (mean) | conversion time, s (mean) |\n|---|---|---|---|---|\n");
@@ -377,11 +380,11 @@ void drawMap(const std::string &file, int index, int pairs, unsigned seed)
     std::printf("map of pair %d written to %s (Init-Optim remaining %.1f km)\n", index, file.c_str(),
                 r.plan.stints->plan.remainingDistance * kLengthUnit / 1000.0);
 }
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {
-    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);  // one line per solve would drown the tables
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN); // one line per solve would drown the tables
     int pairs = 20, mapPair = 0;
     unsigned seed = 14;
     std::string scenario = "all", dir = ".", mapFile;
@@ -449,7 +452,8 @@ int main(int argc, char **argv)
             for (const Pair &p : ps)
                 ms.push_back(jetMission(p, v));
             char title[160];
-            std::snprintf(title, sizeof title, "Meandering jet with two islands near each route, V = %.1f m/s, 8 h stints, 4 days", v);
+            std::snprintf(title, sizeof title,
+                          "Meandering jet with two islands near each route, V = %.1f m/s, 8 h stints, 4 days", v);
             runScenario(title, ms, kLengthUnit);
         }
     }
@@ -464,7 +468,8 @@ int main(int argc, char **argv)
             for (const Pair &p : ps)
                 ms.push_back(forecastMission(p, v, file));
             char title[160];
-            std::snprintf(title, sizeof title, "NetCDF forecast (jet and eddies, two islands), V = %.1f m/s, 8 h stints, 4 days", v);
+            std::snprintf(title, sizeof title,
+                          "NetCDF forecast (jet and eddies, two islands), V = %.1f m/s, 8 h stints, 4 days", v);
             runScenario(title, ms, 1.0);
         }
     }

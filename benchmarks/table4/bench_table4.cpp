@@ -25,7 +25,7 @@
 #include "../campaign/CampaignProblems.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "planners/TveSearch.h"  // internal to the library (src/)
+#include "planners/TveSearch.h" // internal to the library (src/)
 #include "ompl_glider/planners/ZAStarTVE.h"
 
 using namespace ompl_glider;
@@ -39,7 +39,7 @@ struct Cell
     std::uint64_t cfc{0}, cmc{0}, expanded{0};
     bool valid{false};
 };
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv)
 {
@@ -74,7 +74,8 @@ int main(int argc, char **argv)
         else
         {
             std::fprintf(stderr,
-                         "usage: %s [--delta-phi-max DEG] [--course-extrapolation K] [--goal X,Y] [--random-pairs N] [--certify TOL] [--loose-bounds]\n",
+                         "usage: %s [--delta-phi-max DEG] [--course-extrapolation K] [--goal X,Y] [--random-pairs N] "
+                         "[--certify TOL] [--loose-bounds]\n",
                          argv[0]);
             return 2;
         }
@@ -215,8 +216,8 @@ int main(int argc, char **argv)
             for (int c = 0; c < 3; ++c)
                 r[c] = search.run(cp.problem.start.x, cp.problem.start.y, cp.problem.t0, cp.problem.goal.x,
                                   cp.problem.goal.y, opts[c]);
-            std::printf("  %-10s %.6f / %.6f / %.6f  (%+.2f %% / %+.2f %%)  CFC %llu / %llu / %llu\n",
-                        cp.name.c_str(), r[0].travelTime, r[1].travelTime, r[2].travelTime,
+            std::printf("  %-10s %.6f / %.6f / %.6f  (%+.2f %% / %+.2f %%)  CFC %llu / %llu / %llu\n", cp.name.c_str(),
+                        r[0].travelTime, r[1].travelTime, r[2].travelTime,
                         100 * (r[1].travelTime / r[0].travelTime - 1), 100 * (r[2].travelTime / r[0].travelTime - 1),
                         static_cast<unsigned long long>(r[0].costFunctionCalls),
                         static_cast<unsigned long long>(r[1].costFunctionCalls),

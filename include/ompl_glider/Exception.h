@@ -16,21 +16,14 @@ namespace ompl_glider
 class Error : public std::runtime_error
 {
 public:
-    explicit Error(const std::string &what) : std::runtime_error(what)
-    {
-    }
+    explicit Error(const std::string &what) : std::runtime_error(what) {}
     /// @brief An error about the setting @p field (the thrower's name for it: "NetCdfCurrentOptions::timeUnits" in
     /// the forecast reader, a dotted mission field above it).
-    Error(const std::string &what, std::string field) : std::runtime_error(what), field_(std::move(field))
-    {
-    }
+    Error(const std::string &what, std::string field) : std::runtime_error(what), field_(std::move(field)) {}
     /// @brief The setting at fault; empty when the error is not about one setting.
-    const std::string &field() const
-    {
-        return field_;
-    }
+    const std::string &field() const { return field_; }
 
 private:
     std::string field_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

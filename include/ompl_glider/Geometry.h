@@ -10,16 +10,16 @@ namespace ompl_glider
 /// @brief A point of the plane (planning frame: metres, or dimensionless for analytic flows).
 struct Point2
 {
-    double x{0.0};  ///< east (planning frame)
-    double y{0.0};  ///< north (planning frame)
+    double x{0.0}; ///< east (planning frame)
+    double y{0.0}; ///< north (planning frame)
 };
 
 /// @brief A position of the planning frame at a time: a waypoint of a path, a point of a flown or backtracked track.
 struct TimedPoint
 {
-    double x{0.0};  ///< east (planning frame)
-    double y{0.0};  ///< north (planning frame)
-    double t{0.0};  ///< time at the point (the departure time at a path's start)
+    double x{0.0}; ///< east (planning frame)
+    double y{0.0}; ///< north (planning frame)
+    double t{0.0}; ///< time at the point (the departure time at a path's start)
 };
 
 /// @brief An axis-aligned box of the planning frame.
@@ -34,23 +34,23 @@ struct Box
 /// @brief A straight segment of the plane (an edge of land's boundary, a leg).
 struct Segment2
 {
-    Point2 a;  ///< one end
-    Point2 b;  ///< the other end
+    Point2 a; ///< one end
+    Point2 b; ///< the other end
 };
 
 /// @brief A horizontal velocity (u eastward / along x, v northward / along y): a current, a wind or a glider's
 /// velocity through the water, in the units of its field.
 struct Velocity
 {
-    double u{0.0};  ///< x component
-    double v{0.0};  ///< y component
+    double u{0.0}; ///< x component
+    double v{0.0}; ///< y component
 };
 
 /// @brief A geographic position in degrees.
 struct LonLat
 {
-    double lon{0.0};  ///< longitude, degrees east
-    double lat{0.0};  ///< latitude, degrees north
+    double lon{0.0}; ///< longitude, degrees east
+    double lat{0.0}; ///< latitude, degrees north
 };
 
 /// @brief A longitude in any convention (0..360, -180..180, or any whole number of turns off) as the one value
@@ -58,9 +58,9 @@ struct LonLat
 /// position written in two conventions gives the same double. NaN and infinities give NaN.
 inline double normalizeLongitude(double lon)
 {
-    double l = std::remainder(lon, 360.0);  // [-180, 180]
+    double l = std::remainder(lon, 360.0); // [-180, 180]
     if (l >= 180.0)
         l -= 360.0;
     return l;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

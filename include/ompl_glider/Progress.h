@@ -11,4 +11,4 @@ namespace ompl_glider
 /// @brief Receives a progress line; @p done is true for the last line of a phase (e.g. "12/12 departures searched").
 /// An empty sink reports nothing.
 using ProgressSink = std::function<void(const std::string &line, bool done)>;
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -9,11 +9,11 @@
 namespace ompl_glider
 {
 // The work a planner parameter controls, refused before the search with the estimate (PipelinePlanner::prepare())
-inline constexpr double kMaxLevelSetSteps = 1e6;   ///< level-set time steps over the planning window
-inline constexpr double kMaxLevelSetWork = 2e11;   ///< level-set grid nodes x time steps
-inline constexpr double kMaxWavefrontNodes = 1e7;  ///< Wavefront space-time nodes before the fastest arrival
-inline constexpr double kMaxStintBearings = 360;   ///< CTS-A* bearings per expansion (1 degree)
-inline constexpr double kMaxStintFlights = 7.2e7;  ///< CTS-A* bearings x its expansion cap
+inline constexpr double kMaxLevelSetSteps = 1e6;  ///< level-set time steps over the planning window
+inline constexpr double kMaxLevelSetWork = 2e11;  ///< level-set grid nodes x time steps
+inline constexpr double kMaxWavefrontNodes = 1e7; ///< Wavefront space-time nodes before the fastest arrival
+inline constexpr double kMaxStintBearings = 360;  ///< CTS-A* bearings per expansion (1 degree)
+inline constexpr double kMaxStintFlights = 7.2e7; ///< CTS-A* bearings x its expansion cap
 
 /// @brief The memory limit in bytes: the environment variable OMPL_GLIDER_MEMORY_LIMIT (bytes, or a number with
 /// the suffix K, M, G or T, powers of 1024) when set, else half of the physical memory, and never more than three
@@ -27,4 +27,4 @@ std::string formatBytes(double bytes);
 /// @brief Throws Error "<what> needs about <bytes>, more than the memory limit of <limit> (...): <hint>" when
 /// @p bytes exceeds memoryLimitBytes().
 void checkMemory(double bytes, const std::string &what, const std::string &hint);
-}  // namespace ompl_glider
+} // namespace ompl_glider

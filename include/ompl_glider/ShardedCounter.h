@@ -18,10 +18,7 @@ class ShardedCounter
 {
 public:
     /// @brief Adds @p n to the count.
-    void add(std::uint64_t n = 1) noexcept
-    {
-        slots_[slotIndex()].value.fetch_add(n, std::memory_order_relaxed);
-    }
+    void add(std::uint64_t n = 1) noexcept { slots_[slotIndex()].value.fetch_add(n, std::memory_order_relaxed); }
     /// @brief The count so far.
     std::uint64_t load() const noexcept
     {
@@ -51,4 +48,4 @@ private:
     }
     Slot slots_[kSlots];
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

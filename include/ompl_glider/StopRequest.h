@@ -11,4 +11,4 @@ void requestStop();
 void clearStop();
 /// @brief True while a stop is requested.
 bool stopRequested();
-}  // namespace ompl_glider
+} // namespace ompl_glider

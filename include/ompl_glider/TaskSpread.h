@@ -26,8 +26,7 @@ namespace ompl_glider
 class ByteWriter
 {
 public:
-    template <class T>
-    void put(const T &v)
+    template <class T> void put(const T &v)
     {
         static_assert(std::is_arithmetic<T>::value || std::is_enum<T>::value, "plain values only");
         bytes_.append(reinterpret_cast<const char *>(&v), sizeof v);
@@ -37,30 +36,22 @@ public:
         put(static_cast<std::uint64_t>(s.size()));
         bytes_.append(s);
     }
-    void put(bool b)
-    {
-        put(static_cast<std::uint8_t>(b ? 1 : 0));
-    }
+    void put(bool b) { put(static_cast<std::uint8_t>(b ? 1 : 0)); }
     /// @brief A vector of plain values or strings.
-    template <class T>
-    void put(const std::vector<T> &v)
+    template <class T> void put(const std::vector<T> &v)
     {
         put(static_cast<std::uint64_t>(v.size()));
         for (const T &x : v)
             put(x);
     }
     /// @brief A vector of anything, each element written by @p write.
-    template <class T, class F>
-    void putEach(const std::vector<T> &v, F write)
+    template <class T, class F> void putEach(const std::vector<T> &v, F write)
     {
         put(static_cast<std::uint64_t>(v.size()));
         for (const T &x : v)
             write(*this, x);
     }
-    std::string take()
-    {
-        return std::move(bytes_);
-    }
+    std::string take() { return std::move(bytes_); }
 
 private:
     std::string bytes_;
@@ -70,11 +61,8 @@ private:
 class ByteReader
 {
 public:
-    explicit ByteReader(const std::string &bytes) : bytes_(bytes)
-    {
-    }
-    template <class T>
-    void get(T &v)
+    explicit ByteReader(const std::string &bytes) : bytes_(bytes) {}
+    template <class T> void get(T &v)
     {
         static_assert(std::is_arithmetic<T>::value || std::is_enum<T>::value, "plain values only");
         need(sizeof v);
@@ -94,8 +82,7 @@ public:
         get(c);
         b = c != 0;
     }
-    template <class T>
-    void get(std::vector<T> &v)
+    template <class T> void get(std::vector<T> &v)
     {
         v.resize(size());
         for (auto &x : v)
@@ -105,24 +92,19 @@ public:
             x = y;
         }
     }
-    template <class T, class F>
-    void getEach(std::vector<T> &v, F read)
+    template <class T, class F> void getEach(std::vector<T> &v, F read)
     {
         v.resize(size());
         for (T &x : v)
             read(*this, x);
     }
-    template <class T>
-    T value()
+    template <class T> T value()
     {
         T v{};
         get(v);
         return v;
     }
-    bool atEnd() const
-    {
-        return pos_ == bytes_.size();
-    }
+    bool atEnd() const { return pos_ == bytes_.size(); }
 
 private:
     std::size_t size()
@@ -189,4 +171,4 @@ public:
     TaskSpreadScope(const TaskSpreadScope &) = delete;
     TaskSpreadScope &operator=(const TaskSpreadScope &) = delete;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

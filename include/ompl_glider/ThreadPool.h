@@ -30,10 +30,7 @@ public:
     ThreadPool &operator=(const ThreadPool &) = delete;
 
     /// @brief Number of threads that take part in a parallelFor() (workers + caller).
-    unsigned size() const
-    {
-        return static_cast<unsigned>(workers_.size()) + 1u;
-    }
+    unsigned size() const { return static_cast<unsigned>(workers_.size()) + 1u; }
 
     /// @brief Calls fn(i) for every i in [0, n), spread over the pool; returns when all calls are done. The first
     /// exception thrown by a call is rethrown here (the other indices still run).
@@ -52,8 +49,8 @@ private:
     std::size_t n_{0};
     std::atomic<std::size_t> next_{0};
     std::size_t active_{0};
-    std::atomic<std::uint64_t> generation_{0};  ///< changed under m_; read without it while spinning
+    std::atomic<std::uint64_t> generation_{0}; ///< changed under m_; read without it while spinning
     std::atomic<bool> stop_{false};
     std::exception_ptr error_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -68,18 +68,9 @@ public:
     {
         check(nc_put_att_text(id_, var, name, value.size(), value.c_str()));
     }
-    void fill(int var)
-    {
-        check(nc_put_att_double(id_, var, "_FillValue", NC_DOUBLE, 1, &kFill));
-    }
-    void put(int var, const double *data)
-    {
-        check(nc_put_var_double(id_, var, data));
-    }
-    void enddef()
-    {
-        check(nc_enddef(id_));
-    }
+    void fill(int var) { check(nc_put_att_double(id_, var, "_FillValue", NC_DOUBLE, 1, &kFill)); }
+    void put(int var, const double *data) { check(nc_put_var_double(id_, var, data)); }
+    void enddef() { check(nc_enddef(id_)); }
     /// Closes the dataset and registers its bytes: the name the reader opens it by.
     std::string close()
     {
@@ -101,8 +92,9 @@ std::vector<double> values(const Array &a, const char *name, std::size_t n)
 {
     if (a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != n)
         throw Error(std::string("currents from arrays: '") + name + "' must be 1-D with " + std::to_string(n) +
-                    " values (the matching axis of u and v), got shape " + py::str(py::tuple(py::cast(
-                        std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim())))).cast<std::string>());
+                    " values (the matching axis of u and v), got shape " +
+                    py::str(py::tuple(py::cast(std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()))))
+                        .cast<std::string>());
     std::vector<double> v(a.data(), a.data() + n);
     for (double x : v)
         if (!std::isfinite(x))
@@ -113,8 +105,8 @@ std::vector<double> values(const Array &a, const char *name, std::size_t n)
 /// Builds u and v ((time, y, x) or steady (y, x); NaN: land) on the axes x (lon) and y (lat) and the times t
 /// (in @p timeUnits; none for a steady field) as a CF NetCDF dataset in memory; returns its name ("memory:N").
 std::string memoryForecast(const Array &u, const Array &v, const Array &x, const Array &y,
-                   const std::optional<Array> &t, bool geographic, const std::string &timeUnits,
-                   const std::string &velocityUnits)
+                           const std::optional<Array> &t, bool geographic, const std::string &timeUnits,
+                           const std::string &velocityUnits)
 {
     const py::ssize_t nd = u.ndim();
     if ((nd != 2 && nd != 3) || v.ndim() != nd)
@@ -126,7 +118,8 @@ std::string memoryForecast(const Array &u, const Array &v, const Array &x, const
         throw Error(nd == 3 ? "currents from arrays: (time, y, x) arrays need the times t"
                             : "currents from arrays: (y, x) arrays are a steady field and take no times");
     const std::size_t nx = u.shape(nd - 1), ny = u.shape(nd - 2), nt = nd == 3 ? u.shape(0) : 0;
-    const std::vector<double> xs = values(x, geographic ? "lon" : "x", nx), ys = values(y, geographic ? "lat" : "y", ny);
+    const std::vector<double> xs = values(x, geographic ? "lon" : "x", nx),
+                              ys = values(y, geographic ? "lat" : "y", ny);
     const std::vector<double> ts = t ? values(*t, "t", nt) : std::vector<double>{};
     if (t && timeUnits.empty())
         throw Error("currents from arrays: time_units must say what t is, e.g. 'seconds since 2026-03-15 00:00:00'");
@@ -150,10 +143,10 @@ std::string memoryForecast(const Array &u, const Array &v, const Array &x, const
         tv = w.var("time", {dims.back()}, timeUnits, "time");
     }
     const int yd = w.dim(geographic ? "lat" : "y", ny), xd = w.dim(geographic ? "lon" : "x", nx);
-    const int yv = geographic ? w.var("lat", {yd}, "degrees_north", "latitude")
-                              : w.var("y", {yd}, "m", "projection_y_coordinate");
-    const int xv = geographic ? w.var("lon", {xd}, "degrees_east", "longitude")
-                              : w.var("x", {xd}, "m", "projection_x_coordinate");
+    const int yv =
+        geographic ? w.var("lat", {yd}, "degrees_north", "latitude") : w.var("y", {yd}, "m", "projection_y_coordinate");
+    const int xv =
+        geographic ? w.var("lon", {xd}, "degrees_east", "longitude") : w.var("x", {xd}, "m", "projection_x_coordinate");
     dims.push_back(yd);
     dims.push_back(xd);
     const int uv = w.var("u", dims, velocityUnits, "eastward_sea_water_velocity");
@@ -169,7 +162,7 @@ std::string memoryForecast(const Array &u, const Array &v, const Array &x, const
     w.put(vv_, vv.data());
     return w.close();
 }
-}  // namespace
+} // namespace
 
 void bindArrays(py::module_ &m)
 {
@@ -180,4 +173,4 @@ void bindArrays(py::module_ &m)
     m.def("release_memory_dataset", &ompl_glider::releaseMemoryDataset, py::arg("name"),
           "Forgets a dataset of memory_forecast().");
 }
-}  // namespace ompl_glider_py
+} // namespace ompl_glider_py

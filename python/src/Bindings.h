@@ -31,4 +31,4 @@ void bindMission(pybind11::module_ &m);
 void bindResult(pybind11::module_ &m);
 /// @brief Binds write_forecast(): numpy arrays as a CF NetCDF file, which the forecast reader then reads.
 void bindArrays(pybind11::module_ &m);
-}  // namespace ompl_glider_py
+} // namespace ompl_glider_py

@@ -81,8 +81,7 @@ inline std::string badNumber(const py::handle &v, const std::string &item = "")
 /// no number, and a number no bool (smoothing=1 is refused, as smoothing="no" is), also as an item of a pair or a
 /// list (via=[(True, False)]); a number is finite (radius=nan is refused, not read as "not given"); a text is not
 /// empty (observations="" is refused, not read as "none").
-template <class T>
-T value(const py::handle &v, const std::string &name, const char *expected)
+template <class T> T value(const py::handle &v, const std::string &name, const char *expected)
 {
     bool ok = std::is_same_v<T, bool> ? isBool(v) : !isBool(v);
     std::string why;
@@ -111,9 +110,9 @@ inline void checkFinite(const std::string &name, double v, bool positive)
     if (!std::isfinite(v) || (positive && !(v > 0.0)))
     {
         char got[32];
-        std::snprintf(got, sizeof got, "%.10g", v);  // as the library's messages write numbers
+        std::snprintf(got, sizeof got, "%.10g", v); // as the library's messages write numbers
         throw Error("plan(): keyword '" + name + "' expects a finite number" + (positive ? " > 0" : "") + ", got " +
                     got);
     }
 }
-}  // namespace ompl_glider_py
+} // namespace ompl_glider_py

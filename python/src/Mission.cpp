@@ -66,8 +66,7 @@ ViaPointSpec viaPoint(const py::handle item, const std::string &at, const Missio
         if (d.contains("radius") && py::isinstance<py::str>(d["radius"]))
             try
             {
-                p.radius = parseLength(d["radius"].cast<std::string>(), m.metresPerUnit(),
-                                       m.physicalUnits().length);
+                p.radius = parseLength(d["radius"].cast<std::string>(), m.metresPerUnit(), m.physicalUnits().length);
             }
             catch (const Error &e)
             {
@@ -86,16 +85,15 @@ ViaPointSpec viaPoint(const py::handle item, const std::string &at, const Missio
                 throw Error("plan(): keyword 'via': " + at + ".stay: " + e.what());
             }
         else if (d.contains("stay"))
-            p.stay = value<double>(d["stay"], at + ".stay",
-                                   "a number (the mission's time unit) or a duration (\"6 h\")");
+            p.stay =
+                value<double>(d["stay"], at + ".stay", "a number (the mission's time unit) or a duration (\"6 h\")");
         if (d.contains("arrive"))
         {
-            const auto [b, e] = value<std::pair<py::object, py::object>>(d["arrive"], at + ".arrive",
-                                                                          "a pair (begin, end) of times");
+            const auto [b, e] =
+                value<std::pair<py::object, py::object>>(d["arrive"], at + ".arrive", "a pair (begin, end) of times");
             try
             {
-                p.arrive = {true, m.timeOf(py::str(b).cast<std::string>()),
-                            m.timeOf(py::str(e).cast<std::string>())};
+                p.arrive = {true, m.timeOf(py::str(b).cast<std::string>()), m.timeOf(py::str(e).cast<std::string>())};
             }
             catch (const Error &e)
             {
@@ -115,16 +113,15 @@ ViaPointSpec viaPoint(const py::handle item, const std::string &at, const Missio
 /// command line's options, as `--currents FILE --start ... --goal ...` builds it (forecastMission()), read by the
 /// gridded source @p kind names (Field.kind: gridded, its alias netcdf, or a registered one).
 MissionSpec forecast(const std::string &files, std::optional<Pair> start, Pair goal, const std::string &departure,
-                     std::optional<double> speed,
-                     double depth, std::optional<Quad> region, const std::map<std::string, std::string> &variables,
-                     const std::string &xy, const std::string &depthScheme, const std::string &timeScheme,
-                     const std::string &horizon, const std::string &velocityUnits, const std::string &timeUnits,
-                     std::optional<std::size_t> steadyRecord, bool zeroVelocityLand,
-                     std::optional<Pair> depthAverage, bool snapToWater, const std::string &observations,
-                     const std::string &kind)
+                     std::optional<double> speed, double depth, std::optional<Quad> region,
+                     const std::map<std::string, std::string> &variables, const std::string &xy,
+                     const std::string &depthScheme, const std::string &timeScheme, const std::string &horizon,
+                     const std::string &velocityUnits, const std::string &timeUnits,
+                     std::optional<std::size_t> steadyRecord, bool zeroVelocityLand, std::optional<Pair> depthAverage,
+                     bool snapToWater, const std::string &observations, const std::string &kind)
 {
     ForecastInput in;
-    in.current.type = kind;  // a gridded kind of the registry (or its alias), kept as named; another: netcdf
+    in.current.type = kind; // a gridded kind of the registry (or its alias), kept as named; another: netcdf
     in.snapToWater = snapToWater;
     in.words = keywordWords();
     const std::vector<std::string> list = forecastFileList(files);
@@ -149,7 +146,7 @@ MissionSpec forecast(const std::string &files, std::optional<Pair> start, Pair g
         in.start = {start->first, start->second};
     in.goal = {goal.first, goal.second};
     in.departure = departure;
-    if (speed)  // else ForecastInput's
+    if (speed) // else ForecastInput's
     {
         checkFinite("speed", *speed, true);
         in.speed = *speed;
@@ -158,9 +155,9 @@ MissionSpec forecast(const std::string &files, std::optional<Pair> start, Pair g
     if (region)
     {
         const auto [a, b, c, d] = *region;
-        in.region = Box{a, c, b, d};  // (lon_min, lat_min, lon_max, lat_max) as --region
+        in.region = Box{a, c, b, d}; // (lon_min, lat_min, lon_max, lat_max) as --region
     }
-    MissionSpec out;  // the forecast's description is read here (a URL: fetched, stopped by Ctrl-C)
+    MissionSpec out; // the forecast's description is read here (a URL: fetched, stopped by Ctrl-C)
     runStoppable([&] { out = forecastMission(in); });
     return out;
 }
@@ -174,7 +171,8 @@ void addForbidden(MissionSpec &m, const py::dict &item, std::size_t index)
     const std::string kw = "forbidden[" + std::to_string(index) + "]";
     poly.name = item.contains("name") ? value<std::string>(item["name"], kw + ".name", "a text")
                                       : "region " + std::to_string(index + 1);
-    poly.geographic = item.contains("lonlat") ? value<bool>(item["lonlat"], kw + ".lonlat", "True or False") : m.start.geographic;
+    poly.geographic =
+        item.contains("lonlat") ? value<bool>(item["lonlat"], kw + ".lonlat", "True or False") : m.start.geographic;
     if (!item.contains("points"))
         throw Error(where + ": expected 'points', a list of (x, y) or (lon, lat) pairs");
     poly.points = value<std::vector<Pair>>(item["points"], kw + ".points", "a list of (x, y) or (lon, lat) pairs");
@@ -186,7 +184,8 @@ void addForbidden(MissionSpec &m, const py::dict &item, std::size_t index)
     poly.mark = keyword("forbidden");
     if (item.contains("windows"))
     {
-        TimeWindowSpec w{poly, value<std::vector<Pair>>(item["windows"], kw + ".windows", "a list of (begin, end) pairs")};
+        TimeWindowSpec w{poly,
+                         value<std::vector<Pair>>(item["windows"], kw + ".windows", "a list of (begin, end) pairs")};
         for (const Pair &p : w.windows)
             if (!(p.second >= p.first))
                 throw Error(where + ": a window's end must not be before its begin");
@@ -248,66 +247,67 @@ void setAnalytic(MissionSpec &m, const std::string &type, const std::map<std::st
 /// How the Python module names the mission's settings in messages (MissionSpec::term()): its keywords.
 std::shared_ptr<const SettingWords> keywordWords()
 {
-    static const auto words = std::make_shared<const SettingWords>(SettingWords{{
-        {"planner.name", "planner="},
-        {"planner.grid_size", "grid_size="},
-        {"planner.sectors", "sectors="},
-        {"planner.time_limit", "time_limit="},
-        {"planner.horizon", "horizon="},
-        {"vehicle.speed", "speed="},
-        {"vehicle.depth", "Field.netcdf(depth=)"},
-        {"departure.time", "departure="},
-        {"start", "start="},
-        {"observations", "observations="},
-        {"goal", "goal="},
-        {"region", "region="},
-        {"current.file", "Field.netcdf()"},
-        {"current.horizon: hold_last", "Field.netcdf(horizon='hold')"},
-        {"current.zero_velocity_land: false", "zero_velocity_land=False"},
-        {"current.depth_average", "depth_average="},
-        {"current.variables.angle", "variables={'angle': ...}"},
-        {"current.variables.angle: none", "variables={'angle': 'none'}"},
-        {"current.variables.mask", "variables={'mask': ...}"},
-        {"forbidden.coastline", "coastline="},
-        {"safety.keep_off", "keep_off="},
-        {"observations.length_scale", "correction_length="},
-        {"observations.time_scale", "correction_time="},
-        {"observations.error_ratio", "error_ratio="},
-        {"observations.learn", "learn="},
-        {"safety.min_depth", "min_depth="},
-        {"safety.bathymetry", "bathymetry="},
-        {"safety.bathymetry_variable", "bathymetry_variable="},
-        {"safety.snap_to_water: true", "snap_to_water=True"},
-        {"execution.truth", "truth="},
-        {"execution.surfacing_interval", "surfacing_interval="},
-        {"execution.strategies", "strategies="},
-        {"execution.radius", "radius="}},
-        // a value given: by its keyword (of plan(), or of Field.netcdf() for the forecast's reading)
-        {{"start", "plan(): keyword 'start'"},
-         {"observations", "plan(): keyword 'observations'"},
-         {"goal", "plan(): keyword 'goal'"},
-         {"region", "plan(): keyword 'region'"},
-         {"departure.time", "plan(): keyword 'departure'"},
-         {"vehicle.speed", "plan(): keyword 'speed'"},
-         {"vehicle.depth", "Field.netcdf(): keyword 'depth'"},
-         {"current.file", "Field.netcdf(): path"},
-         {"current.variables.u", "Field.netcdf(): keyword 'variables' (u)"},
-         {"current.variables.v", "Field.netcdf(): keyword 'variables' (v)"},
-         {"current.variables.lon", "Field.netcdf(): keyword 'variables' (lon)"},
-         {"current.variables.lat", "Field.netcdf(): keyword 'variables' (lat)"},
-         {"current.variables.depth", "Field.netcdf(): keyword 'variables' (depth)"},
-         {"current.variables.time", "Field.netcdf(): keyword 'variables' (time)"},
-         {"current.velocity_units", "Field.netcdf(): keyword 'velocity_units'"},
-         {"current.time_units", "Field.netcdf(): keyword 'time_units'"},
-         {"current.steady_record", "Field.netcdf(): keyword 'steady_record'"},
-         {"current.zero_velocity_land", "Field.netcdf(): keyword 'zero_velocity_land'"}},
-        Origin::Keyword});
+    static const auto words = std::make_shared<const SettingWords>(
+        SettingWords{{{"planner.name", "planner="},
+                      {"planner.grid_size", "grid_size="},
+                      {"planner.sectors", "sectors="},
+                      {"planner.time_limit", "time_limit="},
+                      {"planner.horizon", "horizon="},
+                      {"vehicle.speed", "speed="},
+                      {"vehicle.depth", "Field.netcdf(depth=)"},
+                      {"departure.time", "departure="},
+                      {"start", "start="},
+                      {"observations", "observations="},
+                      {"goal", "goal="},
+                      {"region", "region="},
+                      {"current.file", "Field.netcdf()"},
+                      {"current.horizon: hold_last", "Field.netcdf(horizon='hold')"},
+                      {"current.zero_velocity_land: false", "zero_velocity_land=False"},
+                      {"current.depth_average", "depth_average="},
+                      {"current.variables.angle", "variables={'angle': ...}"},
+                      {"current.variables.angle: none", "variables={'angle': 'none'}"},
+                      {"current.variables.mask", "variables={'mask': ...}"},
+                      {"forbidden.coastline", "coastline="},
+                      {"safety.keep_off", "keep_off="},
+                      {"observations.length_scale", "correction_length="},
+                      {"observations.time_scale", "correction_time="},
+                      {"observations.error_ratio", "error_ratio="},
+                      {"observations.learn", "learn="},
+                      {"safety.min_depth", "min_depth="},
+                      {"safety.bathymetry", "bathymetry="},
+                      {"safety.bathymetry_variable", "bathymetry_variable="},
+                      {"safety.snap_to_water: true", "snap_to_water=True"},
+                      {"execution.truth", "truth="},
+                      {"execution.surfacing_interval", "surfacing_interval="},
+                      {"execution.strategies", "strategies="},
+                      {"execution.radius", "radius="}},
+                     // a value given: by its keyword (of plan(), or of Field.netcdf() for the forecast's reading)
+                     {{"start", "plan(): keyword 'start'"},
+                      {"observations", "plan(): keyword 'observations'"},
+                      {"goal", "plan(): keyword 'goal'"},
+                      {"region", "plan(): keyword 'region'"},
+                      {"departure.time", "plan(): keyword 'departure'"},
+                      {"vehicle.speed", "plan(): keyword 'speed'"},
+                      {"vehicle.depth", "Field.netcdf(): keyword 'depth'"},
+                      {"current.file", "Field.netcdf(): path"},
+                      {"current.variables.u", "Field.netcdf(): keyword 'variables' (u)"},
+                      {"current.variables.v", "Field.netcdf(): keyword 'variables' (v)"},
+                      {"current.variables.lon", "Field.netcdf(): keyword 'variables' (lon)"},
+                      {"current.variables.lat", "Field.netcdf(): keyword 'variables' (lat)"},
+                      {"current.variables.depth", "Field.netcdf(): keyword 'variables' (depth)"},
+                      {"current.variables.time", "Field.netcdf(): keyword 'variables' (time)"},
+                      {"current.velocity_units", "Field.netcdf(): keyword 'velocity_units'"},
+                      {"current.time_units", "Field.netcdf(): keyword 'time_units'"},
+                      {"current.steady_record", "Field.netcdf(): keyword 'steady_record'"},
+                      {"current.zero_velocity_land", "Field.netcdf(): keyword 'zero_velocity_land'"}},
+                     Origin::Keyword});
     return words;
 }
 
 /// The keywords of plan() with a unit (isochrone_interval, surfacing_interval, keep_off, min_depth), the other
-/// safety keywords (bathymetry, bathymetry_variable, snap_to_water) and the execution keywords: truth ("forecast", forecast files, or {parameter: number} of the analytic flow),
-/// surfacing_interval (with the quantities), strategies (a list of names), radius, execution_pairs, execution_seed.
+/// safety keywords (bathymetry, bathymetry_variable, snap_to_water) and the execution keywords: truth ("forecast",
+/// forecast files, or {parameter: number} of the analytic flow), surfacing_interval (with the quantities), strategies
+/// (a list of names), radius, execution_pairs, execution_seed.
 template <class Get, class Text>
 void applySafetyAndExecutionKeywords(const Get &get, const Text &text, MissionOverrides &o)
 {
@@ -316,7 +316,7 @@ void applySafetyAndExecutionKeywords(const Get &get, const Text &text, MissionOv
         const py::object v = *get(name);
         if (py::isinstance<py::str>(v))
             return Given<std::string>{v.cast<std::string>(), text(name)};
-        char digits[40];  // 17 digits: the same double back
+        char digits[40]; // 17 digits: the same double back
         std::snprintf(digits, sizeof digits, "%.17g", value<double>(v, name, expected));
         return Given<std::string>{digits, text(name)};
     };
@@ -329,8 +329,8 @@ void applySafetyAndExecutionKeywords(const Get &get, const Text &text, MissionOv
           std::make_tuple("correction_time", &o.correctionTime, "a number or a duration ('1 d')")})
         if (get(name))
             *target = quantity(name, expected);
-    for (const auto &[name, target] : {std::make_pair("bathymetry", &o.bathymetry),
-                                       std::make_pair("bathymetry_variable", &o.bathymetryVariable)})
+    for (const auto &[name, target] :
+         {std::make_pair("bathymetry", &o.bathymetry), std::make_pair("bathymetry_variable", &o.bathymetryVariable)})
         if (auto v = get(name))
             *target = Given<std::string>{value<std::string>(*v, name, "a text"), text(name)};
     if (auto v = get("snap_to_water"))
@@ -361,8 +361,8 @@ void applySafetyAndExecutionKeywords(const Get &get, const Text &text, MissionOv
             value<std::vector<std::string>>(*v, "strategies", "a list of strategy names"), text("strategies")};
     if (auto v = get("radius"))
         o.radius = Given<double>{value<double>(*v, "radius", "a number"), text("radius")};
-    for (const auto &[name, target] : {std::make_pair("execution_pairs", &o.executionPairs),
-                                       std::make_pair("execution_seed", &o.executionSeed)})
+    for (const auto &[name, target] :
+         {std::make_pair("execution_pairs", &o.executionPairs), std::make_pair("execution_seed", &o.executionSeed)})
         if (auto v = get(name))
             *target = Given<long long>{value<long long>(*v, name, "an integer"), text(name)};
 }
@@ -375,14 +375,46 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
             return py::reinterpret_borrow<py::object>(kw[name]);
         return std::nullopt;
     };
-    static const char *known[] = {"planner", "planner_params", "grid_size", "sectors", "time_limit", "smoothing",
-                                  "refinement", "speed", "departure", "start", "goal", "region", "forbidden",
-                                  "isochrones", "isochrone_interval", "analytic", "horizon", "goal_tolerance",
-                                  "global_check", "arrive_between", "coastline", "goto_turn", "via", "order",
-                                  "observations", "keep_off", "min_depth", "bathymetry", "bathymetry_variable",
-                                  "snap_to_water", "truth", "surfacing_interval", "strategies", "radius",
-                                  "execution_pairs", "execution_seed", "correction_length", "correction_time",
-                                  "error_ratio", "learn"};
+    static const char *known[] = {"planner",
+                                  "planner_params",
+                                  "grid_size",
+                                  "sectors",
+                                  "time_limit",
+                                  "smoothing",
+                                  "refinement",
+                                  "speed",
+                                  "departure",
+                                  "start",
+                                  "goal",
+                                  "region",
+                                  "forbidden",
+                                  "isochrones",
+                                  "isochrone_interval",
+                                  "analytic",
+                                  "horizon",
+                                  "goal_tolerance",
+                                  "global_check",
+                                  "arrive_between",
+                                  "coastline",
+                                  "goto_turn",
+                                  "via",
+                                  "order",
+                                  "observations",
+                                  "keep_off",
+                                  "min_depth",
+                                  "bathymetry",
+                                  "bathymetry_variable",
+                                  "snap_to_water",
+                                  "truth",
+                                  "surfacing_interval",
+                                  "strategies",
+                                  "radius",
+                                  "execution_pairs",
+                                  "execution_seed",
+                                  "correction_length",
+                                  "correction_time",
+                                  "error_ratio",
+                                  "learn"};
     for (const auto &item : kw)
     {
         const std::string name = item.first.cast<std::string>();
@@ -391,8 +423,8 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     }
     if (auto v = get("analytic"))
     {
-        const auto [type, params] = value<std::pair<std::string, std::map<std::string, double>>>(
-            *v, "field", "(name, {parameter: number})");
+        const auto [type, params] =
+            value<std::pair<std::string, std::map<std::string, double>>>(*v, "field", "(name, {parameter: number})");
         setAnalytic(m, type, params);
     }
     // the keywords the command line shares as flags: the library's typed overrides, each named by its keyword
@@ -414,10 +446,9 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
             *target = Given<double>{value<double>(*v, name, "a number"), text(name)};
     if (auto v = get("sectors"))
         o.sectors = Given<int>{value<int>(*v, "sectors", "an integer 1..5"), text("sectors")};
-    for (const auto &[name, target] : {std::make_pair("smoothing", &o.smoothing),
-                                       std::make_pair("refinement", &o.refinement),
-                                       std::make_pair("global_check", &o.globalCheck),
-                                       std::make_pair("isochrones", &o.isochrones)})
+    for (const auto &[name, target] :
+         {std::make_pair("smoothing", &o.smoothing), std::make_pair("refinement", &o.refinement),
+          std::make_pair("global_check", &o.globalCheck), std::make_pair("isochrones", &o.isochrones)})
         if (auto v = get(name))
             *target = Given<bool>{value<bool>(*v, name, "True or False"), text(name)};
     if (auto v = get("departure"))
@@ -440,7 +471,8 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     }
     if (auto v = get("arrive_between"))
     {
-        const auto [begin, end] = value<std::pair<py::object, py::object>>(*v, "arrive_between", "a pair (begin, end) of times");
+        const auto [begin, end] =
+            value<std::pair<py::object, py::object>>(*v, "arrive_between", "a pair (begin, end) of times");
         o.arrivalWindow = Given<std::pair<std::string, std::string>>{
             {py::str(begin).cast<std::string>(), py::str(end).cast<std::string>()}, text("arrive_between")};
     }
@@ -459,8 +491,8 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     if (auto v = get("order"))
         o.order = Given<std::string>{value<std::string>(*v, "order", "'given' or 'free'"), text("order")};
     if (auto v = get("observations"))
-        o.observations = Given<std::string>{
-            value<std::string>(*v, "observations", "a file, a folder, a glob or a URL"), text("observations")};
+        o.observations = Given<std::string>{value<std::string>(*v, "observations", "a file, a folder, a glob or a URL"),
+                                            text("observations")};
     if (auto v = get("coastline"))
         o.coastline = Given<std::string>{value<std::string>(*v, "coastline", "a file name"), text("coastline")};
     applySafetyAndExecutionKeywords(get, text, o);
@@ -473,7 +505,7 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     }
     return m;
 }
-}  // namespace
+} // namespace
 
 void bindMission(py::module_ &m)
 {
@@ -494,16 +526,16 @@ void bindMission(py::module_ &m)
     // (read with the GIL released: a mission's forecast files are asked for their time axis)
     m.def("load_mission", &loadMission, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
           "A YAML mission file (examples/MISSION_FORMAT.md).");
-    m.def("parse_mission", &parseMission, py::arg("text"), py::arg("file") = "<mission>",
-          py::arg("directory") = ".", py::call_guard<py::gil_scoped_release>(), "A mission from YAML (or JSON) text.");
-    m.def("forecast_mission", &forecast, py::arg("files"), py::arg("start"), py::arg("goal"),
-          py::arg("departure") = "", py::arg("speed") = py::none(), py::arg("depth") = 0.0, py::arg("region") = py::none(),
+    m.def("parse_mission", &parseMission, py::arg("text"), py::arg("file") = "<mission>", py::arg("directory") = ".",
+          py::call_guard<py::gil_scoped_release>(), "A mission from YAML (or JSON) text.");
+    m.def("forecast_mission", &forecast, py::arg("files"), py::arg("start"), py::arg("goal"), py::arg("departure") = "",
+          py::arg("speed") = py::none(), py::arg("depth") = 0.0, py::arg("region") = py::none(),
           py::arg("variables") = std::map<std::string, std::string>{}, py::arg("xy_interpolation") = "bilinear",
           py::arg("depth_interpolation") = "linear", py::arg("time_interpolation") = "linear",
           py::arg("horizon") = "refuse", py::arg("velocity_units") = "", py::arg("time_units") = "",
           py::arg("steady_record") = py::none(), py::arg("zero_velocity_land") = true,
-          py::arg("depth_average") = py::none(), py::arg("snap_to_water") = false,
-          py::arg("observations") = "", py::arg("kind") = "netcdf",
+          py::arg("depth_average") = py::none(), py::arg("snap_to_water") = false, py::arg("observations") = "",
+          py::arg("kind") = "netcdf",
           "The mission of a gridded forecast, as glider_plan --currents builds it (start None: at the last fix of "
           "`observations`, and its time without a departure, marked so until the mission resumes there; speed None: "
           "the forecast mission's default), read by the gridded source `kind` "
@@ -525,4 +557,4 @@ void bindMission(py::module_ &m)
         return out;
     });
 }
-}  // namespace ompl_glider_py
+} // namespace ompl_glider_py

@@ -15,9 +15,10 @@ PYBIND11_MODULE(_core, m)
               "ompl_glider, not this module";
     // errors of the library: the same messages as glider_plan's, as ompl_glider.Error (a ValueError)
     py::register_exception<ompl_glider::Error>(m, "Error", PyExc_ValueError);
-    ompl::msg::setLogLevel(ompl::msg::LOG_WARN);  // as glider_plan without --verbose
-    m.def("set_verbose", [](bool on) { ompl::msg::setLogLevel(on ? ompl::msg::LOG_INFO : ompl::msg::LOG_WARN); },
-          py::arg("on"), "Shows OMPL's log messages (as glider_plan --verbose).");
+    ompl::msg::setLogLevel(ompl::msg::LOG_WARN); // as glider_plan without --verbose
+    m.def(
+        "set_verbose", [](bool on) { ompl::msg::setLogLevel(on ? ompl::msg::LOG_INFO : ompl::msg::LOG_WARN); },
+        py::arg("on"), "Shows OMPL's log messages (as glider_plan --verbose).");
     m.def(
         "set_remote_access",
         [](const std::string &cache, double requestTimeout, int retries) {

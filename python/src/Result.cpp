@@ -180,7 +180,6 @@ py::object correction(const PyResult &r)
 #endif
 }
 
-
 py::object arrivalField(const PyResult &r)
 {
     if (!r.result.isochrones || r.result.isochrones->arrival.empty())
@@ -252,7 +251,7 @@ ProgressSink progressSink(const py::object &progress, std::optional<py::error_al
 {
     if (progress.is_none())
         return {};
-    PyObject *callback = progress.ptr();  // kept alive by the caller's reference
+    PyObject *callback = progress.ptr(); // kept alive by the caller's reference
     return [callback, &raised, &guard](const std::string &line, bool done) {
         const py::gil_scoped_acquire gil;
         const std::lock_guard<std::mutex> lock(guard);
@@ -298,8 +297,8 @@ std::shared_ptr<PyResult> run(const MissionSpec &spec, const py::object &progres
 /// runFleet() (the library's fleet runner, as glider_plan --mission runs a fleet) on @p spec, the GIL released: each
 /// glider's result by name in the fleet's order, and when @p directory is given the command line's fleet files
 /// (a folder per glider, fleet.csv, summary.json, all or nothing) with the paths written.
-std::pair<std::vector<std::pair<std::string, std::shared_ptr<PyResult>>>, std::vector<std::string>>
-runFleetPy(const MissionSpec &spec, const py::object &progress, const std::string &directory)
+std::pair<std::vector<std::pair<std::string, std::shared_ptr<PyResult>>>, std::vector<std::string>> runFleetPy(
+    const MissionSpec &spec, const py::object &progress, const std::string &directory)
 {
     std::optional<py::error_already_set> raised;
     std::mutex guard;
@@ -324,7 +323,7 @@ runFleetPy(const MissionSpec &spec, const py::object &progress, const std::strin
         for (const FleetGlider &g : gliders)
             if (!g.row.badInput.empty())
                 throw Error("glider '" + g.row.name + "': " + g.row.badInput + ": " + g.row.reason);
-        if (!directory.empty() && !stopRequested())  // Ctrl-C: nothing written (writeOutputFiles checks too)
+        if (!directory.empty() && !stopRequested()) // Ctrl-C: nothing written (writeOutputFiles checks too)
         {
             const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             written = writeOutputFiles(directory, fleetOutputFiles(spec, gliders, wall));
@@ -345,7 +344,7 @@ std::vector<std::string> write(const PyResult &r, const std::string &directory)
     checkOutputDirectory(directory);
     return writeOutputFiles(directory, outputFiles(r.result, *r.problem));
 }
-}  // namespace
+} // namespace
 
 // KeyboardInterrupt is raised by Python's handler on the main thread (this one); it is raised here once the work
 // has returned, within a moment instead of when the work would have finished
@@ -375,7 +374,7 @@ void runStoppable(const std::function<void()> &work)
             const py::gil_scoped_acquire gil;
             if (PyErr_CheckSignals() != 0)
             {
-                interrupted.emplace();  // the KeyboardInterrupt (or the handler's exception), kept for after the run
+                interrupted.emplace(); // the KeyboardInterrupt (or the handler's exception), kept for after the run
                 requestStop();
             }
         }
@@ -408,8 +407,7 @@ void bindResult(py::module_ &m)
         .def_property_readonly("straight_line_time", [](const R &r) { return r.result.plan.straightLineTime; })
         .def_property_readonly("planning_seconds", [](const R &r) { return r.result.plan.planningSeconds; })
         .def_property_readonly("wall_seconds", [](const R &r) { return r.result.wallSeconds; })
-        .def_property_readonly("cost_function_calls",
-                               [](const R &r) { return r.result.plan.totalCostFunctionCalls(); })
+        .def_property_readonly("cost_function_calls", [](const R &r) { return r.result.plan.totalCostFunctionCalls(); })
         .def_property_readonly("current_model_calls", [](const R &r) { return r.result.plan.currentModelCalls; })
         .def_property_readonly("geographic", [](const R &r) { return r.problem->isGeographic(); })
         .def_property_readonly("mission", [](const R &r) { return r.problem->getSpec(); })
@@ -418,10 +416,10 @@ void bindResult(py::module_ &m)
                                    const Region &b = r.problem->getBox();
                                    return py::make_tuple(b.xMin, b.yMin, b.xMax, b.yMax);
                                })
-        .def_property_readonly("start", [](const R &r) { return py::make_tuple(r.problem->getStart().x,
-                                                                               r.problem->getStart().y); })
-        .def_property_readonly("goal", [](const R &r) { return py::make_tuple(r.problem->getGoal().x,
-                                                                              r.problem->getGoal().y); })
+        .def_property_readonly(
+            "start", [](const R &r) { return py::make_tuple(r.problem->getStart().x, r.problem->getStart().y); })
+        .def_property_readonly(
+            "goal", [](const R &r) { return py::make_tuple(r.problem->getGoal().x, r.problem->getGoal().y); })
         .def("waypoints", &waypoints)
         .def("waypoints_csv", [](const R &r) { return waypointsCsv(r.result); })
         .def("path", [](const R &r) { return points(r, r.result.plan.path); })
@@ -481,4 +479,4 @@ void bindResult(py::module_ &m)
           "runFleet() on a mission with a fleet (the GIL released): [(name, result)], and the files written to "
           "directory (none when empty).");
 }
-}  // namespace ompl_glider_py
+} // namespace ompl_glider_py

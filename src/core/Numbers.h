@@ -7,6 +7,6 @@ namespace ompl_glider
 {
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 inline constexpr double kPi = 3.14159265358979323846;
-inline constexpr double kRadPerDeg = kPi / 180.0;  ///< degrees to radians
-inline constexpr double kDegPerRad = 180.0 / kPi;  ///< radians to degrees
-}  // namespace ompl_glider
+inline constexpr double kRadPerDeg = kPi / 180.0; ///< degrees to radians
+inline constexpr double kDegPerRad = 180.0 / kPi; ///< radians to degrees
+} // namespace ompl_glider

@@ -23,12 +23,12 @@ double fromEnvironment(const char *text)
     if (end != text)
     {
         const std::string suffix(end);
-        const double scale = suffix.empty() ? 1.0
+        const double scale = suffix.empty()                   ? 1.0
                              : suffix == "K" || suffix == "k" ? 1024.0
-                             : suffix == "M" ? 1024.0 * 1024.0
-                             : suffix == "G" ? 1024.0 * 1024.0 * 1024.0
-                             : suffix == "T" ? 1024.0 * 1024.0 * 1024.0 * 1024.0
-                                             : 0.0;
+                             : suffix == "M"                  ? 1024.0 * 1024.0
+                             : suffix == "G"                  ? 1024.0 * 1024.0 * 1024.0
+                             : suffix == "T"                  ? 1024.0 * 1024.0 * 1024.0 * 1024.0
+                                                              : 0.0;
         v *= scale;
         if (scale > 0.0 && std::isfinite(v) && v >= 1.0 && v < 1e19)
             return v;
@@ -37,7 +37,7 @@ double fromEnvironment(const char *text)
                             "4000000000 or 4G, got '") +
                 text + "'");
 }
-}  // namespace
+} // namespace
 
 std::size_t memoryLimitBytes()
 {
@@ -71,7 +71,9 @@ void checkMemory(double bytes, const std::string &what, const std::string &hint)
     const double limit = static_cast<double>(memoryLimitBytes());
     if (!(bytes <= limit))
         throw Error(what + " needs about " + formatBytes(bytes) + " of memory, more than the limit of " +
-                    formatBytes(limit) + " (half the physical memory, three quarters of the address-space limit ulimit -v, or "
-                    "OMPL_GLIDER_MEMORY_LIMIT): " + hint);
+                    formatBytes(limit) +
+                    " (half the physical memory, three quarters of the address-space limit ulimit -v, or "
+                    "OMPL_GLIDER_MEMORY_LIMIT): " +
+                    hint);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -8,7 +8,7 @@ namespace ompl_glider
 namespace
 {
 std::atomic<bool> g_stop{false};
-}  // namespace
+} // namespace
 
 void requestStop()
 {
@@ -24,4 +24,4 @@ bool stopRequested()
 {
     return g_stop.load(std::memory_order_relaxed);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

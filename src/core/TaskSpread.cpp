@@ -13,7 +13,7 @@ std::shared_ptr<TaskSpreader> &spreaderSlot()
     return s;
 }
 std::atomic<int> runsUnderWay{0};
-}  // namespace
+} // namespace
 
 void setTaskSpreader(std::shared_ptr<TaskSpreader> spreader)
 {
@@ -49,4 +49,4 @@ TaskSpreadScope::~TaskSpreadScope()
 {
     --runsUnderWay;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -18,7 +18,7 @@ ThreadPool::ThreadPool(unsigned threads)
         }
         catch (const std::system_error &)
         {
-            break;  // no more threads (ulimit -u, memory): the pool works with those it has, and the caller
+            break; // no more threads (ulimit -u, memory): the pool works with those it has, and the caller
         }
     }
 }
@@ -122,4 +122,4 @@ void ThreadPool::parallelFor(std::size_t n, const std::function<void(std::size_t
     if (err)
         std::rethrow_exception(err);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -22,7 +22,7 @@ std::vector<double> levels(double lo, double hi, int n)
         v.push_back(lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(n - 1));
     return v;
 }
-}  // namespace
+} // namespace
 
 DiveProfileSelection diveProfileSelectionFromString(const std::string &name)
 {
@@ -81,7 +81,7 @@ std::vector<DiveProfile> makeDiveProfiles(const DiveProfileParams &p)
 DiveProfileTravelTime::DiveProfileTravelTime(std::shared_ptr<const CurrentField> field, TravelTimeParams travel,
                                              DiveProfileParams dive, std::shared_ptr<const Bathymetry> bathymetry,
                                              unsigned threads)
-  : segments_(std::move(field), travel), dive_(dive), bathymetry_(std::move(bathymetry))
+    : segments_(std::move(field), travel), dive_(dive), bathymetry_(std::move(bathymetry))
 {
     profiles_ = makeDiveProfiles(dive_);
     if (threads != 1)
@@ -92,12 +92,11 @@ double DiveProfileTravelTime::travelTime(const DiveProfile &profile, double x1, 
                                          double tStart) const
 {
     calls_.add();
-    if (!std::isfinite(tStart) || !std::isfinite(x1) || !std::isfinite(y1) || !std::isfinite(x2) ||
-        !std::isfinite(y2))
+    if (!std::isfinite(tStart) || !std::isfinite(x1) || !std::isfinite(y1) || !std::isfinite(x2) || !std::isfinite(y2))
         return kInf;
     const int n = static_cast<int>(std::ceil(1.0 / dive_.step - 1e-9));
     const double dx = x2 - x1, dy = y2 - y1;
-    double total = 0.0;  // summed segment times (so that one segment gives its time exactly)
+    double total = 0.0; // summed segment times (so that one segment gives its time exactly)
     for (int i = 0; i < n; ++i)
     {
         const double a = static_cast<double>(i) / n, b = static_cast<double>(i + 1) / n;
@@ -106,10 +105,10 @@ double DiveProfileTravelTime::travelTime(const DiveProfile &profile, double x1, 
         double zc = profile.climbTo, zd = profile.diveTo;
         if (bathymetry_)
         {
-            const double floorDepth =
-                std::min({bathymetry_->seafloorDepth(xs, ys), bathymetry_->seafloorDepth(0.5 * (xs + xe), 0.5 * (ys + ye)),
-                          bathymetry_->seafloorDepth(xe, ye)}) -
-                dive_.clearance;
+            const double floorDepth = std::min({bathymetry_->seafloorDepth(xs, ys),
+                                                bathymetry_->seafloorDepth(0.5 * (xs + xe), 0.5 * (ys + ye)),
+                                                bathymetry_->seafloorDepth(xe, ye)}) -
+                                      dive_.clearance;
             if (!(floorDepth > 0.0))
                 return kInf;
             zd = std::min(zd, floorDepth);
@@ -174,9 +173,8 @@ DiveLegResult DiveProfileTravelTime::bestProfile(double x1, double y1, double x2
     return evaluate(x1, y1, x2, y2, tStart, true);
 }
 
-DiveLegResult DiveProfileTravelTime::bestProfileSerial(double x1, double y1, double x2, double y2,
-                                                       double tStart) const
+DiveLegResult DiveProfileTravelTime::bestProfileSerial(double x1, double y1, double x2, double y2, double tStart) const
 {
     return evaluate(x1, y1, x2, y2, tStart, false);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -14,7 +14,7 @@ AlongTrackSpeeds alongTrackSpeeds(double px, double py, const Velocity &c, doubl
     AlongTrackSpeeds r;
     const double pc = px * c.u + py * c.v;
     const double disc = pc * pc + V * V - (c.u * c.u + c.v * c.v);
-    if (!(disc > 0.0))  // also false for NaN
+    if (!(disc > 0.0)) // also false for NaN
         return r;
     const double sq = std::sqrt(disc);
     r.fast = pc + sq;
@@ -24,14 +24,13 @@ AlongTrackSpeeds alongTrackSpeeds(double px, double py, const Velocity &c, doubl
 }
 
 TravelTimeCalculator::TravelTimeCalculator(std::shared_ptr<const CurrentField> field, TravelTimeParams params)
-  : field_(std::move(field)), params_(params)
+    : field_(std::move(field)), params_(params)
 {
     if (!field_)
         throw Error("TravelTimeCalculator: no current field given");
     if (!(params_.speed > 0.0))
         throw Error("TravelTimeCalculator: vehicle speed must be > 0 (got " + std::to_string(params_.speed) + ")");
-    if (!(params_.hMin > 0.0) || !(params_.hMax >= params_.hMin) || !(params_.h >= params_.hMin) ||
-        params_.hMax > 1.0)
+    if (!(params_.hMin > 0.0) || !(params_.hMax >= params_.hMin) || !(params_.h >= params_.hMin) || params_.hMax > 1.0)
         throw Error("TravelTimeCalculator: step fractions must satisfy 0 < hMin <= h, hMin <= hMax <= 1");
     if (!(params_.eps > 0.0))
         throw Error("TravelTimeCalculator: eps must be > 0");
@@ -66,8 +65,8 @@ ArrivalWindow TravelTimeCalculator::arrivalWindow(double x1, double y1, double x
     return w;
 }
 
-double TravelTimeCalculator::integrate(double x1, double y1, double z1, double x2, double y2, double z2,
-                                       double tStart, bool slow) const
+double TravelTimeCalculator::integrate(double x1, double y1, double z1, double x2, double y2, double z2, double tStart,
+                                       bool slow) const
 {
     if (!std::isfinite(tStart) || !std::isfinite(x1) || !std::isfinite(y1) || !std::isfinite(x2) ||
         !std::isfinite(y2) || !std::isfinite(z1) || !std::isfinite(z2))
@@ -82,7 +81,7 @@ double TravelTimeCalculator::integrate(double x1, double y1, double z1, double x
     if (len == 0.0)
         return 0.0;
     if (!f.segmentInWater(x1, y1, x2, y2, z1) || (z2 != z1 && !f.segmentInWater(x1, y1, x2, y2, z2)))
-        return kInf;  // the leg touches land somewhere (not only at an integration step), at either end depth
+        return kInf; // the leg touches land somewhere (not only at an integration step), at either end depth
     const double px = dx / len, py = dy / len;
 
     // Progress along the leg as a fraction in [0, 1] and the local time.
@@ -106,7 +105,7 @@ double TravelTimeCalculator::integrate(double x1, double y1, double z1, double x
         const double segLen = h * len;
         double v1;
         if (!pace(cStart, v1) || v1 <= 0.0)
-            return kInf;  // infeasible (fast root) or, for the slow root, the vehicle can hold: unbounded
+            return kInf; // infeasible (fast root) or, for the slow root, the vehicle can hold: unbounded
         const double tRough = segLen / v1;
         const double fe = frac + h;
         const double xe = x1 + fe * dx, ye = y1 + fe * dy;
@@ -135,4 +134,4 @@ double TravelTimeCalculator::integrate(double x1, double y1, double z1, double x
     }
     return t - tStart;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

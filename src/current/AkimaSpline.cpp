@@ -17,8 +17,8 @@ struct FlatTest
     double rel;
     double floor;
 };
-constexpr FlatTest kSplineFlat{1e-14, 1.0};  // AkimaSpline
-constexpr FlatTest kNodesFlat{1e-12, 0.0};   // detail::akimaFromNodes
+constexpr FlatTest kSplineFlat{1e-14, 1.0}; // AkimaSpline
+constexpr FlatTest kNodesFlat{1e-12, 0.0};  // detail::akimaFromNodes
 
 /// Secants of the nodes (x[0..n-1], y[0..n-1]), n >= 2, into m[0..n+2]: m[j + 2] is the slope of interval j,
 /// j = -2 .. n, the two beyond each end extrapolated with equal second differences ([AkimaSpline]); with two
@@ -50,7 +50,7 @@ double nodeSlope(const double *m, std::size_t i, const FlatTest &flat)
         return 0.5 * (m[i + 1] + m[i + 2]);
     return (w1 * m[i + 1] + w2 * m[i + 2]) / den;
 }
-}  // namespace
+} // namespace
 
 AkimaSpline::AkimaSpline(std::vector<double> x, std::vector<double> y) : x_(std::move(x)), y_(std::move(y))
 {
@@ -145,5 +145,5 @@ double akimaFromNodes(const double *x, const double *y, int n, int k, double q)
     const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
     return h00 * y[k] + h01 * y[k + 1] + h * (h10 * t0 + h11 * t1);
 }
-}  // namespace detail
-}  // namespace ompl_glider
+} // namespace detail
+} // namespace ompl_glider

@@ -25,7 +25,7 @@ std::size_t bucketOf(double v, double o, double inv, std::size_t n)
         return 0;
     return q >= double(n - 1) ? n - 1 : static_cast<std::size_t>(q);
 }
-}  // namespace
+} // namespace
 
 void CoastEdges::build(std::size_t nx, std::size_t ny, std::size_t nz, const std::vector<std::uint8_t> &cellWater,
                        const NodeXY &node, double x0, double x1, double y0, double y1)
@@ -40,7 +40,7 @@ void CoastEdges::build(std::size_t nx, std::size_t ny, std::size_t nz, const std
     bny_ = bucketCount(h / side);
     x0_ = x0;
     y0_ = y0;
-    inv_ = std::min(double(bnx_) / w, double(bny_) / h);  // 0 for an infinite extent: one bucket holds all
+    inv_ = std::min(double(bnx_) / w, double(bny_) / h); // 0 for an infinite extent: one bucket holds all
     if (!std::isfinite(inv_) || !(inv_ >= 0.0))
         inv_ = 0.0;
     bnx_ = bucketCount(w * inv_) + 1;
@@ -136,7 +136,7 @@ void meetEdge(double px, double py, double rx, double ry, double ax, double ay, 
         out.push_back(hi);
     }
 }
-}  // namespace
+} // namespace
 
 void CoastEdges::meet(std::size_t k, double ax, double ay, double bx, double by, std::vector<double> &s) const
 {
@@ -188,5 +188,5 @@ std::size_t CoastEdges::memoryBytes() const
         b += L.edges.size() * sizeof(Edge) + (L.start.size() + L.ids.size()) * sizeof(std::uint32_t);
     return b;
 }
-}  // namespace detail
-}  // namespace ompl_glider
+} // namespace detail
+} // namespace ompl_glider

@@ -35,10 +35,7 @@ public:
     void meet(std::size_t k, double ax, double ay, double bx, double by, std::vector<double> &s) const;
 
     /// @brief Edges of layer k (for tests and memory accounting).
-    std::size_t edgeCount(std::size_t k) const
-    {
-        return layers_[k].edges.size();
-    }
+    std::size_t edgeCount(std::size_t k) const { return layers_[k].edges.size(); }
     /// @brief Bytes held.
     std::size_t memoryBytes() const;
 
@@ -50,12 +47,12 @@ private:
     struct Layer
     {
         std::vector<Edge> edges;
-        std::vector<std::uint32_t> start;  ///< bucket b holds ids[start[b] .. start[b + 1])
+        std::vector<std::uint32_t> start; ///< bucket b holds ids[start[b] .. start[b + 1])
         std::vector<std::uint32_t> ids;
     };
     std::vector<Layer> layers_;
     double x0_{0}, y0_{0}, inv_{1};
     std::size_t bnx_{1}, bny_{1};
 };
-}  // namespace detail
-}  // namespace ompl_glider
+} // namespace detail
+} // namespace ompl_glider

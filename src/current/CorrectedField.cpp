@@ -73,7 +73,7 @@ std::string sourceOf(bool given, bool learn)
 {
     return given ? "given" : learn ? "default (too few DAC to estimate)" : "default";
 }
-}  // namespace
+} // namespace
 
 CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
                                const std::vector<DacObservation> &observations, CorrectionParams params)
@@ -184,7 +184,8 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
     std::vector<std::size_t> order(m);
     for (std::size_t k = 0; k < m; ++k)
         order[k] = k;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return nodes_[a].t < nodes_[b].t; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return nodes_[a].t < nodes_[b].t; });
     std::vector<Node> sorted(m);
     Eigen::VectorXd nu(m), nv(m), noise(m);
     for (std::size_t k = 0; k < m; ++k)
@@ -251,24 +252,24 @@ void CorrectedField::sample()
     const auto count = [](double span, double step) { return static_cast<std::size_t>(std::ceil(span / step)) + 1; };
     const std::size_t nx = count(x1 - x0, L / 4.0), ny = count(y1 - y0, L / 4.0), nt = count(t1 - t0, T / 4.0);
     if (static_cast<double>(nx) * static_cast<double>(ny) * static_cast<double>(nt) > 4e6)
-        return;  // a correction spread too wide for a grid: the exact sum
+        return; // a correction spread too wide for a grid: the exact sum
     // each time slice sums the superobservations within the cut-off of it (the nodes are in time order): the work is
     // the grid's nodes times those, bounded so that sampling never costs more than about a second
     const auto reachOf = [&](double t) {
-        const auto lo = std::lower_bound(nodes_.begin(), nodes_.end(), t - window,
-                                         [](const Node &o, double v) { return o.t < v; });
-        const auto hi = std::upper_bound(nodes_.begin(), nodes_.end(), t + window,
-                                         [](double v, const Node &o) { return v < o.t; });
+        const auto lo =
+            std::lower_bound(nodes_.begin(), nodes_.end(), t - window, [](const Node &o, double v) { return o.t < v; });
+        const auto hi =
+            std::upper_bound(nodes_.begin(), nodes_.end(), t + window, [](double v, const Node &o) { return v < o.t; });
         return std::make_pair(static_cast<Eigen::Index>(lo - nodes_.begin()), static_cast<Eigen::Index>(hi - lo));
     };
     double work = 0.0;
     for (std::size_t it = 0; it < nt; ++it)
     {
-        const double t = t0 + (t1 - t0) * static_cast<double>(it) / static_cast<double>(nt - 1);  // as d.time below
+        const double t = t0 + (t1 - t0) * static_cast<double>(it) / static_cast<double>(nt - 1); // as d.time below
         work += static_cast<double>(nx * ny) * static_cast<double>(reachOf(t).second);
     }
     if (work > 2e9)
-        return;  // the exact sum
+        return; // the exact sum
     GriddedData d;
     d.nx = nx;
     d.ny = ny;
@@ -370,11 +371,11 @@ void CorrectedField::addCorrection(double x, double y, double t, Velocity &c, Ja
     }
     const double L2 = params_.lengthScale * params_.lengthScale, T2 = params_.timeScale * params_.timeScale;
     const double window = kCutoff * params_.timeScale, reach2 = kCutoff * kCutoff * L2;
-    Velocity g;   // the interpolated part
-    Jacobian dg;  // and its derivatives
+    Velocity g;  // the interpolated part
+    Jacobian dg; // and its derivatives
     // sampled: read from the grid, zero outside it (past the cut-off of every superobservation)
-    const bool inSample = sampled_ && x >= sampleXMin_ && x <= sampleXMax_ && y >= sampleYMin_ &&
-                          y <= sampleYMax_ && t >= sampleTMin_ && t <= sampleTMax_;
+    const bool inSample = sampled_ && x >= sampleXMin_ && x <= sampleXMax_ && y >= sampleYMin_ && y <= sampleYMax_ &&
+                          t >= sampleTMin_ && t <= sampleTMax_;
     if (inSample)
     {
         g = sampled_->velocity(x, y, 0.0, t);

@@ -34,7 +34,7 @@ std::vector<TidalPeriod> resolvedConstituents(double spanHours)
 {
     std::vector<TidalPeriod> out;
     if (!(spanHours > 24.0))
-        return out;  // a day or less: no tide is told from a bias or a trend
+        return out; // a day or less: no tide is told from a bias or a trend
     for (const TidalPeriod &c : kConstituents)
     {
         bool apart = spanHours >= c.hours;
@@ -50,10 +50,10 @@ std::vector<TidalPeriod> resolvedConstituents(double spanHours)
 /// coefficients at given scales.
 struct Likelihood
 {
-    const std::vector<DacObservation> *obs{nullptr};  // the fitted ones
-    Eigen::MatrixXd G;       // basis of the mean (columns), one row per fitted observation
-    Eigen::MatrixXd D;       // the innovations, u then v
-    double floor2{0.0};      // the smallest observation error variance allowed (field units^2)
+    const std::vector<DacObservation> *obs{nullptr}; // the fitted ones
+    Eigen::MatrixXd G;                               // basis of the mean (columns), one row per fitted observation
+    Eigen::MatrixXd D;                               // the innovations, u then v
+    double floor2{0.0};                              // the smallest observation error variance allowed (field units^2)
 
     /// ln p(d | L, T, ratio) up to a constant, the forecast error variance at its maximum; @p beta: the mean's
     /// coefficients (p x 2). -infinity where the covariance cannot be factored.
@@ -119,7 +119,7 @@ void meanExtent(const std::vector<DacObservation> &obs, double L, double T, Inno
     m.lengthScale = std::max(10.0 * L, std::hypot(m.xMax - m.xMin, m.yMax - m.yMin));
     m.timeScale = std::max(10.0 * T, m.tEnd - m.tBegin);
 }
-}  // namespace
+} // namespace
 
 void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, const Eigen::VectorXd &dv,
            CorrectionSummary &summary)
@@ -130,9 +130,10 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
     InnovationMean mean;
     mean.tRef = fitted.back().t;
     const double spanHours = (fitted.back().t - fitted.front().t) * p.secondsPerTimeUnit / 3600.0;
-    std::vector<TidalPeriod> tides = p.secondsPerTimeUnit > 0.0 ? resolvedConstituents(spanHours) : std::vector<TidalPeriod>{};
+    std::vector<TidalPeriod> tides =
+        p.secondsPerTimeUnit > 0.0 ? resolvedConstituents(spanHours) : std::vector<TidalPeriod>{};
     while (!tides.empty() && m < 1 + 2 * tides.size() + 4)
-        tides.pop_back();  // each constituent costs two coefficients: keep four degrees of freedom at least
+        tides.pop_back(); // each constituent costs two coefficients: keep four degrees of freedom at least
     Likelihood like;
     like.obs = &fitted;
     like.G.resize(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(1 + 2 * tides.size()));
@@ -164,7 +165,8 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
     if (!p.timeGiven)
         free.push_back({&p.timeScale, p.timeScale / 10.0, p.timeScale * 50.0, &summary.timeSource});
     if (!p.ratioGiven)
-        free.push_back({&p.errorRatio, std::min(0.02, p.errorRatio), std::max(5.0, p.errorRatio), &summary.ratioSource});
+        free.push_back(
+            {&p.errorRatio, std::min(0.02, p.errorRatio), std::max(5.0, p.errorRatio), &summary.ratioSource});
     std::vector<double> x(free.size()), x0(free.size());
     for (std::size_t k = 0; k < free.size(); ++k)
         x[k] = x0[k] = std::log(*free[k].value);
@@ -241,7 +243,7 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
     if (!std::isfinite(best))
     {
         for (std::size_t k = 0; k < free.size(); ++k)
-            x[k] = std::log(free[k].lo * 10.0);  // the priors (each lower bound is a tenth of its prior)
+            x[k] = std::log(free[k].lo * 10.0); // the priors (each lower bound is a tenth of its prior)
         best = prior;
     }
     for (std::size_t k = 0; k < free.size(); ++k)
@@ -249,7 +251,7 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
     Eigen::MatrixXd beta;
     const double final = like(p.lengthScale, p.timeScale, p.errorRatio, &beta);
     if (!std::isfinite(final))
-        return;  // nothing factors: no mean
+        return; // nothing factors: no mean
     summary.learnedFrom = m;
     summary.likelihoodGain = std::isfinite(priorLikelihood) ? final - priorLikelihood : 0.0;
     mean.bias = {beta(0, 0), beta(0, 1)};
@@ -266,4 +268,4 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
     meanExtent(fitted, p.lengthScale, p.timeScale, mean);
     summary.mean = mean;
 }
-}  // namespace ompl_glider::correction_fit
+} // namespace ompl_glider::correction_fit

@@ -28,4 +28,4 @@ inline double correlation(const DacObservation &a, const DacObservation &b, doub
     const double dx = a.at.x - b.at.x, dy = a.at.y - b.at.y, dt = a.t - b.t;
     return std::exp(-(dx * dx + dy * dy) / (2.0 * L2) - dt * dt / (2.0 * T2));
 }
-}  // namespace ompl_glider::correction_fit
+} // namespace ompl_glider::correction_fit

@@ -25,22 +25,10 @@ class NoNetCdfSource final : public GriddedSource
     }
 
 public:
-    bool geographic(const ForecastRequest &) const override
-    {
-        refuse();
-    }
-    ForecastExtent extent(const ForecastRequest &) const override
-    {
-        refuse();
-    }
-    ForecastTimeAxis timeAxis(const ForecastRequest &) const override
-    {
-        refuse();
-    }
-    LoadedForecast load(const ForecastRequest &) const override
-    {
-        refuse();
-    }
+    bool geographic(const ForecastRequest &) const override { refuse(); }
+    ForecastExtent extent(const ForecastRequest &) const override { refuse(); }
+    ForecastTimeAxis timeAxis(const ForecastRequest &) const override { refuse(); }
+    LoadedForecast load(const ForecastRequest &) const override { refuse(); }
 };
 
 std::shared_ptr<const GriddedSource> netCdfSource()
@@ -57,25 +45,29 @@ std::deque<CurrentFieldKind> &kinds()
     static std::deque<CurrentFieldKind> kinds = [] {
         const MeanderingJetParams j;
         std::deque<CurrentFieldKind> k;
-        k.push_back({"meandering_jet",
-                     "meandering jet (Gulf Stream model)",
-                     {{"B0", j.B0}, {"epsilon", j.epsilon}, {"omega", j.omega}, {"theta", j.theta}, {"k", j.k},
-                      {"c", j.c}},
-                     [](const P &p) {
-                         MeanderingJetParams q;
-                         q.B0 = p.at("B0");
-                         q.epsilon = p.at("epsilon");
-                         q.omega = p.at("omega");
-                         q.theta = p.at("theta");
-                         q.k = p.at("k");
-                         q.c = p.at("c");
-                         return std::make_shared<MeanderingJet>(q);
-                     },
-                     nullptr});
-        k.push_back({"uniform", "uniform current (u, v)", {{"u", 0.0}, {"v", 0.0}},
+        k.push_back(
+            {"meandering_jet",
+             "meandering jet (Gulf Stream model)",
+             {{"B0", j.B0}, {"epsilon", j.epsilon}, {"omega", j.omega}, {"theta", j.theta}, {"k", j.k}, {"c", j.c}},
+             [](const P &p) {
+                 MeanderingJetParams q;
+                 q.B0 = p.at("B0");
+                 q.epsilon = p.at("epsilon");
+                 q.omega = p.at("omega");
+                 q.theta = p.at("theta");
+                 q.k = p.at("k");
+                 q.c = p.at("c");
+                 return std::make_shared<MeanderingJet>(q);
+             },
+             nullptr});
+        k.push_back({"uniform",
+                     "uniform current (u, v)",
+                     {{"u", 0.0}, {"v", 0.0}},
                      [](const P &p) { return std::make_shared<UniformCurrent>(p.at("u"), p.at("v")); },
                      nullptr});
-        k.push_back({"linear_shear", "linear shear u = a y (Zermelo's problem)", {{"a", -1.0}},
+        k.push_back({"linear_shear",
+                     "linear shear u = a y (Zermelo's problem)",
+                     {{"a", -1.0}},
                      [](const P &p) { return std::make_shared<LinearShear>(p.at("a")); },
                      nullptr});
         k.push_back({"double_gyre",
@@ -119,7 +111,7 @@ std::vector<std::pair<std::string, std::string>> &aliases()
     static std::vector<std::pair<std::string, std::string>> list{{"netcdf", "gridded"}};
     return list;
 }
-}  // namespace
+} // namespace
 
 const std::deque<CurrentFieldKind> &currentFieldKinds()
 {
@@ -241,4 +233,4 @@ std::shared_ptr<const CurrentField> makeAnalyticField(const std::string &name,
     }
     return kind->make(full);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -23,7 +23,7 @@ Phase phase(double s, double x, double L)
         return {x, 1.0, 0.0};
     return {s * x * x / L + (1.0 - 2.0 * s) * x, 2.0 * s * x / L + (1.0 - 2.0 * s), 2.0 * s / L};
 }
-}  // namespace
+} // namespace
 
 double DoubleGyre::s(double t) const
 {
@@ -65,7 +65,7 @@ Jacobian DoubleGyre::evaluateJacobian(double x, double y, double, double t) cons
     const double sx = std::sin(w * p.g), cx = std::cos(w * p.g), sy = std::sin(w * y), cy = std::cos(w * y);
     Jacobian J{-a * cx * cy * p.gx, a * sx * sy, -a * sx * sy * p.gx * p.gx, a * cx * cy * p.gx};
     if (sc != 0.0)
-        J.vx += A_ * w * cx * sy * p.gxx;  // v = A w cos(w g) sin(w y) g': the g'' term
+        J.vx += A_ * w * cx * sy * p.gxx; // v = A w cos(w g) sin(w y) g': the g'' term
     return J;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -146,4 +146,4 @@ Jacobian EnsembleMeanField::evaluateJacobian(double x, double y, double z, doubl
     const double n = static_cast<double>(members_.size());
     return {s.ux / n, s.uy / n, s.vx / n, s.vy / n};
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -31,17 +31,18 @@ std::vector<DacObservation> comparable(const std::vector<std::shared_ptr<const C
     {
         const bool finite = std::isfinite(o.t) && std::isfinite(o.at.x) && std::isfinite(o.at.y) &&
                             std::isfinite(o.dac.u) && std::isfinite(o.dac.v);
-        if (finite && o.t >= begin && o.t <= end &&
-            std::all_of(members.begin(), members.end(),
-                        [&](const auto &m) { return m->inWater(o.at.x, o.at.y, depth); }))
-            out.push_back({o.t, o.at, o.dac, std::nullopt});  // the forecast along the dive is not the members'
+        if (finite && o.t >= begin && o.t <= end && std::all_of(members.begin(), members.end(), [&](const auto &m) {
+                return m->inWater(o.at.x, o.at.y, depth);
+            }))
+            out.push_back({o.t, o.at, o.dac, std::nullopt}); // the forecast along the dive is not the members'
     }
-    std::stable_sort(out.begin(), out.end(), [](const DacObservation &a, const DacObservation &b) { return a.t < b.t; });
+    std::stable_sort(out.begin(), out.end(),
+                     [](const DacObservation &a, const DacObservation &b) { return a.t < b.t; });
     if (out.size() > kMaxWeighing)
         out.erase(out.begin(), out.end() - static_cast<std::ptrdiff_t>(kMaxWeighing));
     return out;
 }
-}  // namespace
+} // namespace
 
 LearnedForecast learnForecast(const std::shared_ptr<const CurrentField> &forecast,
                               const std::vector<std::shared_ptr<const CurrentField>> &members,
@@ -152,4 +153,4 @@ std::shared_ptr<const CurrentField> FlightLearning::operator()(const std::vector
     }
     return last_.field;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

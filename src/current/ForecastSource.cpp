@@ -76,7 +76,7 @@ LonLat ForecastFrame::toGeographic(Point2 p) const
 {
     if (projection)
         return projection->inverse(p.x, p.y);
-    return {p.x / xyMetres, p.y / xyMetres};  // the file's own x/y units
+    return {p.x / xyMetres, p.y / xyMetres}; // the file's own x/y units
 }
 
 Point2 ForecastFrame::toLocal(LonLat g) const
@@ -85,4 +85,4 @@ Point2 ForecastFrame::toLocal(LonLat g) const
         return projection->forward(g.lon, g.lat);
     return {g.lon * xyMetres, g.lat * xyMetres};
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

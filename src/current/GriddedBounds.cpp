@@ -20,14 +20,14 @@ std::size_t stencilWidth(Interp1D s)
 {
     switch (s)
     {
-        case Interp1D::Nearest:
-            return 1;
-        case Interp1D::Linear:
-            return 2;
-        case Interp1D::Cubic:
-            return 4;
-        case Interp1D::Akima:
-            return 6;
+    case Interp1D::Nearest:
+        return 1;
+    case Interp1D::Linear:
+        return 2;
+    case Interp1D::Cubic:
+        return 4;
+    case Interp1D::Akima:
+        return 6;
     }
     return 6;
 }
@@ -81,7 +81,7 @@ std::size_t bucketIndex(double q, double o, double d, std::size_t n)
 {
     return static_cast<std::size_t>(std::clamp(std::floor((q - o) / d), 0.0, double(n - 1)));
 }
-}  // namespace
+} // namespace
 
 void GriddedCurrentField::computeStencilDiameters()
 {
@@ -262,7 +262,7 @@ void GriddedCurrentField::curvilinearExtremes(const Region &region, std::size_t 
     };
     const double rx0 = region.xMin, rx1 = region.xMax, ry0 = region.yMin, ry1 = region.yMax;
     if (!(rx0 >= xMin_ && rx1 <= xMax_ && ry0 >= yMin_ && ry1 <= yMax_ && rx0 <= rx1 && ry0 <= ry1))
-        return whole();  // reaches beyond the nodes (or not finite): points outside the grid are clamped
+        return whole(); // reaches beyond the nodes (or not finite): points outside the grid are clamped
     double fi, fj;
     if (!locate(0.5 * (rx0 + rx1), 0.5 * (ry0 + ry1), fi, fj))
         return whole();
@@ -277,7 +277,7 @@ void GriddedCurrentField::curvilinearExtremes(const Region &region, std::size_t 
                 if (bx[0] > rx1 || bx[1] < rx0 || bx[2] > ry1 || bx[3] < ry0)
                     continue;
                 if (B.edge[k])
-                    return whole();  // the region may reach outside the grid
+                    return whole(); // the region may reach outside the grid
                 hit.push_back(k);
             }
     if (hit.empty())
@@ -320,7 +320,7 @@ bool GriddedCurrentField::velocityBounds(const Region &region, double &uMin, dou
         range(y_, region.yMin, region.yMax, j0, j1);
         const std::size_t nz = depth_.size();
         for (std::size_t it = t0; it <= t1; ++it)
-            for (std::size_t k = 0; k < nz; ++k)  // all loaded layers, as maxSpeed()
+            for (std::size_t k = 0; k < nz; ++k) // all loaded layers, as maxSpeed()
                 for (std::size_t j = j0; j <= j1; ++j)
                     widenByRow(e, &uv_[2 * (((it * nz + k) * ny_ + j) * nx_)], i0, i1);
     }
@@ -332,4 +332,4 @@ bool GriddedCurrentField::velocityBounds(const Region &region, double &uMin, dou
     vMax = e[3] + m;
     return true;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

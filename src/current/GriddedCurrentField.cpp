@@ -24,10 +24,10 @@ std::vector<double> indexAxis(std::size_t n)
         a[i] = static_cast<double>(i);
     return a;
 }
-}  // namespace
+} // namespace
 
 GriddedCurrentField::GriddedCurrentField(GriddedData d, GriddedFieldOptions options)
-  : options_(std::move(options)), id_(nextFieldId.fetch_add(1))
+    : options_(std::move(options)), id_(nextFieldId.fetch_add(1))
 {
     const std::string who = "gridded field '" + options_.name + "'";
     nx_ = d.nx;
@@ -67,8 +67,8 @@ GriddedCurrentField::GriddedCurrentField(GriddedData d, GriddedFieldOptions opti
         throw Error(who + ": expected " + std::to_string(total) + " velocity values (nt*nz*ny*nx), got u " +
                     std::to_string(d.u.size()) + " and v " + std::to_string(d.v.size()));
     if (!d.water.empty() && d.water.size() != nz * nh)
-        throw Error(who + ": water mask has " + std::to_string(d.water.size()) + " values, expected nz*ny*nx = " +
-                    std::to_string(nz * nh));
+        throw Error(who + ": water mask has " + std::to_string(d.water.size()) +
+                    " values, expected nz*ny*nx = " + std::to_string(nz * nh));
     if (d.water.empty())
         d.water.assign(nz * nh, 1);
 
@@ -150,8 +150,8 @@ void GriddedCurrentField::storeVelocities(const GriddedData &d, const std::strin
             for (std::size_t i = 0; i < cx; ++i)
             {
                 const std::uint8_t *w = &d.water[k * nh];
-                cellWater_[(k * cy + j) * cx + i] = w[j * nx_ + i] && w[j * nx_ + i + 1] && w[(j + 1) * nx_ + i] &&
-                                                    w[(j + 1) * nx_ + i + 1];
+                cellWater_[(k * cy + j) * cx + i] =
+                    w[j * nx_ + i] && w[j * nx_ + i + 1] && w[(j + 1) * nx_ + i] && w[(j + 1) * nx_ + i + 1];
             }
 }
 
@@ -216,8 +216,7 @@ GriddedCurrentField::Sample GriddedCurrentField::spatial(const Horizontal &h, st
 namespace
 {
 /// Akima interpolation of the u and v components of samples f(i) on the axis at q.
-template <typename S, typename F>
-S akimaSample(const Axis &axis, double q, F &&f)
+template <typename S, typename F> S akimaSample(const Axis &axis, double q, F &&f)
 {
     if (axis.size() == 1)
         return f(std::size_t{0});
@@ -238,8 +237,7 @@ S akimaSample(const Axis &axis, double q, F &&f)
 }
 
 /// Adds w times the sample s to r (with the derivatives when Deriv).
-template <bool Deriv, typename S>
-void addWeighted(S &r, double w, const S &s)
+template <bool Deriv, typename S> void addWeighted(S &r, double w, const S &s)
 {
     r.u += w * s.u;
     r.v += w * s.v;
@@ -251,7 +249,7 @@ void addWeighted(S &r, double w, const S &s)
         r.vj += w * s.vj;
     }
 }
-}  // namespace
+} // namespace
 
 double GriddedCurrentField::clampTime(double t) const
 {
@@ -299,8 +297,8 @@ GriddedCurrentField::Sample GriddedCurrentField::full(double x, double y, double
     if (Deriv && curvilinear_)
     {
         const Sample q = r;
-        r.ui = q.ui * h.m[0] + q.uj * h.m[2];  // du/dx
-        r.uj = q.ui * h.m[1] + q.uj * h.m[3];  // du/dy
+        r.ui = q.ui * h.m[0] + q.uj * h.m[2]; // du/dx
+        r.uj = q.ui * h.m[1] + q.uj * h.m[3]; // du/dy
         r.vi = q.vi * h.m[0] + q.vj * h.m[2];
         r.vj = q.vi * h.m[1] + q.vj * h.m[3];
     }
@@ -320,8 +318,7 @@ Jacobian GriddedCurrentField::evaluateJacobian(double x, double y, double z, dou
         const double hs = fdStep_;
         const Sample xp = full<false>(x + hs, y, z, t), xm = full<false>(x - hs, y, z, t);
         const Sample yp = full<false>(x, y + hs, z, t), ym = full<false>(x, y - hs, z, t);
-        return {(xp.u - xm.u) / (2 * hs), (yp.u - ym.u) / (2 * hs), (xp.v - xm.v) / (2 * hs),
-                (yp.v - ym.v) / (2 * hs)};
+        return {(xp.u - xm.u) / (2 * hs), (yp.u - ym.u) / (2 * hs), (xp.v - xm.v) / (2 * hs), (yp.v - ym.v) / (2 * hs)};
     }
     const Sample s = full<true>(x, y, z, t);
     return {s.ui, s.uj, s.vi, s.vj};
@@ -451,4 +448,4 @@ std::size_t GriddedCurrentField::memoryBytes() const
            (nodeX_.size() + nodeY_.size()) * sizeof(double) + bucket_.size() * sizeof(std::int32_t) +
            (x_.size() + y_.size() + depth_.size() + time_.size()) * sizeof(double);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -45,7 +45,7 @@ struct CellMap
         return j11 * j22 - j12 * j21;
     }
 };
-}  // namespace
+} // namespace
 
 void GriddedCurrentField::buildLocator()
 {
@@ -125,7 +125,7 @@ bool GriddedCurrentField::cellInside(std::size_t ci, std::size_t cj, double px, 
         b -= db;
         if (!std::isfinite(a) || !std::isfinite(b))
             return false;
-        if (std::abs(da) + std::abs(db) < 1e-7)  // quadratic convergence: the error left is ~1e-14
+        if (std::abs(da) + std::abs(db) < 1e-7) // quadratic convergence: the error left is ~1e-14
             break;
     }
     return true;
@@ -157,8 +157,8 @@ bool GriddedCurrentField::locate(double x, double y, double &fi, double &fj) con
     constexpr double tol = 1e-10;
     double a = 0.5, b = 0.5;
     std::size_t ci, cj;
-    if (hint.field == id_ && hint.ci < cx && hint.cj < cy && cellInside(hint.ci, hint.cj, x, y, a, b) &&
-        a > -2.0 && a < 3.0 && b > -2.0 && b < 3.0)
+    if (hint.field == id_ && hint.ci < cx && hint.cj < cy && cellInside(hint.ci, hint.cj, x, y, a, b) && a > -2.0 &&
+        a < 3.0 && b > -2.0 && b < 3.0)
     {
         ci = hint.ci;
         cj = hint.cj;
@@ -205,7 +205,7 @@ bool GriddedCurrentField::locate(double x, double y, double &fi, double &fj) con
         const std::size_t ni = di < 0 ? (ci > 0 ? ci - 1 : ci) : (di > 0 ? std::min(ci + 1, cx - 1) : ci);
         const std::size_t nj = dj < 0 ? (cj > 0 ? cj - 1 : cj) : (dj > 0 ? std::min(cj + 1, cy - 1) : cj);
         if (ni == ci && nj == cj)
-            break;  // wants to leave the mesh: outside
+            break; // wants to leave the mesh: outside
         ci = ni;
         cj = nj;
     }
@@ -238,13 +238,13 @@ GriddedCurrentField::Horizontal GriddedCurrentField::horizontal(double x, double
     const double det = cell.jacobian(fi - double(ci), fj - double(cj), j11, j12, j21, j22);
     if (std::abs(det) > 0.0)
     {
-        h.m[0] = j22 / det;   // dfi/dx
-        h.m[1] = -j12 / det;  // dfi/dy
-        h.m[2] = -j21 / det;  // dfj/dx
-        h.m[3] = j11 / det;   // dfj/dy
+        h.m[0] = j22 / det;  // dfi/dx
+        h.m[1] = -j12 / det; // dfi/dy
+        h.m[2] = -j21 / det; // dfj/dx
+        h.m[3] = j11 / det;  // dfj/dy
     }
     else
         h.m[0] = h.m[1] = h.m[2] = h.m[3] = 0.0;
     return h;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -87,8 +87,7 @@ std::size_t cubicNodes(const Axis &axis, std::size_t k, int m, double *x)
 
 /// A scheme and one of its names; the first entry of a scheme is the name toString() gives, later ones are
 /// aliases that parsing accepts.
-template <typename E>
-struct SchemeName
+template <typename E> struct SchemeName
 {
     E scheme;
     const char *name;
@@ -118,15 +117,14 @@ bool findScheme(const SchemeName<E> (&table)[N], const std::string &name, E &sch
 }
 
 /// The first name of the scheme in the table, "?" for a value outside the enumeration.
-template <typename E, std::size_t N>
-std::string schemeName(const SchemeName<E> (&table)[N], E scheme)
+template <typename E, std::size_t N> std::string schemeName(const SchemeName<E> (&table)[N], E scheme)
 {
     for (const SchemeName<E> &e : table)
         if (e.scheme == scheme)
             return e.name;
     return "?";
 }
-}  // namespace
+} // namespace
 
 Interp2D parseInterp2D(const std::string &name)
 {
@@ -209,12 +207,12 @@ Interp1D axisScheme(Interp2D scheme)
 {
     switch (scheme)
     {
-        case Interp2D::Nearest:
-            return Interp1D::Nearest;
-        case Interp2D::Bilinear:
-            return Interp1D::Linear;
-        case Interp2D::Bicubic:
-            return Interp1D::Cubic;
+    case Interp2D::Nearest:
+        return Interp1D::Nearest;
+    case Interp2D::Bilinear:
+        return Interp1D::Linear;
+    case Interp2D::Bicubic:
+        return Interp1D::Cubic;
     }
     return Interp1D::Linear;
 }
@@ -245,39 +243,37 @@ Stencil makeStencil(const Axis &axis, Interp1D scheme, double q, bool derivative
     const double x0 = axis[k], x1 = axis[k + 1];
     switch (scheme)
     {
-        case Interp1D::Nearest:
-            s.n = 1;
-            s.first = (q - x0 < x1 - q) ? k : k + 1;
-            s.w[0] = 1.0;
-            return s;
-        case Interp1D::Linear:
+    case Interp1D::Nearest:
+        s.n = 1;
+        s.first = (q - x0 < x1 - q) ? k : k + 1;
+        s.w[0] = 1.0;
+        return s;
+    case Interp1D::Linear: {
+        const double h = x1 - x0;
+        const double a = (q - x0) / h;
+        s.n = 2;
+        s.first = k;
+        s.w[0] = 1.0 - a;
+        s.w[1] = a;
+        if (!outside && derivative)
         {
-            const double h = x1 - x0;
-            const double a = (q - x0) / h;
-            s.n = 2;
-            s.first = k;
-            s.w[0] = 1.0 - a;
-            s.w[1] = a;
-            if (!outside && derivative)
-            {
-                s.dw[0] = -1.0 / h;
-                s.dw[1] = 1.0 / h;
-            }
-            return s;
+            s.dw[0] = -1.0 / h;
+            s.dw[1] = 1.0 / h;
         }
-        case Interp1D::Cubic:
-        {
-            const int m = static_cast<int>(std::min<std::size_t>(4, n));
-            double x[4];
-            s.first = cubicNodes(axis, k, m, x);
-            s.n = m;
-            lagrange(x, m, q, s.w.data(), derivative ? s.dw.data() : nullptr);
-            if (outside)
-                s.dw.fill(0.0);
-            return s;
-        }
-        case Interp1D::Akima:
-            break;
+        return s;
+    }
+    case Interp1D::Cubic: {
+        const int m = static_cast<int>(std::min<std::size_t>(4, n));
+        double x[4];
+        s.first = cubicNodes(axis, k, m, x);
+        s.n = m;
+        lagrange(x, m, q, s.w.data(), derivative ? s.dw.data() : nullptr);
+        if (outside)
+            s.dw.fill(0.0);
+        return s;
+    }
+    case Interp1D::Akima:
+        break;
     }
     throw Error("makeStencil: Akima interpolation is not linear in the data; use akimaInterpolate()");
 }
@@ -303,7 +299,7 @@ double overshootFactor(const Axis &axis, Interp1D scheme)
         return worst;
     }
     // Akima: |secant_j| <= 2 M / h_j; extrapolated secants by the triangle inequality.
-    std::vector<double> S(n + 3);  // S[j + 2] for j = -2 .. n
+    std::vector<double> S(n + 3); // S[j + 2] for j = -2 .. n
     for (std::size_t j = 0; j + 1 < n; ++j)
         S[j + 2] = 2.0 / (axis[j + 1] - axis[j]);
     S[1] = 2 * S[2] + S[3];
@@ -320,4 +316,4 @@ double overshootFactor(const Axis &axis, Interp1D scheme)
     }
     return worst;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -24,4 +24,4 @@ Jacobian LinearShear::evaluateJacobian(double, double, double, double) const
 {
     return {0.0, a_, 0.0, 0.0};
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -25,7 +25,7 @@ double wrapLon(double lon, double lon0)
         d += 360.0;
     return lon0 + d - 180.0;
 }
-}  // namespace
+} // namespace
 
 LocalProjection::LocalProjection(double lon0, double lat0) : lon0_(lon0), lat0_(lat0), impl_(new Impl)
 {
@@ -43,8 +43,8 @@ LocalProjection::LocalProjection(double lon0, double lat0) : lon0_(lon0), lat0_(
     {
         const int err = proj_context_errno(impl_->ctx);
         proj_context_destroy(impl_->ctx);
-        throw Error("LocalProjection: PROJ could not create '" + impl_->def + "': " +
-                    proj_context_errno_string(nullptr, err));
+        throw Error("LocalProjection: PROJ could not create '" + impl_->def +
+                    "': " + proj_context_errno_string(nullptr, err));
     }
 }
 
@@ -76,13 +76,13 @@ LonLat LocalProjection::inverse(double x, double y) const
     LonLat g{proj_todeg(r.lp.lam), proj_todeg(r.lp.phi)};
     if (!std::isfinite(g.lon) || !std::isfinite(g.lat))
         throw Error("LocalProjection: cannot invert (" + std::to_string(x) + ", " + std::to_string(y) + ")");
-    g.lon = normalizeLongitude(g.lon);  // the one place planning-frame points become longitudes: -180..180
+    g.lon = normalizeLongitude(g.lon); // the one place planning-frame points become longitudes: -180..180
     return g;
 }
 
 void LocalProjection::eastDirection(double lon, double lat, double &ex, double &ey) const
 {
-    const double d = 1e-5;  // degrees, about 1 m
+    const double d = 1e-5; // degrees, about 1 m
     const Point2 a = forward(lon - d, lat), b = forward(lon + d, lat);
     const double n = std::hypot(b.x - a.x, b.y - a.y);
     ex = (b.x - a.x) / n;
@@ -110,4 +110,4 @@ std::string LocalProjection::definition() const
 {
     return impl_->def;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

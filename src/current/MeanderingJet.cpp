@@ -11,15 +11,15 @@ namespace
 /// Quantities shared by the velocity and the Jacobian at one point.
 struct JetTerms
 {
-    double g;    // sech^2(s)
-    double gp;   // d sech^2(s) / ds = -2 sech^2(s) tanh(s)
-    double D;    // sqrt(1 + k^2 B^2 sin^2(theta))
-    double Dx;   // dD/dx
-    double Dxx;  // d2D/dx2
-    double N;    // y - B cos(theta)
-    double Nx;   // dN/dx
-    double Nxx;  // d2N/dx2
-    double sx;   // ds/dx
+    double g;   // sech^2(s)
+    double gp;  // d sech^2(s) / ds = -2 sech^2(s) tanh(s)
+    double D;   // sqrt(1 + k^2 B^2 sin^2(theta))
+    double Dx;  // dD/dx
+    double Dxx; // d2D/dx2
+    double N;   // y - B cos(theta)
+    double Nx;  // dN/dx
+    double Nxx; // d2N/dx2
+    double sx;  // ds/dx
 };
 
 /// B(t) = B0 + eps cos(omega t + theta). The planners ask for many points at one time (a front, a lattice layer, the
@@ -58,7 +58,7 @@ JetTerms jetTerms(const MeanderingJetParams &p, double x, double y, double t)
     j.Nx = B * p.k * sn;
     j.Nxx = B * p.k * p.k * cs;
     j.D = std::sqrt(1.0 + p.k * p.k * B * B * sn * sn);
-    const double P = p.k * p.k * p.k * B * B * sn * cs;  // = D * Dx
+    const double P = p.k * p.k * p.k * B * B * sn * cs; // = D * Dx
     const double Px = p.k * p.k * p.k * p.k * B * B * (cs * cs - sn * sn);
     j.Dx = P / j.D;
     j.Dxx = Px / j.D - P * j.Dx / (j.D * j.D);
@@ -139,18 +139,15 @@ double globalSpeedBound(const MeanderingJetParams &p)
     }
     return best * 1.005;
 }
-}  // namespace
+} // namespace
 
-MeanderingJet::MeanderingJet(MeanderingJetParams params) : p_(params)
-{
-}
+MeanderingJet::MeanderingJet(MeanderingJetParams params) : p_(params) {}
 
 double MeanderingJet::maxSpeed(const Region & /*region*/) const
 {
     std::call_once(boundOnce_, [this] { speedBound_ = globalSpeedBound(p_); });
     return speedBound_;
 }
-
 
 std::optional<double> MeanderingJet::streamFunction(double x, double y, double /*z*/, double t) const
 {
@@ -181,4 +178,4 @@ Jacobian MeanderingJet::evaluateJacobian(double x, double y, double /*z*/, doubl
     J.vy = -j.gp * sy * j.sx - j.g * sxy;
     return J;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -34,7 +34,7 @@ NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOption
     std::vector<double> y = f.readAll1D(yv);
     if (x.empty() || y.empty())
         throw f.error("coordinates '" + l.xName + "'/'" + l.yName + "' have no values");
-    checkAxisValues(f, yv, y, "coordinate");  // (latitude first, as the loader checks them)
+    checkAxisValues(f, yv, y, "coordinate"); // (latitude first, as the loader checks them)
     checkAxisValues(f, xv, x, "coordinate");
     unpackCoordinates(f, xv, x);
     unpackCoordinates(f, yv, y);
@@ -53,7 +53,7 @@ NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOption
     e.latMax = *y1;
     if (l.geographic)
     {
-        e.allLongitudes = e.lonMax - e.lonMin >= 358.0;  // (a global grid, its spacing of up to 2 degrees)
+        e.allLongitudes = e.lonMax - e.lonMin >= 358.0; // (a global grid, its spacing of up to 2 degrees)
         const double w = e.lonMax - e.lonMin;
         e.lonMin = normalizeLongitude(e.lonMin);
         e.lonMax = e.lonMin + w;
@@ -69,8 +69,9 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
 
 // The stages of one file up to its land (the forecast in several files reads each file with it: ForecastFiles.cpp),
 // then the field (buildForecast()).
-gridded_detail::ForecastPiece gridded_detail::readForecastPiece(const std::string &path, const NetCdfCurrentOptions &opt,
-                                                              const AxisSelection *times, std::size_t totalTimes)
+gridded_detail::ForecastPiece gridded_detail::readForecastPiece(const std::string &path,
+                                                                const NetCdfCurrentOptions &opt,
+                                                                const AxisSelection *times, std::size_t totalTimes)
 {
     using namespace gridded_detail;
     ForecastPiece p;
@@ -98,7 +99,8 @@ gridded_detail::ForecastPiece gridded_detail::readForecastPiece(const std::strin
     const AxisSelection &z = p.z = selectDepths(f, l, opt.depthAverage ? opt.depthAverage->second : opt.maxDepth);
     // the records: chosen here (one file), or given (one file of a forecast in several files)
     if (times && l.dimT < 0)
-        throw f.error("variable '" + l.uName + "' has no time dimension: it cannot be part of a forecast in several "
+        throw f.error("variable '" + l.uName +
+                      "' has no time dimension: it cannot be part of a forecast in several "
                       "files");
     const AxisSelection &t = p.t = times ? *times : selectTimes(f, l, opt, out);
     const HorizontalSubset &h = p.h =
@@ -114,7 +116,7 @@ gridded_detail::ForecastPiece gridded_detail::readForecastPiece(const std::strin
     g.depth = z.values;
     g.time = t.values;
     NetCdfCurrentOptions unpack = opt;
-    unpack.zeroVelocityLand = false;  // decided after every other signal of land (zeroVelocityLand())
+    unpack.zeroVelocityLand = false; // decided after every other signal of land (zeroVelocityLand())
     if (l.staggered)
         readStaggeredVelocities(f, l, h, z, t, vel, unpack, g, out);
     else
@@ -126,7 +128,7 @@ gridded_detail::ForecastPiece gridded_detail::readForecastPiece(const std::strin
     p.maskWater = g.water;
     applyTracerLand(f, l, h, z, t, opt, g, out);
     p.cornerGrid = out.cornerGrid;
-    if (opt.zeroVelocityLand && !times)  // (a forecast in several files decides it on all its records)
+    if (opt.zeroVelocityLand && !times) // (a forecast in several files decides it on all its records)
     {
         const Packing pu = packingOf(f, l.uVar), pv = packingOf(f, l.vVar);
         const bool packed = pu.scale != 1.0 || pu.offset != 0.0 || pv.scale != 1.0 || pv.offset != 0.0;
@@ -146,13 +148,13 @@ gridded_detail::ForecastPiece gridded_detail::readForecastPiece(const std::strin
         out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
     }
     if (p.fillWater.size() != g.water.size())
-        p.fillWater = p.maskWater = g.water;  // layers remapped: land from fill values is not told apart from the
-                                              // mask's and the tracer's
+        p.fillWater = p.maskWater = g.water; // layers remapped: land from fill values is not told apart from the
+                                             // mask's and the tracer's
     return p;
 }
 
 NetCdfCurrents gridded_detail::buildForecast(ForecastPiece &p, const NetCdfCurrentOptions &opt,
-                                            const std::string &fieldName)
+                                             const std::string &fieldName)
 {
     const GriddedDataset &f = *p.file;
     const gridded_detail::Layout &l = p.layout;
@@ -185,4 +187,4 @@ NetCdfCurrents gridded_detail::buildForecast(ForecastPiece &p, const NetCdfCurre
     }
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -59,7 +59,7 @@ Jacobian RankineVortex::evaluateJacobian(double x, double y, double, double) con
     const double r2 = dx * dx + dy * dy, R = p_.radius;
     if (r2 <= R * R)
     {
-        const double om = p_.vmax / R;  // solid-body rotation
+        const double om = p_.vmax / R; // solid-body rotation
         return {0.0, -om, om, 0.0};
     }
     // u = -K dy / r^2, v = K dx / r^2 with K = vmax R
@@ -69,4 +69,4 @@ Jacobian RankineVortex::evaluateJacobian(double x, double y, double, double) con
     const double diff = K * (dx * dx - dy * dy) / r4;
     return {cross, -diff, -diff, -cross};
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -22,4 +22,4 @@ double ShiftedTimeField::maxSpeed(const Region &region) const
     r.tMax += shift_;
     return inner_->maxSpeed(r);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

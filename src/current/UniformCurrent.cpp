@@ -24,4 +24,4 @@ Jacobian UniformCurrent::evaluateJacobian(double, double, double, double) const
 {
     return {};
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -13,11 +13,11 @@ using environment_detail::SegmentIndex;
 
 ForbiddenCells::ForbiddenCells(std::string name, std::string kind, std::size_t nx, std::size_t ny,
                                std::vector<Point2> nodes, const std::vector<std::uint8_t> &forbidden)
-  : ForbiddenRegion(std::move(name), std::move(kind)), nx_(nx), nodes_(std::move(nodes))
+    : ForbiddenRegion(std::move(name), std::move(kind)), nx_(nx), nodes_(std::move(nodes))
 {
     if (nx < 2 || ny < 2 || nodes_.size() != nx * ny || forbidden.size() != (nx - 1) * (ny - 1))
-        throw Error("ForbiddenCells '" + this->name() + "': the node and cell arrays do not fit " +
-                    std::to_string(nx) + " x " + std::to_string(ny) + " nodes");
+        throw Error("ForbiddenCells '" + this->name() + "': the node and cell arrays do not fit " + std::to_string(nx) +
+                    " x " + std::to_string(ny) + " nodes");
     const std::size_t cx = nx - 1, cy = ny - 1;
     auto finite = [&](std::size_t n) { return std::isfinite(nodes_[n].x) && std::isfinite(nodes_[n].y); };
     auto usable = [&](std::size_t i, std::size_t j) {
@@ -77,8 +77,12 @@ ForbiddenCells::ForbiddenCells(std::string name, std::string kind, std::size_t n
             b0 = std::min(b0, nodes_[q].y);
             b1 = std::max(b1, nodes_[q].y);
         }
-        const auto col = [&](double x) { return std::min(bnx_ - 1, static_cast<std::size_t>(std::max(0.0, (x - x0_) / side_))); };
-        const auto row = [&](double y) { return std::min(bny_ - 1, static_cast<std::size_t>(std::max(0.0, (y - y0_) / side_))); };
+        const auto col = [&](double x) {
+            return std::min(bnx_ - 1, static_cast<std::size_t>(std::max(0.0, (x - x0_) / side_)));
+        };
+        const auto row = [&](double y) {
+            return std::min(bny_ - 1, static_cast<std::size_t>(std::max(0.0, (y - y0_) / side_)));
+        };
         for (std::size_t r = row(b0); r <= row(b1); ++r)
             for (std::size_t q = col(a0); q <= col(a1); ++q)
                 f(r * bnx_ + q);
@@ -111,7 +115,7 @@ bool ForbiddenCells::inCell(std::uint32_t c, double x, double y) const
     {
         const Point2 a = q[k], b = q[(k + 1) % 4];
         if (environment_detail::pointSegmentDistance({x, y}, a, b) == 0.0)
-            return true;  // closed: the boundary belongs to the cell
+            return true; // closed: the boundary belongs to the cell
         if ((a.y > y) != (b.y > y) && x < a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y))
             in = !in;
     }
@@ -140,4 +144,4 @@ bool ForbiddenCells::legFree(double x1, double y1, double t1, double x2, double 
         return false;
     return edges_->within({x1, y1}, {x2, y2}, 0.0) > 0.0;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

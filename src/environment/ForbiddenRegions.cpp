@@ -72,4 +72,4 @@ std::vector<double> ForbiddenRegions::releaseTimes() const
     all.erase(std::unique(all.begin(), all.end()), all.end());
     return all;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -15,10 +15,10 @@ bool finite(double a, double b, double c, double d, double e, double f)
     return std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(d) && std::isfinite(e) &&
            std::isfinite(f);
 }
-}  // namespace
+} // namespace
 
 IceZone::IceZone(std::string name, Polygon shape, double tRef, double vx, double vy, double maxSubmergedTime)
-  : ForbiddenRegion(std::move(name), "ice zone"), shape_(std::move(shape)), maxSubmerged_(maxSubmergedTime)
+    : ForbiddenRegion(std::move(name), "ice zone"), shape_(std::move(shape)), maxSubmerged_(maxSubmergedTime)
 {
     if (!std::isfinite(tRef) || !std::isfinite(vx) || !std::isfinite(vy))
         throw Error("ice zone '" + this->name() + "': reference time and drift velocity must be finite");
@@ -31,7 +31,7 @@ IceZone::IceZone(std::string name, Polygon shape, double tRef, double vx, double
 
 IceZone::IceZone(std::string name, Polygon shape, double tRef, const CurrentField &field, Point2 refPoint,
                  double tBegin, double tEnd, double maxSubmergedTime, IceAdvectionParams params)
-  : ForbiddenRegion(std::move(name), "ice zone"), shape_(std::move(shape)), maxSubmerged_(maxSubmergedTime)
+    : ForbiddenRegion(std::move(name), "ice zone"), shape_(std::move(shape)), maxSubmerged_(maxSubmergedTime)
 {
     const std::string who = "ice zone '" + this->name() + "'";
     if (!(maxSubmergedTime >= 0))
@@ -263,4 +263,4 @@ std::string IceZone::whyLegBlocked(double x1, double y1, double t1, double x2, d
        << maxSubmerged_ << ")";
     return os.str();
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -12,7 +12,7 @@ namespace ompl_glider
 using environment_detail::SegmentIndex;
 
 KeepOffZone::KeepOffZone(std::vector<Segment2> edges, double distance, std::string name)
-  : ForbiddenRegion(std::move(name), "keep-off zone"), d_(distance)
+    : ForbiddenRegion(std::move(name), "keep-off zone"), d_(distance)
 {
     if (!(distance >= 0.0) || !std::isfinite(distance))
         throw Error("keep-off distance must be finite and >= 0, got " + text::number(distance));
@@ -93,4 +93,4 @@ LandApproach closestApproach(const KeepOffZone &zone, const std::vector<TimedPoi
     }
     return c;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

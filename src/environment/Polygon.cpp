@@ -57,7 +57,7 @@ bool segmentsMeet(const Point2 &p0, const Point2 &p1, const Point2 &q0, const Po
     const double d3 = orient(q0.x, q0.y, q1.x, q1.y, p0.x, p0.y), d4 = orient(q0.x, q0.y, q1.x, q1.y, p1.x, p1.y);
     if (sign(d1) * sign(d2) < 0 && sign(d3) * sign(d4) < 0)
         return true;
-    auto on = [](const Point2 &a, const Point2 &b, const Point2 &c, double d) {  // c on segment a-b
+    auto on = [](const Point2 &a, const Point2 &b, const Point2 &c, double d) { // c on segment a-b
         return d == 0.0 && c.x >= std::min(a.x, b.x) && c.x <= std::max(a.x, b.x) && c.y >= std::min(a.y, b.y) &&
                c.y <= std::max(a.y, b.y);
     };
@@ -80,7 +80,9 @@ void checkSimple(const std::vector<std::vector<Point2>> &rings, const std::strin
             edges.push_back({rings[r][i], rings[r][(i + 1) % rings[r].size()], r, i, rings[r].size()});
     std::sort(edges.begin(), edges.end(),
               [](const E &u, const E &v) { return std::min(u.a.x, u.b.x) < std::min(v.a.x, v.b.x); });
-    auto ringName = [&](const E &e) { return e.ring == 0 ? std::string("outer ring") : "hole " + std::to_string(e.ring - 1); };
+    auto ringName = [&](const E &e) {
+        return e.ring == 0 ? std::string("outer ring") : "hole " + std::to_string(e.ring - 1);
+    };
     for (std::size_t i = 0; i < edges.size(); ++i)
     {
         const E &u = edges[i];
@@ -88,8 +90,8 @@ void checkSimple(const std::vector<std::vector<Point2>> &rings, const std::strin
         for (std::size_t j = i + 1; j < edges.size() && std::min(edges[j].a.x, edges[j].b.x) <= uMax; ++j)
         {
             const E &v = edges[j];
-            const bool neighbours = u.ring == v.ring && ((u.index + 1) % u.size == v.index ||
-                                                         (v.index + 1) % v.size == u.index);
+            const bool neighbours =
+                u.ring == v.ring && ((u.index + 1) % u.size == v.index || (v.index + 1) % v.size == u.index);
             if (neighbours && u.size > 3)
             {
                 // consecutive edges share one vertex; they may not overlap beyond it
@@ -100,8 +102,9 @@ void checkSimple(const std::vector<std::vector<Point2>> &rings, const std::strin
                     (vFar.x - shared.x) * (uFar.x - shared.x) + (vFar.y - shared.y) * (uFar.y - shared.y) <= 0.0)
                     continue;
             }
-            else if (neighbours || std::max(std::min(u.a.y, u.b.y), std::min(v.a.y, v.b.y)) >
-                                       std::min(std::max(u.a.y, u.b.y), std::max(v.a.y, v.b.y)) ||
+            else if (neighbours ||
+                     std::max(std::min(u.a.y, u.b.y), std::min(v.a.y, v.b.y)) >
+                         std::min(std::max(u.a.y, u.b.y), std::max(v.a.y, v.b.y)) ||
                      !segmentsMeet(u.a, u.b, v.a, v.b))
                 continue;
             std::ostringstream os;
@@ -121,7 +124,7 @@ double signedArea(const std::vector<Point2> &r)
         a += r[j].x * r[i].y - r[i].x * r[j].y;
     return 0.5 * a;
 }
-}  // namespace
+} // namespace
 
 Polygon::Polygon(std::vector<Point2> outer, std::vector<std::vector<Point2>> holes, const std::string &name,
                  RingCheck check)
@@ -250,7 +253,7 @@ bool Polygon::contains(double x, double y) const
         const double o = orient(e.ax, e.ay, e.bx, e.by, x, y);
         if (o == 0.0 && x >= std::min(e.ax, e.bx) && x <= std::max(e.ax, e.bx) && y >= std::min(e.ay, e.by) &&
             y <= std::max(e.ay, e.by))
-            return true;  // on the boundary: the polygon is closed
+            return true; // on the boundary: the polygon is closed
         if ((e.ay > y) != (e.by > y))
         {
             const bool upward = e.by > e.ay;
@@ -277,8 +280,7 @@ double Polygon::signedDistance(double x, double y) const
     return contains(x, y) ? d : -d;
 }
 
-template <typename F>
-void Polygon::forEachCell(double ax, double ay, double bx, double by, F &&f) const
+template <typename F> void Polygon::forEachCell(double ax, double ay, double bx, double by, F &&f) const
 {
     // Every cell that the segment, grown by pad_ in every direction, may touch: per row of the grid, the x-range of
     // the segment within the row's (padded) slab.
@@ -329,7 +331,7 @@ bool Polygon::segmentIntersects(double ax, double ay, double bx, double by) cons
         return false;
     if (ax == bx && ay == by)
         return contains(ax, ay);
-    thread_local std::vector<std::uint32_t> cand;  // per-thread buffer (segmentCandidates clears it)
+    thread_local std::vector<std::uint32_t> cand; // per-thread buffer (segmentCandidates clears it)
     segmentCandidates(ax, ay, bx, by, cand);
     for (std::uint32_t i : cand)
     {
@@ -352,7 +354,7 @@ bool Polygon::segmentIntersects(double ax, double ay, double bx, double by) cons
         }
         return true;
     }
-    return contains(ax, ay);  // no boundary met: wholly inside or wholly outside
+    return contains(ax, ay); // no boundary met: wholly inside or wholly outside
 }
 
 std::vector<Interval> Polygon::segmentInsideIntervals(double ax, double ay, double bx, double by) const
@@ -370,8 +372,8 @@ std::vector<Interval> Polygon::segmentInsideIntervals(double ax, double ay, doub
     const double dx = bx - ax, dy = by - ay, L2 = dx * dx + dy * dy;
     std::vector<std::uint32_t> cand;
     segmentCandidates(ax, ay, bx, by, cand);
-    std::vector<double> hits;          // parameters where the segment meets the boundary
-    std::vector<Interval> overlaps;    // parameter ranges where it runs along an edge
+    std::vector<double> hits;       // parameters where the segment meets the boundary
+    std::vector<Interval> overlaps; // parameter ranges where it runs along an edge
     for (std::uint32_t i : cand)
     {
         const Edge &e = edges_[i];
@@ -449,4 +451,4 @@ std::vector<Interval> Polygon::segmentInsideIntervals(double ax, double ay, doub
         result.push_back({start, params.back()});
     return result;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

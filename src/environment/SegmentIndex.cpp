@@ -26,7 +26,7 @@ int sign(double v)
 {
     return (v > 0) - (v < 0);
 }
-}  // namespace
+} // namespace
 
 double pointSegmentDistance(Point2 p, Point2 a, Point2 b)
 {
@@ -162,5 +162,5 @@ double SegmentIndex::distance(Point2 p, Point2 q) const
         best = std::min(best, segmentDistance(p, q, s.a, s.b));
     return best;
 }
-}  // namespace environment_detail
-}  // namespace ompl_glider
+} // namespace environment_detail
+} // namespace ompl_glider

@@ -27,14 +27,8 @@ public:
     /// @param cellHint wanted bucket side (for example the distance most queries look within); 0: automatic
     explicit SegmentIndex(std::vector<Segment2> segments, double cellHint = 0.0);
 
-    bool empty() const
-    {
-        return segments_.empty();
-    }
-    const std::vector<Segment2> &segments() const
-    {
-        return segments_;
-    }
+    bool empty() const { return segments_.empty(); }
+    const std::vector<Segment2> &segments() const { return segments_; }
     /// The smallest distance from segment pq to the segments that may lie within @p radius of it: exact when it is
     /// <= radius; a value > radius (or +inf) means no segment is within radius.
     double within(Point2 p, Point2 q, double radius) const;
@@ -43,11 +37,11 @@ public:
 
 private:
     std::vector<Segment2> segments_;
-    std::vector<std::uint32_t> start_, ids_;  // bucket b holds ids_[start_[b] .. start_[b + 1])
+    std::vector<std::uint32_t> start_, ids_; // bucket b holds ids_[start_[b] .. start_[b + 1])
     double x0_{0}, y0_{0}, side_{1}, diag_{0};
     std::size_t nx_{1}, ny_{1};
     std::size_t column(double x) const;
     std::size_t row(double y) const;
 };
-}  // namespace environment_detail
-}  // namespace ompl_glider
+} // namespace environment_detail
+} // namespace ompl_glider

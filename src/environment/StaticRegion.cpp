@@ -5,7 +5,7 @@
 namespace ompl_glider
 {
 StaticRegion::StaticRegion(std::string name, Polygon polygon, std::string kind)
-  : ForbiddenRegion(std::move(name), std::move(kind)), polygon_(std::move(polygon))
+    : ForbiddenRegion(std::move(name), std::move(kind)), polygon_(std::move(polygon))
 {
 }
 
@@ -22,4 +22,4 @@ bool StaticRegion::legFree(double x1, double y1, double /*t1*/, double x2, doubl
         return false;
     return !polygon_.segmentIntersects(x1, y1, x2, y2);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

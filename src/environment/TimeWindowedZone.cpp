@@ -9,7 +9,7 @@
 namespace ompl_glider
 {
 TimeWindowedZone::TimeWindowedZone(std::string name, Polygon polygon, std::vector<Interval> windows, std::string kind)
-  : ForbiddenRegion(std::move(name), std::move(kind)), polygon_(std::move(polygon))
+    : ForbiddenRegion(std::move(name), std::move(kind)), polygon_(std::move(polygon))
 {
     if (windows.empty())
         throw Error("time-windowed zone '" + this->name() + "': expected at least one time window [lo, hi]");
@@ -81,8 +81,8 @@ bool TimeWindowedZone::legFree(double x1, double y1, double t1, double x2, doubl
 std::vector<double> TimeWindowedZone::releaseTimes() const
 {
     std::vector<double> ends;
-    for (const Interval &w : windows_)  // sorted and merged: the ends are increasing
+    for (const Interval &w : windows_) // sorted and merged: the ends are increasing
         ends.push_back(w.hi);
     return ends;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -21,13 +21,13 @@ std::string divePointText(double x, double y, double t)
 /// True when (x, y) lies outside a gridded field's nodes: the grid's edge, where the field ends, not its land.
 bool leavesGrid(const CurrentField &field, double x, double y)
 {
-    const FieldGrid *g = field.grid();  // any gridded source, whatever reads it (CurrentField.h)
+    const FieldGrid *g = field.grid(); // any gridded source, whatever reads it (CurrentField.h)
     if (!g)
         return false;
     const Region e = g->extent();
     return !(x >= e.xMin && x <= e.xMax && y >= e.yMin && y <= e.yMax);
 }
-}  // namespace
+} // namespace
 
 DiveEnd flyHeading(double x, double y, double t, double hx, double hy, double tEnd, const CurrentField &field,
                    const Environment *forbidden, const DiveSettings &s, std::vector<TimedPoint> *track)
@@ -101,4 +101,4 @@ DiveEnd flyHeading(double x, double y, double t, double hx, double hy, double tE
     e.t = t;
     return e;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -10,8 +10,7 @@ namespace ompl_glider
 /// @brief When the dive @p e reached the goal, marks @p out reached at the dive's arrival time; when it grounded,
 /// marks @p out grounded with the dive's reason. Leaves @p out as it is otherwise. @p Outcome has the members
 /// reached, arrivalTime, grounded and groundedWhy (FlownTrack, StintPlan).
-template <class Outcome>
-void noteDiveOutcome(const DiveEnd &e, Outcome &out)
+template <class Outcome> void noteDiveOutcome(const DiveEnd &e, Outcome &out)
 {
     if (e.reached)
     {
@@ -24,4 +23,4 @@ void noteDiveOutcome(const DiveEnd &e, Outcome &out)
         out.groundedWhy = e.why;
     }
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

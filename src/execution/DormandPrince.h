@@ -18,4 +18,4 @@ constexpr double kB1 = 35.0 / 384.0, kB3 = 500.0 / 1113.0, kB4 = 125.0 / 192.0, 
                  kB6 = 11.0 / 84.0;
 constexpr double kE1 = 71.0 / 57600.0, kE3 = -71.0 / 16695.0, kE4 = 71.0 / 1920.0, kE5 = -17253.0 / 339200.0,
                  kE6 = 22.0 / 525.0, kE7 = -1.0 / 40.0;
-}  // namespace ompl_glider::dormand_prince
+} // namespace ompl_glider::dormand_prince

@@ -17,20 +17,20 @@ std::string controlStrategyName(ControlStrategy s)
 {
     switch (s)
     {
-        case ControlStrategy::CurrentSensitive:
-            return "current_sensitive";
-        case ControlStrategy::CurrentBlind:
-            return "current_blind";
-        case ControlStrategy::Greedy:
-            return "greedy";
-        case ControlStrategy::Replan:
-            return "replan";
-        case ControlStrategy::PlannedHeadings:
-            return "planned_headings";
-        case ControlStrategy::Dac:
-            return "dac";
-        case ControlStrategy::ReplanObserved:
-            return "replan_observed";
+    case ControlStrategy::CurrentSensitive:
+        return "current_sensitive";
+    case ControlStrategy::CurrentBlind:
+        return "current_blind";
+    case ControlStrategy::Greedy:
+        return "greedy";
+    case ControlStrategy::Replan:
+        return "replan";
+    case ControlStrategy::PlannedHeadings:
+        return "planned_headings";
+    case ControlStrategy::Dac:
+        return "dac";
+    case ControlStrategy::ReplanObserved:
+        return "replan_observed";
     }
     return "unknown";
 }
@@ -38,8 +38,8 @@ std::string controlStrategyName(ControlStrategy s)
 const std::vector<ControlStrategy> &controlStrategies()
 {
     static const std::vector<ControlStrategy> all{ControlStrategy::CurrentSensitive, ControlStrategy::CurrentBlind,
-                                                  ControlStrategy::Greedy, ControlStrategy::Replan,
-                                                  ControlStrategy::PlannedHeadings, ControlStrategy::Dac,
+                                                  ControlStrategy::Greedy,           ControlStrategy::Replan,
+                                                  ControlStrategy::PlannedHeadings,  ControlStrategy::Dac,
                                                   ControlStrategy::ReplanObserved};
     return all;
 }
@@ -115,8 +115,9 @@ DacObservation measureDive(const std::vector<TimedPoint> &track, std::size_t fro
         f.v += 0.5 * dt * (fa.v + fb.v);
         span += dt;
     }
-    const TimedPoint mid = planAt(std::vector<TimedPoint>(track.begin() + static_cast<std::ptrdiff_t>(from), track.end()),
-                                  0.5 * (track[from].t + track.back().t));
+    const TimedPoint mid =
+        planAt(std::vector<TimedPoint>(track.begin() + static_cast<std::ptrdiff_t>(from), track.end()),
+               0.5 * (track[from].t + track.back().t));
     d.t = mid.t;
     d.at = {mid.x, mid.y};
     if (span > 0.0)
@@ -145,7 +146,7 @@ void aimOffHeading(double wx, double wy, Velocity c, double dt, double &hx, doub
         hx = ax / len;
         hy = ay / len;
     }
-    else  // the current alone carries the glider to the waypoint: head at it
+    else // the current alone carries the glider to the waypoint: head at it
     {
         hx = wx / w;
         hy = wy / w;
@@ -157,12 +158,12 @@ std::shared_ptr<const CurrentField> correctedForecast(const CurrentField &foreca
                                                       const std::vector<DacObservation> &measured,
                                                       const CorrectionParams &params)
 {
-    const std::shared_ptr<const CurrentField> base(std::shared_ptr<const CurrentField>(), &forecast);  // not owned
+    const std::shared_ptr<const CurrentField> base(std::shared_ptr<const CurrentField>(), &forecast); // not owned
     if (measured.empty())
         return base;
     return std::make_shared<CorrectedField>(base, measured, params);
 }
-}  // namespace
+} // namespace
 
 FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const CurrentField &forecast,
                    const CurrentField &truth, const Environment *forbidden, ControlStrategy strategy,
@@ -183,8 +184,8 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
     std::mt19937 rng(o.dacSeed);
     FlownTrack r;
     if (measuring)
-        r.measured = o.measuredBefore;  // the earlier legs' dives
-    std::vector<TimedPoint> active = plan;  // the plan flown now (replaced by each new plan)
+        r.measured = o.measuredBefore;     // the earlier legs' dives
+    std::vector<TimedPoint> active = plan; // the plan flown now (replaced by each new plan)
     // the forecast the DAC make, renewed at a surfacing that brought a new one (one solve shared by the steering and
     // the replanning)
     std::shared_ptr<const CurrentField> learned;
@@ -218,8 +219,9 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         const bool replanning = strategy == ControlStrategy::Replan || strategy == ControlStrategy::ReplanObserved;
         if (replanning && surfacings++ % o.replanEvery == 0)
         {
-            std::vector<TimedPoint> fresh = strategy == ControlStrategy::Replan ? o.replan(x, y, t, active)
-                                                                                : o.replanObserved(x, y, t, active, learnedNow());
+            std::vector<TimedPoint> fresh = strategy == ControlStrategy::Replan
+                                                ? o.replan(x, y, t, active)
+                                                : o.replanObserved(x, y, t, active, learnedNow());
             if (!fresh.empty())
             {
                 fresh.back() = {goal.x, goal.y, fresh.back().t};
@@ -256,7 +258,7 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         {
             dx /= len;
             dy /= len;
-            if (strategy == ControlStrategy::Dac && !r.measured.empty())  // the last dive's measured current
+            if (strategy == ControlStrategy::Dac && !r.measured.empty()) // the last dive's measured current
                 aimOffHeading(target.x - x, target.y - y,
                               o.learnSteersDac ? learnedNow()->velocity(x, y, o.depth, t) : r.measured.back().dac,
                               surface - t, hx, hy);
@@ -293,8 +295,8 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
     const TimedPoint at = planAt(r.track, std::min(r.plannedArrival, r.track.back().t));
     r.finalDistance = distance(at.x, at.y);
     const double flown = r.track.back().t - t0;
-    r.madeGoodSpeed = flown > 0.0 ? std::hypot(r.track.back().x - plan.front().x, r.track.back().y - plan.front().y) / flown
-                                  : 0.0;
+    r.madeGoodSpeed =
+        flown > 0.0 ? std::hypot(r.track.back().x - plan.front().x, r.track.back().y - plan.front().y) / flown : 0.0;
     return r;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

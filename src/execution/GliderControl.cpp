@@ -44,10 +44,10 @@ void setUnflyable(TimeSE2StateSpace::StateType *r, double x, double y, double ya
     r->setXYT(x, y, kInf);
     r->setYaw(yaw);
 }
-}  // namespace
+} // namespace
 
 HeadingControlSpace::HeadingControlSpace(const ob::StateSpacePtr &stateSpace)
-  : oc::RealVectorControlSpace(stateSpace, 1)
+    : oc::RealVectorControlSpace(stateSpace, 1)
 {
     setName("Heading");
     ob::RealVectorBounds b(1);
@@ -68,7 +68,7 @@ void HeadingControlSpace::setBearing(oc::Control *control, double bearingDeg)
 
 GliderStatePropagator::GliderStatePropagator(oc::SpaceInformation *si, std::shared_ptr<const GliderContext> ctx,
                                              double diveStep)
-  : oc::StatePropagator(si), ctx_(std::move(ctx))
+    : oc::StatePropagator(si), ctx_(std::move(ctx))
 {
     requireContext(ctx_, "GliderStatePropagator");
     if (!(diveStep > 0.0) || !std::isfinite(diveStep))
@@ -77,7 +77,7 @@ GliderStatePropagator::GliderStatePropagator(oc::SpaceInformation *si, std::shar
     dive_.speed = ctx_->speed();
     dive_.step = diveStep;
     dive_.depth = ctx_->travel->params().depth;
-    dive_.radius = 0.0;  // the planners test the goal on the propagated states
+    dive_.radius = 0.0; // the planners test the goal on the propagated states
 }
 
 void GliderStatePropagator::propagate(const ob::State *state, const oc::Control *control, double duration,
@@ -102,8 +102,7 @@ void GliderStatePropagator::propagate(const ob::State *state, const oc::Control 
     }
     thread_local std::vector<TimedPoint> track;
     track.clear();
-    const DiveEnd e =
-        flyHeading(x, y, t, h.x, h.y, t + duration, *ctx_->field, ctx_->environment.get(), dive_, &track);
+    const DiveEnd e = flyHeading(x, y, t, h.x, h.y, t + duration, *ctx_->field, ctx_->environment.get(), dive_, &track);
     // the planning box along the dive (the end state's bounds are the validity checker's)
     double lx = x, ly = y;
     for (const TimedPoint &p : track)
@@ -127,7 +126,7 @@ void GliderStatePropagator::propagate(const ob::State *state, const oc::Control 
 
 ControlTravelTimeObjective::ControlTravelTimeObjective(const ob::SpaceInformationPtr &si,
                                                        std::shared_ptr<const GliderContext> ctx)
-  : ob::OptimizationObjective(si)
+    : ob::OptimizationObjective(si)
 {
     requireContext(ctx, "ControlTravelTimeObjective");
     description_ = "travel time of heading controls";
@@ -162,7 +161,7 @@ ob::Cost ControlTravelTimeObjective::motionCostHeuristic(const ob::State *s1, co
 
 GliderControlSetup::GliderControlSetup(const oc::ControlSpacePtr &controlSpace, std::shared_ptr<GliderContext> ctx,
                                        const ControlSettings &settings)
-  : oc::SimpleSetup(controlSpace), ctx_(std::move(ctx)), settings_(settings)
+    : oc::SimpleSetup(controlSpace), ctx_(std::move(ctx)), settings_(settings)
 {
 }
 
@@ -271,4 +270,4 @@ HeadingRoute controlPathToHeadingRoute(const oc::PathControl &path)
         route.segments.push_back({HeadingControlSpace::bearing(path.getControl(i)), path.getControlDuration(i)});
     return route;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -39,8 +39,8 @@ HeadingFlight flyHeadingRoute(const HeadingRoute &route, const CurrentField &fie
             continue;
         const Point2 h = bearingVector(seg.bearing);
         ++f.segmentsFlown;
-        const DiveEnd e = flyHeading(x, y, t, h.x, h.y, t + seg.duration, field, forbidden, settings,
-                                     keepTrack ? &f.track : nullptr);
+        const DiveEnd e =
+            flyHeading(x, y, t, h.x, h.y, t + seg.duration, field, forbidden, settings, keepTrack ? &f.track : nullptr);
         if (e.closestDistance < f.closestDistance)
         {
             f.closestDistance = e.closestDistance;
@@ -69,4 +69,4 @@ HeadingFlight flyHeadingRoute(const HeadingRoute &route, const CurrentField &fie
     }
     return f;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

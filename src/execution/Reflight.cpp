@@ -17,19 +17,17 @@ namespace ompl_glider
 namespace
 {
 
-using namespace dormand_prince;  // the tableau (DormandPrince.h)
+using namespace dormand_prince; // the tableau (DormandPrince.h)
 
-template <std::size_t N>
-using Vec = std::array<double, N>;
+template <std::size_t N> using Vec = std::array<double, N>;
 
 /// One trial step of the pair.
-template <std::size_t N>
-struct Trial
+template <std::size_t N> struct Trial
 {
-    Vec<N> y{};     ///< the fifth-order solution at the step's end
-    Vec<N> err{};   ///< fifth- minus fourth-order solution
-    Vec<N> fEnd{};  ///< the right-hand side at the step's end (the next step's first stage)
-    bool finite{false};  ///< every stage was defined and finite
+    Vec<N> y{};         ///< the fifth-order solution at the step's end
+    Vec<N> err{};       ///< fifth- minus fourth-order solution
+    Vec<N> fEnd{};      ///< the right-hand side at the step's end (the next step's first stage)
+    bool finite{false}; ///< every stage was defined and finite
 };
 
 /// Right-hand sides: bool f(s, y, out), false where it is not defined (then out is not used).
@@ -50,15 +48,14 @@ Trial<N> dormandPrinceStep(const F &f, double s, const Vec<N> &y, const Vec<N> &
         stage(kC3, k3, [&](std::size_t i) { return kA31 * k1[i] + kA32 * k2[i]; }) &&
         stage(kC4, k4, [&](std::size_t i) { return kA41 * k1[i] + kA42 * k2[i] + kA43 * k3[i]; }) &&
         stage(kC5, k5, [&](std::size_t i) { return kA51 * k1[i] + kA52 * k2[i] + kA53 * k3[i] + kA54 * k4[i]; }) &&
-        stage(1.0, k6, [&](std::size_t i) {
-            return kA61 * k1[i] + kA62 * k2[i] + kA63 * k3[i] + kA64 * k4[i] + kA65 * k5[i];
-        }) &&
-        stage(1.0, r.fEnd, [&](std::size_t i) {
-            return kB1 * k1[i] + kB3 * k3[i] + kB4 * k4[i] + kB5 * k5[i] + kB6 * k6[i];
-        });
+        stage(
+            1.0, k6,
+            [&](std::size_t i) { return kA61 * k1[i] + kA62 * k2[i] + kA63 * k3[i] + kA64 * k4[i] + kA65 * k5[i]; }) &&
+        stage(1.0, r.fEnd,
+              [&](std::size_t i) { return kB1 * k1[i] + kB3 * k3[i] + kB4 * k4[i] + kB5 * k5[i] + kB6 * k6[i]; });
     if (!ok)
         return r;
-    r.y = z;  // the last stage was evaluated at the fifth-order solution
+    r.y = z; // the last stage was evaluated at the fifth-order solution
     for (std::size_t i = 0; i < N; ++i)
         r.err[i] = h * (kE1 * k1[i] + kE3 * k3[i] + kE4 * k4[i] + kE5 * k5[i] + kE6 * k6[i] + kE7 * r.fEnd[i]);
     r.finite = true;
@@ -66,8 +63,7 @@ Trial<N> dormandPrinceStep(const F &f, double s, const Vec<N> &y, const Vec<N> &
 }
 
 /// Root mean square of the error over the components, each in units of atol + rtol * max(|y0|, |y1|).
-template <std::size_t N>
-double errorNorm(const Trial<N> &trial, const Vec<N> &y0, double rtol, double atol)
+template <std::size_t N> double errorNorm(const Trial<N> &trial, const Vec<N> &y0, double rtol, double atol)
 {
     double sum = 0.0;
     for (std::size_t i = 0; i < N; ++i)
@@ -135,7 +131,7 @@ class HeadingFlier
 public:
     HeadingFlier(const HeadingRoute &route, const CurrentField &field, const Environment *forbidden,
                  const ReflightSettings &s)
-      : route_(route), field_(field), forbidden_(forbidden), s_(s)
+        : route_(route), field_(field), forbidden_(forbidden), s_(s)
     {
         const ReflightTolerance &tol = s.tolerance;
         atol_ = tol.atol > 0.0 ? tol.atol : tol.rtol * s.speed * std::max(route.duration(), 0.0);
@@ -171,10 +167,7 @@ public:
     }
 
 private:
-    TimedPoint position() const
-    {
-        return {route_.start.x + d_[0], route_.start.y + d_[1], t_};
-    }
+    TimedPoint position() const { return {route_.start.x + d_[0], route_.start.y + d_[1], t_}; }
     double distanceToGoal(const Vec<2> &d) const
     {
         return std::hypot(route_.start.x + d[0] - s_.goal.x, route_.start.y + d[1] - s_.goal.y);
@@ -194,7 +187,7 @@ private:
         rate(t_, d_, k1);
         if (!(ctl_.h > 0.0))
             ctl_.h = duration / 16.0;
-        double blocked = kInf;  // a step from here longer than this meets land or a forbidden region
+        double blocked = kInf; // a step from here longer than this meets land or a forbidden region
         std::size_t trials = 0;
         while (t_ < tEnd)
         {
@@ -268,8 +261,7 @@ private:
 
     /// When the accepted step @p tr of length @p h from the current state enters the goal's circle: finds the first
     /// entry, ends the flight there and returns true.
-    template <class F>
-    bool arrives(const F &rate, const Vec<2> &k1, const Trial<2> &tr, double h)
+    template <class F> bool arrives(const F &rate, const Vec<2> &k1, const Trial<2> &tr, double h)
     {
         // distance to the circle after a fresh step of theta * h from the step's start (<= 0: inside)
         auto gap = [&](double theta, Vec<2> &d) {
@@ -279,7 +271,7 @@ private:
             {
                 const Trial<2> part = dormandPrinceStep<2>(rate, t_, d_, k1, theta * h);
                 if (!part.finite)
-                    return kInf;  // not evaluated: taken as outside
+                    return kInf; // not evaluated: taken as outside
                 d = part.y;
             }
             return distanceToGoal(d) - s_.radius;
@@ -333,7 +325,7 @@ private:
     const ReflightSettings &s_;
     double atol_{0.0};
     HeadingReflight r_;
-    Vec<2> d_{};  // displacement from the route's start
+    Vec<2> d_{}; // displacement from the route's start
     double t_{0.0};
     Controller ctl_;
 };
@@ -344,7 +336,7 @@ class LegFlier
 public:
     LegFlier(double x1, double y1, double x2, double y2, double tStart, const CurrentField &field,
              const Environment *forbidden, const ReflightSettings &s)
-      : x1_(x1), y1_(y1), tStart_(tStart), field_(field), forbidden_(forbidden), s_(s)
+        : x1_(x1), y1_(y1), tStart_(tStart), field_(field), forbidden_(forbidden), s_(s)
     {
         len_ = std::hypot(x2 - x1, y2 - y1);
         px_ = len_ > 0.0 ? (x2 - x1) / len_ : 0.0;
@@ -495,7 +487,7 @@ private:
     mutable std::string why_;
     LegReflight r_;
 };
-}  // namespace
+} // namespace
 
 HeadingReflight reflyHeadingRoute(const HeadingRoute &route, const CurrentField &field, const Environment *forbidden,
                                   const ReflightSettings &settings)
@@ -560,4 +552,4 @@ double relativeDifference(double reported, double reflown)
         return reported > reflown ? kInf : -kInf;
     return (reported - reflown) / std::abs(reflown);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -48,4 +48,4 @@ void StintSettings::check() const
         throw Error("stints.step: must be >= 0 and finite, at most 10^6 steps per stint");
 }
 
-}  // namespace ompl_glider
+} // namespace ompl_glider

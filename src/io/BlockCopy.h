@@ -7,8 +7,8 @@
 namespace ompl_glider::gridded_detail
 {
 /// True when the block at (s, c) lies inside the block at (bs, bc).
-inline bool inside(const std::vector<std::size_t> &s, const std::vector<std::size_t> &c, const std::vector<std::size_t> &bs,
-            const std::vector<std::size_t> &bc)
+inline bool inside(const std::vector<std::size_t> &s, const std::vector<std::size_t> &c,
+                   const std::vector<std::size_t> &bs, const std::vector<std::size_t> &bc)
 {
     if (s.size() != bs.size())
         return false;
@@ -19,8 +19,9 @@ inline bool inside(const std::vector<std::size_t> &s, const std::vector<std::siz
 }
 
 /// Copies the block (s, c) out of the values of the enclosing block (bs, bc) (row-major, last index fastest).
-inline void copyOut(const std::vector<double> &from, const std::vector<std::size_t> &bs, const std::vector<std::size_t> &bc,
-             const std::vector<std::size_t> &s, const std::vector<std::size_t> &c, double *out)
+inline void copyOut(const std::vector<double> &from, const std::vector<std::size_t> &bs,
+                    const std::vector<std::size_t> &bc, const std::vector<std::size_t> &s,
+                    const std::vector<std::size_t> &c, double *out)
 {
     const std::size_t nd = s.size();
     if (nd == 0)
@@ -46,4 +47,4 @@ inline void copyOut(const std::vector<double> &from, const std::vector<std::size
         }
     }
 }
-}  // namespace ompl_glider::gridded_detail
+} // namespace ompl_glider::gridded_detail

@@ -53,23 +53,23 @@ std::uint64_t typeBytes(std::uint64_t type)
 {
     switch (type)
     {
-        case NC_BYTE:
-        case NC_CHAR:
-        case NC_UBYTE:
-            return 1;
-        case NC_SHORT:
-        case NC_USHORT:
-            return 2;
-        case NC_INT:
-        case NC_FLOAT:
-        case NC_UINT:
-            return 4;
-        case NC_DOUBLE:
-        case NC_INT64:
-        case NC_UINT64:
-            return 8;
-        default:
-            throw NotClassic{"unknown type " + std::to_string(type)};
+    case NC_BYTE:
+    case NC_CHAR:
+    case NC_UBYTE:
+        return 1;
+    case NC_SHORT:
+    case NC_USHORT:
+        return 2;
+    case NC_INT:
+    case NC_FLOAT:
+    case NC_UINT:
+        return 4;
+    case NC_DOUBLE:
+    case NC_INT64:
+    case NC_UINT64:
+        return 8;
+    default:
+        throw NotClassic{"unknown type " + std::to_string(type)};
     }
 }
 
@@ -77,13 +77,8 @@ std::uint64_t typeBytes(std::uint64_t type)
 class HeaderReader
 {
 public:
-    HeaderReader(std::istream &in, std::uint64_t size) : in_(in), size_(size)
-    {
-    }
-    std::uint64_t pos() const
-    {
-        return pos_;
-    }
+    HeaderReader(std::istream &in, std::uint64_t size) : in_(in), size_(size) {}
+    std::uint64_t pos() const { return pos_; }
     /// An unsigned big-endian integer of `bytes` (4 or 8) bytes.
     std::uint64_t uint(int bytes)
     {
@@ -146,7 +141,7 @@ void skipAttributes(HeaderReader &r, const Widths &w)
     const std::uint64_t n = listLength(r, w, kAttributeTag);
     for (std::uint64_t k = 0; k < n; ++k)
     {
-        r.skipValues(r.uint(w.nonNeg), 1);  // name
+        r.skipValues(r.uint(w.nonNeg), 1); // name
         const std::uint64_t each = typeBytes(r.uint(4));
         r.skipValues(r.uint(w.nonNeg), each);
     }
@@ -163,7 +158,7 @@ struct VarExtent
 /// saturates at 2^32 - 1 for large variables).
 VarExtent readVariable(HeaderReader &r, const Widths &w, const std::vector<std::uint64_t> &dimLen)
 {
-    r.skipValues(r.uint(w.nonNeg), 1);  // name
+    r.skipValues(r.uint(w.nonNeg), 1); // name
     const std::uint64_t ndims = r.uint(w.nonNeg);
     VarExtent v;
     std::uint64_t values = 1;
@@ -181,7 +176,7 @@ VarExtent readVariable(HeaderReader &r, const Widths &w, const std::vector<std::
     v.bytes = mulSat(values, typeBytes(r.uint(4)));
     if (v.bytes == kMax)
         throw NotClassic{"a variable of more than 2^64 bytes"};
-    r.uint(w.nonNeg);  // vsize
+    r.uint(w.nonNeg); // vsize
     v.begin = r.uint(w.offset);
     return v;
 }
@@ -213,7 +208,7 @@ void setDataEnds(const std::vector<VarExtent> &vars, std::uint64_t numRecs, Clas
         if (v.record)
             e.recordEnd = std::max(e.recordEnd, addSat(addSat(v.begin, mulSat(numRecs - 1, recSize)), v.bytes));
 }
-}  // namespace
+} // namespace
 
 std::uint64_t ClassicExtent::dataEnd() const
 {
@@ -229,7 +224,7 @@ ClassicExtent classicExtent(std::istream &in, std::uint64_t size)
     {
         const std::uint64_t magic = r.uint(4);
         const std::uint64_t version = magic & 0xFF;
-        if ((magic >> 8) != 0x434446 || (version != 1 && version != 2 && version != 5))  // "CDF"
+        if ((magic >> 8) != 0x434446 || (version != 1 && version != 2 && version != 5)) // "CDF"
             return e;
         e.version = int(version);
         const Widths w{e.version == 5 ? 8 : 4, e.version == 1 ? 4 : 8};
@@ -238,7 +233,7 @@ ClassicExtent classicExtent(std::istream &in, std::uint64_t size)
         std::vector<std::uint64_t> dimLen;
         for (std::uint64_t k = 0, n = listLength(r, w, kDimensionTag); k < n; ++k)
         {
-            r.skipValues(r.uint(w.nonNeg), 1);  // name
+            r.skipValues(r.uint(w.nonNeg), 1); // name
             dimLen.push_back(r.uint(w.nonNeg));
         }
         skipAttributes(r, w);
@@ -286,5 +281,5 @@ std::optional<std::string> classicTruncation(const std::string &path)
            " bytes of data ending at byte " + std::to_string(end) + ", the file has " + s + " bytes (" +
            std::to_string(end - e.fileBytes) + " missing)";
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -27,7 +27,7 @@ void registerDrivers()
     static std::once_flag once;
     std::call_once(once, [] {
         GDALAllRegister();
-        CPLSetErrorHandler(CPLQuietErrorHandler);  // errors reach the user through our messages
+        CPLSetErrorHandler(CPLQuietErrorHandler); // errors reach the user through our messages
     });
 }
 
@@ -59,19 +59,18 @@ void collect(const OGRGeometry &g, std::vector<LandPolygon> &out)
 {
     switch (wkbFlatten(g.getGeometryType()))
     {
-        case wkbPolygon:
-            addPolygon(*g.toPolygon(), out);
-            break;
-        case wkbMultiPolygon:
-        case wkbGeometryCollection:
-        {
-            const auto &c = *g.toGeometryCollection();
-            for (int k = 0; k < c.getNumGeometries(); ++k)
-                collect(*c.getGeometryRef(k), out);
-            break;
-        }
-        default:
-            break;
+    case wkbPolygon:
+        addPolygon(*g.toPolygon(), out);
+        break;
+    case wkbMultiPolygon:
+    case wkbGeometryCollection: {
+        const auto &c = *g.toGeometryCollection();
+        for (int k = 0; k < c.getNumGeometries(); ++k)
+            collect(*c.getGeometryRef(k), out);
+        break;
+    }
+    default:
+        break;
     }
 }
 
@@ -88,44 +87,42 @@ std::unique_ptr<OGRGeometry> landGeometry(std::unique_ptr<OGRGeometry> g, const 
 {
     auto out = std::make_unique<OGRMultiPolygon>();
     const std::function<void(const OGRGeometry &, const std::string &)> add = [&](const OGRGeometry &m,
-                                                                                const std::string &where) {
+                                                                                  const std::string &where) {
         switch (wkbFlatten(m.getGeometryType()))
         {
-            case wkbPolygon:
-                out->addGeometry(&m);
-                break;
-            case wkbLineString:
-            {
-                const OGRLineString &l = *m.toLineString();
-                const int n = l.getNumPoints();
-                if (n < 4 || !l.get_IsClosed())
-                    throw Error(which + where + ": an open line" +
-                                (n > 0 ? " from " + lonLat(l.getX(0), l.getY(0)) + " to " +
-                                             lonLat(l.getX(n - 1), l.getY(n - 1))
-                                       : std::string()) +
-                                "; expected land polygons (or closed shorelines)");
-                OGRLinearRing r;
-                r.addSubLineString(&l);
-                OGRPolygon p;
-                p.addRing(&r);
-                out->addGeometry(&p);
-                break;
-            }
-            case wkbMultiPolygon:
-            case wkbMultiLineString:
-            case wkbGeometryCollection:
-            {
-                const auto &c = *m.toGeometryCollection();
-                const bool collection = wkbFlatten(m.getGeometryType()) == wkbGeometryCollection;
-                for (int k = 0; k < c.getNumGeometries(); ++k)
-                    if (!c.getGeometryRef(k)->IsEmpty())
-                        add(*c.getGeometryRef(k),
-                            collection ? where + ", member " + std::to_string(k + 1) + " of its collection" : where);
-                break;
-            }
-            default:
-                throw Error(which + where + ": a " + OGRGeometryTypeToName(m.getGeometryType()) +
-                            "; expected land polygons (or closed shorelines)");
+        case wkbPolygon:
+            out->addGeometry(&m);
+            break;
+        case wkbLineString: {
+            const OGRLineString &l = *m.toLineString();
+            const int n = l.getNumPoints();
+            if (n < 4 || !l.get_IsClosed())
+                throw Error(
+                    which + where + ": an open line" +
+                    (n > 0 ? " from " + lonLat(l.getX(0), l.getY(0)) + " to " + lonLat(l.getX(n - 1), l.getY(n - 1))
+                           : std::string()) +
+                    "; expected land polygons (or closed shorelines)");
+            OGRLinearRing r;
+            r.addSubLineString(&l);
+            OGRPolygon p;
+            p.addRing(&r);
+            out->addGeometry(&p);
+            break;
+        }
+        case wkbMultiPolygon:
+        case wkbMultiLineString:
+        case wkbGeometryCollection: {
+            const auto &c = *m.toGeometryCollection();
+            const bool collection = wkbFlatten(m.getGeometryType()) == wkbGeometryCollection;
+            for (int k = 0; k < c.getNumGeometries(); ++k)
+                if (!c.getGeometryRef(k)->IsEmpty())
+                    add(*c.getGeometryRef(k),
+                        collection ? where + ", member " + std::to_string(k + 1) + " of its collection" : where);
+            break;
+        }
+        default:
+            throw Error(which + where + ": a " + OGRGeometryTypeToName(m.getGeometryType()) +
+                        "; expected land polygons (or closed shorelines)");
         }
     };
     add(*g, "");
@@ -150,7 +147,7 @@ std::string featureName(const OGRFeature &f)
         return std::string("'") + f.GetFieldAsString(k) + "'";
     return std::to_string(f.GetFID());
 }
-}  // namespace
+} // namespace
 
 std::string gdal_detail::polygonFault(const std::vector<Point2> &outer, const std::vector<std::vector<Point2>> &holes)
 {
@@ -235,8 +232,9 @@ std::vector<LandPolygon> gdal_detail::readLandPolygons(const std::string &path, 
             OGREnvelope e;
             g->getEnvelope(&e);
             if (!(e.MinX >= -180.0 && e.MaxX <= 360.0 && e.MinY >= -90.0 && e.MaxY <= 90.0))
-                throw Error(which + ": coordinates up to " + lonLat(std::abs(e.MinX) > std::abs(e.MaxX) ? e.MinX : e.MaxX,
-                                                                     std::abs(e.MinY) > std::abs(e.MaxY) ? e.MinY : e.MaxY) +
+                throw Error(which + ": coordinates up to " +
+                            lonLat(std::abs(e.MinX) > std::abs(e.MaxX) ? e.MinX : e.MaxX,
+                                   std::abs(e.MinY) > std::abs(e.MaxY) ? e.MinY : e.MaxY) +
                             " are not lon/lat (longitude -180..360, latitude -90..90): a projected file (web-mercator "
                             "metres?) needs its spatial reference (a GeoJSON 'crs' member, a shapefile's .prj)");
             if (count)
@@ -261,7 +259,8 @@ std::vector<LandPolygon> gdal_detail::readLandPolygons(const std::string &path, 
                                     ", in lon lat) that OGR's MakeValid cannot repair");
                     g = std::move(fixed);
                     if (repairs)
-                        repairs->push_back("feature " + name + ": " + fault + " (lon lat): repaired by OGR's MakeValid");
+                        repairs->push_back("feature " + name + ": " + fault +
+                                           " (lon lat): repaired by OGR's MakeValid");
                 }
                 if (count && !valid)
                 {
@@ -291,4 +290,4 @@ std::vector<LandPolygon> gdal_detail::readLandPolygons(const std::string &path, 
     }
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

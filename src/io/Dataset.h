@@ -31,9 +31,9 @@ enum class ValueType
     UInt64,
     Float,
     Double,
-    Char,    ///< characters (a NetCDF `char` variable: text by rows)
-    String,  ///< variable-length strings
-    Other    ///< a type of the reader's own (compound, opaque, enum, ...)
+    Char,   ///< characters (a NetCDF `char` variable: text by rows)
+    String, ///< variable-length strings
+    Other   ///< a type of the reader's own (compound, opaque, enum, ...)
 };
 
 /// How messages name the source @p source of kind @p kind: "Zarr store '<source>'", "GRIB file '<source>'", ...
@@ -71,15 +71,9 @@ public:
                            double *out) const = 0;
     /// What the dataset holds but cannot be read (arrays GDAL cannot open, with its reason), for messages; "" when
     /// nothing.
-    virtual std::string unreadable() const
-    {
-        return {};
-    }
+    virtual std::string unreadable() const { return {}; }
     /// The names of the root group's subgroups (a NetCDF-4 file's groups, which are not read); empty when none.
-    virtual std::vector<std::string> groupNames() const
-    {
-        return {};
-    }
+    virtual std::vector<std::string> groupNames() const { return {}; }
     /// All the characters of the text variable @p var (ValueType::Char), row after row, NULs included.
     /// @throws Error naming the dataset and the variable when they cannot be read (or the reader has no text).
     virtual std::string readChars(int var) const
@@ -87,5 +81,5 @@ public:
         throw Error(who() + ": read '" + varName(var) + "': no text variables in this dataset");
     }
 };
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

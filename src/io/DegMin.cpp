@@ -32,4 +32,4 @@ double parseDegMin(const std::string &text)
     const double d = deg + minutes / 60.0;
     return v < 0 ? -d : d;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

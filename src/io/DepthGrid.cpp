@@ -1,5 +1,5 @@
-// A seafloor-depth grid for the depth limit (see DepthGrid.h), read through GriddedDataset: every NetCDF-C call checked,
-// every error naming the file and the variable.
+// A seafloor-depth grid for the depth limit (see DepthGrid.h), read through GriddedDataset: every NetCDF-C call
+// checked, every error naming the file and the variable.
 #include "ompl_glider/io/DepthGrid.h"
 
 #include <algorithm>
@@ -39,8 +39,8 @@ int signOfName(const std::string &name)
     const std::string n = lowerCase(name);
     if (n == "depth" || n == "h" || n == "bathymetry" || n == "bathy" || n == "deptho" || n == "hraw")
         return 1;
-    if (n == "elevation" || n == "z" || n == "topo" || n == "rose" || n == "altitude" || n == "height" ||
-        n == "elev" || n == "btdata")
+    if (n == "elevation" || n == "z" || n == "topo" || n == "rose" || n == "altitude" || n == "height" || n == "elev" ||
+        n == "btdata")
         return -1;
     return 0;
 }
@@ -61,7 +61,8 @@ int depthSign(const GriddedDataset &f, int var, std::string &why)
     const std::string positive = lowerCase(f.attText(var, "positive").value_or(""));
     if (positive == "up" || positive == "down")
     {
-        why = positive == "up" ? "elevation, positive up (attribute positive)" : "depth, positive down (attribute positive)";
+        why = positive == "up" ? "elevation, positive up (attribute positive)"
+                               : "depth, positive down (attribute positive)";
         return positive == "up" ? -1 : 1;
     }
     const std::string sn = f.attText(var, "standard_name").value_or("");
@@ -99,8 +100,8 @@ int findDepthVariable(const GriddedDataset &f, const std::string &variable)
         {
             if (f.varDims(v).size() != 2)
                 continue;
-            const int s = pass == 0 ? signOfStandardName(f.attText(v, "standard_name").value_or(""))
-                                    : signOfName(f.varName(v));
+            const int s =
+                pass == 0 ? signOfStandardName(f.attText(v, "standard_name").value_or("")) : signOfName(f.varName(v));
             if (s != 0)
                 return v;
         }
@@ -209,20 +210,24 @@ void checkHasWater(const GriddedDataset &f, const DepthGrid &g)
             hi = std::max(hi, d);
         }
     if (lo > hi)
-        throw f.error("variable '" + g.variable + "' holds only fill values over the mission's region: no seafloor "
+        throw f.error("variable '" + g.variable +
+                      "' holds only fill values over the mission's region: no seafloor "
                       "depth there");
     if (hi > 0.0)
         return;
     const bool up = g.convention.rfind("elevation", 0) == 0;
-    const double vLo = up ? -hi : lo, vHi = up ? -lo : hi;  // the file's values
-    throw f.error("variable '" + g.variable + "' read as " + g.convention + " makes every node over the mission's "
-                  "region land (values " + text::number(vLo) + ".." + text::number(vHi) + " m in the file); expected "
+    const double vLo = up ? -hi : lo, vHi = up ? -lo : hi; // the file's values
+    throw f.error("variable '" + g.variable + "' read as " + g.convention +
+                  " makes every node over the mission's "
+                  "region land (values " +
+                  text::number(vLo) + ".." + text::number(vHi) +
+                  " m in the file); expected "
                   "a seafloor below the trip: if its values are " +
                   (up ? "depths, positive down" : "elevations, positive up") + ", mark the variable positive = \"" +
                   (up ? "down" : "up") + "\" (ncatted -a positive," + g.variable + ",o,c," + (up ? "down" : "up") +
                   " FILE)");
 }
-}  // namespace
+} // namespace
 
 DepthGrid readDepthGrid(const std::string &path, const std::string &variable, const GeoBox &region)
 {
@@ -232,11 +237,13 @@ DepthGrid readDepthGrid(const std::string &path, const std::string &variable, co
     g.variable = f.varName(var);
     const std::vector<int> dims = f.varDims(var);
     if (dims.size() != 2)
-        throw f.error("variable '" + g.variable + "' (the seafloor depth) must have 2 dimensions (lat/y, lon/x), it has " +
+        throw f.error("variable '" + g.variable +
+                      "' (the seafloor depth) must have 2 dimensions (lat/y, lon/x), it has " +
                       std::to_string(dims.size()));
     const int sign = depthSign(f, var, g.convention);
     if (sign == 0)
-        throw f.error("variable '" + g.variable + "': cannot tell a depth (positive down) from an elevation (positive up): "
+        throw f.error("variable '" + g.variable +
+                      "': cannot tell a depth (positive down) from an elevation (positive up): "
                       "it has no attribute 'positive', no standard_name and no long_name that says which");
     const std::size_t n0 = f.dimLen(dims[0]), n1 = f.dimLen(dims[1]);
     if (n0 < 2 || n1 < 2)
@@ -324,4 +331,4 @@ DepthGrid readDepthGrid(const std::string &path, const std::string &variable, co
     checkHasWater(f, g);
     return g;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

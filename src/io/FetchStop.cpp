@@ -25,14 +25,14 @@ namespace
 /// The host and port of @p url's server ("http://user@host:8080/x" gives host, "8080"; 80 or 443 by its scheme).
 std::pair<std::string, std::string> hostAndPort(std::string url)
 {
-    while (!url.empty() && url.front() == '[' && url.find(']') != std::string::npos)  // NetCDF-C's [mode=...] prefixes
+    while (!url.empty() && url.front() == '[' && url.find(']') != std::string::npos) // NetCDF-C's [mode=...] prefixes
         url = url.substr(url.find(']') + 1);
     const std::size_t scheme = url.find("://");
     const std::string port = url.rfind("https", 0) == 0 ? "443" : "80";
     std::string authority = url.substr(scheme == std::string::npos ? 0 : scheme + 3);
     authority = authority.substr(0, authority.find_first_of("/?#"));
     authority = authority.substr(authority.rfind('@') == std::string::npos ? 0 : authority.rfind('@') + 1);
-    if (!authority.empty() && authority.front() == '[')  // [::1]:8080
+    if (!authority.empty() && authority.front() == '[') // [::1]:8080
     {
         const std::size_t close = authority.find(']');
         const std::string rest = close == std::string::npos ? "" : authority.substr(close + 1);
@@ -63,7 +63,7 @@ bool sameEndpoint(const sockaddr_storage &a, const sockaddr *b)
     }
     return false;
 }
-}  // namespace
+} // namespace
 
 /// Shuts down this process's TCP connections to the server of @p url (its resolved addresses and port): a transfer
 /// on one of them fails at once. Linux: the connections are found among /proc/self/fd.
@@ -134,7 +134,7 @@ void FetchStopWatch::watch()
         if (stopRequested())
         {
             lock.unlock();
-            cutConnectionsTo(url_);  // again every 200 ms, should the client connect anew
+            cutConnectionsTo(url_); // again every 200 ms, should the client connect anew
             lock.lock();
             wake_.wait_for(lock, std::chrono::milliseconds(200), [this] { return done_; });
         }
@@ -142,5 +142,5 @@ void FetchStopWatch::watch()
             wake_.wait_for(lock, std::chrono::milliseconds(20), [this] { return done_; });
     }
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -38,7 +38,7 @@ private:
     std::mutex mutex_;
     std::condition_variable wake_;
     bool done_{false};
-    std::thread thread_;  // started once the rest is built; none when the system has no thread to spare
+    std::thread thread_; // started once the rest is built; none when the system has no thread to spare
 };
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -30,20 +30,25 @@ std::string folderIsNoStore(const std::string &item, const std::string &path)
         netcdf += ext == ".nc" || ext == ".nc4" || ext == ".cdf";
         grib += ext == ".grib2" || ext == ".grb2" || ext == ".grib" || ext == ".grb";
     }
-    std::string why = "forecast files: '" + item + "' is a folder, not a forecast file nor a Zarr v2 store (it holds "
+    std::string why = "forecast files: '" + item +
+                      "' is a folder, not a forecast file nor a Zarr v2 store (it holds "
                       "no .zgroup, .zarray or .zmetadata)";
     const std::string dir = item.empty() || item.back() == '/' ? item : item + "/";
     if (v3)
         return why + "; its zarr.json makes it a Zarr v3 store, which is not read: write it as Zarr v2 (zarr_format=2)";
     if (netcdf > 0)
-        return why + "; it holds " + std::to_string(netcdf) + " NetCDF file(s): give them as one forecast by a "
-               "pattern ('" + dir + "*.nc', quoted) or a list of files separated by commas";
+        return why + "; it holds " + std::to_string(netcdf) +
+               " NetCDF file(s): give them as one forecast by a "
+               "pattern ('" +
+               dir + "*.nc', quoted) or a list of files separated by commas";
     if (grib > 0)
-        return why + "; it holds " + std::to_string(grib) + " GRIB file(s): give them as one forecast by a pattern "
-               "('" + dir + "*.grib2', quoted) or a list of files separated by commas";
+        return why + "; it holds " + std::to_string(grib) +
+               " GRIB file(s): give them as one forecast by a pattern "
+               "('" +
+               dir + "*.grib2', quoted) or a list of files separated by commas";
     return why + "; give the forecast's files (a pattern such as '" + dir + "*.nc', or a list separated by commas)";
 }
-}  // namespace
+} // namespace
 
 std::vector<std::string> expandForecastFiles(const std::vector<std::string> &items, const std::string &baseDir)
 {
@@ -56,7 +61,7 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
             throw Error("forecast files: an empty name in the list (expected file names or glob patterns, "
                         "separated by commas)");
         if (isRemoteSource(item) || isMemoryDataset(item) || item.rfind("ZARR:", 0) == 0)
-        {  // an OPeNDAP URL, a dataset in memory, GDAL's name of a store: one dataset each (io/RemoteSource.h)
+        { // an OPeNDAP URL, a dataset in memory, GDAL's name of a store: one dataset each (io/RemoteSource.h)
             out.push_back(item);
             continue;
         }
@@ -64,7 +69,7 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
             baseDir.empty() || fs::path(item).is_absolute() ? item : (fs::path(baseDir) / item).string();
         std::error_code ec;
         if (item.find_first_of("*?[") == std::string::npos || fs::is_regular_file(path, ec))
-        {  // (a file that exists is that file, even when its name holds brackets: a[1].nc)
+        { // (a file that exists is that file, even when its name holds brackets: a[1].nc)
             if (fs::is_directory(path, ec) && !isZarrStore(path))
                 throw Error(folderIsNoStore(item, path));
             out.push_back(path);
@@ -72,7 +77,8 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
         }
         // wildcards in the file name only: a pattern reads one directory, never walks a tree
         if (fs::path(item).parent_path().string().find_first_of("*?[") != std::string::npos)
-            throw Error("forecast files: the pattern '" + item + "' has wildcards in its directory; put them in the "
+            throw Error("forecast files: the pattern '" + item +
+                        "' has wildcards in its directory; put them in the "
                         "file name only (e.g. forecasts/hycom_*.nc)");
         glob_t g{};
         const int rc = ::glob(path.c_str(), 0, nullptr, &g);
@@ -108,7 +114,7 @@ std::vector<std::string> forecastFileList(const std::string &text, const std::st
 {
     std::vector<std::string> items;
     std::size_t from = 0;
-    for (std::size_t at = text.find(','); ; at = text.find(',', from))
+    for (std::size_t at = text.find(',');; at = text.find(',', from))
     {
         items.push_back(text.substr(from, at == std::string::npos ? std::string::npos : at - from));
         if (at == std::string::npos)
@@ -128,7 +134,7 @@ bool isHttp(const std::string &s)
 {
     return s.rfind("http://", 0) == 0 || s.rfind("https://", 0) == 0;
 }
-}  // namespace
+} // namespace
 
 bool isZarrStore(const std::string &path)
 {
@@ -176,16 +182,16 @@ const char *datasetKindName(DatasetKind kind)
 {
     switch (kind)
     {
-        case DatasetKind::NetCdfFile:
-            return "NetCDF file";
-        case DatasetKind::Opendap:
-            return "OPeNDAP dataset";
-        case DatasetKind::MemoryDataset:
-            return "in-memory dataset";
-        case DatasetKind::ZarrStore:
-            return "Zarr store";
-        case DatasetKind::GribFile:
-            return "GRIB file";
+    case DatasetKind::NetCdfFile:
+        return "NetCDF file";
+    case DatasetKind::Opendap:
+        return "OPeNDAP dataset";
+    case DatasetKind::MemoryDataset:
+        return "in-memory dataset";
+    case DatasetKind::ZarrStore:
+        return "Zarr store";
+    case DatasetKind::GribFile:
+        return "GRIB file";
     }
     return "NetCDF file";
 }
@@ -194,4 +200,4 @@ std::string forecastSourceKind(const std::string &path)
 {
     return datasetKindName(datasetKindOf(path));
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -18,7 +18,7 @@ std::shared_ptr<gridded_detail::Dataset> openGrid(const std::string &path)
     return gridded_detail::GdalGrid::open(path);
 }
 #endif
-}  // namespace
+} // namespace
 
 extern "C" const gdal_detail::EntryPoints *ompl_glider_gdal_entry_points()
 {

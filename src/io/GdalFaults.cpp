@@ -68,7 +68,7 @@ std::string gribTruncation(const std::string &path)
         else if (head[7] == 1)
             length = (vsi_l_offset(head[4]) << 16) | (vsi_l_offset(head[5]) << 8) | head[6];
         else
-            break;  // an edition GDAL judges itself
+            break; // an edition GDAL judges itself
         char tail[4] = {};
         if (length < 16 || at + length > size)
             why = "its message " + std::to_string(message) + " at byte " + std::to_string(at) + " declares " +
@@ -76,7 +76,8 @@ std::string gribTruncation(const std::string &path)
                   " of them: the file is truncated (a download cut short?)";
         else if (VSIFSeekL(f, at + length - 4, SEEK_SET) != 0 || VSIFReadL(tail, 1, 4, f) != 4 ||
                  std::memcmp(tail, "7777", 4) != 0)
-            why = "its message " + std::to_string(message) + " at byte " + std::to_string(at) + " does not end in "
+            why = "its message " + std::to_string(message) + " at byte " + std::to_string(at) +
+                  " does not end in "
                   "'7777' where its length says: the file is corrupt";
         at += length;
     }
@@ -123,5 +124,5 @@ std::string loneVelocityComponent(const std::vector<std::shared_ptr<GDALMDArray>
         }
     return "";
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

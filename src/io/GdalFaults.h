@@ -29,10 +29,7 @@ public:
     CollectGdalErrors &operator=(const CollectGdalErrors &) = delete;
     /// The messages from the @p from-th on, joined by "; " ("" when none).
     std::string since(std::size_t from) const;
-    std::size_t count() const
-    {
-        return messages_.size();
-    }
+    std::size_t count() const { return messages_.size(); }
 
 private:
     static void CPL_STDCALL handler(CPLErr level, CPLErrorNum number, const char *message);
@@ -52,5 +49,5 @@ std::vector<std::string> droppedArrays(const std::string &folder, const std::set
 /// component of a pair (UOGRD/VOGRD, UGRD/VGRD) without the other, with what gribTruncation() says of @p file;
 /// "" otherwise.
 std::string loneVelocityComponent(const std::vector<std::shared_ptr<GDALMDArray>> &vars, const std::string &file);
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -34,7 +34,6 @@ std::string withoutSlash(std::string s)
     return s;
 }
 
-
 /// The http(s) URL of a Zarr store given as a URL (ending in .zarr) or as GDAL's `ZARR:URL` / `ZARR:"URL"`; "" for
 /// anything else.
 std::string zarrUrl(const std::string &path)
@@ -68,10 +67,7 @@ struct QuietGdal
         CPLPushErrorHandler(CPLQuietErrorHandler);
         CPLErrorReset();
     }
-    ~QuietGdal()
-    {
-        CPLPopErrorHandler();
-    }
+    ~QuietGdal() { CPLPopErrorHandler(); }
     QuietGdal(const QuietGdal &) = delete;
     QuietGdal &operator=(const QuietGdal &) = delete;
 };
@@ -80,22 +76,31 @@ ValueType valueTypeOf(GDALDataType t)
 {
     switch (t)
     {
-        case GDT_Byte: return ValueType::UByte;
-        case GDT_UInt16: return ValueType::UShort;
-        case GDT_Int16: return ValueType::Short;
-        case GDT_UInt32: return ValueType::UInt;
-        case GDT_Int32: return ValueType::Int;
-        case GDT_UInt64: return ValueType::UInt64;
-        case GDT_Int64: return ValueType::Int64;
-        case GDT_Float32: return ValueType::Float;
-        default: return ValueType::Double;
+    case GDT_Byte:
+        return ValueType::UByte;
+    case GDT_UInt16:
+        return ValueType::UShort;
+    case GDT_Int16:
+        return ValueType::Short;
+    case GDT_UInt32:
+        return ValueType::UInt;
+    case GDT_Int32:
+        return ValueType::Int;
+    case GDT_UInt64:
+        return ValueType::UInt64;
+    case GDT_Int64:
+        return ValueType::Int64;
+    case GDT_Float32:
+        return ValueType::Float;
+    default:
+        return ValueType::Double;
     }
 }
-}  // namespace
+} // namespace
 
 GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
 {
-    const NetCdfLock lock;  // GDAL's datasets, and its netCDF driver's NetCDF-C calls (NetCdfLock.h)
+    const NetCdfLock lock; // GDAL's datasets, and its netCDF driver's NetCDF-C calls (NetCdfLock.h)
     Impl &d = *impl_;
     d.path = path;
     d.kind = isZarrStore(path) ? DatasetKind::ZarrStore : DatasetKind::GribFile;
@@ -115,7 +120,7 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
         d.file = std::make_unique<FileMirror>(path, ".grib2", DatasetKind::GribFile);
         open = d.file->file();
     }
-    const std::string local = open;  // the store's folder or the file GDAL reads
+    const std::string local = open; // the store's folder or the file GDAL reads
     if (d.kind == DatasetKind::ZarrStore && open.rfind("ZARR:", 0) != 0)
         open = "ZARR:\"" + withoutSlash(open) + "\"";
     CollectGdalErrors errors;
@@ -126,7 +131,7 @@ GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
         const std::string why = !cut.empty() ? cut : errors.since(0);
         throw Error(who() + ": cannot open" + (why.empty() ? std::string() : ": " + why));
     }
-    const std::string opening = errors.since(0);  // GDAL's messages on the store as a whole
+    const std::string opening = errors.since(0); // GDAL's messages on the store as a whole
     d.addGroup(d.root, errors);
     if (d.kind == DatasetKind::ZarrStore)
         d.addDropped(zarrFolder(local), opening);
@@ -158,13 +163,13 @@ std::string GdalGrid::unreadable() const
 
 GdalGrid::~GdalGrid()
 {
-    const NetCdfLock lock;  // the dataset closed under the lock too
+    const NetCdfLock lock; // the dataset closed under the lock too
     impl_.reset();
 }
 
 std::shared_ptr<GdalGrid> GdalGrid::open(const std::string &path)
 {
-    const NetCdfLock netcdf;  // before this function's own lock (NetCdfLock.h: its lock order)
+    const NetCdfLock netcdf; // before this function's own lock (NetCdfLock.h: its lock order)
     if (!isUrl(path) && zarrUrl(path).empty())
         return std::make_shared<GdalGrid>(path);
     static std::mutex m;
@@ -215,11 +220,11 @@ std::optional<int> GdalGrid::findVar(const std::string &name) const
     // a GRIB parameter by its short name (UOGRD for the array UOGRD_0-DBSL), where one array has it
     std::optional<int> found;
     for (std::size_t k = 0; k < impl_->vars.size(); ++k)
-        if (auto a = impl_->vars[k]->GetAttribute("name"); a && a->GetDataType().GetClass() == GEDTC_STRING &&
-                                                           a->ReadAsString() && name == a->ReadAsString())
+        if (auto a = impl_->vars[k]->GetAttribute("name");
+            a && a->GetDataType().GetClass() == GEDTC_STRING && a->ReadAsString() && name == a->ReadAsString())
         {
             if (found)
-                return std::nullopt;  // several levels or times: the array's own name is needed
+                return std::nullopt; // several levels or times: the array's own name is needed
             found = static_cast<int>(k);
         }
     return found;
@@ -247,7 +252,7 @@ ValueType GdalGrid::varType(int var) const
 
 std::optional<std::string> GdalGrid::attText(int var, const char *name) const
 {
-    const NetCdfLock netcdf;  // before the dataset's own lock (NetCdfLock.h: its lock order)
+    const NetCdfLock netcdf; // before the dataset's own lock (NetCdfLock.h: its lock order)
     const std::lock_guard<std::mutex> lock(impl_->mutex);
     if (auto a = impl_->attribute(var, name))
     {
@@ -262,7 +267,7 @@ std::optional<std::string> GdalGrid::attText(int var, const char *name) const
     if (std::strcmp(name, "units") == 0)
     {
         const std::string unit = text::trim(array.GetUnit());
-        if (unit == "sec UTC")  // GDAL's GRIB times: seconds of the Unix epoch
+        if (unit == "sec UTC") // GDAL's GRIB times: seconds of the Unix epoch
             return std::string("seconds since 1970-01-01 00:00:00");
         if (!unit.empty())
             return unit;
@@ -284,7 +289,7 @@ std::optional<std::string> GdalGrid::attText(int var, const char *name) const
 
 std::vector<double> GdalGrid::attDoubles(int var, const char *name, bool &isText) const
 {
-    const NetCdfLock netcdf;  // before the dataset's own lock (NetCdfLock.h: its lock order)
+    const NetCdfLock netcdf; // before the dataset's own lock (NetCdfLock.h: its lock order)
     const std::lock_guard<std::mutex> lock(impl_->mutex);
     isText = false;
     if (auto a = impl_->attribute(var, name))
@@ -321,7 +326,7 @@ std::vector<double> GdalGrid::attDoubles(int var, const char *name, bool &isText
 void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
                          double *out) const
 {
-    const NetCdfLock netcdf;  // before the dataset's own lock (NetCdfLock.h: its lock order)
+    const NetCdfLock netcdf; // before the dataset's own lock (NetCdfLock.h: its lock order)
     const std::lock_guard<std::mutex> lock(impl_->mutex);
     for (const Impl::Block &b : impl_->blocks)
         if (b.var == var && inside(start, count, b.start, b.count))
@@ -359,7 +364,7 @@ void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const s
             const Impl::Field &f = series[start[0] + t];
             std::vector<GUInt64> at = first;
             std::vector<std::size_t> span = size;
-            if (f.record >= 0)  // a record of GDAL's TIME array
+            if (f.record >= 0) // a record of GDAL's TIME array
             {
                 at.insert(at.begin(), static_cast<GUInt64>(f.record));
                 span.insert(span.begin(), 1);
@@ -384,5 +389,5 @@ void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const s
         throw Error(who() + ": cannot read " + array.GetName() + block + (why.empty() ? std::string() : ": " + why));
     }
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

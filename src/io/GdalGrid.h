@@ -1,9 +1,9 @@
 #pragma once
 /// @file GdalGrid.h
 /// @brief Internal to the library (not installed): a gridded dataset read through GDAL's multidimensional API (Zarr v2
-/// stores on disk or over HTTP, GRIB2 files), seen as GriddedDataset sees a NetCDF file: variables and dimensions by index,
-/// CF attributes by name, values as doubles by hyperslab. So the forecast reader (current/gridded/) applies the same
-/// rules to every layout: CF units and time, longitude conventions, land from fill values, the trip's region, only
+/// stores on disk or over HTTP, GRIB2 files), seen as GriddedDataset sees a NetCDF file: variables and dimensions by
+/// index, CF attributes by name, values as doubles by hyperslab. So the forecast reader (current/gridded/) applies the
+/// same rules to every layout: CF units and time, longitude conventions, land from fill values, the trip's region, only
 /// the records and levels it needs read.
 ///
 /// GDAL folds some CF attributes into properties of an array; they are given back under their CF names: `units`
@@ -59,8 +59,8 @@ public:
                    double *out) const override;
 
 private:
-    struct Impl;  // GdalGridImpl.h
+    struct Impl; // GdalGridImpl.h
     std::unique_ptr<Impl> impl_;
 };
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

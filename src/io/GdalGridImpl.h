@@ -36,12 +36,12 @@ struct GdalGrid::Impl
 {
     std::string path;
     DatasetKind kind{DatasetKind::ZarrStore};
-    bool geographic{false};  // GRIB: the arrays' grid is in longitude and latitude
+    bool geographic{false}; // GRIB: the arrays' grid is in longitude and latitude
     // (declared before the dataset: destroyed after it)
-    std::unique_ptr<ZarrMirror> mirror;      // a store over HTTP: what was fetched of it (GDAL reads the mirror)
-    std::unique_ptr<FileMirror> file;        // a GRIB file over HTTP: its copy (GDAL reads the copy)
+    std::unique_ptr<ZarrMirror> mirror; // a store over HTTP: what was fetched of it (GDAL reads the mirror)
+    std::unique_ptr<FileMirror> file;   // a GRIB file over HTTP: its copy (GDAL reads the copy)
     std::unique_ptr<GDALDataset> dataset;
-    std::unique_ptr<GDALDataset> timeHolder;  // the in-memory dataset of an added time coordinate (addFileTime())
+    std::unique_ptr<GDALDataset> timeHolder; // the in-memory dataset of an added time coordinate (addFileTime())
     std::shared_ptr<GDALGroup> root;
     std::vector<std::shared_ptr<GDALMDArray>> vars;
     /// A GRIB field: a 2-D array (record -1), or record `record` of a 3-D array over GDAL's TIME dimension.
@@ -53,17 +53,17 @@ struct GdalGrid::Impl
     /// per var: the GRIB fields of one parameter and level, one per time of the added time dimension (empty: the
     /// array as GDAL gives it)
     std::vector<std::vector<Field>> series;
-    int timeDim{-1};              // that dimension, -1 without
+    int timeDim{-1}; // that dimension, -1 without
     std::vector<std::shared_ptr<GDALDimension>> dims;
-    std::map<std::string, int> dimIndex;  // by full name
-    mutable std::mutex mutex;             // GDAL's datasets are not thread-safe
+    std::map<std::string, int> dimIndex; // by full name
+    mutable std::mutex mutex;            // GDAL's datasets are not thread-safe
     struct Block
     {
         int var;
         std::vector<std::size_t> start, count;
         std::vector<double> values;
     };
-    std::vector<Block> blocks;  // the blocks read so far (a URL's chunks fetched, a GRIB message decoded, once)
+    std::vector<Block> blocks; // the blocks read so far (a URL's chunks fetched, a GRIB message decoded, once)
 
     int dimOf(const std::shared_ptr<GDALDimension> &d)
     {
@@ -73,7 +73,7 @@ struct GdalGrid::Impl
         return it->second;
     }
 
-    std::vector<std::string> unreadable;  // "array 'uo': <GDAL's reason>", the arrays GDAL lists but cannot open
+    std::vector<std::string> unreadable; // "array 'uo': <GDAL's reason>", the arrays GDAL lists but cannot open
 
     void addGroup(const std::shared_ptr<GDALGroup> &g, CollectGdalErrors &errors)
     {
@@ -89,7 +89,7 @@ struct GdalGrid::Impl
                                      name + "' cannot be opened" + (why.empty() ? std::string() : ": " + why));
             }
         }
-        for (const std::string &name : g->GetGroupNames())  // GRIB: none; a store's subgroups
+        for (const std::string &name : g->GetGroupNames()) // GRIB: none; a store's subgroups
             if (auto sub = g->OpenGroup(name))
                 addGroup(sub, errors);
     }
@@ -131,8 +131,9 @@ struct GdalGrid::Impl
 
     std::shared_ptr<GDALAttribute> attribute(int var, const char *name) const
     {
-        return var == kGlobalAttributes ? root->GetAttribute(name) : vars.at(static_cast<std::size_t>(var))->GetAttribute(name);
+        return var == kGlobalAttributes ? root->GetAttribute(name)
+                                        : vars.at(static_cast<std::size_t>(var))->GetAttribute(name);
     }
 };
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -18,7 +18,7 @@ bool isGdalSource(const std::string &path)
 {
     return isZarrStore(path) || isGribFile(path);
 }
-}  // namespace gridded_detail
+} // namespace gridded_detail
 
 namespace gdal_detail
 {
@@ -53,7 +53,7 @@ const EntryPoints *loadModule()
     return points;
 }
 #endif
-}  // namespace
+} // namespace
 
 const EntryPoints &gdalPart()
 {
@@ -65,7 +65,7 @@ const EntryPoints &gdalPart()
     return *points;
 #endif
 }
-}  // namespace gdal_detail
+} // namespace gdal_detail
 
 std::vector<LandPolygon> readLandPolygons(const std::string &path, const GeoBox &box, std::vector<std::string> *repairs,
                                           CoastlineCount *count)
@@ -77,4 +77,4 @@ std::string polygonFault(const std::vector<Point2> &outer, const std::vector<std
 {
     return gdal_detail::gdalPart().polygonFault(outer, holes);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -29,7 +29,7 @@ struct HttpFailure;
 /// name ending in `.zarr`, also as an http(s) URL, or GDAL's `ZARR:` prefix) or a GRIB file (`.grib2`, `.grb2`,
 /// `.grib`, `.grb`, or a file whose first bytes are "GRIB"). Asks no GDAL function (FileList.h's tests).
 bool isGdalSource(const std::string &path);
-}  // namespace gridded_detail
+} // namespace gridded_detail
 
 namespace gdal_detail
 {
@@ -58,8 +58,8 @@ const EntryPoints &gdalPart();
 std::vector<LandPolygon> readLandPolygons(const std::string &path, const GeoBox &box, std::vector<std::string> *repairs,
                                           CoastlineCount *count);
 std::string polygonFault(const std::vector<Point2> &outer, const std::vector<std::vector<Point2>> &holes);
-}  // namespace gdal_detail
-}  // namespace ompl_glider
+} // namespace gdal_detail
+} // namespace ompl_glider
 
 /// The module's one exported entry point: its table of functions (GdalEntryPoints.cpp).
 extern "C" const ompl_glider::gdal_detail::EntryPoints *ompl_glider_gdal_entry_points();

@@ -14,7 +14,7 @@ namespace ompl_glider
 namespace
 {
 
-}  // namespace
+} // namespace
 
 double GeoBox::unwrap(double lon) const
 {
@@ -33,7 +33,8 @@ bool GeoBox::contains(LonLat p) const
 
 std::string GeoBox::text() const
 {
-    return "lon " + text::number(lonMin) + ".." + text::number(lonMax) + ", lat " + text::number(latMin) + ".." + text::number(latMax);
+    return "lon " + text::number(lonMin) + ".." + text::number(lonMax) + ", lat " + text::number(latMin) + ".." +
+           text::number(latMax);
 }
 
 std::optional<RegionFault> regionFault(double lonMin, double latMin, double lonMax, double latMax)
@@ -57,7 +58,8 @@ std::optional<RegionFault> regionFault(double lonMin, double latMin, double lonM
         return RegionFault{"lon_max", "the region " + text::number(lonMin) + ".." + text::number(lonMax) + " is " +
                                           text::number(lonMax - lonMin) + " degrees wide; it must be less than 360"};
     if (lonMax < lonMin && lonMax - lonMin + 360.0 <= 0.0)
-        return RegionFault{"lon_max", text::number(lonMax) + " lies a whole turn or more west of lon_min " + text::number(lonMin) +
+        return RegionFault{"lon_max", text::number(lonMax) + " lies a whole turn or more west of lon_min " +
+                                          text::number(lonMin) +
                                           " (lon_max < lon_min means eastward across the antimeridian)"};
     return std::nullopt;
 }
@@ -78,8 +80,9 @@ GeoBox geoBox(double lonMin, double latMin, double lonMax, double latMax)
 double greatCircleKm(LonLat a, LonLat b)
 {
     const double dLat = (b.lat - a.lat) * kRadPerDeg, dLon = normalizeLongitude(b.lon - a.lon) * kRadPerDeg;
-    const double h = std::sin(dLat / 2) * std::sin(dLat / 2) +
-                     std::cos(a.lat * kRadPerDeg) * std::cos(b.lat * kRadPerDeg) * std::sin(dLon / 2) * std::sin(dLon / 2);
+    const double h = std::sin(dLat / 2) * std::sin(dLat / 2) + std::cos(a.lat * kRadPerDeg) *
+                                                                   std::cos(b.lat * kRadPerDeg) * std::sin(dLon / 2) *
+                                                                   std::sin(dLon / 2);
     return 2.0 * kEarthRadiusKm * std::asin(std::min(1.0, std::sqrt(h)));
 }
 
@@ -107,7 +110,7 @@ GeoBox tripBox(const std::vector<LonLat> &points, double marginKm)
     }
     // The shortest arc holding every longitude: the circle minus its largest gap between neighbours.
     std::sort(lons.begin(), lons.end());
-    std::size_t after = 0;  // the arc starts at lons[after]
+    std::size_t after = 0; // the arc starts at lons[after]
     double gap = lons.front() + 360.0 - lons.back();
     for (std::size_t k = 1; k < lons.size(); ++k)
         if (lons[k] - lons[k - 1] > gap)
@@ -124,7 +127,7 @@ GeoBox tripBox(const std::vector<LonLat> &points, double marginKm)
     const double dLon = marginKm / (kKmPerDegree * std::cos(phi * kRadPerDeg));
     if (width + 2.0 * dLon >= 360.0 || !std::isfinite(dLon))
     {
-        lon0 += 0.5 * width - 180.0;  // the whole circle, centred on the trip
+        lon0 += 0.5 * width - 180.0; // the whole circle, centred on the trip
         width = 360.0;
     }
     else
@@ -161,4 +164,4 @@ GeoBox frameBounds(const Box &r, const std::function<LonLat(Point2)> &toGeograph
     return b;
 }
 
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -56,8 +56,7 @@ std::string dacProblem(const DacRecord &r, const VelocityUnits &units)
         return "position out of range";
     if (std::hypot(r.u, r.v) > kMaxPlausibleDac)
         return "faster than " + text::number(kMaxPlausibleDac) + " m/s (u, v read " +
-               (text::trim(units.units).empty() ? std::string("without units, as m/s")
-                                                : "in '" + units.units + "'") +
+               (text::trim(units.units).empty() ? std::string("without units, as m/s") : "in '" + units.units + "'") +
                ")";
     return "";
 }
@@ -154,14 +153,14 @@ void readCsv(const std::string &file, GliderObservations &o)
     int n = 0;
     char separator = ',';
     std::map<std::string, std::size_t> col;
-    VelocityUnits velocity;  // of u and v: a header "u (cm/s)" gives the unit, "u" alone is m/s
+    VelocityUnits velocity; // of u and v: a header "u (cm/s)" gives the unit, "u" alone is m/s
     while (std::getline(in, line))
     {
         ++n;
         if (line.empty() || line[0] == '#')
             continue;
         if (col.empty() && line.find(',') == std::string::npos && line.find(';') != std::string::npos)
-            separator = ';';  // a ';'-separated CSV (a spreadsheet's in a decimal-comma locale)
+            separator = ';'; // a ';'-separated CSV (a spreadsheet's in a decimal-comma locale)
         const std::vector<std::string> cells = splitCsv(line, separator);
         if (col.empty())
         {
@@ -306,12 +305,12 @@ ProfileFile readProfile(const std::string &file)
     if (p.platform.empty())
         if (const auto id = var("trajectory");
             id && nc.varType(*id) == gridded_detail::ValueType::Char && nc.varDims(*id).size() == 1)
-            p.platform = nc.readChars(*id).c_str();  // up to the first NUL
+            p.platform = nc.readChars(*id).c_str(); // up to the first NUL
     if (const auto t = var("profile_time"), la = var("profile_lat"), lo = var("profile_lon"); t && la && lo)
     {
         const std::vector<double> time = seconds(*t), lat = values(*la), lon = values(*lo);
-        const std::size_t n = sameLength({{"profile_time", time}, {"profile_lat", lat}, {"profile_lon", lon}},
-                                         "profile fix");
+        const std::size_t n =
+            sameLength({{"profile_time", time}, {"profile_lat", lat}, {"profile_lon", lon}}, "profile fix");
         for (std::size_t i = 0; i < n; ++i)
             if (std::isfinite(time[i]) && std::isfinite(lon[i]) && std::isfinite(lat[i]))
                 p.fixes.push_back(GliderFix{time[i], {lon[i] > 180.0 ? lon[i] - 360.0 : lon[i], lat[i]}});
@@ -327,8 +326,7 @@ ProfileFile readProfile(const std::string &file)
                        "': give both in one unit");
     const std::vector<double> time = seconds(*var("time_uv")), lon = values(*var("lon_uv")),
                               lat = values(*var("lat_uv")), u = values(*var("u")), v = values(*var("v"));
-    const std::size_t n =
-        sameLength({{"time_uv", time}, {"lat_uv", lat}, {"lon_uv", lon}, {"u", u}, {"v", v}}, "DAC");
+    const std::size_t n = sameLength({{"time_uv", time}, {"lat_uv", lat}, {"lon_uv", lon}, {"u", u}, {"v", v}}, "DAC");
     // the QC flags: one for the file's records, or one per record
     std::vector<std::pair<const char *, std::vector<double>>> flags;
     for (const char *qc : {"u_qc", "v_qc", "time_uv_qc", "lat_uv_qc", "lon_uv_qc"})

@@ -37,11 +37,11 @@ std::optional<std::string> gribStandardName(const std::string &shortName)
 /// it. A file whose fields GDAL gave all as TIME arrays is read as GDAL gives it.
 void GdalGrid::Impl::addFileTime()
 {
-    std::map<std::string, std::map<double, Field>> fields;  // name|level -> time -> field
-    std::vector<std::string> order;                          // the parameters in the file's order
-    std::set<std::size_t> used;                              // the vars that hold fields
+    std::map<std::string, std::map<double, Field>> fields; // name|level -> time -> field
+    std::vector<std::string> order;                        // the parameters in the file's order
+    std::set<std::size_t> used;                            // the vars that hold fields
     std::set<double> times;
-    bool loose = false;  // some field is a 2-D array of its own
+    bool loose = false; // some field is a 2-D array of its own
     for (std::size_t k = 0; k < vars.size(); ++k)
     {
         const auto &a = vars[k];
@@ -49,7 +49,7 @@ void GdalGrid::Impl::addFileTime()
         for (const char *name : {"name", "first_level"})
             if (auto text = a->GetAttribute(name); text && text->GetDataType().GetClass() == GEDTC_STRING)
                 key += std::string(text->ReadAsString() ? text->ReadAsString() : "") + "|";
-        std::vector<std::pair<double, long>> at;  // (time, record; -1: the 2-D array itself)
+        std::vector<std::pair<double, long>> at; // (time, record; -1: the 2-D array itself)
         const auto &d = a->GetDimensions();
         if (!d.empty() && d[0]->GetType() == GDAL_DIM_TYPE_TEMPORAL && d.size() == 3)
         {
@@ -72,7 +72,7 @@ void GdalGrid::Impl::addFileTime()
         for (const auto &[time, record] : at)
         {
             if (!fields[key].emplace(time, Field{a, record}).second)
-                return;  // two fields of one parameter, level and time: GDAL's arrays as they are
+                return; // two fields of one parameter, level and time: GDAL's arrays as they are
             times.insert(time);
         }
         used.insert(k);
@@ -87,7 +87,7 @@ void GdalGrid::Impl::addFileTime()
             continue;
         }
         refuseGap(it->first, it->second, times);
-        for (const auto &[time, f] : it->second)  // not a velocity: its arrays as GDAL gives them
+        for (const auto &[time, f] : it->second) // not a velocity: its arrays as GDAL gives them
             for (std::size_t k = 0; k < vars.size(); ++k)
                 if (vars[k] == f.array)
                     used.erase(k);
@@ -104,8 +104,9 @@ void GdalGrid::Impl::addFileTime()
     auto array = dim ? group->CreateMDArray("time", {dim}, GDALExtendedDataType::Create(GDT_Float64)) : nullptr;
     const GUInt64 first = 0;
     const std::size_t n = values.size();
-    if (!array || !array->Write(&first, &n, nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64),
-                                values.data()) || !array->SetUnit("sec UTC"))
+    if (!array ||
+        !array->Write(&first, &n, nullptr, nullptr, GDALExtendedDataType::Create(GDT_Float64), values.data()) ||
+        !array->SetUnit("sec UTC"))
         return;
     // one variable per parameter and level, its earliest field standing for it (name, attributes, type); the
     // arrays of other parameters as GDAL gives them
@@ -133,7 +134,8 @@ void GdalGrid::Impl::addFileTime()
 }
 
 /// A velocity parameter (UOGRD, VOGRD, UGRD, VGRD) missing at one of @p times is refused, naming the time.
-void GdalGrid::Impl::refuseGap(const std::string &key, const std::map<double, Field> &byTime, const std::set<double> &times) const
+void GdalGrid::Impl::refuseGap(const std::string &key, const std::map<double, Field> &byTime,
+                               const std::set<double> &times) const
 {
     const std::string parameter = key.substr(0, key.find('|'));
     if (!gribStandardName(parameter))
@@ -153,5 +155,5 @@ void GdalGrid::Impl::refuseGap(const std::string &key, const std::map<double, Fi
                 std::to_string(byTime.size()) + " of the " + std::to_string(times.size()) +
                 " times of the file (none at " + date + "): a forecast needs its currents at every time");
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -73,17 +73,14 @@ public:
     {
         const NetCdfLock lock;
         if (remote_)
-            remote_->flush();  // the dataset stays open for the process's next reader
+            remote_->flush(); // the dataset stays open for the process's next reader
         else
             nc_close(id_);
     }
     NetCdfDataset(const NetCdfDataset &) = delete;
     NetCdfDataset &operator=(const NetCdfDataset &) = delete;
 
-    std::string who() const override
-    {
-        return remote_ ? remote_->who() : "NetCDF file '" + path_ + "'";
-    }
+    std::string who() const override { return remote_ ? remote_->who() : "NetCDF file '" + path_ + "'"; }
     int nvars() const override
     {
         const NetCdfLock lock;
@@ -222,19 +219,32 @@ private:
     {
         switch (t)
         {
-            case NC_BYTE: return ValueType::Byte;
-            case NC_UBYTE: return ValueType::UByte;
-            case NC_SHORT: return ValueType::Short;
-            case NC_USHORT: return ValueType::UShort;
-            case NC_INT: return ValueType::Int;
-            case NC_UINT: return ValueType::UInt;
-            case NC_INT64: return ValueType::Int64;
-            case NC_UINT64: return ValueType::UInt64;
-            case NC_FLOAT: return ValueType::Float;
-            case NC_DOUBLE: return ValueType::Double;
-            case NC_CHAR: return ValueType::Char;
-            case NC_STRING: return ValueType::String;
-            default: return ValueType::Other;
+        case NC_BYTE:
+            return ValueType::Byte;
+        case NC_UBYTE:
+            return ValueType::UByte;
+        case NC_SHORT:
+            return ValueType::Short;
+        case NC_USHORT:
+            return ValueType::UShort;
+        case NC_INT:
+            return ValueType::Int;
+        case NC_UINT:
+            return ValueType::UInt;
+        case NC_INT64:
+            return ValueType::Int64;
+        case NC_UINT64:
+            return ValueType::UInt64;
+        case NC_FLOAT:
+            return ValueType::Float;
+        case NC_DOUBLE:
+            return ValueType::Double;
+        case NC_CHAR:
+            return ValueType::Char;
+        case NC_STRING:
+            return ValueType::String;
+        default:
+            return ValueType::Other;
         }
     }
     void check(int status, const std::string &what) const
@@ -246,17 +256,17 @@ private:
 
     std::string path_;
     int id_{-1};
-    std::shared_ptr<RemoteDataset> remote_;       ///< a URL's dataset (null for a file)
-    std::shared_ptr<const std::string> memory_;  ///< an in-memory dataset's bytes (MemoryDataset.h)
+    std::shared_ptr<RemoteDataset> remote_;     ///< a URL's dataset (null for a file)
+    std::shared_ptr<const std::string> memory_; ///< an in-memory dataset's bytes (MemoryDataset.h)
 };
-}  // namespace
+} // namespace
 
 GriddedDataset::GriddedDataset(const std::string &path) : path_(path)
 {
 #if OMPL_GLIDER_WITH_MISSION
     if (isGdalSource(path))
     {
-        data_ = gdal_detail::gdalPart().openGrid(path);  // GDAL loaded here (GdalModule.h)
+        data_ = gdal_detail::gdalPart().openGrid(path); // GDAL loaded here (GdalModule.h)
         return;
     }
 #endif
@@ -334,7 +344,7 @@ std::vector<double> GriddedDataset::attDoubles(int var, const char *name) const
 {
     bool isText = false;
     std::vector<double> v = data_->attDoubles(var, name, isText);
-    if (isText)  // CF: these attributes are numbers; text would be ignored
+    if (isText) // CF: these attributes are numbers; text would be ignored
         throw error((var == kGlobalAttributes ? std::string("global") : "variable '" + varName(var) + "':") +
                     " attribute '" + name + "' is text ('" + attText(var, name).value_or("") +
                     "'); it must be numeric");
@@ -359,9 +369,9 @@ std::vector<double> GriddedDataset::readAll1D(int var) const
 }
 
 void GriddedDataset::readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
-                       double *out) const
+                               double *out) const
 {
     data_->readBlock(var, start, count, out);
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

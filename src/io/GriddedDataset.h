@@ -43,10 +43,7 @@ public:
     GriddedDataset(const GriddedDataset &) = delete;
     GriddedDataset &operator=(const GriddedDataset &) = delete;
 
-    const std::string &path() const
-    {
-        return path_;
-    }
+    const std::string &path() const { return path_; }
     /// An Error "NetCDF file '<path>': <what>" ("OPeNDAP source '<url>': <what>" for a URL).
     Error error(const std::string &what) const;
     /// @brief error() about the setting @p field (Error::field()).
@@ -80,7 +77,7 @@ public:
 
 private:
     std::string path_;
-    std::shared_ptr<Dataset> data_;  ///< what reads it: NetCDF-C (a file, in memory, OPeNDAP) or GDAL
+    std::shared_ptr<Dataset> data_; ///< what reads it: NetCDF-C (a file, in memory, OPeNDAP) or GDAL
 };
 
 // ---- classic-format files (ClassicSize.cpp) ----
@@ -88,16 +85,16 @@ private:
 /// What the header of a classic-format file (CDF-1, CDF-2 or CDF-5) declares about where its data end.
 struct ClassicExtent
 {
-    int version{0};              ///< 1, 2 or 5; 0 when the bytes are not a classic header
-    std::string corrupt;         ///< after a classic magic number, what breaks the format (unknown type or tag,
-                                 ///< a dimension id out of range, a variable of more than 2^64 bytes)
-    bool headerCut{false};       ///< the bytes end inside the header (headerEnd and the data fields are then 0)
-    bool streaming{false};       ///< numrecs is STREAMING: the record count is unknown and the records unchecked
-    std::uint64_t fileBytes{0};  ///< bytes of the file
-    std::uint64_t headerEnd{0};  ///< first byte after the header
-    std::uint64_t dataBegin{0};  ///< first byte of the first variable's values (headerEnd without variables)
-    std::uint64_t fixedEnd{0};   ///< end of the last non-record variable's values (0 without one)
-    std::uint64_t recordEnd{0};  ///< end of the last record variable's values in the last record (0 without)
+    int version{0};             ///< 1, 2 or 5; 0 when the bytes are not a classic header
+    std::string corrupt;        ///< after a classic magic number, what breaks the format (unknown type or tag,
+                                ///< a dimension id out of range, a variable of more than 2^64 bytes)
+    bool headerCut{false};      ///< the bytes end inside the header (headerEnd and the data fields are then 0)
+    bool streaming{false};      ///< numrecs is STREAMING: the record count is unknown and the records unchecked
+    std::uint64_t fileBytes{0}; ///< bytes of the file
+    std::uint64_t headerEnd{0}; ///< first byte after the header
+    std::uint64_t dataBegin{0}; ///< first byte of the first variable's values (headerEnd without variables)
+    std::uint64_t fixedEnd{0};  ///< end of the last non-record variable's values (0 without one)
+    std::uint64_t recordEnd{0}; ///< end of the last record variable's values in the last record (0 without)
 
     /// The byte where the declared contents end: the largest of headerEnd, fixedEnd and recordEnd.
     std::uint64_t dataEnd() const;
@@ -112,5 +109,5 @@ ClassicExtent classicExtent(std::istream &in, std::uint64_t size);
 /// N bytes of data ending at byte B, the file has S bytes (M missing)", or "is truncated: it ends inside its
 /// header, after S bytes"); nullopt when it is complete, not a classic file, or cannot be read.
 std::optional<std::string> classicTruncation(const std::string &path);
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -32,9 +32,9 @@ namespace gridded_detail
 {
 namespace
 {
-const char *const kMarker = ".ompl_glider_source";  // the URL the mirror holds (without credentials)
-const char *const kAbsent = ".ompl_glider_absent";  // keys the server does not hold, one a line
-const char *const kValidators = ".ompl_glider_validators";  // "key<TAB>validator" of the chunks held, one a line
+const char *const kMarker = ".ompl_glider_source";         // the URL the mirror holds (without credentials)
+const char *const kAbsent = ".ompl_glider_absent";         // keys the server does not hold, one a line
+const char *const kValidators = ".ompl_glider_validators"; // "key<TAB>validator" of the chunks held, one a line
 
 bool exists(const std::string &path)
 {
@@ -53,7 +53,7 @@ bool slurp(const std::string &path, std::string &out)
 {
     GByte *bytes = nullptr;
     vsi_l_offset size = 0;
-    CPLPushErrorHandler(CPLQuietErrorHandler);  // a missing file is an answer here, not a message
+    CPLPushErrorHandler(CPLQuietErrorHandler); // a missing file is an answer here, not a message
     const bool read = VSIIngestFile(nullptr, path.c_str(), &bytes, &size, 1ll << 30);
     CPLPopErrorHandler();
     CPLErrorReset();
@@ -72,8 +72,8 @@ void writeWhole(const std::string &path, const std::string &bytes, const std::st
         VSIMkdirRecursive(parent.c_str(), 0755);
     // a name of this process and call: two runs filling one cache never write the same temporary file
     static std::atomic<unsigned long> serial{0};
-    const std::string part = path + ".part" + std::to_string(static_cast<long>(::getpid())) + "-" +
-                             std::to_string(++serial);
+    const std::string part =
+        path + ".part" + std::to_string(static_cast<long>(::getpid())) + "-" + std::to_string(++serial);
     VSILFILE *f = VSIFOpenL(part.c_str(), "wb");
     const bool written = f && VSIFWriteL(bytes.data(), 1, bytes.size(), f) == bytes.size();
     const bool closed = f && VSIFCloseL(f) == 0;
@@ -84,7 +84,7 @@ void writeWhole(const std::string &path, const std::string &bytes, const std::st
     }
 }
 
-}  // namespace
+} // namespace
 
 ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
 {
@@ -149,7 +149,7 @@ ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
     {
         if (!fetch(".zmetadata", metadata))
             throw Error(who() + ": the server holds no consolidated metadata ('.zmetadata'); a "
-                        "store is read over HTTP by it (zarr.consolidate_metadata() writes it)");
+                                "store is read over HTTP by it (zarr.consolidate_metadata() writes it)");
         remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.opened = true; });
     }
     readArrays(metadata);
@@ -162,7 +162,7 @@ ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
         // its .zarray there instead), kept by readArrays()
         if (!rootKey_.empty())
             store(rootKey_, rootText_);
-        store(kMarker, source);  // last: a folder without it is not taken as this store's
+        store(kMarker, source); // last: a folder without it is not taken as this store's
     }
 }
 
@@ -179,8 +179,10 @@ void ZarrMirror::readArrays(const std::string &metadata)
     const bool parsed = doc.LoadMemory(metadata);
     CPLPopErrorHandler();
     if (!parsed || !doc.GetRoot().GetObj("metadata").IsValid())
-        throw Error(who() + ": its '.zmetadata' is not a store's consolidated metadata (it "
-                    "begins '" + metadata.substr(0, 40) + "')");
+        throw Error(who() +
+                    ": its '.zmetadata' is not a store's consolidated metadata (it "
+                    "begins '" +
+                    metadata.substr(0, 40) + "')");
     const CPLJSONObject meta = doc.GetRoot().GetObj("metadata");
     for (const char *root : {".zgroup", ".zarray"})
         if (rootKey_.empty() && meta.GetObj(root).IsValid())
@@ -217,8 +219,8 @@ std::vector<std::string> ZarrMirror::keys(const std::string &path, const std::ve
 {
     const auto it = arrays_.find(path);
     if (it == arrays_.end() || it->second.shape.size() != start.size() || start.size() != count.size())
-        throw Error(who() + ": no array '" + path + "' of " +
-                    std::to_string(start.size()) + " dimensions in its metadata");
+        throw Error(who() + ": no array '" + path + "' of " + std::to_string(start.size()) +
+                    " dimensions in its metadata");
     const Array &a = it->second;
     const std::string prefix = path.empty() ? "" : path + "/";
     if (a.shape.empty())
@@ -266,7 +268,7 @@ void ZarrMirror::ensure(const std::string &path, const std::vector<std::size_t> 
         if (held(key))
         {
             if (seen_.insert(key).second && !absent_.count(key))
-                fromCache += sizeOf(folder_ + "/" + key);  // held before this process asked for it: the cache's
+                fromCache += sizeOf(folder_ + "/" + key); // held before this process asked for it: the cache's
             continue;
         }
         seen_.insert(key);
@@ -277,7 +279,7 @@ void ZarrMirror::ensure(const std::string &path, const std::vector<std::size_t> 
             store(key, body);
         else
         {
-            absent_.insert(key);  // Zarr: a chunk not written holds the fill value
+            absent_.insert(key); // Zarr: a chunk not written holds the fill value
             newAbsent = true;
         }
     }
@@ -339,17 +341,16 @@ std::string ZarrMirror::chunkChanged(const std::string &key)
         return "the server holds it now, absent when the cache was written";
     }
     if (!cached.empty() && httpHead(url, record_, now).value_or(false) && now == cached)
-        return "";  // the same validator: the same bytes
+        return ""; // the same validator: the same bytes
     std::string mine, body;
     if (!slurp(folder_ + "/" + key, mine))
         return "";
     if (!fetch(key, body))
         return "the server no longer holds it";
     if (body == mine)
-        return "";  // a new validator, the same bytes (kept by fetch())
+        return ""; // a new validator, the same bytes (kept by fetch())
     return std::to_string(mine.size()) + " bytes cached" + (cached.empty() ? "" : " (" + cached + ")") + ", " +
-           std::to_string(body.size()) + " bytes now" +
-           (validators_[key].empty() ? "" : " (" + validators_[key] + ")");
+           std::to_string(body.size()) + " bytes now" + (validators_[key].empty() ? "" : " (" + validators_[key] + ")");
 }
 
 void ZarrMirror::checkRepublished()
@@ -358,8 +359,10 @@ void ZarrMirror::checkRepublished()
     const std::string advice = "; remove the cache folder '" + folder_ + "' to plan on the store as it is now";
     std::string now, cached;
     if (!fetch(".zmetadata", now) || !slurp(folder_ + "/.zmetadata", cached) || now != cached)
-        throw Error(who() + ": the store was republished since the cache was written (its "
-                    "metadata differs from the cache's), and the plan needs chunks the cache does not hold" + advice);
+        throw Error(who() +
+                    ": the store was republished since the cache was written (its "
+                    "metadata differs from the cache's), and the plan needs chunks the cache does not hold" +
+                    advice);
     remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.opened = true; });
     // the coordinates (the one-dimensional arrays) as cached: the same times and positions
     for (const auto &[path, a] : arrays_)
@@ -372,9 +375,13 @@ void ZarrMirror::checkRepublished()
             if (absent_.count(key) || !slurp(folder_ + "/" + key, mine))
                 continue;
             if (!fetch(key, now) || now != mine)
-                throw Error(who() + ": the store was republished since the cache was written "
-                            "(its chunk '" + key + "' differs from the cache's), and the plan needs chunks the cache "
-                            "does not hold" + advice);
+                throw Error(who() +
+                            ": the store was republished since the cache was written "
+                            "(its chunk '" +
+                            key +
+                            "' differs from the cache's), and the plan needs chunks the cache "
+                            "does not hold" +
+                            advice);
         }
     }
     // the values: every chunk the cache holds is the server's still (a store rewritten under the same metadata and
@@ -383,9 +390,13 @@ void ZarrMirror::checkRepublished()
     held.insert(held.end(), absent_.begin(), absent_.end());
     for (const std::string &key : held)
         if (const std::string what = chunkChanged(key); !what.empty())
-            throw Error(who() + ": the store was republished since the cache was written (its "
-                        "chunk '" + key + "' differs from the cache's: " + what + "), and the plan needs chunks the "
-                        "cache does not hold: the cached and the new values would be mixed" + advice);
+            throw Error(who() +
+                        ": the store was republished since the cache was written (its "
+                        "chunk '" +
+                        key + "' differs from the cache's: " + what +
+                        "), and the plan needs chunks the "
+                        "cache does not hold: the cached and the new values would be mixed" +
+                        advice);
     if (validatorsChanged_)
         storeValidators();
 }
@@ -445,9 +456,7 @@ FileMirror::~FileMirror()
 bool ZarrMirror::fetch(const std::string &key, std::string &body)
 {
     std::string validator;
-    const bool found =
-        httpGet(keyUrl(url_, key), record_, who(), key, body, nullptr,
-                &validator);
+    const bool found = httpGet(keyUrl(url_, key), record_, who(), key, body, nullptr, &validator);
     if (found && key.rfind(".z", 0) != 0 && validators_[key] != validator)
     {
         validators_[key] = validator;
@@ -463,8 +472,7 @@ std::string ZarrMirror::who() const
 
 void ZarrMirror::store(const std::string &key, const std::string &bytes)
 {
-    writeWhole(folder_ + "/" + key, bytes,
-               who() + (cached_ ? " (the cache folder)" : ""));
+    writeWhole(folder_ + "/" + key, bytes, who() + (cached_ ? " (the cache folder)" : ""));
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -74,10 +74,7 @@ public:
     FileMirror(const FileMirror &) = delete;
     FileMirror &operator=(const FileMirror &) = delete;
     /// The local copy GDAL opens.
-    const std::string &file() const
-    {
-        return file_;
-    }
+    const std::string &file() const { return file_; }
 
 private:
     std::string file_;
@@ -95,10 +92,7 @@ public:
     ZarrMirror &operator=(const ZarrMirror &) = delete;
 
     /// The folder GDAL opens.
-    const std::string &folder() const
-    {
-        return folder_;
-    }
+    const std::string &folder() const { return folder_; }
     /// Makes sure the mirror holds every chunk of the array at @p path ("uo", "grp/uo") covering the block at
     /// @p start of @p count (fetching those it lacks). @throws Error naming the URL and the chunk when one cannot be
     /// fetched, or when the store was republished since the cache was written.
@@ -132,16 +126,16 @@ private:
     std::string who() const;
 
     std::string url_, folder_;
-    bool cached_{false};       // the folder is the cache's (else GDAL's memory)
-    bool fromCache_{false};    // the metadata came from the cache (no request yet)
-    bool checked_{false};      // checkRepublished() done
-    std::size_t record_{0};    // the source's entry in the process's record (remoteFetches())
+    bool cached_{false};    // the folder is the cache's (else GDAL's memory)
+    bool fromCache_{false}; // the metadata came from the cache (no request yet)
+    bool checked_{false};   // checkRepublished() done
+    std::size_t record_{0}; // the source's entry in the process's record (remoteFetches())
     std::map<std::string, Array> arrays_;
-    std::string rootKey_, rootText_;  // the store's root entry (.zgroup, or .zarray) in the consolidated metadata
-    std::set<std::string> absent_;  // keys the server does not hold
-    std::set<std::string> seen_;    // keys this process asked for (fetched, or counted as the cache's)
-    std::map<std::string, std::string> validators_;  // key -> the server's validator when it was fetched
+    std::string rootKey_, rootText_; // the store's root entry (.zgroup, or .zarray) in the consolidated metadata
+    std::set<std::string> absent_;   // keys the server does not hold
+    std::set<std::string> seen_;     // keys this process asked for (fetched, or counted as the cache's)
+    std::map<std::string, std::string> validators_; // key -> the server's validator when it was fetched
     bool validatorsChanged_{false};
 };
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -50,7 +50,7 @@ std::string limitText()
     return "request time limit " + std::to_string(std::max(1L, std::lround(a.requestTimeout))) + " s, " +
            std::to_string(a.retries) + " retries";
 }
-}  // namespace
+} // namespace
 
 std::string keyUrl(const std::string &url, const std::string &key)
 {
@@ -84,7 +84,7 @@ bool httpGet(const std::string &url, std::size_t record, const std::string &who,
         CPLPushErrorHandler(CPLQuietErrorHandler);
         CPLHTTPResult *r = nullptr;
         {
-            const FetchStopWatch watch(url);  // a stop request cuts the request at once (FetchStop.h)
+            const FetchStopWatch watch(url); // a stop request cuts the request at once (FetchStop.h)
             r = CPLHTTPFetch(url.c_str(), options);
         }
         CPLPopErrorHandler();
@@ -170,8 +170,9 @@ int probe(const std::string &url, std::string &body, std::string &type)
     if (!r)
         return 0;
     const std::string errors = r->pszErrBuf ? r->pszErrBuf : "";
-    const int status = r->nStatus != 0 ? 0
-                       : errors.rfind("HTTP error code : ", 0) == 0 ? std::atoi(errors.c_str() + 18) : 200;
+    const int status = r->nStatus != 0                              ? 0
+                       : errors.rfind("HTTP error code : ", 0) == 0 ? std::atoi(errors.c_str() + 18)
+                                                                    : 200;
     body.assign(r->pabyData ? reinterpret_cast<const char *>(r->pabyData) : "",
                 r->pabyData ? static_cast<std::size_t>(std::min(r->nDataLen, 65536)) : 0);
     type = r->pszContentType ? r->pszContentType : "";
@@ -191,12 +192,12 @@ bool looksHtml(const std::string &body, const std::string &type)
         t += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return t.find("html") != std::string::npos || head.rfind("<!doctype html", 0) == 0 || head.rfind("<html", 0) == 0;
 }
-}  // namespace
+} // namespace
 
 std::string notDapAnswer(const std::string &given)
 {
     std::string url = given;
-    while (!url.empty() && url.front() == '[')  // NetCDF-C's [mode=dap4] prefixes
+    while (!url.empty() && url.front() == '[') // NetCDF-C's [mode=dap4] prefixes
     {
         const std::size_t close = url.find(']');
         if (close == std::string::npos)
@@ -208,10 +209,11 @@ std::string notDapAnswer(const std::string &given)
     {
         std::string body, type;
         if (probe(keyUrl(url, key), body, type) == 200 && !looksHtml(body, type) &&
-            body.find_first_not_of(" \t\r\n") != std::string::npos &&
-            body[body.find_first_not_of(" \t\r\n")] == '{')
-            return std::string("the server holds a Zarr store there (its '") + key + "' found), not an OPeNDAP "
-                   "dataset: give it as 'ZARR:" + shown + "' (a store's URL ending in .zarr is read as one)";
+            body.find_first_not_of(" \t\r\n") != std::string::npos && body[body.find_first_not_of(" \t\r\n")] == '{')
+            return std::string("the server holds a Zarr store there (its '") + key +
+                   "' found), not an OPeNDAP "
+                   "dataset: give it as 'ZARR:" +
+                   shown + "' (a store's URL ending in .zarr is read as one)";
     }
     std::string body, type;
     const std::size_t q = url.find('?');
@@ -220,10 +222,11 @@ std::string notDapAnswer(const std::string &given)
     if (status == 0 || !looksHtml(body, type))
         return "";
     return "the server answered an HTML page" + (status != 200 ? " (HTTP " + std::to_string(status) + ")" : "") +
-           ", not an OPeNDAP description, for '" + withoutCredentials(ddsUrl) + "': expected an OPeNDAP (DAP2) "
+           ", not an OPeNDAP description, for '" + withoutCredentials(ddsUrl) +
+           "': expected an OPeNDAP (DAP2) "
            "dataset URL (THREDDS dodsC, Hyrax, ERDDAP griddap), a Zarr store's URL ending in .zarr (or given as "
            "ZARR:URL), or a GRIB file's URL ending in .grib2";
 }
 
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

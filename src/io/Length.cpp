@@ -31,11 +31,12 @@ double parseLength(const std::string &text, double metresPerUnit, bool unitKnown
     if (unit.empty())
         return value;
     if (!unitKnown)
-        throw Error("'" + text + "' needs the mission's length unit: give units.length_m, or the length as a number "
+        throw Error("'" + text +
+                    "' needs the mission's length unit: give units.length_m, or the length as a number "
                     "in planning units");
     const double v = value * metres / metresPerUnit;
     if (!std::isfinite(v))
         throw Error(expected);
     return v;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -24,11 +24,11 @@ void locate(const std::vector<double> &a, double q, std::size_t &k, double &f)
     k = k == 0 ? 0 : std::min(k - 1, a.size() - 2);
     f = (q - a[k]) / (a[k + 1] - a[k]);
 }
-}  // namespace
+} // namespace
 
 NetCdfBathymetry::NetCdfBathymetry(const std::string &path, const std::string &variable,
                                    std::function<LonLat(double, double)> toGeographic, const GeoBox &region)
-  : toGeographic_(std::move(toGeographic))
+    : toGeographic_(std::move(toGeographic))
 {
     // the one reader of seafloor depths (its sign rule, axis order and checks are the depth limit's too)
     const DepthGrid g = readDepthGrid(path, variable, region);
@@ -43,7 +43,7 @@ NetCdfBathymetry::NetCdfBathymetry(const std::string &path, const std::string &v
         ay_.push_back(g.b[j * g.nx]);
     depth_.resize(g.depth.size());
     for (std::size_t n = 0; n < g.depth.size(); ++n)
-        depth_[n] = std::isnan(g.depth[n]) ? 0.0 : std::max(0.0, g.depth[n]);  // fill values and land: depth 0
+        depth_[n] = std::isnan(g.depth[n]) ? 0.0 : std::max(0.0, g.depth[n]); // fill values and land: depth 0
     if (geographic_ && !toGeographic_)
         throw Error("NetCDF file '" + path + "': the bathymetry '" + g.variable +
                     "' is on longitude/latitude: the mission needs a projection");
@@ -66,7 +66,7 @@ double NetCdfBathymetry::seafloorDepth(double x, double y) const
 {
     if (!geographic_)
         return atAxes(x, y);
-    const LonLat g = toGeographic_(x, y);  // longitude in -180..180: shifted into the axis's own convention
+    const LonLat g = toGeographic_(x, y); // longitude in -180..180: shifted into the axis's own convention
     const double mid = 0.5 * (ax_.front() + ax_.back());
     return atAxes(mid + std::remainder(g.lon - mid, 360.0), g.lat);
 }
@@ -76,4 +76,4 @@ std::shared_ptr<const Bathymetry> readBathymetry(const std::string &path, const 
 {
     return std::make_shared<NetCdfBathymetry>(path, variable, std::move(toGeographic), region);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -11,5 +11,5 @@ std::recursive_mutex &libraryMutex()
     static auto *m = new std::recursive_mutex();
     return *m;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -30,14 +30,12 @@ std::recursive_mutex &libraryMutex();
 class NetCdfLock
 {
 public:
-    NetCdfLock() : hold_(libraryMutex())
-    {
-    }
+    NetCdfLock() : hold_(libraryMutex()) {}
     NetCdfLock(const NetCdfLock &) = delete;
     NetCdfLock &operator=(const NetCdfLock &) = delete;
 
 private:
     std::lock_guard<std::recursive_mutex> hold_;
 };
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -19,8 +19,7 @@ inline std::string number(double v, int digits = 10)
 
 /// @brief printf's formatting of up to five numbers into a message ("%.3g time steps of %.3g"): estimates and
 /// limits quoted with the precision the message chooses.
-inline std::string formatted(const char *fmt, double a, double b = 0.0, double c = 0.0, double d = 0.0,
-                             double e = 0.0)
+inline std::string formatted(const char *fmt, double a, double b = 0.0, double c = 0.0, double d = 0.0, double e = 0.0)
 {
     char buf[512];
     std::snprintf(buf, sizeof buf, fmt, a, b, c, d, e);
@@ -31,7 +30,7 @@ inline std::string formatted(const char *fmt, double a, double b = 0.0, double c
 inline std::string csvNumber(double v)
 {
     if (!std::isfinite(v))
-        return "";  // no value (summary.json's null): "inf" is no number to a CSV reader
+        return ""; // no value (summary.json's null): "inf" is no number to a CSV reader
     return number(v, 10);
 }
 
@@ -52,10 +51,10 @@ inline std::string durationText(double seconds)
     else
     {
         double days = std::floor(hours / 24.0), rest = std::round((hours - 24.0 * days) * 10.0) / 10.0;
-        if (rest >= 24.0)  // (23.96 h rounds to 24.0: one more day)
+        if (rest >= 24.0) // (23.96 h rounds to 24.0: one more day)
             days += 1.0, rest = 0.0;
         std::snprintf(buf, sizeof buf, "%.0f d %.1f h (%.1f s)", days, rest, seconds);
     }
     return buf;
 }
-}  // namespace ompl_glider::text
+} // namespace ompl_glider::text

@@ -23,13 +23,10 @@ namespace ompl_glider::observations_detail
 /// UnitConversion.h).
 struct VelocityUnits
 {
-    std::string units;        ///< as written ("" when the source gives none: read as m/s)
+    std::string units;         ///< as written ("" when the source gives none: read as m/s)
     LinearConversion toMetres; ///< to m/s
     /// @p x in m/s; a NaN or the fill value -999 as it is (the readers reject them as fill values)
-    double operator()(double x) const
-    {
-        return !std::isfinite(x) || x == -999.0 ? x : toMetres(x);
-    }
+    double operator()(double x) const { return !std::isfinite(x) || x == -999.0 ? x : toMetres(x); }
 };
 
 /// The conversion of @p units (of the DAC variable or column @p name) to m/s: any velocity UDUNITS-2 reads ("m s-1",

@@ -21,4 +21,4 @@ inline bool splitQuantity(const std::string &text, double &value, std::string &u
     unit = a == std::string::npos ? std::string() : unit.substr(a, b - a + 1);
     return true;
 }
-}  // namespace ompl_glider::io_detail
+} // namespace ompl_glider::io_detail

@@ -50,7 +50,7 @@ std::string describedDifferently(int a, int b)
     return {};
 }
 
-}  // namespace
+} // namespace
 
 void RemoteDataset::checkCacheAnswers()
 {
@@ -66,7 +66,7 @@ void RemoteDataset::checkCacheAnswers()
             continue;
         char dimName[NC_MAX_NAME + 1] = "";
         if (nd != 1 || nc_inq_dimname(cacheId_, dim, dimName) != NC_NOERR || std::string(name) != dimName)
-            continue;  // not a coordinate variable
+            continue; // not a coordinate variable
         std::vector<double> cached(b.count[0]), now(b.count[0]);
         if (nc_get_vara_double(cacheId_, b.var, b.start.data(), b.count.data(), cached.data()) != NC_NOERR)
             continue;
@@ -85,7 +85,7 @@ void RemoteDataset::checkCacheAnswers()
 
 void RemoteDataset::flush()
 {
-    const NetCdfLock netcdf;  // before the dataset's own lock (NetCdfLock.h: its lock order)
+    const NetCdfLock netcdf; // before the dataset's own lock (NetCdfLock.h: its lock order)
     std::lock_guard<std::mutex> lock(mutex_);
     if (!dirty_)
         return;
@@ -134,7 +134,7 @@ void RemoteDataset::writeCache(const std::string &tmp)
     check(nc_create(tmp.c_str(), NC_NETCDF4 | NC_CLOBBER, &out), "create");
     int ndims = 0, nvars = 0, natts = 0;
     check(nc_inq(src, &ndims, &nvars, &natts, nullptr), "inquire the source");
-    for (int d = 0; d < ndims; ++d)  // fixed sizes: the cache holds the remote lengths whatever was fetched
+    for (int d = 0; d < ndims; ++d) // fixed sizes: the cache holds the remote lengths whatever was fetched
     {
         char name[NC_MAX_NAME + 1];
         std::size_t len = 0;
@@ -188,5 +188,5 @@ void RemoteDataset::writeCache(const std::string &tmp)
     check(nc_close(out), "close");
     out = -1;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

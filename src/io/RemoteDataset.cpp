@@ -28,7 +28,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/StopRequest.h"
 #if OMPL_GLIDER_WITH_MISSION
-#include "GdalModule.h"  // the DAP answer explained (HttpMirror.h), GDAL loaded then
+#include "GdalModule.h" // the DAP answer explained (HttpMirror.h), GDAL loaded then
 #endif
 
 namespace ompl_glider
@@ -76,7 +76,7 @@ int callWatchingLog(const std::function<int()> &call, std::string &log)
             ::close(saved);
         if (tmp)
             std::fclose(tmp);
-        return call();  // no temporary file: unwatched (the complaint reaches the terminal)
+        return call(); // no temporary file: unwatched (the complaint reaches the terminal)
     }
     const int st = call();
     std::fflush(stderr);
@@ -127,7 +127,7 @@ std::string readText(const std::filesystem::path &p)
     s << in.rdbuf();
     return s.str();
 }
-}  // namespace
+} // namespace
 
 namespace gridded_detail
 {
@@ -168,15 +168,15 @@ std::string &limitProblem()
     static std::string why;
     return why;
 }
-}  // namespace
+} // namespace
 
 void prepareNetcdfAccess(const RemoteAccess &access)
 {
-    const NetCdfLock lock;  // NetCDF-C reads the environment at its first call
+    const NetCdfLock lock; // NetCDF-C reads the environment at its first call
     static std::once_flag once;
     std::call_once(once, [&] {
         if (std::getenv("NCRCENV_RC"))
-            return;  // the user's own rc file
+            return; // the user's own rc file
         namespace fs = std::filesystem;
         std::error_code ec;
         fs::path tmp;
@@ -224,7 +224,7 @@ long requestLimitInForce()
 
 std::shared_ptr<RemoteDataset> RemoteDataset::open(const std::string &url, const RemoteAccess &access)
 {
-    const NetCdfLock netcdf;  // before this function's own lock (NetCdfLock.h: its lock order)
+    const NetCdfLock netcdf; // before this function's own lock (NetCdfLock.h: its lock order)
     static std::mutex m;
     // kept for the process (never destroyed: no NetCDF call after NetCDF-C's own end at exit)
     static auto &open = *new std::map<std::string, std::shared_ptr<RemoteDataset>>();
@@ -232,7 +232,7 @@ std::shared_ptr<RemoteDataset> RemoteDataset::open(const std::string &url, const
     const std::string key = url + '\n' + access.cacheDir;
     if (auto it = open.find(key); it != open.end())
         return it->second;
-    const std::size_t k = remote_detail::newFetchRecord(withoutCredentials(url));  // what the outputs show
+    const std::size_t k = remote_detail::newFetchRecord(withoutCredentials(url)); // what the outputs show
     std::shared_ptr<RemoteDataset> d(new RemoteDataset(url, access, k));
     open[key] = d;
     return d;
@@ -253,7 +253,7 @@ RemoteDataset::RemoteDataset(std::string url, RemoteAccess access, std::size_t r
         if (fs::is_regular_file(cachePath_, ec))
         {
             if (nc_open(cachePath_.c_str(), NC_NOWRITE, &cacheId_) != NC_NOERR)
-                cacheId_ = -1;  // an unreadable cache file is fetched anew and replaced
+                cacheId_ = -1; // an unreadable cache file is fetched anew and replaced
             else if (const std::string held = textAttribute(cacheId_, NC_GLOBAL, "ompl_glider_source");
                      held != withoutCredentials(url_))
             {
@@ -299,13 +299,13 @@ int RemoteDataset::attempt(const std::string &what, const std::function<int()> &
             const FetchStopWatch watch(url_);
             st = callWatchingLog(call, log);
         }
-        if (stopRequested())  // the request cut by the stop request, or ended as it came: its values are not used
+        if (stopRequested()) // the request cut by the stop request, or ended as it came: its values are not used
             throw Error(who() + ": " + what + ": stopped (a stop was requested) during attempt " +
                         std::to_string(k + 1));
         const bool cut = cutShort(log);
         lastAnswerForeign = foreignAnswer(log);
         if (cut)
-            st = NC_EDATADDS;  // zero-filled values, never planned on
+            st = NC_EDATADDS; // zero-filled values, never planned on
         if (st == NC_NOERR)
             return st;
         if (!transient(st) || k >= access_.retries)
@@ -314,10 +314,10 @@ int RemoteDataset::attempt(const std::string &what, const std::function<int()> &
                                         "\"): its values are not used"
                                   : nc_strerror(st);
             if (st == NC_EIO || st == NC_ECURL || st == NC_EDAS || st == NC_EDDS || (st == NC_EDATADDS && !cut))
-                why += limitInForce() > 0 ? " (no answer within the request time limit of " +
-                                                std::to_string(limitInForce().load()) +
-                                                " s, or the server cannot be reached)"
-                                          : " (no answer in time, or the server cannot be reached)";
+                why += limitInForce() > 0
+                           ? " (no answer within the request time limit of " + std::to_string(limitInForce().load()) +
+                                 " s, or the server cannot be reached)"
+                           : " (no answer in time, or the server cannot be reached)";
             if (transient(st))
                 why += "; " + std::to_string(k + 1) + (k == 0 ? " attempt" : " attempts");
             throw Error(who() + ": " + what + ": " + why);
@@ -337,10 +337,10 @@ int RemoteDataset::remoteId()
     if (remoteId_ < 0)
     {
         prepareNetcdfAccess(access_);
-        if (limitInForce() == 0 && !std::getenv("NCRCENV_RC"))  // a server must not hold the plan without a limit
-            throw Error(withoutCredentials(url_) + ": the request time limit cannot be given to NetCDF-C: " +
-                        (limitProblem().empty() ? std::string("its settings file could not be written")
-                                                : limitProblem()));
+        if (limitInForce() == 0 && !std::getenv("NCRCENV_RC")) // a server must not hold the plan without a limit
+            throw Error(
+                withoutCredentials(url_) + ": the request time limit cannot be given to NetCDF-C: " +
+                (limitProblem().empty() ? std::string("its settings file could not be written") : limitProblem()));
         try
         {
             attempt("cannot open", [&] { return nc_open(url_.c_str(), NC_NOWRITE, &remoteId_); });
@@ -378,7 +378,7 @@ std::uint64_t RemoteDataset::valueBytes(int var, std::size_t values) const
 void RemoteDataset::read(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
                          double *out)
 {
-    const NetCdfLock netcdf;  // before the dataset's own lock (NetCdfLock.h: its lock order)
+    const NetCdfLock netcdf; // before the dataset's own lock (NetCdfLock.h: its lock order)
     std::lock_guard<std::mutex> lock(mutex_);
     std::size_t n = 1;
     for (const std::size_t c : count)
@@ -391,7 +391,7 @@ void RemoteDataset::read(int var, const std::vector<std::size_t> &start, const s
             if (!b.values.empty())
                 copyOut(b.values, b.start, b.count, start, count, out);
             else if (nc_get_vara_double(cacheId_, var, start.data(), count.data(), out) != NC_NOERR)
-                continue;  // a cache file that does not hold what it says: fetched anew below
+                continue; // a cache file that does not hold what it says: fetched anew below
             else
             {
                 const std::uint64_t bytes = valueBytes(var, n);
@@ -411,5 +411,5 @@ void RemoteDataset::read(int var, const std::vector<std::size_t> &start, const s
     dirty_ = !cachePath_.empty();
 }
 
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -1,7 +1,7 @@
 #pragma once
 /// @file RemoteDataset.h
-/// @brief Internal to the library (not installed): one OPeNDAP dataset as GriddedDataset reads it (io/RemoteSource.h): opened
-/// once per process, its requests timed and retried, the values fetched kept in memory and in the cache file.
+/// @brief Internal to the library (not installed): one OPeNDAP dataset as GriddedDataset reads it (io/RemoteSource.h):
+/// opened once per process, its requests timed and retried, the values fetched kept in memory and in the cache file.
 
 #include <netcdf.h>
 
@@ -46,10 +46,7 @@ public:
     RemoteDataset &operator=(const RemoteDataset &) = delete;
 
     /// The NetCDF id whose dimensions, variables and attributes the reader queries: the cache file's, else the URL's.
-    int metadataId() const
-    {
-        return cacheId_ >= 0 ? cacheId_ : remoteId_;
-    }
+    int metadataId() const { return cacheId_ >= 0 ? cacheId_ : remoteId_; }
     /// The values of @p var in the block at @p start of @p count (as doubles, as nc_get_vara_double gives them).
     /// @throws Error naming the URL and the variable when the server fails (after the retries).
     void read(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count, double *out);
@@ -64,7 +61,7 @@ private:
     {
         int var{0};
         std::vector<std::size_t> start, count;
-        std::vector<double> values;  ///< empty for a block held only by the cache file
+        std::vector<double> values; ///< empty for a block held only by the cache file
     };
     RemoteDataset(std::string url, RemoteAccess access, std::size_t record);
     int remoteId();
@@ -77,12 +74,12 @@ private:
 
     std::string url_;
     RemoteAccess access_;
-    std::size_t record_;  ///< index of this dataset's RemoteFetch in the process's record
+    std::size_t record_; ///< index of this dataset's RemoteFetch in the process's record
     std::string cachePath_;
     int remoteId_{-1}, cacheId_{-1};
     std::vector<Block> blocks_;
     bool dirty_{false};
     std::mutex mutex_;
 };
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -23,5 +23,5 @@ std::shared_ptr<const std::string> memoryDataset(const std::string &name);
 std::string cacheName(const std::string &url, const std::string &extension);
 /// Applies @p change to entry @p k under the record's lock.
 void updateFetchRecord(std::size_t k, const std::function<void(RemoteFetch &)> &change);
-}  // namespace remote_detail
-}  // namespace ompl_glider
+} // namespace remote_detail
+} // namespace ompl_glider

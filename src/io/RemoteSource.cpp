@@ -47,7 +47,7 @@ RemoteAccess &accessInForce()
     static RemoteAccess a;
     return a;
 }
-}  // namespace
+} // namespace
 
 namespace remote_detail
 {
@@ -81,7 +81,7 @@ void updateFetchRecord(std::size_t k, const std::function<void(RemoteFetch &)> &
     std::lock_guard<std::mutex> lock(recordMutex());
     change(record().at(k));
 }
-}  // namespace remote_detail
+} // namespace remote_detail
 
 void setRemoteAccess(const RemoteAccess &access)
 {
@@ -130,9 +130,9 @@ std::string withoutCredentials(const std::string &source)
 bool isRemoteSource(const std::string &source)
 {
     std::string s = source;
-    if (s.rfind("ZARR:", 0) == 0)  // GDAL's name of a Zarr store: ZARR:URL, ZARR:"URL"
+    if (s.rfind("ZARR:", 0) == 0) // GDAL's name of a Zarr store: ZARR:URL, ZARR:"URL"
         s = s.substr(s.size() > 5 && s[5] == '"' ? 6 : 5);
-    while (!s.empty() && s.front() == '[')  // NetCDF-C's [mode=dap4] / [noprefetch] prefixes
+    while (!s.empty() && s.front() == '[') // NetCDF-C's [mode=dap4] / [noprefetch] prefixes
     {
         const std::size_t close = s.find(']');
         if (close == std::string::npos)
@@ -155,7 +155,7 @@ std::map<std::string, std::shared_ptr<const std::string>> &memoryDatasets()
     static std::map<std::string, std::shared_ptr<const std::string>> d;
     return d;
 }
-}  // namespace
+} // namespace
 
 std::string registerMemoryDataset(std::string bytes)
 {
@@ -186,7 +186,7 @@ std::shared_ptr<const std::string> memoryDataset(const std::string &name)
     const auto it = memoryDatasets().find(name);
     return it == memoryDatasets().end() ? nullptr : it->second;
 }
-}  // namespace remote_detail
+} // namespace remote_detail
 
 std::vector<RemoteFetch> remoteFetches()
 {
@@ -210,4 +210,4 @@ std::vector<RemoteFetch> remoteFetchesOf(const std::vector<std::string> &sources
             out.push_back(f);
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

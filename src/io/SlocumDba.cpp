@@ -252,8 +252,8 @@ void readDbaFiles(const std::vector<std::string> &files, GliderObservations &o)
         ++gliders[dba.back().platform];
     }
     o.platform = mostNamed(gliders, o.source);
-    std::vector<GliderFix> fixes; // the valid fixes of every file
-    std::vector<DacRecord> dac;   // the DAC rows (their time; the position to be found)
+    std::vector<GliderFix> fixes;               // the valid fixes of every file
+    std::vector<DacRecord> dac;                 // the DAC rows (their time; the position to be found)
     std::map<std::string, VelocityUnits> units; // of each file's DAC
     for (const DbaFile &d : dba)
     {

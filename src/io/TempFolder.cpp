@@ -23,4 +23,4 @@ std::filesystem::path temporaryFolder()
                     " does not exist or is not a folder: set TMPDIR to a writable folder");
     return dir;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

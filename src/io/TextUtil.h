@@ -31,9 +31,9 @@ inline std::string validUtf8(const std::string &s)
         bool ok = n > 0 && i + n <= s.size() && !(c == 0xc0 || c == 0xc1 || c > 0xf4);
         for (std::size_t k = 1; ok && k < n; ++k)
             ok = (byte(i + k) & 0xc0) == 0x80;
-        if (ok && n == 3)  // no overlong form, no surrogate
+        if (ok && n == 3) // no overlong form, no surrogate
             ok = !(c == 0xe0 && byte(i + 1) < 0xa0) && !(c == 0xed && byte(i + 1) >= 0xa0);
-        if (ok && n == 4)  // no overlong form, nothing past U+10FFFF
+        if (ok && n == 4) // no overlong form, nothing past U+10FFFF
             ok = !(c == 0xf0 && byte(i + 1) < 0x90) && !(c == 0xf4 && byte(i + 1) >= 0x90);
         if (ok)
         {
@@ -57,14 +57,25 @@ inline std::string xmlEscaped(const std::string &t)
     for (char c : validUtf8(t))
         switch (c)
         {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\t':
-            case '\n':
-            case '\r': out += c; break;
-            default: out += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        case '\t':
+        case '\n':
+        case '\r':
+            out += c;
+            break;
+        default:
+            out += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
         }
     return out;
 }
@@ -106,4 +117,4 @@ inline std::string joinNames(const std::vector<std::string> &names)
         s += (i ? ", " : "") + names[i];
     return s;
 }
-}  // namespace ompl_glider::text
+} // namespace ompl_glider::text

@@ -54,18 +54,18 @@ int daysInMonth(long y, int m, Calendar cal)
     static const int dim[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
     switch (cal)
     {
-        case Calendar::Day360:
-            return 30;
-        case Calendar::NoLeap:
-            return dim[m - 1];
-        case Calendar::AllLeap:
-            return m == 2 ? 29 : dim[m - 1];
-        case Calendar::Julian:
-            return m == 2 && julianLeap(y) ? 29 : dim[m - 1];
-        case Calendar::ProlepticGregorian:
-            return m == 2 && gregorianLeap(y) ? 29 : dim[m - 1];
-        case Calendar::Standard:
-            return m == 2 && (y < 1583 ? julianLeap(y) : gregorianLeap(y)) ? 29 : dim[m - 1];
+    case Calendar::Day360:
+        return 30;
+    case Calendar::NoLeap:
+        return dim[m - 1];
+    case Calendar::AllLeap:
+        return m == 2 ? 29 : dim[m - 1];
+    case Calendar::Julian:
+        return m == 2 && julianLeap(y) ? 29 : dim[m - 1];
+    case Calendar::ProlepticGregorian:
+        return m == 2 && gregorianLeap(y) ? 29 : dim[m - 1];
+    case Calendar::Standard:
+        return m == 2 && (y < 1583 ? julianLeap(y) : gregorianLeap(y)) ? 29 : dim[m - 1];
     }
     return 31;
 }
@@ -76,30 +76,29 @@ long dayNumber(long y, int m, int d, Calendar cal)
     static const int cum[12] = {0, 31, 59, 90, 120, 151, 181, 212, 243, 273, 304, 334};
     switch (cal)
     {
-        case Calendar::Day360:
-            return (y - 1) * 360 + (m - 1) * 30 + d - 1;
-        case Calendar::NoLeap:
-            return (y - 1) * 365 + cum[m - 1] + d - 1;
-        case Calendar::AllLeap:
-            return (y - 1) * 366 + cum[m - 1] + (m > 2 ? 1 : 0) + d - 1;
-        case Calendar::Julian:
+    case Calendar::Day360:
+        return (y - 1) * 360 + (m - 1) * 30 + d - 1;
+    case Calendar::NoLeap:
+        return (y - 1) * 365 + cum[m - 1] + d - 1;
+    case Calendar::AllLeap:
+        return (y - 1) * 366 + cum[m - 1] + (m > 2 ? 1 : 0) + d - 1;
+    case Calendar::Julian:
+        return daysProleptic(y, m, d, false);
+    case Calendar::ProlepticGregorian:
+        return daysProleptic(y, m, d, true);
+    case Calendar::Standard: {
+        // Julian up to 1582-10-04, Gregorian from 1582-10-15 (the next day).
+        const bool greg = y > 1582 || (y == 1582 && (m > 10 || (m == 10 && d >= 15)));
+        if (!greg)
             return daysProleptic(y, m, d, false);
-        case Calendar::ProlepticGregorian:
-            return daysProleptic(y, m, d, true);
-        case Calendar::Standard:
-        {
-            // Julian up to 1582-10-04, Gregorian from 1582-10-15 (the next day).
-            const bool greg = y > 1582 || (y == 1582 && (m > 10 || (m == 10 && d >= 15)));
-            if (!greg)
-                return daysProleptic(y, m, d, false);
-            // Gregorian 1582-10-15 follows Julian 1582-10-04
-            const long offset = daysProleptic(1582, 10, 4, false) + 1 - daysProleptic(1582, 10, 15, true);
-            return daysProleptic(y, m, d, true) + offset;
-        }
+        // Gregorian 1582-10-15 follows Julian 1582-10-04
+        const long offset = daysProleptic(1582, 10, 4, false) + 1 - daysProleptic(1582, 10, 15, true);
+        return daysProleptic(y, m, d, true) + offset;
+    }
     }
     return 0;
 }
-}  // namespace
+} // namespace
 
 Calendar parseCalendar(const std::string &name)
 {
@@ -125,18 +124,18 @@ const char *calendarName(Calendar c)
 {
     switch (c)
     {
-        case Calendar::Standard:
-            return "standard";
-        case Calendar::ProlepticGregorian:
-            return "proleptic_gregorian";
-        case Calendar::Julian:
-            return "julian";
-        case Calendar::NoLeap:
-            return "noleap";
-        case Calendar::AllLeap:
-            return "all_leap";
-        case Calendar::Day360:
-            return "360_day";
+    case Calendar::Standard:
+        return "standard";
+    case Calendar::ProlepticGregorian:
+        return "proleptic_gregorian";
+    case Calendar::Julian:
+        return "julian";
+    case Calendar::NoLeap:
+        return "noleap";
+    case Calendar::AllLeap:
+        return "all_leap";
+    case Calendar::Day360:
+        return "360_day";
     }
     return "standard";
 }
@@ -147,7 +146,7 @@ namespace
 struct WrittenDate
 {
     DateTime fields;
-    double zoneOffset{0.0};  ///< seconds east of UTC
+    double zoneOffset{0.0}; ///< seconds east of UTC
 };
 
 /// The Error of a date that cannot be read: what is wrong and the syntax expected.
@@ -180,7 +179,7 @@ WrittenDate readWrittenDate(const std::string &text)
             throw dateError(text, std::string("expected '") + c + "' at position " + std::to_string(pos));
         ++pos;
     };
-    const bool beforeYear1 = !s.empty() && s[0] == '-';  // a year before 1 (proleptic calendars), as "-0001"
+    const bool beforeYear1 = !s.empty() && s[0] == '-'; // a year before 1 (proleptic calendars), as "-0001"
     if (beforeYear1)
         ++pos;
     d.year = static_cast<int>(readInt(1, 6)) * (beforeYear1 ? -1 : 1);
@@ -210,7 +209,7 @@ WrittenDate readWrittenDate(const std::string &text)
                 {
                     d.second = std::stod(s.substr(start, pos - start));
                 }
-                catch (const std::exception &)  // "." or "..": no number
+                catch (const std::exception &) // "." or "..": no number
                 {
                     throw dateError(text, "bad seconds at position " + std::to_string(start));
                 }
@@ -237,7 +236,7 @@ WrittenDate readWrittenDate(const std::string &text)
             }
             else if (pos + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[pos])))
                 mm = readInt(2, 2);
-            if (hh > 23 || mm > 59)  // (ISO 8601: an offset is less than a day; 24:00 or 01:75 is a typing error)
+            if (hh > 23 || mm > 59) // (ISO 8601: an offset is less than a day; 24:00 or 01:75 is a typing error)
                 throw dateError(text, "time zone offset out of range (hours 0-23, minutes 0-59)");
             w.zoneOffset = sign * (hh * 3600.0 + mm * 60.0);
         }
@@ -249,7 +248,7 @@ WrittenDate readWrittenDate(const std::string &text)
 
 /// Day number of 1970-01-01 in the proleptic Gregorian calendar (dayNumber()): the epoch of parseIsoTime().
 constexpr long kUnixEpochDay = 719162;
-}  // namespace
+} // namespace
 
 namespace
 {
@@ -262,7 +261,7 @@ WrittenDate readCheckedDate(const std::string &text)
         throw dateError(text, "field out of range");
     return w;
 }
-}  // namespace
+} // namespace
 
 double secondsSinceCalendarEpoch(const std::string &text, Calendar cal)
 {
@@ -397,7 +396,7 @@ double parseIsoTime(const std::string &text)
 bool isoYearInRange(double s)
 {
     // 0000-01-01T00:00:00Z and 10000-01-01T00:00:00Z in seconds since 1970 (proleptic Gregorian)
-    return s >= -62167219200.0 && s < 253402300799.5;  // formatIsoTime() rounds to the second
+    return s >= -62167219200.0 && s < 253402300799.5; // formatIsoTime() rounds to the second
 }
 
 std::string formatIsoTime(double s)
@@ -405,7 +404,8 @@ std::string formatIsoTime(double s)
     if (!std::isfinite(s))
         return "";
     if (!isoYearInRange(s))
-        throw Error("the time " + std::to_string(s) + " s since 1970 falls outside the years 0000-9999, which ISO "
+        throw Error("the time " + std::to_string(s) +
+                    " s since 1970 falls outside the years 0000-9999, which ISO "
                     "8601 dates are written in");
     // whole seconds: the date is exact (dateFromCalendarEpoch() of an integral number of seconds)
     const long long since1 = std::llround(s) + static_cast<long long>(kUnixEpochDay) * 86400;
@@ -443,4 +443,4 @@ double parseDuration(const std::string &text, double timeUnitSeconds, bool unitK
         throw Error(expected);
     return v;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -24,13 +24,8 @@ namespace
 class QuietUdunits
 {
 public:
-    QuietUdunits() : previous_(ut_set_error_message_handler(ut_ignore))
-    {
-    }
-    ~QuietUdunits()
-    {
-        ut_set_error_message_handler(previous_);
-    }
+    QuietUdunits() : previous_(ut_set_error_message_handler(ut_ignore)) {}
+    ~QuietUdunits() { ut_set_error_message_handler(previous_); }
     QuietUdunits(const QuietUdunits &) = delete;
     QuietUdunits &operator=(const QuietUdunits &) = delete;
 
@@ -86,7 +81,7 @@ private:
 /// Call with udunitsMutex() held.
 ut_system *unitSystem()
 {
-    static UnitDatabase db;  // initialised once, thread-safely (and under the lock anyway)
+    static UnitDatabase db; // initialised once, thread-safely (and under the lock anyway)
     return db.system();
 }
 
@@ -136,7 +131,7 @@ LinearConversion convertTo(const std::string &units, const char *target, const s
             text = *a;
     std::vector<std::string> tries{text};
     if (text::lower(text) != text)
-        tries.push_back(text::lower(text));  // "M/S", "CM/S", "KT": UDUNITS-2 is case-sensitive
+        tries.push_back(text::lower(text)); // "M/S", "CM/S", "KT": UDUNITS-2 is case-sensitive
 
     std::lock_guard<std::mutex> lock(udunitsMutex());
     QuietUdunits quiet;
@@ -144,7 +139,7 @@ LinearConversion convertTo(const std::string &units, const char *target, const s
     const UnitPtr to = parse(sys, target);
     if (!to)
         throw Error(std::string("UDUNITS-2 does not know the unit '") + target + "'");
-    std::string readAs;  // how the first spelling UDUNITS-2 could parse reads
+    std::string readAs; // how the first spelling UDUNITS-2 could parse reads
     for (const std::string &t : tries)
     {
         const UnitPtr unit = parse(sys, t);
@@ -173,7 +168,7 @@ LinearConversion convertTo(const std::string &units, const char *target, const s
     throw Error("units '" + units + "' are not " + what + " (UDUNITS-2 reads them as '" + readAs +
                 "', which does not convert to " + target + ")");
 }
-}  // namespace
+} // namespace
 
 LinearConversion velocityToMetresPerSecond(const std::string &units)
 {
@@ -193,4 +188,4 @@ bool isDimensionless(const std::string &units)
     const UnitPtr unit = parse(sys, text::trim(units));
     return unit && ut_are_convertible(unit.get(), ut_get_dimensionless_unit_one(sys));
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -17,10 +17,10 @@ namespace ompl_glider
 {
 namespace
 {
-constexpr int kTagResult = 7101;  // worker -> rank 0: the finished task (or -1) and its result, asking for the next
-constexpr int kTagTask = 7102;    // rank 0 -> worker: the next task index, -1: no more
-constexpr int kTagFailed = 7103;  // a rank that failed outside the tasks -> every other rank: its status and reason
-constexpr int kTagDigest = 7104;  // agree(): every rank -> rank 0 its digest; rank 0 -> every rank all of them
+constexpr int kTagResult = 7101; // worker -> rank 0: the finished task (or -1) and its result, asking for the next
+constexpr int kTagTask = 7102;   // rank 0 -> worker: the next task index, -1: no more
+constexpr int kTagFailed = 7103; // a rank that failed outside the tasks -> every other rank: its status and reason
+constexpr int kTagDigest = 7104; // agree(): every rank -> rank 0 its digest; rank 0 -> every rank all of them
 using Clock = std::chrono::steady_clock;
 
 /// Ends the job when another rank said it failed outside the tasks (MpiTaskSpreader::endJob()): this rank waits for
@@ -105,7 +105,7 @@ std::pair<int, std::string> attempt(const TaskSpreader::Task &task, std::size_t 
         return {2, "unknown exception"};
     }
 }
-}  // namespace
+} // namespace
 
 bool MpiTaskSpreader::launched()
 {
@@ -144,7 +144,7 @@ MpiTaskSpreader::~MpiTaskSpreader()
 std::vector<std::string> MpiTaskSpreader::run(const std::string &what, std::size_t n, const Task &task,
                                               const Progress &progress)
 {
-    const TaskSpreadScope scope;  // tasks within these tasks run locally
+    const TaskSpreadScope scope; // tasks within these tasks run locally
     failure_ = Failure();
     std::vector<std::string> results;
     if (rank_ == 0)
@@ -189,7 +189,8 @@ void MpiTaskSpreader::agree(const std::string &what, std::uint64_t digest)
             differ += (differ.empty() ? "" : ", ") + std::to_string(r);
     if (!differ.empty())
         throw Error("the job's ranks read different inputs: " + what + " of rank" +
-                    (differ.find(',') != std::string::npos ? "s " : " ") + differ + " differs from rank 0's (a "
+                    (differ.find(',') != std::string::npos ? "s " : " ") + differ +
+                    " differs from rank 0's (a "
                     "node-local copy of another version?); every rank must read the same files: the job is stopped, "
                     "nothing planned or written");
 }
@@ -201,7 +202,7 @@ std::vector<std::string> MpiTaskSpreader::master(const std::string &what, std::s
     std::size_t next = 0, done = 0;
     bool stop = false;
     std::vector<std::string> results(n);
-    std::vector<long long> running(static_cast<std::size_t>(size_), -1);  // the task of each rank
+    std::vector<long long> running(static_cast<std::size_t>(size_), -1); // the task of each rank
     std::vector<Clock::time_point> since(static_cast<std::size_t>(size_));
     const auto take = [&](int rank) -> long long {
         std::lock_guard<std::mutex> lock(m);
@@ -247,10 +248,12 @@ std::vector<std::string> MpiTaskSpreader::master(const std::string &what, std::s
                 progress(reported = done, n);
             for (int r = 0; r < size_ && timeLimit_ > 0.0; ++r)
                 if (running[static_cast<std::size_t>(r)] >= 0 &&
-                    std::chrono::duration<double>(Clock::now() - since[static_cast<std::size_t>(r)]).count() > timeLimit_)
+                    std::chrono::duration<double>(Clock::now() - since[static_cast<std::size_t>(r)]).count() >
+                        timeLimit_)
                 {
-                    std::fprintf(stderr, "\nrank %d, %s %lld: still running after %g s (OMPL_GLIDER_TASK_TIME_LIMIT); "
-                                         "the job is ended, nothing written\n",
+                    std::fprintf(stderr,
+                                 "\nrank %d, %s %lld: still running after %g s (OMPL_GLIDER_TASK_TIME_LIMIT); "
+                                 "the job is ended, nothing written\n",
                                  r, what.c_str(), running[static_cast<std::size_t>(r)], timeLimit_);
                     std::fflush(stderr);
                     MPI_Abort(MPI_COMM_WORLD, 3);
@@ -295,7 +298,7 @@ void MpiTaskSpreader::worker(const std::string &what, std::size_t n, const Task 
         std::string message = out.take();
         MPI_Request r;
         MPI_Isend(message.data(), static_cast<int>(message.size()), MPI_BYTE, 0, kTagResult, MPI_COMM_WORLD, &r);
-        waitFor(r);  // (a large result waits for rank 0: not for ever when rank 0 failed outside the tasks)
+        waitFor(r); // (a large result waits for rank 0: not for ever when rank 0 failed outside the tasks)
         bytes_ += static_cast<double>(message.size());
         MPI_Irecv(&i, 1, MPI_LONG_LONG, 0, kTagTask, MPI_COMM_WORLD, &r);
         waitFor(r);
@@ -381,11 +384,11 @@ int MpiTaskSpreader::endJob(int status, const std::string &failure)
         ByteReader in(message);
         const int theirs = in.value<int>();
         const std::string reason = in.value<std::string>();
-        if (rank_ == 0 && reason != failure)  // the same failure on every rank is said once (by rank 0's caller)
+        if (rank_ == 0 && reason != failure) // the same failure on every rank is said once (by rank 0's caller)
             std::fprintf(stderr, "rank %d failed: %s\n", st.MPI_SOURCE, reason.c_str());
         status = std::max(status, theirs);
     }
     MPI_Waitall(static_cast<int>(sends.size()), sends.data(), MPI_STATUSES_IGNORE);
     return status;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

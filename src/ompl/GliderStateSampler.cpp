@@ -12,8 +12,8 @@ namespace ompl_glider
 {
 GliderStateSampler::GliderStateSampler(const ob::StateSpace *space, double startX, double startY, double t0,
                                        double vMax)
-  : ob::StateSampler(space), base_(space->allocDefaultStateSampler()), startX_(startX), startY_(startY), t0_(t0),
-    vMax_(vMax)
+    : ob::StateSampler(space), base_(space->allocDefaultStateSampler()), startX_(startX), startY_(startY), t0_(t0),
+      vMax_(vMax)
 {
     if (dynamic_cast<const TimeSE2StateSpace *>(space) == nullptr)
         throw Error("GliderStateSampler: the state space must be a TimeSE2StateSpace");
@@ -57,4 +57,4 @@ void GliderStateSampler::sampleGaussian(ob::State *state, const ob::State *mean,
     base_->sampleGaussian(state, mean, stdDev);
     raiseTime(state);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

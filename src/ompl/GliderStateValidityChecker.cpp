@@ -14,7 +14,7 @@ namespace ompl_glider
 {
 GliderStateValidityChecker::GliderStateValidityChecker(const ob::SpaceInformationPtr &si,
                                                        std::shared_ptr<const GliderContext> ctx)
-  : ob::StateValidityChecker(si), ctx_(std::move(ctx))
+    : ob::StateValidityChecker(si), ctx_(std::move(ctx))
 {
     if (!ctx_ || !ctx_->field || !ctx_->travel)
         throw Error("GliderStateValidityChecker: the GliderContext must be non-null with a field and a travel-time "
@@ -56,8 +56,8 @@ std::string GliderStateValidityChecker::whyInvalid(const ob::State *state) const
             os << "time " << t << " outside the window [" << r.tMin << ", " << r.tMax << "]";
         else
             os << "(" << x << ", " << y << ") at time " << t << " outside the state space bounds x in [" << r.xMin
-               << ", " << r.xMax << "], y in [" << r.yMin << ", " << r.yMax << "], t in [" << r.tMin << ", "
-               << r.tMax << "]";
+               << ", " << r.xMax << "], y in [" << r.yMin << ", " << r.yMax << "], t in [" << r.tMin << ", " << r.tMax
+               << "]";
         return os.str();
     }
     if (!(t >= r.tMin && t <= r.tMax))
@@ -68,8 +68,7 @@ std::string GliderStateValidityChecker::whyInvalid(const ob::State *state) const
     const CurrentField &f = *ctx_->field;
     if (t < f.timeBegin() || t > f.timeEnd())
     {
-        os << "time " << t << " outside the current field's time span [" << f.timeBegin() << ", " << f.timeEnd()
-           << "]";
+        os << "time " << t << " outside the current field's time span [" << f.timeBegin() << ", " << f.timeEnd() << "]";
         return os.str();
     }
     if (!f.inWater(x, y, ctx_->travel->params().depth))
@@ -86,4 +85,4 @@ std::string GliderStateValidityChecker::whyInvalid(const ob::State *state) const
     }
     return {};
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

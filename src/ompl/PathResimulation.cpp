@@ -31,8 +31,8 @@ std::string pointProblem(const GliderContext &ctx, double x, double y, double t)
     else if (!wet)
         os << "(" << x << ", " << y << ") not in water";
     else
-        os << "(" << x << ", " << y << ") at time " << t << " in a forbidden region: "
-           << ctx.environment->whyBlocked(x, y, t);
+        os << "(" << x << ", " << y << ") at time " << t
+           << " in a forbidden region: " << ctx.environment->whyBlocked(x, y, t);
     return os.str();
 }
 
@@ -45,7 +45,7 @@ bool holdable(const GliderContext &ctx, double x, double y, double t)
     const double V = ctx.speed();
     return c.u * c.u + c.v * c.v < V * V;
 }
-}  // namespace
+} // namespace
 
 namespace
 {
@@ -99,7 +99,7 @@ PathResimulation flyDirect(const GliderContext &ctx, const std::vector<std::arra
 
 struct HoldInterval
 {
-    double a, b;  // reachable times [a, b] at a waypoint
+    double a, b; // reachable times [a, b] at a waypoint
 };
 
 void merge(std::vector<HoldInterval> &v)
@@ -177,7 +177,7 @@ PathResimulation flyWaiting(const GliderContext &ctx, const std::vector<std::arr
     r.travelTime = r.arrivalTime - t0;
     return r;
 }
-}  // namespace
+} // namespace
 
 PathResimulation resimulatePath(const GliderContext &ctx, const std::vector<std::array<double, 2>> &wp, double t0,
                                 const ResimulationOptions &opt)
@@ -208,4 +208,4 @@ PathResimulation resimulatePath(const GliderContext &ctx, const ompl::geometric:
     }
     return resimulatePath(ctx, wp, t0, options);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -11,7 +11,7 @@ namespace
 class DefaultAnswers final : public PipelinePlanner
 {
 };
-}  // namespace
+} // namespace
 
 std::string PipelineSetup::where(const std::string &field) const
 {
@@ -36,20 +36,34 @@ std::string causeName(NoPathCause cause)
 {
     switch (cause)
     {
-        case NoPathCause::None: return "";
-        case NoPathCause::BadInput: return "bad_input";
-        case NoPathCause::Stopped: return "stopped";
-        case NoPathCause::TimeLimit: return "time_limit";
-        case NoPathCause::Approximate: return "approximate";
-        case NoPathCause::LatticeExhausted: return "lattice_exhausted";
-        case NoPathCause::SearchEnded: return "search_ended";
-        case NoPathCause::Unreachable: return "unreachable";
-        case NoPathCause::WalledOff: return "walled_off";
-        case NoPathCause::NotFlyable: return "not_flyable";
-        case NoPathCause::NotRobust: return "not_robust";
-        case NoPathCause::ArrivalWindow: return "arrival_window";
-        case NoPathCause::NoDeparture: return "no_departure";
-        case NoPathCause::Other: return "other";
+    case NoPathCause::None:
+        return "";
+    case NoPathCause::BadInput:
+        return "bad_input";
+    case NoPathCause::Stopped:
+        return "stopped";
+    case NoPathCause::TimeLimit:
+        return "time_limit";
+    case NoPathCause::Approximate:
+        return "approximate";
+    case NoPathCause::LatticeExhausted:
+        return "lattice_exhausted";
+    case NoPathCause::SearchEnded:
+        return "search_ended";
+    case NoPathCause::Unreachable:
+        return "unreachable";
+    case NoPathCause::WalledOff:
+        return "walled_off";
+    case NoPathCause::NotFlyable:
+        return "not_flyable";
+    case NoPathCause::NotRobust:
+        return "not_robust";
+    case NoPathCause::ArrivalWindow:
+        return "arrival_window";
+    case NoPathCause::NoDeparture:
+        return "no_departure";
+    case NoPathCause::Other:
+        return "other";
     }
     return "other";
 }
@@ -63,8 +77,8 @@ const PipelinePlanner &pipelineView(const ompl::base::Planner &planner)
 
 PipelinePlanner &pipelineView(ompl::base::Planner &planner)
 {
-    thread_local DefaultAnswers none;  // stateless: prepare() does nothing
+    thread_local DefaultAnswers none; // stateless: prepare() does nothing
     auto *own = dynamic_cast<PipelinePlanner *>(&planner);
     return own ? *own : none;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

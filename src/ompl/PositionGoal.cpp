@@ -16,11 +16,11 @@ namespace ompl_glider
 {
 PositionGoal::PositionGoal(const ob::SpaceInformationPtr &si, double x, double y, double tolerance, double tEarliest,
                            double tLatest)
-  : ob::GoalSampleableRegion(si), x_(x), y_(y), tEarliest_(tEarliest), tLatest_(tLatest)
+    : ob::GoalSampleableRegion(si), x_(x), y_(y), tEarliest_(tEarliest), tLatest_(tLatest)
 {
     if (!std::isfinite(x) || !std::isfinite(y))
-        throw Error("PositionGoal: goal position must be finite (got " + std::to_string(x) + ", " +
-                    std::to_string(y) + ")");
+        throw Error("PositionGoal: goal position must be finite (got " + std::to_string(x) + ", " + std::to_string(y) +
+                    ")");
     if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
         throw Error("PositionGoal: tolerance must be finite and >= 0 (got " + std::to_string(tolerance) + ")");
     setThreshold(tolerance);
@@ -79,7 +79,7 @@ unsigned int PositionGoal::maxSampleCount() const
     checkValidity();
     return static_cast<unsigned int>(validTimes_.size());
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider
 
 namespace ompl_glider
 {
@@ -146,4 +146,4 @@ std::optional<StartAndGoal> startAndGoal(const ob::ProblemDefinition &pdef, cons
     }
     return StartAndGoal{st->getX(), st->getY(), st->getTime(), *goal};
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

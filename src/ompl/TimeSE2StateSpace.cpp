@@ -17,13 +17,8 @@ namespace
 class TimeSE2Projection : public ob::ProjectionEvaluator
 {
 public:
-    explicit TimeSE2Projection(const TimeSE2StateSpace *space) : ob::ProjectionEvaluator(space), space_(space)
-    {
-    }
-    unsigned int getDimension() const override
-    {
-        return 3;
-    }
+    explicit TimeSE2Projection(const TimeSE2StateSpace *space) : ob::ProjectionEvaluator(space), space_(space) {}
+    unsigned int getDimension() const override { return 3; }
     void defaultCellSizes() override
     {
         const ob::RealVectorBounds &xy = space_->getXYBounds();
@@ -43,7 +38,7 @@ public:
 private:
     const TimeSE2StateSpace *space_;
 };
-}  // namespace
+} // namespace
 
 TimeSE2StateSpace::TimeSE2StateSpace(const ob::RealVectorBounds &xyBounds, double tMin, double tMax)
 {
@@ -51,7 +46,8 @@ TimeSE2StateSpace::TimeSE2StateSpace(const ob::RealVectorBounds &xyBounds, doubl
         throw Error("TimeSE2StateSpace: xyBounds must have dimension 2 (got " + std::to_string(xyBounds.low.size()) +
                     ")");
     for (int i = 0; i < 2; ++i)
-        if (!std::isfinite(xyBounds.low[i]) || !std::isfinite(xyBounds.high[i]) || !(xyBounds.low[i] < xyBounds.high[i]))
+        if (!std::isfinite(xyBounds.low[i]) || !std::isfinite(xyBounds.high[i]) ||
+            !(xyBounds.low[i] < xyBounds.high[i]))
             throw Error(std::string("TimeSE2StateSpace: ") + (i == 0 ? "x" : "y") +
                         " bounds must be finite with low < high (got [" + std::to_string(xyBounds.low[i]) + ", " +
                         std::to_string(xyBounds.high[i]) + "])");
@@ -63,7 +59,7 @@ TimeSE2StateSpace::TimeSE2StateSpace(const ob::RealVectorBounds &xyBounds, doubl
     auto se2 = std::make_shared<ob::SE2StateSpace>();
     se2->setName("SE2");
     se2->setBounds(xyBounds);
-    se2->setSubspaceWeight(1, 0.01);  // yaw weight, see setYawWeight()
+    se2->setSubspaceWeight(1, 0.01); // yaw weight, see setYawWeight()
     auto time = std::make_shared<ob::RealVectorStateSpace>(1);
     time->setName("Time");
     ob::RealVectorBounds tb(1);
@@ -132,4 +128,4 @@ void TimeSE2StateSpace::registerProjections()
 {
     registerDefaultProjection(std::make_shared<TimeSE2Projection>(this));
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

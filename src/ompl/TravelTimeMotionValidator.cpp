@@ -19,35 +19,35 @@ std::string toString(MotionVerdict v)
 {
     switch (v)
     {
-        case MotionVerdict::Valid:
-            return "valid";
-        case MotionVerdict::NotForward:
-            return "not forward in time";
-        case MotionVerdict::CannotHold:
-            return "cannot hold position (current at least the vehicle speed)";
-        case MotionVerdict::Infeasible:
-            return "infeasible leg (current too strong for every heading)";
-        case MotionVerdict::TooEarly:
-            return "too early (faster than the fastest travel time)";
-        case MotionVerdict::TooLate:
-            return "too late (slower than the slowest travel time, cannot hold)";
-        case MotionVerdict::Blocked:
-            return "blocked by a forbidden region";
-        case MotionVerdict::InvalidEndState:
-            return "invalid end state";
+    case MotionVerdict::Valid:
+        return "valid";
+    case MotionVerdict::NotForward:
+        return "not forward in time";
+    case MotionVerdict::CannotHold:
+        return "cannot hold position (current at least the vehicle speed)";
+    case MotionVerdict::Infeasible:
+        return "infeasible leg (current too strong for every heading)";
+    case MotionVerdict::TooEarly:
+        return "too early (faster than the fastest travel time)";
+    case MotionVerdict::TooLate:
+        return "too late (slower than the slowest travel time, cannot hold)";
+    case MotionVerdict::Blocked:
+        return "blocked by a forbidden region";
+    case MotionVerdict::InvalidEndState:
+        return "invalid end state";
     }
     return "unknown";
 }
 
 TravelTimeMotionValidator::TravelTimeMotionValidator(const ob::SpaceInformationPtr &si,
                                                      std::shared_ptr<const GliderContext> ctx)
-  : ob::MotionValidator(si), ctx_(std::move(ctx))
+    : ob::MotionValidator(si), ctx_(std::move(ctx))
 {
     init();
 }
 
 TravelTimeMotionValidator::TravelTimeMotionValidator(ob::SpaceInformation *si, std::shared_ptr<const GliderContext> ctx)
-  : ob::MotionValidator(si), ctx_(std::move(ctx))
+    : ob::MotionValidator(si), ctx_(std::move(ctx))
 {
     init();
 }
@@ -76,7 +76,7 @@ void TravelTimeMotionValidator::setRelativeTolerance(double tol)
         throw Error("TravelTimeMotionValidator::setRelativeTolerance: tolerance must be in [0, 0.1] (got " +
                     std::to_string(tol) + ")");
     relTol_ = tol;
-    id_ = newCacheId();  // invalidate cached verdicts
+    id_ = newCacheId(); // invalidate cached verdicts
 }
 
 void TravelTimeMotionValidator::setHoldTimeStep(double dt)
@@ -85,7 +85,7 @@ void TravelTimeMotionValidator::setHoldTimeStep(double dt)
         throw Error("TravelTimeMotionValidator::setHoldTimeStep: step must be finite and > 0 (got " +
                     std::to_string(dt) + ")");
     holdStep_ = dt;
-    id_ = newCacheId();  // invalidate cached verdicts
+    id_ = newCacheId(); // invalidate cached verdicts
 }
 
 bool TravelTimeMotionValidator::canHold(double x, double y, double t1, double t2) const
@@ -215,4 +215,4 @@ bool TravelTimeMotionValidator::checkMotion(const ob::State *s1, const ob::State
     space.freeState(probe);
     return false;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -15,10 +15,11 @@ namespace ob = ompl::base;
 namespace ompl_glider
 {
 TravelTimeObjective::TravelTimeObjective(const ob::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx)
-  : ob::OptimizationObjective(si), ctx_(std::move(ctx))
+    : ob::OptimizationObjective(si), ctx_(std::move(ctx))
 {
     if (!ctx_ || !ctx_->field || !ctx_->travel)
-        throw Error("TravelTimeObjective: the GliderContext must be non-null with a field and a travel-time calculator");
+        throw Error(
+            "TravelTimeObjective: the GliderContext must be non-null with a field and a travel-time calculator");
     vMax_ = ctx_->speed() + ctx_->maxCurrent();
     if (!(vMax_ > 0.0) || !std::isfinite(vMax_))
         throw Error("TravelTimeObjective: V + max|c| must be finite and > 0 (got " + std::to_string(vMax_) + ")");
@@ -56,4 +57,4 @@ ob::Cost TravelTimeObjective::motionCostHeuristic(const ob::State *s1, const ob:
         s2->as<TimeSE2StateSpace::StateType>()->getTime() - s1->as<TimeSE2StateSpace::StateType>()->getTime();
     return ob::Cost(std::max(TimeSE2StateSpace::xyDistance(s1, s2) / vMax_, dt));
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

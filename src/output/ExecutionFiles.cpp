@@ -34,7 +34,7 @@ double compassDegrees(double angle)
     d = std::fmod(d, 360.0);
     return d < 0.0 ? d + 360.0 : d;
 }
-}  // namespace
+} // namespace
 
 std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem)
 {
@@ -44,8 +44,8 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
     for (const ExecutionRun &run : e.runs)
     {
         const std::string head = std::to_string(run.index) + ",";
-        const std::string ends = csvPoint(problem, run.start) + "," + csvPoint(problem, run.goal) + "," +
-                                 csvCell(run.departure) + ",";
+        const std::string ends =
+            csvPoint(problem, run.start) + "," + csvPoint(problem, run.goal) + "," + csvCell(run.departure) + ",";
         // the oracle's arrival (empty without an oracle, or where it did not reach), the same on each strategy's row
         const std::string oracle = "," + csvCell(run.oracleArrival) + "\n";
         if (!run.planned)
@@ -66,8 +66,8 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
                  (f.reached ? "1" : "0") + "," + (f.grounded ? "1" : "0") + "," + csvCell(f.madeGoodSpeed) + "," +
                  std::to_string(f.fixes.empty() ? 0 : f.fixes.size() - 1) + "," + std::to_string(f.replans) + "," +
                  csvCell(run.radius) + ",," +
-                 (e.stops.empty() ? std::string(",") : std::to_string(f.stationsReached) + "," +
-                                                       std::to_string(f.windowsMissed)) +
+                 (e.stops.empty() ? std::string(",")
+                                  : std::to_string(f.stationsReached) + "," + std::to_string(f.windowsMissed)) +
                  oracle;
         }
     }
@@ -93,4 +93,4 @@ std::string executionTracksCsv(const ExecutionResult &e, const MissionProblem &p
     }
     return s;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -86,7 +86,7 @@ void panel(cairo_t *cr, double x0, double y0, const ExecutionResult &e, const st
     const double colours[7][3] = {{0.20, 0.45, 0.75}, {0.30, 0.65, 0.35}, {0.85, 0.45, 0.15}, {0.60, 0.35, 0.70},
                                   {0.55, 0.40, 0.25}, {0.80, 0.30, 0.50}, {0.35, 0.65, 0.70}};
     const std::size_t n = e.spread.size();
-    std::size_t lines = 1;  // the counts in one row under the tallest name
+    std::size_t lines = 1; // the counts in one row under the tallest name
     for (const StrategySpread &sp : e.spread)
         lines = std::max(lines, labelLines(sp.strategy, plotW / static_cast<double>(n) - 6.0).size());
     for (std::size_t k = 0; k < n; ++k)

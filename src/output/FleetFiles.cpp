@@ -75,7 +75,7 @@ void removeStaleRenderDirectories()
         }
         catch (const Error &)
         {
-            return;  // said by renderOutputFiles()
+            return; // said by renderOutputFiles()
         }
         for (const fs::directory_entry &e : fs::directory_iterator(tmp, ec))
         {
@@ -122,7 +122,7 @@ std::string fleetSummaryJson(const MissionSpec &m, const std::vector<FleetGlider
     j["files"] = files;
     return output_json::utf8Dump(j, 2) + "\n";
 }
-}  // namespace
+} // namespace
 
 std::string renderOutputFiles(const MissionResult &result, const MissionProblem &problem)
 {
@@ -183,9 +183,8 @@ std::vector<OutputFile> fleetOutputFiles(const MissionSpec &mission, const std::
     std::vector<OutputFile> files;
     for (const FleetGlider &g : gliders)
         for (auto &[name, bytes] : keptFiles(g.kept))
-            files.push_back({g.row.name + "/" + name, [bytes = bytes](const std::string &p) {
-                                 output_detail::writeFileChecked(p, bytes);
-                             }});
+            files.push_back({g.row.name + "/" + name,
+                             [bytes = bytes](const std::string &p) { output_detail::writeFileChecked(p, bytes); }});
     const std::string csv = fleetCsv(gliders);
     files.push_back({"fleet.csv", [csv](const std::string &p) { output_detail::writeFileChecked(p, csv); }});
 #if OMPL_GLIDER_WITH_MAP
@@ -206,8 +205,9 @@ std::vector<OutputFile> fleetOutputFiles(const MissionSpec &mission, const std::
     for (const OutputFile &f : files)
         names.push_back(f.name);
     const std::string summary = fleetSummaryJson(mission, gliders, names, wallSeconds);
-    files.insert(files.begin(),
-                 OutputFile{"summary.json", [summary](const std::string &p) { output_detail::writeFileChecked(p, summary); }});
+    files.insert(files.begin(), OutputFile{"summary.json", [summary](const std::string &p) {
+                                               output_detail::writeFileChecked(p, summary);
+                                           }});
     return files;
 }
 
@@ -235,4 +235,4 @@ void printFleetTable(std::ostream &out, const MissionSpec &mission, const std::v
         out << line;
     }
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

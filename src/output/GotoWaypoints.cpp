@@ -24,7 +24,7 @@ std::string heldFor(const MissionResult &r, double t)
     if (!r.spec.physicalUnits().time)
         return text::number(t, 4);
     char buf[48];
-    std::snprintf(buf, sizeof buf, "%.4f h", t * r.spec.timeUnitSeconds / 3600.0);  // to a third of a second
+    std::snprintf(buf, sizeof buf, "%.4f h", t * r.spec.timeUnitSeconds / 3600.0); // to a third of a second
     return buf;
 }
 
@@ -64,16 +64,16 @@ bool legKeepsTime(const MissionResult &r, const MissionProblem *problem, std::si
     if (!problem)
         return true;
     const MissionWaypoint &p = r.waypoints[a], &q = r.waypoints[b];
-    const std::vector<TimedPoint> flown = retimePath(*problem, problem->getField(), r.plan.speed,
-                                                     {{p.position.x, p.position.y, p.time},
-                                                      {q.position.x, q.position.y, q.time}});
+    const std::vector<TimedPoint> flown =
+        retimePath(*problem, problem->getField(), r.plan.speed,
+                   {{p.position.x, p.position.y, p.time}, {q.position.x, q.position.y, q.time}});
     if (flown.size() != 2)
         return false;
     const double planned = q.time - p.time;
     const double tolerance = std::max(1e-3 * planned, 30.0 / r.spec.timeUnitSeconds);
     return std::abs((flown.back().t - flown.front().t) - planned) <= tolerance;
 }
-}  // namespace
+} // namespace
 
 namespace
 {
@@ -94,7 +94,7 @@ bool inHeadingLeg(const MissionResult &r, std::size_t i)
             return true;
     return false;
 }
-}  // namespace
+} // namespace
 
 std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const MissionProblem *problem)
 {
@@ -110,17 +110,17 @@ std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const Missi
     for (std::size_t i = 1; i + 1 < n; ++i)
     {
         const std::size_t k = kept.back();
-        if ((isViaArrival(r, i) && !same(i, k)) || inHeadingLeg(r, i))  // stations, and held headings' segment ends
+        if ((isViaArrival(r, i) && !same(i, k)) || inHeadingLeg(r, i)) // stations, and held headings' segment ends
         {
             kept.push_back(i);
             continue;
         }
-        if (r.plan.headingRoute() || !(turn > 0.0))  // every segment end of held headings, or every waypoint
+        if (r.plan.headingRoute() || !(turn > 0.0)) // every segment end of held headings, or every waypoint
         {
             kept.push_back(i);
             continue;
         }
-        if (same(i, k) || same(i, i + 1))  // a hold: the same position again
+        if (same(i, k) || same(i, i + 1)) // a hold: the same position again
             continue;
         bool drop = std::abs(std::remainder(courseDeg(at(i), at(i + 1)) - courseDeg(at(k), at(i)), 360.0)) <= turn;
         for (std::size_t j = k + 1; drop && j <= i; ++j)
@@ -170,9 +170,9 @@ std::string stayNote(const MissionResult &r, const StationStay &s)
 {
     char radius[32];
     std::snprintf(radius, sizeof radius, "%.0f m", std::max(1.0, std::round(s.radius)));
-    return "stay at " + s.name + ": hold within " + (r.spec.physicalUnits().length ? std::string(radius) :
-                                                     text::number(s.radius / r.spec.metresPerUnit()))
-           + " for " + heldFor(r, s.duration) + ", leave at " +
+    return "stay at " + s.name + ": hold within " +
+           (r.spec.physicalUnits().length ? std::string(radius) : text::number(s.radius / r.spec.metresPerUnit())) +
+           " for " + heldFor(r, s.duration) + ", leave at " +
            (s.leaveIso.empty() ? text::number(s.leave, 10) : s.leaveIso);
 }
 
@@ -201,4 +201,4 @@ GotoList gotoList(const MissionResult &r, const MissionProblem *problem)
     }
     return g;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -24,10 +24,9 @@ inline json jtext(const std::string &s)
 
 /// The text of a JSON value, bytes that are not UTF-8 (a Latin-1 file or mission name) written as U+FFFD rather than
 /// thrown (nlohmann's type_error.316 would end a finished plan).
-template <class Json>
-std::string utf8Dump(const Json &j, int indent = -1)
+template <class Json> std::string utf8Dump(const Json &j, int indent = -1)
 {
     return j.dump(indent, ' ', false, Json::error_handler_t::replace);
 }
-}  // namespace output_json
-}  // namespace ompl_glider
+} // namespace output_json
+} // namespace ompl_glider

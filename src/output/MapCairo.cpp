@@ -62,10 +62,10 @@ bool svgText(cairo_t *cr, double x, double y, const std::string &s, double size,
 double textAdvance(cairo_t *cr, const std::string &s)
 {
     cairo_text_extents_t ext;
-    cairo_text_extents(cr, text::validUtf8(s).c_str(), &ext);  // cairo stops drawing after invalid UTF-8
+    cairo_text_extents(cr, text::validUtf8(s).c_str(), &ext); // cairo stops drawing after invalid UTF-8
     return ext.x_advance;
 }
-}  // namespace
+} // namespace
 
 double niceStep(double raw)
 {
@@ -102,7 +102,9 @@ std::string degrees(double v, double step, bool east)
         v = 0.0;
     char buf[48];
     std::snprintf(buf, sizeof buf, "%.*f\u00b0%s", d, std::abs(v),
-                  v == 0.0 || (!east && std::abs(v) < 1e-9) ? "" : east ? (v < 0 ? "W" : "E") : (v < 0 ? "S" : "N"));
+                  v == 0.0 || (!east && std::abs(v) < 1e-9) ? ""
+                  : east                                    ? (v < 0 ? "W" : "E")
+                                                            : (v < 0 ? "S" : "N"));
     return buf;
 }
 
@@ -123,7 +125,7 @@ void setDash(cairo_t *cr, bool dashed)
 void haloText(cairo_t *cr, double x, double y, const std::string &raw, const Rgba &c, double size, bool bold,
               double alignX)
 {
-    const std::string s = text::validUtf8(raw);  // cairo stops drawing after invalid UTF-8
+    const std::string s = text::validUtf8(raw); // cairo stops drawing after invalid UTF-8
     if (svgText(cr, x, y, s, size, bold, alignX, c, true))
         return;
     selectFont(cr, size, bold);
@@ -137,24 +139,23 @@ void haloText(cairo_t *cr, double x, double y, const std::string &raw, const Rgb
     cairo_move_to(cr, x0, y);
     setColour(cr, c);
     cairo_show_text(cr, s.c_str());
-    cairo_new_path(cr);  // show_text leaves a current point: do not let the next arc connect to it
+    cairo_new_path(cr); // show_text leaves a current point: do not let the next arc connect to it
 }
 
-void plainText(cairo_t *cr, double x, double y, const std::string &raw, double size, bool bold, double alignX,
-               Rgba c)
+void plainText(cairo_t *cr, double x, double y, const std::string &raw, double size, bool bold, double alignX, Rgba c)
 {
-    const std::string s = text::validUtf8(raw);  // cairo stops drawing after invalid UTF-8
+    const std::string s = text::validUtf8(raw); // cairo stops drawing after invalid UTF-8
     if (svgText(cr, x, y, s, size, bold, alignX, c, false))
         return;
     selectFont(cr, size, bold);
     cairo_move_to(cr, x - alignX * textAdvance(cr, s), y);
     setColour(cr, c);
     cairo_show_text(cr, s.c_str());
-    cairo_new_path(cr);  // show_text leaves a current point: do not let the next arc connect to it
+    cairo_new_path(cr); // show_text leaves a current point: do not let the next arc connect to it
 }
 
-int wrappedText(cairo_t *cr, double x, double y, const std::string &s, double size, double maxWidth,
-                double lineHeight, Rgba c)
+int wrappedText(cairo_t *cr, double x, double y, const std::string &s, double size, double maxWidth, double lineHeight,
+                Rgba c)
 {
     selectFont(cr, size, false);
     std::vector<std::string> lines;
@@ -229,7 +230,7 @@ void traceStar(cairo_t *cr, double cx, double cy, double outer, double inner)
     }
     cairo_close_path(cr);
 }
-}  // namespace map_detail
+} // namespace map_detail
 
 void drawCairoText(void *cairo, double x, double y, const std::string &text, double size, bool bold, double alignX,
                    Rgba colour)
@@ -249,7 +250,7 @@ cairo_status_t appendToString(void *closure, const unsigned char *data, unsigned
     static_cast<std::string *>(closure)->append(reinterpret_cast<const char *>(data), length);
     return CAIRO_STATUS_SUCCESS;
 }
-}  // namespace
+} // namespace
 
 void writeCairoFile(const std::string &filename, int width, int height, bool svg,
                     const std::function<void(void *)> &draw)
@@ -265,7 +266,7 @@ void writeCairoFile(const std::string &filename, int width, int height, bool svg
         cairo_surface_destroy(surf);
         throw Error("cannot create '" + filename + "': " + msg);
     }
-    std::string texts;  // the SVG's text, as <text> elements
+    std::string texts; // the SVG's text, as <text> elements
     if (svg)
         cairo_surface_set_user_data(surf, &map_detail::svgTextKey, &texts, nullptr);
     cairo_t *cr = cairo_create(surf);
@@ -294,4 +295,4 @@ void writeCairoFile(const std::string &filename, int width, int height, bool svg
     }
     output_detail::writeFileChecked(filename, bytes);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -28,7 +28,7 @@ namespace maphtml
 extern const char *const kTemplate[];
 extern const char *const kLeafletJs[];
 extern const char *const kLeafletCss[];
-}  // namespace maphtml
+} // namespace maphtml
 
 namespace
 {
@@ -90,19 +90,10 @@ public:
     {
         return geographic_ ? p_.toLocal(LonLat{o, a}) : Point2{o / scale_, a / scale_};
     }
-    bool geographic() const
-    {
-        return geographic_;
-    }
-    const std::string &units() const
-    {
-        return units_;
-    }
+    bool geographic() const { return geographic_; }
+    const std::string &units() const { return units_; }
     /// A length of the planning frame in the map's units (metres on a lon/lat map: Leaflet's circles).
-    double length(double d) const
-    {
-        return geographic_ ? d * p_.getSpec().metresPerUnit() : d * scale_;
-    }
+    double length(double d) const { return geographic_ ? d * p_.getSpec().metresPerUnit() : d * scale_; }
 
 private:
     const MissionProblem &p_;
@@ -140,10 +131,10 @@ double legHeading(Point2 a, Point2 b, Velocity c, double v)
     const double dx = b.x - a.x, dy = b.y - a.y, d = std::hypot(dx, dy);
     if (!(d > 0.0) || !(v > 0.0))
         return std::numeric_limits<double>::quiet_NaN();
-    const double ex = dx / d, ey = dy / d, cross = -c.u * ey + c.v * ex;  // current across the leg (left positive)
+    const double ex = dx / d, ey = dy / d, cross = -c.u * ey + c.v * ex; // current across the leg (left positive)
     if (std::abs(cross) >= v)
         return std::numeric_limits<double>::quiet_NaN();
-    const double hp = -cross / v, ha = std::sqrt(1.0 - hp * hp);  // across and along the leg, through the water
+    const double hp = -cross / v, ha = std::sqrt(1.0 - hp * hp); // across and along the leg, through the water
     return bearing(ha * ex - hp * ey, ha * ey + hp * ex);
 }
 
@@ -166,8 +157,11 @@ PageJson routeJson(const MissionResult &r, const MissionProblem &p, const Frame 
     {
         const MissionWaypoint &w = r.waypoints[k];
         const PageJson pos = f.at(w.position);
-        PageJson wp{{"index", k}, {"lat", pos[0]}, {"lon", pos[1]}, {"arrival", w.iso.empty() ? pageTime(p, w.time) : w.iso},
-                {"elapsed", elapsedText(m, w.time - plan.departure)}};
+        PageJson wp{{"index", k},
+                    {"lat", pos[0]},
+                    {"lon", pos[1]},
+                    {"arrival", w.iso.empty() ? pageTime(p, w.time) : w.iso},
+                    {"elapsed", elapsedText(m, w.time - plan.departure)}};
         Velocity c{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
         if (field.inWater(w.position.x, w.position.y, z) && w.time <= field.timeEnd())
             c = field.velocity(w.position.x, w.position.y, z, w.time);
@@ -197,7 +191,8 @@ void landAndBand(const MissionProblem &p, const Frame &f, PageJson &land, PageJs
     if (!(w > 0.0) || !(h > 0.0))
         return;
     const double cell = std::max(w, h) / 150.0;
-    const int nx = std::max(1, static_cast<int>(std::ceil(w / cell))), ny = std::max(1, static_cast<int>(std::ceil(h / cell)));
+    const int nx = std::max(1, static_cast<int>(std::ceil(w / cell))),
+              ny = std::max(1, static_cast<int>(std::ceil(h / cell)));
     const CurrentField &field = *p.getField();
     const FieldGrid *grid = field.grid();
     const KeepOffZone *keep = p.getLand() && p.getLand()->distance() > 0.0 ? p.getLand().get() : nullptr;
@@ -211,12 +206,12 @@ void landAndBand(const MissionProblem &p, const Frame &f, PageJson &land, PageJs
         int runStart[2] = {-1, -1};
         for (int i = 0; i <= nx; ++i)
         {
-            int kind = -1;  // 0 land, 1 keep-off band
+            int kind = -1; // 0 land, 1 keep-off band
             if (i < nx)
             {
                 const double x = b.xMin + (i + 0.5) * dx, y = b.yMin + (j + 0.5) * dy;
                 if (!field.inWater(x, y, z))
-                    kind = !grid || grid->covers(x, y) ? 0 : -1;  // outside a forecast's grid: no data, not land
+                    kind = !grid || grid->covers(x, y) ? 0 : -1; // outside a forecast's grid: no data, not land
                 else if (keep && keep->distanceTo(x, y) < keep->distance())
                     kind = 1;
             }
@@ -262,7 +257,7 @@ PageJson currentsJson(const MissionResult &r, const MissionProblem &p, const Fra
         for (int j = 0; s0 + (j + 0.5) * step < n1; ++j)
             for (int i = 0; w0 + (i + 0.5) * step < e1; ++i)
             {
-                const double a = s0 + (j + 0.5) * step, o = w0 + (i + 0.5) * step;  // map coordinates
+                const double a = s0 + (j + 0.5) * step, o = w0 + (i + 0.5) * step; // map coordinates
                 const Point2 q = f.local(a, o);
                 const double x = q.x, y = q.y;
                 if (!(x >= b.xMin && x <= b.xMax && y >= b.yMin && y <= b.yMax) || !field.inWater(x, y, z))
@@ -271,7 +266,8 @@ PageJson currentsJson(const MissionResult &r, const MissionProblem &p, const Fra
                 if (!std::isfinite(c.u) || !std::isfinite(c.v))
                     continue;
                 vmax = std::max(vmax, std::hypot(c.u, c.v));
-                arrows.push_back(PageJson::array({rounded(a, 1e-6), rounded(o, 1e-6), rounded(c.u, 1e-4), rounded(c.v, 1e-4)}));
+                arrows.push_back(
+                    PageJson::array({rounded(a, 1e-6), rounded(o, 1e-6), rounded(c.u, 1e-4), rounded(c.v, 1e-4)}));
             }
         out["frames"].push_back({{"time", pageTime(p, t)}, {"arrows", std::move(arrows)}});
     }
@@ -326,9 +322,7 @@ PageJson gliderJson(const MissionProblem &p)
     const Region &b = p.getBox();
     const double height = std::abs(p.toGeographic({0.5 * (b.xMin + b.xMax), b.yMax}).lat -
                                    p.toGeographic({0.5 * (b.xMin + b.xMax), b.yMin}).lat);
-    return {{"fixes", fixes},
-            {"dac", dac},
-            {"arrow_deg_per_ms", fastest > 0.0 ? height / 12.0 / fastest : 0.05}};
+    return {{"fixes", fixes}, {"dac", dac}, {"arrow_deg_per_ms", fastest > 0.0 ? height / 12.0 / fastest : 0.05}};
 #else
     (void)p;
     return nullptr;
@@ -354,7 +348,7 @@ std::string scriptSafe(const std::string &s)
     }
     return out;
 }
-}  // namespace
+} // namespace
 
 std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
 {
@@ -374,9 +368,11 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
     for (std::size_t i = 0; i < p.getViaPoints().size(); ++i)
     {
         const ViaPointSpec &v = m.waypoints[i];
-        PageJson st{{"name", v.name}, {"at", f.at(p.getViaPoints()[i])},
-                {"radius", std::isfinite(v.radius) ? PageJson(f.length(v.radius)) : PageJson(nullptr)},
-                {"stay", v.stay > 0.0 ? PageJson(v.stay) : PageJson(nullptr)}, {"arrival", nullptr}};
+        PageJson st{{"name", v.name},
+                    {"at", f.at(p.getViaPoints()[i])},
+                    {"radius", std::isfinite(v.radius) ? PageJson(f.length(v.radius)) : PageJson(nullptr)},
+                    {"stay", v.stay > 0.0 ? PageJson(v.stay) : PageJson(nullptr)},
+                    {"arrival", nullptr}};
         for (const PlannedLeg &l : r.legs)
             if (l.toVia == static_cast<int>(i) && l.plan.solved)
             {
@@ -387,7 +383,8 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
     }
     d["stations"] = stations;
     d["isochrones"] = isochronesJson(r, p, f);
-    PageJson land = PageJson::array(), band = PageJson::array(), coast = PageJson::array(), forbidden = PageJson::array();
+    PageJson land = PageJson::array(), band = PageJson::array(), coast = PageJson::array(),
+             forbidden = PageJson::array();
     landAndBand(p, f, land, band);
     for (const MissionPolygon &poly : p.getPolygons())
     {
@@ -397,7 +394,8 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
             land.push_back(f.line(poly.points));
         else
         {
-            PageJson windows = PageJson::array();  // a closure's: when it is closed (as dates where the mission has them)
+            PageJson windows =
+                PageJson::array(); // a closure's: when it is closed (as dates where the mission has them)
             for (const auto &[from, to] : poly.windows)
             {
                 const std::string a = p.isoTime(from), b = p.isoTime(to);
@@ -409,7 +407,7 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
         }
     }
     for (auto &ring : coast)
-        land.push_back(ring);  // a coastline's land, filled
+        land.push_back(ring); // a coastline's land, filled
     d["land"] = std::move(land);
     d["coastlines"] = std::move(coast);
     d["keep_off"] = std::move(band);
@@ -422,8 +420,10 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
                            Point2{0.5 * (b.xMin + b.xMax), b.yMax}})
     {
         const PageJson c = f.at(q);
-        lo = PageJson::array({std::min(lo[0].get<double>(), c[0].get<double>()), std::min(lo[1].get<double>(), c[1].get<double>())});
-        hi = PageJson::array({std::max(hi[0].get<double>(), c[0].get<double>()), std::max(hi[1].get<double>(), c[1].get<double>())});
+        lo = PageJson::array(
+            {std::min(lo[0].get<double>(), c[0].get<double>()), std::min(lo[1].get<double>(), c[1].get<double>())});
+        hi = PageJson::array(
+            {std::max(hi[0].get<double>(), c[0].get<double>()), std::max(hi[1].get<double>(), c[1].get<double>())});
     }
     d["bounds"] = PageJson::array({lo, hi});
     d["currents"] = currentsJson(r, p, f, d["bounds"]);
@@ -457,8 +457,8 @@ std::string mapHtmlPage(const std::vector<std::string> &data, const std::string 
     for (std::size_t at = js.find("</script"); at != std::string::npos; at = js.find("</script", at + 2))
         js.replace(at, 2, "<\\/");
     const std::pair<const char *, std::string> parts[] = {{"/*LEAFLET_CSS*/", joined(maphtml::kLeafletCss)},
-                                                         {"/*LEAFLET_JS*/", js},
-                                                         {"/*MAP_DATA*/", scriptSafe(output_json::utf8Dump(d))}};
+                                                          {"/*LEAFLET_JS*/", js},
+                                                          {"/*MAP_DATA*/", scriptSafe(output_json::utf8Dump(d))}};
     std::vector<std::pair<std::size_t, const std::pair<const char *, std::string> *>> at;
     for (const auto &part : parts)
     {
@@ -495,4 +495,4 @@ std::string mapHtml(const MissionResult &r, const MissionProblem &p)
 {
     return mapHtmlPage({mapHtmlData(r, p)}, r.spec.name);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

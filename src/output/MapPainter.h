@@ -45,8 +45,8 @@ void plainText(cairo_t *cr, double x, double y, const std::string &s, double siz
                double alignX = 0.0, Rgba c = {0.1, 0.1, 0.1, 1.0});
 /// Draws @p s left-aligned at (x, y), broken at spaces (or, for a single long word, at any character) so that no
 /// line is wider than @p maxWidth; returns the number of lines drawn.
-int wrappedText(cairo_t *cr, double x, double y, const std::string &s, double size, double maxWidth,
-                double lineHeight, Rgba c = {0.1, 0.1, 0.1, 1.0});
+int wrappedText(cairo_t *cr, double x, double y, const std::string &s, double size, double maxWidth, double lineHeight,
+                Rgba c = {0.1, 0.1, 0.1, 1.0});
 /// The shading colour of a speed @p f in [0, 1] of the largest speed (very light blue to medium blue).
 Rgba speedColour(double f);
 /// An arrow from (x, y) by (dx, dy) pixels with a filled head of about @p head pixels, in the current source.
@@ -58,8 +58,7 @@ void traceStar(cairo_t *cr, double cx, double cy, double outer, double inner);
 
 /// Calls @p f(v) for v = the first multiple of @p step at or above @p lo, then v += step while v <= hi (+1e-9):
 /// the grid lines, axis ticks and graticule lines.
-template <class F>
-void forEachStep(double lo, double hi, double step, F &&f)
+template <class F> void forEachStep(double lo, double hi, double step, F &&f)
 {
     for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9; v += step)
         f(v);
@@ -81,8 +80,7 @@ public:
     double Y(double y) const { return kTop + (region.yMax - y) * scale; }
 
     /// Moves to the first point and lines to the others (in pixels), on the current path.
-    template <class Points>
-    void tracePolyline(const Points &points) const
+    template <class Points> void tracePolyline(const Points &points) const
     {
         for (std::size_t k = 0; k < points.size(); ++k)
         {
@@ -95,12 +93,12 @@ public:
     const Region &region;
     const MapOptions &options;
     cairo_t *const cr;
-    const int W, H;             ///< page size in pixels
-    const double plotW, scale;  ///< plot width in pixels, pixels per field unit
-    const double plotH;         ///< plot height in pixels
-    const double xs, ys;        ///< light-grid and axis-tick steps in field units
-    const bool geographic;      ///< lon/lat graticule and labels instead of the x/y grid
-    const std::string tu;       ///< " <time unit>" appended to times, or empty
+    const int W, H;            ///< page size in pixels
+    const double plotW, scale; ///< plot width in pixels, pixels per field unit
+    const double plotH;        ///< plot height in pixels
+    const double xs, ys;       ///< light-grid and axis-tick steps in field units
+    const bool geographic;     ///< lon/lat graticule and labels instead of the x/y grid
+    const std::string tu;      ///< " <time unit>" appended to times, or empty
 
 private:
     // --- the plot area (MapRenderer.cpp)
@@ -118,7 +116,7 @@ private:
     void drawTimeTicks(const MapPath &p) const;
     /// The start disc and the goal star, labelled.
     void drawStartGoal() const;
-    void drawStations() const;  ///< via points: marker, radius, name and arrival
+    void drawStations() const; ///< via points: marker, radius, name and arrival
 
     // --- grid, frame and axes (MapRendererAxes.cpp)
     /// The light x/y grid, or the graticule in a geographic frame, inside the plot.
@@ -146,9 +144,9 @@ private:
     /// A position for the legend: degrees in a geographic frame, else the frame's x/y.
     std::string position(double x, double y) const;
 
-    double vmax_{0.0};                            ///< largest current speed in the plot
-    bool landShown_{false}, noDataShown_{false};  ///< the shading met land / no-data points
-    double lx_{0.0}, ly_{0.0};                    ///< legend cursor
+    double vmax_{0.0};                           ///< largest current speed in the plot
+    bool landShown_{false}, noDataShown_{false}; ///< the shading met land / no-data points
+    double lx_{0.0}, ly_{0.0};                   ///< legend cursor
 };
-}  // namespace map_detail
-}  // namespace ompl_glider
+} // namespace map_detail
+} // namespace ompl_glider

@@ -18,19 +18,10 @@ namespace ompl_glider
 namespace map_detail
 {
 MapPainter::MapPainter(const MapRenderer &m, cairo_t *context)
-    : map(m),
-      region(m.region_),
-      options(m.options_),
-      cr(context),
-      W(m.size().first),
-      H(m.size().second),
-      plotW(W - kLeft - kRight),
-      scale(plotW / (region.xMax - region.xMin)),
-      plotH(scale * (region.yMax - region.yMin)),
-      xs(niceStep((region.xMax - region.xMin) / 8)),
-      ys(niceStep((region.yMax - region.yMin) / 8)),
-      geographic(options.toGeographic && options.toLocal),
-      tu(options.timeUnit.empty() ? "" : " " + options.timeUnit)
+    : map(m), region(m.region_), options(m.options_), cr(context), W(m.size().first), H(m.size().second),
+      plotW(W - kLeft - kRight), scale(plotW / (region.xMax - region.xMin)), plotH(scale * (region.yMax - region.yMin)),
+      xs(niceStep((region.xMax - region.xMin) / 8)), ys(niceStep((region.yMax - region.yMin) / 8)),
+      geographic(options.toGeographic && options.toLocal), tu(options.timeUnit.empty() ? "" : " " + options.timeUnit)
 {
 }
 
@@ -162,7 +153,7 @@ void MapPainter::drawRegion(const MapPolygon &poly) const
         }
         cairo_stroke(cr);
         cairo_restore(cr);
-        outline();  // restore the polygon outline path for the stroke below
+        outline(); // restore the polygon outline path for the stroke below
     }
     setColour(cr, poly.stroke);
     cairo_set_line_width(cr, 1.5);
@@ -177,7 +168,7 @@ void MapPainter::drawRegion(const MapPolygon &poly) const
         }
         cx /= poly.vertices.size();
         cy /= poly.vertices.size();
-        haloText(cr, X(cx), Y(cy) + 4, poly.label, poly.stroke, 12, true, 0.5);  // (a coastline's have none)
+        haloText(cr, X(cx), Y(cy) + 4, poly.label, poly.stroke, 12, true, 0.5); // (a coastline's have none)
     }
 }
 
@@ -276,7 +267,7 @@ void MapPainter::drawStartGoal() const
     cairo_stroke(cr);
     haloText(cr, gxp + 12, gyp - 10, "GOAL", {0.45, 0.0, 0.45, 1}, 13, true);
 }
-}  // namespace map_detail
+} // namespace map_detail
 
 using map_detail::kBottom;
 using map_detail::kLeft;
@@ -299,7 +290,7 @@ MapPath styledPath(std::string label, std::vector<TimedPoint> waypoints, Rgba co
     p.timeTicks = timeTicks;
     return p;
 }
-}  // namespace
+} // namespace
 
 MapRenderer::MapRenderer(const Region &region, MapOptions options) : region_(region), options_(std::move(options))
 {
@@ -406,4 +397,4 @@ void MapRenderer::writePng(const std::string &filename) const
     const auto [W, H] = size();
     writeCairoFile(filename, W, H, false, [this](void *cr) { draw(cr); });
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -57,8 +57,7 @@ struct Graticule
     }
 
     /// Calls @p f(meridian, v) for the meridians, then the parallels, on the step.
-    template <class F>
-    void forEachLine(F &&f) const
+    template <class F> void forEachLine(F &&f) const
     {
         for (int meridian = 0; meridian < 2; ++meridian)
             forEachStep(meridian ? lon0 : lat0, meridian ? lon1 : lat1, step, [&](double v) { f(meridian, v); });
@@ -105,7 +104,7 @@ void graticuleLabel(const MapPainter &p, const Graticule &g, bool meridian, doub
         }
     }
 }
-}  // namespace
+} // namespace
 
 void MapPainter::drawGrid() const
 {
@@ -205,5 +204,5 @@ void MapPainter::drawScaleBar() const
     cairo_stroke(cr);
     plainText(cr, 0.5 * (x0 + x1), y0 - 7, fmt(km) + " km", 11, false, 0.5);
 }
-}  // namespace map_detail
-}  // namespace ompl_glider
+} // namespace map_detail
+} // namespace ompl_glider

@@ -34,7 +34,7 @@ void MapPainter::drawPathEntries()
 {
     for (const MapPath &p : map.paths_)
     {
-        if (p.label.empty())  // a line without a legend entry (e.g. the further pieces of one isochrone)
+        if (p.label.empty()) // a line without a legend entry (e.g. the further pieces of one isochrone)
             continue;
         setColour(cr, p.colour);
         cairo_set_line_width(cr, p.width);
@@ -183,5 +183,5 @@ std::string MapPainter::position(double x, double y) const
     const LonLat g = options.toGeographic({x, y});
     return degrees(g.lat, 0.001, false) + " " + degrees(g.lon, 0.001, true);
 }
-}  // namespace map_detail
-}  // namespace ompl_glider
+} // namespace map_detail
+} // namespace ompl_glider

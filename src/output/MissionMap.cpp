@@ -102,9 +102,9 @@ void addPaths(MapRenderer &map, const MissionResult &r)
     map.addPath(rawPath);
     if (smoothedDiffers)
     {
-        MapPath s = MapRenderer::smoothedPathStyle(
-            "smoothed: " + std::to_string(p.smoothed.size()) + " wp, T=" + duration(r, p.smoothedTravelTime, true),
-            smoothed);
+        MapPath s = MapRenderer::smoothedPathStyle("smoothed: " + std::to_string(p.smoothed.size()) +
+                                                       " wp, T=" + duration(r, p.smoothedTravelTime, true),
+                                                   smoothed);
         s.timeTicks = !finalDiffers;
         map.addPath(s);
     }
@@ -131,7 +131,7 @@ void addHeadingRoute(MapRenderer &map, const MissionResult &r)
     const std::string label = p.planner + ": " + std::to_string(p.headings->segments.size()) +
                               " held headings, T=" + duration(r, p.travelTime, true);
     MapPath t = MapRenderer::refinedPathStyle(label, track);
-    t.waypointMarkers = false;  // the track has a point per integration step
+    t.waypointMarkers = false; // the track has a point per integration step
     map.addPath(t);
     MapPath marks = MapRenderer::rawPathStyle("segment ends (heading changes)", ends);
     marks.width = 0.6;
@@ -166,21 +166,12 @@ class RmsDifferenceField : public CurrentField
 public:
     RmsDifferenceField(std::shared_ptr<const CurrentField> a, std::shared_ptr<const CurrentField> b, double t0,
                        double t1)
-      : a_(std::move(a)), b_(std::move(b)), t0_(t0), t1_(t1)
+        : a_(std::move(a)), b_(std::move(b)), t0_(t0), t1_(t1)
     {
     }
-    double maxSpeed(const Region &region) const override
-    {
-        return a_->maxSpeed(region) + b_->maxSpeed(region);
-    }
-    bool inWater(double x, double y, double z) const override
-    {
-        return a_->inWater(x, y, z) && b_->inWater(x, y, z);
-    }
-    std::string name() const override
-    {
-        return "RMS |truth - forecast|";
-    }
+    double maxSpeed(const Region &region) const override { return a_->maxSpeed(region) + b_->maxSpeed(region); }
+    bool inWater(double x, double y, double z) const override { return a_->inWater(x, y, z) && b_->inWater(x, y, z); }
+    std::string name() const override { return "RMS |truth - forecast|"; }
 
 protected:
     Velocity evaluate(double x, double y, double z, double) const override
@@ -188,16 +179,13 @@ protected:
         const double d = rmsDifference(*a_, *b_, x, y, z, t0_, t1_);
         return {std::isnan(d) ? 0.0 : d, 0.0};
     }
-    Jacobian evaluateJacobian(double, double, double, double) const override
-    {
-        return {};
-    }
+    Jacobian evaluateJacobian(double, double, double, double) const override { return {}; }
 
 private:
     std::shared_ptr<const CurrentField> a_, b_;
     double t0_, t1_;
 };
-}  // namespace
+} // namespace
 
 namespace
 {
@@ -224,7 +212,7 @@ void addGliderHistory(MapRenderer &map, const MissionProblem &problem)
     for (const DacRecord &d : o->dac)
         fastest = std::max(fastest, std::hypot(d.u, d.v));
     const Region &b = problem.getBox();
-    const double scale = fastest > 0.0 ? (b.yMax - b.yMin) / 12.0 / fastest : 0.0;  // length units per m/s
+    const double scale = fastest > 0.0 ? (b.yMax - b.yMin) / 12.0 / fastest : 0.0; // length units per m/s
     bool labelled = false;
     for (const DacRecord &d : o->dac)
     {
@@ -258,7 +246,7 @@ void addGliderHistory(MapRenderer &map, const MissionProblem &problem)
     (void)problem;
 #endif
 }
-}  // namespace
+} // namespace
 
 MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &problem)
 {
@@ -270,8 +258,8 @@ MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &pro
     mo.shadingLabel = netcdf ? "RMS |truth - forecast| (m/s)" : "RMS |truth - forecast|";
     mo.title = m.name + " - truth against forecast, RMS over " + duration(r, e.differenceEnd - e.differenceBegin);
     MapRenderer map(problem.getBox(), mo);
-    const double tEnd = std::max(e.differenceBegin, std::min({e.differenceEnd, problem.getField()->timeEnd(),
-                                                               problem.getTruth()->timeEnd()}));
+    const double tEnd = std::max(
+        e.differenceBegin, std::min({e.differenceEnd, problem.getField()->timeEnd(), problem.getTruth()->timeEnd()}));
     map.setField(std::make_shared<RmsDifferenceField>(problem.getTruth(), problem.getField(), e.differenceBegin, tEnd),
                  e.differenceBegin, m.vehicle.depth);
     for (const MissionPolygon &p : problem.getPolygons())
@@ -279,7 +267,7 @@ MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &pro
     if (r.plan.solved)
     {
         MapPath plan = MapRenderer::refinedPathStyle("plan", r.plan.track.size() > 1 ? r.plan.track : r.plan.path);
-        plan.waypointMarkers = !r.plan.headingRoute();  // a heading route's track: a point per integration step
+        plan.waypointMarkers = !r.plan.headingRoute(); // a heading route's track: a point per integration step
         map.addPath(plan);
     }
     const Point2 s = problem.getStart(), g = problem.getGoal();
@@ -362,8 +350,8 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
     {
         // the mission's own run flown in the truth, one track per strategy, surfacings marked
         const ExecutionResult &e = *r.execution;
-        const Rgba colours[4] = {{0.05, 0.35, 0.85, 0.9}, {0.10, 0.60, 0.20, 0.9}, {0.95, 0.50, 0.05, 0.9},
-                                 {0.55, 0.20, 0.70, 0.9}};
+        const Rgba colours[4] = {
+            {0.05, 0.35, 0.85, 0.9}, {0.10, 0.60, 0.20, 0.9}, {0.95, 0.50, 0.05, 0.9}, {0.55, 0.20, 0.70, 0.9}};
         for (std::size_t k = 0; k < e.strategies.size(); ++k)
         {
             const FlownTrack &f = e.runs.front().flown[k];
@@ -408,16 +396,15 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
     if (r.plan.solved)
     {
         map.addNote("travel time " + duration(r, r.plan.travelTime) + ", path length " + length(r, r.plan.pathLength));
-        map.addNote("straight line: " +
-                    (std::isfinite(r.plan.straightLineTime) ? "T=" + duration(r, r.plan.straightLineTime)
-                                                            : std::string("impassable")));
+        map.addNote("straight line: " + (std::isfinite(r.plan.straightLineTime)
+                                             ? "T=" + duration(r, r.plan.straightLineTime)
+                                             : std::string("impassable")));
     }
     else
         map.addNote("no path: " + r.plan.reason);
-    map.addNote(std::isnan(m.outputs.mapTime) ? "field shown at departure"
-                                              : "field shown at " + (problem.isoTime(tMap).empty()
-                                                                         ? "t = " + fmt(tMap)
-                                                                         : problem.isoTime(tMap)));
+    map.addNote(std::isnan(m.outputs.mapTime)
+                    ? "field shown at departure"
+                    : "field shown at " + (problem.isoTime(tMap).empty() ? "t = " + fmt(tMap) : problem.isoTime(tMap)));
     return map;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

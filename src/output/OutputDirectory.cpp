@@ -69,10 +69,10 @@ extern "C" void onTerminatingSignal(int sig)
     }
     if (state == WriteState::Idle)
     {
-        endBySignal(sig);  // end the process as the signal would have (nothing is half written)
+        endBySignal(sig); // end the process as the signal would have (nothing is half written)
         return;
     }
-    g_pending.store(sig);  // answered at the next file (interruptIfSignalled), or after the commit if it is final
+    g_pending.store(sig); // answered at the next file (interruptIfSignalled), or after the commit if it is final
 }
 
 std::string systemReason(int err)
@@ -124,7 +124,7 @@ bool holdsOnlyOutputs(const fs::path &target, const std::vector<std::string> &pr
     {
         const std::string name = e.path().filename().string();
         const fs::file_type type = fs::symlink_status(e.path(), ec).type();
-        if (type == fs::file_type::directory)  // a fleet glider's folder: every file in it listed as NAME/FILE
+        if (type == fs::file_type::directory) // a fleet glider's folder: every file in it listed as NAME/FILE
         {
             bool any = false;
             for (const fs::directory_entry &f : fs::directory_iterator(e.path(), ec))
@@ -168,7 +168,7 @@ std::map<std::string, HeldLock> &heldLocks()
     static std::map<std::string, HeldLock> held;
     return held;
 }
-}  // namespace
+} // namespace
 
 int signalAfterOutputs()
 {
@@ -183,7 +183,7 @@ void installOutputSignalHandlers()
         {
         };
         if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN)
-            continue;  // an ignored signal (nohup) stays ignored
+            continue; // an ignored signal (nohup) stays ignored
         struct sigaction sa
         {
         };
@@ -204,7 +204,7 @@ OutputLock::OutputLock(const std::string &directory)
     HeldLock &held = heldLocks()[path_];
     if (held.count > 0)
     {
-        ++held.count;  // this process holds it already (glider_plan locks before planning, then writes)
+        ++held.count; // this process holds it already (glider_plan locks before planning, then writes)
         return;
     }
     const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
@@ -235,7 +235,7 @@ OutputLock::~OutputLock()
     auto it = heldLocks().find(path_);
     if (it == heldLocks().end() || --it->second.count > 0)
         return;
-    ::close(it->second.fd);  // releases the flock; the lock file stays (removing it would race a waiting run)
+    ::close(it->second.fd); // releases the flock; the lock file stays (removing it would race a waiting run)
     heldLocks().erase(it);
 }
 
@@ -275,7 +275,7 @@ fs::path resolveOutputDirectory(const std::string &directory)
 {
     fs::path p = fs::absolute(directory.empty() ? fs::path(".") : fs::path(directory)).lexically_normal();
     if (p.filename().empty() && p.has_parent_path() && p != p.root_path())
-        p = p.parent_path();  // trailing slash
+        p = p.parent_path(); // trailing slash
     std::error_code ec;
     if (fs::is_symlink(p, ec))
     {
@@ -283,7 +283,7 @@ fs::path resolveOutputDirectory(const std::string &directory)
             throw Error("output directory '" + directory + "' is a symbolic link to '" +
                         fs::read_symlink(p, ec).string() +
                         "', which does not exist; create that directory or choose another output directory");
-        p = fs::canonical(p, ec);  // the exchange must move the directory, not the link
+        p = fs::canonical(p, ec); // the exchange must move the directory, not the link
     }
     return p;
 }
@@ -313,8 +313,8 @@ fs::path workDirOf(const fs::path &target)
 fs::path makeStaging(const fs::path &target)
 {
     static std::atomic<unsigned> counter{0};
-    const fs::path staging = workDirOf(target) / ("." + baseName(target) + ".tmp-" + std::to_string(::getpid()) +
-                                                     "-" + std::to_string(counter++));
+    const fs::path staging = workDirOf(target) / ("." + baseName(target) + ".tmp-" + std::to_string(::getpid()) + "-" +
+                                                  std::to_string(counter++));
     std::error_code ec;
     if (!fs::create_directory(staging, ec))
         throw Error("cannot create the temporary directory '" + staging.string() + "'" +
@@ -357,11 +357,11 @@ void moveFileByFile(const fs::path &staging, const fs::path &target, const std::
         if (!folder.empty())
             folders.insert(folder);
     }
-    for (const std::string &folder : folders)  // an earlier fleet's glider that this run has not
+    for (const std::string &folder : folders) // an earlier fleet's glider that this run has not
         if (fs::is_empty(target / folder, ec))
             fs::remove(target / folder, ec);
 }
-}  // namespace
+} // namespace
 
 void commitStaging(const fs::path &staging, const fs::path &target, const std::vector<std::string> &names,
                    const std::vector<std::string> &previous, const std::string &shown)
@@ -370,7 +370,8 @@ void commitStaging(const fs::path &staging, const fs::path &target, const std::v
     for (const std::string &n : names)
     {
         const std::string folder = folderOf(n);
-        const fs::file_type held = folder.empty() ? fs::file_type::directory : fs::symlink_status(target / folder, ec).type();
+        const fs::file_type held =
+            folder.empty() ? fs::file_type::directory : fs::symlink_status(target / folder, ec).type();
         if (held != fs::file_type::directory && held != fs::file_type::not_found && held != fs::file_type::none)
             throw Error("output directory '" + shown + "' holds '" + folder +
                         "', which is not a directory, where glider_plan writes a glider's folder; nothing was "
@@ -403,14 +404,14 @@ void commitStaging(const fs::path &staging, const fs::path &target, const std::v
              (fs::permissions(staging, fs::status(target, ec).permissions(), ec), true) &&
              ::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0)
     {
-        stepHook("committed");  // the staging directory now holds the earlier run's files
+        stepHook("committed"); // the staging directory now holds the earlier run's files
         if (g_pending.load() != 0 &&
             ::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) == 0)
             interruptIfSignalled(staging);
     }
     else
         moveFileByFile(staging, target, names, previous, shown);
-    g_state.store(WriteState::Final);  // a signal from here on no longer takes the new outputs back
+    g_state.store(WriteState::Final); // a signal from here on no longer takes the new outputs back
     stepHook("final");
     syncDirectory(target.parent_path());
     fs::remove_all(staging, ec);
@@ -422,7 +423,7 @@ void setStaging(bool on)
         g_state.store(WriteState::Staging);
     else
     {
-        WriteState staging = WriteState::Staging;  // a final write stays final
+        WriteState staging = WriteState::Staging; // a final write stays final
         g_state.compare_exchange_strong(staging, WriteState::Idle);
     }
 }
@@ -432,7 +433,7 @@ void raisePendingSignal()
     if (g_state.load() == WriteState::Final)
     {
         if (g_pending.load() != 0)
-            requestStop();  // kept for signalAfterOutputs(); the outputs stand
+            requestStop(); // kept for signalAfterOutputs(); the outputs stand
         return;
     }
     if (const int sig = g_pending.exchange(0))
@@ -459,5 +460,5 @@ void stepHook(const char *step)
     if (auto *hook = g_hook.load())
         hook(step);
 }
-}  // namespace output_detail
-}  // namespace ompl_glider
+} // namespace output_detail
+} // namespace ompl_glider

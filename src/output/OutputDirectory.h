@@ -51,4 +51,4 @@ void raisePendingSignal();
 /// outputs in place, "final": no longer taken back by a signal).
 void setStepHook(void (*hook)(const char *step));
 void stepHook(const char *step);
-}  // namespace ompl_glider::output_detail
+} // namespace ompl_glider::output_detail

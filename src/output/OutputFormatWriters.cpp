@@ -36,9 +36,8 @@ std::vector<OutputFile> summaryFormatFiles(const MissionResult &r, const Mission
 {
     const MissionResult *res = &r;
     const MissionProblem *prob = &problem;
-    return {{"summary.json", [res, prob, listed](const std::string &p) {
-                 writeFormatText(p, summaryJson(*res, *prob, listed));
-             }}};
+    return {{"summary.json",
+             [res, prob, listed](const std::string &p) { writeFormatText(p, summaryJson(*res, *prob, listed)); }}};
 }
 
 std::vector<OutputFile> csvFormatFiles(const MissionResult &r, const MissionProblem &, const Listed &)
@@ -56,10 +55,10 @@ std::vector<OutputFile> pathFormatFiles(const MissionResult &r, const MissionPro
 std::vector<OutputFile> geoJsonFormatFiles(const MissionResult &r, const MissionProblem &problem, const Listed &)
 {
     const MissionResult *res = &r;
-    const MissionProblem *prob = &problem;  // projects a heading route's track
+    const MissionProblem *prob = &problem; // projects a heading route's track
     std::vector<OutputFile> files{
         {"path.geojson", [res, prob](const std::string &p) { writeFormatText(p, routeGeoJson(*res, prob)); }}};
-    if (problem.isGeographic())  // the same route for Google Earth
+    if (problem.isGeographic()) // the same route for Google Earth
         files.push_back({"route.kml", [res, prob](const std::string &p) { writeFormatText(p, routeKml(*res, prob)); }});
     return files;
 }
@@ -77,7 +76,7 @@ std::vector<OutputFile> gotoFormatFiles(const MissionResult &r, const MissionPro
     if (!problem.isGeographic())
         return {};
     const MissionResult *res = &r;
-    const MissionProblem *prob = &problem;  // checks the thinned list's legs
+    const MissionProblem *prob = &problem; // checks the thinned list's legs
     // the Seaglider's targets file of the same turns beside the Slocum's goto list
     return {{gotoFileName(r.spec.outputs.gotoNumber),
              [res, prob](const std::string &p) { writeGotoFile(p, gotoList(*res, prob)); }},
@@ -88,7 +87,7 @@ std::vector<OutputFile> gotoFormatFiles(const MissionResult &r, const MissionPro
 
 std::vector<OutputFile> stintsFormatFiles(const MissionResult &r, const MissionProblem &problem, const Listed &)
 {
-    if (!r.plan.stints && !r.plan.headingRoute())  // a heading route's segments are written as stints
+    if (!r.plan.stints && !r.plan.headingRoute()) // a heading route's segments are written as stints
         return {};
     const MissionResult *res = &r;
     const MissionProblem *prob = &problem;
@@ -138,9 +137,8 @@ std::vector<OutputFile> executionFormatFiles(const MissionResult &r, const Missi
          [res, prob](const std::string &p) { writeFormatText(p, executionTracksCsv(*res->execution, *prob)); }}};
 #if OMPL_GLIDER_WITH_MAP
     for (const bool svg : {true, false})
-        files.push_back({svg ? "execution.svg" : "execution.png", [res, svg](const std::string &p) {
-                             writeExecutionPlot(p, *res->execution, res->spec, svg);
-                         }});
+        files.push_back({svg ? "execution.svg" : "execution.png",
+                         [res, svg](const std::string &p) { writeExecutionPlot(p, *res->execution, res->spec, svg); }});
     if (r.spec.execution.truth)
         for (OutputFile &f :
              drawnFormatFiles("model_difference", [res, prob] { return modelDifferenceMap(*res, *prob); }))
@@ -148,7 +146,7 @@ std::vector<OutputFile> executionFormatFiles(const MissionResult &r, const Missi
 #endif
     return files;
 }
-}  // namespace
+} // namespace
 
 const std::vector<OutputFormatWriterRow> &outputFormatWriters()
 {
@@ -185,7 +183,7 @@ std::vector<std::string> declaredFileNames(const OutputFormat &format, int gotoN
         if (name == "goto_lNN.ma")
             name = gotoFileName(gotoNumber);
         const std::size_t slash = name.find('/');
-        if (slash != std::string::npos)  // "map.svg/png"
+        if (slash != std::string::npos) // "map.svg/png"
         {
             names.push_back(name.substr(0, slash));
             name = name.substr(0, name.rfind('.', slash) + 1) + name.substr(slash + 1);
@@ -194,4 +192,4 @@ std::vector<std::string> declaredFileNames(const OutputFormat &format, int gotoN
     }
     return names;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -60,7 +60,7 @@ bool plainName(const std::string &name)
     return slash == std::string::npos ? plain(name) : plain(name.substr(0, slash)) && plain(name.substr(slash + 1));
 }
 
-}  // namespace
+} // namespace
 
 std::vector<OutputFile> outputFiles(const MissionResult &r, const MissionProblem &problem)
 {
@@ -176,7 +176,7 @@ std::vector<std::string> writeOutputFiles(const std::string &directory, const st
         fs::remove_all(staging, ec);
         output_detail::setStaging(false);
         output_detail::raisePendingSignal();
-        std::string what = e.what();  // name the file where it was meant to go, not in the staging directory
+        std::string what = e.what(); // name the file where it was meant to go, not in the staging directory
         const std::string from = staging.string() + "/";
         for (std::size_t at = what.find(from); at != std::string::npos; at = what.find(from))
             what.replace(at, from.size(), (fs::path(shown) / "").string());
@@ -201,4 +201,4 @@ std::vector<std::string> writeOutputs(const MissionResult &result, const Mission
 {
     return writeOutputFiles(result.spec.outputs.directory, outputFiles(result, problem));
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

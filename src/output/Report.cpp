@@ -23,8 +23,7 @@ std::string reportNumber(double v)
 }
 
 /// printf into a string (the report's lines are short).
-template <class... A>
-std::string format(const char *fmt, A... args)
+template <class... A> std::string format(const char *fmt, A... args)
 {
     char buf[512];
     std::snprintf(buf, sizeof buf, fmt, args...);
@@ -54,12 +53,13 @@ void printWaypoints(std::ostream &out, const MissionResult &r)
             prof = reportNumber(w.dive.climbTo) + "-" + reportNumber(w.dive.diveTo);
         out << format("%4zu %12.6g %12.6g %11s %10s %14s %22s %16s", i, w.position.x, w.position.y,
                       w.geographic ? format("%.6f", w.lonLat.lon).c_str() : "",
-                      w.geographic ? format("%.6f", w.lonLat.lat).c_str() : "", reportNumber(w.time).c_str(), w.iso.c_str(),
-                      prof.c_str());
+                      w.geographic ? format("%.6f", w.lonLat.lat).c_str() : "", reportNumber(w.time).c_str(),
+                      w.iso.c_str(), prof.c_str());
         if (headings && std::isfinite(w.heading))
             out << format(" %11s %12s\n", format("%.1f deg", w.heading).c_str(),
-                          (r.spec.physicalUnits().time ? format("%.2f h", w.headingDuration * r.spec.timeUnitSeconds / 3600.0)
-                                                       : reportNumber(w.headingDuration))
+                          (r.spec.physicalUnits().time
+                               ? format("%.2f h", w.headingDuration * r.spec.timeUnitSeconds / 3600.0)
+                               : reportNumber(w.headingDuration))
                               .c_str());
         else
             out << "\n";
@@ -79,17 +79,17 @@ void printLegs(std::ostream &out, const MissionResult &r)
     std::string order;
     for (const std::size_t i : r.order)
         order += (order.empty() ? "" : " -> ") + m.waypoints[i].name;
-    out << "Via points:         " << m.waypoints.size() << ", visited " << order << " (order " << visitOrderName(m.order)
-        << ")\n";
+    out << "Via points:         " << m.waypoints.size() << ", visited " << order << " (order "
+        << visitOrderName(m.order) << ")\n";
     if (r.orderSearch)
     {
         const OrderSearch &s = *r.orderSearch;
         out << "Order search:       " << s.ordersEvaluated << " of " << s.ordersTotal << " orders planned to the goal ("
             << s.legsPlanned << " legs planned); the given order "
             << (std::isfinite(s.givenTime) ? span(s.givenTime) : std::string("has no route"))
-            << (std::isfinite(s.chosenTime) ? format(", the chosen one %s (%.2f%% faster)", span(s.chosenTime).c_str(),
-                                                     100.0 * s.gain)
-                                            : std::string(", no order has a route"))
+            << (std::isfinite(s.chosenTime)
+                    ? format(", the chosen one %s (%.2f%% faster)", span(s.chosenTime).c_str(), 100.0 * s.gain)
+                    : std::string(", no order has a route"))
             << (s.stopped.empty() ? std::string()
                                   : "; the search stopped at " + s.stopped +
                                         ": the chosen order is the fastest of those planned, not proven the fastest")
@@ -139,15 +139,16 @@ void printRouteModel(std::ostream &out, const MissionResult &r)
         return;
     if (r.legs.empty())
         out << "Route:              " << routeKind(p) << "\n";
-    for (const PlannedLeg &l : r.legs)  // each leg as it is flown (and written in the pilot files)
+    for (const PlannedLeg &l : r.legs) // each leg as it is flown (and written in the pilot files)
         out << (l.index == 0 ? "Route:              " : "                    ") << "leg " << l.index + 1 << " ("
             << l.from << " -> " << l.to << "): " << routeKind(l.plan) << "\n";
     if (p.solved && p.reflown && std::isfinite(p.plannerTravelTime))
-        out << "Re-flight:          " << span(p.reflownTravelTime) << " (the planner's own legs: "
-            << span(p.plannerTravelTime)
+        out << "Re-flight:          " << span(p.reflownTravelTime)
+            << " (the planner's own legs: " << span(p.plannerTravelTime)
             << format(", %+.2e relative)\n", (p.plannerTravelTime - p.reflownTravelTime) / p.reflownTravelTime);
     else if (p.solved && p.reflown)
-        out << "Re-flight:          " << span(p.reflownTravelTime) << ", ends " +
+        out << "Re-flight:          " << span(p.reflownTravelTime)
+            << ", ends " +
                    (m.physicalUnits().length ? format("%.3g m", p.reflownEndDistance * m.metresPerUnit())
                                              : format("%.3g", p.reflownEndDistance)) +
                    " from the goal\n";
@@ -167,9 +168,9 @@ void printExecutionTable(std::ostream &out, const ExecutionResult &e, const Miss
         const std::string distance = s.finalDistance.count ? lengthText(m, s.finalDistance.median) : "-";
         out << format("  %-22s %9s %8zu %16s", s.strategy.c_str(), reached.c_str(), s.grounded, distance.c_str());
         if (e.oracle)
-            out << (s.overOracle.count ? format("  %.3f / %.3f (%zu)", s.overOracle.median, s.overOracle.q3,
-                                                s.overOracle.count)
-                                       : std::string("  - (0)"));
+            out << (s.overOracle.count
+                        ? format("  %.3f / %.3f (%zu)", s.overOracle.median, s.overOracle.q3, s.overOracle.count)
+                        : std::string("  - (0)"));
         out << "\n";
     }
     if (e.oracle)
@@ -192,7 +193,8 @@ void printGlobalCheck(std::ostream &out, const PlannedPath &p, const MissionSpec
         return m.physicalUnits().time ? text::durationText(t * m.timeUnitSeconds) : format("%.4f", t);
     };
     out << "Global check:       " << g.headings << " extremals shot from the start, "
-        << (g.extremalFound ? "the fastest through the goal " + span(g.extremalTime) : std::string("none through the goal"))
+        << (g.extremalFound ? "the fastest through the goal " + span(g.extremalTime)
+                            : std::string("none through the goal"))
         << format(" (%.2f s)\n", g.seconds);
     if (g.timedOut)
         out << format("  time limit        the check's %g s ended its scans before they were done\n", g.timeLimit);
@@ -200,18 +202,17 @@ void printGlobalCheck(std::ostream &out, const PlannedPath &p, const MissionSpec
         out << "  finer scans       " << g.finerHeadings << " headings in narrowing windows"
             << (std::isfinite(g.levelSetTime) ? "; the level set's first arrival " + span(g.levelSetTime)
                 : g.levelSetBudgetSpent       ? format("; the level set's budget of %llu node updates spent before "
-                                                       "its front reached the goal",
+                                                             "its front reached the goal",
                                                        static_cast<unsigned long long>(g.levelSetBudget))
                                               : std::string())
             << "\n";
     for (const RouteCandidate &c : g.candidates)
-        out << "  candidate         " << c.name << ": "
-            << (c.solved ? span(c.travelTime) : "no route (" + c.why + ")")
+        out << "  candidate         " << c.name << ": " << (c.solved ? span(c.travelTime) : "no route (" + c.why + ")")
             << (c.name == g.winner ? "  <- the route" : "") << "\n";
     if (!g.winner.empty() && g.winner != g.candidates.front().name)
         out << format("  the planner's route was in another route class: %.2f%% faster now\n", 100.0 * g.gain);
 }
-}  // namespace
+} // namespace
 
 std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows)
 {
@@ -232,15 +233,16 @@ void printReport(std::ostream &out, const MissionResult &r)
     const PlannedPath &p = r.plan;
     const MissionSpec &m = r.spec;
     out << "Mission:            " << m.name << " (" << m.file << "), current " << m.current.type;
-    if (m.current.isForecast() && !m.current.file.empty())  // a Zarr store, a GRIB file, an OPeNDAP dataset...
+    if (m.current.isForecast() && !m.current.file.empty()) // a Zarr store, a GRIB file, an OPeNDAP dataset...
         out << " (" << forecastSourceKind(m.current.file) << (m.current.files.size() > 1 ? "s" : "") << ")";
     out << "\n";
-    if (!m.current.members.empty())  // an ensemble: how many members, and how they were drawn
+    if (!m.current.members.empty()) // an ensemble: how many members, and how they were drawn
         out << "Current:            " << ensembleDescription(m.current) << "\n";
     out << "Planner:            " << p.planner;
     const PlannerEntry *entry = findPlanner(p.planner.empty() ? m.planner.name : p.planner);
-    if (m.planner.gridSize > 0 && entry && entry->lattice())  // grid and sectors are the lattice's
-        out << " (grid " << (m.physicalUnits().length ? lengthText(m, m.planner.gridSize) : format("%g", m.planner.gridSize))
+    if (m.planner.gridSize > 0 && entry && entry->lattice()) // grid and sectors are the lattice's
+        out << " (grid "
+            << (m.physicalUnits().length ? lengthText(m, m.planner.gridSize) : format("%g", m.planner.gridSize))
             << format(", %d sectors)", m.planner.sectors);
     out << ", V = " << reportNumber(p.speed) << "\n";
     if (r.departureSearch)
@@ -268,7 +270,7 @@ void printReport(std::ostream &out, const MissionResult &r)
         out << "Coastline:          " << r.coastlineNote << "\n";
     if (p.solved)
     {
-        if (m.physicalUnits().time)  // days and hours, the seconds beside them
+        if (m.physicalUnits().time) // days and hours, the seconds beside them
             out << "Travel time:        " << text::durationText(p.travelTime * m.timeUnitSeconds)
                 << format(" (raw %.4f, smoothed %.4f)\n", p.rawTravelTime, p.smoothedTravelTime);
         else
@@ -279,17 +281,19 @@ void printReport(std::ostream &out, const MissionResult &r)
             const std::string at = r.waypoints.empty() ? "" : r.waypoints.back().iso;
             out << "Arrival at goal:    " << reportNumber(p.path.back().t) << (at.empty() ? "" : " (" + at + ")");
             if (m.goalWindow.set)
-                out << " in the window [" << reportNumber(m.goalWindow.begin) << ", " << reportNumber(m.goalWindow.end) << "]";
+                out << " in the window [" << reportNumber(m.goalWindow.begin) << ", " << reportNumber(m.goalWindow.end)
+                    << "]";
             out << "\n";
             out << "Holding:            "
-                << (m.physicalUnits().time ? text::durationText(p.holdTime * m.timeUnitSeconds) : reportNumber(p.holdTime))
+                << (m.physicalUnits().time ? text::durationText(p.holdTime * m.timeUnitSeconds)
+                                           : reportNumber(p.holdTime))
                 << (p.arrivalTiming.empty() ? std::string() : " (" + p.arrivalTiming + ")") << "\n";
         }
         if (r.diveProfiles)
-            out << "With dive profiles: " << (std::isfinite(r.diveTravelTime) ? reportNumber(r.diveTravelTime) : "impassable")
-                << "\n";
-        out << "Path length:        " << lengthText(m, p.pathLength) << " (straight " << lengthText(m, p.straightLineLength)
-            << ")\n";
+            out << "With dive profiles: "
+                << (std::isfinite(r.diveTravelTime) ? reportNumber(r.diveTravelTime) : "impassable") << "\n";
+        out << "Path length:        " << lengthText(m, p.pathLength) << " (straight "
+            << lengthText(m, p.straightLineLength) << ")\n";
         if (std::isfinite(r.closestLand.distance))
         {
             const double mpu = m.metresPerUnit();
@@ -299,10 +303,12 @@ void printReport(std::ostream &out, const MissionResult &r)
             if (r.closestLandLonLat)
                 out << format(" at %.5f, %.5f", r.closestLandLonLat->lon, r.closestLandLonLat->lat);
             else
-                out << " at (" << reportNumber(r.closestLand.where.x) << ", " << reportNumber(r.closestLand.where.y) << ")";
+                out << " at (" << reportNumber(r.closestLand.where.x) << ", " << reportNumber(r.closestLand.where.y)
+                    << ")";
             if (const double keepOff = m.safety.keepOff; keepOff > 0.0)
                 out << " (keep-off "
-                    << (m.physicalUnits().length ? format("%.3f km", keepOff * mpu / 1000.0) : reportNumber(keepOff)) << ")";
+                    << (m.physicalUnits().length ? format("%.3f km", keepOff * mpu / 1000.0) : reportNumber(keepOff))
+                    << ")";
             out << "\n";
         }
         out << "Straight line:      "
@@ -349,9 +355,9 @@ void printReport(std::ostream &out, const MissionResult &r)
         const ExecutionResult &e = *r.execution;
         out << "Execution:          truth " << e.truth << ", " << e.runs.size() << " run(s) x " << e.strategies.size()
             << " strategies, surfacing every "
-            << (m.physicalUnits().time ? text::durationText(e.surfacingInterval * m.timeUnitSeconds) : reportNumber(e.surfacingInterval))
-            << " (" << e.surfacingIntervalSource
-            << ")\n";
+            << (m.physicalUnits().time ? text::durationText(e.surfacingInterval * m.timeUnitSeconds)
+                                       : reportNumber(e.surfacingInterval))
+            << " (" << e.surfacingIntervalSource << ")\n";
         for (const std::string &note : e.notes)
             out << "Execution note:     " << note << "\n";
         printExecutionTable(out, e, m);
@@ -362,4 +368,4 @@ void printReport(std::ostream &out, const MissionResult &r)
     if (!r.speedSweep.empty())
         out << "Speed sweep:\n" << speedSweepTable(r.speedSweep);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -13,5 +13,5 @@ inline bool geographic(const MissionResult &r)
 {
     return !r.waypoints.empty() && r.waypoints.front().geographic;
 }
-}  // namespace route_detail
-}  // namespace ompl_glider
+} // namespace route_detail
+} // namespace ompl_glider

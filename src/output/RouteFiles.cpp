@@ -29,7 +29,7 @@ bool hasProfile(const MissionResult &r, std::size_t i)
 {
     return r.diveProfiles && i > 0 && r.waypoints[i].profile >= 0;
 }
-}  // namespace
+} // namespace
 
 std::string stopName(const MissionResult &r, std::size_t i)
 {
@@ -42,7 +42,7 @@ std::string stopName(const MissionResult &r, std::size_t i)
         if (i == l.lastPoint)
             return l.to;
         if (i == l.firstPoint && l.index > 0)
-            return r.legs[l.index - 1].to;  // the end of the stay at the previous leg's via point
+            return r.legs[l.index - 1].to; // the end of the stay at the previous leg's via point
     }
     return "";
 }
@@ -59,10 +59,11 @@ std::string waypointsCsv(const MissionResult &r)
         const MissionWaypoint &w = r.waypoints[i];
         s += std::to_string(i) + "," + text::csvNumber(w.position.x) + "," + text::csvNumber(w.position.y) + ",";
         s += w.geographic ? text::csvNumber(w.lonLat.lon) + "," + text::csvNumber(w.lonLat.lat) : std::string(",");
-        s += "," + text::csvNumber(w.time) + "," + text::csvNumber(w.time * r.spec.timeUnitSeconds) + "," + w.iso + "," +
-             text::csvNumber(w.legTime) + ",";
+        s += "," + text::csvNumber(w.time) + "," + text::csvNumber(w.time * r.spec.timeUnitSeconds) + "," + w.iso +
+             "," + text::csvNumber(w.legTime) + ",";
         if (hasProfile(r, i))
-            s += std::to_string(w.profile) + "," + text::csvNumber(w.dive.climbTo) + "," + text::csvNumber(w.dive.diveTo);
+            s += std::to_string(w.profile) + "," + text::csvNumber(w.dive.climbTo) + "," +
+                 text::csvNumber(w.dive.diveTo);
         else
             s += ",,";
         // a heading route: the heading held from here and for how long (empty for straight legs)
@@ -95,7 +96,7 @@ std::vector<std::vector<LonLat>> splitAtAntimeridian(const std::vector<LonLat> &
     std::vector<std::vector<LonLat>> pieces;
     if (line.empty())
         return pieces;
-    auto cell = [](double u) { return std::floor((u - 180.0) / 360.0); };  // [180 + 360 k, 540 + 360 k)
+    auto cell = [](double u) { return std::floor((u - 180.0) / 360.0); }; // [180 + 360 k, 540 + 360 k)
     std::vector<LonLat> piece{{normalizeLongitude(line[0].lon), line[0].lat}};
     auto close = [&]() {
         std::vector<LonLat> kept;
@@ -207,7 +208,7 @@ RouteLine routeLine(const MissionResult &r, const MissionProblem *problem, bool 
     }
     return l;
 }
-}  // namespace
+} // namespace
 
 std::string routeGeoJson(const MissionResult &r, const MissionProblem *problem)
 {
@@ -219,7 +220,7 @@ std::string routeGeoJson(const MissionResult &r, const MissionProblem *problem)
     nlohmann::ordered_json geometry;
     const RouteLine route = routeLine(r, problem, geo);
     const std::vector<std::vector<LonLat>> parts =
-        geo ? splitAtAntimeridian(route.lonLat) : std::vector<std::vector<LonLat>>{};  // one piece unless it crosses
+        geo ? splitAtAntimeridian(route.lonLat) : std::vector<std::vector<LonLat>>{}; // one piece unless it crosses
     if (parts.size() > 1)
     {
         // across the antimeridian: a MultiLineString split there (RFC 7946 sec. 3.1.9)
@@ -256,11 +257,12 @@ std::string routeGeoJson(const MissionResult &r, const MissionProblem *problem)
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];
-        nlohmann::ordered_json props = {{"index", i},
-                                {"time", jnum(w.time)},
-                                {"time_s", jnum(w.time * r.spec.timeUnitSeconds)},
-                                {"time_iso", w.iso.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(w.iso)},
-                                {"leg_time", jnum(w.legTime)}};
+        nlohmann::ordered_json props = {
+            {"index", i},
+            {"time", jnum(w.time)},
+            {"time_s", jnum(w.time * r.spec.timeUnitSeconds)},
+            {"time_iso", w.iso.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(w.iso)},
+            {"leg_time", jnum(w.legTime)}};
         if (hasProfile(r, i))
         {
             props["profile"] = w.profile;
@@ -318,14 +320,16 @@ bool gregorianDates(const MissionResult &r, const std::string &iso)
     const Calendar c = r.spec.fileCalendar->calendar;
     return (c == Calendar::Standard || c == Calendar::ProlepticGregorian) && iso.compare(0, 4, "1583") >= 0;
 }
-}  // namespace
+} // namespace
 
 std::string routeKml(const MissionResult &r, const MissionProblem *problem)
 {
     if (!geographic(r))
         throw Error(r.spec.file + ": route.kml needs longitudes and latitudes (give a 'projection')");
     std::string k = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<kml xmlns=\"http://www.opengis.net/kml/2.2\">\n"
-                    "<Document>\n<name>" + text::xmlEscaped(r.spec.name) + "</name>\n"
+                    "<Document>\n<name>" +
+                    text::xmlEscaped(r.spec.name) +
+                    "</name>\n"
                     "<Style id=\"route\"><LineStyle><color>ff0000ff</color><width>3</width></LineStyle></Style>\n"
                     "<Style id=\"isochrone\"><LineStyle><color>ff00aaff</color><width>1</width></LineStyle></Style>\n";
     const RouteLine route = routeLine(r, problem, true);
@@ -333,10 +337,11 @@ std::string routeKml(const MissionResult &r, const MissionProblem *problem)
     const MissionSpec::PhysicalUnits units = r.spec.physicalUnits();
     const std::string about =
         "travel time " +
-        (units.time ? text::durationText(r.plan.travelTime * r.spec.timeUnitSeconds) : text::number(r.plan.travelTime)) +
+        (units.time ? text::durationText(r.plan.travelTime * r.spec.timeUnitSeconds)
+                    : text::number(r.plan.travelTime)) +
         ", path length " +
-        (units.length ? text::number(r.plan.pathLength * r.spec.metresPerUnit() / 1000.0, 6) + " km" :
-                        text::number(r.plan.pathLength));
+        (units.length ? text::number(r.plan.pathLength * r.spec.metresPerUnit() / 1000.0, 6) + " km"
+                      : text::number(r.plan.pathLength));
     const bool stamped = !r.waypoints.empty() && gregorianDates(r, r.waypoints.front().iso);
     k += "<Placemark>\n<name>route</name>\n<description>" + text::xmlEscaped(about) +
          (r.plan.headingRoute() ? " (the flown track of held headings)" : "") +
@@ -351,16 +356,18 @@ std::string routeKml(const MissionResult &r, const MissionProblem *problem)
         {
             const MissionWaypoint &w = r.waypoints[i];
             const std::string stop = stopName(r, i);
-            const std::string name = !stop.empty()                ? stop
-                                     : i == 0                     ? "start"
+            const std::string name = !stop.empty()                 ? stop
+                                     : i == 0                      ? "start"
                                      : i + 1 == r.waypoints.size() ? "goal"
-                                                                  : "WP " + std::to_string(i);
+                                                                   : "WP " + std::to_string(i);
             k += "<Placemark>\n<name>" + text::xmlEscaped(name) + "</name>\n";
             if (gregorianDates(r, w.iso))
                 k += "<TimeStamp><when>" + w.iso + "</when></TimeStamp>\n";
             k += "<description>" +
-                 text::xmlEscaped(w.iso.empty() ? "t = " + text::number(w.time, 10) : (i == 0 ? "departure " : "arrival ") + w.iso) +
-                 "</description>\n<Point><coordinates>" + kmlCoordinates({w.lonLat}) + "</coordinates></Point>\n"
+                 text::xmlEscaped(w.iso.empty() ? "t = " + text::number(w.time, 10)
+                                                : (i == 0 ? "departure " : "arrival ") + w.iso) +
+                 "</description>\n<Point><coordinates>" + kmlCoordinates({w.lonLat}) +
+                 "</coordinates></Point>\n"
                  "</Placemark>\n";
         }
     };
@@ -377,11 +384,14 @@ std::string routeKml(const MissionResult &r, const MissionProblem *problem)
         for (std::size_t i = l.firstPoint; i <= l.lastPoint && i < r.waypoints.size(); ++i)
             line.push_back(r.waypoints[i].lonLat);
         const double legTime = l.plan.travelTime;
-        k += "<Folder>\n<name>" + text::xmlEscaped("leg " + std::to_string(l.index + 1) + ": " + l.from + " to " + l.to) +
-             "</name>\n<Placemark>\n<name>" + text::xmlEscaped("leg " + std::to_string(l.index + 1)) + "</name>\n<description>" +
-             text::xmlEscaped("travel time " + (units.time ? text::durationText(legTime * r.spec.timeUnitSeconds)
-                                                     : text::number(legTime)) +
-                        (l.stay > 0.0 ? ", then a stay at " + l.to : std::string())) +
+        k += "<Folder>\n<name>" +
+             text::xmlEscaped("leg " + std::to_string(l.index + 1) + ": " + l.from + " to " + l.to) +
+             "</name>\n<Placemark>\n<name>" + text::xmlEscaped("leg " + std::to_string(l.index + 1)) +
+             "</name>\n<description>" +
+             text::xmlEscaped(
+                 "travel time " +
+                 (units.time ? text::durationText(legTime * r.spec.timeUnitSeconds) : text::number(legTime)) +
+                 (l.stay > 0.0 ? ", then a stay at " + l.to : std::string())) +
              "</description>\n<styleUrl>#route</styleUrl>\n" + kmlLines(splitAtAntimeridian(line)) + "\n</Placemark>\n";
         placemarks(l.firstPoint, l.lastPoint);
         k += "</Folder>\n";
@@ -432,11 +442,12 @@ std::string stintRow(const MissionResult &r, const MissionProblem &problem, std:
          text::csvNumber(dt > 0.0 ? std::hypot(dx, dy) / dt : 0.0) + "\n";
     return s;
 }
-}  // namespace
+} // namespace
 
 std::string stintsCsv(const MissionResult &r, const MissionProblem &problem)
 {
-    std::string s = "stint,time,time_s,time_iso,x,y,lon,lat,heading_deg,end_time,end_x,end_y,drift_x,drift_y,drift_speed\n";
+    std::string s =
+        "stint,time,time_s,time_iso,x,y,lon,lat,heading_deg,end_time,end_x,end_y,drift_x,drift_y,drift_speed\n";
     if (!r.plan.stints)
     {
         // a heading route: its segments are the stints, from the waypoint where each is begun to the next one
@@ -456,4 +467,4 @@ std::string stintsCsv(const MissionResult &r, const MissionProblem &problem)
         s += stintRow(r, problem, k, p.surfacings[k], p.bearings[k], p.surfacings[k + 1]);
     return s;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

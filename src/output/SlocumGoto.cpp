@@ -18,7 +18,7 @@ std::string formatDegMin(double degrees)
     // Whole units of 1e-4 minutes; the sign goes on the whole number.
     const long long units = std::llround(std::abs(degrees) * 60.0 * 1e4);
     const long long deg = units / 600000;
-    const long long rem = units % 600000;  // minutes * 1e4, in [0, 600000)
+    const long long rem = units % 600000; // minutes * 1e4, in [0, 600000)
     const bool negative = degrees < 0.0 && units != 0;
     char buf[64];
     std::snprintf(buf, sizeof buf, "%s%lld%02lld.%04lld", negative ? "-" : "", deg, rem / 10000, rem % 10000);
@@ -41,7 +41,7 @@ std::string formatGotoList(const GotoList &list)
     s << "# " << gotoFileName(list.number) << " written by ompl_glider";
     if (!list.comment.empty())
     {
-        std::string comment = text::oneLine(list.comment);  // on its line, and no tag of the file's own in it
+        std::string comment = text::oneLine(list.comment); // on its line, and no tag of the file's own in it
         for (char &c : comment)
             c = c == '<' ? '(' : c == '>' ? ')' : c;
         s << ": " << comment;
@@ -81,14 +81,18 @@ GotoList parseGotoList(const std::string &text, const std::string &source)
     GotoList list;
     std::istringstream in(text);
     std::string line;
-    enum class Block { None, Args, Waypoints, Done } block = Block::None;
+    enum class Block
+    {
+        None,
+        Args,
+        Waypoints,
+        Done
+    } block = Block::None;
     int lineNo = 0;
     long declared = -1;
     bool sawBehavior = false;
-    std::string pending;  // a comment line just before a waypoint: its note
-    auto fail = [&](const std::string &what) {
-        throw Error(source + ":" + std::to_string(lineNo) + ": " + what);
-    };
+    std::string pending; // a comment line just before a waypoint: its note
+    auto fail = [&](const std::string &what) { throw Error(source + ":" + std::to_string(lineNo) + ": " + what); };
     while (std::getline(in, line))
     {
         ++lineNo;
@@ -209,4 +213,4 @@ GotoList readGotoFile(const std::string &path)
         list.number = nn;
     return list;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -67,7 +67,7 @@ json learnedJson(const ObservationReport &o)
             {"members", members}};
 }
 #endif
-}  // namespace
+} // namespace
 
 /// The current's ensemble (null without one): each member's parameters (an analytic flow's, its kind's defaults
 /// filled in: what the member flew) or files, and for members drawn from one source (CurrentSpec::drawn) the seed
@@ -103,12 +103,11 @@ json currentEnsembleJson(const CurrentSpec &c)
 void forecastJson(const MissionProblem &problem, json &j)
 {
     const MissionSpec &m = problem.getSpec();
-    j["current_source"] = m.current.isForecast() && !m.current.file.empty()
-                              ? json(forecastSourceKind(m.current.file))
-                              : json(nullptr);
+    j["current_source"] =
+        m.current.isForecast() && !m.current.file.empty() ? json(forecastSourceKind(m.current.file)) : json(nullptr);
     json forecastFiles = json::array();
     for (const std::string &f : problem.forecastFiles())
-        forecastFiles.push_back(withoutCredentials(f));  // a URL's user:password never reaches an output
+        forecastFiles.push_back(withoutCredentials(f)); // a URL's user:password never reaches an output
     j["forecast_files"] = forecastFiles;
     j["forecast_sources"] = forecastSourcesJson(problem);
 }
@@ -171,5 +170,5 @@ json observationsJson(const MissionProblem &problem)
     return nullptr;
 #endif
 }
-}  // namespace summary_detail
-}  // namespace ompl_glider
+} // namespace summary_detail
+} // namespace ompl_glider

@@ -34,8 +34,9 @@ bool holdsNonFiniteNumber(const std::string &s)
 /// time), naming the field; a missing value is written as null on purpose (jnum()).
 void checkFinite(const json &j, const std::string &field)
 {
-    static const std::set<std::string> generated = {"reason", "grounded_why", "switch_reason", "note", "timing",
-                                                     "switched_from", "iso", "arrival_iso", "begin_iso", "end_iso"};
+    static const std::set<std::string> generated = {"reason",    "grounded_why",  "switch_reason", "note",
+                                                    "timing",    "switched_from", "iso",           "arrival_iso",
+                                                    "begin_iso", "end_iso"};
     auto fail = [&field](const std::string &what) {
         throw Error("summary.json: field '" + field + "' holds a non-finite number (" + what +
                     "); nothing was written");
@@ -70,7 +71,7 @@ json position(const MissionProblem &problem, Point2 p)
 
 json spreadJson(const MeasureSpread &s)
 {
-    return {{"count", s.count},  {"min", jnum(s.min)}, {"q1", jnum(s.q1)},        {"median", jnum(s.median)},
+    return {{"count", s.count}, {"min", jnum(s.min)}, {"q1", jnum(s.q1)},    {"median", jnum(s.median)},
             {"q3", jnum(s.q3)}, {"max", jnum(s.max)}, {"mean", jnum(s.mean)}};
 }
 
@@ -97,19 +98,19 @@ json executionJson(const ExecutionResult &e, const MissionProblem &problem)
                              {"to", e.differenceEnd}};
     j["threads"] = e.threads;
     j["wall_time_s"] = e.wallSeconds;
-    if (e.oracle)  // each pair planned on the truth and flown in it: the yardstick of `over_oracle`
+    if (e.oracle) // each pair planned on the truth and flown in it: the yardstick of `over_oracle`
     {
         std::size_t reached = 0;
         for (const ExecutionRun &run : e.runs)
             reached += std::isfinite(run.oracleArrival) ? 1 : 0;
         j["oracle"] = {{"arrival_time", jnum(own.oracleArrival)},
-                       {"arrival_iso", std::isfinite(own.oracleArrival) ? jtext(problem.isoTime(own.oracleArrival))
-                                                                        : json(nullptr)},
+                       {"arrival_iso",
+                        std::isfinite(own.oracleArrival) ? jtext(problem.isoTime(own.oracleArrival)) : json(nullptr)},
                        {"runs_reached", reached},
                        {"wall_time_s", e.oracleSeconds}};
     }
     else
-        j["oracle"] = nullptr;  // the truth is the forecast: nothing to measure against
+        j["oracle"] = nullptr; // the truth is the forecast: nothing to measure against
     j["planned"] = own.planned;
     j["reason"] = jtext(own.reason);
     for (std::size_t k = 0; k < e.strategies.size(); ++k)
@@ -130,7 +131,7 @@ json executionJson(const ExecutionResult &e, const MissionProblem &problem)
             o["surfacings"] = f.fixes.empty() ? 0 : f.fixes.size() - 1;
             if (e.strategies[k] == ControlStrategy::Replan || e.strategies[k] == ControlStrategy::ReplanObserved)
                 o["replans"] = f.replans;
-            if (!e.stops.empty())  // a mission of several legs: its stations reached (in their windows)
+            if (!e.stops.empty()) // a mission of several legs: its stations reached (in their windows)
             {
                 o["stations_reached"] = f.stationsReached;
                 o["windows_missed"] = f.windowsMissed;
@@ -371,7 +372,7 @@ void outcomeJson(const PlannedPath &p, json &j)
     j["switch_reason"] = jtext(p.switchReason);
     j["switch_cause"] = jtext(causeName(p.switchCause));
 }
-}  // namespace
+} // namespace
 
 std::string summaryJson(const MissionResult &r, const MissionProblem &problem, const std::vector<std::string> &files)
 {
@@ -423,7 +424,8 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                                 {"total", p.totalCostFunctionCalls()}};
     j["current_model_calls"] = p.currentModelCalls;
     j["expanded_vertices"] = p.expandedVertices;
-    j["wall_time_s"] = {{"planning", p.planningSeconds}, {"postprocess", p.postprocessSeconds}, {"total", r.wallSeconds}};
+    j["wall_time_s"] = {
+        {"planning", p.planningSeconds}, {"postprocess", p.postprocessSeconds}, {"total", r.wallSeconds}};
     j["path_checked"] = p.pathChecked;
     // heading routes: what the glider holds (the switch from a planner without a path: outcomeJson())
     j["route_model"] = routeModel(r);
@@ -434,14 +436,15 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     if (p.reflown)
         j["reflight"] = {{"method", "Dormand-Prince 5(4), rtol 1e-10"},
                          {"travel_time", jnum(p.reflownTravelTime)},
-                         {"relative_difference", p.reflownTravelTime > 0.0 ?
-                              jnum((p.travelTime - p.reflownTravelTime) / p.reflownTravelTime) : json(nullptr)},
+                         {"relative_difference", p.reflownTravelTime > 0.0
+                                                     ? jnum((p.travelTime - p.reflownTravelTime) / p.reflownTravelTime)
+                                                     : json(nullptr)},
                          {"end_distance_to_goal", jnum(p.reflownEndDistance)},
                          {"planner_travel_time", jnum(p.plannerTravelTime)},
                          {"note", jtext(p.reflightNote)},
                          {"fallback", p.reflightFallback == ReflightFallback::EarlierStage ? json("earlier_stage")
                                       : p.reflightFallback == ReflightFallback::Reaimed    ? json("reaimed")
-                                                                                            : json(nullptr)}};
+                                                                                           : json(nullptr)}};
     else
         j["reflight"] = nullptr;
     // constant-bearing stints ([IsernObstacles]): null without a stints section
@@ -503,14 +506,15 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                              {"objective_value", jnum(c.objectiveValue)},
                              {"member_travel_times", times(c.memberTravelTimes)}});
         const MeasureSpread spread = measureSpread(e.memberTravelTimes);
-        j["ensemble"] = {{"members", members},
-                         {"objective", ensembleObjectiveName(e.objective)},
-                         {"quantile", e.objective == EnsembleObjective::Quantile ? json(e.quantile) : json(nullptr)},
-                         {"chosen", e.chosen},
-                         {"objective_value", jnum(e.objectiveValue)},
-                         {"member_travel_times", times(e.memberTravelTimes)},
-                         {"spread", {{"min", jnum(spread.min)}, {"mean", jnum(spread.mean)}, {"max", jnum(spread.max)}}},
-                         {"candidates", cands}};
+        j["ensemble"] = {
+            {"members", members},
+            {"objective", ensembleObjectiveName(e.objective)},
+            {"quantile", e.objective == EnsembleObjective::Quantile ? json(e.quantile) : json(nullptr)},
+            {"chosen", e.chosen},
+            {"objective_value", jnum(e.objectiveValue)},
+            {"member_travel_times", times(e.memberTravelTimes)},
+            {"spread", {{"min", jnum(spread.min)}, {"mean", jnum(spread.mean)}, {"max", jnum(spread.max)}}},
+            {"candidates", cands}};
     }
     if (r.execution)
         j["execution"] = executionJson(*r.execution, problem);
@@ -520,4 +524,4 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     checkFinite(j, "");
     return output_json::utf8Dump(j, 2) + "\n";
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

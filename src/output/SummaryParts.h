@@ -20,5 +20,5 @@ json currentEnsembleJson(const CurrentSpec &c);
 void forecastJson(const MissionProblem &problem, json &j);
 /// The glider's observations: what was read, rejected and used, and the correction's size (null without them).
 json observationsJson(const MissionProblem &problem);
-}  // namespace summary_detail
-}  // namespace ompl_glider
+} // namespace summary_detail
+} // namespace ompl_glider

@@ -51,7 +51,7 @@ bool closeOnGoal(const IsochroneSetup &setup, const IsochroneSearch &search, Poi
                followed.ok ? followed.route.duration() : kInf);
     return true;
 }
-}  // namespace
+} // namespace
 
 IsochronePlanner::IsochronePlanner(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx)
     : ompl::base::Planner(si, "Isochrone"), ctx_(std::move(ctx))
@@ -63,8 +63,7 @@ IsochronePlanner::IsochronePlanner(const ompl::base::SpaceInformationPtr &si, st
     specs_.multithreaded = true;
     declareParam<double>("resolution", this, &IsochronePlanner::setResolution, &IsochronePlanner::getResolution,
                          "0:0.001:1000000");
-    declareParam<unsigned>("headings", this, &IsochronePlanner::setHeadings, &IsochronePlanner::getHeadings,
-                           "8:1:720");
+    declareParam<unsigned>("headings", this, &IsochronePlanner::setHeadings, &IsochronePlanner::getHeadings, "8:1:720");
     declareParam<double>("time_step", this, &IsochronePlanner::setTimeStep, &IsochronePlanner::getTimeStep,
                          "0:0.001:1000000");
     declareParam<unsigned>("segments", this, &IsochronePlanner::setSegments, &IsochronePlanner::getSegments,
@@ -137,7 +136,8 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
     const auto *goalRegion = pdef_->getGoal()->as<ompl::base::GoalRegion>();
     const Point2 start{sg->sx, sg->sy}, goal = sg->goal;
     const double t0 = sg->t0;
-    const double tolerance = std::max(goalRegion->getThreshold(), 1e-12 * std::hypot(goal.x - start.x, goal.y - start.y));
+    const double tolerance =
+        std::max(goalRegion->getThreshold(), 1e-12 * std::hypot(goal.x - start.x, goal.y - start.y));
 
     const IsochroneSetup setup = makeIsochroneSetup(*ctx_, goal, tolerance, resolution_, timeStep_, headings_);
     ThreadPool pool(threads_);
@@ -200,4 +200,4 @@ ompl::base::PlannerStatus IsochronePlanner::solve(const ompl::base::PlannerTermi
     pdef_->addSolutionPath(sol);
     return flight.reached ? ompl::base::PlannerStatus::EXACT_SOLUTION : ompl::base::PlannerStatus::APPROXIMATE_SOLUTION;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -22,7 +22,7 @@ struct Flight
     double x, y, t;
     long parent;
     double bearing;
-    double centreDistance;  ///< to the cell's centre (the kept point of a cell is the one nearest it)
+    double centreDistance; ///< to the cell's centre (the kept point of a cell is the one nearest it)
 };
 
 /// The square grid of cells over the region, and which cells a front has reached.
@@ -30,21 +30,18 @@ struct CellGrid
 {
     double x0, y0, h;
     std::size_t nx, ny;
-    std::vector<long> reached;   ///< the step at which a front last held the cell (-1: never)
-    std::vector<long> occupied;  ///< the step whose new front holds the cell (-1: none)
+    std::vector<long> reached;  ///< the step at which a front last held the cell (-1: never)
+    std::vector<long> occupied; ///< the step whose new front holds the cell (-1: none)
 
     CellGrid(const Region &r, double cell)
-        : x0(r.xMin), y0(r.yMin), h(cell),
-          nx(static_cast<std::size_t>(std::ceil((r.xMax - r.xMin) / cell)) + 1),
-          ny(static_cast<std::size_t>(std::ceil((r.yMax - r.yMin) / cell)) + 1), reached(nx * ny, -1), occupied(nx * ny, -1)
+        : x0(r.xMin), y0(r.yMin), h(cell), nx(static_cast<std::size_t>(std::ceil((r.xMax - r.xMin) / cell)) + 1),
+          ny(static_cast<std::size_t>(std::ceil((r.yMax - r.yMin) / cell)) + 1), reached(nx * ny, -1),
+          occupied(nx * ny, -1)
     {
     }
     /// A cell a new point may take at @p step: never reached, or reached long enough ago that the reachable set,
     /// which cannot hold still where the current is stronger than the vehicle, may have left it and come back.
-    bool open(std::size_t c, long step) const
-    {
-        return reached[c] < 0 || step - reached[c] > kReopenSteps;
-    }
+    bool open(std::size_t c, long step) const { return reached[c] < 0 || step - reached[c] > kReopenSteps; }
     static constexpr long kReopenSteps = 8;
     std::size_t cellOf(double x, double y) const
     {
@@ -54,7 +51,8 @@ struct CellGrid
     }
     double centreDistance(std::size_t c, double x, double y) const
     {
-        const double cx = x0 + (static_cast<double>(c % nx) + 0.5) * h, cy = y0 + (static_cast<double>(c / nx) + 0.5) * h;
+        const double cx = x0 + (static_cast<double>(c % nx) + 0.5) * h,
+                     cy = y0 + (static_cast<double>(c / nx) + 0.5) * h;
         return std::hypot(x - cx, y - cy);
     }
 };
@@ -70,9 +68,10 @@ std::vector<long> keepOnePerCell(std::vector<std::vector<Flight>> &flown, CellGr
     for (auto &f : flown)
         all.insert(all.end(), f.begin(), f.end());
     std::sort(all.begin(), all.end(), [](const Flight &a, const Flight &b) {
-        return a.cell != b.cell ? a.cell < b.cell :
-               a.centreDistance != b.centreDistance ? a.centreDistance < b.centreDistance :
-               a.parent != b.parent ? a.parent < b.parent : a.bearing < b.bearing;
+        return a.cell != b.cell                       ? a.cell < b.cell
+               : a.centreDistance != b.centreDistance ? a.centreDistance < b.centreDistance
+               : a.parent != b.parent                 ? a.parent < b.parent
+                                                      : a.bearing < b.bearing;
     });
     std::vector<const Flight *> kept;
     for (const Flight &f : all)
@@ -102,7 +101,7 @@ std::vector<long> keepOnePerCell(std::vector<std::vector<Flight>> &flown, CellGr
     return front;
 }
 
-}  // namespace
+} // namespace
 
 IsochroneSetup makeIsochroneSetup(const GliderContext &ctx, Point2 goal, double tolerance, double cell, double dt,
                                   unsigned headings)
@@ -185,11 +184,10 @@ IsochroneSearch searchIsochrones(const IsochroneSetup &S, TimedPoint from, Threa
     }
     out.timedOut = ptc();
     out.why = front.empty() ? "the isochrone front died out before the goal (walled in, or every heading leaves the "
-                              "region or the water)" :
-                              "the front did not reach the goal before the end of the time window";
+                              "region or the water)"
+                            : "the front did not reach the goal before the end of the time window";
     return out;
 }
-
 
 std::vector<TimedPoint> searchChain(const IsochroneSearch &search, Point2 goal, std::vector<double> &bearings)
 {
@@ -206,7 +204,6 @@ std::vector<TimedPoint> searchChain(const IsochroneSearch &search, Point2 goal, 
     bearings.assign(into.rbegin(), into.rend());
     return std::vector<TimedPoint>(back.rbegin(), back.rend());
 }
-
 
 HeadingRoute searchRoute(const IsochroneSearch &search)
 {
@@ -260,7 +257,8 @@ RefinedHeadings followWithRestarts(const std::vector<TimedPoint> &path, const st
         followed = trackPathWithHeadings(searchChain(next, goal, into), goal, ctx, settings, 0.0, &into);
         if (followed.ok)
         {
-            joined.segments.insert(joined.segments.end(), followed.route.segments.begin(), followed.route.segments.end());
+            joined.segments.insert(joined.segments.end(), followed.route.segments.begin(),
+                                   followed.route.segments.end());
             followed.route = joined;
             followed.flight = verifyHeadingRoute(joined, ctx, goal, settings, &followed.why);
             followed.ok = followed.flight.reached;
@@ -272,4 +270,4 @@ RefinedHeadings followWithRestarts(const std::vector<TimedPoint> &path, const st
         followed.route = HeadingRoute();
     return followed;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

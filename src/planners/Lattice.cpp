@@ -20,13 +20,12 @@ std::string formatPoint(double x, double y)
 }
 
 Lattice::Lattice(double xMin, double xMax, double yMin, double yMax, double gridSize, unsigned sectors)
-  : xMin_(xMin), xMax_(xMax), yMin_(yMin), yMax_(yMax), g_(gridSize), sectors_(sectors)
+    : xMin_(xMin), xMax_(xMax), yMin_(yMin), yMax_(yMax), g_(gridSize), sectors_(sectors)
 {
     if (!std::isfinite(xMin) || !std::isfinite(xMax) || !std::isfinite(yMin) || !std::isfinite(yMax) ||
         !(xMax > xMin) || !(yMax > yMin))
-        throw Error("Lattice: bounds must be finite with xMin < xMax and yMin < yMax (got x [" +
-                    std::to_string(xMin) + ", " + std::to_string(xMax) + "], y [" + std::to_string(yMin) + ", " +
-                    std::to_string(yMax) + "])");
+        throw Error("Lattice: bounds must be finite with xMin < xMax and yMin < yMax (got x [" + std::to_string(xMin) +
+                    ", " + std::to_string(xMax) + "], y [" + std::to_string(yMin) + ", " + std::to_string(yMax) + "])");
     if (!(gridSize > 0.0) || !std::isfinite(gridSize))
         throw Error("Lattice: grid_size must be a finite number > 0 (got " + std::to_string(gridSize) + ")");
     if (sectors < kMinSectors || sectors > kMaxSectors)
@@ -127,4 +126,4 @@ double Lattice::y(VertexId v) const
         return goalY_;
     return yMin_ + g_ * static_cast<double>(row(v));
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

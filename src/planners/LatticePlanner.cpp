@@ -28,13 +28,13 @@ void LatticePlanner::prepare(const PipelineSetup &setup)
 
 namespace
 {
-constexpr double kMinGridSize = 1e-9;  ///< the lattice spacing's range, in planning units
+constexpr double kMinGridSize = 1e-9; ///< the lattice spacing's range, in planning units
 constexpr double kMaxGridSize = 1e12;
-}  // namespace
+} // namespace
 
 LatticePlanner::LatticePlanner(const ompl::base::SpaceInformationPtr &si, const std::string &name,
                                std::string className)
-  : ompl::base::Planner(si, name), className_(std::move(className))
+    : ompl::base::Planner(si, name), className_(std::move(className))
 {
     // one statement of the range, declared and checked (planning units: dimensionless, or metres on a forecast)
     declareParam<double>("grid_size", this, &LatticePlanner::setGridSize, &LatticePlanner::getGridSize,
@@ -63,4 +63,4 @@ void LatticePlanner::setSectors(unsigned n)
     if (changed)
         latticeChanged();
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

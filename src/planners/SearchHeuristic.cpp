@@ -36,14 +36,8 @@ VelocityBox LatticeHeuristic::box(long I, long J, double ta, double tb, const Re
 LatticeHeuristic::LatticeHeuristic(const Lattice &lattice, const CurrentField &field, double speed, double depth,
                                    double tBegin, double tEnd, unsigned cellFactor, CellBoxCache *cache,
                                    std::function<bool()> stop)
-  : lat_(lattice)
-  , field_(field)
-  , depth_(depth)
-  , V_(speed)
-  , tBegin_(tBegin)
-  , tEnd_(tEnd)
-  , n_(static_cast<int>(lattice.sectors()))
-  , stop_(std::move(stop))
+    : lat_(lattice), field_(field), depth_(depth), V_(speed), tBegin_(tBegin), tEnd_(tEnd),
+      n_(static_cast<int>(lattice.sectors())), stop_(std::move(stop))
 {
     if (!(speed > 0.0) || !std::isfinite(speed))
         throw Error("LatticeHeuristic: the vehicle speed must be finite and > 0");
@@ -115,7 +109,7 @@ void LatticeHeuristic::buildTable()
     auto cellRange = [&](long C, int d, long nv, long ncells, long &lo, long &hi) {
         if (d == 0)
         {
-            lo = hi = C;  // the edge runs along a vertex line inside the closed cell
+            lo = hi = C; // the edge runs along a vertex line inside the closed cell
             return;
         }
         // lattice cells (spanning vertex lines c .. c + 1) crossed by edges from vertex lines C f .. C f + f - 1
@@ -139,8 +133,7 @@ void LatticeHeuristic::buildTable()
                     for (long ii = i0; ii <= i1; ++ii)
                         if (!empty_[static_cast<std::size_t>(ii + jj * NX_)])
                             s = std::max(s, speedBound(boxes_[static_cast<std::size_t>(ii + jj * NX_)], ex, ey));
-                invSpeed_[static_cast<std::size_t>(I + J * NX_) * K + k] =
-                    s > 0.0 ? 1.0 / s : kInf;
+                invSpeed_[static_cast<std::size_t>(I + J * NX_) * K + k] = s > 0.0 ? 1.0 / s : kInf;
             }
 }
 
@@ -152,7 +145,7 @@ double LatticeHeuristic::speedBound(const VelocityBox &b, double ex, double ey) 
     const double cnHi = std::max(-ey * b.uMin, -ey * b.uMax) + std::max(ex * b.vMin, ex * b.vMax);
     const double cnMin = (cnLo <= 0.0 && cnHi >= 0.0) ? 0.0 : std::min(std::abs(cnLo), std::abs(cnHi));
     if (cnMin >= V_)
-        return 0.0;  // |c.n| >= V everywhere: the leg cannot be held ([EichhornRAS] Eq. 5)
+        return 0.0; // |c.n| >= V everywhere: the leg cannot be held ([EichhornRAS] Eq. 5)
     const double s = std::min(ceMax + std::sqrt(V_ * V_ - cnMin * cnMin), vCap_);
     return s > 0.0 ? s * (1.0 + 1e-12) : 0.0;
 }
@@ -277,11 +270,11 @@ void LatticeHeuristic::refineWindows(unsigned rounds, const std::function<bool(L
         for (Lattice::VertexId v = 0; v < lat_.numVertices(); ++v)
         {
             if (!(a[v] < kInf) || !(h[v] < kInf))
-                continue;  // on no path from the start to the goal
+                continue; // on no path from the start to the goal
             if ((v == lat_.startExtra() && v != lat_.start()) || (v == lat_.goalExtra() && v != lat_.goal()))
-                continue;  // unused extra vertex
+                continue; // unused extra vertex
             if (tBegin_ + a[v] + h[v] > tEnd_)
-                continue;  // no path through v arrives by the deadline
+                continue; // no path through v arrives by the deadline
             const std::size_t c = static_cast<std::size_t>(cellOfVertex(v));
             minA[c] = std::min(minA[c], a[v]);
             minH[c] = std::min(minH[c], h[v]);
@@ -352,7 +345,7 @@ double LatticeHeuristic::operator()(Lattice::VertexId v)
     for (unsigned pops = 1; !queue_.empty(); ++pops)
     {
         if (pops % 4096 == 0 && stopped())
-            return 0.0;  // a lower bound; the search that asked is stopping
+            return 0.0; // a lower bound; the search that asked is stopping
         const QEntry e = queue_.top();
         queue_.pop();
         Label &lab = labels_.ref(e.v);
@@ -373,7 +366,7 @@ double LatticeHeuristic::operator()(Lattice::VertexId v)
             lu.d = nd;
             if (first && inWater_ && !inWater_(u))
             {
-                lu.d = kInf;  // land: never enters the search
+                lu.d = kInf; // land: never enters the search
                 lu.settled = true;
                 return;
             }
@@ -384,4 +377,4 @@ double LatticeHeuristic::operator()(Lattice::VertexId v)
     }
     return kInf;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

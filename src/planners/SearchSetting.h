@@ -17,16 +17,8 @@ struct SearchSetting
     /// (goalX, goalY).
     SearchSetting(const GliderContext &context, double startX, double startY, double departure, double goalX,
                   double goalY)
-      : ctx(context)
-      , field(*ctx.field)
-      , travel(*ctx.travel)
-      , env(ctx.environment.get())
-      , z(travel.params().depth)
-      , sx(startX)
-      , sy(startY)
-      , t0(departure)
-      , gx(goalX)
-      , gy(goalY)
+        : ctx(context), field(*ctx.field), travel(*ctx.travel), env(ctx.environment.get()), z(travel.params().depth),
+          sx(startX), sy(startY), t0(departure), gx(goalX), gy(goalY)
     {
     }
 
@@ -37,4 +29,4 @@ struct SearchSetting
     const double z;
     const double sx, sy, t0, gx, gy;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

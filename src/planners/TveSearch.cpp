@@ -31,11 +31,10 @@ Lattice latticeOf(const GliderContext &ctx, double gridSize, unsigned sectors)
 {
     return Lattice(ctx.region.xMin, ctx.region.xMax, ctx.region.yMin, ctx.region.yMax, gridSize, sectors);
 }
-}  // namespace
+} // namespace
 
 TveSearch::TveSearch(std::shared_ptr<const GliderContext> ctx, double gridSize, unsigned sectors)
-  : ctx_(std::move(ctx))
-  , lattice_(latticeOf(checkedContext(ctx_), gridSize, sectors))
+    : ctx_(std::move(ctx)), lattice_(latticeOf(checkedContext(ctx_), gridSize, sectors))
 {
 }
 
@@ -96,10 +95,9 @@ std::optional<double> TveSearch::calcOptimalCourse(double px, double py, double 
 TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
                          const std::function<bool()> &terminate)
 {
-    const bool coarseToFine =
-        std::isnan(options.deadline) &&
-        (options.coarseFactor > 1 ||
-         (options.coarseFactor == 0 && options.heuristic && lattice_.numGridVertices() > (std::size_t{1} << 19)));
+    const bool coarseToFine = std::isnan(options.deadline) &&
+                              (options.coarseFactor > 1 || (options.coarseFactor == 0 && options.heuristic &&
+                                                            lattice_.numGridVertices() > (std::size_t{1} << 19)));
     auto search = [&] {
         return coarseToFine ? runCoarseToFine(sx, sy, t0, gx, gy, options, terminate)
                             : runPhases(sx, sy, t0, gx, gy, options, terminate);
@@ -112,10 +110,7 @@ TveResult TveSearch::run(double sx, double sy, double t0, double gx, double gy, 
     struct Scope
     {
         TveSearch &s;
-        ~Scope()
-        {
-            s.ignoreGoalWindow_ = false;
-        }
+        ~Scope() { s.ignoreGoalWindow_ = false; }
     } scope{*this};
     ignoreGoalWindow_ = true;
     TveResult f = search();
@@ -156,10 +151,10 @@ void copyCounts(TveResult &into, const TveResult &r)
 /// blocks, from the blocks a coarse path crosses.
 struct BlockRings
 {
-    long f{1};              ///< cells per block side
-    long nx{0}, ny{0};      ///< blocks per row and per column
-    std::vector<int> ring;  ///< distance per block (row-major)
-    int maxRing{0};         ///< the largest distance
+    long f{1};             ///< cells per block side
+    long nx{0}, ny{0};     ///< blocks per row and per column
+    std::vector<int> ring; ///< distance per block (row-major)
+    int maxRing{0};        ///< the largest distance
 };
 
 /// The blocks of @p lattice and their distance from @p path (multi-source breadth-first search with 8 neighbours;
@@ -229,10 +224,10 @@ bool entersRing(const Lattice &lattice, const BlockRings &br, int w, const std::
     }
     return false;
 }
-}  // namespace
+} // namespace
 
-TveResult TveSearch::runCoarseToFine(double sx, double sy, double t0, double gx, double gy,
-                                     const TveOptions &options, const std::function<bool()> &terminate)
+TveResult TveSearch::runCoarseToFine(double sx, double sy, double t0, double gx, double gy, const TveOptions &options,
+                                     const std::function<bool()> &terminate)
 {
     const long f = options.coarseFactor > 1 ? static_cast<long>(options.coarseFactor) : 8;
     TveOptions single = options;
@@ -321,14 +316,14 @@ TveResult TveSearch::runPhases(double sx, double sy, double t0, double gx, doubl
         }
     } scope{*this, edgeCache_ == nullptr};
     if (scope.ownsCache)
-        edgeCache_ = &cache;  // (coarse-to-fine shares its own between the corridor rounds)
+        edgeCache_ = &cache; // (coarse-to-fine shares its own between the corridor rounds)
     const auto add = addCounts;
     TveOptions greedy = options;
     greedy.greedyDeadline = false;
     greedy.zermelo = true;
     greedy.certifyTolerance = -1.0;
     greedy.heuristicWeight = options.greedyWeight;
-    greedy.reopen = false;  // any arrival serves as the deadline; reopening could cost far more than it gains
+    greedy.reopen = false; // any arrival serves as the deadline; reopening could cost far more than it gains
     const TveResult first = runCore(sx, sy, t0, gx, gy, greedy, terminate);
     TveOptions second = options;
     second.greedyDeadline = false;
@@ -341,7 +336,7 @@ TveResult TveSearch::runPhases(double sx, double sy, double t0, double gx, doubl
         return full;
     }
     if (first.outcome != TveOutcome::Exact)
-        return first;  // invalid start/goal, or terminated
+        return first; // invalid start/goal, or terminated
     second.deadline = t0 + first.travelTime * (1.0 + 1e-12);
     TveResult r = runCore(sx, sy, t0, gx, gy, second, terminate);
     add(r, first);
@@ -359,13 +354,13 @@ std::vector<TimedPoint> TveSearch::pathTo(Lattice::VertexId v) const
 {
     std::vector<TimedPoint> out;
     if (v == lattice_.goal() && goalHoldUntil_ > dist(v))
-        out.push_back({lattice_.x(v), lattice_.y(v), goalHoldUntil_});  // hold at the goal (goal window)
+        out.push_back({lattice_.x(v), lattice_.y(v), goalHoldUntil_}); // hold at the goal (goal window)
     for (Lattice::VertexId w = v; w != Lattice::kNone; w = parent(w))
     {
         out.push_back({lattice_.x(w), lattice_.y(w), dist(w)});
         const Label &lw = labels_.get(w);
         if (lw.pi != Lattice::kNone && lw.dep > dist(lw.pi))
-            out.push_back({lattice_.x(lw.pi), lattice_.y(lw.pi), lw.dep});  // a hold
+            out.push_back({lattice_.x(lw.pi), lattice_.y(lw.pi), lw.dep}); // a hold
         if (out.size() > 2 * reached_.size() + 2)
             throw Error("TveSearch: predecessor cycle (internal error)");
     }
@@ -381,4 +376,4 @@ std::vector<TveTreeVertex> TveSearch::tree() const
         out.push_back({v, parent(v), lattice_.x(v), lattice_.y(v), dist(v)});
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -61,10 +61,7 @@ public:
                                             unsigned steps) const;
 
     /// @brief The lattice of the last run (start/goal joined).
-    const Lattice &lattice() const
-    {
-        return lattice_;
-    }
+    const Lattice &lattice() const { return lattice_; }
     /// @brief Vertices reached by the last run with their predecessor and arrival time.
     std::vector<TveTreeVertex> tree() const;
 
@@ -85,10 +82,7 @@ private:
     {
         Lattice::VertexId u, v;
         double t;
-        bool operator==(const EdgeKey &o) const
-        {
-            return u == o.u && v == o.v && t == o.t;
-        }
+        bool operator==(const EdgeKey &o) const { return u == o.u && v == o.v && t == o.t; }
     };
     struct EdgeKeyHash
     {
@@ -115,24 +109,18 @@ private:
         /// Departure from pi[v] when the glider held position there first (a waiting edge, TveOptions::waiting);
         /// -inf when it left on arrival
         double dep{-std::numeric_limits<double>::infinity()};
-        bool expanded{false};  ///< expanded once (TveOptions::reopen off)
+        bool expanded{false}; ///< expanded once (TveOptions::reopen off)
     };
-    bool ignoreGoalWindow_{false};  ///< the fallback run of run() (TveOptions::goalWindowFallback)
+    bool ignoreGoalWindow_{false}; ///< the fallback run of run() (TveOptions::goalWindowFallback)
     /// Hold at the goal after the arrival d[goal] up to this time (the goal window opens then); -inf: none
     double goalHoldUntil_{-std::numeric_limits<double>::infinity()};
-    VertexPages<Label> labels_;  // pages of vertices: memory grows with the area the search visits
-    double dist(Lattice::VertexId v) const
-    {
-        return labels_.get(v).d;
-    }
-    Lattice::VertexId parent(Lattice::VertexId v) const
-    {
-        return labels_.get(v).pi;
-    }
+    VertexPages<Label> labels_; // pages of vertices: memory grows with the area the search visits
+    double dist(Lattice::VertexId v) const { return labels_.get(v).d; }
+    Lattice::VertexId parent(Lattice::VertexId v) const { return labels_.get(v).pi; }
     std::vector<Lattice::VertexId> reached_;
-    std::unique_ptr<LatticeHeuristic> bounds_;  ///< kept while the time window and cell factor stay the same
-    bool boundsRefined_{false};                 ///< bounds_ was narrowed to one run's corridor
-    std::shared_ptr<CellBoxCache> boxCache_;    ///< velocity boxes per cell and unit time slice (CellBoxCache::shared)
+    std::unique_ptr<LatticeHeuristic> bounds_; ///< kept while the time window and cell factor stay the same
+    bool boundsRefined_{false};                ///< bounds_ was narrowed to one run's corridor
+    std::shared_ptr<CellBoxCache> boxCache_;   ///< velocity boxes per cell and unit time slice (CellBoxCache::shared)
     /// Coarse-to-fine (TveOptions::coarseFactor): the coarse search, and the corridor of the fine one (per block of
     /// corridorFactor_ x corridorFactor_ cells, 1 = inside; empty = no corridor)
     std::unique_ptr<TveSearch> coarse_;
@@ -146,4 +134,4 @@ private:
         return corridor_[static_cast<std::size_t>(I + J * corridorNX_)] != 0;
     }
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

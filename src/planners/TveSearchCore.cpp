@@ -17,13 +17,8 @@ namespace ompl_glider
 {
 TveSearch::Core::Core(TveSearch &search, double startX, double startY, double departure, double goalX, double goalY,
                       const TveOptions &opts, const std::function<bool()> &stop)
-  : SearchSetting(*search.ctx_, startX, startY, departure, goalX, goalY)
-  , ts(search)
-  , lattice(search.lattice_)
-  , options(opts)
-  , terminate(stop)
-  , cfc0(travel.costFunctionCalls())
-  , cmc0(field.callCount())
+    : SearchSetting(*search.ctx_, startX, startY, departure, goalX, goalY), ts(search), lattice(search.lattice_),
+      options(opts), terminate(stop), cfc0(travel.costFunctionCalls()), cmc0(field.callCount())
 {
 }
 
@@ -36,7 +31,7 @@ TveResult TveSearch::runCore(double sx, double sy, double t0, double gx, double 
 TveResult TveSearch::Core::run()
 {
     // Clear the previous run's labels (only the vertices it touched).
-    ts.labels_.reset(lattice, Label{});  // labels only of the pages reached: memory grows with the search
+    ts.labels_.reset(lattice, Label{}); // labels only of the pages reached: memory grows with the search
     ts.reached_.clear();
 
     // Start and goal.
@@ -88,7 +83,7 @@ TveResult TveSearch::Core::finish()
     res.currentModelCalls = field.callCount() - cmc0;
     res.heuristicSettled = bounds ? bounds->settled() : 0;
     if (ts.bounds_)
-        ts.bounds_->releaseLandTest();  // it refers to this run's land cache
+        ts.bounds_->releaseLandTest(); // it refers to this run's land cache
     return res;
 }
 
@@ -149,14 +144,14 @@ void TveSearch::Core::setUpBounds()
     const bool refine = !std::isnan(options.deadline) && std::isfinite(tEnd) && options.windowRounds > 0 &&
                         lattice.numVertices() <= (std::size_t{1} << 18);
     const unsigned f = options.boundCellFactor ? options.boundCellFactor : LatticeHeuristic::autoCellFactor(lattice);
-    const double origin = 0.0;  // slices [k, k + 1] of absolute time: shared by searches of any departure
+    const double origin = 0.0; // slices [k, k + 1] of absolute time: shared by searches of any departure
     if (LatticeHeuristic::hasSlicedBounds(field) &&
         (!ts.boxCache_ || !ts.boxCache_->matches(&field, lattice, z, f, origin, 1.0)))
         ts.boxCache_ = CellBoxCache::shared(ctx.field, lattice, z, f, origin, 1.0);
     if (refine || ts.boundsRefined_ || !ts.bounds_ || ts.bounds_->tBegin() != t0 || ts.bounds_->tEnd() != tEnd ||
         ts.bounds_->cellFactor() != f)
-        ts.bounds_ = std::make_unique<LatticeHeuristic>(lattice, field, ctx.speed(), z, t0, tEnd, f,
-                                                        ts.boxCache_.get(), terminate);
+        ts.bounds_ = std::make_unique<LatticeHeuristic>(lattice, field, ctx.speed(), z, t0, tEnd, f, ts.boxCache_.get(),
+                                                        terminate);
     ts.bounds_->setStop(terminate);
     ts.boundsRefined_ = refine;
     const auto landTest = [this](Lattice::VertexId v) { return inWater(v); };
@@ -164,12 +159,12 @@ void TveSearch::Core::setUpBounds()
         ts.bounds_->refineWindows(options.windowRounds, landTest);
     if (terminated())
     {
-        ts.bounds_.reset();  // built in part: not kept for the next search (the search stops before it uses them)
+        ts.bounds_.reset(); // built in part: not kept for the next search (the search stops before it uses them)
         return;
     }
     ts.bounds_->reset(landTest);
     if (ts.bounds_->informative())
-        bounds = ts.bounds_.get();  // else the bounds are Eq. 1's: the code below uses it directly
+        bounds = ts.bounds_.get(); // else the bounds are Eq. 1's: the code below uses it directly
 }
 
 /// The result of the queue loop: the path to the goal (Exact), to the reached vertex closest to the goal
@@ -180,7 +175,7 @@ TveResult TveSearch::Core::result(Lattice::VertexId found)
     {
         res.outcome = TveOutcome::Exact;
         if (options.waiting && goalWindow && dist(found) < ctx.arriveNotBefore)
-            ts.goalHoldUntil_ = ctx.arriveNotBefore;  // arrived early where the goal can be held: hold there
+            ts.goalHoldUntil_ = ctx.arriveNotBefore; // arrived early where the goal can be held: hold there
         res.waypoints = ts.pathTo(found);
         res.travelTime = res.waypoints.back().t - t0;
         return finish();
@@ -247,7 +242,7 @@ bool TveSearch::Core::boundSkip(Lattice::VertexId u, double du, Lattice::VertexI
     const double lb = bounds->edgeLowerBound(u, v);
     if (!(du + lb < dist(v)) || du + lb > tEnd)
         return true;
-    const double hb = (*bounds)(v);  // unweighted: a true lower bound (>= Eq. 1's, LatticeHeuristic)
+    const double hb = (*bounds)(v); // unweighted: a true lower bound (>= Eq. 1's, LatticeHeuristic)
     return du + lb + hb > tEnd || (dist(g) < kInf && !(du + lb + hb < dist(g)));
 }
 
@@ -255,4 +250,4 @@ bool TveSearch::Core::terminated() const
 {
     return terminate && terminate();
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

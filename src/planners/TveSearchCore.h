@@ -27,16 +27,13 @@ struct QueueEntry
     double key;
     double d;
     Lattice::VertexId v;
-    bool operator>(const QueueEntry &o) const
-    {
-        return key > o.key || (key == o.key && v > o.v);
-    }
+    bool operator>(const QueueEntry &o) const { return key > o.key || (key == o.key && v > o.v); }
 };
 /// An edge (u, v) pruned by the Zermelo cone, kept for the certification phase (TveOptions::certifyTolerance).
 struct DeferredEdge
 {
-    double key;  ///< d[u] + |uv| / (V + max|c|) + |v - goal| / (V + max|c|): a lower bound of any arrival via it
-    double du;   ///< d[u] when it was pruned (stale when d[u] changed since)
+    double key; ///< d[u] + |uv| / (V + max|c|) + |v - goal| / (V + max|c|): a lower bound of any arrival via it
+    double du;  ///< d[u] when it was pruned (stale when d[u] changed since)
     Lattice::VertexId u, v;
     bool operator>(const DeferredEdge &o) const
     {
@@ -51,7 +48,7 @@ struct Cone
     std::optional<double> phiOpt;
     double halfWidth;
 };
-}  // namespace tve_detail
+} // namespace tve_detail
 
 /// @brief One search of runCore(): the state its steps share (start s, goal g, queue Q, deadline tEnd, ...; the
 /// arrival d[v] through dist()) and the steps as member functions. Lives for one call of runCore(); the labels, the
@@ -88,8 +85,7 @@ private:
     bool boundSkip(Lattice::VertexId u, double du, Lattice::VertexId v);
     bool terminated() const;
     // --- edges
-    double edgeTime(Lattice::VertexId u, double ux, double uy, Lattice::VertexId v, double vx, double vy,
-                    double dep);
+    double edgeTime(Lattice::VertexId u, double ux, double uy, Lattice::VertexId v, double vx, double vy, double dep);
     void label(Lattice::VertexId u, Lattice::VertexId v, double dv, double dep);
     bool canWait(double ux, double uy, double du, double tw) const;
     bool relax(Lattice::VertexId u, double ux, double uy, double du, Lattice::VertexId v);
@@ -104,36 +100,30 @@ private:
     Cone predictCone(Lattice::VertexId u, double ux, double uy, double du);
     void expand(Lattice::VertexId u);
 
-    double dist(Lattice::VertexId v) const
-    {
-        return ts.dist(v);
-    }
-    Lattice::VertexId parent(Lattice::VertexId v) const
-    {
-        return ts.parent(v);
-    }
+    double dist(Lattice::VertexId v) const { return ts.dist(v); }
+    Lattice::VertexId parent(Lattice::VertexId v) const { return ts.parent(v); }
 
     TveSearch &ts;
     Lattice &lattice;
     const TveOptions &options;
     const std::function<bool()> &terminate;
-    const std::uint64_t cfc0;  ///< CFC before the search
-    const std::uint64_t cmc0;  ///< CMC before the search
+    const std::uint64_t cfc0; ///< CFC before the search
+    const std::uint64_t cmc0; ///< CMC before the search
     TveResult res;
-    LatticeHeuristic *bounds{nullptr};  ///< set by setUpBounds() when TveOptions::tightBounds applies
+    LatticeHeuristic *bounds{nullptr}; ///< set by setUpBounds() when TveOptions::tightBounds applies
     Lattice::VertexId s{Lattice::kNone}, g{Lattice::kNone};
-    VertexPages<unsigned char> wet;  ///< land cache: 0 unknown, 1 water, 2 land (only the pages looked at)
-    double tEnd{0.0};                ///< arrival deadline of this search (TveOptions::deadline)
-    double vmax{0.0};                ///< speed bound of [EichhornRAS] Eq. 1: V + max|c| with the heuristic, else V
+    VertexPages<unsigned char> wet; ///< land cache: 0 unknown, 1 water, 2 land (only the pages looked at)
+    double tEnd{0.0};               ///< arrival deadline of this search (TveOptions::deadline)
+    double vmax{0.0};               ///< speed bound of [EichhornRAS] Eq. 1: V + max|c| with the heuristic, else V
     Queue Q;
-    std::vector<Lattice::VertexId> prunedAt;  ///< vertices whose expansion pruned edges (for the fallback)
+    std::vector<Lattice::VertexId> prunedAt; ///< vertices whose expansion pruned edges (for the fallback)
     bool pruning{false};
-    std::vector<double> releases;  ///< the environment's release times (TveOptions::waiting)
+    std::vector<double> releases; ///< the environment's release times (TveOptions::waiting)
     double holdStep{0.0};
     bool goalWindow{false};
-    bool certify{false};  ///< TveOptions::certifyTolerance applies
-    double vAll{0.0};     ///< V + max|c|: the edge bound without LatticeHeuristic
+    bool certify{false}; ///< TveOptions::certifyTolerance applies
+    double vAll{0.0};    ///< V + max|c|: the edge bound without LatticeHeuristic
     DeferredQueue deferred;
     unsigned checkEvery{1};
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

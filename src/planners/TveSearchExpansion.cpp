@@ -24,7 +24,7 @@ double angleDiff(double a, double b)
         d += 2.0 * kPi;
     return d;
 }
-}  // namespace
+} // namespace
 
 /// Travel time of the edge u -> v departing at dep (one CFC; from the edge cache of the phases when there is one).
 double TveSearch::Core::edgeTime(Lattice::VertexId u, double ux, double uy, Lattice::VertexId v, double vx, double vy,
@@ -49,7 +49,7 @@ void TveSearch::Core::label(Lattice::VertexId u, Lattice::VertexId v, double dv,
     lv.pi = u;
     lv.dep = dep;
     const double hv = h(v);
-    if (hv < kInf)  // +inf: the goal cannot be reached from v even with the optimistic bounds
+    if (hv < kInf) // +inf: the goal cannot be reached from v even with the optimistic bounds
         Q.push({dv + hv, dv, v});
 }
 
@@ -81,14 +81,14 @@ bool TveSearch::Core::relax(Lattice::VertexId u, double ux, double uy, double du
         if (dv > ctx.arriveNotAfter)
             return true;
         if (dv < ctx.arriveNotBefore && !(ctx.canHold(gx, gy, dv, ctx.arriveNotBefore, holdStep, 4) &&
-                                           (!env || env->legFree(gx, gy, dv, gx, gy, ctx.arriveNotBefore))))
+                                          (!env || env->legFree(gx, gy, dv, gx, gy, ctx.arriveNotBefore))))
         {
             holdBeforeGoal(u, ux, uy, du, v, vx, vy);
             return true;
         }
     }
     if (!(dv < dist(v)) || dv > tEnd)
-        return true;  // no improvement, or later than the planning window
+        return true; // no improvement, or later than the planning window
     if (env && (!env->pointFree(vx, vy, dv) || !env->legFree(ux, uy, du, vx, vy, dv)))
     {
         if (options.waiting && !releases.empty())
@@ -142,7 +142,7 @@ void TveSearch::Core::departAfterRelease(Lattice::VertexId u, double ux, double 
         if (tw <= du)
             continue;
         if (tw > tEnd || !(tw < dist(v)) || !canWait(ux, uy, du, tw))
-            break;  // later departures cannot improve v, or the glider cannot hold that long
+            break; // later departures cannot improve v, or the glider cannot hold that long
         const double ww = edgeTime(u, ux, uy, v, vx, vy, tw);
         if (!std::isfinite(ww))
             continue;
@@ -192,14 +192,14 @@ Lattice::VertexId TveSearch::Core::search()
         Q.pop();
         const Lattice::VertexId u = e.v;
         if (e.d != dist(u))
-            continue;  // stale entry (u was improved after this push)
+            continue; // stale entry (u was improved after this push)
         if (u == g)
             return u;
         if (!options.reopen)
         {
             Label &lu = ts.labels_.ref(u);
             if (lu.expanded)
-                continue;  // expanded once already (TveOptions::reopen)
+                continue; // expanded once already (TveOptions::reopen)
             lu.expanded = true;
         }
         ++res.expansions;
@@ -234,7 +234,7 @@ bool TveSearch::Core::restartUnpruned()
     res.fallbackUsed = true;
     for (Lattice::VertexId v : prunedAt)
     {
-        ts.labels_.ref(v).expanded = false;  // expanded again, with every edge
+        ts.labels_.ref(v).expanded = false; // expanded again, with every edge
         if (h(v) < kInf)
             Q.push({dist(v) + h(v), dist(v), v});
     }
@@ -260,7 +260,7 @@ tve_detail::Cone TveSearch::Core::predictCone(Lattice::VertexId u, double ux, do
         *cone.phiOpt += options.courseExtrapolation * turn;
         cone.halfWidth = options.deltaPhiMax + options.turnWidening * std::abs(turn);
         if (std::abs(turn) > options.reliableTurn)
-            cone.phiOpt.reset();  // unreliable prediction: examine every successor
+            cone.phiOpt.reset(); // unreliable prediction: examine every successor
     }
     return cone;
 }
@@ -272,7 +272,7 @@ void TveSearch::Core::expand(Lattice::VertexId u)
     const double ux = lattice.x(u), uy = lattice.y(u);
     const Cone cone = predictCone(u, ux, uy, du);
     bool prunedHere = false;
-    bool feasibleInCone = false;  // some examined edge had a finite travel time
+    bool feasibleInCone = false; // some examined edge had a finite travel time
     // pass 0: the cone around phi_opt (everything without pruning); pass 1: the rest, only when the cone was a
     // dead end (options.deadEndFallback).
     for (int pass = 0; pass < 2; ++pass)
@@ -281,7 +281,7 @@ void TveSearch::Core::expand(Lattice::VertexId u)
             break;
         lattice.forEachSuccessor(u, [&](Lattice::VertexId v) {
             if (!(du < dist(v)))
-                return;  // d[u] >= d[v]: the edge cannot improve v ([EichhornRAS] Table 1, difference 2)
+                return; // d[u] >= d[v]: the edge cannot improve v ([EichhornRAS] Table 1, difference 2)
             const double vx = lattice.x(v), vy = lattice.y(v);
             const bool inCone = !cone.phiOpt || (options.neverPruneGoal && v == g) ||
                                 std::abs(angleDiff(*cone.phiOpt, std::atan2(vy - uy, vx - ux))) <= cone.halfWidth;
@@ -299,17 +299,17 @@ void TveSearch::Core::expand(Lattice::VertexId u)
                 return;
             }
             if (pass == 1 && inCone)
-                return;  // examined in pass 0
+                return; // examined in pass 0
             if (relax(u, ux, uy, du, v))
                 feasibleInCone = true;
         });
         if (pass == 1)
         {
             ++res.deadEnds;
-            prunedHere = false;  // everything examined now
+            prunedHere = false; // everything examined now
         }
     }
     if (prunedHere)
         prunedAt.push_back(u);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

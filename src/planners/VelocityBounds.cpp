@@ -101,12 +101,12 @@ VelocityBox jetBox(const MeanderingJetParams &p, Iv X, Iv Y, Iv T)
     const Iv v = scale(-1.0, mul(g, sx));
     return {u.lo, u.hi, v.lo, v.hi};
 }
-}  // namespace
+} // namespace
 
 VelocityBox currentBounds(const CurrentField &field, const Region &region, unsigned timeSlices)
 {
-    constexpr int kSub = 2;  // 2 x 2 sub-boxes (4 x 4 and quarter time slices: 3.7x instead of 3.3x fewer CFC than
-                             // TVE on bench_search's random pairs, at 7x the wall time)
+    constexpr int kSub = 2; // 2 x 2 sub-boxes (4 x 4 and quarter time slices: 3.7x instead of 3.3x fewer CFC than
+                            // TVE on bench_search's random pairs, at 7x the wall time)
     const double M = field.maxSpeed(region);
     VelocityBox box{-M, M, -M, M};
     if (const auto *jet = dynamic_cast<const MeanderingJet *>(&field))
@@ -143,7 +143,7 @@ VelocityBox currentBounds(const CurrentField &field, const Region &region, unsig
     {
         VelocityBox b;
         if (field.velocityBounds(region, b.uMin, b.uMax, b.vMin, b.vMax))
-            box = b;  // the field's own local bounds (a gridded field's node extremes)
+            box = b; // the field's own local bounds (a gridded field's node extremes)
     }
     box.uMin = std::max(box.uMin, -M);
     box.vMin = std::max(box.vMin, -M);
@@ -154,16 +154,8 @@ VelocityBox currentBounds(const CurrentField &field, const Region &region, unsig
 
 CellBoxCache::CellBoxCache(std::shared_ptr<const CurrentField> field, const Lattice &lattice, double depth,
                            unsigned cellFactor, double origin, double dt)
-  : field_(std::move(field))
-  , xMin_(lattice.xMin())
-  , yMin_(lattice.yMin())
-  , g_(lattice.gridSize())
-  , nx_(lattice.nx())
-  , ny_(lattice.ny())
-  , depth_(depth)
-  , origin_(origin)
-  , dt_(dt)
-  , f_(std::max(1u, cellFactor))
+    : field_(std::move(field)), xMin_(lattice.xMin()), yMin_(lattice.yMin()), g_(lattice.gridSize()), nx_(lattice.nx()),
+      ny_(lattice.ny()), depth_(depth), origin_(origin), dt_(dt), f_(std::max(1u, cellFactor))
 {
     const long f = static_cast<long>(f_);
     NX_ = std::max(0L, nx_ - 1) / f + 1;
@@ -173,9 +165,9 @@ CellBoxCache::CellBoxCache(std::shared_ptr<const CurrentField> field, const Latt
 bool CellBoxCache::matches(const CurrentField *field, const Lattice &lattice, double depth, unsigned cellFactor,
                            double origin, double dt) const
 {
-    return field == field_.get() && lattice.xMin() == xMin_ && lattice.yMin() == yMin_ &&
-           lattice.gridSize() == g_ && lattice.nx() == nx_ && lattice.ny() == ny_ && depth == depth_ &&
-           std::max(1u, cellFactor) == f_ && origin == origin_ && dt == dt_;
+    return field == field_.get() && lattice.xMin() == xMin_ && lattice.yMin() == yMin_ && lattice.gridSize() == g_ &&
+           lattice.nx() == nx_ && lattice.ny() == ny_ && depth == depth_ && std::max(1u, cellFactor) == f_ &&
+           origin == origin_ && dt == dt_;
 }
 
 std::shared_ptr<CellBoxCache> CellBoxCache::shared(const std::shared_ptr<const CurrentField> &field,
@@ -230,4 +222,4 @@ VelocityBox CellBoxCache::box(long I, long J, double ta, double tb, const std::f
     }
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

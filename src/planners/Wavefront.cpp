@@ -33,10 +33,10 @@ namespace ompl_glider
 namespace
 {
 using TimeState = TimeSE2StateSpace::StateType;
-}  // namespace
+} // namespace
 
 Wavefront::Wavefront(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx)
-  : LatticePlanner(si, "Wavefront", "Wavefront"), ctx_(std::move(ctx))
+    : LatticePlanner(si, "Wavefront", "Wavefront"), ctx_(std::move(ctx))
 {
     if (!ctx_ || !ctx_->field || !ctx_->travel)
         throw Error("Wavefront: a GliderContext with field and travel is required");
@@ -75,8 +75,8 @@ ompl::base::PlannerAllocator Wavefront::allocator(std::shared_ptr<const GliderCo
 void Wavefront::setTimeStep(double dt)
 {
     if (!(dt >= 0.0) || !std::isfinite(dt))
-        throw Error("Wavefront: time_step must be a finite number >= 0 (0 = grid_size / V; got " +
-                    std::to_string(dt) + ")");
+        throw Error("Wavefront: time_step must be a finite number >= 0 (0 = grid_size / V; got " + std::to_string(dt) +
+                    ")");
     timeStep_ = dt;
 }
 
@@ -88,12 +88,12 @@ void Wavefront::prepare(const PipelineSetup &setup)
     const double dt = effectiveTimeStep();
     const double window = (r.tMax - setup.departure) / dt;
     if (!(window <= kMaxIntervals))
-        throw Error(where + text::formatted(": %.4g time intervals of %g over the planning window (at most %g)",
-                                            window, dt, kMaxIntervals) +
+        throw Error(where +
+                    text::formatted(": %.4g time intervals of %g over the planning window (at most %g)", window, dt,
+                                    kMaxIntervals) +
                     ": use a larger time_step");
-    const double vertices =
-        (std::floor((r.xMax - r.xMin) / getGridSize() + 1e-9) + 1.0) *
-        (std::floor((r.yMax - r.yMin) / getGridSize() + 1e-9) + 1.0);
+    const double vertices = (std::floor((r.xMax - r.xMin) / getGridSize() + 1e-9) + 1.0) *
+                            (std::floor((r.yMax - r.yMin) / getGridSize() + 1e-9) + 1.0);
     const double tEnd = std::min(r.tMax, ctx_->arriveNotAfter);
     const double intervals = std::floor(std::max(tEnd - setup.departure, 0.0) / dt) + 1.0;
     // the search ends no earlier than the fastest conceivable arrival: every vertex reachable by then holds into
@@ -117,29 +117,29 @@ NoPath Wavefront::noPathReason(const ompl::base::PlannerStatus &, double timeLim
     NoPath n;
     switch (outcome_)
     {
-        case WavefrontOutcome::InvalidStart:
-            n.cause = NoPathCause::BadInput;
-            n.what = "invalid start: " + message_;
-            break;
-        case WavefrontOutcome::InvalidGoal:
-            n.cause = NoPathCause::BadInput;
-            n.what = "invalid goal: " + message_;
-            break;
-        case WavefrontOutcome::Exhausted:
-            n.cause = NoPathCause::LatticeExhausted;
-            n.what = "no path exists on this lattice: " + message_;
-            break;
-        case WavefrontOutcome::BadWindow:
-            n.cause = NoPathCause::BadInput;
-            n.what = message_;
-            break;
-        case WavefrontOutcome::Terminated:
-            n.cause = NoPathCause::TimeLimit;
-            n.timeLimit = timeLimit;
-            n.what = "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
-            break;
-        default:
-            break;
+    case WavefrontOutcome::InvalidStart:
+        n.cause = NoPathCause::BadInput;
+        n.what = "invalid start: " + message_;
+        break;
+    case WavefrontOutcome::InvalidGoal:
+        n.cause = NoPathCause::BadInput;
+        n.what = "invalid goal: " + message_;
+        break;
+    case WavefrontOutcome::Exhausted:
+        n.cause = NoPathCause::LatticeExhausted;
+        n.what = "no path exists on this lattice: " + message_;
+        break;
+    case WavefrontOutcome::BadWindow:
+        n.cause = NoPathCause::BadInput;
+        n.what = message_;
+        break;
+    case WavefrontOutcome::Terminated:
+        n.cause = NoPathCause::TimeLimit;
+        n.timeLimit = timeLimit;
+        n.what = "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
+        break;
+    default:
+        break;
     }
     return n;
 }
@@ -228,20 +228,20 @@ ompl::base::PlannerStatus Wavefront::solve(const ompl::base::PlannerTerminationC
 
     switch (outcome_)
     {
-        case WavefrontOutcome::InvalidStart:
-            OMPL_ERROR("%s: invalid start: %s", getName().c_str(), message_.c_str());
-            return ompl::base::PlannerStatus::INVALID_START;
-        case WavefrontOutcome::InvalidGoal:
-            OMPL_ERROR("%s: invalid goal: %s", getName().c_str(), message_.c_str());
-            return ompl::base::PlannerStatus::INVALID_GOAL;
-        case WavefrontOutcome::Exhausted:
-        case WavefrontOutcome::BadWindow:
-            OMPL_INFORM("%s: %s", getName().c_str(), message_.c_str());
-            return ompl::base::PlannerStatus::ABORT;  // more time would not help (OMPL 1.5: no "infeasible")
-        case WavefrontOutcome::Terminated:
-            return ompl::base::PlannerStatus::TIMEOUT;
-        default:
-            break;
+    case WavefrontOutcome::InvalidStart:
+        OMPL_ERROR("%s: invalid start: %s", getName().c_str(), message_.c_str());
+        return ompl::base::PlannerStatus::INVALID_START;
+    case WavefrontOutcome::InvalidGoal:
+        OMPL_ERROR("%s: invalid goal: %s", getName().c_str(), message_.c_str());
+        return ompl::base::PlannerStatus::INVALID_GOAL;
+    case WavefrontOutcome::Exhausted:
+    case WavefrontOutcome::BadWindow:
+        OMPL_INFORM("%s: %s", getName().c_str(), message_.c_str());
+        return ompl::base::PlannerStatus::ABORT; // more time would not help (OMPL 1.5: no "infeasible")
+    case WavefrontOutcome::Terminated:
+        return ompl::base::PlannerStatus::TIMEOUT;
+    default:
+        break;
     }
     auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
     waypointsToPath(waypoints_, *path);
@@ -287,4 +287,4 @@ void Wavefront::getPlannerData(ompl::base::PlannerData &data) const
     if (outcome_ == WavefrontOutcome::Exact)
         data.markGoalState(dataStates_.back());
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -13,7 +13,6 @@
 #include <queue>
 #include <unordered_map>
 
-
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ompl/GliderStateValidityChecker.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
@@ -64,12 +63,9 @@ struct WaveEntry
     double key;
     double a;
     NodeKey n;
-    bool operator>(const WaveEntry &o) const
-    {
-        return key > o.key || (key == o.key && n > o.n);
-    }
+    bool operator>(const WaveEntry &o) const { return key > o.key || (key == o.key && n > o.n); }
 };
-}  // namespace
+} // namespace
 
 /// @brief One search of Wavefront::search(): the lattice, the time intervals, the nodes' labels and the queue, with
 /// the steps of [ThompsonICRA] Algorithm 1 as member functions. Writes the planner's message, counters, settled nodes
@@ -114,26 +110,24 @@ private:
     const ompl::base::PlannerTerminationCondition &ptc;
     Lattice lattice;
     Lattice::VertexId s{Lattice::kNone}, g{Lattice::kNone};
-    ompl::base::State *scratch{nullptr};  ///< the state validState() checks
-    double tEnd{0.0};                     ///< end of the window: min(region.tMax, arriveNotAfter)
-    double dt{0.0};                       ///< interval length
-    std::uint64_t K{0};                   ///< intervals tau_0 .. tau_{K-1}
-    double notBefore{0.0};                ///< the goal window's begin
-    std::unordered_map<Lattice::VertexId, bool> wet;  ///< land cache of the vertices looked at
+    ompl::base::State *scratch{nullptr};             ///< the state validState() checks
+    double tEnd{0.0};                                ///< end of the window: min(region.tMax, arriveNotAfter)
+    double dt{0.0};                                  ///< interval length
+    std::uint64_t K{0};                              ///< intervals tau_0 .. tau_{K-1}
+    double notBefore{0.0};                           ///< the goal window's begin
+    std::unordered_map<Lattice::VertexId, bool> wet; ///< land cache of the vertices looked at
     std::unordered_map<NodeKey, NodeLabel> labels;
     Queue queue;
-    std::unordered_map<NodeKey, std::int64_t> settledIndex;  ///< node -> index in the planner's settled_
+    std::unordered_map<NodeKey, std::int64_t> settledIndex; ///< node -> index in the planner's settled_
     NodeKey goalNode{kNoNode};
     double arrival{kInf};
 };
 
 Wavefront::Search::Search(Wavefront &planner, double startX, double startY, double departure, double goalX,
                           double goalY, const ompl::base::PlannerTerminationCondition &stop)
-  : SearchSetting(*planner.ctx_, startX, startY, departure, goalX, goalY)
-  , wf(planner)
-  , ptc(stop)
-  , lattice(ctx.region.xMin, ctx.region.xMax, ctx.region.yMin, ctx.region.yMax, planner.getGridSize(),
-            planner.getSectors())
+    : SearchSetting(*planner.ctx_, startX, startY, departure, goalX, goalY), wf(planner), ptc(stop),
+      lattice(ctx.region.xMin, ctx.region.xMax, ctx.region.yMin, ctx.region.yMax, planner.getGridSize(),
+              planner.getSectors())
 {
 }
 
@@ -187,8 +181,7 @@ std::optional<WavefrontOutcome> Wavefront::Search::checkEndpoints()
     if (!std::isfinite(t0) || !(t0 >= ctx.region.tMin && t0 <= ctx.region.tMax) || !validState(sx, sy, t0))
     {
         wf.message_ = "start " + formatPoint(sx, sy) + " is not a valid state at t0 = " + std::to_string(t0);
-        if (const auto *vc =
-                dynamic_cast<const GliderStateValidityChecker *>(wf.si_->getStateValidityChecker().get()))
+        if (const auto *vc = dynamic_cast<const GliderStateValidityChecker *>(wf.si_->getStateValidityChecker().get()))
         {
             const std::string why = vc->whyInvalid(scratch);
             if (!why.empty())
@@ -213,13 +206,12 @@ std::optional<WavefrontOutcome> Wavefront::Search::setUpIntervals()
     tEnd = std::min(ctx.region.tMax, ctx.arriveNotAfter);
     if (!std::isfinite(tEnd))
     {
-        wf.message_ =
-            "the planning window has no finite end (region.tMax and the goal's arrival window are unbounded)";
+        wf.message_ = "the planning window has no finite end (region.tMax and the goal's arrival window are unbounded)";
         return WavefrontOutcome::BadWindow;
     }
     dt = wf.effectiveTimeStep();
     const double intervals = std::floor((tEnd - t0) / dt) + 1.0;
-    if (!(intervals <= kMaxIntervals))  // (also keeps k below kArrived)
+    if (!(intervals <= kMaxIntervals)) // (also keeps k below kArrived)
     {
         char text[200];
         std::snprintf(text, sizeof text,
@@ -283,7 +275,7 @@ WavefrontOutcome Wavefront::Search::sweep()
         queue.pop();
         NodeLabel &label = labels[e.n];
         if (label.closed || e.a != label.a)
-            continue;  // stale entry
+            continue; // stale entry
         label.closed = true;
         if ((++wf.expansions_ & 63u) == 0 && ptc())
             return WavefrontOutcome::Terminated;
@@ -292,11 +284,11 @@ WavefrontOutcome Wavefront::Search::sweep()
         const double vx = lattice.x(v), vy = lattice.y(v);
         recordSettled(e.n, vx, vy, e.a, label.parent);
         // Earliest possible departure ([ThompsonICRA] Algorithm 1, lines 13-16).
-        const double tDepart = e.key;  // = max(A, start of tau_k)
+        const double tDepart = e.key; // = max(A, start of tau_k)
 
         if (k == kArrived)
         {
-            goalNode = e.n;  // the earliest arrival inside the window
+            goalNode = e.n; // the earliest arrival inside the window
             arrival = e.a;
             return WavefrontOutcome::Exact;
         }
@@ -372,7 +364,7 @@ void Wavefront::Search::storePath()
         wp.push_back({lattice.x(v), lattice.y(v), l.hold ? intervalStart(nodeInterval(*it)) : l.a});
     }
     if (arrival > wp.back().t)
-        wp.push_back({wp.back().x, wp.back().y, arrival});  // the final hold at the goal until its window opens
+        wp.push_back({wp.back().x, wp.back().y, arrival}); // the final hold at the goal until its window opens
     wf.waypoints_ = mergeHolds(wp);
     wf.travelTime_ = arrival - t0;
 }
@@ -399,4 +391,4 @@ std::vector<TimedPoint> Wavefront::Search::mergeHolds(const std::vector<TimedPoi
     }
     return merged;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

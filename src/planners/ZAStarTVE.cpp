@@ -28,27 +28,27 @@ NoPath ZAStarTVE::noPathReason(const ompl::base::PlannerStatus &, double timeLim
     NoPath n;
     switch (last_.outcome)
     {
-        case TveOutcome::InvalidStart:
-            n.cause = NoPathCause::BadInput;
-            n.what = "invalid start: " + last_.message;
-            break;
-        case TveOutcome::InvalidGoal:
-            n.cause = NoPathCause::BadInput;
-            n.what = "invalid goal: " + last_.message;
-            break;
-        case TveOutcome::Exhausted:
-            n.cause = NoPathCause::LatticeExhausted;
-            n.expanded = last_.expansions;
-            n.what = "no path exists on this lattice (" + std::to_string(last_.expansions) + " vertices expanded)";
-            n.advice = ": a finer grid, more sectors or a higher speed may find one";
-            break;
-        case TveOutcome::Terminated:
-            n.cause = NoPathCause::TimeLimit;
-            n.timeLimit = timeLimit;
-            n.what = "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
-            break;
-        default:
-            break;
+    case TveOutcome::InvalidStart:
+        n.cause = NoPathCause::BadInput;
+        n.what = "invalid start: " + last_.message;
+        break;
+    case TveOutcome::InvalidGoal:
+        n.cause = NoPathCause::BadInput;
+        n.what = "invalid goal: " + last_.message;
+        break;
+    case TveOutcome::Exhausted:
+        n.cause = NoPathCause::LatticeExhausted;
+        n.expanded = last_.expansions;
+        n.what = "no path exists on this lattice (" + std::to_string(last_.expansions) + " vertices expanded)";
+        n.advice = ": a finer grid, more sectors or a higher speed may find one";
+        break;
+    case TveOutcome::Terminated:
+        n.cause = NoPathCause::TimeLimit;
+        n.timeLimit = timeLimit;
+        n.what = "the time limit (" + text::number(timeLimit) + " s) ended the search: raise it";
+        break;
+    default:
+        break;
     }
     return n;
 }
@@ -69,20 +69,17 @@ double legYaw(double x1, double y1, double x2, double y2)
 struct Range
 {
     double lo, step, hi;
-    std::string suggestion() const
-    {
-        return text::number(lo) + ":" + text::number(step) + ":" + text::number(hi);
-    }
+    std::string suggestion() const { return text::number(lo) + ":" + text::number(step) + ":" + text::number(hi); }
 };
 
 const Range &rangeOf(const std::string &name)
 {
     static const std::map<std::string, Range> ranges = {
-        {"delta_phi_max", {0.1, 1.0, 180.0}},        // degrees, half-width of the accepted courses
-        {"course_extrapolation", {0.0, 0.25, 2.0}},  // k of the predicted course
-        {"turn_widening", {0.0, 0.25, 5.0}},         // cone widening with the predicted turn
-        {"certify_tolerance", {-1.0, 0.05, 1.0}},    // relative; < 0: off
-        {"coarse_factor", {0.0, 1.0, 64.0}},         // 0 automatic, 1 off
+        {"delta_phi_max", {0.1, 1.0, 180.0}},       // degrees, half-width of the accepted courses
+        {"course_extrapolation", {0.0, 0.25, 2.0}}, // k of the predicted course
+        {"turn_widening", {0.0, 0.25, 5.0}},        // cone widening with the predicted turn
+        {"certify_tolerance", {-1.0, 0.05, 1.0}},   // relative; < 0: off
+        {"coarse_factor", {0.0, 1.0, 64.0}},        // 0 automatic, 1 off
         {"corridor_blocks", {1.0, 1.0, 1000.0}},
         {"zermelo_steps", {1.0, 1.0, 10000.0}},
         {"refiner_max_evaluations", {kMinRefinerEvaluations, 1000.0, kMaxRefinerEvaluations}}};
@@ -108,11 +105,11 @@ unsigned checkedInteger(const char *name, unsigned n, const char *note = "")
                     text::number(r.hi) + " (" + note + "got " + std::to_string(n) + ")");
     return n;
 }
-}  // namespace
+} // namespace
 
 ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx,
                      const std::string &configuration)
-  : LatticePlanner(si, configuration, "ZAStarTVE"), ctx_(std::move(ctx))
+    : LatticePlanner(si, configuration, "ZAStarTVE"), ctx_(std::move(ctx))
 {
     if (!ctx_ || !ctx_->field || !ctx_->travel)
         throw Error("ZAStarTVE: a GliderContext with field and travel is required");
@@ -131,8 +128,7 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
     else if (configuration == "ZA*TVE")
         options_.heuristic = options_.zermelo = true;
     else
-        throw Error("ZAStarTVE: unknown configuration '" + configuration +
-                    "' (expected TVE, A*TVE, ZTVE or ZA*TVE)");
+        throw Error("ZAStarTVE: unknown configuration '" + configuration + "' (expected TVE, A*TVE, ZTVE or ZA*TVE)");
 
     specs_.approximateSolutions = true;
     specs_.optimizingPaths = false;
@@ -147,8 +143,8 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
                          &ZAStarTVE::getCourseExtrapolation, rangeOf("course_extrapolation").suggestion());
     declareParam<double>("turn_widening", this, &ZAStarTVE::setTurnWidening, &ZAStarTVE::getTurnWidening,
                          rangeOf("turn_widening").suggestion());
-    declareParam<double>("certify_tolerance", this, &ZAStarTVE::setCertifyTolerance,
-                         &ZAStarTVE::getCertifyTolerance, rangeOf("certify_tolerance").suggestion());
+    declareParam<double>("certify_tolerance", this, &ZAStarTVE::setCertifyTolerance, &ZAStarTVE::getCertifyTolerance,
+                         rangeOf("certify_tolerance").suggestion());
     declareParam<bool>("tight_bounds", this, &ZAStarTVE::setTightBounds, &ZAStarTVE::getTightBounds, "0,1");
     declareParam<unsigned>("coarse_factor", this, &ZAStarTVE::setCoarseFactor, &ZAStarTVE::getCoarseFactor,
                            rangeOf("coarse_factor").suggestion());
@@ -164,8 +160,8 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
     const TravelTimeCalculator *travel = ctx_->travel.get();
     const CurrentField *field = ctx_->field.get();
     addPlannerProgressProperty("cost function calls INTEGER", [this, travel] {
-        const std::uint64_t n = solving_ ? travel->costFunctionCalls() - cfcBase_
-                                           : last_.costFunctionCalls + postprocessCfc_;
+        const std::uint64_t n =
+            solving_ ? travel->costFunctionCalls() - cfcBase_ : last_.costFunctionCalls + postprocessCfc_;
         return std::to_string(n);
     });
     addPlannerProgressProperty("current model calls INTEGER", [this, field] {
@@ -185,7 +181,7 @@ ZAStarTVE::~ZAStarTVE()
 }
 
 ompl::base::PlannerAllocator ZAStarTVE::allocator(std::shared_ptr<const GliderContext> ctx,
-                                                    const std::string &configuration)
+                                                  const std::string &configuration)
 {
     return [ctx, configuration](const ompl::base::SpaceInformationPtr &si) {
         return std::make_shared<ZAStarTVE>(si, ctx, configuration);
@@ -252,7 +248,7 @@ void ZAStarTVE::setup()
         return;
     }
     if (!search_)
-        search_ = std::make_unique<TveSearch>(ctx_, getGridSize(), getSectors());  // throws Error on bad lattice params
+        search_ = std::make_unique<TveSearch>(ctx_, getGridSize(), getSectors()); // throws Error on bad lattice params
 }
 
 void ZAStarTVE::freeDataStates() const
@@ -317,12 +313,12 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
         try
         {
             if (smooth_)
-                solution_ = PathSmoother(ctx_).smooth(solution_).waypoints;  // departure: solution_.front().t = t0
+                solution_ = PathSmoother(ctx_).smooth(solution_).waypoints; // departure: solution_.front().t = t0
             if (refine_)
             {
                 RefinerParams rp;
                 rp.maxEvaluations = refinerMaxEvaluations_;
-                rp.terminate = [&ptc] { return ptc(); };  // a time limit bounds refinement too
+                rp.terminate = [&ptc] { return ptc(); }; // a time limit bounds refinement too
                 solution_ = WaypointRefiner(ctx_, rp).refine(solution_).waypoints;
             }
         }
@@ -337,28 +333,28 @@ ompl::base::PlannerStatus ZAStarTVE::solve(const ompl::base::PlannerTerminationC
 
     switch (r.outcome)
     {
-        case TveOutcome::InvalidStart:
-            OMPL_ERROR("%s: invalid start: %s", getName().c_str(), r.message.c_str());
-            return ompl::base::PlannerStatus::INVALID_START;
-        case TveOutcome::InvalidGoal:
-            OMPL_ERROR("%s: invalid goal: %s", getName().c_str(), r.message.c_str());
-            return ompl::base::PlannerStatus::INVALID_GOAL;
-        case TveOutcome::Exhausted:
-            OMPL_INFORM("%s: the lattice holds no feasible path to the goal (%llu vertices expanded, %llu CFC)",
-                        getName().c_str(), static_cast<unsigned long long>(r.expansions),
-                        static_cast<unsigned long long>(r.costFunctionCalls));
-            // not a timeout (more time would not help): OMPL 1.5 has no "infeasible" status, ABORT is "no solution
-            // for another reason"
-            return ompl::base::PlannerStatus::ABORT;
-        default:
-            break;
+    case TveOutcome::InvalidStart:
+        OMPL_ERROR("%s: invalid start: %s", getName().c_str(), r.message.c_str());
+        return ompl::base::PlannerStatus::INVALID_START;
+    case TveOutcome::InvalidGoal:
+        OMPL_ERROR("%s: invalid goal: %s", getName().c_str(), r.message.c_str());
+        return ompl::base::PlannerStatus::INVALID_GOAL;
+    case TveOutcome::Exhausted:
+        OMPL_INFORM("%s: the lattice holds no feasible path to the goal (%llu vertices expanded, %llu CFC)",
+                    getName().c_str(), static_cast<unsigned long long>(r.expansions),
+                    static_cast<unsigned long long>(r.costFunctionCalls));
+        // not a timeout (more time would not help): OMPL 1.5 has no "infeasible" status, ABORT is "no solution
+        // for another reason"
+        return ompl::base::PlannerStatus::ABORT;
+    default:
+        break;
     }
     if (r.waypoints.empty())
-        return ompl::base::PlannerStatus::TIMEOUT;  // terminated before reaching anything closer to the goal
+        return ompl::base::PlannerStatus::TIMEOUT; // terminated before reaching anything closer to the goal
 
     auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
     const auto &w = solution_;
-    waypointsToPath(w, *path);  // yaw of each state: the leg reaching it (the first leg for the start)
+    waypointsToPath(w, *path); // yaw of each state: the leg reaching it (the first leg for the start)
 
     const bool exact = r.outcome == TveOutcome::Exact;
     const double cost = w.back().t - t0;
@@ -430,4 +426,4 @@ void ZAStarTVE::getPlannerData(ompl::base::PlannerData &data) const
                      ompl::base::PlannerDataEdge(), ompl::base::Cost(v.t - p.t));
     }
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -72,18 +72,9 @@ public:
     void propagate(double tEnd, bool stopAtGoal, const std::function<bool()> &stop);
 
     /// The result so far (arrival field, goal, work done); moved out by the caller at the end.
-    Reachability &result()
-    {
-        return out_;
-    }
-    double dt() const
-    {
-        return dt_;
-    }
-    double dt0() const
-    {
-        return dt0_;
-    }
+    Reachability &result() { return out_; }
+    double dt() const { return dt_; }
+    double dt0() const { return dt0_; }
 
 private:
     void updateForbidden(double t);
@@ -97,8 +88,7 @@ private:
     void checkGoal(double t1);
 
     /// Calls fn(i, j) for every node (i, j) of @p tile.
-    template <typename Fn>
-    void forTileNodes(std::uint32_t tile, Fn &&fn) const
+    template <typename Fn> void forTileNodes(std::uint32_t tile, Fn &&fn) const
     {
         const int a = static_cast<int>(tile % tx_), b = static_cast<int>(tile / tx_);
         for (int j = b * kTile; j < std::min(g_.ny, (b + 1) * kTile); ++j)
@@ -113,16 +103,16 @@ private:
     const double band_, V_, z_;
     std::optional<Point2> goal_;
     Reachability out_;
-    double dt_{0.0};   ///< the time step
-    double dt0_{0.0};  ///< the initial disc's time
-    double t_{0.0};    ///< the front's time
+    double dt_{0.0};  ///< the time step
+    double dt0_{0.0}; ///< the initial disc's time
+    double t_{0.0};   ///< the front's time
 
     // The forbidden set at time t_: static part, closed zones, drifted ice, other environments' masks.
     std::vector<double> obstacle_;
-    std::vector<std::uint32_t> dynamicNodes_;  ///< nodes whose obstacle value differs from the static one
+    std::vector<std::uint32_t> dynamicNodes_; ///< nodes whose obstacle value differs from the static one
 
-    std::vector<double> phi_, next_;  ///< the front now and after the step
-    double goalPhi_{0.0};             ///< phi at the goal (interpolated) after the last step
+    std::vector<double> phi_, next_; ///< the front now and after the step
+    double goalPhi_{0.0};            ///< phi at the goal (interpolated) after the last step
 
     // Tiles of the narrow band.
     int tx_{0}, ty_{0};
@@ -130,8 +120,8 @@ private:
     std::vector<std::uint32_t> activeTiles_;
     double bandInner_{0.0};
 
-    double ds_{0.0};  ///< this step's length (shortened to end at a zone's opening or closing)
-    double r_{0.0};   ///< the departure disc's radius V ds
+    double ds_{0.0}; ///< this step's length (shortened to end at a zone's opening or closing)
+    double r_{0.0};  ///< the departure disc's radius V ds
     std::uint64_t updates_{0};
     std::vector<double> reinitDist_;
 };
@@ -210,7 +200,7 @@ void FrontPropagation::initialise(double sx, double sy, double t0, const std::op
     const double band = band_, V = V_;
     goal_ = goal;
     out_.t0 = t0;
-    const double r0 = 4.0 * g.h;  // 2 cells leave a dent in the front that persists; 3-6 agree
+    const double r0 = 4.0 * g.h; // 2 cells leave a dent in the front that persists; 3-6 agree
     dt0_ = r0 / V;
     const double dt0 = dt0_;
     const Velocity c0 = field_.velocity(sx, sy, z_, t0 + 0.5 * dt0);
@@ -286,7 +276,7 @@ double FrontPropagation::nodeValue(const std::vector<double> &f, double x, doubl
     g.gradient(f, x - ds * c1.u, y - ds * c1.v, gx, gy);
     double gn = std::hypot(gx, gy);
     double nx = 1.0, ny = 0.0;
-    const bool known = gn >= 0.2;  // phi stays close to a distance (|grad phi| ~ 1) near the front
+    const bool known = gn >= 0.2; // phi stays close to a distance (|grad phi| ~ 1) near the front
     if (known)
     {
         nx = gx / gn;
@@ -401,7 +391,7 @@ void FrontPropagation::applyForbidden(double t1)
                 out_.arrival[n] = p0 > 0.0 ? t + ds * p0 / (p0 - v) : t1;
             }
         });
-    for (std::uint32_t n : dynamicNodes_)  // a zone that closed outside the active tiles
+    for (std::uint32_t n : dynamicNodes_) // a zone that closed outside the active tiles
         next_[n] = std::max(next_[n], obstacle_[n]);
     phi_.swap(next_);
 }
@@ -415,9 +405,8 @@ void FrontPropagation::reinitialiseIfDue(std::size_t step)
     const Grid &g = g_;
     reinitialise(g, phi_, activeTiles_, tx_, band_, reinitDist_);
     for (std::uint32_t tile : activeTiles_)
-        forTileNodes(tile, [&](int i, int j) {
-            phi_[g.index(i, j)] = std::max(phi_[g.index(i, j)], obstacle_[g.index(i, j)]);
-        });
+        forTileNodes(
+            tile, [&](int i, int j) { phi_[g.index(i, j)] = std::max(phi_[g.index(i, j)], obstacle_[g.index(i, j)]); });
 }
 
 /// The goal's first arrival: when phi interpolated at the goal becomes <= 0 in the step ending at t1 (linear in
@@ -464,7 +453,7 @@ void FrontPropagation::propagate(double tEnd, bool stopAtGoal, const std::functi
     }
     out_.stats.nodeUpdates = updates_;
 }
-}  // namespace
+} // namespace
 
 Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd, const std::optional<Point2> &goal,
                                    bool stopAtGoal, const std::function<bool()> &stop) const
@@ -478,7 +467,7 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
     FrontPropagation front(*impl_, *ctx_, params_);
     front.initialise(sx, sy, t0, goal);
     // a goal walled off from the start: proven before any step (a long window would step for minutes)
-    const int reach = static_cast<int>(std::ceil(params_.cfl)) + 3;  // a step's reach and its cubic stencil
+    const int reach = static_cast<int>(std::ceil(params_.cfl)) + 3; // a step's reach and its cubic stencil
     const bool walledOff = goal && stopAtGoal && !front.result().goalReached && !impl_->staticD.empty() &&
                            !levelset_detail::waterConnects(*impl_, {sx, sy}, *goal, reach);
     if (!walledOff)
@@ -502,4 +491,4 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
     out.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -77,8 +77,8 @@ public:
 
 private:
     const Grid &g_;
-    std::vector<double> tgx_, tgy_;  ///< node gradients of T
-    std::vector<char> tok_;          ///< the node has a gradient
+    std::vector<double> tgx_, tgy_; ///< node gradients of T
+    std::vector<char> tok_;         ///< the node has a gradient
 };
 
 /// The point one step of length @p h1 back in time from (px, py) at time pt, heading (ux, uy), with the current
@@ -115,7 +115,7 @@ Point2 stepBack(const Reachability &r, const BacktrackSetup &s, double px, doubl
         }
     return {qx, qy};
 }
-}  // namespace
+} // namespace
 
 std::vector<TimedPoint> backtrackPath(const Reachability &r, const Grid &g, Point2 start, Point2 goal,
                                       const BacktrackSetup &s)
@@ -129,8 +129,8 @@ std::vector<TimedPoint> backtrackPath(const Reachability &r, const Grid &g, Poin
     const double holdTol = std::max(3.0 * dt, 2e-3 * (r.goalTime - t0));
     const double done = t0 + s.dt0;
     const std::size_t maxBack = 4 * static_cast<std::size_t>((r.goalTime - t0) / dt + 10);
-    double lastNx = 0.0, lastNy = 0.0;  // the last normal found: kept for a few steps where the path runs
-    int blind = 0;                      // along unreached nodes (the edge of a forbidden region)
+    double lastNx = 0.0, lastNy = 0.0; // the last normal found: kept for a few steps where the path runs
+    int blind = 0;                     // along unreached nodes (the edge of a forbidden region)
     for (std::size_t k = 0; k < maxBack && pt > done; ++k)
     {
         // Where T is earlier than the path's time by more than the tolerance, the glider held there.
@@ -151,7 +151,7 @@ std::vector<TimedPoint> backtrackPath(const Reachability &r, const Grid &g, Poin
         if (normals.normal(px, py, nx, ny))
             blind = 0;
         else if (++blind > 8 || !(lastNx != 0.0 || lastNy != 0.0))
-            break;  // off the reached nodes for long (along a forbidden region's edge): stop
+            break; // off the reached nodes for long (along a forbidden region's edge): stop
         lastNx = nx;
         lastNy = ny;
         const Velocity c1 = field.velocity(px, py, z, pt);
@@ -168,7 +168,7 @@ std::vector<TimedPoint> backtrackPath(const Reachability &r, const Grid &g, Poin
     back.push_back({start.x, start.y, t0});
     return std::vector<TimedPoint>(back.rbegin(), back.rend());
 }
-}  // namespace levelset_detail
+} // namespace levelset_detail
 
 double Reachability::arrivalAt(double x, double y) const
 {
@@ -224,7 +224,7 @@ std::vector<std::vector<Point2>> Reachability::isochrone(double t) const
                 code |= (v[k] <= 0.0) << k;
             if (code == 0 || code == 15)
                 continue;
-            std::vector<Point2> pts;  // crossings on edges k -> k+1
+            std::vector<Point2> pts; // crossings on edges k -> k+1
             for (int k = 0; k < 4; ++k)
             {
                 const int l = (k + 1) % 4;
@@ -291,4 +291,4 @@ std::vector<std::vector<Point2>> Reachability::isochrone(double t) const
     }
     return lines;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

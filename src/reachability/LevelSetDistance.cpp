@@ -73,8 +73,8 @@ void maskDistance(const Grid &g, const std::vector<char> &blocked, double band, 
 /// place. The minimum over the departure disc cannot lower phi below its least value, so without this the inside of
 /// the front flattens to the initial disc's depth and the cubic sees a kinked profile ([LollaLevelSet] reinitialise
 /// periodically too).
-void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std::uint32_t> &tiles, int tx,
-                  double band, std::vector<double> &dist)
+void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std::uint32_t> &tiles, int tx, double band,
+                  std::vector<double> &dist)
 {
     if (dist.size() != g.size())
         dist.assign(g.size(), kInf);
@@ -118,7 +118,7 @@ void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std
                             d = std::min(d, segDist(g.x(ii), g.y(jj), px[sgi], py[sgi], px[sgi + 1], py[sgi + 1]));
                         }
                 }
-                if (n == 4)  // a saddle: also the other pairing's first segment keeps both branches close
+                if (n == 4) // a saddle: also the other pairing's first segment keeps both branches close
                     for (int jj = j; jj <= j + 1; ++jj)
                         for (int ii = i; ii <= i + 1; ++ii)
                         {
@@ -177,5 +177,5 @@ bool waterConnects(const SolverGrid &sg, Point2 a, Point2 b, int reach)
     }
     return false;
 }
-}  // namespace levelset_detail
-}  // namespace ompl_glider
+} // namespace levelset_detail
+} // namespace ompl_glider

@@ -125,4 +125,4 @@ double defaultLevelSetResolution(const GliderContext &ctx)
     const Region &r = ctx.region;
     return std::max(r.xMax - r.xMin, r.yMax - r.yMin) / 200.0;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

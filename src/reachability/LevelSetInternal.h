@@ -41,22 +41,10 @@ struct Grid
     double x0{0}, y0{0}, h{1};
     int nx{0}, ny{0};
 
-    std::size_t index(int i, int j) const
-    {
-        return static_cast<std::size_t>(j) * nx + i;
-    }
-    std::size_t size() const
-    {
-        return static_cast<std::size_t>(nx) * ny;
-    }
-    double x(int i) const
-    {
-        return x0 + i * h;
-    }
-    double y(int j) const
-    {
-        return y0 + j * h;
-    }
+    std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * nx + i; }
+    std::size_t size() const { return static_cast<std::size_t>(nx) * ny; }
+    double x(int i) const { return x0 + i * h; }
+    double y(int j) const { return y0 + j * h; }
     bool inside(double px, double py) const
     {
         return px >= x0 && py >= y0 && px <= x0 + (nx - 1) * h && py <= y0 + (ny - 1) * h;
@@ -141,8 +129,8 @@ struct SparseDistance
 struct SolverGrid
 {
     Grid grid;
-    double band{0.3};             ///< half-width of the narrow band (the field's length unit)
-    std::vector<double> staticD;  ///< static forbidden set (polygons, land, region): signed distance, -band outside
+    double band{0.3};            ///< half-width of the narrow band (the field's length unit)
+    std::vector<double> staticD; ///< static forbidden set (polygons, land, region): signed distance, -band outside
     /// A time-windowed zone and its distance (applied while the zone is closed).
     struct Zone
     {
@@ -150,8 +138,8 @@ struct SolverGrid
         SparseDistance d;
     };
     std::vector<Zone> zones;
-    std::vector<const IceZone *> ice;         ///< ice zones kept out at their drifted position
-    std::vector<const Environment *> others;  ///< environments known only by pointFree()
+    std::vector<const IceZone *> ice;        ///< ice zones kept out at their drifted position
+    std::vector<const Environment *> others; ///< environments known only by pointFree()
 };
 
 /// Signed distance of polygon p shifted by (sx, sy) at the nodes within band of its bounding box; values below
@@ -175,29 +163,29 @@ void maskDistance(const Grid &g, const std::vector<char> &blocked, double band, 
 /// The minimum over the departure disc cannot lower phi below its least value, so without this the inside of the
 /// front flattens to the initial disc's depth and the cubic sees a kinked profile ([LollaLevelSet] reinitialise
 /// periodically too).
-void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std::uint32_t> &tiles, int tx,
-                  double band, std::vector<double> &dist);
+void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std::uint32_t> &tiles, int tx, double band,
+                  std::vector<double> &dist);
 
 /// What the backtracking needs besides the arrival field.
 struct BacktrackSetup
 {
-    const CurrentField *field{nullptr};        ///< the current (its calls count as the solve's)
-    const Environment *environment{nullptr};  ///< forbidden regions checked by the local repair (may be null)
-    double speed{0.0};                        ///< V
-    double depth{0.0};                        ///< z of the current's evaluations
-    double dt{0.0};                           ///< the solve's time step
-    double dt0{0.0};                          ///< the initial disc's time (the path ends at t0 + dt0 then jumps)
+    const CurrentField *field{nullptr};      ///< the current (its calls count as the solve's)
+    const Environment *environment{nullptr}; ///< forbidden regions checked by the local repair (may be null)
+    double speed{0.0};                       ///< V
+    double depth{0.0};                       ///< z of the current's evaluations
+    double dt{0.0};                          ///< the solve's time step
+    double dt0{0.0};                         ///< the initial disc's time (the path ends at t0 + dt0 then jumps)
 };
 
 /// Time-optimal path from @p start (at r.t0) to @p goal (at r.goalTime), backtracked through r's arrival field on
 /// grid @p g (see LevelSetSolver); the path in forward time order.
 std::vector<TimedPoint> backtrackPath(const Reachability &r, const Grid &g, Point2 start, Point2 goal,
                                       const BacktrackSetup &s);
-}  // namespace levelset_detail
+} // namespace levelset_detail
 
 /// The solver's grid and forbidden set (SolverGrid), prepared by the constructor (LevelSetGrid.cpp) and read by
 /// solve() (LevelSet.cpp).
 struct LevelSetSolver::Impl : levelset_detail::SolverGrid
 {
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -28,8 +28,9 @@ using TimeState = TimeSE2StateSpace::StateType;
 /// The steering directions along a backtracked level-set path: the path followed by held headings piece
 /// by piece (targets about @p spacing apart; where a piece cannot be flown, e.g. where the backtrack broke off near
 /// the start, an isochrone search from where the glider stopped links it to the goal: followWithRestarts()), then
-/// refined whole by direct shooting where that is faster and still valid. When the path cannot be followed, the steering directions themselves (the bearing
-/// of the velocity through the water, (p1 - p0) / dt - c, between backtracked points) are refined instead.
+/// refined whole by direct shooting where that is faster and still valid. When the path cannot be followed, the
+/// steering directions themselves (the bearing of the velocity through the water, (p1 - p0) / dt - c, between
+/// backtracked points) are refined instead.
 RefinedHeadings levelSetHeadings(const GliderContext &ctx, const std::vector<TimedPoint> &path, Point2 goal,
                                  double tolerance, double tEnd, double spacing, unsigned threads,
                                  const ompl::base::PlannerTerminationCondition &ptc)
@@ -48,8 +49,8 @@ RefinedHeadings levelSetHeadings(const GliderContext &ctx, const std::vector<Tim
     s.threads = threads;
     s.step = headingCheckStep(path.back().t - path.front().t, ctx);
     ThreadPool pool(threads);
-    RefinedHeadings tracked = followWithRestarts(path, nullptr, goal, ctx, s, spacing,
-                                                 makeIsochroneSetup(ctx, goal, s.radius), pool, ptc);
+    RefinedHeadings tracked =
+        followWithRestarts(path, nullptr, goal, ctx, s, spacing, makeIsochroneSetup(ctx, goal, s.radius), pool, ptc);
     s.step = 0.0;
     HeadingRoute route;
     if (tracked.ok)
@@ -76,7 +77,7 @@ RefinedHeadings levelSetHeadings(const GliderContext &ctx, const std::vector<Tim
         refined.why = tracked.why + "; " + refined.why;
     return refined;
 }
-}  // namespace
+} // namespace
 
 void LevelSetPlanner::prepare(const PipelineSetup &setup)
 {
@@ -94,8 +95,7 @@ void LevelSetPlanner::prepare(const PipelineSetup &setup)
     // the steps the glider's own speed needs: within the limits, the currents are at fault (a forecast's velocities
     // read wrong: units, scale_factor, a fill value not declared), not the planner's settings
     const double calmSteps = std::isfinite(tEnd) && ctx_->speed() > 0.0
-                                 ? std::ceil(std::max(tEnd - setup.departure, 0.0) /
-                                             (params_.cfl * h / ctx_->speed()))
+                                 ? std::ceil(std::max(tEnd - setup.departure, 0.0) / (params_.cfl * h / ctx_->speed()))
                                  : std::numeric_limits<double>::infinity();
     if (calmSteps <= kMaxLevelSetSteps && nodes * calmSteps <= kMaxLevelSetWork && ctx_->maxCurrent() > ctx_->speed())
         throw Error(setup.where("current") +
@@ -144,8 +144,6 @@ NoPath LevelSetPlanner::noPathReason(const ompl::base::PlannerStatus &status, do
     }
     return n;
 }
-
-
 
 LevelSetPlanner::LevelSetPlanner(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<const GliderContext> ctx)
     : ompl::base::Planner(si, "LevelSet"), ctx_(std::move(ctx))
@@ -207,7 +205,7 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
     LevelSetParams p = params_;
     p.cellSize = resolution_ > 0.0 ? resolution_ : defaultLevelSetResolution(*ctx_);
     usedResolution_ = p.cellSize;
-    p.clearance = 0.5 * p.cellSize;  // the legs between backtracked points must clear the forbidden regions
+    p.clearance = 0.5 * p.cellSize; // the legs between backtracked points must clear the forbidden regions
     const LevelSetSolver solver(ctx_, p);
     const double tEnd = std::min(r.tMax, ctx_->field->timeEnd());
     headings_ = HeadingRoute();
@@ -244,15 +242,16 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
     {
         // no straight legs: the steering directions along the backtracked path, as held headings
         OMPL_INFORM("%s: the backtracked path cannot be flown as straight legs (resolution %g): %s; flying its "
-                    "headings", getName().c_str(), p.cellSize, why.c_str());
+                    "headings",
+                    getName().c_str(), p.cellSize, why.c_str());
         const auto *goal = pdef_->getGoal()->as<ompl::base::GoalRegion>();
-        const RefinedHeadings h =
-            levelSetHeadings(*ctx_, last_.path, Point2{gx, gy}, goal->getThreshold(), tEnd, 4.0 * p.cellSize,
-                             params_.threads, ptc);
+        const RefinedHeadings h = levelSetHeadings(*ctx_, last_.path, Point2{gx, gy}, goal->getThreshold(), tEnd,
+                                                   4.0 * p.cellSize, params_.threads, ptc);
         if (!h.ok)
         {
             reason_ = "the level set reached the goal, but neither straight legs nor its headings could be flown to "
-                      "it: " + why + "; " + h.why;
+                      "it: " +
+                      why + "; " + h.why;
             return ompl::base::PlannerStatus::ABORT;
         }
         headings_ = h.route;
@@ -309,4 +308,4 @@ std::optional<FirstArrival> LevelSetPlanner::firstArrival(const PipelineSetup &s
     out.budgetSpent = r.stats.budgetSpent;
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -18,7 +18,7 @@ namespace
 {
 constexpr double kTwoPi = 6.283185307179586;
 
-using namespace dormand_prince;  // the tableau (execution/DormandPrince.h)
+using namespace dormand_prince; // the tableau (execution/DormandPrince.h)
 
 /// Step-size control after a rejected step (scaled error err > 1, or not finite): shrinks h; false when h became
 /// too small to proceed at time t (a singular field).
@@ -53,7 +53,7 @@ void stepLoop(double duration, int maxSteps, Attempt &&attempt, Accept &&accept)
         if (!(err <= 1.0))
         {
             if (!shrinkStep(err, t, h))
-                break;  // cannot proceed (singular field)
+                break; // cannot proceed (singular field)
             continue;
         }
         accept(t, h);
@@ -86,10 +86,10 @@ void illinoisUpdate(double &a, double &fa, double &b, double &fb, double c, doub
     b = c;
     fb = fc;
 }
-}  // namespace
+} // namespace
 
 ZermeloReference::ZermeloReference(std::shared_ptr<const CurrentField> field, ZermeloParams params)
-  : field_(std::move(field)), params_(params)
+    : field_(std::move(field)), params_(params)
 {
     if (!field_)
         throw Error("ZermeloReference: no current field given");
@@ -161,7 +161,7 @@ std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, doubl
     Y sNew{};
     auto g = [&](const Y &st, const Y &d) { return (st.x - gx) * d.x + (st.y - gy) * d.y; };
     double gPrev = g(s, k1);
-    bool left = false, stopped = false;  // left the admissible set; too far from the goal since
+    bool left = false, stopped = false; // left the admissible set; too far from the goal since
     const double D = std::hypot(gx - x1, gy - y1);
     auto attempt = [&](double t, double h, double &err) {
         if (stopped || t0 + t + h > tEndField)
@@ -171,11 +171,11 @@ std::vector<ClosestApproach> ZermeloReference::shoot(double x1, double y1, doubl
     };
     auto accept = [&](double t, double h) {
         if (params_.admissible && !left && !params_.admissible(s.x, s.y, t0 + t, sNew.x, sNew.y, t0 + t + h))
-            left = true;  // no solution past here; approaches near the goal still bracket the headings
+            left = true; // no solution past here; approaches near the goal still bracket the headings
         const double away = std::hypot(sNew.x - gx, sNew.y - gy);
         if ((left && away > D) ||
             (params_.groundSpeedBound > 0.0 && away > params_.groundSpeedBound * (maxTime - t - h)))
-            stopped = true;  // too far from the goal to bracket it, or to reach it in the time left
+            stopped = true; // too far from the goal to bracket it, or to reach it in the time left
         const Y kNew = rhs(t0 + t + h, sNew);
         const double gNew = g(sNew, kNew);
         if (gPrev < 0.0 && gNew >= 0.0)
@@ -380,4 +380,4 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
     }
     return sol;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

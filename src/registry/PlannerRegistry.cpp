@@ -86,7 +86,8 @@ PlannerEntry isochrone()
     PlannerEntry e;
     e.name = "Isochrone";
     e.aliases = {};
-    e.description = "held headings for strong currents: isochrone fronts on a heading lattice, then shooting refinement";
+    e.description =
+        "held headings for strong currents: isochrone fronts on a heading lattice, then shooting refinement";
     e.family = PlannerFamily::Headings;
     e.make = [](const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<const GliderContext> &ctx) {
         return std::make_shared<IsochronePlanner>(si, ctx);
@@ -105,7 +106,7 @@ PlannerEntry stint(StintMethod method, std::vector<std::string> aliases, const s
     };
     return e;
 }
-}  // namespace
+} // namespace
 
 namespace
 {
@@ -131,14 +132,15 @@ std::deque<PlannerEntry> &entries()
         sampling<og::LBTRRT>("LBTRRT", {}, "OMPL lower-bound tree RRT"),
         sampling<og::BITstar>("BITstar", {"BIT*"}, "OMPL BIT*"),
         sampling<og::SST>("SST", {}, "OMPL stable sparse RRT"),
-        stint(StintMethod::InitOptim, {"Init-Optim", "initoptim"}, "stints: bearings optimised from CTS-A*'s (needs a stints section)"),
+        stint(StintMethod::InitOptim, {"Init-Optim", "initoptim"},
+              "stints: bearings optimised from CTS-A*'s (needs a stints section)"),
         stint(StintMethod::Optim, {"Optim"}, "stints: bearings optimised from the direct bearings"),
         stint(StintMethod::CtsAStar, {"CTS-A*", "ctsastar"}, "stints: A* over a bearing rose per stint"),
         stint(StintMethod::Direct, {"direct_to_goal"}, "stints: the bearing to the goal at every surfacing"),
     };
     return entries;
 }
-}  // namespace
+} // namespace
 
 const std::deque<PlannerEntry> &plannerRegistry()
 {
@@ -222,4 +224,4 @@ const PlannerEntry &plannerOfFamily(PlannerFamily family)
         return *e;
     throw Error("no registered planner of family " + plannerFamilyName(family));
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -71,12 +71,12 @@ BearingOptimizerResult optimiseBearings(const StintSimulator &sim, std::vector<d
     catch (const nlopt::roundoff_limited &)
     {
     }
-    catch (const std::runtime_error &)  // NLopt's generic failure: the best point evaluated is kept
+    catch (const std::runtime_error &) // NLopt's generic failure: the best point evaluated is kept
     {
     }
     out.plan = sim.simulate(best);
-    for (double &b : out.plan.bearings)  // reported in [0, 360) (flown as optimised)
+    for (double &b : out.plan.bearings) // reported in [0, 360) (flown as optimised)
         b = std::fmod(std::fmod(b, 360.0) + 360.0, 360.0);
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -62,15 +62,15 @@ std::string infeasibleLegReason(const GliderContext &ctx, const std::vector<Time
     const std::string env = ctx.environment ? ctx.environment->whyLegBlocked(path[a].x, path[a].y, t, path[a + 1].x,
                                                                              path[a + 1].y, t + 1e-9)
                                             : std::string();
-    return "leg from (" + text::number(path[a].x) + ", " + text::number(path[a].y) + ") at time " +
-           text::number(t) + " (level set " + text::number(path[a].t) + ") to the next point is infeasible" +
+    return "leg from (" + text::number(path[a].x) + ", " + text::number(path[a].y) + ") at time " + text::number(t) +
+           " (level set " + text::number(path[a].t) + ") to the next point is infeasible" +
            (env.empty() ? "" : ": " + env);
 }
 
-}  // namespace
+} // namespace
 
-std::vector<TimedPoint> legsAlongCurve(const GliderContext &ctx, const std::vector<TimedPoint> &path,
-                                             double tolerance, std::string *why)
+std::vector<TimedPoint> legsAlongCurve(const GliderContext &ctx, const std::vector<TimedPoint> &path, double tolerance,
+                                       std::string *why)
 {
     std::vector<TimedPoint> out;
     if (path.size() < 2)
@@ -155,4 +155,4 @@ std::vector<TimedPoint> legsAlongCurve(const GliderContext &ctx, const std::vect
     }
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -21,11 +21,11 @@ namespace
 struct Shooting
 {
     const GliderContext *ctx;
-    HeadingRoute base;  // resampled route; its frozen segments keep their bearings
+    HeadingRoute base; // resampled route; its frozen segments keep their bearings
     unsigned firstFree{0};
     double T0{1.0};
     Point2 goal;
-    double scale{1.0};  // length scale of the constraint (the start-goal distance)
+    double scale{1.0}; // length scale of the constraint (the start-goal distance)
     DiveSettings dive;
     unsigned flights{0};
     ThreadPool *pool{nullptr};
@@ -79,7 +79,8 @@ struct Shooting
             std::vector<double> xp(x, x + n);
             steps[j] = 1e-7 * std::max(1.0, std::abs(x[j]));
             xp[j] = x[j] + steps[j];
-            perturbed[j] = flyHeadingRoute(routeOf(xp.data(), n), *ctx->field, nullptr, diveOf(xp.data(), n), false).ends;
+            perturbed[j] =
+                flyHeadingRoute(routeOf(xp.data(), n), *ctx->field, nullptr, diveOf(xp.data(), n), false).ends;
         });
         flights += n;
     }
@@ -141,8 +142,7 @@ void regionConstraint(unsigned m, double *result, unsigned n, const double *x, d
 
 /// Newton on the last segment's bearing and duration so that the flight at @p step ends at the goal (the SLSQP
 /// flights use a coarser step; this closes the remaining gap at the step the route is checked at).
-HeadingRoute polish(HeadingRoute r, Point2 goal, const GliderContext &ctx, double depth, double step,
-                    unsigned &flights)
+HeadingRoute polish(HeadingRoute r, Point2 goal, const GliderContext &ctx, double depth, double step, unsigned &flights)
 {
     DiveSettings d;
     d.speed = ctx.speed();
@@ -181,7 +181,7 @@ bool inRegion(const Region &r, const TimedPoint &p)
 {
     return p.x >= r.xMin && p.x <= r.xMax && p.y >= r.yMin && p.y <= r.yMax;
 }
-}  // namespace
+} // namespace
 
 double headingCheckStep(double duration, const GliderContext &ctx)
 {
@@ -225,7 +225,9 @@ HeadingFlight verifyHeadingRoute(const HeadingRoute &route, const GliderContext 
     DiveSettings dive;
     dive.speed = ctx.speed();
     dive.depth = settings.depth;
-    dive.step = settings.step > 0.0 ? settings.step : route.step > 0.0 ? route.step : headingCheckStep(route.duration(), ctx);
+    dive.step = settings.step > 0.0 ? settings.step
+                : route.step > 0.0  ? route.step
+                                    : headingCheckStep(route.duration(), ctx);
     // the whole route is flown (it ends at the goal); its end must lie within the radius
     HeadingFlight f = flyHeadingRoute(route, *ctx.field, ctx.environment.get(), dive, true);
     const TimedPoint &end = f.ends.back();
@@ -340,4 +342,4 @@ RefinedHeadings refineHeadingRoute(const HeadingRoute &initial, Point2 goal, con
     out.flights = s.flights;
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

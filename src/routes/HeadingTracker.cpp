@@ -12,8 +12,8 @@ namespace ompl_glider
 namespace
 {
 /// One held heading from (x, y, t) to the target (solveHeldHeading() with the planner's RK4 flights).
-double flyTo(const GliderContext &ctx, const DiveSettings &dive, const TimedPoint &from, Point2 target,
-             double &bearing, double &duration)
+double flyTo(const GliderContext &ctx, const DiveSettings &dive, const TimedPoint &from, Point2 target, double &bearing,
+             double &duration)
 {
     const auto endOf = [&](double b, double d) {
         HeadingRoute r;
@@ -37,10 +37,11 @@ double bearing0(const GliderContext &ctx, const HeadingRefineSettings &settings,
                 double tq)
 {
     const double duration = std::max(tq - at.t, 1e-12);
-    const Velocity c = ctx.field->velocity(0.5 * (at.x + q.x), 0.5 * (at.y + q.y), settings.depth, at.t + 0.5 * duration);
+    const Velocity c =
+        ctx.field->velocity(0.5 * (at.x + q.x), 0.5 * (at.y + q.y), settings.depth, at.t + 0.5 * duration);
     return bearingOf((q.x - at.x) / duration - c.u, (q.y - at.y) / duration - c.v);
 }
-}  // namespace
+} // namespace
 
 double solveHeldHeading(const std::function<Point2(double, double)> &miss, double tolerance, double &bearing,
                         double &duration)
@@ -120,9 +121,9 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
         {
             const Point2 q = target + 1 == path.size() ? goal : Point2{path[target].x, path[target].y};
             double duration = duration0(at, path[target].t, total);
-            double bearing = flownBearings && target == from + 1 && target < flownBearings->size() ?
-                                 (*flownBearings)[target] :
-                                 bearing0(ctx, settings, at, q, path[target].t);
+            double bearing = flownBearings && target == from + 1 && target < flownBearings->size()
+                                 ? (*flownBearings)[target]
+                                 : bearing0(ctx, settings, at, q, path[target].t);
             if (flyTo(ctx, dive, at, q, bearing, duration) <= tolerance)
             {
                 route.segments.push_back({bearing, duration});
@@ -136,7 +137,8 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
                 HeadingRoute piece;
                 piece.start = {at.x, at.y};
                 piece.departure = at.t;
-                piece.segments.push_back({bearing0(ctx, settings, at, q, path[target].t), duration0(at, path[target].t, total)});
+                piece.segments.push_back(
+                    {bearing0(ctx, settings, at, q, path[target].t), duration0(at, path[target].t, total)});
                 HeadingRefineSettings sub = settings;
                 sub.segments = 16;
                 sub.radius = tolerance;
@@ -157,8 +159,8 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
         if (!flown)
         {
             OMPL_DEBUG("tracking: %u pieces shot (%u flights)", shotPieces, pieceFlights);
-            out.why = "no held heading flies from (" + std::to_string(at.x) + ", " + std::to_string(at.y) + ") at t = " +
-                      std::to_string(at.t) + " to the path's next point";
+            out.why = "no held heading flies from (" + std::to_string(at.x) + ", " + std::to_string(at.y) +
+                      ") at t = " + std::to_string(at.t) + " to the path's next point";
             out.route = std::move(route);
             out.stoppedAt = at;
             return out;
@@ -185,7 +187,7 @@ bool reaimOnReflight(HeadingRoute &route, Point2 goal, const CurrentField &field
     if (route.segments.empty() || !(radius > 0.0))
         return false;
     ReflightSettings s = settings;
-    s.radius = 0.0;  // every segment flown to its end: the last one must end on the goal
+    s.radius = 0.0; // every segment flown to its end: the last one must end on the goal
     TimedPoint from{route.start.x, route.start.y, route.departure};
     HeadingRoute prefix = route;
     prefix.segments.pop_back();
@@ -216,4 +218,4 @@ bool reaimOnReflight(HeadingRoute &route, Point2 goal, const CurrentField &field
     flight = std::move(f);
     return true;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

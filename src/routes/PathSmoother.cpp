@@ -21,7 +21,7 @@ const TimeSE2StateSpace &timeSpace(const ompl::geometric::PathGeometric &path, c
         throw Error(std::string(who) + ": the path's state space is not an ompl_glider::TimeSE2StateSpace");
     return *space;
 }
-}  // namespace
+} // namespace
 
 double legTravelTime(const GliderContext &ctx, double x1, double y1, double x2, double y2, double tStart)
 {
@@ -43,10 +43,9 @@ std::vector<TimedPoint> retimeWaypoints(const GliderContext &ctx, std::vector<Ti
     for (std::size_t i = 1; i < waypoints.size(); ++i)
     {
         const double tPrev = waypoints[i - 1].t;
-        waypoints[i].t = std::isfinite(tPrev) ?
-                             tPrev + legTravelTime(ctx, waypoints[i - 1].x, waypoints[i - 1].y, waypoints[i].x,
-                                                   waypoints[i].y, tPrev) :
-                             kInf;
+        waypoints[i].t = std::isfinite(tPrev) ? tPrev + legTravelTime(ctx, waypoints[i - 1].x, waypoints[i - 1].y,
+                                                                      waypoints[i].x, waypoints[i].y, tPrev)
+                                              : kInf;
     }
     return waypoints;
 }
@@ -108,8 +107,7 @@ std::vector<TimedPoint> improveAroundHolds(
     std::vector<TimedPoint> better = improveAroundHolds(ctx, head, improve);
     const TimedPoint &end = w.back();
     const double arrival = better.back().t;
-    if (!(arrival <= head.back().t) ||
-        !ctx.canHold(end.x, end.y, arrival, end.t, ctx.holdTimeStep(), 4) ||
+    if (!(arrival <= head.back().t) || !ctx.canHold(end.x, end.y, arrival, end.t, ctx.holdTimeStep(), 4) ||
         (ctx.environment && !ctx.environment->legFree(end.x, end.y, arrival, end.x, end.y, end.t)))
         return w;
     better.push_back(end);
@@ -146,7 +144,7 @@ std::vector<TimedPoint> mergeKeepingSchedule(const GliderContext &ctx, const std
         if (!(dur > 0.0) || !std::isfinite(dur) || b.t > ctx.region.tMax)
             return false;
         if (a.x == b.x && a.y == b.y)
-            return false;  // a hold: keep it as it is
+            return false; // a hold: keep it as it is
         const ArrivalWindow w = ctx.travel->arrivalWindow(a.x, a.y, b.x, b.y, a.t);
         if (!(std::isfinite(w.earliest) && w.earliest * (1.0 - 1e-9) <= dur && dur <= w.latest * (1.0 + 1e-9)))
             return false;
@@ -173,7 +171,7 @@ bool noLater(double a, double b)
 {
     return a <= b + kSmoothingTieTolerance * std::fabs(b);
 }
-}  // namespace
+} // namespace
 
 PathSmoother::PathSmoother(std::shared_ptr<const GliderContext> ctx) : ctx_(std::move(ctx))
 {
@@ -202,32 +200,32 @@ SmoothingResult PathSmoother::smooth(const std::vector<TimedPoint> &input) const
         res.costFunctionCalls = ctx_->travel->costFunctionCalls() - cfcH;
         return res;
     }
-    const double t0 = input.front().t;  // the departure
+    const double t0 = input.front().t; // the departure
     const GliderContext &ctx = *ctx_;
     const std::uint64_t cfc0 = ctx.travel->costFunctionCalls();
     SmoothingResult res;
     res.waypointsBefore = input.size();
     std::vector<TimedPoint> wp = retimeWaypoints(ctx, input, t0);
     res.arrivalBefore = wp.back().t;
-    double best = res.arrivalBefore;  // arrival at the goal of the current candidate path (TT[end])
+    double best = res.arrivalBefore; // arrival at the goal of the current candidate path (TT[end])
     if (wp.size() > 2 && std::isfinite(best))
     {
         auto leg = [&](const TimedPoint &a, const TimedPoint &b, double t) {
             return legTravelTime(ctx, a.x, a.y, b.x, b.y, t);
         };
-        while (wp.size() > 2)  // loop I
+        while (wp.size() > 2) // loop I
         {
             ++res.passes;
             const std::size_t n = wp.size();
             std::vector<TimedPoint> out{wp[0]};
             std::size_t iStart = 0;
-            double t1 = wp[1].t - wp[0].t;  // time from WP[i_start] to WP[i_path - 1] along the candidate path
-            for (std::size_t iPath = 2; iPath < n; ++iPath)  // loop II
+            double t1 = wp[1].t - wp[0].t; // time from WP[i_start] to WP[i_path - 1] along the candidate path
+            for (std::size_t iPath = 2; iPath < n; ++iPath) // loop II
             {
                 const double tS = wp[iStart].t;
                 const double t2 = leg(wp[iPath - 1], wp[iPath], tS + t1);
-                const double tSum = leg(wp[iStart], wp[iPath], tS);  // III
-                bool merge = std::isfinite(tSum) && noLater(tS + tSum, tS + t1 + t2);  // III, IV
+                const double tSum = leg(wp[iStart], wp[iPath], tS);                   // III
+                bool merge = std::isfinite(tSum) && noLater(tS + tSum, tS + t1 + t2); // III, IV
                 if (merge)
                 {
                     // V: the rest of the path from the merged arrival must reach the goal no later.
@@ -235,7 +233,7 @@ SmoothingResult PathSmoother::smooth(const std::vector<TimedPoint> &input) const
                     for (std::size_t k = iPath + 1; k < n && std::isfinite(tEnd); ++k)
                         tEnd += leg(wp[k - 1], wp[k], tEnd);
                     if (noLater(tEnd, best))
-                        best = std::min(best, tEnd);  // the minimum: the tolerance never accumulates
+                        best = std::min(best, tEnd); // the minimum: the tolerance never accumulates
                     else
                         merge = false;
                 }
@@ -246,7 +244,7 @@ SmoothingResult PathSmoother::smooth(const std::vector<TimedPoint> &input) const
                 }
                 else
                 {
-                    wp[iPath - 1].t = tS + t1;  // VI: keep WP[i_path - 1], merging restarts there
+                    wp[iPath - 1].t = tS + t1; // VI: keep WP[i_path - 1], merging restarts there
                     wp[iPath].t = tS + t1 + t2;
                     iStart = iPath - 1;
                     t1 = t2;
@@ -286,7 +284,7 @@ SmoothingResult PathSmoother::smooth(ompl::geometric::PathGeometric &path) const
     // The waypoints cannot be flown at full speed from the departure (the path waits or flies slow legs): merge
     // keeping the schedule, then try full speed on the fewer waypoints.
     const std::vector<TimedPoint> merged = mergeKeepingSchedule(*ctx_, in);
-    SmoothingResult fast = smooth(merged);  // merged.front() is in.front()
+    SmoothingResult fast = smooth(merged); // merged.front() is in.front()
     if (std::isfinite(fast.arrivalAfter) && noLater(fast.arrivalAfter, in.back().t))
         res = fast;
     else
@@ -302,4 +300,4 @@ SmoothingResult PathSmoother::smooth(ompl::geometric::PathGeometric &path) const
         waypointsToPath(res.waypoints, path);
     return res;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

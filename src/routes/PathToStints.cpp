@@ -30,7 +30,7 @@ double progressTime(const std::vector<TimedPoint> &path, double x, double y)
     }
     return tBest;
 }
-}  // namespace
+} // namespace
 
 PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<TimedPoint> &path,
                                   const BearingOptimizerParams &params)
@@ -106,8 +106,8 @@ PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<T
     const BearingOptimizerResult opt = optimiseBearings(sim, bearings, params);
     out.evaluations = opt.evaluations;
     // the better of the two, a plan that arrives before one that does not
-    const bool optBetter = opt.plan.reached != out.tracking.reached ? opt.plan.reached
-                                                                    : opt.plan.cost <= out.tracking.cost;
+    const bool optBetter =
+        opt.plan.reached != out.tracking.reached ? opt.plan.reached : opt.plan.cost <= out.tracking.cost;
     out.plan = optBetter ? opt.plan : out.tracking;
     if (out.plan.reached)
     {
@@ -116,4 +116,4 @@ PathToStintsResult stintsFromPath(const StintSimulator &sim, const std::vector<T
     }
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -12,9 +12,8 @@ namespace ompl_glider
 StintSimulator::StintSimulator(std::shared_ptr<const CurrentField> field, std::shared_ptr<const Environment> forbidden,
                                double speed, double maxCurrent, Point2 start, double t0, Point2 goal,
                                StintSettings settings)
-    : field_(std::move(field)), forbidden_(std::move(forbidden)), speed_(speed), maxCurrent_(maxCurrent),
-      start_(start), t0_(t0), goal_(goal), settings_(settings),
-      flown_(std::make_shared<std::atomic<std::uint64_t>>(0))
+    : field_(std::move(field)), forbidden_(std::move(forbidden)), speed_(speed), maxCurrent_(maxCurrent), start_(start),
+      t0_(t0), goal_(goal), settings_(settings), flown_(std::make_shared<std::atomic<std::uint64_t>>(0))
 {
     if (!field_)
         throw Error("StintSimulator: no current field");
@@ -40,8 +39,8 @@ DiveEnd StintSimulator::flyStint(double x, double y, double t, double bearing, s
 {
     flown_->fetch_add(1, std::memory_order_relaxed);
     const Point2 h = bearingVector(bearing);
-    return flyHeading(x, y, t, h.x, h.y, std::min(t + settings_.duration, endTime()), *field_, forbidden_.get(),
-                      dive_, track);
+    return flyHeading(x, y, t, h.x, h.y, std::min(t + settings_.duration, endTime()), *field_, forbidden_.get(), dive_,
+                      track);
 }
 
 double StintSimulator::bearingToGoal(double x, double y) const
@@ -52,8 +51,7 @@ double StintSimulator::bearingToGoal(double x, double y) const
 namespace
 {
 /// Flies stints from the start, the bearing of each chosen by @p next(k, x, y, t) (k = stint index).
-template <class Next>
-StintPlan fly(const StintSimulator &sim, const Next &next, std::size_t count, bool keepTrack)
+template <class Next> StintPlan fly(const StintSimulator &sim, const Next &next, std::size_t count, bool keepTrack)
 {
     StintPlan p;
     double x = sim.start().x, y = sim.start().y, t = sim.t0();
@@ -94,18 +92,20 @@ StintPlan fly(const StintSimulator &sim, const Next &next, std::size_t count, bo
     p.cost = sim.cost(p);
     return p;
 }
-}  // namespace
+} // namespace
 
 StintPlan StintSimulator::simulate(const std::vector<double> &bearings, bool keepTrack) const
 {
-    return fly(*this, [&](std::size_t k, double, double, double) { return bearings[k]; },
-               std::min(bearings.size(), settings_.stintCount()), keepTrack);
+    return fly(
+        *this, [&](std::size_t k, double, double, double) { return bearings[k]; },
+        std::min(bearings.size(), settings_.stintCount()), keepTrack);
 }
 
 StintPlan StintSimulator::direct() const
 {
-    return fly(*this, [&](std::size_t, double x, double y, double) { return bearingToGoal(x, y); },
-               settings_.stintCount(), true);
+    return fly(
+        *this, [&](std::size_t, double x, double y, double) { return bearingToGoal(x, y); }, settings_.stintCount(),
+        true);
 }
 
 double StintSimulator::cost(const StintPlan &p) const
@@ -116,7 +116,7 @@ double StintSimulator::cost(const StintPlan &p) const
         return p.remainingDistance + maxReach() * lost;
     if (p.reached)
         return p.arrivalTime - t0_;
-    if (!std::isfinite(p.closestDistance))  // a plan that has not flown (no radius is checked by the settings)
+    if (!std::isfinite(p.closestDistance)) // a plan that has not flown (no radius is checked by the settings)
         return settings_.missionDuration + p.remainingDistance / maxReach() + lost;
     // a miss costs the time of the closest approach plus the distance left to the radius at a tenth of the speed
     // through water: continuous where a plan starts to reach the radius, and steep enough that just missing early
@@ -131,4 +131,4 @@ double StintSimulator::lowerBound(double x, double y, double t) const
         return std::max(0.0, d - maxReach() * std::max(0.0, endTime() - t));
     return (t - t0_) + std::max(0.0, d - settings_.radius) / maxReach();
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

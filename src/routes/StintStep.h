@@ -18,4 +18,4 @@ inline bool flyOneStint(const StintSimulator &sim, double &x, double &y, double 
     t = e.t;
     return e.grounded || e.reached;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

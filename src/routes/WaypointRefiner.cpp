@@ -23,10 +23,7 @@ struct Search
     unsigned evaluations{0};
     unsigned accepted{0};
 
-    bool exhausted() const
-    {
-        return evaluations >= budget || (terminate && *terminate && (*terminate)());
-    }
+    bool exhausted() const { return evaluations >= budget || (terminate && *terminate && (*terminate)()); }
 
     double cost(const std::vector<TimedPoint> &wp)
     {
@@ -105,7 +102,7 @@ struct Search
         std::vector<double> step(n, s0);
         const double sMax = 4.0 * s0;
         const std::size_t bumpRadius = bumpFraction > 0.0 ? static_cast<std::size_t>(bumpFraction * double(n)) : 0;
-        std::vector<TimedPoint> timed = retimeWaypoints(ctx, wp, t0);  // arrival times of the current path
+        std::vector<TimedPoint> timed = retimeWaypoints(ctx, wp, t0); // arrival times of the current path
         while (!exhausted())
         {
             bool active = false;
@@ -142,8 +139,8 @@ struct Search
                 // A single waypoint cannot move a whole stretch of path without kinks: try a bump of the
                 // neighbours too (weights falling linearly to zero at bumpRadius + 1 waypoints away).
                 for (int sgn = 1; !improved && bumpRadius > 0 && sgn >= -1 && !exhausted(); sgn -= 2)
-                    improved = tryMove(wp, timed, best, i, bumpRadius, sgn * step[i] * dirs[0][0],
-                                       sgn * step[i] * dirs[0][1]);
+                    improved =
+                        tryMove(wp, timed, best, i, bumpRadius, sgn * step[i] * dirs[0][0], sgn * step[i] * dirs[0][1]);
                 step[i] = improved ? std::min(sMax, 2.0 * step[i]) : 0.5 * step[i];
             }
             if (!active)
@@ -175,10 +172,10 @@ double meanLeg(const std::vector<TimedPoint> &wp)
 {
     return wp.size() > 1 ? pathLength(wp) / static_cast<double>(wp.size() - 1) : 0.0;
 }
-}  // namespace
+} // namespace
 
 WaypointRefiner::WaypointRefiner(std::shared_ptr<const GliderContext> ctx, RefinerParams params)
-  : ctx_(std::move(ctx)), params_(params)
+    : ctx_(std::move(ctx)), params_(params)
 {
     if (!ctx_ || !ctx_->field || !ctx_->travel)
         throw Error("WaypointRefiner: the GliderContext must be non-null with a field and a travel-time calculator");
@@ -212,7 +209,7 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedPoint> &input) c
         res.costFunctionCalls = ctx_->travel->costFunctionCalls() - cfcH;
         return res;
     }
-    const double t0 = input.front().t;  // the departure
+    const double t0 = input.front().t; // the departure
     const GliderContext &ctx = *ctx_;
     const std::uint64_t cfc0 = ctx.travel->costFunctionCalls();
     RefinementResult res;
@@ -255,14 +252,14 @@ RefinementResult WaypointRefiner::refine(const std::vector<TimedPoint> &input) c
                 ++s.accepted;
             }
             else
-                break;  // gain too small for twice the waypoints: keep the shorter list
+                break; // gain too small for twice the waypoints: keep the shorter list
         }
         s.dropRedundant(wp, best);
     }
     res.waypoints = retimeWaypoints(ctx, wp, t0);
     res.waypointsAfter = res.waypoints.size();
     res.arrivalAfter = res.waypoints.back().t;
-    if (!(res.arrivalAfter <= res.arrivalBefore))  // cannot happen with a deterministic travel-time code
+    if (!(res.arrivalAfter <= res.arrivalBefore)) // cannot happen with a deterministic travel-time code
     {
         res.waypoints = retimeWaypoints(ctx, input, t0);
         res.waypointsAfter = input.size();
@@ -290,4 +287,4 @@ RefinementResult WaypointRefiner::refine(ompl::geometric::PathGeometric &path) c
     }
     return res;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

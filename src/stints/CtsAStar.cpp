@@ -16,24 +16,21 @@ struct Node
 {
     double x, y, t;
     std::size_t depth;
-    long parent;      // index into the node list, -1 for the start
-    double bearing;   // of the stint that reached this node
-    double bound;     // lower bound of the cost through it (exact for a terminal)
-    double distance;  // to the goal
-    bool terminal;    // mission end or goal reached
+    long parent;     // index into the node list, -1 for the start
+    double bearing;  // of the stint that reached this node
+    double bound;    // lower bound of the cost through it (exact for a terminal)
+    double distance; // to the goal
+    bool terminal;   // mission end or goal reached
     bool reached;
     double arrival;
-    double closest, closestTime;  // closest approach to the goal so far (with a radius)
+    double closest, closestTime; // closest approach to the goal so far (with a radius)
 };
 
 struct Key
 {
     std::size_t depth;
     long long ix, iy;
-    bool operator==(const Key &o) const
-    {
-        return depth == o.depth && ix == o.ix && iy == o.iy;
-    }
+    bool operator==(const Key &o) const { return depth == o.depth && ix == o.ix && iy == o.iy; }
 };
 
 struct KeyHash
@@ -53,7 +50,7 @@ std::vector<double> bearingsTo(const std::vector<Node> &nodes, long i)
         b.push_back(nodes[static_cast<std::size_t>(i)].bearing);
     return {b.rbegin(), b.rend()};
 }
-}  // namespace
+} // namespace
 
 CtsAStarResult ctsAStar(const StintSimulator &sim, const CtsAStarParams &params)
 {
@@ -67,17 +64,17 @@ CtsAStarResult ctsAStar(const StintSimulator &sim, const CtsAStarParams &params)
     std::vector<Node> nodes;
     const Point2 g = sim.goal();
     auto dist = [&](double x, double y) { return std::hypot(g.x - x, g.y - y); };
-    nodes.push_back({sim.start().x, sim.start().y, sim.t0(), 0, -1, 0.0, sim.lowerBound(sim.start().x, sim.start().y,
-                     sim.t0()), dist(sim.start().x, sim.start().y), false, false, 0.0,
-                     dist(sim.start().x, sim.start().y), sim.t0()});
-    using Entry = std::pair<std::pair<double, double>, long>;  // (bound, distance), node
+    nodes.push_back({sim.start().x, sim.start().y, sim.t0(), 0, -1, 0.0,
+                     sim.lowerBound(sim.start().x, sim.start().y, sim.t0()), dist(sim.start().x, sim.start().y), false,
+                     false, 0.0, dist(sim.start().x, sim.start().y), sim.t0()});
+    using Entry = std::pair<std::pair<double, double>, long>; // (bound, distance), node
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
     open.push({{nodes[0].bound, nodes[0].distance}, 0});
     std::unordered_set<Key, KeyHash> closed;
     CtsAStarResult out;
-    long best = -1;           // best terminal so far
+    long best = -1; // best terminal so far
     double bestCost = INFINITY;
-    long bestPartial = 0;     // expanded node with the best (bound, distance), for an unfinished search
+    long bestPartial = 0; // expanded node with the best (bound, distance), for an unfinished search
     bool stopped = false;
     while (!open.empty())
     {
@@ -111,8 +108,8 @@ CtsAStarResult ctsAStar(const StintSimulator &sim, const CtsAStarParams &params)
             const DiveEnd e = sim.flyStint(n.x, n.y, n.t, b);
             if (e.grounded)
                 continue;
-            Node c{e.x, e.y, e.t, n.depth + 1, i, b, 0.0, dist(e.x, e.y), false, e.reached, e.arrivalTime,
-                   n.closest, n.closestTime};
+            Node c{e.x,       e.y,           e.t,       n.depth + 1,  i, b, 0.0, dist(e.x, e.y), false,
+                   e.reached, e.arrivalTime, n.closest, n.closestTime};
             if (e.closestDistance < c.closest)
             {
                 c.closest = e.closestDistance;
@@ -121,7 +118,7 @@ CtsAStarResult ctsAStar(const StintSimulator &sim, const CtsAStarParams &params)
             c.terminal = e.reached || c.depth >= count || e.t >= end - 1e-12 * std::max(1.0, std::abs(end));
             if (c.terminal)
             {
-                StintPlan p;  // only what cost() reads
+                StintPlan p; // only what cost() reads
                 p.surfacings.push_back({e.x, e.y, e.t});
                 p.remainingDistance = c.distance;
                 p.reached = e.reached;
@@ -166,4 +163,4 @@ CtsAStarResult ctsAStar(const StintSimulator &sim, const CtsAStarParams &params)
     out.stints = sim.stintsFlown() - flown0;
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -19,14 +19,14 @@ std::string stintMethodName(StintMethod m)
 {
     switch (m)
     {
-        case StintMethod::Direct:
-            return "direct";
-        case StintMethod::CtsAStar:
-            return "cts_astar";
-        case StintMethod::Optim:
-            return "optim";
-        case StintMethod::InitOptim:
-            return "init_optim";
+    case StintMethod::Direct:
+        return "direct";
+    case StintMethod::CtsAStar:
+        return "cts_astar";
+    case StintMethod::Optim:
+        return "optim";
+    case StintMethod::InitOptim:
+        return "init_optim";
     }
     return "unknown";
 }
@@ -44,10 +44,9 @@ StintPlanner::StintPlanner(const ompl::base::SpaceInformationPtr &si, std::share
     declareParam<double>("cell_size", this, &StintPlanner::setCellSize, &StintPlanner::getCellSize, "0:0.1:1000000");
     declareParam<unsigned>("max_expansions", this, &StintPlanner::setMaxExpansions, &StintPlanner::getMaxExpansions,
                            "1:1000:100000000");
-    declareParam<unsigned>("max_evaluations", this, &StintPlanner::setMaxEvaluations,
-                           &StintPlanner::getMaxEvaluations, "1:100:100000000");
-    addPlannerProgressProperty("remaining distance REAL",
-                               [this] { return std::to_string(plan_.remainingDistance); });
+    declareParam<unsigned>("max_evaluations", this, &StintPlanner::setMaxEvaluations, &StintPlanner::getMaxEvaluations,
+                           "1:100:100000000");
+    addPlannerProgressProperty("remaining distance REAL", [this] { return std::to_string(plan_.remainingDistance); });
 }
 
 void StintPlanner::prepare(const PipelineSetup &setup)
@@ -57,7 +56,7 @@ void StintPlanner::prepare(const PipelineSetup &setup)
                     "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
     setStintSettings(*setup.stints);
     if (method_ != StintMethod::CtsAStar && method_ != StintMethod::InitOptim)
-        return;  // only CTS-A* flies a rose of bearings
+        return; // only CTS-A* flies a rose of bearings
     const double rose = std::max(1.0, std::round(360.0 / settings_.bearingStep));
     const double flights = rose * static_cast<double>(maxExpansions_);
     if (rose <= kMaxStintBearings && flights <= kMaxStintFlights)
@@ -113,22 +112,21 @@ ompl::base::PlannerStatus StintPlanner::solve(const ompl::base::PlannerTerminati
     op.stop = stop;
     switch (method_)
     {
-        case StintMethod::Direct:
-            plan_ = sim.direct();
-            initial_ = plan_;
-            break;
-        case StintMethod::CtsAStar:
-            plan_ = ctsAStar(sim, cp).plan;
-            initial_ = plan_;
-            break;
-        case StintMethod::Optim:
-        case StintMethod::InitOptim:
-        {
-            initial_ = method_ == StintMethod::Optim ? sim.direct() : ctsAStar(sim, cp).plan;
-            const BearingOptimizerResult o = optimiseBearings(sim, initial_.bearings, op);
-            plan_ = o.plan.cost <= initial_.cost ? o.plan : initial_;
-            break;
-        }
+    case StintMethod::Direct:
+        plan_ = sim.direct();
+        initial_ = plan_;
+        break;
+    case StintMethod::CtsAStar:
+        plan_ = ctsAStar(sim, cp).plan;
+        initial_ = plan_;
+        break;
+    case StintMethod::Optim:
+    case StintMethod::InitOptim: {
+        initial_ = method_ == StintMethod::Optim ? sim.direct() : ctsAStar(sim, cp).plan;
+        const BearingOptimizerResult o = optimiseBearings(sim, initial_.bearings, op);
+        plan_ = o.plan.cost <= initial_.cost ? o.plan : initial_;
+        break;
+    }
     }
     auto path = std::make_shared<ompl::geometric::PathGeometric>(si_);
     for (std::size_t k = 0; k < plan_.surfacings.size(); ++k)
@@ -149,6 +147,6 @@ ompl::base::PlannerStatus StintPlanner::solve(const ompl::base::PlannerTerminati
 
 void StintPlanner::getPlannerData(ompl::base::PlannerData &data) const
 {
-    Planner::getPlannerData(data);  // the progress properties (remaining distance) reach benchmark logs
+    Planner::getPlannerData(data); // the progress properties (remaining distance) reach benchmark logs
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -21,27 +21,16 @@ namespace
 class DepthShear : public CurrentField
 {
 public:
-    DepthShear(double a, double b) : a_(a), b_(b)
-    {
-    }
+    DepthShear(double a, double b) : a_(a), b_(b) {}
     double maxSpeed(const Region &r) const override
     {
         return std::max(std::abs(a_ + b_ * r.zMin), std::abs(a_ + b_ * r.zMax));
     }
-    std::string name() const override
-    {
-        return "depth shear";
-    }
+    std::string name() const override { return "depth shear"; }
 
 protected:
-    Velocity evaluate(double, double, double z, double) const override
-    {
-        return {a_ + b_ * z, 0.0};
-    }
-    Jacobian evaluateJacobian(double, double, double, double) const override
-    {
-        return {};
-    }
+    Velocity evaluate(double, double, double z, double) const override { return {a_ + b_ * z, 0.0}; }
+    Jacobian evaluateJacobian(double, double, double, double) const override { return {}; }
 
 private:
     double a_, b_;
@@ -64,8 +53,8 @@ DiveProfileParams sevenProfiles()
     p.zMax = 100;
     p.climbToMax = 20;
     p.minRange = 50;
-    p.climbToLevels = 3;  // 0, 10, 20
-    p.diveToLevels = 3;   // 50, 75, 100
+    p.climbToLevels = 3; // 0, 10, 20
+    p.diveToLevels = 3;  // 50, 75, 100
     return p;
 }
 
@@ -77,7 +66,7 @@ TravelTimeParams fine(double V)
     t.hMin = 1e-4;
     return t;
 }
-}  // namespace
+} // namespace
 
 TEST(DiveProfile, GeneratedSetFollowsLevelsAndMinimumRange)
 {
@@ -133,9 +122,9 @@ TEST(DiveProfile, BadParametersNameTheParameter)
 TEST(DiveProfile, DepthUniformCurrentGivesThe2DTravelTime)
 {
     auto jet = std::make_shared<MeanderingJet>();
-    TravelTimeParams tp;  // the jet's defaults
+    TravelTimeParams tp; // the jet's defaults
     TravelTimeCalculator calc(jet, tp);
-    const double legs[][5] = {{0, -2, 2, 0, 0}, {2, 0, 5, 1, 1.3}, {5, 1, 8, -1, 3}, {1, 1, 3, 2, 7.5},
+    const double legs[][5] = {{0, -2, 2, 0, 0},      {2, 0, 5, 1, 1.3},   {5, 1, 8, -1, 3}, {1, 1, 3, 2, 7.5},
                               {0, -2, 0.5, -1.5, 0}, {3, 0.5, 1, 0.3, 2}, {0, 2, 1, 2.5, 4}};
     int finite = 0;
     for (const auto &l : legs)
@@ -229,7 +218,7 @@ TEST(DiveProfile, DeepestUnderLimitTakesLargestAmplitudeWithinTheLimit)
     auto f = std::make_shared<DepthShear>(a, b);
     DiveProfileParams d = sevenProfiles();
     d.selection = DiveProfileSelection::DeepestUnderLimit;
-    d.maxTimeFactor = 10.0;  // generous: (0, 100) qualifies
+    d.maxTimeFactor = 10.0; // generous: (0, 100) qualifies
     DiveProfileTravelTime generous(f, fine(V), d, nullptr, 1);
     const DiveLegResult g = generous.bestProfile(L, 0, 0, 0, 0);
     EXPECT_DOUBLE_EQ(generous.profiles()[g.profile].climbTo, 0.0);
@@ -281,7 +270,7 @@ TEST(DiveProfile, BathymetryLimitsTheDive)
     auto f = std::make_shared<DepthShear>(a, b);
     auto floor40 = std::make_shared<FunctionBathymetry>([](double, double) { return 45.0; });
     DiveProfileParams d = sevenProfiles();
-    d.clearance = 5.0;  // dives limited to 40
+    d.clearance = 5.0; // dives limited to 40
     DiveProfileTravelTime dive(f, fine(V), d, floor40, 1);
     for (const auto &p : dive.profiles())
     {
@@ -311,10 +300,11 @@ TEST(ThreadPool, EveryIndexOnceNestedAndExceptions)
     std::atomic<int> inner{0};
     pool.parallelFor(8, [&](std::size_t) { pool.parallelFor(5, [&](std::size_t) { inner++; }); });
     EXPECT_EQ(inner.load(), 40);
-    EXPECT_THROW(pool.parallelFor(10, [](std::size_t i) {
-        if (i == 7)
-            throw std::runtime_error("seven");
-    }),
+    EXPECT_THROW(pool.parallelFor(10,
+                                  [](std::size_t i) {
+                                      if (i == 7)
+                                          throw std::runtime_error("seven");
+                                  }),
                  std::runtime_error);
     std::atomic<int> after{0};
     pool.parallelFor(10, [&](std::size_t) { after++; });

@@ -54,7 +54,7 @@ double referenceTravelTime(const CurrentField &f, double V, double x1, double y1
     }
     return t - t0;
 }
-}  // namespace
+} // namespace
 
 TEST(AlongTrackSpeeds, RootsOfLineCircleIntersection)
 {
@@ -122,7 +122,7 @@ TEST(TravelTime, ShearFlowAlongAndAcrossTheFlow)
 TEST(TravelTime, CrossingTheJetAgreesWithFineReference)
 {
     auto jet = std::make_shared<MeanderingJet>();
-    TravelTimeParams p;  // defaults: V = 0.5, eps = 1e-3
+    TravelTimeParams p; // defaults: V = 0.5, eps = 1e-3
     TravelTimeCalculator calc(jet, p);
     struct Leg
     {
@@ -172,7 +172,7 @@ TEST(TravelTime, DependsOnDepartureTimeInTheJet)
     const double b = calc.travelTime(1.0, -1.0, 1.4, 0.2, 6.0);
     ASSERT_TRUE(std::isfinite(a));
     ASSERT_TRUE(std::isfinite(b));
-    EXPECT_GT(std::abs(a - b), 1.0);  // about 8.9 against 4.4
+    EXPECT_GT(std::abs(a - b), 1.0); // about 8.9 against 4.4
 }
 
 TEST(TravelTime, CountsCostFunctionCallsAndCurrentModelCalls)
@@ -234,34 +234,19 @@ namespace
 class ThinIslandField : public CurrentField
 {
 public:
-    double maxSpeed(const Region &) const override
-    {
-        return 0.2;
-    }
-    bool inWater(double x, double, double) const override
-    {
-        return std::abs(x - 5.0) >= 0.01;
-    }
+    double maxSpeed(const Region &) const override { return 0.2; }
+    bool inWater(double x, double, double) const override { return std::abs(x - 5.0) >= 0.01; }
     bool segmentInWater(double x1, double, double x2, double, double) const override
     {
         return std::max(x1, x2) <= 4.99 || std::min(x1, x2) >= 5.01;
     }
-    std::string name() const override
-    {
-        return "thin island";
-    }
+    std::string name() const override { return "thin island"; }
 
 protected:
-    Velocity evaluate(double, double, double, double) const override
-    {
-        return {0.2, 0.0};
-    }
-    Jacobian evaluateJacobian(double, double, double, double) const override
-    {
-        return {};
-    }
+    Velocity evaluate(double, double, double, double) const override { return {0.2, 0.0}; }
+    Jacobian evaluateJacobian(double, double, double, double) const override { return {}; }
 };
-}  // namespace
+} // namespace
 
 TEST(TravelTime, NeverCrossesLandBetweenIntegrationSteps)
 {
@@ -281,26 +266,17 @@ namespace
 class AdverseBandField : public CurrentField
 {
 public:
-    double maxSpeed(const Region &) const override
-    {
-        return 0.3;
-    }
-    std::string name() const override
-    {
-        return "adverse band";
-    }
+    double maxSpeed(const Region &) const override { return 0.3; }
+    std::string name() const override { return "adverse band"; }
 
 protected:
     Velocity evaluate(double x, double, double, double) const override
     {
         return {x > 3.0 && x < 4.5 ? -0.3 : 0.02, 0.0};
     }
-    Jacobian evaluateJacobian(double, double, double, double) const override
-    {
-        return {};
-    }
+    Jacobian evaluateJacobian(double, double, double, double) const override { return {}; }
 };
-}  // namespace
+} // namespace
 
 // A 9-unit leg through the band: the closed form is 1.5 / 0.1 + 7.5 / 0.42. With maxStep smaller than the band
 // the integration must see it (within the step law's tolerance). Without the cap the step law passes over the band
@@ -330,17 +306,9 @@ namespace
 class TimeScaledJet : public CurrentField
 {
 public:
-    explicit TimeScaledJet(double k) : k_(k)
-    {
-    }
-    double maxSpeed(const Region &) const override
-    {
-        return 1.1 / k_;
-    }
-    std::string name() const override
-    {
-        return "time-scaled jet";
-    }
+    explicit TimeScaledJet(double k) : k_(k) {}
+    double maxSpeed(const Region &) const override { return 1.1 / k_; }
+    std::string name() const override { return "time-scaled jet"; }
 
 protected:
     Velocity evaluate(double x, double y, double z, double t) const override
@@ -348,10 +316,7 @@ protected:
         const Velocity c = jet_.velocity(x, y, z, t / k_);
         return {c.u / k_, c.v / k_};
     }
-    Jacobian evaluateJacobian(double, double, double, double) const override
-    {
-        return {};
-    }
+    Jacobian evaluateJacobian(double, double, double, double) const override { return {}; }
 
 private:
     MeanderingJet jet_;
@@ -362,9 +327,12 @@ struct JetLeg
 {
     double x1, y1, x2, y2, t0;
 };
-const JetLeg kJetLegs[] = {{1.0, -1.0, 1.4, 0.2, 0.0}, {2.0, 2.0, 3.5, -0.5, 4.5}, {8.0, -2.0, 8.4, -0.6, 12.0},
-                           {3.0, 1.0, 3.4, -0.2, 9.0}, {1.0, -1.0, 1.4, 0.2, 7.5}};
-}  // namespace
+const JetLeg kJetLegs[] = {{1.0, -1.0, 1.4, 0.2, 0.0},
+                           {2.0, 2.0, 3.5, -0.5, 4.5},
+                           {8.0, -2.0, 8.4, -0.6, 12.0},
+                           {3.0, 1.0, 3.4, -0.2, 9.0},
+                           {1.0, -1.0, 1.4, 0.2, 7.5}};
+} // namespace
 
 // "leg tolerances relative to the leg": with rtol > 0 a step is judged against min(eps, rtol * its time).
 TEST(TravelTime, RelativeToleranceOffIsTheAbsoluteOneBitForBit)
@@ -414,8 +382,8 @@ TEST(TravelTime, RelativeToleranceHoldsInAnyTimeUnit)
             const double got = rel.travelTime(l.x1, l.y1, l.x2, l.y2, k * l.t0);
             EXPECT_LT(std::abs(got - ref), 1e-6 * ref) << "time unit x" << k << ", leg from " << l.x1 << "," << l.y1;
             const double absErr = std::abs(abs.travelTime(l.x1, l.y1, l.x2, l.y2, k * l.t0) - ref) / ref;
-            std::printf("time unit x%g leg from (%g, %g): relative error rtol 1e-6 %.1e, eps 1e-3 %.1e\n", k, l.x1, l.y1,
-                        std::abs(got - ref) / ref, absErr);
+            std::printf("time unit x%g leg from (%g, %g): relative error rtol 1e-6 %.1e, eps 1e-3 %.1e\n", k, l.x1,
+                        l.y1, std::abs(got - ref) / ref, absErr);
         }
     }
 }
@@ -431,7 +399,7 @@ TEST(TravelTime, RelativeToleranceCostOnTheJetMeasured)
     {
         const char *name;
         double rtol, hMin;
-        std::size_t every;  // legs run: every one, or every fifth
+        std::size_t every; // legs run: every one, or every fifth
     };
     for (double length : {0.4, 1.2})
     {
@@ -477,9 +445,10 @@ TEST(TravelTime, RelativeToleranceCostOnTheJetMeasured)
             if (s.rtol == 0.0)
                 defaultCmc = cmc;
             else
-                EXPECT_GT(cmc, defaultCmc);  // a tighter tolerance takes more steps
-            std::printf("length %.1f, %-22s: %9.1f CMC per CFC (x%.0f), relative error mean %.1e worst %.1e (%d legs)\n",
-                        length, s.name, cmc, cmc / defaultCmc, sum / compared, worst, compared);
+                EXPECT_GT(cmc, defaultCmc); // a tighter tolerance takes more steps
+            std::printf(
+                "length %.1f, %-22s: %9.1f CMC per CFC (x%.0f), relative error mean %.1e worst %.1e (%d legs)\n",
+                length, s.name, cmc, cmc / defaultCmc, sum / compared, worst, compared);
         }
     }
 }

@@ -27,10 +27,10 @@ struct GlobalForecastSpec
 {
     double lon0{-180.0}, dlon{0.5};
     std::size_t nlon{720};
-    bool wrapTo360{false};  ///< longitudes written modulo 360 (a 0..360 extract across Greenwich: 359.75, 0, 0.25)
+    bool wrapTo360{false}; ///< longitudes written modulo 360 (a 0..360 extract across Greenwich: 359.75, 0, 0.25)
     double lat0{-90.0}, dlat{0.5};
     std::size_t nlat{361};
-    std::vector<double> hours{0.0, 24.0 * 366.0};  ///< forecast times (a year: long trips fit)
+    std::vector<double> hours{0.0, 24.0 * 366.0}; ///< forecast times (a year: long trips fit)
     /// land: nodes with lon in [landLon0, landLon1] (degrees east, either convention; landLon1 < landLon0 across
     /// the antimeridian) and lat in [landLat0, landLat1] are fill values. Empty box (landLat1 < landLat0): no land.
     double landLon0{0.0}, landLon1{0.0}, landLat0{1.0}, landLat1{0.0};
@@ -45,12 +45,12 @@ inline bool globalForecastLand(const GlobalForecastSpec &s, double lon, double l
     return east(s.landLon0, lon) <= east(s.landLon0, s.landLon1) + 1e-9;
 }
 
-#define GF_CHECK(expr)                                                                          \
-    do                                                                                          \
-    {                                                                                           \
-        const int st_ = (expr);                                                                 \
-        if (st_ != NC_NOERR)                                                                    \
-            throw std::runtime_error(std::string(#expr) + ": " + nc_strerror(st_));            \
+#define GF_CHECK(expr)                                                                                                 \
+    do                                                                                                                 \
+    {                                                                                                                  \
+        const int st_ = (expr);                                                                                        \
+        if (st_ != NC_NOERR)                                                                                           \
+            throw std::runtime_error(std::string(#expr) + ": " + nc_strerror(st_));                                    \
     } while (0)
 
 /// Writes the forecast (netCDF-4). @throws std::runtime_error when NetCDF-C fails.
@@ -90,7 +90,7 @@ inline void writeGlobalForecast(const std::string &path, const GlobalForecastSpe
         GF_CHECK(nc_def_var_fill(nc, var, 0, &fill));
     }
     GF_CHECK(nc_enddef(nc));
-    const double hours0 = 76.0 * 365.25 * 24.0;  // about 2026
+    const double hours0 = 76.0 * 365.25 * 24.0; // about 2026
     std::vector<double> t(s.hours.size());
     for (std::size_t k = 0; k < t.size(); ++k)
         t[k] = hours0 + s.hours[k];
@@ -117,7 +117,7 @@ inline void writeGlobalForecast(const std::string &path, const GlobalForecastSpe
             u[j * s.nlon + i] = land ? fill : static_cast<float>(a);
             v[j * s.nlon + i] = land ? fill : static_cast<float>(b);
         }
-    for (std::size_t k = 0; k < s.hours.size(); ++k)  // a steady field at every forecast time
+    for (std::size_t k = 0; k < s.hours.size(); ++k) // a steady field at every forecast time
     {
         const std::size_t start[4] = {k, 0, 0, 0}, count[4] = {1, 1, s.nlat, s.nlon};
         GF_CHECK(nc_put_vara_float(nc, vu, start, count, u.data()));
@@ -126,4 +126,4 @@ inline void writeGlobalForecast(const std::string &path, const GlobalForecastSpe
     GF_CHECK(nc_close(nc));
 }
 #undef GF_CHECK
-}  // namespace glider_test
+} // namespace glider_test

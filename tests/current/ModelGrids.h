@@ -50,14 +50,8 @@ struct WrapGrid
     {
         return ompl_glider::normalizeLongitude(-40.0 + 3.0 * double(i % kCols) + 0.2 * double(j));
     }
-    double lat(std::size_t j, std::size_t) const
-    {
-        return -40.0 + 2.0 * double(j);
-    }
-    std::size_t columns() const
-    {
-        return kCols + (repeat ? 1 : 0);
-    }
+    double lat(std::size_t j, std::size_t) const { return -40.0 + 2.0 * double(j); }
+    std::size_t columns() const { return kCols + (repeat ? 1 : 0); }
     void write(const std::string &path) const
     {
         NcWriter w(path);
@@ -132,23 +126,14 @@ struct RomsGrid
         vn = -0.1 + 3e-6 * p.y + 1e-6 * p.x;
     }
     /// Land: a block of rho points.
-    static bool land(std::size_t eta, std::size_t xi)
-    {
-        return eta >= 9 && eta <= 11 && xi >= 11 && xi <= 14;
-    }
+    static bool land(std::size_t eta, std::size_t xi) { return eta >= 9 && eta <= 11 && xi >= 11 && xi <= 14; }
     /// With sLevels > 0: terrain-following s-levels (ROMS Vtransform 2, CF ocean_s_coordinate_g2), sea surface
     /// zeta, and the current scaled by depthFactor(z) at each level's depth z (m, negative down).
     std::size_t sLevels{0};
     double hc{20.0}, zeta{0.5};
     /// s of level k (bottom first, as ROMS) and its stretching C(s) = -s^2.
-    double sOf(std::size_t k) const
-    {
-        return -1.0 + (double(k) + 0.5) / double(sLevels);
-    }
-    static double stretch(double s)
-    {
-        return -s * s;
-    }
+    double sOf(std::size_t k) const { return -1.0 + (double(k) + 0.5) / double(sLevels); }
+    static double stretch(double s) { return -s * s; }
     /// Bathymetry: 200 m, 30 m on a shallow bank (rows 2..4, columns 12..15).
     static double bottom(std::size_t eta, std::size_t xi)
     {
@@ -160,14 +145,11 @@ struct RomsGrid
         const double S = (hc * sOf(k) + h * stretch(sOf(k))) / (hc + h);
         return zeta + (zeta + h) * S;
     }
-    static double depthFactor(double z)
-    {
-        return 1.0 + z / 250.0;
-    }
+    static double depthFactor(double z) { return 1.0 + z / 250.0; }
     /// Writes the file; grid components u along xi, v along eta (u = e cos + n sin, v = -e sin + n cos).
     void write(const std::string &path, bool masks = true) const
     {
-        NcWriter w(path, NC_CLOBBER);  // classic format, as ROMS writes
+        NcWriter w(path, NC_CLOBBER); // classic format, as ROMS writes
         const int dt = w.dim("ocean_time", 2), er = w.dim("eta_rho", kEta), xr = w.dim("xi_rho", kXi);
         const int eu = w.dim("eta_u", kEta), xu = w.dim("xi_u", kXi - 1);
         const int ev = w.dim("eta_v", kEta - 1), xv = w.dim("xi_v", kXi);
@@ -303,4 +285,4 @@ struct RomsGrid
         w.put(v, pv);
     }
 };
-}  // namespace glider_test
+} // namespace glider_test

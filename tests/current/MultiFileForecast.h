@@ -24,15 +24,15 @@ inline double mfV(double lon, double lat, double hours)
 
 struct MfFile
 {
-    std::string units;             ///< units of the time variable
-    std::vector<double> raw;       ///< time values as written
-    std::vector<double> hours;     ///< the same times, hours since 2026-03-01T00:00Z (what u/v are computed at)
-    std::vector<double> bias;      ///< added to u per record (0: the true forecast)
+    std::string units;         ///< units of the time variable
+    std::vector<double> raw;   ///< time values as written
+    std::vector<double> hours; ///< the same times, hours since 2026-03-01T00:00Z (what u/v are computed at)
+    std::vector<double> bias;  ///< added to u per record (0: the true forecast)
     std::string calendar{"standard"};
-    double lonShift{0.0};          ///< moves the grid (a mismatched file)
-    double landHour{30.0};         ///< at this hour node (i 2, j 3) is a fill value (land in this record only)
-    double stillUntil{24.0};       ///< node (i 3, j 2) is u = v = 0 before this hour (all of day 0's file)
-    bool land{true};               ///< the fill-value land nodes above are written (false: no fill values at all)
+    double lonShift{0.0};    ///< moves the grid (a mismatched file)
+    double landHour{30.0};   ///< at this hour node (i 2, j 3) is a fill value (land in this record only)
+    double stillUntil{24.0}; ///< node (i 3, j 2) is u = v = 0 before this hour (all of day 0's file)
+    bool land{true};         ///< the fill-value land nodes above are written (false: no fill values at all)
 };
 
 inline void writeMfFile(const std::string &path, const MfFile &m)
@@ -127,8 +127,7 @@ struct MfFiles
     TempDir dir;
     std::string combined = dir.file("combined.nc");
     std::vector<std::string> days;
-    template <typename DayName>
-    explicit MfFiles(DayName dayName, bool land = true)
+    template <typename DayName> explicit MfFiles(DayName dayName, bool land = true)
     {
         MfFile c = mfCombined();
         c.land = land;
@@ -142,4 +141,4 @@ struct MfFiles
         }
     }
 };
-}  // namespace glider_test
+} // namespace glider_test

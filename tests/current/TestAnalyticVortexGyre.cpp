@@ -17,8 +17,9 @@
 //      (equality in (1) forces the radial heading almost everywhere, hence that spiral).
 //  (3) From the centre, the first heading chooses theta0 freely, so every point at distance d is reached at best in
 //      T* = d / V, whatever vmax: the earliest-arrival front at time t is the circle of radius V t (the kind of
-//      analytic answer [LollaLevelSet] checks its Rankine-vortex benchmark against). The optimal route ends at angle theta0 + (vmax / V)(d / R) for d <= R and
-//      theta0 + (vmax / V)(2 - R / d) for d > R, so the first heading is theta_goal minus that turn.
+//      analytic answer [LollaLevelSet] checks its Rankine-vortex benchmark against). The optimal route ends at angle
+//      theta0 + (vmax / V)(d / R) for d <= R and theta0 + (vmax / V)(2 - R / d) for d > R, so the first heading is
+//      theta_goal minus that turn.
 //  (4) Upper bounds (flown routes, not optimal in general): two points at the same radius r, the second at the
 //      counter-clockwise angle dtheta from the first, are joined in r dtheta / (w(r) + V) by the circle flown with
 //      the heading tangent (counter-clockwise) at every instant (ground speed w(r) + V along the circle, no radial
@@ -96,7 +97,7 @@ Point2 flyContinuous(const CurrentField &field, Point2 p, double V, double T, in
 /// Turn of the radial spiral (2) from radius a to radius b (either order), counter-clockwise, in radians.
 double spiralTurn(double vmax, double R, double V, double a, double b)
 {
-    auto F = [&](double r) {  // antiderivative of w(r) / (V r) in r, continuous at R
+    auto F = [&](double r) { // antiderivative of w(r) / (V r) in r, continuous at R
         return r <= R ? vmax * r / (V * R) : vmax / V * (2.0 - R / r);
     };
     return std::abs(F(b) - F(a));
@@ -106,7 +107,7 @@ double wrapAngle(double a)
 {
     return std::remainder(a, 2.0 * M_PI);
 }
-}  // namespace
+} // namespace
 
 // ---------------------------------------------------------------- double gyre
 
@@ -278,7 +279,7 @@ TEST(RankineVortex, SpeedProfileIsSolidBodyInsideAndOneOverROutside)
             const Velocity c = vtx.velocity(p.x0 + r * ex, p.y0 + r * ey, 0, 0);
             EXPECT_NEAR(std::hypot(c.u, c.v), expected, 1e-14) << "r " << r;
             EXPECT_NEAR(c.u * ex + c.v * ey, 0.0, 1e-14);       // no radial component
-            EXPECT_NEAR(-c.u * ey + c.v * ex, expected, 1e-14);  // counter-clockwise
+            EXPECT_NEAR(-c.u * ey + c.v * ex, expected, 1e-14); // counter-clockwise
         }
     }
     EXPECT_EQ(vtx.name(), "rankine vortex");
@@ -289,7 +290,7 @@ TEST(RankineVortex, SpeedProfileIsSolidBodyInsideAndOneOverROutside)
 
 TEST(RankineVortex, ContinuousAtTheCoreRadiusWithTheVorticityJump)
 {
-    const RankineVortex vtx;  // R = 1, vmax = 1 at the origin
+    const RankineVortex vtx; // R = 1, vmax = 1 at the origin
     for (double th : {0.3, 1.9, 4.4})
     {
         const double ex = std::cos(th), ey = std::sin(th);
@@ -338,9 +339,9 @@ TEST(RankineVortex, SpeedBoundIsTheExactMaximumOverTheRegion)
     const RankineVortex vtx(p);
     const double tol = 1e-11;                                    // the bound's rounding margin
     EXPECT_NEAR(vtx.maxSpeed({}), 2.5, tol);                     // the plane: |vmax| + |(u, v)|
-    EXPECT_NEAR(vtx.maxSpeed({-1.0, 1.0, -1.0, 1.0}), 2.5, tol);  // holds the core circle
-    EXPECT_NEAR(vtx.maxSpeed({-0.1, 0.1, -0.1, 0.1}), 2.0 * std::hypot(0.1, 0.1) / 0.5 + 0.5, tol);  // in the core
-    EXPECT_NEAR(vtx.maxSpeed({3.0, 4.0, -4.0, 4.0}), 2.0 * 0.5 / 3.0 + 0.5, tol);  // outside: nearest point (3, 0)
+    EXPECT_NEAR(vtx.maxSpeed({-1.0, 1.0, -1.0, 1.0}), 2.5, tol); // holds the core circle
+    EXPECT_NEAR(vtx.maxSpeed({-0.1, 0.1, -0.1, 0.1}), 2.0 * std::hypot(0.1, 0.1) / 0.5 + 0.5, tol); // in the core
+    EXPECT_NEAR(vtx.maxSpeed({3.0, 4.0, -4.0, 4.0}), 2.0 * 0.5 / 3.0 + 0.5, tol); // outside: nearest point (3, 0)
     EXPECT_NEAR(vtx.maxSpeed({3.0, 4.0, 4.0, 5.0}), 2.0 * 0.5 / 5.0 + 0.5, tol);  // nearest corner (3, 4)
     // and never below the speed at the nearest point
     const Velocity corner = vtx.velocity(3.0, 4.0, 0, 0);
@@ -359,7 +360,7 @@ TEST(RankineVortex, RegistryParametersAndDefaults)
     const Velocity c = f->velocity(1.0, 3.0, 0, 0);
     EXPECT_NEAR(c.u, 0.1 - 1.5, 1e-15);
     EXPECT_NEAR(c.v, 0.2, 1e-15);
-    const auto d = makeAnalyticField("rankine_vortex");  // unit vortex at the origin in still water
+    const auto d = makeAnalyticField("rankine_vortex"); // unit vortex at the origin in still water
     EXPECT_NEAR(d->velocity(1.0, 0.0, 0, 0).v, 1.0, 1e-15);
     EXPECT_NEAR(d->velocity(0.0, 2.0, 0, 0).u, -0.5, 1e-15);
     EXPECT_THROW(makeAnalyticField("rankine_vortex", {{"radius", 0.0}}), Error);

@@ -158,7 +158,7 @@ TEST(CorrectedField, JacobianMatchesFiniteDifferencesAndTheBoundHolds)
 TEST(CorrectedField, ManyCopiesOfOneCurrentNeverCorrectBeyondTheData)
 {
     auto forecast = std::make_shared<UniformCurrent>(0.1, 0.0);
-    const double error = 0.05;  // every DAC: the forecast plus (0.05, 0)
+    const double error = 0.05; // every DAC: the forecast plus (0.05, 0)
     const Region r{-5.0, 15.0, -5.0, 5.0, 0.0, 0.0, -5.0, 20.0};
     for (const int n : {8, 200, 2000})
         for (const double ratio : {0.2, 1e-6})
@@ -166,9 +166,11 @@ TEST(CorrectedField, ManyCopiesOfOneCurrentNeverCorrectBeyondTheData)
             std::vector<DacObservation> obs;
             for (int k = 0; k < n; ++k)
             {
-                const double s = static_cast<double>(k) / (n - 1);  // along the track, 0..1
-                obs.push_back({10.0 * s, {10.0 * s + 1e-4 * std::sin(7.0 * k), 1e-4 * std::cos(5.0 * k)},
-                               {0.1 + error, 0.0}, std::nullopt});
+                const double s = static_cast<double>(k) / (n - 1); // along the track, 0..1
+                obs.push_back({10.0 * s,
+                               {10.0 * s + 1e-4 * std::sin(7.0 * k), 1e-4 * std::cos(5.0 * k)},
+                               {0.1 + error, 0.0},
+                               std::nullopt});
             }
             CorrectionParams p{2.0, 4.0, ratio};
             const CorrectedField f(forecast, obs, p);
@@ -257,7 +259,7 @@ TEST(CorrectedField, TheSampledCorrectionIsTheExactSum)
         worstJ = std::max({worstJ, std::abs(ja.ux - jb.ux), std::abs(ja.uy - jb.uy), std::abs(ja.vx - jb.vx),
                            std::abs(ja.vy - jb.vy)});
     }
-    EXPECT_GT(largest, 0.05);           // the points met the correction
-    EXPECT_LT(worst, 0.01 * largest);   // linear in time over a quarter of T: about 1 % at most
-    EXPECT_LT(worstJ, 0.05 * largest);  // per length scale (L = 1)
+    EXPECT_GT(largest, 0.05);          // the points met the correction
+    EXPECT_LT(worst, 0.01 * largest);  // linear in time over a quarter of T: about 1 % at most
+    EXPECT_LT(worstJ, 0.05 * largest); // per length scale (L = 1)
 }

@@ -68,7 +68,7 @@ CorrectionParams learning()
     p.secondsPerTimeUnit = 1.0;
     return p;
 }
-}  // namespace
+} // namespace
 
 TEST(CorrectionLearning, ScalesAreRecoveredFromAGaussianFieldOfKnownScales)
 {
@@ -83,8 +83,8 @@ TEST(CorrectionLearning, ScalesAreRecoveredFromAGaussianFieldOfKnownScales)
         std::sort(v.begin(), v.end());
         return v[1];
     };
-    for (const Case c : {Case{30000.0, 2.0 * 86400.0, 0.25}, Case{12000.0, 0.6 * 86400.0, 0.3},
-                         Case{45000.0, 3.0 * 86400.0, 0.15}})
+    for (const Case c :
+         {Case{30000.0, 2.0 * 86400.0, 0.25}, Case{12000.0, 0.6 * 86400.0, 0.3}, Case{45000.0, 3.0 * 86400.0, 0.15}})
     {
         std::vector<double> L, T, ratio;
         for (unsigned seed : {11u, 12u, 13u})
@@ -172,7 +172,7 @@ TEST(CorrectionLearning, GivenValuesWinAndFewDacKeepThePriors)
     const auto still = std::make_shared<UniformCurrent>(0.0, 0.0);
     const auto obs = gaussianDac(60, 30000.0, 2.0 * 86400.0, 0.1, 0.02, {}, 5.0, 2);
     CorrectionParams p = learning();
-    p.lengthGiven = true;  // L given: kept; T and the ratio learned
+    p.lengthGiven = true; // L given: kept; T and the ratio learned
     const CorrectedField f(still, obs, p);
     EXPECT_EQ(f.summary().params.lengthScale, 20000.0);
     EXPECT_EQ(f.summary().lengthSource, "given");
@@ -219,7 +219,7 @@ TEST(CorrectionLearning, TheLearnedFieldsJacobianMatchesFiniteDifferencesAndItsB
     const CorrectedField f(still, obs, learning());
     ASSERT_TRUE(f.summary().mean.active());
     const double h = 1.0;
-    Region all;  // everywhere, always
+    Region all; // everywhere, always
     const double bound = f.maxSpeed(all);
     for (int i = 0; i < 30; ++i)
     {

@@ -22,7 +22,7 @@ struct FieldCase
 {
     std::string label;
     std::function<std::shared_ptr<CurrentField>()> make;
-    Region region;  // where the field is sampled
+    Region region; // where the field is sampled
 };
 
 std::vector<FieldCase> fieldCases()
@@ -58,7 +58,7 @@ std::vector<FieldCase> fieldCases()
              p.x0 = 0.5;
              p.y0 = -0.3;
              p.radius = 0.7;
-             p.vmax = -1.5;  // clockwise
+             p.vmax = -1.5; // clockwise
              p.u = 0.4;
              p.v = 0.3;
              return std::make_shared<RankineVortex>(p);
@@ -84,7 +84,7 @@ std::vector<std::array<double, 3>> samplePoints(const Region &r, int n)
                        r.tMin + (r.tMax - r.tMin) * rnd()});
     return pts;
 }
-}  // namespace
+} // namespace
 
 class CurrentConformance : public ::testing::TestWithParam<FieldCase>
 {

@@ -69,7 +69,7 @@ double rmsAhead(const CurrentField &a, const CurrentField &b, double t)
         }
     return std::sqrt(sum / n);
 }
-}  // namespace
+} // namespace
 
 TEST(EnsembleLearning, WeightsConcentrateOnTheMemberThatMadeTheDac)
 {
@@ -118,8 +118,8 @@ TEST(EnsembleLearning, DacEveryMemberMatchesLeaveTheWeightsEqualAndOneForecastIs
 {
     // members that differ only far from the track: every DAC matches each of them alike
     std::vector<std::shared_ptr<const CurrentField>> same{std::make_shared<UniformCurrent>(0.1, 0.0),
-                                                         std::make_shared<UniformCurrent>(0.1, 0.0),
-                                                         std::make_shared<UniformCurrent>(0.1, 0.0)};
+                                                          std::make_shared<UniformCurrent>(0.1, 0.0),
+                                                          std::make_shared<UniformCurrent>(0.1, 0.0)};
     const auto mean = std::make_shared<EnsembleMeanField>(same);
     const LearnedForecast l = learnForecast(mean, same, ensembleTrack(*same[0]), params());
     for (const MemberScore &m : l.members)

@@ -18,7 +18,7 @@
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/current/NetCdfCurrents.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "planners/TveSearch.h"  // internal to the library (src/)
+#include "planners/TveSearch.h" // internal to the library (src/)
 #include "ompl_glider/planners/ZAStarTVE.h"
 
 using namespace ompl_glider;
@@ -40,9 +40,9 @@ protected:
         ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
         dir_ = new glider_test::TempDir();
         path_ = dir_->file("jet.nc");
-        const auto xs = glider_test::linspace(-0.5, 0.1, 111);  // -0.5 .. 10.5
-        const auto ys = glider_test::linspace(-4.5, 0.1, 91);   // -4.5 .. 4.5
-        const auto ts = glider_test::linspace(0.0, 0.25, 257);  // 0 .. 64
+        const auto xs = glider_test::linspace(-0.5, 0.1, 111); // -0.5 .. 10.5
+        const auto ys = glider_test::linspace(-4.5, 0.1, 91);  // -4.5 .. 4.5
+        const auto ts = glider_test::linspace(0.0, 0.25, 257); // 0 .. 64
         const MeanderingJet jet;
         {
             glider_test::NcWriter w(path_);
@@ -105,7 +105,7 @@ double pathTime(const TravelTimeCalculator &calc, const std::vector<Pt> &path, d
     }
     return t - t0;
 }
-}  // namespace
+} // namespace
 
 TEST_F(JetGrid, LoadedAsACartesianFieldInTheJetsUnits)
 {
@@ -131,7 +131,7 @@ TEST_F(JetGrid, LoadedAsACartesianFieldInTheJetsUnits)
             const Velocity a = f.velocity(x, y, 0, 11.1), b = jet.velocity(x, y, 0, 11.1);
             worst = std::max(worst, std::hypot(a.u - b.u, a.v - b.v));
         }
-    EXPECT_LT(worst, 0.02);  // bilinear error ~ h^2/8 |c''| with h = 0.1
+    EXPECT_LT(worst, 0.02); // bilinear error ~ h^2/8 |c''| with h = 0.1
     EXPECT_GE(f.maxSpeed(Region{}), 0.99);
     EXPECT_LE(f.maxSpeed(Region{}), jet.maxSpeed(Region{}));
 }
@@ -141,7 +141,7 @@ TEST_F(JetGrid, TravelTimesAlongFixedMultiLegPathsAgreeWithinOnePercent)
     // Fixed paths: the routes ZA*TVE finds on the analytic jet (they cross it, the hard case: a leg is only
     // feasible within about 30 degrees of the jet's direction) and four routes in the weak flow away from it.
     // Each is flown on both fields from the same departure time with the same travel-time code.
-    TravelTimeParams p;  // V = 0.5, eps = 1e-3
+    TravelTimeParams p; // V = 0.5, eps = 1e-3
     const auto jet = std::make_shared<MeanderingJet>();
     const TravelTimeCalculator analytic(jet, p);
     const TravelTimeCalculator gridded(gridded_->field, p);
@@ -197,7 +197,7 @@ TEST_F(JetGrid, ZAStarTvePlansAgreeWithinOnePercent)
         double times[2];
         for (int k = 0; k < 2; ++k)
         {
-            GliderProblem p;  // region x [0, 10], y [-4, 4], V = 0.5, t0 = 0, horizon 60
+            GliderProblem p; // region x [0, 10], y [-4, 4], V = 0.5, t0 = 0, horizon 60
             if (k == 0)
                 p.field = std::make_shared<MeanderingJet>();
             else
@@ -217,9 +217,8 @@ TEST_F(JetGrid, ZAStarTvePlansAgreeWithinOnePercent)
             ASSERT_EQ(st, ob::PlannerStatus::EXACT_SOLUTION) << (k ? "gridded" : "analytic");
             times[k] = planner->getTravelTime();
         }
-        EXPECT_NEAR(times[1] / times[0], 1.0, 0.01)
-            << "(" << q.sx << ", " << q.sy << ") -> (" << q.gx << ", " << q.gy << "): analytic " << times[0]
-            << ", gridded " << times[1];
+        EXPECT_NEAR(times[1] / times[0], 1.0, 0.01) << "(" << q.sx << ", " << q.sy << ") -> (" << q.gx << ", " << q.gy
+                                                    << "): analytic " << times[0] << ", gridded " << times[1];
         std::printf("ZA*TVE (%.1f, %.1f) -> (%.1f, %.1f): analytic %.4f gridded %.4f ratio %.5f\n", q.sx, q.sy, q.gx,
                     q.gy, times[0], times[1], times[1] / times[0]);
     }

@@ -53,7 +53,7 @@ GriddedFieldOptions schemes(Interp2D xy, Interp1D z = Interp1D::Linear, Interp1D
     o.time = t;
     return o;
 }
-}  // namespace
+} // namespace
 
 TEST(GriddedField, BilinearReproducesBilinearFunctionsAndTheirJacobian)
 {
@@ -84,7 +84,8 @@ TEST(GriddedField, BilinearReproducesBilinearFunctionsAndTheirJacobian)
 TEST(GriddedField, BicubicReproducesCubicPolynomialsAndTheirJacobian)
 {
     auto fu = [](double x, double y, double, double) {
-        return 0.1 + 0.2 * x - 0.1 * y + 0.05 * x * x * x - 0.04 * y * y * y + 0.03 * x * x * y - 0.02 * x * x * x * y * y * y;
+        return 0.1 + 0.2 * x - 0.1 * y + 0.05 * x * x * x - 0.04 * y * y * y + 0.03 * x * x * y -
+               0.02 * x * x * x * y * y * y;
     };
     auto fv = [](double x, double y, double, double) { return -0.2 + 0.07 * x * y * y - 0.01 * x * x * x * y; };
     GriddedCurrentField f(sampleRect(kX, kY, {0.0}, {0.0}, fu, fv), schemes(Interp2D::Bicubic));
@@ -141,13 +142,16 @@ TEST(GriddedField, TimeAndDepthSchemesReproduceWhatTheyMust)
             }
         }
     // linear in time does not reproduce the cubic in time
-    GriddedCurrentField f(sampleRect(kX, kY, z, t, cub, cub), schemes(Interp2D::Bilinear, Interp1D::Cubic, Interp1D::Linear));
+    GriddedCurrentField f(sampleRect(kX, kY, z, t, cub, cub),
+                          schemes(Interp2D::Bilinear, Interp1D::Cubic, Interp1D::Linear));
     EXPECT_GT(std::abs(f.velocity(1, 1, 10, 5.2).u - cub(1, 1, 10, 5.2)), 1e-4);
     // nearest in time and depth
-    GriddedCurrentField n(sampleRect(kX, kY, z, t, lin, lin), schemes(Interp2D::Bilinear, Interp1D::Nearest, Interp1D::Nearest));
+    GriddedCurrentField n(sampleRect(kX, kY, z, t, lin, lin),
+                          schemes(Interp2D::Bilinear, Interp1D::Nearest, Interp1D::Nearest));
     EXPECT_NEAR(n.velocity(1, 1, 14, 2.7).u, lin(1, 1, 20, 2.5), 1e-6);
     // Akima reproduces linear data in depth and time
-    GriddedCurrentField a(sampleRect(kX, kY, z, t, lin, lin), schemes(Interp2D::Bilinear, Interp1D::Akima, Interp1D::Akima));
+    GriddedCurrentField a(sampleRect(kX, kY, z, t, lin, lin),
+                          schemes(Interp2D::Bilinear, Interp1D::Akima, Interp1D::Akima));
     for (int i = 0; i < 200; ++i)
     {
         const double x = X(rng), y = Y(rng), zz = Z(rng), tt = T(rng);
@@ -171,7 +175,7 @@ TEST(GriddedField, AkimaInTimeHasNoOvershootAtATideLikeStep)
         EXPECT_LE(v, 1 + 1e-7);
         cmin = std::min(cmin, cu.velocity(0.5, 0.5, 0, tt).u);
     }
-    EXPECT_LT(cmin, -0.05);  // the cubic wiggles
+    EXPECT_LT(cmin, -0.05); // the cubic wiggles
 }
 
 TEST(GriddedField, CurvilinearRotatedGridReproducesPolynomialsInXY)
@@ -258,19 +262,22 @@ TEST(GriddedField, CurvilinearLocateInvertsACurvedMesh)
     for (int k = 0; k < 500; ++k)
     {
         const double fi = A(rng), fj = B(rng);
-        const std::size_t ci = std::min<std::size_t>(std::size_t(fi), nx - 2), cj = std::min<std::size_t>(std::size_t(fj), ny - 2);
+        const std::size_t ci = std::min<std::size_t>(std::size_t(fi), nx - 2),
+                          cj = std::min<std::size_t>(std::size_t(fj), ny - 2);
         const double a = fi - ci, b = fj - cj;
         auto X = [&](std::size_t i, std::size_t j) { return d.nodeX[j * nx + i]; };
         auto Y = [&](std::size_t i, std::size_t j) { return d.nodeY[j * nx + i]; };
-        const double x = (1 - a) * (1 - b) * X(ci, cj) + a * (1 - b) * X(ci + 1, cj) + (1 - a) * b * X(ci, cj + 1) + a * b * X(ci + 1, cj + 1);
-        const double y = (1 - a) * (1 - b) * Y(ci, cj) + a * (1 - b) * Y(ci + 1, cj) + (1 - a) * b * Y(ci, cj + 1) + a * b * Y(ci + 1, cj + 1);
+        const double x = (1 - a) * (1 - b) * X(ci, cj) + a * (1 - b) * X(ci + 1, cj) + (1 - a) * b * X(ci, cj + 1) +
+                         a * b * X(ci + 1, cj + 1);
+        const double y = (1 - a) * (1 - b) * Y(ci, cj) + a * (1 - b) * Y(ci + 1, cj) + (1 - a) * b * Y(ci, cj + 1) +
+                         a * b * Y(ci + 1, cj + 1);
         double gi, gj;
         ASSERT_TRUE(f.locate(x, y, gi, gj));
         EXPECT_NEAR(gi, fi, 1e-8);
         EXPECT_NEAR(gj, fj, 1e-8);
     }
     double gi, gj;
-    EXPECT_FALSE(f.locate(0, 0, gi, gj));  // inside the inner radius: not in the mesh
+    EXPECT_FALSE(f.locate(0, 0, gi, gj)); // inside the inner radius: not in the mesh
 }
 
 TEST(GriddedField, LandCellsAreDryAndNeverLeakFillValues)
@@ -281,9 +288,9 @@ TEST(GriddedField, LandCellsAreDryAndNeverLeakFillValues)
     GriddedData d = sampleRect(x, y, {0, 10}, {0, 1}, fu, fv);
     const std::size_t nh = 25;
     d.water.assign(2 * nh, 1);
-    d.water[2 * 5 + 2] = 0;       // land node (i 2, j 2) at the surface layer (and below)
+    d.water[2 * 5 + 2] = 0; // land node (i 2, j 2) at the surface layer (and below)
     d.water[nh + 2 * 5 + 2] = 0;
-    d.water[nh + 0] = 0;          // land only at depth 10: node (0, 0)
+    d.water[nh + 0] = 0; // land only at depth 10: node (0, 0)
     // fill values in the data at the land nodes
     for (std::size_t it = 0; it < 2; ++it)
     {
@@ -305,8 +312,8 @@ TEST(GriddedField, LandCellsAreDryAndNeverLeakFillValues)
     EXPECT_FALSE(f.inWater(0.5, 0.5, 5));
     // land nodes count as zero current: no fill value, no NaN
     EXPECT_NEAR(f.velocity(2, 2, 0, 0.5).u, 0.0, 1e-12);
-    EXPECT_NEAR(f.velocity(1.5, 2, 0, 0.5).u, 0.2, 1e-6);     // half way to the land node
-    EXPECT_NEAR(f.velocity(1, 1, 0, 0.5).u, 0.4, 1e-6);       // water node next to land
+    EXPECT_NEAR(f.velocity(1.5, 2, 0, 0.5).u, 0.2, 1e-6); // half way to the land node
+    EXPECT_NEAR(f.velocity(1, 1, 0, 0.5).u, 0.4, 1e-6);   // water node next to land
     for (double xx = 0; xx <= 4; xx += 0.05)
         for (double yy = 0; yy <= 4; yy += 0.05)
             for (double zz : {0.0, 4.0, 10.0})
@@ -392,7 +399,8 @@ TEST(GriddedField, ExactLegCheckAgreesWithDenseSamplingOnACurvilinearCoast)
     {
         const double fi = 1.0 + U(rng) * double(nx - 3), fj = 1.0 + U(rng) * double(ny - 3);
         const std::size_t i = static_cast<std::size_t>(fi), j = static_cast<std::size_t>(fj);
-        const double x1 = d.nodeX[j * nx + i] + (fi - double(i)) * 0.9, y1 = d.nodeY[j * nx + i] + (fj - double(j)) * 0.9;
+        const double x1 = d.nodeX[j * nx + i] + (fi - double(i)) * 0.9,
+                     y1 = d.nodeY[j * nx + i] + (fj - double(j)) * 0.9;
         const double len = 0.3 + 3.7 * U(rng), th = 6.283185307179586 * U(rng);
         const double x2 = x1 + len * std::cos(th), y2 = y1 + len * std::sin(th);
         const double z = U(rng) < 0.5 ? 0.0 : 10.0;
@@ -442,7 +450,7 @@ TEST(GriddedField, AfterTheLastForecastHoldOrRefuse)
     EXPECT_EQ(r->timeBegin(), 0.0);
     EXPECT_EQ(r->timeEnd(), 20.0);
     EXPECT_TRUE(std::isinf(h->timeEnd()));
-    EXPECT_NEAR(h->velocity(50, 50, 0, 35).u, 2.1, 1e-6);  // held last field
+    EXPECT_NEAR(h->velocity(50, 50, 0, 35).u, 2.1, 1e-6); // held last field
     TravelTimeParams p;
     p.speed = 1.0;
     // 200 m at about 3 m/s from t = 15 needs the field until about t = 80
@@ -456,7 +464,7 @@ TEST(GriddedField, SpeedBoundHoldsForEverySchemeCombination)
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> U(-1, 1);
     const std::vector<double> z{0, 10, 30, 60, 100}, t{0, 1, 2, 3, 4, 5};
-    Fn noise = [&](double, double, double, double) { return U(rng) > 0 ? 1.0 : -1.0; };  // adversarial +-1
+    Fn noise = [&](double, double, double, double) { return U(rng) > 0 ? 1.0 : -1.0; }; // adversarial +-1
     GriddedData d = sampleRect(kX, kY, z, t, noise, noise);
     double nodeMax = 0;
     for (std::size_t n = 0; n < d.u.size(); ++n)
@@ -478,7 +486,7 @@ TEST(GriddedField, SpeedBoundHoldsForEverySchemeCombination)
                 if (xy != Interp2D::Bicubic && zs != Interp1D::Cubic && zs != Interp1D::Akima &&
                     ts != Interp1D::Cubic && ts != Interp1D::Akima)
                 {
-                    EXPECT_NEAR(bound, nodeMax, 1e-6);  // tight for convex schemes
+                    EXPECT_NEAR(bound, nodeMax, 1e-6); // tight for convex schemes
                 }
             }
 }
@@ -495,10 +503,13 @@ TEST(GriddedField, DataDependentSpeedBoundIsTightForSmoothDataAndStillHolds)
         return 0.2 + 0.5 * std::sin(0.1 * x + 0.02 * tt) * std::cos(0.1 * y) * (1.0 - zz / 4000.0);
     };
     auto smoothV = [](double x, double y, double, double tt) { return 0.3 * std::cos(0.1 * x - 0.05 * y + 0.02 * tt); };
-    Fn rough = [&](double x, double y, double zz, double tt) { return smooth(x, y, zz, tt) + (U(rng) > 0.7 ? 0.8 : 0.0); };
+    Fn rough = [&](double x, double y, double zz, double tt) {
+        return smooth(x, y, zz, tt) + (U(rng) > 0.7 ? 0.8 : 0.0);
+    };
     for (int dataset = 0; dataset < 2; ++dataset)
     {
-        const GriddedData d = dataset == 0 ? sampleRect(kX, kY, z, t, smooth, smoothV) : sampleRect(kX, kY, z, t, rough, smoothV);
+        const GriddedData d =
+            dataset == 0 ? sampleRect(kX, kY, z, t, smooth, smoothV) : sampleRect(kX, kY, z, t, rough, smoothV);
         double nodeMax = 0;
         for (std::size_t n = 0; n < d.u.size(); ++n)
             nodeMax = std::max(nodeMax, std::hypot(double(d.u[n]), double(d.v[n])));
@@ -514,7 +525,8 @@ TEST(GriddedField, DataDependentSpeedBoundIsTightForSmoothDataAndStillHolds)
                         const Velocity c = f.velocity(X(rng), Y(rng), Z(rng), T(rng));
                         seen = std::max(seen, std::hypot(c.u, c.v));
                     }
-                    EXPECT_LE(seen, bound) << dataset << " " << toString(xy) << "/" << toString(zs) << "/" << toString(ts);
+                    EXPECT_LE(seen, bound)
+                        << dataset << " " << toString(xy) << "/" << toString(zs) << "/" << toString(ts);
                     EXPECT_GE(bound, nodeMax);
                     if (dataset == 0 && f.overshoot() > 1.5)
                     {
@@ -526,7 +538,7 @@ TEST(GriddedField, DataDependentSpeedBoundIsTightForSmoothDataAndStillHolds)
         if (dataset == 0)
         {
             GriddedCurrentField f(d, schemes(Interp2D::Bicubic, Interp1D::Akima, Interp1D::Akima));
-            EXPECT_GT(f.overshoot(), 3.0);  // the product alone would be loose
+            EXPECT_GT(f.overshoot(), 3.0); // the product alone would be loose
             EXPECT_LT(f.maxSpeed(Region{}), 0.5 * f.overshoot() * nodeMax);
         }
     }
@@ -541,10 +553,11 @@ TEST(GriddedField, SpeedBoundOfATimeWindowCoversItsStencil)
     const std::vector<double> t = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
     for (Interp1D ts : {Interp1D::Linear, Interp1D::Cubic, Interp1D::Akima})
     {
-        GriddedCurrentField f(sampleRect(kX, kY, {0, 50, 100}, t, fu, fv), schemes(Interp2D::Bilinear, Interp1D::Linear, ts));
+        GriddedCurrentField f(sampleRect(kX, kY, {0, 50, 100}, t, fu, fv),
+                              schemes(Interp2D::Bilinear, Interp1D::Linear, ts));
         Region w;
         w.tMin = 0;
-        w.tMax = 2;  // zMin = zMax = 0
+        w.tMax = 2; // zMin = zMax = 0
         const double bw = f.maxSpeed(w), bg = f.maxSpeed(Region{});
         EXPECT_LT(bw, bg);
         for (double tt = 0; tt <= 2; tt += 0.01)
@@ -619,7 +632,8 @@ TEST(GriddedField, ThreadsQueryingACurvilinearGridGetTheSameAnswers)
             for (std::size_t n = 0; n < pts.size(); ++n)
             {
                 const std::size_t q = (n * (k + 1) * 7919) % pts.size();
-                const double val = f1.velocity(pts[q][0], pts[q][1], 0, 0).u + f2.velocity(pts[q][0], pts[q][1], 0, 0).v;
+                const double val =
+                    f1.velocity(pts[q][0], pts[q][1], 0, 0).u + f2.velocity(pts[q][0], pts[q][1], 0, 0).v;
                 if (std::abs(val - ref[q]) > 1e-12)
                     ++mismatches;
             }

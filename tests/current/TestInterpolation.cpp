@@ -28,7 +28,7 @@ double applyDW(const Stencil &s, const std::vector<double> &y)
     return r;
 }
 const std::vector<double> kNonUniform{-1.0, -0.3, 0.0, 0.7, 1.1, 2.0, 3.5, 3.6, 5.0};
-}  // namespace
+} // namespace
 
 TEST(Axis, LocatesOnUniformAndNonUniformAxes)
 {
@@ -59,7 +59,7 @@ TEST(Axis, LocatesFarQueriesAndTinySpacingsOnUniformAxes)
     EXPECT_EQ(u.interval(std::numeric_limits<double>::infinity()), 3u);
     EXPECT_EQ(u.interval(-std::numeric_limits<double>::infinity()), 0u);
     EXPECT_EQ(u.interval(std::nan("")), 0u);
-    const Axis tiny({0.0, 1.5e-314, 3e-314});  // subnormal spacing: 1 / spacing overflows
+    const Axis tiny({0.0, 1.5e-314, 3e-314}); // subnormal spacing: 1 / spacing overflows
     EXPECT_TRUE(tiny.uniform());
     EXPECT_EQ(tiny.interval(3e-314), 1u);
     EXPECT_EQ(tiny.interval(1.0), 1u);
@@ -72,10 +72,10 @@ TEST(Interpolation1D, NearestPicksTheClosestNode)
     std::vector<double> y(kNonUniform.size());
     for (std::size_t i = 0; i < y.size(); ++i)
         y[i] = double(i * i) + 0.5;
-    EXPECT_DOUBLE_EQ(applyW(makeStencil(a, Interp1D::Nearest, 0.3), y), y[2]);   // 0.3 closer to 0.0 than 0.7
+    EXPECT_DOUBLE_EQ(applyW(makeStencil(a, Interp1D::Nearest, 0.3), y), y[2]); // 0.3 closer to 0.0 than 0.7
     EXPECT_DOUBLE_EQ(applyW(makeStencil(a, Interp1D::Nearest, 0.4), y), y[3]);
     EXPECT_DOUBLE_EQ(applyW(makeStencil(a, Interp1D::Nearest, 3.56), y), y[7]);
-    EXPECT_DOUBLE_EQ(applyW(makeStencil(a, Interp1D::Nearest, -9.0), y), y[0]);  // clamped
+    EXPECT_DOUBLE_EQ(applyW(makeStencil(a, Interp1D::Nearest, -9.0), y), y[0]); // clamped
 }
 
 TEST(Interpolation1D, LinearReproducesLinearFunctions)
@@ -117,7 +117,7 @@ TEST(Interpolation1D, CubicReproducesCubicPolynomialsOnNonUniformAxes)
 TEST(Interpolation1D, CubicWithFewNodesDegradesToLowerDegree)
 {
     const Axis a({0.0, 1.0, 3.0});
-    std::vector<double> y{1.0, 2.0, 10.0};  // quadratic 1 + 0 x + x^2 ... check: 1, 2, 10 -> x^2 + 1
+    std::vector<double> y{1.0, 2.0, 10.0}; // quadratic 1 + 0 x + x^2 ... check: 1, 2, 10 -> x^2 + 1
     for (double q = 0; q <= 3; q += 0.1)
         EXPECT_NEAR(applyW(makeStencil(a, Interp1D::Cubic, q), y), q * q + 1, 1e-12);
 }
@@ -198,7 +198,7 @@ TEST(Interpolation1D, OvershootFactorsBoundEveryInterpolant)
             lebesgue = std::max(lebesgue, sum);
         }
         EXPECT_LE(lebesgue, fc + 1e-12);
-        EXPECT_GT(lebesgue, 1.1);  // the cubic does overshoot
+        EXPECT_GT(lebesgue, 1.1); // the cubic does overshoot
         std::vector<double> y(nodes.size());
         double worst = 0;
         for (int trial = 0; trial < 300; ++trial)

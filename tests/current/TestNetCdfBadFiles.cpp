@@ -24,12 +24,12 @@ namespace
 struct Forecast
 {
     std::vector<double> lat{47.0, 47.2, 47.4, 47.6}, lon{-53.0, -52.8, -52.6, -52.4}, time{0, 24, 48};
-    std::vector<double> depth;   ///< empty: no depth axis
-    bool cartesian{false};       ///< axes x/y in m (and u/v in m/s) instead of lat/lon
-    bool latUnlimited{false};    ///< lat an UNLIMITED dimension (its length is that of lat)
-    bool timeUnlimited{false};   ///< time an UNLIMITED dimension
-    bool writeLat{true};         ///< false: lat never written (reads as the netCDF-4 default fill)
-    std::optional<double> latFill;  ///< a _FillValue attribute of lat
+    std::vector<double> depth;     ///< empty: no depth axis
+    bool cartesian{false};         ///< axes x/y in m (and u/v in m/s) instead of lat/lon
+    bool latUnlimited{false};      ///< lat an UNLIMITED dimension (its length is that of lat)
+    bool timeUnlimited{false};     ///< time an UNLIMITED dimension
+    bool writeLat{true};           ///< false: lat never written (reads as the netCDF-4 default fill)
+    std::optional<double> latFill; ///< a _FillValue attribute of lat
 };
 
 /// nc_put_vara of all values of var (record variables included: nc_put_var writes no records).
@@ -112,7 +112,7 @@ std::string loadError(const TempDir &tmp, const std::string &name, const Forecas
 }
 
 #define EXPECT_HAS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << (text)
-}  // namespace
+} // namespace
 
 TEST(NetCdfBadFiles, ZeroLengthLatitudeNamesTheAxis)
 {
@@ -185,7 +185,7 @@ TEST(NetCdfBadFiles, DescendingAxesAndLongitudesAcrossASeamStayAllowed)
     TempDir tmp;
     Forecast s;
     s.lat = {47.6, 47.4, 47.2, 47.0};
-    s.lon = {179.6, 179.8, 180.0, -179.8, -179.6};  // -180..180 written across the antimeridian
+    s.lon = {179.6, 179.8, 180.0, -179.8, -179.6}; // -180..180 written across the antimeridian
     const std::string path = tmp.file("seam.nc");
     writeForecast(path, s);
     const NetCdfCurrents nc = loadNetCdfCurrents(path);
@@ -217,7 +217,7 @@ TEST(NetCdfBadFiles, AxesWithFillValuesOrNonFiniteNumbersNameTheAxis)
 {
     TempDir tmp;
     Forecast s;
-    s.writeLat = false;  // never written: reads as the default fill 9.97e36
+    s.writeLat = false; // never written: reads as the default fill 9.97e36
     std::string m = loadError(tmp, "unwritten.nc", s);
     EXPECT_HAS(m, "unwritten.nc");
     EXPECT_HAS(m, "coordinate 'lat' holds fill values or non-finite numbers (9.969209968e+36 at index 0)");
@@ -282,7 +282,7 @@ std::string writeCurvilinear(const TempDir &tmp, const std::string &name,
     w.put(v, std::vector<double>(nj * ni, 0.0));
     return path;
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfBadFiles, CurvilinearCoordinatesMustBeFiniteAndUnfolded)
 {
@@ -344,7 +344,7 @@ private:
     const char *name_;
     std::optional<std::string> old_;
 };
-}  // namespace
+} // namespace
 
 TEST(NetCdfBadFiles, TripRegionLargerThanTheMemoryLimitIsRefusedBeforeReading)
 {

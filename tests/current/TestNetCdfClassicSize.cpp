@@ -46,8 +46,8 @@ void writeClassic(const std::string &path, int mode)
 std::uint64_t expectedHeaderBytes(int version)
 {
     const std::uint64_t nn = version == 5 ? 8 : 4, off = version == 1 ? 4 : 8;
-    const std::uint64_t name = nn + 4;  // every name here has at most 4 characters
-    const std::uint64_t list = 4 + nn;  // tag and nelems (or ABSENT)
+    const std::uint64_t name = nn + 4; // every name here has at most 4 characters
+    const std::uint64_t list = 4 + nn; // tag and nelems (or ABSENT)
     const std::uint64_t dims = list + 3 * (name + nn);
     // per variable: name, ndims, dimids, empty attribute list, type, vsize, begin
     auto var = [&](std::uint64_t ndims) { return name + nn + ndims * nn + list + 4 + nn + off; };
@@ -78,10 +78,10 @@ ClassicExtent extentOf(const std::string &path)
 std::string declared(std::uint64_t data, std::uint64_t end, std::uint64_t size)
 {
     return "is truncated: its header declares " + std::to_string(data) + " bytes of data ending at byte " +
-           std::to_string(end) + ", the file has " + std::to_string(size) + " bytes (" +
-           std::to_string(end - size) + " missing)";
+           std::to_string(end) + ", the file has " + std::to_string(size) + " bytes (" + std::to_string(end - size) +
+           " missing)";
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfClassicSize, CompleteFilesOfEachClassicFormatPass)
 {
@@ -97,9 +97,9 @@ TEST(NetCdfClassicSize, CompleteFilesOfEachClassicFormatPass)
         EXPECT_FALSE(e.streaming);
         EXPECT_EQ(e.headerEnd, expectedHeaderBytes(version));
         EXPECT_GE(e.dataBegin, e.headerEnd);
-        EXPECT_EQ(e.fixedEnd, e.dataBegin + 64);                  // lat, lon, s contiguous
-        EXPECT_EQ(e.recordEnd, fileSize(path));                   // NetCDF-C sizes the file to the last record
-        EXPECT_GE(e.recordEnd, e.fixedEnd + kRecords * 56);       // 56 bytes per record after the fixed data
+        EXPECT_EQ(e.fixedEnd, e.dataBegin + 64);            // lat, lon, s contiguous
+        EXPECT_EQ(e.recordEnd, fileSize(path));             // NetCDF-C sizes the file to the last record
+        EXPECT_GE(e.recordEnd, e.fixedEnd + kRecords * 56); // 56 bytes per record after the fixed data
         EXPECT_EQ(e.dataEnd(), fileSize(path));
         EXPECT_FALSE(classicTruncation(path)) << *classicTruncation(path);
         // longer than declared is fine
@@ -182,7 +182,7 @@ TEST(NetCdfClassicSize, StreamingRecordCountSkipsTheRecordsAndOtherFilesAreNotCh
     {
         std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
         f.seekp(4);
-        f.write("\xFF\xFF\xFF\xFF", 4);  // numrecs = STREAMING
+        f.write("\xFF\xFF\xFF\xFF", 4); // numrecs = STREAMING
     }
     const std::string c = cut(tmp, path, whole.fixedEnd + 4, "streamcut.nc");
     const ClassicExtent e = extentOf(c);
@@ -244,8 +244,8 @@ TEST(NetCdfClassicSize, LoaderRefusesACutClassicForecast)
         m = e.what();
     }
     EXPECT_EQ(m.rfind("NetCDF file '" + c + "' is truncated: its header declares ", 0), 0u) << m;
-    EXPECT_NE(m.find("ending at byte " + std::to_string(size) + ", the file has " + std::to_string(half) +
-                     " bytes (" + std::to_string(size - half) + " missing)"),
+    EXPECT_NE(m.find("ending at byte " + std::to_string(size) + ", the file has " + std::to_string(half) + " bytes (" +
+                     std::to_string(size - half) + " missing)"),
               std::string::npos)
         << m;
     // the time axis alone is refused too

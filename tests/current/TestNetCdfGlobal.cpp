@@ -13,8 +13,8 @@
 
 using namespace ompl_glider;
 using glider_test::GlobalForecastSpec;
-using glider_test::TempDir;
 using glider_test::regionOptions;
+using glider_test::TempDir;
 
 namespace
 {
@@ -32,20 +32,20 @@ void expectNodeSpeed(const NetCdfCurrents &nc, double lon, double lat)
     EXPECT_NEAR(c.v, e.v, 1e-7) << lon << "," << lat;
     EXPECT_TRUE(nc.field->inWater(p.x, p.y, 0.0)) << lon << "," << lat;
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfGlobal, AntimeridianOfAMinus180To180Grid)
 {
     TempDir tmp;
     const std::string path = tmp.file("global180.nc");
-    glider_test::writeGlobalForecast(path, GlobalForecastSpec{});  // -180..179.5, -90..90, 0.5 degrees
+    glider_test::writeGlobalForecast(path, GlobalForecastSpec{}); // -180..179.5, -90..90, 0.5 degrees
     // the region across the antimeridian in three spellings: the same nodes, the same plane
     const NetCdfCurrents a = loadNetCdfCurrents(path, regionOptions(170, -170, 20, 40));
     const NetCdfCurrents b = loadNetCdfCurrents(path, regionOptions(170, 190, 20, 40));
     const NetCdfCurrents c = loadNetCdfCurrents(path, regionOptions(-190, -170, 20, 40));
     for (const NetCdfCurrents *nc : {&a, &b, &c})
     {
-        EXPECT_EQ(nc->loadedShape[3], 41u + 4u);  // 170..190 plus 2 margin nodes each side, not 720
+        EXPECT_EQ(nc->loadedShape[3], 41u + 4u); // 170..190 plus 2 margin nodes each side, not 720
         EXPECT_EQ(nc->lonMin, 169.0);
         EXPECT_EQ(nc->lonMax, 191.0);
         EXPECT_EQ(nc->latMin, 19.0);
@@ -57,7 +57,7 @@ TEST(NetCdfGlobal, AntimeridianOfAMinus180To180Grid)
     const Point2 p = a.toLocal({185.0, 30.0}), q = b.toLocal({-175.0, 30.0});
     EXPECT_EQ(p.x, q.x);
     EXPECT_EQ(p.y, q.y);
-    const LonLat g = a.toGeographic(p);  // out always in -180..180
+    const LonLat g = a.toGeographic(p); // out always in -180..180
     EXPECT_NEAR(g.lon, -175.0, 1e-9);
     EXPECT_NEAR(g.lat, 30.0, 1e-9);
 }
@@ -68,7 +68,7 @@ TEST(NetCdfGlobal, GreenwichOfA0To360Grid)
     const std::string path = tmp.file("global360.nc");
     GlobalForecastSpec s;
     s.lon0 = 0.0;
-    glider_test::writeGlobalForecast(path, s);  // 0..359.5
+    glider_test::writeGlobalForecast(path, s); // 0..359.5
     const NetCdfCurrents a = loadNetCdfCurrents(path, regionOptions(-10, 10, 45, 55));
     const NetCdfCurrents b = loadNetCdfCurrents(path, regionOptions(350, 10, 45, 55));
     for (const NetCdfCurrents *nc : {&a, &b})
@@ -88,7 +88,7 @@ TEST(NetCdfGlobal, RegionalExtractWrittenAcrossGreenwich)
     TempDir tmp;
     const std::string path = tmp.file("extract.nc");
     GlobalForecastSpec s;
-    s.lon0 = 340.0;  // 340, ..., 359.75, 0, ..., 20 (0.25 degrees, 0..360 convention)
+    s.lon0 = 340.0; // 340, ..., 359.75, 0, ..., 20 (0.25 degrees, 0..360 convention)
     s.dlon = 0.25;
     s.nlon = 161;
     s.wrapTo360 = true;
@@ -123,7 +123,7 @@ TEST(NetCdfGlobal, BothSeamColumnsAreReadAsOne)
         const std::string path = tmp.file("dup" + std::to_string(int(lon0)) + ".nc");
         GlobalForecastSpec s;
         s.lon0 = lon0;
-        s.nlon = 721;  // -180..180 or 0..360: the seam column twice
+        s.nlon = 721; // -180..180 or 0..360: the seam column twice
         glider_test::writeGlobalForecast(path, s);
         // not refused as non-monotonic; the repeated column is left out of the whole grid
         const NetCdfCurrents all = loadNetCdfCurrents(path);
@@ -143,7 +143,7 @@ TEST(NetCdfGlobal, PoleRowsAreLeftOutNotRefused)
 {
     TempDir tmp;
     const std::string path = tmp.file("poles.nc");
-    glider_test::writeGlobalForecast(path, GlobalForecastSpec{});  // rows at -90 and 90
+    glider_test::writeGlobalForecast(path, GlobalForecastSpec{}); // rows at -90 and 90
     // the whole file, and a polar cap all round: loaded without the rows at +-90 (a grid cannot be projected there)
     const NetCdfCurrents all = loadNetCdfCurrents(path);
     EXPECT_EQ(all.loadedShape[2], 359u);

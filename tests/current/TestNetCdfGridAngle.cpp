@@ -73,7 +73,7 @@ void writeGridRelative(const std::string &path, std::size_t nj, std::size_t ni,
     w.put(u, pu);
     w.put(v, pv);
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfGridAngle, DerivedAngleEqualsTheTrueAngleAtEveryNode)
 {
@@ -167,7 +167,10 @@ TEST(NetCdfGridAngle, UnrotatedCurvilinearGridIsLeftAlone)
     TempDir tmp;
     const std::string path = tmp.file("plain.nc");
     writeGridRelative(
-        path, 8, 10, [](std::size_t j, std::size_t i) { return LonLat{-60.0 + 0.1 * double(i), 30.0 + 0.1 * double(j)}; },
+        path, 8, 10,
+        [](std::size_t j, std::size_t i) {
+            return LonLat{-60.0 + 0.1 * double(i), 30.0 + 0.1 * double(j)};
+        },
         [](std::size_t, std::size_t) { return 0.0; });
     const NetCdfCurrents nc = loadNetCdfCurrents(path);
     EXPECT_EQ(nc.gridAngle, "");

@@ -31,7 +31,8 @@ bool inBlock(std::size_t i, std::size_t j)
 struct Extra
 {
     std::string name;
-    std::vector<std::string> dims;  ///< names among time, depth, lat, lon (or own names, created with the grid's lengths)
+    std::vector<std::string>
+        dims; ///< names among time, depth, lat, lon (or own names, created with the grid's lengths)
     nc_type type{NC_BYTE};
     std::function<double(std::size_t t, std::size_t k, std::size_t j, std::size_t i)> value;
     std::vector<std::pair<std::string, std::string>> textAtts;
@@ -46,7 +47,8 @@ void writeFile(const std::string &path, std::size_t nz,
     NcWriter w(path);
     const int dt = w.dim("time", kNt), dy = w.dim("lat", kNy), dx = w.dim("lon", kNx);
     const int dz = nz > 0 ? w.dim("depth", nz) : -1;
-    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
+    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}),
+              vx = w.var("lon", NC_DOUBLE, {dx});
     w.text(vt, "units", "days since 2026-01-01 00:00:00");
     w.text(vy, "units", "degrees_north");
     w.text(vx, "units", "degrees_east");
@@ -80,7 +82,7 @@ void writeFile(const std::string &path, std::size_t nz,
                 ed.push_back(dy);
             else if (d == "lon")
                 ed.push_back(dx);
-            else  // a dimension of the mask's own: "eta_rho:17"
+            else // a dimension of the mask's own: "eta_rho:17"
             {
                 const auto colon = d.find(':');
                 int id;
@@ -99,7 +101,7 @@ void writeFile(const std::string &path, std::size_t nz,
     w.enddef();
     std::vector<double> t(kNt);
     for (std::size_t i = 0; i < kNt; ++i)
-        t[i] = double(i) * 30.0;  // monthly: Jan 1, Jan 31, Mar 2, Apr 1
+        t[i] = double(i) * 30.0; // monthly: Jan 1, Jan 31, Mar 2, Apr 1
     w.put(vt, t);
     w.put(vy, kLat);
     w.put(vx, kLon);
@@ -148,7 +150,7 @@ double open(std::size_t, std::size_t, std::size_t, std::size_t)
 {
     return 0.3;
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfLand, VelocitiesExactlyZeroAtEveryTimeAreLandByDefault)
 {
@@ -201,15 +203,25 @@ TEST(NetCdfLand, MaskVariablesOfEachKindAreReadByTheirMeaning)
         return [=](std::size_t, std::size_t, std::size_t j, std::size_t i) { return inBlock(i, j) ? inside : outside; };
     };
     const std::vector<Case> cases = {
-        {"ROMS mask_rho, 1 = water", {"mask_rho", {"lat", "lon"}, NC_DOUBLE, block01(0, 1), {{"long_name", "mask on RHO-points"}}, {}}},
-        {"CF flag_meanings", {"lsmask", {"lat", "lon"}, NC_BYTE, block01(2, 1),
-                              {{"flag_meanings", "sea land sea_ice"}}, {{"flag_values", {1, 2, 3}}}}},
-        {"flag_meanings, ice is not water", {"surface_type", {"lat", "lon"}, NC_BYTE, block01(3, 1),
-                                             {{"flag_meanings", "sea land sea_ice_shelf"}, {"long_name", "type"}},
-                                             {{"flag_values", {1, 2, 3}}}}},
+        {"ROMS mask_rho, 1 = water",
+         {"mask_rho", {"lat", "lon"}, NC_DOUBLE, block01(0, 1), {{"long_name", "mask on RHO-points"}}, {}}},
+        {"CF flag_meanings",
+         {"lsmask",
+          {"lat", "lon"},
+          NC_BYTE,
+          block01(2, 1),
+          {{"flag_meanings", "sea land sea_ice"}},
+          {{"flag_values", {1, 2, 3}}}}},
+        {"flag_meanings, ice is not water",
+         {"surface_type",
+          {"lat", "lon"},
+          NC_BYTE,
+          block01(3, 1),
+          {{"flag_meanings", "sea land sea_ice_shelf"}, {"long_name", "type"}},
+          {{"flag_values", {1, 2, 3}}}}},
         {"ERA5 land fraction", {"lsm", {"lat", "lon"}, NC_FLOAT, block01(0.7, 0.3), {}, {}}},
-        {"land_binary_mask", {"land_flag", {"lat", "lon"}, NC_BYTE, block01(1, 0),
-                              {{"standard_name", "land_binary_mask"}}, {}}},
+        {"land_binary_mask",
+         {"land_flag", {"lat", "lon"}, NC_BYTE, block01(1, 0), {{"standard_name", "land_binary_mask"}}, {}}},
         {"on its own dimensions", {"mask", {"eta_rho:17", "xi_rho:21"}, NC_BYTE, block01(0, 1), {}, {}}},
         {"with a time axis", {"tmask", {"time", "lat", "lon"}, NC_BYTE, block01(0, 1), {}, {}}},
     };
@@ -242,16 +254,21 @@ TEST(NetCdfLand, LevelCountMaskClosesTheDeepLayersOnly)
     // POP's KMT: 3 depth layers (0, 50, 100 m); in the block KMT = 2 (the 100 m layer is rock); at one node KMT = 0
     TempDir dir;
     const std::string path = dir.file("kmt.nc");
-    Extra kmt{"KMT", {"lat", "lon"}, NC_INT, [](std::size_t, std::size_t, std::size_t j, std::size_t i) {
+    Extra kmt{"KMT",
+              {"lat", "lon"},
+              NC_INT,
+              [](std::size_t, std::size_t, std::size_t j, std::size_t i) {
                   return i == 18 && j == 3 ? 0.0 : inBlock(i, j) ? 2.0 : 3.0;
-              }, {}, {}};
+              },
+              {},
+              {}};
     writeFile(path, 3, open, {kmt});
     const NetCdfCurrents nc = loadNetCdfCurrents(path);
     EXPECT_EQ(nc.maskVariable, "KMT");
     EXPECT_TRUE(probe(nc, 0.0).block);
     EXPECT_TRUE(probe(nc, 40.0).block);
     EXPECT_FALSE(probe(nc, 100.0).block);
-    EXPECT_FALSE(probe(nc, 75.0).block);  // between 50 and 100 m the deep layer carries weight
+    EXPECT_FALSE(probe(nc, 75.0).block); // between 50 and 100 m the deep layer carries weight
     EXPECT_TRUE(probe(nc, 100.0).away);
     const Point2 dry = nc.toLocal({kLon[18], kLat[3]});
     EXPECT_FALSE(nc.field->inWater(dry.x, dry.y, 0.0));
@@ -262,9 +279,13 @@ TEST(NetCdfLand, SeasonalMaskClosesOnlyTheRecordsOfTheTrip)
     // the block is ice (mask 0) in the first two records (Jan 1, Jan 31) and open water from Mar 2
     TempDir dir;
     const std::string path = dir.file("seasonal.nc");
-    Extra m{"tmask", {"time", "lat", "lon"}, NC_BYTE, [](std::size_t t, std::size_t, std::size_t j, std::size_t i) {
-                return inBlock(i, j) && t < 2 ? 0.0 : 1.0;
-            }, {}, {}};
+    Extra m{"tmask",
+            {"time", "lat", "lon"},
+            NC_BYTE,
+            [](std::size_t t, std::size_t, std::size_t j, std::size_t i) {
+                return inBlock(i, j) && t < 2 ? 0.0 : 1.0; },
+            {},
+            {}};
     writeFile(path, 0, open, {m});
     NetCdfCurrentOptions january;
     january.departure = "2026-01-01T00:00:00Z";
@@ -284,9 +305,10 @@ TEST(NetCdfLand, AGivenMaskMustExistAndFitTheGrid)
     TempDir dir;
     const std::string path = dir.file("staggered_mask.nc");
     // a mask on a staggered grid (one column fewer): ignored when looking automatically, an error when named
-    Extra m{"mask_u", {"eta_u:17", "xi_u:20"}, NC_BYTE, [](std::size_t, std::size_t, std::size_t, std::size_t) {
-                return 0.0;
-            }, {}, {}};
+    Extra m{"mask_u", {"eta_u:17", "xi_u:20"},
+            NC_BYTE,  [](std::size_t, std::size_t, std::size_t, std::size_t) {
+                return 0.0; },
+            {},       {}};
     writeFile(path, 0, open, {m});
     EXPECT_TRUE(loadNetCdfCurrents(path).maskVariable.empty());
     NetCdfCurrentOptions given;
@@ -337,10 +359,10 @@ TEST(NetCdfLand, DepthAverageOfALinearProfileIsExactAndKeepsTheLandOfItsLayers)
     EXPECT_NEAR(at(deep, 0.0).u, at(full, 95.0).u, 1e-7);
     EXPECT_NEAR(at(deep, 0.0).v, at(full, 95.0).v, 1e-7);
     EXPECT_NEAR(std::hypot(at(deep, 0.0).u, at(deep, 0.0).v), std::hypot(0.195, 0.1), 1e-4);
-    EXPECT_FALSE(probe(deep).block);  // rock at 150 m lies within 20..170 m
+    EXPECT_FALSE(probe(deep).block); // rock at 150 m lies within 20..170 m
     const NetCdfCurrents shallow = averaged(0.0, 90.0);
     EXPECT_NEAR(at(shallow, 0.0).u, at(full, 45.0).u, 1e-7);
-    EXPECT_TRUE(probe(shallow).block);  // the 150 m layer carries no weight over 0..90 m
+    EXPECT_TRUE(probe(shallow).block); // the 150 m layer carries no weight over 0..90 m
     // beyond the deepest layer the profile is constant: 0..300 m averages 200 m of the profile and 100 m of 0.3,
     // (200 * 0.2 + 100 * 0.3) / 300 = 0.2333..., the profile's value at 133.33 m
     const NetCdfCurrents beyond = averaged(0.0, 300.0);

@@ -12,16 +12,16 @@
 #include "ompl_glider/current/NetCdfCurrents.h"
 
 using namespace ompl_glider;
+using glider_test::inPlane;
 using glider_test::linspace;
 using glider_test::NcWriter;
 using glider_test::TempDir;
-using glider_test::inPlane;
 
 namespace
 {
 
 // HYCOM-like: u = 0.1 + 0.01 i + 0.015 j - 0.001 depth + 0.01 hour (exact multiples of the 0.001 packing step)
-const std::vector<double> kHyLon = linspace(280.0, 0.5, 10);  // 280 .. 284.5 = -80 .. -75.5
+const std::vector<double> kHyLon = linspace(280.0, 0.5, 10); // 280 .. 284.5 = -80 .. -75.5
 const std::vector<double> kHyLat = linspace(30.0, 0.5, 8);
 const std::vector<double> kHyDepth{0, 10, 30, 100, 300, 1000};
 const std::vector<double> kHyHours = linspace(0.0, 3.0, 12);
@@ -76,14 +76,14 @@ void writeHycom(const std::string &path, bool withLand)
     w.put(u, pu);
     w.put(v, pv);
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfLayouts, PackedHycomLikeValuesAtNodesAndBetween)
 {
     TempDir tmp;
     const std::string path = tmp.file("hycom.nc");
     writeHycom(path, true);
-    NetCdfCurrentOptions o;  // everything automatic; whole file
+    NetCdfCurrentOptions o; // everything automatic; whole file
     const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
     ASSERT_TRUE(nc.geographic);
     ASSERT_TRUE(nc.dated);
@@ -91,7 +91,7 @@ TEST(NetCdfLayouts, PackedHycomLikeValuesAtNodesAndBetween)
     EXPECT_EQ(nc.isoTime(0.0), "2000-01-01T00:00:00Z");
     EXPECT_EQ(nc.loadedShape, (std::vector<std::size_t>{12, 6, 8, 10}));
     const GriddedCurrentField &f = *nc.field;
-    EXPECT_EQ(f.timeEnd(), 33.0 * 3600);  // Refuse by default
+    EXPECT_EQ(f.timeEnd(), 33.0 * 3600); // Refuse by default
     // at nodes: exact (float storage)
     for (double lon : {280.0, 281.5, 284.5})
         for (double lat : {30.0, 31.5, 33.5})
@@ -137,14 +137,14 @@ TEST(NetCdfLayouts, LoadsOnlyTheRegionDepthsAndTimesTheMissionNeeds)
     const std::string path = tmp.file("hycom.nc");
     writeHycom(path, false);
     NetCdfCurrentOptions o;
-    o.lonMin = -79.0;  // the file is 0..360
+    o.lonMin = -79.0; // the file is 0..360
     o.lonMax = -78.0;
     o.latMin = 31.0;
     o.latMax = 32.0;
     o.marginNodes = 1;
-    o.maxDepth = 20.0;                      // layers 0, 10, 30 (first at or below 20) + 2 = 5
-    o.departure = "2000-01-01T06:00:00Z";   // hour 6 = index 2
-    o.horizon = 3 * 3600.0;                 // to hour 9 = index 3: indices 0 .. 6 with the margin of 2
+    o.maxDepth = 20.0;                    // layers 0, 10, 30 (first at or below 20) + 2 = 5
+    o.departure = "2000-01-01T06:00:00Z"; // hour 6 = index 2
+    o.horizon = 3 * 3600.0;               // to hour 9 = index 3: indices 0 .. 6 with the margin of 2
     o.field.beyond = BeyondForecast::HoldLast;
     const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
     // lon -79 .. -78 = 281 .. 282: nodes 2..4 + 1 = 1..5 (5); lat 31..32: nodes 2..4 + 1 = 1..5 (5)
@@ -181,11 +181,11 @@ TEST(NetCdfLayouts, LoadsOnlyTheRegionDepthsAndTimesTheMissionNeeds)
         const std::string m = e.what();
         EXPECT_NE(m.find("outside the forecast"), std::string::npos) << m;
         EXPECT_NE(m.find(path), std::string::npos) << m;
-        EXPECT_NE(m.find("2000-01-02T09:00:00Z"), std::string::npos) << m;  // the last forecast time
+        EXPECT_NE(m.find("2000-01-02T09:00:00Z"), std::string::npos) << m; // the last forecast time
     }
     o.departure = "1999-12-31T23:00:00Z";
     EXPECT_THROW(loadNetCdfCurrents(path, o), Error);
-    o.departure = "7200";  // seconds after the first forecast time
+    o.departure = "7200"; // seconds after the first forecast time
     EXPECT_NEAR(loadNetCdfCurrents(path, o).departureTime, 7200.0, 1e-9);
 }
 
@@ -193,9 +193,9 @@ TEST(NetCdfLayouts, CmemsLikeFloatDescendingLatitudeWithFill)
 {
     TempDir tmp;
     const std::string path = tmp.file("cmems.nc");
-    const std::vector<double> lat = linspace(34.0, -0.5, 5);  // descending
+    const std::vector<double> lat = linspace(34.0, -0.5, 5); // descending
     const std::vector<double> lon = linspace(-10.0, 0.5, 6);
-    const std::vector<double> time{946684800.0, 946684800.0 + 86400};  // seconds since 1970: 2000-01-01, -02
+    const std::vector<double> time{946684800.0, 946684800.0 + 86400}; // seconds since 1970: 2000-01-01, -02
     {
         NcWriter w(path);
         const int dt = w.dim("time", 2), dz = w.dim("depth", 1), dy = w.dim("latitude", 5), dx = w.dim("longitude", 6);
@@ -225,7 +225,7 @@ TEST(NetCdfLayouts, CmemsLikeFloatDescendingLatitudeWithFill)
             for (double la : lat)
                 for (double lo : lon)
                 {
-                    const bool land = la == 34.0 && lo == -10.0;  // north-west corner node
+                    const bool land = la == 34.0 && lo == -10.0; // north-west corner node
                     pu.push_back(land ? 1e20 : 0.25 + 0.1 * (la - 32.0) + 0.05 * t);
                     pv.push_back(land ? 1e20 : 0.05 * (lo + 10.0));
                 }
@@ -278,7 +278,7 @@ TEST(NetCdfLayouts, GlobalGridCutAcrossTheAntimeridian)
         for (std::size_t j = 0; j < 4; ++j)
             for (double lo : lon)
             {
-                pu.push_back(0.1 * std::fmod(lo + 360.0, 360.0));  // cm/s, continuous across 180
+                pu.push_back(0.1 * std::fmod(lo + 360.0, 360.0)); // cm/s, continuous across 180
                 pv.push_back(0.0);
             }
         w.put(u, pu);
@@ -286,16 +286,16 @@ TEST(NetCdfLayouts, GlobalGridCutAcrossTheAntimeridian)
     }
     NetCdfCurrentOptions o;
     o.lonMin = 178.0;
-    o.lonMax = -178.0;  // across the antimeridian
+    o.lonMax = -178.0; // across the antimeridian
     o.latMin = 0.0;
     o.latMax = 1.0;
     const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
-    EXPECT_LE(nc.loadedShape[3], 10u);  // 176 .. 184 (9 nodes), not 360
-    EXPECT_TRUE(std::isinf(nc.field->timeEnd()));  // steady
+    EXPECT_LE(nc.loadedShape[3], 10u);            // 176 .. 184 (9 nodes), not 360
+    EXPECT_TRUE(std::isinf(nc.field->timeEnd())); // steady
     for (double lo : {178.0, 179.5, -180.0, -179.25, -178.0})
     {
         const Point2 p = nc.toLocal({lo, 0.5});
-        const double expectMs = 0.001 * std::fmod(lo + 360.0, 360.0);  // cm/s -> m/s
+        const double expectMs = 0.001 * std::fmod(lo + 360.0, 360.0); // cm/s -> m/s
         const Velocity c = nc.field->velocity(p.x, p.y, 0, 0);
         EXPECT_NEAR(std::hypot(c.u, c.v), expectMs, 1e-6) << lo;
         EXPECT_TRUE(nc.field->inWater(p.x, p.y, 0));
@@ -308,7 +308,9 @@ TEST(NetCdfLayouts, CurvilinearNemoLikeGridWithLandAndNoleapCalendar)
     const std::string path = tmp.file("nemo.nc");
     const std::size_t ni = 12, nj = 9;
     const double th = 0.35;
-    auto nodeLon = [&](double i, double j) { return -50.0 + 0.1 * (i * std::cos(th) - j * std::sin(th)) / std::cos(45.0 * M_PI / 180); };
+    auto nodeLon = [&](double i, double j) {
+        return -50.0 + 0.1 * (i * std::cos(th) - j * std::sin(th)) / std::cos(45.0 * M_PI / 180);
+    };
     auto nodeLat = [&](double i, double j) { return 45.0 + 0.1 * (i * std::sin(th) + j * std::cos(th)); };
     auto uf = [](double i, double j, double day) { return 0.1 + 0.01 * i + 0.02 * j + 0.04 * day; };
     auto vf = [](double, double j, double) { return -0.05 + 0.01 * j; };
@@ -324,7 +326,8 @@ TEST(NetCdfLayouts, CurvilinearNemoLikeGridWithLandAndNoleapCalendar)
         w.text(vz, "positive", "down");
         w.text(la, "units", "degrees_north");
         w.text(lo, "units", "degrees_east");
-        const int u = w.var("vozocrtx", NC_DOUBLE, {dt, dz, dy, dx}), v = w.var("vomecrty", NC_DOUBLE, {dt, dz, dy, dx});
+        const int u = w.var("vozocrtx", NC_DOUBLE, {dt, dz, dy, dx}),
+                  v = w.var("vomecrty", NC_DOUBLE, {dt, dz, dy, dx});
         for (int var : {u, v})
         {
             w.text(var, "units", "m/s");
@@ -335,7 +338,7 @@ TEST(NetCdfLayouts, CurvilinearNemoLikeGridWithLandAndNoleapCalendar)
         w.text(u, "standard_name", "eastward_sea_water_velocity");
         w.text(v, "standard_name", "northward_sea_water_velocity");
         w.enddef();
-        w.put(vt, {25550.0, 25550.25});  // 2020-01-01 00:00 and 06:00 in the noleap calendar
+        w.put(vt, {25550.0, 25550.25}); // 2020-01-01 00:00 and 06:00 in the noleap calendar
         w.put(vz, {0.5});
         std::vector<double> pla, plo, pu, pv;
         for (std::size_t j = 0; j < nj; ++j)
@@ -383,7 +386,7 @@ TEST(NetCdfLayouts, CurvilinearNemoLikeGridWithLandAndNoleapCalendar)
     EXPECT_FALSE(f.inWater(p.x, p.y, 0.5));
     const Velocity c = f.velocity(p.x, p.y, 0.5, 0);
     EXPECT_LT(std::hypot(c.u, c.v), 1.0);
-    p = nc.toLocal({nodeLon(8.5, 5.5), nodeLat(8.5, 5.5)});  // cell with the land corner (9, 6)
+    p = nc.toLocal({nodeLon(8.5, 5.5), nodeLat(8.5, 5.5)}); // cell with the land corner (9, 6)
     EXPECT_FALSE(f.inWater(p.x, p.y, 0.5));
     p = nc.toLocal({nodeLon(7.5, 5.5), nodeLat(7.5, 5.5)});
     EXPECT_TRUE(f.inWater(p.x, p.y, 0.5));
@@ -416,7 +419,7 @@ TEST(NetCdfLayouts, DepthPositiveUpAndCartesianFiles)
         w.text(u, "units", "cm s-1");
         w.text(v, "units", "cm s-1");
         w.enddef();
-        w.put(vz, {-100.0, -50.0, 0.0});  // positive up: 100 m deep first
+        w.put(vz, {-100.0, -50.0, 0.0}); // positive up: 100 m deep first
         w.put(vy, {0, 1, 2});
         w.put(vx, {0, 1, 2, 3});
         std::vector<double> pu, pv;
@@ -424,7 +427,7 @@ TEST(NetCdfLayouts, DepthPositiveUpAndCartesianFiles)
             for (int j = 0; j < 3; ++j)
                 for (int i = 0; i < 4; ++i)
                 {
-                    pu.push_back(10.0 + 0.1 * z + i);  // cm/s
+                    pu.push_back(10.0 + 0.1 * z + i); // cm/s
                     pv.push_back(-5.0 + j);
                 }
         w.put(u, pu);
@@ -433,13 +436,13 @@ TEST(NetCdfLayouts, DepthPositiveUpAndCartesianFiles)
     const NetCdfCurrents nc = loadNetCdfCurrents(path);
     EXPECT_FALSE(nc.geographic);
     EXPECT_EQ(nc.projection, nullptr);
-    const Velocity c = nc.field->velocity(1500.0, 500.0, 75.0, 0.0);  // km axes -> metres
+    const Velocity c = nc.field->velocity(1500.0, 500.0, 75.0, 0.0); // km axes -> metres
     EXPECT_NEAR(c.u, 0.01 * (10.0 + 7.5 + 1.5), 1e-7);
     EXPECT_NEAR(c.v, 0.01 * (-5.0 + 0.5), 1e-7);
     EXPECT_EQ(nc.field->depthAxis().front(), 0.0);
     EXPECT_EQ(nc.field->depthAxis().back(), 100.0);
     NetCdfCurrentOptions o;
-    o.maxDepth = 10.0;  // layers 0, 50 + 2 -> all 3 here
+    o.maxDepth = 10.0; // layers 0, 50 + 2 -> all 3 here
     EXPECT_EQ(loadNetCdfCurrents(path, o).loadedShape[1], 3u);
     // the same with every name given: still Cartesian (the names do not make it geographic)
     o.uName = "u";
@@ -500,7 +503,8 @@ TEST(NetCdfLayouts, ErrorsNameTheFileTheVariableAndWhatWasExpected)
         const std::string p = tmp.file(name);
         NcWriter w(p);
         const int dt = w.dim("time", 2), de = w.dim("member", 3), dy = w.dim("lat", 2), dx = w.dim("lon", 2);
-        const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
+        const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}),
+                  vx = w.var("lon", NC_DOUBLE, {dx});
         w.text(vt, "units", tunits);
         w.text(vy, "units", "degrees_north");
         w.text(vx, "units", "degrees_east");

@@ -17,19 +17,17 @@
 #include "ompl_glider/current/NetCdfCurrents.h"
 
 using namespace ompl_glider;
-using glider_test::NcWriter;
-using glider_test::TempDir;
 using glider_test::inPlane;
-using glider_test::regionOptions;
-using glider_test::WrapGrid;
-using glider_test::RomsGrid;
-using glider_test::wrapCurrent;
 using glider_test::kDeg;
+using glider_test::NcWriter;
+using glider_test::regionOptions;
+using glider_test::RomsGrid;
+using glider_test::TempDir;
+using glider_test::wrapCurrent;
+using glider_test::WrapGrid;
 
 namespace
 {
-
-
 
 void expectWrapNodes(const NetCdfCurrents &nc, const WrapGrid &g, std::size_t j, const std::vector<std::size_t> &cols)
 {
@@ -47,7 +45,7 @@ void expectWrapNodes(const NetCdfCurrents &nc, const WrapGrid &g, std::size_t j,
     }
 }
 
-}  // namespace
+} // namespace
 
 TEST(NetCdfModelGrids, CurvilinearGridWhoseIndexWrapsIsSubsetAcrossItsSeam)
 {
@@ -158,9 +156,9 @@ TEST(NetCdfModelGrids, RomsCGridIsReadAtItsOwnPointsRotatedAndMasked)
     EXPECT_GT(std::hypot(c.u - e.u, c.v - e.v), 0.1);
     // a region: fewer rho points, the same values
     const LonLat lo = grid.geo(3, 3), hi = grid.geo(7, 8);
-    const NetCdfCurrents sub = loadNetCdfCurrents(
-        path, regionOptions(std::min(lo.lon, hi.lon), std::max(lo.lon, hi.lon), std::min(lo.lat, hi.lat),
-                     std::max(lo.lat, hi.lat)));
+    const NetCdfCurrents sub =
+        loadNetCdfCurrents(path, regionOptions(std::min(lo.lon, hi.lon), std::max(lo.lon, hi.lon),
+                                               std::min(lo.lat, hi.lat), std::max(lo.lat, hi.lat)));
     EXPECT_LT(sub.loadedValues, nc.loadedValues);
     const LonLat m = grid.geo(5, 5);
     RomsGrid::current(grid.at(5, 5), ue, vn);
@@ -228,7 +226,7 @@ TEST(NetCdfModelGrids, PopBGridAlongTheGridInCmPerSecondWithAngleAndKmu)
         }
         w.enddef();
         w.put(vt, {730000.0});
-        w.put(vz, {500.0, 5000.0});  // 5 m and 50 m
+        w.put(vz, {500.0, 5000.0}); // 5 m and 50 m
         std::vector<double> lon, lat, tlon, tlat, m, pu, pv;
         for (std::size_t j = 0; j < nj; ++j)
             for (std::size_t i = 0; i < ni; ++i)
@@ -246,7 +244,7 @@ TEST(NetCdfModelGrids, PopBGridAlongTheGridInCmPerSecondWithAngleAndKmu)
                 {
                     double ue, vn;
                     RomsGrid::current(grid.at(double(j), double(i)), ue, vn);
-                    const double s = k == 0 ? 100.0 : 50.0;  // cm/s; half the speed at 50 m
+                    const double s = k == 0 ? 100.0 : 50.0; // cm/s; half the speed at 50 m
                     pu.push_back(kmu(j, i) > k ? s * (ue * std::cos(grid.theta) + vn * std::sin(grid.theta)) : 0.0);
                     pv.push_back(kmu(j, i) > k ? s * (-ue * std::sin(grid.theta) + vn * std::cos(grid.theta)) : 0.0);
                 }
@@ -264,7 +262,7 @@ TEST(NetCdfModelGrids, PopBGridAlongTheGridInCmPerSecondWithAngleAndKmu)
     o.vName = "VVEL";
     const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
     EXPECT_EQ(nc.maskVariable, "KMU");
-    EXPECT_EQ(nc.loadedShape[3], ni);  // the U points themselves
+    EXPECT_EQ(nc.loadedShape[3], ni); // the U points themselves
     for (auto [j, i] : {std::pair<std::size_t, std::size_t>{2, 2}, {6, 7}, {12, 16}})
         for (double depth : {5.0, 50.0})
         {
@@ -302,7 +300,7 @@ TEST(NetCdfModelGrids, StaggeredAndAngleErrorsNameTheVariables)
     {
         EXPECT_NE(std::string(e.what()).find("no grid angle variable 'grid_angle'"), std::string::npos) << e.what();
     }
-    o.angleName = "mask_u";  // not on the grid of the rho points
+    o.angleName = "mask_u"; // not on the grid of the rho points
     try
     {
         loadNetCdfCurrents(path, o);
@@ -341,8 +339,7 @@ TEST(NetCdfModelGrids, StaggeredAndAngleErrorsNameTheVariables)
     catch (const Error &e)
     {
         const std::string m = e.what();
-        EXPECT_NE(m.find("'u' (y = 4, x = 5) and 'v' (y2 = 4, x2 = 6) are on different grids"), std::string::npos)
-            << m;
+        EXPECT_NE(m.find("'u' (y = 4, x = 5) and 'v' (y2 = 4, x2 = 6) are on different grids"), std::string::npos) << m;
     }
 }
 
@@ -362,7 +359,7 @@ TEST(NetCdfModelGrids, RomsSCoordinateLevelsBecomeDepthsPerColumn)
     ASSERT_GE(levels.size(), 3u);
     EXPECT_EQ(levels[0], 0.0);
     EXPECT_EQ(levels[levels.size() - 3], 100.0);
-    const double zTop = grid.levelZ(grid.sLevels - 1, 200.0);  // the top s-level where the bottom is 200 m
+    const double zTop = grid.levelZ(grid.sLevels - 1, 200.0); // the top s-level where the bottom is 200 m
     std::size_t checked = 0;
     for (auto [j, i] : {std::pair<std::size_t, std::size_t>{6, 4}, {7, 8}, {10, 4}, {4, 8}})
         for (double depth : {0.0, 10.0, 50.0, 100.0})

@@ -73,7 +73,7 @@ void expectSameField(const NetCdfCurrents &a, const NetCdfCurrents &b, double t0
             }
     EXPECT_GT(compared, 1000);
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfMultiFile, DailyFilesGiveTheCombinedFileField)
 {
@@ -91,12 +91,12 @@ TEST(NetCdfMultiFile, DailyFilesGiveTheCombinedFileField)
     EXPECT_EQ(many.forecastBegin, one.forecastBegin);
     EXPECT_EQ(many.forecastEnd, one.forecastEnd);
     EXPECT_EQ(many.forecastEnd, 93.0 * 3600.0);
-    EXPECT_EQ(many.droppedRecords, 1u);  // day 1's record at 2026-03-03T00:00, replaced by day 2's
+    EXPECT_EQ(many.droppedRecords, 1u); // day 1's record at 2026-03-03T00:00, replaced by day 2's
     EXPECT_EQ(one.droppedRecords, 0u);
     EXPECT_EQ(many.isoTime(48.0 * 3600.0), "2026-03-03T00:00:00Z");
     EXPECT_EQ(many.fillLandNodes, one.fillLandNodes);
     EXPECT_EQ(many.zeroLandNodes, one.zeroLandNodes);
-    EXPECT_EQ(many.zeroLandNodes, 0u);  // the still node lies away from the fill-value land: calm water
+    EXPECT_EQ(many.zeroLandNodes, 0u); // the still node lies away from the fill-value land: calm water
     EXPECT_GT(many.fillLandNodes, 0u);
     expectSameField(one, many, 0.0, 93.0 * 3600.0);
     // the overlapping record: the later file's values (the true ones), not day 1's biased copy
@@ -110,14 +110,14 @@ TEST(NetCdfMultiFile, OnlyTheFilesOfTheTripAreRead)
     Files f;
     NetCdfCurrentOptions o = options();
     o.departure = "2026-03-01T20:00:00Z";
-    o.horizon = 20.0 * 3600.0;  // to 2026-03-02T16:00; 2 records of margin: to 2026-03-03T00:00 (day 2's first)
+    o.horizon = 20.0 * 3600.0; // to 2026-03-02T16:00; 2 records of margin: to 2026-03-03T00:00 (day 2's first)
     const NetCdfCurrents one = loadNetCdfCurrents(f.combined, o);
     const NetCdfCurrents many = loadNetCdfCurrents(f.days, o);
     EXPECT_EQ(many.files, (std::vector<std::string>{f.days[0], f.days[1], f.days[2]}));
     EXPECT_EQ(many.departureTime, 20.0 * 3600.0);
     EXPECT_EQ(many.departureTime, one.departureTime);
     EXPECT_EQ(many.loadedShape, one.loadedShape);
-    EXPECT_EQ(many.loadedShape.front(), 13u);  // 12:00 on day 0 to 00:00 on day 2
+    EXPECT_EQ(many.loadedShape.front(), 13u); // 12:00 on day 0 to 00:00 on day 2
     expectSameField(one, many, 14.0 * 3600.0, 48.0 * 3600.0);
     // a departure in the gap between two files' records is a departure like any other
     o.departure = "2026-03-01T22:30:00Z";
@@ -133,7 +133,7 @@ TEST(NetCdfMultiFile, OnlyTheFilesOfTheTripAreRead)
 
 TEST(NetCdfMultiFile, ZeroVelocityLandIsDecidedOnAllTheTripsRecords)
 {
-    Files f(false);  // no fill values: the zeros are the only land the files give
+    Files f(false); // no fill values: the zeros are the only land the files give
     // node (3, 2) is still throughout day 0's file, moving from day 1 on: water for a trip into day 1, as in the
     // combined file (not land because one file saw it still)
     NetCdfCurrentOptions o = options();
@@ -149,7 +149,7 @@ TEST(NetCdfMultiFile, ZeroVelocityLandIsDecidedOnAllTheTripsRecords)
     o.horizon = 9.0 * 3600.0;
     one = loadNetCdfCurrents(f.combined, o);
     many = loadNetCdfCurrents(f.days, o);
-    EXPECT_EQ(many.files.size(), 2u);  // the stencil margin reaches 00:00 of day 1
+    EXPECT_EQ(many.files.size(), 2u); // the stencil margin reaches 00:00 of day 1
     EXPECT_EQ(many.zeroLandNodes, 2u);
     EXPECT_EQ(many.zeroLandNodes, one.zeroLandNodes);
     expectSameField(one, many, 0.0, 24.0 * 3600.0);
@@ -159,8 +159,7 @@ TEST(NetCdfMultiFile, TimeAxisOfSeveralFiles)
 {
     Files f;
     const NetCdfTimeAxis one = readNetCdfTimeAxis(f.combined, NetCdfCurrentOptions{});
-    const NetCdfTimeAxis many = readNetCdfTimeAxis(std::vector<std::string>{f.days[2], f.days[0], f.days[3],
-                                                                            f.days[1]},
+    const NetCdfTimeAxis many = readNetCdfTimeAxis(std::vector<std::string>{f.days[2], f.days[0], f.days[3], f.days[1]},
                                                    NetCdfCurrentOptions{});
     EXPECT_TRUE(many.found && many.dated);
     EXPECT_FALSE(many.steady);

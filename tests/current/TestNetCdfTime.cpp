@@ -23,7 +23,7 @@ double days(const std::string &a, const std::string &b, Calendar c)
 {
     return (secondsSinceCalendarEpoch(parseDateTime(b), c) - secondsSinceCalendarEpoch(parseDateTime(a), c)) / 86400.0;
 }
-}  // namespace
+} // namespace
 
 TEST(Time, CalendarsCountDaysTheirOwnWay)
 {
@@ -36,7 +36,7 @@ TEST(Time, CalendarsCountDaysTheirOwnWay)
     EXPECT_EQ(days("1900-02-01", "1900-03-01", Calendar::Julian), 29);
     EXPECT_EQ(days("1950-01-01", "2020-01-01", Calendar::NoLeap), 70 * 365);
     EXPECT_EQ(days("1950-01-01", "2020-01-01", Calendar::Day360), 70 * 360);
-    EXPECT_EQ(days("1970-01-01", "2000-01-01", Calendar::Standard), 10957);  // known Unix-day count
+    EXPECT_EQ(days("1970-01-01", "2000-01-01", Calendar::Standard), 10957); // known Unix-day count
     // the Gregorian reform: 1582-10-04 (Julian) is followed by 1582-10-15
     EXPECT_EQ(days("1582-10-04", "1582-10-15", Calendar::Standard), 1);
     EXPECT_EQ(days("1582-10-04", "1582-10-15", Calendar::ProlepticGregorian), 11);
@@ -86,8 +86,8 @@ TEST(Time, ParsesUnitsAndIsoVariants)
               "2026-02-29T23:00:00Z");
     EXPECT_EQ(secondsSinceCalendarEpoch("2020-06-01T02:00:00+03:00", Calendar::Standard),
               secondsSinceCalendarEpoch(parseDateTime("2020-05-31T23:00:00"), Calendar::Standard));
-    for (const char *bad : {"hours after 2000-01-01", "months since 2000-01-01", "fortnights since 2000-01-01",
-                            "days since yesterday"})
+    for (const char *bad :
+         {"hours after 2000-01-01", "months since 2000-01-01", "fortnights since 2000-01-01", "days since yesterday"})
     {
         try
         {
@@ -123,9 +123,9 @@ void writeTimeAxisFile(const std::string &path, const TimeAxisFile &spec)
     {
         const int dt = w.dim(spec.timeName, spec.times.size());
         vt = w.var(spec.timeName, NC_DOUBLE, {dt});
-        for (const auto &[att, value] : {std::make_pair("units", spec.units), std::make_pair("calendar", spec.calendar),
-                                         std::make_pair("standard_name", spec.standardName),
-                                         std::make_pair("axis", spec.axis)})
+        for (const auto &[att, value] :
+             {std::make_pair("units", spec.units), std::make_pair("calendar", spec.calendar),
+              std::make_pair("standard_name", spec.standardName), std::make_pair("axis", spec.axis)})
             if (!value.empty())
                 w.text(vt, att, value);
         dims.push_back(dt);
@@ -168,7 +168,7 @@ std::string timeErrorOf(const std::function<void()> &f)
     }
     return "";
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfTimeAxis, FoundByStandardNameAxisOrUnitsWhateverItsName)
 {
@@ -176,7 +176,11 @@ TEST(NetCdfTimeAxis, FoundByStandardNameAxisOrUnitsWhateverItsName)
     // NEMO style: time_counter, standard_name time, axis T, seconds since 1950-01-01 in the noleap calendar.
     // First time 2020-01-01: 1949 + 70 years of 365 days after 0001-01-01 (the noleap epoch).
     const std::string nemo = tmp.file("nemo.nc");
-    writeTimeAxisFile(nemo, {"time_counter", "seconds since 1950-01-01 00:00:00", "noleap", "time", "T",
+    writeTimeAxisFile(nemo, {"time_counter",
+                             "seconds since 1950-01-01 00:00:00",
+                             "noleap",
+                             "time",
+                             "T",
                              {70 * 365 * 86400.0, 70 * 365 * 86400.0 + 21600, 70 * 365 * 86400.0 + 43200}});
     const NetCdfTimeAxis a = readNetCdfTimeAxis(nemo);
     EXPECT_TRUE(a.found);

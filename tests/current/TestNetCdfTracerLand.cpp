@@ -50,8 +50,8 @@ bool allT(std::size_t j, std::size_t i)
 
 struct PopFile
 {
-    bool uGridLabel{true};  ///< lat2d/lon2d say "u-grid" (as pop.nc)
-    bool tracer{true};      ///< write t
+    bool uGridLabel{true}; ///< lat2d/lon2d say "u-grid" (as pop.nc)
+    bool tracer{true};     ///< write t
     bool tracerAllFill{false};
     /// POP history layout instead: ULONG/ULAT for the velocities, TLONG/TLAT (tOffset cells from them) for TEMP
     bool history{false};
@@ -153,7 +153,7 @@ bool has(const std::string &s, const std::string &part)
 {
     return s.find(part) != std::string::npos;
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfTracerLand, PopBGridCoastalZerosAndTheTracerAreLand)
 {
@@ -162,7 +162,7 @@ TEST(NetCdfTracerLand, PopBGridCoastalZerosAndTheTracerAreLand)
     writePop(path, {});
     const std::size_t fill = countNodes(allT), coast = countNodes(anyT) - fill;
     ASSERT_EQ(fill, 6u);
-    ASSERT_EQ(coast, 10u);  // the continent's ring of 6 and the island's 4 corners
+    ASSERT_EQ(coast, 10u); // the continent's ring of 6 and the island's 4 corners
     NetCdfCurrentOptions o;
     o.uName = "urot";
     o.vName = "vrot";
@@ -184,7 +184,7 @@ TEST(NetCdfTracerLand, PopBGridCoastalZerosAndTheTracerAreLand)
     noTracer.tracerName = "none";
     const NetCdfCurrents zeros = loadNetCdfCurrents(path, noTracer);
     EXPECT_TRUE(zeros.tracerVariable.empty());
-    EXPECT_TRUE(zeros.cornerGrid);  // from the u-grid coordinates
+    EXPECT_TRUE(zeros.cornerGrid); // from the u-grid coordinates
     EXPECT_EQ(zeros.fillLandNodes, fill);
     EXPECT_EQ(zeros.zeroLandNodes, coast);
     expectCells(zeros, anyT, "zeros");
@@ -221,7 +221,8 @@ TEST(NetCdfTracerLand, WithoutBGridLabelsTheTracerIsReadAtTheSameIndex)
     noTracer.tracerName = "none";
     const NetCdfCurrents zeros = loadNetCdfCurrents(path, noTracer);
     EXPECT_EQ(zeros.zeroLandNodes, 6u);
-    expectCells(zeros, [](std::size_t j, std::size_t i) { return anyT(j, i) && j < 5; }, "zeros next to land");
+    expectCells(
+        zeros, [](std::size_t j, std::size_t i) { return anyT(j, i) && j < 5; }, "zeros next to land");
 }
 
 TEST(NetCdfTracerLand, TracerCoordinatesPlaceTheCellsOfAPopHistoryFile)
@@ -249,7 +250,8 @@ TEST(NetCdfTracerLand, TracerCoordinatesPlaceTheCellsOfAPopHistoryFile)
                (i > 0 && j > 0 && landT(j - 1, i - 1));
     };
     // (land is the union: the velocities' zeros and fills mark their own north-east cells too)
-    expectCells(sw, [&](std::size_t j, std::size_t i) { return around(j, i) || anyT(j, i); }, "south-west");
+    expectCells(
+        sw, [&](std::size_t j, std::size_t i) { return around(j, i) || anyT(j, i); }, "south-west");
     // the tracer on the velocities' own points: the same index
     p.tOffset = 0.0;
     const std::string same = dir.file("same.nc");
@@ -261,7 +263,7 @@ TEST(NetCdfTracerLand, TracerChoiceNoneAndUnwrittenTracers)
 {
     TempDir dir;
     PopFile p;
-    p.tracerAllFill = true;  // a variable defined but never written: its fill values are not a map of land
+    p.tracerAllFill = true; // a variable defined but never written: its fill values are not a map of land
     const std::string path = dir.file("empty_tracer.nc");
     writePop(path, p);
     NetCdfCurrentOptions o;
@@ -270,7 +272,7 @@ TEST(NetCdfTracerLand, TracerChoiceNoneAndUnwrittenTracers)
     const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
     EXPECT_TRUE(nc.tracerVariable.empty());
     EXPECT_EQ(nc.tracerLandNodes, 0u);
-    EXPECT_EQ(nc.landNodes, countNodes(anyT));  // the B grid's zeros still are
+    EXPECT_EQ(nc.landNodes, countNodes(anyT)); // the B grid's zeros still are
     // a given tracer must exist and fit the velocities
     o.tracerName = "salt";
     try
@@ -292,15 +294,15 @@ namespace
 constexpr std::size_t kAj = 12, kAi = 14, kAt = 3;
 bool fillBlock(std::size_t j, std::size_t i)
 {
-    return (j <= 2 && i <= 3) || (j >= 10 && i >= 12);  // a continent and a corner of land in the north-east
+    return (j <= 2 && i <= 3) || (j >= 10 && i >= 12); // a continent and a corner of land in the north-east
 }
 bool ring(std::size_t j, std::size_t i)
 {
-    return !fillBlock(j, i) && j <= 3 && i <= 4;  // zeros along the continent's coast
+    return !fillBlock(j, i) && j <= 3 && i <= 4; // zeros along the continent's coast
 }
 bool calm(std::size_t j, std::size_t i)
 {
-    return j >= 6 && j <= 7 && i >= 8 && i <= 9;  // a calm patch in open water, exactly 0 in every record
+    return j >= 6 && j <= 7 && i >= 8 && i <= 9; // a calm patch in open water, exactly 0 in every record
 }
 
 void writeAGrid(const std::string &path, bool tracer)
@@ -356,7 +358,7 @@ bool waterAt(const NetCdfCurrents &nc, double lon, double lat)
     const Point2 p = nc.toLocal({lon, lat});
     return nc.field->inWater(p.x, p.y, 0.0);
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfTracerLand, CoastalZerosAreLandAndCalmWaterAwayFromLandIsWater)
 {
@@ -370,7 +372,7 @@ TEST(NetCdfTracerLand, CoastalZerosAreLandAndCalmWaterAwayFromLandIsWater)
     EXPECT_EQ(nc.zeroLandNodes, countNodes(ring));
     EXPECT_EQ(nc.landNodes, countNodes(fillBlock) + countNodes(ring));
     EXPECT_TRUE(waterAt(nc, uLon(8) + 0.25, uLat(6) + 0.25));  // inside the calm patch
-    EXPECT_FALSE(waterAt(nc, uLon(4) + 0.25, uLat(3) + 0.25));  // on the coastal ring's outer corner cell
+    EXPECT_FALSE(waterAt(nc, uLon(4) + 0.25, uLat(3) + 0.25)); // on the coastal ring's outer corner cell
     EXPECT_TRUE(waterAt(nc, uLon(5) + 0.25, uLat(4) + 0.25));
 
     // a region that cuts the calm patch at its west edge: the file goes on beyond it, where land may lie, so the
@@ -378,7 +380,7 @@ TEST(NetCdfTracerLand, CoastalZerosAreLandAndCalmWaterAwayFromLandIsWater)
     NetCdfCurrentOptions cut = regionOptions(uLon(8), uLon(13), uLat(0), uLat(11));
     cut.marginNodes = 0;
     const NetCdfCurrents part = loadNetCdfCurrents(path, cut);
-    EXPECT_GT(part.fillLandNodes, 0u);  // the north-east corner of land is in the region
+    EXPECT_GT(part.fillLandNodes, 0u); // the north-east corner of land is in the region
     EXPECT_EQ(part.zeroLandNodes, countNodes(calm));
     EXPECT_FALSE(waterAt(part, uLon(8) + 0.25, uLat(6) + 0.25));
 
@@ -402,7 +404,7 @@ TEST(NetCdfTracerLand, RomsMasksAndTracerOnTheRhoPoints)
     const std::string path = dir.file("roms.nc");
     constexpr std::size_t ne = 10, nxi = 12;
     auto landRho = [](std::size_t j, std::size_t i) { return j >= 3 && j <= 5 && i >= 4 && i <= 7; };
-    auto dry = [](std::size_t j, std::size_t i) { return j == 7 && i == 2; };  // tracer missing, mask says water
+    auto dry = [](std::size_t j, std::size_t i) { return j == 7 && i == 2; }; // tracer missing, mask says water
     {
         NcWriter w(path, NC_CLOBBER);
         const int dt = w.dim("ocean_time", 2), er = w.dim("eta_rho", ne), xr = w.dim("xi_rho", nxi);
@@ -464,16 +466,16 @@ TEST(NetCdfTracerLand, RomsMasksAndTracerOnTheRhoPoints)
     EXPECT_EQ(nc.tracerPlacement, "same points");
     EXPECT_FALSE(nc.cornerGrid);
     EXPECT_EQ(nc.maskLandNodes, 12u);  // the block (the loaded interior rho points hold all of it)
-    EXPECT_EQ(nc.tracerLandNodes, 1u);  // the dry cell the mask calls water
+    EXPECT_EQ(nc.tracerLandNodes, 1u); // the dry cell the mask calls water
     EXPECT_EQ(nc.zeroLandNodes, 0u);
     EXPECT_EQ(nc.fillLandNodes, 0u);
     auto water = [&](double i, double j) {
         const Point2 p = nc.toLocal({-70.0 + 0.05 * i, 40.0 + 0.05 * j});
         return nc.field->inWater(p.x, p.y, 0.0);
     };
-    EXPECT_FALSE(water(5.5, 4.5));  // in the block
-    EXPECT_FALSE(water(2.5, 7.5));  // beside the dry cell
-    EXPECT_TRUE(water(9.5, 7.5));   // open water
+    EXPECT_FALSE(water(5.5, 4.5)); // in the block
+    EXPECT_FALSE(water(2.5, 7.5)); // beside the dry cell
+    EXPECT_TRUE(water(9.5, 7.5));  // open water
     // "none" leaves the tracer out
     NetCdfCurrentOptions none;
     none.tracerName = "none";

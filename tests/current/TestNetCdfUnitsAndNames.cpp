@@ -66,8 +66,7 @@ void writeCartesian(const std::string &path, const std::string &units, double uR
 /// with `nt` times ("hours since 2026-03-01" unless timeUnits says otherwise; no time dimension when nt is 0);
 /// u = uRecord[k] at time k (0.1 when not given), v = 0.
 void writeGeographic(const std::string &path, const std::string &uName, const std::string &vName, std::size_t nt,
-                     const std::string &timeUnits = "hours since 2026-03-01 00:00:00",
-                     std::vector<double> uRecord = {})
+                     const std::string &timeUnits = "hours since 2026-03-01 00:00:00", std::vector<double> uRecord = {})
 {
     if (uRecord.empty())
         uRecord.assign(std::max<std::size_t>(nt, 1), 0.1);
@@ -107,7 +106,7 @@ double centreU(const NetCdfCurrents &nc, double t)
     const Point2 p = nc.toLocal({-52.9, 47.1});
     return nc.field->velocity(p.x, p.y, 0.0, t).u;
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfUnits, SpellingsOfCmPerSecondKnotsAndOthersConvertWithTheExactFactor)
 {
@@ -119,12 +118,29 @@ TEST(NetCdfUnits, SpellingsOfCmPerSecondKnotsAndOthersConvertWithTheExactFactor)
     };
     const double knot = 1852.0 / 3600.0;
     const std::vector<Case> cases = {
-        {"m s-1", 1.0}, {"m/s", 1.0}, {"M/S", 1.0}, {"meters per second", 1.0}, {"mps", 1.0}, {"ms-1", 1.0},
-        {"cm/s", 0.01}, {"cm s-1", 0.01}, {"centimeter/s", 0.01}, {"centimeters per second", 0.01},
-        {"CM/S", 0.01}, {"cm.s-1", 0.01}, {"cms-1", 0.01},
-        {"knots", knot}, {"knot", knot}, {"kt", knot}, {"kts", knot}, {"kn", knot}, {"KT", knot},
-        {"km/h", 1000.0 / 3600.0}, {"mm/s", 0.001}, {" mm s-1 ", 0.001},
-        {"furlongs/fortnight", 660.0 * 1200.0 / 3937.0 / (14 * 86400.0)}};  // UDUNITS: 660 US survey feet
+        {"m s-1", 1.0},
+        {"m/s", 1.0},
+        {"M/S", 1.0},
+        {"meters per second", 1.0},
+        {"mps", 1.0},
+        {"ms-1", 1.0},
+        {"cm/s", 0.01},
+        {"cm s-1", 0.01},
+        {"centimeter/s", 0.01},
+        {"centimeters per second", 0.01},
+        {"CM/S", 0.01},
+        {"cm.s-1", 0.01},
+        {"cms-1", 0.01},
+        {"knots", knot},
+        {"knot", knot},
+        {"kt", knot},
+        {"kts", knot},
+        {"kn", knot},
+        {"KT", knot},
+        {"km/h", 1000.0 / 3600.0},
+        {"mm/s", 0.001},
+        {" mm s-1 ", 0.001},
+        {"furlongs/fortnight", 660.0 * 1200.0 / 3937.0 / (14 * 86400.0)}}; // UDUNITS: 660 US survey feet
     const double uRaw = 37.0, vRaw = -12.5;
     int n = 0;
     for (const Case &c : cases)
@@ -191,7 +207,7 @@ TEST(NetCdfUnits, NonVelocityUnitsAreRefusedNamingFileVariableAndUnits)
         EXPECT_NE(m.find("variable 'u'"), std::string::npos) << m;
         EXPECT_NE(m.find("'" + units + "'"), std::string::npos) << m;
         EXPECT_NE(m.find("not a velocity"), std::string::npos) << m;
-        EXPECT_NE(m.find("velocityUnits"), std::string::npos) << m;  // how to override them
+        EXPECT_NE(m.find("velocityUnits"), std::string::npos) << m; // how to override them
     }
     const std::string path = tmp.file("gibberish.nc");
     writeCartesian(path, "parsecs per thingy", 1.0, 1.0);
@@ -210,7 +226,7 @@ TEST(NetCdfUnits, OverrideReplacesTheFilesUnitsAndIsChecked)
 {
     TempDir tmp;
     const std::string path = tmp.file("wrong_units.nc");
-    writeCartesian(path, "degC", 40.0, 10.0);  // a file that says degC for velocities in cm/s
+    writeCartesian(path, "degC", 40.0, 10.0); // a file that says degC for velocities in cm/s
     NetCdfCurrentOptions o;
     o.velocityUnits = "cm s-1";
     const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
@@ -218,8 +234,7 @@ TEST(NetCdfUnits, OverrideReplacesTheFilesUnitsAndIsChecked)
     EXPECT_NEAR(w.u, 0.4, 1e-7);
     EXPECT_NEAR(w.v, 0.1, 1e-7);
     o.velocityUnits = "knots";
-    EXPECT_NEAR(loadNetCdfCurrents(path, o).field->velocity(1500.0, 700.0, 0.0, 0.0).u, 40.0 * 1852.0 / 3600.0,
-                1e-5);
+    EXPECT_NEAR(loadNetCdfCurrents(path, o).field->velocity(1500.0, 700.0, 0.0, 0.0).u, 40.0 * 1852.0 / 3600.0, 1e-5);
     // velocities without units in a geographic file: the override is the way through
     const std::string geo = tmp.file("geo.nc");
     {
@@ -261,7 +276,8 @@ TEST(NetCdfUnits, CartesianAxesAndDepthInAnyLengthUnit)
     {
         NcWriter w(path);
         const int dz = w.dim("z_t", 3), dy = w.dim("y", 2), dx = w.dim("x", 2);
-        const int vz = w.var("z_t", NC_DOUBLE, {dz}), vy = w.var("y", NC_DOUBLE, {dy}), vx = w.var("x", NC_DOUBLE, {dx});
+        const int vz = w.var("z_t", NC_DOUBLE, {dz}), vy = w.var("y", NC_DOUBLE, {dy}),
+                  vx = w.var("x", NC_DOUBLE, {dx});
         w.text(vz, "units", "centimeters");
         w.text(vz, "positive", "down");
         w.text(vy, "units", "km");
@@ -270,7 +286,7 @@ TEST(NetCdfUnits, CartesianAxesAndDepthInAnyLengthUnit)
         w.text(u, "units", "centimeter/s");
         w.text(v, "units", "centimeter/s");
         w.enddef();
-        w.put(vz, {500.0, 1500.0, 2500.0});  // 5, 15, 25 m
+        w.put(vz, {500.0, 1500.0, 2500.0}); // 5, 15, 25 m
         w.put(vy, {0.0, 2.0});
         w.put(vx, {0.0, 3.0});
         // u = 10 cm/s at 5 m, 20 at 15 m, 30 at 25 m
@@ -284,7 +300,7 @@ TEST(NetCdfUnits, CartesianAxesAndDepthInAnyLengthUnit)
     const NetCdfCurrents nc = loadNetCdfCurrents(path);
     EXPECT_EQ(nc.uVariable, "UVEL");
     EXPECT_EQ(nc.field->depthAxis().nodes(), (std::vector<double>{5.0, 15.0, 25.0}));
-    EXPECT_NEAR(nc.field->velocity(1500.0, 1000.0, 10.0, 0.0).u, 0.15, 1e-7);  // halfway 5 m .. 15 m
+    EXPECT_NEAR(nc.field->velocity(1500.0, 1000.0, 10.0, 0.0).u, 0.15, 1e-7); // halfway 5 m .. 15 m
     const Region e = nc.field->extent();
     EXPECT_EQ(e.xMax, 3000.0);
     EXPECT_EQ(e.yMax, 2000.0);
@@ -293,9 +309,10 @@ TEST(NetCdfUnits, CartesianAxesAndDepthInAnyLengthUnit)
 TEST(NetCdfNames, VelocitiesFoundUnderUsualNamesInAnyCase)
 {
     TempDir tmp;
-    const std::vector<std::pair<std::string, std::string>> pairs = {
-        {"urot", "vrot"}, {"UWND", "VWND"}, {"uwnd", "vwnd"}, {"u10", "v10"},
-        {"UVEL", "VVEL"}, {"u_eastward", "v_northward"}, {"U10", "V10"}};
+    const std::vector<std::pair<std::string, std::string>> pairs = {{"urot", "vrot"}, {"UWND", "VWND"},
+                                                                    {"uwnd", "vwnd"}, {"u10", "v10"},
+                                                                    {"UVEL", "VVEL"}, {"u_eastward", "v_northward"},
+                                                                    {"U10", "V10"}};
     int n = 0;
     for (const auto &[u, v] : pairs)
     {
@@ -335,7 +352,7 @@ TEST(NetCdfNames, NoVelocityFoundListsTheCandidatesWithUnitsAndDimensions)
                      "mask(nlat,nlon) [no units]"),
               std::string::npos)
         << m;
-    EXPECT_EQ(m.find("lat(lat)"), std::string::npos) << m;  // 1-D variables are no candidates
+    EXPECT_EQ(m.find("lat(lat)"), std::string::npos) << m; // 1-D variables are no candidates
     EXPECT_NE(m.find("NetCdfCurrentOptions::uName/vName"), std::string::npos) << m;
     // named, they load (UVEL2 has no v partner here: the v error lists the same candidates)
     NetCdfCurrentOptions o;
@@ -363,7 +380,7 @@ TEST(NetCdfSteady, NoTimeAxisOrOneRecordIsASteadyFieldTakingAnyDeparture)
     nc = loadNetCdfCurrents(none, o);
     EXPECT_EQ(nc.departureTime, 86400.0);
     EXPECT_NEAR(centreU(nc, 1e7), 0.1, 1e-6);
-    o.departure = "2026-03-01T00:00:00Z";  // a date needs dates in the file
+    o.departure = "2026-03-01T00:00:00Z"; // a date needs dates in the file
     std::string m = unitsErrorOf([&] { loadNetCdfCurrents(none, o); });
     EXPECT_NE(m.find("departure"), std::string::npos) << m;
     EXPECT_NE(m.find("no dated time axis"), std::string::npos) << m;
@@ -430,7 +447,7 @@ TEST(NetCdfTime, AxisWithoutSinceNamesBothOptionsAndEachGetsThrough)
     EXPECT_FALSE(nc.steady);
     EXPECT_EQ(nc.isoTime(0.0), "2026-01-15T00:00:00Z");
     EXPECT_EQ(nc.forecastEnd, 12.0 * 86400);
-    EXPECT_NEAR(centreU(nc, 3.0 * 86400), 0.15, 1e-6);  // halfway between the first two records
+    EXPECT_NEAR(centreU(nc, 3.0 * 86400), 0.15, 1e-6); // halfway between the first two records
     EXPECT_EQ(readNetCdfTimeAxis(path, o).originSeconds, nc.originSeconds);
     EXPECT_EQ(readNetCdfTimeAxis(path, o).span, 12.0 * 86400);
     // checked: a units text without "since", or one the calendar parser refuses

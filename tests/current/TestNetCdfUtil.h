@@ -20,8 +20,8 @@ public:
     TempDir()
     {
         const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = std::string("ompl_glider_") + (info ? info->test_suite_name() : "x") + "_" +
-                           (info ? info->name() : "y");
+        std::string name =
+            std::string("ompl_glider_") + (info ? info->test_suite_name() : "x") + "_" + (info ? info->name() : "y");
         // unique per process and instance: ctest runs the tests of one executable in parallel processes
         static int counter = 0;
         name += "_" + std::to_string(static_cast<long>(::getpid())) + "_" + std::to_string(counter++);
@@ -37,21 +37,18 @@ public:
         std::error_code ec;
         std::filesystem::remove_all(path_, ec);
     }
-    std::string file(const std::string &name) const
-    {
-        return (path_ / name).string();
-    }
+    std::string file(const std::string &name) const { return (path_ / name).string(); }
 
 private:
     std::filesystem::path path_;
 };
 
-#define NCW_CHECK(expr)                                                   \
-    do                                                                    \
-    {                                                                     \
-        const int st_ = (expr);                                           \
-        if (st_ != NC_NOERR)                                              \
-            throw std::runtime_error(std::string(#expr) + ": " + nc_strerror(st_)); \
+#define NCW_CHECK(expr)                                                                                                \
+    do                                                                                                                 \
+    {                                                                                                                  \
+        const int st_ = (expr);                                                                                        \
+        if (st_ != NC_NOERR)                                                                                           \
+            throw std::runtime_error(std::string(#expr) + ": " + nc_strerror(st_));                                    \
     } while (0)
 
 /// Minimal NetCDF writer: define dims/vars/atts, then enddef(), then put().
@@ -62,10 +59,7 @@ public:
     {
         NCW_CHECK(nc_create(path.c_str(), mode, &id_));
     }
-    ~NcWriter()
-    {
-        nc_close(id_);
-    }
+    ~NcWriter() { nc_close(id_); }
     int dim(const std::string &name, std::size_t len)
     {
         int d;
@@ -87,22 +81,10 @@ public:
         NCW_CHECK(nc_put_att_double(id_, var, name.c_str(), type, values.size(), values.data()));
     }
     /// _FillValue must be set before enddef for netCDF-4 files.
-    void fill(int var, nc_type type, double value)
-    {
-        num(var, "_FillValue", type, {value});
-    }
-    void enddef()
-    {
-        NCW_CHECK(nc_enddef(id_));
-    }
-    void put(int var, const std::vector<double> &values)
-    {
-        NCW_CHECK(nc_put_var_double(id_, var, values.data()));
-    }
-    int id() const
-    {
-        return id_;
-    }
+    void fill(int var, nc_type type, double value) { num(var, "_FillValue", type, {value}); }
+    void enddef() { NCW_CHECK(nc_enddef(id_)); }
+    void put(int var, const std::vector<double> &values) { NCW_CHECK(nc_put_var_double(id_, var, values.data())); }
+    int id() const { return id_; }
 
 private:
     int id_{-1};
@@ -138,4 +120,4 @@ inline std::vector<double> linspace(double a, double h, std::size_t n)
         v[i] = a + h * double(i);
     return v;
 }
-}  // namespace glider_test
+} // namespace glider_test

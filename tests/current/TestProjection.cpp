@@ -38,7 +38,7 @@ TEST(LocalProjection, RoundTripIsExactToAMicrometre)
             EXPECT_NEAR(p.forward(g.lon - 720.0, g.lat).y, py, 1e-6);
         }
         // a position written in 0..360 and in -180..180 is the same point to the last bit
-        for (double lon = std::round(lon0) - 2.0; lon <= std::round(lon0) + 2.0; lon += 0.25)  // grid values
+        for (double lon = std::round(lon0) - 2.0; lon <= std::round(lon0) + 2.0; lon += 0.25) // grid values
         {
             const double west = normalizeLongitude(lon), east = west < 0 ? west + 360.0 : west;
             const Point2 a = p.forward(west, lat0 + 0.5), b = p.forward(east, lat0 + 0.5);
@@ -90,7 +90,7 @@ TEST(LocalProjection, PlanarDistancesWithinTheStatedBoundOver500km)
         worst = std::max(worst, std::abs(planar - geo) / geo);
     }
     EXPECT_LT(worst, 5e-4);
-    EXPECT_GT(worst, 1e-5);  // the plane is an approximation: the check is not vacuous
+    EXPECT_GT(worst, 1e-5); // the plane is an approximation: the check is not vacuous
 }
 
 TEST(LocalProjection, ErrorBudgetOverA70DegreeTripAt40S)
@@ -111,7 +111,7 @@ TEST(LocalProjection, ErrorBudgetOverA70DegreeTripAt40S)
     };
     EXPECT_NEAR(1e4 / geodesic(a.x - 5e3 * ux, a.y - 5e3 * uy, a.x + 5e3 * ux, a.y + 5e3 * uy), 1.0, 1e-4);
     const double tangential = 1e4 / geodesic(a.x + 5e3 * uy, a.y - 5e3 * ux, a.x - 5e3 * uy, a.y + 5e3 * ux);
-    EXPECT_NEAR(tangential, k(r), 3e-3);  // 1.0371 (the ellipsoid against the sphere's 1.0374)
+    EXPECT_NEAR(tangential, k(r), 3e-3); // 1.0371 (the ellipsoid against the sphere's 1.0374)
     // the straight planar leg from start to goal: 0.16 % longer in the plane than the geodesic, and flown on the
     // ellipsoid (its points inverted) within 0.02 % of the geodesic
     const double planar = std::hypot(b.x - a.x, b.y - a.y), geo = p.geodesicDistance(-35, -40, 35, -40);
@@ -136,7 +136,7 @@ TEST(LocalProjection, ErrorBudgetOverA70DegreeTripAt40S)
         worst = std::max(worst, std::abs(len / geodesic(x1, y1, x2, y2) - 1.0));
     }
     EXPECT_LT(worst, k(3000e3) - 1.0 + 1e-3);
-    EXPECT_GT(worst, 0.01);  // not vacuous: far from the reference point the plane does stretch
+    EXPECT_GT(worst, 0.01); // not vacuous: far from the reference point the plane does stretch
 }
 
 TEST(LocalProjection, EastAndNorthDirections)

@@ -80,7 +80,7 @@ bool properCross(double ax, double ay, double bx, double by, double cx, double c
     const double o3 = o(cx, cy, dx, dy, ax, ay), o4 = o(cx, cy, dx, dy, bx, by);
     return o1 * o2 < 0 && o3 * o4 < 0;
 }
-}  // namespace
+} // namespace
 
 TEST(Polygon, PointInPolygonWithHole)
 {
@@ -89,16 +89,16 @@ TEST(Polygon, PointInPolygonWithHole)
     EXPECT_EQ(p.holeCount(), 1u);
     EXPECT_TRUE(p.contains(0.5, 0.5));
     EXPECT_TRUE(p.contains(3.5, 2.0));
-    EXPECT_FALSE(p.contains(2.0, 2.0));   // in the hole
-    EXPECT_FALSE(p.contains(1.5, 2.9));   // in the hole
-    EXPECT_TRUE(p.contains(1.0, 2.0));    // on the hole's boundary: closed set
-    EXPECT_TRUE(p.contains(3.0, 3.0));    // hole vertex
-    EXPECT_TRUE(p.contains(4.0, 4.0));    // outer vertex
-    EXPECT_TRUE(p.contains(2.0, 0.0));    // outer edge
+    EXPECT_FALSE(p.contains(2.0, 2.0)); // in the hole
+    EXPECT_FALSE(p.contains(1.5, 2.9)); // in the hole
+    EXPECT_TRUE(p.contains(1.0, 2.0));  // on the hole's boundary: closed set
+    EXPECT_TRUE(p.contains(3.0, 3.0));  // hole vertex
+    EXPECT_TRUE(p.contains(4.0, 4.0));  // outer vertex
+    EXPECT_TRUE(p.contains(2.0, 0.0));  // outer edge
     EXPECT_FALSE(p.contains(5.0, 2.0));
-    EXPECT_FALSE(p.contains(-1e-9, 2.0));  // just outside
-    EXPECT_TRUE(p.contains(1e-9, 2.0));    // just inside
-    EXPECT_FALSE(p.contains(2.0, 1.0 + 1e-9));  // just inside the hole
+    EXPECT_FALSE(p.contains(-1e-9, 2.0));      // just outside
+    EXPECT_TRUE(p.contains(1e-9, 2.0));        // just inside
+    EXPECT_FALSE(p.contains(2.0, 1.0 + 1e-9)); // just inside the hole
     EXPECT_FALSE(p.contains(kNaN, 1.0));
     // a ray through vertices (y = 0 and y = 4 rows, hole corners at y = 1) must not double count
     EXPECT_TRUE(p.contains(0.5, 1.0));
@@ -111,8 +111,8 @@ TEST(Polygon, ConcaveRayThroughVertex)
     // A "W" shaped polygon whose reflex vertex (2, 1) lies on rays y = 1.
     const Polygon w({{0, 0}, {4, 0}, {4, 2}, {3, 2}, {2, 1}, {1, 2}, {0, 2}});
     EXPECT_TRUE(w.contains(0.5, 1.0));
-    EXPECT_TRUE(w.contains(2.0, 1.0));   // the reflex vertex itself
-    EXPECT_FALSE(w.contains(2.0, 1.5));  // in the notch
+    EXPECT_TRUE(w.contains(2.0, 1.0));  // the reflex vertex itself
+    EXPECT_FALSE(w.contains(2.0, 1.5)); // in the notch
     EXPECT_TRUE(w.contains(3.5, 1.5));
     EXPECT_FALSE(w.contains(-1.0, 1.0));
     EXPECT_FALSE(w.contains(5.0, 1.0));
@@ -174,8 +174,8 @@ TEST(Polygon, SegmentThroughHole)
     EXPECT_NEAR(in[0].hi, 2.0 / 6, 1e-15);
     EXPECT_NEAR(in[1].lo, 4.0 / 6, 1e-15);
     EXPECT_NEAR(in[1].hi, 5.0 / 6, 1e-15);
-    EXPECT_FALSE(p.segmentIntersects(1.5, 1.5, 2.5, 2.5));  // inside the hole
-    EXPECT_TRUE(p.segmentIntersects(1.5, 2, 3, 2));         // reaches the hole's boundary
+    EXPECT_FALSE(p.segmentIntersects(1.5, 1.5, 2.5, 2.5)); // inside the hole
+    EXPECT_TRUE(p.segmentIntersects(1.5, 2, 3, 2));        // reaches the hole's boundary
     in = p.segmentInsideIntervals(1.5, 2, 3, 2);
     ASSERT_EQ(in.size(), 1u);
     EXPECT_EQ(in[0].lo, 1.0);
@@ -255,8 +255,8 @@ TEST(Polygon, GridIndexMatchesBruteForceOnCoastline)
 TEST(Polygon, BadInputThrows)
 {
     EXPECT_THROW(Polygon({{0, 0}, {1, 1}}), Error);
-    EXPECT_THROW(Polygon({{0, 0}, {1, 0}, {1, 0}, {0, 0}}), Error);  // 2 distinct vertices
-    EXPECT_THROW(Polygon({{0, 0}, {1, 0}, {2, 0}}), Error);          // zero area
+    EXPECT_THROW(Polygon({{0, 0}, {1, 0}, {1, 0}, {0, 0}}), Error); // 2 distinct vertices
+    EXPECT_THROW(Polygon({{0, 0}, {1, 0}, {2, 0}}), Error);         // zero area
     EXPECT_THROW(Polygon({{0, 0}, {1, kNaN}, {1, 1}}), Error);
     EXPECT_THROW(Polygon::rectangle(1, 0, 0, 1), Error);
     try
@@ -316,7 +316,7 @@ TEST(StaticRegion, IslandBlocksLegsAndNamesItself)
     EXPECT_EQ(env.whyLegBlocked(0, 0, 0, 10, 0, 10), "leg crosses island 'A'");
     EXPECT_TRUE(env.legFree(0, 1.5, 0, 10, 1.5, 10));
     EXPECT_EQ(env.whyLegBlocked(0, 1.5, 0, 10, 1.5, 10), "");
-    EXPECT_FALSE(env.legFree(0, 1, 0, 10, 1, 10));  // grazes the island's north edge
+    EXPECT_FALSE(env.legFree(0, 1, 0, 10, 1, 10)); // grazes the island's north edge
     EXPECT_FALSE(env.legFree(kNaN, 0, 0, 1, 1, 1));
     EXPECT_FALSE(env.pointFree(kNaN, 0, 0));
 }
@@ -330,20 +330,20 @@ TEST(TimeWindowedZone, LegBeforeDuringAfterWindow)
     ASSERT_EQ(times.size(), 1u);
     EXPECT_DOUBLE_EQ(times[0].lo, 4.0);
     EXPECT_DOUBLE_EQ(times[0].hi, 6.0);
-    EXPECT_TRUE(zone(1, 3).legFree(0, 0, 0, 10, 0, 10));        // window before the passage
-    EXPECT_FALSE(zone(5, 5.5).legFree(0, 0, 0, 10, 0, 10));     // during
-    EXPECT_FALSE(zone(3, 7).legFree(0, 0, 0, 10, 0, 10));       // covering
-    EXPECT_TRUE(zone(7, 9).legFree(0, 0, 0, 10, 0, 10));        // after
-    EXPECT_FALSE(zone(6, 7).legFree(0, 0, 0, 10, 0, 10));       // touching the exit time: closed
+    EXPECT_TRUE(zone(1, 3).legFree(0, 0, 0, 10, 0, 10));    // window before the passage
+    EXPECT_FALSE(zone(5, 5.5).legFree(0, 0, 0, 10, 0, 10)); // during
+    EXPECT_FALSE(zone(3, 7).legFree(0, 0, 0, 10, 0, 10));   // covering
+    EXPECT_TRUE(zone(7, 9).legFree(0, 0, 0, 10, 0, 10));    // after
+    EXPECT_FALSE(zone(6, 7).legFree(0, 0, 0, 10, 0, 10));   // touching the exit time: closed
     EXPECT_TRUE(zone(6 + 1e-9, 7).legFree(0, 0, 0, 10, 0, 10));
     EXPECT_TRUE(zone(1, 4 - 1e-9).legFree(0, 0, 0, 10, 0, 10));
     // a slower leg (pace 0.5) passes during [8, 12]; departing later shifts it
     EXPECT_FALSE(zone(11, 11.5).legFree(0, 0, 0, 10, 0, 20));
-    EXPECT_TRUE(zone(11, 11.5).legFree(0, 0, 4, 10, 0, 9));  // inside during [6, 7]
+    EXPECT_TRUE(zone(11, 11.5).legFree(0, 0, 4, 10, 0, 9)); // inside during [6, 7]
     // waiting it out: the same path after the window is free
     const TimeWindowedZone closed("lane", lane, {{0, 5}, {20, 30}});
     EXPECT_FALSE(closed.legFree(0, 0, 0, 10, 0, 10));
-    EXPECT_TRUE(closed.legFree(0, 0, 5, 10, 0, 15));  // inside during [9, 11]
+    EXPECT_TRUE(closed.legFree(0, 0, 5, 10, 0, 15)); // inside during [9, 11]
     EXPECT_FALSE(closed.pointFree(5, 0, 3));
     EXPECT_TRUE(closed.pointFree(5, 0, 10));
     EXPECT_EQ(closed.whyBlocked(5, 0, 3), "inside closure 'lane'");
@@ -364,15 +364,17 @@ TEST(IceZone, DriftingRectangleClosedFormTimeUnderIce)
     EXPECT_NEAR(times[0].lo, 1.0 / 0.7, 1e-13);
     EXPECT_NEAR(times[0].hi, 3.0 / 0.7, 1e-13);
     EXPECT_NEAR(loose.longestUnderIce(-1, 0, 0, 5, 0, 6), T, 1e-13);
-    EXPECT_TRUE(IceZone("I", Polygon::rectangle(0, -1, 2, 1), 0.0, 0.3, 0.0, T * (1 + 1e-9)).legFree(-1, 0, 0, 5, 0, 6));
-    EXPECT_FALSE(IceZone("I", Polygon::rectangle(0, -1, 2, 1), 0.0, 0.3, 0.0, T * (1 - 1e-9)).legFree(-1, 0, 0, 5, 0, 6));
+    EXPECT_TRUE(
+        IceZone("I", Polygon::rectangle(0, -1, 2, 1), 0.0, 0.3, 0.0, T * (1 + 1e-9)).legFree(-1, 0, 0, 5, 0, 6));
+    EXPECT_FALSE(
+        IceZone("I", Polygon::rectangle(0, -1, 2, 1), 0.0, 0.3, 0.0, T * (1 - 1e-9)).legFree(-1, 0, 0, 5, 0, 6));
     // the same leg flown backwards in x against the drift: relative speed 1.3, time 2/1.3
     EXPECT_NEAR(loose.longestUnderIce(5, 0, 0, -1, 0, 6), 2.0 / 1.3, 1e-13);
     // displacement
     EXPECT_NEAR(loose.displacement(5).x, 1.5, 1e-15);
     EXPECT_NEAR(loose.displacement(-2).x, -0.6, 1e-15);
     // waypoints under ice are blocked (a glider cannot surface there)
-    EXPECT_FALSE(loose.pointFree(1.3, 0, 1.0));  // ice covers [0.3, 2.3] at t = 1
+    EXPECT_FALSE(loose.pointFree(1.3, 0, 1.0)); // ice covers [0.3, 2.3] at t = 1
     EXPECT_TRUE(loose.pointFree(0.2, 0, 1.0));
     EXPECT_FALSE(loose.legFree(1.3, 0, 1.0, 5, 0, 6));
     EXPECT_EQ(loose.whyLegBlocked(1.3, 0, 1.0, 5, 0, 6), "leg starts under ice zone 'I'");
@@ -441,7 +443,7 @@ TEST(IceZone, CarriedByMeanderingJetWithinStatedTolerance)
         t = 1.0 + (k + 1) * h;
     }
     const Point2 d = ice.displacement(7.0);
-    EXPECT_GT(std::hypot(x - ref.x, y - ref.y), 0.5);  // the zone really moved
+    EXPECT_GT(std::hypot(x - ref.x, y - ref.y), 0.5); // the zone really moved
     EXPECT_LE(std::hypot(ref.x + d.x - x, ref.y + d.y - y), 2 * ice.positionTolerance() + 1e-9);
 }
 
@@ -456,8 +458,8 @@ TEST(ForbiddenRegions, CompositeListsEveryBlockingRegion)
     EXPECT_EQ(env.whyBlocked(1.5, 1.5, 2.0), "inside island 'A'");
     EXPECT_EQ(env.whyBlocked(3, 3, 2.0), "");
     EXPECT_EQ(env.whyBlocked(10.5, 10.5, 2.0), "under ice zone 'I' (a glider cannot surface there)");
-    EXPECT_TRUE(env.legFree(9, 10.5, 0, 13, 10.5, 4));    // under ice during [1, 2]: at the limit
-    EXPECT_FALSE(env.legFree(9, 10.5, 0, 12, 10.5, 4));   // under ice during [4/3, 8/3]
+    EXPECT_TRUE(env.legFree(9, 10.5, 0, 13, 10.5, 4));  // under ice during [1, 2]: at the limit
+    EXPECT_FALSE(env.legFree(9, 10.5, 0, 12, 10.5, 4)); // under ice during [4/3, 8/3]
     EXPECT_EQ(env.whyLegBlocked(3, 0, 0.5, 3, 6, 0.6), "leg crosses closure 'lane'");
     EXPECT_THROW(env.add(nullptr), Error);
     const Environment &base = env;

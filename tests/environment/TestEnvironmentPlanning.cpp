@@ -56,14 +56,8 @@ private:
 struct Capture
 {
     CaptureHandler handler;
-    Capture()
-    {
-        ompl::msg::useOutputHandler(&handler);
-    }
-    ~Capture()
-    {
-        ompl::msg::restorePreviousOutputHandler();
-    }
+    Capture() { ompl::msg::useOutputHandler(&handler); }
+    ~Capture() { ompl::msg::restorePreviousOutputHandler(); }
 };
 
 GliderProblem jetProblem(std::shared_ptr<const Environment> env)
@@ -108,11 +102,11 @@ std::vector<std::array<double, 3>> states(const og::PathGeometric &path)
     }
     return out;
 }
-}  // namespace
+} // namespace
 
 TEST(EnvironmentPlanning, StartInsideIslandIsInvalidStartForBothPlanners)
 {
-    auto env = islandAt(0.6, -2.6, 0.5, "A");  // covers the start
+    auto env = islandAt(0.6, -2.6, 0.5, "A"); // covers the start
     const GliderProblem p = jetProblem(env);
     for (const std::string which : {"RRTstar", "ZA*TVE"})
     {
@@ -131,8 +125,8 @@ TEST(EnvironmentPlanning, StartInsideIslandIsInvalidStartForBothPlanners)
         EXPECT_EQ(st, ob::PlannerStatus::INVALID_START) << which << ": " << st.asString();
         EXPECT_FALSE(ss->haveExactSolutionPath());
         // the clear message: the validity checker names the island
-        auto checker = std::dynamic_pointer_cast<GliderStateValidityChecker>(
-            ss->getSpaceInformation()->getStateValidityChecker());
+        auto checker =
+            std::dynamic_pointer_cast<GliderStateValidityChecker>(ss->getSpaceInformation()->getStateValidityChecker());
         ASSERT_TRUE(checker);
         const std::string why = checker->whyInvalid(ss->getProblemDefinition()->getStartState(0));
         EXPECT_NE(why.find("inside island 'A'"), std::string::npos) << why;
@@ -146,7 +140,7 @@ TEST(EnvironmentPlanning, StartInsideIslandIsInvalidStartForBothPlanners)
 
 TEST(EnvironmentPlanning, GoalInsideIslandIsInvalidGoalForBothPlanners)
 {
-    auto env = islandAt(9.4, 2.6, 0.4, "G");  // covers the goal
+    auto env = islandAt(9.4, 2.6, 0.4, "G"); // covers the goal
     const GliderProblem p = jetProblem(env);
     for (const std::string which : {"RRTstar", "ZA*TVE"})
     {
@@ -218,8 +212,8 @@ TEST(EnvironmentPlanning, LatticePathsAroundIslandsNeverCrossThem)
         const auto ow = states(oss->getSolutionPath());
         bool openCrosses = false;
         for (std::size_t i = 0; i + 1 < ow.size(); ++i)
-            openCrosses = openCrosses || !env->legFree(ow[i][0], ow[i][1], ow[i][2], ow[i + 1][0], ow[i + 1][1],
-                                                       ow[i + 1][2]);
+            openCrosses =
+                openCrosses || !env->legFree(ow[i][0], ow[i][1], ow[i][2], ow[i + 1][0], ow[i + 1][1], ow[i + 1][2]);
         EXPECT_TRUE(openCrosses) << "the islands should lie on the open-water route";
         EXPECT_GT(w.back()[2], ow.back()[2]);
     }

@@ -20,16 +20,16 @@ std::vector<Segment2> square()
 {
     return Polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}).edges();
 }
-}  // namespace
+} // namespace
 
 TEST(KeepOffZone, ExactDistancesToTheBoundary)
 {
     const KeepOffZone z(square(), 0.5);
-    EXPECT_DOUBLE_EQ(z.distanceTo(2.0, 0.5), 1.0);              // east of the east side
-    EXPECT_DOUBLE_EQ(z.distanceTo(4.0, 5.0), 5.0);              // from the corner (1, 1): 3-4-5
-    EXPECT_NEAR(z.distanceTo(0.5, 0.9), 0.1, 1e-15);  // inside: to the north side
-    EXPECT_NEAR(z.legDistance(-1.0, 1.3, 3.0, 1.3), 0.3, 1e-15);  // a leg passing north of the island
-    EXPECT_EQ(z.legDistance(-1.0, 0.5, 3.0, 0.5), 0.0);           // a leg across it
+    EXPECT_DOUBLE_EQ(z.distanceTo(2.0, 0.5), 1.0);               // east of the east side
+    EXPECT_DOUBLE_EQ(z.distanceTo(4.0, 5.0), 5.0);               // from the corner (1, 1): 3-4-5
+    EXPECT_NEAR(z.distanceTo(0.5, 0.9), 0.1, 1e-15);             // inside: to the north side
+    EXPECT_NEAR(z.legDistance(-1.0, 1.3, 3.0, 1.3), 0.3, 1e-15); // a leg passing north of the island
+    EXPECT_EQ(z.legDistance(-1.0, 0.5, 3.0, 0.5), 0.0);          // a leg across it
     const KeepOffZone none({}, 1.0);
     EXPECT_TRUE(none.empty());
     EXPECT_TRUE(std::isinf(none.distanceTo(0, 0)));
@@ -46,7 +46,7 @@ TEST(KeepOffZone, LegsJustInsideAndJustOutsideTheDistance)
     EXPECT_TRUE(z.pointFree(-3.0, 1.5 - 1e-9, 0.0));
     EXPECT_TRUE(z.pointFree(4.0, 1.5 - 1e-9, 0.0));
     // a diagonal leg past the corner (1, 1): its distance is that of the corner to the line
-    const double c = 1.0 + 0.25 * std::sqrt(2.0);  // the line x + y = 2c passes 0.5 from (1, 1)
+    const double c = 1.0 + 0.25 * std::sqrt(2.0); // the line x + y = 2c passes 0.5 from (1, 1)
     EXPECT_TRUE(z.legFree(c + 2.0 + 1e-9, c - 2.0 + 1e-9, 0.0, c - 2.0 + 1e-9, c + 2.0 + 1e-9, 1.0));
     EXPECT_FALSE(z.legFree(c + 2.0 - 1e-6, c - 2.0 - 1e-6, 0.0, c - 2.0 - 1e-6, c + 2.0 - 1e-6, 1.0));
     EXPECT_FALSE(z.pointFree(1.2, 1.2, 0.0));

@@ -26,11 +26,11 @@ TEST(Execution, CrabHeadingMakesGoodTheCourse)
             double hx, hy;
             crabHeading(dx, dy, c, V, hx, hy);
             EXPECT_NEAR(std::hypot(hx, hy), 1.0, 1e-12);
-            const double gx = V * hx + c.u, gy = V * hy + c.v;  // ground velocity
+            const double gx = V * hx + c.u, gy = V * hy + c.v; // ground velocity
             const double cross = gx * (-dy) + gy * dx, cPerp = c.u * (-dy) + c.v * dx, cPar = c.u * dx + c.v * dy;
             if (std::abs(cPerp) < V)
             {
-                EXPECT_NEAR(cross, 0.0, 1e-12) << ang;  // along the course
+                EXPECT_NEAR(cross, 0.0, 1e-12) << ang; // along the course
                 EXPECT_NEAR(gx * dx + gy * dy, std::sqrt(V * V - cPerp * cPerp) + cPar, 1e-12);
             }
         }
@@ -58,7 +58,7 @@ TEST(Execution, CurrentSensitiveGliderInAUniformCurrentStaysOnItsLineAndArrivesO
     // within radius 1 m: arrival 1 m / ground speed before the plan's
     EXPECT_NEAR(r.arrivalTime, T - 1.0 / ground, 1e-6 * T);
     for (const TimedPoint &p : r.track)
-        EXPECT_NEAR(p.x * diry - p.y * dirx, 0.0, 1e-6);  // on the line
+        EXPECT_NEAR(p.x * diry - p.y * dirx, 0.0, 1e-6); // on the line
     EXPECT_LT(r.finalDistance, 1.0 + 1e-6);
     EXPECT_NEAR(r.madeGoodSpeed, ground, 1e-6 * ground);
 }
@@ -91,7 +91,7 @@ TEST(Execution, CurrentBlindGliderDriftsBetweenSurfacingsAsTheClosedFormSays)
         EXPECT_NEAR(r.fixes[k].t, t, 1e-9) << k;
     }
     EXPECT_EQ(r.fixes.size(), k);
-    EXPECT_FALSE(r.reached);  // radius 0: reached is never claimed
+    EXPECT_FALSE(r.reached); // radius 0: reached is never claimed
     EXPECT_NEAR(r.finalDistance, std::hypot(x - 120000, y - 10000), 1e-6);
 }
 
@@ -152,8 +152,8 @@ TEST(Execution, AZaStarTvePlanOnTheJetFlownInItsOwnFieldArrivesOnTime)
     o.step = o.surfacingInterval / 20.0;
     o.radius = 0.05;
     const CurrentField &f = *problem.getField();
-    const FlownTrack r = flyPlan(plan, res.plan.speed, f, f, problem.getEnvironment().get(),
-                                 ControlStrategy::CurrentSensitive, o);
+    const FlownTrack r =
+        flyPlan(plan, res.plan.speed, f, f, problem.getEnvironment().get(), ControlStrategy::CurrentSensitive, o);
     EXPECT_FALSE(r.grounded) << r.groundedWhy;
     ASSERT_TRUE(r.reached);
     const double planned = plan.back().t - plan.front().t;
@@ -184,7 +184,7 @@ TEST(Execution, ReplanningWithAStraightLinePlannerAndNoForecastCurrentFliesAsGre
         EXPECT_NEAR(r.fixes[k].y, g.fixes[k].y, 1e-6) << k;
     }
     EXPECT_EQ(r.replans, calls);
-    EXPECT_EQ(calls, r.headings.size());  // every surfacing, the start included
+    EXPECT_EQ(calls, r.headings.size()); // every surfacing, the start included
     // every third surfacing: a third of the plans (rounded up)
     calls = 0;
     o.replanEvery = 3;

@@ -65,30 +65,15 @@ ReflightSettings settings(double V)
 class HalfPlaneLand : public CurrentField
 {
 public:
-    double maxSpeed(const Region &) const override
-    {
-        return 0.1;
-    }
-    bool inWater(double x, double, double) const override
-    {
-        return x < 5.0;
-    }
-    std::string name() const override
-    {
-        return "half-plane land";
-    }
+    double maxSpeed(const Region &) const override { return 0.1; }
+    bool inWater(double x, double, double) const override { return x < 5.0; }
+    std::string name() const override { return "half-plane land"; }
 
 protected:
-    Velocity evaluate(double, double, double, double) const override
-    {
-        return {0.1, 0.0};
-    }
-    Jacobian evaluateJacobian(double, double, double, double) const override
-    {
-        return {};
-    }
+    Velocity evaluate(double, double, double, double) const override { return {0.1, 0.0}; }
+    Jacobian evaluateJacobian(double, double, double, double) const override { return {}; }
 };
-}  // namespace
+} // namespace
 
 TEST(Reflight, StraightLegInAUniformCurrentIsTheClosedForm)
 {
@@ -100,7 +85,7 @@ TEST(Reflight, StraightLegInAUniformCurrentIsTheClosedForm)
         {
             const double a = 2.0 * kPi * k / 24.0, L = 3.7, px = std::cos(a), py = std::sin(a);
             const double expected = legClosedForm(L, px, py, c, V);
-            ASSERT_TRUE(std::isfinite(expected));  // |c| < V: every direction
+            ASSERT_TRUE(std::isfinite(expected)); // |c| < V: every direction
             const LegReflight r = reflyLeg(1.0, -2.0, 1.0 + L * px, -2.0 + L * py, 4.0, field, nullptr, settings(V));
             ASSERT_TRUE(r.feasible) << r.why;
             EXPECT_NEAR(r.duration, expected, 1e-12 * expected) << "direction " << a;
@@ -140,7 +125,7 @@ TEST(Reflight, HeadingRouteInAUniformCurrentEndsAtStartPlusGroundVelocityTimesDu
     ASSERT_TRUE(r.ok);
     EXPECT_FALSE(r.grounded);
     EXPECT_FALSE(r.reached);
-    EXPECT_EQ(r.segmentsFlown, 3u);  // the zero-length segment is skipped
+    EXPECT_EQ(r.segmentsFlown, 3u); // the zero-length segment is skipped
     ASSERT_EQ(r.ends.size(), 4u);
     double x = 1.0, y = 2.0, t = 3.0;
     std::size_t k = 1;
@@ -158,7 +143,7 @@ TEST(Reflight, HeadingRouteInAUniformCurrentEndsAtStartPlusGroundVelocityTimesDu
         ++k;
     }
     EXPECT_EQ(r.end.x, r.ends.back().x);
-    EXPECT_TRUE(std::isnan(r.finalDistance));  // no goal radius
+    EXPECT_TRUE(std::isnan(r.finalDistance)); // no goal radius
 }
 
 TEST(Reflight, HeadingRouteEntersTheGoalCircleAtTheClosedFormTime)
@@ -175,7 +160,7 @@ TEST(Reflight, HeadingRouteEntersTheGoalCircleAtTheClosedFormTime)
     const Point2 p1{4.0 * w1.u, 4.0 * w1.v};
     s.goal = {p1.x + 1.5 * w2.u + 0.1, p1.y + 1.5 * w2.v};
     ASSERT_TRUE(std::isnan(firstEntry({0, 0}, w1, s.goal, s.radius)) ||
-                firstEntry({0, 0}, w1, s.goal, s.radius) > 4.0);  // not during the first segment
+                firstEntry({0, 0}, w1, s.goal, s.radius) > 4.0); // not during the first segment
     const double T = 1.0 + 4.0 + firstEntry(p1, w2, s.goal, s.radius);
     const HeadingReflight r = reflyHeadingRoute(route, field, nullptr, s);
     ASSERT_TRUE(r.reached);
@@ -223,7 +208,7 @@ TEST(Reflight, ACurrentThreeTimesTheSpeedLeavesOnlyTheReachableCone)
         EXPECT_FALSE(r.feasible) << a;
         EXPECT_TRUE(std::isinf(r.duration));
         EXPECT_NE(r.why.find("stronger than the speed"), std::string::npos) << r.why;
-        EXPECT_EQ(r.where.x, 0.0);  // at the leg's start
+        EXPECT_EQ(r.where.x, 0.0); // at the leg's start
     }
     // a path whose second leg leaves the cone: that leg is named
     const PathReflight p = reflyPath({{0, 0, 0}, {2, 0.1, 1}, {2, 3, 2}}, field, nullptr, settings(V));
@@ -276,7 +261,7 @@ TEST(Reflight, HeadingRouteInTheJetAgreesWithRk4AtATinyStep)
     {
         const double flown = std::hypot(f.ends[k].x - 1.0, f.ends[k].y + 3.0);
         EXPECT_LT(std::hypot(r.ends[k].x - f.ends[k].x, r.ends[k].y - f.ends[k].y), 1e-9 * flown) << k;
-        EXPECT_NEAR(r.ends[k].t, f.ends[k].t, 1e-10);  // RK4's clock sums 1e-4 steps
+        EXPECT_NEAR(r.ends[k].t, f.ends[k].t, 1e-10); // RK4's clock sums 1e-4 steps
     }
     // with a goal on the way: the arrival times (durations) agree
     s.radius = d.radius = 0.05;
@@ -297,7 +282,7 @@ TEST(Reflight, StraightLegsInTheJetAgreeWithATightTravelTimeCalculator)
     TravelTimeParams p;
     p.speed = V;
     p.eps = 1e-9;
-    p.hMin = 1e-5;  // steps at hMin are accepted whatever their error: the default 1e-3 would cap the accuracy
+    p.hMin = 1e-5; // steps at hMin are accepted whatever their error: the default 1e-3 would cap the accuracy
     const TravelTimeCalculator calc(jet, p);
     struct Leg
     {
@@ -317,7 +302,7 @@ TEST(Reflight, StraightLegsInTheJetAgreeWithATightTravelTimeCalculator)
     const LegReflight no = reflyLeg(1.0, -3.0, 4.0, -1.0, 2.0, *jet, nullptr, settings(V));
     EXPECT_FALSE(no.feasible);
     EXPECT_NE(no.why.find("cross current"), std::string::npos) << no.why;
-    EXPECT_GT(no.where.x, 1.5);  // not at the start
+    EXPECT_GT(no.where.x, 1.5); // not at the start
     EXPECT_LT(no.where.x, 4.0);
 }
 
@@ -361,7 +346,7 @@ TEST(Reflight, GroundsAtTheEdgeOfLandAndOfAForbiddenRegion)
     EXPECT_FALSE(r.reached);
     EXPECT_NE(r.why.find("land"), std::string::npos) << r.why;
     EXPECT_LT(r.end.x, 5.0);
-    EXPECT_GT(r.end.x, 5.0 - 1e-7);  // located to 1e-9 of the segment's duration
+    EXPECT_GT(r.end.x, 5.0 - 1e-7); // located to 1e-9 of the segment's duration
     EXPECT_NEAR(r.end.t, r.end.x / 0.6, 1e-12);
     // a straight leg onto land: the first point on land
     const LegReflight leg = reflyLeg(0, 0, 8, 0, 0.0, field, nullptr, settings(0.5));
@@ -427,5 +412,5 @@ TEST(Reflight, ThePipelinesDefaultLegTimesOnTheJetMeasured)
                 "%llu current-model calls\n",
                 path.back().t - path.front().t, r.arrivalTime - path.front().t, total, worst, r.steps,
                 static_cast<unsigned long long>(reflightCalls));
-    EXPECT_LT(std::abs(total), 1e-2);  // a sanity bound only: the figure is the measurement
+    EXPECT_LT(std::abs(total), 1e-2); // a sanity bound only: the figure is the measurement
 }

@@ -51,7 +51,7 @@ std::string makeFile(const std::string &name, bool elevation, double lonShift = 
         throw std::runtime_error("ncgen failed");
     return nc;
 }
-}  // namespace
+} // namespace
 
 TEST(NetCdfBathymetry, BilinearOnGeographicAxes)
 {
@@ -76,10 +76,12 @@ TEST(NetCdfBathymetry, EitherLongitudeConvention)
 {
     // a 0..360 file (307..309E) queried with the -180..180 longitudes every projection gives, and a -180..180 file
     // queried in 0..360: the same depths
-    const NetCdfBathymetry east(makeFile("mission_bathy_360", false, 360.0), "depth",
-                                [](double x, double y) { return LonLat{x, y}; });
-    const NetCdfBathymetry west(makeFile("mission_bathy_180", false, 0.0), "depth",
-                                [](double x, double y) { return LonLat{x + 360.0, y}; });
+    const NetCdfBathymetry east(makeFile("mission_bathy_360", false, 360.0), "depth", [](double x, double y) {
+        return LonLat{x, y};
+    });
+    const NetCdfBathymetry west(makeFile("mission_bathy_180", false, 0.0), "depth", [](double x, double y) {
+        return LonLat{x + 360.0, y};
+    });
     for (double lon = -53.0; lon <= -51.6; lon += 0.17)
         for (double lat = 47.0; lat <= 48.5; lat += 0.13)
         {
@@ -101,7 +103,7 @@ TEST(NetCdfBathymetry, ErrorsNameFileAndVariable)
         EXPECT_NE(std::string(e.what()).find("'elevation'"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
     }
-    EXPECT_THROW(NetCdfBathymetry(path, "depth", {}), Error);  // geographic axes need a projection
+    EXPECT_THROW(NetCdfBathymetry(path, "depth", {}), Error); // geographic axes need a projection
     EXPECT_THROW(NetCdfBathymetry("/nonexistent.nc", "depth", {}), Error);
 }
 
@@ -113,7 +115,8 @@ TEST(NetCdfBathymetry, LimitsTheDivesOfAMission)
                              "region: {x_min: -60, x_max: 60, y_min: -60, y_max: 60}\n"
                              "start: {x: -40, y: 0}\ngoal: {x: 40, y: 0}\n"
                              "dive_profile: {z_min: 0, z_max: 1000, climb_to_max: 0, min_range: 100, clearance: 20,\n"
-                             "  bathymetry: {type: netcdf, file: " + path + ", variable: depth}}\n";
+                             "  bathymetry: {type: netcdf, file: " +
+                             path + ", variable: depth}}\n";
     const MissionProblem problem(parseMission(text, "b.yaml"));
     const auto dive = problem.diveProfiles(0.5);
     ASSERT_TRUE(dive);

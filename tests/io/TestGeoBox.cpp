@@ -16,14 +16,14 @@ std::string faultBound(double a, double b, double c, double d)
     const auto f = regionFault(a, b, c, d);
     return f ? f->bound : "";
 }
-}  // namespace
+} // namespace
 
 TEST(GeoBox, RegionFaultsNameTheBound)
 {
     EXPECT_EQ(faultBound(-60, 30, -40, 45), "");
-    EXPECT_EQ(faultBound(170, -10, -170, 10), "");  // across the antimeridian (RFC 7946 bbox)
-    EXPECT_EQ(faultBound(350, 40, 10, 50), "");     // across Greenwich in 0..360
-    EXPECT_EQ(faultBound(170, -10, 190, 10), "");   // unwrapped
+    EXPECT_EQ(faultBound(170, -10, -170, 10), ""); // across the antimeridian (RFC 7946 bbox)
+    EXPECT_EQ(faultBound(350, 40, 10, 50), "");    // across Greenwich in 0..360
+    EXPECT_EQ(faultBound(170, -10, 190, 10), "");  // unwrapped
     EXPECT_EQ(faultBound(std::nan(""), 30, -40, 45), "lon_min");
     EXPECT_EQ(faultBound(-60, 30, -40, INFINITY), "lat_max");
     EXPECT_EQ(faultBound(-200, 30, -40, 45), "lon_min");
@@ -48,14 +48,14 @@ TEST(GeoBox, EitherConventionGivesOneBox)
         EXPECT_EQ(g.lonMax, 190.0);
         EXPECT_EQ(g.width(), 20.0);
     }
-    EXPECT_EQ(faultBound(-190, -10, -170, 10), "lon_min");  // -190 is in neither convention
-    const GeoBox g = geoBox(350, 40, 10, 50);  // 0..360 across Greenwich
+    EXPECT_EQ(faultBound(-190, -10, -170, 10), "lon_min"); // -190 is in neither convention
+    const GeoBox g = geoBox(350, 40, 10, 50);              // 0..360 across Greenwich
     EXPECT_EQ(g.lonMin, -10.0);
     EXPECT_EQ(g.lonMax, 10.0);
-    const GeoBox e = geoBox(190, 0, 200, 5);  // 0..360, west of the antimeridian
+    const GeoBox e = geoBox(190, 0, 200, 5); // 0..360, west of the antimeridian
     EXPECT_EQ(e.lonMin, -170.0);
     EXPECT_EQ(e.lonMax, -160.0);
-    const GeoBox w = geoBox(10, 0, 350, 5);  // 340 degrees wide, not across Greenwich
+    const GeoBox w = geoBox(10, 0, 350, 5); // 340 degrees wide, not across Greenwich
     EXPECT_EQ(w.width(), 340.0);
     // contains(): longitudes in any convention, edges included
     for (double lon : {170.0, 175.0, 180.0, -180.0, 185.0, -175.0, 190.0, -170.0, 530.0})
@@ -73,7 +73,7 @@ TEST(GeoBox, GreatCircleDistances)
 {
     const double degree = kKmPerDegree;
     EXPECT_NEAR(greatCircleKm({0, 0}, {1, 0}), degree, 1e-6);
-    EXPECT_NEAR(greatCircleKm({179.5, 0}, {-179.5, 0}), degree, 1e-6);  // across the antimeridian
+    EXPECT_NEAR(greatCircleKm({179.5, 0}, {-179.5, 0}), degree, 1e-6); // across the antimeridian
     EXPECT_NEAR(greatCircleKm({179.5, 0}, {180.5, 0}), degree, 1e-6);
     EXPECT_NEAR(greatCircleKm({10, 0}, {10, 90}), 90 * degree, 1e-6);
     // 70 degrees of longitude at 40S: cos(d) = sin^2(lat) + cos^2(lat) cos(70 deg)
@@ -123,7 +123,7 @@ TEST(GeoBox, MarginInKilometresAtTheHighestLatitude)
     EXPECT_NEAR(b.lonMin, -35.0 - dLon, 1e-12);
     EXPECT_NEAR(b.lonMax, 35.0 + dLon, 1e-12);
     // the margin crosses the antimeridian: lonMin stays in -180..180, lonMax goes beyond 180
-    const double m2 = 2.0 / std::cos(2.0 * M_PI / 180.0);  // widened box: latitudes -2..2
+    const double m2 = 2.0 / std::cos(2.0 * M_PI / 180.0); // widened box: latitudes -2..2
     const GeoBox c = tripBox({{179, 0}, {179.5, 0}}, 2 * kKmPerDegree);
     EXPECT_NEAR(c.lonMin, 179.0 - m2, 1e-9);
     EXPECT_NEAR(c.lonMax, 179.5 + m2, 1e-9);

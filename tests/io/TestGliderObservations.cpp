@@ -140,7 +140,7 @@ TEST(GliderObservations, VelocityUnitsAreConvertedOrRefused)
     const struct
     {
         const char *units;
-        double perMetre;  // the file's value of 1 m/s
+        double perMetre; // the file's value of 1 m/s
     } cases[] = {{"m s-1", 1.0}, {"cm s-1", 100.0}, {"cm/s", 100.0}, {"knots", 1.0 / knot}, {"mm s-1", 1000.0}};
     for (const auto &c : cases)
     {
@@ -258,7 +258,7 @@ TEST(GliderObservations, FilesOfSeveralDacAndTiesBetweenGliders)
     writeDacList((d / "ru29_a.nc").string(), "ru29", {t0, t0 + 3600, t0 + 7200}, {0.1, 0.2, 0.3});
     writeDacList((d / "ru29_b.nc").string(), "ru29", {t0 + 10800, t0 + 14400, t0 + 18000}, {0.4, 0.5, 0.6}, 1);
     GliderObservations o = readGliderObservations(d.string());
-    ASSERT_EQ(o.dac.size(), 5u);  // six, one flagged bad
+    ASSERT_EQ(o.dac.size(), 5u); // six, one flagged bad
     EXPECT_EQ(o.rejected.at("QC flag 4 (u_qc)"), 1u);
     const double expected[] = {0.1, 0.2, 0.3, 0.4, 0.6};
     for (std::size_t i = 0; i < 5; ++i)

@@ -268,12 +268,13 @@ TEST_F(GliderRealtime, ErddapErrorPagesAndHtmlAreRefusedWithTheServersWords)
     check("portal", "the answer is an HTML page ('Sign in to the portal'), not ERDDAP data");
     // .ncCF: an HTML page where NetCDF was expected
     const std::string url = server.url("/erddap/tabledap/portal.ncCF");
-    EXPECT_NE(realtimeErrorOf(url).find("ERDDAP '" + url + "': the answer is an HTML page"), std::string::npos) << realtimeErrorOf(url);
+    EXPECT_NE(realtimeErrorOf(url).find("ERDDAP '" + url + "': the answer is an HTML page"), std::string::npos)
+        << realtimeErrorOf(url);
     // a URL of another file type
     const std::string json = server.url("/erddap/tabledap/ru29.json?time");
     EXPECT_NE(realtimeErrorOf(json).find("ERDDAP '" + json +
-                                 "': not an ERDDAP tabledap answer this reader knows (the file "
-                                 "type '.json'; expected .csvp, .csv or .ncCF"),
+                                         "': not an ERDDAP tabledap answer this reader knows (the file "
+                                         "type '.json'; expected .csvp, .csv or .ncCF"),
               std::string::npos)
         << realtimeErrorOf(json);
 }
@@ -307,15 +308,17 @@ TEST_F(GliderRealtime, ErddapAnswersWithoutTheColumnsAreRefusedNamingThem)
     });
     const std::string csvp = server.url("/erddap/tabledap/ru29.csvp?time,latitude,longitude,profile_id");
     EXPECT_NE(realtimeErrorOf(csvp).find("ERDDAP '" + csvp +
-                                 "': the answer has no column 'time_uv', 'lat_uv', 'lon_uv', "
-                                 "'u', 'v'"),
+                                         "': the answer has no column 'time_uv', 'lat_uv', 'lon_uv', "
+                                         "'u', 'v'"),
               std::string::npos)
         << realtimeErrorOf(csvp);
     const std::string nccf = server.url("/erddap/tabledap/ru29.ncCF?time");
-    EXPECT_NE(realtimeErrorOf(nccf).find("ERDDAP '" + nccf + "': the answer has no variable 'lat_uv', 'v'"), std::string::npos)
+    EXPECT_NE(realtimeErrorOf(nccf).find("ERDDAP '" + nccf + "': the answer has no variable 'lat_uv', 'v'"),
+              std::string::npos)
         << realtimeErrorOf(nccf);
     const std::string cut = server.url("/erddap/tabledap/cut.ncCF");
-    EXPECT_NE(realtimeErrorOf(cut).find("ERDDAP '" + cut + "': the .ncCF answer is cut short or corrupt"), std::string::npos)
+    EXPECT_NE(realtimeErrorOf(cut).find("ERDDAP '" + cut + "': the .ncCF answer is cut short or corrupt"),
+              std::string::npos)
         << realtimeErrorOf(cut);
     // the same numbers in cm s-1: a hundredth of the DAC in m s-1; in degC: refused
     const std::string cms = server.url("/erddap/tabledap/cms.csvp");
@@ -418,7 +421,8 @@ TEST_F(GliderRealtime, DbaFilesAreFoundByNameOrFirstLineAndNotMixedWithNetCdf)
     EXPECT_EQ(one.platform, "ru29");
     // a pattern matching a dba file and a NetCDF file, a folder holding both: refused
     writeIoos(d, {deployment()[1]});
-    EXPECT_NE(realtimeErrorOf((d / "ru29*").string()).find("matches both Slocum dba files and others"), std::string::npos)
+    EXPECT_NE(realtimeErrorOf((d / "ru29*").string()).find("matches both Slocum dba files and others"),
+              std::string::npos)
         << realtimeErrorOf((d / "ru29*").string());
     EXPECT_NE(realtimeErrorOf(d.string()).find("the folder holds both NetCDF (.nc) and Slocum dba (.dba) files"),
               std::string::npos)

@@ -38,8 +38,8 @@ struct Best
 {
     bool found{false};
     double time{std::numeric_limits<double>::infinity()};
-    double heading{0.0};  ///< initial heading (radians from +x)
-    int throughGoal{0};   ///< extremals found through the goal
+    double heading{0.0}; ///< initial heading (radians from +x)
+    int throughGoal{0};  ///< extremals found through the goal
 };
 
 namespace detail
@@ -199,7 +199,7 @@ inline Best window(const Setup &s, double x0, double y0, double t0, double gx, d
         }
     return best;
 }
-}  // namespace detail
+} // namespace detail
 
 /// The fastest extremal from (x0, y0) at t0 through (gx, gy) within the setup's time and box: a sweep of the whole
 /// circle; where it finds none, Setup::zoom windows of the same number of headings, each a tenth as wide as the last
@@ -214,4 +214,4 @@ inline Best fastest(const Setup &s, double x0, double y0, double t0, double gx, 
         best = detail::window(s, x0, y0, t0, gx, gy, heading - 0.5 * width, width, heading, miss);
     return best;
 }
-}  // namespace extremal_sweep
+} // namespace extremal_sweep

@@ -13,14 +13,8 @@ namespace ompl_glider::test
 class ReverseSpreader : public TaskSpreader
 {
 public:
-    int rank() const override
-    {
-        return 0;
-    }
-    int size() const override
-    {
-        return 2;
-    }
+    int rank() const override { return 0; }
+    int size() const override { return 2; }
     std::vector<std::string> run(const std::string &what, std::size_t n, const Task &task,
                                  const Progress &progress) override
     {
@@ -36,6 +30,6 @@ public:
         }
         return out;
     }
-    std::vector<std::string> runs;  ///< "what xN" per run()
+    std::vector<std::string> runs; ///< "what xN" per run()
 };
-}  // namespace ompl_glider::test
+} // namespace ompl_glider::test

@@ -88,4 +88,4 @@ inline void expectStraightLegRetiming(const MissionProblem &problem, const Plann
         EXPECT_NEAR(b.t, t, 1e-4 * plan.travelTime) << what << ": waypoint " << k + 1;
     }
 }
-}  // namespace strong_checks
+} // namespace strong_checks

@@ -120,7 +120,8 @@ void writeCaribbean(const std::string &path)
     NcWriter w(path);
     const std::size_t nx = 46, ny = 31;
     const int dt = w.dim("time", 2), dy = w.dim("lat", ny), dx = w.dim("lon", nx);
-    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
+    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}),
+              vx = w.var("lon", NC_DOUBLE, {dx});
     w.text(vt, "units", "days since 2026-06-01");
     w.text(vy, "units", "degrees_north");
     w.text(vx, "units", "degrees_east");
@@ -136,7 +137,7 @@ void writeCaribbean(const std::string &path)
     w.put(vu, std::vector<double>(2 * nx * ny, -0.1));
     w.put(vv, std::vector<double>(2 * nx * ny, 0.01));
 }
-}  // namespace
+} // namespace
 
 TEST(Coastline, GshhgExtractOfJamaicaIsOneLandPolygon)
 {
@@ -145,8 +146,8 @@ TEST(Coastline, GshhgExtractOfJamaicaIsOneLandPolygon)
     // Jamaica: about 11,000 km^2, 1.0 square degree at 18N (1 deg^2 = 111 x 105.6 km^2); GSHHG's low resolution
     // keeps the outline within a few per cent
     EXPECT_NEAR(ringArea(land[0].outer), 0.94, 0.1);
-    EXPECT_TRUE(inside(land[0].outer, -77.3, 18.1));   // the island's interior
-    EXPECT_FALSE(inside(land[0].outer, -77.3, 17.5));  // south of it
+    EXPECT_TRUE(inside(land[0].outer, -77.3, 18.1));  // the island's interior
+    EXPECT_FALSE(inside(land[0].outer, -77.3, 17.5)); // south of it
     // a box that holds only the eastern half: clipped to it
     const auto east = readLandPolygons(kJamaica, geoBox(-77.0, 16, -75, 20));
     ASSERT_EQ(east.size(), 1u);
@@ -237,8 +238,8 @@ TEST(Coastline, RouteGoesAroundJamaicaAndAStartOnItIsBadInput)
     writeCaribbean(nc);
     ForecastInput in;
     in.current.file = nc;
-    in.start = {-78.8, 18.2};  // west of Jamaica
-    in.goal = {-75.8, 18.1};   // east of it
+    in.start = {-78.8, 18.2}; // west of Jamaica
+    in.goal = {-75.8, 18.1};  // east of it
     in.speed = 0.4;
     // without the coastline the file has no land: the straight leg crosses the island
     const MissionProblem bare(forecastMission(in));
@@ -281,7 +282,7 @@ std::string oneFeature(const std::string &name, const std::string &geometry)
 const char *kTouchingLagoon =
     R"({"type":"Polygon","coordinates":[[[-77.5,17.8],[-76.5,17.8],[-76.5,18.6],[-77.5,18.6],[-77.5,17.8]],)"
     R"([[-77.5,17.8],[-77.0,18.0],[-77.2,18.3],[-77.5,17.8]]]})";
-}  // namespace
+} // namespace
 
 TEST(Coastline, AHoleTouchingItsOuterRingAtAVertexIsTakenAsItIs)
 {
@@ -319,17 +320,18 @@ TEST(Coastline, AnInvalidPolygonIsRepairedAndTheRepairIsReported)
     const std::string coast = dir.file("bowtie.geojson");
     // a bow tie: its outer ring crosses itself at lon -77, lat 18.2
     std::ofstream(coast) << oneFeature(
-        "Bow Tie", R"({"type":"Polygon","coordinates":[[[-77.5,17.8],[-76.5,18.6],[-76.5,17.8],[-77.5,18.6],[-77.5,17.8]]]})");
+        "Bow Tie",
+        R"({"type":"Polygon","coordinates":[[[-77.5,17.8],[-76.5,18.6],[-76.5,17.8],[-77.5,18.6],[-77.5,17.8]]]})");
     std::vector<std::string> repairs;
     const auto land = readLandPolygons(coast, geoBox(-80, 16, -75, 20), &repairs);
     ASSERT_EQ(repairs.size(), 1u);
     EXPECT_NE(repairs[0].find("'Bow Tie'"), std::string::npos) << repairs[0];
     EXPECT_NE(repairs[0].find("Self-intersection"), std::string::npos) << repairs[0];
-    EXPECT_NE(repairs[0].find("-77"), std::string::npos) << repairs[0];  // where, in lon/lat
+    EXPECT_NE(repairs[0].find("-77"), std::string::npos) << repairs[0]; // where, in lon/lat
     // both triangles are land after the repair
     ASSERT_EQ(land.size(), 2u);
-    EXPECT_EQ(polygonsHolding(land, -77.4, 18.2), 1);  // west
-    EXPECT_EQ(polygonsHolding(land, -76.6, 18.2), 1);  // east
+    EXPECT_EQ(polygonsHolding(land, -77.4, 18.2), 1); // west
+    EXPECT_EQ(polygonsHolding(land, -76.6, 18.2), 1); // east
 }
 
 TEST(Coastline, ShorelinesInAGeometryCollectionAreLandOrRefusedNeverDropped)
@@ -352,8 +354,8 @@ TEST(Coastline, ShorelinesInAGeometryCollectionAreLandOrRefusedNeverDropped)
                       R"([-79,16.5]]]}]})");
     const auto land = readLandPolygons(coast, geoBox(-80, 16, -75, 20));
     ASSERT_EQ(land.size(), 2u);
-    EXPECT_EQ(polygonsHolding(land, -77.3, 18.1), 1);  // Jamaica, from the closed line
-    EXPECT_EQ(polygonsHolding(land, -78.9, 16.6), 1);  // the square
+    EXPECT_EQ(polygonsHolding(land, -77.3, 18.1), 1); // Jamaica, from the closed line
+    EXPECT_EQ(polygonsHolding(land, -78.9, 16.6), 1); // the square
     // the route from west to east of the island goes around it: every ~200 m outside the GSHHG ring
     const std::string nc = dir.file("caribbean.nc");
     writeCaribbean(nc);
@@ -377,7 +379,8 @@ TEST(Coastline, ShorelinesInAGeometryCollectionAreLandOrRefusedNeverDropped)
         const std::string bad = dir.file("bad_collection.geojson");
         std::ofstream(bad) << oneFeature(
             "Mixed", R"({"type":"GeometryCollection","geometries":[{"type":"Polygon","coordinates":[[[-79,16.5],)"
-                     R"([-78.8,16.5],[-78.8,16.7],[-79,16.7],[-79,16.5]]]},)" + member + "]}");
+                     R"([-78.8,16.5],[-78.8,16.7],[-79,16.7],[-79,16.5]]]},)" +
+                         member + "]}");
         try
         {
             readLandPolygons(bad, geoBox(-80, 16, -75, 20));
@@ -418,7 +421,7 @@ TEST(Coastline, ErrorsNameTheCoastlineFileTheFeatureAndLonLat)
         EXPECT_NE(msg.find(coast), std::string::npos) << msg;
         EXPECT_NE(msg.find("'Cape Open'"), std::string::npos) << msg;
         EXPECT_NE(msg.find("lon -77, lat 18"), std::string::npos) << msg;
-        EXPECT_EQ(msg.find(nc), std::string::npos) << msg;  // not the forecast's file
+        EXPECT_EQ(msg.find(nc), std::string::npos) << msg; // not the forecast's file
     }
 }
 
@@ -436,7 +439,7 @@ TEST(Coastline, MissionPolygonsGeosCallsValidAreTakenOthersNamedWithTheReason)
     o.polygon.name = "reef";
     o.polygon.geographic = true;
     o.polygon.points = {{-77.5, 17.8}, {-76.5, 17.8}, {-76.5, 18.6}, {-77.5, 18.6}};
-    o.polygon.holes = {{{-77.5, 17.8}, {-77.0, 18.0}, {-77.2, 18.3}}};  // touches the outer ring at a vertex
+    o.polygon.holes = {{{-77.5, 17.8}, {-77.0, 18.0}, {-77.2, 18.3}}}; // touches the outer ring at a vertex
     spec.forbidden.obstacles = {o};
     EXPECT_NO_THROW(MissionProblem{spec});
     spec.forbidden.obstacles[0].polygon.holes.clear();

@@ -63,7 +63,8 @@ void writeNetCdf(const std::string &path, int k)
 {
     NcWriter w(path, NC_CLOBBER | NC_64BIT_DATA);
     const int dt = w.dim("time", kNt), dy = w.dim("lat", kNy), dx = w.dim("lon", kSourceNx);
-    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
+    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}),
+              vx = w.var("lon", NC_DOUBLE, {dx});
     w.text(vt, "units", "days since 2026-06-01");
     w.text(vy, "units", "degrees_north");
     w.text(vx, "units", "degrees_east");
@@ -123,8 +124,8 @@ public:
     {
         const std::string script = std::string(OMPL_GLIDER_SOURCE_DIR) + "/tests/opendap/dap2_server.py";
         const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-        std::vector<std::string> args{python, script, "--root", root, "--port", "0", "--port-file", portFile_,
-                                      "--lifetime", "300"};
+        std::vector<std::string> args{python, script,        "--root",  root,         "--port",
+                                      "0",    "--port-file", portFile_, "--lifetime", "300"};
         std::vector<char *> argv;
         for (std::string &a : args)
             argv.push_back(a.data());
@@ -168,7 +169,7 @@ std::string slurp(const std::string &path)
 struct Answer
 {
     double travelTime{0.0};
-    std::string waypoints;  ///< waypoints.csv as the output layer writes it
+    std::string waypoints; ///< waypoints.csv as the output layer writes it
     std::string error;
 };
 
@@ -208,14 +209,14 @@ Answer planOn(int k, const std::string &source, const std::string &bytes, const 
     }
     return a;
 }
-}  // namespace
+} // namespace
 
 TEST(ConcurrentSources, EightThreadsPlanOnMemoryFilesZarrAndUrlsAsEachAlone)
 {
     TempDir dir;
     const std::string served = dir.file("served");
     fs::create_directories(served);
-    DapServer server(served);  // starting while the forecasts are written
+    DapServer server(served); // starting while the forecasts are written
     constexpr int kThreads = 8;
     std::vector<std::string> alone(kThreads), together(kThreads), bytes(kThreads);
     for (int k = 0; k < kThreads; ++k)
@@ -225,21 +226,21 @@ TEST(ConcurrentSources, EightThreadsPlanOnMemoryFilesZarrAndUrlsAsEachAlone)
         bytes[k] = slurp(nc);
         switch (k % 4)
         {
-            case 0:  // NetCDF-C in memory
-                alone[k] = together[k] = "memory";
-                break;
-            case 1:  // a NetCDF file
-                alone[k] = together[k] = nc;
-                break;
-            case 2:  // a Zarr store through GDAL
-                writeZarr(dir.file("f" + std::to_string(k) + ".zarr"), k);
-                alone[k] = together[k] = dir.file("f" + std::to_string(k) + ".zarr");
-                break;
-            default:  // a URL: two names, since the process keeps a URL's dataset and values once read
-                fs::copy_file(nc, served + "/alone" + std::to_string(k) + ".nc");
-                fs::copy_file(nc, served + "/together" + std::to_string(k) + ".nc");
-                alone[k] = "alone" + std::to_string(k) + ".nc";
-                together[k] = "together" + std::to_string(k) + ".nc";
+        case 0: // NetCDF-C in memory
+            alone[k] = together[k] = "memory";
+            break;
+        case 1: // a NetCDF file
+            alone[k] = together[k] = nc;
+            break;
+        case 2: // a Zarr store through GDAL
+            writeZarr(dir.file("f" + std::to_string(k) + ".zarr"), k);
+            alone[k] = together[k] = dir.file("f" + std::to_string(k) + ".zarr");
+            break;
+        default: // a URL: two names, since the process keeps a URL's dataset and values once read
+            fs::copy_file(nc, served + "/alone" + std::to_string(k) + ".nc");
+            fs::copy_file(nc, served + "/together" + std::to_string(k) + ".nc");
+            alone[k] = "alone" + std::to_string(k) + ".nc";
+            together[k] = "together" + std::to_string(k) + ".nc";
         }
     }
     for (int k = 3; k < kThreads; k += 4)
@@ -265,7 +266,7 @@ TEST(ConcurrentSources, EightThreadsPlanOnMemoryFilesZarrAndUrlsAsEachAlone)
                 std::unique_lock<std::mutex> lock(m);
                 if (++ready == kThreads)
                     go.notify_all();
-                go.wait(lock, [&] { return ready == kThreads; });  // all start at once
+                go.wait(lock, [&] { return ready == kThreads; }); // all start at once
             }
             second[k] = planOn(k, together[k], bytes[k], dir.file("out" + std::to_string(k)));
         });
@@ -274,7 +275,7 @@ TEST(ConcurrentSources, EightThreadsPlanOnMemoryFilesZarrAndUrlsAsEachAlone)
     for (int k = 0; k < kThreads; ++k)
     {
         ASSERT_TRUE(second[k].error.empty()) << together[k] << ": " << second[k].error;
-        EXPECT_EQ(second[k].travelTime, first[k].travelTime) << together[k];  // to the bit
+        EXPECT_EQ(second[k].travelTime, first[k].travelTime) << together[k]; // to the bit
         EXPECT_EQ(second[k].waypoints, first[k].waypoints) << together[k];
     }
 }

@@ -41,15 +41,15 @@ TEST(AkimaSpline, ReproducesLinesAndDoesNotOvershootSteps)
 TEST(Brent, FindsParabolaMinimumQuickly)
 {
     std::vector<DepartureSample> calls;
-    const auto r = brentMinimize([](double x) { return 3 + (x - 1.234567) * (x - 1.234567); }, -2, 5, -2, 1e-8, 60,
-                                 &calls);
+    const auto r =
+        brentMinimize([](double x) { return 3 + (x - 1.234567) * (x - 1.234567); }, -2, 5, -2, 1e-8, 60, &calls);
     EXPECT_NEAR(r.first, 1.234567, 1e-6);
     EXPECT_NEAR(r.second, 3.0, 1e-12);
     EXPECT_LE(calls.size(), 12u);
     // Impassable (infinite) on the left part: still converges to the finite minimum.
     const auto s = brentMinimize(
-        [](double x) { return x < 0.5 ? std::numeric_limits<double>::infinity() : 2 + std::abs(x - 0.8); }, 0, 3,
-        0.1, 1e-6, 80);
+        [](double x) { return x < 0.5 ? std::numeric_limits<double>::infinity() : 2 + std::abs(x - 0.8); }, 0, 3, 0.1,
+        1e-6, 80);
     EXPECT_NEAR(s.first, 0.8, 1e-4);
 }
 
@@ -60,7 +60,7 @@ double wavy(double t)
 {
     return 20.0 + 3.0 * std::sin(0.4 * t + 0.3) + 1.2 * std::sin(1.1 * t + 2.0) + 0.02 * t;
 }
-}  // namespace
+} // namespace
 
 TEST(DepartureTime, MatchesBruteForceWithAFifthOfTheEvaluations)
 {
@@ -82,12 +82,12 @@ TEST(DepartureTime, MatchesBruteForceWithAFifthOfTheEvaluations)
     const DepartureSearchResult b = bruteForceDepartureTime(wavy, bp);
     ASSERT_TRUE(b.found);
     EXPECT_EQ(b.fineEvaluations, 1601u);
-    EXPECT_LE(r.travelTime, b.travelTime + 1e-4);  // at least as good as the 0.01 sweep (to its resolution)
+    EXPECT_LE(r.travelTime, b.travelTime + 1e-4); // at least as good as the 0.01 sweep (to its resolution)
     EXPECT_NEAR(r.departure, b.departure, 0.011);
     EXPECT_EQ(static_cast<std::size_t>(calls.load()), r.fineEvaluations);
     EXPECT_EQ(r.supportingPoints.size(), 17u);
     EXPECT_LE(r.fineEvaluations, 17u + p.maxBrentEvaluations);
-    EXPECT_LE(r.fineEvaluations * 5, static_cast<std::size_t>(161));  // a fifth of a 0.1 sweep
+    EXPECT_LE(r.fineEvaluations * 5, static_cast<std::size_t>(161)); // a fifth of a 0.1 sweep
     EXPECT_GE(r.departure, r.bracketLo);
     EXPECT_LE(r.departure, r.bracketHi);
 }
@@ -127,8 +127,8 @@ TEST(DepartureTime, HorizonCutsTheWindow)
     p.windowEnd = 30.0;
     p.spacing = 1.0;
     p.tolerance = 1e-6;
-    p.horizon = 20.0;  // t + 10 - 0.2 t <= 20  <=>  t <= 12.5
-    p.minTripDuration = 4.0;  // window cut at 16
+    p.horizon = 20.0;        // t + 10 - 0.2 t <= 20  <=>  t <= 12.5
+    p.minTripDuration = 4.0; // window cut at 16
     const DepartureSearchResult r = optimalDepartureTime(f, p);
     EXPECT_DOUBLE_EQ(r.windowEnd, 16.0);
     ASSERT_TRUE(r.found);

@@ -56,7 +56,7 @@ std::string exact(double v)
     std::snprintf(s, sizeof s, "%.17g", v);
     return s;
 }
-}  // namespace
+} // namespace
 
 TEST(DrawnEnsemble, ControlRunThenDrawsInTheirBoundsFromTheSeed)
 {
@@ -69,7 +69,7 @@ TEST(DrawnEnsemble, ControlRunThenDrawsInTheirBoundsFromTheSeed)
     // member 0 is the control run: the parameters as given, the spread one not given at its default
     const std::map<std::string, double> control{{"B0", 1.2}, {"k", 0.84}, {"c", 0.12}, {"epsilon", eps0}};
     EXPECT_EQ(c.members[0].parameters, control);
-    EXPECT_EQ(c.parameters, control);  // the current's own spec is member 0, as for a listed ensemble
+    EXPECT_EQ(c.parameters, control); // the current's own spec is member 0, as for a listed ensemble
     // the closed form of member 1: mt19937(7)'s outputs in the order of the names (B0, c, epsilon, k)
     std::mt19937 rng(7);
     const auto u = [&rng] { return -1.0 + 2.0 * (static_cast<double>(rng()) + 0.5) / 4294967296.0; };
@@ -82,7 +82,7 @@ TEST(DrawnEnsemble, ControlRunThenDrawsInTheirBoundsFromTheSeed)
     for (std::size_t i = 1; i < c.members.size(); ++i)
     {
         const auto &p = c.members[i].parameters;
-        ASSERT_EQ(p.size(), 4u) << "member " << i;  // no parameter without a spread added (omega, theta keep theirs)
+        ASSERT_EQ(p.size(), 4u) << "member " << i; // no parameter without a spread added (omega, theta keep theirs)
         for (const auto &[name, value] : control)
         {
             const double s = c.drawn->spread.at(name);
@@ -90,7 +90,7 @@ TEST(DrawnEnsemble, ControlRunThenDrawsInTheirBoundsFromTheSeed)
         }
         distinct.insert(p.at("B0"));
     }
-    EXPECT_EQ(distinct.size(), 23u);  // draws, not copies
+    EXPECT_EQ(distinct.size(), 23u); // draws, not copies
     // the same seed draws the same members; another seed others
     const MissionSpec same = parseMission(kHead + kJet, "m.yaml");
     for (std::size_t i = 0; i < 24; ++i)
@@ -120,7 +120,8 @@ TEST(DrawnEnsemble, PlansAsTheSameEnsembleListed)
                              "global_check: false, objective: worst}\n";
     const std::string drawn = kHead +
                               "current: {type: meandering_jet, parameters: {B0: 1.2, k: 0.84, c: 0.12}, members: 3, "
-                              "spread: {B0: 0.1, k: 0.1, c: 0.1}, seed: 7}\n" + tail;
+                              "spread: {B0: 0.1, k: 0.1, c: 0.1}, seed: 7}\n" +
+                              tail;
     const MissionSpec d = parseMission(drawn, "m.yaml");
     ASSERT_EQ(d.current.members.size(), 3u);
     std::string list = "current:\n  ensemble:\n";
@@ -144,7 +145,7 @@ TEST(DrawnEnsemble, PlansAsTheSameEnsembleListed)
     const PlannedPath a = planRoute(pd, 0.0), b = planRoute(pl, 0.0);
     ASSERT_TRUE(a.solved) << a.reason;
     ASSERT_TRUE(b.solved) << b.reason;
-    EXPECT_EQ(a.path.back().t, b.path.back().t);  // to the bit
+    EXPECT_EQ(a.path.back().t, b.path.back().t); // to the bit
     ASSERT_TRUE(a.ensemble && b.ensemble);
     EXPECT_EQ(a.ensemble->memberTravelTimes, b.ensemble->memberTravelTimes);
     EXPECT_EQ(a.ensemble->chosen, b.ensemble->chosen);

@@ -87,10 +87,10 @@ TEST(ExecutionObserved, MeasuredDacIsTheTruthsMeanAlongTheDive)
     for (std::size_t i = 1; i + 2 < dac.fixes.size(); ++i)
     {
         const TimedPoint &a = dac.fixes[i], &b = dac.fixes[i + 1];
-        const double dt = b.t - a.t, px = a.x + 0.2 * dt, py = a.y - 0.1 * dt;  // the fix carried by the current
+        const double dt = b.t - a.t, px = a.x + 0.2 * dt, py = a.y - 0.1 * dt; // the fix carried by the current
         const double lx = 10.0 - px, ly = 0.0 - py, len = std::hypot(lx, ly);
-        EXPECT_NEAR(((b.x - px) * ly - (b.y - py) * lx) / len, 0.0, 1e-9) << i;  // on that line
-        EXPECT_NEAR(std::hypot(b.x - px, b.y - py), 0.5 * dt, 1e-9) << i;    // the whole speed along it
+        EXPECT_NEAR(((b.x - px) * ly - (b.y - py) * lx) / len, 0.0, 1e-9) << i; // on that line
+        EXPECT_NEAR(std::hypot(b.x - px, b.y - py), 0.5 * dt, 1e-9) << i;       // the whole speed along it
     }
     const FlownTrack blind = flyPlan(plan, 0.5, forecast, truth, nullptr, ControlStrategy::CurrentBlind, o);
     // current_blind re-aims at every surfacing but drifts 0.1 off course in every dive, and arrives later
@@ -117,7 +117,7 @@ TEST(ExecutionObserved, ReplanObservedSteersWithTheCorrectedCurrentAtTheFix)
     const UniformCurrent &forecast = kStillWater, &truth = kDrift;
     const std::vector<TimedPoint> &plan = kEastPlan;
     ExecutionOptions o = surfacingEveryUnit();
-    o.replanEvery = 1000;  // the start's plan only: the plans keep the current one
+    o.replanEvery = 1000; // the start's plan only: the plans keep the current one
     o.replan = [](double, double, double, const std::vector<TimedPoint> &) { return std::vector<TimedPoint>{}; };
     o.replanObserved = [](double, double, double, const std::vector<TimedPoint> &,
                           const std::shared_ptr<const CurrentField> &) { return std::vector<TimedPoint>{}; };
@@ -147,15 +147,15 @@ TEST(ExecutionObserved, ReplanObservedSteersWithTheCorrectedCurrentAtTheFix)
 TEST(ExecutionObserved, CorrectionParametersWithoutGliderFiles)
 {
     // an execution experiment sets the correction's scales without a glider's files: the start stays required
-    const MissionSpec m = parseMission(std::string(kJetMission) +
-                                       "observations: {length_scale: 2, time_scale: 3, error_ratio: 0.5}\n");
+    const MissionSpec m =
+        parseMission(std::string(kJetMission) + "observations: {length_scale: 2, time_scale: 3, error_ratio: 0.5}\n");
     ASSERT_TRUE(m.observations.has_value());
     EXPECT_FALSE(m.observations->hasFiles());
     const MissionProblem p(m);
     EXPECT_EQ(p.correctionParams().lengthScale, 2.0);
     EXPECT_EQ(p.correctionParams().timeScale, 3.0);
     EXPECT_EQ(p.correctionParams().errorRatio, 0.5);
-    EXPECT_EQ(p.getStart().x, 1.0);  // the mission's start, not a last fix
+    EXPECT_EQ(p.getStart().x, 1.0); // the mission's start, not a last fix
     std::string noStart = kJetMission;
     noStart.replace(noStart.find("start: {x: 1, y: -3}\n"), 21, "");
     try

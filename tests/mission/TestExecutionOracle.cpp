@@ -41,7 +41,7 @@ double quantile(std::vector<double> v, double q)
     const std::size_t lo = static_cast<std::size_t>(pos), hi = std::min(lo + 1, v.size() - 1);
     return v[lo] * (1.0 - (pos - static_cast<double>(lo))) + v[hi] * (pos - static_cast<double>(lo));
 }
-}  // namespace
+} // namespace
 
 // The oracle reaches the radius R = 0.2 at 2 + (8 - R) / 0.8 (to the integration's accuracy); every strategy flies
 // the same straight line at the same speed, so each arrives over the oracle's in a ratio of 1.
@@ -63,7 +63,7 @@ TEST(ExecutionOracle, UniformTruthOracleInClosedFormAndRatioOne)
     const ExecutionRun &run = e.runs.at(0);
     EXPECT_EQ(run.departure, 2.0);
     EXPECT_NEAR(run.oracleArrival, 2.0 + 7.8 / 0.8, 1e-6);
-    EXPECT_NEAR(r.plan.travelTime, 8.0 / 0.6, 1e-3);  // the forecast's plan: slower than the truth carries it
+    EXPECT_NEAR(r.plan.travelTime, 8.0 / 0.6, 1e-3); // the forecast's plan: slower than the truth carries it
     EXPECT_GT(run.oracleSeconds, 0.0);
     EXPECT_EQ(e.oracleSeconds, run.oracleSeconds);
     ASSERT_EQ(e.spread.size(), 3u);
@@ -95,8 +95,8 @@ TEST(ExecutionOracle, UniformTruthOracleInClosedFormAndRatioOne)
 // The truth is the forecast: there is no oracle to compute, and no field says there is.
 TEST(ExecutionOracle, NoneWhereTheTruthIsTheForecast)
 {
-    const MissionSpec spec = parseMission(kUniform + "execution: {strategies: [current_sensitive], radius: 0.2}\n",
-                                          "m.yaml");
+    const MissionSpec spec =
+        parseMission(kUniform + "execution: {strategies: [current_sensitive], radius: 0.2}\n", "m.yaml");
     const MissionProblem problem(spec);
     const MissionResult r = runMission(problem);
     ASSERT_TRUE(r.execution.has_value());
@@ -109,7 +109,7 @@ TEST(ExecutionOracle, NoneWhereTheTruthIsTheForecast)
     EXPECT_TRUE(j.at("execution").at("oracle").is_null());
     EXPECT_TRUE(j.at("execution").at("current_sensitive").at("batch").at("over_oracle").is_null());
     const std::string csv = executionCsv(e, problem);
-    EXPECT_EQ(csv.substr(csv.size() - 2), ",\n");  // the column is there, empty
+    EXPECT_EQ(csv.substr(csv.size() - 2), ",\n"); // the column is there, empty
     std::ostringstream report;
     printReport(report, r);
     EXPECT_EQ(report.str().find("oracle"), std::string::npos) << report.str();
@@ -155,7 +155,7 @@ execution:
 TEST(ExecutionOracle, JetBatchOracleIsThePairFlownInTheTruthAndSpreadOfTheRatios)
 {
     MissionSpec spec = defaultGulfStreamMission();
-    spec.planner.globalCheck = false;  // quicker; the same for the runs and the oracle
+    spec.planner.globalCheck = false; // quicker; the same for the runs and the oracle
     spec.execution.enabled = true;
     spec.execution.surfacingInterval = 0.25;
     spec.execution.strategies = {"current_sensitive", "current_blind", "greedy"};
@@ -193,8 +193,8 @@ TEST(ExecutionOracle, JetBatchOracleIsThePairFlownInTheTruthAndSpreadOfTheRatios
             EXPECT_EQ(a.oracleArrival, twinArrival) << "run " << i;
         oracleReached += std::isfinite(a.oracleArrival) ? 1 : 0;
     }
-    EXPECT_GE(oracleReached, 4u);  // the truth flown with the truth as its forecast reaches most goals
-    EXPECT_GE(e.spread[0].overOracle.count, 3u);  // enough ratios for the quartiles to interpolate
+    EXPECT_GE(oracleReached, 4u);                // the truth flown with the truth as its forecast reaches most goals
+    EXPECT_GE(e.spread[0].overOracle.count, 3u); // enough ratios for the quartiles to interpolate
 
     for (std::size_t k = 0; k < e.strategies.size(); ++k)
     {
@@ -209,6 +209,6 @@ TEST(ExecutionOracle, JetBatchOracleIsThePairFlownInTheTruthAndSpreadOfTheRatios
         EXPECT_DOUBLE_EQ(s.median, quantile(ratios, 0.5)) << e.spread[k].strategy;
         EXPECT_DOUBLE_EQ(s.q3, quantile(ratios, 0.75)) << e.spread[k].strategy;
         for (double x : ratios)
-            EXPECT_GT(x, 0.5) << e.spread[k].strategy;  // no flight arrives in half the oracle's time
+            EXPECT_GT(x, 0.5) << e.spread[k].strategy; // no flight arrives in half the oracle's time
     }
 }

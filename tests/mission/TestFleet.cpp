@@ -61,7 +61,7 @@ std::string read(const fs::path &p)
     s << in.rdbuf();
     return s.str();
 }
-}  // namespace
+} // namespace
 
 TEST(Fleet, ReadWithEachGlidersOwnValuesAndPlaces)
 {
@@ -100,10 +100,11 @@ TEST(Fleet, ReadWithEachGlidersOwnValuesAndPlaces)
 TEST(Fleet, BadEntriesNameTheirLine)
 {
     const std::string head = kFleet.substr(0, kFleet.find("fleet:"));
-    EXPECT_NE(fleetErrorOf(head + "fleet:\n  - {name: a, start: {x: 1, y: 0}}\n").find("m.yaml:8: field 'fleet[0].goal': missing"),
+    EXPECT_NE(fleetErrorOf(head + "fleet:\n  - {name: a, start: {x: 1, y: 0}}\n")
+                  .find("m.yaml:8: field 'fleet[0].goal': missing"),
               std::string::npos);
     EXPECT_NE(fleetErrorOf(head + "fleet:\n  - {name: a, start: {x: 1, y: 0}, goal: {x: 2, y: 0}}\n"
-                             "  - {name: a, start: {x: 1, y: 1}, goal: {x: 2, y: 1}}\n")
+                                  "  - {name: a, start: {x: 1, y: 1}, goal: {x: 2, y: 1}}\n")
                   .find("m.yaml:9: field 'fleet[1].name': 'a' names another glider"),
               std::string::npos);
     EXPECT_NE(fleetErrorOf(head + "fleet:\n  - {name: ../x, start: {x: 1, y: 0}, goal: {x: 2, y: 0}}\n")
@@ -126,8 +127,8 @@ TEST(Fleet, AGlidersMissionDoesNotGrowWithTheFleet)
     auto fleetOf = [&](std::size_t n) {
         std::string text = head + "fleet:\n";
         for (std::size_t i = 0; i < n; ++i)
-            text += "  - {name: g" + std::to_string(i) + ", start: {x: 1, y: 0}, goal: {x: 9, y: " +
-                    std::to_string(i % 3) + "}, speed: 0.4}\n";
+            text += "  - {name: g" + std::to_string(i) +
+                    ", start: {x: 1, y: 0}, goal: {x: 9, y: " + std::to_string(i % 3) + "}, speed: 0.4}\n";
         return parseMission(text, "m.yaml");
     };
     const MissionSpec small = fleetOf(3), large = fleetOf(3000);

@@ -21,9 +21,7 @@ namespace
 /// The daily files named as a pilot downloads them: hycom_20260301.nc ...
 struct Files : MfFiles
 {
-    Files() : MfFiles([](int d) { return "hycom_2026030" + std::to_string(d + 1) + ".nc"; })
-    {
-    }
+    Files() : MfFiles([](int d) { return "hycom_2026030" + std::to_string(d + 1) + ".nc"; }) {}
 };
 
 ForecastInput trip()
@@ -49,7 +47,7 @@ void expectSamePlan(const MissionResult &a, const MissionResult &b)
         EXPECT_NEAR(a.plan.path[k].y, b.plan.path[k].y, 1e-6);
     }
 }
-}  // namespace
+} // namespace
 
 TEST(ForecastFiles, DailyFilesPlanAsTheCombinedFile)
 {
@@ -57,7 +55,7 @@ TEST(ForecastFiles, DailyFilesPlanAsTheCombinedFile)
     ForecastInput one = trip();
     one.current.file = f.combined;
     ForecastInput many = trip();
-    many.current.files = {f.days[3], f.days[1], f.days[0], f.days[2]};  // any order
+    many.current.files = {f.days[3], f.days[1], f.days[0], f.days[2]}; // any order
     const MissionSpec s1 = forecastMission(one), s2 = forecastMission(many);
     EXPECT_EQ(s2.current.files, many.current.files);
     EXPECT_EQ(s1.departure.time, s2.departure.time);
@@ -86,10 +84,10 @@ TEST(ForecastFiles, MissionFileTakesAGlobOrAList)
         parseMission("name: one\ncurrent: {type: netcdf, file: combined.nc}\n" + rest, "one.yaml", dir);
     const MissionSpec glob =
         parseMission("name: glob\ncurrent: {type: netcdf, file: \"hycom_*.nc\"}\n" + rest, "glob.yaml", dir);
-    const MissionSpec list = parseMission(
-        "name: list\ncurrent:\n  type: netcdf\n  file: [hycom_20260303.nc, hycom_20260301.nc, \"hycom_2026030[24].nc\"]\n" +
-            rest,
-        "list.yaml", dir);
+    const MissionSpec list = parseMission("name: list\ncurrent:\n  type: netcdf\n  file: [hycom_20260303.nc, "
+                                          "hycom_20260301.nc, \"hycom_2026030[24].nc\"]\n" +
+                                              rest,
+                                          "list.yaml", dir);
     ASSERT_EQ(glob.current.files.size(), 4u);
     ASSERT_EQ(list.current.files.size(), 4u);
     EXPECT_EQ(std::filesystem::path(glob.current.files[0]).filename(), "hycom_20260301.nc");

@@ -37,9 +37,10 @@ double latOf(std::size_t j)
 
 void writePopLike(const std::string &path)
 {
-    NcWriter w(path, NC_CLOBBER);  // classic format, as many model archives are
+    NcWriter w(path, NC_CLOBBER); // classic format, as many model archives are
     const int dt = w.dim("time", 2), dy = w.dim("lat", kNy), dx = w.dim("lon", kNx);
-    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
+    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}),
+              vx = w.var("lon", NC_DOUBLE, {dx});
     w.text(vt, "units", "hours since 2026-05-01 00:00:00");
     w.text(vy, "units", "degrees_north");
     w.text(vx, "units", "degrees_east");
@@ -82,7 +83,7 @@ bool inLandCell(double lon, double lat, double margin)
     const double m = margin / 0.2;
     return land && fi - double(i) > m && double(i + 1) - fi > m && fj - double(j) > m && double(j + 1) - fj > m;
 }
-}  // namespace
+} // namespace
 
 TEST(ForecastLand, RouteGoesAroundAPeninsulaStoredAsZeroVelocity)
 {
@@ -91,8 +92,8 @@ TEST(ForecastLand, RouteGoesAroundAPeninsulaStoredAsZeroVelocity)
     writePopLike(file);
     ForecastInput in;
     in.current.file = file;
-    in.start = {-79.5, 25.6};  // south-west of the peninsula
-    in.goal = {-76.5, 26.4};   // east of it: the straight line crosses it
+    in.start = {-79.5, 25.6}; // south-west of the peninsula
+    in.goal = {-76.5, 26.4};  // east of it: the straight line crosses it
     in.speed = 0.5;
     const MissionSpec spec = forecastMission(in);
     const MissionProblem problem(spec);
@@ -135,8 +136,8 @@ TEST(ForecastLand, StartOnLandNamesTheNearestWaterAndSnapsToItOnRequest)
     writePopLike(file);
     ForecastInput in;
     in.current.file = file;
-    in.start = {-78.4, 25.6};  // on the peninsula, 0.4 degree east of its western shore (cells with a land corner
-                               // end at the nodes of lon -78.8)
+    in.start = {-78.4, 25.6}; // on the peninsula, 0.4 degree east of its western shore (cells with a land corner
+                              // end at the nodes of lon -78.8)
     in.goal = {-76.5, 26.4};
     in.speed = 0.5;
     try

@@ -49,7 +49,7 @@ bool inModelLandCell(double fi, double fj, Land land, std::size_t columns, doubl
     const double a = fi - std::floor(fi), b = fj - std::floor(fj);
     return corner && a > margin && a < 1 - margin && b > margin && b < 1 - margin;
 }
-}  // namespace
+} // namespace
 
 TEST(ForecastModelGrids, RouteAcrossTheIndexSeamOfAWrappingCurvilinearGridGoesRoundAnIslandOnIt)
 {
@@ -79,7 +79,8 @@ TEST(ForecastModelGrids, RouteAcrossTheIndexSeamOfAWrappingCurvilinearGridGoesRo
         double fi = std::fmod(lon + 40.0 - 0.2 * fj, 360.0) / 3.0;
         if (fi < 0)
             fi += 120.0;
-        return inModelLandCell(fi, fj, [&](std::size_t j, std::size_t i) { return grid.land(j, i); }, 120);
+        return inModelLandCell(
+            fi, fj, [&](std::size_t j, std::size_t i) { return grid.land(j, i); }, 120);
     };
     expectClearOfLand(problem, r.plan.path, 200.0, bad);
     // the route went round the island: north of row 31 or south of row 29 somewhere
@@ -104,7 +105,7 @@ TEST(ForecastModelGrids, RouteOnARomsCGridGoesRoundItsMaskedIsland)
     grid.write(file);
     ForecastInput in;
     in.current.file = file;
-    const LonLat s = grid.geo(10, 3), g = grid.geo(10.2, 16);  // the straight line crosses the island (eta 9..11)
+    const LonLat s = grid.geo(10, 3), g = grid.geo(10.2, 16); // the straight line crosses the island (eta 9..11)
     in.start = {s.lon, s.lat};
     in.goal = {g.lon, g.lat};
     in.speed = 0.5;
@@ -146,7 +147,8 @@ TEST(ForecastModelGrids, RomsGridWithoutAngleGivesTheSameRouteAsWithIt)
         return runMission(problem);
     };
     const MissionResult ra = plan(a, ""), rb = plan(b, ""), rn = plan(a, "none");
-    ASSERT_TRUE(ra.plan.solved && rb.plan.solved && rn.plan.solved) << ra.plan.reason << rb.plan.reason << rn.plan.reason;
+    ASSERT_TRUE(ra.plan.solved && rb.plan.solved && rn.plan.solved)
+        << ra.plan.reason << rb.plan.reason << rn.plan.reason;
     EXPECT_NEAR(rb.plan.travelTime / ra.plan.travelTime, 1.0, 1e-3) << ra.plan.travelTime << " " << rb.plan.travelTime;
     EXPECT_GT(std::abs(rn.plan.travelTime / ra.plan.travelTime - 1.0), 0.01) << rn.plan.travelTime;
     // the report and summary say how the angle was found

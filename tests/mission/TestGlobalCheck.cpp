@@ -43,38 +43,20 @@ public:
         : inner_(std::move(inner)), wait_(static_cast<long>(waitNs)), after_(static_cast<std::uint64_t>(after))
     {
     }
-    double maxSpeed(const Region &r) const override
-    {
-        return inner_->maxSpeed(r);
-    }
+    double maxSpeed(const Region &r) const override { return inner_->maxSpeed(r); }
     bool velocityBounds(const Region &r, double &uMin, double &uMax, double &vMin, double &vMax) const override
     {
         return inner_->velocityBounds(r, uMin, uMax, vMin, vMax);
     }
-    bool hasVelocityBounds() const override
-    {
-        return inner_->hasVelocityBounds();
-    }
+    bool hasVelocityBounds() const override { return inner_->hasVelocityBounds(); }
     std::optional<double> streamFunction(double x, double y, double z, double t) const override
     {
         return inner_->streamFunction(x, y, z, t);
     }
-    bool divergenceFree() const override
-    {
-        return inner_->divergenceFree();
-    }
-    double timeBegin() const override
-    {
-        return inner_->timeBegin();
-    }
-    double timeEnd() const override
-    {
-        return inner_->timeEnd();
-    }
-    std::string name() const override
-    {
-        return "slowed " + inner_->name();
-    }
+    bool divergenceFree() const override { return inner_->divergenceFree(); }
+    double timeBegin() const override { return inner_->timeBegin(); }
+    double timeEnd() const override { return inner_->timeEnd(); }
+    std::string name() const override { return "slowed " + inner_->name(); }
 
 protected:
     Velocity evaluate(double x, double y, double z, double t) const override
@@ -139,7 +121,7 @@ extremal_sweep::Best reference(const MissionProblem &problem, double maxTime, in
     return extremal_sweep::fastest(s, problem.getStart().x, problem.getStart().y, m.departure.time, problem.getGoal().x,
                                    problem.getGoal().y);
 }
-}  // namespace
+} // namespace
 
 TEST(GlobalCheck, UpstreamCrossingOfTheJetComesOutInTheBestRouteClass)
 {
@@ -159,7 +141,7 @@ TEST(GlobalCheck, UpstreamCrossingOfTheJetComesOutInTheBestRouteClass)
     EXPECT_TRUE(g.extremalFound);
     EXPECT_EQ(g.candidates.front().name, "ZA*TVE");
     EXPECT_NE(g.winner, "ZA*TVE");
-    EXPECT_GT(g.gain, 0.05);  // the planner's route was more than 5 % slower
+    EXPECT_GT(g.gain, 0.05); // the planner's route was more than 5 % slower
     EXPECT_NEAR(g.gain, 1.0 - r.plan.travelTime / g.candidates.front().travelTime, 1e-12);
     // raw and smoothed remain the planner's own stages
     EXPECT_NEAR(r.plan.rawTravelTime, r.plan.raw.back().t - r.plan.departure, 1e-12);
@@ -307,7 +289,7 @@ TEST(GlobalCheck, NeverLosesARouteThatMeetsTheArrivalWindow)
         const double b = late(rng) * free.travelTime;
         cases.push_back({m.start.xy, m.goal.xy, b, b + 1.0});
     }
-    int checked = 0;  // cases where the plan without the check meets the window
+    int checked = 0; // cases where the plan without the check meets the window
     for (const Case &c : cases)
     {
         SCOPED_TRACE("start (" + std::to_string(c.s.x) + ", " + std::to_string(c.s.y) + "), goal (" +
@@ -326,7 +308,7 @@ TEST(GlobalCheck, NeverLosesARouteThatMeetsTheArrivalWindow)
         EXPECT_LE(p.path.back().t, c.end + 1e-9);
         EXPECT_LE(p.path.back().t, off.path.back().t + 1e-9);
         ASSERT_TRUE(p.globalCheck.has_value());
-        for (const RouteCandidate &k : p.globalCheck->candidates)  // a candidate that is a route meets the window
+        for (const RouteCandidate &k : p.globalCheck->candidates) // a candidate that is a route meets the window
         {
             if (k.solved)
             {
@@ -335,7 +317,7 @@ TEST(GlobalCheck, NeverLosesARouteThatMeetsTheArrivalWindow)
         }
     }
     std::printf("cases checked: %d of %zu\n", checked, cases.size());
-    EXPECT_EQ(checked, static_cast<int>(cases.size()));  // every case has a route without the check: none is vacuous
+    EXPECT_EQ(checked, static_cast<int>(cases.size())); // every case has a route without the check: none is vacuous
 }
 
 TEST(GlobalCheck, TheRescueGivesTheSameAnswerOnASlowerMachine)
@@ -344,8 +326,9 @@ TEST(GlobalCheck, TheRescueGivesTheSameAnswerOnASlowerMachine)
     // Around the Rankine vortex at V = 0.3 the sweep finds no extremal through the goal: the rescue scans finer and
     // runs the level set, and its extremal wins. The rescue is bounded by its work (the level set's node updates),
     // not by a clock: the same problem on a machine that other work slows down once the plan is made (every velocity
-    // of the check 100 ns slower: the check takes about twice as long) gets the same check and the same route, to the bit. (With a budget in
-    // seconds, ten times the plan's, the slowed run's level set was cut before its front reached the goal.)
+    // of the check 100 ns slower: the check takes about twice as long) gets the same check and the same route, to the
+    // bit. (With a budget in seconds, ten times the plan's, the slowed run's level set was cut before its front reached
+    // the goal.)
     const trust::Flow vortex = trust::flows()[2];
     MissionSpec m = vortex.mission;
     m.start.xy = {0.55, -0.16};
@@ -365,9 +348,9 @@ TEST(GlobalCheck, TheRescueGivesTheSameAnswerOnASlowerMachine)
     std::printf("check: %.2f s, slowed %.2f s; level set %llu of %llu node updates, first arrival %.6f; winner %s\n",
                 a.seconds, b.seconds, static_cast<unsigned long long>(a.levelSetUpdates),
                 static_cast<unsigned long long>(a.levelSetBudget), a.levelSetTime, a.winner.c_str());
-    EXPECT_GT(b.seconds, 2.0 * a.seconds);  // the slowdown took effect
+    EXPECT_GT(b.seconds, 2.0 * a.seconds); // the slowdown took effect
     EXPECT_GT(a.finerHeadings, 0u);
-    EXPECT_GT(a.levelSetUpdates, 0u);  // the rescue ran its level set
+    EXPECT_GT(a.levelSetUpdates, 0u); // the rescue ran its level set
     EXPECT_TRUE(std::isfinite(a.levelSetTime));
     EXPECT_FALSE(a.timedOut);
     EXPECT_FALSE(b.timedOut);

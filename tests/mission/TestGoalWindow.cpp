@@ -73,7 +73,7 @@ void expectValidPath(const MissionProblem &problem, const PlannedPath &p)
     EXPECT_TRUE(path.check());
     EXPECT_TRUE(p.pathChecked);
 }
-}  // namespace
+} // namespace
 
 TEST(GoalWindow, HoldAtTheGoal)
 {
@@ -140,7 +140,8 @@ TEST(GoalWindow, TimingWhereTheGoalCannotBeHeld)
     // the goal lies in a current of 1.2 > V = 0.5: no hold there
     std::shared_ptr<GliderContext> ctx;
     const auto ss = makeSimpleSetup(problem.gliderProblem(0.0, 0.5), &ctx);
-    const auto mv = std::dynamic_pointer_cast<TravelTimeMotionValidator>(ss->getSpaceInformation()->getMotionValidator());
+    const auto mv =
+        std::dynamic_pointer_cast<TravelTimeMotionValidator>(ss->getSpaceInformation()->getMotionValidator());
     ASSERT_FALSE(mv->canHold(8.0, 1.2, earliest, 30.0));
 
     const PlannedPath p = planRoute(problem, 0.0);
@@ -190,8 +191,9 @@ TEST(GoalWindow, WindowOutsideTheHorizonIsBadInput)
 
 TEST(GoalWindow, MissionFileAndTimes)
 {
-    const MissionSpec m = parseMission(std::string(kUniformWindow).replace(std::string(kUniformWindow).find("goal: {x: 9, y: 0}"),
-                                                                     18, "goal: {x: 9, y: 0, window: {begin: 20, end: 25}}"),
+    const MissionSpec m = parseMission(std::string(kUniformWindow)
+                                           .replace(std::string(kUniformWindow).find("goal: {x: 9, y: 0}"), 18,
+                                                    "goal: {x: 9, y: 0, window: {begin: 20, end: 25}}"),
                                        "m.yaml");
     EXPECT_TRUE(m.goalWindow.set);
     EXPECT_EQ(m.goalWindow.begin, 20.0);
@@ -202,7 +204,7 @@ TEST(GoalWindow, MissionFileAndTimes)
     EXPECT_EQ(gp.arriveNotAfter, 25.0);
     // dates with an epoch, read as the departure's
     MissionSpec dated = parseMission(std::string(kUniformWindow) + "units: {length_m: 1000, time_s: 3600}\n"
-                                                             "epoch: \"2026-01-01T00:00:00Z\"\n",
+                                                                   "epoch: \"2026-01-01T00:00:00Z\"\n",
                                      "m.yaml");
     EXPECT_DOUBLE_EQ(dated.timeOf("2026-01-02T00:00:00Z"), 24.0);
     EXPECT_DOUBLE_EQ(dated.timeOf("7.5"), 7.5);
@@ -226,6 +228,6 @@ TEST(GoalWindow, DepartureSearchCountsTheHold)
     ASSERT_TRUE(r.departureSearch);
     EXPECT_GE(r.plan.path.back().t, 30.0);
     EXPECT_LE(r.plan.path.back().t, 31.0);
-    EXPECT_GT(r.plan.departure, 9.0);  // 30 - 13.3 > 10: the latest departure is best
+    EXPECT_GT(r.plan.departure, 9.0); // 30 - 13.3 > 10: the latest departure is best
     EXPECT_NEAR(r.plan.travelTime, r.plan.path.back().t - r.plan.departure, 1e-12);
 }

@@ -48,7 +48,7 @@ void expectIdenticalPlans(const MissionResult &a, const MissionResult &b)
 {
     ASSERT_TRUE(a.plan.solved) << a.plan.reason;
     ASSERT_TRUE(b.plan.solved) << b.plan.reason;
-    EXPECT_EQ(a.plan.travelTime, b.plan.travelTime);  // one source, one pipeline: to the bit
+    EXPECT_EQ(a.plan.travelTime, b.plan.travelTime); // one source, one pipeline: to the bit
     EXPECT_EQ(a.plan.departure, b.plan.departure);
     ASSERT_EQ(a.plan.path.size(), b.plan.path.size());
     for (std::size_t k = 0; k < a.plan.path.size(); ++k)
@@ -57,7 +57,7 @@ void expectIdenticalPlans(const MissionResult &a, const MissionResult &b)
         EXPECT_EQ(a.plan.path[k].y, b.plan.path[k].y);
     }
 }
-}  // namespace
+} // namespace
 
 TEST(GriddedKind, RegistryFindsOneKindByNameAndAlias)
 {
@@ -84,10 +84,10 @@ TEST(GriddedKind, AnAliasIsNoFreeName)
     EXPECT_EQ(currentFieldKindAliases(*findCurrentFieldKind("gridded")), std::vector<std::string>{"netcdf"});
     EXPECT_TRUE(currentFieldKindAliases(*findCurrentFieldKind("uniform")).empty());
     CurrentFieldKind k = *findCurrentFieldKind("gridded");
-    k.name = "netcdf";  // the alias of the built-in kind: taken
+    k.name = "netcdf"; // the alias of the built-in kind: taken
     EXPECT_THROW(registerCurrentFieldKind(k), Error);
     EXPECT_THROW(addCurrentFieldKindAlias("netcdf", "uniform"), Error);  // taken
-    EXPECT_THROW(addCurrentFieldKindAlias("gridded", "uniform"), Error);  // a kind's name
+    EXPECT_THROW(addCurrentFieldKindAlias("gridded", "uniform"), Error); // a kind's name
     EXPECT_THROW(addCurrentFieldKindAlias("", "gridded"), Error);
     EXPECT_THROW(addCurrentFieldKindAlias("steady", "no_such_kind"), Error);
     EXPECT_EQ(findCurrentFieldKind("steady"), nullptr);

@@ -53,7 +53,7 @@ const FlownTrack &flown(const ExecutionResult &e, std::size_t run, ControlStrate
             return e.runs.at(run).flown.at(k);
     throw std::runtime_error("strategy not flown");
 }
-}  // namespace
+} // namespace
 
 TEST(MissionExecution, SectionIsReadWithUnitsAndDefaults)
 {
@@ -71,7 +71,7 @@ TEST(MissionExecution, SectionIsReadWithUnitsAndDefaults)
     ASSERT_TRUE(e.truth.has_value());
     EXPECT_EQ(e.truth->type, "uniform");
     EXPECT_DOUBLE_EQ(e.truth->parameters.at("u"), 0.2);
-    EXPECT_DOUBLE_EQ(e.surfacingInterval, 0.5);  // 30 min in hours (time_s 3600)
+    EXPECT_DOUBLE_EQ(e.surfacingInterval, 0.5); // 30 min in hours (time_s 3600)
     EXPECT_EQ(e.strategies, (std::vector<std::string>{"greedy", "current_sensitive"}));
     EXPECT_DOUBLE_EQ(e.radius, 0.25);
     EXPECT_EQ(e.replanEvery, 3u);
@@ -84,7 +84,7 @@ TEST(MissionExecution, SectionIsReadWithUnitsAndDefaults)
     EXPECT_TRUE(d.execution.enabled);
     EXPECT_FALSE(d.execution.truth.has_value());
     EXPECT_EQ(d.execution.strategies.size(), 4u);
-    EXPECT_TRUE(std::isnan(d.execution.surfacingInterval));  // one hour, resolved when flying
+    EXPECT_TRUE(std::isnan(d.execution.surfacingInterval)); // one hour, resolved when flying
     EXPECT_FALSE(parseMission(kUniformExecution, "m.yaml").execution.enabled);
 }
 
@@ -137,7 +137,7 @@ TEST(MissionExecution, ShiftedTimeFieldReadsTheInnerFieldAtTheShiftedTime)
         EXPECT_EQ(a.u, b.u);
         EXPECT_EQ(a.v, b.v);
         const Velocity c = jet->velocity(3.0, 0.5, 0.0, t);
-        EXPECT_NE(a.u, c.u);  // the jet is time-dependent: the shift matters
+        EXPECT_NE(a.u, c.u); // the jet is time-dependent: the shift matters
     }
     EXPECT_THROW(ShiftedTimeField(jet, std::nan("")), Error);
     EXPECT_THROW(ShiftedTimeField(nullptr, 1.0), Error);
@@ -162,9 +162,9 @@ TEST(MissionExecution, UniformTruthArrivesAtTheClosedFormTime)
     const ExecutionResult &e = *r.execution;
     ASSERT_EQ(e.runs.size(), 1u);
     EXPECT_NEAR(e.surfacingInterval, 0.25, 1e-15);
-    EXPECT_NEAR(r.plan.travelTime, 8.0 / 0.6, 1e-3);  // the plan: 8 units at V + 0.1
-    ASSERT_EQ(e.strategies.size(), 4u);  // a plan of straight legs: only the listed strategies
-    for (ControlStrategy s : e.strategies)  // the four the mission lists
+    EXPECT_NEAR(r.plan.travelTime, 8.0 / 0.6, 1e-3); // the plan: 8 units at V + 0.1
+    ASSERT_EQ(e.strategies.size(), 4u);              // a plan of straight legs: only the listed strategies
+    for (ControlStrategy s : e.strategies)           // the four the mission lists
     {
         const FlownTrack &f = flown(e, 0, s);
         EXPECT_TRUE(f.reached) << controlStrategyName(s);
@@ -288,7 +288,7 @@ TEST(MissionExecution, OutputFilesAndSummarySection)
     std::size_t rows = 0;
     for (char c : csv)
         rows += c == '\n' ? 1 : 0;
-    EXPECT_EQ(rows, 1u + 3u * 2u);  // header + 3 runs x 2 strategies
+    EXPECT_EQ(rows, 1u + 3u * 2u); // header + 3 runs x 2 strategies
     EXPECT_NE(read("execution_tracks.csv").find("current_sensitive,0,"), std::string::npos);
     const auto j = nlohmann::json::parse(read("summary.json"));
     ASSERT_TRUE(j.contains("execution"));
@@ -320,7 +320,7 @@ TEST(MissionExecution, NetCdfTruthIsAlignedByDate)
     f.landHour = -1.0;
     f.stillUntil = -1.0;
     writeMfFile(dir.file("forecast.nc"), f);
-    MfFile t = f;  // the same ocean, counted in minutes from the next day
+    MfFile t = f; // the same ocean, counted in minutes from the next day
     t.units = "minutes since 2026-03-02 00:00:00";
     t.hours = mfHours(24.0, kMfRecords - 8);
     t.raw.clear();
@@ -341,7 +341,8 @@ goal: {lon: -52.25, lat: 47.75}
 departure: {time: "2026-03-02T03:00:00Z"}
 vehicle: {speed: 0.5}
 execution:
-  truth: )" + truth + R"(
+  truth: )" + truth +
+               R"(
   surfacing_interval: 1 h
   strategies: [current_sensitive, greedy]
 )";
@@ -355,8 +356,8 @@ execution:
     {
         const FlownTrack &x = flown(*a.execution, 0, s), &y = flown(*b.execution, 0, s);
         EXPECT_TRUE(x.reached);
-        EXPECT_NEAR(x.finalDistance, y.finalDistance, 1e-3);  // metres
-        EXPECT_NEAR(x.arrivalTime, y.arrivalTime, 1e-3);      // seconds
+        EXPECT_NEAR(x.finalDistance, y.finalDistance, 1e-3); // metres
+        EXPECT_NEAR(x.arrivalTime, y.arrivalTime, 1e-3);     // seconds
     }
     // the truth is on the same dates: at the departure it is the forecast's current there
     const double t0 = a.plan.departure;
@@ -415,7 +416,7 @@ void writeMember(const std::string &path, bool adverse)
     w.put(vu, u);
     w.put(vv, v);
 }
-}  // namespace
+} // namespace
 
 // Two members that differ only in one region: the calm member's plan runs straight through the region where the
 // other has a strong adverse current. The robust plan (worst case over the members) is never worse than any
@@ -430,7 +431,8 @@ TEST(MissionEnsemble, RobustPlanOnTwoMembersThatDifferInOneRegion)
                "}\n    - {type: netcdf, file: " + dir.file("adverse.nc") +
                "}\nstart: {lon: -52.95, lat: 47.5}\ngoal: {lon: -52.05, lat: 47.5}\n"
                "departure: {time: \"2026-03-01T01:00:00Z\"}\nvehicle: {speed: 0.4}\n"
-               "planner: {objective: " + objective + "}\n";
+               "planner: {objective: " +
+               objective + "}\n";
     };
     const MissionSpec spec = parseMission(mission("worst"), "m.yaml");
     ASSERT_EQ(spec.current.members.size(), 2u);
@@ -446,7 +448,7 @@ TEST(MissionEnsemble, RobustPlanOnTwoMembersThatDifferInOneRegion)
     ASSERT_TRUE(p.solved) << p.reason;
     ASSERT_TRUE(p.ensemble.has_value());
     const EnsemblePlan &e = *p.ensemble;
-    ASSERT_EQ(e.candidates.size(), 3u);  // mean, member 0, member 1
+    ASSERT_EQ(e.candidates.size(), 3u); // mean, member 0, member 1
     EXPECT_EQ(e.memberTravelTimes.size(), 2u);
     const double robust = *std::max_element(e.memberTravelTimes.begin(), e.memberTravelTimes.end());
     EXPECT_DOUBLE_EQ(e.objectiveValue, robust);
@@ -561,8 +563,8 @@ execution:
         // until its window opens at 15; then 4.9 / 0.8 to the goal's radius (x = 11.8) for the strategies that head
         // for the station at full speed; those that keep to the plan's clock (its waypoints on the way) no later
         // than the plan
-        const bool fullSpeed = s == ControlStrategy::Greedy || s == ControlStrategy::Replan ||
-                               s == ControlStrategy::ReplanObserved;
+        const bool fullSpeed =
+            s == ControlStrategy::Greedy || s == ControlStrategy::Replan || s == ControlStrategy::ReplanObserved;
         if (fullSpeed)
             EXPECT_NEAR(f.arrivalTime, 15.0 + (12.0 - 6.9 - 0.2) / 0.8, 1e-3) << controlStrategyName(s);
         else
@@ -587,9 +589,9 @@ TEST(MissionExecutionLegs, TruthEqualToTheForecastFliesTheMissionOnTheJet)
     {
         spec.waypoints[i].name = std::string(1, static_cast<char>('A' + i));
         spec.waypoints[i].position.xy = via[i];
-        spec.waypoints[i].radius = 0.005;  // the stations reached where they were planned: the plan's own clock
+        spec.waypoints[i].radius = 0.005; // the stations reached where they were planned: the plan's own clock
     }
-    spec.planner.globalCheck = false;  // the lattice's plan is the one flown
+    spec.planner.globalCheck = false; // the lattice's plan is the one flown
     spec.execution.enabled = true;
     spec.execution.surfacingInterval = 1.0 / 24.0;
     spec.execution.strategies = {"current_sensitive", "replan"};
@@ -612,8 +614,7 @@ TEST(MissionExecutionLegs, TruthEqualToTheForecastFliesTheMissionOnTheJet)
         EXPECT_EQ(run.legs.size(), 4u);
         // each leg of the pair's plan ends on its station
         for (std::size_t k = 0; k < 3; ++k)
-            EXPECT_LT(std::hypot(run.plan[run.legs[k].end].x - via[k].x, run.plan[run.legs[k].end].y - via[k].y),
-                      1e-6);
+            EXPECT_LT(std::hypot(run.plan[run.legs[k].end].x - via[k].x, run.plan[run.legs[k].end].y - via[k].y), 1e-6);
         const FlownTrack &g = flown(e, i, ControlStrategy::CurrentSensitive);
         EXPECT_TRUE(g.reached) << "pair " << i;
         EXPECT_LT(std::abs(g.arrivalTime - g.plannedArrival), 0.02 * (g.plannedArrival - run.departure)) << i;

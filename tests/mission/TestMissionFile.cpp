@@ -38,7 +38,7 @@ std::string missionFileErrorOf(const std::string &text)
 }
 
 #define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << "message: " << (msg)
-}  // namespace
+} // namespace
 
 TEST(Time, IsoDatesRoundTripWithOffsets)
 {
@@ -58,7 +58,7 @@ TEST(MissionFile, ExamplesLoad)
     EXPECT_EQ(g.current.type, "meandering_jet");
     EXPECT_DOUBLE_EQ(g.current.parameters.at("omega"), 0.4);
     EXPECT_TRUE(g.departure.window);
-    EXPECT_DOUBLE_EQ(g.departure.begin, 5.0);  // an ISO date, 5 days after the epoch
+    EXPECT_DOUBLE_EQ(g.departure.begin, 5.0); // an ISO date, 5 days after the epoch
     EXPECT_DOUBLE_EQ(g.departure.end, 21.0);
     EXPECT_DOUBLE_EQ(g.departure.spacing, 1.0);
     EXPECT_DOUBLE_EQ(g.lengthUnitMetres, 50000.0);
@@ -79,7 +79,7 @@ TEST(MissionFile, ExamplesLoad)
     EXPECT_DOUBLE_EQ(i.forbidden.ice[0].vx, 0.05);
     EXPECT_DOUBLE_EQ(i.forbidden.ice[0].maxSubmergedTime, 0.5);
     EXPECT_TRUE(i.dive.enabled);
-    EXPECT_EQ(makeDiveProfiles(i.dive.params).size(), 5u);  // (5,105) (5,152.5) (5,200) (30,152.5) (30,200)
+    EXPECT_EQ(makeDiveProfiles(i.dive.params).size(), 5u); // (5,105) (5,152.5) (5,200) (30,152.5) (30,200)
 
     const MissionSpec l = loadMission(kMissionExamples + "labrador_forecast.yaml");
     EXPECT_EQ(l.current.type, "netcdf");
@@ -87,8 +87,8 @@ TEST(MissionFile, ExamplesLoad)
     EXPECT_EQ(l.current.xyInterpolation, Interp2D::Bicubic);
     EXPECT_EQ(l.current.timeInterpolation, Interp1D::Akima);
     ASSERT_TRUE(l.fileCalendar.has_value());
-    EXPECT_DOUBLE_EQ(l.departure.begin, 0.0);          // the file's first time
-    EXPECT_DOUBLE_EQ(l.departure.end, 2 * 86400.0);    // ISO date in the file's calendar
+    EXPECT_DOUBLE_EQ(l.departure.begin, 0.0);       // the file's first time
+    EXPECT_DOUBLE_EQ(l.departure.end, 2 * 86400.0); // ISO date in the file's calendar
     ASSERT_TRUE(l.epoch.has_value());
     EXPECT_DOUBLE_EQ(*l.epoch, parseIsoTime("2026-03-15T00:00:00Z"));
     EXPECT_TRUE(l.start.geographic);
@@ -102,11 +102,11 @@ TEST(MissionFile, MinimalMissionAndDefaults)
 {
     const MissionSpec m = parseMission(kBase, "m.yaml");
     EXPECT_EQ(m.name, "t");
-    EXPECT_EQ(m.planner.name, "ZA*TVE");  // the canonical name of the registry
+    EXPECT_EQ(m.planner.name, "ZA*TVE"); // the canonical name of the registry
     EXPECT_FALSE(m.departure.window);
     EXPECT_FALSE(m.dive.enabled);
-    EXPECT_EQ(m.outputs.files,
-              (std::vector<OutputFormatId>{OutputFormatId::Csv, OutputFormatId::GeoJson, OutputFormatId::Summary}));  // no projection: no goto
+    EXPECT_EQ(m.outputs.files, (std::vector<OutputFormatId>{OutputFormatId::Csv, OutputFormatId::GeoJson,
+                                                            OutputFormatId::Summary})); // no projection: no goto
 }
 
 TEST(MissionFile, UnknownFieldsAreRejectedWithTheirLine)
@@ -117,7 +117,7 @@ TEST(MissionFile, UnknownFieldsAreRejectedWithTheirLine)
     msg = missionFileErrorOf(kBase + "planner:\n  name: zastartve\n  grid_sise: 0.2\n");
     EXPECT_HAS(msg, "m.yaml:10:");
     EXPECT_HAS(msg, "unknown field 'planner.grid_sise'");
-    EXPECT_HAS(msg, "grid_size");  // the allowed names are listed
+    EXPECT_HAS(msg, "grid_size"); // the allowed names are listed
     msg = missionFileErrorOf(kBase + "departure:\n  window: {begin: 0, end: 5, spacin: 1}\n");
     EXPECT_HAS(msg, "m.yaml:9:");
     EXPECT_HAS(msg, "departure.window.spacin");
@@ -173,13 +173,13 @@ TEST(MissionFile, WrongTypesAndValuesNameTheFieldAndLine)
 TEST(MissionFile, MissingRequiredFieldsAndSyntaxErrors)
 {
     std::string msg = missionFileErrorOf("current: {type: uniform}\nregion: {x_min: 0, x_max: 1, y_min: 0, y_max: 1}\n"
-                              "goal: {x: 1, y: 1}\n");
+                                         "goal: {x: 1, y: 1}\n");
     EXPECT_HAS(msg, "field 'start'");
     EXPECT_HAS(msg, "missing");
     msg = missionFileErrorOf("current: {type: uniform}\nstart: {x: 0, y: 0}\ngoal: {x: 1, y: 1}\n");
     EXPECT_HAS(msg, "field 'region'");
     msg = missionFileErrorOf("current: {type: uniform}\nregion: {x_min: 0, x_max: 1, y_min: 0, y_max: 1}\n"
-                  "start: {lon: -50, lat: 40}\ngoal: {x: 1, y: 1}\n");
+                             "start: {lon: -50, lat: 40}\ngoal: {x: 1, y: 1}\n");
     EXPECT_HAS(msg, "m.yaml:3:");
     EXPECT_HAS(msg, "projection");
     msg = missionFileErrorOf(kBase + "goal: {x: 1\n");
@@ -188,7 +188,8 @@ TEST(MissionFile, MissingRequiredFieldsAndSyntaxErrors)
     EXPECT_HAS(msg, "m.yaml:7:");
     EXPECT_HAS(msg, "outside the region");
     EXPECT_THROW(loadMission("/nonexistent/mission.yaml"), Error);
-    msg = missionFileErrorOf("current: {type: netcdf, file: /nonexistent.nc}\nstart: {x: 0, y: 0}\ngoal: {x: 1, y: 1}\n");
+    msg =
+        missionFileErrorOf("current: {type: netcdf, file: /nonexistent.nc}\nstart: {x: 0, y: 0}\ngoal: {x: 1, y: 1}\n");
     EXPECT_HAS(msg, "current.file");
     EXPECT_HAS(msg, "/nonexistent.nc");
 }
@@ -199,19 +200,20 @@ TEST(MissionFile, GeographicRegionsInEitherConvention)
     const std::string geo = "current: {type: uniform}\nprojection: {lon0: 180, lat0: 0}\n"
                             "start: {lon: 175, lat: 0}\ngoal: {lon: 185, lat: 1}\n";
     auto region = [&](const std::string &r) { return parseMission(geo + "region: " + r + "\n", "m.yaml").region; };
-    for (const char *r : {"{lon_min: 170, lon_max: -170, lat_min: -5, lat_max: 5}",  // RFC 7946 bbox across 180
-                          "{lon_min: 170, lon_max: 190, lat_min: -5, lat_max: 5}"})  // unwrapped
+    for (const char *r : {"{lon_min: 170, lon_max: -170, lat_min: -5, lat_max: 5}", // RFC 7946 bbox across 180
+                          "{lon_min: 170, lon_max: 190, lat_min: -5, lat_max: 5}"}) // unwrapped
     {
         const RegionSpec g = region(r);
         EXPECT_TRUE(g.geographic);
         EXPECT_EQ(g.lonLat.lonMin, 170.0) << r;
         EXPECT_EQ(g.lonLat.lonMax, 190.0) << r;
     }
-    const RegionSpec g = region("{lon_min: 350, lon_max: 10, lat_min: -5, lat_max: 5}");  // 0..360 across 0
+    const RegionSpec g = region("{lon_min: 350, lon_max: 10, lat_min: -5, lat_max: 5}"); // 0..360 across 0
     EXPECT_EQ(g.lonLat.lonMin, -10.0);
     EXPECT_EQ(g.lonLat.lonMax, 10.0);
     // bad bounds name the bound and its line
-    std::string msg = missionFileErrorOf(geo + "region:\n  lon_min: 170\n  lon_max: -170\n  lat_min: -5\n  lat_max: 95\n");
+    std::string msg =
+        missionFileErrorOf(geo + "region:\n  lon_min: 170\n  lon_max: -170\n  lat_min: -5\n  lat_max: 95\n");
     EXPECT_HAS(msg, "m.yaml:9:");
     EXPECT_HAS(msg, "field 'region.lat_max'");
     EXPECT_HAS(msg, "95");
@@ -227,8 +229,8 @@ TEST(MissionFile, GeographicRegionsInEitherConvention)
     EXPECT_HAS(msg, "field 'region.lat_max'");
     // start and goal longitudes in either convention, nothing else
     msg = missionFileErrorOf("current: {type: uniform}\nprojection: {lon0: 180, lat0: 0}\n"
-                  "start: {lon: 400, lat: 0}\ngoal: {lon: 185, lat: 1}\n"
-                  "region: {lon_min: 170, lon_max: -170, lat_min: -5, lat_max: 5}\n");
+                             "start: {lon: 400, lat: 0}\ngoal: {lon: 185, lat: 1}\n"
+                             "region: {lon_min: 170, lon_max: -170, lat_min: -5, lat_max: 5}\n");
     EXPECT_HAS(msg, "m.yaml:3:");
     EXPECT_HAS(msg, "field 'start.lon'");
 }
@@ -247,7 +249,8 @@ TEST(MissionFile, GeoJsonForbiddenRegions)
   "geometry": {"type": "Polygon", "coordinates": [[[1, 2], [2, 2], [2, 3]]]}}
 ]})";
     }
-    const std::string mission = kBase + "forbidden:\n  geojson: mission_regions.geojson\n  geojson_coordinates: local\n";
+    const std::string mission =
+        kBase + "forbidden:\n  geojson: mission_regions.geojson\n  geojson_coordinates: local\n";
     const MissionSpec m = parseMission(mission, "m.yaml", dir);
     ASSERT_EQ(m.forbidden.obstacles.size(), 1u);
     EXPECT_EQ(m.forbidden.obstacles[0].polygon.name, "Rock");
@@ -265,7 +268,8 @@ TEST(MissionFile, GeoJsonForbiddenRegions)
         f << "{\"type\": \"FeatureCollection\", \"features\": [\n {\"type\": \"Feature\", \"properties\": "
              "{\"nmae\": \"x\"},\n  \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[[0,0],[1,0],[1,1]]]}}]}\n";
     }
-    const std::string msg = missionFileErrorOf(kBase + "forbidden:\n  geojson: " + dir + "mission_bad.geojson\n  geojson_coordinates: local\n");
+    const std::string msg = missionFileErrorOf(kBase + "forbidden:\n  geojson: " + dir +
+                                               "mission_bad.geojson\n  geojson_coordinates: local\n");
     EXPECT_HAS(msg, "mission_bad.geojson:2:");
     EXPECT_HAS(msg, "features[0].properties.nmae");
 }

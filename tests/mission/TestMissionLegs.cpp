@@ -333,7 +333,7 @@ TEST(MissionLegs, AWindowWithOneEndOnlyIsKept)
         ASSERT_TRUE(r.plan.solved) << begin << ": " << r.plan.reason;
         ASSERT_EQ(r.legs.size(), 2u);
         EXPECT_GE(r.legs[0].arrival(), 20.0 - 1e-9) << begin;
-        EXPECT_LT(r.legs[0].arrival(), 20.0 + 1e-6) << begin;  // the earliest arrival in the window
+        EXPECT_LT(r.legs[0].arrival(), 20.0 + 1e-6) << begin; // the earliest arrival in the window
         EXPECT_NEAR(r.plan.travelTime, 20.0 + 4.0 / 0.6, 1e-6) << begin;
     }
     // an end only: the fastest arrival (6.67) is within it
@@ -342,9 +342,12 @@ TEST(MissionLegs, AWindowWithOneEndOnlyIsKept)
     ASSERT_TRUE(r.plan.solved) << r.plan.reason;
     EXPECT_NEAR(r.legs[0].arrival(), 4.0 / 0.6, 1e-6);
     // and one that closes before the glider can get there is refused naming it
-    expectRefused([&] { runMission(MissionProblem(parseMission(
-                            base + "waypoints:\n  - {name: M, x: 5, y: 0, arrive: {end: 3}}\n"))); },
-                  "waypoints[0].arrive.end", "a window closing at 3");
+    expectRefused(
+        [&] {
+            runMission(
+                MissionProblem(parseMission(base + "waypoints:\n  - {name: M, x: 5, y: 0, arrive: {end: 3}}\n")));
+        },
+        "waypoints[0].arrive.end", "a window closing at 3");
 }
 
 // A via point may not be named as the goal or the start in any case: the Seaglider targets file would hold two GOAL
@@ -352,12 +355,18 @@ TEST(MissionLegs, AWindowWithOneEndOnlyIsKept)
 TEST(MissionLegs, ViaPointNamesAreComparedWithoutCase)
 {
     for (const char *name : {"GOAL", "Goal", "START"})
-        expectRefused([&] { mission(kJetCurrent, kJetRegion, {1, -3}, {8, 3}, {}, "waypoints:\n  - {name: " +
-                                                                                std::string(name) + ", x: 3, y: 2}\n"); },
-                      "names the mission's", name);
-    expectRefused([&] { mission(kJetCurrent, kJetRegion, {1, -3}, {8, 3}, {},
-                                "waypoints:\n  - {name: A1, x: 3, y: 2}\n  - {name: a1, x: 5, y: 0}\n"); },
-                  "names another via point", "A1 and a1");
+        expectRefused(
+            [&] {
+                mission(kJetCurrent, kJetRegion, {1, -3}, {8, 3}, {},
+                        "waypoints:\n  - {name: " + std::string(name) + ", x: 3, y: 2}\n");
+            },
+            "names the mission's", name);
+    expectRefused(
+        [&] {
+            mission(kJetCurrent, kJetRegion, {1, -3}, {8, 3}, {},
+                    "waypoints:\n  - {name: A1, x: 3, y: 2}\n  - {name: a1, x: 5, y: 0}\n");
+        },
+        "names another via point", "A1 and a1");
 }
 
 // The free order with stays and windows (begin only, end only, both) is still the best of all orders planned by the
@@ -381,7 +390,7 @@ TEST(MissionLegsFreeOrder, BestOfAllOrdersWithStaysAndWindows)
     ASSERT_TRUE(free.orderSearch.has_value());
     EXPECT_TRUE(free.orderSearch->stopped.empty()) << free.orderSearch->stopped;
     EXPECT_NEAR(free.plan.travelTime, best, 1e-9 * best);
-    EXPECT_LT(free.orderSearch->ordersEvaluated, orders);  // the windows pruned some orders unplanned
+    EXPECT_LT(free.orderSearch->ordersEvaluated, orders); // the windows pruned some orders unplanned
 }
 
 // A stop request (Ctrl-C in Python, a signal on the command line) ends the free-order search at its next leg: the
@@ -401,7 +410,7 @@ TEST(MissionLegsFreeOrder, AStopRequestEndsTheSearchWithTheBestSoFar)
     clearStop();
     ASSERT_TRUE(stopped.orderSearch.has_value());
     EXPECT_EQ(stopped.orderSearch->stopped, "a stop request");
-    EXPECT_EQ(stopped.orderSearch->ordersEvaluated, 1u);  // the given order only
+    EXPECT_EQ(stopped.orderSearch->ordersEvaluated, 1u); // the given order only
     const MissionPlan whole = planMission(problem, 0.0);
     ASSERT_TRUE(whole.orderSearch.has_value());
     EXPECT_TRUE(whole.orderSearch->stopped.empty());

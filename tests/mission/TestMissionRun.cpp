@@ -85,12 +85,12 @@ std::vector<std::vector<std::string>> parseCsv(const std::string &text)
 }
 
 #define EXPECT_HAS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << (text)
-}  // namespace
+} // namespace
 
 TEST(MissionRun, UniformCurrentClosedFormAndOutputsRoundTrip)
 {
     const MissionSpec spec = uniformMission(false);
-    fs::remove_all(spec.outputs.directory);  // a clean directory: the files checked below are this run's
+    fs::remove_all(spec.outputs.directory); // a clean directory: the files checked below are this run's
     const MissionProblem problem(spec);
     const MissionResult r = runMission(problem);
     ASSERT_TRUE(r.plan.solved) << r.plan.status << ": " << r.plan.reason;
@@ -100,13 +100,13 @@ TEST(MissionRun, UniformCurrentClosedFormAndOutputsRoundTrip)
     EXPECT_NEAR(r.plan.pathLength, 8.0, 1e-12);
     EXPECT_LE(r.plan.path.size(), r.plan.raw.size());
     for (const auto &w : r.plan.path)
-        EXPECT_DOUBLE_EQ(w.y, 0.0);  // the straight line is optimal
+        EXPECT_DOUBLE_EQ(w.y, 0.0); // the straight line is optimal
     // Dive profiles in a depth-uniform current: exactly the 2-D travel time.
     EXPECT_TRUE(r.diveProfiles);
     EXPECT_NEAR(r.diveTravelTime, r.plan.travelTime, 1e-9);
     ASSERT_EQ(r.waypoints.size(), r.plan.path.size());
     for (std::size_t i = 1; i < r.waypoints.size(); ++i)
-        EXPECT_EQ(r.waypoints[i].profile, 0);  // all profiles tie: the first is kept
+        EXPECT_EQ(r.waypoints[i].profile, 0); // all profiles tie: the first is kept
     EXPECT_FALSE(r.waypoints[0].geographic);
 
     // runMission writes nothing; writeOutputs writes summary.json and the formats asked for.
@@ -125,9 +125,9 @@ TEST(MissionRun, UniformCurrentClosedFormAndOutputsRoundTrip)
     {
         EXPECT_NEAR(std::stod(rows[i + 1][1]), r.waypoints[i].position.x, 1e-9);
         EXPECT_NEAR(std::stod(rows[i + 1][2]), r.waypoints[i].position.y, 1e-9);
-        EXPECT_EQ(rows[i + 1][3], "");  // no lon/lat without a projection
+        EXPECT_EQ(rows[i + 1][3], ""); // no lon/lat without a projection
         EXPECT_NEAR(std::stod(rows[i + 1][5]), r.waypoints[i].time, 1e-8);
-        EXPECT_NEAR(std::stod(rows[i + 1][6]), r.waypoints[i].time, 1e-8);  // time unit 1 s
+        EXPECT_NEAR(std::stod(rows[i + 1][6]), r.waypoints[i].time, 1e-8); // time unit 1 s
     }
     EXPECT_EQ(rows[0][6], "time_s");
     EXPECT_EQ(rows[2][9], "0");
@@ -212,17 +212,17 @@ TEST(MissionRun, GeographicOutputsGotoAndIsoTimes)
     // 13.333... hours later.
     EXPECT_EQ(r.waypoints.back().iso, "2026-01-01T13:20:00Z");
     const std::vector<std::string> files = writeOutputs(r, problem);
-    EXPECT_EQ(files.size(), 6u);  // summary.json, waypoints.csv, path.geojson, route.kml, goto_l03.ma, targets
+    EXPECT_EQ(files.size(), 6u); // summary.json, waypoints.csv, path.geojson, route.kml, goto_l03.ma, targets
     const GotoList back = readGotoFile(spec.outputs.directory + "/goto_l03.ma");
     EXPECT_EQ(back.number, 3);
-    ASSERT_EQ(back.waypoints.size(), r.waypoints.size() - 1);  // the start is where the glider already is
+    ASSERT_EQ(back.waypoints.size(), r.waypoints.size() - 1); // the start is where the glider already is
     for (std::size_t i = 0; i < back.waypoints.size(); ++i)
     {
         EXPECT_LE(std::abs(back.waypoints[i].lon - r.waypoints[i + 1].lonLat.lon) * 60, 0.5e-4 + 1e-9);
         EXPECT_LE(std::abs(back.waypoints[i].lat - r.waypoints[i + 1].lonLat.lat) * 60, 0.5e-4 + 1e-9);
     }
     const json g = readJsonFile(spec.outputs.directory + "/path.geojson");
-    EXPECT_FALSE(g.contains("coordinates"));  // RFC 7946 lon/lat
+    EXPECT_FALSE(g.contains("coordinates")); // RFC 7946 lon/lat
     const json &c = g["features"][0]["geometry"]["coordinates"];
     EXPECT_NEAR(c[0][0].get<double>(), r.waypoints[0].lonLat.lon, 1e-8);
     EXPECT_NEAR(c[0][1].get<double>(), r.waypoints[0].lonLat.lat, 1e-8);
@@ -246,7 +246,7 @@ TEST(MissionRun, AcrossTheAntimeridianInEitherConvention)
     // -175), region 170E..170W (written as an RFC 7946 bbox or unwrapped). On the equator through the reference
     // point the planar distance is the geodesic: 10 degrees of the WGS84 equator, 1113.1949 km; the time is
     // D / (V + u). Every longitude out lies in -180..180 and the GeoJSON path is split at the antimeridian.
-    const double D = 10.0 * 6378137.0 * M_PI / 180.0 / 1000.0;  // km (1 planning unit = 1 km)
+    const double D = 10.0 * 6378137.0 * M_PI / 180.0 / 1000.0; // km (1 planning unit = 1 km)
     std::vector<std::string> csvs;
     for (const char *goal : {"-175", "185"})
         for (const char *region : {"{lon_min: 170, lon_max: -170, lat_min: -5, lat_max: 5}",
@@ -284,8 +284,8 @@ TEST(MissionRun, AcrossTheAntimeridianInEitherConvention)
             ASSERT_EQ(geometry["coordinates"].size(), 2u);
             const json &west = geometry["coordinates"][0], &east = geometry["coordinates"][1];
             EXPECT_NEAR(west[0][0].get<double>(), 175.0, 1e-9);
-            EXPECT_EQ(west.back()[0].get<double>(), 180.0);   // to the antimeridian ...
-            EXPECT_EQ(east[0][0].get<double>(), -180.0);      // ... and on from the other side
+            EXPECT_EQ(west.back()[0].get<double>(), 180.0); // to the antimeridian ...
+            EXPECT_EQ(east[0][0].get<double>(), -180.0);    // ... and on from the other side
             EXPECT_NEAR(west.back()[1].get<double>(), 0.0, 1e-6);
             EXPECT_NEAR(east.back()[0].get<double>(), -175.0, 1e-9);
             const json s = readJsonFile(dir + "/summary.json");
@@ -295,7 +295,7 @@ TEST(MissionRun, AcrossTheAntimeridianInEitherConvention)
             EXPECT_HAS(gotoText, "\n-17500.0000 000.0000\n");
         }
     for (const std::string &c : csvs)
-        EXPECT_EQ(c, csvs.front());  // the same route, to the last digit written
+        EXPECT_EQ(c, csvs.front()); // the same route, to the last digit written
 }
 
 TEST(MissionRun, GeoJsonLinesAreSplitAtTheAntimeridian)
@@ -362,7 +362,7 @@ TEST(MissionRun, SpeedSweepClosedForm)
     }
     const std::string table = speedSweepTable(rows);
     EXPECT_NE(table.find("0.25"), std::string::npos);
-    EXPECT_NE(table.find("22.85714286"), std::string::npos);  // 8 / 0.35
+    EXPECT_NE(table.find("22.85714286"), std::string::npos); // 8 / 0.35
 }
 
 TEST(MissionRun, GulfStreamStraightLineImpassableAndJetFasterThanStill)
@@ -379,7 +379,7 @@ TEST(MissionRun, GulfStreamStraightLineImpassableAndJetFasterThanStill)
     // Post-processing never arrives later; smoothing drops waypoints (refinement may insert some again).
     EXPECT_LE(r.plan.smoothedTravelTime, r.plan.rawTravelTime * (1.0 + 1e-12));
     EXPECT_LE(r.plan.travelTime, r.plan.smoothedTravelTime);
-    EXPECT_LT(r.plan.travelTime, r.plan.rawTravelTime);  // refinement (on by default) gains on the jet
+    EXPECT_LT(r.plan.travelTime, r.plan.rawTravelTime); // refinement (on by default) gains on the jet
     EXPECT_LE(r.plan.smoothed.size(), r.plan.raw.size());
     // No path can beat the distance at V + max|c|.
     EXPECT_GE(r.plan.travelTime,
@@ -397,8 +397,7 @@ TEST(MissionRun, IslandsAndIceAreAvoided)
     const auto &p = r.plan.headingRoute() ? r.plan.track : r.plan.path;
     ASSERT_GE(p.size(), 2u);
     for (std::size_t i = 1; i < p.size(); ++i)
-        EXPECT_TRUE(problem.getEnvironment()->legFree(p[i - 1].x, p[i - 1].y, p[i - 1].t, p[i].x, p[i].y, p[i].t))
-            << i;
+        EXPECT_TRUE(problem.getEnvironment()->legFree(p[i - 1].x, p[i - 1].y, p[i - 1].t, p[i].x, p[i].y, p[i].t)) << i;
     // The straight line crosses North Island.
     EXPECT_FALSE(problem.getEnvironment()->legFree(0.6, -3.2, 0.0, 9.2, 2.8, 20.0));
     EXPECT_EQ(problem.getPolygons().size(), 4u);
@@ -412,7 +411,7 @@ TEST(MissionRun, StartOnAnIslandIsAnOutcomeNotAnException)
 {
     MissionSpec spec = loadMission(kExamples + "islands_ice.yaml");
     spec.start.xy.x = 4.5;
-    spec.start.xy.y = -0.8;  // inside North Island
+    spec.start.xy.y = -0.8; // inside North Island
     spec.dive.enabled = false;
     const MissionProblem problem(spec);
     const MissionResult r = runMission(problem);
@@ -480,7 +479,7 @@ TEST(MissionRun, NetCdfForecastMission)
     // The trip fits in the 5-day forecast.
     EXPECT_LE(r.waypoints.back().time, 5 * 86400.0);
     const std::vector<std::string> files = writeOutputs(r, problem);
-    EXPECT_EQ(files.size(), 4u);  // summary.json, waypoints.csv, goto_l13.ma, targets
+    EXPECT_EQ(files.size(), 4u); // summary.json, waypoints.csv, goto_l13.ma, targets
     const GotoList g = readGotoFile(spec.outputs.directory + "/goto_l13.ma");
     EXPECT_NEAR(g.waypoints.back().lon, -51.5, 1e-9);
     EXPECT_NEAR(g.waypoints.back().lat, 48.45, 1e-9);
@@ -492,7 +491,7 @@ TEST(MissionRun, MeanderingJetDepartureAgainstBruteForce)
     // come within 1 % of a brute-force sweep at spacing 0.05 with at most a fifth of its searches. (A coarser lattice
     // than the benchmark's, to keep the test short; bench_departure runs the 0.4 lattice at spacing 0.02.)
     MissionSpec spec = defaultGulfStreamMission();
-    spec.start = {false, {0.5, -3.0}, {}};  // bench_departure's default problem
+    spec.start = {false, {0.5, -3.0}, {}}; // bench_departure's default problem
     spec.goal = {false, {9.5, 3.0}, {}};
     spec.planner.gridSize = 0.8;
     spec.planner.sectors = 2;
@@ -526,14 +525,13 @@ TEST(MissionRun, MeanderingJetDepartureAgainstBruteForce)
 TEST(MissionRun, CarriedIceZone)
 {
     MissionSpec spec = loadMission(kExamples + "islands_ice.yaml");
-    spec.forbidden.ice[0].carried = true;  // drifts with the jet instead of a constant velocity
+    spec.forbidden.ice[0].carried = true; // drifts with the jet instead of a constant velocity
     const MissionProblem problem(spec);
     const MissionResult r = runMission(problem);
     ASSERT_TRUE(r.plan.solved) << r.plan.status << ": " << r.plan.reason;
     const auto &p = r.plan.path;
     for (std::size_t i = 1; i < p.size(); ++i)
-        EXPECT_TRUE(problem.getEnvironment()->legFree(p[i - 1].x, p[i - 1].y, p[i - 1].t, p[i].x, p[i].y, p[i].t))
-            << i;
+        EXPECT_TRUE(problem.getEnvironment()->legFree(p[i - 1].x, p[i - 1].y, p[i - 1].t, p[i].x, p[i].y, p[i].t)) << i;
 }
 
 TEST(MissionRun, ExampleMissionsRunEndToEnd)
@@ -553,8 +551,8 @@ TEST(MissionRun, ExampleMissionsRunEndToEnd)
         EXPECT_EQ(files.size(), 9u) << name;
         for (const auto &f : files)
             EXPECT_TRUE(std::ifstream(f).good()) << f;
-        for (const char *f : {"summary.json", "waypoints.csv", "path.geojson", "route.kml", "map.svg", "map.png",
-                              "map.html"})
+        for (const char *f :
+             {"summary.json", "waypoints.csv", "path.geojson", "route.kml", "map.svg", "map.png", "map.html"})
             EXPECT_TRUE(fs::is_regular_file(spec.outputs.directory + "/" + f)) << name << ": " << f;
         // The goto list is the path's turns after the start (gotoWaypointIndices()), in the order flown.
         const GotoList g = readGotoFile(spec.outputs.directory + "/" + gotoFileName(spec.outputs.gotoNumber));
@@ -605,7 +603,7 @@ TEST(MissionRun, BadMissionNamesFileLineAndFieldAndGoodOneReports)
     EXPECT_EQ(r.speedSweep[0].speed, 0.4);
     EXPECT_EQ(r.speedSweep[1].speed, 0.5);
     EXPECT_TRUE(r.speedSweep[1].solved);
-    EXPECT_EQ(r.speedSweep[1].travelTime, r.plan.travelTime);  // the mission's own speed: the same plan
+    EXPECT_EQ(r.speedSweep[1].travelTime, r.plan.travelTime); // the mission's own speed: the same plan
     EXPECT_GT(r.speedSweep[0].travelTime, r.speedSweep[1].travelTime);
     std::ostringstream out;
     printReport(out, r);

@@ -144,16 +144,16 @@ TEST(Observations, ADayOfDacShowingOneErrorCorrectsThePlanWithTheDefaultSettings
 {
     // the truth is the forecast plus a uniform (0.15, -0.05) m/s; sixteen DAC over a day along 25 km of track all show
     // that error; the goal is 20 km ahead. With the default scales as fixed values (L 20 km, T 1 d) the correction
-    // fades before the goal and the plan's predicted arrival is off by more than 5 % (7.7 %); learned from the DAC (the default) the plan
-    // predicts its arrival within 3 % of the plan made on the truth, and flown in the truth arrives within 1 % of it.
+    // fades before the goal and the plan's predicted arrival is off by more than 5 % (7.7 %); learned from the DAC (the
+    // default) the plan predicts its arrival within 3 % of the plan made on the truth, and flown in the truth arrives
+    // within 1 % of it.
     const std::string forecast = uniformForecast("learn_forecast.nc", 0.05, 0.02);
     const std::string truth = uniformForecast("learn_truth.nc", 0.20, -0.03);
     const std::string dac = dacCsv("learn_dac.csv", 0.20, -0.03, 16);
     const std::string goal = "goal: {lon: -51.82, lat: 48.0}\n";
     const MissionProblem learned(missionOn(forecast, "observations: '" + dac + "'\n", goal));
     const MissionProblem fixed(missionOn(forecast, "observations: {file: '" + dac + "', learn: false}\n", goal));
-    const MissionProblem onTruth(
-        missionOn(truth, "start: {lon: -52.09, lat: 48.0}\ndeparture: {time: 86400}\n", goal));
+    const MissionProblem onTruth(missionOn(truth, "start: {lon: -52.09, lat: 48.0}\ndeparture: {time: 86400}\n", goal));
     ASSERT_TRUE(learned.observations());
     const CorrectionSummary &c = learned.observations()->correction;
     // (the forecast is read over the mission's region: the westernmost DAC lie outside it)
@@ -161,8 +161,7 @@ TEST(Observations, ADayOfDacShowingOneErrorCorrectsThePlanWithTheDefaultSettings
     EXPECT_EQ(c.learnedFrom, c.used);
     EXPECT_EQ(c.lengthSource, "estimated from " + std::to_string(c.used) + " DAC");
     ASSERT_TRUE(c.mean.active());
-    const MissionResult best = runMission(onTruth), withLearning = runMission(learned),
-                        withPriors = runMission(fixed);
+    const MissionResult best = runMission(onTruth), withLearning = runMission(learned), withPriors = runMission(fixed);
     ASSERT_TRUE(best.plan.solved && withLearning.plan.solved && withPriors.plan.solved);
     EXPECT_LT(std::abs(withLearning.plan.travelTime / best.plan.travelTime - 1.0), 0.03)
         << withLearning.plan.travelTime << " against " << best.plan.travelTime;

@@ -28,10 +28,10 @@ namespace
 struct Instruction
 {
     LonLat to;
-    std::string name;                                     ///< the target's name (targets file), empty in a goto list
+    std::string name; ///< the target's name (targets file), empty in a goto list
     double heading{std::numeric_limits<double>::quiet_NaN()}; ///< degrees: held instead of steering to the point
-    double hours{0.0};                                    ///< for this long
-    std::string leaveIso;                                 ///< a stay here: leave at this date
+    double hours{0.0};                                        ///< for this long
+    std::string leaveIso;                                     ///< a stay here: leave at this date
 };
 
 /// The heading and the stay a note says ("to here: hold heading 348.3 deg for 0.32 h; then stay at A: hold within
@@ -138,10 +138,10 @@ State flyHeading(const CurrentField &f, State s, double bearing, double duration
     for (int i = 0; i < n; ++i)
     {
         const Point2 k1 = headingRate(f, s.p, s.t, bearing, speed, depth);
-        const Point2 k2 = headingRate(f, {s.p.x + 0.5 * h * k1.x, s.p.y + 0.5 * h * k1.y}, s.t + 0.5 * h, bearing, speed,
-                                      depth);
-        const Point2 k3 = headingRate(f, {s.p.x + 0.5 * h * k2.x, s.p.y + 0.5 * h * k2.y}, s.t + 0.5 * h, bearing, speed,
-                                      depth);
+        const Point2 k2 =
+            headingRate(f, {s.p.x + 0.5 * h * k1.x, s.p.y + 0.5 * h * k1.y}, s.t + 0.5 * h, bearing, speed, depth);
+        const Point2 k3 =
+            headingRate(f, {s.p.x + 0.5 * h * k2.x, s.p.y + 0.5 * h * k2.y}, s.t + 0.5 * h, bearing, speed, depth);
         const Point2 k4 = headingRate(f, {s.p.x + h * k3.x, s.p.y + h * k3.y}, s.t + h, bearing, speed, depth);
         s.p.x += h / 6.0 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x);
         s.p.y += h / 6.0 * (k1.y + 2 * k2.y + 2 * k3.y + k4.y);
@@ -245,7 +245,7 @@ void flyAndCheck(const MissionProblem &problem, const MissionResult &r, const st
         {
             const double leave = m.timeOf(in.leaveIso);
             EXPECT_GE(leave, s.t - std::max(120.0 / m.timeUnitSeconds, 1e-3 * std::abs(s.t))) << what;
-            s.t = std::max(s.t, leave);  // held in place (the stay is where the current is slower than the glider)
+            s.t = std::max(s.t, leave); // held in place (the stay is where the current is slower than the glider)
             ++stays;
         }
     }
@@ -267,8 +267,7 @@ void checkPilotFiles(const MissionProblem &problem, const MissionResult &r)
 {
     ASSERT_TRUE(r.plan.solved) << r.plan.reason;
     flyAndCheck(problem, r, gotoInstructions(formatGotoList(gotoList(r, &problem))), "goto list", false);
-    flyAndCheck(problem, r,
-                targetInstructions(formatSeagliderTargets(seagliderTargets(r, &problem), r.spec.name)),
+    flyAndCheck(problem, r, targetInstructions(formatSeagliderTargets(seagliderTargets(r, &problem), r.spec.name)),
                 "targets file", true);
 }
 } // namespace

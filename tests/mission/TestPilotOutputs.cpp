@@ -55,12 +55,12 @@ void nc(int status)
 /// fill value -999, written only when @p fill), optionally a mask variable (1 water, 0 land) from @p mask.
 struct Grid
 {
-    std::vector<double> x, y, t;  ///< t empty: no time dimension
-    std::string xyUnits;          ///< empty: geographic (degrees_east / degrees_north)
+    std::vector<double> x, y, t; ///< t empty: no time dimension
+    std::string xyUnits;         ///< empty: geographic (degrees_east / degrees_north)
     std::string timeUnits{"days since 0000-01-01 00:00:00"}, calendar{"standard"};
     bool fill{false};
     std::function<std::pair<double, double>(std::size_t k, std::size_t j, std::size_t i)> uv;
-    std::function<int(std::size_t j, std::size_t i)> mask;  ///< empty: no mask variable
+    std::function<int(std::size_t j, std::size_t i)> mask; ///< empty: no mask variable
 };
 
 void writeGrid(const fs::path &path, const Grid &g)
@@ -196,20 +196,19 @@ std::string pilotErrorOf(const std::function<void()> &f)
 }
 
 const fs::path kLabrador = fs::path(OMPL_GLIDER_SOURCE_DIR) / "examples" / "labrador_forecast.nc";
-}  // namespace
+} // namespace
 
 TEST(PilotCalendar, FormatCalendarTimeWritesTheFilesOwnDates)
 {
-    for (Calendar c : {Calendar::Standard, Calendar::ProlepticGregorian, Calendar::Julian, Calendar::NoLeap,
-                       Calendar::Day360})
+    for (Calendar c :
+         {Calendar::Standard, Calendar::ProlepticGregorian, Calendar::Julian, Calendar::NoLeap, Calendar::Day360})
         for (const char *date : {"0000-01-20T00:00:00Z", "0000-03-01T00:00:00Z", "0000-06-15T12:30:00Z"})
             EXPECT_EQ(formatCalendarTime(secondsSinceCalendarEpoch(parseDateTime(date), c), c), date)
                 << calendarName(c);
-    EXPECT_EQ(formatCalendarTime(secondsSinceCalendarEpoch(parseDateTime("0000-02-30"), Calendar::Day360),
-                                 Calendar::Day360),
-              "0000-02-30T00:00:00Z");
-    EXPECT_THROW(formatCalendarTime(secondsSinceCalendarEpoch(parseDateTime("9999-12-31"), Calendar::NoLeap) +
-                                        86400.0,
+    EXPECT_EQ(
+        formatCalendarTime(secondsSinceCalendarEpoch(parseDateTime("0000-02-30"), Calendar::Day360), Calendar::Day360),
+        "0000-02-30T00:00:00Z");
+    EXPECT_THROW(formatCalendarTime(secondsSinceCalendarEpoch(parseDateTime("9999-12-31"), Calendar::NoLeap) + 86400.0,
                                     Calendar::NoLeap),
                  Error);
 }
@@ -233,7 +232,8 @@ TEST(PilotCalendar, ClimatologyDatesRoundTripInEveryCalendar)
             EXPECT_EQ(r.departureIso, date);
             EXPECT_HAS(reportOf(r), "(" + date + ")");
             writeOutputs(r, problem);
-            const nlohmann::json s = nlohmann::json::parse(readPilotText(fs::path(m.outputs.directory) / "summary.json"));
+            const nlohmann::json s =
+                nlohmann::json::parse(readPilotText(fs::path(m.outputs.directory) / "summary.json"));
             EXPECT_EQ(s["departure"]["iso"], date);
             EXPECT_HAS(readPilotText(fs::path(m.outputs.directory) / "waypoints.csv"), "," + date + ",");
             EXPECT_HAS(readPilotText(fs::path(m.outputs.directory) / "route.kml"), "departure " + date);
@@ -247,13 +247,16 @@ TEST(PilotCalendar, ADateOutsideAClimatologySaysItIsOne)
 {
     const fs::path dir = scratch("outside");
     const fs::path file = climatology(dir, "noleap");
-    const std::string e =
-        pilotErrorOf([&] { forecastMission(forecastOf(file, {-59.8, 30.2}, {-59.6, 30.4}, "2024-01-20T00:00:00Z")); });
+    const std::string e = pilotErrorOf([&] {
+        forecastMission(forecastOf(file, {-59.8, 30.2}, {-59.6, 30.4}, "2024-01-20T00:00:00Z"));
+    });
     EXPECT_HAS(e, "is outside the forecast");
     EXPECT_HAS(e, "the file is a climatology (its dates are in year 0000, noleap calendar)");
     EXPECT_HAS(e, "0000-01-01T00:00:00Z");
     // a day the calendar does not have is refused, naming the calendar
-    EXPECT_HAS(pilotErrorOf([&] { forecastMission(forecastOf(file, {-59.8, 30.2}, {-59.6, 30.4}, "0000-02-29")); }),
+    EXPECT_HAS(pilotErrorOf([&] {
+                   forecastMission(forecastOf(file, {-59.8, 30.2}, {-59.6, 30.4}, "0000-02-29"));
+               }),
                "does not exist in the noleap calendar");
     // the 360_day calendar has a 30 February
     const fs::path d360 = climatology(dir, "360_day");
@@ -327,7 +330,7 @@ outputs: {files: [path, geojson, isochrones, summary]}
             else if (wkbFlatten(g->getGeometryType()) == wkbLineString)
                 for (const OGRPoint &p : *g->toLineString())
                     line.push_back({p.getX(), p.getY()});
-            else if (wkbFlatten(g->getGeometryType()) == wkbMultiLineString)  // split at 180
+            else if (wkbFlatten(g->getGeometryType()) == wkbMultiLineString) // split at 180
                 for (const OGRLineString *part : *g->toMultiLineString())
                     for (const OGRPoint &p : *part)
                         line.push_back({p.getX(), p.getY()});
@@ -417,7 +420,7 @@ double distanceToLine(Point2 p, const std::vector<Point2> &line)
     }
     return best;
 }
-}  // namespace
+} // namespace
 
 TEST(PilotGoto, CollinearWaypointsGiveTheGoalAloneAndTurnsAreKept)
 {
@@ -432,7 +435,7 @@ TEST(PilotGoto, CollinearWaypointsGiveTheGoalAloneAndTurnsAreKept)
     EXPECT_EQ(g.listWhenWptDist, 100.0);
     r.spec.outputs.gotoIncludeStart = true;
     EXPECT_EQ(gotoList(r).waypoints.size(), 2u);
-    r.spec.outputs.gotoTurnDeg = 0.0;  // every waypoint
+    r.spec.outputs.gotoTurnDeg = 0.0; // every waypoint
     EXPECT_EQ(gotoList(r).waypoints.size(), 61u);
     // a zigzag of 5 km legs turning 40 degrees at each corner: every corner is listed
     std::vector<Point2> zig{{0, 0}};
@@ -509,7 +512,7 @@ TEST(PilotNoPath, AForecastTooShortNamesItsEndAndBeyondHold)
     const MissionResult r = runMission(problem);
     ASSERT_FALSE(r.plan.solved);
     EXPECT_HAS(r.plan.reason, "the forecast ends at 2026-03-20T00:00:00Z, 1 d 0.0 h (86400.0 s) after the departure");
-    EXPECT_HAS(r.plan.reason, "(current.horizon: hold_last)");  // a mission made by a program: the field named
+    EXPECT_HAS(r.plan.reason, "(current.horizon: hold_last)"); // a mission made by a program: the field named
     EXPECT_HAS_NOT(r.plan.reason, "a finer grid");
     // typed: the forecast's end bounds the arrival, one day after the departure; the words are the parts'
     EXPECT_EQ(r.plan.noPath.bound, ArrivalBound::ForecastEnd);
@@ -612,12 +615,12 @@ TEST(PilotUnits, ACartesianFileInKmTakesStartAndGoalInKm)
 {
     const fs::path dir = scratch("cartesian");
     Grid g;
-    g.x = axis(0.0, 2.0, 41);  // 0..80 km
+    g.x = axis(0.0, 2.0, 41); // 0..80 km
     g.y = axis(0.0, 2.0, 41);
     g.xyUnits = "km";
     g.uv = [](std::size_t, std::size_t, std::size_t) { return std::make_pair(0.1, 0.0); };
     writeGrid(dir / "km.nc", g);
-    Grid gm = g;  // the same grid in metres
+    Grid gm = g; // the same grid in metres
     gm.x = axis(0.0, 2000.0, 41);
     gm.y = axis(0.0, 2000.0, 41);
     gm.xyUnits = "m";
@@ -629,8 +632,8 @@ TEST(PilotUnits, ACartesianFileInKmTakesStartAndGoalInKm)
     EXPECT_EQ(pk.getGoal().y, 50000.0);
     const MissionResult rk = runMission(pk);
     ASSERT_TRUE(rk.plan.solved) << rk.plan.reason;
-    const MissionResult rm = runMission(MissionProblem(forecastMission(forecastOf(dir / "m.nc", {10000.0, 10000.0},
-                                                                                 {60000.0, 50000.0}))));
+    const MissionResult rm =
+        runMission(MissionProblem(forecastMission(forecastOf(dir / "m.nc", {10000.0, 10000.0}, {60000.0, 50000.0}))));
     ASSERT_TRUE(rm.plan.solved) << rm.plan.reason;
     EXPECT_NEAR(rk.plan.travelTime, rm.plan.travelTime, 1e-6 * rm.plan.travelTime);
     const std::string report = reportOf(rk);
@@ -640,7 +643,9 @@ TEST(PilotUnits, ACartesianFileInKmTakesStartAndGoalInKm)
     EXPECT_HAS(report, "Travel time:        1 d ");
     EXPECT_HAS(report, "Straight line:      1 d ");
     // a point outside the grid is named in the file's units
-    EXPECT_HAS(pilotErrorOf([&] { forecastMission(forecastOf(dir / "km.nc", {10.0, 10.0}, {90.0, 50.0})); }),
+    EXPECT_HAS(pilotErrorOf([&] {
+                   forecastMission(forecastOf(dir / "km.nc", {10.0, 10.0}, {90.0, 50.0}));
+               }),
                "lies outside the grid");
 }
 
@@ -728,7 +733,7 @@ outputs: {files: [path, geojson, summary, map]}
     for (OGRLayer *layer : ds->GetLayers())
         features += static_cast<std::size_t>(layer->GetFeatureCount());
     GDALClose(ds);
-    EXPECT_EQ(features, r.waypoints.size() + 1);  // the waypoints and the route line
+    EXPECT_EQ(features, r.waypoints.size() + 1); // the waypoints and the route line
     const nlohmann::json summary = nlohmann::json::parse(readPilotText(dir / "out" / "summary.json"));
     EXPECT_EQ(summary["mission"].get<std::string>().substr(0, 5), "Gl\xEF\xBF\xBD");
     EXPECT_TRUE(fs::exists(dir / "out" / "map.png"));

@@ -90,7 +90,7 @@ nlohmann::json readJson(const fs::path &p)
     std::ifstream in(p);
     return nlohmann::json::parse(in);
 }
-}  // namespace
+} // namespace
 
 TEST(Pipeline, GulfStreamStagesNeverArriveLaterAndApproachTheOptimum)
 {
@@ -106,7 +106,7 @@ TEST(Pipeline, GulfStreamStagesNeverArriveLaterAndApproachTheOptimum)
     EXPECT_EQ(a.travelTime, a.rawTravelTime);
     EXPECT_EQ(a.postprocessCostFunctionCalls, 0u);
     EXPECT_GT(a.searchCostFunctionCalls, 0u);
-    EXPECT_GT(a.currentModelCalls, a.searchCostFunctionCalls);  // several current calls per leg
+    EXPECT_GT(a.currentModelCalls, a.searchCostFunctionCalls); // several current calls per leg
     EXPECT_TRUE(a.pathChecked);
 
     RunOptions o;
@@ -114,7 +114,7 @@ TEST(Pipeline, GulfStreamStagesNeverArriveLaterAndApproachTheOptimum)
     const MissionResult r = runMission(problem, o);
     const PlannedPath &b = r.plan;
     ASSERT_TRUE(b.solved);
-    EXPECT_EQ(b.rawTravelTime, a.rawTravelTime);  // the same search
+    EXPECT_EQ(b.rawTravelTime, a.rawTravelTime); // the same search
     EXPECT_EQ(b.searchCostFunctionCalls, a.searchCostFunctionCalls);
     EXPECT_LE(b.smoothed.size(), b.raw.size());
     EXPECT_LE(b.smoothedTravelTime, b.rawTravelTime * (1.0 + 1e-12));
@@ -127,18 +127,19 @@ TEST(Pipeline, GulfStreamStagesNeverArriveLaterAndApproachTheOptimum)
     EXPECT_EQ(r.waypoints.back().time, b.path.back().t);
     ASSERT_TRUE(r.optimum && r.optimum->found);
     EXPECT_LE(b.travelTime, 1.01 * r.optimum->travelTime);
-    EXPECT_GE(b.travelTime, 0.999 * r.optimum->travelTime);  // no path beats the optimum (integration tolerance)
+    EXPECT_GE(b.travelTime, 0.999 * r.optimum->travelTime); // no path beats the optimum (integration tolerance)
     // The straight line crosses the jet against the current: impassable.
     EXPECT_FALSE(std::isfinite(b.straightLineTime));
     EXPECT_DOUBLE_EQ(b.straightLineLength, std::hypot(7.0, 6.0));
 
     std::ostringstream report;
     printReport(report, r);
-    EXPECT_HAS(report.str(), "Travel time:        " + [&] {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.4f", b.travelTime);
-        return std::string(buf);
-    }());
+    EXPECT_HAS(
+        report.str(), "Travel time:        " + [&] {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "%.4f", b.travelTime);
+            return std::string(buf);
+        }());
     EXPECT_HAS(report.str(), "Optimal control:");
 }
 
@@ -150,7 +151,7 @@ TEST(Pipeline, LibraryMissionFileAndOmplBenchmarkGiveIdenticalAnswers)
     const MissionResult a = runMission(builtIn), b = runMission(fromFile);
     ASSERT_TRUE(a.plan.solved);
     EXPECT_EQ(a.plan.status, b.plan.status);
-    EXPECT_EQ(a.plan.travelTime, b.plan.travelTime);  // bit-identical
+    EXPECT_EQ(a.plan.travelTime, b.plan.travelTime); // bit-identical
     EXPECT_EQ(a.plan.rawTravelTime, b.plan.rawTravelTime);
     EXPECT_EQ(a.plan.searchCostFunctionCalls, b.plan.searchCostFunctionCalls);
     EXPECT_EQ(a.plan.postprocessCostFunctionCalls, b.plan.postprocessCostFunctionCalls);
@@ -169,7 +170,7 @@ TEST(Pipeline, LibraryMissionFileAndOmplBenchmarkGiveIdenticalAnswers)
     // the same path, timed by the planner's integrator; the pipeline reports its accurate re-flight
     EXPECT_EQ(path.back().t - path.front().t, a.plan.plannerTravelTime);
     EXPECT_TRUE(a.plan.reflown);
-    EXPECT_EQ(a.plan.reflightFallback, ReflightFallback::None);  // the final path flies: no fallback, no note
+    EXPECT_EQ(a.plan.reflightFallback, ReflightFallback::None); // the final path flies: no fallback, no note
     EXPECT_TRUE(a.plan.reflightNote.empty());
     EXPECT_NEAR(a.plan.travelTime, a.plan.plannerTravelTime, 1e-3 * a.plan.travelTime);
     EXPECT_EQ(path.size(), a.plan.path.size());
@@ -185,7 +186,7 @@ TEST(Pipeline, RefinementIsOnByDefaultInMissionFiles)
     const MissionSpec off = parseMission(kGulfStreamYaml + "  refinement: false\n", "gulf.yaml");
     EXPECT_FALSE(off.planner.refinement);
     const MissionResult a = runMission(MissionProblem(on)), b = runMission(MissionProblem(off));
-    EXPECT_LT(a.plan.travelTime, b.plan.travelTime);  // refinement gains on this crossing
+    EXPECT_LT(a.plan.travelTime, b.plan.travelTime); // refinement gains on this crossing
     EXPECT_EQ(b.plan.path.size(), b.plan.smoothed.size());
 }
 
@@ -199,11 +200,11 @@ TEST(Pipeline, DefaultLatticeSpacingScalesWithTheTripOnAnalyticFields)
         m.planner.gridSize = given;
         return MissionProblem(m).getSpec().planner.gridSize;
     };
-    EXPECT_DOUBLE_EQ(gridOf({1, 0}, {2, 0}, 0.0), 0.04);        // a 1-unit trip: 25 steps across, not 2.5
-    EXPECT_DOUBLE_EQ(gridOf({0.5, -3.5}, {9.5, 3.5}, 0.0), 0.4);  // 11.4 units: 0.4 is within the bounds
-    EXPECT_DOUBLE_EQ(gridOf({1, -3}, {8, 2.9}, 0.0), 0.37);     // 9.16 units: at most 1/25 of them
-    EXPECT_DOUBLE_EQ(gridOf({1, -3}, {8, 3}, 0.0), 0.4);        // the built-in trip keeps the paper's lattice
-    EXPECT_DOUBLE_EQ(gridOf({1, 0}, {2, 0}, 0.25), 0.25);       // a size given is kept
+    EXPECT_DOUBLE_EQ(gridOf({1, 0}, {2, 0}, 0.0), 0.04);         // a 1-unit trip: 25 steps across, not 2.5
+    EXPECT_DOUBLE_EQ(gridOf({0.5, -3.5}, {9.5, 3.5}, 0.0), 0.4); // 11.4 units: 0.4 is within the bounds
+    EXPECT_DOUBLE_EQ(gridOf({1, -3}, {8, 2.9}, 0.0), 0.37);      // 9.16 units: at most 1/25 of them
+    EXPECT_DOUBLE_EQ(gridOf({1, -3}, {8, 3}, 0.0), 0.4);         // the built-in trip keeps the paper's lattice
+    EXPECT_DOUBLE_EQ(gridOf({1, 0}, {2, 0}, 0.25), 0.25);        // a size given is kept
     // a mission file without grid_size: the same rule, and the same 0.4 for the built-in trip from a file
     EXPECT_DOUBLE_EQ(MissionProblem(parseMission(kGulfStreamYaml, "gulf.yaml")).getSpec().planner.gridSize, 0.4);
     MissionSpec shortTrip = parseMission(kGulfStreamYaml, "gulf.yaml");
@@ -231,19 +232,19 @@ TEST(Pipeline, PlannerParametersByTheirOmplNames)
 
     // Unknown names, values out of range and pipeline settings given as parameters: errors naming file:line.
     std::string msg = errorOf(kGulfStreamYaml + "  parameters: {delta_phi_max_deg: 20}\n");
-    EXPECT_HAS(msg, "m.yaml:11");  // the line of the parameter
+    EXPECT_HAS(msg, "m.yaml:11"); // the line of the parameter
     EXPECT_HAS(msg, "planner.parameters.delta_phi_max_deg");
-    EXPECT_HAS(msg, "delta_phi_max");  // the list of the planner's parameters
+    EXPECT_HAS(msg, "delta_phi_max"); // the list of the planner's parameters
     msg = errorOf(kGulfStreamYaml + "  parameters: {zermelo_steps: 1e12}\n");
     EXPECT_HAS(msg, "planner.parameters.zermelo_steps");
     EXPECT_HAS(msg, "rejects");
     msg = errorOf(kGulfStreamYaml + "  parameters: {refiner_max_evaluations: 0.5}\n");
     EXPECT_HAS(msg, "refiner_max_evaluations");
-    msg = errorOf(kGulfStreamYaml + "  parameters: {delta_phi_max: 400}\n");  // the planner's own check
+    msg = errorOf(kGulfStreamYaml + "  parameters: {delta_phi_max: 400}\n"); // the planner's own check
     EXPECT_HAS(msg, "m.yaml:11");
     EXPECT_HAS(msg, "planner.parameters.delta_phi_max");
-    EXPECT_HAS(msg, "0.1..180");  // its one range, declared and checked
-    msg = errorOf(kGulfStreamYaml + "  parameters: {heuristic: maybe}\n");  // OMPL would read it as false
+    EXPECT_HAS(msg, "0.1..180");                                           // its one range, declared and checked
+    msg = errorOf(kGulfStreamYaml + "  parameters: {heuristic: maybe}\n"); // OMPL would read it as false
     EXPECT_HAS(msg, "planner.parameters.heuristic");
     EXPECT_HAS(msg, "true or false");
     msg = errorOf(kGulfStreamYaml + "  parameters: {grid_size: 0.2}\n");
@@ -251,7 +252,7 @@ TEST(Pipeline, PlannerParametersByTheirOmplNames)
     msg = errorOf(std::string(kGulfStreamYaml).replace(kGulfStreamYaml.find("zastartve"), 9, "RRTstar") +
                   "  parameters: {certify_tolerance: 0}\n");
     EXPECT_HAS(msg, "has no parameter 'certify_tolerance'");
-    EXPECT_HAS(msg, "range");  // RRT*'s own parameters are listed
+    EXPECT_HAS(msg, "range"); // RRT*'s own parameters are listed
 }
 
 TEST(Pipeline, EveryRegisteredPlannerIsReachableByNameAndAlias)
@@ -271,7 +272,7 @@ TEST(Pipeline, EveryRegisteredPlannerIsReachableByNameAndAlias)
         ASSERT_NE(planner, nullptr) << e.name;
         EXPECT_EQ(planner->getName(), e.name);
         EXPECT_EQ(e.lattice(), std::dynamic_pointer_cast<ZAStarTVE>(planner) != nullptr ||
-                                 std::dynamic_pointer_cast<Wavefront>(planner) != nullptr)
+                                   std::dynamic_pointer_cast<Wavefront>(planner) != nullptr)
             << e.name;
     }
     MissionSpec m = defaultGulfStreamMission();
@@ -292,12 +293,12 @@ TEST(Pipeline, EveryRegisteredPlannerIsReachableByNameAndAlias)
 TEST(Pipeline, NoPathIsAnOutcomeWithItsReason)
 {
     MissionSpec m = defaultGulfStreamMission();
-    m.planner.horizon = 2.0;  // far too short to reach the goal: the lattice is exhausted
+    m.planner.horizon = 2.0; // far too short to reach the goal: the lattice is exhausted
     const MissionResult r = runMission(MissionProblem(m));
     EXPECT_FALSE(r.plan.solved);
     EXPECT_FALSE(std::isfinite(r.plan.travelTime));
-    EXPECT_HAS(r.plan.reason, "no path exists: the reachable front never reaches the goal");  // the level set proves it
-    EXPECT_HAS(r.plan.reason, "within the planning horizon, 2 time units");  // what bounded the search
+    EXPECT_HAS(r.plan.reason, "no path exists: the reachable front never reaches the goal"); // the level set proves it
+    EXPECT_HAS(r.plan.reason, "within the planning horizon, 2 time units");                  // what bounded the search
     EXPECT_TRUE(r.waypoints.empty());
 }
 
@@ -394,7 +395,7 @@ TEST(Output, NoPathRunRemovesTheEarlierRouteAndSaysWhy)
     for (const char *route : {"waypoints.csv", "path.csv", "path.geojson"})
         EXPECT_FALSE(fs::exists(dir / route)) << route;
     EXPECT_TRUE(fs::exists(dir / "map.png"));
-    EXPECT_TRUE(fs::exists(dir / "notes.txt"));  // only files the earlier run listed are removed
+    EXPECT_TRUE(fs::exists(dir / "notes.txt")); // only files the earlier run listed are removed
     const nlohmann::json s = readJson(dir / "summary.json");
     EXPECT_EQ(s["solved"], false);
     EXPECT_NE(s["reason"].get<std::string>().find("no path exists: the reachable front"), std::string::npos);
@@ -413,7 +414,7 @@ TEST(Output, AFailingWriteLeavesTheDirectoryAsItWas)
     const auto parentBefore = snapshot(dir.parent_path()).size();
 
     MissionResult other = r;
-    other.spec.name = "changed";  // every file would differ
+    other.spec.name = "changed"; // every file would differ
     std::vector<OutputFile> files = outputFiles(other, problem);
     ASSERT_GE(files.size(), 3u);
     // The map fails half-way (as a full disk or a cairo error would), after other files were written.
@@ -423,7 +424,7 @@ TEST(Output, AFailingWriteLeavesTheDirectoryAsItWas)
                      }});
     EXPECT_THROW(writeOutputFiles(dir.string(), files), Error);
     EXPECT_EQ(snapshot(dir), before);
-    EXPECT_EQ(snapshot(dir.parent_path()).size(), parentBefore);  // no temporary directory left behind
+    EXPECT_EQ(snapshot(dir.parent_path()).size(), parentBefore); // no temporary directory left behind
 
     // A directory that does not exist yet is not created by a failed write.
     const fs::path fresh = freshDirectory("atomic_new");
@@ -441,7 +442,8 @@ TEST(Output, PrefixAddsCopiesAndSummaryIsAlwaysThere)
     std::set<std::string> names;
     for (const auto &[name, text] : files)
         names.insert(name);
-    EXPECT_EQ(names, (std::set<std::string>{"summary.json", "waypoints.csv", "trip1_summary.json", "trip1_waypoints.csv"}));
+    EXPECT_EQ(names,
+              (std::set<std::string>{"summary.json", "waypoints.csv", "trip1_summary.json", "trip1_waypoints.csv"}));
     EXPECT_EQ(files.at("waypoints.csv"), files.at("trip1_waypoints.csv"));
     // A prefix that would leave the directory is refused where it is read.
     for (const char *bad : {"../../x", "a/b", ".."})
@@ -499,7 +501,7 @@ std::string readText(const fs::path &p)
     s << in.rdbuf();
     return s.str();
 }
-}  // namespace
+} // namespace
 
 TEST(Output, HeadingRouteFilesCarryTheHeadingsAndTheSwitch)
 {
@@ -534,7 +536,7 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
     const std::size_t n = r.waypoints.size();
     ASSERT_EQ(n, p.path.size());
     ASSERT_GE(n, 2u);
-    ASSERT_LE(n - 1, seg.size());  // a segment per leg (the arrival may come before the last segment is begun)
+    ASSERT_LE(n - 1, seg.size()); // a segment per leg (the arrival may come before the last segment is begun)
     // The waypoints: leg i is flown with segment i for as long as it lasts; the last is cut at the arrival.
     for (std::size_t i = 0; i + 1 < n; ++i)
     {
@@ -554,9 +556,9 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
     std::set<std::string> written;
     for (const auto &f : files)
         written.insert(fs::path(f).filename().string());
-    EXPECT_EQ(written, (std::set<std::string>{"summary.json", "waypoints.csv", "path.geojson", "route.kml",
-                                              "goto_l05.ma", "targets", "stints.csv", "map.svg", "map.png",
-                                              "map.html"}));
+    EXPECT_EQ(written,
+              (std::set<std::string>{"summary.json", "waypoints.csv", "path.geojson", "route.kml", "goto_l05.ma",
+                                     "targets", "stints.csv", "map.svg", "map.png", "map.html"}));
 
     // waypoints.csv: the heading held from each waypoint and its duration, empty at the last one.
     const auto w = csvRows(readText(dir / "waypoints.csv"));
@@ -574,7 +576,7 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
 
     // stints.csv: one row per segment flown; the drift is the displacement less V dt (sin b, cos b).
     const auto st = csvRows(readText(dir / "stints.csv"));
-    ASSERT_EQ(st.size(), n);  // header + n - 1 segments
+    ASSERT_EQ(st.size(), n); // header + n - 1 segments
     for (std::size_t i = 0; i + 1 < n; ++i)
     {
         const auto &row = st[i + 1];
@@ -611,14 +613,14 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
         EXPECT_EQ(h["start"]["iso"], r.waypoints[i].iso);
         total += h["duration"].get<double>();
     }
-    EXPECT_NEAR(total, s["travel_time"].get<double>(), 1e-9);  // no holds: the segments make the whole trip
+    EXPECT_NEAR(total, s["travel_time"].get<double>(), 1e-9); // no holds: the segments make the whole trip
 
     // path.geojson: the line is the flown track (lon/lat) through every segment end; the points carry the headings.
     const nlohmann::json g = readJson(dir / "path.geojson");
     const nlohmann::json &line = g["features"][0]["geometry"];
     ASSERT_EQ(line["type"], "LineString");
     ASSERT_EQ(line["coordinates"].size(), p.track.size());
-    ASSERT_GT(p.track.size(), n);  // curved: more points than segment ends
+    ASSERT_GT(p.track.size(), n); // curved: more points than segment ends
     for (std::size_t k = 0; k < p.track.size(); k += p.track.size() / 7)
     {
         const LonLat q = problem.toGeographic({p.track[k].x, p.track[k].y});

@@ -17,7 +17,7 @@ TEST(PlanStatus, OmplStatusesKeepOmplsTextsAndTheTextsNameOneStatusEach)
         const auto omplStatus = static_cast<ompl::base::PlannerStatus::StatusType>(i);
         const PlanStatus s = planStatusOfOmpl(omplStatus);
         EXPECT_EQ(static_cast<int>(s), i);
-        if (s != PlanStatus::Abort)  // OMPL 1.5 writes ABORT "Unknown status", like UNKNOWN: ours is "Abort"
+        if (s != PlanStatus::Abort) // OMPL 1.5 writes ABORT "Unknown status", like UNKNOWN: ours is "Abort"
         {
             EXPECT_EQ(statusText(s), ompl::base::PlannerStatus(omplStatus).asString());
         }

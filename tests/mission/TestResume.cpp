@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 namespace
 {
 const std::string kSurvey = std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/survey_labrador.yaml";
-const double kT0 = 1773554400.0;  // 2026-03-15T06:00:00Z, the survey's departure
+const double kT0 = 1773554400.0; // 2026-03-15T06:00:00Z, the survey's departure
 
 /// A CSV deployment of fixes (hours after the survey's departure, lon, lat), each with a small DAC.
 std::string deployment(const std::string &name, const std::vector<std::array<double, 3>> &fixes)
@@ -94,8 +94,11 @@ TEST(Resume, FromTheDeploymentsLastFixKeepingEveryStationNotYetReached)
 TEST(Resume, AReachedStationIsDroppedAndItsStayFinishedFirst)
 {
     // toward A (-52.2, 48.0; radius 500 m, a 6 h stay), 200 m from it at hour 20, held there until hour 22
-    const std::string obs = deployment("at_a", {{4, -52.6, 47.93}, {12, -52.4, 47.97}, {20, -52.2018, 48.0008},
-                                                {21, -52.2010, 47.9995}, {22, -52.2005, 48.0004}});
+    const std::string obs = deployment("at_a", {{4, -52.6, 47.93},
+                                                {12, -52.4, 47.97},
+                                                {20, -52.2018, 48.0008},
+                                                {21, -52.2010, 47.9995},
+                                                {22, -52.2005, 48.0004}});
     const MissionProblem p(survey(obs));
     const MissionSpec &m = p.getSpec();
     ASSERT_TRUE(m.observations->resumed);
@@ -139,8 +142,8 @@ TEST(Resume, StationsCountOnlyInTheOrderListed)
 TEST(Resume, WhatCannotBeResumedIsRefusedPlainly)
 {
     // every station and the goal reached: nothing is left to plan
-    const std::string done = deployment("done", {{10, -52.2, 48.0}, {20, -51.9, 48.2}, {40, -51.65, 48.3},
-                                                 {50, -51.5, 48.45}});
+    const std::string done =
+        deployment("done", {{10, -52.2, 48.0}, {20, -51.9, 48.2}, {40, -51.65, 48.3}, {50, -51.5, 48.45}});
     try
     {
         const MissionProblem p(survey(done));
@@ -152,8 +155,8 @@ TEST(Resume, WhatCannotBeResumedIsRefusedPlainly)
         EXPECT_NE(std::string(e.what()).find("--observations"), std::string::npos) << e.what();
     }
     // every station reached, the goal not yet: a plan of one leg from the last fix to the goal, the three named
-    const std::string stations = deployment("stations", {{10, -52.2, 48.0}, {20, -51.9, 48.2}, {40, -51.65, 48.3},
-                                                         {42, -51.62, 48.33}});
+    const std::string stations =
+        deployment("stations", {{10, -52.2, 48.0}, {20, -51.9, 48.2}, {40, -51.65, 48.3}, {42, -51.62, 48.33}});
     {
         const MissionProblem p(survey(stations));
         ASSERT_EQ(p.getSpec().observations->resumed->dropped.size(), 3u);

@@ -26,7 +26,8 @@ std::string islandMission(const std::string &planner, const std::string &safety)
            "region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\nstart: {x: 1, y: 0.3}\ngoal: {x: 9, y: 0.3}\n"
            "vehicle: {speed: 0.5}\n"
            "forbidden:\n  obstacles:\n    - {name: Rock, kind: island, points: [[4, -1], [6, -1], [6, 1], [4, 1]]}\n"
-           "planner: {name: \"" + planner + "\", grid_size: 0.25, time_limit: 20}\n" + safety;
+           "planner: {name: \"" +
+           planner + "\", grid_size: 0.25, time_limit: 20}\n" + safety;
 }
 
 /// Smallest distance of the route (track of a heading route, else the legs) to the island's sides, sampled densely:
@@ -44,7 +45,7 @@ double sampledClearance(const PlannedPath &p)
         }
     return best;
 }
-}  // namespace
+} // namespace
 
 TEST(Safety, EveryPlannerFamilyKeepsTheKeepOffDistance)
 {
@@ -72,11 +73,11 @@ TEST(Safety, KeepOffLengthsAndTheirUnits)
     // a dimensionless mission takes planning units, or metres with units.length_m
     const MissionSpec a = parseMission(islandMission("ZA*TVE", "safety: {keep_off: 0.4}\n"), "a.yaml");
     EXPECT_DOUBLE_EQ(a.safety.keepOff, 0.4);
-    const MissionSpec b =
-        parseMission("units: {length_m: 20000, time_s: 43200}\n" + islandMission("ZA*TVE", "safety: {keep_off: 2km}\n"),
-                     "b.yaml");
+    const MissionSpec b = parseMission(
+        "units: {length_m: 20000, time_s: 43200}\n" + islandMission("ZA*TVE", "safety: {keep_off: 2km}\n"), "b.yaml");
     EXPECT_DOUBLE_EQ(b.safety.keepOff, 0.1);
-    for (const std::string bad : {"safety: {keep_off: 2km}\n", "safety: {keep_off: -1}\n", "safety: {keep_off: 2 parsecs}\n"})
+    for (const std::string bad :
+         {"safety: {keep_off: 2km}\n", "safety: {keep_off: -1}\n", "safety: {keep_off: 2 parsecs}\n"})
     {
         try
         {
@@ -146,7 +147,7 @@ double bankDepth(double lon, double lat)
 void writeGebco(const std::string &path, bool transposed = false)
 {
     NcWriter w(path, NC_CLOBBER);
-    const std::size_t nx = 101, ny = 81;  // lon -80..-75, lat 24..28
+    const std::size_t nx = 101, ny = 81; // lon -80..-75, lat 24..28
     const int dy = w.dim("lat", ny), dx = w.dim("lon", nx);
     const int vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
     w.text(vy, "units", "degrees_north");
@@ -167,7 +168,7 @@ void writeGebco(const std::string &path, bool transposed = false)
     w.put(vx, lon);
     w.put(ve, e);
 }
-}  // namespace
+} // namespace
 
 TEST(Safety, KeepOffFromAForecastsLandCells)
 {
@@ -177,12 +178,12 @@ TEST(Safety, KeepOffFromAForecastsLandCells)
     ForecastInput in;
     in.current.file = file;
     in.start = {-79.4, 25.5};
-    in.goal = {-76.6, 25.5};  // the land block lies between them
+    in.goal = {-76.6, 25.5}; // the land block lies between them
     in.speed = 0.5;
     MissionSpec spec = forecastMission(in);
     const MissionResult open = runMission(MissionProblem(spec));
     ASSERT_TRUE(open.plan.solved) << open.plan.reason;
-    EXPECT_LT(open.closestLand.distance, 10000.0);  // round the block's corner closely
+    EXPECT_LT(open.closestLand.distance, 10000.0); // round the block's corner closely
     spec.safety.keepOff = 15000.0;
     const MissionProblem problem(spec);
     const MissionResult r = runMission(problem);
@@ -205,52 +206,53 @@ TEST(Safety, KeepOffFromAForecastsLandCells)
 
 TEST(Safety, DepthLimitFromAGebcoLikeFileInEitherDimensionOrder)
 {
-  for (bool transposed : {false, true})
-  {
-    SCOPED_TRACE(transposed ? "elevation(lon, lat)" : "elevation(lat, lon)");
-    TempDir dir;
-    const std::string file = dir.file("coast.nc"), gebco = dir.file("gebco.nc");
-    writeForecast(file);
-    writeGebco(gebco, transposed);
-    ForecastInput in;
-    in.current.file = file;
-    in.start = {-79.4, 26.4};
-    in.goal = {-76.6, 26.4};  // the bank lies between them, north of the land
-    in.speed = 0.5;
-    MissionSpec spec = forecastMission(in);
-    spec.safety.bathymetry = gebco;
-    spec.safety.minDepth = 10.0;  // the bank is deep enough
-    const MissionProblem shallowOk(spec);
-    const MissionResult a = runMission(shallowOk);
-    ASSERT_TRUE(a.plan.solved) << a.plan.reason;
-    double minDepth = HUGE_VAL;
-    for (std::size_t k = 0; k + 1 < a.plan.path.size(); ++k)
-        for (int q = 0; q <= 200; ++q)
-        {
-            const TimedPoint &p = a.plan.path[k], &b = a.plan.path[k + 1];
-            const double s = q / 200.0;
-            const LonLat g = shallowOk.toGeographic({p.x + s * (b.x - p.x), p.y + s * (b.y - p.y)});
-            minDepth = std::min(minDepth, bankDepth(g.lon, g.lat));
-        }
-    EXPECT_EQ(minDepth, 20.0) << "the direct route crosses the bank";
-    spec.safety.minDepth = 50.0;
-    const MissionProblem problem(spec);
-    EXPECT_NE(problem.safetyNote().find("height_above_mean_sea_level"), std::string::npos) << problem.safetyNote();
-    const MissionResult r = runMission(problem);
-    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
-    for (std::size_t k = 0; k + 1 < r.plan.path.size(); ++k)
-        for (int q = 0; q <= 200; ++q)
-        {
-            const TimedPoint &p = r.plan.path[k], &b = r.plan.path[k + 1];
-            const double s = q / 200.0;
-            const LonLat g = problem.toGeographic({p.x + s * (b.x - p.x), p.y + s * (b.y - p.y)});
-            // a margin of 0.002 degree (cells reach 0.05 degree beyond the bank's nodes) for the projected cell edges against the file's meridians and parallels
-            const bool onBank = g.lon >= -78.5 - 0.048 && g.lon <= -77.5 + 0.048 && g.lat >= 26.0 - 0.048 &&
-                                g.lat <= 26.8 + 0.048;
-            ASSERT_FALSE(onBank) << "leg " << k << " at " << g.lon << ", " << g.lat;
-        }
-    EXPECT_GT(r.plan.travelTime, a.plan.travelTime);
-  }
+    for (bool transposed : {false, true})
+    {
+        SCOPED_TRACE(transposed ? "elevation(lon, lat)" : "elevation(lat, lon)");
+        TempDir dir;
+        const std::string file = dir.file("coast.nc"), gebco = dir.file("gebco.nc");
+        writeForecast(file);
+        writeGebco(gebco, transposed);
+        ForecastInput in;
+        in.current.file = file;
+        in.start = {-79.4, 26.4};
+        in.goal = {-76.6, 26.4}; // the bank lies between them, north of the land
+        in.speed = 0.5;
+        MissionSpec spec = forecastMission(in);
+        spec.safety.bathymetry = gebco;
+        spec.safety.minDepth = 10.0; // the bank is deep enough
+        const MissionProblem shallowOk(spec);
+        const MissionResult a = runMission(shallowOk);
+        ASSERT_TRUE(a.plan.solved) << a.plan.reason;
+        double minDepth = HUGE_VAL;
+        for (std::size_t k = 0; k + 1 < a.plan.path.size(); ++k)
+            for (int q = 0; q <= 200; ++q)
+            {
+                const TimedPoint &p = a.plan.path[k], &b = a.plan.path[k + 1];
+                const double s = q / 200.0;
+                const LonLat g = shallowOk.toGeographic({p.x + s * (b.x - p.x), p.y + s * (b.y - p.y)});
+                minDepth = std::min(minDepth, bankDepth(g.lon, g.lat));
+            }
+        EXPECT_EQ(minDepth, 20.0) << "the direct route crosses the bank";
+        spec.safety.minDepth = 50.0;
+        const MissionProblem problem(spec);
+        EXPECT_NE(problem.safetyNote().find("height_above_mean_sea_level"), std::string::npos) << problem.safetyNote();
+        const MissionResult r = runMission(problem);
+        ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+        for (std::size_t k = 0; k + 1 < r.plan.path.size(); ++k)
+            for (int q = 0; q <= 200; ++q)
+            {
+                const TimedPoint &p = r.plan.path[k], &b = r.plan.path[k + 1];
+                const double s = q / 200.0;
+                const LonLat g = problem.toGeographic({p.x + s * (b.x - p.x), p.y + s * (b.y - p.y)});
+                // a margin of 0.002 degree (cells reach 0.05 degree beyond the bank's nodes) for the projected cell
+                // edges against the file's meridians and parallels
+                const bool onBank =
+                    g.lon >= -78.5 - 0.048 && g.lon <= -77.5 + 0.048 && g.lat >= 26.0 - 0.048 && g.lat <= 26.8 + 0.048;
+                ASSERT_FALSE(onBank) << "leg " << k << " at " << g.lon << ", " << g.lat;
+            }
+        EXPECT_GT(r.plan.travelTime, a.plan.travelTime);
+    }
 }
 
 TEST(Safety, BathymetryAxesThatDoNotSayWhichIsLongitudeAreRefusedNamingThem)

@@ -181,7 +181,7 @@ std::string bathymetryFile()
     std::ofstream(path) << "";
     return path;
 }
-}  // namespace
+} // namespace
 
 TEST(SettingRanges, EveryRowIsFoundByItsFieldAndSaysItsRange)
 {
@@ -217,7 +217,7 @@ TEST(SettingRanges, AMissionFileTakesTheValuesInsideAndRefusesTheOthersAtTheirLi
             const std::string text = missionWith(s.field, shortest(v), bathymetry);
             const std::string e = errorOfFile(text);
             ASSERT_FALSE(e.empty()) << s.field << " = " << v << " was taken";
-            const int line = static_cast<int>(std::count(text.begin(), text.end(), '\n'));  // the last line
+            const int line = static_cast<int>(std::count(text.begin(), text.end(), '\n')); // the last line
             EXPECT_NE(e.find("m.yaml:" + std::to_string(line)), std::string::npos) << e;
             const std::string key = s.field.substr(s.field.rfind('.') + 1);
             EXPECT_NE(e.find(key), std::string::npos) << e;
@@ -244,7 +244,7 @@ TEST(SettingRanges, AnOverrideTakesAndRefusesTheSameValuesInTheSameWords)
         for (const double v : outside)
         {
             if (s.value == SettingValue::Integer && v != std::floor(v))
-                continue;  // an override's integer cannot hold it: its type refuses it before any check
+                continue; // an override's integer cannot hold it: its type refuses it before any check
             const std::string e = errorOfOverride(overrideOf(s.field, v), base);
             ASSERT_FALSE(e.empty()) << s.field << " = " << v << " was taken";
             EXPECT_EQ(e.rfind("--x", 0), 0u) << e;

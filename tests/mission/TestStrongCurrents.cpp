@@ -22,8 +22,7 @@ namespace
 double uniformArrival(double dx, double dy, double cx, double cy, double V, double r)
 {
     // (c^2 - V^2) t^2 - 2 (d.c + V r) t + (d^2 - r^2) = 0
-    const double A = cx * cx + cy * cy - V * V, B = -2.0 * (dx * cx + dy * cy + V * r),
-                 C = dx * dx + dy * dy - r * r;
+    const double A = cx * cx + cy * cy - V * V, B = -2.0 * (dx * cx + dy * cy + V * r), C = dx * dx + dy * dy - r * r;
     const double disc = B * B - 4.0 * A * C;
     if (disc < 0.0)
         return std::numeric_limits<double>::infinity();
@@ -41,12 +40,16 @@ std::string uniformYaml(double sx, double sy, double gx, double gy)
     return "name: strong_uniform\n"
            "current: {type: uniform, parameters: {u: 1.5, v: 0}}\n"
            "region: {x_min: 0, x_max: 10, y_min: -4, y_max: 4}\n"
-           "start: {x: " + std::to_string(sx) + ", y: " + std::to_string(sy) + "}\n"
-           "goal: {x: " + std::to_string(gx) + ", y: " + std::to_string(gy) + "}\n"
+           "start: {x: " +
+           std::to_string(sx) + ", y: " + std::to_string(sy) +
+           "}\n"
+           "goal: {x: " +
+           std::to_string(gx) + ", y: " + std::to_string(gy) +
+           "}\n"
            "vehicle: {speed: 0.5}\n"
            "planner: {horizon: 30}\n";
 }
-}  // namespace
+} // namespace
 
 // (1) Uniform current u = 3 V: the goal inside the cone of half-angle asin(1/3) is first reached at the smaller root
 // of |g - s - c t| = V t. The straight leg from the start is then that optimum, so the default lattice finds it
@@ -83,9 +86,9 @@ TEST(StrongCurrents, UniformCurrentThreeTimesTheSpeedUpstreamGoalHasNoPath)
     ASSERT_TRUE(std::isinf(uniformArrival(-6, 0, 1.5, 0, 0.5, 0.0)));
     const PlannedPath plan = planRoute(problem, 0.0);
     EXPECT_FALSE(plan.solved);
-    EXPECT_EQ(plan.planner, "ZA*TVE");  // no route of any planner: the asked one's outcome, with what the others found
+    EXPECT_EQ(plan.planner, "ZA*TVE"); // no route of any planner: the asked one's outcome, with what the others found
     EXPECT_EQ(plan.status, PlanStatus::NoPath);
-    EXPECT_NE(plan.reason.find("no path exists"), std::string::npos) << plan.reason;  // proven by the level set
+    EXPECT_NE(plan.reason.find("no path exists"), std::string::npos) << plan.reason; // proven by the level set
     EXPECT_NE(plan.reason.find("nor Isochrone"), std::string::npos) << plan.reason;
     std::printf("uniform 3V upstream: planner %s, reason: %s\n", plan.planner.c_str(), plan.reason.c_str());
     EXPECT_NE(plan.reason.find("front"), std::string::npos) << plan.reason;
@@ -108,8 +111,12 @@ TEST(StrongCurrents, RankineVortexIsochroneMatchesTheRadialSpiral)
             "current: {type: rankine_vortex, parameters: {x0: 0, y0: 0, radius: 1, vmax: 1, u: 0, v: 0}}\n"
             "region: {x_min: -6, x_max: 6, y_min: -6, y_max: 6}\n"
             "start: {x: 2, y: 0}\n"
-            "goal: {x: " + std::to_string(c.gx) + ", y: " + std::to_string(c.gy) + "}\n"
-            "vehicle: {speed: " + std::to_string(c.V) + "}\n"
+            "goal: {x: " +
+            std::to_string(c.gx) + ", y: " + std::to_string(c.gy) +
+            "}\n"
+            "vehicle: {speed: " +
+            std::to_string(c.V) +
+            "}\n"
             "planner: {name: Isochrone, horizon: 40}\n";
         const MissionProblem problem = mission(yaml);
         const PlannedPath plan = planRoute(problem, 0.0);
@@ -140,13 +147,14 @@ TEST(StrongCurrents, IsochroneConvergesToTheRadialSpiralAsItsSegmentsShrink)
             "start: {x: 2, y: 0}\n"
             "goal: {x: 1.2612894, y: 3.7959385}\n"
             "vehicle: {speed: 0.2}\n"
-            "planner: {name: Isochrone, horizon: 40, parameters: {segments: " + std::to_string(n) + "}}\n";
+            "planner: {name: Isochrone, horizon: 40, parameters: {segments: " +
+            std::to_string(n) + "}}\n";
         const MissionProblem problem = mission(yaml);
         const PlannedPath plan = planRoute(problem, 0.0);
         ASSERT_TRUE(plan.solved) << n << " segments: " << plan.reason;
         errors.push_back(plan.travelTime / 10.0 - 1.0);
         std::printf("rankine V 0.2, %d segments: travel time %.9f (rel %.3e)\n", n, plan.travelTime, errors.back());
-        EXPECT_GE(errors.back(), -1e-5) << n;  // the goal tolerance (1e-5 of the distance) is all it may gain
+        EXPECT_GE(errors.back(), -1e-5) << n; // the goal tolerance (1e-5 of the distance) is all it may gain
     }
     // second order in the segment length: each doubling of N divides the excess by about 4 (at least 3 here)
     for (std::size_t k = 0; k + 1 < errors.size(); ++k)
@@ -210,7 +218,7 @@ ShearRoute bestShearRoute(double a, double V, double sx, double sy, double gx, d
     }
     return best;
 }
-}  // namespace
+} // namespace
 
 // (3) Linear shear u = y with V = 0.5 (the current is up to 8 V in the region, 2 V westward at the start): the
 // heading planner's route is no slower than the best route of two held headings, and within 2 % of it.
@@ -276,7 +284,7 @@ void expectJetNearLevelSet(double V)
     else
         expectStraightLegRetiming(problem, level, what + " LevelSet");
 }
-}  // namespace
+} // namespace
 
 // (4) The jet at V = 0.2 and 0.15 (the jet's core is several times faster): the default pipeline within 1.5 % of the
 // level set at its default resolution.
@@ -326,7 +334,7 @@ vehicle: {speed: 0.15}
         m.execution.enabled = true;
         m.execution.radius = 1e-5;
         m.execution.surfacingInterval = 0.25;
-        m.execution.replanEvery = 100000;  // the replan strategy plans once, at the start
+        m.execution.replanEvery = 100000; // the replan strategy plans once, at the start
         const MissionProblem problem(m);
         const MissionResult r = runMission(problem);
         ASSERT_TRUE(r.plan.solved) << m.name << ": " << r.plan.reason;
@@ -341,7 +349,7 @@ vehicle: {speed: 0.15}
         EXPECT_FALSE(f.grounded) << m.name << ": " << f.groundedWhy;
         const double reported = r.plan.departure + r.plan.travelTime;
         EXPECT_NEAR(f.arrivalTime, reported, 1e-5 * r.plan.travelTime) << m.name;
-        EXPECT_LE(f.arrivalTime, reported + 1e-9) << m.name;  // the radius is entered before the route's end
+        EXPECT_LE(f.arrivalTime, reported + 1e-9) << m.name; // the radius is entered before the route's end
         // the other strategies steer toward waypoints with a crab angle: in this current they do not arrive in time
         std::printf("%s: travel time %.6f, planned_headings arrives %.6f after departure\n", m.name.c_str(),
                     r.plan.travelTime, f.arrivalTime - r.plan.departure);

@@ -46,7 +46,7 @@ void expectSamePoints(const std::vector<TimedPoint> &a, const std::vector<TimedP
         EXPECT_EQ(a[i].t, b[i].t) << i;
     }
 }
-}  // namespace
+} // namespace
 
 TEST(TaskSpread, BytesRoundTrip)
 {
@@ -90,7 +90,8 @@ TEST(TaskSpread, EnsembleCandidatesEqualThreaded)
     expectSamePoints(one.plan.path, two.plan.path);
     ASSERT_EQ(one.plan.ensemble->candidates.size(), two.plan.ensemble->candidates.size());
     for (std::size_t c = 0; c < one.plan.ensemble->candidates.size(); ++c)
-        EXPECT_EQ(one.plan.ensemble->candidates[c].memberTravelTimes, two.plan.ensemble->candidates[c].memberTravelTimes)
+        EXPECT_EQ(one.plan.ensemble->candidates[c].memberTravelTimes,
+                  two.plan.ensemble->candidates[c].memberTravelTimes)
             << c;
     EXPECT_EQ(one.plan.searchCostFunctionCalls, two.plan.searchCostFunctionCalls);
 }

@@ -48,7 +48,8 @@ std::pair<int, int> checkTrials(const std::vector<std::pair<std::string, std::ve
                     reachable += t.referenceFound;
                     std::printf("%-15s %5.2f %5.1f %8.3f,%-9.3f %8.3f,%-9.3f %10.4f %10.4f %8.4f %7.2f  %s\n",
                                 t.flow.c_str(), t.speed, t.departure, t.start.x, t.start.y, t.goal.x, t.goal.y,
-                                t.defaultTime, t.referenceTime, t.referenceFound ? t.ratio() : NAN, t.seconds, t.winner.c_str());
+                                t.defaultTime, t.referenceTime, t.referenceFound ? t.ratio() : NAN, t.seconds,
+                                t.winner.c_str());
                     const std::string what = flow.name + " V=" + std::to_string(t.speed) + " from (" +
                                              std::to_string(t.start.x) + ", " + std::to_string(t.start.y) + ") to (" +
                                              std::to_string(t.goal.x) + ", " + std::to_string(t.goal.y) +
@@ -69,7 +70,7 @@ std::pair<int, int> checkTrials(const std::vector<std::pair<std::string, std::ve
     std::printf("%d trials, %d with an extremal through the goal\n", trials, reachable);
     return {trials, reachable};
 }
-}  // namespace
+} // namespace
 
 TEST(TrustFast, DefaultIsTheBestRouteOnRandomPairs)
 {

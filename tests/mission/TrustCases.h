@@ -28,7 +28,7 @@ struct Flow
     std::string name;
     MissionSpec mission;
     std::vector<double> departures;
-    double referenceStep{0.01};  ///< the sweep's RK4 step (field time units)
+    double referenceStep{0.01}; ///< the sweep's RK4 step (field time units)
 };
 
 inline MissionSpec analytic(const std::string &type, const std::map<std::string, double> &params, Box box)
@@ -75,14 +75,11 @@ struct Trial
     Point2 start, goal;
     bool defaultSolved{false};
     double defaultTime{std::numeric_limits<double>::infinity()};
-    std::string winner;          ///< the global check's winner
-    bool referenceFound{false};  ///< the sweep found an extremal through the goal
+    std::string winner;         ///< the global check's winner
+    bool referenceFound{false}; ///< the sweep found an extremal through the goal
     double referenceTime{std::numeric_limits<double>::infinity()};
-    double seconds{0.0};  ///< wall time of the default plan
-    double ratio() const
-    {
-        return defaultTime / referenceTime;
-    }
+    double seconds{0.0}; ///< wall time of the default plan
+    double ratio() const { return defaultTime / referenceTime; }
 };
 
 /// @p count random pairs in @p flow at @p speed: start and goal inside the region 0.5 from its edges, at least a
@@ -131,7 +128,7 @@ inline extremal_sweep::Setup sweepSetup(const MissionProblem &problem, double de
     s.yMax = gp.yMax;
     s.maxTime = maxTime;
     s.steps = std::max(400, static_cast<int>(std::ceil(maxTime / step)));
-    s.zoom = 3;  // where the sweep finds none, three windows down about its nearest miss
+    s.zoom = 3; // where the sweep finds none, three windows down about its nearest miss
     return s;
 }
 
@@ -153,11 +150,10 @@ inline void run(const Flow &flow, Trial &t)
     t.winner = p.globalCheck ? p.globalCheck->winner : std::string();
     // a quarter past the default's time: the neighbours of an extremal through the goal pass it later
     const double horizon = problem.gliderProblem(t.departure, t.speed).horizon;
-    const extremal_sweep::Setup s = sweepSetup(problem, t.departure, t.speed,
-                                               p.solved ? std::min(1.25 * p.travelTime, horizon) : horizon,
-                                               flow.referenceStep);
+    const extremal_sweep::Setup s = sweepSetup(
+        problem, t.departure, t.speed, p.solved ? std::min(1.25 * p.travelTime, horizon) : horizon, flow.referenceStep);
     const extremal_sweep::Best best = extremal_sweep::fastest(s, t.start.x, t.start.y, t.departure, t.goal.x, t.goal.y);
     t.referenceFound = best.found;
     t.referenceTime = best.time;
 }
-}  // namespace trust
+} // namespace trust

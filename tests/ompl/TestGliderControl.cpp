@@ -30,17 +30,9 @@ namespace
 class UniformWithLand : public UniformCurrent
 {
 public:
-    UniformWithLand(double u, double v, double xLand) : UniformCurrent(u, v), xLand_(xLand)
-    {
-    }
-    bool inWater(double x, double /*y*/, double /*z*/) const override
-    {
-        return x < xLand_;
-    }
-    std::string name() const override
-    {
-        return "uniform with land";
-    }
+    UniformWithLand(double u, double v, double xLand) : UniformCurrent(u, v), xLand_(xLand) {}
+    bool inWater(double x, double /*y*/, double /*z*/) const override { return x < xLand_; }
+    std::string name() const override { return "uniform with land"; }
 
 private:
     double xLand_;
@@ -82,15 +74,12 @@ struct Propagation
     oc::Control *control;
 
     explicit Propagation(const GliderProblem &p)
-      : ss(makeControlSetup(p)), si(ss->getSpaceInformation()), from(si->getStateSpace()), to(si->getStateSpace())
+        : ss(makeControlSetup(p)), si(ss->getSpaceInformation()), from(si->getStateSpace()), to(si->getStateSpace())
     {
         ss->setup();
         control = si->allocControl();
     }
-    ~Propagation()
-    {
-        si->freeControl(control);
-    }
+    ~Propagation() { si->freeControl(control); }
     /// Propagates from (x, y, t) with the bearing for the duration into `to`.
     void fly(double x, double y, double t, double bearing, double duration)
     {
@@ -100,7 +89,7 @@ struct Propagation
         si->getStatePropagator()->propagate(from.get(), control, duration, to.get());
     }
 };
-}  // namespace
+} // namespace
 
 TEST(GliderControl, SetupHasHeadingControlsPropagatorAndDiscGoal)
 {
@@ -121,8 +110,9 @@ TEST(GliderControl, SetupHasHeadingControlsPropagatorAndDiscGoal)
     auto goal = std::dynamic_pointer_cast<PositionGoal>(ss->getGoal());
     ASSERT_NE(goal, nullptr);
     EXPECT_DOUBLE_EQ(goal->getTolerance(), D / 100.0);
-    EXPECT_NE(std::dynamic_pointer_cast<ControlTravelTimeObjective>(ss->getProblemDefinition()->getOptimizationObjective()),
-              nullptr);
+    EXPECT_NE(
+        std::dynamic_pointer_cast<ControlTravelTimeObjective>(ss->getProblemDefinition()->getOptimizationObjective()),
+        nullptr);
     const auto bounds = std::dynamic_pointer_cast<HeadingControlSpace>(si->getControlSpace())->getBounds();
     EXPECT_EQ(bounds.low[0], 0.0);
     EXPECT_EQ(bounds.high[0], 360.0);
@@ -173,7 +163,7 @@ TEST(GliderControl, GroundingOnLandMakesTheMotionInvalid)
     p.fly(4.0, 2.5, 0.0, 90.0, 2.0);
     EXPECT_FALSE(p.si->isValid(p.to.get()));
     EXPECT_TRUE(std::isinf(p.to->getTime()));
-    EXPECT_LT(p.to->getX(), 5.0);  // the last point in water
+    EXPECT_LT(p.to->getX(), 5.0); // the last point in water
     EXPECT_GE(p.to->getX(), 5.0 - 1.5 * p.si->getPropagationStepSize() / 4.0);
     // the same heading for less time stays in water
     p.fly(4.0, 2.5, 0.0, 90.0, 0.5);
@@ -208,7 +198,7 @@ TEST(GliderControl, CrossingAForbiddenRegionWithinOneStepMakesTheMotionInvalid)
     const double endX = 5.95 + 1.5 * dt;
     ASSERT_GT(endX, 6.02);
     p.from->setXYT(endX, 2.5, dt);
-    EXPECT_TRUE(p.si->isValid(p.from.get()));  // the end point alone is free
+    EXPECT_TRUE(p.si->isValid(p.from.get())); // the end point alone is free
     // the same step short of the wall is valid
     p.fly(5.7, 2.5, 0.0, 90.0, dt);
     EXPECT_TRUE(p.si->isValid(p.to.get()));

@@ -39,13 +39,8 @@ GliderProblem uniformProblem(double cu, double cv)
 class Disc : public Environment
 {
 public:
-    Disc(double x, double y, double r) : x_(x), y_(y), r_(r)
-    {
-    }
-    bool pointFree(double x, double y, double /*t*/) const override
-    {
-        return std::hypot(x - x_, y - y_) > r_;
-    }
+    Disc(double x, double y, double r) : x_(x), y_(y), r_(r) {}
+    bool pointFree(double x, double y, double /*t*/) const override { return std::hypot(x - x_, y - y_) > r_; }
     bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const override
     {
         for (int i = 0; i <= 200; ++i)
@@ -64,7 +59,7 @@ public:
 private:
     double x_, y_, r_;
 };
-}  // namespace
+} // namespace
 
 TEST(GliderSetup, BuildsReadySetup)
 {
@@ -175,9 +170,9 @@ TEST(TravelTimeObjective, CostsAndHeuristics)
     b->setXYT(4, 0, 2 + 3.0);
     b->setYaw(0);
     EXPECT_DOUBLE_EQ(obj->motionCost(a.get(), b.get()).value(), 3.0);
-    b->setTime(2 + 1.9);  // faster than L / 1.5 = 2
+    b->setTime(2 + 1.9); // faster than L / 1.5 = 2
     EXPECT_FALSE(obj->isFinite(obj->motionCost(a.get(), b.get())));
-    b->setTime(2 + 6.5);  // slower than L / 0.5 = 6
+    b->setTime(2 + 6.5); // slower than L / 0.5 = 6
     EXPECT_FALSE(obj->isFinite(obj->motionCost(a.get(), b.get())));
     EXPECT_DOUBLE_EQ(obj->stateCost(a.get()).value(), 0.0);
     EXPECT_FALSE(obj->isSymmetric());
@@ -281,7 +276,7 @@ TEST(PathResimulation, InfeasibleAndBlockedLegs)
     EXPECT_FALSE(r.valid);
     EXPECT_EQ(r.firstBadLeg, 1);
     EXPECT_FALSE(std::isfinite(r.arrivalTime));
-    EXPECT_NE(r.reason.find("leg 1"), std::string::npos) << r.reason;  // names the first bad leg
+    EXPECT_NE(r.reason.find("leg 1"), std::string::npos) << r.reason; // names the first bad leg
     // A leg through a forbidden disc.
     GliderProblem p = uniformProblem(0.0, 0.0);
     p.environment = std::make_shared<Disc>(5, 0, 1);
@@ -303,10 +298,7 @@ TEST(PathResimulation, WaitingForAWindow)
     class TimedDisc : public Environment
     {
     public:
-        bool pointFree(double x, double y, double t) const override
-        {
-            return t >= 20.0 || std::hypot(x - 5, y) > 1.0;
-        }
+        bool pointFree(double x, double y, double t) const override { return t >= 20.0 || std::hypot(x - 5, y) > 1.0; }
         bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const override
         {
             for (int i = 0; i <= 400; ++i)
@@ -317,10 +309,7 @@ TEST(PathResimulation, WaitingForAWindow)
             }
             return true;
         }
-        std::string whyBlocked(double, double, double) const override
-        {
-            return "disc";
-        }
+        std::string whyBlocked(double, double, double) const override { return "disc"; }
     };
     GliderProblem p = uniformProblem(0.0, 0.0);
     p.environment = std::make_shared<TimedDisc>();
@@ -334,7 +323,7 @@ TEST(PathResimulation, WaitingForAWindow)
     EXPECT_TRUE(w.valid);
     EXPECT_TRUE(w.waited);
     const double step = 60.0 / 512.0;
-    const double depart = 20.0 - 3.0 / 0.5;  // reaches the disc edge x = 4 exactly at t = 20
+    const double depart = 20.0 - 3.0 / 0.5; // reaches the disc edge x = 4 exactly at t = 20
     EXPECT_GE(w.arrivalTime, depart + 16.0 - 1e-9);
     EXPECT_LE(w.arrivalTime, depart + 16.0 + step + 1e-9);
 }

@@ -98,7 +98,7 @@ void roots(double px, double py, double cu, double cv, double V, double &fast, d
     fast = pc + std::sqrt(disc);
     slow = pc - std::sqrt(disc);
 }
-}  // namespace
+} // namespace
 
 TEST(TravelTimeMotionValidator, WindowInCurrentFasterThanGlider)
 {
@@ -204,7 +204,7 @@ TEST(TravelTimeMotionValidator, LastValidFraction)
     Fixture f(0.0, 0.0, wall);
     ob::ScopedState<TimeSE2StateSpace> a(f.space), b(f.space), last(f.space);
     a->setXYT(3, 0, 0);
-    b->setXYT(7, 0, 9);  // reaches the wall face x = 4.9 at fraction 0.475
+    b->setXYT(7, 0, 9); // reaches the wall face x = 4.9 at fraction 0.475
     a->setYaw(0);
     b->setYaw(0);
     std::pair<ob::State *, double> lv(last.get(), -1.0);

@@ -77,8 +77,8 @@ double expectValidTimeForwardPath(const og::SimpleSetupPtr &ss, const GliderCont
     const og::PathGeometric &path = ss->getSolutionPath();
     EXPECT_TRUE(path.check());
     EXPECT_GE(path.getStateCount(), 2u);
-    const auto &mv = *std::dynamic_pointer_cast<TravelTimeMotionValidator>(
-        ss->getSpaceInformation()->getMotionValidator());
+    const auto &mv =
+        *std::dynamic_pointer_cast<TravelTimeMotionValidator>(ss->getSpaceInformation()->getMotionValidator());
     for (std::size_t i = 0; i + 1 < path.getStateCount(); ++i)
     {
         const auto *a = path.getState(i)->as<TimeSE2StateSpace::StateType>();
@@ -101,7 +101,7 @@ double expectValidTimeForwardPath(const og::SimpleSetupPtr &ss, const GliderCont
     EXPECT_LE(r.arrivalTime, tEnd + 1e-2);
     return tEnd;
 }
-}  // namespace
+} // namespace
 
 TEST(RRTstarOnJet, CrossesTheJetWithValidTimeForwardPath)
 {
@@ -140,8 +140,8 @@ TEST(RRTstarOnJet, GoalInCurrentFasterThanTheGlider)
     const Velocity c = ctx->field->velocity(6.0, -1.2, 0.0, tEnd);
     EXPECT_GT(std::hypot(c.u, c.v), 0.5) << "the goal is not in current faster than the glider at arrival " << tEnd;
     // holding there is impossible, so the validator must reject waiting at the goal
-    const auto &mv = *std::dynamic_pointer_cast<TravelTimeMotionValidator>(
-        ss->getSpaceInformation()->getMotionValidator());
+    const auto &mv =
+        *std::dynamic_pointer_cast<TravelTimeMotionValidator>(ss->getSpaceInformation()->getMotionValidator());
     EXPECT_FALSE(mv.canHold(6.0, -1.2, tEnd, tEnd + 1.0));
 }
 
@@ -150,13 +150,8 @@ namespace
 class ForbiddenDisc : public Environment
 {
 public:
-    ForbiddenDisc(double x, double y, double r) : x_(x), y_(y), r_(r)
-    {
-    }
-    bool pointFree(double x, double y, double) const override
-    {
-        return std::hypot(x - x_, y - y_) > r_;
-    }
+    ForbiddenDisc(double x, double y, double r) : x_(x), y_(y), r_(r) {}
+    bool pointFree(double x, double y, double) const override { return std::hypot(x - x_, y - y_) > r_; }
     bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const override
     {
         for (int i = 0; i <= 100; ++i)
@@ -175,14 +170,14 @@ public:
 private:
     double x_, y_, r_;
 };
-}  // namespace
+} // namespace
 
 TEST(RRTstarOnJet, StartInForbiddenRegionIsInvalidStart)
 {
     ompl::RNG::setSeed(3);
     GliderProblem p = jetProblem(2.0, -3.0, 8.0, 3.0);
     p.environment = std::make_shared<ForbiddenDisc>(2.0, -3.0, 0.5);
-    auto ss = makeSimpleSetup(p);  // not an exception
+    auto ss = makeSimpleSetup(p); // not an exception
     ss->setPlanner(std::make_shared<og::RRTstar>(ss->getSpaceInformation()));
     const ob::PlannerStatus st = ss->solve(1.0);
     EXPECT_EQ(st, ob::PlannerStatus::INVALID_START) << st.asString();
@@ -193,7 +188,7 @@ TEST(RRTstarOnJet, GoalInForbiddenRegion)
 {
     GliderProblem p = jetProblem(2.0, -3.0, 8.0, 3.0);
     p.environment = std::make_shared<ForbiddenDisc>(8.0, 3.0, 0.5);
-    auto ss = makeSimpleSetup(p);  // not an exception
+    auto ss = makeSimpleSetup(p); // not an exception
     auto goal = std::dynamic_pointer_cast<PositionGoal>(ss->getGoal());
     ASSERT_TRUE(goal);
     EXPECT_EQ(goal->maxSampleCount(), 0u);

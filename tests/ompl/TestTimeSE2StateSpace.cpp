@@ -23,7 +23,7 @@ std::shared_ptr<TimeSE2StateSpace> makeSpace()
     b.setHigh(1, 4.0);
     return std::make_shared<TimeSE2StateSpace>(b, 0.0, 60.0);
 }
-}  // namespace
+} // namespace
 
 TEST(TimeSE2StateSpace, SanityChecksAllFlags)
 {

@@ -37,7 +37,7 @@ std::size_t count(const std::string &text, const std::string &what)
 }
 
 const std::string kSample = std::string(OMPL_GLIDER_SOURCE_DIR) + "/tests/maphtml/sample_data.json";
-}  // namespace
+} // namespace
 
 TEST(MapHtml, PageHoldsLeafletAndTheDataSafelyAndGivesTheDataBack)
 {
@@ -47,11 +47,11 @@ TEST(MapHtml, PageHoldsLeafletAndTheDataSafelyAndGivesTheDataBack)
     // no placeholder left; Leaflet is in the page (its source, not a link to it)
     for (const char *p : {"/*LEAFLET_CSS*/", "/*LEAFLET_JS*/", "/*MAP_DATA*/"})
         EXPECT_EQ(page.find(p), std::string::npos) << p;
-    EXPECT_NE(page.find(".leaflet-container"), std::string::npos);   // leaflet.css
-    EXPECT_NE(page.find("version=\"1.6.0\""), std::string::npos);     // Debian's leaflet.min.js (1.7.1 says 1.6.0)
-    EXPECT_EQ(page.find("src=\"http"), std::string::npos);             // nothing loaded from elsewhere
+    EXPECT_NE(page.find(".leaflet-container"), std::string::npos); // leaflet.css
+    EXPECT_NE(page.find("version=\"1.6.0\""), std::string::npos);  // Debian's leaflet.min.js (1.7.1 says 1.6.0)
+    EXPECT_EQ(page.find("src=\"http"), std::string::npos);         // nothing loaded from elsewhere
     // every <script> element is closed once by its own tag: the data's "</script>" is written \u003c/script>
-    EXPECT_EQ(count(page, "\n<script>"), count(page, "</script>"));  // (the template's comment names <script> too)
+    EXPECT_EQ(count(page, "\n<script>"), count(page, "</script>")); // (the template's comment names <script> too)
     EXPECT_EQ(page.find("</script><!--"), std::string::npos);
     // the data come back as given (the title is the page's)
     json given = json::parse(data), back = json::parse(mapHtmlDataOf(page));
@@ -68,7 +68,7 @@ TEST(MapHtml, AFleetsPageJoinsTheRoutesOfEveryGlider)
     ASSERT_EQ(back["routes"].size(), 3 * one["routes"].size());
     EXPECT_EQ(back["routes"][one["routes"].size()], one["routes"][0]);
     EXPECT_EQ(back["tracks"].size(), 3 * one["tracks"].size());
-    EXPECT_EQ(back["land"], one["land"]);  // the first glider's frame, land and currents
+    EXPECT_EQ(back["land"], one["land"]); // the first glider's frame, land and currents
     EXPECT_EQ(back["title"], "fleet of 3");
     EXPECT_THROW(mapHtmlPage({}, "none"), Error);
     EXPECT_THROW(mapHtmlPage({"not json"}, "bad"), Error);

@@ -64,7 +64,7 @@ fs::path tempDir(const std::string &name)
     fs::create_directories(d);
     return d;
 }
-}  // namespace
+} // namespace
 
 TEST(MapRenderer, WritesValidSvgAndPngWithThePath)
 {
@@ -73,7 +73,7 @@ TEST(MapRenderer, WritesValidSvgAndPngWithThePath)
     map.setField(std::make_shared<MeanderingJet>(), 0.0);
     map.addPolygon({"island A", {{4, -3.5}, {5.5, -3.5}, {5, -2.5}}, {0.55, 0.50, 0.45, 1.0}, {0.3, 0.25, 0.2, 1}});
     MapPath p = MapRenderer::refinedPathStyle("refined", {{1, -3, 0}, {3, 0, 4}, {8, 3, 12}});
-    p.colour = {1.0, 0.85, 0.0, 1.0};  // a colour used nowhere else
+    p.colour = {1.0, 0.85, 0.0, 1.0}; // a colour used nowhere else
     map.addPath(p);
     map.setStartGoal(1, -3, 8, 3);
     map.addNote("travel time 12");
@@ -139,16 +139,16 @@ TEST(MapRenderer, GeographicFrameDrawsMeridiansWhereTheProjectionPutsThem)
     withGrid.writePng((dir / "geo.png").string());
     plain.writePng((dir / "plain.png").string());
     const double xm = proj->forward(-76.5, 18.0).x;
-    ASSERT_GT(std::abs(std::remainder(xm, 50000.0)), 2000.0);  // 5 px from the nearest metre grid line
+    ASSERT_GT(std::abs(std::remainder(xm, 50000.0)), 2000.0); // 5 px from the nearest metre grid line
     const auto [w, h] = withGrid.size();
-    const double plotW = w - 72 - 270, scale = plotW / 300000.0;  // the renderer's margins (kLeft, kRight)
+    const double plotW = w - 72 - 270, scale = plotW / 300000.0; // the renderer's margins (kLeft, kRight)
     const int col = int(std::lround(72 + (xm - r.xMin) * scale));
     auto darkInColumn = [&](const fs::path &png) {
         cairo_surface_t *s = cairo_image_surface_create_from_png(png.c_str());
         const int stride = cairo_image_surface_get_stride(s);
         const unsigned char *data = cairo_image_surface_get_data(s);
         int rows = 0;
-        for (int y = 52 + 40; y < 52 + int(300000 * scale) - 60; ++y)  // inside the plot, clear of the scale bar
+        for (int y = 52 + 40; y < 52 + int(300000 * scale) - 60; ++y) // inside the plot, clear of the scale bar
         {
             bool dark = false;
             for (int x = col - 1; x <= col + 1; ++x)
@@ -163,7 +163,7 @@ TEST(MapRenderer, GeographicFrameDrawsMeridiansWhereTheProjectionPutsThem)
     };
     const int plotRows = int(300000 * scale) - 100;
     EXPECT_GT(darkInColumn(dir / "geo.png"), plotRows * 9 / 10);
-    EXPECT_LT(darkInColumn(dir / "plain.png"), 12);  // only where the metre grid's horizontal lines cross it
+    EXPECT_LT(darkInColumn(dir / "plain.png"), 12); // only where the metre grid's horizontal lines cross it
     EXPECT_EQ(w, plain.size().first);
     fs::remove_all(dir);
 }
@@ -204,7 +204,7 @@ std::vector<MapPolygon> manyPolygons(bool asCoastline)
     }
     return out;
 }
-}  // namespace
+} // namespace
 
 TEST(MapRenderer, ACoastlineOfManyPolygonsKeepsTheLegendColourBarAndNotesOnThePageAsText)
 {
@@ -229,7 +229,7 @@ TEST(MapRenderer, ACoastlineOfManyPolygonsKeepsTheLegendColourBarAndNotesOnThePa
         }
         if (asCoastline)
         {
-            EXPECT_EQ(occurrences(svg, ">land (coastline)</text>"), 1u);  // one entry, no labels on the map
+            EXPECT_EQ(occurrences(svg, ">land (coastline)</text>"), 1u); // one entry, no labels on the map
             EXPECT_EQ(occurrences(svg, "islet"), 0u);
         }
         else

@@ -94,9 +94,9 @@ void stopHere(const char *step)
     if (std::string(step) != g_stopAt)
         return;
     (void)!::write(g_pipe, "x", 1);
-    ::pause();  // the parent kills us here
+    ::pause(); // the parent kills us here
 }
-}  // namespace
+} // namespace
 
 TEST(OutputFaults, KilledAtEveryStepLeavesOneCompleteRun)
 {
@@ -127,7 +127,7 @@ TEST(OutputFaults, KilledAtEveryStepLeavesOneCompleteRun)
                 auto write = files[k].write;
                 const std::string name = "file" + std::to_string(k);
                 files[k].write = [write, name](const std::string &p) {
-                    std::ofstream(p) << "half";  // the file is half written when the process dies
+                    std::ofstream(p) << "half"; // the file is half written when the process dies
                     stopHere(name.c_str());
                     write(p);
                 };
@@ -166,10 +166,10 @@ TEST(OutputFaults, SignalWhileStagingKeepsTheEarlierOutputs)
         std::vector<OutputFile> files = runFiles("new", {"waypoints.csv", "path.csv"});
         files[1].write = [](const std::string &p) {
             output_detail::writeFileChecked(p, "new");
-            ::raise(SIGTERM);  // arrives while the run's files are staged
+            ::raise(SIGTERM); // arrives while the run's files are staged
         };
         writeOutputFiles(dir.string(), files);
-        ::_exit(0);  // not reached: the signal ends the process at the next file
+        ::_exit(0); // not reached: the signal ends the process at the next file
     }
     int status = 0;
     ::waitpid(child, &status, 0);
@@ -201,7 +201,7 @@ TEST(OutputFaults, SignalWhileSwappingInKeepsTheEarlierOutputs)
                     ::raise(SIGINT);
             });
             writeOutputFiles(dir.string(), runFiles("new", {"alpha/waypoints.csv", "charlie/waypoints.csv"}));
-            ::_exit(0);  // not reached: the signal ends the process once the swap is taken back
+            ::_exit(0); // not reached: the signal ends the process once the swap is taken back
         }
         int status = 0;
         ::waitpid(child, &status, 0);
@@ -237,7 +237,7 @@ TEST(OutputFaults, SignalAfterTheFinalCommitKeepsTheNewOutputsAndEndsAsFinished)
         });
         writeOutputFiles(dir.string(), newFiles);
         const bool told = stopRequested() && signalAfterOutputs() == SIGTERM && signalAfterOutputs() == 0;
-        ::raise(SIGTERM);  // after the final commit, outside any write: noted again, the process goes on
+        ::raise(SIGTERM); // after the final commit, outside any write: noted again, the process goes on
         ::_exit(told && signalAfterOutputs() == SIGTERM ? 0 : 3);
     }
     int status = 0;
@@ -252,14 +252,14 @@ TEST(OutputFaults, SignalAfterTheFinalCommitKeepsTheNewOutputsAndEndsAsFinished)
     if (second == 0)
     {
         installOutputSignalHandlers();
-        writeOutputFiles(dir.string(), runFiles("later", {"waypoints.csv"}));  // committed for good
+        writeOutputFiles(dir.string(), runFiles("later", {"waypoints.csv"})); // committed for good
         std::vector<OutputFile> files = runFiles("last", {"waypoints.csv", "path.csv"});
         files[1].write = [](const std::string &p) {
             output_detail::writeFileChecked(p, "last");
             ::raise(SIGTERM);
         };
         writeOutputFiles(dir.string(), files);
-        ::_exit(0);  // not reached
+        ::_exit(0); // not reached
     }
     ::waitpid(second, &status, 0);
     ASSERT_TRUE(WIFSIGNALED(status));
@@ -285,7 +285,8 @@ TEST(OutputFaults, AWriteThatFailsNamesTheFileAndKeepsTheEarlierOutputs)
         const rlimit limit{4096, 4096};
         ::setrlimit(RLIMIT_FSIZE, &limit);
         std::vector<OutputFile> files = runFiles("new", {"waypoints.csv"});
-        files.push_back({"map.png", [](const std::string &p) { output_detail::writeFileChecked(p, std::string(10000, 'x')); }});
+        files.push_back(
+            {"map.png", [](const std::string &p) { output_detail::writeFileChecked(p, std::string(10000, 'x')); }});
         std::string message = "no error";
         try
         {
@@ -356,7 +357,7 @@ TEST(OutputFaults, NonFiniteNumbersNeverReachSummaryJson)
     const MissionResult good = runMission(problem);
     EXPECT_NO_THROW(summaryJson(good, problem));
     MissionResult r = good;
-    r.plan.pathLength = std::nan("");  // written as a number, not through the null of a missing value
+    r.plan.pathLength = std::nan(""); // written as a number, not through the null of a missing value
     try
     {
         summaryJson(r, problem);
@@ -368,7 +369,7 @@ TEST(OutputFaults, NonFiniteNumbersNeverReachSummaryJson)
             << e.what();
     }
     r = good;
-    r.plan.reason = "land between (1, -3) at t = 0 and (-nan, nan) at t = 22.8";  // a number printed into a text
+    r.plan.reason = "land between (1, -3) at t = 0 and (-nan, nan) at t = 22.8"; // a number printed into a text
     try
     {
         summaryJson(r, problem);
@@ -378,7 +379,7 @@ TEST(OutputFaults, NonFiniteNumbersNeverReachSummaryJson)
     {
         EXPECT_NE(std::string(e.what()).find("field 'reason'"), std::string::npos) << e.what();
     }
-    r.plan.reason = "the infinite sea, financial nano";  // words, not numbers
+    r.plan.reason = "the infinite sea, financial nano"; // words, not numbers
     EXPECT_NO_THROW(summaryJson(r, problem));
 }
 
@@ -386,7 +387,7 @@ TEST(OutputFaults, DatesOutsideTheYears0To9999AreRefused)
 {
     EXPECT_EQ(formatIsoTime(253402300799.0), "9999-12-31T23:59:59Z");
     EXPECT_EQ(formatIsoTime(-62167219200.0), "0000-01-01T00:00:00Z");
-    EXPECT_THROW(formatIsoTime(253402300800.0), Error);  // would be 10000-01-01T00:00:00Z
+    EXPECT_THROW(formatIsoTime(253402300800.0), Error); // would be 10000-01-01T00:00:00Z
     EXPECT_THROW(formatIsoTime(-62167219201.0), Error);
 }
 
@@ -410,7 +411,7 @@ TEST(OutputFaults, ASignalOnAnotherThreadAtAnyMomentLeavesOneCompleteRun)
     const long span = static_cast<long>(
         std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - begin).count());
     std::mt19937 rng(17);
-    std::uniform_int_distribution<long> delay(0, std::max(20000L, 2 * span));  // microseconds after the write begins
+    std::uniform_int_distribution<long> delay(0, std::max(20000L, 2 * span)); // microseconds after the write begins
     int bySignal = 0, finished = 0;
     for (int run = 0; run < 40 || (run < 200 && (bySignal == 0 || finished == 0)); ++run)
     {
@@ -432,7 +433,7 @@ TEST(OutputFaults, ASignalOnAnotherThreadAtAnyMomentLeavesOneCompleteRun)
             });
             worker.detach();
             writeOutputFiles(dir.string(), newFiles);
-            ::usleep(25000);  // the worker's signal, if not yet sent, comes while the outputs stand
+            ::usleep(25000); // the worker's signal, if not yet sent, comes while the outputs stand
             ::_exit(0);
         }
         int status = 0;

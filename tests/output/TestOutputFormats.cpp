@@ -59,7 +59,7 @@ MissionResult everyFormatResult(const MissionProblem &problem)
         r.spec.outputs.files.push_back(format.id);
     return r;
 }
-}  // namespace
+} // namespace
 
 TEST(OutputFormats, EveryFormatHasExactlyOneWriter)
 {
@@ -104,8 +104,7 @@ TEST(OutputFormats, EachWriterMakesTheFilesItsFormatDeclares)
 TEST(OutputFormats, DeclaredNamesSplitTheListAndNameTheGotoFile)
 {
     const OutputFormat format{OutputFormatId::Execution, "x", "a.csv, b.svg/png,goto_lNN.ma", "", false};
-    EXPECT_EQ(declaredFileNames(format, 7),
-              (std::vector<std::string>{"a.csv", "b.svg", "b.png", gotoFileName(7)}));
+    EXPECT_EQ(declaredFileNames(format, 7), (std::vector<std::string>{"a.csv", "b.svg", "b.png", gotoFileName(7)}));
 }
 
 #if OMPL_GLIDER_WITH_MAP
@@ -118,7 +117,7 @@ TEST(OutputFormats, OutputFilesAreSummaryFirstThenTheFormatsInOrderThenThePrefix
     for (const OutputFormat &format : outputFormats())
         for (const std::string &name : declaredFileNames(format, r.spec.outputs.gotoNumber))
             expected.push_back(name);
-    ASSERT_EQ(expected.front(), "summary.json");  // the table's first row
+    ASSERT_EQ(expected.front(), "summary.json"); // the table's first row
     for (std::size_t i = 0, n = expected.size(); i < n; ++i)
         expected.push_back("run_" + expected[i]);
     EXPECT_EQ(namesOf(outputFiles(r, problem)), expected);
@@ -141,7 +140,7 @@ TEST(OutputFormats, FormatsThatDoNotApplyMakeNoFiles)
     MissionResult r;
     r.spec = problem.getSpec();
     r.plan.solved = true;
-    EXPECT_TRUE(outputFormatWriter(OutputFormatId::Isochrones)(r, problem, {}).empty());  // no contours
-    EXPECT_TRUE(outputFormatWriter(OutputFormatId::Stints)(r, problem, {}).empty());      // no stints
-    EXPECT_TRUE(outputFormatWriter(OutputFormatId::Execution)(r, problem, {}).empty());   // no execution
+    EXPECT_TRUE(outputFormatWriter(OutputFormatId::Isochrones)(r, problem, {}).empty()); // no contours
+    EXPECT_TRUE(outputFormatWriter(OutputFormatId::Stints)(r, problem, {}).empty());     // no stints
+    EXPECT_TRUE(outputFormatWriter(OutputFormatId::Execution)(r, problem, {}).empty());  // no execution
 }

@@ -18,11 +18,11 @@ TEST(SlocumGoto, DegMinFormatting)
     EXPECT_EQ(formatDegMin(41.25), "4115.0000");
     EXPECT_EQ(formatDegMin(-0.5), "-030.0000");
     EXPECT_EQ(formatDegMin(0.0), "000.0000");
-    EXPECT_EQ(formatDegMin(5.123456), "507.4074");  // 0.123456 * 60 = 7.40736
-    EXPECT_EQ(formatDegMin(-123.999999999), "-12400.0000");  // minutes round to 60: carried into the degrees
+    EXPECT_EQ(formatDegMin(5.123456), "507.4074");          // 0.123456 * 60 = 7.40736
+    EXPECT_EQ(formatDegMin(-123.999999999), "-12400.0000"); // minutes round to 60: carried into the degrees
     EXPECT_EQ(formatDegMin(41.99999999), "4200.0000");
-    EXPECT_EQ(formatDegMin(41.9999983), "4159.9999");  // 59.999898 min
-    EXPECT_EQ(formatDegMin(-1e-9), "000.0000");          // rounds to zero: no "-0"
+    EXPECT_EQ(formatDegMin(41.9999983), "4159.9999"); // 59.999898 min
+    EXPECT_EQ(formatDegMin(-1e-9), "000.0000");       // rounds to zero: no "-0"
     EXPECT_THROW(formatDegMin(std::nan("")), Error);
 }
 

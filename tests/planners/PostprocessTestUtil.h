@@ -14,13 +14,8 @@ namespace ompl_glider::test
 class BoxEnvironment : public Environment
 {
 public:
-    BoxEnvironment(double x0, double x1, double y0, double y1) : x0_(x0), x1_(x1), y0_(y0), y1_(y1)
-    {
-    }
-    bool pointFree(double x, double y, double) const override
-    {
-        return !(x > x0_ && x < x1_ && y > y0_ && y < y1_);
-    }
+    BoxEnvironment(double x0, double x1, double y0, double y1) : x0_(x0), x1_(x1), y0_(y0), y1_(y1) {}
+    bool pointFree(double x, double y, double) const override { return !(x > x0_ && x < x1_ && y > y0_ && y < y1_); }
     bool legFree(double xa, double ya, double ta, double xb, double yb, double tb) const override
     {
         const int n = 2000;
@@ -41,9 +36,8 @@ private:
     double x0_, x1_, y0_, y1_;
 };
 
-inline std::shared_ptr<GliderContext> makeContext(std::shared_ptr<const CurrentField> field, double V,
-                                                  Region region, std::shared_ptr<const Environment> env = nullptr,
-                                                  double eps = 1e-3)
+inline std::shared_ptr<GliderContext> makeContext(std::shared_ptr<const CurrentField> field, double V, Region region,
+                                                  std::shared_ptr<const Environment> env = nullptr, double eps = 1e-3)
 {
     auto ctx = std::make_shared<GliderContext>();
     TravelTimeParams tp;
@@ -65,4 +59,4 @@ inline Region box(double x0, double x1, double y0, double y1)
     r.yMax = y1;
     return r;
 }
-}  // namespace ompl_glider::test
+} // namespace ompl_glider::test

@@ -1,5 +1,6 @@
 // On a gridded forecast (two meanders, one reversed, and two islands; non-uniform x axis; six records):
-// - the gridded field's local bounds (GriddedCurrentField::velocityBounds, rectilinear and curvilinear) enclose every velocity() value of their
+// - the gridded field's local bounds (GriddedCurrentField::velocityBounds, rectilinear and curvilinear) enclose every
+// velocity() value of their
 //   region, and are refused where the schemes could overshoot the nodes;
 // - the lattice heuristic built from them never exceeds the true remaining time (TVE from the vertex) and the
 //   default search still equals TVE;
@@ -15,8 +16,8 @@
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "planners/detail/SearchHeuristic.h"  // internal to the library (src/)
-#include "planners/TveSearch.h"  // internal to the library (src/)
+#include "planners/detail/SearchHeuristic.h" // internal to the library (src/)
+#include "planners/TveSearch.h"              // internal to the library (src/)
 
 using namespace ompl_glider;
 
@@ -94,9 +95,7 @@ struct WaterPoints
 {
     std::mt19937 rng;
     std::uniform_real_distribution<double> ux{0.3, 19.7}, uy{-7.2, 7.2};
-    explicit WaterPoints(unsigned seed) : rng(seed)
-    {
-    }
+    explicit WaterPoints(unsigned seed) : rng(seed) {}
     void next(double &x, double &y)
     {
         do
@@ -106,7 +105,7 @@ struct WaterPoints
         } while (std::hypot(x - 7.0, y - 1.0) < 2.3 || std::hypot(x - 14.0, y + 2.5) < 1.9);
     }
 };
-}  // namespace
+} // namespace
 
 TEST(GriddedBounds, EncloseEveryInterpolatedVelocityOfTheRegion)
 {
@@ -142,7 +141,7 @@ TEST(GriddedBounds, EncloseEveryInterpolatedVelocityOfTheRegion)
         if (b - a < M && d - cc < M)
             ++narrow;
     }
-    EXPECT_GT(narrow, 100);  // local: narrower than the field's own bound on many regions
+    EXPECT_GT(narrow, 100); // local: narrower than the field's own bound on many regions
 
     // schemes that can overshoot the nodes get no local bound
     GriddedFieldOptions cubic;
@@ -181,7 +180,7 @@ TEST(GriddedBounds, CurvilinearGridBoundsEncloseTheInterpolatedVelocity)
     int local = 0;
     Region all;
     double ga, gb, gc, gd;
-    ASSERT_TRUE(field.velocityBounds(all, ga, gb, gc, gd));  // everywhere: the whole grid's extremes
+    ASSERT_TRUE(field.velocityBounds(all, ga, gb, gc, gd)); // everywhere: the whole grid's extremes
     for (int c = 0; c < 400; ++c)
     {
         Region r;
@@ -208,7 +207,7 @@ TEST(GriddedBounds, CurvilinearGridBoundsEncloseTheInterpolatedVelocity)
     // regions well inside the grid (centred on nodes at least 18 cells from its edge) get local bounds: within the
     // extremes of the nodes at most 16 cells (two blocks) away, over the two records of the window
     const GriddedData ref = forecastData();
-    std::uniform_int_distribution<std::size_t> ni(18, 62), nj(18, 40);  // a block away from the edge blocks
+    std::uniform_int_distribution<std::size_t> ni(18, 62), nj(18, 40); // a block away from the edge blocks
     for (int c = 0; c < 100; ++c)
     {
         const std::size_t i0 = ni(rng), j0 = nj(rng), n = j0 * 81 + i0;
@@ -230,7 +229,7 @@ TEST(GriddedBounds, CurvilinearGridBoundsEncloseTheInterpolatedVelocity)
         r.yMin = cy - 0.25;
         r.yMax = cy + 0.25;
         r.tMin = 0.0;
-        r.tMax = 4.9;  // records 0 and 1
+        r.tMax = 4.9; // records 0 and 1
         double a, b, cc, dd;
         ASSERT_TRUE(field.velocityBounds(r, a, b, cc, dd));
         if (a >= lu - 1e-6 && b <= hu + 1e-6 && cc >= lv - 1e-6 && dd <= hv + 1e-6)
@@ -281,19 +280,19 @@ TEST(GriddedBounds, HeuristicNeverAboveTheTrueRemainingTimeAndSearchEqualsTve)
         }
     }
     EXPECT_GE(compared, 20);
-    EXPECT_GT(sumH, 1.1 * sumE);  // tighter than [EichhornRAS] Eq. 1 on these vertices
+    EXPECT_GT(sumH, 1.1 * sumE); // tighter than [EichhornRAS] Eq. 1 on these vertices
     EXPECT_LT(2 * cfcDefault, cfcTve);
 }
 
 TEST(CoarseToFine, EqualsTheFullFineSearchOnRandomPairs)
 {
     const auto ctx = context(forecast());
-    TveSearch search(ctx, 0.1, 3);  // 201 x 151 vertices
+    TveSearch search(ctx, 0.1, 3); // 201 x 151 vertices
     TveOptions full;
     full.coarseFactor = 1;
     TveOptions c2f;
     c2f.coarseFactor = 4;
-    c2f.corridorBlocks = 1;  // a narrow first corridor: the widening must do its work
+    c2f.corridorBlocks = 1; // a narrow first corridor: the widening must do its work
     WaterPoints pts(23);
     std::uniform_real_distribution<double> ut(0.0, 10.0);
     int compared = 0, widened = 0;

@@ -37,7 +37,7 @@ HeadingRefineSettings checkSettings(const GliderContext &ctx, double duration)
     s.step = headingCheckStep(duration, ctx);
     return s;
 }
-}  // namespace
+} // namespace
 
 TEST(IsochroneSearch, MeetsADownstreamGoalAtTheClosedFormTime)
 {
@@ -45,7 +45,8 @@ TEST(IsochroneSearch, MeetsADownstreamGoalAtTheClosedFormTime)
     const Point2 goal{5.0, 1.0};
     const IsochroneSetup setup = makeIsochroneSetup(*ctx, goal, 1e-6);
     ThreadPool pool(2);
-    const IsochroneSearch s = searchIsochrones(setup, {0.0, 0.0, 0.0}, pool, ompl::base::plannerNonTerminatingCondition());
+    const IsochroneSearch s =
+        searchIsochrones(setup, {0.0, 0.0, 0.0}, pool, ompl::base::plannerNonTerminatingCondition());
     ASSERT_TRUE(std::isfinite(s.hit.arrival)) << s.why;
     // the exact first arrival: the disc of radius V t drifting at 1 reaches the goal when |g - (t, 0)| = V t
     const double a = kU * kU - kV * kV, b = -2.0 * goal.x * kU, c = goal.x * goal.x + goal.y * goal.y;
@@ -110,14 +111,14 @@ TEST(IsochroneSearch, LastSegmentReAimedOnTheAccurateReflight)
     coarse.speed = 0.15;
     coarse.step = route.step;
     const HeadingFlight planned = flyHeadingRoute(route, *ctx->field, nullptr, coarse, false);
-    const Point2 goal{planned.ends.back().x, planned.ends.back().y};  // where the coarse flight ends
+    const Point2 goal{planned.ends.back().x, planned.ends.back().y}; // where the coarse flight ends
 
     ReflightSettings s;
     s.speed = 0.15;
     const HeadingReflight before = reflyHeadingRoute(route, *ctx->field, nullptr, s);
     const double radius = 1e-6;
     const double missBefore = std::hypot(before.end.x - goal.x, before.end.y - goal.y);
-    ASSERT_GT(missBefore, 100.0 * radius);  // the coarse and the accurate flights part
+    ASSERT_GT(missBefore, 100.0 * radius); // the coarse and the accurate flights part
 
     HeadingRoute aimed = route;
     HeadingReflight flight;
@@ -136,7 +137,6 @@ TEST(IsochroneSearch, LastSegmentReAimedOnTheAccurateReflight)
     EXPECT_LT(std::hypot(check.end.x - goal.x, check.end.y - goal.y), radius);
     EXPECT_NEAR(flight.end.t, check.end.t, 1e-9);
     ASSERT_EQ(flight.ends.size(), route.segments.size() + 1);
-
 }
 
 TEST(IsochroneSearch, ReAimingRefusesAGoalNoHeldHeadingReaches)

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ompl_glider/Exception.h"
-#include "planners/detail/Lattice.h"  // internal to the library (src/)
+#include "planners/detail/Lattice.h" // internal to the library (src/)
 
 using namespace ompl_glider;
 
@@ -22,7 +22,7 @@ std::vector<Lattice::VertexId> successors(const Lattice &l, Lattice::VertexId u)
     l.forEachSuccessor(u, [&](Lattice::VertexId v) { out.push_back(v); });
     return out;
 }
-}  // namespace
+} // namespace
 
 TEST(Lattice, OffsetCountsMatchSectors)
 {
@@ -48,7 +48,7 @@ TEST(Lattice, OffsetsAreCoprimeBoundedDistinctAndSymmetric)
     {
         const auto off = Lattice::offsets(n);
         std::set<std::pair<int, int>> seen;
-        std::set<long> angles;  // no two offsets with the same direction
+        std::set<long> angles; // no two offsets with the same direction
         for (const auto &o : off)
         {
             EXPECT_FALSE(o.dx == 0 && o.dy == 0);
@@ -103,7 +103,7 @@ TEST(Lattice, StartOnGridVertexIsThatVertex)
 TEST(Lattice, ExtraStartJoinsAnchorNeighbourhood)
 {
     Lattice l(0.0, 10.0, -4.0, 4.0, 0.4, 1);
-    const auto s = l.setStart(2.05, 0.13);  // anchor (5, 10) at (2.0, 0.0)
+    const auto s = l.setStart(2.05, 0.13); // anchor (5, 10) at (2.0, 0.0)
     ASSERT_EQ(s, l.startExtra());
     EXPECT_DOUBLE_EQ(l.x(s), 2.05);
     EXPECT_DOUBLE_EQ(l.y(s), 0.13);
@@ -119,7 +119,7 @@ TEST(Lattice, ExtraStartJoinsAnchorNeighbourhood)
 TEST(Lattice, ExtraGoalReachedFromItsAnchorNeighbourhoodOnly)
 {
     Lattice l(0.0, 10.0, -4.0, 4.0, 0.4, 2);
-    const auto g = l.setGoal(6.1, 1.3);  // anchor (15, 13) at (6.0, 1.2)
+    const auto g = l.setGoal(6.1, 1.3); // anchor (15, 13) at (6.0, 1.2)
     ASSERT_EQ(g, l.goalExtra());
     std::size_t into = 0;
     for (Lattice::VertexId u = 0; u < l.numGridVertices(); ++u)
@@ -130,15 +130,15 @@ TEST(Lattice, ExtraGoalReachedFromItsAnchorNeighbourhoodOnly)
                 const long dx = std::lround((l.x(u) - 6.0) / 0.4), dy = std::lround((l.y(u) - 1.2) / 0.4);
                 EXPECT_TRUE(l.inNeighbourhood(dx, dy));
             }
-    EXPECT_EQ(into, 17u);  // the anchor + its 16 neighbours
+    EXPECT_EQ(into, 17u); // the anchor + its 16 neighbours
     EXPECT_TRUE(successors(l, g).empty());
 }
 
 TEST(Lattice, StartAndGoalInSameNeighbourhoodAreJoinedDirectly)
 {
     Lattice l(0.0, 10.0, -4.0, 4.0, 0.4, 1);
-    l.setGoal(2.3, 0.1);   // anchor (6, 10)
-    const auto s = l.setStart(2.05, 0.13);  // anchor (5, 10)
+    l.setGoal(2.3, 0.1);                   // anchor (6, 10)
+    const auto s = l.setStart(2.05, 0.13); // anchor (5, 10)
     const auto succ = successors(l, s);
     EXPECT_NE(std::find(succ.begin(), succ.end(), l.goalExtra()), succ.end());
 }

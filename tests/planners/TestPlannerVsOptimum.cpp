@@ -26,7 +26,7 @@ namespace
 struct Row
 {
     double sx, sy, gx, gy;
-    bool latticeLimited;  ///< the 0.4 lattice itself (TVE, exact) is > 5% slower than the optimum here
+    bool latticeLimited; ///< the 0.4 lattice itself (TVE, exact) is > 5% slower than the optimum here
     double raw{0}, smoothed{0}, refined{0}, optimum{0};
     std::size_t nRaw{0}, nSmoothed{0}, nRefined{0};
 };
@@ -34,12 +34,12 @@ struct Row
 double resimulated(const GliderContext &ctx, const ompl::geometric::PathGeometric &path, double t0)
 {
     ResimulationOptions o;
-    o.allowWaiting = false;  // the plain "fly the waypoints as fast as possible from t0"
+    o.allowWaiting = false; // the plain "fly the waypoints as fast as possible from t0"
     const PathResimulation r = resimulatePath(ctx, path, t0, o);
     EXPECT_TRUE(r.valid) << r.reason;
     return r.travelTime;
 }
-}  // namespace
+} // namespace
 
 TEST(PlannerVsOptimum, MeanderingJetCrossings)
 {
@@ -48,9 +48,9 @@ TEST(PlannerVsOptimum, MeanderingJetCrossings)
     // is more than 5% slower than the optimum (TVE on the same lattice: 14.310 vs 13.317, and 20.151 vs 18.474
     // against the jet): smoothing cannot fix that (it only drops waypoints), refinement does. Every optimum stays
     // inside the region (checked below).
-    std::vector<Row> rows = {{1.0, -3.0, 8.0, 3.0, false},  {1.0, 3.0, 9.0, -2.5, false}, {2.0, -3.5, 7.0, 3.5, false},
-                             {0.5, -2.0, 9.5, 2.0, false},  {2.0, 3.5, 8.0, -3.5, false}, {0.5, 3.0, 5.0, -3.0, false},
-                             {8.0, 3.0, 2.0, -3.0, true}, {5.0, -3.5, 4.0, 3.5, true}};
+    std::vector<Row> rows = {{1.0, -3.0, 8.0, 3.0, false}, {1.0, 3.0, 9.0, -2.5, false}, {2.0, -3.5, 7.0, 3.5, false},
+                             {0.5, -2.0, 9.5, 2.0, false}, {2.0, 3.5, 8.0, -3.5, false}, {0.5, 3.0, 5.0, -3.0, false},
+                             {8.0, 3.0, 2.0, -3.0, true},  {5.0, -3.5, 4.0, 3.5, true}};
     for (Row &row : rows)
     {
         SCOPED_TRACE("start (" + std::to_string(row.sx) + ", " + std::to_string(row.sy) + ") goal (" +
@@ -66,7 +66,7 @@ TEST(PlannerVsOptimum, MeanderingJetCrossings)
         auto planner = std::make_shared<ZAStarTVE>(ss->getSpaceInformation(), ctx, "ZA*TVE");
         planner->setGridSize(0.4);
         planner->setSectors(3);
-        planner->setSmooth(false);  // this test measures each stage: lattice, smoothing, refinement
+        planner->setSmooth(false); // this test measures each stage: lattice, smoothing, refinement
         planner->setRefine(false);
         ss->setPlanner(planner);
         const ompl::base::PlannerStatus st = ss->solve(60.0);
@@ -81,7 +81,7 @@ TEST(PlannerVsOptimum, MeanderingJetCrossings)
         EXPECT_TRUE(path.check());
         row.nSmoothed = path.getStateCount();
         row.smoothed = resimulated(*ctx, path, prob.t0);
-        EXPECT_LE(row.smoothed, row.raw * (1.0 + kSmoothingTieTolerance));  // smoothing never arrives later
+        EXPECT_LE(row.smoothed, row.raw * (1.0 + kSmoothingTieTolerance)); // smoothing never arrives later
         EXPECT_LE(sm.waypointsAfter, sm.waypointsBefore);
 
         const RefinementResult rf = WaypointRefiner(ctx).refine(path);
@@ -93,7 +93,7 @@ TEST(PlannerVsOptimum, MeanderingJetCrossings)
 
         ZermeloParams zp;
         zp.speed = ctx->speed();
-        zp.maxTime = 1.2 * row.refined;  // any feasible path's time bounds the optimum
+        zp.maxTime = 1.2 * row.refined; // any feasible path's time bounds the optimum
         const ZermeloReference ref(jet, zp);
         const ZermeloSolution opt = ref.solve(row.sx, row.sy, row.gx, row.gy, prob.t0);
         ASSERT_TRUE(opt.found);

@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "PostprocessTestUtil.h"
-#include "planners/TveSearch.h"  // internal to the library (src/)
+#include "planners/TveSearch.h" // internal to the library (src/)
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/LinearShear.h"
 #include "ompl_glider/current/MeanderingJet.h"
@@ -48,7 +48,7 @@ TEST(WaypointRefiner, KeepsLegsFreeAndInsideRegion)
     const SmoothingResult s = PathSmoother(ctx).smooth(lat.waypoints);
     const RefinementResult r = WaypointRefiner(ctx).refine(s.waypoints);
     EXPECT_LE(r.arrivalAfter, s.arrivalAfter);
-    EXPECT_LT(r.arrivalAfter, s.arrivalAfter);  // there is room to improve on a 0.5 lattice
+    EXPECT_LT(r.arrivalAfter, s.arrivalAfter); // there is room to improve on a 0.5 lattice
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         EXPECT_GE(r.waypoints[i].x, 0.0);
@@ -68,7 +68,7 @@ TEST(WaypointRefiner, NeverLaterThanSmoothedJetPath)
 {
     auto jet = std::make_shared<MeanderingJet>();
     auto ctx = makeContext(jet, 0.5, box(0, 10, -4, 4));
-    const TveResult lat = TveSearch(ctx, 0.5, 2).run(1, 3, 1.0, 9, -2.5, TveOptions{});  // departure at t = 1
+    const TveResult lat = TveSearch(ctx, 0.5, 2).run(1, 3, 1.0, 9, -2.5, TveOptions{}); // departure at t = 1
     ASSERT_EQ(lat.outcome, TveOutcome::Exact);
     const SmoothingResult s = PathSmoother(ctx).smooth(lat.waypoints);
     ASSERT_TRUE(std::isfinite(s.arrivalAfter));
@@ -77,7 +77,7 @@ TEST(WaypointRefiner, NeverLaterThanSmoothedJetPath)
     const RefinementResult r = WaypointRefiner(ctx, p).refine(s.waypoints);
     EXPECT_LE(r.arrivalAfter, s.arrivalAfter);
     EXPECT_LE(r.evaluations, 3000u + 1u);
-    EXPECT_EQ(r.waypoints.front().t, 1.0);  // the departure: the first waypoint's time
+    EXPECT_EQ(r.waypoints.front().t, 1.0); // the departure: the first waypoint's time
     EXPECT_EQ(retimeWaypoints(*ctx, r.waypoints, 1.0).back().t, r.arrivalAfter);
 }
 
@@ -88,13 +88,13 @@ TEST(WaypointRefiner, StopsWhenTheTerminationConditionSaysSo)
     const TveResult lat = TveSearch(ctx, 0.5, 2).run(1, 3, 0.0, 9, -2.5, TveOptions{});
     ASSERT_EQ(lat.outcome, TveOutcome::Exact);
     RefinerParams p;
-    p.maxEvaluations = 100000000;  // the budget alone would run for minutes
+    p.maxEvaluations = 100000000; // the budget alone would run for minutes
     unsigned asked = 0;
     p.terminate = [&asked] { return ++asked > 25; };
     const RefinementResult r = WaypointRefiner(ctx, p).refine(lat.waypoints);
-    EXPECT_LE(r.evaluations, 26u);  // at most one evaluation per question before the answer turned to true
+    EXPECT_LE(r.evaluations, 26u); // at most one evaluation per question before the answer turned to true
     EXPECT_GT(asked, 25u);
-    EXPECT_LE(r.arrivalAfter, r.arrivalBefore);  // the best path so far, never a worse one
+    EXPECT_LE(r.arrivalAfter, r.arrivalBefore); // the best path so far, never a worse one
     EXPECT_EQ(retimeWaypoints(*ctx, r.waypoints, 0.0).back().t, r.arrivalAfter);
 }
 

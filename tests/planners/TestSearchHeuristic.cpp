@@ -13,8 +13,8 @@
 #include "ompl_glider/current/MeanderingJet.h"
 #include "ompl_glider/current/UniformCurrent.h"
 #include "ompl_glider/ompl/GliderSetup.h"
-#include "planners/detail/SearchHeuristic.h"  // internal to the library (src/)
-#include "planners/TveSearch.h"  // internal to the library (src/)
+#include "planners/detail/SearchHeuristic.h" // internal to the library (src/)
+#include "planners/TveSearch.h"              // internal to the library (src/)
 
 using namespace ompl_glider;
 
@@ -34,7 +34,7 @@ TveOptions heuristicTveOptions()
     o.heuristic = o.zermelo = false;
     return o;
 }
-}  // namespace
+} // namespace
 
 TEST(SearchHeuristic, JetBoxesEncloseSampledCurrents)
 {
@@ -66,7 +66,7 @@ TEST(SearchHeuristic, JetBoxesEncloseSampledCurrents)
         if (b.uMax - b.uMin < M && b.vMax - b.vMin < M)
             ++tight;
     }
-    EXPECT_GT(tight, 50);  // the boxes are local: narrower than the global bound on many cells
+    EXPECT_GT(tight, 50); // the boxes are local: narrower than the global bound on many cells
 }
 
 TEST(SearchHeuristic, EdgeBoundsNeverExceedTheTravelTime)
@@ -74,7 +74,7 @@ TEST(SearchHeuristic, EdgeBoundsNeverExceedTheTravelTime)
     GliderProblem p = heuristicJetProblem();
     auto ctx = makeGliderContext(p);
     Lattice lat(ctx->region.xMin, ctx->region.xMax, ctx->region.yMin, ctx->region.yMax, 0.4, 3);
-    lat.setStart(1.1, 0.3);  // off-grid start and goal: their edges use the generic bound
+    lat.setStart(1.1, 0.3); // off-grid start and goal: their edges use the generic bound
     lat.setGoal(7.3, -1.1);
     LatticeHeuristic hb(lat, *ctx->field, ctx->speed(), 0.0, 0.0, 60.0);
     std::mt19937 rng(3);
@@ -163,7 +163,7 @@ TEST(SearchHeuristic, DefaultSearchEqualsTveOnRandomPairs)
     GliderProblem p = heuristicJetProblem();
     auto ctx = makeGliderContext(p);
     TveSearch search(ctx, 0.4, 3);
-    TveOptions astar;  // A* with the tight heuristic, no pruning
+    TveOptions astar; // A* with the tight heuristic, no pruning
     astar.zermelo = false;
     std::mt19937 rng(2024);
     std::uniform_real_distribution<double> ux(0.2, 9.8), uy(-3.8, 3.8), ut(0.0, 10.0);
@@ -220,7 +220,7 @@ TEST(SearchHeuristic, DeadlineKeepsTheOptimumOrExhausts)
     GliderProblem p = heuristicJetProblem();
     auto ctx = makeGliderContext(p);
     TveSearch search(ctx, 0.4, 3);
-    const double sx = 8.8, sy = -1.2, gx = 1.6, gy = 0.4;  // goal upstream of the start
+    const double sx = 8.8, sy = -1.2, gx = 1.6, gy = 0.4; // goal upstream of the start
     const TveResult tve = search.run(sx, sy, 0.0, gx, gy, heuristicTveOptions());
     ASSERT_EQ(tve.outcome, TveOutcome::Exact);
     for (bool tight : {false, true})
@@ -248,7 +248,7 @@ TEST(SearchHeuristic, StopRequestEndsTheSetupAndLeavesLowerBounds)
     lat.setStart(0.5, -3.0);
     ASSERT_NE(lat.setGoal(9.5, 3.0), Lattice::kNone);
     const LatticeHeuristic full(lat, *ctx->field, ctx->speed(), 0.0, 0.0, 60.0);
-    ASSERT_TRUE(full.informative());  // the jet's local boxes are narrower than its global bound
+    ASSERT_TRUE(full.informative()); // the jet's local boxes are narrower than its global bound
     int asked = 0;
     LatticeHeuristic stopped(lat, *ctx->field, ctx->speed(), 0.0, 0.0, 60.0, 0, nullptr, [&asked] {
         ++asked;
@@ -259,14 +259,14 @@ TEST(SearchHeuristic, StopRequestEndsTheSetupAndLeavesLowerBounds)
     stopped.reset({});
     const Lattice::VertexId far = lat.gridVertex(0, 0);
     EXPECT_EQ(stopped(far), 0.0);
-    EXPECT_LT(stopped.settled(), 4096u);  // the backward search asked the stop and ended
+    EXPECT_LT(stopped.settled(), 4096u); // the backward search asked the stop and ended
     // the search: its stop turns true on its first question after the setup began
     TveSearch search(ctx, 0.1, 3);
-    TveOptions o;  // the default: A* with the lattice's bounds
+    TveOptions o; // the default: A* with the lattice's bounds
     int questions = 0;
     const TveResult r = search.run(0.5, -3.0, 0.0, 9.5, 3.0, o, [&questions] { return ++questions > 1; });
     EXPECT_EQ(r.outcome, TveOutcome::Terminated);
-    EXPECT_EQ(r.heuristicSettled, 0u);  // no backward search, no expansion after the stop
+    EXPECT_EQ(r.heuristicSettled, 0u); // no backward search, no expansion after the stop
     EXPECT_EQ(r.expansions, 0u);
     // and a search after it, not stopped, builds its bounds afresh and finds the route
     const TveResult again = search.run(0.5, -3.0, 0.0, 9.5, 3.0, o);

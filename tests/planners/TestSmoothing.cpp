@@ -14,7 +14,7 @@
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
 #include "ompl_glider/routes/PathSmoother.h"
-#include "planners/TveSearch.h"  // internal to the library (src/)
+#include "planners/TveSearch.h" // internal to the library (src/)
 
 using namespace ompl_glider;
 using namespace ompl_glider::test;
@@ -26,24 +26,15 @@ namespace
 class AdverseUntilFive : public CurrentField
 {
 public:
-    double maxSpeed(const Region &) const override
-    {
-        return 1.0;
-    }
-    std::string name() const override
-    {
-        return "adverse until t=5";
-    }
+    double maxSpeed(const Region &) const override { return 1.0; }
+    std::string name() const override { return "adverse until t=5"; }
 
 protected:
     Velocity evaluate(double x, double, double, double t) const override
     {
         return {x > 1.0 && t < 5.0 ? -1.0 : 0.0, 0.0};
     }
-    Jacobian evaluateJacobian(double, double, double, double) const override
-    {
-        return {};
-    }
+    Jacobian evaluateJacobian(double, double, double, double) const override { return {}; }
 };
 
 double smoothingUniformTime(double L, double px, double py, double cu, double cv, double V)
@@ -51,27 +42,27 @@ double smoothingUniformTime(double L, double px, double py, double cu, double cv
     const double pc = px * cu + py * cv;
     return L / (pc + std::sqrt(pc * pc + V * V - cu * cu - cv * cv));
 }
-}  // namespace
+} // namespace
 
 TEST(PathSmoother, StaircaseInUniformCurrentBecomesStraightLeg)
 {
     auto ctx = makeContext(std::make_shared<UniformCurrent>(0.2, 0.1), 0.5, box(-1, 10, -1, 10));
     std::vector<TimedPoint> stairs;
     for (int i = 0; i <= 8; ++i)
-        stairs.push_back({0.5 * ((i + 1) / 2), 0.5 * (i / 2), 0.0});  // (0,0),(0.5,0),(0.5,0.5),(1,0.5),...
+        stairs.push_back({0.5 * ((i + 1) / 2), 0.5 * (i / 2), 0.0}); // (0,0),(0.5,0),(0.5,0.5),(1,0.5),...
     const std::uint64_t cfc0 = ctx->travel->costFunctionCalls();
     const SmoothingResult r = PathSmoother(ctx).smooth(stairs);
     const std::uint64_t cfc = ctx->travel->costFunctionCalls() - cfc0;
     ASSERT_EQ(r.waypointsBefore, 9u);
-    ASSERT_EQ(r.waypointsAfter, 2u);  // the straight leg is the fastest in a uniform current
+    ASSERT_EQ(r.waypointsAfter, 2u); // the straight leg is the fastest in a uniform current
     EXPECT_EQ(r.waypoints.front().x, 0.0);
     EXPECT_EQ(r.waypoints.back().x, 2.0);
     EXPECT_EQ(r.waypoints.back().y, 2.0);
     const double L = std::hypot(2.0, 2.0);
     EXPECT_NEAR(r.arrivalAfter, smoothingUniformTime(L, 2 / L, 2 / L, 0.2, 0.1, 0.5), 1e-9);
     EXPECT_LT(r.arrivalAfter, r.arrivalBefore);
-    EXPECT_EQ(r.costFunctionCalls, cfc);   // the calculator's own count
-    EXPECT_GE(r.costFunctionCalls, 8u + 1u);  // at least the retiming of the 8 input legs and the merged leg
+    EXPECT_EQ(r.costFunctionCalls, cfc);     // the calculator's own count
+    EXPECT_GE(r.costFunctionCalls, 8u + 1u); // at least the retiming of the 8 input legs and the merged leg
 }
 
 TEST(PathSmoother, NeverLaterOnJetLatticePaths)
@@ -100,16 +91,16 @@ TEST(PathSmoother, NeverLaterOnJetLatticePaths)
                         wp[i].x += jit(rng);
                         wp[i].y += jit(rng);
                     }
-                const SmoothingResult r = smoother.smooth(wp);  // departure: wp.front().t = t0
+                const SmoothingResult r = smoother.smooth(wp); // departure: wp.front().t = t0
                 if (!std::isfinite(r.arrivalBefore))
                 {
-                    EXPECT_EQ(r.waypointsAfter, r.waypointsBefore);  // infeasible input is returned unchanged
+                    EXPECT_EQ(r.waypointsAfter, r.waypointsBefore); // infeasible input is returned unchanged
                     continue;
                 }
                 ++feasible;
                 if (variant == 0)
                 {
-                    EXPECT_NEAR(r.arrivalBefore, lat.waypoints.back().t, 1e-9);  // same travel-time code
+                    EXPECT_NEAR(r.arrivalBefore, lat.waypoints.back().t, 1e-9); // same travel-time code
                 }
                 EXPECT_LE(r.arrivalAfter, r.arrivalBefore * (1.0 + kSmoothingTieTolerance));
                 EXPECT_LE(r.waypointsAfter, r.waypointsBefore);
@@ -195,7 +186,7 @@ TEST(PathSmoother, WaitingPathMergedKeepingItsSchedule)
     const std::vector<TimedPoint> timed = {{0, 0, 0}, {1, 0, 6}, {2, 0, 8}, {3, 0, 10}};
     EXPECT_FALSE(std::isfinite(arrivalTime(*ctx, timed, 0.0)));
     const std::vector<TimedPoint> merged = mergeKeepingSchedule(*ctx, timed);
-    ASSERT_EQ(merged.size(), 3u);  // (0,0,0) -> (1,0,6) -> (3,0,10): the last two legs flown in exactly 4
+    ASSERT_EQ(merged.size(), 3u); // (0,0,0) -> (1,0,6) -> (3,0,10): the last two legs flown in exactly 4
     EXPECT_EQ(merged[1].x, 1.0);
     EXPECT_EQ(merged[1].t, 6.0);
     EXPECT_EQ(merged[2].t, 10.0);
@@ -212,14 +203,14 @@ TEST(PathSmoother, WaitingPathMergedKeepingItsSchedule)
     si->setup();
     ompl::geometric::PathGeometric path(si);
     waypointsToPath(timed, path);
-    ASSERT_TRUE(path.check());  // the input is a valid (waiting) plan on the time-augmented space
+    ASSERT_TRUE(path.check()); // the input is a valid (waiting) plan on the time-augmented space
     const SmoothingResult r = PathSmoother(ctx).smooth(path);
     EXPECT_EQ(r.waypointsBefore, 4u);
     EXPECT_EQ(r.waypointsAfter, 3u);
     EXPECT_EQ(r.arrivalAfter, 10.0);
     ASSERT_EQ(path.getStateCount(), 3u);
     EXPECT_EQ(path.getState(1)->as<TimeSE2StateSpace::StateType>()->getTime(), 6.0);
-    EXPECT_TRUE(path.check());  // every merged leg is valid for the motion validator
+    EXPECT_TRUE(path.check()); // every merged leg is valid for the motion validator
 }
 
 TEST(PathSmoother, DepartsAtTheFirstWaypointsTime)

@@ -21,7 +21,7 @@
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
 #include "ompl_glider/ompl/TravelTimeMotionValidator.h"
 #include "ompl_glider/routes/PathSmoother.h"
-#include "planners/TveSearch.h"  // internal to the library (src/)
+#include "planners/TveSearch.h" // internal to the library (src/)
 #include "ompl_glider/planners/ZAStarTVE.h"
 
 using namespace ompl_glider;
@@ -30,7 +30,7 @@ namespace og = ompl::geometric;
 
 namespace
 {
-constexpr double kT = 10.0;  // the lane opens at kT
+constexpr double kT = 10.0; // the lane opens at kT
 
 // Still water, V = 1, region [0, 10] x [-2, 2]; a lane x in [3, 4] across the whole region, closed during [0, kT]:
 // the start (1, 0) is walled in until kT, the goal (8, 0) lies beyond the lane.
@@ -77,9 +77,8 @@ void expectValid(const og::SimpleSetupPtr &ss, const std::vector<TimedPoint> &w)
     ASSERT_TRUE(mv);
     for (std::size_t i = 1; i < w.size(); ++i)
         EXPECT_EQ(mv->classify(w[i - 1].x, w[i - 1].y, w[i - 1].t, w[i].x, w[i].y, w[i].t), MotionVerdict::Valid)
-            << "leg " << i - 1 << " (" << toString(mv->classify(w[i - 1].x, w[i - 1].y, w[i - 1].t, w[i].x, w[i].y,
-                                                                  w[i].t))
-            << ")";
+            << "leg " << i - 1 << " ("
+            << toString(mv->classify(w[i - 1].x, w[i - 1].y, w[i - 1].t, w[i].x, w[i].y, w[i].t)) << ")";
     og::PathGeometric path(si);
     waypointsToPath(w, path);
     EXPECT_TRUE(path.check());
@@ -93,7 +92,7 @@ TveOptions tveOnly()
     o.tightBounds = false;
     return o;
 }
-}  // namespace
+} // namespace
 
 TEST(LatticeWaiting, WalledInStartWaitsForTheLaneToOpen)
 {
@@ -145,7 +144,7 @@ TEST(LatticeWaiting, WalledInStartWaitsForTheLaneToOpen)
 TEST(LatticeWaiting, GoalWindowHeldAtTheGoal)
 {
     GliderProblem p = walledIn();
-    p.environment = nullptr;  // open water: earliest arrival 7
+    p.environment = nullptr; // open water: earliest arrival 7
     p.arriveNotBefore = 12.0;
     p.arriveNotAfter = 13.0;
     std::shared_ptr<GliderContext> ctx;
@@ -209,7 +208,7 @@ TEST(LatticeWaiting, GoalWindowThatCannotBeMet)
     GliderProblem p = walledIn();
     p.environment = nullptr;
     p.arriveNotBefore = 1.0;
-    p.arriveNotAfter = 5.0;  // the earliest arrival is 7
+    p.arriveNotAfter = 5.0; // the earliest arrival is 7
     std::shared_ptr<GliderContext> ctx;
     makeSimpleSetup(p, &ctx);
     TveSearch search(ctx, 0.5, 3);

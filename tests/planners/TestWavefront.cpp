@@ -42,8 +42,8 @@ struct WaveRun
     ob::PlannerStatus status;
     std::shared_ptr<Wavefront> planner;
     og::SimpleSetupPtr ss;
-    bool checked{false};          ///< PathGeometric::check() of the returned path
-    double lastStateTime{0.0};    ///< time of the path's last state
+    bool checked{false};       ///< PathGeometric::check() of the returned path
+    double lastStateTime{0.0}; ///< time of the path's last state
 };
 
 /// Solves p with a Wavefront on a lattice of spacing grid, sectors, intervals dt; checks the returned path.
@@ -84,9 +84,9 @@ GliderProblem uniformProblem(double cu, double cv)
 {
     GliderProblem p;
     p.field = std::make_shared<UniformCurrent>(cu, cv);
-    return p;  // region x in [0, 10], y in [-4, 4], t0 = 0, horizon 60, V = 0.5
+    return p; // region x in [0, 10], y in [-4, 4], t0 = 0, horizon 60, V = 0.5
 }
-}  // namespace
+} // namespace
 
 TEST(Wavefront, UniformCurrentOnALatticeDirectionGivesTheClosedFormStraightLineTime)
 {
@@ -96,9 +96,9 @@ TEST(Wavefront, UniformCurrentOnALatticeDirectionGivesTheClosedFormStraightLineT
     const double cu = 0.2, cv = 0.1, g = 0.4;
     GliderProblem p = uniformProblem(cu, cv);
     p.start.x = 0.8;
-    p.start.y = -2.0;  // grid vertex (2, 5)
+    p.start.y = -2.0; // grid vertex (2, 5)
     p.goal.x = 0.8 + 5 * 3 * g;
-    p.goal.y = -2.0 + 5 * 1 * g;  // grid vertex (17, 10)
+    p.goal.y = -2.0 + 5 * 1 * g; // grid vertex (17, 10)
     const WaveRun r = runWavefront(p, g, 3, 0.0);
     ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
     EXPECT_TRUE(r.checked);
@@ -130,7 +130,7 @@ TEST(Wavefront, UniformCurrentOffTheLatticeDirectionsLiesBetweenTheStraightLineA
     EXPECT_TRUE(r.checked);
     const double lower = straightTime(7 * g, 2 * g, cu, cv, V);
     const double upper = straightTime(5 * g, 0.0, cu, cv, V) + straightTime(2 * g, 2 * g, cu, cv, V);
-    ASSERT_LT(lower, upper);  // the bounds differ: the test can tell a wrong time
+    ASSERT_LT(lower, upper); // the bounds differ: the test can tell a wrong time
     EXPECT_GE(r.planner->getTravelTime(), lower * (1.0 - 1e-9));
     EXPECT_LE(r.planner->getTravelTime(), upper * (1.0 + 1e-6));
 }
@@ -314,7 +314,7 @@ TEST(Wavefront, GoalWindowThatCannotBeHeldIsMetByTimingTheArrival)
     EXPECT_FALSE(none.ss->haveSolutionPath());
     EXPECT_EQ(none.planner->lastOutcome(), WavefrontOutcome::Exhausted);
 
-    p.arriveNotAfter = p.t0 - 1.0;  // a window that ends before the departure
+    p.arriveNotAfter = p.t0 - 1.0; // a window that ends before the departure
     const WaveRun before = runWavefront(p, g, 1, 0.5);
     EXPECT_FALSE(before.ss->haveSolutionPath());
     EXPECT_EQ(before.status, ob::PlannerStatus::ABORT);
@@ -401,7 +401,7 @@ TEST(Wavefront, TheTerminationConditionEndsTheSearchWithoutAPath)
     EXPECT_EQ(st, ob::PlannerStatus::TIMEOUT);
     EXPECT_EQ(w->lastOutcome(), WavefrontOutcome::Terminated);
     EXPECT_FALSE(ss->haveSolutionPath());
-    EXPECT_LE(w->getExpandedNodes(), 64u);  // the condition is asked every 64 expansions
+    EXPECT_LE(w->getExpandedNodes(), 64u); // the condition is asked every 64 expansions
 }
 
 TEST(Wavefront, ThePipelineGivesItTheMissionsLatticeAndItMatchesTve)

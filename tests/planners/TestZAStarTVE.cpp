@@ -25,7 +25,7 @@
 #include "ompl_glider/current/UniformCurrent.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "ompl_glider/ompl/TimeSE2StateSpace.h"
-#include "planners/TveSearch.h"  // internal to the library (src/)
+#include "planners/TveSearch.h" // internal to the library (src/)
 #include "ompl_glider/planners/ZAStarTVE.h"
 
 using namespace ompl_glider;
@@ -38,13 +38,8 @@ namespace
 class DiskEnvironment : public Environment
 {
 public:
-    DiskEnvironment(double cx, double cy, double r) : cx_(cx), cy_(cy), r_(r)
-    {
-    }
-    bool pointFree(double x, double y, double) const override
-    {
-        return std::hypot(x - cx_, y - cy_) > r_;
-    }
+    DiskEnvironment(double cx, double cy, double r) : cx_(cx), cy_(cy), r_(r) {}
+    bool pointFree(double x, double y, double) const override { return std::hypot(x - cx_, y - cy_) > r_; }
     bool legFree(double x1, double y1, double, double x2, double y2, double) const override
     {
         // Distance from the centre to the segment.
@@ -109,13 +104,10 @@ double uniformTime(double L, double px, double py, double cu, double cv, double 
 class Quiet : public ::testing::Environment
 {
 public:
-    void SetUp() override
-    {
-        ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-    }
+    void SetUp() override { ompl::msg::setLogLevel(ompl::msg::LOG_NONE); }
 };
 const auto *const kQuiet = ::testing::AddGlobalTestEnvironment(new Quiet);
-}  // namespace
+} // namespace
 
 // The five start positions of bench_table4 (goal (7.6, 1.2)) and two more pairs crossing the jet.
 struct Pair
@@ -152,10 +144,10 @@ TEST(ZAStarTVE, ZAStarTveWithinHalfPercentOfTveOnTheJet)
         const PlanRun zt = plan(jetProblem(q.sx, q.sy, q.gx, q.gy), "ZTVE");
         ASSERT_EQ(z.status, ob::PlannerStatus::EXACT_SOLUTION);
         ASSERT_EQ(zt.status, ob::PlannerStatus::EXACT_SOLUTION);
-        EXPECT_GE(z.time, tve.time - 1e-9);  // TVE is the lattice optimum
+        EXPECT_GE(z.time, tve.time - 1e-9); // TVE is the lattice optimum
         EXPECT_LE(z.time, 1.005 * tve.time) << "from (" << q.sx << ", " << q.sy << ")";
         EXPECT_LE(zt.time, 1.005 * tve.time);
-        EXPECT_LT(z.cfc, tve.cfc);  // pruning and the heuristic save cost-function calls
+        EXPECT_LT(z.cfc, tve.cfc); // pruning and the heuristic save cost-function calls
         EXPECT_LT(z.cmc, tve.cmc);
         EXPECT_TRUE(z.checked);
         EXPECT_TRUE(zt.checked);
@@ -182,9 +174,9 @@ TEST(ZAStarTVE, UniformCurrentGivesClosedFormStraightLineTime)
         EXPECT_NEAR(r.time, expected, 1e-9 * expected) << config;
         EXPECT_TRUE(r.checked) << config;
         const auto &w = r.planner->getWaypoints();
-        ASSERT_EQ(w.size(), 6u) << config;  // 5 edges of offset (3, 1)
+        ASSERT_EQ(w.size(), 6u) << config; // 5 edges of offset (3, 1)
         for (const auto &wp : w)
-            EXPECT_NEAR((wp.x - 0.4) * 1.0 / 3.0, wp.y + 2.0, 1e-9);  // on the line
+            EXPECT_NEAR((wp.x - 0.4) * 1.0 / 3.0, wp.y + 2.0, 1e-9); // on the line
         // The path's cost under the travel-time objective is the travel time.
         const auto &path = r.ss->getSolutionPath();
         const double cost = path.cost(r.ss->getOptimizationObjective()).value();
@@ -227,7 +219,7 @@ TEST(ZAStarTVE, UnreachableGoalGivesNoSolution)
     for (const char *config : {"TVE", "A*TVE", "ZTVE", "ZA*TVE"})
     {
         const PlanRun r = plan(p, config);
-        EXPECT_EQ(r.status, ob::PlannerStatus::ABORT) << config;  // not TIMEOUT: more time would not help
+        EXPECT_EQ(r.status, ob::PlannerStatus::ABORT) << config; // not TIMEOUT: more time would not help
         EXPECT_EQ(r.planner->lastOutcome(), TveOutcome::Exhausted) << config;
         EXPECT_FALSE(r.ss->getProblemDefinition()->hasSolution()) << config;
         // Exhaustion is bounded: each vertex expanded a few times at most (546 vertices).
@@ -306,7 +298,7 @@ TEST(ZAStarTVE, PathStatesCarryArrivalTimesAndLegHeadings)
     const PlanRun r = plan(jetProblem(3.2, -1.6, 7.6, 1.2), "ZA*TVE");
     ASSERT_EQ(r.status, ob::PlannerStatus::EXACT_SOLUTION);
     const auto &path = r.ss->getSolutionPath();
-    const auto &w = r.planner->getSolutionWaypoints();  // the returned (smoothed, refined) path
+    const auto &w = r.planner->getSolutionWaypoints(); // the returned (smoothed, refined) path
     ASSERT_EQ(path.getStateCount(), w.size());
     ASSERT_GE(w.size(), 2u);
     for (std::size_t i = 0; i < w.size(); ++i)
@@ -315,7 +307,7 @@ TEST(ZAStarTVE, PathStatesCarryArrivalTimesAndLegHeadings)
         EXPECT_EQ(s->getX(), w[i].x);
         EXPECT_EQ(s->getY(), w[i].y);
         EXPECT_EQ(s->getTime(), w[i].t);
-        EXPECT_GE(s->getYaw(), -M_PI);  // SO(2)'s range [-pi, pi)
+        EXPECT_GE(s->getYaw(), -M_PI); // SO(2)'s range [-pi, pi)
         EXPECT_LT(s->getYaw(), M_PI);
         // The yaw is the direction of the leg reaching the state (the first leg's for the start).
         const std::size_t a = i == 0 ? 0 : i - 1, b = i == 0 ? 1 : i;
@@ -348,17 +340,14 @@ TEST(ZAStarTVE, ForbiddenStartGoalAndObstacle)
     const auto &w = r.planner->getWaypoints();
     for (std::size_t i = 1; i < w.size(); ++i)
         EXPECT_TRUE(p.environment->legFree(w[i - 1].x, w[i - 1].y, w[i - 1].t, w[i].x, w[i].y, w[i].t));
-    EXPECT_GT(r.time, 8.0 / 0.7 + 1e-6);  // slower than the blocked straight line
+    EXPECT_GT(r.time, 8.0 / 0.7 + 1e-6); // slower than the blocked straight line
     EXPECT_TRUE(r.checked);
 
     // Blocked start / goal: the status and an error message saying which and why.
     struct Capture : ompl::msg::OutputHandler
     {
         std::string text;
-        void log(const std::string &t, ompl::msg::LogLevel, const char *, int) override
-        {
-            text += t + "\n";
-        }
+        void log(const std::string &t, ompl::msg::LogLevel, const char *, int) override { text += t + "\n"; }
     } capture;
     ompl::msg::useOutputHandler(&capture);
     ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
@@ -388,7 +377,7 @@ TEST(ZAStarTVE, PlannerDataHoldsTheExploredTreeAndCounters)
     ob::PlannerData pd(r.ss->getSpaceInformation());
     r.planner->getPlannerData(pd);
     EXPECT_GT(pd.numVertices(), r.planner->getWaypoints().size());
-    EXPECT_EQ(pd.numEdges(), pd.numVertices() - 1);  // a tree
+    EXPECT_EQ(pd.numEdges(), pd.numVertices() - 1); // a tree
     EXPECT_EQ(pd.numStartVertices(), 1u);
     EXPECT_EQ(pd.numGoalVertices(), 1u);
     // CFC of the search plus the smoothing and refinement of the returned path
@@ -455,7 +444,7 @@ TEST(ZAStarTVE, EveryNumericParameterTakesItsDeclaredRangeAndNothingBeyond)
         const std::string range = param->getRangeSuggestion();
         const std::size_t a = range.find(':'), b = range.rfind(':');
         if (a == std::string::npos || a == b)
-            continue;  // "0,1": a switch
+            continue; // "0,1": a switch
         const double lo = std::stod(range.substr(0, a)), hi = std::stod(range.substr(b + 1));
         ASSERT_LT(lo, hi) << name << " " << range;
         const bool integer = name == "sectors" || name == "coarse_factor" || name == "corridor_blocks" ||
@@ -475,7 +464,7 @@ TEST(ZAStarTVE, EveryNumericParameterTakesItsDeclaredRangeAndNothingBeyond)
         for (const double v : {lo - beyond, hi + beyond})
         {
             if (integer && v < 0.0)
-                continue;  // an unsigned parameter cannot be given a negative number
+                continue; // an unsigned parameter cannot be given a negative number
             bool taken = false;
             try
             {
@@ -488,7 +477,7 @@ TEST(ZAStarTVE, EveryNumericParameterTakesItsDeclaredRangeAndNothingBeyond)
         }
         ++checked;
     }
-    EXPECT_GE(checked, 9);  // grid_size, sectors and ZA*TVE's own numbers
+    EXPECT_GE(checked, 9); // grid_size, sectors and ZA*TVE's own numbers
     // a value the C++ API and the declared range both take (1..64 declared against 1..10000 accepted before)
     EXPECT_TRUE(za.params().setParam("zermelo_steps", "100"));
     EXPECT_EQ(za.getZermeloSteps(), 100u);
@@ -518,7 +507,7 @@ TEST(TveSearch, CalcOptDirInUniformCurrentKeepsTheEdgeCourse)
     TveSearch s(ctx, 0.4, 3);
     const auto phi = s.calcOptimalCourse(1.0, 1.0, 0.0, 2.2, 1.4, 2.0, 3);
     ASSERT_TRUE(phi.has_value());
-    EXPECT_NEAR(*phi, std::atan2(0.4, 1.2), 1e-12);  // no gradients: the heading, hence the course, is constant
+    EXPECT_NEAR(*phi, std::atan2(0.4, 1.2), 1e-12); // no gradients: the heading, hence the course, is constant
 }
 
 TEST(TveSearch, CalcOptDirMatchesAnIndependentZermeloIntegrationInShear)
@@ -590,7 +579,7 @@ TEST(ZAStarTVE, BenchmarkLogsCostFunctionAndCurrentModelCalls)
         cfc[i] = std::stoull(run.at("cost function calls INTEGER"));
         EXPECT_GT(cfc[i], 0u);
     }
-    EXPECT_EQ(exp.planners[0].name, "geometric_TVE");  // Benchmark prefixes the planner type
+    EXPECT_EQ(exp.planners[0].name, "geometric_TVE"); // Benchmark prefixes the planner type
     EXPECT_LT(cfc[1], cfc[0]);
 }
 
@@ -656,7 +645,7 @@ TEST(TveSearch, DepartsAtTheGivenTimeInsideTheWindow)
     // run() departs at its t0 (d[s] = t0); a t0 outside [region.tMin, region.tMax] or not finite is an invalid start.
     GliderProblem p = jetProblem(3.2, -1.6, 7.6, 1.2);
     p.t0 = 2.0;
-    auto ctx = makeGliderContext(p);  // window [2, 62]
+    auto ctx = makeGliderContext(p); // window [2, 62]
     TveSearch search(ctx, 0.4, 3);
     const TveResult r = search.run(3.2, -1.6, 2.0, 7.6, 1.2, TveOptions{});
     ASSERT_EQ(r.outcome, TveOutcome::Exact);
@@ -665,7 +654,7 @@ TEST(TveSearch, DepartsAtTheGivenTimeInsideTheWindow)
     const TveResult later = search.run(3.2, -1.6, 5.0, 7.6, 1.2, TveOptions{});
     ASSERT_EQ(later.outcome, TveOutcome::Exact);
     EXPECT_EQ(later.waypoints.front().t, 5.0);
-    EXPECT_NE(later.travelTime, r.travelTime);  // the jet meanders: the departure time matters
+    EXPECT_NE(later.travelTime, r.travelTime); // the jet meanders: the departure time matters
     for (double t0 : {1.0, 62.5, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
     {
         const TveResult bad = search.run(3.2, -1.6, t0, 7.6, 1.2, TveOptions{});
@@ -703,5 +692,5 @@ TEST(ZAStarTVE, DepartsAtTheStartStateTime)
     const PlanRun at7 = plan(p, "TVE");
     ASSERT_EQ(at7.status, ob::PlannerStatus::EXACT_SOLUTION);
     EXPECT_EQ(r.planner->getTravelTime(), at7.time);
-    EXPECT_EQ(restart(66.0), ob::PlannerStatus::INVALID_START);  // after the window [5, 65]
+    EXPECT_EQ(restart(66.0), ob::PlannerStatus::INVALID_START); // after the window [5, 65]
 }

@@ -58,7 +58,7 @@ TEST(FirstArrival, TheLevelSetFamilysAnswerIsTheSolversAndTheStraightCoursesTime
     const double along = (0.2 * dx - 0.1 * dy) / d, across = (0.2 * dy + 0.1 * dx) / d;
     const double exact = d / (along + std::sqrt(1.0 - across * across));
     EXPECT_NEAR(a->time - p.t0, exact, 0.02 * exact);
-    EXPECT_GE(a->time - p.t0, exact * (1.0 - 1e-3));  // first order, never early by much
+    EXPECT_GE(a->time - p.t0, exact * (1.0 - 1e-3)); // first order, never early by much
 
     // a budget far below the trip's work ends it before the goal, and says so
     const std::optional<FirstArrival> cut = pipelineView(*planner).firstArrival(setup, tEnd, a->work / 10, {});

@@ -33,7 +33,7 @@ nlohmann::json readJson(const fs::path &p)
     std::ifstream in(p);
     return nlohmann::json::parse(in);
 }
-}  // namespace
+} // namespace
 
 TEST(Isochrones, UniformCurrentContoursAreTheReachableCircles)
 {
@@ -64,7 +64,7 @@ TEST(Isochrones, UniformCurrentContoursAreTheReachableCircles)
     {
         const double t = features[k]["properties"]["time"].get<double>();
         EXPECT_NEAR(t, 2.0 * (k + 1), 1e-9);
-        EXPECT_TRUE(features[k]["properties"]["time_iso"].is_null());  // no dates in a dimensionless mission
+        EXPECT_TRUE(features[k]["properties"]["time_iso"].is_null()); // no dates in a dimensionless mission
         // Nested discs (|c| < V): the set reached by t is the disc of centre start + c t, radius V t.
         const double cx = 2 + 0.1 * t, cy = 0.05 * t, R = 0.5 * t;
         std::size_t points = 0;
@@ -73,7 +73,7 @@ TEST(Isochrones, UniformCurrentContoursAreTheReachableCircles)
             {
                 const double x = p[0].get<double>(), y = p[1].get<double>();
                 if (x <= 1e-9 || x >= 10 - 1e-9 || y <= -4 + 1e-9 || y >= 4 - 1e-9)
-                    continue;  // where the disc meets the region's edge
+                    continue; // where the disc meets the region's edge
                 EXPECT_NEAR(std::hypot(x - cx, y - cy), R, 0.5 * h) << "t = " << t;
                 ++points;
             }
@@ -90,9 +90,10 @@ TEST(Isochrones, ForecastIsochronesAreGeographicAndDated)
     MissionSpec spec = loadMission(src + "/examples/labrador_forecast.yaml");
     spec.outputs.directory = (dir / "out").string();
     spec.outputs.files = {OutputFormatId::Summary, OutputFormatId::Isochrones};
-    spec.departure.window = false;  // one departure (the window's start): the test is about the isochrones
+    spec.departure.window = false; // one departure (the window's start): the test is about the isochrones
     spec.departure.time = spec.departure.begin;
-    // what the test is about needs no dive profiles and no bicubic/Akima interpolation (5x the work, 12x more sanitized)
+    // what the test is about needs no dive profiles and no bicubic/Akima interpolation (5x the work, 12x more
+    // sanitized)
     spec.dive.enabled = false;
     spec.current.xyInterpolation = Interp2D::Bilinear;
     spec.current.timeInterpolation = Interp1D::Linear;
@@ -112,7 +113,7 @@ TEST(Isochrones, ForecastIsochronesAreGeographicAndDated)
         EXPECT_GT(t, last);
         last = t;
         ASSERT_TRUE(f["properties"]["time_iso"].is_string());
-        EXPECT_EQ(f["properties"]["time_iso"].get<std::string>().size(), 20u);  // 2026-03-15T06:00:00Z
+        EXPECT_EQ(f["properties"]["time_iso"].get<std::string>().size(), 20u); // 2026-03-15T06:00:00Z
         for (const auto &line : f["geometry"]["coordinates"])
             for (const auto &p : line)
             {

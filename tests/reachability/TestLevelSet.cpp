@@ -58,7 +58,7 @@ std::pair<double, double> uniformArrival(double wx, double wy, double cx, double
         return {lo, hi};
     return {hi > 0 ? hi : INFINITY, INFINITY};
 }
-}  // namespace
+} // namespace
 
 TEST(LevelSet, UniformCurrentGivesTheExactDisc)
 {

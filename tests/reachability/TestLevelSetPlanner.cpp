@@ -53,9 +53,9 @@ double latticeTime(const GliderProblem &p)
     z->setGridSize(0.2);
     ss->setPlanner(z);
     EXPECT_EQ(ss->solve(600.0), ompl::base::PlannerStatus::EXACT_SOLUTION);
-    return z->getWaypoints().back().t - p.t0;  // refined: the pipeline's best
+    return z->getWaypoints().back().t - p.t0; // refined: the pipeline's best
 }
-}  // namespace
+} // namespace
 
 TEST(LevelSetPlanner, JetAndIslandsGiveCheckedPathsNoSlowerThanRefinedLattice)
 {
@@ -79,7 +79,7 @@ TEST(LevelSetPlanner, JetAndIslandsGiveCheckedPathsNoSlowerThanRefinedLattice)
         const LsRun r = plan(p, 0.05);
         ASSERT_EQ(r.status, ompl::base::PlannerStatus::EXACT_SOLUTION);
         auto &path = static_cast<ompl::geometric::PathGeometric &>(*r.ss->getProblemDefinition()->getSolutionPath());
-        EXPECT_TRUE(path.check());  // every leg valid for the motion validator: no island crossed
+        EXPECT_TRUE(path.check()); // every leg valid for the motion validator: no island crossed
         const double flown = r.planner->getWaypoints().back().t - p.t0;
         const double front = r.planner->getLevelSetTime();
         const double lattice = latticeTime(p);
@@ -120,7 +120,7 @@ TEST(LevelSetPlanner, WaitsOutAClosedLaneAndReportsNoPathWhenWalledIn)
         // Arrival: the lane opens at 10, then 5 units at V = 0.5 (the front's 20 within the resolution).
         const double arrival = r.planner->getWaypoints().back().t;
         EXPECT_NEAR(arrival, 20.0, 0.1);
-        EXPECT_GE(arrival, 20.0 - 1e-9);  // it cannot pass the lane before it opens
+        EXPECT_GE(arrival, 20.0 - 1e-9); // it cannot pass the lane before it opens
         // The path holds (a repeated position with a later time).
         bool holds = false;
         const auto &w = r.planner->getWaypoints();
@@ -182,7 +182,8 @@ TEST(LevelSetPlanner, ReachableSetThroughThePipelineInterfaceIsTheDriftingCircle
     for (const PlannerEntry &entry : plannerRegistry())
     {
         // stint planners need the mission's stints section; of OMPL's own planners (the default answers) one is asked
-        if (entry.family == PlannerFamily::Stints || (entry.family == PlannerFamily::Sampling && entry.name != "RRTstar"))
+        if (entry.family == PlannerFamily::Stints ||
+            (entry.family == PlannerFamily::Sampling && entry.name != "RRTstar"))
             continue;
         const auto planner = entry.make(ss->getSpaceInformation(), ctx);
         const std::optional<ReachableSet> r = pipelineView(*planner).reachableSet(setup, times, 1.0);

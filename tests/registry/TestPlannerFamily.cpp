@@ -34,13 +34,13 @@ void registerOnce(PlannerFamily family, const std::string &name)
     if (!findPlanner(name))
         registerPlanner(strangerOf(family, name));
 }
-}  // namespace
+} // namespace
 
 TEST(PlannerFamily, EachBuiltInFamilyAnswersItsFirstEntry)
 {
     EXPECT_EQ(plannerOfFamily(PlannerFamily::LevelSet).name, "LevelSet");
     EXPECT_EQ(plannerOfFamily(PlannerFamily::Headings).name, "Isochrone");
-    EXPECT_EQ(plannerOfFamily(PlannerFamily::Lattice).name, "TVE");  // before A*TVE, ..., Wavefront
+    EXPECT_EQ(plannerOfFamily(PlannerFamily::Lattice).name, "TVE"); // before A*TVE, ..., Wavefront
     EXPECT_EQ(plannerOfFamily(PlannerFamily::Sampling).name, "RRTstar");
     for (const PlannerFamily f : {PlannerFamily::Lattice, PlannerFamily::LevelSet, PlannerFamily::Headings,
                                   PlannerFamily::Sampling, PlannerFamily::Stints})

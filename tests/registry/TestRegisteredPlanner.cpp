@@ -113,7 +113,7 @@ std::string mission(const std::string &extra)
            "planner:\n  name: straight_leg\n  horizon: 60\n" +
            extra;
 }
-}  // namespace
+} // namespace
 
 TEST(RegisteredPlanner, PlansThroughTheWholePipelineLikeABuiltInOne)
 {
@@ -165,7 +165,8 @@ TEST(RegisteredPlanner, ThePipelineActsOnItsCauseNotItsWords)
     // the same words under three causes; the pipeline's handling follows the cause alone
     ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
     registerOnce();
-    const std::string rock = "forbidden:\n  obstacles:\n    - {name: rock, points: [[3, -1], [5, -1], [5, 1], [3, 1]]}\n";
+    const std::string rock =
+        "forbidden:\n  obstacles:\n    - {name: rock, points: [[3, -1], [5, -1], [5, 1], [3, 1]]}\n";
     const auto run = [&](NoPathCause c, const std::string &current) {
         std::string text = mission("  parameters: {cause: " + std::to_string(static_cast<int>(c)) + "}\n" + rock);
         if (!current.empty())

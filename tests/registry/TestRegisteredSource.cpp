@@ -36,7 +36,7 @@ namespace
 struct CsvGrid
 {
     std::vector<double> x, y;
-    std::map<std::pair<double, double>, std::pair<double, double>> water;  // (x, y) -> (u, v)
+    std::map<std::pair<double, double>, std::pair<double, double>> water; // (x, y) -> (u, v)
 };
 
 CsvGrid readCsvGrid(const std::string &path)
@@ -70,8 +70,8 @@ CsvGrid readCsvGrid(const std::string &path)
                 used = 0;
             }
             if (used != cells[k].size() || cells[k].empty() || !std::isfinite(v))
-                throw Error("'" + path + "':" + std::to_string(number) + ": column " + std::to_string(k + 1) +
-                            ": '" + cells[k] + "' is not a number");
+                throw Error("'" + path + "':" + std::to_string(number) + ": column " + std::to_string(k + 1) + ": '" +
+                            cells[k] + "' is not a number");
             return v;
         };
         if (cells.size() != 4)
@@ -102,10 +102,7 @@ CsvGrid readCsvGrid(const std::string &path)
 class CsvGridSource final : public GriddedSource
 {
 public:
-    bool geographic(const ForecastRequest &) const override
-    {
-        return false;
-    }
+    bool geographic(const ForecastRequest &) const override { return false; }
     ForecastExtent extent(const ForecastRequest &r) const override
     {
         const CsvGrid g = readCsvGrid(r.files.at(0));
@@ -121,7 +118,7 @@ public:
     ForecastTimeAxis timeAxis(const ForecastRequest &) const override
     {
         ForecastTimeAxis a;
-        a.steady = true;  // no time axis: the same currents at every time
+        a.steady = true; // no time axis: the same currents at every time
         return a;
     }
     LoadedForecast load(const ForecastRequest &r) const override
@@ -218,7 +215,7 @@ std::string readText(const fs::path &p)
     std::ifstream in(p);
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
-}  // namespace
+} // namespace
 
 TEST(RegisteredSource, PlansThroughTheWholePipelineLikeTheBuiltInOne)
 {
@@ -231,8 +228,8 @@ TEST(RegisteredSource, PlansThroughTheWholePipelineLikeTheBuiltInOne)
     const fs::path out = fs::temp_directory_path() / "ompl_glider_registered_source" / "out";
     fs::remove_all(out);
     const std::string grid = writeGrid("uniform.csv");
-    const MissionSpec spec =
-        parseMission(sourceMission(grid, "outputs: {directory: " + out.string() + ", files: [summary, csv]}\n"), "c.yaml");
+    const MissionSpec spec = parseMission(
+        sourceMission(grid, "outputs: {directory: " + out.string() + ", files: [summary, csv]}\n"), "c.yaml");
     EXPECT_TRUE(spec.current.isForecast());
     const MissionProblem problem(spec);
     ASSERT_NE(problem.getField()->grid(), nullptr);
@@ -244,7 +241,7 @@ TEST(RegisteredSource, PlansThroughTheWholePipelineLikeTheBuiltInOne)
     ASSERT_TRUE(r.plan.solved) << r.plan.reason;
     const double exact = straightTime({2000, 3000}, {17000, 12000});
     EXPECT_NEAR(r.plan.travelTime, exact, 1e-6 * exact) << r.plan.travelTime - exact;
-    EXPECT_GE(r.plan.travelTime, exact * (1.0 - 1e-9));  // nothing flies faster than the optimum
+    EXPECT_GE(r.plan.travelTime, exact * (1.0 - 1e-9)); // nothing flies faster than the optimum
     ASSERT_FALSE(writeOutputs(r, problem).empty());
     const std::string json = readText(out / "summary.json");
     EXPECT_NE(json.find("csv_grid"), std::string::npos);
@@ -349,13 +346,13 @@ TEST(RegisteredSource, RegistrationRefusesWhatIsNotAKind)
 {
     registerSourceOnce();
     CurrentFieldKind twin = *findCurrentFieldKind("csv_grid");
-    EXPECT_THROW(registerCurrentFieldKind(twin), Error);  // the name is taken
+    EXPECT_THROW(registerCurrentFieldKind(twin), Error); // the name is taken
     twin.name = "csv_grid_2";
     twin.make = [](const std::map<std::string, double> &) { return std::shared_ptr<const CurrentField>(); };
-    EXPECT_THROW(registerCurrentFieldKind(twin), Error);  // both a make function and a source
+    EXPECT_THROW(registerCurrentFieldKind(twin), Error); // both a make function and a source
     twin.make = nullptr;
     twin.source = nullptr;
-    EXPECT_THROW(registerCurrentFieldKind(twin), Error);  // neither
+    EXPECT_THROW(registerCurrentFieldKind(twin), Error); // neither
     EXPECT_EQ(findCurrentFieldKind("csv_grid_2"), nullptr);
     // an analytic call of a gridded kind is refused
     EXPECT_THROW(makeAnalyticField("csv_grid"), Error);

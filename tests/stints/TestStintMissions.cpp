@@ -37,14 +37,15 @@ forbidden:
     - name: Isle
       points: [[8, -2], [10, -2], [10, 0.5], [8, 0.5]]
 planner:
-  name: )" + planner + R"(
+  name: )" +
+           planner + R"(
 stints:
   duration: 2.304
   mission_duration: 27.648
   bearing_step: 20
 )" + extra;
 }
-}  // namespace
+} // namespace
 
 TEST(StintMissions, EveryStintPlannerFliesTheMissionThroughThePipeline)
 {
@@ -62,7 +63,7 @@ TEST(StintMissions, EveryStintPlannerFliesTheMissionThroughThePipeline)
         EXPECT_NEAR(s.plan.remainingDistance, std::hypot(g.x - last.x, g.y - last.y), 1e-12);
         if (!s.plan.grounded)
         {
-            EXPECT_EQ(s.plan.bearings.size(), 12u) << name;  // 4 days of 8 h stints
+            EXPECT_EQ(s.plan.bearings.size(), 12u) << name; // 4 days of 8 h stints
             EXPECT_NEAR(last.t, 27.648, 1e-9);
         }
         EXPECT_EQ(r.plan.path.size(), s.plan.surfacings.size());
@@ -158,8 +159,8 @@ TEST(StintMissions, LatticePathsFlownAsOneHourStintsLoseUnderTwoPercent)
         const OptimumReference opt = optimumReference(problem, 0.0, 0.5, 1.2 * p.travelTime);
         ASSERT_TRUE(opt.found);
         EXPECT_GT(s.stintTravelTime, opt.travelTime * (1.0 - 1e-3));
-        std::printf("(%.1f, %.1f) -> (%.1f, %.1f): path %.4f, 1 h stints %.4f (%zu), loss %+.2f %%, optimum %.4f\n",
-                    sx, sy, gx, gy, p.travelTime, s.stintTravelTime, s.plan.bearings.size(), 100.0 * s.loss,
+        std::printf("(%.1f, %.1f) -> (%.1f, %.1f): path %.4f, 1 h stints %.4f (%zu), loss %+.2f %%, optimum %.4f\n", sx,
+                    sy, gx, gy, p.travelTime, s.stintTravelTime, s.plan.bearings.size(), 100.0 * s.loss,
                     opt.travelTime);
     }
 }
@@ -181,8 +182,9 @@ TEST(StintMissions, TheExampleWritesItsHeadingTableSummaryAndMap)
         return s.str();
     };
     const std::string csv = read("stints.csv");
-    EXPECT_EQ(static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')), r.plan.stints->plan.bearings.size() + 1);
-    EXPECT_NE(csv.find("2026-04-01T08:00:00Z"), std::string::npos);  // the second surfacing, 8 h after the epoch
+    EXPECT_EQ(static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')),
+              r.plan.stints->plan.bearings.size() + 1);
+    EXPECT_NE(csv.find("2026-04-01T08:00:00Z"), std::string::npos); // the second surfacing, 8 h after the epoch
     const nlohmann::json j = nlohmann::json::parse(read("summary.json"));
     EXPECT_DOUBLE_EQ(j["remaining_distance"].get<double>(), r.plan.stints->plan.remainingDistance);
     EXPECT_EQ(j["bearings"].size(), 12u);

@@ -41,7 +41,7 @@ std::shared_ptr<ForbiddenRegions> jetIsland()
     regions->add(std::make_shared<StaticRegion>("Isle", Polygon({{4.0, -1.0}, {5.5, -1.0}, {5.5, 0.6}, {4.0, 0.6}})));
     return regions;
 }
-}  // namespace
+} // namespace
 
 TEST(Stints, BearingConventionIsClockwiseFromNorth)
 {
@@ -75,7 +75,7 @@ TEST(Stints, UniformCurrentSurfacingsInClosedForm)
         EXPECT_NEAR(p.surfacings[k + 1].y, y, 1e-12) << k;
         EXPECT_NEAR(p.surfacings[k + 1].t, t, 1e-12) << k;
     }
-    EXPECT_NEAR(p.surfacings.back().t, 3.0 + T, 1e-12);  // the last stint ends with the mission
+    EXPECT_NEAR(p.surfacings.back().t, 3.0 + T, 1e-12); // the last stint ends with the mission
     EXPECT_NEAR(p.remainingDistance, std::hypot(50.0 - x, 50.0 - y), 1e-12);
     EXPECT_DOUBLE_EQ(p.cost, p.remainingDistance);
     EXPECT_FALSE(p.grounded);
@@ -107,7 +107,7 @@ TEST(Stints, StintIntoAnIslandStopsThere)
     StintSettings s = settings(4.0, 20.0);
     s.step = 0.05;
     const StintSimulator sim(field, regions, V, 0.0, {0.0, 0.0}, 0.0, {10.0, 0.0}, s);
-    const StintPlan p = sim.direct();  // due east, through the rock
+    const StintPlan p = sim.direct(); // due east, through the rock
     ASSERT_TRUE(p.grounded);
     EXPECT_NE(p.groundedWhy.find("Rock"), std::string::npos) << p.groundedWhy;
     const TimedPoint &end = p.surfacings.back();
@@ -116,7 +116,7 @@ TEST(Stints, StintIntoAnIslandStopsThere)
     EXPECT_GE(end.x, 3.0 - V * s.step - 1e-12);
     EXPECT_NEAR(end.y, 0.0, 1e-12);
     EXPECT_LT(end.t, sim.endTime());
-    EXPECT_EQ(p.bearings.size(), 2u);  // the second stint (from x = 2) meets it
+    EXPECT_EQ(p.bearings.size(), 2u); // the second stint (from x = 2) meets it
     for (const TimedPoint &w : p.track)
         EXPECT_TRUE(regions->pointFree(w.x, w.y, w.t));
     EXPECT_NEAR(p.remainingDistance, 10.0 - end.x, 1e-12);
@@ -157,9 +157,9 @@ TEST(Stints, OptimisationIsNeverWorseThanItsInitialGuess)
 {
     auto field = std::make_shared<MeanderingJet>();
     for (StintObjective o : {StintObjective::RemainingDistance, StintObjective::EarliestArrival})
-        for (const auto &[sx, sy, gx, gy] : {std::array<double, 4>{1.0, -3.0, 8.0, 3.0},
-                                             std::array<double, 4>{1.0, 3.0, 9.0, -2.5},
-                                             std::array<double, 4>{0.5, -2.0, 9.5, 2.0}})
+        for (const auto &[sx, sy, gx, gy] :
+             {std::array<double, 4>{1.0, -3.0, 8.0, 3.0}, std::array<double, 4>{1.0, 3.0, 9.0, -2.5},
+              std::array<double, 4>{0.5, -2.0, 9.5, 2.0}})
         {
             const StintSimulator sim(field, jetIsland(), 0.5, field->maxSpeed(Region{}), {sx, sy}, 0.0, {gx, gy},
                                      settings(1.5, 9.0, o, o == StintObjective::EarliestArrival ? 0.2 : 0.0));

@@ -21,20 +21,17 @@ namespace ompl_glider
 /// @brief One dive profile: the glider climbs to z_climb-to and dives to z_dive-to (depths positive down).
 struct DiveProfile
 {
-    double climbTo{0.0};  ///< shallowest depth of the saw-tooth
-    double diveTo{0.0};   ///< deepest depth of the saw-tooth
+    double climbTo{0.0}; ///< shallowest depth of the saw-tooth
+    double diveTo{0.0};  ///< deepest depth of the saw-tooth
     /// @brief Depth amplitude diveTo - climbTo (the data a profile collects grows with it).
-    double amplitude() const
-    {
-        return diveTo - climbTo;
-    }
+    double amplitude() const { return diveTo - climbTo; }
 };
 
 /// @brief How the profile of a leg is chosen ([EichhornOceans] Sec. III.B).
 enum class DiveProfileSelection
 {
-    Fastest,           ///< the profile with the least travel time
-    DeepestUnderLimit  ///< the largest amplitude whose time stays under the limit (data at all depths), else fastest
+    Fastest,          ///< the profile with the least travel time
+    DeepestUnderLimit ///< the largest amplitude whose time stays under the limit (data at all depths), else fastest
 };
 
 /// @brief Parameters that generate the profile set ([EichhornOceans] Sec. III.B, Fig. 4) and choose among it.
@@ -44,19 +41,19 @@ enum class DiveProfileSelection
 /// (With one level, the climb-to level is zMin and the dive-to level is zMax.)
 struct DiveProfileParams
 {
-    double zMin{0.0};          ///< minimum diving depth z_min
-    double zMax{100.0};        ///< maximum diving depth z_max
-    double climbToMax{0.0};    ///< maximum climb-to depth z_climb-to_max
-    double minRange{10.0};     ///< minimum dive amplitude z_minRange
-    int climbToLevels{1};      ///< n_climb-to_levels
-    int diveToLevels{1};       ///< n_dive-to_levels
-    double step{0.1};          ///< h of Table I: the leg is split into ceil(1/h) segments
+    double zMin{0.0};       ///< minimum diving depth z_min
+    double zMax{100.0};     ///< maximum diving depth z_max
+    double climbToMax{0.0}; ///< maximum climb-to depth z_climb-to_max
+    double minRange{10.0};  ///< minimum dive amplitude z_minRange
+    int climbToLevels{1};   ///< n_climb-to_levels
+    int diveToLevels{1};    ///< n_dive-to_levels
+    double step{0.1};       ///< h of Table I: the leg is split into ceil(1/h) segments
     DiveProfileSelection selection{DiveProfileSelection::Fastest};
     /// For DeepestUnderLimit: a profile qualifies when its time <= maxTimeFactor * (fastest time) ...
     double maxTimeFactor{1.2};
     /// ... and <= maxTime (absolute, field time units; +inf = no absolute limit).
     double maxTime{std::numeric_limits<double>::infinity()};
-    double clearance{0.0};     ///< distance kept above the seafloor when a bathymetry is given
+    double clearance{0.0}; ///< distance kept above the seafloor when a bathymetry is given
 };
 
 /// @brief Builds and validates the profile set of @p params (throws Error naming the bad parameter).
@@ -66,13 +63,8 @@ std::vector<DiveProfile> makeDiveProfiles(const DiveProfileParams &params);
 class FunctionBathymetry : public Bathymetry
 {
 public:
-    explicit FunctionBathymetry(std::function<double(double, double)> depth) : depth_(std::move(depth))
-    {
-    }
-    double seafloorDepth(double x, double y) const override
-    {
-        return depth_(x, y);
-    }
+    explicit FunctionBathymetry(std::function<double(double, double)> depth) : depth_(std::move(depth)) {}
+    double seafloorDepth(double x, double y) const override { return depth_(x, y); }
 
 private:
     std::function<double(double, double)> depth_;
@@ -81,9 +73,9 @@ private:
 /// @brief Outcome of the optimal-dive-profile evaluation of one leg.
 struct DiveLegResult
 {
-    double travelTime{std::numeric_limits<double>::infinity()};  ///< time of the chosen profile (+inf: impassable)
-    int profile{-1};                   ///< index of the chosen profile in profiles(); -1 when none is feasible
-    std::vector<double> profileTimes;  ///< travel time of every profile (same order as profiles())
+    double travelTime{std::numeric_limits<double>::infinity()}; ///< time of the chosen profile (+inf: impassable)
+    int profile{-1};                  ///< index of the chosen profile in profiles(); -1 when none is feasible
+    std::vector<double> profileTimes; ///< travel time of every profile (same order as profiles())
 };
 
 /// @brief Travel time of legs flown with dive profiles through a depth-varying current.
@@ -108,9 +100,8 @@ public:
     /// @param dive profile set and selection
     /// @param bathymetry optional seafloor
     /// @param threads pool size for bestProfile(); 0 = all cores, 1 = serial
-    DiveProfileTravelTime(std::shared_ptr<const CurrentField> field, TravelTimeParams travel,
-                          DiveProfileParams dive, std::shared_ptr<const Bathymetry> bathymetry = nullptr,
-                          unsigned threads = 0);
+    DiveProfileTravelTime(std::shared_ptr<const CurrentField> field, TravelTimeParams travel, DiveProfileParams dive,
+                          std::shared_ptr<const Bathymetry> bathymetry = nullptr, unsigned threads = 0);
 
     /// @brief TRAVELTIME-GLIDER ([EichhornOceans] Table I) of one profile; +inf when impassable. One CFC.
     double travelTime(const DiveProfile &profile, double x1, double y1, double x2, double y2, double tStart) const;
@@ -125,30 +116,15 @@ public:
     int choose(const std::vector<double> &times) const;
 
     /// @brief The generated profile set.
-    const std::vector<DiveProfile> &profiles() const
-    {
-        return profiles_;
-    }
+    const std::vector<DiveProfile> &profiles() const { return profiles_; }
     /// @brief Dive parameters in use.
-    const DiveProfileParams &diveParams() const
-    {
-        return dive_;
-    }
+    const DiveProfileParams &diveParams() const { return dive_; }
     /// @brief Travel parameters in use.
-    const TravelTimeParams &travelParams() const
-    {
-        return segments_.params();
-    }
+    const TravelTimeParams &travelParams() const { return segments_.params(); }
     /// @brief Threads used by bestProfile().
-    unsigned threads() const
-    {
-        return pool_ ? pool_->size() : 1u;
-    }
+    unsigned threads() const { return pool_ ? pool_->size() : 1u; }
     /// @brief Number of profile evaluations (CFC) so far.
-    std::uint64_t costFunctionCalls() const
-    {
-        return calls_.load();
-    }
+    std::uint64_t costFunctionCalls() const { return calls_.load(); }
 
 private:
     DiveLegResult evaluate(double x1, double y1, double x2, double y2, double tStart, bool parallel) const;
@@ -167,4 +143,4 @@ private:
 DiveProfileSelection diveProfileSelectionFromString(const std::string &name);
 /// @brief Name of a selection rule.
 std::string toString(DiveProfileSelection selection);
-}  // namespace ompl_glider
+} // namespace ompl_glider

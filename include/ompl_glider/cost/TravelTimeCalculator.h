@@ -15,9 +15,9 @@ namespace ompl_glider
 /// direction p in current c: the roots of |s p - c| = V (line-circle intersection, [EichhornRAS] Eq. 4-6).
 struct AlongTrackSpeeds
 {
-    bool feasible{false};  ///< false when disc <= 0 or the fast root <= 0 (the current pushes the vehicle off or back)
-    double fast{0.0};      ///< p.c + sqrt(disc): the fastest progress along the leg
-    double slow{0.0};      ///< p.c - sqrt(disc): the slowest progress that stays on the leg (<= 0: it can hold)
+    bool feasible{false}; ///< false when disc <= 0 or the fast root <= 0 (the current pushes the vehicle off or back)
+    double fast{0.0};     ///< p.c + sqrt(disc): the fastest progress along the leg
+    double slow{0.0};     ///< p.c - sqrt(disc): the slowest progress that stays on the leg (<= 0: it can hold)
 };
 
 /// @brief Roots of the line-circle intersection for unit direction (px, py), current c and speed V.
@@ -30,11 +30,11 @@ AlongTrackSpeeds alongTrackSpeeds(double px, double py, const Velocity &c, doubl
 /// chosen in the field's time unit (1e-3 for the dimensionless jet; about 1 s for missions in metres/seconds).
 struct TravelTimeParams
 {
-    double speed{0.5};  ///< vehicle speed through water V (0.5 in the meandering-jet problem)
-    double h{0.1};      ///< initial step, fraction of the leg length
-    double hMin{1e-3};  ///< smallest step, fraction of the leg length
-    double hMax{0.5};   ///< largest step, fraction of the leg length
-    double eps{1e-3};   ///< tolerance of the local error |t_rough - t_improved| per step (time units)
+    double speed{0.5}; ///< vehicle speed through water V (0.5 in the meandering-jet problem)
+    double h{0.1};     ///< initial step, fraction of the leg length
+    double hMin{1e-3}; ///< smallest step, fraction of the leg length
+    double hMax{0.5};  ///< largest step, fraction of the leg length
+    double eps{1e-3};  ///< tolerance of the local error |t_rough - t_improved| per step (time units)
     /// Optional tolerance relative to the leg ("honest times"): > 0, a step is judged against
     /// min(eps, rtol * t_step) instead of eps, t_step being the step's own (improved) time, so that the errors
     /// accepted along a leg add up to at most rtol times the leg's time whatever the field's time unit. 0: off, the
@@ -44,8 +44,8 @@ struct TravelTimeParams
     /// sits at hMin; on the jet rtol = 1e-6 takes 34-68 times the current-model calls per CFC of the default, while
     /// the kept (second-order) time is far better than rtol (TestTravelTime, RelativeToleranceCostOnTheJetMeasured).
     double rtol{0.0};
-    double tau{0.9};    ///< safety factor in (0, 1] of the step-size law [EichhornIWK] Eq. 5
-    double depth{0.0};  ///< depth at which the current is read (positive down)
+    double tau{0.9};   ///< safety factor in (0, 1] of the step-size law [EichhornIWK] Eq. 5
+    double depth{0.0}; ///< depth at which the current is read (positive down)
     /// Longest step (x/y units): the step law judges a step by the current at its two ends only, so a step longer
     /// than the field's features could pass over a feature between calm ends. Gridded fields set half a grid cell
     /// (MissionProblem); +inf: no limit beyond hMax.
@@ -56,8 +56,8 @@ struct TravelTimeParams
 /// pace; where the slow root is <= 0 it can hold position and the latest arrival is unbounded.
 struct ArrivalWindow
 {
-    double earliest;  ///< fastest travel time; +inf when the leg is infeasible
-    double latest;    ///< slowest travel time; +inf when the vehicle can hold somewhere along the leg
+    double earliest; ///< fastest travel time; +inf when the leg is infeasible
+    double latest;   ///< slowest travel time; +inf when the vehicle can hold somewhere along the leg
 };
 
 /// @brief Travel time of straight legs in a current field, integrated with the adaptive step of CALC-TRAVELTIME
@@ -90,40 +90,24 @@ public:
     ArrivalWindow arrivalWindow(double x1, double y1, double x2, double y2, double tStart) const;
 
     /// @brief Number of cost-function calls so far.
-    std::uint64_t costFunctionCalls() const
-    {
-        return calls_.load();
-    }
+    std::uint64_t costFunctionCalls() const { return calls_.load(); }
     /// @brief Reset the CFC counter.
-    void resetCostFunctionCalls() const
-    {
-        calls_.reset();
-    }
+    void resetCostFunctionCalls() const { calls_.reset(); }
 
     /// @brief The field in use.
-    const CurrentField &field() const
-    {
-        return *field_;
-    }
+    const CurrentField &field() const { return *field_; }
     /// @brief Shared pointer to the field in use.
-    const std::shared_ptr<const CurrentField> &fieldPtr() const
-    {
-        return field_;
-    }
+    const std::shared_ptr<const CurrentField> &fieldPtr() const { return field_; }
     /// @brief The parameters in use.
-    const TravelTimeParams &params() const
-    {
-        return params_;
-    }
+    const TravelTimeParams &params() const { return params_; }
 
 private:
     /// Integrates the leg (depth linear from z1 to z2) with the fast (slow = false) or the slow root; returns +inf
     /// when infeasible or, for the slow root, when the vehicle can hold.
-    double integrate(double x1, double y1, double z1, double x2, double y2, double z2, double tStart,
-                     bool slow) const;
+    double integrate(double x1, double y1, double z1, double x2, double y2, double z2, double tStart, bool slow) const;
 
     std::shared_ptr<const CurrentField> field_;
     TravelTimeParams params_;
     mutable ShardedCounter calls_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -25,10 +25,7 @@ public:
     /// @brief Value at q (cubic extension of the end intervals outside [x_0, x_{n-1}]).
     double operator()(double q) const;
     /// @brief Node slopes t_i.
-    const std::vector<double> &slopes() const
-    {
-        return t_;
-    }
+    const std::vector<double> &slopes() const { return t_; }
     /// @brief (argmin, min) of the spline over [x_0, x_{n-1}], each interval's cubic minimised exactly (roots of
     /// its derivative and its ends).
     std::pair<double, double> minimum() const;
@@ -48,5 +45,5 @@ namespace detail
 /// |m_i|) (AkimaSpline: 1e-14 max(1, |m_{i-1}| + |m_i|)); the Hermite basis is evaluated in expanded form; n = 2
 /// uses the straight line; q is clamped instead of extending the end cubics.
 double akimaFromNodes(const double *x, const double *y, int n, int k, double q);
-}  // namespace detail
-}  // namespace ompl_glider
+} // namespace detail
+} // namespace ompl_glider

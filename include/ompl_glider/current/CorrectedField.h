@@ -49,9 +49,9 @@ struct CorrectionParams
     /// Learn from the DAC: with at least minLearn of them and innovations not all zero, estimate the scales not given
     /// (lengthGiven, timeGiven, ratioGiven false) and the innovations' mean (bias, tides); false: the values above
     bool learn{false};
-    bool lengthGiven{true}; ///< lengthScale was given (kept); false: a prior, estimated when learning
-    bool timeGiven{true};   ///< see lengthGiven
-    bool ratioGiven{true};  ///< see lengthGiven
+    bool lengthGiven{true};  ///< lengthScale was given (kept); false: a prior, estimated when learning
+    bool timeGiven{true};    ///< see lengthGiven
+    bool ratioGiven{true};   ///< see lengthGiven
     std::size_t minLearn{6}; ///< fewer DAC than this: the priors stand and no mean is fitted
     /// The DAC's own error (field units; > 0 when learning): the observation error is never estimated below it
     double dacError{0.0};
@@ -71,22 +71,22 @@ struct InnovationMean
     /// One tidal constituent: cos(omega (t - tRef)) * cosine + sin(omega (t - tRef)) * sine, per component.
     struct Constituent
     {
-        std::string name;   ///< "M2", "S2", "K1", "O1"
-        double omega{0.0};  ///< angular frequency, radians per field time unit
-        Velocity cosine;    ///< the coefficients of the cosine (u, v)
-        Velocity sine;      ///< the coefficients of the sine
+        std::string name;  ///< "M2", "S2", "K1", "O1"
+        double omega{0.0}; ///< angular frequency, radians per field time unit
+        Velocity cosine;   ///< the coefficients of the cosine (u, v)
+        Velocity sine;     ///< the coefficients of the sine
         /// @brief The amplitude of component u (v: false), field units.
         double amplitude(bool u) const;
         /// @brief The phase of component u (v: false): the angle phi with c cos(w t - phi), radians.
         double phase(bool u) const;
     };
-    Velocity bias;                       ///< the mean of the innovations (field units)
-    std::vector<Constituent> tides;      ///< fitted constituents (empty: none)
-    double tRef{0.0};                    ///< the tides' time origin
-    double tBegin{0.0}, tEnd{0.0};       ///< the span of the DAC it was fitted to
-    double xMin{0.0}, xMax{0.0}, yMin{0.0}, yMax{0.0};  ///< their box
-    double lengthScale{0.0};  ///< fading outside the box (planning units; 0: no mean)
-    double timeScale{0.0};    ///< fading outside the span (field time units)
+    Velocity bias;                                     ///< the mean of the innovations (field units)
+    std::vector<Constituent> tides;                    ///< fitted constituents (empty: none)
+    double tRef{0.0};                                  ///< the tides' time origin
+    double tBegin{0.0}, tEnd{0.0};                     ///< the span of the DAC it was fitted to
+    double xMin{0.0}, xMax{0.0}, yMin{0.0}, yMax{0.0}; ///< their box
+    double lengthScale{0.0};                           ///< fading outside the box (planning units; 0: no mean)
+    double timeScale{0.0};                             ///< fading outside the span (field time units)
     /// @brief Whether there is a mean to add.
     bool active() const { return lengthScale > 0.0; }
     /// @brief The mean at (x, y, t), and with @p j its spatial derivatives added.
@@ -107,10 +107,10 @@ struct CorrectionSummary
     CorrectionParams params;        ///< the parameters as used (estimated ones in place of their priors)
     /// Where L, T and the ratio came from: "given", "default", or "estimated from N DAC"
     std::string lengthSource, timeSource, ratioSource;
-    std::size_t learnedFrom{0};     ///< DAC the estimate used (0: nothing was estimated)
+    std::size_t learnedFrom{0}; ///< DAC the estimate used (0: nothing was estimated)
     /// ln of the marginal likelihood at the estimate minus at the priors (>= 0; 0: nothing was estimated)
     double likelihoodGain{0.0};
-    InnovationMean mean;            ///< the innovations' mean carried ahead (inactive: none)
+    InnovationMean mean; ///< the innovations' mean carried ahead (inactive: none)
 };
 
 /// @brief @p field's current averaged over the depths @p top to @p bottom (m; equal: the current at that depth) at

@@ -16,10 +16,10 @@ namespace ompl_glider
 /// @brief Spatial Jacobian of the horizontal current (needed by Zermelo's navigation law, [EichhornRAS] Eq. 2).
 struct Jacobian
 {
-    double ux{0.0};  ///< du/dx
-    double uy{0.0};  ///< du/dy
-    double vx{0.0};  ///< dv/dx
-    double vy{0.0};  ///< dv/dy
+    double ux{0.0}; ///< du/dx
+    double uy{0.0}; ///< du/dy
+    double vx{0.0}; ///< dv/dx
+    double vy{0.0}; ///< dv/dy
 };
 
 /// @brief An axis-aligned region of space and a time window; used to bound the current speed.
@@ -29,7 +29,7 @@ struct Region
     double xMax{std::numeric_limits<double>::infinity()};
     double yMin{-std::numeric_limits<double>::infinity()};
     double yMax{std::numeric_limits<double>::infinity()};
-    double zMin{0.0};  ///< depth range (positive down)
+    double zMin{0.0}; ///< depth range (positive down)
     double zMax{0.0};
     double tMin{-std::numeric_limits<double>::infinity()};
     double tMax{std::numeric_limits<double>::infinity()};
@@ -89,10 +89,7 @@ public:
         return false;
     }
     /// @brief True when velocityBounds() gives local bounds (it would return true).
-    virtual bool hasVelocityBounds() const
-    {
-        return false;
-    }
+    virtual bool hasVelocityBounds() const { return false; }
 
     /// @brief Stream function psi with u = -dpsi/dy, v = dpsi/dx, where the field has one.
     virtual std::optional<double> streamFunction(double /*x*/, double /*y*/, double /*z*/, double /*t*/) const
@@ -101,17 +98,11 @@ public:
     }
 
     /// @brief True when the field should be divergence-free (u_x + v_y = 0).
-    virtual bool divergenceFree() const
-    {
-        return false;
-    }
+    virtual bool divergenceFree() const { return false; }
 
     /// @brief False where the field has no water (land / fill cells of a forecast). Travel-time code treats such
     /// points as forbidden and never reads a current there. Does not count as a CMC.
-    virtual bool inWater(double /*x*/, double /*y*/, double /*z*/) const
-    {
-        return true;
-    }
+    virtual bool inWater(double /*x*/, double /*y*/, double /*z*/) const { return true; }
 
     /// @brief True when the whole straight segment (x1, y1) -> (x2, y2) at depth z stays in water. The travel-time
     /// code asks this once per leg, so a leg never crosses land between its integration steps. The default checks
@@ -125,42 +116,24 @@ public:
     /// cell inWater() refuses and one it accepts (not the field's outer edges). The distance to land of the
     /// keep-off zone (environment/KeepOffZone.h) and of the report is measured to these edges. Empty by default
     /// (fields without land).
-    virtual std::vector<Segment2> landBoundary(double /*z*/) const
-    {
-        return {};
-    }
+    virtual std::vector<Segment2> landBoundary(double /*z*/) const { return {}; }
 
     /// @brief Earliest time at which the field is defined (-inf for analytic fields).
-    virtual double timeBegin() const
-    {
-        return -std::numeric_limits<double>::infinity();
-    }
+    virtual double timeBegin() const { return -std::numeric_limits<double>::infinity(); }
     /// @brief Latest time at which the field is defined (+inf for analytic fields or a "hold last" policy).
     /// Travel-time code treats a leg that would need the field after this time as infeasible.
-    virtual double timeEnd() const
-    {
-        return std::numeric_limits<double>::infinity();
-    }
+    virtual double timeEnd() const { return std::numeric_limits<double>::infinity(); }
 
     /// @brief Short human-readable name ("meandering jet", "netcdf:file.nc", ...).
     virtual std::string name() const = 0;
 
     /// @brief The grid of nodes the field is given on; null for a field given by formulas (the default).
-    virtual const FieldGrid *grid() const
-    {
-        return nullptr;
-    }
+    virtual const FieldGrid *grid() const { return nullptr; }
 
     /// @brief Number of current-model calls (CMC) so far.
-    std::uint64_t callCount() const
-    {
-        return calls_.load();
-    }
+    std::uint64_t callCount() const { return calls_.load(); }
     /// @brief Reset the CMC counter to zero.
-    void resetCallCount() const
-    {
-        calls_.reset();
-    }
+    void resetCallCount() const { calls_.reset(); }
 
 protected:
     /// @brief The field itself: velocity at (x, y, z, t). Must not count calls.
@@ -171,4 +144,4 @@ protected:
 private:
     mutable ShardedCounter calls_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -21,8 +21,8 @@ namespace ompl_glider
 /// @brief One kind of current field.
 struct CurrentFieldKind
 {
-    std::string name;         ///< e.g. "meandering_jet", "gridded"
-    std::string description;  ///< one line for the docs and messages
+    std::string name;        ///< e.g. "meandering_jet", "gridded"
+    std::string description; ///< one line for the docs and messages
     /// Parameters of an analytic kind with their defaults (empty for gridded kinds, which take a file).
     std::vector<std::pair<std::string, double>> parameters;
     /// Makes an analytic field from a complete parameter map (every name of `parameters`); null for gridded kinds.
@@ -31,10 +31,7 @@ struct CurrentFieldKind
     std::shared_ptr<const GriddedSource> source;
 
     /// @brief Read from files by a source (not made from parameters).
-    bool gridded() const
-    {
-        return source != nullptr;
-    }
+    bool gridded() const { return source != nullptr; }
 };
 
 /// @brief Every kind: meandering_jet ([EichhornRAS] Sec. 6.1), uniform, linear_shear, double_gyre ([ShaddenLCS]),
@@ -87,4 +84,4 @@ std::string griddedKindList(const std::string &separator = ", ");
 /// @throws Error for an unknown kind, a gridded kind or a parameter the kind does not have.
 std::shared_ptr<const CurrentField> makeAnalyticField(const std::string &name,
                                                       const std::map<std::string, double> &parameters = {});
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -32,20 +32,11 @@ public:
     /// time window holds a full period; infinite when the region is unbounded in x.
     double maxSpeed(const Region &region) const override;
     std::optional<double> streamFunction(double x, double y, double z, double t) const override;
-    bool divergenceFree() const override
-    {
-        return true;
-    }
+    bool divergenceFree() const override { return true; }
     /// @brief "double gyre" when steady, "time-dependent double gyre" otherwise.
-    std::string name() const override
-    {
-        return steady() ? "double gyre" : "time-dependent double gyre";
-    }
+    std::string name() const override { return steady() ? "double gyre" : "time-dependent double gyre"; }
     /// @brief True when the field does not depend on time (epsilon = 0 or omega = 0).
-    bool steady() const
-    {
-        return eps_ == 0.0 || omega_ == 0.0;
-    }
+    bool steady() const { return eps_ == 0.0 || omega_ == 0.0; }
 
 protected:
     Velocity evaluate(double x, double y, double z, double t) const override;
@@ -56,4 +47,4 @@ private:
     double s(double t) const;
     double A_, L_, eps_, omega_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -12,7 +12,8 @@
 
 namespace ompl_glider
 {
-/// @brief c(x, t) = (1/M) sum_m c_m(x, t), or a combination sum_m a_m c_m(x, t). Water where every member has water; defined where every member is.
+/// @brief c(x, t) = (1/M) sum_m c_m(x, t), or a combination sum_m a_m c_m(x, t). Water where every member has water;
+/// defined where every member is.
 class EnsembleMeanField : public CurrentField
 {
 public:
@@ -38,10 +39,7 @@ public:
     /// @brief The coefficients a_m of a combination (empty: the plain mean).
     const std::vector<double> &coefficients() const { return coefficients_; }
     /// @brief The members.
-    const std::vector<std::shared_ptr<const CurrentField>> &members() const
-    {
-        return members_;
-    }
+    const std::vector<std::shared_ptr<const CurrentField>> &members() const { return members_; }
 
 protected:
     Velocity evaluate(double x, double y, double z, double t) const override;
@@ -49,6 +47,6 @@ protected:
 
 private:
     std::vector<std::shared_ptr<const CurrentField>> members_;
-    std::vector<double> coefficients_;  // empty: the mean
+    std::vector<double> coefficients_; // empty: the mean
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -59,8 +59,8 @@ private:
     std::shared_ptr<const CurrentField> forecast_;
     std::vector<std::shared_ptr<const CurrentField>> members_;
     CorrectionParams params_;
-    CorrectionParams estimated_;  // the last estimate (valid when estimatedAt_ > 0)
-    std::size_t estimatedAt_{0};  // the DAC it was made from
+    CorrectionParams estimated_; // the last estimate (valid when estimatedAt_ > 0)
+    std::size_t estimatedAt_{0}; // the DAC it was made from
     LearnedForecast last_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

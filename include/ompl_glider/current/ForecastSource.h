@@ -28,22 +28,22 @@ class LocalProjection;
 /// (ForecastRequest::optionNames): `current.variables.u` in a mission file, `--u-var` on the command line.
 enum class ForecastOption
 {
-    U,                 ///< the eastward velocity's variable
-    V,                 ///< the northward velocity's variable
-    Lon,               ///< the longitude (or x) coordinate
-    Lat,               ///< the latitude (or y) coordinate
-    Depth,             ///< the depth coordinate
-    Time,              ///< the time coordinate
-    VelocityUnits,     ///< the units given for u and v
-    TimeUnits,         ///< the units given for the time axis
-    SteadyRecord,      ///< the one record planned on as a steady field
-    Departure,         ///< the departure
-    MaxDepth,          ///< the glider's deepest depth
-    ZeroVelocityLand,  ///< still nodes taken as land
-    Region,            ///< the region to load
-    Angle,             ///< the grid angle's variable
-    Mask,              ///< the land/sea mask's variable
-    DepthAverage,      ///< the depth average's bounds
+    U,                ///< the eastward velocity's variable
+    V,                ///< the northward velocity's variable
+    Lon,              ///< the longitude (or x) coordinate
+    Lat,              ///< the latitude (or y) coordinate
+    Depth,            ///< the depth coordinate
+    Time,             ///< the time coordinate
+    VelocityUnits,    ///< the units given for u and v
+    TimeUnits,        ///< the units given for the time axis
+    SteadyRecord,     ///< the one record planned on as a steady field
+    Departure,        ///< the departure
+    MaxDepth,         ///< the glider's deepest depth
+    ZeroVelocityLand, ///< still nodes taken as land
+    Region,           ///< the region to load
+    Angle,            ///< the grid angle's variable
+    Mask,             ///< the land/sea mask's variable
+    DepthAverage,     ///< the depth average's bounds
 };
 
 /// @brief What a mission asks of a gridded source: where the forecast is, how to read it, and which part (the
@@ -55,21 +55,21 @@ struct ForecastRequest
     std::vector<std::string> files;
     /// Variables by role (u, v, lon, lat, x, y, depth, time, mask, angle); a role not given is found by the source.
     std::map<std::string, std::string> variables;
-    bool zeroVelocityLand{true};  ///< a node still (u = v = 0) in every record of the trip is land (source's rules)
-    std::optional<std::pair<double, double>> depthAverage;  ///< the current averaged over [top, bottom] metres
-    std::string velocityUnits;  ///< overrides the velocities' units (any velocity UDUNITS-2 reads)
-    std::string timeUnits;      ///< overrides the time axis' units ("days since 2026-01-15")
-    std::optional<std::size_t> steadyRecord;  ///< plan on this record (0-based) only, as a steady field
+    bool zeroVelocityLand{true}; ///< a node still (u = v = 0) in every record of the trip is land (source's rules)
+    std::optional<std::pair<double, double>> depthAverage; ///< the current averaged over [top, bottom] metres
+    std::string velocityUnits;               ///< overrides the velocities' units (any velocity UDUNITS-2 reads)
+    std::string timeUnits;                   ///< overrides the time axis' units ("days since 2026-01-15")
+    std::optional<std::size_t> steadyRecord; ///< plan on this record (0-based) only, as a steady field
 
-    Interp2D xy{Interp2D::Bilinear};                ///< horizontal interpolation ([EichhornOceans] Fig. 2)
-    Interp1D depth{Interp1D::Linear};               ///< depth interpolation
-    Interp1D time{Interp1D::Linear};                ///< time interpolation
-    BeyondForecast beyond{BeyondForecast::Refuse};  ///< after the last forecast time
-    std::string name;  ///< the field's name in maps and messages (no URL's password); empty: the source's own
+    Interp2D xy{Interp2D::Bilinear};               ///< horizontal interpolation ([EichhornOceans] Fig. 2)
+    Interp1D depth{Interp1D::Linear};              ///< depth interpolation
+    Interp1D time{Interp1D::Linear};               ///< time interpolation
+    BeyondForecast beyond{BeyondForecast::Refuse}; ///< after the last forecast time
+    std::string name; ///< the field's name in maps and messages (no URL's password); empty: the source's own
 
-    double maxDepth{std::numeric_limits<double>::infinity()};  ///< deepest depth the glider reaches (m, down)
-    std::string departure;  ///< ISO 8601 date or seconds after the first forecast time; empty: the first time
-    double horizon{std::numeric_limits<double>::infinity()};  ///< seconds after the departure the trip may last
+    double maxDepth{std::numeric_limits<double>::infinity()}; ///< deepest depth the glider reaches (m, down)
+    std::string departure; ///< ISO 8601 date or seconds after the first forecast time; empty: the first time
+    double horizon{std::numeric_limits<double>::infinity()}; ///< seconds after the departure the trip may last
     /// The region to load: longitudes from lonMin east to lonMax (lonMax < lonMin or beyond 180 across the
     /// antimeridian), latitudes (x/y in a Cartesian forecast's own units); NaN: the whole forecast.
     double lonMin{std::numeric_limits<double>::quiet_NaN()};
@@ -92,11 +92,11 @@ struct ForecastRequest
 /// @brief The horizontal extent of a forecast, from its coordinates alone (no velocity read).
 struct ForecastExtent
 {
-    bool geographic{false};     ///< longitude/latitude (else Cartesian x/y in the file's units)
-    bool allLongitudes{false};  ///< the longitudes go round the globe: every longitude lies in the file
-    double lonMin{0.0}, lonMax{0.0};  ///< lonMin in [-180, 180), lonMax = lonMin + width (x in Cartesian files)
-    double latMin{0.0}, latMax{0.0};  ///< (y in Cartesian files)
-    std::string xName, yName;         ///< the coordinate variables
+    bool geographic{false};          ///< longitude/latitude (else Cartesian x/y in the file's units)
+    bool allLongitudes{false};       ///< the longitudes go round the globe: every longitude lies in the file
+    double lonMin{0.0}, lonMax{0.0}; ///< lonMin in [-180, 180), lonMax = lonMin + width (x in Cartesian files)
+    double latMin{0.0}, latMax{0.0}; ///< (y in Cartesian files)
+    std::string xName, yName;        ///< the coordinate variables
     /// True when (a, b) (lon/lat in either convention, or x/y) lies within the bounds (a curvilinear grid's bounds
     /// are those of its nodes: a point inside them may still lie outside the grid).
     bool contains(double a, double b) const;
@@ -109,31 +109,31 @@ struct ForecastExtent
 /// date dateFromCalendarEpoch(originSeconds + t, calendar).
 struct ForecastTimeAxis
 {
-    bool found{false};      ///< the velocities have a time dimension with a coordinate variable (else a steady field)
-    bool steady{false};     ///< the loaded field is steady: no time dimension, a single record, or steadyRecord
-    bool dated{false};      ///< units "<unit> since <date>" (else raw values, for Cartesian files only)
-    std::string variable;   ///< the time coordinate variable
-    Calendar calendar{Calendar::Standard};  ///< its calendar (dated axes)
-    double originSeconds{0.0};  ///< first time, seconds since the calendar epoch (dated axes; 0 otherwise)
-    std::size_t size{0};        ///< number of forecast times
-    double span{0.0};           ///< last minus first time: seconds (dated axes) or the file's units (raw values)
+    bool found{false};    ///< the velocities have a time dimension with a coordinate variable (else a steady field)
+    bool steady{false};   ///< the loaded field is steady: no time dimension, a single record, or steadyRecord
+    bool dated{false};    ///< units "<unit> since <date>" (else raw values, for Cartesian files only)
+    std::string variable; ///< the time coordinate variable
+    Calendar calendar{Calendar::Standard}; ///< its calendar (dated axes)
+    double originSeconds{0.0};             ///< first time, seconds since the calendar epoch (dated axes; 0 otherwise)
+    std::size_t size{0};                   ///< number of forecast times
+    double span{0.0}; ///< last minus first time: seconds (dated axes) or the file's units (raw values)
 };
 
 /// @brief The frame and clock of a loaded forecast: how planning-frame points and field times become positions
 /// and dates for the outputs.
 struct ForecastFrame
 {
-    std::shared_ptr<const LocalProjection> projection;  ///< null in Cartesian mode
-    double xyMetres{1.0};    ///< Cartesian mode: metres per unit of the file's x/y axes (1000 for km)
-    bool geographic{false};  ///< true when x/y come from longitude/latitude
-    bool dated{false};       ///< true when the time axis has units "<unit> since <date>"
-    bool steady{false};      ///< one time: the field is the same at all times and any departure is inside it
-    Calendar calendar{Calendar::Standard};  ///< the forecast's calendar (dated forecasts)
-    double originSeconds{0.0};  ///< field time 0 (the first forecast time, or a steady record's), seconds since
-                                ///< the calendar epoch (dated forecasts)
-    double departureTime{0.0};  ///< the departure in field time (0 when none was given)
-    double forecastBegin{0.0};  ///< first forecast time, field time
-    double forecastEnd{0.0};    ///< last forecast time, field time
+    std::shared_ptr<const LocalProjection> projection; ///< null in Cartesian mode
+    double xyMetres{1.0};   ///< Cartesian mode: metres per unit of the file's x/y axes (1000 for km)
+    bool geographic{false}; ///< true when x/y come from longitude/latitude
+    bool dated{false};      ///< true when the time axis has units "<unit> since <date>"
+    bool steady{false};     ///< one time: the field is the same at all times and any departure is inside it
+    Calendar calendar{Calendar::Standard}; ///< the forecast's calendar (dated forecasts)
+    double originSeconds{0.0}; ///< field time 0 (the first forecast time, or a steady record's), seconds since
+                               ///< the calendar epoch (dated forecasts)
+    double departureTime{0.0}; ///< the departure in field time (0 when none was given)
+    double forecastBegin{0.0}; ///< first forecast time, field time
+    double forecastEnd{0.0};   ///< last forecast time, field time
     /// Bounds of the loaded nodes in the forecast's coordinates: longitudes from lonMin in [-180, 180) east to
     /// lonMax (beyond 180 across the antimeridian), latitudes; x and y in Cartesian mode (file units).
     double lonMin{0.0}, lonMax{0.0}, latMin{0.0}, latMax{0.0};
@@ -156,10 +156,10 @@ struct ForecastFrame
 /// CurrentField::inWater() and landBoundary()), the frame and clock, and what a pilot should know of it.
 struct LoadedForecast : ForecastFrame
 {
-    std::shared_ptr<const CurrentField> field;  ///< x east / y north in metres, t in seconds after field time 0
-    bool depthLevels{false};  ///< the velocities have depth levels (else they are of one level)
-    std::string uVariable;    ///< what the eastward velocity is called in the forecast (messages)
-    bool wind{false};         ///< a forecast of winds (uwnd, u10, eastward_wind, ...): "wind" on maps
+    std::shared_ptr<const CurrentField> field; ///< x east / y north in metres, t in seconds after field time 0
+    bool depthLevels{false};                   ///< the velocities have depth levels (else they are of one level)
+    std::string uVariable;                     ///< what the eastward velocity is called in the forecast (messages)
+    bool wind{false};                          ///< a forecast of winds (uwnd, u10, eastward_wind, ...): "wind" on maps
     /// What reading the forecast decided that a pilot should know, one sentence each (grid angle, land from still
     /// nodes, what came from a server or the cache).
     std::vector<std::string> notes;
@@ -185,4 +185,4 @@ public:
     /// variable and the setting at fault (in the caller's words: ForecastRequest::optionNames).
     virtual LoadedForecast load(const ForecastRequest &request) const = 0;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

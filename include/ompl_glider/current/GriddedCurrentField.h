@@ -22,11 +22,11 @@ class CoastEdges;
 /// @brief Interpolation schemes and policies of a gridded field.
 struct GriddedFieldOptions
 {
-    Interp2D xy{Interp2D::Bilinear};            ///< horizontal scheme (first step of [EichhornOceans] Fig. 2)
-    Interp1D depth{Interp1D::Linear};           ///< depth scheme (second step)
-    Interp1D time{Interp1D::Linear};            ///< time scheme (third step)
-    BeyondForecast beyond{BeyondForecast::Refuse};  ///< policy after the last forecast time
-    std::string name{"gridded"};                ///< returned by name()
+    Interp2D xy{Interp2D::Bilinear};               ///< horizontal scheme (first step of [EichhornOceans] Fig. 2)
+    Interp1D depth{Interp1D::Linear};              ///< depth scheme (second step)
+    Interp1D time{Interp1D::Linear};               ///< time scheme (third step)
+    BeyondForecast beyond{BeyondForecast::Refuse}; ///< policy after the last forecast time
+    std::string name{"gridded"};                   ///< returned by name()
 };
 
 /// @brief Gridded current data in the local Cartesian frame, ready for GriddedCurrentField.
@@ -37,17 +37,17 @@ struct GriddedFieldOptions
 /// fill nodes (0) at index [(k * ny + j) * nx + i].
 struct GriddedData
 {
-    std::size_t nx{0};            ///< nodes along x (i)
-    std::size_t ny{0};            ///< nodes along y (j)
-    std::vector<double> x;        ///< rectilinear x axis (size nx), empty when curvilinear
-    std::vector<double> y;        ///< rectilinear y axis (size ny), empty when curvilinear
-    std::vector<double> nodeX;    ///< curvilinear node x (size ny*nx), empty when rectilinear
-    std::vector<double> nodeY;    ///< curvilinear node y (size ny*nx), empty when rectilinear
+    std::size_t nx{0};               ///< nodes along x (i)
+    std::size_t ny{0};               ///< nodes along y (j)
+    std::vector<double> x;           ///< rectilinear x axis (size nx), empty when curvilinear
+    std::vector<double> y;           ///< rectilinear y axis (size ny), empty when curvilinear
+    std::vector<double> nodeX;       ///< curvilinear node x (size ny*nx), empty when rectilinear
+    std::vector<double> nodeY;       ///< curvilinear node y (size ny*nx), empty when rectilinear
     std::vector<double> depth{0.0};  ///< depth layers, positive down, strictly increasing (one layer: 2-D field)
     std::vector<double> time{0.0};   ///< forecast times, strictly increasing (one time: steady field)
-    std::vector<float> u;         ///< velocity along x at the nodes
-    std::vector<float> v;         ///< velocity along y at the nodes
-    std::vector<std::uint8_t> water;  ///< 1 = water, 0 = land/fill; empty means all water
+    std::vector<float> u;            ///< velocity along x at the nodes
+    std::vector<float> v;            ///< velocity along y at the nodes
+    std::vector<std::uint8_t> water; ///< 1 = water, 0 = land/fill; empty means all water
 };
 
 /// @brief The ocean-current model of [EichhornOceans] Sec. II.C: horizontal interpolation on each depth layer and
@@ -98,18 +98,9 @@ public:
     bool inWater(double x, double y, double z) const override;
     double timeBegin() const override;
     double timeEnd() const override;
-    std::string name() const override
-    {
-        return options_.name;
-    }
-    const FieldGrid *grid() const override
-    {
-        return this;
-    }
-    const std::vector<double> &recordTimes() const override
-    {
-        return time_.nodes();
-    }
+    std::string name() const override { return options_.name; }
+    const FieldGrid *grid() const override { return this; }
+    const std::vector<double> &recordTimes() const override { return time_.nodes(); }
     bool covers(double x, double y) const override
     {
         double fi, fj;
@@ -117,50 +108,23 @@ public:
     }
 
     /// @brief The options in use.
-    const GriddedFieldOptions &options() const
-    {
-        return options_;
-    }
+    const GriddedFieldOptions &options() const { return options_; }
     /// @brief True for a curvilinear (or projected geographic) grid.
-    bool curvilinear() const
-    {
-        return curvilinear_;
-    }
+    bool curvilinear() const { return curvilinear_; }
     /// @brief Grid sizes.
-    std::size_t nx() const
-    {
-        return nx_;
-    }
-    std::size_t ny() const
-    {
-        return ny_;
-    }
-    std::size_t nz() const
-    {
-        return depth_.size();
-    }
-    std::size_t nt() const
-    {
-        return time_.size();
-    }
+    std::size_t nx() const { return nx_; }
+    std::size_t ny() const { return ny_; }
+    std::size_t nz() const { return depth_.size(); }
+    std::size_t nt() const { return time_.size(); }
     /// @brief Depth and time axes.
-    const Axis &depthAxis() const
-    {
-        return depth_;
-    }
-    const Axis &timeAxis() const
-    {
-        return time_;
-    }
+    const Axis &depthAxis() const { return depth_; }
+    const Axis &timeAxis() const { return time_; }
     /// @brief Bounding box of the grid nodes in x/y (z and t: depth and time ranges).
     Region extent() const override;
     /// @brief Bytes held by the velocity arrays, mask and node positions.
     std::size_t memoryBytes() const;
     /// @brief The product of the schemes' overshoot factors used by maxSpeed().
-    double overshoot() const
-    {
-        return overshoot_;
-    }
+    double overshoot() const { return overshoot_; }
     /// @brief True when the straight segment stays in water (inWater()) at depth z, decided exactly: the segment is
     /// cut where it meets the boundary of the water (edges between a water cell and a land cell, and the grid's
     /// outer edges, of the depth layers that carry weight at z), and each piece is tested once at its middle. A
@@ -172,10 +136,7 @@ public:
     /// layer that carries weight at z, as inWater() decides), straight between their nodes.
     std::vector<Segment2> landBoundary(double z) const override;
     /// @brief Smallest distance between neighbouring grid nodes (x/y units).
-    double minCellSize() const override
-    {
-        return minCell_;
-    }
+    double minCellSize() const override { return minCell_; }
     /// @brief Fractional grid indices (fi, fj) of (x, y); false when the point is outside the grid (the indices
     /// are then those of the nearest boundary point of the last cell visited).
     bool locate(double x, double y, double &fi, double &fj) const;
@@ -192,15 +153,12 @@ private:
     struct Horizontal
     {
         Stencil sx, sy;
-        double m[4]{1, 0, 0, 1};  ///< d(fi, fj)/d(x, y) for curvilinear grids: [dfi/dx, dfi/dy, dfj/dx, dfj/dy]
+        double m[4]{1, 0, 0, 1}; ///< d(fi, fj)/d(x, y) for curvilinear grids: [dfi/dx, dfi/dy, dfj/dx, dfj/dy]
     };
     Horizontal horizontal(double x, double y, bool derivative) const;
-    template <bool Deriv>
-    Sample spatial(const Horizontal &h, std::size_t it, std::size_t iz) const;
-    template <bool Deriv>
-    Sample depthCombined(const Horizontal &h, std::size_t it, double z) const;
-    template <bool Deriv>
-    Sample full(double x, double y, double z, double t) const;
+    template <bool Deriv> Sample spatial(const Horizontal &h, std::size_t it, std::size_t iz) const;
+    template <bool Deriv> Sample depthCombined(const Horizontal &h, std::size_t it, double z) const;
+    template <bool Deriv> Sample full(double x, double y, double z, double t) const;
     double clampTime(double t) const;
     /// Depth layers k0..k1 that carry weight at depth z (both 0 for a single layer).
     void waterLayers(double z, std::size_t &k0, std::size_t &k1) const;
@@ -212,25 +170,25 @@ private:
     void computeStencilDiameters();
 
     GriddedFieldOptions options_;
-    std::uint64_t id_{0};  // unique per instance (key of the per-thread locate hint)
+    std::uint64_t id_{0}; // unique per instance (key of the per-thread locate hint)
     bool curvilinear_{false};
     std::size_t nx_{0}, ny_{0};
-    Axis x_, y_;            // rectilinear axes, or index axes 0..n-1 when curvilinear
+    Axis x_, y_; // rectilinear axes, or index axes 0..n-1 when curvilinear
     Axis depth_, time_;
     std::vector<double> nodeX_, nodeY_;
-    std::vector<float> uv_;                 // interleaved u, v
-    std::vector<std::uint8_t> cellWater_;   // [(k * (ny-1) + j) * (nx-1) + i]
-    std::shared_ptr<const detail::CoastEdges> coast_;  // boundary of the water per layer (segmentInWater)
-    std::vector<double> layerMaxSpeed_, layerMaxU_, layerMaxV_;  // per (t, k)
+    std::vector<float> uv_;                                     // interleaved u, v
+    std::vector<std::uint8_t> cellWater_;                       // [(k * (ny-1) + j) * (nx-1) + i]
+    std::shared_ptr<const detail::CoastEdges> coast_;           // boundary of the water per layer (segmentInWater)
+    std::vector<double> layerMaxSpeed_, layerMaxU_, layerMaxV_; // per (t, k)
     double overshoot_{1.0};
-    double lamXY_{1.0}, lamZ_{1.0}, lamT_{1.0};  // overshoot factors of the three stages
-    std::vector<double> boxDiameter_;             // per time index: largest diameter of a stencil box starting there
+    double lamXY_{1.0}, lamZ_{1.0}, lamT_{1.0}; // overshoot factors of the three stages
+    std::vector<double> boxDiameter_;           // per time index: largest diameter of a stencil box starting there
     double fdStep_{1e-6};
     double minCell_{1.0};
     // locator for curvilinear grids
     double bx0_{0}, by0_{0}, bInv_{1};
     std::size_t bnx_{0}, bny_{0};
-    std::vector<std::int32_t> bucket_;      // start cell (j * (nx-1) + i) or -1
+    std::vector<std::int32_t> bucket_; // start cell (j * (nx-1) + i) or -1
     double xMin_{0}, xMax_{0}, yMin_{0}, yMax_{0};
     /// Curvilinear grids: blocks of kBlock x kBlock cells with the bounding box of their nodes, whether they touch
     /// the grid's edge, and the extremes of u and v over their nodes per forecast record (velocityBounds()); a
@@ -239,10 +197,10 @@ private:
     {
         static constexpr std::size_t kBlock = 8;
         std::size_t nbi{0}, nbj{0};
-        std::vector<double> box;              // per block: xMin, xMax, yMin, yMax
-        std::vector<unsigned char> edge;      // per block: touches the grid's edge
-        std::vector<float> ext;               // per (record, block): uMin, uMax, vMin, vMax
-        std::vector<float> all;               // per record: extremes over every node
+        std::vector<double> box;         // per block: xMin, xMax, yMin, yMax
+        std::vector<unsigned char> edge; // per block: touches the grid's edge
+        std::vector<float> ext;          // per (record, block): uMin, uMax, vMin, vMax
+        std::vector<float> all;          // per record: extremes over every node
         double bx0{0}, by0{0}, bdx{1}, bdy{1};
         std::size_t bnx{1}, bny{1};
         std::vector<std::vector<std::uint32_t>> buckets;
@@ -253,4 +211,4 @@ private:
     /// records t0..t1 (see velocityBounds()).
     void curvilinearExtremes(const Region &region, std::size_t t0, std::size_t t1, float *e) const;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

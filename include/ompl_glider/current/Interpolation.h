@@ -15,18 +15,18 @@ namespace ompl_glider
 /// @brief Horizontal (x/y) interpolation scheme ([EichhornOceans] Sec. II.C, first step of Fig. 2).
 enum class Interp2D
 {
-    Nearest,   ///< value of the nearest node (piecewise constant)
-    Bilinear,  ///< tensor product of linear interpolation: reproduces a + bx + cy + dxy exactly
-    Bicubic    ///< tensor product of 4-point Lagrange cubics: reproduces every polynomial of degree <= 3 in x and in y
+    Nearest,  ///< value of the nearest node (piecewise constant)
+    Bilinear, ///< tensor product of linear interpolation: reproduces a + bx + cy + dxy exactly
+    Bicubic   ///< tensor product of 4-point Lagrange cubics: reproduces every polynomial of degree <= 3 in x and in y
 };
 
 /// @brief Depth or time interpolation scheme ([EichhornOceans] Sec. II.C, second and third steps of Fig. 2).
 enum class Interp1D
 {
-    Nearest,  ///< nearest node
-    Linear,   ///< linear between the two bracketing nodes
-    Cubic,    ///< local 4-point Lagrange cubic (nodes k-1..k+2, shifted inside at the ends): exact for cubics
-    Akima     ///< [AkimaSpline] local cubic Hermite; no overshoot at an abrupt step (tides, layered streams)
+    Nearest, ///< nearest node
+    Linear,  ///< linear between the two bracketing nodes
+    Cubic,   ///< local 4-point Lagrange cubic (nodes k-1..k+2, shifted inside at the ends): exact for cubics
+    Akima    ///< [AkimaSpline] local cubic Hermite; no overshoot at an abrupt step (tides, layered streams)
 };
 
 /// @brief Parses "nearest", "bilinear", "bicubic" (case-insensitive; "linear"/"cubic" accepted as aliases).
@@ -49,35 +49,17 @@ public:
     explicit Axis(std::vector<double> nodes, const std::string &what = "axis");
 
     /// @brief Number of nodes.
-    std::size_t size() const
-    {
-        return c_.size();
-    }
+    std::size_t size() const { return c_.size(); }
     /// @brief Node i.
-    double operator[](std::size_t i) const
-    {
-        return c_[i];
-    }
+    double operator[](std::size_t i) const { return c_[i]; }
     /// @brief First node.
-    double front() const
-    {
-        return c_.front();
-    }
+    double front() const { return c_.front(); }
     /// @brief Last node.
-    double back() const
-    {
-        return c_.back();
-    }
+    double back() const { return c_.back(); }
     /// @brief All nodes.
-    const std::vector<double> &nodes() const
-    {
-        return c_;
-    }
+    const std::vector<double> &nodes() const { return c_; }
     /// @brief True when the nodes are equally spaced.
-    bool uniform() const
-    {
-        return uniform_;
-    }
+    bool uniform() const { return uniform_; }
     /// @brief Index k of the interval [c_k, c_k+1] holding q, clamped to [0, size-2] (0 for a single node).
     std::size_t interval(double q) const;
 
@@ -91,10 +73,10 @@ private:
 /// derivative = sum dw_i f(first + i). Queries outside the axis are clamped to its ends (no extrapolation).
 struct Stencil
 {
-    std::size_t first{0};                ///< first node
-    int n{0};                            ///< number of nodes (1 .. 4)
-    std::array<double, 4> w{};           ///< weights (sum 1)
-    std::array<double, 4> dw{};          ///< weights of the derivative d/dq (0 outside the axis)
+    std::size_t first{0};       ///< first node
+    int n{0};                   ///< number of nodes (1 .. 4)
+    std::array<double, 4> w{};  ///< weights (sum 1)
+    std::array<double, 4> dw{}; ///< weights of the derivative d/dq (0 outside the axis)
 };
 
 /// @brief Stencil of nearest (n = 1), linear (n = 2) or cubic Lagrange (n = min(4, size)) interpolation at q.
@@ -108,9 +90,9 @@ Interp1D axisScheme(Interp2D scheme);
 /// ends of the axis; k - lo is the interval's index among them. For an axis of at least two nodes.
 struct AkimaWindow
 {
-    std::size_t lo{0};  ///< first node
-    std::size_t hi{0};  ///< last node
-    int k{0};           ///< interval holding q, counted from lo
+    std::size_t lo{0}; ///< first node
+    std::size_t hi{0}; ///< last node
+    int k{0};          ///< interval holding q, counted from lo
 };
 
 /// @brief The window of Akima interpolation at q on the axis (axis.size() >= 2).
@@ -128,8 +110,7 @@ inline AkimaWindow akimaWindow(const Axis &axis, double q)
 /// @brief [AkimaSpline] interpolation at q of the data values f(0..size-1) on the axis; `f(i)` is called only for
 /// the nodes of akimaWindow(). Secants missing beyond the ends are extrapolated as in [AkimaSpline]
 /// (m_{-1} = 2 m_0 - m_1, ...); with two nodes it is linear, with one constant. q is clamped to the axis.
-template <typename F>
-double akimaInterpolate(const Axis &axis, double q, F &&f);
+template <typename F> double akimaInterpolate(const Axis &axis, double q, F &&f);
 
 /// @brief Upper bound of the Lebesgue constant (sum of |weights|) of the scheme on the axis, i.e. the factor
 /// by which the interpolant can exceed the largest |data|: 1 for nearest and linear; for cubic the maximum over
@@ -140,8 +121,7 @@ double akimaInterpolate(const Axis &axis, double q, F &&f);
 double overshootFactor(const Axis &axis, Interp1D scheme);
 
 // ---- implementation of the template ----
-template <typename F>
-double akimaInterpolate(const Axis &axis, double q, F &&f)
+template <typename F> double akimaInterpolate(const Axis &axis, double q, F &&f)
 {
     if (axis.size() == 1)
         return f(std::size_t{0});
@@ -155,4 +135,4 @@ double akimaInterpolate(const Axis &axis, double q, F &&f)
     }
     return detail::akimaFromNodes(xs, ys, m, w.k, q);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -10,20 +10,12 @@ namespace ompl_glider
 class LinearShear : public CurrentField
 {
 public:
-    explicit LinearShear(double a) : a_(a)
-    {
-    }
+    explicit LinearShear(double a) : a_(a) {}
     /// @brief |a| * max |y| over the region (infinite for an unbounded region).
     double maxSpeed(const Region &region) const override;
     std::optional<double> streamFunction(double x, double y, double z, double t) const override;
-    bool divergenceFree() const override
-    {
-        return true;
-    }
-    std::string name() const override
-    {
-        return "linear shear";
-    }
+    bool divergenceFree() const override { return true; }
+    std::string name() const override { return "linear shear"; }
 
 protected:
     Velocity evaluate(double x, double y, double z, double t) const override;
@@ -32,4 +24,4 @@ protected:
 private:
     double a_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

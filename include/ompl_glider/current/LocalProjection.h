@@ -34,15 +34,9 @@ public:
     LocalProjection &operator=(const LocalProjection &) = delete;
 
     /// @brief Reference longitude (degrees).
-    double lon0() const
-    {
-        return lon0_;
-    }
+    double lon0() const { return lon0_; }
     /// @brief Reference latitude (degrees).
-    double lat0() const
-    {
-        return lat0_;
-    }
+    double lat0() const { return lat0_; }
 
     /// @brief (lon, lat) in degrees -> (x, y) in metres. Longitude may be given in any convention (0..360,
     /// -180..180, whole turns off): it is normalised exactly (normalizeLongitude()) first, so one position written
@@ -70,4 +64,4 @@ private:
     std::unique_ptr<Impl> impl_;
     mutable std::mutex mutex_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -11,12 +11,12 @@ namespace ompl_glider
 /// @brief Parameters of the meandering jet; defaults are the paper's set ([EichhornRAS] Sec. 6.1).
 struct MeanderingJetParams
 {
-    double B0{1.2};                       ///< mean meander amplitude
-    double epsilon{0.3};                  ///< amplitude of the oscillation of B(t)
-    double omega{0.4};                    ///< frequency of the oscillation of B(t)
-    double theta{1.5707963267948966};     ///< phase of the oscillation (pi/2)
-    double k{0.84};                       ///< wave number of the meander
-    double c{0.12};                       ///< phase speed of the meander
+    double B0{1.2};                   ///< mean meander amplitude
+    double epsilon{0.3};              ///< amplitude of the oscillation of B(t)
+    double omega{0.4};                ///< frequency of the oscillation of B(t)
+    double theta{1.5707963267948966}; ///< phase of the oscillation (pi/2)
+    double k{0.84};                   ///< wave number of the meander
+    double c{0.12};                   ///< phase speed of the meander
 };
 
 /// @brief Stream function phi = 1 - tanh((y - B(t) cos(k(x - ct))) / sqrt(1 + k^2 B(t)^2 sin^2(k(x - ct)))),
@@ -32,19 +32,10 @@ public:
     /// (about 25 ms), then cached.
     double maxSpeed(const Region &region) const override;
     std::optional<double> streamFunction(double x, double y, double z, double t) const override;
-    bool divergenceFree() const override
-    {
-        return true;
-    }
-    std::string name() const override
-    {
-        return "meandering jet";
-    }
+    bool divergenceFree() const override { return true; }
+    std::string name() const override { return "meandering jet"; }
     /// @brief The parameters in use.
-    const MeanderingJetParams &params() const
-    {
-        return p_;
-    }
+    const MeanderingJetParams &params() const { return p_; }
 
 protected:
     Velocity evaluate(double x, double y, double z, double t) const override;
@@ -55,4 +46,4 @@ private:
     mutable std::once_flag boundOnce_;
     mutable double speedBound_{0.0};
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -21,74 +21,74 @@ namespace ompl_glider
 /// @brief How the horizontal coordinates of the file are read.
 enum class CoordinateMode
 {
-    Auto,        ///< geographic when longitude/latitude are found (degrees_east/north or standard_name), else Cartesian
-    Geographic,  ///< longitude/latitude in degrees, projected with LocalProjection about a reference point
-    Cartesian    ///< x/y axes used as they are ("no projection"; units m, km or dimensionless); a time axis without
-                 ///< "since" is then read as raw values, and velocities without units as dimensionless
+    Auto,       ///< geographic when longitude/latitude are found (degrees_east/north or standard_name), else Cartesian
+    Geographic, ///< longitude/latitude in degrees, projected with LocalProjection about a reference point
+    Cartesian   ///< x/y axes used as they are ("no projection"; units m, km or dimensionless); a time axis without
+                ///< "since" is then read as raw values, and velocities without units as dimensionless
 };
 
 /// @brief Options of loadNetCdfCurrents(). Every field has a usable default: only the path is required.
 struct NetCdfCurrentOptions
 {
     // --- variables (empty: found automatically) ---
-    std::string uName;      ///< eastward velocity; default: CF standard_name eastward_sea_water_velocity and
-                            ///< variants (surface_, baroclinic_, barotropic_, ..._assuming_no_tide, eastward_current,
-                            ///< sea_water_x_velocity), then the names uo, u, water_u, uvel, urot, u_eastward,
-                            ///< vozocrtx, ucur, u_current, uwnd, u10 in any case (UVEL, UWND, U)
-    std::string vName;      ///< northward velocity (same rules with northward / y / v)
-    std::string lonName;    ///< longitude or x coordinate variable (1-D axis or 2-D curvilinear)
-    std::string latName;    ///< latitude or y coordinate variable
-    std::string depthName;  ///< depth coordinate variable
-    std::string timeName;   ///< time coordinate variable
-    CoordinateMode coordinates{CoordinateMode::Auto};  ///< how to read x/y
-    std::string velocityUnits;  ///< overrides the units attribute of u and v: any velocity UDUNITS-2 reads ("m/s",
-                                ///< "cm s-1", "knots", "km/h"; UnitConversion.h)
-    std::string timeUnits;      ///< overrides the units attribute of the time variable: "<unit> since <date>"
-                                ///< ("days since 2026-01-15"), e.g. for an axis in "month", "hours" or without units
-    std::optional<std::size_t> steadyRecord;  ///< read only this time record (0-based) and plan on it as a steady
-                                              ///< field (dated by the record's time when the axis is dated)
+    std::string uName;     ///< eastward velocity; default: CF standard_name eastward_sea_water_velocity and
+                           ///< variants (surface_, baroclinic_, barotropic_, ..._assuming_no_tide, eastward_current,
+                           ///< sea_water_x_velocity), then the names uo, u, water_u, uvel, urot, u_eastward,
+                           ///< vozocrtx, ucur, u_current, uwnd, u10 in any case (UVEL, UWND, U)
+    std::string vName;     ///< northward velocity (same rules with northward / y / v)
+    std::string lonName;   ///< longitude or x coordinate variable (1-D axis or 2-D curvilinear)
+    std::string latName;   ///< latitude or y coordinate variable
+    std::string depthName; ///< depth coordinate variable
+    std::string timeName;  ///< time coordinate variable
+    CoordinateMode coordinates{CoordinateMode::Auto}; ///< how to read x/y
+    std::string velocityUnits; ///< overrides the units attribute of u and v: any velocity UDUNITS-2 reads ("m/s",
+                               ///< "cm s-1", "knots", "km/h"; UnitConversion.h)
+    std::string timeUnits;     ///< overrides the units attribute of the time variable: "<unit> since <date>"
+                               ///< ("days since 2026-01-15"), e.g. for an axis in "month", "hours" or without units
+    std::optional<std::size_t> steadyRecord; ///< read only this time record (0-based) and plan on it as a steady
+                                             ///< field (dated by the record's time when the axis is dated)
 
-    std::string angleName;  ///< angle (radians or degrees) from the grid's i direction to east, for velocities given
-                            ///< along the grid (ROMS angle, POP ANGLE); empty: a variable named "angle" on the
-                            ///< velocities' grid unless u says it is eastward (standard_name eastward_*, or
-                            ///< "east" in its name, as ROMS' u_eastward); "none": none
+    std::string angleName; ///< angle (radians or degrees) from the grid's i direction to east, for velocities given
+                           ///< along the grid (ROMS angle, POP ANGLE); empty: a variable named "angle" on the
+                           ///< velocities' grid unless u says it is eastward (standard_name eastward_*, or
+                           ///< "east" in its name, as ROMS' u_eastward); "none": none
 
     // --- land (besides fill values of u/v, which are always land; every signal's land is land: the union) ---
-    std::string maskName;  ///< land/sea mask variable; empty: found automatically (loadNetCdfCurrents()); "none": none
-    std::string tracerName;  ///< tracer (temperature, salinity) whose missing values mark land; empty: found
-                             ///< automatically (loadNetCdfCurrents()); "none": none
-    bool zeroVelocityLand{true};  ///< a node whose u and v are exactly 0 in every record of the trip is land (models
-                                    ///< such as POP store coastal velocity points as zeros, not fill values) where it
-                                    ///< touches other land or the file marks none (rules at loadNetCdfCurrents())
+    std::string maskName;   ///< land/sea mask variable; empty: found automatically (loadNetCdfCurrents()); "none": none
+    std::string tracerName; ///< tracer (temperature, salinity) whose missing values mark land; empty: found
+                            ///< automatically (loadNetCdfCurrents()); "none": none
+    bool zeroVelocityLand{true}; ///< a node whose u and v are exactly 0 in every record of the trip is land (models
+                                 ///< such as POP store coastal velocity points as zeros, not fill values) where it
+                                 ///< touches other land or the file marks none (rules at loadNetCdfCurrents())
 
     // --- model ---
-    GriddedFieldOptions field;  ///< schemes (xy bilinear, depth linear, time linear), BeyondForecast, name
+    GriddedFieldOptions field; ///< schemes (xy bilinear, depth linear, time linear), BeyondForecast, name
 
     // --- what to load ([EichhornOceans] Sec. II.B: only the region, depth layers and times the mission needs) ---
-    double lonMin{std::numeric_limits<double>::quiet_NaN()};  ///< region of interest (x in Cartesian mode);
-    double lonMax{std::numeric_limits<double>::quiet_NaN()};  ///< NaN = the whole file. lonMax < lonMin means
-    double latMin{std::numeric_limits<double>::quiet_NaN()};  ///< the region crosses the antimeridian.
+    double lonMin{std::numeric_limits<double>::quiet_NaN()}; ///< region of interest (x in Cartesian mode);
+    double lonMax{std::numeric_limits<double>::quiet_NaN()}; ///< NaN = the whole file. lonMax < lonMin means
+    double latMin{std::numeric_limits<double>::quiet_NaN()}; ///< the region crosses the antimeridian.
     double latMax{std::numeric_limits<double>::quiet_NaN()};
-    double margin{0.0};       ///< extra margin around the region (degrees, or x/y units in Cartesian mode)
-    int marginNodes{2};       ///< extra grid nodes on each side (2 keeps bicubic stencils inside the data)
+    double margin{0.0}; ///< extra margin around the region (degrees, or x/y units in Cartesian mode)
+    int marginNodes{2}; ///< extra grid nodes on each side (2 keeps bicubic stencils inside the data)
     /// Depth-averaged current over [first, second] metres (positive down, first <= second): the layers covering the
     /// range are loaded and averaged (the trapezoid rule on the piecewise-linear profile, which is exact for a
     /// current linear in depth between layers; constant above the first layer and below the last), giving a 2-D
     /// field; a node that is land at any layer within the range is land. What pilots read off a forecast for the
     /// glider's working depth. Replaces maxDepth.
     std::optional<std::pair<double, double>> depthAverage;
-    double maxDepth{std::numeric_limits<double>::infinity()};  ///< deepest depth the glider reaches (m, positive
+    double maxDepth{std::numeric_limits<double>::infinity()}; ///< deepest depth the glider reaches (m, positive
                                                               ///< down): loads the layers down to the first at or
                                                               ///< below it, plus 2 for cubic/Akima stencils
-    std::string departure;    ///< ISO 8601 date/time, or a number of seconds after the first forecast time; empty
-                              ///< = the first forecast time. Outside the forecast -> Error (a steady field takes
-                              ///< any time; a date only when it is dated).
-    double horizon{std::numeric_limits<double>::infinity()};  ///< seconds after departure to load (plus 2 time
+    std::string departure; ///< ISO 8601 date/time, or a number of seconds after the first forecast time; empty
+                           ///< = the first forecast time. Outside the forecast -> Error (a steady field takes
+                           ///< any time; a date only when it is dated).
+    double horizon{std::numeric_limits<double>::infinity()}; ///< seconds after departure to load (plus 2 time
                                                              ///< steps of margin); infinity = to the end
 
     // --- projection ---
-    double refLon{std::numeric_limits<double>::quiet_NaN()};  ///< reference point of the local frame; NaN = the
-    double refLat{std::numeric_limits<double>::quiet_NaN()};  ///< centre of the region (or of the loaded grid)
+    double refLon{std::numeric_limits<double>::quiet_NaN()}; ///< reference point of the local frame; NaN = the
+    double refLat{std::numeric_limits<double>::quiet_NaN()}; ///< centre of the region (or of the loaded grid)
 };
 
 /// @brief A loaded forecast: the field (x east / y north in metres, t in seconds since the first forecast time of
@@ -97,11 +97,11 @@ struct NetCdfCurrentOptions
 /// decided.
 struct NetCdfCurrents : ForecastFrame
 {
-    std::shared_ptr<GriddedCurrentField> field;       ///< ready to plan on
-    std::string uVariable, vVariable;  ///< variables read
-    bool depthAxis{false};           ///< u has a depth dimension (else its currents are of one level)
-    std::vector<std::size_t> loadedShape;  ///< nt, nz, ny, nx actually loaded
-    std::string maskVariable;        ///< the land/sea mask read ("" when none)
+    std::shared_ptr<GriddedCurrentField> field; ///< ready to plan on
+    std::string uVariable, vVariable;           ///< variables read
+    bool depthAxis{false};                      ///< u has a depth dimension (else its currents are of one level)
+    std::vector<std::size_t> loadedShape;       ///< nt, nz, ny, nx actually loaded
+    std::string maskVariable;                   ///< the land/sea mask read ("" when none)
     /// How grid-relative velocities were turned to eastward/northward: "" (the velocities are eastward/northward,
     /// or the grid is not rotated), "variable 'angle'", or "derived from lon_rho/lat_rho: the grid's i direction
     /// 29.7..30.3 degrees counter-clockwise from east" (a rotated curvilinear grid without angle variable)
@@ -113,14 +113,14 @@ struct NetCdfCurrents : ForecastFrame
     /// The velocities are a B grid's (POP, MOM): the corners of the tracer cells, where the model writes every
     /// point that touches a land cell as zero velocity; every still node is then land.
     bool cornerGrid{false};
-    std::size_t landNodes{0};        ///< loaded nodes (x depth layers) that are land, for any of the reasons, each
-                                     ///< node counted once, for the first of them that marks it:
-    std::size_t fillLandNodes{0};    ///<   u or v a fill value in some record of the trip
-    std::size_t maskLandNodes{0};    ///<   land in the mask (in some record of the trip, for a mask with a time axis)
-    std::size_t tracerLandNodes{0};  ///<   a tracer's missing value (tracerVariable) in some record of the trip
-    std::size_t zeroLandNodes{0};    ///<   u = v = 0 exactly in every record of the trip (zeroVelocityLand)
-    std::size_t fileValues{0};       ///< values per component in the file variable (summed over the files read)
-    std::size_t loadedValues{0};     ///< values per component loaded
+    std::size_t landNodes{0};       ///< loaded nodes (x depth layers) that are land, for any of the reasons, each
+                                    ///< node counted once, for the first of them that marks it:
+    std::size_t fillLandNodes{0};   ///<   u or v a fill value in some record of the trip
+    std::size_t maskLandNodes{0};   ///<   land in the mask (in some record of the trip, for a mask with a time axis)
+    std::size_t tracerLandNodes{0}; ///<   a tracer's missing value (tracerVariable) in some record of the trip
+    std::size_t zeroLandNodes{0};   ///<   u = v = 0 exactly in every record of the trip (zeroVelocityLand)
+    std::size_t fileValues{0};      ///< values per component in the file variable (summed over the files read)
+    std::size_t loadedValues{0};    ///< values per component loaded
     /// Forecast in several files: records of a file left out because a later file (the newer forecast) starts
     /// at or before their time, counted over all the files given; 0 for one file.
     std::size_t droppedRecords{0};
@@ -195,11 +195,11 @@ struct NetCdfCurrents : ForecastFrame
 ///
 /// Geographic grids (1-D or 2-D) become curvilinear grids of projected nodes (LocalProjection about the
 /// reference point) and eastward/northward velocities are rotated into x/y at each node. Between nodes a point is
-/// located in the straight-edged cell of the projected nodes (GriddedCurrentField); a parallel bows away from that edge by at most L^2 tan(lat) / (8 R)
-/// for a cell of width L: 0.5 m for 6 km cells at 45 degrees, 27 m for 0.5-degree cells at 33 degrees, far
-/// below the forecasts' resolution. Velocities are eastward/northward unless an angle variable (angleName) says
-/// they run along the grid's i/j directions; then (u, v) at each node is rotated by its angle a:
-/// east = u cos a - v sin a, north = u sin a + v cos a (ROMS `angle`, POP `ANGLE`).
+/// located in the straight-edged cell of the projected nodes (GriddedCurrentField); a parallel bows away from that edge
+/// by at most L^2 tan(lat) / (8 R) for a cell of width L: 0.5 m for 6 km cells at 45 degrees, 27 m for 0.5-degree cells
+/// at 33 degrees, far below the forecasts' resolution. Velocities are eastward/northward unless an angle variable
+/// (angleName) says they run along the grid's i/j directions; then (u, v) at each node is rotated by its angle a: east
+/// = u cos a - v sin a, north = u sin a + v cos a (ROMS `angle`, POP `ANGLE`).
 ///
 /// Staggered grids: u and v on grids of their own. An Arakawa C grid as ROMS writes it (u on (eta_u, xi_u) with
 /// xi_u = xi_rho - 1, v on (eta_v, xi_v) with eta_v = eta_rho - 1, 2-D longitude/latitude on (eta_rho, xi_rho))
@@ -300,4 +300,4 @@ bool netCdfIsGeographic(const std::vector<std::string> &paths, const NetCdfCurre
 /// read as one, OPeNDAP URLs, and Zarr stores and GRIB files (through GDAL); its messages name the request's
 /// settings in the caller's words (ForecastRequest::optionNames).
 std::shared_ptr<const GriddedSource> netCdfSource();
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -11,7 +11,7 @@ struct RankineVortexParams
 {
     double x0{0.0};     ///< centre, x
     double y0{0.0};     ///< centre, y
-    double radius{1.0};  ///< core radius R (> 0)
+    double radius{1.0}; ///< core radius R (> 0)
     double vmax{1.0};   ///< azimuthal speed at the core radius; > 0 counter-clockwise, < 0 clockwise
     double u{0.0};      ///< uniform background current, x component
     double v{0.0};      ///< uniform background current, y component
@@ -39,19 +39,10 @@ public:
     /// region.
     double maxSpeed(const Region &region) const override;
     std::optional<double> streamFunction(double x, double y, double z, double t) const override;
-    bool divergenceFree() const override
-    {
-        return true;
-    }
-    std::string name() const override
-    {
-        return "rankine vortex";
-    }
+    bool divergenceFree() const override { return true; }
+    std::string name() const override { return "rankine vortex"; }
     /// @brief The parameters in use.
-    const RankineVortexParams &params() const
-    {
-        return p_;
-    }
+    const RankineVortexParams &params() const { return p_; }
     /// @brief Azimuthal speed of the vortex (without background) at distance r from the centre (signed as vmax).
     double azimuthalSpeed(double r) const;
 
@@ -62,4 +53,4 @@ protected:
 private:
     RankineVortexParams p_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -11,7 +11,8 @@
 
 namespace ompl_glider
 {
-/// @brief c(x, y, z, t) = inner(x, y, z, t + shift). Space and land are the inner field's; a query counts a CMC on both.
+/// @brief c(x, y, z, t) = inner(x, y, z, t + shift). Space and land are the inner field's; a query counts a CMC on
+/// both.
 class ShiftedTimeField : public CurrentField
 {
 public:
@@ -19,39 +20,18 @@ public:
     ShiftedTimeField(std::shared_ptr<const CurrentField> inner, double shift);
 
     double maxSpeed(const Region &region) const override;
-    bool divergenceFree() const override
-    {
-        return inner_->divergenceFree();
-    }
-    bool inWater(double x, double y, double z) const override
-    {
-        return inner_->inWater(x, y, z);
-    }
+    bool divergenceFree() const override { return inner_->divergenceFree(); }
+    bool inWater(double x, double y, double z) const override { return inner_->inWater(x, y, z); }
     bool segmentInWater(double x1, double y1, double x2, double y2, double z) const override
     {
         return inner_->segmentInWater(x1, y1, x2, y2, z);
     }
-    std::vector<Segment2> landBoundary(double z) const override
-    {
-        return inner_->landBoundary(z);
-    }
-    double timeBegin() const override
-    {
-        return inner_->timeBegin() - shift_;
-    }
-    double timeEnd() const override
-    {
-        return inner_->timeEnd() - shift_;
-    }
-    std::string name() const override
-    {
-        return inner_->name();
-    }
+    std::vector<Segment2> landBoundary(double z) const override { return inner_->landBoundary(z); }
+    double timeBegin() const override { return inner_->timeBegin() - shift_; }
+    double timeEnd() const override { return inner_->timeEnd() - shift_; }
+    std::string name() const override { return inner_->name(); }
     /// @brief The time shift (inner time - this field's time).
-    double shift() const
-    {
-        return shift_;
-    }
+    double shift() const { return shift_; }
 
 protected:
     Velocity evaluate(double x, double y, double z, double t) const override
@@ -67,4 +47,4 @@ private:
     std::shared_ptr<const CurrentField> inner_;
     double shift_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -10,19 +10,11 @@ namespace ompl_glider
 class UniformCurrent : public CurrentField
 {
 public:
-    UniformCurrent(double u, double v) : c_{u, v}
-    {
-    }
+    UniformCurrent(double u, double v) : c_{u, v} {}
     double maxSpeed(const Region &region) const override;
     std::optional<double> streamFunction(double x, double y, double z, double t) const override;
-    bool divergenceFree() const override
-    {
-        return true;
-    }
-    std::string name() const override
-    {
-        return "uniform";
-    }
+    bool divergenceFree() const override { return true; }
+    std::string name() const override { return "uniform"; }
 
 protected:
     Velocity evaluate(double x, double y, double z, double t) const override;
@@ -31,4 +23,4 @@ protected:
 private:
     Velocity c_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

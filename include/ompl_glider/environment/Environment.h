@@ -27,17 +27,11 @@ public:
     /// @brief The times at which a timed restriction ends: the ends of the closed windows of time-windowed zones,
     /// sorted, without repeats. A planner that waits (TveSearch) tries departing just after them when a leg
     /// is blocked. Empty by default (static regions; drifting ice has no end).
-    virtual std::vector<double> releaseTimes() const
-    {
-        return {};
-    }
+    virtual std::vector<double> releaseTimes() const { return {}; }
 
     /// @brief True when the region never changes with time (pointFree() ignores t): a planner may then evaluate it
     /// once (LevelSet's static forbidden set). False by default.
-    virtual bool isStatic() const
-    {
-        return false;
-    }
+    virtual bool isStatic() const { return false; }
 
     /// @brief Why (x, y, t) is not free ("inside island 'A'"); empty when it is free.
     virtual std::string whyBlocked(double x, double y, double t) const = 0;
@@ -49,4 +43,4 @@ public:
         return legFree(x1, y1, t1, x2, y2, t2) ? std::string() : std::string("leg meets a forbidden region");
     }
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

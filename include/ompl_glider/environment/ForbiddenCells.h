@@ -36,22 +36,16 @@ public:
 
     bool pointFree(double x, double y, double t) const override;
     bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const override;
-    bool isStatic() const override
-    {
-        return true;
-    }
+    bool isStatic() const override { return true; }
     /// @brief Number of forbidden cells.
-    std::size_t cellCount() const
-    {
-        return cells_.size();
-    }
+    std::size_t cellCount() const { return cells_.size(); }
     /// @brief The boundary edges of the union.
     const std::vector<Segment2> &boundary() const;
 
 private:
     std::size_t nx_;
     std::vector<Point2> nodes_;
-    std::vector<std::uint32_t> cells_;  // forbidden cell ids j * (nx - 1) + i
+    std::vector<std::uint32_t> cells_; // forbidden cell ids j * (nx - 1) + i
     std::unique_ptr<environment_detail::SegmentIndex> edges_;
     // cells in buckets
     std::vector<std::uint32_t> start_, ids_;
@@ -59,4 +53,4 @@ private:
     std::size_t bnx_{1}, bny_{1};
     bool inCell(std::uint32_t c, double x, double y) const;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

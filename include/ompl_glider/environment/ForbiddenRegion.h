@@ -17,25 +17,14 @@ class ForbiddenRegion : public Environment
 public:
     /// @param name the region's name as given by the user ("A", "Funk Island")
     /// @param kind what it is ("island", "land", "restricted area", "closure", "ice zone")
-    ForbiddenRegion(std::string name, std::string kind) : name_(std::move(name)), kind_(std::move(kind))
-    {
-    }
+    ForbiddenRegion(std::string name, std::string kind) : name_(std::move(name)), kind_(std::move(kind)) {}
 
     /// @brief The region's name.
-    const std::string &name() const
-    {
-        return name_;
-    }
+    const std::string &name() const { return name_; }
     /// @brief What the region is ("island", ...).
-    const std::string &kind() const
-    {
-        return kind_;
-    }
+    const std::string &kind() const { return kind_; }
     /// @brief "<kind> '<name>'".
-    std::string label() const
-    {
-        return kind_ + " '" + name_ + "'";
-    }
+    std::string label() const { return kind_ + " '" + name_ + "'"; }
 
     /// @brief "inside <kind> '<name>'" when (x, y, t) is blocked, else empty.
     std::string whyBlocked(double x, double y, double t) const override
@@ -52,4 +41,4 @@ private:
     std::string name_;
     std::string kind_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -24,15 +24,9 @@ public:
     void add(std::shared_ptr<const ForbiddenRegion> region);
 
     /// @brief The members in insertion order.
-    const std::vector<std::shared_ptr<const ForbiddenRegion>> &regions() const
-    {
-        return regions_;
-    }
+    const std::vector<std::shared_ptr<const ForbiddenRegion>> &regions() const { return regions_; }
     /// @brief Number of members.
-    std::size_t size() const
-    {
-        return regions_.size();
-    }
+    std::size_t size() const { return regions_.size(); }
 
     bool pointFree(double x, double y, double t) const override;
     bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const override;
@@ -49,4 +43,4 @@ private:
 
 /// @brief Another name for ForbiddenRegions.
 using EnvironmentSet = ForbiddenRegions;
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -13,10 +13,10 @@ namespace ompl_glider
 /// @brief How the reference point of an ice zone carried by the current is advected (IceZone, carried form).
 struct IceAdvectionParams
 {
-    double tolerance{1e-4};   ///< target bound of the position error of the zone (field length unit)
-    double initialStep{0.1};  ///< first RK4 step tried (field time unit); halved until the tolerance is met
-    int maxHalvings{12};      ///< at most this many halvings (then the reached tolerance is reported, not thrown)
-    double depth{0.0};        ///< depth at which the current is read (positive down)
+    double tolerance{1e-4};  ///< target bound of the position error of the zone (field length unit)
+    double initialStep{0.1}; ///< first RK4 step tried (field time unit); halved until the tolerance is met
+    int maxHalvings{12};     ///< at most this many halvings (then the reached tolerance is reported, not thrown)
+    double depth{0.0};       ///< depth at which the current is read (positive down)
 };
 
 /// @brief A polygon of ice that moves rigidly (translation only) and under which a glider may stay submerged for
@@ -68,32 +68,20 @@ public:
     /// @brief Displacement d(t) of the zone since tRef.
     Point2 displacement(double t) const;
     /// @brief The limit of continuous submerged time under ice.
-    double maxSubmergedTime() const
-    {
-        return maxSubmerged_;
-    }
+    double maxSubmergedTime() const { return maxSubmerged_; }
     /// @brief Bound of the position error of the zone (0 for the drifting form).
-    double positionTolerance() const
-    {
-        return positionTolerance_;
-    }
+    double positionTolerance() const { return positionTolerance_; }
     /// @brief The shape at tRef.
-    const Polygon &shape() const
-    {
-        return shape_;
-    }
+    const Polygon &shape() const { return shape_; }
     /// @brief Number of displacement nodes (2 for the drifting form).
-    std::size_t nodeCount() const
-    {
-        return times_.size();
-    }
+    std::size_t nodeCount() const { return times_.size(); }
 
 private:
     Polygon shape_;
     double maxSubmerged_;
     bool constantVelocity_{true};
     double positionTolerance_{0.0};
-    std::vector<double> times_;  // displacement nodes (sorted)
+    std::vector<double> times_; // displacement nodes (sorted)
     std::vector<double> dx_, dy_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

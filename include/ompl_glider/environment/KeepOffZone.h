@@ -36,22 +36,13 @@ public:
     bool pointFree(double x, double y, double t) const override;
     bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const override;
     std::string whyBlocked(double x, double y, double t) const override;
-    bool isStatic() const override
-    {
-        return true;
-    }
+    bool isStatic() const override { return true; }
 
     /// @brief Metres per planning unit (> 0): whyBlocked() then gives the distances in m or km; 0 (the default):
     /// in planning units.
-    void setMetresPerUnit(double metres)
-    {
-        metresPerUnit_ = metres;
-    }
+    void setMetresPerUnit(double metres) { metresPerUnit_ = metres; }
     /// @brief The keep-off distance.
-    double distance() const
-    {
-        return d_;
-    }
+    double distance() const { return d_; }
     /// @brief True when there is no land edge.
     bool empty() const;
     /// @brief Distance from (x, y) to land's boundary (+inf without edges).
@@ -68,9 +59,9 @@ private:
 /// @brief Closest approach to land of a route: the smallest legDistance() over its legs, and where.
 struct LandApproach
 {
-    double distance{std::numeric_limits<double>::quiet_NaN()};  ///< NaN: no route or no land
-    Point2 where;                                                ///< the route's point nearest to land
+    double distance{std::numeric_limits<double>::quiet_NaN()}; ///< NaN: no route or no land
+    Point2 where;                                              ///< the route's point nearest to land
 };
 /// @brief The closest approach of the polyline @p route (TimedPoints, times ignored) to @p zone's land.
 LandApproach closestApproach(const KeepOffZone &zone, const std::vector<TimedPoint> &route);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -26,7 +26,8 @@ struct Interval
 /// split it into pieces that are wholly inside or wholly outside, classified by their midpoints
 /// (segmentInsideIntervals); segmentIntersects() only asks whether any edge is met, else whether the start is inside.
 /// Candidate edges come from a uniform grid over the bounding box (about one edge per cell; each edge is listed in
-/// the cells it passes through, grown by a 1e-9 relative pad), so a 10,000-vertex coastline costs a few dozen edge tests per query.
+/// the cells it passes through, grown by a 1e-9 relative pad), so a 10,000-vertex coastline costs a few dozen edge
+/// tests per query.
 ///
 /// Tolerance. Orientations are determinants evaluated in double precision; a determinant whose magnitude is
 /// below 8 DBL_EPSILON (|t1| + |t2|) (the rounding bound of its two products, cf. Shewchuk's orient2d filter)
@@ -39,9 +40,9 @@ struct Interval
 /// @brief How a Polygon checks its rings.
 enum class RingCheck
 {
-    strict,     ///< no two edges meet except consecutive edges of one ring at their shared vertex
-    validated,  ///< the caller has checked the rings (GEOS's validity in the coordinates given, which lets a hole
-                ///< touch the outer ring or another hole at a point): only finite vertices and a positive area
+    strict,    ///< no two edges meet except consecutive edges of one ring at their shared vertex
+    validated, ///< the caller has checked the rings (GEOS's validity in the coordinates given, which lets a hole
+               ///< touch the outer ring or another hole at a point): only finite vertices and a positive area
 };
 
 class Polygon
@@ -77,25 +78,13 @@ public:
     /// polygon ([LollaLevelSet]; obstacles enter as phi = max(phi, d)).
     double signedDistance(double x, double y) const;
     /// @brief Bounding box of the outer ring.
-    const Box &bounds() const
-    {
-        return box_;
-    }
+    const Box &bounds() const { return box_; }
     /// @brief Total number of vertices (outer ring and holes).
-    std::size_t vertexCount() const
-    {
-        return edges_.size();
-    }
+    std::size_t vertexCount() const { return edges_.size(); }
     /// @brief Number of holes.
-    std::size_t holeCount() const
-    {
-        return holes_;
-    }
+    std::size_t holeCount() const { return holes_; }
     /// @brief Area (outer ring minus holes).
-    double area() const
-    {
-        return area_;
-    }
+    double area() const { return area_; }
     /// @brief Every edge of the outer ring and the holes.
     std::vector<Segment2> edges() const
     {
@@ -106,10 +95,7 @@ public:
         return out;
     }
     /// @brief The outer ring (open: last != first).
-    const std::vector<Point2> &outer() const
-    {
-        return outer_;
-    }
+    const std::vector<Point2> &outer() const { return outer_; }
 
 private:
     struct Edge
@@ -118,8 +104,7 @@ private:
     };
     void buildIndex();
     /// Calls f(cell) for every grid cell the segment (padded) may touch.
-    template <typename F>
-    void forEachCell(double ax, double ay, double bx, double by, F &&f) const;
+    template <typename F> void forEachCell(double ax, double ay, double bx, double by, F &&f) const;
     int column(double x) const;
     int row(double y) const;
     /// Candidate edges for the segment (sorted, unique).
@@ -136,4 +121,4 @@ private:
     std::vector<std::uint32_t> cellStart_;
     std::vector<std::uint32_t> cellEdges_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

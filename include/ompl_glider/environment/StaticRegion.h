@@ -20,18 +20,12 @@ public:
 
     bool pointFree(double x, double y, double t) const override;
     bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const override;
-    bool isStatic() const override
-    {
-        return true;
-    }
+    bool isStatic() const override { return true; }
 
     /// @brief The polygon.
-    const Polygon &polygon() const
-    {
-        return polygon_;
-    }
+    const Polygon &polygon() const { return polygon_; }
 
 private:
     Polygon polygon_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

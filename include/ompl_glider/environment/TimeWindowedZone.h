@@ -21,8 +21,7 @@ class TimeWindowedZone : public ForbiddenRegion
 public:
     /// @param windows closed intervals [lo, hi] with lo <= hi, in the field's time unit; overlapping windows are merged
     /// @throws ompl_glider::Error for an empty list, a non-finite bound or lo > hi (naming the zone and window)
-    TimeWindowedZone(std::string name, Polygon polygon, std::vector<Interval> windows,
-                     std::string kind = "closure");
+    TimeWindowedZone(std::string name, Polygon polygon, std::vector<Interval> windows, std::string kind = "closure");
 
     bool pointFree(double x, double y, double t) const override;
     bool legFree(double x1, double y1, double t1, double x2, double y2, double t2) const override;
@@ -37,18 +36,12 @@ public:
     bool active(double t) const;
 
     /// @brief The polygon.
-    const Polygon &polygon() const
-    {
-        return polygon_;
-    }
+    const Polygon &polygon() const { return polygon_; }
     /// @brief The (sorted, merged) windows.
-    const std::vector<Interval> &windows() const
-    {
-        return windows_;
-    }
+    const std::vector<Interval> &windows() const { return windows_; }
 
 private:
     Polygon polygon_;
     std::vector<Interval> windows_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

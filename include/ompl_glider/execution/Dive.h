@@ -22,25 +22,25 @@ namespace ompl_glider
 /// @brief Settings of flyHeading().
 struct DiveSettings
 {
-    double speed{0.5};   ///< speed through water (x/y units per time unit)
-    double step{0.01};   ///< RK4 step (time units)
-    double depth{0.0};   ///< depth at which the currents are read (m)
-    double radius{0.0};  ///< > 0: the dive ends when the goal is within this distance
-    Point2 goal;         ///< goal (used when radius > 0)
+    double speed{0.5};  ///< speed through water (x/y units per time unit)
+    double step{0.01};  ///< RK4 step (time units)
+    double depth{0.0};  ///< depth at which the currents are read (m)
+    double radius{0.0}; ///< > 0: the dive ends when the goal is within this distance
+    Point2 goal;        ///< goal (used when radius > 0)
 };
 
 /// @brief Where a dive ended and why.
 struct DiveEnd
 {
-    double x{0.0}, y{0.0}, t{0.0};  ///< last position and time (the surfacing, the arrival or the grounding)
-    bool reached{false};            ///< the goal came within the radius (then x, y, t is the end of that step)
-    double arrivalTime{std::numeric_limits<double>::quiet_NaN()};  ///< first time within the radius
-    TimedPoint arrival;             ///< where and when (on the step's chord) the radius was first met, when reached
-    bool grounded{false};           ///< land or a forbidden region ended the dive at (x, y, t)
-    std::string why;                ///< what was met, and where (planning frame)
+    double x{0.0}, y{0.0}, t{0.0}; ///< last position and time (the surfacing, the arrival or the grounding)
+    bool reached{false};           ///< the goal came within the radius (then x, y, t is the end of that step)
+    double arrivalTime{std::numeric_limits<double>::quiet_NaN()}; ///< first time within the radius
+    TimedPoint arrival;   ///< where and when (on the step's chord) the radius was first met, when reached
+    bool grounded{false}; ///< land or a forbidden region ended the dive at (x, y, t)
+    std::string why;      ///< what was met, and where (planning frame)
     /// With a goal radius: the closest approach to the goal on the dive's steps (chords) and its time
     double closestDistance{std::numeric_limits<double>::infinity()};
-    double closestTime{std::numeric_limits<double>::quiet_NaN()};  ///< see closestDistance
+    double closestTime{std::numeric_limits<double>::quiet_NaN()}; ///< see closestDistance
 };
 
 /// @brief Flies the unit heading (hx, hy) from (x, y) at time t until @p tEnd through @p field, checking land and
@@ -49,4 +49,4 @@ struct DiveEnd
 DiveEnd flyHeading(double x, double y, double t, double hx, double hy, double tEnd, const CurrentField &field,
                    const Environment *forbidden, const DiveSettings &settings,
                    std::vector<TimedPoint> *track = nullptr);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -65,8 +65,8 @@ std::optional<ControlStrategy> parseControlStrategy(const std::string &name);
 
 /// @brief A new plan from a GPS fix (x, y at time t) to the goal, given the plan flown so far (@p current, with its
 /// planned times); empty when there is none (the current plan is kept).
-using Replanner = std::function<std::vector<TimedPoint>(double x, double y, double t,
-                                                           const std::vector<TimedPoint> &current)>;
+using Replanner =
+    std::function<std::vector<TimedPoint>(double x, double y, double t, const std::vector<TimedPoint> &current)>;
 
 /// @brief A new plan as Replanner, on the forecast the depth-averaged currents measured so far make
 /// (@p learned: ExecutionOptions::learn's, made once per surfacing and shared with the steering).
@@ -81,21 +81,21 @@ using DacLearning = std::function<std::shared_ptr<const CurrentField>(const std:
 /// @brief Options of flyPlan().
 struct ExecutionOptions
 {
-    double surfacingInterval{3600.0};  ///< time between surfacings (field time units)
-    double step{60.0};                 ///< RK4 step while submerged (field time units); the last step of an
-                                       ///< interval is shortened to end at the surfacing
-    double radius{0.0};                ///< the goal counts as reached within this distance (x/y units)
-    double depth{0.0};                 ///< depth at which the currents are read (m)
-    double endTime{std::numeric_limits<double>::quiet_NaN()};  ///< the run ends here at the latest (field time);
-                                                               ///< NaN: twice the plan's duration after its start
+    double surfacingInterval{3600.0}; ///< time between surfacings (field time units)
+    double step{60.0};                ///< RK4 step while submerged (field time units); the last step of an
+                                      ///< interval is shortened to end at the surfacing
+    double radius{0.0};               ///< the goal counts as reached within this distance (x/y units)
+    double depth{0.0};                ///< depth at which the currents are read (m)
+    double endTime{std::numeric_limits<double>::quiet_NaN()}; ///< the run ends here at the latest (field time);
+                                                              ///< NaN: twice the plan's duration after its start
     Replanner replan;        ///< ControlStrategy::Replan: makes the new plans (required by it)
     unsigned replanEvery{1}; ///< ControlStrategy::Replan: replan at every n-th surfacing (the start counts)
     /// ControlStrategy::PlannedHeadings: the plan's held headings (null: the plan is straight legs)
     const HeadingRoute *headings{nullptr};
-    ObservedReplanner replanObserved;  ///< ControlStrategy::ReplanObserved: makes the new plans (required by it)
+    ObservedReplanner replanObserved; ///< ControlStrategy::ReplanObserved: makes the new plans (required by it)
     /// Dac, ReplanObserved: the standard deviation of the noise on each measured DAC component (field units; 0: none)
     double dacNoise{0.0};
-    unsigned dacSeed{1};  ///< seed of that noise
+    unsigned dacSeed{1}; ///< seed of that noise
     /// ReplanObserved: the correction it plans on, also steered with between plans (the crab angle for the corrected
     /// forecast's current at the fix), when no `learn` is given: CorrectedField(forecast, measured, correction)
     CorrectionParams correction;
@@ -113,23 +113,23 @@ struct ExecutionOptions
 /// @brief One flown run.
 struct FlownTrack
 {
-    std::vector<TimedPoint> fixes;  ///< the start, every surfacing (GPS fixes) and the end of the run
-    std::vector<TimedPoint> track;  ///< every integration step
-    std::vector<double> headings;      ///< heading (radians from +x, counter-clockwise) chosen at each fix but the last
-    double plannedArrival{0.0};        ///< the plan's arrival time
+    std::vector<TimedPoint> fixes; ///< the start, every surfacing (GPS fixes) and the end of the run
+    std::vector<TimedPoint> track; ///< every integration step
+    std::vector<double> headings;  ///< heading (radians from +x, counter-clockwise) chosen at each fix but the last
+    double plannedArrival{0.0};    ///< the plan's arrival time
     /// Distance to the goal at the plan's arrival time (the position then, interpolated on the track; at the end of
     /// the run when it ended earlier by a grounding)
     double finalDistance{std::numeric_limits<double>::infinity()};
-    double arrivalTime{std::numeric_limits<double>::quiet_NaN()};  ///< first time within radius of the goal (NaN: never)
-    bool reached{false};       ///< the goal was reached within radius before the run ended
+    double arrivalTime{std::numeric_limits<double>::quiet_NaN()}; ///< first time within radius of the goal (NaN: never)
+    bool reached{false}; ///< the goal was reached within radius before the run ended
     /// A mission of several legs (MissionExecution.h): its stations reached, and those reached after their window
     std::size_t stationsReached{0};
-    std::size_t windowsMissed{0};  ///< see stationsReached
-    bool grounded{false};      ///< the run ended on land or in a forbidden region
-    std::string groundedWhy;   ///< what was met, and where (planning frame)
-    double madeGoodSpeed{0.0}; ///< straight distance start -> last position divided by the time flown
-    unsigned replans{0};       ///< ControlStrategy::Replan: surfacings that renewed the plan (a new plan, or the
-                               ///< replanner's re-timed rest of the current one)
+    std::size_t windowsMissed{0}; ///< see stationsReached
+    bool grounded{false};         ///< the run ended on land or in a forbidden region
+    std::string groundedWhy;      ///< what was met, and where (planning frame)
+    double madeGoodSpeed{0.0};    ///< straight distance start -> last position divided by the time flown
+    unsigned replans{0};          ///< ControlStrategy::Replan: surfacings that renewed the plan (a new plan, or the
+                                  ///< replanner's re-timed rest of the current one)
     /// Dac, ReplanObserved: the depth-averaged current measured over each dive (the mean of the truth along the dive,
     /// plus noise), with the forecast averaged along the same dive
     std::vector<DacObservation> measured;
@@ -151,6 +151,7 @@ TimedPoint planAt(const std::vector<TimedPoint> &plan, double t);
 
 /// @brief The unit heading (hx, hy) that, added at `speed` to the current c, makes good the unit direction (dx, dy):
 /// the cross-current part of c is cancelled and the rest of the speed goes along d. Where the cross current is
-/// stronger than the speed, the heading points straight against it. [ThompsonICRA] Sec. III (current-sensitive control).
+/// stronger than the speed, the heading points straight against it. [ThompsonICRA] Sec. III (current-sensitive
+/// control).
 void crabHeading(double dx, double dy, Velocity c, double speed, double &hx, double &hy);
-}  // namespace ompl_glider
+} // namespace ompl_glider

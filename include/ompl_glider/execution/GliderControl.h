@@ -36,7 +36,7 @@ struct ControlSettings
     /// Duration of one propagation step (oc::SpaceInformation::setPropagationStepSize); the validity of the state is
     /// checked at the end of every step. 0: D / vMax / 100.
     double propagationStep{0.0};
-    unsigned minSteps{1};    ///< shortest control: this many propagation steps (>= 1)
+    unsigned minSteps{1}; ///< shortest control: this many propagation steps (>= 1)
     /// Longest control: this many propagation steps (>= minSteps). The default 100 lets one heading be held for the
     /// whole best crossing time D / vMax of the box: on the strong-current campaign problems, oc::SST reached the goal
     /// more often and faster with it than with 20 or 50 (optimal heading schedules change slowly).
@@ -93,20 +93,11 @@ public:
     void propagate(const ompl::base::State *state, const ompl::control::Control *control, double duration,
                    ompl::base::State *result) const override;
     /// @brief False: the glider's flight is not run backwards.
-    bool canPropagateBackward() const override
-    {
-        return false;
-    }
+    bool canPropagateBackward() const override { return false; }
     /// @brief The settings of every dive (speed V, RK4 step, depth; no goal radius).
-    const DiveSettings &diveSettings() const
-    {
-        return dive_;
-    }
+    const DiveSettings &diveSettings() const { return dive_; }
     /// @brief The context in use.
-    const std::shared_ptr<const GliderContext> &context() const
-    {
-        return ctx_;
-    }
+    const std::shared_ptr<const GliderContext> &context() const { return ctx_; }
 
 private:
     std::shared_ptr<const GliderContext> ctx_;
@@ -132,10 +123,7 @@ public:
     /// @brief max(|xy1 - xy2| / vMax, t2 - t1).
     ompl::base::Cost motionCostHeuristic(const ompl::base::State *s1, const ompl::base::State *s2) const override;
     /// @brief False.
-    bool isSymmetric() const override
-    {
-        return false;
-    }
+    bool isSymmetric() const override { return false; }
 
 private:
     double vMax_;
@@ -157,20 +145,11 @@ public:
     ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
 
     /// @brief The message of the last failed start/goal check (empty when the last solve() passed it).
-    const std::string &lastCheckMessage() const
-    {
-        return lastCheckMessage_;
-    }
+    const std::string &lastCheckMessage() const { return lastCheckMessage_; }
     /// @brief The problem's context.
-    const std::shared_ptr<GliderContext> &context() const
-    {
-        return ctx_;
-    }
+    const std::shared_ptr<GliderContext> &context() const { return ctx_; }
     /// @brief The settings in use, defaults resolved (every field positive).
-    const ControlSettings &settings() const
-    {
-        return settings_;
-    }
+    const ControlSettings &settings() const { return settings_; }
 
 private:
     bool rejectStartOrGoal();
@@ -201,4 +180,4 @@ std::shared_ptr<GliderControlSetup> makeControlSetup(const GliderProblem &proble
 /// @brief The heading route of a control path of a GliderControlSetup: its first state's position and time, then
 /// one segment (bearing, duration) per control, in order.
 HeadingRoute controlPathToHeadingRoute(const ompl::control::PathControl &path);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -25,16 +25,16 @@ namespace ompl_glider
 /// @brief One segment of a heading route.
 struct HeadingSegment
 {
-    double bearing{0.0};   ///< heading through the water, degrees clockwise from north
-    double duration{0.0};  ///< how long it is held (field time units, > 0)
+    double bearing{0.0};  ///< heading through the water, degrees clockwise from north
+    double duration{0.0}; ///< how long it is held (field time units, > 0)
 };
 
 /// @brief A heading route: where and when it starts and the headings flown from there.
 struct HeadingRoute
 {
-    Point2 start;                          ///< start (planning frame)
-    double departure{0.0};                 ///< departure (field time)
-    std::vector<HeadingSegment> segments;  ///< flown in order
+    Point2 start;                         ///< start (planning frame)
+    double departure{0.0};                ///< departure (field time)
+    std::vector<HeadingSegment> segments; ///< flown in order
     /// RK4 step at which the route was computed and checked (0: none given); flights of the route use it so that
     /// they follow the planner's own
     double step{0.0};
@@ -52,17 +52,17 @@ struct HeadingRoute
 /// @brief A flown heading route.
 struct HeadingFlight
 {
-    std::vector<TimedPoint> ends;   ///< the start, then the end of every segment flown (the last one: where the
-                                    ///< flight ended: the arrival, a grounding or the end of the segments)
-    std::vector<TimedPoint> track;  ///< every integration step, start first (when asked for)
-    std::size_t segmentsFlown{0};   ///< segments begun (the last may have been cut by the arrival or a grounding)
-    bool reached{false};            ///< the goal came within the radius (DiveSettings::radius > 0)
-    double arrivalTime{std::numeric_limits<double>::quiet_NaN()};  ///< first time within the radius
-    bool grounded{false};           ///< land or a forbidden region ended the flight
-    std::string why;                ///< what was met, and where
+    std::vector<TimedPoint> ends;  ///< the start, then the end of every segment flown (the last one: where the
+                                   ///< flight ended: the arrival, a grounding or the end of the segments)
+    std::vector<TimedPoint> track; ///< every integration step, start first (when asked for)
+    std::size_t segmentsFlown{0};  ///< segments begun (the last may have been cut by the arrival or a grounding)
+    bool reached{false};           ///< the goal came within the radius (DiveSettings::radius > 0)
+    double arrivalTime{std::numeric_limits<double>::quiet_NaN()}; ///< first time within the radius
+    bool grounded{false};                                         ///< land or a forbidden region ended the flight
+    std::string why;                                              ///< what was met, and where
     /// With a radius: the closest approach to the goal over the flight, and its time
     double closestDistance{std::numeric_limits<double>::infinity()};
-    double closestTime{std::numeric_limits<double>::quiet_NaN()};  ///< see closestDistance
+    double closestTime{std::numeric_limits<double>::quiet_NaN()}; ///< see closestDistance
 };
 
 /// @brief Flies @p route through @p field with flyHeading() segment by segment (RK4 with DiveSettings::step, the last
@@ -81,4 +81,4 @@ inline Point2 bearingVector(double bearingDeg)
 
 /// @brief (dx, dy) -> bearing in degrees clockwise from north, in [0, 360).
 double bearingOf(double dx, double dy);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -46,11 +46,11 @@ struct ReflightTolerance
 /// @brief Settings of a re-flight.
 struct ReflightSettings
 {
-    double speed{0.5};   ///< speed through water V (x/y units per time unit)
-    double depth{0.0};   ///< depth at which the currents are read (m)
-    double radius{0.0};  ///< heading routes: > 0, the flight ends when the goal is within this distance
-    Point2 goal;         ///< heading routes: the goal (used when radius > 0)
-    ReflightTolerance tolerance;  ///< the integrator's tolerances
+    double speed{0.5};           ///< speed through water V (x/y units per time unit)
+    double depth{0.0};           ///< depth at which the currents are read (m)
+    double radius{0.0};          ///< heading routes: > 0, the flight ends when the goal is within this distance
+    Point2 goal;                 ///< heading routes: the goal (used when radius > 0)
+    ReflightTolerance tolerance; ///< the integrator's tolerances
     /// reflyPath(): a leg the plan flies more than 0.1 % slower than the re-flight at full speed (a wait for a lane,
     /// a goal window) keeps its planned arrival when that is later than the re-flown one, and a hold keeps its
     /// planned end, so the re-flight follows the plan's schedule; false: every leg at full speed, holds keep their
@@ -64,16 +64,16 @@ struct HeadingReflight
     /// The start, then the end of every segment flown; the last one is where the flight ended (the arrival, the
     /// start of the step that met land or a forbidden region, or the end of the last segment).
     std::vector<TimedPoint> ends;
-    std::size_t segmentsFlown{0};  ///< segments begun (the last may have been cut by the arrival or a grounding)
-    bool reached{false};           ///< the goal came within the radius (radius > 0)
-    double arrivalTime{std::numeric_limits<double>::quiet_NaN()};  ///< first time within the radius, when reached
-    TimedPoint end;                ///< where the flight ended (ends.back())
-    double finalDistance{std::numeric_limits<double>::quiet_NaN()};  ///< distance from end to the goal (radius > 0)
-    bool grounded{false};          ///< land, a forbidden region or a non-finite current ended the flight
-    std::string why;               ///< what was met, and where (planning frame); what failed when !ok
-    bool ok{true};                 ///< false when the integrator gave up (ReflightTolerance::maxSteps)
-    std::size_t steps{0};          ///< accepted steps
-    std::size_t rejected{0};       ///< rejected steps (error too large, or shortened to locate land)
+    std::size_t segmentsFlown{0}; ///< segments begun (the last may have been cut by the arrival or a grounding)
+    bool reached{false};          ///< the goal came within the radius (radius > 0)
+    double arrivalTime{std::numeric_limits<double>::quiet_NaN()};   ///< first time within the radius, when reached
+    TimedPoint end;                                                 ///< where the flight ended (ends.back())
+    double finalDistance{std::numeric_limits<double>::quiet_NaN()}; ///< distance from end to the goal (radius > 0)
+    bool grounded{false};    ///< land, a forbidden region or a non-finite current ended the flight
+    std::string why;         ///< what was met, and where (planning frame); what failed when !ok
+    bool ok{true};           ///< false when the integrator gave up (ReflightTolerance::maxSteps)
+    std::size_t steps{0};    ///< accepted steps
+    std::size_t rejected{0}; ///< rejected steps (error too large, or shortened to locate land)
 };
 
 /// @brief Re-flies @p route through @p field: dx/dt = V h + c(x, y, depth, t) for each held heading h
@@ -96,13 +96,13 @@ HeadingReflight reflyHeadingRoute(const HeadingRoute &route, const CurrentField 
 /// @brief One re-flown straight leg.
 struct LegReflight
 {
-    double duration{std::numeric_limits<double>::infinity()};  ///< the leg's time at full speed; +inf if infeasible
-    bool feasible{false};  ///< the leg can be flown straight at full speed
+    double duration{std::numeric_limits<double>::infinity()}; ///< the leg's time at full speed; +inf if infeasible
+    bool feasible{false};                                     ///< the leg can be flown straight at full speed
     /// When infeasible: where and when the re-flight stopped (for land: the first point of the leg on land, time NaN)
     TimedPoint where;
-    std::string why;       ///< when infeasible: why
-    std::size_t steps{0};     ///< accepted steps
-    std::size_t rejected{0};  ///< rejected steps
+    std::string why;         ///< when infeasible: why
+    std::size_t steps{0};    ///< accepted steps
+    std::size_t rejected{0}; ///< rejected steps
 };
 
 /// @brief Re-flies the straight ground-track leg (x1, y1) -> (x2, y2) leaving at @p tStart at full speed V with the
@@ -122,15 +122,15 @@ LegReflight reflyLeg(double x1, double y1, double x2, double y2, double tStart, 
 /// @brief A re-flown straight-leg path.
 struct PathReflight
 {
-    bool feasible{false};  ///< every leg could be flown
+    bool feasible{false}; ///< every leg could be flown
     /// The re-flown time at each waypoint from path.front().t (all of them when feasible; up to the start of the
     /// failed leg otherwise)
     std::vector<double> times;
-    double arrivalTime{std::numeric_limits<double>::infinity()};  ///< times.back() when feasible, else +inf
-    std::size_t failedLeg{0};  ///< when infeasible: the first leg (path[i] -> path[i + 1]) that cannot be flown
-    TimedPoint where;          ///< when infeasible: where and when it failed
-    std::string why;           ///< when infeasible: why ("leg i: ...")
-    std::size_t steps{0};      ///< accepted steps over all legs
+    double arrivalTime{std::numeric_limits<double>::infinity()}; ///< times.back() when feasible, else +inf
+    std::size_t failedLeg{0}; ///< when infeasible: the first leg (path[i] -> path[i + 1]) that cannot be flown
+    TimedPoint where;         ///< when infeasible: where and when it failed
+    std::string why;          ///< when infeasible: why ("leg i: ...")
+    std::size_t steps{0};     ///< accepted steps over all legs
 };
 
 /// @brief Re-flies the straight-leg path @p path (the planners' usual output: ground-track legs flown with a crab
@@ -152,4 +152,4 @@ inline double relativeDifference(double reportedArrival, double reflownArrival, 
 {
     return relativeDifference(reportedArrival - departure, reflownArrival - departure);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

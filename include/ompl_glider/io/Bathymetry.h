@@ -28,4 +28,4 @@ public:
 std::shared_ptr<const Bathymetry> readBathymetry(const std::string &path, const std::string &variable,
                                                  std::function<LonLat(double x, double y)> toGeographic,
                                                  const GeoBox &region);
-}  // namespace ompl_glider
+} // namespace ompl_glider

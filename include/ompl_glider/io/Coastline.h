@@ -17,18 +17,18 @@ namespace ompl_glider
 struct LandPolygon
 {
     std::vector<LonLat> outer;
-    std::vector<std::vector<LonLat>> holes;  ///< lakes
-    std::string name;                         ///< the feature's `name` attribute, else "feature <FID>"
+    std::vector<std::vector<LonLat>> holes; ///< lakes
+    std::string name;                       ///< the feature's `name` attribute, else "feature <FID>"
 };
 
 /// @brief What a coastline file held: its features with a geometry, those that met the box, and their extent in
 /// lon/lat (after the transformation), so that a file lying nowhere near the trip can be told from open water.
 struct CoastlineCount
 {
-    int features{0};  ///< features with a geometry
-    int used{0};      ///< features that met the box
-    std::set<std::string> usedFeatures;  ///< those features (layer/FID): a feature met by two reads counts once
-    double lonMin{1e300}, lonMax{-1e300}, latMin{1e300}, latMax{-1e300};  ///< the features' extent
+    int features{0};                    ///< features with a geometry
+    int used{0};                        ///< features that met the box
+    std::set<std::string> usedFeatures; ///< those features (layer/FID): a feature met by two reads counts once
+    double lonMin{1e300}, lonMax{-1e300}, latMin{1e300}, latMax{-1e300}; ///< the features' extent
 };
 
 /// @brief The land polygons of every layer of @p path that meet @p box ([lonMin, lonMax] x [latMin, latMax]),
@@ -52,4 +52,4 @@ std::vector<LandPolygon> readLandPolygons(const std::string &path, const GeoBox 
 /// @brief Why GEOS (through OGR) calls the polygon with outer ring @p outer and @p holes invalid ("Self-intersection
 /// at or near point 1 2", in the rings' own coordinates), or "" when it is valid.
 std::string polygonFault(const std::vector<Point2> &outer, const std::vector<std::vector<Point2>> &holes);
-}  // namespace ompl_glider
+} // namespace ompl_glider

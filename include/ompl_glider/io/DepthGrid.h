@@ -37,4 +37,4 @@ struct DepthGrid
 /// node lies in the region, or the region holds only fill values or only land (the message names the sign
 /// convention it was read with and the attribute that states the other).
 DepthGrid readDepthGrid(const std::string &path, const std::string &variable, const GeoBox &region);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -26,11 +26,11 @@ bool isGribFile(const std::string &path);
 /// or GDAL (a Zarr store, a GRIB file).
 enum class DatasetKind
 {
-    NetCdfFile,     ///< a NetCDF file
-    Opendap,        ///< an OPeNDAP dataset: an http(s) URL that is no Zarr store or GRIB file
-    MemoryDataset,  ///< an in-memory dataset (MemoryDataset.h)
-    ZarrStore,      ///< a Zarr store, on disk or over HTTP (isZarrStore())
-    GribFile        ///< a GRIB file, on disk or over HTTP (isGribFile())
+    NetCdfFile,    ///< a NetCDF file
+    Opendap,       ///< an OPeNDAP dataset: an http(s) URL that is no Zarr store or GRIB file
+    MemoryDataset, ///< an in-memory dataset (MemoryDataset.h)
+    ZarrStore,     ///< a Zarr store, on disk or over HTTP (isZarrStore())
+    GribFile       ///< a GRIB file, on disk or over HTTP (isGribFile())
 };
 /// @brief The kind of the source @p path: a Zarr store, a GRIB file, an OPeNDAP dataset (another URL), an in-memory
 /// dataset, else a NetCDF file.
@@ -40,4 +40,4 @@ DatasetKind datasetKindOf(const std::string &path);
 const char *datasetKindName(DatasetKind kind);
 /// @brief What a forecast source is, as the report and summary.json name it: datasetKindName(datasetKindOf(path)).
 std::string forecastSourceKind(const std::string &path);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -30,10 +30,7 @@ struct GeoBox
     double latMin{0.0}, latMax{0.0};
 
     /// @brief Degrees of longitude covered (in [0, 360]).
-    double width() const
-    {
-        return lonMax - lonMin;
-    }
+    double width() const { return lonMax - lonMin; }
     /// @brief True when the position (longitude in any convention) lies in the box, edges included.
     bool contains(LonLat p) const;
     /// @brief The longitude shifted by whole turns to lie in [lonMin, lonMin + 360) (so in [lonMin, lonMax] when
@@ -42,10 +39,7 @@ struct GeoBox
     /// @brief "lon A..B, lat C..D" (A in -180..180, B beyond 180 across the antimeridian).
     std::string text() const;
     /// @brief The whole globe: lon -180..180, lat -90..90.
-    static GeoBox world()
-    {
-        return GeoBox{-180.0, 180.0, -90.0, 90.0};
-    }
+    static GeoBox world() { return GeoBox{-180.0, 180.0, -90.0, 90.0}; }
 };
 
 /// @brief What is wrong with a region: the bound at fault (lon_min, lat_min, lon_max or lat_max) and why.
@@ -85,4 +79,4 @@ GeoBox tripBox(const std::vector<LonLat> &points, double marginKm);
 /// longitudes unwrapped about the centre's so that a rectangle across the antimeridian stays narrow (lonMax beyond
 /// 180 then). For clipping and drawing, not for exact bounds (an edge may bow between samples).
 GeoBox frameBounds(const Box &frame, const std::function<LonLat(Point2)> &toGeographic);
-}  // namespace ompl_glider
+} // namespace ompl_glider

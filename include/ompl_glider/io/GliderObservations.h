@@ -37,8 +37,8 @@ struct GliderFix
 /// @brief What a deployment's files gave.
 struct GliderObservations
 {
-    std::string source;               ///< the path given (file, folder or glob pattern), or the URL (no credentials)
-    std::size_t files{0};             ///< files read (1 for a URL: its answer)
+    std::string source;   ///< the path given (file, folder or glob pattern), or the URL (no credentials)
+    std::size_t files{0}; ///< files read (1 for a URL: its answer)
     /// the glider (IOOS `platform:id`, else `trajectory`; ERDDAP: the dataset id without its deployment date,
     /// "ru29-20260315T0000" -> "ru29"; dba: the header's `filename` without its year, day, mission and segment,
     /// "ru29-2026-074-0-12" -> "ru29"); empty for a CSV

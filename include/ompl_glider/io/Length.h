@@ -10,4 +10,4 @@ namespace ompl_glider
 /// converted with @p metresPerUnit metres per planning unit; @p unitKnown false (an analytic flow without
 /// units.length_m) refuses the second form. @throws Error saying what was expected (the caller adds where).
 double parseLength(const std::string &text, double metresPerUnit, bool unitKnown);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -17,4 +17,4 @@ void releaseMemoryDataset(const std::string &name);
 
 /// @brief True when @p source names a dataset of registerMemoryDataset() ("memory:" and a number).
 bool isMemoryDataset(const std::string &source);
-}  // namespace ompl_glider
+} // namespace ompl_glider

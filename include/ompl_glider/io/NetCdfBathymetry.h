@@ -36,25 +36,16 @@ public:
     /// @brief Depth at axis coordinates (a, b) = (lon, lat) or (x, y).
     double atAxes(double a, double b) const;
     /// @brief True when the axes are longitude/latitude.
-    bool geographic() const
-    {
-        return geographic_;
-    }
+    bool geographic() const { return geographic_; }
     /// @brief The variable read, and how its sign was decided (DepthGrid::convention).
-    const std::string &variable() const
-    {
-        return variable_;
-    }
-    const std::string &convention() const
-    {
-        return convention_;
-    }
+    const std::string &variable() const { return variable_; }
+    const std::string &convention() const { return convention_; }
 
 private:
-    std::vector<double> ax_, ay_;  // ascending axes (x: lon or x, y: lat or y)
-    std::vector<double> depth_;    // [j * nx + i]
+    std::vector<double> ax_, ay_; // ascending axes (x: lon or x, y: lat or y)
+    std::vector<double> depth_;   // [j * nx + i]
     bool geographic_{false};
     std::string variable_, convention_;
     std::function<LonLat(double, double)> toGeographic_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -4,9 +4,9 @@
 /// a request may take, where what was fetched is kept (the cache), and what came from where.
 ///
 /// A forecast given as an http:// or https:// URL is read through NetCDF-C's own DAP client exactly as a file is read
-/// (GriddedDataset: the same layouts, units, land and time rules). Only what the reader asks for crosses the network: the
-/// dataset's description (DDS and DAS), the coordinate variables, and the hyperslab of the trip's region, levels and
-/// records of the velocities and masks, each variable in a few large requests (NetCDF-C itself fetches every
+/// (GriddedDataset: the same layouts, units, land and time rules). Only what the reader asks for crosses the network:
+/// the dataset's description (DDS and DAS), the coordinate variables, and the hyperslab of the trip's region, levels
+/// and records of the velocities and masks, each variable in a few large requests (NetCDF-C itself fetches every
 /// variable of at most 4096 values, the coordinates, whole with the first read).
 
 #include <cstdint>
@@ -80,4 +80,4 @@ std::vector<RemoteFetch> remoteFetches();
 
 /// @brief The remote sources among @p sources, as remoteFetches() tells them (sources not read yet are left out).
 std::vector<RemoteFetch> remoteFetchesOf(const std::vector<std::string> &sources);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -10,4 +10,4 @@ namespace ompl_glider
 /// @brief $TMPDIR when it is set and not empty, else /tmp; it must be an existing folder.
 /// @throws Error naming the folder (and TMPDIR when it came from there) when it is not.
 std::filesystem::path temporaryFolder();
-}  // namespace ompl_glider
+} // namespace ompl_glider

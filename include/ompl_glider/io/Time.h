@@ -11,12 +11,12 @@ namespace ompl_glider
 /// @brief CF calendars (CF conventions 1.10, Sec. 4.4.1).
 enum class Calendar
 {
-    Standard,            ///< "standard" / "gregorian": Julian before 1582-10-15, Gregorian from then on
-    ProlepticGregorian,  ///< Gregorian rules for all dates
-    Julian,              ///< a leap year every 4 years
-    NoLeap,              ///< "noleap" / "365_day"
-    AllLeap,             ///< "all_leap" / "366_day"
-    Day360               ///< "360_day": twelve 30-day months
+    Standard,           ///< "standard" / "gregorian": Julian before 1582-10-15, Gregorian from then on
+    ProlepticGregorian, ///< Gregorian rules for all dates
+    Julian,             ///< a leap year every 4 years
+    NoLeap,             ///< "noleap" / "365_day"
+    AllLeap,            ///< "all_leap" / "366_day"
+    Day360              ///< "360_day": twelve 30-day months
 };
 
 /// @brief Parses a CF calendar attribute (case-insensitive; empty means standard).
@@ -62,8 +62,8 @@ std::string formatCalendarTime(double secondsSinceCalendarEpoch, Calendar cal);
 /// @brief Parsed CF time units: value * secondsPerUnit + reference = seconds since the calendar epoch.
 struct CfTimeUnits
 {
-    double secondsPerUnit{1.0};  ///< 1 (seconds), 60, 3600 or 86400
-    double reference{0.0};       ///< the "since" date in seconds since the calendar epoch
+    double secondsPerUnit{1.0}; ///< 1 (seconds), 60, 3600 or 86400
+    double reference{0.0};      ///< the "since" date in seconds since the calendar epoch
     Calendar calendar{Calendar::Standard};
 };
 
@@ -89,4 +89,4 @@ bool isoYearInRange(double secondsSince1970);
 /// converted with @p timeUnitSeconds seconds per field unit; @p unitKnown false (an analytic flow without
 /// units.time_s) refuses the second form. @throws Error saying what was expected (the caller adds where).
 double parseDuration(const std::string &text, double timeUnitSeconds, bool unitKnown);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -21,14 +21,8 @@ struct LinearConversion
     double factor{1.0};
     double offset{0.0};
 
-    double operator()(double x) const
-    {
-        return factor * x + offset;
-    }
-    bool identity() const
-    {
-        return factor == 1.0 && offset == 0.0;
-    }
+    double operator()(double x) const { return factor * x + offset; }
+    bool identity() const { return factor == 1.0 && offset == 0.0; }
 };
 
 /// @brief The conversion of values in `units` to metres per second.
@@ -44,4 +38,4 @@ LinearConversion lengthToMetres(const std::string &units);
 /// @brief True when UDUNITS-2 reads `units` as dimensionless: "" , "1", "count", "percent", and angles such as
 /// "degrees_east" (the radian is dimensionless). False when it cannot parse them.
 bool isDimensionless(const std::string &units);
-}  // namespace ompl_glider
+} // namespace ompl_glider

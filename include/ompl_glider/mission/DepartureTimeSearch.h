@@ -22,45 +22,45 @@ using TravelTimeOfDeparture = std::function<double(double tDep)>;
 /// @brief Parameters of the departure-time search.
 struct DepartureSearchParams
 {
-    double windowBegin{0.0};  ///< earliest departure
-    double windowEnd{0.0};    ///< latest departure (before the horizon cut)
+    double windowBegin{0.0}; ///< earliest departure
+    double windowEnd{0.0};   ///< latest departure (before the horizon cut)
     /// Delta t_dep between supporting points ([EichhornRAS] Sec. 5.2: should resolve the local minima)
     double spacing{1.0};
-    double tolerance{1e-3};   ///< absolute tolerance of Brent's method on the departure time
-    unsigned maxBrentEvaluations{40};  ///< at most this many refining searches
+    double tolerance{1e-3};           ///< absolute tolerance of Brent's method on the departure time
+    unsigned maxBrentEvaluations{40}; ///< at most this many refining searches
     /// Half-width of Brent's bracket around the Akima minimum, in supporting-point spacings; <= 0: 1 with fine
     /// supporting points, 2 with coarse ones (a coarser graph can shift the minimum by about a spacing).
     double bracketSpacings{0.0};
     /// Forecast horizon: a departure whose arrival lies after it does not count (its travel time is +inf), and the
     /// window is cut at horizon - minTripDuration ([EichhornRAS] Sec. 5.3). +inf: no horizon.
     double horizon{std::numeric_limits<double>::infinity()};
-    double minTripDuration{0.0};  ///< lower bound of any trip's duration (e.g. distance / (V + max|c|))
-    unsigned threads{0};          ///< supporting points evaluated on this many threads; 0 = all cores, 1 = serial
-    ProgressSink progress;        ///< progress lines (none when empty)
+    double minTripDuration{0.0}; ///< lower bound of any trip's duration (e.g. distance / (V + max|c|))
+    unsigned threads{0};         ///< supporting points evaluated on this many threads; 0 = all cores, 1 = serial
+    ProgressSink progress;       ///< progress lines (none when empty)
 };
 
 /// @brief One evaluated departure.
 struct DepartureSample
 {
-    double tDep{0.0};        ///< departure time
-    double travelTime{0.0};  ///< travel time (+inf when impassable / not covered)
-    bool coarse{false};      ///< evaluated with the coarse search
+    double tDep{0.0};       ///< departure time
+    double travelTime{0.0}; ///< travel time (+inf when impassable / not covered)
+    bool coarse{false};     ///< evaluated with the coarse search
 };
 
 /// @brief Outcome of the departure-time search.
 struct DepartureSearchResult
 {
-    bool found{false};  ///< false when no departure in the window has a finite travel time
-    double departure{std::numeric_limits<double>::quiet_NaN()};   ///< best departure time
-    double travelTime{std::numeric_limits<double>::infinity()};   ///< its travel time (fine search)
-    double windowEnd{0.0};              ///< the window's end after the horizon cut
-    double bracketLo{0.0}, bracketHi{0.0};  ///< interval given to Brent's method
-    double interpolatedMinimum{0.0};    ///< departure at the minimum of the Akima curve
-    std::vector<DepartureSample> supportingPoints;  ///< step 1 (coarse when a coarse search was given)
-    std::vector<DepartureSample> refinements;       ///< step 3 (Brent), fine search
-    std::size_t fineEvaluations{0};    ///< full searches with the fine graph
-    std::size_t coarseEvaluations{0};  ///< full searches with the coarse graph
-    double wallSeconds{0.0};           ///< wall time of the whole search
+    bool found{false}; ///< false when no departure in the window has a finite travel time
+    double departure{std::numeric_limits<double>::quiet_NaN()}; ///< best departure time
+    double travelTime{std::numeric_limits<double>::infinity()}; ///< its travel time (fine search)
+    double windowEnd{0.0};                                      ///< the window's end after the horizon cut
+    double bracketLo{0.0}, bracketHi{0.0};                      ///< interval given to Brent's method
+    double interpolatedMinimum{0.0};                            ///< departure at the minimum of the Akima curve
+    std::vector<DepartureSample> supportingPoints;              ///< step 1 (coarse when a coarse search was given)
+    std::vector<DepartureSample> refinements;                   ///< step 3 (Brent), fine search
+    std::size_t fineEvaluations{0};                             ///< full searches with the fine graph
+    std::size_t coarseEvaluations{0};                           ///< full searches with the coarse graph
+    double wallSeconds{0.0};                                    ///< wall time of the whole search
 };
 
 /// @brief Brent's method for a minimum of f on [a, b] (golden section with parabolic steps, [BrentMin] Ch. 5),
@@ -83,4 +83,4 @@ DepartureSearchResult optimalDepartureTime(const TravelTimeOfDeparture &fine, co
 
 /// @brief Brute force reference: the fine search at every departure windowBegin + k * spacing (in parallel).
 DepartureSearchResult bruteForceDepartureTime(const TravelTimeOfDeparture &fine, const DepartureSearchParams &params);
-}  // namespace ompl_glider
+} // namespace ompl_glider

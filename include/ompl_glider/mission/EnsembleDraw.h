@@ -25,4 +25,4 @@ std::vector<CurrentSpec> drawEnsembleMembers(const CurrentSpec &control, unsigne
 /// @brief One line on the ensemble of @p c for the report: "meandering_jet ensemble of 24 members (control + 23
 /// drawn, spread B0 25 %, c 25 %, k 25 %, seed 7)", "... of 3 members (listed)"; empty without members.
 std::string ensembleDescription(const CurrentSpec &c);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -17,19 +17,19 @@ namespace ompl_glider
 /// @brief One glider's line of the fleet table.
 struct FleetRow
 {
-    std::string name;      ///< the glider's name (its folder)
-    bool solved{false};    ///< a route was found
-    PlanStatus status{PlanStatus::Unknown};  ///< how the glider's plan ended (PlannedPath::status)
-    std::string reason;    ///< why there is no route (empty when solved)
+    std::string name;                       ///< the glider's name (its folder)
+    bool solved{false};                     ///< a route was found
+    PlanStatus status{PlanStatus::Unknown}; ///< how the glider's plan ended (PlannedPath::status)
+    std::string reason;                     ///< why there is no route (empty when solved)
     /// The bad input when the glider's problem itself is bad (PlannedPath::badInput placed by MissionSpec::place():
     /// "m.yaml:12: field 'start'"); empty for a well-formed problem
     std::string badInput;
-    double departure{0.0};                                         ///< departure time (field units)
-    double travelTime{std::numeric_limits<double>::infinity()};    ///< PlannedPath::travelTime
-    double pathLength{std::numeric_limits<double>::quiet_NaN()};   ///< PlannedPath::pathLength (NaN: no route)
-    double arrival{std::numeric_limits<double>::quiet_NaN()};      ///< the last waypoint's time (NaN: no route)
-    std::string departureIso;  ///< ISO 8601 when the mission has a calendar, else empty
-    std::string arrivalIso;    ///< see departureIso
+    double departure{0.0};                                       ///< departure time (field units)
+    double travelTime{std::numeric_limits<double>::infinity()};  ///< PlannedPath::travelTime
+    double pathLength{std::numeric_limits<double>::quiet_NaN()}; ///< PlannedPath::pathLength (NaN: no route)
+    double arrival{std::numeric_limits<double>::quiet_NaN()};    ///< the last waypoint's time (NaN: no route)
+    std::string departureIso; ///< ISO 8601 when the mission has a calendar, else empty
+    std::string arrivalIso;   ///< see departureIso
 };
 
 /// @brief What runFleet() keeps of one glider: its row and what the keep function made of its result.
@@ -55,4 +55,4 @@ MissionSpec fleetGliderMission(const MissionSpec &mission, std::size_t i);
 /// @throws Error "glider 'NAME': ..." when a glider's mission is bad input found while planning (in a job:
 /// "rank R, fleet glider I: glider 'NAME': ...", TaskSpreader::run()).
 std::vector<FleetGlider> runFleet(const MissionSpec &mission, const RunOptions &options, const FleetKeep &keep = {});
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -23,10 +23,10 @@ struct ForecastInput
     /// (several read as one, ordered by their dates; then `file` must be empty), variables, interpolation, horizon
     /// policy, unit overrides, steady record, zero-velocity land, depth average. The mission takes it as it is.
     CurrentSpec current;
-    double depth{0.0};                             ///< depth (m, positive down) at which the current is read
-    Point2 start;  ///< start: lon,lat (x = lon, y = lat; longitude in -180..180 or 0..360, whatever the file's
-                   ///< convention) for a geographic file, x,y for a Cartesian one
-    Point2 goal;   ///< goal, as start
+    double depth{0.0}; ///< depth (m, positive down) at which the current is read
+    Point2 start;      ///< start: lon,lat (x = lon, y = lat; longitude in -180..180 or 0..360, whatever the file's
+                       ///< convention) for a geographic file, x,y for a Cartesian one
+    Point2 goal;       ///< goal, as start
     /// Region to load and plan in, as given (unchecked): for a geographic file x = lon, y = lat (xMin = lon_min,
     /// xMax = lon_max, in either convention, xMax < xMin across the antimeridian: regionFault()); for a Cartesian
     /// file x/y bounds. Messages quote it in GeoJSON bbox order (xMin, yMin, xMax, yMax). None: the trip's region
@@ -39,8 +39,8 @@ struct ForecastInput
     /// the departure too where none is given), named in messages "the last fix of <observations' word>", marked as
     /// the observations' first guess until the mission resumes there (resumeAtLastFix())
     bool startAtLastFix{false};
-    std::string observations;  ///< the glider's observations (MissionSpec::observations' path) for startAtLastFix
-    double speed{0.3};      ///< vehicle speed through water, m/s
+    std::string observations; ///< the glider's observations (MissionSpec::observations' path) for startAtLastFix
+    double speed{0.3};        ///< vehicle speed through water, m/s
     /// a start or goal on the forecast's land is moved to the nearest water (MissionSpec::safety.snapToWater); else
     /// it is refused, the message naming the nearest water
     bool snapToWater{false};
@@ -60,4 +60,4 @@ struct ForecastInput
 /// @throws Error with a one-line message naming the input (in the caller's words, ForecastInput::words), file or
 /// variable at fault.
 MissionSpec forecastMission(const ForecastInput &input);
-}  // namespace ompl_glider
+} // namespace ompl_glider

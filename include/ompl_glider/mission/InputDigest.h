@@ -14,4 +14,4 @@ namespace ompl_glider
 /// different digests (a change only in the middle of a large file excepted). Files that cannot be read count as their
 /// path alone.
 std::uint64_t inputDigest(const MissionSpec &spec);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -36,10 +36,10 @@ struct GeoBox;
 /// @brief A forbidden region in the planning frame (for maps and outputs).
 struct MissionPolygon
 {
-    std::string name;            ///< its name
-    RegionKind kind{RegionKind::Island};  ///< what it is (its name: regionKindName())
-    std::vector<Point2> points;  ///< outer ring, planning frame
-    bool coastline{false};       ///< one of the coastline file's land polygons
+    std::string name;                    ///< its name
+    RegionKind kind{RegionKind::Island}; ///< what it is (its name: regionKindName())
+    std::vector<Point2> points;          ///< outer ring, planning frame
+    bool coastline{false};               ///< one of the coastline file's land polygons
     /// A closure's windows: the closed [from, to] intervals (field time units) in which it is forbidden; empty: at
     /// all times
     std::vector<std::pair<double, double>> windows;
@@ -57,39 +57,21 @@ public:
     ~MissionProblem();
 
     /// @brief The mission, with its automatic settings resolved (planner.grid_size).
-    const MissionSpec &getSpec() const
-    {
-        return spec_;
-    }
+    const MissionSpec &getSpec() const { return spec_; }
     /// @brief The current field.
-    const std::shared_ptr<const CurrentField> &getField() const
-    {
-        return field_;
-    }
+    const std::shared_ptr<const CurrentField> &getField() const { return field_; }
     /// @brief The forecast's files (or URLs) read for the current, in time order (the one file, or those of a
     /// forecast in several files that hold the trip's records); empty for an analytic current.
-    const std::vector<std::string> &forecastFiles() const
-    {
-        return forecastFiles_;
-    }
+    const std::vector<std::string> &forecastFiles() const { return forecastFiles_; }
     /// @brief The forecast's OPeNDAP sources (io/RemoteSource.h): what came from the network and from the cache,
     /// as read when the problem was built; empty for files.
-    const std::vector<RemoteFetch> &remoteSources() const
-    {
-        return remoteSources_;
-    }
+    const std::vector<RemoteFetch> &remoteSources() const { return remoteSources_; }
     /// @brief The ocean an execution flies in (MissionSpec::execution.truth, on the forecast's frame and time
     /// axis); the forecast itself when no truth is given.
-    const std::shared_ptr<const CurrentField> &getTruth() const
-    {
-        return truth_ ? truth_ : field_;
-    }
+    const std::shared_ptr<const CurrentField> &getTruth() const { return truth_ ? truth_ : field_; }
     /// @brief The members of an ensemble current (on the forecast's frame and dates; the first read as the forecast);
     /// empty for a single source. getField() is then their mean (EnsembleMeanField).
-    const std::vector<std::shared_ptr<const CurrentField>> &getMembers() const
-    {
-        return members_;
-    }
+    const std::vector<std::shared_ptr<const CurrentField>> &getMembers() const { return members_; }
     /// @brief The same problem on one member's field alone (no ensemble).
     MissionProblem withMember(std::size_t member) const;
     /// @brief The same problem between other endpoints (planning frame): field, truth, regions and box are shared.
@@ -108,75 +90,36 @@ public:
     /// vehicle's speed when the field has no end), the depth range of the dive profile or the vehicle's depth.
     CorrectionParams correctionParams() const;
     /// @brief The via points (MissionSpec::waypoints) in the planning frame, in the mission's order.
-    const std::vector<Point2> &getViaPoints() const
-    {
-        return via_;
-    }
+    const std::vector<Point2> &getViaPoints() const { return via_; }
     /// @brief What the glider's observations (MissionSpec::observations) gave and how they corrected the forecast;
     /// unset without observations (getField() is then the forecast itself, else the corrected one).
-    const std::shared_ptr<const ObservationReport> &observations() const
-    {
-        return observations_;
-    }
+    const std::shared_ptr<const ObservationReport> &observations() const { return observations_; }
     /// @brief The forbidden regions (null when there are none).
-    const std::shared_ptr<const Environment> &getEnvironment() const
-    {
-        return environment_;
-    }
+    const std::shared_ptr<const Environment> &getEnvironment() const { return environment_; }
     /// @brief Land's boundary with the keep-off distance (MissionSpec::safety): the zone the planners keep off, and
     /// the distances of the closest approach; null when the problem has no land.
-    const std::shared_ptr<const KeepOffZone> &getLand() const
-    {
-        return land_;
-    }
+    const std::shared_ptr<const KeepOffZone> &getLand() const { return land_; }
     /// @brief What the depth limit read ("depth limit 50 m from 'gebco.nc' variable 'elevation' (elevation, positive
     /// up (attribute positive)): 1234 cells forbidden"); empty without one.
-    const std::string &safetyNote() const
-    {
-        return safetyNote_;
-    }
+    const std::string &safetyNote() const { return safetyNote_; }
     /// @brief What reading the forecast decided that a pilot should know, one sentence each: how grid-relative
     /// velocities were turned ("grid angle derived from 'lon_rho'/'lat_rho': ..."), how many nodes are land only
     /// because u = v = 0; empty for analytic fields and forecasts with nothing to say.
-    const std::vector<std::string> &forecastNotes() const
-    {
-        return forecastNotes_;
-    }
+    const std::vector<std::string> &forecastNotes() const { return forecastNotes_; }
     /// @brief Start or goal moved off land (MissionSpec::safety.snapToWater), one sentence each: from where to where.
-    const std::vector<std::string> &endpointNotes() const
-    {
-        return endpointNotes_;
-    }
+    const std::vector<std::string> &endpointNotes() const { return endpointNotes_; }
     /// @brief What the field is: "wind" for a forecast of winds (uwnd, u10, ...), else "current".
-    const std::string &fieldWord() const
-    {
-        return fieldWord_;
-    }
+    const std::string &fieldWord() const { return fieldWord_; }
     /// @brief What the coastline file gave (how many land polygons, which were repaired and why), or "".
-    const std::string &coastlineNote() const
-    {
-        return coastlineNote_;
-    }
+    const std::string &coastlineNote() const { return coastlineNote_; }
     /// @brief Forbidden regions in the planning frame.
-    const std::vector<MissionPolygon> &getPolygons() const
-    {
-        return polygons_;
-    }
+    const std::vector<MissionPolygon> &getPolygons() const { return polygons_; }
     /// @brief Planning box (x/y) and the field's time span.
-    const Region &getBox() const
-    {
-        return box_;
-    }
+    const Region &getBox() const { return box_; }
     /// @brief Start position (planning frame).
-    Point2 getStart() const
-    {
-        return start_;
-    }
+    Point2 getStart() const { return start_; }
     /// @brief Goal position (planning frame).
-    Point2 getGoal() const
-    {
-        return goal_;
-    }
+    Point2 getGoal() const { return goal_; }
 
     /// @brief True when lon/lat can be computed (projection given or geographic forecast).
     bool isGeographic() const;
@@ -211,7 +154,7 @@ private:
     /// A start or goal on the forecast's land (Endpoints.cpp): refused naming the nearest water, or moved there
     /// with MissionSpec::safety.snapToWater.
     void snapEndpoints();
-    void checkAnalyticFields() const;  ///< analytic fields are finite over the box (parameters do not overflow)
+    void checkAnalyticFields() const; ///< analytic fields are finite over the box (parameters do not overflow)
     /// The forecast corrected by the glider's DAC (Observations.cpp); nothing without observations. @p read: the
     /// observations resumeAtLastFix() read already (null: read them here), so that a URL is fetched once.
     void applyObservations(const GliderObservations *read);
@@ -237,12 +180,12 @@ private:
 
     MissionSpec spec_;
     std::shared_ptr<const CurrentField> field_;
-    std::shared_ptr<const CurrentField> truth_;  // null: the forecast
-    std::vector<std::shared_ptr<const CurrentField>> members_;  // ensemble members (empty: one source)
+    std::shared_ptr<const CurrentField> truth_;                // null: the forecast
+    std::vector<std::shared_ptr<const CurrentField>> members_; // ensemble members (empty: one source)
     std::shared_ptr<const Environment> environment_;
     std::shared_ptr<const LocalProjection> projection_;
-    double projectionScale_{1.0};  // metres per planning unit
-    double xyScale_{1.0};          // planning units per x/y unit given (a Cartesian forecast's axes in km: 1000)
+    double projectionScale_{1.0}; // metres per planning unit
+    double xyScale_{1.0};         // planning units per x/y unit given (a Cartesian forecast's axes in km: 1000)
     std::vector<std::string> forecastFiles_;
     std::vector<std::string> forecastNotes_;
     std::vector<RemoteFetch> remoteSources_;
@@ -250,13 +193,13 @@ private:
     std::vector<MissionPolygon> polygons_;
     Region box_;
     Point2 start_, goal_;
-    std::vector<Point2> via_;          // via points, planning frame
-    std::shared_ptr<const ObservationReport> observations_;  // what the observations gave (null: none)
-    bool gridSizeAutomatic_{false};    // planner.grid_size was 0: chosen from the trip's length
-    std::shared_ptr<const KeepOffZone> land_;  // land's boundary and the keep-off distance (null: no land)
-    std::string safetyNote_;                   // what the depth limit read, and how
-    std::string fieldWord_{"current"};         // "current" or "wind"
-    std::string coastlineNote_;                // what the coastline gave, and what was repaired
+    std::vector<Point2> via_;                               // via points, planning frame
+    std::shared_ptr<const ObservationReport> observations_; // what the observations gave (null: none)
+    bool gridSizeAutomatic_{false};                         // planner.grid_size was 0: chosen from the trip's length
+    std::shared_ptr<const KeepOffZone> land_;               // land's boundary and the keep-off distance (null: no land)
+    std::string safetyNote_;                                // what the depth limit read, and how
+    std::string fieldWord_{"current"};                      // "current" or "wind"
+    std::string coastlineNote_;                             // what the coastline gave, and what was repaired
 };
 
 /// @brief The GliderProblem of the built-in Gulf Stream mission (defaultGulfStreamMission()) departing at 0, for
@@ -296,4 +239,4 @@ std::optional<Point2> nearestWater(const CurrentField &field, Point2 p, double z
 /// resolves the interpolated field; 25 steps keep the path's shape; 200 steps bound the search on fine grids.)
 /// @throws Error when no finite size results.
 double defaultForecastGridSize(double minCellSize, double startGoalDistance);
-}  // namespace ompl_glider
+} // namespace ompl_glider

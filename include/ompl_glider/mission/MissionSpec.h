@@ -45,14 +45,11 @@ struct SourceMark
 {
     /// mission file; for a flag or a keyword, how the front end names it ("--grid-size", "plan(): keyword 'speed'")
     std::string file;
-    int line{0};       ///< 1-based line (0 = unknown, or a flag or keyword)
+    int line{0}; ///< 1-based line (0 = unknown, or a flag or keyword)
     Origin origin{Origin::File};
 
     /// @brief True for a flag or a keyword: its name says where, without a line.
-    bool namesItself() const
-    {
-        return origin != Origin::File;
-    }
+    bool namesItself() const { return origin != Origin::File; }
 };
 
 /// @brief How a front end names the mission's settings to its user: a setting ("planner.time_limit", or a setting
@@ -60,11 +57,11 @@ struct SourceMark
 /// "time_limit=" in Python). A setting without a word is named as a mission file names it.
 struct SettingWords
 {
-    std::map<std::string, std::string> words;  ///< by setting
+    std::map<std::string, std::string> words; ///< by setting
     /// How the front end names a value it gave for a setting ("start" -> "--start", "plan(): keyword 'start'");
     /// where missing, the word of `words`, else the setting
     std::map<std::string, std::string> given;
-    Origin origin{Origin::Flag};  ///< what the front end's values are: flags or keywords
+    Origin origin{Origin::Flag}; ///< what the front end's values are: flags or keywords
 
     /// @brief How the front end names a value it gave for @p setting (see `given`).
     std::string givenName(const std::string &setting) const;
@@ -76,26 +73,26 @@ struct SettingWords
 /// @brief A point given as x/y (planning frame) or lon/lat (degrees; needs a projection).
 struct PointSpec
 {
-    bool geographic{false};  ///< lon/lat given
-    Point2 xy;               ///< x/y (planning units) when !geographic
-    LonLat lonLat;           ///< lon/lat (degrees; longitude -180..180 or 0..360) when geographic
+    bool geographic{false}; ///< lon/lat given
+    Point2 xy;              ///< x/y (planning units) when !geographic
+    LonLat lonLat;          ///< lon/lat (degrees; longitude -180..180 or 0..360) when geographic
 };
 
 /// @brief Local projection of the mission: azimuthal equidistant about (lon0, lat0) (as the NetCDF loader uses).
 struct ProjectionSpec
 {
     bool set{false};  ///< a projection was given
-    double lon0{0.0};  ///< reference longitude (degrees)
-    double lat0{0.0};  ///< reference latitude (degrees)
+    double lon0{0.0}; ///< reference longitude (degrees)
+    double lat0{0.0}; ///< reference latitude (degrees)
 };
 
 /// @brief What a plan minimises over the members of an ensemble: the mean of their arrival times, the maximum or a
 /// quantile (PlannerSpec::quantile).
 enum class EnsembleObjective
 {
-    Expected,  ///< "expected": the mean
-    Worst,     ///< "worst": the maximum
-    Quantile   ///< "quantile": the ceil(q M)-th smallest of M
+    Expected, ///< "expected": the mean
+    Worst,    ///< "worst": the maximum
+    Quantile  ///< "quantile": the ceil(q M)-th smallest of M
 };
 /// @brief "expected", "worst" or "quantile".
 const char *ensembleObjectiveName(EnsembleObjective o);
@@ -126,24 +123,21 @@ struct CurrentSpec
     /// resolved and glob patterns expanded; empty: `file` alone
     std::vector<std::string> files;
     /// @brief The forecast's files: `files`, else `file` alone.
-    std::vector<std::string> forecastFiles() const
-    {
-        return files.empty() ? std::vector<std::string>{file} : files;
-    }
+    std::vector<std::string> forecastFiles() const { return files.empty() ? std::vector<std::string>{file} : files; }
     /// gridded: role (u, v, lon, lat, x, y, depth, time, mask, angle) -> name (mask "none": no land/sea mask
     /// variable; angle "none": no grid angle)
     std::map<std::string, std::string> variables;
     Interp2D xyInterpolation{Interp2D::Bilinear};  ///< nearest | bilinear | bicubic (parseInterp2D())
-    Interp1D depthInterpolation{Interp1D::Linear};  ///< nearest | linear | cubic | akima (parseInterp1D())
-    Interp1D timeInterpolation{Interp1D::Linear};   ///< nearest | linear | cubic | akima (parseInterp1D())
+    Interp1D depthInterpolation{Interp1D::Linear}; ///< nearest | linear | cubic | akima (parseInterp1D())
+    Interp1D timeInterpolation{Interp1D::Linear};  ///< nearest | linear | cubic | akima (parseInterp1D())
     /// Refuse (trips past the forecast are infeasible; `horizon: refuse`) or HoldLast (`horizon: hold_last`)
     BeyondForecast horizonPolicy{BeyondForecast::Refuse};
-    bool zeroVelocityLand{true};  ///< gridded: nodes with u = v = 0 exactly at every loaded time are land
+    bool zeroVelocityLand{true}; ///< gridded: nodes with u = v = 0 exactly at every loaded time are land
     /// gridded: the current averaged over [top, bottom] metres (ForecastRequest::depthAverage)
     std::optional<std::pair<double, double>> depthAverage;
-    std::string velocityUnits;  ///< gridded: overrides the units of u and v (any velocity UDUNITS-2 reads)
-    std::string timeUnits;      ///< gridded: overrides the units of the time variable ("days since 2026-01-15")
-    std::optional<std::size_t> steadyRecord;  ///< gridded: plan on this time record only, as a steady field
+    std::string velocityUnits; ///< gridded: overrides the units of u and v (any velocity UDUNITS-2 reads)
+    std::string timeUnits;     ///< gridded: overrides the units of the time variable ("days since 2026-01-15")
+    std::optional<std::size_t> steadyRecord; ///< gridded: plan on this time record only, as a steady field
     /// An ensemble (`current: {ensemble: [...]}`): its members, each a source of this kind (the first is also this
     /// spec's own fields, for names, calendar and messages); empty: a single source. The planning field is the
     /// members' mean; planner.objective judges plans member by member.
@@ -153,23 +147,23 @@ struct CurrentSpec
     /// given (the control run), members 1..N-1 draw each spread parameter p as p (1 + s U(-1, 1)).
     struct EnsembleDraw
     {
-        std::map<std::string, double> spread;  ///< relative half-width s in [0, 1) by parameter
-        unsigned seed{1};                      ///< std::mt19937's seed
+        std::map<std::string, double> spread; ///< relative half-width s in [0, 1) by parameter
+        unsigned seed{1};                     ///< std::mt19937's seed
     };
     /// Set when `members` were drawn (drawEnsembleMembers()); unset for a listed ensemble or a single source
     std::optional<EnsembleDraw> drawn;
     /// gridded, set when the mission is read: the field is steady (no time dimension, a single record, or
     /// steadyRecord); a steady file without dated time axis takes the mission's `epoch`.
     bool steady{false};
-    SourceMark mark;                               ///< where the current block is
+    SourceMark mark; ///< where the current block is
 };
 
 /// @brief The planning box (x/y or lon/lat; lon/lat boxes are projected to their x/y bounding box).
 struct RegionSpec
 {
-    bool set{false};         ///< a region was given (else: the NetCDF grid extent, or required for analytic flows)
-    bool geographic{false};  ///< given as lon/lat
-    Box xy;                  ///< x/y bounds (planning units) when !geographic
+    bool set{false};        ///< a region was given (else: the NetCDF grid extent, or required for analytic flows)
+    bool geographic{false}; ///< given as lon/lat
+    Box xy;                 ///< x/y bounds (planning units) when !geographic
     /// lon/lat bounds as loaded, when geographic: lonMin in -180..180, lonMax = lonMin + width (beyond 180 across
     /// the antimeridian), whatever convention the file used
     GeoBox lonLat;
@@ -193,9 +187,9 @@ struct DepartureSpec
 /// at its earliest valid arrival): the glider must be at the goal at a time in [begin, end] (field time units).
 struct GoalWindowSpec
 {
-    bool set{false};    ///< a window is given (mission `goal.window`, or `--arrive-between`)
-    double begin{0.0};  ///< earliest accepted arrival
-    double end{0.0};    ///< latest accepted arrival
+    bool set{false};   ///< a window is given (mission `goal.window`, or `--arrive-between`)
+    double begin{0.0}; ///< earliest accepted arrival
+    double end{0.0};   ///< latest accepted arrival
 };
 
 /// @brief A via point of a mission of several legs: a station the glider visits
@@ -203,22 +197,22 @@ struct GoalWindowSpec
 /// counts it as reached (the Seaglider targets file's `radius=`, the goto list's waypoint distance).
 struct ViaPointSpec
 {
-    std::string name;    ///< its name in reasons, outputs and the targets file (default "WP1", "WP2", ...)
-    PointSpec position;  ///< lon/lat or x/y, as the start and the goal
+    std::string name;   ///< its name in reasons, outputs and the targets file (default "WP1", "WP2", ...)
+    PointSpec position; ///< lon/lat or x/y, as the start and the goal
     /// Reached within this distance (planning units, metres for a forecast); NaN: the goal's tolerance
     double radius{std::numeric_limits<double>::quiet_NaN()};
-    GoalWindowSpec arrive;  ///< arrival window at this point (unset: any time), as the goal's window works
+    GoalWindowSpec arrive; ///< arrival window at this point (unset: any time), as the goal's window works
     /// Hold here for this long after the arrival (field time units): a "virtual mooring", possible only where the
     /// current is slower than the glider; 0: leave at once
     double stay{0.0};
-    int line{0};  ///< its line in the mission file (0: a flag or a keyword)
+    int line{0}; ///< its line in the mission file (0: a flag or a keyword)
 };
 
 /// @brief The order in which a mission's via points are visited.
 enum class VisitOrder
 {
-    Given,  ///< "given": in the order listed
-    Free    ///< "free": the fastest order (branch and bound over orders, MissionLegs.h)
+    Given, ///< "given": in the order listed
+    Free   ///< "free": the fastest order (branch and bound over orders, MissionLegs.h)
 };
 /// @brief "given" or "free".
 const char *visitOrderName(VisitOrder o);
@@ -236,15 +230,15 @@ constexpr std::size_t kMaxFreeOrderViaPoints = 8;
 /// @brief Vehicle.
 struct VehicleSpec
 {
-    double speed{0.5};  ///< speed through water (field units)
-    double depth{0.0};  ///< depth at which the 2-D planner reads the current
+    double speed{0.5}; ///< speed through water (field units)
+    double depth{0.0}; ///< depth at which the 2-D planner reads the current
 };
 
 /// @brief Dive profiles ([EichhornOceans] Sec. III.B) and bathymetry. Depths are metres (positive down) for every
 /// field; the analytic flows are depth-uniform, so there every profile flies the 2-D travel time.
 struct DiveSpec
 {
-    bool enabled{false};     ///< dive profiles evaluated on the planned legs
+    bool enabled{false}; ///< dive profiles evaluated on the planned legs
     DiveProfileParams params;
     /// Where the seafloor depth comes from: nowhere, one depth, or a file (the mission file's `type: netcdf`)
     enum class Bathymetry
@@ -253,20 +247,20 @@ struct DiveSpec
         Constant,
         File
     } bathymetry{Bathymetry::None};
-    double bathymetryDepth{std::numeric_limits<double>::infinity()};  ///< constant seafloor depth
-    std::string bathymetryFile;      ///< a file of seafloor depth (positive down)
+    double bathymetryDepth{std::numeric_limits<double>::infinity()}; ///< constant seafloor depth
+    std::string bathymetryFile;                                      ///< a file of seafloor depth (positive down)
     std::string bathymetryVariable{"depth"};
-    unsigned threads{0};             ///< pool for the profiles (0: all cores)
+    unsigned threads{0}; ///< pool for the profiles (0: all cores)
 };
 
 /// @brief A polygon of the mission (x/y or lon/lat vertices).
 struct PolygonSpec
 {
-    std::string name;                             ///< used in messages and outputs
-    bool geographic{false};                       ///< vertices are lon/lat
-    std::vector<std::pair<double, double>> points;  ///< outer ring
-    std::vector<std::vector<std::pair<double, double>>> holes;  ///< holes
-    SourceMark mark;                              ///< where it was given
+    std::string name;                                          ///< used in messages and outputs
+    bool geographic{false};                                    ///< vertices are lon/lat
+    std::vector<std::pair<double, double>> points;             ///< outer ring
+    std::vector<std::vector<std::pair<double, double>>> holes; ///< holes
+    SourceMark mark;                                           ///< where it was given
 };
 
 /// @brief What a forbidden polygon of the mission is: an obstacle (forbidden at all times: island, land, restricted
@@ -291,14 +285,14 @@ std::optional<RegionKind> parseRegionKind(const std::string &name);
 struct ObstacleSpec
 {
     PolygonSpec polygon;
-    RegionKind kind{RegionKind::Island};  ///< Island, Land or RestrictedArea
+    RegionKind kind{RegionKind::Island}; ///< Island, Land or RestrictedArea
 };
 
 /// @brief A zone forbidden during time windows.
 struct TimeWindowSpec
 {
     PolygonSpec polygon;
-    std::vector<std::pair<double, double>> windows;  ///< closed [from, to] intervals (field time units)
+    std::vector<std::pair<double, double>> windows; ///< closed [from, to] intervals (field time units)
 };
 
 /// @brief A drifting ice zone under which the glider may stay submerged for a limited time.
@@ -317,10 +311,10 @@ struct ForbiddenSpec
     std::vector<ObstacleSpec> obstacles;
     std::vector<TimeWindowSpec> timeWindows;
     std::vector<IceSpec> ice;
-    std::string geojson;                ///< GeoJSON file (Polygon / MultiPolygon features), resolved path
-    bool geojsonGeographic{true};       ///< GeoJSON coordinates are lon/lat (RFC 7946); false: planning x/y
-    std::string coastline;              ///< land polygons from a GIS file (readLandPolygons()), resolved path
-    SourceMark coastlineMark;           ///< where it was given
+    std::string geojson;          ///< GeoJSON file (Polygon / MultiPolygon features), resolved path
+    bool geojsonGeographic{true}; ///< GeoJSON coordinates are lon/lat (RFC 7946); false: planning x/y
+    std::string coastline;        ///< land polygons from a GIS file (readLandPolygons()), resolved path
+    SourceMark coastlineMark;     ///< where it was given
 };
 
 /// @brief Safety margins: a keep-off distance from land and a depth limit from a bathymetry grid. Both become
@@ -331,9 +325,9 @@ struct SafetySpec
     /// Keep-off distance from land (the field's land cells, coastline polygons, islands and land obstacles), planning
     /// units (metres for a forecast); 0: none (the closest approach is still reported)
     double keepOff{0.0};
-    std::string bathymetry;          ///< NetCDF seafloor depth or elevation (resolved path); empty: none
-    std::string bathymetryVariable;  ///< its variable; empty: detected (DepthGrid.h)
-    double minDepth{0.0};            ///< metres: water shallower than this is forbidden (needs a bathymetry)
+    std::string bathymetry;         ///< NetCDF seafloor depth or elevation (resolved path); empty: none
+    std::string bathymetryVariable; ///< its variable; empty: detected (DepthGrid.h)
+    double minDepth{0.0};           ///< metres: water shallower than this is forbidden (needs a bathymetry)
     /// A start or goal on a forecast's land is moved to the nearest water (MissionProblem::endpointNotes() says
     /// where); false: such a start or goal is refused, the message naming the nearest water
     bool snapToWater{false};
@@ -353,21 +347,21 @@ struct PlannerSpec
     /// the start-goal distance (defaultAnalyticGridSize()), for a forecast half
     /// the smallest grid cell kept within 1/200..1/25 of the start-goal distance (defaultForecastGridSize()).
     double gridSize{0.0};
-    int sectors{3};                 ///< n-sector connectivity (1..5)
-    bool smoothing{true};           ///< [EichhornRAS] Table 3
-    bool refinement{true};          ///< waypoint refinement after smoothing
+    int sectors{3};        ///< n-sector connectivity (1..5)
+    bool smoothing{true};  ///< [EichhornRAS] Table 3
+    bool refinement{true}; ///< waypoint refinement after smoothing
     /// Seconds; 0 = no limit for the lattice planners, 10 s for the sampling planners (which use all they get).
     double timeLimit{0.0};
-    double horizon{0.0};            ///< planning time window length; 0 = automatic
-    double goalTolerance{-1.0};     ///< < 0: automatic (1e-6 of the box size)
+    double horizon{0.0};        ///< planning time window length; 0 = automatic
+    double goalTolerance{-1.0}; ///< < 0: automatic (1e-6 of the box size)
     /// Planner parameters by their OMPL names (declareParam: delta_phi_max, zermelo_steps, certify_tolerance, ...;
     /// plus refiner_max_evaluations for the refinement), as text; checked against the planner before planning.
     std::map<std::string, std::string> parameters;
-    std::map<std::string, SourceMark> parameterMarks;  ///< where each parameter was given
+    std::map<std::string, SourceMark> parameterMarks; ///< where each parameter was given
     /// With an ensemble current: what a plan minimises over the members' arrival times: expected (their mean),
     /// worst (their maximum) or quantile (the `quantile` quantile).
     EnsembleObjective objective{EnsembleObjective::Expected};
-    double quantile{0.9};  ///< objective quantile: in (0, 1]
+    double quantile{0.9}; ///< objective quantile: in (0, 1]
     /// The global check of the route class after a lattice planner (GlobalCheck, Planning.h): extremals shot from the
     /// start, a faster route of another class taken instead of the planner's
     bool globalCheck{true};
@@ -378,7 +372,7 @@ struct PlannerSpec
 /// Times in field units.
 struct StintSpec : StintSettings
 {
-    bool set{false};  ///< a `stints` section was given (its duration and mission_duration are required)
+    bool set{false}; ///< a `stints` section was given (its duration and mission_duration are required)
     /// The section's settings (execution/Stints.h: the one stint settings struct of the mission, the stint planners
     /// and the conversion); without a section nothing is set. A radius of 0 gives a conversion an automatic one.
     StintSpec()
@@ -391,7 +385,7 @@ struct StintSpec : StintSettings
 /// @brief What to write.
 struct OutputSpec
 {
-    std::string directory{"."};   ///< resolved against the mission file's folder
+    std::string directory{"."}; ///< resolved against the mission file's folder
     /// Output formats (OutputFormats.h: outputFormats() lists them with their names); summary.json is always
     /// written.
     std::vector<OutputFormatId> files{OutputFormatId::Csv, OutputFormatId::GeoJson, OutputFormatId::Goto,
@@ -412,7 +406,7 @@ struct OutputSpec
     double gotoMaxOffset{1000.0}; ///< goto list: the farthest a waypoint left out may lie from the listed legs (m)
     double gotoWptDist{100.0};    ///< goto list: list_when_wpt_dist, the waypoint radius in metres
     std::string prefix;           ///< non-empty: also a copy of every file named <prefix>_<file> (a plain name)
-    double mapTime{std::numeric_limits<double>::quiet_NaN()};  ///< time of the map's current arrows (NaN: departure)
+    double mapTime{std::numeric_limits<double>::quiet_NaN()}; ///< time of the map's current arrows (NaN: departure)
     /// Time between two isochrones (format "isochrones"; the mission's time unit); NaN: eight up to the arrival.
     double isochroneInterval{std::numeric_limits<double>::quiet_NaN()};
 };
@@ -421,14 +415,14 @@ struct OutputSpec
 /// other setting is the mission's. fleetGliderMission() (mission/Fleet.h) makes its mission.
 struct FleetGliderSpec
 {
-    std::string name;                 ///< a folder name under the output directory (letters, digits, '_', '-', '.')
+    std::string name; ///< a folder name under the output directory (letters, digits, '_', '-', '.')
     PointSpec start;
     PointSpec goal;
-    std::optional<double> speed;      ///< vehicle speed (unset: the mission's)
-    std::optional<double> departure;  ///< fixed departure time, field units (unset: the mission's departure)
-    std::vector<ViaPointSpec> waypoints;  ///< its via points (MissionSpec::waypoints), visited between start and goal
-    std::optional<VisitOrder> order;      ///< its visiting order (unset: the mission's)
-    int line{0};                      ///< the entry's line in the mission file
+    std::optional<double> speed;         ///< vehicle speed (unset: the mission's)
+    std::optional<double> departure;     ///< fixed departure time, field units (unset: the mission's departure)
+    std::vector<ViaPointSpec> waypoints; ///< its via points (MissionSpec::waypoints), visited between start and goal
+    std::optional<VisitOrder> order;     ///< its visiting order (unset: the mission's)
+    int line{0};                         ///< the entry's line in the mission file
 };
 
 /// @brief The word for "the truth is the forecast itself" (`execution.truth: forecast`, --truth forecast, and the
@@ -439,7 +433,7 @@ inline constexpr const char *kTruthIsForecast = "forecast";
 /// control strategies compared, and a batch of other start/goal pairs.
 struct ExecutionSpec
 {
-    bool enabled{false};  ///< an `execution` section (or --truth / --execution) was given
+    bool enabled{false}; ///< an `execution` section (or --truth / --execution) was given
     /// The ocean the glider flies in: a current source of the same family as `current` (an analytic flow, or a
     /// NetCDF file on the same calendar); unset: the forecast itself (truth = forecast).
     std::optional<CurrentSpec> truth;
@@ -451,18 +445,18 @@ struct ExecutionSpec
     std::vector<std::string> strategies{"current_sensitive", "current_blind", "greedy", "replan"};
     /// The goal counts as reached within this distance (length units); NaN: 1 % of the start-goal distance.
     double radius{std::numeric_limits<double>::quiet_NaN()};
-    unsigned replanEvery{1};  ///< replan at every n-th surfacing
+    unsigned replanEvery{1}; ///< replan at every n-th surfacing
     /// Strategies dac and replan_observed: the standard deviation of the noise on each measured DAC component
     /// (field units: m/s for a forecast); 0: none
     double dacNoise{0.0};
     /// The run ends at departure + this (field units); NaN: twice the planned travel time.
     double duration{std::numeric_limits<double>::quiet_NaN()};
-    unsigned pairs{0};        ///< batch: random start/goal pairs besides the mission's own (0: none)
-    unsigned seed{1};         ///< batch: seed of the pairs
-    double minDistance{std::numeric_limits<double>::quiet_NaN()};  ///< batch: shortest start-goal distance;
+    unsigned pairs{0}; ///< batch: random start/goal pairs besides the mission's own (0: none)
+    unsigned seed{1};  ///< batch: seed of the pairs
+    double minDistance{std::numeric_limits<double>::quiet_NaN()}; ///< batch: shortest start-goal distance;
                                                                   ///< NaN: a quarter of the box's diagonal
-    unsigned threads{0};      ///< batch: parallel runs (0: all cores)
-    SourceMark mark;          ///< where the section is
+    unsigned threads{0};                                          ///< batch: parallel runs (0: all cores)
+    SourceMark mark;                                              ///< where the section is
 };
 
 /// @brief A via point a resumed mission dropped: the glider reached it before its last fix.
@@ -477,10 +471,10 @@ struct DroppedStation
 /// @brief What resuming a mission at the glider's last fix did (resumeAtLastFix()).
 struct MissionResume
 {
-    LonLat fix;                  ///< the last fix
-    std::string fixIso;          ///< its time
-    std::string replacedStart;   ///< "lon, lat" of the start it replaced (the deployment's), empty when none was given
-    std::string replacedDeparture; ///< the departure it replaced (ISO 8601 or field time), empty when none
+    LonLat fix;                ///< the last fix
+    std::string fixIso;        ///< its time
+    std::string replacedStart; ///< "lon, lat" of the start it replaced (the deployment's), empty when none was given
+    std::string replacedDeparture;       ///< the departure it replaced (ISO 8601 or field time), empty when none
     std::vector<DroppedStation> dropped; ///< the stations reached, in the order reached
     /// a stay under way at the last fix: the plan departs at its end (ISO 8601 or field time), else empty
     std::string stayEnds;
@@ -503,7 +497,7 @@ struct ObservationsSpec
     /// carried ahead, an ensemble's members weighed and updated (current/EnsembleLearning.h); false: the given
     /// values and the defaults as they are
     bool learn{true};
-    SourceMark mark;         ///< where it was given
+    SourceMark mark; ///< where it was given
     /// set once the mission was resumed at the last fix (resumeAtLastFix()): what it replaced and dropped
     std::optional<MissionResume> resumed;
     /// @brief Whether a glider's files are given (not only the correction's parameters).
@@ -513,29 +507,29 @@ struct ObservationsSpec
 /// @brief A complete mission.
 struct MissionSpec
 {
-    std::string file;        ///< the mission file
-    std::string directory;   ///< its folder (relative paths are resolved against it)
+    std::string file;             ///< the mission file
+    std::string directory;        ///< its folder (relative paths are resolved against it)
     std::string name{"mission"};  ///< mission name
-    double lengthUnitMetres{1.0};  ///< metres per planning length unit
-    double timeUnitSeconds{1.0};   ///< seconds per planning time unit
-    std::optional<double> epoch;   ///< calendar time (seconds since 1970, UTC) of field time 0, if any
+    double lengthUnitMetres{1.0}; ///< metres per planning length unit
+    double timeUnitSeconds{1.0};  ///< seconds per planning time unit
+    std::optional<double> epoch;  ///< calendar time (seconds since 1970, UTC) of field time 0, if any
     /// @brief Time axis of a dated NetCDF forecast: field time 0 is its first time, in its calendar.
     struct FileCalendar
     {
-        Calendar calendar{Calendar::Standard};  ///< CF calendar of the file
-        double originSeconds{0.0};  ///< first forecast time, seconds since the calendar's epoch (io/Time.h)
+        Calendar calendar{Calendar::Standard}; ///< CF calendar of the file
+        double originSeconds{0.0};             ///< first forecast time, seconds since the calendar's epoch (io/Time.h)
     };
-    std::optional<FileCalendar> fileCalendar;  ///< set for dated NetCDF forecasts
+    std::optional<FileCalendar> fileCalendar; ///< set for dated NetCDF forecasts
     ProjectionSpec projection;
     CurrentSpec current;
     RegionSpec region;
     PointSpec start;
     PointSpec goal;
-    GoalWindowSpec goalWindow;     ///< arrival window at the goal (unset: any time)
+    GoalWindowSpec goalWindow; ///< arrival window at the goal (unset: any time)
     /// Via points between start and goal (a mission of several legs, one leg per pair of consecutive points, planned
     /// in sequence on one clock: runMission()); empty: one leg from start to goal
     std::vector<ViaPointSpec> waypoints;
-    VisitOrder order{VisitOrder::Given};  ///< the via points' visiting order
+    VisitOrder order{VisitOrder::Given}; ///< the via points' visiting order
     DepartureSpec departure;
     VehicleSpec vehicle;
     /// The travel-time integration's settings (h, h_min, h_max, eps, tau, max step); its speed and depth are not
@@ -543,12 +537,12 @@ struct MissionSpec
     TravelTimeParams travel;
     DiveSpec dive;
     ForbiddenSpec forbidden;
-    SafetySpec safety;             ///< keep-off distance and depth limit
+    SafetySpec safety; ///< keep-off distance and depth limit
     PlannerSpec planner;
     StintSpec stints;
     OutputSpec outputs;
-    std::vector<double> speeds;    ///< speed sweep ([EichhornOceans] Table VI); empty = none
-    ExecutionSpec execution;       ///< flying the plan in another ocean
+    std::vector<double> speeds; ///< speed sweep ([EichhornOceans] Table VI); empty = none
+    ExecutionSpec execution;    ///< flying the plan in another ocean
     /// The glider's measurements: the forecast is corrected by them, and without a start the plan starts at the last
     /// fix (and without a departure at its time)
     std::optional<ObservationsSpec> observations;
@@ -562,24 +556,18 @@ struct MissionSpec
 
     /// @brief True when the mission's time unit is known in seconds (a forecast, units.time_s, or an epoch), so that
     /// durations such as "1 h" can be converted (parseDuration()).
-    bool hasTimeUnit() const
-    {
-        return physicalUnits().time || epoch.has_value();
-    }
+    bool hasTimeUnit() const { return physicalUnits().time || epoch.has_value(); }
 
     /// @brief Which of the mission's units are physical: a forecast plans in metres and seconds; an analytic flow
     /// only where `units` gives length_m / time_s other than 1. Outputs print hours/days and km for physical units,
     /// the field's numbers otherwise (the one rule for every output).
     struct PhysicalUnits
     {
-        bool time{false};    ///< times are in known seconds (durations in hours and days)
-        bool length{false};  ///< lengths are in known metres (distances in km)
+        bool time{false};   ///< times are in known seconds (durations in hours and days)
+        bool length{false}; ///< lengths are in known metres (distances in km)
     };
     /// @brief Metres per planning length unit: 1 for a forecast (planned in metres), else `lengthUnitMetres`.
-    double metresPerUnit() const
-    {
-        return current.isForecast() ? 1.0 : lengthUnitMetres;
-    }
+    double metresPerUnit() const { return current.isForecast() ? 1.0 : lengthUnitMetres; }
     /// @brief The mission's PhysicalUnits.
     PhysicalUnits physicalUnits() const
     {
@@ -624,4 +612,4 @@ MissionSpec defaultGulfStreamMission();
 /// The built-in mission's trip (the meandering jet from (1, -3) to (8, 3), built in or from a file) keeps 0.4, the
 /// paper's lattice for it (its 9.2 units would give 0.37), so its figures stay the paper's.
 double defaultAnalyticGridSize(const MissionSpec &m, double distance);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -26,9 +26,9 @@ struct ObservationReport
     std::size_t future{0};                       ///< rejected: measured after the plan's departure
     /// rejected: farther from the mission's area (its planning box) than 10 length scales (farDistance)
     std::size_t far{0};
-    double farDistance{0.0}; ///< that distance (planning units)
-    CorrectionSummary correction;     ///< what the correction used, rejected and did (RMS innovation before / after)
-    CorrectionParams params;          ///< L, T, s_o / s_f as used (estimated ones in place of their priors)
+    double farDistance{0.0};      ///< that distance (planning units)
+    CorrectionSummary correction; ///< what the correction used, rejected and did (RMS innovation before / after)
+    CorrectionParams params;      ///< L, T, s_o / s_f as used (estimated ones in place of their priors)
     /// An ensemble forecast: each member's weight, RMS innovation and coefficient (EnsembleLearning.h); empty: none
     std::vector<MemberScore> members;
     std::optional<GliderFix> lastFix; ///< the latest position reported

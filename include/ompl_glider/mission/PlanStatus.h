@@ -45,4 +45,4 @@ inline std::ostream &operator<<(std::ostream &out, PlanStatus status)
 {
     return out << statusText(status);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

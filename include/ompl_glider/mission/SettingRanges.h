@@ -14,24 +14,24 @@ struct MissionSpec;
 /// @brief How a setting's value is written.
 enum class SettingValue
 {
-    Number,    ///< a plain number
-    Integer,   ///< a whole number
-    Length,    ///< a number in the mission's length unit, or with a unit ("20 km", "500 m")
-    Depth,     ///< metres, or with a unit: a bare number is metres whatever the mission's unit
-    Duration,  ///< a number in the mission's time unit, or with a unit ("6 h", "1 d")
-    Degrees    ///< a number of degrees
+    Number,   ///< a plain number
+    Integer,  ///< a whole number
+    Length,   ///< a number in the mission's length unit, or with a unit ("20 km", "500 m")
+    Depth,    ///< metres, or with a unit: a bare number is metres whatever the mission's unit
+    Duration, ///< a number in the mission's time unit, or with a unit ("6 h", "1 d")
+    Degrees   ///< a number of degrees
 };
 
 /// @brief One setting's range: low (included or not), and at most high.
 struct SettingRange
 {
-    std::string field;  ///< the dotted mission field ("observations.length_scale"; "waypoints[].radius" for each)
+    std::string field; ///< the dotted mission field ("observations.length_scale"; "waypoints[].radius" for each)
     SettingValue value{SettingValue::Number};
     double low{0.0};
-    bool lowIncluded{false};  ///< >= low (true) or > low (false)
-    double high;              ///< at most this (+inf: no bound above)
-    std::string highText;     ///< high as a pilot reads it ("1e6 s (11.6 days)"); empty: the number
-    std::string meaning;      ///< what the value is, appended to a fault ("0: every waypoint"); may be empty
+    bool lowIncluded{false}; ///< >= low (true) or > low (false)
+    double high;             ///< at most this (+inf: no bound above)
+    std::string highText;    ///< high as a pilot reads it ("1e6 s (11.6 days)"); empty: the number
+    std::string meaning;     ///< what the value is, appended to a fault ("0: every waypoint"); may be empty
 };
 
 /// @brief Every declared setting range, in the order of the mission file's sections.
@@ -51,4 +51,4 @@ double checkSetting(const std::string &field, double v, const std::string &given
 /// @brief @p text read as @p field of @p m (a length or duration in the mission's units or with its unit, else a
 /// number) and checked as checkSetting() does. @throws Error as checkSetting(), or the unit parser's.
 double settingFromText(const std::string &field, const std::string &text, const MissionSpec &m);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -26,14 +26,8 @@ public:
     /// MPICH, Slurm's srun with PMI or PMIx): only then do the executables initialise MPI.
     static bool launched();
 
-    int rank() const override
-    {
-        return rank_;
-    }
-    int size() const override
-    {
-        return size_;
-    }
+    int rank() const override { return rank_; }
+    int size() const override { return size_; }
     std::vector<std::string> run(const std::string &what, std::size_t n, const Task &task,
                                  const Progress &progress = {}) override;
     /// @brief Every rank's digest gathered on every rank (MPI_Allgather); every rank throws the same Error when one
@@ -41,16 +35,10 @@ public:
     void agree(const std::string &what, std::uint64_t digest) override;
 
     /// @brief Bytes sent and received by this rank in run() so far (task indices, results, broadcasts).
-    double bytesMoved() const
-    {
-        return bytes_;
-    }
+    double bytesMoved() const { return bytes_; }
     /// @brief A task running longer than this many seconds (> 0) on a rank ends the job (MPI_Abort) with a message
     /// naming the rank and the task; 0: no limit. Read from OMPL_GLIDER_TASK_TIME_LIMIT by the constructor.
-    void setTaskTimeLimit(double seconds)
-    {
-        timeLimit_ = seconds;
-    }
+    void setTaskTimeLimit(double seconds) { timeLimit_ = seconds; }
 
     /// @brief The end of the job, called by every rank once with its exit status and, when it failed, the reason
     /// (empty: it did not). A failing rank first tells every other rank, so that one waiting for it (for its
@@ -69,7 +57,7 @@ private:
     bool initialised_{false};
     double timeLimit_{0.0};
     double bytes_{0.0};
-    std::size_t tasks_{0};  ///< tasks this rank computed
+    std::size_t tasks_{0}; ///< tasks this rank computed
     // OMPL_GLIDER_MPI_STATS set: each rank prints its tasks and bytes when the spreader ends
     // the first failure of a run, as rank 0 knows it (kind 1: ompl_glider::Error, 2: another exception)
     struct Failure
@@ -109,4 +97,4 @@ public:
 private:
     std::shared_ptr<MpiTaskSpreader> spreader_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -18,20 +18,17 @@ namespace ompl_glider
 /// post-processing.
 struct GliderContext
 {
-    std::shared_ptr<const CurrentField> field;            ///< the current field (counts CMC)
-    std::shared_ptr<const TravelTimeCalculator> travel;   ///< travel time of legs (counts CFC); holds V
-    std::shared_ptr<const Environment> environment;       ///< forbidden regions; null when there are none
-    Region region;                                        ///< x/y bounds, time bounds [t0, t0 + horizon]
+    std::shared_ptr<const CurrentField> field;          ///< the current field (counts CMC)
+    std::shared_ptr<const TravelTimeCalculator> travel; ///< travel time of legs (counts CFC); holds V
+    std::shared_ptr<const Environment> environment;     ///< forbidden regions; null when there are none
+    Region region;                                      ///< x/y bounds, time bounds [t0, t0 + horizon]
     /// Arrival window at the goal ("goals in time", [ThompsonICRA] Sec. III): the goal counts as reached
     /// only at a time in [arriveNotBefore, arriveNotAfter] (absolute times, the field's unit). Unbounded by default.
     double arriveNotBefore{-std::numeric_limits<double>::infinity()};
     double arriveNotAfter{std::numeric_limits<double>::infinity()};
 
     /// @brief Vehicle speed through water.
-    double speed() const
-    {
-        return travel->params().speed;
-    }
+    double speed() const { return travel->params().speed; }
     /// @brief True when the glider can hold position at (x, y) over [t1, t2] (t2 >= t1): in water, within the
     /// field's time, and |c| < V at t1 + (t2 - t1) i / n, i = 0..n, n = max(1, ceil((t2 - t1) / step)) * subdivide.
     /// The one hold test of the motion validator (TravelTimeMotionValidator::canHold, subdivide 1) and of the lattice
@@ -41,9 +38,6 @@ struct GliderContext
     double holdTimeStep() const;
 
     /// @brief Upper bound of the current speed over the region and time window ([EichhornRAS] Eq. 1).
-    double maxCurrent() const
-    {
-        return field->maxSpeed(region);
-    }
+    double maxCurrent() const { return field->maxSpeed(region); }
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -19,17 +19,17 @@ namespace ompl_glider
 /// (field units: set it for metric missions). field, start and goal have no default (null / NaN) and must be set.
 struct GliderProblem
 {
-    std::shared_ptr<const CurrentField> field;       ///< required
-    TravelTimeParams travel;                         ///< vehicle speed V and integration parameters
-    std::shared_ptr<const Environment> environment;  ///< forbidden regions, null for none
-    double xMin{0.0}, xMax{10.0}, yMin{-4.0}, yMax{4.0};  ///< planning box
-    double t0{0.0};                                       ///< departure time
-    double horizon{60.0};                                 ///< the time window is [t0, t0 + horizon]
+    std::shared_ptr<const CurrentField> field;           ///< required
+    TravelTimeParams travel;                             ///< vehicle speed V and integration parameters
+    std::shared_ptr<const Environment> environment;      ///< forbidden regions, null for none
+    double xMin{0.0}, xMax{10.0}, yMin{-4.0}, yMax{4.0}; ///< planning box
+    double t0{0.0};                                      ///< departure time
+    double horizon{60.0};                                ///< the time window is [t0, t0 + horizon]
     /// start position (NaN until set: makeSimpleSetup() refuses an unset start)
     Point2 start{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
     /// goal position (NaN until set)
     Point2 goal{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
-    double goalTolerance{1e-3};  ///< xy distance within which the goal counts as reached
+    double goalTolerance{1e-3}; ///< xy distance within which the goal counts as reached
     /// Arrival window at the goal (absolute times; GliderContext::arriveNotBefore / arriveNotAfter). Unbounded
     /// by default.
     double arriveNotBefore{-std::numeric_limits<double>::infinity()};
@@ -60,10 +60,7 @@ public:
     ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
 
     /// @brief The message of the last failed start/goal check (empty when the last solve() passed it).
-    const std::string &lastCheckMessage() const
-    {
-        return lastCheckMessage_;
-    }
+    const std::string &lastCheckMessage() const { return lastCheckMessage_; }
 
 private:
     /// Runs the check; on failure sets lastStatus_, clears solutions and returns true.
@@ -94,10 +91,10 @@ std::shared_ptr<GliderContext> makeGliderContext(const GliderProblem &problem);
 /// @param ctxOut if non-null, receives the context (shared with the validator and the objective).
 /// @throws ompl_glider::Error as makeGliderContext().
 std::shared_ptr<GliderSimpleSetup> makeSimpleSetup(const GliderProblem &problem,
-                                                std::shared_ptr<GliderContext> *ctxOut = nullptr);
+                                                   std::shared_ptr<GliderContext> *ctxOut = nullptr);
 
 /// @brief The same for an existing context (e.g. one shared by several setups). The start state's time is
 /// problem.t0. @throws ompl_glider::Error also when ctx is null or problem.t0 lies outside
 /// [ctx->region.tMin, ctx->region.tMax].
 std::shared_ptr<GliderSimpleSetup> makeSimpleSetup(const GliderProblem &problem, std::shared_ptr<GliderContext> ctx);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -33,4 +33,4 @@ private:
     ompl::base::StateSamplerPtr base_;
     double startX_, startY_, t0_, vMax_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -32,12 +32,9 @@ public:
     std::string whyInvalid(const ompl::base::State *state) const;
 
     /// @brief The context in use.
-    const std::shared_ptr<const GliderContext> &context() const
-    {
-        return ctx_;
-    }
+    const std::shared_ptr<const GliderContext> &context() const { return ctx_; }
 
 private:
     std::shared_ptr<const GliderContext> ctx_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

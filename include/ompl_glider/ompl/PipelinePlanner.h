@@ -23,16 +23,16 @@
 
 namespace ompl_glider
 {
-struct HeadingRoute;   // execution/HeadingRoute.h
-struct StintPlan;      // execution/Stints.h
-struct StintSettings;  // execution/Stints.h
+struct HeadingRoute;  // execution/HeadingRoute.h
+struct StintPlan;     // execution/Stints.h
+struct StintSettings; // execution/Stints.h
 
 /// @brief What the pipeline tells a planner before its search, and how to name the mission's fields in a message.
 struct PipelineSetup
 {
     double departure{0.0};  ///< departure time (field units)
-    Point2 start{}, goal{};  ///< in the planning frame
-    Region region;           ///< the planning region and time window (GliderContext::region)
+    Point2 start{}, goal{}; ///< in the planning frame
+    Region region;          ///< the planning region and time window (GliderContext::region)
     /// The mission's `stints` section (surfacing interval, mission duration, bearing step, ...); null without one.
     const StintSettings *stints{nullptr};
     /// Where a field of the mission was given, for messages: "file:line: field 'planner.grid_size'", or the flag
@@ -69,13 +69,13 @@ struct ReachableSet
 /// planner for it where no extremal reaches the goal).
 struct FirstArrival
 {
-    bool reached{false};  ///< the front reached the goal (before tEnd, a stop and the work budget)
-    double time{std::numeric_limits<double>::infinity()};  ///< absolute first-arrival time at the goal (+inf if not)
+    bool reached{false}; ///< the front reached the goal (before tEnd, a stop and the work budget)
+    double time{std::numeric_limits<double>::infinity()}; ///< absolute first-arrival time at the goal (+inf if not)
     /// The time-optimal path backtracked from the goal, start first (a hold: two points at one position); empty
     /// when the goal was not reached
     std::vector<TimedPoint> path;
-    std::uint64_t work{0};    ///< the work done, in the planner's unit of its budget (the level set: node updates)
-    bool budgetSpent{false};  ///< the work budget ended the computation
+    std::uint64_t work{0};   ///< the work done, in the planner's unit of its budget (the level set: node updates)
+    bool budgetSpent{false}; ///< the work budget ended the computation
 };
 
 /// @brief The pipeline's questions to a planner. Every answer has a default, so a planner overrides only what it
@@ -88,16 +88,10 @@ public:
     /// @brief Takes the pipeline's settings before the search (called once the planner's parameters are set) and
     /// refuses a problem it cannot plan or work beyond the limits of ResourceLimits.h: throws Error naming the field
     /// through PipelineSetup::place().
-    virtual void prepare(const PipelineSetup &setup)
-    {
-        (void)setup;
-    }
+    virtual void prepare(const PipelineSetup &setup) { (void)setup; }
 
     /// @brief Vertices (states) the last solve expanded; 0 when the planner does not count them.
-    virtual std::uint64_t expandedVertices() const
-    {
-        return 0;
-    }
+    virtual std::uint64_t expandedVertices() const { return 0; }
 
     /// @brief Why the last solve ended without a path: its cause, figures and words (NoPath.h); cause None when the
     /// planner has nothing to add to OMPL's status (the pipeline then says what the status says). @p timeLimit: the
@@ -138,17 +132,11 @@ public:
 
     /// @brief The last solve's route as held headings (execution/HeadingRoute.h), which the pipeline flies instead
     /// of straight legs between the path's states; null when the result is straight legs (the default) or nothing.
-    virtual const HeadingRoute *lastHeadingRoute() const
-    {
-        return nullptr;
-    }
+    virtual const HeadingRoute *lastHeadingRoute() const { return nullptr; }
 
     /// @brief The last solve's constant-bearing stint plan ([IsernObstacles]): its surfacings are the path and it is
     /// flown as it is, not smoothed; null for any other planner (the default).
-    virtual const StintPlan *lastStintPlan() const
-    {
-        return nullptr;
-    }
+    virtual const StintPlan *lastStintPlan() const { return nullptr; }
 };
 
 /// @brief @p planner as the pipeline sees it: itself when it implements PipelinePlanner, else a view whose answers
@@ -157,4 +145,4 @@ const PipelinePlanner &pipelineView(const ompl::base::Planner &planner);
 
 /// @brief As above, for prepare().
 PipelinePlanner &pipelineView(ompl::base::Planner &planner);
-}  // namespace ompl_glider
+} // namespace ompl_glider

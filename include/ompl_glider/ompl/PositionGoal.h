@@ -48,30 +48,15 @@ public:
     std::string whyInvalidAt(double t) const;
 
     /// @brief Goal x.
-    double getX() const
-    {
-        return x_;
-    }
+    double getX() const { return x_; }
     /// @brief Goal y.
-    double getY() const
-    {
-        return y_;
-    }
+    double getY() const { return y_; }
     /// @brief xy tolerance (= the GoalRegion threshold).
-    double getTolerance() const
-    {
-        return getThreshold();
-    }
+    double getTolerance() const { return getThreshold(); }
     /// @brief Earliest time of sampled goal states.
-    double getEarliestTime() const
-    {
-        return tEarliest_;
-    }
+    double getEarliestTime() const { return tEarliest_; }
     /// @brief Latest time of sampled goal states.
-    double getLatestTime() const
-    {
-        return tLatest_;
-    }
+    double getLatestTime() const { return tLatest_; }
     /// @brief Change the window of sampled goal times. @throws ompl_glider::Error when tEarliest > tLatest.
     void setTimeWindow(double tEarliest, double tLatest);
 
@@ -96,12 +81,12 @@ std::optional<Point2> goalPosition(const ompl::base::Goal &goal, std::string *wh
 /// still seen and solve() can be called again; its time is the departure) and the goal position (goalPosition()).
 struct StartAndGoal
 {
-    double sx{0.0}, sy{0.0}, t0{0.0};  ///< start position and departure time
-    Point2 goal;                       ///< goal position
+    double sx{0.0}, sy{0.0}, t0{0.0}; ///< start position and departure time
+    Point2 goal;                      ///< goal position
 };
 
 /// @brief The start and goal of @p pdef, or nullopt with @p status set to INVALID_START (no start state) or
 /// UNRECOGNIZED_GOAL_TYPE (a goal without a position), the reason logged by OMPL_ERROR under @p planner's name.
 std::optional<StartAndGoal> startAndGoal(const ompl::base::ProblemDefinition &pdef, const std::string &planner,
                                          ompl::base::PlannerStatus &status);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -5,6 +5,6 @@
 
 namespace ompl_glider
 {
-inline constexpr int kMinSectors = 1;  ///< fewest sectors
-inline constexpr int kMaxSectors = 5;  ///< most sectors
-}  // namespace ompl_glider
+inline constexpr int kMinSectors = 1; ///< fewest sectors
+inline constexpr int kMaxSectors = 5; ///< most sectors
+} // namespace ompl_glider

@@ -42,51 +42,24 @@ public:
         StateType() = default;
 
         /// @brief x coordinate (easting, field units).
-        double getX() const
-        {
-            return as<ompl::base::SE2StateSpace::StateType>(0)->getX();
-        }
+        double getX() const { return as<ompl::base::SE2StateSpace::StateType>(0)->getX(); }
         /// @brief y coordinate (northing, field units).
-        double getY() const
-        {
-            return as<ompl::base::SE2StateSpace::StateType>(0)->getY();
-        }
+        double getY() const { return as<ompl::base::SE2StateSpace::StateType>(0)->getY(); }
         /// @brief Heading in (-pi, pi] (informational, see the class documentation).
-        double getYaw() const
-        {
-            return as<ompl::base::SE2StateSpace::StateType>(0)->getYaw();
-        }
+        double getYaw() const { return as<ompl::base::SE2StateSpace::StateType>(0)->getYaw(); }
         /// @brief Time at which the glider is at (x, y).
-        double getTime() const
-        {
-            return as<ompl::base::RealVectorStateSpace::StateType>(1)->values[0];
-        }
+        double getTime() const { return as<ompl::base::RealVectorStateSpace::StateType>(1)->values[0]; }
         /// @brief Set x.
-        void setX(double x)
-        {
-            as<ompl::base::SE2StateSpace::StateType>(0)->setX(x);
-        }
+        void setX(double x) { as<ompl::base::SE2StateSpace::StateType>(0)->setX(x); }
         /// @brief Set y.
-        void setY(double y)
-        {
-            as<ompl::base::SE2StateSpace::StateType>(0)->setY(y);
-        }
+        void setY(double y) { as<ompl::base::SE2StateSpace::StateType>(0)->setY(y); }
         /// @brief Set x and y.
-        void setXY(double x, double y)
-        {
-            as<ompl::base::SE2StateSpace::StateType>(0)->setXY(x, y);
-        }
+        void setXY(double x, double y) { as<ompl::base::SE2StateSpace::StateType>(0)->setXY(x, y); }
         /// @brief Set the heading. Not normalised: a yaw outside [-pi, pi] fails satisfiesBounds() (so the state is
         /// invalid) until the space's enforceBounds() wraps it; std::atan2 results are in range.
-        void setYaw(double yaw)
-        {
-            as<ompl::base::SE2StateSpace::StateType>(0)->setYaw(yaw);
-        }
+        void setYaw(double yaw) { as<ompl::base::SE2StateSpace::StateType>(0)->setYaw(yaw); }
         /// @brief Set the time.
-        void setTime(double t)
-        {
-            as<ompl::base::RealVectorStateSpace::StateType>(1)->values[0] = t;
-        }
+        void setTime(double t) { as<ompl::base::RealVectorStateSpace::StateType>(1)->values[0] = t; }
         /// @brief Set x, y and time (yaw unchanged).
         void setXYT(double x, double y, double t)
         {
@@ -106,15 +79,9 @@ public:
     /// @brief The time bounds (dimension 1: [tMin, tMax]).
     const ompl::base::RealVectorBounds &getTimeBounds() const;
     /// @brief Earliest time of the window.
-    double tMin() const
-    {
-        return getTimeBounds().low[0];
-    }
+    double tMin() const { return getTimeBounds().low[0]; }
     /// @brief Latest time of the window.
-    double tMax() const
-    {
-        return getTimeBounds().high[0];
-    }
+    double tMax() const { return getTimeBounds().high[0]; }
 
     /// @brief Weight of time in the distance (length per time unit, e.g. V + max|c|). Must be > 0.
     void setTimeWeight(double w);
@@ -138,4 +105,4 @@ public:
 
 /// @brief Shared pointer to a TimeSE2StateSpace.
 using TimeSE2StateSpacePtr = std::shared_ptr<TimeSE2StateSpace>;
-}  // namespace ompl_glider
+} // namespace ompl_glider

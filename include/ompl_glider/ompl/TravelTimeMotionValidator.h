@@ -78,24 +78,15 @@ public:
     /// @brief Relative tolerance on the arrival window (default 1e-6). Must be in [0, 0.1].
     void setRelativeTolerance(double tol);
     /// @brief Current relative tolerance.
-    double getRelativeTolerance() const
-    {
-        return relTol_;
-    }
+    double getRelativeTolerance() const { return relTol_; }
     /// @brief Largest spacing of the current samples of canHold() (default: 1/256 of the context's time window,
     /// or 1 time unit if that window is unbounded). Must be > 0.
     void setHoldTimeStep(double dt);
     /// @brief Current hold time step.
-    double getHoldTimeStep() const
-    {
-        return holdStep_;
-    }
+    double getHoldTimeStep() const { return holdStep_; }
 
     /// @brief The context in use.
-    const std::shared_ptr<const GliderContext> &context() const
-    {
-        return ctx_;
-    }
+    const std::shared_ptr<const GliderContext> &context() const { return ctx_; }
 
 private:
     void init();
@@ -106,7 +97,7 @@ private:
     std::shared_ptr<const GliderContext> ctx_;
     double relTol_{1e-6};
     double holdStep_{1.0};
-    double vMax_{0.0};     ///< V + max|c| over the context's region
-    std::uint64_t id_{0};  ///< unique id of this validator (key of the per-thread cache)
+    double vMax_{0.0};    ///< V + max|c| over the context's region
+    std::uint64_t id_{0}; ///< unique id of this validator (key of the per-thread cache)
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -36,18 +36,12 @@ public:
     /// @brief max(|xy1 - xy2| / vMax, t2 - t1), admissible.
     ompl::base::Cost motionCostHeuristic(const ompl::base::State *s1, const ompl::base::State *s2) const override;
     /// @brief False: the motion s2 -> s1 does not cost what s1 -> s2 costs.
-    bool isSymmetric() const override
-    {
-        return false;
-    }
+    bool isSymmetric() const override { return false; }
     /// @brief The fastest ground speed V + max|c| used by the heuristics.
-    double maxGroundSpeed() const
-    {
-        return vMax_;
-    }
+    double maxGroundSpeed() const { return vMax_; }
 
 private:
     std::shared_ptr<const GliderContext> ctx_;
     double vMax_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

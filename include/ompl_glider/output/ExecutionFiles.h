@@ -21,4 +21,4 @@ std::string executionTracksCsv(const ExecutionResult &e, const MissionProblem &p
 /// @brief Box plots per strategy (median, quartiles, whiskers to the extremes) of the distance to the goal at the
 /// planned arrival and of the arrival delay, over every run flown; SVG when @p svg, else PNG.
 void writeExecutionPlot(const std::string &path, const ExecutionResult &e, const MissionSpec &m, bool svg);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -30,4 +30,4 @@ std::vector<OutputFile> fleetOutputFiles(const MissionSpec &mission, const std::
 /// @brief The fleet's table for the terminal: glider, status, travel time, path length, arrival (hours and km
 /// where the mission's units are physical).
 void printFleetTable(std::ostream &out, const MissionSpec &mission, const std::vector<FleetGlider> &gliders);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -29,4 +29,4 @@ std::string mapHtmlDataOf(const std::string &page);
 
 /// @brief mapHtmlPage() of one plan, titled by its mission.
 std::string mapHtml(const MissionResult &result, const MissionProblem &problem);
-}  // namespace ompl_glider
+} // namespace ompl_glider

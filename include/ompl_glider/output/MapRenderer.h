@@ -44,47 +44,47 @@ double niceAxisStep(double raw);
 /// @brief A forbidden region (land, restricted area, ice zone ...) drawn as a filled polygon.
 struct MapPolygon
 {
-    std::string label;                                ///< shown at the polygon's centroid and in the legend
+    std::string label;                  ///< shown at the polygon's centroid and in the legend
     std::vector<Point2> vertices;       ///< (x, y) in field coordinates, at least 3
-    Rgba fill{0.55, 0.50, 0.45, 0.55};                ///< fill colour (default: land brown-grey, translucent)
-    Rgba stroke{0.30, 0.25, 0.20, 1.0};               ///< outline colour
-    bool hatched{false};                              ///< draw diagonal hatching (e.g. for time-windowed zones)
-    std::string legend{};                             ///< the legend's entry when it differs from label (a
-                                                      ///< coastline's many polygons: one entry, no labels)
+    Rgba fill{0.55, 0.50, 0.45, 0.55};  ///< fill colour (default: land brown-grey, translucent)
+    Rgba stroke{0.30, 0.25, 0.20, 1.0}; ///< outline colour
+    bool hatched{false};                ///< draw diagonal hatching (e.g. for time-windowed zones)
+    std::string legend{};               ///< the legend's entry when it differs from label (a
+                                        ///< coastline's many polygons: one entry, no labels)
 };
 
 /// @brief A path drawn as a polyline through its waypoints.
 struct MapPath
 {
-    std::string label;                   ///< legend entry ("ZA*TVE raw", "smoothed", ...); empty: none
+    std::string label;                  ///< legend entry ("ZA*TVE raw", "smoothed", ...); empty: none
     std::vector<TimedPoint> waypoints;  ///< positions and arrival times
-    Rgba colour{0.85, 0.10, 0.10, 1.0};  ///< line colour
-    double width{2.5};                   ///< line width in pixels
-    bool dashed{false};                  ///< dashed line
-    bool waypointMarkers{true};          ///< small circles at the waypoints
-    bool timeTicks{false};               ///< time ticks (and labels) along the path, see MapOptions::tickInterval
+    Rgba colour{0.85, 0.10, 0.10, 1.0}; ///< line colour
+    double width{2.5};                  ///< line width in pixels
+    bool dashed{false};                 ///< dashed line
+    bool waypointMarkers{true};         ///< small circles at the waypoints
+    bool timeTicks{false};              ///< time ticks (and labels) along the path, see MapOptions::tickInterval
 };
 
 /// @brief Page and field-drawing options.
 struct MapOptions
 {
-    int width{1100};           ///< image width in pixels (the height follows from the region's aspect ratio)
-    int arrowColumns{26};      ///< current arrows across the region's width
-    double tickInterval{0.0};  ///< time between ticks along paths; <= 0: a round value giving about 10 ticks
-    std::string title;         ///< drawn above the map
-    std::string timeUnit;      ///< appended to times in labels ("s", "h", or empty for dimensionless fields)
-    bool speedShading{true};   ///< shade the background by current speed
-    bool arrows{true};         ///< draw current arrows (off for a field whose "velocity" is a scalar in u)
-    std::string shadingLabel;  ///< label of the colour bar; empty: "current speed" 
-    std::string fieldWord{"current"};  ///< what the field is, in the legend: "current" or "wind"
-    std::function<std::string(double)> timeText;  ///< a field time as a pilot reads it (a date); empty: "t=..."
+    int width{1100};                  ///< image width in pixels (the height follows from the region's aspect ratio)
+    int arrowColumns{26};             ///< current arrows across the region's width
+    double tickInterval{0.0};         ///< time between ticks along paths; <= 0: a round value giving about 10 ticks
+    std::string title;                ///< drawn above the map
+    std::string timeUnit;             ///< appended to times in labels ("s", "h", or empty for dimensionless fields)
+    bool speedShading{true};          ///< shade the background by current speed
+    bool arrows{true};                ///< draw current arrows (off for a field whose "velocity" is a scalar in u)
+    std::string shadingLabel;         ///< label of the colour bar; empty: "current speed"
+    std::string fieldWord{"current"}; ///< what the field is, in the legend: "current" or "wind"
+    std::function<std::string(double)> timeText; ///< a field time as a pilot reads it (a date); empty: "t=..."
     /// Geographic frame (both set): the axes are labelled in longitude/latitude and a graticule of meridians and
     /// parallels is drawn through the field's frame (curved where the projection bends them); start and goal are
     /// given in degrees and a scale bar is drawn. Unset: the field's x/y frame.
     std::function<LonLat(Point2)> toGeographic;
     std::function<Point2(LonLat)> toLocal;
-    double metresPerUnit{0.0};  ///< > 0: the frame is in metres times this (scale bar); 0: no scale bar
-    bool speedInMetresPerSecond{false};  ///< label the colour bar "m/s" and give its top in knots too
+    double metresPerUnit{0.0};          ///< > 0: the frame is in metres times this (scale bar); 0: no scale bar
+    bool speedInMetresPerSecond{false}; ///< label the colour bar "m/s" and give its top in knots too
 };
 
 /// @brief Renders a map of one planning problem. Coordinates are the field's (x east, y north); the map keeps
@@ -149,4 +149,4 @@ private:
     };
     std::vector<Station> stations_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -16,4 +16,4 @@ MapRenderer missionMap(const MissionResult &result, const MissionProblem &proble
 /// @brief The model-difference map of an execution with a truth: RMS over the runs' time window of
 /// |c_truth - c_forecast| shaded over the box, the plan, the regions. Requires result.execution.
 MapRenderer modelDifferenceMap(const MissionResult &result, const MissionProblem &problem);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -25,8 +25,8 @@ using OutputFormatWriter = std::vector<OutputFile> (*)(const MissionResult &resu
 /// @brief One row of the writers' table: a format and its writer.
 struct OutputFormatWriterRow
 {
-    OutputFormatId id;          ///< the format (its name and declared files: outputFormats())
-    OutputFormatWriter writer;  ///< makes its files
+    OutputFormatId id;         ///< the format (its name and declared files: outputFormats())
+    OutputFormatWriter writer; ///< makes its files
 };
 
 /// @brief Every format's writer, one row per format of outputFormats() (tests/output/TestOutputFormats.cpp checks
@@ -39,4 +39,4 @@ OutputFormatWriter outputFormatWriter(OutputFormatId id);
 /// @brief The names of the files @p format declares (OutputFormat::files: "a.csv, b.svg/png, goto_lNN.ma"), each on
 /// its own: "b.svg/png" gives b.svg and b.png; goto_lNN.ma is gotoFileName(@p gotoNumber).
 std::vector<std::string> declaredFileNames(const OutputFormat &format, int gotoNumber);
-}  // namespace ompl_glider
+} // namespace ompl_glider

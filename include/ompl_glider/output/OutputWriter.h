@@ -26,8 +26,8 @@ namespace ompl_glider
 /// @brief A file to write: its name in the output directory and the function that writes it to a path.
 struct OutputFile
 {
-    std::string name;                                ///< file name (no directory part)
-    std::function<void(const std::string &)> write;  ///< writes the file at the given path; throws Error on failure
+    std::string name;                               ///< file name (no directory part)
+    std::function<void(const std::string &)> write; ///< writes the file at the given path; throws Error on failure
 };
 
 /// @brief An exclusive lock on an output directory: flock() on `.NAME.lock` beside it, held for the object's
@@ -81,4 +81,4 @@ std::vector<std::string> writeOutputFiles(const std::string &directory, const st
 
 /// @brief outputFiles() then writeOutputFiles() into result.spec.outputs.directory.
 std::vector<std::string> writeOutputs(const MissionResult &result, const MissionProblem &problem);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -18,4 +18,4 @@ std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows);
 /// search), travel time (raw, smoothed, final; with dive profiles), path length, straight line, waypoints, CFC and
 /// CMC, wall times, the optimal-control reference, the waypoint table and the speed sweep.
 void printReport(std::ostream &out, const MissionResult &result);
-}  // namespace ompl_glider
+} // namespace ompl_glider

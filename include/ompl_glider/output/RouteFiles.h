@@ -60,12 +60,12 @@ std::string headingNote(const MissionResult &result, std::size_t i);
 /// @brief A stay at a via point of a mission (a "virtual mooring"): where, from when, how long, until when.
 struct StationStay
 {
-    std::string name;    ///< the via point
-    double arrival{0.0}; ///< field time
-    double duration{0.0};///< field time units
-    double leave{0.0};   ///< the stay's end (field time)
-    std::string leaveIso;///< its date (empty without a calendar)
-    double radius{0.0};  ///< metres: held within it (the via point's radius, else outputs.goto_wpt_dist)
+    std::string name;     ///< the via point
+    double arrival{0.0};  ///< field time
+    double duration{0.0}; ///< field time units
+    double leave{0.0};    ///< the stay's end (field time)
+    std::string leaveIso; ///< its date (empty without a calendar)
+    double radius{0.0};   ///< metres: held within it (the via point's radius, else outputs.goto_wpt_dist)
 };
 /// @brief The stay that begins at waypoint @p i (a via point's arrival), if any.
 std::optional<StationStay> stayAt(const MissionResult &result, std::size_t i);
@@ -100,4 +100,4 @@ std::string routeKml(const MissionResult &result, const MissionProblem *problem 
 /// flown, from the waypoint where it is begun to the next one (the last ends at the arrival).
 std::string stintsCsv(const MissionResult &result, const MissionProblem &problem);
 
-}  // namespace ompl_glider
+} // namespace ompl_glider

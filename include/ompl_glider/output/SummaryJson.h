@@ -17,4 +17,4 @@ constexpr const char *kSummarySchema = "ompl_glider-summary/1";
 /// @throws Error naming the field when a number in it is not finite (NaN, infinity), written or printed in a text.
 std::string summaryJson(const MissionResult &result, const MissionProblem &problem,
                         const std::vector<std::string> &files = {});
-}  // namespace ompl_glider
+} // namespace ompl_glider

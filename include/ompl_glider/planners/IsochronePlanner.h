@@ -17,9 +17,9 @@
 ///
 /// Parameters: "resolution" (cell size, length units; 0: 1/150 of the region's larger side), "headings" (K, default
 /// 36), "time_step" (0: 2.5 cells at the speed),
-/// "segments" (N of the refinement, 0: the number of steps, within 16..32), "shooting" (the refinement; default true), "threads".
-/// Outcomes: EXACT_SOLUTION; ABORT when the front dies out or passes the end of the time window without meeting the
-/// goal (the reason is kept in lastReason()); TIMEOUT; INVALID_START / INVALID_GOAL outside the region.
+/// "segments" (N of the refinement, 0: the number of steps, within 16..32), "shooting" (the refinement; default true),
+/// "threads". Outcomes: EXACT_SOLUTION; ABORT when the front dies out or passes the end of the time window without
+/// meeting the goal (the reason is kept in lastReason()); TIMEOUT; INVALID_START / INVALID_GOAL outside the region.
 
 #include <memory>
 #include <string>
@@ -41,15 +41,9 @@ public:
 
     ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
     void clear() override;
-    const HeadingRoute *lastHeadingRoute() const override
-    {
-        return route_.segments.empty() ? nullptr : &route_;
-    }
+    const HeadingRoute *lastHeadingRoute() const override { return route_.segments.empty() ? nullptr : &route_; }
     /// @brief PipelinePlanner: the front points the last solve expanded (expandedPoints()).
-    std::uint64_t expandedVertices() const override
-    {
-        return expanded_;
-    }
+    std::uint64_t expandedVertices() const override { return expanded_; }
     /// @brief PipelinePlanner: lastReason() after an ABORT (no route), else nothing to add.
     NoPath noPathReason(const ompl::base::PlannerStatus &status, double) const override
     {
@@ -59,17 +53,17 @@ public:
         return n;
     }
 
-    void setResolution(double h);  ///< @throws Error when negative or not finite
+    void setResolution(double h); ///< @throws Error when negative or not finite
     double getResolution() const { return resolution_; }
-    void setHeadings(unsigned k);  ///< @throws Error outside 8..720
+    void setHeadings(unsigned k); ///< @throws Error outside 8..720
     unsigned getHeadings() const { return headings_; }
-    void setTimeStep(double dt);   ///< @throws Error when negative or not finite
+    void setTimeStep(double dt); ///< @throws Error when negative or not finite
     double getTimeStep() const { return timeStep_; }
-    void setSegments(unsigned n);  ///< @throws Error above 1000
+    void setSegments(unsigned n); ///< @throws Error above 1000
     unsigned getSegments() const { return segments_; }
     void setRefine(bool on) { refine_ = on; }
     bool getRefine() const { return refine_; }
-    void setThreads(unsigned n);  ///< @throws Error above 64
+    void setThreads(unsigned n); ///< @throws Error above 64
     unsigned getThreads() const { return threads_; }
 
     /// @brief Why the last solve found no route (empty after a success).
@@ -89,8 +83,8 @@ private:
     unsigned threads_{0};
     HeadingRoute route_;
     std::string reason_;
-    NoPathCause reasonCause_{NoPathCause::None};  ///< the cause of reason_
+    NoPathCause reasonCause_{NoPathCause::None}; ///< the cause of reason_
     std::size_t expanded_{0};
     double searchTime_{0.0};
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -31,8 +31,8 @@ namespace ompl_glider
 struct FrontPoint
 {
     double x, y, t;
-    long parent;     ///< index of the point it was flown from (-1: the start)
-    double bearing;  ///< heading flown from the parent
+    long parent;    ///< index of the point it was flown from (-1: the start)
+    double bearing; ///< heading flown from the parent
 };
 
 /// @brief The first arrival found in a step.
@@ -48,11 +48,11 @@ struct GoalHit
 struct IsochroneSetup
 {
     const GliderContext *ctx{nullptr};
-    double cell{0.0};                ///< cell size of the grid that keeps one point per cell (length units)
-    double dt{0.0};                  ///< the time step of a front
-    double tEnd{0.0};                ///< the end of the time window
-    std::vector<Point2> rose;        ///< the K headings' unit vectors (bearings 360 k / K)
-    DiveSettings dive;               ///< flights: speed, depth, step, goal, radius
+    double cell{0.0};         ///< cell size of the grid that keeps one point per cell (length units)
+    double dt{0.0};           ///< the time step of a front
+    double tEnd{0.0};         ///< the end of the time window
+    std::vector<Point2> rose; ///< the K headings' unit vectors (bearings 360 k / K)
+    DiveSettings dive;        ///< flights: speed, depth, step, goal, radius
 };
 
 /// @brief The setup the Isochrone planner uses by default: cell @p cell (0: 1/150 of the region's larger side), step
@@ -68,9 +68,8 @@ struct IsochroneSearch
     GoalHit hit;
     std::size_t expanded{0};
     bool timedOut{false};
-    std::string why;  ///< why the goal was not met (when !hit)
+    std::string why; ///< why the goal was not met (when !hit)
 };
-
 
 /// @brief Isochrone fronts from @p from until a flight passes within the dive's radius of the goal (hit), the front
 /// dies out, the time window ends, the point cap is met (the reason in why) or @p ptc stops it (timedOut).
@@ -95,4 +94,4 @@ RefinedHeadings followWithRestarts(const std::vector<TimedPoint> &path, const st
                                    Point2 goal, const GliderContext &ctx, const HeadingRefineSettings &settings,
                                    double spacing, const IsochroneSetup &setup, ThreadPool &pool,
                                    const ompl::base::PlannerTerminationCondition &ptc, int restarts = 4);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -45,4 +45,4 @@ private:
     double gridSize_{0.4};
     unsigned sectors_{3};
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -20,7 +20,7 @@ inline constexpr std::size_t kNoTveVertex = std::numeric_limits<std::size_t>::ma
 /// @brief Switches and tunables of the search.
 struct TveOptions
 {
-    bool heuristic{true};   ///< A*: h(u) = |x_u - x_g| / (V + max|c|) ([EichhornRAS] Eq. 1), or tighter (tightBounds)
+    bool heuristic{true}; ///< A*: h(u) = |x_u - x_g| / (V + max|c|) ([EichhornRAS] Eq. 1), or tighter (tightBounds)
     /// Lower bounds from LatticeHeuristic (an addition to [EichhornRAS]; default on; used when heuristic or zermelo is
     /// on): per-cell, per-direction speed bounds over the search's time window give a lower bound of every edge's
     /// travel time and, by an optimistic backward search from the goal, a consistent heuristic at least as large as
@@ -32,7 +32,7 @@ struct TveOptions
     /// Lattice cells per side of the cells of LatticeHeuristic's velocity bounds (0 = automatic: 1 up to 2^16
     /// lattice cells, then coarser so that there are at most about 2^16 cells).
     unsigned boundCellFactor{0};
-    bool zermelo{true};     ///< Zermelo pruning ([EichhornRAS] Sec. 2.2.2)
+    bool zermelo{true}; ///< Zermelo pruning ([EichhornRAS] Sec. 2.2.2)
     /// Half-width of the accepted course range around phi_opt, radians ([EichhornRAS] Fig. 3, Table 2), before the turn
     /// widening below. Defaults (18 deg, courseExtrapolation 1, turnWidening 1.5) were tuned on the meandering jet
     /// (grid 0.4, 3 sectors; benchmarks/table4/README.md): where the course runs straight they keep 1 to 3 of the 31
@@ -146,44 +146,44 @@ struct TveOptions
 /// @brief How a search ended.
 enum class TveOutcome
 {
-    Exact,         ///< the goal vertex was extracted from the queue: waypoints hold the optimal lattice path
-    Exhausted,     ///< the queue ran empty: no path to the goal exists on this lattice (within the field's time)
-    Terminated,    ///< the termination callback fired: waypoints lead to the reached vertex closest to the goal
-    InvalidStart,  ///< start outside the bounds, on land or in a forbidden region at t0, or t0 not finite or
-                   ///< outside [region.tMin, region.tMax] (see message)
-    InvalidGoal    ///< goal outside the bounds, on land or in a forbidden region (see message)
+    Exact,        ///< the goal vertex was extracted from the queue: waypoints hold the optimal lattice path
+    Exhausted,    ///< the queue ran empty: no path to the goal exists on this lattice (within the field's time)
+    Terminated,   ///< the termination callback fired: waypoints lead to the reached vertex closest to the goal
+    InvalidStart, ///< start outside the bounds, on land or in a forbidden region at t0, or t0 not finite or
+                  ///< outside [region.tMin, region.tMax] (see message)
+    InvalidGoal   ///< goal outside the bounds, on land or in a forbidden region (see message)
 };
 
 /// @brief Result of one search.
 struct TveResult
 {
-    TveOutcome outcome{TveOutcome::Exhausted};  ///< how the search ended
-    std::vector<TimedPoint> waypoints;       ///< start ... goal (Exact) or ... closest reached vertex (Terminated)
-    double travelTime{std::numeric_limits<double>::infinity()};  ///< arrival at the goal - t0 (Exact only)
-    std::uint64_t costFunctionCalls{0};  ///< CFC of this search ([EichhornRAS] Table 4)
-    std::uint64_t currentModelCalls{0};  ///< CMC of this search, CALC-OPTDIR included ([EichhornRAS] Table 4)
-    std::uint64_t expansions{0};         ///< vertices extracted from the queue (reopenings counted again)
-    std::uint64_t prunedEdges{0};        ///< edges not examined because of Zermelo pruning
-    std::uint64_t reopenedEdges{0};      ///< deferred (pruned) edges examined by the certification phase
-    std::uint64_t deadEnds{0};           ///< expansions whose Zermelo cone was a dead end (see deadEndFallback)
-    std::uint64_t boundSkips{0};         ///< edges whose CFC the lower bounds saved (TveOptions::tightBounds)
-    std::uint64_t heuristicSettled{0};   ///< vertices settled by LatticeHeuristic's backward search
-    unsigned corridorRounds{0};          ///< fine searches of coarse-to-fine (TveOptions::coarseFactor), 0 = not used
-    unsigned corridorBlocks{0};          ///< half-width of the final corridor in blocks (0 = not used)
-    bool fallbackUsed{false};            ///< the pruned search exhausted and continued without pruning
+    TveOutcome outcome{TveOutcome::Exhausted}; ///< how the search ended
+    std::vector<TimedPoint> waypoints;         ///< start ... goal (Exact) or ... closest reached vertex (Terminated)
+    double travelTime{std::numeric_limits<double>::infinity()}; ///< arrival at the goal - t0 (Exact only)
+    std::uint64_t costFunctionCalls{0};                         ///< CFC of this search ([EichhornRAS] Table 4)
+    std::uint64_t currentModelCalls{0}; ///< CMC of this search, CALC-OPTDIR included ([EichhornRAS] Table 4)
+    std::uint64_t expansions{0};        ///< vertices extracted from the queue (reopenings counted again)
+    std::uint64_t prunedEdges{0};       ///< edges not examined because of Zermelo pruning
+    std::uint64_t reopenedEdges{0};     ///< deferred (pruned) edges examined by the certification phase
+    std::uint64_t deadEnds{0};          ///< expansions whose Zermelo cone was a dead end (see deadEndFallback)
+    std::uint64_t boundSkips{0};        ///< edges whose CFC the lower bounds saved (TveOptions::tightBounds)
+    std::uint64_t heuristicSettled{0};  ///< vertices settled by LatticeHeuristic's backward search
+    unsigned corridorRounds{0};         ///< fine searches of coarse-to-fine (TveOptions::coarseFactor), 0 = not used
+    unsigned corridorBlocks{0};         ///< half-width of the final corridor in blocks (0 = not used)
+    bool fallbackUsed{false};           ///< the pruned search exhausted and continued without pruning
     /// No path meets the goal window: the waypoints are the earliest arrival ignoring it
     /// (TveOptions::goalWindowFallback)
     bool goalWindowMissed{false};
-    std::string message;                 ///< why the start or goal is invalid
+    std::string message; ///< why the start or goal is invalid
 };
 
 /// @brief One vertex of the explored tree (a vertex that received a finite arrival time).
 struct TveTreeVertex
 {
-    std::size_t id{kNoTveVertex};      ///< lattice vertex
-    std::size_t parent{kNoTveVertex};  ///< predecessor pi[v] (kNoTveVertex for the start)
-    double x{0.0}, y{0.0};                     ///< position
-    double t{0.0};                             ///< arrival time d[v]
+    std::size_t id{kNoTveVertex};     ///< lattice vertex
+    std::size_t parent{kNoTveVertex}; ///< predecessor pi[v] (kNoTveVertex for the start)
+    double x{0.0}, y{0.0};            ///< position
+    double t{0.0};                    ///< arrival time d[v]
 };
 
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -22,13 +22,13 @@ class TravelTimeMotionValidator;
 /// @brief How the last Wavefront search ended.
 enum class WavefrontOutcome
 {
-    None,          ///< no search yet
-    Exact,         ///< the goal was reached at a time of its arrival window
-    Exhausted,     ///< every node reachable by the end of the window was expanded: no path on this lattice
-    Terminated,    ///< the termination condition stopped the search
-    InvalidStart,  ///< start outside the region, invalid at t0, or t0 outside the planning window
-    InvalidGoal,   ///< goal outside the region or not in water
-    BadWindow      ///< the planning window has no finite end (the hold actions would never end)
+    None,         ///< no search yet
+    Exact,        ///< the goal was reached at a time of its arrival window
+    Exhausted,    ///< every node reachable by the end of the window was expanded: no path on this lattice
+    Terminated,   ///< the termination condition stopped the search
+    InvalidStart, ///< start outside the region, invalid at t0, or t0 outside the planning window
+    InvalidGoal,  ///< goal outside the region or not in water
+    BadWindow     ///< the planning window has no finite end (the hold actions would never end)
 };
 
 /// @brief Earliest valid arrival by a Dijkstra wavefront over (lattice vertex, time interval) nodes, with holding.
@@ -116,50 +116,26 @@ public:
     /// cross one cell in still water). Must be finite and >= 0.
     void setTimeStep(double dt);
     /// @brief Length of the time intervals as set (0 = automatic).
-    double getTimeStep() const
-    {
-        return timeStep_;
-    }
+    double getTimeStep() const { return timeStep_; }
     /// @brief The interval length a search uses (time_step, or grid_size / V when it is 0).
     double effectiveTimeStep() const;
 
     /// @brief How the last search ended.
-    WavefrontOutcome lastOutcome() const
-    {
-        return outcome_;
-    }
+    WavefrontOutcome lastOutcome() const { return outcome_; }
     /// @brief Why the last search found no path or refused its start or goal (empty otherwise).
-    const std::string &lastMessage() const
-    {
-        return message_;
-    }
+    const std::string &lastMessage() const { return message_; }
     /// @brief Waypoints of the last path (x, y, time; holds as repeated positions); empty when none.
-    const std::vector<TimedPoint> &getWaypoints() const
-    {
-        return waypoints_;
-    }
+    const std::vector<TimedPoint> &getWaypoints() const { return waypoints_; }
     /// @brief Arrival at the goal (a time of its window) minus t0 of the last search; +inf when none.
-    double getTravelTime() const
-    {
-        return travelTime_;
-    }
+    double getTravelTime() const { return travelTime_; }
     /// @brief Total time the last path holds position (its zero-length motions).
     double getHoldTime() const;
     /// @brief Nodes settled (taken from the queue) by the last search.
-    std::uint64_t getExpandedNodes() const
-    {
-        return expansions_;
-    }
+    std::uint64_t getExpandedNodes() const { return expansions_; }
     /// @brief Cost-function calls (CFC, [EichhornRAS] Table 4) of the last search.
-    std::uint64_t getCostFunctionCalls() const
-    {
-        return cfc_;
-    }
+    std::uint64_t getCostFunctionCalls() const { return cfc_; }
     /// @brief Current-model calls (CMC) of the last search.
-    std::uint64_t getCurrentModelCalls() const
-    {
-        return cmc_;
-    }
+    std::uint64_t getCurrentModelCalls() const { return cmc_; }
 
 private:
     /// One search of search() with its steps ([ThompsonICRA] Algorithm 1; WavefrontSearch.cpp).
@@ -169,7 +145,7 @@ private:
     struct SettledNode
     {
         double x, y, a;
-        std::int64_t parent;  ///< index in settled_, -1 for the start
+        std::int64_t parent; ///< index in settled_, -1 for the start
     };
 
     std::shared_ptr<const GliderContext> ctx_;
@@ -191,4 +167,4 @@ private:
                             const ompl::base::PlannerTerminationCondition &ptc);
     void freeDataStates() const;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

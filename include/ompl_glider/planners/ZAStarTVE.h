@@ -16,7 +16,7 @@
 
 namespace ompl_glider
 {
-class TveSearch;  // the search (internal to the library)
+class TveSearch; // the search (internal to the library)
 
 /// @brief Time-optimal lattice search in a time-varying current with the edge weights computed during the search.
 ///
@@ -62,7 +62,7 @@ public:
 
     /// @brief An allocator for ompl::tools::Benchmark::addPlannerAllocator() making this configuration.
     static ompl::base::PlannerAllocator allocator(std::shared_ptr<const GliderContext> ctx,
-                                                    const std::string &configuration);
+                                                  const std::string &configuration);
 
     /// @brief Runs the search ([EichhornRAS] Table 2 with the switches of the configuration).
     ompl::base::PlannerStatus solve(const ompl::base::PlannerTerminationCondition &ptc) override;
@@ -173,4 +173,4 @@ private:
     std::atomic<double> bestCost_{std::numeric_limits<double>::infinity()};
     void freeDataStates() const;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -18,18 +18,18 @@ namespace ompl_glider
 /// @brief Resolution and numerics of the level-set solver.
 struct LevelSetParams
 {
-    double cellSize{0.05};  ///< grid spacing h (the field's length unit); > 0
-    double cfl{1.5};        ///< time step dt = cfl * h / (V + max|c|); in (0, 2] (semi-Lagrangian: stable beyond 1)
-    double band{6.0};       ///< narrow band: phi is kept within +-band cells of the front; in [4, 50]
-    unsigned threads{0};    ///< threads sharing each step (0: all cores)
-    int reinitEvery{4};     ///< reinitialise phi to a signed distance every this many steps (0: never)
-    double clearance{0.0};  ///< forbidden regions grown by this distance (>= 0; the planner keeps half a cell so that
-                            ///< its straight legs clear them; 0 for the reference optimum)
-    bool narrowBand{true};  ///< update only the tiles near the front (false: every node every step; for measuring)
-    int headingScan{0};     ///< 0: the heading along grad phi, +-0.25 rad and the parabola (4 evaluations); N > 0:
-                            ///< N evenly spaced headings instead (for measuring what the gradient buys)
-    bool iceForbidden{true};  ///< ice zones are kept out of the front (the glider cannot surface there); false: they
-                              ///< are ignored (the limit on the time under ice is not modelled either way)
+    double cellSize{0.05};   ///< grid spacing h (the field's length unit); > 0
+    double cfl{1.5};         ///< time step dt = cfl * h / (V + max|c|); in (0, 2] (semi-Lagrangian: stable beyond 1)
+    double band{6.0};        ///< narrow band: phi is kept within +-band cells of the front; in [4, 50]
+    unsigned threads{0};     ///< threads sharing each step (0: all cores)
+    int reinitEvery{4};      ///< reinitialise phi to a signed distance every this many steps (0: never)
+    double clearance{0.0};   ///< forbidden regions grown by this distance (>= 0; the planner keeps half a cell so that
+                             ///< its straight legs clear them; 0 for the reference optimum)
+    bool narrowBand{true};   ///< update only the tiles near the front (false: every node every step; for measuring)
+    int headingScan{0};      ///< 0: the heading along grad phi, +-0.25 rad and the parabola (4 evaluations); N > 0:
+                             ///< N evenly spaced headings instead (for measuring what the gradient buys)
+    bool iceForbidden{true}; ///< ice zones are kept out of the front (the glider cannot surface there); false: they
+                             ///< are ignored (the limit on the time under ice is not modelled either way)
     /// Stop once this many node updates are done (0: no limit): a budget of work that, unlike a time limit, ends the
     /// same solve at the same step on any machine and under any load
     std::uint64_t maxNodeUpdates{0};
@@ -51,13 +51,13 @@ struct LevelSetStats
 /// @brief What one solve gives: the first-arrival field on the grid, the goal's arrival and the optimal path.
 struct Reachability
 {
-    double x0{0.0}, y0{0.0}, h{1.0};  ///< node (i, j) is at (x0 + i h, y0 + j h)
-    int nx{0}, ny{0};                 ///< node counts
-    double t0{0.0};                   ///< departure time
+    double x0{0.0}, y0{0.0}, h{1.0}; ///< node (i, j) is at (x0 + i h, y0 + j h)
+    int nx{0}, ny{0};                ///< node counts
+    double t0{0.0};                  ///< departure time
     /// First arrival time per node (index j * nx + i; absolute time); +inf where the front never came.
     std::vector<double> arrival;
-    bool goalReached{false};          ///< the front reached the goal (within the time limit)
-    double goalTime{std::numeric_limits<double>::infinity()};  ///< first arrival at the goal (absolute)
+    bool goalReached{false};                                  ///< the front reached the goal (within the time limit)
+    double goalTime{std::numeric_limits<double>::infinity()}; ///< first arrival at the goal (absolute)
     /// No water links the goal to the start on the grid (a flood fill through the static forbidden set, with jumps
     /// as long as one step's reach): the front cannot reach it, and no step was taken.
     bool goalWalledOff{false};
@@ -124,10 +124,7 @@ public:
                        bool stopAtGoal = true, const std::function<bool()> &stop = {}) const;
 
     /// @brief The parameters in use.
-    const LevelSetParams &params() const
-    {
-        return params_;
-    }
+    const LevelSetParams &params() const { return params_; }
 
 private:
     struct Impl;
@@ -137,4 +134,4 @@ private:
 };
 /// @brief The cell size LevelSetPlanner uses for resolution 0: 1/200 of the region's larger side.
 double defaultLevelSetResolution(const GliderContext &ctx);
-}  // namespace ompl_glider
+} // namespace ompl_glider

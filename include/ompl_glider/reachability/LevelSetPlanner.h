@@ -27,10 +27,10 @@ namespace ompl_glider
 /// with the clearance).
 ///
 /// Where no straight legs can follow the backtracked path (a cross current stronger than the vehicle) the
-/// result is a heading route instead (PipelinePlanner::lastHeadingRoute()): the steering direction along the path, the direction of
-/// the velocity through the water (dx/dt - c) between backtracked points ([LollaLevelSet]: "a sequence of steering
-/// directions"), refined by direct shooting (HeadingRefiner.h) so that its flight ends at the goal. The returned
-/// PathGeometric then holds the segment ends.
+/// result is a heading route instead (PipelinePlanner::lastHeadingRoute()): the steering direction along the path, the
+/// direction of the velocity through the water (dx/dt - c) between backtracked points ([LollaLevelSet]: "a sequence of
+/// steering directions"), refined by direct shooting (HeadingRefiner.h) so that its flight ends at the goal. The
+/// returned PathGeometric then holds the segment ends.
 ///
 /// Declared parameters: "resolution" (cell size, the field's length unit; 0: 1/200 of the region's larger side),
 /// "cfl", "threads". Outcomes: EXACT_SOLUTION; ABORT when the front never reaches the goal within the region's time
@@ -61,57 +61,28 @@ public:
 
     /// @brief Cell size (0: automatic). @throws Error when negative or not finite.
     void setResolution(double h);
-    double getResolution() const
-    {
-        return resolution_;
-    }
+    double getResolution() const { return resolution_; }
     /// @brief The cell size used by the last solve.
-    double getUsedResolution() const
-    {
-        return usedResolution_;
-    }
+    double getUsedResolution() const { return usedResolution_; }
     /// @brief Time step factor (LevelSetParams::cfl).
     void setCfl(double c);
-    double getCfl() const
-    {
-        return params_.cfl;
-    }
+    double getCfl() const { return params_.cfl; }
     /// @brief Threads (0: all cores).
-    void setThreads(unsigned n)
-    {
-        params_.threads = n;
-    }
-    unsigned getThreads() const
-    {
-        return params_.threads;
-    }
+    void setThreads(unsigned n) { params_.threads = n; }
+    unsigned getThreads() const { return params_.threads; }
 
     /// @brief Arrival time minus departure of the front at the goal in the last solve (+inf when not reached).
-    double getLevelSetTime() const
-    {
-        return levelSetTime_;
-    }
+    double getLevelSetTime() const { return levelSetTime_; }
     /// @brief The last solve's reachability (arrival field, backtracked path, work done).
-    const Reachability &lastReachability() const
-    {
-        return last_;
-    }
+    const Reachability &lastReachability() const { return last_; }
     /// @brief The heading route of the last solve when its backtracked path could not be flown as straight legs
-    /// (in strong currents): the steering directions along the backtracked path, refined to end at the goal; null otherwise.
-    const HeadingRoute *lastHeadingRoute() const override
-    {
-        return headings_.segments.empty() ? nullptr : &headings_;
-    }
+    /// (in strong currents): the steering directions along the backtracked path, refined to end at the goal; null
+    /// otherwise.
+    const HeadingRoute *lastHeadingRoute() const override { return headings_.segments.empty() ? nullptr : &headings_; }
     /// @brief Why the last solve returned no path (empty otherwise).
-    const std::string &lastReason() const
-    {
-        return reason_;
-    }
+    const std::string &lastReason() const { return reason_; }
     /// @brief The last solve's path as waypoints (the states of the returned path).
-    const std::vector<TimedPoint> &getWaypoints() const
-    {
-        return waypoints_;
-    }
+    const std::vector<TimedPoint> &getWaypoints() const { return waypoints_; }
 
 private:
     std::shared_ptr<const GliderContext> ctx_;
@@ -125,5 +96,4 @@ private:
     std::string reason_;
 };
 
-
-}  // namespace ompl_glider
+} // namespace ompl_glider

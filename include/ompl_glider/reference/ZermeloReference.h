@@ -15,30 +15,30 @@ namespace ompl_glider
 /// @brief Parameters of the shooting method. Defaults give about 1e-8 relative accuracy on smooth fields.
 struct ZermeloParams
 {
-    double speed{0.5};            ///< vehicle speed through water V
-    double depth{0.0};            ///< depth at which the current is read
-    double relTol{1e-10};         ///< relative tolerance of the Dormand-Prince RK5(4) integrator (refinement)
-    double scanRelTol{1e-7};      ///< relative tolerance while scanning headings (only brackets the solutions)
-    double absTol{1e-12};         ///< absolute tolerance of the integrator
-    double maxTime{0.0};          ///< longest trajectory to follow (an upper bound of the optimal time, e.g. the
-                                  ///< travel time of any feasible path); <= 0: 6 * |goal - start| / V
-    int headingSamples{720};      ///< initial headings scanned uniformly over the window below to bracket the
-                                  ///< solutions
-    double headingFrom{0.0};      ///< first heading of the scan (radians)
+    double speed{0.5};       ///< vehicle speed through water V
+    double depth{0.0};       ///< depth at which the current is read
+    double relTol{1e-10};    ///< relative tolerance of the Dormand-Prince RK5(4) integrator (refinement)
+    double scanRelTol{1e-7}; ///< relative tolerance while scanning headings (only brackets the solutions)
+    double absTol{1e-12};    ///< absolute tolerance of the integrator
+    double maxTime{0.0};     ///< longest trajectory to follow (an upper bound of the optimal time, e.g. the
+                             ///< travel time of any feasible path); <= 0: 6 * |goal - start| / V
+    int headingSamples{720}; ///< initial headings scanned uniformly over the window below to bracket the
+                             ///< solutions
+    double headingFrom{0.0}; ///< first heading of the scan (radians)
     /// Width of the scanned window (radians, in (0, 2 pi]): 2 pi scans the whole circle (the last heading neighbours
     /// the first); less, a window about a guess (headingSamples + 1 headings from headingFrom to
     /// headingFrom + headingSpan)
     double headingSpan{6.283185307179586};
-    double goalTolerance{1e-9};   ///< largest miss distance accepted as "passes through the goal" (where the
-                                  ///< heading bracket has shrunk to rounding, 1e-7 of the start-goal distance: in a
-                                  ///< sensitive flow the miss of the nearest representable heading can exceed it)
-    int maxSteps{2000000};        ///< safety bound on integrator steps per trajectory
+    double goalTolerance{1e-9}; ///< largest miss distance accepted as "passes through the goal" (where the
+                                ///< heading bracket has shrunk to rounding, 1e-7 of the start-goal distance: in a
+                                ///< sensitive flow the miss of the nearest representable heading can exceed it)
+    int maxSteps{2000000};      ///< safety bound on integrator steps per trajectory
     /// Where an extremal may go: called with every accepted integrator step (from (x1, y1) at t1 to (x2, y2) at
     /// t2, absolute times); once it is false (land, a forbidden region, outside the planning region) no later
     /// closest approach of the extremal is a solution: such approaches only bracket the headings, and the extremal
     /// is followed only while it stays within the start-goal distance of the goal. Empty: everywhere (open water).
     std::function<bool(double x1, double y1, double t1, double x2, double y2, double t2)> admissible;
-    unsigned threads{1};          ///< threads of the heading scan (0: all cores); the field must be thread-safe
+    unsigned threads{1}; ///< threads of the heading scan (0: all cores); the field must be thread-safe
     /// Asked before each extremal is shot (empty: never): once it answers true, solve() returns what it has found so
     /// far (a caller's time limit, a stop request)
     std::function<bool()> stop;
@@ -59,8 +59,8 @@ struct ZermeloState
 /// @brief A point of closest approach of an extremal to the goal (a local minimum of the distance).
 struct ClosestApproach
 {
-    double t{0.0};     ///< time since departure
-    double miss{0.0};  ///< signed distance to the goal (sign: side of the track the goal lies on)
+    double t{0.0};    ///< time since departure
+    double miss{0.0}; ///< signed distance to the goal (sign: side of the track the goal lies on)
     ZermeloState state;
     /// The extremal stayed in the admissible set (ZermeloParams::admissible) up to here; an approach after it left
     /// is kept to bracket the headings (a neighbour that misses the goal on the far side of a nearby coast or edge)
@@ -79,7 +79,7 @@ struct ZermeloSolution
     /// when none came near): where no extremal through the goal was found, the centre of a finer scan.
     double nearestHeading{0.0};
     double nearestMiss{std::numeric_limits<double>::infinity()};
-    int headingsShot{0};  ///< extremals of the scan shot (fewer than asked where ZermeloParams::stop answered true)
+    int headingsShot{0}; ///< extremals of the scan shot (fewer than asked where ZermeloParams::stop answered true)
 };
 
 /// @brief Zermelo's navigation problem by shooting: the state (x, y, theta) obeys the equations of motion
@@ -117,10 +117,7 @@ public:
     std::vector<ZermeloState> trajectory(double x1, double y1, double theta0, double t0, double duration) const;
 
     /// @brief The parameters in use.
-    const ZermeloParams &params() const
-    {
-        return params_;
-    }
+    const ZermeloParams &params() const { return params_; }
 
 private:
     struct Y
@@ -135,4 +132,4 @@ private:
     std::shared_ptr<const CurrentField> field_;
     ZermeloParams params_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -20,40 +20,31 @@ namespace ompl_glider
 /// @brief The kinds of planner, which decide what the pipeline gives them and how long they may run.
 enum class PlannerFamily
 {
-    Lattice,   ///< a lattice search (the ZAStarTVE configurations, Wavefront): grid_size / sectors apply; runs to its
-               ///< own end (no default time limit)
-    LevelSet,  ///< the level-set front: runs to its own end, like the lattice
-    Headings,  ///< a heading planner (IsochronePlanner): routes of held headings, for currents stronger than the
-               ///< vehicle; runs to its own end
-    Sampling,  ///< an OMPL sampling planner: uses all the time it is given (10 s by default)
-    Stints,    ///< a StintPlanner method: flies constant-bearing stints (a mission's `stints` section applies;
-               ///< [IsernObstacles]); its own caps bound the work
-    Other      ///< any other planner that runs to its own end (no default time limit); what it needs of the
-               ///< mission it takes in PipelinePlanner::prepare()
+    Lattice,  ///< a lattice search (the ZAStarTVE configurations, Wavefront): grid_size / sectors apply; runs to its
+              ///< own end (no default time limit)
+    LevelSet, ///< the level-set front: runs to its own end, like the lattice
+    Headings, ///< a heading planner (IsochronePlanner): routes of held headings, for currents stronger than the
+              ///< vehicle; runs to its own end
+    Sampling, ///< an OMPL sampling planner: uses all the time it is given (10 s by default)
+    Stints,   ///< a StintPlanner method: flies constant-bearing stints (a mission's `stints` section applies;
+              ///< [IsernObstacles]); its own caps bound the work
+    Other     ///< any other planner that runs to its own end (no default time limit); what it needs of the
+              ///< mission it takes in PipelinePlanner::prepare()
 };
 
 /// @brief One planner that can be asked for by name.
 struct PlannerEntry
 {
-    std::string name;                  ///< canonical name, also the OMPL planner name (e.g. "ZA*TVE", "RRTstar")
-    std::vector<std::string> aliases;  ///< other accepted spellings (matched without regard to case)
-    std::string description;           ///< one line for --help and the docs
-    PlannerFamily family{PlannerFamily::Sampling};  ///< what kind of planner it is
+    std::string name;                 ///< canonical name, also the OMPL planner name (e.g. "ZA*TVE", "RRTstar")
+    std::vector<std::string> aliases; ///< other accepted spellings (matched without regard to case)
+    std::string description;          ///< one line for --help and the docs
+    PlannerFamily family{PlannerFamily::Sampling}; ///< what kind of planner it is
     /// @brief True for a lattice planner (grid_size and sectors apply).
-    bool lattice() const
-    {
-        return family == PlannerFamily::Lattice;
-    }
+    bool lattice() const { return family == PlannerFamily::Lattice; }
     /// @brief True for a stint planner (the mission's `stints` section applies).
-    bool stints() const
-    {
-        return family == PlannerFamily::Stints;
-    }
+    bool stints() const { return family == PlannerFamily::Stints; }
     /// @brief True when the planner runs to its own end, so no default time limit applies (all but sampling).
-    bool runsToItsEnd() const
-    {
-        return family != PlannerFamily::Sampling;
-    }
+    bool runsToItsEnd() const { return family != PlannerFamily::Sampling; }
     /// Makes the planner on the problem's space information; ctx is the problem's context.
     std::function<ompl::base::PlannerPtr(const ompl::base::SpaceInformationPtr &,
                                          const std::shared_ptr<const GliderContext> &)>
@@ -61,8 +52,9 @@ struct PlannerEntry
 };
 
 /// @brief Every registered planner, in the order of the documentation: the ZAStarTVE configurations TVE, A*TVE,
-/// ZTVE, ZA*TVE ([EichhornRAS] Sec. 2.2), the Wavefront ([ThompsonICRA] Sec. III), then OMPL's geometric planners on the time-augmented space, then the
-/// constant-bearing stint planners init_optim, optim, cts_astar, direct ([IsernObstacles]).
+/// ZTVE, ZA*TVE ([EichhornRAS] Sec. 2.2), the Wavefront ([ThompsonICRA] Sec. III), then OMPL's geometric planners on
+/// the time-augmented space, then the constant-bearing stint planners init_optim, optim, cts_astar, direct
+/// ([IsernObstacles]).
 const std::deque<PlannerEntry> &plannerRegistry();
 
 /// @brief Adds @p entry to the registry, so that mission files, the command line, Python and the Benchmark campaign
@@ -92,4 +84,4 @@ const PlannerEntry *findPlannerOfFamily(PlannerFamily family);
 
 /// @brief As findPlannerOfFamily(). @throws Error "no registered planner of family X" when the family has none.
 const PlannerEntry &plannerOfFamily(PlannerFamily family);
-}  // namespace ompl_glider
+} // namespace ompl_glider

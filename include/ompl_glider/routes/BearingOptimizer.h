@@ -22,18 +22,18 @@ namespace ompl_glider
 /// @brief Parameters of optimiseBearings().
 struct BearingOptimizerParams
 {
-    unsigned maxEvaluations{1500};  ///< stint-plan simulations at most
-    double initialStep{20.0};       ///< initial simplex step of every bearing (degrees)
-    double bearingTolerance{0.05};  ///< stop when every bearing moves less than this (degrees)
-    std::function<bool()> stop;     ///< polled at every evaluation: true ends the optimisation (best so far)
+    unsigned maxEvaluations{1500}; ///< stint-plan simulations at most
+    double initialStep{20.0};      ///< initial simplex step of every bearing (degrees)
+    double bearingTolerance{0.05}; ///< stop when every bearing moves less than this (degrees)
+    std::function<bool()> stop;    ///< polled at every evaluation: true ends the optimisation (best so far)
 };
 
 /// @brief What optimiseBearings() found.
 struct BearingOptimizerResult
 {
-    StintPlan plan;             ///< the best plan evaluated (never worse than the initial bearings)
-    StintPlan initial;          ///< the plan of the initial bearings
-    unsigned evaluations{0};    ///< plans simulated
+    StintPlan plan;          ///< the best plan evaluated (never worse than the initial bearings)
+    StintPlan initial;       ///< the plan of the initial bearings
+    unsigned evaluations{0}; ///< plans simulated
 };
 
 /// @brief Minimises the plan cost over the bearings, starting from @p initial (padded to the stint count with its
@@ -41,4 +41,4 @@ struct BearingOptimizerResult
 /// start value (the whole circle).
 BearingOptimizerResult optimiseBearings(const StintSimulator &sim, std::vector<double> initial,
                                         const BearingOptimizerParams &params = {});
-}  // namespace ompl_glider
+} // namespace ompl_glider

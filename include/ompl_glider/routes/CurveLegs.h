@@ -15,6 +15,6 @@ namespace ompl_glider
 /// thinned to straight legs within @p tolerance of the curve and free of forbidden regions, timed by the travel-time
 /// code from the first point's time; holds kept where the glider can hold. Empty when no timing is feasible (@p why,
 /// if given, says where).
-std::vector<TimedPoint> legsAlongCurve(const GliderContext &ctx, const std::vector<TimedPoint> &path,
-                                       double tolerance, std::string *why = nullptr);
-}  // namespace ompl_glider
+std::vector<TimedPoint> legsAlongCurve(const GliderContext &ctx, const std::vector<TimedPoint> &path, double tolerance,
+                                       std::string *why = nullptr);
+} // namespace ompl_glider

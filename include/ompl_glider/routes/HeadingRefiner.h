@@ -2,9 +2,9 @@
 /// @file HeadingRefiner.h
 /// @brief Refinement of a heading route: the headings of N equal segments and the total duration T are optimised
 /// (NLopt's SLSQP) to minimise T subject to the flown end point being the goal, the flight integrated by the one dive
-/// integrator (flyHeadingRoute()). This is the direct-shooting form of Zermelo's problem ([ZermeloNav]; the direct method of [BettsOC]):
-/// as N grows the piecewise-constant optimum tends to the continuous one, so a heading planner that is refined
-/// converges to the level-set optimum ([LollaLevelSet]) as its segments shrink.
+/// integrator (flyHeadingRoute()). This is the direct-shooting form of Zermelo's problem ([ZermeloNav]; the direct
+/// method of [BettsOC]): as N grows the piecewise-constant optimum tends to the continuous one, so a heading planner
+/// that is refined converges to the level-set optimum ([LollaLevelSet]) as its segments shrink.
 
 #include <optional>
 #include <string>
@@ -17,26 +17,26 @@ namespace ompl_glider
 /// @brief Settings of refineHeadingRoute().
 struct HeadingRefineSettings
 {
-    unsigned segments{32};      ///< N equal segments of the refined route (the initial route is resampled)
+    unsigned segments{32}; ///< N equal segments of the refined route (the initial route is resampled)
     /// RK4 step of the route's check and of its final closing on the goal (0: headingCheckStep()); the optimiser's
     /// own flights use T / (16 N)
     double step{0.0};
-    double depth{0.0};          ///< depth of the currents (m)
-    double radius{1e-3};        ///< the refined route must end within this distance of the goal
-    unsigned maxEvaluations{400};  ///< SLSQP iterations at most (each costs N + 2 flights)
-    double tEnd{std::numeric_limits<double>::infinity()};  ///< no flight may last past this time
-    unsigned threads{0};  ///< threads of the finite-difference flights (0: all cores)
+    double depth{0.0};            ///< depth of the currents (m)
+    double radius{1e-3};          ///< the refined route must end within this distance of the goal
+    unsigned maxEvaluations{400}; ///< SLSQP iterations at most (each costs N + 2 flights)
+    double tEnd{std::numeric_limits<double>::infinity()}; ///< no flight may last past this time
+    unsigned threads{0};                                  ///< threads of the finite-difference flights (0: all cores)
 };
 
 /// @brief The outcome of refineHeadingRoute().
 struct RefinedHeadings
 {
-    bool ok{false};          ///< a valid route to the goal: reached within the radius, no land, forbidden region or
-                             ///< exit from the region on the way
-    HeadingRoute route;      ///< the refined route, its last segment ending at the arrival
-    HeadingFlight flight;    ///< its flight (track kept)
-    unsigned flights{0};     ///< flights flown by the refinement
-    std::string why;         ///< why it failed (when !ok)
+    bool ok{false};       ///< a valid route to the goal: reached within the radius, no land, forbidden region or
+                          ///< exit from the region on the way
+    HeadingRoute route;   ///< the refined route, its last segment ending at the arrival
+    HeadingFlight flight; ///< its flight (track kept)
+    unsigned flights{0};  ///< flights flown by the refinement
+    std::string why;      ///< why it failed (when !ok)
     /// trackPathWithHeadings() only: where following stopped when a piece could not be flown (route then holds the
     /// pieces flown up to there); empty when it did not stop part-way.
     std::optional<TimedPoint> stoppedAt;
@@ -65,4 +65,4 @@ RefinedHeadings refineHeadingRoute(const HeadingRoute &initial, Point2 goal, con
 /// @brief The route @p initial resampled to @p n equal segments over @p duration: each new segment holds the bearing
 /// the initial route has at its middle.
 HeadingRoute resampleHeadingRoute(const HeadingRoute &initial, unsigned n, double duration);
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -40,4 +40,4 @@ RefinedHeadings trackPathWithHeadings(const std::vector<TimedPoint> &path, Point
 /// false leaves @p route unchanged.
 bool reaimOnReflight(HeadingRoute &route, Point2 goal, const CurrentField &field, const Environment *forbidden,
                      const ReflightSettings &settings, double radius, HeadingReflight &flight);
-}  // namespace ompl_glider
+} // namespace ompl_glider

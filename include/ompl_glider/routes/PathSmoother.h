@@ -22,8 +22,7 @@ double legTravelTime(const GliderContext &ctx, double x1, double y1, double x2, 
 
 /// @brief The waypoints' positions with arrival times re-simulated from t0 (fastest pace on every leg):
 /// t[0] = t0, t[i] = t[i-1] + legTravelTime(i-1 -> i). Times are +inf from the first infeasible leg on.
-std::vector<TimedPoint> retimeWaypoints(const GliderContext &ctx, std::vector<TimedPoint> waypoints,
-                                           double t0);
+std::vector<TimedPoint> retimeWaypoints(const GliderContext &ctx, std::vector<TimedPoint> waypoints, double t0);
 
 /// @brief Arrival time at the last waypoint re-simulated from t0 (+inf when a leg is infeasible; t0 for < 2 points).
 double arrivalTime(const GliderContext &ctx, const std::vector<TimedPoint> &waypoints, double t0);
@@ -72,13 +71,13 @@ constexpr double kSmoothingTieTolerance = 1e-12;
 /// @brief What smoothing did.
 struct SmoothingResult
 {
-    std::vector<TimedPoint> waypoints;  ///< smoothed path, times re-simulated from t0
-    std::size_t waypointsBefore{0};        ///< waypoint count of the input (start and goal included)
-    std::size_t waypointsAfter{0};         ///< waypoint count of the result
-    double arrivalBefore{0.0};             ///< arrival at the goal of the input, re-simulated from t0
-    double arrivalAfter{0.0};  ///< arrival at the goal of the result (<= arrivalBefore (1 + kSmoothingTieTolerance))
-    unsigned passes{0};                    ///< passes of loop I of [EichhornRAS] Table 3
-    std::uint64_t costFunctionCalls{0};    ///< CFC spent by the smoothing
+    std::vector<TimedPoint> waypoints; ///< smoothed path, times re-simulated from t0
+    std::size_t waypointsBefore{0};    ///< waypoint count of the input (start and goal included)
+    std::size_t waypointsAfter{0};     ///< waypoint count of the result
+    double arrivalBefore{0.0};         ///< arrival at the goal of the input, re-simulated from t0
+    double arrivalAfter{0.0}; ///< arrival at the goal of the result (<= arrivalBefore (1 + kSmoothingTieTolerance))
+    unsigned passes{0};       ///< passes of loop I of [EichhornRAS] Table 3
+    std::uint64_t costFunctionCalls{0}; ///< CFC spent by the smoothing
 };
 
 /// @brief SMOOTHING(WP, t0) of [EichhornRAS] Table 3 (also [EichhornIWK] Table II): merges consecutive legs of a
@@ -114,4 +113,4 @@ public:
 private:
     std::shared_ptr<const GliderContext> ctx_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

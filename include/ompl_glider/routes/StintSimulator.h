@@ -60,14 +60,14 @@ public:
     /// @brief The bearing (degrees clockwise from north) from (x, y) to the goal.
     double bearingToGoal(double x, double y) const;
 
-    const StintSettings &settings() const { return settings_; }  ///< the settings
-    double speed() const { return speed_; }                     ///< speed through water
-    double maxReach() const { return speed_ + maxCurrent_; }    ///< V + max|c|
-    Point2 start() const { return start_; }                     ///< start
-    Point2 goal() const { return goal_; }                       ///< goal
-    double t0() const { return t0_; }                           ///< departure
-    double endTime() const { return t0_ + settings_.missionDuration; }  ///< end of the mission
-    const CurrentField &field() const { return *field_; }       ///< the current
+    const StintSettings &settings() const { return settings_; }        ///< the settings
+    double speed() const { return speed_; }                            ///< speed through water
+    double maxReach() const { return speed_ + maxCurrent_; }           ///< V + max|c|
+    Point2 start() const { return start_; }                            ///< start
+    Point2 goal() const { return goal_; }                              ///< goal
+    double t0() const { return t0_; }                                  ///< departure
+    double endTime() const { return t0_ + settings_.missionDuration; } ///< end of the mission
+    const CurrentField &field() const { return *field_; }              ///< the current
     /// @brief Number of simulate() and flyStint() calls so far (thread-safe counter; for benchmarks).
     std::uint64_t stintsFlown() const;
 
@@ -83,4 +83,4 @@ private:
     std::shared_ptr<std::atomic<std::uint64_t>> flown_;
 };
 
-}  // namespace ompl_glider
+} // namespace ompl_glider

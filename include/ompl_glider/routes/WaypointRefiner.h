@@ -24,17 +24,17 @@ constexpr double kMinRefinerEvaluations = 1.0, kMaxRefinerEvaluations = 1e8;
 /// @brief Tunables of WaypointRefiner; the defaults suit paths of a few to a few tens of legs.
 struct RefinerParams
 {
-    unsigned maxEvaluations{40000};  ///< budget of path re-simulations (each costs one CFC per leg)
-    double initialStep{0.0};         ///< first trial move (field length units); <= 0: 1/4 of the mean leg length
-    double minStep{0.0};             ///< moves stop below this length; <= 0: 1e-4 of the path length
-    unsigned insertionRounds{4};     ///< rounds of "insert midpoints on the long legs, then optimise"
-    double splitFraction{0.75};      ///< an insertion round splits the legs longer than this fraction of the mean
-                                     ///< leg length (0: every leg), so waypoints do not bunch up
-    std::size_t maxWaypoints{40};    ///< no insertion round makes the path longer than this
-    double bumpFraction{0.2};        ///< neighbours moved along with a waypoint when it cannot move alone, as a
-                                     ///< fraction of the waypoint count (0: single-waypoint moves only)
-    double minRelativeGain{1e-3};    ///< an insertion round is kept only if it shortens the travel time by this
-                                     ///< fraction (otherwise its extra waypoints are not worth it)
+    unsigned maxEvaluations{40000}; ///< budget of path re-simulations (each costs one CFC per leg)
+    double initialStep{0.0};        ///< first trial move (field length units); <= 0: 1/4 of the mean leg length
+    double minStep{0.0};            ///< moves stop below this length; <= 0: 1e-4 of the path length
+    unsigned insertionRounds{4};    ///< rounds of "insert midpoints on the long legs, then optimise"
+    double splitFraction{0.75};     ///< an insertion round splits the legs longer than this fraction of the mean
+                                    ///< leg length (0: every leg), so waypoints do not bunch up
+    std::size_t maxWaypoints{40};   ///< no insertion round makes the path longer than this
+    double bumpFraction{0.2};       ///< neighbours moved along with a waypoint when it cannot move alone, as a
+                                    ///< fraction of the waypoint count (0: single-waypoint moves only)
+    double minRelativeGain{1e-3};   ///< an insertion round is kept only if it shortens the travel time by this
+                                    ///< fraction (otherwise its extra waypoints are not worth it)
     /// Asked before every path re-simulation: true ends the refinement with the best path found so far (a
     /// planner's termination condition, so that a time limit also bounds refinement). Empty: only the budget.
     std::function<bool()> terminate;
@@ -44,13 +44,13 @@ struct RefinerParams
 struct RefinementResult
 {
     std::vector<TimedPoint> waypoints;  ///< refined path, times re-simulated from t0
-    std::size_t waypointsBefore{0};        ///< waypoint count of the input
-    std::size_t waypointsAfter{0};         ///< waypoint count of the result
-    double arrivalBefore{0.0};             ///< arrival of the input, re-simulated from t0
-    double arrivalAfter{0.0};              ///< arrival of the result (<= arrivalBefore)
-    unsigned evaluations{0};               ///< path re-simulations
-    unsigned acceptedMoves{0};             ///< improving moves, insertions and removals accepted
-    std::uint64_t costFunctionCalls{0};    ///< CFC spent
+    std::size_t waypointsBefore{0};     ///< waypoint count of the input
+    std::size_t waypointsAfter{0};      ///< waypoint count of the result
+    double arrivalBefore{0.0};          ///< arrival of the input, re-simulated from t0
+    double arrivalAfter{0.0};           ///< arrival of the result (<= arrivalBefore)
+    unsigned evaluations{0};            ///< path re-simulations
+    unsigned acceptedMoves{0};          ///< improving moves, insertions and removals accepted
+    std::uint64_t costFunctionCalls{0}; ///< CFC spent
 };
 
 /// @brief Optimises the interior waypoints of a path (start and goal fixed) continuously against the arrival time
@@ -85,13 +85,10 @@ public:
     RefinementResult refine(ompl::geometric::PathGeometric &path) const;
 
     /// @brief The parameters in use.
-    const RefinerParams &params() const
-    {
-        return params_;
-    }
+    const RefinerParams &params() const { return params_; }
 
 private:
     std::shared_ptr<const GliderContext> ctx_;
     RefinerParams params_;
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -17,9 +17,9 @@ namespace ompl_glider
 /// @brief Parameters of ctsAStar().
 struct CtsAStarParams
 {
-    double cellSize{0.0};             ///< duplicate-detection grid spacing; 0: V * duration / 2
-    std::uint64_t maxExpansions{200000};  ///< expansions at most (then the best plan found so far)
-    std::function<bool()> stop;       ///< polled between expansions: true ends the search (best so far)
+    double cellSize{0.0};                ///< duplicate-detection grid spacing; 0: V * duration / 2
+    std::uint64_t maxExpansions{200000}; ///< expansions at most (then the best plan found so far)
+    std::function<bool()> stop;          ///< polled between expansions: true ends the search (best so far)
 };
 
 /// @brief What ctsAStar() found.
@@ -34,4 +34,4 @@ struct CtsAStarResult
 /// @brief Runs CTS-A* from the simulator's start. Without any complete plan when stopped, the best partial plan
 /// (lowest bound) is completed with direct-to-goal bearings.
 CtsAStarResult ctsAStar(const StintSimulator &sim, const CtsAStarParams &params = {});
-}  // namespace ompl_glider
+} // namespace ompl_glider

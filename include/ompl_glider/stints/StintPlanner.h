@@ -26,10 +26,10 @@ namespace ompl_glider
 /// @brief The stint planning methods ([IsernObstacles] Sec. III.A).
 enum class StintMethod
 {
-    Direct,     ///< "direct": the bearing to the goal at every surfacing
-    CtsAStar,   ///< "cts_astar": A* over a bearing rose per stint (ctsAStar())
-    Optim,      ///< "optim": optimiseBearings() from the direct bearings
-    InitOptim   ///< "init_optim": optimiseBearings() from the CTS-A* bearings
+    Direct,   ///< "direct": the bearing to the goal at every surfacing
+    CtsAStar, ///< "cts_astar": A* over a bearing rose per stint (ctsAStar())
+    Optim,    ///< "optim": optimiseBearings() from the direct bearings
+    InitOptim ///< "init_optim": optimiseBearings() from the CTS-A* bearings
 };
 
 /// @brief The registry name of a method ("direct", "cts_astar", "optim", "init_optim").
@@ -57,39 +57,24 @@ public:
     /// kMaxStintFlights stints in all (ResourceLimits.h), naming stints.bearing_step or max_expansions.
     void prepare(const PipelineSetup &setup) override;
     /// @brief PipelinePlanner: lastPlan() when the last solve flew one, else null.
-    const StintPlan *lastStintPlan() const override
-    {
-        return plan_.surfacings.empty() ? nullptr : &plan_;
-    }
+    const StintPlan *lastStintPlan() const override { return plan_.surfacings.empty() ? nullptr : &plan_; }
     /// @brief Stint settings. @throws Error naming the bad setting.
     void setStintSettings(const StintSettings &s);
     /// @brief The stint settings.
-    const StintSettings &getStintSettings() const
-    {
-        return settings_;
-    }
+    const StintSettings &getStintSettings() const { return settings_; }
     /// @brief The method.
-    StintMethod getMethod() const
-    {
-        return method_;
-    }
+    StintMethod getMethod() const { return method_; }
     /// @brief The last plan (bearings, surfacings, track, remaining distance).
-    const StintPlan &lastPlan() const
-    {
-        return plan_;
-    }
+    const StintPlan &lastPlan() const { return plan_; }
     /// @brief The plan the last optimisation started from (Optim: direct; Init-Optim: CTS-A*; else the plan).
-    const StintPlan &lastInitialPlan() const
-    {
-        return initial_;
-    }
+    const StintPlan &lastInitialPlan() const { return initial_; }
 
-    void setCellSize(double v) { cellSize_ = v; }                 ///< CTS-A* grid spacing (0: auto)
-    double getCellSize() const { return cellSize_; }              ///< CTS-A* grid spacing
-    void setMaxExpansions(unsigned v) { maxExpansions_ = v; }     ///< CTS-A* expansion cap
-    unsigned getMaxExpansions() const { return maxExpansions_; }  ///< CTS-A* expansion cap
-    void setMaxEvaluations(unsigned v) { maxEvaluations_ = v; }   ///< optimisation evaluation cap
-    unsigned getMaxEvaluations() const { return maxEvaluations_; }  ///< optimisation evaluation cap
+    void setCellSize(double v) { cellSize_ = v; }                  ///< CTS-A* grid spacing (0: auto)
+    double getCellSize() const { return cellSize_; }               ///< CTS-A* grid spacing
+    void setMaxExpansions(unsigned v) { maxExpansions_ = v; }      ///< CTS-A* expansion cap
+    unsigned getMaxExpansions() const { return maxExpansions_; }   ///< CTS-A* expansion cap
+    void setMaxEvaluations(unsigned v) { maxEvaluations_ = v; }    ///< optimisation evaluation cap
+    unsigned getMaxEvaluations() const { return maxEvaluations_; } ///< optimisation evaluation cap
 
 private:
     std::shared_ptr<const GliderContext> ctx_;
@@ -100,4 +85,4 @@ private:
     unsigned maxExpansions_{200000};
     unsigned maxEvaluations_{1500};
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

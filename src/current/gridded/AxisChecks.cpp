@@ -39,8 +39,8 @@ std::size_t monotonicBreak(const std::vector<double> &values)
     return values.size();
 }
 
-void checkStrictlyMonotonic(const GriddedDataset &f, const std::vector<double> &values, const std::vector<double> &shown,
-                            const std::string &kind, const std::string &name)
+void checkStrictlyMonotonic(const GriddedDataset &f, const std::vector<double> &values,
+                            const std::vector<double> &shown, const std::string &kind, const std::string &name)
 {
     const std::size_t k = monotonicBreak(values);
     if (k < values.size())
@@ -64,7 +64,7 @@ std::vector<double> unwrapLongitudes(const std::vector<double> &lon)
         out[k] = lon[k] + shift;
     }
     if (monotonicBreak(out) < out.size() || std::abs(out.back() - out.front()) >= 360.0)
-        return lon;  // not one turn across a seam: left for checkStrictlyMonotonic to refuse
+        return lon; // not one turn across a seam: left for checkStrictlyMonotonic to refuse
     return out;
 }
 
@@ -96,7 +96,7 @@ std::string nodeText(const HorizontalSubset &h, std::size_t n)
     const std::size_t nx = h.xIdx.size();
     return "(" + std::to_string(h.yIdx[n / nx]) + ", " + std::to_string(h.xIdx[n % nx]) + ")";
 }
-}  // namespace
+} // namespace
 
 void checkCurvilinearNodes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h)
 {
@@ -110,8 +110,7 @@ void checkCurvilinearNodes(const GriddedDataset &f, const Layout &l, const Horiz
             double x, y;
             planar(l.geographic, h, n, m, x, y);
             if (x == 0.0 && y == 0.0)
-                throw f.error(who + "the nodes at (j, i) = " + nodeText(h, n) + " and " + nodeText(h, m) +
-                              " coincide");
+                throw f.error(who + "the nodes at (j, i) = " + nodeText(h, n) + " and " + nodeText(h, m) + " coincide");
         }
     int first = 0;
     for (std::size_t j = 0; j + 1 < ny; ++j)
@@ -124,5 +123,5 @@ void checkCurvilinearNodes(const GriddedDataset &f, const Layout &l, const Horiz
                               " is folded or degenerate (its orientation differs from the first cell's)");
         }
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -21,8 +21,8 @@ struct IndexBox
 
 /// @throws Error when a value of the 2-D coordinate var read as rows rows[] and columns cols[] (row-major) is a
 /// fill value or not finite.
-void checkNodeValues(const GriddedDataset &f, int var, const std::vector<double> &v, const std::vector<std::size_t> &rows,
-                     const std::vector<std::size_t> &cols)
+void checkNodeValues(const GriddedDataset &f, int var, const std::vector<double> &v,
+                     const std::vector<std::size_t> &rows, const std::vector<std::size_t> &cols)
 {
     const std::size_t k = firstFillOrNonFinite(f, var, v);
     if (k < v.size())
@@ -89,11 +89,11 @@ std::size_t columnPeriod(const GriddedDataset &f, const Layout &l, std::size_t n
                 continue;
             ++rowsSeen;
             bool ok = false;
-            if (p == nx - 1)  // column nx - 1 is column 0 again
+            if (p == nx - 1) // column nx - 1 is column 0 again
                 ok = nodeDistance(xb, yb, x0, y0) < same && nodeDistance(xa, ya, x0, y0) < 2.0 * step;
-            else if (p == nx - 2)  // columns nx - 2, nx - 1 are columns 0, 1 again
+            else if (p == nx - 2) // columns nx - 2, nx - 1 are columns 0, 1 again
                 ok = nodeDistance(xa, ya, x0, y0) < same && nodeDistance(xb, yb, x1, y1) < same;
-            else  // column nx - 1 is the neighbour of column 0
+            else // column nx - 1 is the neighbour of column 0
                 ok = nodeDistance(xb, yb, x0, y0) < 2.0 * step && nodeDistance(xb, yb, x0, y0) > same;
             agree += ok;
         }
@@ -150,7 +150,7 @@ std::vector<std::size_t> usedColumns(const std::vector<char> &used, std::size_t 
         if (run > bestLen)
         {
             bestLen = std::min(run, p);
-            bestEnd = k % p;  // the last unused column of the run
+            bestEnd = k % p; // the last unused column of the run
         }
     }
     const std::size_t start = (bestEnd + 1) % p, width = p - bestLen;
@@ -176,8 +176,8 @@ IndexBox regionBox(const GriddedDataset &f, const Layout &l, const RegionOfInter
         scanRows(f, l, r, r0, std::min(block, ny - r0), nx, box, used);
     if (box.j0 == ny)
         throw f.error("no node of the curvilinear grid ('" + l.xName + "', '" + l.yName + "') lies in the region [" +
-                      std::to_string(r.lonMin) + ", " + std::to_string(r.lonMax) + "] x [" +
-                      std::to_string(r.latMin) + ", " + std::to_string(r.latMax) + "]");
+                      std::to_string(r.lonMin) + ", " + std::to_string(r.lonMax) + "] x [" + std::to_string(r.latMin) +
+                      ", " + std::to_string(r.latMax) + "]");
     const std::size_t e = std::size_t(std::max(0, r.marginNodes));
     box.j0 = box.j0 >= e ? box.j0 - e : 0;
     box.j1 = std::min(ny - 1, box.j1 + e);
@@ -204,10 +204,10 @@ void setCentre(bool geographic, double ref, HorizontalSubset &h)
     h.centreLon = 0.5 * (a + b);
     h.centreLat = 0.5 * (c + d);
 }
-}  // namespace
+} // namespace
 
-HorizontalSubset curvilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
-                                   const AxisSelection &t)
+HorizontalSubset curvilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r,
+                                   const AxisSelection &z, const AxisSelection &t)
 {
     HorizontalSubset h;
     const std::size_t period =
@@ -243,5 +243,5 @@ HorizontalSubset curvilinearSubset(const GriddedDataset &f, const Layout &l, con
     setCentre(l.geographic, ref, h);
     return h;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -1,5 +1,5 @@
-// The depth axis: metres, positive down (positive = "up" negated; any length unit converted with UDUNITS-2), sorted ascending, and the
-// layers down to the deepest depth the glider reaches.
+// The depth axis: metres, positive down (positive = "up" negated; any length unit converted with UDUNITS-2), sorted
+// ascending, and the layers down to the deepest depth the glider reaches.
 #include <algorithm>
 #include <cmath>
 
@@ -40,7 +40,7 @@ std::vector<double> readDepthMetres(const GriddedDataset &f, int zv)
         z = (pos == "up" ? -1.0 : 1.0) * toMetres(z);
     return zs;
 }
-}  // namespace
+} // namespace
 
 AxisSelection selectDepths(const GriddedDataset &f, const Layout &l, double maxDepth)
 {
@@ -87,5 +87,5 @@ AxisSelection selectDepths(const GriddedDataset &f, const Layout &l, double maxD
     }
     return s;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -62,18 +62,18 @@ std::string hoursText(double seconds)
 /// first time of the next file are dropped: the later file (the newer forecast) gives the times it covers.
 struct JoinedAxis
 {
-    std::vector<FileTimes> files;       ///< ordered by their first time
+    std::vector<FileTimes> files; ///< ordered by their first time
     Calendar calendar{Calendar::Standard};
     double originSeconds{0.0};
-    std::vector<double> times;          ///< field times (seconds after originSeconds), strictly increasing
-    std::vector<std::size_t> file;      ///< per record: position in files
-    std::vector<std::size_t> index;     ///< per record: index along the file's time dimension
-    std::size_t dropped{0};             ///< records left out for a later file's
+    std::vector<double> times;      ///< field times (seconds after originSeconds), strictly increasing
+    std::vector<std::size_t> file;  ///< per record: position in files
+    std::vector<std::size_t> index; ///< per record: index along the file's time dimension
+    std::size_t dropped{0};         ///< records left out for a later file's
 
     std::string describe() const
     {
-        return "NetCDF forecast of " + std::to_string(files.size()) + " files ('" + files.front().path +
-               "' to '" + files.back().path + "')";
+        return "NetCDF forecast of " + std::to_string(files.size()) + " files ('" + files.front().path + "' to '" +
+               files.back().path + "')";
     }
 };
 
@@ -95,9 +95,8 @@ JoinedAxis joinTimeAxes(const std::vector<std::string> &paths, const NetCdfCurre
                         std::string(calendarName(f0.tv.calendar)) + "' and '" + calendarName(q.tv.calendar) +
                         "', time variables '" + f0.tv.name + "' and '" + q.tv.name + "')");
     }
-    std::stable_sort(a.files.begin(), a.files.end(), [](const FileTimes &x, const FileTimes &y) {
-        return x.tv.originSeconds < y.tv.originSeconds;
-    });
+    std::stable_sort(a.files.begin(), a.files.end(),
+                     [](const FileTimes &x, const FileTimes &y) { return x.tv.originSeconds < y.tv.originSeconds; });
     const FileTimes &first = a.files.front();
     a.calendar = first.tv.calendar;
     a.originSeconds = first.tv.originSeconds;
@@ -154,11 +153,11 @@ void checkGaps(const JoinedAxis &a, const AxisSelection &sel)
         const double gap = a.times[c1] - a.times[c0];
         if (gap > 2.0 * step)
             throw Error("NetCDF files '" + a.files[a.file[c0]].path + "' and '" + a.files[a.file[c1]].path +
-                        "': a gap of " + hoursText(gap) + " in the forecast within the trip's time window (" +
-                        iso(a.originSeconds + a.times[c0], a.calendar) + " in the first, then " +
-                        iso(a.originSeconds + a.times[c1], a.calendar) +
-                        " in the second), more than twice the forecast's typical step of " + hoursText(step) +
-                        ": a file missing? Give it, or choose a departure and horizon that avoid the gap",
+                            "': a gap of " + hoursText(gap) + " in the forecast within the trip's time window (" +
+                            iso(a.originSeconds + a.times[c0], a.calendar) + " in the first, then " +
+                            iso(a.originSeconds + a.times[c1], a.calendar) +
+                            " in the second), more than twice the forecast's typical step of " + hoursText(step) +
+                            ": a file missing? Give it, or choose a departure and horizon that avoid the gap",
                         "NetCdfCurrentOptions::departure");
     }
 }
@@ -180,8 +179,8 @@ std::string gridDifference(const ForecastPiece &a, const ForecastPiece &b)
 {
     const Layout &la = a.layout, &lb = b.layout;
     if (la.geographic != lb.geographic)
-        return std::string("coordinates: ") + (la.geographic ? "longitude/latitude" : "Cartesian x/y") +
-               " against " + (lb.geographic ? "longitude/latitude" : "Cartesian x/y");
+        return std::string("coordinates: ") + (la.geographic ? "longitude/latitude" : "Cartesian x/y") + " against " +
+               (lb.geographic ? "longitude/latitude" : "Cartesian x/y");
     if (la.curvilinear != lb.curvilinear)
         return std::string("grid: ") + (la.curvilinear ? "curvilinear" : "rectilinear") + " against " +
                (lb.curvilinear ? "curvilinear" : "rectilinear");
@@ -217,8 +216,8 @@ bool isPacked(const ForecastPiece &p)
     return pu.scale != 1.0 || pu.offset != 0.0 || pv.scale != 1.0 || pv.offset != 0.0;
 }
 
-}  // namespace
-}  // namespace gridded_detail
+} // namespace
+} // namespace gridded_detail
 
 bool netCdfIsGeographic(const std::vector<std::string> &paths, const NetCdfCurrentOptions &options)
 {
@@ -280,7 +279,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
             AxisSelection s;
             s.idx.clear();
             s.values.clear();
-            s.tripBegin = 1;  // none yet (inTrip() false everywhere)
+            s.tripBegin = 1; // none yet (inTrip() false everywhere)
             s.tripEnd = 0;
             parts.emplace_back(a.file[c], s);
         }
@@ -349,7 +348,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
             zeroVelocityLand(g, sel, packed, zeroLandRule(*p.file, p.layout, p.h, otherLand, p.cornerGrid));
     }
     out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
-    zeroLandVelocities(g);  // as in one file: a land node keeps no velocity in any record
+    zeroLandVelocities(g); // as in one file: a land node keeps no velocity in any record
     out.dated = true;
     out.steady = false;
     out.calendar = a.calendar;
@@ -365,4 +364,4 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
         name += "," + used[i];
     return buildForecast(p, opt, name);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

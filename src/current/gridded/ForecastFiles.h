@@ -34,10 +34,10 @@ struct ForecastPiece
     AxisSelection z, t;
     HorizontalSubset h;
     GriddedData g;                       ///< nx, ny, depth, time, u, v, water (no coordinates yet)
-    std::vector<std::uint8_t> fillWater;  ///< g.water before the mask stage (land from fill values)
-    std::vector<std::uint8_t> maskWater;  ///< g.water after the mask stage, before the tracer's
-    bool cornerGrid{false};               ///< NetCdfCurrents::cornerGrid (a B grid: every still node is land)
-    NetCdfCurrents out;                   ///< what is known so far (variables, time fields, land counts, values)
+    std::vector<std::uint8_t> fillWater; ///< g.water before the mask stage (land from fill values)
+    std::vector<std::uint8_t> maskWater; ///< g.water after the mask stage, before the tracer's
+    bool cornerGrid{false};              ///< NetCdfCurrents::cornerGrid (a B grid: every still node is land)
+    NetCdfCurrents out;                  ///< what is known so far (variables, time fields, land counts, values)
 };
 
 /// Opens the file and runs the stages up to the land: fill values, the mask, the tracer, and (one file: times null)
@@ -50,5 +50,5 @@ ForecastPiece readForecastPiece(const std::string &path, const NetCdfCurrentOpti
 /// The rest of loadNetCdfCurrents(): depth average, node coordinates, bounds, the GriddedCurrentField (named
 /// opt.field.name, else fieldName).
 NetCdfCurrents buildForecast(ForecastPiece &p, const NetCdfCurrentOptions &opt, const std::string &fieldName);
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

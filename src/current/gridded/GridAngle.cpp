@@ -13,7 +13,7 @@ namespace gridded_detail
 namespace
 {
 constexpr double kRadToDeg = 180.0 / M_PI;
-constexpr double kWgs84E2 = 6.69437999014e-3;  // first eccentricity squared of WGS84
+constexpr double kWgs84E2 = 6.69437999014e-3; // first eccentricity squared of WGS84
 
 /// Angle in (-pi, pi].
 double wrapAngle(double a)
@@ -33,8 +33,7 @@ double wrapDegrees(double d)
 
 /// The coordinate difference (b - a) along one grid line at index k of n points (values at k - 1, k, k + 1 or the
 /// second-order one-sided formula at the ends); longitude differences wrapped.
-template <class At>
-double difference(const At &at, std::size_t k, std::size_t n, bool lon)
+template <class At> double difference(const At &at, std::size_t k, std::size_t n, bool lon)
 {
     auto d = [lon](double b, double a) { return lon ? wrapDegrees(b - a) : b - a; };
     if (n == 2)
@@ -45,7 +44,7 @@ double difference(const At &at, std::size_t k, std::size_t n, bool lon)
         return 2.0 * d(at(n - 1), at(n - 2)) - 0.5 * d(at(n - 1), at(n - 3));
     return 0.5 * d(at(k + 1), at(k - 1));
 }
-}  // namespace
+} // namespace
 
 DerivedGridAngle deriveGridAngle(const std::vector<double> &x, const std::vector<double> &y, std::size_t nx,
                                  std::size_t ny, bool geographic)
@@ -125,5 +124,5 @@ std::string gridAngleNote(const DerivedGridAngle &a, const std::string &coordina
     return "derived from " + coordinates + ": the grid's i direction " + text::number(a.minDegrees, 4) + ".." +
            text::number(a.maxDegrees, 4) + " degrees counter-clockwise from east";
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

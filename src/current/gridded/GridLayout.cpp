@@ -71,8 +71,8 @@ void findCurvilinearCoordinates(const GriddedDataset &f, const NetCdfCurrentOpti
             l.lat2D = var;
     }
     if (l.lon2D < 0 || l.lat2D < 0)
-        throw f.error("variable '" + l.uName + "' is on dimensions (" + f.dimName(want[0]) + ", " +
-                      f.dimName(want[1]) + ") without 1-D axes; expected 2-D longitude/latitude variables on them "
+        throw f.error("variable '" + l.uName + "' is on dimensions (" + f.dimName(want[0]) + ", " + f.dimName(want[1]) +
+                      ") without 1-D axes; expected 2-D longitude/latitude variables on them "
                       "(from its 'coordinates' attribute, standard_name or units degrees_east/degrees_north)");
     if (f.varDims(l.lon2D) != want || f.varDims(l.lat2D) != want)
         throw f.error("curvilinear coordinates '" + f.varName(l.lon2D) + "'/'" + f.varName(l.lat2D) +
@@ -124,8 +124,10 @@ void findAngle(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Layout 
             throw f.error("no grid angle variable '" + opt.angleName + "' (given as NetCdfCurrentOptions::angleName)",
                           "NetCdfCurrentOptions::angleName");
         if (f.varDims(*v) != grid)
-            throw f.error("grid angle variable '" + opt.angleName + "' (NetCdfCurrentOptions::angleName) is not on "
-                          "the grid of the velocities (" + dimText(f, grid[0]) + ", " + dimText(f, grid[1]) + ")",
+            throw f.error("grid angle variable '" + opt.angleName +
+                              "' (NetCdfCurrentOptions::angleName) is not on "
+                              "the grid of the velocities (" +
+                              dimText(f, grid[0]) + ", " + dimText(f, grid[1]) + ")",
                           "NetCdfCurrentOptions::angleName");
         l.angleVar = *v;
     }
@@ -137,15 +139,17 @@ void findAngle(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Layout 
         const std::string longName = lower(f.attText(l.uVar, "long_name").value_or(""));
         const bool gridRelative = sn.find("x_velocity") != std::string::npos || sn.find("grid") != std::string::npos;
         if (sn.find("eastward") != std::string::npos || lower(l.uName).find("east") != std::string::npos ||
-            (!gridRelative && (longName.find("zonal") != std::string::npos ||
-                               longName.find("eastward") != std::string::npos)))
+            (!gridRelative &&
+             (longName.find("zonal") != std::string::npos || longName.find("eastward") != std::string::npos)))
             return;
         for (int var = 0; var < f.nvars() && l.angleVar < 0; ++var)
             if (lower(f.varName(var)) == "angle")
             {
-                if (f.varDims(var) != grid)  // (a 1-D angle on a 2-D grid would turn nothing, in silence)
-                    throw f.error("grid angle variable '" + f.varName(var) + "' is not on the grid of the "
-                                  "velocities (" + dimText(f, grid[0]) + ", " + dimText(f, grid[1]) +
+                if (f.varDims(var) != grid) // (a 1-D angle on a 2-D grid would turn nothing, in silence)
+                    throw f.error("grid angle variable '" + f.varName(var) +
+                                  "' is not on the grid of the "
+                                  "velocities (" +
+                                  dimText(f, grid[0]) + ", " + dimText(f, grid[1]) +
                                   "): give the grid's angle with NetCdfCurrentOptions::angleName, or 'none' when "
                                   "the velocities are east/north");
                 l.angleVar = var;
@@ -219,14 +223,15 @@ bool decideGeographic(const GriddedDataset &f, const NetCdfCurrentOptions &opt, 
     {
         if (!geoAxes)
             throw f.error("expected longitude/latitude coordinates (units degrees_east/degrees_north or standard_name "
-                          "longitude/latitude) for variable '" + l.uName + "' (CoordinateMode::Geographic)");
+                          "longitude/latitude) for variable '" +
+                          l.uName + "' (CoordinateMode::Geographic)");
         return true;
     }
     if (opt.coordinates == CoordinateMode::Cartesian)
         return false;
     return geoAxes && !cartAxes;
 }
-}  // namespace
+} // namespace
 
 Layout detectLayout(const GriddedDataset &f, const NetCdfCurrentOptions &opt)
 {
@@ -259,5 +264,5 @@ Layout detectLayout(const GriddedDataset &f, const NetCdfCurrentOptions &opt)
     findAngle(f, opt, l);
     return l;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -4,7 +4,8 @@
 ///
 /// The reader runs in stages, one source file each (all in src/current/gridded/ except the composition and the file
 /// access):
-///  - ../../io/GriddedDataset.cpp    the open file, attribute/variable queries, errors that name the file (io/GriddedDataset.h)
+///  - ../../io/GriddedDataset.cpp    the open file, attribute/variable queries, errors that name the file
+///  (io/GriddedDataset.h)
 ///  - ../../io/ClassicSize.cpp  the size a classic-format file must have, from its header (refuses truncated files)
 ///  - AxisChecks.cpp         coordinate values: no fill values or non-finite numbers, strictly monotonic axes
 ///  - VariableDetection.cpp  velocities and the role of each of their dimensions (CF standard_name, axis, units)
@@ -53,7 +54,8 @@ namespace gridded_detail
 {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// ---- strings (io/TextUtil.h) and the open file (io/GriddedDataset.h: GriddedDataset, ClassicExtent, classicTruncation()) ----
+// ---- strings (io/TextUtil.h) and the open file (io/GriddedDataset.h: GriddedDataset, ClassicExtent,
+// classicTruncation()) ----
 
 using text::inList;
 using text::joinNames;
@@ -98,11 +100,11 @@ enum class Role
 /// coordinate variable stay Role::None (a curvilinear grid's (j, i)).
 struct DimensionRoles
 {
-    std::vector<int> dims;      ///< dimension ids of u, in file order
-    std::vector<Role> role;     ///< per dimension
-    std::vector<int> coordVar;  ///< 1-D coordinate variable per dimension, -1 if none
-    bool geoAxes{false};        ///< a horizontal axis was recognised as longitude/latitude
-    bool cartAxes{false};       ///< a horizontal axis was recognised as Cartesian x/y
+    std::vector<int> dims;     ///< dimension ids of u, in file order
+    std::vector<Role> role;    ///< per dimension
+    std::vector<int> coordVar; ///< 1-D coordinate variable per dimension, -1 if none
+    bool geoAxes{false};       ///< a horizontal axis was recognised as longitude/latitude
+    bool cartAxes{false};      ///< a horizontal axis was recognised as Cartesian x/y
 
     /// Index (in dims) of the dimension with role r, -1 if none.
     int find(Role r) const;
@@ -120,14 +122,14 @@ struct Layout
 {
     int uVar{-1}, vVar{-1};
     std::string uName, vName;
-    std::vector<int> dims;      ///< dimension ids of u and v, file order
-    std::vector<Role> role;     ///< per dimension
-    std::vector<int> coordVar;  ///< 1-D coordinate variable per dimension, -1 if none
-    int dimT{-1}, dimZ{-1}, dimX{-1}, dimY{-1};  ///< index in dims, -1 if absent (x/y always present)
-    bool curvilinear{false};    ///< x/y from 2-D coordinate variables lon2D/lat2D
+    std::vector<int> dims;                      ///< dimension ids of u and v, file order
+    std::vector<Role> role;                     ///< per dimension
+    std::vector<int> coordVar;                  ///< 1-D coordinate variable per dimension, -1 if none
+    int dimT{-1}, dimZ{-1}, dimX{-1}, dimY{-1}; ///< index in dims, -1 if absent (x/y always present)
+    bool curvilinear{false};                    ///< x/y from 2-D coordinate variables lon2D/lat2D
     int lon2D{-1}, lat2D{-1};
-    bool geographic{false};     ///< longitude/latitude (projected), else Cartesian
-    std::string xName, yName;   ///< the horizontal coordinate variables (1-D or 2-D)
+    bool geographic{false};   ///< longitude/latitude (projected), else Cartesian
+    std::string xName, yName; ///< the horizontal coordinate variables (1-D or 2-D)
     /// Arakawa C grid (ROMS): u and v on their own dimensions; dims[dimY], dims[dimX] are then the rho (cell
     /// centre) dimensions the grid is loaded on, uDims/vDims the variables' own (file order)
     bool staggered{false};
@@ -147,11 +149,11 @@ Layout detectLayout(const GriddedDataset &f, const NetCdfCurrentOptions &opt);
 /// A time axis as read: dated ("<unit> since <date>") or raw values.
 struct TimeValues
 {
-    std::string name;                       ///< the variable
+    std::string name; ///< the variable
     bool dated{false};
-    Calendar calendar{Calendar::Standard};  ///< dated axes
-    double originSeconds{0.0};              ///< first time, seconds since the calendar epoch (dated axes)
-    std::vector<double> times;              ///< per file index: seconds after the first time, or raw values
+    Calendar calendar{Calendar::Standard}; ///< dated axes
+    double originSeconds{0.0};             ///< first time, seconds since the calendar epoch (dated axes)
+    std::vector<double> times;             ///< per file index: seconds after the first time, or raw values
 };
 
 /// Reads the time coordinate variable tv, with unitsOverride (NetCdfCurrentOptions::timeUnits) in place of its
@@ -164,17 +166,18 @@ TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, co
 /// The one record of NetCdfCurrentOptions::steadyRecord and its date.
 struct SteadyRecord
 {
-    std::size_t index{0};                   ///< file index along the time dimension
-    bool dated{false};                      ///< the axis (or NetCdfCurrentOptions::timeUnits) has dates
+    std::size_t index{0}; ///< file index along the time dimension
+    bool dated{false};    ///< the axis (or NetCdfCurrentOptions::timeUnits) has dates
     Calendar calendar{Calendar::Standard};
-    double originSeconds{0.0};              ///< the record's time, seconds since the calendar epoch (dated)
+    double originSeconds{0.0}; ///< the record's time, seconds since the calendar epoch (dated)
 };
 
 /// nullopt without NetCdfCurrentOptions::steadyRecord; else the record on time dimension timeDim (coordinate
 /// variable tv, -1 if none), dated when its units (or the options' timeUnits) are "<unit> since <date>" (an
 /// undated axis is not read). @throws Error when the index is not below the number of records, or the dated axis
 /// is bad (readTimeValues()).
-std::optional<SteadyRecord> steadyRecordOf(const GriddedDataset &f, int timeDim, int tv, const NetCdfCurrentOptions &opt);
+std::optional<SteadyRecord> steadyRecordOf(const GriddedDataset &f, int timeDim, int tv,
+                                           const NetCdfCurrentOptions &opt);
 
 /// File indices and coordinate values chosen along one dimension.
 struct AxisSelection
@@ -187,17 +190,15 @@ struct AxisSelection
     /// depth: terrain-following s-levels (values are s, not metres; remapSigmaToDepths() makes depths of them)
     bool sigma{false};
     /// True when position q counts for land.
-    bool inTrip(std::size_t q) const
-    {
-        return q >= tripBegin && q <= tripEnd;
-    }
+    bool inTrip(std::size_t q) const { return q >= tripBegin && q <= tripEnd; }
 };
 
 /// The forecast times the mission needs (departure to departure + horizon, plus 2 steps each side); sets the
 /// time fields of out (dated, steady, calendar, origin, forecast begin/end, departure). {0}/{0} without time axis
 /// or with a single record; {steadyRecord}/{0} with NetCdfCurrentOptions::steadyRecord. @throws Error for
 /// timeUnits or steadyRecord given for a file without time dimension.
-AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt, NetCdfCurrents &out);
+AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt,
+                          NetCdfCurrents &out);
 
 /// The depth layers (metres, positive down, ascending) down to the first at or below maxDepth plus 2;
 /// {0}/{0} without depth axis; every level, with sigma set, for a terrain-following coordinate.
@@ -209,8 +210,8 @@ AxisSelection selectDepths(const GriddedDataset &f, const Layout &l, double maxD
 struct RegionOfInterest
 {
     bool given{false};
-    double lonMin{kNaN}, lonMax{kNaN};  ///< as given (for messages)
-    double lon0{kNaN}, lon1{kNaN};      ///< lon1 >= lon0: +360 across the antimeridian (geographic)
+    double lonMin{kNaN}, lonMax{kNaN}; ///< as given (for messages)
+    double lon0{kNaN}, lon1{kNaN};     ///< lon1 >= lon0: +360 across the antimeridian (geographic)
     double latMin{kNaN}, latMax{kNaN};
     double margin{0.0};
     int marginNodes{2};
@@ -223,10 +224,10 @@ RegionOfInterest regionOfInterest(const NetCdfCurrentOptions &opt, bool geograph
 struct HorizontalSubset
 {
     std::vector<std::size_t> xIdx, yIdx;
-    std::vector<double> lon1D, lat1D;      ///< rectilinear: coordinate per internal i / j
-    std::vector<double> nodeLon, nodeLat;  ///< curvilinear: coordinates per internal j * nx + i
+    std::vector<double> lon1D, lat1D;     ///< rectilinear: coordinate per internal i / j
+    std::vector<double> nodeLon, nodeLat; ///< curvilinear: coordinates per internal j * nx + i
     double centreLon{kNaN}, centreLat{kNaN};
-    double lonLo{kNaN}, lonHi{kNaN}, latLo{kNaN}, latHi{kNaN};  ///< bounds of the nodes (longitudes unwrapped)
+    double lonLo{kNaN}, lonHi{kNaN}, latLo{kNaN}, latHi{kNaN}; ///< bounds of the nodes (longitudes unwrapped)
     /// curvilinear grids: the period of the file's columns when they wrap round the globe (column P is column 0
     /// again: a displaced-pole or tripolar grid's seam), else 0; the tracer stage reads across it
     std::size_t xPeriod{0};
@@ -244,13 +245,13 @@ double wrapTo(double lon, double centre);
 /// axis's repeated seam column (-180 and 180, 0 and 360) read once. The nodes x the times t and depths z must fit
 /// the memory limit (checkTripMemory()). @throws Error for axes with fill values or non-finite numbers, axes that
 /// are not strictly monotonic, a region outside the axes or a trip too large for the memory.
-HorizontalSubset rectilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
-                                   const AxisSelection &t);
+HorizontalSubset rectilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r,
+                                   const AxisSelection &z, const AxisSelection &t);
 /// 2-D coordinates: the index box of the nodes in the region (+ margin nodes) and their coordinates; the memory
 /// is checked (checkTripMemory()) before they are read. @throws Error also for coordinates with fill values or
 /// non-finite numbers, and for coinciding neighbours or folded cells (checkCurvilinearNodes()).
-HorizontalSubset curvilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
-                                   const AxisSelection &t);
+HorizontalSubset curvilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r,
+                                   const AxisSelection &z, const AxisSelection &t);
 
 // ---- coordinate values (AxisChecks.cpp) ----
 
@@ -267,8 +268,8 @@ void checkAxisValues(const GriddedDataset &f, int var, const std::vector<double>
 std::size_t monotonicBreak(const std::vector<double> &values);
 /// @throws Error "<kind> '<name>' is not strictly monotonic: <a> at index k - 1, then <b> at index k" unless values
 /// are strictly monotonic; the numbers shown are those of `shown` (the file's, when values were unwrapped).
-void checkStrictlyMonotonic(const GriddedDataset &f, const std::vector<double> &values, const std::vector<double> &shown,
-                            const std::string &kind, const std::string &name);
+void checkStrictlyMonotonic(const GriddedDataset &f, const std::vector<double> &values,
+                            const std::vector<double> &shown, const std::string &kind, const std::string &name);
 /// Longitudes that are not monotonic as written but are across one seam (170, 180, -170 or 350, 0, 10): the
 /// values after each jump of more than 180 degrees shifted by a whole turn, when that makes them strictly
 /// monotonic within less than a turn; else (and for monotonic axes) the values unchanged.
@@ -282,8 +283,8 @@ void checkCurvilinearNodes(const GriddedDataset &f, const Layout &l, const Horiz
 /// Contiguous runs of file indices along one dimension and the internal position of each index read.
 struct DimRead
 {
-    std::vector<std::pair<std::size_t, std::size_t>> runs;  ///< (start, count) in the file
-    std::vector<std::vector<std::size_t>> pos;              ///< per run, internal position of each element
+    std::vector<std::pair<std::size_t, std::size_t>> runs; ///< (start, count) in the file
+    std::vector<std::vector<std::size_t>> pos;             ///< per run, internal position of each element
 };
 
 /// Builds the runs from the list "internal position p -> file index fileIdx[p]".
@@ -291,15 +292,15 @@ DimRead makeDimRead(const std::vector<std::size_t> &fileIdx);
 
 /// Reads `var` restricted to the per-dimension reads, scattering into `out` at internal offsets
 /// sum_d pos * stride[d]. Values are raw (packed) doubles.
-void readScatter(const GriddedDataset &f, int var, const std::vector<DimRead> &dims, const std::vector<std::size_t> &stride,
-                 std::vector<double> &out);
+void readScatter(const GriddedDataset &f, int var, const std::vector<DimRead> &dims,
+                 const std::vector<std::size_t> &stride, std::vector<double> &out);
 
 /// The reads of u/v: per file dimension the runs and the internal stride (internal order t, z, y, x).
 struct HyperslabPlan
 {
     std::vector<DimRead> reads;
     std::vector<std::size_t> stride;
-    std::size_t fileValues{1};  ///< values per component in the file variable
+    std::size_t fileValues{1}; ///< values per component in the file variable
 };
 
 /// The bytes loadNetCdfCurrents() allocates at its peak for ni x nj nodes, nt times and nz depths: 20 per value of
@@ -323,8 +324,8 @@ LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, 
 /// 300 m/s, or not finite in single precision; in a Cartesian file's units without units, more than 1e6), naming
 /// the variable, the value, the node (file indices, coordinates) and the record: values read as fill values, a
 /// scale_factor or units that are wrong, never planned on.
-void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &t,
-                             const NetCdfCurrentOptions &opt, const GriddedData &g);
+void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
+                             const AxisSelection &t, const NetCdfCurrentOptions &opt, const GriddedData &g);
 /// The conversion to metres of a Cartesian axis' units (UDUNITS-2, lengthToMetres()); the identity without
 /// units or for dimensionless ones (degrees included). @throws Error naming the file, the variable and the units
 /// when they are not a length.
@@ -351,9 +352,9 @@ void unpackCoordinates(const GriddedDataset &f, int var, std::vector<double> &va
 /// trip's records (t.inTrip()), counted in out.fillLandNodes; with zeroIsLand also where u = v = 0 exactly in all
 /// of them (counted in out.zeroLandNodes; not when every water node is zero). The loader passes zeroIsLand = false
 /// and decides zero-velocity land after every other stage (zeroVelocityLand()).
-void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv, const Packing &pu,
-                   const Packing &pv, const LinearConversion &vel, bool zeroIsLand, const AxisSelection &t,
-                   GriddedData &g, NetCdfCurrents &out);
+void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv, const Packing &pu, const Packing &pv,
+                   const LinearConversion &vel, bool zeroIsLand, const AxisSelection &t, GriddedData &g,
+                   NetCdfCurrents &out);
 /// Reads u and v over the plan into g.u / g.v (unpacked, converted to m/s by vel) and g.water (unpackAndMask()
 /// with opt.zeroVelocityLand). g.nx, g.ny, g.depth and g.time must be set.
 void readVelocities(const GriddedDataset &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
@@ -394,9 +395,9 @@ void zeroLandVelocities(GriddedData &g);
 /// loaded rho point and averaged, v at the v points south and north of it; faces marked land by mask_u/mask_v or
 /// holding fill values count as zero flow, a rho point with both faces of a component fill values is land.
 /// @throws Error when the loaded rho points are not one contiguous, interior block.
-void readStaggeredVelocities(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
-                             const AxisSelection &t, const LinearConversion &vel, const NetCdfCurrentOptions &opt,
-                             GriddedData &g, NetCdfCurrents &out);
+void readStaggeredVelocities(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
+                             const AxisSelection &z, const AxisSelection &t, const LinearConversion &vel,
+                             const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
 /// True when the depth variable zv is terrain-following (standard_name ocean_s_*, ocean_sigma_*,
 /// ocean_double_sigma_*).
 bool isSigmaCoordinate(const GriddedDataset &f, int zv);
@@ -426,11 +427,11 @@ constexpr double kGridTurnDegrees = 30.0;
 /// The angle of a grid's i direction at every node.
 struct DerivedGridAngle
 {
-    std::vector<double> radians;  ///< per node j * nx + i, counter-clockwise from east (x)
+    std::vector<double> radians; ///< per node j * nx + i, counter-clockwise from east (x)
     double maxAbsDegrees{0.0};
     double minDegrees{kInf}, maxDegrees{-kInf};
-    bool rotated{false};          ///< maxAbsDegrees > kGridRotatedDegrees
-    std::string fault;            ///< non-empty when the angle is ambiguous: what is wrong, at node (faultJ, faultI)
+    bool rotated{false}; ///< maxAbsDegrees > kGridRotatedDegrees
+    std::string fault;   ///< non-empty when the angle is ambiguous: what is wrong, at node (faultJ, faultI)
     std::size_t faultJ{0}, faultI{0};
 };
 
@@ -456,7 +457,7 @@ void averageOverDepth(double top, double bottom, GriddedData &g);
 /// the reads and the strides into an array (t, z, y, x) with only the variable's own axes.
 struct GridFit
 {
-    std::vector<Role> role;      ///< per dimension of the variable
+    std::vector<Role> role; ///< per dimension of the variable
     std::vector<DimRead> reads;
     std::vector<std::size_t> stride;
     bool hasTime{false}, hasDepth{false};
@@ -501,8 +502,8 @@ void applyTracerLand(const GriddedDataset &f, const Layout &l, const HorizontalS
 /// Sets the node coordinates of g: geographic grids are projected about the reference point (options, else the
 /// region's centre, else the grid's) and their velocities rotated into x/y; Cartesian axes are scaled to
 /// metres. Returns the projection (null in Cartesian mode).
-std::shared_ptr<const LocalProjection> setNodeCoordinates(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
-                                                          const RegionOfInterest &r, const NetCdfCurrentOptions &opt,
-                                                          GriddedData &g);
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+std::shared_ptr<const LocalProjection> setNodeCoordinates(const GriddedDataset &f, const Layout &l,
+                                                          const HorizontalSubset &h, const RegionOfInterest &r,
+                                                          const NetCdfCurrentOptions &opt, GriddedData &g);
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -11,7 +11,7 @@ namespace gridded_detail
 {
 DimRead makeDimRead(const std::vector<std::size_t> &fileIdx)
 {
-    std::vector<std::pair<std::size_t, std::size_t>> order;  // (file index, internal pos)
+    std::vector<std::pair<std::size_t, std::size_t>> order; // (file index, internal pos)
     for (std::size_t p = 0; p < fileIdx.size(); ++p)
         order.emplace_back(fileIdx[p], p);
     std::sort(order.begin(), order.end());
@@ -37,7 +37,7 @@ void scatterBlock(const std::vector<DimRead> &dims, const std::vector<std::size_
                   const std::vector<double> &buf, std::vector<double> &out)
 {
     const std::size_t nd = dims.size();
-    std::vector<std::size_t> c(nd, 0);  // odometer over the hyperslab in row-major order
+    std::vector<std::size_t> c(nd, 0); // odometer over the hyperslab in row-major order
     for (std::size_t e = 0; e < buf.size(); ++e)
     {
         std::size_t off = 0;
@@ -64,10 +64,10 @@ bool nextRuns(const std::vector<DimRead> &dims, std::vector<std::size_t> &runIdx
     }
     return false;
 }
-}  // namespace
+} // namespace
 
-void readScatter(const GriddedDataset &f, int var, const std::vector<DimRead> &dims, const std::vector<std::size_t> &stride,
-                 std::vector<double> &out)
+void readScatter(const GriddedDataset &f, int var, const std::vector<DimRead> &dims,
+                 const std::vector<std::size_t> &stride, std::vector<double> &out)
 {
     const std::size_t nd = dims.size();
     std::vector<std::size_t> runIdx(nd, 0);
@@ -105,8 +105,7 @@ void checkTripMemory(const GriddedDataset &f, std::size_t ni, std::size_t nj, st
 {
     checkMemory(tripBytes(ni, nj, nt, nz),
                 "NetCDF file '" + f.path() + "': the trip's region (" + std::to_string(ni) + " x " +
-                    std::to_string(nj) + " nodes, " + std::to_string(nt) + " times, " + std::to_string(nz) +
-                    " depths)",
+                    std::to_string(nj) + " nodes, " + std::to_string(nt) + " times, " + std::to_string(nz) + " depths)",
                 "restrict the region or the time window, or use a coarser file");
 }
 
@@ -122,29 +121,29 @@ HyperslabPlan planHyperslab(const GriddedDataset &f, const Layout &l, const Hori
         p.fileValues *= f.dimLen(l.dims[d]);
         switch (l.role[d])
         {
-            case Role::Time:
-                p.reads[d] = makeDimRead(t.idx);
-                p.stride[d] = nz * nh;
-                break;
-            case Role::Depth:
-                p.reads[d] = makeDimRead(z.idx);
-                p.stride[d] = nh;
-                break;
-            case Role::Y:
-                p.reads[d] = makeDimRead(h.yIdx);
-                p.stride[d] = nx;
-                break;
-            case Role::X:
-                p.reads[d] = makeDimRead(h.xIdx);
-                p.stride[d] = 1;
-                break;
-            case Role::None:
-                p.reads[d] = makeDimRead({0});
-                p.stride[d] = 0;
-                break;
+        case Role::Time:
+            p.reads[d] = makeDimRead(t.idx);
+            p.stride[d] = nz * nh;
+            break;
+        case Role::Depth:
+            p.reads[d] = makeDimRead(z.idx);
+            p.stride[d] = nh;
+            break;
+        case Role::Y:
+            p.reads[d] = makeDimRead(h.yIdx);
+            p.stride[d] = nx;
+            break;
+        case Role::X:
+            p.reads[d] = makeDimRead(h.xIdx);
+            p.stride[d] = 1;
+            break;
+        case Role::None:
+            p.reads[d] = makeDimRead({0});
+            p.stride[d] = 0;
+            break;
         }
     }
     return p;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

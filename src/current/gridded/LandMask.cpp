@@ -17,9 +17,9 @@ namespace gridded_detail
 /// Unpacks raw u/v (internal order t, z, y, x) into g.u / g.v and marks land in g.water (per z, y, x), deciding on
 /// the trip's records only (t.inTrip()). Fill values become velocity 0 (a fill in a margin record only reaches
 /// the field through cubic/Akima time stencils, as a zero).
-void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv, const Packing &pu,
-                   const Packing &pv, const LinearConversion &vel, bool zeroIsLand, const AxisSelection &t,
-                   GriddedData &g, NetCdfCurrents &out)
+void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv, const Packing &pu, const Packing &pv,
+                   const LinearConversion &vel, bool zeroIsLand, const AxisSelection &t, GriddedData &g,
+                   NetCdfCurrents &out)
 {
     const std::size_t total = ru.size(), perTime = g.depth.size() * g.nx * g.ny;
     g.u.assign(total, 0.0f);
@@ -230,23 +230,23 @@ std::optional<GridFit> fitToGrid(const GriddedDataset &f, const Layout &l, int v
     for (std::size_t d = 0; d < md.size(); ++d)
         switch (role[d])
         {
-            case Role::Time:
-                m.reads[d] = makeDimRead(t.idx);
-                m.stride[d] = nz * nh;
-                break;
-            case Role::Depth:
-                m.reads[d] = makeDimRead(z.idx);
-                m.stride[d] = nh;
-                break;
-            case Role::Y:
-                m.stride[d] = nx;
-                break;
-            case Role::X:
-                m.stride[d] = 1;
-                break;
-            case Role::None:
-                m.reads[d] = makeDimRead({0});
-                break;
+        case Role::Time:
+            m.reads[d] = makeDimRead(t.idx);
+            m.stride[d] = nz * nh;
+            break;
+        case Role::Depth:
+            m.reads[d] = makeDimRead(z.idx);
+            m.stride[d] = nh;
+            break;
+        case Role::Y:
+            m.stride[d] = nx;
+            break;
+        case Role::X:
+            m.stride[d] = 1;
+            break;
+        case Role::None:
+            m.reads[d] = makeDimRead({0});
+            break;
         }
     m.setHorizontal(h.yIdx, h.xIdx);
     return m;
@@ -258,10 +258,10 @@ namespace
 /// How the values of a mask variable are read.
 enum class MaskRule
 {
-    WaterIfHalf,  ///< >= 0.5 is water (ROMS mask_rho, NEMO tmask, CF sea_binary_mask)
-    LandIfHalf,   ///< >= 0.5 is land (CF land_binary_mask, ERA5 lsm, WRF LANDMASK)
-    Flags,        ///< CF flag_values / flag_meanings
-    LevelCount    ///< POP KMT: number of ocean levels
+    WaterIfHalf, ///< >= 0.5 is water (ROMS mask_rho, NEMO tmask, CF sea_binary_mask)
+    LandIfHalf,  ///< >= 0.5 is land (CF land_binary_mask, ERA5 lsm, WRF LANDMASK)
+    Flags,       ///< CF flag_values / flag_meanings
+    LevelCount   ///< POP KMT: number of ocean levels
 };
 
 /// A mask variable, its rule, and where its dimensions sit in the loaded arrays.
@@ -269,7 +269,7 @@ struct Mask
 {
     int var{-1};
     MaskRule rule{MaskRule::WaterIfHalf};
-    std::set<double> waterFlags;  ///< Flags: the values meaning water
+    std::set<double> waterFlags; ///< Flags: the values meaning water
 };
 
 std::string lowerName(const GriddedDataset &f, int var)
@@ -318,8 +318,8 @@ Mask maskOf(const GriddedDataset &f, int var)
     return m;
 }
 
-const char *const kMaskNames[] = {"mask_rho", "mask", "tmask", "landmask", "land_mask", "lsm",
-                                  "land_sea_mask", "seamask", "sea_mask", "kmu", "kmt"};
+const char *const kMaskNames[] = {"mask_rho",      "mask",    "tmask",    "landmask", "land_mask", "lsm",
+                                  "land_sea_mask", "seamask", "sea_mask", "kmu",      "kmt"};
 
 /// The mask variable: the given one (which must fit), else the first candidate that fits; -1 for none.
 int findMask(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt, const HorizontalSubset &h,
@@ -371,7 +371,7 @@ int findMask(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOption
             return var;
     return -1;
 }
-}  // namespace
+} // namespace
 
 void readVelocities(const GriddedDataset &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
                     const LinearConversion &vel, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
@@ -411,18 +411,18 @@ void applyLandMask(const GriddedDataset &f, const Layout &l, const HorizontalSub
                         if (!p.isFill(r))
                             switch (m.rule)
                             {
-                                case MaskRule::WaterIfHalf:
-                                    water = v >= 0.5;
-                                    break;
-                                case MaskRule::LandIfHalf:
-                                    water = v < 0.5;
-                                    break;
-                                case MaskRule::Flags:
-                                    water = m.waterFlags.count(v) > 0;
-                                    break;
-                                case MaskRule::LevelCount:
-                                    water = double(z.idx[k]) < v;
-                                    break;
+                            case MaskRule::WaterIfHalf:
+                                water = v >= 0.5;
+                                break;
+                            case MaskRule::LandIfHalf:
+                                water = v < 0.5;
+                                break;
+                            case MaskRule::Flags:
+                                water = m.waterFlags.count(v) > 0;
+                                break;
+                            case MaskRule::LevelCount:
+                                water = double(z.idx[k]) < v;
+                                break;
                             }
                         std::uint8_t &w = g.water[k * nh + n];
                         if (w && !water)
@@ -495,5 +495,5 @@ void averageOverDepth(double top, double bottom, GriddedData &g)
     g.water = std::move(water);
     g.depth = {top};
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -135,8 +135,9 @@ NetCdfCurrentOptions readerOptions(const ForecastRequest &r)
 std::string remoteNote(const RemoteFetch &f)
 {
     const auto bytes = [](std::uint64_t b) {
-        return b >= 1000000 ? text::number(b / 1e6, 4) + " MB" : b >= 1000 ? text::number(b / 1e3, 4) + " kB"
-                                                                           : std::to_string(b) + " B";
+        return b >= 1000000 ? text::number(b / 1e6, 4) + " MB"
+               : b >= 1000  ? text::number(b / 1e3, 4) + " kB"
+                            : std::to_string(b) + " B";
     };
     const std::string of = f.kind == "OPeNDAP" ? " of values" : " of chunks";
     std::string note = f.kind + " '" + f.source + "': ";
@@ -164,7 +165,8 @@ std::vector<std::string> readerNotes(const NetCdfCurrents &nc, const ForecastReq
     if (nc.gridAngle.rfind("variable ", 0) == 0)
         notes.push_back("grid angle from the " + nc.gridAngle + " (velocities along the grid turned to east/north)");
     else if (!nc.gridAngle.empty())
-        notes.push_back("grid angle " + nc.gridAngle + " (the file has no angle variable and its velocities do not "
+        notes.push_back("grid angle " + nc.gridAngle +
+                        " (the file has no angle variable and its velocities do not "
                         "say they are eastward/northward)");
     const std::string loaded =
         std::to_string(nc.loadedValues / std::max<std::size_t>(1, nc.loadedShape.empty() ? 1 : nc.loadedShape[0]));
@@ -175,9 +177,10 @@ std::vector<std::string> readerNotes(const NetCdfCurrents &nc, const ForecastReq
     if (nc.zeroLandNodes > 0)
         notes.push_back(std::to_string(nc.zeroLandNodes) + " of the " + loaded +
                         " nodes loaded are land only because u = v = 0 in every record of the trip "
-                        "(" + r.optionName(ForecastOption::ZeroVelocityLand, "NetCdfCurrentOptions::zeroVelocityLand") +
+                        "(" +
+                        r.optionName(ForecastOption::ZeroVelocityLand, "NetCdfCurrentOptions::zeroVelocityLand") +
                         " turns this off, taking them as water)");
-    for (const RemoteFetch &f : remoteFetchesOf(nc.files))  // OPeNDAP: what came from the network, the cache
+    for (const RemoteFetch &f : remoteFetchesOf(nc.files)) // OPeNDAP: what came from the network, the cache
         notes.push_back(remoteNote(f));
     return notes;
 }
@@ -223,7 +226,7 @@ public:
         f.field = nc.field;
         f.depthLevels = nc.depthAxis;
         f.uVariable = nc.uVariable;
-        std::string u = nc.uVariable;  // a wind (uwnd, u10, eastward_wind...) is called so on the map
+        std::string u = nc.uVariable; // a wind (uwnd, u10, eastward_wind...) is called so on the map
         std::transform(u.begin(), u.end(), u.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
         f.wind = u == "uwnd" || u == "u10" || u.find("wind") != std::string::npos;
         f.notes = readerNotes(nc, r);
@@ -239,8 +242,7 @@ private:
         return r.files.front();
     }
     /// The reader's call, its message in the caller's words.
-    template <class F>
-    static auto guarded(const ForecastRequest &r, F &&call) -> decltype(call())
+    template <class F> static auto guarded(const ForecastRequest &r, F &&call) -> decltype(call())
     {
         if (r.files.empty())
             throw Error("netcdf: no forecast file given");
@@ -254,11 +256,11 @@ private:
         }
     }
 };
-}  // namespace
+} // namespace
 
 std::shared_ptr<const GriddedSource> netCdfSource()
 {
     static const auto source = std::make_shared<const NetCdfSource>();
     return source;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

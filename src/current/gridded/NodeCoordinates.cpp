@@ -66,11 +66,11 @@ void cartesianNodes(const GriddedDataset &f, const Layout &l, const HorizontalSu
     for (double v : h.lat1D)
         g.y.push_back(cy(v));
 }
-}  // namespace
+} // namespace
 
-std::shared_ptr<const LocalProjection> setNodeCoordinates(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
-                                                          const RegionOfInterest &r, const NetCdfCurrentOptions &opt,
-                                                          GriddedData &g)
+std::shared_ptr<const LocalProjection> setNodeCoordinates(const GriddedDataset &f, const Layout &l,
+                                                          const HorizontalSubset &h, const RegionOfInterest &r,
+                                                          const NetCdfCurrentOptions &opt, GriddedData &g)
 {
     if (!l.geographic)
     {
@@ -84,5 +84,5 @@ std::shared_ptr<const LocalProjection> setNodeCoordinates(const GriddedDataset &
     projectNodes(f, l, h, *proj, g);
     return proj;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

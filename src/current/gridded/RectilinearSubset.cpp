@@ -48,10 +48,10 @@ void subsetY(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r
     {
         auto range = indexRange(ys, r.latMin - r.margin, r.latMax + r.margin, r.marginNodes);
         if (!range)
-            throw f.error("region " + std::string(l.geographic ? "latitude" : "y") + " [" +
-                          std::to_string(r.latMin) + ", " + std::to_string(r.latMax) + "] is outside '" + l.yName +
-                          "' [" + std::to_string(*std::min_element(ys.begin(), ys.end())) + ", " +
-                          std::to_string(*std::max_element(ys.begin(), ys.end())) + "]",
+            throw f.error("region " + std::string(l.geographic ? "latitude" : "y") + " [" + std::to_string(r.latMin) +
+                              ", " + std::to_string(r.latMax) + "] is outside '" + l.yName + "' [" +
+                              std::to_string(*std::min_element(ys.begin(), ys.end())) + ", " +
+                              std::to_string(*std::max_element(ys.begin(), ys.end())) + "]",
                           "NetCdfCurrentOptions::region");
         ya = range->first;
         yb = range->second;
@@ -61,7 +61,7 @@ void subsetY(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r
     {
         const std::size_t fi = yDesc ? yb - k : ya + k;
         if (l.geographic && std::abs(ys[fi]) > kMaxGridLatitude)
-            continue;  // a pole row (the grid degenerates there): never loaded, whatever the region's margin
+            continue; // a pole row (the grid degenerates there): never loaded, whatever the region's margin
         h.yIdx.push_back(fi);
         h.lat1D.push_back(ys[fi]);
     }
@@ -123,8 +123,8 @@ void subsetXLinear(const GriddedDataset &f, const Layout &l, const RegionOfInter
     auto range = indexRange(xa, lo, hi, r.marginNodes);
     if (!range)
         throw f.error("region " + std::string(l.geographic ? "longitude" : "x") + " [" + std::to_string(r.lonMin) +
-                      ", " + std::to_string(r.lonMax) + "] is outside '" + l.xName + "' [" +
-                      std::to_string(xa.front()) + ", " + std::to_string(xa.back()) + "]",
+                          ", " + std::to_string(r.lonMax) + "] is outside '" + l.xName + "' [" +
+                          std::to_string(xa.front()) + ", " + std::to_string(xa.back()) + "]",
                       "NetCdfCurrentOptions::region");
     for (std::size_t k = range->first; k <= range->second; ++k)
     {
@@ -140,7 +140,7 @@ void subsetXCyclic(const GriddedDataset &f, const Layout &l, const RegionOfInter
 {
     const std::vector<double> &xa = x.xa;
     const double lo = r.lon0 - r.margin, hi = r.lon1 + r.margin;
-    const double lo0 = xa[0] + std::fmod(std::fmod(lo - xa[0], 360.0) + 360.0, 360.0);  // in [xa0, xa0+360)
+    const double lo0 = xa[0] + std::fmod(std::fmod(lo - xa[0], 360.0) + 360.0, 360.0); // in [xa0, xa0+360)
     const double hiV = lo0 + (hi - lo);
     const long ln = long(xa.size());
     long vs = long(std::floor((lo0 - xa[0]) / x.step)) - r.marginNodes;
@@ -159,10 +159,10 @@ void subsetXCyclic(const GriddedDataset &f, const Layout &l, const RegionOfInter
         if (!(h.lon1D[k] > h.lon1D[k - 1]))
             throw f.error("longitude axis '" + l.xName + "' is not increasing across its seam");
 }
-}  // namespace
+} // namespace
 
-HorizontalSubset rectilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r, const AxisSelection &z,
-                                   const AxisSelection &t)
+HorizontalSubset rectilinearSubset(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r,
+                                   const AxisSelection &z, const AxisSelection &t)
 {
     HorizontalSubset h;
     std::vector<double> xs, ys;
@@ -192,5 +192,5 @@ HorizontalSubset rectilinearSubset(const GriddedDataset &f, const Layout &l, con
     h.centreLat = 0.5 * (h.latLo + h.latHi);
     return h;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

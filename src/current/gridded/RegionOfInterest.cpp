@@ -21,7 +21,7 @@ RegionOfInterest regionOfInterest(const NetCdfCurrentOptions &opt, bool geograph
     r.lonMin = r.lon0 = opt.lonMin;
     r.lonMax = r.lon1 = opt.lonMax;
     if (r.given && geographic && r.lon1 < r.lon0)
-        r.lon1 += 360.0;  // across the antimeridian
+        r.lon1 += 360.0; // across the antimeridian
     if (r.given && !geographic && r.lon1 < r.lon0)
         throw Error("NetCdfCurrentOptions: lonMin (x) > lonMax (x) in Cartesian mode");
     r.latMin = opt.latMin;
@@ -70,5 +70,5 @@ double wrapTo(double lon, double centre)
         d += 360.0;
     return centre + d - 180.0;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -20,8 +20,8 @@ namespace
 enum class SForm
 {
     None,
-    G1,  ///< ocean_s_coordinate_g1 (ROMS Vtransform = 1)
-    G2   ///< ocean_s_coordinate_g2 (ROMS Vtransform = 2)
+    G1, ///< ocean_s_coordinate_g1 (ROMS Vtransform = 1)
+    G2  ///< ocean_s_coordinate_g2 (ROMS Vtransform = 2)
 };
 
 SForm formOf(const GriddedDataset &f, int zv)
@@ -47,8 +47,8 @@ std::map<std::string, std::string> formulaTerms(const GriddedDataset &f, int zv)
 }
 
 /// The variable of a formula term: formula_terms' name, else the ROMS name; nullopt when neither exists.
-std::optional<int> termVar(const GriddedDataset &f, const std::map<std::string, std::string> &terms, const std::string &term,
-                           const char *romsName)
+std::optional<int> termVar(const GriddedDataset &f, const std::map<std::string, std::string> &terms,
+                           const std::string &term, const char *romsName)
 {
     const auto it = terms.find(term);
     if (it != terms.end())
@@ -80,7 +80,7 @@ std::vector<double> depthLevels(double deepest, const std::vector<double> &reque
     }
     return out;
 }
-}  // namespace
+} // namespace
 
 bool isSigmaCoordinate(const GriddedDataset &f, int zv)
 {
@@ -102,14 +102,17 @@ void remapSigmaToDepths(const GriddedDataset &f, const Layout &l, const Horizont
     const auto cVar = termVar(f, terms, "C", "Cs_r"), hVar = termVar(f, terms, "depth", "h");
     const auto hcVar = termVar(f, terms, "depth_c", "hc"), etaVar = termVar(f, terms, "eta", "zeta");
     if (!cVar || !hVar || !hcVar)
-        throw f.error("depth '" + zn + "' (" + stdName(f, zv) + ") needs its stretching curve C (Cs_r), the bathymetry "
+        throw f.error("depth '" + zn + "' (" + stdName(f, zv) +
+                      ") needs its stretching curve C (Cs_r), the bathymetry "
                       "depth (h) and the critical depth depth_c (hc); missing: " +
                       std::string(!cVar ? "C " : "") + (!hVar ? "depth " : "") + (!hcVar ? "depth_c" : ""));
     // s and C per loaded level, hc, h per node, eta per record and node (0 without it)
     const std::vector<double> sAll = f.readAll1D(zv), cAll = f.readAll1D(*cVar), hcAll = f.readAll1D(*hcVar);
     if (cAll.size() != sAll.size() || hcAll.size() != 1 || !std::isfinite(hcAll[0]) || hcAll[0] < 0)
-        throw f.error("s-coordinate '" + zn + "': expected C ('" + f.varName(*cVar) + "') with one value per level and "
-                      "one finite depth_c >= 0 ('" + f.varName(*hcVar) + "')");
+        throw f.error("s-coordinate '" + zn + "': expected C ('" + f.varName(*cVar) +
+                      "') with one value per level and "
+                      "one finite depth_c >= 0 ('" +
+                      f.varName(*hcVar) + "')");
     const double hc = hcAll[0];
     const std::size_t nx = h.xIdx.size(), nh = nx * h.yIdx.size(), nzS = z.idx.size(), nt = t.idx.size();
     const std::vector<int> grid = {l.dims[std::size_t(l.dimY)], l.dims[std::size_t(l.dimX)]};
@@ -122,7 +125,8 @@ void remapSigmaToDepths(const GriddedDataset &f, const Layout &l, const Horizont
     for (double &d : depth)
         d = hp.isFill(d) ? kNaN : d * hp.scale + hp.offset;
     std::vector<double> eta(nt * nh, 0.0);
-    if (etaVar && f.varDims(*etaVar).size() == 3 && l.dimT >= 0 && f.varDims(*etaVar)[0] == l.dims[std::size_t(l.dimT)] &&
+    if (etaVar && f.varDims(*etaVar).size() == 3 && l.dimT >= 0 &&
+        f.varDims(*etaVar)[0] == l.dims[std::size_t(l.dimT)] &&
         std::equal(grid.begin(), grid.end(), f.varDims(*etaVar).begin() + 1))
     {
         readScatter(f, *etaVar, {makeDimRead(t.idx), makeDimRead(h.yIdx), makeDimRead(h.xIdx)}, {nh, nx, 1}, eta);
@@ -150,12 +154,12 @@ void remapSigmaToDepths(const GriddedDataset &f, const Layout &l, const Horizont
                 const double s = sAll[z.idx[k]], c = cAll[z.idx[k]];
                 if (form == SForm::G1)
                 {
-                    const double S = hc * s + (hn - hc) * c;  // [CF] ocean_s_coordinate_g1
+                    const double S = hc * s + (hn - hc) * c; // [CF] ocean_s_coordinate_g1
                     zk[k] = S + e * (1.0 + S / hn);
                 }
                 else
                 {
-                    const double S = (hc * s + hn * c) / (hc + hn);  // [CF] ocean_s_coordinate_g2
+                    const double S = (hc * s + hn * c) / (hc + hn); // [CF] ocean_s_coordinate_g2
                     zk[k] = e + (e + hn) * S;
                 }
             }
@@ -202,5 +206,5 @@ void remapSigmaToDepths(const GriddedDataset &f, const Layout &l, const Horizont
     g.water = std::move(water);
     g.depth = levels;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -13,7 +13,8 @@ namespace gridded_detail
 namespace
 {
 /// The file indices first - 1, first, ..., last of a contiguous ascending list (the faces around its points).
-std::vector<std::size_t> withFaceBefore(const GriddedDataset &f, const std::vector<std::size_t> &idx, const std::string &what)
+std::vector<std::size_t> withFaceBefore(const GriddedDataset &f, const std::vector<std::size_t> &idx,
+                                        const std::string &what)
 {
     for (std::size_t k = 1; k < idx.size(); ++k)
         if (idx[k] != idx[k - 1] + 1)
@@ -37,25 +38,25 @@ std::vector<double> readComponent(const GriddedDataset &f, int var, const Layout
     for (std::size_t d = 0; d < l.dims.size(); ++d)
         switch (l.role[d])
         {
-            case Role::Time:
-                reads[d] = makeDimRead(t.idx);
-                stride[d] = nz * nh;
-                break;
-            case Role::Depth:
-                reads[d] = makeDimRead(z.idx);
-                stride[d] = nh;
-                break;
-            case Role::Y:
-                reads[d] = makeDimRead(yIdx);
-                stride[d] = nx;
-                break;
-            case Role::X:
-                reads[d] = makeDimRead(xIdx);
-                stride[d] = 1;
-                break;
-            case Role::None:
-                reads[d] = makeDimRead({0});
-                break;
+        case Role::Time:
+            reads[d] = makeDimRead(t.idx);
+            stride[d] = nz * nh;
+            break;
+        case Role::Depth:
+            reads[d] = makeDimRead(z.idx);
+            stride[d] = nh;
+            break;
+        case Role::Y:
+            reads[d] = makeDimRead(yIdx);
+            stride[d] = nx;
+            break;
+        case Role::X:
+            reads[d] = makeDimRead(xIdx);
+            stride[d] = 1;
+            break;
+        case Role::None:
+            reads[d] = makeDimRead({0});
+            break;
         }
     std::vector<double> out(t.idx.size() * nz * nh);
     readScatter(f, var, reads, stride, out);
@@ -78,11 +79,11 @@ std::optional<std::vector<double>> faceMask(const GriddedDataset &f, const char 
         x = p.isFill(x) ? 0.0 : x * p.scale + p.offset;
     return m;
 }
-}  // namespace
+} // namespace
 
-void readStaggeredVelocities(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
-                             const AxisSelection &t, const LinearConversion &vel, const NetCdfCurrentOptions &opt,
-                             GriddedData &g, NetCdfCurrents &out)
+void readStaggeredVelocities(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
+                             const AxisSelection &z, const AxisSelection &t, const LinearConversion &vel,
+                             const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
 {
     const std::size_t nx = h.xIdx.size(), ny = h.yIdx.size(), nh = nx * ny;
     const std::size_t layers = t.idx.size() * z.idx.size();
@@ -124,27 +125,30 @@ void readStaggeredVelocities(const GriddedDataset &f, const Layout &l, const Hor
     for (std::size_t it = 0; it < t.idx.size(); ++it)
         tripRecords += t.inTrip(it);
     const bool packed = pu.scale != 1.0 || pu.offset != 0.0 || pv.scale != 1.0 || pv.offset != 0.0;
-    unpackAndMask(au, av, Packing{}, Packing{}, LinearConversion{}, opt.zeroVelocityLand && !(packed && tripRecords < 2),
-                  t, g, out);
+    unpackAndMask(au, av, Packing{}, Packing{}, LinearConversion{},
+                  opt.zeroVelocityLand && !(packed && tripRecords < 2), t, g, out);
 }
 
 namespace
 {
 /// The angle derived from the loaded nodes' coordinates (Layout::deriveAngle), per node; empty when the grid is not
 /// rotated. @throws Error naming the node when the angle is ambiguous.
-std::vector<double> derivedAngle(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, NetCdfCurrents &out)
+std::vector<double> derivedAngle(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
+                                 NetCdfCurrents &out)
 {
     const std::size_t nx = h.xIdx.size(), ny = h.yIdx.size();
     const DerivedGridAngle a = deriveGridAngle(h.nodeLon, h.nodeLat, nx, ny, l.geographic);
     if (!a.fault.empty() && (a.rotated || a.radians.empty()))
     {
         const std::size_t n = a.faultJ * nx + a.faultI;
-        throw f.error("variables '" + l.uName + "'/'" + l.vName + "' have no grid angle variable and do not say they "
+        throw f.error("variables '" + l.uName + "'/'" + l.vName +
+                      "' have no grid angle variable and do not say they "
                       "are eastward/northward (standard_name eastward_*), and the rotated curvilinear grid '" +
                       l.xName + "'/'" + l.yName + "' gives no clear angle: at (j, i) = (" +
-                      std::to_string(h.yIdx[a.faultJ]) + ", " + std::to_string(h.xIdx[a.faultI]) + "), " +
-                      l.xName + " " + text::number(h.nodeLon[n]) + ", " + l.yName + " " + text::number(h.nodeLat[n]) +
-                      ", " + a.fault + "; name the angle variable (NetCdfCurrentOptions::angleName), or give "
+                      std::to_string(h.yIdx[a.faultJ]) + ", " + std::to_string(h.xIdx[a.faultI]) + "), " + l.xName +
+                      " " + text::number(h.nodeLon[n]) + ", " + l.yName + " " + text::number(h.nodeLat[n]) + ", " +
+                      a.fault +
+                      "; name the angle variable (NetCdfCurrentOptions::angleName), or give "
                       "NetCdfCurrentOptions::angleName 'none' if the velocities are eastward/northward");
     }
     if (!a.rotated)
@@ -154,7 +158,8 @@ std::vector<double> derivedAngle(const GriddedDataset &f, const Layout &l, const
 }
 
 /// The angle of the variable Layout::angleVar, per loaded node, in radians.
-std::vector<double> angleOfVariable(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, NetCdfCurrents &out)
+std::vector<double> angleOfVariable(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
+                                    NetCdfCurrents &out)
 {
     const std::size_t nx = h.xIdx.size(), nh = nx * h.yIdx.size();
     std::vector<double> a(nh);
@@ -163,15 +168,17 @@ std::vector<double> angleOfVariable(const GriddedDataset &f, const Layout &l, co
     for (std::size_t n = 0; n < nh; ++n)
     {
         if (p.isFill(a[n]) || !std::isfinite(a[n]))
-            throw f.error("grid angle variable '" + f.varName(l.angleVar) + "' holds a fill value or a non-finite "
-                          "number at (j, i) = (" + std::to_string(h.yIdx[n / nx]) + ", " +
-                          std::to_string(h.xIdx[n % nx]) + "); expected an angle at every velocity point");
+            throw f.error("grid angle variable '" + f.varName(l.angleVar) +
+                          "' holds a fill value or a non-finite "
+                          "number at (j, i) = (" +
+                          std::to_string(h.yIdx[n / nx]) + ", " + std::to_string(h.xIdx[n % nx]) +
+                          "); expected an angle at every velocity point");
         a[n] = (a[n] * p.scale + p.offset) * l.angleToRadians;
     }
     out.gridAngle = "variable '" + f.varName(l.angleVar) + "'";
     return a;
 }
-}  // namespace
+} // namespace
 
 void rotateGridToEastNorth(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, GriddedData &g,
                            NetCdfCurrents &out)
@@ -197,5 +204,5 @@ void rotateGridToEastNorth(const GriddedDataset &f, const Layout &l, const Horiz
         g.v[idx] = static_cast<float>(u * s + v * c);
     }
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -21,7 +21,7 @@ std::size_t firstNotIncreasing(const std::vector<double> &v)
             return k;
     return v.size();
 }
-}  // namespace
+} // namespace
 
 namespace
 {
@@ -38,7 +38,7 @@ std::string undatedMessage(const std::string &tn, const std::string &units)
            "NetCdfCurrentOptions::timeUnits (\"days since 2026-01-15\"), or plan on one record as a steady field "
            "with NetCdfCurrentOptions::steadyRecord";
 }
-}  // namespace
+} // namespace
 
 TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, const std::string &unitsOverride)
 {
@@ -49,7 +49,8 @@ TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, co
     const std::string units = overridden ? trim(unitsOverride) : unitsOf(f, tv);
     if (overridden && !hasSince(units))
         throw f.error("NetCdfCurrentOptions::timeUnits '" + unitsOverride + "' (for time variable '" + tn +
-                      "'): expected '<seconds|minutes|hours|days> since <date>'", "NetCdfCurrentOptions::timeUnits");
+                          "'): expected '<seconds|minutes|hours|days> since <date>'",
+                      "NetCdfCurrentOptions::timeUnits");
     if (!hasSince(units) && !allowUndated)
         throw f.error(undatedMessage(tn, units));
     const std::vector<double> raw = f.readAll1D(tv);
@@ -75,7 +76,8 @@ TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, co
         {
             if (overridden)
                 throw f.error("NetCdfCurrentOptions::timeUnits '" + unitsOverride + "' (for time variable '" + tn +
-                              "'): " + e.what(), "NetCdfCurrentOptions::timeUnits");
+                                  "'): " + e.what(),
+                              "NetCdfCurrentOptions::timeUnits");
             throw f.error("time variable '" + tn + "': " + e.what());
         }
         out.dated = true;
@@ -93,7 +95,8 @@ TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, co
     return out;
 }
 
-std::optional<SteadyRecord> steadyRecordOf(const GriddedDataset &f, int timeDim, int tv, const NetCdfCurrentOptions &opt)
+std::optional<SteadyRecord> steadyRecordOf(const GriddedDataset &f, int timeDim, int tv,
+                                           const NetCdfCurrentOptions &opt)
 {
     if (!opt.steadyRecord)
         return std::nullopt;
@@ -101,8 +104,9 @@ std::optional<SteadyRecord> steadyRecordOf(const GriddedDataset &f, int timeDim,
     const std::string tn = tv >= 0 ? f.varName(tv) : f.dimName(timeDim);
     if (k >= n)
         throw f.error("NetCdfCurrentOptions::steadyRecord " + std::to_string(k) + " is out of range: time variable '" +
-                      tn + "' has " + std::to_string(n) + " record" + (n == 1 ? "" : "s") +
-                      (n > 0 ? " (0 to " + std::to_string(n - 1) + ")" : ""), "NetCdfCurrentOptions::steadyRecord");
+                          tn + "' has " + std::to_string(n) + " record" + (n == 1 ? "" : "s") +
+                          (n > 0 ? " (0 to " + std::to_string(n - 1) + ")" : ""),
+                      "NetCdfCurrentOptions::steadyRecord");
     SteadyRecord r;
     r.index = k;
     // dated by the record's time when the axis (or NetCdfCurrentOptions::timeUnits) has dates; else undated, and
@@ -165,9 +169,10 @@ std::function<Error(const std::string &)> fileErrors(const GriddedDataset &f)
 {
     return [&f](const std::string &what) { return f.error(what); };
 }
-}  // namespace
+} // namespace
 
-AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt, NetCdfCurrents &out)
+AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt,
+                          NetCdfCurrents &out)
 {
     AxisSelection s;
     if (l.dimT < 0)
@@ -207,7 +212,7 @@ AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const NetCdf
         out.steady = true;
         out.forecastBegin = out.forecastEnd = ts.front();
         out.departureTime = departureOf(fileErrors(f), opt, tv.name, ts, out);
-        return s;  // the one record: {0}/{0}
+        return s; // the one record: {0}/{0}
     }
     return selectForecastTimes(ts, tv.name, opt, out, fileErrors(f));
 }
@@ -227,12 +232,12 @@ AxisSelection selectForecastTimes(const std::vector<double> &ts, const std::stri
     const Axis ax(ts, "time '" + name + "'");
     // the last record at or before the departure, the first at or after the end
     const std::size_t n = ts.size();
-    const std::size_t ta = std::min<std::size_t>(
-        n - 1, static_cast<std::size_t>(std::max<std::ptrdiff_t>(
-                   0, std::upper_bound(ts.begin(), ts.end(), dep) - ts.begin() - 1)));
-    const std::size_t tb = std::max(
-        ta, std::min<std::size_t>(n - 1, static_cast<std::size_t>(std::lower_bound(ts.begin(), ts.end(), end) -
-                                                                   ts.begin())));
+    const std::size_t ta =
+        std::min<std::size_t>(n - 1, static_cast<std::size_t>(std::max<std::ptrdiff_t>(
+                                         0, std::upper_bound(ts.begin(), ts.end(), dep) - ts.begin() - 1)));
+    const std::size_t tb =
+        std::max(ta, std::min<std::size_t>(
+                         n - 1, static_cast<std::size_t>(std::lower_bound(ts.begin(), ts.end(), end) - ts.begin())));
     // loaded: the intervals of departure and end, plus 2 records on each side for cubic/Akima stencils
     const std::size_t ia = ax.interval(dep), ib = ax.size() > 1 ? ax.interval(std::min(end, ts.back())) + 1 : 0;
     const std::size_t a = ia >= 2 ? ia - 2 : 0, b = std::min(ts.size() - 1, ib + 2);
@@ -247,7 +252,7 @@ AxisSelection selectForecastTimes(const std::vector<double> &ts, const std::stri
     }
     return s;
 }
-}  // namespace gridded_detail
+} // namespace gridded_detail
 
 NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const NetCdfCurrentOptions &options)
 {
@@ -297,4 +302,4 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const std::string &ti
     options.uName = uName;
     return readNetCdfTimeAxis(path, options);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

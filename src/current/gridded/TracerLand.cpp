@@ -17,8 +17,8 @@ namespace
 const char *const kTracerStandardNames[] = {"sea_water_potential_temperature",    "sea_water_temperature",
                                             "sea_water_conservative_temperature", "sea_water_salinity",
                                             "sea_water_practical_salinity",       "sea_water_absolute_salinity"};
-const char *const kTracerNames[] = {"temp",     "t",        "salt",       "theta",   "thetao",
-                                    "so",       "votemper", "vosaline",   "water_temp", "salinity"};
+const char *const kTracerNames[] = {"temp", "t",        "salt",     "theta",      "thetao",
+                                    "so",   "votemper", "vosaline", "water_temp", "salinity"};
 
 /// The tracer variable: the given one (which must fit), else the first candidate that fits; -1 for none.
 int findTracer(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt, const HorizontalSubset &h,
@@ -121,9 +121,9 @@ double coordinateAt(const GriddedDataset &f, int c, int yDim, std::size_t j, std
 
 enum class Corner
 {
-    Same,       ///< the tracer at the velocity point's own index
-    NorthEast,  ///< velocity point (j, i) at the north-east corner of tracer cell (j, i) (POP, MOM)
-    SouthWest   ///< velocity point (j, i) at the south-west corner of tracer cell (j, i)
+    Same,      ///< the tracer at the velocity point's own index
+    NorthEast, ///< velocity point (j, i) at the north-east corner of tracer cell (j, i) (POP, MOM)
+    SouthWest  ///< velocity point (j, i) at the south-west corner of tracer cell (j, i)
 };
 
 /// Where velocity point (j, i) lies relative to the tracer points, from their coordinates at up to 9 loaded nodes:
@@ -189,7 +189,7 @@ std::size_t neighbour(std::size_t k, int d, std::size_t n, std::size_t p)
         return std::size_t(((q % long(p)) + long(p)) % long(p));
     return k;
 }
-}  // namespace
+} // namespace
 
 bool cornerVelocities(const GriddedDataset &f, const Layout &l)
 {
@@ -238,7 +238,7 @@ void applyTracerLand(const GriddedDataset &f, const Layout &l, const HorizontalS
                   f.varName(uLat) + "')";
         }
     }
-    using Offset = std::pair<int, int>;  // (row, column)
+    using Offset = std::pair<int, int>; // (row, column)
     std::vector<Offset> offsets{{0, 0}};
     if (corner == Corner::NorthEast)
         offsets = {{0, 0}, {0, 1}, {1, 0}, {1, 1}};
@@ -274,12 +274,12 @@ void applyTracerLand(const GriddedDataset &f, const Layout &l, const HorizontalS
         }
     }
     if (valid == 0)
-        return;  // no value in the region: a variable never written, not a map of land
+        return; // no value in the region: a variable never written, not a map of land
     out.tracerVariable = f.varName(var);
     out.tracerPlacement = corner == Corner::Same ? "same points"
-                          : std::string("B grid: velocity points at the ") +
-                                (corner == Corner::NorthEast ? "north-east" : "south-west") +
-                                " corners of the tracer cells" + how;
+                                                 : std::string("B grid: velocity points at the ") +
+                                                       (corner == Corner::NorthEast ? "north-east" : "south-west") +
+                                                       " corners of the tracer cells" + how;
     out.cornerGrid = out.cornerGrid || corner != Corner::Same;
     for (std::size_t k = 0; k < nzLoaded; ++k)
         for (std::size_t n = 0; n < nh; ++n)
@@ -293,5 +293,5 @@ void applyTracerLand(const GriddedDataset &f, const Layout &l, const HorizontalS
         }
     out.landNodes = static_cast<std::size_t>(std::count(g.water.begin(), g.water.end(), 0));
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

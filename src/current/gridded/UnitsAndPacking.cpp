@@ -1,5 +1,5 @@
-// Units (velocities to m/s, Cartesian axes to metres, both with UDUNITS-2: UnitConversion.h) and packing (scale_factor / add_offset, fill values and
-// valid ranges compared on the packed value).
+// Units (velocities to m/s, Cartesian axes to metres, both with UDUNITS-2: UnitConversion.h) and packing (scale_factor
+// / add_offset, fill values and valid ranges compared on the packed value).
 #include <cctype>
 #include <cmath>
 
@@ -18,10 +18,11 @@ LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, 
     const std::string vu = given ? opt.velocityUnits : unitsOf(f, l.vVar);
     const auto noUnits = [](const std::string &u) { return trim(u).empty() || trim(u) == "1"; };
     if (!l.geographic && noUnits(uu) && noUnits(vu))
-        return {};  // dimensionless velocities of a Cartesian file (the analytic flows sampled to a grid)
+        return {}; // dimensionless velocities of a Cartesian file (the analytic flows sampled to a grid)
     const auto conversion = [&](const std::string &units, const std::string &var) {
         if (!given && trim(units).empty())
-            throw f.error("variable '" + var + "' has no units attribute; expected a velocity (m/s, cm/s, knots): "
+            throw f.error("variable '" + var +
+                          "' has no units attribute; expected a velocity (m/s, cm/s, knots): "
                           "give the units with NetCdfCurrentOptions::velocityUnits");
         try
         {
@@ -43,12 +44,12 @@ LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, 
     return cu;
 }
 
-void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &t,
-                             const NetCdfCurrentOptions &opt, const GriddedData &g)
+void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
+                             const AxisSelection &t, const NetCdfCurrentOptions &opt, const GriddedData &g)
 {
     const auto noUnits = [](const std::string &u) { return trim(u).empty() || trim(u) == "1"; };
-    const bool physical = !opt.velocityUnits.empty() || l.geographic || !noUnits(unitsOf(f, l.uVar)) ||
-                          !noUnits(unitsOf(f, l.vVar));
+    const bool physical =
+        !opt.velocityUnits.empty() || l.geographic || !noUnits(unitsOf(f, l.uVar)) || !noUnits(unitsOf(f, l.vVar));
     const double limit = physical ? 300.0 : 1e6;
     const std::size_t nh = g.nx * g.ny, perTime = g.water.size();
     if (nh == 0 || perTime == 0)
@@ -74,8 +75,9 @@ void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const Hor
             record = ", record " + std::to_string(t.idx[it]) + " of '" + f.dimName(l.dims[std::size_t(l.dimT)]) + "'";
         throw f.error("variable '" + name + "' holds " + text::number(value, 7) + (physical ? " m/s" : "") +
                       " at (j, i) = (" + std::to_string(j < h.yIdx.size() ? h.yIdx[j] : j) + ", " +
-                      std::to_string(i < h.xIdx.size() ? h.xIdx[i] : i) + ")" + at + record + ": faster than any current or wind (more than " +
-                      text::number(limit) + (physical ? " m/s" : "") + "), and not a fill value (_FillValue, " +
+                      std::to_string(i < h.xIdx.size() ? h.xIdx[i] : i) + ")" + at + record +
+                      ": faster than any current or wind (more than " + text::number(limit) + (physical ? " m/s" : "") +
+                      "), and not a fill value (_FillValue, " +
                       "missing_value, valid_range): a fill value not declared, or wrong units or scale_factor?");
     }
 }
@@ -85,7 +87,8 @@ LinearConversion axisConversion(const GriddedDataset &f, int var)
     const std::string units = trim(unitsOf(f, var));
     // No units, UDUNITS-2's dimensionless ones ("1", "count", angles such as degrees_east, read as x/y in
     // CoordinateMode::Cartesian), and a few words UDUNITS-2 does not know that say the same: the values as they are.
-    if (units.empty() || inList(lower(units), {"none", "nondimensional", "dimensionless", "-", "index", "grid_index"}) ||
+    if (units.empty() ||
+        inList(lower(units), {"none", "nondimensional", "dimensionless", "-", "index", "grid_index"}) ||
         isDimensionless(units))
         return {};
     try
@@ -116,19 +119,19 @@ std::optional<double> defaultFill(ValueType type)
 {
     switch (type)
     {
-        case ValueType::Short:
-            return NC_FILL_SHORT;
-        case ValueType::Int:
-            return NC_FILL_INT;
-        case ValueType::Float:
-            return static_cast<double>(NC_FILL_FLOAT);
-        case ValueType::Double:
-            return NC_FILL_DOUBLE;
-        default:
-            return std::nullopt;
+    case ValueType::Short:
+        return NC_FILL_SHORT;
+    case ValueType::Int:
+        return NC_FILL_INT;
+    case ValueType::Float:
+        return static_cast<double>(NC_FILL_FLOAT);
+    case ValueType::Double:
+        return NC_FILL_DOUBLE;
+    default:
+        return std::nullopt;
     }
 }
-}  // namespace
+} // namespace
 
 Packing packingOf(const GriddedDataset &f, int var)
 {
@@ -170,5 +173,5 @@ void unpackCoordinates(const GriddedDataset &f, int var, std::vector<double> &va
     for (double &v : values)
         v = v * p.scale + p.offset;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -24,7 +24,7 @@ std::string axisOf(const GriddedDataset &f, int var)
 {
     return lower(f.attText(var, "axis").value_or(""));
 }
-}  // namespace
+} // namespace
 
 bool isLonVar(const GriddedDataset &f, int var)
 {
@@ -86,7 +86,7 @@ std::string candidateList(const GriddedDataset &f)
     }
     return out.empty() ? "none (no variable has 2 or more dimensions)" : out;
 }
-}  // namespace
+} // namespace
 
 /// A NetCDF-4 file whose variables lie in groups: only the root group is read, so a velocity not found there is
 /// refused naming the groups (not as a missing variable). "" without groups.
@@ -118,26 +118,32 @@ int findVelocity(const GriddedDataset &f, const std::string &given, bool east, c
         return *v;
     }
     const std::vector<std::string> stdNames =
-        east ? std::vector<std::string>{"eastward_sea_water_velocity", "surface_eastward_sea_water_velocity",
+        east ? std::vector<std::string>{"eastward_sea_water_velocity",
+                                        "surface_eastward_sea_water_velocity",
                                         "eastward_sea_water_velocity_assuming_no_tide",
                                         "baroclinic_eastward_sea_water_velocity",
                                         "barotropic_eastward_sea_water_velocity",
-                                        "surface_geostrophic_eastward_sea_water_velocity", "eastward_current",
-                                        "sea_water_x_velocity", "eastward_wind"}
-             : std::vector<std::string>{"northward_sea_water_velocity", "surface_northward_sea_water_velocity",
+                                        "surface_geostrophic_eastward_sea_water_velocity",
+                                        "eastward_current",
+                                        "sea_water_x_velocity",
+                                        "eastward_wind"}
+             : std::vector<std::string>{"northward_sea_water_velocity",
+                                        "surface_northward_sea_water_velocity",
                                         "northward_sea_water_velocity_assuming_no_tide",
                                         "baroclinic_northward_sea_water_velocity",
                                         "barotropic_northward_sea_water_velocity",
-                                        "surface_geostrophic_northward_sea_water_velocity", "northward_current",
-                                        "sea_water_y_velocity", "northward_wind"};
+                                        "surface_geostrophic_northward_sea_water_velocity",
+                                        "northward_current",
+                                        "sea_water_y_velocity",
+                                        "northward_wind"};
     // Usual names of files without CF standard names, matched without regard to case (UVEL, UWND, U10): Copernicus
     // and NEMO (uo, vozocrtx), HYCOM (water_u), POP (uvel; urot rotated to east/north), ROMS post-processed
     // (u_eastward), winds of reanalyses and weather models (uwnd, u10) for vehicles in wind.
     const std::vector<std::string> names =
-        east ? std::vector<std::string>{"uo", "u", "water_u", "uvel", "urot", "u_eastward", "vozocrtx", "ucur",
-                                        "u_current", "uwnd", "u10"}
-             : std::vector<std::string>{"vo", "v", "water_v", "vvel", "vrot", "v_northward", "vomecrty", "vcur",
-                                        "v_current", "vwnd", "v10"};
+        east ? std::vector<std::string>{"uo",       "u",    "water_u",   "uvel", "urot", "u_eastward",
+                                        "vozocrtx", "ucur", "u_current", "uwnd", "u10"}
+             : std::vector<std::string>{"vo",       "v",    "water_v",   "vvel", "vrot", "v_northward",
+                                        "vomecrty", "vcur", "v_current", "vwnd", "v10"};
     const int nv = f.nvars();
     for (const std::string &sn : stdNames)
         for (int var = 0; var < nv; ++var)
@@ -145,7 +151,7 @@ int findVelocity(const GriddedDataset &f, const std::string &given, bool east, c
                 return var;
     for (const std::string &n : names)
     {
-        if (auto v = f.findVar(n))  // as listed first (a file may hold both u and U)
+        if (auto v = f.findVar(n)) // as listed first (a file may hold both u and U)
             return *v;
         for (int var = 0; var < nv; ++var)
             if (lower(f.varName(var)) == n)
@@ -153,9 +159,11 @@ int findVelocity(const GriddedDataset &f, const std::string &given, bool east, c
     }
     if (!groups.empty())
         throw f.error(groups);
-    if (const std::string broken = f.unreadable(); !broken.empty())  // the velocity may be the array that is broken
-        throw f.error(std::string("no ") + (east ? "eastward (u)" : "northward (v)") + " velocity among the arrays "
-                      "that can be read, and " + broken + "; candidates: " + candidateList(f));
+    if (const std::string broken = f.unreadable(); !broken.empty()) // the velocity may be the array that is broken
+        throw f.error(std::string("no ") + (east ? "eastward (u)" : "northward (v)") +
+                      " velocity among the arrays "
+                      "that can be read, and " +
+                      broken + "; candidates: " + candidateList(f));
     throw f.error(std::string("no ") + (east ? "eastward (u)" : "northward (v)") +
                   " velocity found: no variable with standard_name one of {" + joinNames(stdNames) +
                   "} or named one of {" + joinNames(names) + "} (in any case); candidates: " + candidateList(f) +
@@ -183,7 +191,7 @@ void assignGiven(const GriddedDataset &f, const std::string &name, Role r, const
         throw f.error("no coordinate variable '" + name + "' (given in NetCdfCurrentOptions)");
     const std::vector<int> vd = f.varDims(*v);
     if (vd.size() != 1)
-        return;  // 2-D coordinates are handled with the curvilinear grid
+        return; // 2-D coordinates are handled with the curvilinear grid
     for (std::size_t d = 0; d < dr.dims.size(); ++d)
         if (dr.dims[d] == vd[0])
         {
@@ -248,7 +256,7 @@ void markNamedAxes(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Dim
         (deg && opt.coordinates != CoordinateMode::Cartesian ? dr.geoAxes : dr.cartAxes) = true;
     }
 }
-}  // namespace
+} // namespace
 
 DimensionRoles classifyDimensions(const GriddedDataset &f, const NetCdfCurrentOptions &opt, int uVar)
 {
@@ -265,9 +273,10 @@ DimensionRoles classifyDimensions(const GriddedDataset &f, const NetCdfCurrentOp
     markNamedAxes(f, opt, dr);
     for (Role r : {Role::Time, Role::Depth, Role::X, Role::Y})
         if (std::count(dr.role.begin(), dr.role.end(), r) > 1)
-            throw f.error("variable '" + uName + "' has two dimensions of the same kind; name the coordinates "
+            throw f.error("variable '" + uName +
+                          "' has two dimensions of the same kind; name the coordinates "
                           "with NetCdfCurrentOptions::timeName/depthName/lonName/latName");
     return dr;
 }
-}  // namespace gridded_detail
-}  // namespace ompl_glider
+} // namespace gridded_detail
+} // namespace ompl_glider

@@ -73,4 +73,4 @@ MeasureSpread overOracle(const ExecutionResult &r, std::size_t k)
     }
     return measureSpread(ratios);
 }
-}  // namespace ompl_glider::execution_detail
+} // namespace ompl_glider::execution_detail

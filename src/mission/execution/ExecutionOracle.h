@@ -27,5 +27,5 @@ ExecutionRun oraclePlan(const MissionProblem &onTruth, const ExecutionRun &run, 
 /// (arrival - departure) / (oracle's arrival - departure) of strategy @p k over the runs of @p r that it and the
 /// oracle reached (finite arrivals after the departure): their spread; empty without an oracle.
 MeasureSpread overOracle(const ExecutionResult &r, std::size_t k);
-}  // namespace execution_detail
-}  // namespace ompl_glider
+} // namespace execution_detail
+} // namespace ompl_glider

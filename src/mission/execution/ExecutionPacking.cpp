@@ -53,7 +53,7 @@ void getHeadings(ByteReader &r, HeadingRoute &h)
     });
 }
 
-}  // namespace
+} // namespace
 
 std::string execution_detail::packRun(const ExecutionRun &run)
 {
@@ -129,4 +129,4 @@ void execution_detail::unpackRun(const std::string &bytes, ExecutionRun &run)
     r.get(run.oracleArrival);
     r.get(run.oracleSeconds);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

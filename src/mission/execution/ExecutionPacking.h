@@ -15,5 +15,5 @@ namespace execution_detail
 std::string packRun(const ExecutionRun &run);
 /// The run packRun() wrote, into @p run.
 void unpackRun(const std::string &bytes, ExecutionRun &run);
-}  // namespace execution_detail
-}  // namespace ompl_glider
+} // namespace execution_detail
+} // namespace ompl_glider

@@ -68,7 +68,6 @@ void checkTruthSpace(const MissionProblem &problem, const PlannedPath &plan, Exe
                           place(box.xMax, box.yMax) + "): a flight that leaves it stops there (not land)");
 }
 
-
 /// The truth against the forecast over the planning box and the time window of the runs (ExecutionResult's
 /// rmsDifference, maxPointRmsDifference and their window).
 void modelDifference(const MissionProblem &problem, const PlannedPath &plan, ExecutionResult &r)
@@ -86,7 +85,7 @@ void modelDifference(const MissionProblem &problem, const PlannedPath &plan, Exe
     {
         const CurrentField &f = *problem.getField(), &tr = *problem.getTruth();
         const double tEnd = std::max(r.differenceBegin, std::min({r.differenceEnd, f.timeEnd(), tr.timeEnd()}));
-        r.differenceEnd = tEnd;  // within both fields
+        r.differenceEnd = tEnd; // within both fields
         double sum = 0.0;
         std::size_t count = 0;
         for (int j = 0; j < 40; ++j)
@@ -105,4 +104,4 @@ void modelDifference(const MissionProblem &problem, const PlannedPath &plan, Exe
     }
 }
 
-}  // namespace ompl_glider::execution_truth
+} // namespace ompl_glider::execution_truth

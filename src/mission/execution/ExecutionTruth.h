@@ -15,4 +15,4 @@ void checkTruthSpace(const MissionProblem &problem, const PlannedPath &plan, Exe
 /// The truth against the forecast over the planning box and the time window of the runs (ExecutionResult's
 /// rmsDifference, maxPointRmsDifference and their window).
 void modelDifference(const MissionProblem &problem, const PlannedPath &plan, ExecutionResult &r);
-}  // namespace ompl_glider::execution_truth
+} // namespace ompl_glider::execution_truth

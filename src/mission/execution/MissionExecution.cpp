@@ -63,20 +63,19 @@ bool freeAt(const MissionProblem &problem, Point2 p, double t)
 /// arrival (a fix a little off the plan in a strong current may not reach the next waypoint, but a later one or
 /// the goal). Empty when no choice is passable (land, forbidden, beyond the forecast).
 std::vector<TimedPoint> continuation(const MissionProblem &problem, double x, double y, double t,
-                                        const std::vector<TimedPoint> &plan)
+                                     const std::vector<TimedPoint> &plan)
 {
     std::size_t first = 0;
     while (first < plan.size() && plan[first].t <= t)
         ++first;
     if (first == plan.size())
-        first = plan.size() - 1;  // late: the goal is the only waypoint left
+        first = plan.size() - 1; // late: the goal is the only waypoint left
     std::vector<TimedPoint> best;
     for (std::size_t k = first; k < plan.size(); ++k)
     {
         std::vector<TimedPoint> via{{x, y, t}};
         via.insert(via.end(), plan.begin() + static_cast<std::ptrdiff_t>(k), plan.end());
-        std::vector<TimedPoint> rest =
-            retimePath(problem, problem.getField(), problem.getSpec().vehicle.speed, via);
+        std::vector<TimedPoint> rest = retimePath(problem, problem.getField(), problem.getSpec().vehicle.speed, via);
         if (!rest.empty() && (best.empty() || rest.back().t < best.back().t))
             best = std::move(rest);
     }
@@ -97,11 +96,11 @@ Replanner replanner(const MissionProblem &problem, Point2 goal, double margin)
         std::vector<TimedPoint> rest = continuation(problem, x, y, t, current);
         const Region &box = problem.getBox();
         if (x < box.xMin || x > box.xMax || y < box.yMin || y > box.yMax)
-            return rest;  // drifted out of the planning box: no new plan
+            return rest; // drifted out of the planning box: no new plan
         PlanOptions o;
         o.refinement = false;
-        o.globalCheck = false;  // a replan at every surfacing: the lattice alone, judged against the plan being flown
-        o.headingFallback = false;  // nor the heading planners where it finds none (the level set can take minutes)
+        o.globalCheck = false; // a replan at every surfacing: the lattice alone, judged against the plan being flown
+        o.headingFallback = false; // nor the heading planners where it finds none (the level set can take minutes)
         try
         {
             const PlannedPath p = planRoute(problem.withEndpoints({x, y}, goal), t, o);
@@ -206,8 +205,8 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
     out.track.push_back(run.plan.front());
     std::vector<DacObservation> measured;
     TimedPoint at = run.plan.front();
-    std::size_t first = 0;  // the leg's first point in the plan
-    const DacLearning learning = flightLearning(problem);  // one for the whole flight: the DAC of every leg
+    std::size_t first = 0;                                // the leg's first point in the plan
+    const DacLearning learning = flightLearning(problem); // one for the whole flight: the DAC of every leg
     for (std::size_t k = 0; k < run.legs.size(); ++k)
     {
         const bool last = k + 1 == run.legs.size();
@@ -224,7 +223,7 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
         o.headings = leg.headings && at.x == leg.headings->start.x && at.y == leg.headings->start.y &&
                              at.t == leg.headings->departure
                          ? &*leg.headings
-                         : nullptr;  // held headings from where they were planned to begin
+                         : nullptr; // held headings from where they were planned to begin
         o.measuredBefore = measured;
         o.learn = learning;
         if (s == ControlStrategy::Replan)
@@ -232,11 +231,10 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
         if (s == ControlStrategy::ReplanObserved)
             o.replanObserved = observedReplanner(problem, to, settings.surfacingInterval);
         // planned_headings on a leg of straight legs (or one begun elsewhere) steers as current_sensitive does
-        const ControlStrategy flown = s == ControlStrategy::PlannedHeadings && !o.headings
-                                          ? ControlStrategy::CurrentSensitive
-                                          : s;
-        const FlownTrack f = flyPlan(legPlan, speed, *problem.getField(), *problem.getTruth(),
-                                     problem.getEnvironment().get(), flown, o);
+        const ControlStrategy flown =
+            s == ControlStrategy::PlannedHeadings && !o.headings ? ControlStrategy::CurrentSensitive : s;
+        const FlownTrack f =
+            flyPlan(legPlan, speed, *problem.getField(), *problem.getTruth(), problem.getEnvironment().get(), flown, o);
         out.fixes.insert(out.fixes.end(), f.fixes.begin() + 1, f.fixes.end());
         out.track.insert(out.track.end(), f.track.begin() + 1, f.track.end());
         out.headings.insert(out.headings.end(), f.headings.begin(), f.headings.end());
@@ -272,9 +270,8 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
     const TimedPoint then = planAt(out.track, out.plannedArrival);
     out.finalDistance = std::hypot(then.x - run.goal.x, then.y - run.goal.y);
     const double flownFor = endPoint.t - run.plan.front().t;
-    out.madeGoodSpeed = flownFor > 0.0 ? std::hypot(endPoint.x - run.plan.front().x, endPoint.y - run.plan.front().y) /
-                                             flownFor
-                                       : 0.0;
+    out.madeGoodSpeed =
+        flownFor > 0.0 ? std::hypot(endPoint.x - run.plan.front().x, endPoint.y - run.plan.front().y) / flownFor : 0.0;
     return out;
 }
 
@@ -296,17 +293,17 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
     }
     ExecutionOptions o = flightOptions(problem, settings, run.radius);
     o.endTime = std::min(run.plan.front().t + (std::isnan(e.duration) ? 2.0 * planned : e.duration),
-                         problem.getTruth()->timeEnd());  // never beyond the truth (checkTruthTimes())
+                         problem.getTruth()->timeEnd()); // never beyond the truth (checkTruthTimes())
     o.headings = run.headings ? &*run.headings : nullptr;
     for (ControlStrategy s : settings.strategies)
     {
-        o.learn = flightLearning(problem);  // each flight learns from its own DAC
+        o.learn = flightLearning(problem); // each flight learns from its own DAC
         if (s == ControlStrategy::Replan)
             o.replan = replanner(onMean, run.goal, settings.surfacingInterval);
         if (s == ControlStrategy::ReplanObserved)
             o.replanObserved = observedReplanner(problem, run.goal, settings.surfacingInterval);
-        run.flown.push_back(flyPlan(run.plan, speed, *problem.getField(), *problem.getTruth(),
-                                    problem.getEnvironment().get(), s, o));
+        run.flown.push_back(
+            flyPlan(run.plan, speed, *problem.getField(), *problem.getTruth(), problem.getEnvironment().get(), s, o));
     }
 }
 /// The oracle of @p run (ExecutionRun::oracleArrival): its pair planned on the truth as the run was on the forecast,
@@ -388,12 +385,12 @@ std::vector<StrategySpread> strategySpreads(const ExecutionResult &r)
         s.finalDistance = measureSpread(dist);
         s.arrivalDelay = measureSpread(delay);
         s.madeGoodSpeed = measureSpread(speed);
-        s.overOracle = execution_detail::overOracle(r, k);  // empty without an oracle
+        s.overOracle = execution_detail::overOracle(r, k); // empty without an oracle
         out.push_back(s);
     }
     return out;
 }
-}  // namespace
+} // namespace
 
 double rmsDifference(const CurrentField &a, const CurrentField &b, double x, double y, double z, double t0, double t1,
                      int samples)
@@ -458,8 +455,10 @@ std::vector<std::pair<Point2, Point2>> executionPairs(const MissionProblem &prob
         }
         if (!found)
             throw Error(problem.getSpec().place("execution.batch") + ": no start/goal pair " +
-                        text::number(minDistance) + " or more apart with both ends in water found in 1000 tries "
-                        "(pair " + std::to_string(k + 1) + "): lower execution.batch.min_distance");
+                        text::number(minDistance) +
+                        " or more apart with both ends in water found in 1000 tries "
+                        "(pair " +
+                        std::to_string(k + 1) + "): lower execution.batch.min_distance");
     }
     return pairs;
 }
@@ -524,7 +523,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         const double d = std::hypot(run.goal.x - run.start.x, run.goal.y - run.start.y);
         run.radius = std::isnan(e.radius) ? 0.01 * d : e.radius;
     }
-    r.stops = executionStops(problem, r.runs[0].radius);  // a mission of several legs: the stations of every run
+    r.stops = executionStops(problem, r.runs[0].radius); // a mission of several legs: the stations of every run
     if (plan.solved)
     {
         r.runs[0].planned = true;
@@ -534,11 +533,11 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     }
     else
         r.runs[0].reason = plan.reason;
-    r.oracle = e.truth.has_value();  // where the truth is the forecast there is nothing to measure against
+    r.oracle = e.truth.has_value(); // where the truth is the forecast there is nothing to measure against
     const ExecutionResult oracle = oracleSettings(r);
 
     const auto planAndFly = [&](ExecutionRun &run) {
-        if (run.index > 0)  // a pair of the batch, planned as the mission is (through its stations, in its order)
+        if (run.index > 0) // a pair of the batch, planned as the mission is (through its stations, in its order)
             execution_detail::planPair(onMean, run, !r.stops.empty());
         if (run.planned)
             flyRun(problem, r, run);
@@ -566,8 +565,8 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
             });
         for (std::size_t i = 0; i < out.size(); ++i)
             execution_detail::unpackRun(out[i], r.runs[i]);
-        r.threads = static_cast<unsigned>(std::min<std::size_t>(static_cast<std::size_t>(spread->size()),
-                                                                r.runs.size()));
+        r.threads =
+            static_cast<unsigned>(std::min<std::size_t>(static_cast<std::size_t>(spread->size()), r.runs.size()));
     }
     else
     {
@@ -588,8 +587,9 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     for (const ExecutionRun &run : r.runs)
         r.oracleSeconds += run.oracleSeconds;
     r.spread = strategySpreads(r);
-    execution_truth::modelDifference(problem, plan, r);  // the truth against the forecast over the box and the runs' time window
+    execution_truth::modelDifference(problem, plan,
+                                     r); // the truth against the forecast over the box and the runs' time window
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -30,14 +30,14 @@ void checkFiniteField(const CurrentField &f, const Region &box, double t0, const
             {
                 const double x = box.xMin + (box.xMax - box.xMin) * (i / 8.0);
                 const double y = box.yMin + (box.yMax - box.yMin) * (j / 8.0);
-                const Velocity v = f.velocity(x, y, 0.0, t);  // CMC are counted as differences: no effect
+                const Velocity v = f.velocity(x, y, 0.0, t); // CMC are counted as differences: no effect
                 if (!std::isfinite(v.u) || !std::isfinite(v.v))
                     throw Error(at + "the current is not a finite number at (" + text::number(x, 6) + ", " +
                                 text::number(y, 6) + ") at t = " + text::number(t, 6) +
                                 ": its parameters overflow the field's formulas");
             }
 }
-}  // namespace
+} // namespace
 
 void MissionProblem::checkAnalyticFields() const
 {
@@ -51,8 +51,8 @@ void MissionProblem::checkAnalyticFields() const
         const CurrentFieldKind *kind = findCurrentFieldKind(c.type);
         if (!f || !kind || kind->gridded())
             return;
-        const std::string at = c.mark.namesItself() ? c.mark.file + ": "
-                                                                 : sourcePlace(m, c.mark) + "field '" + field + "': ";
+        const std::string at =
+            c.mark.namesItself() ? c.mark.file + ": " : sourcePlace(m, c.mark) + "field '" + field + "': ";
         checkFiniteField(*f, box_, m.departure.time, at);
     };
     if (members_.empty())
@@ -71,12 +71,14 @@ void MissionProblem::checkDepthAxis(const LoadedForecast &nc) const
         return;
     // the glider's depth asked for currents that the file does not hold: never planned at the surface in silence
     const auto it = m.marks.find("vehicle.depth");
-    const std::string at = it == m.marks.end() ? m.place("vehicle.depth") + ": "
+    const std::string at = it == m.marks.end()    ? m.place("vehicle.depth") + ": "
                            : it->second.line == 0 ? it->second.file + ": "
                                                   : sourcePlace(m, it->second) + "field 'vehicle.depth': ";
-    throw Error(at + "the glider's depth of " + text::number(m.vehicle.depth) + " m: the forecast's '" +
-                nc.uVariable + "' has no depth dimension, so its currents are of one level (the surface's, or a "
-                "depth average), not of " + text::number(m.vehicle.depth) + " m; plan at depth 0 on it, or on a "
+    throw Error(at + "the glider's depth of " + text::number(m.vehicle.depth) + " m: the forecast's '" + nc.uVariable +
+                "' has no depth dimension, so its currents are of one level (the surface's, or a "
+                "depth average), not of " +
+                text::number(m.vehicle.depth) +
+                " m; plan at depth 0 on it, or on a "
                 "forecast with depth levels");
 }
 
@@ -107,9 +109,12 @@ void MissionProblem::checkCommonTime() const
             spans += (i ? ", " : "") + std::string("[") + std::to_string(i) + "] " + name + " from " +
                      when(members_[i]->timeBegin()) + " to " + when(members_[i]->timeEnd());
         }
-        throw Error(sourcePlace(spec_, spec_.current.mark) + "field 'current.ensemble': the members hold currents at "
-                    "no common time (" + spans + "); an ensemble is planned where all of them do: give members that "
+        throw Error(sourcePlace(spec_, spec_.current.mark) +
+                    "field 'current.ensemble': the members hold currents at "
+                    "no common time (" +
+                    spans +
+                    "); an ensemble is planned where all of them do: give members that "
                     "cover the trip's days");
     }
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -21,12 +21,12 @@ CorrectionParams MissionProblem::correctionParams() const
 {
     const MissionSpec &m = spec_;
     const ObservationsSpec s = m.observations.value_or(ObservationsSpec{});
-    const CorrectionParams forecast;  // a forecast's defaults (metres, seconds), stated once in CorrectedField.h
+    const CorrectionParams forecast; // a forecast's defaults (metres, seconds), stated once in CorrectedField.h
     CorrectionParams p;
     const double side = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
-    p.lengthScale = std::isfinite(s.lengthScale)  ? s.lengthScale
-                    : m.current.isForecast()      ? forecast.lengthScale
-                                                  : 0.1 * side;
+    p.lengthScale = std::isfinite(s.lengthScale) ? s.lengthScale
+                    : m.current.isForecast()     ? forecast.lengthScale
+                                                 : 0.1 * side;
     const double span = field_->timeEnd() - field_->timeBegin();
     p.timeScale = std::isfinite(s.timeScale) ? s.timeScale
                   : m.hasTimeUnit()          ? forecast.timeScale / (m.current.isForecast() ? 1.0 : m.timeUnitSeconds)
@@ -104,9 +104,8 @@ double metresBetween(LonLat a, LonLat b)
 bool givenByCaller(const MissionSpec &m, const std::string &field)
 {
     const auto it = m.marks.find(field);
-    return it != m.marks.end() &&
-           (it->second.origin == Origin::Flag || it->second.origin == Origin::Keyword ||
-            it->second.origin == Origin::Program);
+    return it != m.marks.end() && (it->second.origin == Origin::Flag || it->second.origin == Origin::Keyword ||
+                                   it->second.origin == Origin::Program);
 }
 
 /// A field time as a pilot reads it: its date where the mission has dates.
@@ -138,7 +137,7 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
     if (!m.observations || !m.observations->hasFiles() || m.observations->resumed || !m.fleet.empty())
         return std::nullopt;
     if (givenByCaller(m, "start"))
-        return std::nullopt;  // the caller says where the glider is: the observations only correct the forecast
+        return std::nullopt; // the caller says where the glider is: the observations only correct the forecast
     GliderObservations o = readGliderObservations(m.observations->path);
     if (!o.lastFix)
         throw Error("the observations '" + m.observations->path + "' report no position to start from");
@@ -158,11 +157,11 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
     const double fixTime = fieldTime(o.lastFix->time, "the last fix's time");
     const auto mark = m.marks.find("start");
     const bool startIsTheFix = m.start.geographic && m.start.lonLat.lon == o.lastFix->at.lon &&
-                               m.start.lonLat.lat == o.lastFix->at.lat;  // the loader's first guess
+                               m.start.lonLat.lat == o.lastFix->at.lat; // the loader's first guess
     if ((mark == m.marks.end() || mark->second.origin != Origin::Observations) && !startIsTheFix)
-        r.replacedStart = m.start.geographic ? text::number(m.start.lonLat.lon, 8) + ", " +
-                                                   text::number(m.start.lonLat.lat, 8)
-                                             : text::number(m.start.xy.x, 8) + ", " + text::number(m.start.xy.y, 8);
+        r.replacedStart = m.start.geographic
+                              ? text::number(m.start.lonLat.lon, 8) + ", " + text::number(m.start.lonLat.lat, 8)
+                              : text::number(m.start.xy.x, 8) + ", " + text::number(m.start.xy.y, 8);
     // the mission's own departure (the deployment's): the fixes since then are this mission's
     const double deployed = m.departure.window ? m.departure.begin : m.departure.time;
     // stations reached, in the order listed (any order when the order is free)
@@ -239,8 +238,8 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
             r.replacedDeparture = whenText(m, m.departure.window ? m.departure.begin : m.departure.time);
         m.departure.time = departure;
         m.departure.window = false;
-        m.marks["departure.time"] = SourceMark{m.observations->mark.file, m.observations->mark.line,
-                                               Origin::Observations};
+        m.marks["departure.time"] =
+            SourceMark{m.observations->mark.file, m.observations->mark.line, Origin::Observations};
     }
     m.start.geographic = true;
     m.start.lonLat = o.lastFix->at;
@@ -255,8 +254,8 @@ std::string resumeNote(const MissionSpec &m)
     if (!m.observations || !m.observations->resumed)
         return "";
     const MissionResume &r = *m.observations->resumed;
-    std::string s = "from the last fix " + text::number(r.fix.lon, 8) + ", " + text::number(r.fix.lat, 8) + " at " +
-                    r.fixIso;
+    std::string s =
+        "from the last fix " + text::number(r.fix.lon, 8) + ", " + text::number(r.fix.lat, 8) + " at " + r.fixIso;
     if (!r.replacedStart.empty())
         s += " (replacing the mission's start " + r.replacedStart + ", the deployment's" +
              (r.replacedDeparture.empty() ? std::string() : ", and its departure " + r.replacedDeparture) + ")";
@@ -402,12 +401,14 @@ std::string correctionNote(const MissionProblem &problem)
     const CorrectionSummary &c = r->correction;
     const bool km = m.physicalUnits().length, time = m.hasTimeUnit();
     const double seconds = !time ? 0.0 : m.current.isForecast() ? 1.0 : m.timeUnitSeconds;
-    const double ms = km && seconds > 0.0 ? m.metresPerUnit() / seconds : 0.0;  // metres per second per field unit
+    const double ms = km && seconds > 0.0 ? m.metresPerUnit() / seconds : 0.0; // metres per second per field unit
     const auto speed = [&](double v) { return ms > 0.0 ? text::number(v * ms, 3) + " m/s" : text::number(v, 3); };
-    std::string out = "L " + (km ? text::number(c.params.lengthScale * m.metresPerUnit() / 1000.0, 4) + " km"
-                                 : text::number(c.params.lengthScale, 4)) +
-                      " (" + c.lengthSource + "), T " + planning_detail::durationText(problem, c.params.timeScale) + " (" +
-                      c.timeSource + "), ratio " + text::number(c.params.errorRatio, 3) + " (" + c.ratioSource + ")";
+    std::string out = "L " +
+                      (km ? text::number(c.params.lengthScale * m.metresPerUnit() / 1000.0, 4) + " km"
+                          : text::number(c.params.lengthScale, 4)) +
+                      " (" + c.lengthSource + "), T " + planning_detail::durationText(problem, c.params.timeScale) +
+                      " (" + c.timeSource + "), ratio " + text::number(c.params.errorRatio, 3) + " (" + c.ratioSource +
+                      ")";
     if (c.learnedFrom > 0)
         out += "; ln likelihood +" + text::number(c.likelihoodGain, 4) + " over the priors";
     if (c.mean.active())
@@ -427,8 +428,8 @@ std::string correctionNote(const MissionProblem &problem)
         out += "; members by weight:";
         for (std::size_t k = 0; k < std::min<std::size_t>(3, order.size()); ++k)
             out += std::string(k ? "," : "") + " #" + std::to_string(order[k]) + " " +
-                   text::number(r->members[order[k]].weight, 3) + " (RMS " +
-                   speed(r->members[order[k]].rmsInnovation) + ")";
+                   text::number(r->members[order[k]].weight, 3) + " (RMS " + speed(r->members[order[k]].rmsInnovation) +
+                   ")";
     }
     return out;
 }

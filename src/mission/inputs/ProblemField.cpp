@@ -65,8 +65,8 @@ std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec
 {
     const MissionSpec &m = spec_;
     // a command-line flag gave the source (--truth): name the flag, else the mission file's line and field
-    const std::string at = t.mark.namesItself() ? t.mark.file + ": "
-                                                             : sourcePlace(m, t.mark) + "field '" + field + "': ";
+    const std::string at =
+        t.mark.namesItself() ? t.mark.file + ": " : sourcePlace(m, t.mark) + "field '" + field + "': ";
     const CurrentFieldKind *kind = findCurrentFieldKind(t.type);
     if (!kind)
         throw Error(at + "unknown type '" + t.type + "' (expected one of " + currentFieldKindList() + ")");
@@ -77,7 +77,7 @@ std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec
     MissionSpec tm = m;
     tm.current = t;
     ForecastRequest o = forecastRequest(tm);
-    o.optionNames = forecastFieldNames(field);  // the source's settings are this section's
+    o.optionNames = forecastFieldNames(field); // the source's settings are this section's
     o.departure.clear();
     o.horizon = std::numeric_limits<double>::infinity();
     if (projection_)
@@ -117,7 +117,7 @@ void MissionProblem::buildMembers()
     const std::vector<CurrentSpec> &members = spec_.current.members;
     if (members.empty())
         return;
-    members_.push_back(field_);  // the first member, read as the forecast
+    members_.push_back(field_); // the first member, read as the forecast
     for (std::size_t i = 1; i < members.size(); ++i)
         members_.push_back(loadSource(members[i], "current.ensemble[" + std::to_string(i) + "]"));
     checkCommonTime();
@@ -131,4 +131,4 @@ void MissionProblem::buildTruth()
         truth_ = loadSource(*m.execution.truth, "execution.truth");
 }
 
-}  // namespace ompl_glider
+} // namespace ompl_glider

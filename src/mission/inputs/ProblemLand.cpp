@@ -77,7 +77,8 @@ void MissionProblem::buildRegions()
     };
     auto regions = std::make_shared<ForbiddenRegions>();
     for (const auto &o : m.forbidden.obstacles)
-        regions->add(std::make_shared<StaticRegion>(o.polygon.name, polygon(o.polygon, o.kind), regionKindName(o.kind)));
+        regions->add(
+            std::make_shared<StaticRegion>(o.polygon.name, polygon(o.polygon, o.kind), regionKindName(o.kind)));
     if (!m.forbidden.coastline.empty())
     {
         // the coastline's land polygons that meet the box (with a margin of a tenth of its size)
@@ -102,7 +103,8 @@ void MissionProblem::buildRegions()
             }
             try
             {
-                regions->add(std::make_shared<StaticRegion>(p.name, shape(p, RegionKind::Land), regionKindName(RegionKind::Land)));
+                regions->add(std::make_shared<StaticRegion>(p.name, shape(p, RegionKind::Land),
+                                                            regionKindName(RegionKind::Land)));
                 polygons_.back().coastline = true;
             }
             catch (const Error &e)
@@ -120,7 +122,8 @@ void MissionProblem::buildRegions()
             w.push_back({p.first, p.second});
         try
         {
-            regions->add(std::make_shared<TimeWindowedZone>(t.polygon.name, polygon(t.polygon, RegionKind::Closure), w));
+            regions->add(
+                std::make_shared<TimeWindowedZone>(t.polygon.name, polygon(t.polygon, RegionKind::Closure), w));
             polygons_.back().windows = t.windows;
         }
         catch (const Error &e)
@@ -148,8 +151,7 @@ void MissionProblem::buildRegions()
                                                        std::max(t1, t0), i.maxSubmergedTime));
             }
             else
-                regions->add(
-                    std::make_shared<IceZone>(i.polygon.name, shape, i.tRef, i.vx, i.vy, i.maxSubmergedTime));
+                regions->add(std::make_shared<IceZone>(i.polygon.name, shape, i.tRef, i.vx, i.vy, i.maxSubmergedTime));
         }
         catch (const Error &e)
         {
@@ -162,4 +164,4 @@ void MissionProblem::buildRegions()
         environment_ = regions;
 }
 
-}  // namespace ompl_glider
+} // namespace ompl_glider

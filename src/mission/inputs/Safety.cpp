@@ -31,7 +31,7 @@ std::string at(const MissionSpec &m, const std::string &field)
         return it->second.file + ": ";
     return m.place(field) + ": ";
 }
-}  // namespace
+} // namespace
 
 #if OMPL_GLIDER_WITH_NETCDF
 GeoBox MissionProblem::bathymetryRegion() const
@@ -60,7 +60,7 @@ std::shared_ptr<const ForbiddenCells> MissionProblem::shallowWater()
     {
         if (forecastFiles_.empty())
             throw Error(at(m, field) + "a depth limit needs a bathymetry file (" + m.term("safety.bathymetry") + ")");
-        file = forecastFiles_.front();  // the model's own bathymetry (ROMS h)
+        file = forecastFiles_.front(); // the model's own bathymetry (ROMS h)
     }
 #if OMPL_GLIDER_WITH_NETCDF
     const GeoBox region = bathymetryRegion();
@@ -95,10 +95,9 @@ std::shared_ptr<const ForbiddenCells> MissionProblem::shallowWater()
             }
     const std::string name = "depth < " + text::number(m.safety.minDepth) + " m";
     auto cells = std::make_shared<ForbiddenCells>(name, "shallow water", g.nx, g.ny, std::move(nodes), bad);
-    safetyNote_ = "depth limit " + text::number(m.safety.minDepth) + " m from '" + file +
-                                             "' variable '" + g.variable + "' (" + g.convention + "): " +
-                                             std::to_string(count) + " of " + std::to_string(cx * cy) +
-                                             " cells too shallow";
+    safetyNote_ = "depth limit " + text::number(m.safety.minDepth) + " m from '" + file + "' variable '" + g.variable +
+                  "' (" + g.convention + "): " + std::to_string(count) + " of " + std::to_string(cx * cy) +
+                  " cells too shallow";
     return cells;
 #else
     (void)file;
@@ -133,7 +132,7 @@ void MissionProblem::addSafety(ForbiddenRegions &regions)
     {
         auto zone = std::make_shared<KeepOffZone>(std::move(edges), m.safety.keepOff);
         if (m.physicalUnits().length)
-            zone->setMetresPerUnit(m.metresPerUnit());  // the pilot's units in its messages
+            zone->setMetresPerUnit(m.metresPerUnit()); // the pilot's units in its messages
         land_ = zone;
         if (m.safety.keepOff > 0.0)
             regions.add(land_);
@@ -154,7 +153,7 @@ void MissionProblem::checkGeoJsonNearBox() const
     for (const auto &i : m.forbidden.ice)
         given.push_back(&i.polygon);
     const double near = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
-    double a0 = 1e300, a1 = -1e300, b0 = 1e300, b1 = -1e300;  // the file's extent as given
+    double a0 = 1e300, a1 = -1e300, b0 = 1e300, b1 = -1e300; // the file's extent as given
     int n = 0;
     for (const PolygonSpec *p : given)
     {
@@ -166,7 +165,7 @@ void MissionProblem::checkGeoJsonNearBox() const
             a0 = std::min(a0, a), a1 = std::max(a1, a), b0 = std::min(b0, b), b1 = std::max(b1, b);
         }
         if (p->geographic && std::abs(p->points.front().second) >= 89.9)
-            continue;  // (no projection at a pole)
+            continue; // (no projection at a pole)
         for (const Point2 &q : ring(p->points, p->geographic, p->name))
             if (q.x >= box_.xMin - near && q.x <= box_.xMax + near && q.y >= box_.yMin - near &&
                 q.y <= box_.yMax + near)
@@ -205,7 +204,7 @@ std::vector<LandPolygon> MissionProblem::readCoastline(const std::string &at)
             spans = {{a, b}};
         std::vector<std::string> repairs;
         CoastlineCount count;
-        std::set<std::string> usedFeatures;  // a feature across the antimeridian meets both spans: counted once
+        std::set<std::string> usedFeatures; // a feature across the antimeridian meets both spans: counted once
         for (const auto &[w, e] : spans)
         {
             count = {};
@@ -238,4 +237,4 @@ std::vector<LandPolygon> MissionProblem::readCoastline(const std::string &at)
     }
     return land;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

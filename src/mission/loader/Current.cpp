@@ -64,7 +64,7 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
     }
     m.current.steady = axis.steady;
     if (!axis.found || !axis.dated)
-        return;  // a steady field without dates, or raw times of a Cartesian file: no calendar
+        return; // a steady field without dates, or raw times of a Cartesian file: no calendar
     MissionSpec::FileCalendar fc;
     fc.calendar = axis.calendar;
     fc.originSeconds = axis.originSeconds;
@@ -101,8 +101,7 @@ void readUnitsAndRecord(const Reader &r, const YAML::Node &n, const std::string 
                    "expected '<seconds|minutes|hours|days> since <date>', got '" + c.timeUnits + "'");
     }
     if (n["steady_record"])
-        c.steadyRecord =
-            static_cast<std::size_t>(r.integer(n["steady_record"], f + ".steady_record", 0, 1000000000L));
+        c.steadyRecord = static_cast<std::size_t>(r.integer(n["steady_record"], f + ".steady_record", 0, 1000000000L));
 }
 
 /// current.file: a path or a glob pattern, or a list of them (a forecast in several files), relative to the
@@ -138,12 +137,12 @@ void readForecastFiles(const Reader &r, const YAML::Node &n, const std::string &
     if (files.size() > 1)
         c.files = files;
 }
-}  // namespace
+} // namespace
 
 void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     if (isDrawnEnsemble(n))
-        return readDrawnEnsemble(r, n, m);  // members drawn from one source (DrawnEnsemble.cpp)
+        return readDrawnEnsemble(r, n, m); // members drawn from one source (DrawnEnsemble.cpp)
     if (n.IsMap() && n["ensemble"])
     {
         // members of one kind (analytic flows, or forecasts on one calendar); the first sets names and dates
@@ -180,12 +179,13 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
 void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c,
                        const std::set<std::string> &extraKeys)
 {
-    std::set<std::string> keys{"type", "parameters", "file", "variables", "interpolation", "horizon",
-                               "velocity_units", "time_units", "steady_record", "zero_velocity_land", "depth_average"};
+    std::set<std::string> keys{"type",         "parameters",     "file",       "variables",     "interpolation",
+                               "horizon",      "velocity_units", "time_units", "steady_record", "zero_velocity_land",
+                               "depth_average"};
     keys.insert(extraKeys.begin(), extraKeys.end());
     r.checkMap(n, f, keys);
     c.mark = {r.file(), r.line(n)};
-    const std::vector<std::string> names = currentFieldKindNames();  // with the aliases ("netcdf": gridded)
+    const std::vector<std::string> names = currentFieldKindNames(); // with the aliases ("netcdf": gridded)
     const std::set<std::string> kinds(names.begin(), names.end());
     if (!n["type"])
         r.fail(n, f + ".type", "missing (" + currentFieldKindList() + ")");
@@ -194,7 +194,7 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
     if (n["parameters"])
     {
         std::set<std::string> names;
-        for (const auto &[key, value] : kind.parameters)  // (the set checkMap() takes; hasParameter() decides alike)
+        for (const auto &[key, value] : kind.parameters) // (the set checkMap() takes; hasParameter() decides alike)
             names.insert(key);
         r.checkMap(n["parameters"], f + ".parameters", names);
         for (auto it = n["parameters"].begin(); it != n["parameters"].end(); ++it)
@@ -219,7 +219,8 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
     readForecastFiles(r, n["file"], f + ".file", c);
     if (n["variables"])
     {
-        r.checkMap(n["variables"], f + ".variables", {"u", "v", "x", "y", "lon", "lat", "depth", "time", "mask", "angle"});
+        r.checkMap(n["variables"], f + ".variables",
+                   {"u", "v", "x", "y", "lon", "lat", "depth", "time", "mask", "angle"});
         for (auto it = n["variables"].begin(); it != n["variables"].end(); ++it)
             c.variables[it->first.Scalar()] = r.text(it->second, f + ".variables." + it->first.Scalar());
     }
@@ -228,7 +229,8 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
         const YAML::Node &i = n["interpolation"];
         r.checkMap(i, f + ".interpolation", {"xy", "depth", "time"});
         if (i["xy"])
-            c.xyInterpolation = parseInterp2D(r.oneOf(i["xy"], f + ".interpolation.xy", {"nearest", "bilinear", "bicubic"}));
+            c.xyInterpolation =
+                parseInterp2D(r.oneOf(i["xy"], f + ".interpolation.xy", {"nearest", "bilinear", "bicubic"}));
         if (i["depth"])
             c.depthInterpolation =
                 parseInterp1D(r.oneOf(i["depth"], f + ".interpolation.depth", {"nearest", "linear", "cubic", "akima"}));
@@ -250,4 +252,4 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
     }
     readUnitsAndRecord(r, n, f, c);
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

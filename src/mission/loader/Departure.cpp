@@ -27,8 +27,8 @@ namespace ompl_glider::mission_loader
 {
 namespace
 {
-constexpr double kMaxSupportingPoints = 10000.0;  ///< departure-window samples, each a whole search
-}  // namespace
+constexpr double kMaxSupportingPoints = 10000.0; ///< departure-window samples, each a whole search
+} // namespace
 
 void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
@@ -66,7 +66,8 @@ void readDeparture(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (w["coarse_grid_size"])
         d.coarseGridSize = r.positive(w["coarse_grid_size"], g + ".coarse_grid_size");
     if (w["coarse_sectors"])
-        d.coarseSectors = static_cast<int>(r.integer(w["coarse_sectors"], g + ".coarse_sectors", kMinSectors, kMaxSectors));
+        d.coarseSectors =
+            static_cast<int>(r.integer(w["coarse_sectors"], g + ".coarse_sectors", kMinSectors, kMaxSectors));
     readThreads(r, w, g, d.threads);
 }
 
@@ -84,4 +85,4 @@ void readGoalWindow(const Reader &r, const YAML::Node &n, MissionSpec &m)
         r.fail(n["end"], g + ".end", "must not be before begin");
     // (a window out of reach of the departure and the planning horizon is refused by runMission())
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

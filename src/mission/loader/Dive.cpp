@@ -29,8 +29,8 @@ void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "dive_profile";
     r.checkMap(n, f,
-               {"z_min", "z_max", "climb_to_max", "min_range", "climb_to_levels", "dive_to_levels", "step",
-                "selection", "max_time_factor", "max_time", "clearance", "threads", "bathymetry"});
+               {"z_min", "z_max", "climb_to_max", "min_range", "climb_to_levels", "dive_to_levels", "step", "selection",
+                "max_time_factor", "max_time", "clearance", "threads", "bathymetry"});
     DiveSpec &d = m.dive;
     d.enabled = true;
     DiveProfileParams &p = d.params;
@@ -72,8 +72,9 @@ void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m)
         r.checkMap(b, g, {"type", "depth", "file", "variable"});
         if (!b["type"])
             r.fail(b, g + ".type", "missing (constant or netcdf)");
-        d.bathymetry = r.oneOf(b["type"], g + ".type", {"constant", "netcdf"}) == "constant" ? DiveSpec::Bathymetry::Constant
-                                                                                             : DiveSpec::Bathymetry::File;
+        d.bathymetry = r.oneOf(b["type"], g + ".type", {"constant", "netcdf"}) == "constant"
+                           ? DiveSpec::Bathymetry::Constant
+                           : DiveSpec::Bathymetry::File;
         if (d.bathymetry == DiveSpec::Bathymetry::Constant)
         {
             if (!b["depth"])
@@ -92,4 +93,4 @@ void readDive(const Reader &r, const YAML::Node &n, MissionSpec &m)
         }
     }
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

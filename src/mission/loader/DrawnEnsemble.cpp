@@ -30,12 +30,12 @@ std::vector<CurrentSpec> drawEnsembleMembers(const CurrentSpec &control, unsigne
             throw Error("'" + name + "' is not a parameter of " + control.type + " (" + parameterNameList(*kind) + ")");
         if (!(s >= 0.0 && s < 1.0))
             throw Error("the spread of '" + name + "' must lie in [0, 1), got " + std::to_string(s));
-        if (!base.parameters.count(name))  // perturbed about the value the flow would take
+        if (!base.parameters.count(name)) // perturbed about the value the flow would take
             for (const auto &[key, value] : kind->parameters)
                 if (key == name)
                     base.parameters[name] = value;
     }
-    std::vector<CurrentSpec> members{base};  // the control run, as forecast centres issue it
+    std::vector<CurrentSpec> members{base}; // the control run, as forecast centres issue it
     std::mt19937 rng(draw.seed);
     for (unsigned i = 1; i < count; ++i)
     {
@@ -70,7 +70,7 @@ std::string ensembleDescription(const CurrentSpec &c)
     }
     return s + ", seed " + std::to_string(c.drawn->seed) + ")";
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider
 
 namespace ompl_glider::mission_loader
 {
@@ -94,8 +94,7 @@ void readDrawnEnsemble(const Reader &r, const YAML::Node &n, MissionSpec &m)
                "an ensemble is either listed (ensemble: [...]) or drawn from one source (members: N, spread: {...}), "
                "not both");
     if (!n["members"])
-        r.fail(n[key], "current." + key,
-               "only with members: N (an ensemble of N members drawn from these parameters)");
+        r.fail(n[key], "current." + key, "only with members: N (an ensemble of N members drawn from these parameters)");
     const YAML::Node &type = n["type"];
     const CurrentFieldKind *named = type && type.IsScalar() ? findCurrentFieldKind(type.Scalar()) : nullptr;
     if (named && named->gridded())
@@ -103,7 +102,8 @@ void readDrawnEnsemble(const Reader &r, const YAML::Node &n, MissionSpec &m)
         const std::string at = n["spread"] ? "spread" : "members";
         r.fail(n[at], "current." + at,
                "an ensemble is drawn from the parameters of an analytic flow; a forecast's members are its files "
-               "(current: {ensemble: [{type: " + type.Scalar() + ", file: ...}, ...]})");
+               "(current: {ensemble: [{type: " +
+                   type.Scalar() + ", file: ...}, ...]})");
     }
     readCurrentSource(r, n, "current", m.current, {"members", "spread", "seed"});
     const unsigned count = static_cast<unsigned>(r.integer(n["members"], "current.members", 2, 1000));
@@ -147,4 +147,4 @@ void readDrawnEnsemble(const Reader &r, const YAML::Node &n, MissionSpec &m)
     m.current.members = members;
     m.current.drawn = draw;
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

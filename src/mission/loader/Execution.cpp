@@ -28,8 +28,9 @@ namespace ompl_glider::mission_loader
 void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "execution";
-    r.checkMap(n, f,
-               {"truth", "surfacing_interval", "strategies", "radius", "replan_every", "duration", "batch", "dac_noise"});
+    r.checkMap(
+        n, f,
+        {"truth", "surfacing_interval", "strategies", "radius", "replan_every", "duration", "batch", "dac_noise"});
     ExecutionSpec &e = m.execution;
     e.enabled = true;
     e.mark = {r.file(), r.line(n)};
@@ -101,4 +102,4 @@ void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
         readThreads(r, b, f + ".batch", e.threads);
     }
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

@@ -19,7 +19,7 @@ bool folderName(const std::string &name)
             return false;
     return true;
 }
-}  // namespace
+} // namespace
 
 void readFleet(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
@@ -32,7 +32,8 @@ void readFleet(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (n.size() > kMaxFleetGliders)
         r.fail(n, "fleet",
                "a fleet of " + std::to_string(n.size()) + " gliders, more than the limit of " +
-                   std::to_string(kMaxFleetGliders) + " (a plan and a folder of files each): split it into missions "
+                   std::to_string(kMaxFleetGliders) +
+                   " (a plan and a folder of files each): split it into missions "
                    "of fewer gliders");
     std::set<std::string> names;
     for (std::size_t i = 0; i < n.size(); ++i)
@@ -48,8 +49,9 @@ void readFleet(const Reader &r, const YAML::Node &n, MissionSpec &m)
         glider.name = r.text(g["name"], f + ".name");
         if (!folderName(glider.name))
             r.fail(g["name"], f + ".name",
-                   "'" + glider.name + "' is not a folder name (letters, digits, '_', '-', '.'; not starting with "
-                   "'.'; at most 64 characters; not summary.json or fleet.csv)");
+                   "'" + glider.name +
+                       "' is not a folder name (letters, digits, '_', '-', '.'; not starting with "
+                       "'.'; at most 64 characters; not summary.json or fleet.csv)");
         if (!names.insert(glider.name).second)
             r.fail(g["name"], f + ".name", "'" + glider.name + "' names another glider of the fleet too");
         readPoint(r, g["start"], f + ".start", glider.start, m);
@@ -73,4 +75,4 @@ void readFleet(const Reader &r, const YAML::Node &n, MissionSpec &m)
         m.fleet.push_back(std::move(glider));
     }
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

@@ -38,7 +38,7 @@ std::optional<RegionKind> parseRegionKind(const std::string &name)
             return k;
     return std::nullopt;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider
 
 namespace ompl_glider::mission_loader
 {
@@ -133,9 +133,12 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
                 kind = g.oneOf(props["kind"], fld + ".properties.kind",
                                {"island", "land", "restricted area", "closure", "ice"});
             // a property of another kind would be ignored: refused, saying which kind it belongs to
-            for (const auto &[key, owner] : std::vector<std::pair<const char *, const char *>>{
-                     {"windows", "closure"}, {"max_submerged_time", "ice"}, {"drift", "ice"}, {"t_ref", "ice"},
-                     {"carried", "ice"}})
+            for (const auto &[key, owner] :
+                 std::vector<std::pair<const char *, const char *>>{{"windows", "closure"},
+                                                                    {"max_submerged_time", "ice"},
+                                                                    {"drift", "ice"},
+                                                                    {"t_ref", "ice"},
+                                                                    {"carried", "ice"}})
                 if (props[key] && kind != owner)
                     g.fail(props[key], fld + ".properties." + key,
                            std::string("belongs to a zone of kind '") + owner + "', but this feature's kind is '" +
@@ -166,7 +169,7 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
                 for (std::size_t h = 0; h < rings.size(); ++h)
                     checkLonLat(g, rings[h], pf + "[" + std::to_string(h) + "]", name,
                                 h == 0 ? poly.points : poly.holes[h - 1]);
-            const RegionKind parsed = *parseRegionKind(kind);  // one of the names oneOf() took
+            const RegionKind parsed = *parseRegionKind(kind); // one of the names oneOf() took
             if (parsed == RegionKind::Closure)
             {
                 TimeWindowSpec tw;
@@ -215,7 +218,7 @@ std::string readListedPolygon(const Reader &r, const YAML::Node &entry, const ch
     return g;
 }
 
-}  // namespace
+} // namespace
 
 void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
@@ -231,9 +234,8 @@ void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
         for (std::size_t i = 0; i < l.size(); ++i)
         {
             ObstacleSpec o;
-            const std::string g = readListedPolygon(r, l[i], "obstacles", i,
-                                                    {"name", "kind", "points", "lonlat", "holes"}, "obstacle",
-                                                    o.polygon, m);
+            const std::string g = readListedPolygon(
+                r, l[i], "obstacles", i, {"name", "kind", "points", "lonlat", "holes"}, "obstacle", o.polygon, m);
             if (l[i]["kind"])
                 o.kind = *parseRegionKind(r.oneOf(l[i]["kind"], g + ".kind", {"island", "land", "restricted area"}));
             m.forbidden.obstacles.push_back(o);
@@ -242,9 +244,8 @@ void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
         for (std::size_t i = 0; i < l.size(); ++i)
         {
             TimeWindowSpec tw;
-            const std::string g = readListedPolygon(r, l[i], "time_windows", i,
-                                                    {"name", "points", "lonlat", "holes", "windows"}, "closure",
-                                                    tw.polygon, m);
+            const std::string g = readListedPolygon(
+                r, l[i], "time_windows", i, {"name", "points", "lonlat", "holes", "windows"}, "closure", tw.polygon, m);
             const YAML::Node &w = l[i]["windows"];
             if (!w || !w.IsSequence() || w.size() == 0)
                 r.fail(w ? w : l[i], g + ".windows", "expected a list of [from, to] time intervals");
@@ -298,4 +299,4 @@ void readForbidden(const Reader &r, const YAML::Node &n, MissionSpec &m)
             r.fail(n["coastline"], f + ".coastline", "cannot open '" + m.forbidden.coastline + "'");
     }
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

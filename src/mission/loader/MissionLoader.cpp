@@ -138,9 +138,9 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     if (!root.IsDefined() || root.IsNull())
         throw Error(r.file() + ": the mission file is empty");
     r.checkMap(root, "",
-               {"name", "units", "epoch", "projection", "current", "region", "start", "goal", "departure", "vehicle",
-                "travel_time", "dive_profile", "forbidden", "safety", "planner", "stints", "outputs", "speeds", "execution",
-                "fleet", "waypoints", "order", "observations"});
+               {"name",      "units",   "epoch",       "projection",   "current",   "region", "start",       "goal",
+                "departure", "vehicle", "travel_time", "dive_profile", "forbidden", "safety", "planner",     "stints",
+                "outputs",   "speeds",  "execution",   "fleet",        "waypoints", "order",  "observations"});
     readHeader(r, root, m);
     if (!root["current"])
         r.fail(root, "current", "missing: the current source (type: meandering_jet | uniform | ... | netcdf)");
@@ -161,10 +161,10 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     for (const char *key : {"start", "goal"})
     {
         if (!root[key] && root["fleet"])
-            continue;  // a fleet's gliders give theirs
+            continue; // a fleet's gliders give theirs
         if (!root[key] && root["observations"] && std::string(key) == "start" &&
             !(root["observations"].IsMap() && !root["observations"]["file"]))
-            continue;  // the glider's last fix
+            continue; // the glider's last fix
         if (!root[key])
             r.fail(root, key, "missing");
         readPoint(r, root[key], key, std::string(key) == "start" ? m.start : m.goal, m);
@@ -222,8 +222,7 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         r.fail(root["planner"]["name"], "planner.name",
                "planner '" + m.planner.name +
                    "' flies constant-bearing stints: give a 'stints' section (duration, mission_duration)");
-    if (stintPlanner && m.departure.window &&
-        m.stints.objective == StintObjective::RemainingDistance)
+    if (stintPlanner && m.departure.window && m.stints.objective == StintObjective::RemainingDistance)
         r.fail(root["departure"]["window"], "departure.window",
                "the departure window is searched for the earliest arrival; the stint planner '" + m.planner.name +
                    "' with the remaining_distance objective has none: give departure.time, or stints.objective: "
@@ -237,14 +236,15 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     else
         m.outputs.directory = joinPath(r.dir(), ".");
     if ((!root["outputs"] || !root["outputs"]["files"]) && !m.projection.set && !m.current.isForecast())
-        m.outputs.files = {OutputFormatId::Csv, OutputFormatId::GeoJson, OutputFormatId::Summary};  // no lon/lat: no goto list by default
+        m.outputs.files = {OutputFormatId::Csv, OutputFormatId::GeoJson,
+                           OutputFormatId::Summary}; // no lon/lat: no goto list by default
     readSpeedsAndCheck(r, root, m);
     if (root["execution"])
         readExecution(r, root["execution"], m);
     m.marks = r.marks();
     return m;
 }
-}  // namespace
+} // namespace
 
 double MissionSpec::timeOf(const std::string &text) const
 {
@@ -271,8 +271,7 @@ double MissionSpec::timeOf(const std::string &text) const
     if (fileCalendar)
         return secondsSinceCalendarEpoch(text, fileCalendar->calendar) - fileCalendar->originSeconds;
     if (!epoch)
-        throw Error("expected a number (an ISO 8601 date needs 'epoch' at the top of the mission), got '" + text +
-                    "'");
+        throw Error("expected a number (an ISO 8601 date needs 'epoch' at the top of the mission), got '" + text + "'");
     return (parseIsoTime(text) - *epoch) / timeUnitSeconds;
 }
 
@@ -298,7 +297,7 @@ std::string MissionSpec::term(const std::string &setting) const
 std::string MissionSpec::place(const std::string &field) const
 {
     auto it = marks.find(field);
-    if (it == marks.end())  // a point or a block: the first value given inside it ("start" -> "start.x")
+    if (it == marks.end()) // a point or a block: the first value given inside it ("start" -> "start.x")
     {
         it = marks.lower_bound(field + ".");
         if (it != marks.end() && it->first.rfind(field + ".", 0) != 0)
@@ -341,13 +340,14 @@ std::size_t firstBadUtf8(const std::string &s)
                 return k;
             code = (code << 6) | (d & 0x3Fu);
         }
-        if ((n == 3 && (code < 0x800 || (code >= 0xD800 && code <= 0xDFFF))) || (n == 4 && (code < 0x10000 || code > 0x10FFFF)))
+        if ((n == 3 && (code < 0x800 || (code >= 0xD800 && code <= 0xDFFF))) ||
+            (n == 4 && (code < 0x10000 || code > 0x10FFFF)))
             return k;
         k += n;
     }
     return k;
 }
-}  // namespace
+} // namespace
 
 MissionSpec parseMission(const std::string &yamlText, const std::string &file, const std::string &directory)
 {
@@ -358,7 +358,9 @@ MissionSpec parseMission(const std::string &yamlText, const std::string &file, c
         const std::size_t col = bad - (lineStart == std::string::npos || bad == 0 ? 0 : lineStart + 1) + 1;
         char byte[8];
         std::snprintf(byte, sizeof byte, "0x%02x", static_cast<unsigned char>(yamlText[bad]));
-        throw Error(file + ":" + std::to_string(std::count(yamlText.begin(), yamlText.begin() + static_cast<std::ptrdiff_t>(bad), '\n') + 1) +
+        throw Error(file + ":" +
+                    std::to_string(
+                        std::count(yamlText.begin(), yamlText.begin() + static_cast<std::ptrdiff_t>(bad), '\n') + 1) +
                     ": the text is not UTF-8 (byte " + byte + " at column " + std::to_string(col) +
                     "); save the mission file as UTF-8");
     }
@@ -401,7 +403,8 @@ MissionSpec loadMission(const std::string &path)
     // a device, a pipe or a huge file is no mission: /dev/zero or a FIFO would be read without end
     const auto status = std::filesystem::status(path, ec);
     if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-        throw Error("cannot read mission file '" + path + "': it is not a regular file (a device, a pipe or a "
+        throw Error("cannot read mission file '" + path +
+                    "': it is not a regular file (a device, a pipe or a "
                     "socket); give a YAML mission file");
     constexpr std::uintmax_t kMaxMissionBytes = 16u << 20;
     if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxMissionBytes)
@@ -445,7 +448,7 @@ double defaultForecastGridSize(double minCellSize, double distance)
     if (!(g > 0.0) || !std::isfinite(g))
         throw Error("cannot choose a grid size (cell size " + text::number(minCellSize) + ", start-goal distance " +
                     text::number(distance) + "): give planner.grid_size");
-    const double scale = std::pow(10.0, std::floor(std::log10(g)) - 1.0);  // two significant digits
+    const double scale = std::pow(10.0, std::floor(std::log10(g)) - 1.0); // two significant digits
     return std::round(g / scale) * scale;
 }
 
@@ -455,6 +458,6 @@ double defaultAnalyticGridSize(const MissionSpec &m, double distance)
     const bool builtInTrip = m.current.type == b.current.type && !m.start.geographic && !m.goal.geographic &&
                              m.start.xy.x == b.start.xy.x && m.start.xy.y == b.start.xy.y &&
                              m.goal.xy.x == b.goal.xy.x && m.goal.xy.y == b.goal.xy.y;
-    return builtInTrip ? 0.4 : defaultForecastGridSize(2.0 * 0.4, distance);  // half of 0.8: the forecasts' rule
+    return builtInTrip ? 0.4 : defaultForecastGridSize(2.0 * 0.4, distance); // half of 0.8: the forecasts' rule
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

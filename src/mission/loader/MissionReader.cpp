@@ -58,8 +58,9 @@ std::string Reader::where(const YAML::Node &node) const
 void Reader::checkMap(const YAML::Node &node, const std::string &path, const std::set<std::string> &allowed) const
 {
     if (!node.IsMap())
-        fail(node, path, node.IsNull() ? "has no value; expected a mapping (key: value lines)"
-                                       : "expected a mapping (key: value lines)");
+        fail(node, path,
+             node.IsNull() ? "has no value; expected a mapping (key: value lines)"
+                           : "expected a mapping (key: value lines)");
     std::set<std::string> seen;
     auto allowedList = [&allowed] {
         std::string list;
@@ -70,8 +71,10 @@ void Reader::checkMap(const YAML::Node &node, const std::string &path, const std
     for (auto it = node.begin(); it != node.end(); ++it)
     {
         if (!it->first.IsScalar())
-            throw Error(where(it->first) + (path.empty() ? std::string("a key") : "a key in '" + path + "'") +
-                        " is " + (it->first.IsMap() ? "a mapping" : it->first.IsSequence() ? "a list" : "empty") +
+            throw Error(where(it->first) + (path.empty() ? std::string("a key") : "a key in '" + path + "'") + " is " +
+                        (it->first.IsMap()        ? "a mapping"
+                         : it->first.IsSequence() ? "a list"
+                                                  : "empty") +
                         ": keys are plain names (allowed here: " + allowedList() + ")");
         const std::string key = it->first.Scalar();
         keyLines_[sub(path, key)] = it->first.Mark().line + 1;
@@ -115,9 +118,10 @@ double Reader::positive(const YAML::Node &node, const std::string &field) const
     const double v = finite(node, field);
     if (!(v > 0))
         fail(node, field, "expected a number > 0, got " + node.Scalar());
-    if (!std::isnormal(v))  // a denormal (1e-310): divisions by it overflow
-        fail(node, field, "expected a number > 0, got " + node.Scalar() +
-                              ", below the smallest normal double (2.2e-308): too small to compute with");
+    if (!std::isnormal(v)) // a denormal (1e-310): divisions by it overflow
+        fail(node, field,
+             "expected a number > 0, got " + node.Scalar() +
+                 ", below the smallest normal double (2.2e-308): too small to compute with");
     return v;
 }
 
@@ -144,8 +148,8 @@ long Reader::integer(const YAML::Node &node, const std::string &field, long lo, 
         fail(node, field, "expected an integer, got '" + node.Scalar() + "'");
     }
     if (v < lo || v > hi)
-        fail(node, field, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " +
-                              std::to_string(v));
+        fail(node, field,
+             "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " + std::to_string(v));
     return v;
 }
 
@@ -261,7 +265,7 @@ void readPoint(const Reader &r, const YAML::Node &n, const std::string &field, P
     std::set<std::string> keys{"x", "y", "lon", "lat"};
     keys.insert(extraKeys.begin(), extraKeys.end());
     if (field == "goal")
-        keys.insert("window");  // goal.window: readGoalWindow()
+        keys.insert("window"); // goal.window: readGoalWindow()
     r.checkMap(n, field, keys);
     const bool xy = n["x"] || n["y"], geo = n["lon"] || n["lat"];
     if (xy == geo)
@@ -336,4 +340,4 @@ double duration(const Reader &r, const YAML::Node &n, const std::string &f, cons
         r.fail(n, f, e.what());
     }
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

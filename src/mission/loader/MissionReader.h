@@ -25,27 +25,16 @@ std::string yamlErrorMessage(const std::string &file, const YAML::ParserExceptio
 class Reader
 {
 public:
-    Reader(std::string file, std::string dir) : file_(std::move(file)), dir_(std::move(dir))
-    {
-    }
+    Reader(std::string file, std::string dir) : file_(std::move(file)), dir_(std::move(dir)) {}
 
-    const std::string &file() const
-    {
-        return file_;
-    }
-    const std::string &dir() const
-    {
-        return dir_;
-    }
+    const std::string &file() const { return file_; }
+    const std::string &dir() const { return dir_; }
 
     [[noreturn]] void fail(const YAML::Node &node, const std::string &field, const std::string &what) const;
     [[noreturn]] void failAt(int line, const std::string &field, const std::string &what) const;
     /// "file:line: " of @p node ("file: " when the node has no position).
     std::string where(const YAML::Node &node) const;
-    int line(const YAML::Node &node) const
-    {
-        return node.Mark().line + 1;
-    }
+    int line(const YAML::Node &node) const { return node.Mark().line + 1; }
     static std::string sub(const std::string &path, const std::string &key)
     {
         return path.empty() ? key : path + "." + key;
@@ -73,26 +62,20 @@ public:
     std::vector<std::pair<double, double>> ring(const YAML::Node &node, const std::string &field) const;
 
     /// Where each value read so far was given (MissionSpec::marks).
-    const std::map<std::string, SourceMark> &marks() const
-    {
-        return marks_;
-    }
+    const std::map<std::string, SourceMark> &marks() const { return marks_; }
     /// Records where @p field was given, for a value read without the typed readers above (durations, lengths).
-    void mark(const YAML::Node &node, const std::string &field) const
-    {
-        remember(node, field);
-    }
+    void mark(const YAML::Node &node, const std::string &field) const { remember(node, field); }
 
 private:
     void remember(const YAML::Node &node, const std::string &field) const
     {
-        const auto key = keyLines_.find(field);  // an empty value's own mark is the next token's
+        const auto key = keyLines_.find(field); // an empty value's own mark is the next token's
         marks_[field] = SourceMark{file_, node.IsNull() && key != keyLines_.end() ? key->second : line(node)};
     }
 
     std::string file_, dir_;
     mutable std::map<std::string, SourceMark> marks_;
-    mutable std::map<std::string, int> keyLines_;  // the line of each key checkMap() saw, by its dotted field
+    mutable std::map<std::string, int> keyLines_; // the line of each key checkMap() saw, by its dotted field
 };
 
 // Readers of the mission's parts; each validates its node and fills its part of @p m.
@@ -138,4 +121,4 @@ void readStints(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m);
 /// The `fleet` list (name, start, goal, speed, departure per glider), after the departure and the region.
 void readFleet(const Reader &r, const YAML::Node &n, MissionSpec &m);
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

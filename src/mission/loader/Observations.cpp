@@ -12,7 +12,7 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
     const std::string f = "observations";
     ObservationsSpec o;
     o.mark = {r.file(), r.line(n)};
-    std::optional<YAML::Node> file;  // none: only the correction's parameters
+    std::optional<YAML::Node> file; // none: only the correction's parameters
     if (!n.IsMap())
         file = n;
     if (n.IsMap())
@@ -41,4 +41,4 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
     }
     m.observations = std::move(o);
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

@@ -77,4 +77,4 @@ void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
     if (n["isochrone_interval"])
         o.isochroneInterval = r.setting(n["isochrone_interval"], f + ".isochrone_interval", m);
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

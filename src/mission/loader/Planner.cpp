@@ -34,7 +34,8 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
     PlannerSpec &p = m.planner;
     if (n["objective"])
     {
-        p.objective = parseEnsembleObjective(r.oneOf(n["objective"], f + ".objective", {"expected", "worst", "quantile"}));
+        p.objective =
+            parseEnsembleObjective(r.oneOf(n["objective"], f + ".objective", {"expected", "worst", "quantile"}));
         if (m.current.members.empty())
             r.fail(n["objective"], f + ".objective",
                    "an objective over members needs an ensemble current (current: {ensemble: [...]})");
@@ -91,4 +92,4 @@ void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m)
         }
     }
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

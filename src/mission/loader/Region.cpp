@@ -64,4 +64,4 @@ void readRegion(const Reader &r, const YAML::Node &n, MissionSpec &m)
         g.lonLat = geoBox(lonMin, latMin, lonMax, latMax);
     }
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

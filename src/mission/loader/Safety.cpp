@@ -37,4 +37,5 @@ void readSafety(const Reader &r, const YAML::Node &n, MissionSpec &m)
                "needs safety.bathymetry (a NetCDF file of seafloor depth or elevation)");
     if (n["bathymetry_variable"] && !n["bathymetry"] && !m.current.isForecast())
         r.fail(n["bathymetry_variable"], f + ".bathymetry_variable", "needs safety.bathymetry");
-}}  // namespace ompl_glider::mission_loader
+}
+} // namespace ompl_glider::mission_loader

@@ -46,8 +46,8 @@ void readStints(const Reader &r, const YAML::Node &n, MissionSpec &m)
     {
         s.bearingStep = r.positive(n["bearing_step"], f + ".bearing_step");
         if (s.bearingStep > 180.0)
-            r.fail(n["bearing_step"], f + ".bearing_step", "expected degrees in (0, 180], got " +
-                                                               n["bearing_step"].Scalar());
+            r.fail(n["bearing_step"], f + ".bearing_step",
+                   "expected degrees in (0, 180], got " + n["bearing_step"].Scalar());
     }
     if (n["objective"])
         s.objective =
@@ -64,4 +64,4 @@ void readStints(const Reader &r, const YAML::Node &n, MissionSpec &m)
             r.fail(n["step"], f + ".step", "gives more than 10^6 integration steps per stint");
     }
 }
-}  // namespace ompl_glider::mission_loader
+} // namespace ompl_glider::mission_loader

@@ -49,7 +49,8 @@ std::vector<double> grid(double a, double b, double spacing)
     return t;
 }
 
-/// Evaluates f at every t in parallel (threads, or the processes of a job: TaskSpread.h), honouring the horizon; prints a progress line when asked.
+/// Evaluates f at every t in parallel (threads, or the processes of a job: TaskSpread.h), honouring the horizon; prints
+/// a progress line when asked.
 std::vector<DepartureSample> evaluateAll(const TravelTimeOfDeparture &f, const std::vector<double> &ts,
                                          const DepartureSearchParams &p, bool coarse, const char *what)
 {
@@ -101,7 +102,7 @@ double seconds(std::chrono::steady_clock::time_point a)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
 }
-}  // namespace
+} // namespace
 
 std::pair<double, double> brentMinimize(const std::function<double(double)> &f, double a, double b, double x0,
                                         double tol, unsigned maxEvaluations, std::vector<DepartureSample> *calls)
@@ -126,7 +127,7 @@ std::pair<double, double> brentMinimize(const std::function<double(double)> &f, 
         return kInf;
     };
     auto key = [&](double v) { return std::isfinite(v) ? v : (anyFinite ? penalty : 1e300); };
-    const double golden = 0.3819660112501051;  // (3 - sqrt(5)) / 2
+    const double golden = 0.3819660112501051; // (3 - sqrt(5)) / 2
     double x = (x0 > a && x0 < b) ? x0 : a + golden * (b - a);
     double w = x, v = x;
     double fx = eval(x);
@@ -221,7 +222,7 @@ DepartureSearchResult optimalDepartureTime(const TravelTimeOfDeparture &fine, co
     if (r.windowEnd < p.windowBegin)
     {
         r.wallSeconds = seconds(start);
-        return r;  // the forecast does not cover any trip from the window
+        return r; // the forecast does not cover any trip from the window
     }
     // Step 1: supporting points.
     const bool useCoarse = static_cast<bool>(coarse);
@@ -254,7 +255,7 @@ DepartureSearchResult optimalDepartureTime(const TravelTimeOfDeparture &fine, co
             r.wallSeconds = seconds(start);
             return r;
         }
-        minFinite = maxFinite = 0.0;  // nothing known: Brent over the whole window
+        minFinite = maxFinite = 0.0; // nothing known: Brent over the whole window
     }
 
     // Step 2: Akima curve; impassable points sit above every finite value.
@@ -291,8 +292,8 @@ DepartureSearchResult optimalDepartureTime(const TravelTimeOfDeparture &fine, co
             }
             return tt;
         };
-        const auto best = brentMinimize(f, r.bracketLo, r.bracketHi, tStar, p.tolerance, p.maxBrentEvaluations,
-                                        &r.refinements);
+        const auto best =
+            brentMinimize(f, r.bracketLo, r.bracketHi, tStar, p.tolerance, p.maxBrentEvaluations, &r.refinements);
         if (p.progress)
             p.progress("departure (Brent): " + std::to_string(r.refinements.size()) + " refining searches", true);
         for (auto &s : r.refinements)
@@ -345,4 +346,4 @@ DepartureSearchResult bruteForceDepartureTime(const TravelTimeOfDeparture &fine,
     r.wallSeconds = seconds(start);
     return r;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -54,7 +54,7 @@ void spreadCandidates(TaskSpreader &spread, std::vector<PlannedPath> &plans, std
         r.get(p.postprocessSeconds);
     }
 }
-}  // namespace
+} // namespace
 
 /// A robust plan over the members of an ensemble (see planRoute()).
 PlannedPath planRobust(const MissionProblem &problem, double departure, const PlanOptions &o)
@@ -153,13 +153,14 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
         r.status = PlanStatus::NoPath;
         const std::string objective = ensembleObjectiveName(e.objective);
         r.setNoPath({NoPathCause::NotRobust, "not robust: no candidate plan can be flown in every member of the "
-                                             "ensemble (objective " + objective + "); the best, planned on the " +
-                                                 e.chosen + ", is impassable in " + failing});
+                                             "ensemble (objective " +
+                                                 objective + "); the best, planned on the " + e.chosen +
+                                                 ", is impassable in " + failing});
     }
     r.ensemble = e;
     return r;
 }
-}  // namespace planning_detail
+} // namespace planning_detail
 
 const char *ensembleObjectiveName(EnsembleObjective o)
 {
@@ -207,7 +208,7 @@ double ensembleObjective(const std::vector<double> &t, EnsembleObjective objecti
 }
 
 std::vector<TimedPoint> retimePath(const MissionProblem &problem, std::shared_ptr<const CurrentField> field,
-                                      double speed, const std::vector<TimedPoint> &path)
+                                   double speed, const std::vector<TimedPoint> &path)
 {
     if (path.empty())
         return {};
@@ -226,4 +227,4 @@ std::vector<TimedPoint> retimePath(const MissionProblem &problem, std::shared_pt
     }
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -78,8 +78,8 @@ namespace
 /// The headings of @p route onto the waypoints @p first..@p last of @p out (the route's segment ends in turn): the
 /// heading held from each waypoint and for how long; a step that stays in place (a hold a goal window added) takes
 /// none.
-void assignHeadings(const HeadingRoute &route, const std::vector<TimedPoint> &path, std::size_t first,
-                    std::size_t last, std::vector<MissionWaypoint> &out)
+void assignHeadings(const HeadingRoute &route, const std::vector<TimedPoint> &path, std::size_t first, std::size_t last,
+                    std::vector<MissionWaypoint> &out)
 {
     std::size_t k = 0;
     for (std::size_t i = first; i < last && i + 1 < path.size() && k < route.segments.size(); ++i)
@@ -87,12 +87,12 @@ void assignHeadings(const HeadingRoute &route, const std::vector<TimedPoint> &pa
         const TimedPoint &a = path[i], &b = path[i + 1];
         if (a.x == b.x && a.y == b.y)
             continue;
-        const double bearing = route.segments[k++].bearing;  // a planner's bearing may be < 0 or >= 360
+        const double bearing = route.segments[k++].bearing; // a planner's bearing may be < 0 or >= 360
         out[i].heading = bearing - 360.0 * std::floor(bearing / 360.0);
         out[i].headingDuration = b.t - a.t;
     }
 }
-}  // namespace
+} // namespace
 
 PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath &plan,
                                 const std::vector<PlannedLeg> &legs)
@@ -160,14 +160,13 @@ PilotWaypoints missionWaypoints(const MissionProblem &problem, const PlannedPath
     return out;
 }
 
-OptimumReference optimumReference(const MissionProblem &problem, double departure, double speed,
-                                  double maxTravelTime)
+OptimumReference optimumReference(const MissionProblem &problem, double departure, double speed, double maxTravelTime)
 {
     // the reference is a route the glider can fly: extremals end at land, forbidden regions and the region's edge
     std::shared_ptr<GliderContext> ctx;
     makeSimpleSetup(problem.gliderProblem(departure, speed), &ctx);
     ZermeloParams zp = planning_detail::checkedExtremalParams(problem, ctx, speed, maxTravelTime);
-    const ZermeloParams reference;  // the reference's own accuracy
+    const ZermeloParams reference; // the reference's own accuracy
     zp.goalTolerance = reference.goalTolerance;
     zp.headingSamples = reference.headingSamples;
     zp.scanRelTol = reference.scanRelTol;
@@ -207,9 +206,10 @@ std::string planning_detail::frozenFieldNote(const MissionProblem &problem, cons
     if (!(arrival > last))
         return "";
     const double held = arrival - std::max(last, plan.departure);
-    return "planned past the forecast's last time (" + timeText(problem, last) +
-           ") on its last field, held frozen (" + m.term("current.horizon: hold_last") + ") for the last " +
-           (m.physicalUnits().time ? text::durationText(held * m.timeUnitSeconds) : text::number(held)) + " of the route";
+    return "planned past the forecast's last time (" + timeText(problem, last) + ") on its last field, held frozen (" +
+           m.term("current.horizon: hold_last") + ") for the last " +
+           (m.physicalUnits().time ? text::durationText(held * m.timeUnitSeconds) : text::number(held)) +
+           " of the route";
 }
 
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -64,7 +64,7 @@ FleetGlider unpack(const std::string &bytes)
         in.get(*v);
     return g;
 }
-}  // namespace
+} // namespace
 
 namespace
 {
@@ -72,7 +72,7 @@ namespace
 /// per fleet, so that a glider's mission costs the same whatever the fleet's size).
 MissionSpec fleetBase(const MissionSpec &mission)
 {
-    MissionSpec m = mission;  // once per fleet
+    MissionSpec m = mission; // once per fleet
     m.fleet.clear();
     for (auto it = m.marks.lower_bound("fleet["); it != m.marks.end() && it->first.rfind("fleet[", 0) == 0;)
         it = m.marks.erase(it);
@@ -110,17 +110,16 @@ MissionSpec gliderMission(const MissionSpec &base, const MissionSpec &mission, s
     m.outputs.directory = (std::filesystem::path(mission.outputs.directory) / g.name).string();
     // the glider's values were given in its fleet entry: messages name those lines
     const std::string entry = "fleet[" + std::to_string(i) + "].";
-    const std::pair<std::string, std::vector<std::string>> renamed[] = {
-        {"start", {"", ".x", ".y", ".lon", ".lat"}},
-        {"goal", {"", ".x", ".y", ".lon", ".lat"}},
-        {"speed", {""}},
-        {"departure", {""}}};
+    const std::pair<std::string, std::vector<std::string>> renamed[] = {{"start", {"", ".x", ".y", ".lon", ".lat"}},
+                                                                        {"goal", {"", ".x", ".y", ".lon", ".lat"}},
+                                                                        {"speed", {""}},
+                                                                        {"departure", {""}}};
     for (const auto &[from, parts] : renamed)
     {
         const std::string to = from == "speed" ? "vehicle.speed" : from == "departure" ? "departure.time" : from;
-        if (!mission.marks.count(entry + from) && mission.marks.lower_bound(entry + from + ".") ==
-                                                      mission.marks.lower_bound(entry + from + "/"))
-            continue;  // not given by the glider: the mission's value and place
+        if (!mission.marks.count(entry + from) &&
+            mission.marks.lower_bound(entry + from + ".") == mission.marks.lower_bound(entry + from + "/"))
+            continue; // not given by the glider: the mission's value and place
         for (const std::string &part : parts)
         {
             m.marks.erase(to + part);
@@ -131,7 +130,7 @@ MissionSpec gliderMission(const MissionSpec &base, const MissionSpec &mission, s
     }
     return m;
 }
-}  // namespace
+} // namespace
 
 MissionSpec fleetGliderMission(const MissionSpec &mission, std::size_t i)
 {
@@ -142,7 +141,7 @@ std::vector<FleetGlider> runFleet(const MissionSpec &mission, const RunOptions &
 {
     const std::size_t n = mission.fleet.size();
     RunOptions each = options;
-    each.progress = {};  // one line per glider instead of each glider's own
+    each.progress = {}; // one line per glider instead of each glider's own
     const MissionSpec base = fleetBase(mission);
     std::mutex loading;
     const auto plan = [&](std::size_t i) {
@@ -193,4 +192,4 @@ std::vector<FleetGlider> runFleet(const MissionSpec &mission, const RunOptions &
     });
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

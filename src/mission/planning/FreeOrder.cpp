@@ -270,5 +270,5 @@ OrderSearch searchFreeOrder(const MissionProblem &problem, LegPlanner &planner, 
     OrderSearcher search(problem, planner, departure, speed, timeLimit);
     return search.run(bestLegs, bestOrder);
 }
-}  // namespace planning_detail
-}  // namespace ompl_glider
+} // namespace planning_detail
+} // namespace ompl_glider

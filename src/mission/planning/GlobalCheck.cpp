@@ -53,7 +53,7 @@ ZermeloParams checkedExtremalParams(const MissionProblem &problem, const std::sh
     zp.headingSamples = 360;
     zp.scanRelTol = 1e-5;
     zp.relTol = 1e-9;
-    zp.groundSpeedBound = speed + 1.1 * ctx->maxCurrent();  // a margin for interpolation overshoot
+    zp.groundSpeedBound = speed + 1.1 * ctx->maxCurrent(); // a margin for interpolation overshoot
     const Point2 s = problem.getStart(), g = problem.getGoal();
     // the miss accepted as "through the goal": far below the goal tolerance, relative to the trip in metres too
     zp.goalTolerance = std::max(1e-9, 1e-9 * std::hypot(g.x - s.x, g.y - s.y));
@@ -65,7 +65,6 @@ namespace
 /// The relative gain below which the planner's route is kept without building the extremal's routes: the
 /// refinement's own resolution.
 constexpr double kCheckTolerance = 1e-3;
-
 
 /// The rescue where the sweep finds no extremal is bounded by its work, not by a clock, so that a problem gets the
 /// same answer on any machine and under any load: the finer scans by construction (kZoomLevels windows of
@@ -82,7 +81,7 @@ constexpr std::uint64_t kLevelSetMinimumUpdates = 2500000;
 std::uint64_t levelSetBudget(const PlannedPath &r)
 {
     std::uint64_t work = kLevelSetUpdatesPerCall * (r.searchCostFunctionCalls + r.postprocessCostFunctionCalls);
-    if (!r.switchedFrom.empty())  // the heading planner's front points (the lattice's search is its own count)
+    if (!r.switchedFrom.empty()) // the heading planner's front points (the lattice's search is its own count)
         work += kLevelSetUpdatesPerPoint * r.expandedVertices;
     return std::max(kLevelSetMinimumUpdates, work);
 }
@@ -125,9 +124,8 @@ struct LevelSetAid
     std::vector<double> seeds;
 };
 
-LevelSetAid levelSetAid(const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<GliderContext> &ctx,
-                        Point2 s, Point2 g, double departure, double tEnd, const std::function<bool()> &stop,
-                        GlobalCheck &check)
+LevelSetAid levelSetAid(const ompl::base::SpaceInformationPtr &si, const std::shared_ptr<GliderContext> &ctx, Point2 s,
+                        Point2 g, double departure, double tEnd, const std::function<bool()> &stop, GlobalCheck &check)
 {
     LevelSetAid aid;
     const PlannerEntry *entry = findPlannerOfFamily(PlannerFamily::LevelSet);
@@ -306,7 +304,7 @@ PlannedPath headingsAlong(const MissionProblem &problem, const std::shared_ptr<c
     for (std::size_t i = 0; i + 1 < extremal.size(); ++i)
     {
         const double dt = extremal[i + 1].t - extremal[i].t;
-        if (dt > 0.0)  // heading theta from +x, counter-clockwise -> bearing clockwise from north
+        if (dt > 0.0) // heading theta from +x, counter-clockwise -> bearing clockwise from north
             schedule.segments.push_back({90.0 - 0.5 * (extremal[i].theta + extremal[i + 1].theta) * kDegPerRad, dt});
     }
     s.segments = 64;
@@ -331,15 +329,15 @@ PlannedPath headingsAlong(const MissionProblem &problem, const std::shared_ptr<c
         reflyRoute(problem, *ctx, c);
     return c;
 }
-}  // namespace
+} // namespace
 
 PlannedPath checkGlobally(const MissionProblem &problem, double departure, const PlanOptions &o, PlannedPath r)
 {
     const MissionSpec &m = problem.getSpec();
     // the check belongs to the post-processing: without refinement the planner's own path is what was asked for
     if (!o.globalCheck.value_or(m.planner.globalCheck) || !o.refinement.value_or(m.planner.refinement) ||
-        !o.planner.empty() || !r.badInput.empty() ||
-        !problem.getMembers().empty() || (r.stints && !r.stints->converted))
+        !o.planner.empty() || !r.badInput.empty() || !problem.getMembers().empty() ||
+        (r.stints && !r.stints->converted))
         return r;
     const PlannerEntry &asked = plannerEntry(r.switchedFrom.empty() ? r.planner : r.switchedFrom);
     if (!asked.lattice())
@@ -369,8 +367,9 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     check.candidates.push_back(plannerCandidate(r));
     ZermeloParams zp = checkedExtremalParams(problem, ctx, r.speed, bound);
     // the check keeps to the plan's time limit (the fallbacks' where none is set): its scans and its level set stop
-    check.timeLimit =
-        o.timeLimit > 0 ? o.timeLimit : m.planner.timeLimit > 0 ? m.planner.timeLimit : kFallbackTimeLimit;
+    check.timeLimit = o.timeLimit > 0           ? o.timeLimit
+                      : m.planner.timeLimit > 0 ? m.planner.timeLimit
+                                                : kFallbackTimeLimit;
     const auto deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                    std::chrono::duration<double>(check.timeLimit));
     zp.stop = [deadline, &check] {
@@ -390,7 +389,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     check.extremalTime = sol.found ? sol.travelTime : kInf;
     PlannedPath best = std::move(r);
     const double planned = best.solved ? best.travelTime : kInf;
-    PlannedPath base;  // what a candidate route inherits from the planner's outcome
+    PlannedPath base; // what a candidate route inherits from the planner's outcome
     base.departure = departure;
     base.speed = best.speed;
     base.planner = best.planner;
@@ -438,7 +437,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
         std::vector<TimedPoint> curve;
         for (const ZermeloState &z : extremal)
             curve.push_back({z.x, z.y, z.t});
-        curve.back().x = g.x;  // within the goal tolerance of it: the route ends on the goal
+        curve.back().x = g.x; // within the goal tolerance of it: the route ends on the goal
         curve.back().y = g.y;
         const bool legs = consider(straightLegsAlong(problem, ctx, ss->getSpaceInformation(), curve, base),
                                    "extremal as straight legs");
@@ -473,5 +472,5 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     best.globalCheck = std::move(check);
     return best;
 }
-}  // namespace planning_detail
-}  // namespace ompl_glider
+} // namespace planning_detail
+} // namespace ompl_glider

@@ -41,7 +41,7 @@ public:
     /// over the trip's time.
     /// @throws Error when the space has no TravelTimeMotionValidator (internal error)
     ArrivalTimer(PlannedPath &r, double begin, double end, double tol, const GliderProblem &gp)
-      : r_(r), B_(begin), E_(end), tol_(tol), P_(r.path), n_(r.path.size() - 1)
+        : r_(r), B_(begin), E_(end), tol_(tol), P_(r.path), n_(r.path.size() - 1)
     {
         ss_ = makeSimpleSetup(gp, &ctx_);
         si_ = ss_->getSpaceInformation();
@@ -54,10 +54,7 @@ public:
     }
 
     /// The cost function calls of the candidates tried so far.
-    std::uint64_t costFunctionCalls() const
-    {
-        return ctx_->travel->costFunctionCalls() - cfc0_;
-    }
+    std::uint64_t costFunctionCalls() const { return ctx_->travel->costFunctionCalls() - cfc0_; }
 
     /// Step 1, the earliest valid arrival: hold at the goal from the arrival @p ta until the window opens.
     bool holdAtGoal(double ta)
@@ -74,7 +71,7 @@ public:
     bool delayAt(std::size_t k)
     {
         const TimedPoint &a = P_[k], &b = P_[k + 1];
-        const bool holdLeg = a.x == b.x && a.y == b.y;  // an existing hold: lengthen it below
+        const bool holdLeg = a.x == b.x && a.y == b.y; // an existing hold: lengthen it below
         if (holdAtWaypoint(k, holdLeg))
             return true;
         return !holdLeg && slowerLeg(k);
@@ -198,7 +195,7 @@ private:
         if (!(hMax > 0.0))
             return false;
         auto fly = [&](double h) {
-            if (holdLeg)  // lengthen the hold k -> k + 1
+            if (holdLeg) // lengthen the hold k -> k + 1
                 return flyOn(k, tk, b.t - tk + h);
             const double dt = legTravelTime(*ctx_, a.x, a.y, b.x, b.y, tk + h);
             return flyOn(k, tk + h, dt);
@@ -227,7 +224,7 @@ private:
     }
 
     PlannedPath &r_;
-    const double B_, E_, tol_;  ///< the window's begin and end, and the rounding tolerance of arrivals
+    const double B_, E_, tol_; ///< the window's begin and end, and the rounding tolerance of arrivals
     /// The planned path (the plan's own, replaced only by the accepted candidate) and the index of its goal
     const std::vector<TimedPoint> &P_;
     const std::size_t n_;
@@ -235,9 +232,9 @@ private:
     ompl::geometric::SimpleSetupPtr ss_;
     ompl::base::SpaceInformationPtr si_;
     std::shared_ptr<TravelTimeMotionValidator> mv_;
-    std::uint64_t cfc0_{0};  ///< the travel time calculator's cost function calls before any candidate
+    std::uint64_t cfc0_{0}; ///< the travel time calculator's cost function calls before any candidate
 };
-}  // namespace
+} // namespace
 
 double holdTimeOf(const std::vector<TimedPoint> &path)
 {
@@ -265,10 +262,10 @@ std::string durationText(const MissionProblem &problem, double d)
 /// Goals in time ([ThompsonICRA] Sec. III, the earliest valid arrival): moves the arrival of a solved plan
 /// into the goal window [begin, end] of the mission. Early: hold at the goal where the glider can (|c| < V over the
 /// hold, TravelTimeMotionValidator::canHold); else time the arrival: from the last waypoint before the goal back to
-/// the start, hold there (where |c| < V) or fly the leg leaving it slower (any pace in its arrival window), the rest of the path flown
-/// as fast as possible (legTravelTime), the delay found by bisection (the arrival of a fastest flight does not
-/// decrease with its departure on each leg, FIFO); the first candidate whose arrival lands in the window and whose
-/// path passes PathGeometric::check() is kept. Late, or no candidate: no path in the window (solved false).
+/// the start, hold there (where |c| < V) or fly the leg leaving it slower (any pace in its arrival window), the rest of
+/// the path flown as fast as possible (legTravelTime), the delay found by bisection (the arrival of a fastest flight
+/// does not decrease with its departure on each leg, FIFO); the first candidate whose arrival lands in the window and
+/// whose path passes PathGeometric::check() is kept. Late, or no candidate: no path in the window (solved false).
 void timeArrival(const MissionProblem &problem, PlannedPath &r)
 {
     const MissionSpec &m = problem.getSpec();
@@ -279,10 +276,10 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
     // the rounding tolerance of the ends given (a via point's window may give one end only, the other infinite)
     const double tol =
         1e-9 * std::max({1.0, std::isfinite(B) ? std::abs(B) : 0.0, std::isfinite(E) ? std::abs(E) : 0.0});
-    const std::string window = !std::isfinite(E)   ? "the arrival window opening at " + timeText(problem, B)
-                               : !std::isfinite(B) ? "the arrival window closing at " + timeText(problem, E)
-                                                   : "the goal's arrival window [" + timeText(problem, B) + ", " +
-                                                         timeText(problem, E) + "]";
+    const std::string window =
+        !std::isfinite(E)   ? "the arrival window opening at " + timeText(problem, B)
+        : !std::isfinite(B) ? "the arrival window closing at " + timeText(problem, E)
+                            : "the goal's arrival window [" + timeText(problem, B) + ", " + timeText(problem, E) + "]";
     const double ta = r.path.back().t;
     if (ta > E + tol)
     {
@@ -301,8 +298,8 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
     GliderProblem gp = checkedProblem(problem, r.departure, r.speed);
     if (B > gp.t0 + gp.horizon)
     {
-        failArrival(r, window + " opens after the planning horizon ends (" + timeText(problem, gp.t0 + gp.horizon) +
-                           ")");
+        failArrival(r,
+                    window + " opens after the planning horizon ends (" + timeText(problem, gp.t0 + gp.horizon) + ")");
         return;
     }
     ArrivalTimer timer(r, B, E, tol, gp);
@@ -330,5 +327,5 @@ void timeArrival(const MissionProblem &problem, PlannedPath &r)
                            " opens; the glider cannot hold at the goal (the current reaches its speed there) and no "
                            "slower leg or hold at an earlier waypoint lands the arrival in the window");
 }
-}  // namespace planning_detail
-}  // namespace ompl_glider
+} // namespace planning_detail
+} // namespace ompl_glider

@@ -50,8 +50,8 @@ namespace
 /// A heading route whose accurate re-flight ends farther from the goal than allowed: its last segment re-aimed on the
 /// accurate flight (reaimOnReflight()); the route's waypoints and times become the accurate flight's. False when that
 /// fails (nothing changed).
-bool reaimLastSegment(const MissionProblem &problem, const GliderContext &ctx, const ReflightSettings &s,
-                      double radius, PlannedPath &r)
+bool reaimLastSegment(const MissionProblem &problem, const GliderContext &ctx, const ReflightSettings &s, double radius,
+                      PlannedPath &r)
 {
     HeadingRoute route = *r.headings;
     const HeadingSegment before = route.segments.back();
@@ -74,7 +74,7 @@ bool reaimLastSegment(const MissionProblem &problem, const GliderContext &ctx, c
     r.reflownEndDistance = std::hypot(f.end.x - problem.getGoal().x, f.end.y - problem.getGoal().y);
     return true;
 }
-}  // namespace
+} // namespace
 
 void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, PlannedPath &r)
 {
@@ -93,8 +93,8 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
         r.reflownTravelTime = f.end.t - r.departure;
         // within the goal tolerance, or so close that still water would close the gap in 1e-6 of the trip (a long
         // route through a sensitive flow, where two accurate integrators part by more than a tight tolerance)
-        const double radius = std::max(problem.gliderProblem(r.departure, r.speed).goalTolerance,
-                                       1e-6 * r.speed * r.travelTime);
+        const double radius =
+            std::max(problem.gliderProblem(r.departure, r.speed).goalTolerance, 1e-6 * r.speed * r.travelTime);
         if (f.ok && !f.grounded && !(r.reflownEndDistance <= radius) && reaimLastSegment(problem, ctx, s, radius, r))
             return;
         if (!f.ok || f.grounded || !(r.reflownEndDistance <= radius))
@@ -140,8 +140,8 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
         smoothed = raw;
     if (later(path, smoothed))
     {
-        r.reflightNote = path.empty() ? "the final path fails its accurate re-flight (" + why + ")" :
-                                        "the final path arrives later than the path before it when re-flown";
+        r.reflightNote = path.empty() ? "the final path fails its accurate re-flight (" + why + ")"
+                                      : "the final path arrives later than the path before it when re-flown";
         r.reflightNote += "; the earlier stage is flown instead";
         r.reflightFallback = ReflightFallback::EarlierStage;
         planner = smoothed.size() == r.smoothed.size() ? r.smoothedTravelTime : r.rawTravelTime;
@@ -172,8 +172,7 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
     r.reflownEndDistance = 0.0;
 }
 
-PlannedPath switchToHeadings(const MissionProblem &problem, double departure, const PlanOptions &o,
-                             PlannedPath failed)
+PlannedPath switchToHeadings(const MissionProblem &problem, double departure, const PlanOptions &o, PlannedPath failed)
 {
     if (failed.solved || !failed.badInput.empty() || !o.planner.empty() || !problem.getMembers().empty() ||
         !o.headingFallback.value_or(true))
@@ -181,7 +180,7 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     const PlannerEntry &asked = plannerEntry(failed.planner);
     if (!asked.lattice())
         return failed;
-    bool byModelLand = false;  // no heading reaches water the forecast's land cuts off
+    bool byModelLand = false; // no heading reaches water the forecast's land cuts off
     if (!enclosure(problem, departure, &byModelLand).empty() && byModelLand)
         return failed;
     // the lattice's advice (a finer grid, ...) is moot once another planner has been asked
@@ -215,15 +214,15 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     // no route of either kind: the level set's cause and findings, with what the asked planner's search bounds
     const bool timedOut = r.noPath.cause == NoPathCause::TimeLimit;
     NoPath none = r.noPath;
-    none.what = (none.proven() ? "no path exists: " : "no path found: ") +
-                (timedOut ? "the level set, after " + headings.name + ", each with " +
-                                std::string(o.timeLimit > 0 || m.planner.timeLimit > 0
-                                                ? "the time limit"
-                                                : "the fallback's default time limit") +
-                                ": "
-                          : std::string()) +
-                r.noPath.text() + " (" + asked.name + " found none on its lattice, nor " + headings.name +
-                    " with held headings)";
+    none.what =
+        (none.proven() ? "no path exists: " : "no path found: ") +
+        (timedOut ? "the level set, after " + headings.name + ", each with " +
+                        std::string(o.timeLimit > 0 || m.planner.timeLimit > 0 ? "the time limit"
+                                                                               : "the fallback's default time limit") +
+                        ": "
+                  : std::string()) +
+        r.noPath.text() + " (" + asked.name + " found none on its lattice, nor " + headings.name +
+        " with held headings)";
     none.advice.clear();
     none.bound = failed.noPath.bound;
     none.boundSpan = failed.noPath.boundSpan;
@@ -233,5 +232,5 @@ PlannedPath switchToHeadings(const MissionProblem &problem, double departure, co
     failed.planningSeconds = r.planningSeconds;
     return failed;
 }
-}  // namespace planning_detail
-}  // namespace ompl_glider
+} // namespace planning_detail
+} // namespace ompl_glider

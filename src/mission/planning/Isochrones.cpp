@@ -37,7 +37,7 @@ std::optional<ReachableSet> reachableSetOf(const MissionProblem &problem, const 
     }
     throw Error("isochrones: no registered planner computes the reachable set");
 }
-}  // namespace
+} // namespace
 
 IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath &plan, double departure,
                                double interval)
@@ -45,7 +45,7 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
     const MissionSpec &m = problem.getSpec();
     const double speed = plan.speed > 0.0 ? plan.speed : m.vehicle.speed;
     const GliderProblem gp = problem.gliderProblem(departure, speed);
-    std::shared_ptr<GliderContext> ctx;  // one context: the horizon's and the planner's
+    std::shared_ptr<GliderContext> ctx; // one context: the horizon's and the planner's
     const std::shared_ptr<GliderSimpleSetup> ss = makeSimpleSetup(gp, &ctx);
     const double horizon = std::min(gp.horizon, ctx->field->timeEnd() - departure);
     const double span = plan.solved && std::isfinite(plan.travelTime) ? std::min(plan.travelTime, horizon) : horizon;
@@ -88,7 +88,7 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
         Isochrone c;
         c.time = absolute[k];
         c.lines = r->lines[k];
-        c.iso = problem.isoTime(c.time);  // empty without dates
+        c.iso = problem.isoTime(c.time); // empty without dates
         if (problem.isGeographic())
         {
             for (const auto &line : c.lines)
@@ -104,4 +104,4 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
     }
     return out;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -70,4 +70,4 @@ std::vector<PlannedLeg> flyOrder(LegPlanner &planner, const std::vector<std::siz
 /// leg plans): the best order and its legs into @p bestOrder and @p bestLegs.
 OrderSearch searchFreeOrder(const MissionProblem &problem, LegPlanner &planner, double departure, double speed,
                             double timeLimit, std::vector<PlannedLeg> &bestLegs, std::vector<std::size_t> &bestOrder);
-}  // namespace ompl_glider::planning_detail
+} // namespace ompl_glider::planning_detail

@@ -122,8 +122,8 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
         why.leg = bad.index + 1;
         why.what = leg + why.what;
         if (bad.plan.badInput == "departure.time" && bad.index > 0)
-            why.what = leg + "it would depart at " + timeText(problem, bad.plan.departure) +
-                       ", after the end of the forecast";
+            why.what =
+                leg + "it would depart at " + timeText(problem, bad.plan.departure) + ", after the end of the forecast";
         r.setNoPath(std::move(why));
         r.badInput = legBadInput(bad.plan.badInput, bad.fromVia,
                                  bad.toVia < 0 ? static_cast<int>(m.waypoints.size()) : bad.toVia, m.waypoints.size(),
@@ -244,14 +244,12 @@ const PlannedLeg &LegPlanner::leg(int from, int to, double t)
     return cache_.emplace(key, std::move(l)).first->second;
 }
 
-
 std::string LegPlanner::stayProblem(const PlannedLeg &l) const
 {
     if (!(l.stay > 0.0) || !l.plan.solved)
         return "";
     return whyNoStay(problem_, l.toPoint, l.arrival(), l.arrival() + l.stay, l.plan.speed);
 }
-
 
 /// The legs of @p order from @p departure, in turn, until the goal or the first leg without a route (or a stay that
 /// cannot be held: that leg is kept, marked unsolved with the reason).
@@ -270,8 +268,9 @@ std::vector<PlannedLeg> flyOrder(LegPlanner &planner, const std::vector<std::siz
         {
             l.plan.solved = false;
             l.plan.status = PlanStatus::NoPath;
-            l.plan.setNoPath({NoPathCause::ArrivalWindow,
-                              "stay at " + l.to + " for " + durationText(planner.stops().problem, l.stay) + ": " + why});
+            l.plan.setNoPath(
+                {NoPathCause::ArrivalWindow,
+                 "stay at " + l.to + " for " + durationText(planner.stops().problem, l.stay) + ": " + why});
         }
         legs.push_back(std::move(l));
         if (!legs.back().plan.solved)
@@ -282,7 +281,7 @@ std::vector<PlannedLeg> flyOrder(LegPlanner &planner, const std::vector<std::siz
     return legs;
 }
 
-}  // namespace planning_detail
+} // namespace planning_detail
 
 OptimumReference missionOptimumReference(const MissionProblem &problem, const MissionResult &result)
 {

@@ -25,7 +25,7 @@ struct WaterGraph
 {
     std::size_t nx{0}, ny{0};
     double x0{0.0}, y0{0.0}, h{1.0};
-    std::vector<std::uint8_t> open;  ///< the point is in water (and free)
+    std::vector<std::uint8_t> open; ///< the point is in water (and free)
 
     Point2 at(std::size_t i, std::size_t j) const
     {
@@ -139,7 +139,7 @@ std::string durationOf(const MissionSpec &m, double t)
     return m.physicalUnits().time ? text::durationText(t * m.timeUnitSeconds) : text::number(t, 6) + " time units";
 }
 
-}  // namespace
+} // namespace
 
 std::string enclosure(const MissionProblem &problem, double t0, bool *byModelLand)
 {
@@ -153,12 +153,12 @@ std::string enclosure(const MissionProblem &problem, double t0, bool *byModelLan
     double h = side / 250.0;
     if (gridded)
         h = std::min(h, 0.5 * gridded->minCellSize());
-    h = std::max(h, std::sqrt((box.xMax - box.xMin) * (box.yMax - box.yMin) / 250000.0));  // at most 250000 points
+    h = std::max(h, std::sqrt((box.xMax - box.xMin) * (box.yMax - box.yMin) / 250000.0)); // at most 250000 points
     if (!(h > 0.0) || !std::isfinite(h))
         return "";
     const double z = m.vehicle.depth;
-    const Environment *env = problem.getEnvironment() && problem.getEnvironment()->isStatic() ?
-                                 problem.getEnvironment().get() : nullptr;
+    const Environment *env =
+        problem.getEnvironment() && problem.getEnvironment()->isStatic() ? problem.getEnvironment().get() : nullptr;
     const Point2 s = problem.getStart(), g = problem.getGoal();
     // the forecast's own land first: a passage closed at the model's resolution
     const Connection water = connection(waterGraph(problem, nullptr, z, t0, h), field, nullptr, z, t0, s, g);
@@ -174,17 +174,17 @@ std::string enclosure(const MissionProblem &problem, double t0, bool *byModelLan
         return "";
     const bool startSide = c.startPoints <= c.goalPoints;
     const double area = static_cast<double>(startSide ? c.startPoints : c.goalPoints) * h * h;
-    std::string what = std::string(startSide ? "the start" : "the goal") + " is enclosed: the water around it (" +
-                       (m.physicalUnits().length ?
-                            text::number(area * std::pow(m.metresPerUnit() / 1000.0, 2), 3) + " km2" :
-                            text::number(area, 3) + " square units") +
-                       ") does not reach " + (startSide ? "the goal" : "the start") + "'s";
+    std::string what =
+        std::string(startSide ? "the start" : "the goal") + " is enclosed: the water around it (" +
+        (m.physicalUnits().length ? text::number(area * std::pow(m.metresPerUnit() / 1000.0, 2), 3) + " km2"
+                                  : text::number(area, 3) + " square units") +
+        ") does not reach " + (startSide ? "the goal" : "the start") + "'s";
     if (!water.connected)
         what += gridded ? ", closed by the forecast's land at its resolution (cells of " +
                               lengthText(m, gridded->minCellSize()) +
                               ": a passage narrower than a model cell is closed); a forecast on a finer grid, or " +
-                              "other start and goal points, may help" :
-                          ", closed by the current field's land; choose other start and goal points";
+                              "other start and goal points, may help"
+                        : ", closed by the current field's land; choose other start and goal points";
     else
         what += ", closed by forbidden regions, coastline polygons or the keep-off distance" +
                 std::string(m.safety.keepOff > 0.0 ? " (keep-off " + lengthText(m, m.safety.keepOff) + ")" : "") +
@@ -213,16 +213,18 @@ void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
     const Point2 s = problem.getStart(), g = problem.getGoal();
     const double distance = std::hypot(g.x - s.x, g.y - s.y);
     const double fieldEnd = problem.getField()->timeEnd();
-    const bool forecastBound = std::isfinite(fieldEnd) &&
-                               gp.t0 + gp.horizon >= fieldEnd - 1e-9 * std::max(1.0, std::abs(fieldEnd));
+    const bool forecastBound =
+        std::isfinite(fieldEnd) && gp.t0 + gp.horizon >= fieldEnd - 1e-9 * std::max(1.0, std::abs(fieldEnd));
     if (enclosed.empty() && forecastBound)
     {
         const std::string end = problem.isoTime(fieldEnd);
         std::string f = "the forecast ends " + (end.empty() ? "" : "at " + end + ", ") + durationOf(m, gp.horizon) +
                         " after the departure";
         if (distance / (speed + cMax) > gp.horizon)
-            f += ", sooner than the glider can cover the " + lengthText(m, distance) + " to the goal even with the "
-                 "strongest current behind it (at least " + durationOf(m, distance / (speed + cMax)) + ")";
+            f += ", sooner than the glider can cover the " + lengthText(m, distance) +
+                 " to the goal even with the "
+                 "strongest current behind it (at least " +
+                 durationOf(m, distance / (speed + cMax)) + ")";
         else
             f += ", before the glider reaches the goal";
         findings.push_back(f + ": plan on its last field past its end (" + m.term("current.horizon: hold_last") +
@@ -238,10 +240,10 @@ void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
                       "(%.1f kn): it carries the glider off faster than it makes way; a faster vehicle (%s) or "
                       "another departure may help",
                       cMax * ms, cMax * ms * kn, speed * ms, speed * ms * kn, m.term("vehicle.speed").c_str());
-        findings.push_back(m.physicalUnits().length && m.physicalUnits().time ?
-                               std::string(buf) :
-                               "the current reaches up to " + text::number(cMax, 4) + " against the glider's V = " +
-                                   text::number(speed, 4) + ": a faster vehicle or another departure may help");
+        findings.push_back(m.physicalUnits().length && m.physicalUnits().time
+                               ? std::string(buf)
+                               : "the current reaches up to " + text::number(cMax, 4) + " against the glider's V = " +
+                                     text::number(speed, 4) + ": a faster vehicle or another departure may help");
     }
     if (findings.empty())
         return;
@@ -255,5 +257,5 @@ void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
     n.boundText.clear();
     r.setNoPath(std::move(n));
 }
-}  // namespace planning_detail
-}  // namespace ompl_glider
+} // namespace planning_detail
+} // namespace ompl_glider

@@ -25,14 +25,16 @@ NoPath noPathReason(const ompl::base::PlannerStatus &status, const ompl::base::P
         return {NoPathCause::Approximate, "the planner reached only an approximate solution within the time limit"};
     if (status == ompl::base::PlannerStatus::TIMEOUT)
     {
-        NoPath n{NoPathCause::TimeLimit, "the time limit (" + text::number(timeLimit) + " s) ended the search before "
-                                         "a path was found: raise it (" + m.term("planner.time_limit") +
-                                         ") or shorten the planning horizon (" + m.term("planner.horizon") + ")"};
+        NoPath n{NoPathCause::TimeLimit, "the time limit (" + text::number(timeLimit) +
+                                             " s) ended the search before "
+                                             "a path was found: raise it (" +
+                                             m.term("planner.time_limit") + ") or shorten the planning horizon (" +
+                                             m.term("planner.horizon") + ")"};
         n.timeLimit = timeLimit;
         return n;
     }
-    const bool bad = status == ompl::base::PlannerStatus::INVALID_START ||
-                     status == ompl::base::PlannerStatus::INVALID_GOAL;
+    const bool bad =
+        status == ompl::base::PlannerStatus::INVALID_START || status == ompl::base::PlannerStatus::INVALID_GOAL;
     return {bad ? NoPathCause::BadInput : NoPathCause::Other, std::string("planner status: ") + status.asString()};
 }
 
@@ -41,8 +43,8 @@ void boundArrival(const MissionProblem &problem, const GliderProblem &gp, NoPath
 {
     // in the mission's own units: days and hours where it has a time unit, else the field's number
     const MissionSpec &m = problem.getSpec();
-    const std::string span = m.physicalUnits().time ? text::durationText(gp.horizon * m.timeUnitSeconds) :
-                                                      text::number(gp.horizon, 6) + " time units";
+    const std::string span = m.physicalUnits().time ? text::durationText(gp.horizon * m.timeUnitSeconds)
+                                                    : text::number(gp.horizon, 6) + " time units";
     const double fieldEnd = problem.getField()->timeEnd();
     n.boundSpan = gp.horizon;
     if (std::isfinite(fieldEnd) && gp.t0 + gp.horizon >= fieldEnd - 1e-9 * std::max(1.0, std::abs(fieldEnd)))
@@ -57,5 +59,5 @@ void boundArrival(const MissionProblem &problem, const GliderProblem &gp, NoPath
     n.boundText = "; the path must arrive within the planning horizon, " + span + " after departure (" +
                   m.term("planner.horizon") + ")";
 }
-}  // namespace planning_detail
-}  // namespace ompl_glider
+} // namespace planning_detail
+} // namespace ompl_glider

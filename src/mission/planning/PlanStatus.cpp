@@ -11,20 +11,20 @@ static_assert(static_cast<int>(PlanStatus::ExactSolution) == ompl::base::Planner
 static_assert(static_cast<int>(PlanStatus::Abort) == ompl::base::PlannerStatus::ABORT);
 static_assert(static_cast<int>(PlanStatus::NoPath) == ompl::base::PlannerStatus::TYPE_COUNT);
 constexpr int kLast = static_cast<int>(PlanStatus::Stopped);
-}  // namespace
+} // namespace
 
 std::string statusText(PlanStatus status)
 {
     switch (status)
     {
-        case PlanStatus::NoPath:
-            return "No path";
-        case PlanStatus::Stopped:
-            return "Stopped";
-        case PlanStatus::Abort:
-            return "Abort";  // OMPL 1.5's asString() says "Unknown status" for ABORT, as for UNKNOWN
-        default:
-            return ompl::base::PlannerStatus(static_cast<ompl::base::PlannerStatus::StatusType>(status)).asString();
+    case PlanStatus::NoPath:
+        return "No path";
+    case PlanStatus::Stopped:
+        return "Stopped";
+    case PlanStatus::Abort:
+        return "Abort"; // OMPL 1.5's asString() says "Unknown status" for ABORT, as for UNKNOWN
+    default:
+        return ompl::base::PlannerStatus(static_cast<ompl::base::PlannerStatus::StatusType>(status)).asString();
     }
 }
 
@@ -41,4 +41,4 @@ PlanStatus planStatusOfOmpl(int omplStatus)
     return omplStatus >= 0 && omplStatus < ompl::base::PlannerStatus::TYPE_COUNT ? static_cast<PlanStatus>(omplStatus)
                                                                                  : PlanStatus::Unknown;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -51,8 +51,9 @@ void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
     {
         if (name == "grid_size" || name == "sectors" || name == "smooth" || name == "refine")
             throw Error(parameterPlace(m, name) + ": set it as planner." +
-                        (name == "smooth" ? std::string("smoothing") :
-                         name == "refine" ? std::string("refinement") : name) +
+                        (name == "smooth"   ? std::string("smoothing")
+                         : name == "refine" ? std::string("refinement")
+                                            : name) +
                         ", which every planner of the pipeline honours");
         if (params.hasParam(name))
         {
@@ -66,7 +67,7 @@ void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
             {
                 accepted = params.setParam(name, value);
             }
-            catch (const std::exception &e)  // a setter that refuses the value with its own reason
+            catch (const std::exception &e) // a setter that refuses the value with its own reason
             {
                 throw Error(parameterPlace(m, name) + ": " + e.what());
             }
@@ -102,7 +103,7 @@ void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
         }
     }
 }
-}  // namespace
+} // namespace
 
 std::string parameterPlace(const MissionSpec &m, const std::string &name)
 {
@@ -123,8 +124,8 @@ RefinerParams refinerParams(const MissionSpec &m)
         const bool inRange = v >= kMinRefinerEvaluations && v <= kMaxRefinerEvaluations;
         if (end == it->second.c_str() || *end != '\0' || !inRange || v != std::floor(v))
             throw Error(parameterPlace(m, it->first) + ": expected an integer in " +
-                        text::number(kMinRefinerEvaluations) + ".." + text::number(kMaxRefinerEvaluations) +
-                        ", got '" + it->second + "'");
+                        text::number(kMinRefinerEvaluations) + ".." + text::number(kMaxRefinerEvaluations) + ", got '" +
+                        it->second + "'");
         rp.maxEvaluations = static_cast<unsigned>(v);
     }
     return rp;
@@ -142,7 +143,7 @@ ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::ba
     // name through OMPL's ParamSet. The pipeline smooths and refines every planner's path alike, so the planner's own
     // smoothing and refinement are off.
     const std::pair<const char *, std::string> settings[] = {
-        {"grid_size", text::number(grid, 17)},  // 17 digits: the same double back
+        {"grid_size", text::number(grid, 17)}, // 17 digits: the same double back
         {"sectors", std::to_string(sectors)},
         {"smooth", "0"},
         {"refine", "0"}};
@@ -188,19 +189,20 @@ GliderProblem checkedProblem(const MissionProblem &problem, double departure, do
     return gp;
 }
 
-}  // namespace planning_detail
+} // namespace planning_detail
 
 StintSettings stintSettings(const MissionProblem &problem, double departure)
 {
     const MissionSpec &m = problem.getSpec();
-    StintSettings s = m.stints;  // the section's settings, read at the vehicle's depth
+    StintSettings s = m.stints; // the section's settings, read at the vehicle's depth
     s.depth = m.vehicle.depth;
     const double end = problem.getField()->timeEnd();
     if (std::isfinite(end) && departure + s.missionDuration > end * (1.0 + 1e-12))
-        throw Error(m.place("stints.mission_duration") + ": the mission would end at t = " +
-                    text::number(departure + s.missionDuration) + ", after the forecast (it ends at t = " +
-                    text::number(end) + "): shorten it, depart earlier, or hold the last forecast time "
+        throw Error(m.place("stints.mission_duration") +
+                    ": the mission would end at t = " + text::number(departure + s.missionDuration) +
+                    ", after the forecast (it ends at t = " + text::number(end) +
+                    "): shorten it, depart earlier, or hold the last forecast time "
                     "(current.horizon: hold_last)");
     return s;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

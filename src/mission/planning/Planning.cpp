@@ -97,8 +97,7 @@ void checkGoalWindow(const MissionProblem &problem)
     if (w.begin > horizonEnd)
         throw Error(m.place("goal.window.begin") + ": the arrival window opens at " + timeText(problem, w.begin) +
                     ", after the planning horizon ends (" + timeText(problem, horizonEnd) +
-                    (std::isfinite(problem.getField()->timeEnd()) &&
-                             horizonEnd >= problem.getField()->timeEnd() - 1e-9
+                    (std::isfinite(problem.getField()->timeEnd()) && horizonEnd >= problem.getField()->timeEnd() - 1e-9
                          ? ": the end of the forecast"
                          : ": planner.horizon") +
                     ")");
@@ -127,9 +126,10 @@ void checkViaWindows(const MissionProblem &problem)
             t += std::hypot(p.x - at.x, p.y - at.y) / fastest;
         const std::string field = "waypoints[" + std::to_string(i) + "]";
         if (v.arrive.set && v.arrive.end < t)
-            throw Error(m.place(field + ".arrive.end") + " (via point '" + v.name + "'): the arrival window closes at " +
-                        timeText(problem, v.arrive.end) + ", before the glider can get there (no earlier than " +
-                        timeText(problem, t) + " at its speed plus the fastest current)");
+            throw Error(m.place(field + ".arrive.end") + " (via point '" + v.name +
+                        "'): the arrival window closes at " + timeText(problem, v.arrive.end) +
+                        ", before the glider can get there (no earlier than " + timeText(problem, t) +
+                        " at its speed plus the fastest current)");
         t = std::max(t, v.arrive.set ? v.arrive.begin : t) + v.stay;
         at = p;
     }
@@ -156,7 +156,7 @@ double chooseDeparture(const MissionProblem &problem, const RunOptions &options,
     result.departureSearch = optimalDepartureTime(fine, p, coarse);
     return result.departureSearch->found ? result.departureSearch->departure : m.departure.begin;
 }
-}  // namespace
+} // namespace
 
 /// planRoute() on the problem's one field.
 PlannedPath planOnField(const MissionProblem &problem, double departure, const PlanOptions &o)
@@ -207,9 +207,9 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     ss->setPlanner(planner);
     r.straightLineTime = legTravelTime(*ctx, s.x, s.y, g.x, g.y, departure);
 
-    const double limit = o.timeLimit > 0        ? o.timeLimit
+    const double limit = o.timeLimit > 0           ? o.timeLimit
                          : m.planner.timeLimit > 0 ? m.planner.timeLimit
-                         : (entry.runsToItsEnd() ? 0.0 : kDefaultSamplingTimeLimit);
+                                                   : (entry.runsToItsEnd() ? 0.0 : kDefaultSamplingTimeLimit);
     const std::uint64_t cfc0 = ctx->travel->costFunctionCalls(), cmc0 = ctx->field->callCount();
     const auto tA = std::chrono::steady_clock::now();
     // the time limit, or a stop request (StopRequest.h: Python's Ctrl-C)
@@ -269,7 +269,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
         }
         if (why.cause == NoPathCause::LatticeExhausted)
         {
-            r.status = PlanStatus::NoPath;  // OMPL's ABORT or TIMEOUT would send the user after a longer time limit
+            r.status = PlanStatus::NoPath; // OMPL's ABORT or TIMEOUT would send the user after a longer time limit
             boundArrival(problem, gp, why);
         }
         r.setNoPath(std::move(why));
@@ -305,12 +305,13 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     }
     return r;
 }
-}  // namespace planning_detail
+} // namespace planning_detail
 
 PlannedPath planRoute(const MissionProblem &problem, double departure, const PlanOptions &o)
 {
     using namespace planning_detail;
-    PlannedPath r = problem.getMembers().empty() ? planOnField(problem, departure, o) : planRobust(problem, departure, o);
+    PlannedPath r =
+        problem.getMembers().empty() ? planOnField(problem, departure, o) : planRobust(problem, departure, o);
     r = switchToHeadings(problem, departure, o, std::move(r));
     r = checkGlobally(problem, departure, o, std::move(r));
     timeArrival(problem, r);
@@ -328,7 +329,7 @@ TravelTimeOfDeparture departureFunction(const MissionProblem &problem, double gr
         o.sectors = sectors;
         o.smoothing = false;
         o.refinement = false;
-        o.globalCheck = false;  // the departure's supporting points compare the planner's raw times
+        o.globalCheck = false; // the departure's supporting points compare the planner's raw times
         try
         {
             const PlannedPath p = planMission(problem, tDep, o).plan;
@@ -339,7 +340,7 @@ TravelTimeOfDeparture departureFunction(const MissionProblem &problem, double gr
         }
         catch (const Error &)
         {
-            return kInf;  // e.g. a departure outside the forecast: no trip from there
+            return kInf; // e.g. a departure outside the forecast: no trip from there
         }
     };
 }
@@ -375,7 +376,7 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     result.orderSearch = std::move(mission.orderSearch);
     result.departureIso = problem.isoTime(result.plan.departure);
     if (result.legs.empty())
-        diagnoseNoPath(problem, tDep, result.plan);  // (each leg of a longer mission was diagnosed as planned)
+        diagnoseNoPath(problem, tDep, result.plan); // (each leg of a longer mission was diagnosed as planned)
     if (result.plan.solved)
     {
         PilotWaypoints w = missionWaypoints(problem, result.plan, result.legs);
@@ -395,7 +396,7 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
         result.forecastNotes.push_back(note);
 #if OMPL_GLIDER_WITH_NETCDF
     if (const std::string note = observationNote(problem); !note.empty())
-        result.forecastNotes.push_back(note);  // how the glider's DAC corrected the forecast
+        result.forecastNotes.push_back(note); // how the glider's DAC corrected the forecast
     if (const std::string note = correctionNote(problem); !note.empty())
         result.forecastNotes.push_back("the correction learned from the DAC: " + note);
 #endif
@@ -415,16 +416,16 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     {
         // Any flown path bounds the optimum; without one, the planning horizon does.
         const double horizon = problem.gliderProblem(tDep, result.plan.speed).horizon;
-        result.optimum = optimumReference(problem, tDep, result.plan.speed,
-                                          result.plan.solved ? std::min(horizon, 1.2 * result.plan.travelTime)
-                                                             : horizon);
+        result.optimum =
+            optimumReference(problem, tDep, result.plan.speed,
+                             result.plan.solved ? std::min(horizon, 1.2 * result.plan.travelTime) : horizon);
     }
     const std::vector<double> speeds = options.speeds ? *options.speeds : m.speeds;
     if (!speeds.empty())
         result.speedSweep = speedSweep(problem, tDep, speeds, options.progress);
     if (m.execution.enabled)
     {
-        std::vector<ExecutionLeg> legs;  // a mission of several legs: each leg's end and held headings
+        std::vector<ExecutionLeg> legs; // a mission of several legs: each leg's end and held headings
         for (const PlannedLeg &l : result.legs)
             legs.push_back({l.lastPoint, l.plan.headings});
         result.execution = executeMission(problem, result.plan, legs, options.progress);
@@ -434,4 +435,4 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     result.wallSeconds = secondsSince(start);
     return result;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

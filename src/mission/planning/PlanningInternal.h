@@ -72,13 +72,12 @@ GliderProblem checkedProblem(const MissionProblem &problem, double departure, do
 
 // WorkEstimates.cpp: the limits of the work a parameter controls (refused up front, with the estimate)
 
-inline constexpr double kMaxSurfacingsPerFlight = 1e5;  ///< surfacings of one flown execution
-inline constexpr double kMaxSurfacings = 2e7;           ///< surfacings of all runs and strategies of an execution
-inline constexpr std::size_t kMaxIsochrones = 1000;     ///< isochrones of the isochrone output
+inline constexpr double kMaxSurfacingsPerFlight = 1e5; ///< surfacings of one flown execution
+inline constexpr double kMaxSurfacings = 2e7;          ///< surfacings of all runs and strategies of an execution
+inline constexpr std::size_t kMaxIsochrones = 1000;    ///< isochrones of the isochrone output
 
 /// Refuses an execution whose surfacing interval gives too many surfacings over @p window per flight, or in all.
-void checkExecutionWork(const MissionSpec &m, double interval, double window, std::size_t runs,
-                        std::size_t strategies);
+void checkExecutionWork(const MissionSpec &m, double interval, double window, std::size_t runs, std::size_t strategies);
 
 // NoPathReason.cpp
 
@@ -131,8 +130,9 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
 
 // HeadingRoutes.cpp
 
-/// The result of a planner that returned a heading route (PipelinePlanner::lastHeadingRoute()): the route flown once more by the one
-/// integrator at a fine step, its segment ends as the path, its track kept; no smoothing or waypoint refinement.
+/// The result of a planner that returned a heading route (PipelinePlanner::lastHeadingRoute()): the route flown once
+/// more by the one integrator at a fine step, its segment ends as the path, its track kept; no smoothing or waypoint
+/// refinement.
 PlannedPath headingResult(const MissionProblem &problem, const GliderContext &ctx, const HeadingRoute &route,
                           PlannedPath r);
 
@@ -144,8 +144,7 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
 /// The default's switch: a lattice planner that found no path on a well-formed problem hands over to the
 /// heading planner (Isochrone), and that one to the level set; "no path" stays only when the level set's front
 /// never reaches the goal within the time window. Returns @p failed unchanged for other planners and outcomes.
-PlannedPath switchToHeadings(const MissionProblem &problem, double departure, const PlanOptions &o,
-                             PlannedPath failed);
+PlannedPath switchToHeadings(const MissionProblem &problem, double departure, const PlanOptions &o, PlannedPath failed);
 
 // Ensembles.cpp
 
@@ -176,5 +175,5 @@ void addPlanningWork(PlannedPath &to, const PlannedPath &from);
 /// "planned past the forecast's last time (DATE) on its last field, held frozen for the last 5 d 2.0 h of the route
 /// (...)"; empty otherwise.
 std::string frozenFieldNote(const MissionProblem &problem, const PlannedPath &plan);
-}  // namespace planning_detail
-}  // namespace ompl_glider
+} // namespace planning_detail
+} // namespace ompl_glider

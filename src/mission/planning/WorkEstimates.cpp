@@ -18,21 +18,21 @@ namespace ompl_glider
 {
 namespace planning_detail
 {
-void checkExecutionWork(const MissionSpec &m, double interval, double window, std::size_t runs,
-                        std::size_t strategies)
+void checkExecutionWork(const MissionSpec &m, double interval, double window, std::size_t runs, std::size_t strategies)
 {
     const double perFlight = std::ceil(window / interval);
     const double total = perFlight * static_cast<double>(runs) * static_cast<double>(strategies);
     if (perFlight <= kMaxSurfacingsPerFlight && total <= kMaxSurfacings)
         return;
-    throw Error(m.place("execution.surfacing_interval") +
-                text::formatted(": a surfacing interval of %g gives up to %.3g surfacings per flight over %.4g", interval,
-                       perFlight, window) +
-                text::formatted(" (%.3g in all: %.0f runs x %.0f strategies)", total, static_cast<double>(runs),
-                       static_cast<double>(strategies)) +
-                text::formatted(", more than the limit of %.3g per flight and %.3g in all: use a longer surfacing interval, "
-                       "fewer batch pairs or a shorter execution.duration",
-                       kMaxSurfacingsPerFlight, kMaxSurfacings));
+    throw Error(
+        m.place("execution.surfacing_interval") +
+        text::formatted(": a surfacing interval of %g gives up to %.3g surfacings per flight over %.4g", interval,
+                        perFlight, window) +
+        text::formatted(" (%.3g in all: %.0f runs x %.0f strategies)", total, static_cast<double>(runs),
+                        static_cast<double>(strategies)) +
+        text::formatted(", more than the limit of %.3g per flight and %.3g in all: use a longer surfacing interval, "
+                        "fewer batch pairs or a shorter execution.duration",
+                        kMaxSurfacingsPerFlight, kMaxSurfacings));
 }
-}  // namespace planning_detail
-}  // namespace ompl_glider
+} // namespace planning_detail
+} // namespace ompl_glider

@@ -23,7 +23,7 @@ std::optional<Point2> nearestWater(const CurrentField &field, Point2 p, double z
     struct Near
     {
         double d;
-        Point2 q, n, t;  // closest point, edge normal, unit vector from q into the edge (zero at its middle)
+        Point2 q, n, t; // closest point, edge normal, unit vector from q into the edge (zero at its middle)
     };
     std::vector<Near> near;
     for (const Segment2 &e : field.landBoundary(z))
@@ -34,8 +34,8 @@ std::optional<Point2> nearestWater(const CurrentField &field, Point2 p, double z
         const double s = std::clamp(((p.x - e.a.x) * dx + (p.y - e.a.y) * dy) / len2, 0.0, 1.0);
         const Point2 q{e.a.x + s * dx, e.a.y + s * dy};
         const double len = std::sqrt(len2), in = s < 0.5 ? 1.0 : -1.0;
-        near.push_back({std::hypot(q.x - p.x, q.y - p.y), q, Point2{-dy / len, dx / len},
-                        Point2{in * dx / len, in * dy / len}});
+        near.push_back(
+            {std::hypot(q.x - p.x, q.y - p.y), q, Point2{-dy / len, dx / len}, Point2{in * dx / len, in * dy / len}});
     }
     std::sort(near.begin(), near.end(), [](const Near &a, const Near &b) { return a.d < b.d; });
     if (near.size() > 256)
@@ -81,7 +81,7 @@ void MissionProblem::snapEndpoints()
     for (const auto &[name, p] : points)
     {
         if (!grid->covers(p->x, p->y) || field.inWater(p->x, p->y, z))
-            continue;  // (outside the grid: the planning box's check names it)
+            continue; // (outside the grid: the planning box's check names it)
         const std::optional<Point2> w = nearestWater(field, *p, z, 0.01 * grid->minCellSize());
         if (!w)
             throw Error(m.place(name) + ": " + text(*p) + " is on land in the forecast at depth " + text::number(z) +
@@ -90,10 +90,10 @@ void MissionProblem::snapEndpoints()
         const std::string away = isGeographic() ? text::number(d / 1000.0, 4) + " km" : text::number(d, 6);
         if (!m.safety.snapToWater)
             throw Error(m.place(name) + ": " + text(*p) + " is on land in the forecast at depth " + text::number(z) +
-                        " m; the nearest water is " + text(*w) + ", " + away +
-                        " away: give that, or " + m.term("safety.snap_to_water: true") + " to use it");
-        endpointNotes_.push_back(name + " " + text(*p) + " is on land: moved to the nearest water " +
-                                 text(*w) + " (" + away + " away; safety.snap_to_water)");
+                        " m; the nearest water is " + text(*w) + ", " + away + " away: give that, or " +
+                        m.term("safety.snap_to_water: true") + " to use it");
+        endpointNotes_.push_back(name + " " + text(*p) + " is on land: moved to the nearest water " + text(*w) + " (" +
+                                 away + " away; safety.snap_to_water)");
         *p = *w;
     }
 }
@@ -145,7 +145,7 @@ MissionProblem MissionProblem::withEndpoints(Point2 start, Point2 goal) const
     MissionProblem p(*this);
     p.start_ = start;
     if (goal.x != goal_.x || goal.y != goal_.y)
-        p.spec_.goalWindow = {};  // the window belongs to the mission's goal
+        p.spec_.goalWindow = {}; // the window belongs to the mission's goal
     p.goal_ = goal;
     return p;
 }
@@ -164,9 +164,9 @@ void MissionProblem::checkViaPoints() const
             if (const std::string why = environment_->whyBlocked(via_[i].x, via_[i].y, m.departure.time); !why.empty())
                 throw Error(m.place(field) + named + ": the point is " + why);
         if (std::isfinite(span) && v.stay > span)
-            throw Error(m.place(field + ".stay") + named + ": a stay of " + planning_detail::durationText(*this, v.stay) +
-                        " is longer than the whole forecast");
-        if (!std::isnan(v.radius))  // (a program may set it without the loader: its declared range)
+            throw Error(m.place(field + ".stay") + named + ": a stay of " +
+                        planning_detail::durationText(*this, v.stay) + " is longer than the whole forecast");
+        if (!std::isnan(v.radius)) // (a program may set it without the loader: its declared range)
             try
             {
                 checkSetting("waypoints[].radius", v.radius, text::number(v.radius));
@@ -187,4 +187,4 @@ Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) c
     return toLocal(p.lonLat);
 }
 
-}  // namespace ompl_glider
+} // namespace ompl_glider

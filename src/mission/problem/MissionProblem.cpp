@@ -79,7 +79,7 @@ ForecastRequest forecastRequest(const MissionSpec &m)
     // record counts, which errs towards land)
     const double departure = m.departure.window ? m.departure.begin : m.departure.time;
     if (std::isfinite(departure) && departure >= 0.0 && c.horizonPolicy == BeyondForecast::Refuse &&
-        !(m.observations && m.observations->hasFiles()))  // (a glider's DAC lie before the departure: every record)
+        !(m.observations && m.observations->hasFiles())) // (a glider's DAC lie before the departure: every record)
     {
         if (departure > 0.0)
             o.departure = text::number(departure, 17);
@@ -94,7 +94,7 @@ ForecastRequest forecastRequest(const MissionSpec &m)
     o.depth = c.depthInterpolation;
     o.time = c.timeInterpolation;
     o.beyond = c.horizonPolicy;
-    o.name = c.type + ":" + withoutCredentials(c.file);  // shown in maps and messages: no URL's password
+    o.name = c.type + ":" + withoutCredentials(c.file); // shown in maps and messages: no URL's password
     for (std::size_t k = 1; k < c.files.size(); ++k)
         o.name += "," + withoutCredentials(c.files[k]);
     o.maxDepth = m.dive.enabled ? m.dive.params.zMax : m.vehicle.depth;
@@ -112,7 +112,7 @@ ForecastRequest forecastRequest(const MissionSpec &m)
         o.latMax = m.region.lonLat.latMax;
     }
     else if (m.region.set)
-        ;  // an x/y region is in the planning frame, not the file's coordinates: the whole file is loaded
+        ; // an x/y region is in the planning frame, not the file's coordinates: the whole file is loaded
     else if (m.start.geographic && m.goal.geographic &&
              std::all_of(m.waypoints.begin(), m.waypoints.end(),
                          [](const ViaPointSpec &v) { return v.position.geographic; }))
@@ -167,7 +167,6 @@ ForecastRequest forecastRequest(const MissionSpec &m)
     return o;
 }
 
-
 GliderProblem gulfStreamProblem()
 {
     const MissionSpec m = defaultGulfStreamMission();
@@ -178,11 +177,11 @@ MissionProblem::~MissionProblem() = default;
 
 MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
 {
-    std::optional<GliderObservations> read;  // what resuming read: corrected with below, a URL fetched once
+    std::optional<GliderObservations> read; // what resuming read: corrected with below, a URL fetched once
 #if OMPL_GLIDER_WITH_NETCDF
     try
     {
-        read = resumeAtLastFix(spec_);  // replanning at sea: from the glider's last fix, through the stations left
+        read = resumeAtLastFix(spec_); // replanning at sea: from the glider's last fix, through the stations left
     }
     catch (const Error &e)
     {
@@ -199,11 +198,12 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     snapEndpoints();
     buildBox();
     checkAnalyticFields();
-    applyObservations(read ? &*read : nullptr);  // (after the box: analytic flows' default length scale; nothing without NetCDF)
+    applyObservations(read ? &*read
+                           : nullptr); // (after the box: analytic flows' default length scale; nothing without NetCDF)
     buildRegions();
     const FieldGrid *grid = (members_.empty() ? field_ : members_.front())->grid();
     if (grid)
-        spec_.travel.maxStep = 0.5 * grid->minCellSize();  // no travel-time step passes over a grid node
+        spec_.travel.maxStep = 0.5 * grid->minCellSize(); // no travel-time step passes over a grid node
     checkViaPoints();
     gridSizeAutomatic_ = !(spec_.planner.gridSize > 0);
     if (gridSizeAutomatic_)
@@ -219,7 +219,7 @@ void MissionProblem::buildBox()
     const MissionSpec &m = spec_;
     if (m.region.set && !m.region.geographic)
     {
-        box_.xMin = m.region.xy.xMin * xyScale_;  // a Cartesian forecast's region in its own x/y units
+        box_.xMin = m.region.xy.xMin * xyScale_; // a Cartesian forecast's region in its own x/y units
         box_.xMax = m.region.xy.xMax * xyScale_;
         box_.yMin = m.region.xy.yMin * xyScale_;
         box_.yMax = m.region.xy.yMax * xyScale_;
@@ -237,8 +237,8 @@ void MissionProblem::buildBox()
         // least every degree (a parallel bows in the plane).
         box_.xMin = box_.yMin = kInf;
         box_.xMax = box_.yMax = -kInf;
-        const int n = std::max(8, static_cast<int>(std::ceil(std::max(region.lonMax - region.lonMin,
-                                                                      region.latMax - region.latMin))));
+        const int n = std::max(
+            8, static_cast<int>(std::ceil(std::max(region.lonMax - region.lonMin, region.latMax - region.latMin))));
         for (int i = 0; i <= n; ++i)
             for (int j = 0; j <= n; ++j)
             {
@@ -289,7 +289,7 @@ LonLat MissionProblem::toGeographic(Point2 p) const
 {
     if (!projection_)
         throw Error(spec_.file + ": no projection: longitudes and latitudes are unknown");
-    return projection_->inverse(p.x * projectionScale_, p.y * projectionScale_);  // longitude in -180..180
+    return projection_->inverse(p.x * projectionScale_, p.y * projectionScale_); // longitude in -180..180
 }
 
 Point2 MissionProblem::toLocal(LonLat g) const
@@ -312,10 +312,11 @@ std::string MissionSpec::isoTime(double t) const
     if (!epoch || !std::isfinite(t))
         return "";
     const double s = (fileCalendar ? fileCalendar->originSeconds : *epoch) + t * timeUnitSeconds;
-    if (fileCalendar)  // a dated forecast's own calendar: a climatology's year 0, a noleap or 360_day year
+    if (fileCalendar) // a dated forecast's own calendar: a climatology's year 0, a noleap or 360_day year
         return formatCalendarTime(s, fileCalendar->calendar);
     if (!isoYearInRange(s))
-        throw Error(place("epoch") + ": t = " + text::number(t) + " falls outside the years 0000-9999, which "
+        throw Error(place("epoch") + ": t = " + text::number(t) +
+                    " falls outside the years 0000-9999, which "
                     "ISO 8601 dates are written in (choose an earlier epoch or a shorter horizon)");
     return formatIsoTime(s);
 }
@@ -325,7 +326,7 @@ GliderProblem MissionProblem::gliderProblem(double tDep, double speed) const
     GliderProblem p;
     p.field = field_;
     p.travel = spec_.travel;
-    p.travel.speed = speed;  // the vehicle's (MissionSpec::travel holds the integration's settings only)
+    p.travel.speed = speed; // the vehicle's (MissionSpec::travel holds the integration's settings only)
     p.travel.depth = spec_.vehicle.depth;
     p.environment = environment_;
     p.xMin = box_.xMin;
@@ -343,7 +344,7 @@ GliderProblem MissionProblem::gliderProblem(double tDep, double speed) const
     }
     // a speed so high that the trip takes no time at the planner's time resolution (a typing error: 1e308)
     const double crossing = std::hypot(box_.xMax - box_.xMin, box_.yMax - box_.yMin) / speed;
-    if (!(crossing >= 1e-9))  // (a departure too large for the time resolution is departureProblem()'s)
+    if (!(crossing >= 1e-9)) // (a departure too large for the time resolution is departureProblem()'s)
         throw Error((speed == spec_.vehicle.speed ? spec_.place("vehicle.speed") : "speed " + text::number(speed)) +
                     ": " + text::number(speed) + " crosses the planning region (diagonal " +
                     text::number(crossing * speed) + ") in " + text::number(crossing) +
@@ -359,9 +360,8 @@ GliderProblem MissionProblem::gliderProblem(double tDep, double speed) const
         p.arriveNotBefore = spec_.goalWindow.begin;
         p.arriveNotAfter = spec_.goalWindow.end;
     }
-    p.goalTolerance = spec_.planner.goalTolerance >= 0
-                          ? spec_.planner.goalTolerance
-                          : 1e-6 * std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
+    p.goalTolerance = spec_.planner.goalTolerance >= 0 ? spec_.planner.goalTolerance
+                                                       : 1e-6 * std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
     return p;
 }
 
@@ -405,4 +405,4 @@ std::shared_ptr<const DiveProfileTravelTime> MissionProblem::diveProfiles(double
     t.depth = spec_.vehicle.depth;
     return std::make_shared<DiveProfileTravelTime>(field_, t, spec_.dive.params, bathymetry, spec_.dive.threads);
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -11,4 +11,4 @@ namespace ompl_glider
 {
 /// "FILE:LINE: " of a mark from a mission file, else "MISSION_FILE: ".
 std::string sourcePlace(const MissionSpec &m, const SourceMark &mark = {});
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -44,8 +44,7 @@ std::string pointText(double a, double b)
 /// The region as given, in GeoJSON bbox order: "x_min,y_min,x_max,y_max" (lon_min,lat_min,lon_max,lat_max).
 std::string regionText(const Box &r)
 {
-    return text::number(r.xMin) + "," + text::number(r.yMin) + "," + text::number(r.xMax) + "," +
-           text::number(r.yMax);
+    return text::number(r.xMin) + "," + text::number(r.yMin) + "," + text::number(r.xMax) + "," + text::number(r.yMax);
 }
 /// How the caller names a value it gave for @p field ("--start", "plan(): keyword 'start'"), else the field.
 std::string named(const ForecastInput &q, const std::string &field)
@@ -128,7 +127,7 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
 {
     namespace fs = std::filesystem;
     MissionSpec m;
-    m.file = withoutCredentials(file);  // names the forecast in messages and outputs: never a URL's password
+    m.file = withoutCredentials(file); // names the forecast in messages and outputs: never a URL's password
     m.directory = ".";
     m.name = fs::path(withoutCredentials(files.front())).stem().string();
     m.current = q.current;
@@ -179,8 +178,7 @@ void checkLonLat(const ForecastInput &q)
             throw Error(name + " " + pointText(p.x, p.y) + ": longitude " + text::number(p.x) +
                         " is not in -180..180 or 0..360");
         if (std::abs(p.y) > 90.0)
-            throw Error(name + " " + pointText(p.x, p.y) + ": latitude " + text::number(p.y) +
-                        " is not in -90..90");
+            throw Error(name + " " + pointText(p.x, p.y) + ": latitude " + text::number(p.y) + " is not in -90..90");
     }
 }
 
@@ -236,8 +234,8 @@ LoadedForecast loadForecast(const std::vector<std::string> &list, const MissionS
         const ForecastExtent e = source.extent(o);
         for (const auto &[name, p] : endpoints(q))
             if (!e.contains(p.x, p.y))
-                throw Error(name + " " + pointText(p.x, p.y) + " (" +
-                            (e.geographic ? "lon,lat" : "x,y") + ") lies outside the grid of '" + list.front() + "' (" + e.text() +
+                throw Error(name + " " + pointText(p.x, p.y) + " (" + (e.geographic ? "lon,lat" : "x,y") +
+                            ") lies outside the grid of '" + list.front() + "' (" + e.text() +
                             (e.geographic ? ")" : "; start and goal are in the file's own x/y units)"));
         if (!q.departure.empty() && !isNumber(q.departure))
         {
@@ -252,7 +250,7 @@ LoadedForecast loadForecast(const std::vector<std::string> &list, const MissionS
                 {
                     throw Error(named(q, "departure.time") + " " + q.departure + ": " + e.what());
                 }
-                o.departure.clear();  // departs at field time 0, which is that date
+                o.departure.clear(); // departs at field time 0, which is that date
             }
         }
         nc = source.load(o);
@@ -276,8 +274,7 @@ void checkEndpoints(const LoadedForecast &nc, const ForecastInput &q, const std:
     const Region extent = grid->extent();
     if (extent.zMax > extent.zMin && q.depth > extent.zMax)
         throw Error(named(q, "vehicle.depth") + " " + text::number(q.depth) + " m lies below the deepest layer of '" +
-                    file + "' (" +
-                    text::number(extent.zMax) + " m)");
+                    file + "' (" + text::number(extent.zMax) + " m)");
     const Point2 start = nc.toLocal({q.start.x, q.start.y});
     const Point2 goal = nc.toLocal({q.goal.x, q.goal.y});
     using Endpoint = std::tuple<std::string, double, double, double, double>;
@@ -287,9 +284,10 @@ void checkEndpoints(const LoadedForecast &nc, const ForecastInput &q, const std:
         if (!std::isfinite(x) || !std::isfinite(y) || !grid->covers(x, y))
         {
             // the loaded nodes' own bounds, in the file's coordinates (longitudes from west to east)
-            throw Error(name + " " + pointText(a, b) + " (" + coords + ") lies outside the grid of '" +
-                        file + "' (" + (geographic ? "lon " : "x ") + text::number(nc.lonMin) + ".." + text::number(nc.lonMax) +
-                        (geographic ? ", lat " : ", y ") + text::number(nc.latMin) + ".." + text::number(nc.latMax) + ")");
+            throw Error(name + " " + pointText(a, b) + " (" + coords + ") lies outside the grid of '" + file + "' (" +
+                        (geographic ? "lon " : "x ") + text::number(nc.lonMin) + ".." + text::number(nc.lonMax) +
+                        (geographic ? ", lat " : ", y ") + text::number(nc.latMin) + ".." + text::number(nc.latMax) +
+                        ")");
         }
         if (!g.inWater(x, y, q.depth) && !q.snapToWater)
         {
@@ -297,22 +295,22 @@ void checkEndpoints(const LoadedForecast &nc, const ForecastInput &q, const std:
             std::string why;
             for (const std::string &cause : nc.landCauses)
                 why += (why.empty() ? "" : ", ") + cause;
-            const std::string at = q.current.depthAverage ? "in the depth average over " + text::number(q.current.depthAverage->first) + ".." +
-                                                        text::number(q.current.depthAverage->second) +
-                                                        " m (land where any depth in it is land or below the sea floor)"
-                                                  : "at depth " + text::number(q.depth) + " m";
+            const std::string at = q.current.depthAverage
+                                       ? "in the depth average over " + text::number(q.current.depthAverage->first) +
+                                             ".." + text::number(q.current.depthAverage->second) +
+                                             " m (land where any depth in it is land or below the sea floor)"
+                                       : "at depth " + text::number(q.depth) + " m";
             std::string nearest;
             if (const std::optional<Point2> w = nearestWater(g, {x, y}, q.depth, 0.01 * grid->minCellSize()))
             {
                 const LonLat ll = nc.toGeographic(*w);
                 const double d = std::hypot(w->x - x, w->y - y);
                 nearest = "; the nearest water is " + text::number(ll.lon, 8) + "," + text::number(ll.lat, 8) + " (" +
-                          coords + "), " +
-                          (geographic ? text::number(d / 1000.0, 4) + " km" : text::number(d, 6)) +
+                          coords + "), " + (geographic ? text::number(d / 1000.0, 4) + " km" : text::number(d, 6)) +
                           " away (" + term(q, "safety.snap_to_water: true") + " uses it)";
             }
-            throw Error(name + " " + pointText(a, b) + " (" + coords + ") is on land in '" + file +
-                        "' " + at + (why.empty() ? "" : "; the forecast's land is where it has " + why) + nearest);
+            throw Error(name + " " + pointText(a, b) + " (" + coords + ") is on land in '" + file + "' " + at +
+                        (why.empty() ? "" : "; the forecast's land is where it has " + why) + nearest);
         }
     }
 }
@@ -324,8 +322,7 @@ void checkDeparture(const LoadedForecast &nc, const ForecastInput &q)
     // a steady field (no time dimension, a single record, --steady-record) is the same at every time
     if (!nc.steady && (tDep < nc.forecastBegin || tDep > nc.forecastEnd))
         throw Error(named(q, "departure.time") + " " + q.departure + " is outside the forecast (" +
-                    nc.isoTime(nc.forecastBegin) +
-                    " to " + nc.isoTime(nc.forecastEnd) + ")");
+                    nc.isoTime(nc.forecastBegin) + " to " + nc.isoTime(nc.forecastEnd) + ")");
     if (!nc.steady && tDep >= nc.forecastEnd && q.current.horizonPolicy == BeyondForecast::Refuse)
         throw Error(named(q, "departure.time") + " " + (q.departure.empty() ? std::string("(default)") : q.departure) +
                     " is the last forecast time: no time is left to travel (use an earlier departure or " +
@@ -352,13 +349,12 @@ void finishSpec(MissionSpec &m, const LoadedForecast &nc, const std::optional<do
     m.vehicle.depth = q.depth;
     if (q.depth > 0.0)
         m.marks["vehicle.depth"] = markOf(q, "vehicle.depth");
-    m.travel.eps = 1.0;  // one second per integration step on trips of hours to days (as the example mission)
-    m.outputs.files = {OutputFormatId::Summary, OutputFormatId::Path, OutputFormatId::Csv, OutputFormatId::GeoJson,
-                       OutputFormatId::Goto, OutputFormatId::Map};
+    m.travel.eps = 1.0; // one second per integration step on trips of hours to days (as the example mission)
+    m.outputs.files = {OutputFormatId::Summary, OutputFormatId::Path, OutputFormatId::Csv,
+                       OutputFormatId::GeoJson, OutputFormatId::Goto, OutputFormatId::Map};
     m.outputs.directory.clear();
     m.outputs.gotoNumber = 10;
 }
-
 
 /// @p q with the start (and, where none is given, the departure) at the last fix of its observations, and the words
 /// that name them so.
@@ -388,7 +384,7 @@ ForecastInput atLastFix(const ForecastInput &q)
     at.words = words;
     return at;
 }
-}  // namespace
+} // namespace
 
 MissionSpec forecastMission(const ForecastInput &input)
 {
@@ -416,14 +412,14 @@ MissionSpec forecastMission(const ForecastInput &input)
     if (geographic)
         checkLonLat(q);
     setRegion(m, q, geographic);
-    std::optional<double> epoch;  // the date of field time 0 of a steady file without dates
+    std::optional<double> epoch; // the date of field time 0 of a steady file without dates
     const LoadedForecast nc = loadForecast(list, m, q, epoch);
     checkEndpoints(nc, q, file, geographic);
     checkDeparture(nc, q);
     finishSpec(m, nc, epoch, q);
-    if (input.startAtLastFix)  // a first guess until the mission resumes at the fix it reads then
+    if (input.startAtLastFix) // a first guess until the mission resumes at the fix it reads then
         markLastFixGuess(m, SourceMark{named(input, "observations"), 0}, input.departure.empty());
     return m;
 }
 
-}  // namespace ompl_glider
+} // namespace ompl_glider

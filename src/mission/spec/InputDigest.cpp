@@ -66,7 +66,7 @@ void addSource(Fnv &d, const CurrentSpec &c)
     for (const CurrentSpec &m : c.members)
         addSource(d, m);
 }
-}  // namespace
+} // namespace
 
 std::uint64_t inputDigest(const MissionSpec &spec)
 {
@@ -76,10 +76,10 @@ std::uint64_t inputDigest(const MissionSpec &spec)
     addSource(d, spec.current);
     if (spec.execution.truth)
         addSource(d, *spec.execution.truth);
-    for (const std::string *f : {&spec.dive.bathymetryFile, &spec.safety.bathymetry, &spec.forbidden.coastline,
-                                 &spec.forbidden.geojson})
+    for (const std::string *f :
+         {&spec.dive.bathymetryFile, &spec.safety.bathymetry, &spec.forbidden.coastline, &spec.forbidden.geojson})
         if (!f->empty())
             addFile(d, *f, false);
     return d.h;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -36,4 +36,4 @@ std::optional<OutputFormatId> outputFormatByName(const std::string &name)
             return format.id;
     return std::nullopt;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

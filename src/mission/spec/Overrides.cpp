@@ -36,8 +36,7 @@ double finite(const Given<double> &v)
 }
 
 /// @p v checked against the declared range of @p field (SettingRanges.h), refused naming its source.
-template <class T>
-T setting(const Given<T> &v, const char *field)
+template <class T> T setting(const Given<T> &v, const char *field)
 {
     try
     {
@@ -92,7 +91,7 @@ void applyPlanner(const MissionOverrides &o, MissionSpec &m)
                         plannerNameList() + ")");
         if (entry->name != m.planner.name)
         {
-            m.planner.parameters.clear();  // the mission's parameters are the other planner's
+            m.planner.parameters.clear(); // the mission's parameters are the other planner's
             m.planner.parameterMarks.clear();
         }
         m.planner.name = entry->name;
@@ -152,7 +151,7 @@ void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
     if (o.departure)
     {
         m.departure.time = timeOf(m, o.departure->value, o.departure->source);
-        m.departure.window = false;  // one departure in place of a window
+        m.departure.window = false; // one departure in place of a window
         mark(m, "departure.time", o.departure->source, o.origin);
     }
     applyPoint(o.start, m.start, "start", m, o.origin);
@@ -174,9 +173,10 @@ void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
                 throw Error(o.region->source + ": " + e.what());
             }
         else if (!(c > a && d > b))
-            throw Error(o.region->source + " expects x_min,y_min,x_max,y_max with x_max > x_min and y_max > y_min, "
-                                           "got " + text::number(a) + "," + text::number(b) + "," +
-                        text::number(c) + "," + text::number(d));
+            throw Error(o.region->source +
+                        " expects x_min,y_min,x_max,y_max with x_max > x_min and y_max > y_min, "
+                        "got " +
+                        text::number(a) + "," + text::number(b) + "," + text::number(c) + "," + text::number(d));
         else
             m.region.xy = Box{a, c, b, d};
         mark(m, "region", o.region->source, o.origin);
@@ -224,8 +224,9 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
             if (v.name.empty())
                 v.name = "WP" + std::to_string(i + 1);
             if (!plainViaPointName(v.name))
-                throw Error(at + ": '" + v.name + "' is not a plain name (a letter, then letters, digits, '_' or '-'; "
-                                 "at most 16 characters)");
+                throw Error(at + ": '" + v.name +
+                            "' is not a plain name (a letter, then letters, digits, '_' or '-'; "
+                            "at most 16 characters)");
             if (const std::string key = viaPointKey(v.name); !names.insert(key).second)
                 throw Error(at + ": the name '" + v.name + "' is used twice" +
                             (key == "start" || key == "goal" ? " (it names the mission's " + key + ")" : "") +
@@ -255,7 +256,7 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
     }
     if (o.observations)
     {
-        if (o.observations->value.empty())  // not "no observations": a caller that has none gives none
+        if (o.observations->value.empty()) // not "no observations": a caller that has none gives none
             throw Error(o.observations->source + ": expected a file, a folder, a glob or a URL, got an empty text");
         ObservationsSpec spec = m.observations.value_or(ObservationsSpec{});
         spec.path = o.observations->value;
@@ -265,8 +266,10 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
     }
     applyCorrectionSettings(o, m);
     if (m.order == VisitOrder::Free && m.waypoints.size() > kMaxFreeOrderViaPoints)
-        throw Error((o.order ? o.order->source : o.via ? o.via->source : m.place("order")) + ": free order over " +
-                    std::to_string(m.waypoints.size()) + " via points: at most " +
+        throw Error((o.order ? o.order->source
+                     : o.via ? o.via->source
+                             : m.place("order")) +
+                    ": free order over " + std::to_string(m.waypoints.size()) + " via points: at most " +
                     std::to_string(kMaxFreeOrderViaPoints) + " (the search is exponential in their number)");
 }
 
@@ -357,8 +360,10 @@ void applySafety(const MissionOverrides &o, MissionSpec &m)
     if (o.bathymetryVariable && !seafloor)
         throw Error(o.bathymetryVariable->source + ": the bathymetry variable needs a bathymetry file (" + file + ")");
     if (o.minDepth && s.minDepth > 0.0 && !seafloor)
-        throw Error(o.minDepth->source + ": a depth limit needs a bathymetry file, a NetCDF file of seafloor depth or "
-                                         "elevation (" + file + ")");
+        throw Error(o.minDepth->source +
+                    ": a depth limit needs a bathymetry file, a NetCDF file of seafloor depth or "
+                    "elevation (" +
+                    file + ")");
 }
 
 /// The truth of an execution: another forecast (the forecast's variables and options), or the analytic flow with
@@ -409,14 +414,14 @@ CurrentSpec truthOf(const Given<std::string> &t, const MissionSpec &m, Origin or
 void applyExecution(const MissionOverrides &o, MissionSpec &m)
 {
     if (!o.truth && !o.surfacingInterval && !o.strategies && !o.radius && !o.executionPairs && !o.executionSeed)
-        return;  // the mission's execution section stays as it is
+        return; // the mission's execution section stays as it is
     ExecutionSpec &e = m.execution;
-    const std::string &first = (o.truth                ? o.truth->source
-                                : o.surfacingInterval  ? o.surfacingInterval->source
-                                : o.strategies         ? o.strategies->source
-                                : o.radius             ? o.radius->source
-                                : o.executionPairs     ? o.executionPairs->source
-                                                       : o.executionSeed->source);
+    const std::string &first = (o.truth               ? o.truth->source
+                                : o.surfacingInterval ? o.surfacingInterval->source
+                                : o.strategies        ? o.strategies->source
+                                : o.radius            ? o.radius->source
+                                : o.executionPairs    ? o.executionPairs->source
+                                                      : o.executionSeed->source);
     e.enabled = true;
     e.mark = SourceMark{first, 0, o.origin};
     if (o.truth && o.truth->value != kTruthIsForecast)
@@ -457,11 +462,11 @@ void applyExecution(const MissionOverrides &o, MissionSpec &m)
     if (o.executionSeed)
         e.seed = static_cast<unsigned>(setting(*o.executionSeed, "execution.batch.seed"));
 }
-}  // namespace
+} // namespace
 
 void applyOverrides(const MissionOverrides &o, MissionSpec &m)
 {
-    MissionSpec changed = m;  // all or nothing
+    MissionSpec changed = m; // all or nothing
     applyPlanner(o, changed);
     applyWhereAndWhen(o, changed);
     applyVia(o, changed);
@@ -542,4 +547,4 @@ std::vector<std::pair<std::string, std::string>> overridableFields(const Mission
     fields.emplace_back("given", marked);
     return fields;
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

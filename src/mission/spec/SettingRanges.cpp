@@ -63,7 +63,7 @@ std::string rowName(const std::string &field)
     }
     return out;
 }
-}  // namespace
+} // namespace
 
 const std::vector<SettingRange> &settingRanges()
 {
@@ -115,15 +115,15 @@ double checkSetting(const std::string &field, double v, const std::string &given
     if (s.value == SettingValue::Integer && !(v >= s.low && v <= s.high && v == std::floor(v)))
         throw Error("expected an integer " + rangeWords(s) + ", got " + given);
     if (std::isinf(v) && !std::isfinite(s.high))
-        throw Error(std::string("expected a finite ") + noun(s.value) + " " + rangeWords(s) + meaning +
-                    ", got " + given);
+        throw Error(std::string("expected a finite ") + noun(s.value) + " " + rangeWords(s) + meaning + ", got " +
+                    given);
     if (std::isnan(v) || (s.lowIncluded ? !(v >= s.low) : !(v > s.low)))
         throw Error("expected " + valueWord(s.value) + " " + rangeWords(s) + meaning + ", got " + given);
-    if (v > s.high && !s.highText.empty())  // a limit of the machine or of the method, said as such
+    if (v > s.high && !s.highText.empty()) // a limit of the machine or of the method, said as such
         throw Error("at most " + s.highText + ", got " + given);
     if (v > s.high)
         throw Error("expected " + valueWord(s.value) + " " + rangeWords(s) + meaning + ", got " + given);
-    if (!s.lowIncluded && s.low == 0.0 && !std::isnormal(v))  // a denormal (1e-310): divisions by it overflow
+    if (!s.lowIncluded && s.low == 0.0 && !std::isnormal(v)) // a denormal (1e-310): divisions by it overflow
         throw Error("expected " + valueWord(s.value) + " > 0, got " + given +
                     ", below the smallest normal double (2.2e-308): too small to compute with");
     return v;
@@ -150,7 +150,7 @@ double settingFromText(const std::string &field, const std::string &text, const 
         case SettingValue::Length:
             return parseLength(t, m.metresPerUnit(), m.physicalUnits().length);
         case SettingValue::Depth:
-            return parseLength(t, 1.0, true);  // depths are metres for every field
+            return parseLength(t, 1.0, true); // depths are metres for every field
         default:
             return parseDuration(t, m.timeUnitSeconds, m.hasTimeUnit());
         }
@@ -159,4 +159,4 @@ double settingFromText(const std::string &field, const std::string &text, const 
     const double v = end != begin && number <= 0.0 ? number * convert("1 " + unit) : convert(text);
     return checkSetting(field, v, "'" + text + "'");
 }
-}  // namespace ompl_glider
+} // namespace ompl_glider

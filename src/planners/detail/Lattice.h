@@ -16,8 +16,8 @@ std::string formatPoint(double x, double y);
 /// @brief An integer grid offset (dx, dy) of a lattice edge.
 struct LatticeOffset
 {
-    int dx{0};  ///< columns
-    int dy{0};  ///< rows
+    int dx{0}; ///< columns
+    int dy{0}; ///< rows
 };
 
 /// @brief A rectangular lattice over [xMin, xMax] x [yMin, yMax] with spacing gridSize and n-sector connectivity.
@@ -52,15 +52,9 @@ public:
     static std::vector<LatticeOffset> offsets(unsigned sectors);
 
     /// @brief Offsets in use (sorted by angle atan2(dy, dx) in (-pi, pi]).
-    const std::vector<LatticeOffset> &offsets() const
-    {
-        return offsets_;
-    }
+    const std::vector<LatticeOffset> &offsets() const { return offsets_; }
     /// @brief Direction atan2(dy, dx) of offsets()[k].
-    const std::vector<double> &offsetAngles() const
-    {
-        return angles_;
-    }
+    const std::vector<double> &offsetAngles() const { return angles_; }
 
     /// @brief Joins the exact start position; returns its vertex (a grid vertex when it coincides with one,
     /// else the extra start vertex) or kNone when the position lies outside the bounds.
@@ -70,8 +64,7 @@ public:
 
     /// @brief Calls f(v) for every successor v of u (grid neighbours inside the bounds, plus the extra goal
     /// vertex when u is in the goal's anchor neighbourhood). The goal vertex has no successors.
-    template <typename F>
-    void forEachSuccessor(VertexId u, F &&f) const
+    template <typename F> void forEachSuccessor(VertexId u, F &&f) const
     {
         if (u == goalExtra() || u >= numVertices())
             return;
@@ -97,55 +90,25 @@ public:
     double y(VertexId v) const;
 
     /// @brief Grid columns.
-    long nx() const
-    {
-        return nx_;
-    }
+    long nx() const { return nx_; }
     /// @brief Grid rows.
-    long ny() const
-    {
-        return ny_;
-    }
+    long ny() const { return ny_; }
     /// @brief Grid spacing.
-    double gridSize() const
-    {
-        return g_;
-    }
+    double gridSize() const { return g_; }
     /// @brief Sectors n of the connectivity.
-    unsigned sectors() const
-    {
-        return sectors_;
-    }
+    unsigned sectors() const { return sectors_; }
     /// @brief Number of grid vertices nx ny.
-    std::size_t numGridVertices() const
-    {
-        return static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
-    }
+    std::size_t numGridVertices() const { return static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_); }
     /// @brief Number of vertex ids (grid vertices + the two extra vertices).
-    std::size_t numVertices() const
-    {
-        return numGridVertices() + 2;
-    }
+    std::size_t numVertices() const { return numGridVertices() + 2; }
     /// @brief Id of the extra start vertex (used only when the start is not on a grid vertex).
-    VertexId startExtra() const
-    {
-        return numGridVertices();
-    }
+    VertexId startExtra() const { return numGridVertices(); }
     /// @brief Id of the extra goal vertex (used only when the goal is not on a grid vertex).
-    VertexId goalExtra() const
-    {
-        return numGridVertices() + 1;
-    }
+    VertexId goalExtra() const { return numGridVertices() + 1; }
     /// @brief The start vertex set by setStart() (kNone before).
-    VertexId start() const
-    {
-        return start_;
-    }
+    VertexId start() const { return start_; }
     /// @brief The goal vertex set by setGoal() (kNone before).
-    VertexId goal() const
-    {
-        return goal_;
-    }
+    VertexId goal() const { return goal_; }
     /// @brief Grid vertex (i, j), or kNone outside the grid.
     VertexId gridVertex(long i, long j) const
     {
@@ -157,8 +120,7 @@ public:
     /// @brief Calls f(u) for every vertex u that has v among its successors, except the extra start vertex (for
     /// backward searches from the goal): the grid neighbours of a grid vertex (the offsets are symmetric), and the
     /// grid vertices of the goal's anchor neighbourhood for the extra goal vertex.
-    template <typename F>
-    void forEachPredecessor(VertexId v, F &&f) const
+    template <typename F> void forEachPredecessor(VertexId v, F &&f) const
     {
         if (v == goalExtra())
         {
@@ -171,37 +133,18 @@ public:
         visitNeighbourhood(column(v), row(v), false, f);
     }
     /// @brief Column i of a grid vertex.
-    long columnOf(VertexId v) const
-    {
-        return column(v);
-    }
+    long columnOf(VertexId v) const { return column(v); }
     /// @brief Row j of a grid vertex.
-    long rowOf(VertexId v) const
-    {
-        return row(v);
-    }
+    long rowOf(VertexId v) const { return row(v); }
     /// @brief Lower x bound (x of column 0).
-    double xMin() const
-    {
-        return xMin_;
-    }
+    double xMin() const { return xMin_; }
     /// @brief Lower y bound (y of row 0).
-    double yMin() const
-    {
-        return yMin_;
-    }
+    double yMin() const { return yMin_; }
 
 private:
-    long column(VertexId v) const
-    {
-        return static_cast<long>(v % static_cast<VertexId>(nx_));
-    }
-    long row(VertexId v) const
-    {
-        return static_cast<long>(v / static_cast<VertexId>(nx_));
-    }
-    template <typename F>
-    void visitNeighbourhood(long i, long j, bool includeSelf, F &f) const
+    long column(VertexId v) const { return static_cast<long>(v % static_cast<VertexId>(nx_)); }
+    long row(VertexId v) const { return static_cast<long>(v / static_cast<VertexId>(nx_)); }
+    template <typename F> void visitNeighbourhood(long i, long j, bool includeSelf, F &f) const
     {
         if (includeSelf)
             f(gridVertex(i, j));
@@ -225,4 +168,4 @@ private:
     long startAnchorI_{0}, startAnchorJ_{0}, goalAnchorI_{0}, goalAnchorJ_{0};
     double startX_{0}, startY_{0}, goalX_{0}, goalY_{0};
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

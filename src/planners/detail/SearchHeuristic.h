@@ -50,14 +50,8 @@ public:
     /// slice is computed: the box is then unbounded (the caller's global bound applies).
     VelocityBox box(long I, long J, double ta, double tb, const std::function<bool()> &stop = {});
     /// @brief Origin and length of the time slices.
-    double origin() const
-    {
-        return origin_;
-    }
-    double dt() const
-    {
-        return dt_;
-    }
+    double origin() const { return origin_; }
+    double dt() const { return dt_; }
     /// @brief True when built for this field, lattice geometry, depth, cell factor and slices.
     bool matches(const CurrentField *field, const Lattice &lattice, double depth, unsigned cellFactor, double origin,
                  double dt) const;
@@ -75,7 +69,7 @@ private:
     unsigned f_;
     long NX_, NY_;
     std::mutex mutex_;
-    std::unordered_map<long, std::vector<VelocityBox>> slices_;  // slice index -> per cell
+    std::unordered_map<long, std::vector<VelocityBox>> slices_; // slice index -> per cell
 };
 
 /// @brief Optimistic lower bound of the travel time of straight legs, from per-cell velocity boxes, and an A*
@@ -143,10 +137,7 @@ public:
         stop_ = nullptr;
     }
     /// @brief The stop test of the search that uses these bounds now (see the constructor).
-    void setStop(std::function<bool()> stop)
-    {
-        stop_ = std::move(stop);
-    }
+    void setStop(std::function<bool()> stop) { stop_ = std::move(stop); }
 
     /// @brief h(v): lower bound of the remaining travel time from v to the goal (+inf when even the optimistic
     /// search cannot reach the goal from v). The extra start vertex gets 0 (it has no predecessor edges).
@@ -164,56 +155,26 @@ public:
     static bool hasSlicedBounds(const CurrentField &field);
     /// @brief True when some cell's box is narrower than the field's global bound (else the bounds are those of
     /// [EichhornRAS] Eq. 1 and the backward search would only cost time).
-    bool informative() const
-    {
-        return informative_;
-    }
+    bool informative() const { return informative_; }
     /// @brief Time window of the bounds.
-    double tBegin() const
-    {
-        return tBegin_;
-    }
+    double tBegin() const { return tBegin_; }
     /// @brief Time window of the bounds.
-    double tEnd() const
-    {
-        return tEnd_;
-    }
+    double tEnd() const { return tEnd_; }
     /// @brief Lattice cells per coarse cell side.
-    unsigned cellFactor() const
-    {
-        return f_;
-    }
+    unsigned cellFactor() const { return f_; }
     /// @brief Vertices settled by the backward search since reset().
-    std::size_t settled() const
-    {
-        return settled_;
-    }
+    std::size_t settled() const { return settled_; }
     /// @brief Velocity box of coarse cell (I, J).
-    const VelocityBox &cellBox(long I, long J) const
-    {
-        return boxes_[static_cast<std::size_t>(I + J * NX_)];
-    }
+    const VelocityBox &cellBox(long I, long J) const { return boxes_[static_cast<std::size_t>(I + J * NX_)]; }
     /// @brief Coarse cells along x and y.
-    long cellsX() const
-    {
-        return NX_;
-    }
-    long cellsY() const
-    {
-        return NY_;
-    }
+    long cellsX() const { return NX_; }
+    long cellsY() const { return NY_; }
 
 private:
     /// Speed bound along unit direction (ex, ey) for box b (>= 0; 0 = the leg cannot be flown).
     double speedBound(const VelocityBox &b, double ex, double ey) const;
-    long cellOfColumn(long i) const
-    {
-        return std::min(i / static_cast<long>(f_), NX_ - 1);
-    }
-    long cellOfRow(long j) const
-    {
-        return std::min(j / static_cast<long>(f_), NY_ - 1);
-    }
+    long cellOfColumn(long i) const { return std::min(i / static_cast<long>(f_), NX_ - 1); }
+    long cellOfRow(long j) const { return std::min(j / static_cast<long>(f_), NY_ - 1); }
     double genericBound(double x1, double y1, double x2, double y2) const;
     void buildTable();
     /// Static search over the whole lattice (forward from the start or backward from the goal) with the edge bounds.
@@ -224,40 +185,34 @@ private:
     const CurrentField &field_;
     double depth_;
     double V_, vCap_, tBegin_, tEnd_;
-    std::vector<unsigned char> empty_;      // per coarse cell: no path within the deadline touches it
+    std::vector<unsigned char> empty_; // per coarse cell: no path within the deadline touches it
     bool informative_{false};
     CellBoxCache *cache_{nullptr};
     VelocityBox box(long I, long J, double ta, double tb, const Region &region, unsigned slices) const;
     unsigned f_;
     long NX_{1}, NY_{1};
-    int n_;                                 // sectors
-    std::vector<VelocityBox> boxes_;        // per coarse cell
-    std::vector<double> invSpeed_;          // per coarse cell x offset: 1 / (largest speed bound), +inf = infeasible
-    std::vector<double> len_;               // per offset: |o| g
-    std::vector<int> offsetIndex_;          // (dx + n) + (dy + n) (2n + 1) -> offset index
+    int n_;                          // sectors
+    std::vector<VelocityBox> boxes_; // per coarse cell
+    std::vector<double> invSpeed_;   // per coarse cell x offset: 1 / (largest speed bound), +inf = infeasible
+    std::vector<double> len_;        // per offset: |o| g
+    std::vector<int> offsetIndex_;   // (dx + n) + (dy + n) (2n + 1) -> offset index
     std::function<bool(Lattice::VertexId)> inWater_;
     std::function<bool()> stop_;
-    bool stopped() const
-    {
-        return stop_ && stop_();
-    }
+    bool stopped() const { return stop_ && stop_(); }
 
     struct Label
     {
-        double d{std::numeric_limits<double>::infinity()};  ///< +inf: not reached
+        double d{std::numeric_limits<double>::infinity()}; ///< +inf: not reached
         bool settled{false};
     };
     struct QEntry
     {
         double d;
         Lattice::VertexId v;
-        bool operator>(const QEntry &o) const
-        {
-            return d > o.d || (d == o.d && v > o.v);
-        }
+        bool operator>(const QEntry &o) const { return d > o.d || (d == o.d && v > o.v); }
     };
-    VertexPages<Label> labels_;  // pages of vertices: memory grows with the area settled
+    VertexPages<Label> labels_; // pages of vertices: memory grows with the area settled
     std::priority_queue<QEntry, std::vector<QEntry>, std::greater<QEntry>> queue_;
     std::size_t settled_{0};
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider

@@ -13,8 +13,7 @@
 namespace ompl_glider
 {
 /// @brief Values of type T per lattice vertex, @p init where never written.
-template <typename T>
-class VertexPages
+template <typename T> class VertexPages
 {
 public:
     /// @brief Sets the lattice geometry and the value of unwritten vertices; forgets every value.
@@ -63,28 +62,27 @@ public:
         return p[offsetOf(v)];
     }
     /// @brief Pages allocated (of kSide x kSide vertices each).
-    std::size_t pagesUsed() const
-    {
-        return used_;
-    }
+    std::size_t pagesUsed() const { return used_; }
     static constexpr long kSide = 32;
 
 private:
     std::size_t pageOf(Lattice::VertexId v) const
     {
-        const long i = static_cast<long>(v % static_cast<std::size_t>(nx_)), j = static_cast<long>(v / static_cast<std::size_t>(nx_));
+        const long i = static_cast<long>(v % static_cast<std::size_t>(nx_)),
+                   j = static_cast<long>(v / static_cast<std::size_t>(nx_));
         return static_cast<std::size_t>(i / kSide + (j / kSide) * px_);
     }
     std::size_t offsetOf(Lattice::VertexId v) const
     {
-        const long i = static_cast<long>(v % static_cast<std::size_t>(nx_)), j = static_cast<long>(v / static_cast<std::size_t>(nx_));
+        const long i = static_cast<long>(v % static_cast<std::size_t>(nx_)),
+                   j = static_cast<long>(v / static_cast<std::size_t>(nx_));
         return static_cast<std::size_t>(i % kSide + (j % kSide) * kSide);
     }
     long nx_{1}, px_{1};
     std::size_t grid_{0};
     T init_{};
     std::vector<std::unique_ptr<T[]>> pages_;
-    T extra_[3]{};  // the extra start and goal vertices, and a sink for ids beyond them
+    T extra_[3]{}; // the extra start and goal vertices, and a sink for ids beyond them
     std::size_t used_{0};
 };
-}  // namespace ompl_glider
+} // namespace ompl_glider
