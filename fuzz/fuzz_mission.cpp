@@ -55,7 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     }
     const bool netcdf = spec.current.isForecast();
     if ((netcdf && !insideScratch(spec.current.file)) || !insideScratch(spec.forbidden.geojson) ||
-        (spec.dive.bathymetryType == "netcdf" && !insideScratch(spec.dive.bathymetryFile)))
+        (spec.dive.bathymetry == ompl_glider::DiveSpec::Bathymetry::File && !insideScratch(spec.dive.bathymetryFile)))
         return 0;
     try
     {
