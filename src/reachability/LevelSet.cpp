@@ -8,8 +8,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 
-#include "LevelSetInternal.h"
+#include "LevelSetFront.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/environment/IceZone.h"
@@ -17,18 +18,8 @@
 
 namespace ompl_glider
 {
-namespace
+namespace levelset_detail
 {
-using levelset_detail::Grid;
-using levelset_detail::kTile;
-using levelset_detail::maskDistance;
-using levelset_detail::polygonDistance;
-using levelset_detail::reinitialise;
-using levelset_detail::SolverGrid;
-using levelset_detail::SparseDistance;
-
-/// First time in (0, tau] at which w (the offset from the start) is in the disc of centre c tau' and radius V tau'
-/// (a uniform current over the first instant); +inf when never.
 double discArrival(double wx, double wy, double cx, double cy, double V, double tau)
 {
     const double w2 = wx * wx + wy * wy;
@@ -56,79 +47,10 @@ double discArrival(double wx, double wy, double cx, double cy, double V, double 
     return first <= tau * (1.0 + 1e-12) ? std::min(first, tau) : kInf;
 }
 
-/// One solve of the level-set equation (see LevelSetSolver): the front phi on the grid, the narrow band's tiles, the
-/// forbidden set at the front's time and the result being filled. initialise() sets the first instant's disc;
-/// propagate() then takes steps t -> t + ds, each: advect() the active tiles, applyForbidden() (and record the
-/// first arrivals), reinitialiseIfDue(), checkGoal().
-class FrontPropagation
-{
-public:
-    FrontPropagation(const SolverGrid &sg, const GliderContext &ctx, const LevelSetParams &params);
-
-    /// The initial front: the exact reachable disc after dt0 ([LollaLevelSet]: start from the first instant's
-    /// disc), the forbidden set kept out of it, and the goal's arrival when the disc holds it.
-    void initialise(double sx, double sy, double t0, const std::optional<Point2> &goal);
-    /// Steps until @p tEnd, until the goal is reached when @p stopAtGoal, or until @p stop (if any) answers true.
-    void propagate(double tEnd, bool stopAtGoal, const std::function<bool()> &stop);
-
-    /// The result so far (arrival field, goal, work done); moved out by the caller at the end.
-    Reachability &result() { return out_; }
-    double dt() const { return dt_; }
-    double dt0() const { return dt0_; }
-
-private:
-    void updateForbidden(double t);
-    void findActive();
-    double nodeValue(const std::vector<double> &f, double x, double y, double t1, double tm) const;
-    std::vector<double> eventTimes() const;
-    double stepLength(const std::vector<double> &events) const;
-    void advect(ThreadPool &pool, double t1, double tm);
-    void applyForbidden(double t1);
-    void reinitialiseIfDue(std::size_t step);
-    void checkGoal(double t1);
-
-    /// Calls fn(i, j) for every node (i, j) of @p tile.
-    template <typename Fn> void forTileNodes(std::uint32_t tile, Fn &&fn) const
-    {
-        const int a = static_cast<int>(tile % tx_), b = static_cast<int>(tile / tx_);
-        for (int j = b * kTile; j < std::min(g_.ny, (b + 1) * kTile); ++j)
-            for (int i = a * kTile; i < std::min(g_.nx, (a + 1) * kTile); ++i)
-                fn(i, j);
-    }
-
-    const SolverGrid &sg_;
-    const Grid &g_;
-    const LevelSetParams &params_;
-    const CurrentField &field_;
-    const double band_, V_, z_;
-    std::optional<Point2> goal_;
-    Reachability out_;
-    double dt_{0.0};  ///< the time step
-    double dt0_{0.0}; ///< the initial disc's time
-    double t_{0.0};   ///< the front's time
-
-    // The forbidden set at time t_: static part, closed zones, drifted ice, other environments' masks.
-    std::vector<double> obstacle_;
-    std::vector<std::uint32_t> dynamicNodes_; ///< nodes whose obstacle value differs from the static one
-
-    std::vector<double> phi_, next_; ///< the front now and after the step
-    double goalPhi_{0.0};            ///< phi at the goal (interpolated) after the last step
-
-    // Tiles of the narrow band.
-    int tx_{0}, ty_{0};
-    std::vector<char> tileLive_;
-    std::vector<std::uint32_t> activeTiles_;
-    double bandInner_{0.0};
-
-    double ds_{0.0}; ///< this step's length (shortened to end at a zone's opening or closing)
-    double r_{0.0};  ///< the departure disc's radius V ds
-    std::uint64_t updates_{0};
-    std::vector<double> reinitDist_;
-};
-
-FrontPropagation::FrontPropagation(const SolverGrid &sg, const GliderContext &ctx, const LevelSetParams &params)
+FrontPropagation::FrontPropagation(const SolverGrid &sg, const GliderContext &ctx, const LevelSetParams &params,
+                                   FrontDirection direction)
     : sg_(sg), g_(sg.grid), params_(params), field_(*ctx.field), band_(sg.band), V_(ctx.speed()),
-      z_(ctx.travel->params().depth)
+      z_(ctx.travel->params().depth), direction_(direction)
 {
     const Grid &g = g_;
     out_.x0 = g.x0;
@@ -138,7 +60,8 @@ FrontPropagation::FrontPropagation(const SolverGrid &sg, const GliderContext &ct
     out_.ny = g.ny;
     out_.arrival.assign(g.size(), kInf);
     const double cmax = std::max(ctx.maxCurrent(), 0.0);
-    dt_ = params_.cfl * g.h / (V_ + cmax);
+    dt_ = sg_.cfl * g.h / (V_ + cmax);
+    dt_ = std::min(dt_, kMaxDiscCells * g.h / V_);
     out_.stats.dt = dt_;
     out_.stats.nodes = g.size();
     obstacle_ = sg_.staticD;
@@ -148,14 +71,16 @@ FrontPropagation::FrontPropagation(const SolverGrid &sg, const GliderContext &ct
 
 /// The forbidden set at time t (into obstacle_): the static part raised by the zones closed at t, the ice zones at
 /// their drifted position and the nodes the other environments block.
-void FrontPropagation::updateForbidden(double t)
+void FrontPropagation::updateForbidden(double tFront)
 {
+    const double t = direction_.backward ? direction_.tRef - tFront : tFront; // absolute time
     const Grid &g = g_;
     const double band = band_;
     for (std::uint32_t n : dynamicNodes_)
         obstacle_[n] = sg_.staticD[n];
     dynamicNodes_.clear();
-    const auto raise = [&](std::uint32_t n, double d) {
+    const auto raise = [&](std::uint32_t n, double dIn) {
+        const double d = closedBoundary(dIn, g.h);
         if (d > obstacle_[n])
         {
             if (obstacle_[n] == sg_.staticD[n])
@@ -203,7 +128,7 @@ void FrontPropagation::initialise(double sx, double sy, double t0, const std::op
     const double r0 = 4.0 * g.h; // 2 cells leave a dent in the front that persists; 3-6 agree
     dt0_ = r0 / V;
     const double dt0 = dt0_;
-    const Velocity c0 = field_.velocity(sx, sy, z_, t0 + 0.5 * dt0);
+    const Velocity c0 = current(sx, sy, t0 + 0.5 * dt0);
     const double cxs = sx + dt0 * c0.u, cys = sy + dt0 * c0.v;
     phi_.resize(g.size());
     next_.resize(g.size());
@@ -234,100 +159,21 @@ void FrontPropagation::initialise(double sx, double sy, double t0, const std::op
 
     tx_ = (g.nx + kTile - 1) / kTile;
     ty_ = (g.ny + kTile - 1) / kTile;
-    tileLive_.assign(static_cast<std::size_t>(tx_) * ty_, 0);
     bandInner_ = band * (1.0 - 1e-9);
-}
-
-/// The active tiles (into activeTiles_): those holding an unclipped value of phi, and their neighbours (every tile
-/// without the narrow band).
-void FrontPropagation::findActive()
-{
-    const Grid &g = g_;
-    const int tx = tx_, ty = ty_;
-    std::fill(tileLive_.begin(), tileLive_.end(), 0);
-    for (int j = 0; j < g.ny; ++j)
-        for (int i = 0; i < g.nx; ++i)
-            if (std::abs(phi_[g.index(i, j)]) < bandInner_)
-                tileLive_[static_cast<std::size_t>(j / kTile) * tx + i / kTile] = 1;
-    activeTiles_.clear();
-    for (int b = 0; b < ty; ++b)
-        for (int a = 0; a < tx; ++a)
-        {
-            bool on = false;
-            for (int bb = std::max(0, b - 1); bb <= std::min(ty - 1, b + 1) && !on; ++bb)
-                for (int aa = std::max(0, a - 1); aa <= std::min(tx - 1, a + 1) && !on; ++aa)
-                    on = tileLive_[static_cast<std::size_t>(bb) * tx + aa];
-            if (on || !params_.narrowBand)
-                activeTiles_.push_back(static_cast<std::uint32_t>(b * tx + a));
-        }
-}
-
-/// One node's new value: the minimum of phi (@p f) over the departure disc of the node (x, y) for the step ending
-/// at t1 (midpoint time tm) ([LollaLevelSet]; see the class comment of LevelSetSolver).
-double FrontPropagation::nodeValue(const std::vector<double> &f, double x, double y, double t1, double tm) const
-{
-    const Grid &g = g_;
-    const double band = band_, V = V_, ds = ds_, r = r_;
-    const double dth = 0.25;
-    const Velocity c1 = field_.velocity(x, y, z_, t1);
-    // Heading guess: the normal of the front at the departure point without the vehicle's own motion; where
-    // phi is flat there (the band's clipped edge) the node's own neighbours, else a scan of 8 headings.
-    double gx, gy;
-    g.gradient(f, x - ds * c1.u, y - ds * c1.v, gx, gy);
-    double gn = std::hypot(gx, gy);
-    double nx = 1.0, ny = 0.0;
-    const bool known = gn >= 0.2; // phi stays close to a distance (|grad phi| ~ 1) near the front
-    if (known)
-    {
-        nx = gx / gn;
-        ny = gy / gn;
-    }
-    const Velocity cm = field_.velocity(x - 0.5 * ds * (c1.u + V * nx), y - 0.5 * ds * (c1.v + V * ny), z_, tm);
-    const double qx = x - ds * cm.u, qy = y - ds * cm.v;
-    const auto at = [&](double a) { return g.cubic(f, qx - r * std::cos(a), qy - r * std::sin(a), band); };
-    // The disc's centre (u = 0: drifting, or holding where |c| < V) covers minima inside the disc (the start).
-    const double centre = g.cubic(f, qx, qy, band);
-    double a0 = std::atan2(ny, nx);
-    if (params_.headingScan > 0)
-    {
-        double v = centre;
-        for (int k = 0; k < params_.headingScan; ++k)
-            v = std::min(v, at(2.0 * M_PI * k / params_.headingScan));
-        return v;
-    }
-    if (!known)
-    {
-        double v = band;
-        for (int k = 0; k < 8; ++k)
-        {
-            const double fk = at(k * M_PI / 4);
-            if (fk < v)
-            {
-                v = fk;
-                a0 = k * M_PI / 4;
-            }
-        }
-        if (v >= band)
-            return std::min(v, centre);
-    }
-    else
-    {
-        // The normal at the departure point itself.
-        g.gradient(f, qx - r * nx, qy - r * ny, gx, gy);
-        if (std::hypot(gx, gy) >= 0.2)
-            a0 = std::atan2(gy, gx);
-    }
-    // Three headings and the parabola through them.
-    const double f0 = at(a0), fm = at(a0 - dth), fp = at(a0 + dth);
-    double v = std::min(std::min(f0, centre), std::min(fm, fp));
-    const double curv = fm - 2.0 * f0 + fp;
-    if (curv > 0.0)
-    {
-        const double off = 0.5 * dth * (fm - fp) / curv;
-        if (std::abs(off) < dth)
-            v = std::min(v, at(a0 + off));
-    }
-    return v;
+    tileLive_.assign(static_cast<std::size_t>(tx_) * ty_, 0);
+    for (std::size_t t = 0; t < tileLive_.size(); ++t)
+        refreshLive(static_cast<std::uint32_t>(t));
+    // A step moves a departure point at most ds (V + |c|) <= cfl h from its node (|c| <= the field's bound; a
+    // quarter more kept for a bound that is not tight), and the cubic reads two nodes further; the step's midpoint
+    // current is read half as far again, bilinear.
+    const int moved = static_cast<int>(std::ceil(1.25 * sg_.cfl));
+    reach_ = moved + 2;
+    sample_ = reach_ + (moved + 1) / 2 + 1;
+    guardAll_ = moved + 1 > params_.band + 1e-9;
+    update_.assign(g.size(), 0);
+    cu_.assign(g.size(), 0.0);
+    cv_.assign(g.size(), 0.0);
+    sampled_.assign(g.size(), 0);
 }
 
 /// The times at which a time-windowed zone opens or closes, sorted: steps end there, so that a lane is not entered
@@ -335,7 +181,7 @@ double FrontPropagation::nodeValue(const std::vector<double> &f, double x, doubl
 std::vector<double> FrontPropagation::eventTimes() const
 {
     std::vector<double> events;
-    for (const SolverGrid::Zone &zn : sg_.zones)
+    for (const SolverGrid::Zone &zn : direction_.backward ? std::vector<SolverGrid::Zone>{} : sg_.zones)
         for (const Interval &w : zn.zone->windows())
         {
             events.push_back(w.lo);
@@ -356,57 +202,20 @@ double FrontPropagation::stepLength(const std::vector<double> &events) const
     return ds;
 }
 
-/// The step's advection: next_ = phi_ with every node of the active tiles replaced by its value at t1 (the tiles
-/// shared by the pool's threads); the other tiles keep their (clipped) values.
-void FrontPropagation::advect(ThreadPool &pool, double t1, double tm)
-{
-    const Grid &g = g_;
-    const double band = band_;
-    findActive();
-    next_ = phi_;
-    pool.parallelFor(activeTiles_.size(), [&](std::size_t k) {
-        forTileNodes(activeTiles_[k], [&](int i, int j) {
-            const double x = g.x(i), y = g.y(j);
-            next_[g.index(i, j)] = std::clamp(nodeValue(phi_, x, y, t1, tm), -band, band);
-        });
-    });
-    updates_ += static_cast<std::uint64_t>(activeTiles_.size()) * kTile * kTile;
-}
-
-/// Keeps the forbidden set at t1 out of the new front (phi = max(phi, d)) and records the first arrival of every
-/// node the front reached in the step (linear in phi within the step); then the new front becomes phi_.
-void FrontPropagation::applyForbidden(double t1)
-{
-    const Grid &g = g_;
-    const double t = t_, ds = ds_;
-    updateForbidden(t1);
-    for (std::uint32_t tile : activeTiles_)
-        forTileNodes(tile, [&](int i, int j) {
-            const std::size_t n = g.index(i, j);
-            double &v = next_[n];
-            v = std::max(v, obstacle_[n]);
-            if (v <= 0.0 && out_.arrival[n] == kInf)
-            {
-                const double p0 = phi_[n];
-                out_.arrival[n] = p0 > 0.0 ? t + ds * p0 / (p0 - v) : t1;
-            }
-        });
-    for (std::uint32_t n : dynamicNodes_) // a zone that closed outside the active tiles
-        next_[n] = std::max(next_[n], obstacle_[n]);
-    phi_.swap(next_);
-}
-
 /// Every reinitEvery steps: phi becomes the signed distance to its zero level on the active tiles, the forbidden
 /// set kept out again (the distance may cut its corners).
-void FrontPropagation::reinitialiseIfDue(std::size_t step)
+void FrontPropagation::reinitialiseIfDue(std::size_t step, ThreadPool &pool)
 {
-    if (!(params_.reinitEvery > 0 && (step + 1) % params_.reinitEvery == 0))
+    if (!(sg_.reinitEvery > 0 && (step + 1) % sg_.reinitEvery == 0))
         return;
     const Grid &g = g_;
-    reinitialise(g, phi_, activeTiles_, tx_, band_, reinitDist_);
-    for (std::uint32_t tile : activeTiles_)
-        forTileNodes(
-            tile, [&](int i, int j) { phi_[g.index(i, j)] = std::max(phi_[g.index(i, j)], obstacle_[g.index(i, j)]); });
+    reinitialise(g, phi_, activeTiles_, tx_, band_, reinitDist_, &pool);
+    pool.parallelFor(activeTiles_.size(), [&](std::size_t k) {
+        forTileNodes(activeTiles_[k], [&](int i, int j) {
+            phi_[g.index(i, j)] = std::max(phi_[g.index(i, j)], obstacle_[g.index(i, j)]);
+        });
+        refreshLive(activeTiles_[k]);
+    });
 }
 
 /// The goal's first arrival: when phi interpolated at the goal becomes <= 0 in the step ending at t1 (linear in
@@ -418,8 +227,12 @@ void FrontPropagation::checkGoal(double t1)
     const double gp = g_.cubic(phi_, goal_->x, goal_->y, band_);
     if (gp <= 0.0)
     {
-        out_.goalReached = true;
-        out_.goalTime = goalPhi_ > 0.0 ? t_ + ds_ * goalPhi_ / (goalPhi_ - gp) : t1;
+        const double at = goalPhi_ > 0.0 ? t_ + ds_ * goalPhi_ / (goalPhi_ - gp) : t1;
+        if (at <= tEnd_) // the step past the end (propagate()) records no goal after it
+        {
+            out_.goalReached = true;
+            out_.goalTime = at;
+        }
     }
     goalPhi_ = gp;
 }
@@ -429,8 +242,12 @@ void FrontPropagation::propagate(double tEnd, bool stopAtGoal, const std::functi
     ThreadPool pool(params_.threads);
     out_.stats.threads = pool.size();
     const std::vector<double> events = eventTimes();
-    const std::size_t maxSteps = static_cast<std::size_t>(std::ceil((tEnd - t_) / dt_)) + 1 + 2 * events.size();
-    for (std::size_t step = 0; step < maxSteps && t_ < tEnd; ++step)
+    // Without a stop at the goal the front is followed one step past tEnd, so that the nodes on both sides of the
+    // set reached by tEnd have their arrival (an isochrone at tEnd lies between them, not at the last one reached).
+    tEnd_ = tEnd;
+    const double tLast = stopAtGoal && goal_ ? tEnd : tEnd + dt_;
+    const std::size_t maxSteps = static_cast<std::size_t>(std::ceil((tLast - t_) / dt_)) + 1 + 2 * events.size();
+    for (std::size_t k = 0; k < maxSteps && t_ < tLast; ++k)
     {
         if (stop && stop())
             break;
@@ -442,9 +259,8 @@ void FrontPropagation::propagate(double tEnd, bool stopAtGoal, const std::functi
         ds_ = stepLength(events);
         r_ = V_ * ds_;
         const double t1 = t_ + ds_, tm = t_ + 0.5 * ds_;
-        advect(pool, t1, tm);
-        applyForbidden(t1);
-        reinitialiseIfDue(step);
+        step(pool, t1, tm);
+        reinitialiseIfDue(k, pool);
         ++out_.stats.steps;
         checkGoal(t1);
         t_ = t1;
@@ -453,7 +269,92 @@ void FrontPropagation::propagate(double tEnd, bool stopAtGoal, const std::functi
     }
     out_.stats.nodeUpdates = updates_;
 }
-} // namespace
+} // namespace levelset_detail
+
+std::vector<char> LevelSetSolver::corridor(double sx, double sy, double t0, double tEnd, Point2 goal,
+                                           const std::function<bool()> &stop, std::uint64_t &work, double &tRef) const
+{
+    using levelset_detail::FrontPropagation;
+    std::vector<char> keep;
+    if (!params_.corridor || !impl_->zones.empty() || !impl_->ice.empty() || !impl_->others.empty())
+        return keep;
+    LevelSetParams cp = params_;
+    cp.cellSize = levelset_detail::kCorridorCoarsening * params_.cellSize;
+    cp.corridor = false;
+    std::unique_ptr<LevelSetSolver> coarse;
+    try
+    {
+        coarse = std::make_unique<LevelSetSolver>(ctx_, cp);
+    }
+    catch (const Error &)
+    {
+        return keep; // too few coarse cells across the region
+    }
+    // forward to the goal, then on to the end of the margin
+    FrontPropagation ahead(*coarse->impl_, *ctx_, cp);
+    ahead.initialise(sx, sy, t0, goal);
+    ahead.propagate(tEnd, true, stop);
+    const double margin =
+        std::getenv("MARGIN") ? std::atof(std::getenv("MARGIN")) : levelset_detail::kCorridorMargin; // TEMP
+    if (!ahead.result().goalReached || ahead.result().stats.budgetSpent)
+    {
+        work += ahead.result().stats.nodeUpdates;
+        return keep;
+    }
+    tRef = t0 + (ahead.result().goalTime - t0) * (1.0 + margin);
+    ahead.propagate(std::min(tRef, tEnd), false, stop);
+    // backward from the goal at tRef: its arrival is how long before tRef a point must be left
+    FrontPropagation behind(*coarse->impl_, *ctx_, cp, {true, tRef});
+    behind.countWork(ahead.result().stats.nodeUpdates);
+    behind.initialise(goal.x, goal.y, 0.0, std::nullopt);
+    behind.propagate(tRef - t0, false, stop);
+    work += behind.result().stats.nodeUpdates;
+    // a point can be on a route that arrives by tRef when it is reached before it must be left
+    const levelset_detail::Grid &g = impl_->grid;
+    std::vector<char> in(g.size(), 0);
+    for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i)
+        {
+            const double a = ahead.result().arrivalAt(g.x(i), g.y(j)), b = behind.result().arrivalAt(g.x(i), g.y(j));
+            in[g.index(i, j)] = a + b <= tRef;
+        }
+    // grown by a few cells, so that the corridor's edge, which the fine front reads as unreachable, stays off the
+    // routes inside
+    const int grow = levelset_detail::kCorridorGrowth;
+    std::vector<char> rows(g.size(), 0);
+    for (int j = 0; j < g.ny; ++j)
+        for (int i = 0, last = -1000000; i < g.nx; ++i)
+        {
+            // last flagged column at or before i, then the next at or after i
+            if (in[g.index(i, j)])
+                last = i;
+            rows[g.index(i, j)] = i - last <= grow;
+        }
+    for (int j = 0; j < g.ny; ++j)
+        for (int i = g.nx - 1, next = 1000000; i >= 0; --i)
+        {
+            if (in[g.index(i, j)])
+                next = i;
+            rows[g.index(i, j)] = rows[g.index(i, j)] || next - i <= grow;
+        }
+    keep.assign(g.size(), 0);
+    for (int i = 0; i < g.nx; ++i)
+    {
+        for (int j = 0, last = -1000000; j < g.ny; ++j)
+        {
+            if (rows[g.index(i, j)])
+                last = j;
+            keep[g.index(i, j)] = j - last <= grow;
+        }
+        for (int j = g.ny - 1, next = 1000000; j >= 0; --j)
+        {
+            if (rows[g.index(i, j)])
+                next = j;
+            keep[g.index(i, j)] = keep[g.index(i, j)] || next - j <= grow;
+        }
+    }
+    return keep;
+}
 
 Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd, const std::optional<Point2> &goal,
                                    bool stopAtGoal, const std::function<bool()> &stop) const
@@ -464,15 +365,36 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
     if (!std::isfinite(sx) || !std::isfinite(sy) || !std::isfinite(t0) || !(tEnd >= t0))
         throw Error("LevelSet: start, departure time or end time not finite, or end before departure");
 
-    FrontPropagation front(*impl_, *ctx_, params_);
-    front.initialise(sx, sy, t0, goal);
+    auto front = std::make_unique<levelset_detail::FrontPropagation>(*impl_, *ctx_, params_);
+    front->initialise(sx, sy, t0, goal);
     // a goal walled off from the start: proven before any step (a long window would step for minutes)
-    const int reach = static_cast<int>(std::ceil(params_.cfl)) + 3; // a step's reach and its cubic stencil
-    const bool walledOff = goal && stopAtGoal && !front.result().goalReached && !impl_->staticD.empty() &&
+    const int reach = static_cast<int>(std::ceil(impl_->cfl)) + 3; // a step's reach and its cubic stencil
+    const bool walledOff = goal && stopAtGoal && !front->result().goalReached && !impl_->staticD.empty() &&
                            !levelset_detail::waterConnects(*impl_, {sx, sy}, *goal, reach);
     if (!walledOff)
-        front.propagate(tEnd, stopAtGoal, stop);
-    Reachability out = std::move(front.result());
+    {
+        std::uint64_t work = 0;
+        double tRef = kInf;
+        std::vector<char> keep;
+        if (goal && stopAtGoal && !front->result().goalReached)
+            keep = corridor(sx, sy, t0, tEnd, *goal, stop, work, tRef);
+        const bool restricted = !keep.empty();
+        front->restrictTo(std::move(keep));
+        front->countWork(work);
+        front->propagate(tEnd, stopAtGoal, stop);
+        // The corridor cut the route (the coarse fronts' error beyond the margin): the whole front again, its work
+        // counted on top. The fine front is never slower than the coarse one within the corridor's margin.
+        const Reachability &r = front->result();
+        if (restricted && !(r.goalReached && r.goalTime <= tRef) && !r.stats.budgetSpent && !(stop && stop()))
+        {
+            const std::uint64_t spent = r.stats.nodeUpdates;
+            front = std::make_unique<levelset_detail::FrontPropagation>(*impl_, *ctx_, params_);
+            front->initialise(sx, sy, t0, goal);
+            front->countWork(spent);
+            front->propagate(tEnd, stopAtGoal, stop);
+        }
+    }
+    Reachability out = std::move(front->result());
     out.goalWalledOff = walledOff;
 
     // Backtracking from the goal through the arrival field.
@@ -483,8 +405,8 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
         bs.environment = ctx_->environment.get();
         bs.speed = ctx_->speed();
         bs.depth = ctx_->travel->params().depth;
-        bs.dt = front.dt();
-        bs.dt0 = front.dt0();
+        bs.dt = front->dt();
+        bs.dt0 = front->dt0();
         out.path = levelset_detail::backtrackPath(out, impl_->grid, Point2{sx, sy}, *goal, bs);
     }
     out.stats.currentCalls = field.callCount() - cmc0;

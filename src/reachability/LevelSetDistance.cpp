@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "LevelSetInternal.h"
+#include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/environment/Polygon.h"
 
 namespace ompl_glider
@@ -74,7 +75,7 @@ void maskDistance(const Grid &g, const std::vector<char> &blocked, double band, 
 /// the front flattens to the initial disc's depth and the cubic sees a kinked profile ([LollaLevelSet] reinitialise
 /// periodically too).
 void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std::uint32_t> &tiles, int tx, double band,
-                  std::vector<double> &dist)
+                  std::vector<double> &dist, ThreadPool *pool)
 {
     if (dist.size() != g.size())
         dist.assign(g.size(), kInf);
@@ -85,8 +86,8 @@ void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std
         s = std::clamp(s, 0.0, 1.0);
         return std::hypot(px - ax - s * ex, py - ay - s * ey);
     };
-    for (std::uint32_t tile : tiles)
-    {
+    // the distance from one tile's zero level, written within R + 1 nodes of the tile
+    const auto scatter = [&](std::uint32_t tile) {
         const int a = static_cast<int>(tile % tx), b = static_cast<int>(tile / tx);
         for (int j = b * kTile; j < std::min(g.ny - 1, (b + 1) * kTile); ++j)
             for (int i = a * kTile; i < std::min(g.nx - 1, (a + 1) * kTile); ++i)
@@ -126,9 +127,9 @@ void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std
                             d = std::min(d, segDist(g.x(ii), g.y(jj), px[1], py[1], px[2], py[2]));
                         }
             }
-    }
-    for (std::uint32_t tile : tiles)
-    {
+    };
+    // the tile's nodes: phi becomes the distance with its sign, the scratch space is cleared
+    const auto finish = [&](std::uint32_t tile) {
         const int a = static_cast<int>(tile % tx), b = static_cast<int>(tile / tx);
         for (int j = b * kTile; j < std::min(g.ny, (b + 1) * kTile); ++j)
             for (int i = a * kTile; i < std::min(g.nx, (a + 1) * kTile); ++i)
@@ -138,7 +139,27 @@ void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std
                 phi[n] = phi[n] <= 0.0 ? -d : d;
                 dist[n] = kInf;
             }
+    };
+    if (pool && pool->size() > 1 && R + 1 <= kTile / 2)
+    {
+        // tiles of one colour (column and row parity) are a tile apart: their writes never meet, so each colour
+        // is shared by the threads, with no lock
+        std::vector<std::uint32_t> colour;
+        for (std::uint32_t c = 0; c < 4; ++c)
+        {
+            colour.clear();
+            for (std::uint32_t tile : tiles)
+                if ((tile % tx) % 2 + 2 * ((tile / tx) % 2) == c)
+                    colour.push_back(tile);
+            pool->parallelFor(colour.size(), [&](std::size_t k) { scatter(colour[k]); });
+        }
+        pool->parallelFor(tiles.size(), [&](std::size_t k) { finish(tiles[k]); });
+        return;
     }
+    for (std::uint32_t tile : tiles)
+        scatter(tile);
+    for (std::uint32_t tile : tiles)
+        finish(tile);
 }
 bool waterConnects(const SolverGrid &sg, Point2 a, Point2 b, int reach)
 {

@@ -30,8 +30,8 @@ LevelSetSolver::LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSe
         throw Error("LevelSetSolver: the problem context is null or has no field");
     if (!(params_.cellSize > 0.0) || !std::isfinite(params_.cellSize))
         throw Error("LevelSet: resolution (cell size) must be > 0, got " + text::number(params_.cellSize));
-    if (!(params_.cfl > 0.0 && params_.cfl <= 2.0))
-        throw Error("LevelSet: cfl must be in (0, 2], got " + text::number(params_.cfl));
+    if (!(params_.cfl >= 0.0 && params_.cfl <= 8.0))
+        throw Error("LevelSet: cfl must be in (0, 8] (0: automatic), got " + text::number(params_.cfl));
     if (!(params_.clearance >= 0.0) || !std::isfinite(params_.clearance))
         throw Error("LevelSet: clearance must be >= 0, got " + text::number(params_.clearance));
     if (!(params_.band >= 4.0 && params_.band <= 50.0))
@@ -50,7 +50,9 @@ LevelSetSolver::LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSe
         throw Error("LevelSet: resolution " + text::number(g.h) + " gives more than 2e8 grid nodes");
     g.nx = static_cast<int>(cx) + 1;
     g.ny = static_cast<int>(cy) + 1;
-    checkMemory(static_cast<double>(g.size()) * (3 * sizeof(double) + 2 * sizeof(double) + 2),
+    // per node: phi twice, the arrival, the forbidden set and its static part, the step's current (two), its stamp,
+    // the update and corridor flags, and the land mask while built
+    checkMemory(static_cast<double>(g.size()) * (7 * sizeof(double) + sizeof(std::uint32_t) + 3),
                 "the level-set grid (" + std::to_string(g.nx) + " x " + std::to_string(g.ny) + " nodes)",
                 "use a coarser resolution");
     impl_->band = params_.band * g.h;
@@ -116,6 +118,20 @@ LevelSetSolver::LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSe
                 impl_->staticD[n] = std::max(impl_->staticD[n], d[n]);
         }
     }
+    bool forbidden = !impl_->zones.empty() || !impl_->ice.empty() || !impl_->others.empty();
+    for (double &d : impl_->staticD)
+    {
+        d = levelset_detail::closedBoundary(d, g.h);
+        forbidden = forbidden || d > -band;
+    }
+    // the automatic step: long in open water, short near a forbidden set (see LevelSetParams::cfl)
+    using levelset_detail::kForbiddenCfl;
+    using levelset_detail::kOpenWaterCfl;
+    impl_->cfl = params_.cfl > 0.0 ? params_.cfl : forbidden ? kForbiddenCfl : kOpenWaterCfl;
+    impl_->reinitEvery = params_.reinitEvery < 0                              ? 0
+                         : params_.reinitEvery > 0                            ? params_.reinitEvery
+                         : impl_->cfl > 0.5 * (kForbiddenCfl + kOpenWaterCfl) ? levelset_detail::kOpenWaterReinit
+                                                                              : levelset_detail::kForbiddenReinit;
 }
 
 LevelSetSolver::~LevelSetSolver() = default;

@@ -5,8 +5,10 @@
 /// The solver is split by concern, one source file each (all in src/reachability/):
 ///  - LevelSetGrid.cpp       LevelSetSolver's constructor: its parameters checked, the grid and the forbidden set
 ///                           of a solver (SolverGrid) prepared once; defaultLevelSetResolution()
-///  - LevelSet.cpp           LevelSetSolver::solve() as a sequence of steps (initial front, advection of the narrow
-///                           band, forbidden set, arrivals, goal)
+///  - LevelSet.cpp           LevelSetSolver::solve() as a sequence of steps (FrontPropagation, LevelSetFront.h:
+///                           initial front, forbidden set, reinitialisation, goal) and the coarse corridor
+///  - LevelSetStep.cpp       one step's work on the narrow band: the tiles and nodes that can change, the current
+///                           sampled once per step, the minimum over each node's departure disc
 ///  - LevelSetDistance.cpp   signed distances to the forbidden set (polygons, node masks) and the reinitialisation
 ///                           of phi to a signed distance
 ///  - LevelSetBacktrack.cpp  the time-optimal path backtracked through the arrival field, and the queries of a
@@ -29,11 +31,27 @@ class Environment;
 class IceZone;
 class Polygon;
 class TimeWindowedZone;
+class ThreadPool;
 
 namespace levelset_detail
 {
 /// Side of the square tiles of the narrow band, in nodes.
 constexpr int kTile = 16;
+
+/// The departure disc's radius V dt is at most this many cells: the minimum over a larger disc, found from the
+/// gradient and three headings, is missed where the front curves (4 cells: 13 % slow in still water; 2.5: exact).
+constexpr double kMaxDiscCells = 2.0;
+/// The automatic cfl (LevelSetParams::cfl = 0) in open water and where there is a forbidden set, and the
+/// reinitialisation's period at each.
+constexpr double kOpenWaterCfl = 4.0, kForbiddenCfl = 1.5;
+constexpr int kOpenWaterReinit = 3, kForbiddenReinit = 4;
+/// The coarse corridor (LevelSetParams::corridor): the coarse fronts' cell is this many fine ones (their work is
+/// 1/9 of the fine front's each: a narrow band's work goes as 1 / h^2; at 2 the two coarse fronts cost half the fine
+/// one and the corridor saved less), routes up to this fraction slower than the coarse front's are kept (the coarse
+/// front is 0.2-0.5 % slow at 3 cells), and the corridor is grown by this many fine cells.
+constexpr double kCorridorCoarsening = 3.0;
+constexpr double kCorridorMargin = 0.03;
+constexpr int kCorridorGrowth = 4;
 
 /// The grid's geometry and the interpolation of a node field.
 struct Grid
@@ -81,6 +99,18 @@ struct Grid
         return std::clamp(v, std::min(std::min(a, b), std::min(c, d)), std::max(std::max(a, b), std::max(c, d)));
     }
 
+    /// Bilinear interpolation of f at (px, py); outside the grid: @p outside.
+    double bilinear(const std::vector<double> &f, double px, double py, double outside) const
+    {
+        const double gx = (px - x0) / h, gy = (py - y0) / h;
+        if (!(gx >= 0.0 && gy >= 0.0 && gx <= nx - 1 && gy <= ny - 1))
+            return outside;
+        const int i = std::min(static_cast<int>(gx), nx - 2), j = std::min(static_cast<int>(gy), ny - 2);
+        const double fx = gx - i, fy = gy - j;
+        const double *r0 = f.data() + index(i, j), *r1 = r0 + nx;
+        return (1.0 - fy) * ((1.0 - fx) * r0[0] + fx * r0[1]) + fy * ((1.0 - fx) * r1[0] + fx * r1[1]);
+    }
+
     /// Gradient of the bicubic (Catmull-Rom) interpolant of f at (px, py) (clamped into the grid): central
     /// differences at the nodes, smooth in between, so that the band's clipped edge does not tilt it.
     void gradient(const std::vector<double> &f, double px, double py, double &gxOut, double &gyOut) const
@@ -117,6 +147,13 @@ struct Grid
     }
 };
 
+/// A node on the boundary of the forbidden set (signed distance 0) counts as inside: a tiny positive value instead
+/// of 0, so that the shared edge of two touching regions (0 from both) is no crack of phi = 0 the front runs along.
+inline double closedBoundary(double d, double h)
+{
+    return d >= 0.0 ? std::max(d, 1e-6 * h) : d;
+}
+
 /// A band-limited signed distance on some nodes (positive inside the forbidden set).
 struct SparseDistance
 {
@@ -130,6 +167,8 @@ struct SolverGrid
 {
     Grid grid;
     double band{0.3};            ///< half-width of the narrow band (the field's length unit)
+    double cfl{1.5};             ///< the cfl in use (LevelSetParams::cfl, or the automatic one)
+    int reinitEvery{4};          ///< the reinitialisation's period in use (0: never)
     std::vector<double> staticD; ///< static forbidden set (polygons, land, region): signed distance, -band outside
     /// A time-windowed zone and its distance (applied while the zone is closed).
     struct Zone
@@ -160,11 +199,12 @@ void maskDistance(const Grid &g, const std::vector<char> &blocked, double band, 
 /// Reinitialisation: phi becomes the signed distance (clipped to +-band) to its own zero level within the given
 /// tiles (tx tiles per row), the zero level located by linear interpolation on the cell edges (marching squares
 /// segments) and left in place. @p dist is scratch space kept between calls (+inf at every node between calls).
+/// With @p pool the tiles are shared by its threads, four colours in turn.
 /// The minimum over the departure disc cannot lower phi below its least value, so without this the inside of the
 /// front flattens to the initial disc's depth and the cubic sees a kinked profile ([LollaLevelSet] reinitialise
 /// periodically too).
 void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std::uint32_t> &tiles, int tx, double band,
-                  std::vector<double> &dist);
+                  std::vector<double> &dist, ThreadPool *pool = nullptr);
 
 /// What the backtracking needs besides the arrival field.
 struct BacktrackSetup

@@ -18,6 +18,7 @@
 #include "ompl_glider/planners/IsochroneSearch.h"
 #include "ompl_glider/routes/CurveLegs.h"
 #include "ompl_glider/routes/PathSmoother.h"
+#include "LevelSetInternal.h"
 
 namespace ompl_glider
 {
@@ -85,7 +86,9 @@ void LevelSetPlanner::prepare(const PipelineSetup &setup)
     const double h = resolution_ > 0.0 ? resolution_ : defaultLevelSetResolution(*ctx_);
     const double nodes =
         (std::floor((r.xMax - r.xMin) / h + 1e-9) + 1.0) * (std::floor((r.yMax - r.yMin) / h + 1e-9) + 1.0);
-    const double dt = params_.cfl * h / (ctx_->speed() + std::max(ctx_->maxCurrent(), 0.0));
+    // the automatic cfl is the short one where there is a forbidden set: the estimate takes it (the most steps)
+    const double cfl = params_.cfl > 0.0 ? params_.cfl : levelset_detail::kForbiddenCfl;
+    const double dt = cfl * h / (ctx_->speed() + std::max(ctx_->maxCurrent(), 0.0));
     const double tEnd = std::min(r.tMax, ctx_->field->timeEnd());
     const double steps = std::isfinite(tEnd) ? std::ceil(std::max(tEnd - setup.departure, 0.0) / dt)
                                              : std::numeric_limits<double>::infinity();
@@ -95,7 +98,7 @@ void LevelSetPlanner::prepare(const PipelineSetup &setup)
     // the steps the glider's own speed needs: within the limits, the currents are at fault (a forecast's velocities
     // read wrong: units, scale_factor, a fill value not declared), not the planner's settings
     const double calmSteps = std::isfinite(tEnd) && ctx_->speed() > 0.0
-                                 ? std::ceil(std::max(tEnd - setup.departure, 0.0) / (params_.cfl * h / ctx_->speed()))
+                                 ? std::ceil(std::max(tEnd - setup.departure, 0.0) / (cfl * h / ctx_->speed()))
                                  : std::numeric_limits<double>::infinity();
     if (calmSteps <= kMaxLevelSetSteps && nodes * calmSteps <= kMaxLevelSetWork && ctx_->maxCurrent() > ctx_->speed())
         throw Error(setup.where("current") +
@@ -155,7 +158,7 @@ LevelSetPlanner::LevelSetPlanner(const ompl::base::SpaceInformationPtr &si, std:
     specs_.multithreaded = true;
     declareParam<double>("resolution", this, &LevelSetPlanner::setResolution, &LevelSetPlanner::getResolution,
                          "0:0.001:1000000");
-    declareParam<double>("cfl", this, &LevelSetPlanner::setCfl, &LevelSetPlanner::getCfl, "0.1:0.1:2");
+    declareParam<double>("cfl", this, &LevelSetPlanner::setCfl, &LevelSetPlanner::getCfl, "0.1:0.1:8");
     declareParam<unsigned>("threads", this, &LevelSetPlanner::setThreads, &LevelSetPlanner::getThreads, "0:1:64");
     addPlannerProgressProperty("level set time REAL", [this] { return std::to_string(levelSetTime_); });
     addPlannerProgressProperty("resolution REAL", [this] { return std::to_string(usedResolution_); });
@@ -172,8 +175,8 @@ void LevelSetPlanner::setResolution(double h)
 
 void LevelSetPlanner::setCfl(double c)
 {
-    if (!(c > 0.0 && c <= 2.0))
-        throw Error("LevelSet: cfl must be in (0, 2], got " + text::number(c));
+    if (!(c > 0.0 && c <= 8.0))
+        throw Error("LevelSet: cfl must be in (0, 8], got " + text::number(c));
     params_.cfl = c;
 }
 

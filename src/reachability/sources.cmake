@@ -3,6 +3,7 @@
 list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/LevelSetGrid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/LevelSet.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/LevelSetStep.cpp
   ${CMAKE_CURRENT_LIST_DIR}/LevelSetDistance.cpp
   ${CMAKE_CURRENT_LIST_DIR}/LevelSetBacktrack.cpp
 )

@@ -210,7 +210,7 @@ yaml_case("stints-window-remaining-distance",
 # level set and isochrones
 yaml_case("levelset-resolution-negative", mission("planner: {name: LevelSet, parameters: {resolution: -1}}"),
           "resolution")
-yaml_case("levelset-cfl-huge", mission("planner: {name: LevelSet, parameters: {cfl: 5}}"), "cfl")
+yaml_case("levelset-cfl-huge", mission("planner: {name: LevelSet, parameters: {cfl: 9}}"), "cfl")
 yaml_case("isochrone-interval-zero", mission(append="outputs: {files: [summary, isochrones], isochrone_interval: 0}\n"),
           "outputs.isochrone_interval")
 yaml_case("isochrone-interval-hours-without-unit",
@@ -307,7 +307,7 @@ case("cli-start-over-mission-outside", ["--mission", "m.yaml", "--start", "20,0"
      "--start", {"m.yaml": MISSION})
 # work estimates before work: refused with the estimate and the limit (no hang)
 yaml_case("levelset-cfl-tiny", mission("planner: {name: LevelSet, parameters: {cfl: 1e-6}}"),
-          "m.yaml:7: field 'planner.parameters.cfl': planner LevelSet accepts cfl in 0.1 .. 2")
+          "m.yaml:7: field 'planner.parameters.cfl': planner LevelSet accepts cfl in 0.1 .. 8")
 yaml_case("levelset-threads-huge", mission("planner: {name: LevelSet, parameters: {threads: 100000}}"),
           "field 'planner.parameters.threads': planner LevelSet accepts threads in 0 .. 64")
 yaml_case("levelset-resolution-fine", mission("planner: {name: LevelSet, parameters: {resolution: 0.001}}"),

@@ -152,7 +152,7 @@ TEST(LevelSetPlanner, ParametersAreChecked)
     LevelSetPlanner planner(ss->getSpaceInformation(), ctx);
     EXPECT_THROW(planner.setResolution(-1.0), Error);
     EXPECT_THROW(planner.setCfl(0.0), Error);
-    EXPECT_THROW(planner.setCfl(3.0), Error);
+    EXPECT_THROW(planner.setCfl(9.0), Error);
     EXPECT_NE(findPlanner("levelset"), nullptr);
 }
 

@@ -18,11 +18,19 @@ namespace ompl_glider
 /// @brief Resolution and numerics of the level-set solver.
 struct LevelSetParams
 {
-    double cellSize{0.05};   ///< grid spacing h (the field's length unit); > 0
-    double cfl{1.5};         ///< time step dt = cfl * h / (V + max|c|); in (0, 2] (semi-Lagrangian: stable beyond 1)
-    double band{6.0};        ///< narrow band: phi is kept within +-band cells of the front; in [4, 50]
-    unsigned threads{0};     ///< threads sharing each step (0: all cores)
-    int reinitEvery{4};      ///< reinitialise phi to a signed distance every this many steps (0: never)
+    double cellSize{0.05}; ///< grid spacing h (the field's length unit); > 0
+    /// time step dt = cfl * h / (V + max|c|), and V dt at most 2 cells; cfl in (0, 8], or 0: automatic, 4 in open
+    /// water and 1.5 where there is a forbidden set (semi-Lagrangian: stable beyond 1; fewer, longer steps
+    /// interpolate phi fewer times, so in open water up to about 4 the front is both faster and more accurate,
+    /// bench_levelset; near a coast or an island a step reaches past what a straight drift can, and the front comes
+    /// out slow: 1.2 % on the islands of test_reachability at cfl 4)
+    double cfl{0.0};
+    double band{6.0};    ///< narrow band: phi is kept within +-band cells of the front; in [4, 50]
+    unsigned threads{0}; ///< threads sharing each step (0: all cores)
+    /// reinitialise phi to a signed distance every this many steps; 0: automatic (every 4 steps at cfl 1.5, every 3
+    /// at cfl 4: every 4 there leaves dents in the front that persist, the uniform-current disc test; every step adds
+    /// the reinitialisation's own error); < 0: never
+    int reinitEvery{0};
     double clearance{0.0};   ///< forbidden regions grown by this distance (>= 0; the planner keeps half a cell so that
                              ///< its straight legs clear them; 0 for the reference optimum)
     bool narrowBand{true};   ///< update only the tiles near the front (false: every node every step; for measuring)
@@ -30,6 +38,12 @@ struct LevelSetParams
                              ///< N evenly spaced headings instead (for measuring what the gradient buys)
     bool iceForbidden{true}; ///< ice zones are kept out of the front (the glider cannot surface there); false: they
                              ///< are ignored (the limit on the time under ice is not modelled either way)
+    /// Coarse to fine, for a solve that stops at its goal where the forbidden set does not change in time: a front at
+    /// three times the cell finds the goal's arrival, a backward front from the goal (the current reversed in time)
+    /// the latest departure from every point that still arrives within 3 % of it, and the fine front updates only
+    /// the corridor of points that can still be on the fastest route, grown by 4 cells (the whole front again when
+    /// the corridor cut the route); false: every node, for measuring
+    bool corridor{true};
     /// Stop once this many node updates are done (0: no limit): a budget of work that, unlike a time limit, ends the
     /// same solve at the same step on any machine and under any load
     std::uint64_t maxNodeUpdates{0};
@@ -127,6 +141,12 @@ public:
     const LevelSetParams &params() const { return params_; }
 
 private:
+    /// The coarse corridor (LevelSetParams::corridor) of a solve from (sx, sy) at t0 to @p goal: per node of the
+    /// grid, 1 where the fastest route may pass; empty where it does not apply or the coarse front did not reach the
+    /// goal. Adds the coarse work (node updates) to @p work; @p tRef: the latest goal arrival the corridor keeps.
+    std::vector<char> corridor(double sx, double sy, double t0, double tEnd, Point2 goal,
+                               const std::function<bool()> &stop, std::uint64_t &work, double &tRef) const;
+
     struct Impl;
     std::shared_ptr<const GliderContext> ctx_;
     LevelSetParams params_;
