@@ -107,9 +107,9 @@ private:
     const FrontDirection direction_;
     std::optional<Point2> goal_;
     Reachability out_;
-    double dt_{0.0};  ///< the time step
-    double dt0_{0.0}; ///< the initial disc's time
-    double t_{0.0};   ///< the front's time
+    double dt_{0.0};   ///< the time step
+    double dt0_{0.0};  ///< the initial disc's time
+    double t_{0.0};    ///< the front's time
     double tEnd_{0.0}; ///< the end asked of propagate(): no goal arrival after it
 
     // The forbidden set at time t_: static part, closed zones, drifted ice, other environments' masks.
@@ -122,9 +122,9 @@ private:
 
     // Tiles of the narrow band.
     int tx_{0}, ty_{0};
-    std::vector<char> tileLive_;              ///< the tile holds an unclipped value of phi
-    std::vector<std::uint32_t> activeTiles_;  ///< this step's tiles
-    std::vector<std::uint32_t> tileUpdates_;  ///< per active tile: the nodes updated
+    std::vector<char> tileLive_;             ///< the tile holds an unclipped value of phi
+    std::vector<std::uint32_t> activeTiles_; ///< this step's tiles
+    std::vector<std::uint32_t> tileUpdates_; ///< per active tile: the nodes updated
     double bandInner_{0.0};
     int reach_{0};  ///< nodes a step's departure point and its cubic stencil reach from the node (Chebyshev)
     int sample_{0}; ///< nodes the step's current samples are read at from the node

@@ -51,8 +51,8 @@ private:
 
 /// The eight headings scanned where grad phi is too small to trust.
 constexpr double kDiag = 0.70710678118654752440;
-constexpr double kEight[8][2] = {{1, 0}, {kDiag, kDiag}, {0, 1}, {-kDiag, kDiag}, {-1, 0}, {-kDiag, -kDiag}, {0, -1},
-                                 {kDiag, -kDiag}};
+constexpr double kEight[8][2] = {{1, 0},  {kDiag, kDiag},   {0, 1},  {-kDiag, kDiag},
+                                 {-1, 0}, {-kDiag, -kDiag}, {0, -1}, {kDiag, -kDiag}};
 /// The heading's neighbours: 0.25 rad to each side.
 constexpr double kSide = 0.25;
 } // namespace
@@ -250,7 +250,8 @@ double FrontPropagation::nodeValue(std::size_t n, double x, double y, double tm)
     }
     // Three headings and the parabola through them.
     static const double cs = std::cos(kSide), sn = std::sin(kSide);
-    const double f0 = at(ax, ay), fm = at(ax * cs + ay * sn, ay * cs - ax * sn), fp = at(ax * cs - ay * sn, ay * cs + ax * sn);
+    const double f0 = at(ax, ay), fm = at(ax * cs + ay * sn, ay * cs - ax * sn),
+                 fp = at(ax * cs - ay * sn, ay * cs + ax * sn);
     double v = std::min(std::min(f0, centre), std::min(fm, fp));
     const double curv = fm - 2.0 * f0 + fp;
     if (curv > 0.0)
