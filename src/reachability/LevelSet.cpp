@@ -168,7 +168,7 @@ void FrontPropagation::initialise(double sx, double sy, double t0, const std::op
     // current is read half as far again, bilinear.
     const int moved = static_cast<int>(std::ceil(1.25 * sg_.cfl));
     reach_ = moved + 2;
-    sample_ = reach_ + (moved + 1) / 2 + 1;
+    sample_ = std::min(reach_ + (moved + 1) / 2 + 1, kMaxSampleReach); // cfl <= 8: at most 18
     guardAll_ = moved + 1 > params_.band + 1e-9;
     update_.assign(g.size(), 0);
     cu_.assign(g.size(), 0.0);
@@ -369,7 +369,7 @@ Reachability LevelSetSolver::solve(double sx, double sy, double t0, double tEnd,
     front->initialise(sx, sy, t0, goal);
     // a goal walled off from the start: proven before any step (a long window would step for minutes)
     const int reach = static_cast<int>(std::ceil(impl_->cfl)) + 3; // a step's reach and its cubic stencil
-    const bool walledOff = goal && stopAtGoal && !front->result().goalReached && !impl_->staticD.empty() &&
+    const bool walledOff = goal && stopAtGoal && !front->result().goalReached && impl_->staticForbidden &&
                            !levelset_detail::waterConnects(*impl_, {sx, sy}, *goal, reach);
     if (!walledOff)
     {

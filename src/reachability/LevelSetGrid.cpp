@@ -123,6 +123,7 @@ LevelSetSolver::LevelSetSolver(std::shared_ptr<const GliderContext> ctx, LevelSe
     {
         d = levelset_detail::closedBoundary(d, g.h);
         forbidden = forbidden || d > -band;
+        impl_->staticForbidden = impl_->staticForbidden || d > 0.0;
     }
     // the automatic step: long in open water, short near a forbidden set (see LevelSetParams::cfl)
     using levelset_detail::kForbiddenCfl;

@@ -41,6 +41,8 @@ constexpr int kTile = 16;
 /// The departure disc's radius V dt is at most this many cells: the minimum over a larger disc, found from the
 /// gradient and three headings, is missed where the front curves (4 cells: 13 % slow in still water; 2.5: exact).
 constexpr double kMaxDiscCells = 2.0;
+/// The most nodes a step reads its current samples at from a node (FrontPropagation::sample_ at the largest cfl, 8).
+constexpr int kMaxSampleReach = 18;
 /// The automatic cfl (LevelSetParams::cfl = 0) in open water and where there is a forbidden set, and the
 /// reinitialisation's period at each.
 constexpr double kOpenWaterCfl = 4.0, kForbiddenCfl = 1.5;
@@ -169,6 +171,7 @@ struct SolverGrid
     double band{0.3};            ///< half-width of the narrow band (the field's length unit)
     double cfl{1.5};             ///< the cfl in use (LevelSetParams::cfl, or the automatic one)
     int reinitEvery{4};          ///< the reinitialisation's period in use (0: never)
+    bool staticForbidden{false}; ///< some node is in the static forbidden set (else water connects every two nodes)
     std::vector<double> staticD; ///< static forbidden set (polygons, land, region): signed distance, -band outside
     /// A time-windowed zone and its distance (applied while the zone is closed).
     struct Zone

@@ -16,7 +16,8 @@ namespace levelset_detail
 {
 namespace
 {
-/// A summed-area table of a flag over a window of the grid: how many flagged nodes a box holds, in O(1).
+/// A summed-area table of a flag over a window of the grid: how many flagged nodes a box holds, in O(1). The window
+/// is a tile and kMaxSampleReach nodes around it at most (on the stack: no allocation, no thread-local lookup).
 class BoxCount
 {
 public:
@@ -26,7 +27,7 @@ public:
         j0_ = j0;
         w_ = w;
         h_ = h;
-        sum_.assign(static_cast<std::size_t>(w + 1) * (h + 1), 0);
+        std::fill(sum_, sum_ + static_cast<std::size_t>(w + 1) * (h + 1), 0);
     }
     /// Called row by row, column by column, once per node of the window.
     void add(int i, int j, bool flag)
@@ -43,10 +44,11 @@ public:
     }
 
 private:
+    static constexpr int kSide = kTile + 2 * kMaxSampleReach + 1;
     int &at(int a, int b) { return sum_[static_cast<std::size_t>(b) * (w_ + 1) + a]; }
     int atc(int a, int b) const { return sum_[static_cast<std::size_t>(b) * (w_ + 1) + a]; }
     int i0_{0}, j0_{0}, w_{0}, h_{0};
-    std::vector<int> sum_;
+    int sum_[kSide * kSide];
 };
 
 /// The eight headings scanned where grad phi is too small to trust.
@@ -110,7 +112,7 @@ void FrontPropagation::markTile(std::uint32_t tile, double tm)
         return;
     }
     // not +band (notOut) and not -band (notIn) near each node, within the window the step can read
-    thread_local BoxCount notOut, notIn;
+    BoxCount notOut, notIn;
     const int H = sample_;
     const int wi0 = std::max(0, i0 - H), wi1 = std::min(g.nx, i1 + H);
     const int wj0 = std::max(0, j0 - H), wj1 = std::min(g.ny, j1 + H);
