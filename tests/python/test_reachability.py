@@ -39,7 +39,7 @@ def test_arrays_of_the_probability_of_reach():
     # p is the share of the members whose own front came by the frame's time, node by node
     share = (p["member_arrival"][None, :, :, :] <= p["times"][:, None, None, None]).mean(axis=1)
     np.testing.assert_allclose(prob, share, atol=1e-6)
-    assert 0 < prob[-1].mean() < 1
+    assert 0 < prob[1].mean() < 1 and np.any((prob > 0) & (prob < 1))  # the members disagree somewhere
     # the quantiles are the members' goal times' ceil(q M)-th smallest (all four arrive within 15)
     goal = np.sort(p["goal_travel_times"])
     assert np.all(np.isfinite(goal)) and p["goal_probability"] == 1.0
