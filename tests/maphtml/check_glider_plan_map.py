@@ -5,7 +5,7 @@
   2. the Caribbean forecast around Jamaica with a coastline, a keep-off band and isochrones (lon/lat, dates);
   3. an execution run on the built-in mission flown in another jet (two strategies: two flown tracks);
   4. a fleet: the fleet's map.html holds every glider's route, and the other gliders' own starts and goals;
-  5. the probability of reach over a 6-member jet ensemble (examples/jet_reachability.yaml at a coarse cell): its
+  5. the probability of reach over a 6-member jet ensemble (examples/jet_reachability.yaml at a coarse cell, V = 1): its
      layer is drawn, and its own time slider moves it to another frame whose drawing differs.
 
 For each: no console error, the route layer has the route's vertex count (path.csv, or the flown track of a heading
@@ -54,7 +54,8 @@ def main():
     reach_yaml = os.path.join(work, "reach.yaml")
     with open(reach_yaml, "w") as f:
         f.write(text)
-    runs.append(("reachability", ["--mission", reach_yaml],
+    # (at V = 1: the robust plan has a route, which the page's checks need; at the example's 0.5 it has none)
+    runs.append(("reachability", ["--mission", reach_yaml, "--speed", "1.0"],
                  ["--expect-current-frames", "6", "--expect-reach-frames", "10"]))
     try:
         for name, args, expect in runs:
