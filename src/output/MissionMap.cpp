@@ -281,40 +281,44 @@ MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &pro
 
 namespace
 {
-/// The probability of reach at its last frame (the horizon): the contour of each level, one legend entry a level, and
-/// a note with the goal's probability and median arrival ([SubramaniStochastic]).
+/// The probability of reach at its last frame (the horizon) and, lighter and thinner, half way there: the contour of
+/// each level, one legend entry per level and frame, and a note with the goal's probability and median arrival
+/// ([SubramaniStochastic]).
 void addReachContours(MapRenderer &map, const MissionResult &r)
 {
     if (!r.reachability || r.reachability->contours.empty())
         return;
     const ReachProbability &p = *r.reachability;
     const double last = p.times.back();
-    for (std::size_t l = 0; l < p.levels.size(); ++l)
-    {
-        const double f = p.levels.size() > 1 ? static_cast<double>(l) / (p.levels.size() - 1) : 1.0;
-        bool labelled = false;
-        for (const ReachContour &c : p.contours)
+    std::vector<double> shown{last};
+    if (p.times.size() >= 3)
+        shown.insert(shown.begin(), p.times[(p.times.size() - 1) / 2]);
+    for (const double t : shown)
+        for (std::size_t l = 0; l < p.levels.size(); ++l)
         {
-            if (c.time != last || c.level != p.levels[l])
-                continue;
-            for (const auto &line : c.lines)
+            const double f = p.levels.size() > 1 ? static_cast<double>(l) / (p.levels.size() - 1) : 1.0;
+            const bool early = t != last;
+            bool labelled = false;
+            for (const ReachContour &c : p.contours)
             {
-                MapPath path;
-                if (!labelled)
+                if (c.time != t || c.level != p.levels[l])
+                    continue;
+                for (const auto &line : c.lines)
                 {
-                    path.label = "p = " + fmt(100.0 * c.level) + " % by +" + duration(r, last - p.departure, true);
+                    MapPath path;
+                    if (!labelled)
+                        path.label = "p = " + fmt(100.0 * c.level) + " % by +" + duration(r, t - p.departure, true);
                     labelled = true;
+                    for (const Point2 &q : line)
+                        path.waypoints.push_back({q.x, q.y, t});
+                    path.colour = {0.95 - 0.25 * f, 0.55 - 0.45 * f, 0.05, early ? 0.55 : 0.95};
+                    path.width = early ? 1.2 : 2.0;
+                    path.dashed = l + 1 < p.levels.size();
+                    path.waypointMarkers = false;
+                    map.addPath(path);
                 }
-                for (const Point2 &q : line)
-                    path.waypoints.push_back({q.x, q.y, last});
-                path.colour = {0.95 - 0.25 * f, 0.55 - 0.45 * f, 0.05, 0.95};
-                path.width = 2.0;
-                path.dashed = l + 1 < p.levels.size();
-                path.waypointMarkers = false;
-                map.addPath(path);
             }
         }
-    }
     std::string q;
     for (const ReachQuantile &rq : p.quantiles)
         if (rq.q == 0.5)
