@@ -243,6 +243,10 @@ yaml_case("reachability-interval-tiny",
           mission("reachability: {horizon: 10, interval: 0.001, resolution: 0.5}",
                   append="outputs: {files: [summary, reachability]}\n"),
           "field 'reachability.interval': an interval of 0.001 gives")
+case("reachability-beyond-memory", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:8: field 'reachability.resolution': the probability of reach over 1 member on",
+     {"m.yaml": mission("reachability: {resolution: 0.002}", append="outputs: {files: [summary, reachability]}\n")},
+     {"OMPL_GLIDER_MEMORY_LIMIT": "64M"})
 case("cli-reach-horizon-zero", ["--reach-horizon", "0", "--out", "{out}"], 2, "--reach-horizon")
 case("cli-reach-interval-fortnight", ["--reach-interval", "1 fortnight", "--out", "{out}"], 2, "--reach-interval")
 # execution in another ocean, ensembles

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -375,4 +376,23 @@ TEST(ReachProbability, BadSectionValuesNameFileLineAndField)
             EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << yaml << "\n" << e.what();
         }
     }
+}
+
+// A cell too fine for the memory limit is refused before any front, naming the mission's field.
+TEST(ReachProbability, ACellBeyondTheMemoryLimitNamesTheResolution)
+{
+    MissionSpec m = jetMission(kJet, "reachability: {horizon: 5, resolution: 0.002}\n");
+    const MissionProblem problem(m);
+    ASSERT_EQ(setenv("OMPL_GLIDER_MEMORY_LIMIT", "64M", 1), 0);
+    try
+    {
+        computeReachProbability(problem, PlannedPath(), 0.0);
+        ADD_FAILURE() << "a cell of 0.002 (2e7 nodes) passed a memory limit of 64 MB";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("reach.yaml:8: field 'reachability.resolution'"), std::string::npos)
+            << e.what();
+    }
+    unsetenv("OMPL_GLIDER_MEMORY_LIMIT");
 }

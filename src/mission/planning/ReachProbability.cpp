@@ -16,6 +16,7 @@
 #include "../../io/NumberText.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/ResourceLimits.h"
 #include "ompl_glider/StopRequest.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/mission/MissionProblem.h"
@@ -119,6 +120,25 @@ std::vector<double> framesOf(const MissionSpec &m, double departure, double hori
         times.push_back(departure + horizon);
     times.back() = departure + horizon;
     return times;
+}
+
+/// Refuses, naming the cell (or the horizon's frames), a computation beyond the memory limit: the members' arrival
+/// fields (8 bytes a node each), p per frame (4), the solves under way (3 doubles a node each) and the quantile field
+/// of the contours.
+void checkMemoryOf(const MissionProblem &problem, const ReachRequest &request, std::size_t members, std::size_t frames,
+                   unsigned solving)
+{
+    const MissionSpec &m = problem.getSpec();
+    const Region &b = problem.getBox();
+    const double h = request.cellSize > 0.0 ? request.cellSize : (std::max(b.xMax - b.xMin, b.yMax - b.yMin) / 200.0);
+    const double nodes = (std::floor((b.xMax - b.xMin) / h) + 2.0) * (std::floor((b.yMax - b.yMin) / h) + 2.0);
+    const double bytes = nodes * (8.0 * static_cast<double>(members) + 4.0 * static_cast<double>(frames) +
+                                  24.0 * static_cast<double>(std::min<std::size_t>(solving, members)) + 16.0);
+    checkMemory(bytes,
+                m.place(std::isnan(m.reachability.resolution) ? "reachability" : "reachability.resolution") +
+                    ": the probability of reach over " + std::to_string(members) +
+                    (members == 1 ? " member on " : " members on ") + text::number(nodes, 4) + " grid nodes",
+                "use a coarser reachability.resolution");
 }
 
 /// p(x, t) at every frame: the weights of the members whose front came by t (equal weights: the count over M,
@@ -253,6 +273,7 @@ ReachProbability computeReachProbability(const MissionProblem &problem, const Pl
     request.goal = problem.getGoal();
     request.threads = sideBySide ? 1u : 0u;
     request.stop = [] { return stopRequested(); };
+    checkMemoryOf(problem, request, members, out.times.size(), sideBySide ? cores : 1u);
     std::vector<ReachableSet> sets(members);
     std::vector<char> done(members, 0);
     const auto solve = [&](std::size_t k) {
