@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <limits>
 #include <string>
 
@@ -18,6 +19,8 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/mission/Observations.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/Planning.h"
 #include "ompl_glider/mission/ReachProbability.h"
 #include "ompl_glider/ompl/GliderSetup.h"
@@ -395,4 +398,121 @@ TEST(ReachProbability, ACellBeyondTheMemoryLimitNamesTheResolution)
             << e.what();
     }
     unsetenv("OMPL_GLIDER_MEMORY_LIMIT");
+}
+
+namespace
+{
+/// A uniform current (u, 0) over lon -53..-51, lat 47.5..48.5 and 5 days from 2026-03-15, hourly, as a CF file.
+std::string uniformMember(const std::string &name, double u)
+{
+    const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "reach_members";
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / name).string();
+    int nc = 0, dt = 0, dy = 0, dx = 0, vt = 0, vy = 0, vx = 0, vu = 0, vv = 0;
+    EXPECT_EQ(nc_create(path.c_str(), NC_CLOBBER, &nc), NC_NOERR);
+    const int nt = 121, ny = 21, nx = 41;
+    nc_def_dim(nc, "time", nt, &dt);
+    nc_def_dim(nc, "lat", ny, &dy);
+    nc_def_dim(nc, "lon", nx, &dx);
+    nc_def_var(nc, "time", NC_DOUBLE, 1, &dt, &vt);
+    nc_def_var(nc, "lat", NC_DOUBLE, 1, &dy, &vy);
+    nc_def_var(nc, "lon", NC_DOUBLE, 1, &dx, &vx);
+    const int dims[] = {dt, dy, dx};
+    nc_def_var(nc, "u", NC_FLOAT, 3, dims, &vu);
+    nc_def_var(nc, "v", NC_FLOAT, 3, dims, &vv);
+    const auto text = [&](int var, const char *k, const std::string &v) {
+        nc_put_att_text(nc, var, k, v.size(), v.c_str());
+    };
+    text(vt, "units", "hours since 2026-03-15 00:00:00");
+    text(vt, "standard_name", "time");
+    text(vy, "units", "degrees_north");
+    text(vx, "units", "degrees_east");
+    text(vu, "units", "m/s");
+    text(vu, "standard_name", "eastward_sea_water_velocity");
+    text(vv, "units", "m/s");
+    text(vv, "standard_name", "northward_sea_water_velocity");
+    nc_enddef(nc);
+    std::vector<double> t(nt), y(ny), x(nx);
+    for (int i = 0; i < nt; ++i)
+        t[i] = i;
+    for (int j = 0; j < ny; ++j)
+        y[j] = 47.5 + 0.05 * j;
+    for (int i = 0; i < nx; ++i)
+        x[i] = -53.0 + 0.05 * i;
+    nc_put_var_double(nc, vt, t.data());
+    nc_put_var_double(nc, vy, y.data());
+    nc_put_var_double(nc, vx, x.data());
+    const std::vector<float> U(static_cast<std::size_t>(nt) * ny * nx, static_cast<float>(u)), V(U.size(), 0.0f);
+    nc_put_var_float(nc, vu, U.data());
+    nc_put_var_float(nc, vv, V.data());
+    nc_close(nc);
+    return path;
+}
+} // namespace
+
+// Members weighed by the glider's DAC (MissionProblem::observations()->members): the weights are theirs, not equal,
+// and p is the weight of the members whose front came, node by node; the goal's quantiles are the weighted ones.
+TEST(ReachProbability, MembersWeighedByTheObservationsWeighTheProbability)
+{
+    const std::string a = uniformMember("slow.nc", 0.05), b = uniformMember("middle.nc", 0.2),
+                      c = uniformMember("fast.nc", 0.35);
+    const std::filesystem::path dac = std::filesystem::path(::testing::TempDir()) / "reach_members" / "dac.csv";
+    {
+        std::ofstream f(dac);
+        f << "time,lon,lat,u,v\n"; // eight DAC of the middle member's (0.2, 0) in the 12 h before the last fix
+        const double end = parseIsoTime("2026-03-16T00:00:00Z");
+        for (int k = 0; k < 8; ++k)
+            f << formatIsoTime(end - 1.5 * 3600.0 * (8 - k)) << "," << -52.30 + 0.03 * k << ",48.0,0.2,0\n";
+        f << formatIsoTime(end) << ",-52.09,48.0,,\n";
+    }
+    const MissionSpec m =
+        parseMission("name: weighed\ncurrent: {ensemble: [{type: netcdf, file: '" + a + "'}, {type: netcdf, file: '" +
+                         b + "'}, {type: netcdf, file: '" + c +
+                         "'}]}\ngoal: {lon: -51.8, lat: 48.05}\nvehicle: {speed: 0.3}\n"
+                         "observations: '" +
+                         dac.string() + "'\nreachability: {horizon: 12 h, interval: 3 h, resolution: 1 km}\n",
+                     "weighed.yaml");
+    const MissionProblem problem(m);
+    ASSERT_TRUE(problem.observations());
+    ASSERT_EQ(problem.observations()->members.size(), 3u);
+    const ReachProbability r = computeReachProbability(problem, PlannedPath(), problem.getSpec().departure.time);
+    ASSERT_TRUE(problem.getMembers().empty()); // the plan is made on the forecast the members make
+    ASSERT_EQ(problem.weighedMembers().size(), 3u);
+    ASSERT_TRUE(r.weighed);
+    EXPECT_EQ(r.members, 3u);
+    double sum = 0.0;
+    for (const MemberScore &s : problem.observations()->members)
+        sum += s.weight;
+    for (std::size_t k = 0; k < 3; ++k)
+        EXPECT_NEAR(r.weights[k], problem.observations()->members[k].weight / sum, 1e-12);
+    EXPECT_GT(r.weights[1], r.weights[0] + 0.05); // the DAC are the middle member's
+    EXPECT_GT(r.weights[1], r.weights[2] + 0.05);
+    std::size_t unequal = 0;
+    for (std::size_t f = 0; f < r.times.size(); ++f)
+        for (std::size_t n = 0; n < nodesOf(r); ++n)
+        {
+            double p = 0.0;
+            for (std::size_t k = 0; k < 3; ++k)
+                p += r.memberArrival[k][n] <= r.times[f] ? r.weights[k] : 0.0;
+            ASSERT_NEAR(r.probability[f][n], p, 1e-6) << f << " " << n;
+            const double third = 3.0 * p;
+            unequal += std::abs(third - std::round(third)) > 0.01; // not a share of equal weights
+        }
+    EXPECT_GT(unequal, 100u);
+    // the goal's quantiles: the smallest goal time whose members weigh at least q, by hand
+    std::vector<std::size_t> order{0, 1, 2};
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t i, std::size_t j) { return r.goalTimes[i] < r.goalTimes[j]; });
+    for (const ReachQuantile &q : r.quantiles)
+    {
+        double cumulative = 0.0, expected = kInfinity;
+        for (const std::size_t k : order)
+            if (std::isfinite(r.goalTimes[k]) && (cumulative += r.weights[k]) >= q.q - 1e-12)
+            {
+                expected = r.goalTimes[k];
+                break;
+            }
+        EXPECT_EQ(q.arrival, expected) << q.q;
+        EXPECT_EQ(q.reached, std::isfinite(expected)) << q.q;
+    }
 }

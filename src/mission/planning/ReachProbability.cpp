@@ -66,7 +66,8 @@ std::vector<double> memberWeights(const MissionProblem &problem, std::size_t mem
     std::vector<double> w(members, 1.0 / static_cast<double>(members));
     weighed = false;
 #if OMPL_GLIDER_WITH_NETCDF
-    if (members > 1 && problem.observations() && problem.observations()->members.size() == members)
+    if (members > 1 && problem.getMembers().empty() && problem.observations() &&
+        problem.observations()->members.size() == members)
     {
         std::vector<double> o;
         for (const MemberScore &s : problem.observations()->members)
@@ -255,7 +256,9 @@ ReachProbability computeReachProbability(const MissionProblem &problem, const Pl
     out.levels = rs.levels.empty() ? std::vector<double>{0.5, 0.9} : rs.levels;
     const std::vector<double> qs = rs.quantiles.empty() ? std::vector<double>{0.1, 0.5, 0.9} : rs.quantiles;
 
-    const std::size_t members = std::max<std::size_t>(problem.getMembers().size(), 1);
+    // the ensemble's members, or those the glider's observations weighed (the plan is then made on their forecast)
+    const std::size_t ensemble = std::max(problem.getMembers().size(), problem.weighedMembers().size());
+    const std::size_t members = std::max<std::size_t>(ensemble, 1);
     out.members = members;
     out.weights = memberWeights(problem, members, out.weighed);
 
@@ -279,7 +282,7 @@ ReachProbability computeReachProbability(const MissionProblem &problem, const Pl
     const auto solve = [&](std::size_t k) {
         if (stopRequested())
             return;
-        const MissionProblem member = problem.getMembers().empty() ? problem : problem.withMember(k);
+        const MissionProblem member = ensemble == 0 ? problem : problem.withMember(k);
         const LevelSetOn l = levelSetOn(member, departure, speed);
         std::optional<ReachableSet> r = pipelineView(*l.planner).reachableSet(l.setup, request);
         if (!r)
