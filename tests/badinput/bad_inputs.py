@@ -247,6 +247,9 @@ case("reachability-beyond-memory", ["--mission", "m.yaml", "--out", "{out}"], 2,
      "m.yaml:8: field 'reachability.resolution': the probability of reach over 1 member on",
      {"m.yaml": mission("reachability: {resolution: 0.002}", append="outputs: {files: [summary, reachability]}\n")},
      {"OMPL_GLIDER_MEMORY_LIMIT": "64M"})
+yaml_case("reachability-horizon-beyond-the-limits",
+          mission("reachability: {horizon: 1e9}", append="outputs: {files: [summary, reachability]}\n"),
+          "m.yaml:8: field 'reachability.horizon': the fronts of 1 member(s)")
 case("cli-reach-horizon-zero", ["--reach-horizon", "0", "--out", "{out}"], 2, "--reach-horizon")
 case("cli-reach-interval-fortnight", ["--reach-interval", "1 fortnight", "--out", "{out}"], 2, "--reach-interval")
 # execution in another ocean, ensembles

@@ -450,6 +450,23 @@ std::string uniformMember(const std::string &name, double u)
 }
 } // namespace
 
+// A horizon beyond the level set's limits (ResourceLimits.h) is refused before any front, naming the field.
+TEST(ReachProbability, AHorizonBeyondTheLevelSetsLimitsNamesTheHorizon)
+{
+    const MissionProblem problem(jetMission(kJet, "reachability: {horizon: 1e7, resolution: 0.25}\n"));
+    try
+    {
+        computeReachProbability(problem, PlannedPath(), 0.0);
+        ADD_FAILURE() << "a horizon of 1e7 passed";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("reach.yaml:8: field 'reachability.horizon': the fronts of 1 member(s)"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 // Members weighed by the glider's DAC (MissionProblem::observations()->members): the weights are theirs, not equal,
 // and p is the weight of the members whose front came, node by node; the goal's quantiles are the weighted ones.
 TEST(ReachProbability, MembersWeighedByTheObservationsWeighTheProbability)

@@ -142,6 +142,34 @@ void checkMemoryOf(const MissionProblem &problem, const ReachRequest &request, s
                 "use a coarser reachability.resolution");
 }
 
+/// Refuses, naming the horizon (or the cell when it was given), fronts beyond the level set's limits
+/// (ResourceLimits.h): more than kMaxLevelSetSteps time steps, or more than kMaxLevelSetWork node updates over all
+/// the members (nodes x steps each; the planner's cfl, read by name, and the field's fastest current over the region).
+void checkWorkOf(const MissionProblem &problem, const LevelSetOn &l, const ReachRequest &request, std::size_t members,
+                 double horizon)
+{
+    const MissionSpec &m = problem.getSpec();
+    const Region &r = l.ctx->region;
+    std::string cflText;
+    const double cfl = l.planner->params().getParam("cfl", cflText) ? std::stod(cflText) : 1.5;
+    const double h = request.cellSize > 0.0 ? request.cellSize
+                                            : request.cellScale * std::max(r.xMax - r.xMin, r.yMax - r.yMin) / 200.0;
+    const double nodes = (std::floor((r.xMax - r.xMin) / h) + 1.0) * (std::floor((r.yMax - r.yMin) / h) + 1.0);
+    const double dt = cfl * h / (l.ctx->speed() + std::max(l.ctx->maxCurrent(), 0.0));
+    const double steps = std::ceil(horizon / dt), work = nodes * steps * static_cast<double>(members);
+    if (steps <= kMaxLevelSetSteps && work <= kMaxLevelSetWork)
+        return;
+    const bool cellGiven = !std::isnan(m.reachability.resolution) && steps <= kMaxLevelSetSteps;
+    throw Error(m.place(cellGiven ? "reachability.resolution" : "reachability.horizon") +
+                text::formatted(": the fronts of %g member(s) over a horizon of %.4g would take %.3g time steps of "
+                                "%.3g on %.4g grid nodes",
+                                static_cast<double>(members), horizon, steps, dt, nodes) +
+                text::formatted(" (%.3g node updates)", work) +
+                text::formatted(", more than the limit of %.3g steps and %.3g node updates: give a shorter "
+                                "reachability.horizon or a coarser reachability.resolution",
+                                kMaxLevelSetSteps, kMaxLevelSetWork));
+}
+
 /// p(x, t) at every frame: the weights of the members whose front came by t (equal weights: the count over M,
 /// so that an ensemble of equal members gives exactly 0 or 1).
 void probabilityFields(ReachProbability &out)
@@ -277,6 +305,8 @@ ReachProbability computeReachProbability(const MissionProblem &problem, const Pl
     request.threads = sideBySide ? 1u : 0u;
     request.stop = [] { return stopRequested(); };
     checkMemoryOf(problem, request, members, out.times.size(), sideBySide ? cores : 1u);
+    const LevelSetOn drawer = levelSetOn(problem, departure, speed); // also draws the contours
+    checkWorkOf(problem, drawer, request, members, horizon);
     std::vector<ReachableSet> sets(members);
     std::vector<char> done(members, 0);
     const auto solve = [&](std::size_t k) {
@@ -356,7 +386,6 @@ ReachProbability computeReachProbability(const MissionProblem &problem, const Pl
         rq.iso = rq.reached ? problem.isoTime(rq.arrival) : "";
         out.quantiles.push_back(rq);
     }
-    const LevelSetOn drawer = levelSetOn(problem, departure, speed);
     contoursOf(out, problem, pipelineView(*drawer.planner));
     out.seconds = planning_detail::secondsSince(wall0);
     return out;
