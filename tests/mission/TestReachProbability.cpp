@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/StopRequest.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/mission/Observations.h"
@@ -449,6 +450,36 @@ std::string uniformMember(const std::string &name, double u)
     return path;
 }
 } // namespace
+
+// A stop request (Python's Ctrl-C) ends the fronts: the result says it was stopped, and the files are still written.
+TEST(ReachProbability, AStopRequestEndsTheFrontsAndSaysSo)
+{
+    const MissionProblem problem(
+        jetMission("{ensemble: [" + kJet + ", " + kJet + "]}", "reachability: {horizon: 9, resolution: 0.25}\n"));
+    requestStop();
+    const ReachProbability r = computeReachProbability(problem, PlannedPath(), 0.0);
+    clearStop();
+    EXPECT_TRUE(r.stopped);
+    EXPECT_EQ(r.goalProbability, 0.0);
+    MissionResult result;
+    result.spec = problem.getSpec();
+    result.reachability = r;
+    const nlohmann::json g = nlohmann::json::parse(reachabilityGeoJson(result));
+    EXPECT_TRUE(g["features"].empty());
+    const std::string nc = (std::filesystem::temp_directory_path() / "ompl_glider_reach_stopped.nc").string();
+    writeReachabilityNetCdf(nc, result, problem); // what was computed: nothing, with its frames and members
+    int id = -1, dim = -1;
+    std::size_t frames = 0;
+    ASSERT_EQ(nc_open(nc.c_str(), NC_NOWRITE, &id), NC_NOERR);
+    EXPECT_EQ(nc_inq_dimid(id, "time", &dim), NC_NOERR);
+    EXPECT_EQ(nc_inq_dimlen(id, dim, &frames), NC_NOERR);
+    EXPECT_EQ(frames, r.times.size());
+    nc_close(id);
+    std::filesystem::remove(nc);
+    const ReachProbability again = computeReachProbability(problem, PlannedPath(), 0.0);
+    EXPECT_FALSE(again.stopped);
+    EXPECT_EQ(again.goalProbability, 1.0);
+}
 
 // A horizon beyond the level set's limits (ResourceLimits.h) is refused before any front, naming the field.
 TEST(ReachProbability, AHorizonBeyondTheLevelSetsLimitsNamesTheHorizon)
