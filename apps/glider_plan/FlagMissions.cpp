@@ -169,6 +169,12 @@ MissionOverrides overridesOf(const Flags &f)
         o.isochrones = Given<bool>{true, "--isochrones"};
     if (!f.isochroneInterval.empty())
         o.isochroneInterval = Given<std::string>{f.isochroneInterval, "--isochrone-interval"};
+    if (f.reachability)
+        o.reachability = Given<bool>{true, "--reachability"};
+    if (!f.reachHorizon.empty())
+        o.reachHorizon = Given<std::string>{f.reachHorizon, "--reach-horizon"};
+    if (!f.reachInterval.empty())
+        o.reachInterval = Given<std::string>{f.reachInterval, "--reach-interval"};
     if (f.gotoTurn)
         o.gotoTurn = Given<double>{*f.gotoTurn, "--goto-turn"};
     // safety

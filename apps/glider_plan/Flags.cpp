@@ -223,6 +223,19 @@ void defineIoFlags(CLI::App &app, Flags &f)
                    "time between isochrones: a number in the mission's time unit, or e.g. '12 h' (default: eight up "
                    "to the arrival); implies --isochrones")
         ->group(io);
+    app.add_flag("--reachability", f.reachability,
+                 "also write reachability.nc and reachability.geojson: the probability of reach by each time over "
+                 "the ensemble's members (one level-set front per member; a single current is an ensemble of one), "
+                 "the goal's arrival quantiles in summary.json, its contours on the maps")
+        ->group(io);
+    app.add_option("--reach-horizon", f.reachHorizon,
+                   "how long after the departure the probability of reach runs: a number in the mission's time unit, "
+                   "or e.g. '10 d' (default: 1.5 times the planned travel time); implies --reachability")
+        ->group(io);
+    app.add_option("--reach-interval", f.reachInterval,
+                   "time between two frames of the probability of reach (default: the horizon / 10); implies "
+                   "--reachability")
+        ->group(io);
 }
 
 /// The flags of safety margins.

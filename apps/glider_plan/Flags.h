@@ -35,6 +35,9 @@ struct Flags
     // reachable-set contours: --isochrones, --isochrone-interval
     bool isochrones{false};
     std::string isochroneInterval;
+    // the probability of reach: --reachability, --reach-horizon, --reach-interval
+    bool reachability{false};
+    std::string reachHorizon, reachInterval;
     std::optional<double> gotoTurn; // --goto-turn: the goto list's turn threshold in degrees
     // forecasts from OPeNDAP servers: --cache, --request-timeout, --retries (io/RemoteSource.h)
     std::string cache;

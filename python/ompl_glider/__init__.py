@@ -341,6 +341,23 @@ class Result:
         return self._core.arrival_field()
 
     @property
+    def reachability(self) -> Optional[Dict[str, Any]]:
+        """The probability of reach over the ensemble's members (``plan(reachability=True)``, the mission's
+        ``reachability`` section): x, y (the grid's nodes, planning frame) and lon, lat ((ny, nx) arrays where the
+        mission is geographic, else None); times (absolute, the frames) and time_iso; probability, an array
+        [frame, y, x] of p in [0, 1]; member_arrival [member, y, x], each member's first arrival (inf: not by the
+        horizon); weights; goal_times and goal_travel_times per member (inf: not by the horizon); goal_probability;
+        quantiles {q: travel time or None when not reached by the horizon} (quantile_arrivals, quantile_iso the same
+        as absolute times and dates); levels and contours [{time, time_iso, level, lines}]; horizon, resolution,
+        members, stopped, seconds. None when not computed."""
+        return self._core.reachability()
+
+    @property
+    def reachability_geojson(self) -> Optional[Dict[str, Any]]:
+        """reachability.geojson as a dict (one Feature per frame and level); None when not computed."""
+        return json.loads(self._core.reachability_geojson()) if self._core.reachability() is not None else None
+
+    @property
     def execution(self) -> Optional[Dict[str, List[Any]]]:
         """execution.csv (the plan flown in the truth ocean, one row per run and strategy) as columns; None
         without an execution section."""
@@ -479,6 +496,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
          truth: Union[None, str, Sequence[str], Dict[str, float]] = None,
          surfacing_interval: Union[None, float, str] = None, strategies: Optional[Sequence[str]] = None,
          radius: Optional[float] = None, execution_pairs: Optional[int] = None, execution_seed: Optional[int] = None,
+         reachability: bool = False, reach_horizon: Union[None, float, str] = None,
+         reach_interval: Union[None, float, str] = None, reach_resolution: Union[None, float, str] = None,
          speeds: Optional[Sequence[float]] = None,
          optimum: bool = False, progress: Optional[ProgressCallback] = None) -> Result:
     """Plans a mission with the library's one pipeline and returns its :class:`Result`.
@@ -513,7 +532,10 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     goal on the forecast's land moved to the nearest water). Execution in another ocean (docs/EXECUTION.md; any of
     these flies the plan): truth ("forecast", another forecast's files, or {parameter: value} of the analytic flow),
     surfacing_interval (a number in the mission's time unit, or "1 h"), strategies (names), radius (the goal radius),
-    execution_pairs and execution_seed (random start/goal pairs, :attr:`Result.execution`). These
+    execution_pairs and execution_seed (random start/goal pairs, :attr:`Result.execution`). The probability of
+    reach over the ensemble's members (:attr:`Result.reachability`, docs/REACHABILITY.md): reachability, and
+    reach_horizon, reach_interval (durations: a number in the mission's time unit, or "10 d") and reach_resolution (the
+    level set's cell: a number in the length unit, or "2 km"), each of which also asks for it. These
     keywords and glider_plan's flags are one set of overrides in the library (Overrides.h): the same values give
     the same mission (``Mission.fields()``, ``glider_plan --show-mission``). progress(line, done) receives the progress lines of long runs (the GIL is released while planning).
 
@@ -536,7 +558,9 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                     truth=[os.fspath(t) for t in truth] if isinstance(truth, (list, tuple)) else truth,
                     surfacing_interval=surfacing_interval,
                     strategies=_list_keyword("strategies", strategies, "a list of strategy names"), radius=radius,
-                    execution_pairs=execution_pairs, execution_seed=execution_seed)
+                    execution_pairs=execution_pairs, execution_seed=execution_seed,
+                    reachability=reachability, reach_horizon=reach_horizon, reach_interval=reach_interval,
+                    reach_resolution=reach_resolution)
     if planner_params is not None and not isinstance(planner_params, dict):
         raise _bad("plan(): keyword 'planner_params'", planner_params, "a dict of parameter names to values")
     if not isinstance(optimum, (bool, np.bool_)):

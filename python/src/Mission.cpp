@@ -326,7 +326,10 @@ void applySafetyAndExecutionKeywords(const Get &get, const Text &text, MissionOv
           std::make_tuple("keep_off", &o.keepOff, "a number or a length ('2 km')"),
           std::make_tuple("min_depth", &o.minDepth, "a number of metres or a length ('50 m')"),
           std::make_tuple("correction_length", &o.correctionLength, "a number or a length ('20 km')"),
-          std::make_tuple("correction_time", &o.correctionTime, "a number or a duration ('1 d')")})
+          std::make_tuple("correction_time", &o.correctionTime, "a number or a duration ('1 d')"),
+          std::make_tuple("reach_horizon", &o.reachHorizon, "a number or a duration ('10 d')"),
+          std::make_tuple("reach_interval", &o.reachInterval, "a number or a duration ('1 d')"),
+          std::make_tuple("reach_resolution", &o.reachResolution, "a number or a length ('2 km')")})
         if (get(name))
             *target = quantity(name, expected);
     for (const auto &[name, target] :
@@ -414,7 +417,11 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
                                   "correction_length",
                                   "correction_time",
                                   "error_ratio",
-                                  "learn"};
+                                  "learn",
+                                  "reachability",
+                                  "reach_horizon",
+                                  "reach_interval",
+                                  "reach_resolution"};
     for (const auto &item : kw)
     {
         const std::string name = item.first.cast<std::string>();
@@ -448,7 +455,8 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
         o.sectors = Given<int>{value<int>(*v, "sectors", "an integer 1..5"), text("sectors")};
     for (const auto &[name, target] :
          {std::make_pair("smoothing", &o.smoothing), std::make_pair("refinement", &o.refinement),
-          std::make_pair("global_check", &o.globalCheck), std::make_pair("isochrones", &o.isochrones)})
+          std::make_pair("global_check", &o.globalCheck), std::make_pair("isochrones", &o.isochrones),
+          std::make_pair("reachability", &o.reachability)})
         if (auto v = get(name))
             *target = Given<bool>{value<bool>(*v, name, "True or False"), text(name)};
     if (auto v = get("departure"))

@@ -29,6 +29,7 @@
 #include "ompl_glider/output/FleetFiles.h"
 #include "ompl_glider/output/OutputWriter.h"
 #include "ompl_glider/output/Report.h"
+#include "ompl_glider/output/ReachabilityFiles.h"
 #include "ompl_glider/output/RouteFiles.h"
 #include "ompl_glider/output/SummaryJson.h"
 
@@ -195,6 +196,87 @@ py::object arrivalField(const PyResult &r)
     d["x"] = array(x);
     d["y"] = array(y);
     d["arrival"] = t;
+    return std::move(d);
+}
+
+/// The probability of reach (plan(reachability=True), ReachProbability.h) as numpy arrays; None without it.
+py::object reachability(const PyResult &r)
+{
+    if (!r.result.reachability)
+        return py::none();
+    const ReachProbability &p = *r.result.reachability;
+    const auto ny = static_cast<py::ssize_t>(p.ny), nx = static_cast<py::ssize_t>(p.nx);
+    std::vector<double> x(p.nx), y(p.ny), goalTravel;
+    for (int i = 0; i < p.nx; ++i)
+        x[i] = p.x0 + i * p.h;
+    for (int j = 0; j < p.ny; ++j)
+        y[j] = p.y0 + j * p.h;
+    py::array_t<float> prob({static_cast<py::ssize_t>(p.probability.size()), ny, nx});
+    auto P = prob.mutable_unchecked<3>();
+    for (std::size_t f = 0; f < p.probability.size(); ++f)
+        for (py::ssize_t n = 0; n < ny * nx; ++n)
+            P(f, n / nx, n % nx) = p.probability[f][static_cast<std::size_t>(n)];
+    py::array_t<double> arrival({static_cast<py::ssize_t>(p.memberArrival.size()), ny, nx});
+    auto A = arrival.mutable_unchecked<3>();
+    for (std::size_t k = 0; k < p.memberArrival.size(); ++k)
+        for (py::ssize_t n = 0; n < ny * nx; ++n)
+            A(k, n / nx, n % nx) = p.memberArrival[k][static_cast<std::size_t>(n)];
+    for (const double t : p.goalTimes)
+        goalTravel.push_back(t - p.departure);
+    py::dict quantiles, arrivals, isos;
+    for (const ReachQuantile &q : p.quantiles)
+    {
+        quantiles[py::float_(q.q)] = q.reached ? py::object(py::float_(q.travelTime)) : py::object(py::none());
+        arrivals[py::float_(q.q)] = q.reached ? py::object(py::float_(q.arrival)) : py::object(py::none());
+        isos[py::float_(q.q)] = q.iso.empty() ? py::object(py::none()) : py::object(py::str(q.iso));
+    }
+    py::list contours;
+    for (const ReachContour &c : p.contours)
+    {
+        py::list lines;
+        for (const auto &line : c.lines)
+        {
+            py::array_t<double> a({static_cast<py::ssize_t>(line.size()), py::ssize_t{2}});
+            auto v = a.mutable_unchecked<2>();
+            for (std::size_t k = 0; k < line.size(); ++k)
+                v(k, 0) = line[k].x, v(k, 1) = line[k].y;
+            lines.append(a);
+        }
+        contours.append(py::dict(py::arg("time") = c.time, py::arg("time_iso") = c.iso, py::arg("level") = c.level,
+                                 py::arg("lines") = lines));
+    }
+    py::dict d;
+    d["members"] = p.members;
+    d["weights"] = array(p.weights);
+    d["resolution"] = p.resolution;
+    d["x"] = array(x);
+    d["y"] = array(y);
+    if (!p.lon.empty())
+    {
+        d["lon"] = py::array_t<double>({ny, nx}, p.lon.data());
+        d["lat"] = py::array_t<double>({ny, nx}, p.lat.data());
+    }
+    else
+    {
+        d["lon"] = py::none();
+        d["lat"] = py::none();
+    }
+    d["departure"] = p.departure;
+    d["horizon"] = p.horizon - p.departure;
+    d["times"] = array(p.times);
+    d["time_iso"] = p.iso;
+    d["levels"] = array(p.levels);
+    d["probability"] = prob;
+    d["member_arrival"] = arrival;
+    d["goal_times"] = array(p.goalTimes);
+    d["goal_travel_times"] = array(goalTravel);
+    d["goal_probability"] = p.goalProbability;
+    d["quantiles"] = quantiles;
+    d["quantile_arrivals"] = arrivals;
+    d["quantile_iso"] = isos;
+    d["contours"] = contours;
+    d["stopped"] = p.stopped;
+    d["seconds"] = p.seconds;
     return std::move(d);
 }
 
@@ -427,6 +509,8 @@ void bindResult(py::module_ &m)
         .def("polygons", &polygons)
         .def("isochrones", &isochrones)
         .def("arrival_field", &arrivalField)
+        .def("reachability", &reachability)
+        .def("reachability_geojson", [](const R &r) { return reachabilityGeoJson(r.result); })
         .def("current_grid", &currentGrid, py::arg("n") = 25, py::arg("t") = kNaN)
         .def("summary_json", [](const R &r) { return summaryJson(r.result, *r.problem, {}); })
         .def("correction", &correction)

@@ -290,6 +290,57 @@ PageJson isochronesJson(const MissionResult &r, const MissionProblem &p, const F
     return out;
 }
 
+/// The probability of reach for the page ([SubramaniStochastic]): per frame its date and p on the grid as percents
+/// (rows from the north, at most 160 cells a side: every s-th node), drawn as an image between the grid's corners,
+/// and its contours per level. Null without it.
+PageJson reachabilityPageJson(const MissionResult &r, const MissionProblem &p, const Frame &f)
+{
+    if (!r.reachability || r.reachability->probability.empty())
+        return nullptr;
+    const ReachProbability &rp = *r.reachability;
+    const int s = std::max(1, static_cast<int>(std::ceil(std::max(rp.nx, rp.ny) / 160.0)));
+    const int nx = (rp.nx - 1) / s + 1, ny = (rp.ny - 1) / s + 1;
+    const double half = 0.5 * s * rp.h;
+    const double xMax = rp.x0 + (nx - 1) * s * rp.h, yMax = rp.y0 + (ny - 1) * s * rp.h;
+    PageJson frames = PageJson::array();
+    for (std::size_t k = 0; k < rp.times.size(); ++k)
+    {
+        PageJson values = PageJson::array();
+        for (int j = ny - 1; j >= 0; --j)
+            for (int i = 0; i < nx; ++i)
+                values.push_back(static_cast<int>(std::lround(
+                    100.0 *
+                    rp.probability[k][static_cast<std::size_t>(j * s) * rp.nx + static_cast<std::size_t>(i * s)])));
+        PageJson contours = PageJson::array();
+        for (const double level : rp.levels)
+        {
+            PageJson lines = PageJson::array();
+            for (const ReachContour &c : rp.contours)
+                if (c.time == rp.times[k] && c.level == level)
+                    for (const auto &l : c.lines)
+                        lines.push_back(f.line(l));
+            contours.push_back(std::move(lines));
+        }
+        frames.push_back({{"time", pageTime(p, rp.times[k])},
+                          {"since", elapsedText(r.spec, rp.times[k] - rp.departure)},
+                          {"p", std::move(values)},
+                          {"contours", std::move(contours)}});
+    }
+    std::string goal = "goal by the horizon: p = " + text::number(rp.goalProbability, 3);
+    for (const ReachQuantile &q : rp.quantiles)
+        goal += ", " + text::number(100.0 * q.q, 3) + " %: " +
+                (q.reached ? (q.iso.empty() ? pageTime(p, q.arrival) : q.iso) : std::string("not by the horizon"));
+    return {{"members", rp.members},
+            {"levels", rp.levels},
+            {"grid",
+             {{"nx", nx},
+              {"ny", ny},
+              {"sw", f.at({rp.x0 - half, rp.y0 - half})},
+              {"ne", f.at({xMax + half, yMax + half})}}},
+            {"frames", std::move(frames)},
+            {"goal", goal}};
+}
+
 PageJson tracksJson(const MissionResult &r, const Frame &f)
 {
     PageJson out = PageJson::array();
@@ -413,6 +464,7 @@ std::string mapHtmlData(const MissionResult &r, const MissionProblem &p)
     d["keep_off"] = std::move(band);
     d["forbidden"] = std::move(forbidden);
     d["tracks"] = tracksJson(r, f);
+    d["reachability"] = reachabilityPageJson(r, p, f);
     d["glider"] = gliderJson(p);
     const Region &b = p.getBox();
     PageJson lo = f.at({b.xMin, b.yMin}), hi = f.at({b.xMax, b.yMax});

@@ -279,6 +279,55 @@ MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &pro
     return map;
 }
 
+namespace
+{
+/// The probability of reach at its last frame (the horizon) and, lighter and thinner, half way there: the contour of
+/// each level, one legend entry per level and frame, and a note with the goal's probability and median arrival
+/// ([SubramaniStochastic]).
+void addReachContours(MapRenderer &map, const MissionResult &r)
+{
+    if (!r.reachability || r.reachability->contours.empty())
+        return;
+    const ReachProbability &p = *r.reachability;
+    const double last = p.times.back();
+    std::vector<double> shown{last};
+    if (p.times.size() >= 3)
+        shown.insert(shown.begin(), p.times[(p.times.size() - 1) / 2]);
+    for (const double t : shown)
+        for (std::size_t l = 0; l < p.levels.size(); ++l)
+        {
+            const double f = p.levels.size() > 1 ? static_cast<double>(l) / (p.levels.size() - 1) : 1.0;
+            const bool early = t != last;
+            bool labelled = false;
+            for (const ReachContour &c : p.contours)
+            {
+                if (c.time != t || c.level != p.levels[l])
+                    continue;
+                for (const auto &line : c.lines)
+                {
+                    MapPath path;
+                    if (!labelled)
+                        path.label = "p = " + fmt(100.0 * c.level) + " % by +" + duration(r, t - p.departure, true);
+                    labelled = true;
+                    for (const Point2 &q : line)
+                        path.waypoints.push_back({q.x, q.y, t});
+                    path.colour = {0.95 - 0.25 * f, 0.55 - 0.45 * f, 0.05, early ? 0.55 : 0.95};
+                    path.width = early ? 1.2 : 2.0;
+                    path.dashed = l + 1 < p.levels.size();
+                    path.waypointMarkers = false;
+                    map.addPath(path);
+                }
+            }
+        }
+    std::string q;
+    for (const ReachQuantile &rq : p.quantiles)
+        if (rq.q == 0.5)
+            q = rq.reached ? ", median arrival +" + duration(r, rq.travelTime, true) : ", median not by the horizon";
+    map.addNote("probability of reach over " + std::to_string(p.members) + (p.members == 1 ? " member" : " members") +
+                ": the goal by +" + duration(r, last - p.departure, true) + " with p = " + fmt(p.goalProbability) + q);
+}
+} // namespace
+
 MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
 {
     const MissionSpec &m = r.spec;
@@ -346,6 +395,7 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
             }
         }
     }
+    addReachContours(map, r);
     if (r.execution && r.execution->runs.front().planned)
     {
         // the mission's own run flown in the truth, one track per strategy, surfacings marked

@@ -14,6 +14,7 @@
 #include "ompl_glider/output/MissionMap.h"
 #endif
 #include "ompl_glider/output/ExecutionFiles.h"
+#include "ompl_glider/output/ReachabilityFiles.h"
 #include "ompl_glider/output/RouteFiles.h"
 #include "ompl_glider/output/SeagliderTargets.h"
 #include "ompl_glider/output/SlocumGoto.h"
@@ -146,6 +147,16 @@ std::vector<OutputFile> executionFormatFiles(const MissionResult &r, const Missi
 #endif
     return files;
 }
+
+std::vector<OutputFile> reachabilityFormatFiles(const MissionResult &r, const MissionProblem &problem, const Listed &)
+{
+    if (!r.reachability)
+        return {};
+    const MissionResult *res = &r;
+    const MissionProblem *prob = &problem;
+    return {{"reachability.nc", [res, prob](const std::string &p) { writeReachabilityNetCdf(p, *res, *prob); }},
+            {"reachability.geojson", [res](const std::string &p) { writeFormatText(p, reachabilityGeoJson(*res)); }}};
+}
 } // namespace
 
 const std::vector<OutputFormatWriterRow> &outputFormatWriters()
@@ -160,6 +171,7 @@ const std::vector<OutputFormatWriterRow> &outputFormatWriters()
         {OutputFormatId::Stints, stintsFormatFiles},
         {OutputFormatId::Map, mapFormatFiles},
         {OutputFormatId::Execution, executionFormatFiles},
+        {OutputFormatId::Reachability, reachabilityFormatFiles},
     };
     return writers;
 }

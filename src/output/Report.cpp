@@ -228,6 +228,26 @@ std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows)
     return s;
 }
 
+/// The probability of reach over the ensemble's members ([SubramaniStochastic]): how it was computed, the goal's
+/// probability by the horizon and its arrival quantiles after the departure.
+void printReachability(std::ostream &out, const MissionResult &r)
+{
+    if (!r.reachability)
+        return;
+    const ReachProbability &p = *r.reachability;
+    const MissionSpec &m = r.spec;
+    const auto span = [&m](double t) {
+        return m.physicalUnits().time ? text::durationText(t * m.timeUnitSeconds) : reportNumber(t);
+    };
+    out << "Reachability:       " << p.members << (p.members == 1 ? " member" : " members") << ", cell "
+        << reportNumber(p.resolution) << ", horizon " << span(p.horizon - p.departure) << ", " << p.times.size()
+        << " frames, " << format("%.1f s", p.seconds) << (p.stopped ? " (stopped)" : "") << "\n";
+    std::string q;
+    for (const ReachQuantile &x : p.quantiles)
+        q += format(", %g %%: ", 100.0 * x.q) + (x.reached ? span(x.travelTime) : std::string("not by the horizon"));
+    out << "Goal by horizon:    p = " << reportNumber(p.goalProbability) << q << "\n";
+}
+
 void printReport(std::ostream &out, const MissionResult &r)
 {
     const PlannedPath &p = r.plan;
@@ -362,6 +382,7 @@ void printReport(std::ostream &out, const MissionResult &r)
             out << "Execution note:     " << note << "\n";
         printExecutionTable(out, e, m);
     }
+    printReachability(out, r);
     printLegs(out, r);
     if (p.solved)
         printWaypoints(out, r);

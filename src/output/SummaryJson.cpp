@@ -372,6 +372,14 @@ void outcomeJson(const PlannedPath &p, json &j)
     j["switch_reason"] = jtext(p.switchReason);
     j["switch_cause"] = jtext(causeName(p.switchCause));
 }
+/// What was computed after the plan: the execution, the probability of reach.
+void afterPlanJson(const MissionResult &r, const MissionProblem &problem, json &j)
+{
+    if (r.execution)
+        j["execution"] = executionJson(*r.execution, problem);
+    if (r.reachability)
+        j["reachability"] = summary_detail::reachabilityJson(r);
+}
 } // namespace
 
 std::string summaryJson(const MissionResult &r, const MissionProblem &problem, const std::vector<std::string> &files)
@@ -516,8 +524,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
             {"spread", {{"min", jnum(spread.min)}, {"mean", jnum(spread.mean)}, {"max", jnum(spread.max)}}},
             {"candidates", cands}};
     }
-    if (r.execution)
-        j["execution"] = executionJson(*r.execution, problem);
+    afterPlanJson(r, problem, j);
     legsJson(r, problem, j);
     j["observations"] = summary_detail::observationsJson(problem);
     j["files"] = files;

@@ -5,6 +5,7 @@
 
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/mission/Planning.h"
 #include "JsonValues.h"
 
 namespace ompl_glider
@@ -20,5 +21,8 @@ json currentEnsembleJson(const CurrentSpec &c);
 void forecastJson(const MissionProblem &problem, json &j);
 /// The glider's observations: what was read, rejected and used, and the correction's size (null without them).
 json observationsJson(const MissionProblem &problem);
+/// The probability of reach (null without it): members, weights, grid, horizon, frames, the goal's probability,
+/// the members' arrivals and the quantiles (ReachabilityFiles.cpp).
+json reachabilityJson(const MissionResult &r);
 } // namespace summary_detail
 } // namespace ompl_glider

@@ -12,6 +12,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/OutputDirectory.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ExecutionFiles.cpp
   ${CMAKE_CURRENT_LIST_DIR}/FleetFiles.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ReachabilityFiles.cpp
 )
 if(OMPL_GLIDER_WITH_MAP)
   list(APPEND OMPL_GLIDER_SOURCES

@@ -271,14 +271,18 @@ ompl::base::PlannerStatus LevelSetPlanner::solve(const ompl::base::PlannerTermin
     return ompl::base::PlannerStatus::EXACT_SOLUTION;
 }
 
-std::optional<ReachableSet> LevelSetPlanner::reachableSet(const PipelineSetup &setup, const std::vector<double> &times,
-                                                          double cellScale) const
+std::optional<ReachableSet> LevelSetPlanner::reachableSet(const PipelineSetup &setup, const ReachRequest &request) const
 {
     LevelSetParams lp;
-    lp.cellSize = cellScale * defaultLevelSetResolution(*ctx_);
+    lp.cellSize = request.cellSize > 0.0 ? request.cellSize : request.cellScale * defaultLevelSetResolution(*ctx_);
+    lp.threads = request.threads;
     const LevelSetSolver solver(ctx_, lp);
-    const Reachability r = solver.solve(setup.start.x, setup.start.y, setup.departure,
-                                        times.empty() ? setup.departure : times.back(), std::nullopt);
+    const double until =
+        std::isnan(request.until) ? (request.times.empty() ? setup.departure : request.times.back()) : request.until;
+    bool stopped = false;
+    const std::function<bool()> stop = [&request, &stopped] { return stopped = stopped || request.stop(); };
+    const Reachability r = solver.solve(setup.start.x, setup.start.y, setup.departure, until, request.goal, false,
+                                        request.stop ? stop : std::function<bool()>());
     ReachableSet out;
     out.resolution = lp.cellSize;
     out.seconds = r.stats.seconds;
@@ -288,8 +292,30 @@ std::optional<ReachableSet> LevelSetPlanner::reachableSet(const PipelineSetup &s
     out.nx = r.nx;
     out.ny = r.ny;
     out.arrival = r.arrival;
-    for (const double t : times)
+    out.goalReached = r.goalReached;
+    out.goalTime = r.goalTime;
+    out.stopped = stopped;
+    for (const double t : request.times)
         out.lines.push_back(r.isochrone(t));
+    return out;
+}
+
+std::optional<std::vector<std::vector<std::vector<Point2>>>> LevelSetPlanner::isochronesOf(
+    const ReachableSet &grid, const std::vector<double> &times) const
+{
+    Reachability r; // the field as a solve's, drawn by the one marching squares
+    r.x0 = grid.x0;
+    r.y0 = grid.y0;
+    r.h = grid.h;
+    r.nx = grid.nx;
+    r.ny = grid.ny;
+    r.arrival = grid.arrival;
+    if (r.arrival.size() != static_cast<std::size_t>(r.nx) * static_cast<std::size_t>(std::max(r.ny, 0)))
+        throw Error("LevelSet: an arrival field of " + std::to_string(r.arrival.size()) + " values on a grid of " +
+                    std::to_string(r.nx) + " x " + std::to_string(r.ny) + " nodes");
+    std::vector<std::vector<std::vector<Point2>>> out;
+    for (const double t : times)
+        out.push_back(r.isochrone(t));
     return out;
 }
 

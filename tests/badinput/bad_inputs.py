@@ -228,6 +228,30 @@ case("cli-goto-turn-negative", ["--goto-turn=-5", "--out", "{out}"], 2, "--goto-
 case("cli-isochrone-interval-zero", ["--isochrone-interval", "0", "--out", "{out}"], 2, "--isochrone-interval")
 case("cli-isochrone-interval-fortnight", ["--isochrone-interval", "1 fortnight", "--out", "{out}"], 2,
      "--isochrone-interval")
+# the probability of reach over an ensemble's members
+yaml_case("reachability-unknown-field", mission("reachability: {steps: 3}"),
+          "m.yaml:8: unknown field 'reachability.steps'")
+yaml_case("reachability-horizon-zero", mission("reachability: {horizon: 0}"),
+          "m.yaml:8: field 'reachability.horizon': expected a duration > 0")
+yaml_case("reachability-level-one", mission("reachability: {levels: [0.5, 1]}"),
+          "m.yaml:8: field 'reachability.levels[1]': expected a number in (0, 1)")
+yaml_case("reachability-quantiles-not-a-list", mission("reachability: {quantiles: 0.5}"),
+          "m.yaml:8: field 'reachability.quantiles'")
+yaml_case("reachability-resolution-negative", mission("reachability: {resolution: -0.1}"),
+          "m.yaml:8: field 'reachability.resolution'")
+yaml_case("reachability-interval-tiny",
+          mission("reachability: {horizon: 10, interval: 0.001, resolution: 0.5}",
+                  append="outputs: {files: [summary, reachability]}\n"),
+          "field 'reachability.interval': an interval of 0.001 gives")
+case("reachability-beyond-memory", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:8: field 'reachability.resolution': the probability of reach over 1 member on",
+     {"m.yaml": mission("reachability: {resolution: 0.002}", append="outputs: {files: [summary, reachability]}\n")},
+     {"OMPL_GLIDER_MEMORY_LIMIT": "64M"})
+yaml_case("reachability-horizon-beyond-the-limits",
+          mission("reachability: {horizon: 1e9}", append="outputs: {files: [summary, reachability]}\n"),
+          "m.yaml:8: field 'reachability.horizon': the fronts of 1 member(s)")
+case("cli-reach-horizon-zero", ["--reach-horizon", "0", "--out", "{out}"], 2, "--reach-horizon")
+case("cli-reach-interval-fortnight", ["--reach-interval", "1 fortnight", "--out", "{out}"], 2, "--reach-interval")
 # execution in another ocean, ensembles
 yaml_case("execution-unknown-field", mission("execution: {surfacing: 1}"), "m.yaml:8: unknown field 'execution.surfacing'")
 yaml_case("execution-strategy-unknown", mission("execution: {strategies: [current_sensitive, zigzag]}"),

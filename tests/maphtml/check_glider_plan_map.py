@@ -4,7 +4,9 @@
   1. the built-in mission with isochrones (planning frame, no dates);
   2. the Caribbean forecast around Jamaica with a coastline, a keep-off band and isochrones (lon/lat, dates);
   3. an execution run on the built-in mission flown in another jet (two strategies: two flown tracks);
-  4. a fleet: the fleet's map.html holds every glider's route, and the other gliders' own starts and goals.
+  4. a fleet: the fleet's map.html holds every glider's route, and the other gliders' own starts and goals;
+  5. the probability of reach over a 6-member jet ensemble (examples/jet_reachability.yaml at a coarse cell, V = 1): its
+     layer is drawn, and its own time slider moves it to another frame whose drawing differs.
 
 For each: no console error, the route layer has the route's vertex count (path.csv, or the flown track of a heading
 route), the popups hold the waypoints' arrival dates (waypoints.csv), the isochrones and land are drawn, the time
@@ -45,6 +47,16 @@ def main():
         ("execution", ["--truth", "B0=1.38,c=0.138", "--strategies", "current_sensitive,greedy"],
          ["--expect-current-frames", "6", "--expect-tracks", "2"]),
     ]
+    # the probability of reach: the example's ensemble, fewer members at a coarse cell (a few seconds)
+    with open(os.path.join(source, "examples", "jet_reachability.yaml")) as f:
+        text = f.read().replace("members: 24", "members: 6").replace("resolution: 0.05", "resolution: 0.2")
+        text = text.replace("files: [summary, map, reachability]", "files: [summary, csv, path, map, reachability]")
+    reach_yaml = os.path.join(work, "reach.yaml")
+    with open(reach_yaml, "w") as f:
+        f.write(text)
+    # (at V = 1: the robust plan has a route, which the page's checks need; at the example's 0.5 it has none)
+    runs.append(("reachability", ["--mission", reach_yaml, "--speed", "1.0"],
+                 ["--expect-current-frames", "6", "--expect-reach-frames", "10"]))
     try:
         for name, args, expect in runs:
             out = os.path.join(work, name)

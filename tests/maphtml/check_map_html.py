@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
 """check_map_html.py MAP.html [--expect-routes N] [--expect-route-vertices N,N..]
     [--expect-popup-text TEXT]... [--expect-isochrones N] [--expect-land-min N]
-    [--expect-current-frames N] [--expect-tracks N] [--expect-fleet-ends-min N] [--screenshot OUT.png] [--timeout S]
+    [--expect-current-frames N] [--expect-tracks N] [--expect-fleet-ends-min N] [--expect-reach-frames N]
+    [--screenshot OUT.png] [--timeout S]
 
 Opens MAP.html in Debian's headless Chromium, offline (DevTools network
 emulation), over the Chrome DevTools Protocol (python3-websocket). Fails on any
 console error, uncaught exception, failed request, unmet expectation, a time
-slider that does not change the shown frame, or a blank screenshot.
+slider that does not change the shown frame (the current's; the probability of
+reach's, whose drawing must change too), or a blank screenshot.
 Exit 0 on pass, 1 on failure (2 on usage errors)."""
 import argparse
 import base64
@@ -252,6 +254,33 @@ def run(a):
                 fails.append('time slider: shown frame date did not change (%r -> %r)' % (moved['before'], moved['after']))
             if moved['idx'] != frames - 1:
                 fails.append('time slider: state.currentFrameIndex %s != %d' % (moved['idx'], frames - 1))
+        if a.expect_reach_frames is not None:
+            n = state.get('reachFrames')
+            if n != a.expect_reach_frames:
+                fails.append('reachFrames: expected %d, page has %s' % (a.expect_reach_frames, n))
+            if not state.get('reachImages') or not state.get('reachContourVertices'):
+                fails.append('probability of reach: no image or no contour drawn (%s, %s)' % (
+                    state.get('reachImages'), state.get('reachContourVertices')))
+            if state.get('reachFrameIndex') != (n or 0) - 1 or state.get('reachSliderMax') != (n or 0) - 1:
+                fails.append('probability of reach: starts at frame %s of slider max %s, not the last (%s)' % (
+                    state.get('reachFrameIndex'), state.get('reachSliderMax'), (n or 0) - 1))
+            if n and n >= 2:
+                moved = cdp.eval("""(() => { const s = document.getElementById('reach-slider');
+                    const st = () => { const g = window.GLIDER_MAP_STATE; return {idx: g.reachFrameIndex,
+                        time: g.reachFrameTime, sum: g.reachPercentSum, vertices: g.reachContourVertices}; };
+                    const before = st(); s.value = 0; s.dispatchEvent(new Event('input', {bubbles: true}));
+                    return {before, after: st()}; })()""")
+                info['reach'] = moved
+                b, f = moved['before'], moved['after']
+                if f['idx'] != 0:
+                    fails.append('probability of reach slider: frame index %s, expected 0' % f['idx'])
+                if b['time'] == f['time'] or not f['time']:
+                    fails.append('probability of reach slider: shown date did not change (%r -> %r)' % (b['time'], f['time']))
+                if b['sum'] == f['sum'] and b['vertices'] == f['vertices']:
+                    fails.append('probability of reach slider: the drawing did not change (%s)' % f)
+                if not f['sum'] < b['sum']:
+                    fails.append('probability of reach: the first frame reaches no less than the last (%s -> %s)' % (
+                        b['sum'], f['sum']))
         cdp.pump(0.5)
         shot = base64.b64decode(cdp.call('Page.captureScreenshot', format='png',
                                          clip={'x': 0, 'y': 0, 'width': W, 'height': H, 'scale': 1})['data'])
@@ -278,6 +307,7 @@ def main():
     ap.add_argument('--expect-tracks', type=int, help='flown tracks drawn (an execution run)')
     ap.add_argument('--expect-fleet-ends-min', type=int, help="other gliders' own start and goal markers (a fleet)")
     ap.add_argument('--expect-land-min', type=int)
+    ap.add_argument('--expect-reach-frames', type=int, help='frames of the probability of reach (its own slider)')
     ap.add_argument('--expect-current-frames', type=int)
     ap.add_argument('--screenshot')
     ap.add_argument('--timeout', type=float, default=60, help='whole run, seconds (default 60)')
@@ -299,10 +329,12 @@ def main():
     for f in fails:
         print('FAIL: ' + f)
     s = info.get('state', {})
-    print('map.html check %s: %s | routes %s vertices %s popups %d isochrones %s land %s frames %s arrows %s->%s base %s | %s%s' % (
+    print('map.html check %s: %s | routes %s vertices %s popups %d isochrones %s land %s frames %s arrows %s->%s reach %s '
+          'base %s | %s%s' % (
         'PASS' if not fails else 'FAILED (%d)' % len(fails), os.path.basename(a.map), len(s.get('routeVertices', [])),
         s.get('routeVertices'), len(s.get('waypointPopups', [])), s.get('isochroneCount'), s.get('landCount'),
         s.get('currentFrames'), s.get('currentArrowsShown'), info.get('slider', {}).get('arrows', '-'),
+        s.get('reachFrames', '-'),
         s.get('baseMap'), info.get('screenshot', 'no screenshot'), (' -> ' + a.screenshot) if a.screenshot and 'screenshot' in info else ''))
     sys.exit(1 if fails else 0)
 

@@ -73,6 +73,9 @@ double valueOf(const std::string &field, const MissionSpec &m)
         {"safety.min_depth", [](const MissionSpec &s) { return s.safety.minDepth; }},
         {"outputs.goto_turn_deg", [](const MissionSpec &s) { return s.outputs.gotoTurnDeg; }},
         {"outputs.isochrone_interval", [](const MissionSpec &s) { return s.outputs.isochroneInterval; }},
+        {"reachability.horizon", [](const MissionSpec &s) { return s.reachability.horizon; }},
+        {"reachability.interval", [](const MissionSpec &s) { return s.reachability.interval; }},
+        {"reachability.resolution", [](const MissionSpec &s) { return s.reachability.resolution; }},
         {"execution.surfacing_interval", [](const MissionSpec &s) { return s.execution.surfacingInterval; }},
         {"execution.radius", [](const MissionSpec &s) { return s.execution.radius; }},
         {"execution.batch.pairs", [](const MissionSpec &s) { return double(s.execution.pairs); }},
@@ -123,6 +126,12 @@ MissionOverrides overrideOf(const std::string &field, double v)
         o.gotoTurn = Given<double>{v, src};
     else if (field == "outputs.isochrone_interval")
         o.isochroneInterval = Given<std::string>{text, src};
+    else if (field == "reachability.horizon")
+        o.reachHorizon = Given<std::string>{text, src};
+    else if (field == "reachability.interval")
+        o.reachInterval = Given<std::string>{text, src};
+    else if (field == "reachability.resolution")
+        o.reachResolution = Given<std::string>{text, src};
     else if (field == "execution.surfacing_interval")
         o.surfacingInterval = Given<std::string>{text, src};
     else if (field == "execution.radius")

@@ -79,3 +79,8 @@ add_test(NAME mission.close_shorelines
 # units for people, zero velocity as land
 glider_add_test(test_mission_pilot EXECUTABLE tests_mission_gis ${CMAKE_CURRENT_LIST_DIR}/TestPilotOutputs.cpp)
 target_link_libraries(test_mission_pilot INTERFACE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)
+# the probability of reach over an ensemble's members: one level-set front per member, against each member's own
+# solve, and its files (reachability.nc read back with NetCDF-C, the GeoJSON, summary.json)
+glider_add_test(test_mission_reach_probability EXECUTABLE tests_mission_reach
+  ${CMAKE_CURRENT_LIST_DIR}/TestReachProbability.cpp)
+target_link_libraries(test_mission_reach_probability INTERFACE nlohmann_json::nlohmann_json netCDF::netcdf)

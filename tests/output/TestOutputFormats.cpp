@@ -50,6 +50,7 @@ MissionResult everyFormatResult(const MissionProblem &problem)
     r.spec = problem.getSpec();
     r.plan.solved = true;
     r.isochrones.emplace();
+    r.reachability.emplace();
     r.plan.stints.emplace();
     r.execution.emplace();
     r.spec.execution.enabled = true;

@@ -186,7 +186,9 @@ TEST(LevelSetPlanner, ReachableSetThroughThePipelineInterfaceIsTheDriftingCircle
             (entry.family == PlannerFamily::Sampling && entry.name != "RRTstar"))
             continue;
         const auto planner = entry.make(ss->getSpaceInformation(), ctx);
-        const std::optional<ReachableSet> r = pipelineView(*planner).reachableSet(setup, times, 1.0);
+        ReachRequest request;
+        request.times = times;
+        const std::optional<ReachableSet> r = pipelineView(*planner).reachableSet(setup, request);
         if (entry.family != PlannerFamily::LevelSet)
         {
             EXPECT_FALSE(r) << entry.name;
@@ -211,4 +213,65 @@ TEST(LevelSetPlanner, ReachableSetThroughThePipelineInterfaceIsTheDriftingCircle
         }
     }
     EXPECT_EQ(levelSets, 1);
+}
+
+// The reachable set with a goal and a horizon (ReachRequest: what the probability of reach asks of each member): the
+// front records the goal's first arrival, the closed form of a uniform current (|d - c T| = V T), and runs on to the
+// horizon instead of stopping there; isochronesOf() draws a given field as reachableSet() draws its own.
+TEST(LevelSetPlanner, ReachableSetRecordsTheGoalAndRunsOnToTheHorizon)
+{
+    GliderProblem p;
+    p.field = std::make_shared<UniformCurrent>(0.2, -0.1);
+    p.travel.speed = 1.0;
+    p.xMin = -6;
+    p.xMax = 6;
+    p.yMin = -6;
+    p.yMax = 6;
+    p.start = {-1.0, 0.5};
+    p.goal = {3.0, 0.0};
+    std::shared_ptr<GliderContext> ctx;
+    const auto ss = makeSimpleSetup(p, &ctx);
+    PipelineSetup setup;
+    setup.start = p.start;
+    setup.goal = p.goal;
+    setup.departure = p.t0;
+    setup.region = ctx->region;
+    const PlannerEntry *entry = findPlanner("LevelSet");
+    ASSERT_NE(entry, nullptr);
+    const auto planner = entry->make(ss->getSpaceInformation(), ctx);
+    ReachRequest request;
+    request.times = {2.0};
+    request.until = 4.5;
+    request.cellSize = 0.1;
+    request.goal = p.goal;
+    request.threads = 1;
+    const std::optional<ReachableSet> r = pipelineView(*planner).reachableSet(setup, request);
+    ASSERT_TRUE(r);
+    EXPECT_DOUBLE_EQ(r->resolution, 0.1);
+    EXPECT_FALSE(r->stopped);
+    // |d|^2 - 2 T d.c + T^2 |c|^2 = V^2 T^2 with d = (4, -0.5), c = (0.2, -0.1), V = 1
+    const double exact = (-1.7 + std::sqrt(1.7 * 1.7 + 4 * 0.95 * 16.25)) / (2 * 0.95);
+    ASSERT_TRUE(r->goalReached);
+    EXPECT_GT(r->goalTime, exact);        // the front is slow, never fast
+    EXPECT_LT(r->goalTime, exact * 1.01); // first order in the cell
+    double latest = 0.0;                  // the front ran on past the goal's arrival, up to the horizon
+    for (const double t : r->arrival)
+        if (std::isfinite(t))
+            latest = std::max(latest, t);
+    EXPECT_GT(latest, 4.0);
+    EXPECT_LE(latest, 4.5 + 1.5 * 0.1 / (1.0 + std::hypot(0.2, 0.1))); // the last step may end past it
+    const auto drawn = pipelineView(*planner).isochronesOf(*r, request.times);
+    ASSERT_TRUE(drawn);
+    ASSERT_EQ(drawn->size(), 1u);
+    ASSERT_EQ((*drawn)[0].size(), r->lines[0].size());
+    for (std::size_t k = 0; k < r->lines[0].size(); ++k)
+        ASSERT_EQ((*drawn)[0][k].size(), r->lines[0][k].size());
+    // a stop request ends the front where it is
+    ReachRequest stopping = request;
+    int checks = 0;
+    stopping.stop = [&checks] { return ++checks > 3; };
+    const std::optional<ReachableSet> s = pipelineView(*planner).reachableSet(setup, stopping);
+    ASSERT_TRUE(s);
+    EXPECT_TRUE(s->stopped);
+    EXPECT_FALSE(s->goalReached);
 }

@@ -72,7 +72,12 @@ public:
     /// @brief The members of an ensemble current (on the forecast's frame and dates; the first read as the forecast);
     /// empty for a single source. getField() is then their mean (EnsembleMeanField).
     const std::vector<std::shared_ptr<const CurrentField>> &getMembers() const { return members_; }
-    /// @brief The same problem on one member's field alone (no ensemble).
+    /// @brief The members of an ensemble current as read, when the glider's observations weighed them
+    /// (observations()->members[k] is member k's weight): the plan is then made on the forecast they make
+    /// (getField()) and getMembers() is empty; the probability of reach weighs these members. Empty otherwise.
+    const std::vector<std::shared_ptr<const CurrentField>> &weighedMembers() const { return weighedMembers_; }
+    /// @brief The same problem on one member's field alone (no ensemble): of getMembers(), or of weighedMembers()
+    /// when the observations weighed them.
     MissionProblem withMember(std::size_t member) const;
     /// @brief The same problem between other endpoints (planning frame): field, truth, regions and box are shared.
     /// The spec's start and goal stay the mission's. The goal's arrival window (MissionSpec::goalWindow) is kept for
@@ -180,8 +185,9 @@ private:
 
     MissionSpec spec_;
     std::shared_ptr<const CurrentField> field_;
-    std::shared_ptr<const CurrentField> truth_;                // null: the forecast
-    std::vector<std::shared_ptr<const CurrentField>> members_; // ensemble members (empty: one source)
+    std::shared_ptr<const CurrentField> truth_;                       // null: the forecast
+    std::vector<std::shared_ptr<const CurrentField>> members_;        // ensemble members (empty: one source)
+    std::vector<std::shared_ptr<const CurrentField>> weighedMembers_; // the members the observations weighed
     std::shared_ptr<const Environment> environment_;
     std::shared_ptr<const LocalProjection> projection_;
     double projectionScale_{1.0}; // metres per planning unit

@@ -411,6 +411,21 @@ struct OutputSpec
     double isochroneInterval{std::numeric_limits<double>::quiet_NaN()};
 };
 
+/// @brief The probability of reach over an ensemble's members (mission `reachability`, output format
+/// "reachability": mission/ReachProbability.h). NaN and empty lists: the defaults.
+struct ReachabilitySpec
+{
+    /// How long after the departure (the mission's time unit); NaN: 1.5 times the plan's travel time when it has a
+    /// route, else the planning horizon; either capped at the field's end
+    double horizon{std::numeric_limits<double>::quiet_NaN()};
+    double interval{std::numeric_limits<double>::quiet_NaN()}; ///< between two frames; NaN: the horizon / 10
+    std::vector<double> levels;    ///< probability contours, each in (0, 1); empty: 0.5 and 0.9
+    std::vector<double> quantiles; ///< arrival-time quantiles at the goal, each in (0, 1); empty: 0.1, 0.5, 0.9
+    /// The cell (length unit); NaN: the level-set planner's default cell (1/200 of the region's larger side)
+    double resolution{std::numeric_limits<double>::quiet_NaN()};
+    bool memberArrival{false}; ///< also write each member's first-arrival field into reachability.nc
+};
+
 /// @brief One glider of a fleet (mission `fleet`): its own start, goal and, optionally, speed and departure; every
 /// other setting is the mission's. fleetGliderMission() (mission/Fleet.h) makes its mission.
 struct FleetGliderSpec
@@ -541,8 +556,9 @@ struct MissionSpec
     PlannerSpec planner;
     StintSpec stints;
     OutputSpec outputs;
-    std::vector<double> speeds; ///< speed sweep ([EichhornOceans] Table VI); empty = none
-    ExecutionSpec execution;    ///< flying the plan in another ocean
+    ReachabilitySpec reachability; ///< the probability of reach (output format "reachability")
+    std::vector<double> speeds;    ///< speed sweep ([EichhornOceans] Table VI); empty = none
+    ExecutionSpec execution;       ///< flying the plan in another ocean
     /// The glider's measurements: the forecast is corrected by them, and without a start the plan starts at the last
     /// fix (and without a departure at its time)
     std::optional<ObservationsSpec> observations;

@@ -13,16 +13,18 @@ namespace ompl_glider
 /// @brief One output format of `outputs.files`.
 enum class OutputFormatId
 {
-    Summary,    ///< summary.json (always written)
-    Csv,        ///< waypoints.csv
-    Path,       ///< path.csv
-    GeoJson,    ///< path.geojson, and route.kml in a geographic mission
-    Isochrones, ///< isochrones.geojson when the result has contours (also switches their computation on)
-    Goto,       ///< goto_lNN.ma (Slocum) and targets (Seaglider), in a geographic mission
-    Stints,     ///< stints.csv, for a plan with stints or a heading route
-    Map,        ///< map.svg, map.png, map.html
-    Execution   ///< execution.csv, execution_tracks.csv, execution.svg/png, and model_difference.svg/png with a
-                ///< truth current (written whenever the mission has an execution section)
+    Summary,     ///< summary.json (always written)
+    Csv,         ///< waypoints.csv
+    Path,        ///< path.csv
+    GeoJson,     ///< path.geojson, and route.kml in a geographic mission
+    Isochrones,  ///< isochrones.geojson when the result has contours (also switches their computation on)
+    Goto,        ///< goto_lNN.ma (Slocum) and targets (Seaglider), in a geographic mission
+    Stints,      ///< stints.csv, for a plan with stints or a heading route
+    Map,         ///< map.svg, map.png, map.html
+    Execution,   ///< execution.csv, execution_tracks.csv, execution.svg/png, and model_difference.svg/png with a
+                 ///< truth current (written whenever the mission has an execution section)
+    Reachability ///< reachability.nc and reachability.geojson: the probability of reach over the ensemble's members
+                 ///< (also switches its computation on; section `reachability`)
 };
 
 /// @brief One output format and how it is described.

@@ -21,6 +21,7 @@
 #include "ompl_glider/mission/MissionExecution.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/PlanStatus.h"
+#include "ompl_glider/mission/ReachProbability.h"
 #include "ompl_glider/ompl/NoPath.h"
 #include "ompl_glider/execution/Stints.h"
 
@@ -348,6 +349,8 @@ struct MissionResult
     std::vector<SpeedSweepRow> speedSweep;                          ///< speed sweep rows
     std::optional<ExecutionResult> execution; ///< the plan flown in the truth (MissionSpec::execution)
     std::optional<IsochroneSet> isochrones;   ///< reachable-set contours (output format "isochrones")
+    /// The probability of reach over the ensemble's members (output format "reachability", section `reachability`)
+    std::optional<ReachProbability> reachability;
     /// The final route's closest approach to land (the flown track of a heading route, else the legs): distance in
     /// planning units (NaN without land or path) and where; lonLat set when the mission is geographic
     LandApproach closestLand;

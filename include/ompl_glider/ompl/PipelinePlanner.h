@@ -49,6 +49,22 @@ struct PipelineSetup
     std::string placeOfFirstGiven(std::initializer_list<const char *> fields, const std::string &fallback) const;
 };
 
+/// @brief What the pipeline asks of a reachable set (PipelinePlanner::reachableSet()): the times of its isochrones, how
+/// far the front runs, its cell, a goal whose first arrival is recorded on the way, the threads of the one solve and
+/// a stop hook.
+struct ReachRequest
+{
+    std::vector<double> times; ///< the isochrones' times (absolute, ascending); may be empty
+    /// The absolute time the front runs to; NaN: the last of times (the departure when there are none)
+    double until{std::numeric_limits<double>::quiet_NaN()};
+    double cellScale{1.0}; ///< the cell as a multiple of the planner's default cell (when cellSize is 0)
+    double cellSize{0.0};  ///< the cell itself (the field's length unit); 0: cellScale times the default
+    /// A goal whose first arrival is recorded (ReachableSet::goalTime) while the front runs on to `until`
+    std::optional<Point2> goal;
+    unsigned threads{0};        ///< threads of the one solve (0: all cores)
+    std::function<bool()> stop; ///< checked every step; true ends the front where it is (ReachableSet::stopped)
+};
+
 /// @brief The set reachable from the start by each of a few times ([LollaLevelSet]): first-arrival times on a grid
 /// and the boundary of the set at each time (the isochrones of mission/Isochrones.h).
 struct ReachableSet
@@ -62,6 +78,10 @@ struct ReachableSet
     std::vector<double> arrival; ///< see x0
     /// The boundary at each asked time, in the order asked: polylines in the planning frame
     std::vector<std::vector<std::vector<Point2>>> lines;
+    /// The first arrival at ReachRequest::goal (absolute; +inf when the front did not reach it by `until`)
+    double goalTime{std::numeric_limits<double>::infinity()};
+    bool goalReached{false}; ///< the front reached ReachRequest::goal
+    bool stopped{false};     ///< ReachRequest::stop ended the front before `until`
 };
 
 /// @brief The first arrival at the goal of a front from the start ([LollaLevelSet]) and the time-optimal path to it:
@@ -103,15 +123,26 @@ public:
         return {};
     }
 
-    /// @brief The set reachable from @p setup's start, departing at its departure, up to the last of @p times
-    /// (absolute, ascending), on a grid @p cellScale times the planner's default cell; nullopt when the planner does
-    /// not compute reachable sets (the default). The pipeline asks the registry's level-set planner for isochrones.
-    virtual std::optional<ReachableSet> reachableSet(const PipelineSetup &setup, const std::vector<double> &times,
-                                                     double cellScale) const
+    /// @brief The set reachable from @p setup's start, departing at its departure, up to @p request's `until` (the
+    /// last of its times by default), with its isochrones at @p request's times and the first arrival at its goal
+    /// if it names one; nullopt when the planner does not compute reachable sets (the default). The pipeline asks
+    /// the registry's level-set planner for isochrones and for the probability of reach over an ensemble's members.
+    virtual std::optional<ReachableSet> reachableSet(const PipelineSetup &setup, const ReachRequest &request) const
     {
         (void)setup;
+        (void)request;
+        return std::nullopt;
+    }
+
+    /// @brief The isochrones of a first-arrival field given on @p grid's nodes (its x0, y0, h, nx, ny and arrival;
+    /// +inf: never): at each of @p times the boundary of {arrival <= t}, polylines in the planning frame, drawn as
+    /// reachableSet() draws its own; nullopt when the planner draws none (the default). The pipeline contours the
+    /// probability of reach with it: p(x, t) >= level where the members' weighted level-quantile of arrival is <= t.
+    virtual std::optional<std::vector<std::vector<std::vector<Point2>>>> isochronesOf(
+        const ReachableSet &grid, const std::vector<double> &times) const
+    {
+        (void)grid;
         (void)times;
-        (void)cellScale;
         return std::nullopt;
     }
 

@@ -49,10 +49,13 @@ public:
     void prepare(const PipelineSetup &setup) override;
     /// @brief PipelinePlanner: why the front found no path (walled in, never reaching the goal, or lastReason()).
     NoPath noPathReason(const ompl::base::PlannerStatus &status, double timeLimit) const override;
-    /// @brief The level set's reachable set from the setup's start (default LevelSetParams, the cell
-    /// @p cellScale times defaultLevelSetResolution()) and its isochrones at @p times.
-    std::optional<ReachableSet> reachableSet(const PipelineSetup &setup, const std::vector<double> &times,
-                                             double cellScale) const override;
+    /// @brief The level set's reachable set from the setup's start (default LevelSetParams, no clearance, the cell
+    /// the request gives or its cellScale times defaultLevelSetResolution(), the request's threads), run to the
+    /// request's `until` without stopping at its goal (whose first arrival is recorded), and its isochrones.
+    std::optional<ReachableSet> reachableSet(const PipelineSetup &setup, const ReachRequest &request) const override;
+    /// @brief Reachability::isochrone() (marching squares) on the given first-arrival field at each time.
+    std::optional<std::vector<std::vector<std::vector<Point2>>>> isochronesOf(
+        const ReachableSet &grid, const std::vector<double> &times) const override;
     /// @brief The level set's first arrival at the setup's goal and its backtracked path (default LevelSetParams, the
     /// cell defaultLevelSetResolution() and half of it as clearance, as solve() with resolution 0), stopping at the
     /// goal, at @p tEnd, after @p maxWork node updates (LevelSetParams::maxNodeUpdates) or when @p stop answers true.

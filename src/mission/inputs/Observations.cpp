@@ -362,7 +362,10 @@ void MissionProblem::applyObservations(const GliderObservations *read)
                     " depth-averaged currents can correct the forecast (" + why + ")");
     }
     field_ = learned.field;
-    // the members have spoken through the DAC: the plan is made on the forecast they make (not judged member by member)
+    // the members have spoken through the DAC: the plan is made on the forecast they make (not judged member by
+    // member); the members as read are kept with their weights for the probability of reach
+    if (learned.members.size() == members_.size())
+        weighedMembers_ = members_;
     members_.clear();
     observations_ = std::make_shared<ObservationReport>(std::move(report));
 }

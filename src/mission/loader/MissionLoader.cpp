@@ -137,10 +137,10 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     m.directory = r.dir();
     if (!root.IsDefined() || root.IsNull())
         throw Error(r.file() + ": the mission file is empty");
-    r.checkMap(root, "",
-               {"name",      "units",   "epoch",       "projection",   "current",   "region", "start",       "goal",
-                "departure", "vehicle", "travel_time", "dive_profile", "forbidden", "safety", "planner",     "stints",
-                "outputs",   "speeds",  "execution",   "fleet",        "waypoints", "order",  "observations"});
+    r.checkMap(root, "", {"name",      "units",  "epoch",     "projection", "current",      "region",
+                          "start",     "goal",   "departure", "vehicle",    "travel_time",  "dive_profile",
+                          "forbidden", "safety", "planner",   "stints",     "outputs",      "speeds",
+                          "execution", "fleet",  "waypoints", "order",      "observations", "reachability"});
     readHeader(r, root, m);
     if (!root["current"])
         r.fail(root, "current", "missing: the current source (type: meandering_jet | uniform | ... | netcdf)");
@@ -239,6 +239,8 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         m.outputs.files = {OutputFormatId::Csv, OutputFormatId::GeoJson,
                            OutputFormatId::Summary}; // no lon/lat: no goto list by default
     readSpeedsAndCheck(r, root, m);
+    if (root["reachability"])
+        readReachability(r, root["reachability"], m);
     if (root["execution"])
         readExecution(r, root["execution"], m);
     m.marks = r.marks();

@@ -119,6 +119,8 @@ void readSafety(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readPlanner(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readStints(const Reader &r, const YAML::Node &n, MissionSpec &m);
 void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m);
+/// The `reachability` section (horizon, interval, levels, quantiles, resolution, member_arrival).
+void readReachability(const Reader &r, const YAML::Node &n, MissionSpec &m);
 /// The `fleet` list (name, start, goal, speed, departure per glider), after the departure and the region.
 void readFleet(const Reader &r, const YAML::Node &n, MissionSpec &m);
 } // namespace ompl_glider::mission_loader

@@ -20,7 +20,7 @@ namespace
 /// level set's family).
 std::optional<ReachableSet> reachableSetOf(const MissionProblem &problem, const GliderSimpleSetup &ss,
                                            const std::shared_ptr<GliderContext> &ctx, double departure,
-                                           const std::vector<double> &times, double cellScale)
+                                           const ReachRequest &request)
 {
     PipelineSetup setup;
     setup.departure = departure;
@@ -32,7 +32,7 @@ std::optional<ReachableSet> reachableSetOf(const MissionProblem &problem, const 
         if (entry.family != PlannerFamily::LevelSet)
             continue;
         const ompl::base::PlannerPtr planner = entry.make(ss.getSpaceInformation(), ctx);
-        if (std::optional<ReachableSet> r = pipelineView(*planner).reachableSet(setup, times, cellScale))
+        if (std::optional<ReachableSet> r = pipelineView(*planner).reachableSet(setup, request))
             return r;
     }
     throw Error("isochrones: no registered planner computes the reachable set");
@@ -73,7 +73,10 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
     std::vector<double> absolute;
     for (double dt : times)
         absolute.push_back(departure + dt);
-    const std::optional<ReachableSet> r = reachableSetOf(problem, *ss, ctx, departure, absolute, 2.0);
+    ReachRequest request;
+    request.times = absolute;
+    request.cellScale = 2.0;
+    const std::optional<ReachableSet> r = reachableSetOf(problem, *ss, ctx, departure, request);
     IsochroneSet out;
     out.resolution = r->resolution;
     out.seconds = r->seconds;

@@ -432,6 +432,8 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     }
     if (m.outputs.wants(OutputFormatId::Isochrones))
         result.isochrones = computeIsochrones(problem, result.plan, tDep, m.outputs.isochroneInterval);
+    if (m.outputs.wants(OutputFormatId::Reachability))
+        result.reachability = computeReachProbability(problem, result.plan, tDep);
     result.wallSeconds = secondsSince(start);
     return result;
 }

@@ -101,8 +101,9 @@ void MissionProblem::snapEndpoints()
 MissionProblem MissionProblem::withMember(std::size_t member) const
 {
     MissionProblem p(*this);
-    p.field_ = members_.at(member);
+    p.field_ = members_.empty() ? weighedMembers_.at(member) : members_.at(member);
     p.members_.clear();
+    p.weighedMembers_.clear();
     return p;
 }
 

@@ -25,6 +25,10 @@ const std::vector<OutputFormat> &outputFormats()
          "the plan flown in the truth per strategy, and the box plot of a batch (written whenever the mission has "
          "an execution section)",
          false},
+        {OutputFormatId::Reachability, "reachability", "reachability.nc, reachability.geojson",
+         "the probability of reach over the ensemble's members (level set per member): fields per time as NetCDF "
+         "(CF), contours per time and level as GeoJSON, the goal's arrival quantiles in summary.json",
+         false},
     };
     return formats;
 }

@@ -293,6 +293,19 @@ void applyOutputs(const MissionOverrides &o, MissionSpec &m)
         m.outputs.gotoTurnDeg = setting(*o.gotoTurn, "outputs.goto_turn_deg");
     if (((o.isochrones && o.isochrones->value) || o.isochroneInterval) && !m.outputs.wants(OutputFormatId::Isochrones))
         m.outputs.files.push_back(OutputFormatId::Isochrones);
+    const std::pair<const std::optional<Given<std::string>> *, std::pair<const char *, double *>> reach[] = {
+        {&o.reachHorizon, {"reachability.horizon", &m.reachability.horizon}},
+        {&o.reachInterval, {"reachability.interval", &m.reachability.interval}},
+        {&o.reachResolution, {"reachability.resolution", &m.reachability.resolution}}};
+    for (const auto &[given, field] : reach)
+        if (*given)
+        {
+            *field.second = settingOf(**given, field.first, m);
+            mark(m, field.first, (*given)->source, o.origin);
+        }
+    if (((o.reachability && o.reachability->value) || o.reachHorizon || o.reachInterval || o.reachResolution) &&
+        !m.outputs.wants(OutputFormatId::Reachability))
+        m.outputs.files.push_back(OutputFormatId::Reachability);
 }
 /// The correction's settings given by a front end (MissionOverrides::correctionLength, ...), each refused naming its
 /// source; they need the observations section (made empty, the correction's settings alone, when there is none).
@@ -532,6 +545,9 @@ std::vector<std::pair<std::string, std::string>> overridableFields(const Mission
         {"outputs.directory", m.outputs.directory},
         {"outputs.files", files},
         {"outputs.isochrone_interval", num(m.outputs.isochroneInterval)},
+        {"reachability.horizon", num(m.reachability.horizon)},
+        {"reachability.interval", num(m.reachability.interval)},
+        {"reachability.resolution", num(m.reachability.resolution)},
         {"outputs.goto_turn_deg", num(m.outputs.gotoTurnDeg)}};
     // which of these the file, a flag or a keyword gave (a field, or a value inside it: start.x, outputs.files[0])
     std::string marked;
