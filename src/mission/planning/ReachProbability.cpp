@@ -144,14 +144,17 @@ void checkMemoryOf(const MissionProblem &problem, const ReachRequest &request, s
 
 /// Refuses, naming the horizon (or the cell when it was given), fronts beyond the level set's limits
 /// (ResourceLimits.h): more than kMaxLevelSetSteps time steps, or more than kMaxLevelSetWork node updates over all
-/// the members (nodes x steps each; the planner's cfl, read by name, and the field's fastest current over the region).
+/// the members (nodes x steps each; the planner's cfl, read by name, or the automatic one's shortest, and the field's
+/// fastest current over the region).
 void checkWorkOf(const MissionProblem &problem, const LevelSetOn &l, const ReachRequest &request, std::size_t members,
                  double horizon)
 {
     const MissionSpec &m = problem.getSpec();
     const Region &r = l.ctx->region;
     std::string cflText;
-    const double cfl = l.planner->params().getParam("cfl", cflText) ? std::stod(cflText) : 1.5;
+    // 0: the planner's automatic step, whose shortest (near a forbidden set: cfl 1.5) gives the most steps
+    const double given = l.planner->params().getParam("cfl", cflText) ? std::stod(cflText) : 0.0;
+    const double cfl = given > 0.0 ? given : 1.5;
     const double h = request.cellSize > 0.0 ? request.cellSize
                                             : request.cellScale * std::max(r.xMax - r.xMin, r.yMax - r.yMin) / 200.0;
     const double nodes = (std::floor((r.xMax - r.xMin) / h) + 1.0) * (std::floor((r.yMax - r.yMin) / h) + 1.0);
