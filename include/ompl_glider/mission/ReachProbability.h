@@ -56,7 +56,8 @@ struct ReachProbability
     std::vector<double> levels;   ///< the contours' probabilities
     /// p(x, t) per frame (times.size() fields of nx * ny, in [0, 1], non-decreasing from frame to frame)
     std::vector<std::vector<float>> probability;
-    /// Each member's first-arrival field (absolute; +inf where its front did not come by the horizon)
+    /// Each member's first-arrival field (absolute; +inf where its front did not come; the fronts run one step past
+    /// the horizon, and what came in that step is kept: p and the goal count only what came by the horizon)
     std::vector<std::vector<double>> memberArrival;
     std::vector<double> goalTimes; ///< each member's first arrival at the goal (absolute; +inf: not by the horizon)
     double goalProbability{0.0};   ///< sum of the weights of the members reaching the goal by the horizon

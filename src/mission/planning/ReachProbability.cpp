@@ -350,11 +350,9 @@ ReachProbability computeReachProbability(const MissionProblem &problem, const Pl
     {
         if (done[k] && (sets[k].nx != out.nx || sets[k].ny != out.ny || sets[k].x0 != out.x0 || sets[k].y0 != out.y0))
             throw Error("reachability: member " + std::to_string(k) + "'s grid differs from the first member's");
-        // the front's last step may end past the horizon: what it reached after the horizon counts as not reached
+        // the front runs a step past the horizon (so that a contour at the horizon has arrivals on both sides): the
+        // arrival fields keep what it reached then, p and the goal count only what came by the horizon
         out.memberArrival.push_back(done[k] ? std::move(sets[k].arrival) : std::vector<double>(nodes, kInf));
-        for (double &t : out.memberArrival.back())
-            if (t > out.horizon)
-                t = kInf;
         out.goalTimes.push_back(done[k] && sets[k].goalReached && sets[k].goalTime <= out.horizon ? sets[k].goalTime
                                                                                                   : kInf);
     }
