@@ -84,7 +84,8 @@ void reinitialise(const Grid &g, std::vector<double> &phi, const std::vector<std
         const double ex = bx - ax, ey = by - ay, l2 = ex * ex + ey * ey;
         double s = l2 > 0.0 ? ((px - ax) * ex + (py - ay) * ey) / l2 : 0.0;
         s = std::clamp(s, 0.0, 1.0);
-        return std::hypot(px - ax - s * ex, py - ay - s * ey);
+        const double dx = px - ax - s * ex, dy = py - ay - s * ey;
+        return std::sqrt(dx * dx + dy * dy); // not hypot: no overflow to guard against here, and 4x faster
     };
     // the distance from one tile's zero level, written within R + 1 nodes of the tile
     const auto scatter = [&](std::uint32_t tile) {
