@@ -55,7 +55,8 @@ def main():
     with open(reach_yaml, "w") as f:
         f.write(text)
     # (at V = 1: the robust plan has a route, which the page's checks need; at the example's 0.5 it has none)
-    runs.append(("reachability", ["--mission", reach_yaml, "--speed", "1.0"],
+    # (a horizon of 10 days at the example's interval of a day: 10 frames)
+    runs.append(("reachability", ["--mission", reach_yaml, "--speed", "1.0", "--reach-horizon", "10 d"],
                  ["--expect-current-frames", "6", "--expect-reach-frames", "10"]))
     try:
         for name, args, expect in runs:
