@@ -13,6 +13,7 @@
 #include <sstream>
 #include <thread>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -108,6 +109,26 @@ py::dict waypoints(const PyResult &r)
     return d;
 }
 
+/// Polylines as a list of (n, 2) arrays: (x, y) of planning-frame points, (lon, lat) of geographic ones.
+template <typename P> py::list polylines(const std::vector<std::vector<P>> &lines)
+{
+    py::list out;
+    for (const auto &line : lines)
+    {
+        py::array_t<double> a({static_cast<py::ssize_t>(line.size()), py::ssize_t{2}});
+        auto v = a.mutable_unchecked<2>();
+        for (std::size_t k = 0; k < line.size(); ++k)
+        {
+            if constexpr (std::is_same_v<P, LonLat>)
+                v(k, 0) = line[k].lon, v(k, 1) = line[k].lat;
+            else
+                v(k, 0) = line[k].x, v(k, 1) = line[k].y;
+        }
+        out.append(a);
+    }
+    return out;
+}
+
 py::object isochrones(const PyResult &r)
 {
     if (!r.result.isochrones)
@@ -115,28 +136,11 @@ py::object isochrones(const PyResult &r)
     py::list out;
     for (const Isochrone &c : r.result.isochrones->contours)
     {
-        py::list lines, lonlat;
-        for (const auto &line : c.lines)
-        {
-            py::array_t<double> a({static_cast<py::ssize_t>(line.size()), py::ssize_t{2}});
-            auto v = a.mutable_unchecked<2>();
-            for (std::size_t k = 0; k < line.size(); ++k)
-                v(k, 0) = line[k].x, v(k, 1) = line[k].y;
-            lines.append(a);
-        }
-        for (const auto &line : c.lonLat)
-        {
-            py::array_t<double> a({static_cast<py::ssize_t>(line.size()), py::ssize_t{2}});
-            auto v = a.mutable_unchecked<2>();
-            for (std::size_t k = 0; k < line.size(); ++k)
-                v(k, 0) = line[k].lon, v(k, 1) = line[k].lat;
-            lonlat.append(a);
-        }
         py::dict d;
         d["time"] = c.time;
         d["time_iso"] = c.iso;
-        d["lines"] = lines;
-        d["lonlat"] = lonlat;
+        d["lines"] = polylines(c.lines);
+        d["lonlat"] = polylines(c.lonLat);
         out.append(d);
     }
     return std::move(out);
@@ -232,19 +236,8 @@ py::object reachability(const PyResult &r)
     }
     py::list contours;
     for (const ReachContour &c : p.contours)
-    {
-        py::list lines;
-        for (const auto &line : c.lines)
-        {
-            py::array_t<double> a({static_cast<py::ssize_t>(line.size()), py::ssize_t{2}});
-            auto v = a.mutable_unchecked<2>();
-            for (std::size_t k = 0; k < line.size(); ++k)
-                v(k, 0) = line[k].x, v(k, 1) = line[k].y;
-            lines.append(a);
-        }
         contours.append(py::dict(py::arg("time") = c.time, py::arg("time_iso") = c.iso, py::arg("level") = c.level,
-                                 py::arg("lines") = lines));
-    }
+                                 py::arg("lines") = polylines(c.lines)));
     py::dict d;
     d["members"] = p.members;
     d["weights"] = array(p.weights);

@@ -39,6 +39,23 @@ std::optional<ReachableSet> reachableSetOf(const MissionProblem &problem, const 
 }
 } // namespace
 
+std::vector<std::vector<LonLat>> planning_detail::linesToGeographic(const MissionProblem &problem,
+                                                                    const std::vector<std::vector<Point2>> &lines)
+{
+    std::vector<std::vector<LonLat>> out;
+    if (!problem.isGeographic())
+        return out;
+    for (const auto &line : lines)
+    {
+        std::vector<LonLat> g;
+        g.reserve(line.size());
+        for (const Point2 &p : line)
+            g.push_back(problem.toGeographic(p));
+        out.push_back(std::move(g));
+    }
+    return out;
+}
+
 IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath &plan, double departure,
                                double interval)
 {
@@ -92,17 +109,7 @@ IsochroneSet computeIsochrones(const MissionProblem &problem, const PlannedPath 
         c.time = absolute[k];
         c.lines = r->lines[k];
         c.iso = problem.isoTime(c.time); // empty without dates
-        if (problem.isGeographic())
-        {
-            for (const auto &line : c.lines)
-            {
-                std::vector<LonLat> g;
-                g.reserve(line.size());
-                for (const Point2 &p : line)
-                    g.push_back(problem.toGeographic(p));
-                c.lonLat.push_back(std::move(g));
-            }
-        }
+        c.lonLat = planning_detail::linesToGeographic(problem, c.lines);
         out.contours.push_back(std::move(c));
     }
     return out;

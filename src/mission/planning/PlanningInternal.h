@@ -175,5 +175,10 @@ void addPlanningWork(PlannedPath &to, const PlannedPath &from);
 /// "planned past the forecast's last time (DATE) on its last field, held frozen for the last 5 d 2.0 h of the route
 /// (...)"; empty otherwise.
 std::string frozenFieldNote(const MissionProblem &problem, const PlannedPath &plan);
+
+/// Contour @p lines of the planning frame in lon/lat (Isochrones.cpp): the isochrones' and the probability of
+/// reach's; empty where the problem is not geographic.
+std::vector<std::vector<LonLat>> linesToGeographic(const MissionProblem &problem,
+                                                   const std::vector<std::vector<Point2>> &lines);
 } // namespace planning_detail
 } // namespace ompl_glider

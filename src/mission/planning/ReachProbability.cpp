@@ -233,15 +233,7 @@ void contoursOf(ReachProbability &out, const MissionProblem &problem, const Pipe
             c.iso = out.iso[f];
             c.level = out.levels[l];
             c.lines = byLevel[l][f];
-            if (problem.isGeographic())
-                for (const auto &line : c.lines)
-                {
-                    std::vector<LonLat> g;
-                    g.reserve(line.size());
-                    for (const Point2 &p : line)
-                        g.push_back(problem.toGeographic(p));
-                    c.lonLat.push_back(std::move(g));
-                }
+            c.lonLat = planning_detail::linesToGeographic(problem, c.lines);
             out.contours.push_back(std::move(c));
         }
 }
