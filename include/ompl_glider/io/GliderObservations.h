@@ -8,6 +8,7 @@
 /// counted by reason; a source with nothing usable is refused naming the file and variable, or the URL.
 
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -25,6 +26,10 @@ struct DacRecord
     double u{0.0};    ///< eastward, m/s
     double v{0.0};    ///< northward, m/s
     std::string file; ///< the file it came from
+    /// the segment the DAC averages over: the fix before the dive and the fix after it (seconds since 1970); NaN
+    /// where the source does not say (IOOS files and ERDDAP give only the segment's mean time and position)
+    double segmentStart{std::numeric_limits<double>::quiet_NaN()};
+    double segmentEnd{std::numeric_limits<double>::quiet_NaN()}; ///< see segmentStart
 };
 
 /// @brief A position the glider reported.
