@@ -30,6 +30,10 @@ struct DacRecord
     /// where the source does not say (IOOS files and ERDDAP give only the segment's mean time and position)
     double segmentStart{std::numeric_limits<double>::quiet_NaN()};
     double segmentEnd{std::numeric_limits<double>::quiet_NaN()}; ///< see segmentStart
+    /// the dive's depth range (m, positive down) where the source gives it (the depths the glider reported over the
+    /// segment, a profile's depth variable); NaN where it does not
+    double depthMin{std::numeric_limits<double>::quiet_NaN()};
+    double depthMax{std::numeric_limits<double>::quiet_NaN()}; ///< see depthMin
 };
 
 /// @brief A position the glider reported.
@@ -54,6 +58,9 @@ struct GliderObservations
     /// where the glider has been (the stations a resumed mission has reached, the glider's track on the map)
     std::vector<GliderFix> fixes;
     std::map<std::string, std::size_t> rejected; ///< rejected records by reason ("QC flag 4", "fill value", ...)
+    /// the time of the newest surfacing the source reports, its fix rejected or not (seconds since 1970; NaN when
+    /// none is known): later than lastFix when the newest fixes were rejected (69696969, a bad GPS status)
+    double newestSurfacing{std::numeric_limits<double>::quiet_NaN()};
 };
 
 /// @brief The most a DAC may be (m/s): faster records are rejected as implausible.
