@@ -119,8 +119,7 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
     double before = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
-        const Velocity f =
-            used_[i].forecast ? *used_[i].forecast : depthAveraged(used_[i].at.x, used_[i].at.y, used_[i].t);
+        const Velocity f = forecastAtDac(*base_, used_[i], params_);
         du[i] = used_[i].dac.u - f.u;
         dv[i] = used_[i].dac.v - f.v;
         // a DAC equal to the forecast but for the rounding of its numbers (a float file, a CSV): no innovation
@@ -221,7 +220,9 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
     double after = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
-        Velocity c = depthAveraged(used_[i].at.x, used_[i].at.y, used_[i].t);
+        Velocity c = forecastAtDac(*base_, DacObservation{used_[i].t, used_[i].at, {}, std::nullopt,
+                                                          used_[i].depthTop, used_[i].depthBottom},
+                                   params_);
         addCorrection(used_[i].at.x, used_[i].at.y, used_[i].t, c, nullptr);
         after += std::pow(used_[i].dac.u - c.u, 2) + std::pow(used_[i].dac.v - c.v, 2);
     }
@@ -352,6 +353,15 @@ Velocity depthAveragedCurrent(const CurrentField &field, double x, double y, dou
         sum.v += w * c.v;
     }
     return {sum.u / kIntervals, sum.v / kIntervals};
+}
+
+Velocity forecastAtDac(const CurrentField &field, const DacObservation &o, const CorrectionParams &params)
+{
+    if (o.forecast)
+        return *o.forecast;
+    const bool own = std::isfinite(o.depthTop) && std::isfinite(o.depthBottom);
+    return depthAveragedCurrent(field, o.at.x, o.at.y, o.t, own ? o.depthTop : params.depthTop,
+                                own ? o.depthBottom : params.depthBottom);
 }
 
 Velocity CorrectedField::depthAveraged(double x, double y, double t) const

@@ -34,7 +34,8 @@ std::vector<DacObservation> comparable(const std::vector<std::shared_ptr<const C
         if (finite && o.t >= begin && o.t <= end && std::all_of(members.begin(), members.end(), [&](const auto &m) {
                 return m->inWater(o.at.x, o.at.y, depth);
             }))
-            out.push_back({o.t, o.at, o.dac, std::nullopt}); // the forecast along the dive is not the members'
+            out.push_back({o.t, o.at, o.dac, std::nullopt, o.depthTop,
+                           o.depthBottom}); // the forecast along the dive is not the members'
     }
     std::stable_sort(out.begin(), out.end(),
                      [](const DacObservation &a, const DacObservation &b) { return a.t < b.t; });
@@ -71,8 +72,7 @@ LearnedForecast learnForecast(const std::shared_ptr<const CurrentField> &forecas
         d[static_cast<Eigen::Index>(n + i)] = obs[i].dac.v;
         for (std::size_t m = 0; m < M; ++m)
         {
-            const Velocity h = depthAveragedCurrent(*members[m], obs[i].at.x, obs[i].at.y, obs[i].t, params.depthTop,
-                                                    params.depthBottom);
+            const Velocity h = forecastAtDac(*members[m], obs[i], params); // (obs: no forecast of their own)
             H(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(m)) = h.u;
             H(static_cast<Eigen::Index>(n + i), static_cast<Eigen::Index>(m)) = h.v;
         }

@@ -150,7 +150,8 @@ json observationsJson(const MissionProblem &problem)
                    {"replaced_start", jtext(r.replacedStart)},
                    {"replaced_departure", jtext(r.replacedDeparture)},
                    {"dropped", dropped},
-                   {"stay_ends", jtext(r.stayEnds)}};
+                   {"stay_ends", jtext(r.stayEnds)},
+                   {"stale_fix_warning", jtext(r.staleFix)}};
     }
     return {{"source", o->source},
             {"files", o->files},
@@ -162,6 +163,8 @@ json observationsJson(const MissionProblem &problem)
             {"length_scale", o->params.lengthScale},
             {"time_scale", o->params.timeScale},
             {"error_ratio", o->params.errorRatio},
+            {"compared_with", o->comparedWith},
+            {"deepest_dive_m", jnum(o->deepestDive)},
             {"learned", learnedJson(*o)},
             {"last_fix", fix},
             {"resumed", resumed}};

@@ -263,3 +263,49 @@ TEST(CorrectedField, TheSampledCorrectionIsTheExactSum)
     EXPECT_LT(worst, 0.01 * largest);  // linear in time over a quarter of T: about 1 % at most
     EXPECT_LT(worstJ, 0.05 * largest); // per length scale (L = 1)
 }
+
+namespace
+{
+/// A current sheared in depth: u = a + b z (z in metres, positive down), the same everywhere and at every time.
+class DepthShear : public CurrentField
+{
+public:
+    DepthShear(double a, double b) : a_(a), b_(b) {}
+    double maxSpeed(const Region &) const override { return std::abs(a_) + std::abs(b_) * 1000.0; }
+    std::string name() const override { return "depth shear"; }
+
+protected:
+    Velocity evaluate(double, double, double z, double) const override { return {a_ + b_ * z, 0.0}; }
+    Jacobian evaluateJacobian(double, double, double, double) const override { return {}; }
+
+private:
+    double a_, b_;
+};
+} // namespace
+
+// A DAC is the current averaged over its dive: compared with the forecast averaged over the dive's own depths where
+// it carries them (the mean of a linear profile: its value at the middle depth), else over the correction's range.
+TEST(CorrectedField, EachDacIsComparedOverItsOwnDive)
+{
+    const auto forecast = std::make_shared<DepthShear>(0.3, -0.002); // 0.3 m/s at the surface, -0.06 at 180 m
+    CorrectionParams p;
+    p.lengthScale = 10.0;
+    p.timeScale = 10.0;
+    // the dive 0-180 m measured exactly the forecast's average there (0.3 - 0.002 * 90 = 0.12): no innovation
+    DacObservation own{1.0, {0.0, 0.0}, {0.12, 0.0}, std::nullopt, 0.0, 180.0};
+    EXPECT_NEAR(forecastAtDac(*forecast, own, p).u, 0.12, 1e-12);
+    CorrectedField exact(forecast, {own}, p);
+    EXPECT_NEAR(exact.summary().rmsBefore, 0.0, 1e-12);
+    // the same DAC without its depths is compared with the surface current (the correction's range 0-0 m): 0.18 off
+    DacObservation surface = own;
+    surface.depthTop = surface.depthBottom = std::numeric_limits<double>::quiet_NaN();
+    CorrectedField againstSurface(forecast, {surface}, p);
+    EXPECT_NEAR(againstSurface.summary().rmsBefore, 0.18, 1e-12);
+    // a range given to the correction (a dive profile 20-100 m: mean at 60 m, 0.18) serves the DAC without depths
+    p.depthTop = 20.0;
+    p.depthBottom = 100.0;
+    EXPECT_NEAR(forecastAtDac(*forecast, surface, p).u, 0.18, 1e-12);
+    EXPECT_NEAR(forecastAtDac(*forecast, own, p).u, 0.12, 1e-12); // its own depths first
+    CorrectedField mixed(forecast, {own, DacObservation{2.0, {0.0, 0.0}, {0.12, 0.0}, std::nullopt}}, p);
+    EXPECT_NEAR(mixed.summary().rmsBefore, std::sqrt((0.0 + 0.06 * 0.06) / 2.0), 1e-12);
+}

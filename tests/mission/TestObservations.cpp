@@ -239,3 +239,86 @@ TEST(Observations, DacFarFromTheMissionAreCountedApartNotUsed)
     EXPECT_NE(note.find("8 DAC used"), std::string::npos) << note;
     EXPECT_NE(note.find("3 farther than 200 km from the mission's area"), std::string::npos) << note;
 }
+
+namespace
+{
+/// A current sheared in depth, the same everywhere and always: u = 0.3 - 0.002 z m/s on layers 0, 100, 200 m (linear:
+/// its mean over 0-180 m is its value at 90 m, 0.12 m/s), v = 0, as a CF file with a depth axis.
+std::string shearedForecast(const std::string &name)
+{
+    const std::string path = (dir() / name).string();
+    int nc = 0, dt = 0, dz = 0, dy = 0, dx = 0, vt = 0, vz = 0, vy = 0, vx = 0, vu = 0, vv = 0;
+    EXPECT_EQ(nc_create(path.c_str(), NC_CLOBBER, &nc), NC_NOERR);
+    const int nt = 121, nz = 3, ny = 21, nx = 41;
+    nc_def_dim(nc, "time", nt, &dt);
+    nc_def_dim(nc, "depth", nz, &dz);
+    nc_def_dim(nc, "lat", ny, &dy);
+    nc_def_dim(nc, "lon", nx, &dx);
+    nc_def_var(nc, "time", NC_DOUBLE, 1, &dt, &vt);
+    nc_def_var(nc, "depth", NC_DOUBLE, 1, &dz, &vz);
+    nc_def_var(nc, "lat", NC_DOUBLE, 1, &dy, &vy);
+    nc_def_var(nc, "lon", NC_DOUBLE, 1, &dx, &vx);
+    const int dims[] = {dt, dz, dy, dx};
+    nc_def_var(nc, "u", NC_DOUBLE, 4, dims, &vu);
+    nc_def_var(nc, "v", NC_DOUBLE, 4, dims, &vv);
+    const auto text = [&](int var, const char *k, const std::string &s) {
+        nc_put_att_text(nc, var, k, s.size(), s.c_str());
+    };
+    text(vt, "units", "hours since 2026-03-15 00:00:00");
+    text(vt, "standard_name", "time");
+    text(vz, "units", "m");
+    text(vz, "positive", "down");
+    text(vz, "standard_name", "depth");
+    text(vy, "units", "degrees_north");
+    text(vx, "units", "degrees_east");
+    text(vu, "units", "m/s");
+    text(vu, "standard_name", "eastward_sea_water_velocity");
+    text(vv, "units", "m/s");
+    text(vv, "standard_name", "northward_sea_water_velocity");
+    nc_enddef(nc);
+    std::vector<double> t(nt), z{0.0, 100.0, 200.0}, y(ny), x(nx);
+    for (int i = 0; i < nt; ++i)
+        t[i] = i;
+    for (int j = 0; j < ny; ++j)
+        y[j] = 47.5 + 0.05 * j;
+    for (int i = 0; i < nx; ++i)
+        x[i] = -53.0 + 0.05 * i;
+    nc_put_var_double(nc, vt, t.data());
+    nc_put_var_double(nc, vz, z.data());
+    nc_put_var_double(nc, vy, y.data());
+    nc_put_var_double(nc, vx, x.data());
+    std::vector<double> U(static_cast<std::size_t>(nt) * nz * ny * nx), V(U.size(), 0.0);
+    for (std::size_t k = 0; k < U.size(); ++k)
+        U[k] = 0.3 - 0.002 * z[(k / (static_cast<std::size_t>(ny) * nx)) % nz];
+    nc_put_var_double(nc, vu, U.data());
+    nc_put_var_double(nc, vv, V.data());
+    nc_close(nc);
+    return path;
+}
+} // namespace
+
+// A DAC is the current averaged over the dive: compared with the surface current of a sheared forecast it shows an
+// error the forecast does not have (0.18 m/s here), and the report says so with the remedy; compared with the depth
+// average it measured (current.depth_average) it shows none.
+TEST(Observations, DacAreComparedWithTheDepthAverageTheMissionSays)
+{
+    const std::string forecast = shearedForecast("sheared.nc");
+    const std::string dac = dacCsv("sheared_dac.csv", 0.12, 0.0); // exactly the 0-180 m mean
+    const std::string start = "start: {lon: -52.09, lat: 48.0}\ndeparture: {time: 86400}\n";
+    const std::string obs = "observations: {file: '" + dac + "', learn: false}\n";
+    const MissionProblem surface(missionOn(forecast, start + obs));
+    ASSERT_TRUE(surface.observations());
+    EXPECT_NEAR(surface.observations()->correction.rmsBefore, 0.18, 1e-6);
+    EXPECT_NE(surface.observations()->comparedWith.find("the surface current"), std::string::npos)
+        << surface.observations()->comparedWith;
+    EXPECT_NE(surface.observations()->comparedWith.find("current.depth_average"), std::string::npos);
+    const MissionProblem averaged(parseMission("name: obs\ncurrent: {type: netcdf, file: '" + forecast +
+                                                   "', depth_average: [0, 180]}\ngoal: {lon: -51.95, lat: 48.08}\n"
+                                                   "vehicle: {speed: 0.3}\nplanner: {grid_size: 500}\n" +
+                                                   start + obs,
+                                               "obs.yaml"));
+    ASSERT_TRUE(averaged.observations());
+    EXPECT_NEAR(averaged.observations()->correction.rmsBefore, 0.0, 1e-6);
+    EXPECT_NE(averaged.observations()->comparedWith.find("0-180 m average"), std::string::npos)
+        << averaged.observations()->comparedWith;
+}

@@ -13,6 +13,7 @@
 /// ahead with long scales of its own (InnovationMean); the optimal interpolation then spreads what is left.
 
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,6 +34,10 @@ struct DacObservation
     /// The forecast averaged as the DAC was (along the same dive: a simulated glider knows its track); unset: the
     /// forecast at (at, t) over the depth range (CorrectedField::depthAveraged())
     std::optional<Velocity> forecast;
+    /// The dive's own depth range (m, positive down) where its file gives it: the forecast is averaged over it; NaN:
+    /// over the correction's range (CorrectionParams::depthTop, depthBottom)
+    double depthTop{std::numeric_limits<double>::quiet_NaN()};
+    double depthBottom{std::numeric_limits<double>::quiet_NaN()}; ///< see depthTop
 };
 
 /// @brief The correction's parameters (field units).
@@ -116,6 +121,10 @@ struct CorrectionSummary
 /// @brief @p field's current averaged over the depths @p top to @p bottom (m; equal: the current at that depth) at
 /// (x, y, t): what a DAC measured there is compared with.
 Velocity depthAveragedCurrent(const CurrentField &field, double x, double y, double t, double top, double bottom);
+
+/// @brief What the DAC @p o is compared with in @p field: its own forecast where it carries one, else the current
+/// averaged over its dive's depth range where it has one, else over @p params' range.
+Velocity forecastAtDac(const CurrentField &field, const DacObservation &o, const CorrectionParams &params);
 
 /// @brief The forecast @p base corrected by @p observations (see the file comment).
 class CorrectedField : public CurrentField

@@ -493,6 +493,10 @@ struct MissionResume
     std::vector<DroppedStation> dropped; ///< the stations reached, in the order reached
     /// a stay under way at the last fix: the plan departs at its end (ISO 8601 or field time), else empty
     std::string stayEnds;
+    /// the glider surfaced after the last fix without a valid fix (69696969, a bad GPS status): a warning that the
+    /// plan departs from an older position ("the newest surfacing, 2026-03-15T11:00:00Z, gave no valid fix: ..."),
+    /// else empty
+    std::string staleFix;
 };
 
 /// @brief A glider's own measurements (its depth-averaged currents, DAC) and how they correct the forecast

@@ -4,6 +4,7 @@
 /// with its depth-averaged currents did (MissionProblem::observations()). (Only with OMPL_GLIDER_WITH_NETCDF.)
 
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -34,6 +35,11 @@ struct ObservationReport
     std::optional<GliderFix> lastFix; ///< the latest position reported
     std::vector<GliderFix> fixes;     ///< every position reported, in time order (the glider's track on the maps)
     std::vector<DacRecord> dac;       ///< every DAC read (before the departure's cut), in time order
+    /// What each DAC was compared with, for a pilot ("the forecast's 0-180 m average (current.depth_average)", "the
+    /// surface current ..."): a DAC is an average over the dive, a surface current is not
+    std::string comparedWith;
+    /// The deepest dive the DAC report (m; NaN: their files give no depths)
+    double deepestDive{std::numeric_limits<double>::quiet_NaN()};
 };
 
 /// @brief The last fix of the glider's observations at @p path (IOOS profile files, Slocum dba files, a CSV or an

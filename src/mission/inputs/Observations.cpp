@@ -130,6 +130,51 @@ std::string farText(const MissionSpec &m, double distance)
                                      : text::number(distance, 4)) +
            " from the mission's area (10 length scales)";
 }
+
+/// "3.0 h", "2 d 4.5 h" of @p seconds
+std::string hoursText(double seconds)
+{
+    const double hours = seconds / 3600.0;
+    if (hours < 24.0)
+        return text::number(std::round(hours * 10.0) / 10.0, 6) + " h";
+    const double days = std::floor(hours / 24.0);
+    return text::number(days, 6) + " d " + text::number(std::round((hours - 24.0 * days) * 10.0) / 10.0, 6) + " h";
+}
+
+/// "12.5 m" of a depth
+std::string metresText(double z)
+{
+    return text::number(z, 4) + " m";
+}
+
+/// What the DAC @p dac were compared with (ObservationReport::comparedWith): a DAC is the current averaged over a
+/// dive, which the surface current of a forecast is not.
+std::string comparedWith(const MissionSpec &m, const CorrectionParams &p, const std::vector<DacObservation> &dac,
+                         double deepest)
+{
+    if (m.current.depthAverage)
+        return "the forecast's " + text::number(m.current.depthAverage->first, 4) + "-" +
+               metresText(m.current.depthAverage->second) + " average (current.depth_average)";
+    std::size_t own = 0;
+    for (const DacObservation &o : dac)
+        own += std::isfinite(o.depthBottom) ? 1 : 0;
+    if (p.depthBottom > p.depthTop)
+        return std::string(own > 0 ? "the forecast averaged over each dive's own depths (" + std::to_string(own) +
+                                         " of " + std::to_string(dac.size()) + " DAC, within the dive profile's), " +
+                                         "else over "
+                                   : "the forecast averaged over ") +
+               "the dive profile's " + text::number(p.depthTop, 4) + "-" + metresText(p.depthBottom);
+    if (!m.current.isForecast())
+        return "the flow at the glider's depth (" + metresText(p.depthTop) + ")";
+    std::string s = p.depthTop > 0.0 ? "the forecast's current at " + metresText(p.depthTop) : "the surface current";
+    s += " (a DAC is an average over the dive";
+    if (std::isfinite(deepest))
+        s += ", down to " + metresText(deepest) + " here: give current.depth_average: [0, " +
+             text::number(std::round(deepest), 6) + "] to compare like with like";
+    else
+        s += ": give current.depth_average or a dive profile to compare like with like";
+    return s + ")";
+}
 } // namespace
 
 std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
@@ -155,6 +200,12 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
         }
     };
     const double fixTime = fieldTime(o.lastFix->time, "the last fix's time");
+    // a newer surfacing without a valid fix: the glider was elsewhere by then (a surfacing lasts minutes)
+    if (std::isfinite(o.newestSurfacing) && o.newestSurfacing > o.lastFix->time + 600.0)
+        r.staleFix = "the newest surfacing (" + formatIsoTime(o.newestSurfacing) + ") gave no valid fix: the plan " +
+                     "departs from the last valid one, " +
+                     hoursText(o.newestSurfacing - o.lastFix->time) +
+                     " older; the glider has moved since (give the start where it is, or wait for a fix)";
     const auto mark = m.marks.find("start");
     const bool startIsTheFix = m.start.geographic && m.start.lonLat.lon == o.lastFix->at.lon &&
                                m.start.lonLat.lat == o.lastFix->at.lat; // the loader's first guess
@@ -273,6 +324,8 @@ std::string resumeNote(const MissionSpec &m)
     }
     if (!r.stayEnds.empty())
         s += "; the stay at " + r.dropped.back().name + " is under way: the plan departs at its end, " + r.stayEnds;
+    if (!r.staleFix.empty())
+        s += "; WARNING: " + r.staleFix;
     return s;
 }
 
@@ -313,6 +366,9 @@ void MissionProblem::applyObservations(const GliderObservations *read)
     // currents: left out before anything is learned, and counted as such
     report.farDistance = 10.0 * p.lengthScale;
     std::vector<DacObservation> dac;
+    // a forecast loaded to the dive profile's depth holds the layers a dive's own depth range needs (a depth-averaged
+    // forecast holds none, a surface one only the surface)
+    const bool ownDepths = m.dive.enabled && !m.current.depthAverage && p.depthBottom > p.depthTop;
     for (const DacRecord &r : o.dac)
     {
         double t = 0.0;
@@ -346,7 +402,18 @@ void MissionProblem::applyObservations(const GliderObservations *read)
             continue;
         }
         dac.push_back({t, q, c, std::nullopt});
+        if (std::isfinite(r.depthMax))
+        {
+            report.deepestDive = std::isfinite(report.deepestDive) ? std::max(report.deepestDive, r.depthMax)
+                                                                   : r.depthMax;
+            if (ownDepths) // the forecast holds the dive profile's layers: each dive's own range, within them
+            {
+                dac.back().depthTop = std::clamp(std::isfinite(r.depthMin) ? r.depthMin : 0.0, 0.0, p.depthBottom);
+                dac.back().depthBottom = std::clamp(r.depthMax, dac.back().depthTop, p.depthBottom);
+            }
+        }
     }
+    report.comparedWith = comparedWith(m, p, dac, report.deepestDive);
     // the forecast the DAC make: corrected; an ensemble's members weighed by them and updated, then corrected
     const LearnedForecast learned = learnForecast(field_, members_, dac, p);
     report.correction = learned.correction;

@@ -397,6 +397,8 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
 #if OMPL_GLIDER_WITH_NETCDF
     if (const std::string note = observationNote(problem); !note.empty())
         result.forecastNotes.push_back(note); // how the glider's DAC corrected the forecast
+    if (problem.observations() && !problem.observations()->comparedWith.empty())
+        result.forecastNotes.push_back("the DAC were compared with " + problem.observations()->comparedWith);
     if (const std::string note = correctionNote(problem); !note.empty())
         result.forecastNotes.push_back("the correction learned from the DAC: " + note);
 #endif
