@@ -9,7 +9,7 @@ PACKAGES=(
   libeigen3-dev
   libboost-dev libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
   libboost-program-options-dev
-  libnetcdf-dev netcdf-bin libudunits2-dev libhdf5-dev
+  libnetcdf-dev netcdf-bin libudunits2-dev libhdf5-dev liblz4-dev
   libgtest-dev libgmock-dev
   libbenchmark-dev
   libyaml-cpp-dev

@@ -123,8 +123,10 @@ void defineRouteFlags(CLI::App &app, Flags &f)
                    "(branch and bound over the orders with the planned leg times)")
         ->group(built);
     app.add_option("--observations", f.observations,
-                   "the glider's depth-averaged currents: IOOS glider profile NetCDF files or Slocum dba files (a "
-                   "file, folder or glob pattern), a CSV time,lon,lat,u,v, or an ERDDAP tabledap URL (.csvp, .csv or "
+                   "the glider's depth-averaged currents: IOOS glider profile NetCDF files, Slocum dba files or the "
+                   "Slocum's binary files (sbd, tbd, dbd, ebd; compressed scd, tcd, dcd, ecd; their cache files "
+                   "beside them or in cache/ beside them) (a file, folder or glob pattern), a CSV time,lon,lat,u,v, or "
+                   "an ERDDAP tabledap URL (.csvp, .csv or "
                    ".ncCF of time,latitude,longitude,profile_id,time_uv,lat_uv,lon_uv,u,v,u_qc,v_qc); the forecast is "
                    "corrected by them (optimal interpolation) and, "
                    "without --start, the plan starts at the last fix (and at its time without --departure)")
@@ -207,6 +209,10 @@ void defineIoFlags(CLI::App &app, Flags &f)
         ->check(CLI::ExistingFile)
         ->group(io);
     app.add_flag("--verbose", f.verbose, "show OMPL's log messages")->group(io);
+    app.add_flag("--show-observations", f.showObservations,
+                 "print the fixes and DAC the planner reads from --observations (a table: time, lon, lat; u, v, the "
+                 "dive's segment and depths), then exit without planning")
+        ->group(io);
     app.add_flag("--show-mission", f.showMission,
                  "print the mission's fields that flags can change (planner, grid, speed, start, goal, departure, "
                  "region, ...) as the flags leave them, and the fields given, then exit without planning")

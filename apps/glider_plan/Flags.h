@@ -50,8 +50,9 @@ struct Flags
     ompl_glider::ForecastInput forecast;
     // safety margins: --keep-off, --bathymetry, --bathymetry-variable, --min-depth
     std::string keepOff, bathymetry, bathymetryVariable, minDepth;
-    bool snapToWater{false}; ///< --snap-to-water
-    bool showMission{false}; ///< --show-mission: print the fields the flags can change, plan nothing
+    bool snapToWater{false};      ///< --snap-to-water
+    bool showMission{false};      ///< --show-mission: print the fields the flags can change, plan nothing
+    bool showObservations{false}; ///< --show-observations: print the fixes and DAC of --observations, plan nothing
 };
 
 /// @brief How the command line names the mission's settings in messages (MissionSpec::term()): its flags.

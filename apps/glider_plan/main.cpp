@@ -6,6 +6,7 @@
 // their tasks over the ranks (TaskSpread.h) and rank 0 alone prints and writes.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -26,6 +27,8 @@
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/TaskSpread.h"
+#include "ompl_glider/io/GliderObservations.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/Fleet.h"
 #include "ompl_glider/mission/InputDigest.h"
 #include "ompl_glider/mission/Planning.h"
@@ -89,9 +92,41 @@ int runFleetMode(const Flags &f, const MissionSpec &spec, RunOptions options)
     return status;
 }
 
+/// --show-observations: the fixes and DAC the planner reads from @p source, as a table on stdout.
+int showObservations(const std::string &source)
+{
+    const GliderObservations o = readGliderObservations(source);
+    const auto num = [](const char *format, double x) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, format, x);
+        return std::string(std::isnan(x) ? "nan" : buf);
+    };
+    const auto iso = [](double t) { return std::isfinite(t) ? formatIsoTime(std::floor(t)) : std::string("-"); };
+    std::cout << "observations '" << o.source << "': " << observationsText(o) << "\n";
+    std::cout << "\nfixes: " << o.fixes.size() << "\n     time_s  time_utc                   lon           lat\n";
+    for (const GliderFix &x : o.fixes)
+        std::cout << num("%11.1f", x.time) << "  " << iso(x.time) << "  " << num("%12.7f", x.at.lon) << "  "
+                  << num("%12.7f", x.at.lat) << "\n";
+    std::cout << "\ndac: " << o.dac.size()
+              << "\n     time_s  time_utc                   lon           lat        u_m/s      v_m/s  segment_start  "
+                 "segment_end  depth_min  depth_max\n";
+    for (const DacRecord &d : o.dac)
+        std::cout << num("%11.1f", d.time) << "  " << iso(d.time) << "  " << num("%12.7f", d.at.lon) << "  "
+                  << num("%12.7f", d.at.lat) << "  " << num("%9.5f", d.u) << "  " << num("%9.5f", d.v) << "  "
+                  << num("%13.1f", d.segmentStart) << "  " << num("%11.1f", d.segmentEnd) << "  "
+                  << num("%9.3f", d.depthMin) << "  " << num("%9.3f", d.depthMax) << "\n";
+    return 0;
+}
+
 /// Plans, reports and writes. Returns the exit status.
 int run(const Flags &f)
 {
+    if (f.showObservations)
+    {
+        if (f.observations.empty())
+            throw UsageError{"--show-observations needs --observations (the glider's files or URL)"};
+        return showObservations(f.observations);
+    }
     MissionSpec spec = !f.mission.empty()    ? missionFileOf(f)
                        : !f.currents.empty() ? forecastMissionOf(f)
                                              : builtInMission(f);

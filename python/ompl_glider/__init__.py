@@ -32,9 +32,23 @@ import numpy as np
 
 from . import _core
 from ._core import Error, set_verbose, set_remote_access as _set_remote_access
+from ._core import read_observations as _read_observations
 
 __all__ = ["plan", "plan_fleet", "Field", "Result", "Route", "Error", "planner_names", "analytic_fields", "set_verbose",
-           "set_remote_access", "is_gridded_kind"]
+           "set_remote_access", "is_gridded_kind", "read_observations"]
+
+
+def read_observations(source: str, cache: str = "") -> Dict[str, Any]:
+    """The fixes and depth-averaged currents (DAC) the planner reads from ``source`` (glider_plan's
+    ``--observations``: IOOS profile files, a CSV, an ERDDAP URL, Slocum dba or binary files), by the same reader.
+
+    Returns ``{"fixes": {"time", "lon", "lat"}, "dac": {"time", "lon", "lat", "u", "v", "segment_start",
+    "segment_end", "depth_min", "depth_max"}, "rejected": {reason: count}, "notes": {what: count}, "platform",
+    "files", "newest_surfacing"}``: numpy arrays of seconds since 1970, degrees, m/s, m (NaN where the source does
+    not say). ``cache``: the folder of a Slocum's cache files (``*.cac``), searched before the files' own folder and
+    its ``cache/``. Bad input raises :class:`Error` with glider_plan's message.
+    """
+    return _read_observations(os.fspath(source), os.fspath(cache))
 
 Pair = Tuple[float, float]
 ProgressCallback = Callable[[str, bool], None]

@@ -31,4 +31,6 @@ void bindMission(pybind11::module_ &m);
 void bindResult(pybind11::module_ &m);
 /// @brief Binds write_forecast(): numpy arrays as a CF NetCDF file, which the forecast reader then reads.
 void bindArrays(pybind11::module_ &m);
+/// @brief Binds read_observations(): a glider's fixes and DAC as the planner reads them, as numpy arrays.
+void bindObservations(pybind11::module_ &m);
 } // namespace ompl_glider_py

@@ -33,4 +33,5 @@ PYBIND11_MODULE(_core, m)
     ompl_glider_py::bindMission(m);
     ompl_glider_py::bindResult(m);
     ompl_glider_py::bindArrays(m);
+    ompl_glider_py::bindObservations(m);
 }

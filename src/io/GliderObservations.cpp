@@ -19,6 +19,7 @@
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/RemoteSource.h"
+#include "ompl_glider/io/SlocumBinary.h"
 #include "ompl_glider/io/Time.h"
 
 namespace ompl_glider
@@ -61,42 +62,73 @@ std::string dacProblem(const DacRecord &r, const VelocityUnits &units)
     return "";
 }
 
+namespace
+{
+/// The first line of @p file (empty when it cannot be read).
+std::string firstLine(const std::string &file)
+{
+    std::ifstream in(file, std::ios::binary);
+    std::string first;
+    std::getline(in, first);
+    return first;
+}
+} // namespace
+
+bool isSlocumBinaryFile(const std::string &file)
+{
+    if (isSlocumBinaryName(file))
+        return true;
+    if (fs::path(file).extension() == ".dba")
+        return false;
+    const std::string first = firstLine(file);
+    return first.rfind("dbd_label:", 0) == 0 && first.find("DBD(dinkum_binary_data)") != std::string::npos;
+}
+
 bool isDbaFile(const std::string &file)
 {
     if (fs::path(file).extension() == ".dba")
         return true;
-    std::ifstream in(file);
-    std::string first;
-    std::getline(in, first);
-    return first.rfind("dbd_label:", 0) == 0;
+    return !isSlocumBinaryFile(file) && firstLine(file).rfind("dbd_label:", 0) == 0;
 }
 } // namespace observations_detail
 
 namespace
 {
-/// The files of @p path: the file, a folder's *.nc files (or its Slocum *.dba files), or a glob pattern's matches,
-/// sorted.
+/// The files of @p path: the file, a folder's *.nc files (or its Slocum *.dba files, or its Slocum binary files), or a
+/// glob pattern's matches, sorted.
 std::vector<std::string> filesOf(const std::string &path)
 {
     std::vector<std::string> out;
     std::error_code ec;
     if (fs::is_directory(path, ec))
     {
-        std::vector<std::string> dba;
+        std::vector<std::string> kinds[3]; // NetCDF, dba, binary
+        const char *const names[3] = {"NetCDF (.nc)", "Slocum dba (.dba)", "Slocum binary (.sbd, .tbd, .scd, ...)"};
+        const char *const patterns[3] = {"*.nc", "*.dba", "*.[st]bd"};
         for (const auto &e : fs::directory_iterator(path, ec))
-            if (e.is_regular_file() && e.path().extension() == ".nc")
-                out.push_back(e.path().string());
-            else if (e.is_regular_file() && e.path().extension() == ".dba")
-                dba.push_back(e.path().string());
-        if (!out.empty() && !dba.empty())
+            if (e.is_regular_file())
+            {
+                const std::string f = e.path().string();
+                const int kind = e.path().extension() == ".nc"                ? 0
+                                 : e.path().extension() == ".dba"             ? 1
+                                 : observations_detail::isSlocumBinaryFile(f) ? 2
+                                                                              : -1;
+                if (kind >= 0)
+                    kinds[kind].push_back(f);
+            }
+        for (int a = 0; a < 3; ++a)
+            for (int b = a + 1; b < 3; ++b)
+                if (!kinds[a].empty() && !kinds[b].empty())
+                    throw Error("observations '" + path + "': the folder holds both " + names[a] + " and " + names[b] +
+                                " files: give a pattern of one kind ('" + (fs::path(path) / patterns[b]).string() +
+                                "')");
+        for (auto &k : kinds)
+            if (!k.empty())
+                out = std::move(k);
+        if (out.empty())
             throw Error("observations '" + path +
-                        "': the folder holds both NetCDF (.nc) and Slocum dba (.dba) "
-                        "files: give a pattern of one kind ('" +
-                        (fs::path(path) / "*.dba").string() + "')");
-        if (out.empty())
-            out = std::move(dba);
-        if (out.empty())
-            throw Error("observations '" + path + "': the folder holds no NetCDF (.nc) or Slocum dba (.dba) file");
+                        "': the folder holds no NetCDF (.nc), Slocum dba (.dba) or Slocum binary (.sbd, .tbd, .dbd, "
+                        ".ebd, .scd, ...) file");
     }
     else if (path.find_first_of("*?[") != std::string::npos)
     {
@@ -228,6 +260,8 @@ void readCsv(const std::string &file, GliderObservations &o)
             r.at.lon -= 360.0;
         if (!o.lastFix || r.time >= o.lastFix->time)
             o.lastFix = GliderFix{r.time, r.at};
+        if (std::isfinite(r.time) && !(o.newestSurfacing >= r.time))
+            o.newestSurfacing = r.time;
         if (std::isfinite(r.time) && std::isfinite(r.at.lon) && std::isfinite(r.at.lat))
             o.fixes.push_back(GliderFix{r.time, r.at});
         if (cell("u").empty() && cell("v").empty())
@@ -338,10 +372,21 @@ ProfileFile readProfile(const std::string &file)
                                std::to_string(flags.back().second.size()) + " flags for " + std::to_string(n) +
                                " DAC (one, or one each, expected)");
         }
+    // the profile's depth range (the template's `depth`, m positive down), where the file has one
+    double depthMin = NAN, depthMax = NAN;
+    if (const auto id = var("depth"))
+        for (const double z : values(*id))
+            if (std::isfinite(z))
+            {
+                depthMin = std::isnan(depthMin) ? z : std::min(depthMin, z);
+                depthMax = std::isnan(depthMax) ? z : std::max(depthMax, z);
+            }
     for (std::size_t i = 0; i < n; ++i)
     {
         DacRecord r;
         r.file = file;
+        r.depthMin = depthMin;
+        r.depthMax = depthMax;
         r.time = time[i];
         r.at = {lon[i] > 180.0 ? lon[i] - 360.0 : lon[i], lat[i]};
         r.u = velocity(u[i]);
@@ -395,7 +440,7 @@ void readProfiles(const std::vector<std::string> &files, GliderObservations &o)
 }
 } // namespace
 
-GliderObservations readGliderObservations(const std::string &path)
+GliderObservations readGliderObservations(const std::string &path, const ObservationReadOptions &options)
 {
     GliderObservations o;
     o.source = withoutCredentials(path);
@@ -413,24 +458,27 @@ GliderObservations readGliderObservations(const std::string &path)
         const std::vector<std::string> files = filesOf(path);
         o.files = files.size();
         const bool csv = files.size() == 1 && fs::path(files[0]).extension() == ".csv";
-        const bool dba = std::all_of(files.begin(), files.end(), isDbaFile);
+        const auto count = [&](bool (*kind)(const std::string &)) {
+            return static_cast<std::size_t>(std::count_if(files.begin(), files.end(), kind));
+        };
+        const std::size_t dba = count(isDbaFile), binary = count(observations_detail::isSlocumBinaryFile);
         if (csv)
             readCsv(files[0], o);
-        else if (dba)
+        else if ((dba == files.size() || binary == files.size()) && dba + binary == files.size())
         {
 #if OMPL_GLIDER_WITH_MISSION
-            observations_detail::readDbaFiles(files, o);
+            observations_detail::readSlocumFiles(files, options.cache, o);
             variables = "sensors m_water_vx, m_water_vy";
 #else
             throw Error("observations '" + path +
-                        "': this build reads no Slocum dba file (built without the "
-                        "mission layer)");
+                        "': this build reads no Slocum dba or binary file (built without the mission layer)");
 #endif
         }
-        else if (std::any_of(files.begin(), files.end(), isDbaFile))
-            throw Error("observations '" + path +
-                        "': the pattern matches both Slocum dba files and others: give a "
-                        "pattern of one kind");
+        else if (dba + binary > 0)
+            throw Error("observations '" + path + "': the pattern matches " +
+                        (dba > 0 ? "both Slocum dba files" : "both Slocum binary files") +
+                        (dba > 0 && binary > 0 ? " and Slocum binary files" : " and others") +
+                        ": give a pattern of one kind");
         else
             readProfiles(files, o);
     }
@@ -462,9 +510,13 @@ std::string observationsText(const GliderObservations &o)
 {
     std::string s = std::to_string(o.dac.size()) + " DAC from " + std::to_string(o.files) + " file(s)" +
                     (o.platform.empty() ? "" : " of glider '" + o.platform + "'");
-    std::string why;
-    for (const auto &[reason, count] : o.rejected)
-        why += (why.empty() ? "" : ", ") + std::to_string(count) + " " + reason;
-    return s + (why.empty() ? "" : "; rejected: " + why);
+    const auto list = [](const std::map<std::string, std::size_t> &counts) {
+        std::string out;
+        for (const auto &[reason, count] : counts)
+            out += (out.empty() ? "" : ", ") + std::to_string(count) + " " + reason;
+        return out;
+    };
+    const std::string why = list(o.rejected), notes = list(o.notes);
+    return s + (why.empty() ? "" : "; rejected: " + why) + (notes.empty() ? "" : "; " + notes);
 }
 } // namespace ompl_glider

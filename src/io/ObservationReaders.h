@@ -2,10 +2,11 @@
 /// @file ObservationReaders.h
 /// @brief Internal to src/io (not installed): the readers of readGliderObservations() (GliderObservations.h) beyond
 /// the IOOS profile files and the CSV of GliderObservations.cpp: an ERDDAP tabledap answer over HTTP
-/// (ErddapObservations.cpp) and Slocum dba files (SlocumDba.cpp). Each fills what it reads into a GliderObservations:
-/// files, platform, the usable DAC (in any order, per-profile repeats left out), every fix, the rejected records by
-/// reason; readGliderObservations() then sorts them, counts the repeated times and sets the last fix when the reader
-/// has not.
+/// (ErddapObservations.cpp) and a Slocum glider's dba and binary files (SlocumDba.cpp, SlocumBinary.cpp: one table,
+/// SlocumTable.h; SlocumDive.cpp: its fixes and DAC over the dives). Each fills what it reads into a
+/// GliderObservations: files, platform, the usable DAC (in any order, per-profile repeats left out), every fix, the
+/// rejected records by reason; readGliderObservations() then sorts them, counts the repeated times and sets the last
+/// fix when the reader has not.
 
 #include <cmath>
 #include <cstddef>
@@ -69,7 +70,13 @@ void readErddap(const std::string &url, GliderObservations &o);
 /// True when @p file is a Slocum dba file (dbd2asc's output): a name ending ".dba", or a first line "dbd_label:".
 bool isDbaFile(const std::string &file);
 
-/// Reads Slocum dba files (one glider's deployment) into @p o. @throws Error naming the file and line of a file that
-/// is not dbd2asc's layout, and the file and sensor when m_present_time, m_gps_lat/lon or m_water_vx/vy is missing.
-void readDbaFiles(const std::vector<std::string> &files, GliderObservations &o);
+/// True when @p file is a Slocum binary file (SlocumBinary.h): its extension (isSlocumBinaryName()), or a first line
+/// "dbd_label: DBD(dinkum_binary_data)file".
+bool isSlocumBinaryFile(const std::string &file);
+
+/// Reads a Slocum glider's dba and binary files (one glider's deployment; @p cacheDir: the folder of the binary files'
+/// cache files, or empty) into @p o. @throws Error naming the file and line (or byte) of a file that is not dbd2asc's
+/// layout or the binary format, and the file and sensor when m_present_time, m_gps_lat/lon or m_water_vx/vy is
+/// missing.
+void readSlocumFiles(const std::vector<std::string> &files, const std::string &cacheDir, GliderObservations &o);
 } // namespace ompl_glider::observations_detail

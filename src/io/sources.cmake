@@ -22,6 +22,7 @@ if(OMPL_GLIDER_WITH_NETCDF)
     ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
     ${CMAKE_CURRENT_LIST_DIR}/DepthGrid.cpp
     ${CMAKE_CURRENT_LIST_DIR}/GliderObservations.cpp  # a glider's DAC: IOOS profile files, CSV
+    ${CMAKE_CURRENT_LIST_DIR}/SlocumBinary.cpp  # a Slocum's binary files (dinkum binary data, LZ4: liblz4)
     ${CMAKE_CURRENT_LIST_DIR}/UnitConversion.cpp  # unit strings (UDUNITS-2): forecasts, depths, DAC
   )
 endif()
@@ -44,6 +45,7 @@ if(OMPL_GLIDER_WITH_MISSION)
     list(APPEND OMPL_GLIDER_SOURCES
       # a glider's real-time data: an ERDDAP answer over HTTP, Slocum dba files
       ${CMAKE_CURRENT_LIST_DIR}/ErddapObservations.cpp
-      ${CMAKE_CURRENT_LIST_DIR}/SlocumDba.cpp)
+      ${CMAKE_CURRENT_LIST_DIR}/SlocumDba.cpp  # a Slocum's dba files and binary files as one table (SlocumTable.h)
+      ${CMAKE_CURRENT_LIST_DIR}/SlocumDive.cpp)  # its fixes and DAC over the dives
   endif()
 endif()

@@ -9,6 +9,7 @@
 #include <netcdf.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -316,26 +317,68 @@ inline std::string dbaRow(double time, double lat, double lon, double status, do
            num(depth) + "\n";
 }
 
-/// The deployment as a Slocum's dba files in @p dir: per surfacing a row of depth only, the GPS fix (the
-/// placeholder 69696969 for the fill surfacing, m_gps_status 2 for the flagged one), the DAC 30 s later (m_water_vx
-/// NaN for the fill surfacing), the profile's fix. Two files; the third surfacing's fix ends the first, its DAC
-/// begins the second.
-inline void writeDba(const std::filesystem::path &dir, const std::vector<Surfacing> &d)
+/// One row of a Slocum file: time, lat, lon (degrees; NaN: none; 69696969: the placeholder), m_gps_status, m_water_vx,
+/// m_water_vy (NaN: none), m_depth; the columns of kSensors.
+struct SlocumRow
 {
-    std::string files[2] = {dbaHeader("ru29-2026-074-0-0"), dbaHeader("ru29-2026-074-0-1")};
+    double time, lat, lon, status, vx, vy, depth;
+};
+
+/// The fix before the dive of @p s (the previous surfacing's last fix): 30 min before its DAC's time, 1/64 degree
+/// south-west of its DAC's position, so that the DAC is at the segment's mean time and position; the fix after the
+/// dive is the profile's (30 min after, 1/64 degree north-east).
+inline SlocumRow fixBeforeDive(const Surfacing &s)
+{
+    const double d = 1.0 / 64.0;
+    return {s.timeUv - 1800.0, s.latUv - d, s.lonUv - d, 0.0, NAN, NAN, 0.25};
+}
+
+/// The deepest depth of the dive of the surfacing @p k (m).
+inline double diveDepth(std::size_t k)
+{
+    return 60.0 + 10.0 * static_cast<double>(k);
+}
+
+/// The deployment as a Slocum's rows in two files (the cycles of its dba or binary files): per surfacing the fix
+/// before the dive (a surface row before it), the dive (one row at diveDepth()), the fix after it (the placeholder
+/// 69696969 for the fill surfacing, m_gps_status 2 for the flagged one), for a good surfacing a second fix 15 s later
+/// (the DAC's fix is the surfacing's first), the DAC 30 s after the first fix (m_water_vx NaN for the fill
+/// surfacing). The third surfacing's fix ends the first file, its DAC begins the second.
+inline std::array<std::vector<SlocumRow>, 2> slocumRows(const std::vector<Surfacing> &d)
+{
+    std::array<std::vector<SlocumRow>, 2> files;
     for (std::size_t k = 0; k < d.size(); ++k)
     {
         const Surfacing &s = d[k];
         const bool fill = s.kind == Surfacing::Fill, qc = s.kind == Surfacing::Qc4;
-        std::string &before = files[k < 3 ? 0 : 1];
-        std::string &after = files[k < 2 ? 0 : 1];
-        before += dbaRow(s.timeUv - 60.0, NAN, NAN, NAN, NAN, NAN, 0.5);
-        before +=
-            dbaRow(s.timeUv, fill ? 69696969.0 : s.latUv, fill ? 69696969.0 : s.lonUv, qc ? 2.0 : 0.0, NAN, NAN, 0.2);
-        after += dbaRow(s.timeUv + 30.0, NAN, NAN, NAN, fill ? NAN : s.u, fill ? 0.1 : s.v, 0.2);
-        after += dbaRow(s.time, s.lat, s.lon, 0.0, NAN, NAN, 0.1);
+        std::vector<SlocumRow> &before = files[k < 3 ? 0 : 1];
+        std::vector<SlocumRow> &after = files[k < 2 ? 0 : 1];
+        const SlocumRow start = fixBeforeDive(s);
+        before.push_back({start.time - 60.0, NAN, NAN, NAN, NAN, NAN, 0.5}); // depths a float holds exactly
+        before.push_back(start);
+        before.push_back({s.timeUv, NAN, NAN, NAN, NAN, NAN, diveDepth(k)});
+        before.push_back(
+            {s.time, fill ? 69696969.0 : s.lat, fill ? 69696969.0 : s.lon, qc ? 2.0 : NAN, NAN, NAN, 0.125});
+        if (s.kind == Surfacing::Good && k + 1 < d.size()) // the last surfacing's first fix is the last fix
+            before.push_back({s.time + 15.0, s.lat + 1.0 / 64.0, s.lon, NAN, NAN, NAN, 0.125});
+        after.push_back({s.time + 30.0, NAN, NAN, NAN, fill ? NAN : s.u, fill ? 0.1 : s.v, 0.25});
     }
-    std::ofstream(dir / "ru29-2026-074-0-0.dba") << files[0];
-    std::ofstream(dir / "ru29-2026-074-0-1.dba") << files[1];
+    return files;
+}
+
+/// The names of the two files of slocumRows().
+inline const char *kSlocumFiles[2] = {"ru29-2026-074-0-0", "ru29-2026-074-0-1"};
+
+/// The deployment as a Slocum's dba files in @p dir (slocumRows()).
+inline void writeDba(const std::filesystem::path &dir, const std::vector<Surfacing> &d)
+{
+    const auto rows = slocumRows(d);
+    for (int f = 0; f < 2; ++f)
+    {
+        std::string text = dbaHeader(kSlocumFiles[f]);
+        for (const SlocumRow &r : rows[f])
+            text += dbaRow(r.time, r.lat, r.lon, r.status, r.vx, r.vy, r.depth);
+        std::ofstream(dir / (std::string(kSlocumFiles[f]) + ".dba")) << text;
+    }
 }
 } // namespace realtime_test

@@ -67,6 +67,25 @@ void expectSame(const GliderObservations &a, const GliderObservations &b)
     EXPECT_EQ(a.platform, b.platform);
 }
 
+/// The same DAC (to the bit), last fix and glider.
+void expectSameDac(const GliderObservations &a, const GliderObservations &b)
+{
+    ASSERT_EQ(a.dac.size(), b.dac.size());
+    for (std::size_t i = 0; i < a.dac.size(); ++i)
+    {
+        EXPECT_EQ(a.dac[i].time, b.dac[i].time) << i;
+        EXPECT_EQ(a.dac[i].at.lon, b.dac[i].at.lon) << i;
+        EXPECT_EQ(a.dac[i].at.lat, b.dac[i].at.lat) << i;
+        EXPECT_EQ(a.dac[i].u, b.dac[i].u) << i;
+        EXPECT_EQ(a.dac[i].v, b.dac[i].v) << i;
+    }
+    ASSERT_TRUE(a.lastFix && b.lastFix);
+    EXPECT_EQ(a.lastFix->time, b.lastFix->time);
+    EXPECT_EQ(a.lastFix->at.lon, b.lastFix->at.lon);
+    EXPECT_EQ(a.lastFix->at.lat, b.lastFix->at.lat);
+    EXPECT_EQ(a.platform, b.platform);
+}
+
 /// An ERDDAP of the deployment: /erddap/tabledap/<dataset>.<csvp|csv|ncCF>?<columns>&time>=<date>, the answer built
 /// from the surfacings the constraint selects; "-flat" datasets answer .ncCF in the flat layout.
 class Erddap
@@ -193,26 +212,96 @@ TEST_F(GliderRealtime, ErddapNcCfRaggedAndFlatAreTheIoosFiles)
     }
 }
 
-TEST_F(GliderRealtime, DbaFilesAreTheIoosFiles)
+TEST_F(GliderRealtime, DbaFilesPlaceEachDacOverItsDiveAsTheIoosFiles)
 {
+    // the dba files hold the fixes before and after each dive, then the DAC: each DAC placed at the segment's mean
+    // time and position is the IOOS file's (time_uv, lon_uv, lat_uv), to the bit
     const GliderObservations reference = ioos();
     const fs::path d = freshDir("realtime_dba");
-    writeDba(d, since(deployment(), parseIsoTime(kSince)));
+    const std::vector<Surfacing> surfacings = since(deployment(), parseIsoTime(kSince));
+    writeDba(d, surfacings);
     for (const std::string &source : {d.string(), (d / "*.dba").string()})
     {
         const GliderObservations o = readGliderObservations(source);
-        expectSame(o, reference);
+        expectSameDac(o, reference);
         EXPECT_EQ(o.files, 2u);
         // the placeholder fix, the status-2 fix, a DAC with one component, a DAC without a fix before it
         EXPECT_EQ(o.rejected, (std::map<std::string, std::size_t>{{"GPS status 2 (m_gps_status)", 1},
                                                                   {"fill value", 1},
                                                                   {"no GPS fix (69696969)", 1},
                                                                   {"no GPS fix in the 30 min before it", 1}}));
+        EXPECT_TRUE(o.notes.empty()); // every DAC has its dive's start
+        // each DAC's segment: the fix before the dive and the first fix after it (not the second, 15 s later); the
+        // depths over it: the surface's 0.125 to the dive's deepest
+        const std::size_t good[] = {0, 1, 2, 5};
+        ASSERT_EQ(o.dac.size(), 4u);
+        for (std::size_t i = 0; i < 4; ++i)
+        {
+            const Surfacing &s = surfacings[good[i]];
+            EXPECT_EQ(o.dac[i].segmentStart, s.timeUv - 1800.0) << i;
+            EXPECT_EQ(o.dac[i].segmentEnd, s.time) << i;
+            EXPECT_EQ(o.dac[i].depthMin, 0.125) << i;
+            EXPECT_EQ(o.dac[i].depthMax, diveDepth(good[i])) << i;
+        }
+        // the valid fixes: before and after each dive (the fill's and the flagged one's after rejected), the good
+        // surfacings' second fixes but the last's
+        EXPECT_EQ(o.fixes.size(), 6u + 4u + 3u);
+        // the newest surfacing: the last fix (valid)
+        EXPECT_EQ(o.newestSurfacing, o.lastFix->time);
     }
     // one file alone: the third surfacing's DAC (first in the second file) has its fix in the other file
     const GliderObservations second = readGliderObservations((d / "ru29-2026-074-0-1.dba").string());
     ASSERT_EQ(second.dac.size(), 1u); // the sixth's: the third's lost its fix, the fourth's and fifth's rejected
     EXPECT_EQ(second.rejected.at("no GPS fix in the 30 min before it"), 2u);
+}
+
+TEST_F(GliderRealtime, DbaDacWithoutAFixBeforeItsDiveIsPlacedAtTheSurfacingAndCounted)
+{
+    const fs::path d = freshDir("realtime_dba_first");
+    const double t = t0();
+    // the first surfacing of the files (no fix before its dive), a second fix without a dive between, its DAC; the
+    // newest fix rejected (69696969): the newest surfacing is later than the last fix
+    std::ofstream(d / "ru29-2026-074-0-0.dba")
+        << dbaHeader("ru29-2026-074-0-0") << dbaRow(t, 47.875, -52.625, 0.0, NAN, NAN, 0.25)
+        << dbaRow(t + 60, 47.890625, -52.625, NAN, NAN, NAN, 0.25) << dbaRow(t + 90, NAN, NAN, NAN, 0.2, -0.1, 0.25)
+        << dbaRow(t + 3600, NAN, NAN, NAN, NAN, NAN, 80.0)
+        << dbaRow(t + 7200, 69696969.0, 69696969.0, NAN, NAN, NAN, 0.25);
+    const GliderObservations o = readGliderObservations(d.string());
+    ASSERT_EQ(o.dac.size(), 1u);
+    EXPECT_EQ(o.dac[0].time, t + 60); // the latest fix at or before it, as without the dive's start
+    EXPECT_EQ(o.dac[0].at.lat, 47.890625);
+    EXPECT_TRUE(std::isnan(o.dac[0].segmentStart));
+    EXPECT_EQ(o.dac[0].segmentEnd, t); // the surfacing's first fix
+    EXPECT_TRUE(std::isnan(o.dac[0].depthMin));
+    EXPECT_EQ(o.notes, (std::map<std::string, std::size_t>{
+                           {"DAC placed at the surfacing's fix (no fix before the dive: its start unknown)", 1}}));
+    EXPECT_NE(observationsText(o).find("; 1 DAC placed at the surfacing's fix (no fix before the dive"),
+              std::string::npos)
+        << observationsText(o);
+    EXPECT_EQ(o.lastFix->time, t + 60);
+    EXPECT_EQ(o.newestSurfacing, t + 7200);
+}
+
+TEST_F(GliderRealtime, DbaSurfacingsWithoutDepthsAreSplitByTheirGaps)
+{
+    // without m_depth between them, fixes more than 15 min apart are two surfacings: the DAC averages the dive
+    // between the last fix of the first and the first fix of the second
+    const fs::path d = freshDir("realtime_dba_gaps");
+    const double t = t0();
+    std::ofstream(d / "ru29-2026-074-0-0.dba")
+        << dbaHeader("ru29-2026-074-0-0") << dbaRow(t, 47.875, -52.625, 0.0, NAN, NAN, NAN)
+        << dbaRow(t + 600, 47.875, -52.5, 0.0, NAN, NAN, NAN) // 10 min later: the same surfacing
+        << dbaRow(t + 600 + 7200, 48.0, -52.5, 0.0, NAN, NAN, NAN)
+        << dbaRow(t + 600 + 7300, 48.0, -52.375, 0.0, NAN, NAN, NAN)
+        << dbaRow(t + 600 + 7330, NAN, NAN, NAN, 0.1, 0.2, NAN);
+    const GliderObservations o = readGliderObservations(d.string());
+    ASSERT_EQ(o.dac.size(), 1u);
+    EXPECT_EQ(o.dac[0].segmentStart, t + 600);
+    EXPECT_EQ(o.dac[0].segmentEnd, t + 7800);
+    EXPECT_EQ(o.dac[0].time, t + 4200);
+    EXPECT_EQ(o.dac[0].at.lon, -52.5);
+    EXPECT_EQ(o.dac[0].at.lat, 47.9375);
+    EXPECT_TRUE(std::isnan(o.dac[0].depthMax)); // no depth reported
 }
 
 TEST_F(GliderRealtime, ErddapServerDownIsRefusedNamingTheUrl)

@@ -15,3 +15,7 @@ if(TARGET glider_plan)
   target_compile_definitions(test_io_glider_realtime_cli INTERFACE GLIDER_PLAN_EXE="$<TARGET_FILE:glider_plan>")
   add_dependencies(test_io_glider_realtime_cli glider_plan)
 endif()
+# a Slocum glider's binary files written from the format's description (SlocumBinaryWriter.h): the decoder's round
+# trip, byte orders, LZ4, cache files, bad files; as observations the same as their dba twins, planned alike
+glider_add_test(test_io_slocum_binary ${CMAKE_CURRENT_LIST_DIR}/TestSlocumBinary.cpp)
+target_link_libraries(test_io_slocum_binary INTERFACE netCDF::netcdf PkgConfig::LZ4)

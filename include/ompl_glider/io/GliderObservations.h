@@ -58,18 +58,31 @@ struct GliderObservations
     /// where the glider has been (the stations a resumed mission has reached, the glider's track on the map)
     std::vector<GliderFix> fixes;
     std::map<std::string, std::size_t> rejected; ///< rejected records by reason ("QC flag 4", "fill value", ...)
+    /// what the reader did that a pilot should know, by what, counted (records kept, files skipped): Slocum files,
+    /// "DAC placed at the surfacing's fix (no fix before the dive: its start unknown)", science files without fixes
+    std::map<std::string, std::size_t> notes;
     /// the time of the newest surfacing the source reports, its fix rejected or not (seconds since 1970; NaN when
-    /// none is known): later than lastFix when the newest fixes were rejected (69696969, a bad GPS status)
+    /// none is known): later than lastFix when the newest fixes were rejected (69696969, a bad GPS status). Slocum
+    /// files: the newest GPS fix reported, valid or not; a CSV: its newest row; IOOS files and ERDDAP: NaN (they give
+    /// profiles and the DAC's mean times, no surfacing)
     double newestSurfacing{std::numeric_limits<double>::quiet_NaN()};
 };
 
 /// @brief The most a DAC may be (m/s): faster records are rejected as implausible.
 constexpr double kMaxPlausibleDac = 3.0;
 
+/// @brief How readGliderObservations() reads.
+struct ObservationReadOptions
+{
+    /// the folder of a Slocum's cache files (`<sensor_list_crc>.cac`, the sensor lists factored out of its binary
+    /// files); empty: beside the files, then a `cache/` folder beside them (searched after this one too)
+    std::string cache;
+};
+
 /// @brief Reads @p path (one deployment): a .csv file; a NetCDF file, a folder of NetCDF (.nc) files, or a glob
 /// pattern of them; a Slocum dba file (.dba, or a first line `dbd_label:`), a folder of .dba files or a glob pattern
-/// of them; or an ERDDAP tabledap URL (http:// or https://). Files of another glider than most of them are rejected
-/// with the reason.
+/// of them; Slocum binary files (SlocumBinary.h), a folder or a pattern of them; or an ERDDAP tabledap URL (http://
+/// or https://). Files of another glider than most of them are rejected with the reason.
 ///
 /// CSV: a header naming the columns time, lon, lat, u, v (any order); time an ISO 8601 date or seconds since 1970;
 /// u and v empty for a fix without a DAC.
@@ -82,17 +95,25 @@ constexpr double kMaxPlausibleDac = 3.0;
 /// (by profile_id, else by time_uv), and rejected for a fill value (empty, NaN, -999) or a QC flag 3, 4 or 9. Fetched
 /// with the process's request time limit and retries (RemoteSource.h), never cached (real-time data).
 ///
-/// Slocum dba: fixes from m_gps_lat/m_gps_lon ([-]DDMM.MMMM) at m_present_time, rejected for the placeholder
-/// 69696969, half a position, or a latest m_gps_status other than 0; a DAC from a row with m_water_vx, m_water_vy (m/s;
-/// other units refused), given the time and position of the latest valid fix at or before it, at most 30 min before
-/// (the surfacing's fix where the dive ended; none: rejected).
+/// Slocum dba and binary files (one table of sensors either way, then one processing): fixes from m_gps_lat/m_gps_lon
+/// ([-]DDMM.MMMM) at m_present_time, rejected for the placeholder 69696969, half a position, or a latest m_gps_status
+/// other than 0. Consecutive valid fixes are one surfacing unless a dive lies between them (an m_depth of 4 m or more
+/// reported between them; without depths, more than 15 min between them). A DAC from a cycle with m_water_vx,
+/// m_water_vy (m/s; other units refused) is the mean current over the dive that ended at the surfacing of the latest
+/// valid fix at or before it (at most 30 min before; none: rejected): it is placed at the mean time and position of
+/// the segment from the fix before the dive (the last valid fix of the surfacing before) to the fix after it (the
+/// first valid fix of this surfacing), as the IOOS files place theirs, with segmentStart, segmentEnd and the m_depth
+/// range over the segment; with no fix before the dive, at the latest fix at or before it (counted in notes).
+/// Binary files without the glider's fixes and DAC (science files) are skipped and counted in notes.
 ///
 /// @throws Error naming the file (and line or variable) for a file that cannot be read, a CSV or dba line that is not
-/// numbers, a NetCDF file without the DAC variables, a dba file without its label lines or a sensor; naming the URL
+/// numbers, a NetCDF file without the DAC variables, a dba file without its label lines or a sensor, a binary file
+/// cut short, of an unknown encoding version, with bad known bytes or without its cache file; naming the URL
 /// for a server down, too slow or refusing (ERDDAP's own message), an HTML page, an answer without the columns; or
 /// when no record is usable.
-GliderObservations readGliderObservations(const std::string &path);
+GliderObservations readGliderObservations(const std::string &path, const ObservationReadOptions &options = {});
 
-/// @brief "12 used; rejected: 2 QC flag 4, 1 fill value" of what @p o holds.
+/// @brief "12 DAC from 3 file(s) of glider 'ru29'; rejected: 2 QC flag 4, 1 fill value; 1 DAC placed at ..." of what
+/// @p o holds: its DAC, files, glider, rejected records and notes.
 std::string observationsText(const GliderObservations &o);
 } // namespace ompl_glider
