@@ -16,7 +16,7 @@ namespace ompl_glider_py
 {
 namespace
 {
-py::array_t<double> array(const std::vector<double> &v)
+py::array_t<double> columnArray(const std::vector<double> &v)
 {
     return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
 }
@@ -44,18 +44,18 @@ py::dict observationsDict(const ompl_glider::GliderObservations &o)
         zmax.push_back(d.depthMax);
     }
     py::dict fixes, dac, out;
-    fixes["time"] = array(ft);
-    fixes["lon"] = array(flon);
-    fixes["lat"] = array(flat);
-    dac["time"] = array(t);
-    dac["lon"] = array(lon);
-    dac["lat"] = array(lat);
-    dac["u"] = array(u);
-    dac["v"] = array(v);
-    dac["segment_start"] = array(start);
-    dac["segment_end"] = array(end);
-    dac["depth_min"] = array(zmin);
-    dac["depth_max"] = array(zmax);
+    fixes["time"] = columnArray(ft);
+    fixes["lon"] = columnArray(flon);
+    fixes["lat"] = columnArray(flat);
+    dac["time"] = columnArray(t);
+    dac["lon"] = columnArray(lon);
+    dac["lat"] = columnArray(lat);
+    dac["u"] = columnArray(u);
+    dac["v"] = columnArray(v);
+    dac["segment_start"] = columnArray(start);
+    dac["segment_end"] = columnArray(end);
+    dac["depth_min"] = columnArray(zmin);
+    dac["depth_max"] = columnArray(zmax);
     out["fixes"] = fixes;
     out["dac"] = dac;
     out["rejected"] = py::cast(o.rejected);

@@ -81,7 +81,7 @@ void writeBinary(const fs::path &dir, const std::vector<Surfacing> &d, bool comp
     }
 }
 
-std::string errorOf(const std::string &file, const std::string &cache = "")
+std::string binaryErrorOf(const std::string &file, const std::string &cache = "")
 {
     try
     {
@@ -209,7 +209,7 @@ TEST(SlocumBinary, DecoderGivesBackEveryValueInBothByteOrders)
         EXPECT_EQ(some.sensors[some.columns[0]].name, "m_water_vy");
         for (std::size_t i = 0; i < cycles.size(); ++i)
         {
-            expectSameValue(some.cycles[i][0], cycles[i][4], "vy " + std::to_string(i));
+            expectSameValue(some.cycles[i][0], cycles[i][5], "vy " + std::to_string(i));
             EXPECT_EQ(some.cycles[i][1], cycles[i][0]);
         }
     }
@@ -256,7 +256,7 @@ TEST(SlocumBinary, CompressedFilesAndCacheFilesAreReadAsTheUncompressed)
     readWith(other / "1a2b3c4d.cac", other.string(), list);
     readWith(d / "cache" / "1a2b3c4d.ccc", "", slocum_test::compress(list, 300));
     // none: refused naming the file, the cache file and the folders searched
-    const std::string e = errorOf((d / "factored.tbd").string());
+    const std::string e = binaryErrorOf((d / "factored.tbd").string());
     EXPECT_NE(e.find((d / "factored.tbd").string() +
                      ": the sensor list is in the cache file '1a2b3c4d.cac' "
                      "(sensor_list_factored: 1), found in none of the folders " +
@@ -265,8 +265,8 @@ TEST(SlocumBinary, CompressedFilesAndCacheFilesAreReadAsTheUncompressed)
         << e;
     // a cache file of another sensor list
     writeBytes(d / "1a2b3c4d.cac", slocum_test::sensorList({{"m_present_time", "timestamp", 8}}));
-    EXPECT_NE(errorOf((d / "factored.tbd").string()).find("total_num_sensors says 9"), std::string::npos)
-        << errorOf((d / "factored.tbd").string());
+    EXPECT_NE(binaryErrorOf((d / "factored.tbd").string()).find("total_num_sensors says 9"), std::string::npos)
+        << binaryErrorOf((d / "factored.tbd").string());
 }
 
 TEST(SlocumBinary, BadFilesAreRefusedNamingTheFileAndWhatIsWrong)
@@ -277,7 +277,7 @@ TEST(SlocumBinary, BadFilesAreRefusedNamingTheFileAndWhatIsWrong)
     const std::string f = (d / "bad.sbd").string();
     const auto check = [&](const std::string &bytes, const std::string &words) {
         writeBytes(f, bytes);
-        const std::string e = errorOf(f);
+        const std::string e = binaryErrorOf(f);
         EXPECT_EQ(e.rfind(f + ":", 0), 0u) << e;
         EXPECT_NE(e.find(words), std::string::npos) << words << "\n" << e;
         // and through the observations' reader
@@ -323,15 +323,15 @@ TEST(SlocumBinary, BadFilesAreRefusedNamingTheFileAndWhatIsWrong)
     // compressed: a frame cut short, a corrupt block
     const std::string packed = slocum_test::compress(raw);
     writeBytes(d / "bad.scd", packed.substr(0, packed.size() - 5));
-    EXPECT_NE(errorOf((d / "bad.scd").string()).find(": an LZ4 frame of"), std::string::npos)
-        << errorOf((d / "bad.scd").string());
+    EXPECT_NE(binaryErrorOf((d / "bad.scd").string()).find(": an LZ4 frame of"), std::string::npos)
+        << binaryErrorOf((d / "bad.scd").string());
     std::string corrupt = packed;
     for (std::size_t i = 2; i < 40; ++i)
         corrupt[i] = static_cast<char>(0xff);
     writeBytes(d / "bad.scd", corrupt);
-    EXPECT_NE(errorOf((d / "bad.scd").string()).find((d / "bad.scd").string() + ": byte 0: a corrupt LZ4 block"),
+    EXPECT_NE(binaryErrorOf((d / "bad.scd").string()).find((d / "bad.scd").string() + ": byte 0: a corrupt LZ4 block"),
               std::string::npos)
-        << errorOf((d / "bad.scd").string());
+        << binaryErrorOf((d / "bad.scd").string());
 }
 
 TEST(SlocumBinary, BinaryFilesAreTheirDbaTwinsAndPlanAsThem)

@@ -19,6 +19,7 @@
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/mission/Observations.h"
 #include "ompl_glider/mission/Planning.h"
+#include "../io/RealtimeDeployment.h"
 
 using namespace ompl_glider;
 namespace fs = std::filesystem;
@@ -321,4 +322,41 @@ TEST(Observations, DacAreComparedWithTheDepthAverageTheMissionSays)
     EXPECT_NEAR(averaged.observations()->correction.rmsBefore, 0.0, 1e-6);
     EXPECT_NE(averaged.observations()->comparedWith.find("0-180 m average"), std::string::npos)
         << averaged.observations()->comparedWith;
+}
+
+// The glider surfaced after its last valid fix without a valid one (the placeholder 69696969): the plan departs from
+// the last valid fix, and the report warns how much older it is than the newest surfacing.
+TEST(Observations, AStartFromAFixOlderThanTheNewestSurfacingIsWarned)
+{
+    const std::string forecast = uniformForecast("stale.nc", 0.1, 0.0);
+    const fs::path folder = dir() / "stale_dba";
+    fs::create_directories(folder);
+    const double t0 = parseIsoTime("2026-03-15T12:00:00Z"), nan = std::nan("");
+    std::string text = realtime_test::dbaHeader("ru29-2026-074-0-0");
+    text += realtime_test::dbaRow(t0, 48.0, -52.30, 0, nan, nan, 0.5);
+    text += realtime_test::dbaRow(t0 + 3600, nan, nan, nan, nan, nan, 100.0);
+    text += realtime_test::dbaRow(t0 + 7200, 48.0, -52.25, 0, nan, nan, 0.5); // the last valid fix
+    text += realtime_test::dbaRow(t0 + 7260, nan, nan, nan, 0.1, 0.0, 0.5);
+    text += realtime_test::dbaRow(t0 + 10800, nan, nan, nan, nan, nan, 100.0);
+    text += realtime_test::dbaRow(t0 + 14400, 69696969.0, 69696969.0, 0, nan, nan, 0.5); // surfaced, no fix
+    std::ofstream((folder / "ru29-2026-074-0-0.dba").string()) << text;
+    const MissionProblem p(missionOn(forecast, "start: {lon: -52.5, lat: 48.0}\nobservations: '" + folder.string() +
+                                                   "'\n"));
+    const MissionSpec &m = p.getSpec();
+    ASSERT_TRUE(m.observations && m.observations->resumed);
+    EXPECT_EQ(m.isoTime(m.departure.time), "2026-03-15T14:00:00Z"); // the last valid fix
+    const std::string &warning = m.observations->resumed->staleFix;
+    EXPECT_NE(warning.find("2026-03-15T16:00:00Z"), std::string::npos) << warning;
+    EXPECT_NE(warning.find("2 h older"), std::string::npos) << warning;
+    EXPECT_NE(resumeNote(m).find("WARNING: " + warning), std::string::npos);
+    // a deployment whose newest surfacing gave its fix: no warning
+    std::string fine = realtime_test::dbaHeader("ru29-2026-074-0-0");
+    fine += realtime_test::dbaRow(t0, 48.0, -52.30, 0, nan, nan, 0.5);
+    fine += realtime_test::dbaRow(t0 + 3600, nan, nan, nan, nan, nan, 100.0);
+    fine += realtime_test::dbaRow(t0 + 7200, 48.0, -52.25, 0, nan, nan, 0.5);
+    fine += realtime_test::dbaRow(t0 + 7260, nan, nan, nan, 0.1, 0.0, 0.5);
+    std::ofstream((folder / "ru29-2026-074-0-0.dba").string()) << fine;
+    const MissionProblem q(missionOn(forecast, "start: {lon: -52.5, lat: 48.0}\nobservations: '" + folder.string() +
+                                                   "'\n"));
+    EXPECT_TRUE(q.getSpec().observations->resumed->staleFix.empty()) << q.getSpec().observations->resumed->staleFix;
 }
