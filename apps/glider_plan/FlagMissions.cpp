@@ -68,6 +68,7 @@ std::shared_ptr<const ompl_glider::SettingWords> flagWords()
                                                            {"departure.time", "--departure"},
                                                            {"start", "--start"},
                                                            {"observations", "--observations"},
+                                                           {"observations.cache", "--observations-cache"},
                                                            {"goal", "--goal"},
                                                            {"region", "--region"},
                                                            {"current.file", "--currents"},
@@ -163,6 +164,8 @@ MissionOverrides overridesOf(const Flags &f)
         o.order = Given<std::string>{f.order, "--order"};
     if (!f.observations.empty())
         o.observations = Given<std::string>{f.observations, "--observations"};
+    if (!f.observationsCache.empty())
+        o.observationsCache = Given<std::string>{f.observationsCache, "--observations-cache"};
     if (!f.coastline.empty())
         o.coastline = Given<std::string>{f.coastline, "--coastline"};
     if (f.isochrones)
@@ -249,6 +252,7 @@ MissionSpec forecastMissionOf(Flags f)
     // without --start: the glider's last fix (and its time without --departure), read by the mission
     f.forecast.startAtLastFix = f.start.empty();
     f.forecast.observations = f.observations;
+    f.forecast.observationsCache = f.observationsCache;
     if (!f.forecast.startAtLastFix)
         f.forecast.start = pair("--start", f.start);
     f.forecast.goal = pair("--goal", f.goal);

@@ -131,6 +131,10 @@ void defineRouteFlags(CLI::App &app, Flags &f)
                    "corrected by them (optimal interpolation) and, "
                    "without --start, the plan starts at the last fix (and at its time without --departure)")
         ->group(built);
+    app.add_option("--observations-cache", f.observationsCache,
+                   "the folder of a Slocum's cache files (<sensor_list_crc>.cac: the sensor lists its binary files "
+                   "leave out), searched before the files' own folder and a cache/ folder beside them")
+        ->group(built);
     app.add_option("--arrive-between", f.arriveBetween,
                    "arrive at the goal within begin,end (built-in: times; --currents: ISO 8601 dates or seconds after "
                    "the first forecast time): arrive early and hold at the goal where the current allows, else time "

@@ -93,9 +93,9 @@ int runFleetMode(const Flags &f, const MissionSpec &spec, RunOptions options)
 }
 
 /// --show-observations: the fixes and DAC the planner reads from @p source, as a table on stdout.
-int showObservations(const std::string &source)
+int showObservations(const std::string &source, const std::string &cache)
 {
-    const GliderObservations o = readGliderObservations(source);
+    const GliderObservations o = readGliderObservations(source, {cache});
     const auto num = [](const char *format, double x) {
         char buf[64];
         std::snprintf(buf, sizeof buf, format, x);
@@ -125,7 +125,7 @@ int run(const Flags &f)
     {
         if (f.observations.empty())
             throw UsageError{"--show-observations needs --observations (the glider's files or URL)"};
-        return showObservations(f.observations);
+        return showObservations(f.observations, f.observationsCache);
     }
     MissionSpec spec = !f.mission.empty()    ? missionFileOf(f)
                        : !f.currents.empty() ? forecastMissionOf(f)

@@ -19,6 +19,7 @@
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/mission/Overrides.h"
 #include "ompl_glider/mission/Planning.h"
 
 using namespace ompl_glider;
@@ -370,4 +371,48 @@ TEST(SlocumBinary, BinaryFilesAreTheirDbaTwinsAndPlanAsThem)
     expectSamePlan(planWith(sbd.string()), planDba, 1e-9);
     expectSamePlan(planWith(scd.string()), planDba, 1e-9);
     expectSamePlan(planDba, planIoos, 1e-6);
+}
+
+// A dockserver keeps the cache files in a folder of their own: the mission's observations.cache and the command
+// line's --observations-cache (MissionOverrides) name it; without it the files' sensor lists are not found (exit 2,
+// naming the cache file). Given, the plan is the one with the cache file beside the files.
+TEST(SlocumBinary, ACacheFolderGivenByTheMissionOrTheFlagIsSearched)
+{
+    const std::vector<Surfacing> s = surfacings();
+    const fs::path files = freshDir("slocum_cache_files"), cache = freshDir("slocum_cache_folder"),
+                   beside = freshDir("slocum_cache_beside");
+    slocum_test::Options factored;
+    factored.factored = true;
+    writeBinary(files, s, false, factored);
+    writeBinary(beside, s, false, factored);
+    std::ofstream(cache / "1a2b3c4d.cac") << slocum_test::sensorList(kBinarySensors);
+    std::ofstream(beside / "1a2b3c4d.cac") << slocum_test::sensorList(kBinarySensors);
+    // (the deployment's start, replaced by the last fix when the mission is made: a mission without a start reads
+    // its last fix when it is loaded, before a flag can name the cache folder)
+    const std::string mission = std::string("name: obs\ncurrent: {type: netcdf, file: '") + OMPL_GLIDER_SOURCE_DIR +
+                                "/examples/labrador_forecast.nc'}\nstart: {lon: -52.6, lat: 47.95}\n"
+                                "goal: {lon: -52.33, lat: 48.07}\n"
+                                "vehicle: {speed: 0.3}\nplanner: {refinement: false, global_check: false}\n";
+    const MissionResult reference = runMission(
+        MissionProblem(parseMission(mission + "observations: '" + beside.string() + "'\n", "obs.yaml")));
+    ASSERT_TRUE(reference.plan.solved);
+    const MissionResult fromKey = runMission(MissionProblem(parseMission(
+        mission + "observations: {file: '" + files.string() + "', cache: '" + cache.string() + "'}\n", "obs.yaml")));
+    expectSamePlan(fromKey, reference, 1e-12);
+    MissionSpec m = parseMission(mission + "observations: '" + files.string() + "'\n", "obs.yaml");
+    try
+    {
+        MissionProblem p(m);
+        ADD_FAILURE() << "the sensor list was found without its cache folder";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("1a2b3c4d.cac"), std::string::npos) << e.what();
+    }
+    MissionOverrides o;
+    o.origin = Origin::Flag;
+    o.observationsCache = Given<std::string>{cache.string(), "--observations-cache"};
+    applyOverrides(o, m);
+    EXPECT_EQ(m.observations->cache, cache.string());
+    expectSamePlan(runMission(MissionProblem(m)), reference, 1e-12);
 }

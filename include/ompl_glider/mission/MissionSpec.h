@@ -506,6 +506,9 @@ struct ObservationsSpec
     /// IOOS profile files (a file, folder or glob pattern) or a CSV; resolved. Empty: no files, the section only sets
     /// the correction's parameters (those of the execution's replan_observed)
     std::string path;
+    /// The folder of a Slocum's cache files (the sensor lists of its binary files, `<crc>.cac`), searched before the
+    /// files' own folder and a `cache/` folder beside them; empty: those two only
+    std::string cache;
     /// L (planning units); NaN: 20 km for a forecast, a tenth of the region's larger side for an analytic flow
     double lengthScale{std::numeric_limits<double>::quiet_NaN()};
     /// T (field time units); NaN: one day where the time unit is known, else a tenth of the planning horizon

@@ -46,7 +46,7 @@ struct ObservationReport
 /// ERDDAP URL): the one reader of it for the mission loader, forecastMission() (the command line's `--currents`
 /// and Python's plan() without a start); none when they report no position.
 /// @throws Error when they cannot be read (without the place: the caller names it).
-std::optional<GliderFix> lastFixOf(const std::string &path);
+std::optional<GliderFix> lastFixOf(const std::string &path, const std::string &cache = "");
 
 /// @brief Marks @p m's start (and its departure when @p departure) as the last fix's first guess (Origin::Observations
 /// at @p mark's place), which resumeAtLastFix() replaces by the fix it reads when the mission is made.

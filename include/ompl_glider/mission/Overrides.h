@@ -65,6 +65,8 @@ struct MissionOverrides
     /// the glider's observations (IOOS profile files or a CSV: MissionSpec::observations; the mission's correction
     /// parameters kept, else the defaults)
     std::optional<Given<std::string>> observations;
+    /// the folder of a Slocum's cache files for the observations' binary files (ObservationsSpec::cache)
+    std::optional<Given<std::string>> observationsCache;
     /// the correction's settings (ObservationsSpec): length and time scales as text (a number in the mission's units,
     /// or with a unit: "20 km", "1 d"), the error ratio (> 0), whether to learn from the DAC
     std::optional<Given<std::string>> correctionLength;

@@ -54,9 +54,9 @@ CorrectionParams MissionProblem::correctionParams() const
 }
 
 #if OMPL_GLIDER_WITH_NETCDF
-std::optional<GliderFix> lastFixOf(const std::string &path)
+std::optional<GliderFix> lastFixOf(const std::string &path, const std::string &cache)
 {
-    return readGliderObservations(path).lastFix;
+    return readGliderObservations(path, {cache}).lastFix;
 }
 
 void markLastFixGuess(MissionSpec &m, const SourceMark &mark, bool departure)
@@ -68,7 +68,7 @@ void markLastFixGuess(MissionSpec &m, const SourceMark &mark, bool departure)
 
 void startAtLastFix(MissionSpec &m, const SourceMark &mark, bool keepDeparture)
 {
-    const std::optional<GliderFix> fix = lastFixOf(m.observations->path);
+    const std::optional<GliderFix> fix = lastFixOf(m.observations->path, m.observations->cache);
     if (!fix)
         throw Error("the observations '" + m.observations->path + "' report no position to start from");
     m.start.geographic = true;
@@ -169,10 +169,12 @@ std::string comparedWith(const MissionSpec &m, const CorrectionParams &p, const 
     std::string s = p.depthTop > 0.0 ? "the forecast's current at " + metresText(p.depthTop) : "the surface current";
     s += " (a DAC is an average over the dive";
     if (std::isfinite(deepest))
-        s += ", down to " + metresText(deepest) + " here: give current.depth_average: [0, " +
-             text::number(std::round(deepest), 6) + "] to compare like with like";
+        s += ", down to " + metresText(deepest) + " here: give the depth average 0-" +
+             text::number(std::round(deepest), 6) + " m (" + m.term("current.depth_average") +
+             ") to compare like with like";
     else
-        s += ": give current.depth_average or a dive profile to compare like with like";
+        s += ": give a depth average (" + m.term("current.depth_average") +
+             ") or a dive profile to compare like with like";
     return s + ")";
 }
 } // namespace
@@ -183,7 +185,7 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
         return std::nullopt;
     if (givenByCaller(m, "start"))
         return std::nullopt; // the caller says where the glider is: the observations only correct the forecast
-    GliderObservations o = readGliderObservations(m.observations->path);
+    GliderObservations o = readGliderObservations(m.observations->path, {m.observations->cache});
     if (!o.lastFix)
         throw Error("the observations '" + m.observations->path + "' report no position to start from");
     MissionResume r;
@@ -341,7 +343,7 @@ void MissionProblem::applyObservations(const GliderObservations *read)
     GliderObservations o;
     try
     {
-        o = read ? *read : readGliderObservations(s.path);
+        o = read ? *read : readGliderObservations(s.path, {s.cache});
     }
     catch (const Error &e)
     {

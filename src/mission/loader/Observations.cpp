@@ -1,4 +1,5 @@
-// The `observations` section: the glider's files (IOOS profile files, Slocum dba, a CSV or an ERDDAP URL) and the
+// The `observations` section: the glider's files (IOOS profile files, Slocum dba or binary files, a CSV or an ERDDAP
+// URL) and the
 // correction's parameters ([BrethertonOI]; their ranges: mission/SettingRanges.h).
 #include <optional>
 
@@ -17,14 +18,16 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
         file = n;
     if (n.IsMap())
     {
-        r.checkMap(n, f, {"file", "length_scale", "time_scale", "error_ratio", "learn"});
+        r.checkMap(n, f, {"file", "cache", "length_scale", "time_scale", "error_ratio", "learn"});
         if (!n["file"] && !n["length_scale"] && !n["time_scale"] && !n["error_ratio"] && !n["learn"])
             r.fail(n, f + ".file",
-                   "missing: the glider's files (IOOS profile files or Slocum dba files: a file, folder or pattern; a "
+                   "missing: the glider's files (IOOS profile files or Slocum dba or binary files: a file, folder or pattern; a "
                    "CSV; or an ERDDAP URL), or the "
                    "correction's parameters alone (for an execution's replan_observed)");
         if (n["file"])
             file = n["file"];
+        if (n["cache"]) // a Slocum's cache files (the sensor lists of its binary files), besides theirs and cache/
+            o.cache = joinPath(r.dir(), r.text(n["cache"], f + ".cache"));
         if (n["length_scale"])
             o.lengthScale = r.setting(n["length_scale"], f + ".length_scale", m);
         if (n["time_scale"])

@@ -365,7 +365,7 @@ ForecastInput atLastFix(const ForecastInput &q)
     std::optional<GliderFix> fix;
     try
     {
-        fix = lastFixOf(q.observations);
+        fix = lastFixOf(q.observations, q.observationsCache);
         if (!fix)
             throw Error("they report no position to start from");
     }

@@ -264,6 +264,14 @@ void applyVia(const MissionOverrides &o, MissionSpec &m)
         m.observations = spec;
         mark(m, "observations", o.observations->source, o.origin);
     }
+    if (o.observationsCache)
+    {
+        if (!m.observations || !m.observations->hasFiles())
+            throw Error(o.observationsCache->source + ": a cache folder for the glider's files, but no observations "
+                                                      "are given (the glider's files)");
+        m.observations->cache = o.observationsCache->value;
+        mark(m, "observations.cache", o.observationsCache->source, o.origin);
+    }
     applyCorrectionSettings(o, m);
     if (m.order == VisitOrder::Free && m.waypoints.size() > kMaxFreeOrderViaPoints)
         throw Error((o.order ? o.order->source
