@@ -210,6 +210,22 @@ json headingsJson(const MissionResult &r, const MissionProblem &problem)
     return a;
 }
 
+/// A stint plan's bearings as TRUE bearings, each the one whose flight ends at its next surfacing; null without stints.
+json stintBearingsJson(const MissionResult &r, const MissionProblem &problem)
+{
+    const PlannedPath &p = r.plan;
+    if (!p.stints)
+        return nullptr;
+    json a = json::array();
+    const StintPlan &sp = p.stints->plan;
+    for (std::size_t k = 0; k < sp.bearings.size(); ++k)
+        a.push_back(
+            k + 1 < sp.surfacings.size()
+                ? trueBearingOfFlight(r, &problem, sp.surfacings[k], sp.surfacings[k + 1], sp.bearings[k], p.speed)
+                : trueBearing(r, &problem, {sp.surfacings[k].x, sp.surfacings[k].y}, sp.bearings[k]));
+    return a;
+}
+
 json departureSearchJson(const MissionSpec &m, const DepartureSearchResult &d)
 {
     auto samples = [](const std::vector<DepartureSample> &v) {
@@ -459,18 +475,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
         j["reflight"] = nullptr;
     // constant-bearing stints ([IsernObstacles]): null without a stints section
     j["remaining_distance"] = p.stints ? jnum(p.stints->plan.remainingDistance) : json(nullptr);
-    json stintBearings = nullptr; // true bearings, each the one whose flight ends at its next surfacing
-    if (p.stints)
-    {
-        stintBearings = json::array();
-        const StintPlan &sp = p.stints->plan;
-        for (std::size_t k = 0; k < sp.bearings.size(); ++k)
-            stintBearings.push_back(
-                k + 1 < sp.surfacings.size()
-                    ? trueBearingOfFlight(r, &problem, sp.surfacings[k], sp.surfacings[k + 1], sp.bearings[k], p.speed)
-                    : trueBearing(r, &problem, {sp.surfacings[k].x, sp.surfacings[k].y}, sp.bearings[k]));
-    }
-    j["bearings"] = stintBearings;
+    j["bearings"] = stintBearingsJson(r, problem);
     j["bearing_reference"] = "true north"; // every bearing written (headings, bearings): clockwise from true north
     if (p.stints)
     {
