@@ -180,6 +180,8 @@ MissionOverrides overridesOf(const Flags &f)
         o.reachInterval = Given<std::string>{f.reachInterval, "--reach-interval"};
     if (f.gotoTurn)
         o.gotoTurn = Given<double>{*f.gotoTurn, "--goto-turn"};
+    if (!f.holdTolerance.empty())
+        o.holdTolerance = Given<std::string>{f.holdTolerance, "--hold-tolerance"};
     // safety
     for (const auto &[text, target, flag] :
          {std::make_tuple(&f.keepOff, &o.keepOff, "--keep-off"),

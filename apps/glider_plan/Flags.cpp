@@ -229,6 +229,11 @@ void defineIoFlags(CLI::App &app, Flags &f)
                    "the goto list names a waypoint where the course turns by more than this many degrees, or where "
                    "leaving it out strays from the route or crosses land (default 10; 0: every waypoint)")
         ->group(io);
+    app.add_option("--hold-tolerance", f.holdTolerance,
+                   "the goto list and the targets file write a run of held headings as the fewest holds whose flight "
+                   "passes every planned segment end within this distance: metres, or e.g. '0.5 km' (default 300; "
+                   "0: every segment)")
+        ->group(io);
     app.add_option("--isochrone-interval", f.isochroneInterval,
                    "time between isochrones: a number in the mission's time unit, or e.g. '12 h' (default: eight up "
                    "to the arrival); implies --isochrones")

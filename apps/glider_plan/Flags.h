@@ -40,6 +40,7 @@ struct Flags
     bool reachability{false};
     std::string reachHorizon, reachInterval;
     std::optional<double> gotoTurn; // --goto-turn: the goto list's turn threshold in degrees
+    std::string holdTolerance;      // --hold-tolerance: the uploads' merged holds (metres, or with a unit)
     // forecasts from OPeNDAP servers: --cache, --request-timeout, --retries (io/RemoteSource.h)
     std::string cache;
     std::optional<double> requestTimeout;

@@ -500,7 +500,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
          goal_tolerance: Optional[float] = None, isochrones: bool = False,
          isochrone_interval: Union[None, float, str] = None, arrive_between: Optional[Tuple[Any, Any]] = None,
          coastline: Union[None, str, os.PathLike] = None, goto_turn: Optional[float] = None,
-         via: Optional[Sequence[Any]] = None, order: Optional[str] = None,
+         hold_tolerance: Union[None, float, str] = None, via: Optional[Sequence[Any]] = None, order: Optional[str] = None,
          observations: Union[None, str, os.PathLike] = None,
          correction_length: Union[None, float, str] = None, correction_time: Union[None, float, str] = None,
          error_ratio: Optional[float] = None, learn: Optional[bool] = None,
@@ -529,7 +529,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     planner (a registry name, :func:`planner_names`) and planner_params (its OMPL parameters by name), grid_size,
     sectors, time_limit (s), smoothing, refinement, global_check (False: no global check of the route class,
     docs/TRUST.md), horizon, goal_tolerance, arrive_between ((begin, end): the goal's arrival window, times as
-    departure), coastline (a GIS file of land), goto_turn (the goto list's turn threshold, degrees), via (via points
+    departure), coastline (a GIS file of land), goto_turn (the goto list's turn threshold, degrees), hold_tolerance (the uploads' merged holds:
+    metres or "0.5 km"), via (via points
     between start and goal, a mission of several legs: each a pair (x, y) / (lon, lat), or a dict with ``at`` (the
     pair), ``name``, ``radius``, ``stay`` (the mission's units) and ``arrive`` ((begin, end), times as departure)),
     order ("given" or "free": the fastest order of up to 8 via points), observations (the glider's depth-averaged
@@ -562,7 +563,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                     global_check=global_check, horizon=horizon, goal_tolerance=goal_tolerance, isochrones=isochrones,
                     isochrone_interval=isochrone_interval, arrive_between=arrive_between,
                     coastline=_path_keyword("coastline", coastline), goto_turn=goto_turn,
-                    via=_list_keyword("via", via, "a list of via points"), order=order,
+                    hold_tolerance=hold_tolerance, via=_list_keyword("via", via, "a list of via points"), order=order,
                     observations=_path_keyword("observations", observations),
                     correction_length=correction_length, correction_time=correction_time, error_ratio=error_ratio,
                     learn=learn,

@@ -73,11 +73,13 @@ py::dict points(const PyResult &r, const std::vector<TimedPoint> &pts)
 
 /// The waypoints as columns: the numbers as the result holds them, and the leg and stop of each as the output
 /// layer writes them in waypoints.csv (stopName(): "start", a via point's name, the goal's; "" between them and
-/// in a mission of one leg).
+/// in a mission of one leg); "heading" is the TRUE heading held from the waypoint (trueHeadings()).
 py::dict waypoints(const PyResult &r)
 {
     std::vector<double> x, y, lon, lat, t, heading, duration, leg;
     std::vector<std::string> iso, stop;
+    // the held headings as TRUE bearings (clockwise from true north), as waypoints.csv's heading_true_deg
+    const std::vector<double> trueHeading = trueHeadings(r.result, r.problem.get());
     py::array_t<long long> legIndex(static_cast<py::ssize_t>(r.result.waypoints.size()));
     for (std::size_t i = 0; i < r.result.waypoints.size(); ++i)
     {
@@ -89,7 +91,7 @@ py::dict waypoints(const PyResult &r)
         lon.push_back(w.geographic ? w.lonLat.lon : kNaN);
         lat.push_back(w.geographic ? w.lonLat.lat : kNaN);
         t.push_back(w.time);
-        heading.push_back(w.heading);
+        heading.push_back(trueHeading[i]);
         duration.push_back(w.headingDuration);
         leg.push_back(w.legTime);
         iso.push_back(w.iso);
@@ -496,7 +498,7 @@ void bindResult(py::module_ &m)
         .def_property_readonly(
             "goal", [](const R &r) { return py::make_tuple(r.problem->getGoal().x, r.problem->getGoal().y); })
         .def("waypoints", &waypoints)
-        .def("waypoints_csv", [](const R &r) { return waypointsCsv(r.result); })
+        .def("waypoints_csv", [](const R &r) { return waypointsCsv(r.result, r.problem.get()); })
         .def("path", [](const R &r) { return points(r, r.result.plan.path); })
         .def("track", [](const R &r) { return points(r, r.result.plan.track); })
         .def("polygons", &polygons)

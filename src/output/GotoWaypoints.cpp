@@ -98,10 +98,24 @@ bool inHeadingLeg(const MissionResult &r, std::size_t i)
 
 std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const MissionProblem *problem)
 {
+    bool headings = false;
+    for (const MissionWaypoint &w : r.waypoints)
+        headings = headings || std::isfinite(w.heading);
+    return gotoWaypointIndices(r, problem, headings ? uploadHolds(r, problem) : std::vector<HeldHeading>{});
+}
+
+std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const MissionProblem *problem,
+                                             const std::vector<HeldHeading> &holds)
+{
     const std::size_t n = r.waypoints.size();
     std::vector<std::size_t> kept;
     if (n == 0)
         return kept;
+    // the segment ends inside a merged hold are not listed: the glider holds on through them
+    std::vector<bool> inside(n, false);
+    for (const HeldHeading &h : holds)
+        for (std::size_t k = h.from + 1; k < h.to && k < n; ++k)
+            inside[k] = true;
     kept.push_back(0);
     const double turn = r.spec.outputs.gotoTurnDeg;
     const double tolerance = r.spec.outputs.gotoMaxOffset / r.spec.metresPerUnit();
@@ -110,12 +124,18 @@ std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const Missi
     for (std::size_t i = 1; i + 1 < n; ++i)
     {
         const std::size_t k = kept.back();
-        if ((isViaArrival(r, i) && !same(i, k)) || inHeadingLeg(r, i)) // stations, and held headings' segment ends
+        if (isViaArrival(r, i) && !same(i, k)) // stations
         {
             kept.push_back(i);
             continue;
         }
-        if (r.plan.headingRoute() || !(turn > 0.0)) // every segment end of held headings, or every waypoint
+        if (inHeadingLeg(r, i) || r.plan.headingRoute()) // held headings: the ends of the holds
+        {
+            if (!inside[i])
+                kept.push_back(i);
+            continue;
+        }
+        if (!(turn > 0.0)) // every waypoint
         {
             kept.push_back(i);
             continue;
@@ -133,15 +153,11 @@ std::vector<std::size_t> gotoWaypointIndices(const MissionResult &r, const Missi
     return kept;
 }
 
-std::string headingNote(const MissionResult &r, std::size_t i)
+std::string headingNote(const MissionResult &r, const HeldHeading &h)
 {
-    // the heading held on the way to waypoint i: the one held from the waypoint before
-    if (i == 0 || i >= r.waypoints.size() || !std::isfinite(r.waypoints[i - 1].heading))
-        return "";
-    const MissionWaypoint &from = r.waypoints[i - 1];
     char buf[128];
-    std::snprintf(buf, sizeof buf, "to here: hold heading %05.1f deg for %s", from.heading,
-                  heldFor(r, from.headingDuration).c_str());
+    std::snprintf(buf, sizeof buf, "to here: hold heading %05.1f deg true for %s", h.bearing,
+                  heldFor(r, h.duration).c_str());
     return buf;
 }
 
@@ -166,6 +182,25 @@ std::optional<StationStay> stayAt(const MissionResult &r, std::size_t i)
     return std::nullopt;
 }
 
+std::optional<StationStay> resumedStay(const MissionResult &r)
+{
+    const auto &o = r.spec.observations;
+    if (!o || !o->resumed || o->resumed->dropped.empty() || r.waypoints.empty())
+        return std::nullopt;
+    const DroppedStation &d = o->resumed->dropped.back();
+    if (!(d.stayLeft > 0.0))
+        return std::nullopt;
+    StationStay s;
+    s.name = d.name;
+    s.leave = r.waypoints.front().time; // the plan's departure: the stay's end
+    s.leaveIso = r.waypoints.front().iso;
+    s.arrival = r.spec.timeOf(o->resumed->fixIso); // held from the last fix on
+    s.duration = std::max(0.0, s.leave - s.arrival);
+    s.radius = d.radius;
+    s.at = d.at;
+    return s;
+}
+
 std::string stayNote(const MissionResult &r, const StationStay &s)
 {
     char radius[32];
@@ -184,14 +219,26 @@ GotoList gotoList(const MissionResult &r, const MissionProblem *problem)
     g.number = r.spec.outputs.gotoNumber;
     g.comment = r.spec.name;
     g.listWhenWptDist = r.spec.outputs.gotoWptDist;
-    const std::vector<std::size_t> listed = gotoWaypointIndices(r, problem);
+    bool headings = false;
+    for (const MissionWaypoint &w : r.waypoints)
+        headings = headings || std::isfinite(w.heading);
+    const std::vector<HeldHeading> holds = headings ? uploadHolds(r, problem) : std::vector<HeldHeading>{};
+    const std::vector<std::size_t> listed = gotoWaypointIndices(r, problem, holds);
+    if (const auto stay = resumedStay(r)) // a stay under way: held first, until the plan departs
+    {
+        g.waypoints.push_back(stay->at);
+        g.notes.push_back(stayNote(r, *stay));
+    }
     for (std::size_t i : listed)
     {
         if (i == 0 && !r.spec.outputs.gotoIncludeStart)
             continue;
         g.waypoints.push_back({r.waypoints[i].lonLat.lon, r.waypoints[i].lonLat.lat});
         // how the glider flies to this waypoint where it is not a straight leg: the heading to hold
-        std::string note = headingNote(r, i);
+        std::string note;
+        for (const HeldHeading &h : holds)
+            if (h.to == i)
+                note = headingNote(r, h);
         if (note.empty() && r.plan.headingRoute())
             note = i == 0 ? "start" : "hold in place";
         if (const auto stay = stayAt(r, i))

@@ -41,10 +41,11 @@ std::vector<OutputFile> summaryFormatFiles(const MissionResult &r, const Mission
              [res, prob, listed](const std::string &p) { writeFormatText(p, summaryJson(*res, *prob, listed)); }}};
 }
 
-std::vector<OutputFile> csvFormatFiles(const MissionResult &r, const MissionProblem &, const Listed &)
+std::vector<OutputFile> csvFormatFiles(const MissionResult &r, const MissionProblem &problem, const Listed &)
 {
     const MissionResult *res = &r;
-    return {{"waypoints.csv", [res](const std::string &p) { writeFormatText(p, waypointsCsv(*res)); }}};
+    const MissionProblem *prob = &problem;
+    return {{"waypoints.csv", [res, prob](const std::string &p) { writeFormatText(p, waypointsCsv(*res, prob)); }}};
 }
 
 std::vector<OutputFile> pathFormatFiles(const MissionResult &r, const MissionProblem &, const Listed &)

@@ -47,13 +47,15 @@ std::string stopName(const MissionResult &r, std::size_t i)
     return "";
 }
 
-std::string waypointsCsv(const MissionResult &r)
+std::string waypointsCsv(const MissionResult &r, const MissionProblem *problem)
 {
+    const std::vector<double> heading = trueHeadings(r, problem); // true bearings: the one written
     // a mission of several legs: the leg each waypoint belongs to and the via point it is (empty between them)
     const bool legs = !r.legs.empty();
-    std::string s = std::string("index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to,heading_deg,"
-                                "segment_duration") +
-                    (legs ? ",leg,stop\n" : "\n");
+    std::string s =
+        std::string("index,x,y,lon,lat,time,time_s,time_iso,leg_time,profile,climb_to,dive_to,heading_true_deg,"
+                    "segment_duration") +
+        (legs ? ",leg,stop\n" : "\n");
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];
@@ -67,7 +69,7 @@ std::string waypointsCsv(const MissionResult &r)
         else
             s += ",,";
         // a heading route: the heading held from here and for how long (empty for straight legs)
-        s += "," + (std::isfinite(w.heading) ? text::csvNumber(w.heading) : std::string()) + "," +
+        s += "," + (std::isfinite(heading[i]) ? text::csvNumber(heading[i]) : std::string()) + "," +
              (std::isfinite(w.headingDuration) ? text::csvNumber(w.headingDuration) : std::string());
         if (legs)
             s += "," + std::to_string(w.missionLeg) + "," + stopName(r, i);
@@ -254,6 +256,7 @@ std::string routeGeoJson(const MissionResult &r, const MissionProblem *problem)
     }
     nlohmann::ordered_json features = nlohmann::ordered_json::array();
     features.push_back({{"type", "Feature"}, {"properties", pathProps}, {"geometry", geometry}});
+    const std::vector<double> heading = trueHeadings(r, problem);
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];
@@ -271,8 +274,8 @@ std::string routeGeoJson(const MissionResult &r, const MissionProblem *problem)
         }
         if (r.plan.headingRoute() || std::isfinite(w.heading))
         {
-            // the heading held from this waypoint (null at the last one; a mission's legs of held headings)
-            props["heading_deg"] = jnum(w.heading);
+            // the TRUE heading held from this waypoint (null at the last one; a mission's legs of held headings)
+            props["heading_true_deg"] = jnum(heading[i]);
             props["segment_duration"] = jnum(w.headingDuration);
         }
         features.push_back(
@@ -420,9 +423,9 @@ std::string routeKml(const MissionResult &r, const MissionProblem *problem)
 
 namespace
 {
-/// One stints.csv row: stint @p k from @p a held at @p bearing until @p b.
+/// One stints.csv row: stint @p k from @p a held at @p bearing (the plane's; @p trueDeg written) until @p b.
 std::string stintRow(const MissionResult &r, const MissionProblem &problem, std::size_t k, const TimedPoint &a,
-                     double bearing, const TimedPoint &b)
+                     double bearing, double trueDeg, const TimedPoint &b)
 {
     const Point2 h = bearingVector(bearing);
     const double dt = b.t - a.t;
@@ -437,7 +440,7 @@ std::string stintRow(const MissionResult &r, const MissionProblem &problem, std:
     }
     else
         s += ",";
-    s += "," + text::csvNumber(bearing) + "," + text::csvNumber(b.t) + "," + text::csvNumber(b.x) + "," +
+    s += "," + text::csvNumber(trueDeg) + "," + text::csvNumber(b.t) + "," + text::csvNumber(b.x) + "," +
          text::csvNumber(b.y) + "," + text::csvNumber(dx) + "," + text::csvNumber(dy) + "," +
          text::csvNumber(dt > 0.0 ? std::hypot(dx, dy) / dt : 0.0) + "\n";
     return s;
@@ -446,25 +449,29 @@ std::string stintRow(const MissionResult &r, const MissionProblem &problem, std:
 
 std::string stintsCsv(const MissionResult &r, const MissionProblem &problem)
 {
-    std::string s =
-        "stint,time,time_s,time_iso,x,y,lon,lat,heading_deg,end_time,end_x,end_y,drift_x,drift_y,drift_speed\n";
+    std::string s = "stint,time,time_s,time_iso,x,y,lon,lat,heading_true_deg,end_time,end_x,end_y,drift_x,drift_y,"
+                    "drift_speed\n";
     if (!r.plan.stints)
     {
         // a heading route: its segments are the stints, from the waypoint where each is begun to the next one
         std::size_t k = 0;
+        const std::vector<double> heading = r.plan.headingRoute() ? trueHeadings(r, &problem) : std::vector<double>{};
         if (r.plan.headingRoute())
             for (std::size_t i = 0; i + 1 < r.waypoints.size(); ++i)
                 if (std::isfinite(r.waypoints[i].heading))
                 {
                     const MissionWaypoint &a = r.waypoints[i], &b = r.waypoints[i + 1];
-                    s += stintRow(r, problem, k++, {a.position.x, a.position.y, a.time}, a.heading,
+                    s += stintRow(r, problem, k++, {a.position.x, a.position.y, a.time}, a.heading, heading[i],
                                   {b.position.x, b.position.y, b.time});
                 }
         return s;
     }
     const StintPlan &p = r.plan.stints->plan;
     for (std::size_t k = 0; k < p.bearings.size() && k + 1 < p.surfacings.size(); ++k)
-        s += stintRow(r, problem, k, p.surfacings[k], p.bearings[k], p.surfacings[k + 1]);
+        s += stintRow(
+            r, problem, k, p.surfacings[k], p.bearings[k],
+            trueBearingOfFlight(r, &problem, p.surfacings[k], p.surfacings[k + 1], p.bearings[k], r.plan.speed),
+            p.surfacings[k + 1]);
     return s;
 }
 } // namespace ompl_glider

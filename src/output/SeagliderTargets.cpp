@@ -46,11 +46,25 @@ std::vector<SeagliderTarget> seagliderTargets(const MissionResult &r, const Miss
 {
     if (r.waypoints.empty() || !r.waypoints.front().geographic)
         throw Error(r.spec.file + ": a Seaglider targets file needs longitudes and latitudes (give a 'projection')");
-    const std::vector<std::size_t> turns = gotoWaypointIndices(r, problem);
+    bool headings = false;
+    for (const MissionWaypoint &w : r.waypoints)
+        headings = headings || std::isfinite(w.heading);
+    const std::vector<HeldHeading> holds = headings ? uploadHolds(r, problem) : std::vector<HeldHeading>{};
+    const std::vector<std::size_t> turns = gotoWaypointIndices(r, problem, holds);
     std::set<std::string> used;
     for (const ViaPointSpec &v : r.spec.waypoints)
         used.insert(v.name);
     std::vector<SeagliderTarget> out;
+    if (const auto stay = resumedStay(r)) // a stay under way: held first, until the plan departs
+    {
+        SeagliderTarget t;
+        t.name = stay->name;
+        t.position = stay->at;
+        t.radius = stay->radius;
+        t.note = stayNote(r, *stay);
+        used.insert(t.name);
+        out.push_back(t);
+    }
     int turn = 0;
     for (const std::size_t i : turns)
     {
@@ -75,7 +89,9 @@ std::vector<SeagliderTarget> seagliderTargets(const MissionResult &r, const Miss
             while (used.count(t.name));
         if (!out.empty() && out.back().name == t.name)
             continue; // the end of a stay at the via point just listed
-        t.note = headingNote(r, i);
+        for (const HeldHeading &h : holds)
+            if (h.to == i)
+                t.note = headingNote(r, h);
         if (const auto stay = stayAt(r, i))
             t.note += (t.note.empty() ? "" : "; then ") + stayNote(r, *stay);
         used.insert(t.name);

@@ -145,6 +145,9 @@ json observationsJson(const MissionProblem &problem)
                                {"why", "reached"},
                                {"reached_iso", d.reachedIso},
                                {"distance_m", d.distance},
+                               {"lon", d.at.lon},
+                               {"lat", d.at.lat},
+                               {"radius_m", d.radius},
                                {"stay_left", d.stayLeft}});
         resumed = {{"fix", {{"lon", r.fix.lon}, {"lat", r.fix.lat}, {"time_iso", r.fixIso}}},
                    {"replaced_start", jtext(r.replacedStart)},

@@ -10,6 +10,7 @@
 #include "JsonValues.h"
 #include "ompl_glider/Exception.h"
 #include "SummaryParts.h"
+#include "ompl_glider/output/RouteFiles.h"
 
 namespace ompl_glider
 {
@@ -189,6 +190,7 @@ json headingsJson(const MissionResult &r, const MissionProblem &problem)
     if (!r.plan.headingRoute() && !any)
         return nullptr;
     json a = json::array();
+    const std::vector<double> heading = trueHeadings(r, &problem); // true bearings
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];
@@ -197,7 +199,7 @@ json headingsJson(const MissionResult &r, const MissionProblem &problem)
         json start = position(problem, w.position);
         start["time"] = w.time;
         start["iso"] = jtext(w.iso);
-        json seg = {{"bearing_deg", w.heading}, {"duration", w.headingDuration}};
+        json seg = {{"bearing_true_deg", heading[i]}, {"duration", w.headingDuration}};
         if (r.spec.physicalUnits().time)
             seg["duration_h"] = w.headingDuration * r.spec.timeUnitSeconds / 3600.0;
         seg["start"] = start;
@@ -205,6 +207,22 @@ json headingsJson(const MissionResult &r, const MissionProblem &problem)
             seg["leg"] = r.waypoints[i + 1].missionLeg; // the leg of the segment's end (a via point closes its leg)
         a.push_back(seg);
     }
+    return a;
+}
+
+/// A stint plan's bearings as TRUE bearings, each the one whose flight ends at its next surfacing; null without stints.
+json stintBearingsJson(const MissionResult &r, const MissionProblem &problem)
+{
+    const PlannedPath &p = r.plan;
+    if (!p.stints)
+        return nullptr;
+    json a = json::array();
+    const StintPlan &sp = p.stints->plan;
+    for (std::size_t k = 0; k < sp.bearings.size(); ++k)
+        a.push_back(
+            k + 1 < sp.surfacings.size()
+                ? trueBearingOfFlight(r, &problem, sp.surfacings[k], sp.surfacings[k + 1], sp.bearings[k], p.speed)
+                : trueBearing(r, &problem, {sp.surfacings[k].x, sp.surfacings[k].y}, sp.bearings[k]));
     return a;
 }
 
@@ -457,7 +475,8 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
         j["reflight"] = nullptr;
     // constant-bearing stints ([IsernObstacles]): null without a stints section
     j["remaining_distance"] = p.stints ? jnum(p.stints->plan.remainingDistance) : json(nullptr);
-    j["bearings"] = p.stints ? json(p.stints->plan.bearings) : json(nullptr);
+    j["bearings"] = stintBearingsJson(r, problem);
+    j["bearing_reference"] = "true north"; // every bearing written (headings, bearings): clockwise from true north
     if (p.stints)
     {
         const StintOutcome &s = *p.stints;

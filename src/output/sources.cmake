@@ -4,6 +4,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/SeagliderTargets.cpp
   ${CMAKE_CURRENT_LIST_DIR}/RouteFiles.cpp
   ${CMAKE_CURRENT_LIST_DIR}/GotoWaypoints.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/HeldHeadings.cpp
   ${CMAKE_CURRENT_LIST_DIR}/SummaryJson.cpp
   ${CMAKE_CURRENT_LIST_DIR}/SummaryInputs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Report.cpp

@@ -224,6 +224,9 @@ yaml_case("levelset-walled-in",
 # the goto list thinned to the turns
 yaml_case("goto-turn-deg-out-of-range", mission(append="outputs: {goto_turn_deg: 200}\n"), "outputs.goto_turn_deg")
 yaml_case("goto-wpt-dist-zero", mission(append="outputs: {goto_wpt_dist: 0}\n"), "outputs.goto_wpt_dist")
+yaml_case("hold-tolerance-negative", mission(append="outputs: {hold_tolerance: -5}\n"), "outputs.hold_tolerance")
+case("cli-hold-tolerance-negative", ["--hold-tolerance=-5", "--out", "{out}"], 2, "--hold-tolerance")
+case("cli-hold-tolerance-no-length", ["--hold-tolerance", "3 h", "--out", "{out}"], 2, "--hold-tolerance")
 case("cli-goto-turn-negative", ["--goto-turn=-5", "--out", "{out}"], 2, "--goto-turn")
 case("cli-isochrone-interval-zero", ["--isochrone-interval", "0", "--out", "{out}"], 2, "--isochrone-interval")
 case("cli-isochrone-interval-fortnight", ["--isochrone-interval", "1 fortnight", "--out", "{out}"], 2,

@@ -4,15 +4,19 @@
 // (the cross current cancelled), a held heading for its time where the file says so, a hold at a stay until the
 // time it says to leave. Every station and the goal must be reached within their radius, when the summary says.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "ompl_glider/io/Time.h"
+#include "ompl_glider/mission/Overrides.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/mission/Planning.h"
@@ -39,7 +43,7 @@ struct Instruction
 void readNote(const std::string &note, Instruction &in)
 {
     std::smatch m;
-    static const std::regex heading(R"(hold heading (\d+\.\d) deg for (\d+\.\d+) h)");
+    static const std::regex heading(R"(hold heading (\d+\.\d) deg true for (\d+\.\d+) h)");
     static const std::regex stay(R"(stay at [A-Za-z0-9_-]+: hold within \d+ m for \d+\.\d+ h, leave at (\S+))");
     if (std::regex_search(note, m, heading))
     {
@@ -122,16 +126,34 @@ struct State
     double t{0.0};
 };
 
-/// dp/dt of a held heading (degrees clockwise from the frame's north) at speed V.
-Point2 headingRate(const CurrentField &f, Point2 p, double t, double bearing, double speed, double depth)
+/// The plane direction of a TRUE bearing (degrees clockwise from true north) at @p p: a short step along the bearing
+/// on the WGS84 ellipsoid (its radii of curvature), projected (the frame's own north where it has no lon/lat).
+Point2 trueDirection(const MissionProblem &problem, Point2 p, double bearing)
 {
     const double b = bearing * M_PI / 180.0;
-    const Velocity c = f.velocity(p.x, p.y, depth, t);
-    return {speed * std::sin(b) + c.u, speed * std::cos(b) + c.v};
+    if (!problem.isGeographic())
+        return {std::sin(b), std::cos(b)};
+    const LonLat g = problem.toGeographic(p);
+    const double phi = g.lat * M_PI / 180.0, e2 = 6.69437999014e-3, w = 1.0 - e2 * std::sin(phi) * std::sin(phi);
+    const double M = 6378137.0 * (1.0 - e2) / (w * std::sqrt(w)), N = 6378137.0 / std::sqrt(w);
+    const double step = 5.0; // metres each way
+    const double dlat = step * std::cos(b) / M * 180.0 / M_PI,
+                 dlon = step * std::sin(b) / (N * std::cos(phi)) * 180.0 / M_PI;
+    const Point2 a = problem.toLocal({g.lon - dlon, g.lat - dlat}), z = problem.toLocal({g.lon + dlon, g.lat + dlat});
+    const double n = std::hypot(z.x - a.x, z.y - a.y);
+    return {(z.x - a.x) / n, (z.y - a.y) / n};
 }
 
-/// Holds @p bearing for @p duration (RK4, 200 steps at least, one per minute of a forecast at most).
-State flyHeading(const CurrentField &f, State s, double bearing, double duration, double speed, double depth)
+/// dp/dt of a held true heading at speed V.
+Point2 headingRate(const MissionProblem &pr, Point2 p, double t, double bearing, double speed, double depth)
+{
+    const Point2 d = trueDirection(pr, p, bearing);
+    const Velocity c = pr.getField()->velocity(p.x, p.y, depth, t);
+    return {speed * d.x + c.u, speed * d.y + c.v};
+}
+
+/// Holds the true @p bearing for @p duration (RK4, 200 steps at least, one per minute of a forecast at most).
+State flyHeading(const MissionProblem &f, State s, double bearing, double duration, double speed, double depth)
 {
     const int n = std::max(200, static_cast<int>(std::ceil(duration / 60.0)));
     const double h = duration / n;
@@ -193,7 +215,10 @@ void flyAndCheck(const MissionProblem &problem, const MissionResult &r, const st
     const MissionSpec &m = problem.getSpec();
     const CurrentField &f = *problem.getField();
     const double speed = m.vehicle.speed, depth = m.vehicle.depth;
-    State s{r.waypoints.front().position, r.waypoints.front().time};
+    // a resumed mission: the glider is at the last fix when the files are loaded (before the plan's departure when a
+    // stay was under way there)
+    const auto &resumed = m.observations ? m.observations->resumed : std::nullopt;
+    State s{r.waypoints.front().position, resumed ? m.timeOf(resumed->fixIso) : r.waypoints.front().time};
     // the stations in the order flown, with the summary's arrival at each and their radius
     struct Stop
     {
@@ -217,7 +242,7 @@ void flyAndCheck(const MissionProblem &problem, const MissionResult &r, const st
         const Point2 to = problem.toLocal(in.to);
         if (std::isfinite(in.heading))
         {
-            s = flyHeading(f, s, in.heading, in.hours * 3600.0 / m.timeUnitSeconds, speed, depth);
+            s = flyHeading(problem, s, in.heading, in.hours * 3600.0 / m.timeUnitSeconds, speed, depth);
             ++headings;
         }
         else
@@ -256,7 +281,7 @@ void flyAndCheck(const MissionProblem &problem, const MissionResult &r, const st
         stayLegs += l.stay > 0.0 && &l != &r.legs.back();
         headingLegs += l.plan.headingRoute();
     }
-    EXPECT_EQ(stays, stayLegs) << what << ": a stay missing from the file";
+    EXPECT_EQ(stays, stayLegs + (resumed && !resumed->stayEnds.empty())) << what << ": a stay missing from the file";
     if (headingLegs > 0)
     {
         EXPECT_GT(headings, 0) << what << ": a leg of held headings written as straight legs";
@@ -282,13 +307,35 @@ TEST(PilotFilesFly, SurveyGotoListAndTargetsReachEveryStationWhenTheSummarySays)
     for (const PlannedLeg &l : r.legs)
         mixed = mixed || l.plan.headingRoute();
     EXPECT_TRUE(mixed) << "the survey has no leg of held headings any more: this test needs one";
-    // waypoints.csv: the heading legs' headings in heading_deg
-    const std::string csv = waypointsCsv(r);
+    // waypoints.csv keeps every planned segment (for the map): a true heading on each, none elsewhere
+    const std::string csv = waypointsCsv(r, &problem);
+    EXPECT_NE(csv.find(",heading_true_deg,segment_duration,"), std::string::npos);
     std::size_t headed = 0;
     for (const MissionWaypoint &w : r.waypoints)
         headed += std::isfinite(w.heading);
-    EXPECT_GT(headed, 0u);
+    EXPECT_GT(headed, 20u);
+    // the uploads: the leg of held headings as at most 8 holds (outputs.hold_tolerance, 300 m by default)
+    const GotoList g = gotoList(r, &problem);
+    std::size_t holds = 0;
+    for (const std::string &note : g.notes)
+        holds += note.find("hold heading") != std::string::npos;
+    std::printf("survey: %zu planned segments of held headings, uploaded as %zu holds\n", headed, holds);
+    EXPECT_GE(holds, 1u);
+    EXPECT_LE(holds, 8u);
+    const std::string targets = formatSeagliderTargets(seagliderTargets(r, &problem), r.spec.name);
+    std::size_t targetHolds = 0;
+    for (std::size_t k = targets.find("hold heading"); k != std::string::npos; k = targets.find("hold heading", k + 1))
+        ++targetHolds;
+    EXPECT_EQ(targetHolds, holds);
+    // and they re-fly through the forecast to every station within its radius, when the summary says
     checkPilotFiles(problem, r);
+    // with a tolerance of 0 every segment is its own hold
+    MissionResult fine = r;
+    fine.spec.outputs.holdTolerance = 0.0;
+    std::size_t every = 0;
+    for (const std::string &note : gotoList(fine, &problem).notes)
+        every += note.find("hold heading") != std::string::npos;
+    EXPECT_EQ(every, headed);
 }
 
 // A mission in a linear shear (u = y, V = 0.5, a 10 km unit, a projection for lon/lat): leg 1 east in the slack water
@@ -316,5 +363,48 @@ vehicle: {speed: 0.5}
     EXPECT_FALSE(r.legs[0].plan.headingRoute());
     EXPECT_TRUE(r.legs[1].plan.headingRoute());
     EXPECT_FALSE(r.legs[2].plan.headingRoute());
+    checkPilotFiles(problem, r);
+}
+
+// The survey resumed during A's stay: the glider reached A (-52.2, 48.0; 500 m, a 6 h stay) at 02:00 and is still
+// there at its last fix, 05:00; the plan departs when the stay ends, 08:00. Both uploads begin with the hold at A until
+// then; flown from the last fix at 05:00 as the vehicle flies them, they reach B and C when the summary says (a list
+// that left at 05:00 would arrive three hours early).
+TEST(PilotFilesFly, AMissionResumedDuringAStayHoldsItFirstInBothUploads)
+{
+    const double t0 = 1773554400.0; // 2026-03-15T06:00:00Z, the survey's departure
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("ompl_glider_fly_resume_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string csv = (dir / "at_a.csv").string();
+    {
+        std::ofstream out(csv);
+        out << "time,lon,lat,u,v\n";
+        const double fixes[][3] = {
+            {4, -52.6, 47.93}, {12, -52.4, 47.97}, {20, -52.2003, 48.0002}, {23, -52.2002, 47.9998}};
+        for (const auto &f : fixes)
+            out << formatIsoTime(t0 + 3600.0 * f[0]) << "," << f[1] << "," << f[2] << ",0.05,0.02\n";
+    }
+    MissionSpec m = loadMission(std::string(OMPL_GLIDER_SOURCE_DIR) + "/examples/survey_labrador.yaml");
+    MissionOverrides o;
+    o.origin = Origin::Flag;
+    o.observations = Given<std::string>{csv, "--observations"};
+    applyOverrides(o, m);
+    const MissionProblem problem(m);
+    const MissionResult r = runMission(problem);
+    std::filesystem::remove_all(dir);
+    ASSERT_TRUE(r.plan.solved) << r.plan.reason;
+    ASSERT_EQ(r.waypoints.front().iso, "2026-03-16T08:00:00Z"); // the stay's end: 3 h after the last fix
+    // the first waypoint of each file: A, with the stay's note
+    const std::string note = "stay at A: hold within 500 m for 3.0000 h, leave at 2026-03-16T08:00:00Z";
+    const GotoList g = parseGotoList(formatGotoList(gotoList(r, &problem)), "goto");
+    ASSERT_FALSE(g.waypoints.empty());
+    EXPECT_NEAR(g.waypoints[0].lon, -52.2, 1e-6);
+    EXPECT_NEAR(g.waypoints[0].lat, 48.0, 1e-6);
+    ASSERT_FALSE(g.notes.empty());
+    EXPECT_EQ(g.notes[0], note);
+    const std::string targets = formatSeagliderTargets(seagliderTargets(r, &problem), r.spec.name);
+    EXPECT_NE(targets.find("/ " + note + "\nA lat=4800.0000 lon=-05212.0000 radius=500 goto="), std::string::npos)
+        << targets;
     checkPilotFiles(problem, r);
 }

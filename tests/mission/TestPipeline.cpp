@@ -18,6 +18,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/mission/Planning.h"
+#include "ompl_glider/output/RouteFiles.h"
 #include "ompl_glider/output/OutputWriter.h"
 #include "ompl_glider/output/Report.h"
 #include "ompl_glider/output/SlocumGoto.h"
@@ -522,6 +523,7 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
 )",
                                  "jet_headings.yaml");
     m.outputs.directory = freshDirectory("headings").string();
+    m.outputs.holdTolerance = 0.0; // the uploads too: one hold per segment
     const MissionProblem problem(m);
     const MissionResult r = runMission(problem);
     const PlannedPath &p = r.plan;
@@ -560,11 +562,23 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
               (std::set<std::string>{"summary.json", "waypoints.csv", "path.geojson", "route.kml", "goto_l05.ma",
                                      "targets", "stints.csv", "map.svg", "map.png", "map.html"}));
 
+    // Every file writes the same TRUE bearings (TestTrueBearings.cpp re-flies them in lon/lat): a degree or two off the
+    // projection's grid north here, 300-400 km east of its centre.
+    const std::vector<double> truth = trueHeadings(r, &problem);
+    const std::vector<HeadingSegment> planned = seg; // the plane's (the drift is the planner's)
+    double turned = 0.0;
+    for (std::size_t i = 0; i + 1 < n; ++i)
+    {
+        turned = std::max(turned, std::abs(std::remainder(truth[i] - seg[i].bearing, 360.0)));
+        EXPECT_LT(std::abs(std::remainder(truth[i] - seg[i].bearing, 360.0)), 3.0) << i;
+        seg[i].bearing = truth[i];
+    }
+    EXPECT_GT(turned, 0.1);
     // waypoints.csv: the heading held from each waypoint and its duration, empty at the last one.
     const auto w = csvRows(readText(dir / "waypoints.csv"));
     ASSERT_EQ(w.size(), n + 1);
     ASSERT_EQ(w[0].size(), 14u);
-    EXPECT_EQ(w[0][12], "heading_deg");
+    EXPECT_EQ(w[0][12], "heading_true_deg");
     EXPECT_EQ(w[0][13], "segment_duration");
     for (std::size_t i = 0; i + 1 < n; ++i)
     {
@@ -586,7 +600,7 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
         EXPECT_EQ(row[3], problem.isoTime(a.t));
         EXPECT_NEAR(std::stod(row[8]), seg[i].bearing, 1e-7 * 360.0);
         EXPECT_NEAR(std::stod(row[9]), b.t, 1e-8);
-        const double b0 = seg[i].bearing * M_PI / 180.0, dt = b.t - a.t;
+        const double b0 = planned[i].bearing * M_PI / 180.0, dt = b.t - a.t;
         EXPECT_NEAR(std::stod(row[12]), b.x - a.x - 0.2 * dt * std::sin(b0), 1e-8);
         EXPECT_NEAR(std::stod(row[13]), b.y - a.y - 0.2 * dt * std::cos(b0), 1e-8);
     }
@@ -604,7 +618,7 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
     for (std::size_t i = 0; i + 1 < n; ++i)
     {
         const nlohmann::json &h = s["headings"][i];
-        EXPECT_NEAR(h["bearing_deg"].get<double>(), seg[i].bearing, 1e-12);
+        EXPECT_NEAR(h["bearing_true_deg"].get<double>(), seg[i].bearing, 1e-12);
         EXPECT_EQ(h["duration"].get<double>(), p.path[i + 1].t - p.path[i].t);
         EXPECT_NEAR(h["duration_h"].get<double>(), 24.0 * h["duration"].get<double>(), 1e-9);
         EXPECT_EQ(h["start"]["x"].get<double>(), p.path[i].x);
@@ -637,11 +651,11 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
         const nlohmann::json &props = g["features"][i + 1]["properties"];
         if (i + 1 < n)
         {
-            EXPECT_NEAR(props["heading_deg"].get<double>(), seg[i].bearing, 1e-12);
+            EXPECT_NEAR(props["heading_true_deg"].get<double>(), seg[i].bearing, 1e-12);
             EXPECT_EQ(props["segment_duration"].get<double>(), p.path[i + 1].t - p.path[i].t);
         }
         else
-            EXPECT_TRUE(props["heading_deg"].is_null());
+            EXPECT_TRUE(props["heading_true_deg"].is_null());
     }
     EXPECT_EQ(g["features"][0]["properties"]["route_model"], "headings");
 
@@ -662,7 +676,7 @@ outputs: {files: [csv, geojson, goto, stints, summary, map], goto_number: 5}
         else if (inList && gline[0] != '#')
         {
             char want[64];
-            std::snprintf(want, sizeof want, "# to here: hold heading %05.1f deg for %.4f h", seg[k].bearing,
+            std::snprintf(want, sizeof want, "# to here: hold heading %05.1f deg true for %.4f h", seg[k].bearing,
                           24.0 * (p.path[k + 1].t - p.path[k].t));
             EXPECT_EQ(previous, want) << "waypoint " << k;
             ++k;

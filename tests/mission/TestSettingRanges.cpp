@@ -72,6 +72,7 @@ double valueOf(const std::string &field, const MissionSpec &m)
         {"safety.keep_off", [](const MissionSpec &s) { return s.safety.keepOff; }},
         {"safety.min_depth", [](const MissionSpec &s) { return s.safety.minDepth; }},
         {"outputs.goto_turn_deg", [](const MissionSpec &s) { return s.outputs.gotoTurnDeg; }},
+        {"outputs.hold_tolerance", [](const MissionSpec &s) { return s.outputs.holdTolerance; }},
         {"outputs.isochrone_interval", [](const MissionSpec &s) { return s.outputs.isochroneInterval; }},
         {"reachability.horizon", [](const MissionSpec &s) { return s.reachability.horizon; }},
         {"reachability.interval", [](const MissionSpec &s) { return s.reachability.interval; }},
@@ -124,6 +125,8 @@ MissionOverrides overrideOf(const std::string &field, double v)
         o.minDepth = Given<std::string>{text, src};
     else if (field == "outputs.goto_turn_deg")
         o.gotoTurn = Given<double>{v, src};
+    else if (field == "outputs.hold_tolerance")
+        o.holdTolerance = Given<std::string>{text, src};
     else if (field == "outputs.isochrone_interval")
         o.isochroneInterval = Given<std::string>{text, src};
     else if (field == "reachability.horizon")

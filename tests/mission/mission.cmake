@@ -63,7 +63,7 @@ target_link_libraries(test_mission_goal_window INTERFACE nlohmann_json::nlohmann
 # missions of several legs: the chain of legs, the free order against all orders, stays, bad via points, targets
 glider_add_test(test_mission_legs ${CMAKE_CURRENT_LIST_DIR}/TestMissionLegs.cpp
                 ${CMAKE_CURRENT_LIST_DIR}/TestSeagliderTargets.cpp ${CMAKE_CURRENT_LIST_DIR}/TestPilotFilesFly.cpp
-                ${CMAKE_CURRENT_LIST_DIR}/TestResume.cpp)
+                ${CMAKE_CURRENT_LIST_DIR}/TestResume.cpp ${CMAKE_CURRENT_LIST_DIR}/TestTrueBearings.cpp)
 target_link_libraries(test_mission_legs INTERFACE nlohmann_json::nlohmann_json)
 # the glider's measurements: the forecast corrected by its DAC, the plan from the last fix
 glider_add_test(test_mission_observations ${CMAKE_CURRENT_LIST_DIR}/TestObservations.cpp

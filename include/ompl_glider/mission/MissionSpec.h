@@ -405,7 +405,10 @@ struct OutputSpec
     double gotoTurnDeg{10.0};
     double gotoMaxOffset{1000.0}; ///< goto list: the farthest a waypoint left out may lie from the listed legs (m)
     double gotoWptDist{100.0};    ///< goto list: list_when_wpt_dist, the waypoint radius in metres
-    std::string prefix;           ///< non-empty: also a copy of every file named <prefix>_<file> (a plain name)
+    /// uploads (goto list, targets): a run of held headings is written as the fewest holds whose flights pass its
+    /// planned segment ends within this many metres (0: every segment; outputs.hold_tolerance, --hold-tolerance)
+    double holdTolerance{300.0};
+    std::string prefix; ///< non-empty: also a copy of every file named <prefix>_<file> (a plain name)
     double mapTime{std::numeric_limits<double>::quiet_NaN()}; ///< time of the map's current arrows (NaN: departure)
     /// Time between two isochrones (format "isochrones"; the mission's time unit); NaN: eight up to the arrival.
     double isochroneInterval{std::numeric_limits<double>::quiet_NaN()};
@@ -481,6 +484,8 @@ struct DroppedStation
     std::string reachedIso; ///< the first fix within its radius (ISO 8601)
     double distance{0.0};   ///< that fix's distance from it, metres
     double stayLeft{0.0};   ///< of its stay, what was still to hold at the last fix (field time units; 0: none)
+    LonLat at;              ///< the via point's position (where a stay under way is held)
+    double radius{0.0};     ///< its radius, metres (the goto list's waypoint distance where it has none)
 };
 
 /// @brief What resuming a mission at the glider's last fix did (resumeAtLastFix()).

@@ -52,6 +52,7 @@ struct MissionOverrides
     std::optional<Given<bool>> isochrones;               ///< add the isochrone output
     std::optional<Given<std::string>> isochroneInterval; ///< a duration ("6 h", or a number in the time unit)
     std::optional<Given<double>> gotoTurn;               ///< the goto list's turn threshold, degrees in 0..180
+    std::optional<Given<std::string>> holdTolerance;     ///< the uploads' merged holds: metres, or "0.5 km"
     std::optional<Given<bool>> reachability; ///< add the probability-of-reach output (format "reachability")
     /// the probability of reach's horizon, frame interval (durations: "10 d", or a number in the time unit) and cell
     /// (a length: "2 km", or a number in the length unit); each also adds the output

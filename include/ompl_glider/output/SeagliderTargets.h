@@ -37,7 +37,8 @@ std::string seagliderLongitude(double degrees);
 /// among them) after the start, named after the via points (their radius where given), the other turns "T1", "T2",
 /// ... and the goal "GOAL" (outputs.goto_wpt_dist as their radius), each pointing to the next, the last to itself.
 /// A target reached by a held heading carries the heading and how long (the pilot sets $HEADING for that time), a via
-/// point with a stay the stay (SeagliderTarget::note).
+/// point with a stay the stay (SeagliderTarget::note). A mission resumed during a stay (resumedStay()) begins with
+/// the station, named after it, and that stay's note: the glider holds there until the plan departs.
 /// @throws Error when the mission has no longitudes and latitudes.
 std::vector<SeagliderTarget> seagliderTargets(const MissionResult &result, const MissionProblem *problem);
 

@@ -245,6 +245,8 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
             s.name = v.name;
             s.reachedIso = formatIsoTime(f.time);
             s.distance = d;
+            s.at = v.position.lonLat;
+            s.radius = radius;
             r.dropped.push_back(s);
             lastReached = static_cast<int>(k);
             lastReachedAt = t;

@@ -30,7 +30,7 @@ void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
     const std::string f = "outputs";
     r.checkMap(n, f,
                {"directory", "files", "goto_number", "goto_include_start", "goto_turn_deg", "goto_max_offset",
-                "goto_wpt_dist", "prefix", "map_time", "isochrone_interval"});
+                "goto_wpt_dist", "hold_tolerance", "prefix", "map_time", "isochrone_interval"});
     OutputSpec &o = m.outputs;
     if (n["directory"])
         o.directory = joinPath(r.dir(), r.text(n["directory"], f + ".directory"));
@@ -63,6 +63,8 @@ void readOutputs(const Reader &r, const YAML::Node &n, MissionSpec &m)
         r.fail(n["goto_max_offset"], f + ".goto_max_offset", "expected a distance in metres >= 0");
     if (n["goto_wpt_dist"] && !((o.gotoWptDist = r.number(n["goto_wpt_dist"], f + ".goto_wpt_dist")) > 0.0))
         r.fail(n["goto_wpt_dist"], f + ".goto_wpt_dist", "expected a distance in metres > 0");
+    if (n["hold_tolerance"])
+        o.holdTolerance = r.setting(n["hold_tolerance"], f + ".hold_tolerance", m);
     if (n["prefix"])
     {
         o.prefix = r.text(n["prefix"], f + ".prefix");

@@ -299,6 +299,11 @@ void applyOutputs(const MissionOverrides &o, MissionSpec &m)
     }
     if (o.gotoTurn)
         m.outputs.gotoTurnDeg = setting(*o.gotoTurn, "outputs.goto_turn_deg");
+    if (o.holdTolerance)
+    {
+        m.outputs.holdTolerance = settingOf(*o.holdTolerance, "outputs.hold_tolerance", m);
+        mark(m, "outputs.hold_tolerance", o.holdTolerance->source, o.origin);
+    }
     if (((o.isochrones && o.isochrones->value) || o.isochroneInterval) && !m.outputs.wants(OutputFormatId::Isochrones))
         m.outputs.files.push_back(OutputFormatId::Isochrones);
     const std::pair<const std::optional<Given<std::string>> *, std::pair<const char *, double *>> reach[] = {
@@ -556,7 +561,8 @@ std::vector<std::pair<std::string, std::string>> overridableFields(const Mission
         {"reachability.horizon", num(m.reachability.horizon)},
         {"reachability.interval", num(m.reachability.interval)},
         {"reachability.resolution", num(m.reachability.resolution)},
-        {"outputs.goto_turn_deg", num(m.outputs.gotoTurnDeg)}};
+        {"outputs.goto_turn_deg", num(m.outputs.gotoTurnDeg)},
+        {"outputs.hold_tolerance", num(m.outputs.holdTolerance)}};
     // which of these the file, a flag or a keyword gave (a field, or a value inside it: start.x, outputs.files[0])
     std::string marked;
     for (const auto &[name, value] : fields)

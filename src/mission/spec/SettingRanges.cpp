@@ -83,6 +83,7 @@ const std::vector<SettingRange> &settingRanges()
         {"safety.keep_off", V::Length, 0.0, true, kNone, "", ""},
         {"safety.min_depth", V::Depth, 0.0, true, kNone, "", ""},
         {"outputs.goto_turn_deg", V::Degrees, 0.0, true, 180.0, "", "0: every waypoint"},
+        {"outputs.hold_tolerance", V::Depth, 0.0, true, kNone, "", "metres; 0: every segment of held headings"},
         {"outputs.isochrone_interval", V::Duration, 0.0, false, kNone, "", ""},
         {"reachability.horizon", V::Duration, 0.0, false, kNone, "", ""},
         {"reachability.interval", V::Duration, 0.0, false, kNone, "", ""},
