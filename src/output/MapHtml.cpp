@@ -14,6 +14,7 @@
 #include "ompl_glider/environment/KeepOffZone.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
+#include "ompl_glider/output/RouteFiles.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/io/Time.h"
 #if OMPL_GLIDER_WITH_NETCDF
@@ -153,6 +154,9 @@ PageJson routeJson(const MissionResult &r, const MissionProblem &p, const Frame 
     PageJson wps = PageJson::array();
     const CurrentField &field = *p.getField();
     const double z = m.vehicle.depth;
+    // bearings from true north where the waypoints have lon/lat (the frame's grid north turned at each point), as
+    // every pilot file writes them (trueHeadings(): a held heading's true heading as it re-flies its segment)
+    const std::vector<double> held = trueHeadings(r, &p);
     for (std::size_t k = 0; k < r.waypoints.size(); ++k)
     {
         const MissionWaypoint &w = r.waypoints[k];
@@ -165,15 +169,19 @@ PageJson routeJson(const MissionResult &r, const MissionProblem &p, const Frame 
         Velocity c{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
         if (field.inWater(w.position.x, w.position.y, z) && w.time <= field.timeEnd())
             c = field.velocity(w.position.x, w.position.y, z, w.time);
-        double heading = w.heading;
+        double heading = held[k];
         if (!std::isfinite(heading) && k + 1 < r.waypoints.size() && std::isfinite(c.u))
-            heading = legHeading(w.position, r.waypoints[k + 1].position, c, plan.speed);
+            heading = trueBearing(r, &p, w.position, legHeading(w.position, r.waypoints[k + 1].position, c, plan.speed));
         wp["heading_deg"] = std::isfinite(heading) ? PageJson(rounded(heading, 0.1)) : PageJson(nullptr);
         if (std::isfinite(c.u) && std::isfinite(c.v))
-            wp["current"] = {{"u", rounded(c.u, 1e-4)},
-                             {"v", rounded(c.v, 1e-4)},
-                             {"speed", rounded(std::hypot(c.u, c.v), 1e-4)},
-                             {"dir_deg", rounded(bearing(c.u, c.v), 0.1)}};
+        {
+            // the current's direction from true north, and its components east and north
+            const double speed = std::hypot(c.u, c.v), dir = trueBearing(r, &p, w.position, bearing(c.u, c.v));
+            wp["current"] = {{"u", rounded(speed * std::sin(dir * M_PI / 180.0), 1e-4)},
+                             {"v", rounded(speed * std::cos(dir * M_PI / 180.0), 1e-4)},
+                             {"speed", rounded(speed, 1e-4)},
+                             {"dir_deg", rounded(dir, 0.1)}};
+        }
         else
             wp["current"] = nullptr;
         wps.push_back(std::move(wp));
