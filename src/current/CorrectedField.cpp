@@ -132,6 +132,9 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
         before += du[i] * du[i] + dv[i] * dv[i];
     }
     summary_.rmsBefore = std::sqrt(before / n);
+    summary_.meanInnovation = {du.mean(), dv.mean()};
+    summary_.firstUsed = used_.front().t;
+    summary_.lastUsed = used_.back().t;
     if (params_.learn && n >= params_.minLearn && before > 0.0)
     {
         // learn the scales not given, and the innovations' mean; the interpolation spreads what is left
