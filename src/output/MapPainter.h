@@ -70,6 +70,12 @@ class MapPainter
 {
 public:
     MapPainter(const MapRenderer &map, cairo_t *context);
+    /// A painter of a page @p height pixels tall (MapRenderer::size() measures the legend with it).
+    MapPainter(const MapRenderer &map, cairo_t *context, int height);
+
+    /// The legend drawn on the context as if the field's colour bar and its land and no-data entries were shown: the
+    /// y of its bottom (pixels), at least what paint() draws.
+    double legendBottom();
 
     /// The whole map: white page, the plot area (field, grid, forbidden regions, paths, start and goal) clipped to
     /// the plot, then frame and axes, then the legend.

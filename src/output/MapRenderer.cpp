@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <cairo.h>
 
@@ -17,8 +18,12 @@ namespace ompl_glider
 {
 namespace map_detail
 {
-MapPainter::MapPainter(const MapRenderer &m, cairo_t *context)
-    : map(m), region(m.region_), options(m.options_), cr(context), W(m.size().first), H(m.size().second),
+MapPainter::MapPainter(const MapRenderer &m, cairo_t *context) : MapPainter(m, context, m.size().second)
+{
+}
+
+MapPainter::MapPainter(const MapRenderer &m, cairo_t *context, int height)
+    : map(m), region(m.region_), options(m.options_), cr(context), W(m.options_.width), H(height),
       plotW(W - kLeft - kRight), scale(plotW / (region.xMax - region.xMin)), plotH(scale * (region.yMax - region.yMin)),
       xs(niceStep((region.xMax - region.xMin) / 8)), ys(niceStep((region.yMax - region.yMin) / 8)),
       geographic(options.toGeographic && options.toLocal), tu(options.timeUnit.empty() ? "" : " " + options.timeUnit)
@@ -149,18 +154,32 @@ void MapPainter::drawGridFill() const
 {
     if (!map.fill_)
         return;
+    // one pixel a node (its centre at the node), drawn scaled with bilinear filtering: seamless, and a node's colour
+    // is fillColour() of its value
     const MapGridFill &f = *map.fill_;
-    const double side = f.h * scale;
+    cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, f.nx, f.ny);
+    unsigned char *data = cairo_image_surface_get_data(img);
+    const int stride = cairo_image_surface_get_stride(img);
     for (int j = 0; j < f.ny; ++j)
         for (int i = 0; i < f.nx; ++i)
         {
             const double p = f.values[static_cast<std::size_t>(j) * f.nx + i];
-            if (!(p > 0.0))
-                continue;
-            setColour(cr, fillColour(p));
-            cairo_rectangle(cr, X(f.x0 + i * f.h) - 0.5 * side, Y(f.y0 + j * f.h) - 0.5 * side, side, side);
-            cairo_fill(cr);
+            const Rgba c = p > 0.0 ? fillColour(p) : Rgba{0.0, 0.0, 0.0, 0.0};
+            const auto byte = [](double v) { return static_cast<std::uint32_t>(std::lround(255.0 * v)); };
+            // premultiplied ARGB, row 0 at the top (the grid's last row of nodes)
+            *reinterpret_cast<std::uint32_t *>(data + (f.ny - 1 - j) * stride + 4 * i) =
+                byte(c.a) << 24 | byte(c.r * c.a) << 16 | byte(c.g * c.a) << 8 | byte(c.b * c.a);
         }
+    cairo_surface_mark_dirty(img);
+    cairo_save(cr);
+    cairo_translate(cr, X(f.x0 - 0.5 * f.h), Y(f.y0 + (f.ny - 0.5) * f.h));
+    cairo_scale(cr, f.h * scale, f.h * scale);
+    cairo_set_source_surface(cr, img, 0, 0);
+    cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_BILINEAR);
+    cairo_rectangle(cr, 0, 0, f.nx, f.ny);
+    cairo_fill(cr);
+    cairo_restore(cr);
+    cairo_surface_destroy(img);
 }
 
 void MapPainter::drawCurrentArrows() const
@@ -428,7 +447,7 @@ Rgba fillColour(double p)
 {
     p = std::clamp(p, 0.0, 1.0);
     // light yellow, orange, dark red; the more likely, the less see-through
-    return {1.0 - 0.35 * p, 0.92 - 0.80 * p, 0.45 - 0.40 * p, 0.30 + 0.50 * p};
+    return {1.0 - 0.35 * p, 0.92 - 0.80 * p, 0.45 - 0.40 * p, 0.25 + 0.45 * p};
 }
 
 std::pair<int, int> MapRenderer::size() const
@@ -437,7 +456,13 @@ std::pair<int, int> MapRenderer::size() const
     const double scale = plotW / (region_.xMax - region_.xMin);
     const double plotH = scale * (region_.yMax - region_.yMin);
     const int h = static_cast<int>(std::ceil(std::max(kTop + plotH + kBottom, 560.0)));
-    return {options_.width, h};
+    // the page is as tall as the legend needs (measured on a recording surface), so that nothing of it is cut
+    cairo_surface_t *probe = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, nullptr);
+    cairo_t *cr = cairo_create(probe);
+    const double legend = map_detail::MapPainter(*this, cr, h).legendBottom();
+    cairo_destroy(cr);
+    cairo_surface_destroy(probe);
+    return {options_.width, std::max(h, static_cast<int>(std::ceil(legend + 12.0)))};
 }
 
 MapPath MapRenderer::rawPathStyle(std::string label, std::vector<TimedPoint> waypoints)

@@ -36,6 +36,14 @@ void MapPainter::drawLegend()
     drawNotes();
 }
 
+double MapPainter::legendBottom()
+{
+    vmax_ = 1.0; // (the colour bar is drawn when the field has a speed: counted whether or not it has)
+    landShown_ = noDataShown_ = map.field_ != nullptr;
+    drawLegend();
+    return ly_;
+}
+
 void MapPainter::drawPathEntries()
 {
     for (const MapPath &p : map.paths_)
