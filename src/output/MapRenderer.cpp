@@ -18,9 +18,7 @@ namespace ompl_glider
 {
 namespace map_detail
 {
-MapPainter::MapPainter(const MapRenderer &m, cairo_t *context) : MapPainter(m, context, m.size().second)
-{
-}
+MapPainter::MapPainter(const MapRenderer &m, cairo_t *context) : MapPainter(m, context, m.size().second) {}
 
 MapPainter::MapPainter(const MapRenderer &m, cairo_t *context, int height)
     : map(m), region(m.region_), options(m.options_), cr(context), W(m.options_.width), H(height),
