@@ -16,6 +16,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/UnitConversion.h"
 #include "ompl_glider/io/RemoteSource.h"
+#include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
 namespace glider_plan
@@ -96,6 +97,15 @@ const CLI::Validator kPositiveFinite(
                    : "expected a finite number > 0 (at least 2.2e-308), got '" + text + "'";
     },
     "POSITIVE");
+
+/// The strategies an execution flies when none are listed (ExecutionSpec's): "current_sensitive,current_blind,...".
+std::string defaultStrategies()
+{
+    std::string out;
+    for (const std::string &s : ompl_glider::ExecutionSpec().strategies)
+        out += (out.empty() ? "" : ",") + s;
+    return out;
+}
 
 const std::vector<std::string> kSchemes2D = {"nearest", "bilinear", "bicubic"};
 const std::vector<std::string> kSchemes1D = {"nearest", "linear", "cubic", "akima"};
@@ -294,9 +304,10 @@ void defineExecutionFlags(CLI::App &app, Flags &f)
         ->group(ex);
     app.add_option(
            "--strategies", f.strategies,
-           "control strategies compared, e.g. current_sensitive,current_blind,greedy,replan; also planned_headings, "
-           "dac (steer with the last dive's measured DAC) and replan_observed (replan on the forecast corrected "
-           "by the DAC measured so far) (default: all)")
+           "control strategies compared, of current_sensitive, current_blind, greedy, replan, planned_headings (the "
+           "plan's own held headings), dac (steer with the last dive's measured DAC) and replan_observed (replan on "
+           "the forecast corrected by the DAC measured so far) (default: " +
+               defaultStrategies() + ", and planned_headings first where the plan has held headings)")
         ->group(ex);
     app.add_option("--radius", f.radius,
                    "the goal counts as reached within this distance (mission length unit; default 1 % of the "

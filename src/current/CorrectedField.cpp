@@ -73,6 +73,15 @@ std::string sourceOf(bool given, bool learn)
 {
     return given ? "given" : learn ? "default (too few DAC to estimate)" : "default";
 }
+
+/// The innovations' mean and the span of the DAC used, for the words of the report (CorrectionSummary).
+void noteInnovations(CorrectionSummary &s, const std::vector<DacObservation> &used, const Eigen::VectorXd &du,
+                     const Eigen::VectorXd &dv)
+{
+    s.meanInnovation = {du.mean(), dv.mean()};
+    s.firstUsed = used.front().t;
+    s.lastUsed = used.back().t;
+}
 } // namespace
 
 CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
@@ -131,6 +140,7 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
         before += du[i] * du[i] + dv[i] * dv[i];
     }
     summary_.rmsBefore = std::sqrt(before / n);
+    noteInnovations(summary_, used_, du, dv);
     if (params_.learn && n >= params_.minLearn && before > 0.0)
     {
         // learn the scales not given, and the innovations' mean; the interpolation spreads what is left

@@ -13,6 +13,15 @@ std::string csvCell(double v)
     return std::isfinite(v) ? text::number(v, 10) : "";
 }
 
+/// A text cell: the CSV's separators and quotes made ';' (a reason is one cell).
+std::string reasonCell(std::string s)
+{
+    for (char &c : s)
+        if (c == ',' || c == '\n' || c == '"')
+            c = ';';
+    return s;
+}
+
 /// "x,y,lon,lat" of a point (lon/lat empty without a projection).
 std::string csvPoint(const MissionProblem &problem, Point2 p)
 {
@@ -38,9 +47,10 @@ double compassDegrees(double angle)
 
 std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem)
 {
-    std::string s = "run,strategy,start_x,start_y,start_lon,start_lat,goal_x,goal_y,goal_lon,goal_lat,departure,"
-                    "planned_arrival,final_distance,arrival_time,arrival_iso,reached,grounded,made_good_speed,"
-                    "surfacings,replans,radius,reason,stations_reached,windows_missed,oracle_arrival\n";
+    std::string s =
+        "run,strategy,start_x,start_y,start_lon,start_lat,goal_x,goal_y,goal_lon,goal_lat,departure,"
+        "planned_arrival,distance_at_planned_arrival,arrival_time,arrival_iso,reached,grounded,made_good_speed,"
+        "surfacings,replans,radius,why_not_reached,stations_reached,windows_missed,oracle_arrival\n";
     for (const ExecutionRun &run : e.runs)
     {
         const std::string head = std::to_string(run.index) + ",";
@@ -50,11 +60,10 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
         const std::string oracle = "," + csvCell(run.oracleArrival) + "\n";
         if (!run.planned)
         {
-            std::string reason = run.reason;
-            for (char &c : reason)
-                if (c == ',' || c == '\n' || c == '"')
-                    c = ';';
-            s += head + "none," + ends + ",,,,,,,,," + csvCell(run.radius) + "," + reason + ",," + oracle;
+            s +=
+                head + "none," + ends + ",,,,,,,,," + csvCell(run.radius) + "," +
+                reasonCell("not flown: " + (run.reason.empty() ? std::string("no plan on the forecast") : run.reason)) +
+                ",," + oracle;
             continue;
         }
         for (std::size_t k = 0; k < e.strategies.size(); ++k)
@@ -65,7 +74,7 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
                  (std::isfinite(f.arrivalTime) ? problem.isoTime(f.arrivalTime) : std::string()) + "," +
                  (f.reached ? "1" : "0") + "," + (f.grounded ? "1" : "0") + "," + csvCell(f.madeGoodSpeed) + "," +
                  std::to_string(f.fixes.empty() ? 0 : f.fixes.size() - 1) + "," + std::to_string(f.replans) + "," +
-                 csvCell(run.radius) + ",," +
+                 csvCell(run.radius) + "," + reasonCell(f.notReachedWhy) + "," +
                  (e.stops.empty() ? std::string(",")
                                   : std::to_string(f.stationsReached) + "," + std::to_string(f.windowsMissed)) +
                  oracle;

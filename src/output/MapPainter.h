@@ -70,6 +70,12 @@ class MapPainter
 {
 public:
     MapPainter(const MapRenderer &map, cairo_t *context);
+    /// A painter of a page @p height pixels tall (MapRenderer::size() measures the legend with it).
+    MapPainter(const MapRenderer &map, cairo_t *context, int height);
+
+    /// The legend drawn on the context as if the field's colour bar and its land and no-data entries were shown: the
+    /// y of its bottom (pixels), at least what paint() draws.
+    double legendBottom();
 
     /// The whole map: white page, the plot area (field, grid, forbidden regions, paths, start and goal) clipped to
     /// the plot, then frame and axes, then the legend.
@@ -110,8 +116,17 @@ private:
     void drawCurrentArrows() const;
     /// A forbidden region: filled, hatched when asked, outlined, labelled at its centroid.
     void drawRegion(const MapPolygon &poly) const;
-    /// A path: white casing (solid lines), the line, waypoint markers and time ticks when asked.
-    void drawPath(const MapPath &p) const;
+    /// A path: white casing (solid lines), the line, waypoint markers and time ticks when @p ticks.
+    void drawPath(const MapPath &p, bool ticks) const;
+    /// The grid fill (MapGridFill): a cell about each node in fillColour() of its value.
+    void drawGridFill() const;
+    /// Measured currents (MapVectors) as arrows from their tails at arrowScale().
+    void drawVectors() const;
+    /// The pixels of a current arrow's cell (the arrows are at most 0.9 of it).
+    double arrowCellPixels() const;
+    /// Pixels per unit of speed of every arrow on the map: the current arrows' (0.9 cell at the largest speed of the
+    /// field), or where the map draws none, the largest measured current's (0.9 cell); 0 when neither has a speed.
+    double arrowScale() const;
     /// Time ticks across a path every MapOptions::tickInterval (or a round tenth of its duration), labelled.
     void drawTimeTicks(const MapPath &p) const;
     /// The start disc and the goal star, labelled.
@@ -134,8 +149,18 @@ private:
     void drawStartGoalEntries();
     /// The field's land and no-data areas (when shaded) and the forbidden regions (one entry per label).
     void drawAreaEntries();
-    /// The current arrow and the field's name, and the colour bar.
+    /// The current arrow (a key: a round speed at the arrows' scale) and the field's name, and the colour bar.
     void drawFieldEntries();
+    /// Measured currents: their key arrow (a round speed at the arrows' scale) and label.
+    void drawVectorEntries();
+    /// The grid fill's colour bar from 0 to 1 and its label.
+    void drawFillBar();
+    /// An arrow of a round speed (1, 2, 5 x 10^k at most @p top) at arrowScale() in the current source, from (lx_ + 2,
+    /// ly_); returns the speed's text ("0.5 m/s (0.97 kn)").
+    std::string keyArrow(double top);
+    /// @p label from (x, ly_ + 4) wrapped to the page's right edge (a margin of 6 px): ly_ moves down by the extra
+    /// lines' @p lineHeight.
+    void legendLabel(double x, const std::string &label, double size, double lineHeight);
     void drawColourBar();
     /// The note on time ticks and the free text notes.
     void drawNotes();

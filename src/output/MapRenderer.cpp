@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <cairo.h>
 
@@ -17,8 +18,10 @@ namespace ompl_glider
 {
 namespace map_detail
 {
-MapPainter::MapPainter(const MapRenderer &m, cairo_t *context)
-    : map(m), region(m.region_), options(m.options_), cr(context), W(m.size().first), H(m.size().second),
+MapPainter::MapPainter(const MapRenderer &m, cairo_t *context) : MapPainter(m, context, m.size().second) {}
+
+MapPainter::MapPainter(const MapRenderer &m, cairo_t *context, int height)
+    : map(m), region(m.region_), options(m.options_), cr(context), W(m.options_.width), H(height),
       plotW(W - kLeft - kRight), scale(plotW / (region.xMax - region.xMin)), plotH(scale * (region.yMax - region.yMin)),
       xs(niceStep((region.xMax - region.xMin) / 8)), ys(niceStep((region.yMax - region.yMin) / 8)),
       geographic(options.toGeographic && options.toLocal), tu(options.timeUnit.empty() ? "" : " " + options.timeUnit)
@@ -35,15 +38,20 @@ void MapPainter::paint()
     cairo_rectangle(cr, kLeft, kTop, plotW, plotH);
     cairo_clip(cr);
     if (map.field_)
-    {
         drawSpeedShading();
+    drawGridFill();
+    if (map.field_)
         drawCurrentArrows();
-    }
     drawGrid();
     for (const MapPolygon &poly : map.polygons_)
         drawRegion(poly);
+    // one tick series: the last path that asks for ticks gets them
+    const MapPath *ticked = nullptr;
     for (const MapPath &p : map.paths_)
-        drawPath(p);
+        ticked = p.timeTicks && p.waypoints.size() >= 2 && std::isfinite(p.waypoints.back().t) ? &p : ticked;
+    for (const MapPath &p : map.paths_)
+        drawPath(p, &p == ticked);
+    drawVectors();
     drawStations();
     if (map.hasStartGoal_)
         drawStartGoal();
@@ -102,6 +110,76 @@ void MapPainter::drawSpeedShading()
         }
 }
 
+double MapPainter::arrowCellPixels() const
+{
+    const int cols = options.arrowColumns;
+    const double dxCell = (region.xMax - region.xMin) / cols;
+    const int rows = std::max(2, static_cast<int>(std::round((region.yMax - region.yMin) / dxCell)));
+    const double dyCell = (region.yMax - region.yMin) / rows;
+    return std::min(dxCell, dyCell) * scale;
+}
+
+double MapPainter::arrowScale() const
+{
+    if (map.field_ && options.arrows && vmax_ > 0.0)
+        return 0.9 * arrowCellPixels() / vmax_;
+    double fastest = 0.0;
+    for (const MapVectors &v : map.vectors_)
+        for (const Velocity &c : v.velocity)
+            fastest = std::max(fastest, std::hypot(c.u, c.v));
+    return fastest > 0.0 && std::isfinite(fastest) ? 0.9 * arrowCellPixels() / fastest : 0.0;
+}
+
+void MapPainter::drawVectors() const
+{
+    const double k = arrowScale();
+    for (const MapVectors &v : map.vectors_)
+    {
+        setColour(cr, v.colour);
+        cairo_set_line_width(cr, 1.6);
+        for (std::size_t i = 0; i < v.at.size(); ++i)
+        {
+            const double len = k * std::hypot(v.velocity[i].u, v.velocity[i].v);
+            if (!(len > 0.0) || !std::isfinite(len))
+                continue;
+            arrow(cr, X(v.at[i].x), Y(v.at[i].y), k * v.velocity[i].u, -k * v.velocity[i].v,
+                  std::min(7.0, 0.35 * len + 2.0));
+        }
+    }
+}
+
+void MapPainter::drawGridFill() const
+{
+    if (!map.fill_)
+        return;
+    // one pixel a node (its centre at the node), drawn scaled with bilinear filtering: seamless, and a node's colour
+    // is fillColour() of its value
+    const MapGridFill &f = *map.fill_;
+    cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, f.nx, f.ny);
+    unsigned char *data = cairo_image_surface_get_data(img);
+    const int stride = cairo_image_surface_get_stride(img);
+    for (int j = 0; j < f.ny; ++j)
+        for (int i = 0; i < f.nx; ++i)
+        {
+            const double p = f.values[static_cast<std::size_t>(j) * f.nx + i];
+            const Rgba c = p > 0.0 ? fillColour(p) : Rgba{0.0, 0.0, 0.0, 0.0};
+            const auto byte = [](double v) { return static_cast<std::uint32_t>(std::lround(255.0 * v)); };
+            // premultiplied ARGB, row 0 at the top (the grid's last row of nodes)
+            *reinterpret_cast<std::uint32_t *>(data + (f.ny - 1 - j) * stride + 4 * i) =
+                byte(c.a) << 24 | byte(c.r * c.a) << 16 | byte(c.g * c.a) << 8 | byte(c.b * c.a);
+        }
+    cairo_surface_mark_dirty(img);
+    cairo_save(cr);
+    cairo_translate(cr, X(f.x0 - 0.5 * f.h), Y(f.y0 + (f.ny - 0.5) * f.h));
+    cairo_scale(cr, f.h * scale, f.h * scale);
+    cairo_set_source_surface(cr, img, 0, 0);
+    cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_BILINEAR);
+    cairo_rectangle(cr, 0, 0, f.nx, f.ny);
+    cairo_fill(cr);
+    cairo_restore(cr);
+    cairo_surface_destroy(img);
+}
+
 void MapPainter::drawCurrentArrows() const
 {
     const CurrentField &field = *map.field_;
@@ -109,7 +187,7 @@ void MapPainter::drawCurrentArrows() const
     const double dxCell = (region.xMax - region.xMin) / cols;
     const int rows = cols == 0 ? 0 : std::max(2, static_cast<int>(std::round((region.yMax - region.yMin) / dxCell)));
     const double dyCell = (region.yMax - region.yMin) / rows;
-    const double cellPx = std::min(dxCell, dyCell) * scale;
+    const double k = arrowScale(); // pixels per unit of speed
     cairo_set_source_rgba(cr, 0.10, 0.20, 0.40, 0.75);
     cairo_set_line_width(cr, 1.1);
     for (int j = 0; j < rows; ++j)
@@ -122,7 +200,7 @@ void MapPainter::drawCurrentArrows() const
             const double s = std::hypot(c.u, c.v);
             if (!(s > 0.0) || !std::isfinite(s) || !(vmax_ > 0))
                 continue;
-            const double len = 0.9 * cellPx * s / vmax_;
+            const double len = k * s;
             if (len < 2.0)
                 continue;
             const double cx = X(x) - 0.5 * len * c.u / s, cy = Y(y) + 0.5 * len * c.v / s;
@@ -172,7 +250,7 @@ void MapPainter::drawRegion(const MapPolygon &poly) const
     }
 }
 
-void MapPainter::drawPath(const MapPath &p) const
+void MapPainter::drawPath(const MapPath &p, bool ticks) const
 {
     cairo_new_path(cr);
     tracePolyline(p.waypoints);
@@ -193,7 +271,7 @@ void MapPainter::drawPath(const MapPath &p) const
     if (p.waypointMarkers)
         for (const TimedPoint &w : p.waypoints)
             waypointMarker(cr, X(w.x), Y(w.y), p.width + 1.2, p.colour);
-    if (p.timeTicks && p.waypoints.size() >= 2 && std::isfinite(p.waypoints.back().t))
+    if (ticks)
         drawTimeTicks(p);
 }
 
@@ -223,8 +301,8 @@ void MapPainter::drawTimeTicks(const MapPath &p) const
         cairo_stroke(cr);
         // label on the side that points up/left, away from the track
         const double side = ny > 0 ? -1.0 : 1.0;
-        haloText(cr, x + side * 16 * nx, y + side * 16 * ny + 4, "t=" + fmt(T) + tu, {0.1, 0.1, 0.1, 1}, 11, false,
-                 0.5);
+        const std::string label = options.tickUnit.empty() ? "t=" + fmt(T) + tu : "+" + fmt(T) + " " + options.tickUnit;
+        haloText(cr, x + side * 16 * nx, y + side * 16 * ny + 4, label, {0.1, 0.1, 0.1, 1}, 11, false, 0.5);
     }
 }
 
@@ -346,13 +424,43 @@ void MapRenderer::addNote(std::string note)
     notes_.push_back(std::move(note));
 }
 
+void MapRenderer::addVectors(MapVectors vectors)
+{
+    if (vectors.at.size() != vectors.velocity.size())
+        throw Error("MapRenderer::addVectors: " + std::to_string(vectors.at.size()) + " tails and " +
+                    std::to_string(vectors.velocity.size()) + " velocities");
+    if (!vectors.at.empty())
+        vectors_.push_back(std::move(vectors));
+}
+
+void MapRenderer::setGridFill(MapGridFill fill)
+{
+    if (fill.nx < 1 || fill.ny < 1 || fill.values.size() != static_cast<std::size_t>(fill.nx) * fill.ny ||
+        !(fill.h > 0.0) || !std::isfinite(fill.h))
+        throw Error("MapRenderer::setGridFill: expected nx * ny values on a spacing > 0");
+    fill_ = std::move(fill);
+}
+
+Rgba fillColour(double p)
+{
+    p = std::clamp(p, 0.0, 1.0);
+    // light yellow, orange, dark red; the more likely, the less see-through
+    return {1.0 - 0.35 * p, 0.92 - 0.80 * p, 0.45 - 0.40 * p, 0.25 + 0.45 * p};
+}
+
 std::pair<int, int> MapRenderer::size() const
 {
     const double plotW = options_.width - kLeft - kRight;
     const double scale = plotW / (region_.xMax - region_.xMin);
     const double plotH = scale * (region_.yMax - region_.yMin);
     const int h = static_cast<int>(std::ceil(std::max(kTop + plotH + kBottom, 560.0)));
-    return {options_.width, h};
+    // the page is as tall as the legend needs (measured on a recording surface), so that nothing of it is cut
+    cairo_surface_t *probe = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, nullptr);
+    cairo_t *cr = cairo_create(probe);
+    const double legend = map_detail::MapPainter(*this, cr, h).legendBottom();
+    cairo_destroy(cr);
+    cairo_surface_destroy(probe);
+    return {options_.width, std::max(h, static_cast<int>(std::ceil(legend + 12.0)))};
 }
 
 MapPath MapRenderer::rawPathStyle(std::string label, std::vector<TimedPoint> waypoints)

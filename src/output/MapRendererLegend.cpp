@@ -3,6 +3,9 @@
 /// the current arrow with the field's name, the colour bar, and the notes (MapRenderer's drawing, see
 /// src/output/MapPainter.h).
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <set>
 #include <string>
 #include <tuple>
@@ -22,12 +25,23 @@ void MapPainter::drawLegend()
     plainText(cr, lx_, ly_ + 6, "Legend", 14, true);
     ly_ += 26;
     drawPathEntries();
+    drawVectorEntries();
     if (map.hasStartGoal_)
         drawStartGoalEntries();
     if (map.field_)
         drawFieldEntries();
+    if (map.fill_)
+        drawFillBar();
     drawAreaEntries();
     drawNotes();
+}
+
+double MapPainter::legendBottom()
+{
+    vmax_ = 1.0; // (the colour bar is drawn when the field has a speed: counted whether or not it has)
+    landShown_ = noDataShown_ = map.field_ != nullptr;
+    drawLegend();
+    return ly_;
 }
 
 void MapPainter::drawPathEntries()
@@ -45,9 +59,67 @@ void MapPainter::drawPathEntries()
         cairo_set_dash(cr, nullptr, 0, 0);
         if (p.waypointMarkers)
             waypointMarker(cr, lx_ + 15, ly_, p.width + 1.2, p.colour);
-        plainText(cr, lx_ + 38, ly_ + 4, p.label, 11.5);
+        legendLabel(lx_ + 38, p.label, 11.5, 15);
         ly_ += 22;
     }
+}
+
+void MapPainter::legendLabel(double x, const std::string &label, double size, double lineHeight)
+{
+    ly_ += lineHeight * (wrappedText(cr, x, ly_ + 4, label, size, W - x - 6, lineHeight) - 1);
+}
+
+std::string MapPainter::keyArrow(double top)
+{
+    // the largest round speed (1, 2, 5 x 10^k) not above the top
+    const double p = top > 0.0 && std::isfinite(top) ? std::pow(10.0, std::floor(std::log10(top))) : 0.0;
+    const double m = p > 0.0 ? top / p * (1.0 + 1e-9) : 0.0;
+    const double speed = p * (m >= 5.0 ? 5.0 : m >= 2.0 ? 2.0 : 1.0);
+    const double len = arrowScale() * speed;
+    if (len > 0.0 && std::isfinite(len))
+        arrow(cr, lx_ + 2, ly_, len, 0, std::min(6.0, 0.35 * len + 2.0));
+    const bool ms = options.speedInMetresPerSecond;
+    char text[64];
+    std::snprintf(text, sizeof text, ms ? "%g m/s (%.2f kn)" : "%g", speed, speed * 3600.0 / 1852.0);
+    return text;
+}
+
+void MapPainter::drawVectorEntries()
+{
+    double fastest = 0.0;
+    for (const MapVectors &v : map.vectors_)
+        for (const Velocity &c : v.velocity)
+            fastest = std::max(fastest, std::hypot(c.u, c.v));
+    for (const MapVectors &v : map.vectors_)
+    {
+        setColour(cr, v.colour);
+        cairo_set_line_width(cr, 1.6);
+        const std::string key = keyArrow(fastest);
+        legendLabel(lx_ + 38, v.label + ": arrow " + key, 11.5, 15);
+        ly_ += 22;
+    }
+}
+
+void MapPainter::drawFillBar()
+{
+    const MapGridFill &f = *map.fill_;
+    legendLabel(lx_, f.label, 12, 16);
+    ly_ += 12;
+    const double bw = 150, bh = 12;
+    for (int k = 0; k < 60; ++k)
+    {
+        setColour(cr, fillColour((k + 0.5) / 60.0));
+        cairo_rectangle(cr, lx_ + k * bw / 60, ly_, bw / 60 + 0.5, bh);
+        cairo_fill(cr);
+    }
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    cairo_set_line_width(cr, 0.8);
+    cairo_rectangle(cr, lx_, ly_, bw, bh);
+    cairo_stroke(cr);
+    plainText(cr, lx_, ly_ + bh + 13, "0", 11, false, 0.5);
+    plainText(cr, lx_ + bw / 2, ly_ + bh + 13, "0.5", 11, false, 0.5);
+    plainText(cr, lx_ + bw, ly_ + bh + 13, "1", 11, false, 0.5);
+    ly_ += bh + 30;
 }
 
 void MapPainter::drawStartGoalEntries()
@@ -56,12 +128,12 @@ void MapPainter::drawStartGoalEntries()
     cairo_arc(cr, lx_ + 15, ly_, 6, 0, 2 * kPi);
     cairo_set_source_rgb(cr, 0.05, 0.60, 0.15);
     cairo_fill(cr);
-    plainText(cr, lx_ + 38, ly_ + 4, "start " + position(map.sx_, map.sy_), 12);
+    legendLabel(lx_ + 38, "start " + position(map.sx_, map.sy_), 12, 16);
     ly_ += 22;
     traceStar(cr, lx_ + 15, ly_, 8.0, 3.5);
     cairo_set_source_rgb(cr, 0.55, 0.0, 0.55);
     cairo_fill(cr);
-    plainText(cr, lx_ + 38, ly_ + 4, "goal " + position(map.gx_, map.gy_), 12);
+    legendLabel(lx_ + 38, "goal " + position(map.gx_, map.gy_), 12, 16);
     ly_ += 22;
 }
 
@@ -99,7 +171,7 @@ void MapPainter::drawAreaEntries()
     }
     if (more > 0)
     {
-        plainText(cr, lx_ + 38, ly_ + 4, "and " + std::to_string(more) + " more regions", 12);
+        legendLabel(lx_ + 38, "and " + std::to_string(more) + " more regions", 12, 16);
         ly_ += 22;
     }
 }
@@ -110,11 +182,12 @@ void MapPainter::drawFieldEntries()
     {
         cairo_set_source_rgba(cr, 0.10, 0.20, 0.40, 0.9);
         cairo_set_line_width(cr, 1.1);
-        arrow(cr, lx_ + 2, ly_, 26, 0, 6);
-        plainText(cr, lx_ + 38, ly_ + 4,
-                  options.fieldWord + " at " +
-                      (options.timeText ? options.timeText(map.fieldTime_) : "t=" + fmt(map.fieldTime_) + tu),
-                  12);
+        const std::string key = vmax_ > 0.0 ? keyArrow(vmax_) : std::string();
+        legendLabel(lx_ + 38,
+                    options.fieldWord + " at " +
+                        (options.timeText ? options.timeText(map.fieldTime_) : "t=" + fmt(map.fieldTime_) + tu) +
+                        (key.empty() ? "" : ", arrow " + key),
+                    12, 16);
         ly_ += 20;
         ly_ += 16 * wrappedText(cr, lx_ + 38, ly_ + 4, "(" + map.field_->name() + ")", 11, W - lx_ - 46, 16,
                                 {0.3, 0.3, 0.3, 1}) +
@@ -156,8 +229,10 @@ void MapPainter::drawNotes()
         tickNote = tickNote || p.timeTicks;
     if (tickNote)
     {
-        plainText(cr, lx_, ly_ + 4, "ticks: time along the path", 11, false, 0.0, {0.3, 0.3, 0.3, 1});
-        ly_ += 20;
+        ly_ += 16 * wrappedText(cr, lx_, ly_ + 4,
+                                options.tickNote.empty() ? std::string("ticks: time along the path") : options.tickNote,
+                                11, W - lx_ - 6, 16, {0.3, 0.3, 0.3, 1}) +
+               4;
     }
     ly_ += 6;
     for (const std::string &n : map.notes_)
@@ -172,7 +247,7 @@ void MapPainter::legendSwatch(const Rgba &fill, const Rgba &stroke, double strok
     setColour(cr, stroke);
     cairo_set_line_width(cr, strokeWidth);
     cairo_stroke(cr);
-    plainText(cr, lx_ + 38, ly_ + 4, label, 12);
+    legendLabel(lx_ + 38, label, 12, 16);
     ly_ += 22;
 }
 

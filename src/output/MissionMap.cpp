@@ -46,18 +46,23 @@ MapPolygon mapPolygon(const MissionPolygon &p)
     return mp;
 }
 
-/// Time ticks a pilot reads: hours or days after departure when the mission has physical time units; field time
-/// otherwise. Returns the unit's name ("" for field time).
-std::string tickUnit(const MissionResult &r, std::vector<std::vector<TimedPoint> *> paths)
+/// The time ticks' unit a pilot reads when the mission has physical time units: hours, or days for a trip of more
+/// than 4 days (seconds); 0: field time.
+double tickSeconds(const MissionResult &r)
 {
     if (!r.spec.physicalUnits().time)
-        return "";
-    const double tripSeconds = r.plan.travelTime * r.spec.timeUnitSeconds;
-    const double unit = tripSeconds > 4 * 86400.0 ? 86400.0 : 3600.0;
-    for (auto *v : paths)
-        for (auto &w : *v)
-            w.t = (w.t - r.plan.departure) * r.spec.timeUnitSeconds / unit;
-    return unit == 86400.0 ? "days" : "hours";
+        return 0.0;
+    return r.plan.travelTime * r.spec.timeUnitSeconds > 4 * 86400.0 ? 86400.0 : 3600.0;
+}
+
+/// The paths' times as the ticks read them: tickSeconds() after the departure (field time without a unit).
+void toTickTimes(const MissionResult &r, std::vector<std::vector<TimedPoint> *> paths)
+{
+    const double unit = tickSeconds(r);
+    if (unit > 0.0)
+        for (auto *v : paths)
+            for (auto &w : *v)
+                w.t = (w.t - r.plan.departure) * r.spec.timeUnitSeconds / unit;
 }
 
 /// A duration for the pilot: "3.2 days (76.8 h)" or "5.4 h" with physical time units (short: "3.20 d"), else the
@@ -90,10 +95,8 @@ std::string length(const MissionResult &r, double d)
 void addPaths(MapRenderer &map, const MissionResult &r)
 {
     const PlannedPath &p = r.plan;
-    std::vector<TimedPoint> raw = p.raw, smoothed = p.smoothed, fin = p.path;
-    const std::string unit = tickUnit(r, {&raw, &smoothed, &fin});
-    if (!unit.empty())
-        map.addNote("ticks: " + unit + " after departure");
+    std::vector<TimedPoint> raw = p.raw, smoothed = p.smoothed, fin = p.path, track = p.track;
+    toTickTimes(r, {&raw, &smoothed, &fin, &track});
     const bool smoothedDiffers = p.smoothed.size() != p.raw.size() || p.smoothedTravelTime < p.rawTravelTime;
     const bool finalDiffers = p.path.size() != p.smoothed.size() || p.travelTime < p.smoothedTravelTime;
     MapPath rawPath = MapRenderer::rawPathStyle(
@@ -114,7 +117,7 @@ void addPaths(MapRenderer &map, const MissionResult &r)
     if (p.track.size() > 1)
     {
         // a mission whose legs mix straight legs and held headings: the flown track over the waypoints
-        MapPath t = MapRenderer::refinedPathStyle("flown track (legs of held headings drift)", p.track);
+        MapPath t = MapRenderer::refinedPathStyle("flown track (legs of held headings drift)", track);
         t.waypointMarkers = false;
         t.width = 1.5;
         map.addPath(t);
@@ -125,9 +128,7 @@ void addHeadingRoute(MapRenderer &map, const MissionResult &r)
 {
     const PlannedPath &p = r.plan;
     std::vector<TimedPoint> track = p.track, ends = p.path;
-    const std::string unit = tickUnit(r, {&track, &ends});
-    if (!unit.empty())
-        map.addNote("ticks: " + unit + " after departure");
+    toTickTimes(r, {&track, &ends});
     const std::string label = p.planner + ": " + std::to_string(p.headings->segments.size()) +
                               " held headings, T=" + duration(r, p.travelTime, true);
     MapPath t = MapRenderer::refinedPathStyle(label, track);
@@ -189,58 +190,58 @@ private:
 
 namespace
 {
-/// The glider's history with observations: its past fixes (a grey line with circles) and the DAC it measured (purple
-/// arrows from where each was measured; the fastest a twelfth of the region's height).
+/// The glider's history with observations: its past surfacing fixes (a grey line with circles; the positions a source
+/// gives only for its DAC, the middle of a dive, are not fixes) and the DAC it measured (purple arrows from where each
+/// was measured, at the current arrows' scale, MapVectors).
 void addGliderHistory(MapRenderer &map, const MissionProblem &problem)
 {
 #if OMPL_GLIDER_WITH_NETCDF
     const auto &o = problem.observations();
     if (!o || !problem.isGeographic())
         return;
-    MapPath fixes;
-    fixes.label = "glider: " + std::to_string(o->fixes.size()) + " past fixes";
+    const MissionSpec &m = problem.getSpec();
+    // a DAC's position is no surfacing fix (IOOS files and ERDDAP put it at the middle of the dive)
+    const auto isDacPosition = [&](const GliderFix &f) {
+        return std::any_of(o->dac.begin(), o->dac.end(), [&](const DacRecord &d) {
+            return d.time == f.time && d.at.lon == f.at.lon && d.at.lat == f.at.lat;
+        });
+    };
+    std::vector<GliderFix> fixes;
     for (const GliderFix &f : o->fixes)
+        if (!isDacPosition(f))
+            fixes.push_back(f);
+    // a source that gives positions only with its DAC (a CSV of DAC): those are where the glider was
+    const bool dacOnly = fixes.empty();
+    if (dacOnly)
+        fixes = o->fixes;
+    MapPath track;
+    track.label = "glider: " + std::to_string(fixes.size()) +
+                  (dacOnly             ? " past positions (of its DAC)"
+                   : fixes.size() == 1 ? " past fix"
+                                       : " past fixes");
+    for (const GliderFix &f : fixes)
     {
         const Point2 q = problem.toLocal(f.at);
-        fixes.waypoints.push_back({q.x, q.y, 0.0});
+        track.waypoints.push_back({q.x, q.y, 0.0});
     }
-    fixes.colour = {0.22, 0.28, 0.31, 0.95};
-    fixes.width = 1.2;
-    if (fixes.waypoints.size() >= 2)
-        map.addPath(fixes);
-    double fastest = 0.0;
-    for (const DacRecord &d : o->dac)
-        fastest = std::max(fastest, std::hypot(d.u, d.v));
-    const Region &b = problem.getBox();
-    const double scale = fastest > 0.0 ? (b.yMax - b.yMin) / 12.0 / fastest : 0.0; // length units per m/s
-    bool labelled = false;
+    track.colour = {0.22, 0.28, 0.31, 0.95};
+    track.width = 1.2;
+    map.addPath(track);
+    // the DAC in the field's velocity unit (m/s for a forecast), east and north turned into the frame there
+    const double seconds = m.current.isForecast() ? 1.0 : m.hasTimeUnit() ? m.timeUnitSeconds : 0.0;
+    const double perMs = seconds > 0.0 && m.physicalUnits().length ? seconds / m.metresPerUnit() : 1.0;
+    MapVectors dac;
+    dac.label = "glider: " + std::to_string(o->dac.size()) + " measured DAC";
     for (const DacRecord &d : o->dac)
     {
         const Point2 q = problem.toLocal(d.at);
-        // east and north turned into the frame there
         const Point2 e = problem.toLocal({d.at.lon + 0.01, d.at.lat}), n = problem.toLocal({d.at.lon, d.at.lat + 0.01});
         const double el = std::hypot(e.x - q.x, e.y - q.y), nl = std::hypot(n.x - q.x, n.y - q.y);
-        const Point2 dir{d.u * (e.x - q.x) / el + d.v * (n.x - q.x) / nl,
-                         d.u * (e.y - q.y) / el + d.v * (n.y - q.y) / nl};
-        const Point2 tip{q.x + scale * dir.x, q.y + scale * dir.y};
-        const double len = std::hypot(tip.x - q.x, tip.y - q.y);
-        if (!(len > 0.0))
-            continue;
-        const double ux = (tip.x - q.x) / len, uy = (tip.y - q.y) / len, h = 0.3 * len;
-        MapPath arrow;
-        if (!labelled)
-            arrow.label = "glider: " + std::to_string(o->dac.size()) + " measured DAC";
-        labelled = true;
-        arrow.waypoints = {{q.x, q.y, 0.0},
-                           {tip.x, tip.y, 0.0},
-                           {tip.x - h * (ux * 0.87 - uy * 0.5), tip.y - h * (uy * 0.87 + ux * 0.5), 0.0},
-                           {tip.x, tip.y, 0.0},
-                           {tip.x - h * (ux * 0.87 + uy * 0.5), tip.y - h * (uy * 0.87 - ux * 0.5), 0.0}};
-        arrow.colour = {0.42, 0.11, 0.60, 0.95};
-        arrow.width = 1.6;
-        arrow.waypointMarkers = false;
-        map.addPath(arrow);
+        dac.at.push_back(q);
+        dac.velocity.push_back({perMs * (d.u * (e.x - q.x) / el + d.v * (n.x - q.x) / nl),
+                                perMs * (d.u * (e.y - q.y) / el + d.v * (n.y - q.y) / nl)});
     }
+    map.addVectors(dac);
 #else
     (void)map;
     (void)problem;
@@ -281,8 +282,9 @@ MapRenderer modelDifferenceMap(const MissionResult &r, const MissionProblem &pro
 
 namespace
 {
-/// The probability of reach at its last frame (the horizon) and, lighter and thinner, half way there: the contour of
-/// each level, one legend entry per level and frame, and a note with the goal's probability and median arrival
+/// The probability of reach at its last frame (the horizon) as a colour fill of p (MapGridFill) and, with it and
+/// lighter and thinner half way there, the contour of each level, one legend entry per level and frame, and a note with
+/// the goal's probability and median arrival
 /// ([SubramaniStochastic]).
 void addReachContours(MapRenderer &map, const MissionResult &r)
 {
@@ -290,6 +292,19 @@ void addReachContours(MapRenderer &map, const MissionResult &r)
         return;
     const ReachProbability &p = *r.reachability;
     const double last = p.times.back();
+    if (!p.probability.empty() && p.probability.back().size() == static_cast<std::size_t>(p.nx) * p.ny && p.h > 0.0)
+    {
+        // p at the horizon as a colour fill under the contours
+        MapGridFill fill;
+        fill.label = "probability of reach by +" + duration(r, last - p.departure, true);
+        fill.x0 = p.x0;
+        fill.y0 = p.y0;
+        fill.h = p.h;
+        fill.nx = p.nx;
+        fill.ny = p.ny;
+        fill.values = p.probability.back();
+        map.setGridFill(std::move(fill));
+    }
     std::vector<double> shown{last};
     if (p.times.size() >= 3)
         shown.insert(shown.begin(), p.times[(p.times.size() - 1) / 2]);
@@ -336,6 +351,11 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
     const std::string depIso = problem.isoTime(r.plan.departure);
     mo.title = m.name + " - " + r.plan.planner + ", V = " + fmt(r.plan.speed) + (netcdf ? " m/s" : "") +
                (depIso.empty() ? "" : ", departing " + depIso) + (r.plan.solved ? "" : " (no path)");
+    if (const double unit = tickSeconds(r); unit > 0.0)
+    {
+        mo.tickUnit = unit == 86400.0 ? "d" : "h";
+        mo.tickNote = std::string("ticks: ") + (unit == 86400.0 ? "days" : "hours") + " after the departure";
+    }
     MapRenderer map(problem.getBox(), mo);
     const double tMap = std::isnan(m.outputs.mapTime) ? r.plan.departure : m.outputs.mapTime;
     map.setField(problem.getField(), tMap, m.vehicle.depth);

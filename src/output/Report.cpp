@@ -1,7 +1,10 @@
 #include "ompl_glider/output/Report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 #include "ompl_glider/Config.h"
 #include "ompl_glider/io/FileList.h"
@@ -156,23 +159,97 @@ void printRouteModel(std::ostream &out, const MissionResult &r)
         out << "Re-flight note:     " << p.reflightNote << "\n";
 }
 
+/// The runs that were never flown (no plan on the forecast): "2 of 3 runs not flown: <reason> (runs 1, 2)", one
+/// reason at a time.
+void printRunsNotFlown(std::ostream &out, const ExecutionResult &e)
+{
+    std::vector<std::pair<std::string, std::string>> reasons; // reason, the runs
+    std::size_t notFlown = 0;
+    for (const ExecutionRun &run : e.runs)
+    {
+        if (run.planned)
+            continue;
+        ++notFlown;
+        const std::string why = run.reason.empty() ? "no plan on the forecast" : run.reason;
+        auto it = std::find_if(reasons.begin(), reasons.end(), [&](const auto &x) { return x.first == why; });
+        const std::string name = run.index == 0 ? "the mission's own" : std::to_string(run.index);
+        if (it == reasons.end())
+            reasons.push_back({why, name});
+        else
+            it->second += ", " + name;
+    }
+    if (notFlown == 0)
+        return;
+    out << format("  %zu of %zu runs not flown (no plan on the forecast):\n", notFlown, e.runs.size());
+    for (const auto &[why, runs] : reasons)
+        out << "    " << why << " (run" << (runs.find(',') == std::string::npos ? " " : "s ") << runs << ")\n";
+}
+
+/// Why the runs flown did not count as reached: the mission's own run in full, the batch's counted by kind.
+void printNotReached(std::ostream &out, const ExecutionResult &e)
+{
+    for (std::size_t k = 0; k < e.strategies.size(); ++k)
+    {
+        const std::string name = controlStrategyName(e.strategies[k]);
+        const ExecutionRun &own = e.runs.front();
+        if (own.planned && !own.flown[k].reached)
+            out << "  not reached       " << name << (e.runs.size() > 1 ? " (the mission's own run)" : "") << ": "
+                << own.flown[k].notReachedWhy << "\n";
+        std::size_t grounded = 0, station = 0, late = 0, time = 0;
+        for (std::size_t i = 1; i < e.runs.size(); ++i)
+        {
+            const ExecutionRun &run = e.runs[i];
+            if (!run.planned || run.flown[k].reached)
+                continue;
+            const FlownTrack &f = run.flown[k];
+            (f.grounded                           ? grounded
+             : f.stationsReached < e.stops.size() ? station
+             : f.windowsMissed > 0                ? late
+                                                  : time)++;
+        }
+        std::string kinds;
+        for (const auto &[n, what] :
+             {std::pair<std::size_t, const char *>{time, "not within the radius by the run's end"},
+              {station, "a station not reached"},
+              {late, "a station reached after its window"},
+              {grounded, "grounded"}})
+            if (n > 0)
+                kinds += format("%s%zu %s", kinds.empty() ? "" : ", ", n, what);
+        if (!kinds.empty())
+            out << "  not reached       " << name << " (the batch): " << kinds << "\n";
+    }
+}
+
 /// The execution's strategies over its runs: reached, grounded, the median distance to the goal at the planned
-/// arrival and, where the truth is not the forecast, the arrival over the oracle's (ExecutionResult::oracle).
+/// arrival and at the end of the run and, where the truth is not the forecast, the arrival over the oracle's
+/// (ExecutionResult::oracle); then why runs were not reached or not flown.
 void printExecutionTable(std::ostream &out, const ExecutionResult &e, const MissionSpec &m)
 {
-    out << format("  %-22s %9s %8s %16s", "strategy", "reached", "grounded", "distance median");
-    out << (e.oracle ? "  over oracle median / q3 (runs)\n" : "\n");
-    for (const StrategySpread &s : e.spread)
+    out << format("  %-22s %9s %8s %16s %16s", "strategy", "reached", "grounded", "distance to goal", "");
+    out << (e.oracle ? "  over oracle\n" : "\n");
+    out << format("  %-22s %9s %8s %16s %16s", "", "", "", "at planned arr.", "at the end");
+    out << (e.oracle ? "  median / q3 (runs)\n" : "\n");
+    for (std::size_t k = 0; k < e.spread.size(); ++k)
     {
+        const StrategySpread &s = e.spread[k];
+        std::vector<double> ends; // the distance to the goal where each flight ended
+        for (const ExecutionRun &run : e.runs)
+            if (run.planned && !run.flown[k].track.empty())
+                ends.push_back(
+                    std::hypot(run.flown[k].track.back().x - run.goal.x, run.flown[k].track.back().y - run.goal.y));
+        const MeasureSpread end = measureSpread(ends);
         const std::string reached = format("%zu / %zu", s.reached, s.runs);
         const std::string distance = s.finalDistance.count ? lengthText(m, s.finalDistance.median) : "-";
-        out << format("  %-22s %9s %8zu %16s", s.strategy.c_str(), reached.c_str(), s.grounded, distance.c_str());
+        out << format("  %-22s %9s %8zu %16s %16s", s.strategy.c_str(), reached.c_str(), s.grounded, distance.c_str(),
+                      end.count ? lengthText(m, end.median).c_str() : "-");
         if (e.oracle)
             out << (s.overOracle.count
                         ? format("  %.3f / %.3f (%zu)", s.overOracle.median, s.overOracle.q3, s.overOracle.count)
                         : std::string("  - (0)"));
         out << "\n";
     }
+    if (e.runs.size() > 1)
+        out << "  (medians over the runs flown; distances to each run's goal)\n";
     if (e.oracle)
     {
         std::size_t reached = 0;
@@ -181,6 +258,8 @@ void printExecutionTable(std::ostream &out, const ExecutionResult &e, const Miss
         out << format("  oracle (planned and flown on the truth) reached %zu / %zu runs (%.1f s)\n", reached,
                       e.runs.size(), e.oracleSeconds);
     }
+    printNotReached(out, e);
+    printRunsNotFlown(out, e);
 }
 
 /// The global check of the route class: the candidates and which one won, by how much.
@@ -286,6 +365,9 @@ void printReport(std::ostream &out, const MissionResult &r)
         out << "Depth limit:        " << r.safetyNote << "\n";
     for (const std::string &note : r.forecastNotes)
         out << "Forecast:           " << note << "\n";
+    const std::vector<std::string> correction = correctionLines(r);
+    for (std::size_t i = 0; i < correction.size(); ++i)
+        out << (i == 0 ? "Correction:         " : "                    ") << correction[i] << "\n";
     if (!r.coastlineNote.empty())
         out << "Coastline:          " << r.coastlineNote << "\n";
     if (p.solved)

@@ -163,6 +163,7 @@ json observationsJson(const MissionProblem &problem)
             {"rejected", rejected},
             {"rms_innovation_before", jnum(o->correction.rmsBefore)},
             {"rms_innovation_after", jnum(o->correction.rmsAfter)},
+            {"mean_innovation", {{"u", o->correction.meanInnovation.u}, {"v", o->correction.meanInnovation.v}}},
             {"length_scale", o->params.lengthScale},
             {"time_scale", o->params.timeScale},
             {"error_ratio", o->params.errorRatio},

@@ -128,6 +128,7 @@ json executionJson(const ExecutionResult &e, const MissionProblem &problem)
             o["reached"] = f.reached;
             o["grounded"] = f.grounded;
             o["grounded_why"] = jtext(f.groundedWhy);
+            o["not_reached_why"] = jtext(f.notReachedWhy); // null where it reached
             o["made_good_speed"] = f.madeGoodSpeed;
             o["surfacings"] = f.fixes.empty() ? 0 : f.fixes.size() - 1;
             if (e.strategies[k] == ControlStrategy::Replan || e.strategies[k] == ControlStrategy::ReplanObserved)

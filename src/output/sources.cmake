@@ -8,6 +8,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/SummaryJson.cpp
   ${CMAKE_CURRENT_LIST_DIR}/SummaryInputs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/Report.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/CorrectionWords.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputWriter.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputFormatWriters.cpp
   ${CMAKE_CURRENT_LIST_DIR}/OutputDirectory.cpp

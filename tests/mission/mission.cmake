@@ -16,6 +16,7 @@ glider_add_test(test_mission_concurrent_sources ${CMAKE_CURRENT_LIST_DIR}/TestCo
 target_link_libraries(test_mission_concurrent_sources INTERFACE netCDF::netcdf)
 # the plan flown in another ocean through the pipeline
 glider_add_test(test_mission_execution ${CMAKE_CURRENT_LIST_DIR}/TestMissionExecution.cpp)
+glider_add_test(test_execution_reasons ${CMAKE_CURRENT_LIST_DIR}/TestExecutionReasons.cpp)
 target_link_libraries(test_mission_execution INTERFACE nlohmann_json::nlohmann_json netCDF::netcdf)
 # the execution's oracle: each pair planned and flown on the truth, the strategies' arrivals over its
 glider_add_test(test_mission_execution_oracle ${CMAKE_CURRENT_LIST_DIR}/TestExecutionOracle.cpp)

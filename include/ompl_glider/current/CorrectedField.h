@@ -109,7 +109,11 @@ struct CorrectionSummary
     std::size_t notFinite{0};       ///< rejected: a coordinate or a component not finite
     double rmsBefore{0.0};          ///< RMS |d_i| against the forecast (field units)
     double rmsAfter{0.0};           ///< RMS |DAC_i - F'(x_i, t_i)| against the corrected field
-    CorrectionParams params;        ///< the parameters as used (estimated ones in place of their priors)
+    /// The mean of the innovations d_i = DAC_i - F(x_i, t_i) of the DAC used (field units): what the glider measured
+    /// more than the forecast, on average (0 without DAC)
+    Velocity meanInnovation;
+    double firstUsed{0.0}, lastUsed{0.0}; ///< the times of the oldest and newest DAC used (field time)
+    CorrectionParams params;              ///< the parameters as used (estimated ones in place of their priors)
     /// Where L, T and the ratio came from: "given", "default", or "estimated from N DAC"
     std::string lengthSource, timeSource, ratioSource;
     std::size_t learnedFrom{0}; ///< DAC the estimate used (0: nothing was estimated)

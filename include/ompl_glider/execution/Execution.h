@@ -127,9 +127,13 @@ struct FlownTrack
     std::size_t windowsMissed{0}; ///< see stationsReached
     bool grounded{false};         ///< the run ended on land or in a forbidden region
     std::string groundedWhy;      ///< what was met, and where (planning frame)
-    double madeGoodSpeed{0.0};    ///< straight distance start -> last position divided by the time flown
-    unsigned replans{0};          ///< ControlStrategy::Replan: surfacings that renewed the plan (a new plan, or the
-                                  ///< replanner's re-timed rest of the current one)
+    /// Why the run does not count as reached, said for a pilot (empty when it reached): grounded, not within the
+    /// radius by the end of the run (and what ended it), a station not reached, a station reached after its window
+    /// (also when the run ended inside the goal's radius). Set by the mission's execution (MissionExecution.h).
+    std::string notReachedWhy;
+    double madeGoodSpeed{0.0}; ///< straight distance start -> last position divided by the time flown
+    unsigned replans{0};       ///< ControlStrategy::Replan: surfacings that renewed the plan (a new plan, or the
+                               ///< replanner's re-timed rest of the current one)
     /// Dac, ReplanObserved: the depth-averaged current measured over each dive (the mean of the truth along the dive,
     /// plus noise), with the forecast averaged along the same dive
     std::vector<DacObservation> measured;

@@ -360,7 +360,10 @@ struct MissionResult
     /// grid angle, land from zero velocities, planning on a frozen last field
     std::vector<std::string> forecastNotes;
     std::string coastlineNote; ///< what the coastline gave and repaired (MissionProblem::coastlineNote())
-    double wallSeconds{0.0};   ///< whole run
+    /// What the glider's observations gave and the correction they made (MissionProblem::observations(); null
+    /// without them): the report's correction lines (correctionLines(), output/Report.h), summary.json's figures
+    std::shared_ptr<const ObservationReport> observations;
+    double wallSeconds{0.0}; ///< whole run
 };
 
 /// @brief The path's waypoints flown leg by leg in @p field at @p speed from path.front().t (each leg's fastest

@@ -4,6 +4,7 @@
 /// start and goal, legend and axes; written as SVG and PNG (cairo).
 
 #include <memory>
+#include <optional>
 #include <functional>
 #include <string>
 #include <utility>
@@ -62,8 +63,37 @@ struct MapPath
     double width{2.5};                  ///< line width in pixels
     bool dashed{false};                 ///< dashed line
     bool waypointMarkers{true};         ///< small circles at the waypoints
-    bool timeTicks{false};              ///< time ticks (and labels) along the path, see MapOptions::tickInterval
+    /// time ticks (and labels) along the path, see MapOptions::tickInterval; of the paths that ask for them, the
+    /// last one added gets them (one tick series on a map)
+    bool timeTicks{false};
 };
+
+/// @brief Measured currents (a glider's depth-averaged currents) drawn as arrows from where each was measured, at
+/// the scale of the field's current arrows (the same speed gives the same length), with a key in the legend: an arrow
+/// of a round speed and its value.
+struct MapVectors
+{
+    std::string label;                   ///< the legend's entry ("glider: 8 measured DAC")
+    std::vector<Point2> at;              ///< the arrows' tails (field coordinates)
+    std::vector<Velocity> velocity;      ///< one per tail, in the field's velocity unit (m/s for a forecast)
+    Rgba colour{0.42, 0.11, 0.60, 0.95}; ///< purple
+};
+
+/// @brief A value in [0, 1] on the nodes (x0 + i h, y0 + j h) of a grid (a probability of reach), drawn as a colour
+/// fill under the paths: a cell of side h about each node in fillColour() of its value (nothing where it is 0), and a
+/// colour bar from 0 to 1 in the legend.
+struct MapGridFill
+{
+    std::string label;         ///< the colour bar's label ("probability of reach by +2.0 d")
+    double x0{0.0}, y0{0.0};   ///< node (0, 0) (field coordinates)
+    double h{0.0};             ///< node spacing
+    int nx{0}, ny{0};          ///< node counts
+    std::vector<float> values; ///< node (i, j) at j * nx + i, in [0, 1]
+};
+
+/// @brief The grid fill's colour of a value @p p in [0, 1], alpha included: a translucent light yellow at small p to a
+/// near-opaque dark red at 1 (values outside [0, 1] are clamped).
+Rgba fillColour(double p);
 
 /// @brief Page and field-drawing options.
 struct MapOptions
@@ -78,6 +108,11 @@ struct MapOptions
     std::string shadingLabel;         ///< label of the colour bar; empty: "current speed"
     std::string fieldWord{"current"}; ///< what the field is, in the legend: "current" or "wind"
     std::function<std::string(double)> timeText; ///< a field time as a pilot reads it (a date); empty: "t=..."
+    /// The time ticks' unit after the departure ("h", "d"): the paths' times are that many units after the
+    /// departure and a tick reads "+6 h"; empty: a tick reads "t=6" and timeUnit
+    std::string tickUnit;
+    /// The legend's note on the ticks; empty: "ticks: time along the path"
+    std::string tickNote;
     /// Geographic frame (both set): the axes are labelled in longitude/latitude and a graticule of meridians and
     /// parallels is drawn through the field's frame (curved where the projection bends them); start and goal are
     /// given in degrees and a scale bar is drawn. Unset: the field's x/y frame.
@@ -109,6 +144,12 @@ public:
     void addStation(Point2 at, double radius, std::string label);
     /// @brief A free text line under the legend (e.g. "travel time 12.3").
     void addNote(std::string note);
+    /// @brief Measured currents as arrows at the current arrows' scale, drawn over the paths (MapVectors). Ignored
+    /// when empty. @throws Error when the tails and velocities differ in number.
+    void addVectors(MapVectors vectors);
+    /// @brief A value in [0, 1] on a grid drawn as a colour fill with a colour bar (MapGridFill), one per map.
+    /// @throws Error when the values are not nx * ny or the spacing is not > 0.
+    void setGridFill(MapGridFill fill);
 
     /// @brief Writes an SVG file. @throws Error when the file cannot be written.
     void writeSvg(const std::string &filename) const;
@@ -148,5 +189,7 @@ private:
         std::string label;
     };
     std::vector<Station> stations_;
+    std::vector<MapVectors> vectors_;
+    std::optional<MapGridFill> fill_;
 };
 } // namespace ompl_glider

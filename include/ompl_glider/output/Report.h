@@ -14,6 +14,13 @@ namespace ompl_glider
 /// travel time ("impassable" when infinite) and length.
 std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows);
 
+/// @brief The correction the glider's DAC made to the forecast, for a pilot (the report's "Correction:" lines; empty
+/// without observations): the DAC used (and rejected, by reason), what the glider measured against the forecast on
+/// average (speed and direction, m/s and kn), and how far and how long after the dives the plan uses it (the
+/// correction's length and time scales); an ensemble's closest members. The statisticians' figures are
+/// summary.json's `observations`.
+std::vector<std::string> correctionLines(const MissionResult &result);
+
 /// @brief Human-readable report: mission, planner, status (and why there is no path), departure (and the departure
 /// search), travel time (raw, smoothed, final; with dive profiles), path length, straight line, waypoints, CFC and
 /// CMC, wall times, the optimal-control reference, the waypoint table and the speed sweep.

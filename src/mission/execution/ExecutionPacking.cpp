@@ -84,6 +84,7 @@ std::string execution_detail::packRun(const ExecutionRun &run)
         o.put(f.replans);
         o.put(static_cast<std::uint64_t>(f.stationsReached));
         o.put(static_cast<std::uint64_t>(f.windowsMissed));
+        o.put(f.notReachedWhy);
     });
     w.put(run.oracleArrival);
     w.put(run.oracleSeconds);
@@ -125,6 +126,7 @@ void execution_detail::unpackRun(const std::string &bytes, ExecutionRun &run)
         i.get(f.replans);
         f.stationsReached = static_cast<std::size_t>(i.value<std::uint64_t>());
         f.windowsMissed = static_cast<std::size_t>(i.value<std::uint64_t>());
+        i.get(f.notReachedWhy);
     });
     r.get(run.oracleArrival);
     r.get(run.oracleSeconds);

@@ -23,6 +23,7 @@
 #include "ompl_glider/mission/Planning.h"
 #include "../../io/NumberText.h"
 #include "ExecutionOracle.h"
+#include "ExecutionOutcome.h"
 #include "ExecutionPacking.h"
 #include "ExecutionTruth.h"
 #include "../planning/PlanningInternal.h"
@@ -194,12 +195,13 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
     // members out); the learning of the DAC strategies weighs the members themselves
     const MissionProblem onMean = planningOnMean(problem);
     const MissionSpec &m = problem.getSpec();
-    const ExecutionSpec &e = m.execution;
     const double speed = m.vehicle.speed;
-    const double planned = run.plan.back().t - run.plan.front().t;
-    const double end = std::min(run.plan.front().t + (std::isnan(e.duration) ? 2.0 * planned : e.duration),
-                                problem.getTruth()->timeEnd());
+    const execution_detail::RunEnd runEnd =
+        execution_detail::runEnd(problem, run.plan.front().t, run.plan.back().t - run.plan.front().t);
+    const double end = runEnd.time;
     FlownTrack out;
+    std::string notReached, late; // the first station (or the goal) not reached; the stations reached late
+    double notReachedRadius = 0.0;
     out.plannedArrival = run.plan.back().t;
     out.fixes.push_back(run.plan.front());
     out.track.push_back(run.plan.front());
@@ -243,7 +245,11 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
         out.grounded = f.grounded;
         out.groundedWhy = f.groundedWhy;
         if (!f.reached)
+        {
+            notReached = last ? std::string("the goal") : "station " + settings.stops[k].name;
+            notReachedRadius = radius;
             break;
+        }
         at = f.track.back();
         if (last)
         {
@@ -254,7 +260,10 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
         const ExecutionStop &stop = settings.stops[k];
         ++out.stationsReached;
         if (stop.window && f.arrivalTime > stop.windowEnd)
+        {
             ++out.windowsMissed;
+            late += (late.empty() ? "" : "; ") + execution_detail::lateText(problem, stop, f.arrivalTime);
+        }
         // held in place until the window opens, then for the stay
         const double leave = std::max(at.t, stop.window ? stop.windowBegin : at.t) + stop.stay;
         if (leave > at.t)
@@ -266,6 +275,7 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
         first = leg.end;
     }
     out.measured = std::move(measured);
+    out.notReachedWhy = execution_detail::notReachedWhy(problem, out, notReached, notReachedRadius, runEnd, late);
     const TimedPoint endPoint = out.track.back();
     const TimedPoint then = planAt(out.track, out.plannedArrival);
     out.finalDistance = std::hypot(then.x - run.goal.x, then.y - run.goal.y);
@@ -282,7 +292,6 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
     // members out); the learning of the DAC strategies weighs the members themselves
     const MissionProblem onMean = planningOnMean(problem);
     const MissionSpec &m = problem.getSpec();
-    const ExecutionSpec &e = m.execution;
     const double speed = m.vehicle.speed;
     const double planned = run.plan.back().t - run.plan.front().t;
     if (!run.legs.empty())
@@ -292,8 +301,8 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
         return;
     }
     ExecutionOptions o = flightOptions(problem, settings, run.radius);
-    o.endTime = std::min(run.plan.front().t + (std::isnan(e.duration) ? 2.0 * planned : e.duration),
-                         problem.getTruth()->timeEnd()); // never beyond the truth (checkTruthTimes())
+    const execution_detail::RunEnd end = execution_detail::runEnd(problem, run.plan.front().t, planned);
+    o.endTime = end.time; // never beyond the truth (checkTruthTimes())
     o.headings = run.headings ? &*run.headings : nullptr;
     for (ControlStrategy s : settings.strategies)
     {
@@ -304,6 +313,8 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
             o.replanObserved = observedReplanner(problem, run.goal, settings.surfacingInterval);
         run.flown.push_back(
             flyPlan(run.plan, speed, *problem.getField(), *problem.getTruth(), problem.getEnvironment().get(), s, o));
+        run.flown.back().notReachedWhy =
+            execution_detail::notReachedWhy(problem, run.flown.back(), "the goal", run.radius, end, "");
     }
 }
 /// The oracle of @p run (ExecutionRun::oracleArrival): its pair planned on the truth as the run was on the forecast,
@@ -360,36 +371,6 @@ std::vector<ExecutionStop> executionStops(const MissionProblem &problem, double 
     return stops;
 }
 
-/// What each strategy did over the runs flown.
-std::vector<StrategySpread> strategySpreads(const ExecutionResult &r)
-{
-    std::vector<StrategySpread> out;
-    for (std::size_t k = 0; k < r.strategies.size(); ++k)
-    {
-        StrategySpread s;
-        s.strategy = controlStrategyName(r.strategies[k]);
-        std::vector<double> dist, delay, speed;
-        for (const ExecutionRun &run : r.runs)
-        {
-            if (!run.planned)
-                continue;
-            const FlownTrack &f = run.flown[k];
-            ++s.runs;
-            s.reached += f.reached ? 1 : 0;
-            s.grounded += f.grounded ? 1 : 0;
-            dist.push_back(f.finalDistance);
-            if (f.reached)
-                delay.push_back(f.arrivalTime - f.plannedArrival);
-            speed.push_back(f.madeGoodSpeed);
-        }
-        s.finalDistance = measureSpread(dist);
-        s.arrivalDelay = measureSpread(delay);
-        s.madeGoodSpeed = measureSpread(speed);
-        s.overOracle = execution_detail::overOracle(r, k); // empty without an oracle
-        out.push_back(s);
-    }
-    return out;
-}
 } // namespace
 
 double rmsDifference(const CurrentField &a, const CurrentField &b, double x, double y, double z, double t0, double t1,
@@ -586,7 +567,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
 
     for (const ExecutionRun &run : r.runs)
         r.oracleSeconds += run.oracleSeconds;
-    r.spread = strategySpreads(r);
+    r.spread = execution_detail::strategySpreads(r);
     execution_truth::modelDifference(problem, plan,
                                      r); // the truth against the forecast over the box and the runs' time window
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -394,14 +394,9 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     result.forecastNotes = problem.forecastNotes();
     for (const std::string &note : problem.endpointNotes())
         result.forecastNotes.push_back(note);
-#if OMPL_GLIDER_WITH_NETCDF
-    if (const std::string note = observationNote(problem); !note.empty())
-        result.forecastNotes.push_back(note); // how the glider's DAC corrected the forecast
-    if (problem.observations() && !problem.observations()->comparedWith.empty())
-        result.forecastNotes.push_back("the DAC were compared with " + problem.observations()->comparedWith);
-    if (const std::string note = correctionNote(problem); !note.empty())
-        result.forecastNotes.push_back("the correction learned from the DAC: " + note);
-#endif
+    // how the glider's DAC corrected the forecast: the report's words for a pilot (correctionLines()), summary.json's
+    // figures
+    result.observations = problem.observations();
     if (const std::string frozen = planning_detail::frozenFieldNote(problem, result.plan); !frozen.empty())
         result.forecastNotes.push_back(frozen);
     result.coastlineNote = problem.coastlineNote();
