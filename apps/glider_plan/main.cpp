@@ -167,7 +167,7 @@ int run(const Flags &f)
                   << "\n";
         return kBadInput; // bad input: nothing is written
     }
-    printReport(std::cout, result);
+    printReport(std::cout, result, &problem);
     if (write)
         for (const std::string &file : writeOutputs(result, problem))
             std::cout << "wrote " << file << "\n";

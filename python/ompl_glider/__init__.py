@@ -314,7 +314,8 @@ class Result:
         heading_duration as the result holds them, leg (the leg of a mission of several legs, 0 for one leg) and
         stop (the via point a waypoint is: "start", a via point's name, the goal's; "" between them, and in a
         mission of one leg), and the file's other columns (index, time, time_s, profile, climb_to, dive_to,
-        heading_deg, segment_duration: NaN where the file has no value) as the output layer writes them."""
+        heading_true_deg, segment_duration: NaN where the file has no value) as the output layer writes them; heading
+        and heading_true_deg are bearings from true north where the mission has lon/lat."""
         w = self._core.waypoints()
         rows = list(csv.DictReader(io.StringIO(self._core.waypoints_csv())))
         for key in (rows[0].keys() if rows else []):
@@ -502,6 +503,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
          coastline: Union[None, str, os.PathLike] = None, goto_turn: Optional[float] = None,
          hold_tolerance: Union[None, float, str] = None, via: Optional[Sequence[Any]] = None, order: Optional[str] = None,
          observations: Union[None, str, os.PathLike] = None,
+         observations_cache: Union[None, str, os.PathLike] = None,
          correction_length: Union[None, float, str] = None, correction_time: Union[None, float, str] = None,
          error_ratio: Optional[float] = None, learn: Optional[bool] = None,
          keep_off: Union[None, float, str] = None, min_depth: Union[None, float, str] = None,
@@ -533,7 +535,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     metres or "0.5 km"), via (via points
     between start and goal, a mission of several legs: each a pair (x, y) / (lon, lat), or a dict with ``at`` (the
     pair), ``name``, ``radius``, ``stay`` (the mission's units) and ``arrive`` ((begin, end), times as departure)),
-    order ("given" or "free": the fastest order of up to 8 via points), observations (the glider's depth-averaged
+    order ("given" or "free": the fastest order of up to 8 via points), observations_cache (the folder of a Slocum's
+    cache files for binary observations), observations (the glider's depth-averaged
     currents: IOOS glider profile files or Slocum dba files, a folder or glob of them, a CSV time,lon,lat,u,v, or an
     ERDDAP tabledap URL (.csvp, .csv, .ncCF): the forecast is corrected by them and, without start, the plan starts at the last fix, at its time without departure); correction_length ("20 km"), correction_time
     ("1 d"), error_ratio and learn (False: the values and defaults as they are) set the correction by the DAC
@@ -565,6 +568,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                     coastline=_path_keyword("coastline", coastline), goto_turn=goto_turn,
                     hold_tolerance=hold_tolerance, via=_list_keyword("via", via, "a list of via points"), order=order,
                     observations=_path_keyword("observations", observations),
+                    observations_cache=_path_keyword("observations_cache", observations_cache),
                     correction_length=correction_length, correction_time=correction_time, error_ratio=error_ratio,
                     learn=learn,
                     keep_off=keep_off, min_depth=min_depth,
@@ -609,7 +613,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                                       s["xy_interpolation"], s["depth_interpolation"], s["time_interpolation"],
                                       s["horizon"], s["velocity_units"], s["time_units"], s["steady_record"],
                                       s["zero_velocity_land"], s["depth_average"], bool(snap_to_water),
-                                      "" if observations is None else os.fspath(observations), field.kind)
+                                      "" if observations is None else os.fspath(observations), field.kind,
+                                      "" if observations_cache is None else os.fspath(observations_cache))
         for used in ("start", "goal", "departure", "speed", "region"):
             keywords.pop(used)
     elif field is not None:

@@ -118,7 +118,8 @@ MissionSpec forecast(const std::string &files, std::optional<Pair> start, Pair g
                      const std::string &depthScheme, const std::string &timeScheme, const std::string &horizon,
                      const std::string &velocityUnits, const std::string &timeUnits,
                      std::optional<std::size_t> steadyRecord, bool zeroVelocityLand, std::optional<Pair> depthAverage,
-                     bool snapToWater, const std::string &observations, const std::string &kind)
+                     bool snapToWater, const std::string &observations, const std::string &kind,
+                     const std::string &observationsCache)
 {
     ForecastInput in;
     in.current.type = kind; // a gridded kind of the registry (or its alias), kept as named; another: netcdf
@@ -142,6 +143,7 @@ MissionSpec forecast(const std::string &files, std::optional<Pair> start, Pair g
     // without a start: the glider's last fix (and its time without a departure), read by the mission
     in.startAtLastFix = !start;
     in.observations = observations;
+    in.observationsCache = observationsCache;
     if (start)
         in.start = {start->first, start->second};
     in.goal = {goal.first, goal.second};
@@ -258,6 +260,7 @@ std::shared_ptr<const SettingWords> keywordWords()
                       {"departure.time", "departure="},
                       {"start", "start="},
                       {"observations", "observations="},
+                      {"observations.cache", "observations_cache="},
                       {"goal", "goal="},
                       {"region", "region="},
                       {"current.file", "Field.netcdf()"},
@@ -405,6 +408,7 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
                                   "via",
                                   "order",
                                   "observations",
+                                  "observations_cache",
                                   "keep_off",
                                   "min_depth",
                                   "bathymetry",
@@ -503,6 +507,9 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
     if (auto v = get("observations"))
         o.observations = Given<std::string>{value<std::string>(*v, "observations", "a file, a folder, a glob or a URL"),
                                             text("observations")};
+    if (auto v = get("observations_cache"))
+        o.observationsCache =
+            Given<std::string>{value<std::string>(*v, "observations_cache", "a folder"), text("observations_cache")};
     if (auto v = get("coastline"))
         o.coastline = Given<std::string>{value<std::string>(*v, "coastline", "a file name"), text("coastline")};
     applySafetyAndExecutionKeywords(get, text, o);
@@ -545,7 +552,7 @@ void bindMission(py::module_ &m)
           py::arg("horizon") = "refuse", py::arg("velocity_units") = "", py::arg("time_units") = "",
           py::arg("steady_record") = py::none(), py::arg("zero_velocity_land") = true,
           py::arg("depth_average") = py::none(), py::arg("snap_to_water") = false, py::arg("observations") = "",
-          py::arg("kind") = "netcdf",
+          py::arg("kind") = "netcdf", py::arg("observations_cache") = "",
           "The mission of a gridded forecast, as glider_plan --currents builds it (start None: at the last fix of "
           "`observations`, and its time without a departure, marked so until the mission resumes there; speed None: "
           "the forecast mission's default), read by the gridded source `kind` "

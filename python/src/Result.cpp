@@ -517,7 +517,7 @@ void bindResult(py::module_ &m)
         .def("report",
              [](const R &r) {
                  std::ostringstream s;
-                 printReport(s, r.result);
+                 printReport(s, r.result, r.problem.get());
                  return s.str();
              })
         .def("execution_csv",

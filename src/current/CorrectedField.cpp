@@ -74,10 +74,12 @@ std::string sourceOf(bool given, bool learn)
     return given ? "given" : learn ? "default (too few DAC to estimate)" : "default";
 }
 
-/// The innovations' mean and the span of the DAC used, for the words of the report (CorrectionSummary).
+/// The innovations' RMS (of their sum of squares @p squares) and mean, and the span of the DAC used, for the words of
+/// the report (CorrectionSummary).
 void noteInnovations(CorrectionSummary &s, const std::vector<DacObservation> &used, const Eigen::VectorXd &du,
-                     const Eigen::VectorXd &dv)
+                     const Eigen::VectorXd &dv, double squares)
 {
+    s.rmsBefore = std::sqrt(squares / static_cast<double>(used.size()));
     s.meanInnovation = {du.mean(), dv.mean()};
     s.firstUsed = used.front().t;
     s.lastUsed = used.back().t;
@@ -139,8 +141,7 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
             dv[i] = 0.0;
         before += du[i] * du[i] + dv[i] * dv[i];
     }
-    summary_.rmsBefore = std::sqrt(before / n);
-    noteInnovations(summary_, used_, du, dv);
+    noteInnovations(summary_, used_, du, dv, before);
     if (params_.learn && n >= params_.minLearn && before > 0.0)
     {
         // learn the scales not given, and the innovations' mean; the interpolation spreads what is left
@@ -230,9 +231,9 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
     double after = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
-        Velocity c = forecastAtDac(*base_, DacObservation{used_[i].t, used_[i].at, {}, std::nullopt,
-                                                          used_[i].depthTop, used_[i].depthBottom},
-                                   params_);
+        Velocity c = forecastAtDac(
+            *base_, DacObservation{used_[i].t, used_[i].at, {}, std::nullopt, used_[i].depthTop, used_[i].depthBottom},
+            params_);
         addCorrection(used_[i].at.x, used_[i].at.y, used_[i].t, c, nullptr);
         after += std::pow(used_[i].dac.u - c.u, 2) + std::pow(used_[i].dac.v - c.v, 2);
     }

@@ -1,4 +1,5 @@
 #include "ompl_glider/output/ExecutionFiles.h"
+#include "ompl_glider/output/RouteFiles.h"
 #include "../io/NumberText.h"
 
 #include <cmath>
@@ -85,7 +86,9 @@ std::string executionCsv(const ExecutionResult &e, const MissionProblem &problem
 
 std::string executionTracksCsv(const ExecutionResult &e, const MissionProblem &problem)
 {
-    std::string s = "strategy,index,time,time_iso,x,y,lon,lat,heading_deg\n";
+    // the glider's heading from true north where the problem has lon/lat (the frame's grid north turned there)
+    std::string s = std::string("strategy,index,time,time_iso,x,y,lon,lat,") +
+                    (problem.isGeographic() ? "heading_true_deg" : "heading_deg") + "\n";
     const ExecutionRun &run = e.runs.front();
     if (!run.planned)
         return s;
@@ -98,7 +101,10 @@ std::string executionTracksCsv(const ExecutionResult &e, const MissionProblem &p
         for (std::size_t i = 0; i < f.fixes.size(); ++i)
             s += controlStrategyName(e.strategies[k]) + "," + std::to_string(i) + "," + csvCell(f.fixes[i].t) + "," +
                  problem.isoTime(f.fixes[i].t) + "," + csvPoint(problem, {f.fixes[i].x, f.fixes[i].y}) + "," +
-                 (i < f.headings.size() ? csvCell(compassDegrees(f.headings[i])) : std::string()) + "\n";
+                 (i < f.headings.size()
+                      ? csvCell(trueBearing(problem, {f.fixes[i].x, f.fixes[i].y}, compassDegrees(f.headings[i])))
+                      : std::string()) +
+                 "\n";
     }
     return s;
 }

@@ -38,6 +38,32 @@ struct GroundAxes
     Point2 east{1.0, 0.0}, north{0.0, 1.0};
 };
 
+/// The ground axes at @p p of a geographic problem: WGS84's radii of curvature turn degrees into metres.
+GroundAxes groundAxes(const MissionProblem &problem, Point2 p)
+{
+    GroundAxes a;
+    const LonLat g = problem.toGeographic(p);
+    const double d = 1e-5, s = std::sin(g.lat * kRad);
+    const double A = 6378137.0, e2 = 6.69437999014e-3, w = 1.0 - e2 * s * s;
+    const double M = A * (1.0 - e2) / (w * std::sqrt(w)), N = A / std::sqrt(w);
+    const Point2 e1 = problem.toLocal({g.lon + d, g.lat}), e0 = problem.toLocal({g.lon - d, g.lat});
+    const Point2 n1 = problem.toLocal({g.lon, g.lat + d}), n0 = problem.toLocal({g.lon, g.lat - d});
+    const double me = 2.0 * d * kRad * N * std::cos(g.lat * kRad), mn = 2.0 * d * kRad * M;
+    a.east = {(e1.x - e0.x) / me, (e1.y - e0.y) / me};
+    a.north = {(n1.x - n0.x) / mn, (n1.y - n0.y) / mn};
+    return a;
+}
+
+/// The true bearing (degrees in [0, 360)) of the plane's bearing @p grid at @p p, of ground axes @p a.
+double trueOfGrid(const GroundAxes &a, double grid)
+{
+    const Point2 d = bearingVector(grid);
+    // d = E east + N north: solve for the ground components
+    const double det = a.east.x * a.north.y - a.east.y * a.north.x;
+    const double E = (d.x * a.north.y - d.y * a.north.x) / det, N = (a.east.x * d.y - a.east.y * d.x) / det;
+    return wrap360(std::atan2(E, N) / kRad);
+}
+
 /// The flights of held true headings through a mission's forecast, in its planning frame.
 class TrueFlyer
 {
@@ -52,22 +78,7 @@ public:
     }
 
     /// The ground axes at @p p: WGS84's radii of curvature turn degrees into metres.
-    GroundAxes axes(Point2 p) const
-    {
-        GroundAxes a;
-        if (!geo_)
-            return a;
-        const LonLat g = problem_->toGeographic(p);
-        const double d = 1e-5, s = std::sin(g.lat * kRad);
-        const double A = 6378137.0, e2 = 6.69437999014e-3, w = 1.0 - e2 * s * s;
-        const double M = A * (1.0 - e2) / (w * std::sqrt(w)), N = A / std::sqrt(w);
-        const Point2 e1 = problem_->toLocal({g.lon + d, g.lat}), e0 = problem_->toLocal({g.lon - d, g.lat});
-        const Point2 n1 = problem_->toLocal({g.lon, g.lat + d}), n0 = problem_->toLocal({g.lon, g.lat - d});
-        const double me = 2.0 * d * kRad * N * std::cos(g.lat * kRad), mn = 2.0 * d * kRad * M;
-        a.east = {(e1.x - e0.x) / me, (e1.y - e0.y) / me};
-        a.north = {(n1.x - n0.x) / mn, (n1.y - n0.y) / mn};
-        return a;
-    }
+    GroundAxes axes(Point2 p) const { return geo_ ? groundAxes(*problem_, p) : GroundAxes{}; }
 
     /// The unit plane direction of the true bearing @p psi (degrees) at @p p.
     Point2 direction(Point2 p, double psi) const
@@ -82,17 +93,7 @@ public:
     }
 
     /// The true bearing (degrees in [0, 360)) of the plane's bearing @p grid at @p p.
-    double trueOf(Point2 p, double grid) const
-    {
-        if (!geo_)
-            return wrap360(grid);
-        const GroundAxes a = axes(p);
-        const Point2 d = bearingVector(grid);
-        // d = E east + N north: solve for the ground components
-        const double det = a.east.x * a.north.y - a.east.y * a.north.x;
-        const double E = (d.x * a.north.y - d.y * a.north.x) / det, N = (a.east.x * d.y - a.east.y * d.x) / det;
-        return wrap360(std::atan2(E, N) / kRad);
-    }
+    double trueOf(Point2 p, double grid) const { return geo_ ? trueOfGrid(axes(p), grid) : wrap360(grid); }
 
     /// Holds @p psi from @p from for its duration (to @p to's time); the positions at @p times (ascending, in the
     /// span) into @p at, every step's into @p track when given. Returns the end.
@@ -270,6 +271,13 @@ double trueBearing(const MissionResult &r, const MissionProblem *problem, Point2
     return TrueFlyer(r, problem, r.spec.vehicle.speed).trueOf(at, gridDeg);
 }
 
+double trueBearing(const MissionProblem &problem, Point2 at, double gridDeg)
+{
+    if (!std::isfinite(gridDeg))
+        return gridDeg;
+    return problem.isGeographic() ? trueOfGrid(groundAxes(problem, at), gridDeg) : wrap360(gridDeg);
+}
+
 double trueBearingOfFlight(const MissionResult &r, const MissionProblem *problem, const TimedPoint &from,
                            const TimedPoint &to, double gridDeg, double speed)
 {
@@ -286,6 +294,20 @@ std::vector<double> trueHeadings(const MissionResult &r, const MissionProblem *p
         if (std::isfinite(r.waypoints[i].heading))
             out[i] = trueBearingOfFlight(r, problem, at(r.waypoints[i]), at(r.waypoints[i + 1]), r.waypoints[i].heading,
                                          speedFrom(r, i));
+    return out;
+}
+
+std::vector<double> trueStintBearings(const MissionResult &r, const MissionProblem *problem)
+{
+    std::vector<double> out;
+    if (!r.plan.stints)
+        return out;
+    const StintPlan &sp = r.plan.stints->plan;
+    for (std::size_t k = 0; k < sp.bearings.size(); ++k)
+        out.push_back(
+            k + 1 < sp.surfacings.size()
+                ? trueBearingOfFlight(r, problem, sp.surfacings[k], sp.surfacings[k + 1], sp.bearings[k], r.plan.speed)
+                : trueBearing(r, problem, {sp.surfacings[k].x, sp.surfacings[k].y}, sp.bearings[k]));
     return out;
 }
 

@@ -171,7 +171,8 @@ PageJson routeJson(const MissionResult &r, const MissionProblem &p, const Frame 
             c = field.velocity(w.position.x, w.position.y, z, w.time);
         double heading = held[k];
         if (!std::isfinite(heading) && k + 1 < r.waypoints.size() && std::isfinite(c.u))
-            heading = trueBearing(r, &p, w.position, legHeading(w.position, r.waypoints[k + 1].position, c, plan.speed));
+            heading =
+                trueBearing(r, &p, w.position, legHeading(w.position, r.waypoints[k + 1].position, c, plan.speed));
         wp["heading_deg"] = std::isfinite(heading) ? PageJson(rounded(heading, 0.1)) : PageJson(nullptr);
         if (std::isfinite(c.u) && std::isfinite(c.v))
         {

@@ -9,6 +9,7 @@
 #include "ompl_glider/Config.h"
 #include "ompl_glider/io/FileList.h"
 #include "ompl_glider/mission/EnsembleDraw.h"
+#include "ompl_glider/output/RouteFiles.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/mission/Observations.h"
@@ -39,15 +40,29 @@ std::string lengthText(const MissionSpec &m, double d)
     return m.physicalUnits().length ? format("%.3f km", d * m.metresPerUnit() / 1000.0) : format("%.4f", d);
 }
 
-void printWaypoints(std::ostream &out, const MissionResult &r)
+/// Where a bearing is measured from: true north (lon/lat and the problem), the planning frame's grid north (lon/lat
+/// without it), or nothing to say (a Cartesian mission).
+const char *northOf(const MissionResult &r, const MissionProblem *problem)
+{
+    const bool geographic = !r.waypoints.empty() && r.waypoints.front().geographic;
+    return !geographic ? "" : problem ? " true" : " grid";
+}
+
+void printWaypoints(std::ostream &out, const MissionResult &r, const MissionProblem *problem)
 {
     // a heading route (or a mission's legs of held headings): the heading held from each waypoint and for how long
     bool headings = false;
     for (const MissionWaypoint &w : r.waypoints)
         headings = headings || std::isfinite(w.heading);
+    const std::string north = northOf(r, problem);
+    std::vector<double> bearing; // as the pilot files write them: from true north where the problem says where it is
+    for (const MissionWaypoint &w : r.waypoints)
+        bearing.push_back(w.heading);
+    if (headings && north == " true")
+        bearing = trueHeadings(r, problem);
     out << format("%4s %12s %12s %11s %10s %14s %22s %16s", "#", "x", "y", "lon", "lat", "arrival", "arrival (UTC)",
                   "dive profile");
-    out << (headings ? format(" %11s %12s\n", "heading", "held for") : std::string("\n"));
+    out << (headings ? format(" %11s %12s\n", ("heading" + north).c_str(), "held for") : std::string("\n"));
     for (std::size_t i = 0; i < r.waypoints.size(); ++i)
     {
         const MissionWaypoint &w = r.waypoints[i];
@@ -59,7 +74,7 @@ void printWaypoints(std::ostream &out, const MissionResult &r)
                       w.geographic ? format("%.6f", w.lonLat.lat).c_str() : "", reportNumber(w.time).c_str(),
                       w.iso.c_str(), prof.c_str());
         if (headings && std::isfinite(w.heading))
-            out << format(" %11s %12s\n", format("%.1f deg", w.heading).c_str(),
+            out << format(" %11s %12s\n", format("%.1f deg", bearing[i]).c_str(),
                           (r.spec.physicalUnits().time
                                ? format("%.2f h", w.headingDuration * r.spec.timeUnitSeconds / 3600.0)
                                : reportNumber(w.headingDuration))
@@ -327,7 +342,7 @@ void printReachability(std::ostream &out, const MissionResult &r)
     out << "Goal by horizon:    p = " << reportNumber(p.goalProbability) << q << "\n";
 }
 
-void printReport(std::ostream &out, const MissionResult &r)
+void printReport(std::ostream &out, const MissionResult &r, const MissionProblem *problem)
 {
     const PlannedPath &p = r.plan;
     const MissionSpec &m = r.spec;
@@ -447,10 +462,11 @@ void printReport(std::ostream &out, const MissionResult &r)
         if (st.converted)
             out << format("As stints:          arrival after %.4f against the path's %.4f (%+.2f%%)\n",
                           st.stintTravelTime, st.pathTravelTime, 100.0 * st.loss);
+        const std::string north = northOf(r, problem);
         std::string b;
-        for (double x : st.plan.bearings)
+        for (double x : north == " true" ? trueStintBearings(r, problem) : st.plan.bearings)
             b += (b.empty() ? "" : " ") + format("%.1f", x);
-        out << "Bearings (deg):     " << b << "\n";
+        out << format("%-20s", ("Bearings (deg" + north + "):").c_str()) << b << "\n";
     }
     if (r.execution)
     {
@@ -467,7 +483,7 @@ void printReport(std::ostream &out, const MissionResult &r)
     printReachability(out, r);
     printLegs(out, r);
     if (p.solved)
-        printWaypoints(out, r);
+        printWaypoints(out, r, problem);
     if (!r.speedSweep.empty())
         out << "Speed sweep:\n" << speedSweepTable(r.speedSweep);
 }

@@ -217,14 +217,7 @@ json stintBearingsJson(const MissionResult &r, const MissionProblem &problem)
     const PlannedPath &p = r.plan;
     if (!p.stints)
         return nullptr;
-    json a = json::array();
-    const StintPlan &sp = p.stints->plan;
-    for (std::size_t k = 0; k < sp.bearings.size(); ++k)
-        a.push_back(
-            k + 1 < sp.surfacings.size()
-                ? trueBearingOfFlight(r, &problem, sp.surfacings[k], sp.surfacings[k + 1], sp.bearings[k], p.speed)
-                : trueBearing(r, &problem, {sp.surfacings[k].x, sp.surfacings[k].y}, sp.bearings[k]));
-    return a;
+    return trueStintBearings(r, &problem);
 }
 
 json departureSearchJson(const MissionSpec &m, const DepartureSearchResult &d)

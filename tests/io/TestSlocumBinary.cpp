@@ -393,8 +393,8 @@ TEST(SlocumBinary, ACacheFolderGivenByTheMissionOrTheFlagIsSearched)
                                 "/examples/labrador_forecast.nc'}\nstart: {lon: -52.6, lat: 47.95}\n"
                                 "goal: {lon: -52.33, lat: 48.07}\n"
                                 "vehicle: {speed: 0.3}\nplanner: {refinement: false, global_check: false}\n";
-    const MissionResult reference = runMission(
-        MissionProblem(parseMission(mission + "observations: '" + beside.string() + "'\n", "obs.yaml")));
+    const MissionResult reference =
+        runMission(MissionProblem(parseMission(mission + "observations: '" + beside.string() + "'\n", "obs.yaml")));
     ASSERT_TRUE(reference.plan.solved);
     const MissionResult fromKey = runMission(MissionProblem(parseMission(
         mission + "observations: {file: '" + files.string() + "', cache: '" + cache.string() + "'}\n", "obs.yaml")));

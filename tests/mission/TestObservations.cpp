@@ -340,8 +340,8 @@ TEST(Observations, AStartFromAFixOlderThanTheNewestSurfacingIsWarned)
     text += realtime_test::dbaRow(t0 + 10800, nan, nan, nan, nan, nan, 100.0);
     text += realtime_test::dbaRow(t0 + 14400, 69696969.0, 69696969.0, 0, nan, nan, 0.5); // surfaced, no fix
     std::ofstream((folder / "ru29-2026-074-0-0.dba").string()) << text;
-    const MissionProblem p(missionOn(forecast, "start: {lon: -52.5, lat: 48.0}\nobservations: '" + folder.string() +
-                                                   "'\n"));
+    const MissionProblem p(
+        missionOn(forecast, "start: {lon: -52.5, lat: 48.0}\nobservations: '" + folder.string() + "'\n"));
     const MissionSpec &m = p.getSpec();
     ASSERT_TRUE(m.observations && m.observations->resumed);
     EXPECT_EQ(m.isoTime(m.departure.time), "2026-03-15T14:00:00Z"); // the last valid fix
@@ -356,7 +356,7 @@ TEST(Observations, AStartFromAFixOlderThanTheNewestSurfacingIsWarned)
     fine += realtime_test::dbaRow(t0 + 7200, 48.0, -52.25, 0, nan, nan, 0.5);
     fine += realtime_test::dbaRow(t0 + 7260, nan, nan, nan, 0.1, 0.0, 0.5);
     std::ofstream((folder / "ru29-2026-074-0-0.dba").string()) << fine;
-    const MissionProblem q(missionOn(forecast, "start: {lon: -52.5, lat: 48.0}\nobservations: '" + folder.string() +
-                                                   "'\n"));
+    const MissionProblem q(
+        missionOn(forecast, "start: {lon: -52.5, lat: 48.0}\nobservations: '" + folder.string() + "'\n"));
     EXPECT_TRUE(q.getSpec().observations->resumed->staleFix.empty()) << q.getSpec().observations->resumed->staleFix;
 }

@@ -39,9 +39,9 @@ struct ForecastInput
     /// the departure too where none is given), named in messages "the last fix of <observations' word>", marked as
     /// the observations' first guess until the mission resumes there (resumeAtLastFix())
     bool startAtLastFix{false};
-    std::string observations; ///< the glider's observations (MissionSpec::observations' path) for startAtLastFix
+    std::string observations;      ///< the glider's observations (MissionSpec::observations' path) for startAtLastFix
     std::string observationsCache; ///< the folder of a Slocum's cache files (ObservationsSpec::cache), or empty
-    double speed{0.3};        ///< vehicle speed through water, m/s
+    double speed{0.3};             ///< vehicle speed through water, m/s
     /// a start or goal on the forecast's land is moved to the nearest water (MissionSpec::safety.snapToWater); else
     /// it is refused, the message naming the nearest water
     bool snapToWater{false};

@@ -24,5 +24,7 @@ std::vector<std::string> correctionLines(const MissionResult &result);
 /// @brief Human-readable report: mission, planner, status (and why there is no path), departure (and the departure
 /// search), travel time (raw, smoothed, final; with dive profiles), path length, straight line, waypoints, CFC and
 /// CMC, wall times, the optimal-control reference, the waypoint table and the speed sweep.
-void printReport(std::ostream &out, const MissionResult &result);
+/// With @p problem, every bearing (held headings, stints' bearings) from true north where the mission has lon/lat, as
+/// the pilot files write them (trueHeadings()); without it, from the planning frame's grid north, said so.
+void printReport(std::ostream &out, const MissionResult &result, const MissionProblem *problem = nullptr);
 } // namespace ompl_glider

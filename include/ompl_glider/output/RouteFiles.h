@@ -69,6 +69,8 @@ struct HeldHeading
 /// @p gridDeg (clockwise from +y, the projection's grid north) at @p at; the bearing itself without lon/lat.
 /// @throws Error for a geographic mission without @p problem.
 double trueBearing(const MissionResult &result, const MissionProblem *problem, Point2 at, double gridDeg);
+/// @brief trueBearing() with the problem alone: the bearing itself where the problem has no lon/lat.
+double trueBearing(const MissionProblem &problem, Point2 at, double gridDeg);
 /// @brief The true bearing to write for a heading @p gridDeg held from @p from until @p to.t at @p speed: the true
 /// heading whose flight through the forecast (held true: its direction in the plane turns with the meridians along
 /// the way) ends nearest @p to (the planned segment's end), from trueBearing() at the start.
@@ -78,6 +80,9 @@ double trueBearingOfFlight(const MissionResult &result, const MissionProblem *pr
 /// waypoint), NaN where MissionWaypoint::heading is: what waypoints.csv, path.geojson, summary.json and Python write.
 /// @throws Error for a geographic mission with headings without @p problem.
 std::vector<double> trueHeadings(const MissionResult &result, const MissionProblem *problem);
+/// @brief A stint plan's bearings as TRUE bearings, each the one whose flight ends at its next surfacing
+/// (trueBearingOfFlight()); empty without stints. @throws Error for a geographic mission without @p problem.
+std::vector<double> trueStintBearings(const MissionResult &result, const MissionProblem *problem);
 /// @brief The held headings the uploads (goto list, targets file) write: each run of held headings of a leg as the
 /// fewest holds whose flights through the forecast pass every planned segment end of their span (at its time)
 /// within outputs.hold_tolerance metres (0: every segment), each with the true heading that ends nearest its span's

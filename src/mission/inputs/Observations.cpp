@@ -159,10 +159,10 @@ std::string comparedWith(const MissionSpec &m, const CorrectionParams &p, const 
     for (const DacObservation &o : dac)
         own += std::isfinite(o.depthBottom) ? 1 : 0;
     if (p.depthBottom > p.depthTop)
-        return std::string(own > 0 ? "the forecast averaged over each dive's own depths (" + std::to_string(own) +
-                                         " of " + std::to_string(dac.size()) + " DAC, within the dive profile's), " +
-                                         "else over "
-                                   : "the forecast averaged over ") +
+        return std::string(own > 0
+                               ? "the forecast averaged over each dive's own depths (" + std::to_string(own) + " of " +
+                                     std::to_string(dac.size()) + " DAC, within the dive profile's), " + "else over "
+                               : "the forecast averaged over ") +
                "the dive profile's " + text::number(p.depthTop, 4) + "-" + metresText(p.depthBottom);
     if (!m.current.isForecast())
         return "the flow at the glider's depth (" + metresText(p.depthTop) + ")";
@@ -205,8 +205,7 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
     // a newer surfacing without a valid fix: the glider was elsewhere by then (a surfacing lasts minutes)
     if (std::isfinite(o.newestSurfacing) && o.newestSurfacing > o.lastFix->time + 600.0)
         r.staleFix = "the newest surfacing (" + formatIsoTime(o.newestSurfacing) + ") gave no valid fix: the plan " +
-                     "departs from the last valid one, " +
-                     hoursText(o.newestSurfacing - o.lastFix->time) +
+                     "departs from the last valid one, " + hoursText(o.newestSurfacing - o.lastFix->time) +
                      " older; the glider has moved since (give the start where it is, or wait for a fix)";
     const auto mark = m.marks.find("start");
     const bool startIsTheFix = m.start.geographic && m.start.lonLat.lon == o.lastFix->at.lon &&
@@ -408,8 +407,8 @@ void MissionProblem::applyObservations(const GliderObservations *read)
         dac.push_back({t, q, c, std::nullopt});
         if (std::isfinite(r.depthMax))
         {
-            report.deepestDive = std::isfinite(report.deepestDive) ? std::max(report.deepestDive, r.depthMax)
-                                                                   : r.depthMax;
+            report.deepestDive =
+                std::isfinite(report.deepestDive) ? std::max(report.deepestDive, r.depthMax) : r.depthMax;
             if (ownDepths) // the forecast holds the dive profile's layers: each dive's own range, within them
             {
                 dac.back().depthTop = std::clamp(std::isfinite(r.depthMin) ? r.depthMin : 0.0, 0.0, p.depthBottom);

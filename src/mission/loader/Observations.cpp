@@ -21,7 +21,8 @@ void readObservations(const Reader &r, const YAML::Node &n, MissionSpec &m)
         r.checkMap(n, f, {"file", "cache", "length_scale", "time_scale", "error_ratio", "learn"});
         if (!n["file"] && !n["length_scale"] && !n["time_scale"] && !n["error_ratio"] && !n["learn"])
             r.fail(n, f + ".file",
-                   "missing: the glider's files (IOOS profile files or Slocum dba or binary files: a file, folder or pattern; a "
+                   "missing: the glider's files (IOOS profile files or Slocum dba or binary files: a file, folder or "
+                   "pattern; a "
                    "CSV; or an ERDDAP URL), or the "
                    "correction's parameters alone (for an execution's replan_observed)");
         if (n["file"])
