@@ -72,6 +72,15 @@ std::string compassPoint(double east, double north)
 }
 
 /// "8 DAC used (2026-03-14T00:40:00Z to 2026-03-14T10:10:00Z); rejected 2 after the departure"
+/// "; 1 DAC placed at the surfacing's fix (...)": what the reader says of what it kept
+std::string notesText(const ObservationReport &o)
+{
+    std::string s;
+    for (const auto &[what, n] : o.notes)
+        s += "; " + std::to_string(n) + " " + what;
+    return s;
+}
+
 std::string usedLine(const ObservationReport &o, const MissionSpec &m, const Units &u)
 {
     const CorrectionSummary &c = o.correction;
@@ -92,7 +101,7 @@ std::string usedLine(const ObservationReport &o, const MissionSpec &m, const Uni
            (from.empty() || c.used == 0 ? ""
             : c.used == 1               ? " (" + from + ")"
                                         : " (" + from + " to " + to + ")") +
-           (rejected.empty() ? "" : "; rejected" + rejected.substr(1));
+           (rejected.empty() ? "" : "; rejected" + rejected.substr(1)) + notesText(o);
 }
 
 /// "the glider measured 0.17 m/s (0.33 kn) less eastward and 0.05 m/s (0.10 kn) more northward current than

@@ -130,6 +130,9 @@ json observationsJson(const MissionProblem &problem)
         rejected["far from the mission"] = o->far;
     if (o->correction.older > 0)
         rejected["older than the most recent kept"] = o->correction.older;
+    json notes = json::object();
+    for (const auto &[what, n] : o->notes)
+        notes[what] = n;
     json fix = nullptr;
     if (o->lastFix)
         fix = {{"lon", o->lastFix->at.lon}, {"lat", o->lastFix->at.lat}, {"time_iso", formatIsoTime(o->lastFix->time)}};
@@ -161,6 +164,7 @@ json observationsJson(const MissionProblem &problem)
             {"platform", jtext(o->platform)},
             {"used", o->correction.used},
             {"rejected", rejected},
+            {"notes", notes},
             {"rms_innovation_before", jnum(o->correction.rmsBefore)},
             {"rms_innovation_after", jnum(o->correction.rmsAfter)},
             {"mean_innovation", {{"u", o->correction.meanInnovation.u}, {"v", o->correction.meanInnovation.v}}},

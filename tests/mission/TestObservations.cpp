@@ -19,6 +19,7 @@
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/mission/Observations.h"
 #include "ompl_glider/mission/Planning.h"
+#include "ompl_glider/output/Report.h"
 #include "../io/RealtimeDeployment.h"
 
 using namespace ompl_glider;
@@ -352,6 +353,7 @@ TEST(Observations, AStartFromAFixOlderThanTheNewestSurfacingIsWarned)
     // a deployment whose newest surfacing gave its fix: no warning
     std::string fine = realtime_test::dbaHeader("ru29-2026-074-0-0");
     fine += realtime_test::dbaRow(t0, 48.0, -52.30, 0, nan, nan, 0.5);
+    fine += realtime_test::dbaRow(t0 + 60, nan, nan, nan, 0.1, 0.0, 0.5); // no fix before its dive: at the surfacing
     fine += realtime_test::dbaRow(t0 + 3600, nan, nan, nan, nan, nan, 100.0);
     fine += realtime_test::dbaRow(t0 + 7200, 48.0, -52.25, 0, nan, nan, 0.5);
     fine += realtime_test::dbaRow(t0 + 7260, nan, nan, nan, 0.1, 0.0, 0.5);
@@ -359,4 +361,9 @@ TEST(Observations, AStartFromAFixOlderThanTheNewestSurfacingIsWarned)
     const MissionProblem q(
         missionOn(forecast, "start: {lon: -52.5, lat: 48.0}\nobservations: '" + folder.string() + "'\n"));
     EXPECT_TRUE(q.getSpec().observations->resumed->staleFix.empty()) << q.getSpec().observations->resumed->staleFix;
+    // the reader's note of the DAC placed at its surfacing reaches the report's correction lines
+    const MissionResult r = runMission(q);
+    const std::vector<std::string> lines = correctionLines(r);
+    ASSERT_FALSE(lines.empty());
+    EXPECT_NE(lines.front().find("1 DAC placed at the surfacing's fix"), std::string::npos) << lines.front();
 }

@@ -24,6 +24,7 @@ struct ObservationReport
     std::size_t files{0};                        ///< files read
     std::string platform;                        ///< the glider
     std::map<std::string, std::size_t> rejected; ///< by the reader, by reason
+    std::map<std::string, std::size_t> notes;    ///< the reader's notes of what it kept (GliderObservations::notes)
     std::size_t future{0};                       ///< rejected: measured after the plan's departure
     /// rejected: farther from the mission's area (its planning box) than 10 length scales (farDistance)
     std::size_t far{0};

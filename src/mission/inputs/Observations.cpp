@@ -355,6 +355,7 @@ void MissionProblem::applyObservations(const GliderObservations *read)
     report.files = o.files;
     report.platform = o.platform;
     report.rejected = o.rejected;
+    report.notes = o.notes;
     report.lastFix = o.lastFix;
     report.fixes = o.fixes;
     report.dac = o.dac;
