@@ -371,7 +371,7 @@ PageJson gliderJson(const MissionProblem &p)
     if (!o || !p.isGeographic())
         return nullptr;
     PageJson fixes = PageJson::array(), dac = PageJson::array();
-    for (const GliderFix &g : o->fixes)
+    for (const GliderFix &g : surfacingFixes(*o)) // the DAC's positions (mid-dive) are drawn as the DAC
         fixes.push_back({{"lat", g.at.lat}, {"lon", g.at.lon}, {"time", formatIsoTime(g.time)}});
     double fastest = 0.0;
     for (const DacRecord &d : o->dac)

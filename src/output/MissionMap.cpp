@@ -200,20 +200,8 @@ void addGliderHistory(MapRenderer &map, const MissionProblem &problem)
     if (!o || !problem.isGeographic())
         return;
     const MissionSpec &m = problem.getSpec();
-    // a DAC's position is no surfacing fix (IOOS files and ERDDAP put it at the middle of the dive)
-    const auto isDacPosition = [&](const GliderFix &f) {
-        return std::any_of(o->dac.begin(), o->dac.end(), [&](const DacRecord &d) {
-            return d.time == f.time && d.at.lon == f.at.lon && d.at.lat == f.at.lat;
-        });
-    };
-    std::vector<GliderFix> fixes;
-    for (const GliderFix &f : o->fixes)
-        if (!isDacPosition(f))
-            fixes.push_back(f);
-    // a source that gives positions only with its DAC (a CSV of DAC): those are where the glider was
-    const bool dacOnly = fixes.empty();
-    if (dacOnly)
-        fixes = o->fixes;
+    bool dacOnly = false;
+    const std::vector<GliderFix> fixes = surfacingFixes(*o, &dacOnly);
     MapPath track;
     track.label = "glider: " + std::to_string(fixes.size()) +
                   (dacOnly             ? " past positions (of its DAC)"

@@ -43,6 +43,11 @@ struct ObservationReport
     double deepestDive{std::numeric_limits<double>::quiet_NaN()};
 };
 
+/// @brief The glider's surfacing fixes of @p o: its fixes but the positions a source gives only for a DAC (IOOS files
+/// and ERDDAP put a DAC at the middle of its dive: no fix); where the source gives no other position (a CSV of DAC),
+/// every fix, and @p dacOnly (when given) says so. What the maps draw as the glider's track.
+std::vector<GliderFix> surfacingFixes(const ObservationReport &o, bool *dacOnly = nullptr);
+
 /// @brief The last fix of the glider's observations at @p path (IOOS profile files, Slocum dba files, a CSV or an
 /// ERDDAP URL): the one reader of it for the mission loader, forecastMission() (the command line's `--currents`
 /// and Python's plan() without a start); none when they report no position.

@@ -303,6 +303,22 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
     return o;
 }
 
+std::vector<GliderFix> surfacingFixes(const ObservationReport &o, bool *dacOnly)
+{
+    const auto isDacPosition = [&](const GliderFix &f) {
+        return std::any_of(o.dac.begin(), o.dac.end(), [&](const DacRecord &d) {
+            return d.time == f.time && d.at.lon == f.at.lon && d.at.lat == f.at.lat;
+        });
+    };
+    std::vector<GliderFix> fixes;
+    for (const GliderFix &f : o.fixes)
+        if (!isDacPosition(f))
+            fixes.push_back(f);
+    if (dacOnly)
+        *dacOnly = fixes.empty();
+    return fixes.empty() ? o.fixes : fixes;
+}
+
 std::string resumeNote(const MissionSpec &m)
 {
     if (!m.observations || !m.observations->resumed)
