@@ -968,6 +968,32 @@ observations_case("observations-csv-degc", "d.csv", "d.csv:1: 'u' is in 'degC': 
                   {"d.csv": "time,lon,lat,u (degC),v (degC)\n2026-03-15T06:00:00Z,-52.5,47.5,12,11\n"})
 observations_case("observations-dba-no-dac", "g.dba", "no usable depth-averaged current (sensors m_water_vx, m_water_vy",
                   {"g.dba": DBA + "1773554400 4730.0 -5230.0 NaN NaN\n"})
+# a Slocum's own binary files: cut short, their sensor list in a cache file that is not there, an encoding unknown
+def slocum_binary(version=5, factored=False, end=b"X"):
+    """A Slocum sbd file (big-endian) of the five sensors, one data cycle, its end tag @p end."""
+    sensors = [("m_present_time", "timestamp", 8), ("m_gps_lat", "lat", 8), ("m_gps_lon", "lon", 8),
+               ("m_water_vx", "m/s", 4), ("m_water_vy", "m/s", 4)]
+    head = ("dbd_label: DBD(dinkum_binary_data)file\nencoding_ver: %d\nnum_ascii_tags: 9\n"
+            "full_filename: ru29-2026-074-0-0\ntotal_num_sensors: 5\nsensors_per_cycle: 5\n"
+            "state_bytes_per_cycle: 2\nsensor_list_crc: 1a2b3c4d\nsensor_list_factored: %d\n" % (version, factored))
+    if not factored:
+        head += "".join("s: T %d %d %d %s %s\n" % (k, k, b, n, u) for k, (n, u, b) in enumerate(sensors))
+    known = b"sa" + struct.pack(">hfd", 0x1234, 123.456, 123456789.12345)
+    # one cycle: a new time and fix (state 2), no DAC (state 0)
+    cycle = b"d" + bytes([0b10101000, 0]) + struct.pack(">ddd", 1773554400.0, 4730.0, -5230.0)
+    return ("bytes", head.encode() + known + cycle + end)
+
+
+# (byte 404: the 361 bytes of the header and sensor list, the 16 known bytes, the cycle's 27: where the end tag is due)
+observations_case("observations-sbd-cut-short", "ru29-2026-074-0-0.sbd",
+                  "ru29-2026-074-0-0.sbd: byte 404: the file ends without its end tag 'X'",
+                  {"ru29-2026-074-0-0.sbd": slocum_binary(end=b"")})
+observations_case("observations-sbd-no-cache-file", "ru29-2026-074-0-0.sbd",
+                  "the sensor list is in the cache file '1a2b3c4d.cac' (sensor_list_factored: 1), found in none of the "
+                  "folders", {"ru29-2026-074-0-0.sbd": slocum_binary(factored=True)})
+observations_case("observations-sbd-encoding-unknown", "ru29-2026-074-0-0.sbd",
+                  "ru29-2026-074-0-0.sbd: unknown encoding version 9 (encoding_ver",
+                  {"ru29-2026-074-0-0.sbd": slocum_binary(version=9)})
 observations_case("observations-erddap-server-down", "http://127.0.0.1:1/erddap/tabledap/ru29.csvp?time,u",
                   "ERDDAP: cannot fetch 'http://127.0.0.1:1/erddap/tabledap/ru29.csvp?time,u'", extra=("--retries", "0"))
 observations_case("observations-erddap-file-type", "http://127.0.0.1:1/erddap/tabledap/ru29.htmlTable?time",
