@@ -106,9 +106,10 @@ std::string usedLine(const ObservationReport &o, const MissionSpec &m, const Uni
 
 /// "the glider measured 0.17 m/s (0.33 kn) less eastward and 0.05 m/s (0.10 kn) more northward current than
 /// forecast: in all 0.18 m/s (0.35 kn) towards the west-north-west (the mean over its 8 DAC)"
-std::string measuredLine(const CorrectionSummary &c, const Units &u)
+std::string measuredLine(const ObservationReport &o, const Units &u)
 {
-    const Velocity d = c.meanInnovation;
+    const CorrectionSummary &c = o.correction;
+    const Velocity d = o.meanInnovationEastNorth; // east and north: from true north, as every bearing written
     const double size = std::hypot(d.u, d.v);
     const std::string over = words("the mean over its %zu DAC", c.used);
     // below half a centimetre per second (or a field's millionth) the difference is no news to a pilot
@@ -155,7 +156,7 @@ std::vector<std::string> correctionLines(const MissionResult &r)
     lines.push_back(usedLine(o, r.spec, u));
     if (o.correction.used == 0)
         return lines;
-    lines.push_back(measuredLine(o.correction, u));
+    lines.push_back(measuredLine(o, u));
     // what the DAC were compared with: a DAC is an average over the dive, the forecast's surface current is not
     if (!o.comparedWith.empty())
         lines.push_back("the DAC were compared with " + o.comparedWith);

@@ -367,3 +367,25 @@ TEST(Observations, AStartFromAFixOlderThanTheNewestSurfacingIsWarned)
     ASSERT_FALSE(lines.empty());
     EXPECT_NE(lines.front().find("1 DAC placed at the surfacing's fix"), std::string::npos) << lines.front();
 }
+
+// The report's words of what the glider measured are from true north: a uniform error of the forecast of (0.1, 0.1)
+// m/s east and north, measured where the planning frame's grid north is 4-5 degrees off true north (its projection
+// centred 6 degrees of longitude away), is (0.1, 0.1) east and north again, not the frame's rotated components.
+TEST(Observations, TheMeasuredDifferenceIsSaidEastAndNorth)
+{
+    const std::string forecast = uniformForecast("en.nc", 0.1, 0.0);
+    const std::string dac = dacCsv("en.csv", 0.2, 0.1);
+    const MissionProblem p(missionOn(forecast, "projection: {lon0: -46.0, lat0: 48.0}\n"
+                                               "start: {lon: -52.09, lat: 48.0}\ndeparture: {time: 86400}\n"
+                                               "observations: {file: '" +
+                                                   dac + "', learn: false}\n"));
+    ASSERT_TRUE(p.observations());
+    const ObservationReport &o = *p.observations();
+    EXPECT_NEAR(o.meanInnovationEastNorth.u, 0.1, 1e-6);
+    EXPECT_NEAR(o.meanInnovationEastNorth.v, 0.1, 1e-6);
+    // in the frame the same difference is turned by the meridians' convergence there
+    const double turn = std::atan2(o.correction.meanInnovation.u, o.correction.meanInnovation.v) * 180.0 / M_PI - 45.0;
+    EXPECT_GT(std::abs(turn), 3.0) << turn;
+    // (its length alike but for the frame's east and north at the grid's nodes, where the forecast was turned)
+    EXPECT_NEAR(std::hypot(o.correction.meanInnovation.u, o.correction.meanInnovation.v), std::hypot(0.1, 0.1), 1e-5);
+}

@@ -30,7 +30,10 @@ struct ObservationReport
     std::size_t far{0};
     double farDistance{0.0};      ///< that distance (planning units)
     CorrectionSummary correction; ///< what the correction used, rejected and did (RMS innovation before / after)
-    CorrectionParams params;      ///< L, T, s_o / s_f as used (estimated ones in place of their priors)
+    /// correction.meanInnovation turned from the planning frame's x/y into east/north at the DAC's mean position
+    /// (the frame's grid north is not true north away from the projection's centre); field units
+    Velocity meanInnovationEastNorth;
+    CorrectionParams params; ///< L, T, s_o / s_f as used (estimated ones in place of their priors)
     /// An ensemble forecast: each member's weight, RMS innovation and coefficient (EnsembleLearning.h); empty: none
     std::vector<MemberScore> members;
     std::optional<GliderFix> lastFix; ///< the latest position reported

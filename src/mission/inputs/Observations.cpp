@@ -131,6 +131,27 @@ std::string farText(const MissionSpec &m, double distance)
            " from the mission's area (10 length scales)";
 }
 
+/// The planning frame's vector @p d in east and north components at the mean position of @p dac (the frame's axes
+/// there, LocalProjection's east and north directions); as it is without a projection.
+Velocity eastNorth(Velocity d, const std::vector<DacRecord> &dac, const LocalProjection *projection)
+{
+    if (!projection || dac.empty())
+        return d;
+    double lon = 0.0, lat = 0.0, ex = 1.0, ey = 0.0, nx = 0.0, ny = 1.0;
+    for (const DacRecord &r : dac)
+    {
+        lon += std::remainder(r.at.lon - dac.front().at.lon, 360.0); // across the antimeridian too
+        lat += r.at.lat;
+    }
+    lon = dac.front().at.lon + lon / static_cast<double>(dac.size());
+    lat /= static_cast<double>(dac.size());
+    projection->eastDirection(lon, lat, ex, ey);
+    projection->northDirection(lon, lat, nx, ny);
+    // d = E east + N north
+    const double det = ex * ny - ey * nx;
+    return {(d.u * ny - d.v * nx) / det, (ex * d.v - ey * d.u) / det};
+}
+
 /// "3.0 h", "2 d 4.5 h" of @p seconds
 std::string hoursText(double seconds)
 {
@@ -437,6 +458,7 @@ void MissionProblem::applyObservations(const GliderObservations *read)
     // the forecast the DAC make: corrected; an ensemble's members weighed by them and updated, then corrected
     const LearnedForecast learned = learnForecast(field_, members_, dac, p);
     report.correction = learned.correction;
+    report.meanInnovationEastNorth = eastNorth(report.correction.meanInnovation, o.dac, projection_.get());
     report.params = learned.correction.params;
     report.members = learned.members;
     if (report.correction.used == 0)
