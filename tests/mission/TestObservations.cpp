@@ -389,3 +389,30 @@ TEST(Observations, TheMeasuredDifferenceIsSaidEastAndNorth)
     // (its length alike but for the frame's east and north at the grid's nodes, where the forecast was turned)
     EXPECT_NEAR(std::hypot(o.correction.meanInnovation.u, o.correction.meanInnovation.v), std::hypot(0.1, 0.1), 1e-5);
 }
+
+// With a dive profile the forecast holds the layers down to its z_max: each DAC is compared with the forecast
+// averaged over its own dive's depths (a dba file's m_depth over the segment, 0-180 m: 0.12 m/s), not over the
+// profile's 0-200 m (0.10 m/s).
+TEST(Observations, WithADiveProfileEachDacIsComparedOverItsOwnDive)
+{
+    const std::string forecast = shearedForecast("sheared_dive.nc");
+    const fs::path folder = dir() / "own_dive_dba";
+    fs::create_directories(folder);
+    const double t0 = parseIsoTime("2026-03-15T12:00:00Z"), nan = std::nan("");
+    std::string text = realtime_test::dbaHeader("ru29-2026-074-0-0");
+    text += realtime_test::dbaRow(t0, 48.0, -52.30, 0, nan, nan, 0.0);
+    text += realtime_test::dbaRow(t0 + 3600, nan, nan, nan, nan, nan, 180.0);
+    text += realtime_test::dbaRow(t0 + 7200, 48.0, -52.25, 0, nan, nan, 0.0);
+    text += realtime_test::dbaRow(t0 + 7260, nan, nan, nan, 0.12, 0.0, 0.0);
+    std::ofstream((folder / "ru29-2026-074-0-0.dba").string()) << text;
+    const MissionProblem p(missionOn(forecast, "start: {lon: -52.5, lat: 48.0}\ndive_profile: {z_min: 0, z_max: 200}\n"
+                                               "observations: {file: '" +
+                                                   folder.string() + "', learn: false}\n"));
+    ASSERT_TRUE(p.observations());
+    const ObservationReport &o = *p.observations();
+    ASSERT_EQ(o.dac.size(), 1u);
+    EXPECT_EQ(o.dac[0].depthMax, 180.0);
+    EXPECT_NEAR(o.correction.rmsBefore, 0.0, 1e-6);
+    EXPECT_EQ(o.deepestDive, 180.0);
+    EXPECT_NE(o.comparedWith.find("each dive's own depths (1 of 1 DAC"), std::string::npos) << o.comparedWith;
+}
