@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iomanip>
 #include <string>
+#include <vector>
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Time.h"
@@ -34,27 +35,41 @@ fs::path dir()
     return d;
 }
 
-/// A uniform current (u, v) on a lon/lat grid over 5 days, hourly, as a CF file.
-std::string uniformForecast(const std::string &name, double u, double v)
+/// A current on a lon/lat grid over 5 days, hourly, as a CF file: u = @p u + @p shear z (z the depth, m) and @p v, the
+/// same everywhere and always; with @p depths a depth axis of those layers (double values), else a 2-D field (floats,
+/// as many forecasts store them).
+std::string gridForecast(const std::string &name, double u, double v, const std::vector<double> &depths = {},
+                         double shear = 0.0)
 {
     const std::string path = (dir() / name).string();
-    int nc = 0, dt = 0, dy = 0, dx = 0, vt = 0, vy = 0, vx = 0, vu = 0, vv = 0;
+    int nc = 0, dt = 0, dz = 0, dy = 0, dx = 0, vt = 0, vz = 0, vy = 0, vx = 0, vu = 0, vv = 0;
     EXPECT_EQ(nc_create(path.c_str(), NC_CLOBBER, &nc), NC_NOERR);
-    const int nt = 121, ny = 21, nx = 41;
+    const int nt = 121, ny = 21, nx = 41, nz = depths.empty() ? 1 : static_cast<int>(depths.size());
     nc_def_dim(nc, "time", nt, &dt);
+    if (!depths.empty())
+        nc_def_dim(nc, "depth", nz, &dz);
     nc_def_dim(nc, "lat", ny, &dy);
     nc_def_dim(nc, "lon", nx, &dx);
     nc_def_var(nc, "time", NC_DOUBLE, 1, &dt, &vt);
+    if (!depths.empty())
+        nc_def_var(nc, "depth", NC_DOUBLE, 1, &dz, &vz);
     nc_def_var(nc, "lat", NC_DOUBLE, 1, &dy, &vy);
     nc_def_var(nc, "lon", NC_DOUBLE, 1, &dx, &vx);
-    const int dims[] = {dt, dy, dx};
-    nc_def_var(nc, "u", NC_FLOAT, 3, dims, &vu);
-    nc_def_var(nc, "v", NC_FLOAT, 3, dims, &vv);
+    const std::vector<int> dims = depths.empty() ? std::vector<int>{dt, dy, dx} : std::vector<int>{dt, dz, dy, dx};
+    const nc_type type = depths.empty() ? NC_FLOAT : NC_DOUBLE;
+    nc_def_var(nc, "u", type, static_cast<int>(dims.size()), dims.data(), &vu);
+    nc_def_var(nc, "v", type, static_cast<int>(dims.size()), dims.data(), &vv);
     const auto text = [&](int var, const char *k, const std::string &s) {
         nc_put_att_text(nc, var, k, s.size(), s.c_str());
     };
     text(vt, "units", "hours since 2026-03-15 00:00:00");
     text(vt, "standard_name", "time");
+    if (!depths.empty())
+    {
+        text(vz, "units", "m");
+        text(vz, "positive", "down");
+        text(vz, "standard_name", "depth");
+    }
     text(vy, "units", "degrees_north");
     text(vx, "units", "degrees_east");
     text(vu, "units", "m/s");
@@ -70,14 +85,33 @@ std::string uniformForecast(const std::string &name, double u, double v)
     for (int i = 0; i < nx; ++i)
         x[i] = -53.0 + 0.05 * i;
     nc_put_var_double(nc, vt, t.data());
+    if (!depths.empty())
+        nc_put_var_double(nc, vz, depths.data());
     nc_put_var_double(nc, vy, y.data());
     nc_put_var_double(nc, vx, x.data());
-    std::vector<float> U(static_cast<std::size_t>(nt) * ny * nx, static_cast<float>(u)),
-        V(U.size(), static_cast<float>(v));
-    nc_put_var_float(nc, vu, U.data());
-    nc_put_var_float(nc, vv, V.data());
+    const std::size_t layer = static_cast<std::size_t>(ny) * nx;
+    std::vector<double> U(static_cast<std::size_t>(nt) * nz * layer), V(U.size(), v);
+    for (std::size_t k = 0; k < U.size(); ++k)
+        U[k] = u + shear * (depths.empty() ? 0.0 : depths[(k / layer) % static_cast<std::size_t>(nz)]);
+    if (depths.empty()) // floats: the file's values are the floats of u and v
+    {
+        const std::vector<float> Uf(U.begin(), U.end()), Vf(V.begin(), V.end());
+        nc_put_var_float(nc, vu, Uf.data());
+        nc_put_var_float(nc, vv, Vf.data());
+    }
+    else
+    {
+        nc_put_var_double(nc, vu, U.data());
+        nc_put_var_double(nc, vv, V.data());
+    }
     nc_close(nc);
     return path;
+}
+
+/// A uniform current (u, v) on a lon/lat grid over 5 days, hourly, as a CF file (floats).
+std::string uniformForecast(const std::string &name, double u, double v)
+{
+    return gridForecast(name, u, v);
 }
 
 /// Eight DAC of (u, v) over the 12 h before 2026-03-16T00:00Z along lat 48.0 from lon -52.30 to -52.09 (the last fix);
@@ -248,54 +282,7 @@ namespace
 /// its mean over 0-180 m is its value at 90 m, 0.12 m/s), v = 0, as a CF file with a depth axis.
 std::string shearedForecast(const std::string &name)
 {
-    const std::string path = (dir() / name).string();
-    int nc = 0, dt = 0, dz = 0, dy = 0, dx = 0, vt = 0, vz = 0, vy = 0, vx = 0, vu = 0, vv = 0;
-    EXPECT_EQ(nc_create(path.c_str(), NC_CLOBBER, &nc), NC_NOERR);
-    const int nt = 121, nz = 3, ny = 21, nx = 41;
-    nc_def_dim(nc, "time", nt, &dt);
-    nc_def_dim(nc, "depth", nz, &dz);
-    nc_def_dim(nc, "lat", ny, &dy);
-    nc_def_dim(nc, "lon", nx, &dx);
-    nc_def_var(nc, "time", NC_DOUBLE, 1, &dt, &vt);
-    nc_def_var(nc, "depth", NC_DOUBLE, 1, &dz, &vz);
-    nc_def_var(nc, "lat", NC_DOUBLE, 1, &dy, &vy);
-    nc_def_var(nc, "lon", NC_DOUBLE, 1, &dx, &vx);
-    const int dims[] = {dt, dz, dy, dx};
-    nc_def_var(nc, "u", NC_DOUBLE, 4, dims, &vu);
-    nc_def_var(nc, "v", NC_DOUBLE, 4, dims, &vv);
-    const auto text = [&](int var, const char *k, const std::string &s) {
-        nc_put_att_text(nc, var, k, s.size(), s.c_str());
-    };
-    text(vt, "units", "hours since 2026-03-15 00:00:00");
-    text(vt, "standard_name", "time");
-    text(vz, "units", "m");
-    text(vz, "positive", "down");
-    text(vz, "standard_name", "depth");
-    text(vy, "units", "degrees_north");
-    text(vx, "units", "degrees_east");
-    text(vu, "units", "m/s");
-    text(vu, "standard_name", "eastward_sea_water_velocity");
-    text(vv, "units", "m/s");
-    text(vv, "standard_name", "northward_sea_water_velocity");
-    nc_enddef(nc);
-    std::vector<double> t(nt), z{0.0, 100.0, 200.0}, y(ny), x(nx);
-    for (int i = 0; i < nt; ++i)
-        t[i] = i;
-    for (int j = 0; j < ny; ++j)
-        y[j] = 47.5 + 0.05 * j;
-    for (int i = 0; i < nx; ++i)
-        x[i] = -53.0 + 0.05 * i;
-    nc_put_var_double(nc, vt, t.data());
-    nc_put_var_double(nc, vz, z.data());
-    nc_put_var_double(nc, vy, y.data());
-    nc_put_var_double(nc, vx, x.data());
-    std::vector<double> U(static_cast<std::size_t>(nt) * nz * ny * nx), V(U.size(), 0.0);
-    for (std::size_t k = 0; k < U.size(); ++k)
-        U[k] = 0.3 - 0.002 * z[(k / (static_cast<std::size_t>(ny) * nx)) % nz];
-    nc_put_var_double(nc, vu, U.data());
-    nc_put_var_double(nc, vv, V.data());
-    nc_close(nc);
-    return path;
+    return gridForecast(name, 0.3, 0.0, {0.0, 100.0, 200.0}, -0.002);
 }
 } // namespace
 
