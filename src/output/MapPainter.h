@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -155,6 +156,10 @@ private:
     void drawVectorEntries();
     /// The grid fill's colour bar from 0 to 1 and its label.
     void drawFillBar();
+    /// A colour bar at the legend's place: kBarSteps boxes of @p colourOfStep(k), framed (the fill's and the speed's)
+    void drawBar(const std::function<Rgba(int)> &colourOfStep);
+    static constexpr int kBarSteps = 60;
+    static constexpr double kBarWidth = 150.0, kBarHeight = 12.0;
     /// An arrow of a round speed (1, 2, 5 x 10^k at most @p top) at arrowScale() in the current source, from (lx_ + 2,
     /// ly_); returns the speed's text ("0.5 m/s (0.97 kn)").
     std::string keyArrow(double top);

@@ -100,22 +100,28 @@ void MapPainter::drawVectorEntries()
     }
 }
 
+void MapPainter::drawBar(const std::function<Rgba(int)> &colourOfStep)
+{
+    // kBarSteps boxes of the colours, framed
+    for (int k = 0; k < kBarSteps; ++k)
+    {
+        setColour(cr, colourOfStep(k));
+        cairo_rectangle(cr, lx_ + k * kBarWidth / kBarSteps, ly_, kBarWidth / kBarSteps + 0.5, kBarHeight);
+        cairo_fill(cr);
+    }
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    cairo_set_line_width(cr, 0.8);
+    cairo_rectangle(cr, lx_, ly_, kBarWidth, kBarHeight);
+    cairo_stroke(cr);
+}
+
 void MapPainter::drawFillBar()
 {
     const MapGridFill &f = *map.fill_;
     legendLabel(lx_, f.label, 12, 16);
     ly_ += 12;
-    const double bw = 150, bh = 12;
-    for (int k = 0; k < 60; ++k)
-    {
-        setColour(cr, fillColour((k + 0.5) / 60.0));
-        cairo_rectangle(cr, lx_ + k * bw / 60, ly_, bw / 60 + 0.5, bh);
-        cairo_fill(cr);
-    }
-    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-    cairo_set_line_width(cr, 0.8);
-    cairo_rectangle(cr, lx_, ly_, bw, bh);
-    cairo_stroke(cr);
+    const double bw = kBarWidth, bh = kBarHeight;
+    drawBar([](int k) { return fillColour((k + 0.5) / kBarSteps); });
     plainText(cr, lx_, ly_ + bh + 13, "0", 11, false, 0.5);
     plainText(cr, lx_ + bw / 2, ly_ + bh + 13, "0.5", 11, false, 0.5);
     plainText(cr, lx_ + bw, ly_ + bh + 13, "1", 11, false, 0.5);
@@ -204,17 +210,8 @@ void MapPainter::drawColourBar()
                                                                : options.fieldWord + " speed";
     plainText(cr, lx_, ly_ + 4, label, 12);
     ly_ += 12;
-    const double bw = 150, bh = 12;
-    for (int k = 0; k < 60; ++k)
-    {
-        setColour(cr, speedColour(k / 59.0));
-        cairo_rectangle(cr, lx_ + k * bw / 60, ly_, bw / 60 + 0.5, bh);
-        cairo_fill(cr);
-    }
-    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-    cairo_set_line_width(cr, 0.8);
-    cairo_rectangle(cr, lx_, ly_, bw, bh);
-    cairo_stroke(cr);
+    const double bw = kBarWidth, bh = kBarHeight;
+    drawBar([](int k) { return speedColour(k / (kBarSteps - 1.0)); });
     plainText(cr, lx_, ly_ + bh + 13, "0", 11, false, 0.5);
     plainText(cr, lx_ + bw, ly_ + bh + 13,
               fmt(vmax_) + (options.speedInMetresPerSecond ? " (" + fmt(vmax_ * 3600.0 / 1852.0) + " kn)" : ""), 11,
