@@ -83,9 +83,10 @@ private:
 
 /// The point one step of length @p h1 back in time from (px, py) at time pt, heading (ux, uy), with the current
 /// @p cm at the step's midpoint. Near a moving forbidden region (drifting ice) T is not the front at the path's
-/// time: a step along grad T may enter the region. Then the heading turns, 15 degrees at a time either way, to the
-/// nearest one whose step ends where the region is not and the front came (a local repair; the legs are checked
-/// again later). Unchanged when no such heading exists.
+/// time: a step along grad T may enter the region; along an island's edge the discrete normal may point into it
+/// (the nodes within the clearance are never reached). Where a step ends in a region or where the front never came,
+/// the heading turns, 15 degrees at a time either way, to the nearest one whose step ends where the region is not
+/// and the front came (a local repair; the legs are checked again later). Unchanged when no such heading exists.
 Point2 stepBack(const Reachability &r, const BacktrackSetup &s, double px, double py, double pt, double h1,
                 const Velocity &cm, double ux, double uy)
 {
@@ -94,7 +95,7 @@ Point2 stepBack(const Reachability &r, const BacktrackSetup &s, double px, doubl
     const auto blocked = [&](double x, double y, double t) {
         return s.environment && !s.environment->pointFree(x, y, t);
     };
-    if (blocked(qx, qy, pt - h1))
+    if (blocked(qx, qy, pt - h1) || !std::isfinite(r.arrivalAt(qx, qy)))
         for (int k = 1; k <= 12; ++k)
         {
             bool found = false;
