@@ -85,6 +85,7 @@ std::shared_ptr<const ompl_glider::SettingWords> flagWords()
                                                            {"current.variables.depth", "--depth-var"},
                                                            {"current.variables.time", "--time-var"},
                                                            {"current.velocity_units", "--velocity-units"},
+                                                           {"current.max_speed", "--max-current-speed"},
                                                            {"current.time_units", "--time-units"},
                                                            {"current.steady_record", "--steady-record"},
                                                            {"current.zero_velocity_land", "--no-zero-land"},

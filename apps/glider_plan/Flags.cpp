@@ -14,6 +14,7 @@
 
 #include "FlagText.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/UnitConversion.h"
 #include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/mission/MissionSpec.h"
@@ -169,9 +170,8 @@ void defineRouteFlags(CLI::App &app, Flags &f)
     // the range is checked once, in the library's overrides (Overrides.h), for the flag and Python's keyword alike
     app.add_option("--sectors", f.sectors, "lattice connectivity 1..5 (default 3)")->group(built);
     app.add_option("--time-limit", f.timeLimit,
-                   "planner time limit in seconds, at most 1e6 (default: none for the lattice planners, 10 s for the "
+                   "planner time limit in seconds, 0..1e6 (default and 0: none for the lattice planners, 10 s for the "
                    "sampling planners, which use all of it)")
-        ->check(CLI::Range(1e-3, ompl_glider::kMaxTimeLimit))
         ->group(built);
     app.add_flag("--no-smooth", f.noSmooth, "skip path smoothing")->group(built);
     app.add_flag("--no-refine", f.noRefine, "skip waypoint refinement")->group(built);
@@ -404,6 +404,21 @@ void defineForecastFlags(CLI::App &app, Flags &f)
                 }
             },
             "UNITS"))
+        ->group(nc);
+    app.add_option_function<std::string>(
+           "--max-current-speed",
+           [&fc](const std::string &v) {
+               try
+               {
+                   fc.current.maxSpeed = parseSpeed(v);
+               }
+               catch (const Error &e)
+               {
+                   throw UsageError{"--max-current-speed: " + std::string(e.what())};
+               }
+           },
+           "the fastest current believed in the forecast: m/s, or e.g. '600 m/s', '1000 kn' (default 300 m/s, where "
+           "a few nodes continuous with the flow around them may be faster: beside a vortex's core)")
         ->group(nc);
     app.add_option("--time-units", fc.current.timeUnits,
                    "units of the time variable in place of the file's, e.g. \"days since 2026-01-15\" (for a time "

@@ -4,15 +4,20 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
+#if OMPL_GLIDER_WITH_NETCDF
+#include "ompl_glider/io/UnitConversion.h"
+#endif
 #include "Quantity.h"
 
 namespace ompl_glider
 {
 double parseLength(const std::string &text, double metresPerUnit, bool unitKnown)
 {
-    const std::string expected =
-        "expected a length >= 0: a number in the mission's length unit, or e.g. '500 m', '2 km'; got '" + text + "'";
+    const std::string expected = "expected a length >= 0: a number in the mission's length unit, or e.g. '500 m', "
+                                 "'2 km', '20 mi', '65000 ft'; got '" +
+                                 text + "'";
     double value = 0.0;
     std::string unit;
     if (!io_detail::splitQuantity(text, value, unit))
@@ -25,7 +30,24 @@ double parseLength(const std::string &text, double metresPerUnit, bool unitKnown
     else if (unit == "nmi")
         metres = 1852.0;
     else if (!unit.empty())
+    {
+#if OMPL_GLIDER_WITH_NETCDF
+        // any length UDUNITS-2 reads: "500 cm", "20 mi", "65000 ft", "3 nautical_miles"
+        try
+        {
+            const LinearConversion c = lengthToMetres(unit);
+            if (c.offset != 0.0 || !(c.factor > 0.0))
+                throw Error(expected);
+            metres = c.factor;
+        }
+        catch (const Error &e)
+        {
+            throw Error(expected + " (" + e.what() + ")");
+        }
+#else
         throw Error(expected);
+#endif
+    }
     if (!std::isfinite(value) || !(value >= 0.0))
         throw Error(expected);
     if (unit.empty())
@@ -38,5 +60,31 @@ double parseLength(const std::string &text, double metresPerUnit, bool unitKnown
     if (!std::isfinite(v))
         throw Error(expected);
     return v;
+}
+
+double parseSpeed(const std::string &text)
+{
+    const std::string expected =
+        "expected a speed > 0: a number in m/s, or e.g. '500 m/s', '1000 kn'; got '" + text + "'";
+    double value = 0.0;
+    std::string unit;
+    if (!io_detail::splitQuantity(text, value, unit) || !std::isfinite(value) || !(value > 0.0))
+        throw Error(expected);
+    if (unit.empty() || unit == "m/s")
+        return value;
+#if OMPL_GLIDER_WITH_NETCDF
+    try
+    {
+        const LinearConversion c = velocityToMetresPerSecond(unit);
+        const double v = c(value);
+        if (c.offset == 0.0 && std::isfinite(v) && v > 0.0)
+            return v;
+    }
+    catch (const Error &e)
+    {
+        throw Error(expected + " (" + e.what() + ")");
+    }
+#endif
+    throw Error(expected);
 }
 } // namespace ompl_glider

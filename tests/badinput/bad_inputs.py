@@ -671,7 +671,8 @@ for name, args, phrase in [
         ("flag-grid-zero", ["--grid-size", "0"], "--grid-size"),
         ("flag-grid-tiny", ["--grid-size", "1e-4"], "--grid-size"),
         ("flag-sectors-0", ["--sectors", "0"], "--sectors"),
-        ("flag-time-limit-huge", ["--time-limit", "1e10"], "--time-limit"),
+        ("flag-time-limit-huge", ["--time-limit", "1e10"], "--time-limit: at most 1e6 s (11.6 days), got 1e+10"),
+        ("flag-time-limit-negative", ["--time-limit", "-1"], "--time-limit: expected a number in 0..1e6 s"),
         ("flag-request-timeout-huge", ["--request-timeout", "9.3e18"], "at most 1e6"),
         ("flag-departure-huge", ["--departure", "1e16"], "departure"),
         ("flag-departure-text", ["--departure", "noon"], "--departure"),
@@ -1017,6 +1018,25 @@ yaml_case("no-path-vortex-fallback-time-limit",
 nc_case("nc-velocity-1e30", forecast(u="1e30"), "NetCDF file 'f.nc': variable 'u' holds 1e+30 m/s at (j, i) = (0, 0)")
 nc_case("nc-velocity-1e38-one-node", forecast(u=", ".join(["0.1"] * 50 + ["1e38"] + ["0.1"] * 57)),
         "variable 'u' holds 1e+38 m/s at (j, i) = (2, 2), lon -52.6, lat 47.4, record 1 of 'time'")
+# a lone spike far faster than the flow around it: refused, naming the bound and how to raise it
+nc_case("nc-velocity-473-one-node", forecast(u=", ".join(["0.1"] * 50 + ["-473.867"] + ["0.1"] * 57)),
+        "variable 'u' holds -473.867 m/s at (j, i) = (2, 2), lon -52.6, lat 47.4, record 1 of 'time': faster than any "
+        "current or wind (more than 300 m/s)")
+nc_case("nc-velocity-473-names-the-flag", forecast(u=", ".join(["0.1"] * 50 + ["-473.867"] + ["0.1"] * 57)),
+        "if the speeds are real, raise the bound with --max-current-speed")
+# the bound given lower than the flow: the flag named
+nc_case("nc-velocity-above-the-bound-given", forecast(u="0.5"), "faster than the bound given (more than 0.2 m/s)",
+        extra=("--max-current-speed", "0.2"))
+nc_case("flag-max-current-speed-not-a-speed", forecast(), "--max-current-speed: expected a speed > 0",
+        extra=("--max-current-speed", "3 km"))
+case("yaml-max-speed-not-a-speed", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:1: field 'current.max_speed': expected a speed > 0",
+     {"f.cdl": forecast(), "m.yaml": "current: {type: netcdf, file: f.nc, max_speed: -3}\n"
+                                     "start: {lon: -52.9, lat: 47.1}\ngoal: {lon: -52.1, lat: 47.9}\n"})
+case("yaml-max-speed-analytic", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:3: field 'current.max_speed': only for type",
+     {"m.yaml": MISSION.replace("current: {type: uniform, parameters: {u: 0.1, v: 0.0}}",
+                                "current: {type: uniform, parameters: {u: 0.1, v: 0.0},\n  max_speed: 5}")})
 case("yaml-velocity-1e30", ["--mission", "m.yaml", "--out", "{out}"], 2, "variable 'u' holds 1e+30 m/s",
      {"f.cdl": forecast(u="1e30"), "m.yaml": "current: {type: netcdf, file: f.nc}\nstart: {lon: -52.9, lat: 47.1}\n"
                                              "goal: {lon: -52.1, lat: 47.9}\n"})

@@ -20,7 +20,8 @@ target_link_libraries(test_current_gridded_agreement INTERFACE netCDF::netcdf)
 glider_add_test(test_current_netcdf_checks
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfBadFiles.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfClassicSize.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfGridAngle.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/TestNetCdfGridAngle.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/TestFastNodes.cpp)
 target_link_libraries(test_current_netcdf_checks INTERFACE netCDF::netcdf)
 target_include_directories(test_current_netcdf_checks INTERFACE ${PROJECT_SOURCE_DIR}/src/current)
 # glider_plan on steady files, undated time axes and mislabelled velocity units

@@ -269,3 +269,36 @@ TEST(SettingRanges, AnOverrideTakesAndRefusesTheSameValuesInTheSameWords)
         }
     }
 }
+
+TEST(SettingRanges, ALengthTakesAnyLengthUnitAndRefusesOthersNamingThem)
+{
+    // the mission's length unit is 1 km: each length is read in metres through its unit (UDUNITS-2), then in km
+    const std::string base = kRangesBase + "units: {length_m: 1000, time_s: 3600}\n";
+    for (const auto &[given, metres] : std::vector<std::pair<std::string, double>>{{"500 cm", 5.0},
+                                                                                   {"20 mi", 20 * 1609.344},
+                                                                                   {"65000 ft", 65000 * 0.3048},
+                                                                                   {"2 km", 2000.0},
+                                                                                   {"3 nmi", 3 * 1852.0},
+                                                                                   {"1500m", 1500.0}})
+    {
+        const MissionSpec m = parseMission(base + "observations: {length_scale: " + given + "}\n", "m.yaml");
+        ASSERT_TRUE(m.observations) << given;
+        EXPECT_NEAR(m.observations->lengthScale, metres / 1000.0, 1e-12 * metres) << given;
+        EXPECT_NEAR(settingFromText("safety.keep_off", given, m), metres / 1000.0, 1e-12 * metres) << given;
+    }
+    for (const auto &[given, phrase] :
+         std::vector<std::pair<std::string, std::string>>{{"3 h", "expected a length >= 0"},
+                                                          {"20 furlongs per fortnight", "expected a length >= 0"},
+                                                          {"20 quux", "expected a length >= 0"}})
+        try
+        {
+            (void)parseMission(base + "observations: {length_scale: " + given + "}\n", "m.yaml");
+            ADD_FAILURE() << given << " accepted as a length";
+        }
+        catch (const Error &e)
+        {
+            EXPECT_NE(std::string(e.what()).find("m.yaml:9: field 'observations.length_scale': " + phrase),
+                      std::string::npos)
+                << e.what();
+        }
+}

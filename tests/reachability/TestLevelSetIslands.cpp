@@ -61,7 +61,8 @@ Island bar(double cx, double cy, double r, double w, double turn)
 {
     Island s{{}, cx, cy, r};
     const double c = std::cos(turn), sn = std::sin(turn);
-    for (const auto &[a, b] : std::vector<std::pair<double, double>>{{-r, -w / 2}, {r, -w / 2}, {r, w / 2}, {-r, w / 2}})
+    for (const auto &[a, b] :
+         std::vector<std::pair<double, double>>{{-r, -w / 2}, {r, -w / 2}, {r, w / 2}, {-r, w / 2}})
         s.points.emplace_back(cx + a * c - b * sn, cy + a * sn + b * c);
     return s;
 }
@@ -83,9 +84,9 @@ Case randomCase(std::mt19937 &rng, int index)
     {
         const double cx = in(2.2, 7.8), cy = in(-3.0, 3.0), r = in(0.35, 0.9), turn = in(0.0, 2.0 * M_PI);
         const int kind = static_cast<int>(u(rng) * 3.0);
-        const Island s = kind == 0 ? regular(cx, cy, r, 12 + static_cast<int>(u(rng) * 30), turn)
-                                   : kind == 1 ? hook(cx, cy, r, in(0.12, 0.25), turn)
-                                               : bar(cx, cy, r, in(0.08, 0.2), turn);
+        const Island s = kind == 0   ? regular(cx, cy, r, 12 + static_cast<int>(u(rng) * 30), turn)
+                         : kind == 1 ? hook(cx, cy, r, in(0.12, 0.25), turn)
+                                     : bar(cx, cy, r, in(0.08, 0.2), turn);
         bool clear = std::hypot(cx - sx, cy - sy) > r + 0.4 && std::hypot(cx - gx, cy - gy) > r + 0.4;
         for (const Island &o : islands)
             clear = clear && std::hypot(cx - o.cx, cy - o.cy) > r + o.r + 0.3;

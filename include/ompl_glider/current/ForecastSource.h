@@ -44,6 +44,7 @@ enum class ForecastOption
     Angle,            ///< the grid angle's variable
     Mask,             ///< the land/sea mask's variable
     DepthAverage,     ///< the depth average's bounds
+    MaxSpeed,         ///< the fastest current believed
 };
 
 /// @brief What a mission asks of a gridded source: where the forecast is, how to read it, and which part (the
@@ -57,7 +58,8 @@ struct ForecastRequest
     std::map<std::string, std::string> variables;
     bool zeroVelocityLand{true}; ///< a node still (u = v = 0) in every record of the trip is land (source's rules)
     std::optional<std::pair<double, double>> depthAverage; ///< the current averaged over [top, bottom] metres
-    std::string velocityUnits;               ///< overrides the velocities' units (any velocity UDUNITS-2 reads)
+    std::string velocityUnits; ///< overrides the velocities' units (any velocity UDUNITS-2 reads)
+    double maxSpeed{std::numeric_limits<double>::quiet_NaN()}; ///< the fastest current believed (m/s; NaN: default)
     std::string timeUnits;                   ///< overrides the time axis' units ("days since 2026-01-15")
     std::optional<std::size_t> steadyRecord; ///< plan on this record (0-based) only, as a steady field
 

@@ -43,8 +43,11 @@ struct NetCdfCurrentOptions
     CoordinateMode coordinates{CoordinateMode::Auto}; ///< how to read x/y
     std::string velocityUnits; ///< overrides the units attribute of u and v: any velocity UDUNITS-2 reads ("m/s",
                                ///< "cm s-1", "knots", "km/h"; UnitConversion.h)
-    std::string timeUnits;     ///< overrides the units attribute of the time variable: "<unit> since <date>"
-                               ///< ("days since 2026-01-15"), e.g. for an axis in "month", "hours" or without units
+    /// the fastest current believed (m/s; NaN: 300 m/s, where a few fast nodes continuous with their neighbours
+    /// pass, e.g. beside a vortex's core); a node faster than it is refused (a fill value not declared, wrong units)
+    double maxSpeed{std::numeric_limits<double>::quiet_NaN()};
+    std::string timeUnits; ///< overrides the units attribute of the time variable: "<unit> since <date>"
+                           ///< ("days since 2026-01-15"), e.g. for an axis in "month", "hours" or without units
     std::optional<std::size_t> steadyRecord; ///< read only this time record (0-based) and plan on it as a steady
                                              ///< field (dated by the record's time when the axis is dated)
 

@@ -136,7 +136,9 @@ struct CurrentSpec
     /// gridded: the current averaged over [top, bottom] metres (ForecastRequest::depthAverage)
     std::optional<std::pair<double, double>> depthAverage;
     std::string velocityUnits; ///< gridded: overrides the units of u and v (any velocity UDUNITS-2 reads)
-    std::string timeUnits;     ///< gridded: overrides the units of the time variable ("days since 2026-01-15")
+    /// gridded: the fastest current believed, m/s (NaN: 300 m/s, a few fast nodes continuous with the flow passing)
+    double maxSpeed{std::numeric_limits<double>::quiet_NaN()};
+    std::string timeUnits; ///< gridded: overrides the units of the time variable ("days since 2026-01-15")
     std::optional<std::size_t> steadyRecord; ///< gridded: plan on this time record only, as a steady field
     /// An ensemble (`current: {ensemble: [...]}`): its members, each a source of this kind (the first is also this
     /// spec's own fields, for names, calendar and messages); empty: a single source. The planning field is the

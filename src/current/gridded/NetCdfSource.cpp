@@ -36,7 +36,8 @@ const std::vector<std::pair<std::string, ForecastOption>> &readerFields()
         {"region", ForecastOption::Region},
         {"angleName", ForecastOption::Angle},
         {"maskName", ForecastOption::Mask},
-        {"depthAverage", ForecastOption::DepthAverage}};
+        {"depthAverage", ForecastOption::DepthAverage},
+        {"maxSpeed", ForecastOption::MaxSpeed}};
     return fields;
 }
 
@@ -111,6 +112,7 @@ NetCdfCurrentOptions readerOptions(const ForecastRequest &r)
     o.zeroVelocityLand = r.zeroVelocityLand;
     o.depthAverage = r.depthAverage;
     o.velocityUnits = r.velocityUnits;
+    o.maxSpeed = r.maxSpeed;
     o.timeUnits = r.timeUnits;
     o.steadyRecord = r.steadyRecord;
     o.field.xy = r.xy;

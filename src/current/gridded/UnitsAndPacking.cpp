@@ -1,7 +1,9 @@
 // Units (velocities to m/s, Cartesian axes to metres, both with UDUNITS-2: UnitConversion.h) and packing (scale_factor
 // / add_offset, fill values and valid ranges compared on the packed value).
 #include <cctype>
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "GriddedInternal.h"
 #include "../../io/NumberText.h"
@@ -44,22 +46,78 @@ LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, 
     return cu;
 }
 
+namespace
+{
+/// The smallest magnitude of a fill value models write (-999): a node this fast is a fill value not declared.
+constexpr double kFillSize = 999.0;
+/// A fast node is continuous with its neighbours when one of them is at least this fraction of its speed.
+constexpr double kContinuity = 0.1;
+/// Fast nodes are few when at most this fraction of a record's water nodes (else the units are off across the field).
+constexpr double kFewFraction = 0.01;
+
+/// The fast nodes of one record and layer-stack that read as a flow's (beside a vortex's core, say), not garbage:
+/// finite, below a fill value's size, each with a neighbour (of the 8 around it, same layer and record, in water)
+/// at least a tenth as fast, and at most 1 % of the record's water nodes (at least 8). Empty @p fast: nothing to say.
+bool fastNodesAreFlow(const GriddedData &g, std::size_t first, std::size_t perTime,
+                      const std::vector<std::size_t> &fast)
+{
+    const std::size_t nh = g.nx * g.ny;
+    std::size_t waterNodes = 0;
+    for (std::size_t n = 0; n < perTime; ++n)
+        waterNodes += g.water.empty() || g.water[n];
+    if (static_cast<double>(fast.size()) > std::max(8.0, kFewFraction * static_cast<double>(waterNodes)))
+        return false;
+    const auto speed = [&](std::size_t idx) { return std::hypot(double(g.u[idx]), double(g.v[idx])); };
+    for (const std::size_t idx : fast)
+    {
+        const double s = speed(idx);
+        if (!std::isfinite(s) || s >= kFillSize)
+            return false;
+        const std::size_t n = idx - first, layer = n / nh, q = n % nh, j = q / g.nx, i = q % g.nx;
+        bool continuous = false;
+        for (int dj = -1; dj <= 1 && !continuous; ++dj)
+            for (int di = -1; di <= 1 && !continuous; ++di)
+            {
+                const long ii = long(i) + di, jj = long(j) + dj;
+                if ((di == 0 && dj == 0) || ii < 0 || jj < 0 || ii >= long(g.nx) || jj >= long(g.ny))
+                    continue;
+                const std::size_t m = layer * nh + std::size_t(jj) * g.nx + std::size_t(ii);
+                continuous = (g.water.empty() || g.water[m]) && speed(first + m) >= kContinuity * s;
+            }
+        if (!continuous)
+            return false;
+    }
+    return true;
+}
+} // namespace
+
 void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
                              const AxisSelection &t, const NetCdfCurrentOptions &opt, const GriddedData &g)
 {
     const auto noUnits = [](const std::string &u) { return trim(u).empty() || trim(u) == "1"; };
     const bool physical =
         !opt.velocityUnits.empty() || l.geographic || !noUnits(unitsOf(f, l.uVar)) || !noUnits(unitsOf(f, l.vVar));
-    const double limit = physical ? 300.0 : 1e6;
-    const std::size_t nh = g.nx * g.ny, perTime = g.water.size();
+    const bool raised = opt.maxSpeed > 0.0 && std::isfinite(opt.maxSpeed);
+    const double limit = raised ? opt.maxSpeed : physical ? 300.0 : 1e6;
+    const std::size_t nh = g.nx * g.ny, perTime = g.water.empty() ? nh * g.depth.size() : g.water.size();
     if (nh == 0 || perTime == 0)
         return;
-    for (std::size_t idx = 0; idx < g.u.size(); ++idx)
+    for (std::size_t first = 0; first + perTime <= g.u.size(); first += perTime)
     {
-        const std::size_t n = idx % perTime;
-        const bool badU = !(std::abs(g.u[idx]) <= limit), badV = !(std::abs(g.v[idx]) <= limit);
-        if (!g.water[n] || (!badU && !badV))
+        std::vector<std::size_t> fast;
+        for (std::size_t n = 0; n < perTime; ++n)
+        {
+            const std::size_t idx = first + n;
+            if ((g.water.empty() || g.water[n]) && !(std::abs(g.u[idx]) <= limit && std::abs(g.v[idx]) <= limit))
+                fast.push_back(idx);
+        }
+        // With the bound as given, a few fast nodes continuous with the flow around them are the flow's (a node
+        // beside a vortex's core); fill values' sizes, lone spikes and a whole field off by orders are refused.
+        if (fast.empty() || (!raised && physical && fastNodesAreFlow(g, first, perTime, fast)))
             continue;
+        const std::size_t idx = fast.front();
+        const std::size_t n = idx % perTime;
+        const bool badU = !(std::abs(g.u[idx]) <= limit);
         const std::size_t it = idx / perTime, q = n % nh, j = q / g.nx, i = q % g.nx;
         std::string at;
         if (q < h.nodeLon.size() && q < h.nodeLat.size())
@@ -73,12 +131,15 @@ void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const Hor
         std::string record;
         if (l.dimT >= 0 && it < t.idx.size())
             record = ", record " + std::to_string(t.idx[it]) + " of '" + f.dimName(l.dims[std::size_t(l.dimT)]) + "'";
+        const std::string count =
+            fast.size() > 1 ? " (" + std::to_string(fast.size()) + " such nodes in this record)" : "";
         throw f.error("variable '" + name + "' holds " + text::number(value, 7) + (physical ? " m/s" : "") +
                       " at (j, i) = (" + std::to_string(j < h.yIdx.size() ? h.yIdx[j] : j) + ", " +
-                      std::to_string(i < h.xIdx.size() ? h.xIdx[i] : i) + ")" + at + record +
-                      ": faster than any current or wind (more than " + text::number(limit) + (physical ? " m/s" : "") +
-                      "), and not a fill value (_FillValue, " +
-                      "missing_value, valid_range): a fill value not declared, or wrong units or scale_factor?");
+                      std::to_string(i < h.xIdx.size() ? h.xIdx[i] : i) + ")" + at + record + count + ": faster than " +
+                      (raised ? "the bound given" : "any current or wind") + " (more than " + text::number(limit) +
+                      (physical ? " m/s" : "") + "), and not a fill value (_FillValue, " +
+                      "missing_value, valid_range): a fill value not declared, or wrong units or scale_factor? If " +
+                      "the speeds are real, raise the bound with NetCdfCurrentOptions::maxSpeed");
     }
 }
 

@@ -20,6 +20,7 @@
 #include "ompl_glider/mission/OutputFormats.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/io/FileList.h"
+#include "ompl_glider/io/Length.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/io/UnitConversion.h"
 #endif
@@ -89,6 +90,17 @@ void readUnitsAndRecord(const Reader &r, const YAML::Node &n, const std::string 
             r.fail(n["velocity_units"], f + ".velocity_units", e.what());
         }
 #endif
+    }
+    if (n["max_speed"])
+    {
+        try
+        {
+            c.maxSpeed = parseSpeed(r.text(n["max_speed"], f + ".max_speed"));
+        }
+        catch (const Error &e)
+        {
+            r.fail(n["max_speed"], f + ".max_speed", e.what());
+        }
     }
     if (n["time_units"])
     {
@@ -179,9 +191,9 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
 void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c,
                        const std::set<std::string> &extraKeys)
 {
-    std::set<std::string> keys{"type",         "parameters",     "file",       "variables",     "interpolation",
-                               "horizon",      "velocity_units", "time_units", "steady_record", "zero_velocity_land",
-                               "depth_average"};
+    std::set<std::string> keys{"type",          "parameters",     "file",       "variables",     "interpolation",
+                               "horizon",       "velocity_units", "time_units", "steady_record", "zero_velocity_land",
+                               "depth_average", "max_speed"};
     keys.insert(extraKeys.begin(), extraKeys.end());
     r.checkMap(n, f, keys);
     c.mark = {r.file(), r.line(n)};
@@ -209,7 +221,7 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
         r.fail(n["parameters"]["radius"], f + ".parameters.radius", "expected a number > 0 (the core radius)");
     const bool gridded = kind.gridded();
     for (const char *key : {"file", "variables", "interpolation", "horizon", "velocity_units", "time_units",
-                            "steady_record", "zero_velocity_land", "depth_average"})
+                            "steady_record", "zero_velocity_land", "depth_average", "max_speed"})
         if (n[key] && !gridded)
             r.fail(n[key], f + "." + key, "only for type " + griddedKindList(" or ") + " (a forecast read from files)");
     if (!gridded)

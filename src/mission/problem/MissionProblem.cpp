@@ -62,7 +62,8 @@ std::map<ForecastOption, std::string> forecastFieldNames(const std::string &sect
             {ForecastOption::ZeroVelocityLand, section + ".zero_velocity_land"},
             {ForecastOption::Angle, v + "angle"},
             {ForecastOption::Mask, v + "mask"},
-            {ForecastOption::DepthAverage, section + ".depth_average"}};
+            {ForecastOption::DepthAverage, section + ".depth_average"},
+            {ForecastOption::MaxSpeed, section + ".max_speed"}};
 }
 
 ForecastRequest forecastRequest(const MissionSpec &m)
@@ -88,6 +89,7 @@ ForecastRequest forecastRequest(const MissionSpec &m)
                         (m.departure.window ? m.departure.end - m.departure.begin : 0.0);
     }
     o.velocityUnits = c.velocityUnits;
+    o.maxSpeed = c.maxSpeed;
     o.timeUnits = c.timeUnits;
     o.steadyRecord = c.steadyRecord;
     o.xy = c.xyInterpolation;
