@@ -213,7 +213,10 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         r.reached = true;
         r.arrivalTime = t;
     }
-    while (!r.reached && !r.grounded && t < end)
+    // the run's end is met by a dive ending within flyHeading()'s own tolerance of it (a dive's last step may stop a
+    // rounding short of its surfacing): a fix there dives no more
+    const double endTolerance = 1e-12 * std::max(1.0, std::abs(end));
+    while (!r.reached && !r.grounded && t < end - endTolerance)
     {
         // at the surface: a new plan (replanning), then the heading for the next dive
         const bool replanning = strategy == ControlStrategy::Replan || strategy == ControlStrategy::ReplanObserved;
@@ -285,11 +288,14 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         const DiveEnd dive = flyHeading(x, y, t, hx, hy, surface, truth, forbidden, ds, &r.track);
         if (measuring && r.track.size() > diveStart + 1)
             r.measured.push_back(measureDive(r.track, diveStart, truth, forecast, o.depth, o.dacNoise, rng));
+        const bool advanced = dive.t > t;
         x = dive.x;
         y = dive.y;
         t = dive.t;
         noteDiveOutcome(dive, r);
         r.fixes.push_back({x, y, t});
+        if (!advanced) // a dive of no time: another would be the same (every surfacing is a fix kept in memory)
+            break;
     }
     // the distance to the goal at the planned arrival time, on the flown track
     const TimedPoint at = planAt(r.track, std::min(r.plannedArrival, r.track.back().t));

@@ -270,6 +270,25 @@ yaml_case("execution-interval-fortnight", mission("units: {length_m: 1000, time_
 yaml_case("execution-radius-zero", mission("execution: {radius: 0}"), "execution.radius")
 yaml_case("execution-dac-noise-without-dac", mission("execution: {strategies: [replan, greedy], dac_noise: 0.01}"),
           "m.yaml:8: field 'execution.dac_noise': no strategy measures a DAC")
+# runs that once never ended (the last dive a rounding short of the run's end: fixes without end): each ends at its
+# end with the reason, the goal not reached
+RUNAWAY = """units: {length_m: 1000, time_s: 3600}
+current: {type: uniform, parameters: {u: 0.1, v: 0}}
+region: {x_min: 0, x_max: 14, y_min: -4, y_max: 4}
+start: {x: 1, y: 0}
+goal: {x: 12, y: 0}
+vehicle: {speed: 0.5}
+planner: {name: zastartve, grid_size: 0.5}
+outputs: {files: [summary]}
+"""
+yaml_case("execution-truth-against-ends", RUNAWAY + "execution: {truth: {type: uniform, parameters: {u: -0.3, v: 0}}, "
+          "surfacing_interval: 15 min, strategies: [greedy, current_blind], radius: 0.2}\n",
+          "greedy: the goal not reached: not within 200 m of it by t = 36.6667, when the run ended (twice the planned "
+          "trip)", status=0)
+yaml_case("execution-duration-shorter-than-trip-ends", RUNAWAY + "execution: {surfacing_interval: 15 min, strategies: "
+          "[current_sensitive, current_blind, greedy, dac, replan, replan_observed], radius: 0.2, duration: 5 h}\n",
+          "replan_observed: the goal not reached: not within 200 m of it by t = 5, when the run ended "
+          "(execution.duration)", status=0)
 yaml_case("via-empty-list", mission(append="waypoints: []\n"),
           "m.yaml:8: field 'waypoints': the list is empty: give at least one via point, or leave 'waypoints' out")
 yaml_case("via-named-goal-upper", mission(append="waypoints:\n  - {name: GOAL, x: 5, y: 1}\n"),

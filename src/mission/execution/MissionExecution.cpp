@@ -215,6 +215,15 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
         const ExecutionLeg &leg = run.legs[k];
         const Point2 to = last ? run.goal : settings.stops[k].at;
         const double radius = last ? run.radius : settings.stops[k].radius;
+        const auto missed = [&] {
+            notReached = last ? std::string("the goal") : "station " + settings.stops[k].name;
+            notReachedRadius = radius;
+        };
+        if (at.t >= end) // the run ended at the last station (its hold): this leg is not flown
+        {
+            missed();
+            break;
+        }
         // the leg as planned, flown from where and when the glider is (the plan's own times where it is on time)
         std::vector<TimedPoint> legPlan(run.plan.begin() + static_cast<std::ptrdiff_t>(first),
                                         run.plan.begin() + static_cast<std::ptrdiff_t>(leg.end) + 1);
@@ -246,8 +255,7 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
         out.groundedWhy = f.groundedWhy;
         if (!f.reached)
         {
-            notReached = last ? std::string("the goal") : "station " + settings.stops[k].name;
-            notReachedRadius = radius;
+            missed();
             break;
         }
         at = f.track.back();
@@ -264,8 +272,9 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
             ++out.windowsMissed;
             late += (late.empty() ? "" : "; ") + execution_detail::lateText(problem, stop, f.arrivalTime);
         }
-        // held in place until the window opens, then for the stay
-        const double leave = std::max(at.t, stop.window ? stop.windowBegin : at.t) + stop.stay;
+        // held in place until the window opens, then for the stay; the run's end ends the hold too (no flight of
+        // the run outlasts it: the next leg, begun there, flies no more)
+        const double leave = std::min(std::max(at.t, stop.window ? stop.windowBegin : at.t) + stop.stay, end);
         if (leave > at.t)
         {
             at.t = leave;

@@ -1,15 +1,22 @@
 /// @file Ensembles.cpp
 /// @brief Robust plans over the members of an ensemble current (planRobust(), used by planRoute()): candidates
-/// planned on the members' mean and on every member, each flown in every member (retimePath()) and judged by the
-/// mission's objective over the members (ensembleObjective()); in an MPI job the candidates are spread over the
-/// ranks (TaskSpread.h).
+/// planned on the members' mean and on the members (every one of up to kMemberCandidates, else that many spread over
+/// the ensemble), each flown in the screening members (retimePath()), the best there flown in every member and judged
+/// by the mission's objective over the members (ensembleObjective()): the work grows with the members as the members
+/// themselves, not as their square. The pilot's time limit bounds the candidates' planning, a stop request (Ctrl-C)
+/// the planning and the flights. In an MPI job the candidates are spread over the ranks (TaskSpread.h).
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
+#include <numeric>
 
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/StopRequest.h"
 #include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/cost/TravelTimeCalculator.h"
@@ -20,17 +27,60 @@ namespace planning_detail
 {
 namespace
 {
+/// Members planned as candidates beside the mean: every member of an ensemble of up to this many, else this many
+/// spread over it (member 0, the control run of a drawn ensemble, among them).
+constexpr std::size_t kMemberCandidates = 32;
+/// Members every candidate is flown in first: every member of an ensemble of up to this many (then nothing is left to
+/// screen), else this many spread over it.
+constexpr std::size_t kScreeningMembers = 32;
+/// Candidates flown in every member after the screening: the best there, in turn, until this many are passable in
+/// every member.
+constexpr std::size_t kFinalists = 4;
+/// A candidate's travel time in a member it was not flown in.
+constexpr double kNotFlown = std::numeric_limits<double>::quiet_NaN();
+
+/// @p k indices spread evenly over 0 .. n-1, 0 first; all of them when n <= k.
+std::vector<std::size_t> spreadOver(std::size_t n, std::size_t k)
+{
+    const std::size_t m = std::min(n, k);
+    std::vector<std::size_t> out(m);
+    for (std::size_t i = 0; i < m; ++i)
+        out[i] = i * n / m;
+    return out;
+}
+
+/// The objective over the members a candidate was flown in (NaN: not flown there).
+double objectiveOverFlown(const std::vector<double> &times, EnsembleObjective objective, double q)
+{
+    std::vector<double> flown;
+    for (double t : times)
+        if (!std::isnan(t))
+            flown.push_back(t);
+    return ensembleObjective(flown, objective, q);
+}
+
+/// Whether @p times holds a travel time (or +inf) for every member.
+bool flownInEvery(const std::vector<double> &times)
+{
+    return std::none_of(times.begin(), times.end(), [](double t) { return std::isnan(t); });
+}
+
 /// The candidates planned on the processes of a job: each task plans one candidate and returns what the choice
-/// needs (solved, the member travel times, the counters); the paths stay where they were planned.
+/// needs (solved or left out, the member travel times, the path's points for the finalists' flights, the counters).
 void spreadCandidates(TaskSpreader &spread, std::vector<PlannedPath> &plans, std::vector<std::vector<double>> &times,
-                      const std::function<void(std::size_t)> &candidate)
+                      std::vector<char> &leftOut, const std::function<void(std::size_t)> &candidate)
 {
     const std::vector<std::string> out = spread.run("ensemble candidate", plans.size(), [&](std::size_t c) {
         candidate(c);
         const PlannedPath &p = plans[c];
         ByteWriter w;
         w.put(p.solved);
+        w.put(leftOut[c] != 0);
         w.put(times[c]);
+        std::vector<double> points;
+        for (const TimedPoint &q : p.path)
+            points.insert(points.end(), {q.x, q.y, q.t});
+        w.put(points);
         w.put(p.searchCostFunctionCalls);
         w.put(p.postprocessCostFunctionCalls);
         w.put(p.currentModelCalls);
@@ -45,7 +95,15 @@ void spreadCandidates(TaskSpreader &spread, std::vector<PlannedPath> &plans, std
         PlannedPath &p = plans[c];
         ByteReader r(out[c]);
         r.get(p.solved);
+        bool skipped = false;
+        r.get(skipped);
+        leftOut[c] = skipped ? 1 : 0;
         r.get(times[c]);
+        std::vector<double> points;
+        r.get(points);
+        p.path.clear();
+        for (std::size_t i = 0; i + 2 < points.size(); i += 3)
+            p.path.push_back({points[i], points[i + 1], points[i + 2]});
         r.get(p.searchCostFunctionCalls);
         r.get(p.postprocessCostFunctionCalls);
         r.get(p.currentModelCalls);
@@ -54,77 +112,193 @@ void spreadCandidates(TaskSpreader &spread, std::vector<PlannedPath> &plans, std
         r.get(p.postprocessSeconds);
     }
 }
+
+/// The candidates' flights in the members: each a retimePath() in one member; a stop request ends them
+/// (cut() says so).
+class MemberFlights
+{
+public:
+    MemberFlights(const MissionProblem &problem, double departure, double speed, const std::vector<PlannedPath> &plans,
+                  std::vector<std::vector<double>> &times)
+        : problem_(problem), departure_(departure), speed_(speed), plans_(plans), times_(times)
+    {
+    }
+    /// Candidate @p c flown in member @p k (nothing when it has no path or a stop was requested).
+    void fly(std::size_t c, std::size_t k)
+    {
+        if (!plans_[c].solved || !std::isnan(times_[c][k]))
+            return;
+        if (stopRequested())
+        {
+            cut_ = true;
+            return;
+        }
+        const std::vector<TimedPoint> flown = retimePath(problem_, problem_.getMembers()[k], speed_, plans_[c].path);
+        times_[c][k] = flown.empty() ? kInf : flown.back().t - departure_;
+    }
+    /// Candidate @p c flown in every member of @p which.
+    void flyIn(std::size_t c, const std::vector<std::size_t> &which)
+    {
+        for (std::size_t k : which)
+            fly(c, k);
+    }
+    bool cut() const { return cut_; }
+
+private:
+    const MissionProblem &problem_;
+    double departure_, speed_;
+    const std::vector<PlannedPath> &plans_;
+    std::vector<std::vector<double>> &times_;
+    std::atomic<bool> cut_{false};
+};
+
+/// The finalists: the candidates in the order of their objective over the screening members, each passable there
+/// flown in every member (all of a round side by side) until kFinalists are passable in every member.
+void flyFinalists(const std::vector<PlannedPath> &plans, const std::vector<std::vector<double>> &times,
+                  const EnsemblePlan &e, std::size_t members, MemberFlights &flights)
+{
+    std::vector<std::size_t> rank(plans.size());
+    std::iota(rank.begin(), rank.end(), 0);
+    std::vector<double> screened(plans.size(), kInf);
+    for (std::size_t c = 0; c < plans.size(); ++c)
+        if (plans[c].solved)
+            screened[c] = objectiveOverFlown(times[c], e.objective, e.quantile);
+    std::stable_sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t b) { return screened[a] < screened[b]; });
+    ThreadPool pool(0);
+    std::size_t passable = 0, next = 0;
+    while (passable < kFinalists && next < rank.size() && !flights.cut())
+    {
+        std::vector<std::size_t> round;
+        while (passable + round.size() < kFinalists && next < rank.size() && std::isfinite(screened[rank[next]]))
+            round.push_back(rank[next++]);
+        if (round.empty())
+            break; // the rest is impassable in a screening member already
+        pool.parallelFor(round.size() * members, [&](std::size_t i) { flights.fly(round[i / members], i % members); });
+        for (std::size_t c : round)
+            passable += std::isfinite(ensembleObjective(times[c], e.objective, e.quantile)) ? 1 : 0;
+    }
+}
+
+/// @p r without its path: every candidate fails in some member, no plan is robust over the ensemble (exit 1, the
+/// members where the best, @p e's chosen, fails named from @p chosen, its travel times).
+PlannedPath notRobust(const MissionProblem &problem, PlannedPath r, const EnsemblePlan &e,
+                      const std::vector<double> &chosen)
+{
+    const auto &members = problem.getMembers();
+    std::string failing;
+    for (std::size_t k = 0; k < chosen.size(); ++k)
+        if (std::isinf(chosen[k]))
+            failing += (failing.empty() ? "" : ", ") + std::string("member ") + std::to_string(k) + " (" +
+                       members[k]->name() + ")";
+    r.solved = false;
+    r.status = PlanStatus::NoPath;
+    const std::string objective = ensembleObjectiveName(e.objective);
+    r.setNoPath({NoPathCause::NotRobust, "not robust: no candidate plan can be flown in every member of the "
+                                         "ensemble (objective " +
+                                             objective + "); the best, planned on the " + e.chosen +
+                                             ", is impassable in " + failing});
+    return r;
+}
 } // namespace
 
 /// A robust plan over the members of an ensemble (see planRoute()).
 PlannedPath planRobust(const MissionProblem &problem, double departure, const PlanOptions &o)
 {
+    const auto started = std::chrono::steady_clock::now();
     const MissionSpec &m = problem.getSpec();
     const auto &members = problem.getMembers();
     const std::size_t n = members.size();
     const double speed = std::isnan(o.speed) ? m.vehicle.speed : o.speed;
-    // candidates: the mean field's plan, then each member's, planned in parallel
-    std::vector<PlannedPath> plans(n + 1);
-    std::vector<std::vector<double>> times(n + 1, std::vector<double>(n, kInf));
-    const auto flyInMembers = [&](std::size_t c) {
-        for (std::size_t k = 0; k < n && plans[c].solved; ++k)
-        {
-            const std::vector<TimedPoint> flown = retimePath(problem, members[k], speed, plans[c].path);
-            times[c][k] = flown.empty() ? kInf : flown.back().t - departure;
-        }
-    };
+    const std::vector<std::size_t> planned = spreadOver(n, kMemberCandidates); // the members planned on
+    const std::vector<std::size_t> screening = spreadOver(n, kScreeningMembers);
+    // candidates: the mean field's plan, then the planned members', planned in parallel
+    std::vector<PlannedPath> plans(planned.size() + 1);
+    std::vector<std::vector<double>> times(plans.size(), std::vector<double>(n, kNotFlown));
+    std::vector<char> leftOut(plans.size(), 0); // not planned: the time limit had passed, or a stop was requested
+    MemberFlights flights(problem, departure, speed, plans, times);
+    const double limit = o.timeLimit > 0 ? o.timeLimit : m.planner.timeLimit; // the pilot's, for the whole search
     const auto candidate = [&](std::size_t c) {
-        plans[c] = c == 0 ? planOnField(problem, departure, o) : planOnField(problem.withMember(c - 1), departure, o);
-        flyInMembers(c);
+        PlanOptions co = o;
+        if (limit > 0.0)
+            co.timeLimit = std::max(limit - secondsSince(started), 1e-3); // each candidate within what is left
+        if (c > 0 && (stopRequested() || (limit > 0.0 && secondsSince(started) >= limit)))
+        {
+            leftOut[c] = 1;
+            return;
+        }
+        plans[c] = c == 0 ? planOnField(problem, departure, co)
+                          : planOnField(problem.withMember(planned[c - 1]), departure, co);
+        flights.flyIn(c, screening);
     };
     TaskSpreader *spread = activeTaskSpreader();
     if (spread)
-        spreadCandidates(*spread, plans, times, candidate);
+        spreadCandidates(*spread, plans, times, leftOut, candidate);
     else
     {
         ThreadPool pool(0);
-        pool.parallelFor(n + 1, candidate);
+        pool.parallelFor(plans.size(), candidate);
     }
     EnsemblePlan e;
     e.objective = m.planner.objective;
     e.quantile = m.planner.quantile;
+    if (screening.size() < n)
+        flyFinalists(plans, times, e, n, flights);
     std::size_t best = 0;
-    for (std::size_t c = 0; c <= n; ++c)
+    const auto eligible = [&](std::size_t c) { return plans[c].solved && flownInEvery(times[c]); };
+    for (std::size_t c = 0; c < plans.size(); ++c)
     {
+        if (leftOut[c])
+            continue; // not planned: not a candidate
         EnsemblePlan::Candidate cand;
-        cand.name = c == 0 ? "mean" : "member " + std::to_string(c - 1);
+        cand.name = c == 0 ? "mean" : "member " + std::to_string(planned[c - 1]);
         cand.solved = plans[c].solved;
         cand.memberTravelTimes = times[c];
-        cand.objectiveValue = plans[c].solved ? ensembleObjective(times[c], e.objective, e.quantile) : kInf;
+        cand.objectiveValue = plans[c].solved ? objectiveOverFlown(times[c], e.objective, e.quantile) : kInf;
         e.candidates.push_back(cand);
         const auto better = [&](std::size_t a, std::size_t b) {
-            const auto &ca = e.candidates[a];
-            const auto &cb = e.candidates[b];
-            if (ca.solved != cb.solved)
-                return ca.solved;
-            return ca.objectiveValue < cb.objectiveValue;
+            if (eligible(a) != eligible(b))
+                return eligible(a);
+            if (plans[a].solved != plans[b].solved)
+                return plans[a].solved;
+            return objectiveOverFlown(times[a], e.objective, e.quantile) <
+                   objectiveOverFlown(times[b], e.objective, e.quantile);
         };
         if (c > 0 && better(c, best))
             best = c;
     }
+    if (flights.cut())
+    {
+        // a stop request (Ctrl-C) cut the flights: no candidate can be judged over every member
+        PlannedPath r;
+        r.departure = departure;
+        r.speed = speed;
+        r.planner = plans[0].planner;
+        r.straightLineLength = plans[0].straightLineLength;
+        for (const PlannedPath &p : plans)
+            addPlanningWork(r, p);
+        r.status = PlanStatus::Stopped;
+        r.setNoPath({NoPathCause::Stopped, "stopped on request (Ctrl-C) before the candidate plans were flown in "
+                                           "every member of the ensemble"});
+        r.ensemble = std::move(e);
+        return r;
+    }
     if (spread && plans[best].solved)
     {
         // the chosen candidate is planned again on every rank (the same planning on the same field: the same path,
-        // for the deterministic planners), and flown in the members again
+        // for the deterministic planners, flown in the members as before), with the counts of its first planning
         const PlannedPath counted = plans[best];
-        candidate(best);
+        plans[best] = best == 0 ? planOnField(problem, departure, o)
+                                : planOnField(problem.withMember(planned[best - 1]), departure, o);
         plans[best].searchCostFunctionCalls = counted.searchCostFunctionCalls;
         plans[best].postprocessCostFunctionCalls = counted.postprocessCostFunctionCalls;
         plans[best].currentModelCalls = counted.currentModelCalls;
         plans[best].expandedVertices = counted.expandedVertices;
         plans[best].planningSeconds = counted.planningSeconds;
         plans[best].postprocessSeconds = counted.postprocessSeconds;
-        e.candidates[best].memberTravelTimes = times[best];
-        e.candidates[best].objectiveValue = ensembleObjective(times[best], e.objective, e.quantile);
     }
     PlannedPath r = plans[best];
-    e.chosen = e.candidates[best].name;
-    e.objectiveValue = e.candidates[best].objectiveValue;
+    e.chosen = best == 0 ? "mean" : "member " + std::to_string(planned[best - 1]);
+    e.objectiveValue = ensembleObjective(times[best], e.objective, e.quantile);
     e.memberTravelTimes = times[best];
     // every candidate's search counts
     r.searchCostFunctionCalls = r.postprocessCostFunctionCalls = r.currentModelCalls = r.expandedVertices = 0;
@@ -142,22 +316,8 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
         }
     }
     if (r.solved && !std::isfinite(e.objectiveValue))
-    {
-        // every candidate fails in some member: no plan is robust over the ensemble (exit 1, the members named)
-        std::string failing;
-        for (std::size_t k = 0; k < n; ++k)
-            if (!std::isfinite(times[best][k]))
-                failing += (failing.empty() ? "" : ", ") + std::string("member ") + std::to_string(k) + " (" +
-                           members[k]->name() + ")";
-        r.solved = false;
-        r.status = PlanStatus::NoPath;
-        const std::string objective = ensembleObjectiveName(e.objective);
-        r.setNoPath({NoPathCause::NotRobust, "not robust: no candidate plan can be flown in every member of the "
-                                             "ensemble (objective " +
-                                                 objective + "); the best, planned on the " + e.chosen +
-                                                 ", is impassable in " + failing});
-    }
-    r.ensemble = e;
+        r = notRobust(problem, std::move(r), e, times[best]);
+    r.ensemble = std::move(e);
     return r;
 }
 } // namespace planning_detail
