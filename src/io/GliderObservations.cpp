@@ -55,6 +55,8 @@ std::string dacProblem(const DacRecord &r, const VelocityUnits &units)
         return "no time or position";
     if (std::abs(r.at.lat) > 90.0 || r.at.lon < -180.0 || r.at.lon > 360.0)
         return "position out of range";
+    if (!std::isfinite(r.u) || !std::isfinite(r.v))
+        return "u or v not a number";
     if (std::hypot(r.u, r.v) > kMaxPlausibleDac)
         return "faster than " + text::number(kMaxPlausibleDac) + " m/s (u, v read " +
                (text::trim(units.units).empty() ? std::string("without units, as m/s") : "in '" + units.units + "'") +

@@ -250,6 +250,21 @@ case("reachability-beyond-memory", ["--mission", "m.yaml", "--out", "{out}"], 2,
      "m.yaml:8: field 'reachability.resolution': the probability of reach over 1 member on",
      {"m.yaml": mission("reachability: {resolution: 0.002}", append="outputs: {files: [summary, reachability]}\n")},
      {"OMPL_GLIDER_MEMORY_LIMIT": "64M"})
+# refused before the plan: a sampling planner running for 1000 s first would hit the table's time limit
+case("reachability-beyond-memory-before-the-plan", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml:8: field 'reachability.resolution': the probability of reach over 1 member on",
+     {"m.yaml": mission("reachability: {resolution: 0.002}", "planner: {name: RRTstar, time_limit: 1000}",
+                        append="outputs: {files: [summary, reachability]}\n")},
+     {"OMPL_GLIDER_MEMORY_LIMIT": "64M"})
+# a horizon past the mission's dates: the horizon named, not the epoch
+case("reachability-horizon-past-the-dates", ["--mission", "m.yaml", "--reach-horizon", "1e9 h", "--out", "{out}"], 2,
+     "--reach-horizon: from the departure, it reaches past the years 0000-9999",
+     {"m.yaml": mission("epoch: \"2026-01-01T00:00:00Z\"", append="units: {length_m: 1000, time_s: 3600}\n")})
+yaml_case("stay-past-the-dates",
+          mission("epoch: \"2026-01-01T00:00:00Z\"",
+                  append="units: {length_m: 1000, time_s: 3600}\nwaypoints:\n  - {name: A, x: 5, y: 1, stay: 1e9}\n"),
+          "m.yaml:11: field 'waypoints[0].stay': from the departure, it reaches past the years 0000-9999 that the "
+          "mission's dates are written in (ISO 8601, from its epoch 2026-01-01T00:00:00Z): 114077.1161 years")
 yaml_case("reachability-horizon-beyond-the-limits",
           mission("reachability: {horizon: 1e9}", append="outputs: {files: [summary, reachability]}\n"),
           "m.yaml:8: field 'reachability.horizon': the fronts of 1 member(s)")
@@ -268,6 +283,10 @@ yaml_case("execution-interval-fortnight", mission("units: {length_m: 1000, time_
                                                    "execution: {surfacing_interval: 1 fortnight}"),
           "execution.surfacing_interval")
 yaml_case("execution-radius-zero", mission("execution: {radius: 0}"), "execution.radius")
+# the mission's strategies measure DAC, the flag's do not: the noise would change nothing, said naming both
+case("execution-dac-noise-strategies-flag", ["--mission", "m.yaml", "--strategies", "greedy,replan", "--out", "{out}"],
+     2, "--strategies: no strategy listed measures a DAC, yet m.yaml:8: field 'execution.dac_noise' adds noise to them",
+     {"m.yaml": mission("execution: {strategies: [dac, greedy], dac_noise: 0.01}")})
 yaml_case("execution-dac-noise-without-dac", mission("execution: {strategies: [replan, greedy], dac_noise: 0.01}"),
           "m.yaml:8: field 'execution.dac_noise': no strategy measures a DAC")
 # runs that once never ended (the last dive a rounding short of the run's end: fixes without end): each ends at its
@@ -986,6 +1005,9 @@ observations_case("observations-fix-after-forecast", "d.csv", "the last fix's ti
                   {"d.csv": "time,lon,lat,u,v\n2030-01-01T00:00:00Z,-52.5,47.5,0.1,0\n"})
 observations_case("observations-csv-degc", "d.csv", "d.csv:1: 'u' is in 'degC': units 'degC' are not a velocity",
                   {"d.csv": "time,lon,lat,u (degC),v (degC)\n2026-03-15T06:00:00Z,-52.5,47.5,12,11\n"})
+# a CSV row whose u and v are NaN is a fix without a DAC's value: rejected as such, never counted as a DAC
+observations_case("observations-csv-nan-dac", "d.csv", "u or v not a number",
+                  {"d.csv": "time,lon,lat,u,v\n2026-03-15T06:00:00Z,-52.5,47.5,NaN,NaN\n"})
 observations_case("observations-dba-no-dac", "g.dba", "no usable depth-averaged current (sensors m_water_vx, m_water_vy",
                   {"g.dba": DBA + "1773554400 4730.0 -5230.0 NaN NaN\n"})
 # a Slocum's own binary files: cut short, their sensor list in a cache file that is not there, an encoding unknown

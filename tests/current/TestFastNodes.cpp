@@ -102,11 +102,11 @@ TEST(FastNodes, AVortexCoreNodeIsTheFlowAndPlansAsTheAnalyticVortex)
     const std::string trip = "start: {x: -800, y: -300}\ngoal: {x: 800, y: 350}\nvehicle: {speed: 10}\n"
                              "planner: {name: zastartve, grid_size: 20}\n";
     const MissionSpec onFile = parseMission("current: {type: netcdf, file: " + file + "}\n" + trip, "vortex.yaml");
-    const MissionSpec analytic = parseMission(
-        "units: {length_m: 1, time_s: 1}\nregion: {x_min: -1000, x_max: 1000, y_min: -1000, y_max: 1000}\n"
-        "current: {type: rankine_vortex, parameters: {x0: 1.2, y0: 0.8, radius: 1.6, vmax: 400}}\n" +
-            trip,
-        "analytic.yaml");
+    const MissionSpec analytic =
+        parseMission("units: {length_m: 1, time_s: 1}\nregion: {x_min: -1000, x_max: 1000, y_min: -1000, y_max: 1000}\n"
+                     "current: {type: rankine_vortex, parameters: {x0: 1.2, y0: 0.8, radius: 1.6, vmax: 400}}\n" +
+                         trip,
+                     "analytic.yaml");
     const MissionResult a = runMission(MissionProblem(onFile)), b = runMission(MissionProblem(analytic));
     ASSERT_TRUE(a.plan.solved) << a.plan.reason;
     ASSERT_TRUE(b.plan.solved) << b.plan.reason;
@@ -168,8 +168,8 @@ TEST(FastNodes, TheMissionsBoundIsCurrentMaxSpeedWithUnits)
     // 200 kn is 102.9 m/s: the core's 360 m/s is refused, naming the mission's setting
     try
     {
-        (void)MissionProblem(parseMission("current: {type: netcdf, file: " + file + ", max_speed: 200 kn}\n" + trip,
-                                          "m.yaml"));
+        (void)MissionProblem(
+            parseMission("current: {type: netcdf, file: " + file + ", max_speed: 200 kn}\n" + trip, "m.yaml"));
         ADD_FAILURE() << "a bound of 200 kn accepted a node of 360 m/s";
     }
     catch (const Error &e)

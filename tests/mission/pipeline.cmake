@@ -6,6 +6,10 @@ if(TARGET glider_plan)
   add_test(NAME mission.three_modes
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_three_modes.sh $<TARGET_FILE:glider_plan> ${PROJECT_SOURCE_DIR})
   set_tests_properties(mission.three_modes PROPERTIES TIMEOUT 300)
+  # every example mission exits 0 with a solved plan, as a user runs it (minutes: CI only)
+  add_test(NAME mission.examples_exit_zero
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/check_examples.sh $<TARGET_FILE:glider_plan> ${PROJECT_SOURCE_DIR})
+  set_tests_properties(mission.examples_exit_zero PROPERTIES TIMEOUT 3600)
 endif()
 # strong currents: the heading planners against closed forms, a brute-force bound and the level set
 glider_add_test(test_strong_currents ${CMAKE_CURRENT_LIST_DIR}/TestStrongCurrents.cpp)

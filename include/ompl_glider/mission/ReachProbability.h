@@ -80,4 +80,9 @@ double weightedQuantile(const std::vector<double> &values, const std::vector<dou
 /// the fronts where they are (ReachProbability::stopped).
 /// @throws Error naming the field for a horizon or interval that gives no frame or too many.
 ReachProbability computeReachProbability(const MissionProblem &problem, const PlannedPath &plan, double departure);
+
+/// @brief What computeReachProbability() would refuse before any plan is made: its memory (the members' fields on
+/// the cell, with as few frames as the section allows), so that a refusal comes at once, not after the planning.
+/// @throws Error as computeReachProbability() does for the memory.
+void checkReachProbabilityMemory(const MissionProblem &problem);
 } // namespace ompl_glider

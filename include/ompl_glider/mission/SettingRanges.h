@@ -51,4 +51,10 @@ double checkSetting(const std::string &field, double v, const std::string &given
 /// @brief @p text read as @p field of @p m (a length or duration in the mission's units or with its unit, else a
 /// number) and checked as checkSetting() does. @throws Error as checkSetting(), or the unit parser's.
 double settingFromText(const std::string &field, const std::string &text, const MissionSpec &m);
+
+/// @brief A mission dated by its `epoch` writes its times as ISO 8601 dates, years 0000-9999: each time setting that
+/// reaches past them (the departure, a window, a station's stay, the planning, reach and execution horizons, the
+/// stints' mission duration, each from the departure) is refused naming that setting (MissionSpec::place()), not
+/// the epoch. Nothing to check without an epoch (a forecast's own calendar writes any year). @throws Error.
+void checkDatesInRange(const MissionSpec &m);
 } // namespace ompl_glider

@@ -357,6 +357,8 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     checkPlanner(problem, m.departure.window ? m.departure.begin : m.departure.time);
     checkGoalWindow(problem);
     checkViaWindows(problem);
+    if (m.outputs.wants(OutputFormatId::Reachability))
+        checkReachProbabilityMemory(problem); // refused now, not after the plan
     const double tDep = chooseDeparture(problem, options, result);
     if (result.departureSearch && !result.departureSearch->found)
     {

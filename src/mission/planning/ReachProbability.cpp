@@ -263,6 +263,26 @@ double weightedQuantile(const std::vector<double> &values, const std::vector<dou
     return kInf;
 }
 
+void checkReachProbabilityMemory(const MissionProblem &problem)
+{
+    const MissionSpec &m = problem.getSpec();
+    const ReachabilitySpec &rs = m.reachability;
+    const std::size_t members =
+        std::max<std::size_t>(std::max(problem.getMembers().size(), problem.weighedMembers().size()), 1);
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    ReachRequest request;
+    if (std::isnan(rs.resolution))
+        request.cellScale = 1.0;
+    else
+        request.cellSize = rs.resolution;
+    // the frames known before the plan: the horizon over the interval when both are given, else the fewest (2)
+    std::size_t frames = 2;
+    if (!std::isnan(rs.horizon) && !std::isnan(rs.interval) && rs.interval > 0.0)
+        frames = static_cast<std::size_t>(std::min(std::floor(rs.horizon / rs.interval) + 1.0,
+                                                   static_cast<double>(planning_detail::kMaxIsochrones) + 1.0));
+    checkMemoryOf(problem, request, members, frames, members >= cores ? cores : 1u);
+}
+
 ReachProbability computeReachProbability(const MissionProblem &problem, const PlannedPath &plan, double departure)
 {
     const auto wall0 = std::chrono::steady_clock::now();

@@ -1,4 +1,5 @@
 #include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/SettingRanges.h"
 #include "ProblemParts.h"
 #include "../../io/NumberText.h"
 #include "ompl_glider/current/EnsembleField.h"
@@ -190,6 +191,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
         throw Error(spec_.place("observations") + ": " + e.what());
     }
 #endif
+    checkDatesInRange(spec_); // a time setting past the ISO years is refused naming it, before any field is read
     buildField();
     buildMembers();
     buildTruth();

@@ -475,6 +475,14 @@ void applyExecution(const MissionOverrides &o, MissionSpec &m)
         }
         if (names.empty())
             throw Error(o.strategies->source + ": expected at least one strategy (" + known + ")");
+        // the mission's noise on the DAC needs a strategy that measures them (as the mission file's check)
+        const auto measures = [&names](const char *s) {
+            return std::find(names.begin(), names.end(), s) != names.end();
+        };
+        if (e.dacNoise > 0.0 && !measures("dac") && !measures("replan_observed"))
+            throw Error(o.strategies->source + ": no strategy listed measures a DAC, yet " +
+                        m.place("execution.dac_noise") + " adds noise to them (" + text::number(e.dacNoise) +
+                        "), which would change nothing: add dac or replan_observed, or leave dac_noise out");
         e.strategies = names;
         mark(m, "execution.strategies", o.strategies->source, o.origin);
     }

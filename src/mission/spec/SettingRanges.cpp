@@ -163,4 +163,39 @@ double settingFromText(const std::string &field, const std::string &text, const 
     const double v = end != begin && number <= 0.0 ? number * convert("1 " + unit) : convert(text);
     return checkSetting(field, v, "'" + text + "'");
 }
+
+void checkDatesInRange(const MissionSpec &m)
+{
+    if (!m.epoch || m.fileCalendar)
+        return;
+    const double departure = m.departure.window ? m.departure.end : m.departure.time;
+    const auto check = [&m](double from, double span, const std::string &field) {
+        const double t = from + (std::isfinite(span) && span > 0.0 ? span : 0.0);
+        if (std::isfinite(t) && !isoYearInRange(*m.epoch + t * m.timeUnitSeconds))
+            throw Error(m.place(field) + ": " + (span > 0.0 ? "from the departure, " : "") +
+                        "it reaches past the years 0000-9999 that the mission's dates are written in (ISO 8601, " +
+                        "from its epoch " + formatIsoTime(*m.epoch) + "): " +
+                        (span > 0.0 ? text::number(span * m.timeUnitSeconds / (365.25 * 86400.0)) + " years"
+                                    : "t = " + text::number(t)));
+    };
+    check(departure, 0.0, m.departure.window ? "departure.window" : "departure.time");
+    if (m.goalWindow.set)
+        check(m.goalWindow.end, 0.0, "goal.window");
+    double stays = 0.0;
+    for (std::size_t k = 0; k < m.waypoints.size(); ++k)
+    {
+        const std::string at = "waypoints[" + std::to_string(k) + "]";
+        if (m.waypoints[k].arrive.set)
+            check(m.waypoints[k].arrive.end, 0.0, at + ".arrive");
+        check(departure, m.waypoints[k].stay, at + ".stay");
+        stays += m.waypoints[k].stay;
+        check(departure, stays, at + ".stay");
+    }
+    check(departure, m.planner.horizon, "planner.horizon");
+    if (m.stints.set)
+        check(departure, m.stints.missionDuration, "stints.mission_duration");
+    check(departure, m.reachability.horizon, "reachability.horizon");
+    if (m.execution.enabled)
+        check(departure, m.execution.duration, "execution.duration");
+}
 } // namespace ompl_glider
