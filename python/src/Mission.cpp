@@ -119,7 +119,7 @@ MissionSpec forecast(const std::string &files, std::optional<Pair> start, Pair g
                      const std::string &velocityUnits, const std::string &timeUnits,
                      std::optional<std::size_t> steadyRecord, bool zeroVelocityLand, std::optional<Pair> depthAverage,
                      bool snapToWater, const std::string &observations, const std::string &kind,
-                     const std::string &observationsCache)
+                     const std::string &observationsCache, const std::string &maxSpeed)
 {
     ForecastInput in;
     in.current.type = kind; // a gridded kind of the registry (or its alias), kept as named; another: netcdf
@@ -136,6 +136,17 @@ MissionSpec forecast(const std::string &files, std::optional<Pair> start, Pair g
     in.current.timeInterpolation = parseInterp1D(timeScheme);
     in.current.horizonPolicy = parseBeyondForecast(horizon);
     in.current.velocityUnits = velocityUnits;
+    if (!maxSpeed.empty())
+    {
+        try
+        {
+            in.current.maxSpeed = parseSpeed(maxSpeed);
+        }
+        catch (const Error &e)
+        {
+            throw Error("Field.netcdf(): keyword 'max_speed': " + std::string(e.what()));
+        }
+    }
     in.current.timeUnits = timeUnits;
     in.current.steadyRecord = steadyRecord;
     in.current.zeroVelocityLand = zeroVelocityLand;
@@ -300,6 +311,7 @@ std::shared_ptr<const SettingWords> keywordWords()
                       {"current.variables.depth", "Field.netcdf(): keyword 'variables' (depth)"},
                       {"current.variables.time", "Field.netcdf(): keyword 'variables' (time)"},
                       {"current.velocity_units", "Field.netcdf(): keyword 'velocity_units'"},
+                      {"current.max_speed", "Field.netcdf(): keyword 'max_speed'"},
                       {"current.time_units", "Field.netcdf(): keyword 'time_units'"},
                       {"current.steady_record", "Field.netcdf(): keyword 'steady_record'"},
                       {"current.zero_velocity_land", "Field.netcdf(): keyword 'zero_velocity_land'"}},
@@ -552,7 +564,7 @@ void bindMission(py::module_ &m)
           py::arg("horizon") = "refuse", py::arg("velocity_units") = "", py::arg("time_units") = "",
           py::arg("steady_record") = py::none(), py::arg("zero_velocity_land") = true,
           py::arg("depth_average") = py::none(), py::arg("snap_to_water") = false, py::arg("observations") = "",
-          py::arg("kind") = "netcdf", py::arg("observations_cache") = "",
+          py::arg("kind") = "netcdf", py::arg("observations_cache") = "", py::arg("max_speed") = "",
           "The mission of a gridded forecast, as glider_plan --currents builds it (start None: at the last fix of "
           "`observations`, and its time without a departure, marked so until the mission resumes there; speed None: "
           "the forecast mission's default), read by the gridded source `kind` "

@@ -306,6 +306,36 @@ void printGlobalCheck(std::ostream &out, const PlannedPath &p, const MissionSpec
     if (!g.winner.empty() && g.winner != g.candidates.front().name)
         out << format("  the planner's route was in another route class: %.2f%% faster now\n", 100.0 * g.gain);
 }
+
+/// An ensemble's plan: robust over every member, or the one most likely to arrive (in how many members, which not).
+void printEnsemblePlan(std::ostream &out, const PlannedPath &p, const MissionSpec &m)
+{
+    if (!p.ensemble || !p.solved)
+        return;
+    const EnsemblePlan &e = *p.ensemble;
+    const auto span = [&](double t) {
+        return m.physicalUnits().time ? text::durationText(t * m.timeUnitSeconds) : format("%.4f", t);
+    };
+    std::size_t arriving = 0;
+    std::string missing;
+    for (std::size_t k = 0; k < e.memberTravelTimes.size(); ++k)
+        if (std::isfinite(e.memberTravelTimes[k]))
+            ++arriving;
+        else
+            missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+    const std::size_t n = e.memberTravelTimes.size();
+    const std::string on = e.chosen == "mean" ? "the members' mean" : e.chosen;
+    if (arriving == n)
+        out << "Ensemble:           robust: arrives in every one of the " << n << " members, planned on " << on << "; "
+            << ensembleObjectiveName(e.objective) << " " << span(e.objectiveValue) << "\n";
+    else
+        out << "Ensemble:           arrives in " << arriving << " of " << n
+            << " members, p = " << format("%.2f", e.arrivalProbability)
+            << " (no candidate arrives in every member: the plan most "
+            << "likely to arrive, planned on " << on << "); not in member" << (n - arriving > 1 ? "s " : " ") << missing
+            << "; " << ensembleObjectiveName(e.objective) << " over those it reaches " << span(e.objectiveValue)
+            << "\n";
+}
 } // namespace
 
 std::string speedSweepTable(const std::vector<SpeedSweepRow> &rows)
@@ -374,6 +404,7 @@ void printReport(std::ostream &out, const MissionResult &r, const MissionProblem
 #endif
     out << "Status:             " << statusText(p.status) << (p.solved ? "" : "\nReason:             " + p.reason)
         << "\n";
+    printEnsemblePlan(out, p, m);
     printRouteModel(out, r);
     printGlobalCheck(out, p, m);
     if (!r.safetyNote.empty())

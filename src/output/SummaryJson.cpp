@@ -394,6 +394,45 @@ void afterPlanJson(const MissionResult &r, const MissionProblem &problem, json &
 }
 } // namespace
 
+namespace
+{
+/// summary.json's "ensemble": the members, the objective, the chosen candidate, its arrival in each member.
+json ensembleJson(const PlannedPath &p, const MissionProblem &problem)
+{
+    const EnsemblePlan &e = *p.ensemble;
+    auto times = [](const std::vector<double> &v) {
+        json a = json::array();
+        for (double x : v)
+            a.push_back(jnum(x));
+        return a;
+    };
+    json members = json::array();
+    for (const auto &f : problem.getMembers())
+        members.push_back(f->name());
+    json cands = json::array();
+    for (const EnsemblePlan::Candidate &c : e.candidates)
+        cands.push_back({{"name", c.name},
+                         {"solved", c.solved},
+                         {"objective_value", jnum(c.objectiveValue)},
+                         {"member_travel_times", times(c.memberTravelTimes)}});
+    const MeasureSpread spread = measureSpread(e.memberTravelTimes);
+    json arriving = json::array(), notArriving = json::array(); // members by index, as member_travel_times
+    for (std::size_t k = 0; k < e.memberTravelTimes.size(); ++k)
+        (std::isfinite(e.memberTravelTimes[k]) ? arriving : notArriving).push_back(k);
+    return {{"members", members},
+            {"objective", ensembleObjectiveName(e.objective)},
+            {"quantile", e.objective == EnsembleObjective::Quantile ? json(e.quantile) : json(nullptr)},
+            {"chosen", e.chosen},
+            {"objective_value", jnum(e.objectiveValue)},
+            {"member_travel_times", times(e.memberTravelTimes)},
+            {"arrival_probability", p.solved ? json(e.arrivalProbability) : json(nullptr)},
+            {"members_arriving", arriving},
+            {"members_not_arriving", notArriving},
+            {"spread", {{"min", jnum(spread.min)}, {"mean", jnum(spread.mean)}, {"max", jnum(spread.max)}}},
+            {"candidates", cands}};
+}
+} // namespace
+
 std::string summaryJson(const MissionResult &r, const MissionProblem &problem, const std::vector<std::string> &files)
 {
     const PlannedPath &p = r.plan;
@@ -427,9 +466,12 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
                             {"begin_iso", jtext(problem.isoTime(m.goalWindow.begin))},
                             {"end_iso", jtext(problem.isoTime(m.goalWindow.end))},
                             {"timing", jtext(p.arrivalTiming)}};
-    j["travel_time"] = jnum(p.travelTime);
-    j["travel_time_raw"] = jnum(p.rawTravelTime);
-    j["travel_time_smoothed"] = jnum(p.smoothedTravelTime);
+    // no travel time without a path (a robust plan's best candidate, impassable in some member, is not one)
+    j["travel_time"] = p.solved ? jnum(p.travelTime) : json(nullptr);
+    j["travel_time_raw"] = p.solved ? jnum(p.rawTravelTime) : json(nullptr);
+    j["travel_time_smoothed"] = p.solved ? jnum(p.smoothedTravelTime) : json(nullptr);
+    if (p.ensemble) // the share of the members in which the route arrives (1: robust over every member)
+        j["arrival_probability"] = p.solved ? json(p.ensemble->arrivalProbability) : json(0.0);
     if (r.diveProfiles)
         j["travel_time_dive_profiles"] = jnum(r.diveTravelTime);
     j["path_length"] = p.solved ? json(p.pathLength) : json(nullptr);
@@ -509,34 +551,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
         j["speed_sweep"] = rows;
     }
     if (p.ensemble)
-    {
-        const EnsemblePlan &e = *p.ensemble;
-        auto times = [](const std::vector<double> &v) {
-            json a = json::array();
-            for (double x : v)
-                a.push_back(jnum(x));
-            return a;
-        };
-        json members = json::array();
-        for (const auto &f : problem.getMembers())
-            members.push_back(f->name());
-        json cands = json::array();
-        for (const EnsemblePlan::Candidate &c : e.candidates)
-            cands.push_back({{"name", c.name},
-                             {"solved", c.solved},
-                             {"objective_value", jnum(c.objectiveValue)},
-                             {"member_travel_times", times(c.memberTravelTimes)}});
-        const MeasureSpread spread = measureSpread(e.memberTravelTimes);
-        j["ensemble"] = {
-            {"members", members},
-            {"objective", ensembleObjectiveName(e.objective)},
-            {"quantile", e.objective == EnsembleObjective::Quantile ? json(e.quantile) : json(nullptr)},
-            {"chosen", e.chosen},
-            {"objective_value", jnum(e.objectiveValue)},
-            {"member_travel_times", times(e.memberTravelTimes)},
-            {"spread", {{"min", jnum(spread.min)}, {"mean", jnum(spread.mean)}, {"max", jnum(spread.max)}}},
-            {"candidates", cands}};
-    }
+        j["ensemble"] = ensembleJson(p, problem);
     afterPlanJson(r, problem, j);
     legsJson(r, problem, j);
     j["observations"] = summary_detail::observationsJson(problem);

@@ -5,6 +5,9 @@ glider_add_test(test_mission_file ${CMAKE_CURRENT_LIST_DIR}/TestMissionFile.cpp)
 glider_add_test(test_mission_setting_ranges ${CMAKE_CURRENT_LIST_DIR}/TestSettingRanges.cpp)
 # an analytic flow's ensemble drawn from one set of parameters (members, spread, seed)
 glider_add_test(test_mission_drawn_ensemble ${CMAKE_CURRENT_LIST_DIR}/TestDrawnEnsemble.cpp)
+# an ensemble whose members disagree: the route most likely to arrive, never "no path" while members arrive
+glider_add_test(test_mission_ensemble_arrival ${CMAKE_CURRENT_LIST_DIR}/TestEnsembleArrival.cpp)
+target_link_libraries(test_mission_ensemble_arrival INTERFACE nlohmann_json::nlohmann_json)
 target_link_libraries(test_mission_drawn_ensemble INTERFACE nlohmann_json::nlohmann_json)
 glider_add_test(test_mission_run EXECUTABLE tests_mission_gis ${CMAKE_CURRENT_LIST_DIR}/TestMissionRun.cpp ${CMAKE_CURRENT_LIST_DIR}/TestForecastLand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/TestForecastModelGrids.cpp

@@ -148,7 +148,7 @@ def test_execution_keywords_give_the_flags_answers(tmp_path):
 
 
 @pytest.mark.parametrize("keyword,value,says", [
-    ("keep_off", "2 parsecs", "expected a length"),
+    ("keep_off", "2 fortnights", "expected a length"),
     ("keep_off", -1.0, "expected a length >= 0"),
     ("min_depth", "-5 m", "expected a length >= 0"),
     ("min_depth", "deep", "expected a length"),

@@ -104,6 +104,10 @@ struct EnsemblePlan
     /// The chosen plan's travel time by the objective over the members (+inf when a member cannot fly it)
     double objectiveValue{std::numeric_limits<double>::infinity()};
     std::vector<double> memberTravelTimes; ///< the chosen path flown in each member (+inf: impassable there)
+    /// The share of the members in which the chosen path arrives (equal weights): 1 for a robust plan; below 1 when
+    /// no candidate arrives in every member and the plan is the one most likely to arrive (objectiveValue then over
+    /// the members it arrives in); 0 without a path
+    double arrivalProbability{0.0};
     /// One candidate plan: planned on the members' mean or on one member, judged on every member.
     struct Candidate
     {

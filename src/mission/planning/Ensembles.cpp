@@ -13,6 +13,7 @@
 #include <functional>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include "PlanningInternal.h"
 #include "ompl_glider/Exception.h"
@@ -57,6 +58,29 @@ double objectiveOverFlown(const std::vector<double> &times, EnsembleObjective ob
         if (!std::isnan(t))
             flown.push_back(t);
     return ensembleObjective(flown, objective, q);
+}
+
+/// The share of the members a candidate was flown in where it arrives (0 when flown in none).
+double arrivingShare(const std::vector<double> &times)
+{
+    std::size_t flown = 0, arriving = 0;
+    for (double t : times)
+        if (!std::isnan(t))
+        {
+            ++flown;
+            arriving += std::isfinite(t) ? 1 : 0;
+        }
+    return flown == 0 ? 0.0 : static_cast<double>(arriving) / static_cast<double>(flown);
+}
+
+/// The objective over the members a candidate was flown in and arrives in (+inf when none).
+double objectiveOverArriving(const std::vector<double> &times, EnsembleObjective objective, double q)
+{
+    std::vector<double> arriving;
+    for (double t : times)
+        if (std::isfinite(t))
+            arriving.push_back(t);
+    return arriving.empty() ? kInf : ensembleObjective(arriving, objective, q);
 }
 
 /// Whether @p times holds a travel time (or +inf) for every member.
@@ -152,6 +176,30 @@ private:
     std::atomic<bool> cut_{false};
 };
 
+/// No candidate arrives in every member: the one that arrives in the largest share of those it was flown in (ties:
+/// the better objective over the members it arrives in), flown in every member. Its index, or nullopt when no
+/// candidate arrives in any member.
+std::optional<std::size_t> mostLikelyToArrive(const std::vector<PlannedPath> &plans,
+                                              const std::vector<std::vector<double>> &times,
+                                              const std::vector<char> &leftOut, const EnsemblePlan &e,
+                                              MemberFlights &flights, std::size_t members)
+{
+    std::optional<std::size_t> best;
+    const auto key = [&](std::size_t c) {
+        return std::make_pair(-arrivingShare(times[c]), objectiveOverArriving(times[c], e.objective, e.quantile));
+    };
+    for (std::size_t c = 0; c < plans.size(); ++c)
+        if (plans[c].solved && !leftOut[c] && arrivingShare(times[c]) > 0.0 && (!best || key(c) < key(*best)))
+            best = c;
+    if (best)
+    {
+        std::vector<std::size_t> all(members);
+        std::iota(all.begin(), all.end(), 0);
+        flights.flyIn(*best, all);
+    }
+    return best;
+}
+
 /// The finalists: the candidates in the order of their objective over the screening members, each passable there
 /// flown in every member (all of a round side by side) until kFinalists are passable in every member.
 void flyFinalists(const std::vector<PlannedPath> &plans, const std::vector<std::vector<double>> &times,
@@ -193,10 +241,11 @@ PlannedPath notRobust(const MissionProblem &problem, PlannedPath r, const Ensemb
     r.solved = false;
     r.status = PlanStatus::NoPath;
     const std::string objective = ensembleObjectiveName(e.objective);
-    r.setNoPath({NoPathCause::NotRobust, "not robust: no candidate plan can be flown in every member of the "
-                                         "ensemble (objective " +
-                                             objective + "); the best, planned on the " + e.chosen +
-                                             ", is impassable in " + failing});
+    r.setNoPath({NoPathCause::NotRobust, "no member of the ensemble is reached: no candidate plan (the mean's, the "
+                                         "members' own) arrives in any of the " +
+                                             std::to_string(members.size()) + " members (objective " + objective +
+                                             "); the best, planned on the " + e.chosen + ", is impassable in " +
+                                             failing});
     return r;
 }
 } // namespace
@@ -266,6 +315,12 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
         if (c > 0 && better(c, best))
             best = c;
     }
+    // No candidate arrives in every member: the plan is the one most likely to arrive, with its share of the members
+    // (never "no path" while members arrive); "no path" only when no candidate arrives in any member.
+    if (plans[best].solved && !flights.cut() &&
+        !(eligible(best) && std::isfinite(ensembleObjective(times[best], e.objective, e.quantile))))
+        if (const std::optional<std::size_t> likely = mostLikelyToArrive(plans, times, leftOut, e, flights, n))
+            best = *likely;
     if (flights.cut())
     {
         // a stop request (Ctrl-C) cut the flights: no candidate can be judged over every member
@@ -300,6 +355,9 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
     e.chosen = best == 0 ? "mean" : "member " + std::to_string(planned[best - 1]);
     e.objectiveValue = ensembleObjective(times[best], e.objective, e.quantile);
     e.memberTravelTimes = times[best];
+    e.arrivalProbability = flownInEvery(times[best]) ? arrivingShare(times[best]) : 0.0;
+    if (e.arrivalProbability > 0.0 && e.arrivalProbability < 1.0) // the objective over the members it arrives in
+        e.objectiveValue = objectiveOverArriving(times[best], e.objective, e.quantile);
     // every candidate's search counts
     r.searchCostFunctionCalls = r.postprocessCostFunctionCalls = r.currentModelCalls = r.expandedVertices = 0;
     r.planningSeconds = r.postprocessSeconds = 0.0;
@@ -317,6 +375,14 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
     }
     if (r.solved && !std::isfinite(e.objectiveValue))
         r = notRobust(problem, std::move(r), e, times[best]);
+    else if (!r.solved && std::none_of(leftOut.begin(), leftOut.end(), [](char c) { return c != 0; }) &&
+             (r.noPath.cause == NoPathCause::LatticeExhausted || r.noPath.cause == NoPathCause::SearchEnded ||
+              r.noPath.cause == NoPathCause::Unreachable || r.noPath.cause == NoPathCause::NotFlyable ||
+              r.noPath.cause == NoPathCause::Other))
+        // neither the mean's plan nor any member's own has a path: no member is reached, said first
+        r.setNoPath({NoPathCause::NotRobust, "no member of the ensemble is reached: neither the plan on the members' "
+                                             "mean nor any member's own plan finds a path (on the mean: " +
+                                                 r.reason + ")"});
     r.ensemble = std::move(e);
     return r;
 }

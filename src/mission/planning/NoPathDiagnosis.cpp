@@ -196,7 +196,9 @@ void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
 {
     // a search stopped by its time limit is not diagnosed: more time is the advice
     const NoPathCause cause = r.noPath.cause;
-    if (r.solved || !r.badInput.empty() || cause == NoPathCause::TimeLimit || cause == NoPathCause::Approximate)
+    // nor an ensemble's: its reason says that no member is reached, and comes first
+    if (r.solved || !r.badInput.empty() || cause == NoPathCause::TimeLimit || cause == NoPathCause::Approximate ||
+        cause == NoPathCause::NotRobust)
         return;
     const MissionSpec &m = problem.getSpec();
     const GliderProblem gp = problem.gliderProblem(tDep, r.speed > 0.0 ? r.speed : m.vehicle.speed);
