@@ -397,10 +397,16 @@ case("cli-surfacing-tiny", ["--surfacing-interval", "1e-7", "--out", "{out}"], 2
 case("cli-isochrone-interval-tiny", ["--isochrone-interval", "0.01", "--out", "{out}"], 2,
      "--isochrone-interval: an interval of 0.01 gives 1139 isochrones over the 11.4 the plan takes")
 # an ensemble member that no candidate can cross: not robust, exit 1 with the member named
+# a member impassable, the other not: the route most likely to arrive, with its share (never "no path" while a
+# member arrives); none passable: no path, that reason first
 yaml_case("ensemble-worst-member-impassable",
           mission("current: {ensemble: [{type: uniform, parameters: {u: 0.1}}, {type: uniform, parameters: {u: -0.6}}]}",
                   "planner: {name: zastartve, grid_size: 0.5, objective: worst}"),
-          "not robust: no candidate plan can be flown in every member of the ensemble (objective worst)", status=1)
+          "Ensemble:           arrives in 1 of 2 members, p = 0.50", status=0)
+yaml_case("ensemble-no-member-reached",
+          mission("current: {ensemble: [{type: uniform, parameters: {u: -0.7}}, {type: uniform, parameters: {u: -0.6}}]}",
+                  "planner: {name: zastartve, grid_size: 0.5, objective: worst}"),
+          "Reason:             no member of the ensemble is reached", status=1)
 # a truth that ends before the plan arrives: refused, never extrapolated
 case("execution-truth-ends-early", ["--mission", "m.yaml", "--out", "{out}"], 2,
      "field 'execution.truth': the truth ends at t = 7200",
@@ -789,7 +795,7 @@ data:
 """
 for name, args, phrase in [
         ("flag-keep-off-negative", ["--keep-off=-2"], "--keep-off: expected a length >= 0"),
-        ("flag-keep-off-unknown-unit", ["--keep-off", "2 parsecs"], "--keep-off: expected a length"),
+        ("flag-keep-off-unknown-unit", ["--keep-off", "2 fortnights"], "--keep-off: expected a length"),
         ("flag-keep-off-km-without-units", ["--keep-off", "2km"], "needs the mission's length unit"),
         ("flag-min-depth-without-bathymetry", ["--min-depth", "50m"],
          "--min-depth: a depth limit needs a bathymetry file, a NetCDF file of seafloor depth or elevation "
