@@ -165,6 +165,8 @@ private:
     void applyObservations(const GliderObservations *read);
     /// Via points in the region, in water, their stays within the forecast (Endpoints.cpp).
     void checkViaPoints() const;
+    /// A glider resumed at a last fix after the forecast's end is refused, naming both (Endpoints.cpp).
+    void checkLastFixInForecast() const;
     void buildRegions();
     /// The coastline's land polygons about the box (Safety.cpp); errors begin with @p at.
     std::vector<LandPolygon> readCoastline(const std::string &at);

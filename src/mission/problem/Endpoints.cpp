@@ -133,6 +133,23 @@ MissionProblem MissionProblem::withLeg(Point2 start, Point2 goal, const GoalWind
     return p;
 }
 
+void MissionProblem::checkLastFixInForecast() const
+{
+    const MissionSpec &m = spec_;
+    if (!m.observations || !m.observations->resumed)
+        return;
+    const MissionResume &r = *m.observations->resumed;
+    const double fix = m.timeOf(r.fixIso), end = field_->timeEnd();
+    if (std::isfinite(end) && fix > end)
+    {
+        const std::string endText = m.isoTime(end).empty() ? text::number(end, 10) : m.isoTime(end);
+        throw Error(m.place("observations") + ": the glider's last fix (" + r.fixIso +
+                    ") is after the forecast's end (" + endText +
+                    "): the forecast says nothing of the currents from there on; give a forecast that covers the "
+                    "time from the last fix on");
+    }
+}
+
 MissionProblem MissionProblem::withField(std::shared_ptr<const CurrentField> field) const
 {
     MissionProblem p(*this);

@@ -189,6 +189,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     }
 #endif
     buildField();
+    checkLastFixInForecast(); // (before the stations' windows are judged against a departure past the forecast)
     buildMembers();
     buildTruth();
     start_ = localPoint(spec_.start, "start");
