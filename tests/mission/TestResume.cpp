@@ -57,6 +57,12 @@ MissionSpec survey(const std::string &observations, MissionOverrides o = {})
     return m;
 }
 
+/// The survey's field time @p hours after its departure.
+double hoursIn(const MissionSpec &m, double hours)
+{
+    return m.timeOf(formatIsoTime(kT0 + 3600.0 * hours));
+}
+
 /// Metres between two lon/lat points (a sphere; this file's own).
 double metres(LonLat a, LonLat b)
 {
@@ -421,4 +427,54 @@ TEST(Resume, ALastFixAfterTheForecastsEndIsRefusedNamingBoth)
             << what;
         EXPECT_EQ(what.find("arrive"), std::string::npos) << what;
     }
+}
+
+// A glider a few tens of metres from its next station or its goal: each leg's automatic lattice spacing follows the
+// leg's length, but never so fine that the box's lattice cannot hold it; a departure given during a stay under way
+// finishes the stay first.
+TEST(Resume, AGliderTensOfMetresFromTheGoalOrAStationPlans)
+{
+    // every station done, 60 m from the goal, the goto list's waypoint distance 50 m
+    const std::string obs = deployment("near_goal", {{10, -52.2005, 48.0004},
+                                                     {16, -52.2003, 48.0002},
+                                                     {24, -51.9003, 48.2002},
+                                                     {50, -51.6505, 48.3003},
+                                                     {60, -51.5, 48.45054}});
+    MissionSpec s = survey(obs);
+    s.outputs.gotoWptDist = 50.0;
+    const MissionProblem p(s);
+    const MissionSpec &m = p.getSpec();
+    EXPECT_TRUE(m.waypoints.empty());
+    const Region box = p.getBox();
+    const double finest = std::sqrt((box.xMax - box.xMin) * (box.yMax - box.yMin) / kAutomaticLatticeVertices);
+    EXPECT_GE(m.planner.gridSize, finest);
+    EXPECT_LE(m.planner.gridSize, 1.1 * finest);
+    const MissionResult res = runMission(p);
+    ASSERT_TRUE(res.plan.solved) << res.plan.reason;
+    EXPECT_LT(res.plan.travelTime, 600.0); // 60 m at 0.3 m/s and the current
+    // 36 m from the goal with every station still to visit: the mission is accepted, each leg its own spacing
+    const MissionProblem q(survey(deployment("near_goal_stations", {{4, -52.6, 47.93}, {10, -51.5, 48.45032}})));
+    EXPECT_EQ(q.getSpec().waypoints.size(), 3u);
+    EXPECT_GE(q.getSpec().planner.gridSize, finest);
+    const MissionProblem leg = q.withLeg(q.getStart(), q.getViaPoints()[0], {});
+    const double d = std::hypot(q.getViaPoints()[0].x - q.getStart().x, q.getViaPoints()[0].y - q.getStart().y);
+    EXPECT_GE(leg.getSpec().planner.gridSize, d / 200.0);
+    EXPECT_LE(leg.getSpec().planner.gridSize, 1.02 * d / 25.0); // (two significant digits)
+    // a departure given during the stay at A (36 m from it, hour 22; the stay ends at hour 26)
+    MissionOverrides o;
+    o.departure = Given<std::string>{"2026-03-16T05:00:00Z", "--departure"};
+    const MissionProblem stay(survey(
+        deployment("departure_in_stay", {{4, -52.6, 47.93}, {20, -52.2018, 48.0008}, {22, -52.2, 48.00032}}), o));
+    const MissionResume &r = *stay.getSpec().observations->resumed;
+    ASSERT_EQ(r.dropped.size(), 1u);
+    EXPECT_EQ(r.stayEnds, "2026-03-16T08:00:00Z");
+    EXPECT_EQ(r.departureDuringStay, "2026-03-16T05:00:00Z");
+    EXPECT_EQ(stay.getSpec().isoTime(stay.getSpec().departure.time), "2026-03-16T08:00:00Z");
+    EXPECT_NE(resumeNote(stay.getSpec()).find("not at the departure given, 2026-03-16T05:00:00Z, during the stay"),
+              std::string::npos)
+        << resumeNote(stay.getSpec());
+    const MissionResult planned = runMission(stay);
+    ASSERT_TRUE(planned.plan.solved) << planned.plan.reason;
+    EXPECT_EQ(planned.legs.front().to, "B");
+    EXPECT_NEAR(planned.waypoints.front().time, hoursIn(stay.getSpec(), 26), 1e-6);
 }

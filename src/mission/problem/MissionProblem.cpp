@@ -208,11 +208,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     checkViaPoints();
     gridSizeAutomatic_ = !(spec_.planner.gridSize > 0);
     if (gridSizeAutomatic_)
-    {
-        const double d = std::hypot(goal_.x - start_.x, goal_.y - start_.y);
-        spec_.planner.gridSize =
-            grid ? defaultForecastGridSize(grid->minCellSize(), d) : defaultAnalyticGridSize(spec_, d);
-    }
+        spec_.planner.gridSize = automaticGridSize(start_, goal_); // (each leg's own: withLeg())
 }
 
 void MissionProblem::buildBox()
