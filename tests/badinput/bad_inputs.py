@@ -688,6 +688,10 @@ for name, args, phrase in [
     case(name, args + ["--out", "{out}"], 2, phrase, {"m.yaml": MISSION})
 case("flag-grid-fine-memory-limit", ["--grid-size", "1e-3", "--out", "{out}"], 2, "--grid-size: a lattice spacing",
      env={"OMPL_GLIDER_MEMORY_LIMIT": "500M"})
+# an automatic spacing the memory limit refuses: named as the automatic one, not as a planner.grid_size never given
+case("automatic-grid-memory-limit", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml: the automatic lattice spacing (chosen from the leg's length; give one: planner.grid_size, --grid-size): "
+     "a lattice spacing of 0.32 gives", {"m.yaml": mission("planner: {name: zastartve}")}, env={"OMPL_GLIDER_MEMORY_LIMIT": "4000"})
 case("tmpdir-missing-fleet", ["--mission", "m.yaml", "--out", "{out}"], 2,
      "the folder for temporary files '/nonexistent/tmp' (the environment variable TMPDIR) does not exist",
      {"m.yaml": mission(append="fleet:\n  - {name: a, start: {x: 1, y: 0}, goal: {x: 9, y: 0}}\n")},

@@ -121,6 +121,9 @@ public:
     const std::vector<MissionPolygon> &getPolygons() const { return polygons_; }
     /// @brief Planning box (x/y) and the field's time span.
     const Region &getBox() const { return box_; }
+    /// @brief planner.grid_size was not given (0): the lattice spacing is chosen from each leg's length
+    /// (automaticGridSize()).
+    bool gridSizeAutomatic() const { return gridSizeAutomatic_; }
     /// @brief Start position (planning frame).
     Point2 getStart() const { return start_; }
     /// @brief Goal position (planning frame).
