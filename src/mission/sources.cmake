@@ -35,6 +35,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/inputs/ProblemLand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/Safety.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/Observations.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inputs/Resume.cpp
   # the planning pipeline, one concern per file (see planning/PlanningInternal.h)
   ${CMAKE_CURRENT_LIST_DIR}/planning/Planning.cpp
   ${CMAKE_CURRENT_LIST_DIR}/planning/PlannerSetup.cpp

@@ -145,18 +145,29 @@ json observationsJson(const MissionProblem &problem)
         json dropped = json::array();
         for (const DroppedStation &d : r.dropped)
             dropped.push_back({{"name", d.name},
-                               {"why", "reached"},
+                               {"why", d.windowClosed.empty() ? "reached" : "reached after its window closed"},
                                {"reached_iso", d.reachedIso},
                                {"distance_m", d.distance},
                                {"lon", d.at.lon},
                                {"lat", d.at.lat},
                                {"radius_m", d.radius},
-                               {"stay_left", d.stayLeft}});
+                               {"stay_left", d.stayLeft},
+                               {"window_opens", jtext(d.windowOpens)},
+                               {"window_closed", jtext(d.windowClosed)}});
+        json left = nullptr;
+        if (r.leftStay)
+            left = {{"name", r.leftStay->name},          {"reached_iso", r.leftStay->reachedIso},
+                    {"left_iso", r.leftStay->leftIso},   {"held", r.leftStay->held},
+                    {"stay_left", r.leftStay->stayLeft}, {"distance_m", r.leftStay->distance},
+                    {"radius_m", r.leftStay->radius}};
         resumed = {{"fix", {{"lon", r.fix.lon}, {"lat", r.fix.lat}, {"time_iso", r.fixIso}}},
                    {"replaced_start", jtext(r.replacedStart)},
                    {"replaced_departure", jtext(r.replacedDeparture)},
                    {"dropped", dropped},
                    {"stay_ends", jtext(r.stayEnds)},
+                   {"departure_during_stay", jtext(r.departureDuringStay)},
+                   {"left_stay", left},
+                   {"warnings", resumeWarnings(m)},
                    {"stale_fix_warning", jtext(r.staleFix)}};
     }
     return {{"source", o->source},

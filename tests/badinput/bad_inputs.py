@@ -733,6 +733,10 @@ for name, args, phrase in [
     case(name, args + ["--out", "{out}"], 2, phrase, {"m.yaml": MISSION})
 case("flag-grid-fine-memory-limit", ["--grid-size", "1e-3", "--out", "{out}"], 2, "--grid-size: a lattice spacing",
      env={"OMPL_GLIDER_MEMORY_LIMIT": "500M"})
+# an automatic spacing the memory limit refuses: named as the automatic one, not as a planner.grid_size never given
+case("automatic-grid-memory-limit", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "m.yaml: the automatic lattice spacing (chosen from the leg's length; give one: planner.grid_size, --grid-size): "
+     "a lattice spacing of 0.32 gives", {"m.yaml": mission("planner: {name: zastartve}")}, env={"OMPL_GLIDER_MEMORY_LIMIT": "4000"})
 case("tmpdir-missing-fleet", ["--mission", "m.yaml", "--out", "{out}"], 2,
      "the folder for temporary files '/nonexistent/tmp' (the environment variable TMPDIR) does not exist",
      {"m.yaml": mission(append="fleet:\n  - {name: a, start: {x: 1, y: 0}, goal: {x: 9, y: 0}}\n")},
@@ -1009,6 +1013,17 @@ observations_case("observations-dba-degc", "g.dba", "g.dba:7: 'm_water_vx' is in
                   {"g.dba": DBA.replace("lon m/s m/s", "lon degC degC")})
 observations_case("observations-fix-after-forecast", "d.csv", "the last fix's time (--observations) 2030-01-01",
                   {"d.csv": "time,lon,lat,u,v\n2030-01-01T00:00:00Z,-52.5,47.5,0.1,0\n"})
+# a mission resumed at a last fix after the forecast's end (2026-03-17T00:00:00Z): the forecast's end is named, not the
+# window of a station the glider could then never reach
+case("observations-last-fix-after-forecast-end", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "the glider's last fix (2026-03-17T06:00:00Z) is after the forecast's end (2026-03-17T00:00:00Z)",
+     {"f.cdl": forecast(),
+      "d.csv": "time,lon,lat,u,v\n2026-03-15T06:00:00Z,-52.8,47.2,0.1,0\n2026-03-17T06:00:00Z,-52.7,47.3,0.1,0\n",
+      "m.yaml": "name: late\ncurrent: {type: netcdf, file: f.nc}\nstart: {lon: -52.9, lat: 47.1}\n"
+                "waypoints:\n  - {name: A, lon: -52.5, lat: 47.5, radius: 500 m, "
+                "arrive: {begin: \"2026-03-15T12:00:00Z\", end: \"2026-03-16T12:00:00Z\"}}\n"
+                "goal: {lon: -52.1, lat: 47.9}\ndeparture: {time: \"2026-03-15T00:00:00Z\"}\n"
+                "vehicle: {speed: 0.3}\nobservations: {file: d.csv}\n"})
 observations_case("observations-csv-degc", "d.csv", "d.csv:1: 'u' is in 'degC': units 'degC' are not a velocity",
                   {"d.csv": "time,lon,lat,u (degC),v (degC)\n2026-03-15T06:00:00Z,-52.5,47.5,12,11\n"})
 # a CSV row whose u and v are NaN is a fix without a DAC's value: rejected as such, never counted as a DAC

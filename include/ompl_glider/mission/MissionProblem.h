@@ -121,6 +121,9 @@ public:
     const std::vector<MissionPolygon> &getPolygons() const { return polygons_; }
     /// @brief Planning box (x/y) and the field's time span.
     const Region &getBox() const { return box_; }
+    /// @brief planner.grid_size was not given (0): the lattice spacing is chosen from each leg's length
+    /// (automaticGridSize()).
+    bool gridSizeAutomatic() const { return gridSizeAutomatic_; }
     /// @brief Start position (planning frame).
     Point2 getStart() const { return start_; }
     /// @brief Goal position (planning frame).
@@ -165,6 +168,12 @@ private:
     void applyObservations(const GliderObservations *read);
     /// Via points in the region, in water, their stays within the forecast (Endpoints.cpp).
     void checkViaPoints() const;
+    /// A glider resumed at a last fix after the forecast's end is refused, naming both (Endpoints.cpp).
+    void checkLastFixInForecast() const;
+    /// The automatic lattice spacing (planner.grid_size 0) of a leg from @p a to @p b (Endpoints.cpp): the
+    /// default for its length (defaultForecastGridSize(), defaultAnalyticGridSize()), never so fine that the
+    /// planning box's lattice holds more than kAutomaticLatticeVertices.
+    double automaticGridSize(Point2 a, Point2 b) const;
     void buildRegions();
     /// The coastline's land polygons about the box (Safety.cpp); errors begin with @p at.
     std::vector<LandPolygon> readCoastline(const std::string &at);
@@ -201,7 +210,7 @@ private:
     Point2 start_, goal_;
     std::vector<Point2> via_;                               // via points, planning frame
     std::shared_ptr<const ObservationReport> observations_; // what the observations gave (null: none)
-    bool gridSizeAutomatic_{false};                         // planner.grid_size was 0: chosen from the trip's length
+    bool gridSizeAutomatic_{false};                         // planner.grid_size was 0: chosen from each leg's length
     std::shared_ptr<const KeepOffZone> land_;               // land's boundary and the keep-off distance (null: no land)
     std::string safetyNote_;                                // what the depth limit read, and how
     std::string fieldWord_{"current"};                      // "current" or "wind"
@@ -239,6 +248,11 @@ std::map<ForecastOption, std::string> forecastFieldNames(const std::string &sect
 /// @brief The water point nearest to @p p at depth z: just beyond (by @p step, in planning units) the closest point
 /// of the field's land boundary (CurrentField::landBoundary()), checked with inWater(); nullopt when none is found.
 std::optional<Point2> nearestWater(const CurrentField &field, Point2 p, double z, double step);
+
+/// @brief The most vertices an automatic lattice spacing gives the planning box's lattice (2^22): a leg of a few tens
+/// of metres (a glider resumed beside its next station or its goal) gets a spacing the box's lattice can hold, its
+/// start and goal then joined by the lattice's direct edge, not a thousandth of the box's side.
+constexpr double kAutomaticLatticeVertices = 4194304.0;
 
 /// @brief Default lattice spacing (metres) on a forecast: half the smallest grid cell, but no coarser than 1/25
 /// of the start-goal distance and no finer than 1/200 of it, rounded to two significant digits. (Half a cell

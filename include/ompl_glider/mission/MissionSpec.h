@@ -183,6 +183,10 @@ struct DepartureSpec
     double coarseGridSize{0.0}; ///< > 0: supporting points on a lattice of this spacing ([EichhornRAS] Sec. 5.3)
     int coarseSectors{0};       ///< sectors of the coarse lattice (0: same as the planner)
     unsigned threads{0};        ///< parallel searches (0: all cores)
+    /// The mission's own departure (its window's beginning) where a caller's departure replaced it
+    /// (applyOverrides()): a mission resumed at the glider's last fix counts its fixes from then on
+    /// (resumeAtLastFix()); NaN: none was replaced
+    double replaced{std::numeric_limits<double>::quiet_NaN()};
 };
 
 /// @brief The goal's arrival window ("goals in time"; [ThompsonICRA] Sec. III: a spatiotemporal goal, reached
@@ -485,9 +489,29 @@ struct DroppedStation
     std::string name;       ///< the via point
     std::string reachedIso; ///< the first fix within its radius (ISO 8601)
     double distance{0.0};   ///< that fix's distance from it, metres
-    double stayLeft{0.0};   ///< of its stay, what was still to hold at the last fix (field time units; 0: none)
-    LonLat at;              ///< the via point's position (where a stay under way is held)
-    double radius{0.0};     ///< its radius, metres (the goto list's waypoint distance where it has none)
+    /// of its stay, what was still to hold at the last fix, the wait for its window included (field time units; 0:
+    /// none)
+    double stayLeft{0.0};
+    LonLat at;          ///< the via point's position (where a stay under way is held)
+    double radius{0.0}; ///< its radius, metres (the goto list's waypoint distance where it has none)
+    /// reached before its arrival window opened and still there at the last fix: the window's opening (ISO 8601 or
+    /// field time), until which the glider holds there before its stay; else empty
+    std::string windowOpens;
+    /// reached after its arrival window closed: the window's end (ISO 8601 or field time), else empty
+    std::string windowClosed;
+};
+
+/// @brief A stay the glider left unfinished: at the last fix it was outside the station's radius before the stay
+/// was over. The station is kept, first, with what is left of its stay (resumeAtLastFix()).
+struct LeftStay
+{
+    std::string name;       ///< the via point
+    std::string reachedIso; ///< the fix its stay was counted from (ISO 8601)
+    std::string leftIso;    ///< the first fix outside its radius before the stay was over (ISO 8601)
+    double held{0.0};       ///< the stay held there (field time units): between fixes within the radius
+    double stayLeft{0.0};   ///< what is left of it (field time units), held when the glider is back
+    double distance{0.0};   ///< the last fix's distance from the station, metres
+    double radius{0.0};     ///< its radius, metres
 };
 
 /// @brief What resuming a mission at the glider's last fix did (resumeAtLastFix()).
@@ -500,6 +524,11 @@ struct MissionResume
     std::vector<DroppedStation> dropped; ///< the stations reached, in the order reached
     /// a stay under way at the last fix: the plan departs at its end (ISO 8601 or field time), else empty
     std::string stayEnds;
+    /// a departure a caller gave before the end of the stay under way (ISO 8601 or field time): the stay is finished
+    /// first, the plan departs at its end; else empty
+    std::string departureDuringStay;
+    /// the glider left a station's radius before its stay was over: the plan returns there first to finish it
+    std::optional<LeftStay> leftStay;
     /// the glider surfaced after the last fix without a valid fix (69696969, a bad GPS status): a warning that the
     /// plan departs from an older position ("the newest surfacing, 2026-03-15T11:00:00Z, gave no valid fix: ..."),
     /// else empty

@@ -71,16 +71,27 @@ void startAtLastFix(MissionSpec &m, const SourceMark &mark, bool keepDeparture);
 /// @brief The one place a mission resumes at the glider's last fix (MissionProblem does it for every front end): with
 /// observations that have files, a mission of one glider starts at the last fix unless a flag, a keyword or the
 /// calling program gave the start (a mission file's start is the deployment's: replaced), and departs at the fix's
-/// time unless they gave the departure (which may then not be before the fix). Via points already reached (a fix
-/// after the mission's departure within their radius; in the order listed, any order with `order: free`) are
-/// dropped; a stay under way at the last fix is finished first (the plan departs at its end); the others keep their
-/// names, radii, windows and stays. What it did is kept in MissionSpec::observations->resumed. Done once.
+/// time unless they gave the departure (which may then not be before the fix). The fixes are judged from the
+/// mission's own departure (the deployment's, also where a caller's departure replaced it: DepartureSpec::replaced;
+/// every fix where the mission gives none) to the last fix. Via points already reached (in the order listed, any
+/// order with `order: free`) are dropped: reached at a fix within their radius, but before their window opens only
+/// when the glider is still there when it opens (else the visit does not count); one reached after its window
+/// closed is dropped with a warning (DroppedStation::windowClosed). A stay counts the time between fixes within
+/// the radius from the window's opening on. A stay under way at the last fix, the glider within the radius, is
+/// finished first (the plan departs at its end, after the window's opening where the glider waits for it, and
+/// after a departure given); a stay the glider left unfinished keeps the station, first, with what is left of its
+/// stay (MissionResume::leftStay: the plan returns there). The others keep their names, radii, windows and stays.
+/// What it did is kept in MissionSpec::observations->resumed. Done once.
 /// Returns the observations it read (to be used again, so that a URL is fetched once), nothing when it did not read
 /// them.
 /// @throws Error (without the place) when the observations cannot be read, report no fix, a given departure is before
 /// the last fix, or the glider has already reached every via point and the goal (nothing is left to plan).
 std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m);
 
+/// @brief What a pilot must be warned of in resuming @p m (empty when it was not resumed, or nothing is amiss): a
+/// station reached after its window closed, a stay the glider left unfinished (the plan returns there), a last
+/// fix older than the newest surfacing.
+std::vector<std::string> resumeWarnings(const MissionSpec &m);
 /// @brief "from the last fix -52.1, 48.0 at 2026-03-16T12:00:00Z (replacing the start -52.7, 47.9, the deployment's);
 /// stations reached: A (2026-03-15T18:02:11Z, 120 m from it)"; empty when the mission was not resumed.
 std::string resumeNote(const MissionSpec &m);

@@ -1,12 +1,12 @@
 /// @file Observations.cpp
-/// @brief A glider's measurements in a mission (Observations.h): the start at the last fix, and the forecast
-/// corrected by its depth-averaged currents (MissionProblem::applyObservations()).
+/// @brief A glider's measurements in a mission (Observations.h): the start at the last fix's first guess, and the
+/// forecast corrected by its depth-averaged currents (MissionProblem::applyObservations()); resuming at the last fix
+/// is Resume.cpp's.
 
 #include "ompl_glider/mission/Observations.h"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "../../io/NumberText.h"
 #include "ompl_glider/Exception.h"
@@ -90,38 +90,6 @@ void startAtLastFix(MissionSpec &m, const SourceMark &mark, bool keepDeparture)
 
 namespace
 {
-/// Great-circle distance in metres (a sphere of the mean Earth radius: a station's radius is a few hundred metres).
-double metresBetween(LonLat a, LonLat b)
-{
-    constexpr double kRadius = 6371008.8, kDeg = 3.14159265358979323846 / 180.0;
-    const double dLat = (b.lat - a.lat) * kDeg, dLon = (b.lon - a.lon) * kDeg;
-    const double h = std::sin(0.5 * dLat) * std::sin(0.5 * dLat) +
-                     std::cos(a.lat * kDeg) * std::cos(b.lat * kDeg) * std::sin(0.5 * dLon) * std::sin(0.5 * dLon);
-    return 2.0 * kRadius * std::asin(std::min(1.0, std::sqrt(h)));
-}
-
-/// Given by a flag, a keyword or the calling program (not a mission file's, nor the observations' first guess).
-bool givenByCaller(const MissionSpec &m, const std::string &field)
-{
-    const auto it = m.marks.find(field);
-    return it != m.marks.end() && (it->second.origin == Origin::Flag || it->second.origin == Origin::Keyword ||
-                                   it->second.origin == Origin::Program);
-}
-
-/// A field time as a pilot reads it: its date where the mission has dates.
-std::string whenText(const MissionSpec &m, double t)
-{
-    try
-    {
-        if (const std::string iso = m.isoTime(t); !iso.empty())
-            return iso;
-    }
-    catch (const Error &)
-    {
-    }
-    return text::number(t, 10);
-}
-
 /// "farther than 200 km from the mission's area (10 length scales)"
 std::string farText(const MissionSpec &m, double distance)
 {
@@ -150,16 +118,6 @@ Velocity eastNorth(Velocity d, const std::vector<DacRecord> &dac, const LocalPro
     // d = E east + N north
     const double det = ex * ny - ey * nx;
     return {(d.u * ny - d.v * nx) / det, (ex * d.v - ey * d.u) / det};
-}
-
-/// "3.0 h", "2 d 4.5 h" of @p seconds
-std::string hoursText(double seconds)
-{
-    const double hours = seconds / 3600.0;
-    if (hours < 24.0)
-        return text::number(std::round(hours * 10.0) / 10.0, 6) + " h";
-    const double days = std::floor(hours / 24.0);
-    return text::number(days, 6) + " d " + text::number(std::round((hours - 24.0 * days) * 10.0) / 10.0, 6) + " h";
 }
 
 /// "12.5 m" of a depth
@@ -200,130 +158,6 @@ std::string comparedWith(const MissionSpec &m, const CorrectionParams &p, const 
 }
 } // namespace
 
-std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
-{
-    if (!m.observations || !m.observations->hasFiles() || m.observations->resumed || !m.fleet.empty())
-        return std::nullopt;
-    if (givenByCaller(m, "start"))
-        return std::nullopt; // the caller says where the glider is: the observations only correct the forecast
-    GliderObservations o = readGliderObservations(m.observations->path, {m.observations->cache});
-    if (!o.lastFix)
-        throw Error("the observations '" + m.observations->path + "' report no position to start from");
-    MissionResume r;
-    r.fix = o.lastFix->at;
-    r.fixIso = formatIsoTime(o.lastFix->time);
-    const auto fieldTime = [&](double unixSeconds, const char *what) {
-        try
-        {
-            return m.timeOf(formatIsoTime(unixSeconds));
-        }
-        catch (const Error &e)
-        {
-            throw Error(std::string(what) + ": " + e.what());
-        }
-    };
-    const double fixTime = fieldTime(o.lastFix->time, "the last fix's time");
-    // a newer surfacing without a valid fix: the glider was elsewhere by then (a surfacing lasts minutes)
-    if (std::isfinite(o.newestSurfacing) && o.newestSurfacing > o.lastFix->time + 600.0)
-        r.staleFix = "the newest surfacing (" + formatIsoTime(o.newestSurfacing) + ") gave no valid fix: the plan " +
-                     "departs from the last valid one, " + hoursText(o.newestSurfacing - o.lastFix->time) +
-                     " older; the glider has moved since (give the start where it is, or wait for a fix)";
-    const auto mark = m.marks.find("start");
-    const bool startIsTheFix = m.start.geographic && m.start.lonLat.lon == o.lastFix->at.lon &&
-                               m.start.lonLat.lat == o.lastFix->at.lat; // the loader's first guess
-    if ((mark == m.marks.end() || mark->second.origin != Origin::Observations) && !startIsTheFix)
-        r.replacedStart = m.start.geographic
-                              ? text::number(m.start.lonLat.lon, 8) + ", " + text::number(m.start.lonLat.lat, 8)
-                              : text::number(m.start.xy.x, 8) + ", " + text::number(m.start.xy.y, 8);
-    // the mission's own departure (the deployment's): the fixes since then are this mission's
-    const double deployed = m.departure.window ? m.departure.begin : m.departure.time;
-    // stations reached, in the order listed (any order when the order is free)
-    std::vector<bool> reached(m.waypoints.size(), false);
-    std::size_t next = 0;
-    double lastReachedAt = -std::numeric_limits<double>::infinity();
-    int lastReached = -1;
-    for (const GliderFix &f : o.fixes)
-    {
-        if (f.time > o.lastFix->time)
-            break;
-        const double t = fieldTime(f.time, "a fix's time");
-        if (t < deployed)
-            continue;
-        for (std::size_t k = 0; k < m.waypoints.size(); ++k)
-        {
-            if (reached[k] || (m.order == VisitOrder::Given && k != next))
-                continue;
-            const ViaPointSpec &v = m.waypoints[k];
-            if (!v.position.geographic)
-                continue;
-            const double radius = std::isfinite(v.radius) ? v.radius * m.metresPerUnit() : m.outputs.gotoWptDist;
-            const double d = metresBetween(f.at, v.position.lonLat);
-            if (d > radius)
-                continue;
-            reached[k] = true;
-            DroppedStation s;
-            s.name = v.name;
-            s.reachedIso = formatIsoTime(f.time);
-            s.distance = d;
-            s.at = v.position.lonLat;
-            s.radius = radius;
-            r.dropped.push_back(s);
-            lastReached = static_cast<int>(k);
-            lastReachedAt = t;
-            if (m.order == VisitOrder::Given)
-                ++next;
-            break;
-        }
-    }
-    // a stay under way at the last fix is finished before the plan departs
-    double departure = fixTime;
-    if (lastReached >= 0 && m.waypoints[lastReached].stay > 0.0)
-    {
-        const double ends = lastReachedAt + m.waypoints[lastReached].stay;
-        if (ends > fixTime)
-        {
-            r.dropped.back().stayLeft = ends - fixTime;
-            r.stayEnds = whenText(m, ends);
-            departure = ends;
-        }
-    }
-    std::vector<ViaPointSpec> left;
-    for (std::size_t k = 0; k < m.waypoints.size(); ++k)
-        if (!reached[k])
-            left.push_back(m.waypoints[k]);
-    if (left.empty() && m.goal.geographic)
-    {
-        const double radius = m.execution.radius > 0.0 ? m.execution.radius * m.metresPerUnit() : m.outputs.gotoWptDist;
-        const double d = metresBetween(o.lastFix->at, m.goal.lonLat);
-        if (d <= radius)
-            throw Error("the last fix (" + r.fixIso + ", " + text::number(d, 3) + " m from the goal) is at the goal" +
-                        (m.waypoints.empty() ? std::string() : " and every via point was reached") +
-                        ": nothing is left to plan");
-    }
-    if (givenByCaller(m, "departure.time"))
-    {
-        if (m.departure.time < fixTime)
-            throw Error("the departure " + whenText(m, m.departure.time) + " is before the last fix (" + r.fixIso +
-                        "): the glider was elsewhere then; give a later departure, or none to depart at the last fix");
-    }
-    else
-    {
-        const auto d = m.marks.find("departure.time");
-        if (d == m.marks.end() || d->second.origin != Origin::Observations)
-            r.replacedDeparture = whenText(m, m.departure.window ? m.departure.begin : m.departure.time);
-        m.departure.time = departure;
-        m.departure.window = false;
-        m.marks["departure.time"] =
-            SourceMark{m.observations->mark.file, m.observations->mark.line, Origin::Observations};
-    }
-    m.start.geographic = true;
-    m.start.lonLat = o.lastFix->at;
-    m.marks["start"] = SourceMark{m.observations->mark.file, m.observations->mark.line, Origin::Observations};
-    m.waypoints = std::move(left);
-    m.observations->resumed = std::move(r);
-    return o;
-}
-
 std::vector<GliderFix> surfacingFixes(const ObservationReport &o, bool *dacOnly)
 {
     const auto isDacPosition = [&](const GliderFix &f) {
@@ -338,35 +172,6 @@ std::vector<GliderFix> surfacingFixes(const ObservationReport &o, bool *dacOnly)
     if (dacOnly)
         *dacOnly = fixes.empty();
     return fixes.empty() ? o.fixes : fixes;
-}
-
-std::string resumeNote(const MissionSpec &m)
-{
-    if (!m.observations || !m.observations->resumed)
-        return "";
-    const MissionResume &r = *m.observations->resumed;
-    std::string s =
-        "from the last fix " + text::number(r.fix.lon, 8) + ", " + text::number(r.fix.lat, 8) + " at " + r.fixIso;
-    if (!r.replacedStart.empty())
-        s += " (replacing the mission's start " + r.replacedStart + ", the deployment's" +
-             (r.replacedDeparture.empty() ? std::string() : ", and its departure " + r.replacedDeparture) + ")";
-    else if (!r.replacedDeparture.empty())
-        s += " (replacing the mission's departure " + r.replacedDeparture +
-             ": the glider was elsewhere then, the plan departs from where and when it was last seen)";
-    if (r.dropped.empty())
-        s += "; no station reached yet";
-    else
-    {
-        s += "; stations reached and dropped:";
-        for (std::size_t i = 0; i < r.dropped.size(); ++i)
-            s += std::string(i ? "," : "") + " " + r.dropped[i].name + " (" + r.dropped[i].reachedIso + ", " +
-                 text::number(r.dropped[i].distance, 3) + " m from it)";
-    }
-    if (!r.stayEnds.empty())
-        s += "; the stay at " + r.dropped.back().name + " is under way: the plan departs at its end, " + r.stayEnds;
-    if (!r.staleFix.empty())
-        s += "; WARNING: " + r.staleFix;
-    return s;
 }
 
 void MissionProblem::applyObservations(const GliderObservations *read)

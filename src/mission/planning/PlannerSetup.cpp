@@ -164,10 +164,15 @@ ompl::base::PlannerPtr makePlanner(const MissionProblem &problem, const ompl::ba
     setup.goal = problem.getGoal();
     setup.region = ctx->region;
     setup.stints = stints ? &*stints : nullptr;
-    setup.place = [&m, &gridField](const std::string &field) {
+    setup.place = [&m, &gridField, &problem](const std::string &field) {
         const std::string prefix = "planner.parameters.";
         if (field.rfind(prefix, 0) == 0)
             return parameterPlace(m, field.substr(prefix.size()));
+        // a spacing nobody gave is not blamed on a setting: it is the automatic one, which a given one replaces
+        if (field == "planner.grid_size" && gridField == "planner.grid_size" && problem.gridSizeAutomatic())
+            return (m.file.empty() ? std::string() : m.file + ": ") +
+                   "the automatic lattice spacing (chosen from the leg's length; give one: " +
+                   m.term("planner.grid_size") + ")";
         return m.place(field == "planner.grid_size" ? gridField : field);
     };
     setup.given = [&m, other](const std::string &field) {

@@ -121,16 +121,43 @@ MissionProblem MissionProblem::withLeg(Point2 start, Point2 goal, const GoalWind
             spec->lonLat = toGeographic(q);
         else
             spec->xy = {q.x / xyScale_, q.y / xyScale_};
-    if (gridSizeAutomatic_)
-    {
-        // the automatic lattice spacing follows the leg's own length, as a one-leg mission's does
-        const FieldGrid *grid = (members_.empty() ? field_ : members_.front())->grid();
-        const double d = std::hypot(goal.x - start.x, goal.y - start.y);
-        if (d > 0.0)
-            p.spec_.planner.gridSize =
-                grid ? defaultForecastGridSize(grid->minCellSize(), d) : defaultAnalyticGridSize(p.spec_, d);
-    }
+    if (gridSizeAutomatic_ && std::hypot(goal.x - start.x, goal.y - start.y) > 0.0)
+        p.spec_.planner.gridSize = p.automaticGridSize(start, goal); // the leg's own, as a one-leg mission's
     return p;
+}
+
+double MissionProblem::automaticGridSize(Point2 a, Point2 b) const
+{
+    const FieldGrid *grid = (members_.empty() ? field_ : members_.front())->grid();
+    const double d = std::hypot(b.x - a.x, b.y - a.y);
+    double g = grid ? defaultForecastGridSize(grid->minCellSize(), d) : defaultAnalyticGridSize(spec_, d);
+    // a leg of a few tens of metres in a box of a hundred kilometres: a spacing whose lattice the box can hold (its
+    // start and goal then share a lattice cell and its direct edge), two significant digits, rounded up
+    const double area = (box_.xMax - box_.xMin) * (box_.yMax - box_.yMin);
+    const double finest = std::sqrt(area / kAutomaticLatticeVertices);
+    if (std::isfinite(finest) && finest > g)
+    {
+        const double scale = std::pow(10.0, std::floor(std::log10(finest)) - 1.0);
+        g = std::ceil(finest / scale) * scale;
+    }
+    return g;
+}
+
+void MissionProblem::checkLastFixInForecast() const
+{
+    const MissionSpec &m = spec_;
+    if (!m.observations || !m.observations->resumed)
+        return;
+    const MissionResume &r = *m.observations->resumed;
+    const double fix = m.timeOf(r.fixIso), end = field_->timeEnd();
+    if (std::isfinite(end) && fix > end)
+    {
+        const std::string endText = m.isoTime(end).empty() ? text::number(end, 10) : m.isoTime(end);
+        throw Error(m.place("observations") + ": the glider's last fix (" + r.fixIso +
+                    ") is after the forecast's end (" + endText +
+                    "): the forecast says nothing of the currents from there on; give a forecast that covers the "
+                    "time from the last fix on");
+    }
 }
 
 MissionProblem MissionProblem::withField(std::shared_ptr<const CurrentField> field) const

@@ -193,6 +193,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
 #endif
     checkDatesInRange(spec_); // a time setting past the ISO years is refused naming it, before any field is read
     buildField();
+    checkLastFixInForecast(); // (before the stations' windows are judged against a departure past the forecast)
     buildMembers();
     buildTruth();
     start_ = localPoint(spec_.start, "start");
@@ -211,11 +212,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : spec_(std::move(spec))
     checkViaPoints();
     gridSizeAutomatic_ = !(spec_.planner.gridSize > 0);
     if (gridSizeAutomatic_)
-    {
-        const double d = std::hypot(goal_.x - start_.x, goal_.y - start_.y);
-        spec_.planner.gridSize =
-            grid ? defaultForecastGridSize(grid->minCellSize(), d) : defaultAnalyticGridSize(spec_, d);
-    }
+        spec_.planner.gridSize = automaticGridSize(start_, goal_); // (each leg's own: withLeg())
 }
 
 void MissionProblem::buildBox()

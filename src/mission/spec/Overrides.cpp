@@ -150,6 +150,11 @@ void applyWhereAndWhen(const MissionOverrides &o, MissionSpec &m)
     }
     if (o.departure)
     {
+        // the mission's own departure, the deployment's (not the last fix's first guess): a resumed mission judges
+        // the glider's fixes from then on, whatever departure the plan is made for
+        const auto given = m.marks.find("departure.time");
+        if (std::isnan(m.departure.replaced) && (given == m.marks.end() || given->second.origin == Origin::File))
+            m.departure.replaced = m.departure.window ? m.departure.begin : m.departure.time;
         m.departure.time = timeOf(m, o.departure->value, o.departure->source);
         m.departure.window = false; // one departure in place of a window
         mark(m, "departure.time", o.departure->source, o.origin);
