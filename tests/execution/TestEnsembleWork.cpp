@@ -51,7 +51,9 @@ void expectChosenFlownEverywhere(const EnsemblePlan &e, std::size_t members)
         for (double t : c.memberTravelTimes)
             everywhere = everywhere && !std::isnan(t);
         if (everywhere && c.solved)
+        {
             EXPECT_LE(e.objectiveValue, c.objectiveValue) << c.name;
+        }
     }
 }
 } // namespace
@@ -86,7 +88,9 @@ TEST(EnsembleWork, ALargeEnsemblePlansABoundedSetOfCandidatesAndFliesFewInEveryM
         EXPECT_EQ(n, 33u * 32u + 4u * (members - 32u)) << members;
         expectChosenFlownEverywhere(e, members);
         if (previous > 0) // five times the members, less than three times the flights
+        {
             EXPECT_LT(n, 3 * previous);
+        }
         previous = n;
     }
 }

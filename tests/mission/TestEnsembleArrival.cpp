@@ -57,9 +57,11 @@ TEST(EnsembleArrival, NoRouteArrivesInEveryMemberSoThePlanIsTheMostLikelyWithIts
             const bool slower = std::abs(members[k]->velocity(5.0, 0.0, 0.0, 0.0).u) < 0.5;
             EXPECT_EQ(std::isfinite(e.memberTravelTimes[k]), slower) << "member " << k;
             if (slower) // straight upstream: 6 / (0.5 - |u|), within the lattice's and the flight's accuracy
+            {
                 EXPECT_NEAR(e.memberTravelTimes[k], 6.0 / (0.5 - std::abs(members[k]->velocity(5, 0, 0, 0).u)),
                             0.02 * e.memberTravelTimes[k])
                     << "member " << k;
+            }
         }
         EXPECT_TRUE(std::isfinite(e.objectiveValue));
         // the report and summary.json say it
