@@ -3,8 +3,10 @@
 /// planned on the members' mean and on the members (every one of up to kMemberCandidates, else that many spread over
 /// the ensemble), each flown in the screening members (retimePath()), the best there flown in every member and judged
 /// by the mission's objective over the members (ensembleObjective()): the work grows with the members as the members
-/// themselves, not as their square. The pilot's time limit bounds the candidates' planning, a stop request (Ctrl-C)
-/// the planning and the flights. In an MPI job the candidates are spread over the ranks (TaskSpread.h).
+/// themselves, not as their square. Where no candidate arrives in every member, the plan is the one most likely to
+/// arrive (mostLikelyToArrive()); no path only where none arrives in any member. The pilot's time limit bounds the
+/// candidates' planning, a stop request (Ctrl-C) the planning and the flights. In an MPI job the candidates are
+/// spread over the ranks (TaskSpread.h).
 
 #include <algorithm>
 #include <atomic>
