@@ -283,6 +283,9 @@ yaml_case("execution-interval-fortnight", mission("units: {length_m: 1000, time_
                                                    "execution: {surfacing_interval: 1 fortnight}"),
           "execution.surfacing_interval")
 yaml_case("execution-radius-zero", mission("execution: {radius: 0}"), "execution.radius")
+# a radius with its unit needs the mission's length unit (a dimensionless mission has none)
+yaml_case("execution-radius-metres-without-units", mission("execution: {radius: 50 m}"),
+          "m.yaml:8: field 'execution.radius': '50 m' needs the mission's length unit")
 # the mission's strategies measure DAC, the flag's do not: the noise would change nothing, said naming both
 case("execution-dac-noise-strategies-flag", ["--mission", "m.yaml", "--strategies", "greedy,replan", "--out", "{out}"],
      2, "--strategies: no strategy listed measures a DAC, yet m.yaml:8: field 'execution.dac_noise' adds noise to them",

@@ -285,6 +285,7 @@ TEST(SettingRanges, ALengthTakesAnyLengthUnitAndRefusesOthersNamingThem)
         ASSERT_TRUE(m.observations) << given;
         EXPECT_NEAR(m.observations->lengthScale, metres / 1000.0, 1e-12 * metres) << given;
         EXPECT_NEAR(settingFromText("safety.keep_off", given, m), metres / 1000.0, 1e-12 * metres) << given;
+        EXPECT_NEAR(settingFromText("execution.radius", given, m), metres / 1000.0, 1e-12 * metres) << given;
     }
     for (const auto &[given, phrase] :
          std::vector<std::pair<std::string, std::string>>{{"3 h", "expected a length >= 0"},

@@ -160,7 +160,7 @@ def test_execution_keywords_give_the_flags_answers(tmp_path):
     ("surfacing_interval", "soon", ""),
     ("strategies", ["fly"], "unknown strategy 'fly'"),
     ("strategies", ["greedy", "greedy"], "listed twice"),
-    ("radius", -1.0, "expected a number > 0"),
+    ("radius", -1.0, "expected a length > 0"),
     ("execution_pairs", -1, "expected an integer in 0..100000"),
     ("execution_seed", 1.5, "expected an integer"),
     ("coastline", "/nonexistent/coast.geojson", "the coastline is in lon/lat"),

@@ -89,7 +89,7 @@ const std::vector<SettingRange> &settingRanges()
         {"reachability.interval", V::Duration, 0.0, false, kNone, "", ""},
         {"reachability.resolution", V::Length, 0.0, false, kNone, "", "the level set's cell"},
         {"execution.surfacing_interval", V::Duration, 0.0, false, kNone, "", ""},
-        {"execution.radius", V::Number, 0.0, false, kNone, "", ""},
+        {"execution.radius", V::Length, 0.0, false, kNone, "", "the goal counts as reached within it"},
         {"execution.batch.pairs", V::Integer, 0.0, true, 100000.0, "", ""},
         {"execution.batch.seed", V::Integer, 0.0, true, 4294967295.0, "", ""},
     };
