@@ -11,6 +11,7 @@
 
 #include "../../io/NumberText.h"
 #include "ompl_glider/Exception.h"
+#include "ompl_glider/io/GeoBox.h"
 #include "ompl_glider/io/Time.h"
 
 namespace ompl_glider
@@ -18,14 +19,10 @@ namespace ompl_glider
 #if OMPL_GLIDER_WITH_NETCDF
 namespace
 {
-/// Great-circle distance in metres (a sphere of the mean Earth radius: a station's radius is a few hundred metres).
+/// Great-circle distance in metres (io/GeoBox.h's greatCircleKm(): a station's radius is a few hundred metres).
 double metresBetween(LonLat a, LonLat b)
 {
-    constexpr double kRadius = 6371008.8, kDeg = 3.14159265358979323846 / 180.0;
-    const double dLat = (b.lat - a.lat) * kDeg, dLon = (b.lon - a.lon) * kDeg;
-    const double h = std::sin(0.5 * dLat) * std::sin(0.5 * dLat) +
-                     std::cos(a.lat * kDeg) * std::cos(b.lat * kDeg) * std::sin(0.5 * dLon) * std::sin(0.5 * dLon);
-    return 2.0 * kRadius * std::asin(std::min(1.0, std::sqrt(h)));
+    return 1000.0 * greatCircleKm(a, b);
 }
 
 /// Given by a flag, a keyword or the calling program (not a mission file's, nor the observations' first guess).

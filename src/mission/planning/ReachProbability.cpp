@@ -263,6 +263,20 @@ double weightedQuantile(const std::vector<double> &values, const std::vector<dou
     return kInf;
 }
 
+namespace
+{
+/// A request on the section's cell: its resolution, else the level-set planner's default cell.
+ReachRequest cellRequest(const ReachabilitySpec &rs)
+{
+    ReachRequest request;
+    if (std::isnan(rs.resolution))
+        request.cellScale = 1.0;
+    else
+        request.cellSize = rs.resolution;
+    return request;
+}
+} // namespace
+
 void checkReachProbabilityMemory(const MissionProblem &problem)
 {
     const MissionSpec &m = problem.getSpec();
@@ -270,11 +284,7 @@ void checkReachProbabilityMemory(const MissionProblem &problem)
     const std::size_t members =
         std::max<std::size_t>(std::max(problem.getMembers().size(), problem.weighedMembers().size()), 1);
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    ReachRequest request;
-    if (std::isnan(rs.resolution))
-        request.cellScale = 1.0;
-    else
-        request.cellSize = rs.resolution;
+    ReachRequest request = cellRequest(rs);
     // the frames known before the plan: the horizon over the interval when both are given, else the fewest (2)
     std::size_t frames = 2;
     if (!std::isnan(rs.horizon) && !std::isnan(rs.interval) && rs.interval > 0.0)
@@ -310,12 +320,8 @@ ReachProbability computeReachProbability(const MissionProblem &problem, const Pl
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     const bool sideBySide = members >= cores;
     out.threadsPerSolve = sideBySide ? 1u : cores;
-    ReachRequest request;
+    ReachRequest request = cellRequest(rs);
     request.until = out.horizon;
-    if (std::isnan(rs.resolution))
-        request.cellScale = 1.0; // the level-set planner's default cell
-    else
-        request.cellSize = rs.resolution;
     request.goal = problem.getGoal();
     request.threads = sideBySide ? 1u : 0u;
     request.stop = [] { return stopRequested(); };

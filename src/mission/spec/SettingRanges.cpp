@@ -187,8 +187,7 @@ void checkDatesInRange(const MissionSpec &m)
         const std::string at = "waypoints[" + std::to_string(k) + "]";
         if (m.waypoints[k].arrive.set)
             check(m.waypoints[k].arrive.end, 0.0, at + ".arrive");
-        check(departure, m.waypoints[k].stay, at + ".stay");
-        stays += m.waypoints[k].stay;
+        stays += m.waypoints[k].stay; // the stays so far: the first to pass the years is named
         check(departure, stays, at + ".stay");
     }
     check(departure, m.planner.horizon, "planner.horizon");
