@@ -454,6 +454,13 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
     if (r.plan.solved)
     {
         map.addNote("travel time " + duration(r, r.plan.travelTime) + ", path length " + length(r, r.plan.pathLength));
+        if (const auto &e = r.plan.ensemble; e && e->arrivalProbability < 1.0) // the route, not the reach map
+        {
+            const std::size_t n = e->memberTravelTimes.size();
+            const auto arriving = static_cast<std::size_t>(std::llround(e->arrivalProbability * double(n)));
+            map.addNote("the route arrives in " + std::to_string(arriving) + " of " + std::to_string(n) +
+                        " members (p = " + fmt(e->arrivalProbability) + "): none arrives in every member");
+        }
         map.addNote("straight line: " + (std::isfinite(r.plan.straightLineTime)
                                              ? "T=" + duration(r, r.plan.straightLineTime)
                                              : std::string("impassable")));
