@@ -2,14 +2,21 @@
 """The structure checker catches what it claims to: an upward include, a mission/ include of planners/,
 reachability/ or stints/, a long file, a long function (in the library and in the front ends), an author-year
 citation, an issue number, a search in an outcome's words or an error's message, a command-line flag in the library's
-strings; and passes a tree that keeps the rules, and the real tree on the planner-free mission rule. Run by ctest
-(structure.checker_selftest)."""
+strings, an include between problem/, inputs/ and planning/ of mission/, a folder the rules name that is gone, a path
+a comment or a doc names that does not exist, too many comparisons with a string literal; and passes a tree that
+keeps the rules, and the real tree on the planner-free mission rule. The limits come from the checker's constants.
+Run by ctest (structure.checker_selftest)."""
+import importlib.util
 import os
 import subprocess
 import sys
 import tempfile
 
 SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "check_structure.py")
+_spec = importlib.util.spec_from_file_location("check_structure", SCRIPT)
+rules = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(rules)
+FUNCTION_LIMIT, FILE_LIMIT = rules.MAX_FUNCTION_LINES, rules.MAX_FILE_LINES
 
 
 def tree(files):
@@ -45,7 +52,7 @@ def expect(condition, what, output):
 good = {
     "include/ompl_glider/current/Field.h": '#include "ompl_glider/Geometry.h"\n',
     "src/current/Field.cpp": '#include "ompl_glider/current/Field.h"\n#include "ompl_glider/io/Time.h"\n' +
-                             function("f", 140),
+                             function("f", FUNCTION_LIMIT - 10),
     "src/mission/Plan.cpp": '#include "ompl_glider/registry/X.h"\n#include "ompl_glider/current/Field.h"\n'
                             "// the search of [EichhornRAS] Eq. 5\n",
 }
@@ -86,14 +93,16 @@ expect("planner-free mission: ok" in out,
        "the real tree's mission/ must include no header of planners/, reachability/ or stints/", out)
 
 long_function = dict(good)
-long_function["src/current/Long.cpp"] = function("tooLong", 160)
+long_function["src/current/Long.cpp"] = function("tooLong", FUNCTION_LIMIT + 10)
 code, out = run(tree(long_function))
-expect(code == 1 and "function tooLong has 163 lines" in out, "a 163-line function must fail", out)
+expect(code == 1 and f"function tooLong has {FUNCTION_LIMIT + 13} lines" in out,
+       f"a {FUNCTION_LIMIT + 13}-line function must fail", out)
 
+BIG = FILE_LIMIT // 14 + 1  # functions of 14 lines: one file over the limit
 long_file = dict(good)
-long_file["src/current/Big.cpp"] = "".join(function(f"g{i}", 10) for i in range(60))
+long_file["src/current/Big.cpp"] = "".join(function(f"g{i}", 10) for i in range(BIG))
 code, out = run(tree(long_file))
-expect(code == 1 and "src/current/Big.cpp: 840 lines" in out, "an 840-line file must fail", out)
+expect(code == 1 and f"src/current/Big.cpp: {14 * BIG} lines" in out, f"a {14 * BIG}-line file must fail", out)
 
 citation = dict(good)
 citation["src/current/Cite.cpp"] = "// the spline of Akima (1970)\n"
@@ -101,11 +110,11 @@ code, out = run(tree(citation))
 expect(code == 1 and "Akima (1970)" in out, "an author-year citation must fail", out)
 
 front_ends = dict(good)
-front_ends["apps/tool/Flags.cpp"] = function("defineEverything", 160)
-front_ends["python/src/Big.cpp"] = "".join(function(f"h{i}", 10) for i in range(60))
+front_ends["apps/tool/Flags.cpp"] = function("defineEverything", FUNCTION_LIMIT + 10)
+front_ends["python/src/Big.cpp"] = "".join(function(f"h{i}", 10) for i in range(BIG))
 code, out = run(tree(front_ends))
-expect(code == 1 and "apps/tool/Flags.cpp:2: function defineEverything has 163 lines" in out and
-       "python/src/Big.cpp: 840 lines" in out, "the size rules must cover apps/ and python/src", out)
+expect(code == 1 and f"apps/tool/Flags.cpp:2: function defineEverything has {FUNCTION_LIMIT + 13} lines" in out and
+       f"python/src/Big.cpp: {14 * BIG} lines" in out, "the size rules must cover apps/ and python/src", out)
 
 bookkeeping = dict(good)
 bookkeeping["include/ompl_glider/current/Old.h"] = "/// @brief The jet of issue 12.\n"
@@ -146,6 +155,76 @@ code, out = run(tree(flags))
 expect(code == 1 and "src/mission/Advice.cpp:3: '--time-limit'" in out and "Advice.cpp:5" not in out and
        "Advice.cpp:6" not in out and "include/ompl_glider/mission/Words.h:1: '--depth'" in out,
        "a command-line flag in a string of the library must fail (not in a comment, not inside a word)", out)
+
+settings = rules.SETTINGS  # the mission's settings (spec/ today): a folder of code, not of tests
+separate = dict(good)
+separate[rules.PROBLEM + "/Endpoints.cpp"] = ('#include "ProblemParts.h"\n'
+                                              '#include "../planning/PlanningInternal.h"\n'
+                                              '// #include "../inputs/Reader.h" in a comment is no include\n'
+                                              '#include "../../mission/inputs/Reader.h"\n')
+separate[rules.PROBLEM + "/ProblemParts.h"] = "\n"
+separate[rules.INPUTS + "/Field.cpp"] = '#include "../problem/ProblemParts.h"\n#include "../../io/NumberText.h"\n'
+separate[rules.PLANNING + "/Plan.cpp"] = '#include "../problem/ProblemParts.h"\n#include "../inputs/Reader.h"\n'
+separate[settings + "/Ranges.cpp"] = '#include "../problem/ProblemParts.h"\n'
+code, out = run(tree(separate))
+expect(code == 1 and f"{rules.PROBLEM}/Endpoints.cpp:2: " in out and f"{rules.PROBLEM}/Endpoints.cpp:4: " in out and
+       f"{rules.INPUTS}/Field.cpp:1: " in out and "Endpoints.cpp:1:" not in out and "Endpoints.cpp:3:" not in out and
+       "Field.cpp:2:" not in out and "Plan.cpp" not in out and "Ranges.cpp" not in out,
+       "problem/ and inputs/ must include neither each other's headers nor planning/'s (planning/ may)", out)
+
+folders = dict(good)
+folders[rules.MISSION_SRC + "/sources.cmake"] = "\n"
+folders[rules.PROBLEM + "/A.cpp"] = "\n"
+folders[rules.INPUTS + "/B.cpp"] = "\n"
+folders[rules.PLANNING + "/C.cpp"] = "\n"
+folders["include/ompl_glider/mission/D.h"] = "\n"
+folders["apps/tool/main.cpp"] = "\n"
+folders["python/src/Module.cpp"] = "\n"
+code, out = run(tree(folders))
+expect(code == 1 and f"{settings}/: named by scripts/check_structure.py, no such folder" in out and
+       f"{rules.PROBLEM}/:" not in out, "a folder the rules name that the tree lacks must fail", out)
+folders[settings + "/E.cpp"] = "\n"
+code, out = run(tree(folders))
+expect(code == 0, "the folders the rules name, all there, must pass", out)
+
+named = dict(good)
+named["docs/GUIDE.md"] = ("See `src/current/Field.cpp`, `io/Time.h`, `current/`, Field.cpp, `examples/*.yaml`, "
+                          "docs/X.md, `src/<layer>/`, `include/ompl_glider/current/MyFlow.h`, build/apps/glider_plan, "
+                          "https://example.org/src/Gone.cpp, `ompl/base/Planner.h`, netcdf.h, fuzz/fuzz_cli.\n"
+                          "Gone: `docs/OLD.md`, and `examples/*.json`\n")
+named["examples/a.yaml"] = "\n"
+named["include/ompl_glider/io/Time.h"] = "\n"
+named["fuzz/fuzz_cli.cpp"] = "\n"
+named["README.md"] = "Read [the guide](docs/GUIDE.md); src/current/Gone.cpp.\n"
+named["src/current/Named.cpp"] = ('// as in io/Time.h and Field.cpp\n'
+                                  'const char *s = "src/current/NotAComment.cpp";\n'
+                                  '/* a block:\n   io/Gone.h */\n'
+                                  'int x; // Missing.cpp\n')
+named[settings + "/Words.cpp"] = "// see src/mission/Gone.cpp\n"
+named["tests/current/check.py"] = '"""Checks tests/current/gone.sh."""\nx = "#tests/nope.sh"  # scripts/run.sh\n'
+named["scripts/run.sh"] = "# writes build/out.csv\n"
+code, out = run(tree(named))
+expect(code == 1 and "docs/GUIDE.md:2: names docs/OLD.md" in out and "docs/GUIDE.md:2: names examples/*.json" in out and
+       "README.md:1: names src/current/Gone.cpp" in out and "src/current/Named.cpp:4: names io/Gone.h" in out and
+       "src/current/Named.cpp:5: names Missing.cpp" in out and f"{settings}/Words.cpp:1: names src/mission/Gone.cpp" in
+       out and "tests/current/check.py:1: names tests/current/gone.sh" in out and "GUIDE.md:1" not in out and
+       "NotAComment" not in out and "Named.cpp:1" not in out and "nope.sh" not in out and "scripts/run.sh" not in out
+       and "paths: 7 breach(es)" in out,
+       "a path a doc or a comment names that does not exist must fail (not a URL, a placeholder, a string, build/)",
+       out)
+
+literals = dict(good)
+limit = rules.MAX_LITERAL_COMPARISONS
+literals[settings + "/Kinds.cpp"] = ('bool k(const std::string &s)\n{\n' +
+                                     '    if (s == "a" || "b" != s) return true;\n' * (limit - 1) +
+                                     '    // if (s == "c") in a comment\n    return s != "d";\n}\n')
+code, out = run(tree(literals))
+expect(code == 0, f"{limit} lines comparing with a string literal must pass", out)
+literals["apps/tool/Mode.cpp"] = 'bool m(const char *s) { return std::string(s) == "x" && s[0] != \'"\'; }\n'
+code, out = run(tree(literals))
+expect(code == 1 and f"{limit + 1} lines compare with a string literal" in out and
+       f"{settings}/Kinds.cpp: {limit}" in out and "apps/tool/Mode.cpp: 1" in out,
+       f"{limit + 1} lines comparing with a string literal must fail, naming the files (spec/ counts too)", out)
 
 for f in failures:
     print("FAILED: " + f)
