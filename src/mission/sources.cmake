@@ -2,9 +2,10 @@
 # One folder a concept (docs/ARCHITECTURE.md, "mission/ by concept"):
 #   loader/     mission files: the YAML reader and one file a section
 #   spec/       what the front ends give: overrides, the settings' declared ranges, forecast missions, output names
-#   problem/    MissionProblem as a value: its frame, endpoints and variants (a leg, a member, another field)
-#   inputs/     what the problem reads: the forecast and its members and truth, land and forbidden regions, safety
-#               (keep-off, bathymetry), the glider's observations and the correction they make
+#   inputs/     what a mission reads, once (ProblemInputs): resuming at the last fix, the forecast, its members and
+#               truth, the planning frame, the glider's observations, the coastline and the bathymetry
+#   problem/    MissionProblem, built from the inputs and reading nothing: endpoints, the correction by the DAC,
+#               forbidden regions and safety margins, and its variants (a leg, a member, another field)
 #   planning/   the pipeline: planner set-up, legs, global check, heading fallback, ensembles, windows, evaluations
 #   execution/  the plan flown in another ocean, per strategy, once or in a batch
 list(APPEND OMPL_GLIDER_SOURCES
@@ -28,14 +29,19 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/spec/SettingRanges.cpp
   ${CMAKE_CURRENT_LIST_DIR}/spec/OutputFormats.cpp
   ${CMAKE_CURRENT_LIST_DIR}/spec/InputDigest.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/problem/MissionProblem.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/problem/Endpoints.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/spec/MissionSpecText.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inputs/ProblemInputs.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inputs/ForecastRequest.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/ProblemField.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/FieldChecks.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/inputs/ProblemLand.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/inputs/Safety.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/inputs/Observations.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inputs/Frame.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inputs/LandInputs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/Resume.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/problem/MissionProblem.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/problem/Endpoints.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/problem/Correction.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/problem/Land.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/problem/Safety.cpp
   # the planning pipeline, one concern per file (see planning/PlanningInternal.h)
   ${CMAKE_CURRENT_LIST_DIR}/planning/Planning.cpp
   ${CMAKE_CURRENT_LIST_DIR}/planning/PlannerSetup.cpp

@@ -80,19 +80,39 @@ RefinedHeadings levelSetHeadings(const GliderContext &ctx, const std::vector<Tim
 }
 } // namespace
 
+namespace
+{
+/// The work of a front from @p departure to @p until on cells of @p h with a step of @p cfl cells (the automatic
+/// one's shortest when 0: kForbiddenCfl, near a forbidden set, gives the most steps).
+ReachWork frontWork(const GliderContext &ctx, const Region &r, double h, double cfl, double departure, double until)
+{
+    ReachWork w;
+    w.cell = h;
+    w.nodes = (std::floor((r.xMax - r.xMin) / h + 1e-9) + 1.0) * (std::floor((r.yMax - r.yMin) / h + 1e-9) + 1.0);
+    w.dt = (cfl > 0.0 ? cfl : levelset_detail::kForbiddenCfl) * h / (ctx.speed() + std::max(ctx.maxCurrent(), 0.0));
+    w.steps = std::isfinite(until) ? std::ceil(std::max(until - departure, 0.0) / w.dt)
+                                   : std::numeric_limits<double>::infinity();
+    w.bytesPerNode = 3.0 * sizeof(double); // arrival, level set and its update
+    return w;
+}
+} // namespace
+
+std::optional<ReachWork> LevelSetPlanner::reachWork(const PipelineSetup &setup, const ReachRequest &request) const
+{
+    const double h = request.cellSize > 0.0 ? request.cellSize : request.cellScale * defaultLevelSetResolution(*ctx_);
+    const double until =
+        std::isnan(request.until) ? (request.times.empty() ? setup.departure : request.times.back()) : request.until;
+    return frontWork(*ctx_, setup.region, h, 0.0, setup.departure, until); // (reachableSet()'s step is automatic)
+}
+
 void LevelSetPlanner::prepare(const PipelineSetup &setup)
 {
     const Region &r = setup.region;
-    const double h = resolution_ > 0.0 ? resolution_ : defaultLevelSetResolution(*ctx_);
-    const double nodes =
-        (std::floor((r.xMax - r.xMin) / h + 1e-9) + 1.0) * (std::floor((r.yMax - r.yMin) / h + 1e-9) + 1.0);
-    // the automatic cfl is the short one where there is a forbidden set: the estimate takes it (the most steps)
-    const double cfl = params_.cfl > 0.0 ? params_.cfl : levelset_detail::kForbiddenCfl;
-    const double dt = cfl * h / (ctx_->speed() + std::max(ctx_->maxCurrent(), 0.0));
     const double tEnd = std::min(r.tMax, ctx_->field->timeEnd());
-    const double steps = std::isfinite(tEnd) ? std::ceil(std::max(tEnd - setup.departure, 0.0) / dt)
-                                             : std::numeric_limits<double>::infinity();
-    const double work = nodes * steps;
+    const ReachWork w = frontWork(*ctx_, r, resolution_ > 0.0 ? resolution_ : defaultLevelSetResolution(*ctx_),
+                                  params_.cfl, setup.departure, tEnd);
+    const double h = w.cell, nodes = w.nodes, dt = w.dt, steps = w.steps, work = w.work();
+    const double cfl = params_.cfl > 0.0 ? params_.cfl : levelset_detail::kForbiddenCfl;
     if (steps <= kMaxLevelSetSteps && work <= kMaxLevelSetWork)
         return;
     // the steps the glider's own speed needs: within the limits, the currents are at fault (a forecast's velocities

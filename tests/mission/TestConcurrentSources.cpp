@@ -22,6 +22,7 @@
 #include <thread>
 
 #include "../current/TestNetCdfUtil.h"
+#include "../opendap/DapServer.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/MemoryDataset.h"
 #include "ompl_glider/mission/ForecastMission.h"
@@ -115,49 +116,6 @@ void writeZarr(const fs::path &store, int k)
                    ", \"units\": \"m s-1\", \"standard_name\": \"northward_sea_water_velocity\"");
 }
 
-/// The tests' DAP2 server (tests/opendap/dap2_server.py) serving @p root on 127.0.0.1, stopped at scope exit; started
-/// at once (Debian's python3 with netCDF4), waited for by url().
-class DapServer
-{
-public:
-    explicit DapServer(const std::string &root) : portFile_(root + "/../port")
-    {
-        const std::string script = std::string(OMPL_GLIDER_SOURCE_DIR) + "/tests/opendap/dap2_server.py";
-        const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-        std::vector<std::string> args{python, script,        "--root",  root,         "--port",
-                                      "0",    "--port-file", portFile_, "--lifetime", "300"};
-        std::vector<char *> argv;
-        for (std::string &a : args)
-            argv.push_back(a.data());
-        argv.push_back(nullptr);
-        if (::posix_spawnp(&pid_, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-            throw std::runtime_error("cannot start " + python + " " + script);
-    }
-    ~DapServer()
-    {
-        ::kill(pid_, SIGTERM);
-        ::waitpid(pid_, nullptr, 0);
-    }
-    std::string url(const std::string &name)
-    {
-        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-        while (port_ == 0 && !fs::exists(portFile_))
-        {
-            if (std::chrono::steady_clock::now() > deadline || ::waitpid(pid_, nullptr, WNOHANG) == pid_)
-                throw std::runtime_error("the DAP2 server did not start (python3 with netCDF4 needed)");
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        }
-        if (port_ == 0)
-            std::ifstream(portFile_) >> port_;
-        return "http://127.0.0.1:" + std::to_string(port_) + "/" + name;
-    }
-
-private:
-    std::string portFile_;
-    pid_t pid_{0};
-    int port_{0};
-};
-
 std::string slurp(const std::string &path)
 {
     std::ifstream in(path, std::ios::binary);
@@ -216,7 +174,7 @@ TEST(ConcurrentSources, EightThreadsPlanOnMemoryFilesZarrAndUrlsAsEachAlone)
     TempDir dir;
     const std::string served = dir.file("served");
     fs::create_directories(served);
-    DapServer server(served); // starting while the forecasts are written
+    dap_test::DapServer server(served); // starting while the forecasts are written
     constexpr int kThreads = 8;
     std::vector<std::string> alone(kThreads), together(kThreads), bytes(kThreads);
     for (int k = 0; k < kThreads; ++k)

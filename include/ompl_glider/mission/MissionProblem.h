@@ -20,6 +20,7 @@
 #include "ompl_glider/environment/KeepOffZone.h"
 #include "ompl_glider/environment/Environment.h"
 #include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/mission/ProblemInputs.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 
 namespace ompl_glider
@@ -50,10 +51,13 @@ struct MissionPolygon
 class MissionProblem
 {
 public:
-    /// @brief Builds the field (analytic, or a gridded source's forecast), the projection, the box, start/goal and
-    /// the environment.
+    /// @brief Reads the mission's inputs (loadProblemInputs()) and builds the problem from them.
     /// @throws Error naming the mission file and field when something does not fit (start outside the box, ...).
     explicit MissionProblem(MissionSpec spec);
+    /// @brief Builds the problem from what the mission read: start/goal in the planning frame (moved off land when
+    /// the mission says so), the forecast corrected by the glider's DAC, the forbidden regions and the safety
+    /// margins. Reads nothing.
+    explicit MissionProblem(const ProblemInputs &inputs);
     ~MissionProblem();
 
     /// @brief The mission, with its automatic settings resolved (planner.grid_size).
@@ -120,7 +124,7 @@ public:
     /// @brief Forbidden regions in the planning frame.
     const std::vector<MissionPolygon> &getPolygons() const { return polygons_; }
     /// @brief Planning box (x/y) and the field's time span.
-    const Region &getBox() const { return box_; }
+    const Region &getBox() const { return frame_.box; }
     /// @brief planner.grid_size was not given (0): the lattice spacing is chosen from each leg's length
     /// (automaticGridSize()).
     bool gridSizeAutomatic() const { return gridSizeAutomatic_; }
@@ -141,6 +145,12 @@ public:
     /// @brief The GliderProblem (field, travel parameters with @p speed, environment, box, departure, horizon,
     /// start, goal) for a departure at tDep.
     GliderProblem gliderProblem(double tDep, double speed) const;
+    /// @brief How near the goal a path ends (planning units): planner.goal_tolerance, else a millionth of the box's
+    /// larger side.
+    double goalTolerance() const;
+    /// @brief The planning horizon of a departure at @p tDep at @p speed (field time units): planner.horizon, else
+    /// 50 crossings of the box and the trip at that speed, within the field's time.
+    double horizon(double tDep, double speed) const;
 
     /// @brief Lower bound of the trip duration at @p speed: distance / (V + max|c|).
     double minTripDuration(double speed) const;
@@ -149,44 +159,28 @@ public:
     std::shared_ptr<const DiveProfileTravelTime> diveProfiles(double speed) const;
 
 private:
-    void buildField();
-    void buildTruth();
-    void buildMembers();
-    /// A glider's depth on a forecast without depth levels is refused (FieldChecks.cpp).
-    void checkDepthAxis(const LoadedForecast &forecast) const;
-    /// Ensemble members without a common time are refused, each named with its span (FieldChecks.cpp).
-    void checkCommonTime() const;
-    /// A current source other than the forecast (a truth, an ensemble member) on the forecast's frame and dates.
-    std::shared_ptr<const CurrentField> loadSource(const CurrentSpec &source, const std::string &field) const;
-    void buildBox();
     /// A start or goal on the forecast's land (Endpoints.cpp): refused naming the nearest water, or moved there
     /// with MissionSpec::safety.snapToWater.
     void snapEndpoints();
-    void checkAnalyticFields() const; ///< analytic fields are finite over the box (parameters do not overflow)
-    /// The forecast corrected by the glider's DAC (Observations.cpp); nothing without observations. @p read: the
-    /// observations resumeAtLastFix() read already (null: read them here), so that a URL is fetched once.
-    void applyObservations(const GliderObservations *read);
+    /// Start, goal and via points inside the planning box, else refused naming the one outside.
+    void checkPointsInBox() const;
+    /// The forecast corrected by the glider's DAC @p o (Correction.cpp).
+    void applyObservations(const GliderObservations &o);
     /// Via points in the region, in water, their stays within the forecast (Endpoints.cpp).
     void checkViaPoints() const;
-    /// A glider resumed at a last fix after the forecast's end is refused, naming both (Endpoints.cpp).
-    void checkLastFixInForecast() const;
     /// The automatic lattice spacing (planner.grid_size 0) of a leg from @p a to @p b (Endpoints.cpp): the
     /// default for its length (defaultForecastGridSize(), defaultAnalyticGridSize()), never so fine that the
     /// planning box's lattice holds more than kAutomaticLatticeVertices.
     double automaticGridSize(Point2 a, Point2 b) const;
-    void buildRegions();
-    /// The coastline's land polygons about the box (Safety.cpp); errors begin with @p at.
-    std::vector<LandPolygon> readCoastline(const std::string &at);
+    /// The forbidden regions and the coastline's land polygons @p coastline (Land.cpp).
+    void buildRegions(const ProblemInputs &in);
     /// A GeoJSON of forbidden regions none of whose polygons lies in or near the box (lon and lat swapped, another
     /// region) is refused (Safety.cpp).
     void checkGeoJsonNearBox() const;
-    /// The keep-off zone and the shallow water (Safety.cpp), added to @p regions.
-    void addSafety(ForbiddenRegions &regions);
+    /// The keep-off zone and the shallow water of @p in's depth grid (Safety.cpp), added to @p regions.
+    void addSafety(ForbiddenRegions &regions, const ProblemInputs &in);
     /// The shallow water of the depth limit (Safety.cpp); null without a bathymetry.
-    std::shared_ptr<const ForbiddenCells> shallowWater();
-    /// The lon/lat box a bathymetry grid is read over: the box with a margin (Safety.cpp); the whole grid when the
-    /// mission is not geographic.
-    GeoBox bathymetryRegion() const;
+    std::shared_ptr<const ForbiddenCells> shallowWater(const ProblemInputs &in);
     /// A point given (lon/lat, or x/y in a Cartesian forecast's own axis units) in the planning frame (Endpoints.cpp).
     Point2 localPoint(const PointSpec &p, const std::string &what) const;
     std::vector<Point2> ring(const std::vector<std::pair<double, double>> &pts, bool geographic,
@@ -198,15 +192,12 @@ private:
     std::vector<std::shared_ptr<const CurrentField>> members_;        // ensemble members (empty: one source)
     std::vector<std::shared_ptr<const CurrentField>> weighedMembers_; // the members the observations weighed
     std::shared_ptr<const Environment> environment_;
-    std::shared_ptr<const LocalProjection> projection_;
-    double projectionScale_{1.0}; // metres per planning unit
-    double xyScale_{1.0};         // planning units per x/y unit given (a Cartesian forecast's axes in km: 1000)
+    PlanningFrame frame_; // projection, units and box
     std::vector<std::string> forecastFiles_;
     std::vector<std::string> forecastNotes_;
     std::vector<RemoteFetch> remoteSources_;
     std::vector<std::string> endpointNotes_;
     std::vector<MissionPolygon> polygons_;
-    Region box_;
     Point2 start_, goal_;
     std::vector<Point2> via_;                               // via points, planning frame
     std::shared_ptr<const ObservationReport> observations_; // what the observations gave (null: none)
@@ -214,36 +205,13 @@ private:
     std::shared_ptr<const KeepOffZone> land_;               // land's boundary and the keep-off distance (null: no land)
     std::string safetyNote_;                                // what the depth limit read, and how
     std::string fieldWord_{"current"};                      // "current" or "wind"
+    std::shared_ptr<const Bathymetry> diveBathymetry_;      // the dive profiles' bathymetry (null: none)
     std::string coastlineNote_;                             // what the coastline gave, and what was repaired
 };
 
 /// @brief The GliderProblem of the built-in Gulf Stream mission (defaultGulfStreamMission()) departing at 0, for
 /// tests and benchmarks that use the OMPL layer directly.
 GliderProblem gulfStreamProblem();
-
-/// @brief Smallest margin of a trip's region (km).
-constexpr double kMinTripMarginKm = 25.0;
-
-/// @brief The margin (km) of a trip's region around its start and goal: half their great-circle distance, at
-/// least kMinTripMarginKm (room for the detours a current forces).
-double tripMarginKm(LonLat start, LonLat goal);
-
-/// @brief What a mission asks of its gridded source (ForecastSource.h): the files, variable names (lon/lat, else
-/// x/y), interpolation schemes, horizon policy, depth range, projection, the settings' names in the mission file's
-/// words (forecastFieldNames("current")) and the region to load: the mission's region, else the trip's. For
-/// lon/lat start and goal that is tripBox() of the two with tripMarginKm(): their lon/lat box the shorter way
-/// round (across the antimeridian or Greenwich when that is shorter, in whatever convention they are written),
-/// widened by the margin converted to degrees of latitude and of longitude at the box's highest |latitude|, up to
-/// +-kMaxGridLatitude; never rebuilt from projected corners. For x/y start and goal (a Cartesian file): their box
-/// plus half its larger side (at least 0.2 units) on each side. The projection's reference is the region's
-/// centre. Shared by MissionProblem and forecastMission() so that a forecast from the command line and the same
-/// forecast in a mission file are the same problem.
-/// @throws Error for a lon/lat start or goal within 90 - kMaxGridLatitude degrees of a pole (naming it).
-ForecastRequest forecastRequest(const MissionSpec &mission);
-
-/// @brief How a mission file calls the settings of a forecast request in its section @p section ("current",
-/// "execution.truth", "current.ensemble[1]"): "current.variables.u", "current.time_units", ...
-std::map<ForecastOption, std::string> forecastFieldNames(const std::string &section);
 
 /// @brief The water point nearest to @p p at depth z: just beyond (by @p step, in planning units) the closest point
 /// of the field's land boundary (CurrentField::landBoundary()), checked with inWater(); nullopt when none is found.

@@ -28,6 +28,8 @@
 
 namespace ompl_glider
 {
+struct GliderObservations;
+
 /// @brief Where a value came from in the mission file (for messages after loading).
 /// @brief What gave a value: a mission file (or a default), a command-line flag or a keyword of the Python module.
 enum class Origin : std::uint8_t
@@ -558,6 +560,10 @@ struct ObservationsSpec
     SourceMark mark; ///< where it was given
     /// set once the mission was resumed at the last fix (resumeAtLastFix()): what it replaced and dropped
     std::optional<MissionResume> resumed;
+    /// What a front end read of these files already (to start at the last fix), handed on so that a mission reads
+    /// each of its inputs once (ProblemInputs.h); null: not read yet. Used while path and cache are readFrom's.
+    std::shared_ptr<const GliderObservations> read;
+    std::string readFrom; ///< path and cache (a line between) that `read` was read from
     /// @brief Whether a glider's files are given (not only the correction's parameters).
     bool hasFiles() const { return !path.empty(); }
 };
@@ -641,6 +647,8 @@ struct MissionSpec
     /// @brief Field time @p t as an ISO 8601 date in the mission's calendar (the dated forecast's, or the epoch's);
     /// empty without dates or for a time that is not finite. @throws Error outside the years 0000-9999.
     std::string isoTime(double t) const;
+    /// @brief A duration @p d in field time units: "3 d 4.2 h" where the time unit is known, else the number.
+    std::string durationText(double d) const;
 
     /// @brief "m.yaml:12: field 'planner.grid_size'", "--grid-size" for a flag, "plan(): keyword 'speed'" for a
     /// keyword of the Python module, or "m.yaml: field '...'" when the value was not given (a default).
@@ -671,4 +679,7 @@ MissionSpec defaultGulfStreamMission();
 /// The built-in mission's trip (the meandering jet from (1, -3) to (8, 3), built in or from a file) keeps 0.4, the
 /// paper's lattice for it (its 9.2 units would give 0.37), so its figures stay the paper's.
 double defaultAnalyticGridSize(const MissionSpec &m, double distance);
+
+/// @brief "FILE:LINE: " of a mark from a mission file, else "MISSION_FILE: ".
+std::string sourcePlace(const MissionSpec &m, const SourceMark &mark = {});
 } // namespace ompl_glider

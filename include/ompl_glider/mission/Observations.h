@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,11 +52,15 @@ struct ObservationReport
 /// every fix, and @p dacOnly (when given) says so. What the maps draw as the glider's track.
 std::vector<GliderFix> surfacingFixes(const ObservationReport &o, bool *dacOnly = nullptr);
 
-/// @brief The last fix of the glider's observations at @p path (IOOS profile files, Slocum dba files, a CSV or an
-/// ERDDAP URL): the one reader of it for the mission loader, forecastMission() (the command line's `--currents`
-/// and Python's plan() without a start); none when they report no position.
+/// @brief The glider's observations at @p path (IOOS profile files, Slocum dba files, a CSV or an ERDDAP URL) read:
+/// the one reader of them for the mission loader and forecastMission() (the command line's `--currents` and
+/// Python's plan() without a start), whose last fix is the start's first guess. Handed on with keepObservations(),
+/// the mission's inputs (ProblemInputs.h) take them from there instead of reading them again.
 /// @throws Error when they cannot be read (without the place: the caller names it).
-std::optional<GliderFix> lastFixOf(const std::string &path, const std::string &cache = "");
+std::shared_ptr<const GliderObservations> readObservationsAt(const std::string &path, const std::string &cache = "");
+
+/// @brief Keeps @p read in @p s (ObservationsSpec::read) as what its path and cache hold.
+void keepObservations(ObservationsSpec &s, std::shared_ptr<const GliderObservations> read);
 
 /// @brief Marks @p m's start (and its departure when @p departure) as the last fix's first guess (Origin::Observations
 /// at @p mark's place), which resumeAtLastFix() replaces by the fix it reads when the mission is made.
@@ -82,11 +87,11 @@ void startAtLastFix(MissionSpec &m, const SourceMark &mark, bool keepDeparture);
 /// after a departure given); a stay the glider left unfinished keeps the station, first, with what is left of its
 /// stay (MissionResume::leftStay: the plan returns there). The others keep their names, radii, windows and stays.
 /// What it did is kept in MissionSpec::observations->resumed. Done once.
-/// Returns the observations it read (to be used again, so that a URL is fetched once), nothing when it did not read
-/// them.
+/// Returns the observations (read once: ObservationsSpec::read when a front end read them), null when it did not
+/// resume.
 /// @throws Error (without the place) when the observations cannot be read, report no fix, a given departure is before
 /// the last fix, or the glider has already reached every via point and the goal (nothing is left to plan).
-std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m);
+std::shared_ptr<const GliderObservations> resumeAtLastFix(MissionSpec &m);
 
 /// @brief What a pilot must be warned of in resuming @p m (empty when it was not resumed, or nothing is amiss): a
 /// station reached after its window closed, a stay the glider left unfinished (the plan returns there), a last

@@ -84,6 +84,20 @@ struct ReachableSet
     bool stopped{false};     ///< ReachRequest::stop ended the front before `until`
 };
 
+/// @brief What a reachable set would cost (PipelinePlanner::reachWork()), known before it runs, so that the pipeline
+/// refuses work and memory beyond the limits of ResourceLimits.h before any is spent.
+struct ReachWork
+{
+    double cell{0.0};         ///< the grid's cell (the field's length unit)
+    double nodes{0.0};        ///< the grid's nodes
+    double dt{0.0};           ///< the shortest time step
+    double steps{0.0};        ///< time steps to the request's `until` (+inf when it never ends)
+    double bytesPerNode{0.0}; ///< the memory of one solve under way, per node
+
+    /// @brief Node updates: nodes times steps.
+    double work() const { return nodes * steps; }
+};
+
 /// @brief The first arrival at the goal of a front from the start ([LollaLevelSet]) and the time-optimal path to it:
 /// what PipelinePlanner::firstArrival() answers (the default pipeline's global check asks the registry's level-set
 /// planner for it where no extremal reaches the goal).
@@ -128,6 +142,15 @@ public:
     /// if it names one; nullopt when the planner does not compute reachable sets (the default). The pipeline asks
     /// the registry's level-set planner for isochrones and for the probability of reach over an ensemble's members.
     virtual std::optional<ReachableSet> reachableSet(const PipelineSetup &setup, const ReachRequest &request) const
+    {
+        (void)setup;
+        (void)request;
+        return std::nullopt;
+    }
+
+    /// @brief What reachableSet(@p setup, @p request) would cost (its grid, its steps at their shortest, its memory);
+    /// nullopt when the planner does not compute reachable sets (the default).
+    virtual std::optional<ReachWork> reachWork(const PipelineSetup &setup, const ReachRequest &request) const
     {
         (void)setup;
         (void)request;

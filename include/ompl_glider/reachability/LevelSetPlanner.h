@@ -53,6 +53,9 @@ public:
     /// the request gives or its cellScale times defaultLevelSetResolution(), the request's threads), run to the
     /// request's `until` without stopping at its goal (whose first arrival is recorded), and its isochrones.
     std::optional<ReachableSet> reachableSet(const PipelineSetup &setup, const ReachRequest &request) const override;
+    /// The grid of the request's cell (its size, else cellScale times the default resolution), the steps at the
+    /// automatic step's shortest (near a forbidden set) to its `until`, and the solve's 3 doubles a node.
+    std::optional<ReachWork> reachWork(const PipelineSetup &setup, const ReachRequest &request) const override;
     /// @brief Reachability::isochrone() (marching squares) on the given first-arrival field at each time.
     std::optional<std::vector<std::vector<std::vector<Point2>>>> isochronesOf(
         const ReachableSet &grid, const std::vector<double> &times) const override;

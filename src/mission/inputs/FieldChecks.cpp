@@ -9,8 +9,7 @@
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
-#include "ompl_glider/mission/MissionProblem.h"
-#include "../problem/ProblemParts.h"
+#include "InputsInternal.h"
 
 namespace ompl_glider
 {
@@ -39,11 +38,14 @@ void checkFiniteField(const CurrentField &f, const Region &box, double t0, const
 }
 } // namespace
 
-void MissionProblem::checkAnalyticFields() const
+namespace inputs_detail
 {
-    const MissionSpec &m = spec_;
+void checkAnalyticFields(const ProblemInputs &in)
+{
+    const MissionSpec &m = in.spec;
+    const Region &box = in.frame.box;
     // a region too wide for the planner's numbers (x_max: 1e308) is the region's fault, not the field's
-    const double span = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
+    const double span = std::max(box.xMax - box.xMin, box.yMax - box.yMin);
     if (!(span <= kMaxRegionSpan))
         throw Error(m.place("region") + ": the region spans " + text::number(span) + " units; at most " +
                     text::number(kMaxRegionSpan) + " (give its bounds in the mission's length unit)");
@@ -53,20 +55,19 @@ void MissionProblem::checkAnalyticFields() const
             return;
         const std::string at =
             c.mark.namesItself() ? c.mark.file + ": " : sourcePlace(m, c.mark) + "field '" + field + "': ";
-        checkFiniteField(*f, box_, m.departure.time, at);
+        checkFiniteField(*f, box, m.departure.time, at);
     };
-    if (members_.empty())
-        check(field_, m.current, "current.parameters");
-    for (std::size_t i = 0; i < members_.size(); ++i)
-        check(members_[i], i == 0 ? m.current : m.current.members[i],
+    if (in.members.empty())
+        check(in.field, m.current, "current.parameters");
+    for (std::size_t i = 0; i < in.members.size(); ++i)
+        check(in.members[i], i == 0 ? m.current : m.current.members[i],
               i == 0 ? std::string("current.parameters") : "current.ensemble[" + std::to_string(i) + "].parameters");
-    if (truth_ && m.execution.truth)
-        check(truth_, *m.execution.truth, "execution.truth.parameters");
+    if (in.truth && m.execution.truth)
+        check(in.truth, *m.execution.truth, "execution.truth.parameters");
 }
 
-void MissionProblem::checkDepthAxis(const LoadedForecast &nc) const
+void checkDepthAxis(const MissionSpec &m, const LoadedForecast &nc)
 {
-    const MissionSpec &m = spec_;
     if (nc.depthLevels || !(m.vehicle.depth > 0.0) || m.dive.enabled)
         return;
     // the glider's depth asked for currents that the file does not hold: never planned at the surface in silence
@@ -82,34 +83,36 @@ void MissionProblem::checkDepthAxis(const LoadedForecast &nc) const
                 "forecast with depth levels");
 }
 
-void MissionProblem::checkCommonTime() const
+void checkCommonTime(const ProblemInputs &in)
 {
-    const std::vector<CurrentSpec> &members = spec_.current.members;
+    const MissionSpec &m = in.spec;
+    const std::vector<CurrentSpec> &members = m.current.members;
+    const std::vector<std::shared_ptr<const CurrentField>> &fields = in.members;
     // the ensemble is planned where every member holds currents: members without a common time are refused, each
     // named with its span
     double begin = -std::numeric_limits<double>::infinity(), end = std::numeric_limits<double>::infinity();
-    for (const auto &f : members_)
+    for (const auto &f : fields)
     {
         begin = std::max(begin, f->timeBegin());
         end = std::min(end, f->timeEnd());
     }
     if (!(begin < end))
     {
-        const auto when = [this](double t) {
+        const auto when = [&m](double t) {
             if (!std::isfinite(t))
                 return std::string(t > 0 ? "on" : "ever");
-            const std::string iso = isoTime(t);
+            const std::string iso = m.isoTime(t);
             return iso.empty() ? text::number(t) : iso;
         };
         std::string spans;
-        for (std::size_t i = 0; i < members_.size(); ++i)
+        for (std::size_t i = 0; i < fields.size(); ++i)
         {
             const CurrentSpec &c = members[i];
             const std::string name = c.file.empty() ? c.type : "'" + c.file + "'";
             spans += (i ? ", " : "") + std::string("[") + std::to_string(i) + "] " + name + " from " +
-                     when(members_[i]->timeBegin()) + " to " + when(members_[i]->timeEnd());
+                     when(fields[i]->timeBegin()) + " to " + when(fields[i]->timeEnd());
         }
-        throw Error(sourcePlace(spec_, spec_.current.mark) +
+        throw Error(sourcePlace(m, m.current.mark) +
                     "field 'current.ensemble': the members hold currents at "
                     "no common time (" +
                     spans +
@@ -117,4 +120,5 @@ void MissionProblem::checkCommonTime() const
                     "cover the trip's days");
     }
 }
+} // namespace inputs_detail
 } // namespace ompl_glider

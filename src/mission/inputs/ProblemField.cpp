@@ -1,7 +1,6 @@
-// The mission's current field (MissionProblem.h, "the field"): the forecast or analytic flow planned on, the
-// members of an ensemble and the truth an execution flies in, each loaded from its source once.
-#include "ompl_glider/mission/MissionProblem.h"
-#include "../problem/ProblemParts.h"
+// The mission's current field (ProblemInputs.h): the forecast or analytic flow planned on, the members of an
+// ensemble and the truth an execution flies in, each loaded from its source once.
+#include "InputsInternal.h"
 #include "../../io/NumberText.h"
 
 #include <algorithm>
@@ -20,21 +19,21 @@
 #include "ompl_glider/current/ShiftedTimeField.h"
 #include "ompl_glider/io/RemoteSource.h"
 
-namespace ompl_glider
+namespace ompl_glider::inputs_detail
 {
-void MissionProblem::buildField()
+void loadField(ProblemInputs &in)
 {
-    const MissionSpec &m = spec_;
+    const MissionSpec &m = in.spec;
     const CurrentFieldKind *kind = findCurrentFieldKind(m.current.type);
     if (!kind)
         throw Error(sourcePlace(m, m.current.mark) + "field 'current.type': unknown '" + m.current.type +
                     "' (expected one of " + currentFieldKindList() + ")");
     if (!kind->gridded())
     {
-        field_ = makeAnalyticField(m.current.type, m.current.parameters);
+        in.field = makeAnalyticField(m.current.type, m.current.parameters);
         if (m.projection.set)
-            projection_ = std::make_shared<LocalProjection>(m.projection.lon0, m.projection.lat0);
-        projectionScale_ = m.lengthUnitMetres;
+            in.frame.projection = std::make_shared<LocalProjection>(m.projection.lon0, m.projection.lat0);
+        in.frame.projectionScale = m.lengthUnitMetres;
         return;
     }
     LoadedForecast forecast;
@@ -49,21 +48,21 @@ void MissionProblem::buildField()
             throw Error(sourcePlace(m, m.current.mark) + e.what());
         throw;
     }
-    checkDepthAxis(forecast);
-    field_ = forecast.field;
-    projection_ = forecast.projection;
-    projectionScale_ = 1.0;
-    xyScale_ = forecast.projection ? 1.0 : forecast.xyMetres;
-    forecastFiles_ = forecast.files;
-    forecastNotes_ = forecast.notes;
-    remoteSources_ = remoteFetchesOf(forecast.files);
-    if (forecast.wind)
-        fieldWord_ = "wind";
+    checkDepthAxis(m, forecast);
+    in.field = forecast.field;
+    in.frame.projection = forecast.projection;
+    in.frame.projectionScale = 1.0;
+    in.frame.xyScale = forecast.projection ? 1.0 : forecast.xyMetres;
+    in.forecastFiles = forecast.files;
+    in.forecastNotes = forecast.notes;
+    in.remoteSources = remoteFetchesOf(forecast.files);
+    in.wind = forecast.wind;
 }
 
-std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec &t, const std::string &field) const
+std::shared_ptr<const CurrentField> loadSource(const ProblemInputs &in, const CurrentSpec &t, const std::string &field)
 {
-    const MissionSpec &m = spec_;
+    const MissionSpec &m = in.spec;
+    const std::shared_ptr<const LocalProjection> &projection = in.frame.projection;
     // a command-line flag gave the source (--truth): name the flag, else the mission file's line and field
     const std::string at =
         t.mark.namesItself() ? t.mark.file + ": " : sourcePlace(m, t.mark) + "field '" + field + "': ";
@@ -80,10 +79,10 @@ std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec
     o.optionNames = forecastFieldNames(field); // the source's settings are this section's
     o.departure.clear();
     o.horizon = std::numeric_limits<double>::infinity();
-    if (projection_)
+    if (projection)
     {
-        o.refLon = projection_->lon0();
-        o.refLat = projection_->lat0();
+        o.refLon = projection->lon0();
+        o.refLat = projection->lat0();
     }
     LoadedForecast f;
     try
@@ -94,9 +93,9 @@ std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec
     {
         throw Error(at + e.what());
     }
-    if (!f.projection != !projection_)
-        throw Error(at + (projection_ ? "it has no longitude/latitude but the forecast has"
-                                      : "it has longitude/latitude but the forecast is Cartesian"));
+    if (!f.projection != !projection)
+        throw Error(at + (projection ? "it has no longitude/latitude but the forecast has"
+                                     : "it has longitude/latitude but the forecast is Cartesian"));
     // Field time 0 of each file is its first time: shifted so that both are asked at the same date.
     double shift = 0.0;
     if (m.fileCalendar && f.dated && !f.steady)
@@ -112,23 +111,22 @@ std::shared_ptr<const CurrentField> MissionProblem::loadSource(const CurrentSpec
     return shift == 0.0 ? f.field : std::make_shared<ShiftedTimeField>(f.field, shift);
 }
 
-void MissionProblem::buildMembers()
+void loadMembers(ProblemInputs &in)
 {
-    const std::vector<CurrentSpec> &members = spec_.current.members;
+    const std::vector<CurrentSpec> &members = in.spec.current.members;
     if (members.empty())
         return;
-    members_.push_back(field_); // the first member, read as the forecast
+    in.members.push_back(in.field); // the first member, read as the forecast
     for (std::size_t i = 1; i < members.size(); ++i)
-        members_.push_back(loadSource(members[i], "current.ensemble[" + std::to_string(i) + "]"));
-    checkCommonTime();
-    field_ = std::make_shared<EnsembleMeanField>(members_);
+        in.members.push_back(loadSource(in, members[i], "current.ensemble[" + std::to_string(i) + "]"));
+    checkCommonTime(in);
+    in.field = std::make_shared<EnsembleMeanField>(in.members);
 }
 
-void MissionProblem::buildTruth()
+void loadTruth(ProblemInputs &in)
 {
-    const MissionSpec &m = spec_;
+    const MissionSpec &m = in.spec;
     if (m.execution.enabled && m.execution.truth)
-        truth_ = loadSource(*m.execution.truth, "execution.truth");
+        in.truth = loadSource(in, *m.execution.truth, "execution.truth");
 }
-
-} // namespace ompl_glider
+} // namespace ompl_glider::inputs_detail

@@ -4,6 +4,7 @@
 /// left unfinished returned to.
 
 #include "ompl_glider/mission/Observations.h"
+#include "InputsInternal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,14 +18,51 @@
 namespace ompl_glider
 {
 #if OMPL_GLIDER_WITH_NETCDF
-namespace
+std::shared_ptr<const GliderObservations> readObservationsAt(const std::string &path, const std::string &cache)
 {
-/// Great-circle distance in metres (io/GeoBox.h's greatCircleKm(): a station's radius is a few hundred metres).
-double metresBetween(LonLat a, LonLat b)
-{
-    return 1000.0 * greatCircleKm(a, b);
+    return std::make_shared<const GliderObservations>(readGliderObservations(path, {cache}));
 }
 
+void keepObservations(ObservationsSpec &s, std::shared_ptr<const GliderObservations> read)
+{
+    s.read = std::move(read);
+    s.readFrom = s.path + "\n" + s.cache;
+}
+
+void markLastFixGuess(MissionSpec &m, const SourceMark &mark, bool departure)
+{
+    m.marks["start"] = SourceMark{mark.file, mark.line, Origin::Observations};
+    if (departure)
+        m.marks["departure.time"] = SourceMark{mark.file, mark.line, Origin::Observations};
+}
+
+void startAtLastFix(MissionSpec &m, const SourceMark &mark, bool keepDeparture)
+{
+    const std::shared_ptr<const GliderObservations> read =
+        readObservationsAt(m.observations->path, m.observations->cache);
+    keepObservations(*m.observations, read); // read once: the mission's inputs take them from here
+    const std::optional<GliderFix> &fix = read->lastFix;
+    if (!fix)
+        throw Error("the observations '" + m.observations->path + "' report no position to start from");
+    m.start.geographic = true;
+    m.start.lonLat = fix->at;
+    if (!keepDeparture)
+    {
+        try
+        {
+            m.departure.time = m.timeOf(formatIsoTime(fix->time));
+        }
+        catch (const Error &e)
+        {
+            throw Error(std::string("the last fix's time: ") + e.what());
+        }
+        m.departure.window = false;
+    }
+    markLastFixGuess(m, mark, !keepDeparture);
+}
+
+namespace
+{
 /// Given by a flag, a keyword or the calling program (not a mission file's, nor the observations' first guess).
 bool givenByCaller(const MissionSpec &m, const std::string &field)
 {
@@ -148,7 +186,7 @@ History stationHistory(const MissionSpec &m, const GliderObservations &o, double
         {
             Visit &v = *h.open;
             const ViaPointSpec &w = m.waypoints[v.k];
-            const VisitStep step = follow(v, t, metresBetween(f.at, w.position.lonLat) <= radiusOf(w), iso);
+            const VisitStep step = follow(v, t, 1000.0 * greatCircleKm(f.at, w.position.lonLat) <= radiusOf(w), iso);
             if (step == VisitStep::Going)
                 continue;
             if (step == VisitStep::Done)
@@ -167,7 +205,7 @@ History stationHistory(const MissionSpec &m, const GliderObservations &o, double
             const ViaPointSpec &w = m.waypoints[k];
             if (!w.position.geographic)
                 continue;
-            const double d = metresBetween(f.at, w.position.lonLat);
+            const double d = 1000.0 * greatCircleKm(f.at, w.position.lonLat);
             if (d > radiusOf(w))
                 continue;
             Visit v;
@@ -210,13 +248,14 @@ double deploymentOf(const MissionSpec &m)
 }
 } // namespace
 
-std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
+std::shared_ptr<const GliderObservations> resumeAtLastFix(MissionSpec &m)
 {
     if (!m.observations || !m.observations->hasFiles() || m.observations->resumed || !m.fleet.empty())
-        return std::nullopt;
+        return nullptr;
     if (givenByCaller(m, "start"))
-        return std::nullopt; // the caller says where the glider is: the observations only correct the forecast
-    GliderObservations o = readGliderObservations(m.observations->path, {m.observations->cache});
+        return nullptr; // the caller says where the glider is: the observations only correct the forecast
+    const std::shared_ptr<const GliderObservations> read = inputs_detail::observationsOf(m);
+    const GliderObservations &o = *read;
     if (!o.lastFix)
         throw Error("the observations '" + m.observations->path + "' report no position to start from");
     MissionResume r;
@@ -278,7 +317,7 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
         s.leftIso = v.leftIso;
         s.held = v.held;
         s.stayLeft = v.stay - v.held;
-        s.distance = metresBetween(o.lastFix->at, v.station.at);
+        s.distance = 1000.0 * greatCircleKm(o.lastFix->at, v.station.at);
         s.radius = v.station.radius;
         r.leftStay = s;
     }
@@ -289,7 +328,7 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
     if (left.empty() && m.goal.geographic)
     {
         const double radius = m.execution.radius > 0.0 ? m.execution.radius * m.metresPerUnit() : m.outputs.gotoWptDist;
-        const double d = metresBetween(o.lastFix->at, m.goal.lonLat);
+        const double d = 1000.0 * greatCircleKm(o.lastFix->at, m.goal.lonLat);
         if (d <= radius)
             throw Error("the last fix (" + r.fixIso + ", " + text::number(d, 3) + " m from the goal) is at the goal" +
                         (m.waypoints.empty() ? std::string() : " and every via point was reached") +
@@ -321,7 +360,7 @@ std::optional<GliderObservations> resumeAtLastFix(MissionSpec &m)
     m.marks["start"] = SourceMark{m.observations->mark.file, m.observations->mark.line, Origin::Observations};
     m.waypoints = std::move(left);
     m.observations->resumed = std::move(r);
-    return o;
+    return read;
 }
 
 std::vector<std::string> resumeWarnings(const MissionSpec &m)
@@ -385,5 +424,39 @@ std::string resumeNote(const MissionSpec &m)
         s += "; WARNING: " + w;
     return s;
 }
+
+std::shared_ptr<const GliderObservations> inputs_detail::observationsOf(const MissionSpec &m)
+{
+    if (!m.observations || !m.observations->hasFiles())
+        return nullptr;
+    const ObservationsSpec &s = *m.observations;
+    if (s.read && s.readFrom == s.path + "\n" + s.cache)
+        return s.read;
+    return readObservationsAt(s.path, s.cache);
+}
+#else
+std::shared_ptr<const GliderObservations> inputs_detail::observationsOf(const MissionSpec &m)
+{
+    if (m.observations && m.observations->hasFiles())
+        throw Error(m.place("observations") + ": this build reads no glider files (it has no NetCDF)");
+    return nullptr;
+}
 #endif
+
+void inputs_detail::checkLastFixInForecast(const ProblemInputs &in)
+{
+    const MissionSpec &m = in.spec;
+    if (!m.observations || !m.observations->resumed)
+        return;
+    const MissionResume &r = *m.observations->resumed;
+    const double fix = m.timeOf(r.fixIso), end = in.field->timeEnd();
+    if (std::isfinite(end) && fix > end)
+    {
+        const std::string endText = m.isoTime(end).empty() ? text::number(end, 10) : m.isoTime(end);
+        throw Error(m.place("observations") + ": the glider's last fix (" + r.fixIso +
+                    ") is after the forecast's end (" + endText +
+                    "): the forecast says nothing of the currents from there on; give a forecast that covers the "
+                    "time from the last fix on");
+    }
+}
 } // namespace ompl_glider

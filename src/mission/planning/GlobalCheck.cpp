@@ -296,7 +296,7 @@ PlannedPath headingsAlong(const MissionProblem &problem, const std::shared_ptr<c
     const Point2 g = problem.getGoal();
     HeadingRefineSettings s;
     s.depth = ctx->travel->params().depth;
-    s.radius = problem.gliderProblem(c.departure, c.speed).goalTolerance;
+    s.radius = problem.goalTolerance();
     s.tEnd = std::min(ctx->region.tMax, ctx->field->timeEnd());
     HeadingRoute schedule;
     schedule.start = {extremal.front().x, extremal.front().y};

@@ -253,12 +253,6 @@ std::string timeText(const MissionProblem &problem, double t)
     return iso.empty() ? std::string(text) : std::string(text) + " (" + iso + ")";
 }
 
-std::string durationText(const MissionProblem &problem, double d)
-{
-    const MissionSpec &m = problem.getSpec();
-    return m.physicalUnits().time ? text::durationText(d * m.timeUnitSeconds) : text::number(d);
-}
-
 /// Goals in time ([ThompsonICRA] Sec. III, the earliest valid arrival): moves the arrival of a solved plan
 /// into the goal window [begin, end] of the mission. Early: hold at the goal where the glider can (|c| < V over the
 /// hold, TravelTimeMotionValidator::canHold); else time the arrival: from the last waypoint before the goal back to

@@ -24,7 +24,7 @@ PlannedPath headingResult(const MissionProblem &problem, const GliderContext &ct
     const Point2 g = problem.getGoal();
     HeadingRefineSettings s;
     s.depth = ctx.travel->params().depth;
-    s.radius = problem.gliderProblem(r.departure, r.speed).goalTolerance;
+    s.radius = problem.goalTolerance();
     s.tEnd = std::min(ctx.region.tMax, ctx.field->timeEnd());
     // the planner's check step: the reported times are those of this flight (checked against an accurate re-flight)
     s.step = route.step > 0.0 ? route.step : headingCheckStep(route.duration(), ctx);
@@ -93,8 +93,7 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
         r.reflownTravelTime = f.end.t - r.departure;
         // within the goal tolerance, or so close that still water would close the gap in 1e-6 of the trip (a long
         // route through a sensitive flow, where two accurate integrators part by more than a tight tolerance)
-        const double radius =
-            std::max(problem.gliderProblem(r.departure, r.speed).goalTolerance, 1e-6 * r.speed * r.travelTime);
+        const double radius = std::max(problem.goalTolerance(), 1e-6 * r.speed * r.travelTime);
         if (f.ok && !f.grounded && !(r.reflownEndDistance <= radius) && reaimLastSegment(problem, ctx, s, radius, r))
             return;
         if (!f.ok || f.grounded || !(r.reflownEndDistance <= radius))

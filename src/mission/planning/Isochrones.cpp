@@ -16,8 +16,7 @@ namespace ompl_glider
 {
 namespace
 {
-/// The reachable set from the registry's first planner that computes one (PipelinePlanner::reachableSet(): the
-/// level set's family).
+/// The reachable set from the registry's level-set planner (plannerOfFamily(), PipelinePlanner::reachableSet()).
 std::optional<ReachableSet> reachableSetOf(const MissionProblem &problem, const GliderSimpleSetup &ss,
                                            const std::shared_ptr<GliderContext> &ctx, double departure,
                                            const ReachRequest &request)
@@ -27,15 +26,10 @@ std::optional<ReachableSet> reachableSetOf(const MissionProblem &problem, const 
     setup.start = problem.getStart();
     setup.goal = problem.getGoal();
     setup.region = ctx->region;
-    for (const PlannerEntry &entry : plannerRegistry())
-    {
-        if (entry.family != PlannerFamily::LevelSet)
-            continue;
-        const ompl::base::PlannerPtr planner = entry.make(ss.getSpaceInformation(), ctx);
-        if (std::optional<ReachableSet> r = pipelineView(*planner).reachableSet(setup, request))
-            return r;
-    }
-    throw Error("isochrones: no registered planner computes the reachable set");
+    const ompl::base::PlannerPtr planner = plannerOfFamily(PlannerFamily::LevelSet).make(ss.getSpaceInformation(), ctx);
+    if (std::optional<ReachableSet> r = pipelineView(*planner).reachableSet(setup, request))
+        return r;
+    throw Error("isochrones: the level-set planner computes no reachable set");
 }
 } // namespace
 

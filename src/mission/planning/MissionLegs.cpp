@@ -27,7 +27,6 @@ namespace ompl_glider
 {
 namespace
 {
-using planning_detail::durationText;
 using planning_detail::LegPlanner;
 using planning_detail::Stops;
 using planning_detail::timeText;
@@ -143,7 +142,7 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
         l.firstPoint = r.path.empty() ? 0 : r.path.size() - 1;
         if (!r.path.empty() && r.path.back().t != p.path.front().t)
             l.firstPoint = r.path.size(); // after a stay the leg starts with a hold's end
-        const double gap = problem.gliderProblem(p.departure, r.speed).goalTolerance + 1e-9 * r.pathLength;
+        const double gap = problem.goalTolerance() + 1e-9 * r.pathLength;
         append(r.path, p.path, gap);
         l.lastPoint = r.path.size() - 1;
         append(r.raw, p.raw, gap);
@@ -270,7 +269,7 @@ std::vector<PlannedLeg> flyOrder(LegPlanner &planner, const std::vector<std::siz
             l.plan.status = PlanStatus::NoPath;
             l.plan.setNoPath(
                 {NoPathCause::ArrivalWindow,
-                 "stay at " + l.to + " for " + durationText(planner.stops().problem, l.stay) + ": " + why});
+                 "stay at " + l.to + " for " + planner.stops().problem.getSpec().durationText(l.stay) + ": " + why});
         }
         legs.push_back(std::move(l));
         if (!legs.back().plan.solved)
@@ -291,7 +290,7 @@ OptimumReference missionOptimumReference(const MissionProblem &problem, const Mi
     {
         const MissionProblem leg = problem.withLeg(l.fromPoint, l.toPoint, {});
         const double bound = l.plan.solved ? 1.2 * l.plan.travelTime + std::max(0.0, l.departure() - t)
-                                           : leg.gliderProblem(t, result.plan.speed).horizon;
+                                           : leg.horizon(t, result.plan.speed);
         const OptimumReference r = optimumReference(leg, t, result.plan.speed, bound);
         if (!r.found)
             return OptimumReference{};

@@ -414,7 +414,7 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     else if (options.optimum)
     {
         // Any flown path bounds the optimum; without one, the planning horizon does.
-        const double horizon = problem.gliderProblem(tDep, result.plan.speed).horizon;
+        const double horizon = problem.horizon(tDep, result.plan.speed);
         result.optimum =
             optimumReference(problem, tDep, result.plan.speed,
                              result.plan.solved ? std::min(horizon, 1.2 * result.plan.travelTime) : horizon);

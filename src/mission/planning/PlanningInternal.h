@@ -159,9 +159,6 @@ double holdTimeOf(const std::vector<TimedPoint> &path);
 /// A field time for messages: "t = T", followed by its ISO 8601 date when the mission has a calendar.
 std::string timeText(const MissionProblem &problem, double t);
 
-/// A duration for messages: days and hours where the mission's time unit is known, else the field's number.
-std::string durationText(const MissionProblem &problem, double d);
-
 /// Moves the arrival of a solved plan into the mission's goal window (see GoalWindow.cpp).
 void timeArrival(const MissionProblem &problem, PlannedPath &r);
 

@@ -32,14 +32,22 @@ namespace ompl_glider
 {
 namespace
 {
-/// The registry's level-set planner on one problem's context (the family's first entry that answers), with what
-/// the pipeline tells it.
+/// The registry's level-set planner (plannerOfFamily()) on one problem's context, with what the pipeline tells it.
 struct LevelSetOn
 {
     std::shared_ptr<GliderContext> ctx;
     std::shared_ptr<GliderSimpleSetup> ss;
     ompl::base::PlannerPtr planner;
     PipelineSetup setup;
+
+    /// What the planner says reachableSet(@p request) would cost.
+    ReachWork workOf(const ReachRequest &request) const
+    {
+        const std::optional<ReachWork> w = pipelineView(*planner).reachWork(setup, request);
+        if (!w)
+            throw Error("reachability: the level-set planner does not say what a reachable set costs");
+        return *w;
+    }
 };
 
 LevelSetOn levelSetOn(const MissionProblem &problem, double departure, double speed)
@@ -50,14 +58,8 @@ LevelSetOn levelSetOn(const MissionProblem &problem, double departure, double sp
     l.setup.start = problem.getStart();
     l.setup.goal = problem.getGoal();
     l.setup.region = l.ctx->region;
-    for (const PlannerEntry &entry : plannerRegistry())
-    {
-        if (entry.family != PlannerFamily::LevelSet)
-            continue;
-        l.planner = entry.make(l.ss->getSpaceInformation(), l.ctx);
-        return l;
-    }
-    throw Error("reachability: no registered planner computes the reachable set");
+    l.planner = plannerOfFamily(PlannerFamily::LevelSet).make(l.ss->getSpaceInformation(), l.ctx);
+    return l;
 }
 
 /// The members' weights: the observations' where they weighed the members, else equal; normalised to sum 1.
@@ -94,8 +96,8 @@ double horizonOf(const MissionProblem &problem, const PlannedPath &plan, double 
     const MissionSpec &m = problem.getSpec();
     double horizon = m.reachability.horizon;
     if (std::isnan(horizon))
-        horizon = plan.solved && std::isfinite(plan.travelTime) ? 1.5 * plan.travelTime
-                                                                : problem.gliderProblem(departure, speed).horizon;
+        horizon =
+            plan.solved && std::isfinite(plan.travelTime) ? 1.5 * plan.travelTime : problem.horizon(departure, speed);
     horizon = std::min(horizon, problem.getField()->timeEnd() - departure);
     if (!(horizon > 0.0) || !std::isfinite(horizon))
         throw Error(m.place("reachability.horizon") + ": the current's field ends at " +
@@ -124,49 +126,36 @@ std::vector<double> framesOf(const MissionSpec &m, double departure, double hori
 }
 
 /// Refuses, naming the cell (or the horizon's frames), a computation beyond the memory limit: the members' arrival
-/// fields (8 bytes a node each), p per frame (4), the solves under way (3 doubles a node each) and the quantile field
-/// of the contours.
-void checkMemoryOf(const MissionProblem &problem, const ReachRequest &request, std::size_t members, std::size_t frames,
+/// fields (8 bytes a node each), p per frame (4), the solves under way (the planner's bytes a node each) and the
+/// quantile field of the contours; the grid is the planner's (ReachWork).
+void checkMemoryOf(const MissionProblem &problem, const ReachWork &w, std::size_t members, std::size_t frames,
                    unsigned solving)
 {
     const MissionSpec &m = problem.getSpec();
-    const Region &b = problem.getBox();
-    const double h = request.cellSize > 0.0 ? request.cellSize : (std::max(b.xMax - b.xMin, b.yMax - b.yMin) / 200.0);
-    const double nodes = (std::floor((b.xMax - b.xMin) / h) + 2.0) * (std::floor((b.yMax - b.yMin) / h) + 2.0);
-    const double bytes = nodes * (8.0 * static_cast<double>(members) + 4.0 * static_cast<double>(frames) +
-                                  24.0 * static_cast<double>(std::min<std::size_t>(solving, members)) + 16.0);
+    const double bytes =
+        w.nodes * (8.0 * static_cast<double>(members) + 4.0 * static_cast<double>(frames) +
+                   w.bytesPerNode * static_cast<double>(std::min<std::size_t>(solving, members)) + 16.0);
     checkMemory(bytes,
                 m.place(std::isnan(m.reachability.resolution) ? "reachability" : "reachability.resolution") +
                     ": the probability of reach over " + std::to_string(members) +
-                    (members == 1 ? " member on " : " members on ") + text::number(nodes, 4) + " grid nodes",
+                    (members == 1 ? " member on " : " members on ") + text::number(w.nodes, 4) + " grid nodes",
                 "use a coarser reachability.resolution");
 }
 
 /// Refuses, naming the horizon (or the cell when it was given), fronts beyond the level set's limits
 /// (ResourceLimits.h): more than kMaxLevelSetSteps time steps, or more than kMaxLevelSetWork node updates over all
-/// the members (nodes x steps each; the planner's cfl, read by name, or the automatic one's shortest, and the field's
-/// fastest current over the region).
-void checkWorkOf(const MissionProblem &problem, const LevelSetOn &l, const ReachRequest &request, std::size_t members,
-                 double horizon)
+/// the members (what the planner says one front costs, ReachWork, times the members).
+void checkWorkOf(const MissionProblem &problem, const ReachWork &w, std::size_t members, double horizon)
 {
     const MissionSpec &m = problem.getSpec();
-    const Region &r = l.ctx->region;
-    std::string cflText;
-    // 0: the planner's automatic step, whose shortest (near a forbidden set: cfl 1.5) gives the most steps
-    const double given = l.planner->params().getParam("cfl", cflText) ? std::stod(cflText) : 0.0;
-    const double cfl = given > 0.0 ? given : 1.5;
-    const double h = request.cellSize > 0.0 ? request.cellSize
-                                            : request.cellScale * std::max(r.xMax - r.xMin, r.yMax - r.yMin) / 200.0;
-    const double nodes = (std::floor((r.xMax - r.xMin) / h) + 1.0) * (std::floor((r.yMax - r.yMin) / h) + 1.0);
-    const double dt = cfl * h / (l.ctx->speed() + std::max(l.ctx->maxCurrent(), 0.0));
-    const double steps = std::ceil(horizon / dt), work = nodes * steps * static_cast<double>(members);
+    const double steps = w.steps, work = w.work() * static_cast<double>(members);
     if (steps <= kMaxLevelSetSteps && work <= kMaxLevelSetWork)
         return;
     const bool cellGiven = !std::isnan(m.reachability.resolution) && steps <= kMaxLevelSetSteps;
     throw Error(m.place(cellGiven ? "reachability.resolution" : "reachability.horizon") +
                 text::formatted(": the fronts of %g member(s) over a horizon of %.4g would take %.3g time steps of "
                                 "%.3g on %.4g grid nodes",
-                                static_cast<double>(members), horizon, steps, dt, nodes) +
+                                static_cast<double>(members), horizon, steps, w.dt, w.nodes) +
                 text::formatted(" (%.3g node updates)", work) +
                 text::formatted(", more than the limit of %.3g steps and %.3g node updates: give a shorter "
                                 "reachability.horizon or a coarser reachability.resolution",
@@ -290,7 +279,18 @@ void checkReachProbabilityMemory(const MissionProblem &problem)
     if (!std::isnan(rs.horizon) && !std::isnan(rs.interval) && rs.interval > 0.0)
         frames = static_cast<std::size_t>(std::min(std::floor(rs.horizon / rs.interval) + 1.0,
                                                    static_cast<double>(planning_detail::kMaxIsochrones) + 1.0));
-    checkMemoryOf(problem, request, members, frames, members >= cores ? cores : 1u);
+    // the planner's grid on the mission's departure (a problem it cannot set up is refused by the planning, which
+    // says why; the probability of reach checks again before it runs)
+    std::optional<LevelSetOn> l;
+    try
+    {
+        l = levelSetOn(problem, m.departure.window ? m.departure.begin : m.departure.time, m.vehicle.speed);
+    }
+    catch (const Error &)
+    {
+        return;
+    }
+    checkMemoryOf(problem, l->workOf(request), members, frames, members >= cores ? cores : 1u);
 }
 
 ReachProbability computeReachProbability(const MissionProblem &problem, const PlannedPath &plan, double departure)
@@ -325,9 +325,10 @@ ReachProbability computeReachProbability(const MissionProblem &problem, const Pl
     request.goal = problem.getGoal();
     request.threads = sideBySide ? 1u : 0u;
     request.stop = [] { return stopRequested(); };
-    checkMemoryOf(problem, request, members, out.times.size(), sideBySide ? cores : 1u);
     const LevelSetOn drawer = levelSetOn(problem, departure, speed); // also draws the contours
-    checkWorkOf(problem, drawer, request, members, horizon);
+    const ReachWork work = drawer.workOf(request);
+    checkMemoryOf(problem, work, members, out.times.size(), sideBySide ? cores : 1u);
+    checkWorkOf(problem, work, members, horizon);
     std::vector<ReachableSet> sets(members);
     std::vector<char> done(members, 0);
     const auto solve = [&](std::size_t k) {

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "../../io/NumberText.h"
-#include "../planning/PlanningInternal.h"
 #include "ompl_glider/current/BeyondForecast.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
@@ -120,7 +119,7 @@ MissionProblem MissionProblem::withLeg(Point2 start, Point2 goal, const GoalWind
         if (spec->geographic)
             spec->lonLat = toGeographic(q);
         else
-            spec->xy = {q.x / xyScale_, q.y / xyScale_};
+            spec->xy = {q.x / frame_.xyScale, q.y / frame_.xyScale};
     if (gridSizeAutomatic_ && std::hypot(goal.x - start.x, goal.y - start.y) > 0.0)
         p.spec_.planner.gridSize = p.automaticGridSize(start, goal); // the leg's own, as a one-leg mission's
     return p;
@@ -133,7 +132,7 @@ double MissionProblem::automaticGridSize(Point2 a, Point2 b) const
     double g = grid ? defaultForecastGridSize(grid->minCellSize(), d) : defaultAnalyticGridSize(spec_, d);
     // a leg of a few tens of metres in a box of a hundred kilometres: a spacing whose lattice the box can hold (its
     // start and goal then share a lattice cell and its direct edge), two significant digits, rounded up
-    const double area = (box_.xMax - box_.xMin) * (box_.yMax - box_.yMin);
+    const double area = (frame_.box.xMax - frame_.box.xMin) * (frame_.box.yMax - frame_.box.yMin);
     const double finest = std::sqrt(area / kAutomaticLatticeVertices);
     if (std::isfinite(finest) && finest > g)
     {
@@ -141,23 +140,6 @@ double MissionProblem::automaticGridSize(Point2 a, Point2 b) const
         g = std::ceil(finest / scale) * scale;
     }
     return g;
-}
-
-void MissionProblem::checkLastFixInForecast() const
-{
-    const MissionSpec &m = spec_;
-    if (!m.observations || !m.observations->resumed)
-        return;
-    const MissionResume &r = *m.observations->resumed;
-    const double fix = m.timeOf(r.fixIso), end = field_->timeEnd();
-    if (std::isfinite(end) && fix > end)
-    {
-        const std::string endText = m.isoTime(end).empty() ? text::number(end, 10) : m.isoTime(end);
-        throw Error(m.place("observations") + ": the glider's last fix (" + r.fixIso +
-                    ") is after the forecast's end (" + endText +
-                    "): the forecast says nothing of the currents from there on; give a forecast that covers the "
-                    "time from the last fix on");
-    }
 }
 
 MissionProblem MissionProblem::withField(std::shared_ptr<const CurrentField> field) const
@@ -192,8 +174,8 @@ void MissionProblem::checkViaPoints() const
             if (const std::string why = environment_->whyBlocked(via_[i].x, via_[i].y, m.departure.time); !why.empty())
                 throw Error(m.place(field) + named + ": the point is " + why);
         if (std::isfinite(span) && v.stay > span)
-            throw Error(m.place(field + ".stay") + named + ": a stay of " +
-                        planning_detail::durationText(*this, v.stay) + " is longer than the whole forecast");
+            throw Error(m.place(field + ".stay") + named + ": a stay of " + m.durationText(v.stay) +
+                        " is longer than the whole forecast");
         if (!std::isnan(v.radius)) // (a program may set it without the loader: its declared range)
             try
             {
@@ -209,8 +191,8 @@ void MissionProblem::checkViaPoints() const
 Point2 MissionProblem::localPoint(const PointSpec &p, const std::string &what) const
 {
     if (!p.geographic)
-        return {p.xy.x * xyScale_, p.xy.y * xyScale_};
-    if (!projection_)
+        return {p.xy.x * frame_.xyScale, p.xy.y * frame_.xyScale};
+    if (!frame_.projection)
         throw Error(spec_.place(what) + ": lon/lat given but the forecast has no geographic coordinates");
     return toLocal(p.lonLat);
 }

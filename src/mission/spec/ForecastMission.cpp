@@ -358,14 +358,15 @@ void finishSpec(MissionSpec &m, const LoadedForecast &nc, const std::optional<do
 
 /// @p q with the start (and, where none is given, the departure) at the last fix of its observations, and the words
 /// that name them so.
-ForecastInput atLastFix(const ForecastInput &q)
+ForecastInput atLastFix(const ForecastInput &q, std::shared_ptr<const GliderObservations> &read)
 {
     ForecastInput at = q;
     const std::string source = named(q, "observations");
     std::optional<GliderFix> fix;
     try
     {
-        fix = lastFixOf(q.observations, q.observationsCache);
+        read = readObservationsAt(q.observations, q.observationsCache);
+        fix = read->lastFix;
         if (!fix)
             throw Error("they report no position to start from");
     }
@@ -388,7 +389,8 @@ ForecastInput atLastFix(const ForecastInput &q)
 
 MissionSpec forecastMission(const ForecastInput &input)
 {
-    const ForecastInput q = input.startAtLastFix ? atLastFix(input) : input;
+    std::shared_ptr<const GliderObservations> read; // the observations read for the last fix: read once
+    const ForecastInput q = input.startAtLastFix ? atLastFix(input, read) : input;
     const std::vector<std::string> files = forecastFiles(q);
     // in messages: the file, or the files of a forecast in several
     std::string file = files.front();
@@ -417,8 +419,15 @@ MissionSpec forecastMission(const ForecastInput &input)
     checkEndpoints(nc, q, file, geographic);
     checkDeparture(nc, q);
     finishSpec(m, nc, epoch, q);
-    if (input.startAtLastFix) // a first guess until the mission resumes at the fix it reads then
+    if (input.startAtLastFix) // a first guess until the mission resumes at the fix
+    {
         markLastFixGuess(m, SourceMark{named(input, "observations"), 0}, input.departure.empty());
+        ObservationsSpec o = m.observations.value_or(ObservationsSpec{});
+        o.path = input.observations;
+        o.cache = input.observationsCache;
+        keepObservations(o, read); // the mission's inputs take them from here
+        m.observations = o;
+    }
     return m;
 }
 

@@ -1,8 +1,7 @@
-// The mission's land and forbidden regions (MissionProblem.h, "land and safety"): its polygons, coastline, closures
-// and ice, each checked as given and placed in the planning frame (the keep-off zone and the depth limit:
-// Safety.cpp).
+// The mission's land and forbidden regions (MissionProblem.h): its polygons, the coastline's land polygons as read
+// (ProblemInputs), closures and ice, each checked as given and placed in the planning frame (the keep-off zone and
+// the depth limit: Safety.cpp).
 #include "ompl_glider/mission/MissionProblem.h"
-#include "../problem/ProblemParts.h"
 #include "../../io/NumberText.h"
 
 #include <algorithm>
@@ -40,7 +39,7 @@ std::vector<Point2> MissionProblem::ring(const std::vector<std::pair<double, dou
     return out;
 }
 
-void MissionProblem::buildRegions()
+void MissionProblem::buildRegions(const ProblemInputs &in)
 {
     const MissionSpec &m = spec_;
     // the polygon as given, checked: every polygon GEOS calls valid (a hole may touch its outer ring at a point)
@@ -84,9 +83,7 @@ void MissionProblem::buildRegions()
         // the coastline's land polygons that meet the box (with a margin of a tenth of its size)
         const SourceMark &mk = m.forbidden.coastlineMark;
         const std::string at = mk.namesItself() ? mk.file + ": " : sourcePlace(m, mk);
-        if (!isGeographic())
-            throw Error(at + "forbidden.coastline: the coastline is in lon/lat; give a 'projection' in the mission");
-        const std::vector<LandPolygon> land = readCoastline(at);
+        const std::vector<LandPolygon> &land = in.coastline;
         for (std::size_t k = 0; k < land.size(); ++k)
         {
             PolygonSpec p;
@@ -141,7 +138,7 @@ void MissionProblem::buildRegions()
                 // Advected over the mission's time span: from the earliest departure (or t_ref) to the latest
                 // departure plus five straight-line crossings of the box at the vehicle speed, within the field's time.
                 const Point2 ref = shape.outer().front();
-                const double diag = std::hypot(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
+                const double diag = std::hypot(frame_.box.xMax - frame_.box.xMin, frame_.box.yMax - frame_.box.yMin);
                 const double firstDep = m.departure.window ? m.departure.begin : m.departure.time;
                 const double lastDep = m.departure.window ? m.departure.end : m.departure.time;
                 double t0 = std::min(i.tRef, firstDep), t1 = std::max(i.tRef, lastDep + 5.0 * diag / m.vehicle.speed);
@@ -159,7 +156,7 @@ void MissionProblem::buildRegions()
         }
     }
     checkGeoJsonNearBox();
-    addSafety(*regions);
+    addSafety(*regions, in);
     if (regions->size() > 0)
         environment_ = regions;
 }

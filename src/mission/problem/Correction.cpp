@@ -1,7 +1,7 @@
-/// @file Observations.cpp
-/// @brief A glider's measurements in a mission (Observations.h): the start at the last fix's first guess, and the
-/// forecast corrected by its depth-averaged currents (MissionProblem::applyObservations()); resuming at the last fix
-/// is Resume.cpp's.
+/// @file Correction.cpp
+/// @brief The forecast corrected by a glider's depth-averaged currents (MissionProblem::applyObservations()), and
+/// what the correction says (Observations.h); reading the observations and resuming at the last fix are
+/// src/mission/inputs/'s.
 
 #include "ompl_glider/mission/Observations.h"
 
@@ -13,7 +13,6 @@
 #include "ompl_glider/current/LocalProjection.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
-#include "../planning/PlanningInternal.h"
 
 namespace ompl_glider
 {
@@ -23,7 +22,7 @@ CorrectionParams MissionProblem::correctionParams() const
     const ObservationsSpec s = m.observations.value_or(ObservationsSpec{});
     const CorrectionParams forecast; // a forecast's defaults (metres, seconds), stated once in CorrectedField.h
     CorrectionParams p;
-    const double side = std::max(box_.xMax - box_.xMin, box_.yMax - box_.yMin);
+    const double side = std::max(frame_.box.xMax - frame_.box.xMin, frame_.box.yMax - frame_.box.yMin);
     p.lengthScale = std::isfinite(s.lengthScale) ? s.lengthScale
                     : m.current.isForecast()     ? forecast.lengthScale
                                                  : 0.1 * side;
@@ -54,40 +53,6 @@ CorrectionParams MissionProblem::correctionParams() const
 }
 
 #if OMPL_GLIDER_WITH_NETCDF
-std::optional<GliderFix> lastFixOf(const std::string &path, const std::string &cache)
-{
-    return readGliderObservations(path, {cache}).lastFix;
-}
-
-void markLastFixGuess(MissionSpec &m, const SourceMark &mark, bool departure)
-{
-    m.marks["start"] = SourceMark{mark.file, mark.line, Origin::Observations};
-    if (departure)
-        m.marks["departure.time"] = SourceMark{mark.file, mark.line, Origin::Observations};
-}
-
-void startAtLastFix(MissionSpec &m, const SourceMark &mark, bool keepDeparture)
-{
-    const std::optional<GliderFix> fix = lastFixOf(m.observations->path, m.observations->cache);
-    if (!fix)
-        throw Error("the observations '" + m.observations->path + "' report no position to start from");
-    m.start.geographic = true;
-    m.start.lonLat = fix->at;
-    if (!keepDeparture)
-    {
-        try
-        {
-            m.departure.time = m.timeOf(formatIsoTime(fix->time));
-        }
-        catch (const Error &e)
-        {
-            throw Error(std::string("the last fix's time: ") + e.what());
-        }
-        m.departure.window = false;
-    }
-    markLastFixGuess(m, mark, !keepDeparture);
-}
-
 namespace
 {
 /// "farther than 200 km from the mission's area (10 length scales)"
@@ -174,24 +139,9 @@ std::vector<GliderFix> surfacingFixes(const ObservationReport &o, bool *dacOnly)
     return fixes.empty() ? o.fixes : fixes;
 }
 
-void MissionProblem::applyObservations(const GliderObservations *read)
+void MissionProblem::applyObservations(const GliderObservations &o)
 {
-    if (!spec_.observations || !spec_.observations->hasFiles())
-        return;
-    const ObservationsSpec &s = *spec_.observations;
     const std::string at = spec_.place("observations");
-    if (!isGeographic())
-        throw Error(at + ": a glider's observations are in lon/lat: the mission needs a geographic forecast or a "
-                         "'projection'");
-    GliderObservations o;
-    try
-    {
-        o = read ? *read : readGliderObservations(s.path, {s.cache});
-    }
-    catch (const Error &e)
-    {
-        throw Error(at + ": " + e.what());
-    }
     ObservationReport report;
     report.source = o.source;
     report.files = o.files;
@@ -233,15 +183,15 @@ void MissionProblem::applyObservations(const GliderObservations *read)
         }
         // east/north turned into the planning frame's x/y there, as the forecast's velocities are
         double ex = 1.0, ey = 0.0, nx = 0.0, ny = 1.0;
-        if (projection_)
+        if (frame_.projection)
         {
-            projection_->eastDirection(r.at.lon, r.at.lat, ex, ey);
-            projection_->northDirection(r.at.lon, r.at.lat, nx, ny);
+            frame_.projection->eastDirection(r.at.lon, r.at.lat, ex, ey);
+            frame_.projection->northDirection(r.at.lon, r.at.lat, nx, ny);
         }
         const Velocity c{(r.u * ex + r.v * nx) / scale, (r.u * ey + r.v * ny) / scale};
         const Point2 q = toLocal(r.at);
-        const double dx = std::max({box_.xMin - q.x, 0.0, q.x - box_.xMax});
-        const double dy = std::max({box_.yMin - q.y, 0.0, q.y - box_.yMax});
+        const double dx = std::max({frame_.box.xMin - q.x, 0.0, q.x - frame_.box.xMax});
+        const double dy = std::max({frame_.box.yMin - q.y, 0.0, q.y - frame_.box.yMax});
         if (std::hypot(dx, dy) > report.farDistance)
         {
             ++report.far;
@@ -263,7 +213,7 @@ void MissionProblem::applyObservations(const GliderObservations *read)
     // the forecast the DAC make: corrected; an ensemble's members weighed by them and updated, then corrected
     const LearnedForecast learned = learnForecast(field_, members_, dac, p);
     report.correction = learned.correction;
-    report.meanInnovationEastNorth = eastNorth(report.correction.meanInnovation, o.dac, projection_.get());
+    report.meanInnovationEastNorth = eastNorth(report.correction.meanInnovation, o.dac, frame_.projection.get());
     report.params = learned.correction.params;
     report.members = learned.members;
     if (report.correction.used == 0)
@@ -323,9 +273,8 @@ std::string correctionNote(const MissionProblem &problem)
     std::string out = "L " +
                       (km ? text::number(c.params.lengthScale * m.metresPerUnit() / 1000.0, 4) + " km"
                           : text::number(c.params.lengthScale, 4)) +
-                      " (" + c.lengthSource + "), T " + planning_detail::durationText(problem, c.params.timeScale) +
-                      " (" + c.timeSource + "), ratio " + text::number(c.params.errorRatio, 3) + " (" + c.ratioSource +
-                      ")";
+                      " (" + c.lengthSource + "), T " + m.durationText(c.params.timeScale) + " (" + c.timeSource +
+                      "), ratio " + text::number(c.params.errorRatio, 3) + " (" + c.ratioSource + ")";
     if (c.learnedFrom > 0)
         out += "; ln likelihood +" + text::number(c.likelihoodGain, 4) + " over the priors";
     if (c.mean.active())
@@ -351,10 +300,9 @@ std::string correctionNote(const MissionProblem &problem)
     return out;
 }
 #else
-void MissionProblem::applyObservations(const GliderObservations *)
+void MissionProblem::applyObservations(const GliderObservations &)
 {
-    if (spec_.observations && spec_.observations->hasFiles())
-        throw Error(spec_.place("observations") + ": this build reads no glider files (it has no NetCDF)");
+    throw Error(spec_.place("observations") + ": this build reads no glider files (it has no NetCDF)");
 }
 #endif
 } // namespace ompl_glider
