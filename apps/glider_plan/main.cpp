@@ -160,11 +160,11 @@ int run(const Flags &f)
         options.progress = printProgress;
     const MissionResult result = runMission(problem, options);
     if (taskRank() != 0) // an MPI job's other ranks: rank 0 reports and writes
-        return result.plan.solved || result.plan.badInput.empty() ? (result.plan.solved ? 0 : kNoPath) : kBadInput;
-    if (!result.plan.solved && !result.plan.badInput.empty())
+        return result.plan.solved || !result.plan.badInput.any() ? (result.plan.solved ? 0 : kNoPath) : kBadInput;
+    if (!result.plan.solved && result.plan.badInput.any())
     {
-        std::cerr << "glider_plan: " << problem.getSpec().place(result.plan.badInput) << ": " << result.plan.reason
-                  << "\n";
+        std::cerr << "glider_plan: " << problem.getSpec().place(result.plan.badInput.field()) << ": "
+                  << result.plan.reason << "\n";
         return kBadInput; // bad input: nothing is written
     }
     printReport(std::cout, result, &problem);

@@ -366,8 +366,8 @@ std::shared_ptr<PyResult> run(const MissionSpec &spec, const py::object &progres
     if (raised)
         throw *raised;
     const PlannedPath &p = out->result.plan;
-    if (!p.solved && !p.badInput.empty())
-        throw Error(out->problem->getSpec().place(p.badInput) + ": " + p.reason);
+    if (!p.solved && p.badInput.any())
+        throw Error(out->problem->getSpec().place(p.badInput.field()) + ": " + p.reason);
     return out;
 }
 

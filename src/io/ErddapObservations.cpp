@@ -155,7 +155,7 @@ std::string serverWords(const std::string &body)
 std::string fetch(const std::string &url, const std::string &source)
 {
     const std::size_t record = remote_detail::newFetchRecord(source);
-    remote_detail::updateFetchRecord(record, [](RemoteFetch &f) { f.kind = "ERDDAP"; });
+    remote_detail::updateFetchRecord(record, [](RemoteFetch &f) { f.kind = RemoteKind::Erddap; });
     const std::string who = "ERDDAP '" + source + "'";
     std::string body;
     gridded_detail::HttpFailure failure;

@@ -91,7 +91,7 @@ ZarrMirror::ZarrMirror(const std::string &url) : url_(url)
     const std::string source = withoutCredentials(url_);
     const std::string name = remote_detail::cacheName(source, ".zarr");
     record_ = remote_detail::newFetchRecord(source);
-    remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.kind = datasetKindName(DatasetKind::ZarrStore); });
+    remote_detail::updateFetchRecord(record_, [](RemoteFetch &f) { f.kind = RemoteKind::ZarrStore; });
     const RemoteAccess access = remoteAccess();
     if (!access.cacheDir.empty())
     {
@@ -406,7 +406,9 @@ FileMirror::FileMirror(const std::string &url, const std::string &extension, Dat
     const std::string source = withoutCredentials(url);
     const std::string who = datasetWho(kind, source);
     const std::size_t record = remote_detail::newFetchRecord(source);
-    remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) { f.kind = datasetKindName(kind); });
+    remote_detail::updateFetchRecord(record, [&](RemoteFetch &f) {
+        f.kind = kind == DatasetKind::ZarrStore ? RemoteKind::ZarrStore : RemoteKind::GribFile;
+    });
     const RemoteAccess access = remoteAccess();
     const std::string name = remote_detail::cacheName(source, extension);
     if (!access.cacheDir.empty())

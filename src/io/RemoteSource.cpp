@@ -54,7 +54,7 @@ namespace remote_detail
 std::size_t newFetchRecord(const std::string &source)
 {
     std::lock_guard<std::mutex> lock(recordMutex());
-    record().push_back(RemoteFetch{source, "", 0, 0, 0, false, "", "", "OPeNDAP"});
+    record().push_back(RemoteFetch{source, "", 0, 0, 0, false, "", "", RemoteKind::Opendap});
     return record().size() - 1;
 }
 
@@ -187,6 +187,22 @@ std::shared_ptr<const std::string> memoryDataset(const std::string &name)
     return it == memoryDatasets().end() ? nullptr : it->second;
 }
 } // namespace remote_detail
+
+const char *remoteKindName(RemoteKind kind)
+{
+    switch (kind)
+    {
+    case RemoteKind::Opendap:
+        return "OPeNDAP";
+    case RemoteKind::ZarrStore:
+        return "Zarr store";
+    case RemoteKind::GribFile:
+        return "GRIB file";
+    case RemoteKind::Erddap:
+        return "ERDDAP";
+    }
+    return "?";
+}
 
 std::vector<RemoteFetch> remoteFetches()
 {

@@ -29,7 +29,7 @@ json forecastSourcesJson(const MissionProblem &problem)
     json out = json::array();
     for (const RemoteFetch &f : problem.remoteSources())
         out.push_back({{"source", f.source},
-                       {"kind", f.kind},
+                       {"kind", remoteKindName(f.kind)},
                        {"cache_file", f.cacheFile},
                        {"bytes_fetched", f.bytesFetched},
                        {"bytes_from_cache", f.bytesFromCache},

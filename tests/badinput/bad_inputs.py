@@ -1147,7 +1147,7 @@ def store_case(name, files, phrase, store="s.zarr"):
 
 
 case("zarr-store-plans", ["--currents", "s.zarr", START, GOAL, "--beyond", "hold", "--out", "o2"], 0,
-     "current netcdf (Zarr store)", zarr_store("s.zarr"))  # (the store of the rows below, whole: it plans)
+     "current gridded (Zarr store)", zarr_store("s.zarr"))  # (the store of the rows below, whole: it plans)
 store_case("zarr-codec-unknown", zarr_store("s.zarr", u_compressor={"id": "foo"}),
            "Zarr store 's.zarr': no eastward (u) velocity among the arrays that can be read, and array 'u' cannot be "
            "opened: Decompressor foo not handled")

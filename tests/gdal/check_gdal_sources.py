@@ -369,7 +369,7 @@ def main():
                 check(read(os.path.join(out, "waypoints.csv")) == read(os.path.join(work, "o_nc", "waypoints.csv")),
                       "%s store: the same waypoints.csv" % name)
                 # named as what it is, in the report and summary.json
-                check("current netcdf (Zarr store)" in p.stdout, "%s store: the report says Zarr store" % name)
+                check("current gridded (Zarr store)" in p.stdout, "%s store: the report says Zarr store" % name)
                 check(json.load(open(os.path.join(out, "summary.json")))["current_source"] == "Zarr store",
                       "%s store: summary.json current_source" % name)
 
@@ -515,7 +515,7 @@ def main():
             if p.returncode == 0 and p_gnc.returncode == 0:
                 t, tg = travel_time(out), travel_time(os.path.join(work, "o_gnc"))
                 check(abs(t - tg) <= 1e-12 * tg, "GRIB2 %s: the NetCDF file's travel time (%r, %r)" % (label, t, tg))
-                check("current netcdf (GRIB file)" in p.stdout, "GRIB2 %s: the report says GRIB file" % label)
+                check("current gridded (GRIB file)" in p.stdout, "GRIB2 %s: the report says GRIB file" % label)
                 check(json.load(open(os.path.join(out, "summary.json")))["current_source"] == "GRIB file",
                       "GRIB2 %s: summary.json current_source" % label)
         # 5b. a GRIB2 file cut short: inside a message (GDAL reads none), at a message's end (VOGRD lost)

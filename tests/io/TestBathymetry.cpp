@@ -132,10 +132,9 @@ TEST(NetCdfBathymetry, LimitsTheDivesOfAMission)
                             "start: {x: 0, y: 0}\ngoal: {x: 1, y: 0}\n"
                             "dive_profile: {z_min: 0, z_max: 100, bathymetry: {type: netcdf, file: " +
                             path + ", variable: nope}}\n";
-    const MissionProblem p2(parseMission(bad, "bad.yaml"));
-    try
+    try // the bathymetry is read with the mission's other inputs, once, when the problem is made
     {
-        p2.diveProfiles(0.5);
+        const MissionProblem p2(parseMission(bad, "bad.yaml"));
         FAIL();
     }
     catch (const Error &e)

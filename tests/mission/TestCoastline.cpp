@@ -265,7 +265,7 @@ TEST(Coastline, RouteGoesAroundJamaicaAndAStartOnItIsBadInput)
     const MissionProblem p2(onLand);
     const PlannedPath pp = planRoute(p2, p2.getSpec().departure.time);
     EXPECT_FALSE(pp.solved);
-    EXPECT_EQ(pp.badInput, "start");
+    EXPECT_EQ(pp.badInput.field(), "start");
 }
 
 namespace

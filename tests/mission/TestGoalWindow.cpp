@@ -174,7 +174,7 @@ TEST(GoalWindow, WindowThatCannotBeMet)
     EXPECT_FALSE(r.plan.solved);
     EXPECT_EQ(r.plan.status, PlanStatus::NoPath);
     EXPECT_NE(r.plan.reason.find("after the end of the goal's arrival window"), std::string::npos) << r.plan.reason;
-    EXPECT_TRUE(r.plan.badInput.empty());
+    EXPECT_FALSE(r.plan.badInput.any());
     EXPECT_TRUE(r.waypoints.empty());
 }
 

@@ -109,7 +109,7 @@ TEST(GriddedKind, MissionFilesSpellingEitherNamePlanTheSameRoute)
 
 TEST(GriddedKind, ForecastInputNamingEitherNamePlansTheSameRoute)
 {
-    // the command line's --currents (no kind named: recorded as it always was, netcdf) and a caller naming the kind
+    // the command line's --currents (no kind named: recorded by the gridded reader's name) and a caller naming the kind
     ForecastInput in;
     in.current.file = kGriddedKindExamples + "labrador_forecast.nc";
     in.start = {-52.7, 47.9};
@@ -121,7 +121,7 @@ TEST(GriddedKind, ForecastInputNamingEitherNamePlansTheSameRoute)
     const MissionSpec named = forecastMission(in);
     in.current.type = "netcdf";
     const MissionSpec alias = forecastMission(in);
-    EXPECT_EQ(cli.current.type, "netcdf");
+    EXPECT_EQ(cli.current.type, "gridded");
     EXPECT_EQ(named.current.type, "gridded");
     EXPECT_EQ(alias.current.type, "netcdf");
     const MissionResult r = runMission(MissionProblem(cli));

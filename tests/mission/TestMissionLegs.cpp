@@ -236,7 +236,7 @@ TEST(MissionLegs, StayInACurrentFasterThanTheGliderIsRefused)
     EXPECT_EQ(r.plan.status, PlanStatus::NoPath);
     EXPECT_NE(r.plan.reason.find("leg 1, start to M"), std::string::npos) << r.plan.reason;
     EXPECT_NE(r.plan.reason.find("cannot hold position"), std::string::npos) << r.plan.reason;
-    EXPECT_TRUE(r.plan.badInput.empty());
+    EXPECT_FALSE(r.plan.badInput.any());
     EXPECT_TRUE(r.waypoints.empty()); // never a partial plan presented as whole
     // without the stay the same mission plans
     m.waypoints[0].stay = 0.0;

@@ -109,7 +109,7 @@ s = json.load(open(os.path.join(d, "summary.json")))
 for k in ["travel_time", "path_length", "waypoints", "cost_function_calls", "current_model_calls", "wall_time_s",
           "solved", "departure", "speed", "current"]:
     assert k in s, "summary.json lacks key " + k
-assert s["solved"] is True and s["current"] == "netcdf"
+assert s["solved"] is True and s["current"] == "gridded"
 assert s["departure"]["time"] == 21600, s["departure"]              # 6 h after the first forecast time
 assert s["departure"]["iso"] == "2026-03-15T06:00:00Z", s["departure"]
 assert s["speed"] == 0.3

@@ -55,6 +55,22 @@ std::string withoutCredentials(const std::string &source);
 /// of a Zarr store), not a file path.
 bool isRemoteSource(const std::string &source);
 
+/// @brief What a remote source is.
+enum class RemoteKind
+{
+    /// a DAP dataset; values in RemoteFetch::bytesFetched/bytesFromCache
+    Opendap,
+    /// a Zarr store over HTTP; its chunks' bytes as stored, compressed, in bytesFetched/bytesFromCache; its cache a
+    /// folder, a copy of the store's consolidated metadata and of the chunks fetched
+    ZarrStore,
+    GribFile, ///< a GRIB file, fetched whole
+    /// a glider's observations (readGliderObservations()): the answer's bytes in bytesFetched; never cached
+    Erddap
+};
+
+/// @brief "OPeNDAP", "Zarr store", "GRIB file", "ERDDAP": how the report and summary.json name @p kind.
+const char *remoteKindName(RemoteKind kind);
+
 /// @brief What was read from one remote source in this process.
 struct RemoteFetch
 {
@@ -68,11 +84,7 @@ struct RemoteFetch
     /// Why a file found at the cache file's place was not used (it names another source, or none): the forecast was
     /// fetched anew and the file replaced; empty otherwise
     std::string cacheIgnored;
-    /// What the source is: "OPeNDAP" (a DAP dataset; values in bytesFetched/bytesFromCache), or "Zarr store" (a
-    /// Zarr store over HTTP; its chunks' bytes as stored, compressed, in bytesFetched/bytesFromCache; its cache a
-    /// folder, a copy of the store's consolidated metadata and of the chunks fetched), "GRIB file" (fetched whole), or
-    /// "ERDDAP" (a glider's observations, readGliderObservations(): the answer's bytes in bytesFetched; never cached)
-    std::string kind{"OPeNDAP"};
+    RemoteKind kind{RemoteKind::Opendap}; ///< what the source is (its name: remoteKindName())
 };
 
 /// @brief Every remote source read in this process so far, in the order first read.

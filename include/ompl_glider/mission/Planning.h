@@ -149,6 +149,27 @@ enum class ReflightFallback : std::uint8_t
     Reaimed       ///< a heading route's last segment re-aimed to end on the goal when flown accurately
 };
 
+/// @brief The input at fault when a problem itself is bad (PlannedPath::badInput).
+struct BadInput
+{
+    enum class Input
+    {
+        None,
+        Start,
+        Goal,
+        ViaPoint, ///< waypoints[via]
+        DepartureTime
+    };
+    Input input{Input::None};
+    std::size_t via{0}; ///< the via point's index (Input::ViaPoint)
+
+    /// @brief True when some input is at fault.
+    bool any() const { return input != Input::None; }
+    /// @brief Its dotted field name for MissionSpec::place(): "start", "goal", "waypoints[2]", "departure.time"; ""
+    /// for none.
+    std::string field() const;
+};
+
 /// @brief One planned path: what planRoute() returns.
 struct PlannedPath
 {
@@ -160,10 +181,9 @@ struct PlannedPath
     std::string reason; ///< why there is no path, in words (empty when solved): noPath.text()
     /// Why there is no path, typed: its cause (what code branches on), figures and the parts of reason
     NoPath noPath;
-    /// The input at fault when the problem itself is bad (start, goal, departure): its dotted field name
-    /// ("start", "goal", "departure.time", for MissionSpec::place()); empty when there is a path or the problem is
-    /// well-formed and has none.
-    std::string badInput;
+    /// The input at fault when the problem itself is bad (start, goal, a via point, departure); none when there is a
+    /// path or the problem is well-formed and has none
+    BadInput badInput;
     std::string planner;                                           ///< canonical planner name (PlannerRegistry.h)
     double departure{0.0};                                         ///< departure time (field units)
     double speed{0.0};                                             ///< vehicle speed used

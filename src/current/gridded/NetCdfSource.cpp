@@ -141,8 +141,8 @@ std::string remoteNote(const RemoteFetch &f)
                : b >= 1000  ? text::number(b / 1e3, 4) + " kB"
                             : std::to_string(b) + " B";
     };
-    const std::string of = f.kind == "OPeNDAP" ? " of values" : " of chunks";
-    std::string note = f.kind + " '" + f.source + "': ";
+    const std::string of = f.kind == RemoteKind::Opendap ? " of values" : " of chunks";
+    std::string note = remoteKindName(f.kind) + std::string(" '") + f.source + "': ";
     if (!f.opened)
         note += "read from the cache, no network (" + bytes(f.bytesFromCache) + of + ")";
     else
@@ -150,7 +150,7 @@ std::string remoteNote(const RemoteFetch &f)
                 (f.bytesFromCache > 0 ? ", " + bytes(f.bytesFromCache) + " from the cache" : "");
     if (!f.cacheFile.empty())
         note += f.cacheProblem.empty()
-                    ? (f.kind == "Zarr store" ? "; cache folder '" : "; cache file '") + f.cacheFile + "'"
+                    ? (f.kind == RemoteKind::ZarrStore ? "; cache folder '" : "; cache file '") + f.cacheFile + "'"
                     : "; the cache file could not be written: " + f.cacheProblem;
     if (!f.cacheIgnored.empty())
         note += " (" + f.cacheIgnored + ")";

@@ -68,7 +68,7 @@ Region planningBox(const ProblemInputs &in)
                 if (i != 0 && i != n && j != 0 && j != n)
                     continue;
                 const Point2 q = frame.toLocal({region.lonMin + (region.lonMax - region.lonMin) * i / double(n),
-                                          region.latMin + (region.latMax - region.latMin) * j / double(n)});
+                                                region.latMin + (region.latMax - region.latMin) * j / double(n)});
                 box.xMin = std::min(box.xMin, q.x);
                 box.xMax = std::max(box.xMax, q.x);
                 box.yMin = std::min(box.yMin, q.y);

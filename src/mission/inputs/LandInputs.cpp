@@ -95,7 +95,7 @@ void readCoastline(ProblemInputs &in)
                         ", lat " + text::number(count.latMin) + ".." + text::number(count.latMax) +
                         " (lon and lat swapped? another region?)");
         in.coastlineNote = std::to_string(land.size()) + " land polygons from " + std::to_string(used) + " of " +
-                         std::to_string(count.features) + " features of '" + m.forbidden.coastline + "'";
+                           std::to_string(count.features) + " features of '" + m.forbidden.coastline + "'";
         for (const std::string &r : repairs)
             in.coastlineNote += "; " + r;
     }

@@ -24,8 +24,8 @@ FleetRow rowOf(const MissionSpec &spec, const MissionProblem &problem, const Mis
     row.solved = r.plan.solved;
     row.status = r.plan.status;
     row.reason = r.plan.reason;
-    if (!r.plan.solved && !r.plan.badInput.empty())
-        row.badInput = spec.place(r.plan.badInput);
+    if (!r.plan.solved && r.plan.badInput.any())
+        row.badInput = spec.place(r.plan.badInput.field());
     row.departure = r.plan.departure;
     row.departureIso = problem.isoTime(row.departure);
     if (r.plan.solved)

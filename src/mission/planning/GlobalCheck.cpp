@@ -336,8 +336,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     const MissionSpec &m = problem.getSpec();
     // the check belongs to the post-processing: without refinement the planner's own path is what was asked for
     if (!o.globalCheck.value_or(m.planner.globalCheck) || !o.refinement.value_or(m.planner.refinement) ||
-        !o.planner.empty() || !r.badInput.empty() || !problem.getMembers().empty() ||
-        (r.stints && !r.stints->converted))
+        !o.planner.empty() || r.badInput.any() || !problem.getMembers().empty() || (r.stints && !r.stints->converted))
         return r;
     const PlannerEntry &asked = plannerEntry(r.switchedFrom.empty() ? r.planner : r.switchedFrom);
     if (!asked.lattice())

@@ -173,7 +173,7 @@ void reflyRoute(const MissionProblem &problem, const GliderContext &ctx, Planned
 
 PlannedPath switchToHeadings(const MissionProblem &problem, double departure, const PlanOptions &o, PlannedPath failed)
 {
-    if (failed.solved || !failed.badInput.empty() || !o.planner.empty() || !problem.getMembers().empty() ||
+    if (failed.solved || failed.badInput.any() || !o.planner.empty() || !problem.getMembers().empty() ||
         !o.headingFallback.value_or(true))
         return failed;
     const PlannerEntry &asked = plannerEntry(failed.planner);

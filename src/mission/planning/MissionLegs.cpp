@@ -69,15 +69,18 @@ std::string whyNoStay(const MissionProblem &problem, Point2 p, double t1, double
 
 /// A leg's bad input in the mission's terms: the leg's start or goal is a via point, its departure a time on the
 /// mission's clock (only the first leg's is the pilot's).
-std::string legBadInput(const std::string &badInput, int from, int to, std::size_t n, std::size_t leg)
+BadInput legBadInput(const BadInput &badInput, int from, int to, std::size_t n, std::size_t leg)
 {
-    if (badInput.empty())
-        return "";
-    if (badInput == "start")
-        return from < 0 ? "start" : "waypoints[" + std::to_string(from) + "]";
-    if (badInput == "goal")
-        return to >= static_cast<int>(n) ? "goal" : "waypoints[" + std::to_string(to) + "]";
-    return leg == 0 ? badInput : ""; // a later leg's departure after the forecast: no path, not bad input
+    const auto via = [](int k) { return BadInput{BadInput::Input::ViaPoint, static_cast<std::size_t>(k)}; };
+    switch (badInput.input)
+    {
+    case BadInput::Input::Start:
+        return from < 0 ? badInput : via(from);
+    case BadInput::Input::Goal:
+        return to >= static_cast<int>(n) ? badInput : via(to);
+    default: // a later leg's departure after the forecast: no path, not bad input
+        return leg == 0 ? badInput : BadInput{};
+    }
 }
 
 /// Appends @p add to @p to, leaving out a first point at the time of the last one there and within @p gap of it (a
@@ -120,7 +123,7 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
         NoPath why = bad.plan.noPath;
         why.leg = bad.index + 1;
         why.what = leg + why.what;
-        if (bad.plan.badInput == "departure.time" && bad.index > 0)
+        if (bad.plan.badInput.input == BadInput::Input::DepartureTime && bad.index > 0)
             why.what =
                 leg + "it would depart at " + timeText(problem, bad.plan.departure) + ", after the end of the forecast";
         r.setNoPath(std::move(why));

@@ -197,7 +197,7 @@ void diagnoseNoPath(const MissionProblem &problem, double tDep, PlannedPath &r)
     // a search stopped by its time limit is not diagnosed: more time is the advice
     const NoPathCause cause = r.noPath.cause;
     // nor an ensemble's: its reason says that no member is reached, and comes first
-    if (r.solved || !r.badInput.empty() || cause == NoPathCause::TimeLimit || cause == NoPathCause::Approximate ||
+    if (r.solved || r.badInput.any() || cause == NoPathCause::TimeLimit || cause == NoPathCause::Approximate ||
         cause == NoPathCause::NotRobust)
         return;
     const MissionSpec &m = problem.getSpec();

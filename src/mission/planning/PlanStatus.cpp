@@ -41,4 +41,22 @@ PlanStatus planStatusOfOmpl(int omplStatus)
     return omplStatus >= 0 && omplStatus < ompl::base::PlannerStatus::TYPE_COUNT ? static_cast<PlanStatus>(omplStatus)
                                                                                  : PlanStatus::Unknown;
 }
+
+std::string BadInput::field() const
+{
+    switch (input)
+    {
+    case Input::None:
+        return "";
+    case Input::Start:
+        return "start";
+    case Input::Goal:
+        return "goal";
+    case Input::ViaPoint:
+        return "waypoints[" + std::to_string(via) + "]";
+    case Input::DepartureTime:
+        return "departure.time";
+    }
+    return "";
+}
 } // namespace ompl_glider

@@ -178,7 +178,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     {
         r.status = PlanStatus::InvalidStart;
         r.setNoPath({NoPathCause::BadInput, "departure after the end of the forecast"});
-        r.badInput = "departure.time";
+        r.badInput = {BadInput::Input::DepartureTime};
         return r;
     }
     // a start or goal that land's keep-off band, shallow water or another static region forbids: refused in the
@@ -194,8 +194,8 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
             char where[96];
             std::snprintf(where, sizeof where, " (lon %.5f, lat %.5f)", p.lon, p.lat);
             r.status = start ? PlanStatus::InvalidStart : PlanStatus::InvalidGoal;
-            r.badInput = start ? "start" : "goal";
-            r.setNoPath({NoPathCause::BadInput, "the " + r.badInput + where + " is " + why});
+            r.badInput = {start ? BadInput::Input::Start : BadInput::Input::Goal};
+            r.setNoPath({NoPathCause::BadInput, "the " + r.badInput.field() + where + " is " + why});
             return r;
         }
     std::shared_ptr<GliderContext> ctx;
@@ -256,7 +256,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
         if (status == ompl::base::PlannerStatus::INVALID_START || status == ompl::base::PlannerStatus::INVALID_GOAL)
         {
             const bool start = status == ompl::base::PlannerStatus::INVALID_START;
-            r.badInput = start ? "start" : "goal";
+            r.badInput = {start ? BadInput::Input::Start : BadInput::Input::Goal};
             why.cause = NoPathCause::BadInput;
             if (problem.isGeographic())
             {
@@ -264,7 +264,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
                 const LonLat p = problem.toGeographic(start ? s : g);
                 char where[96];
                 std::snprintf(where, sizeof where, " (lon %.5f, lat %.5f)", p.lon, p.lat);
-                why.what += std::string("; the ") + r.badInput + where;
+                why.what += std::string("; the ") + r.badInput.field() + where;
             }
         }
         if (why.cause == NoPathCause::LatticeExhausted)

@@ -131,10 +131,10 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
     m.directory = ".";
     m.name = fs::path(withoutCredentials(files.front())).stem().string();
     m.current = q.current;
-    // the source the caller names (a registered gridded kind), else NetCDF's
+    // the source the caller names (a registered gridded kind), else the gridded reader's (by its canonical name)
     const CurrentFieldKind *kind = findCurrentFieldKind(q.current.type);
     if (!kind || !kind->gridded())
-        m.current.type = "netcdf";
+        m.current.type = "gridded";
     m.current.file = files.front();
     m.current.files = files.size() > 1 ? files : std::vector<std::string>{};
     m.current.mark = SourceMark{file, 0};
