@@ -29,7 +29,7 @@ Rules:
              (include/ompl_glider/mission/) are one folder for all of mission/ and are left to the layers rule.
   folders    the folders the rules name (the constants MISSION_SRC, PROBLEM, INPUTS, PLANNING, SETTINGS, ...) exist
              in the real tree (one that has src/mission/sources.cmake): renaming a folder is one line here. No rule
-             takes a folder for tests by its name (spec/ is the mission's settings, not a test folder).
+             takes a folder for tests by its name (settings/ is the mission's settings, not a test folder).
   paths      every file or folder that a comment (C++ // and /* */, # of Python, shell and CMake, a Python
              docstring) in src/, include/, apps/, python/src, tests/ or scripts/, or a doc (README.md, docs/*.md,
              examples/*.md, read whole) names exists in the tree (build folders and .git left out). A name is
@@ -65,7 +65,7 @@ MISSION_INCLUDE = "include/ompl_glider/mission"
 PROBLEM = MISSION_SRC + "/problem"      # MissionProblem as a value
 INPUTS = MISSION_SRC + "/inputs"        # what the problem reads
 PLANNING = MISSION_SRC + "/planning"    # the pipeline
-SETTINGS = MISSION_SRC + "/spec"        # what the front ends give (to be renamed settings)
+SETTINGS = MISSION_SRC + "/settings"    # what the front ends give
 # the mission layer names no planner: the layers whose headers it may not include, though they lie below it
 MISSION = [MISSION_SRC, MISSION_INCLUDE]
 PLANNER_LAYERS = ["planners", "reachability", "stints"]

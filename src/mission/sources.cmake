@@ -1,7 +1,7 @@
 # mission/: a mission as the pilot describes it, the problem it makes, the one planning pipeline and the plan flown.
-# One folder a concept (docs/ARCHITECTURE.md, "mission/ by concept"):
+# One folder a concept (docs/ARCHITECTURE.md, the mission/ row of the layers):
 #   loader/     mission files: the YAML reader and one file a section
-#   spec/       what the front ends give: overrides, the settings' declared ranges, forecast missions, output names
+#   settings/       what the front ends give: overrides, the settings' declared ranges, forecast missions, output names
 #   inputs/     what a mission reads, once (ProblemInputs): resuming at the last fix, the forecast, its members and
 #               truth, the planning frame, the glider's observations, the coastline and the bathymetry
 #   problem/    MissionProblem, built from the inputs and reading nothing: endpoints, the correction by the DAC,
@@ -25,11 +25,11 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/loader/Outputs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Execution.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Fleet.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/spec/Overrides.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/spec/SettingRanges.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/spec/OutputFormats.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/spec/InputDigest.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/spec/MissionSpecText.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/settings/Overrides.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/settings/SettingRanges.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/settings/OutputFormats.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/settings/InputDigest.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/settings/MissionSpecText.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/ProblemInputs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/ForecastRequest.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/ProblemField.cpp
@@ -69,6 +69,6 @@ list(APPEND OMPL_GLIDER_SOURCES
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
-    ${CMAKE_CURRENT_LIST_DIR}/spec/ForecastMission.cpp  # a mission from a forecast and a handful of inputs
+    ${CMAKE_CURRENT_LIST_DIR}/settings/ForecastMission.cpp  # a mission from a forecast and a handful of inputs
   )
 endif()

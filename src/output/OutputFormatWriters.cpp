@@ -1,7 +1,7 @@
 /// @file OutputFormatWriters.cpp
-/// @brief The writers' table: each output format's files (summary.json, the route files, the goto list, the map,
-/// the execution's files). Adding a format: its row in outputFormats() (src/mission/OutputFormats.cpp) and its
-/// writer here.
+/// @brief The writers' table: each output format's files (summary.json, the route files, the goto list and the
+/// Seaglider targets, stints, the map, the execution's files, the reachability files). Adding a format: its row in
+/// outputFormats() (src/mission/settings/OutputFormats.cpp) and its writer here.
 #include "ompl_glider/output/OutputFormatWriters.h"
 
 #include <functional>

@@ -156,7 +156,7 @@ expect(code == 1 and "src/mission/Advice.cpp:3: '--time-limit'" in out and "Advi
        "Advice.cpp:6" not in out and "include/ompl_glider/mission/Words.h:1: '--depth'" in out,
        "a command-line flag in a string of the library must fail (not in a comment, not inside a word)", out)
 
-settings = rules.SETTINGS  # the mission's settings (spec/ today): a folder of code, not of tests
+settings = rules.SETTINGS  # the mission's settings (settings/): a folder of code, not of tests
 separate = dict(good)
 separate[rules.PROBLEM + "/Endpoints.cpp"] = ('#include "ProblemParts.h"\n'
                                               '#include "../planning/PlanningInternal.h"\n'
@@ -224,7 +224,7 @@ literals["apps/tool/Mode.cpp"] = 'bool m(const char *s) { return std::string(s) 
 code, out = run(tree(literals))
 expect(code == 1 and f"{limit + 1} lines compare with a string literal" in out and
        f"{settings}/Kinds.cpp: {limit}" in out and "apps/tool/Mode.cpp: 1" in out,
-       f"{limit + 1} lines comparing with a string literal must fail, naming the files (spec/ counts too)", out)
+       f"{limit + 1} lines comparing with a string literal must fail, naming the files (settings/ counts too)", out)
 
 for f in failures:
     print("FAILED: " + f)

@@ -35,9 +35,9 @@ struct ForecastInput
     /// ISO 8601 date or seconds after the first forecast time; empty: the first forecast time. A steady field takes
     /// any departure; for a steady file without dates, a date is the date of field time 0 (the outputs' ISO times).
     std::string departure;
-    /// Start at the glider's last fix instead of `start`: the last fix of `observations` (lastFixOf(); its time is
-    /// the departure too where none is given), named in messages "the last fix of <observations' word>", marked as
-    /// the observations' first guess until the mission resumes there (resumeAtLastFix())
+    /// Start at the glider's last fix instead of `start`: the last fix of `observations` (readObservationsAt(); its
+    /// time is the departure too where none is given), named in messages "the last fix of <observations' word>", marked
+    /// as the observations' first guess until the mission resumes there (resumeAtLastFix())
     bool startAtLastFix{false};
     std::string observations;      ///< the glider's observations (MissionSpec::observations' path) for startAtLastFix
     std::string observationsCache; ///< the folder of a Slocum's cache files (ObservationsSpec::cache), or empty

@@ -102,11 +102,12 @@ const char *ensembleObjectiveName(EnsembleObjective o);
 EnsembleObjective parseEnsembleObjective(const std::string &name);
 
 /// @brief Source of the current: an analytic flow, or a forecast read by a gridded source of the registry (NetCDF,
-/// OPeNDAP, Zarr, GRIB: `netcdf`; ForecastSource.h), asked through a ForecastRequest (forecastRequest()).
+/// OPeNDAP, Zarr, GRIB: `gridded`, alias `netcdf`; ForecastSource.h), asked through a ForecastRequest
+/// (forecastRequest(), ProblemInputs.h).
 struct CurrentSpec
 {
-    /// The registry's name of the kind (currentFieldKinds(): meandering_jet, uniform, linear_shear, double_gyre,
-    /// netcdf); the registry says whether it is read from a file (CurrentFieldKind::gridded).
+    /// The registry's name of the kind, or an alias of it (currentFieldKinds(), currentFieldKindList()); the
+    /// registry says whether it is read from a file (CurrentFieldKind::gridded).
     std::string type{"meandering_jet"};
     /// @brief True for a kind read from files by a gridded source (planning in metres and seconds, positions in
     /// lon/lat); false for an analytic flow or an unknown name (refused by the loader and MissionProblem).
@@ -115,8 +116,8 @@ struct CurrentSpec
         const CurrentFieldKind *kind = findCurrentFieldKind(type);
         return kind && kind->gridded();
     }
-    /// Analytic parameters (names per type: meandering_jet B0 epsilon omega theta k c; uniform u v;
-    /// linear_shear a; double_gyre amplitude length). Missing ones take the class defaults.
+    /// Analytic parameters, by the names the kind declares (CurrentFieldKind::parameters, parameterNameList()).
+    /// Missing ones take the kind's defaults.
     std::map<std::string, double> parameters;
     /// gridded: path or URL (relative paths resolved against the mission); with several files, the first given
     /// (for names and messages)
@@ -348,8 +349,9 @@ constexpr double kMaxTimeLimit = 1e6;
 /// @brief The planner and its parameters.
 struct PlannerSpec
 {
-    /// A name of the planner registry (PlannerRegistry.h; any accepted spelling is stored as the canonical name):
-    /// TVE, A*TVE, ZTVE, ZA*TVE (lattice search) or an OMPL planner on the time-augmented space (RRTstar, PRM, ...).
+    /// A name of the planner registry (PlannerRegistry.h, plannerNameList(); any accepted spelling is stored as the
+    /// canonical name): a lattice search, the level set, held headings, a stint planner or an OMPL planner on the
+    /// time-augmented space, each of a PlannerFamily.
     std::string name{"ZA*TVE"};
     /// Lattice spacing; 0 = automatic: for the analytic flows 0.4 ([EichhornRAS] Sec. 6.1) within 1/200..1/25 of
     /// the start-goal distance (defaultAnalyticGridSize()), for a forecast half
@@ -358,7 +360,8 @@ struct PlannerSpec
     int sectors{3};        ///< n-sector connectivity (1..5)
     bool smoothing{true};  ///< [EichhornRAS] Table 3
     bool refinement{true}; ///< waypoint refinement after smoothing
-    /// Seconds; 0 = no limit for the lattice planners, 10 s for the sampling planners (which use all they get).
+    /// Seconds; 0 = no limit for the planners that run to their own end (every family but sampling), 10 s for the
+    /// sampling planners (which use all they get).
     double timeLimit{0.0};
     double horizon{0.0};        ///< planning time window length; 0 = automatic
     double goalTolerance{-1.0}; ///< < 0: automatic (1e-6 of the box size)
@@ -370,8 +373,9 @@ struct PlannerSpec
     /// worst (their maximum) or quantile (the `quantile` quantile).
     EnsembleObjective objective{EnsembleObjective::Expected};
     double quantile{0.9}; ///< objective quantile: in (0, 1]
-    /// The global check of the route class after a lattice planner (GlobalCheck, Planning.h): extremals shot from the
-    /// start, a faster route of another class taken instead of the planner's
+    /// The global check of the route class after a lattice planner (checkGlobally(), src/mission/planning/
+    /// GlobalCheck.cpp; the result's GlobalCheck in Planning.h): extremals shot from the start, a faster route of
+    /// another class taken instead of the planner's
     bool globalCheck{true};
 };
 

@@ -1,9 +1,9 @@
 #pragma once
 /// @file PlannerRegistry.h
-/// @brief The planners known by name: one list used by the command line, mission files, the Benchmark campaign
-/// and the documentation. Adding a planner is its class (an ompl::base::Planner that implements PipelinePlanner,
-/// ompl/PipelinePlanner.h, for what the pipeline asks of it), one entry here or a registerPlanner() call, and its
-/// tests: nothing in mission/ names a planner (see docs/ARCHITECTURE.md).
+/// @brief The planners known by name: one list used by the command line, mission files, Python, the Benchmark
+/// campaign and the documentation. Adding a planner is its class (an ompl::base::Planner that implements
+/// PipelinePlanner, ompl/PipelinePlanner.h, for what the pipeline asks of it), one entry here or a registerPlanner()
+/// call, and its tests: nothing in mission/ names a planner (see docs/ARCHITECTURE.md).
 
 #include <deque>
 #include <functional>
@@ -51,10 +51,10 @@ struct PlannerEntry
         make;
 };
 
-/// @brief Every registered planner, in the order of the documentation: the ZAStarTVE configurations TVE, A*TVE,
-/// ZTVE, ZA*TVE ([EichhornRAS] Sec. 2.2), the Wavefront ([ThompsonICRA] Sec. III), then OMPL's geometric planners on
-/// the time-augmented space, then the constant-bearing stint planners init_optim, optim, cts_astar, direct
-/// ([IsernObstacles]).
+/// @brief Every registered planner, in the order of the documentation (plannerNameList() gives the names): the
+/// lattice searches (the ZAStarTVE configurations, [EichhornRAS] Sec. 2.2), the level set ([LollaLevelSet]), held
+/// headings, the Wavefront ([ThompsonICRA] Sec. III), OMPL's geometric planners on the time-augmented space, then
+/// the constant-bearing stint planners ([IsernObstacles]); then those registerPlanner() added.
 const std::deque<PlannerEntry> &plannerRegistry();
 
 /// @brief Adds @p entry to the registry, so that mission files, the command line, Python and the Benchmark campaign

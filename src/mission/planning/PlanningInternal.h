@@ -2,19 +2,8 @@
 /// @file PlanningInternal.h
 /// @brief Internal pieces of the planning pipeline (planRoute(), runMission(), Planning.h); not installed.
 ///
-/// The pipeline is split by concern, one source file each (all in src/mission/):
-///  - Planning.cpp       planRoute() and runMission(): one plan on a field (planOnField()), the departure, the checks
-///                       made before any search, departureFunction()
-///  - PlannerSetup.cpp   the planner of the mission (makePlanner()), its parameters, the checked problem of one
-///                       departure, stintSettings()
-///  - NoPathReason.cpp   why a search ended without a path (noPathReason(), boundArrival())
-///  - NoPathDiagnosis.cpp what blocks the route, for the pilot (diagnoseNoPath())
-///  - Ensembles.cpp      robust plans over the members of an ensemble (planRobust()), ensembleObjective(),
-///                       retimePath()
-///  - GoalWindow.cpp     goals in time: the arrival moved into the goal window (timeArrival()), holdTimeOf()
-///  - Evaluations.cpp    the evaluations of a plan: pilot waypoints, the optimal-control reference, the speed sweep
-///  - WorkEstimates.cpp  work estimates before the work: level set, Wavefront, stints, execution surfacings
-///  - GlobalCheck.cpp    the global check of the route class after a lattice planner (checkGlobally())
+/// The pipeline is split by concern, one source file each in src/mission/planning/; the declarations below are
+/// grouped under the name of the file that defines them.
 
 #include <chrono>
 #include <functional>
@@ -162,7 +151,7 @@ std::string timeText(const MissionProblem &problem, double t);
 /// Moves the arrival of a solved plan into the mission's goal window (see GoalWindow.cpp).
 void timeArrival(const MissionProblem &problem, PlannedPath &r);
 
-// Endpoints.cpp
+// Evaluations.cpp
 
 /// Adds @p from's search and post-processing work (CFC, CMC, expanded vertices, wall times) to @p to: the work of
 /// several plans reported as one (an ensemble's candidates, a mission's legs).
@@ -173,8 +162,10 @@ void addPlanningWork(PlannedPath &to, const PlannedPath &from);
 /// (...)"; empty otherwise.
 std::string frozenFieldNote(const MissionProblem &problem, const PlannedPath &plan);
 
-/// Contour @p lines of the planning frame in lon/lat (Isochrones.cpp): the isochrones' and the probability of
-/// reach's; empty where the problem is not geographic.
+// Isochrones.cpp
+
+/// Contour @p lines of the planning frame in lon/lat: the isochrones' and the probability of reach's; empty where
+/// the problem is not geographic.
 std::vector<std::vector<LonLat>> linesToGeographic(const MissionProblem &problem,
                                                    const std::vector<std::vector<Point2>> &lines);
 } // namespace planning_detail

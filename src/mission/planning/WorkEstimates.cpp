@@ -1,8 +1,8 @@
 /// @file WorkEstimates.cpp
 /// @brief Work estimates of the pipeline's own steps made before the work (PlanningInternal.h): a step whose cost a
 /// field controls is refused up front, naming the field or flag with the estimate and the limit, as each planner
-/// refuses its own (PipelinePlanner::prepare()). Execution: surfacings per flight and in all; isochrones: their
-/// count.
+/// refuses its own (PipelinePlanner::prepare(), reachWork()). Execution: surfacings per flight and in all (the
+/// isochrones' count is checked where they are made: Isochrones.cpp, ReachProbability.cpp).
 
 #include <algorithm>
 #include <cmath>
