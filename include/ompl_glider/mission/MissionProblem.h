@@ -26,6 +26,7 @@
 namespace ompl_glider
 {
 class ForbiddenRegions;
+class Polygon;
 struct ObservationReport;
 struct GliderObservations;
 class ForbiddenCells;
@@ -172,8 +173,12 @@ private:
     /// default for its length (defaultForecastGridSize(), defaultAnalyticGridSize()), never so fine that the
     /// planning box's lattice holds more than kAutomaticLatticeVertices.
     double automaticGridSize(Point2 a, Point2 b) const;
-    /// The forbidden regions and the coastline's land polygons @p coastline (Land.cpp).
+    /// The forbidden regions and the coastline's land polygons @p in read (Land.cpp).
     void buildRegions(const ProblemInputs &in);
+    /// A polygon as given, checked and placed in the planning frame, and kept for the maps (Land.cpp).
+    Polygon placedPolygon(const PolygonSpec &p, RegionKind kind);
+    /// The coastline's land polygons as read (ProblemInputs::coastline), added to @p regions (Land.cpp).
+    void addCoastline(ForbiddenRegions &regions, const ProblemInputs &in);
     /// A GeoJSON of forbidden regions none of whose polygons lies in or near the box (lon and lat swapped, another
     /// region) is refused (Safety.cpp).
     void checkGeoJsonNearBox() const;

@@ -329,21 +329,74 @@ PlannedPath headingsAlong(const MissionProblem &problem, const std::shared_ptr<c
         reflyRoute(problem, *ctx, c);
     return c;
 }
-} // namespace
 
-PlannedPath checkGlobally(const MissionProblem &problem, double departure, const PlanOptions &o, PlannedPath r)
+/// Whether the plan @p r is checked: after a lattice planner, with refinement, on one field, not after a proof that no
+/// route exists or a stop request.
+bool isChecked(const MissionProblem &problem, const PlanOptions &o, const PlannedPath &r)
 {
     const MissionSpec &m = problem.getSpec();
     // the check belongs to the post-processing: without refinement the planner's own path is what was asked for
     if (!o.globalCheck.value_or(m.planner.globalCheck) || !o.refinement.value_or(m.planner.refinement) ||
         !o.planner.empty() || r.badInput.any() || !problem.getMembers().empty() || (r.stints && !r.stints->converted))
-        return r;
+        return false;
     const PlannerEntry &asked = plannerEntry(r.switchedFrom.empty() ? r.planner : r.switchedFrom);
     if (!asked.lattice())
-        return r;
+        return false;
     // a front that never reaches the goal proves that no route exists: nothing to look for; nor where the lattice was
     // exhausted and no heading planner asked after it, nor after a stop request
-    if ((!r.solved && (r.noPath.cause == NoPathCause::LatticeExhausted || r.noPath.proven())) || stopRequested())
+    return !((!r.solved && (r.noPath.cause == NoPathCause::LatticeExhausted || r.noPath.proven())) || stopRequested());
+}
+
+/// What a candidate route inherits from the planner's outcome @p best: its speed, planner, straight line and the
+/// work of its search, smoothing and refinement (done whichever route wins; a mission's legs add them up).
+PlannedPath candidateBase(const PlannedPath &best, double departure)
+{
+    PlannedPath base;
+    base.departure = departure;
+    base.speed = best.speed;
+    base.planner = best.planner;
+    base.status = PlanStatus::ExactSolution;
+    base.straightLineTime = best.straightLineTime;
+    base.straightLineLength = best.straightLineLength;
+    base.planningSeconds = best.planningSeconds;
+    base.postprocessSeconds = best.postprocessSeconds;
+    base.postprocessCostFunctionCalls = best.postprocessCostFunctionCalls;
+    base.searchCostFunctionCalls = best.searchCostFunctionCalls;
+    base.expandedVertices = best.expandedVertices;
+    base.switchedFrom = best.switchedFrom;
+    base.switchReason = best.switchReason;
+    return base;
+}
+
+/// The check's figures once the candidates are in: the winner (the planner's own route when no other was faster),
+/// the gain over the planner's time @p planned; a route of another class is exact and, on a stint mission, converted
+/// to stints.
+void settleWinner(const MissionProblem &problem, GlobalCheck &check, PlannedPath &best, double planned)
+{
+    if (check.winner.empty() && best.solved)
+        check.winner = check.candidates.front().name;
+    if (best.solved && std::isfinite(planned))
+        check.gain = 1.0 - best.travelTime / planned;
+    else if (best.solved)
+        check.gain = 1.0;
+    if (best.solved && check.winner != check.candidates.front().name)
+    {
+        best.status = PlanStatus::ExactSolution;
+        best.reason.clear();
+        if (problem.getSpec().stints.set)
+        {
+            const auto tS = std::chrono::steady_clock::now();
+            best.stints = convertToStints(problem, best);
+            best.stints->seconds = secondsSince(tS);
+        }
+    }
+}
+} // namespace
+
+PlannedPath checkGlobally(const MissionProblem &problem, double departure, const PlanOptions &o, PlannedPath r)
+{
+    const MissionSpec &m = problem.getSpec();
+    if (!isChecked(problem, o, r))
         return r;
     const auto t0 = std::chrono::steady_clock::now();
     const GliderProblem gp = problem.gliderProblem(departure, r.speed);
@@ -388,21 +441,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     check.extremalTime = sol.found ? sol.travelTime : kInf;
     PlannedPath best = std::move(r);
     const double planned = best.solved ? best.travelTime : kInf;
-    PlannedPath base; // what a candidate route inherits from the planner's outcome
-    base.departure = departure;
-    base.speed = best.speed;
-    base.planner = best.planner;
-    base.status = PlanStatus::ExactSolution;
-    base.straightLineTime = best.straightLineTime;
-    base.straightLineLength = best.straightLineLength;
-    base.planningSeconds = best.planningSeconds;
-    // the planner's smoothing and refinement were done whichever route wins (a mission's legs add them up)
-    base.postprocessSeconds = best.postprocessSeconds;
-    base.postprocessCostFunctionCalls = best.postprocessCostFunctionCalls;
-    base.searchCostFunctionCalls = best.searchCostFunctionCalls;
-    base.expandedVertices = best.expandedVertices;
-    base.switchedFrom = best.switchedFrom;
-    base.switchReason = best.switchReason;
+    const PlannedPath base = candidateBase(best, departure);
     const auto consider = [&](PlannedPath c, const std::string &name) {
         if (window)
             timeArrival(problem, c);
@@ -449,23 +488,7 @@ PlannedPath checkGlobally(const MissionProblem &problem, double departure, const
     if (!sol.found && std::isfinite(check.levelSetTime) && !zp.stop() &&
         !(best.solved && best.travelTime <= check.levelSetTime * (1.0 + kLevelSetMargin)))
         consider(levelSetRoute(problem, departure, o, base), "level set");
-    if (check.winner.empty() && best.solved)
-        check.winner = check.candidates.front().name;
-    if (best.solved && std::isfinite(planned))
-        check.gain = 1.0 - best.travelTime / planned;
-    else if (best.solved)
-        check.gain = 1.0;
-    if (best.solved && check.winner != check.candidates.front().name)
-    {
-        best.status = PlanStatus::ExactSolution;
-        best.reason.clear();
-        if (m.stints.set)
-        {
-            const auto tS = std::chrono::steady_clock::now();
-            best.stints = convertToStints(problem, best);
-            best.stints->seconds = secondsSince(tS);
-        }
-    }
+    settleWinner(problem, check, best, planned);
     check.currentModelCalls = ctx->field->callCount() - cmc0;
     check.seconds = secondsSince(t0);
     best.globalCheck = std::move(check);

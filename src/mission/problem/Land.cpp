@@ -39,35 +39,71 @@ std::vector<Point2> MissionProblem::ring(const std::vector<std::pair<double, dou
     return out;
 }
 
+Polygon MissionProblem::placedPolygon(const PolygonSpec &p, RegionKind kind)
+{
+    // the polygon as given, checked: every polygon GEOS calls valid (a hole may touch its outer ring at a point)
+    auto given = [](const std::vector<std::pair<double, double>> &r) {
+        std::vector<Point2> out;
+        for (const auto &[a, b] : r)
+            out.push_back({a, b});
+        return out;
+    };
+    std::vector<std::vector<Point2>> holes;
+    for (const auto &h : p.holes)
+        holes.push_back(given(h));
+    const std::string fault = polygonFault(given(p.points), holes);
+    if (!fault.empty())
+        throw Error("an invalid polygon: " + fault + (p.geographic ? " (lon lat)" : " (x y as given)"));
+    holes.clear();
+    for (const auto &h : p.holes)
+        holes.push_back(ring(h, p.geographic, p.name));
+    std::vector<Point2> outer = ring(p.points, p.geographic, p.name);
+    polygons_.push_back({p.name, kind, outer, false, {}});
+    return Polygon(outer, holes, p.name, RingCheck::validated);
+}
+
+void MissionProblem::addCoastline(ForbiddenRegions &regions, const ProblemInputs &in)
+{
+    const MissionSpec &m = spec_;
+    const SourceMark &mk = m.forbidden.coastlineMark;
+    const std::string at = mk.namesItself() ? mk.file + ": " : sourcePlace(m, mk);
+    const std::vector<LandPolygon> &land = in.coastline;
+    for (std::size_t k = 0; k < land.size(); ++k)
+    {
+        PolygonSpec p;
+        p.name = land[k].name;
+        p.geographic = true;
+        p.mark = m.forbidden.coastlineMark;
+        for (const LonLat &g : land[k].outer)
+            p.points.emplace_back(g.lon, g.lat);
+        for (const auto &h : land[k].holes)
+        {
+            p.holes.emplace_back();
+            for (const LonLat &g : h)
+                p.holes.back().emplace_back(g.lon, g.lat);
+        }
+        try
+        {
+            regions.add(std::make_shared<StaticRegion>(p.name, placedPolygon(p, RegionKind::Land),
+                                                       regionKindName(RegionKind::Land)));
+            polygons_.back().coastline = true;
+        }
+        catch (const Error &e)
+        {
+            // named by the coastline file and the feature
+            throw Error(at + "coastline file '" + m.forbidden.coastline + "', feature '" + p.name + "': " + e.what());
+        }
+    }
+}
+
 void MissionProblem::buildRegions(const ProblemInputs &in)
 {
     const MissionSpec &m = spec_;
-    // the polygon as given, checked: every polygon GEOS calls valid (a hole may touch its outer ring at a point)
-    auto shape = [&](const PolygonSpec &p, RegionKind kind) {
-        auto given = [](const std::vector<std::pair<double, double>> &r) {
-            std::vector<Point2> out;
-            for (const auto &[a, b] : r)
-                out.push_back({a, b});
-            return out;
-        };
-        std::vector<std::vector<Point2>> holes;
-        for (const auto &h : p.holes)
-            holes.push_back(given(h));
-        const std::string fault = polygonFault(given(p.points), holes);
-        if (!fault.empty())
-            throw Error("an invalid polygon: " + fault + (p.geographic ? " (lon lat)" : " (x y as given)"));
-        holes.clear();
-        for (const auto &h : p.holes)
-            holes.push_back(ring(h, p.geographic, p.name));
-        std::vector<Point2> outer = ring(p.points, p.geographic, p.name);
-        polygons_.push_back({p.name, kind, outer, false, {}});
-        return Polygon(outer, holes, p.name, RingCheck::validated);
-    };
     // a mission's polygon: its faults named by its place in the mission
     auto polygon = [&](const PolygonSpec &p, RegionKind kind) {
         try
         {
-            return shape(p, kind);
+            return placedPolygon(p, kind);
         }
         catch (const Error &e)
         {
@@ -79,39 +115,7 @@ void MissionProblem::buildRegions(const ProblemInputs &in)
         regions->add(
             std::make_shared<StaticRegion>(o.polygon.name, polygon(o.polygon, o.kind), regionKindName(o.kind)));
     if (!m.forbidden.coastline.empty())
-    {
-        // the coastline's land polygons that meet the box (with a margin of a tenth of its size)
-        const SourceMark &mk = m.forbidden.coastlineMark;
-        const std::string at = mk.namesItself() ? mk.file + ": " : sourcePlace(m, mk);
-        const std::vector<LandPolygon> &land = in.coastline;
-        for (std::size_t k = 0; k < land.size(); ++k)
-        {
-            PolygonSpec p;
-            p.name = land[k].name;
-            p.geographic = true;
-            p.mark = m.forbidden.coastlineMark;
-            for (const LonLat &g : land[k].outer)
-                p.points.emplace_back(g.lon, g.lat);
-            for (const auto &h : land[k].holes)
-            {
-                p.holes.emplace_back();
-                for (const LonLat &g : h)
-                    p.holes.back().emplace_back(g.lon, g.lat);
-            }
-            try
-            {
-                regions->add(std::make_shared<StaticRegion>(p.name, shape(p, RegionKind::Land),
-                                                            regionKindName(RegionKind::Land)));
-                polygons_.back().coastline = true;
-            }
-            catch (const Error &e)
-            {
-                // named by the coastline file and the feature
-                throw Error(at + "coastline file '" + m.forbidden.coastline + "', feature '" + p.name +
-                            "': " + e.what());
-            }
-        }
-    }
+        addCoastline(*regions, in); // the coastline's land polygons that meet the box (as read: ProblemInputs)
     for (const auto &t : m.forbidden.timeWindows)
     {
         std::vector<Interval> w;
