@@ -1,6 +1,6 @@
-// Fuzz target: the NetCDF forecast reader. Bytes -> a temporary file -> loadNetCdfCurrents() with the default options
+// Fuzz target: the NetCDF forecast reader. Bytes -> a temporary file -> loadGriddedCurrents() with the default options
 // and with a small region (about the centre of the grid when the file loads, else a fixed lon/lat box), then a few
-// queries (velocity, Jacobian, inWater, maxSpeed) at the centre of the loaded grid, and readNetCdfTimeAxis().
+// queries (velocity, Jacobian, inWater, maxSpeed) at the centre of the loaded grid, and readForecastTimeAxis().
 // ompl_glider::Error is the expected answer to a bad file; any other exception, a crash, a sanitizer report, a hang,
 // or a non-finite velocity at a point the field calls water is a finding.
 //
@@ -28,7 +28,7 @@
 #include "gridded/GriddedInternal.h"
 #include "FuzzUtil.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 namespace
 {
@@ -165,7 +165,7 @@ bool netCdfOpens(const std::string &path)
 
 /// Queries at the centre of the loaded grid (and at its first and middle time): none may crash; in water, the
 /// velocity must be finite.
-void probe(const NetCdfCurrents &nc)
+void probe(const GriddedCurrents &nc)
 {
     const GriddedCurrentField &field = *nc.field;
     const Region e = field.extent();
@@ -191,11 +191,11 @@ void probe(const NetCdfCurrents &nc)
 
 /// Loads with @p o and probes; Error is the expected failure. Returns the loaded forecast's centre in the file's
 /// coordinates (lon/lat, or x/y in Cartesian files) through @p a, @p b when it loaded.
-bool load(const NetCdfCurrentOptions &o, double &a, double &b)
+bool load(const GriddedCurrentOptions &o, double &a, double &b)
 {
     try
     {
-        const NetCdfCurrents nc = loadNetCdfCurrents(gFile, o);
+        const GriddedCurrents nc = loadGriddedCurrents(gFile, o);
         probe(nc);
         const Region e = nc.field->extent();
         const LonLat c = nc.toGeographic({0.5 * (e.xMin + e.xMax), 0.5 * (e.yMin + e.yMax)});
@@ -234,16 +234,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         ignored.emplace();
     try
     {
-        (void)readNetCdfTimeAxis(gFile);
+        (void)readForecastTimeAxis(gFile);
     }
     catch (const Error &)
     {
     }
     double a = 0.0, b = 0.0;
-    const bool geographic = load(NetCdfCurrentOptions{}, a, b);
+    const bool geographic = load(GriddedCurrentOptions{}, a, b);
     // A small region: 0.2 degrees about the centre of a geographic grid, 1 unit about a Cartesian one, or a fixed
     // lon/lat box when the whole file did not load (the subset code sees the file then).
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     const double half = std::isfinite(a) && std::isfinite(b) ? (geographic ? 0.1 : 0.5) : 0.0;
     if (half > 0.0)
     {

@@ -321,10 +321,10 @@ void defineExecutionFlags(CLI::App &app, Flags &f)
     app.add_option("--execution-seed", f.executionSeed, "seed of the random pairs (default 1)")->group(ex);
 }
 
-/// The flags of reading a NetCDF forecast (with --currents).
+/// The flags of reading a forecast (with --currents): NetCDF, OPeNDAP, Zarr, GRIB.
 void defineForecastFlags(CLI::App &app, Flags &f)
 {
-    auto *nc = "NetCDF forecast (with --currents)";
+    auto *nc = "Forecast files (with --currents)";
     ForecastInput &fc = f.forecast;
     for (const char *role : {"u", "v", "lon", "lat", "depth", "time"})
         app.add_option_function<std::string>(
@@ -464,7 +464,7 @@ void checkCombinations(const CLI::App &app, const Flags &f)
         {
             const std::string name = o->get_name();
             if (o->count() > 0 && name != "--region" &&
-                (name == "--currents" || o->get_group() == "NetCDF forecast (with --currents)"))
+                (name == "--currents" || o->get_group() == "Forecast files (with --currents)"))
                 throw UsageError{name + " cannot be combined with --mission: the mission file's current section "
                                         "names the forecast and how to read it (examples/MISSION_FORMAT.md)"};
         }
@@ -472,7 +472,7 @@ void checkCombinations(const CLI::App &app, const Flags &f)
     }
     if (f.currents.empty())
         for (const CLI::Option *o : app.get_options())
-            if (o->count() > 0 && o->get_group() == "NetCDF forecast (with --currents)")
+            if (o->count() > 0 && o->get_group() == "Forecast files (with --currents)")
                 throw UsageError{o->get_name() + " needs --currents FILE"};
     if (!f.currents.empty() && ((f.start.empty() && f.observations.empty()) || f.goal.empty()))
         throw UsageError{"--currents needs --start (or --observations: the last fix) and --goal (lon,lat for a "

@@ -1,9 +1,9 @@
 // glider_plan: time-optimal glider routes from the command line. Every mode (the built-in Gulf Stream mission, a
-// NetCDF forecast with --currents, a mission file with --mission) builds a MissionSpec and runs the library's one
-// pipeline (mission/Planning.h) and output layer (output/). Running, messages and exit codes live here; the flags,
-// their checks and the MissionSpec of the built-in and --currents modes in Flags.cpp (shared with fuzz/fuzz_cli).
-// Under mpirun (a build with OMPL_GLIDER_WITH_MPI) every rank runs the same pipeline; the many-plan modes spread
-// their tasks over the ranks (TaskSpread.h) and rank 0 alone prints and writes.
+// forecast (NetCDF, OPeNDAP, Zarr, GRIB) with --currents, a mission file with --mission) builds a MissionSpec and runs
+// the library's one pipeline (mission/Planning.h) and output layer (output/). Running, messages and exit codes live
+// here; the flags, their checks and the MissionSpec of the built-in and --currents modes in Flags.cpp (shared with
+// fuzz/fuzz_cli). Under mpirun (a build with OMPL_GLIDER_WITH_MPI) every rank runs the same pipeline; the many-plan
+// modes spread their tasks over the ranks (TaskSpread.h) and rank 0 alone prints and writes.
 #include <algorithm>
 #include <chrono>
 #include <cmath>

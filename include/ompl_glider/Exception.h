@@ -17,7 +17,7 @@ class Error : public std::runtime_error
 {
 public:
     explicit Error(const std::string &what) : std::runtime_error(what) {}
-    /// @brief An error about the setting @p field (the thrower's name for it: "NetCdfCurrentOptions::timeUnits" in
+    /// @brief An error about the setting @p field (the thrower's name for it: "GriddedCurrentOptions::timeUnits" in
     /// the forecast reader, a dotted mission field above it).
     Error(const std::string &what, std::string field) : std::runtime_error(what), field_(std::move(field)) {}
     /// @brief The setting at fault; empty when the error is not about one setting.

@@ -1,7 +1,7 @@
 // Currents given as numpy arrays: a CF NetCDF dataset built in memory (nc_create_mem) and registered with the
 // library (io/MemoryDataset.h), so that they reach the pipeline the way every forecast does (the NetCDF reader's
 // checks, land from NaN, units, interpolation), not by a second path, and without a file on disk. Its NetCDF-C
-// calls hold the library's one lock of NetCDF-C (src/io/NetCdfLock.h), as every other NetCDF-C call does.
+// calls hold the library's one lock of NetCDF-C (src/io/DatasetLock.h), as every other NetCDF-C call does.
 #include <netcdf.h>
 #include <netcdf_mem.h>
 
@@ -18,11 +18,11 @@
 #include "Bindings.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/MemoryDataset.h"
-#include "io/NetCdfLock.h"
+#include "io/DatasetLock.h"
 
 namespace py = pybind11;
 using ompl_glider::Error;
-using ompl_glider::gridded_detail::NetCdfLock;
+using ompl_glider::gridded_detail::DatasetLock;
 
 namespace ompl_glider_py
 {
@@ -130,10 +130,10 @@ std::string memoryForecast(const Array &u, const Array &v, const Array &x, const
         else if (!std::isfinite(uu[k]) || !std::isfinite(vv[k]))
             throw Error("currents from arrays: u and v must be finite or NaN (land)");
 
-    // NetCDF-C is not thread-safe: the dataset is written under the library's one lock of it (io/NetCdfLock.h), with
+    // NetCDF-C is not thread-safe: the dataset is written under the library's one lock of it (io/DatasetLock.h), with
     // the GIL released first (the lock is never taken while the GIL is held: a thread holding it may wait for the GIL)
     const py::gil_scoped_release release;
-    const NetCdfLock lock;
+    const DatasetLock lock;
     Writer w("currents_from_arrays");
     std::vector<int> dims;
     int tv = -1;

@@ -6,7 +6,7 @@
 #include "ompl_glider/current/LinearShear.h"
 #include "ompl_glider/current/MeanderingJet.h"
 #if OMPL_GLIDER_WITH_NETCDF
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 #endif
 #include "ompl_glider/current/RankineVortex.h"
 #include "ompl_glider/current/UniformCurrent.h"
@@ -31,7 +31,7 @@ public:
     LoadedForecast load(const ForecastRequest &) const override { refuse(); }
 };
 
-std::shared_ptr<const GriddedSource> netCdfSource()
+std::shared_ptr<const GriddedSource> griddedForecastSource()
 {
     static const auto source = std::make_shared<const NoNetCdfSource>();
     return source;
@@ -99,7 +99,7 @@ std::deque<CurrentFieldKind> &kinds()
                      "gridded forecast read from NetCDF files, OPeNDAP datasets, Zarr stores or GRIB files",
                      {},
                      nullptr,
-                     netCdfSource()});
+                     griddedForecastSource()});
         return k;
     }();
     return kinds;

@@ -13,8 +13,8 @@ list(APPEND OMPL_GLIDER_SOURCES
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
-    # the NetCDF reader: loadNetCdfCurrents() composing the stages in gridded/ (see gridded/GriddedInternal.h)
-    ${CMAKE_CURRENT_LIST_DIR}/NetCdfCurrents.cpp
+    # the NetCDF reader: loadGriddedCurrents() composing the stages in gridded/ (see gridded/GriddedInternal.h)
+    ${CMAKE_CURRENT_LIST_DIR}/GriddedCurrents.cpp
     ${CMAKE_CURRENT_LIST_DIR}/gridded/AxisChecks.cpp
     ${CMAKE_CURRENT_LIST_DIR}/gridded/VariableDetection.cpp
     ${CMAKE_CURRENT_LIST_DIR}/gridded/GridLayout.cpp
@@ -33,6 +33,6 @@ if(OMPL_GLIDER_WITH_NETCDF)
     ${CMAKE_CURRENT_LIST_DIR}/gridded/NodeCoordinates.cpp
     ${CMAKE_CURRENT_LIST_DIR}/gridded/ForecastFiles.cpp
     # the reader as the registry's gridded source `gridded` (alias `netcdf`)
-    ${CMAKE_CURRENT_LIST_DIR}/gridded/NetCdfSource.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/gridded/GriddedForecastSource.cpp
   )
 endif()

@@ -15,7 +15,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "GdalModule.h"
-#include "NetCdfLock.h"
+#include "DatasetLock.h"
 #include "NumberText.h"
 
 namespace ompl_glider
@@ -170,8 +170,8 @@ std::vector<LandPolygon> gdal_detail::readLandPolygons(const std::string &path, 
                                                        std::vector<std::string> *repairs, CoastlineCount *count)
 {
     // the GDAL dataset, from its opening to its closing at the end of this function, under the process's one lock
-    // of GDAL's datasets and NetCDF-C (NetCdfLock.h: GDAL's netCDF driver reads vector NetCDF files too)
-    const gridded_detail::NetCdfLock lock;
+    // of GDAL's datasets and NetCDF-C (DatasetLock.h: GDAL's netCDF driver reads vector NetCDF files too)
+    const gridded_detail::DatasetLock lock;
     const double lonMin = box.lonMin, latMin = box.latMin, lonMax = box.lonMax, latMax = box.latMax;
     registerDrivers();
     const std::string who = "coastline file '" + path + "'";

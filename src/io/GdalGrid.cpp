@@ -11,7 +11,7 @@
 #include "BlockCopy.h"
 #include "GdalGridImpl.h"
 #include "TextUtil.h"
-#include "NetCdfLock.h"
+#include "DatasetLock.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/FileList.h"
 #include "ompl_glider/io/RemoteSource.h"
@@ -100,7 +100,7 @@ ValueType valueTypeOf(GDALDataType t)
 
 GdalGrid::GdalGrid(const std::string &path) : impl_(std::make_unique<Impl>())
 {
-    const NetCdfLock lock; // GDAL's datasets, and its netCDF driver's NetCDF-C calls (NetCdfLock.h)
+    const DatasetLock lock; // GDAL's datasets, and its netCDF driver's NetCDF-C calls (DatasetLock.h)
     Impl &d = *impl_;
     d.path = path;
     d.kind = isZarrStore(path) ? DatasetKind::ZarrStore : DatasetKind::GribFile;
@@ -163,13 +163,13 @@ std::string GdalGrid::unreadable() const
 
 GdalGrid::~GdalGrid()
 {
-    const NetCdfLock lock; // the dataset closed under the lock too
+    const DatasetLock lock; // the dataset closed under the lock too
     impl_.reset();
 }
 
 std::shared_ptr<GdalGrid> GdalGrid::open(const std::string &path)
 {
-    const NetCdfLock netcdf; // before this function's own lock (NetCdfLock.h: its lock order)
+    const DatasetLock netcdf; // before this function's own lock (DatasetLock.h: its lock order)
     if (!isUrl(path) && zarrUrl(path).empty())
         return std::make_shared<GdalGrid>(path);
     static std::mutex m;
@@ -189,31 +189,31 @@ std::string GdalGrid::who() const
 
 int GdalGrid::nvars() const
 {
-    const NetCdfLock lock;
+    const DatasetLock lock;
     return static_cast<int>(impl_->vars.size());
 }
 
 std::string GdalGrid::varName(int var) const
 {
-    const NetCdfLock lock;
+    const DatasetLock lock;
     return impl_->vars.at(static_cast<std::size_t>(var))->GetName();
 }
 
 std::string GdalGrid::dimName(int dim) const
 {
-    const NetCdfLock lock;
+    const DatasetLock lock;
     return impl_->dims.at(static_cast<std::size_t>(dim))->GetName();
 }
 
 std::size_t GdalGrid::dimLen(int dim) const
 {
-    const NetCdfLock lock;
+    const DatasetLock lock;
     return static_cast<std::size_t>(impl_->dims.at(static_cast<std::size_t>(dim))->GetSize());
 }
 
 std::optional<int> GdalGrid::findVar(const std::string &name) const
 {
-    const NetCdfLock lock;
+    const DatasetLock lock;
     for (std::size_t k = 0; k < impl_->vars.size(); ++k)
         if (impl_->vars[k]->GetName() == name)
             return static_cast<int>(k);
@@ -232,7 +232,7 @@ std::optional<int> GdalGrid::findVar(const std::string &name) const
 
 std::vector<int> GdalGrid::varDims(int var) const
 {
-    const NetCdfLock lock;
+    const DatasetLock lock;
     std::vector<int> out;
     if (impl_->hasAddedTime(var))
         out.push_back(impl_->timeDim);
@@ -243,7 +243,7 @@ std::vector<int> GdalGrid::varDims(int var) const
 
 ValueType GdalGrid::varType(int var) const
 {
-    const NetCdfLock lock;
+    const DatasetLock lock;
     const GDALExtendedDataType &t = impl_->vars.at(static_cast<std::size_t>(var))->GetDataType();
     if (t.GetClass() == GEDTC_STRING)
         return ValueType::String;
@@ -252,7 +252,7 @@ ValueType GdalGrid::varType(int var) const
 
 std::optional<std::string> GdalGrid::attText(int var, const char *name) const
 {
-    const NetCdfLock netcdf; // before the dataset's own lock (NetCdfLock.h: its lock order)
+    const DatasetLock netcdf; // before the dataset's own lock (DatasetLock.h: its lock order)
     const std::lock_guard<std::mutex> lock(impl_->mutex);
     if (auto a = impl_->attribute(var, name))
     {
@@ -289,7 +289,7 @@ std::optional<std::string> GdalGrid::attText(int var, const char *name) const
 
 std::vector<double> GdalGrid::attDoubles(int var, const char *name, bool &isText) const
 {
-    const NetCdfLock netcdf; // before the dataset's own lock (NetCdfLock.h: its lock order)
+    const DatasetLock netcdf; // before the dataset's own lock (DatasetLock.h: its lock order)
     const std::lock_guard<std::mutex> lock(impl_->mutex);
     isText = false;
     if (auto a = impl_->attribute(var, name))
@@ -326,7 +326,7 @@ std::vector<double> GdalGrid::attDoubles(int var, const char *name, bool &isText
 void GdalGrid::readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
                          double *out) const
 {
-    const NetCdfLock netcdf; // before the dataset's own lock (NetCdfLock.h: its lock order)
+    const DatasetLock netcdf; // before the dataset's own lock (DatasetLock.h: its lock order)
     const std::lock_guard<std::mutex> lock(impl_->mutex);
     for (const Impl::Block &b : impl_->blocks)
         if (b.var == var && inside(start, count, b.start, b.count))

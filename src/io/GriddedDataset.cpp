@@ -7,7 +7,7 @@
 #include <netcdf_mem.h>
 
 #include "Dataset.h"
-#include "NetCdfLock.h"
+#include "DatasetLock.h"
 #include "RemoteDataset.h"
 #include "RemoteRecord.h"
 #include "ompl_glider/io/MemoryDataset.h"
@@ -39,7 +39,7 @@ class NetCdfDataset final : public Dataset
 public:
     explicit NetCdfDataset(const std::string &path) : path_(path)
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         quietHdf5OnThisThread();
         const RemoteAccess access = remoteAccess();
         prepareNetcdfAccess(access);
@@ -71,7 +71,7 @@ public:
     }
     ~NetCdfDataset() override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         if (remote_)
             remote_->flush(); // the dataset stays open for the process's next reader
         else
@@ -83,35 +83,35 @@ public:
     std::string who() const override { return remote_ ? remote_->who() : "NetCDF file '" + path_ + "'"; }
     int nvars() const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         int n = 0;
         check(nc_inq_nvars(id_, &n), "inquire variables");
         return n;
     }
     std::string varName(int var) const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         char buf[NC_MAX_NAME + 1];
         check(nc_inq_varname(id_, var, buf), "inquire variable name");
         return buf;
     }
     std::string dimName(int dim) const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         char buf[NC_MAX_NAME + 1];
         check(nc_inq_dimname(id_, dim, buf), "inquire dimension name");
         return buf;
     }
     std::size_t dimLen(int dim) const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         std::size_t n = 0;
         check(nc_inq_dimlen(id_, dim, &n), "inquire dimension length");
         return n;
     }
     std::optional<int> findVar(const std::string &name) const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         int v;
         if (nc_inq_varid(id_, name.c_str(), &v) == NC_NOERR)
             return v;
@@ -119,7 +119,7 @@ public:
     }
     std::vector<int> varDims(int var) const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         int nd = 0;
         check(nc_inq_varndims(id_, var, &nd), "inquire dimensions of '" + varName(var) + "'");
         std::vector<int> d(static_cast<std::size_t>(nd));
@@ -129,14 +129,14 @@ public:
     }
     ValueType varType(int var) const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         nc_type t;
         check(nc_inq_vartype(id_, var, &t), "inquire type of '" + varName(var) + "'");
         return valueTypeOf(t);
     }
     std::optional<std::string> attText(int var, const char *name) const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         nc_type t;
         std::size_t len;
         if (nc_inq_att(id_, var, name, &t, &len) != NC_NOERR)
@@ -160,7 +160,7 @@ public:
     }
     std::vector<double> attDoubles(int var, const char *name, bool &isText) const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         nc_type t = NC_DOUBLE;
         std::size_t len = 0;
         isText = false;
@@ -178,7 +178,7 @@ public:
     void readBlock(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
                    double *out) const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         if (remote_)
             remote_->read(var, start, count, out);
         else
@@ -188,7 +188,7 @@ public:
 
     std::vector<std::string> groupNames() const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         int n = 0;
         if (nc_inq_grps(id_, &n, nullptr) != NC_NOERR || n <= 0)
             return {};
@@ -205,7 +205,7 @@ public:
     }
     std::string readChars(int var) const override
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         std::size_t n = 1;
         for (int d : varDims(var))
             n *= dimLen(d);
@@ -249,7 +249,7 @@ private:
     }
     void check(int status, const std::string &what) const
     {
-        const NetCdfLock lock;
+        const DatasetLock lock;
         if (status != NC_NOERR)
             throw Error(who() + ": " + what + ": " + nc_strerror(status));
     }

@@ -1,7 +1,7 @@
 #pragma once
 /// @file GriddedDataset.h
 /// @brief Internal to the library (not installed): the open gridded dataset of every gridded reader (the forecasts of
-/// current/gridded/, the bathymetry of io/NetCdfBathymetry.cpp, a glider's NetCDF observations), whatever reads it
+/// current/gridded/, the bathymetry of io/GriddedBathymetry.cpp, a glider's NetCDF observations), whatever reads it
 /// (a NetCDF file, an OPeNDAP URL, a dataset in memory, a Zarr store, a GRIB file), its queries whose errors name it,
 /// and the size check of classic-format NetCDF files done before NetCDF-C opens one.
 ///

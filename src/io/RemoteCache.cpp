@@ -8,7 +8,7 @@
 
 #include <unistd.h>
 
-#include "NetCdfLock.h"
+#include "DatasetLock.h"
 #include "NumberText.h"
 #include "RemoteRecord.h"
 #include "ompl_glider/Exception.h"
@@ -85,7 +85,7 @@ void RemoteDataset::checkCacheAnswers()
 
 void RemoteDataset::flush()
 {
-    const NetCdfLock netcdf; // before the dataset's own lock (NetCdfLock.h: its lock order)
+    const DatasetLock netcdf; // before the dataset's own lock (DatasetLock.h: its lock order)
     std::lock_guard<std::mutex> lock(mutex_);
     if (!dirty_)
         return;

@@ -20,7 +20,7 @@
 
 #include "BlockCopy.h"
 #include "FetchStop.h"
-#include "NetCdfLock.h"
+#include "DatasetLock.h"
 #include "NumberText.h"
 #include "RemoteRecord.h"
 #include "TextUtil.h"
@@ -172,7 +172,7 @@ std::string &limitProblem()
 
 void prepareNetcdfAccess(const RemoteAccess &access)
 {
-    const NetCdfLock lock; // NetCDF-C reads the environment at its first call
+    const DatasetLock lock; // NetCDF-C reads the environment at its first call
     static std::once_flag once;
     std::call_once(once, [&] {
         if (std::getenv("NCRCENV_RC"))
@@ -224,7 +224,7 @@ long requestLimitInForce()
 
 std::shared_ptr<RemoteDataset> RemoteDataset::open(const std::string &url, const RemoteAccess &access)
 {
-    const NetCdfLock netcdf; // before this function's own lock (NetCdfLock.h: its lock order)
+    const DatasetLock netcdf; // before this function's own lock (DatasetLock.h: its lock order)
     static std::mutex m;
     // kept for the process (never destroyed: no NetCDF call after NetCDF-C's own end at exit)
     static auto &open = *new std::map<std::string, std::shared_ptr<RemoteDataset>>();
@@ -276,7 +276,7 @@ RemoteDataset::RemoteDataset(std::string url, RemoteAccess access, std::size_t r
 
 RemoteDataset::~RemoteDataset()
 {
-    const NetCdfLock lock;
+    const DatasetLock lock;
     if (cacheId_ >= 0)
         nc_close(cacheId_);
     if (remoteId_ >= 0)
@@ -378,7 +378,7 @@ std::uint64_t RemoteDataset::valueBytes(int var, std::size_t values) const
 void RemoteDataset::read(int var, const std::vector<std::size_t> &start, const std::vector<std::size_t> &count,
                          double *out)
 {
-    const NetCdfLock netcdf; // before the dataset's own lock (NetCdfLock.h: its lock order)
+    const DatasetLock netcdf; // before the dataset's own lock (DatasetLock.h: its lock order)
     std::lock_guard<std::mutex> lock(mutex_);
     std::size_t n = 1;
     for (const std::size_t c : count)

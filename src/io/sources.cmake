@@ -8,7 +8,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/TempFolder.cpp  # the folder for temporary files (TMPDIR), checked
   ${CMAKE_CURRENT_LIST_DIR}/FileList.cpp  # a forecast's files: paths, glob patterns, URLs
   ${CMAKE_CURRENT_LIST_DIR}/DegMin.cpp  # the Slocum's [-]DDDMM.MMMM coordinates (goto lists, dba files)
-  ${CMAKE_CURRENT_LIST_DIR}/NetCdfLock.cpp  # the one lock of NetCDF-C and GDAL's datasets (NetCdfLock.h)
+  ${CMAKE_CURRENT_LIST_DIR}/DatasetLock.cpp  # the one lock of NetCDF-C and GDAL's datasets (DatasetLock.h)
 )
 if(OMPL_GLIDER_WITH_NETCDF)
   list(APPEND OMPL_GLIDER_SOURCES
@@ -19,7 +19,7 @@ if(OMPL_GLIDER_WITH_NETCDF)
     ${CMAKE_CURRENT_LIST_DIR}/RemoteCache.cpp  # OPeNDAP: the cache file, checked and written (RemoteDataset.h)
     ${CMAKE_CURRENT_LIST_DIR}/FetchStop.cpp  # a stop request cuts a blocking HTTP request (FetchStop.h)
     ${CMAKE_CURRENT_LIST_DIR}/ClassicSize.cpp
-    ${CMAKE_CURRENT_LIST_DIR}/NetCdfBathymetry.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/GriddedBathymetry.cpp
     ${CMAKE_CURRENT_LIST_DIR}/DepthGrid.cpp
     ${CMAKE_CURRENT_LIST_DIR}/GliderObservations.cpp  # a glider's DAC: IOOS profile files, CSV
     ${CMAKE_CURRENT_LIST_DIR}/SlocumBinary.cpp  # a Slocum's binary files (dinkum binary data, LZ4: liblz4)

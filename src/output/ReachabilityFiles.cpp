@@ -18,7 +18,7 @@
 #if OMPL_GLIDER_WITH_NETCDF
 #include <netcdf.h>
 
-#include "../io/NetCdfLock.h"
+#include "../io/DatasetLock.h"
 #include "ompl_glider/io/Time.h"
 #endif
 
@@ -372,7 +372,7 @@ void writeReachabilityNetCdf(const std::string &path, const MissionResult &r, co
         throw Error(path + ": the run computed no probability of reach");
     const TimeAxis axis = timeAxisOf(r, *r.reachability);
     const bool arrivals = r.spec.reachability.memberArrival && !r.reachability->memberArrival.empty();
-    gridded_detail::NetCdfLock lock; // NetCDF-C is not thread-safe: the process's one lock
+    gridded_detail::DatasetLock lock; // NetCDF-C is not thread-safe: the process's one lock
     NcFile nc{path};
     nc.check(nc_create(path.c_str(), NC_NETCDF4 | NC_CLOBBER, &nc.id), "create");
     try

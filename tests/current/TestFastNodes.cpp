@@ -2,7 +2,7 @@
 // not declared, a lone spike, units off across the field) and read where they are the flow's: a Cartesian benchmark
 // file of a vortex in a 2 km box ([ThompsonICRA]-style scaling: vehicle 10 m/s), whose node beside the core is
 // faster than 300 m/s and continuous with its neighbours, loads and plans as the analytic vortex does; the bound
-// can be raised (NetCdfCurrentOptions::maxSpeed, current.max_speed), and one set lower refuses the node, named.
+// can be raised (GriddedCurrentOptions::maxSpeed, current.max_speed), and one set lower refuses the node, named.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,7 +14,7 @@
 
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/mission/Planning.h"
@@ -67,11 +67,11 @@ void writeField(const std::string &path, const std::function<void(std::size_t, s
     w.put(v, vs);
 }
 
-std::string refusal(const std::string &path, const NetCdfCurrentOptions &o = {})
+std::string refusal(const std::string &path, const GriddedCurrentOptions &o = {})
 {
     try
     {
-        (void)loadNetCdfCurrents(path, o);
+        (void)loadGriddedCurrents(path, o);
     }
     catch (const Error &e)
     {
@@ -89,7 +89,7 @@ TEST(FastNodes, AVortexCoreNodeIsTheFlowAndPlansAsTheAnalyticVortex)
     TempDir dir;
     const std::string file = dir.file("vortex.nc");
     writeField(file, kAsIs);
-    const NetCdfCurrents nc = loadNetCdfCurrents(file);
+    const GriddedCurrents nc = loadGriddedCurrents(file);
     // the node beside the core holds its 360 m/s, as written
     const Velocity c = nc.field->velocity(0.0, 0.0, 0.0, 0.0);
     double u, v;
@@ -125,7 +125,7 @@ TEST(FastNodes, GarbageIsStillRefusedAndTheMessageNamesTheBound)
     });
     std::string e = refusal(spike);
     EXPECT_NE(e.find("variable 'u' holds -473.867 m/s at (j, i) = (30, 158)"), std::string::npos) << e;
-    EXPECT_NE(e.find("NetCdfCurrentOptions::maxSpeed"), std::string::npos) << e;
+    EXPECT_NE(e.find("GriddedCurrentOptions::maxSpeed"), std::string::npos) << e;
 
     // a fill value not declared (-999) next to the core: a fill value's size, refused however its neighbours run
     const std::string fill = dir.file("fill.nc");
@@ -149,12 +149,12 @@ TEST(FastNodes, GarbageIsStillRefusedAndTheMessageNamesTheBound)
     // the vortex with the bound set below its core: refused at the core, the message saying the bound was given
     const std::string vortex = dir.file("vortex.nc");
     writeField(vortex, kAsIs);
-    NetCdfCurrentOptions low;
+    GriddedCurrentOptions low;
     low.maxSpeed = 200.0;
     e = refusal(vortex, low);
     EXPECT_NE(e.find("faster than the bound given (more than 200 m/s)"), std::string::npos) << e;
     // ... and raised above it: the mm/s field read as it is (the pilot says such speeds are real)
-    NetCdfCurrentOptions high;
+    GriddedCurrentOptions high;
     high.maxSpeed = 1e6;
     EXPECT_EQ(refusal(mm, high), "");
 }

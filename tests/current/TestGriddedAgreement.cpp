@@ -16,7 +16,7 @@
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/cost/TravelTimeCalculator.h"
 #include "ompl_glider/current/MeanderingJet.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 #include "ompl_glider/ompl/GliderSetup.h"
 #include "planners/TveSearch.h" // internal to the library (src/)
 #include "ompl_glider/planners/ZAStarTVE.h"
@@ -73,11 +73,11 @@ protected:
             w.put(u, pu);
             w.put(v, pv);
         }
-        NetCdfCurrentOptions o;
+        GriddedCurrentOptions o;
         o.coordinates = CoordinateMode::Cartesian;
         o.field.xy = Interp2D::Bilinear;
         o.field.time = Interp1D::Linear;
-        gridded_ = new NetCdfCurrents(loadNetCdfCurrents(path_, o));
+        gridded_ = new GriddedCurrents(loadGriddedCurrents(path_, o));
     }
     static void TearDownTestSuite()
     {
@@ -87,11 +87,11 @@ protected:
 
     static glider_test::TempDir *dir_;
     static std::string path_;
-    static NetCdfCurrents *gridded_;
+    static GriddedCurrents *gridded_;
 };
 glider_test::TempDir *JetGrid::dir_ = nullptr;
 std::string JetGrid::path_;
-NetCdfCurrents *JetGrid::gridded_ = nullptr;
+GriddedCurrents *JetGrid::gridded_ = nullptr;
 
 double pathTime(const TravelTimeCalculator &calc, const std::vector<Pt> &path, double t0)
 {

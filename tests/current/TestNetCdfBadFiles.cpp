@@ -12,7 +12,7 @@
 
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 using namespace ompl_glider;
 using glider_test::NcWriter;
@@ -104,11 +104,11 @@ std::string errorOf(const std::function<void()> &f)
 
 /// The message of loading a file written from s (options o).
 std::string loadError(const TempDir &tmp, const std::string &name, const Forecast &s,
-                      const NetCdfCurrentOptions &o = {})
+                      const GriddedCurrentOptions &o = {})
 {
     const std::string path = tmp.file(name);
     writeForecast(path, s);
-    return errorOf([&] { loadNetCdfCurrents(path, o); });
+    return errorOf([&] { loadGriddedCurrents(path, o); });
 }
 
 #define EXPECT_HAS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << (text)
@@ -134,11 +134,11 @@ TEST(NetCdfBadFiles, TimeWithoutRecordsNamesTheTimeVariable)
     s.timeUnlimited = true;
     const std::string path = tmp.file("norecords.nc");
     writeForecast(path, s);
-    std::string m = errorOf([&] { loadNetCdfCurrents(path); });
+    std::string m = errorOf([&] { loadGriddedCurrents(path); });
     EXPECT_HAS(m, "norecords.nc");
     EXPECT_HAS(m, "time variable 'time' has no values");
     // the time axis alone, as the mission loader reads it
-    m = errorOf([&] { readNetCdfTimeAxis(path); });
+    m = errorOf([&] { readForecastTimeAxis(path); });
     EXPECT_HAS(m, "time variable 'time' has no values");
 }
 
@@ -160,7 +160,7 @@ TEST(NetCdfBadFiles, AxesThatAreNotStrictlyMonotonicNameTheAxis)
     s.cartesian = true;
     s.lat = {0, 1000, 2000, 3000};
     s.lon = {0, 1000, 1000, 3000};
-    NetCdfCurrentOptions cart;
+    GriddedCurrentOptions cart;
     cart.coordinates = CoordinateMode::Cartesian;
     m = loadError(tmp, "x.nc", s, cart);
     EXPECT_HAS(m, "coordinate 'x' is not strictly monotonic");
@@ -188,7 +188,7 @@ TEST(NetCdfBadFiles, DescendingAxesAndLongitudesAcrossASeamStayAllowed)
     s.lon = {179.6, 179.8, 180.0, -179.8, -179.6}; // -180..180 written across the antimeridian
     const std::string path = tmp.file("seam.nc");
     writeForecast(path, s);
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     ASSERT_TRUE(nc.field);
     EXPECT_EQ(nc.loadedShape[3], 5u);
     // eastward 0.1 m/s everywhere, also across the seam
@@ -196,21 +196,21 @@ TEST(NetCdfBadFiles, DescendingAxesAndLongitudesAcrossASeamStayAllowed)
     const Velocity c = nc.field->velocity(p.x, p.y, 0.0, 0.0);
     EXPECT_NEAR(std::hypot(c.u, c.v), 0.1, 1e-4);
     // a region across the seam given as lonMin > lonMax
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.lonMin = 179.7;
     o.lonMax = -179.7;
     o.latMin = 47.1;
     o.latMax = 47.5;
     o.marginNodes = 0;
-    EXPECT_NO_THROW(loadNetCdfCurrents(path, o));
+    EXPECT_NO_THROW(loadGriddedCurrents(path, o));
     // 0..360 written across 0 (350, 0, 10)
     s.lon = {359.6, 359.8, 0.0, 0.2, 0.4};
     writeForecast(path, s);
-    EXPECT_NO_THROW(loadNetCdfCurrents(path));
+    EXPECT_NO_THROW(loadGriddedCurrents(path));
     // but not twice around
     s.lon = {0.0, 180.0, 359.0, 170.0, 350.0};
     writeForecast(path, s);
-    EXPECT_HAS(errorOf([&] { loadNetCdfCurrents(path); }), "coordinate 'lon' is not strictly monotonic");
+    EXPECT_HAS(errorOf([&] { loadGriddedCurrents(path); }), "coordinate 'lon' is not strictly monotonic");
 }
 
 TEST(NetCdfBadFiles, AxesWithFillValuesOrNonFiniteNumbersNameTheAxis)
@@ -288,17 +288,17 @@ TEST(NetCdfBadFiles, CurvilinearCoordinatesMustBeFiniteAndUnfolded)
 {
     TempDir tmp;
     // the grid as written loads
-    EXPECT_NO_THROW(loadNetCdfCurrents(writeCurvilinear(tmp, "ok.nc", [](auto &, auto &) {})));
+    EXPECT_NO_THROW(loadGriddedCurrents(writeCurvilinear(tmp, "ok.nc", [](auto &, auto &) {})));
 
     // a fill value in nav_lat
     std::string m = errorOf([&] {
-        loadNetCdfCurrents(writeCurvilinear(tmp, "fill.nc", [](auto &la, auto &) { la[7] = NC_FILL_DOUBLE; }));
+        loadGriddedCurrents(writeCurvilinear(tmp, "fill.nc", [](auto &la, auto &) { la[7] = NC_FILL_DOUBLE; }));
     });
     EXPECT_HAS(m, "coordinate 'nav_lat' holds fill values or non-finite numbers (9.969209968e+36 at (j, i) = (1, 2))");
 
     // row 2 repeats row 1: neighbouring nodes coincide
     m = errorOf([&] {
-        loadNetCdfCurrents(writeCurvilinear(tmp, "repeat.nc", [](auto &la, auto &lo) {
+        loadGriddedCurrents(writeCurvilinear(tmp, "repeat.nc", [](auto &la, auto &lo) {
             for (std::size_t i = 0; i < 5; ++i)
             {
                 la[10 + i] = la[5 + i];
@@ -311,7 +311,7 @@ TEST(NetCdfBadFiles, CurvilinearCoordinatesMustBeFiniteAndUnfolded)
 
     // column 3 moved west of column 2: the grid folds
     m = errorOf([&] {
-        loadNetCdfCurrents(writeCurvilinear(tmp, "fold.nc", [](auto &, auto &lo) {
+        loadGriddedCurrents(writeCurvilinear(tmp, "fold.nc", [](auto &, auto &lo) {
             for (std::size_t j = 0; j < 4; ++j)
                 lo[j * 5 + 3] = lo[j * 5 + 2] - 0.1;
         }));
@@ -353,9 +353,9 @@ TEST(NetCdfBadFiles, TripRegionLargerThanTheMemoryLimitIsRefusedBeforeReading)
     s.depth = {0, 10};
     const std::string path = tmp.file("small.nc");
     writeForecast(path, s);
-    EXPECT_NO_THROW(loadNetCdfCurrents(path));
+    EXPECT_NO_THROW(loadGriddedCurrents(path));
     ScopedEnv limit("OMPL_GLIDER_MEMORY_LIMIT", "2K");
-    const std::string m = errorOf([&] { loadNetCdfCurrents(path); });
+    const std::string m = errorOf([&] { loadGriddedCurrents(path); });
     EXPECT_HAS(m, "NetCDF file '" + path + "': the trip's region (4 x 4 nodes, 3 times, 2 depths) needs about");
     EXPECT_HAS(m, "restrict the region or the time window, or use a coarser file");
     EXPECT_EQ(m.find('\n'), std::string::npos) << m;

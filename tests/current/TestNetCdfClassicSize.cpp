@@ -1,6 +1,6 @@
 // The size check of classic-format files (CDF-1, CDF-2, CDF-5; src/io/ClassicSize.cpp): the header
 // parsed to the end of the last non-record variable and of the last record, complete files accepted, files cut
-// in the header, in the fixed data and in the last record refused with the byte counts, and loadNetCdfCurrents()
+// in the header, in the fixed data and in the last record refused with the byte counts, and loadGriddedCurrents()
 // refusing a cut forecast that NetCDF-C would read as if complete.
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include "TestNetCdfUtil.h"
 #include "gridded/GriddedInternal.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 using namespace ompl_glider;
 using namespace ompl_glider::gridded_detail;
@@ -230,14 +230,14 @@ TEST(NetCdfClassicSize, LoaderRefusesACutClassicForecast)
     // CDF-2 (ncgen -k nc6: 64-bit offset)
     ASSERT_EQ(std::system(("ncgen -k nc6 -o " + nc + " " + cdl).c_str()), 0);
     ASSERT_EQ(extentOf(nc).version, 2);
-    EXPECT_NO_THROW(loadNetCdfCurrents(nc));
+    EXPECT_NO_THROW(loadGriddedCurrents(nc));
     // cut halfway through the data
     const std::uint64_t size = fileSize(nc), begin = extentOf(nc).dataBegin, half = begin + (size - begin) / 2;
     const std::string c = cut(tmp, nc, half, "half.nc");
     std::string m;
     try
     {
-        loadNetCdfCurrents(c);
+        loadGriddedCurrents(c);
     }
     catch (const Error &e)
     {
@@ -249,14 +249,14 @@ TEST(NetCdfClassicSize, LoaderRefusesACutClassicForecast)
               std::string::npos)
         << m;
     // the time axis alone is refused too
-    EXPECT_THROW(readNetCdfTimeAxis(c), Error);
+    EXPECT_THROW(readForecastTimeAxis(c), Error);
     // cut inside the header (NetCDF-C may open it or not): truncated either way
     for (std::uint64_t n : {std::uint64_t(12), std::uint64_t(100)})
     {
         const std::string h = cut(tmp, nc, n, "head.nc");
         try
         {
-            loadNetCdfCurrents(h);
+            loadGriddedCurrents(h);
             ADD_FAILURE() << "loaded a file cut at " << n << " bytes";
         }
         catch (const Error &e)

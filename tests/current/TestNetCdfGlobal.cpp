@@ -9,7 +9,7 @@
 #include "GlobalForecast.h"
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 using namespace ompl_glider;
 using glider_test::GlobalForecastSpec;
@@ -21,7 +21,7 @@ namespace
 
 /// The loaded field at the node (lon, lat) against the file's value there (the analytic field in float32),
 /// eastward/northward rotated into the plane with the projection's east and north directions at the node.
-void expectNodeSpeed(const NetCdfCurrents &nc, double lon, double lat)
+void expectNodeSpeed(const GriddedCurrents &nc, double lon, double lat)
 {
     const Point2 p = nc.toLocal({lon, lat});
     const Velocity c = nc.field->velocity(p.x, p.y, 0.0, 0.0);
@@ -40,10 +40,10 @@ TEST(NetCdfGlobal, AntimeridianOfAMinus180To180Grid)
     const std::string path = tmp.file("global180.nc");
     glider_test::writeGlobalForecast(path, GlobalForecastSpec{}); // -180..179.5, -90..90, 0.5 degrees
     // the region across the antimeridian in three spellings: the same nodes, the same plane
-    const NetCdfCurrents a = loadNetCdfCurrents(path, regionOptions(170, -170, 20, 40));
-    const NetCdfCurrents b = loadNetCdfCurrents(path, regionOptions(170, 190, 20, 40));
-    const NetCdfCurrents c = loadNetCdfCurrents(path, regionOptions(-190, -170, 20, 40));
-    for (const NetCdfCurrents *nc : {&a, &b, &c})
+    const GriddedCurrents a = loadGriddedCurrents(path, regionOptions(170, -170, 20, 40));
+    const GriddedCurrents b = loadGriddedCurrents(path, regionOptions(170, 190, 20, 40));
+    const GriddedCurrents c = loadGriddedCurrents(path, regionOptions(-190, -170, 20, 40));
+    for (const GriddedCurrents *nc : {&a, &b, &c})
     {
         EXPECT_EQ(nc->loadedShape[3], 41u + 4u); // 170..190 plus 2 margin nodes each side, not 720
         EXPECT_EQ(nc->lonMin, 169.0);
@@ -69,9 +69,9 @@ TEST(NetCdfGlobal, GreenwichOfA0To360Grid)
     GlobalForecastSpec s;
     s.lon0 = 0.0;
     glider_test::writeGlobalForecast(path, s); // 0..359.5
-    const NetCdfCurrents a = loadNetCdfCurrents(path, regionOptions(-10, 10, 45, 55));
-    const NetCdfCurrents b = loadNetCdfCurrents(path, regionOptions(350, 10, 45, 55));
-    for (const NetCdfCurrents *nc : {&a, &b})
+    const GriddedCurrents a = loadGriddedCurrents(path, regionOptions(-10, 10, 45, 55));
+    const GriddedCurrents b = loadGriddedCurrents(path, regionOptions(350, 10, 45, 55));
+    for (const GriddedCurrents *nc : {&a, &b})
     {
         EXPECT_EQ(nc->loadedShape[3], 41u + 4u);
         EXPECT_EQ(nc->lonMin, -11.0);
@@ -97,14 +97,14 @@ TEST(NetCdfGlobal, RegionalExtractWrittenAcrossGreenwich)
     s.nlat = 81;
     glider_test::writeGlobalForecast(path, s);
     // the whole extract: 40 degrees, not a 20-degree strip on either side of the jump
-    const NetCdfCurrents all = loadNetCdfCurrents(path);
+    const GriddedCurrents all = loadGriddedCurrents(path);
     EXPECT_EQ(all.loadedShape[3], 161u);
     EXPECT_EQ(all.lonMin, -20.0);
     EXPECT_EQ(all.lonMax, 20.0);
     // a region across the jump, in either convention
     for (const auto &o : {regionOptions(-5, 5, 35, 40), regionOptions(355, 5, 35, 40), regionOptions(355, 365, 35, 40)})
     {
-        const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+        const GriddedCurrents nc = loadGriddedCurrents(path, o);
         EXPECT_EQ(nc.loadedShape[3], 41u + 4u);
         EXPECT_EQ(nc.lonMin, -5.5);
         EXPECT_EQ(nc.lonMax, 5.5);
@@ -112,7 +112,7 @@ TEST(NetCdfGlobal, RegionalExtractWrittenAcrossGreenwich)
             expectNodeSpeed(nc, lon, 37.5);
     }
     // beyond the extract: refused, naming the axis
-    EXPECT_THROW(loadNetCdfCurrents(path, regionOptions(100, 110, 35, 40)), Error);
+    EXPECT_THROW(loadGriddedCurrents(path, regionOptions(100, 110, 35, 40)), Error);
 }
 
 TEST(NetCdfGlobal, BothSeamColumnsAreReadAsOne)
@@ -126,11 +126,11 @@ TEST(NetCdfGlobal, BothSeamColumnsAreReadAsOne)
         s.nlon = 721; // -180..180 or 0..360: the seam column twice
         glider_test::writeGlobalForecast(path, s);
         // not refused as non-monotonic; the repeated column is left out of the whole grid
-        const NetCdfCurrents all = loadNetCdfCurrents(path);
+        const GriddedCurrents all = loadGriddedCurrents(path);
         EXPECT_EQ(all.loadedShape[3], 720u);
         // across the seam: one run of nodes half a degree apart, no cell of zero width
         const double seam = lon0 == 0.0 ? 0.0 : 180.0;
-        const NetCdfCurrents nc = loadNetCdfCurrents(path, regionOptions(seam - 10, seam + 10, 20, 40));
+        const GriddedCurrents nc = loadGriddedCurrents(path, regionOptions(seam - 10, seam + 10, 20, 40));
         EXPECT_EQ(nc.loadedShape[3], 41u + 4u);
         EXPECT_EQ(nc.lonMax - nc.lonMin, 22.0);
         EXPECT_GT(nc.field->minCellSize(), 0.5 * 0.5 * 111e3 * std::cos(41.0 * M_PI / 180.0));
@@ -145,11 +145,11 @@ TEST(NetCdfGlobal, PoleRowsAreLeftOutNotRefused)
     const std::string path = tmp.file("poles.nc");
     glider_test::writeGlobalForecast(path, GlobalForecastSpec{}); // rows at -90 and 90
     // the whole file, and a polar cap all round: loaded without the rows at +-90 (a grid cannot be projected there)
-    const NetCdfCurrents all = loadNetCdfCurrents(path);
+    const GriddedCurrents all = loadGriddedCurrents(path);
     EXPECT_EQ(all.loadedShape[2], 359u);
     EXPECT_EQ(all.latMin, -89.5);
     EXPECT_EQ(all.latMax, 89.5);
-    const NetCdfCurrents cap = loadNetCdfCurrents(path, regionOptions(-180, 180 - 1e-9, 80, 90));
+    const GriddedCurrents cap = loadGriddedCurrents(path, regionOptions(-180, 180 - 1e-9, 80, 90));
     EXPECT_EQ(cap.latMax, 89.5);
     EXPECT_EQ(cap.latMin, 79.0);
     expectNodeSpeed(cap, 10.0, 85.0);

@@ -14,7 +14,7 @@
 #include "TestNetCdfUtil.h"
 #include "gridded/GriddedInternal.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 using namespace ompl_glider;
 using glider_test::inPlane;
@@ -123,7 +123,7 @@ TEST(NetCdfGridAngle, RomsGridWithoutAngleVariableLoadsAsWithIt)
     const std::string a = tmp.file("with.nc"), b = tmp.file("without.nc");
     with.write(a);
     without.write(b);
-    const NetCdfCurrents na = loadNetCdfCurrents(a), nb = loadNetCdfCurrents(b);
+    const GriddedCurrents na = loadGriddedCurrents(a), nb = loadGriddedCurrents(b);
     EXPECT_EQ(na.gridAngle, "variable 'angle'");
     EXPECT_EQ(nb.gridAngle.rfind("derived from 'lon_rho'/'lat_rho': the grid's i direction 29.", 0), 0u)
         << nb.gridAngle;
@@ -172,7 +172,7 @@ TEST(NetCdfGridAngle, UnrotatedCurvilinearGridIsLeftAlone)
             return LonLat{-60.0 + 0.1 * double(i), 30.0 + 0.1 * double(j)};
         },
         [](std::size_t, std::size_t) { return 0.0; });
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     EXPECT_EQ(nc.gridAngle, "");
     const Point2 p = nc.toLocal({-59.55, 30.35});
     const Velocity c = nc.field->velocity(p.x, p.y, 0.0, 0.0), e = inPlane(nc, -59.55, 30.35, 0.3, 0.0);
@@ -191,7 +191,7 @@ TEST(NetCdfGridAngle, AmbiguousGridsAreRefused)
         [&](std::size_t, std::size_t) { return g.theta; });
     try
     {
-        loadNetCdfCurrents(left);
+        loadGriddedCurrents(left);
         FAIL() << "a left-handed rotated grid without angle must be refused";
     }
     catch (const Error &e)
@@ -201,12 +201,12 @@ TEST(NetCdfGridAngle, AmbiguousGridsAreRefused)
         EXPECT_NE(m.find("no grid angle variable"), std::string::npos) << m;
         EXPECT_NE(m.find("'lon_rho'/'lat_rho' gives no clear angle: at (j, i) = (0, 0)"), std::string::npos) << m;
         EXPECT_NE(m.find("j direction lies -"), std::string::npos) << m;
-        EXPECT_NE(m.find("NetCdfCurrentOptions::angleName 'none'"), std::string::npos) << m;
+        EXPECT_NE(m.find("GriddedCurrentOptions::angleName 'none'"), std::string::npos) << m;
     }
     // the way out the message names: the velocities declared eastward/northward
-    NetCdfCurrentOptions none;
+    GriddedCurrentOptions none;
     none.angleName = "none";
-    EXPECT_EQ(loadNetCdfCurrents(left, none).gridAngle, "");
+    EXPECT_EQ(loadGriddedCurrents(left, none).gridAngle, "");
     // an i direction that kinks by 80 degrees at column 5 (j stays perpendicular to the first part)
     std::vector<double> x, y;
     for (std::size_t j = 0; j < 6; ++j)

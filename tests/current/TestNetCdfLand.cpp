@@ -10,7 +10,7 @@
 
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 using namespace ompl_glider;
 using namespace glider_test;
@@ -140,7 +140,7 @@ struct Probe
 {
     bool block, away;
 };
-Probe probe(const NetCdfCurrents &nc, double depth = 0.0)
+Probe probe(const GriddedCurrents &nc, double depth = 0.0)
 {
     const Point2 b = nc.toLocal({-70.0, 40.0}), a = nc.toLocal({-68.0, 41.0});
     return {nc.field->inWater(b.x, b.y, depth), nc.field->inWater(a.x, a.y, depth)};
@@ -164,7 +164,7 @@ TEST(NetCdfLand, VelocitiesExactlyZeroAtEveryTimeAreLandByDefault)
             return 0.0;
         return 0.3;
     });
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     EXPECT_EQ(nc.zeroLandNodes, 25u);
     EXPECT_EQ(nc.fillLandNodes, 0u);
     EXPECT_EQ(nc.landNodes, 25u);
@@ -182,11 +182,11 @@ TEST(NetCdfLand, VelocitiesExactlyZeroAtEveryTimeAreLandByDefault)
     // a still field (zero at every node and time) is water, not all land
     const std::string stillFile = dir.file("still.nc");
     writeFile(stillFile, 0, [](std::size_t, std::size_t, std::size_t, std::size_t) { return 0.0; });
-    EXPECT_EQ(loadNetCdfCurrents(stillFile).landNodes, 0u);
+    EXPECT_EQ(loadGriddedCurrents(stillFile).landNodes, 0u);
 
-    NetCdfCurrentOptions off;
+    GriddedCurrentOptions off;
     off.zeroVelocityLand = false;
-    const NetCdfCurrents still = loadNetCdfCurrents(path, off);
+    const GriddedCurrents still = loadGriddedCurrents(path, off);
     EXPECT_EQ(still.landNodes, 0u);
     EXPECT_TRUE(probe(still).block);
 }
@@ -229,16 +229,16 @@ TEST(NetCdfLand, MaskVariablesOfEachKindAreReadByTheirMeaning)
     {
         const std::string path = dir.file(std::string(c.mask.name) + ".nc");
         writeFile(path, 0, open, {c.mask});
-        const NetCdfCurrents nc = loadNetCdfCurrents(path);
+        const GriddedCurrents nc = loadGriddedCurrents(path);
         EXPECT_EQ(nc.maskVariable, c.mask.name) << c.what;
         EXPECT_EQ(nc.maskLandNodes, 25u) << c.what;
         const Probe p = probe(nc);
         EXPECT_FALSE(p.block) << c.what;
         EXPECT_TRUE(p.away) << c.what;
         // "none" turns the mask off
-        NetCdfCurrentOptions none;
+        GriddedCurrentOptions none;
         none.maskName = "none";
-        const NetCdfCurrents nm = loadNetCdfCurrents(path, none);
+        const GriddedCurrents nm = loadGriddedCurrents(path, none);
         EXPECT_TRUE(nm.maskVariable.empty()) << c.what;
         EXPECT_TRUE(probe(nm).block) << c.what;
     }
@@ -246,7 +246,7 @@ TEST(NetCdfLand, MaskVariablesOfEachKindAreReadByTheirMeaning)
     const std::string filled = dir.file("filled.nc");
     Extra m{"mask", {"lat", "lon"}, NC_FLOAT, block01(-1e20, 1), {}, {{"_FillValue", {-1e20}}}};
     writeFile(filled, 0, open, {m});
-    EXPECT_FALSE(probe(loadNetCdfCurrents(filled)).block);
+    EXPECT_FALSE(probe(loadGriddedCurrents(filled)).block);
 }
 
 TEST(NetCdfLand, LevelCountMaskClosesTheDeepLayersOnly)
@@ -263,7 +263,7 @@ TEST(NetCdfLand, LevelCountMaskClosesTheDeepLayersOnly)
               {},
               {}};
     writeFile(path, 3, open, {kmt});
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     EXPECT_EQ(nc.maskVariable, "KMT");
     EXPECT_TRUE(probe(nc, 0.0).block);
     EXPECT_TRUE(probe(nc, 40.0).block);
@@ -287,14 +287,14 @@ TEST(NetCdfLand, SeasonalMaskClosesOnlyTheRecordsOfTheTrip)
             {},
             {}};
     writeFile(path, 0, open, {m});
-    NetCdfCurrentOptions january;
+    GriddedCurrentOptions january;
     january.departure = "2026-01-01T00:00:00Z";
     january.horizon = 10 * 86400.0;
-    EXPECT_FALSE(probe(loadNetCdfCurrents(path, january)).block);
-    NetCdfCurrentOptions spring;
+    EXPECT_FALSE(probe(loadGriddedCurrents(path, january)).block);
+    GriddedCurrentOptions spring;
     spring.departure = "2026-03-15T00:00:00Z";
     spring.horizon = 10 * 86400.0;
-    const NetCdfCurrents nc = loadNetCdfCurrents(path, spring);
+    const GriddedCurrents nc = loadGriddedCurrents(path, spring);
     EXPECT_TRUE(probe(nc).block);
     // Jan 1 and Jan 31 are loaded (the stencil margin of cubic time schemes) but are not records of the trip
     EXPECT_EQ(nc.loadedShape[0], 4u);
@@ -310,12 +310,12 @@ TEST(NetCdfLand, AGivenMaskMustExistAndFitTheGrid)
                 return 0.0; },
             {},       {}};
     writeFile(path, 0, open, {m});
-    EXPECT_TRUE(loadNetCdfCurrents(path).maskVariable.empty());
-    NetCdfCurrentOptions given;
+    EXPECT_TRUE(loadGriddedCurrents(path).maskVariable.empty());
+    GriddedCurrentOptions given;
     given.maskName = "mask_u";
     try
     {
-        loadNetCdfCurrents(path, given);
+        loadGriddedCurrents(path, given);
         FAIL() << "expected an Error";
     }
     catch (const Error &e)
@@ -323,12 +323,12 @@ TEST(NetCdfLand, AGivenMaskMustExistAndFitTheGrid)
         const std::string msg = e.what();
         EXPECT_NE(msg.find("mask variable 'mask_u'"), std::string::npos) << msg;
         EXPECT_NE(msg.find("does not fit"), std::string::npos) << msg;
-        EXPECT_NE(msg.find("NetCdfCurrentOptions::maskName"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("GriddedCurrentOptions::maskName"), std::string::npos) << msg;
         EXPECT_NE(msg.find("xi_u = 20"), std::string::npos) << msg;
         EXPECT_NE(msg.find("staggered_mask.nc"), std::string::npos) << msg;
     }
     given.maskName = "landsea";
-    EXPECT_THROW(loadNetCdfCurrents(path, given), Error);
+    EXPECT_THROW(loadGriddedCurrents(path, given), Error);
 }
 
 TEST(NetCdfLand, DepthAverageOfALinearProfileIsExactAndKeepsTheLandOfItsLayers)
@@ -343,31 +343,31 @@ TEST(NetCdfLand, DepthAverageOfALinearProfileIsExactAndKeepsTheLandOfItsLayers)
         return 0.1 + 0.001 * 50.0 * double(k);
     });
     auto averaged = [&](double top, double bottom) {
-        NetCdfCurrentOptions o;
+        GriddedCurrentOptions o;
         o.depthAverage = std::make_pair(top, bottom);
-        return loadNetCdfCurrents(path, o);
+        return loadGriddedCurrents(path, o);
     };
     // u is linear in z, so its average over a range is its value at the range's mean depth: compare with the 3-D
     // field read at that depth (the same rotation into the local frame, the same interpolation)
-    const NetCdfCurrents full = loadNetCdfCurrents(path);
-    auto at = [](const NetCdfCurrents &nc, double z) {
+    const GriddedCurrents full = loadGriddedCurrents(path);
+    auto at = [](const GriddedCurrents &nc, double z) {
         const Point2 p = nc.toLocal({-68.0, 41.0});
         return nc.field->velocity(p.x, p.y, z, 0.0);
     };
-    const NetCdfCurrents deep = averaged(20.0, 170.0);
+    const GriddedCurrents deep = averaged(20.0, 170.0);
     EXPECT_EQ(deep.field->nz(), 1u);
     EXPECT_NEAR(at(deep, 0.0).u, at(full, 95.0).u, 1e-7);
     EXPECT_NEAR(at(deep, 0.0).v, at(full, 95.0).v, 1e-7);
     EXPECT_NEAR(std::hypot(at(deep, 0.0).u, at(deep, 0.0).v), std::hypot(0.195, 0.1), 1e-4);
     EXPECT_FALSE(probe(deep).block); // rock at 150 m lies within 20..170 m
-    const NetCdfCurrents shallow = averaged(0.0, 90.0);
+    const GriddedCurrents shallow = averaged(0.0, 90.0);
     EXPECT_NEAR(at(shallow, 0.0).u, at(full, 45.0).u, 1e-7);
     EXPECT_TRUE(probe(shallow).block); // the 150 m layer carries no weight over 0..90 m
     // beyond the deepest layer the profile is constant: 0..300 m averages 200 m of the profile and 100 m of 0.3,
     // (200 * 0.2 + 100 * 0.3) / 300 = 0.2333..., the profile's value at 133.33 m
-    const NetCdfCurrents beyond = averaged(0.0, 300.0);
+    const GriddedCurrents beyond = averaged(0.0, 300.0);
     EXPECT_NEAR(at(beyond, 0.0).u, at(full, 400.0 / 3.0).u, 1e-7);
-    NetCdfCurrentOptions bad;
+    GriddedCurrentOptions bad;
     bad.depthAverage = std::make_pair(100.0, 50.0);
-    EXPECT_THROW(loadNetCdfCurrents(path, bad), Error);
+    EXPECT_THROW(loadGriddedCurrents(path, bad), Error);
 }

@@ -9,7 +9,7 @@
 
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 using namespace ompl_glider;
 using glider_test::inPlane;
@@ -83,8 +83,8 @@ TEST(NetCdfLayouts, PackedHycomLikeValuesAtNodesAndBetween)
     TempDir tmp;
     const std::string path = tmp.file("hycom.nc");
     writeHycom(path, true);
-    NetCdfCurrentOptions o; // everything automatic; whole file
-    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    GriddedCurrentOptions o; // everything automatic; whole file
+    const GriddedCurrents nc = loadGriddedCurrents(path, o);
     ASSERT_TRUE(nc.geographic);
     ASSERT_TRUE(nc.dated);
     EXPECT_EQ(nc.uVariable, "water_u");
@@ -136,7 +136,7 @@ TEST(NetCdfLayouts, LoadsOnlyTheRegionDepthsAndTimesTheMissionNeeds)
     TempDir tmp;
     const std::string path = tmp.file("hycom.nc");
     writeHycom(path, false);
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.lonMin = -79.0; // the file is 0..360
     o.lonMax = -78.0;
     o.latMin = 31.0;
@@ -146,7 +146,7 @@ TEST(NetCdfLayouts, LoadsOnlyTheRegionDepthsAndTimesTheMissionNeeds)
     o.departure = "2000-01-01T06:00:00Z"; // hour 6 = index 2
     o.horizon = 3 * 3600.0;               // to hour 9 = index 3: indices 0 .. 6 with the margin of 2
     o.field.beyond = BeyondForecast::HoldLast;
-    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    const GriddedCurrents nc = loadGriddedCurrents(path, o);
     // lon -79 .. -78 = 281 .. 282: nodes 2..4 + 1 = 1..5 (5); lat 31..32: nodes 2..4 + 1 = 1..5 (5)
     EXPECT_EQ(nc.loadedShape, (std::vector<std::size_t>{7, 5, 5, 5}));
     EXPECT_LT(nc.loadedValues * 6, nc.fileValues);
@@ -155,7 +155,7 @@ TEST(NetCdfLayouts, LoadsOnlyTheRegionDepthsAndTimesTheMissionNeeds)
     EXPECT_NEAR(nc.projection->lon0(), -78.5, 1e-12);
     EXPECT_NEAR(nc.projection->lat0(), 31.5, 1e-12);
     // the subset gives the same values as the whole file
-    const NetCdfCurrents all = loadNetCdfCurrents(path, NetCdfCurrentOptions{});
+    const GriddedCurrents all = loadGriddedCurrents(path, GriddedCurrentOptions{});
     for (double lon : {-78.9, -78.3})
         for (double lat : {31.2, 31.8})
             for (double z : {0.0, 15.0})
@@ -173,7 +173,7 @@ TEST(NetCdfLayouts, LoadsOnlyTheRegionDepthsAndTimesTheMissionNeeds)
     o.departure = "2000-01-03T00:00:00Z";
     try
     {
-        loadNetCdfCurrents(path, o);
+        loadGriddedCurrents(path, o);
         FAIL();
     }
     catch (const Error &e)
@@ -184,9 +184,9 @@ TEST(NetCdfLayouts, LoadsOnlyTheRegionDepthsAndTimesTheMissionNeeds)
         EXPECT_NE(m.find("2000-01-02T09:00:00Z"), std::string::npos) << m; // the last forecast time
     }
     o.departure = "1999-12-31T23:00:00Z";
-    EXPECT_THROW(loadNetCdfCurrents(path, o), Error);
+    EXPECT_THROW(loadGriddedCurrents(path, o), Error);
     o.departure = "7200"; // seconds after the first forecast time
-    EXPECT_NEAR(loadNetCdfCurrents(path, o).departureTime, 7200.0, 1e-9);
+    EXPECT_NEAR(loadGriddedCurrents(path, o).departureTime, 7200.0, 1e-9);
 }
 
 TEST(NetCdfLayouts, CmemsLikeFloatDescendingLatitudeWithFill)
@@ -232,7 +232,7 @@ TEST(NetCdfLayouts, CmemsLikeFloatDescendingLatitudeWithFill)
         w.put(u, pu);
         w.put(v, pv);
     }
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     EXPECT_EQ(nc.isoTime(0), "2000-01-01T00:00:00Z");
     EXPECT_EQ(nc.isoTime(86400), "2000-01-02T00:00:00Z");
     EXPECT_NEAR(nc.fieldTime("2000-01-01T12:00:00Z"), 43200.0, 1e-9);
@@ -284,12 +284,12 @@ TEST(NetCdfLayouts, GlobalGridCutAcrossTheAntimeridian)
         w.put(u, pu);
         w.put(v, pv);
     }
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.lonMin = 178.0;
     o.lonMax = -178.0; // across the antimeridian
     o.latMin = 0.0;
     o.latMax = 1.0;
-    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    const GriddedCurrents nc = loadGriddedCurrents(path, o);
     EXPECT_LE(nc.loadedShape[3], 10u);            // 176 .. 184 (9 nodes), not 360
     EXPECT_TRUE(std::isinf(nc.field->timeEnd())); // steady
     for (double lo : {178.0, 179.5, -180.0, -179.25, -178.0})
@@ -359,10 +359,10 @@ TEST(NetCdfLayouts, CurvilinearNemoLikeGridWithLandAndNoleapCalendar)
         w.put(u, pu);
         w.put(v, pv);
     }
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.uName = "vozocrtx";
     o.vName = "vomecrty";
-    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    const GriddedCurrents nc = loadGriddedCurrents(path, o);
     ASSERT_TRUE(nc.field->curvilinear());
     EXPECT_EQ(nc.calendar, Calendar::NoLeap);
     EXPECT_EQ(nc.isoTime(0), "2020-01-01T00:00:00Z");
@@ -396,7 +396,7 @@ TEST(NetCdfLayouts, CurvilinearNemoLikeGridWithLandAndNoleapCalendar)
     o.latMin = nodeLat(2, 2);
     o.latMax = nodeLat(2, 4);
     o.marginNodes = 1;
-    const NetCdfCurrents sub = loadNetCdfCurrents(path, o);
+    const GriddedCurrents sub = loadGriddedCurrents(path, o);
     EXPECT_LT(sub.loadedValues, nc.loadedValues);
     p = sub.toLocal({nodeLon(3, 3), nodeLat(3, 3)});
     const Velocity e = inPlane(sub, nodeLon(3, 3), nodeLat(3, 3), uf(3, 3, 0), vf(3, 3, 0));
@@ -433,7 +433,7 @@ TEST(NetCdfLayouts, DepthPositiveUpAndCartesianFiles)
         w.put(u, pu);
         w.put(v, pv);
     }
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     EXPECT_FALSE(nc.geographic);
     EXPECT_EQ(nc.projection, nullptr);
     const Velocity c = nc.field->velocity(1500.0, 500.0, 75.0, 0.0); // km axes -> metres
@@ -441,21 +441,21 @@ TEST(NetCdfLayouts, DepthPositiveUpAndCartesianFiles)
     EXPECT_NEAR(c.v, 0.01 * (-5.0 + 0.5), 1e-7);
     EXPECT_EQ(nc.field->depthAxis().front(), 0.0);
     EXPECT_EQ(nc.field->depthAxis().back(), 100.0);
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.maxDepth = 10.0; // layers 0, 50 + 2 -> all 3 here
-    EXPECT_EQ(loadNetCdfCurrents(path, o).loadedShape[1], 3u);
+    EXPECT_EQ(loadGriddedCurrents(path, o).loadedShape[1], 3u);
     // the same with every name given: still Cartesian (the names do not make it geographic)
     o.uName = "u";
     o.vName = "v";
     o.lonName = "x";
     o.latName = "y";
     o.depthName = "z";
-    const NetCdfCurrents named = loadNetCdfCurrents(path, o);
+    const GriddedCurrents named = loadGriddedCurrents(path, o);
     EXPECT_FALSE(named.geographic);
     EXPECT_NEAR(named.field->velocity(1500.0, 500.0, 75.0, 0.0).u, c.u, 1e-9);
     // asking for geographic coordinates of a Cartesian file is an error naming what was expected
     o.coordinates = CoordinateMode::Geographic;
-    EXPECT_THROW(loadNetCdfCurrents(path, o), Error);
+    EXPECT_THROW(loadGriddedCurrents(path, o), Error);
 }
 
 TEST(NetCdfLayouts, ErrorsNameTheFileTheVariableAndWhatWasExpected)
@@ -463,10 +463,10 @@ TEST(NetCdfLayouts, ErrorsNameTheFileTheVariableAndWhatWasExpected)
     TempDir tmp;
     const std::string path = tmp.file("hycom.nc");
     writeHycom(path, false);
-    auto message = [&](const std::string &p, const NetCdfCurrentOptions &o) -> std::string {
+    auto message = [&](const std::string &p, const GriddedCurrentOptions &o) -> std::string {
         try
         {
-            loadNetCdfCurrents(p, o);
+            loadGriddedCurrents(p, o);
         }
         catch (const Error &e)
         {
@@ -474,7 +474,7 @@ TEST(NetCdfLayouts, ErrorsNameTheFileTheVariableAndWhatWasExpected)
         }
         return "";
     };
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.uName = "nope";
     std::string m = message(path, o);
     EXPECT_NE(m.find(path), std::string::npos) << m;
@@ -532,7 +532,7 @@ TEST(NetCdfLayouts, ErrorsNameTheFileTheVariableAndWhatWasExpected)
     m = message(variant("dims.nc", "m/s", "hours since 2000-01-01", true), {});
     EXPECT_NE(m.find("'member'"), std::string::npos) << m;
     // region outside the file
-    NetCdfCurrentOptions r;
+    GriddedCurrentOptions r;
     r.lonMin = 0;
     r.lonMax = 1;
     r.latMin = -60;

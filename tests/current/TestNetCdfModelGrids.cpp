@@ -14,7 +14,7 @@
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/LocalProjection.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 using namespace ompl_glider;
 using glider_test::inPlane;
@@ -29,7 +29,7 @@ using glider_test::WrapGrid;
 namespace
 {
 
-void expectWrapNodes(const NetCdfCurrents &nc, const WrapGrid &g, std::size_t j, const std::vector<std::size_t> &cols)
+void expectWrapNodes(const GriddedCurrents &nc, const WrapGrid &g, std::size_t j, const std::vector<std::size_t> &cols)
 {
     for (std::size_t i : cols)
     {
@@ -57,7 +57,7 @@ TEST(NetCdfModelGrids, CurvilinearGridWhoseIndexWrapsIsSubsetAcrossItsSeam)
         const std::string path = tmp.file(repeat ? "repeat.nc" : "wrap.nc");
         g.write(path);
         // a region across the index seam (43W | 40W): the columns on both sides of it, not the whole band
-        const NetCdfCurrents nc = loadNetCdfCurrents(path, regionOptions(-52, -28, 10, 30));
+        const GriddedCurrents nc = loadGriddedCurrents(path, regionOptions(-52, -28, 10, 30));
         ASSERT_TRUE(nc.field->curvilinear());
         EXPECT_LE(nc.loadedShape[3], 16u) << "columns loaded (repeat " << repeat << ")";
         EXPECT_GE(nc.loadedShape[3], 9u);
@@ -76,10 +76,10 @@ TEST(NetCdfModelGrids, CurvilinearGridWhoseIndexWrapsIsSubsetAcrossItsSeam)
         EXPECT_NEAR(c.u, e.u, 2e-4);
         EXPECT_NEAR(c.v, e.v, 2e-4);
         // a region away from the seam, and one across the value seam (180) near column 73
-        const NetCdfCurrents east = loadNetCdfCurrents(path, regionOptions(10, 30, -10, 10));
+        const GriddedCurrents east = loadGriddedCurrents(path, regionOptions(10, 30, -10, 10));
         EXPECT_LE(east.loadedShape[3], 14u);
         expectWrapNodes(east, g, 20, {17, 18, 19, 20});
-        const NetCdfCurrents pacific = loadNetCdfCurrents(path, regionOptions(170, -170, 0, 20));
+        const GriddedCurrents pacific = loadGriddedCurrents(path, regionOptions(170, -170, 0, 20));
         EXPECT_LE(pacific.loadedShape[3], 14u);
         expectWrapNodes(pacific, g, 25, {70, 71, 72, 73});
     }
@@ -91,7 +91,7 @@ TEST(NetCdfModelGrids, RomsCGridIsReadAtItsOwnPointsRotatedAndMasked)
     const RomsGrid grid;
     const std::string path = tmp.file("roms.nc");
     grid.write(path);
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     ASSERT_TRUE(nc.field->curvilinear());
     EXPECT_EQ(nc.maskVariable, "mask_rho");
     // the interior rho points: 12 x 16
@@ -145,9 +145,9 @@ TEST(NetCdfModelGrids, RomsCGridIsReadAtItsOwnPointsRotatedAndMasked)
         EXPECT_NEAR(c.v, e.v, 2e-6);
     }
     // without the angle the components stay along the grid: 30 degrees off
-    NetCdfCurrentOptions none;
+    GriddedCurrentOptions none;
     none.angleName = "none";
-    const NetCdfCurrents raw = loadNetCdfCurrents(path, none);
+    const GriddedCurrents raw = loadGriddedCurrents(path, none);
     const LonLat g = grid.geo(4, 4);
     double ue, vn;
     RomsGrid::current(grid.at(4, 4), ue, vn);
@@ -156,9 +156,9 @@ TEST(NetCdfModelGrids, RomsCGridIsReadAtItsOwnPointsRotatedAndMasked)
     EXPECT_GT(std::hypot(c.u - e.u, c.v - e.v), 0.1);
     // a region: fewer rho points, the same values
     const LonLat lo = grid.geo(3, 3), hi = grid.geo(7, 8);
-    const NetCdfCurrents sub =
-        loadNetCdfCurrents(path, regionOptions(std::min(lo.lon, hi.lon), std::max(lo.lon, hi.lon),
-                                               std::min(lo.lat, hi.lat), std::max(lo.lat, hi.lat)));
+    const GriddedCurrents sub =
+        loadGriddedCurrents(path, regionOptions(std::min(lo.lon, hi.lon), std::max(lo.lon, hi.lon),
+                                                std::min(lo.lat, hi.lat), std::max(lo.lat, hi.lat)));
     EXPECT_LT(sub.loadedValues, nc.loadedValues);
     const LonLat m = grid.geo(5, 5);
     RomsGrid::current(grid.at(5, 5), ue, vn);
@@ -174,7 +174,7 @@ TEST(NetCdfModelGrids, RomsCGridWithoutMasksTakesLandFromFillValues)
     const RomsGrid grid;
     const std::string path = tmp.file("roms_nomask.nc");
     grid.write(path, false);
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     EXPECT_EQ(nc.maskVariable, "");
     // inside the land block (both faces of u fill values): land; two points off it: water with the true current
     for (auto [j, i] : {std::pair<std::size_t, std::size_t>{10, 12}, {10, 13}})
@@ -257,10 +257,10 @@ TEST(NetCdfModelGrids, PopBGridAlongTheGridInCmPerSecondWithAngleAndKmu)
         w.put(u, pu);
         w.put(v, pv);
     }
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.uName = "UVEL";
     o.vName = "VVEL";
-    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    const GriddedCurrents nc = loadGriddedCurrents(path, o);
     EXPECT_EQ(nc.maskVariable, "KMU");
     EXPECT_EQ(nc.loadedShape[3], ni); // the U points themselves
     for (auto [j, i] : {std::pair<std::size_t, std::size_t>{2, 2}, {6, 7}, {12, 16}})
@@ -289,11 +289,11 @@ TEST(NetCdfModelGrids, StaggeredAndAngleErrorsNameTheVariables)
     const RomsGrid grid;
     const std::string path = tmp.file("roms.nc");
     grid.write(path);
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.angleName = "grid_angle";
     try
     {
-        loadNetCdfCurrents(path, o);
+        loadGriddedCurrents(path, o);
         FAIL() << "a missing angle variable must be refused";
     }
     catch (const Error &e)
@@ -303,7 +303,7 @@ TEST(NetCdfModelGrids, StaggeredAndAngleErrorsNameTheVariables)
     o.angleName = "mask_u"; // not on the grid of the rho points
     try
     {
-        loadNetCdfCurrents(path, o);
+        loadGriddedCurrents(path, o);
         FAIL() << "an angle off the grid must be refused";
     }
     catch (const Error &e)
@@ -333,7 +333,7 @@ TEST(NetCdfModelGrids, StaggeredAndAngleErrorsNameTheVariables)
     }
     try
     {
-        loadNetCdfCurrents(odd);
+        loadGriddedCurrents(odd);
         FAIL() << "velocities on unrelated grids must be refused";
     }
     catch (const Error &e)
@@ -350,9 +350,9 @@ TEST(NetCdfModelGrids, RomsSCoordinateLevelsBecomeDepthsPerColumn)
     grid.sLevels = 8;
     const std::string path = tmp.file("roms_s.nc");
     grid.write(path);
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.maxDepth = 100.0;
-    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    const GriddedCurrents nc = loadGriddedCurrents(path, o);
     const GriddedCurrentField &f = *nc.field;
     // depth levels in metres: the standard ones down to 100 m and 2 more
     const Axis &levels = f.depthAxis();
@@ -383,7 +383,7 @@ TEST(NetCdfModelGrids, RomsSCoordinateLevelsBecomeDepthsPerColumn)
     EXPECT_FALSE(f.inWater(bank.x, bank.y, 50.0));
     // a depth average over 0..40 m of the same file: one layer
     o.depthAverage = std::make_pair(0.0, 40.0);
-    const NetCdfCurrents avg = loadNetCdfCurrents(path, o);
+    const GriddedCurrents avg = loadGriddedCurrents(path, o);
     EXPECT_EQ(avg.field->depthAxis().size(), 1u);
 }
 
@@ -427,7 +427,7 @@ TEST(NetCdfModelGrids, RomsEastwardVelocitiesOnRhoPointsAreNotTurnedByTheAngle)
         w.put(u, pu);
         w.put(v, pv);
     }
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     EXPECT_EQ(nc.uVariable, "u_eastward");
     const LonLat g = grid.geo(6, 7);
     double ue, vn;

@@ -1,4 +1,4 @@
-// A forecast in several files read as one (loadNetCdfCurrents() with a list of files): the same field as the one
+// A forecast in several files read as one (loadGriddedCurrents() with a list of files): the same field as the one
 // combined file, whatever the files' time units and origins and the order they are given in; the later file wins
 // where two overlap; only the files the trip needs are read; mismatched grids, calendars, undated files, gaps and
 // glob patterns that match nothing are refused with messages that name the files.
@@ -11,7 +11,7 @@
 
 #include "MultiFileForecast.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 using namespace ompl_glider;
 using namespace glider_test;
@@ -40,9 +40,9 @@ std::string messageOf(const std::function<void()> &f)
     return "(no error)";
 }
 
-NetCdfCurrentOptions options()
+GriddedCurrentOptions options()
 {
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.lonMin = -52.9;
     o.lonMax = -52.1;
     o.latMin = 47.1;
@@ -51,7 +51,7 @@ NetCdfCurrentOptions options()
 }
 
 /// The two fields give the same velocities (bit for bit) at sampled points and times.
-void expectSameField(const NetCdfCurrents &a, const NetCdfCurrents &b, double t0, double t1)
+void expectSameField(const GriddedCurrents &a, const GriddedCurrents &b, double t0, double t1)
 {
     ASSERT_EQ(a.loadedShape, b.loadedShape);
     EXPECT_EQ(a.field->timeAxis().nodes(), b.field->timeAxis().nodes());
@@ -78,11 +78,11 @@ void expectSameField(const NetCdfCurrents &a, const NetCdfCurrents &b, double t0
 TEST(NetCdfMultiFile, DailyFilesGiveTheCombinedFileField)
 {
     Files f;
-    const NetCdfCurrentOptions o = options();
-    const NetCdfCurrents one = loadNetCdfCurrents(f.combined, o);
+    const GriddedCurrentOptions o = options();
+    const GriddedCurrents one = loadGriddedCurrents(f.combined, o);
     // given in reverse time order: ordered by their first (dated) times
     const std::vector<std::string> reversed(f.days.rbegin(), f.days.rend());
-    const NetCdfCurrents many = loadNetCdfCurrents(reversed, o);
+    const GriddedCurrents many = loadGriddedCurrents(reversed, o);
     EXPECT_EQ(many.files, f.days);
     EXPECT_EQ(one.files, std::vector<std::string>{f.combined});
     EXPECT_TRUE(many.dated);
@@ -108,11 +108,11 @@ TEST(NetCdfMultiFile, DailyFilesGiveTheCombinedFileField)
 TEST(NetCdfMultiFile, OnlyTheFilesOfTheTripAreRead)
 {
     Files f;
-    NetCdfCurrentOptions o = options();
+    GriddedCurrentOptions o = options();
     o.departure = "2026-03-01T20:00:00Z";
     o.horizon = 20.0 * 3600.0; // to 2026-03-02T16:00; 2 records of margin: to 2026-03-03T00:00 (day 2's first)
-    const NetCdfCurrents one = loadNetCdfCurrents(f.combined, o);
-    const NetCdfCurrents many = loadNetCdfCurrents(f.days, o);
+    const GriddedCurrents one = loadGriddedCurrents(f.combined, o);
+    const GriddedCurrents many = loadGriddedCurrents(f.days, o);
     EXPECT_EQ(many.files, (std::vector<std::string>{f.days[0], f.days[1], f.days[2]}));
     EXPECT_EQ(many.departureTime, 20.0 * 3600.0);
     EXPECT_EQ(many.departureTime, one.departureTime);
@@ -122,11 +122,11 @@ TEST(NetCdfMultiFile, OnlyTheFilesOfTheTripAreRead)
     // a departure in the gap between two files' records is a departure like any other
     o.departure = "2026-03-01T22:30:00Z";
     o.horizon = 2.0 * 3600.0;
-    const NetCdfCurrents small = loadNetCdfCurrents(f.days, o);
+    const GriddedCurrents small = loadGriddedCurrents(f.days, o);
     EXPECT_EQ(small.files, (std::vector<std::string>{f.days[0], f.days[1]}));
     // a departure outside the joined forecast: an error naming the files
     o.departure = "2026-03-05T00:00:00Z";
-    const std::string msg = messageOf([&] { loadNetCdfCurrents(f.days, o); });
+    const std::string msg = messageOf([&] { loadGriddedCurrents(f.days, o); });
     EXPECT_NE(msg.find("outside the forecast"), std::string::npos) << msg;
     EXPECT_NE(msg.find("4 files"), std::string::npos) << msg;
 }
@@ -136,10 +136,10 @@ TEST(NetCdfMultiFile, ZeroVelocityLandIsDecidedOnAllTheTripsRecords)
     Files f(false); // no fill values: the zeros are the only land the files give
     // node (3, 2) is still throughout day 0's file, moving from day 1 on: water for a trip into day 1, as in the
     // combined file (not land because one file saw it still)
-    NetCdfCurrentOptions o = options();
+    GriddedCurrentOptions o = options();
     o.departure = "2026-03-01T15:00:00Z";
     o.horizon = 12.0 * 3600.0;
-    NetCdfCurrents one = loadNetCdfCurrents(f.combined, o), many = loadNetCdfCurrents(f.days, o);
+    GriddedCurrents one = loadGriddedCurrents(f.combined, o), many = loadGriddedCurrents(f.days, o);
     EXPECT_EQ(many.zeroLandNodes, 1u);
     EXPECT_EQ(many.zeroLandNodes, one.zeroLandNodes);
     EXPECT_EQ(many.files.size(), 2u);
@@ -147,8 +147,8 @@ TEST(NetCdfMultiFile, ZeroVelocityLandIsDecidedOnAllTheTripsRecords)
     // a trip within day 0 (its margin record in day 1 does not count): land in both
     o.departure = "2026-03-01T06:00:00Z";
     o.horizon = 9.0 * 3600.0;
-    one = loadNetCdfCurrents(f.combined, o);
-    many = loadNetCdfCurrents(f.days, o);
+    one = loadGriddedCurrents(f.combined, o);
+    many = loadGriddedCurrents(f.days, o);
     EXPECT_EQ(many.files.size(), 2u); // the stencil margin reaches 00:00 of day 1
     EXPECT_EQ(many.zeroLandNodes, 2u);
     EXPECT_EQ(many.zeroLandNodes, one.zeroLandNodes);
@@ -158,9 +158,9 @@ TEST(NetCdfMultiFile, ZeroVelocityLandIsDecidedOnAllTheTripsRecords)
 TEST(NetCdfMultiFile, TimeAxisOfSeveralFiles)
 {
     Files f;
-    const NetCdfTimeAxis one = readNetCdfTimeAxis(f.combined, NetCdfCurrentOptions{});
-    const NetCdfTimeAxis many = readNetCdfTimeAxis(std::vector<std::string>{f.days[2], f.days[0], f.days[3], f.days[1]},
-                                                   NetCdfCurrentOptions{});
+    const ForecastTimeAxis one = readForecastTimeAxis(f.combined, GriddedCurrentOptions{});
+    const ForecastTimeAxis many = readForecastTimeAxis(
+        std::vector<std::string>{f.days[2], f.days[0], f.days[3], f.days[1]}, GriddedCurrentOptions{});
     EXPECT_TRUE(many.found && many.dated);
     EXPECT_FALSE(many.steady);
     EXPECT_EQ(many.originSeconds, one.originSeconds);
@@ -176,7 +176,7 @@ TEST(NetCdfMultiFile, MismatchedGridsNameBothFiles)
     shifted.lonShift = 0.05;
     const std::string bad = f.dir.file("shifted_day1.nc");
     writeMfFile(bad, shifted);
-    const std::string msg = messageOf([&] { loadNetCdfCurrents({f.days[0], bad, f.days[2]}, options()); });
+    const std::string msg = messageOf([&] { loadGriddedCurrents({f.days[0], bad, f.days[2]}, options()); });
     EXPECT_NE(msg.find("'" + f.days[0] + "'"), std::string::npos) << msg;
     EXPECT_NE(msg.find("'" + bad + "'"), std::string::npos) << msg;
     EXPECT_NE(msg.find("grids in the trip's region differ"), std::string::npos) << msg;
@@ -190,7 +190,7 @@ TEST(NetCdfMultiFile, CalendarsMustAgree)
     noleap.calendar = "noleap";
     const std::string bad = f.dir.file("noleap_day1.nc");
     writeMfFile(bad, noleap);
-    const std::string msg = messageOf([&] { loadNetCdfCurrents({f.days[0], bad}, options()); });
+    const std::string msg = messageOf([&] { loadGriddedCurrents({f.days[0], bad}, options()); });
     EXPECT_NE(msg.find("calendars differ"), std::string::npos) << msg;
     EXPECT_NE(msg.find(bad), std::string::npos) << msg;
     EXPECT_NE(msg.find(f.days[0]), std::string::npos) << msg;
@@ -205,10 +205,10 @@ TEST(NetCdfMultiFile, UndatedFilesCannotBeJoined)
     writeMfFile(bad, undated);
     for (const auto &list : {std::vector<std::string>{f.days[0], bad}, std::vector<std::string>{bad, f.days[0]}})
     {
-        const std::string msg = messageOf([&] { loadNetCdfCurrents(list, options()); });
+        const std::string msg = messageOf([&] { loadGriddedCurrents(list, options()); });
         EXPECT_NE(msg.find("NetCDF file '" + bad + "'"), std::string::npos) << msg;
         EXPECT_NE(msg.find("have no date"), std::string::npos) << msg;
-        const std::string axis = messageOf([&] { readNetCdfTimeAxis(list, NetCdfCurrentOptions{}); });
+        const std::string axis = messageOf([&] { readForecastTimeAxis(list, GriddedCurrentOptions{}); });
         EXPECT_NE(axis.find("have no date"), std::string::npos) << axis;
     }
 }
@@ -216,11 +216,11 @@ TEST(NetCdfMultiFile, UndatedFilesCannotBeJoined)
 TEST(NetCdfMultiFile, SameStartTwiceAndSteadyRecordAreRefused)
 {
     Files f;
-    std::string msg = messageOf([&] { loadNetCdfCurrents({f.days[0], f.days[1], f.days[0]}, options()); });
+    std::string msg = messageOf([&] { loadGriddedCurrents({f.days[0], f.days[1], f.days[0]}, options()); });
     EXPECT_NE(msg.find("both begin at 2026-03-01T00:00:00Z"), std::string::npos) << msg;
-    NetCdfCurrentOptions o = options();
+    GriddedCurrentOptions o = options();
     o.steadyRecord = 0;
-    msg = messageOf([&] { loadNetCdfCurrents(f.days, o); });
+    msg = messageOf([&] { loadGriddedCurrents(f.days, o); });
     EXPECT_NE(msg.find("steadyRecord"), std::string::npos) << msg;
 }
 
@@ -229,15 +229,15 @@ TEST(NetCdfMultiFile, GapInTheTripIsRefusedOutsideItIsNot)
     Files f;
     // day 1 missing: 21:00 on day 0, then 00:00 on day 2 (27 h, the step is 3 h)
     const std::vector<std::string> holed{f.days[0], f.days[2], f.days[3]};
-    std::string msg = messageOf([&] { loadNetCdfCurrents(holed, options()); });
+    std::string msg = messageOf([&] { loadGriddedCurrents(holed, options()); });
     EXPECT_NE(msg.find("a gap of 27 h"), std::string::npos) << msg;
     EXPECT_NE(msg.find("'" + f.days[0] + "' and '" + f.days[2] + "'"), std::string::npos) << msg;
     EXPECT_NE(msg.find("2026-03-01T21:00:00Z"), std::string::npos) << msg;
     // a trip after the gap does not read the files before it
-    NetCdfCurrentOptions o = options();
+    GriddedCurrentOptions o = options();
     o.departure = "2026-03-03T12:00:00Z";
     o.horizon = 6.0 * 3600.0;
-    const NetCdfCurrents after = loadNetCdfCurrents(holed, o);
+    const GriddedCurrents after = loadGriddedCurrents(holed, o);
     EXPECT_EQ(after.files, (std::vector<std::string>{f.days[2], f.days[3]}));
 }
 
@@ -252,7 +252,7 @@ TEST(NetCdfMultiFile, GlobPatternsAndLists)
     ASSERT_EQ(got.size(), 4u);
     for (std::size_t k = 0; k < got.size(); ++k)
         EXPECT_EQ(std::filesystem::path(got[k]), std::filesystem::path(sorted[k]));
-    const NetCdfCurrents many = loadNetCdfCurrents(got, options());
+    const GriddedCurrents many = loadGriddedCurrents(got, options());
     for (std::size_t k = 0; k < 4; ++k)
         EXPECT_EQ(std::filesystem::path(many.files[k]), std::filesystem::path(f.days[k]));
     // a comma-separated list, plain names and patterns mixed

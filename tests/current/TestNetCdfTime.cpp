@@ -1,5 +1,5 @@
 // CF time units and calendars (standard, proleptic_gregorian, julian, noleap, all_leap, 360_day) and ISO dates;
-// the time axis of a forecast file found as the loader finds it (readNetCdfTimeAxis), whatever its name.
+// the time axis of a forecast file found as the loader finds it (readForecastTimeAxis), whatever its name.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -11,7 +11,7 @@
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/Time.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 using namespace ompl_glider;
 using glider_test::NcWriter;
@@ -170,7 +170,7 @@ std::string timeErrorOf(const std::function<void()> &f)
 }
 } // namespace
 
-TEST(NetCdfTimeAxis, FoundByStandardNameAxisOrUnitsWhateverItsName)
+TEST(ForecastTimeAxis, FoundByStandardNameAxisOrUnitsWhateverItsName)
 {
     TempDir tmp;
     // NEMO style: time_counter, standard_name time, axis T, seconds since 1950-01-01 in the noleap calendar.
@@ -182,7 +182,7 @@ TEST(NetCdfTimeAxis, FoundByStandardNameAxisOrUnitsWhateverItsName)
                              "time",
                              "T",
                              {70 * 365 * 86400.0, 70 * 365 * 86400.0 + 21600, 70 * 365 * 86400.0 + 43200}});
-    const NetCdfTimeAxis a = readNetCdfTimeAxis(nemo);
+    const ForecastTimeAxis a = readForecastTimeAxis(nemo);
     EXPECT_TRUE(a.found);
     EXPECT_TRUE(a.dated);
     EXPECT_EQ(a.variable, "time_counter");
@@ -192,7 +192,7 @@ TEST(NetCdfTimeAxis, FoundByStandardNameAxisOrUnitsWhateverItsName)
     EXPECT_EQ(a.span, 43200.0);
     EXPECT_EQ(formatDateTime(dateFromCalendarEpoch(a.originSeconds, a.calendar)), "2020-01-01T00:00:00Z");
     // the loader reads the same axis
-    const NetCdfCurrents loaded = loadNetCdfCurrents(nemo);
+    const GriddedCurrents loaded = loadGriddedCurrents(nemo);
     EXPECT_EQ(loaded.calendar, a.calendar);
     EXPECT_EQ(loaded.originSeconds, a.originSeconds);
     EXPECT_EQ(loaded.forecastEnd, a.span);
@@ -202,7 +202,7 @@ TEST(NetCdfTimeAxis, FoundByStandardNameAxisOrUnitsWhateverItsName)
     // 711859 days, plus the first value 0.5 days.
     const std::string upper = tmp.file("upper.nc");
     writeTimeAxisFile(upper, {"TIME", "days since 1950-01-01", "", "", "", {0.5, 1.5, 2.5, 3.5}});
-    const NetCdfTimeAxis b = readNetCdfTimeAxis(upper);
+    const ForecastTimeAxis b = readForecastTimeAxis(upper);
     EXPECT_TRUE(b.found);
     EXPECT_TRUE(b.dated);
     EXPECT_EQ(b.variable, "TIME");
@@ -210,12 +210,12 @@ TEST(NetCdfTimeAxis, FoundByStandardNameAxisOrUnitsWhateverItsName)
     EXPECT_EQ(b.originSeconds, (711859 + 0.5) * 86400.0);
     EXPECT_EQ(b.size, 4u);
     EXPECT_EQ(b.span, 3 * 86400.0);
-    EXPECT_EQ(loadNetCdfCurrents(upper).originSeconds, b.originSeconds);
+    EXPECT_EQ(loadGriddedCurrents(upper).originSeconds, b.originSeconds);
 
     // a name in no list, found by its units alone; 360_day calendar: 1999 years of 360 days to 2000-01-01
     const std::string odd = tmp.file("odd.nc");
     writeTimeAxisFile(odd, {"forecast_instant", "hours since 2000-01-01", "360_day", "", "", {6.0, 12.0}});
-    const NetCdfTimeAxis c = readNetCdfTimeAxis(odd);
+    const ForecastTimeAxis c = readForecastTimeAxis(odd);
     EXPECT_EQ(c.variable, "forecast_instant");
     EXPECT_EQ(c.calendar, Calendar::Day360);
     EXPECT_EQ(c.originSeconds, 1999.0 * 360 * 86400 + 6 * 3600.0);
@@ -224,7 +224,7 @@ TEST(NetCdfTimeAxis, FoundByStandardNameAxisOrUnitsWhateverItsName)
     // axis T without "since": found but undated (raw values)
     const std::string raw = tmp.file("raw.nc");
     writeTimeAxisFile(raw, {"step", "", "", "", "T", {0.0, 2.0, 5.0}});
-    const NetCdfTimeAxis d = readNetCdfTimeAxis(raw);
+    const ForecastTimeAxis d = readForecastTimeAxis(raw);
     EXPECT_TRUE(d.found);
     EXPECT_FALSE(d.dated);
     EXPECT_EQ(d.variable, "step");
@@ -233,23 +233,23 @@ TEST(NetCdfTimeAxis, FoundByStandardNameAxisOrUnitsWhateverItsName)
     EXPECT_EQ(d.span, 5.0);
 
     // the time variable named explicitly (with the velocity name)
-    const NetCdfTimeAxis e = readNetCdfTimeAxis(nemo, "time_counter", "uo");
+    const ForecastTimeAxis e = readForecastTimeAxis(nemo, "time_counter", "uo");
     EXPECT_EQ(e.variable, "time_counter");
     EXPECT_EQ(e.originSeconds, a.originSeconds);
 }
 
-TEST(NetCdfTimeAxis, SteadyFilesHaveNoTimeAxisAndErrorsNameTheFile)
+TEST(ForecastTimeAxis, SteadyFilesHaveNoTimeAxisAndErrorsNameTheFile)
 {
     TempDir tmp;
     // no time dimension on the velocities, although a variable "time" exists: a steady field, as the loader sees it
     const std::string steady = tmp.file("steady.nc");
     writeTimeAxisFile(steady, {"", "", "", "", "", {}, true});
-    const NetCdfTimeAxis a = readNetCdfTimeAxis(steady);
+    const ForecastTimeAxis a = readForecastTimeAxis(steady);
     EXPECT_FALSE(a.found);
     EXPECT_FALSE(a.dated);
     EXPECT_EQ(a.variable, "");
     EXPECT_EQ(a.size, 0u);
-    EXPECT_EQ(loadNetCdfCurrents(steady).loadedShape[0], 1u);
+    EXPECT_EQ(loadGriddedCurrents(steady).loadedShape[0], 1u);
 
     // not NetCDF
     const std::string text = tmp.file("text.nc");
@@ -257,23 +257,23 @@ TEST(NetCdfTimeAxis, SteadyFilesHaveNoTimeAxisAndErrorsNameTheFile)
     ASSERT_NE(fp, nullptr);
     std::fputs("not netcdf\n", fp);
     std::fclose(fp);
-    std::string m = timeErrorOf([&] { readNetCdfTimeAxis(text); });
+    std::string m = timeErrorOf([&] { readForecastTimeAxis(text); });
     EXPECT_NE(m.find("'" + text + "'"), std::string::npos) << m;
     EXPECT_NE(m.find("cannot open"), std::string::npos) << m;
 
     // a time variable named but missing; a velocity named but missing
     const std::string nemo = tmp.file("nemo.nc");
     writeTimeAxisFile(nemo, {"time_counter", "days since 1950-01-01", "noleap", "time", "T", {0.0, 1.0}});
-    m = timeErrorOf([&] { readNetCdfTimeAxis(nemo, "time"); });
+    m = timeErrorOf([&] { readForecastTimeAxis(nemo, "time"); });
     EXPECT_NE(m.find("'time'"), std::string::npos) << m;
     EXPECT_NE(m.find(nemo), std::string::npos) << m;
-    m = timeErrorOf([&] { readNetCdfTimeAxis(nemo, "", "water_u"); });
+    m = timeErrorOf([&] { readForecastTimeAxis(nemo, "", "water_u"); });
     EXPECT_NE(m.find("'water_u'"), std::string::npos) << m;
 
     // units the loader does not accept
     const std::string months = tmp.file("months.nc");
     writeTimeAxisFile(months, {"time", "months since 2000-01-01", "", "", "", {0.0, 1.0}});
-    m = timeErrorOf([&] { readNetCdfTimeAxis(months); });
+    m = timeErrorOf([&] { readForecastTimeAxis(months); });
     EXPECT_NE(m.find("time variable 'time'"), std::string::npos) << m;
     EXPECT_NE(m.find(months), std::string::npos) << m;
 }

@@ -12,7 +12,7 @@
 
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 using namespace ompl_glider;
 using namespace glider_test;
@@ -128,7 +128,7 @@ void writePop(const std::string &path, const PopFile &p)
 }
 
 /// inWater() at the centre of every cell of velocity points (j..j+1, i..i+1) against `land` of its corners.
-void expectCells(const NetCdfCurrents &nc, const std::function<bool(std::size_t, std::size_t)> &land,
+void expectCells(const GriddedCurrents &nc, const std::function<bool(std::size_t, std::size_t)> &land,
                  const std::string &what)
 {
     for (std::size_t j = 0; j + 1 < kNj; ++j)
@@ -163,11 +163,11 @@ TEST(NetCdfTracerLand, PopBGridCoastalZerosAndTheTracerAreLand)
     const std::size_t fill = countNodes(allT), coast = countNodes(anyT) - fill;
     ASSERT_EQ(fill, 6u);
     ASSERT_EQ(coast, 10u); // the continent's ring of 6 and the island's 4 corners
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.uName = "urot";
     o.vName = "vrot";
     // every signal: the fill values, then the tracer's cells around each velocity point (the zeros are its land)
-    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    const GriddedCurrents nc = loadGriddedCurrents(path, o);
     EXPECT_EQ(nc.tracerVariable, "t");
     EXPECT_TRUE(nc.cornerGrid);
     EXPECT_TRUE(has(nc.tracerPlacement, "north-east corners")) << nc.tracerPlacement;
@@ -180,9 +180,9 @@ TEST(NetCdfTracerLand, PopBGridCoastalZerosAndTheTracerAreLand)
     expectCells(nc, anyT, "tracer");
 
     // without the tracer: the B grid's zeros are land, the island's too (its zeros touch no fill value)
-    NetCdfCurrentOptions noTracer = o;
+    GriddedCurrentOptions noTracer = o;
     noTracer.tracerName = "none";
-    const NetCdfCurrents zeros = loadNetCdfCurrents(path, noTracer);
+    const GriddedCurrents zeros = loadGriddedCurrents(path, noTracer);
     EXPECT_TRUE(zeros.tracerVariable.empty());
     EXPECT_TRUE(zeros.cornerGrid); // from the u-grid coordinates
     EXPECT_EQ(zeros.fillLandNodes, fill);
@@ -191,7 +191,7 @@ TEST(NetCdfTracerLand, PopBGridCoastalZerosAndTheTracerAreLand)
 
     // the old answer, fill values alone: the coastal ring and the island are water
     noTracer.zeroVelocityLand = false;
-    const NetCdfCurrents fillOnly = loadNetCdfCurrents(path, noTracer);
+    const GriddedCurrents fillOnly = loadGriddedCurrents(path, noTracer);
     EXPECT_EQ(fillOnly.landNodes, fill);
     expectCells(fillOnly, allT, "fill values only");
 }
@@ -203,10 +203,10 @@ TEST(NetCdfTracerLand, WithoutBGridLabelsTheTracerIsReadAtTheSameIndex)
     p.uGridLabel = false;
     const std::string path = dir.file("unlabelled.nc");
     writePop(path, p);
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.uName = "urot";
     o.vName = "vrot";
-    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    const GriddedCurrents nc = loadGriddedCurrents(path, o);
     EXPECT_EQ(nc.tracerPlacement, "same points");
     EXPECT_FALSE(nc.cornerGrid);
     // the tracer at the same index marks the cells' own corner; the coastal zeros touching land are land too
@@ -217,9 +217,9 @@ TEST(NetCdfTracerLand, WithoutBGridLabelsTheTracerIsReadAtTheSameIndex)
     expectCells(nc, anyT, "same index");
     // without tracer and labels: zeros touching land are land; the island's block of zeros, touching none, is taken
     // for calm water (nothing in such a file tells an island's zeros from a calm sea's)
-    NetCdfCurrentOptions noTracer = o;
+    GriddedCurrentOptions noTracer = o;
     noTracer.tracerName = "none";
-    const NetCdfCurrents zeros = loadNetCdfCurrents(path, noTracer);
+    const GriddedCurrents zeros = loadGriddedCurrents(path, noTracer);
     EXPECT_EQ(zeros.zeroLandNodes, 6u);
     expectCells(
         zeros, [](std::size_t j, std::size_t i) { return anyT(j, i) && j < 5; }, "zeros next to land");
@@ -233,7 +233,7 @@ TEST(NetCdfTracerLand, TracerCoordinatesPlaceTheCellsOfAPopHistoryFile)
     p.history = true;
     const std::string path = dir.file("history.nc");
     writePop(path, p);
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     EXPECT_EQ(nc.tracerVariable, "TEMP");
     EXPECT_TRUE(has(nc.tracerPlacement, "north-east corners")) << nc.tracerPlacement;
     EXPECT_TRUE(has(nc.tracerPlacement, "'TLONG'/'TLAT' against 'ULONG'/'ULAT'")) << nc.tracerPlacement;
@@ -243,7 +243,7 @@ TEST(NetCdfTracerLand, TracerCoordinatesPlaceTheCellsOfAPopHistoryFile)
     p.tOffset = 0.5;
     const std::string ne = dir.file("northeast.nc");
     writePop(ne, p);
-    const NetCdfCurrents sw = loadNetCdfCurrents(ne);
+    const GriddedCurrents sw = loadGriddedCurrents(ne);
     EXPECT_TRUE(has(sw.tracerPlacement, "south-west corners")) << sw.tracerPlacement;
     auto around = [](std::size_t j, std::size_t i) {
         return landT(j, i) || (i > 0 && landT(j, i - 1)) || (j > 0 && landT(j - 1, i)) ||
@@ -256,7 +256,7 @@ TEST(NetCdfTracerLand, TracerCoordinatesPlaceTheCellsOfAPopHistoryFile)
     p.tOffset = 0.0;
     const std::string same = dir.file("same.nc");
     writePop(same, p);
-    EXPECT_EQ(loadNetCdfCurrents(same).tracerPlacement, "same points");
+    EXPECT_EQ(loadGriddedCurrents(same).tracerPlacement, "same points");
 }
 
 TEST(NetCdfTracerLand, TracerChoiceNoneAndUnwrittenTracers)
@@ -266,10 +266,10 @@ TEST(NetCdfTracerLand, TracerChoiceNoneAndUnwrittenTracers)
     p.tracerAllFill = true; // a variable defined but never written: its fill values are not a map of land
     const std::string path = dir.file("empty_tracer.nc");
     writePop(path, p);
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.uName = "urot";
     o.vName = "vrot";
-    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    const GriddedCurrents nc = loadGriddedCurrents(path, o);
     EXPECT_TRUE(nc.tracerVariable.empty());
     EXPECT_EQ(nc.tracerLandNodes, 0u);
     EXPECT_EQ(nc.landNodes, countNodes(anyT)); // the B grid's zeros still are
@@ -277,7 +277,7 @@ TEST(NetCdfTracerLand, TracerChoiceNoneAndUnwrittenTracers)
     o.tracerName = "salt";
     try
     {
-        loadNetCdfCurrents(path, o);
+        loadGriddedCurrents(path, o);
         FAIL() << "a missing tracer must be refused";
     }
     catch (const Error &e)
@@ -353,7 +353,7 @@ void writeAGrid(const std::string &path, bool tracer)
         w.put(tv, tt);
 }
 
-bool waterAt(const NetCdfCurrents &nc, double lon, double lat)
+bool waterAt(const GriddedCurrents &nc, double lon, double lat)
 {
     const Point2 p = nc.toLocal({lon, lat});
     return nc.field->inWater(p.x, p.y, 0.0);
@@ -365,7 +365,7 @@ TEST(NetCdfTracerLand, CoastalZerosAreLandAndCalmWaterAwayFromLandIsWater)
     TempDir dir;
     const std::string path = dir.file("agrid.nc");
     writeAGrid(path, false);
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     EXPECT_FALSE(nc.cornerGrid);
     EXPECT_EQ(nc.fillLandNodes, countNodes(fillBlock));
     // the continent's coastal zeros touch its fill values: land; the calm patch touches no land: water
@@ -377,9 +377,9 @@ TEST(NetCdfTracerLand, CoastalZerosAreLandAndCalmWaterAwayFromLandIsWater)
 
     // a region that cuts the calm patch at its west edge: the file goes on beyond it, where land may lie, so the
     // patch is land (as a coastal ring cut by the region would be)
-    NetCdfCurrentOptions cut = regionOptions(uLon(8), uLon(13), uLat(0), uLat(11));
+    GriddedCurrentOptions cut = regionOptions(uLon(8), uLon(13), uLat(0), uLat(11));
     cut.marginNodes = 0;
-    const NetCdfCurrents part = loadNetCdfCurrents(path, cut);
+    const GriddedCurrents part = loadGriddedCurrents(path, cut);
     EXPECT_GT(part.fillLandNodes, 0u); // the north-east corner of land is in the region
     EXPECT_EQ(part.zeroLandNodes, countNodes(calm));
     EXPECT_FALSE(waterAt(part, uLon(8) + 0.25, uLat(6) + 0.25));
@@ -387,7 +387,7 @@ TEST(NetCdfTracerLand, CoastalZerosAreLandAndCalmWaterAwayFromLandIsWater)
     // the tracer adds its dry node (at the same index on an A grid); the rest is unchanged
     const std::string withTracer = dir.file("agrid_thetao.nc");
     writeAGrid(withTracer, true);
-    const NetCdfCurrents t = loadNetCdfCurrents(withTracer);
+    const GriddedCurrents t = loadGriddedCurrents(withTracer);
     EXPECT_EQ(t.tracerVariable, "thetao");
     EXPECT_EQ(t.tracerPlacement, "same points");
     EXPECT_EQ(t.tracerLandNodes, 1u);
@@ -460,7 +460,7 @@ TEST(NetCdfTracerLand, RomsMasksAndTracerOnTheRhoPoints)
         w.put(v, vv);
         w.put(temp, tt);
     }
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     EXPECT_EQ(nc.maskVariable, "mask_rho");
     EXPECT_EQ(nc.tracerVariable, "temp");
     EXPECT_EQ(nc.tracerPlacement, "same points");
@@ -477,7 +477,7 @@ TEST(NetCdfTracerLand, RomsMasksAndTracerOnTheRhoPoints)
     EXPECT_FALSE(water(2.5, 7.5)); // beside the dry cell
     EXPECT_TRUE(water(9.5, 7.5));  // open water
     // "none" leaves the tracer out
-    NetCdfCurrentOptions none;
+    GriddedCurrentOptions none;
     none.tracerName = "none";
-    EXPECT_EQ(loadNetCdfCurrents(path, none).landNodes, 12u);
+    EXPECT_EQ(loadGriddedCurrents(path, none).landNodes, 12u);
 }

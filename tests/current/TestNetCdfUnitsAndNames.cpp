@@ -1,8 +1,8 @@
 // Forecast files as pilots get them: velocity units in any spelling UDUNITS-2 reads (converted with the exact
 // factor), non-velocity units refused, the units override; u/v under the usual names of models without CF
 // standard names (POP urot/vrot, winds UWND/VWND, u10/v10, UVEL/VVEL, ROMS u_eastward/v_northward) and the
-// candidate list when none is found; steady fields (no time axis, one record, NetCdfCurrentOptions::steadyRecord)
-// and time axes without "since" (NetCdfCurrentOptions::timeUnits).
+// candidate list when none is found; steady fields (no time axis, one record, GriddedCurrentOptions::steadyRecord)
+// and time axes without "since" (GriddedCurrentOptions::timeUnits).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +15,7 @@
 
 #include "TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 #include "ompl_glider/io/UnitConversion.h"
 
 using namespace ompl_glider;
@@ -101,7 +101,7 @@ void writeGeographic(const std::string &path, const std::string &uName, const st
 }
 
 /// u at the centre node of a loaded geographic 3 x 3 file (eastward there: the projection's centre) at time t.
-double centreU(const NetCdfCurrents &nc, double t)
+double centreU(const GriddedCurrents &nc, double t)
 {
     const Point2 p = nc.toLocal({-52.9, 47.1});
     return nc.field->velocity(p.x, p.y, 0.0, t).u;
@@ -147,7 +147,7 @@ TEST(NetCdfUnits, SpellingsOfCmPerSecondKnotsAndOthersConvertWithTheExactFactor)
     {
         const std::string path = tmp.file("units" + std::to_string(n++) + ".nc");
         writeCartesian(path, c.units, uRaw, vRaw);
-        const NetCdfCurrents nc = loadNetCdfCurrents(path);
+        const GriddedCurrents nc = loadGriddedCurrents(path);
         const Velocity w = nc.field->velocity(1500.0, 700.0, 0.0, 1800.0);
         // float storage: 7 significant digits; a wrong factor (1, 0.1, 1/1.852) is far off
         EXPECT_NEAR(w.u, uRaw * c.factor, 1e-6 * std::abs(uRaw * c.factor)) << "'" << c.units << "'";
@@ -202,7 +202,7 @@ TEST(NetCdfUnits, NonVelocityUnitsAreRefusedNamingFileVariableAndUnits)
     {
         const std::string path = tmp.file("bad.nc");
         writeCartesian(path, units, 1.0, 1.0);
-        const std::string m = unitsErrorOf([&] { loadNetCdfCurrents(path); });
+        const std::string m = unitsErrorOf([&] { loadGriddedCurrents(path); });
         EXPECT_NE(m.find(path), std::string::npos) << m;
         EXPECT_NE(m.find("variable 'u'"), std::string::npos) << m;
         EXPECT_NE(m.find("'" + units + "'"), std::string::npos) << m;
@@ -211,7 +211,7 @@ TEST(NetCdfUnits, NonVelocityUnitsAreRefusedNamingFileVariableAndUnits)
     }
     const std::string path = tmp.file("gibberish.nc");
     writeCartesian(path, "parsecs per thingy", 1.0, 1.0);
-    std::string m = unitsErrorOf([&] { loadNetCdfCurrents(path); });
+    std::string m = unitsErrorOf([&] { loadGriddedCurrents(path); });
     EXPECT_NE(m.find("'parsecs per thingy'"), std::string::npos) << m;
     EXPECT_NE(m.find("not understood"), std::string::npos) << m;
     // the library function alone says what UDUNITS-2 made of them
@@ -227,14 +227,14 @@ TEST(NetCdfUnits, OverrideReplacesTheFilesUnitsAndIsChecked)
     TempDir tmp;
     const std::string path = tmp.file("wrong_units.nc");
     writeCartesian(path, "degC", 40.0, 10.0); // a file that says degC for velocities in cm/s
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.velocityUnits = "cm s-1";
-    const NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    const GriddedCurrents nc = loadGriddedCurrents(path, o);
     const Velocity w = nc.field->velocity(1500.0, 700.0, 0.0, 0.0);
     EXPECT_NEAR(w.u, 0.4, 1e-7);
     EXPECT_NEAR(w.v, 0.1, 1e-7);
     o.velocityUnits = "knots";
-    EXPECT_NEAR(loadNetCdfCurrents(path, o).field->velocity(1500.0, 700.0, 0.0, 0.0).u, 40.0 * 1852.0 / 3600.0, 1e-5);
+    EXPECT_NEAR(loadGriddedCurrents(path, o).field->velocity(1500.0, 700.0, 0.0, 0.0).u, 40.0 * 1852.0 / 3600.0, 1e-5);
     // velocities without units in a geographic file: the override is the way through
     const std::string geo = tmp.file("geo.nc");
     {
@@ -250,21 +250,21 @@ TEST(NetCdfUnits, OverrideReplacesTheFilesUnitsAndIsChecked)
         w.put(u, {50, 50, 50, 50});
         w.put(v, {0, 0, 0, 0});
     }
-    std::string m = unitsErrorOf([&] { loadNetCdfCurrents(geo); });
+    std::string m = unitsErrorOf([&] { loadGriddedCurrents(geo); });
     EXPECT_NE(m.find("variable 'u' has no units"), std::string::npos) << m;
     EXPECT_NE(m.find("velocityUnits"), std::string::npos) << m;
-    NetCdfCurrentOptions g;
+    GriddedCurrentOptions g;
     g.velocityUnits = "cm/s";
-    const Velocity gv = loadNetCdfCurrents(geo, g).field->velocity(0.0, 0.0, 0.0, 0.0);
+    const Velocity gv = loadGriddedCurrents(geo, g).field->velocity(0.0, 0.0, 0.0, 0.0);
     EXPECT_NEAR(std::hypot(gv.u, gv.v), 0.5, 1e-6);
     // a bad override names the option and the units
     o.velocityUnits = "degC";
-    m = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
-    EXPECT_NE(m.find("NetCdfCurrentOptions::velocityUnits"), std::string::npos) << m;
+    m = unitsErrorOf([&] { loadGriddedCurrents(path, o); });
+    EXPECT_NE(m.find("GriddedCurrentOptions::velocityUnits"), std::string::npos) << m;
     EXPECT_NE(m.find("'degC'"), std::string::npos) << m;
     EXPECT_NE(m.find("not a velocity"), std::string::npos) << m;
     o.velocityUnits = "furlongs per blink";
-    m = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
+    m = unitsErrorOf([&] { loadGriddedCurrents(path, o); });
     EXPECT_NE(m.find("not understood"), std::string::npos) << m;
 }
 
@@ -297,7 +297,7 @@ TEST(NetCdfUnits, CartesianAxesAndDepthInAnyLengthUnit)
         w.put(u, pu);
         w.put(v, std::vector<double>(12, 0.0));
     }
-    const NetCdfCurrents nc = loadNetCdfCurrents(path);
+    const GriddedCurrents nc = loadGriddedCurrents(path);
     EXPECT_EQ(nc.uVariable, "UVEL");
     EXPECT_EQ(nc.field->depthAxis().nodes(), (std::vector<double>{5.0, 15.0, 25.0}));
     EXPECT_NEAR(nc.field->velocity(1500.0, 1000.0, 10.0, 0.0).u, 0.15, 1e-7); // halfway 5 m .. 15 m
@@ -318,7 +318,7 @@ TEST(NetCdfNames, VelocitiesFoundUnderUsualNamesInAnyCase)
     {
         const std::string path = tmp.file("names" + std::to_string(n++) + ".nc");
         writeGeographic(path, u, v, 2);
-        const NetCdfCurrents nc = loadNetCdfCurrents(path);
+        const GriddedCurrents nc = loadGriddedCurrents(path);
         EXPECT_EQ(nc.uVariable, u);
         EXPECT_EQ(nc.vVariable, v);
         EXPECT_NEAR(centreU(nc, 0.0), 0.1, 1e-6) << u;
@@ -345,7 +345,7 @@ TEST(NetCdfNames, NoVelocityFoundListsTheCandidatesWithUnitsAndDimensions)
         w.var("mask", NC_INT, {dj, di});
         w.enddef();
     }
-    const std::string m = unitsErrorOf([&] { loadNetCdfCurrents(path); });
+    const std::string m = unitsErrorOf([&] { loadGriddedCurrents(path); });
     EXPECT_NE(m.find(path), std::string::npos) << m;
     EXPECT_NE(m.find("no eastward (u) velocity found"), std::string::npos) << m;
     EXPECT_NE(m.find("candidates: temp(time,lat,lon) [degC], UVEL2(time,z_t,nlat,nlon) [cm/s], "
@@ -353,15 +353,15 @@ TEST(NetCdfNames, NoVelocityFoundListsTheCandidatesWithUnitsAndDimensions)
               std::string::npos)
         << m;
     EXPECT_EQ(m.find("lat(lat)"), std::string::npos) << m; // 1-D variables are no candidates
-    EXPECT_NE(m.find("NetCdfCurrentOptions::uName/vName"), std::string::npos) << m;
+    EXPECT_NE(m.find("GriddedCurrentOptions::uName/vName"), std::string::npos) << m;
     // named, they load (UVEL2 has no v partner here: the v error lists the same candidates)
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.uName = "UVEL2";
-    const std::string mv = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
+    const std::string mv = unitsErrorOf([&] { loadGriddedCurrents(path, o); });
     EXPECT_NE(mv.find("no northward (v) velocity found"), std::string::npos) << mv;
     EXPECT_NE(mv.find("UVEL2(time,z_t,nlat,nlon) [cm/s]"), std::string::npos) << mv;
     o.uName = "uvel3";
-    const std::string mg = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
+    const std::string mg = unitsErrorOf([&] { loadGriddedCurrents(path, o); });
     EXPECT_NE(mg.find("no variable 'uvel3'"), std::string::npos) << mg;
     EXPECT_NE(mg.find("temp(time,lat,lon) [degC]"), std::string::npos) << mg;
 }
@@ -371,51 +371,51 @@ TEST(NetCdfSteady, NoTimeAxisOrOneRecordIsASteadyFieldTakingAnyDeparture)
     TempDir tmp;
     const std::string none = tmp.file("no_time.nc");
     writeGeographic(none, "u", "v", 0);
-    NetCdfCurrentOptions o;
-    NetCdfCurrents nc = loadNetCdfCurrents(none, o);
+    GriddedCurrentOptions o;
+    GriddedCurrents nc = loadGriddedCurrents(none, o);
     EXPECT_TRUE(nc.steady);
     EXPECT_FALSE(nc.dated);
     EXPECT_EQ(nc.field->timeEnd(), std::numeric_limits<double>::infinity());
     o.departure = "86400";
-    nc = loadNetCdfCurrents(none, o);
+    nc = loadGriddedCurrents(none, o);
     EXPECT_EQ(nc.departureTime, 86400.0);
     EXPECT_NEAR(centreU(nc, 1e7), 0.1, 1e-6);
     o.departure = "2026-03-01T00:00:00Z"; // a date needs dates in the file
-    std::string m = unitsErrorOf([&] { loadNetCdfCurrents(none, o); });
+    std::string m = unitsErrorOf([&] { loadGriddedCurrents(none, o); });
     EXPECT_NE(m.find("departure"), std::string::npos) << m;
     EXPECT_NE(m.find("no dated time axis"), std::string::npos) << m;
-    const NetCdfTimeAxis a = readNetCdfTimeAxis(none);
+    const ForecastTimeAxis a = readForecastTimeAxis(none);
     EXPECT_TRUE(a.steady);
     EXPECT_FALSE(a.found);
     // the options for a time axis make no sense without one
-    NetCdfCurrentOptions t;
+    GriddedCurrentOptions t;
     t.timeUnits = "days since 2026-01-01";
-    m = unitsErrorOf([&] { loadNetCdfCurrents(none, t); });
-    EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits given, but variable 'u' has no time dimension"),
+    m = unitsErrorOf([&] { loadGriddedCurrents(none, t); });
+    EXPECT_NE(m.find("GriddedCurrentOptions::timeUnits given, but variable 'u' has no time dimension"),
               std::string::npos)
         << m;
     t = {};
     t.steadyRecord = 0;
-    m = unitsErrorOf([&] { readNetCdfTimeAxis(none, t); });
-    EXPECT_NE(m.find("NetCdfCurrentOptions::steadyRecord given"), std::string::npos) << m;
+    m = unitsErrorOf([&] { readForecastTimeAxis(none, t); });
+    EXPECT_NE(m.find("GriddedCurrentOptions::steadyRecord given"), std::string::npos) << m;
 
     // one record: steady, dated by it, any date accepted
     const std::string one = tmp.file("one_record.nc");
     writeGeographic(one, "u", "v", 1);
     o = {};
     o.departure = "2026-04-01T00:00:00Z";
-    nc = loadNetCdfCurrents(one, o);
+    nc = loadGriddedCurrents(one, o);
     EXPECT_TRUE(nc.steady);
     EXPECT_TRUE(nc.dated);
     EXPECT_EQ(nc.isoTime(nc.departureTime), "2026-04-01T00:00:00Z");
     EXPECT_EQ(nc.departureTime, 31.0 * 86400);
     EXPECT_EQ(nc.field->timeEnd(), std::numeric_limits<double>::infinity());
-    EXPECT_TRUE(readNetCdfTimeAxis(one).steady);
+    EXPECT_TRUE(readForecastTimeAxis(one).steady);
     // two records: not steady, the departure must lie in the forecast
     const std::string two = tmp.file("two_records.nc");
     writeGeographic(two, "u", "v", 2);
-    EXPECT_FALSE(loadNetCdfCurrents(two).steady);
-    m = unitsErrorOf([&] { loadNetCdfCurrents(two, o); });
+    EXPECT_FALSE(loadGriddedCurrents(two).steady);
+    m = unitsErrorOf([&] { loadGriddedCurrents(two, o); });
     EXPECT_NE(m.find("outside the forecast"), std::string::npos) << m;
 }
 
@@ -425,67 +425,67 @@ TEST(NetCdfTime, AxisWithoutSinceNamesBothOptionsAndEachGetsThrough)
     // a climatology-like axis in "month": records 0, 6, 12 with u = 0.1, 0.2, 0.3
     const std::string path = tmp.file("months.nc");
     writeGeographic(path, "uo", "vo", 3, "month", {0.1, 0.2, 0.3});
-    std::string m = unitsErrorOf([&] { loadNetCdfCurrents(path); });
+    std::string m = unitsErrorOf([&] { loadGriddedCurrents(path); });
     EXPECT_NE(m.find(path), std::string::npos) << m;
     EXPECT_NE(m.find("time variable 'time': units 'month'"), std::string::npos) << m;
-    EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits"), std::string::npos) << m;
-    EXPECT_NE(m.find("NetCdfCurrentOptions::steadyRecord"), std::string::npos) << m;
+    EXPECT_NE(m.find("GriddedCurrentOptions::timeUnits"), std::string::npos) << m;
+    EXPECT_NE(m.find("GriddedCurrentOptions::steadyRecord"), std::string::npos) << m;
     // the same without units attribute, and in hours without a date
     for (const std::string units : {"", "hours"})
     {
         const std::string p = tmp.file("undated.nc");
         writeGeographic(p, "uo", "vo", 3, units);
-        m = unitsErrorOf([&] { loadNetCdfCurrents(p); });
-        EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits"), std::string::npos) << "'" << units << "': " << m;
+        m = unitsErrorOf([&] { loadGriddedCurrents(p); });
+        EXPECT_NE(m.find("GriddedCurrentOptions::timeUnits"), std::string::npos) << "'" << units << "': " << m;
     }
 
     // timeUnits: the values (0, 6, 12) are days since 2026-01-15
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.timeUnits = "days since 2026-01-15";
-    NetCdfCurrents nc = loadNetCdfCurrents(path, o);
+    GriddedCurrents nc = loadGriddedCurrents(path, o);
     EXPECT_TRUE(nc.dated);
     EXPECT_FALSE(nc.steady);
     EXPECT_EQ(nc.isoTime(0.0), "2026-01-15T00:00:00Z");
     EXPECT_EQ(nc.forecastEnd, 12.0 * 86400);
     EXPECT_NEAR(centreU(nc, 3.0 * 86400), 0.15, 1e-6); // halfway between the first two records
-    EXPECT_EQ(readNetCdfTimeAxis(path, o).originSeconds, nc.originSeconds);
-    EXPECT_EQ(readNetCdfTimeAxis(path, o).span, 12.0 * 86400);
+    EXPECT_EQ(readForecastTimeAxis(path, o).originSeconds, nc.originSeconds);
+    EXPECT_EQ(readForecastTimeAxis(path, o).span, 12.0 * 86400);
     // checked: a units text without "since", or one the calendar parser refuses
     o.timeUnits = "days";
-    m = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
-    EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits 'days'"), std::string::npos) << m;
+    m = unitsErrorOf([&] { loadGriddedCurrents(path, o); });
+    EXPECT_NE(m.find("GriddedCurrentOptions::timeUnits 'days'"), std::string::npos) << m;
     o.timeUnits = "fortnights since 2026-01-15";
-    m = unitsErrorOf([&] { loadNetCdfCurrents(path, o); });
-    EXPECT_NE(m.find("NetCdfCurrentOptions::timeUnits 'fortnights since 2026-01-15'"), std::string::npos) << m;
+    m = unitsErrorOf([&] { loadGriddedCurrents(path, o); });
+    EXPECT_NE(m.find("GriddedCurrentOptions::timeUnits 'fortnights since 2026-01-15'"), std::string::npos) << m;
 
     // steadyRecord: only that record, a steady field (undated here: the axis has no dates)
     for (std::size_t k : {0u, 2u})
     {
-        NetCdfCurrentOptions s;
+        GriddedCurrentOptions s;
         s.steadyRecord = k;
-        nc = loadNetCdfCurrents(path, s);
+        nc = loadGriddedCurrents(path, s);
         EXPECT_TRUE(nc.steady);
         EXPECT_FALSE(nc.dated);
         EXPECT_EQ(nc.loadedShape[0], 1u);
         EXPECT_EQ(nc.field->timeEnd(), std::numeric_limits<double>::infinity());
         EXPECT_NEAR(centreU(nc, 0.0), 0.1 * double(k + 1), 1e-6);
         EXPECT_NEAR(centreU(nc, 5e6), 0.1 * double(k + 1), 1e-6);
-        EXPECT_TRUE(readNetCdfTimeAxis(path, s).steady);
+        EXPECT_TRUE(readForecastTimeAxis(path, s).steady);
     }
     // with dates (timeUnits) the record dates the steady field
-    NetCdfCurrentOptions s;
+    GriddedCurrentOptions s;
     s.steadyRecord = 1;
     s.timeUnits = "days since 2026-01-15";
-    nc = loadNetCdfCurrents(path, s);
+    nc = loadGriddedCurrents(path, s);
     EXPECT_TRUE(nc.steady);
     EXPECT_TRUE(nc.dated);
     EXPECT_EQ(nc.isoTime(0.0), "2026-01-21T00:00:00Z");
-    EXPECT_EQ(readNetCdfTimeAxis(path, s).originSeconds, nc.originSeconds);
+    EXPECT_EQ(readForecastTimeAxis(path, s).originSeconds, nc.originSeconds);
     // out of range
     s = {};
     s.steadyRecord = 3;
-    m = unitsErrorOf([&] { loadNetCdfCurrents(path, s); });
-    EXPECT_NE(m.find("NetCdfCurrentOptions::steadyRecord 3 is out of range: time variable 'time' has 3 records "
+    m = unitsErrorOf([&] { loadGriddedCurrents(path, s); });
+    EXPECT_NE(m.find("GriddedCurrentOptions::steadyRecord 3 is out of range: time variable 'time' has 3 records "
                      "(0 to 2)"),
               std::string::npos)
         << m;

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 
 namespace glider_test
 {
@@ -91,9 +91,9 @@ private:
 };
 
 /// Options that load the region lon [lonMin, lonMax] x lat [latMin, latMax] (lonMax < lonMin across 180).
-inline ompl_glider::NetCdfCurrentOptions regionOptions(double lonMin, double lonMax, double latMin, double latMax)
+inline ompl_glider::GriddedCurrentOptions regionOptions(double lonMin, double lonMax, double latMin, double latMax)
 {
-    ompl_glider::NetCdfCurrentOptions o;
+    ompl_glider::GriddedCurrentOptions o;
     o.lonMin = lonMin;
     o.lonMax = lonMax;
     o.latMin = latMin;
@@ -103,7 +103,7 @@ inline ompl_glider::NetCdfCurrentOptions regionOptions(double lonMin, double lon
 
 /// The eastward/northward current (ue, vn) at (lon, lat) as the loaded field holds it in its plane: turned by the
 /// projection's east and north directions there.
-inline ompl_glider::Velocity inPlane(const ompl_glider::NetCdfCurrents &nc, double lon, double lat, double ue,
+inline ompl_glider::Velocity inPlane(const ompl_glider::GriddedCurrents &nc, double lon, double lat, double ue,
                                      double vn)
 {
     double ex, ey, nx, ny;

@@ -8,7 +8,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/mission/MissionProblem.h"
-#include "ompl_glider/io/NetCdfBathymetry.h"
+#include "ompl_glider/io/GriddedBathymetry.h"
 
 using namespace ompl_glider;
 
@@ -53,13 +53,13 @@ std::string makeFile(const std::string &name, bool elevation, double lonShift = 
 }
 } // namespace
 
-TEST(NetCdfBathymetry, BilinearOnGeographicAxes)
+TEST(GriddedBathymetry, BilinearOnGeographicAxes)
 {
     for (bool elevation : {false, true})
     {
         const std::string path = makeFile(elevation ? "mission_bathy_elev" : "mission_bathy_depth", elevation);
         // identity "projection" for the test
-        const NetCdfBathymetry b(path, "depth", [](double x, double y) { return LonLat{x, y}; });
+        const GriddedBathymetry b(path, "depth", [](double x, double y) { return LonLat{x, y}; });
         EXPECT_TRUE(b.geographic());
         for (double lon = -53.0; lon <= -51.6; lon += 0.17)
             for (double lat = 47.0; lat <= 48.5; lat += 0.13)
@@ -72,14 +72,14 @@ TEST(NetCdfBathymetry, BilinearOnGeographicAxes)
     }
 }
 
-TEST(NetCdfBathymetry, EitherLongitudeConvention)
+TEST(GriddedBathymetry, EitherLongitudeConvention)
 {
     // a 0..360 file (307..309E) queried with the -180..180 longitudes every projection gives, and a -180..180 file
     // queried in 0..360: the same depths
-    const NetCdfBathymetry east(makeFile("mission_bathy_360", false, 360.0), "depth", [](double x, double y) {
+    const GriddedBathymetry east(makeFile("mission_bathy_360", false, 360.0), "depth", [](double x, double y) {
         return LonLat{x, y};
     });
-    const NetCdfBathymetry west(makeFile("mission_bathy_180", false, 0.0), "depth", [](double x, double y) {
+    const GriddedBathymetry west(makeFile("mission_bathy_180", false, 0.0), "depth", [](double x, double y) {
         return LonLat{x + 360.0, y};
     });
     for (double lon = -53.0; lon <= -51.6; lon += 0.17)
@@ -90,12 +90,12 @@ TEST(NetCdfBathymetry, EitherLongitudeConvention)
         }
 }
 
-TEST(NetCdfBathymetry, ErrorsNameFileAndVariable)
+TEST(GriddedBathymetry, ErrorsNameFileAndVariable)
 {
     const std::string path = makeFile("mission_bathy_depth2", false);
     try
     {
-        NetCdfBathymetry b(path, "elevation", {});
+        GriddedBathymetry b(path, "elevation", {});
         FAIL();
     }
     catch (const Error &e)
@@ -103,11 +103,11 @@ TEST(NetCdfBathymetry, ErrorsNameFileAndVariable)
         EXPECT_NE(std::string(e.what()).find("'elevation'"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
     }
-    EXPECT_THROW(NetCdfBathymetry(path, "depth", {}), Error); // geographic axes need a projection
-    EXPECT_THROW(NetCdfBathymetry("/nonexistent.nc", "depth", {}), Error);
+    EXPECT_THROW(GriddedBathymetry(path, "depth", {}), Error); // geographic axes need a projection
+    EXPECT_THROW(GriddedBathymetry("/nonexistent.nc", "depth", {}), Error);
 }
 
-TEST(NetCdfBathymetry, LimitsTheDivesOfAMission)
+TEST(GriddedBathymetry, LimitsTheDivesOfAMission)
 {
     const std::string path = makeFile("mission_bathy_depth3", false);
     const std::string text = "name: b\nprojection: {lon0: -52, lat0: 48}\nunits: {length_m: 1000}\n"
@@ -125,7 +125,7 @@ TEST(NetCdfBathymetry, LimitsTheDivesOfAMission)
     EXPECT_NEAR(t, 80.0 / 0.6, 1e-9);
     // The seafloor at the goal's longitude is about 100 + 50 * 1.54 + 200 = 377 m: a 20 m clearance still leaves water.
     const LonLat g = problem.toGeographic({40, 0});
-    const NetCdfBathymetry b(path, "depth", [&](double x, double y) { return problem.toGeographic({x, y}); });
+    const GriddedBathymetry b(path, "depth", [&](double x, double y) { return problem.toGeographic({x, y}); });
     EXPECT_NEAR(b.seafloorDepth(40, 0), plane(g.lon, g.lat), 0.5);
     const std::string bad = "name: b\nprojection: {lon0: -52, lat0: 48}\n"
                             "current: {type: uniform}\nregion: {x_min: -1, x_max: 1, y_min: -1, y_max: 1}\n"

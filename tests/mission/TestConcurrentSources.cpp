@@ -1,7 +1,7 @@
 // Eight threads plan at once, each on its own forecast, through every reader that calls a library that is not
 // thread-safe: NetCDF datasets in memory, NetCDF files, Zarr stores (GDAL), OPeNDAP URLs (NetCDF-C's DAP client,
 // from the tests' DAP2 server on 127.0.0.1), half of them with a coastline file (GDAL/OGR), each writing its outputs
-// as the others plan. Each answer must be the one the same plan gives alone, to the bit (src/io/NetCdfLock.h: one
+// as the others plan. Each answer must be the one the same plan gives alone, to the bit (src/io/DatasetLock.h: one
 // lock around every NetCDF-C call and GDAL dataset).
 #include <gtest/gtest.h>
 

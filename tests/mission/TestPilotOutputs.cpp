@@ -19,7 +19,7 @@
 #include <ogrsf_frmts.h>
 
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/current/LocalProjection.h"
@@ -662,11 +662,11 @@ TEST(PilotLand, ZeroVelocityIsLandOnlyWhereTheFileMarksNoLand)
     g.uv = [&](std::size_t, std::size_t j, std::size_t i) {
         return calm(j, i) ? std::make_pair(0.0, 0.0) : std::make_pair(0.1, 0.0);
     };
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.lonMin = -61.0, o.lonMax = -58.0, o.latMin = 29.0, o.latMax = 32.0;
     // nothing else says where land is: the calm nodes are land, counted and said
     writeGrid(dir / "plain.nc", g);
-    NetCdfCurrents plain = loadNetCdfCurrents((dir / "plain.nc").string(), o);
+    GriddedCurrents plain = loadGriddedCurrents((dir / "plain.nc").string(), o);
     EXPECT_EQ(plain.zeroLandNodes, 9u);
     const Point2 centre = plain.toLocal({-59.5, 30.5});
     EXPECT_FALSE(plain.field->inWater(centre.x, centre.y, 0.0));
@@ -683,7 +683,7 @@ TEST(PilotLand, ZeroVelocityIsLandOnlyWhereTheFileMarksNoLand)
         return j < 2 && i < 2 ? std::make_pair(std::nan(""), std::nan("")) : g.uv(k, j, i);
     };
     writeGrid(dir / "fill.nc", f);
-    NetCdfCurrents filled = loadNetCdfCurrents((dir / "fill.nc").string(), o);
+    GriddedCurrents filled = loadGriddedCurrents((dir / "fill.nc").string(), o);
     EXPECT_EQ(filled.fillLandNodes, 4u);
     EXPECT_EQ(filled.zeroLandNodes, 0u);
     EXPECT_TRUE(filled.field->inWater(centre.x, centre.y, 0.0));
@@ -691,13 +691,13 @@ TEST(PilotLand, ZeroVelocityIsLandOnlyWhereTheFileMarksNoLand)
     Grid k = g;
     k.mask = [](std::size_t j, std::size_t i) { return j > 8 && i > 8 ? 0 : 1; };
     writeGrid(dir / "mask.nc", k);
-    NetCdfCurrents masked = loadNetCdfCurrents((dir / "mask.nc").string(), o);
+    GriddedCurrents masked = loadGriddedCurrents((dir / "mask.nc").string(), o);
     EXPECT_EQ(masked.maskLandNodes, 4u);
     EXPECT_EQ(masked.zeroLandNodes, 0u);
     EXPECT_TRUE(masked.field->inWater(centre.x, centre.y, 0.0));
     // and the option turns the rule off
     o.zeroVelocityLand = false;
-    EXPECT_EQ(loadNetCdfCurrents((dir / "plain.nc").string(), o).zeroLandNodes, 0u);
+    EXPECT_EQ(loadGriddedCurrents((dir / "plain.nc").string(), o).zeroLandNodes, 0u);
 }
 
 TEST(PilotKml, ANameOfAnyBytesStillMakesWellFormedFiles)

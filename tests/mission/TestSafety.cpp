@@ -9,7 +9,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/environment/KeepOffZone.h"
 #include "ompl_glider/io/DepthGrid.h"
-#include "ompl_glider/io/NetCdfBathymetry.h"
+#include "ompl_glider/io/GriddedBathymetry.h"
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -283,7 +283,7 @@ TEST(Safety, BathymetryAxesThatDoNotSayWhichIsLongitudeAreRefusedNamingThem)
         EXPECT_NE(msg.find("dimensions (p, q): cannot tell which is longitude/x"), std::string::npos) << msg;
     }
     // the dive profiles' reader is the same reader: the same refusal
-    EXPECT_THROW(NetCdfBathymetry(path, "depth", [](double x, double y) { return LonLat{x, y}; }), Error);
+    EXPECT_THROW(GriddedBathymetry(path, "depth", [](double x, double y) { return LonLat{x, y}; }), Error);
 }
 
 TEST(Safety, DiveProfilesAndTheDepthLimitReadOneFileAlike)
@@ -292,7 +292,7 @@ TEST(Safety, DiveProfilesAndTheDepthLimitReadOneFileAlike)
     TempDir dir;
     const std::string gebco = dir.file("gebco_t.nc");
     writeGebco(gebco, true);
-    const NetCdfBathymetry b(gebco, "", [](double x, double y) { return LonLat{x, y}; });
+    const GriddedBathymetry b(gebco, "", [](double x, double y) { return LonLat{x, y}; });
     EXPECT_EQ(b.variable(), "elevation");
     EXPECT_NE(b.convention().find("elevation, positive up"), std::string::npos) << b.convention();
     for (double lon : {-79.5, -78.0, -77.75, -76.0})

@@ -14,7 +14,7 @@ glider_add_test(test_mission_run EXECUTABLE tests_mission_gis ${CMAKE_CURRENT_LI
   ${CMAKE_CURRENT_LIST_DIR}/TestCoastline.cpp)
 target_link_libraries(test_mission_run INTERFACE nlohmann_json::nlohmann_json netCDF::netcdf GDAL::GDAL)
 # eight threads plan at once on forecasts in memory, in files, in Zarr stores and at URLs, with coastlines, writing
-# their outputs: each answer the same plan's alone, to the bit (src/io/NetCdfLock.h)
+# their outputs: each answer the same plan's alone, to the bit (src/io/DatasetLock.h)
 glider_add_test(test_mission_concurrent_sources ${CMAKE_CURRENT_LIST_DIR}/TestConcurrentSources.cpp)
 target_link_libraries(test_mission_concurrent_sources INTERFACE netCDF::netcdf)
 # the plan flown in another ocean through the pipeline

@@ -27,7 +27,7 @@ for internal in $(cd "$root/src" && find . -name '*.h' | sed 's|^\./||'); do
 done
 # Headers per component: a build without NetCDF and maps installs none of their headers (their functions are not in
 # the library); the full build installs them.
-for h in current/NetCdfCurrents.h io/NetCdfBathymetry.h io/DepthGrid.h io/GliderObservations.h mission/ForecastMission.h \
+for h in current/GriddedCurrents.h io/GriddedBathymetry.h io/DepthGrid.h io/GliderObservations.h mission/ForecastMission.h \
          output/MapRenderer.h output/MissionMap.h output/MapHtml.h; do
   if [ -n "$project_src" ] && [ -e "$work/prefix/include/ompl_glider/$h" ]; then
     echo "the build without NetCDF and maps installed $h"; exit 1

@@ -1,6 +1,6 @@
 """Plans in several Python threads at once (concurrent.futures), each on its own forecast: currents from arrays
 (NetCDF datasets built and read in memory) and a NetCDF file. NetCDF-C is not thread-safe; the library holds one
-lock around every NetCDF-C call (src/io/NetCdfLock.h), so each answer is the one the same plan gives alone, to the
+lock around every NetCDF-C call (src/io/DatasetLock.h), so each answer is the one the same plan gives alone, to the
 bit, and no thread crashes or reads another's dataset."""
 import concurrent.futures
 import os

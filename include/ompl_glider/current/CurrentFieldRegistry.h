@@ -35,8 +35,8 @@ struct CurrentFieldKind
 };
 
 /// @brief Every kind: meandering_jet ([EichhornRAS] Sec. 6.1), uniform, linear_shear, double_gyre ([ShaddenLCS]),
-/// rankine_vortex ([LollaLevelSet]), gridded (alias netcdf: NetCDF files, OPeNDAP, Zarr and GRIB: netCdfSource()),
-/// then those of registerCurrentFieldKind(). A deque: an entry never moves.
+/// rankine_vortex ([LollaLevelSet]), gridded (alias netcdf: NetCDF files, OPeNDAP, Zarr and GRIB:
+/// griddedForecastSource()), then those of registerCurrentFieldKind(). A deque: an entry never moves.
 const std::deque<CurrentFieldKind> &currentFieldKinds();
 
 /// @brief Adds @p kind, so that mission files, the command line's forecast missions (ForecastInput::current.type)

@@ -1,7 +1,7 @@
 #pragma once
 /// @file Bathymetry.h
 /// @brief The seafloor a glider's dives must stay above: the interface the dive profiles read
-/// (cost/DiveProfile.h) and the readers implement (io/NetCdfBathymetry.h).
+/// (cost/DiveProfile.h) and the readers implement (io/GriddedBathymetry.h).
 
 #include <functional>
 #include <memory>
@@ -23,7 +23,7 @@ public:
 };
 
 /// @brief The seafloor of a gridded depth file (GEBCO/ETOPO-like, or a model's h: the NetCDF reader,
-/// NetCdfBathymetry), read over @p region; @p toGeographic turns planning-frame points into lon/lat (empty: the
+/// GriddedBathymetry), read over @p region; @p toGeographic turns planning-frame points into lon/lat (empty: the
 /// file's axes are planning x/y). @throws Error naming the file and variable.
 std::shared_ptr<const Bathymetry> readBathymetry(const std::string &path, const std::string &variable,
                                                  std::function<LonLat(double x, double y)> toGeographic,

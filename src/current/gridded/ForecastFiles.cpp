@@ -1,6 +1,6 @@
 // A forecast in several NetCDF files (daily files of one model run, each with its own time axis) read as one:
 // the files' time axes put on one origin, the records the trip needs chosen on the joined axis, each file that
-// holds some of them read with the stages of loadNetCdfCurrents() (readForecastPiece()), the pieces checked to be
+// holds some of them read with the stages of loadGriddedCurrents() (readForecastPiece()), the pieces checked to be
 // on one grid and joined along time, and one field built (buildForecast()). Also the file lists themselves:
 // comma-separated lists and glob(3) patterns.
 
@@ -26,8 +26,8 @@ struct FileTimes
     TimeValues tv;
 };
 
-/// The time axis of the velocities of one file, found as readNetCdfTimeAxis() finds it; it must be dated.
-FileTimes readFileTimes(const std::string &path, const NetCdfCurrentOptions &opt)
+/// The time axis of the velocities of one file, found as readForecastTimeAxis() finds it; it must be dated.
+FileTimes readFileTimes(const std::string &path, const GriddedCurrentOptions &opt)
 {
     GriddedDataset f(path);
     const int uVar = findVelocity(f, opt.uName, true, "uName");
@@ -44,7 +44,7 @@ FileTimes readFileTimes(const std::string &path, const NetCdfCurrentOptions &opt
         throw f.error("time variable '" + out.tv.name + "': units '" + unitsOf(f, dr.coordVar[std::size_t(dimT)]) +
                       "' have no date: the files of a forecast in several files are ordered and joined by their "
                       "dates; expected '<seconds|minutes|hours|days> since <date>' (give the units with "
-                      "NetCdfCurrentOptions::timeUnits, or plan on one file)");
+                      "GriddedCurrentOptions::timeUnits, or plan on one file)");
     return out;
 }
 
@@ -72,17 +72,17 @@ struct JoinedAxis
 
     std::string describe() const
     {
-        return "NetCDF forecast of " + std::to_string(files.size()) + " files ('" + files.front().path + "' to '" +
+        return "gridded forecast of " + std::to_string(files.size()) + " files ('" + files.front().path + "' to '" +
                files.back().path + "')";
     }
 };
 
-JoinedAxis joinTimeAxes(const std::vector<std::string> &paths, const NetCdfCurrentOptions &opt)
+JoinedAxis joinTimeAxes(const std::vector<std::string> &paths, const GriddedCurrentOptions &opt)
 {
     if (opt.steadyRecord)
-        throw Error("NetCdfCurrentOptions::steadyRecord given with " + std::to_string(paths.size()) +
+        throw Error("GriddedCurrentOptions::steadyRecord given with " + std::to_string(paths.size()) +
                         " NetCDF files: a steady record is one record of one file; give that file alone",
-                    "NetCdfCurrentOptions::steadyRecord");
+                    "GriddedCurrentOptions::steadyRecord");
     JoinedAxis a;
     for (const std::string &p : paths)
     {
@@ -158,7 +158,7 @@ void checkGaps(const JoinedAxis &a, const AxisSelection &sel)
                             iso(a.originSeconds + a.times[c1], a.calendar) +
                             " in the second), more than twice the forecast's typical step of " + hoursText(step) +
                             ": a file missing? Give it, or choose a departure and horizon that avoid the gap",
-                        "NetCdfCurrentOptions::departure");
+                        "GriddedCurrentOptions::departure");
     }
 }
 
@@ -219,10 +219,10 @@ bool isPacked(const ForecastPiece &p)
 } // namespace
 } // namespace gridded_detail
 
-bool netCdfIsGeographic(const std::vector<std::string> &paths, const NetCdfCurrentOptions &options)
+bool netCdfIsGeographic(const std::vector<std::string> &paths, const GriddedCurrentOptions &options)
 {
     if (paths.empty())
-        throw Error("NetCDF forecast: no file given");
+        throw Error("gridded forecast: no file given");
     const bool first = netCdfIsGeographic(paths.front(), options);
     for (std::size_t i = 1; i < paths.size(); ++i)
         if (netCdfIsGeographic(paths[i], options) != first)
@@ -233,14 +233,14 @@ bool netCdfIsGeographic(const std::vector<std::string> &paths, const NetCdfCurre
     return first;
 }
 
-NetCdfTimeAxis readNetCdfTimeAxis(const std::vector<std::string> &paths, const NetCdfCurrentOptions &options)
+ForecastTimeAxis readForecastTimeAxis(const std::vector<std::string> &paths, const GriddedCurrentOptions &options)
 {
     if (paths.empty())
-        throw Error("NetCDF forecast: no file given");
+        throw Error("gridded forecast: no file given");
     if (paths.size() == 1)
-        return readNetCdfTimeAxis(paths.front(), options);
+        return readForecastTimeAxis(paths.front(), options);
     const gridded_detail::JoinedAxis a = gridded_detail::joinTimeAxes(paths, options);
-    NetCdfTimeAxis axis;
+    ForecastTimeAxis axis;
     axis.found = true;
     axis.steady = false;
     axis.dated = true;
@@ -252,17 +252,17 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::vector<std::string> &paths, const N
     return axis;
 }
 
-NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const NetCdfCurrentOptions &opt)
+GriddedCurrents loadGriddedCurrents(const std::vector<std::string> &paths, const GriddedCurrentOptions &opt)
 {
     using namespace gridded_detail;
     if (paths.empty())
-        throw Error("NetCDF forecast: no file given");
+        throw Error("gridded forecast: no file given");
     if (paths.size() == 1)
-        return loadNetCdfCurrents(paths.front(), opt);
+        return loadGriddedCurrents(paths.front(), opt);
     const JoinedAxis a = joinTimeAxes(paths, opt);
     const std::string forecast = a.describe();
     // the records the trip needs, chosen on the joined axis exactly as in one file
-    NetCdfCurrents meta;
+    GriddedCurrents meta;
     meta.dated = true;
     meta.calendar = a.calendar;
     meta.originSeconds = a.originSeconds;
@@ -294,7 +294,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
         s.values.push_back(a.times[c]);
     }
     // each file read with the same stages and options; zero-velocity land is decided below, on all the records
-    NetCdfCurrentOptions o = opt;
+    GriddedCurrentOptions o = opt;
     o.zeroVelocityLand = false;
     // joined along time as they are read (internal order t, z, y, x: records are appended); land in any file's
     // trip records is land
@@ -331,7 +331,7 @@ NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const N
     GriddedData &g = p.g;
     g.time = sel.values;
     p.t = sel;
-    NetCdfCurrents &out = p.out;
+    GriddedCurrents &out = p.out;
     // each node counted for the first signal that marks it in any file: fill values, the mask, the tracer
     out.fillLandNodes = out.maskLandNodes = out.tracerLandNodes = out.zeroLandNodes = 0;
     for (std::size_t n = 0; n < g.water.size(); ++n)

@@ -1,6 +1,6 @@
 #pragma once
 /// @file ForecastFiles.h
-/// @brief Internal: the stages of loadNetCdfCurrents() as two calls (read one file's data; build the field), so
+/// @brief Internal: the stages of loadGriddedCurrents() as two calls (read one file's data; build the field), so
 /// that a forecast in several files (ForecastFiles.cpp) reads each file with the same stages and builds one field.
 /// Not installed.
 
@@ -21,10 +21,10 @@ namespace gridded_detail
 /// originSeconds must be set: the departure is read with out.fieldTime()). `name` names the time variable in
 /// messages; `error` makes the Error (naming the file or files). idx are positions in ts.
 AxisSelection selectForecastTimes(const std::vector<double> &ts, const std::string &name,
-                                  const NetCdfCurrentOptions &opt, NetCdfCurrents &out,
+                                  const GriddedCurrentOptions &opt, GriddedCurrents &out,
                                   const std::function<Error(const std::string &)> &error);
 
-/// One file's data as loadNetCdfCurrents() reads it: velocities (unpacked, in m/s, internal order t, z, y, x) and
+/// One file's data as loadGriddedCurrents() reads it: velocities (unpacked, in m/s, internal order t, z, y, x) and
 /// land, before the depth average, the node coordinates and the field.
 struct ForecastPiece
 {
@@ -36,19 +36,19 @@ struct ForecastPiece
     GriddedData g;                       ///< nx, ny, depth, time, u, v, water (no coordinates yet)
     std::vector<std::uint8_t> fillWater; ///< g.water before the mask stage (land from fill values)
     std::vector<std::uint8_t> maskWater; ///< g.water after the mask stage, before the tracer's
-    bool cornerGrid{false};              ///< NetCdfCurrents::cornerGrid (a B grid: every still node is land)
-    NetCdfCurrents out;                  ///< what is known so far (variables, time fields, land counts, values)
+    bool cornerGrid{false};              ///< GriddedCurrents::cornerGrid (a B grid: every still node is land)
+    GriddedCurrents out;                 ///< what is known so far (variables, time fields, land counts, values)
 };
 
 /// Opens the file and runs the stages up to the land: fill values, the mask, the tracer, and (one file: times null)
 /// zero velocity. times null: the records are chosen by selectTimes() (the single-file path); else they are
 /// `*times` (positions in idx are file indices, values the field times of the whole forecast), totalTimes, the
 /// records of the whole forecast, is what the memory check counts, and zero-velocity land is left to the caller.
-ForecastPiece readForecastPiece(const std::string &path, const NetCdfCurrentOptions &opt,
+ForecastPiece readForecastPiece(const std::string &path, const GriddedCurrentOptions &opt,
                                 const AxisSelection *times = nullptr, std::size_t totalTimes = 0);
 
-/// The rest of loadNetCdfCurrents(): depth average, node coordinates, bounds, the GriddedCurrentField (named
+/// The rest of loadGriddedCurrents(): depth average, node coordinates, bounds, the GriddedCurrentField (named
 /// opt.field.name, else fieldName).
-NetCdfCurrents buildForecast(ForecastPiece &p, const NetCdfCurrentOptions &opt, const std::string &fieldName);
+GriddedCurrents buildForecast(ForecastPiece &p, const GriddedCurrentOptions &opt, const std::string &fieldName);
 } // namespace gridded_detail
 } // namespace ompl_glider

@@ -13,7 +13,7 @@ namespace gridded_detail
 namespace
 {
 /// u and v, with the same 2 to 4 dimensions.
-void findVelocities(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Layout &l)
+void findVelocities(const GriddedDataset &f, const GriddedCurrentOptions &opt, Layout &l)
 {
     l.uVar = findVelocity(f, opt.uName, true, "uName");
     l.vVar = findVelocity(f, opt.vName, false, "vName");
@@ -55,7 +55,7 @@ std::vector<int> curvilinearCandidates(const GriddedDataset &f, int uVar, const 
 }
 
 /// The 2-D longitude/latitude (x/y in Cartesian mode) variables of a curvilinear grid on (j, i) = want.
-void findCurvilinearCoordinates(const GriddedDataset &f, const NetCdfCurrentOptions &opt, const std::vector<int> &want,
+void findCurvilinearCoordinates(const GriddedDataset &f, const GriddedCurrentOptions &opt, const std::vector<int> &want,
                                 Layout &l)
 {
     const bool cartesian = opt.coordinates == CoordinateMode::Cartesian;
@@ -88,7 +88,7 @@ std::string dimText(const GriddedDataset &f, int dim)
 /// The rho (cell centre) dimensions (eta_rho, xi_rho) of a ROMS-like C grid: u on (eta_u, xi_u) with
 /// eta_u = eta_rho and xi_u = xi_rho - 1, v on (eta_v, xi_v) with eta_v = eta_rho - 1 and xi_v = xi_rho; found
 /// from the 2-D longitude/latitude (x/y) variables of that shape. @throws Error when the staggering is another.
-std::vector<int> rhoDimensions(const GriddedDataset &f, const NetCdfCurrentOptions &opt, const Layout &l)
+std::vector<int> rhoDimensions(const GriddedDataset &f, const GriddedCurrentOptions &opt, const Layout &l)
 {
     const std::size_t n = l.uDims.size();
     const int ueta = l.uDims[n - 2], uxi = l.uDims[n - 1], veta = l.vDims[n - 2], vxi = l.vDims[n - 1];
@@ -112,7 +112,7 @@ std::vector<int> rhoDimensions(const GriddedDataset &f, const NetCdfCurrentOptio
 /// The grid angle variable: the given one (which must be 2-D on the grid), else one named "angle" on the grid,
 /// unless u is named eastward; its unit (radians or degrees). -1 when none: then a curvilinear grid's angle is
 /// derived from its coordinates (Layout::deriveAngle) unless u is named eastward or the angle is "none".
-void findAngle(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Layout &l)
+void findAngle(const GriddedDataset &f, const GriddedCurrentOptions &opt, Layout &l)
 {
     const std::vector<int> grid = {l.dims[std::size_t(l.dimY)], l.dims[std::size_t(l.dimX)]};
     if (lower(opt.angleName) == "none")
@@ -121,14 +121,14 @@ void findAngle(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Layout 
     {
         const auto v = f.findVar(opt.angleName);
         if (!v)
-            throw f.error("no grid angle variable '" + opt.angleName + "' (given as NetCdfCurrentOptions::angleName)",
-                          "NetCdfCurrentOptions::angleName");
+            throw f.error("no grid angle variable '" + opt.angleName + "' (given as GriddedCurrentOptions::angleName)",
+                          "GriddedCurrentOptions::angleName");
         if (f.varDims(*v) != grid)
             throw f.error("grid angle variable '" + opt.angleName +
-                              "' (NetCdfCurrentOptions::angleName) is not on "
+                              "' (GriddedCurrentOptions::angleName) is not on "
                               "the grid of the velocities (" +
                               dimText(f, grid[0]) + ", " + dimText(f, grid[1]) + ")",
-                          "NetCdfCurrentOptions::angleName");
+                          "GriddedCurrentOptions::angleName");
         l.angleVar = *v;
     }
     else
@@ -150,7 +150,7 @@ void findAngle(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Layout 
                                   "' is not on the grid of the "
                                   "velocities (" +
                                   dimText(f, grid[0]) + ", " + dimText(f, grid[1]) +
-                                  "): give the grid's angle with NetCdfCurrentOptions::angleName, or 'none' when "
+                                  "): give the grid's angle with GriddedCurrentOptions::angleName, or 'none' when "
                                   "the velocities are east/north");
                 l.angleVar = var;
             }
@@ -173,7 +173,8 @@ void findAngle(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Layout 
 
 /// Without 1-D x/y axes: the two remaining dimensions of length > 1 are (j, i) in file order, with 2-D
 /// coordinates. Updates the roles and geoAxes/cartAxes.
-void makeCurvilinear(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Layout &l, bool &geoAxes, bool &cartAxes)
+void makeCurvilinear(const GriddedDataset &f, const GriddedCurrentOptions &opt, Layout &l, bool &geoAxes,
+                     bool &cartAxes)
 {
     std::vector<int> rest;
     for (std::size_t d = 0; d < l.dims.size(); ++d)
@@ -182,7 +183,7 @@ void makeCurvilinear(const GriddedDataset &f, const NetCdfCurrentOptions &opt, L
     if (rest.size() != 2 || l.dimX >= 0 || l.dimY >= 0)
         throw f.error("variable '" + l.uName +
                       "': expected longitude/latitude (or x/y) axes or a 2-D curvilinear grid; found no horizontal "
-                      "coordinate variables (name them with NetCdfCurrentOptions::lonName/latName)");
+                      "coordinate variables (name them with GriddedCurrentOptions::lonName/latName)");
     l.dimY = rest[0];
     l.dimX = rest[1];
     l.role[std::size_t(l.dimY)] = Role::Y;
@@ -216,7 +217,7 @@ void checkNoEmptyDimension(const GriddedDataset &f, const Layout &l)
 }
 
 /// Geographic or Cartesian, from the options and what the axes looked like.
-bool decideGeographic(const GriddedDataset &f, const NetCdfCurrentOptions &opt, const Layout &l, bool geoAxes,
+bool decideGeographic(const GriddedDataset &f, const GriddedCurrentOptions &opt, const Layout &l, bool geoAxes,
                       bool cartAxes)
 {
     if (opt.coordinates == CoordinateMode::Geographic)
@@ -233,7 +234,7 @@ bool decideGeographic(const GriddedDataset &f, const NetCdfCurrentOptions &opt, 
 }
 } // namespace
 
-Layout detectLayout(const GriddedDataset &f, const NetCdfCurrentOptions &opt)
+Layout detectLayout(const GriddedDataset &f, const GriddedCurrentOptions &opt)
 {
     Layout l;
     findVelocities(f, opt, l);

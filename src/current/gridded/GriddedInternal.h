@@ -1,6 +1,6 @@
 #pragma once
 /// @file GriddedInternal.h
-/// @brief Internal pieces of the NetCDF reader (loadNetCdfCurrents(), readNetCdfTimeAxis()); not installed.
+/// @brief Internal pieces of the NetCDF reader (loadGriddedCurrents(), readForecastTimeAxis()); not installed.
 ///
 /// The reader runs in stages, one source file each (all in src/current/gridded/ except the composition and the file
 /// access):
@@ -10,7 +10,7 @@
 ///  - AxisChecks.cpp         coordinate values: no fill values or non-finite numbers, strictly monotonic axes
 ///  - VariableDetection.cpp  velocities and the role of each of their dimensions (CF standard_name, axis, units)
 ///  - GridLayout.cpp         1-D axes or a 2-D curvilinear grid; geographic or Cartesian
-///  - TimeAxis.cpp           the CF time axis and the time window (also readNetCdfTimeAxis())
+///  - TimeAxis.cpp           the CF time axis and the time window (also readForecastTimeAxis())
 ///  - DepthAxis.cpp          depth in metres, positive down, and the layers down to maxDepth
 ///  - RegionOfInterest.cpp   the region of the options, index ranges of an axis, longitude wrapping
 ///  - RectilinearSubset.cpp  index ranges of 1-D axes for the region, wrapping across the seam of global grids
@@ -22,7 +22,7 @@
 ///  - Staggered.cpp          a ROMS C grid's u/v read at their own points onto the rho points; grid angle rotation
 ///  - SigmaLevels.cpp        terrain-following s-levels (ROMS) interpolated onto depth levels in metres
 ///  - NodeCoordinates.cpp    projected (and rotated) or Cartesian node coordinates
-///  - ../NetCdfCurrents.cpp  loadNetCdfCurrents(), composing the stages, and the NetCdfCurrents members
+///  - ../GriddedCurrents.cpp  loadGriddedCurrents(), composing the stages, and the GriddedCurrents members
 
 #include <netcdf.h>
 
@@ -43,7 +43,7 @@
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/LocalProjection.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 #include "ompl_glider/io/UnitConversion.h"
 #include "ompl_glider/Exception.h"
 #include "../../core/Numbers.h"
@@ -113,7 +113,7 @@ struct DimensionRoles
 /// Classifies the dimensions of the variable uVar. @throws Error when a given coordinate name is missing or not
 /// on a dimension of u, a dimension named like time has no coordinate variable, or two dimensions have the
 /// same role.
-DimensionRoles classifyDimensions(const GriddedDataset &f, const NetCdfCurrentOptions &opt, int uVar);
+DimensionRoles classifyDimensions(const GriddedDataset &f, const GriddedCurrentOptions &opt, int uVar);
 
 // ---- the grid (GridLayout.cpp) ----
 
@@ -142,7 +142,7 @@ struct Layout
 };
 
 /// Finds u and v and the grid they are on. @throws Error naming the file, the variable and what was expected.
-Layout detectLayout(const GriddedDataset &f, const NetCdfCurrentOptions &opt);
+Layout detectLayout(const GriddedDataset &f, const GriddedCurrentOptions &opt);
 
 // ---- time (TimeAxis.cpp) and depth (DepthAxis.cpp) ----
 
@@ -156,28 +156,28 @@ struct TimeValues
     std::vector<double> times;             ///< per file index: seconds after the first time, or raw values
 };
 
-/// Reads the time coordinate variable tv, with unitsOverride (NetCdfCurrentOptions::timeUnits) in place of its
+/// Reads the time coordinate variable tv, with unitsOverride (GriddedCurrentOptions::timeUnits) in place of its
 /// units attribute when given. @throws Error when the override is not "<unit> since <date>", when the units are
-/// not "<unit> since <date>" and allowUndated is false (naming NetCdfCurrentOptions::timeUnits and steadyRecord),
+/// not "<unit> since <date>" and allowUndated is false (naming GriddedCurrentOptions::timeUnits and steadyRecord),
 /// when the units or calendar are not understood, or when the variable has no values, holds fill values or
 /// non-finite numbers, or is not strictly increasing.
 TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, const std::string &unitsOverride = "");
 
-/// The one record of NetCdfCurrentOptions::steadyRecord and its date.
+/// The one record of GriddedCurrentOptions::steadyRecord and its date.
 struct SteadyRecord
 {
     std::size_t index{0}; ///< file index along the time dimension
-    bool dated{false};    ///< the axis (or NetCdfCurrentOptions::timeUnits) has dates
+    bool dated{false};    ///< the axis (or GriddedCurrentOptions::timeUnits) has dates
     Calendar calendar{Calendar::Standard};
     double originSeconds{0.0}; ///< the record's time, seconds since the calendar epoch (dated)
 };
 
-/// nullopt without NetCdfCurrentOptions::steadyRecord; else the record on time dimension timeDim (coordinate
+/// nullopt without GriddedCurrentOptions::steadyRecord; else the record on time dimension timeDim (coordinate
 /// variable tv, -1 if none), dated when its units (or the options' timeUnits) are "<unit> since <date>" (an
 /// undated axis is not read). @throws Error when the index is not below the number of records, or the dated axis
 /// is bad (readTimeValues()).
 std::optional<SteadyRecord> steadyRecordOf(const GriddedDataset &f, int timeDim, int tv,
-                                           const NetCdfCurrentOptions &opt);
+                                           const GriddedCurrentOptions &opt);
 
 /// File indices and coordinate values chosen along one dimension.
 struct AxisSelection
@@ -195,10 +195,10 @@ struct AxisSelection
 
 /// The forecast times the mission needs (departure to departure + horizon, plus 2 steps each side); sets the
 /// time fields of out (dated, steady, calendar, origin, forecast begin/end, departure). {0}/{0} without time axis
-/// or with a single record; {steadyRecord}/{0} with NetCdfCurrentOptions::steadyRecord. @throws Error for
+/// or with a single record; {steadyRecord}/{0} with GriddedCurrentOptions::steadyRecord. @throws Error for
 /// timeUnits or steadyRecord given for a file without time dimension.
-AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt,
-                          NetCdfCurrents &out);
+AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const GriddedCurrentOptions &opt,
+                          GriddedCurrents &out);
 
 /// The depth layers (metres, positive down, ascending) down to the first at or below maxDepth plus 2;
 /// {0}/{0} without depth axis; every level, with sigma set, for a terrain-following coordinate.
@@ -218,7 +218,7 @@ struct RegionOfInterest
 };
 
 /// @throws Error when only some bounds are given, latMin > latMax, or lonMin > lonMax in Cartesian mode.
-RegionOfInterest regionOfInterest(const NetCdfCurrentOptions &opt, bool geographic);
+RegionOfInterest regionOfInterest(const GriddedCurrentOptions &opt, bool geographic);
 
 /// The horizontal nodes loaded: file index per internal i / j and their coordinates.
 struct HorizontalSubset
@@ -303,7 +303,7 @@ struct HyperslabPlan
     std::size_t fileValues{1}; ///< values per component in the file variable
 };
 
-/// The bytes loadNetCdfCurrents() allocates at its peak for ni x nj nodes, nt times and nz depths: 20 per value of
+/// The bytes loadGriddedCurrents() allocates at its peak for ni x nj nodes, nt times and nz depths: 20 per value of
 /// each of u and v while the GriddedCurrentField is built (the loaded float, the field's copy, its stencil maximum
 /// and minimum and their scratch copy; more than the reading's raw double and read buffer), plus per node the
 /// coordinates, the field's cell index and the land masks.
@@ -317,15 +317,15 @@ HyperslabPlan planHyperslab(const GriddedDataset &f, const Layout &l, const Hori
 
 /// The conversion to m/s of u and v (UDUNITS-2, velocityToMetresPerSecond()): the options' velocityUnits, else
 /// their units attributes; the identity for velocities without units ("" or "1") in a Cartesian file.
-/// @throws Error naming the file, the variable (or NetCdfCurrentOptions::velocityUnits) and the units when they
+/// @throws Error naming the file, the variable (or GriddedCurrentOptions::velocityUnits) and the units when they
 /// are missing, not understood, not a velocity, or different for u and v.
-LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt);
+LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, const GriddedCurrentOptions &opt);
 /// Refuses a velocity no current or wind reaches at a water node of any record loaded (g.u/g.v in m/s: more than
 /// 300 m/s, or not finite in single precision; in a Cartesian file's units without units, more than 1e6), naming
 /// the variable, the value, the node (file indices, coordinates) and the record: values read as fill values, a
 /// scale_factor or units that are wrong, never planned on.
 void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
-                             const AxisSelection &t, const NetCdfCurrentOptions &opt, const GriddedData &g);
+                             const AxisSelection &t, const GriddedCurrentOptions &opt, const GriddedData &g);
 /// The conversion to metres of a Cartesian axis' units (UDUNITS-2, lengthToMetres()); the identity without
 /// units or for dimensionless ones (degrees included). @throws Error naming the file, the variable and the units
 /// when they are not a length.
@@ -354,13 +354,14 @@ void unpackCoordinates(const GriddedDataset &f, int var, std::vector<double> &va
 /// and decides zero-velocity land after every other stage (zeroVelocityLand()).
 void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv, const Packing &pu, const Packing &pv,
                    const LinearConversion &vel, bool zeroIsLand, const AxisSelection &t, GriddedData &g,
-                   NetCdfCurrents &out);
+                   GriddedCurrents &out);
 /// Reads u and v over the plan into g.u / g.v (unpacked, converted to m/s by vel) and g.water (unpackAndMask()
 /// with opt.zeroVelocityLand). g.nx, g.ny, g.depth and g.time must be set.
 void readVelocities(const GriddedDataset &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
-                    const LinearConversion &vel, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
+                    const LinearConversion &vel, const GriddedCurrentOptions &opt, GriddedData &g,
+                    GriddedCurrents &out);
 
-/// How zero velocity becomes land (NetCdfCurrentOptions::zeroVelocityLand), decided after the fill values, the
+/// How zero velocity becomes land (GriddedCurrentOptions::zeroVelocityLand), decided after the fill values, the
 /// mask and the tracer.
 struct ZeroLandRule
 {
@@ -397,7 +398,7 @@ void zeroLandVelocities(GriddedData &g);
 /// @throws Error when the loaded rho points are not one contiguous, interior block.
 void readStaggeredVelocities(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
                              const AxisSelection &z, const AxisSelection &t, const LinearConversion &vel,
-                             const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
+                             const GriddedCurrentOptions &opt, GriddedData &g, GriddedCurrents &out);
 /// True when the depth variable zv is terrain-following (standard_name ocean_s_*, ocean_sigma_*,
 /// ocean_double_sigma_*).
 bool isSigmaCoordinate(const GriddedDataset &f, int zv);
@@ -413,7 +414,7 @@ void remapSigmaToDepths(const GriddedDataset &f, const Layout &l, const Horizont
 /// @throws Error when the angle holds fill values or non-finite numbers, or a derived angle is ambiguous (naming the
 /// node, the coordinates and what to give instead).
 void rotateGridToEastNorth(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, GriddedData &g,
-                           NetCdfCurrents &out);
+                           GriddedCurrents &out);
 
 // ---- the grid angle from the coordinates (GridAngle.cpp) ----
 
@@ -446,7 +447,7 @@ DerivedGridAngle deriveGridAngle(const std::vector<double> &x, const std::vector
 /// "derived from <coordinates>: the grid's i direction a..b degrees counter-clockwise from east".
 std::string gridAngleNote(const DerivedGridAngle &a, const std::string &coordinates);
 /// Collapses the depth layers of g into one: the depth average over [top, bottom] (trapezoid rule on the
-/// piecewise-linear profile, constant outside the layers; NetCdfCurrentOptions::depthAverage); a node is land when
+/// piecewise-linear profile, constant outside the layers; GriddedCurrentOptions::depthAverage); a node is land when
 /// it is land at a layer that carries weight. g.depth becomes {top}.
 void averageOverDepth(double top, double bottom, GriddedData &g);
 
@@ -472,18 +473,18 @@ struct GridFit
 std::optional<GridFit> fitToGrid(const GriddedDataset &f, const Layout &l, int var, const HorizontalSubset &h,
                                  const AxisSelection &z, const AxisSelection &t, std::string &why);
 
-/// The land/sea mask variable (the given one, or one found automatically: rules at loadNetCdfCurrents()) applied
+/// The land/sea mask variable (the given one, or one found automatically: rules at loadGriddedCurrents()) applied
 /// to g.water over the loaded nodes, depths and times; sets out.maskVariable and out.maskLandNodes.
 /// @throws Error when a given mask is missing or does not fit u's grid.
 void applyLandMask(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
-                   const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
+                   const AxisSelection &t, const GriddedCurrentOptions &opt, GriddedData &g, GriddedCurrents &out);
 
 /// True when the velocities' coordinates say they are a B grid's velocity points (the corners of the tracer
 /// cells): named ULAT/ULONG/ULON (POP) or xu_ocean/yu_ocean (MOM), or described as the "u-grid" in their
 /// long_name (NCL's POP files: "array of u-grid latitudes"). Not for a staggered (C) layout.
 bool cornerVelocities(const GriddedDataset &f, const Layout &l);
 
-/// The tracer stage: a tracer variable on the velocities' grid (the given NetCdfCurrentOptions::tracerName, else
+/// The tracer stage: a tracer variable on the velocities' grid (the given GriddedCurrentOptions::tracerName, else
 /// found automatically: standard_name sea_water_temperature, sea_water_potential_temperature,
 /// sea_water_conservative_temperature, sea_water_salinity, sea_water_practical_salinity or
 /// sea_water_absolute_salinity, then the names temp, t, salt, theta, thetao, so, votemper, vosaline, water_temp,
@@ -495,7 +496,7 @@ bool cornerVelocities(const GriddedDataset &f, const Layout &l);
 /// variable never written). Sets out.tracerVariable, out.tracerPlacement, out.tracerLandNodes, out.cornerGrid.
 /// @throws Error when a given tracer is missing or does not fit u's grid.
 void applyTracerLand(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
-                     const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out);
+                     const AxisSelection &t, const GriddedCurrentOptions &opt, GriddedData &g, GriddedCurrents &out);
 
 // ---- coordinates (NodeCoordinates.cpp) ----
 
@@ -504,6 +505,6 @@ void applyTracerLand(const GriddedDataset &f, const Layout &l, const HorizontalS
 /// metres. Returns the projection (null in Cartesian mode).
 std::shared_ptr<const LocalProjection> setNodeCoordinates(const GriddedDataset &f, const Layout &l,
                                                           const HorizontalSubset &h, const RegionOfInterest &r,
-                                                          const NetCdfCurrentOptions &opt, GriddedData &g);
+                                                          const GriddedCurrentOptions &opt, GriddedData &g);
 } // namespace gridded_detail
 } // namespace ompl_glider

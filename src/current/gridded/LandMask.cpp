@@ -1,8 +1,8 @@
 // Reading the velocities and the land: u and v over the hyperslab plan, unpacked to m/s; a node (per depth layer)
 // is land where u or v is a fill value (or outside the valid range, or NaN) in a record of the trip, where a
-// land/sea mask variable says land, where a tracer is missing (TracerLand.cpp), and (NetCdfCurrentOptions::
+// land/sea mask variable says land, where a tracer is missing (TracerLand.cpp), and (GriddedCurrentOptions::
 // zeroVelocityLand) where u = v = 0 exactly in every record of the trip next to that land. The rules are
-// documented at loadNetCdfCurrents() (NetCdfCurrents.h).
+// documented at loadGriddedCurrents() (GriddedCurrents.h).
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -19,7 +19,7 @@ namespace gridded_detail
 /// the field through cubic/Akima time stencils, as a zero).
 void unpackAndMask(const std::vector<double> &ru, const std::vector<double> &rv, const Packing &pu, const Packing &pv,
                    const LinearConversion &vel, bool zeroIsLand, const AxisSelection &t, GriddedData &g,
-                   NetCdfCurrents &out)
+                   GriddedCurrents &out)
 {
     const std::size_t total = ru.size(), perTime = g.depth.size() * g.nx * g.ny;
     g.u.assign(total, 0.0f);
@@ -322,7 +322,7 @@ const char *const kMaskNames[] = {"mask_rho",      "mask",    "tmask",    "landm
                                   "land_sea_mask", "seamask", "sea_mask", "kmu",      "kmt"};
 
 /// The mask variable: the given one (which must fit), else the first candidate that fits; -1 for none.
-int findMask(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt, const HorizontalSubset &h,
+int findMask(const GriddedDataset &f, const Layout &l, const GriddedCurrentOptions &opt, const HorizontalSubset &h,
              const AxisSelection &z, const AxisSelection &t, std::optional<GridFit> &dims)
 {
     std::string why;
@@ -333,13 +333,13 @@ int findMask(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOption
         const auto v = f.findVar(opt.maskName);
         if (!v)
             throw f.error("no mask variable '" + opt.maskName +
-                              "' (given as the land/sea mask: NetCdfCurrentOptions::maskName)",
-                          "NetCdfCurrentOptions::maskName");
+                              "' (given as the land/sea mask: GriddedCurrentOptions::maskName)",
+                          "GriddedCurrentOptions::maskName");
         dims = fitToGrid(f, l, *v, h, z, t, why);
         if (!dims)
             throw f.error("mask variable '" + opt.maskName +
-                              "' (NetCdfCurrentOptions::maskName) does not fit the velocities: " + why,
-                          "NetCdfCurrentOptions::maskName");
+                              "' (GriddedCurrentOptions::maskName) does not fit the velocities: " + why,
+                          "GriddedCurrentOptions::maskName");
         return *v;
     }
     std::vector<int> order;
@@ -374,7 +374,7 @@ int findMask(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOption
 } // namespace
 
 void readVelocities(const GriddedDataset &f, const Layout &l, const HyperslabPlan &plan, const AxisSelection &t,
-                    const LinearConversion &vel, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
+                    const LinearConversion &vel, const GriddedCurrentOptions &opt, GriddedData &g, GriddedCurrents &out)
 {
     const std::size_t total = g.time.size() * g.depth.size() * g.ny * g.nx;
     std::vector<double> ru(total), rv(total);
@@ -385,7 +385,7 @@ void readVelocities(const GriddedDataset &f, const Layout &l, const HyperslabPla
 }
 
 void applyLandMask(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
-                   const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
+                   const AxisSelection &t, const GriddedCurrentOptions &opt, GriddedData &g, GriddedCurrents &out)
 {
     std::optional<GridFit> dims;
     const int var = findMask(f, l, opt, h, z, t, dims);

@@ -70,7 +70,7 @@ void cartesianNodes(const GriddedDataset &f, const Layout &l, const HorizontalSu
 
 std::shared_ptr<const LocalProjection> setNodeCoordinates(const GriddedDataset &f, const Layout &l,
                                                           const HorizontalSubset &h, const RegionOfInterest &r,
-                                                          const NetCdfCurrentOptions &opt, GriddedData &g)
+                                                          const GriddedCurrentOptions &opt, GriddedData &g)
 {
     if (!l.geographic)
     {

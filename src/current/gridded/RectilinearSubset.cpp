@@ -52,7 +52,7 @@ void subsetY(const GriddedDataset &f, const Layout &l, const RegionOfInterest &r
                               ", " + std::to_string(r.latMax) + "] is outside '" + l.yName + "' [" +
                               std::to_string(*std::min_element(ys.begin(), ys.end())) + ", " +
                               std::to_string(*std::max_element(ys.begin(), ys.end())) + "]",
-                          "NetCdfCurrentOptions::region");
+                          "GriddedCurrentOptions::region");
         ya = range->first;
         yb = range->second;
     }
@@ -125,7 +125,7 @@ void subsetXLinear(const GriddedDataset &f, const Layout &l, const RegionOfInter
         throw f.error("region " + std::string(l.geographic ? "longitude" : "x") + " [" + std::to_string(r.lonMin) +
                           ", " + std::to_string(r.lonMax) + "] is outside '" + l.xName + "' [" +
                           std::to_string(xa.front()) + ", " + std::to_string(xa.back()) + "]",
-                      "NetCdfCurrentOptions::region");
+                      "GriddedCurrentOptions::region");
     for (std::size_t k = range->first; k <= range->second; ++k)
     {
         h.xIdx.push_back(x.xmap[k]);

@@ -8,22 +8,22 @@ namespace ompl_glider
 {
 namespace gridded_detail
 {
-RegionOfInterest regionOfInterest(const NetCdfCurrentOptions &opt, bool geographic)
+RegionOfInterest regionOfInterest(const GriddedCurrentOptions &opt, bool geographic)
 {
     RegionOfInterest r;
     r.given = std::isfinite(opt.lonMin) && std::isfinite(opt.lonMax) && std::isfinite(opt.latMin) &&
               std::isfinite(opt.latMax);
     if (!r.given && (std::isfinite(opt.lonMin) || std::isfinite(opt.lonMax) || std::isfinite(opt.latMin) ||
                      std::isfinite(opt.latMax)))
-        throw Error("NetCdfCurrentOptions: give all four of lonMin, lonMax, latMin, latMax, or none");
+        throw Error("GriddedCurrentOptions: give all four of lonMin, lonMax, latMin, latMax, or none");
     if (r.given && opt.latMin > opt.latMax)
-        throw Error("NetCdfCurrentOptions: latMin > latMax");
+        throw Error("GriddedCurrentOptions: latMin > latMax");
     r.lonMin = r.lon0 = opt.lonMin;
     r.lonMax = r.lon1 = opt.lonMax;
     if (r.given && geographic && r.lon1 < r.lon0)
         r.lon1 += 360.0; // across the antimeridian
     if (r.given && !geographic && r.lon1 < r.lon0)
-        throw Error("NetCdfCurrentOptions: lonMin (x) > lonMax (x) in Cartesian mode");
+        throw Error("GriddedCurrentOptions: lonMin (x) > lonMax (x) in Cartesian mode");
     r.latMin = opt.latMin;
     r.latMax = opt.latMax;
     r.margin = opt.margin;

@@ -83,7 +83,7 @@ std::optional<std::vector<double>> faceMask(const GriddedDataset &f, const char 
 
 void readStaggeredVelocities(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
                              const AxisSelection &z, const AxisSelection &t, const LinearConversion &vel,
-                             const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
+                             const GriddedCurrentOptions &opt, GriddedData &g, GriddedCurrents &out)
 {
     const std::size_t nx = h.xIdx.size(), ny = h.yIdx.size(), nh = nx * ny;
     const std::size_t layers = t.idx.size() * z.idx.size();
@@ -134,7 +134,7 @@ namespace
 /// The angle derived from the loaded nodes' coordinates (Layout::deriveAngle), per node; empty when the grid is not
 /// rotated. @throws Error naming the node when the angle is ambiguous.
 std::vector<double> derivedAngle(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
-                                 NetCdfCurrents &out)
+                                 GriddedCurrents &out)
 {
     const std::size_t nx = h.xIdx.size(), ny = h.yIdx.size();
     const DerivedGridAngle a = deriveGridAngle(h.nodeLon, h.nodeLat, nx, ny, l.geographic);
@@ -148,8 +148,8 @@ std::vector<double> derivedAngle(const GriddedDataset &f, const Layout &l, const
                       std::to_string(h.yIdx[a.faultJ]) + ", " + std::to_string(h.xIdx[a.faultI]) + "), " + l.xName +
                       " " + text::number(h.nodeLon[n]) + ", " + l.yName + " " + text::number(h.nodeLat[n]) + ", " +
                       a.fault +
-                      "; name the angle variable (NetCdfCurrentOptions::angleName), or give "
-                      "NetCdfCurrentOptions::angleName 'none' if the velocities are eastward/northward");
+                      "; name the angle variable (GriddedCurrentOptions::angleName), or give "
+                      "GriddedCurrentOptions::angleName 'none' if the velocities are eastward/northward");
     }
     if (!a.rotated)
         return {};
@@ -159,7 +159,7 @@ std::vector<double> derivedAngle(const GriddedDataset &f, const Layout &l, const
 
 /// The angle of the variable Layout::angleVar, per loaded node, in radians.
 std::vector<double> angleOfVariable(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
-                                    NetCdfCurrents &out)
+                                    GriddedCurrents &out)
 {
     const std::size_t nx = h.xIdx.size(), nh = nx * h.yIdx.size();
     std::vector<double> a(nh);
@@ -181,7 +181,7 @@ std::vector<double> angleOfVariable(const GriddedDataset &f, const Layout &l, co
 } // namespace
 
 void rotateGridToEastNorth(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, GriddedData &g,
-                           NetCdfCurrents &out)
+                           GriddedCurrents &out)
 {
     if (l.angleVar < 0 && !l.deriveAngle)
         return;

@@ -1,5 +1,5 @@
 // The CF time axis ("<unit> since <date>" with its calendar), the forecast times a mission needs, and
-// readNetCdfTimeAxis(), which finds the axis exactly as the loader does.
+// readForecastTimeAxis(), which finds the axis exactly as the loader does.
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -35,8 +35,8 @@ std::string undatedMessage(const std::string &tn, const std::string &units)
 {
     return "time variable '" + tn + "': units '" + units +
            "' have no date; expected '<seconds|minutes|hours|days> since <date>': give the units with "
-           "NetCdfCurrentOptions::timeUnits (\"days since 2026-01-15\"), or plan on one record as a steady field "
-           "with NetCdfCurrentOptions::steadyRecord";
+           "GriddedCurrentOptions::timeUnits (\"days since 2026-01-15\"), or plan on one record as a steady field "
+           "with GriddedCurrentOptions::steadyRecord";
 }
 } // namespace
 
@@ -48,9 +48,9 @@ TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, co
     const bool overridden = !unitsOverride.empty();
     const std::string units = overridden ? trim(unitsOverride) : unitsOf(f, tv);
     if (overridden && !hasSince(units))
-        throw f.error("NetCdfCurrentOptions::timeUnits '" + unitsOverride + "' (for time variable '" + tn +
+        throw f.error("GriddedCurrentOptions::timeUnits '" + unitsOverride + "' (for time variable '" + tn +
                           "'): expected '<seconds|minutes|hours|days> since <date>'",
-                      "NetCdfCurrentOptions::timeUnits");
+                      "GriddedCurrentOptions::timeUnits");
     if (!hasSince(units) && !allowUndated)
         throw f.error(undatedMessage(tn, units));
     const std::vector<double> raw = f.readAll1D(tv);
@@ -75,9 +75,9 @@ TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, co
         catch (const Error &e)
         {
             if (overridden)
-                throw f.error("NetCdfCurrentOptions::timeUnits '" + unitsOverride + "' (for time variable '" + tn +
+                throw f.error("GriddedCurrentOptions::timeUnits '" + unitsOverride + "' (for time variable '" + tn +
                                   "'): " + e.what(),
-                              "NetCdfCurrentOptions::timeUnits");
+                              "GriddedCurrentOptions::timeUnits");
             throw f.error("time variable '" + tn + "': " + e.what());
         }
         out.dated = true;
@@ -96,20 +96,20 @@ TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, co
 }
 
 std::optional<SteadyRecord> steadyRecordOf(const GriddedDataset &f, int timeDim, int tv,
-                                           const NetCdfCurrentOptions &opt)
+                                           const GriddedCurrentOptions &opt)
 {
     if (!opt.steadyRecord)
         return std::nullopt;
     const std::size_t k = *opt.steadyRecord, n = f.dimLen(timeDim);
     const std::string tn = tv >= 0 ? f.varName(tv) : f.dimName(timeDim);
     if (k >= n)
-        throw f.error("NetCdfCurrentOptions::steadyRecord " + std::to_string(k) + " is out of range: time variable '" +
+        throw f.error("GriddedCurrentOptions::steadyRecord " + std::to_string(k) + " is out of range: time variable '" +
                           tn + "' has " + std::to_string(n) + " record" + (n == 1 ? "" : "s") +
                           (n > 0 ? " (0 to " + std::to_string(n - 1) + ")" : ""),
-                      "NetCdfCurrentOptions::steadyRecord");
+                      "GriddedCurrentOptions::steadyRecord");
     SteadyRecord r;
     r.index = k;
-    // dated by the record's time when the axis (or NetCdfCurrentOptions::timeUnits) has dates; else undated, and
+    // dated by the record's time when the axis (or GriddedCurrentOptions::timeUnits) has dates; else undated, and
     // the time values are not needed at all
     const std::string units = !opt.timeUnits.empty() ? opt.timeUnits : (tv >= 0 ? unitsOf(f, tv) : "");
     if (tv >= 0 && (hasSince(units) || !opt.timeUnits.empty()))
@@ -126,7 +126,7 @@ namespace
 {
 /// "; the file is a climatology ..." when its dates lie in the years 0 and 1 (a climatology's year, as CDO and the
 /// ocean models write one), else "": a pilot's real date must be given in that year.
-std::string climatologyHint(const NetCdfCurrents &out, const std::vector<double> &ts)
+std::string climatologyHint(const GriddedCurrents &out, const std::vector<double> &ts)
 {
     if (!out.dated)
         return "";
@@ -141,8 +141,8 @@ std::string climatologyHint(const NetCdfCurrents &out, const std::vector<double>
 
 /// The departure in field time (the first forecast time when none is given). @throws Error when it is not a time
 /// of the file, or outside the forecast of an unsteady field.
-double departureOf(const std::function<Error(const std::string &)> &error, const NetCdfCurrentOptions &opt,
-                   const std::string &tn, const std::vector<double> &ts, const NetCdfCurrents &out)
+double departureOf(const std::function<Error(const std::string &)> &error, const GriddedCurrentOptions &opt,
+                   const std::string &tn, const std::vector<double> &ts, const GriddedCurrents &out)
 {
     double dep = ts.front();
     if (opt.departure.empty())
@@ -153,14 +153,14 @@ double departureOf(const std::function<Error(const std::string &)> &error, const
     }
     catch (const Error &e)
     {
-        throw Error(error(std::string("departure: ") + e.what()).what(), "NetCdfCurrentOptions::departure");
+        throw Error(error(std::string("departure: ") + e.what()).what(), "GriddedCurrentOptions::departure");
     }
     if (!out.steady && (dep < ts.front() || dep > ts.back()))
         throw Error(error("departure " + opt.departure + " (" + out.isoTime(dep) +
                           ") is outside the forecast of variable '" + tn + "' [" + out.isoTime(ts.front()) + ", " +
                           out.isoTime(ts.back()) + "]" + climatologyHint(out, ts))
                         .what(),
-                    "NetCdfCurrentOptions::departure");
+                    "GriddedCurrentOptions::departure");
     return dep;
 }
 
@@ -171,18 +171,18 @@ std::function<Error(const std::string &)> fileErrors(const GriddedDataset &f)
 }
 } // namespace
 
-AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt,
-                          NetCdfCurrents &out)
+AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const GriddedCurrentOptions &opt,
+                          GriddedCurrents &out)
 {
     AxisSelection s;
     if (l.dimT < 0)
     {
         const std::string what = "variable '" + l.uName + "' has no time dimension (a steady field)";
         if (!opt.timeUnits.empty())
-            throw f.error("NetCdfCurrentOptions::timeUnits given, but " + what, "NetCdfCurrentOptions::timeUnits");
+            throw f.error("GriddedCurrentOptions::timeUnits given, but " + what, "GriddedCurrentOptions::timeUnits");
         if (opt.steadyRecord)
-            throw f.error("NetCdfCurrentOptions::steadyRecord given, but " + what,
-                          "NetCdfCurrentOptions::steadyRecord");
+            throw f.error("GriddedCurrentOptions::steadyRecord given, but " + what,
+                          "GriddedCurrentOptions::steadyRecord");
         out.steady = true;
         out.departureTime = departureOf(fileErrors(f), opt, "", {0.0}, out);
         return s;
@@ -218,7 +218,7 @@ AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const NetCdf
 }
 
 AxisSelection selectForecastTimes(const std::vector<double> &ts, const std::string &name,
-                                  const NetCdfCurrentOptions &opt, NetCdfCurrents &out,
+                                  const GriddedCurrentOptions &opt, GriddedCurrents &out,
                                   const std::function<Error(const std::string &)> &error)
 {
     AxisSelection s;
@@ -254,22 +254,22 @@ AxisSelection selectForecastTimes(const std::vector<double> &ts, const std::stri
 }
 } // namespace gridded_detail
 
-NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const NetCdfCurrentOptions &options)
+ForecastTimeAxis readForecastTimeAxis(const std::string &path, const GriddedCurrentOptions &options)
 {
     using namespace gridded_detail;
     GriddedDataset f(path);
     const int uVar = findVelocity(f, options.uName, true, "uName");
     const DimensionRoles dr = classifyDimensions(f, options, uVar);
-    NetCdfTimeAxis axis;
+    ForecastTimeAxis axis;
     const int dimT = dr.find(Role::Time);
     if (dimT < 0)
     {
         const std::string what = "variable '" + f.varName(uVar) + "' has no time dimension (a steady field)";
         if (!options.timeUnits.empty())
-            throw f.error("NetCdfCurrentOptions::timeUnits given, but " + what, "NetCdfCurrentOptions::timeUnits");
+            throw f.error("GriddedCurrentOptions::timeUnits given, but " + what, "GriddedCurrentOptions::timeUnits");
         if (options.steadyRecord)
-            throw f.error("NetCdfCurrentOptions::steadyRecord given, but " + what,
-                          "NetCdfCurrentOptions::steadyRecord");
+            throw f.error("GriddedCurrentOptions::steadyRecord given, but " + what,
+                          "GriddedCurrentOptions::steadyRecord");
         axis.steady = true;
         return axis;
     }
@@ -295,11 +295,11 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const NetCdfCurrentOp
     return axis;
 }
 
-NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const std::string &timeName, const std::string &uName)
+ForecastTimeAxis readForecastTimeAxis(const std::string &path, const std::string &timeName, const std::string &uName)
 {
-    NetCdfCurrentOptions options;
+    GriddedCurrentOptions options;
     options.timeName = timeName;
     options.uName = uName;
-    return readNetCdfTimeAxis(path, options);
+    return readForecastTimeAxis(path, options);
 }
 } // namespace ompl_glider

@@ -1,7 +1,7 @@
 // Land from a tracer: where a model's temperature or salinity holds its missing value, the model has no ocean. On a
 // B grid (POP, MOM) the velocity points are the corners of the tracer cells, and a velocity point is land when any
 // of the four tracer cells around it is: the model itself holds the velocity there at zero. The rules are
-// documented at applyTracerLand() (GriddedInternal.h) and loadNetCdfCurrents() (NetCdfCurrents.h).
+// documented at applyTracerLand() (GriddedInternal.h) and loadGriddedCurrents() (GriddedCurrents.h).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -21,7 +21,7 @@ const char *const kTracerNames[] = {"temp", "t",        "salt",     "theta",    
                                     "so",   "votemper", "vosaline", "water_temp", "salinity"};
 
 /// The tracer variable: the given one (which must fit), else the first candidate that fits; -1 for none.
-int findTracer(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt, const HorizontalSubset &h,
+int findTracer(const GriddedDataset &f, const Layout &l, const GriddedCurrentOptions &opt, const HorizontalSubset &h,
                const AxisSelection &z, const AxisSelection &t, std::optional<GridFit> &fit)
 {
     std::string why;
@@ -32,11 +32,11 @@ int findTracer(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOpti
         const auto v = f.findVar(opt.tracerName);
         if (!v)
             throw f.error("no tracer variable '" + opt.tracerName +
-                          "' (given as the tracer whose missing values mark land: NetCdfCurrentOptions::tracerName)");
+                          "' (given as the tracer whose missing values mark land: GriddedCurrentOptions::tracerName)");
         fit = fitToGrid(f, l, *v, h, z, t, why);
         if (!fit)
             throw f.error("tracer variable '" + opt.tracerName +
-                          "' (NetCdfCurrentOptions::tracerName) does not fit the velocities: " + why);
+                          "' (GriddedCurrentOptions::tracerName) does not fit the velocities: " + why);
         return *v;
     }
     std::vector<int> order;
@@ -210,7 +210,7 @@ bool cornerVelocities(const GriddedDataset &f, const Layout &l)
 }
 
 void applyTracerLand(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h, const AxisSelection &z,
-                     const AxisSelection &t, const NetCdfCurrentOptions &opt, GriddedData &g, NetCdfCurrents &out)
+                     const AxisSelection &t, const GriddedCurrentOptions &opt, GriddedData &g, GriddedCurrents &out)
 {
     out.cornerGrid = cornerVelocities(f, l);
     std::optional<GridFit> fit;

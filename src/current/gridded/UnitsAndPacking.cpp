@@ -13,7 +13,7 @@ namespace ompl_glider
 {
 namespace gridded_detail
 {
-LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, const NetCdfCurrentOptions &opt)
+LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, const GriddedCurrentOptions &opt)
 {
     const bool given = !opt.velocityUnits.empty();
     const std::string uu = given ? opt.velocityUnits : unitsOf(f, l.uVar);
@@ -25,7 +25,7 @@ LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, 
         if (!given && trim(units).empty())
             throw f.error("variable '" + var +
                           "' has no units attribute; expected a velocity (m/s, cm/s, knots): "
-                          "give the units with NetCdfCurrentOptions::velocityUnits");
+                          "give the units with GriddedCurrentOptions::velocityUnits");
         try
         {
             return velocityToMetresPerSecond(units);
@@ -33,10 +33,10 @@ LinearConversion velocityConversionOf(const GriddedDataset &f, const Layout &l, 
         catch (const Error &e)
         {
             if (given)
-                throw f.error("NetCdfCurrentOptions::velocityUnits (for variables '" + l.uName + "' and '" + l.vName +
+                throw f.error("GriddedCurrentOptions::velocityUnits (for variables '" + l.uName + "' and '" + l.vName +
                               "'): " + e.what());
             throw f.error("variable '" + var + "': " + e.what() +
-                          "; give the right units with NetCdfCurrentOptions::velocityUnits");
+                          "; give the right units with GriddedCurrentOptions::velocityUnits");
         }
     };
     const LinearConversion cu = conversion(uu, l.uName), cv = conversion(vu, l.vName);
@@ -92,7 +92,7 @@ bool fastNodesAreFlow(const GriddedData &g, std::size_t first, std::size_t perTi
 } // namespace
 
 void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const HorizontalSubset &h,
-                             const AxisSelection &t, const NetCdfCurrentOptions &opt, const GriddedData &g)
+                             const AxisSelection &t, const GriddedCurrentOptions &opt, const GriddedData &g)
 {
     const auto noUnits = [](const std::string &u) { return trim(u).empty() || trim(u) == "1"; };
     const bool physical =
@@ -139,7 +139,7 @@ void checkVelocityMagnitudes(const GriddedDataset &f, const Layout &l, const Hor
                       (raised ? "the bound given" : "any current or wind") + " (more than " + text::number(limit) +
                       (physical ? " m/s" : "") + "), and not a fill value (_FillValue, " +
                       "missing_value, valid_range): a fill value not declared, or wrong units or scale_factor? If " +
-                      "the speeds are real, raise the bound with NetCdfCurrentOptions::maxSpeed");
+                      "the speeds are real, raise the bound with GriddedCurrentOptions::maxSpeed");
     }
 }
 

@@ -109,12 +109,12 @@ int findVelocity(const GriddedDataset &f, const std::string &given, bool east, c
         auto v = f.findVar(given);
         if (!v && !groups.empty())
             throw f.error("no variable '" + given + "' in the root group: " + groups,
-                          "NetCdfCurrentOptions::" + optionName);
+                          "GriddedCurrentOptions::" + optionName);
         if (!v)
-            throw f.error("no variable '" + given + "' (given with NetCdfCurrentOptions::" + optionName +
+            throw f.error("no variable '" + given + "' (given with GriddedCurrentOptions::" + optionName +
                               "); candidates: " + candidateList(f) +
                               (f.unreadable().empty() ? std::string() : "; and " + f.unreadable()),
-                          "NetCdfCurrentOptions::" + optionName);
+                          "GriddedCurrentOptions::" + optionName);
         return *v;
     }
     const std::vector<std::string> stdNames =
@@ -167,7 +167,7 @@ int findVelocity(const GriddedDataset &f, const std::string &given, bool east, c
     throw f.error(std::string("no ") + (east ? "eastward (u)" : "northward (v)") +
                   " velocity found: no variable with standard_name one of {" + joinNames(stdNames) +
                   "} or named one of {" + joinNames(names) + "} (in any case); candidates: " + candidateList(f) +
-                  "; name them with NetCdfCurrentOptions::uName/vName");
+                  "; name them with GriddedCurrentOptions::uName/vName");
 }
 
 int DimensionRoles::find(Role r) const
@@ -188,7 +188,7 @@ void assignGiven(const GriddedDataset &f, const std::string &name, Role r, const
         return;
     auto v = f.findVar(name);
     if (!v)
-        throw f.error("no coordinate variable '" + name + "' (given in NetCdfCurrentOptions)");
+        throw f.error("no coordinate variable '" + name + "' (given in GriddedCurrentOptions)");
     const std::vector<int> vd = f.varDims(*v);
     if (vd.size() != 1)
         return; // 2-D coordinates are handled with the curvilinear grid
@@ -244,7 +244,7 @@ void assignDetected(const GriddedDataset &f, CoordinateMode mode, const std::str
 }
 
 /// Axes named by the user: geographic when their attributes say degrees, else Cartesian.
-void markNamedAxes(const GriddedDataset &f, const NetCdfCurrentOptions &opt, DimensionRoles &dr)
+void markNamedAxes(const GriddedDataset &f, const GriddedCurrentOptions &opt, DimensionRoles &dr)
 {
     for (std::size_t d = 0; d < dr.dims.size(); ++d)
     {
@@ -258,7 +258,7 @@ void markNamedAxes(const GriddedDataset &f, const NetCdfCurrentOptions &opt, Dim
 }
 } // namespace
 
-DimensionRoles classifyDimensions(const GriddedDataset &f, const NetCdfCurrentOptions &opt, int uVar)
+DimensionRoles classifyDimensions(const GriddedDataset &f, const GriddedCurrentOptions &opt, int uVar)
 {
     DimensionRoles dr;
     dr.dims = f.varDims(uVar);
@@ -275,7 +275,7 @@ DimensionRoles classifyDimensions(const GriddedDataset &f, const NetCdfCurrentOp
         if (std::count(dr.role.begin(), dr.role.end(), r) > 1)
             throw f.error("variable '" + uName +
                           "' has two dimensions of the same kind; name the coordinates "
-                          "with NetCdfCurrentOptions::timeName/depthName/lonName/latName");
+                          "with GriddedCurrentOptions::timeName/depthName/lonName/latName");
     return dr;
 }
 } // namespace gridded_detail

@@ -146,13 +146,13 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
         r.fail(root, "current", "missing: the current source (type: meandering_jet | uniform | ... | netcdf)");
     readCurrent(r, root["current"], m);
     if (m.current.isForecast() && root["units"])
-        r.fail(root["units"], "units", "a NetCDF forecast is planned in metres and seconds: remove 'units'");
+        r.fail(root["units"], "units", "a gridded forecast is planned in metres and seconds: remove 'units'");
     // A dated forecast defines the time origin; a steady file without dates takes the mission's epoch as the date
     // of field time 0 (ISO times in the mission and the outputs).
     if (m.current.isForecast() && root["epoch"] && (m.fileCalendar || !m.current.steady))
         r.fail(root["epoch"], "epoch",
-               m.fileCalendar ? "the NetCDF forecast defines the time origin (its first time): remove 'epoch'"
-                              : "the NetCDF forecast has undated times (field time is the file's): remove 'epoch' "
+               m.fileCalendar ? "the forecast defines the time origin (its first time): remove 'epoch'"
+                              : "the forecast has undated times (field time is the file's): remove 'epoch' "
                                 "(only a steady file without dates takes one)");
     if (root["region"])
         readRegion(r, root["region"], m);

@@ -1,5 +1,5 @@
-// Seafloor depth from a NetCDF grid (see NetCdfBathymetry.h), read by readDepthGrid (DepthGrid.h).
-#include "ompl_glider/io/NetCdfBathymetry.h"
+// Seafloor depth from a NetCDF grid (see GriddedBathymetry.h), read by readDepthGrid (DepthGrid.h).
+#include "ompl_glider/io/GriddedBathymetry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,8 +26,8 @@ void locate(const std::vector<double> &a, double q, std::size_t &k, double &f)
 }
 } // namespace
 
-NetCdfBathymetry::NetCdfBathymetry(const std::string &path, const std::string &variable,
-                                   std::function<LonLat(double, double)> toGeographic, const GeoBox &region)
+GriddedBathymetry::GriddedBathymetry(const std::string &path, const std::string &variable,
+                                     std::function<LonLat(double, double)> toGeographic, const GeoBox &region)
     : toGeographic_(std::move(toGeographic))
 {
     // the one reader of seafloor depths (its sign rule, axis order and checks are the depth limit's too)
@@ -49,7 +49,7 @@ NetCdfBathymetry::NetCdfBathymetry(const std::string &path, const std::string &v
                     "' is on longitude/latitude: the mission needs a projection");
 }
 
-double NetCdfBathymetry::atAxes(double a, double b) const
+double GriddedBathymetry::atAxes(double a, double b) const
 {
     std::size_t i, j;
     double fx, fy;
@@ -62,7 +62,7 @@ double NetCdfBathymetry::atAxes(double a, double b) const
     return (1 - fy) * ((1 - fx) * d00 + fx * d10) + fy * ((1 - fx) * d01 + fx * d11);
 }
 
-double NetCdfBathymetry::seafloorDepth(double x, double y) const
+double GriddedBathymetry::seafloorDepth(double x, double y) const
 {
     if (!geographic_)
         return atAxes(x, y);
@@ -74,6 +74,6 @@ std::shared_ptr<const Bathymetry> readBathymetry(const std::string &path, const 
                                                  std::function<LonLat(double x, double y)> toGeographic,
                                                  const GeoBox &region)
 {
-    return std::make_shared<NetCdfBathymetry>(path, variable, std::move(toGeographic), region);
+    return std::make_shared<GriddedBathymetry>(path, variable, std::move(toGeographic), region);
 }
 } // namespace ompl_glider

@@ -10,7 +10,7 @@
 
 #include "../../io/NumberText.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/current/NetCdfCurrents.h"
+#include "ompl_glider/current/GriddedCurrents.h"
 #include "ompl_glider/io/RemoteSource.h"
 
 namespace ompl_glider
@@ -54,21 +54,21 @@ std::string joinNames(const std::vector<std::string> &names)
     return out;
 }
 
-/// The setting at fault of a reader's error ("NetCdfCurrentOptions::timeUnits") in the caller's words; as it is
+/// The setting at fault of a reader's error ("GriddedCurrentOptions::timeUnits") in the caller's words; as it is
 /// when the caller has no name for it.
 std::string callerField(const std::string &field, const ForecastRequest &request)
 {
-    static const std::string tag = "NetCdfCurrentOptions::";
+    static const std::string tag = "GriddedCurrentOptions::";
     for (const auto &[name, option] : readerFields())
         if (field == tag + name)
             return request.optionName(option, field);
     return field;
 }
 
-/// The reader's message with its option fields ("NetCdfCurrentOptions::uName/vName") in the caller's words.
+/// The reader's message with its option fields ("GriddedCurrentOptions::uName/vName") in the caller's words.
 std::string callerWords(std::string what, const ForecastRequest &request)
 {
-    static const std::string tag = "NetCdfCurrentOptions::";
+    static const std::string tag = "GriddedCurrentOptions::";
     for (std::size_t at = what.find(tag); at != std::string::npos; at = what.find(tag, at + 1))
     {
         // the fields named after the tag, separated by '/'
@@ -98,9 +98,9 @@ std::string callerWords(std::string what, const ForecastRequest &request)
     return what;
 }
 
-NetCdfCurrentOptions readerOptions(const ForecastRequest &r)
+GriddedCurrentOptions readerOptions(const ForecastRequest &r)
 {
-    NetCdfCurrentOptions o;
+    GriddedCurrentOptions o;
     o.uName = r.variable("u");
     o.vName = r.variable("v");
     o.lonName = !r.variable("lon").empty() ? r.variable("lon") : r.variable("x");
@@ -158,7 +158,7 @@ std::string remoteNote(const RemoteFetch &f)
 }
 
 /// What a loaded forecast decided that a pilot should know, one sentence each.
-std::vector<std::string> readerNotes(const NetCdfCurrents &nc, const ForecastRequest &r)
+std::vector<std::string> readerNotes(const GriddedCurrents &nc, const ForecastRequest &r)
 {
     std::vector<std::string> notes;
     if (!nc.projection && nc.xyMetres != 1.0)
@@ -180,7 +180,7 @@ std::vector<std::string> readerNotes(const NetCdfCurrents &nc, const ForecastReq
         notes.push_back(std::to_string(nc.zeroLandNodes) + " of the " + loaded +
                         " nodes loaded are land only because u = v = 0 in every record of the trip "
                         "(" +
-                        r.optionName(ForecastOption::ZeroVelocityLand, "NetCdfCurrentOptions::zeroVelocityLand") +
+                        r.optionName(ForecastOption::ZeroVelocityLand, "GriddedCurrentOptions::zeroVelocityLand") +
                         " turns this off, taking them as water)");
     for (const RemoteFetch &f : remoteFetchesOf(nc.files)) // OPeNDAP: what came from the network, the cache
         notes.push_back(remoteNote(f));
@@ -188,7 +188,7 @@ std::vector<std::string> readerNotes(const NetCdfCurrents &nc, const ForecastReq
 }
 
 /// What makes land in the forecast, one phrase each.
-std::vector<std::string> landCauses(const NetCdfCurrents &nc, const ForecastRequest &r)
+std::vector<std::string> landCauses(const GriddedCurrents &nc, const ForecastRequest &r)
 {
     std::vector<std::string> causes;
     if (nc.fillLandNodes > 0)
@@ -200,12 +200,12 @@ std::vector<std::string> landCauses(const NetCdfCurrents &nc, const ForecastRequ
                          (nc.cornerGrid ? " (any of the 4 tracer cells around a velocity point)" : ""));
     if (nc.zeroLandNodes > 0)
         causes.push_back("u = v = 0 in every record (" +
-                         r.optionName(ForecastOption::ZeroVelocityLand, "NetCdfCurrentOptions::zeroVelocityLand") +
+                         r.optionName(ForecastOption::ZeroVelocityLand, "GriddedCurrentOptions::zeroVelocityLand") +
                          " turns this off)");
     return causes;
 }
 
-class NetCdfSource final : public GriddedSource
+class GriddedForecastSource final : public GriddedSource
 {
 public:
     bool geographic(const ForecastRequest &r) const override
@@ -214,15 +214,15 @@ public:
     }
     ForecastExtent extent(const ForecastRequest &r) const override
     {
-        return guarded(r, [&] { return readNetCdfExtent(first(r), readerOptions(r)); });
+        return guarded(r, [&] { return readForecastExtent(first(r), readerOptions(r)); });
     }
     ForecastTimeAxis timeAxis(const ForecastRequest &r) const override
     {
-        return guarded(r, [&] { return readNetCdfTimeAxis(r.files, readerOptions(r)); });
+        return guarded(r, [&] { return readForecastTimeAxis(r.files, readerOptions(r)); });
     }
     LoadedForecast load(const ForecastRequest &r) const override
     {
-        NetCdfCurrents nc = guarded(r, [&] { return loadNetCdfCurrents(r.files, readerOptions(r)); });
+        GriddedCurrents nc = guarded(r, [&] { return loadGriddedCurrents(r.files, readerOptions(r)); });
         LoadedForecast f;
         static_cast<ForecastFrame &>(f) = nc;
         f.field = nc.field;
@@ -260,9 +260,9 @@ private:
 };
 } // namespace
 
-std::shared_ptr<const GriddedSource> netCdfSource()
+std::shared_ptr<const GriddedSource> griddedForecastSource()
 {
-    static const auto source = std::make_shared<const NetCdfSource>();
+    static const auto source = std::make_shared<const GriddedForecastSource>();
     return source;
 }
 } // namespace ompl_glider

@@ -1,5 +1,5 @@
-// The process's one lock of NetCDF-C, HDF5 and GDAL's datasets (see NetCdfLock.h).
-#include "NetCdfLock.h"
+// The process's one lock of NetCDF-C, HDF5 and GDAL's datasets (see DatasetLock.h).
+#include "DatasetLock.h"
 
 namespace ompl_glider
 {

@@ -1,5 +1,5 @@
 #pragma once
-/// @file NetCdfBathymetry.h
+/// @file GriddedBathymetry.h
 /// @brief Seafloor depth from a NetCDF grid, limiting the glider's dives ([EichhornOceans] Sec. III).
 
 #include <functional>
@@ -20,16 +20,16 @@ namespace ompl_glider
 /// For geographic axes, queries in the planning frame are converted with @p toGeographic, which returns the
 /// (lon, lat) of a planning-frame point (x, y) (for example MissionProblem::toGeographic) and the longitude shifted
 /// by whole turns into the file's convention (0..360 or -180..180); without it the axes are taken as planning x/y.
-class NetCdfBathymetry : public Bathymetry
+class GriddedBathymetry : public Bathymetry
 {
 public:
     /// @param variable the depth variable; empty: found as readDepthGrid() finds it
     /// @param region the lon/lat box read of a geographic grid (default: the whole grid)
     /// @throws Error "NetCDF file '<path>': ..." naming the variable as readDepthGrid() does, or when the grid is on
     /// 2-D longitude/latitude, or on longitude/latitude without @p toGeographic.
-    NetCdfBathymetry(const std::string &path, const std::string &variable,
-                     std::function<LonLat(double x, double y)> toGeographic = {},
-                     const GeoBox &region = GeoBox::world());
+    GriddedBathymetry(const std::string &path, const std::string &variable,
+                      std::function<LonLat(double x, double y)> toGeographic = {},
+                      const GeoBox &region = GeoBox::world());
 
     double seafloorDepth(double x, double y) const override;
 

@@ -1,6 +1,6 @@
-// loadNetCdfCurrents(): the stages of the NetCDF reader (src/current/gridded/, see GriddedInternal.h) composed,
-// and the coordinate/time conversions of NetCdfCurrents.
-#include "ompl_glider/current/NetCdfCurrents.h"
+// loadGriddedCurrents(): the stages of the NetCDF reader (src/current/gridded/, see GriddedInternal.h) composed,
+// and the coordinate/time conversions of GriddedCurrents.
+#include "ompl_glider/current/GriddedCurrents.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,18 +13,18 @@
 
 namespace ompl_glider
 {
-bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &opt)
+bool netCdfIsGeographic(const std::string &path, const GriddedCurrentOptions &opt)
 {
     gridded_detail::GriddedDataset f(path);
     return gridded_detail::detectLayout(f, opt).geographic;
 }
 
-NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOptions &opt)
+ForecastExtent readForecastExtent(const std::string &path, const GriddedCurrentOptions &opt)
 {
     using namespace gridded_detail;
     GriddedDataset f(path);
     const Layout l = detectLayout(f, opt);
-    NetCdfExtent e;
+    ForecastExtent e;
     e.geographic = l.geographic;
     e.xName = l.xName;
     e.yName = l.yName;
@@ -61,7 +61,7 @@ NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOption
     return e;
 }
 
-NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &opt)
+GriddedCurrents loadGriddedCurrents(const std::string &path, const GriddedCurrentOptions &opt)
 {
     gridded_detail::ForecastPiece p = gridded_detail::readForecastPiece(path, opt);
     return gridded_detail::buildForecast(p, opt, "netcdf:" + path);
@@ -70,14 +70,14 @@ NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOp
 // The stages of one file up to its land (the forecast in several files reads each file with it: ForecastFiles.cpp),
 // then the field (buildForecast()).
 gridded_detail::ForecastPiece gridded_detail::readForecastPiece(const std::string &path,
-                                                                const NetCdfCurrentOptions &opt,
+                                                                const GriddedCurrentOptions &opt,
                                                                 const AxisSelection *times, std::size_t totalTimes)
 {
     using namespace gridded_detail;
     ForecastPiece p;
     p.file = std::make_unique<GriddedDataset>(path);
     const GriddedDataset &f = *p.file;
-    NetCdfCurrents &out = p.out;
+    GriddedCurrents &out = p.out;
     out.files = {path};
     // what is in the file: velocities, their grid, units
     const Layout &l = p.layout = detectLayout(f, opt);
@@ -93,7 +93,7 @@ gridded_detail::ForecastPiece gridded_detail::readForecastPiece(const std::strin
         throw f.error("depth average over " + std::to_string(opt.depthAverage->first) + ".." +
                       std::to_string(opt.depthAverage->second) + " m: expected 0 <= top <= bottom, finite");
     if (opt.depthAverage && (l.dimZ < 0 || f.dimLen(l.dims[std::size_t(l.dimZ)]) < 2))
-        throw f.error("a depth average (NetCdfCurrentOptions::depthAverage) needs several depth levels, but '" +
+        throw f.error("a depth average (GriddedCurrentOptions::depthAverage) needs several depth levels, but '" +
                       l.uName + "' has " + (l.dimZ < 0 ? std::string("no depth dimension") : "a single depth level") +
                       ": remove the depth average to plan on this level");
     const AxisSelection &z = p.z = selectDepths(f, l, opt.depthAverage ? opt.depthAverage->second : opt.maxDepth);
@@ -115,7 +115,7 @@ gridded_detail::ForecastPiece gridded_detail::readForecastPiece(const std::strin
     g.ny = h.yIdx.size();
     g.depth = z.values;
     g.time = t.values;
-    NetCdfCurrentOptions unpack = opt;
+    GriddedCurrentOptions unpack = opt;
     unpack.zeroVelocityLand = false; // decided after every other signal of land (zeroVelocityLand())
     if (l.staggered)
         readStaggeredVelocities(f, l, h, z, t, vel, unpack, g, out);
@@ -153,8 +153,8 @@ gridded_detail::ForecastPiece gridded_detail::readForecastPiece(const std::strin
     return p;
 }
 
-NetCdfCurrents gridded_detail::buildForecast(ForecastPiece &p, const NetCdfCurrentOptions &opt,
-                                             const std::string &fieldName)
+GriddedCurrents gridded_detail::buildForecast(ForecastPiece &p, const GriddedCurrentOptions &opt,
+                                              const std::string &fieldName)
 {
     const GriddedDataset &f = *p.file;
     const gridded_detail::Layout &l = p.layout;
@@ -162,7 +162,7 @@ NetCdfCurrents gridded_detail::buildForecast(ForecastPiece &p, const NetCdfCurre
     const gridded_detail::RegionOfInterest &region = p.region;
     const gridded_detail::AxisSelection &z = p.z, &t = p.t;
     GriddedData &g = p.g;
-    NetCdfCurrents out = std::move(p.out);
+    GriddedCurrents out = std::move(p.out);
     if (opt.depthAverage)
         averageOverDepth(opt.depthAverage->first, opt.depthAverage->second, g);
     out.projection = setNodeCoordinates(f, l, h, region, opt, g);

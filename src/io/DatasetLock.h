@@ -1,5 +1,5 @@
 #pragma once
-/// @file NetCdfLock.h
+/// @file DatasetLock.h
 /// @brief Internal to the library (not installed): the process's one lock of the libraries that are not thread-safe:
 /// NetCDF-C (files, in-memory datasets, OPeNDAP URLs through its DAP client, and HDF5 beneath it) and GDAL's
 /// datasets (Zarr stores and GRIB files in GdalGrid, vector files in the coastline reader; GDAL's own netCDF driver
@@ -27,12 +27,12 @@ namespace gridded_detail
 std::recursive_mutex &libraryMutex();
 
 /// Holds the lock for its scope.
-class NetCdfLock
+class DatasetLock
 {
 public:
-    NetCdfLock() : hold_(libraryMutex()) {}
-    NetCdfLock(const NetCdfLock &) = delete;
-    NetCdfLock &operator=(const NetCdfLock &) = delete;
+    DatasetLock() : hold_(libraryMutex()) {}
+    DatasetLock(const DatasetLock &) = delete;
+    DatasetLock &operator=(const DatasetLock &) = delete;
 
 private:
     std::lock_guard<std::recursive_mutex> hold_;

@@ -1,5 +1,5 @@
 #pragma once
-/// @file NetCdfCurrents.h
+/// @file GriddedCurrents.h
 /// @brief Loading ocean-current forecasts from NetCDF files (ROMS, HYCOM, Copernicus Marine, NEMO, POP...) into
 /// a GriddedCurrentField in local Cartesian metres and seconds ([EichhornOceans] Sec. II.B-C, [EichhornRAS] Sec. 3.4).
 
@@ -27,8 +27,8 @@ enum class CoordinateMode
                 ///< "since" is then read as raw values, and velocities without units as dimensionless
 };
 
-/// @brief Options of loadNetCdfCurrents(). Every field has a usable default: only the path is required.
-struct NetCdfCurrentOptions
+/// @brief Options of loadGriddedCurrents(). Every field has a usable default: only the path is required.
+struct GriddedCurrentOptions
 {
     // --- variables (empty: found automatically) ---
     std::string uName;     ///< eastward velocity; default: CF standard_name eastward_sea_water_velocity and
@@ -57,12 +57,12 @@ struct NetCdfCurrentOptions
                            ///< "east" in its name, as ROMS' u_eastward); "none": none
 
     // --- land (besides fill values of u/v, which are always land; every signal's land is land: the union) ---
-    std::string maskName;   ///< land/sea mask variable; empty: found automatically (loadNetCdfCurrents()); "none": none
-    std::string tracerName; ///< tracer (temperature, salinity) whose missing values mark land; empty: found
-                            ///< automatically (loadNetCdfCurrents()); "none": none
+    std::string maskName; ///< land/sea mask variable; empty: found automatically (loadGriddedCurrents()); "none": none
+    std::string tracerName;      ///< tracer (temperature, salinity) whose missing values mark land; empty: found
+                                 ///< automatically (loadGriddedCurrents()); "none": none
     bool zeroVelocityLand{true}; ///< a node whose u and v are exactly 0 in every record of the trip is land (models
                                  ///< such as POP store coastal velocity points as zeros, not fill values) where it
-                                 ///< touches other land or the file marks none (rules at loadNetCdfCurrents())
+                                 ///< touches other land or the file marks none (rules at loadGriddedCurrents())
 
     // --- model ---
     GriddedFieldOptions field; ///< schemes (xy bilinear, depth linear, time linear), BeyondForecast, name
@@ -98,7 +98,7 @@ struct NetCdfCurrentOptions
 /// the file, or of the earliest file of a forecast in several files; raw units in Cartesian mode), its frame and
 /// clock (ForecastFrame: projection, calendar, departure, the loaded bounds, the files read) and what the reader
 /// decided.
-struct NetCdfCurrents : ForecastFrame
+struct GriddedCurrents : ForecastFrame
 {
     std::shared_ptr<GriddedCurrentField> field; ///< ready to plan on
     std::string uVariable, vVariable;           ///< variables read
@@ -129,7 +129,7 @@ struct NetCdfCurrents : ForecastFrame
     std::size_t droppedRecords{0};
 };
 
-/// @brief Loads u/v from a NetCDF file into a GriddedCurrentField (see NetCdfCurrentOptions for what is found
+/// @brief Loads u/v from a NetCDF file into a GriddedCurrentField (see GriddedCurrentOptions for what is found
 /// automatically and what is loaded).
 ///
 /// Reads: dimensions (time, depth, lat, lon) in any order of the file, depth and time optional; 1-D axes or 2-D
@@ -145,13 +145,13 @@ struct NetCdfCurrents : ForecastFrame
 /// Land, per node and depth layer, is the union of every signal the file gives (the more conservative where they
 /// disagree), each decided on the trip's records: u or v a fill value in any of them; land in a mask variable
 /// (below), in any of them when the mask has the time axis of u; a tracer's missing value (below); and still nodes,
-/// u = v = 0 exactly in all of them (NetCdfCurrentOptions::zeroVelocityLand, on by default). The trip's records are
+/// u = v = 0 exactly in all of them (GriddedCurrentOptions::zeroVelocityLand, on by default). The trip's records are
 /// those from the last at or before the departure to the first at or after departure + horizon (not the stencil
 /// margin loaded around them), so a seasonal mask or missing winter data close what is closed during the trip,
 /// not all year.
 ///
 /// Still nodes are land where the file marks no other land in the region (POP-like files whose land is all zeros),
-/// on a B grid (NetCdfCurrents::cornerGrid: the model writes every velocity point touching a land tracer cell as
+/// on a B grid (GriddedCurrents::cornerGrid: the model writes every velocity point touching a land tracer cell as
 /// zero, an island's corners too), and elsewhere where their block of still nodes (8-connected in a layer) touches
 /// land or an edge of the loaded nodes beyond which the file goes on (the coast's ring of zeros around land marked
 /// by fill values, a mask or a tracer). A block of still nodes in open water, away from any land, in a file that
@@ -159,13 +159,13 @@ struct NetCdfCurrents : ForecastFrame
 /// as zeros, which a tracer or mask then marks). Never when every water node is still (a still field), nor for
 /// packed data seen in a single record, where rounding can zero a calm node.
 ///
-/// The tracer (NetCdfCurrentOptions::tracerName; "none": none) is found automatically: standard_name
+/// The tracer (GriddedCurrentOptions::tracerName; "none": none) is found automatically: standard_name
 /// sea_water_potential_temperature, sea_water_temperature, sea_water_conservative_temperature, sea_water_salinity,
 /// sea_water_practical_salinity or sea_water_absolute_salinity, then the names (case-insensitive) temp, t, salt,
 /// theta, thetao, so, votemper, vosaline, water_temp, salinity; only one whose dimensions fit u's grid as a mask's
 /// must, and that holds a valid value in the loaded region (a variable never written is all fill values). It is
 /// land where it holds its _FillValue, missing_value, NaN or a value outside its valid range (per layer when it has
-/// u's depth dimension, else at every layer). Its cells are placed on the velocity points (NetCdfCurrents::
+/// u's depth dimension, else at every layer). Its cells are placed on the velocity points (GriddedCurrents::
 /// tracerPlacement): on a B grid a velocity point is land when any of the 4 tracer cells around it is, which is
 /// established when the tracer's own coordinates (POP's TLAT/TLONG, MOM's xt_ocean/yt_ocean) lie half a cell
 /// south-west (or north-east) of the velocities' (ULAT/ULONG), or when the tracer shares the velocities'
@@ -191,9 +191,9 @@ struct NetCdfCurrents : ForecastFrame
 ///  - a fill value is land.
 ///
 /// Steady fields: velocities without time dimension, with a single time record, or one record chosen with
-/// NetCdfCurrentOptions::steadyRecord give a field that is the same at all times (NetCdfCurrents::steady,
+/// GriddedCurrentOptions::steadyRecord give a field that is the same at all times (GriddedCurrents::steady,
 /// timeEnd() = +inf) and take any departure. A time axis without "since" ("month", "hours", no units) is
-/// refused in a geographic file unless NetCdfCurrentOptions::timeUnits supplies the units or steadyRecord picks
+/// refused in a geographic file unless GriddedCurrentOptions::timeUnits supplies the units or steadyRecord picks
 /// one record.
 ///
 /// Geographic grids (1-D or 2-D) become curvilinear grids of projected nodes (LocalProjection about the
@@ -222,27 +222,21 @@ struct NetCdfCurrents : ForecastFrame
 /// curvilinear grids, and a trip region whose hyperslab exceeds the memory limit (checkMemory()).
 ///
 /// @throws Error naming the file, the variable and what was expected when something is missing or wrong.
-NetCdfCurrents loadNetCdfCurrents(const std::string &path, const NetCdfCurrentOptions &options = {});
+GriddedCurrents loadGriddedCurrents(const std::string &path, const GriddedCurrentOptions &options = {});
 
-/// @brief Whether loadNetCdfCurrents() reads the file's horizontal coordinates as longitude/latitude (true) or as
+/// @brief Whether loadGriddedCurrents() reads the file's horizontal coordinates as longitude/latitude (true) or as
 /// Cartesian x/y (false), by the loader's own detection (the variable names and `coordinates` of the options);
-/// reads attributes only. @throws Error as loadNetCdfCurrents() does for a file that is not NetCDF or whose
+/// reads attributes only. @throws Error as loadGriddedCurrents() does for a file that is not NetCDF or whose
 /// velocities or grid cannot be found.
-bool netCdfIsGeographic(const std::string &path, const NetCdfCurrentOptions &options = {});
-
-/// @brief The horizontal extent of a forecast file (ForecastSource.h).
-using NetCdfExtent = ForecastExtent;
+bool netCdfIsGeographic(const std::string &path, const GriddedCurrentOptions &options = {});
 
 /// @brief The extent of the velocities' grid with the loader's own detection (the names of `options`), reading the
 /// coordinate variables only: what the command line checks the start and goal against before a forecast's data are
-/// read. @throws Error as loadNetCdfCurrents() does for a file whose velocities or grid cannot be found.
-NetCdfExtent readNetCdfExtent(const std::string &path, const NetCdfCurrentOptions &options = {});
-
-/// @brief The time axis of a forecast file as loadNetCdfCurrents() reads it (ForecastSource.h).
-using NetCdfTimeAxis = ForecastTimeAxis;
+/// read. @throws Error as loadGriddedCurrents() does for a file whose velocities or grid cannot be found.
+ForecastExtent readForecastExtent(const std::string &path, const GriddedCurrentOptions &options = {});
 
 /// @brief Finds and reads the time axis of the forecast's velocities with the loader's own detection (the same
-/// code): the eastward velocity (NetCdfCurrentOptions::uName, else its CF standard_name or usual names), then
+/// code): the eastward velocity (GriddedCurrentOptions::uName, else its CF standard_name or usual names), then
 /// among its dimensions the one whose 1-D coordinate variable is named by timeName, or else has units
 /// "<unit> since <date>", standard_name "time" or axis "T" (or a usual name such as time, time_counter,
 /// ocean_time), whatever the variable is called.
@@ -256,24 +250,24 @@ using NetCdfTimeAxis = ForecastTimeAxis;
 /// on a dimension of u, no velocity variable is found, the time units or calendar are not understood, or the
 /// times are not finite and strictly increasing; for timeUnits or steadyRecord without time dimension, and a
 /// steadyRecord beyond the last record.
-NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const NetCdfCurrentOptions &options);
+ForecastTimeAxis readForecastTimeAxis(const std::string &path, const GriddedCurrentOptions &options);
 
-/// @brief readNetCdfTimeAxis() with only the names of the time and eastward velocity variables (empty: found
+/// @brief readForecastTimeAxis() with only the names of the time and eastward velocity variables (empty: found
 /// automatically).
-NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const std::string &timeName = "",
-                                  const std::string &uName = "");
+ForecastTimeAxis readForecastTimeAxis(const std::string &path, const std::string &timeName = "",
+                                      const std::string &uName = "");
 
 /// @brief A forecast in several files (daily files of one model, each with its own time axis) loaded as one, with
-/// the same options and the same stages as one file (the region, depths, units, land rules of loadNetCdfCurrents()).
+/// the same options and the same stages as one file (the region, depths, units, land rules of loadGriddedCurrents()).
 ///
 /// - Order: the files are ordered by their first time (a date: each file's "<unit> since <date>" is read on its
 ///   own, so the files may use different units and origins), whatever the order given; field time 0 is the first
 ///   time of the earliest file. The calendars must agree.
 /// - Overlap: a record of a file at or after the first time of the next file is dropped: the later file (the newer
-///   forecast) gives every time from its first on (NetCdfCurrents::droppedRecords counts them).
+///   forecast) gives every time from its first on (GriddedCurrents::droppedRecords counts them).
 /// - What is read: the records the trip needs are chosen on the joined time axis exactly as in one file
 ///   (departure to departure + horizon, plus 2 records of stencil margin on each side), and only the files that
-///   hold some of them are opened for their velocities (NetCdfCurrents::files); the others' time axes only.
+///   hold some of them are opened for their velocities (GriddedCurrents::files); the others' time axes only.
 /// - Grids: the files read must give the same grid in the trip's region (the same nodes and coordinates, depth
 ///   layers, longitude/latitude or Cartesian, velocity variable names); velocity units may differ (each file's
 ///   are converted to m/s).
@@ -281,26 +275,26 @@ NetCdfTimeAxis readNetCdfTimeAxis(const std::string &path, const std::string &ti
 ///   step (the median step of the joined axis) is refused, naming both files and the dates: interpolating across
 ///   a missing day is not what a pilot expects. Gaps outside the trip's records do not matter.
 /// - Land: a node is land when it is land in any file's records of the trip (fill values, a mask, a tracer);
-///   zero-velocity land (NetCdfCurrentOptions::zeroVelocityLand) is decided on all the trip's records of all
+///   zero-velocity land (GriddedCurrentOptions::zeroVelocityLand) is decided on all the trip's records of all
 ///   files, after the others. The files must agree on the mask and tracer variables.
-/// One path: exactly loadNetCdfCurrents(path, options).
+/// One path: exactly loadGriddedCurrents(path, options).
 /// @throws Error naming the file(s) for: no file; a file without time dimension or without dated time axis
 /// (undated files cannot be ordered or joined); different calendars; two files with the same first time (the
-/// same file twice); NetCdfCurrentOptions::steadyRecord; a departure outside the joined forecast; a gap; grids
-/// that differ (naming both files and what differs); and everything loadNetCdfCurrents() refuses in a file.
-NetCdfCurrents loadNetCdfCurrents(const std::vector<std::string> &paths, const NetCdfCurrentOptions &options = {});
+/// same file twice); GriddedCurrentOptions::steadyRecord; a departure outside the joined forecast; a gap; grids
+/// that differ (naming both files and what differs); and everything loadGriddedCurrents() refuses in a file.
+GriddedCurrents loadGriddedCurrents(const std::vector<std::string> &paths, const GriddedCurrentOptions &options = {});
 
-/// @brief The time axis of a forecast in several files as loadNetCdfCurrents(paths) joins it (dated, never steady;
+/// @brief The time axis of a forecast in several files as loadGriddedCurrents(paths) joins it (dated, never steady;
 /// originSeconds the first time of the earliest file, size the records after overlaps are dropped, span from the
-/// first to the last). One path: readNetCdfTimeAxis(path, options). @throws Error as the loader does for the
+/// first to the last). One path: readForecastTimeAxis(path, options). @throws Error as the loader does for the
 /// time axes (undated files, calendars, equal first times, steadyRecord).
-NetCdfTimeAxis readNetCdfTimeAxis(const std::vector<std::string> &paths, const NetCdfCurrentOptions &options);
+ForecastTimeAxis readForecastTimeAxis(const std::vector<std::string> &paths, const GriddedCurrentOptions &options);
 
 /// @brief netCdfIsGeographic() of every file; @throws Error naming two files that disagree.
-bool netCdfIsGeographic(const std::vector<std::string> &paths, const NetCdfCurrentOptions &options = {});
+bool netCdfIsGeographic(const std::vector<std::string> &paths, const GriddedCurrentOptions &options = {});
 
 /// @brief The NetCDF reader as the registry's gridded source `netcdf` (ForecastSource.h): one file, several files
 /// read as one, OPeNDAP URLs, and Zarr stores and GRIB files (through GDAL); its messages name the request's
 /// settings in the caller's words (ForecastRequest::optionNames).
-std::shared_ptr<const GriddedSource> netCdfSource();
+std::shared_ptr<const GriddedSource> griddedForecastSource();
 } // namespace ompl_glider
