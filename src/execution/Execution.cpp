@@ -163,11 +163,9 @@ std::shared_ptr<const CurrentField> correctedForecast(const CurrentField &foreca
         return base;
     return std::make_shared<CorrectedField>(base, measured, params);
 }
-} // namespace
-
-FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const CurrentField &forecast,
-                   const CurrentField &truth, const Environment *forbidden, ControlStrategy strategy,
-                   const ExecutionOptions &o)
+/// Refuses a plan without a waypoint, a speed, surfacing interval or step not positive and finite, and a replanning
+/// strategy without its replanner.
+void checkFlight(const std::vector<TimedPoint> &plan, double speed, ControlStrategy strategy, const ExecutionOptions &o)
 {
     if (plan.empty())
         throw Error("flyPlan: the plan has no waypoint");
@@ -180,6 +178,48 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         throw Error("flyPlan: the replan strategy needs a replanner and replanEvery >= 1");
     if (strategy == ControlStrategy::ReplanObserved && (!o.replanObserved || o.replanEvery == 0))
         throw Error("flyPlan: the replan_observed strategy needs an observed replanner and replanEvery >= 1");
+}
+
+/// The planned heading at @p t: its segment's, until the segment's end (@p surface brought forward to it: then a
+/// surfacing), the last one held after it.
+Point2 plannedHeading(const HeadingRoute &headings, double t, double &surface)
+{
+    double segEnd = headings.departure;
+    const HeadingSegment *seg = &headings.segments.back();
+    for (const HeadingSegment &h : headings.segments)
+    {
+        segEnd += std::max(h.duration, 0.0);
+        if (t < segEnd - 1e-12 * std::max(1.0, std::abs(segEnd)))
+        {
+            seg = &h;
+            break;
+        }
+    }
+    if (seg != &headings.segments.back() || t < segEnd)
+        surface = std::min(surface, segEnd);
+    return bearingVector(seg->bearing);
+}
+
+/// One dive's settings: the heading held at @p speed with the options' step and depth, toward @p goal within the
+/// options' radius (none once @p reached).
+DiveSettings diveSettings(double speed, const ExecutionOptions &o, const TimedPoint &goal, bool reached)
+{
+    DiveSettings ds;
+    ds.speed = speed;
+    ds.step = o.step;
+    ds.depth = o.depth;
+    ds.radius = reached ? 0.0 : o.radius;
+    ds.goal.x = goal.x;
+    ds.goal.y = goal.y;
+    return ds;
+}
+} // namespace
+
+FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const CurrentField &forecast,
+                   const CurrentField &truth, const Environment *forbidden, ControlStrategy strategy,
+                   const ExecutionOptions &o)
+{
+    checkFlight(plan, speed, strategy, o);
     const bool measuring = strategy == ControlStrategy::Dac || strategy == ControlStrategy::ReplanObserved;
     std::mt19937 rng(o.dacSeed);
     FlownTrack r;
@@ -239,23 +279,9 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         double surface = std::min(t + o.surfacingInterval, end);
         if (strategy == ControlStrategy::PlannedHeadings && o.headings && !o.headings->segments.empty())
         {
-            // the planned segment at t: its heading until its end (then a surfacing), the last one held after it
-            double segEnd = o.headings->departure;
-            const HeadingSegment *seg = &o.headings->segments.back();
-            for (const HeadingSegment &h : o.headings->segments)
-            {
-                segEnd += std::max(h.duration, 0.0);
-                if (t < segEnd - 1e-12 * std::max(1.0, std::abs(segEnd)))
-                {
-                    seg = &h;
-                    break;
-                }
-            }
-            const Point2 h = bearingVector(seg->bearing);
+            const Point2 h = plannedHeading(*o.headings, t, surface);
             hx = h.x;
             hy = h.y;
-            if (seg != &o.headings->segments.back() || t < segEnd)
-                surface = std::min(surface, segEnd);
         }
         else if (len > 0.0)
         {
@@ -277,13 +303,7 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         }
         r.headings.push_back(std::atan2(hy, hx));
         // the dive: the heading held (the one integrator of a dive, Dive.h)
-        DiveSettings ds;
-        ds.speed = speed;
-        ds.step = o.step;
-        ds.depth = o.depth;
-        ds.radius = r.reached ? 0.0 : o.radius;
-        ds.goal.x = goal.x;
-        ds.goal.y = goal.y;
+        const DiveSettings ds = diveSettings(speed, o, goal, r.reached);
         const std::size_t diveStart = r.track.size() - 1;
         const DiveEnd dive = flyHeading(x, y, t, hx, hy, surface, truth, forbidden, ds, &r.track);
         if (measuring && r.track.size() > diveStart + 1)
