@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iterator>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -66,12 +67,10 @@ Answer answerOf(const std::string &url, const std::string &who)
     const std::size_t slash = path.rfind('/'), dot = path.rfind('.');
     const std::string type =
         dot == std::string::npos || (slash != std::string::npos && dot < slash) ? std::string() : path.substr(dot);
-    if (text::lower(type) == ".csvp")
-        return Answer::Csvp;
-    if (text::lower(type) == ".csv")
-        return Answer::Csv;
-    if (text::lower(type) == ".nccf")
-        return Answer::NcCf;
+    static const std::map<std::string, Answer> answers = {
+        {".csvp", Answer::Csvp}, {".csv", Answer::Csv}, {".nccf", Answer::NcCf}};
+    if (const auto it = answers.find(text::lower(type)); it != answers.end())
+        return it->second;
     throw Error(who + ": not an ERDDAP tabledap answer this reader knows (the file type " +
                 (type.empty() ? std::string("is missing") : "'" + type + "'") +
                 "; expected .csvp, .csv or .ncCF, e.g. https://gliders.ioos.us/erddap/tabledap/<dataset>.csvp?time,"
@@ -371,6 +370,8 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who, Veloc
     std::map<std::string, std::vector<double>> values;
     std::vector<std::string> names, profiles;
     std::string unitsU, unitsV;
+    const std::map<std::string, std::string *> velocityUnits = {{"u", &unitsU}, {"v", &unitsV}};
+    static const std::set<std::string> times = {"time", "time_uv"};
     try
     {
         const gridded_detail::GriddedDataset nc(memory.name);
@@ -404,9 +405,9 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who, Veloc
             if (name == "profile_id")
                 for (const double x : v)
                     profiles.push_back(std::isfinite(x) ? text::number(x, 17) : "");
-            else if (name == "u" || name == "v")
-                (name == "u" ? unitsU : unitsV) = units;
-            else if (name == "time" || name == "time_uv")
+            else if (velocityUnits.count(name))
+                *velocityUnits.at(name) = units;
+            else if (times.count(name))
                 for (double &x : v)
                     x = secondsOf(x, units);
             if (name != "profile_id")

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <glob.h>
+#include <map>
 #include <sstream>
 
 #include "GriddedDataset.h"
@@ -110,9 +111,10 @@ std::vector<std::string> filesOf(const std::string &path)
         for (const auto &e : fs::directory_iterator(path, ec))
             if (e.is_regular_file())
             {
+                static const std::map<std::string, int> byExtension = {{".nc", 0}, {".dba", 1}};
                 const std::string f = e.path().string();
-                const int kind = e.path().extension() == ".nc"                ? 0
-                                 : e.path().extension() == ".dba"             ? 1
+                const auto known = byExtension.find(e.path().extension().string());
+                const int kind = known != byExtension.end()                   ? known->second
                                  : observations_detail::isSlocumBinaryFile(f) ? 2
                                                                               : -1;
                 if (kind >= 0)
