@@ -19,6 +19,7 @@
 #include <set>
 #include <sstream>
 
+#include "CsvCells.h"
 #include "GdalModule.h"
 #include "HttpMirror.h"
 #include "GriddedDataset.h"
@@ -232,28 +233,6 @@ double numberOf(const std::string &cell, const std::string &where)
     return v;
 }
 
-/// The cells of one CSV line (ERDDAP quotes a text with commas or quotes, a quote doubled inside).
-std::vector<std::string> csvCells(const std::string &line)
-{
-    std::vector<std::string> out(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i)
-    {
-        const char c = line[i];
-        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
-            out.back() += line[++i];
-        else if (c == '"')
-            quoted = !quoted;
-        else if (c == ',' && !quoted)
-            out.emplace_back();
-        else if (c != '\r')
-            out.back() += c;
-    }
-    for (std::string &cell : out)
-        cell = text::trim(cell);
-    return out;
-}
-
 /// The columns' positions; @throws Error naming the URL and every expected column missing.
 std::map<std::string, std::size_t> columnsOf(const std::vector<std::string> &names, const std::string &who,
                                              const char *what)
@@ -290,7 +269,7 @@ std::vector<Row> csvRows(const std::string &body, Answer kind, const std::string
         lines.push_back(body.substr(at, end - at));
         at = end + 1;
     }
-    std::vector<std::string> names = csvCells(lines.front()), units(names.size());
+    std::vector<std::string> names = io_detail::csvCells(lines.front(), ',', true), units(names.size());
     if (kind == Answer::Csvp)
         for (std::size_t i = 0; i < names.size(); ++i)
             if (const std::size_t open = names[i].rfind(" ("); open != std::string::npos && names[i].back() == ')')
@@ -302,7 +281,7 @@ std::vector<Row> csvRows(const std::string &body, Answer kind, const std::string
     std::size_t first = 1;
     if (kind == Answer::Csv && lines.size() > 1) // the line of units
     {
-        const std::vector<std::string> u = csvCells(lines[1]);
+        const std::vector<std::string> u = io_detail::csvCells(lines[1], ',', true);
         for (std::size_t i = 0; i < units.size() && i < u.size(); ++i)
             units[i] = u[i];
         first = 2;
@@ -313,7 +292,7 @@ std::vector<Row> csvRows(const std::string &body, Answer kind, const std::string
     {
         if (text::trim(lines[n]).empty())
             continue;
-        const std::vector<std::string> cells = csvCells(lines[n]);
+        const std::vector<std::string> cells = io_detail::csvCells(lines[n], ',', true);
         if (cells.size() != names.size())
             throw Error(who + ": answer line " + std::to_string(n + 1) + ": " + std::to_string(cells.size()) +
                         " cells, the header names " + std::to_string(names.size()));
