@@ -85,6 +85,7 @@ void noteInnovations(CorrectionSummary &s, const std::vector<DacObservation> &us
     s.firstUsed = used.front().t;
     s.lastUsed = used.back().t;
 }
+
 /// The observations the correction uses: finite, within the forecast's span, box and water, by time, and the most
 /// recent CorrectionParams::maxObservations of them; @p s counts those given and those left out.
 std::vector<DacObservation> usableDac(const CurrentField &base, const std::vector<DacObservation> &observations,

@@ -119,6 +119,7 @@ void meanExtent(const std::vector<DacObservation> &obs, double L, double T, Inno
     m.lengthScale = std::max(10.0 * L, std::hypot(m.xMax - m.xMin, m.yMax - m.yMin));
     m.timeScale = std::max(10.0 * T, m.tEnd - m.tBegin);
 }
+
 /// The angular frequency of constituent @p c, in radians per time unit of @p secondsPerTimeUnit seconds.
 double angularFrequency(const TidalPeriod &c, double secondsPerTimeUnit)
 {

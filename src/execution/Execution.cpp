@@ -163,6 +163,32 @@ std::shared_ptr<const CurrentField> correctedForecast(const CurrentField &foreca
         return base;
     return std::make_shared<CorrectedField>(base, measured, params);
 }
+
+/// The forecast the DAC make, renewed at a surfacing that brought a new one (one solve shared by the steering and
+/// the replanning).
+class LearnedForecast
+{
+public:
+    LearnedForecast(const CurrentField &forecast, const ExecutionOptions &o) : forecast_(forecast), o_(o) {}
+
+    /// The forecast learned from @p measured (learned again only when a DAC was added since).
+    const std::shared_ptr<const CurrentField> &of(const std::vector<DacObservation> &measured)
+    {
+        if (measured.size() != from_)
+        {
+            learned_ = o_.learn ? o_.learn(measured) : correctedForecast(forecast_, measured, o_.correction);
+            from_ = measured.size();
+        }
+        return learned_;
+    }
+
+private:
+    const CurrentField &forecast_;
+    const ExecutionOptions &o_;
+    std::shared_ptr<const CurrentField> learned_;
+    std::size_t from_ = std::numeric_limits<std::size_t>::max();
+};
+
 /// Refuses a plan without a waypoint, a speed, surfacing interval or step not positive and finite, and a replanning
 /// strategy without its replanner.
 void checkFlight(const std::vector<TimedPoint> &plan, double speed, ControlStrategy strategy, const ExecutionOptions &o)
@@ -226,18 +252,8 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
     if (measuring)
         r.measured = o.measuredBefore;     // the earlier legs' dives
     std::vector<TimedPoint> active = plan; // the plan flown now (replaced by each new plan)
-    // the forecast the DAC make, renewed at a surfacing that brought a new one (one solve shared by the steering and
-    // the replanning)
-    std::shared_ptr<const CurrentField> learned;
-    std::size_t learnedFrom = std::numeric_limits<std::size_t>::max();
-    const auto learnedNow = [&]() -> const std::shared_ptr<const CurrentField> & {
-        if (r.measured.size() != learnedFrom)
-        {
-            learned = o.learn ? o.learn(r.measured) : correctedForecast(forecast, r.measured, o.correction);
-            learnedFrom = r.measured.size();
-        }
-        return learned;
-    };
+    LearnedForecast learned(forecast, o);
+    const auto learnedNow = [&]() -> const std::shared_ptr<const CurrentField> & { return learned.of(r.measured); };
     unsigned surfacings = 0;
     const TimedPoint &goal = plan.back();
     const double t0 = plan.front().t;

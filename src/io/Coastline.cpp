@@ -147,6 +147,7 @@ std::string featureName(const OGRFeature &f)
         return std::string("'") + f.GetFieldAsString(k) + "'";
     return std::to_string(f.GetFID());
 }
+
 /// The rectangle (@p lonMin, @p latMin) to (@p lonMax, @p latMax) a turn of @p shift degrees east: a layer written
 /// in 0..360 (or beyond -180) holds the land of -180..180 a turn away; what it clips is brought back by the turn.
 OGRPolygon boxPolygon(double lonMin, double latMin, double lonMax, double latMax, double shift)

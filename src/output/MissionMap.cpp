@@ -329,6 +329,7 @@ void addReachContours(MapRenderer &map, const MissionResult &r)
     map.addNote("probability of reach over " + std::to_string(p.members) + (p.members == 1 ? " member" : " members") +
                 ": the goal by +" + duration(r, last - p.departure, true) + " with p = " + fmt(p.goalProbability) + q);
 }
+
 /// What the glider flies as stints: the stint track, and the surfacings as markers.
 void addStints(MapRenderer &map, const MissionResult &r)
 {

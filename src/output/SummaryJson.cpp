@@ -431,6 +431,7 @@ json ensembleJson(const PlannedPath &p, const MissionProblem &problem)
             {"spread", {{"min", jnum(spread.min)}, {"mean", jnum(spread.mean)}, {"max", jnum(spread.max)}}},
             {"candidates", cands}};
 }
+
 /// The route's times: the departure and arrival, the holds and the goal window, the travel times, the path's length
 /// and the straight line's.
 void timingJson(const MissionResult &r, const MissionProblem &problem, json &j)

@@ -156,6 +156,7 @@ double chooseDeparture(const MissionProblem &problem, const RunOptions &options,
     result.departureSearch = optimalDepartureTime(fine, p, coarse);
     return result.departureSearch->found ? result.departureSearch->departure : m.departure.begin;
 }
+
 /// Refuses (in @p r) a start or goal that land's keep-off band, shallow water or another static region forbids, in
 /// the pilot's terms (lon/lat, km) before the planner would refuse it in its plane; true when one is refused.
 bool refuseBlockedEndpoint(const MissionProblem &problem, double departure, PlannedPath &r)
