@@ -8,6 +8,7 @@
 #include <tuple>
 #include <type_traits>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,10 +49,11 @@ ViaPointSpec viaPoint(const py::handle item, const std::string &at, const Missio
     if (py::isinstance<py::dict>(item))
     {
         const py::dict d = py::reinterpret_borrow<py::dict>(item);
+        static const std::set<std::string> keys = {"at", "name", "radius", "stay", "arrive"};
         for (const auto &key : d)
         {
             const std::string name = key.first.cast<std::string>();
-            if (name != "at" && name != "name" && name != "radius" && name != "stay" && name != "arrive")
+            if (!keys.count(name))
                 throw Error("plan(): keyword 'via': " + at + ": unknown key '" + name +
                             "' (at, name, radius, stay, arrive)");
         }
@@ -386,97 +388,29 @@ void applySafetyAndExecutionKeywords(const Get &get, const Text &text, MissionOv
             *target = Given<long long>{value<long long>(*v, name, "an integer"), text(name)};
 }
 
-/// The keyword arguments of plan(), applied as glider_plan applies its flags (applySettings()).
-MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
+/// The keyword arguments plan() takes.
+const std::set<std::string> &planKeywords()
 {
-    auto get = [&kw](const char *name) -> std::optional<py::object> {
-        if (kw.contains(name) && !kw[name].is_none())
-            return py::reinterpret_borrow<py::object>(kw[name]);
-        return std::nullopt;
-    };
-    static const char *known[] = {"planner",
-                                  "planner_params",
-                                  "grid_size",
-                                  "sectors",
-                                  "time_limit",
-                                  "smoothing",
-                                  "refinement",
-                                  "speed",
-                                  "departure",
-                                  "start",
-                                  "goal",
-                                  "region",
-                                  "forbidden",
-                                  "isochrones",
-                                  "isochrone_interval",
-                                  "analytic",
-                                  "horizon",
-                                  "goal_tolerance",
-                                  "global_check",
-                                  "arrive_between",
-                                  "coastline",
-                                  "goto_turn",
-                                  "hold_tolerance",
-                                  "via",
-                                  "order",
-                                  "observations",
-                                  "observations_cache",
-                                  "keep_off",
-                                  "min_depth",
-                                  "bathymetry",
-                                  "bathymetry_variable",
-                                  "snap_to_water",
-                                  "truth",
-                                  "surfacing_interval",
-                                  "strategies",
-                                  "radius",
-                                  "execution_pairs",
-                                  "execution_seed",
-                                  "correction_length",
-                                  "correction_time",
-                                  "error_ratio",
-                                  "learn",
-                                  "reachability",
-                                  "reach_horizon",
-                                  "reach_interval",
-                                  "reach_resolution"};
-    for (const auto &item : kw)
-    {
-        const std::string name = item.first.cast<std::string>();
-        if (std::find(std::begin(known), std::end(known), name) == std::end(known))
-            throw Error("plan(): unknown keyword '" + name + "'");
-    }
-    if (auto v = get("analytic"))
-    {
-        const auto [type, params] =
-            value<std::pair<std::string, std::map<std::string, double>>>(*v, "field", "(name, {parameter: number})");
-        setAnalytic(m, type, params);
-    }
-    // the keywords the command line shares as flags: the library's typed overrides, each named by its keyword
-    MissionOverrides o;
-    o.origin = Origin::Keyword;
-    o.words = keywordWords();
-    auto text = [](const std::string &name) { return "plan(): keyword '" + name + "'"; };
-    if (auto v = get("planner"))
-        o.planner = Given<std::string>{value<std::string>(*v, "planner", "a planner name"), text("planner")};
-    if (auto v = get("planner_params"))
-        o.plannerParameters = Given<std::map<std::string, std::string>>{
-            value<std::map<std::string, std::string>>(*v, "planner_params", "a dict of parameter names to values"),
-            text("planner_params")};
-    for (const auto &[name, target] :
-         {std::make_pair("grid_size", &o.gridSize), std::make_pair("time_limit", &o.timeLimit),
-          std::make_pair("horizon", &o.horizon), std::make_pair("goal_tolerance", &o.goalTolerance),
-          std::make_pair("speed", &o.speed), std::make_pair("goto_turn", &o.gotoTurn)})
-        if (auto v = get(name))
-            *target = Given<double>{value<double>(*v, name, "a number"), text(name)};
-    if (auto v = get("sectors"))
-        o.sectors = Given<int>{value<int>(*v, "sectors", "an integer 1..5"), text("sectors")};
-    for (const auto &[name, target] :
-         {std::make_pair("smoothing", &o.smoothing), std::make_pair("refinement", &o.refinement),
-          std::make_pair("global_check", &o.globalCheck), std::make_pair("isochrones", &o.isochrones),
-          std::make_pair("reachability", &o.reachability)})
-        if (auto v = get(name))
-            *target = Given<bool>{value<bool>(*v, name, "True or False"), text(name)};
+    static const std::set<std::string> known = {
+        // the planner
+        "planner", "planner_params", "grid_size", "sectors", "time_limit", "smoothing", "refinement", "speed",
+        "horizon", "goal_tolerance", "global_check", "isochrones", "isochrone_interval", "analytic",
+        // the route
+        "departure", "start", "goal", "region", "arrive_between", "via", "order", "goto_turn", "hold_tolerance",
+        // land, depth and the observations
+        "forbidden", "coastline", "keep_off", "min_depth", "bathymetry", "bathymetry_variable", "snap_to_water",
+        "observations", "observations_cache", "correction_length", "correction_time", "error_ratio", "learn",
+        // the execution and the reachability
+        "truth", "surfacing_interval", "strategies", "radius", "execution_pairs", "execution_seed", "reachability",
+        "reach_horizon", "reach_interval", "reach_resolution"};
+    return known;
+}
+
+/// The keywords of plan() that place the route: departure, start, goal, region, arrive_between and via (each via
+/// point read against the mission @p m's units).
+template <class Get, class Text>
+void applyRouteKeywords(const Get &get, const Text &text, const MissionSpec &m, MissionOverrides &o)
+{
     if (auto v = get("departure"))
     {
         if (const std::string why = badNumber(*v); !why.empty() || py::str(*v).cast<std::string>().empty())
@@ -514,6 +448,51 @@ MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
         }
         o.via = Given<std::vector<ViaPointSpec>>{via, text("via")};
     }
+}
+
+/// The keyword arguments of plan(), applied as glider_plan applies its flags (applySettings()).
+MissionSpec withKeywords(MissionSpec m, const py::kwargs &kw)
+{
+    auto get = [&kw](const char *name) -> std::optional<py::object> {
+        if (kw.contains(name) && !kw[name].is_none())
+            return py::reinterpret_borrow<py::object>(kw[name]);
+        return std::nullopt;
+    };
+    for (const auto &item : kw)
+        if (const std::string name = item.first.cast<std::string>(); !planKeywords().count(name))
+            throw Error("plan(): unknown keyword '" + name + "'");
+    if (auto v = get("analytic"))
+    {
+        const auto [type, params] =
+            value<std::pair<std::string, std::map<std::string, double>>>(*v, "field", "(name, {parameter: number})");
+        setAnalytic(m, type, params);
+    }
+    // the keywords the command line shares as flags: the library's typed overrides, each named by its keyword
+    MissionOverrides o;
+    o.origin = Origin::Keyword;
+    o.words = keywordWords();
+    auto text = [](const std::string &name) { return "plan(): keyword '" + name + "'"; };
+    if (auto v = get("planner"))
+        o.planner = Given<std::string>{value<std::string>(*v, "planner", "a planner name"), text("planner")};
+    if (auto v = get("planner_params"))
+        o.plannerParameters = Given<std::map<std::string, std::string>>{
+            value<std::map<std::string, std::string>>(*v, "planner_params", "a dict of parameter names to values"),
+            text("planner_params")};
+    for (const auto &[name, target] :
+         {std::make_pair("grid_size", &o.gridSize), std::make_pair("time_limit", &o.timeLimit),
+          std::make_pair("horizon", &o.horizon), std::make_pair("goal_tolerance", &o.goalTolerance),
+          std::make_pair("speed", &o.speed), std::make_pair("goto_turn", &o.gotoTurn)})
+        if (auto v = get(name))
+            *target = Given<double>{value<double>(*v, name, "a number"), text(name)};
+    if (auto v = get("sectors"))
+        o.sectors = Given<int>{value<int>(*v, "sectors", "an integer 1..5"), text("sectors")};
+    for (const auto &[name, target] :
+         {std::make_pair("smoothing", &o.smoothing), std::make_pair("refinement", &o.refinement),
+          std::make_pair("global_check", &o.globalCheck), std::make_pair("isochrones", &o.isochrones),
+          std::make_pair("reachability", &o.reachability)})
+        if (auto v = get(name))
+            *target = Given<bool>{value<bool>(*v, name, "True or False"), text(name)};
+    applyRouteKeywords(get, text, m, o);
     if (auto v = get("order"))
         o.order = Given<std::string>{value<std::string>(*v, "order", "'given' or 'free'"), text("order")};
     if (auto v = get("observations"))

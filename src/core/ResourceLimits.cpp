@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <string>
 
 #include "ompl_glider/Exception.h"
@@ -22,13 +23,15 @@ double fromEnvironment(const char *text)
     double v = std::strtod(text, &end);
     if (end != text)
     {
-        const std::string suffix(end);
-        const double scale = suffix.empty()                   ? 1.0
-                             : suffix == "K" || suffix == "k" ? 1024.0
-                             : suffix == "M"                  ? 1024.0 * 1024.0
-                             : suffix == "G"                  ? 1024.0 * 1024.0 * 1024.0
-                             : suffix == "T"                  ? 1024.0 * 1024.0 * 1024.0 * 1024.0
-                                                              : 0.0;
+        // the bytes of a suffix (binary multiples); an unknown suffix scales to 0, refused below
+        static const std::map<std::string, double> scales = {{"", 1.0},
+                                                             {"K", 1024.0},
+                                                             {"k", 1024.0},
+                                                             {"M", 1024.0 * 1024.0},
+                                                             {"G", 1024.0 * 1024.0 * 1024.0},
+                                                             {"T", 1024.0 * 1024.0 * 1024.0 * 1024.0}};
+        const auto it = scales.find(end);
+        const double scale = it == scales.end() ? 0.0 : it->second;
         v *= scale;
         if (scale > 0.0 && std::isfinite(v) && v >= 1.0 && v < 1e19)
             return v;

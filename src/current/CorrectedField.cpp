@@ -12,6 +12,7 @@
 
 #include "ompl_glider/Exception.h"
 #include "CorrectionFit.h"
+#include "CorrectionKernel.h"
 #include "ompl_glider/current/GriddedCurrentField.h"
 
 namespace ompl_glider
@@ -42,7 +43,7 @@ Velocity InnovationMean::at(double x, double y, double t, Jacobian *j) const
     const double dy = y < yMin ? y - yMin : y > yMax ? y - yMax : 0.0;
     const double dt = t < tBegin ? tBegin - t : t > tEnd ? t - tEnd : 0.0;
     const double L2 = lengthScale * lengthScale, T2 = timeScale * timeScale;
-    const double fade = std::exp(-(dx * dx + dy * dy) / (2.0 * L2) - dt * dt / (2.0 * T2));
+    const double fade = correctionKernel(dx * dx + dy * dy, dt, L2, T2);
     if (j)
     {
         j->ux -= m.u * fade * dx / L2;
@@ -84,6 +85,123 @@ void noteInnovations(CorrectionSummary &s, const std::vector<DacObservation> &us
     s.firstUsed = used.front().t;
     s.lastUsed = used.back().t;
 }
+
+/// The observations the correction uses: finite, within the forecast's span, box and water, by time, and the most
+/// recent CorrectionParams::maxObservations of them; @p s counts those given and those left out.
+std::vector<DacObservation> usableDac(const CurrentField &base, const std::vector<DacObservation> &observations,
+                                      const CorrectionParams &params, CorrectionSummary &s)
+{
+    s.given = observations.size();
+    std::vector<DacObservation> kept;
+    const FieldGrid *grid = base.grid();
+    for (const DacObservation &o : observations)
+    {
+        if (!std::isfinite(o.t) || !std::isfinite(o.at.x) || !std::isfinite(o.at.y) || !std::isfinite(o.dac.u) ||
+            !std::isfinite(o.dac.v))
+            ++s.notFinite;
+        else if (o.t < base.timeBegin() || o.t > base.timeEnd() || (grid && !grid->covers(o.at.x, o.at.y)) ||
+                 !base.inWater(o.at.x, o.at.y, params.depthTop))
+            ++s.outsideForecast;
+        else
+            kept.push_back(o);
+    }
+    std::stable_sort(kept.begin(), kept.end(),
+                     [](const DacObservation &a, const DacObservation &b) { return a.t < b.t; });
+    if (kept.size() > params.maxObservations)
+    {
+        s.older = kept.size() - params.maxObservations;
+        kept.erase(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(s.older));
+    }
+    return kept;
+}
+
+/// The innovations of @p used (each DAC less the depth-averaged forecast) into @p du and @p dv; returns their sum of
+/// squares.
+double innovationsOf(const CurrentField &base, const std::vector<DacObservation> &used, const CorrectionParams &params,
+                     Eigen::VectorXd &du, Eigen::VectorXd &dv)
+{
+    double squares = 0.0;
+    for (std::size_t i = 0; i < used.size(); ++i)
+    {
+        const Velocity f = forecastAtDac(base, used[i], params);
+        du[i] = used[i].dac.u - f.u;
+        dv[i] = used[i].dac.v - f.v;
+        // a DAC equal to the forecast but for the rounding of its numbers (a float file, a CSV): no innovation
+        const double noise = 1e-12 * std::max({1.0, std::abs(f.u), std::abs(f.v)});
+        if (std::abs(du[i]) < noise)
+            du[i] = 0.0;
+        if (std::abs(dv[i]) < noise)
+            dv[i] = 0.0;
+        squares += du[i] * du[i] + dv[i] * dv[i];
+    }
+    return squares;
+}
+
+/// A superobservation: the DAC of one cell averaged (their mean time, place and innovation) and their number.
+struct DacCell
+{
+    double t;
+    Point2 at;
+    double u, v, count;
+};
+
+/// The superobservations of @p used: DAC within a cell of @p cellL by @p cellT of each other (an eighth of the
+/// scales: correlated above 0.98) are averaged into one whose error variance is divided by their number; many nearly
+/// equal rows would leave the system ill-conditioned and cost each evaluation of the field a term per DAC. By time.
+std::vector<DacCell> superobservations(const std::vector<DacObservation> &used, const Eigen::VectorXd &du,
+                                       const Eigen::VectorXd &dv, double cellL, double cellT)
+{
+    std::map<std::tuple<long long, long long, long long>, std::size_t> index;
+    std::vector<DacCell> cells;
+    for (std::size_t i = 0; i < used.size(); ++i)
+    {
+        // (the cell's index kept within what a long long holds, whatever the scale's size)
+        const auto cell = [](double v, double size) {
+            return static_cast<long long>(std::clamp(std::floor(v / size), -1e18, 1e18));
+        };
+        const auto key = std::make_tuple(cell(used[i].at.x, cellL), cell(used[i].at.y, cellL), cell(used[i].t, cellT));
+        const auto [it, added] = index.emplace(key, cells.size());
+        if (added)
+            cells.push_back({0.0, {0.0, 0.0}, 0.0, 0.0, 0.0});
+        DacCell &c = cells[it->second];
+        c.t += used[i].t;
+        c.at.x += used[i].at.x;
+        c.at.y += used[i].at.y;
+        c.u += du[i];
+        c.v += dv[i];
+        c.count += 1.0;
+    }
+    for (DacCell &c : cells)
+    {
+        c.t /= c.count;
+        c.at.x /= c.count;
+        c.at.y /= c.count;
+    }
+    std::stable_sort(cells.begin(), cells.end(), [](const DacCell &a, const DacCell &b) { return a.t < b.t; });
+    for (DacCell &c : cells)
+    {
+        c.u /= c.count;
+        c.v /= c.count;
+    }
+    return cells;
+}
+
+/// The covariance of the superobservations @p cells at scales @p L and @p T, their error variances @p noise on its
+/// diagonal.
+Eigen::MatrixXd cellCovariance(const std::vector<DacCell> &cells, const Eigen::VectorXd &noise, double L, double T)
+{
+    const std::size_t m = cells.size();
+    const double L2 = L * L, T2 = T * T;
+    Eigen::MatrixXd C(m, m);
+    for (std::size_t i = 0; i < m; ++i)
+        for (std::size_t j = 0; j < m; ++j)
+        {
+            const double dx = cells[i].at.x - cells[j].at.x, dy = cells[i].at.y - cells[j].at.y;
+            C(i, j) = correctionKernel(dx * dx + dy * dy, cells[i].t - cells[j].t, L2, T2);
+        }
+    C.diagonal() += noise;
+    return C;
+}
 } // namespace
 
 CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
@@ -99,48 +217,14 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
     summary_.lengthSource = sourceOf(params_.lengthGiven, params_.learn);
     summary_.timeSource = sourceOf(params_.timeGiven, params_.learn);
     summary_.ratioSource = sourceOf(params_.ratioGiven, params_.learn);
-    summary_.given = observations.size();
-    std::vector<DacObservation> kept;
-    const FieldGrid *grid = base_->grid();
-    for (const DacObservation &o : observations)
-    {
-        if (!std::isfinite(o.t) || !std::isfinite(o.at.x) || !std::isfinite(o.at.y) || !std::isfinite(o.dac.u) ||
-            !std::isfinite(o.dac.v))
-            ++summary_.notFinite;
-        else if (o.t < base_->timeBegin() || o.t > base_->timeEnd() || (grid && !grid->covers(o.at.x, o.at.y)) ||
-                 !base_->inWater(o.at.x, o.at.y, params_.depthTop))
-            ++summary_.outsideForecast;
-        else
-            kept.push_back(o);
-    }
-    std::stable_sort(kept.begin(), kept.end(),
-                     [](const DacObservation &a, const DacObservation &b) { return a.t < b.t; });
-    if (kept.size() > params_.maxObservations)
-    {
-        summary_.older = kept.size() - params_.maxObservations;
-        kept.erase(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(summary_.older));
-    }
-    used_ = std::move(kept);
+    used_ = usableDac(*base_, observations, params_, summary_);
     summary_.used = used_.size();
     const std::size_t n = used_.size();
     if (n == 0)
         return;
     // innovations against the depth-averaged forecast, and the covariance of the observations
     Eigen::VectorXd du(n), dv(n);
-    double before = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        const Velocity f = forecastAtDac(*base_, used_[i], params_);
-        du[i] = used_[i].dac.u - f.u;
-        dv[i] = used_[i].dac.v - f.v;
-        // a DAC equal to the forecast but for the rounding of its numbers (a float file, a CSV): no innovation
-        const double noise = 1e-12 * std::max({1.0, std::abs(f.u), std::abs(f.v)});
-        if (std::abs(du[i]) < noise)
-            du[i] = 0.0;
-        if (std::abs(dv[i]) < noise)
-            dv[i] = 0.0;
-        before += du[i] * du[i] + dv[i] * dv[i];
-    }
+    const double before = innovationsOf(*base_, used_, params_, du, dv);
     noteInnovations(summary_, used_, du, dv, before);
     if (params_.learn && n >= params_.minLearn && before > 0.0)
     {
@@ -154,75 +238,25 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
             dv[i] -= m.v;
         }
     }
-    // superobservations: DAC within an eighth of the scales of each other in space and time (correlated above 0.98)
-    // are averaged into one whose error variance is divided by their number; many nearly equal rows would leave the
-    // system ill-conditioned and cost each evaluation of the field a term per DAC
-    const double cellL = params_.lengthScale / 8.0, cellT = params_.timeScale / 8.0;
-    std::map<std::tuple<long long, long long, long long>, std::size_t> cells;
-    std::vector<double> count, su, sv;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        // (the cell's index kept within what a long long holds, whatever the scale's size)
-        const auto cell = [](double v, double size) {
-            return static_cast<long long>(std::clamp(std::floor(v / size), -1e18, 1e18));
-        };
-        const auto key =
-            std::make_tuple(cell(used_[i].at.x, cellL), cell(used_[i].at.y, cellL), cell(used_[i].t, cellT));
-        const auto [it, added] = cells.emplace(key, nodes_.size());
-        if (added)
-        {
-            nodes_.push_back({0.0, {0.0, 0.0}});
-            count.push_back(0.0);
-            su.push_back(0.0);
-            sv.push_back(0.0);
-        }
-        const std::size_t k = it->second;
-        nodes_[k].t += used_[i].t;
-        nodes_[k].at.x += used_[i].at.x;
-        nodes_[k].at.y += used_[i].at.y;
-        su[k] += du[i];
-        sv[k] += dv[i];
-        count[k] += 1.0;
-    }
-    const std::size_t m = nodes_.size();
-    for (std::size_t k = 0; k < m; ++k)
-    {
-        nodes_[k].t /= count[k];
-        nodes_[k].at.x /= count[k];
-        nodes_[k].at.y /= count[k];
-    }
-    std::vector<std::size_t> order(m);
-    for (std::size_t k = 0; k < m; ++k)
-        order[k] = k;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return nodes_[a].t < nodes_[b].t; });
-    std::vector<Node> sorted(m);
+    const std::vector<DacCell> cells =
+        superobservations(used_, du, dv, params_.lengthScale / 8.0, params_.timeScale / 8.0);
+    const std::size_t m = cells.size();
     Eigen::VectorXd nu(m), nv(m), noise(m);
     for (std::size_t k = 0; k < m; ++k)
     {
-        const std::size_t j = order[k];
-        sorted[k] = nodes_[j];
-        nu[static_cast<Eigen::Index>(k)] = su[j] / count[j];
-        nv[static_cast<Eigen::Index>(k)] = sv[j] / count[j];
+        const auto e = static_cast<Eigen::Index>(k);
+        nodes_.push_back({cells[k].t, cells[k].at});
+        nu[e] = cells[k].u;
+        nv[e] = cells[k].v;
         // a nugget of 1e-6 of the forecast error's variance keeps the system solvable for a tiny error ratio (below
         // 1e-3) and superobservations that nearly coincide
-        noise[static_cast<Eigen::Index>(k)] = std::max(params_.errorRatio * params_.errorRatio / count[j], 1e-6);
-        uLow_ = std::min(uLow_, nu[static_cast<Eigen::Index>(k)]);
-        uHigh_ = std::max(uHigh_, nu[static_cast<Eigen::Index>(k)]);
-        vLow_ = std::min(vLow_, nv[static_cast<Eigen::Index>(k)]);
-        vHigh_ = std::max(vHigh_, nv[static_cast<Eigen::Index>(k)]);
+        noise[e] = std::max(params_.errorRatio * params_.errorRatio / cells[k].count, 1e-6);
+        uLow_ = std::min(uLow_, nu[e]);
+        uHigh_ = std::max(uHigh_, nu[e]);
+        vLow_ = std::min(vLow_, nv[e]);
+        vHigh_ = std::max(vHigh_, nv[e]);
     }
-    nodes_ = std::move(sorted);
-    const double L2 = params_.lengthScale * params_.lengthScale, T2 = params_.timeScale * params_.timeScale;
-    Eigen::MatrixXd C(m, m);
-    for (std::size_t i = 0; i < m; ++i)
-        for (std::size_t j = 0; j < m; ++j)
-        {
-            const double dx = nodes_[i].at.x - nodes_[j].at.x, dy = nodes_[i].at.y - nodes_[j].at.y;
-            const double dt = nodes_[i].t - nodes_[j].t;
-            C(i, j) = std::exp(-(dx * dx + dy * dy) / (2.0 * L2) - dt * dt / (2.0 * T2));
-        }
-    C.diagonal() += noise;
+    const Eigen::MatrixXd C = cellCovariance(cells, noise, params_.lengthScale, params_.timeScale);
     const Eigen::LDLT<Eigen::MatrixXd> solver(C);
     const Eigen::VectorXd au = solver.solve(nu), av = solver.solve(nv);
     alphaU_.assign(au.data(), au.data() + m);
@@ -300,16 +334,15 @@ void CorrectedField::sample()
     // nodes (each cut off past kCutoff scales, as the exact sum)
     const Eigen::Index M = static_cast<Eigen::Index>(m);
     Eigen::MatrixXd X(static_cast<Eigen::Index>(nx), M), Y(static_cast<Eigen::Index>(ny), M);
-    const auto weight = [&](double d2, double s2) { return std::exp(-d2 / (2.0 * s2)); };
     for (Eigen::Index k = 0; k < M; ++k)
     {
         const Node &n = nodes_[static_cast<std::size_t>(k)];
         for (std::size_t i = 0; i < nx; ++i)
             X(static_cast<Eigen::Index>(i), k) =
-                std::abs(d.x[i] - n.at.x) > reach ? 0.0 : weight(std::pow(d.x[i] - n.at.x, 2), L * L);
+                std::abs(d.x[i] - n.at.x) > reach ? 0.0 : correctionKernelFactor(std::pow(d.x[i] - n.at.x, 2), L * L);
         for (std::size_t j = 0; j < ny; ++j)
             Y(static_cast<Eigen::Index>(j), k) =
-                std::abs(d.y[j] - n.at.y) > reach ? 0.0 : weight(std::pow(d.y[j] - n.at.y, 2), L * L);
+                std::abs(d.y[j] - n.at.y) > reach ? 0.0 : correctionKernelFactor(std::pow(d.y[j] - n.at.y, 2), L * L);
     }
     for (std::size_t it = 0; it < nt; ++it)
     {
@@ -319,7 +352,7 @@ void CorrectedField::sample()
         {
             const std::size_t n = static_cast<std::size_t>(first + k);
             const double dt = d.time[it] - nodes_[n].t;
-            const double w = weight(dt * dt, T * T);
+            const double w = correctionKernelFactor(dt * dt, T * T);
             wu[k] = w * alphaU_[n];
             wv[k] = w * alphaV_[n];
         }
@@ -412,7 +445,7 @@ void CorrectedField::addCorrection(double x, double y, double t, Velocity &c, Ja
         if (r2 > reach2)
             continue;
         const double dt = t - it->t;
-        const double w = std::exp(-r2 / (2.0 * L2) - dt * dt / (2.0 * T2));
+        const double w = correctionKernel(r2, dt, L2, T2);
         const std::size_t i = static_cast<std::size_t>(it - nodes_.begin());
         g.u += w * alphaU_[i];
         g.v += w * alphaV_[i];

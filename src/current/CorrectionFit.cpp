@@ -119,6 +119,121 @@ void meanExtent(const std::vector<DacObservation> &obs, double L, double T, Inno
     m.lengthScale = std::max(10.0 * L, std::hypot(m.xMax - m.xMin, m.yMax - m.yMin));
     m.timeScale = std::max(10.0 * T, m.tEnd - m.tBegin);
 }
+
+/// The angular frequency of constituent @p c, in radians per time unit of @p secondsPerTimeUnit seconds.
+double angularFrequency(const TidalPeriod &c, double secondsPerTimeUnit)
+{
+    return 2.0 * kPi * secondsPerTimeUnit / (c.hours * 3600.0);
+}
+
+/// The likelihood of the innovations @p du, @p dv of @p fitted (from index @p first on) under a mean of a bias and
+/// the constituents @p tides (their phases from @p tRef).
+Likelihood likelihoodOf(const std::vector<DacObservation> &fitted, const Eigen::VectorXd &du, const Eigen::VectorXd &dv,
+                        std::size_t first, const std::vector<TidalPeriod> &tides, double tRef,
+                        const CorrectionParams &p)
+{
+    const std::size_t m = fitted.size();
+    Likelihood like;
+    like.obs = &fitted;
+    like.G.resize(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(1 + 2 * tides.size()));
+    like.D.resize(static_cast<Eigen::Index>(m), 2);
+    for (std::size_t i = 0; i < m; ++i)
+    {
+        const auto r = static_cast<Eigen::Index>(i);
+        like.D(r, 0) = du[static_cast<Eigen::Index>(first + i)];
+        like.D(r, 1) = dv[static_cast<Eigen::Index>(first + i)];
+        like.G(r, 0) = 1.0;
+        for (std::size_t k = 0; k < tides.size(); ++k)
+        {
+            const double w = angularFrequency(tides[k], p.secondsPerTimeUnit);
+            like.G(r, static_cast<Eigen::Index>(1 + 2 * k)) = std::cos(w * (fitted[i].t - tRef));
+            like.G(r, static_cast<Eigen::Index>(2 + 2 * k)) = std::sin(w * (fitted[i].t - tRef));
+        }
+    }
+    like.floor2 = p.dacError * p.dacError;
+    return like;
+}
+
+/// A free scale: where it is kept, its bounds and the words of its source.
+struct Free
+{
+    double *value;
+    double lo, hi;
+    std::string *source;
+};
+
+/// The scales of @p p not given, each within bounds around its prior (a tenth to fifty times the length and time
+/// scales; the error ratio from 0.02 to 5, wider to include its prior).
+std::vector<Free> freeScales(CorrectionParams &p, CorrectionSummary &summary)
+{
+    std::vector<Free> free;
+    if (!p.lengthGiven)
+        free.push_back({&p.lengthScale, p.lengthScale / 10.0, p.lengthScale * 50.0, &summary.lengthSource});
+    if (!p.timeGiven)
+        free.push_back({&p.timeScale, p.timeScale / 10.0, p.timeScale * 50.0, &summary.timeSource});
+    if (!p.ratioGiven)
+        free.push_back(
+            {&p.errorRatio, std::min(0.02, p.errorRatio), std::max(5.0, p.errorRatio), &summary.ratioSource});
+    return free;
+}
+
+using Objective = std::function<double(const std::vector<double> &)>;
+
+/// The maximum of @p at over the logarithms of the @p free scales, from @p x (where it is @p best): a coarse grid
+/// first (the likelihood has broad ridges and a local optimiser alone can stall on one), then a local search from
+/// its best point. @p x becomes the best point found; returns the value there.
+double maximise(const Objective &at, const std::vector<Free> &free, double best, std::vector<double> &x)
+{
+    std::vector<double> lo(free.size()), hi(free.size()), trial(free.size()), bestX = x;
+    for (std::size_t k = 0; k < free.size(); ++k)
+    {
+        lo[k] = std::log(free[k].lo);
+        hi[k] = std::log(free[k].hi);
+    }
+    constexpr int kGrid = 4;
+    std::size_t cells = 1;
+    for (std::size_t k = 0; k < free.size(); ++k)
+        cells *= kGrid;
+    for (std::size_t c = 0; c < cells; ++c)
+    {
+        std::size_t rest = c;
+        for (std::size_t k = 0; k < free.size(); ++k, rest /= kGrid)
+            trial[k] = lo[k] + (hi[k] - lo[k]) * static_cast<double>(rest % kGrid) / (kGrid - 1);
+        const double v = at(trial);
+        if (v > best)
+        {
+            best = v;
+            bestX = trial;
+        }
+    }
+    nlopt::opt opt(nlopt::LN_SBPLX, static_cast<unsigned>(free.size()));
+    opt.set_lower_bounds(lo);
+    opt.set_upper_bounds(hi);
+    opt.set_xtol_rel(1e-4);
+    opt.set_maxeval(300);
+    Objective objective = at;
+    opt.set_max_objective(
+        [](const std::vector<double> &v, std::vector<double> &, void *data) {
+            const double l = (*static_cast<Objective *>(data))(v);
+            return std::isfinite(l) ? l : -1e300;
+        },
+        &objective);
+    std::vector<double> y = bestX;
+    double found = best;
+    try
+    {
+        opt.optimize(y, found);
+    }
+    catch (const std::exception &)
+    {
+        // stopped by round-off or a failure: the best point it reached, if any, else the grid's
+        found = at(y);
+        if (!std::isfinite(found))
+            found = -std::numeric_limits<double>::infinity();
+    }
+    x = found > best ? y : bestX;
+    return std::max(found, best);
+}
 } // namespace
 
 void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, const Eigen::VectorXd &dv,
@@ -134,39 +249,8 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
         p.secondsPerTimeUnit > 0.0 ? resolvedConstituents(spanHours) : std::vector<TidalPeriod>{};
     while (!tides.empty() && m < 1 + 2 * tides.size() + 4)
         tides.pop_back(); // each constituent costs two coefficients: keep four degrees of freedom at least
-    Likelihood like;
-    like.obs = &fitted;
-    like.G.resize(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(1 + 2 * tides.size()));
-    like.D.resize(static_cast<Eigen::Index>(m), 2);
-    for (std::size_t i = 0; i < m; ++i)
-    {
-        const auto r = static_cast<Eigen::Index>(i);
-        like.D(r, 0) = du[static_cast<Eigen::Index>(first + i)];
-        like.D(r, 1) = dv[static_cast<Eigen::Index>(first + i)];
-        like.G(r, 0) = 1.0;
-        for (std::size_t k = 0; k < tides.size(); ++k)
-        {
-            const double w = 2.0 * kPi * p.secondsPerTimeUnit / (tides[k].hours * 3600.0);
-            like.G(r, static_cast<Eigen::Index>(1 + 2 * k)) = std::cos(w * (fitted[i].t - mean.tRef));
-            like.G(r, static_cast<Eigen::Index>(2 + 2 * k)) = std::sin(w * (fitted[i].t - mean.tRef));
-        }
-    }
-    like.floor2 = p.dacError * p.dacError;
-    // the free scales in logarithms, within bounds around their priors
-    struct Free
-    {
-        double *value;
-        double lo, hi;
-        std::string *source;
-    };
-    std::vector<Free> free;
-    if (!p.lengthGiven)
-        free.push_back({&p.lengthScale, p.lengthScale / 10.0, p.lengthScale * 50.0, &summary.lengthSource});
-    if (!p.timeGiven)
-        free.push_back({&p.timeScale, p.timeScale / 10.0, p.timeScale * 50.0, &summary.timeSource});
-    if (!p.ratioGiven)
-        free.push_back(
-            {&p.errorRatio, std::min(0.02, p.errorRatio), std::max(5.0, p.errorRatio), &summary.ratioSource});
+    const Likelihood like = likelihoodOf(fitted, du, dv, first, tides, mean.tRef, p);
+    const std::vector<Free> free = freeScales(p, summary);
     std::vector<double> x(free.size()), x0(free.size());
     for (std::size_t k = 0; k < free.size(); ++k)
         x[k] = x0[k] = std::log(*free[k].value);
@@ -186,57 +270,7 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
     double best = prior;
     if (!free.empty())
     {
-        // a coarse grid first (the likelihood has broad ridges and a local optimiser alone can stall on one), then a
-        // local search from its best point
-        std::vector<double> lo(free.size()), hi(free.size()), trial(free.size()), bestX = x;
-        for (std::size_t k = 0; k < free.size(); ++k)
-        {
-            lo[k] = std::log(free[k].lo);
-            hi[k] = std::log(free[k].hi);
-        }
-        constexpr int kGrid = 4;
-        std::size_t cells = 1;
-        for (std::size_t k = 0; k < free.size(); ++k)
-            cells *= kGrid;
-        for (std::size_t c = 0; c < cells; ++c)
-        {
-            std::size_t rest = c;
-            for (std::size_t k = 0; k < free.size(); ++k, rest /= kGrid)
-                trial[k] = lo[k] + (hi[k] - lo[k]) * static_cast<double>(rest % kGrid) / (kGrid - 1);
-            const double v = at(trial);
-            if (v > best)
-            {
-                best = v;
-                bestX = trial;
-            }
-        }
-        nlopt::opt opt(nlopt::LN_SBPLX, static_cast<unsigned>(free.size()));
-        opt.set_lower_bounds(lo);
-        opt.set_upper_bounds(hi);
-        opt.set_xtol_rel(1e-4);
-        opt.set_maxeval(300);
-        std::function<double(const std::vector<double> &)> objective = at;
-        opt.set_max_objective(
-            [](const std::vector<double> &v, std::vector<double> &, void *data) {
-                const double l = (*static_cast<std::function<double(const std::vector<double> &)> *>(data))(v);
-                return std::isfinite(l) ? l : -1e300;
-            },
-            &objective);
-        std::vector<double> y = bestX;
-        double found = best;
-        try
-        {
-            opt.optimize(y, found);
-        }
-        catch (const std::exception &)
-        {
-            // stopped by round-off or a failure: the best point it reached, if any, else the grid's
-            found = at(y);
-            if (!std::isfinite(found))
-                found = -std::numeric_limits<double>::infinity();
-        }
-        x = found > best ? y : bestX;
-        best = std::max(found, best);
+        best = maximise(at, free, best, x);
         for (std::size_t k = 0; k < free.size(); ++k)
             *free[k].source = "estimated from " + std::to_string(m) + " DAC";
     }
@@ -259,7 +293,7 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
     {
         InnovationMean::Constituent c;
         c.name = tides[k].name;
-        c.omega = 2.0 * kPi * p.secondsPerTimeUnit / (tides[k].hours * 3600.0);
+        c.omega = angularFrequency(tides[k], p.secondsPerTimeUnit);
         const auto r = static_cast<Eigen::Index>(1 + 2 * k);
         c.cosine = {beta(r, 0), beta(r, 1)};
         c.sine = {beta(r + 1, 0), beta(r + 1, 1)};

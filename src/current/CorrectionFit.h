@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 
+#include "CorrectionKernel.h"
 #include "ompl_glider/current/CorrectedField.h"
 
 namespace ompl_glider::correction_fit
@@ -22,10 +23,10 @@ constexpr std::size_t kMaxFitted = 200;
 void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, const Eigen::VectorXd &dv,
            CorrectionSummary &summary);
 
-/// @brief exp(-r^2 / (2 L^2) - dt^2 / (2 T^2)) between observations i and j: the correction's correlation.
+/// @brief The correction's correlation (correctionKernel()) between observations @p a and @p b.
 inline double correlation(const DacObservation &a, const DacObservation &b, double L2, double T2)
 {
     const double dx = a.at.x - b.at.x, dy = a.at.y - b.at.y, dt = a.t - b.t;
-    return std::exp(-(dx * dx + dy * dy) / (2.0 * L2) - dt * dt / (2.0 * T2));
+    return correctionKernel(dx * dx + dy * dy, dt, L2, T2);
 }
 } // namespace ompl_glider::correction_fit

@@ -163,11 +163,35 @@ std::shared_ptr<const CurrentField> correctedForecast(const CurrentField &foreca
         return base;
     return std::make_shared<CorrectedField>(base, measured, params);
 }
-} // namespace
 
-FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const CurrentField &forecast,
-                   const CurrentField &truth, const Environment *forbidden, ControlStrategy strategy,
-                   const ExecutionOptions &o)
+/// The forecast the DAC make, renewed at a surfacing that brought a new one (one solve shared by the steering and
+/// the replanning).
+class LearnedForecast
+{
+public:
+    LearnedForecast(const CurrentField &forecast, const ExecutionOptions &o) : forecast_(forecast), o_(o) {}
+
+    /// The forecast learned from @p measured (learned again only when a DAC was added since).
+    const std::shared_ptr<const CurrentField> &of(const std::vector<DacObservation> &measured)
+    {
+        if (measured.size() != from_)
+        {
+            learned_ = o_.learn ? o_.learn(measured) : correctedForecast(forecast_, measured, o_.correction);
+            from_ = measured.size();
+        }
+        return learned_;
+    }
+
+private:
+    const CurrentField &forecast_;
+    const ExecutionOptions &o_;
+    std::shared_ptr<const CurrentField> learned_;
+    std::size_t from_ = std::numeric_limits<std::size_t>::max();
+};
+
+/// Refuses a plan without a waypoint, a speed, surfacing interval or step not positive and finite, and a replanning
+/// strategy without its replanner.
+void checkFlight(const std::vector<TimedPoint> &plan, double speed, ControlStrategy strategy, const ExecutionOptions &o)
 {
     if (plan.empty())
         throw Error("flyPlan: the plan has no waypoint");
@@ -180,24 +204,56 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         throw Error("flyPlan: the replan strategy needs a replanner and replanEvery >= 1");
     if (strategy == ControlStrategy::ReplanObserved && (!o.replanObserved || o.replanEvery == 0))
         throw Error("flyPlan: the replan_observed strategy needs an observed replanner and replanEvery >= 1");
+}
+
+/// The planned heading at @p t: its segment's, until the segment's end (@p surface brought forward to it: then a
+/// surfacing), the last one held after it.
+Point2 plannedHeading(const HeadingRoute &headings, double t, double &surface)
+{
+    double segEnd = headings.departure;
+    const HeadingSegment *seg = &headings.segments.back();
+    for (const HeadingSegment &h : headings.segments)
+    {
+        segEnd += std::max(h.duration, 0.0);
+        if (t < segEnd - 1e-12 * std::max(1.0, std::abs(segEnd)))
+        {
+            seg = &h;
+            break;
+        }
+    }
+    if (seg != &headings.segments.back() || t < segEnd)
+        surface = std::min(surface, segEnd);
+    return bearingVector(seg->bearing);
+}
+
+/// One dive's settings: the heading held at @p speed with the options' step and depth, toward @p goal within the
+/// options' radius (none once @p reached).
+DiveSettings diveSettings(double speed, const ExecutionOptions &o, const TimedPoint &goal, bool reached)
+{
+    DiveSettings ds;
+    ds.speed = speed;
+    ds.step = o.step;
+    ds.depth = o.depth;
+    ds.radius = reached ? 0.0 : o.radius;
+    ds.goal.x = goal.x;
+    ds.goal.y = goal.y;
+    return ds;
+}
+} // namespace
+
+FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const CurrentField &forecast,
+                   const CurrentField &truth, const Environment *forbidden, ControlStrategy strategy,
+                   const ExecutionOptions &o)
+{
+    checkFlight(plan, speed, strategy, o);
     const bool measuring = strategy == ControlStrategy::Dac || strategy == ControlStrategy::ReplanObserved;
     std::mt19937 rng(o.dacSeed);
     FlownTrack r;
     if (measuring)
         r.measured = o.measuredBefore;     // the earlier legs' dives
     std::vector<TimedPoint> active = plan; // the plan flown now (replaced by each new plan)
-    // the forecast the DAC make, renewed at a surfacing that brought a new one (one solve shared by the steering and
-    // the replanning)
-    std::shared_ptr<const CurrentField> learned;
-    std::size_t learnedFrom = std::numeric_limits<std::size_t>::max();
-    const auto learnedNow = [&]() -> const std::shared_ptr<const CurrentField> & {
-        if (r.measured.size() != learnedFrom)
-        {
-            learned = o.learn ? o.learn(r.measured) : correctedForecast(forecast, r.measured, o.correction);
-            learnedFrom = r.measured.size();
-        }
-        return learned;
-    };
+    LearnedForecast learned(forecast, o);
+    const auto learnedNow = [&]() -> const std::shared_ptr<const CurrentField> & { return learned.of(r.measured); };
     unsigned surfacings = 0;
     const TimedPoint &goal = plan.back();
     const double t0 = plan.front().t;
@@ -239,23 +295,9 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         double surface = std::min(t + o.surfacingInterval, end);
         if (strategy == ControlStrategy::PlannedHeadings && o.headings && !o.headings->segments.empty())
         {
-            // the planned segment at t: its heading until its end (then a surfacing), the last one held after it
-            double segEnd = o.headings->departure;
-            const HeadingSegment *seg = &o.headings->segments.back();
-            for (const HeadingSegment &h : o.headings->segments)
-            {
-                segEnd += std::max(h.duration, 0.0);
-                if (t < segEnd - 1e-12 * std::max(1.0, std::abs(segEnd)))
-                {
-                    seg = &h;
-                    break;
-                }
-            }
-            const Point2 h = bearingVector(seg->bearing);
+            const Point2 h = plannedHeading(*o.headings, t, surface);
             hx = h.x;
             hy = h.y;
-            if (seg != &o.headings->segments.back() || t < segEnd)
-                surface = std::min(surface, segEnd);
         }
         else if (len > 0.0)
         {
@@ -277,13 +319,7 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
         }
         r.headings.push_back(std::atan2(hy, hx));
         // the dive: the heading held (the one integrator of a dive, Dive.h)
-        DiveSettings ds;
-        ds.speed = speed;
-        ds.step = o.step;
-        ds.depth = o.depth;
-        ds.radius = r.reached ? 0.0 : o.radius;
-        ds.goal.x = goal.x;
-        ds.goal.y = goal.y;
+        const DiveSettings ds = diveSettings(speed, o, goal, r.reached);
         const std::size_t diveStart = r.track.size() - 1;
         const DiveEnd dive = flyHeading(x, y, t, hx, hy, surface, truth, forbidden, ds, &r.track);
         if (measuring && r.track.size() > diveStart + 1)

@@ -147,6 +147,57 @@ std::string featureName(const OGRFeature &f)
         return std::string("'") + f.GetFieldAsString(k) + "'";
     return std::to_string(f.GetFID());
 }
+
+/// The rectangle (@p lonMin, @p latMin) to (@p lonMax, @p latMax) a turn of @p shift degrees east: a layer written
+/// in 0..360 (or beyond -180) holds the land of -180..180 a turn away; what it clips is brought back by the turn.
+OGRPolygon boxPolygon(double lonMin, double latMin, double lonMax, double latMax, double shift)
+{
+    OGRPolygon box;
+    OGRLinearRing r;
+    r.addPoint(lonMin + shift, latMin);
+    r.addPoint(lonMax + shift, latMin);
+    r.addPoint(lonMax + shift, latMax);
+    r.addPoint(lonMin + shift, latMax);
+    r.closeRings();
+    box.addRing(&r);
+    return box;
+}
+
+/// The transformation of @p layer's coordinates to lon/lat (@p wgs84); null where they are lon/lat already or the
+/// layer has no spatial reference. @p who names the file in an error.
+std::unique_ptr<OGRCoordinateTransformation> transformToLonLat(OGRLayer &layer, const OGRSpatialReference &wgs84,
+                                                               const std::string &who)
+{
+    std::unique_ptr<OGRCoordinateTransformation> toLonLat;
+    if (const OGRSpatialReference *srs = layer.GetSpatialRef())
+    {
+        OGRSpatialReference src(*srs);
+        src.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+        if (!src.IsSame(&wgs84))
+        {
+            toLonLat.reset(OGRCreateCoordinateTransformation(&src, &wgs84));
+            if (!toLonLat)
+                throw Error(who + ", layer '" + layer.GetName() +
+                            "': its spatial reference cannot be transformed to lon/lat (WGS 84)");
+        }
+    }
+    return toLonLat;
+}
+
+/// The envelope of @p g, refused (for @p which) where it is not lon/lat: a projected file without its spatial
+/// reference.
+OGREnvelope lonLatEnvelope(const OGRGeometry &g, const std::string &which)
+{
+    OGREnvelope e;
+    g.getEnvelope(&e);
+    if (!(e.MinX >= -180.0 && e.MaxX <= 360.0 && e.MinY >= -90.0 && e.MaxY <= 90.0))
+        throw Error(which + ": coordinates up to " +
+                    lonLat(std::abs(e.MinX) > std::abs(e.MaxX) ? e.MinX : e.MaxX,
+                           std::abs(e.MinY) > std::abs(e.MaxY) ? e.MinY : e.MaxY) +
+                    " are not lon/lat (longitude -180..360, latitude -90..90): a projected file (web-mercator "
+                    "metres?) needs its spatial reference (a GeoJSON 'crs' member, a shapefile's .prj)");
+    return e;
+}
 } // namespace
 
 std::string gdal_detail::polygonFault(const std::vector<Point2> &outer, const std::vector<std::vector<Point2>> &holes)
@@ -188,35 +239,10 @@ std::vector<LandPolygon> gdal_detail::readLandPolygons(const std::string &path, 
     if (wgs84.importFromEPSG(4326) != OGRERR_NONE)
         throw Error(who + ": cannot set up lon/lat (EPSG:4326): is PROJ's database (proj-data) installed?");
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    // the box, and the box a turn east and west: a layer written in 0..360 (or beyond -180) holds the land of
-    // -180..180 a turn away; what it clips is brought back by the turn
-    auto boxAt = [&](double shift) {
-        OGRPolygon box;
-        OGRLinearRing r;
-        r.addPoint(lonMin + shift, latMin);
-        r.addPoint(lonMax + shift, latMin);
-        r.addPoint(lonMax + shift, latMax);
-        r.addPoint(lonMin + shift, latMax);
-        r.closeRings();
-        box.addRing(&r);
-        return box;
-    };
     std::vector<LandPolygon> out;
     for (OGRLayer *layer : ds->GetLayers())
     {
-        std::unique_ptr<OGRCoordinateTransformation> toLonLat;
-        if (const OGRSpatialReference *srs = layer->GetSpatialRef())
-        {
-            OGRSpatialReference src(*srs);
-            src.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-            if (!src.IsSame(&wgs84))
-            {
-                toLonLat.reset(OGRCreateCoordinateTransformation(&src, &wgs84));
-                if (!toLonLat)
-                    throw Error(who + ", layer '" + layer->GetName() +
-                                "': its spatial reference cannot be transformed to lon/lat (WGS 84)");
-            }
-        }
+        const std::unique_ptr<OGRCoordinateTransformation> toLonLat = transformToLonLat(*layer, wgs84, who);
         layer->ResetReading();
         for (auto &feature : *layer)
         {
@@ -229,14 +255,7 @@ std::vector<LandPolygon> gdal_detail::readLandPolygons(const std::string &path, 
             if (toLonLat && g->transform(toLonLat.get()) != OGRERR_NONE)
                 throw Error(which + ": its coordinates cannot be transformed to lon/lat");
             g = landGeometry(std::move(g), which);
-            OGREnvelope e;
-            g->getEnvelope(&e);
-            if (!(e.MinX >= -180.0 && e.MaxX <= 360.0 && e.MinY >= -90.0 && e.MaxY <= 90.0))
-                throw Error(which + ": coordinates up to " +
-                            lonLat(std::abs(e.MinX) > std::abs(e.MaxX) ? e.MinX : e.MaxX,
-                                   std::abs(e.MinY) > std::abs(e.MaxY) ? e.MinY : e.MaxY) +
-                            " are not lon/lat (longitude -180..360, latitude -90..90): a projected file (web-mercator "
-                            "metres?) needs its spatial reference (a GeoJSON 'crs' member, a shapefile's .prj)");
+            const OGREnvelope e = lonLatEnvelope(*g, which);
             if (count)
             {
                 ++count->features;
@@ -268,7 +287,7 @@ std::vector<LandPolygon> gdal_detail::readLandPolygons(const std::string &path, 
                     count->usedFeatures.insert(std::string(layer->GetName()) + "/" + std::to_string(feature->GetFID()));
                 }
                 valid = true;
-                const OGRPolygon box = boxAt(shift);
+                const OGRPolygon box = boxPolygon(lonMin, latMin, lonMax, latMax, shift);
                 std::unique_ptr<OGRGeometry> clipped(g->Intersection(&box));
                 if (!clipped)
                     throw Error(which + ": cannot be clipped to the trip's box (GEOS)");

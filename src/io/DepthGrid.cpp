@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <optional>
 
@@ -25,24 +26,34 @@ std::string lowerCase(std::string s)
     return s;
 }
 
+/// A word's number in @p table (a sign, an axis), 0 for a word it does not hold.
+int numberOfWord(const std::map<std::string, int> &table, const std::string &word)
+{
+    const auto it = table.find(word);
+    return it == table.end() ? 0 : it->second;
+}
+
 /// +1: positive down (a depth), -1: positive up (an elevation), 0: the text does not say.
 int signOfStandardName(const std::string &sn)
 {
-    if (sn.rfind("sea_floor_depth", 0) == 0 || sn == "depth" || sn == "model_sea_floor_depth_below_sea_level")
+    static const std::map<std::string, int> signs = {{"depth", 1},
+                                                     {"model_sea_floor_depth_below_sea_level", 1},
+                                                     {"altitude", -1},
+                                                     {"surface_altitude", -1},
+                                                     {"bedrock_altitude", -1}};
+    if (sn.rfind("sea_floor_depth", 0) == 0)
         return 1;
-    if (sn.rfind("height", 0) == 0 || sn == "altitude" || sn == "surface_altitude" || sn == "bedrock_altitude")
+    if (sn.rfind("height", 0) == 0)
         return -1;
-    return 0;
+    return numberOfWord(signs, sn);
 }
 int signOfName(const std::string &name)
 {
-    const std::string n = lowerCase(name);
-    if (n == "depth" || n == "h" || n == "bathymetry" || n == "bathy" || n == "deptho" || n == "hraw")
-        return 1;
-    if (n == "elevation" || n == "z" || n == "topo" || n == "rose" || n == "altitude" || n == "height" || n == "elev" ||
-        n == "btdata")
-        return -1;
-    return 0;
+    static const std::map<std::string, int> signs = {{"depth", 1},  {"h", 1},      {"bathymetry", 1}, {"bathy", 1},
+                                                     {"deptho", 1}, {"hraw", 1},   {"elevation", -1}, {"z", -1},
+                                                     {"topo", -1},  {"rose", -1},  {"altitude", -1},  {"height", -1},
+                                                     {"elev", -1},  {"btdata", -1}};
+    return numberOfWord(signs, lowerCase(name));
 }
 int signOfLongName(const std::string &longName)
 {
@@ -58,12 +69,11 @@ int signOfLongName(const std::string &longName)
 /// The sign that turns the variable's values into depths (positive down) and why; 0 when nothing settles it.
 int depthSign(const GriddedDataset &f, int var, std::string &why)
 {
-    const std::string positive = lowerCase(f.attText(var, "positive").value_or(""));
-    if (positive == "up" || positive == "down")
+    static const std::map<std::string, int> positive = {{"up", -1}, {"down", 1}};
+    if (const int s = numberOfWord(positive, lowerCase(f.attText(var, "positive").value_or(""))))
     {
-        why = positive == "up" ? "elevation, positive up (attribute positive)"
-                               : "depth, positive down (attribute positive)";
-        return positive == "up" ? -1 : 1;
+        why = s < 0 ? "elevation, positive up (attribute positive)" : "depth, positive down (attribute positive)";
+        return s;
     }
     const std::string sn = f.attText(var, "standard_name").value_or("");
     if (const int s = signOfStandardName(sn))
@@ -140,10 +150,13 @@ bool coordinates2D(const GriddedDataset &f, int var, std::vector<double> &lon, s
         const std::optional<int> v = f.findVar(n);
         if (!v || f.varDims(*v) != f.varDims(var))
             continue;
-        const std::string l = lowerCase(n), units = lowerCase(f.attText(*v, "units").value_or(""));
-        if (!lo && (l.rfind("lon", 0) == 0 || units == "degrees_east" || units == "degree_east"))
+        static const std::map<std::string, int> axisOfUnits = {
+            {"degrees_east", 1}, {"degree_east", 1}, {"degrees_north", -1}, {"degree_north", -1}};
+        const std::string l = lowerCase(n);
+        const int axis = numberOfWord(axisOfUnits, lowerCase(f.attText(*v, "units").value_or("")));
+        if (!lo && (l.rfind("lon", 0) == 0 || axis > 0))
             lo = v;
-        else if (!la && (l.rfind("lat", 0) == 0 || units == "degrees_north" || units == "degree_north"))
+        else if (!la && (l.rfind("lat", 0) == 0 || axis < 0))
             la = v;
     }
     if (!lo || !la)
@@ -157,30 +170,26 @@ bool coordinates2D(const GriddedDataset &f, int var, std::vector<double> &lon, s
 /// nothing says (its units, standard_name, axis attribute, then its name).
 int axisKind(const GriddedDataset &f, int dim)
 {
+    static const std::map<std::string, int> byUnits = {{"degrees_east", 1}, {"degree_east", 1},    {"degrees_e", 1},
+                                                       {"degree_e", 1},     {"degrees_north", -1}, {"degree_north", -1},
+                                                       {"degrees_n", -1},   {"degree_n", -1}};
+    static const std::map<std::string, int> byStandardName = {
+        {"longitude", 1}, {"grid_longitude", 1}, {"projection_x_coordinate", 1},
+        {"latitude", -1}, {"grid_latitude", -1}, {"projection_y_coordinate", -1}};
+    static const std::map<std::string, int> byAxis = {{"x", 1}, {"y", -1}};
+    static const std::map<std::string, int> byName = {{"x", 1}, {"easting", 1}, {"y", -1}, {"northing", -1}};
     const std::string name = lowerCase(f.dimName(dim));
     if (const std::optional<int> v = f.findVar(f.dimName(dim)))
-    {
-        const std::string units = lowerCase(f.attText(*v, "units").value_or(""));
-        if (units == "degrees_east" || units == "degree_east" || units == "degrees_e" || units == "degree_e")
-            return 1;
-        if (units == "degrees_north" || units == "degree_north" || units == "degrees_n" || units == "degree_n")
-            return -1;
-        const std::string sn = lowerCase(f.attText(*v, "standard_name").value_or(""));
-        if (sn == "longitude" || sn == "grid_longitude" || sn == "projection_x_coordinate")
-            return 1;
-        if (sn == "latitude" || sn == "grid_latitude" || sn == "projection_y_coordinate")
-            return -1;
-        const std::string axis = lowerCase(f.attText(*v, "axis").value_or(""));
-        if (axis == "x")
-            return 1;
-        if (axis == "y")
-            return -1;
-    }
-    if (name.rfind("lon", 0) == 0 || name == "x" || name.rfind("x_", 0) == 0 || name == "easting")
+        for (const auto &[attribute, table] :
+             {std::make_pair("units", &byUnits), std::make_pair("standard_name", &byStandardName),
+              std::make_pair("axis", &byAxis)})
+            if (const int kind = numberOfWord(*table, lowerCase(f.attText(*v, attribute).value_or(""))))
+                return kind;
+    if (name.rfind("lon", 0) == 0 || name.rfind("x_", 0) == 0)
         return 1;
-    if (name.rfind("lat", 0) == 0 || name == "y" || name.rfind("y_", 0) == 0 || name == "northing")
+    if (name.rfind("lat", 0) == 0 || name.rfind("y_", 0) == 0)
         return -1;
-    return 0;
+    return numberOfWord(byName, name);
 }
 
 /// Indices of a 1-D axis within [lo, hi] plus one node beyond each side, in ascending order of their values.

@@ -15,9 +15,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <iterator>
+#include <map>
 #include <set>
 #include <sstream>
 
+#include "CsvCells.h"
 #include "GdalModule.h"
 #include "HttpMirror.h"
 #include "GriddedDataset.h"
@@ -66,12 +68,10 @@ Answer answerOf(const std::string &url, const std::string &who)
     const std::size_t slash = path.rfind('/'), dot = path.rfind('.');
     const std::string type =
         dot == std::string::npos || (slash != std::string::npos && dot < slash) ? std::string() : path.substr(dot);
-    if (text::lower(type) == ".csvp")
-        return Answer::Csvp;
-    if (text::lower(type) == ".csv")
-        return Answer::Csv;
-    if (text::lower(type) == ".nccf")
-        return Answer::NcCf;
+    static const std::map<std::string, Answer> answers = {
+        {".csvp", Answer::Csvp}, {".csv", Answer::Csv}, {".nccf", Answer::NcCf}};
+    if (const auto it = answers.find(text::lower(type)); it != answers.end())
+        return it->second;
     throw Error(who + ": not an ERDDAP tabledap answer this reader knows (the file type " +
                 (type.empty() ? std::string("is missing") : "'" + type + "'") +
                 "; expected .csvp, .csv or .ncCF, e.g. https://gliders.ioos.us/erddap/tabledap/<dataset>.csvp?time,"
@@ -233,28 +233,6 @@ double numberOf(const std::string &cell, const std::string &where)
     return v;
 }
 
-/// The cells of one CSV line (ERDDAP quotes a text with commas or quotes, a quote doubled inside).
-std::vector<std::string> csvCells(const std::string &line)
-{
-    std::vector<std::string> out(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i)
-    {
-        const char c = line[i];
-        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
-            out.back() += line[++i];
-        else if (c == '"')
-            quoted = !quoted;
-        else if (c == ',' && !quoted)
-            out.emplace_back();
-        else if (c != '\r')
-            out.back() += c;
-    }
-    for (std::string &cell : out)
-        cell = text::trim(cell);
-    return out;
-}
-
 /// The columns' positions; @throws Error naming the URL and every expected column missing.
 std::map<std::string, std::size_t> columnsOf(const std::vector<std::string> &names, const std::string &who,
                                              const char *what)
@@ -291,7 +269,7 @@ std::vector<Row> csvRows(const std::string &body, Answer kind, const std::string
         lines.push_back(body.substr(at, end - at));
         at = end + 1;
     }
-    std::vector<std::string> names = csvCells(lines.front()), units(names.size());
+    std::vector<std::string> names = io_detail::csvCells(lines.front(), ',', true), units(names.size());
     if (kind == Answer::Csvp)
         for (std::size_t i = 0; i < names.size(); ++i)
             if (const std::size_t open = names[i].rfind(" ("); open != std::string::npos && names[i].back() == ')')
@@ -303,7 +281,7 @@ std::vector<Row> csvRows(const std::string &body, Answer kind, const std::string
     std::size_t first = 1;
     if (kind == Answer::Csv && lines.size() > 1) // the line of units
     {
-        const std::vector<std::string> u = csvCells(lines[1]);
+        const std::vector<std::string> u = io_detail::csvCells(lines[1], ',', true);
         for (std::size_t i = 0; i < units.size() && i < u.size(); ++i)
             units[i] = u[i];
         first = 2;
@@ -314,7 +292,7 @@ std::vector<Row> csvRows(const std::string &body, Answer kind, const std::string
     {
         if (text::trim(lines[n]).empty())
             continue;
-        const std::vector<std::string> cells = csvCells(lines[n]);
+        const std::vector<std::string> cells = io_detail::csvCells(lines[n], ',', true);
         if (cells.size() != names.size())
             throw Error(who + ": answer line " + std::to_string(n + 1) + ": " + std::to_string(cells.size()) +
                         " cells, the header names " + std::to_string(names.size()));
@@ -371,6 +349,8 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who, Veloc
     std::map<std::string, std::vector<double>> values;
     std::vector<std::string> names, profiles;
     std::string unitsU, unitsV;
+    const std::map<std::string, std::string *> velocityUnits = {{"u", &unitsU}, {"v", &unitsV}};
+    static const std::set<std::string> times = {"time", "time_uv"};
     try
     {
         const gridded_detail::GriddedDataset nc(memory.name);
@@ -404,9 +384,9 @@ std::vector<Row> ncCfRows(const std::string &body, const std::string &who, Veloc
             if (name == "profile_id")
                 for (const double x : v)
                     profiles.push_back(std::isfinite(x) ? text::number(x, 17) : "");
-            else if (name == "u" || name == "v")
-                (name == "u" ? unitsU : unitsV) = units;
-            else if (name == "time" || name == "time_uv")
+            else if (velocityUnits.count(name))
+                *velocityUnits.at(name) = units;
+            else if (times.count(name))
                 for (double &x : v)
                     x = secondsOf(x, units);
             if (name != "profile_id")

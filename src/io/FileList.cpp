@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "PathPattern.h"
 #include "TextUtil.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/io/MemoryDataset.h"
@@ -50,6 +51,22 @@ std::string folderIsNoStore(const std::string &item, const std::string &path)
 }
 } // namespace
 
+namespace io_detail
+{
+PatternMatches matchPattern(const std::string &pattern, std::size_t most)
+{
+    PatternMatches m;
+    glob_t g{};
+    m.status = ::glob(pattern.c_str(), 0, nullptr, &g);
+    m.count = m.status == 0 ? g.gl_pathc : 0;
+    if (m.count <= most)
+        for (std::size_t k = 0; k < m.count; ++k)
+            m.files.emplace_back(g.gl_pathv[k]);
+    globfree(&g);
+    return m;
+}
+} // namespace io_detail
+
 std::vector<std::string> expandForecastFiles(const std::vector<std::string> &items, const std::string &baseDir)
 {
     namespace fs = std::filesystem;
@@ -68,7 +85,7 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
         const std::string path =
             baseDir.empty() || fs::path(item).is_absolute() ? item : (fs::path(baseDir) / item).string();
         std::error_code ec;
-        if (item.find_first_of("*?[") == std::string::npos || fs::is_regular_file(path, ec))
+        if (!io_detail::hasWildcards(item) || fs::is_regular_file(path, ec))
         { // (a file that exists is that file, even when its name holds brackets: a[1].nc)
             if (fs::is_directory(path, ec) && !isZarrStore(path))
                 throw Error(folderIsNoStore(item, path));
@@ -76,34 +93,21 @@ std::vector<std::string> expandForecastFiles(const std::vector<std::string> &ite
             continue;
         }
         // wildcards in the file name only: a pattern reads one directory, never walks a tree
-        if (fs::path(item).parent_path().string().find_first_of("*?[") != std::string::npos)
+        if (io_detail::hasWildcards(fs::path(item).parent_path().string()))
             throw Error("forecast files: the pattern '" + item +
                         "' has wildcards in its directory; put them in the "
                         "file name only (e.g. forecasts/hycom_*.nc)");
-        glob_t g{};
-        const int rc = ::glob(path.c_str(), 0, nullptr, &g);
-        if (rc == GLOB_NOMATCH)
-        {
-            globfree(&g);
-            throw Error("forecast files: no file matches the pattern '" + path + "'");
-        }
-        if (rc != 0)
-        {
-            globfree(&g);
-            throw Error("forecast files: cannot expand the pattern '" + path + "' (" +
-                        (rc == GLOB_NOSPACE ? "out of memory" : "a directory cannot be read") + ")");
-        }
         const std::size_t kMaxFiles = 100000;
-        if (g.gl_pathc > kMaxFiles)
-        {
-            const std::size_t n = g.gl_pathc;
-            globfree(&g);
-            throw Error("forecast files: the pattern '" + path + "' matches " + std::to_string(n) +
+        const io_detail::PatternMatches matches = io_detail::matchPattern(path, kMaxFiles);
+        if (matches.status == GLOB_NOMATCH)
+            throw Error("forecast files: no file matches the pattern '" + path + "'");
+        if (matches.status != 0)
+            throw Error("forecast files: cannot expand the pattern '" + path + "' (" +
+                        (matches.status == GLOB_NOSPACE ? "out of memory" : "a directory cannot be read") + ")");
+        if (matches.count > kMaxFiles)
+            throw Error("forecast files: the pattern '" + path + "' matches " + std::to_string(matches.count) +
                         " files, more than " + std::to_string(kMaxFiles) + "; narrow it");
-        }
-        for (std::size_t k = 0; k < g.gl_pathc; ++k)
-            out.emplace_back(g.gl_pathv[k]);
-        globfree(&g);
+        out.insert(out.end(), matches.files.begin(), matches.files.end());
     }
     if (out.empty())
         throw Error("forecast files: none given");

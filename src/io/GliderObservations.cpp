@@ -9,12 +9,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <glob.h>
+#include <map>
 #include <sstream>
 
+#include "CsvCells.h"
 #include "GriddedDataset.h"
 #include "NumberText.h"
 #include "ObservationReaders.h"
+#include "PathPattern.h"
 #include "TextUtil.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
@@ -110,9 +112,10 @@ std::vector<std::string> filesOf(const std::string &path)
         for (const auto &e : fs::directory_iterator(path, ec))
             if (e.is_regular_file())
             {
+                static const std::map<std::string, int> byExtension = {{".nc", 0}, {".dba", 1}};
                 const std::string f = e.path().string();
-                const int kind = e.path().extension() == ".nc"                ? 0
-                                 : e.path().extension() == ".dba"             ? 1
+                const auto known = byExtension.find(e.path().extension().string());
+                const int kind = known != byExtension.end()                   ? known->second
                                  : observations_detail::isSlocumBinaryFile(f) ? 2
                                                                               : -1;
                 if (kind >= 0)
@@ -132,13 +135,9 @@ std::vector<std::string> filesOf(const std::string &path)
                         "': the folder holds no NetCDF (.nc), Slocum dba (.dba) or Slocum binary (.sbd, .tbd, .dbd, "
                         ".ebd, .scd, ...) file");
     }
-    else if (path.find_first_of("*?[") != std::string::npos)
+    else if (io_detail::hasWildcards(path))
     {
-        glob_t g{};
-        if (::glob(path.c_str(), 0, nullptr, &g) == 0)
-            for (std::size_t i = 0; i < g.gl_pathc; ++i)
-                out.push_back(g.gl_pathv[i]);
-        globfree(&g);
+        out = io_detail::matchPattern(path).files;
         if (out.empty())
             throw Error("observations '" + path + "': the pattern matches no file");
     }
@@ -149,22 +148,6 @@ std::vector<std::string> filesOf(const std::string &path)
         out.push_back(path);
     }
     std::sort(out.begin(), out.end());
-    return out;
-}
-
-std::vector<std::string> splitCsv(const std::string &line, char separator = ',')
-{
-    std::vector<std::string> out;
-    std::string cell;
-    std::istringstream in(line);
-    while (std::getline(in, cell, separator))
-    {
-        cell.erase(0, cell.find_first_not_of(" \t\r"));
-        cell.erase(cell.find_last_not_of(" \t\r") + 1);
-        out.push_back(cell);
-    }
-    if (!line.empty() && line.back() == separator)
-        out.emplace_back();
     return out;
 }
 
@@ -195,7 +178,7 @@ void readCsv(const std::string &file, GliderObservations &o)
             continue;
         if (col.empty() && line.find(',') == std::string::npos && line.find(';') != std::string::npos)
             separator = ';'; // a ';'-separated CSV (a spreadsheet's in a decimal-comma locale)
-        const std::vector<std::string> cells = splitCsv(line, separator);
+        const std::vector<std::string> cells = io_detail::csvCells(line, separator);
         if (col.empty())
         {
             std::map<std::string, std::string> units;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <map>
 
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
@@ -22,13 +23,10 @@ double parseLength(const std::string &text, double metresPerUnit, bool unitKnown
     std::string unit;
     if (!io_detail::splitQuantity(text, value, unit))
         throw Error(expected);
+    static const std::map<std::string, double> units = {{"m", 1.0}, {"km", 1000.0}, {"nmi", 1852.0}};
     double metres = 0.0;
-    if (unit == "m")
-        metres = 1.0;
-    else if (unit == "km")
-        metres = 1000.0;
-    else if (unit == "nmi")
-        metres = 1852.0;
+    if (const auto it = units.find(unit); it != units.end())
+        metres = it->second;
     else if (!unit.empty())
     {
 #if OMPL_GLIDER_WITH_NETCDF

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <map>
+#include <set>
 
 #include "TextUtil.h"
 #include "ompl_glider/Exception.h"
@@ -102,19 +104,14 @@ long dayNumber(long y, int m, int d, Calendar cal)
 
 Calendar parseCalendar(const std::string &name)
 {
-    const std::string s = lower(trim(name));
-    if (s.empty() || s == "standard" || s == "gregorian")
-        return Calendar::Standard;
-    if (s == "proleptic_gregorian")
-        return Calendar::ProlepticGregorian;
-    if (s == "julian")
-        return Calendar::Julian;
-    if (s == "noleap" || s == "365_day")
-        return Calendar::NoLeap;
-    if (s == "all_leap" || s == "366_day")
-        return Calendar::AllLeap;
-    if (s == "360_day")
-        return Calendar::Day360;
+    static const std::map<std::string, Calendar> calendars = {
+        {"", Calendar::Standard},          {"standard", Calendar::Standard},
+        {"gregorian", Calendar::Standard}, {"proleptic_gregorian", Calendar::ProlepticGregorian},
+        {"julian", Calendar::Julian},      {"noleap", Calendar::NoLeap},
+        {"365_day", Calendar::NoLeap},     {"all_leap", Calendar::AllLeap},
+        {"366_day", Calendar::AllLeap},    {"360_day", Calendar::Day360}};
+    if (const auto it = calendars.find(lower(trim(name))); it != calendars.end())
+        return it->second;
     throw Error("calendar '" + name +
                 "': expected standard, gregorian, proleptic_gregorian, julian, noleap, 365_day, all_leap, 366_day or "
                 "360_day");
@@ -220,8 +217,8 @@ WrittenDate readWrittenDate(const std::string &text)
         ++pos;
     if (pos < s.size())
     {
-        const std::string rest = lower(s.substr(pos));
-        if (rest == "z" || rest == "utc" || rest == "gmt")
+        static const std::set<std::string> utc = {"z", "utc", "gmt"};
+        if (utc.count(lower(s.substr(pos))))
             pos = s.size();
         else if (s[pos] == '+' || s[pos] == '-')
         {
@@ -364,15 +361,14 @@ CfTimeUnits parseCfTimeUnits(const std::string &units, const std::string &calend
     if (since == std::string::npos)
         throw Error("time units '" + units + "': expected '<seconds|minutes|hours|days> since <date>'");
     const std::string unit = trim(ls.substr(0, since));
+    // the spellings of UDUNITS' time units the CF conventions name (a unit's singular, plural and abbreviations)
+    static const std::map<std::string, double> seconds = {
+        {"seconds", 1.0}, {"second", 1.0}, {"secs", 1.0},     {"sec", 1.0},      {"s", 1.0},       {"minutes", 60.0},
+        {"minute", 60.0}, {"mins", 60.0},  {"min", 60.0},     {"hours", 3600.0}, {"hour", 3600.0}, {"hrs", 3600.0},
+        {"hr", 3600.0},   {"h", 3600.0},   {"days", 86400.0}, {"day", 86400.0},  {"d", 86400.0}};
     CfTimeUnits u;
-    if (unit == "seconds" || unit == "second" || unit == "secs" || unit == "sec" || unit == "s")
-        u.secondsPerUnit = 1.0;
-    else if (unit == "minutes" || unit == "minute" || unit == "mins" || unit == "min")
-        u.secondsPerUnit = 60.0;
-    else if (unit == "hours" || unit == "hour" || unit == "hrs" || unit == "hr" || unit == "h")
-        u.secondsPerUnit = 3600.0;
-    else if (unit == "days" || unit == "day" || unit == "d")
-        u.secondsPerUnit = 86400.0;
+    if (const auto it = seconds.find(unit); it != seconds.end())
+        u.secondsPerUnit = it->second;
     else
         throw Error("time units '" + units + "': unit '" + unit +
                     "' not supported; expected seconds, minutes, hours or days since <date>");
@@ -421,17 +417,11 @@ double parseDuration(const std::string &text, double timeUnitSeconds, bool unitK
     std::string unit;
     if (!io_detail::splitQuantity(text, value, unit))
         throw Error(expected);
-    double seconds = 0.0;
-    if (unit == "s")
-        seconds = 1.0;
-    else if (unit == "min")
-        seconds = 60.0;
-    else if (unit == "h")
-        seconds = 3600.0;
-    else if (unit == "d")
-        seconds = 86400.0;
-    else if (!unit.empty())
+    static const std::map<std::string, double> units = {{"s", 1.0}, {"min", 60.0}, {"h", 3600.0}, {"d", 86400.0}};
+    const auto it = units.find(unit);
+    if (it == units.end() && !unit.empty())
         throw Error(expected);
+    const double seconds = it == units.end() ? 0.0 : it->second;
     if (!std::isfinite(value) || !(value > 0.0))
         throw Error(expected);
     if (unit.empty())

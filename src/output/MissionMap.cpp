@@ -329,6 +329,144 @@ void addReachContours(MapRenderer &map, const MissionResult &r)
     map.addNote("probability of reach over " + std::to_string(p.members) + (p.members == 1 ? " member" : " members") +
                 ": the goal by +" + duration(r, last - p.departure, true) + " with p = " + fmt(p.goalProbability) + q);
 }
+
+/// What the glider flies as stints: the stint track, and the surfacings as markers.
+void addStints(MapRenderer &map, const MissionResult &r)
+{
+    if (!r.plan.solved || !r.plan.stints)
+        return;
+    const StintOutcome &st = *r.plan.stints;
+    char label[200];
+    std::snprintf(label, sizeof label, "%s: %zu stints, %s left%s", st.converted ? "as stints" : r.plan.planner.c_str(),
+                  st.plan.bearings.size(), length(r, st.plan.remainingDistance).c_str(),
+                  st.plan.grounded ? " (on land)" : "");
+    map.addPath(MapRenderer::stintTrackStyle(label, st.plan.track, st.converted ? 2 : 0));
+    MapPath fixes = MapRenderer::rawPathStyle("surfacings", st.plan.surfacings);
+    fixes.width = 0.6;
+    map.addPath(fixes);
+}
+
+/// The optimal control's extremal through the goal, dashed, where one was found.
+void addOptimum(MapRenderer &map, const MissionResult &r)
+{
+    if (!r.optimum || !r.optimum->found)
+        return;
+    MapPath opt;
+    opt.label = "optimal control: T=" + fmt(r.optimum->travelTime);
+    opt.waypoints = r.optimum->path;
+    opt.colour = {0.10, 0.35, 0.95, 1.0};
+    opt.width = 1.6;
+    opt.dashed = true;
+    opt.waypointMarkers = false;
+    map.addPath(opt);
+}
+
+/// The reachable-set contours ([ThompsonICRA] Fig. 4), light to dark with time, one legend entry.
+void addIsochrones(MapRenderer &map, const MissionResult &r)
+{
+    if (!r.isochrones || r.isochrones->contours.empty())
+        return;
+    const auto &cs = r.isochrones->contours;
+    bool labelled = false;
+    for (std::size_t k = 0; k < cs.size(); ++k)
+    {
+        const double f = cs.size() > 1 ? static_cast<double>(k) / (cs.size() - 1) : 1.0;
+        for (const auto &line : cs[k].lines)
+        {
+            MapPath iso;
+            if (!labelled)
+            {
+                iso.label = "reachable by +" + duration(r, cs.front().time - r.plan.departure, true) + " ... +" +
+                            duration(r, cs.back().time - r.plan.departure, true);
+                labelled = true;
+            }
+            for (const Point2 &p : line)
+                iso.waypoints.push_back({p.x, p.y, cs[k].time});
+            iso.colour = {0.55 - 0.35 * f, 0.25, 0.75 - 0.25 * f, 0.85};
+            iso.width = 1.2;
+            iso.waypointMarkers = false;
+            map.addPath(iso);
+        }
+    }
+}
+
+/// The mission's own run flown in the truth, one dashed track per strategy, surfacings marked.
+void addFlownTracks(MapRenderer &map, const MissionResult &r)
+{
+    if (!r.execution || !r.execution->runs.front().planned)
+        return;
+    const ExecutionResult &e = *r.execution;
+    const Rgba colours[4] = {
+        {0.05, 0.35, 0.85, 0.9}, {0.10, 0.60, 0.20, 0.9}, {0.95, 0.50, 0.05, 0.9}, {0.55, 0.20, 0.70, 0.9}};
+    for (std::size_t k = 0; k < e.strategies.size(); ++k)
+    {
+        const FlownTrack &f = e.runs.front().flown[k];
+        MapPath flown;
+        std::string name = controlStrategyName(e.strategies[k]);
+        if (name.rfind("current_", 0) == 0)
+            name = name.substr(8);
+        flown.label = name + ": " +
+                      (f.reached ? duration(r, f.arrivalTime - r.plan.departure, true)
+                                 : std::string(f.grounded ? "grounded" : "not there")) +
+                      ", off " + length(r, f.finalDistance);
+        flown.waypoints = f.fixes;
+        flown.colour = colours[k % 4];
+        flown.width = 1.4;
+        flown.dashed = true;
+        flown.waypointMarkers = false;
+        map.addPath(flown);
+    }
+    map.addNote("dashed: the plan flown in the truth (" + e.truth + "), surfacing every " +
+                duration(r, e.surfacingInterval) + "; arrival, distance off the goal at the planned arrival");
+}
+
+/// A mission's via points: their radius, name and arrival (a date where the field has dates).
+void addViaStations(MapRenderer &map, const MissionResult &r, const MissionProblem &problem)
+{
+    const MissionSpec &m = r.spec;
+    for (std::size_t i = 0; i < problem.getViaPoints().size(); ++i)
+    {
+        const ViaPointSpec &v = m.waypoints[i];
+        std::string label = v.name;
+        for (const PlannedLeg &l : r.legs)
+            if (l.toVia == static_cast<int>(i) && l.plan.solved)
+            {
+                const std::string iso = problem.isoTime(l.arrival());
+                label += " " + (iso.empty() ? "t=" + fmt(l.arrival()) : iso.substr(0, 16) + "Z") +
+                         (l.stay > 0.0 ? " (stay " + duration(r, l.stay) + ")" : "");
+            }
+        map.addStation(problem.getViaPoints()[i], v.radius, label);
+    }
+}
+
+/// The notes under the map: the departure, the travel time and path length (or why there is no path), and the time
+/// the field is shown at (@p tMap).
+void addNotes(MapRenderer &map, const MissionResult &r, const MissionProblem &problem, double tMap)
+{
+    const MissionSpec &m = r.spec;
+    // the departure as a date when the field has dates (also without a path)
+    const std::string iso = problem.isoTime(r.plan.departure);
+    map.addNote("departure " + (iso.empty() ? fmt(r.plan.departure) : iso));
+    if (r.plan.solved)
+    {
+        map.addNote("travel time " + duration(r, r.plan.travelTime) + ", path length " + length(r, r.plan.pathLength));
+        if (const auto &e = r.plan.ensemble; e && e->arrivalProbability < 1.0) // the route, not the reach map
+        {
+            const std::size_t n = e->memberTravelTimes.size();
+            const auto arriving = static_cast<std::size_t>(std::llround(e->arrivalProbability * double(n)));
+            map.addNote("the route arrives in " + std::to_string(arriving) + " of " + std::to_string(n) +
+                        " members (p = " + fmt(e->arrivalProbability) + "): none arrives in every member");
+        }
+        map.addNote("straight line: " + (std::isfinite(r.plan.straightLineTime)
+                                             ? "T=" + duration(r, r.plan.straightLineTime)
+                                             : std::string("impassable")));
+    }
+    else
+        map.addNote("no path: " + r.plan.reason);
+    map.addNote(std::isnan(m.outputs.mapTime)
+                    ? "field shown at departure"
+                    : "field shown at " + (problem.isoTime(tMap).empty() ? "t = " + fmt(tMap) : problem.isoTime(tMap)));
+}
 } // namespace
 
 MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
@@ -353,123 +491,16 @@ MapRenderer missionMap(const MissionResult &r, const MissionProblem &problem)
         addHeadingRoute(map, r);
     else if (r.plan.solved && !(r.plan.stints && !r.plan.stints->converted))
         addPaths(map, r);
-    if (r.plan.solved && r.plan.stints)
-    {
-        // what the glider flies: the stint track, and the surfacings as markers
-        const StintOutcome &st = *r.plan.stints;
-        char label[200];
-        std::snprintf(label, sizeof label, "%s: %zu stints, %s left%s",
-                      st.converted ? "as stints" : r.plan.planner.c_str(), st.plan.bearings.size(),
-                      length(r, st.plan.remainingDistance).c_str(), st.plan.grounded ? " (on land)" : "");
-        map.addPath(MapRenderer::stintTrackStyle(label, st.plan.track, st.converted ? 2 : 0));
-        MapPath fixes = MapRenderer::rawPathStyle("surfacings", st.plan.surfacings);
-        fixes.width = 0.6;
-        map.addPath(fixes);
-    }
-    if (r.optimum && r.optimum->found)
-    {
-        MapPath opt;
-        opt.label = "optimal control: T=" + fmt(r.optimum->travelTime);
-        opt.waypoints = r.optimum->path;
-        opt.colour = {0.10, 0.35, 0.95, 1.0};
-        opt.width = 1.6;
-        opt.dashed = true;
-        opt.waypointMarkers = false;
-        map.addPath(opt);
-    }
-    if (r.isochrones && !r.isochrones->contours.empty())
-    {
-        // reachable-set contours ([ThompsonICRA] Fig. 4), light to dark with time, one legend entry
-        const auto &cs = r.isochrones->contours;
-        bool labelled = false;
-        for (std::size_t k = 0; k < cs.size(); ++k)
-        {
-            const double f = cs.size() > 1 ? static_cast<double>(k) / (cs.size() - 1) : 1.0;
-            for (const auto &line : cs[k].lines)
-            {
-                MapPath iso;
-                if (!labelled)
-                {
-                    iso.label = "reachable by +" + duration(r, cs.front().time - r.plan.departure, true) + " ... +" +
-                                duration(r, cs.back().time - r.plan.departure, true);
-                    labelled = true;
-                }
-                for (const Point2 &p : line)
-                    iso.waypoints.push_back({p.x, p.y, cs[k].time});
-                iso.colour = {0.55 - 0.35 * f, 0.25, 0.75 - 0.25 * f, 0.85};
-                iso.width = 1.2;
-                iso.waypointMarkers = false;
-                map.addPath(iso);
-            }
-        }
-    }
+    addStints(map, r);
+    addOptimum(map, r);
+    addIsochrones(map, r);
     addReachContours(map, r);
-    if (r.execution && r.execution->runs.front().planned)
-    {
-        // the mission's own run flown in the truth, one track per strategy, surfacings marked
-        const ExecutionResult &e = *r.execution;
-        const Rgba colours[4] = {
-            {0.05, 0.35, 0.85, 0.9}, {0.10, 0.60, 0.20, 0.9}, {0.95, 0.50, 0.05, 0.9}, {0.55, 0.20, 0.70, 0.9}};
-        for (std::size_t k = 0; k < e.strategies.size(); ++k)
-        {
-            const FlownTrack &f = e.runs.front().flown[k];
-            MapPath flown;
-            std::string name = controlStrategyName(e.strategies[k]);
-            if (name.rfind("current_", 0) == 0)
-                name = name.substr(8);
-            flown.label = name + ": " +
-                          (f.reached ? duration(r, f.arrivalTime - r.plan.departure, true)
-                                     : std::string(f.grounded ? "grounded" : "not there")) +
-                          ", off " + length(r, f.finalDistance);
-            flown.waypoints = f.fixes;
-            flown.colour = colours[k % 4];
-            flown.width = 1.4;
-            flown.dashed = true;
-            flown.waypointMarkers = false;
-            map.addPath(flown);
-        }
-        map.addNote("dashed: the plan flown in the truth (" + e.truth + "), surfacing every " +
-                    duration(r, e.surfacingInterval) + "; arrival, distance off the goal at the planned arrival");
-    }
+    addFlownTracks(map, r);
     addGliderHistory(map, problem);
     const Point2 s = problem.getStart(), g = problem.getGoal();
     map.setStartGoal(s.x, s.y, g.x, g.y);
-    // a mission's via points: their radius, name and arrival (a date where the field has dates)
-    for (std::size_t i = 0; i < problem.getViaPoints().size(); ++i)
-    {
-        const ViaPointSpec &v = m.waypoints[i];
-        std::string label = v.name;
-        for (const PlannedLeg &l : r.legs)
-            if (l.toVia == static_cast<int>(i) && l.plan.solved)
-            {
-                const std::string iso = problem.isoTime(l.arrival());
-                label += " " + (iso.empty() ? "t=" + fmt(l.arrival()) : iso.substr(0, 16) + "Z") +
-                         (l.stay > 0.0 ? " (stay " + duration(r, l.stay) + ")" : "");
-            }
-        map.addStation(problem.getViaPoints()[i], v.radius, label);
-    }
-    // the departure as a date when the field has dates (also without a path)
-    const std::string iso = problem.isoTime(r.plan.departure);
-    map.addNote("departure " + (iso.empty() ? fmt(r.plan.departure) : iso));
-    if (r.plan.solved)
-    {
-        map.addNote("travel time " + duration(r, r.plan.travelTime) + ", path length " + length(r, r.plan.pathLength));
-        if (const auto &e = r.plan.ensemble; e && e->arrivalProbability < 1.0) // the route, not the reach map
-        {
-            const std::size_t n = e->memberTravelTimes.size();
-            const auto arriving = static_cast<std::size_t>(std::llround(e->arrivalProbability * double(n)));
-            map.addNote("the route arrives in " + std::to_string(arriving) + " of " + std::to_string(n) +
-                        " members (p = " + fmt(e->arrivalProbability) + "): none arrives in every member");
-        }
-        map.addNote("straight line: " + (std::isfinite(r.plan.straightLineTime)
-                                             ? "T=" + duration(r, r.plan.straightLineTime)
-                                             : std::string("impassable")));
-    }
-    else
-        map.addNote("no path: " + r.plan.reason);
-    map.addNote(std::isnan(m.outputs.mapTime)
-                    ? "field shown at departure"
-                    : "field shown at " + (problem.isoTime(tMap).empty() ? "t = " + fmt(tMap) : problem.isoTime(tMap)));
+    addViaStations(map, r, problem);
+    addNotes(map, r, problem, tMap);
     return map;
 }
 } // namespace ompl_glider

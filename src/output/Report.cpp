@@ -372,7 +372,10 @@ void printReachability(std::ostream &out, const MissionResult &r)
     out << "Goal by horizon:    p = " << reportNumber(p.goalProbability) << q << "\n";
 }
 
-void printReport(std::ostream &out, const MissionResult &r, const MissionProblem *problem)
+namespace
+{
+/// The report's head: the mission, its current and planner, the departure (and its search), the status.
+void printMissionHeader(std::ostream &out, const MissionResult &r)
 {
     const PlannedPath &p = r.plan;
     const MissionSpec &m = r.spec;
@@ -404,6 +407,91 @@ void printReport(std::ostream &out, const MissionResult &r, const MissionProblem
 #endif
     out << "Status:             " << statusText(p.status) << (p.solved ? "" : "\nReason:             " + p.reason)
         << "\n";
+}
+
+/// Where the route comes closest to land, how close, and the keep-off distance beside it.
+void printClosestLand(std::ostream &out, const MissionResult &r)
+{
+    const MissionSpec &m = r.spec;
+    if (!std::isfinite(r.closestLand.distance))
+        return;
+    const double mpu = m.metresPerUnit();
+    const std::string d = m.physicalUnits().length ? format("%.3f km", r.closestLand.distance * mpu / 1000.0)
+                                                   : reportNumber(r.closestLand.distance);
+    out << "Closest to land:    " << d;
+    if (r.closestLandLonLat)
+        out << format(" at %.5f, %.5f", r.closestLandLonLat->lon, r.closestLandLonLat->lat);
+    else
+        out << " at (" << reportNumber(r.closestLand.where.x) << ", " << reportNumber(r.closestLand.where.y) << ")";
+    if (const double keepOff = m.safety.keepOff; keepOff > 0.0)
+        out << " (keep-off "
+            << (m.physicalUnits().length ? format("%.3f km", keepOff * mpu / 1000.0) : reportNumber(keepOff)) << ")";
+    out << "\n";
+}
+
+/// A route's travel time, arrival and hold, length, closeness to land, straight line and waypoints.
+void printSolvedRoute(std::ostream &out, const MissionResult &r)
+{
+    const PlannedPath &p = r.plan;
+    const MissionSpec &m = r.spec;
+    if (m.physicalUnits().time) // days and hours, the seconds beside them
+        out << "Travel time:        " << text::durationText(p.travelTime * m.timeUnitSeconds)
+            << format(" (raw %.4f, smoothed %.4f)\n", p.rawTravelTime, p.smoothedTravelTime);
+    else
+        out << format("Travel time:        %.4f (raw %.4f, smoothed %.4f)\n", p.travelTime, p.rawTravelTime,
+                      p.smoothedTravelTime);
+    if (m.goalWindow.set || p.holdTime > 0.0)
+    {
+        const std::string at = r.waypoints.empty() ? "" : r.waypoints.back().iso;
+        out << "Arrival at goal:    " << reportNumber(p.path.back().t) << (at.empty() ? "" : " (" + at + ")");
+        if (m.goalWindow.set)
+            out << " in the window [" << reportNumber(m.goalWindow.begin) << ", " << reportNumber(m.goalWindow.end)
+                << "]";
+        out << "\n";
+        out << "Holding:            "
+            << (m.physicalUnits().time ? text::durationText(p.holdTime * m.timeUnitSeconds) : reportNumber(p.holdTime))
+            << (p.arrivalTiming.empty() ? std::string() : " (" + p.arrivalTiming + ")") << "\n";
+    }
+    if (r.diveProfiles)
+        out << "With dive profiles: "
+            << (std::isfinite(r.diveTravelTime) ? reportNumber(r.diveTravelTime) : "impassable") << "\n";
+    out << "Path length:        " << lengthText(m, p.pathLength) << " (straight " << lengthText(m, p.straightLineLength)
+        << ")\n";
+    printClosestLand(out, r);
+    out << "Straight line:      "
+        << (!std::isfinite(p.straightLineTime) ? std::string("impassable")
+            : m.physicalUnits().time           ? text::durationText(p.straightLineTime * m.timeUnitSeconds)
+                                               : format("%.4f", p.straightLineTime))
+        << "\n";
+    out << format("Waypoints:          raw %zu, smoothed %zu%s, refined %zu%s\n", p.raw.size(), p.smoothed.size(),
+                  m.planner.smoothing ? "" : " (off)", p.path.size(), m.planner.refinement ? "" : " (off)");
+}
+
+/// The constant-bearing stints ([IsernObstacles]) the glider flies, and their bearings.
+void printStints(std::ostream &out, const MissionResult &r, const MissionProblem *problem)
+{
+    const StintOutcome &st = *r.plan.stints;
+    out << format("Stints:             %zu of %g (%s), remaining distance %.4f%s%s\n", st.plan.bearings.size(),
+                  st.settings.duration,
+                  st.converted ? "the path converted" : stintObjectiveName(st.settings.objective).c_str(),
+                  st.plan.remainingDistance, st.plan.reached ? ", goal reached" : "",
+                  st.plan.grounded ? ", stopped on land" : "");
+    if (st.converted)
+        out << format("As stints:          arrival after %.4f against the path's %.4f (%+.2f%%)\n", st.stintTravelTime,
+                      st.pathTravelTime, 100.0 * st.loss);
+    const std::string north = northOf(r, problem);
+    std::string b;
+    for (double x : north == " true" ? trueStintBearings(r, problem) : st.plan.bearings)
+        b += (b.empty() ? "" : " ") + format("%.1f", x);
+    out << format("%-20s", ("Bearings (deg" + north + "):").c_str()) << b << "\n";
+}
+} // namespace
+
+void printReport(std::ostream &out, const MissionResult &r, const MissionProblem *problem)
+{
+    const PlannedPath &p = r.plan;
+    const MissionSpec &m = r.spec;
+    printMissionHeader(out, r);
     printEnsemblePlan(out, p, m);
     printRouteModel(out, r);
     printGlobalCheck(out, p, m);
@@ -417,56 +505,7 @@ void printReport(std::ostream &out, const MissionResult &r, const MissionProblem
     if (!r.coastlineNote.empty())
         out << "Coastline:          " << r.coastlineNote << "\n";
     if (p.solved)
-    {
-        if (m.physicalUnits().time) // days and hours, the seconds beside them
-            out << "Travel time:        " << text::durationText(p.travelTime * m.timeUnitSeconds)
-                << format(" (raw %.4f, smoothed %.4f)\n", p.rawTravelTime, p.smoothedTravelTime);
-        else
-            out << format("Travel time:        %.4f (raw %.4f, smoothed %.4f)\n", p.travelTime, p.rawTravelTime,
-                          p.smoothedTravelTime);
-        if (m.goalWindow.set || p.holdTime > 0.0)
-        {
-            const std::string at = r.waypoints.empty() ? "" : r.waypoints.back().iso;
-            out << "Arrival at goal:    " << reportNumber(p.path.back().t) << (at.empty() ? "" : " (" + at + ")");
-            if (m.goalWindow.set)
-                out << " in the window [" << reportNumber(m.goalWindow.begin) << ", " << reportNumber(m.goalWindow.end)
-                    << "]";
-            out << "\n";
-            out << "Holding:            "
-                << (m.physicalUnits().time ? text::durationText(p.holdTime * m.timeUnitSeconds)
-                                           : reportNumber(p.holdTime))
-                << (p.arrivalTiming.empty() ? std::string() : " (" + p.arrivalTiming + ")") << "\n";
-        }
-        if (r.diveProfiles)
-            out << "With dive profiles: "
-                << (std::isfinite(r.diveTravelTime) ? reportNumber(r.diveTravelTime) : "impassable") << "\n";
-        out << "Path length:        " << lengthText(m, p.pathLength) << " (straight "
-            << lengthText(m, p.straightLineLength) << ")\n";
-        if (std::isfinite(r.closestLand.distance))
-        {
-            const double mpu = m.metresPerUnit();
-            const std::string d = m.physicalUnits().length ? format("%.3f km", r.closestLand.distance * mpu / 1000.0)
-                                                           : reportNumber(r.closestLand.distance);
-            out << "Closest to land:    " << d;
-            if (r.closestLandLonLat)
-                out << format(" at %.5f, %.5f", r.closestLandLonLat->lon, r.closestLandLonLat->lat);
-            else
-                out << " at (" << reportNumber(r.closestLand.where.x) << ", " << reportNumber(r.closestLand.where.y)
-                    << ")";
-            if (const double keepOff = m.safety.keepOff; keepOff > 0.0)
-                out << " (keep-off "
-                    << (m.physicalUnits().length ? format("%.3f km", keepOff * mpu / 1000.0) : reportNumber(keepOff))
-                    << ")";
-            out << "\n";
-        }
-        out << "Straight line:      "
-            << (!std::isfinite(p.straightLineTime) ? std::string("impassable")
-                : m.physicalUnits().time           ? text::durationText(p.straightLineTime * m.timeUnitSeconds)
-                                                   : format("%.4f", p.straightLineTime))
-            << "\n";
-        out << format("Waypoints:          raw %zu, smoothed %zu%s, refined %zu%s\n", p.raw.size(), p.smoothed.size(),
-                      m.planner.smoothing ? "" : " (off)", p.path.size(), m.planner.refinement ? "" : " (off)");
-    }
+        printSolvedRoute(out, r);
     out << format("CFC (cost function calls): %llu (+%llu smoothing and refinement); CMC (current model calls): %llu\n",
                   static_cast<unsigned long long>(p.searchCostFunctionCalls),
                   static_cast<unsigned long long>(p.postprocessCostFunctionCalls),
@@ -482,23 +521,7 @@ void printReport(std::ostream &out, const MissionResult &r, const MissionProblem
             out << "Optimal control:    no extremal through the goal found\n";
     }
     if (p.solved && p.stints)
-    {
-        // constant-bearing stints ([IsernObstacles]): what the glider flies
-        const StintOutcome &st = *p.stints;
-        out << format("Stints:             %zu of %g (%s), remaining distance %.4f%s%s\n", st.plan.bearings.size(),
-                      st.settings.duration,
-                      st.converted ? "the path converted" : stintObjectiveName(st.settings.objective).c_str(),
-                      st.plan.remainingDistance, st.plan.reached ? ", goal reached" : "",
-                      st.plan.grounded ? ", stopped on land" : "");
-        if (st.converted)
-            out << format("As stints:          arrival after %.4f against the path's %.4f (%+.2f%%)\n",
-                          st.stintTravelTime, st.pathTravelTime, 100.0 * st.loss);
-        const std::string north = northOf(r, problem);
-        std::string b;
-        for (double x : north == " true" ? trueStintBearings(r, problem) : st.plan.bearings)
-            b += (b.empty() ? "" : " ") + format("%.1f", x);
-        out << format("%-20s", ("Bearings (deg" + north + "):").c_str()) << b << "\n";
-    }
+        printStints(out, r, problem);
     if (r.execution)
     {
         const ExecutionResult &e = *r.execution;

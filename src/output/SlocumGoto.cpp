@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "../io/TextUtil.h"
@@ -123,24 +124,13 @@ GotoList parseGotoList(const std::string &text, const std::string &source)
             sawBehavior = true;
             continue;
         }
-        if (first == "<start:b_arg>")
+        static const std::map<std::string, Block> markers = {{"<start:b_arg>", Block::Args},
+                                                             {"<end:b_arg>", Block::None},
+                                                             {"<start:waypoints>", Block::Waypoints},
+                                                             {"<end:waypoints>", Block::Done}};
+        if (const auto marker = markers.find(first); marker != markers.end())
         {
-            block = Block::Args;
-            continue;
-        }
-        if (first == "<end:b_arg>")
-        {
-            block = Block::None;
-            continue;
-        }
-        if (first == "<start:waypoints>")
-        {
-            block = Block::Waypoints;
-            continue;
-        }
-        if (first == "<end:waypoints>")
-        {
-            block = Block::Done;
+            block = marker->second;
             continue;
         }
         if (block == Block::Args)
@@ -151,16 +141,15 @@ GotoList parseGotoList(const std::string &text, const std::string &source)
                 fail("expected 'b_arg: name(unit) value'");
             const long value = std::lround(number);
             const std::string key = name.substr(0, name.find('('));
-            if (key == "num_waypoints")
+            // the whole-number arguments the list keeps (the others: num_waypoints, list_when_wpt_dist)
+            static const std::map<std::string, int GotoList::*> whole = {{"num_legs_to_run", &GotoList::numLegsToRun},
+                                                                         {"start_when", &GotoList::startWhen},
+                                                                         {"list_stop_when", &GotoList::listStopWhen},
+                                                                         {"initial_wpt", &GotoList::initialWpt}};
+            if (const auto it = whole.find(key); it != whole.end())
+                list.*(it->second) = static_cast<int>(value);
+            else if (key == "num_waypoints")
                 declared = value;
-            else if (key == "num_legs_to_run")
-                list.numLegsToRun = static_cast<int>(value);
-            else if (key == "start_when")
-                list.startWhen = static_cast<int>(value);
-            else if (key == "list_stop_when")
-                list.listStopWhen = static_cast<int>(value);
-            else if (key == "initial_wpt")
-                list.initialWpt = static_cast<int>(value);
             else if (key == "list_when_wpt_dist")
                 list.listWhenWptDist = number;
         }

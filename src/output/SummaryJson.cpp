@@ -431,28 +431,13 @@ json ensembleJson(const PlannedPath &p, const MissionProblem &problem)
             {"spread", {{"min", jnum(spread.min)}, {"mean", jnum(spread.mean)}, {"max", jnum(spread.max)}}},
             {"candidates", cands}};
 }
-} // namespace
 
-std::string summaryJson(const MissionResult &r, const MissionProblem &problem, const std::vector<std::string> &files)
+/// The route's times: the departure and arrival, the holds and the goal window, the travel times, the path's length
+/// and the straight line's.
+void timingJson(const MissionResult &r, const MissionProblem &problem, json &j)
 {
     const PlannedPath &p = r.plan;
     const MissionSpec &m = r.spec;
-    json j;
-    j["schema"] = kSummarySchema;
-    j["mission"] = m.name;
-    j["source"] = m.file;
-    j["current"] = m.current.type;
-    j["current_ensemble"] = summary_detail::currentEnsembleJson(m.current);
-    summary_detail::forecastJson(problem, j);
-    j["forecast_notes"] = json::array();
-    for (const std::string &note : r.forecastNotes)
-        j["forecast_notes"].push_back(jtext(note));
-    outcomeJson(p, j);
-    j["planner"] = plannerJson(m, p);
-    j["units"] = {{"length_m", m.lengthUnitMetres}, {"time_s", m.timeUnitSeconds}};
-    j["speed"] = p.speed;
-    j["start"] = position(problem, problem.getStart());
-    j["goal"] = position(problem, problem.getGoal());
     j["departure"] = {{"time", p.departure},
                       {"iso", r.waypoints.empty() ? jtext(r.departureIso) : jtext(r.waypoints.front().iso)}};
     j["arrival"] = {{"time", r.waypoints.empty() ? json(nullptr) : jnum(r.waypoints.back().time)},
@@ -479,6 +464,80 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["straight_line"] = {{"travel_time", jnum(p.straightLineTime)},
                           {"passable", std::isfinite(p.straightLineTime)},
                           {"length", p.straightLineLength}};
+}
+
+/// Honest times: the accurate Dormand-Prince re-flight of the reported route (null where it was not re-flown).
+json reflightJson(const PlannedPath &p)
+{
+    if (!p.reflown)
+        return nullptr;
+    return {{"method", "Dormand-Prince 5(4), rtol 1e-10"},
+            {"travel_time", jnum(p.reflownTravelTime)},
+            {"relative_difference", p.reflownTravelTime > 0.0
+                                        ? jnum((p.travelTime - p.reflownTravelTime) / p.reflownTravelTime)
+                                        : json(nullptr)},
+            {"end_distance_to_goal", jnum(p.reflownEndDistance)},
+            {"planner_travel_time", jnum(p.plannerTravelTime)},
+            {"note", jtext(p.reflightNote)},
+            {"fallback", p.reflightFallback == ReflightFallback::EarlierStage ? json("earlier_stage")
+                         : p.reflightFallback == ReflightFallback::Reaimed    ? json("reaimed")
+                                                                              : json(nullptr)}};
+}
+
+/// The constant-bearing stints ([IsernObstacles]): how they were planned and what they reach.
+json stintsJson(const StintOutcome &s)
+{
+    return {{"converted", s.converted},
+            {"duration", s.settings.duration},
+            {"mission_duration", s.settings.missionDuration},
+            {"objective", stintObjectiveName(s.settings.objective)},
+            {"radius", s.settings.radius},
+            {"count", s.plan.bearings.size()},
+            {"reached", s.plan.reached},
+            {"arrival_time", jnum(s.plan.arrivalTime)},
+            {"grounded", s.plan.grounded},
+            {"grounded_why", jtext(s.plan.groundedWhy)},
+            {"path_travel_time", jnum(s.pathTravelTime)},
+            {"stint_travel_time", jnum(s.stintTravelTime)},
+            {"loss", jnum(s.loss)}};
+}
+
+/// The speed sweep: a row per speed, its travel time and path length beside the straight line's.
+json speedSweepJson(const std::vector<SpeedSweepRow> &sweep)
+{
+    json rows = json::array();
+    for (const SpeedSweepRow &w : sweep)
+        rows.push_back({{"speed", w.speed},
+                        {"solved", w.solved},
+                        {"travel_time", jnum(w.travelTime)},
+                        {"path_length", w.solved ? json(w.pathLength) : json(nullptr)},
+                        {"straight_line_travel_time", jnum(w.straightLineTime)},
+                        {"straight_line_length", w.straightLineLength}});
+    return rows;
+}
+} // namespace
+
+std::string summaryJson(const MissionResult &r, const MissionProblem &problem, const std::vector<std::string> &files)
+{
+    const PlannedPath &p = r.plan;
+    const MissionSpec &m = r.spec;
+    json j;
+    j["schema"] = kSummarySchema;
+    j["mission"] = m.name;
+    j["source"] = m.file;
+    j["current"] = m.current.type;
+    j["current_ensemble"] = summary_detail::currentEnsembleJson(m.current);
+    summary_detail::forecastJson(problem, j);
+    j["forecast_notes"] = json::array();
+    for (const std::string &note : r.forecastNotes)
+        j["forecast_notes"].push_back(jtext(note));
+    outcomeJson(p, j);
+    j["planner"] = plannerJson(m, p);
+    j["units"] = {{"length_m", m.lengthUnitMetres}, {"time_s", m.timeUnitSeconds}};
+    j["speed"] = p.speed;
+    j["start"] = position(problem, problem.getStart());
+    j["goal"] = position(problem, problem.getGoal());
+    timingJson(r, problem, j);
     safetyJson(r, j);
     j["waypoints"] = {{"raw", p.raw.size()}, {"smoothed", p.smoothed.size()}, {"final", p.path.size()}};
     j["cost_function_calls"] = {{"search", p.searchCostFunctionCalls},
@@ -495,41 +554,13 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     // the global check of the route class: extremals shot from the start beside the planner's route
     j["global_check"] = globalCheckJson(p);
     // honest times: the accurate Dormand-Prince re-flight of the reported route
-    if (p.reflown)
-        j["reflight"] = {{"method", "Dormand-Prince 5(4), rtol 1e-10"},
-                         {"travel_time", jnum(p.reflownTravelTime)},
-                         {"relative_difference", p.reflownTravelTime > 0.0
-                                                     ? jnum((p.travelTime - p.reflownTravelTime) / p.reflownTravelTime)
-                                                     : json(nullptr)},
-                         {"end_distance_to_goal", jnum(p.reflownEndDistance)},
-                         {"planner_travel_time", jnum(p.plannerTravelTime)},
-                         {"note", jtext(p.reflightNote)},
-                         {"fallback", p.reflightFallback == ReflightFallback::EarlierStage ? json("earlier_stage")
-                                      : p.reflightFallback == ReflightFallback::Reaimed    ? json("reaimed")
-                                                                                           : json(nullptr)}};
-    else
-        j["reflight"] = nullptr;
+    j["reflight"] = reflightJson(p);
     // constant-bearing stints ([IsernObstacles]): null without a stints section
     j["remaining_distance"] = p.stints ? jnum(p.stints->plan.remainingDistance) : json(nullptr);
     j["bearings"] = stintBearingsJson(r, problem);
     j["bearing_reference"] = "true north"; // every bearing written (headings, bearings): clockwise from true north
     if (p.stints)
-    {
-        const StintOutcome &s = *p.stints;
-        j["stints"] = {{"converted", s.converted},
-                       {"duration", s.settings.duration},
-                       {"mission_duration", s.settings.missionDuration},
-                       {"objective", stintObjectiveName(s.settings.objective)},
-                       {"radius", s.settings.radius},
-                       {"count", s.plan.bearings.size()},
-                       {"reached", s.plan.reached},
-                       {"arrival_time", jnum(s.plan.arrivalTime)},
-                       {"grounded", s.plan.grounded},
-                       {"grounded_why", jtext(s.plan.groundedWhy)},
-                       {"path_travel_time", jnum(s.pathTravelTime)},
-                       {"stint_travel_time", jnum(s.stintTravelTime)},
-                       {"loss", jnum(s.loss)}};
-    }
+        j["stints"] = stintsJson(*p.stints);
     if (r.optimum)
         j["optimal_control"] = {{"found", r.optimum->found},
                                 {"travel_time", jnum(r.optimum->travelTime)},
@@ -539,17 +570,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     if (r.departureSearch)
         j["departure_search"] = departureSearchJson(m, *r.departureSearch);
     if (!r.speedSweep.empty())
-    {
-        json rows = json::array();
-        for (const SpeedSweepRow &w : r.speedSweep)
-            rows.push_back({{"speed", w.speed},
-                            {"solved", w.solved},
-                            {"travel_time", jnum(w.travelTime)},
-                            {"path_length", w.solved ? json(w.pathLength) : json(nullptr)},
-                            {"straight_line_travel_time", jnum(w.straightLineTime)},
-                            {"straight_line_length", w.straightLineLength}});
-        j["speed_sweep"] = rows;
-    }
+        j["speed_sweep"] = speedSweepJson(r.speedSweep);
     if (p.ensemble)
         j["ensemble"] = ensembleJson(p, problem);
     afterPlanJson(r, problem, j);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 
 #include <ompl/base/PlannerData.h>
@@ -113,20 +114,11 @@ ZAStarTVE::ZAStarTVE(const ompl::base::SpaceInformationPtr &si, std::shared_ptr<
 {
     if (!ctx_ || !ctx_->field || !ctx_->travel)
         throw Error("ZAStarTVE: a GliderContext with field and travel is required");
-    if (configuration == "TVE")
-        options_.heuristic = options_.zermelo = false;
-    else if (configuration == "A*TVE")
-    {
-        options_.heuristic = true;
-        options_.zermelo = false;
-    }
-    else if (configuration == "ZTVE")
-    {
-        options_.heuristic = false;
-        options_.zermelo = true;
-    }
-    else if (configuration == "ZA*TVE")
-        options_.heuristic = options_.zermelo = true;
+    // each configuration's (heuristic, Zermelo-guided) switches
+    static const std::map<std::string, std::pair<bool, bool>> configurations = {
+        {"TVE", {false, false}}, {"A*TVE", {true, false}}, {"ZTVE", {false, true}}, {"ZA*TVE", {true, true}}};
+    if (const auto it = configurations.find(configuration); it != configurations.end())
+        std::tie(options_.heuristic, options_.zermelo) = it->second;
     else
         throw Error("ZAStarTVE: unknown configuration '" + configuration + "' (expected TVE, A*TVE, ZTVE or ZA*TVE)");
 

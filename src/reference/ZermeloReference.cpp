@@ -247,6 +247,114 @@ std::vector<ZermeloState> ZermeloReference::trajectory(double x1, double y1, dou
     return out;
 }
 
+namespace
+{
+/// A bracket of the initial heading: neighbouring headings a and b whose closest approaches miss the goal on either
+/// side (by fa and fb), and the earlier of their approach times.
+struct Bracket
+{
+    double a, fa, b, fb, tEst;
+};
+
+/// The closest approach of @p ev nearest in time to @p t (null: none).
+const ClosestApproach *nearestInTime(const std::vector<ClosestApproach> &ev, double t)
+{
+    const ClosestApproach *best = nullptr;
+    for (const ClosestApproach &f : ev)
+        if (!best || std::abs(f.t - t) < std::abs(best->t - t))
+            best = &f;
+    return best;
+}
+
+/// The brackets of a scan @p shots of headings @p from, @p from + @p dTheta, ... (around the whole @p circle or
+/// not): a closest approach whose signed miss changes sign between neighbouring headings (matched by the nearest
+/// approach time), unless it is far from the goal (@p D the start's distance to it); by approach time.
+std::vector<Bracket> headingBrackets(const std::vector<std::vector<ClosestApproach>> &shots, bool circle, double from,
+                                     double dTheta, double D, double speed)
+{
+    const int shotsCount = static_cast<int>(shots.size());
+    std::vector<Bracket> brackets;
+    for (int j = 0; j + (circle ? 0 : 1) < shotsCount; ++j)
+    {
+        const int k = (j + 1) % shotsCount;
+        for (const ClosestApproach &e : shots[j])
+        {
+            const ClosestApproach *best = nearestInTime(shots[k], e.t);
+            if (!best || (e.miss < 0.0) == (best->miss < 0.0))
+                continue;
+            // A sign flip far from the goal is the swap of two sides of a loop, not a crossing.
+            if (std::abs(e.miss) + std::abs(best->miss) > 0.5 * D + 10.0 * dTheta * speed * e.t)
+                continue;
+            brackets.push_back(
+                {from + j * dTheta, e.miss, from + (j + 1) * dTheta, best->miss, std::min(e.t, best->t)});
+        }
+    }
+    std::sort(brackets.begin(), brackets.end(), [](const Bracket &p, const Bracket &q) { return p.tEst < q.tEst; });
+    return brackets;
+}
+
+/// The shooting problem: from (x1, y1) at t0 to the goal (x2, y2).
+struct ShootingProblem
+{
+    double x1, y1, x2, y2, t0;
+};
+
+/// Refines the bracket @p br by the Illinois method on the initial heading (extremals shot to @p horizon), and keeps
+/// in @p sol an extremal through the goal, the fastest found (@p D the start's distance to the goal).
+void refineBracket(const ZermeloReference &ref, const ZermeloParams &params, const ShootingProblem &s, Bracket br,
+                   double horizon, double D, ZermeloSolution &sol)
+{
+    double tRef = br.tEst;
+    ClosestApproach last;
+    auto F = [&](double th, double &out) -> bool {
+        const std::vector<ClosestApproach> ev = ref.shoot(s.x1, s.y1, th, s.t0, s.x2, s.y2, horizon);
+        const ClosestApproach *best = nearestInTime(ev, tRef);
+        if (!best)
+            return false;
+        last = *best;
+        out = best->miss;
+        return true;
+    };
+    double a = br.a, fa = 0.0, b = br.b, fb = 0.0;
+    if (!F(a, fa))
+        return;
+    ClosestApproach la = last;
+    if (!F(b, fb))
+        return;
+    ClosestApproach lb = last;
+    if ((fa < 0.0) == (fb < 0.0))
+        return;
+    ClosestApproach cur = std::abs(fa) < std::abs(fb) ? la : lb;
+    double curTh = std::abs(fa) < std::abs(fb) ? a : b;
+    bool collapsed = false;
+    for (int it = 0; it < 200; ++it)
+    {
+        collapsed = std::abs(b - a) < 1e-15;
+        if (std::abs(cur.miss) <= 0.1 * params.goalTolerance || collapsed)
+            break;
+        const double c = illinoisPoint(a, fa, b, fb);
+        double fc;
+        tRef = cur.t;
+        if (!F(c, fc))
+            break;
+        cur = last;
+        curTh = c;
+        illinoisUpdate(a, fa, b, fb, c, fc);
+    }
+    const double tolerance = collapsed ? std::max(params.goalTolerance, 1e-7 * D) : params.goalTolerance;
+    if (!(std::abs(cur.miss) <= tolerance) || !cur.admissible)
+        return;
+    ++sol.extremalsThroughGoal;
+    if (cur.t < sol.travelTime)
+    {
+        sol.found = true;
+        sol.travelTime = cur.t;
+        sol.initialHeading = std::remainder(curTh, kTwoPi);
+        sol.missDistance = std::abs(cur.miss);
+    }
+}
+} // namespace
+
 ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double y2, double t0) const
 {
     ZermeloSolution sol;
@@ -293,32 +401,8 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
                 sol.nearestHeading = std::remainder(from + double(j) * dTheta, kTwoPi);
             }
 
-    // 2. Brackets: a closest approach whose signed miss changes sign between neighbouring headings (matched by
-    // the nearest approach time).
-    struct Bracket
-    {
-        double a, fa, b, fb, tEst;
-    };
-    std::vector<Bracket> brackets;
-    for (int j = 0; j + (circle ? 0 : 1) < shotsCount; ++j)
-    {
-        const int k = (j + 1) % shotsCount;
-        for (const ClosestApproach &e : shots[j])
-        {
-            const ClosestApproach *best = nullptr;
-            for (const ClosestApproach &f : shots[k])
-                if (!best || std::abs(f.t - e.t) < std::abs(best->t - e.t))
-                    best = &f;
-            if (!best || (e.miss < 0.0) == (best->miss < 0.0))
-                continue;
-            // A sign flip far from the goal is the swap of two sides of a loop, not a crossing.
-            if (std::abs(e.miss) + std::abs(best->miss) > 0.5 * D + 10.0 * dTheta * params_.speed * e.t)
-                continue;
-            brackets.push_back(
-                {from + j * dTheta, e.miss, from + (j + 1) * dTheta, best->miss, std::min(e.t, best->t)});
-        }
-    }
-    std::sort(brackets.begin(), brackets.end(), [](const Bracket &p, const Bracket &q) { return p.tEst < q.tEst; });
+    // 2. Brackets: a closest approach whose signed miss changes sign between neighbouring headings.
+    const std::vector<Bracket> brackets = headingBrackets(shots, circle, from, dTheta, D, params_.speed);
 
     // 3. Refine each bracket (Illinois on the initial heading), keep the fastest extremal through the goal.
     for (Bracket br : brackets)
@@ -326,57 +410,7 @@ ZermeloSolution ZermeloReference::solve(double x1, double y1, double x2, double 
         if ((sol.found && br.tEst > 1.1 * sol.travelTime + 1e-9) || stopped())
             break;
         const double horizon = std::min(tMax, 1.5 * br.tEst + 10.0 * dTheta * D / params_.speed) + 1e-9;
-        double tRef = br.tEst;
-        ClosestApproach last;
-        auto F = [&](double th, double &out) -> bool {
-            const std::vector<ClosestApproach> ev = shoot(x1, y1, th, t0, x2, y2, horizon);
-            const ClosestApproach *best = nullptr;
-            for (const ClosestApproach &f : ev)
-                if (!best || std::abs(f.t - tRef) < std::abs(best->t - tRef))
-                    best = &f;
-            if (!best)
-                return false;
-            last = *best;
-            out = best->miss;
-            return true;
-        };
-        double a = br.a, fa = 0.0, b = br.b, fb = 0.0;
-        if (!F(a, fa))
-            continue;
-        ClosestApproach la = last;
-        if (!F(b, fb))
-            continue;
-        ClosestApproach lb = last;
-        if ((fa < 0.0) == (fb < 0.0))
-            continue;
-        ClosestApproach cur = std::abs(fa) < std::abs(fb) ? la : lb;
-        double curTh = std::abs(fa) < std::abs(fb) ? a : b;
-        bool collapsed = false;
-        for (int it = 0; it < 200; ++it)
-        {
-            collapsed = std::abs(b - a) < 1e-15;
-            if (std::abs(cur.miss) <= 0.1 * params_.goalTolerance || collapsed)
-                break;
-            const double c = illinoisPoint(a, fa, b, fb);
-            double fc;
-            tRef = cur.t;
-            if (!F(c, fc))
-                break;
-            cur = last;
-            curTh = c;
-            illinoisUpdate(a, fa, b, fb, c, fc);
-        }
-        const double tolerance = collapsed ? std::max(params_.goalTolerance, 1e-7 * D) : params_.goalTolerance;
-        if (!(std::abs(cur.miss) <= tolerance) || !cur.admissible)
-            continue;
-        ++sol.extremalsThroughGoal;
-        if (cur.t < sol.travelTime)
-        {
-            sol.found = true;
-            sol.travelTime = cur.t;
-            sol.initialHeading = std::remainder(curTh, kTwoPi);
-            sol.missDistance = std::abs(cur.miss);
-        }
+        refineBracket(*this, params_, {x1, y1, x2, y2, t0}, br, horizon, D, sol);
     }
     return sol;
 }

@@ -5,6 +5,7 @@
 // documented at loadGriddedCurrents() (GriddedCurrents.h).
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -272,6 +273,13 @@ struct Mask
     std::set<double> waterFlags; ///< Flags: the values meaning water
 };
 
+/// The CF standard names of a binary mask, and how each is read.
+const std::map<std::string, MaskRule> kBinaryMasks = {{"sea_binary_mask", MaskRule::WaterIfHalf},
+                                                      {"land_binary_mask", MaskRule::LandIfHalf}};
+/// The words of a flag's meaning that say water, and those that say something else (ice, land, a lake...).
+const std::set<std::string> kWaterWords = {"sea", "water", "ocean"};
+const std::set<std::string> kOtherWords = {"ice", "land", "shelf", "lake", "glacier", "river"};
+
 std::string lowerName(const GriddedDataset &f, int var)
 {
     return lower(f.varName(var));
@@ -298,9 +306,8 @@ Mask maskOf(const GriddedDataset &f, int var)
             std::string part;
             while (std::getline(ws, part, '_'))
             {
-                water = water || part == "sea" || part == "water" || part == "ocean";
-                other = other || part == "ice" || part == "land" || part == "shelf" || part == "lake" ||
-                        part == "glacier" || part == "river";
+                water = water || kWaterWords.count(part);
+                other = other || kOtherWords.count(part);
             }
             if (water && !other)
                 m.waterFlags.insert(values[k]);
@@ -308,12 +315,12 @@ Mask maskOf(const GriddedDataset &f, int var)
         m.rule = MaskRule::Flags;
         return m;
     }
-    if (sn == "sea_binary_mask")
-        m.rule = MaskRule::WaterIfHalf;
-    else if (sn == "land_binary_mask" || name.find("land") != std::string::npos ||
-             name.find("lsm") != std::string::npos)
+    static const std::set<std::string> levelCounts = {"kmt", "kmu"}; // POP's ocean levels at T and U points
+    if (const auto binary = kBinaryMasks.find(sn); binary != kBinaryMasks.end())
+        m.rule = binary->second;
+    else if (name.find("land") != std::string::npos || name.find("lsm") != std::string::npos)
         m.rule = MaskRule::LandIfHalf;
-    else if (name == "kmt" || name == "kmu")
+    else if (levelCounts.count(name))
         m.rule = MaskRule::LevelCount;
     return m;
 }
@@ -356,10 +363,10 @@ int findMask(const GriddedDataset &f, const Layout &l, const GriddedCurrentOptio
             while (is >> word)
             {
                 landWord = landWord || word == "land";
-                waterWord = waterWord || word == "sea" || word == "water" || word == "ocean" || word == "open_water";
+                waterWord = waterWord || kWaterWords.count(word) || word == "open_water";
             }
         }
-        if ((landWord && waterWord) || sn == "land_binary_mask" || sn == "sea_binary_mask")
+        if ((landWord && waterWord) || kBinaryMasks.count(sn))
             order.push_back(var);
     }
     for (const char *name : kMaskNames)

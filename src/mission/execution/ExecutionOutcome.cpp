@@ -1,4 +1,5 @@
-// What a flight came to, said for a pilot, and each strategy's spread over the runs (ExecutionOutcome.h).
+// What a flight came to, said for a pilot, and each strategy's spread over the runs (ExecutionOutcome.h;
+// measureSpread() of MissionExecution.h).
 #include "ExecutionOutcome.h"
 
 #include <algorithm>
@@ -109,4 +110,30 @@ std::vector<StrategySpread> strategySpreads(const ExecutionResult &r)
     return out;
 }
 } // namespace execution_detail
+
+MeasureSpread measureSpread(std::vector<double> v)
+{
+    v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+    MeasureSpread s;
+    s.count = v.size();
+    if (v.empty())
+        return s;
+    std::sort(v.begin(), v.end());
+    auto quantile = [&](double q) {
+        const double pos = q * static_cast<double>(v.size() - 1);
+        const std::size_t i = static_cast<std::size_t>(std::floor(pos));
+        const std::size_t j = std::min(i + 1, v.size() - 1);
+        return v[i] + (pos - static_cast<double>(i)) * (v[j] - v[i]);
+    };
+    s.min = v.front();
+    s.q1 = quantile(0.25);
+    s.median = quantile(0.5);
+    s.q3 = quantile(0.75);
+    s.max = v.back();
+    double sum = 0.0;
+    for (double x : v)
+        sum += x;
+    s.mean = sum / static_cast<double>(v.size());
+    return s;
+}
 } // namespace ompl_glider

@@ -398,32 +398,6 @@ double rmsDifference(const CurrentField &a, const CurrentField &b, double x, dou
     return std::sqrt(sum / n);
 }
 
-MeasureSpread measureSpread(std::vector<double> v)
-{
-    v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-    MeasureSpread s;
-    s.count = v.size();
-    if (v.empty())
-        return s;
-    std::sort(v.begin(), v.end());
-    auto quantile = [&](double q) {
-        const double pos = q * static_cast<double>(v.size() - 1);
-        const std::size_t i = static_cast<std::size_t>(std::floor(pos));
-        const std::size_t j = std::min(i + 1, v.size() - 1);
-        return v[i] + (pos - static_cast<double>(i)) * (v[j] - v[i]);
-    };
-    s.min = v.front();
-    s.q1 = quantile(0.25);
-    s.median = quantile(0.5);
-    s.q3 = quantile(0.75);
-    s.max = v.back();
-    double sum = 0.0;
-    for (double x : v)
-        sum += x;
-    s.mean = sum / static_cast<double>(v.size());
-    return s;
-}
-
 std::vector<std::pair<Point2, Point2>> executionPairs(const MissionProblem &problem, unsigned count, unsigned seed,
                                                       double minDistance, double departure)
 {
@@ -453,6 +427,57 @@ std::vector<std::pair<Point2, Point2>> executionPairs(const MissionProblem &prob
     return pairs;
 }
 
+/// The control strategies of the mission's execution section, the plan's own headings first for a heading route
+/// (unless the mission lists its strategies).
+std::vector<ControlStrategy> executionStrategies(const MissionSpec &m, const PlannedPath &plan,
+                                                 const std::vector<ExecutionLeg> &legs)
+{
+    const ExecutionSpec &e = m.execution;
+    std::vector<ControlStrategy> strategies;
+    for (const std::string &name : e.strategies)
+    {
+        const auto s = parseControlStrategy(name);
+        if (!s)
+            throw Error(m.place("execution.strategies") + ": unknown strategy '" + name + "'");
+        strategies.push_back(*s);
+    }
+    // a heading route is flown by its own headings too, unless the mission lists its strategies
+    bool headingLegs = false;
+    for (const ExecutionLeg &l : legs)
+        headingLegs = headingLegs || l.headings.has_value();
+    if ((plan.headingRoute() || headingLegs) && e.strategies == ExecutionSpec().strategies)
+        strategies.insert(strategies.begin(), ControlStrategy::PlannedHeadings);
+    return strategies;
+}
+
+/// The runs of the start/goal @p pairs, the mission's own first (with its @p plan and @p legs, or why it has none),
+/// each with its goal radius (@p radius, NaN: 1 % of its start-goal distance).
+std::vector<ExecutionRun> executionRuns(const std::vector<std::pair<Point2, Point2>> &pairs, const PlannedPath &plan,
+                                        const std::vector<ExecutionLeg> &legs, double radius)
+{
+    std::vector<ExecutionRun> runs(pairs.size());
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+    {
+        ExecutionRun &run = runs[i];
+        run.index = static_cast<unsigned>(i);
+        run.start = pairs[i].first;
+        run.goal = pairs[i].second;
+        run.departure = plan.departure;
+        const double d = std::hypot(run.goal.x - run.start.x, run.goal.y - run.start.y);
+        run.radius = std::isnan(radius) ? 0.01 * d : radius;
+    }
+    if (plan.solved)
+    {
+        runs[0].planned = true;
+        runs[0].plan = plan.path;
+        runs[0].headings = plan.headings;
+        runs[0].legs = legs;
+    }
+    else
+        runs[0].reason = plan.reason;
+    return runs;
+}
+
 ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath &plan,
                                const std::vector<ExecutionLeg> &legs, const ProgressSink &progress)
 {
@@ -463,19 +488,7 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
     const MissionSpec &m = problem.getSpec();
     const ExecutionSpec &e = m.execution;
     ExecutionResult r;
-    for (const std::string &name : e.strategies)
-    {
-        const auto s = parseControlStrategy(name);
-        if (!s)
-            throw Error(m.place("execution.strategies") + ": unknown strategy '" + name + "'");
-        r.strategies.push_back(*s);
-    }
-    // a heading route is flown by its own headings too, unless the mission lists its strategies
-    bool headingLegs = false;
-    for (const ExecutionLeg &l : legs)
-        headingLegs = headingLegs || l.headings.has_value();
-    if ((plan.headingRoute() || headingLegs) && e.strategies == ExecutionSpec().strategies)
-        r.strategies.insert(r.strategies.begin(), ControlStrategy::PlannedHeadings);
+    r.strategies = executionStrategies(m, plan, legs);
     r.truth = e.truth ? problem.getTruth()->name() : kTruthIsForecast;
     const double trip = plan.solved ? plan.path.back().t - plan.departure : problem.minTripDuration(m.vehicle.speed);
     r.surfacingInterval = surfacingInterval(m, trip, r.surfacingIntervalSource);
@@ -502,27 +515,8 @@ ExecutionResult executeMission(const MissionProblem &problem, const PlannedPath 
         execution_truth::checkTruthTimes(problem, plan, window, r);
         execution_truth::checkTruthSpace(problem, plan, r);
     }
-    r.runs.resize(pairs.size());
-    for (std::size_t i = 0; i < pairs.size(); ++i)
-    {
-        ExecutionRun &run = r.runs[i];
-        run.index = static_cast<unsigned>(i);
-        run.start = pairs[i].first;
-        run.goal = pairs[i].second;
-        run.departure = plan.departure;
-        const double d = std::hypot(run.goal.x - run.start.x, run.goal.y - run.start.y);
-        run.radius = std::isnan(e.radius) ? 0.01 * d : e.radius;
-    }
+    r.runs = executionRuns(pairs, plan, legs, e.radius);
     r.stops = executionStops(problem, r.runs[0].radius); // a mission of several legs: the stations of every run
-    if (plan.solved)
-    {
-        r.runs[0].planned = true;
-        r.runs[0].plan = plan.path;
-        r.runs[0].headings = plan.headings;
-        r.runs[0].legs = legs;
-    }
-    else
-        r.runs[0].reason = plan.reason;
     r.oracle = e.truth.has_value(); // where the truth is the forecast there is nothing to measure against
     const ExecutionResult oracle = oracleSettings(r);
 

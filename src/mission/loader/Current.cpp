@@ -1,26 +1,19 @@
 // The `current` section: the source of the currents (a kind of the registry and its parameters, or forecast
 // files with their variables, units and calendar) and an ensemble of them ([EichhornOceans] Sec. IV).
 #include <algorithm>
+#include <array>
 #include <cctype>
-#include <cstdlib>
-#include <cmath>
-#include <limits>
 #include <set>
 
 #include "MissionReader.h"
-#include "ompl_glider/ompl/Sectors.h"
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
-#include "ompl_glider/io/RemoteSource.h"
-#include "ompl_glider/io/Time.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
-#include "ompl_glider/io/GeoBox.h"
-#include "ompl_glider/execution/Execution.h"
-#include "ompl_glider/mission/MissionProblem.h"
-#include "ompl_glider/mission/OutputFormats.h"
-#include "ompl_glider/registry/PlannerRegistry.h"
 #include "ompl_glider/io/FileList.h"
 #include "ompl_glider/io/Length.h"
+#include "ompl_glider/io/RemoteSource.h"
+#include "ompl_glider/io/Time.h"
+#include "ompl_glider/mission/MissionProblem.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/io/UnitConversion.h"
 #endif
@@ -215,10 +208,13 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
             c.parameters[key] = r.finite(it->second, f + ".parameters." + key);
         }
     }
-    if (c.type == "double_gyre" && c.parameters.count("length") && !(c.parameters["length"] > 0))
-        r.fail(n["parameters"]["length"], f + ".parameters.length", "expected a number > 0");
-    if (c.type == "rankine_vortex" && c.parameters.count("radius") && !(c.parameters["radius"] > 0))
-        r.fail(n["parameters"]["radius"], f + ".parameters.radius", "expected a number > 0 (the core radius)");
+    // the analytic flows' parameters that must be positive: (flow, parameter, what is expected)
+    static const std::array<std::array<const char *, 3>, 2> positive = {
+        {{"double_gyre", "length", "expected a number > 0"},
+         {"rankine_vortex", "radius", "expected a number > 0 (the core radius)"}}};
+    for (const auto &[type, key, expected] : positive)
+        if (c.type == type && c.parameters.count(key) && !(c.parameters[key] > 0))
+            r.fail(n["parameters"][key], f + ".parameters." + key, expected);
     const bool gridded = kind.gridded();
     for (const char *key : {"file", "variables", "interpolation", "horizon", "velocity_units", "time_units",
                             "steady_record", "zero_velocity_land", "depth_average", "max_speed"})

@@ -2,6 +2,7 @@
 // FeatureCollection ([IsernObstacles] Sec. II; ice: [EichhornIce]).
 #include <cmath>
 #include <limits>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -118,7 +119,8 @@ void readGeoJson(const Reader &r, const YAML::Node &where, MissionSpec &m)
             g.fail(ft, fld, "expected a Feature with a geometry");
         const YAML::Node &geom = ft["geometry"];
         const std::string type = geom["type"].Scalar();
-        if (type != "Polygon" && type != "MultiPolygon")
+        static const std::set<std::string> polygons = {"Polygon", "MultiPolygon"}; // the geometries of a region
+        if (!polygons.count(type))
             g.fail(geom, fld + ".geometry.type",
                    "only Polygon and MultiPolygon are forbidden regions (got " + type + ")");
         YAML::Node props = ft["properties"];

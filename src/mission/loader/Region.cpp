@@ -1,27 +1,6 @@
 // The `region` section: the box to plan in, x/y or lon/lat (either longitude convention).
-#include <algorithm>
-#include <cctype>
-#include <cstdlib>
-#include <cmath>
-#include <limits>
-#include <set>
-
 #include "MissionReader.h"
-#include "ompl_glider/ompl/Sectors.h"
-#include "ompl_glider/Config.h"
-#include "ompl_glider/Exception.h"
-#include "ompl_glider/io/RemoteSource.h"
-#include "ompl_glider/io/Time.h"
-#include "ompl_glider/current/CurrentFieldRegistry.h"
 #include "ompl_glider/io/GeoBox.h"
-#include "ompl_glider/execution/Execution.h"
-#include "ompl_glider/mission/MissionProblem.h"
-#include "ompl_glider/mission/OutputFormats.h"
-#include "ompl_glider/registry/PlannerRegistry.h"
-#include "ompl_glider/io/FileList.h"
-#if OMPL_GLIDER_WITH_NETCDF
-#include "ompl_glider/io/UnitConversion.h"
-#endif
 
 namespace ompl_glider::mission_loader
 {

@@ -2,6 +2,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -40,10 +41,9 @@ bool plainViaPointName(const std::string &name)
 
 VisitOrder parseVisitOrder(const std::string &name)
 {
-    if (name == "given")
-        return VisitOrder::Given;
-    if (name == "free")
-        return VisitOrder::Free;
+    static const std::map<std::string, VisitOrder> orders = {{"given", VisitOrder::Given}, {"free", VisitOrder::Free}};
+    if (const auto it = orders.find(name); it != orders.end())
+        return it->second;
     throw Error("unknown order '" + name + "' (expected given or free)");
 }
 

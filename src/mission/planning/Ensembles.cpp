@@ -250,6 +250,71 @@ PlannedPath notRobust(const MissionProblem &problem, PlannedPath r, const Ensemb
                                              failing});
     return r;
 }
+
+/// The candidates planned (not @p leftOut) noted in @p e, each with its times in the members and its objective; returns
+/// the best: one that arrives in every member before one that does not, a plan before none, then by the objective
+/// over the members flown (the mean's plan where none is better).
+std::size_t bestCandidate(const std::vector<PlannedPath> &plans, const std::vector<std::vector<double>> &times,
+                          const std::vector<char> &leftOut, const std::vector<std::size_t> &planned, EnsemblePlan &e)
+{
+    std::size_t best = 0;
+    const auto eligible = [&](std::size_t c) { return plans[c].solved && flownInEvery(times[c]); };
+    for (std::size_t c = 0; c < plans.size(); ++c)
+    {
+        if (leftOut[c])
+            continue; // not planned: not a candidate
+        EnsemblePlan::Candidate cand;
+        cand.name = c == 0 ? "mean" : "member " + std::to_string(planned[c - 1]);
+        cand.solved = plans[c].solved;
+        cand.memberTravelTimes = times[c];
+        cand.objectiveValue = plans[c].solved ? objectiveOverFlown(times[c], e.objective, e.quantile) : kInf;
+        e.candidates.push_back(cand);
+        const auto better = [&](std::size_t a, std::size_t b) {
+            if (eligible(a) != eligible(b))
+                return eligible(a);
+            if (plans[a].solved != plans[b].solved)
+                return plans[a].solved;
+            return objectiveOverFlown(times[a], e.objective, e.quantile) <
+                   objectiveOverFlown(times[b], e.objective, e.quantile);
+        };
+        if (c > 0 && better(c, best))
+            best = c;
+    }
+    return best;
+}
+
+/// The plan of an ensemble whose flights a stop request cut: no path, with the work of the candidates planned.
+PlannedPath stoppedEnsemble(const std::vector<PlannedPath> &plans, double departure, double speed, EnsemblePlan e)
+{
+    PlannedPath r;
+    r.departure = departure;
+    r.speed = speed;
+    r.planner = plans[0].planner;
+    r.straightLineLength = plans[0].straightLineLength;
+    for (const PlannedPath &p : plans)
+        addPlanningWork(r, p);
+    r.status = PlanStatus::Stopped;
+    r.setNoPath({NoPathCause::Stopped, "stopped on request (Ctrl-C) before the candidate plans were flown in "
+                                       "every member of the ensemble"});
+    r.ensemble = std::move(e);
+    return r;
+}
+
+/// The chosen candidate @p chosen planned again on every rank (the same planning on the same field: the same path,
+/// for the deterministic planners, flown in the members as before), with the counts of its first planning.
+void planAgainOnEveryRank(const MissionProblem &problem, double departure, const PlanOptions &o,
+                          const std::vector<std::size_t> &planned, std::size_t best, PlannedPath &chosen)
+{
+    const PlannedPath counted = chosen;
+    chosen = best == 0 ? planOnField(problem, departure, o)
+                       : planOnField(problem.withMember(planned[best - 1]), departure, o);
+    chosen.searchCostFunctionCalls = counted.searchCostFunctionCalls;
+    chosen.postprocessCostFunctionCalls = counted.postprocessCostFunctionCalls;
+    chosen.currentModelCalls = counted.currentModelCalls;
+    chosen.expandedVertices = counted.expandedVertices;
+    chosen.planningSeconds = counted.planningSeconds;
+    chosen.postprocessSeconds = counted.postprocessSeconds;
+}
 } // namespace
 
 /// A robust plan over the members of an ensemble (see planRoute()).
@@ -294,65 +359,18 @@ PlannedPath planRobust(const MissionProblem &problem, double departure, const Pl
     e.quantile = m.planner.quantile;
     if (screening.size() < n)
         flyFinalists(plans, times, e, n, flights);
-    std::size_t best = 0;
+    std::size_t best = bestCandidate(plans, times, leftOut, planned, e);
     const auto eligible = [&](std::size_t c) { return plans[c].solved && flownInEvery(times[c]); };
-    for (std::size_t c = 0; c < plans.size(); ++c)
-    {
-        if (leftOut[c])
-            continue; // not planned: not a candidate
-        EnsemblePlan::Candidate cand;
-        cand.name = c == 0 ? "mean" : "member " + std::to_string(planned[c - 1]);
-        cand.solved = plans[c].solved;
-        cand.memberTravelTimes = times[c];
-        cand.objectiveValue = plans[c].solved ? objectiveOverFlown(times[c], e.objective, e.quantile) : kInf;
-        e.candidates.push_back(cand);
-        const auto better = [&](std::size_t a, std::size_t b) {
-            if (eligible(a) != eligible(b))
-                return eligible(a);
-            if (plans[a].solved != plans[b].solved)
-                return plans[a].solved;
-            return objectiveOverFlown(times[a], e.objective, e.quantile) <
-                   objectiveOverFlown(times[b], e.objective, e.quantile);
-        };
-        if (c > 0 && better(c, best))
-            best = c;
-    }
     // No candidate arrives in every member: the plan is the one most likely to arrive, with its share of the members
     // (never "no path" while members arrive); "no path" only when no candidate arrives in any member.
     if (plans[best].solved && !flights.cut() &&
         !(eligible(best) && std::isfinite(ensembleObjective(times[best], e.objective, e.quantile))))
         if (const std::optional<std::size_t> likely = mostLikelyToArrive(plans, times, leftOut, e, flights, n))
             best = *likely;
-    if (flights.cut())
-    {
-        // a stop request (Ctrl-C) cut the flights: no candidate can be judged over every member
-        PlannedPath r;
-        r.departure = departure;
-        r.speed = speed;
-        r.planner = plans[0].planner;
-        r.straightLineLength = plans[0].straightLineLength;
-        for (const PlannedPath &p : plans)
-            addPlanningWork(r, p);
-        r.status = PlanStatus::Stopped;
-        r.setNoPath({NoPathCause::Stopped, "stopped on request (Ctrl-C) before the candidate plans were flown in "
-                                           "every member of the ensemble"});
-        r.ensemble = std::move(e);
-        return r;
-    }
+    if (flights.cut()) // a stop request (Ctrl-C) cut the flights: no candidate can be judged over every member
+        return stoppedEnsemble(plans, departure, speed, std::move(e));
     if (spread && plans[best].solved)
-    {
-        // the chosen candidate is planned again on every rank (the same planning on the same field: the same path,
-        // for the deterministic planners, flown in the members as before), with the counts of its first planning
-        const PlannedPath counted = plans[best];
-        plans[best] = best == 0 ? planOnField(problem, departure, o)
-                                : planOnField(problem.withMember(planned[best - 1]), departure, o);
-        plans[best].searchCostFunctionCalls = counted.searchCostFunctionCalls;
-        plans[best].postprocessCostFunctionCalls = counted.postprocessCostFunctionCalls;
-        plans[best].currentModelCalls = counted.currentModelCalls;
-        plans[best].expandedVertices = counted.expandedVertices;
-        plans[best].planningSeconds = counted.planningSeconds;
-        plans[best].postprocessSeconds = counted.postprocessSeconds;
-    }
+        planAgainOnEveryRank(problem, departure, o, planned, best, plans[best]);
     PlannedPath r = plans[best];
     e.chosen = best == 0 ? "mean" : "member " + std::to_string(planned[best - 1]);
     e.objectiveValue = ensembleObjective(times[best], e.objective, e.quantile);

@@ -96,10 +96,57 @@ void append(std::vector<TimedPoint> &to, const std::vector<TimedPoint> &add, dou
     }
 }
 
+/// The route of @p legs whose last could not be planned, in @p r: no path, for that leg's cause and the setting it
+/// names (the leg's words after its name), with every leg's planning work.
+void noteUnsolvedLeg(const MissionProblem &problem, const std::vector<PlannedLeg> &legs, PlannedPath &r)
+{
+    const MissionSpec &m = problem.getSpec();
+    const PlannedLeg &bad = legs.back();
+    r.status = bad.plan.status == PlanStatus::ExactSolution ? PlanStatus::NoPath : bad.plan.status;
+    r.plannerStatus = bad.plan.plannerStatus;
+    // the leg's cause and figures, its words after the leg's name
+    const std::string leg = "leg " + std::to_string(bad.index + 1) + ", " + bad.from + " to " + bad.to + ": ";
+    NoPath why = bad.plan.noPath;
+    why.leg = bad.index + 1;
+    why.what = leg + why.what;
+    if (bad.plan.badInput.input == BadInput::Input::DepartureTime && bad.index > 0)
+        why.what =
+            leg + "it would depart at " + timeText(problem, bad.plan.departure) + ", after the end of the forecast";
+    r.setNoPath(std::move(why));
+    r.badInput =
+        legBadInput(bad.plan.badInput, bad.fromVia, bad.toVia < 0 ? static_cast<int>(m.waypoints.size()) : bad.toVia,
+                    m.waypoints.size(), bad.index);
+    for (const PlannedLeg &l : legs)
+        planning_detail::addPlanningWork(r, l.plan);
+}
+
+/// The straight line of the mission, in @p r: each leg flown straight in turn from the previous straight leg's
+/// arrival (its stay held), its length and travel time (infinite past the end of the forecast).
+void noteStraightLine(const MissionProblem &problem, const std::vector<PlannedLeg> &legs, double departure,
+                      PlannedPath &r)
+{
+    double t = departure;
+    for (const PlannedLeg &l : legs)
+    {
+        r.straightLineLength += std::hypot(l.toPoint.x - l.fromPoint.x, l.toPoint.y - l.fromPoint.y);
+        if (!std::isfinite(t))
+            continue;
+        const double end = problem.getField()->timeEnd();
+        if (std::isfinite(end) && t >= end)
+        {
+            t = kInf;
+            continue;
+        }
+        std::shared_ptr<GliderContext> ctx;
+        makeSimpleSetup(problem.withLeg(l.fromPoint, l.toPoint, {}).gliderProblem(t, r.speed), &ctx);
+        t += legTravelTime(*ctx, l.fromPoint.x, l.fromPoint.y, l.toPoint.x, l.toPoint.y, t) + l.stay;
+    }
+    r.straightLineTime = std::isfinite(t) ? t - departure - legs.back().stay : kInf;
+}
+
 /// The whole route of @p legs (all solved, or the first unsolved one last).
 PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &legs, double departure)
 {
-    const MissionSpec &m = problem.getSpec();
     PlannedPath r;
     r.departure = departure;
     r.speed = legs.front().plan.speed;
@@ -115,23 +162,7 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
     const PlannedLeg &last = legs.back();
     if (!all)
     {
-        const PlannedLeg &bad = last;
-        r.status = bad.plan.status == PlanStatus::ExactSolution ? PlanStatus::NoPath : bad.plan.status;
-        r.plannerStatus = bad.plan.plannerStatus;
-        // the leg's cause and figures, its words after the leg's name
-        const std::string leg = "leg " + std::to_string(bad.index + 1) + ", " + bad.from + " to " + bad.to + ": ";
-        NoPath why = bad.plan.noPath;
-        why.leg = bad.index + 1;
-        why.what = leg + why.what;
-        if (bad.plan.badInput.input == BadInput::Input::DepartureTime && bad.index > 0)
-            why.what =
-                leg + "it would depart at " + timeText(problem, bad.plan.departure) + ", after the end of the forecast";
-        r.setNoPath(std::move(why));
-        r.badInput = legBadInput(bad.plan.badInput, bad.fromVia,
-                                 bad.toVia < 0 ? static_cast<int>(m.waypoints.size()) : bad.toVia, m.waypoints.size(),
-                                 bad.index);
-        for (const PlannedLeg &l : legs)
-            planning_detail::addPlanningWork(r, l.plan);
+        noteUnsolvedLeg(problem, legs, r);
         return r;
     }
     r.solved = true;
@@ -199,24 +230,7 @@ PlannedPath assemble(const MissionProblem &problem, std::vector<PlannedLeg> &leg
         if (l.plan.headingRoute() && std::isfinite(l.plan.reflownEndDistance))
             r.reflownEndDistance = std::max(r.reflownEndDistance, l.plan.reflownEndDistance);
     r.holdTime = planning_detail::holdTimeOf(r.path);
-    // the straight line of the mission: each leg flown straight in turn from the previous straight leg's arrival
-    double t = departure;
-    for (const PlannedLeg &l : legs)
-    {
-        r.straightLineLength += std::hypot(l.toPoint.x - l.fromPoint.x, l.toPoint.y - l.fromPoint.y);
-        if (!std::isfinite(t))
-            continue;
-        const double end = problem.getField()->timeEnd();
-        if (std::isfinite(end) && t >= end)
-        {
-            t = kInf;
-            continue;
-        }
-        std::shared_ptr<GliderContext> ctx;
-        makeSimpleSetup(problem.withLeg(l.fromPoint, l.toPoint, {}).gliderProblem(t, r.speed), &ctx);
-        t += legTravelTime(*ctx, l.fromPoint.x, l.fromPoint.y, l.toPoint.x, l.toPoint.y, t) + l.stay;
-    }
-    r.straightLineTime = std::isfinite(t) ? t - departure - legs.back().stay : kInf;
+    noteStraightLine(problem, legs, departure, r);
     return r;
 }
 

@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <optional>
+#include <set>
 
 #include "../../io/NumberText.h"
 #include "PlanningInternal.h"
@@ -28,6 +30,11 @@ bool pipelineParameter(const std::string &name)
 {
     return name == "refiner_max_evaluations";
 }
+
+/// The settings of the pipeline that OMPL's lattice planners declare as parameters too, by the name of the planner
+/// field that sets them.
+const std::map<std::string, std::string> kPipelineFields = {
+    {"grid_size", "grid_size"}, {"sectors", "sectors"}, {"smooth", "smoothing"}, {"refine", "refinement"}};
 
 /// The declared range "lo:step:hi" of a numeric parameter as [lo, hi]; false for other forms ("0,1", empty).
 bool declaredRange(const std::string &range, double &lo, double &hi)
@@ -49,17 +56,15 @@ void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
     ompl::base::ParamSet &params = planner.params();
     for (const auto &[name, value] : m.planner.parameters)
     {
-        if (name == "grid_size" || name == "sectors" || name == "smooth" || name == "refine")
-            throw Error(parameterPlace(m, name) + ": set it as planner." +
-                        (name == "smooth"   ? std::string("smoothing")
-                         : name == "refine" ? std::string("refinement")
-                                            : name) +
+        if (const auto field = kPipelineFields.find(name); field != kPipelineFields.end())
+            throw Error(parameterPlace(m, name) + ": set it as planner." + field->second +
                         ", which every planner of the pipeline honours");
         if (params.hasParam(name))
         {
             const std::string range = params[name].getRangeSuggestion();
             // OMPL reads any text other than "true"/"1" as false for a bool parameter (range "0,1")
-            if (range == "0,1" && value != "0" && value != "1" && value != "true" && value != "false")
+            static const std::set<std::string> booleans = {"0", "1", "true", "false"};
+            if (range == "0,1" && !booleans.count(value))
                 throw Error(parameterPlace(m, name) + ": planner " + planner.getName() +
                             " expects true or false, got '" + value + "'");
             bool accepted = false;
@@ -96,7 +101,7 @@ void applyParameters(const MissionSpec &m, ompl::base::Planner &planner)
             params.getParamNames(names);
             std::string list;
             for (const std::string &n : names)
-                if (n != "grid_size" && n != "sectors" && n != "smooth" && n != "refine")
+                if (!kPipelineFields.count(n))
                     list += (list.empty() ? "" : ", ") + n;
             throw Error(parameterPlace(m, name) + ": planner " + planner.getName() + " has no parameter '" + name +
                         "' (it has: " + (list.empty() ? std::string("none") : list) + ")");

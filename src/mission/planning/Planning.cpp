@@ -156,6 +156,97 @@ double chooseDeparture(const MissionProblem &problem, const RunOptions &options,
     result.departureSearch = optimalDepartureTime(fine, p, coarse);
     return result.departureSearch->found ? result.departureSearch->departure : m.departure.begin;
 }
+
+/// Refuses (in @p r) a start or goal that land's keep-off band, shallow water or another static region forbids, in
+/// the pilot's terms (lon/lat, km) before the planner would refuse it in its plane; true when one is refused.
+bool refuseBlockedEndpoint(const MissionProblem &problem, double departure, PlannedPath &r)
+{
+    const std::shared_ptr<const Environment> &env = problem.getEnvironment();
+    if (!env || !problem.isGeographic())
+        return false;
+    const Point2 s = problem.getStart(), g = problem.getGoal();
+    for (const bool start : {true, false})
+    {
+        const Point2 q = start ? s : g;
+        const std::string why = start || env->isStatic() ? env->whyBlocked(q.x, q.y, departure) : std::string();
+        if (why.empty())
+            continue;
+        const LonLat p = problem.toGeographic(q);
+        char where[96];
+        std::snprintf(where, sizeof where, " (lon %.5f, lat %.5f)", p.lon, p.lat);
+        r.status = start ? PlanStatus::InvalidStart : PlanStatus::InvalidGoal;
+        r.badInput = {start ? BadInput::Input::Start : BadInput::Input::Goal};
+        r.setNoPath({NoPathCause::BadInput, "the " + r.badInput.field() + where + " is " + why});
+        return true;
+    }
+    return false;
+}
+
+/// The result of a planner that planned stints (@p plan): flown, not smoothed, its surfacings the path.
+void takeStintPlan(const MissionProblem &problem, const StintPlan &plan, double departure, PlannedPath &r)
+{
+    StintOutcome o;
+    o.plan = plan;
+    o.settings = stintSettings(problem, departure);
+    r.solved = true;
+    r.raw = r.smoothed = r.path = o.plan.surfacings;
+    r.rawTravelTime = r.smoothedTravelTime = r.travelTime = r.path.back().t - departure;
+    r.rawPathLength = r.pathLength = pathLength(o.plan.track);
+    r.pathChecked = !o.plan.grounded;
+    r.stints = std::move(o);
+}
+
+/// Why the search ended without a path: a start or goal the planner refused (@p r's bad input, in lon/lat where the
+/// pilot gave them), or a lattice searched to its end (@p r's status, and a bound on the arrival).
+NoPath noPathOfSearch(const MissionProblem &problem, const GliderProblem &gp, const ompl::base::PlannerStatus &status,
+                      const ompl::base::Planner &planner, const GliderSimpleSetup &ss, double limit, PlannedPath &r)
+{
+    NoPath why = noPathReason(status, planner, ss, limit, problem.getSpec());
+    if (status == ompl::base::PlannerStatus::INVALID_START || status == ompl::base::PlannerStatus::INVALID_GOAL)
+    {
+        const bool start = status == ompl::base::PlannerStatus::INVALID_START;
+        r.badInput = {start ? BadInput::Input::Start : BadInput::Input::Goal};
+        why.cause = NoPathCause::BadInput;
+        if (problem.isGeographic())
+        {
+            // the planner speaks in its plane; the pilot gave lon/lat
+            const LonLat p = problem.toGeographic(start ? problem.getStart() : problem.getGoal());
+            char where[96];
+            std::snprintf(where, sizeof where, " (lon %.5f, lat %.5f)", p.lon, p.lat);
+            why.what += std::string("; the ") + r.badInput.field() + where;
+        }
+    }
+    if (why.cause == NoPathCause::LatticeExhausted)
+    {
+        r.status = PlanStatus::NoPath; // OMPL's ABORT or TIMEOUT would send the user after a longer time limit
+        boundArrival(problem, gp, why);
+    }
+    return why;
+}
+
+/// The search's @p path smoothed and refined (as the mission asks) into @p r's raw, smoothed and final waypoints,
+/// their times and lengths, and the work and time it took.
+void postProcess(ompl::geometric::PathGeometric path, const std::shared_ptr<GliderContext> &ctx, const MissionSpec &m,
+                 double departure, bool smoothing, bool refinement, PlannedPath &r)
+{
+    r.raw = waypointsFromPath(path);
+    r.rawTravelTime = r.raw.back().t - departure;
+    r.rawPathLength = pathLength(r.raw);
+    const std::uint64_t cfc1 = ctx->travel->costFunctionCalls();
+    const auto tC = std::chrono::steady_clock::now();
+    if (smoothing)
+        PathSmoother(ctx).smooth(path);
+    r.smoothed = waypointsFromPath(path);
+    if (refinement)
+        WaypointRefiner(ctx, refinerParams(m)).refine(path);
+    r.path = waypointsFromPath(path);
+    r.postprocessSeconds = secondsSince(tC);
+    r.postprocessCostFunctionCalls = ctx->travel->costFunctionCalls() - cfc1;
+    r.smoothedTravelTime = r.smoothed.back().t - departure;
+    r.travelTime = r.path.back().t - departure;
+    r.pathLength = pathLength(r.path);
+    r.pathChecked = path.check();
+}
 } // namespace
 
 /// planRoute() on the problem's one field.
@@ -181,23 +272,8 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
         r.badInput = {BadInput::Input::DepartureTime};
         return r;
     }
-    // a start or goal that land's keep-off band, shallow water or another static region forbids: refused in the
-    // pilot's terms (lon/lat, km) before the planner would refuse it in its plane
-    if (const std::shared_ptr<const Environment> &env = problem.getEnvironment(); env && problem.isGeographic())
-        for (const bool start : {true, false})
-        {
-            const Point2 q = start ? s : g;
-            const std::string why = start || env->isStatic() ? env->whyBlocked(q.x, q.y, departure) : std::string();
-            if (why.empty())
-                continue;
-            const LonLat p = problem.toGeographic(q);
-            char where[96];
-            std::snprintf(where, sizeof where, " (lon %.5f, lat %.5f)", p.lon, p.lat);
-            r.status = start ? PlanStatus::InvalidStart : PlanStatus::InvalidGoal;
-            r.badInput = {start ? BadInput::Input::Start : BadInput::Input::Goal};
-            r.setNoPath({NoPathCause::BadInput, "the " + r.badInput.field() + where + " is " + why});
-            return r;
-        }
+    if (refuseBlockedEndpoint(problem, departure, r))
+        return r;
     std::shared_ptr<GliderContext> ctx;
     const std::shared_ptr<GliderSimpleSetup> ss = makeSimpleSetup(gp, &ctx);
     const ompl::base::PlannerPtr planner =
@@ -224,16 +300,7 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     if (const StintPlan *plan = answers.lastStintPlan())
         if (ss->haveSolutionPath())
         {
-            // a stint plan is flown, not smoothed: its surfacings are the path
-            StintOutcome o;
-            o.plan = *plan;
-            o.settings = stintSettings(problem, departure);
-            r.solved = true;
-            r.raw = r.smoothed = r.path = o.plan.surfacings;
-            r.rawTravelTime = r.smoothedTravelTime = r.travelTime = r.path.back().t - departure;
-            r.rawPathLength = r.pathLength = pathLength(o.plan.track);
-            r.pathChecked = !o.plan.grounded;
-            r.stints = std::move(o);
+            takeStintPlan(problem, *plan, departure, r);
             return r;
         }
     r.solved = ss->haveExactSolutionPath();
@@ -252,48 +319,10 @@ PlannedPath planOnField(const MissionProblem &problem, double departure, const P
     }
     if (!r.solved)
     {
-        NoPath why = noPathReason(status, *planner, *ss, limit, m);
-        if (status == ompl::base::PlannerStatus::INVALID_START || status == ompl::base::PlannerStatus::INVALID_GOAL)
-        {
-            const bool start = status == ompl::base::PlannerStatus::INVALID_START;
-            r.badInput = {start ? BadInput::Input::Start : BadInput::Input::Goal};
-            why.cause = NoPathCause::BadInput;
-            if (problem.isGeographic())
-            {
-                // the planner speaks in its plane; the pilot gave lon/lat
-                const LonLat p = problem.toGeographic(start ? s : g);
-                char where[96];
-                std::snprintf(where, sizeof where, " (lon %.5f, lat %.5f)", p.lon, p.lat);
-                why.what += std::string("; the ") + r.badInput.field() + where;
-            }
-        }
-        if (why.cause == NoPathCause::LatticeExhausted)
-        {
-            r.status = PlanStatus::NoPath; // OMPL's ABORT or TIMEOUT would send the user after a longer time limit
-            boundArrival(problem, gp, why);
-        }
-        r.setNoPath(std::move(why));
+        r.setNoPath(noPathOfSearch(problem, gp, status, *planner, *ss, limit, r));
         return r;
     }
-    ompl::geometric::PathGeometric path = ss->getSolutionPath();
-    r.raw = waypointsFromPath(path);
-    r.rawTravelTime = r.raw.back().t - departure;
-    r.rawPathLength = pathLength(r.raw);
-
-    const std::uint64_t cfc1 = ctx->travel->costFunctionCalls();
-    const auto tC = std::chrono::steady_clock::now();
-    if (smoothing)
-        PathSmoother(ctx).smooth(path);
-    r.smoothed = waypointsFromPath(path);
-    if (refinement)
-        WaypointRefiner(ctx, refinerParams(m)).refine(path);
-    r.path = waypointsFromPath(path);
-    r.postprocessSeconds = secondsSince(tC);
-    r.postprocessCostFunctionCalls = ctx->travel->costFunctionCalls() - cfc1;
-    r.smoothedTravelTime = r.smoothed.back().t - departure;
-    r.travelTime = r.path.back().t - departure;
-    r.pathLength = pathLength(r.path);
-    r.pathChecked = path.check();
+    postProcess(ss->getSolutionPath(), ctx, m, departure, smoothing, refinement, r);
     reflyRoute(problem, *ctx, r);
     if (!r.solved)
         return r;
