@@ -14,7 +14,6 @@
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/current/ForecastSource.h"
 #include "ompl_glider/io/Coastline.h"
-#include "ompl_glider/io/DepthGrid.h"
 #include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/mission/MissionSpec.h"
 
@@ -22,6 +21,7 @@ namespace ompl_glider
 {
 class LocalProjection;
 class Bathymetry;
+struct DepthGrid; // io/DepthGrid.h (installed with NetCDF)
 struct GliderObservations;
 
 /// @brief The planning frame: its projection (lon/lat <-> x/y), its units and its box.
