@@ -73,9 +73,9 @@ void markLastFixGuess(MissionSpec &m, const SourceMark &mark, bool departure);
 /// @throws Error (without the place: the caller names it) when they cannot be read or report no fix.
 void startAtLastFix(MissionSpec &m, const SourceMark &mark, bool keepDeparture);
 
-/// @brief The one place a mission resumes at the glider's last fix (MissionProblem does it for every front end): with
-/// observations that have files, a mission of one glider starts at the last fix unless a flag, a keyword or the
-/// calling program gave the start (a mission file's start is the deployment's: replaced), and departs at the fix's
+/// @brief The one place a mission resumes at the glider's last fix (loadProblemInputs() does it for every front
+/// end): with observations that have files, a mission of one glider starts at the last fix unless a flag, a keyword or
+/// the calling program gave the start (a mission file's start is the deployment's: replaced), and departs at the fix's
 /// time unless they gave the departure (which may then not be before the fix). The fixes are judged from the
 /// mission's own departure (the deployment's, also where a caller's departure replaced it: DepartureSpec::replaced;
 /// every fix where the mission gives none) to the last fix. Via points already reached (in the order listed, any
