@@ -72,6 +72,22 @@ void expectFromTheLastFix(const PlanRun &r)
     EXPECT_NE(t.substr(row0, t.find('\n', row0 + 1) - row0).find("-52.375000  48.046875"), std::string::npos) << t;
 }
 
+/// The deployment's ERDDAP answer (.csvp) to a request with a `time>=` constraint.
+loopback_test::Response erddapAnswer(const loopback_test::Request &q)
+{
+    const std::size_t at = q.query.find("&time>=");
+    const double from = at == std::string::npos ? -1e300 : ompl_glider::parseIsoTime(q.query.substr(at + 7));
+    return loopback_test::Response{200, csvAnswer(since(deployment(), from), true), "text/csv"};
+}
+
+/// The deployment's tabledap URL at @p server, constrained to kSince on.
+std::string deploymentUrl(const loopback_test::Server &server)
+{
+    return server.url("/erddap/tabledap/ru29-20260315T0000.csvp?time,latitude,longitude,profile_id,time_uv,lat_uv,"
+                      "lon_uv,u,v,u_qc,v_qc&time%3E=" +
+                      std::string(kSince));
+}
+
 std::string ioosRoute()
 {
     const fs::path d = freshDir("realtime_cli_ioos");
@@ -93,14 +109,8 @@ TEST(GliderRealtimeCli, DbaFolderPlansFromTheLastFixAsTheIoosFiles)
 
 TEST(GliderRealtimeCli, ErddapUrlPlansFromTheLastFixAsTheIoosFiles)
 {
-    const loopback_test::Server server([](const loopback_test::Request &q) {
-        const std::size_t at = q.query.find("&time>=");
-        const double from = at == std::string::npos ? -1e300 : ompl_glider::parseIsoTime(q.query.substr(at + 7));
-        return loopback_test::Response{200, csvAnswer(since(deployment(), from), true), "text/csv"};
-    });
-    const std::string url = server.url("/erddap/tabledap/ru29-20260315T0000.csvp?time,latitude,longitude,"
-                                       "profile_id,time_uv,lat_uv,lon_uv,u,v,u_qc,v_qc&time%3E=" +
-                                       std::string(kSince));
+    const loopback_test::Server server(erddapAnswer);
+    const std::string url = deploymentUrl(server);
     const PlanRun r = plan(url);
     expectFromTheLastFix(r);
     EXPECT_EQ(table(r.out), ioosRoute());
@@ -128,14 +138,8 @@ TEST(GliderRealtimeCli, ErddapErrorIsBadInputNamingTheUrl)
 /// command line's flags and from a mission file alike.
 TEST(GliderRealtimeCli, EachInputIsReadOncePerPlan)
 {
-    const loopback_test::Server erddap([](const loopback_test::Request &q) {
-        const std::size_t at = q.query.find("&time>=");
-        const double from = at == std::string::npos ? -1e300 : ompl_glider::parseIsoTime(q.query.substr(at + 7));
-        return loopback_test::Response{200, csvAnswer(since(deployment(), from), true), "text/csv"};
-    });
-    const std::string observations = erddap.url("/erddap/tabledap/ru29-20260315T0000.csvp?time,latitude,longitude,"
-                                                "profile_id,time_uv,lat_uv,lon_uv,u,v,u_qc,v_qc&time%3E=" +
-                                                std::string(kSince));
+    const loopback_test::Server erddap(erddapAnswer);
+    const std::string observations = deploymentUrl(erddap);
     const fs::path dir = freshDir("read_once");
     fs::create_directories(dir / "served");
     fs::copy_file(fs::path(OMPL_GLIDER_SOURCE_DIR) / "examples/labrador_forecast.nc", dir / "served/labrador.nc");
