@@ -13,6 +13,27 @@ ShiftedTimeField::ShiftedTimeField(std::shared_ptr<const CurrentField> inner, do
         throw Error("ShiftedTimeField: no field");
     if (!std::isfinite(shift_))
         throw Error("ShiftedTimeField: the time shift must be finite");
+    innerGrid_ = inner_->grid();
+    if (innerGrid_)
+        for (double t : innerGrid_->recordTimes())
+            recordTimes_.push_back(t - shift_);
+}
+
+bool ShiftedTimeField::velocityBounds(const Region &region, double &uMin, double &uMax, double &vMin,
+                                      double &vMax) const
+{
+    Region r = region;
+    r.tMin += shift_;
+    r.tMax += shift_;
+    return inner_->velocityBounds(r, uMin, uMax, vMin, vMax);
+}
+
+Region ShiftedTimeField::extent() const
+{
+    Region r = innerGrid_->extent();
+    r.tMin -= shift_;
+    r.tMax -= shift_;
+    return r;
 }
 
 double ShiftedTimeField::maxSpeed(const Region &region) const

@@ -7,6 +7,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/RankineVortex.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CurrentFieldRegistry.cpp
   ${CMAKE_CURRENT_LIST_DIR}/ShiftedTimeField.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/ForecastRuns.cpp
   ${CMAKE_CURRENT_LIST_DIR}/EnsembleField.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CorrectedField.cpp
   ${CMAKE_CURRENT_LIST_DIR}/CorrectionFit.cpp

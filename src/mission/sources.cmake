@@ -33,6 +33,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/inputs/ProblemInputs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/ForecastRequest.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/ProblemField.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/inputs/Runs.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/FieldChecks.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/Frame.cpp
   ${CMAKE_CURRENT_LIST_DIR}/inputs/LandInputs.cpp

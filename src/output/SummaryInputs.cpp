@@ -112,6 +112,24 @@ void forecastJson(const MissionProblem &problem, json &j)
     j["forecast_sources"] = forecastSourcesJson(problem);
 }
 
+json forecastRunJson(const MissionProblem &problem, const PlannedPath &plan)
+{
+    if (!problem.runs())
+        return nullptr;
+    const MissionSpec &m = problem.getSpec();
+    const ForecastRun &run = (*problem.runs())[problem.runIndex()];
+    const bool arrived = plan.solved && !plan.path.empty();
+    return {{"file", withoutCredentials(run.file)},
+            {"run", problem.runIndex() + 1},
+            {"runs", problem.runs()->size()},
+            {"reference_time", m.isoTime(run.reference)},
+            {"reference_from", run.referenceFrom},
+            {"available_since", m.isoTime(run.available)},
+            {"run_delay_hours", m.current.runDelay / 3600.0},
+            {"lead_time_at_arrival_hours",
+             arrived ? jnum((plan.path.back().t - run.reference) * m.timeUnitSeconds / 3600.0) : json(nullptr)}};
+}
+
 /// The glider's observations: what was read, rejected and used, and the correction's size (null without them).
 json observationsJson(const MissionProblem &problem)
 {

@@ -528,6 +528,7 @@ std::string summaryJson(const MissionResult &r, const MissionProblem &problem, c
     j["current"] = m.current.type;
     j["current_ensemble"] = summary_detail::currentEnsembleJson(m.current);
     summary_detail::forecastJson(problem, j);
+    j["forecast_run"] = summary_detail::forecastRunJson(problem, p);
     j["forecast_notes"] = json::array();
     for (const std::string &note : r.forecastNotes)
         j["forecast_notes"].push_back(jtext(note));

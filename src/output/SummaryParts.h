@@ -19,6 +19,9 @@ json currentEnsembleJson(const CurrentSpec &c);
 /// The forecast's kind of source, its files and its remote sources (current_source, forecast_files,
 /// forecast_sources), into @p j.
 void forecastJson(const MissionProblem &problem, json &j);
+/// With forecast runs, the run planned on (null for one forecast): its file, number, reference time, where that
+/// was read, when it became available, and the lead time at the plan's arrival (hours; null without a route).
+json forecastRunJson(const MissionProblem &problem, const PlannedPath &plan);
 /// The glider's observations: what was read, rejected and used, and the correction's size (null without them).
 json observationsJson(const MissionProblem &problem);
 /// The probability of reach (null without it): members, weights, grid, horizon, frames, the goal's probability,

@@ -119,6 +119,11 @@ struct ForecastTimeAxis
     double originSeconds{0.0};             ///< first time, seconds since the calendar epoch (dated axes; 0 otherwise)
     std::size_t size{0};                   ///< number of forecast times
     double span{0.0}; ///< last minus first time: seconds (dated axes) or the file's units (raw values)
+    /// A forecast run's reference time (dated axes), seconds since the calendar epoch: CF `forecast_reference_time`
+    /// (a variable of one value with that standard name or name, else a global attribute of that name holding a
+    /// date), else the first time; NaN for an undated or steady axis
+    double referenceSeconds{std::numeric_limits<double>::quiet_NaN()};
+    std::string referenceFrom; ///< where referenceSeconds came from ("variable 'forecast_reference_time'", ...)
 };
 
 /// @brief The frame and clock of a loaded forecast: how planning-frame points and field times become positions

@@ -15,6 +15,7 @@
 #include "ompl_glider/Geometry.h"
 #include "ompl_glider/cost/DiveProfile.h"
 #include "ompl_glider/current/CorrectedField.h"
+#include "ompl_glider/current/ForecastRuns.h"
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/current/ForecastSource.h"
 #include "ompl_glider/environment/KeepOffZone.h"
@@ -74,6 +75,11 @@ public:
     /// @brief The ocean an execution flies in (MissionSpec::execution.truth, on the forecast's frame and time
     /// axis); the forecast itself when no truth is given.
     const std::shared_ptr<const CurrentField> &getTruth() const { return truth_ ? truth_ : field_; }
+    /// @brief The forecast's runs (MissionSpec current.runs; null: one forecast): getField() is run runIndex(), the
+    /// newest available at the departure.
+    const std::shared_ptr<const ForecastRuns> &runs() const { return runs_; }
+    /// @brief The run planned on (with runs()).
+    std::size_t runIndex() const { return run_; }
     /// @brief The members of an ensemble current (on the forecast's frame and dates; the first read as the forecast);
     /// empty for a single source. getField() is then their mean (EnsembleMeanField).
     const std::vector<std::shared_ptr<const CurrentField>> &getMembers() const { return members_; }
@@ -196,6 +202,8 @@ private:
     std::shared_ptr<const CurrentField> truth_;                       // null: the forecast
     std::vector<std::shared_ptr<const CurrentField>> members_;        // ensemble members (empty: one source)
     std::vector<std::shared_ptr<const CurrentField>> weighedMembers_; // the members the observations weighed
+    std::shared_ptr<const ForecastRuns> runs_;                        // the forecast's runs (null: one forecast)
+    std::size_t run_{0};                                              // the run planned on
     std::shared_ptr<const Environment> environment_;
     PlanningFrame frame_; // projection, units and box
     std::vector<std::string> forecastFiles_;

@@ -127,6 +127,12 @@ struct CurrentSpec
     std::vector<std::string> files;
     /// @brief The forecast's files: `files`, else `file` alone.
     std::vector<std::string> forecastFiles() const { return files.empty() ? std::vector<std::string>{file} : files; }
+    /// gridded: forecast runs (`current.runs`), each file one run (resolved, glob patterns expanded; `file` is the
+    /// first, for names and messages); empty: one forecast. A plan at time t is made on the newest run available at
+    /// t (ForecastRuns.h); an execution replans as runs arrive.
+    std::vector<std::string> runs;
+    /// gridded runs: how long after its reference time a run becomes available (field time units: seconds)
+    double runDelay{12.0 * 3600.0};
     /// gridded: role (u, v, lon, lat, x, y, depth, time, mask, angle) -> name (mask "none": no land/sea mask
     /// variable; angle "none": no grid angle)
     std::map<std::string, std::string> variables;
@@ -162,6 +168,17 @@ struct CurrentSpec
     bool steady{false};
     SourceMark mark; ///< where the current block is
 };
+
+/// @brief What a flight's learning from the DAC keeps when a new forecast run arrives.
+enum class AcrossRuns
+{
+    Carry, ///< "carry": every DAC kept, compared again with the new run
+    Reset  ///< "reset": only the DAC measured since the new run arrived (OceanPlatformControl's choice)
+};
+/// @brief "carry" or "reset".
+const char *acrossRunsName(AcrossRuns a);
+/// @brief The choice named @p name. @throws Error for another name (saying which are known).
+AcrossRuns parseAcrossRuns(const std::string &name);
 
 /// @brief The planning box (x/y or lon/lat; lon/lat boxes are projected to their x/y bounding box).
 struct RegionSpec
@@ -486,7 +503,9 @@ struct ExecutionSpec
     double minDistance{std::numeric_limits<double>::quiet_NaN()}; ///< batch: shortest start-goal distance;
                                                                   ///< NaN: a quarter of the box's diagonal
     unsigned threads{0};                                          ///< batch: parallel runs (0: all cores)
-    SourceMark mark;                                              ///< where the section is
+    /// With forecast runs: what the DAC learning keeps when a new run arrives
+    AcrossRuns acrossRuns{AcrossRuns::Carry};
+    SourceMark mark; ///< where the section is
 };
 
 /// @brief A via point a resumed mission dropped: the glider reached it before its last fix.

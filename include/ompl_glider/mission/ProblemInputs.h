@@ -12,6 +12,7 @@
 
 #include "ompl_glider/Geometry.h"
 #include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/current/ForecastRuns.h"
 #include "ompl_glider/current/ForecastSource.h"
 #include "ompl_glider/io/Coastline.h"
 #include "ompl_glider/io/RemoteSource.h"
@@ -55,6 +56,10 @@ struct ProblemInputs
     std::vector<std::shared_ptr<const CurrentField>> members;
     /// The ocean an execution flies in (null: the forecast)
     std::shared_ptr<const CurrentField> truth;
+    /// The forecast's runs (`current.runs`; null: one forecast): `field` is run `run`, the newest available at the
+    /// departure
+    std::shared_ptr<const ForecastRuns> runs;
+    std::size_t run{0};                     ///< the run planned on
     PlanningFrame frame;                    ///< the frame everything is read in
     std::vector<std::string> forecastFiles; ///< the forecast's files or URLs read, in time order
     std::vector<std::string> forecastNotes; ///< what reading the forecast decided that a pilot should know

@@ -162,6 +162,9 @@ struct TimeValues
 /// when the units or calendar are not understood, or when the variable has no values, holds fill values or
 /// non-finite numbers, or is not strictly increasing.
 TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, const std::string &unitsOverride = "");
+/// A forecast run's reference time into @p axis (dated): ForecastTimeAxis::referenceSeconds and referenceFrom.
+/// @throws Error for a reference-time variable of more or fewer than one value, or a date not understood.
+void readReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis);
 
 /// The one record of GriddedCurrentOptions::steadyRecord and its date.
 struct SteadyRecord

@@ -252,6 +252,54 @@ AxisSelection selectForecastTimes(const std::vector<double> &ts, const std::stri
     }
     return s;
 }
+
+void readReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis)
+{
+    const std::string calendar = calendarName(axis.calendar);
+    for (int var = 0; var < f.nvars(); ++var)
+    {
+        const std::string name = f.varName(var);
+        if (lower(f.attText(var, "standard_name").value_or("")) != "forecast_reference_time" &&
+            lower(name) != "forecast_reference_time")
+            continue;
+        const std::vector<double> v = f.readAll1D(var);
+        if (v.size() != 1 || !std::isfinite(v[0]))
+            throw f.error("variable '" + name + "' (forecast_reference_time) holds " + std::to_string(v.size()) +
+                          " values; a forecast run has one reference time (a file of several runs, a THREDDS FMRC "
+                          "collection, is read by its 'run' dimension)");
+        const std::string units = unitsOf(f, var);
+        CfTimeUnits cu;
+        try
+        {
+            cu = parseCfTimeUnits(units, f.attText(var, "calendar").value_or(calendar));
+        }
+        catch (const Error &e)
+        {
+            throw f.error("variable '" + name + "' (forecast_reference_time): " + e.what());
+        }
+        if (cu.calendar != axis.calendar)
+            throw f.error("variable '" + name + "' (forecast_reference_time): its calendar (" +
+                          calendarName(cu.calendar) + ") differs from the time axis's (" + calendar + ")");
+        axis.referenceSeconds = cu.reference + v[0] * cu.secondsPerUnit;
+        axis.referenceFrom = "variable '" + name + "'";
+        return;
+    }
+    if (const std::optional<std::string> text = f.attText(kGlobalAttributes, "forecast_reference_time"))
+    {
+        try
+        {
+            axis.referenceSeconds = secondsSinceCalendarEpoch(*text, axis.calendar);
+        }
+        catch (const Error &e)
+        {
+            throw f.error("global attribute 'forecast_reference_time' ('" + *text + "'): " + e.what());
+        }
+        axis.referenceFrom = "global attribute 'forecast_reference_time'";
+        return;
+    }
+    axis.referenceSeconds = axis.originSeconds;
+    axis.referenceFrom = "its first time (no forecast_reference_time)";
+}
 } // namespace gridded_detail
 
 ForecastTimeAxis readForecastTimeAxis(const std::string &path, const GriddedCurrentOptions &options)
@@ -292,6 +340,8 @@ ForecastTimeAxis readForecastTimeAxis(const std::string &path, const GriddedCurr
     axis.originSeconds = tv.originSeconds;
     axis.size = tv.times.size();
     axis.span = tv.times.empty() ? 0.0 : tv.times.back() - tv.times.front();
+    if (axis.dated)
+        readReferenceTime(f, axis);
     return axis;
 }
 

@@ -10,6 +10,7 @@
 namespace ompl_glider
 {
 struct LoadedForecast;
+struct CurrentFieldKind;
 
 namespace inputs_detail
 {
@@ -25,6 +26,12 @@ void loadTruth(ProblemInputs &in);
 /// errors name @p field.
 std::shared_ptr<const CurrentField> loadSource(const ProblemInputs &in, const CurrentSpec &source,
                                                const std::string &field);
+
+// Runs.cpp
+
+/// A forecast given as runs (current.runs): in.runs, in.run (the newest available at the departure) and the field,
+/// frame and notes of that run, read as the mission given its file alone reads it.
+void loadRuns(ProblemInputs &in, const CurrentFieldKind &kind);
 
 // FieldChecks.cpp
 

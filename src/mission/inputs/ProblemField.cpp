@@ -36,6 +36,8 @@ void loadField(ProblemInputs &in)
         in.frame.projectionScale = m.lengthUnitMetres;
         return;
     }
+    if (!m.current.runs.empty())
+        return loadRuns(in, *kind);
     LoadedForecast forecast;
     try
     {

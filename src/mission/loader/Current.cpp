@@ -25,6 +25,29 @@ namespace
 /// Time origin of a gridded forecast (its first time, as its source loads it): ISO dates of the mission are field
 /// times in the file's calendar, and the outputs get calendar dates. The time axis is found by the source's own
 /// detection (GriddedSource::timeAxis(): variables.time, else the source's rules).
+/// The time axis of the earliest of forecast runs (the mission's clock starts at its first time): each run's axis
+/// must be dated, not steady, and on one calendar. @throws Error naming the run at fault.
+ForecastTimeAxis earliestRun(const CurrentFieldKind &kind, ForecastRequest o, const std::vector<std::string> &runs)
+{
+    ForecastTimeAxis first;
+    for (const std::string &run : runs)
+    {
+        o.files = {run};
+        const ForecastTimeAxis axis = kind.source->timeAxis(o);
+        if (!axis.found || axis.steady || !axis.dated)
+            throw Error("forecast run '" + run + "': " +
+                        (axis.dated ? std::string("one time only; a run is a forecast over time")
+                                    : std::string("its time axis has no dates ('<unit> since <date>'): a run's "
+                                                  "reference time and availability are dates")));
+        if (run != runs.front() && axis.calendar != first.calendar)
+            throw Error("forecast run '" + run + "': its calendar (" + calendarName(axis.calendar) +
+                        ") differs from the first run's (" + calendarName(first.calendar) + ")");
+        if (run == runs.front() || axis.originSeconds < first.originSeconds)
+            first = axis;
+    }
+    return first;
+}
+
 void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const CurrentFieldKind &kind = *findCurrentFieldKind(m.current.type);
@@ -40,7 +63,7 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
     ForecastTimeAxis axis;
     try
     {
-        axis = kind.source->timeAxis(o);
+        axis = m.current.runs.empty() ? kind.source->timeAxis(o) : earliestRun(kind, o, m.current.runs);
     }
     catch (const Error &e)
     {
@@ -54,7 +77,7 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
             r.fail(n["variables"]["time"], field, what);
         if (!uName.empty() && field == "current.variables.u")
             r.fail(n["variables"]["u"], field, what);
-        r.fail(n["file"], "current.file", what);
+        r.fail(n["file"] ? n["file"] : n["runs"], n["file"] ? "current.file" : "current.runs", what);
     }
     m.current.steady = axis.steady;
     if (!axis.found || !axis.dated)
@@ -64,6 +87,24 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
     fc.originSeconds = axis.originSeconds;
     m.fileCalendar = fc;
     m.epoch = fc.originSeconds - secondsSinceCalendarEpoch(DateTime{}, axis.calendar);
+}
+
+/// current.runs (read with the files by readCurrentSource()) and current.run_delay: only for a gridded forecast.
+void readRuns(const Reader &r, const YAML::Node &n, MissionSpec &m)
+{
+    if (!n.IsMap())
+        return;
+    for (const char *key : {"runs", "run_delay"})
+        if (n[key] && !m.current.isForecast())
+            r.fail(n[key], std::string("current.") + key,
+                   "only for type " + griddedKindList(" or ") + " (forecast runs read from files)");
+    if (!n["run_delay"])
+        return;
+    if (!n["runs"])
+        r.fail(n["run_delay"], "current.run_delay", "given without 'runs': the delay is that of forecast runs");
+    m.current.runDelay = duration(r, n["run_delay"], "current.run_delay", m);
+    if (!(m.current.runDelay >= 0.0))
+        r.fail(n["run_delay"], "current.run_delay", "expected a duration >= 0, such as '12 h'");
 }
 
 /// current.velocity_units (checked with UDUNITS-2 now: it does not depend on the file), current.time_units
@@ -176,7 +217,8 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
             readFileCalendar(r, l[0], m);
         return;
     }
-    readCurrentSource(r, n, "current", m.current);
+    readCurrentSource(r, n, "current", m.current, {"runs", "run_delay"});
+    readRuns(r, n, m);
     if (m.current.isForecast())
         readFileCalendar(r, n, m);
 }
@@ -222,9 +264,20 @@ void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &
             r.fail(n[key], f + "." + key, "only for type " + griddedKindList(" or ") + " (a forecast read from files)");
     if (!gridded)
         return;
-    if (!n["file"])
+    if (n["runs"]) // forecast runs in place of one forecast (readRuns())
+    {
+        if (n["file"])
+            r.fail(n["file"], f + ".file",
+                   "both 'file' and 'runs' given: give the forecast's files as 'file', or its runs (each file one "
+                   "run) as 'runs'");
+        readForecastFiles(r, n["runs"], f + ".runs", c);
+        c.runs = c.forecastFiles();
+        c.files.clear();
+    }
+    else if (!n["file"])
         r.fail(n, f + ".file", "missing: the forecast's file (type " + c.type + ")");
-    readForecastFiles(r, n["file"], f + ".file", c);
+    else
+        readForecastFiles(r, n["file"], f + ".file", c);
     if (n["variables"])
     {
         r.checkMap(n["variables"], f + ".variables",

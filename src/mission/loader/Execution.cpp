@@ -3,16 +3,33 @@
 #include <set>
 
 #include "MissionReader.h"
+#include "ompl_glider/Exception.h"
 #include "ompl_glider/execution/Execution.h"
+
+namespace ompl_glider
+{
+const char *acrossRunsName(AcrossRuns a)
+{
+    return a == AcrossRuns::Reset ? "reset" : "carry";
+}
+
+AcrossRuns parseAcrossRuns(const std::string &name)
+{
+    for (AcrossRuns a : {AcrossRuns::Carry, AcrossRuns::Reset})
+        if (name == acrossRunsName(a))
+            return a;
+    throw Error("unknown choice '" + name + "' (expected carry or reset)");
+}
+} // namespace ompl_glider
 
 namespace ompl_glider::mission_loader
 {
 void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
 {
     const std::string f = "execution";
-    r.checkMap(
-        n, f,
-        {"truth", "surfacing_interval", "strategies", "radius", "replan_every", "duration", "batch", "dac_noise"});
+    r.checkMap(n, f,
+               {"truth", "surfacing_interval", "strategies", "radius", "replan_every", "duration", "batch", "dac_noise",
+                "across_runs"});
     ExecutionSpec &e = m.execution;
     e.enabled = true;
     e.mark = {r.file(), r.line(n)};
@@ -70,6 +87,13 @@ void readExecution(const Reader &r, const YAML::Node &n, MissionSpec &m)
             r.fail(n["dac_noise"], f + ".dac_noise",
                    "no strategy measures a DAC, so the noise on it would change nothing: add dac or replan_observed "
                    "to execution.strategies, or leave dac_noise out");
+    }
+    if (n["across_runs"])
+    {
+        if (m.current.runs.empty())
+            r.fail(n["across_runs"], f + ".across_runs",
+                   "given without forecast runs (current.runs): there is no new run to carry the learning across");
+        e.acrossRuns = parseAcrossRuns(r.oneOf(n["across_runs"], f + ".across_runs", {"carry", "reset"}));
     }
     if (n["batch"])
     {

@@ -212,4 +212,18 @@ std::string planning_detail::frozenFieldNote(const MissionProblem &problem, cons
            " of the route";
 }
 
+std::string planning_detail::forecastRunNote(const MissionProblem &problem, const PlannedPath &plan)
+{
+    if (!problem.runs())
+        return "";
+    const MissionSpec &m = problem.getSpec();
+    const ForecastRun &run = (*problem.runs())[problem.runIndex()];
+    std::string out = "planned on forecast run " + std::to_string(problem.runIndex() + 1) + " of " +
+                      std::to_string(problem.runs()->size()) + ", '" + run.file + "': reference time " +
+                      m.isoTime(run.reference) + " (" + run.referenceFrom + "), available since " +
+                      m.isoTime(run.available) + ", the newest at the departure";
+    if (plan.solved && !plan.path.empty())
+        out += "; lead time at arrival " + m.durationText(plan.path.back().t - run.reference);
+    return out;
+}
 } // namespace ompl_glider

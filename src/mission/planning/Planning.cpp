@@ -423,6 +423,8 @@ MissionResult runMission(const MissionProblem &problem, const RunOptions &option
     }
     result.safetyNote = problem.safetyNote();
     result.forecastNotes = problem.forecastNotes();
+    if (const std::string run = planning_detail::forecastRunNote(problem, result.plan); !run.empty())
+        result.forecastNotes.insert(result.forecastNotes.begin(), run);
     for (const std::string &note : problem.endpointNotes())
         result.forecastNotes.push_back(note);
     // how the glider's DAC corrected the forecast: the report's words for a pilot (correctionLines()), summary.json's

@@ -162,6 +162,10 @@ void addPlanningWork(PlannedPath &to, const PlannedPath &from);
 /// (...)"; empty otherwise.
 std::string frozenFieldNote(const MissionProblem &problem, const PlannedPath &plan);
 
+/// With forecast runs: "planned on forecast run 5 of 21, 'FILE': reference time DATE (where it was read), available
+/// since DATE, the newest at the departure; lead time at arrival 18 d 9.3 h"; empty for one forecast.
+std::string forecastRunNote(const MissionProblem &problem, const PlannedPath &plan);
+
 // Isochrones.cpp
 
 /// Contour @p lines of the planning frame in lon/lat: the isochrones' and the probability of reach's; empty where

@@ -46,9 +46,9 @@ MissionProblem::~MissionProblem() = default;
 MissionProblem::MissionProblem(MissionSpec spec) : MissionProblem(loadProblemInputs(std::move(spec))) {}
 
 MissionProblem::MissionProblem(const ProblemInputs &in)
-    : spec_(in.spec), field_(in.field), truth_(in.truth), members_(in.members), frame_(in.frame),
-      forecastFiles_(in.forecastFiles), forecastNotes_(in.forecastNotes), remoteSources_(in.remoteSources),
-      coastlineNote_(in.coastlineNote), diveBathymetry_(in.diveBathymetry)
+    : spec_(in.spec), field_(in.field), truth_(in.truth), members_(in.members), runs_(in.runs), run_(in.run),
+      frame_(in.frame), forecastFiles_(in.forecastFiles), forecastNotes_(in.forecastNotes),
+      remoteSources_(in.remoteSources), diveBathymetry_(in.diveBathymetry), coastlineNote_(in.coastlineNote)
 {
     if (in.wind)
         fieldWord_ = "wind";

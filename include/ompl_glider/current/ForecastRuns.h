@@ -1,0 +1,109 @@
+#pragma once
+/// @file ForecastRuns.h
+/// @brief A stream of forecast runs: the files a model issues one run at a time (Copernicus Marine's daily 10-day
+/// forecast, HYCOM/ESPC's and RTOFS's daily runs), each with its reference time and the time it becomes available
+/// (the reference time plus a delay). At a time t a pilot plans on the newest run available at t; a glider at sea
+/// steers on the newest run's current. The runs' fields are read on the mission's clock, each once, when first
+/// asked for.
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ompl_glider/current/CurrentField.h"
+
+namespace ompl_glider
+{
+/// @brief One forecast run (times on the mission's clock: field time).
+struct ForecastRun
+{
+    std::string file;          ///< the file or URL holding it
+    double reference{0.0};     ///< its reference time (CF forecast_reference_time; else its first time)
+    double available{0.0};     ///< when it became available: reference + the run delay
+    double begin{0.0};         ///< its first time
+    double end{0.0};           ///< its last time
+    std::string referenceFrom; ///< where the reference time was read (ForecastTimeAxis::referenceFrom)
+};
+
+/// @brief The runs of a mission, ordered by reference time, and their fields (loaded once each, on first use;
+/// thread-safe).
+class ForecastRuns
+{
+public:
+    /// Reads one run's field on the mission's clock.
+    using Loader = std::function<std::shared_ptr<const CurrentField>(const ForecastRun &)>;
+
+    /// @brief @p runs (at least one; sorted here by reference time, a later file first among equal ones is refused
+    /// by the caller) read by @p load. @throws Error for no run or no loader.
+    ForecastRuns(std::vector<ForecastRun> runs, Loader load);
+
+    const std::vector<ForecastRun> &runs() const { return runs_; }
+    std::size_t size() const { return runs_.size(); }
+    const ForecastRun &operator[](std::size_t k) const { return runs_.at(k); }
+
+    /// @brief The newest run available at @p t (available <= t); nullopt before the first run is available.
+    std::optional<std::size_t> newestAt(double t) const;
+    /// @brief The run planned on at @p t: newestAt(t), else the first run (a time before any is available).
+    std::size_t runAt(double t) const { return newestAt(t).value_or(0); }
+    /// @brief The times after @p t0 at which a newer run than the one at @p t0 becomes available, ascending.
+    std::vector<double> arrivalsAfter(double t0) const;
+
+    /// @brief Run @p k's field (read on first use, then shared). @throws Error as the loader does.
+    std::shared_ptr<const CurrentField> field(std::size_t k) const;
+    /// @brief Gives run @p k the field @p f already read (the plan's run, read with the mission's records).
+    void setField(std::size_t k, std::shared_ptr<const CurrentField> f);
+
+private:
+    struct Slot
+    {
+        std::mutex lock;
+        std::shared_ptr<const CurrentField> field;
+    };
+    std::vector<ForecastRun> runs_;
+    Loader load_;
+    std::vector<std::unique_ptr<Slot>> slots_;
+};
+
+/// @brief The forecast as it is known at a time: for each time t, the current of the newest run available at t
+/// ("live": what a glider at sea steers on), or, as known at a fixed time @p asOf, the newest run then wherever it
+/// covers t and, before its first time, the run that was newest at t (a DAC measured in the past compared with
+/// what was forecast for it, as recent as the runs allow). Land, grid and name are the first run's (one model's
+/// runs share a grid). Every run is read when it is made (its queries take no lock).
+class RunStreamField : public CurrentField
+{
+public:
+    /// @brief The live stream of @p runs (not null).
+    explicit RunStreamField(std::shared_ptr<const ForecastRuns> runs);
+    /// @brief The runs as known at @p asOf.
+    RunStreamField(std::shared_ptr<const ForecastRuns> runs, double asOf);
+
+    /// @brief The run whose current is given at @p t.
+    std::size_t runFor(double t) const;
+
+    double maxSpeed(const Region &region) const override;
+    bool inWater(double x, double y, double z) const override { return first_->inWater(x, y, z); }
+    bool segmentInWater(double x1, double y1, double x2, double y2, double z) const override
+    {
+        return first_->segmentInWater(x1, y1, x2, y2, z);
+    }
+    std::vector<Segment2> landBoundary(double z) const override { return first_->landBoundary(z); }
+    double timeBegin() const override { return first_->timeBegin(); }
+    double timeEnd() const override;
+    std::string name() const override;
+    const FieldGrid *grid() const override { return first_->grid(); }
+
+protected:
+    Velocity evaluate(double x, double y, double z, double t) const override;
+    Jacobian evaluateJacobian(double x, double y, double z, double t) const override;
+
+private:
+    std::shared_ptr<const ForecastRuns> runs_;
+    std::optional<std::size_t> asOf_; ///< the run newest at the fixed time (unset: live)
+    std::vector<std::shared_ptr<const CurrentField>> fields_; ///< the runs' fields
+    std::shared_ptr<const CurrentField> first_;
+};
+} // namespace ompl_glider
