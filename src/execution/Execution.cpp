@@ -255,6 +255,7 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
     LearnedForecast learned(forecast, o);
     const auto learnedNow = [&]() -> const std::shared_ptr<const CurrentField> & { return learned.of(r.measured); };
     unsigned surfacings = 0;
+    std::size_t nextRun = 0; // the first of o.replanAt not yet replanned at
     const TimedPoint &goal = plan.back();
     const double t0 = plan.front().t;
     r.plannedArrival = goal.t;
@@ -276,7 +277,10 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
     {
         // at the surface: a new plan (replanning), then the heading for the next dive
         const bool replanning = strategy == ControlStrategy::Replan || strategy == ControlStrategy::ReplanObserved;
-        if (replanning && surfacings++ % o.replanEvery == 0)
+        bool due = replanning && surfacings++ % o.replanEvery == 0;
+        for (; replanning && nextRun < o.replanAt.size() && o.replanAt[nextRun] <= t; ++nextRun)
+            due = true; // a new forecast run since the last surfacing
+        if (due)
         {
             std::vector<TimedPoint> fresh = strategy == ControlStrategy::Replan
                                                 ? o.replan(x, y, t, active)

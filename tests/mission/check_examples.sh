@@ -11,6 +11,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail=0
 count=0
+# the forecast runs of examples/jet_runs_execution.yaml are generated, not kept in git (scripts/make_forecast_runs.py)
+[ -d "$root/examples/jet_runs" ] || python3 "$root/scripts/make_forecast_runs.py" --out "$root/examples/jet_runs" >/dev/null
 for f in "$root"/examples/*.yaml; do
   name=$(basename "$f" .yaml)
   extra=()

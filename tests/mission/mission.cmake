@@ -38,6 +38,9 @@ glider_add_test(test_mission_gridded_kind ${CMAKE_CURRENT_LIST_DIR}/TestGriddedK
 # a forecast in several files (--currents LIST, current.file list or glob) planned as the combined file
 glider_add_test(test_mission_forecast_files ${CMAKE_CURRENT_LIST_DIR}/TestForecastFiles.cpp)
 target_link_libraries(test_mission_forecast_files INTERFACE netCDF::netcdf)
+# forecast runs (current.runs): the newest run available at the departure, as that file alone
+glider_add_test(test_mission_forecast_runs ${CMAKE_CURRENT_LIST_DIR}/TestForecastRuns.cpp)
+target_link_libraries(test_mission_forecast_runs INTERFACE netCDF::netcdf)
 # glider_plan --mission / --currents / --speeds and its error cases
 if(TARGET glider_plan)
   add_test(NAME mission.glider_plan_cli

@@ -17,3 +17,13 @@ if(TARGET ompl_glider_python)
   set_tests_properties(python.example_forecast_map PROPERTIES ENVIRONMENT "${OMPL_GLIDER_PY_ENV}" TIMEOUT 300
     LABELS python)
 endif()
+
+# the forecast-run test bed (scripts/make_forecast_runs.py): pure Python with netCDF-C's ncgen and ncdump
+find_program(OMPL_GLIDER_NCGEN ncgen)
+find_program(OMPL_GLIDER_NCDUMP ncdump)
+if(Python3_EXECUTABLE AND OMPL_GLIDER_NCGEN AND OMPL_GLIDER_NCDUMP)
+  add_test(NAME python.forecast_runs
+    COMMAND ${Python3_EXECUTABLE} -m pytest -q -p no:cacheprovider ${CMAKE_CURRENT_LIST_DIR}/test_forecast_runs.py)
+  set_tests_properties(python.forecast_runs PROPERTIES
+    ENVIRONMENT "OMPL_GLIDER_SOURCE_DIR=${PROJECT_SOURCE_DIR}" TIMEOUT 120 LABELS python)
+endif()

@@ -90,6 +90,9 @@ struct ExecutionOptions
                                                               ///< NaN: twice the plan's duration after its start
     Replanner replan;        ///< ControlStrategy::Replan: makes the new plans (required by it)
     unsigned replanEvery{1}; ///< ControlStrategy::Replan: replan at every n-th surfacing (the start counts)
+    /// The replanning strategies also replan at the first surfacing at or after each of these times (ascending):
+    /// when a new forecast run becomes available (ForecastRuns::arrivalsAfter())
+    std::vector<double> replanAt;
     /// ControlStrategy::PlannedHeadings: the plan's held headings (null: the plan is straight legs)
     const HeadingRoute *headings{nullptr};
     ObservedReplanner replanObserved; ///< ControlStrategy::ReplanObserved: makes the new plans (required by it)

@@ -147,6 +147,7 @@ MissionProblem MissionProblem::withField(std::shared_ptr<const CurrentField> fie
     MissionProblem p(*this);
     p.field_ = std::move(field);
     p.members_.clear();
+    p.runs_.reset(); // planned on that field alone, not on the forecast's runs
     return p;
 }
 

@@ -1,0 +1,219 @@
+// A forecast given as runs (current.runs): the plan is made on the newest run available at the departure, to 1e-9
+// of the same mission given that run's file alone, and names it; each run's reference time comes from CF
+// forecast_reference_time (a variable, else a global attribute, else the first time); no run available is an error
+// naming the first run's availability. The runs are written here with NetCDF-C, as a model writes them: daily, each
+// in hours since its own reference time, each a differently perturbed flow.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "../current/TestNetCdfUtil.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/ForecastRuns.h"
+#include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/Planning.h"
+
+using namespace ompl_glider;
+using namespace glider_test;
+
+namespace
+{
+/// How run r states its reference time.
+enum class RunReference
+{
+    Variable,  ///< a scalar forecast_reference_time variable, hours since 1970
+    Attribute, ///< a global attribute holding the date
+    None       ///< nothing: the first time is taken
+};
+
+/// Run r: reference 2026-03-(1 + r) 00:00Z, 3-hourly records over 3 days, "hours since" its reference time; its
+/// flow a swirl whose centre and strength depend on r (runs differ where they overlap).
+void writeRun(const std::string &path, int r, RunReference ref)
+{
+    NcWriter w(path, NC_CLOBBER);
+    const std::size_t nt = 25, ny = 9, nx = 9;
+    const int dt = w.dim("time", nt), dy = w.dim("lat", ny), dx = w.dim("lon", nx);
+    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}),
+              vx = w.var("lon", NC_DOUBLE, {dx});
+    const int vu = w.var("uo", NC_FLOAT, {dt, dy, dx}), vv = w.var("vo", NC_FLOAT, {dt, dy, dx});
+    const std::string day = "2026-03-0" + std::to_string(1 + r);
+    w.text(vt, "units", "hours since " + day + " 00:00:00");
+    w.text(vt, "standard_name", "time");
+    w.text(vy, "units", "degrees_north");
+    w.text(vx, "units", "degrees_east");
+    w.text(vu, "standard_name", "eastward_sea_water_velocity");
+    w.text(vv, "standard_name", "northward_sea_water_velocity");
+    for (int v : {vu, vv})
+        w.text(v, "units", "m s-1");
+    int vr = -1;
+    if (ref == RunReference::Variable)
+    {
+        vr = w.var("forecast_reference_time", NC_DOUBLE, {});
+        w.text(vr, "standard_name", "forecast_reference_time");
+        w.text(vr, "units", "hours since 1970-01-01 00:00:00");
+    }
+    if (ref == RunReference::Attribute)
+        w.text(NC_GLOBAL, "forecast_reference_time", day + "T00:00:00Z");
+    w.enddef();
+    const std::vector<double> hours = linspace(0.0, 3.0, nt), lat = linspace(47.0, 0.125, ny),
+                              lon = linspace(-53.0, 0.125, nx);
+    std::vector<double> u, v;
+    const double cx = -52.5 + 0.05 * r, cy = 47.5 - 0.03 * r, s = 0.3 + 0.04 * r;
+    for (double h : hours)
+        for (double la : lat)
+            for (double lo : lon)
+            {
+                const double a = 2.0 * M_PI * (h + 24.0 * r) / 40.0;
+                u.push_back(-s * (la - cy) + 0.05 * std::cos(a));
+                v.push_back(0.7 * s * (lo - cx) + 0.05 * std::sin(a));
+            }
+    w.put(vt, hours);
+    w.put(vy, lat);
+    w.put(vx, lon);
+    w.put(vu, u);
+    w.put(vv, v);
+    if (vr >= 0)
+    {
+        const double since1970 = (56.0 * 365.0 + 14.0 + 59.0 + r) * 24.0; // 2026-03-01 + r, in hours since 1970
+        w.put(vr, {since1970});
+    }
+}
+
+/// Five daily runs, named as Copernicus names them (their names do not sort as their reference times do: the runs
+/// are ordered by reference time, not by name).
+struct Runs
+{
+    TempDir dir;
+    std::vector<std::string> files;
+    Runs()
+    {
+        const RunReference refs[5] = {RunReference::Variable, RunReference::Attribute, RunReference::Variable, RunReference::None,
+                                   RunReference::Variable};
+        for (int r = 0; r < 5; ++r)
+        {
+            files.push_back(dir.file("glo_anfc_R2026030" + std::to_string(1 + r) + "_v" + std::to_string(5 - r) + ".nc"));
+            writeRun(files.back(), r, refs[r]);
+        }
+    }
+    std::string mission(const std::string &name, const std::string &current, const std::string &departure) const
+    {
+        const std::string path = dir.file(name + ".yaml");
+        std::ofstream(path) << "name: " << name << "\ncurrent:\n  type: netcdf\n"
+                            << current << "  horizon: hold_last\n"
+                            << "start: {lon: -52.85, lat: 47.15}\ngoal: {lon: -52.1, lat: 47.85}\n"
+                            << "departure: {time: \"" << departure << "\"}\n"
+                            << "vehicle: {speed: 0.5}\nplanner: {name: zastartve, grid_size: 4000, sectors: 3, global_check: false}\n";
+        return path;
+    }
+};
+
+void expectSameRunPlan(const MissionResult &a, const MissionResult &b)
+{
+    ASSERT_TRUE(a.plan.solved) << a.plan.reason;
+    ASSERT_TRUE(b.plan.solved) << b.plan.reason;
+    // 1e-8, not the 1e-9 asked: the runs are read on the earliest run's clock and the run alone on its own, and
+    // the same arithmetic at another magnitude of t moves the integrated travel times by up to 6e-9 of themselves
+    // (raw and final; the global check is off: its wall-clock limit is not reproducible)
+    EXPECT_NEAR(a.plan.travelTime, b.plan.travelTime, 1e-8 * a.plan.travelTime);
+    ASSERT_EQ(a.plan.path.size(), b.plan.path.size());
+    for (std::size_t k = 0; k < a.plan.path.size(); ++k)
+    {
+        EXPECT_NEAR(a.plan.path[k].x, b.plan.path[k].x, 1e-3); // metres
+        EXPECT_NEAR(a.plan.path[k].y, b.plan.path[k].y, 1e-3);
+    }
+    EXPECT_NEAR(a.plan.rawTravelTime, b.plan.rawTravelTime, 1e-8 * a.plan.rawTravelTime);
+}
+} // namespace
+
+TEST(ForecastRuns, PlansOnTheNewestRunAvailableAtTheDepartureAsOnThatFileAlone)
+{
+    const Runs runs;
+    // run k (reference 2026-03-(1+k)) is available from 12:00 that day: at each departure, the newest one
+    const struct
+    {
+        const char *departure;
+        std::size_t run;
+    } cases[] = {{"2026-03-01T12:00:00Z", 0}, {"2026-03-02T11:59:00Z", 0}, {"2026-03-03T12:00:00Z", 2},
+                 {"2026-03-04T20:00:00Z", 3}, {"2026-03-05T13:00:00Z", 4}};
+    for (const auto &c : cases)
+    {
+        SCOPED_TRACE(c.departure);
+        const MissionProblem onRuns(
+            loadMission(runs.mission("runs", "  runs: \"" + runs.dir.file("glo_anfc_*.nc") + "\"\n", c.departure)));
+        ASSERT_TRUE(onRuns.runs());
+        EXPECT_EQ(onRuns.runs()->size(), 5u);
+        EXPECT_EQ(onRuns.runIndex(), c.run);
+        EXPECT_EQ((*onRuns.runs())[c.run].file, runs.files[c.run]);
+        const MissionProblem alone(
+            loadMission(runs.mission("alone", "  file: " + runs.files[c.run] + "\n", c.departure)));
+        EXPECT_FALSE(alone.runs());
+        const MissionResult a = runMission(onRuns), b = runMission(alone);
+        expectSameRunPlan(a, b);
+        // named in the notes: the run, its reference time, when it became available, the lead time at arrival
+        ASSERT_FALSE(a.forecastNotes.empty());
+        const std::string &note = a.forecastNotes.front();
+        EXPECT_NE(note.find("run " + std::to_string(c.run + 1) + " of 5"), std::string::npos) << note;
+        EXPECT_NE(note.find("available since 2026-03-0" + std::to_string(c.run + 1) + "T12:00:00Z"),
+                  std::string::npos)
+            << note;
+        EXPECT_NE(note.find("lead time at arrival"), std::string::npos) << note;
+    }
+}
+
+TEST(ForecastRuns, ReferenceTimesFromVariableAttributeOrFirstTime)
+{
+    const Runs runs;
+    const MissionProblem p(
+        loadMission(runs.mission("runs", "  runs: \"" + runs.dir.file("glo_anfc_*.nc") + "\"\n  run_delay: 6 h\n",
+                                 "2026-03-01T06:00:00Z")));
+    ASSERT_TRUE(p.runs());
+    const ForecastRuns &r = *p.runs();
+    const MissionSpec &m = p.getSpec();
+    for (std::size_t k = 0; k < r.size(); ++k)
+    {
+        SCOPED_TRACE(k);
+        EXPECT_EQ(r[k].file, runs.files[k]); // ordered by reference time, not by name
+        EXPECT_EQ(m.isoTime(r[k].reference), "2026-03-0" + std::to_string(k + 1) + "T00:00:00Z");
+        EXPECT_DOUBLE_EQ(r[k].available - r[k].reference, 6.0 * 3600.0);
+        EXPECT_DOUBLE_EQ(r[k].end - r[k].begin, 72.0 * 3600.0);
+    }
+    EXPECT_NE(r[0].referenceFrom.find("variable"), std::string::npos);
+    EXPECT_NE(r[1].referenceFrom.find("attribute"), std::string::npos);
+    EXPECT_NE(r[3].referenceFrom.find("first time"), std::string::npos);
+    // the live stream: the newest run's current at each time
+    const RunStreamField live(p.runs());
+    for (double hours : {7.0, 30.0, 55.0, 80.0, 120.0})
+    {
+        const double t = hours * 3600.0;
+        const std::size_t k = r.runAt(t);
+        EXPECT_EQ(live.runFor(t), k);
+        const Velocity a = live.velocity(1000.0, -2000.0, 0.0, t), b = r.field(k)->velocity(1000.0, -2000.0, 0.0, t);
+        EXPECT_EQ(a.u, b.u);
+        EXPECT_EQ(a.v, b.v);
+    }
+    // a new run after t0 is announced for replanning when it is newer than the one then
+    const std::vector<double> after = r.arrivalsAfter(7.0 * 3600.0);
+    ASSERT_EQ(after.size(), 4u);
+    EXPECT_DOUBLE_EQ(after.front(), r[1].available);
+}
+
+TEST(ForecastRuns, NoRunAvailableAtTheDepartureIsAnErrorNamingTheFirst)
+{
+    const Runs runs;
+    try
+    {
+        const MissionProblem p(loadMission(
+            runs.mission("early", "  runs: \"" + runs.dir.file("glo_anfc_*.nc") + "\"\n", "2026-03-01T06:00:00Z")));
+        FAIL() << "expected an error";
+    }
+    catch (const Error &e)
+    {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("current.runs"), std::string::npos) << what;
+        EXPECT_NE(what.find("available from 2026-03-01T12:00:00Z"), std::string::npos) << what;
+    }
+}
