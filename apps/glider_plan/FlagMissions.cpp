@@ -72,6 +72,7 @@ std::shared_ptr<const ompl_glider::SettingWords> flagWords()
                                                            {"goal", "--goal"},
                                                            {"region", "--region"},
                                                            {"current.file", "--currents"},
+                                                           {"current.runs", "--currents ... --runs"},
                                                            {"current.horizon: hold_last", "--beyond hold"},
                                                            {"current.zero_velocity_land: false", "--no-zero-land"},
                                                            {"current.depth_average", "--depth-average"},
@@ -248,7 +249,9 @@ MissionSpec forecastMissionOf(Flags f)
     {
         throw UsageError{"--currents " + f.currents + ": " + e.what()};
     }
-    if (files.size() == 1)
+    if (f.runs)
+        f.forecast.current.runs = files; // each file one run
+    else if (files.size() == 1)
         f.forecast.current.file = files.front();
     else
         f.forecast.current.files = files;

@@ -17,6 +17,7 @@
 #include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/UnitConversion.h"
 #include "ompl_glider/io/RemoteSource.h"
+#include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/registry/PlannerRegistry.h"
 
@@ -321,6 +322,36 @@ void defineExecutionFlags(CLI::App &app, Flags &f)
     app.add_option("--execution-seed", f.executionSeed, "seed of the random pairs (default 1)")->group(ex);
 }
 
+/// The flags of a forecast given as runs (with --currents): --runs, --run-delay.
+void defineRunFlags(CLI::App &app, Flags &f)
+{
+    auto *nc = "Forecast files (with --currents)";
+    ForecastInput &fc = f.forecast;
+    CLI::Option *runs =
+        app.add_flag("--runs", f.runs,
+                     "the files of --currents are a forecast's runs, each file one run (reference time from CF "
+                     "forecast_reference_time, else its first time): the plan is made on the newest run available at "
+                     "the departure (default: when the first becomes available), and an execution replans as runs come")
+            ->group(nc);
+    app.add_option_function<std::string>(
+           "--run-delay",
+           [&fc](const std::string &v) {
+               try
+               {
+                   fc.current.runDelay = parseDuration(v, 1.0, true);
+               }
+               catch (const Error &e)
+               {
+                   throw UsageError{"--run-delay " + v + ": " + e.what()};
+               }
+               if (!(fc.current.runDelay >= 0.0))
+                   throw UsageError{"--run-delay " + v + ": expected a duration >= 0, such as '12 h'"};
+           },
+           "with --runs: how long after its reference time a run becomes available (default 12 h)")
+        ->needs(runs)
+        ->group(nc);
+}
+
 /// The flags of reading a forecast (with --currents): NetCDF, OPeNDAP, Zarr, GRIB.
 void defineForecastFlags(CLI::App &app, Flags &f)
 {
@@ -450,6 +481,7 @@ void defineFlags(CLI::App &app, Flags &f)
     defineSafetyFlags(app, f);
     defineExecutionFlags(app, f);
     defineForecastFlags(app, f);
+    defineRunFlags(app, f);
     app.footer("Exit status: 0 path found, 1 no path (the reason is printed), 2 bad arguments or input (a message "
                "says what and where; nothing is written).");
 }

@@ -29,6 +29,7 @@ struct Flags
     std::string via, order;            ///< --via 'lon,lat;lon,lat', --order given|free
     std::string observations;          ///< --observations PATH: the glider's DAC files
     std::string observationsCache;     ///< --observations-cache DIR: a Slocum's cache files
+    bool runs{false};                  ///< --runs: the --currents files are forecast runs
     std::optional<std::string> speeds; // given, even empty, is a sweep request
     std::optional<double> speed, gridSize, timeLimit, depth;
     std::optional<int> sectors;

@@ -143,7 +143,8 @@ class Field:
                 depth_interpolation: str = "linear", time_interpolation: str = "linear", horizon: str = "refuse",
                 velocity_units: str = "", time_units: str = "", steady_record: Optional[int] = None,
                 zero_velocity_land: bool = True, depth_average: Optional[Pair] = None,
-                max_speed: Union[None, float, str] = None) -> "Field":
+                max_speed: Union[None, float, str] = None, runs: bool = False,
+                run_delay: Optional[str] = None) -> "Field":
         """A gridded forecast with the command line's options (``glider_plan --currents``): NetCDF files, OPeNDAP
         URLs, Zarr stores or GRIB files (kind ``gridded``, alias ``netcdf``), or the files of another gridded source
         the library's registry knows by ``kind`` (:func:`is_gridded_kind`).
@@ -154,14 +155,15 @@ class Field:
         """
         return Field._forecast("Field.gridded()", kind, path, variables, depth, xy_interpolation,
                                depth_interpolation, time_interpolation, horizon, velocity_units, time_units,
-                               steady_record, zero_velocity_land, depth_average, max_speed)
+                               steady_record, zero_velocity_land, depth_average, max_speed, runs, run_delay)
 
     @staticmethod
     def netcdf(path: Union[str, os.PathLike, Sequence[str]], *, variables: Optional[Dict[str, str]] = None,
                depth: float = 0.0, xy_interpolation: str = "bilinear", depth_interpolation: str = "linear",
                time_interpolation: str = "linear", horizon: str = "refuse", velocity_units: str = "",
                time_units: str = "", steady_record: Optional[int] = None, zero_velocity_land: bool = True,
-               depth_average: Optional[Pair] = None, max_speed: Union[None, float, str] = None) -> "Field":
+               depth_average: Optional[Pair] = None, max_speed: Union[None, float, str] = None,
+               runs: bool = False, run_delay: Optional[str] = None) -> "Field":
         """A NetCDF forecast with the command line's options (``glider_plan --currents``): :meth:`gridded` by the
         kind's alias ``netcdf`` (its results say ``netcdf``, as glider_plan's do). Reads whatever :meth:`gridded`
         reads (NetCDF files, OPeNDAP URLs, Zarr stores, GRIB files).
@@ -170,18 +172,28 @@ class Field:
         variables: names by role (u, v, lon, lat, depth, time, mask, angle), found automatically when not given.
         The other options are those of the mission format's ``current`` section (examples/MISSION_FORMAT.md);
         max_speed is its ``max_speed``: the fastest current believed (m/s, or a text with a unit: "600 m/s").
+        runs: the files are a forecast's runs, each file one run (``--runs``; the mission format's ``current.runs``):
+        the plan is made on the newest run available at the departure; run_delay (``"12 h"``, the default) is how
+        long after its reference time a run becomes available.
         """
         return Field._forecast("Field.netcdf()", "netcdf", path, variables, depth, xy_interpolation,
                                depth_interpolation, time_interpolation, horizon, velocity_units, time_units,
-                               steady_record, zero_velocity_land, depth_average, max_speed)
+                               steady_record, zero_velocity_land, depth_average, max_speed, runs, run_delay)
 
     @staticmethod
     def _forecast(who: str, kind: str, path: Union[str, os.PathLike, Sequence[str]],
                   variables: Optional[Dict[str, str]], depth: float, xy_interpolation: str, depth_interpolation: str,
                   time_interpolation: str, horizon: str, velocity_units: str, time_units: str,
                   steady_record: Optional[int], zero_velocity_land: bool, depth_average: Optional[Pair],
-                  max_speed: Union[None, float, str] = None) -> "Field":
+                  max_speed: Union[None, float, str] = None, runs: bool = False,
+                  run_delay: Optional[str] = None) -> "Field":
         """The Field of :meth:`gridded` and :meth:`netcdf` (who names the method in messages)."""
+        if not isinstance(runs, (bool, np.bool_)):
+            raise _bad(f"{who}: runs", runs, "True (the files are forecast runs, each one run) or False")
+        if run_delay is not None and (not isinstance(run_delay, str) or not run_delay):
+            raise _bad(f"{who}: run_delay", run_delay, "a duration such as '12 h'")
+        if run_delay is not None and not runs:
+            raise _bad(f"{who}: run_delay", run_delay, "no run_delay without runs=True")
         if not isinstance(kind, str) or not _core.is_gridded_kind(kind):
             raise _bad(f"{who}: kind", kind, "the name of a gridded source (gridded, netcdf, or one registered as "
                        "gridded)")
@@ -197,7 +209,8 @@ class Field:
                      xy_interpolation=xy_interpolation, depth_interpolation=depth_interpolation,
                      time_interpolation=time_interpolation, horizon=horizon, velocity_units=velocity_units,
                      time_units=time_units, steady_record=steady_record, zero_velocity_land=zero_velocity_land,
-                     depth_average=depth_average, max_speed="" if max_speed is None else str(max_speed))
+                     depth_average=depth_average, max_speed="" if max_speed is None else str(max_speed),
+                     runs=bool(runs), run_delay="" if run_delay is None else run_delay)
 
     @staticmethod
     def from_arrays(u: Any, v: Any, *, lon: Any = None, lat: Any = None, x: Any = None, y: Any = None,
@@ -618,7 +631,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                                       s["zero_velocity_land"], s["depth_average"], bool(snap_to_water),
                                       "" if observations is None else os.fspath(observations), field.kind,
                                       "" if observations_cache is None else os.fspath(observations_cache),
-                                      s.get("max_speed", ""))
+                                      s.get("max_speed", ""), s.get("runs", False), s.get("run_delay", ""))
         for used in ("start", "goal", "departure", "speed", "region"):
             keywords.pop(used)
     elif field is not None:

@@ -121,17 +121,33 @@ MissionSpec forecast(const std::string &files, std::optional<Pair> start, Pair g
                      const std::string &velocityUnits, const std::string &timeUnits,
                      std::optional<std::size_t> steadyRecord, bool zeroVelocityLand, std::optional<Pair> depthAverage,
                      bool snapToWater, const std::string &observations, const std::string &kind,
-                     const std::string &observationsCache, const std::string &maxSpeed)
+                     const std::string &observationsCache, const std::string &maxSpeed, bool runs,
+                     const std::string &runDelay)
 {
     ForecastInput in;
     in.current.type = kind; // a gridded kind of the registry (or its alias), kept as named; another: netcdf
     in.snapToWater = snapToWater;
     in.words = keywordWords();
     const std::vector<std::string> list = forecastFileList(files);
-    if (list.size() == 1)
+    if (runs)
+        in.current.runs = list; // each file one run
+    else if (list.size() == 1)
         in.current.file = list.front();
     else
         in.current.files = list;
+    if (!runDelay.empty())
+    {
+        try
+        {
+            in.current.runDelay = parseDuration(runDelay, 1.0, true);
+        }
+        catch (const Error &e)
+        {
+            throw Error("Field.netcdf(): keyword 'run_delay': " + std::string(e.what()));
+        }
+        if (!(in.current.runDelay >= 0.0))
+            throw Error("Field.netcdf(): keyword 'run_delay': expected a duration >= 0, such as '12 h'");
+    }
     in.current.variables = variables;
     in.current.xyInterpolation = parseInterp2D(xy);
     in.current.depthInterpolation = parseInterp1D(depthScheme);
@@ -544,6 +560,7 @@ void bindMission(py::module_ &m)
           py::arg("steady_record") = py::none(), py::arg("zero_velocity_land") = true,
           py::arg("depth_average") = py::none(), py::arg("snap_to_water") = false, py::arg("observations") = "",
           py::arg("kind") = "netcdf", py::arg("observations_cache") = "", py::arg("max_speed") = "",
+          py::arg("runs") = false, py::arg("run_delay") = "",
           "The mission of a gridded forecast, as glider_plan --currents builds it (start None: at the last fix of "
           "`observations`, and its time without a departure, marked so until the mission resumes there; speed None: "
           "the forecast mission's default), read by the gridded source `kind` "

@@ -64,6 +64,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/execution/ExecutionPacking.cpp
   ${CMAKE_CURRENT_LIST_DIR}/execution/ExecutionTruth.cpp
   ${CMAKE_CURRENT_LIST_DIR}/execution/ExecutionOracle.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/execution/ExecutionRuns.cpp
   ${CMAKE_CURRENT_LIST_DIR}/execution/ExecutionOutcome.cpp
   ${CMAKE_CURRENT_LIST_DIR}/planning/ReachProbability.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Reachability.cpp

@@ -91,22 +91,24 @@ struct Runs
     std::vector<std::string> files;
     Runs()
     {
-        const RunReference refs[5] = {RunReference::Variable, RunReference::Attribute, RunReference::Variable, RunReference::None,
-                                   RunReference::Variable};
+        const RunReference refs[5] = {RunReference::Variable, RunReference::Attribute, RunReference::Variable,
+                                      RunReference::None, RunReference::Variable};
         for (int r = 0; r < 5; ++r)
         {
-            files.push_back(dir.file("glo_anfc_R2026030" + std::to_string(1 + r) + "_v" + std::to_string(5 - r) + ".nc"));
+            files.push_back(
+                dir.file("glo_anfc_R2026030" + std::to_string(1 + r) + "_v" + std::to_string(5 - r) + ".nc"));
             writeRun(files.back(), r, refs[r]);
         }
     }
     std::string mission(const std::string &name, const std::string &current, const std::string &departure) const
     {
         const std::string path = dir.file(name + ".yaml");
-        std::ofstream(path) << "name: " << name << "\ncurrent:\n  type: netcdf\n"
-                            << current << "  horizon: hold_last\n"
-                            << "start: {lon: -52.85, lat: 47.15}\ngoal: {lon: -52.1, lat: 47.85}\n"
-                            << "departure: {time: \"" << departure << "\"}\n"
-                            << "vehicle: {speed: 0.5}\nplanner: {name: zastartve, grid_size: 4000, sectors: 3, global_check: false}\n";
+        std::ofstream(path)
+            << "name: " << name << "\ncurrent:\n  type: netcdf\n"
+            << current << "  horizon: hold_last\n"
+            << "start: {lon: -52.85, lat: 47.15}\ngoal: {lon: -52.1, lat: 47.85}\n"
+            << "departure: {time: \"" << departure << "\"}\n"
+            << "vehicle: {speed: 0.5}\nplanner: {name: zastartve, grid_size: 4000, sectors: 3, global_check: false}\n";
         return path;
     }
 };
@@ -137,8 +139,11 @@ TEST(ForecastRuns, PlansOnTheNewestRunAvailableAtTheDepartureAsOnThatFileAlone)
     {
         const char *departure;
         std::size_t run;
-    } cases[] = {{"2026-03-01T12:00:00Z", 0}, {"2026-03-02T11:59:00Z", 0}, {"2026-03-03T12:00:00Z", 2},
-                 {"2026-03-04T20:00:00Z", 3}, {"2026-03-05T13:00:00Z", 4}};
+    } cases[] = {{"2026-03-01T12:00:00Z", 0},
+                 {"2026-03-02T11:59:00Z", 0},
+                 {"2026-03-03T12:00:00Z", 2},
+                 {"2026-03-04T20:00:00Z", 3},
+                 {"2026-03-05T13:00:00Z", 4}};
     for (const auto &c : cases)
     {
         SCOPED_TRACE(c.departure);
@@ -157,8 +162,7 @@ TEST(ForecastRuns, PlansOnTheNewestRunAvailableAtTheDepartureAsOnThatFileAlone)
         ASSERT_FALSE(a.forecastNotes.empty());
         const std::string &note = a.forecastNotes.front();
         EXPECT_NE(note.find("run " + std::to_string(c.run + 1) + " of 5"), std::string::npos) << note;
-        EXPECT_NE(note.find("available since 2026-03-0" + std::to_string(c.run + 1) + "T12:00:00Z"),
-                  std::string::npos)
+        EXPECT_NE(note.find("available since 2026-03-0" + std::to_string(c.run + 1) + "T12:00:00Z"), std::string::npos)
             << note;
         EXPECT_NE(note.find("lead time at arrival"), std::string::npos) << note;
     }
@@ -167,9 +171,8 @@ TEST(ForecastRuns, PlansOnTheNewestRunAvailableAtTheDepartureAsOnThatFileAlone)
 TEST(ForecastRuns, ReferenceTimesFromVariableAttributeOrFirstTime)
 {
     const Runs runs;
-    const MissionProblem p(
-        loadMission(runs.mission("runs", "  runs: \"" + runs.dir.file("glo_anfc_*.nc") + "\"\n  run_delay: 6 h\n",
-                                 "2026-03-01T06:00:00Z")));
+    const MissionProblem p(loadMission(runs.mission(
+        "runs", "  runs: \"" + runs.dir.file("glo_anfc_*.nc") + "\"\n  run_delay: 6 h\n", "2026-03-01T06:00:00Z")));
     ASSERT_TRUE(p.runs());
     const ForecastRuns &r = *p.runs();
     const MissionSpec &m = p.getSpec();

@@ -102,7 +102,7 @@ protected:
 
 private:
     std::shared_ptr<const ForecastRuns> runs_;
-    std::optional<std::size_t> asOf_; ///< the run newest at the fixed time (unset: live)
+    std::optional<std::size_t> asOf_;                         ///< the run newest at the fixed time (unset: live)
     std::vector<std::shared_ptr<const CurrentField>> fields_; ///< the runs' fields
     std::shared_ptr<const CurrentField> first_;
 };

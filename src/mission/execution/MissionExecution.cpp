@@ -12,14 +12,12 @@
 #include <limits>
 #include <memory>
 #include <mutex>
-#include <optional>
 #include <random>
 
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/TaskSpread.h"
 #include "ompl_glider/current/CurrentField.h"
 #include "ompl_glider/current/EnsembleLearning.h"
-#include "ompl_glider/current/ForecastRuns.h"
 #include "ompl_glider/ThreadPool.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -27,6 +25,7 @@
 #include "ExecutionOracle.h"
 #include "ExecutionOutcome.h"
 #include "ExecutionPacking.h"
+#include "ExecutionRuns.h"
 #include "ExecutionTruth.h"
 #include "../planning/PlanningInternal.h"
 
@@ -59,33 +58,6 @@ bool freeAt(const MissionProblem &problem, Point2 p, double t)
         return false;
     const auto &env = problem.getEnvironment();
     return !env || env->pointFree(p.x, p.y, t);
-}
-
-/// With forecast runs (MissionProblem::runs()), @p problem on the newest run available at @p t (ForecastRuns::
-/// runAt()), as a pilot plans then; else @p problem itself.
-MissionProblem onRunAt(const MissionProblem &problem, double t)
-{
-    const auto &runs = problem.runs();
-    if (!runs)
-        return problem;
-    const std::size_t k = runs->runAt(t);
-    return k == problem.runIndex() ? problem.withField(problem.getField()) : problem.withField(runs->field(k));
-}
-
-/// The forecast a glider at sea steers on: with forecast runs, the current of the newest run available at each time
-/// (RunStreamField); else the problem's field.
-std::shared_ptr<const CurrentField> steeringField(const MissionProblem &problem)
-{
-    if (!problem.runs())
-        return problem.getField();
-    return std::make_shared<RunStreamField>(problem.runs());
-}
-
-/// With forecast runs, the times after @p t0 at which a newer run becomes available (the replanning strategies
-/// replan then); else none.
-std::vector<double> runArrivals(const MissionProblem &problem, double t0)
-{
-    return problem.runs() ? problem.runs()->arrivalsAfter(t0) : std::vector<double>{};
 }
 
 /// The rest of @p plan flown from the fix (x, y) at t, re-timed on the forecast: the fix, a leg to one of the
@@ -123,7 +95,8 @@ Replanner replanner(const MissionProblem &mission, Point2 goal, double margin)
 {
     return [&mission, goal, margin](double x, double y, double t,
                                     const std::vector<TimedPoint> &current) -> std::vector<TimedPoint> {
-        const MissionProblem problem = onRunAt(mission, t); // with forecast runs, the newest available now
+        const MissionProblem problem =
+            execution_detail::onRunAt(mission, t); // with forecast runs, the newest available now
         std::vector<TimedPoint> rest = continuation(problem, x, y, t, current);
         const Region &box = problem.getBox();
         if (x < box.xMin || x > box.xMax || y < box.yMin || y > box.yMax)
@@ -163,53 +136,12 @@ ObservedReplanner observedReplanner(const MissionProblem &problem, Point2 goal, 
     };
 }
 
-/// flightLearning() with forecast runs: the learning starts again on each new run (the newest available at the last
-/// DAC), on the runs as known then (RunStreamField as of that time: the new run wherever it covers a DAC's time).
-/// execution.across_runs carry: every DAC kept, those measured before the new run compared with it again (their
-/// forecast read anew at their time and place); reset: only the DAC measured since the new run became available.
-DacLearning runsLearning(const MissionProblem &problem)
-{
-    struct State
-    {
-        std::optional<std::size_t> run;
-        std::shared_ptr<FlightLearning> learning;
-    };
-    auto state = std::make_shared<State>();
-    const std::shared_ptr<const ForecastRuns> runs = problem.runs();
-    const CorrectionParams params = problem.correctionParams();
-    const bool reset = problem.getSpec().execution.acrossRuns == AcrossRuns::Reset;
-    return [state, runs, params, reset](const std::vector<DacObservation> &measured) {
-        const double now = measured.empty() ? -std::numeric_limits<double>::infinity() : measured.back().t;
-        const std::size_t k = runs->runAt(now);
-        if (!state->run || *state->run != k)
-        {
-            state->run = k;
-            state->learning =
-                std::make_shared<FlightLearning>(std::make_shared<RunStreamField>(runs, now),
-                                                 std::vector<std::shared_ptr<const CurrentField>>{}, params);
-        }
-        const double since = (*runs)[k].available;
-        std::vector<DacObservation> kept;
-        for (const DacObservation &d : measured)
-        {
-            if (d.t >= since)
-                kept.push_back(d); // compared with this run as it was measured
-            else if (!reset)
-            {
-                kept.push_back(d);
-                kept.back().forecast.reset(); // compared with the new run at its time and place
-            }
-        }
-        return (*state->learning)(kept);
-    };
-}
-
 /// The forecast the DAC of one flight make, learned as they arrive (FlightLearning: the mission's correction
 /// parameters; an ensemble's members weighed and updated); a new one for each flight (its estimates are the flight's).
 DacLearning flightLearning(const MissionProblem &problem)
 {
     if (problem.runs())
-        return runsLearning(problem);
+        return execution_detail::runsLearning(problem);
     auto learning =
         std::make_shared<FlightLearning>(problem.getField(), problem.getMembers(), problem.correctionParams());
     return [learning](const std::vector<DacObservation> &measured) { return (*learning)(measured); };
@@ -282,7 +214,7 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
     TimedPoint at = run.plan.front();
     std::size_t first = 0;                                // the leg's first point in the plan
     const DacLearning learning = flightLearning(problem); // one for the whole flight: the DAC of every leg
-    const std::shared_ptr<const CurrentField> steering = steeringField(problem);
+    const std::shared_ptr<const CurrentField> steering = execution_detail::steeringField(problem);
     for (std::size_t k = 0; k < run.legs.size(); ++k)
     {
         const bool last = k + 1 == run.legs.size();
@@ -302,7 +234,7 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
         std::vector<TimedPoint> legPlan(run.plan.begin() + static_cast<std::ptrdiff_t>(first),
                                         run.plan.begin() + static_cast<std::ptrdiff_t>(leg.end) + 1);
         if (at.x != legPlan.front().x || at.y != legPlan.front().y || at.t != legPlan.front().t)
-            legPlan = legFrom(onRunAt(problem, at.t), at, to, legPlan);
+            legPlan = legFrom(execution_detail::onRunAt(problem, at.t), at, to, legPlan);
         ExecutionOptions o = flightOptions(problem, settings, radius);
         o.endTime = end;
         o.headings = leg.headings && at.x == leg.headings->start.x && at.y == leg.headings->start.y &&
@@ -318,7 +250,7 @@ FlownTrack flyMission(const MissionProblem &problem, const ExecutionResult &sett
         // planned_headings on a leg of straight legs (or one begun elsewhere) steers as current_sensitive does
         const ControlStrategy flown =
             s == ControlStrategy::PlannedHeadings && !o.headings ? ControlStrategy::CurrentSensitive : s;
-        o.replanAt = runArrivals(problem, at.t);
+        o.replanAt = execution_detail::runArrivals(problem, at.t);
         const FlownTrack f =
             flyPlan(legPlan, speed, *steering, *problem.getTruth(), problem.getEnvironment().get(), flown, o);
         out.fixes.insert(out.fixes.end(), f.fixes.begin() + 1, f.fixes.end());
@@ -388,8 +320,8 @@ void flyRun(const MissionProblem &problem, const ExecutionResult &settings, Exec
     const execution_detail::RunEnd end = execution_detail::runEnd(problem, run.plan.front().t, planned);
     o.endTime = end.time; // never beyond the truth (checkTruthTimes())
     o.headings = run.headings ? &*run.headings : nullptr;
-    o.replanAt = runArrivals(problem, run.plan.front().t);
-    const std::shared_ptr<const CurrentField> steering = steeringField(problem);
+    o.replanAt = execution_detail::runArrivals(problem, run.plan.front().t);
+    const std::shared_ptr<const CurrentField> steering = execution_detail::steeringField(problem);
     for (ControlStrategy s : settings.strategies)
     {
         o.learn = flightLearning(problem); // each flight learns from its own DAC

@@ -113,7 +113,9 @@ std::vector<std::string> forecastFiles(const ForecastInput &q)
     namespace fs = std::filesystem;
     if (!q.current.file.empty() && !q.current.files.empty())
         throw Error("ForecastInput: both current.file and current.files given; give one of them");
-    const std::vector<std::string> files = q.current.forecastFiles();
+    if (!q.current.runs.empty() && (!q.current.file.empty() || !q.current.files.empty()))
+        throw Error("ForecastInput: both current.runs and the forecast's files given; give one of them");
+    const std::vector<std::string> files = q.current.runs.empty() ? q.current.forecastFiles() : q.current.runs;
     std::error_code ec;
     for (const std::string &p : files)
         if (!isRemoteSource(p) && !isMemoryDataset(p) && !fs::is_regular_file(p, ec) && !fs::is_directory(p, ec))
@@ -150,6 +152,65 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
     if (q.depth > 0.0)
         m.marks["vehicle.depth"] = markOf(q, "vehicle.depth");
     return m;
+}
+
+/// Forecast runs (ForecastInput::current.runs): the run planned on, the newest available at the departure (its
+/// reference time + current.runDelay at or before it), whose file the mission is then made of, as of that file
+/// alone (its first time the mission's field time 0); without a departure, the first run's availability becomes
+/// the departure (@p departure is set to it). @throws Error for a departure that is no date, or before any run.
+std::string runAtDeparture(const MissionSpec &m, const ForecastInput &q, std::string &departure)
+{
+    if (!departure.empty() && isNumber(departure))
+        throw Error(named(q, "departure.time") + " " + departure +
+                    ": with forecast runs the departure is a date (ISO 8601), not a time after one run's start");
+    struct Run
+    {
+        std::string file;
+        double available{0.0};
+    };
+    std::vector<Run> runs;
+    Calendar calendar = Calendar::Standard;
+    for (const std::string &file : m.current.runs)
+    {
+        ForecastRequest o = callerRequest(m, q);
+        o.files = {file};
+        ForecastTimeAxis axis;
+        try
+        {
+            axis = sourceOf(m).timeAxis(o);
+        }
+        catch (const Error &e)
+        {
+            throw Error(callerMessage(e, q, o), e.field());
+        }
+        if (!axis.dated || axis.steady)
+            throw Error(named(q, "current.runs") + ": forecast run '" + file +
+                        "' has no dated time axis of several times: a run's reference time and availability are dates");
+        calendar = axis.calendar;
+        runs.push_back({file, axis.referenceSeconds + m.current.runDelay});
+    }
+    const auto first = std::min_element(runs.begin(), runs.end(),
+                                        [](const Run &a, const Run &b) { return a.available < b.available; });
+    if (departure.empty())
+        departure = formatCalendarTime(first->available, calendar);
+    double t = 0.0;
+    try
+    {
+        t = secondsSinceCalendarEpoch(departure, calendar);
+    }
+    catch (const Error &e)
+    {
+        throw Error(named(q, "departure.time") + " " + departure + ": " + e.what());
+    }
+    const Run *newest = nullptr;
+    for (const Run &r : runs)
+        if (r.available <= t && (!newest || r.available >= newest->available))
+            newest = &r;
+    if (!newest)
+        throw Error(named(q, "current.runs") + ": no run is available at the departure " + departure +
+                    ": the first, '" + first->file + "', is available from " +
+                    formatCalendarTime(first->available, calendar) + " (its reference time + the run delay)");
+    return newest->file;
 }
 
 /// Longitude/latitude or x/y: the reader's own detection, before any region is cut.
@@ -385,6 +446,34 @@ ForecastInput atLastFix(const ForecastInput &q, std::shared_ptr<const GliderObse
     at.words = words;
     return at;
 }
+
+/// The rest of forecastMission() once the forecast's files are known (@p m's current): its grid, region, departure
+/// and calendar read from them; @p q the caller's input with the departure settled.
+MissionSpec finishForecastMission(const ForecastInput &input, const ForecastInput &q, MissionSpec &m,
+                                  const std::string &file, const std::shared_ptr<const GliderObservations> &read)
+{
+    const std::vector<std::string> list = m.current.forecastFiles();
+    const bool geographic = forecastIsGeographic(list, m, q);
+    m.start.geographic = m.goal.geographic = geographic;
+    if (geographic)
+        checkLonLat(q);
+    setRegion(m, q, geographic);
+    std::optional<double> epoch; // the date of field time 0 of a steady file without dates
+    const LoadedForecast nc = loadForecast(list, m, q, epoch);
+    checkEndpoints(nc, q, file, geographic);
+    checkDeparture(nc, q);
+    finishSpec(m, nc, epoch, q);
+    if (input.startAtLastFix) // a first guess until the mission resumes at the fix
+    {
+        markLastFixGuess(m, SourceMark{named(input, "observations"), 0}, input.departure.empty());
+        ObservationsSpec o = m.observations.value_or(ObservationsSpec{});
+        o.path = input.observations;
+        o.cache = input.observationsCache;
+        keepObservations(o, read); // the mission's inputs take them from here
+        m.observations = o;
+    }
+    return m;
+}
 } // namespace
 
 MissionSpec forecastMission(const ForecastInput &input)
@@ -408,27 +497,15 @@ MissionSpec forecastMission(const ForecastInput &input)
         throw Error(named(q, "vehicle.depth") + " must be >= 0 (metres, positive down)");
 
     MissionSpec m = forecastSpec(q, files, file);
-    const std::vector<std::string> list = m.current.forecastFiles();
-    const bool geographic = forecastIsGeographic(list, m, q);
-    m.start.geographic = m.goal.geographic = geographic;
-    if (geographic)
-        checkLonLat(q);
-    setRegion(m, q, geographic);
-    std::optional<double> epoch; // the date of field time 0 of a steady file without dates
-    const LoadedForecast nc = loadForecast(list, m, q, epoch);
-    checkEndpoints(nc, q, file, geographic);
-    checkDeparture(nc, q);
-    finishSpec(m, nc, epoch, q);
-    if (input.startAtLastFix) // a first guess until the mission resumes at the fix
+    ForecastInput given = q; // with runs, the departure (the first run's availability when none is given)
+    if (!q.current.runs.empty())
     {
-        markLastFixGuess(m, SourceMark{named(input, "observations"), 0}, input.departure.empty());
-        ObservationsSpec o = m.observations.value_or(ObservationsSpec{});
-        o.path = input.observations;
-        o.cache = input.observationsCache;
-        keepObservations(o, read); // the mission's inputs take them from here
-        m.observations = o;
+        m.current.file = runAtDeparture(m, q, given.departure);
+        m.current.files.clear();
+        file = m.current.file; // messages name the run planned on
+        m.file = withoutCredentials(file);
     }
-    return m;
+    return finishForecastMission(input, given, m, file, read);
 }
 
 } // namespace ompl_glider

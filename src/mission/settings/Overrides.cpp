@@ -402,6 +402,7 @@ void applySafety(const MissionOverrides &o, MissionSpec &m)
 CurrentSpec truthOf(const Given<std::string> &t, const MissionSpec &m, Origin origin)
 {
     CurrentSpec c = m.current;
+    c.runs.clear(); // the truth is one ocean, not runs
     c.mark = SourceMark{t.source, 0, origin};
     if (m.current.isForecast())
     {
