@@ -9,6 +9,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <tuple>
 
 #include <nlopt.hpp>
 #include "../core/Numbers.h"
@@ -154,26 +155,24 @@ Likelihood likelihoodOf(const std::vector<DacObservation> &fitted, const Eigen::
     return like;
 }
 
-/// A free scale: where it is kept, its bounds and the words of its source.
+/// A free scale: where it is kept and its bounds.
 struct Free
 {
     double *value;
     double lo, hi;
-    std::string *source;
 };
 
 /// The scales of @p p not given, each within bounds around its prior (a tenth to fifty times the length and time
 /// scales; the error ratio from 0.02 to 5, wider to include its prior).
-std::vector<Free> freeScales(CorrectionParams &p, CorrectionSummary &summary)
+std::vector<Free> freeScales(CorrectionParams &p)
 {
     std::vector<Free> free;
     if (!p.lengthGiven)
-        free.push_back({&p.lengthScale, p.lengthScale / 10.0, p.lengthScale * 50.0, &summary.lengthSource});
+        free.push_back({&p.lengthScale, p.lengthScale / 10.0, p.lengthScale * 50.0});
     if (!p.timeGiven)
-        free.push_back({&p.timeScale, p.timeScale / 10.0, p.timeScale * 50.0, &summary.timeSource});
+        free.push_back({&p.timeScale, p.timeScale / 10.0, p.timeScale * 50.0});
     if (!p.ratioGiven)
-        free.push_back(
-            {&p.errorRatio, std::min(0.02, p.errorRatio), std::max(5.0, p.errorRatio), &summary.ratioSource});
+        free.push_back({&p.errorRatio, std::min(0.02, p.errorRatio), std::max(5.0, p.errorRatio)});
     return free;
 }
 
@@ -234,14 +233,25 @@ double maximise(const Objective &at, const std::vector<Free> &free, double best,
     x = found > best ? y : bestX;
     return std::max(found, best);
 }
-} // namespace
-
-void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, const Eigen::VectorXd &dv,
-           CorrectionSummary &summary)
+/// An estimate from some DAC: the scales (the free ones estimated, or the priors) and the innovations' mean at them.
+struct Estimate
 {
-    CorrectionParams &p = summary.params;
-    const std::size_t n = used.size(), m = std::min(n, kMaxFitted), first = n - m;
-    const std::vector<DacObservation> fitted(used.begin() + static_cast<std::ptrdiff_t>(first), used.end());
+    CorrectionParams params;
+    InnovationMean mean; // inactive: nothing factors
+    double gain{0.0};    // ln likelihood at the scales minus at the priors
+    bool finite{false};  // the likelihood factors at the scales
+};
+
+/// The estimate from @p fitted (their innovations @p du, @p dv from index @p first on) about the priors @p prior: with
+/// @p scales the free ones are estimated (maximum a posteriori), else the priors kept; the mean (a bias and the tides
+/// the record resolves) fitted at the scales.
+Estimate estimate(const std::vector<DacObservation> &fitted, const Eigen::VectorXd &du, const Eigen::VectorXd &dv,
+                  std::size_t first, const CorrectionParams &prior, bool scales)
+{
+    Estimate e;
+    e.params = prior;
+    CorrectionParams &p = e.params;
+    const std::size_t m = fitted.size();
     InnovationMean mean;
     mean.tRef = fitted.back().t;
     const double spanHours = (fitted.back().t - fitted.front().t) * p.secondsPerTimeUnit / 3600.0;
@@ -250,7 +260,7 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
     while (!tides.empty() && m < 1 + 2 * tides.size() + 4)
         tides.pop_back(); // each constituent costs two coefficients: keep four degrees of freedom at least
     const Likelihood like = likelihoodOf(fitted, du, dv, first, tides, mean.tRef, p);
-    const std::vector<Free> free = freeScales(p, summary);
+    const std::vector<Free> free = scales ? freeScales(p) : std::vector<Free>{};
     std::vector<double> x(free.size()), x0(free.size());
     for (std::size_t k = 0; k < free.size(); ++k)
         x[k] = x0[k] = std::log(*free[k].value);
@@ -266,28 +276,20 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
         }
         return like(p.lengthScale, p.timeScale, p.errorRatio) - penalty;
     };
-    const double prior = at(x), priorLikelihood = like(p.lengthScale, p.timeScale, p.errorRatio);
-    double best = prior;
+    const double prior0 = at(x), priorLikelihood = like(p.lengthScale, p.timeScale, p.errorRatio);
+    double best = prior0;
     if (!free.empty())
-    {
         best = maximise(at, free, best, x);
-        for (std::size_t k = 0; k < free.size(); ++k)
-            *free[k].source = "estimated from " + std::to_string(m) + " DAC";
-    }
     if (!std::isfinite(best))
-    {
-        for (std::size_t k = 0; k < free.size(); ++k)
-            x[k] = std::log(free[k].lo * 10.0); // the priors (each lower bound is a tenth of its prior)
-        best = prior;
-    }
+        x = x0; // the priors
     for (std::size_t k = 0; k < free.size(); ++k)
         *free[k].value = std::exp(x[k]);
     Eigen::MatrixXd beta;
     const double final = like(p.lengthScale, p.timeScale, p.errorRatio, &beta);
     if (!std::isfinite(final))
-        return; // nothing factors: no mean
-    summary.learnedFrom = m;
-    summary.likelihoodGain = std::isfinite(priorLikelihood) ? final - priorLikelihood : 0.0;
+        return e; // nothing factors: no mean
+    e.finite = true;
+    e.gain = std::isfinite(priorLikelihood) ? final - priorLikelihood : 0.0;
     mean.bias = {beta(0, 0), beta(0, 1)};
     for (std::size_t k = 0; k < tides.size(); ++k)
     {
@@ -300,6 +302,121 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
         mean.tides.push_back(c);
     }
     meanExtent(fitted, p.lengthScale, p.timeScale, mean);
-    summary.mean = mean;
+    e.mean = mean;
+    return e;
+}
+
+/// The RMS error of the prediction of the DAC @p obs[k..] from @p obs[0..k) alone (their innovations @p du, @p dv
+/// from index @p first on) by the correction of scales @p p and mean @p mean (inactive: none), as CorrectedField
+/// makes it: the mean plus the optimal interpolation of the earlier innovations less the mean. Infinity where the
+/// system cannot be solved.
+double heldOutError(const std::vector<DacObservation> &obs, const Eigen::VectorXd &du, const Eigen::VectorXd &dv,
+                    std::size_t first, std::size_t k, const CorrectionParams &p, const InnovationMean &mean)
+{
+    const auto e = static_cast<Eigen::Index>(k);
+    const double L2 = p.lengthScale * p.lengthScale, T2 = p.timeScale * p.timeScale;
+    Eigen::MatrixXd K(e, e);
+    Eigen::MatrixXd R(e, 2);
+    for (std::size_t i = 0; i < k; ++i)
+    {
+        for (std::size_t j = 0; j <= i; ++j)
+            K(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+                K(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) = correlation(obs[i], obs[j], L2, T2);
+        const Velocity m = mean.at(obs[i].at.x, obs[i].at.y, obs[i].t);
+        R(static_cast<Eigen::Index>(i), 0) = du[static_cast<Eigen::Index>(first + i)] - m.u;
+        R(static_cast<Eigen::Index>(i), 1) = dv[static_cast<Eigen::Index>(first + i)] - m.v;
+    }
+    // (the nugget of CorrectedField's system)
+    K.diagonal().array() += std::max(p.errorRatio * p.errorRatio, 1e-6);
+    const Eigen::LDLT<Eigen::MatrixXd> solver(K);
+    if (solver.info() != Eigen::Success)
+        return std::numeric_limits<double>::infinity();
+    const Eigen::MatrixXd alpha = solver.solve(R);
+    double squares = 0.0;
+    for (std::size_t j = k; j < obs.size(); ++j)
+    {
+        Velocity c = mean.at(obs[j].at.x, obs[j].at.y, obs[j].t);
+        for (std::size_t i = 0; i < k; ++i)
+        {
+            const double w = correlation(obs[j], obs[i], L2, T2);
+            c.u += w * alpha(static_cast<Eigen::Index>(i), 0);
+            c.v += w * alpha(static_cast<Eigen::Index>(i), 1);
+        }
+        squares += std::pow(du[static_cast<Eigen::Index>(first + j)] - c.u, 2) +
+                   std::pow(dv[static_cast<Eigen::Index>(first + j)] - c.v, 2);
+    }
+    const double rms = std::sqrt(squares / static_cast<double>(obs.size() - k));
+    return std::isfinite(rms) ? rms : std::numeric_limits<double>::infinity();
+}
+} // namespace
+
+void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, const Eigen::VectorXd &dv,
+           CorrectionSummary &summary)
+{
+    const CorrectionParams prior = summary.params;
+    const std::size_t n = used.size(), m = std::min(n, kMaxFitted), first = n - m;
+    const std::vector<DacObservation> fitted(used.begin() + static_cast<std::ptrdiff_t>(first), used.end());
+    const Estimate full = estimate(fitted, du, dv, first, prior, true);
+    if (!full.finite)
+        return; // nothing factors: the priors, no mean
+    summary.learnedFrom = m;
+    summary.likelihoodGain = full.gain;
+    const bool free = !prior.lengthGiven || !prior.timeGiven || !prior.ratioGiven;
+    const std::string estimated = "estimated from " + std::to_string(m) + " DAC";
+    // the estimate judged on DAC not used to fit it: fitted on the earlier half (at least minLearn), it predicts the
+    // later ones from the earlier alone (forward in time, as the planner uses it), against the priors
+    HeldOutCheck &h = summary.heldOut;
+    const std::size_t k = std::max(prior.minLearn, (m + 1) / 2);
+    std::string why = "too few DAC to judge the estimate from " + std::to_string(m);
+    if (k < m)
+    {
+        const std::vector<DacObservation> earlier(fitted.begin(), fitted.begin() + static_cast<std::ptrdiff_t>(k));
+        const Estimate meanOnly = estimate(earlier, du, dv, first, prior, false);
+        // (every scale given, as a flight holds its last estimate: only the mean is learned)
+        const Estimate learned = free ? estimate(earlier, du, dv, first, prior, true) : meanOnly;
+        const InnovationMean none;
+        h.fitted = k;
+        h.scored = m - k;
+        h.lengthScale = learned.params.lengthScale;
+        h.timeScale = learned.params.timeScale;
+        h.errorRatio = learned.params.errorRatio;
+        const double inf = std::numeric_limits<double>::infinity();
+        h.priorError = heldOutError(fitted, du, dv, first, k, prior, none);
+        h.meanError = meanOnly.finite ? heldOutError(fitted, du, dv, first, k, prior, meanOnly.mean) : inf;
+        h.scalesError = learned.finite && free ? heldOutError(fitted, du, dv, first, k, learned.params, none) : inf;
+        h.learnedError = !free            ? h.meanError
+                         : learned.finite ? heldOutError(fitted, du, dv, first, k, learned.params, learned.mean)
+                                          : inf;
+        // the best prediction wins, the priors on a tie (then the fewer learned)
+        double best = h.priorError;
+        for (const auto &[error, scales, mean] :
+             {std::make_tuple(h.meanError, false, true), std::make_tuple(h.scalesError, true, false),
+              std::make_tuple(h.learnedError, free, true)})
+            if (error < best)
+            {
+                best = error;
+                h.scalesKept = scales;
+                h.meanKept = mean;
+            }
+        why = "the scales estimated from the first " + std::to_string(k) + " DAC predicted the next " +
+              std::to_string(m - k) + " no better";
+    }
+    std::string *sources[] = {&summary.lengthSource, &summary.timeSource, &summary.ratioSource};
+    const bool given[] = {prior.lengthGiven, prior.timeGiven, prior.ratioGiven};
+    for (std::size_t s = 0; s < 3; ++s)
+        if (!given[s])
+            *sources[s] = h.scalesKept ? estimated : "default (" + why + ")";
+    if (h.scalesKept)
+    {
+        summary.params = full.params;
+        if (h.meanKept)
+            summary.mean = full.mean;
+    }
+    else if (h.meanKept)
+    {
+        const Estimate atPriors = estimate(fitted, du, dv, first, prior, false);
+        if (atPriors.finite)
+            summary.mean = atPriors.mean;
+    }
 }
 } // namespace ompl_glider::correction_fit

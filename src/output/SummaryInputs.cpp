@@ -41,6 +41,22 @@ json forecastSourcesJson(const MissionProblem &problem)
 }
 
 #if OMPL_GLIDER_WITH_NETCDF
+/// The learned correction judged on DAC not used to fit it (null: not judged).
+json heldOutJson(const HeldOutCheck &h)
+{
+    const auto error = [](double e) { return std::isfinite(e) ? json(e) : json(nullptr); };
+    if (h.fitted == 0)
+        return nullptr;
+    return {{"fitted", h.fitted},
+            {"scored", h.scored},
+            {"prior_error", error(h.priorError)},
+            {"mean_error", error(h.meanError)},
+            {"scales_error", error(h.scalesError)},
+            {"learned_error", error(h.learnedError)},
+            {"scales_kept", h.scalesKept},
+            {"mean_kept", h.meanKept}};
+}
+
 /// What the correction learned from the DAC: each scale's source, the likelihood gained, the innovations' mean (bias,
 /// tides) and an ensemble's member weights.
 json learnedJson(const ObservationReport &o)
@@ -61,6 +77,7 @@ json learnedJson(const ObservationReport &o)
             {"error_ratio_source", c.ratioSource},
             {"dac_estimated_from", c.learnedFrom},
             {"log_likelihood_gain", c.likelihoodGain},
+            {"held_out", heldOutJson(c.heldOut)},
             {"bias", c.mean.active() ? json{{"u", c.mean.bias.u}, {"v", c.mean.bias.v}} : json(nullptr)},
             {"tides", tides},
             {"tides_time_origin", c.mean.active() ? json(c.mean.tRef) : json(nullptr)},

@@ -236,3 +236,117 @@ TEST(CorrectionLearning, TheLearnedFieldsJacobianMatchesFiniteDifferencesAndItsB
         EXPECT_LE(std::hypot(c.u, c.v), bound + 1e-12);
     }
 }
+
+namespace
+{
+/// The RMS of |DAC - F'| of @p later in @p field, F' the corrected still water (each DAC is its innovation).
+double rmsError(const CorrectedField &field, const std::vector<DacObservation> &later)
+{
+    double squares = 0.0;
+    for (const DacObservation &o : later)
+    {
+        const Velocity c = field.correction(o.at.x, o.at.y, o.t);
+        squares += std::pow(o.dac.u - c.u, 2) + std::pow(o.dac.v - c.v, 2);
+    }
+    return std::sqrt(squares / static_cast<double>(later.size()));
+}
+
+std::vector<DacObservation> byTime(std::vector<DacObservation> obs)
+{
+    std::stable_sort(obs.begin(), obs.end(),
+                     [](const DacObservation &a, const DacObservation &b) { return a.t < b.t; });
+    return obs;
+}
+} // namespace
+
+TEST(CorrectionLearning, ScalesThatPredictTheLaterDacBetterAreKept)
+{
+    // a field of longer scales than the priors (45 km, 3 days against 20 km, 1 day): the scales estimated from the
+    // earlier DAC predict the later ones better than the priors, and are kept
+    const auto still = std::make_shared<UniformCurrent>(0.0, 0.0);
+    const auto obs = byTime(gaussianDac(160, 45000.0, 3.0 * 86400.0, 0.1, 0.015, {}, 5.0, 21));
+    const CorrectedField f(still, obs, learning());
+    const CorrectionSummary &s = f.summary();
+    const HeldOutCheck &h = s.heldOut;
+    ASSERT_GT(h.scored, 0u);
+    EXPECT_EQ(h.fitted + h.scored, s.learnedFrom);
+    EXPECT_TRUE(h.scalesKept);
+    EXPECT_LT(std::min(h.scalesError, h.learnedError), h.priorError);
+    EXPECT_EQ(s.lengthSource, "estimated from 160 DAC");
+    EXPECT_NE(s.params.lengthScale, 20000.0);
+    // the priors' score is the error of the priors' correction made of the earlier DAC alone at the later ones
+    CorrectionParams priors = learning();
+    priors.learn = false;
+    const std::vector<DacObservation> earlier(obs.begin(), obs.begin() + static_cast<std::ptrdiff_t>(h.fitted));
+    const std::vector<DacObservation> later(obs.begin() + static_cast<std::ptrdiff_t>(h.fitted), obs.end());
+    EXPECT_NEAR(h.priorError, rmsError(CorrectedField(still, earlier, priors), later), 0.02 * h.priorError);
+    // and the scales estimated from the earlier DAC predict the later ones as the check says
+    CorrectionParams learned = priors;
+    learned.lengthScale = h.lengthScale;
+    learned.timeScale = h.timeScale;
+    learned.errorRatio = h.errorRatio;
+    EXPECT_NEAR(h.scalesError, rmsError(CorrectedField(still, earlier, learned), later), 0.02 * h.scalesError);
+}
+
+TEST(CorrectionLearning, TheHeldOutScoreUsesNoDacOfTheFit)
+{
+    // the check's estimate is made of the earlier DAC alone: a later DAC changed leaves it to the bit and changes the
+    // score; an earlier one changed moves it
+    const auto still = std::make_shared<UniformCurrent>(0.0, 0.0);
+    const auto obs = byTime(gaussianDac(80, 30000.0, 2.0 * 86400.0, 0.1, 0.02, {}, 4.0, 4));
+    const HeldOutCheck h = CorrectedField(still, obs, learning()).summary().heldOut;
+    ASSERT_GT(h.scored, 0u);
+    ASSERT_GT(h.fitted, 0u);
+    auto lastChanged = obs, firstChanged = obs;
+    lastChanged.back().dac.u += 0.3;
+    firstChanged.front().dac.u += 0.3;
+    const HeldOutCheck a = CorrectedField(still, lastChanged, learning()).summary().heldOut;
+    EXPECT_EQ(a.fitted, h.fitted);
+    EXPECT_EQ(a.lengthScale, h.lengthScale);
+    EXPECT_EQ(a.timeScale, h.timeScale);
+    EXPECT_EQ(a.errorRatio, h.errorRatio);
+    EXPECT_NE(a.priorError, h.priorError);
+    EXPECT_NE(a.learnedError, h.learnedError);
+    const HeldOutCheck b = CorrectedField(still, firstChanged, learning()).summary().heldOut;
+    EXPECT_TRUE(b.lengthScale != h.lengthScale || b.timeScale != h.timeScale || b.errorRatio != h.errorRatio);
+}
+
+TEST(CorrectionLearning, ATrackAcrossAFrontLeavesThePriors)
+{
+    // one glider's track (hourly DAC, 0.25 m/s) along a band the forecast misplaced for a day and a half, then out of
+    // it into the opposite error: no stationary Gaussian error (what the kernel assumes). Its likelihood prefers long
+    // scales and a bias over the priors, but what it learns from the earlier DAC (all in the band) carries the band's
+    // error ahead, and predicts the later DAC worse than the priors: the priors stand, as without learning, to the bit
+    const auto still = std::make_shared<UniformCurrent>(0.0, 0.0);
+    std::vector<DacObservation> obs;
+    for (int k = 0; k < 60; ++k)
+    {
+        const double t = 3600.0 * k, x = 900.0 * k;
+        const double u = k < 36 ? 0.15 : -0.1;
+        obs.push_back({t, {x, 300.0 * std::sin(k / 5.0)}, {u, 0.5 * u}, std::nullopt});
+    }
+    const CorrectedField f(still, obs, learning());
+    const CorrectionSummary &s = f.summary();
+    const HeldOutCheck &h = s.heldOut;
+    ASSERT_GT(h.scored, 0u);
+    EXPECT_GT(s.likelihoodGain, 0.0);
+    EXPECT_FALSE(h.scalesKept);
+    EXPECT_FALSE(h.meanKept);
+    EXPECT_GT(h.learnedError, h.priorError);
+    EXPECT_GT(h.scalesError, h.priorError);
+    EXPECT_GT(h.meanError, h.priorError);
+    EXPECT_EQ(s.params.lengthScale, 20000.0);
+    EXPECT_EQ(s.params.timeScale, 86400.0);
+    EXPECT_EQ(s.params.errorRatio, 0.2);
+    EXPECT_FALSE(s.mean.active());
+    EXPECT_EQ(s.lengthSource.rfind("default (", 0), 0u) << s.lengthSource;
+    CorrectionParams off = learning();
+    off.learn = false;
+    const CorrectedField plain(still, obs, off);
+    for (int i = 0; i < 10; ++i)
+    {
+        const double x = 6000.0 * i, y = 2000.0 - 500.0 * i, t = 7200.0 * i;
+        EXPECT_EQ(f.velocity(x, y, 0.0, t).u, plain.velocity(x, y, 0.0, t).u);
+        EXPECT_EQ(f.velocity(x, y, 0.0, t).v, plain.velocity(x, y, 0.0, t).v);
+    }
+}

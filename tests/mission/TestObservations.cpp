@@ -197,6 +197,14 @@ TEST(Observations, ADayOfDacShowingOneErrorCorrectsThePlanWithTheDefaultSettings
     EXPECT_EQ(c.learnedFrom, c.used);
     EXPECT_EQ(c.lengthSource, "estimated from " + std::to_string(c.used) + " DAC");
     ASSERT_TRUE(c.mean.active());
+    // a uniform error: the scales and mean learned from the earlier DAC predict the later ones better than the
+    // priors (judged on DAC not used to fit them), and the report says they were kept
+    EXPECT_GT(c.heldOut.scored, 0u);
+    EXPECT_EQ(c.heldOut.fitted + c.heldOut.scored, c.learnedFrom);
+    EXPECT_TRUE(c.heldOut.scalesKept && c.heldOut.meanKept);
+    EXPECT_LT(c.heldOut.learnedError, c.heldOut.priorError);
+    EXPECT_NE(correctionNote(learned).find("learned scales and mean kept (held-out RMS error"), std::string::npos)
+        << correctionNote(learned);
     const MissionResult best = runMission(onTruth), withLearning = runMission(learned), withPriors = runMission(fixed);
     ASSERT_TRUE(best.plan.solved && withLearning.plan.solved && withPriors.plan.solved);
     EXPECT_LT(std::abs(withLearning.plan.travelTime / best.plan.travelTime - 1.0), 0.03)

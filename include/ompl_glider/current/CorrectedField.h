@@ -99,6 +99,22 @@ struct InnovationMean
     /// @brief A bound of |u| and |v| of the mean anywhere.
     void bound(double &u, double &v) const;
 };
+/// @brief The learned correction judged on DAC not used to fit it (CorrectionFit.h): the scales and the mean estimated
+/// from the earlier DAC predict the later ones (forecast plus correction at their time and place, from the earlier DAC
+/// alone), against the priors (the scales as given or by default, no mean: what learning off uses). What predicted
+/// best is kept for the correction, estimated again from all the DAC; the priors stand on a tie.
+struct HeldOutCheck
+{
+    std::size_t fitted{0}; ///< the earlier DAC the check's estimate was fitted to
+    std::size_t scored{0}; ///< the later DAC it was scored on (0: too few DAC to judge; the priors stand)
+    /// The RMS error of each candidate's prediction of the scored DAC (field units): the priors; the priors' scales
+    /// with the learned mean; the learned scales without a mean; the learned scales and mean
+    double priorError{0.0}, meanError{0.0}, scalesError{0.0}, learnedError{0.0};
+    double lengthScale{0.0}, timeScale{0.0}, errorRatio{0.0}; ///< the scales estimated from the earlier DAC
+    bool scalesKept{false}; ///< the learned scales are the correction's (false: the priors stand)
+    bool meanKept{false};   ///< the learned mean (bias, tides) is the correction's
+};
+
 /// @brief What the correction used and what it did.
 struct CorrectionSummary
 {
@@ -119,7 +135,8 @@ struct CorrectionSummary
     std::size_t learnedFrom{0}; ///< DAC the estimate used (0: nothing was estimated)
     /// ln of the marginal likelihood at the estimate minus at the priors (>= 0; 0: nothing was estimated)
     double likelihoodGain{0.0};
-    InnovationMean mean; ///< the innovations' mean carried ahead (inactive: none)
+    InnovationMean mean;  ///< the innovations' mean carried ahead (inactive: none)
+    HeldOutCheck heldOut; ///< the estimate judged on later DAC (learnedFrom > 0)
 };
 
 /// @brief @p field's current averaged over the depths @p top to @p bottom (m; equal: the current at that depth) at

@@ -44,7 +44,9 @@ LearnedForecast learnForecast(const std::shared_ptr<const CurrentField> &forecas
 
 /// @brief learnForecast() during a flight, as the DAC arrive: the scales not given are estimated again only once the
 /// DAC have grown by half since the last estimate (an estimate costs a few hundred factorisations), and held in
-/// between; the innovations' mean, the members' weights and the interpolation are made anew at every call.
+/// between (the held-out check's outcome with them: where the priors stood, the priors are held); the innovations' mean
+/// (itself judged on the later DAC, CorrectionFit.h), the members' weights and the interpolation are made anew at every
+/// call.
 class FlightLearning
 {
 public:

@@ -276,7 +276,27 @@ std::string correctionNote(const MissionProblem &problem)
                       " (" + c.lengthSource + "), T " + m.durationText(c.params.timeScale) + " (" + c.timeSource +
                       "), ratio " + text::number(c.params.errorRatio, 3) + " (" + c.ratioSource + ")";
     if (c.learnedFrom > 0)
+    {
         out += "; ln likelihood +" + text::number(c.likelihoodGain, 4) + " over the priors";
+        const HeldOutCheck &h = c.heldOut;
+        const std::string scores = " (held-out RMS error " +
+                                   speed(h.scalesKept ? (h.meanKept ? h.learnedError : h.scalesError) : h.meanError) +
+                                   " against the priors' " + speed(h.priorError) + "; fitted on the first " +
+                                   std::to_string(h.fitted) + " DAC, scored on the next " + std::to_string(h.scored) +
+                                   ")";
+        if (h.scored == 0)
+            out += "; the priors stand: too few DAC to judge the estimate on DAC not used to fit it";
+        else if (h.scalesKept)
+            out += std::string("; learned scales ") + (h.meanKept ? "and mean " : "") + "kept" +
+                   (h.meanKept ? "" : ", the mean dropped") + scores;
+        else if (h.meanKept)
+            out += "; the prior scales stand, the learned mean kept" + scores;
+        else
+            out += "; the priors stand: the learned scales and mean predicted the held-out DAC no better (" +
+                   speed(std::min({h.learnedError, h.scalesError, h.meanError})) + " against " + speed(h.priorError) +
+                   "; fitted on the first " + std::to_string(h.fitted) + " DAC, scored on the next " +
+                   std::to_string(h.scored) + ")";
+    }
     if (c.mean.active())
     {
         out += "; bias (" + speed(c.mean.bias.u) + ", " + speed(c.mean.bias.v) + ")";
