@@ -70,9 +70,10 @@ void InnovationMean::bound(double &u, double &v) const
 
 namespace
 {
-std::string sourceOf(bool given, bool learn)
+std::string sourceOf(bool given, bool learn, const std::string &prior)
 {
-    return given ? "given" : learn ? "default (too few DAC to estimate)" : "default";
+    const std::string name = prior.empty() ? "default" : prior;
+    return given ? "given" : learn ? name + " (too few DAC to estimate)" : name;
 }
 
 /// The innovations' RMS (of their sum of squares @p squares) and mean, and the span of the DAC used, for the words of
@@ -214,9 +215,9 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
         if (!(v > 0.0) || !std::isfinite(v))
             throw Error("CorrectedField: the length scale, time scale and error ratio must be finite and > 0");
     summary_.params = params_;
-    summary_.lengthSource = sourceOf(params_.lengthGiven, params_.learn);
-    summary_.timeSource = sourceOf(params_.timeGiven, params_.learn);
-    summary_.ratioSource = sourceOf(params_.ratioGiven, params_.learn);
+    summary_.lengthSource = sourceOf(params_.lengthGiven, params_.learn, params_.priorSource);
+    summary_.timeSource = sourceOf(params_.timeGiven, params_.learn, params_.priorSource);
+    summary_.ratioSource = sourceOf(params_.ratioGiven, params_.learn, std::string());
     used_ = usableDac(*base_, observations, params_, summary_);
     summary_.used = used_.size();
     const std::size_t n = used_.size();

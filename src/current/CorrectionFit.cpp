@@ -405,7 +405,9 @@ void learn(const std::vector<DacObservation> &used, const Eigen::VectorXd &du, c
     const bool given[] = {prior.lengthGiven, prior.timeGiven, prior.ratioGiven};
     for (std::size_t s = 0; s < 3; ++s)
         if (!given[s])
-            *sources[s] = h.scalesKept ? estimated : "default (" + why + ")";
+            *sources[s] = h.scalesKept                          ? estimated
+                          : s < 2 && !prior.priorSource.empty() ? prior.priorSource + " (" + why + ")"
+                                                                : "default (" + why + ")";
     if (h.scalesKept)
     {
         summary.params = full.params;

@@ -69,6 +69,133 @@ void ForecastRuns::setField(std::size_t k, std::shared_ptr<const CurrentField> f
     s.field = std::move(f);
 }
 
+namespace
+{
+/// Sums of products of pairs of differences at one lag: their correlation is prod / sqrt(a2 b2).
+struct LagSums
+{
+    double prod{0.0}, a2{0.0}, b2{0.0};
+    void add(double a, double b)
+    {
+        prod += a * b;
+        a2 += a * a;
+        b2 += b * b;
+    }
+    double correlation() const { return a2 > 0.0 && b2 > 0.0 ? prod / std::sqrt(a2 * b2) : 0.0; }
+};
+
+/// The Gaussian scale s of correlations c(lag k) ~ exp(-(k step)^2 / (2 s^2)): least squares of -2 ln c against
+/// (k step)^2 through the origin, over the lags whose correlation is resolved (0.05 < c < 0.98); NaN with fewer than
+/// two such lags before the correlation first drops below 0.05.
+double gaussianScale(const std::vector<LagSums> &lags, double step)
+{
+    double sxy = 0.0, sxx = 0.0;
+    int used = 0;
+    for (std::size_t k = 1; k < lags.size(); ++k)
+    {
+        const double c = lags[k].correlation();
+        if (!(c > 0.05))
+            break;
+        if (c >= 0.98)
+            continue;
+        const double x = std::pow(static_cast<double>(k) * step, 2.0), y = -2.0 * std::log(c);
+        sxy += x * y;
+        sxx += x * x;
+        ++used;
+    }
+    return used >= 2 && sxy > 0.0 ? std::sqrt(sxx / sxy) : std::numeric_limits<double>::quiet_NaN();
+}
+} // namespace
+
+RunSpread runSpread(const ForecastRuns &runs, const Region &box, double depth)
+{
+    constexpr std::size_t n = 24, nt = 17;
+    const double dx = (box.xMax - box.xMin) / static_cast<double>(n - 1),
+                 dy = (box.yMax - box.yMin) / static_cast<double>(n - 1);
+    RunSpread out;
+    double squares = 0.0;
+    std::vector<LagSums> alongX(n / 2), alongY(n / 2), time(nt / 2);
+    double step = 0.0; // the time step of the overlaps (their mean)
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t k = 1; k < runs.size(); ++k)
+    {
+        const double t0 = std::max(runs[k].begin, runs[k - 1].begin), t1 = std::min(runs[k].end, runs[k - 1].end);
+        if (!(t1 > t0))
+            continue;
+        const auto a = runs.field(k - 1), b = runs.field(k);
+        ++out.pairs;
+        step += (t1 - t0) / static_cast<double>(nt - 1);
+        // the differences (u then v) at each time, node (i, j): NaN on land
+        std::vector<double> d(nt * n * n * 2, nan);
+        for (std::size_t it = 0; it < nt; ++it)
+        {
+            const double t = t0 + (t1 - t0) * static_cast<double>(it) / static_cast<double>(nt - 1);
+            double mu = 0.0, mv = 0.0;
+            std::size_t wet = 0;
+            for (std::size_t j = 0; j < n; ++j)
+                for (std::size_t i = 0; i < n; ++i)
+                {
+                    const double x = box.xMin + dx * static_cast<double>(i), y = box.yMin + dy * static_cast<double>(j);
+                    if (!a->inWater(x, y, depth) || !b->inWater(x, y, depth))
+                        continue;
+                    const Velocity va = a->velocity(x, y, depth, t), vb = b->velocity(x, y, depth, t);
+                    if (!std::isfinite(va.u + va.v + vb.u + vb.v))
+                        continue;
+                    double *q = &d[((it * n + j) * n + i) * 2];
+                    q[0] = vb.u - va.u;
+                    q[1] = vb.v - va.v;
+                    mu += q[0];
+                    mv += q[1];
+                    ++wet;
+                }
+            for (std::size_t q = 0; wet > 0 && q < n * n; ++q)
+            {
+                double *e = &d[(it * n * n + q) * 2];
+                e[0] -= mu / static_cast<double>(wet); // (NaN stays NaN)
+                e[1] -= mv / static_cast<double>(wet);
+                if (std::isfinite(e[0]))
+                {
+                    squares += e[0] * e[0] + e[1] * e[1];
+                    ++out.samples;
+                }
+            }
+        }
+        const auto at = [&](std::size_t it, std::size_t j, std::size_t i) { return &d[((it * n + j) * n + i) * 2]; };
+        for (std::size_t it = 0; it < nt; ++it)
+            for (std::size_t j = 0; j < n; ++j)
+                for (std::size_t i = 0; i < n; ++i)
+                {
+                    const double *p = at(it, j, i);
+                    if (!std::isfinite(p[0]))
+                        continue;
+                    for (std::size_t l = 1; l < alongX.size(); ++l)
+                    {
+                        const double *qx = i + l < n ? at(it, j, i + l) : nullptr;
+                        const double *qy = j + l < n ? at(it, j + l, i) : nullptr;
+                        for (int c = 0; c < 2; ++c)
+                        {
+                            if (qx && std::isfinite(qx[0]))
+                                alongX[l].add(p[c], qx[c]);
+                            if (qy && std::isfinite(qy[0]))
+                                alongY[l].add(p[c], qy[c]);
+                        }
+                    }
+                    for (std::size_t l = 1; l < time.size() && it + l < nt; ++l)
+                        if (const double *q = at(it + l, j, i); std::isfinite(q[0]))
+                            for (int c = 0; c < 2; ++c)
+                                time[l].add(p[c], q[c]);
+                }
+    }
+    if (out.samples == 0)
+        return out;
+    out.sigma = std::sqrt(squares / (2.0 * static_cast<double>(out.samples)) / 2.0);
+    // east-west and north-south alike (the kernel is isotropic): their mean, or the one resolved
+    const double lx = gaussianScale(alongX, dx), ly = gaussianScale(alongY, dy);
+    out.lengthScale = std::isfinite(lx) && std::isfinite(ly) ? 0.5 * (lx + ly) : std::isfinite(lx) ? lx : ly;
+    out.timeScale = gaussianScale(time, step / static_cast<double>(out.pairs));
+    return out;
+}
+
 RunStreamField::RunStreamField(std::shared_ptr<const ForecastRuns> runs) : runs_(std::move(runs))
 {
     if (!runs_)

@@ -13,6 +13,7 @@
 #include "../current/TestNetCdfUtil.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/ForecastRuns.h"
+#include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/Planning.h"
@@ -218,5 +219,119 @@ TEST(ForecastRuns, NoRunAvailableAtTheDepartureIsAnErrorNamingTheFirst)
         const std::string what = e.what();
         EXPECT_NE(what.find("current.runs"), std::string::npos) << what;
         EXPECT_NE(what.find("available from 2026-03-01T12:00:00Z"), std::string::npos) << what;
+    }
+}
+
+namespace
+{
+/// Run k of a stream whose consecutive runs differ by 2 A cos(kx x) cos(w t) in u (the sign alternates): the
+/// differences' scales are known, 1 / kx and 1 / w for a Gaussian fit of cos.
+class AlternatingRun : public CurrentField
+{
+public:
+    AlternatingRun(double sign, double a, double kx, double w) : sign_(sign), a_(a), kx_(kx), w_(w) {}
+    double maxSpeed(const Region &) const override { return 0.1 + a_; }
+    std::string name() const override { return "alternating run"; }
+
+protected:
+    Velocity evaluate(double x, double, double, double t) const override
+    {
+        return {0.1 + sign_ * a_ * std::cos(kx_ * x) * std::cos(w_ * t), 0.05};
+    }
+    Jacobian evaluateJacobian(double, double, double, double) const override { return {}; }
+
+private:
+    double sign_, a_, kx_, w_;
+};
+} // namespace
+
+TEST(ForecastRuns, TheRunsSpreadGivesTheScalesOfTheirDifferences)
+{
+    const double a = 0.2, kx = 1.0 / 30000.0, w = 1.0 / (2.0 * 86400.0);
+    std::vector<ForecastRun> list;
+    for (int k = 0; k < 6; ++k)
+    {
+        ForecastRun r;
+        r.file = "run" + std::to_string(k);
+        r.reference = r.begin = 86400.0 * k;
+        r.end = r.begin + 10.0 * 86400.0;
+        r.available = r.reference + 43200.0;
+        list.push_back(r);
+    }
+    const ForecastRuns runs(list, [&](const ForecastRun &r) -> std::shared_ptr<const CurrentField> {
+        const double sign = (r.file.back() - '0') % 2 == 0 ? 1.0 : -1.0;
+        return std::make_shared<AlternatingRun>(sign, a, kx, w);
+    });
+    Region box;
+    box.xMin = 0.0;
+    box.xMax = 2.0 * 2.0 * M_PI / kx; // two wavelengths: each snapshot's mean about 0
+    box.yMin = 0.0;
+    box.yMax = 300000.0;
+    const RunSpread s = runSpread(runs, box, 0.0);
+    EXPECT_EQ(s.pairs, 5u);
+    EXPECT_EQ(s.samples, 5u * 17u * 24u * 24u);
+    // the differences 2 a cos cos in u only: their mean square per component a^2 / 2, halved for two runs' errors
+    EXPECT_NEAR(s.sigma, 0.5 * a, 0.1 * a);
+    // a Gaussian fitted to cos(k r) over its resolved lags (0.05 < c < 0.98): a little below 1 / k
+    EXPECT_GT(s.lengthScale, 0.75 / kx);
+    EXPECT_LT(s.lengthScale, 1.05 / kx);
+    EXPECT_GT(s.timeScale, 0.6 / w);
+    EXPECT_LT(s.timeScale, 1.1 / w);
+    // runs that do not differ resolve no scale and show no error
+    const ForecastRuns same(list, [&](const ForecastRun &) -> std::shared_ptr<const CurrentField> {
+        return std::make_shared<AlternatingRun>(1.0, a, kx, w);
+    });
+    const RunSpread z = runSpread(same, box, 0.0);
+    EXPECT_EQ(z.sigma, 0.0);
+    EXPECT_TRUE(std::isnan(z.lengthScale));
+    EXPECT_TRUE(std::isnan(z.timeScale));
+}
+
+TEST(ForecastRuns, TheCommandLinesRunsPlanOnTheNewestRunToTheBit)
+{
+    // glider_plan --currents FILES --runs and Field.netcdf(runs=True): forecastMission() on the run's own clock
+    const Runs runs;
+    ForecastInput in;
+    in.start = {-52.85, 47.15};
+    in.goal = {-52.1, 47.85};
+    in.speed = 0.5;
+    in.current.horizonPolicy = BeyondForecast::HoldLast;
+    in.departure = "2026-03-03T13:00:00Z";
+    ForecastInput onRuns = in, alone = in;
+    onRuns.current.runs = runs.files;
+    alone.current.file = runs.files[2];
+    MissionSpec a = forecastMission(onRuns), b = forecastMission(alone);
+    for (MissionSpec *m : {&a, &b})
+        m->planner.globalCheck = false; // (its wall-clock limit is not reproducible)
+    EXPECT_EQ(a.current.file, runs.files[2]);
+    EXPECT_EQ(a.departure.time, b.departure.time);
+    const MissionProblem pa(a), pb(b);
+    ASSERT_TRUE(pa.runs());
+    EXPECT_EQ(pa.runIndex(), 2u);
+    const MissionResult ra = runMission(pa), rb = runMission(pb);
+    ASSERT_TRUE(ra.plan.solved) << ra.plan.reason;
+    EXPECT_EQ(ra.plan.travelTime, rb.plan.travelTime);
+    ASSERT_EQ(ra.plan.path.size(), rb.plan.path.size());
+    for (std::size_t k = 0; k < ra.plan.path.size(); ++k)
+    {
+        EXPECT_EQ(ra.plan.path[k].x, rb.plan.path[k].x);
+        EXPECT_EQ(ra.plan.path[k].t, rb.plan.path[k].t);
+    }
+    // without a departure: when the first run becomes available
+    ForecastInput first = onRuns;
+    first.departure.clear();
+    const MissionSpec f = forecastMission(first);
+    EXPECT_EQ(f.isoTime(f.departure.time), "2026-03-01T12:00:00Z");
+    EXPECT_EQ(f.current.file, runs.files[0]);
+    // a departure before any run is available: an error naming the first run's availability
+    first.departure = "2026-03-01T06:00:00Z";
+    try
+    {
+        (void)forecastMission(first);
+        FAIL() << "expected an error";
+    }
+    catch (const Error &e)
+    {
+        EXPECT_NE(std::string(e.what()).find("available from 2026-03-01T12:00:00Z"), std::string::npos) << e.what();
     }
 }

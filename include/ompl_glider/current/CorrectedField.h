@@ -54,9 +54,12 @@ struct CorrectionParams
     /// Learn from the DAC: with at least minLearn of them and innovations not all zero, estimate the scales not given
     /// (lengthGiven, timeGiven, ratioGiven false) and the innovations' mean (bias, tides); false: the values above
     bool learn{false};
-    bool lengthGiven{true};  ///< lengthScale was given (kept); false: a prior, estimated when learning
-    bool timeGiven{true};    ///< see lengthGiven
-    bool ratioGiven{true};   ///< see lengthGiven
+    bool lengthGiven{true}; ///< lengthScale was given (kept); false: a prior, estimated when learning
+    bool timeGiven{true};   ///< see lengthGiven
+    bool ratioGiven{true};  ///< see lengthGiven
+    /// Where the priors of the scales not given come from, in the report's words ("" : the defaults; with forecast
+    /// runs, their spread: ForecastRuns.h's runSpread())
+    std::string priorSource;
     std::size_t minLearn{6}; ///< fewer DAC than this: the priors stand and no mean is fitted
     /// The DAC's own error (field units; > 0 when learning): the observation error is never estimated below it
     double dacError{0.0};

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -67,6 +68,26 @@ private:
     Loader load_;
     std::vector<std::unique_ptr<Slot>> slots_;
 };
+
+/// @brief The forecast error's spread that a model's runs show where they overlap ([ParrishDerberNMC], the "NMC
+/// method"): the differences between consecutive runs valid at the same times, sampled on a grid over a box, give
+/// the error's variance and, from their correlation at growing distances and time lags fitted by the correction's
+/// Gaussian kernel (CorrectionKernel.h), its length and time scales: the priors of the correction by the DAC.
+struct RunSpread
+{
+    std::size_t pairs{0};   ///< pairs of consecutive runs that overlap
+    std::size_t samples{0}; ///< differences (nodes in water x times) used
+    /// The error's standard deviation per component (field units): the differences' RMS per component over sqrt(2)
+    /// (two runs' independent errors)
+    double sigma{std::numeric_limits<double>::quiet_NaN()};
+    double lengthScale{std::numeric_limits<double>::quiet_NaN()}; ///< NaN: not resolved by the box
+    double timeScale{std::numeric_limits<double>::quiet_NaN()};   ///< NaN: not resolved by the overlaps
+};
+
+/// @brief runSpread() of @p runs over @p box (x/y; its time window unused) at depth @p depth: each overlap of
+/// consecutive runs sampled at 17 times on 24 x 24 nodes, each snapshot's mean removed (a uniform bias is the
+/// correction's mean, not its interpolation). Reads every run.
+RunSpread runSpread(const ForecastRuns &runs, const Region &box, double depth);
 
 /// @brief The forecast as it is known at a time: for each time t, the current of the newest run available at t
 /// ("live": what a glider at sea steers on), or, as known at a fixed time @p asOf, the newest run then wherever it

@@ -80,6 +80,9 @@ public:
     const std::shared_ptr<const ForecastRuns> &runs() const { return runs_; }
     /// @brief The run planned on (with runs()).
     std::size_t runIndex() const { return run_; }
+    /// @brief The forecast error's spread the runs show (ProblemInputs::runSpread; unset: not estimated): the
+    /// priors of correctionParams() where the mission gives no scale.
+    const std::optional<RunSpread> &runSpread() const { return runSpread_; }
     /// @brief The members of an ensemble current (on the forecast's frame and dates; the first read as the forecast);
     /// empty for a single source. getField() is then their mean (EnsembleMeanField).
     const std::vector<std::shared_ptr<const CurrentField>> &getMembers() const { return members_; }
@@ -204,6 +207,7 @@ private:
     std::vector<std::shared_ptr<const CurrentField>> weighedMembers_; // the members the observations weighed
     std::shared_ptr<const ForecastRuns> runs_;                        // the forecast's runs (null: one forecast)
     std::size_t run_{0};                                              // the run planned on
+    std::optional<RunSpread> runSpread_; // the runs' spread: the correction's priors (unset: not estimated)
     std::shared_ptr<const Environment> environment_;
     PlanningFrame frame_; // projection, units and box
     std::vector<std::string> forecastFiles_;

@@ -7,6 +7,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,7 +60,9 @@ struct ProblemInputs
     /// The forecast's runs (`current.runs`; null: one forecast): `field` is run `run`, the newest available at the
     /// departure
     std::shared_ptr<const ForecastRuns> runs;
-    std::size_t run{0};                     ///< the run planned on
+    std::size_t run{0}; ///< the run planned on
+    /// The forecast error's spread the runs show where they overlap (the correction's priors; unset: not estimated)
+    std::optional<RunSpread> runSpread;
     PlanningFrame frame;                    ///< the frame everything is read in
     std::vector<std::string> forecastFiles; ///< the forecast's files or URLs read, in time order
     std::vector<std::string> forecastNotes; ///< what reading the forecast decided that a pilot should know

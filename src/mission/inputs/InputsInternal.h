@@ -32,6 +32,9 @@ std::shared_ptr<const CurrentField> loadSource(const ProblemInputs &in, const Cu
 /// A forecast given as runs (current.runs): in.runs, in.run (the newest available at the departure) and the field,
 /// frame and notes of that run, read as the mission given its file alone reads it.
 void loadRuns(ProblemInputs &in, const CurrentFieldKind &kind);
+/// With forecast runs and a correction by the DAC in use (the glider's observations, or an execution's dac or
+/// replan_observed): in.runSpread over the planning box (reads every run), and a note saying what it gave.
+void estimateRunSpread(ProblemInputs &in);
 
 // FieldChecks.cpp
 

@@ -39,6 +39,7 @@ ProblemInputs loadProblemInputs(MissionSpec spec)
     loadMembers(in);
     loadTruth(in);
     in.frame.box = planningBox(in);
+    estimateRunSpread(in); // with runs and a correction by the DAC: its priors from the runs' differences
     checkAnalyticFields(in);
     if (m.observations && m.observations->hasFiles())
     {

@@ -4,6 +4,7 @@
 #include "InputsInternal.h"
 #include "../../io/NumberText.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -112,5 +113,29 @@ void loadRuns(ProblemInputs &in, const CurrentFieldKind &kind)
     in.wind = forecast.wind;
     in.runs = runs;
     in.run = *k;
+}
+
+void estimateRunSpread(ProblemInputs &in)
+{
+    const MissionSpec &m = in.spec;
+    const auto &strategies = m.execution.strategies;
+    const bool measured = std::find(strategies.begin(), strategies.end(), "dac") != strategies.end() ||
+                          std::find(strategies.begin(), strategies.end(), "replan_observed") != strategies.end();
+    if (!in.runs || in.runs->size() < 2 ||
+        !((m.observations && m.observations->hasFiles()) || (m.execution.enabled && measured)))
+        return;
+    const RunSpread s = runSpread(*in.runs, in.frame.box, m.vehicle.depth);
+    in.runSpread = s;
+    if (s.pairs == 0)
+    {
+        in.forecastNotes.push_back("no two forecast runs overlap: the correction's priors are its defaults");
+        return;
+    }
+    const auto km = [](double v) { return std::isfinite(v) ? text::number(v / 1000.0, 3) + " km" : "unresolved"; };
+    in.forecastNotes.push_back("the runs' differences where they overlap (" + std::to_string(s.pairs) +
+                               " pairs, the NMC method): error " + text::number(s.sigma, 3) +
+                               " m/s per component, length scale " + km(s.lengthScale) + ", time scale " +
+                               (std::isfinite(s.timeScale) ? m.durationText(s.timeScale) : std::string("unresolved")) +
+                               ": the priors of the correction by the DAC where the mission gives none");
 }
 } // namespace ompl_glider::inputs_detail

@@ -32,6 +32,23 @@ CorrectionParams MissionProblem::correctionParams() const
                   : std::isfinite(span)      ? 0.1 * span
                                              : side / m.vehicle.speed;
     p.errorRatio = std::isfinite(s.errorRatio) ? s.errorRatio : forecast.errorRatio;
+    // with forecast runs, the priors of the scales not given from the runs' differences ([ParrishDerberNMC])
+    if (runSpread_ && runSpread_->pairs > 0)
+    {
+        const bool length = !std::isfinite(s.lengthScale) && std::isfinite(runSpread_->lengthScale);
+        const bool time = !std::isfinite(s.timeScale) && std::isfinite(runSpread_->timeScale);
+        if (length)
+            p.lengthScale = runSpread_->lengthScale;
+        if (time)
+            p.timeScale = runSpread_->timeScale;
+        if (length || time)
+            p.priorSource = "from the forecast runs' differences (NMC, " + std::to_string(runSpread_->pairs) +
+                            " pairs" +
+                            (length && time ? ""
+                             : length       ? "; the length scale"
+                                            : "; the time scale") +
+                            ")";
+    }
     // what is given is kept; the rest are priors the DAC may improve on ([RasmussenGP] Sec. 5.4.1)
     p.learn = s.learn;
     p.lengthGiven = std::isfinite(s.lengthScale);

@@ -47,7 +47,7 @@ MissionProblem::MissionProblem(MissionSpec spec) : MissionProblem(loadProblemInp
 
 MissionProblem::MissionProblem(const ProblemInputs &in)
     : spec_(in.spec), field_(in.field), truth_(in.truth), members_(in.members), runs_(in.runs), run_(in.run),
-      frame_(in.frame), forecastFiles_(in.forecastFiles), forecastNotes_(in.forecastNotes),
+      runSpread_(in.runSpread), frame_(in.frame), forecastFiles_(in.forecastFiles), forecastNotes_(in.forecastNotes),
       remoteSources_(in.remoteSources), diveBathymetry_(in.diveBathymetry), coastlineNote_(in.coastlineNote)
 {
     if (in.wind)

@@ -63,6 +63,8 @@ void addSource(Fnv &d, const CurrentSpec &c)
     d.add(c.type);
     for (const std::string &f : c.forecastFiles())
         addFile(d, f, false);
+    for (const std::string &f : c.runs) // a forecast's runs (the first is also `file`)
+        addFile(d, f, false);
     for (const CurrentSpec &m : c.members)
         addSource(d, m);
 }
