@@ -6,7 +6,7 @@ if(TARGET ompl_glider_python)
     list(APPEND OMPL_GLIDER_PY_ENV "GLIDER_PLAN=$<TARGET_FILE:glider_plan>")
   endif()
   foreach(file api cli_equivalence opendap legs observations settings resume correction threads gridded_kind
-               reachability read_observations)
+               reachability read_observations runs)
     add_test(NAME python.${file}
       COMMAND ${Python3_EXECUTABLE} -m pytest -q -p no:cacheprovider ${CMAKE_CURRENT_LIST_DIR}/test_${file}.py)
     set_tests_properties(python.${file} PROPERTIES ENVIRONMENT "${OMPL_GLIDER_PY_ENV}" TIMEOUT 300 LABELS python)
