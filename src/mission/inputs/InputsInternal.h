@@ -18,6 +18,9 @@ namespace inputs_detail
 
 /// The forecast (or analytic flow) and its frame's projection and units.
 void loadField(ProblemInputs &in);
+/// What a loaded gridded forecast gives the inputs besides its field: the frame's projection and units, the files
+/// read, the notes, the remote sources, whether it is of winds.
+void keepForecast(ProblemInputs &in, const LoadedForecast &forecast);
 /// An ensemble's members after the first (the forecast); the field becomes their mean.
 void loadMembers(ProblemInputs &in);
 /// The truth an execution flies in (MissionSpec::execution.truth).

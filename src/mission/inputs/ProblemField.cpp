@@ -51,7 +51,12 @@ void loadField(ProblemInputs &in)
         throw;
     }
     checkDepthAxis(m, forecast);
+    keepForecast(in, forecast);
     in.field = forecast.field;
+}
+
+void keepForecast(ProblemInputs &in, const LoadedForecast &forecast)
+{
     in.frame.projection = forecast.projection;
     in.frame.projectionScale = 1.0;
     in.frame.xyScale = forecast.projection ? 1.0 : forecast.xyMetres;

@@ -103,14 +103,8 @@ void loadRuns(ProblemInputs &in, const CurrentFieldKind &kind)
     checkDepthAxis(m, forecast);
     const double shift = m.fileCalendar->originSeconds - forecast.originSeconds;
     in.field = shift == 0.0 ? forecast.field : std::make_shared<ShiftedTimeField>(forecast.field, shift);
-    in.frame.projection = forecast.projection;
+    keepForecast(in, forecast);
     source->frame.projection = forecast.projection;
-    in.frame.projectionScale = 1.0;
-    in.frame.xyScale = forecast.projection ? 1.0 : forecast.xyMetres;
-    in.forecastFiles = forecast.files;
-    in.forecastNotes = forecast.notes;
-    in.remoteSources = remoteFetchesOf(forecast.files);
-    in.wind = forecast.wind;
     in.runs = runs;
     in.run = *k;
 }
