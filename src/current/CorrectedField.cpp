@@ -262,20 +262,19 @@ CorrectedField::CorrectedField(std::shared_ptr<const CurrentField> base,
     const Eigen::VectorXd au = solver.solve(nu), av = solver.solve(nv);
     alphaU_.assign(au.data(), au.data() + m);
     alphaV_.assign(av.data(), av.data() + m);
-    sample();
     double after = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
         Velocity c = forecastAtDac(
             *base_, DacObservation{used_[i].t, used_[i].at, {}, std::nullopt, used_[i].depthTop, used_[i].depthBottom},
             params_);
-        addCorrection(used_[i].at.x, used_[i].at.y, used_[i].t, c, nullptr);
+        addCorrection(used_[i].at.x, used_[i].at.y, used_[i].t, c, nullptr, true);
         after += std::pow(used_[i].dac.u - c.u, 2) + std::pow(used_[i].dac.v - c.v, 2);
     }
     summary_.rmsAfter = std::sqrt(after / n);
 }
 
-void CorrectedField::sample()
+void CorrectedField::sample() const
 {
     const std::size_t m = nodes_.size();
     if (m <= params_.sampleAbove)
@@ -414,7 +413,13 @@ Velocity CorrectedField::depthAveraged(double x, double y, double t) const
     return depthAveragedCurrent(*base_, x, y, t, params_.depthTop, params_.depthBottom);
 }
 
-void CorrectedField::addCorrection(double x, double y, double t, Velocity &c, Jacobian *j) const
+const GriddedCurrentField *CorrectedField::sampledGrid() const
+{
+    std::call_once(sampleOnce_, [this] { sample(); });
+    return sampled_.get();
+}
+
+void CorrectedField::addCorrection(double x, double y, double t, Velocity &c, Jacobian *j, bool exact) const
 {
     if (used_.empty())
         return;
@@ -429,17 +434,18 @@ void CorrectedField::addCorrection(double x, double y, double t, Velocity &c, Ja
     Velocity g;  // the interpolated part
     Jacobian dg; // and its derivatives
     // sampled: read from the grid, zero outside it (past the cut-off of every superobservation)
-    const bool inSample = sampled_ && x >= sampleXMin_ && x <= sampleXMax_ && y >= sampleYMin_ && y <= sampleYMax_ &&
+    const GriddedCurrentField *sampled = exact ? nullptr : sampledGrid();
+    const bool inSample = sampled && x >= sampleXMin_ && x <= sampleXMax_ && y >= sampleYMin_ && y <= sampleYMax_ &&
                           t >= sampleTMin_ && t <= sampleTMax_;
     if (inSample)
     {
-        g = sampled_->velocity(x, y, 0.0, t);
+        g = sampled->velocity(x, y, 0.0, t);
         if (j)
-            dg = sampled_->jacobian(x, y, 0.0, t);
+            dg = sampled->jacobian(x, y, 0.0, t);
     }
-    auto first = sampled_ ? nodes_.end()
-                          : std::lower_bound(nodes_.begin(), nodes_.end(), t - window,
-                                             [](const Node &o, double v) { return o.t < v; });
+    auto first = sampled ? nodes_.end()
+                         : std::lower_bound(nodes_.begin(), nodes_.end(), t - window,
+                                            [](const Node &o, double v) { return o.t < v; });
     for (auto it = first; it != nodes_.end() && it->t <= t + window; ++it)
     {
         const double dx = x - it->at.x, dy = y - it->at.y, r2 = dx * dx + dy * dy;
@@ -477,6 +483,12 @@ Velocity CorrectedField::correction(double x, double y, double t) const
     return c;
 }
 
+Velocity CorrectedField::velocityOnce(double x, double y, double z, double t) const
+{
+    Velocity c = base_->velocity(x, y, z, t);
+    addCorrection(x, y, t, c, nullptr, true);
+    return c;
+}
 Velocity CorrectedField::evaluate(double x, double y, double z, double t) const
 {
     Velocity c = base_->velocity(x, y, z, t);

@@ -309,10 +309,10 @@ FlownTrack flyPlan(const std::vector<TimedPoint> &plan, double speed, const Curr
             dy /= len;
             if (strategy == ControlStrategy::Dac && !r.measured.empty()) // the last dive's measured current
                 aimOffHeading(target.x - x, target.y - y,
-                              o.learnSteersDac ? learnedNow()->velocity(x, y, o.depth, t) : r.measured.back().dac,
+                              o.learnSteersDac ? learnedNow()->velocityOnce(x, y, o.depth, t) : r.measured.back().dac,
                               surface - t, hx, hy);
             else if (strategy == ControlStrategy::ReplanObserved)
-                crabHeading(dx, dy, learnedNow()->velocity(x, y, o.depth, t), speed, hx, hy);
+                crabHeading(dx, dy, learnedNow()->velocityOnce(x, y, o.depth, t), speed, hx, hy);
             else if (strategy != ControlStrategy::CurrentBlind && strategy != ControlStrategy::Greedy)
                 crabHeading(dx, dy, forecast.velocity(x, y, o.depth, t), speed, hx, hy);
             else

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,7 +60,7 @@ struct CorrectionParams
     bool ratioGiven{true};  ///< see lengthGiven
     /// Where the priors of the scales not given come from, in the report's words ("" : the defaults; with forecast
     /// runs, their spread: ForecastRuns.h's runSpread())
-    std::string priorSource;
+    std::string priorSource{};
     std::size_t minLearn{6}; ///< fewer DAC than this: the priors stand and no mean is fitted
     /// The DAC's own error (field units; > 0 when learning): the observation error is never estimated below it
     double dacError{0.0};
@@ -168,6 +169,10 @@ public:
     /// @brief The correction alone at (x, y, t): F' - F.
     Velocity correction(double x, double y, double t) const;
 
+    /// @brief The corrected current at one point by the exact sum over the superobservations, without sampling the
+    /// grid (sampled at the first velocity() or jacobian() that needs it).
+    Velocity velocityOnce(double x, double y, double z, double t) const override;
+
     double maxSpeed(const Region &region) const override;
     /// @brief The forecast's local bounds widened by the correction's largest reach over the region.
     bool velocityBounds(const Region &region, double &uMin, double &uMax, double &vMin, double &vMax) const override;
@@ -191,8 +196,9 @@ private:
     /// The sums of |alpha_u| and |alpha_v| (and of |alpha|) over the observations that reach @p region, each at most
     /// what the data support (uLow_ ... vHigh_), plus the mean's bound.
     void reach(const Region &region, double &su, double &sv, double &s) const;
-    /// Adds the correction (and, with @p j, its Jacobian) at (x, y, t).
-    void addCorrection(double x, double y, double t, Velocity &c, Jacobian *j) const;
+    /// Adds the correction (and, with @p j, its Jacobian) at (x, y, t): from the sampled grid where there is one,
+    /// else (or when @p exact) the sum over the superobservations.
+    void addCorrection(double x, double y, double t, Velocity &c, Jacobian *j, bool exact = false) const;
 
     std::shared_ptr<const CurrentField> base_;
     CorrectionParams params_;
@@ -207,11 +213,17 @@ private:
     std::vector<double> alphaU_, alphaV_; // their weights (innovations less their mean)
     /// The interpolated part sampled on a grid (CorrectionParams::sampleAbove; null: the exact sum), and the box
     /// and span it covers (the superobservations' extent and the cut-off beyond it: zero outside)
-    std::shared_ptr<const GriddedCurrentField> sampled_;
-    double sampleXMin_{0.0}, sampleXMax_{0.0}, sampleYMin_{0.0}, sampleYMax_{0.0}, sampleTMin_{0.0}, sampleTMax_{0.0};
+    /// It is made at the first query that reads it (a glider's heading at a surfacing, velocityOnce(), does not: a
+    /// correction made anew at every surfacing is sampled only when a plan is made on it).
+    mutable std::shared_ptr<const GriddedCurrentField> sampled_;
+    mutable double sampleXMin_{0.0}, sampleXMax_{0.0}, sampleYMin_{0.0}, sampleYMax_{0.0}, sampleTMin_{0.0},
+        sampleTMax_{0.0};
+    mutable std::once_flag sampleOnce_;
     /// Samples the interpolated part on its grid (sampled_), when there are more superobservations than
     /// CorrectionParams::sampleAbove and the grid stays within a few million nodes.
-    void sample();
+    void sample() const;
+    /// The sampled grid (made at the first call; null: the exact sum).
+    const GriddedCurrentField *sampledGrid() const;
     /// What the data support: the interpolated part of the correction stays within the range of the superobservations'
     /// innovations (less their mean) and zero, per component, however ill-conditioned their system
     double uLow_{0.0}, uHigh_{0.0}, vLow_{0.0}, vHigh_{0.0};

@@ -76,6 +76,11 @@ public:
         return evaluateJacobian(x, y, z, t);
     }
 
+    /// @brief The current at one point asked once (a glider's heading at a surfacing): velocity(), to the accuracy of
+    /// the field's own sampling. A field that prepares for many queries (CorrectedField's sampled grid) answers it
+    /// without preparing. Counts one CMC.
+    virtual Velocity velocityOnce(double x, double y, double z, double t) const { return velocity(x, y, z, t); }
+
     /// @brief An upper bound of |c| over the region and time window (the A*TVE heuristic, [EichhornRAS] Eq. 1).
     virtual double maxSpeed(const Region &region) const = 0;
 
