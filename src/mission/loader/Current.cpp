@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
+#include <limits>
 #include <set>
 
 #include "MissionReader.h"
@@ -14,6 +16,7 @@
 #include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
+#include "../../core/Numbers.h"
 #if OMPL_GLIDER_WITH_NETCDF
 #include "ompl_glider/io/UnitConversion.h"
 #endif
@@ -25,11 +28,31 @@ namespace
 /// Time origin of a gridded forecast (its first time, as its source loads it): ISO dates of the mission are field
 /// times in the file's calendar, and the outputs get calendar dates. The time axis is found by the source's own
 /// detection (GriddedSource::timeAxis(): variables.time, else the source's rules).
-/// The time axis of the earliest of forecast runs (the mission's clock starts at its first time): each run's axis
-/// must be dated, not steady, and on one calendar. @throws Error naming the run at fault.
-ForecastTimeAxis earliestRun(const CurrentFieldKind &kind, ForecastRequest o, const std::vector<std::string> &runs)
+/// The departure date of @p departure (its `time` as a date text) in seconds from the epoch of @p calendar; NaN when
+/// there is none (a number, a window, not given, or not a date: the departure's own reading reports it).
+double departureDate(const YAML::Node &departure, Calendar calendar)
 {
-    ForecastTimeAxis first;
+    if (!departure.IsDefined() || !departure.IsMap() || !departure["time"] || !departure["time"].IsScalar())
+        return std::numeric_limits<double>::quiet_NaN();
+    try
+    {
+        return secondsSinceCalendarEpoch(departure["time"].Scalar(), calendar);
+    }
+    catch (const Error &)
+    {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+}
+
+/// The time axis of the run that starts the mission's clock: the newest run available at the departure date
+/// (@p departure, @p delay: its reference time plus the delay at or before it; ties: the later first time), else the
+/// earliest run. Each run's axis must be dated, not steady, and on one calendar. @throws Error naming the run at fault.
+ForecastTimeAxis clockRun(const CurrentFieldKind &kind, ForecastRequest o, const std::vector<std::string> &runs,
+                          const YAML::Node &departure, double delay)
+{
+    ForecastTimeAxis first, chosen;
+    double chosenReference = -kInf;
+    bool found = false;
     for (const std::string &run : runs)
     {
         o.files = {run};
@@ -44,11 +67,20 @@ ForecastTimeAxis earliestRun(const CurrentFieldKind &kind, ForecastRequest o, co
                         ") differs from the first run's (" + calendarName(first.calendar) + ")");
         if (run == runs.front() || axis.originSeconds < first.originSeconds)
             first = axis;
+        const double at = departureDate(departure, axis.calendar);
+        const double reference = std::isfinite(axis.referenceSeconds) ? axis.referenceSeconds : axis.originSeconds;
+        if (reference + delay <= at && (!found || reference > chosenReference ||
+                                        (reference == chosenReference && axis.originSeconds > chosen.originSeconds)))
+        {
+            chosen = axis;
+            chosenReference = reference;
+            found = true;
+        }
     }
-    return first;
+    return found ? chosen : first;
 }
 
-void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
+void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m, const YAML::Node &departure = YAML::Node())
 {
     const CurrentFieldKind &kind = *findCurrentFieldKind(m.current.type);
     ForecastRequest o;
@@ -63,7 +95,8 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
     ForecastTimeAxis axis;
     try
     {
-        axis = m.current.runs.empty() ? kind.source->timeAxis(o) : earliestRun(kind, o, m.current.runs);
+        axis = m.current.runs.empty() ? kind.source->timeAxis(o)
+                                      : clockRun(kind, o, m.current.runs, departure, m.current.runDelay);
     }
     catch (const Error &e)
     {
@@ -185,7 +218,7 @@ void readForecastFiles(const Reader &r, const YAML::Node &n, const std::string &
 }
 } // namespace
 
-void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
+void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m, const YAML::Node &departure)
 {
     if (isDrawnEnsemble(n))
         return readDrawnEnsemble(r, n, m); // members drawn from one source (DrawnEnsemble.cpp)
@@ -220,7 +253,7 @@ void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m)
     readCurrentSource(r, n, "current", m.current, {"runs", "run_delay"});
     readRuns(r, n, m);
     if (m.current.isForecast())
-        readFileCalendar(r, n, m);
+        readFileCalendar(r, n, m, departure);
 }
 
 void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &f, CurrentSpec &c,

@@ -144,7 +144,7 @@ MissionSpec readMission(const YAML::Node &root, const Reader &r)
     readHeader(r, root, m);
     if (!root["current"])
         r.fail(root, "current", "missing: the current source (type: meandering_jet | uniform | ... | netcdf)");
-    readCurrent(r, root["current"], m);
+    readCurrent(r, root["current"], m, root["departure"]);
     if (m.current.isForecast() && root["units"])
         r.fail(root["units"], "units", "a gridded forecast is planned in metres and seconds: remove 'units'");
     // A dated forecast defines the time origin; a steady file without dates takes the mission's epoch as the date

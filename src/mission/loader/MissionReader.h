@@ -97,7 +97,10 @@ void readThreads(const Reader &r, const YAML::Node &n, const std::string &f, uns
 double duration(const Reader &r, const YAML::Node &n, const std::string &f, const MissionSpec &m);
 void readPolygon(const Reader &r, const YAML::Node &n, const std::string &field, PolygonSpec &poly,
                  const MissionSpec &m);
-void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m);
+/// The `current` section @p n. With forecast runs, @p departure (the mission's `departure`, may be undefined) chooses
+/// the mission's clock: a departure date given sets it to the first time of the newest run available then (the run
+/// the plan is made on, read on its own clock as that file alone), else the earliest run's.
+void readCurrent(const Reader &r, const YAML::Node &n, MissionSpec &m, const YAML::Node &departure = YAML::Node());
 /// A current source (the `current` section's keys) under the dotted field @p field, without the file calendar;
 /// @p extraKeys are further keys the node may hold (read by the caller).
 void readCurrentSource(const Reader &r, const YAML::Node &n, const std::string &field, CurrentSpec &c,
