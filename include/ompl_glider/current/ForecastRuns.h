@@ -23,6 +23,9 @@ namespace ompl_glider
 struct ForecastRun
 {
     std::string file;          ///< the file or URL holding it
+    /// in a file of several runs (a THREDDS FMRC), its index along the run dimension (ForecastRequest::run);
+    /// unset: the file is this run alone
+    std::optional<std::size_t> runIndex;
     double reference{0.0};     ///< its reference time (CF forecast_reference_time; else its first time)
     double available{0.0};     ///< when it became available: reference + the run delay
     double begin{0.0};         ///< its first time

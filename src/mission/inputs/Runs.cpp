@@ -22,35 +22,47 @@ namespace ompl_glider::inputs_detail
 {
 namespace
 {
-/// The mission @p m with run @p file as its one forecast.
-MissionSpec withRun(const MissionSpec &m, const std::string &file)
+/// The mission @p m with run @p run (its file, and its index in a file of several runs) as its one forecast.
+MissionSpec withRun(const MissionSpec &m, const ForecastRun &run)
 {
     MissionSpec out = m;
-    out.current.file = file;
+    out.current.file = run.file;
+    out.current.runIndex = run.runIndex;
     out.current.files.clear();
     out.current.runs.clear();
     return out;
 }
 
-/// Each run's times on the mission's clock (m.fileCalendar: the earliest run's first time).
+/// Each run's times on the mission's clock (m.fileCalendar: the earliest run's first time); a file of several runs
+/// (a THREDDS FMRC) is each of its runs.
 std::vector<ForecastRun> readRuns(const MissionSpec &m, const CurrentFieldKind &kind)
 {
     const double origin = m.fileCalendar ? m.fileCalendar->originSeconds : 0.0;
     std::vector<ForecastRun> out;
     for (const std::string &file : m.current.runs)
     {
-        ForecastRequest o = forecastRequest(withRun(m, file));
-        const ForecastTimeAxis axis = kind.source->timeAxis(o);
-        if (!axis.dated || !m.fileCalendar || axis.calendar != m.fileCalendar->calendar)
-            throw Error("forecast run '" + file + "': its time axis is not dated on the first run's calendar");
         ForecastRun r;
         r.file = file;
-        r.begin = axis.originSeconds - origin;
-        r.end = r.begin + axis.span;
-        r.reference = axis.referenceSeconds - origin;
-        r.available = r.reference + m.current.runDelay;
-        r.referenceFrom = axis.referenceFrom;
-        out.push_back(r);
+        ForecastRequest o = forecastRequest(withRun(m, r));
+        const ForecastTimeAxis all = kind.source->timeAxis(o);
+        std::vector<std::optional<std::size_t>> slices{std::nullopt};
+        if (!all.runs.empty())
+            slices.assign(all.runs.size(), std::nullopt);
+        for (std::size_t k = 0; k < all.runs.size(); ++k)
+            slices[k] = k;
+        for (const std::optional<std::size_t> &k : slices)
+        {
+            const ForecastTimeAxis axis = k ? all.runAxis(*k) : all;
+            if (!axis.dated || !m.fileCalendar || axis.calendar != m.fileCalendar->calendar)
+                throw Error("forecast run '" + file + "': its time axis is not dated on the first run's calendar");
+            r.runIndex = k ? std::optional<std::size_t>(all.runs[*k].index) : std::nullopt;
+            r.begin = axis.originSeconds - origin;
+            r.end = r.begin + axis.span;
+            r.reference = axis.referenceSeconds - origin;
+            r.available = r.reference + m.current.runDelay;
+            r.referenceFrom = axis.referenceFrom;
+            out.push_back(r);
+        }
     }
     return out;
 }
@@ -67,7 +79,7 @@ void loadRuns(ProblemInputs &in, const CurrentFieldKind &kind)
     auto gate = std::make_shared<std::mutex>();
     ForecastRuns::Loader load = [source, gate](const ForecastRun &r) {
         std::lock_guard<std::mutex> hold(*gate);
-        CurrentSpec run = withRun(source->spec, r.file).current;
+        CurrentSpec run = withRun(source->spec, r).current;
         run.mark = {};
         return loadSource(*source, run, "current.runs");
     };
@@ -85,7 +97,7 @@ void loadRuns(ProblemInputs &in, const CurrentFieldKind &kind)
     const ForecastRun &run = (*runs)[*k];
     // the run read as the mission given that file alone reads it: its own clock (field time 0 its first time),
     // the departure on that clock, then shifted back onto the mission's
-    MissionSpec alone = withRun(m, run.file);
+    MissionSpec alone = withRun(m, run);
     alone.departure.time -= run.begin;
     alone.departure.begin -= run.begin;
     alone.departure.end -= run.begin;

@@ -27,23 +27,36 @@ namespace
 /// detection (GriddedSource::timeAxis(): variables.time, else the source's rules).
 /// The time axis of the earliest of forecast runs (the mission's clock starts at its first time): each run's axis
 /// must be dated, not steady, and on one calendar. @throws Error naming the run at fault.
+/// A file of several runs (a THREDDS FMRC: ForecastTimeAxis::runs) is each of its runs.
 ForecastTimeAxis earliestRun(const CurrentFieldKind &kind, ForecastRequest o, const std::vector<std::string> &runs)
 {
     ForecastTimeAxis first;
+    bool any = false;
     for (const std::string &run : runs)
     {
         o.files = {run};
-        const ForecastTimeAxis axis = kind.source->timeAxis(o);
-        if (!axis.found || axis.steady || !axis.dated)
-            throw Error("forecast run '" + run + "': " +
-                        (axis.dated ? std::string("one time only; a run is a forecast over time")
-                                    : std::string("its time axis has no dates ('<unit> since <date>'): a run's "
-                                                  "reference time and availability are dates")));
-        if (run != runs.front() && axis.calendar != first.calendar)
-            throw Error("forecast run '" + run + "': its calendar (" + calendarName(axis.calendar) +
-                        ") differs from the first run's (" + calendarName(first.calendar) + ")");
-        if (run == runs.front() || axis.originSeconds < first.originSeconds)
-            first = axis;
+        const ForecastTimeAxis all = kind.source->timeAxis(o);
+        std::vector<ForecastTimeAxis> axes{all};
+        if (!all.runs.empty())
+            axes.clear();
+        for (std::size_t k = 0; k < all.runs.size(); ++k)
+            axes.push_back(all.runAxis(k));
+        for (const ForecastTimeAxis &axis : axes)
+        {
+            const std::string name = "forecast run '" + run + "'" +
+                                     (all.runs.empty() ? "" : " (" + axis.referenceFrom + ")");
+            if (!axis.found || axis.steady || !axis.dated)
+                throw Error(name + ": " +
+                            (axis.dated ? std::string("one time only; a run is a forecast over time")
+                                        : std::string("its time axis has no dates ('<unit> since <date>'): a run's "
+                                                      "reference time and availability are dates")));
+            if (any && axis.calendar != first.calendar)
+                throw Error(name + ": its calendar (" + calendarName(axis.calendar) + ") differs from the first run's (" +
+                            calendarName(first.calendar) + ")");
+            if (!any || axis.originSeconds < first.originSeconds)
+                first = axis;
+            any = true;
+        }
     }
     return first;
 }
@@ -79,6 +92,13 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
             r.fail(n["variables"]["u"], field, what);
         r.fail(n["file"] ? n["file"] : n["runs"], n["file"] ? "current.file" : "current.runs", what);
     }
+    if (m.current.runs.empty() && axis.runs.size() > 1)
+        r.fail(n["file"], "current.file",
+               "'" + m.current.file + "' holds " + std::to_string(axis.runs.size()) +
+                   " forecast runs (a forecast model run collection, a THREDDS FMRC: the velocities on a run "
+                   "dimension, time '" + axis.variable +
+                   "' 2-D): give it as 'runs:' in place of 'file:', and the plan is made on the newest run "
+                   "available at the departure");
     m.current.steady = axis.steady;
     if (!axis.found || !axis.dated)
         return; // a steady field without dates, or raw times of a Cartesian file: no calendar

@@ -154,20 +154,25 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
     return m;
 }
 
+/// A run of forecast runs: its file, its index in a file of several runs (a THREDDS FMRC), when it is available.
+struct RunAt
+{
+    std::string file;
+    std::optional<std::size_t> runIndex;
+    double available{0.0};
+};
+
 /// Forecast runs (ForecastInput::current.runs): the run planned on, the newest available at the departure (its
-/// reference time + current.runDelay at or before it), whose file the mission is then made of, as of that file
-/// alone (its first time the mission's field time 0); without a departure, the first run's availability becomes
-/// the departure (@p departure is set to it). @throws Error for a departure that is no date, or before any run.
-std::string runAtDeparture(const MissionSpec &m, const ForecastInput &q, std::string &departure)
+/// reference time + current.runDelay at or before it), whose file (and run in a file of several) the mission is then
+/// made of, as of that run alone (its first time the mission's field time 0); without a departure, the first run's
+/// availability becomes the departure (@p departure is set to it). @throws Error for a departure that is no date,
+/// or before any run.
+RunAt runAtDeparture(const MissionSpec &m, const ForecastInput &q, std::string &departure)
 {
     if (!departure.empty() && isNumber(departure))
         throw Error(named(q, "departure.time") + " " + departure +
                     ": with forecast runs the departure is a date (ISO 8601), not a time after one run's start");
-    struct Run
-    {
-        std::string file;
-        double available{0.0};
-    };
+    using Run = RunAt;
     std::vector<Run> runs;
     Calendar calendar = Calendar::Standard;
     for (const std::string &file : m.current.runs)
@@ -183,11 +188,18 @@ std::string runAtDeparture(const MissionSpec &m, const ForecastInput &q, std::st
         {
             throw Error(callerMessage(e, q, o), e.field());
         }
-        if (!axis.dated || axis.steady)
-            throw Error(named(q, "current.runs") + ": forecast run '" + file +
-                        "' has no dated time axis of several times: a run's reference time and availability are dates");
-        calendar = axis.calendar;
-        runs.push_back({file, axis.referenceSeconds + m.current.runDelay});
+        for (std::size_t k = 0; k < std::max<std::size_t>(1, axis.runs.size()); ++k)
+        {
+            const ForecastTimeAxis one = axis.runs.empty() ? axis : axis.runAxis(k);
+            if (!one.dated || one.steady)
+                throw Error(named(q, "current.runs") + ": forecast run '" + file +
+                            (axis.runs.empty() ? "'" : "' (" + one.referenceFrom + ")") +
+                            " has no dated time axis of several times: a run's reference time and availability are "
+                            "dates");
+            calendar = one.calendar;
+            runs.push_back({file, axis.runs.empty() ? std::nullopt : std::optional<std::size_t>(axis.runs[k].index),
+                            one.referenceSeconds + m.current.runDelay});
+        }
     }
     const auto first = std::min_element(runs.begin(), runs.end(),
                                         [](const Run &a, const Run &b) { return a.available < b.available; });
@@ -210,7 +222,7 @@ std::string runAtDeparture(const MissionSpec &m, const ForecastInput &q, std::st
         throw Error(named(q, "current.runs") + ": no run is available at the departure " + departure +
                     ": the first, '" + first->file + "', is available from " +
                     formatCalendarTime(first->available, calendar) + " (its reference time + the run delay)");
-    return newest->file;
+    return *newest;
 }
 
 /// Longitude/latitude or x/y: the reader's own detection, before any region is cut.
@@ -500,7 +512,9 @@ MissionSpec forecastMission(const ForecastInput &input)
     ForecastInput given = q; // with runs, the departure (the first run's availability when none is given)
     if (!q.current.runs.empty())
     {
-        m.current.file = runAtDeparture(m, q, given.departure);
+        const RunAt run = runAtDeparture(m, q, given.departure);
+        m.current.file = run.file;
+        m.current.runIndex = run.runIndex;
         m.current.files.clear();
         file = m.current.file; // messages name the run planned on
         m.file = withoutCredentials(file);
