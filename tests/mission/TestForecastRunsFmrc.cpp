@@ -1,0 +1,297 @@
+// Forecast runs in one file of several runs, as a THREDDS FMRC serves them over OPeNDAP (the velocities on a run
+// dimension whose coordinate is the runs' reference times, time a 2-D time(run, time)): given as `current.runs` it
+// is each of its runs, and every departure is planned as on the same runs given one file each (to 1e-9); each run's
+// reference time is its value of the run coordinate; a run shorter than the others (its row of time ending in fill
+// values) keeps only its own times; the file given as `current.file` is an error that says to give it as runs.
+// Also a folder of daily HYCOM-named run files whose reference time is HYCOM's `tau` (hours since the analysis).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "RunFiles.h"
+#include "ompl_glider/Exception.h"
+#include "ompl_glider/current/ForecastRuns.h"
+#include "ompl_glider/mission/ForecastMission.h"
+#include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/MissionSpec.h"
+#include "ompl_glider/mission/Planning.h"
+
+using namespace ompl_glider;
+using namespace glider_test;
+
+namespace
+{
+/// Five daily runs of @p lengths records each, one file a run and all in one file of several runs.
+struct FmrcAndFiles
+{
+    TempDir dir;
+    std::vector<std::string> files;
+    std::string fmrc;
+    explicit FmrcAndFiles(const std::vector<std::size_t> &lengths = std::vector<std::size_t>(5, kRunTimes),
+                          const FmrcLayout &layout = {})
+    {
+        for (std::size_t r = 0; r < lengths.size(); ++r)
+        {
+            files.push_back(dir.file("run_2026030" + std::to_string(1 + r) + ".nc"));
+            writeRun(files.back(), int(r), RunReference::Variable, lengths[r]);
+        }
+        fmrc = dir.file("fmrc_TwoD.nc");
+        writeFmrc(fmrc, lengths, layout);
+    }
+    std::string mission(const std::string &name, const std::string &current, const std::string &departure) const
+    {
+        const std::string path = dir.file(name + ".yaml");
+        std::ofstream(path)
+            << "name: " << name << "\ncurrent:\n  type: netcdf\n"
+            << current << "  horizon: hold_last\n"
+            << "start: {lon: -52.85, lat: 47.15}\ngoal: {lon: -52.1, lat: 47.85}\n"
+            << "departure: {time: \"" << departure << "\"}\n"
+            << "vehicle: {speed: 0.5}\nplanner: {name: zastartve, grid_size: 4000, sectors: 3, global_check: false}\n";
+        return path;
+    }
+    std::string onFiles() const { return "  runs: \"" + dir.file("run_*.nc") + "\"\n"; }
+    std::string onFmrc() const { return "  runs: \"" + fmrc + "\"\n"; }
+};
+
+void expectSamePlan(const MissionResult &a, const MissionResult &b)
+{
+    ASSERT_TRUE(a.plan.solved) << a.plan.reason;
+    ASSERT_TRUE(b.plan.solved) << b.plan.reason;
+    EXPECT_NEAR(a.plan.travelTime, b.plan.travelTime, 1e-9);
+    EXPECT_NEAR(a.plan.rawTravelTime, b.plan.rawTravelTime, 1e-9);
+    ASSERT_EQ(a.plan.path.size(), b.plan.path.size());
+    for (std::size_t k = 0; k < a.plan.path.size(); ++k)
+    {
+        EXPECT_NEAR(a.plan.path[k].x, b.plan.path[k].x, 1e-9); // metres
+        EXPECT_NEAR(a.plan.path[k].y, b.plan.path[k].y, 1e-9);
+        EXPECT_NEAR(a.plan.path[k].t, b.plan.path[k].t, 1e-9); // seconds
+    }
+}
+
+/// The runs of @p a and @p b are the same runs: times, reference times, availability and currents.
+void expectSameRuns(const ForecastRuns &a, const ForecastRuns &b)
+{
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k)
+    {
+        SCOPED_TRACE(k);
+        EXPECT_EQ(a[k].begin, b[k].begin);
+        EXPECT_EQ(a[k].end, b[k].end);
+        EXPECT_EQ(a[k].reference, b[k].reference);
+        EXPECT_EQ(a[k].available, b[k].available);
+        for (double dt : {0.0, 5.0, 23.0})
+        {
+            const double t = std::min(a[k].begin + dt * 3600.0, a[k].end);
+            const Velocity va = a.field(k)->velocity(1500.0, -2500.0, 0.0, t),
+                           vb = b.field(k)->velocity(1500.0, -2500.0, 0.0, t);
+            EXPECT_EQ(va.u, vb.u);
+            EXPECT_EQ(va.v, vb.v);
+        }
+    }
+}
+} // namespace
+
+TEST(ForecastRunsFmrc, EveryDepartureIsPlannedAsOnTheRunFiles)
+{
+    const FmrcAndFiles runs;
+    const char *departures[] = {"2026-03-01T12:00:00Z", "2026-03-02T11:59:00Z", "2026-03-03T12:00:00Z",
+                                "2026-03-04T20:00:00Z", "2026-03-05T13:00:00Z"};
+    const std::size_t expected[] = {0, 0, 2, 3, 4};
+    for (std::size_t c = 0; c < 5; ++c)
+    {
+        SCOPED_TRACE(departures[c]);
+        const MissionProblem onFmrc(loadMission(runs.mission("fmrc", runs.onFmrc(), departures[c])));
+        const MissionProblem onFiles(loadMission(runs.mission("files", runs.onFiles(), departures[c])));
+        ASSERT_TRUE(onFmrc.runs());
+        ASSERT_TRUE(onFiles.runs());
+        EXPECT_EQ(onFmrc.runs()->size(), 5u);
+        EXPECT_EQ(onFmrc.runIndex(), expected[c]);
+        EXPECT_EQ(onFiles.runIndex(), expected[c]);
+        const MissionResult a = runMission(onFmrc), b = runMission(onFiles);
+        expectSamePlan(a, b);
+        ASSERT_FALSE(a.forecastNotes.empty());
+        const std::string &note = a.forecastNotes.front();
+        EXPECT_NE(note.find("run " + std::to_string(expected[c] + 1) + " of 5"), std::string::npos) << note;
+        EXPECT_NE(note.find("variable 'run', run " + std::to_string(expected[c] + 1) + " of 5"), std::string::npos)
+            << note;
+    }
+}
+
+TEST(ForecastRunsFmrc, ReferenceTimesAreTheRunCoordinate)
+{
+    const FmrcAndFiles runs;
+    const MissionProblem p(loadMission(runs.mission("fmrc", runs.onFmrc(), "2026-03-01T12:00:00Z")));
+    const MissionProblem q(loadMission(runs.mission("files", runs.onFiles(), "2026-03-01T12:00:00Z")));
+    ASSERT_TRUE(p.runs());
+    const ForecastRuns &r = *p.runs();
+    const MissionSpec &m = p.getSpec();
+    for (std::size_t k = 0; k < r.size(); ++k)
+    {
+        SCOPED_TRACE(k);
+        EXPECT_EQ(r[k].file, runs.fmrc);
+        ASSERT_TRUE(r[k].runIndex);
+        EXPECT_EQ(*r[k].runIndex, k);
+        EXPECT_EQ(m.isoTime(r[k].reference), "2026-03-0" + std::to_string(k + 1) + "T00:00:00Z");
+        EXPECT_EQ(m.isoTime(r[k].begin), "2026-03-0" + std::to_string(k + 1) + "T00:00:00Z");
+        EXPECT_DOUBLE_EQ(r[k].end - r[k].begin, 72.0 * 3600.0);
+        EXPECT_EQ(r[k].referenceFrom, "variable 'run', run " + std::to_string(k + 1) + " of 5");
+    }
+    expectSameRuns(r, *q.runs());
+}
+
+TEST(ForecastRunsFmrc, ARunShorterThanTheOthersKeepsItsOwnTimes)
+{
+    // THREDDS 5 names (reftime, time1) and a depth: u(reftime, time1, depth, lat, lon); run 2 has 2 days, run 4 one
+    const std::vector<std::size_t> lengths{25, 25, 17, 25, 9};
+    FmrcLayout layout;
+    layout.run = "reftime";
+    layout.time = "time1";
+    layout.depth = true;
+    const FmrcAndFiles runs(lengths, layout);
+    for (const char *departure : {"2026-03-03T13:00:00Z", "2026-03-05T12:30:00Z"})
+    {
+        SCOPED_TRACE(departure);
+        const MissionProblem p(loadMission(runs.mission("fmrc", runs.onFmrc(), departure)));
+        const MissionProblem q(loadMission(runs.mission("files", runs.onFiles(), departure)));
+        ASSERT_TRUE(p.runs());
+        const ForecastRuns &r = *p.runs();
+        for (std::size_t k = 0; k < r.size(); ++k)
+            EXPECT_DOUBLE_EQ(r[k].end - r[k].begin, 3.0 * 3600.0 * double(lengths[k] - 1)) << k;
+        EXPECT_EQ(r[4].referenceFrom, "variable 'reftime', run 5 of 5");
+        expectSameRuns(r, *q.runs());
+        expectSamePlan(runMission(p), runMission(q));
+    }
+}
+
+TEST(ForecastRunsFmrc, TheCommandLinesRunsReadTheFmrc)
+{
+    // glider_plan --currents FMRC --runs and Field.netcdf(FMRC, runs=True): forecastMission() on the run's clock
+    const FmrcAndFiles runs;
+    ForecastInput in;
+    in.start = {-52.85, 47.15};
+    in.goal = {-52.1, 47.85};
+    in.speed = 0.5;
+    in.current.horizonPolicy = BeyondForecast::HoldLast;
+    in.departure = "2026-03-03T13:00:00Z";
+    ForecastInput onFmrc = in, onFiles = in;
+    onFmrc.current.runs = {runs.fmrc};
+    onFiles.current.runs = runs.files;
+    MissionSpec a = forecastMission(onFmrc), b = forecastMission(onFiles);
+    for (MissionSpec *m : {&a, &b})
+        m->planner.globalCheck = false; // (its wall-clock limit is not reproducible)
+    EXPECT_EQ(a.current.file, runs.fmrc);
+    ASSERT_TRUE(a.current.runIndex);
+    EXPECT_EQ(*a.current.runIndex, 2u);
+    EXPECT_EQ(a.departure.time, b.departure.time);
+    const MissionProblem pa(a), pb(b);
+    ASSERT_TRUE(pa.runs());
+    EXPECT_EQ(pa.runIndex(), 2u);
+    expectSamePlan(runMission(pa), runMission(pb));
+    // the file of several runs given as one forecast: an error that says to read it as runs
+    ForecastInput plain = in;
+    plain.current.file = runs.fmrc;
+    try
+    {
+        (void)MissionProblem(forecastMission(plain));
+        FAIL() << "expected an error";
+    }
+    catch (const Error &e)
+    {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("5 forecast runs"), std::string::npos) << what;
+        EXPECT_NE(what.find("current.runs"), std::string::npos) << what;
+    }
+}
+
+TEST(ForecastRunsFmrc, GivenAsFileItIsAnErrorSayingRuns)
+{
+    const FmrcAndFiles runs;
+    try
+    {
+        (void)loadMission(runs.mission("plain", "  file: \"" + runs.fmrc + "\"\n", "2026-03-02T12:00:00Z"));
+        FAIL() << "expected an error";
+    }
+    catch (const Error &e)
+    {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("current.file"), std::string::npos) << what;
+        EXPECT_NE(what.find("holds 5 forecast runs"), std::string::npos) << what;
+        EXPECT_NE(what.find("'runs:'"), std::string::npos) << what;
+    }
+}
+
+namespace
+{
+/// A HYCOM (GOFS 3.1 / ESPC) run file: water_u/water_v(time, depth, lat, lon), time in hours since 2000-01-01, and
+/// `tau` the hours since the analysis (the run's reference time, 12Z on day 1 + r), its first record 12 h after it.
+void writeHycomRun(const std::string &path, int r)
+{
+    NcWriter w(path, NC_CLOBBER);
+    const std::size_t nt = 17;
+    const int dt = w.dim("time", nt), dz = w.dim("depth", 1), dy = w.dim("lat", kRunNy), dx = w.dim("lon", kRunNx);
+    const int vt = w.var("time", NC_DOUBLE, {dt}), vtau = w.var("tau", NC_DOUBLE, {dt}),
+              vz = w.var("depth", NC_DOUBLE, {dz}), vy = w.var("lat", NC_DOUBLE, {dy}),
+              vx = w.var("lon", NC_DOUBLE, {dx});
+    const int vu = w.var("water_u", NC_FLOAT, {dt, dz, dy, dx}), vv = w.var("water_v", NC_FLOAT, {dt, dz, dy, dx});
+    w.text(vt, "units", "hours since 2000-01-01 00:00:00");
+    w.text(vt, "time_origin", "2000-01-01 00:00:00");
+    w.text(vtau, "long_name", "Tau");
+    w.text(vtau, "units", "hours since analysis");
+    w.text(vtau, "time_origin", "2026-03-0" + std::to_string(1 + r) + " 12:00:00");
+    w.text(vz, "units", "m");
+    w.text(vz, "positive", "down");
+    w.text(vy, "units", "degrees_north");
+    w.text(vx, "units", "degrees_east");
+    w.text(vu, "standard_name", "eastward_sea_water_velocity");
+    w.text(vv, "standard_name", "northward_sea_water_velocity");
+    for (int v : {vu, vv})
+        w.text(v, "units", "m/s");
+    w.enddef();
+    // 2026-03-01T00:00Z is 26 years (7 leap days) after 2000-01-01: 9556 days
+    const double analysis = (9556.0 + r) * 24.0 + 12.0;
+    std::vector<double> tau = linspace(12.0, 3.0, nt), time;
+    for (double h : tau)
+        time.push_back(analysis + h);
+    std::vector<double> u, v;
+    runFlow(r, nt, u, v);
+    w.put(vt, time);
+    w.put(vtau, tau);
+    w.put(vz, {0.0});
+    w.put(vy, runLats());
+    w.put(vx, runLons());
+    w.put(vu, u);
+    w.put(vv, v);
+}
+} // namespace
+
+TEST(ForecastRunsFmrc, AFolderOfHycomRunsTakesTheReferenceFromTau)
+{
+    TempDir dir;
+    for (int r = 0; r < 4; ++r)
+        writeHycomRun(dir.file("hycom_glby_930_2026030" + std::to_string(1 + r) + "12_t012_uv3z.nc"), r);
+    const std::string path = dir.file("hycom.yaml");
+    std::ofstream(path) << "name: hycom\ncurrent:\n  type: netcdf\n  runs: \"" << dir.file("hycom_glby_930_*.nc")
+                        << "\"\n  horizon: hold_last\n"
+                        << "start: {lon: -52.85, lat: 47.15}\ngoal: {lon: -52.1, lat: 47.85}\n"
+                        << "departure: {time: \"2026-03-03T06:00:00Z\"}\nvehicle: {speed: 0.5}\n"
+                        << "planner: {name: zastartve, grid_size: 4000, sectors: 3, global_check: false}\n";
+    const MissionProblem p(loadMission(path));
+    ASSERT_TRUE(p.runs());
+    const ForecastRuns &r = *p.runs();
+    const MissionSpec &m = p.getSpec();
+    ASSERT_EQ(r.size(), 4u);
+    for (std::size_t k = 0; k < r.size(); ++k)
+    {
+        SCOPED_TRACE(k);
+        EXPECT_EQ(m.isoTime(r[k].reference), "2026-03-0" + std::to_string(k + 1) + "T12:00:00Z");
+        EXPECT_EQ(r[k].begin - r[k].reference, 12.0 * 3600.0); // the first record 12 h after the analysis
+        EXPECT_NE(r[k].referenceFrom.find("'tau'"), std::string::npos) << r[k].referenceFrom;
+    }
+    // available 12 h after its analysis: at 2026-03-03T06Z the newest is run 2 (analysis 2026-03-02T12Z)
+    EXPECT_EQ(p.runIndex(), 1u);
+    const MissionResult res = runMission(p);
+    ASSERT_TRUE(res.plan.solved) << res.plan.reason;
+}
