@@ -22,7 +22,7 @@ namespace ompl_glider
 /// @brief One forecast run (times on the mission's clock: field time).
 struct ForecastRun
 {
-    std::string file;          ///< the file or URL holding it
+    std::string file; ///< the file or URL holding it
     /// in a file of several runs (a THREDDS FMRC), its index along the run dimension (ForecastRequest::run);
     /// unset: the file is this run alone
     std::optional<std::size_t> runIndex;

@@ -132,10 +132,10 @@ struct Layout
     std::vector<Role> role;                     ///< per dimension
     std::vector<int> coordVar;                  ///< 1-D coordinate variable per dimension, -1 if none
     int dimT{-1}, dimZ{-1}, dimX{-1}, dimY{-1}; ///< index in dims, -1 if absent (x/y always present)
-    int dimRun{-1};      ///< index in dims of the runs of a file of several forecast runs, -1 if absent
-    std::size_t run{0};  ///< the run read along it (GriddedCurrentOptions::runIndex)
-    int runVar{-1};      ///< its coordinate variable (the runs' reference times), -1 if none
-    bool curvilinear{false};                    ///< x/y from 2-D coordinate variables lon2D/lat2D
+    int dimRun{-1};          ///< index in dims of the runs of a file of several forecast runs, -1 if absent
+    std::size_t run{0};      ///< the run read along it (GriddedCurrentOptions::runIndex)
+    int runVar{-1};          ///< its coordinate variable (the runs' reference times), -1 if none
+    bool curvilinear{false}; ///< x/y from 2-D coordinate variables lon2D/lat2D
     int lon2D{-1}, lat2D{-1};
     bool geographic{false};   ///< longitude/latitude (projected), else Cartesian
     std::string xName, yName; ///< the horizontal coordinate variables (1-D or 2-D)

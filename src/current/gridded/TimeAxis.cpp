@@ -145,8 +145,10 @@ std::optional<SteadyRecord> steadyRecordOf(const GriddedDataset &f, int timeDim,
     {
         const TimeValues v = readTimeValues(f, tv, true, opt.timeUnits, opt.runIndex.value_or(0));
         if (k >= v.times.size())
-            throw f.error("GriddedCurrentOptions::steadyRecord " + std::to_string(k) + " is out of range: the run read "
-                              "has " + std::to_string(v.times.size()) + " times",
+            throw f.error("GriddedCurrentOptions::steadyRecord " + std::to_string(k) +
+                              " is out of range: the run read "
+                              "has " +
+                              std::to_string(v.times.size()) + " times",
                           "GriddedCurrentOptions::steadyRecord");
         r.index = v.fileIndex(k);
         r.dated = v.dated;
@@ -261,8 +263,9 @@ void checkRunIndex(const GriddedDataset &f, const Layout &l, const GriddedCurren
     if (l.dimRun < 0)
     {
         if (opt.runIndex && *opt.runIndex > 0)
-            throw f.error("GriddedCurrentOptions::runIndex " + std::to_string(*opt.runIndex) + " given, but variable '" +
-                              l.uName + "' has no run dimension (a file of one forecast run)",
+            throw f.error("GriddedCurrentOptions::runIndex " + std::to_string(*opt.runIndex) +
+                              " given, but variable '" + l.uName +
+                              "' has no run dimension (a file of one forecast run)",
                           "GriddedCurrentOptions::runIndex");
         return;
     }
@@ -329,8 +332,7 @@ void runReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis, int runVa
     CfTimeUnits cu;
     try
     {
-        cu = parseCfTimeUnits(unitsOf(f, runVar),
-                              f.attText(runVar, "calendar").value_or(calendarName(axis.calendar)));
+        cu = parseCfTimeUnits(unitsOf(f, runVar), f.attText(runVar, "calendar").value_or(calendarName(axis.calendar)));
     }
     catch (const Error &e)
     {
@@ -366,8 +368,8 @@ bool hycomTau(const GriddedDataset &f, ForecastTimeAxis &axis)
         return false;
     }
     axis.referenceSeconds = axis.originSeconds - v[0] * perUnit;
-    axis.referenceFrom = "variable 'tau' (" + unitsOf(f, *tau) + "): the first time minus " + text::number(v[0]) +
-                         " " + units.substr(0, since);
+    axis.referenceFrom = "variable 'tau' (" + unitsOf(f, *tau) + "): the first time minus " + text::number(v[0]) + " " +
+                         units.substr(0, since);
     return true;
 }
 } // namespace

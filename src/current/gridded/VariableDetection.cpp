@@ -199,7 +199,8 @@ void assignGiven(const GriddedDataset &f, const std::string &name, Role r, const
     if (!v)
         throw f.error("no coordinate variable '" + name + "' (given in GriddedCurrentOptions)");
     std::vector<int> vd = f.varDims(*v);
-    if (r == Role::Time && vd.size() == 2 && dr.find(Role::Run) >= 0 && vd[0] == dr.dims[std::size_t(dr.find(Role::Run))])
+    if (r == Role::Time && vd.size() == 2 && dr.find(Role::Run) >= 0 &&
+        vd[0] == dr.dims[std::size_t(dr.find(Role::Run))])
         vd.erase(vd.begin()); // a 2-D time(run, time) of a file of several runs: on its time dimension
     if (vd.size() != 1)
         return; // 2-D coordinates are handled with the curvilinear grid

@@ -43,16 +43,16 @@ ForecastTimeAxis earliestRun(const CurrentFieldKind &kind, ForecastRequest o, co
             axes.push_back(all.runAxis(k));
         for (const ForecastTimeAxis &axis : axes)
         {
-            const std::string name = "forecast run '" + run + "'" +
-                                     (all.runs.empty() ? "" : " (" + axis.referenceFrom + ")");
+            const std::string name =
+                "forecast run '" + run + "'" + (all.runs.empty() ? "" : " (" + axis.referenceFrom + ")");
             if (!axis.found || axis.steady || !axis.dated)
                 throw Error(name + ": " +
                             (axis.dated ? std::string("one time only; a run is a forecast over time")
                                         : std::string("its time axis has no dates ('<unit> since <date>'): a run's "
                                                       "reference time and availability are dates")));
             if (any && axis.calendar != first.calendar)
-                throw Error(name + ": its calendar (" + calendarName(axis.calendar) + ") differs from the first run's (" +
-                            calendarName(first.calendar) + ")");
+                throw Error(name + ": its calendar (" + calendarName(axis.calendar) +
+                            ") differs from the first run's (" + calendarName(first.calendar) + ")");
             if (!any || axis.originSeconds < first.originSeconds)
                 first = axis;
             any = true;
@@ -96,7 +96,8 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m)
         r.fail(n["file"], "current.file",
                "'" + m.current.file + "' holds " + std::to_string(axis.runs.size()) +
                    " forecast runs (a forecast model run collection, a THREDDS FMRC: the velocities on a run "
-                   "dimension, time '" + axis.variable +
+                   "dimension, time '" +
+                   axis.variable +
                    "' 2-D): give it as 'runs:' in place of 'file:', and the plan is made on the newest run "
                    "available at the departure");
     m.current.steady = axis.steady;
