@@ -56,7 +56,7 @@ struct FmrcAndFiles
     std::string onFmrc() const { return "  runs: \"" + fmrc + "\"\n"; }
 };
 
-void expectSamePlan(const MissionResult &a, const MissionResult &b)
+void expectSameFmrcPlan(const MissionResult &a, const MissionResult &b)
 {
     ASSERT_TRUE(a.plan.solved) << a.plan.reason;
     ASSERT_TRUE(b.plan.solved) << b.plan.reason;
@@ -72,7 +72,7 @@ void expectSamePlan(const MissionResult &a, const MissionResult &b)
 }
 
 /// The runs of @p a and @p b are the same runs: times, reference times, availability and currents.
-void expectSameRuns(const ForecastRuns &a, const ForecastRuns &b)
+void expectSameFmrcRuns(const ForecastRuns &a, const ForecastRuns &b)
 {
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t k = 0; k < a.size(); ++k)
@@ -111,7 +111,7 @@ TEST(ForecastRunsFmrc, EveryDepartureIsPlannedAsOnTheRunFiles)
         EXPECT_EQ(onFmrc.runIndex(), expected[c]);
         EXPECT_EQ(onFiles.runIndex(), expected[c]);
         const MissionResult a = runMission(onFmrc), b = runMission(onFiles);
-        expectSamePlan(a, b);
+        expectSameFmrcPlan(a, b);
         ASSERT_FALSE(a.forecastNotes.empty());
         const std::string &note = a.forecastNotes.front();
         EXPECT_NE(note.find("run " + std::to_string(expected[c] + 1) + " of 5"), std::string::npos) << note;
@@ -139,7 +139,7 @@ TEST(ForecastRunsFmrc, ReferenceTimesAreTheRunCoordinate)
         EXPECT_DOUBLE_EQ(r[k].end - r[k].begin, 72.0 * 3600.0);
         EXPECT_EQ(r[k].referenceFrom, "variable 'run', run " + std::to_string(k + 1) + " of 5");
     }
-    expectSameRuns(r, *q.runs());
+    expectSameFmrcRuns(r, *q.runs());
 }
 
 TEST(ForecastRunsFmrc, ARunShorterThanTheOthersKeepsItsOwnTimes)
@@ -161,8 +161,8 @@ TEST(ForecastRunsFmrc, ARunShorterThanTheOthersKeepsItsOwnTimes)
         for (std::size_t k = 0; k < r.size(); ++k)
             EXPECT_DOUBLE_EQ(r[k].end - r[k].begin, 3.0 * 3600.0 * double(lengths[k] - 1)) << k;
         EXPECT_EQ(r[4].referenceFrom, "variable 'reftime', run 5 of 5");
-        expectSameRuns(r, *q.runs());
-        expectSamePlan(runMission(p), runMission(q));
+        expectSameFmrcRuns(r, *q.runs());
+        expectSameFmrcPlan(runMission(p), runMission(q));
     }
 }
 
@@ -189,7 +189,7 @@ TEST(ForecastRunsFmrc, TheCommandLinesRunsReadTheFmrc)
     const MissionProblem pa(a), pb(b);
     ASSERT_TRUE(pa.runs());
     EXPECT_EQ(pa.runIndex(), 2u);
-    expectSamePlan(runMission(pa), runMission(pb));
+    expectSameFmrcPlan(runMission(pa), runMission(pb));
     // the file of several runs given as one forecast: an error that says to read it as runs
     ForecastInput plain = in;
     plain.current.file = runs.fmrc;

@@ -234,18 +234,26 @@ Role roleOf(const GriddedDataset &f, int cv, CoordinateMode mode, bool &geoAxes,
 }
 
 /// The runs of a file of several forecast runs (a THREDDS FMRC): a dimension of u before the others whose
-/// coordinate variable (same name, 1-D on it) isRunVar(), or which is named so without one.
+/// coordinate variable (same name, 1-D on it) isRunVar(); else one on which a 1-D variable with standard_name
+/// forecast_reference_time lies (an auxiliary coordinate: reftime(run)), or which is named so (run, reftime,
+/// runtime) without either.
 void assignRuns(const GriddedDataset &f, DimensionRoles &dr)
 {
     for (std::size_t d = 0; d + 2 < dr.dims.size() && dr.find(Role::Run) < 0; ++d)
     {
+        const std::vector<int> on{dr.dims[d]};
         const std::string dn = f.dimName(dr.dims[d]);
-        auto cv = f.findVar(dn);
-        const bool coordinate = cv && f.varDims(*cv) == std::vector<int>{dr.dims[d]};
-        if (coordinate ? !isRunVar(f, *cv) : !inList(lower(dn), {"run", "reftime", "runtime"}))
+        const auto cv = f.findVar(dn);
+        int coordinate = cv && f.varDims(*cv) == on ? *cv : -1;
+        if (coordinate >= 0 && !isRunVar(f, coordinate))
+            continue;
+        for (int var = 0; coordinate < 0 && var < f.nvars(); ++var)
+            if (f.varDims(var) == on && stdName(f, var) == "forecast_reference_time")
+                coordinate = var;
+        if (coordinate < 0 && !inList(lower(dn), {"run", "reftime", "runtime"}))
             continue;
         dr.role[d] = Role::Run;
-        dr.coordVar[d] = coordinate ? *cv : -1;
+        dr.coordVar[d] = coordinate;
     }
 }
 
