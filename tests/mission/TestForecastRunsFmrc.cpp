@@ -3,14 +3,17 @@
 // is each of its runs, and every departure is planned as on the same runs given one file each (to 1e-9); each run's
 // reference time is its value of the run coordinate; a run shorter than the others (its row of time ending in fill
 // values) keeps only its own times; the file given as `current.file` is an error that says to give it as runs.
-// Also a folder of daily HYCOM-named run files whose reference time is HYCOM's `tau` (hours since the analysis).
+// Served over OPeNDAP (the tests' DAP2 server), the URL is the same runs. Also a folder of daily HYCOM-named run files
+// whose reference time is HYCOM's `tau` (hours since the analysis).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "../opendap/DapServer.h"
 #include "RunFiles.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/ForecastRuns.h"
@@ -164,6 +167,24 @@ TEST(ForecastRunsFmrc, ARunShorterThanTheOthersKeepsItsOwnTimes)
         expectSameFmrcRuns(r, *q.runs());
         expectSameFmrcPlan(runMission(p), runMission(q));
     }
+}
+
+TEST(ForecastRunsFmrc, AnFmrcServedOverOpendapIsTheSameRuns)
+{
+    const FmrcAndFiles runs({25, 25, 25, 17, 9});
+    const std::string served = runs.dir.file("served");
+    std::filesystem::create_directories(served);
+    dap_test::DapServer server(served);
+    std::filesystem::copy_file(runs.fmrc, served + "/fmrc_TwoD.nc");
+    const std::string url = server.url("fmrc_TwoD.nc");
+    const char *departure = "2026-03-04T20:00:00Z";
+    const MissionProblem onUrl(loadMission(runs.mission("url", "  runs: \"" + url + "\"\n", departure)));
+    const MissionProblem onFile(loadMission(runs.mission("fmrc", runs.onFmrc(), departure)));
+    ASSERT_TRUE(onUrl.runs());
+    EXPECT_EQ(onUrl.runIndex(), 3u);
+    EXPECT_EQ((*onUrl.runs())[3].file, url);
+    expectSameFmrcRuns(*onUrl.runs(), *onFile.runs());
+    expectSameFmrcPlan(runMission(onUrl), runMission(onFile));
 }
 
 TEST(ForecastRunsFmrc, TheCommandLinesRunsReadTheFmrc)
