@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/ForecastRuns.h"
 #include "ompl_glider/mission/ForecastMission.h"
+#include "ompl_glider/mission/MissionExecution.h"
 #include "ompl_glider/mission/MissionProblem.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/mission/Planning.h"
@@ -167,6 +169,51 @@ TEST(ForecastRunsFmrc, ARunShorterThanTheOthersKeepsItsOwnTimes)
         expectSameFmrcRuns(r, *q.runs());
         expectSameFmrcPlan(runMission(p), runMission(q));
     }
+}
+
+TEST(ForecastRunsFmrc, AnExecutionThroughTheFmrcsRunsFliesAsThroughTheRunFiles)
+{
+    // flown in a truth of 6 days (the first run's flow carried on), replanning every 3 h and when a run arrives: the
+    // same flights
+    const FmrcAndFiles runs;
+    const std::string truth = runs.dir.file("truth.nc");
+    writeRun(truth, 0, RunReference::None, 2 * kRunTimes - 1);
+    const std::string execution = "  run_delay: 12 h\nexecution: {truth: {type: netcdf, file: \"" + truth +
+                                  "\", horizon: hold_last}, strategies: [current_sensitive, replan], "
+                                  "surfacing_interval: 1 h, replan_every: 3, duration: 3 d}\n";
+    const auto with = [&](const std::string &current) {
+        const std::string name = current == runs.onFmrc() ? "fmrc_exec" : "files_exec";
+        const std::string path = runs.mission(name, current, "2026-03-02T12:00:00Z");
+        std::string text;
+        {
+            std::ifstream in(path);
+            text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        }
+        const std::size_t at = text.find("start:");
+        std::ofstream(path) << text.substr(0, at) << execution << text.substr(at);
+        return runMission(MissionProblem(loadMission(path)));
+    };
+    const MissionResult a = with(runs.onFmrc()), b = with(runs.onFiles());
+    ASSERT_TRUE(a.execution && b.execution);
+    ASSERT_EQ(a.execution->runs.size(), b.execution->runs.size());
+    const ExecutionRun &ra = a.execution->runs.front(), &rb = b.execution->runs.front();
+    ASSERT_EQ(ra.flown.size(), 2u);
+    ASSERT_EQ(rb.flown.size(), 2u);
+    for (std::size_t s = 0; s < ra.flown.size(); ++s)
+    {
+        SCOPED_TRACE(s);
+        const FlownTrack &fa = ra.flown[s], &fb = rb.flown[s];
+        EXPECT_EQ(fa.replans, fb.replans);
+        EXPECT_EQ(fa.reached, fb.reached);
+        ASSERT_EQ(fa.fixes.size(), fb.fixes.size());
+        for (std::size_t k = 0; k < fa.fixes.size(); ++k)
+        {
+            EXPECT_NEAR(fa.fixes[k].x, fb.fixes[k].x, 1e-9);
+            EXPECT_NEAR(fa.fixes[k].y, fb.fixes[k].y, 1e-9);
+            EXPECT_NEAR(fa.fixes[k].t, fb.fixes[k].t, 1e-9);
+        }
+    }
+    EXPECT_GT(ra.flown[1].replans, 0u);
 }
 
 TEST(ForecastRunsFmrc, AnFmrcServedOverOpendapIsTheSameRuns)
