@@ -294,11 +294,11 @@ TEST(ForecastRunsFmrc, GivenAsFileItIsAnErrorSayingRuns)
 namespace
 {
 /// A HYCOM (GOFS 3.1 / ESPC) run file: water_u/water_v(time, depth, lat, lon), time in hours since 2000-01-01, and
-/// `tau` the hours since the analysis (the run's reference time, 12Z on day 1 + r), its first record 12 h after it.
-void writeHycomRun(const std::string &path, int r)
+/// `tau` the hours since the analysis (the run's reference time, 12Z on day 1 + r): records k0 .. k0 + nt - 1 of the
+/// run's 17, 3-hourly from 12 h after its analysis (HYCOM writes one file per time step: nt = 1).
+void writeHycomRun(const std::string &path, int r, std::size_t k0 = 0, std::size_t nt = 17)
 {
     NcWriter w(path, NC_CLOBBER);
-    const std::size_t nt = 17;
     const int dt = w.dim("time", nt), dz = w.dim("depth", 1), dy = w.dim("lat", kRunNy), dx = w.dim("lon", kRunNx);
     const int vt = w.var("time", NC_DOUBLE, {dt}), vtau = w.var("tau", NC_DOUBLE, {dt}),
               vz = w.var("depth", NC_DOUBLE, {dz}), vy = w.var("lat", NC_DOUBLE, {dy}),
@@ -320,11 +320,14 @@ void writeHycomRun(const std::string &path, int r)
     w.enddef();
     // 2026-03-01T00:00Z is 26 years (7 leap days) after 2000-01-01: 9556 days
     const double analysis = (9556.0 + r) * 24.0 + 12.0;
-    std::vector<double> tau = linspace(12.0, 3.0, nt), time;
+    std::vector<double> tau = linspace(12.0 + 3.0 * double(k0), 3.0, nt), time;
     for (double h : tau)
         time.push_back(analysis + h);
     std::vector<double> u, v;
-    runFlow(r, nt, u, v);
+    runFlow(r, k0 + nt, u, v);
+    const std::size_t skip = k0 * kRunNy * kRunNx;
+    u.erase(u.begin(), u.begin() + std::ptrdiff_t(skip));
+    v.erase(v.begin(), v.begin() + std::ptrdiff_t(skip));
     w.put(vt, time);
     w.put(vtau, tau);
     w.put(vz, {0.0});
@@ -333,6 +336,18 @@ void writeHycomRun(const std::string &path, int r)
     w.put(vu, u);
     w.put(vv, v);
 }
+
+/// A mission on the runs @p glob, departing 2026-03-03T06Z.
+std::string hycomMission(const TempDir &dir, const std::string &name, const std::string &glob)
+{
+    const std::string path = dir.file(name + ".yaml");
+    std::ofstream(path) << "name: hycom\ncurrent:\n  type: netcdf\n  runs: \"" << dir.file(glob)
+                        << "\"\n  horizon: hold_last\n"
+                        << "start: {lon: -52.85, lat: 47.15}\ngoal: {lon: -52.1, lat: 47.85}\n"
+                        << "departure: {time: \"2026-03-03T06:00:00Z\"}\nvehicle: {speed: 0.5}\n"
+                        << "planner: {name: zastartve, grid_size: 4000, sectors: 3, global_check: false}\n";
+    return path;
+}
 } // namespace
 
 TEST(ForecastRunsFmrc, AFolderOfHycomRunsTakesTheReferenceFromTau)
@@ -340,13 +355,7 @@ TEST(ForecastRunsFmrc, AFolderOfHycomRunsTakesTheReferenceFromTau)
     TempDir dir;
     for (int r = 0; r < 4; ++r)
         writeHycomRun(dir.file("hycom_glby_930_2026030" + std::to_string(1 + r) + "12_t012_uv3z.nc"), r);
-    const std::string path = dir.file("hycom.yaml");
-    std::ofstream(path) << "name: hycom\ncurrent:\n  type: netcdf\n  runs: \"" << dir.file("hycom_glby_930_*.nc")
-                        << "\"\n  horizon: hold_last\n"
-                        << "start: {lon: -52.85, lat: 47.15}\ngoal: {lon: -52.1, lat: 47.85}\n"
-                        << "departure: {time: \"2026-03-03T06:00:00Z\"}\nvehicle: {speed: 0.5}\n"
-                        << "planner: {name: zastartve, grid_size: 4000, sectors: 3, global_check: false}\n";
-    const MissionProblem p(loadMission(path));
+    const MissionProblem p(loadMission(hycomMission(dir, "hycom", "hycom_glby_930_*.nc")));
     ASSERT_TRUE(p.runs());
     const ForecastRuns &r = *p.runs();
     const MissionSpec &m = p.getSpec();
@@ -362,4 +371,55 @@ TEST(ForecastRunsFmrc, AFolderOfHycomRunsTakesTheReferenceFromTau)
     EXPECT_EQ(p.runIndex(), 1u);
     const MissionResult res = runMission(p);
     ASSERT_TRUE(res.plan.solved) << res.plan.reason;
+}
+
+TEST(ForecastRunsFmrc, HycomsOneFilePerTimeStepIsOneRunInSeveralFiles)
+{
+    // HYCOM's files as they come: one per time step (t012, t015, ...), each with the run's analysis in tau; the files
+    // of one analysis are one run, planned as on that run in one file
+    TempDir dir;
+    for (int r = 0; r < 4; ++r)
+    {
+        const std::string day = "2026030" + std::to_string(1 + r) + "12";
+        writeHycomRun(dir.file("one_" + day + ".nc"), r);
+        for (std::size_t k = 0; k < 17; ++k)
+        {
+            const std::string lead = std::to_string(1000 + 12 + 3 * k).substr(1);
+            writeHycomRun(dir.file("hycom_glby_930_" + day + "_t" + lead + "_uv3z.nc"), r, k, 1);
+        }
+    }
+    const MissionProblem steps(loadMission(hycomMission(dir, "steps", "hycom_glby_930_*.nc")));
+    const MissionProblem whole(loadMission(hycomMission(dir, "whole", "one_*.nc")));
+    ASSERT_TRUE(steps.runs());
+    const ForecastRuns &r = *steps.runs();
+    ASSERT_EQ(r.size(), 4u);
+    const MissionSpec &m = steps.getSpec();
+    for (std::size_t k = 0; k < r.size(); ++k)
+    {
+        SCOPED_TRACE(k);
+        EXPECT_EQ(r[k].files.size(), 17u);
+        EXPECT_EQ(m.isoTime(r[k].reference), "2026-03-0" + std::to_string(k + 1) + "T12:00:00Z");
+        EXPECT_NE(r[k].referenceFrom.find("one run in 17 files"), std::string::npos) << r[k].referenceFrom;
+    }
+    EXPECT_EQ(steps.runIndex(), 1u);
+    expectSameFmrcRuns(r, *whole.runs());
+    expectSameFmrcPlan(runMission(steps), runMission(whole));
+    // the command line's and Python's runs alike: the run planned on is its 17 files
+    ForecastInput in;
+    in.start = {-52.85, 47.15};
+    in.goal = {-52.1, 47.85};
+    in.speed = 0.5;
+    in.current.horizonPolicy = BeyondForecast::HoldLast;
+    in.departure = "2026-03-03T06:00:00Z";
+    ForecastInput onSteps = in, onWhole = in;
+    for (const ForecastRun &run : r.runs())
+        onSteps.current.runs.insert(onSteps.current.runs.end(), run.files.begin(), run.files.end());
+    for (int k = 0; k < 4; ++k)
+        onWhole.current.runs.push_back(dir.file("one_2026030" + std::to_string(1 + k) + "12.nc"));
+    MissionSpec a = forecastMission(onSteps), b = forecastMission(onWhole);
+    EXPECT_EQ(a.current.files.size(), 17u);
+    EXPECT_EQ(a.departure.time, b.departure.time);
+    for (MissionSpec *spec : {&a, &b})
+        spec->planner.globalCheck = false;
+    expectSameFmrcPlan(runMission(MissionProblem(a)), runMission(MissionProblem(b)));
 }

@@ -22,47 +22,42 @@ namespace ompl_glider::inputs_detail
 {
 namespace
 {
-/// The mission @p m with run @p run (its file, and its index in a file of several runs) as its one forecast.
+/// The mission @p m with run @p run (its file or files, and its index in a file of several runs) as its one forecast.
 MissionSpec withRun(const MissionSpec &m, const ForecastRun &run)
 {
     MissionSpec out = m;
     out.current.file = run.file;
     out.current.runIndex = run.runIndex;
-    out.current.files.clear();
+    out.current.files = run.files;
     out.current.runs.clear();
     return out;
 }
 
-/// Each run's times on the mission's clock (m.fileCalendar: the earliest run's first time); a file of several runs
-/// (a THREDDS FMRC) is each of its runs.
+/// Each run's times on the mission's clock (m.fileCalendar: the earliest run's first time): forecastRunSources()
+/// (a file of several runs is each of its runs, a run in several files one run).
 std::vector<ForecastRun> readRuns(const MissionSpec &m, const CurrentFieldKind &kind)
 {
     const double origin = m.fileCalendar ? m.fileCalendar->originSeconds : 0.0;
     std::vector<ForecastRun> out;
-    for (const std::string &file : m.current.runs)
+    ForecastRun first;
+    first.file = m.current.runs.front();
+    for (const RunSource &s : forecastRunSources(*kind.source, forecastRequest(withRun(m, first)), m.current.runs))
     {
+        const ForecastTimeAxis &axis = s.axis;
+        if (!axis.dated || !m.fileCalendar || axis.calendar != m.fileCalendar->calendar)
+            throw Error("forecast run '" + s.files.front() +
+                        "': its time axis is not dated on the first run's calendar");
         ForecastRun r;
-        r.file = file;
-        ForecastRequest o = forecastRequest(withRun(m, r));
-        const ForecastTimeAxis all = kind.source->timeAxis(o);
-        std::vector<std::optional<std::size_t>> slices{std::nullopt};
-        if (!all.runs.empty())
-            slices.assign(all.runs.size(), std::nullopt);
-        for (std::size_t k = 0; k < all.runs.size(); ++k)
-            slices[k] = k;
-        for (const std::optional<std::size_t> &k : slices)
-        {
-            const ForecastTimeAxis axis = k ? all.runAxis(*k) : all;
-            if (!axis.dated || !m.fileCalendar || axis.calendar != m.fileCalendar->calendar)
-                throw Error("forecast run '" + file + "': its time axis is not dated on the first run's calendar");
-            r.runIndex = k ? std::optional<std::size_t>(all.runs[*k].index) : std::nullopt;
-            r.begin = axis.originSeconds - origin;
-            r.end = r.begin + axis.span;
-            r.reference = axis.referenceSeconds - origin;
-            r.available = r.reference + m.current.runDelay;
-            r.referenceFrom = axis.referenceFrom;
-            out.push_back(r);
-        }
+        r.file = s.files.front();
+        if (s.files.size() > 1)
+            r.files = s.files;
+        r.runIndex = s.runIndex;
+        r.begin = axis.originSeconds - origin;
+        r.end = r.begin + axis.span;
+        r.reference = axis.referenceSeconds - origin;
+        r.available = r.reference + m.current.runDelay;
+        r.referenceFrom = axis.referenceFrom;
+        out.push_back(r);
     }
     return out;
 }

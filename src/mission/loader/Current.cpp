@@ -9,6 +9,7 @@
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/current/ForecastRuns.h"
 #include "ompl_glider/io/FileList.h"
 #include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/RemoteSource.h"
@@ -27,36 +28,29 @@ namespace
 /// detection (GriddedSource::timeAxis(): variables.time, else the source's rules).
 /// The time axis of the earliest of forecast runs (the mission's clock starts at its first time): each run's axis
 /// must be dated, not steady, and on one calendar. @throws Error naming the run at fault.
-/// A file of several runs (a THREDDS FMRC: ForecastTimeAxis::runs) is each of its runs.
-ForecastTimeAxis earliestRun(const CurrentFieldKind &kind, ForecastRequest o, const std::vector<std::string> &runs)
+/// The runs as forecastRunSources() finds them: a file of several runs (a THREDDS FMRC) is each of its runs, a run
+/// in several files one run.
+ForecastTimeAxis earliestRun(const CurrentFieldKind &kind, const ForecastRequest &o,
+                             const std::vector<std::string> &runs)
 {
     ForecastTimeAxis first;
     bool any = false;
-    for (const std::string &run : runs)
+    for (const RunSource &s : forecastRunSources(*kind.source, o, runs))
     {
-        o.files = {run};
-        const ForecastTimeAxis all = kind.source->timeAxis(o);
-        std::vector<ForecastTimeAxis> axes{all};
-        if (!all.runs.empty())
-            axes.clear();
-        for (std::size_t k = 0; k < all.runs.size(); ++k)
-            axes.push_back(all.runAxis(k));
-        for (const ForecastTimeAxis &axis : axes)
-        {
-            const std::string name =
-                "forecast run '" + run + "'" + (all.runs.empty() ? "" : " (" + axis.referenceFrom + ")");
-            if (!axis.found || axis.steady || !axis.dated)
-                throw Error(name + ": " +
-                            (axis.dated ? std::string("one time only; a run is a forecast over time")
-                                        : std::string("its time axis has no dates ('<unit> since <date>'): a run's "
-                                                      "reference time and availability are dates")));
-            if (any && axis.calendar != first.calendar)
-                throw Error(name + ": its calendar (" + calendarName(axis.calendar) +
-                            ") differs from the first run's (" + calendarName(first.calendar) + ")");
-            if (!any || axis.originSeconds < first.originSeconds)
-                first = axis;
-            any = true;
-        }
+        const ForecastTimeAxis &axis = s.axis;
+        const std::string name = "forecast run '" + s.files.front() + "'" +
+                                 (s.runIndex || s.files.size() > 1 ? " (" + axis.referenceFrom + ")" : "");
+        if (!axis.found || axis.steady || !axis.dated)
+            throw Error(name + ": " +
+                        (axis.dated ? std::string("one time only; a run is a forecast over time")
+                                    : std::string("its time axis has no dates ('<unit> since <date>'): a run's "
+                                                  "reference time and availability are dates")));
+        if (any && axis.calendar != first.calendar)
+            throw Error(name + ": its calendar (" + calendarName(axis.calendar) + ") differs from the first run's (" +
+                        calendarName(first.calendar) + ")");
+        if (!any || axis.originSeconds < first.originSeconds)
+            first = axis;
+        any = true;
     }
     return first;
 }

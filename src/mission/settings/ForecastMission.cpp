@@ -15,6 +15,7 @@
 #include "ompl_glider/io/MemoryDataset.h"
 #include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/current/ForecastRuns.h"
 #include "ompl_glider/current/ForecastSource.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
@@ -154,10 +155,11 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
     return m;
 }
 
-/// A run of forecast runs: its file, its index in a file of several runs (a THREDDS FMRC), when it is available.
+/// A run of forecast runs: its files (several for a run in several files), its index in a file of several runs (a
+/// THREDDS FMRC), when it is available.
 struct RunAt
 {
-    std::string file;
+    std::vector<std::string> files;
     std::optional<std::size_t> runIndex;
     double available{0.0};
 };
@@ -175,31 +177,25 @@ RunAt runAtDeparture(const MissionSpec &m, const ForecastInput &q, std::string &
     using Run = RunAt;
     std::vector<Run> runs;
     Calendar calendar = Calendar::Standard;
-    for (const std::string &file : m.current.runs)
+    const ForecastRequest o = callerRequest(m, q);
+    std::vector<RunSource> sources;
+    try
     {
-        ForecastRequest o = callerRequest(m, q);
-        o.files = {file};
-        ForecastTimeAxis axis;
-        try
-        {
-            axis = sourceOf(m).timeAxis(o);
-        }
-        catch (const Error &e)
-        {
-            throw Error(callerMessage(e, q, o), e.field());
-        }
-        for (std::size_t k = 0; k < std::max<std::size_t>(1, axis.runs.size()); ++k)
-        {
-            const ForecastTimeAxis one = axis.runs.empty() ? axis : axis.runAxis(k);
-            if (!one.dated || one.steady)
-                throw Error(named(q, "current.runs") + ": forecast run '" + file +
-                            (axis.runs.empty() ? "'" : "' (" + one.referenceFrom + ")") +
-                            " has no dated time axis of several times: a run's reference time and availability are "
-                            "dates");
-            calendar = one.calendar;
-            runs.push_back({file, axis.runs.empty() ? std::nullopt : std::optional<std::size_t>(axis.runs[k].index),
-                            one.referenceSeconds + m.current.runDelay});
-        }
+        sources = forecastRunSources(sourceOf(m), o, m.current.runs);
+    }
+    catch (const Error &e)
+    {
+        throw Error(callerMessage(e, q, o), e.field());
+    }
+    for (const RunSource &s : sources) // (a file of several runs each of them, a run in several files one)
+    {
+        if (!s.axis.dated || s.axis.steady)
+            throw Error(named(q, "current.runs") + ": forecast run '" + s.files.front() +
+                        (s.runIndex || s.files.size() > 1 ? "' (" + s.axis.referenceFrom + ")" : "'") +
+                        " has no dated time axis of several times: a run's reference time and availability are "
+                        "dates");
+        calendar = s.axis.calendar;
+        runs.push_back({s.files, s.runIndex, s.axis.referenceSeconds + m.current.runDelay});
     }
     const auto first = std::min_element(runs.begin(), runs.end(),
                                         [](const Run &a, const Run &b) { return a.available < b.available; });
@@ -220,7 +216,7 @@ RunAt runAtDeparture(const MissionSpec &m, const ForecastInput &q, std::string &
             newest = &r;
     if (!newest)
         throw Error(named(q, "current.runs") + ": no run is available at the departure " + departure +
-                    ": the first, '" + first->file + "', is available from " +
+                    ": the first, '" + first->files.front() + "', is available from " +
                     formatCalendarTime(first->available, calendar) + " (its reference time + the run delay)");
     return *newest;
 }
@@ -513,9 +509,11 @@ MissionSpec forecastMission(const ForecastInput &input)
     if (!q.current.runs.empty())
     {
         const RunAt run = runAtDeparture(m, q, given.departure);
-        m.current.file = run.file;
+        m.current.file = run.files.front();
         m.current.runIndex = run.runIndex;
         m.current.files.clear();
+        if (run.files.size() > 1) // a run in several files
+            m.current.files = run.files;
         file = m.current.file; // messages name the run planned on
         m.file = withoutCredentials(file);
     }
