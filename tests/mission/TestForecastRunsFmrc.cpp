@@ -3,8 +3,10 @@
 // is each of its runs, and every departure is planned as on the same runs given one file each (to 1e-9); each run's
 // reference time is its value of the run coordinate; a run shorter than the others (its row of time ending in fill
 // values) keeps only its own times; the file given as `current.file` is an error that says to give it as runs.
-// Served over OPeNDAP (the tests' DAP2 server), the URL is the same runs. Also a folder of daily HYCOM-named run files
-// whose reference time is HYCOM's `tau` (hours since the analysis).
+// Served over OPeNDAP (the tests' DAP2 server), the URL is the same runs; an execution through them flies as through
+// the run files. Also a folder of daily HYCOM-named run files whose reference time is HYCOM's `tau` (hours since the
+// analysis), HYCOM's one file per time step as one run in several files, and a THREDDS best time series (a
+// forecast_reference_time along time) read as one forecast.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -422,4 +424,55 @@ TEST(ForecastRunsFmrc, HycomsOneFilePerTimeStepIsOneRunInSeveralFiles)
     for (MissionSpec *spec : {&a, &b})
         spec->planner.globalCheck = false;
     expectSameFmrcPlan(runMission(MissionProblem(a)), runMission(MissionProblem(b)));
+}
+
+TEST(ForecastRunsFmrc, ABestTimeSeriesIsOneForecastCompleteWhenItsNewestRunIs)
+{
+    // a THREDDS FMRC's best time series: 1-D time, each record from its own run (reftime(time), standard_name
+    // forecast_reference_time): one forecast as a file; as a run, available when its newest run is
+    TempDir dir;
+    const std::string best = dir.file("best.nc");
+    {
+        NcWriter w(best, NC_CLOBBER);
+        const int dt = w.dim("time", kRunTimes), dy = w.dim("lat", kRunNy), dx = w.dim("lon", kRunNx);
+        const int vt = w.var("time", NC_DOUBLE, {dt}), vr = w.var("reftime", NC_DOUBLE, {dt}),
+                  vy = w.var("lat", NC_DOUBLE, {dy}), vx = w.var("lon", NC_DOUBLE, {dx});
+        const int vu = w.var("uo", NC_FLOAT, {dt, dy, dx}), vv = w.var("vo", NC_FLOAT, {dt, dy, dx});
+        for (int v : {vt, vr})
+            w.text(v, "units", "hours since 2026-03-01 00:00:00");
+        w.text(vr, "standard_name", "forecast_reference_time");
+        w.text(vy, "units", "degrees_north");
+        w.text(vx, "units", "degrees_east");
+        w.text(vu, "standard_name", "eastward_sea_water_velocity");
+        w.text(vv, "standard_name", "northward_sea_water_velocity");
+        for (int v : {vu, vv})
+            w.text(v, "units", "m s-1");
+        w.enddef();
+        std::vector<double> hours = linspace(0.0, 3.0, kRunTimes), refs, u, v;
+        for (double h : hours)
+            refs.push_back(std::min(48.0, 24.0 * std::floor(h / 24.0))); // the last day from the run of day 3
+        runFlow(0, kRunTimes, u, v);
+        w.put(vt, hours);
+        w.put(vr, refs);
+        w.put(vy, runLats());
+        w.put(vx, runLons());
+        w.put(vu, u);
+        w.put(vv, v);
+    }
+    const auto mission = [&](const std::string &name, const std::string &key) {
+        const std::string path = dir.file(name + ".yaml");
+        std::ofstream(path) << "name: best\ncurrent:\n  type: netcdf\n  " << key << ": \"" << best
+                            << "\"\n  horizon: hold_last\nstart: {lon: -52.85, lat: 47.15}\n"
+                            << "goal: {lon: -52.1, lat: 47.85}\ndeparture: {time: \"2026-03-03T13:00:00Z\"}\n"
+                            << "vehicle: {speed: 0.5}\n"
+                            << "planner: {name: zastartve, grid_size: 4000, sectors: 3, global_check: false}\n";
+        return path;
+    };
+    const MissionProblem asFile(loadMission(mission("file", "file")));
+    EXPECT_TRUE(runMission(asFile).plan.solved);
+    const MissionProblem asRun(loadMission(mission("run", "runs")));
+    ASSERT_TRUE(asRun.runs());
+    const ForecastRun &run = (*asRun.runs())[0];
+    EXPECT_EQ(asRun.getSpec().isoTime(run.reference), "2026-03-03T00:00:00Z");
+    EXPECT_EQ(run.referenceFrom, "variable 'reftime' (the newest of its values along time)");
 }

@@ -385,7 +385,19 @@ void readReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis, int runV
         if (lower(f.attText(var, "standard_name").value_or("")) != "forecast_reference_time" &&
             lower(name) != "forecast_reference_time")
             continue;
-        const std::vector<double> v = f.readAll1D(var);
+        std::vector<double> v = f.readAll1D(var);
+        // along time (a THREDDS best time series joins several runs, each record its own run's): complete when the
+        // newest of them was
+        const bool series = v.size() > 1 && f.varDims(var).size() == 1;
+        if (series)
+        {
+            const Packing p = packingOf(f, var);
+            double newest = kNaN;
+            for (double x : v)
+                if (std::isfinite(x) && !p.isFill(x) && !(x <= newest))
+                    newest = x;
+            v = {newest};
+        }
         if (v.size() != 1 || !std::isfinite(v[0]))
             throw f.error("variable '" + name + "' (forecast_reference_time) holds " + std::to_string(v.size()) +
                           " values; a forecast run has one reference time (a file of several runs, a THREDDS FMRC "
@@ -404,7 +416,7 @@ void readReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis, int runV
             throw f.error("variable '" + name + "' (forecast_reference_time): its calendar (" +
                           calendarName(cu.calendar) + ") differs from the time axis's (" + calendar + ")");
         axis.referenceSeconds = cu.reference + v[0] * cu.secondsPerUnit;
-        axis.referenceFrom = "variable '" + name + "'";
+        axis.referenceFrom = "variable '" + name + "'" + (series ? " (the newest of its values along time)" : "");
         return;
     }
     if (const std::optional<std::string> text = f.attText(kGlobalAttributes, "forecast_reference_time"))
