@@ -172,8 +172,9 @@ class Field:
         variables: names by role (u, v, lon, lat, depth, time, mask, angle), found automatically when not given.
         The other options are those of the mission format's ``current`` section (examples/MISSION_FORMAT.md);
         max_speed is its ``max_speed``: the fastest current believed (m/s, or a text with a unit: "600 m/s").
-        runs: the files are a forecast's runs, each file one run (``--runs``; the mission format's ``current.runs``):
-        the plan is made on the newest run available at the departure; run_delay (``"12 h"``, the default) is how
+        runs: the files are a forecast's runs, each file one run, a file or OPeNDAP URL of several runs (a THREDDS
+        FMRC: a run dimension, a 2-D time) each of its runs (``--runs``; the mission format's ``current.runs``): the
+        plan is made on the newest run available at the departure; run_delay (``"12 h"``, the default) is how
         long after its reference time a run becomes available.
         """
         return Field._forecast("Field.netcdf()", "netcdf", path, variables, depth, xy_interpolation,

@@ -107,6 +107,64 @@ double gaussianScale(const std::vector<LagSums> &lags, double step)
 }
 } // namespace
 
+std::vector<RunSource> forecastRunSources(const GriddedSource &source, ForecastRequest request,
+                                          const std::vector<std::string> &entries)
+{
+    std::vector<RunSource> out;
+    std::vector<std::vector<double>> firstTimes; // per run in several files: each file's first time
+    request.run.reset();
+    const auto stated = [](const ForecastTimeAxis &a) {
+        return a.dated && a.referenceFrom.rfind("its first time", 0) != 0; // (not the fallback)
+    };
+    for (const std::string &entry : entries)
+    {
+        request.files = {entry};
+        const ForecastTimeAxis all = source.timeAxis(request);
+        for (std::size_t k = 0; k < all.runs.size(); ++k) // a file of several runs: each of them
+        {
+            out.push_back({{entry}, all.runs[k].index, all.runAxis(k)});
+            firstTimes.emplace_back();
+        }
+        if (!all.runs.empty())
+            continue;
+        // a file whose stated reference time an earlier file states: the same run, in several files
+        const auto same = std::find_if(out.begin(), out.end(), [&](const RunSource &r) {
+            return stated(all) && !r.runIndex && stated(r.axis) && r.axis.referenceSeconds == all.referenceSeconds &&
+                   r.axis.calendar == all.calendar;
+        });
+        if (same == out.end())
+        {
+            out.push_back({{entry}, std::nullopt, all});
+            firstTimes.push_back({all.originSeconds});
+            continue;
+        }
+        same->files.push_back(entry);
+        firstTimes[std::size_t(same - out.begin())].push_back(all.originSeconds);
+    }
+    for (std::size_t k = 0; k < out.size(); ++k)
+    {
+        RunSource &r = out[k];
+        if (r.files.size() < 2)
+            continue;
+        // in time order, read as one forecast in several files: its joined axis, its reference time kept
+        std::vector<std::size_t> order(r.files.size());
+        for (std::size_t q = 0; q < order.size(); ++q)
+            order[q] = q;
+        std::stable_sort(order.begin(), order.end(),
+                         [&](std::size_t a, std::size_t b) { return firstTimes[k][a] < firstTimes[k][b]; });
+        std::vector<std::string> files;
+        for (std::size_t q : order)
+            files.push_back(r.files[q]);
+        r.files = files;
+        request.files = files;
+        ForecastTimeAxis joined = source.timeAxis(request);
+        joined.referenceSeconds = r.axis.referenceSeconds;
+        joined.referenceFrom = r.axis.referenceFrom + " (one run in " + std::to_string(files.size()) + " files)";
+        r.axis = joined;
+    }
+    return out;
+}
+
 RunSpread runSpread(const ForecastRuns &runs, const Region &box, double depth)
 {
     constexpr std::size_t n = 24, nt = 17;

@@ -957,6 +957,18 @@ DEPTH_NO_AXIS = forecast(replace=[("lat = 6 ;", "k = 2 ; lat = 6 ;"), ("float u(
                                   ("float v(time, lat", "float v(time, k, lat")]).replace(
     ", ".join(["0.1"] * 108), ", ".join(["0.1"] * 216)).replace(", ".join(["0"] * 108), ", ".join(["0"] * 216))
 nc_case("nc-depth-without-depth-axis", DEPTH_NO_AXIS, "has dimension 'k' (length 2) that is neither time, depth")
+# a THREDDS FMRC (two runs: a run dimension, its reference times, a 2-D time) given as one forecast: read it as runs
+FMRC = forecast(replace=[("time = UNLIMITED ;", "run = 2 ; time = 3 ;"),
+                         ("double time(time) ;", 'double run(run) ; run:units = "hours since 2026-03-15 00:00:00" ; '
+                          'run:standard_name = "forecast_reference_time" ;\n  double time(run, time) ;'),
+                         ("float u(time", "float u(run, time"), ("float v(time", "float v(run, time"),
+                         ("time = 0, 24, 48 ;", "run = 0, 24 ;\n  time = 0, 24, 48, 24, 48, 72 ;")]).replace(
+    ", ".join(["0.1"] * 108), ", ".join(["0.1"] * 216)).replace(", ".join(["0"] * 108), ", ".join(["0"] * 216))
+nc_case("nc-fmrc-without-runs", FMRC, "is on dimension 'run' of 2 forecast runs (a forecast model run collection, "
+        "a THREDDS FMRC, with a 2-D time): read it as forecast runs, each run one forecast, with --currents ... --runs")
+case("yaml-fmrc-as-file", ["--mission", "m.yaml", "--out", "{out}"], 2,
+     "field 'current.file': '", {"f.cdl": FMRC, "m.yaml": "name: fmrc\ncurrent: {type: netcdf, file: f.nc}\n"
+                                "start: {lon: -52.9, lat: 47.1}\ngoal: {lon: -52.1, lat: 47.9}\n"})
 PACKED = forecast(replace=[("double lat(lat) ;", "short lat(lat) ; lat:scale_factor = 0.01 ; lat:add_offset = 47. ;"),
                            ("double lon(lon) ;", "short lon(lon) ; lon:scale_factor = 0.01 ; lon:add_offset = -53. ;")],
                   lat="0, 20, 40, 60, 80, 100", lon="0, 20, 40, 60, 80, 100")

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "../current/TestNetCdfUtil.h"
+#include "RunFiles.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/ForecastRuns.h"
 #include "ompl_glider/mission/ForecastMission.h"
@@ -23,67 +23,6 @@ using namespace glider_test;
 
 namespace
 {
-/// How run r states its reference time.
-enum class RunReference
-{
-    Variable,  ///< a scalar forecast_reference_time variable, hours since 1970
-    Attribute, ///< a global attribute holding the date
-    None       ///< nothing: the first time is taken
-};
-
-/// Run r: reference 2026-03-(1 + r) 00:00Z, 3-hourly records over 3 days, "hours since" its reference time; its
-/// flow a swirl whose centre and strength depend on r (runs differ where they overlap).
-void writeRun(const std::string &path, int r, RunReference ref)
-{
-    NcWriter w(path, NC_CLOBBER);
-    const std::size_t nt = 25, ny = 9, nx = 9;
-    const int dt = w.dim("time", nt), dy = w.dim("lat", ny), dx = w.dim("lon", nx);
-    const int vt = w.var("time", NC_DOUBLE, {dt}), vy = w.var("lat", NC_DOUBLE, {dy}),
-              vx = w.var("lon", NC_DOUBLE, {dx});
-    const int vu = w.var("uo", NC_FLOAT, {dt, dy, dx}), vv = w.var("vo", NC_FLOAT, {dt, dy, dx});
-    const std::string day = "2026-03-0" + std::to_string(1 + r);
-    w.text(vt, "units", "hours since " + day + " 00:00:00");
-    w.text(vt, "standard_name", "time");
-    w.text(vy, "units", "degrees_north");
-    w.text(vx, "units", "degrees_east");
-    w.text(vu, "standard_name", "eastward_sea_water_velocity");
-    w.text(vv, "standard_name", "northward_sea_water_velocity");
-    for (int v : {vu, vv})
-        w.text(v, "units", "m s-1");
-    int vr = -1;
-    if (ref == RunReference::Variable)
-    {
-        vr = w.var("forecast_reference_time", NC_DOUBLE, {});
-        w.text(vr, "standard_name", "forecast_reference_time");
-        w.text(vr, "units", "hours since 1970-01-01 00:00:00");
-    }
-    if (ref == RunReference::Attribute)
-        w.text(NC_GLOBAL, "forecast_reference_time", day + "T00:00:00Z");
-    w.enddef();
-    const std::vector<double> hours = linspace(0.0, 3.0, nt), lat = linspace(47.0, 0.125, ny),
-                              lon = linspace(-53.0, 0.125, nx);
-    std::vector<double> u, v;
-    const double cx = -52.5 + 0.05 * r, cy = 47.5 - 0.03 * r, s = 0.3 + 0.04 * r;
-    for (double h : hours)
-        for (double la : lat)
-            for (double lo : lon)
-            {
-                const double a = 2.0 * M_PI * (h + 24.0 * r) / 40.0;
-                u.push_back(-s * (la - cy) + 0.05 * std::cos(a));
-                v.push_back(0.7 * s * (lo - cx) + 0.05 * std::sin(a));
-            }
-    w.put(vt, hours);
-    w.put(vy, lat);
-    w.put(vx, lon);
-    w.put(vu, u);
-    w.put(vv, v);
-    if (vr >= 0)
-    {
-        const double since1970 = (56.0 * 365.0 + 14.0 + 59.0 + r) * 24.0; // 2026-03-01 + r, in hours since 1970
-        w.put(vr, {since1970});
-    }
-}
-
 /// Five daily runs, named as Copernicus names them (their names do not sort as their reference times do: the runs
 /// are ordered by reference time, not by name).
 struct Runs

@@ -41,6 +41,9 @@ target_link_libraries(test_mission_forecast_files INTERFACE netCDF::netcdf)
 # forecast runs (current.runs): the newest run available at the departure, as that file alone
 glider_add_test(test_mission_forecast_runs ${CMAKE_CURRENT_LIST_DIR}/TestForecastRuns.cpp)
 target_link_libraries(test_mission_forecast_runs INTERFACE netCDF::netcdf)
+# forecast runs in one file of several runs (a THREDDS FMRC: run dimension, 2-D time) as on one file a run; HYCOM's tau
+glider_add_test(test_mission_forecast_runs_fmrc ${CMAKE_CURRENT_LIST_DIR}/TestForecastRunsFmrc.cpp)
+target_link_libraries(test_mission_forecast_runs_fmrc INTERFACE netCDF::netcdf)
 # glider_plan --mission / --currents / --speeds and its error cases
 if(TARGET glider_plan)
   add_test(NAME mission.glider_plan_cli

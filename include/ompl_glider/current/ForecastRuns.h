@@ -16,19 +16,42 @@
 #include <vector>
 
 #include "ompl_glider/current/CurrentField.h"
+#include "ompl_glider/current/ForecastSource.h"
 
 namespace ompl_glider
 {
 /// @brief One forecast run (times on the mission's clock: field time).
 struct ForecastRun
 {
-    std::string file;          ///< the file or URL holding it
+    std::string file; ///< the file or URL holding it
+    /// in a file of several runs (a THREDDS FMRC), its index along the run dimension (ForecastRequest::run);
+    /// unset: the file is this run alone
+    std::optional<std::size_t> runIndex;
+    /// a run in several files (HYCOM's one file per time step): all of them in time order (`file` the first);
+    /// empty: `file` alone
+    std::vector<std::string> files;
     double reference{0.0};     ///< its reference time (CF forecast_reference_time; else its first time)
     double available{0.0};     ///< when it became available: reference + the run delay
     double begin{0.0};         ///< its first time
     double end{0.0};           ///< its last time
     std::string referenceFrom; ///< where the reference time was read (ForecastTimeAxis::referenceFrom)
 };
+
+/// @brief Where one of a forecast's runs is read, and its time axis (ForecastTimeAxis of that run alone).
+struct RunSource
+{
+    std::vector<std::string> files;      ///< one, or several in time order (a run in several files)
+    std::optional<std::size_t> runIndex; ///< its index in a file of several runs (a THREDDS FMRC)
+    ForecastTimeAxis axis;               ///< its times and reference time
+};
+
+/// @brief The runs of @p entries (files or URLs, as `current.runs` lists them) read by @p source with @p request (its
+/// files and run replaced): a file of several runs (ForecastTimeAxis::runs) is each of its runs; files whose
+/// reference time the file states (CF forecast_reference_time, HYCOM's tau; not a first time taken for it) and is
+/// the same are one run in several files (HYCOM's one file per time step), read as one forecast. In the order of
+/// @p entries (a run in several files where its first file is). @throws Error as the source does.
+std::vector<RunSource> forecastRunSources(const GriddedSource &source, ForecastRequest request,
+                                          const std::vector<std::string> &entries);
 
 /// @brief The runs of a mission, ordered by reference time, and their fields (loaded once each, on first use;
 /// thread-safe).

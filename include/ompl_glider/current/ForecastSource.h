@@ -45,6 +45,7 @@ enum class ForecastOption
     Mask,             ///< the land/sea mask's variable
     DepthAverage,     ///< the depth average's bounds
     MaxSpeed,         ///< the fastest current believed
+    Run,              ///< the run read of a file of several forecast runs (a THREDDS FMRC)
 };
 
 /// @brief What a mission asks of a gridded source: where the forecast is, how to read it, and which part (the
@@ -62,6 +63,9 @@ struct ForecastRequest
     double maxSpeed{std::numeric_limits<double>::quiet_NaN()}; ///< the fastest current believed (m/s; NaN: default)
     std::string timeUnits;                   ///< overrides the time axis' units ("days since 2026-01-15")
     std::optional<std::size_t> steadyRecord; ///< plan on this record (0-based) only, as a steady field
+    /// a file of several forecast runs (a THREDDS FMRC: a run dimension, 2-D time): the run read (0-based along the
+    /// run dimension); required for such a file of more than one run (ForecastTimeAxis::runs lists them)
+    std::optional<std::size_t> run;
 
     Interp2D xy{Interp2D::Bilinear};               ///< horizontal interpolation ([EichhornOceans] Fig. 2)
     Interp1D depth{Interp1D::Linear};              ///< depth interpolation
@@ -124,6 +128,33 @@ struct ForecastTimeAxis
     /// date), else the first time; NaN for an undated or steady axis
     double referenceSeconds{std::numeric_limits<double>::quiet_NaN()};
     std::string referenceFrom; ///< where referenceSeconds came from ("variable 'forecast_reference_time'", ...)
+    /// A file of several forecast runs (a THREDDS FMRC: the velocities on a run dimension whose coordinate is the
+    /// runs' reference times, time a 2-D coordinate time(run, time)): one entry per run that has times, in file
+    /// order; empty for a file of one run. The fields above are then those of ForecastRequest::run (else the
+    /// first run's); runAxis() gives each run's.
+    struct Run
+    {
+        std::size_t index{0};      ///< along the run dimension (ForecastRequest::run)
+        double originSeconds{0.0}; ///< its first time (its times that are fill values dropped)
+        std::size_t size{0};       ///< its number of times
+        double span{0.0};          ///< its last minus first time (seconds)
+        double referenceSeconds{std::numeric_limits<double>::quiet_NaN()}; ///< its reference time
+        std::string referenceFrom;                                         ///< where that was read
+    };
+    std::vector<Run> runs;
+    /// @brief This axis as run runs[k] of the file has it (the fields above replaced by that run's).
+    ForecastTimeAxis runAxis(std::size_t k) const
+    {
+        ForecastTimeAxis out = *this;
+        const Run &r = runs.at(k);
+        out.originSeconds = r.originSeconds;
+        out.size = r.size;
+        out.span = r.span;
+        out.steady = r.size == 1;
+        out.referenceSeconds = r.referenceSeconds;
+        out.referenceFrom = r.referenceFrom;
+        return out;
+    }
 };
 
 /// @brief The frame and clock of a loaded forecast: how planning-frame points and field times become positions

@@ -50,6 +50,10 @@ struct GriddedCurrentOptions
                            ///< ("days since 2026-01-15"), e.g. for an axis in "month", "hours" or without units
     std::optional<std::size_t> steadyRecord; ///< read only this time record (0-based) and plan on it as a steady
                                              ///< field (dated by the record's time when the axis is dated)
+    /// a file of several forecast runs (a THREDDS FMRC: velocities on a run dimension, `run`/`reftime` with CF
+    /// standard_name forecast_reference_time, and a 2-D time(run, time)): the run read (0-based along the run
+    /// dimension); required by loadGriddedCurrents() when that dimension holds more than one run
+    std::optional<std::size_t> runIndex;
 
     std::string angleName; ///< angle (radians or degrees) from the grid's i direction to east, for velocities given
                            ///< along the grid (ROMS angle, POP ANGLE); empty: a variable named "angle" on the

@@ -131,6 +131,10 @@ struct CurrentSpec
     /// first, for names and messages); empty: one forecast. A plan at time t is made on the newest run available at
     /// t (ForecastRuns.h); an execution replans as runs arrive.
     std::vector<std::string> runs;
+    /// gridded: the run `file` is of a file of several forecast runs (a THREDDS FMRC: a run dimension, 2-D time),
+    /// 0-based along its run dimension (ForecastRequest::run); unset: a file of one run. A file of several runs
+    /// given in `runs` is each of its runs.
+    std::optional<std::size_t> runIndex;
     /// gridded runs: how long after its reference time a run becomes available (field time units: seconds)
     double runDelay{12.0 * 3600.0};
     /// gridded: role (u, v, lon, lat, x, y, depth, time, mask, angle) -> name (mask "none": no land/sea mask

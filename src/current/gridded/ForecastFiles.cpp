@@ -37,6 +37,11 @@ FileTimes readFileTimes(const std::string &path, const GriddedCurrentOptions &op
         throw f.error("variable '" + f.varName(uVar) +
                       "' has no time dimension: files of a forecast in several files are joined along their time "
                       "axes; give a file without time alone");
+    if (const int run = dr.find(Role::Run); run >= 0 && f.dimLen(dr.dims[std::size_t(run)]) > 1)
+        throw f.error("variable '" + f.varName(uVar) + "' is on dimension '" + f.dimName(dr.dims[std::size_t(run)]) +
+                          "' of several forecast runs (a THREDDS FMRC): it is not joined with other files as one "
+                          "forecast; read its runs as forecast runs (GriddedCurrentOptions::runIndex)",
+                      "GriddedCurrentOptions::runIndex");
     FileTimes out;
     out.path = path;
     out.tv = readTimeValues(f, dr.coordVar[std::size_t(dimT)], true, opt.timeUnits);

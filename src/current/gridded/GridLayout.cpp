@@ -28,9 +28,36 @@ void findVelocities(const GriddedDataset &f, const GriddedCurrentOptions &opt, L
         throw f.error("velocity variables '" + l.uName + "' and '" + l.vName +
                       "' differ in more than their two horizontal dimensions; expected the same time and depth "
                       "dimensions (a staggered grid puts only the horizontal points apart)");
-    if (dims.size() < 2 || dims.size() > 4)
+    if (dims.size() < 2 || dims.size() > 5) // 5: a file of several forecast runs (run, time, depth, lat, lon)
         throw f.error("variable '" + l.uName + "': expected 2 to 4 dimensions ([time,] [depth,] lat, lon), got " +
                       std::to_string(dims.size()));
+}
+
+/// The runs of a file of several forecast runs (Role::Run): before time, time a 2-D time(run, time) (or 1-D for a
+/// single run); the run read is GriddedCurrentOptions::runIndex (checked when the times are chosen, checkRunIndex()).
+void placeRuns(const GriddedDataset &f, const GriddedCurrentOptions &opt, Layout &l)
+{
+    const std::size_t others = l.dims.size() - (l.dimRun >= 0 ? 1 : 0);
+    if (others > 4)
+        throw f.error("variable '" + l.uName + "': expected 2 to 4 dimensions ([time,] [depth,] lat, lon), got " +
+                      std::to_string(l.dims.size()) + " (a file of several forecast runs has a run dimension first)");
+    if (l.dimRun < 0)
+        return;
+    l.runVar = l.coordVar[std::size_t(l.dimRun)];
+    l.run = opt.runIndex.value_or(0);
+    const int runDim = l.dims[std::size_t(l.dimRun)];
+    const std::string runName = f.dimName(runDim);
+    if (l.dimT < 0 || l.dimT < l.dimRun)
+        throw f.error("variable '" + l.uName + "' is on dimension '" + runName +
+                      "' of forecast runs but has no time dimension after it; expected (run, time, [depth,] lat, lon)");
+    const int tVar = l.coordVar[std::size_t(l.dimT)];
+    const std::vector<int> td = f.varDims(tVar);
+    const bool twoD = td == std::vector<int>{runDim, l.dims[std::size_t(l.dimT)]};
+    if (!twoD && f.dimLen(runDim) > 1)
+        throw f.error("variable '" + l.uName + "' is on dimension '" + runName + "' of " +
+                      std::to_string(f.dimLen(runDim)) + " forecast runs, but its time '" + f.varName(tVar) +
+                      "' is not a 2-D time(" + runName + ", " + f.dimName(l.dims[std::size_t(l.dimT)]) +
+                      "); expected a THREDDS FMRC's layout");
 }
 
 /// Candidate 2-D coordinate variables on (j, i): those of u's `coordinates` attribute first, then all.
@@ -243,11 +270,13 @@ Layout detectLayout(const GriddedDataset &f, const GriddedCurrentOptions &opt)
     l.dimZ = dr.find(Role::Depth);
     l.dimX = dr.find(Role::X);
     l.dimY = dr.find(Role::Y);
+    l.dimRun = dr.find(Role::Run);
     l.dims = std::move(dr.dims);
     l.role = std::move(dr.role);
     l.coordVar = std::move(dr.coordVar);
     bool geoAxes = dr.geoAxes, cartAxes = dr.cartAxes;
     checkNoEmptyDimension(f, l);
+    placeRuns(f, opt, l);
     if (l.staggered && (l.dimX >= 0 || l.dimY >= 0))
         throw f.error("velocity variables '" + l.uName + "' and '" + l.vName +
                       "' are on different grids with 1-D axes; only a ROMS-like C grid with 2-D coordinates on "

@@ -37,7 +37,8 @@ const std::vector<std::pair<std::string, ForecastOption>> &readerFields()
         {"angleName", ForecastOption::Angle},
         {"maskName", ForecastOption::Mask},
         {"depthAverage", ForecastOption::DepthAverage},
-        {"maxSpeed", ForecastOption::MaxSpeed}};
+        {"maxSpeed", ForecastOption::MaxSpeed},
+        {"runIndex", ForecastOption::Run}};
     return fields;
 }
 
@@ -115,6 +116,7 @@ GriddedCurrentOptions readerOptions(const ForecastRequest &r)
     o.maxSpeed = r.maxSpeed;
     o.timeUnits = r.timeUnits;
     o.steadyRecord = r.steadyRecord;
+    o.runIndex = r.run;
     o.field.xy = r.xy;
     o.field.depth = r.depth;
     o.field.time = r.time;

@@ -80,6 +80,9 @@ bool isYVar(const GriddedDataset &f, int var);
 bool isTimeVar(const GriddedDataset &f, int var);
 /// Depth: standard_name depth, axis = "Z", a positive attribute, or a usual name (depth, deptht, lev, ...).
 bool isDepthVar(const GriddedDataset &f, int var);
+/// The runs of a forecast model run collection (a THREDDS FMRC): standard_name forecast_reference_time,
+/// _CoordinateAxisType RunTime, or a usual name (run, reftime, reftime1, ..., runtime, forecast_reference_time).
+bool isRunVar(const GriddedDataset &f, int var);
 
 /// The eastward (east = true) or northward velocity variable: the given name, else the first CF standard_name
 /// of the known list found, else the first usual name found. @throws Error listing what was looked for.
@@ -89,6 +92,7 @@ int findVelocity(const GriddedDataset &f, const std::string &given, bool east, c
 enum class Role
 {
     None,
+    Run, ///< the runs of a file of several forecast runs (a THREDDS FMRC); one is read (Layout::run)
     Time,
     Depth,
     X,
@@ -96,8 +100,10 @@ enum class Role
 };
 
 /// The dimensions of u classified by their 1-D coordinate variables (names given in the options first, then
-/// isTimeVar / isLonVar / isLatVar / isDepthVar / isXVar / isYVar in this order). Dimensions without a 1-D
-/// coordinate variable stay Role::None (a curvilinear grid's (j, i)).
+/// isRunVar / isTimeVar / isLonVar / isLatVar / isDepthVar / isXVar / isYVar in this order). Dimensions without a
+/// 1-D coordinate variable stay Role::None (a curvilinear grid's (j, i)). A file of several forecast runs (a
+/// THREDDS FMRC) has time as a 2-D coordinate time(run, time) on u's run and time dimensions: its time dimension
+/// gets Role::Time and that variable.
 struct DimensionRoles
 {
     std::vector<int> dims;     ///< dimension ids of u, in file order
@@ -126,7 +132,10 @@ struct Layout
     std::vector<Role> role;                     ///< per dimension
     std::vector<int> coordVar;                  ///< 1-D coordinate variable per dimension, -1 if none
     int dimT{-1}, dimZ{-1}, dimX{-1}, dimY{-1}; ///< index in dims, -1 if absent (x/y always present)
-    bool curvilinear{false};                    ///< x/y from 2-D coordinate variables lon2D/lat2D
+    int dimRun{-1};          ///< index in dims of the runs of a file of several forecast runs, -1 if absent
+    std::size_t run{0};      ///< the run read along it (GriddedCurrentOptions::runIndex)
+    int runVar{-1};          ///< its coordinate variable (the runs' reference times), -1 if none
+    bool curvilinear{false}; ///< x/y from 2-D coordinate variables lon2D/lat2D
     int lon2D{-1}, lat2D{-1};
     bool geographic{false};   ///< longitude/latitude (projected), else Cartesian
     std::string xName, yName; ///< the horizontal coordinate variables (1-D or 2-D)
@@ -153,7 +162,12 @@ struct TimeValues
     bool dated{false};
     Calendar calendar{Calendar::Standard}; ///< dated axes
     double originSeconds{0.0};             ///< first time, seconds since the calendar epoch (dated axes)
-    std::vector<double> times;             ///< per file index: seconds after the first time, or raw values
+    std::vector<double> times;             ///< per record: seconds after the first time, or raw values
+    /// per record its index along the time dimension when some were dropped (a 2-D time(run, time)'s fill values:
+    /// a run shorter than the others); empty: record k is index k
+    std::vector<std::size_t> fileIdx;
+    /// The index along the time dimension of record k.
+    std::size_t fileIndex(std::size_t k) const { return fileIdx.empty() ? k : fileIdx.at(k); }
 };
 
 /// Reads the time coordinate variable tv, with unitsOverride (GriddedCurrentOptions::timeUnits) in place of its
@@ -161,10 +175,17 @@ struct TimeValues
 /// not "<unit> since <date>" and allowUndated is false (naming GriddedCurrentOptions::timeUnits and steadyRecord),
 /// when the units or calendar are not understood, or when the variable has no values, holds fill values or
 /// non-finite numbers, or is not strictly increasing.
-TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, const std::string &unitsOverride = "");
-/// A forecast run's reference time into @p axis (dated): ForecastTimeAxis::referenceSeconds and referenceFrom.
-/// @throws Error for a reference-time variable of more or fewer than one value, or a date not understood.
-void readReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis);
+/// A 2-D time(run, time) is read at row @p run, its fill values and NaN dropped (TimeValues::fileIdx).
+TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, const std::string &unitsOverride = "",
+                          std::size_t run = 0);
+/// A forecast run's reference time into @p axis (dated): ForecastTimeAxis::referenceSeconds and referenceFrom. In a
+/// file of several runs, the value at @p run of the runs' coordinate @p runVar (>= 0); else CF
+/// forecast_reference_time, else HYCOM's `tau` (hours since analysis) subtracted from the first time, else the first
+/// time. @throws Error for a reference-time variable of more or fewer than one value, or a date not understood.
+void readReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis, int runVar = -1, std::size_t run = 0);
+/// The run read of a file of several runs (Layout::run from GriddedCurrentOptions::runIndex). @throws Error when
+/// the file holds more than one run and none is given, or the one given is out of range.
+void checkRunIndex(const GriddedDataset &f, const Layout &l, const GriddedCurrentOptions &opt);
 
 /// The one record of GriddedCurrentOptions::steadyRecord and its date.
 struct SteadyRecord

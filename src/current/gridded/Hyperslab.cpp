@@ -137,6 +137,10 @@ HyperslabPlan planHyperslab(const GriddedDataset &f, const Layout &l, const Hori
             p.reads[d] = makeDimRead(h.xIdx);
             p.stride[d] = 1;
             break;
+        case Role::Run:
+            p.reads[d] = makeDimRead({l.run});
+            p.stride[d] = 0;
+            break;
         case Role::None:
             p.reads[d] = makeDimRead({0});
             p.stride[d] = 0;

@@ -245,6 +245,9 @@ std::optional<GridFit> fitToGrid(const GriddedDataset &f, const Layout &l, int v
         case Role::X:
             m.stride[d] = 1;
             break;
+        case Role::Run:
+            m.reads[d] = makeDimRead({l.run});
+            break;
         case Role::None:
             m.reads[d] = makeDimRead({0});
             break;

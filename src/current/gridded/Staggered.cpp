@@ -54,6 +54,9 @@ std::vector<double> readComponent(const GriddedDataset &f, int var, const Layout
             reads[d] = makeDimRead(xIdx);
             stride[d] = 1;
             break;
+        case Role::Run:
+            reads[d] = makeDimRead({l.run});
+            break;
         case Role::None:
             reads[d] = makeDimRead({0});
             break;

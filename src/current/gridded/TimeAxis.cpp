@@ -40,7 +40,33 @@ std::string undatedMessage(const std::string &tn, const std::string &units)
 }
 } // namespace
 
-TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, const std::string &unitsOverride)
+namespace
+{
+/// Row @p run of a 2-D time(run, time) without its fill values and NaN (a run shorter than the others), each value
+/// with its index along time.
+std::vector<double> timeRow(const GriddedDataset &f, int tv, std::size_t run, std::vector<std::size_t> &fileIdx)
+{
+    const std::vector<int> dims = f.varDims(tv);
+    const std::size_t n = f.dimLen(dims.at(1));
+    std::vector<double> row(n), out;
+    if (n > 0)
+        f.readBlock(tv, {run, 0}, {1, n}, row.data());
+    const Packing p = packingOf(f, tv);
+    fileIdx.clear();
+    for (std::size_t k = 0; k < n; ++k)
+        if (std::isfinite(row[k]) && !p.isFill(row[k]))
+        {
+            out.push_back(row[k]);
+            fileIdx.push_back(k);
+        }
+    if (fileIdx.size() == n)
+        fileIdx.clear(); // every index: record k is index k
+    return out;
+}
+} // namespace
+
+TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, const std::string &unitsOverride,
+                          std::size_t run)
 {
     TimeValues out;
     out.name = f.varName(tv);
@@ -53,10 +79,13 @@ TimeValues readTimeValues(const GriddedDataset &f, int tv, bool allowUndated, co
                       "GriddedCurrentOptions::timeUnits");
     if (!hasSince(units) && !allowUndated)
         throw f.error(undatedMessage(tn, units));
-    const std::vector<double> raw = f.readAll1D(tv);
+    const bool twoD = f.varDims(tv).size() == 2; // time(run, time) of a file of several runs
+    const std::vector<double> raw = twoD ? timeRow(f, tv, run, out.fileIdx) : f.readAll1D(tv);
     if (raw.empty())
-        throw f.error("time variable '" + tn + "' has no values");
-    checkAxisValues(f, tv, raw, "time variable");
+        throw f.error("time variable '" + tn + "' has no values" +
+                      (twoD ? " for run " + std::to_string(run) + " (index along its first dimension)" : ""));
+    if (!twoD)
+        checkAxisValues(f, tv, raw, "time variable");
     const std::size_t bad = firstNotIncreasing(raw);
     if (bad < raw.size())
         throw f.error("time variable '" + tn + "' is not strictly monotonic: " + text::number(raw[bad - 1]) +
@@ -114,7 +143,14 @@ std::optional<SteadyRecord> steadyRecordOf(const GriddedDataset &f, int timeDim,
     const std::string units = !opt.timeUnits.empty() ? opt.timeUnits : (tv >= 0 ? unitsOf(f, tv) : "");
     if (tv >= 0 && (hasSince(units) || !opt.timeUnits.empty()))
     {
-        const TimeValues v = readTimeValues(f, tv, true, opt.timeUnits);
+        const TimeValues v = readTimeValues(f, tv, true, opt.timeUnits, opt.runIndex.value_or(0));
+        if (k >= v.times.size())
+            throw f.error("GriddedCurrentOptions::steadyRecord " + std::to_string(k) +
+                              " is out of range: the run read "
+                              "has " +
+                              std::to_string(v.times.size()) + " times",
+                          "GriddedCurrentOptions::steadyRecord");
+        r.index = v.fileIndex(k);
         r.dated = v.dated;
         r.calendar = v.calendar;
         r.originSeconds = v.originSeconds + v.times.at(k);
@@ -199,7 +235,8 @@ AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const Gridde
         s.values = {0.0};
         return s;
     }
-    const TimeValues tv = readTimeValues(f, tVar, !l.geographic, opt.timeUnits);
+    checkRunIndex(f, l, opt);
+    const TimeValues tv = readTimeValues(f, tVar, !l.geographic, opt.timeUnits, l.run);
     const std::vector<double> &ts = tv.times;
     out.dated = tv.dated;
     if (tv.dated)
@@ -212,9 +249,38 @@ AxisSelection selectTimes(const GriddedDataset &f, const Layout &l, const Gridde
         out.steady = true;
         out.forecastBegin = out.forecastEnd = ts.front();
         out.departureTime = departureOf(fileErrors(f), opt, tv.name, ts, out);
+        s.idx = {tv.fileIndex(0)};
         return s; // the one record: {0}/{0}
     }
-    return selectForecastTimes(ts, tv.name, opt, out, fileErrors(f));
+    s = selectForecastTimes(ts, tv.name, opt, out, fileErrors(f));
+    for (std::size_t &k : s.idx) // records along the time dimension (a run's times without its fill values)
+        k = tv.fileIndex(k);
+    return s;
+}
+
+void checkRunIndex(const GriddedDataset &f, const Layout &l, const GriddedCurrentOptions &opt)
+{
+    if (l.dimRun < 0)
+    {
+        if (opt.runIndex && *opt.runIndex > 0)
+            throw f.error("GriddedCurrentOptions::runIndex " + std::to_string(*opt.runIndex) +
+                              " given, but variable '" + l.uName +
+                              "' has no run dimension (a file of one forecast run)",
+                          "GriddedCurrentOptions::runIndex");
+        return;
+    }
+    const int dim = l.dims[std::size_t(l.dimRun)];
+    const std::size_t n = f.dimLen(dim);
+    const std::string what = "variable '" + l.uName + "' is on dimension '" + f.dimName(dim) + "' of " +
+                             std::to_string(n) + " forecast runs (a forecast model run collection, a THREDDS FMRC";
+    if (!opt.runIndex && n > 1)
+        throw f.error(what + ", with a 2-D time): read it as forecast runs, each run one forecast, with "
+                             "GriddedCurrentOptions::runIndex",
+                      "GriddedCurrentOptions::runIndex");
+    if (opt.runIndex && *opt.runIndex >= n)
+        throw f.error(what + "): GriddedCurrentOptions::runIndex " + std::to_string(*opt.runIndex) +
+                          " is out of range (0 to " + std::to_string(n - 1) + ")",
+                      "GriddedCurrentOptions::runIndex");
 }
 
 AxisSelection selectForecastTimes(const std::vector<double> &ts, const std::string &name,
@@ -253,8 +319,65 @@ AxisSelection selectForecastTimes(const std::vector<double> &ts, const std::stri
     return s;
 }
 
-void readReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis)
+namespace
 {
+/// The reference time of run @p run of a file of several runs: the value of the runs' coordinate @p runVar.
+void runReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis, int runVar, std::size_t run)
+{
+    const std::string name = f.varName(runVar);
+    const std::vector<double> v = f.readAll1D(runVar);
+    if (run >= v.size() || !std::isfinite(v[run]) || packingOf(f, runVar).isFill(v[run]))
+        throw f.error("variable '" + name + "' (the runs' reference times) has no value for run " +
+                      std::to_string(run));
+    CfTimeUnits cu;
+    try
+    {
+        cu = parseCfTimeUnits(unitsOf(f, runVar), f.attText(runVar, "calendar").value_or(calendarName(axis.calendar)));
+    }
+    catch (const Error &e)
+    {
+        throw f.error("variable '" + name + "' (the runs' reference times): " + e.what());
+    }
+    if (cu.calendar != axis.calendar)
+        throw f.error("variable '" + name + "' (the runs' reference times): its calendar (" +
+                      calendarName(cu.calendar) + ") differs from the time axis's (" + calendarName(axis.calendar) +
+                      ")");
+    axis.referenceSeconds = cu.reference + v[run] * cu.secondsPerUnit;
+    axis.referenceFrom = "variable '" + name + "', run " + std::to_string(run + 1) + " of " + std::to_string(v.size());
+}
+
+/// HYCOM's (GOFS 3.1, ESPC) `tau`: hours since the analysis at each time, so that the analysis (the reference time)
+/// is the first time minus its first value; false without it.
+bool hycomTau(const GriddedDataset &f, ForecastTimeAxis &axis)
+{
+    const std::optional<int> tau = f.findVar("tau");
+    if (!tau)
+        return false;
+    const std::string units = lower(unitsOf(f, *tau));
+    const std::size_t since = units.find(" since analysis");
+    const std::vector<double> v = f.readAll1D(*tau);
+    if (since == std::string::npos || v.empty() || !std::isfinite(v[0]))
+        return false;
+    double perUnit = 0.0;
+    try
+    {
+        perUnit = parseCfTimeUnits(units.substr(0, since) + " since 2000-01-01", "standard").secondsPerUnit;
+    }
+    catch (const Error &)
+    {
+        return false;
+    }
+    axis.referenceSeconds = axis.originSeconds - v[0] * perUnit;
+    axis.referenceFrom = "variable 'tau' (" + unitsOf(f, *tau) + "): the first time minus " + text::number(v[0]) + " " +
+                         units.substr(0, since);
+    return true;
+}
+} // namespace
+
+void readReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis, int runVar, std::size_t run)
+{
+    if (runVar >= 0)
+        return runReferenceTime(f, axis, runVar, run);
     const std::string calendar = calendarName(axis.calendar);
     for (int var = 0; var < f.nvars(); ++var)
     {
@@ -262,11 +385,23 @@ void readReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis)
         if (lower(f.attText(var, "standard_name").value_or("")) != "forecast_reference_time" &&
             lower(name) != "forecast_reference_time")
             continue;
-        const std::vector<double> v = f.readAll1D(var);
+        std::vector<double> v = f.readAll1D(var);
+        // along time (a THREDDS best time series joins several runs, each record its own run's): complete when the
+        // newest of them was
+        const bool series = v.size() > 1 && f.varDims(var).size() == 1;
+        if (series)
+        {
+            const Packing p = packingOf(f, var);
+            double newest = kNaN;
+            for (double x : v)
+                if (std::isfinite(x) && !p.isFill(x) && !(x <= newest))
+                    newest = x;
+            v = {newest};
+        }
         if (v.size() != 1 || !std::isfinite(v[0]))
             throw f.error("variable '" + name + "' (forecast_reference_time) holds " + std::to_string(v.size()) +
                           " values; a forecast run has one reference time (a file of several runs, a THREDDS FMRC "
-                          "collection, is read by its 'run' dimension)");
+                          "collection, has them as the coordinate of the velocities' run dimension)");
         const std::string units = unitsOf(f, var);
         CfTimeUnits cu;
         try
@@ -281,7 +416,7 @@ void readReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis)
             throw f.error("variable '" + name + "' (forecast_reference_time): its calendar (" +
                           calendarName(cu.calendar) + ") differs from the time axis's (" + calendar + ")");
         axis.referenceSeconds = cu.reference + v[0] * cu.secondsPerUnit;
-        axis.referenceFrom = "variable '" + name + "'";
+        axis.referenceFrom = "variable '" + name + "'" + (series ? " (the newest of its values along time)" : "");
         return;
     }
     if (const std::optional<std::string> text = f.attText(kGlobalAttributes, "forecast_reference_time"))
@@ -297,6 +432,8 @@ void readReferenceTime(const GriddedDataset &f, ForecastTimeAxis &axis)
         axis.referenceFrom = "global attribute 'forecast_reference_time'";
         return;
     }
+    if (hycomTau(f, axis))
+        return;
     axis.referenceSeconds = axis.originSeconds;
     axis.referenceFrom = "its first time (no forecast_reference_time)";
 }
@@ -333,7 +470,35 @@ ForecastTimeAxis readForecastTimeAxis(const std::string &path, const GriddedCurr
         axis.size = 1;
         return axis;
     }
-    const TimeValues tv = readTimeValues(f, tVar, true, options.timeUnits);
+    const int dimRun = dr.find(Role::Run);
+    const int runVar = dimRun < 0 ? -1 : dr.coordVar[std::size_t(dimRun)];
+    const std::size_t nRuns = dimRun < 0 ? 1 : f.dimLen(dr.dims[std::size_t(dimRun)]);
+    if (dimRun >= 0 && nRuns > 1 && f.varDims(tVar).size() != 2)
+        throw f.error("variable '" + f.varName(uVar) + "' is on dimension '" + f.dimName(dr.dims[std::size_t(dimRun)]) +
+                      "' of forecast runs, but its time '" + axis.variable +
+                      "' is not a 2-D time(run, time); expected a THREDDS FMRC's layout");
+    if (options.runIndex && *options.runIndex >= nRuns)
+        throw f.error("GriddedCurrentOptions::runIndex " + std::to_string(*options.runIndex) +
+                          " is out of range: the file holds " + std::to_string(nRuns) + " forecast run" +
+                          (nRuns == 1 ? "" : "s"),
+                      "GriddedCurrentOptions::runIndex");
+    // each run of a file of several (its times without fill values; a run without times is left out), then the
+    // axis of the run asked for (else the first)
+    for (std::size_t k = 0; dimRun >= 0 && axis.found && k < nRuns; ++k)
+    {
+        std::vector<std::size_t> idx;
+        if (timeRow(f, tVar, k, idx).empty())
+            continue;
+        const TimeValues tv = readTimeValues(f, tVar, true, options.timeUnits, k);
+        ForecastTimeAxis one = axis;
+        one.originSeconds = tv.originSeconds;
+        if (tv.dated)
+            readReferenceTime(f, one, runVar, k);
+        axis.runs.push_back({k, tv.originSeconds, tv.times.size(), tv.times.back() - tv.times.front(),
+                             one.referenceSeconds, one.referenceFrom});
+    }
+    const std::size_t run = options.runIndex.value_or(axis.runs.empty() ? 0 : axis.runs.front().index);
+    const TimeValues tv = readTimeValues(f, tVar, true, options.timeUnits, run);
     axis.steady = tv.times.size() == 1;
     axis.dated = tv.dated;
     axis.calendar = tv.calendar;
@@ -341,7 +506,9 @@ ForecastTimeAxis readForecastTimeAxis(const std::string &path, const GriddedCurr
     axis.size = tv.times.size();
     axis.span = tv.times.empty() ? 0.0 : tv.times.back() - tv.times.front();
     if (axis.dated)
-        readReferenceTime(f, axis);
+        readReferenceTime(f, axis, runVar, run);
+    if (!tv.dated)
+        axis.runs.clear(); // (undated: no reference times; the caller refuses such runs)
     return axis;
 }
 

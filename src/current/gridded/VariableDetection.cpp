@@ -59,6 +59,15 @@ bool isTimeVar(const GriddedDataset &f, int var)
            inList(n, {"time", "t", "time_counter", "ocean_time", "valid_time", "mt"});
 }
 
+bool isRunVar(const GriddedDataset &f, int var)
+{
+    const std::string n = lower(f.varName(var));
+    const bool numbered = n.rfind("reftime", 0) == 0 && n.find_first_not_of("0123456789", 7) == std::string::npos;
+    return stdName(f, var) == "forecast_reference_time" ||
+           lower(f.attText(var, "_CoordinateAxisType").value_or("")) == "runtime" || numbered ||
+           inList(n, {"run", "runtime", "forecast_reference_time"});
+}
+
 bool isDepthVar(const GriddedDataset &f, int var)
 {
     const std::string sn = stdName(f, var), n = lower(f.varName(var));
@@ -189,7 +198,10 @@ void assignGiven(const GriddedDataset &f, const std::string &name, Role r, const
     auto v = f.findVar(name);
     if (!v)
         throw f.error("no coordinate variable '" + name + "' (given in GriddedCurrentOptions)");
-    const std::vector<int> vd = f.varDims(*v);
+    std::vector<int> vd = f.varDims(*v);
+    if (r == Role::Time && vd.size() == 2 && dr.find(Role::Run) >= 0 &&
+        vd[0] == dr.dims[std::size_t(dr.find(Role::Run))])
+        vd.erase(vd.begin()); // a 2-D time(run, time) of a file of several runs: on its time dimension
     if (vd.size() != 1)
         return; // 2-D coordinates are handled with the curvilinear grid
     for (std::size_t d = 0; d < dr.dims.size(); ++d)
@@ -221,6 +233,41 @@ Role roleOf(const GriddedDataset &f, int cv, CoordinateMode mode, bool &geoAxes,
     return Role::None;
 }
 
+/// The runs of a file of several forecast runs (a THREDDS FMRC): a dimension of u before the others whose
+/// coordinate variable (same name, 1-D on it) isRunVar(); else one on which a 1-D variable with standard_name
+/// forecast_reference_time lies (an auxiliary coordinate: reftime(run)), or which is named so (run, reftime,
+/// runtime) without either.
+void assignRuns(const GriddedDataset &f, DimensionRoles &dr)
+{
+    for (std::size_t d = 0; d + 2 < dr.dims.size() && dr.find(Role::Run) < 0; ++d)
+    {
+        const std::vector<int> on{dr.dims[d]};
+        const std::string dn = f.dimName(dr.dims[d]);
+        const auto cv = f.findVar(dn);
+        int coordinate = cv && f.varDims(*cv) == on ? *cv : -1;
+        if (coordinate >= 0 && !isRunVar(f, coordinate))
+            continue;
+        for (int var = 0; coordinate < 0 && var < f.nvars(); ++var)
+            if (f.varDims(var) == on && stdName(f, var) == "forecast_reference_time")
+                coordinate = var;
+        if (coordinate < 0 && !inList(lower(dn), {"run", "reftime", "runtime"}))
+            continue;
+        dr.role[d] = Role::Run;
+        dr.coordVar[d] = coordinate;
+    }
+}
+
+/// The 2-D time(run, time) of dimension @p d (same name, on u's run dimension and d), else -1.
+int twoDimensionalTime(const GriddedDataset &f, const DimensionRoles &dr, std::size_t d)
+{
+    const int run = dr.find(Role::Run);
+    const auto cv = f.findVar(f.dimName(dr.dims[d]));
+    if (run < 0 || !cv || f.varDims(*cv) != std::vector<int>{dr.dims[std::size_t(run)], dr.dims[d]} ||
+        !isTimeVar(f, *cv))
+        return -1;
+    return *cv;
+}
+
 /// Dimensions not named in the options, classified by their coordinate variable (same name, 1-D on it).
 void assignDetected(const GriddedDataset &f, CoordinateMode mode, const std::string &uName, DimensionRoles &dr)
 {
@@ -230,6 +277,12 @@ void assignDetected(const GriddedDataset &f, CoordinateMode mode, const std::str
             continue;
         const std::string dn = f.dimName(dr.dims[d]);
         auto cv = f.findVar(dn);
+        if (const int t2 = twoDimensionalTime(f, dr, d); t2 >= 0)
+        {
+            dr.role[d] = Role::Time;
+            dr.coordVar[d] = t2;
+            continue;
+        }
         if (!cv || f.varDims(*cv).size() != 1 || f.varDims(*cv)[0] != dr.dims[d])
         {
             if (inList(lower(dn), {"time", "t", "time_counter", "ocean_time"}))
@@ -265,13 +318,14 @@ DimensionRoles classifyDimensions(const GriddedDataset &f, const GriddedCurrentO
     dr.role.assign(dr.dims.size(), Role::None);
     dr.coordVar.assign(dr.dims.size(), -1);
     const std::string uName = f.varName(uVar);
+    assignRuns(f, dr);
     assignGiven(f, opt.timeName, Role::Time, uName, dr);
     assignGiven(f, opt.depthName, Role::Depth, uName, dr);
     assignGiven(f, opt.lonName, Role::X, uName, dr);
     assignGiven(f, opt.latName, Role::Y, uName, dr);
     assignDetected(f, opt.coordinates, uName, dr);
     markNamedAxes(f, opt, dr);
-    for (Role r : {Role::Time, Role::Depth, Role::X, Role::Y})
+    for (Role r : {Role::Run, Role::Time, Role::Depth, Role::X, Role::Y})
         if (std::count(dr.role.begin(), dr.role.end(), r) > 1)
             throw f.error("variable '" + uName +
                           "' has two dimensions of the same kind; name the coordinates "

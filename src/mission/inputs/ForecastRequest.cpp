@@ -36,7 +36,8 @@ std::map<ForecastOption, std::string> forecastFieldNames(const std::string &sect
             {ForecastOption::Angle, v + "angle"},
             {ForecastOption::Mask, v + "mask"},
             {ForecastOption::DepthAverage, section + ".depth_average"},
-            {ForecastOption::MaxSpeed, section + ".max_speed"}};
+            {ForecastOption::MaxSpeed, section + ".max_speed"},
+            {ForecastOption::Run, section + ".runs"}};
 }
 
 ForecastRequest forecastRequest(const MissionSpec &m)
@@ -65,6 +66,7 @@ ForecastRequest forecastRequest(const MissionSpec &m)
     o.maxSpeed = c.maxSpeed;
     o.timeUnits = c.timeUnits;
     o.steadyRecord = c.steadyRecord;
+    o.run = c.runIndex;
     o.xy = c.xyInterpolation;
     o.depth = c.depthInterpolation;
     o.time = c.timeInterpolation;
@@ -72,6 +74,8 @@ ForecastRequest forecastRequest(const MissionSpec &m)
     o.name = c.type + ":" + withoutCredentials(c.file); // shown in maps and messages: no URL's password
     for (std::size_t k = 1; k < c.files.size(); ++k)
         o.name += "," + withoutCredentials(c.files[k]);
+    if (c.runIndex) // a run of a file of several (a THREDDS FMRC)
+        o.name += " run " + std::to_string(*c.runIndex + 1);
     o.maxDepth = m.dive.enabled ? m.dive.params.zMax : m.vehicle.depth;
     if (m.projection.set)
     {

@@ -22,29 +22,36 @@ namespace ompl_glider::inputs_detail
 {
 namespace
 {
-/// The mission @p m with run @p file as its one forecast.
-MissionSpec withRun(const MissionSpec &m, const std::string &file)
+/// The mission @p m with run @p run (its file or files, and its index in a file of several runs) as its one forecast.
+MissionSpec withRun(const MissionSpec &m, const ForecastRun &run)
 {
     MissionSpec out = m;
-    out.current.file = file;
-    out.current.files.clear();
+    out.current.file = run.file;
+    out.current.runIndex = run.runIndex;
+    out.current.files = run.files;
     out.current.runs.clear();
     return out;
 }
 
-/// Each run's times on the mission's clock (m.fileCalendar: the earliest run's first time).
+/// Each run's times on the mission's clock (m.fileCalendar: the earliest run's first time): forecastRunSources()
+/// (a file of several runs is each of its runs, a run in several files one run).
 std::vector<ForecastRun> readRuns(const MissionSpec &m, const CurrentFieldKind &kind)
 {
     const double origin = m.fileCalendar ? m.fileCalendar->originSeconds : 0.0;
     std::vector<ForecastRun> out;
-    for (const std::string &file : m.current.runs)
+    ForecastRun first;
+    first.file = m.current.runs.front();
+    for (const RunSource &s : forecastRunSources(*kind.source, forecastRequest(withRun(m, first)), m.current.runs))
     {
-        ForecastRequest o = forecastRequest(withRun(m, file));
-        const ForecastTimeAxis axis = kind.source->timeAxis(o);
+        const ForecastTimeAxis &axis = s.axis;
         if (!axis.dated || !m.fileCalendar || axis.calendar != m.fileCalendar->calendar)
-            throw Error("forecast run '" + file + "': its time axis is not dated on the first run's calendar");
+            throw Error("forecast run '" + s.files.front() +
+                        "': its time axis is not dated on the first run's calendar");
         ForecastRun r;
-        r.file = file;
+        r.file = s.files.front();
+        if (s.files.size() > 1)
+            r.files = s.files;
+        r.runIndex = s.runIndex;
         r.begin = axis.originSeconds - origin;
         r.end = r.begin + axis.span;
         r.reference = axis.referenceSeconds - origin;
@@ -67,7 +74,7 @@ void loadRuns(ProblemInputs &in, const CurrentFieldKind &kind)
     auto gate = std::make_shared<std::mutex>();
     ForecastRuns::Loader load = [source, gate](const ForecastRun &r) {
         std::lock_guard<std::mutex> hold(*gate);
-        CurrentSpec run = withRun(source->spec, r.file).current;
+        CurrentSpec run = withRun(source->spec, r).current;
         run.mark = {};
         return loadSource(*source, run, "current.runs");
     };
@@ -85,7 +92,7 @@ void loadRuns(ProblemInputs &in, const CurrentFieldKind &kind)
     const ForecastRun &run = (*runs)[*k];
     // the run read as the mission given that file alone reads it: its own clock (field time 0 its first time),
     // the departure on that clock, then shifted back onto the mission's
-    MissionSpec alone = withRun(m, run.file);
+    MissionSpec alone = withRun(m, run);
     alone.departure.time -= run.begin;
     alone.departure.begin -= run.begin;
     alone.departure.end -= run.begin;

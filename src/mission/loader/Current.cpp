@@ -11,6 +11,7 @@
 #include "ompl_glider/Config.h"
 #include "ompl_glider/Exception.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/current/ForecastRuns.h"
 #include "ompl_glider/io/FileList.h"
 #include "ompl_glider/io/Length.h"
 #include "ompl_glider/io/RemoteSource.h"
@@ -25,9 +26,6 @@ namespace ompl_glider::mission_loader
 {
 namespace
 {
-/// Time origin of a gridded forecast (its first time, as its source loads it): ISO dates of the mission are field
-/// times in the file's calendar, and the outputs get calendar dates. The time axis is found by the source's own
-/// detection (GriddedSource::timeAxis(): variables.time, else the source's rules).
 /// The departure date of @p departure (its `time` as a date text) in seconds from the epoch of @p calendar; NaN when
 /// there is none (a number, a window, not given, or not a date: the departure's own reading reports it).
 double departureDate(const YAML::Node &departure, Calendar calendar)
@@ -46,26 +44,30 @@ double departureDate(const YAML::Node &departure, Calendar calendar)
 
 /// The time axis of the run that starts the mission's clock: the newest run available at the departure date
 /// (@p departure, @p delay: its reference time plus the delay at or before it; ties: the later first time), else the
-/// earliest run. Each run's axis must be dated, not steady, and on one calendar. @throws Error naming the run at fault.
-ForecastTimeAxis clockRun(const CurrentFieldKind &kind, ForecastRequest o, const std::vector<std::string> &runs,
+/// earliest run. Each run's axis must be dated, not steady, and on one calendar. The runs as forecastRunSources() finds
+/// them: a file of several runs (a THREDDS FMRC) is each of its runs, a run in several files one run.
+/// @throws Error naming the run at fault.
+ForecastTimeAxis clockRun(const CurrentFieldKind &kind, const ForecastRequest &o, const std::vector<std::string> &runs,
                           const YAML::Node &departure, double delay)
 {
     ForecastTimeAxis first, chosen;
     double chosenReference = -kInf;
     bool found = false;
-    for (const std::string &run : runs)
+    bool any = false;
+    for (const RunSource &s : forecastRunSources(*kind.source, o, runs))
     {
-        o.files = {run};
-        const ForecastTimeAxis axis = kind.source->timeAxis(o);
+        const ForecastTimeAxis &axis = s.axis;
+        const std::string name = "forecast run '" + s.files.front() + "'" +
+                                 (s.runIndex || s.files.size() > 1 ? " (" + axis.referenceFrom + ")" : "");
         if (!axis.found || axis.steady || !axis.dated)
-            throw Error("forecast run '" + run + "': " +
+            throw Error(name + ": " +
                         (axis.dated ? std::string("one time only; a run is a forecast over time")
                                     : std::string("its time axis has no dates ('<unit> since <date>'): a run's "
                                                   "reference time and availability are dates")));
-        if (run != runs.front() && axis.calendar != first.calendar)
-            throw Error("forecast run '" + run + "': its calendar (" + calendarName(axis.calendar) +
-                        ") differs from the first run's (" + calendarName(first.calendar) + ")");
-        if (run == runs.front() || axis.originSeconds < first.originSeconds)
+        if (any && axis.calendar != first.calendar)
+            throw Error(name + ": its calendar (" + calendarName(axis.calendar) + ") differs from the first run's (" +
+                        calendarName(first.calendar) + ")");
+        if (!any || axis.originSeconds < first.originSeconds)
             first = axis;
         const double at = departureDate(departure, axis.calendar);
         const double reference = std::isfinite(axis.referenceSeconds) ? axis.referenceSeconds : axis.originSeconds;
@@ -76,10 +78,14 @@ ForecastTimeAxis clockRun(const CurrentFieldKind &kind, ForecastRequest o, const
             chosenReference = reference;
             found = true;
         }
+        any = true;
     }
     return found ? chosen : first;
 }
 
+/// Time origin of a gridded forecast (its first time, as its source loads it): ISO dates of the mission are field
+/// times in the file's calendar, and the outputs get calendar dates. The time axis is found by the source's own
+/// detection (GriddedSource::timeAxis(): variables.time, else the source's rules).
 void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m, const YAML::Node &departure = YAML::Node())
 {
     const CurrentFieldKind &kind = *findCurrentFieldKind(m.current.type);
@@ -112,6 +118,14 @@ void readFileCalendar(const Reader &r, const YAML::Node &n, MissionSpec &m, cons
             r.fail(n["variables"]["u"], field, what);
         r.fail(n["file"] ? n["file"] : n["runs"], n["file"] ? "current.file" : "current.runs", what);
     }
+    if (m.current.runs.empty() && axis.runs.size() > 1)
+        r.fail(n["file"], "current.file",
+               "'" + m.current.file + "' holds " + std::to_string(axis.runs.size()) +
+                   " forecast runs (a forecast model run collection, a THREDDS FMRC: the velocities on a run "
+                   "dimension, time '" +
+                   axis.variable +
+                   "' 2-D): give it as 'runs:' in place of 'file:', and the plan is made on the newest run "
+                   "available at the departure");
     m.current.steady = axis.steady;
     if (!axis.found || !axis.dated)
         return; // a steady field without dates, or raw times of a Cartesian file: no calendar

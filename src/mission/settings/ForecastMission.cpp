@@ -15,6 +15,7 @@
 #include "ompl_glider/io/MemoryDataset.h"
 #include "ompl_glider/io/RemoteSource.h"
 #include "ompl_glider/current/CurrentFieldRegistry.h"
+#include "ompl_glider/current/ForecastRuns.h"
 #include "ompl_glider/current/ForecastSource.h"
 #include "ompl_glider/io/Time.h"
 #include "ompl_glider/mission/MissionProblem.h"
@@ -154,40 +155,47 @@ MissionSpec forecastSpec(const ForecastInput &q, const std::vector<std::string> 
     return m;
 }
 
+/// A run of forecast runs: its files (several for a run in several files), its index in a file of several runs (a
+/// THREDDS FMRC), when it is available.
+struct RunAt
+{
+    std::vector<std::string> files;
+    std::optional<std::size_t> runIndex;
+    double available{0.0};
+};
+
 /// Forecast runs (ForecastInput::current.runs): the run planned on, the newest available at the departure (its
-/// reference time + current.runDelay at or before it), whose file the mission is then made of, as of that file
-/// alone (its first time the mission's field time 0); without a departure, the first run's availability becomes
-/// the departure (@p departure is set to it). @throws Error for a departure that is no date, or before any run.
-std::string runAtDeparture(const MissionSpec &m, const ForecastInput &q, std::string &departure)
+/// reference time + current.runDelay at or before it), whose file (and run in a file of several) the mission is then
+/// made of, as of that run alone (its first time the mission's field time 0); without a departure, the first run's
+/// availability becomes the departure (@p departure is set to it). @throws Error for a departure that is no date,
+/// or before any run.
+RunAt runAtDeparture(const MissionSpec &m, const ForecastInput &q, std::string &departure)
 {
     if (!departure.empty() && isNumber(departure))
         throw Error(named(q, "departure.time") + " " + departure +
                     ": with forecast runs the departure is a date (ISO 8601), not a time after one run's start");
-    struct Run
-    {
-        std::string file;
-        double available{0.0};
-    };
+    using Run = RunAt;
     std::vector<Run> runs;
     Calendar calendar = Calendar::Standard;
-    for (const std::string &file : m.current.runs)
+    const ForecastRequest o = callerRequest(m, q);
+    std::vector<RunSource> sources;
+    try
     {
-        ForecastRequest o = callerRequest(m, q);
-        o.files = {file};
-        ForecastTimeAxis axis;
-        try
-        {
-            axis = sourceOf(m).timeAxis(o);
-        }
-        catch (const Error &e)
-        {
-            throw Error(callerMessage(e, q, o), e.field());
-        }
-        if (!axis.dated || axis.steady)
-            throw Error(named(q, "current.runs") + ": forecast run '" + file +
-                        "' has no dated time axis of several times: a run's reference time and availability are dates");
-        calendar = axis.calendar;
-        runs.push_back({file, axis.referenceSeconds + m.current.runDelay});
+        sources = forecastRunSources(sourceOf(m), o, m.current.runs);
+    }
+    catch (const Error &e)
+    {
+        throw Error(callerMessage(e, q, o), e.field());
+    }
+    for (const RunSource &s : sources) // (a file of several runs each of them, a run in several files one)
+    {
+        if (!s.axis.dated || s.axis.steady)
+            throw Error(named(q, "current.runs") + ": forecast run '" + s.files.front() +
+                        (s.runIndex || s.files.size() > 1 ? "' (" + s.axis.referenceFrom + ")" : "'") +
+                        " has no dated time axis of several times: a run's reference time and availability are "
+                        "dates");
+        calendar = s.axis.calendar;
+        runs.push_back({s.files, s.runIndex, s.axis.referenceSeconds + m.current.runDelay});
     }
     const auto first = std::min_element(runs.begin(), runs.end(),
                                         [](const Run &a, const Run &b) { return a.available < b.available; });
@@ -208,9 +216,9 @@ std::string runAtDeparture(const MissionSpec &m, const ForecastInput &q, std::st
             newest = &r;
     if (!newest)
         throw Error(named(q, "current.runs") + ": no run is available at the departure " + departure +
-                    ": the first, '" + first->file + "', is available from " +
+                    ": the first, '" + first->files.front() + "', is available from " +
                     formatCalendarTime(first->available, calendar) + " (its reference time + the run delay)");
-    return newest->file;
+    return *newest;
 }
 
 /// Longitude/latitude or x/y: the reader's own detection, before any region is cut.
@@ -500,8 +508,12 @@ MissionSpec forecastMission(const ForecastInput &input)
     ForecastInput given = q; // with runs, the departure (the first run's availability when none is given)
     if (!q.current.runs.empty())
     {
-        m.current.file = runAtDeparture(m, q, given.departure);
+        const RunAt run = runAtDeparture(m, q, given.departure);
+        m.current.file = run.files.front();
+        m.current.runIndex = run.runIndex;
         m.current.files.clear();
+        if (run.files.size() > 1) // a run in several files
+            m.current.files = run.files;
         file = m.current.file; // messages name the run planned on
         m.file = withoutCredentials(file);
     }

@@ -65,6 +65,8 @@ void addSource(Fnv &d, const CurrentSpec &c)
         addFile(d, f, false);
     for (const std::string &f : c.runs) // a forecast's runs (the first is also `file`)
         addFile(d, f, false);
+    if (c.runIndex) // the run of a file of several
+        d.add(std::to_string(*c.runIndex));
     for (const CurrentSpec &m : c.members)
         addSource(d, m);
 }

@@ -403,6 +403,7 @@ CurrentSpec truthOf(const Given<std::string> &t, const MissionSpec &m, Origin or
 {
     CurrentSpec c = m.current;
     c.runs.clear(); // the truth is one ocean, not runs
+    c.runIndex.reset();
     c.mark = SourceMark{t.source, 0, origin};
     if (m.current.isForecast())
     {
