@@ -99,7 +99,8 @@ std::shared_ptr<const ompl_glider::SettingWords> flagWords()
                                                            {"execution.truth", "--truth"},
                                                            {"execution.surfacing_interval", "--surfacing-interval"},
                                                            {"execution.strategies", "--strategies"},
-                                                           {"execution.radius", "--radius"}},
+                                                           {"execution.radius", "--radius"},
+                                                           {"execution.across_runs", "--across-runs"}},
                                                           {},
                                                           Origin::Flag});
     return words;
@@ -203,6 +204,8 @@ MissionOverrides overridesOf(const Flags &f)
         o.strategies = Given<std::vector<std::string>>{commaItems(f.strategies), "--strategies"};
     if (f.radius)
         o.radius = Given<double>{*f.radius, "--radius"};
+    if (!f.acrossRuns.empty())
+        o.acrossRuns = Given<std::string>{f.acrossRuns, "--across-runs"};
     if (f.executionPairs)
         o.executionPairs = Given<long long>{*f.executionPairs, "--execution-pairs"};
     if (f.executionSeed)

@@ -320,6 +320,10 @@ void defineExecutionFlags(CLI::App &app, Flags &f)
         ->check(CLI::Range(0u, 100000u))
         ->group(ex);
     app.add_option("--execution-seed", f.executionSeed, "seed of the random pairs (default 1)")->group(ex);
+    app.add_option("--across-runs", f.acrossRuns,
+                   "with forecast runs: the DAC replan_observed learned before a new run, 'carry' (kept, compared with "
+                   "the new run again; default) or 'reset' (dropped)")
+        ->group(ex);
 }
 
 /// The flags of a forecast given as runs (with --currents): --runs, --run-delay.

@@ -47,7 +47,7 @@ struct Flags
     std::optional<double> requestTimeout;
     std::optional<int> retries;
     // execution in another ocean (any of these enables it)
-    std::string truth, surfacingInterval, strategies;
+    std::string truth, surfacingInterval, strategies, acrossRuns;
     std::optional<double> radius;
     std::optional<unsigned> executionPairs, executionSeed;
     ompl_glider::ForecastInput forecast;

@@ -529,6 +529,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
          truth: Union[None, str, Sequence[str], Dict[str, float]] = None,
          surfacing_interval: Union[None, float, str] = None, strategies: Optional[Sequence[str]] = None,
          radius: Optional[float] = None, execution_pairs: Optional[int] = None, execution_seed: Optional[int] = None,
+         across_runs: Optional[str] = None,
          reachability: bool = False, reach_horizon: Union[None, float, str] = None,
          reach_interval: Union[None, float, str] = None, reach_resolution: Union[None, float, str] = None,
          speeds: Optional[Sequence[float]] = None,
@@ -567,7 +568,8 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
     goal on the forecast's land moved to the nearest water). Execution in another ocean (docs/EXECUTION.md; any of
     these flies the plan): truth ("forecast", another forecast's files, or {parameter: value} of the analytic flow),
     surfacing_interval (a number in the mission's time unit, or "1 h"), strategies (names), radius (the goal radius),
-    execution_pairs and execution_seed (random start/goal pairs, :attr:`Result.execution`). The probability of
+    execution_pairs and execution_seed (random start/goal pairs, :attr:`Result.execution`), across_runs ('carry' or
+    'reset': with forecast runs, the DAC replan_observed learned before a new run kept or dropped). The probability of
     reach over the ensemble's members (:attr:`Result.reachability`, docs/REACHABILITY.md): reachability, and
     reach_horizon, reach_interval (durations: a number in the mission's time unit, or "10 d") and reach_resolution (the
     level set's cell: a number in the length unit, or "2 km"), each of which also asks for it. These
@@ -594,7 +596,7 @@ def plan(mission: Union[None, str, os.PathLike, Dict[str, Any]] = None, *, field
                     truth=[os.fspath(t) for t in truth] if isinstance(truth, (list, tuple)) else truth,
                     surfacing_interval=surfacing_interval,
                     strategies=_list_keyword("strategies", strategies, "a list of strategy names"), radius=radius,
-                    execution_pairs=execution_pairs, execution_seed=execution_seed,
+                    execution_pairs=execution_pairs, execution_seed=execution_seed, across_runs=across_runs,
                     reachability=reachability, reach_horizon=reach_horizon, reach_interval=reach_interval,
                     reach_resolution=reach_resolution)
     if planner_params is not None and not isinstance(planner_params, dict):

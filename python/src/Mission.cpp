@@ -398,6 +398,9 @@ void applySafetyAndExecutionKeywords(const Get &get, const Text &text, MissionOv
             value<std::vector<std::string>>(*v, "strategies", "a list of strategy names"), text("strategies")};
     if (auto v = get("radius"))
         o.radius = Given<double>{value<double>(*v, "radius", "a number"), text("radius")};
+    if (auto v = get("across_runs"))
+        o.acrossRuns =
+            Given<std::string>{value<std::string>(*v, "across_runs", "'carry' or 'reset'"), text("across_runs")};
     for (const auto &[name, target] :
          {std::make_pair("execution_pairs", &o.executionPairs), std::make_pair("execution_seed", &o.executionSeed)})
         if (auto v = get(name))
@@ -417,8 +420,8 @@ const std::set<std::string> &planKeywords()
         "forbidden", "coastline", "keep_off", "min_depth", "bathymetry", "bathymetry_variable", "snap_to_water",
         "observations", "observations_cache", "correction_length", "correction_time", "error_ratio", "learn",
         // the execution and the reachability
-        "truth", "surfacing_interval", "strategies", "radius", "execution_pairs", "execution_seed", "reachability",
-        "reach_horizon", "reach_interval", "reach_resolution"};
+        "truth", "surfacing_interval", "strategies", "radius", "execution_pairs", "execution_seed", "across_runs",
+        "reachability", "reach_horizon", "reach_interval", "reach_resolution"};
     return known;
 }
 

@@ -16,6 +16,7 @@
 #include "ompl_glider/mission/ForecastMission.h"
 #include "ompl_glider/mission/MissionSpec.h"
 #include "ompl_glider/mission/MissionProblem.h"
+#include "ompl_glider/mission/Overrides.h"
 #include "ompl_glider/mission/Planning.h"
 
 using namespace ompl_glider;
@@ -271,4 +272,42 @@ TEST(ForecastRuns, TheCommandLinesRunsPlanOnTheNewestRunToTheBit)
     {
         EXPECT_NE(std::string(e.what()).find("available from 2026-03-01T12:00:00Z"), std::string::npos) << e.what();
     }
+}
+
+TEST(ForecastRuns, AcrossRunsIsSetByTheFlagAndRefusedWithoutRuns)
+{
+    // --across-runs and plan(across_runs=): the one override set, checked as the mission file's key is
+    const Runs runs;
+    ForecastInput in;
+    in.start = {-52.85, 47.15};
+    in.goal = {-52.1, 47.85};
+    in.speed = 0.5;
+    in.departure = "2026-03-03T13:00:00Z";
+    ForecastInput onRuns = in, alone = in;
+    onRuns.current.runs = runs.files;
+    alone.current.file = runs.files[2];
+    MissionSpec a = forecastMission(onRuns), b = forecastMission(alone);
+    EXPECT_EQ(a.execution.acrossRuns, AcrossRuns::Carry); // the default
+    MissionOverrides o;
+    o.acrossRuns = Given<std::string>{"reset", "--across-runs"};
+    applyOverrides(o, a);
+    EXPECT_EQ(a.execution.acrossRuns, AcrossRuns::Reset);
+    EXPECT_TRUE(a.execution.enabled); // any execution setting flies the plan
+    const auto refused = [](MissionSpec &m, const MissionOverrides &given, const std::string &expected) {
+        const MissionSpec before = m;
+        try
+        {
+            applyOverrides(given, m);
+            ADD_FAILURE() << "expected an error";
+        }
+        catch (const Error &e)
+        {
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+        }
+        EXPECT_EQ(m.execution.enabled, before.execution.enabled); // all or nothing
+        EXPECT_EQ(m.execution.acrossRuns, before.execution.acrossRuns);
+    };
+    refused(b, o, "--across-runs: given without forecast runs");
+    o.acrossRuns = Given<std::string>{"keep", "--across-runs"};
+    refused(a, o, "expected 'carry' or 'reset', got 'keep'");
 }

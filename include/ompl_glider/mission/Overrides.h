@@ -91,6 +91,7 @@ struct MissionOverrides
     std::optional<Given<double>> radius;                       ///< the goal radius, > 0 (length unit)
     std::optional<Given<long long>> executionPairs;            ///< random start/goal pairs, 0..100000
     std::optional<Given<long long>> executionSeed;             ///< their seed, 0..4294967295
+    std::optional<Given<std::string>> acrossRuns;              ///< "carry" or "reset" (forecast runs only)
 };
 
 /// @brief Applies @p o to @p m: each value checked (finite, in its range, a planner of the registry, a time the

@@ -446,7 +446,8 @@ CurrentSpec truthOf(const Given<std::string> &t, const MissionSpec &m, Origin or
 
 void applyExecution(const MissionOverrides &o, MissionSpec &m)
 {
-    if (!o.truth && !o.surfacingInterval && !o.strategies && !o.radius && !o.executionPairs && !o.executionSeed)
+    if (!o.truth && !o.surfacingInterval && !o.strategies && !o.radius && !o.executionPairs && !o.executionSeed &&
+        !o.acrossRuns)
         return; // the mission's execution section stays as it is
     ExecutionSpec &e = m.execution;
     const std::string &first = (o.truth               ? o.truth->source
@@ -454,7 +455,8 @@ void applyExecution(const MissionOverrides &o, MissionSpec &m)
                                 : o.strategies        ? o.strategies->source
                                 : o.radius            ? o.radius->source
                                 : o.executionPairs    ? o.executionPairs->source
-                                                      : o.executionSeed->source);
+                                : o.executionSeed     ? o.executionSeed->source
+                                                      : o.acrossRuns->source);
     e.enabled = true;
     e.mark = SourceMark{first, 0, o.origin};
     if (o.truth && o.truth->value != kTruthIsForecast)
@@ -502,6 +504,16 @@ void applyExecution(const MissionOverrides &o, MissionSpec &m)
         e.pairs = static_cast<unsigned>(setting(*o.executionPairs, "execution.batch.pairs"));
     if (o.executionSeed)
         e.seed = static_cast<unsigned>(setting(*o.executionSeed, "execution.batch.seed"));
+    if (o.acrossRuns)
+    {
+        if (m.current.runs.empty())
+            throw Error(o.acrossRuns->source + ": given without forecast runs (current.runs, --runs): there is no new "
+                                               "run to carry the learning across");
+        if (o.acrossRuns->value != "carry" && o.acrossRuns->value != "reset")
+            throw Error(o.acrossRuns->source + ": expected 'carry' or 'reset', got '" + o.acrossRuns->value + "'");
+        e.acrossRuns = parseAcrossRuns(o.acrossRuns->value);
+        mark(m, "execution.across_runs", o.acrossRuns->source, o.origin);
+    }
 }
 } // namespace
 
