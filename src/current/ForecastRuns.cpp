@@ -270,11 +270,10 @@ RunStreamField::RunStreamField(std::shared_ptr<const ForecastRuns> runs, double 
 
 std::size_t RunStreamField::runFor(double t) const
 {
-    const std::size_t live = runs_->runAt(t);
     if (!asOf_)
-        return live;
-    // as known at the fixed time: its newest run where it has begun; before, the run newest then
-    return t >= (*runs_)[*asOf_].begin ? *asOf_ : std::min(live, *asOf_);
+        return runs_->runAt(t);
+    // as known at the fixed time: its newest run (before its first time, its first field held)
+    return *asOf_;
 }
 
 double RunStreamField::maxSpeed(const Region &region) const

@@ -26,6 +26,7 @@ list(APPEND OMPL_GLIDER_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/loader/Execution.cpp
   ${CMAKE_CURRENT_LIST_DIR}/loader/Fleet.cpp
   ${CMAKE_CURRENT_LIST_DIR}/settings/Overrides.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/settings/OverridableFields.cpp
   ${CMAKE_CURRENT_LIST_DIR}/settings/SettingRanges.cpp
   ${CMAKE_CURRENT_LIST_DIR}/settings/OutputFormats.cpp
   ${CMAKE_CURRENT_LIST_DIR}/settings/InputDigest.cpp

@@ -309,5 +309,5 @@ TEST(ForecastRuns, AcrossRunsIsSetByTheFlagAndRefusedWithoutRuns)
     };
     refused(b, o, "--across-runs: given without forecast runs");
     o.acrossRuns = Given<std::string>{"keep", "--across-runs"};
-    refused(a, o, "expected 'carry' or 'reset', got 'keep'");
+    refused(a, o, "--across-runs: unknown choice 'keep' (expected carry or reset)");
 }

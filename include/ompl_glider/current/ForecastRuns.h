@@ -113,10 +113,11 @@ struct RunSpread
 RunSpread runSpread(const ForecastRuns &runs, const Region &box, double depth);
 
 /// @brief The forecast as it is known at a time: for each time t, the current of the newest run available at t
-/// ("live": what a glider at sea steers on), or, as known at a fixed time @p asOf, the newest run then wherever it
-/// covers t and, before its first time, the run that was newest at t (a DAC measured in the past compared with
-/// what was forecast for it, as recent as the runs allow). Land, grid and name are the first run's (one model's
-/// runs share a grid). Every run is read when it is made (its queries take no lock).
+/// ("live": what a glider at sea steers on), or, as known at a fixed time @p asOf, the newest run then: after its end
+/// as its field goes on (the `beyond` rule), before its first time its first field held (a DAC measured before the
+/// run compared with the run's own analysis, its nearest estimate of that time, not with an older run's forecast).
+/// Land, grid and name are the first run's (one model's runs share a grid). Every run is read when it is made (its
+/// queries take no lock).
 class RunStreamField : public CurrentField
 {
 public:
