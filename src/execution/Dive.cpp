@@ -18,14 +18,12 @@ std::string divePointText(double x, double y, double t)
     return os.str();
 }
 
-/// True when (x, y) lies outside a gridded field's nodes: the grid's edge, where the field ends, not its land.
+/// True when (x, y) lies off a gridded field's grid: the grid's edge, where the field ends, not its land (off the
+/// grid itself, not only its bounding box: a lon/lat grid in the planning frame has curved edges).
 bool leavesGrid(const CurrentField &field, double x, double y)
 {
     const FieldGrid *g = field.grid(); // any gridded source, whatever reads it (CurrentField.h)
-    if (!g)
-        return false;
-    const Region e = g->extent();
-    return !(x >= e.xMin && x <= e.xMax && y >= e.yMin && y <= e.yMax);
+    return g && !g->covers(x, y);
 }
 } // namespace
 

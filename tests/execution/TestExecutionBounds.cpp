@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "ompl_glider/current/GriddedCurrentField.h"
 #include "ompl_glider/current/UniformCurrent.h"
+#include "ompl_glider/execution/Dive.h"
 #include "ompl_glider/execution/Execution.h"
 #include "ompl_glider/mission/MissionExecution.h"
 #include "ompl_glider/mission/MissionProblem.h"
@@ -172,4 +174,31 @@ TEST(ExecutionBounds, AStayLongerThanTheRunEndsWithTheRun)
         EXPECT_NE(f.notReachedWhy.find("the goal not reached"), std::string::npos) << f.notReachedWhy;
         EXPECT_NE(f.notReachedWhy.find("(execution.duration)"), std::string::npos) << f.notReachedWhy;
     }
+}
+
+// A glider carried off a gridded truth's grid is told so, not that it met land: also where the point is still inside
+// the grid's bounding box (a grid whose edges are not along x and y, as a lon/lat grid in the planning frame).
+TEST(ExecutionBounds, LeavingTheGridIsTheGridsEdgeNotLand)
+{
+    // a diamond: nodes (a - b) / 2, (a + b) / 2 for a, b in -1, 0, 1; its bounding box is [-1, 1]^2
+    GriddedData d;
+    d.nx = d.ny = 3;
+    for (int b = -1; b <= 1; ++b)
+        for (int a = -1; a <= 1; ++a)
+        {
+            d.nodeX.push_back(0.5 * (a - b));
+            d.nodeY.push_back(0.5 * (a + b));
+        }
+    d.u.assign(9, 0.0f);
+    d.v.assign(9, 0.0f);
+    const GriddedCurrentField field(d);
+    DiveSettings s;
+    s.speed = 0.1;
+    s.step = 0.05;
+    // east from (0, 0.5): off the edge x + y = 1 at x = 0.5, well inside the bounding box
+    const DiveEnd e = flyHeading(0.0, 0.5, 0.0, 1.0, 0.0, 20.0, field, nullptr, s, nullptr);
+    ASSERT_TRUE(e.grounded);
+    EXPECT_NE(e.why.find("edge of the current field's grid (not land)"), std::string::npos) << e.why;
+    EXPECT_LT(e.x, 0.5 + 1e-9);
+    EXPECT_GT(e.x, 0.5 - 0.1 * s.step - 1e-9);
 }
