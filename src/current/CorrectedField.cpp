@@ -489,6 +489,7 @@ Velocity CorrectedField::velocityOnce(double x, double y, double z, double t) co
     addCorrection(x, y, t, c, nullptr, true);
     return c;
 }
+
 Velocity CorrectedField::evaluate(double x, double y, double z, double t) const
 {
     Velocity c = base_->velocity(x, y, z, t);
