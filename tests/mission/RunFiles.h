@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "../current/TestNetCdfUtil.h"
+#include "ompl_glider/mission/ForecastMission.h"
 
 namespace glider_test
 {
@@ -46,6 +47,30 @@ inline void runFlow(int r, std::size_t nt, std::vector<double> &u, std::vector<d
             }
 }
 
+/// The CF attributes of a run file's lat (@p vy), lon (@p vx) and velocity (@p vu, @p vv) variables.
+inline void describeLatLonVelocity(NcWriter &w, int vy, int vx, int vu, int vv, const std::string &units = "m s-1")
+{
+    w.text(vy, "units", "degrees_north");
+    w.text(vx, "units", "degrees_east");
+    w.text(vu, "standard_name", "eastward_sea_water_velocity");
+    w.text(vv, "standard_name", "northward_sea_water_velocity");
+    for (int v : {vu, vv})
+        w.text(v, "units", units);
+}
+
+/// The command line's problem on the runs (glider_plan --currents FILES --runs): across the swirl at 0.5 m/s, its
+/// last field held past a run's end, departing at @p departure; the runs or file are the caller's.
+inline ompl_glider::ForecastInput runsInput(const std::string &departure)
+{
+    ompl_glider::ForecastInput in;
+    in.start = {-52.85, 47.15};
+    in.goal = {-52.1, 47.85};
+    in.speed = 0.5;
+    in.current.horizonPolicy = ompl_glider::BeyondForecast::HoldLast;
+    in.departure = departure;
+    return in;
+}
+
 /// Run r in a file of its own: its first @p nt records, "hours since" its reference time.
 inline void writeRun(const std::string &path, int r, RunReference ref, std::size_t nt = kRunTimes)
 {
@@ -57,12 +82,7 @@ inline void writeRun(const std::string &path, int r, RunReference ref, std::size
     const std::string day = "2026-03-0" + std::to_string(1 + r);
     w.text(vt, "units", "hours since " + day + " 00:00:00");
     w.text(vt, "standard_name", "time");
-    w.text(vy, "units", "degrees_north");
-    w.text(vx, "units", "degrees_east");
-    w.text(vu, "standard_name", "eastward_sea_water_velocity");
-    w.text(vv, "standard_name", "northward_sea_water_velocity");
-    for (int v : {vu, vv})
-        w.text(v, "units", "m s-1");
+    describeLatLonVelocity(w, vy, vx, vu, vv);
     int vr = -1;
     if (ref == RunReference::Variable)
     {
@@ -123,15 +143,9 @@ inline void writeFmrc(const std::string &path, const std::vector<std::size_t> &l
     w.text(vt, "units", "hours since 2026-03-01T00:00:00Z");
     w.text(vt, "standard_name", "time");
     w.num(vt, "_FillValue", NC_DOUBLE, {NAN});
-    w.text(vy, "units", "degrees_north");
-    w.text(vx, "units", "degrees_east");
-    w.text(vu, "standard_name", "eastward_sea_water_velocity");
-    w.text(vv, "standard_name", "northward_sea_water_velocity");
+    describeLatLonVelocity(w, vy, vx, vu, vv);
     for (int v : {vu, vv})
-    {
-        w.text(v, "units", "m s-1");
         w.num(v, "_FillValue", NC_FLOAT, {NAN});
-    }
     w.enddef();
     std::vector<double> runs, times, u, v, ur, vr2;
     const std::size_t nh = kRunNy * kRunNx;

@@ -229,12 +229,7 @@ TEST(ForecastRuns, TheCommandLinesRunsPlanOnTheNewestRunToTheBit)
 {
     // glider_plan --currents FILES --runs and Field.netcdf(runs=True): forecastMission() on the run's own clock
     const Runs runs;
-    ForecastInput in;
-    in.start = {-52.85, 47.15};
-    in.goal = {-52.1, 47.85};
-    in.speed = 0.5;
-    in.current.horizonPolicy = BeyondForecast::HoldLast;
-    in.departure = "2026-03-03T13:00:00Z";
+    const ForecastInput in = runsInput("2026-03-03T13:00:00Z");
     ForecastInput onRuns = in, alone = in;
     onRuns.current.runs = runs.files;
     alone.current.file = runs.files[2];
@@ -278,11 +273,7 @@ TEST(ForecastRuns, AcrossRunsIsSetByTheFlagAndRefusedWithoutRuns)
 {
     // --across-runs and plan(across_runs=): the one override set, checked as the mission file's key is
     const Runs runs;
-    ForecastInput in;
-    in.start = {-52.85, 47.15};
-    in.goal = {-52.1, 47.85};
-    in.speed = 0.5;
-    in.departure = "2026-03-03T13:00:00Z";
+    const ForecastInput in = runsInput("2026-03-03T13:00:00Z");
     ForecastInput onRuns = in, alone = in;
     onRuns.current.runs = runs.files;
     alone.current.file = runs.files[2];

@@ -240,12 +240,7 @@ TEST(ForecastRunsFmrc, TheCommandLinesRunsReadTheFmrc)
 {
     // glider_plan --currents FMRC --runs and Field.netcdf(FMRC, runs=True): forecastMission() on the run's clock
     const FmrcAndFiles runs;
-    ForecastInput in;
-    in.start = {-52.85, 47.15};
-    in.goal = {-52.1, 47.85};
-    in.speed = 0.5;
-    in.current.horizonPolicy = BeyondForecast::HoldLast;
-    in.departure = "2026-03-03T13:00:00Z";
+    const ForecastInput in = runsInput("2026-03-03T13:00:00Z");
     ForecastInput onFmrc = in, onFiles = in;
     onFmrc.current.runs = {runs.fmrc};
     onFiles.current.runs = runs.files;
@@ -313,12 +308,7 @@ void writeHycomRun(const std::string &path, int r, std::size_t k0 = 0, std::size
     w.text(vtau, "time_origin", "2026-03-0" + std::to_string(1 + r) + " 12:00:00");
     w.text(vz, "units", "m");
     w.text(vz, "positive", "down");
-    w.text(vy, "units", "degrees_north");
-    w.text(vx, "units", "degrees_east");
-    w.text(vu, "standard_name", "eastward_sea_water_velocity");
-    w.text(vv, "standard_name", "northward_sea_water_velocity");
-    for (int v : {vu, vv})
-        w.text(v, "units", "m/s");
+    describeLatLonVelocity(w, vy, vx, vu, vv, "m/s");
     w.enddef();
     // 2026-03-01T00:00Z is 26 years (7 leap days) after 2000-01-01: 9556 days
     const double analysis = (9556.0 + r) * 24.0 + 12.0;
@@ -407,12 +397,7 @@ TEST(ForecastRunsFmrc, HycomsOneFilePerTimeStepIsOneRunInSeveralFiles)
     expectSameFmrcRuns(r, *whole.runs());
     expectSameFmrcPlan(runMission(steps), runMission(whole));
     // the command line's and Python's runs alike: the run planned on is its 17 files
-    ForecastInput in;
-    in.start = {-52.85, 47.15};
-    in.goal = {-52.1, 47.85};
-    in.speed = 0.5;
-    in.current.horizonPolicy = BeyondForecast::HoldLast;
-    in.departure = "2026-03-03T06:00:00Z";
+    const ForecastInput in = runsInput("2026-03-03T06:00:00Z");
     ForecastInput onSteps = in, onWhole = in;
     for (const ForecastRun &run : r.runs())
         onSteps.current.runs.insert(onSteps.current.runs.end(), run.files.begin(), run.files.end());
@@ -441,12 +426,7 @@ TEST(ForecastRunsFmrc, ABestTimeSeriesIsOneForecastCompleteWhenItsNewestRunIs)
         for (int v : {vt, vr})
             w.text(v, "units", "hours since 2026-03-01 00:00:00");
         w.text(vr, "standard_name", "forecast_reference_time");
-        w.text(vy, "units", "degrees_north");
-        w.text(vx, "units", "degrees_east");
-        w.text(vu, "standard_name", "eastward_sea_water_velocity");
-        w.text(vv, "standard_name", "northward_sea_water_velocity");
-        for (int v : {vu, vv})
-            w.text(v, "units", "m s-1");
+        describeLatLonVelocity(w, vy, vx, vu, vv);
         w.enddef();
         std::vector<double> hours = linspace(0.0, 3.0, kRunTimes), refs, u, v;
         for (double h : hours)
