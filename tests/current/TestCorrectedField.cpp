@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "ompl_glider/current/CorrectedField.h"
@@ -270,6 +271,34 @@ TEST(CorrectedField, TheSampledCorrectionIsTheExactSum)
     EXPECT_GT(largest, 0.05);          // the points met the correction
     EXPECT_LT(worst, 0.01 * largest);  // linear in time over a quarter of T: about 1 % at most
     EXPECT_LT(worstJ, 0.05 * largest); // per length scale (L = 1)
+}
+
+// The sampled grid is made at the first query that reads it, whichever thread asks: threads querying a fresh
+// correction at once read what one thread reads alone, to the bit.
+TEST(CorrectedField, ThreadsQueryingAFreshCorrectionAtOnceReadTheSameGrid)
+{
+    auto jet = std::make_shared<MeanderingJet>();
+    const DriftedJet truth(0.1, -0.05);
+    const std::vector<DacObservation> obs = track(truth, 120, 0.03, 23);
+    const CorrectionParams p{1.0, 3.0, 0.2};
+    const CorrectedField alone(jet, obs, p), shared(jet, obs, p);
+    constexpr int kThreads = 4, kPoints = 300;
+    std::vector<std::vector<Velocity>> got(kThreads);
+    std::vector<std::thread> pool;
+    for (int k = 0; k < kThreads; ++k)
+        pool.emplace_back([&, k] {
+            for (int i = 0; i < kPoints; ++i)
+                got[k].push_back(shared.velocity(0.1 * i, 0.02 * (i + k), 0.0, 0.2 * i));
+        });
+    for (std::thread &t : pool)
+        t.join();
+    for (int k = 0; k < kThreads; ++k)
+        for (int i = 0; i < kPoints; ++i)
+        {
+            const Velocity a = alone.velocity(0.1 * i, 0.02 * (i + k), 0.0, 0.2 * i);
+            ASSERT_EQ(got[k][i].u, a.u) << k << " " << i;
+            ASSERT_EQ(got[k][i].v, a.v) << k << " " << i;
+        }
 }
 
 namespace
